@@ -1,0 +1,79 @@
+// The study registry, the run context and the set of output files of one run.
+//
+// A study kind is one .cc file in studies/ that parses its section of the file, runs the stages
+// it needs and fills an Outputs; it registers itself with CAMOPT_REGISTER_STUDY and touches no
+// other kind.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studies/input.h"
+
+namespace camopt::studies {
+
+/// A progress line on stderr for long work ("name: 42% (detail)"), rewritten in place,
+/// at most ~10 times a second; silent when quiet.
+class Progress {
+ public:
+  Progress(std::string label, bool quiet) : label_(std::move(label)), quiet_(quiet) {}
+  ~Progress() { Done(); }
+  /// fraction in [0, 1].
+  void Update(double fraction, const std::string& detail = "");
+  void Done();
+
+ private:
+  std::string label_;
+  bool quiet_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+struct RunContext {
+  std::string study_file;
+  bool quiet = false;
+};
+
+/// Files a study produces, kept in memory until the whole run succeeded, then written together:
+/// results are written whole or not at all.
+class Outputs {
+ public:
+  void Add(const std::string& name, std::string content) { files_[name] = std::move(content); }
+  void AddJson(const std::string& name, const nlohmann::json& value);
+  const std::map<std::string, std::string>& files() const { return files_; }
+  /// Writes every file into dir (created if needed) through a staging folder and renames.
+  void WriteAll(const std::string& dir) const;
+
+ private:
+  std::map<std::string, std::string> files_;
+};
+
+using StudyRunner = std::function<void(const Node& root, const RunContext&, Outputs&)>;
+
+/// Registers a study kind; returns true so that it can initialise a static.
+bool RegisterStudy(const std::string& kind, StudyRunner runner);
+std::vector<std::string> StudyKinds();
+
+/// Runs the study in file: parses, dispatches on "study", writes into out_dir.
+/// Throws StudyError for bad input (exit 2) and std::exception for other failures.
+void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
+
+/// Runs an already parsed study, returning its outputs without writing them.
+Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx);
+
+/// A json number that is never NaN or infinite: throws std::runtime_error naming the field
+/// otherwise, so no non-finite number can reach a result file.
+double Finite(double value, const std::string& what);
+
+}  // namespace camopt::studies
+
+#define CAMOPT_CONCAT_INNER(a, b) a##b
+#define CAMOPT_CONCAT(a, b) CAMOPT_CONCAT_INNER(a, b)
+#define CAMOPT_REGISTER_STUDY(kind, fn) \
+  static const bool CAMOPT_CONCAT(camopt_study_registered_, __LINE__) = \
+      ::camopt::studies::RegisterStudy(kind, fn)

@@ -1,0 +1,123 @@
+// Tests of the foundation: scalar helpers, study input errors, writers, the CLI contract.
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "model/common/geometry.h"
+#include "model/common/scalar.h"
+#include "studies/input.h"
+#include "studies/study.h"
+#include "studies/writers.h"
+#include "tests/test_util.h"
+
+namespace camopt {
+namespace {
+
+TEST(Scalar, SoftMaxBoundsTheMaximum) {
+  const std::vector<double> x = {1.0, 3.0, 2.5, -4.0};
+  for (double k : {1.0, 10.0, 100.0}) {
+    const double s = SoftMax(x, k);
+    EXPECT_GE(s, 3.0);
+    EXPECT_LE(s, 3.0 + std::log(4.0) / k);
+    const double m = SoftMin(x, k);
+    EXPECT_LE(m, -4.0);
+    EXPECT_GE(m, -4.0 - std::log(4.0) / k);
+  }
+}
+
+TEST(Scalar, SoftMaxGradientMatchesCentralDifferences) {
+  auto f = [](const auto& v) {
+    using T = std::decay_t<decltype(v[0])>;
+    std::vector<T> x(v.begin(), v.end());
+    return std::vector<T>{SoftMax(x, 5.0), SoftMin(x, 5.0)};
+  };
+  camopt::testing::ExpectJacobianMatchesCentralDifferences<3>(f, {0.3, 0.5, 0.1});
+}
+
+TEST(Geometry, RotateAndCross) {
+  const Vec2<double> a(1.0, 0.0);
+  const Vec2<double> b = Rotate(a, kPi / 2);
+  EXPECT_NEAR(b.x(), 0.0, 1e-15);
+  EXPECT_NEAR(b.y(), 1.0, 1e-15);
+  EXPECT_DOUBLE_EQ(Cross(a, b), 1.0);
+  EXPECT_DOUBLE_EQ(Perp(a).y(), 1.0);
+}
+
+TEST(StudyInput, ErrorsNameFilePathExpectedAndFound) {
+  const nlohmann::json j = nlohmann::json::parse(R"({"a": {"b": "x", "n": -1, "k": 2.5}})");
+  const studies::Node root(&j, "s.json", "");
+  try {
+    root["a"]["b"].Positive();
+    FAIL() << "no error";
+  } catch (const studies::StudyError& e) {
+    EXPECT_EQ(std::string(e.what()), "s.json: /a/b: expected a number > 0, found a string \"x\"");
+  }
+  try {
+    root["a"]["missing"];
+    FAIL() << "no error";
+  } catch (const studies::StudyError& e) {
+    EXPECT_EQ(std::string(e.what()), "s.json: /a/missing: missing required field");
+  }
+  EXPECT_THROW(root["a"]["n"].NonNegative(), studies::StudyError);
+  EXPECT_THROW(root["a"]["k"].Integer(1), studies::StudyError);
+  EXPECT_EQ(root["a"].NumberOr("absent", 7.0), 7.0);
+}
+
+TEST(StudyRunner, UnknownKindIsAStudyError) {
+  const nlohmann::json j = nlohmann::json::parse(R"({"study": "no_such_kind"})");
+  studies::RunContext ctx;
+  ctx.study_file = "x.json";
+  try {
+    studies::RunStudy(j, ctx);
+    FAIL() << "no error";
+  } catch (const studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.json: /study: expected a known study kind"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Outputs, RejectsNonFiniteNumbers) {
+  studies::Outputs out;
+  nlohmann::json j;
+  j["a"]["b"] = std::nan("");
+  EXPECT_THROW(out.AddJson("r.json", j), std::runtime_error);
+}
+
+TEST(Writers, CsvHasHeaderAndRows) {
+  studies::Table t;
+  t.Add("x_mm", {1, 2});
+  t.Add("y_N", {3.5, 4});
+  EXPECT_EQ(studies::ToCsv(t), "x_mm,y_N\n1,3.5\n2,4\n");
+}
+
+TEST(Writers, DxfHasPolylineAndEof) {
+  studies::Drawing d;
+  studies::Drawing::Layer layer;
+  layer.name = "PROFILE";
+  layer.color = "black";
+  layer.polylines.push_back({{0, 0}, {1, 0}, {1, 1}});
+  d.layers.push_back(layer);
+  const std::string dxf = studies::ToDxf(d);
+  EXPECT_NE(dxf.find("POLYLINE"), std::string::npos);
+  EXPECT_NE(dxf.find("PROFILE"), std::string::npos);
+  EXPECT_NE(dxf.find("EOF"), std::string::npos);
+}
+
+TEST(Cli, MissingFileAndBadJsonExitWithCode2) {
+  const auto dir = camopt::testing::TempDir("cli-bad");
+  auto r = camopt::testing::RunCamopt("run " + (dir / "nope.json").string() + " --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("nope.json"), std::string::npos);
+  camopt::testing::WriteFile(dir / "bad.json", "{ \"study\": ");
+  r = camopt::testing::RunCamopt("run " + (dir / "bad.json").string() + " --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("expected valid JSON"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace camopt
