@@ -53,6 +53,11 @@ T UndercutMarginOf(const lcr::CamSide<T>& c, const T& e) {
   return T(1.0) / lcr::PitchCurvature(c, e, T(c_star)) - c.roller_radius;
 }
 
+// Reference force of the soft maximum [N]: the load limit, or 1 kN without one.
+double ForceReference(const LcrSizingSpec& s) {
+  return std::isfinite(s.limits.roller_load_N) ? s.limits.roller_load_N : 1000.0;
+}
+
 // Block sizes, in the order the evaluator writes them.
 std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   std::vector<std::pair<std::string, int>> sizes = {
@@ -137,7 +142,12 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     if (samples) {
       for (const T& f : force[side]) y[o++] = f;
     } else {
-      y[o++] = lcr::RelativeSoftMax(force[side], s.sharpness);
+      // Soft maximum on forces relative to a fixed reference (the load limit): a data-dependent
+      // reference (lcr::RelativeSoftMax takes the exact maximum) would make the aggregate kink
+      // where the largest sample changes, and its Jet derivative would omit d(ref)/dx.
+      std::vector<T> scaled(force[side].size());
+      for (size_t k = 0; k < scaled.size(); ++k) scaled[k] = force[side][k] / T(ForceReference(s));
+      y[o++] = T(ForceReference(s)) * SoftMax(scaled, s.sharpness);
     }
   }
   if (!stress) return;

@@ -9,8 +9,10 @@
 //
 // Cycle maxima enter in one of two forms (LcrConstraintForm):
 // - kSamples: one constraint row per (angle sample, roller) of one load period;
-// - kAggregate: one row per cam, a log-sum-exp soft maximum over the same samples with relative
-//   sharpness k (over-estimates the exact maximum by at most ln(N)/k of it, so it is conservative).
+// - kAggregate: one row per cam, a log-sum-exp soft maximum over the same samples: for forces
+//   F_ref·SoftMax(F/F_ref, k) with F_ref the load limit (over-estimates the sampled maximum by at
+//   most F_ref ln(N)/k: conservative); for the stress margin below SoftMin(s, k) (under-estimates
+//   the smallest margin by at most ln(N)/k). Default k = 200.
 // One load period suffices: the input side repeats every 2π/n_A of input angle (the fixed turret
 // maps onto itself), the output side every 2π m_A/(n_A m_B) (the output turret turns relative to
 // the eccentric by 2π/n_B in that time); and the input cam's roller forces depend only on the input
@@ -57,7 +59,7 @@ struct LcrSizingSpec {
   LcrLimits limits;
   LcrConstraintForm form = LcrConstraintForm::kAggregate;
   int samples_per_period = 24;  ///< angle samples over one load period of each cam
-  double sharpness = 200.0;     ///< relative log-sum-exp sharpness for kAggregate
+  double sharpness = 200.0;     ///< log-sum-exp sharpness for kAggregate (dimensionless)
   /// Smallest pitch-point clearance r_d − e n/(n − m), as a fraction of r_d (the pitch curve must
   /// not loop; see lcr::CheckDesign).
   double pitch_clearance_fraction = 0.02;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "objectives/lcr_sizing.h"
 #include "objectives/problem.h"
 
 namespace camopt::testing {
@@ -73,6 +74,18 @@ inline std::pair<double, double> RosenbrockOnDiskOptimum() {
       a = c;
   }
   return {0.5 * (a + b), f(0.5 * (a + b))};
+}
+
+/// The LCR sizing problem of the paper's LCR II combination (12/13 lobes/rollers on the input
+/// cam, 14/15 on the output cam, ratio −90) at 80 N·m under the limits of the −90 study.
+inline objectives::LcrSizingSpec LcrIISizingSpec(
+    objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate) {
+  objectives::LcrSizingSpec s;
+  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
+  s.output_torque_Nmm = 80000;
+  s.limits = {1500, 1050, 0.5, 1.0};
+  s.form = form;
+  return s;
 }
 
 }  // namespace camopt::testing

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "model/lcr/cycle.h"
+#include "model/lcr/profile.h"
 #include "optimizers/ceres_fit.h"
 #include "optimizers/solver.h"
 #include "tests/optim_reference_problems.h"
@@ -94,6 +96,50 @@ TEST_P(EveryBackend, NonFiniteModelGivesNoDesign) {
   const auto r = optimizers::Solve(p, opt);
   EXPECT_EQ(r.status, SolverStatus::kFailed);
   EXPECT_TRUE(r.x.empty());
+}
+
+// The LCR sizing reference problem: every backend reaches the same design, and it satisfies every
+// limit in the dense check of the pipeline (3600 angles).
+TEST_P(EveryBackend, LcrIISizingAgreesAcrossBackends) {
+  const auto spec = testing::LcrIISizingSpec();
+  SolverOptions opt;
+  opt.backend = "ipopt";
+  const auto reference = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  ASSERT_TRUE(reference.ok()) << reference.message;
+  opt.backend = GetParam();
+  const auto r = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_NEAR(r.objective, reference.objective, 1e-4 * reference.objective);
+  for (size_t i = 0; i < r.x.size(); ++i) EXPECT_NEAR(r.x[i], reference.x[i], 1e-3 * std::abs(reference.x[i]));
+  const lcr::Reducer<double> d = objectives::LcrDesign(spec, r.x);
+  EXPECT_TRUE(lcr::CheckDesign(d).empty());
+  const auto cycle = lcr::AnalyzeCycle(d, spec.material, {spec.output_torque_Nmm, 0.0, 0.0}, 3600, {});
+  for (const auto* side : {&cycle.input, &cycle.output}) {
+    EXPECT_LE(*std::max_element(side->max_stress_MPa.begin(), side->max_stress_MPa.end()), 1500.0);
+    EXPECT_LE(*std::max_element(side->max_force_N.begin(), side->max_force_N.end()), 1050.0);
+  }
+  EXPECT_GE(lcr::UndercutMargin(d.input, d.eccentricity), 0.5 - 1e-6);
+  EXPECT_GE(lcr::UndercutMargin(d.output, d.eccentricity), 0.5 - 1e-6);
+  EXPECT_GE(lcr::RollerGap(d.input), 1.0 - 1e-6);
+  EXPECT_GE(lcr::RollerGap(d.output), 1.0 - 1e-6);
+}
+
+// One constraint row per sample: the same optimum from the backends that handle many rows well
+// (MMA's dual subproblem has one variable per row and is left out: see docs/optimization.md).
+TEST(Optimizers, LcrIISizingPerSampleConstraints) {
+  const auto spec = testing::LcrIISizingSpec(objectives::LcrConstraintForm::kSamples);
+  SolverOptions opt;
+  opt.backend = "nlopt_slsqp";
+  const auto slsqp = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  opt.backend = "ipopt";
+  const auto ipopt = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  ASSERT_TRUE(slsqp.ok() && ipopt.ok()) << slsqp.message << " / " << ipopt.message;
+  EXPECT_NEAR(slsqp.objective, ipopt.objective, 1e-4 * ipopt.objective);
+  // Per-sample rows are exact at the samples, the aggregate is conservative: never larger.
+  opt.backend = "nlopt_slsqp";
+  const auto aggregate = optimizers::Solve(objectives::MakeLcrSizingProblem(testing::LcrIISizingSpec()), opt);
+  ASSERT_TRUE(aggregate.ok());
+  EXPECT_LE(slsqp.objective, aggregate.objective);
 }
 
 INSTANTIATE_TEST_SUITE_P(Optimizers, EveryBackend,
