@@ -179,22 +179,14 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   if (spec.samples_per_period < 2) throw std::invalid_argument("LCR sizing: samples_per_period < 2");
   const Layout l = LayoutOf(spec);
   Problem p;
-  const auto mid = [](const std::array<double, 2>& b) { return 0.5 * (b[0] + b[1]); };
-  const double e0 = spec.eccentricity_mm[0] + 0.3 * (spec.eccentricity_mm[1] - spec.eccentricity_mm[0]);
-  const double d0 = spec.fixed_roller_diameter_mm.value_or(mid(spec.roller_diameter_mm));
-  // Start each turret where the rollers have room (gap limit) and the pitch point is well inside.
-  auto turret0 = [&](int n, int m) {
-    const double gap = (d0 + std::max(spec.limits.roller_gap_mm, 0.0)) / (2 * std::sin(kPi / n));
-    const double pitch = 2.0 * e0 * n / double(n - m) + d0;
-    return std::clamp(1.15 * std::max(gap, pitch), spec.turret_radius_mm[0], spec.turret_radius_mm[1]);
-  };
-  const double ra0 = turret0(spec.rollers_a, spec.lobes_a), rb0 = turret0(spec.rollers_b, spec.lobes_b);
+  const std::vector<double> x0 = LcrStartingPoints(spec, 1).front();
+  const double e0 = x0[0], ra0 = x0[1], rb0 = x0[2], d0 = l.free_roller ? x0[3] : 0.0;
   p.variables.push_back({"eccentricity_mm", spec.eccentricity_mm[0], spec.eccentricity_mm[1], e0, 1.0});
   p.variables.push_back({"input_turret_radius_mm", spec.turret_radius_mm[0], spec.turret_radius_mm[1], ra0, 10.0});
   p.variables.push_back({"output_turret_radius_mm", spec.turret_radius_mm[0], spec.turret_radius_mm[1], rb0, 10.0});
   if (l.free_roller)
     p.variables.push_back({"roller_diameter_mm", spec.roller_diameter_mm[0], spec.roller_diameter_mm[1], d0, 5.0});
-  p.variables.push_back({"outer_radius_mm", 0.0, kInf, std::max(ra0, rb0) + d0 / 2, 10.0});
+  p.variables.push_back({"outer_radius_mm", 0.0, kInf, x0.back(), 10.0});
 
   const LcrSizingSpec s = spec;
   p.evaluator = MakeEvaluator<kJetSize>(p.num_vars(), Blocks(spec),
@@ -218,6 +210,36 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
     p.constraints.push_back({"output_stress_margin", 0.0, kInf, 1.0});
   }
   return p;
+}
+
+std::vector<std::vector<double>> LcrStartingPoints(const LcrSizingSpec& spec, int count) {
+  const Layout l = LayoutOf(spec);
+  const auto mid = [](const std::array<double, 2>& b) { return 0.5 * (b[0] + b[1]); };
+  const double d0 = spec.fixed_roller_diameter_mm.value_or(mid(spec.roller_diameter_mm));
+  const double k_max = std::max(double(spec.rollers_a) / (spec.rollers_a - spec.lobes_a),
+                                double(spec.rollers_b) / (spec.rollers_b - spec.lobes_b));
+  // Each turret where the rollers have room (gap limit with some to spare), the eccentricity where
+  // the pitch point e n/(n − m) sits at a fraction of the smaller turret radius (the optima of the
+  // −90 study lie at 0.5–0.7). Start i varies both.
+  const double pitch_fraction[] = {0.5, 0.3, 0.7, 0.4, 0.6};
+  const double room_factor[] = {1.3, 1.1, 1.6, 1.2, 1.45};
+  std::vector<std::vector<double>> starts;
+  for (int i = 0; i < count; ++i) {
+    const int j = i % 5;
+    auto turret0 = [&](int n) {
+      const double room = room_factor[j] * (d0 + std::max(spec.limits.roller_gap_mm, 0.0)) /
+                          (2 * std::sin(kPi / n));
+      return std::clamp(room, spec.turret_radius_mm[0], spec.turret_radius_mm[1]);
+    };
+    const double ra = turret0(spec.rollers_a), rb = turret0(spec.rollers_b);
+    const double e = std::clamp(pitch_fraction[j] * std::min(ra, rb) / k_max, spec.eccentricity_mm[0],
+                                spec.eccentricity_mm[1]);
+    std::vector<double> x = {e, ra, rb};
+    if (l.free_roller) x.push_back(d0);
+    x.push_back(std::max(ra, rb) + d0 / 2);
+    starts.push_back(x);
+  }
+  return starts;
 }
 
 std::vector<LobeCombination> LobeCombinations(long target_ratio, int max_lobes,

@@ -80,6 +80,11 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   limit is finite).
 Problem MakeLcrSizingProblem(const LcrSizingSpec& spec);
 
+/// count starting points for the sizing problem of spec (the first is the problem's own initial
+/// point): heuristics that put the rollers where they have room and the pitch point at a fraction
+/// of the turret radius, varied from one start to the next. Not feasible in general.
+std::vector<std::vector<double>> LcrStartingPoints(const LcrSizingSpec& spec, int count);
+
 /// Every (m_A, m_B) with n = m + difference on each cam and ratio m_A n_B/(m_A n_B − m_B n_A)
 /// exactly equal to target (integer arithmetic), lobes <= max_lobes, lobes and rollers coprime.
 struct LobeCombination {

@@ -35,8 +35,8 @@ bool AllFinite(const std::vector<double>& v) {
 
 class ProblemTnlp : public Ipopt::TNLP {
  public:
-  explicit ProblemTnlp(const objectives::Problem& problem)
-      : problem_(problem), cache_(problem), rows_(objectives::ConstraintRows(problem)) {}
+  ProblemTnlp(const objectives::Problem& problem, std::vector<double> x0)
+      : problem_(problem), cache_(problem), rows_(objectives::ConstraintRows(problem)), x0_(std::move(x0)) {}
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -74,10 +74,7 @@ class ProblemTnlp : public Ipopt::TNLP {
   bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
                           bool init_lambda, Number*) override {
     if (!init_x || init_z || init_lambda) return false;
-    for (Index i = 0; i < n; ++i) {
-      const auto& v = problem_.variables[i];
-      x[i] = std::clamp(v.initial, v.lower, v.upper);
-    }
+    for (Index i = 0; i < n; ++i) x[i] = x0_[i];
     return true;
   }
 
@@ -140,6 +137,7 @@ class ProblemTnlp : public Ipopt::TNLP {
   const objectives::Problem& problem_;
   objectives::ProblemCache cache_;
   std::vector<objectives::ConstraintRow> rows_;
+  std::vector<double> x0_;
   Ipopt::SolverReturn status_ = Ipopt::INTERNAL_ERROR;
   std::vector<double> x_;
   int iterations_ = 0;
@@ -149,7 +147,7 @@ class ProblemTnlp : public Ipopt::TNLP {
 
 SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions& options) {
   problem.Validate();
-  Ipopt::SmartPtr<ProblemTnlp> tnlp = new ProblemTnlp(problem);
+  Ipopt::SmartPtr<ProblemTnlp> tnlp = new ProblemTnlp(problem, InitialPoint(problem, options));
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", 0);
   app->Options()->SetStringValue("sb", "yes");

@@ -95,6 +95,10 @@ nlopt::algorithm Algorithm(const std::string& backend) {
 
 }  // namespace
 
+// NLopt's constraint tolerances are aimed at a tenth of the tolerance the result is judged by:
+// SLSQP and MMA stop with violations of the order of their tolerance.
+constexpr double kAim = 0.1;
+
 SolverResult SolveNlopt(const objectives::Problem& problem, const SolverOptions& options) {
   problem.Validate();
   const nlopt::algorithm algorithm = Algorithm(options.backend);
@@ -104,12 +108,13 @@ SolverResult SolveNlopt(const objectives::Problem& problem, const SolverOptions&
   Context ineq{&problem, &cache, {}, {}, std::vector<double>(n)};
   Context eq = ineq;
   std::vector<double> lb(n), ub(n), z(n);
+  const std::vector<double> x0 = InitialPoint(problem, options);
   for (unsigned i = 0; i < n; ++i) {
     const auto& v = problem.variables[i];
     ineq.scale.push_back(v.scale);
     lb[i] = v.lower / v.scale;
     ub[i] = v.upper / v.scale;
-    z[i] = std::clamp(v.initial, v.lower, v.upper) / v.scale;
+    z[i] = x0[i] / v.scale;
   }
   eq.scale = ineq.scale;
   for (const auto& r : objectives::ConstraintRows(problem)) {
@@ -135,10 +140,10 @@ SolverResult SolveNlopt(const objectives::Problem& problem, const SolverOptions&
   opt.set_min_objective(Objective, &ineq);
   if (!ineq.rows.empty())
     opt.add_inequality_mconstraint(Constraints, &ineq,
-                                   std::vector<double>(ineq.rows.size(), options.constraint_tolerance));
+                                   std::vector<double>(ineq.rows.size(), kAim * options.constraint_tolerance));
   if (!eq.rows.empty())
     opt.add_equality_mconstraint(Constraints, &eq,
-                                 std::vector<double>(eq.rows.size(), options.constraint_tolerance));
+                                 std::vector<double>(eq.rows.size(), kAim * options.constraint_tolerance));
   opt.set_xtol_rel(options.tolerance);
   opt.set_ftol_rel(options.tolerance);
   opt.set_maxeval(options.max_evaluations);

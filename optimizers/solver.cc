@@ -1,5 +1,6 @@
 #include "optimizers/solver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,6 +28,43 @@ SolverResult Solve(const objectives::Problem& problem, const SolverOptions& opti
       b == "mma" || b == "cobyla")
     return SolveNlopt(problem, options);
   throw std::invalid_argument("unknown optimizer backend '" + b + "'");
+}
+
+SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOptions& options,
+                             const std::vector<std::vector<double>>& starts) {
+  if (starts.empty()) return Solve(problem, options);
+  SolverResult best;
+  bool have = false;
+  int values = 0, gradients = 0, iterations = 0;
+  for (const auto& x0 : starts) {
+    if (x0.size() != problem.variables.size())
+      throw std::invalid_argument("multistart: a starting point has the wrong size");
+    SolverOptions o = options;
+    o.initial = x0;
+    const SolverResult r = Solve(problem, o);
+    values += r.value_evaluations;
+    gradients += r.gradient_evaluations;
+    iterations += r.iterations;
+    const bool better = r.ok() && (!best.ok() || (problem.maximize ? r.objective > best.objective
+                                                                   : r.objective < best.objective));
+    if (!have || better) best = r;
+    have = true;
+  }
+  best.value_evaluations = values;
+  best.gradient_evaluations = gradients;
+  best.iterations = iterations;
+  return best;
+}
+
+std::vector<double> InitialPoint(const objectives::Problem& problem, const SolverOptions& options) {
+  if (!options.initial.empty() && options.initial.size() != problem.variables.size())
+    throw std::invalid_argument("initial point has the wrong size");
+  std::vector<double> x(problem.variables.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const auto& v = problem.variables[i];
+    x[i] = std::clamp(options.initial.empty() ? v.initial : options.initial[i], v.lower, v.upper);
+  }
+  return x;
 }
 
 namespace internal {

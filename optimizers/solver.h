@@ -25,6 +25,8 @@ struct SolverOptions {
   double constraint_tolerance = 1e-6;  ///< on scaled constraints, also used to judge feasibility
   int max_evaluations = 3000;          ///< NLopt: evaluations; Ipopt: iterations
   double max_seconds = 60.0;
+  /// Starting point (unscaled); empty: the variables' own initial values. Clamped to the bounds.
+  std::vector<double> initial;
 };
 
 struct SolverResult {
@@ -47,6 +49,16 @@ SolverResult Solve(const objectives::Problem& problem, const SolverOptions& opti
 
 SolverResult SolveNlopt(const objectives::Problem& problem, const SolverOptions& options);
 SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions& options);
+
+/// Local solves from several starting points (each a full variable vector, unscaled); returns the
+/// converged result with the lowest objective (or, when none converged, the first start's result),
+/// with the evaluation counts of all starts summed. An empty list solves from the problem's own
+/// initial point.
+SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOptions& options,
+                             const std::vector<std::vector<double>>& starts);
+
+/// The starting point of a solve: options.initial or the variables' initial values, in bounds.
+std::vector<double> InitialPoint(const objectives::Problem& problem, const SolverOptions& options);
 
 /// Backend names Solve() accepts.
 std::vector<std::string> Backends();
