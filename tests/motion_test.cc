@@ -162,8 +162,12 @@ TEST(MotionProgram, ContinuityAtJoints) {
     ASSERT_EQ(joints.size(), 4u);
     for (const auto& j : joints) EXPECT_GE(j.order, 2) << LawName(law) << " joint " << j.segment;
     for (const auto& j : joints) {
-      if (law == MotionLaw::kPolynomial4567) EXPECT_EQ(j.order, 3);
-      if (law == MotionLaw::kPolynomial345) EXPECT_EQ(j.order, 2);  // jerk 60 h/β³ jumps to 0
+      if (law == MotionLaw::kPolynomial4567) {
+        EXPECT_EQ(j.order, 3);
+      }
+      if (law == MotionLaw::kPolynomial345) {
+        EXPECT_EQ(j.order, 2);  // jerk 60 h/β³ jumps to 0
+      }
     }
   }
   const auto shm = CheckContinuity(DoubleDwell(MotionLaw::kSimpleHarmonic));
