@@ -205,6 +205,23 @@ TEST(DiscCamError, OscillatingLinearErrorIsTheDerivativeOfTheExactMotion) {
   CheckLinearErrorAgainstExact(OscillatingExample());
 }
 
+TEST(DiscCamError, OscillatingExampleAgreesWithTheExactFollowerAngle) {
+  // The oscillating example with all deviations at their tolerances (Δn = 5, Δr = 19,
+  // Δr_f = 9 µm): the follower angle recomputed by intersecting the roller circle with the
+  // perturbed profile differs from the linearised ΔS by second-order terms only.
+  const DiscCam cam = OscillatingExample();
+  const Deviations<double> d{0.005, 0.019, 0.009};
+  for (int i = 0; i < 360; ++i) {
+    const double t = 2 * kPi * i / 360;
+    const CamPoint<double> p = EvaluateCam(cam, t);
+    const MechanicalError<double> e = FollowerError(cam, p, d);
+    const double linear = e.normal + e.radial + e.roller;
+    const double exact = ExactFollowerPosition(cam, d, t) - p.s;
+    EXPECT_NEAR(exact, linear, 1e-3 * std::abs(linear)) << t;
+    EXPECT_LE(std::abs(exact), e.worst_case * (1 + 1e-3));
+  }
+}
+
 TEST(DiscCamError, PaperExampleCurvesHaveTheShapeOfFig12) {
   // IT6: Δr = 19 µm, Δr_f = 9 µm. Fig. 12 and §5: ΔS_rf = Δr_f / cos φ ≥ Δr_f; the shift angle
   // counteracts the pressure angle, so ΔS_r varies less than ΔS_rf; φ and λ have similar trends;
