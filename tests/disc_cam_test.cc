@@ -11,6 +11,7 @@
 #include "model/disc_cam/disc_cam.h"
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
+#include "model/disc_cam/summary.h"
 #include "tests/test_util.h"
 
 namespace camopt::disc_cam {
@@ -301,6 +302,27 @@ TEST(DiscCamGradients, OscillatingPointMatchesCentralDifferences) {
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<5>(
       f, {40.0, 10.0, 100.0, 80.0, 20 * kDeg}, 1e-6, 1e-9);
+}
+
+TEST(DiscCamSummary, AggregatesAgreeWithThePaperExampleAndUndercut) {
+  const CamSummary<double> s = SummarizeCam(PaperExample(), Deviations<double>{0.0, 0.019, 0.009}, 3600);
+  EXPECT_NEAR(s.max_radial_dimension, 63.525, 5e-4);
+  EXPECT_GT(s.curvature_margin, 0.0);  // no undercut
+  EXPECT_GE(s.soft_max_abs_pressure_angle, s.max_abs_pressure_angle);
+  EXPECT_LE(s.soft_max_abs_pressure_angle, s.max_abs_pressure_angle + std::log(3600.0) / 50.0);
+  EXPECT_LE(s.max_rms_error, s.max_worst_case_error);
+}
+
+TEST(DiscCamGradients, SummaryMatchesCentralDifferences) {
+  auto f = [](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    const DiscCamTpl<T> cam = PaperExample<T>(x[0], x[1], x[2], x[3]);
+    const CamSummary<T> s = SummarizeCam(cam, Deviations<T>{T(0.0), T(0.019), T(0.009)}, 360);
+    return std::vector<T>{s.max_radial_dimension, s.max_abs_pressure_angle,
+                          s.soft_max_abs_pressure_angle, s.curvature_margin,
+                          s.max_worst_case_error, s.max_rms_error};
+  };
+  camopt::testing::ExpectJacobianMatchesCentralDifferences<4>(f, {40.0, 10.0, 12.0, 24.0}, 1e-5, 1e-9);
 }
 
 }  // namespace
