@@ -123,6 +123,10 @@ DiscCamStudy Parse(const Node& root) {
   }
   cam.motion = motion::MotionProgram<double>(segments);
   if (const auto issue = motion::CheckProgram(cam.motion, 2 * kPi, /*must_return=*/true, 1e-6)) {
+    if (issue->segment < 0 && issue->message.find("does not return") != std::string::npos)
+      motion_node.FailWith("the follower does not return: rises sum to " +
+                           Format(cam.motion.NetRise() / (oscillating ? kDeg : 1.0)) +
+                           (oscillating ? " deg" : " mm") + ", expected 0");
     if (issue->segment < 0) motion_node.FailWith(issue->message);
     const std::string field = issue->field == "rise" ? rise_key : issue->field;
     motion_node[issue->segment][field].FailWith(issue->message);

@@ -176,7 +176,7 @@ INSTANTIATE_TEST_SUITE_P(
             {"law": "dwell", "cam_angle_deg": 60}]})", "/motion", "sum to 350"},
         BadCase{"noreturn", kT, R"({"motion": [{"law": "cycloidal", "rise_mm": 24, "cam_angle_deg": 120},
             {"law": "dwell", "cam_angle_deg": 50}, {"law": "cycloidal", "rise_mm": -20, "cam_angle_deg": 120},
-            {"law": "dwell", "cam_angle_deg": 70}]})", "/motion", "does not return"},
+            {"law": "dwell", "cam_angle_deg": 70}]})", "/motion", "rises sum to 4 mm"},
         BadCase{"base", kT, R"({"base_circle_radius_mm": -40})", "/base_circle_radius_mm", "> 0"},
         BadCase{"roller", kT, R"({"follower": {"roller_radius_mm": -10}})", "/follower/roller_radius_mm", "> 0"},
         BadCase{"offset", kT, R"({"follower": {"offset_mm": 55}})", "/follower/offset_mm", "smaller than"},
@@ -200,6 +200,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"reach", kO, R"({"follower": {"arm_length_mm": 20}})", "/follower/arm_length_mm", "cannot reach"},
         BadCase{"riseunit", kO, R"({"motion": [{"law": "modified_sine", "rise_mm": 20, "cam_angle_deg": 180},
             {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 180}]})", "/motion/0/rise_mm", "rise_deg"},
+        BadCase{"noreturndeg", kO, R"({"motion": [{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 180},
+            {"law": "modified_sine", "rise_deg": -15, "cam_angle_deg": 180}]})", "/motion", "rises sum to 5 deg"},
         BadCase{"steps", kT, R"({"analysis": {"angle_steps": 10}})", "/analysis/angle_steps", ">= 36"}),
     [](const ::testing::TestParamInfo<BadCase>& p) { return std::string(p.param.name); });
 
