@@ -42,17 +42,6 @@ lcr::Reducer<T> Design(const LcrSizingSpec& s, std::span<const T> x) {
   return r;
 }
 
-// lcr::UndercutMargin for any scalar: the maximiser c* of κ(c) is found on values
-// (lcr::ArgMaxCurvature on the double design; its own cast does not compile for a Jet), and κ is
-// evaluated at the fixed c*, whose derivative is exact by the envelope theorem.
-template <typename T>
-T UndercutMarginOf(const lcr::CamSide<T>& c, const T& e) {
-  const lcr::CamSide<double> v{c.lobes, c.rollers, Value(c.turret_radius), Value(c.roller_radius),
-                               Value(c.roller_length), Value(c.cam_thickness)};
-  const double c_star = lcr::ArgMaxCurvature(v, Value(e));
-  return T(1.0) / lcr::PitchCurvature(c, e, T(c_star)) - c.roller_radius;
-}
-
 // Reference force of the soft maximum [N]: the load limit, or 1 kN without one.
 double ForceReference(const LcrSizingSpec& s) {
   return std::isfinite(s.limits.roller_load_N) ? s.limits.roller_load_N : 1000.0;
@@ -120,8 +109,10 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   y[o++] = r.output.turret_radius + r.output.roller_radius - radius;
   y[o++] = lcr::RollerGap(r.input);
   y[o++] = lcr::RollerGap(r.output);
-  y[o++] = UndercutMarginOf(r.input, r.eccentricity);
-  y[o++] = UndercutMarginOf(r.output, r.eccentricity);
+  // Exact margin 1/κ_max − r_r; the maximiser of κ is found on values, so its derivative is exact
+  // by the envelope theorem (lcr::MaxPitchCurvature).
+  y[o++] = lcr::UndercutMargin(r.input, r.eccentricity);
+  y[o++] = lcr::UndercutMargin(r.output, r.eccentricity);
   for (const lcr::CamSide<T>* c : {&r.input, &r.output})
     y[o++] = c->turret_radius * T(1.0 - s.pitch_clearance_fraction) -
              r.eccentricity * T(c->pitch_factor());
