@@ -63,6 +63,7 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
     sizes.push_back({"input_stress_margin", na});
     sizes.push_back({"output_stress_margin", nb});
   }
+  if (s.limits.min_efficiency > 0) sizes.push_back({"mean_efficiency", 1});
   std::vector<OutputBlock> blocks;
   int offset = 0;
   for (const auto& [name, size] : sizes) {
@@ -120,9 +121,20 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   const bool stress = std::isfinite(s.limits.contact_stress_MPa);
   std::vector<T> force[2], margin[2];
   std::vector<bool> loaded[2];
+  T efficiency(0.0);
   try {
     SideSamples(s, r, lcr::Side::kInput, force[0], margin[0], loaded[0]);
     SideSamples(s, r, lcr::Side::kOutput, force[1], margin[1], loaded[1]);
+    if (s.limits.min_efficiency > 0) {
+      // The efficiency mixes both cams' loads (and |F_r|), so it has no short period: a full
+      // revolution. Mean of the per-angle efficiency, as lcr_analysis reports it.
+      const lcr::LoadCase load{s.output_torque_Nmm, s.friction_coefficient, 0.0};
+      const lcr::Stages stages{true, false, true};
+      for (int i = 0; i < s.efficiency_samples; ++i)
+        efficiency += lcr::AnalyzeAngle(r, s.material, load, T(2 * kPi * i / s.efficiency_samples), stages)
+                          .efficiency;
+      efficiency /= T(double(s.efficiency_samples));
+    }
   } catch (const std::domain_error&) {
     // No roller can carry load (degenerate geometry): a non-finite output that the adapters
     // turn into an evaluation error.
@@ -133,16 +145,15 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     if (samples) {
       for (const T& f : force[side]) y[o++] = f;
     } else {
-      // Soft maximum on forces relative to a fixed reference (the load limit): a data-dependent
-      // reference (lcr::RelativeSoftMax takes the exact maximum) would make the aggregate kink
-      // where the largest sample changes, and its Jet derivative would omit d(ref)/dx.
+      // Soft maximum on forces relative to a fixed reference (the load limit). A data-dependent
+      // reference (the current maximum) would make the aggregate kink where the largest sample
+      // changes, and its Jet derivative would omit d(ref)/dx.
       std::vector<T> scaled(force[side].size());
       for (size_t k = 0; k < scaled.size(); ++k) scaled[k] = force[side][k] / T(ForceReference(s));
       y[o++] = T(ForceReference(s)) * SoftMax(scaled, s.sharpness);
     }
   }
-  if (!stress) return;
-  for (int side = 0; side < 2; ++side) {
+  for (int side = 0; side < 2 && stress; ++side) {
     if (samples) {
       for (const T& m : margin[side]) y[o++] = m;
     } else {
@@ -155,6 +166,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
       y[o++] = SoftMin(m, s.sharpness);
     }
   }
+  if (s.limits.min_efficiency > 0) y[o++] = efficiency;
 }
 
 }  // namespace
@@ -200,6 +212,8 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
     p.constraints.push_back({"input_stress_margin", 0.0, kInf, 1.0});
     p.constraints.push_back({"output_stress_margin", 0.0, kInf, 1.0});
   }
+  if (spec.limits.min_efficiency > 0)
+    p.constraints.push_back({"mean_efficiency", spec.limits.min_efficiency, kInf, 0.1});
   return p;
 }
 

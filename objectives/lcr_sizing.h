@@ -43,6 +43,7 @@ struct LcrLimits {
   double roller_load_N = kInf;
   double undercut_margin_mm = 0.0;
   double roller_gap_mm = 0.0;
+  double min_efficiency = 0.0;  ///< mean efficiency over the cycle (fraction); 0: no constraint
 };
 
 /// One continuous sizing problem.
@@ -56,10 +57,12 @@ struct LcrSizingSpec {
   double cam_thickness_mm = 8.0;
   lcr::Material material;
   double output_torque_Nmm = 0.0;
+  double friction_coefficient = 0.0;  ///< μ of the efficiency (paper eq. 32)
   LcrLimits limits;
   LcrConstraintForm form = LcrConstraintForm::kAggregate;
   int samples_per_period = 24;  ///< angle samples over one load period of each cam
   double sharpness = 200.0;     ///< log-sum-exp sharpness for kAggregate (dimensionless)
+  int efficiency_samples = 48;  ///< input angles over a full revolution for the mean efficiency
   /// Smallest pitch-point clearance r_d − e n/(n − m), as a fraction of r_d (the pitch curve must
   /// not loop; see lcr::CheckDesign).
   double pitch_clearance_fraction = 0.02;
@@ -77,7 +80,8 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   input_pitch_clearance_mm / output_... (r_d − e k − fraction r_d >= 0),
 ///   input_roller_force_N / output_... (samples or soft max), input_stress_margin / output_...
 ///   (the dimensionless Hertz capacity margin above, samples or soft min; present when the stress
-///   limit is finite).
+///   limit is finite), mean_efficiency (mean of lcr::AnalyzeAngle's η over efficiency_samples
+///   angles of a full revolution; present when limits.min_efficiency > 0).
 Problem MakeLcrSizingProblem(const LcrSizingSpec& spec);
 
 /// count starting points for the sizing problem of spec (the first is the problem's own initial

@@ -131,9 +131,11 @@ Study Parse(const Node& root, const RunContext& ctx) {
   b.limits.roller_load_N = limits.PositiveOr("roller_load_N", kInf);
   b.limits.undercut_margin_mm = limits.NonNegativeOr("undercut_margin_mm", 0.0);
   b.limits.roller_gap_mm = limits.NonNegativeOr("roller_gap_mm", 0.0);
+  if (limits.Has("min_efficiency")) b.limits.min_efficiency = limits["min_efficiency"].NumberIn(0.0, 0.999);
   b.material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
   b.output_torque_Nmm = s.output_torque_Nmm;
   if (root.Has("load")) s.friction = root["load"].NonNegativeOr("friction_coefficient", 0.0);
+  b.friction_coefficient = s.friction;
 
   if (root.Has("optimizer")) {
     const Node o = root["optimizer"];
@@ -195,6 +197,7 @@ Check Verify(const lcr::Reducer<double>& r, const Study& s, const objectives::Lc
       c.failures.push_back(std::string(side[k]) + " undercut margin");
     if (!(c.gap_mm[k] >= limits.roller_gap_mm)) c.failures.push_back(std::string(side[k]) + " roller gap");
   }
+  if (!(c.mean_efficiency >= limits.min_efficiency)) c.failures.push_back("mean efficiency");
   const auto problems = lcr::CheckDesign(r);
   if (!problems.empty()) c.failures.push_back("design check: " + problems.front().message);
   c.ok = c.failures.empty();
@@ -244,6 +247,7 @@ Candidate SolveCandidate(const Study& s, const objectives::LobeCombination& comb
   spec.limits.roller_load_N = limits.roller_load_N * (1 - kLimitMargin);
   spec.limits.roller_gap_mm = limits.roller_gap_mm + kLengthMargin_mm;
   spec.limits.undercut_margin_mm = limits.undercut_margin_mm + kLengthMargin_mm;
+  if (limits.min_efficiency > 0) spec.limits.min_efficiency = limits.min_efficiency * (1 + kLimitMargin);
   std::vector<double> start;
   for (cand.passes = 1; cand.passes <= 3; ++cand.passes) {
     const objectives::Problem problem = objectives::MakeLcrSizingProblem(spec);
@@ -267,9 +271,12 @@ Candidate SolveCandidate(const Study& s, const objectives::LobeCombination& comb
       excess_stress = std::max(excess_stress, cand.check->max_stress_MPa[k] / limits.contact_stress_MPa);
       excess_force = std::max(excess_force, cand.check->max_force_N[k] / limits.roller_load_N);
     }
+    // The efficiency is sampled at 48 angles against 3600: raise its limit by the deficit.
+    const double deficit = std::max(0.0, limits.min_efficiency - cand.check->mean_efficiency);
+    if (excess_stress <= 1.0 && excess_force <= 1.0 && deficit <= 0.0) return cand;  // not sampling
     spec.limits.contact_stress_MPa /= excess_stress * (1.0 + 1e-4);
     spec.limits.roller_load_N /= excess_force * (1.0 + 1e-4);
-    if (excess_stress <= 1.0 && excess_force <= 1.0) return cand;
+    spec.limits.min_efficiency += deficit * 1.5;
     start = cand.result.x;
   }
   cand.passes = 3;
@@ -413,19 +420,23 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
   }
   out.AddJson("result.json", res);
 
+  // One row per candidate that has a design (no NaN cells); the rest are in result.json.
   Table t;
-  std::vector<double> ma, mb, od, st, feas;
+  std::vector<double> ma, mb, dr, od, ecc, feas;
   for (const auto& c : candidates) {
+    if (!c.design) continue;
     ma.push_back(c.combo.lobes_a);
     mb.push_back(c.combo.lobes_b);
-    od.push_back(c.check ? c.check->outer_diameter_mm : std::nan(""));
-    st.push_back(static_cast<double>(c.result.status));
+    dr.push_back(2 * c.design->input.roller_radius);
+    od.push_back(lcr::OuterDiameter(*c.design));
+    ecc.push_back(c.design->eccentricity);
     feas.push_back(c.feasible() ? 1.0 : 0.0);
   }
   t.Add("input_lobes", ma);
   t.Add("output_lobes", mb);
+  t.Add("roller_diameter_mm", dr);
+  t.Add("eccentricity_mm", ecc);
   t.Add("outer_diameter_mm", od);
-  t.Add("solver_status_code", st);
   t.Add("feasible", feas);
   out.Add("candidates.csv", ToCsv(t));
 }

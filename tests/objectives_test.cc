@@ -97,12 +97,15 @@ class LcrSizingGradients
     : public ::testing::TestWithParam<std::tuple<LcrConstraintForm, bool>> {};
 
 // Every output (objective, envelopes, gaps, undercut margins, pitch clearances, roller forces,
-// stress margins; soft aggregates or every sample) has the exact derivative. Probed at LCR II and
+// stress margins, mean efficiency; soft aggregates or every sample) has the exact derivative. Probed at LCR II and
 // at a design near the −90 optimum where the stress limit binds.
 TEST_P(LcrSizingGradients, EveryOutputMatchesCentralDifferences) {
   const auto [form, catalogue] = GetParam();
   LcrSizingSpec s = LcrIISpec(form);
   s.samples_per_period = 8;
+  s.limits.min_efficiency = 0.9;  // adds the mean-efficiency output
+  s.friction_coefficient = 0.05;
+  s.efficiency_samples = 12;
   if (catalogue) s.fixed_roller_diameter_mm = 12.0;
   const auto p = objectives::MakeLcrSizingProblem(s);
   for (std::vector<double> x : {LcrIIVariables(), std::vector<double>{1.84, 33.97, 33.97, 6.33, 37.13}}) {
@@ -144,6 +147,23 @@ TEST(LcrSizing, OutputsAreThePipelineQuantities) {
 // One load period holds every configuration: the period maximum of the roller force equals the
 // full-cycle maximum of the pipeline's own cycle analysis (input side on the same angle grid,
 // output side on a fine grid).
+// The mean-efficiency output is the mean of the pipeline's per-angle efficiency.
+TEST(LcrSizing, MeanEfficiencyIsThePipelines) {
+  LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kAggregate);
+  s.limits.min_efficiency = 0.5;
+  s.friction_coefficient = 0.05;
+  s.efficiency_samples = 360;
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(LcrIIVariables(), y);
+  const auto cycle = lcr::AnalyzeCycle(testing::LcrII(), testing::Steel(), {80000, 0.05, 0.0}, 360, {});
+  double mean = 0;
+  for (double e : cycle.efficiency) mean += e / 360;
+  EXPECT_NEAR(y[p.evaluator->block("mean_efficiency").offset], mean, 1e-12);
+  ASSERT_EQ(p.constraints.back().output, "mean_efficiency");
+  EXPECT_EQ(p.constraints.back().lower, 0.5);
+}
+
 TEST(LcrSizing, OnePeriodSamplesCoverTheWholeCycle) {
   LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kSamples);
   s.samples_per_period = 360;
