@@ -13,16 +13,16 @@
 namespace camopt::objectives {
 namespace {
 
-constexpr int kJetSize = 5;
+constexpr int kJetSize = 6;  // e, r_dA, r_dB, d_rA, d_rB, R at most
 
 struct Layout {
-  bool free_roller;  // d_r is a variable
+  int rollers;       // roller-diameter variables: 0 (catalogue), 1 (same roller), 2 (one per cam)
   int radius_index;  // index of R
 };
 
 Layout LayoutOf(const LcrSizingSpec& spec) {
-  const bool free = !spec.fixed_roller_diameter_mm.has_value();
-  return {free, free ? 4 : 3};
+  const int rollers = spec.fixed_roller_diameter_mm ? 0 : (spec.same_roller ? 1 : 2);
+  return {rollers, 3 + rollers};
 }
 
 // Load period of one cam in input angle [rad] (see the header).
@@ -34,11 +34,12 @@ double Period(const LcrSizingSpec& s, lcr::Side side) {
 template <typename T>
 lcr::Reducer<T> Design(const LcrSizingSpec& s, std::span<const T> x) {
   const Layout l = LayoutOf(s);
-  const T rr = l.free_roller ? x[3] / T(2.0) : T(*s.fixed_roller_diameter_mm / 2.0);
+  const T rr_a = l.rollers > 0 ? x[3] / T(2.0) : T(*s.fixed_roller_diameter_mm / 2.0);
+  const T rr_b = l.rollers == 2 ? x[4] / T(2.0) : rr_a;
   lcr::Reducer<T> r;
   r.eccentricity = x[0];
-  r.input = {s.lobes_a, s.rollers_a, x[1], rr, T(s.roller_length_mm), T(s.cam_thickness_mm)};
-  r.output = {s.lobes_b, s.rollers_b, x[2], rr, T(s.roller_length_mm), T(s.cam_thickness_mm)};
+  r.input = {s.lobes_a, s.rollers_a, x[1], rr_a, T(s.roller_length_mm), T(s.cam_thickness_mm)};
+  r.output = {s.lobes_b, s.rollers_b, x[2], rr_b, T(s.roller_length_mm), T(s.cam_thickness_mm)};
   return r;
 }
 
@@ -183,12 +184,16 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   const Layout l = LayoutOf(spec);
   Problem p;
   const std::vector<double> x0 = LcrStartingPoints(spec, 1).front();
-  const double e0 = x0[0], ra0 = x0[1], rb0 = x0[2], d0 = l.free_roller ? x0[3] : 0.0;
+  const double e0 = x0[0], ra0 = x0[1], rb0 = x0[2], d0 = l.rollers > 0 ? x0[3] : 0.0;
   p.variables.push_back({"eccentricity_mm", spec.eccentricity_mm[0], spec.eccentricity_mm[1], e0, 1.0});
   p.variables.push_back({"input_turret_radius_mm", spec.turret_radius_mm[0], spec.turret_radius_mm[1], ra0, 10.0});
   p.variables.push_back({"output_turret_radius_mm", spec.turret_radius_mm[0], spec.turret_radius_mm[1], rb0, 10.0});
-  if (l.free_roller)
+  if (l.rollers == 1)
     p.variables.push_back({"roller_diameter_mm", spec.roller_diameter_mm[0], spec.roller_diameter_mm[1], d0, 5.0});
+  for (const char* side : {"input", "output"})
+    if (l.rollers == 2)
+      p.variables.push_back({std::string(side) + "_roller_diameter_mm", spec.roller_diameter_mm[0],
+                             spec.roller_diameter_mm[1], d0, 5.0});
   p.variables.push_back({"outer_radius_mm", 0.0, kInf, x0.back(), 10.0});
 
   const LcrSizingSpec s = spec;
@@ -240,7 +245,7 @@ std::vector<std::vector<double>> LcrStartingPoints(const LcrSizingSpec& spec, in
     const double e = std::clamp(pitch_fraction[j] * std::min(ra, rb) / k_max, spec.eccentricity_mm[0],
                                 spec.eccentricity_mm[1]);
     std::vector<double> x = {e, ra, rb};
-    if (l.free_roller) x.push_back(d0);
+    for (int k = 0; k < l.rollers; ++k) x.push_back(d0);
     x.push_back(std::max(ra, rb) + d0 / 2);
     starts.push_back(x);
   }

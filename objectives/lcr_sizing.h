@@ -4,8 +4,9 @@
 // profile.h, reducer.h); nothing here re-derives its physics.
 //
 // Variables (mm): e, r_dA, r_dB, d_r, R (R the outer radius, an epigraph variable: the objective
-// 2R is smooth, and r_dX + r_r <= R for both cams replaces the kink of 2 max(r_dA, r_dB) + d_r).
-// With a catalogue roller the diameter is fixed and the variables are e, r_dA, r_dB, R.
+// 2R is smooth, and r_dX + r_rX <= R for both cams replaces the kink of 2 max(r_dX + r_rX)).
+// With a catalogue roller the diameter is fixed and the variables are e, r_dA, r_dB, R; with a
+// roller per cam (same_roller = false) they are e, r_dA, r_dB, d_rA, d_rB, R.
 //
 // Cycle maxima enter in one of two forms (LcrConstraintForm):
 // - kSamples: one constraint row per (angle sample, roller) of one load period;
@@ -53,6 +54,7 @@ struct LcrSizingSpec {
   std::array<double, 2> turret_radius_mm{15.0, 80.0};
   std::array<double, 2> roller_diameter_mm{3.0, 20.0};
   std::optional<double> fixed_roller_diameter_mm;  ///< catalogue roller: d_r is not a variable
+  bool same_roller = true;  ///< one d_r for both cams; false: d_rA and d_rB (ignored when fixed)
   double roller_length_mm = 10.0;
   double cam_thickness_mm = 8.0;
   lcr::Material material;

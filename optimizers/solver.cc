@@ -87,6 +87,11 @@ bool Assess(const objectives::Problem& problem, const std::vector<double>& x,
     const double viol = std::max(v.lower - x[i], x[i] - v.upper) / v.scale;
     if (viol > constraint_tolerance) result.violated.push_back(v.name + " bound");
     result.max_violation = std::max(result.max_violation, viol);
+    // A variable held at a bound binds like a constraint (a designer wants to see it).
+    if (viol <= constraint_tolerance && std::isfinite(v.lower) && (x[i] - v.lower) / v.scale < 1e-6)
+      result.active.push_back(v.name + " lower bound");
+    if (viol <= constraint_tolerance && std::isfinite(v.upper) && (v.upper - x[i]) / v.scale < 1e-6)
+      result.active.push_back(v.name + " upper bound");
   }
   for (const auto& row : objectives::ConstraintRows(problem)) {
     const double g = y[row.output_index];

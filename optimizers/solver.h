@@ -36,7 +36,8 @@ struct SolverResult {
   double objective = 0.0;       ///< unscaled, at x
   double max_violation = 0.0;   ///< largest constraint violation at x, in scaled units
   std::vector<std::string> violated;  ///< constraint rows violated at x
-  std::vector<std::string> active;    ///< constraint rows at a bound at x (within 1e-3 scaled)
+  std::vector<std::string> active;    ///< constraint rows at a bound at x (within 1e-3 scaled),
+                                      ///< and variables at a bound ("x lower bound")
   int value_evaluations = 0;    ///< model runs for values only (double)
   int gradient_evaluations = 0; ///< model runs with exact first derivatives (ceres::Jet)
   int iterations = 0;           ///< backend iterations where it reports them (Ipopt), else evaluations

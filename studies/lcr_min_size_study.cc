@@ -103,8 +103,7 @@ Study Parse(const Node& root, const RunContext& ctx) {
   b.eccentricity_mm = PositiveRange(vars["eccentricity_mm"]);
   b.turret_radius_mm = PositiveRange(vars["turret_radius_mm"]);
   if (vars.Has("roller_diameter_mm")) b.roller_diameter_mm = PositiveRange(vars["roller_diameter_mm"]);
-  if (vars.Has("same_roller_on_both_cams") && !vars["same_roller_on_both_cams"].Bool())
-    vars["same_roller_on_both_cams"].Fail("true (one roller size for both cams is what is supported)");
+  b.same_roller = vars.BoolOr("same_roller_on_both_cams", true);
 
   const Node fixed = root["fixed"];
   b.cam_thickness_mm = fixed["cam_thickness_mm"].Positive();
@@ -125,6 +124,9 @@ Study Parse(const Node& root, const RunContext& ctx) {
     b.roller_length_mm = fixed["roller_length_mm"].Positive();
     if (!vars.Has("roller_diameter_mm")) vars["roller_diameter_mm"];  // throws "missing field"
   }
+
+  if (!b.same_roller && !s.catalogue.empty())
+    vars["same_roller_on_both_cams"].Fail("true with a roller catalogue (each catalogue roller is used on both cams)");
 
   const Node limits = root["limits"];
   b.limits.contact_stress_MPa = limits.PositiveOr("contact_stress_MPa", kInf);

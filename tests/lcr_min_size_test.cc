@@ -135,6 +135,40 @@ TEST(LcrMinSize, EfficiencyLimitIsHeld) {
   EXPECT_NEAR(a["efficiency"]["mean"].get<double>(), res["best"]["mean_efficiency"].get<double>(), 1e-12);
 }
 
+// A roller size per cam when the study asks for it: never larger than with one roller for both
+// (the one-roller design is a feasible point of the wider problem), and still within every limit.
+TEST(LcrMinSize, RollerPerCam) {
+  json study = Example("lcr_min_size.json");
+  study["search"]["max_lobes"] = 14;  // LCR II's combination only
+  study["optimizer"]["backend"] = "nlopt_slsqp";
+  int code = -1;
+  std::string err;
+  const json same = RunStudy(study, TempDir("lcr-min-size-same"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  study["variables"]["same_roller_on_both_cams"] = false;
+  const auto dir = TempDir("lcr-min-size-per-cam");
+  const json per_cam = RunStudy(study, dir, &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  ASSERT_TRUE(same["best"].is_object() && per_cam["best"].is_object());
+  EXPECT_LE(per_cam["best"]["outer_diameter_mm"].get<double>(),
+            same["best"]["outer_diameter_mm"].get<double>() * (1 + 1e-6));
+  const auto r = RunCamopt("run " + (dir / "out" / "best_lcr_analysis.json").string() + " --out " +
+                           (dir / "analysis").string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const json a = json::parse(ReadFile(dir / "analysis" / "result.json"));
+  for (const char* side : {"input_cam", "output_cam"}) {
+    EXPECT_TRUE(a[side]["contact_stress_ok"].get<bool>());
+    EXPECT_TRUE(a[side]["roller_load_ok"].get<bool>());
+    EXPECT_GE(a[side]["undercut_margin_mm"].get<double>(), 0.5);
+    EXPECT_GE(a[side]["roller_gap_mm"].get<double>(), 1.0);
+  }
+  // With a catalogue the catalogue roller serves both cams: asking otherwise is an error.
+  study["roller_catalogue"] = json::parse(R"([{"diameter_mm": 5, "length_mm": 10, "load_limit_N": 800}])");
+  RunStudy(study, TempDir("lcr-min-size-per-cam-bad"), &code, &err);
+  EXPECT_EQ(code, 2);
+  EXPECT_NE(err.find("/variables/same_roller_on_both_cams"), std::string::npos) << err;
+}
+
 TEST(LcrMinSize, CatalogueRollerIsPickedAndItsLoadLimitHeld) {
   json study = Example("lcr_min_size_catalogue.json");
   study["search"]["max_lobes"] = 26;  // two combinations (12/14, 20/26): keep the test short

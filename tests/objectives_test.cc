@@ -93,23 +93,26 @@ TEST(Problem, CacheCountsModelRunsOnce) {
   EXPECT_DOUBLE_EQ(cache.last_values()[0], 1 * 4 * (1 + 2 + 3) + 3);
 }
 
+// Roller variants: 0 one roller for both cams, 1 a catalogue roller (fixed), 2 one per cam.
 class LcrSizingGradients
-    : public ::testing::TestWithParam<std::tuple<LcrConstraintForm, bool>> {};
+    : public ::testing::TestWithParam<std::tuple<LcrConstraintForm, int>> {};
 
 // Every output (objective, envelopes, gaps, undercut margins, pitch clearances, roller forces,
 // stress margins, mean efficiency; soft aggregates or every sample) has the exact derivative. Probed at LCR II and
 // at a design near the −90 optimum where the stress limit binds.
 TEST_P(LcrSizingGradients, EveryOutputMatchesCentralDifferences) {
-  const auto [form, catalogue] = GetParam();
+  const auto [form, rollers] = GetParam();
   LcrSizingSpec s = LcrIISpec(form);
   s.samples_per_period = 8;
   s.limits.min_efficiency = 0.9;  // adds the mean-efficiency output
   s.friction_coefficient = 0.05;
   s.efficiency_samples = 12;
-  if (catalogue) s.fixed_roller_diameter_mm = 12.0;
+  if (rollers == 1) s.fixed_roller_diameter_mm = 12.0;
+  if (rollers == 2) s.same_roller = false;
   const auto p = objectives::MakeLcrSizingProblem(s);
   for (std::vector<double> x : {LcrIIVariables(), std::vector<double>{1.84, 33.97, 33.97, 6.33, 37.13}}) {
-    if (catalogue) x.erase(x.begin() + 3);
+    if (rollers == 1) x.erase(x.begin() + 3);
+    if (rollers == 2) x.insert(x.begin() + 4, x[3] * 0.9);  // a smaller output roller
     // Kinks (a roller entering the loaded set, PositivePart) are isolated: a relative tolerance of
     // 1e-5 with the ∛ε step separates a wrong derivative from truncation error.
     ExpectEvaluatorJacobianMatches(*p.evaluator, x, 1e-5, 1e-7);
@@ -119,7 +122,7 @@ TEST_P(LcrSizingGradients, EveryOutputMatchesCentralDifferences) {
 INSTANTIATE_TEST_SUITE_P(Objectives, LcrSizingGradients,
                          ::testing::Combine(::testing::Values(LcrConstraintForm::kAggregate,
                                                               LcrConstraintForm::kSamples),
-                                            ::testing::Bool()));
+                                            ::testing::Values(0, 1, 2)));
 
 // The problem's geometric outputs equal the pipeline's own functions on the same design.
 TEST(LcrSizing, OutputsAreThePipelineQuantities) {
