@@ -16,8 +16,9 @@ namespace camopt::testing {
 /// with the matching variable scale, to check that scaling is translated correctly.
 inline objectives::Problem Hs71(double unit_scale = 1.0) {
   objectives::Problem p;
+  const char* names[4] = {"x1", "x2", "x3", "x4"};
   for (int i = 0; i < 4; ++i)
-    p.variables.push_back({"x" + std::to_string(i + 1), 1.0 * unit_scale, 5.0 * unit_scale,
+    p.variables.push_back({names[i], 1.0 * unit_scale, 5.0 * unit_scale,
                            (i == 0 || i == 3 ? 1.0 : 5.0) * unit_scale, unit_scale});
   p.evaluator = objectives::MakeEvaluator<4>(
       4, {{"f", 0, 1}, {"product", 1, 1}, {"sum_squares", 2, 1}},
