@@ -32,6 +32,9 @@ Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm);
 struct SolverOptions {
   double tolerance = 1e-8;  // relative change / complementarity tolerance of the CG iteration
   int max_iterations = 2000;
+  /// Added: plan the FFTs with FFTW_MEASURE instead of FFTW_ESTIMATE. Costs a one-off
+  /// planning time per grid shape and process (FFTW keeps the wisdom); see docs/contact.md.
+  bool measure_fft_plans = false;
 };
 
 struct ContactSolution {
@@ -52,9 +55,12 @@ struct ContactSolution {
   double dx_mm = 0, dy_mm = 0;
   double contact_area_mm2 = 0;  // cells_in_contact · dx · dy
   int max_pressure_cell = -1;   // index of the peak cell (iy * nx + ix), −1 when unloaded
-  /// A loaded cell lies on the outer row or column of the grid: the contact may be cut by the
-  /// grid and the grid should be made larger.
-  bool contact_at_grid_edge = false;
+  /// A loaded cell lies on the first or last column (x edge) / row (y edge) of the grid: the
+  /// contact may be cut by the grid and the grid should be made larger in that direction. For a
+  /// roller whose length is the grid's y extent, contact at the y edges is expected.
+  bool contact_at_x_edge = false;
+  bool contact_at_y_edge = false;
+  bool contact_at_grid_edge = false;  // either of the two
 };
 
 /// Solves: Σ_j K_ij p_j = δ − h_i where p_i > 0, Σ K_ij p_j ≥ δ − h_i where p_i = 0, p ≥ 0,
