@@ -188,10 +188,14 @@ class FftConvolver {
     const double xi = 0.5 * dx, eta = 0.5 * dy;
     const int wx = 2 * nx_ - 1, wy = 2 * ny_ - 1;
     k.table.resize(static_cast<size_t>(wx) * wy);
-    for (int oy = -(ny_ - 1); oy <= ny_ - 1; ++oy)
-      for (int ox = -(nx_ - 1); ox <= nx_ - 1; ++ox)
-        k.table[static_cast<size_t>(oy + ny_ - 1) * wx + (ox + nx_ - 1)] =
-            LoveInfluence(ox * dx, oy * dy, xi, eta);
+    // The coefficient is even in both offsets: evaluate one quadrant, mirror the rest.
+    for (int oy = 0; oy < ny_; ++oy)
+      for (int ox = 0; ox < nx_; ++ox) {
+        const double v = LoveInfluence(ox * dx, oy * dy, xi, eta);
+        for (int sy : {-1, 1})
+          for (int sx : {-1, 1})
+            k.table[static_cast<size_t>(sy * oy + ny_ - 1) * wx + (sx * ox + nx_ - 1)] = v;
+      }
     k.self = k.table[static_cast<size_t>(ny_ - 1) * wx + (nx_ - 1)];
     // Wrapped kernel: offsets 0 … n−1 in the first half, −(n−1) … −1 in the second; the
     // middle index n is never reached by a product and holds 0.
