@@ -142,6 +142,57 @@ TEST(ContactSolver, DenseAndCgAgreeOnAnOffCentreRectangularGridUnderApproachCont
     EXPECT_NEAR(cg.pressure_MPa[i], dense.pressure_MPa[i], 1e-6 * dense.max_pressure_MPa) << i;
 }
 
+TEST(ContactSolver, DenseAndCgAgreeOnARoughSurfaceWithManyIslands) {
+  // A wavy gap with several separate contact spots, partly below zero (interference at δ = 0):
+  // the active set changes much more than on a Hertz contact.
+  const Grid g = CenteredGrid(26, 22, 1.0, 0.8);
+  std::vector<double> h(g.cells());
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
+      h[iy * g.nx + ix] = 1e-3 * (std::sin(7.1 * x + 0.3) * std::cos(5.3 * y - 0.2) +
+                                  0.4 * std::sin(13.7 * x * y + 1.1) + 0.3 * x * x) -
+                          2e-4;
+    }
+  HalfSpaceSolver solver;
+  for (double load : {5.0, 200.0}) {
+    const auto cg = solver.SolveForLoad(g, h, load, kEStar);
+    const auto dense = SolveDenseForLoad(g, h, load, kEStar);
+    ASSERT_TRUE(cg.converged) << cg.message;
+    ASSERT_TRUE(dense.converged) << dense.message;
+    EXPECT_EQ(cg.cells_in_contact, dense.cells_in_contact) << load;
+    for (int i = 0; i < g.cells(); ++i)
+      EXPECT_NEAR(cg.pressure_MPa[i], dense.pressure_MPa[i], 1e-5 * dense.max_pressure_MPa)
+          << load << " cell " << i;
+    EXPECT_NEAR(cg.approach_mm, dense.approach_mm, 1e-6 * std::abs(dense.approach_mm)) << load;
+    const auto by_approach = solver.SolveForApproach(g, h, dense.approach_mm, kEStar);
+    const auto dense_approach = SolveDenseForApproach(g, h, dense.approach_mm, kEStar);
+    EXPECT_NEAR(by_approach.load_N, load, 1e-5 * load);
+    EXPECT_NEAR(dense_approach.load_N, load, 1e-8 * load);
+  }
+}
+
+TEST(ContactSolver, OneCellAndOneRowGrids) {
+  // 1 × 1: the single cell carries the load, δ = h + p K₀₀ / E*.
+  const Grid one = CenteredGrid(1, 1, 0.05, 0.1);
+  const auto s = HalfSpaceSolver().SolveForLoad(one, {0.002}, 3.0, kEStar);
+  const double p = 3.0 / one.cell_area_mm2();
+  EXPECT_NEAR(s.pressure_MPa[0], p, 1e-12 * p);
+  EXPECT_NEAR(s.approach_mm, 0.002 + p * LoveInfluence(0.0, 0.0, 0.05, 0.1) / kEStar, 1e-15);
+  // 1 × 30 and 30 × 1: the same problem transposed gives the same pressures.
+  const Grid column = CenteredGrid(1, 30, 0.05, 0.3), row = CenteredGrid(30, 1, 0.3, 0.05);
+  std::vector<double> h(30);
+  for (int i = 0; i < 30; ++i) h[i] = std::pow(column.y_centre_mm(i), 2) / 20.0;
+  HalfSpaceSolver solver;
+  const auto a = solver.SolveForLoad(column, h, 10.0, kEStar);
+  const auto b = solver.SolveForLoad(row, h, 10.0, kEStar);
+  const auto d = SolveDenseForLoad(row, h, 10.0, kEStar);
+  for (int i = 0; i < 30; ++i) {
+    EXPECT_NEAR(a.pressure_MPa[i], b.pressure_MPa[i], 1e-6 * b.max_pressure_MPa);
+    EXPECT_NEAR(b.pressure_MPa[i], d.pressure_MPa[i], 1e-6 * d.max_pressure_MPa);
+  }
+}
+
 TEST(ContactSolver, LoadAndApproachControlAreInverse) {
   const Grid g = HertzGrid(32);
   const auto h = SphereGap(g, 10.0);
@@ -300,6 +351,11 @@ TEST(ContactHardCases, GapThatNeverClosesUnderApproachControl) {
     const auto d = SolveDenseForApproach(g, h, approach, kEStar);
     EXPECT_EQ(d.load_N, 0.0);
   }
+  // A deep approach fills the grid, finite.
+  const auto deep = solver.SolveForApproach(g, h, 10.0, kEStar);
+  EXPECT_TRUE(deep.converged);
+  EXPECT_TRUE(AllFinite(deep));
+  EXPECT_EQ(deep.cells_in_contact, g.cells());
   // Just past touching, a little load appears.
   const auto s = solver.SolveForApproach(g, h, 0.0101, kEStar);
   EXPECT_GT(s.load_N, 0.0);

@@ -3,7 +3,9 @@
 // against Hertz line contact; and the edge peak of that roller growing as the axial cells shrink.
 // The numbers behind docs/validation.md ("Half-space contact solver") come from
 // bench/contact_bench.cc; here they are asserted with margins.
+#include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -12,6 +14,7 @@
 #include "model/contact/hertz.h"
 #include "model/contact/measures.h"
 #include "model/contact/reference_gaps.h"
+#include "tests/test_util.h"
 
 namespace camopt::contact {
 namespace {
@@ -24,6 +27,17 @@ TEST(ContactHertz, NotesSteelExampleOfLineContact) {
   const double e_star = CompositeModulus(210000.0, 0.3, 210000.0, 0.3);
   EXPECT_NEAR(e_star, 115384.6, 0.1);
   EXPECT_NEAR(LineContactPeakPressure(1000.0, 10.0, 10.0, e_star), 606.0, 0.5);
+}
+
+TEST(ContactHertz, ClosedFormGradientsMatchCentralDifferences) {
+  auto f = [](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    const auto point = CircularPointContact(x[0], x[2], x[3]);
+    return std::vector<T>{LineContactPeakPressure(x[0], x[1], x[2], x[3]),
+                          LineContactHalfWidth(x[0], x[1], x[2], x[3]), point.radius,
+                          point.peak_pressure, point.approach};
+  };
+  testing::ExpectJacobianMatchesCentralDifferences<4>(f, {1000.0, 10.0, 10.0, 115384.6});
 }
 
 struct PointResult {
