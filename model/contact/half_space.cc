@@ -116,6 +116,11 @@ ContactSolution Unloaded(const Grid& grid, double approach_mm, std::string messa
 
 }  // namespace detail
 
+std::mutex& FftwPlannerMutex() {
+  static std::mutex m;
+  return m;
+}
+
 Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm) {
   Grid g;
   g.nx = nx;
@@ -134,11 +139,8 @@ Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm) {
 namespace {
 
 // FFTW's planner is not thread-safe; executing a plan is. All planning and plan destruction go
-// through this one lock.
-std::mutex& PlannerMutex() {
-  static std::mutex m;
-  return m;
-}
+// through one lock (FftwPlannerMutex in the header).
+std::mutex& PlannerMutex() { return FftwPlannerMutex(); }
 
 using Complex = std::complex<double>;
 
