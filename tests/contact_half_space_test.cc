@@ -440,6 +440,9 @@ TEST(ContactHardCases, BadInputThrowsWithAClearMessage) {
   bad.nx = 0;
   expect_throw([&] { solver.SolveForLoad(bad, {}, 1.0, kEStar); }, "at least one cell");
   expect_throw([&] { CenteredGrid(3, 3, -1.0, 1.0); }, "cell sizes");
+  const Grid big = CenteredGrid(65, 64, 1.0, 1.0);
+  expect_throw([&] { SolveDenseForLoad(big, std::vector<double>(big.cells(), 0.0), 1.0, kEStar); },
+               "exceed its limit");
 }
 
 }  // namespace

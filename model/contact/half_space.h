@@ -106,7 +106,7 @@ class HalfSpaceSolver {
 };
 
 /// Dense reference (the same equations solved with an active-set method on the full matrix);
-/// for tests and the speed comparison only.
+/// for tests and the speed comparison only. @throws std::invalid_argument beyond 4096 cells.
 ContactSolution SolveDenseForLoad(const Grid& grid, const std::vector<double>& gap_mm,
                                   double load_N, double e_star_MPa);
 
