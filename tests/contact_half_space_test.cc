@@ -230,6 +230,21 @@ TEST(ContactSolver, PressureIsSymmetricForASymmetricGap) {
     }
 }
 
+TEST(ContactSolver, ACommonGapOffsetOnlyShiftsTheApproach) {
+  const Grid g = HertzGrid(32);
+  const auto h = SphereGap(g, 10.0);
+  auto shifted = h;
+  for (double& v : shifted) v += 1000.0;
+  HalfSpaceSolver solver;
+  const auto a = solver.SolveForLoad(g, h, 100.0, kEStar);
+  const auto b = solver.SolveForLoad(g, shifted, 100.0, kEStar);
+  EXPECT_NEAR(b.approach_mm - 1000.0, a.approach_mm, 1e-12);
+  for (int i = 0; i < g.cells(); ++i)
+    EXPECT_NEAR(a.pressure_MPa[i], b.pressure_MPa[i], 1e-9 * a.max_pressure_MPa);
+  const auto c = solver.SolveForApproach(g, shifted, a.approach_mm + 1000.0, kEStar);
+  EXPECT_NEAR(c.load_N, 100.0, 1e-6 * 100.0);
+}
+
 TEST(ContactSolver, WarmStartGivesTheSameAnswer) {
   const Grid g = HertzGrid(32);
   HalfSpaceSolver solver;

@@ -323,7 +323,7 @@ struct HalfSpaceSolver::Impl {
   SolverOptions options;
   std::map<std::pair<int, int>, std::unique_ptr<FftConvolver>> convolvers;
   std::map<std::tuple<int, int, double, double>, Kernel> kernels;
-  std::vector<double> p, p_old, u, g, t, r;  // work arrays
+  std::vector<double> h, p, p_old, u, g, t, r;  // work arrays (h: the gap above its minimum)
   std::vector<std::pair<int, double>> corrections;
 
   explicit Impl(SolverOptions o) : options(o) {}
@@ -374,24 +374,29 @@ const SolverOptions& HalfSpaceSolver::options() const { return impl_->options; }
 // the (usually few-cell) change made by the projection and the re-entry, added by a direct sum;
 // only when many cells change, and every kRefresh iterations against drift, is u = K p redone by
 // FFT. That halves the FFTs of the textbook algorithm.
-ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector<double>& h,
+ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector<double>& gap,
                                              bool load_control, double target, double e_star,
                                              const std::vector<double>* start) {
   const char* where =
       load_control ? "HalfSpaceSolver::SolveForLoad" : "HalfSpaceSolver::SolveForApproach";
   detail::CheckGrid(grid, where);
-  detail::CheckField(grid, h, "gap_mm", where);
+  detail::CheckField(grid, gap, "gap_mm", where);
   detail::CheckModulus(e_star, where);
   detail::CheckFinite(target, load_control ? "load_N" : "approach_mm", where);
-  const double h_min = *std::min_element(h.begin(), h.end());
   const size_t n = static_cast<size_t>(grid.cells());
   const double area = grid.cell_area_mm2();
-  const double load = target, approach = target;
+  // Work with the gap above its minimum (so a large common offset costs no digits in u + h − δ);
+  // δ is shifted back on return.
+  const double gap_min = *std::min_element(gap.begin(), gap.end());
+  h.resize(n);
+  for (size_t i = 0; i < n; ++i) h[i] = gap[i] - gap_min;
+  const double h_min = 0.0;
+  const double load = target, approach = target - gap_min;
 
   p.assign(n, 0.0);
   if (load_control) {
     if (load <= 0)
-      return detail::Unloaded(grid, h_min, load < 0 ? "negative load treated as zero" : "");
+      return detail::Unloaded(grid, gap_min, load < 0 ? "negative load treated as zero" : "");
     if (UsableStart(start, n)) {
       p = *start;
     } else {
@@ -404,7 +409,7 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
         p[i] = approach - h[i];  // the rigid overlap, scaled below
         any = true;
       }
-    if (!any) return detail::Unloaded(grid, approach, "");
+    if (!any) return detail::Unloaded(grid, target, "");
   }
 
   FftConvolver& conv = Convolver(grid);
@@ -567,9 +572,9 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
         sum_g += u[i] + h[i];
         ++nc;
       }
-    s.approach_mm = nc > 0 ? sum_g / static_cast<double>(nc) : h_min;
+    s.approach_mm = gap_min + (nc > 0 ? sum_g / static_cast<double>(nc) : h_min);
   } else {
-    s.approach_mm = approach;
+    s.approach_mm = target;
   }
   s.pressure_MPa = p;
   detail::Summarise(grid, s);
