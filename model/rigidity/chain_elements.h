@@ -121,7 +121,7 @@ inline std::vector<std::vector<double>> RigidityElasticities(const std::vector<E
       }
       const ChainResult<J> r = ComposeChain(links);
       // R = 1/c, so d ln R / d ln p = -(p / c) dc/dp.
-      out[k].push_back(-specs[k].params[q] * r.compliance_b.v[0] / r.compliance_b.a);
+      out[k].push_back(0.0 - specs[k].params[q] * r.compliance_b.v[0] / r.compliance_b.a);
     }
   }
   return out;
