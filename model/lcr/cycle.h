@@ -49,8 +49,16 @@ inline CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& materi
 
 /// Cycle aggregates over `steps` input angles, for optimizers: soft maxima (log-sum-exp) of the
 /// roller force and contact stress of each cam, soft minimum of the efficiency, and the mean input
-/// torque. Sharpness is relative: the soft max of x is taken on x/x_ref with k = `sharpness`, so
-/// it over-estimates the exact max by at most x_ref·ln(samples)/k (x_ref = the exact max).
+/// torque. Each soft max is taken on x/scale with dimensionless sharpness k, so it over-estimates
+/// the exact max by at most scale·ln(samples)/k (far less when one sample dominates). The scales
+/// are fixed numbers (not the current maximum), so the aggregate is one smooth function of the
+/// design and its AD gradient is exact.
+struct AggregateOptions {
+  double force_scale_N = 1000.0;
+  double stress_scale_MPa = 1000.0;
+  double sharpness = 200.0;
+};
+
 template <typename T>
 struct CycleAggregates {
   T max_force_input{}, max_force_output{};    // [N]
@@ -59,16 +67,15 @@ struct CycleAggregates {
 };
 
 template <typename T>
-T RelativeSoftMax(const std::vector<T>& x, double sharpness) {
-  const double ref = std::max(Value(HardMax(x)), 1e-300);
+T ScaledSoftMax(const std::vector<T>& x, double scale, double sharpness) {
   std::vector<T> scaled(x.size());
-  for (size_t i = 0; i < x.size(); ++i) scaled[i] = x[i] / T(ref);
-  return T(ref) * SoftMax(scaled, sharpness);
+  for (size_t i = 0; i < x.size(); ++i) scaled[i] = x[i] / T(scale);
+  return T(scale) * SoftMax(scaled, sharpness);
 }
 
 template <typename T>
 CycleAggregates<T> AggregateCycle(const Reducer<T>& r, const Material& material, const LoadCase& load,
-                                  int steps, double sharpness = 200.0) {
+                                  int steps, const AggregateOptions& options = {}) {
   std::vector<T> fa, fb, sa, sb, eta, tin;
   for (int i = 0; i < steps; ++i) {
     const AngleLoads<T> a = AnalyzeAngle(r, material, load, T(2 * kPi * i / steps));
@@ -77,18 +84,15 @@ CycleAggregates<T> AggregateCycle(const Reducer<T>& r, const Material& material,
     for (const auto& [dst, src] : {std::pair{&sa, &a.input.stress}, std::pair{&sb, &a.output.stress}})
       for (const T& v : *src)
         if (Value(v) > 0) dst->push_back(v);
-    eta.push_back(a.efficiency);
+    eta.push_back(-a.efficiency);
     tin.push_back(a.input_torque);
   }
   CycleAggregates<T> out;
-  out.max_force_input = RelativeSoftMax(fa, sharpness);
-  out.max_force_output = RelativeSoftMax(fb, sharpness);
-  out.max_stress_input = sa.empty() ? T(0.0) : RelativeSoftMax(sa, sharpness);
-  out.max_stress_output = sb.empty() ? T(0.0) : RelativeSoftMax(sb, sharpness);
-  const double eta_ref = std::max(Value(HardMin(eta)), 1e-300);
-  std::vector<T> scaled(eta.size());
-  for (size_t i = 0; i < eta.size(); ++i) scaled[i] = eta[i] / T(eta_ref);
-  out.min_efficiency = T(eta_ref) * SoftMin(scaled, sharpness);
+  out.max_force_input = ScaledSoftMax(fa, options.force_scale_N, options.sharpness);
+  out.max_force_output = ScaledSoftMax(fb, options.force_scale_N, options.sharpness);
+  out.max_stress_input = sa.empty() ? T(0.0) : ScaledSoftMax(sa, options.stress_scale_MPa, options.sharpness);
+  out.max_stress_output = sb.empty() ? T(0.0) : ScaledSoftMax(sb, options.stress_scale_MPa, options.sharpness);
+  out.min_efficiency = -ScaledSoftMax(eta, 1.0, options.sharpness);
   T sum(0.0);
   for (const T& t : tin) sum += t;
   out.mean_input_torque = sum / T(double(steps));

@@ -30,7 +30,8 @@ struct CamSide {
 
   template <typename U>
   CamSide<U> cast() const {
-    return {lobes, rollers, U(turret_radius), U(roller_radius), U(roller_length), U(cam_thickness)};
+    return {lobes, rollers, ScalarCast<U>(turret_radius), ScalarCast<U>(roller_radius),
+            ScalarCast<U>(roller_length), ScalarCast<U>(cam_thickness)};
   }
 };
 
@@ -46,7 +47,7 @@ struct Reducer {
 
   template <typename U>
   Reducer<U> cast() const {
-    return {U(eccentricity), input.template cast<U>(), output.template cast<U>()};
+    return {ScalarCast<U>(eccentricity), input.template cast<U>(), output.template cast<U>()};
   }
 };
 

@@ -106,7 +106,7 @@ struct TurretSpring {
     const TurretSpring<double> s = ToDouble();
     double lo = Value(clearance) / amax, hi = 2.0 * lo + 1e-6;
     auto g = [&](double psi) { return sign * s.Torque(sign * psi); };
-    while (g(hi) < std::abs(tv)) hi *= 2.0;
+    for (int it = 0; it < 2000 && g(hi) < std::abs(tv); ++it) hi *= 2.0;
     for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
       const double mid = 0.5 * (lo + hi);
       (g(mid) < std::abs(tv) ? lo : hi) = mid;
