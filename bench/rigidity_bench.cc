@@ -44,6 +44,16 @@ void BM_LcrDeflectAtAngle(benchmark::State& state) {
 }
 BENCHMARK(BM_LcrDeflectAtAngle)->Arg(0)->Arg(5);
 
+void BM_LcrDeflectAtAngleBearing(benchmark::State& state) {
+  const auto r = camopt::testing::LcrII();
+  double theta = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(DeflectAtAngle<double>(r, camopt::testing::Steel(), theta, 80000.0, 0.005, 1.5e5));
+    theta += 1e-3;
+  }
+}
+BENCHMARK(BM_LcrDeflectAtAngleBearing);
+
 void BM_LcrDeflectAtAngleJet4(benchmark::State& state) {
   using J = ceres::Jet<double, 4>;
   lcr::Reducer<J> r = camopt::testing::LcrII().cast<J>();

@@ -63,6 +63,10 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
   const Node load = e["load"];
   const double torque = load["output_torque_Nm"].Positive() * 1000.0;  // N·mm
   const double clearance = e.NonNegativeOr("clearance_um", 0.0) / 1000.0;  // mm
+  // Needle bearing radial stiffness per roller, in series with its contact; absent = rigid.
+  const double bearing = e.Has("needle_bearing_radial_stiffness_N_per_mm")
+                             ? e["needle_bearing_radial_stiffness_N_per_mm"].Positive()
+                             : 0.0;
   const int steps = e.IntegerOr("angle_steps", 8, 720);
   const std::string direction = e.StringOr("direction", "forward");
   if (direction != "forward" && direction != "reverse") e["direction"].Fail("\"forward\" or \"reverse\"");
@@ -75,11 +79,12 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
   double dead_band = 0;
   try {
     Progress progress("lobe_cam_reducer stiffness", ctx.quiet);
-    cycle = rigidity::StiffnessCycle(r, material, sense * torque, clearance, steps);
+    cycle = rigidity::StiffnessCycle(r, material, sense * torque, clearance, steps, bearing);
     progress.Update(0.4);
-    reverse = rigidity::StiffnessCycle(r, material, -sense * torque, clearance, steps);
+    reverse = rigidity::StiffnessCycle(r, material, -sense * torque, clearance, steps, bearing);
     progress.Update(0.6);
-    // Lost-motion curve from −T to +T (sense of the load), mean over the revolution; 0 excluded
+    // Lost-motion curve from −T to +T (sense of the load), mean over 36 input angles (the arms
+    // repeat with the roller pitch, 13- or 15-fold, so a uniform 10° grid averages them well); 0 excluded
     // (inside a clearance the position is undetermined), a point on each side of it instead.
     const int n = 40;
     for (int i = -n; i <= n; ++i) {
@@ -92,7 +97,7 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
     }
     std::vector<double> signed_t;
     for (double t : torques) signed_t.push_back(sense * t);
-    rotations = rigidity::LostMotionCurve(r, material, signed_t, clearance, std::min(steps, 180));
+    rotations = rigidity::LostMotionCurve(r, material, signed_t, clearance, std::min(steps, 36), bearing);
     for (double& x : rotations) x *= sense;
     dead_band = rigidity::DeadBand(r, clearance, steps);
     progress.Update(1.0);
@@ -102,7 +107,7 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
   // Lost motion as reducer catalogues define it: the rotation between ±3 % of the rated torque
   // (here the load torque), mean over the revolution.
   const auto lm = rigidity::LostMotionCurve(r, material, {-0.03 * sense * torque, 0.03 * sense * torque},
-                                            clearance, std::min(steps, 180));
+                                            clearance, std::min(steps, 36), bearing);
   const double lost_motion = std::abs(lm[1] - lm[0]);
 
   ElementSpec& s = parsed.spec;
@@ -117,6 +122,7 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
   x["output_torque_Nm"] = torque / 1000.0;
   x["direction"] = direction;
   x["clearance_um"] = clearance * 1000.0;
+  if (bearing > 0) x["needle_bearing_radial_stiffness_N_per_mm"] = bearing;
   x["contact_law"] = "Palmgren line contact, delta = 3.84e-5 Q^0.9 / L^0.8 (steel), scaled by E*";
   x["mean_secant_rigidity_Nm_per_rad"] = cycle.mean_secant_Nmm_per_rad / 1000.0;
   x["mean_secant_rigidity_Nm_per_arcmin"] = cycle.mean_secant_Nmm_per_rad / 1000.0 / per_arcmin;

@@ -82,7 +82,7 @@ TEST(LcrStiffness, HandCheckLcrIIIAtZeroAngle) {
 // solved by nested bisection (each residual is monotone in its own unknown).
 struct TwoDof {
   lcr::Reducer<double> r;
-  double theta, clearance, e_star;
+  double theta, clearance, e_star, bearing;
   std::vector<lcr::RollerContact<double>> ca, cb;
   Vec2<double> oc;
 
@@ -90,7 +90,11 @@ struct TwoDof {
                double length) const {
     const Vec2<double> v_cam = dphi * Perp<double>(c.point - oc);
     const Vec2<double> v_rol = output ? Vec2<double>(dtheta_o * Perp<double>(c.centre)) : Vec2<double>(0, 0);
-    return PalmgrenForce(-c.direction.dot(v_cam - v_rol) - clearance, length, e_star);
+    const double closure = -c.direction.dot(v_cam - v_rol) - clearance;
+    if (bearing == 0.0 || closure <= 0.0) return PalmgrenForce(closure, length, e_star);
+    // Contact and needle bearing in series: δ_P(F) + F/k_b = closure, by bisection.
+    return Bisect([&](double f) { return PalmgrenApproach(f, length, e_star) + f / bearing - closure; },
+                  0.0, bearing * closure);
   }
   double CamMoment(double dphi, double dto) const {
     double m = 0;
@@ -104,7 +108,7 @@ struct TwoDof {
     return t;
   }
   static double Bisect(const std::function<double(double)>& f, double lo, double hi) {
-    for (int i = 0; i < 200; ++i) {
+    for (int i = 0; i < 64; ++i) {
       const double mid = 0.5 * (lo + hi);
       (f(mid) > 0 ? hi : lo) = mid;
     }
@@ -119,18 +123,20 @@ struct TwoDof {
 };
 
 TEST(LcrStiffness, DecouplingAgreesWithTheFullTwoDofEquilibrium) {
-  for (double clearance : {0.0, 0.004}) {
-    for (double theta_deg : {0.0, 7.0, 23.0}) {
-      SCOPED_TRACE(::testing::Message() << "clearance " << clearance << " θ " << theta_deg);
+  for (const auto& [clearance, bearing] : {std::pair{0.0, 0.0}, std::pair{0.004, 0.0}, std::pair{0.0, 1.5e5},
+                                          std::pair{0.003, 1.5e5}}) {
+    // The bearing cases nest a third bisection (per roller): one angle keeps them quick.
+    for (double theta_deg : bearing > 0 ? std::vector<double>{7.0} : std::vector<double>{0.0, 7.0, 23.0}) {
+      SCOPED_TRACE(::testing::Message() << "clearance " << clearance << " bearing " << bearing << " θ " << theta_deg);
       const auto r = LcrII();
       const double theta = theta_deg * kPi / 180.0;
-      TwoDof s{r, theta, clearance, Steel().composite_modulus_MPa(),
+      TwoDof s{r, theta, clearance, Steel().composite_modulus_MPa(), bearing,
                lcr::RollerContacts(r, lcr::Side::kInput, theta),
                lcr::RollerContacts(r, lcr::Side::kOutput, theta),
                r.eccentricity * U(theta)};
       for (double torque : {80000.0, -80000.0, 5000.0}) {
         const double full = s.OutputRotation(torque);
-        const auto d = DeflectAtAngle<double>(r, Steel(), theta, torque, clearance);
+        const auto d = DeflectAtAngle<double>(r, Steel(), theta, torque, clearance, bearing);
         EXPECT_NEAR(d.output_rotation, full, 1e-7 * std::abs(full)) << "T " << torque;
       }
     }
@@ -204,18 +210,36 @@ TEST(LcrStiffness, RippleIsSmallAndForcesMatchThePapersScale) {
   EXPECT_NEAR(HardMax(cyc.max_force_output_N), 720.0, 0.03 * 720.0);
 }
 
+TEST(LcrStiffness, NeedleBearingSpringIsInSeriesWithTheContact) {
+  const double e_star = Steel().composite_modulus_MPa();
+  TurretSpring<double> s{{10.0}, 8.0, e_star, 0.0, 2.0e5};
+  for (double closure : {1e-4, 3e-3, 2e-2}) {
+    const double f = s.RollerForce(closure);
+    EXPECT_NEAR(PalmgrenApproach(f, 8.0, e_star) + f / 2.0e5, closure, 1e-12 * closure);
+    const double k = s.RollerRigidity(closure);
+    const double kc = (10.0 / 9.0) * f / PalmgrenApproach(f, 8.0, e_star);
+    EXPECT_NEAR(1.0 / k, 1.0 / kc + 1.0 / 2.0e5, 1e-12 / k);
+  }
+  // A very stiff bearing changes nothing; a real one makes the reducer softer.
+  const auto r = LcrII();
+  const double t = 80000.0;
+  const double rigid = DeflectAtAngle<double>(r, Steel(), 0.2, t, 0.0).output_rotation;
+  EXPECT_NEAR(DeflectAtAngle<double>(r, Steel(), 0.2, t, 0.0, 1e13).output_rotation, rigid, 1e-6 * rigid);
+  EXPECT_GT(DeflectAtAngle<double>(r, Steel(), 0.2, t, 0.0, 2e5).output_rotation, 1.05 * rigid);
+}
+
 TEST(LcrStiffness, GradientsMatchCentralDifferences) {
-  for (double clearance : {0.0, 0.003}) {
-    SCOPED_TRACE(clearance);
+  for (const auto& [clearance, bearing] : {std::pair{0.0, 0.0}, std::pair{0.003, 0.0}, std::pair{0.002, 2e5}}) {
+    SCOPED_TRACE(::testing::Message() << clearance << " " << bearing);
     // Variables: eccentricity, output turret radius, roller length (input and output), torque [N·m].
-    auto f = [clearance](const auto& x) {
+    auto f = [clearance, bearing](const auto& x) {
       using T = std::decay_t<decltype(x[0])>;
       lcr::Reducer<T> r = LcrII().template cast<T>();
       r.eccentricity = x[0];
       r.output.turret_radius = x[1];
       r.input.cam_thickness = x[2];
       r.output.cam_thickness = x[2];
-      const auto d = DeflectAtAngle<T>(r, Steel(), T(0.37), x[3] * T(1000.0), T(clearance));
+      const auto d = DeflectAtAngle<T>(r, Steel(), T(0.37), x[3] * T(1000.0), T(clearance), T(bearing));
       return std::vector<T>{d.output_rotation * T(1e4), d.tangent_rigidity * T(1e-8),
                             d.elastic_rotation * T(1e4)};
     };

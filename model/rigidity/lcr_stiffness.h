@@ -13,8 +13,9 @@
 // Contact law: Palmgren's roller approach δ = 3.84·10⁻⁵ Q^0.9 / L^0.8 (mm, N; steel), written
 // dimensionally as δ = K_P (Q/E*)^0.9 L^−0.8 with K_P fixed by Palmgren's steel (E = 207 GPa,
 // ν = 0.3), so that another E* scales it (Palmgren, Ball and Roller Bearing Engineering, 1959;
-// Harris & Kotzalas, Rolling Bearing Analysis, §6). The needle bearings' own radial compliance and
-// the eccentric bearing are not included (both in series; see the docs).
+// Harris & Kotzalas, Rolling Bearing Analysis, §6). Optionally each roller's needle bearing adds a
+// linear radial spring k_b in series with its contact. The eccentric bearing, bodies and shafts are
+// not included (see the docs).
 #pragma once
 
 #include <cmath>
@@ -57,33 +58,61 @@ struct TurretSpring {
   T length;             ///< line-contact length [mm]
   T e_star;             ///< composite modulus [MPa]
   T clearance;          ///< normal clearance c [mm] at every roller
+  T bearing = T(0.0);   ///< needle-bearing radial stiffness k_b [N/mm] in series; 0 = rigid
+
+  /// Force of one roller [N] at a closure δ [mm] of contact and bearing in series:
+  /// δ = δ_P + F(δ_P)/k_b with F(δ_P) the contact law. The residual is convex and increasing in the
+  /// contact approach δ_P, so Newton from δ_P = δ (residual >= 0) descends monotonically to the
+  /// root; then one Newton step in T gives exact first derivatives (implicit function theorem).
+  T RollerForce(const T& closure) const {
+    if (!(Value(closure) > 0)) return T(0.0);
+    if (Value(bearing) == 0.0) return PalmgrenForce(closure, length, e_star);
+    const double dv = Value(closure), kb = Value(bearing), l = Value(length), es = Value(e_star);
+    double dc = dv;
+    for (int it = 0; it < 100; ++it) {
+      const double f = PalmgrenForce(dc, l, es);
+      const double h = dc + f / kb - dv;
+      const double next = dc - h / (1.0 + (10.0 / 9.0) * f / (dc * kb));
+      const bool done = std::abs(next - dc) <= 1e-15 * dv;
+      dc = next;
+      if (done) break;
+    }
+    const T dct(dc);
+    const T f = PalmgrenForce(dct, length, e_star);
+    const T dcn = dct - (dct + f / bearing - closure) / (T(1.0) + T(10.0 / 9.0) * f / (dct * bearing));
+    return PalmgrenForce(dcn, length, e_star);
+  }
+  /// dF/dδ of one roller: the contact's (10/9) F/δ_P in series with k_b.
+  T RollerRigidity(const T& closure) const {
+    if (!(Value(closure) > 0)) return T(0.0);
+    const T f = RollerForce(closure);
+    const T kc = T(10.0 / 9.0) * f / PalmgrenApproach(f, length, e_star);
+    if (Value(bearing) == 0.0) return kc;
+    return T(1.0) / (T(1.0) / kc + T(1.0) / bearing);
+  }
 
   /// g(ψ) = Σ F(ψ a_k − c) a_k [N·mm].
   T Torque(const T& psi) const {
     T s(0.0);
-    for (const T& a : arms) s += PalmgrenForce(psi * a - clearance, length, e_star) * a;
+    for (const T& a : arms) s += RollerForce(psi * a - clearance) * a;
     return s;
   }
-  /// g'(ψ) = Σ F'(δ_k) a_k², F' = (10/9) F/δ [N·mm/rad].
+  /// g'(ψ) = Σ F'(δ_k) a_k² [N·mm/rad].
   T Rigidity(const T& psi) const {
     T s(0.0);
-    for (const T& a : arms) {
-      const T d = psi * a - clearance;
-      if (!(Value(d) > 0)) continue;
-      s += T(10.0 / 9.0) * PalmgrenForce(d, length, e_star) / d * a * a;
-    }
+    for (const T& a : arms) s += RollerRigidity(psi * a - clearance) * a * a;
     return s;
   }
   /// Largest force among the rollers at ψ [N].
   T MaxForce(const T& psi) const {
     std::vector<T> f;
-    for (const T& a : arms) f.push_back(PalmgrenForce(psi * a - clearance, length, e_star));
+    for (const T& a : arms) f.push_back(RollerForce(psi * a - clearance));
     return HardMax(f);
   }
 
   /// ψ with g(ψ) = torque. Without clearance the law is a power of ψ on each side of 0, so
   /// ψ = sign(T) (|T| / (E* (L^0.8/K_P)^(10/9) Σ_{sign a = sign T} |a|^(19/9)))^0.9 exactly.
-  /// With clearance: bracketed bisection in double, then one Newton step in T, which carries
+  /// With clearance or a bearing spring: bracketed bisection in double, then one Newton step in T, which carries
   /// the exact first derivatives (implicit function theorem). T = 0 returns 0 (the middle of the
   /// dead band). @throws std::domain_error when no roller can carry a torque of this sign.
   T Rotation(const T& torque) const {
@@ -95,23 +124,35 @@ struct TurretSpring {
     double amax = 0.0;
     for (const T& a : arms) amax = std::max(amax, sign * Value(a));
     if (!(amax > 0)) throw std::domain_error("no roller of the turret can carry this torque");
-    if (Value(clearance) == 0.0) {
+    if (Value(clearance) == 0.0 && Value(bearing) == 0.0) {
       T sum(0.0);
       for (const T& a : arms)
         if (sign * Value(a) > 0) sum += pow(T(sign) * a, T(19.0 / 9.0));
       const T c = e_star * pow(pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
       return T(sign) * pow(abs(torque) / (c * sum), T(0.9));
     }
-    // g is monotone increasing; bracket on the loaded side beyond the dead band c/amax.
+    // g is monotone increasing; bracket on the loaded side beyond the dead band c/amax, then
+    // Newton safeguarded by bisection.
     const TurretSpring<double> s = ToDouble();
+    const double target = std::abs(tv);
     double lo = Value(clearance) / amax, hi = 2.0 * lo + 1e-6;
     auto g = [&](double psi) { return sign * s.Torque(sign * psi); };
-    for (int it = 0; it < 2000 && g(hi) < std::abs(tv); ++it) hi *= 2.0;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (g(mid) < std::abs(tv) ? lo : hi) = mid;
+    for (int it = 0; it < 2000 && g(hi) < target; ++it) {
+      lo = hi;
+      hi *= 2.0;
     }
-    const T psi0(sign * 0.5 * (lo + hi));
+    double psi = hi;
+    for (int it = 0; it < 200; ++it) {
+      const double r = g(psi) - target;
+      (r > 0 ? hi : lo) = psi;
+      const double slope = s.Rigidity(sign * psi);
+      double next = slope > 0 ? psi - r / slope : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      const bool done = std::abs(next - psi) <= 1e-14 * psi || hi - lo <= 1e-15 * hi;
+      psi = next;
+      if (done) break;
+    }
+    const T psi0(sign * psi);
     return psi0 - (Torque(psi0) - torque) / Rigidity(psi0);
   }
 
@@ -121,6 +162,7 @@ struct TurretSpring {
     s.length = Value(length);
     s.e_star = Value(e_star);
     s.clearance = Value(clearance);
+    s.bearing = Value(bearing);
     return s;
   }
 };
@@ -145,10 +187,11 @@ struct ReducerDeflection {
 /// of the paper's load is T = LoadedArmSign(r, Side::kOutput)·|T|), input shaft held.
 template <typename T>
 ReducerDeflection<T> DeflectAtAngle(const lcr::Reducer<T>& r, const lcr::Material& material,
-                                    const T& theta, const T& torque, const T& clearance) {
+                                    const T& theta, const T& torque, const T& clearance,
+                                    const T& bearing_stiffness = T(0.0)) {
   const T e_star(material.composite_modulus_MPa());
-  TurretSpring<T> a{{}, r.input.contact_length(), e_star, clearance};
-  TurretSpring<T> b{{}, r.output.contact_length(), e_star, clearance};
+  TurretSpring<T> a{{}, r.input.contact_length(), e_star, clearance, bearing_stiffness};
+  TurretSpring<T> b{{}, r.output.contact_length(), e_star, clearance, bearing_stiffness};
   for (const auto& c : lcr::RollerContacts(r, lcr::Side::kInput, theta)) a.arms.push_back(c.arm);
   for (const auto& c : lcr::RollerContacts(r, lcr::Side::kOutput, theta)) b.arms.push_back(c.arm);
   const double rho = FixedTurretTorqueRatio(r);
@@ -185,12 +228,13 @@ struct ReducerStiffnessCycle {
 
 inline ReducerStiffnessCycle StiffnessCycle(const lcr::Reducer<double>& r,
                                             const lcr::Material& material, double torque_Nmm,
-                                            double clearance_mm, int steps) {
+                                            double clearance_mm, int steps,
+                                            double bearing_N_per_mm = 0.0) {
   ReducerStiffnessCycle c;
   double sum_rot = 0, sum_tan = 0;
   for (int i = 0; i < steps; ++i) {
     const double theta = 2 * kPi * i / steps;
-    const auto d = DeflectAtAngle<double>(r, material, theta, torque_Nmm, clearance_mm);
+    const auto d = DeflectAtAngle<double>(r, material, theta, torque_Nmm, clearance_mm, bearing_N_per_mm);
     c.theta_rad.push_back(theta);
     c.rotation_rad.push_back(d.output_rotation);
     c.elastic_rotation_rad.push_back(d.elastic_rotation);
@@ -216,12 +260,14 @@ inline ReducerStiffnessCycle StiffnessCycle(const lcr::Reducer<double>& r,
 inline std::vector<double> LostMotionCurve(const lcr::Reducer<double>& r,
                                            const lcr::Material& material,
                                            const std::vector<double>& torques,
-                                           double clearance_mm, int steps) {
+                                           double clearance_mm, int steps,
+                                           double bearing_N_per_mm = 0.0) {
   std::vector<double> out;
   for (double t : torques) {
     double s = 0;
     for (int i = 0; i < steps; ++i)
-      s += DeflectAtAngle<double>(r, material, 2 * kPi * i / steps, t, clearance_mm).output_rotation;
+      s += DeflectAtAngle<double>(r, material, 2 * kPi * i / steps, t, clearance_mm, bearing_N_per_mm)
+               .output_rotation;
     out.push_back(s / steps);
   }
   return out;
