@@ -48,6 +48,9 @@ std::pair<double, double> Diameters(const Node& e, const std::string& outer_key)
 // One parsed element: its spec, plus extra result fields and files (a reducer's ripple).
 struct ParsedElement {
   ElementSpec spec;
+  // For a reducer: ∂ln R/∂ln p of its own rigidity w.r.t. its dimensions (its spec's parameters
+  // are a precomputed ratio and rigidity, which are not design choices).
+  std::vector<std::pair<std::string, double>> own_elasticity;
   nlohmann::json extra;
   std::map<std::string, std::string> files;
 };
@@ -109,6 +112,8 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
   const auto lm = rigidity::LostMotionCurve(r, material, {-0.03 * sense * torque, 0.03 * sense * torque},
                                             clearance, std::min(steps, 36), bearing);
   const double lost_motion = std::abs(lm[1] - lm[0]);
+  parsed.own_elasticity = rigidity::ReducerStiffnessElasticities(
+      r, material, sense * torque, clearance, bearing, std::min(steps, 180));
 
   ElementSpec& s = parsed.spec;
   s.kind = ElementKind::kFixed;
@@ -282,7 +287,7 @@ std::string KindAdvice(const std::string& kind) {
       {"lever", "stiffen or shorten the lever"},
       {"coupling", "use a torsionally rigid (membrane or diaphragm) coupling"},
       {"gear_stage", "use larger gears (R = S r^2), or place the long shaft on the high-speed side of the reduction"},
-      {"lobe_cam_reducer", "more or larger rollers, longer rollers, or a larger turret radius"},
+      {"lobe_cam_reducer", "a larger eccentricity (the moment arms grow with it), longer rollers and cam, or stiffer roller bearings"},
   };
   auto it = advice.find(kind);
   return it == advice.end() ? "" : it->second;
@@ -303,7 +308,22 @@ void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& o
   const auto r = rigidity::EvaluateChain<double>(specs);
   if (!(r.compliance_b > 0.0))
     chain.FailWith("every element is rigid: the chain has no compliance to report");
-  const auto elasticity = rigidity::RigidityElasticities(specs);
+  // Elasticities of the overall rigidity per element parameter; a reducer's are its own times its
+  // compliance share (∂ln R/∂ln p = share · ∂ln R_k/∂ln p).
+  const auto chain_elasticity = rigidity::RigidityElasticities(specs);
+  std::vector<std::vector<std::string>> el_names(specs.size());
+  std::vector<std::vector<double>> elasticity(specs.size());
+  for (size_t i = 0; i < specs.size(); ++i) {
+    if (specs[i].kind == ElementKind::kFixed) {
+      for (const auto& [n, v] : parsed[i].own_elasticity) {
+        el_names[i].push_back(n);
+        elasticity[i].push_back(r.share[i] * v);
+      }
+    } else {
+      el_names[i] = specs[i].param_names;
+      elasticity[i] = chain_elasticity[i];
+    }
+  }
 
   nlohmann::json result;
   result["study"] = "transmission_rigidity";
@@ -346,8 +366,7 @@ void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& o
     e["backlash_arcmin"] = s.backlash_rad * kArcminPerRad;
     e["backlash_at_end_b_arcmin"] = r.backlash_at_b[i] * kArcminPerRad;
     nlohmann::json el = nlohmann::json::object();
-    for (size_t q = 0; q < s.params.size(); ++q)
-      if (s.kind != ElementKind::kFixed) el[s.param_names[q]] = elasticity[i][q];
+    for (size_t q = 0; q < el_names[i].size(); ++q) el[el_names[i][q]] = elasticity[i][q];
     e["rigidity_elasticity"] = el;
     if (!parsed[i].extra.is_null()) e["reducer"] = parsed[i].extra;
     elements.push_back(e);
@@ -373,18 +392,17 @@ void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& o
                        std::to_string(static_cast<int>(std::lround(100.0 * r.share[d]))) +
                        "% of the compliance: " + KindAdvice(ds.kind_name) + ".";
   int best_q = -1;
-  for (size_t q = 0; q < ds.params.size(); ++q) {
-    const std::string& pn = ds.param_names[q];
-    if (ds.kind == ElementKind::kFixed || pn.find("modulus") != std::string::npos || pn == "ratio")
-      continue;
+  for (size_t q = 0; q < el_names[d].size(); ++q) {
+    const std::string& pn = el_names[d][q];
+    if (pn.find("modulus") != std::string::npos || pn == "ratio") continue;
     if (best_q < 0 || std::abs(elasticity[d][q]) > std::abs(elasticity[d][best_q])) best_q = static_cast<int>(q);
   }
   if (best_q >= 0) {
     char buf[200];
     std::snprintf(buf, sizeof buf, " Most effective dimension: %s (%+.2f%% overall rigidity per +1%%).",
-                  ds.param_names[best_q].c_str(), elasticity[d][best_q]);
+                  el_names[d][best_q].c_str(), elasticity[d][best_q]);
     advice += buf;
-    dom["most_effective_parameter"] = ds.param_names[best_q];
+    dom["most_effective_parameter"] = el_names[d][best_q];
     dom["most_effective_parameter_elasticity"] = elasticity[d][best_q];
   }
   dom["advice"] = advice;

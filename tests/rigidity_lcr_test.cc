@@ -247,6 +247,33 @@ TEST(LcrStiffness, GradientsMatchCentralDifferences) {
   }
 }
 
+TEST(LcrStiffness, ElasticitiesObeyScalingAndMatchFiniteDifferences) {
+  const auto r = LcrII();
+  const double t = 80000.0;
+  const int steps = 36;
+  const auto el = ReducerStiffnessElasticities(r, Steel(), t, 0.0, 0.0, steps);
+  ASSERT_EQ(el.size(), 5u);
+  // Without clearance or bearings: the arms scale with e and r_d, ψ ∝ (T / Σ a^(19/9))^0.9, so
+  // K ∝ λ^1.9 when all three scale; and K ∝ L^0.8 through Palmgren's law.
+  EXPECT_NEAR(el[0].second + el[1].second + el[2].second, 1.9, 1e-9);
+  EXPECT_NEAR(el[3].second + el[4].second, 0.8, 1e-9);
+  // The eccentricity elasticity against a central difference of the cycle's mean stiffness.
+  auto mean_k = [&](double e) {
+    auto rr = r;
+    rr.eccentricity = e;
+    return StiffnessCycle(rr, Steel(), t, 0.0, steps).mean_secant_Nmm_per_rad;
+  };
+  const double h = 1e-5;
+  const double fd = (std::log(mean_k(r.eccentricity * (1 + h))) - std::log(mean_k(r.eccentricity * (1 - h)))) /
+                    (std::log1p(h) - std::log1p(-h));
+  EXPECT_NEAR(el[0].second, fd, 1e-6);
+  // With bearings the bearing stiffness shows up, and the length and geometry sums drop.
+  const auto eb = ReducerStiffnessElasticities(r, Steel(), t, 0.0, 2e5, steps);
+  ASSERT_EQ(eb.size(), 6u);
+  EXPECT_GT(eb[5].second, 0.0);
+  EXPECT_LT(eb[3].second + eb[4].second, 0.8);
+}
+
 // ---- The element in a study -------------------------------------------------------------------
 
 TEST(LcrStiffnessStudy, ReducerElementCarriesItsRatioAndStiffness) {

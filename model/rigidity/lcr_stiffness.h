@@ -20,7 +20,11 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
+
+#include <ceres/jet.h>
 
 #include "model/common/scalar.h"
 #include "model/lcr/contact.h"
@@ -292,6 +296,50 @@ inline double DeadBand(const lcr::Reducer<double>& r, double clearance_mm, int s
     }
   }
   return s / steps;
+}
+
+}  // namespace camopt::rigidity
+
+namespace camopt::rigidity {
+
+/// ∂ln K/∂ln p of the reducer's mean secant stiffness K over `steps` input angles (the same
+/// definition as StiffnessCycle) with respect to its free dimensions, by ceres::Jet: the
+/// eccentricity, both turret radii, both line-contact lengths (roller length and cam thickness
+/// scaled together) and, when present, the needle bearings' stiffness. The roller diameter does not
+/// enter: the arms do not depend on it (every normal passes through the pitch point) and Palmgren's
+/// law is independent of the radii.
+inline std::vector<std::pair<std::string, double>> ReducerStiffnessElasticities(
+    const lcr::Reducer<double>& r, const lcr::Material& material, double torque_Nmm,
+    double clearance_mm, double bearing_N_per_mm, int steps) {
+  using J = ceres::Jet<double, 6>;
+  auto seeded = [](double v, int k) {
+    J x(v);
+    x.v[k] = v;  // d/dλ of v·λ at λ = 1: derivatives come out per unit of ln p
+    return x;
+  };
+  lcr::Reducer<J> rj = r.cast<J>();
+  rj.eccentricity = seeded(r.eccentricity, 0);
+  rj.input.turret_radius = seeded(r.input.turret_radius, 1);
+  rj.output.turret_radius = seeded(r.output.turret_radius, 2);
+  rj.input.roller_length = seeded(r.input.roller_length, 3);
+  rj.input.cam_thickness = seeded(r.input.cam_thickness, 3);
+  rj.output.roller_length = seeded(r.output.roller_length, 4);
+  rj.output.cam_thickness = seeded(r.output.cam_thickness, 4);
+  const J bearing = bearing_N_per_mm > 0 ? seeded(bearing_N_per_mm, 5) : J(0.0);
+  J sum(0.0);
+  for (int i = 0; i < steps; ++i)
+    sum += DeflectAtAngle<J>(rj, material, J(2 * kPi * i / steps), J(torque_Nmm), J(clearance_mm), bearing)
+               .elastic_rotation;
+  // K = T / mean rotation, so ∂ln K = −∂ln(mean rotation).
+  std::vector<std::pair<std::string, double>> out = {
+      {"eccentricity_mm", -sum.v[0] / sum.a},
+      {"input.turret_radius_mm", -sum.v[1] / sum.a},
+      {"output.turret_radius_mm", -sum.v[2] / sum.a},
+      {"input.contact_length_mm", -sum.v[3] / sum.a},
+      {"output.contact_length_mm", -sum.v[4] / sum.a},
+  };
+  if (bearing_N_per_mm > 0) out.push_back({"needle_bearing_radial_stiffness_N_per_mm", -sum.v[5] / sum.a});
+  return out;
 }
 
 }  // namespace camopt::rigidity
