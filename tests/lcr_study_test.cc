@@ -105,6 +105,8 @@ struct BadCase {
   std::string name, patch_path, patch_value, message;  // patch_value "REMOVE" deletes the field
 };
 
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
 class LcrStudyBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(LcrStudyBadInput, OneClearLineAndExitCode2) {
