@@ -150,11 +150,13 @@ Study Parse(const Node& root, const RunContext& ctx) {
     b.form = form == "samples" ? objectives::LcrConstraintForm::kSamples
                                : objectives::LcrConstraintForm::kAggregate;
     b.samples_per_period = o.IntegerOr("samples_per_period", 4, b.samples_per_period);
+    if (b.samples_per_period > 720) o["samples_per_period"].Fail("a whole number between 4 and 720");
     if (o.Has("sharpness")) b.sharpness = o["sharpness"].Positive();
     if (o.Has("tolerance")) s.solver.tolerance = o["tolerance"].NumberIn(1e-14, 1e-2);
     // Ipopt counts iterations (one gradient each), NLopt evaluations: Ipopt converges in 10–50
     // iterations here, and a start that needs hundreds is a degenerate one that other starts cover.
     s.solver.max_evaluations = o.IntegerOr("max_evaluations", 10, s.solver.backend == "ipopt" ? 200 : 3000);
+    if (s.solver.max_evaluations > 100000) o["max_evaluations"].Fail("a whole number between 10 and 100000");
     s.starts = o.IntegerOr("starts", 1, s.starts);
     if (s.starts > 5) o["starts"].Fail("a number of starts between 1 and 5");
   }

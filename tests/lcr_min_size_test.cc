@@ -46,6 +46,7 @@ TEST(LcrMinSize, RatioMinus90BestSatisfiesEveryLimitInLcrAnalysis) {
   std::string err;
   const json res = RunStudy(study, dir, &code, &err);
   ASSERT_EQ(code, 0) << err;
+  EXPECT_EQ(err, "");  // --quiet: no progress line
   ASSERT_TRUE(res["best"].is_object());
   const json& best = res["best"];
   EXPECT_EQ(best["speed_ratio"].get<double>(), -90.0);
@@ -210,6 +211,17 @@ TEST(LcrMinSize, ImpossibleLimitsGiveNoBestAndSayWhy) {
   EXPECT_FALSE(c["violated"].empty());
 }
 
+TEST(LcrMinSize, ProgressLineWithoutQuiet) {
+  json study = Example("lcr_min_size.json");
+  study["search"]["max_lobes"] = 14;
+  const auto dir = TempDir("lcr-min-size-progress");
+  WriteFile(dir / "study.json", study.dump());
+  const auto r = RunCamopt("run " + (dir / "study.json").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("lcr_min_size:"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("12/13 + 14/15"), std::string::npos) << r.stderr_text;
+}
+
 TEST(LcrMinSize, BadInputIsAClearErrorWithExitCode2) {
   struct Case {
     std::string pointer, value, expect;
@@ -221,6 +233,8 @@ TEST(LcrMinSize, BadInputIsAClearErrorWithExitCode2) {
       {"/variables/eccentricity_mm", "[5, 0.5]", "/variables/eccentricity_mm"},
       {"/search/max_lobes", "3", "no lobe/roller combination"},
       {"/roller_catalogue", "{\"file\": \"no_such_file.json\"}", "no_such_file.json"},
+      {"/optimizer/samples_per_period", "100000", "/optimizer/samples_per_period"},
+      {"/optimizer/constraints", "\"all\"", "/optimizer/constraints"},
   };
   for (const auto& c : cases) {
     json study = Example("lcr_min_size.json");
