@@ -132,7 +132,15 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   for (int i = 0; i < m; ++i) {
     const double model = fit.x[1] + data[i].output_torque_Nm * (t_ideal + fit.x[0] * t_friction);
     const double paper_model = data[i].output_torque_Nm * (t_ideal + 0.05 * t_friction);
+    nlohmann::json row_sd = nullptr;
+    if (!fit.covariance.empty()) {
+      // Standard deviation of the fitted torque: sqrt(gᵀ C g), g = ∂T_in/∂(μ, T_drag).
+      const double g0 = data[i].output_torque_Nm * t_friction, g1 = 1.0;
+      const auto& c = fit.covariance;
+      row_sd = std::sqrt(g0 * g0 * c[0] + 2 * g0 * g1 * c[1] + g1 * g1 * c[3]);
+    }
     rows.push_back({{"output_torque_Nm", data[i].output_torque_Nm},
+                    {"fitted_input_torque_sd_Nm", row_sd},
                     {"measured_input_torque_Nm", data[i].input_torque_Nm},
                     {"measured_sd_Nm", data[i].sd_Nm},
                     {"fitted_input_torque_Nm", model},

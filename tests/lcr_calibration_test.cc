@@ -81,6 +81,12 @@ TEST(LcrFrictionFit, Table4FitAndItsCovariance) {
   EXPECT_NEAR(cov[0][0].get<double>(), s11 / det, 1e-6 * s11 / det);
   EXPECT_NEAR(cov[0][1].get<double>(), -s01 / det, 1e-6 * std::abs(s01 / det));
   EXPECT_NEAR(cov[1][1].get<double>(), s00 / det, 1e-6 * s00 / det);
+  // Prediction uncertainty at each load: sqrt(gᵀ C g) with g = (T_o t_friction, 1).
+  for (const json& m : res["measurements"]) {
+    const double x = m["output_torque_Nm"].get<double>() * tf;
+    const double var = (x * x * s11 - 2 * x * s01 + s00) / det;
+    EXPECT_NEAR(m["fitted_input_torque_sd_Nm"].get<double>(), std::sqrt(var), 1e-6 * std::sqrt(var));
+  }
 }
 
 TEST(LcrFrictionFit, BadInputIsExitCode2) {
