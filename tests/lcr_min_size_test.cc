@@ -195,6 +195,24 @@ TEST(LcrMinSize, CatalogueRollerIsPickedAndItsLoadLimitHeld) {
   }
 }
 
+// The catalogue file is found relative to the study file, whatever the working directory.
+TEST(LcrMinSize, CatalogueFileRelativeToTheStudy) {
+  json study = Example("lcr_min_size_catalogue.json");
+  study["search"]["max_lobes"] = 14;
+  const auto dir = TempDir("lcr-min-size-catalogue-file");
+  std::filesystem::copy_file(SourcePath("studies/examples/needle_rollers.json"), dir / "needle_rollers.json");
+  const json res = RunStudy(study, dir, nullptr, nullptr);
+  ASSERT_TRUE(res.is_object());
+  const json catalogue = json::parse(ReadFile(dir / "needle_rollers.json"));
+  EXPECT_EQ(res["candidates"].size(), catalogue.size());  // one combination × every roller
+  ASSERT_TRUE(res["best"].is_object());
+  bool found = false;
+  for (const json& r : catalogue)
+    found = found || (r["name"] == res["best"]["catalogue_roller"] &&
+                      r["diameter_mm"].get<double>() == res["best"]["input"]["roller_diameter_mm"].get<double>());
+  EXPECT_TRUE(found);
+}
+
 TEST(LcrMinSize, ImpossibleLimitsGiveNoBestAndSayWhy) {
   json study = Example("lcr_min_size.json");
   study["search"]["max_lobes"] = 14;
