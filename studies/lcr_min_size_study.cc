@@ -226,6 +226,7 @@ struct Candidate {
   std::optional<lcr::Reducer<double>> design;
   std::optional<Check> check;
   int passes = 0;
+  std::string note;  // why a converged design has no dense check
   bool feasible() const { return check && check->ok; }
 };
 
@@ -262,11 +263,15 @@ Candidate SolveCandidate(const Study& s, const objectives::LobeCombination& comb
     if (cand.result.x.empty()) return cand;
     cand.design = objectives::LcrDesign(spec, cand.result.x);
     if (!cand.result.ok()) return cand;
-    if (!lcr::CheckDesign(*cand.design).empty()) return cand;
+    if (const auto problems = lcr::CheckDesign(*cand.design); !problems.empty()) {
+      cand.note = "design check: " + problems.front().field + ": " + problems.front().message;
+      return cand;
+    }
     try {
       cand.check = Verify(*cand.design, s, limits);
-    } catch (const std::domain_error&) {
-      return cand;  // degenerate geometry: no check
+    } catch (const std::domain_error& e) {
+      cand.note = std::string("degenerate geometry: ") + e.what();
+      return cand;
     }
     if (cand.check->ok) return cand;
     // Tighten the sampled limits by what the dense grid found between samples.
@@ -303,6 +308,7 @@ nlohmann::json CandidateJson(const Candidate& c) {
   j["status"] = status;
   j["feasible"] = c.feasible();
   j["solver_message"] = c.result.message;
+  if (!c.note.empty()) j["note"] = c.note;
   j["evaluations"] = {{"values", c.result.value_evaluations},
                       {"gradients", c.result.gradient_evaluations},
                       {"iterations", c.result.iterations},
