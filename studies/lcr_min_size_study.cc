@@ -220,7 +220,7 @@ std::vector<std::string> Unique(const std::vector<std::string>& rows) {
 }
 
 struct Candidate {
-  objectives::LobeCombination combo;
+  objectives::LobeCombination combo{};
   const CatalogueRoller* roller = nullptr;
   optimizers::SolverResult result;
   std::optional<lcr::Reducer<double>> design;
@@ -234,7 +234,9 @@ struct Candidate {
 // tightens that limit by the excess and solves again from the previous optimum (at most 3 passes).
 Candidate SolveCandidate(const Study& s, const objectives::LobeCombination& combo,
                          const CatalogueRoller* roller) {
-  Candidate cand{combo, roller, {}, {}, {}, 0};
+  Candidate cand;
+  cand.combo = combo;
+  cand.roller = roller;
   LcrSizingSpec spec = s.base;
   spec.lobes_a = combo.lobes_a;
   spec.rollers_a = combo.rollers_a;
