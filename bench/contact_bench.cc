@@ -1,0 +1,152 @@
+// Speed against error of the half-space contact solver (docs/performance.md, "Half-space
+// contact solver"). Counters carry the errors against the Hertz closed forms and against a
+// tightly converged solve, so one run gives the whole table.
+//   build/camopt_bench --benchmark_filter=Contact
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "model/contact/half_space.h"
+#include "model/contact/hertz.h"
+#include "model/contact/reference_gaps.h"
+
+namespace camopt::contact {
+namespace {
+
+constexpr double kEStar = 115384.6;  // steel on steel [MPa]
+constexpr double kPointRadius = 10.0, kPointLoad = 100.0;  // sphere R [mm], W [N]
+constexpr double kRollerRadius = 10.0, kRollerLength = 10.0, kRollerLoad = 1000.0;
+
+Grid PointGrid(int n) {
+  const double a = CircularPointContact(kPointLoad, kPointRadius, kEStar).radius;
+  return CenteredGrid(n, n, 1.5 * a, 1.5 * a);
+}
+
+double Percent(double ours, double ref) { return 100.0 * (ours - ref) / ref; }
+
+void PointCounters(benchmark::State& state, const Grid& g, const ContactSolution& s,
+                   const ContactSolution& tight) {
+  const auto hz = CircularPointContact(kPointLoad, kPointRadius, kEStar);
+  state.counters["iters"] = s.iterations;
+  state.counters["p0_err_pct"] = Percent(s.max_pressure_MPa, hz.peak_pressure);
+  state.counters["a_err_pct"] = Percent(std::sqrt(s.contact_area_mm2 / kPi), hz.radius);
+  state.counters["delta_err_pct"] = Percent(s.approach_mm, hz.approach);
+  double diff = 0;
+  for (int i = 0; i < g.cells(); ++i)
+    diff = std::max(diff, std::abs(s.pressure_MPa[i] - tight.pressure_MPa[i]));
+  state.counters["vs_tight_pct"] = 100.0 * diff / tight.max_pressure_MPa;
+}
+
+// Polonsky–Keer CG with DC-FFT, Hertz point contact; args: n (n × n cells), −log10(tolerance),
+// FFTW_MEASURE plans (1) or FFTW_ESTIMATE (0).
+void BM_ContactPointCg(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const double tol = std::pow(10.0, -static_cast<double>(state.range(1)));
+  const Grid g = PointGrid(n);
+  const auto h = SphereGap(g, kPointRadius);
+  HalfSpaceSolver tight_solver({1e-13, 20000});
+  const auto tight = tight_solver.SolveForLoad(g, h, kPointLoad, kEStar);
+  SolverOptions options;
+  options.tolerance = tol;
+  options.max_iterations = 20000;
+  options.measure_fft_plans = state.range(2) != 0;
+  HalfSpaceSolver solver(options);
+  ContactSolution s = solver.SolveForLoad(g, h, kPointLoad, kEStar);  // plans, kernel cached
+  for (auto _ : state) {
+    s = solver.SolveForLoad(g, h, kPointLoad, kEStar);
+    benchmark::DoNotOptimize(s.pressure_MPa.data());  // (a double lvalue here is miscompiled with benchmark 1.7.1 + GCC)
+  }
+  PointCounters(state, g, s, tight);
+}
+BENCHMARK(BM_ContactPointCg)
+    ->ArgsProduct({{16, 32, 40, 64, 128, 256}, {4, 6, 8}, {0}})
+    ->ArgsProduct({{40, 128}, {8}, {1}})
+    ->Unit(benchmark::kMillisecond);
+
+// Dense active-set reference on the same problem; arg: n.
+void BM_ContactPointDense(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Grid g = PointGrid(n);
+  const auto h = SphereGap(g, kPointRadius);
+  HalfSpaceSolver tight_solver({1e-13, 20000});
+  const auto tight = tight_solver.SolveForLoad(g, h, kPointLoad, kEStar);
+  ContactSolution s;
+  for (auto _ : state) {
+    s = SolveDenseForLoad(g, h, kPointLoad, kEStar);
+    benchmark::DoNotOptimize(s.pressure_MPa.data());  // (a double lvalue here is miscompiled with benchmark 1.7.1 + GCC)
+  }
+  PointCounters(state, g, s, tight);
+}
+BENCHMARK(BM_ContactPointDense)->Arg(16)->Arg(24)->Arg(32)->Arg(40)->Unit(benchmark::kMillisecond);
+
+// First call on a new grid shape: FFTW planning (FFTW_ESTIMATE) + kernel spectrum + solve.
+void BM_ContactPointFirstCall(benchmark::State& state) {
+  const Grid g = PointGrid(static_cast<int>(state.range(0)));
+  const auto h = SphereGap(g, kPointRadius);
+  for (auto _ : state) {
+    HalfSpaceSolver solver;
+    benchmark::DoNotOptimize(solver.SolveForLoad(g, h, kPointLoad, kEStar).approach_mm);
+  }
+}
+BENCHMARK(BM_ContactPointFirstCall)->Arg(40)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// The cycloid use: many calls on one grid with a slowly moving contact (the sphere's centre
+// moves by a tenth of a cell per call), cold start versus warm start from the previous pressure.
+void BM_ContactPointSequence(benchmark::State& state) {
+  const Grid g = PointGrid(40);
+  const bool warm = state.range(0) != 0;
+  HalfSpaceSolver solver;
+  std::vector<std::vector<double>> gaps;
+  for (int k = 0; k < 20; ++k) gaps.push_back(SphereGap(g, kPointRadius, 0.1 * k * g.dx, 0.0));
+  ContactSolution s = solver.SolveForLoad(g, gaps[0], kPointLoad, kEStar);
+  double iterations = 0, calls = 0;
+  for (auto _ : state) {
+    for (const auto& h : gaps) {
+      s = warm ? solver.SolveForLoad(g, h, kPointLoad, kEStar, s.pressure_MPa)
+               : solver.SolveForLoad(g, h, kPointLoad, kEStar);
+      iterations += s.iterations;
+      calls += 1;
+    }
+  }
+  state.counters["iters_per_call"] = iterations / calls;
+  state.counters["calls"] = benchmark::Counter(calls, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ContactPointSequence)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// Straight roller on a flat (line contact); args: nx (over ±2b), ny (over the length L).
+// Mid-face peak and half-width against Hertz line contact, and the edge peak with its dy.
+void BM_ContactRollerCg(benchmark::State& state) {
+  const int nx = static_cast<int>(state.range(0)), ny = static_cast<int>(state.range(1));
+  const double b = LineContactHalfWidth(kRollerLoad, kRollerLength, kRollerRadius, kEStar);
+  const double p_hertz = LineContactPeakPressure(kRollerLoad, kRollerLength, kRollerRadius, kEStar);
+  const Grid g = CenteredGrid(nx, ny, 2.0 * b, 0.5 * kRollerLength);
+  const auto h = CylinderGap(g, kRollerRadius);
+  HalfSpaceSolver solver({1e-8, 20000});
+  ContactSolution s = solver.SolveForLoad(g, h, kRollerLoad, kEStar);
+  for (auto _ : state) {
+    s = solver.SolveForLoad(g, h, kRollerLoad, kEStar);
+    benchmark::DoNotOptimize(s.pressure_MPa.data());  // (a double lvalue here is miscompiled with benchmark 1.7.1 + GCC)
+  }
+  const int mid = ny / 2;  // the row just above the mid-plane
+  double p_mid = 0;
+  int cells_mid = 0;
+  for (int ix = 0; ix < nx; ++ix) {
+    const double p = s.pressure_MPa[mid * nx + ix];
+    p_mid = std::max(p_mid, p);
+    cells_mid += p > 0;
+  }
+  state.counters["iters"] = s.iterations;
+  state.counters["pmid_err_pct"] = Percent(p_mid, p_hertz);
+  state.counters["bmid_err_pct"] = Percent(0.5 * cells_mid * g.dx, b);
+  state.counters["edge_peak_MPa"] = s.max_pressure_MPa;
+  state.counters["dy_um"] = 1000.0 * s.dy_mm;
+}
+BENCHMARK(BM_ContactRollerCg)
+    ->Args({16, 64})->Args({32, 64})->Args({64, 64})
+    ->Args({32, 32})->Args({32, 128})->Args({32, 256})->Args({32, 512})->Args({32, 1024})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace camopt::contact

@@ -1,0 +1,610 @@
+// Half-space contact by Polonsky–Keer conjugate gradients (Polonsky & Keer 1999) with the
+// influence-coefficient convolution done by zero-padded FFT (DC-FFT, Liu, Wang & Liu 2000).
+// Influence coefficients: Love's rectangle solution, cycloid paper eq. (21) (love.h).
+#include "model/contact/half_space.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+
+#include "model/contact/half_space_detail.h"
+#include "model/contact/love.h"
+
+namespace camopt::contact {
+
+// ---------------------------------------------------------------------------------------------
+// Shared helpers.
+
+namespace detail {
+
+void CheckGrid(const Grid& grid, const char* where) {
+  std::ostringstream os;
+  if (grid.nx < 1 || grid.ny < 1) {
+    os << where << ": grid must have at least one cell in each direction, got nx = " << grid.nx
+       << ", ny = " << grid.ny;
+  } else if (!(std::isfinite(grid.dx) && std::isfinite(grid.dy) && grid.dx > 0 && grid.dy > 0)) {
+    os << where << ": cell sizes must be positive and finite, got dx = " << grid.dx
+       << " mm, dy = " << grid.dy << " mm";
+  } else if (!(std::isfinite(grid.x0) && std::isfinite(grid.y0))) {
+    os << where << ": grid corner must be finite";
+  } else if (static_cast<long long>(grid.nx) * grid.ny > (1LL << 26)) {
+    os << where << ": grid of " << grid.nx << " x " << grid.ny << " cells is too large";
+  } else {
+    return;
+  }
+  throw std::invalid_argument(os.str());
+}
+
+void CheckField(const Grid& grid, const std::vector<double>& field, const char* name,
+                const char* where) {
+  std::ostringstream os;
+  if (field.size() != static_cast<size_t>(grid.cells())) {
+    os << where << ": " << name << " has " << field.size() << " entries, the grid has "
+       << grid.cells() << " cells";
+    throw std::invalid_argument(os.str());
+  }
+  for (size_t i = 0; i < field.size(); ++i) {
+    if (!std::isfinite(field[i])) {
+      os << where << ": " << name << "[" << i << "] is not finite";
+      throw std::invalid_argument(os.str());
+    }
+  }
+}
+
+void CheckModulus(double e_star_MPa, const char* where) {
+  if (!(std::isfinite(e_star_MPa) && e_star_MPa > 0)) {
+    std::ostringstream os;
+    os << where << ": composite modulus E* must be positive and finite, got " << e_star_MPa
+       << " MPa";
+    throw std::invalid_argument(os.str());
+  }
+}
+
+void CheckFinite(double value, const char* name, const char* where) {
+  if (!std::isfinite(value)) {
+    std::ostringstream os;
+    os << where << ": " << name << " must be finite, got " << value;
+    throw std::invalid_argument(os.str());
+  }
+}
+
+void Summarise(const Grid& grid, ContactSolution& s) {
+  s.dx_mm = grid.dx;
+  s.dy_mm = grid.dy;
+  double sum = 0;
+  s.max_pressure_MPa = 0;
+  s.max_pressure_cell = -1;
+  s.cells_in_contact = 0;
+  s.contact_at_x_edge = s.contact_at_y_edge = false;
+  for (int iy = 0; iy < grid.ny; ++iy) {
+    for (int ix = 0; ix < grid.nx; ++ix) {
+      const int i = iy * grid.nx + ix;
+      const double p = s.pressure_MPa[i];
+      if (p <= 0) continue;
+      sum += p;
+      ++s.cells_in_contact;
+      if (p > s.max_pressure_MPa) {
+        s.max_pressure_MPa = p;
+        s.max_pressure_cell = i;
+      }
+      if (ix == 0 || ix == grid.nx - 1) s.contact_at_x_edge = true;
+      if (iy == 0 || iy == grid.ny - 1) s.contact_at_y_edge = true;
+    }
+  }
+  s.contact_at_grid_edge = s.contact_at_x_edge || s.contact_at_y_edge;
+  s.load_N = sum * grid.cell_area_mm2();
+  s.contact_area_mm2 = s.cells_in_contact * grid.cell_area_mm2();
+}
+
+ContactSolution Unloaded(const Grid& grid, double approach_mm, std::string message) {
+  ContactSolution s;
+  s.pressure_MPa.assign(grid.cells(), 0.0);
+  s.approach_mm = approach_mm;
+  s.converged = true;
+  s.message = std::move(message);
+  Summarise(grid, s);
+  return s;
+}
+
+}  // namespace detail
+
+Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm) {
+  Grid g;
+  g.nx = nx;
+  g.ny = ny;
+  g.dx = nx > 0 ? 2 * half_x_mm / nx : 0;
+  g.dy = ny > 0 ? 2 * half_y_mm / ny : 0;
+  g.x0 = -half_x_mm;
+  g.y0 = -half_y_mm;
+  detail::CheckGrid(g, "CenteredGrid");
+  return g;
+}
+
+// ---------------------------------------------------------------------------------------------
+// DC-FFT convolution for one grid shape.
+
+namespace {
+
+// FFTW's planner is not thread-safe; executing a plan is. All planning and plan destruction go
+// through this one lock.
+std::mutex& PlannerMutex() {
+  static std::mutex m;
+  return m;
+}
+
+using Complex = std::complex<double>;
+
+// The unit-modulus Love kernel of one grid shape and cell size: its spectrum for the FFT
+// product, and its values by offset for cheap sparse updates.
+struct Kernel {
+  std::vector<Complex> spectrum;  // of the 2nx × 2ny wrapped kernel, divided by the FFT size
+  std::vector<double> table;      // offset (ox, oy) at (oy + ny − 1)(2nx − 1) + ox + nx − 1
+  double self = 0;                // the cell's own coefficient, offset (0, 0)
+};
+
+// Linear (non-periodic) convolution of an nx × ny field with a kernel of offsets
+// −(n−1) … (n−1), by FFT on a 2nx × 2ny zero-padded array (DC-FFT). The 2D transform is done
+// as 1D transforms that skip the zero half: real rows only for the ny rows that hold data (and,
+// backwards, only for the ny rows that are kept), complex columns for all 2ny rows.
+class FftConvolver {
+ public:
+  FftConvolver(int nx, int ny, unsigned planner)
+      : nx_(nx), ny_(ny), mx_(2 * nx), my_(2 * ny), mxc_(nx + 1) {
+    real_ = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
+    spec_ = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
+    if (real_ == nullptr || spec_ == nullptr) {
+      Free();
+      throw std::bad_alloc();
+    }
+    std::lock_guard<std::mutex> lock(PlannerMutex());
+    const int n_row[1] = {mx_}, n_col[1] = {my_};
+    rows_forward_ = fftw_plan_many_dft_r2c(1, n_row, ny_, real_, nullptr, 1, mx_, spec_, nullptr,
+                                           1, mxc_, planner);
+    cols_forward_ = fftw_plan_many_dft(1, n_col, mxc_, spec_, nullptr, mxc_, 1, spec_, nullptr,
+                                       mxc_, 1, FFTW_FORWARD, planner);
+    cols_backward_ = fftw_plan_many_dft(1, n_col, mxc_, spec_, nullptr, mxc_, 1, spec_, nullptr,
+                                        mxc_, 1, FFTW_BACKWARD, planner);
+    rows_backward_ = fftw_plan_many_dft_c2r(1, n_row, ny_, spec_, nullptr, 1, mxc_, real_,
+                                            nullptr, 1, mx_, planner);
+    if (!rows_forward_ || !cols_forward_ || !cols_backward_ || !rows_backward_) {
+      FreeLocked();
+      throw std::runtime_error("FFTW could not plan the contact convolution");
+    }
+  }
+  ~FftConvolver() { Free(); }
+  FftConvolver(const FftConvolver&) = delete;
+  FftConvolver& operator=(const FftConvolver&) = delete;
+
+  Kernel MakeKernel(double dx, double dy) const {
+    Kernel k;
+    const double xi = 0.5 * dx, eta = 0.5 * dy;
+    const int wx = 2 * nx_ - 1, wy = 2 * ny_ - 1;
+    k.table.resize(static_cast<size_t>(wx) * wy);
+    for (int oy = -(ny_ - 1); oy <= ny_ - 1; ++oy)
+      for (int ox = -(nx_ - 1); ox <= nx_ - 1; ++ox)
+        k.table[static_cast<size_t>(oy + ny_ - 1) * wx + (ox + nx_ - 1)] =
+            LoveInfluence(ox * dx, oy * dy, xi, eta);
+    k.self = k.table[static_cast<size_t>(ny_ - 1) * wx + (nx_ - 1)];
+    // Wrapped kernel: offsets 0 … n−1 in the first half, −(n−1) … −1 in the second; the
+    // middle index n is never reached by a product and holds 0.
+    double* wrapped = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
+    fftw_complex* spec = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
+    if (wrapped == nullptr || spec == nullptr) {
+      fftw_free(wrapped);
+      fftw_free(spec);
+      throw std::bad_alloc();
+    }
+    fftw_plan plan;
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      plan = fftw_plan_dft_r2c_2d(my_, mx_, wrapped, spec, FFTW_ESTIMATE);
+    }
+    for (int jy = 0; jy < my_; ++jy) {
+      const int oy = jy < ny_ ? jy : jy - my_;
+      for (int jx = 0; jx < mx_; ++jx) {
+        const int ox = jx < nx_ ? jx : jx - mx_;
+        const bool unused = jy == ny_ || jx == nx_;
+        wrapped[static_cast<size_t>(jy) * mx_ + jx] =
+            unused ? 0.0
+                   : k.table[static_cast<size_t>(oy + ny_ - 1) * wx + (ox + nx_ - 1)];
+      }
+    }
+    fftw_execute(plan);
+    const size_t n = static_cast<size_t>(mxc_) * my_;
+    k.spectrum.resize(n);
+    const double scale = 1.0 / (static_cast<double>(mx_) * my_);
+    const Complex* s = reinterpret_cast<const Complex*>(spec);
+    for (size_t i = 0; i < n; ++i) k.spectrum[i] = s[i] * scale;
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      fftw_destroy_plan(plan);
+    }
+    fftw_free(wrapped);
+    fftw_free(spec);
+    return k;
+  }
+
+  // out = scale · (kernel ∗ in) on the nx × ny grid.
+  void Apply(const Kernel& kernel, const double* in, double* out, double scale) {
+    for (int iy = 0; iy < ny_; ++iy) {
+      double* row = real_ + static_cast<size_t>(iy) * mx_;
+      std::copy(in + static_cast<size_t>(iy) * nx_, in + static_cast<size_t>(iy + 1) * nx_, row);
+      std::fill(row + nx_, row + mx_, 0.0);
+    }
+    Complex* s = reinterpret_cast<Complex*>(spec_);
+    std::fill(s + static_cast<size_t>(ny_) * mxc_, s + static_cast<size_t>(my_) * mxc_,
+              Complex(0.0, 0.0));
+    fftw_execute(rows_forward_);
+    fftw_execute(cols_forward_);
+    const size_t n = static_cast<size_t>(mxc_) * my_;
+    for (size_t i = 0; i < n; ++i) s[i] *= kernel.spectrum[i];
+    fftw_execute(cols_backward_);
+    fftw_execute(rows_backward_);
+    for (int iy = 0; iy < ny_; ++iy)
+      for (int ix = 0; ix < nx_; ++ix)
+        out[static_cast<size_t>(iy) * nx_ + ix] = scale * real_[static_cast<size_t>(iy) * mx_ + ix];
+  }
+
+  // out += scale · Σ_j c_j K(i − j) over the few listed cells j (direct sum).
+  void AddSparse(const Kernel& kernel, const std::vector<std::pair<int, double>>& c, double* out,
+                 double scale) const {
+    const int wx = 2 * nx_ - 1;
+    for (const auto& [j, cj] : c) {
+      const int jx = j % nx_, jy = j / nx_;
+      const double w = scale * cj;
+      for (int iy = 0; iy < ny_; ++iy) {
+        const double* trow =
+            kernel.table.data() + static_cast<size_t>(iy - jy + ny_ - 1) * wx + (nx_ - 1 - jx);
+        double* orow = out + static_cast<size_t>(iy) * nx_;
+        for (int ix = 0; ix < nx_; ++ix) orow[ix] += w * trow[ix];
+      }
+    }
+  }
+
+  int cells() const { return nx_ * ny_; }
+
+ private:
+  void Free() {
+    std::lock_guard<std::mutex> lock(PlannerMutex());
+    FreeLocked();
+  }
+  void FreeLocked() {
+    for (fftw_plan* p : {&rows_forward_, &cols_forward_, &cols_backward_, &rows_backward_}) {
+      if (*p != nullptr) fftw_destroy_plan(*p);
+      *p = nullptr;
+    }
+    if (real_ != nullptr) fftw_free(real_);
+    if (spec_ != nullptr) fftw_free(spec_);
+    real_ = nullptr;
+    spec_ = nullptr;
+  }
+
+  int nx_, ny_, mx_, my_, mxc_;
+  double* real_ = nullptr;
+  fftw_complex* spec_ = nullptr;
+  fftw_plan rows_forward_ = nullptr, cols_forward_ = nullptr;
+  fftw_plan cols_backward_ = nullptr, rows_backward_ = nullptr;
+};
+
+// Caches are bounded: beyond these many entries they are cleared (a study uses a few shapes).
+constexpr size_t kMaxConvolvers = 8;
+constexpr size_t kMaxKernels = 64;
+
+bool UsableStart(const std::vector<double>* start, size_t n) {
+  if (start == nullptr || start->size() != n) return false;
+  double sum = 0;
+  for (double v : *start) {
+    if (!std::isfinite(v) || v < 0) return false;
+    sum += v;
+  }
+  return sum > 0 && std::isfinite(sum);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The solver.
+
+struct HalfSpaceSolver::Impl {
+  SolverOptions options;
+  std::map<std::pair<int, int>, std::unique_ptr<FftConvolver>> convolvers;
+  std::map<std::tuple<int, int, double, double>, Kernel> kernels;
+  std::vector<double> p, p_old, u, g, t, r;  // work arrays
+  std::vector<std::pair<int, double>> corrections;
+
+  explicit Impl(SolverOptions o) : options(o) {}
+
+  FftConvolver& Convolver(const Grid& grid) {
+    const auto key = std::make_pair(grid.nx, grid.ny);
+    auto it = convolvers.find(key);
+    if (it == convolvers.end()) {
+      if (convolvers.size() >= kMaxConvolvers) {
+        convolvers.clear();
+        kernels.clear();
+      }
+      const unsigned planner = options.measure_fft_plans ? FFTW_MEASURE : FFTW_ESTIMATE;
+      it = convolvers.emplace(key, std::make_unique<FftConvolver>(grid.nx, grid.ny, planner))
+               .first;
+    }
+    return *it->second;
+  }
+
+  const Kernel& KernelFor(const Grid& grid, const FftConvolver& conv) {
+    const auto key = std::make_tuple(grid.nx, grid.ny, grid.dx, grid.dy);
+    auto it = kernels.find(key);
+    if (it == kernels.end()) {
+      if (kernels.size() >= kMaxKernels) kernels.clear();
+      it = kernels.emplace(key, conv.MakeKernel(grid.dx, grid.dy)).first;
+    }
+    return it->second;
+  }
+
+  ContactSolution Solve(const Grid& grid, const std::vector<double>& h, bool load_control,
+                        double target, double e_star, const std::vector<double>* start);
+};
+
+HalfSpaceSolver::HalfSpaceSolver(SolverOptions options)
+    : impl_(std::make_unique<Impl>(options)) {}
+HalfSpaceSolver::~HalfSpaceSolver() = default;
+HalfSpaceSolver::HalfSpaceSolver(HalfSpaceSolver&&) noexcept = default;
+HalfSpaceSolver& HalfSpaceSolver::operator=(HalfSpaceSolver&&) noexcept = default;
+const SolverOptions& HalfSpaceSolver::options() const { return impl_->options; }
+
+// Polonsky & Keer (1999).
+// Load control (eqs. 20, 22): the gap is g = u + h − ḡ, ḡ its mean over the cells in contact
+// I_c = {p > 0}; at convergence ḡ is the approach δ. Approach control: g = u + h − δ with δ given.
+// Each iteration: conjugate direction t on I_c, step τ by exact line search (one convolution
+// r = K t), projection onto p ≥ 0, cells with p = 0 and g < 0 (overlap) re-enter with p = −τ g
+// (and the conjugacy is reset), and, under load control, p is rescaled to the load.
+// The displacement of the new pressure is not convolved afresh: u ← f (u − τ r + K c), where c is
+// the (usually few-cell) change made by the projection and the re-entry, added by a direct sum;
+// only when many cells change, and every kRefresh iterations against drift, is u = K p redone by
+// FFT. That halves the FFTs of the textbook algorithm.
+ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector<double>& h,
+                                             bool load_control, double target, double e_star,
+                                             const std::vector<double>* start) {
+  const char* where =
+      load_control ? "HalfSpaceSolver::SolveForLoad" : "HalfSpaceSolver::SolveForApproach";
+  detail::CheckGrid(grid, where);
+  detail::CheckField(grid, h, "gap_mm", where);
+  detail::CheckModulus(e_star, where);
+  detail::CheckFinite(target, load_control ? "load_N" : "approach_mm", where);
+  const double h_min = *std::min_element(h.begin(), h.end());
+  const size_t n = static_cast<size_t>(grid.cells());
+  const double area = grid.cell_area_mm2();
+  const double load = target, approach = target;
+
+  p.assign(n, 0.0);
+  if (load_control) {
+    if (load <= 0)
+      return detail::Unloaded(grid, h_min, load < 0 ? "negative load treated as zero" : "");
+    if (UsableStart(start, n)) {
+      p = *start;
+    } else {
+      p.assign(n, 1.0);
+    }
+  } else {
+    bool any = false;
+    for (size_t i = 0; i < n; ++i)
+      if (approach - h[i] > 0) {
+        p[i] = approach - h[i];  // the rigid overlap, scaled below
+        any = true;
+      }
+    if (!any) return detail::Unloaded(grid, approach, "");
+  }
+
+  FftConvolver& conv = Convolver(grid);
+  const Kernel& kernel = KernelFor(grid, conv);
+  const double inv_e = 1.0 / e_star;
+  auto convolve = [&](const std::vector<double>& in, std::vector<double>& out) {
+    conv.Apply(kernel, in.data(), out.data(), inv_e);
+  };
+  // Fallback step when the line search is degenerate (a single cell in contact gives G = 0):
+  // the pressure that moves a cell's own surface by a unit gap.
+  const double tau_self = e_star / kernel.self;
+  // A direct sparse update costs n per changed cell; an FFT convolution about 10 n log2(4n).
+  const size_t max_sparse = static_cast<size_t>(10.0 * std::log2(4.0 * static_cast<double>(n)));
+  constexpr int kRefresh = 20;
+
+  u.assign(n, 0.0);
+  g.assign(n, 0.0);
+  t.assign(n, 0.0);
+  r.assign(n, 0.0);
+  convolve(p, u);
+  // Scale the start: to the load, or by the best single factor (exact line search on the
+  // energy ½pᵀKp + pᵀ(h − δ)).
+  {
+    double f = 1;
+    if (load_control) {
+      double sum = 0;
+      for (double v : p) sum += v;
+      f = load / (area * sum);
+    } else {
+      double a = 0, b = 0;
+      for (size_t i = 0; i < n; ++i) {
+        a += p[i] * (approach - h[i]);
+        b += p[i] * u[i];
+      }
+      f = (b > 0 && std::isfinite(a / b)) ? a / b : tau_self;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      p[i] *= f;
+      u[i] *= f;
+    }
+  }
+
+  ContactSolution s;
+  double g_old = 1.0;
+  bool conjugate = false;
+  bool u_exact = true;
+  int since_refresh = 0;
+  int it = 0;
+  for (it = 1; it <= options.max_iterations; ++it) {
+    if (!u_exact || since_refresh >= kRefresh) {
+      convolve(p, u);
+      since_refresh = 0;
+    }
+    ++since_refresh;
+    double shift = approach;
+    size_t nc = 0;
+    if (load_control) {
+      double sum_g = 0;
+      for (size_t i = 0; i < n; ++i)
+        if (p[i] > 0) {
+          sum_g += u[i] + h[i];
+          ++nc;
+        }
+      shift = nc > 0 ? sum_g / static_cast<double>(nc) : h_min;
+    }
+    double big_g = 0;
+    for (size_t i = 0; i < n; ++i) {
+      g[i] = u[i] + h[i] - shift;
+      if (p[i] > 0) {
+        big_g += g[i] * g[i];
+        if (!load_control) ++nc;
+      }
+    }
+    const double beta = (conjugate && g_old > 0) ? big_g / g_old : 0.0;
+    for (size_t i = 0; i < n; ++i) t[i] = p[i] > 0 ? g[i] + beta * t[i] : 0.0;
+    g_old = big_g;
+
+    convolve(t, r);
+    double r_bar = 0;
+    if (load_control && nc > 0) {
+      double sum_r = 0;
+      for (size_t i = 0; i < n; ++i)
+        if (p[i] > 0) sum_r += r[i];
+      r_bar = sum_r / static_cast<double>(nc);
+    }
+    double num = 0, den = 0;
+    for (size_t i = 0; i < n; ++i)
+      if (p[i] > 0) {
+        num += g[i] * t[i];
+        den += (r[i] - r_bar) * t[i];
+      }
+    const double tau = (den > 0 && std::isfinite(num / den)) ? num / den : tau_self;
+
+    // Step, projection, re-entry; c_i = p_new − (p − τ t) on the cells these two touched.
+    p_old = p;
+    corrections.clear();
+    bool overlap = false;
+    for (size_t i = 0; i < n; ++i) {
+      const double raw = p[i] - tau * t[i];  // t = 0 off the contact
+      double next = raw > 0 ? raw : 0.0;
+      if (next == 0 && g[i] < 0) {
+        next = -tau * g[i];
+        overlap = true;
+      }
+      if (next != raw) corrections.emplace_back(static_cast<int>(i), next - raw);
+      p[i] = next;
+    }
+    conjugate = !overlap;
+
+    double f = 1;
+    if (load_control) {
+      double sum_p = 0;
+      for (double v : p) sum_p += v;
+      if (!(sum_p > 0) || !std::isfinite(sum_p)) {  // not in exact arithmetic; restart
+        p.assign(n, load / (area * static_cast<double>(n)));
+        conjugate = false;
+        u_exact = false;
+        continue;
+      }
+      f = load / (area * sum_p);
+    }
+    double change = 0, total = 0;
+    for (size_t i = 0; i < n; ++i) {
+      p[i] *= f;
+      change += std::abs(p[i] - p_old[i]);
+      total += p[i];
+    }
+    // The displacement of the new pressure.
+    if (corrections.size() <= max_sparse) {
+      for (size_t i = 0; i < n; ++i) u[i] -= tau * r[i];
+      conv.AddSparse(kernel, corrections, u.data(), inv_e);
+      if (f != 1)
+        for (double& v : u) v *= f;
+      u_exact = true;
+    } else {
+      u_exact = false;
+    }
+    if (total > 0 && change / total < options.tolerance) {
+      s.converged = true;
+      break;
+    }
+    if (!load_control && total == 0 && !overlap) {  // everything lifted off: the iteration
+      s.converged = true;                            // has left the contact; nothing touches
+      break;
+    }
+  }
+  s.iterations = std::min(it, options.max_iterations);
+  if (!s.converged) {
+    std::ostringstream os;
+    os << "not converged after " << options.max_iterations << " iterations";
+    s.message = os.str();
+  }
+  if (load_control) {
+    // The approach from the final pressure: the mean of u + h over the contact.
+    convolve(p, u);
+    double sum_g = 0;
+    size_t nc = 0;
+    for (size_t i = 0; i < n; ++i)
+      if (p[i] > 0) {
+        sum_g += u[i] + h[i];
+        ++nc;
+      }
+    s.approach_mm = nc > 0 ? sum_g / static_cast<double>(nc) : h_min;
+  } else {
+    s.approach_mm = approach;
+  }
+  s.pressure_MPa = p;
+  detail::Summarise(grid, s);
+  return s;
+}
+
+ContactSolution HalfSpaceSolver::SolveForLoad(const Grid& grid, const std::vector<double>& gap_mm,
+                                              double load_N, double e_star_MPa) {
+  return impl_->Solve(grid, gap_mm, true, load_N, e_star_MPa, nullptr);
+}
+
+ContactSolution HalfSpaceSolver::SolveForLoad(const Grid& grid, const std::vector<double>& gap_mm,
+                                              double load_N, double e_star_MPa,
+                                              const std::vector<double>& initial_pressure_MPa) {
+  return impl_->Solve(grid, gap_mm, true, load_N, e_star_MPa, &initial_pressure_MPa);
+}
+
+ContactSolution HalfSpaceSolver::SolveForApproach(const Grid& grid,
+                                                  const std::vector<double>& gap_mm,
+                                                  double approach_mm, double e_star_MPa) {
+  return impl_->Solve(grid, gap_mm, false, approach_mm, e_star_MPa, nullptr);
+}
+
+std::vector<double> HalfSpaceSolver::Displacement(const Grid& grid,
+                                                  const std::vector<double>& pressure_MPa,
+                                                  double e_star_MPa) {
+  const char* where = "HalfSpaceSolver::Displacement";
+  detail::CheckGrid(grid, where);
+  detail::CheckField(grid, pressure_MPa, "pressure_MPa", where);
+  detail::CheckModulus(e_star_MPa, where);
+  FftConvolver& conv = impl_->Convolver(grid);
+  const Kernel& kernel = impl_->KernelFor(grid, conv);
+  std::vector<double> out(grid.cells());
+  conv.Apply(kernel, pressure_MPa.data(), out.data(), 1.0 / e_star_MPa);
+  return out;
+}
+
+std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                 double e_star_MPa) {
+  HalfSpaceSolver solver;
+  return solver.Displacement(grid, pressure_MPa, e_star_MPa);
+}
+
+}  // namespace camopt::contact

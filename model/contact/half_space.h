@@ -1,0 +1,124 @@
+// Elastic half-space contact of two bodies with a gap field on a rectangular grid: Love's
+// influence coefficients (cycloid paper eq. 21), non-negative pressure with a prescribed total
+// load (eqs. 20 and 22). Solved by Polonsky–Keer conjugate gradients with the convolution done by
+// zero-padded FFT (DC-FFT) through FFTW; a dense active-set solve is kept as the reference.
+//
+// Units: mm, N, MPa (N/mm²). Grid cells are rectangles of size dx × dy (full sizes), cell
+// (ix, iy) has centre (x0 + (ix + 0.5) dx, y0 + (iy + 0.5) dy); arrays are row-major, index
+// iy * nx + ix. The agreed interface is /work/wt/CONTACT_API.md; docs/contact.md explains the
+// model, the cost and the cell-size dependence of edge peaks.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace camopt::contact {
+
+struct Grid {
+  int nx = 0, ny = 0;
+  double dx = 0, dy = 0;  // cell sizes [mm]
+  double x0 = 0, y0 = 0;  // lower-left corner [mm]
+
+  int cells() const { return nx * ny; }
+  double cell_area_mm2() const { return dx * dy; }
+  double x_centre_mm(int ix) const { return x0 + (ix + 0.5) * dx; }
+  double y_centre_mm(int iy) const { return y0 + (iy + 0.5) * dy; }
+};
+
+/// A grid of nx × ny cells covering [−half_x, half_x] × [−half_y, half_y] [mm].
+Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm);
+
+struct SolverOptions {
+  double tolerance = 1e-8;  // relative change / complementarity tolerance of the CG iteration
+  int max_iterations = 2000;
+  /// Added: plan the FFTs with FFTW_MEASURE instead of FFTW_ESTIMATE. Costs a one-off
+  /// planning time per grid shape and process (FFTW keeps the wisdom); see docs/contact.md.
+  bool measure_fft_plans = false;
+};
+
+struct ContactSolution {
+  std::vector<double> pressure_MPa;  // per cell, >= 0
+  double approach_mm = 0;            // rigid-body approach δ of the two bodies
+  double load_N = 0;                 // Σ p·dx·dy
+  double max_pressure_MPa = 0;
+  int cells_in_contact = 0;
+  int iterations = 0;
+  bool converged = false;
+  std::string message;  // why not converged, or "" (no exception for a lost contact:
+                        // zero load or no touching cell gives p = 0, approach from gap)
+
+  // Added by the contact branch (beyond the agreed interface).
+  /// The cell sizes every number of this solution was computed with. A peak pressure at a
+  /// straight roller's edge depends on dy (it grows as the cells shrink, the exact solution is
+  /// singular there): print it together with these.
+  double dx_mm = 0, dy_mm = 0;
+  double contact_area_mm2 = 0;  // cells_in_contact · dx · dy
+  int max_pressure_cell = -1;   // index of the peak cell (iy * nx + ix), −1 when unloaded
+  /// A loaded cell lies on the first or last column (x edge) / row (y edge) of the grid: the
+  /// contact may be cut by the grid and the grid should be made larger in that direction. For a
+  /// roller whose length is the grid's y extent, contact at the y edges is expected.
+  bool contact_at_x_edge = false;
+  bool contact_at_y_edge = false;
+  bool contact_at_grid_edge = false;  // either of the two
+};
+
+/// Solves: Σ_j K_ij p_j = δ − h_i where p_i > 0, Σ K_ij p_j ≥ δ − h_i where p_i = 0, p ≥ 0,
+/// with K from Love's rectangle influence coefficients (cycloid paper eq. 21), E* composite modulus.
+/// Caches FFT plans and kernel spectra per (grid, E*) — construct once, call many times.
+/// (The kernel is cached per grid shape and cell size, E* enters as a factor, so changing E*
+/// costs nothing.) An instance is not thread-safe (it owns the work arrays): use one per thread;
+/// FFTW plan creation is serialised by a process-wide mutex.
+/// @throws std::invalid_argument for an empty grid, non-positive or non-finite cell sizes or
+///         modulus, a gap of the wrong size or with a non-finite entry, a non-finite load/approach.
+class HalfSpaceSolver {
+ public:
+  explicit HalfSpaceSolver(SolverOptions options = {});
+  ~HalfSpaceSolver();
+  HalfSpaceSolver(HalfSpaceSolver&&) noexcept;
+  HalfSpaceSolver& operator=(HalfSpaceSolver&&) noexcept;
+  HalfSpaceSolver(const HalfSpaceSolver&) = delete;
+  HalfSpaceSolver& operator=(const HalfSpaceSolver&) = delete;
+
+  /// Load-controlled: total load W given (cycloid paper eqs. 20, 22), approach δ found.
+  /// load_N <= 0 gives p = 0 and δ = min(gap) (the bodies just touch).
+  ContactSolution SolveForLoad(const Grid& grid, const std::vector<double>& gap_mm,
+                               double load_N, double e_star_MPa);
+  /// The same, starting the iteration from a previous pressure field on the same grid (any
+  /// non-negative field; it is rescaled to the load). Saves iterations in outer loops where the
+  /// gap changes little between calls. An unusable start (wrong size, all zero) is ignored.
+  ContactSolution SolveForLoad(const Grid& grid, const std::vector<double>& gap_mm,
+                               double load_N, double e_star_MPa,
+                               const std::vector<double>& initial_pressure_MPa);
+  /// Approach-controlled: δ given, the load follows (0 when nothing touches).
+  ContactSolution SolveForApproach(const Grid& grid, const std::vector<double>& gap_mm,
+                                   double approach_mm, double e_star_MPa);
+  /// Surface displacement at every cell centre (the DC-FFT convolution), with the cached plans.
+  std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                   double e_star_MPa);
+
+  const SolverOptions& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Dense reference (the same equations solved with an active-set method on the full matrix);
+/// for tests and the speed comparison only.
+ContactSolution SolveDenseForLoad(const Grid& grid, const std::vector<double>& gap_mm,
+                                  double load_N, double e_star_MPa);
+
+/// Dense reference of the approach-controlled problem (tests only).
+ContactSolution SolveDenseForApproach(const Grid& grid, const std::vector<double>& gap_mm,
+                                      double approach_mm, double e_star_MPa);
+
+/// Surface normal displacement at every cell centre from a pressure field (the convolution).
+std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                 double e_star_MPa);
+
+/// Dense form of the same displacement (direct double sum over the cells; tests only).
+std::vector<double> DisplacementDense(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                      double e_star_MPa);
+
+}  // namespace camopt::contact
