@@ -23,21 +23,33 @@ double LadderAbove(double x) {
   return base * std::exp2(k / 4.0);
 }
 
-// One pair's force law model, built from its last solved points: the secant through the origin
-// below the last point, the tangent above it (δ(F) is concave for a Hertzian contact, so the
-// tangent compliance is below the secant one).
+// One pair's force law, modelled as a power law through its last solved point (F1, δ1):
+// δ = δ1 (F / F1)^γ. A Hertzian pair follows such a law closely over a small range (γ ≈ 0.9 for a
+// line contact, 2/3 for a point contact); γ is measured from the pair's last two solved points
+// and kept from the previous crank angle otherwise, so one solve at a new angle already gives a
+// good model. Through the origin, continuous and increasing: the equilibrium stays well posed.
 struct PairModel {
-  double compliance0 = 0;        // δ/F through the origin, used when nothing is solved yet
-  double f1 = 0, d1 = 0;         // last solved (F, δ)
-  double f0 = 0, d0 = 0;         // the one before (0, 0 if none)
+  double compliance0 = 0;  // δ/F, used when nothing is solved yet
+  double f1 = 0, d1 = 0;   // last solved (F, δ)
+  double f0 = 0, d0 = 0;   // the one before (0, 0 if none)
+  double gamma = 0.9;
   bool solved = false;
+  void Add(double f, double d) {
+    if (!(f > 0 && d > 0)) return;
+    if (solved) {
+      f0 = f1;
+      d0 = d1;
+      const double lf = std::log(f / f0), ld = std::log(d / d0);
+      if (std::abs(lf) > 1e-4) gamma = std::clamp(ld / lf, 0.5, 1.2);
+    }
+    f1 = f;
+    d1 = d;
+    solved = true;
+  }
   double Force(double delta) const {
     if (delta <= 0) return 0.0;
-    if (!solved || f1 <= 0 || d1 <= 0) return delta / compliance0;
-    if (delta <= d1) return f1 * delta / d1;
-    double ct = d1 / f1;  // secant compliance
-    if (f0 > 0 && std::abs(f1 - f0) > 1e-9 * f1 && d1 > d0) ct = std::min(ct, (d1 - d0) / (f1 - f0));
-    return f1 + (delta - d1) / ct;
+    if (!solved) return delta / compliance0;
+    return f1 * std::pow(delta / d1, 1.0 / gamma);
   }
 };
 
@@ -64,7 +76,11 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
 
 LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
                      LoadedOptions options)
-    : drive_(drive), crowning_(crowning), material_(material), options_(options) {
+    : drive_(drive),
+      crowning_(crowning),
+      material_(material),
+      options_(options),
+      solver_(contact::SolverOptions{options.solver_tolerance, 2000}) {
   if (const std::string why = CheckDrive(drive); !why.empty()) throw std::invalid_argument(why);
   if (const std::string why = CheckCrowning(crowning, drive.face_width_mm); !why.empty())
     throw std::invalid_argument(why);
@@ -73,7 +89,14 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
   if (options_.profile_cells < 2 || options_.axial_cells < 2)
     throw std::invalid_argument("the contact grid needs at least 2 x 2 cells");
   e_star_ = material.CompositeModulus_MPa();
-  const double b = drive.face_width_mm;
+  SetCrowning(crowning);
+}
+
+void LoadedTca::SetCrowning(const Crowning& crowning) {
+  if (const std::string why = CheckCrowning(crowning, drive_.face_width_mm); !why.empty())
+    throw std::invalid_argument(why);
+  crowning_ = crowning;
+  const double b = drive_.face_width_mm;
   const double dy = b / options_.axial_cells;
   crown_.resize(options_.axial_cells);
   for (int iy = 0; iy < options_.axial_cells; ++iy)
@@ -149,11 +172,18 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
   for (size_t i = 0; i < n; ++i) {
     arms[i] = cand[i].g->arm_mm;
     backlash[i] = cand[i].g->backlash;
+    models[i].compliance0 = c_line;
+    // The same roller at the previous crank angle: its law is a close first model.
     auto it = memory_.find(cand[i].g->roller);
-    models[i].compliance0 = (it != memory_.end() && it->second.compliance > 0) ? it->second.compliance
-                                                                              : c_line;
+    if (it != memory_.end() && it->second.f1 > 0 && it->second.d1 > 0) {
+      models[i].f1 = it->second.f1;
+      models[i].d1 = it->second.d1;
+      models[i].gamma = it->second.gamma;
+      models[i].solved = true;
+    }
   }
 
+  std::vector<bool> solved_here(n, false);
   double delta_phi = 0;
   bool converged = false;
   int iter = 0;
@@ -168,7 +198,13 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
         c.load = 0;
         c.approach = 0;
         c.max_p = 0;
-        std::fill(c.pressure.begin(), c.pressure.end(), 0.0);
+        solved_here[i] = false;
+        continue;
+      }
+      // Solve only pairs whose force moved: an unchanged force has the same approach.
+      if (solved_here[i] && std::abs(force - c.load) <= 0.5 * options_.tolerance * force) {
+        max_residual = std::max(max_residual, std::abs(c.approach - approach_target));
+        max_approach = std::max(max_approach, c.approach);
         continue;
       }
       // Grid across the profile: a multiple of the Hertz half-width at this force.
@@ -214,14 +250,8 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
       c.approach = s.approach_mm;
       c.max_p = s.max_pressure_MPa;
       c.solver_iterations = s.iterations;
-      PairModel& m = models[i];
-      if (m.solved) {
-        m.f0 = m.f1;
-        m.d0 = m.d1;
-      }
-      m.f1 = s.load_N;
-      m.d1 = s.approach_mm;
-      m.solved = s.load_N > 0 && s.approach_mm > 0;
+      solved_here[i] = true;
+      models[i].Add(s.load_N, s.approach_mm);
       max_residual = std::max(max_residual, std::abs(s.approach_mm - approach_target));
       max_approach = std::max(max_approach, s.approach_mm);
     }
@@ -244,7 +274,9 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
     Candidate& c = cand[i];
     PairMemory& mem = memory_[c.g->roller];
     if (c.load > 0 && c.approach > 0) {
-      mem.compliance = c.approach / c.load;
+      mem.f1 = models[i].f1;
+      mem.d1 = models[i].d1;
+      mem.gamma = models[i].gamma;
       mem.grid = c.grid;
       mem.pressure = c.pressure;
     }

@@ -80,6 +80,11 @@ PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
       converged = true;
     }
   }
+  // A root far from the unmodified contact belongs to another tooth or flank (Newton can wander
+  // there from a tip or root, where the system is nearly singular): not a contact of this pair.
+  // Profile modifications are micrometres, so the true root is within a small fraction of a tooth.
+  const T t_nominal = NominalParameter(d, i, crank);
+  if (converged && (abs(Value(t - t_nominal)) > 0.05 || abs(Value(beta)) > 0.02)) converged = false;
   if (!converged) {  // tip or root: keep the unmodified contact, flagged out of the load path
     t = NominalParameter(d, i, crank);
     beta = T(0.0);
