@@ -80,7 +80,9 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
       crowning_(crowning),
       material_(material),
       options_(options),
-      solver_(contact::SolverOptions{options.solver_tolerance, 2000}) {
+      solver_(contact::SolverOptions{options.solver_tolerance, 2000}),
+      rough_solver_(contact::SolverOptions{
+          std::max(options.solver_tolerance, options.rough_solver_tolerance), 2000}) {
   if (const std::string why = CheckDrive(drive); !why.empty()) throw std::invalid_argument(why);
   if (const std::string why = CheckCrowning(crowning, drive.face_width_mm); !why.empty())
     throw std::invalid_argument(why);
@@ -186,8 +188,13 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
   std::vector<bool> solved_here(n, false);
   double delta_phi = 0;
   bool converged = false;
+  // The first iterations solve the pairs roughly (they only steer the pair models); once the
+  // compatibility holds at the rough level, every pair is solved at the final tolerance, warm
+  // started, and only a final-tolerance iteration can end the loop.
+  bool final_pass = options_.rough_solver_tolerance <= options_.solver_tolerance;
   int iter = 0;
   for (; iter < options_.max_iterations; ++iter) {
+    contact::HalfSpaceSolver& solver = final_pass ? solver_ : rough_solver_;
     delta_phi = SolveDeflection(models, arms, backlash, moment);
     double max_residual = 0, max_approach = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -231,9 +238,10 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
       contact::ContactSolution s;
       for (int grow = 0; grow < 6; ++grow) {
         s = c.pressure.size() == c.gap.size()
-                ? solver_.SolveForLoad(c.grid, c.gap, force, e_star_, c.pressure)
-                : solver_.SolveForLoad(c.grid, c.gap, force, e_star_);
+                ? solver.SolveForLoad(c.grid, c.gap, force, e_star_, c.pressure)
+                : solver.SolveForLoad(c.grid, c.gap, force, e_star_);
         ++out.contact_solves;
+        out.solver_iterations += s.iterations;
         // A pressure in the outer columns across the profile: the grid cuts the contact.
         bool cut = false;
         for (int iy = 0; iy < c.grid.ny && !cut; ++iy)
@@ -258,9 +266,13 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
     // Pairs left unloaded must not penetrate: their approach target is <= 0 by the model (the
     // model force is 0 only there), so the loaded pairs' compatibility is the whole test.
     if (max_approach > 0 && max_residual <= options_.tolerance * max_approach) {
-      converged = true;
-      ++iter;
-      break;
+      if (final_pass) {
+        converged = true;
+        ++iter;
+        break;
+      }
+      final_pass = true;
+      std::fill(solved_here.begin(), solved_here.end(), false);
     }
   }
   out.iterations = iter;
@@ -380,6 +392,7 @@ CycleResult RunCycle(LoadedTca& tca, double torque_Nm, const std::vector<double>
     }
     r.max_pairs_in_contact = std::max(r.max_pairs_in_contact, m.pairs_in_contact);
     r.contact_solves += m.contact_solves;
+    r.solver_iterations += m.solver_iterations;
     r.converged = r.converged && m.converged;
     if (!m.pairs.empty()) r.edge_margin_mm = std::min(r.edge_margin_mm, m.edge_margin_mm);
   }

@@ -46,6 +46,8 @@ struct LoadedOptions {
   /// Relative tolerance of the half-space solver's iteration (its default is 1e-8; the peak
   /// pressure changes by < 0.1 MPa between 1e-6 and 1e-8, see docs/cycloid.md).
   double solver_tolerance = 1e-6;
+  /// Solver tolerance of the first (steering) iterations; <= solver_tolerance disables them.
+  double rough_solver_tolerance = 1e-3;
   int max_iterations = 40;
   /// Grid half-length in the profile direction, in Hertz line-contact half-widths at the pair's
   /// load (rounded up to a ladder of sizes so that grids, hence kernels, repeat). Enlarged when a
@@ -89,6 +91,7 @@ struct MeshLoad {
   double edge_margin_mm = 0;         ///< min over loaded pairs (0 when none)
   int iterations = 0;                ///< outer (compatibility) iterations
   int contact_solves = 0;            ///< half-space solves
+  long solver_iterations = 0;        ///< their conjugate-gradient iterations, summed
   bool converged = true;
   std::string message;
 };
@@ -129,7 +132,8 @@ class LoadedTca {
   LoadedOptions options_;
   double e_star_;
   std::vector<double> crown_;  // crowning drop per axial cell
-  contact::HalfSpaceSolver solver_;
+  contact::HalfSpaceSolver solver_;        // final tolerance
+  contact::HalfSpaceSolver rough_solver_;  // steering iterations
   std::map<int, PairMemory> memory_;  // by roller
 };
 
@@ -146,6 +150,7 @@ struct CycleResult {
   int max_pairs_in_contact = 0;
   double edge_margin_mm = 0;         ///< min over angles
   int contact_solves = 0;
+  long solver_iterations = 0;
   bool converged = true;
 };
 
