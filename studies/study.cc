@@ -7,25 +7,33 @@
 #include <iostream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace camopt::studies {
 
 namespace fs = std::filesystem;
 
 void Progress::Update(double fraction, const std::string& detail) {
   if (quiet_) return;
+  // On a terminal one line is rewritten in place (10 times a second at most); into a file or a
+  // pipe, a plain line every 2 seconds and at the end.
+  static const bool tty = isatty(2);
   const auto now = std::chrono::steady_clock::now();
-  if (shown_ && fraction < 1.0 && now - last_ < std::chrono::milliseconds(100)) return;
+  const auto every = tty ? std::chrono::milliseconds(100) : std::chrono::milliseconds(2000);
+  if (shown_ && fraction < 1.0 && now - last_ < every) return;
+  if (!shown_ && !tty && fraction >= 1.0) return;  // finished before the first line was due
   last_ = now;
   shown_ = true;
   char pct[16];
   std::snprintf(pct, sizeof pct, "%5.1f%%", 100.0 * std::clamp(fraction, 0.0, 1.0));
-  std::cerr << "\r" << label_ << ": " << pct << (detail.empty() ? "" : "  ") << detail
-            << "\033[K" << std::flush;
+  std::cerr << (tty ? "\r" : "") << label_ << ": " << pct << (detail.empty() ? "" : "  ") << detail
+            << (tty ? "\033[K" : "\n") << std::flush;
 }
 
 void Progress::Done() {
   if (quiet_ || !shown_) return;
-  std::cerr << "\n" << std::flush;
+  static const bool tty = isatty(2);
+  if (tty) std::cerr << "\n" << std::flush;
   shown_ = false;
 }
 

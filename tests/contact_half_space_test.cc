@@ -1,7 +1,13 @@
 // Tests of the half-space contact solver: Love's coefficients, the DC-FFT convolution, the
-// Polonsky–Keer iteration against the dense active-set reference, and Hertz closed forms.
+// Polonsky–Keer iteration against the dense active-set reference, and the hard cases (barely
+// touching, zero load, a gap that never closes, huge and tiny loads, bad input).
+// Closed-form validation (Hertz point and line contact) is in contact_validation_test.cc.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
+#include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -9,22 +15,37 @@
 #include "model/contact/half_space.h"
 #include "model/contact/hertz.h"
 #include "model/contact/love.h"
+#include "model/contact/reference_gaps.h"
+#include "tests/test_util.h"
 
 namespace camopt::contact {
 namespace {
 
 constexpr double kEStar = 115384.6;  // steel on steel, E = 210 GPa, ν = 0.3 [MPa]
 
-// Gap of a sphere of radius R on a flat (paraboloid), centred at the origin.
-std::vector<double> SphereGap(const Grid& g, double r) {
-  std::vector<double> h(g.cells());
-  for (int iy = 0; iy < g.ny; ++iy)
-    for (int ix = 0; ix < g.nx; ++ix) {
-      const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
-      h[iy * g.nx + ix] = (x * x + y * y) / (2 * r);
-    }
-  return h;
+// The paper's eq. (21) exactly as printed (ratios of logarithms), for E* = 1 / π factor kept.
+// Well-conditioned only where every t + sqrt(t² + s²) has t > 0.
+double PaperLiteralInfluence(double x, double y, double xi, double eta) {
+  auto q = [](double t, double s) { return t + std::sqrt(t * t + s * s); };
+  const double xp = x + xi, xm = x - xi, yp = y + eta, ym = y - eta;
+  return (xp * std::log(q(yp, xp) / q(ym, xp)) + yp * std::log(q(xp, yp) / q(xm, yp)) +
+          xm * std::log(q(ym, xm) / q(yp, xm)) + ym * std::log(q(xm, ym) / q(xp, ym))) /
+         kPi;
 }
+
+bool AllFinite(const ContactSolution& s) {
+  for (double p : s.pressure_MPa)
+    if (!std::isfinite(p) || p < 0) return false;
+  return std::isfinite(s.approach_mm) && std::isfinite(s.load_N) &&
+         std::isfinite(s.max_pressure_MPa);
+}
+
+Grid HertzGrid(int n, double force = 100.0, double r = 10.0) {
+  const double a = CircularPointContact(force, r, kEStar).radius;
+  return CenteredGrid(n, n, 1.5 * a, 1.5 * a);
+}
+
+// ---- Love's coefficients -------------------------------------------------------------------
 
 TEST(ContactLove, CentreOfSquareMatchesClosedForm) {
   // ∬ over a square of side 2a of 1/r from its centre = 8 a asinh(1).
@@ -32,51 +53,411 @@ TEST(ContactLove, CentreOfSquareMatchesClosedForm) {
   EXPECT_NEAR(LoveInfluence(0.0, 0.0, a, a), 8 * a * std::asinh(1.0) / kPi, 1e-14);
 }
 
-TEST(ContactLove, FarFieldIsPointLoad) {
-  // Far away the cell acts as a point force p·4ξη: u·E* = 4ξη/(π r).
-  const double xi = 0.01, eta = 0.02, x = 3.0, y = -4.0;
-  const double r = std::hypot(x, y);
-  EXPECT_NEAR(LoveInfluence(x, y, xi, eta), 4 * xi * eta / (kPi * r), 1e-6 * 4 * xi * eta / r);
+TEST(ContactLove, AgreesWithThePapersFormWhereThatIsWellConditioned) {
+  for (const auto& [x, y] : {std::array<double, 2>{0.37, 0.52}, {1.3, 0.2}, {0.25, 2.0}}) {
+    const double ours = LoveInfluence(x, y, 0.1, 0.15);
+    EXPECT_NEAR(ours, PaperLiteralInfluence(x, y, 0.1, 0.15), 1e-13 * ours) << x << ", " << y;
+  }
 }
+
+TEST(ContactLove, FarFieldIsPointLoadInEveryQuadrant) {
+  // Far away the cell acts as a point force 4ξη: u·E* = 4ξη/(π r), relative error O((ξ/r)²).
+  // The negative quadrants are where the printed form of eq. (21) cancels.
+  const double xi = 0.01, eta = 0.02;
+  for (const auto& [x, y] : {std::array<double, 2>{3.0, -4.0}, {-30.0, -40.0}, {-5.0, 2.0}}) {
+    const double r = std::hypot(x, y), point = 4 * xi * eta / (kPi * r);
+    EXPECT_NEAR(LoveInfluence(x, y, xi, eta), point, 1e-5 * point) << x << ", " << y;
+  }
+}
+
+TEST(ContactLove, SymmetricUnderReflectionAndSwap) {
+  const double v = LoveInfluence(0.3, -0.7, 0.1, 0.2);
+  EXPECT_NEAR(LoveInfluence(-0.3, -0.7, 0.1, 0.2), v, 1e-15);
+  EXPECT_NEAR(LoveInfluence(0.3, 0.7, 0.1, 0.2), v, 1e-15);
+  EXPECT_NEAR(LoveInfluence(-0.7, 0.3, 0.2, 0.1), v, 1e-15);
+}
+
+TEST(ContactLove, GradientMatchesCentralDifferences) {
+  auto f = [](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    return std::vector<T>{LoveInfluence(x[0], x[1], x[2], x[3])};
+  };
+  testing::ExpectJacobianMatchesCentralDifferences<4>(f, {0.33, -0.21, 0.1, 0.05});
+  testing::ExpectJacobianMatchesCentralDifferences<4>(f, {0.02, 0.01, 0.1, 0.05});
+}
+
+// ---- DC-FFT convolution --------------------------------------------------------------------
 
 TEST(ContactDisplacement, FftMatchesDirectSum) {
-  const Grid g = CenteredGrid(13, 7, 1.0, 0.6);
-  std::vector<double> p(g.cells());
-  for (int i = 0; i < g.cells(); ++i) p[i] = std::fmod(37.0 * i, 11.0);
-  const auto u_fft = Displacement(g, p, kEStar);
-  const auto u_dense = DisplacementDense(g, p, kEStar);
-  double u_max = 0;
-  for (double v : u_dense) u_max = std::max(u_max, std::abs(v));
-  for (int i = 0; i < g.cells(); ++i) EXPECT_NEAR(u_fft[i], u_dense[i], 1e-12 * u_max) << i;
+  for (const auto& [nx, ny] : {std::array<int, 2>{13, 7}, {1, 9}, {8, 1}, {1, 1}}) {
+    const Grid g = CenteredGrid(nx, ny, 1.0, 0.6);
+    std::vector<double> p(g.cells());
+    for (int i = 0; i < g.cells(); ++i) p[i] = 1.0 + std::fmod(37.0 * i, 11.0);
+    const auto u_fft = Displacement(g, p, kEStar);
+    const auto u_dense = DisplacementDense(g, p, kEStar);
+    double u_max = 0;
+    for (double v : u_dense) u_max = std::max(u_max, std::abs(v));
+    for (int i = 0; i < g.cells(); ++i)
+      EXPECT_NEAR(u_fft[i], u_dense[i], 1e-12 * u_max) << nx << "x" << ny << " cell " << i;
+  }
 }
 
-TEST(ContactSolver, HertzPointContact) {
-  const double r = 10.0, force = 100.0;
-  const auto hz = CircularPointContact(force, r, kEStar);
-  const Grid g = CenteredGrid(40, 40, 1.5 * hz.radius, 1.5 * hz.radius);
-  HalfSpaceSolver solver;
-  const auto s = solver.SolveForLoad(g, SphereGap(g, r), force, kEStar);
-  ASSERT_TRUE(s.converged) << s.message;
-  EXPECT_NEAR(s.load_N, force, 1e-9 * force);
-  EXPECT_NEAR(s.max_pressure_MPa, hz.peak_pressure, 0.03 * hz.peak_pressure);
-  EXPECT_NEAR(std::sqrt(s.contact_area_mm2 / kPi), hz.radius, 0.05 * hz.radius);
-  EXPECT_NEAR(s.approach_mm, hz.approach, 0.03 * hz.approach);
-}
+// ---- CG against the dense reference --------------------------------------------------------
 
 TEST(ContactSolver, DenseAndCgAgreeOn40x40) {
-  const double r = 10.0, force = 100.0;
-  const auto hz = CircularPointContact(force, r, kEStar);
-  const Grid g = CenteredGrid(40, 40, 1.5 * hz.radius, 1.5 * hz.radius);
-  const auto h = SphereGap(g, r);
+  const Grid g = HertzGrid(40);
+  const auto h = SphereGap(g, 10.0);
   HalfSpaceSolver solver;
-  const auto cg = solver.SolveForLoad(g, h, force, kEStar);
-  const auto dense = SolveDenseForLoad(g, h, force, kEStar);
-  ASSERT_TRUE(cg.converged);
-  ASSERT_TRUE(dense.converged);
+  const auto cg = solver.SolveForLoad(g, h, 100.0, kEStar);
+  const auto dense = SolveDenseForLoad(g, h, 100.0, kEStar);
+  ASSERT_TRUE(cg.converged) << cg.message;
+  ASSERT_TRUE(dense.converged) << dense.message;
   EXPECT_EQ(cg.cells_in_contact, dense.cells_in_contact);
   for (int i = 0; i < g.cells(); ++i)
     EXPECT_NEAR(cg.pressure_MPa[i], dense.pressure_MPa[i], 1e-6 * dense.max_pressure_MPa) << i;
   EXPECT_NEAR(cg.approach_mm, dense.approach_mm, 1e-7 * dense.approach_mm);
+  EXPECT_NEAR(cg.load_N, 100.0, 1e-10 * 100.0);
+  EXPECT_NEAR(dense.load_N, 100.0, 1e-10 * 100.0);
+}
+
+TEST(ContactSolver, DenseAndCgAgreeOnAnOffCentreRectangularGridUnderApproachControl) {
+  // A sphere off the grid centre on a 24 × 17 grid of unequal cells.
+  Grid g;
+  g.nx = 24;
+  g.ny = 17;
+  g.dx = 0.02;
+  g.dy = 0.03;
+  g.x0 = -0.2;
+  g.y0 = -0.3;
+  const auto h = SphereGap(g, 8.0, 0.03, -0.05);
+  const double approach = 0.002;
+  HalfSpaceSolver solver;
+  const auto cg = solver.SolveForApproach(g, h, approach, kEStar);
+  const auto dense = SolveDenseForApproach(g, h, approach, kEStar);
+  ASSERT_TRUE(cg.converged) << cg.message;
+  ASSERT_TRUE(dense.converged) << dense.message;
+  EXPECT_EQ(cg.cells_in_contact, dense.cells_in_contact);
+  EXPECT_NEAR(cg.load_N, dense.load_N, 1e-6 * dense.load_N);
+  for (int i = 0; i < g.cells(); ++i)
+    EXPECT_NEAR(cg.pressure_MPa[i], dense.pressure_MPa[i], 1e-6 * dense.max_pressure_MPa) << i;
+}
+
+TEST(ContactSolver, DenseAndCgAgreeOnARoughSurfaceWithManyIslands) {
+  // A wavy gap with several separate contact spots, partly below zero (interference at δ = 0):
+  // the active set changes much more than on a Hertz contact.
+  const Grid g = CenteredGrid(26, 22, 1.0, 0.8);
+  std::vector<double> h(g.cells());
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
+      h[iy * g.nx + ix] = 1e-3 * (std::sin(7.1 * x + 0.3) * std::cos(5.3 * y - 0.2) +
+                                  0.4 * std::sin(13.7 * x * y + 1.1) + 0.3 * x * x) -
+                          2e-4;
+    }
+  HalfSpaceSolver solver;
+  for (double load : {5.0, 200.0}) {
+    const auto cg = solver.SolveForLoad(g, h, load, kEStar);
+    const auto dense = SolveDenseForLoad(g, h, load, kEStar);
+    ASSERT_TRUE(cg.converged) << cg.message;
+    ASSERT_TRUE(dense.converged) << dense.message;
+    EXPECT_EQ(cg.cells_in_contact, dense.cells_in_contact) << load;
+    for (int i = 0; i < g.cells(); ++i)
+      EXPECT_NEAR(cg.pressure_MPa[i], dense.pressure_MPa[i], 1e-5 * dense.max_pressure_MPa)
+          << load << " cell " << i;
+    EXPECT_NEAR(cg.approach_mm, dense.approach_mm, 1e-6 * std::abs(dense.approach_mm)) << load;
+    const auto by_approach = solver.SolveForApproach(g, h, dense.approach_mm, kEStar);
+    const auto dense_approach = SolveDenseForApproach(g, h, dense.approach_mm, kEStar);
+    EXPECT_NEAR(by_approach.load_N, load, 1e-5 * load);
+    EXPECT_NEAR(dense_approach.load_N, load, 1e-8 * load);
+  }
+}
+
+TEST(ContactSolver, OneCellAndOneRowGrids) {
+  // 1 × 1: the single cell carries the load, δ = h + p K₀₀ / E*.
+  const Grid one = CenteredGrid(1, 1, 0.05, 0.1);
+  const auto s = HalfSpaceSolver().SolveForLoad(one, {0.002}, 3.0, kEStar);
+  const double p = 3.0 / one.cell_area_mm2();
+  EXPECT_NEAR(s.pressure_MPa[0], p, 1e-12 * p);
+  EXPECT_NEAR(s.approach_mm, 0.002 + p * LoveInfluence(0.0, 0.0, 0.05, 0.1) / kEStar, 1e-15);
+  // 1 × 30 and 30 × 1: the same problem transposed gives the same pressures.
+  const Grid column = CenteredGrid(1, 30, 0.05, 0.3), row = CenteredGrid(30, 1, 0.3, 0.05);
+  std::vector<double> h(30);
+  for (int i = 0; i < 30; ++i) h[i] = std::pow(column.y_centre_mm(i), 2) / 20.0;
+  HalfSpaceSolver solver;
+  const auto a = solver.SolveForLoad(column, h, 10.0, kEStar);
+  const auto b = solver.SolveForLoad(row, h, 10.0, kEStar);
+  const auto d = SolveDenseForLoad(row, h, 10.0, kEStar);
+  for (int i = 0; i < 30; ++i) {
+    EXPECT_NEAR(a.pressure_MPa[i], b.pressure_MPa[i], 1e-6 * b.max_pressure_MPa);
+    EXPECT_NEAR(b.pressure_MPa[i], d.pressure_MPa[i], 1e-6 * d.max_pressure_MPa);
+  }
+}
+
+TEST(ContactSolver, LoadAndApproachControlAreInverse) {
+  const Grid g = HertzGrid(32);
+  const auto h = SphereGap(g, 10.0);
+  HalfSpaceSolver solver({1e-10, 2000});
+  const auto by_load = solver.SolveForLoad(g, h, 100.0, kEStar);
+  const auto by_approach = solver.SolveForApproach(g, h, by_load.approach_mm, kEStar);
+  ASSERT_TRUE(by_approach.converged);
+  EXPECT_NEAR(by_approach.load_N, 100.0, 1e-6 * 100.0);
+  EXPECT_EQ(by_approach.cells_in_contact, by_load.cells_in_contact);
+}
+
+TEST(ContactSolver, SolutionSatisfiesTheComplementarityConditions) {
+  // Independent check with the dense convolution: u + h = δ where p > 0, u + h ≥ δ elsewhere.
+  const Grid g = HertzGrid(24);
+  const auto h = SphereGap(g, 10.0, 0.01, 0.0);
+  HalfSpaceSolver solver;
+  const auto s = solver.SolveForLoad(g, h, 100.0, kEStar);
+  const auto u = DisplacementDense(g, s.pressure_MPa, kEStar);
+  for (int i = 0; i < g.cells(); ++i) {
+    if (s.pressure_MPa[i] > 0)
+      EXPECT_NEAR(u[i] + h[i], s.approach_mm, 1e-6 * s.approach_mm) << i;
+    else
+      EXPECT_GE(u[i] + h[i], s.approach_mm * (1 - 1e-6)) << i;
+  }
+}
+
+TEST(ContactSolver, PressureIsSymmetricForASymmetricGap) {
+  const Grid g = HertzGrid(30);
+  const auto s = HalfSpaceSolver().SolveForLoad(g, SphereGap(g, 10.0), 100.0, kEStar);
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const double p = s.pressure_MPa[iy * g.nx + ix];
+      EXPECT_NEAR(p, s.pressure_MPa[iy * g.nx + (g.nx - 1 - ix)], 1e-6 * s.max_pressure_MPa);
+      EXPECT_NEAR(p, s.pressure_MPa[ix * g.nx + iy], 1e-6 * s.max_pressure_MPa);
+    }
+}
+
+TEST(ContactSolver, ACommonGapOffsetOnlyShiftsTheApproach) {
+  const Grid g = HertzGrid(32);
+  const auto h = SphereGap(g, 10.0);
+  auto shifted = h;
+  for (double& v : shifted) v += 1000.0;
+  HalfSpaceSolver solver;
+  const auto a = solver.SolveForLoad(g, h, 100.0, kEStar);
+  const auto b = solver.SolveForLoad(g, shifted, 100.0, kEStar);
+  EXPECT_NEAR(b.approach_mm - 1000.0, a.approach_mm, 1e-12);
+  for (int i = 0; i < g.cells(); ++i)
+    EXPECT_NEAR(a.pressure_MPa[i], b.pressure_MPa[i], 1e-9 * a.max_pressure_MPa);
+  const auto c = solver.SolveForApproach(g, shifted, a.approach_mm + 1000.0, kEStar);
+  EXPECT_NEAR(c.load_N, 100.0, 1e-6 * 100.0);
+}
+
+TEST(ContactSolver, WarmStartGivesTheSameAnswer) {
+  const Grid g = HertzGrid(32);
+  HalfSpaceSolver solver;
+  const auto first = solver.SolveForLoad(g, SphereGap(g, 10.0), 100.0, kEStar);
+  const auto h2 = SphereGap(g, 10.0, 0.3 * g.dx, 0.1 * g.dy);
+  const auto cold = solver.SolveForLoad(g, h2, 120.0, kEStar);
+  const auto warm = solver.SolveForLoad(g, h2, 120.0, kEStar, first.pressure_MPa);
+  ASSERT_TRUE(warm.converged);
+  for (int i = 0; i < g.cells(); ++i)
+    EXPECT_NEAR(warm.pressure_MPa[i], cold.pressure_MPa[i], 1e-6 * cold.max_pressure_MPa);
+  // An unusable start (wrong size) is ignored.
+  const auto ignored = solver.SolveForLoad(g, h2, 120.0, kEStar, std::vector<double>(3, 1.0));
+  EXPECT_EQ(ignored.iterations, cold.iterations);
+}
+
+TEST(ContactSolver, CachedSolverMatchesAFreshOneAcrossGrids) {
+  HalfSpaceSolver reused;
+  for (int n : {20, 33, 20, 41}) {
+    const Grid g = HertzGrid(n);
+    const auto h = SphereGap(g, 10.0);
+    const auto a = reused.SolveForLoad(g, h, 100.0, kEStar * (n == 33 ? 2.0 : 1.0));
+    const auto b = HalfSpaceSolver().SolveForLoad(g, h, 100.0, kEStar * (n == 33 ? 2.0 : 1.0));
+    EXPECT_EQ(a.pressure_MPa, b.pressure_MPa) << n;
+    EXPECT_EQ(a.approach_mm, b.approach_mm) << n;
+  }
+}
+
+TEST(ContactSolver, SolversInTwoThreadsAgreeWithOneThread) {
+  const Grid g = HertzGrid(36);
+  const auto h = SphereGap(g, 10.0);
+  const auto reference = HalfSpaceSolver().SolveForLoad(g, h, 100.0, kEStar);
+  std::vector<ContactSolution> out(2);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back([&, k] {
+      HalfSpaceSolver solver;  // plans are created concurrently here
+      for (int rep = 0; rep < 3; ++rep) out[k] = solver.SolveForLoad(g, h, 100.0, kEStar);
+    });
+  for (auto& t : threads) t.join();
+  for (const auto& s : out) EXPECT_EQ(s.pressure_MPa, reference.pressure_MPa);
+}
+
+TEST(ContactSolver, ReportsTheCellSizesItUsed) {
+  const Grid g = CenteredGrid(10, 20, 0.5, 2.0);
+  const auto s = HalfSpaceSolver().SolveForLoad(g, CylinderGap(g, 5.0), 50.0, kEStar);
+  EXPECT_DOUBLE_EQ(s.dx_mm, 0.1);
+  EXPECT_DOUBLE_EQ(s.dy_mm, 0.2);
+  EXPECT_NEAR(s.contact_area_mm2, s.cells_in_contact * 0.02, 1e-15);
+  EXPECT_TRUE(s.contact_at_y_edge);  // a straight roller loads its end rows
+  EXPECT_FALSE(s.contact_at_x_edge);
+}
+
+// ---- Hard cases ----------------------------------------------------------------------------
+
+TEST(ContactHardCases, SingleTouchingCellCarriesTheWholeLoad) {
+  // One cell at zero gap, all others 1 mm away: the load goes through that cell alone and the
+  // approach is its own displacement, p·K₀₀/E*.
+  const Grid g = CenteredGrid(9, 7, 0.45, 0.35);
+  std::vector<double> h(g.cells(), 1.0);
+  const int centre = 3 * 9 + 4;
+  h[centre] = 0.0;
+  const double load = 5.0;
+  for (bool dense : {false, true}) {
+    const auto s = dense ? SolveDenseForLoad(g, h, load, kEStar)
+                         : HalfSpaceSolver().SolveForLoad(g, h, load, kEStar);
+    ASSERT_TRUE(s.converged) << s.message;
+    EXPECT_EQ(s.cells_in_contact, 1);
+    EXPECT_EQ(s.max_pressure_cell, centre);
+    const double p = load / g.cell_area_mm2();
+    EXPECT_NEAR(s.pressure_MPa[centre], p, 1e-12 * p);
+    EXPECT_NEAR(s.approach_mm, p * LoveInfluence(0.0, 0.0, 0.05, 0.05) / kEStar, 1e-12);
+  }
+}
+
+TEST(ContactHardCases, BarelyTouchingSphereLoadsOneCell) {
+  // Odd grid: a cell centre sits under the sphere's tip. A load far below what reaches the
+  // neighbours' gap leaves a single cell in contact.
+  const Grid g = HertzGrid(41);
+  const auto s = HalfSpaceSolver().SolveForLoad(g, SphereGap(g, 10.0), 1e-6, kEStar);
+  ASSERT_TRUE(s.converged) << s.message;
+  EXPECT_TRUE(AllFinite(s));
+  EXPECT_EQ(s.cells_in_contact, 1);
+  EXPECT_EQ(s.max_pressure_cell, 20 * 41 + 20);
+  EXPECT_NEAR(s.load_N, 1e-6, 1e-15);
+}
+
+TEST(ContactHardCases, ZeroLoadGivesZeroPressureAndTouchingApproach) {
+  const Grid g = HertzGrid(16);
+  auto h = SphereGap(g, 10.0);
+  for (double& v : h) v += 0.01;
+  HalfSpaceSolver solver;
+  for (double load : {0.0, -3.0}) {
+    for (bool dense : {false, true}) {
+      const auto s = dense ? SolveDenseForLoad(g, h, load, kEStar)
+                           : solver.SolveForLoad(g, h, load, kEStar);
+      EXPECT_TRUE(s.converged);
+      EXPECT_TRUE(AllFinite(s));
+      EXPECT_EQ(s.cells_in_contact, 0);
+      EXPECT_EQ(s.load_N, 0.0);
+      EXPECT_EQ(s.max_pressure_cell, -1);
+      EXPECT_DOUBLE_EQ(s.approach_mm, *std::min_element(h.begin(), h.end()));
+      EXPECT_EQ(s.message.empty(), load == 0.0);
+    }
+  }
+}
+
+TEST(ContactHardCases, GapThatNeverClosesUnderApproachControl) {
+  const Grid g = HertzGrid(16);
+  auto h = SphereGap(g, 10.0);
+  for (double& v : h) v += 0.01;  // the closest point is 10 µm away
+  HalfSpaceSolver solver;
+  for (double approach : {-1.0, 0.0, 0.005, 0.01}) {
+    const auto s = solver.SolveForApproach(g, h, approach, kEStar);
+    EXPECT_TRUE(s.converged);
+    EXPECT_TRUE(s.message.empty());
+    EXPECT_EQ(s.load_N, 0.0);
+    EXPECT_EQ(s.cells_in_contact, 0);
+    EXPECT_EQ(s.approach_mm, approach);
+    const auto d = SolveDenseForApproach(g, h, approach, kEStar);
+    EXPECT_EQ(d.load_N, 0.0);
+  }
+  // A deep approach fills the grid, finite.
+  const auto deep = solver.SolveForApproach(g, h, 10.0, kEStar);
+  EXPECT_TRUE(deep.converged);
+  EXPECT_TRUE(AllFinite(deep));
+  EXPECT_EQ(deep.cells_in_contact, g.cells());
+  // Just past touching, a little load appears.
+  const auto s = solver.SolveForApproach(g, h, 0.0101, kEStar);
+  EXPECT_GT(s.load_N, 0.0);
+  EXPECT_TRUE(AllFinite(s));
+}
+
+TEST(ContactHardCases, HugeLoadFillsTheGridAndStaysFinite) {
+  const Grid g = HertzGrid(24);
+  const auto h = SphereGap(g, 10.0);
+  for (double load : {1e6, 1e12, 1e30}) {
+    const auto s = HalfSpaceSolver().SolveForLoad(g, h, load, kEStar);
+    ASSERT_TRUE(s.converged) << s.message;
+    EXPECT_TRUE(AllFinite(s));
+    EXPECT_NEAR(s.load_N, load, 1e-9 * load);
+    EXPECT_EQ(s.cells_in_contact, g.cells());
+    EXPECT_TRUE(s.contact_at_x_edge);
+    EXPECT_TRUE(s.contact_at_y_edge);
+  }
+}
+
+TEST(ContactHardCases, TinyLoadsGoThroughOneFiniteCell) {
+  // At tiny loads a single cell (the grid has a cell centred under the tip) carries the load,
+  // p = W/(dx dy), with no underflow to zero or NaN.
+  const Grid g = HertzGrid(21);
+  const auto h = SphereGap(g, 10.0);
+  HalfSpaceSolver solver;
+  for (double load : {1e-12, 1e-30}) {
+    const auto s = solver.SolveForLoad(g, h, load, kEStar);
+    ASSERT_TRUE(s.converged);
+    EXPECT_TRUE(AllFinite(s));
+    EXPECT_NEAR(s.max_pressure_MPa, load / g.cell_area_mm2(), 1e-9 * load / g.cell_area_mm2());
+  }
+}
+
+TEST(ContactHardCases, FlatPunchIsFiniteWithEdgePeaks) {
+  const Grid g = CenteredGrid(20, 20, 1.0, 1.0);
+  const std::vector<double> h(g.cells(), 0.0);
+  const auto s = HalfSpaceSolver().SolveForLoad(g, h, 1000.0, kEStar);
+  ASSERT_TRUE(s.converged);
+  EXPECT_TRUE(AllFinite(s));
+  EXPECT_EQ(s.cells_in_contact, g.cells());
+  // Corners carry more than the centre (the rigid punch's edge singularity).
+  EXPECT_GT(s.pressure_MPa[0], 2.0 * s.pressure_MPa[10 * 20 + 10]);
+}
+
+TEST(ContactHardCases, IterationLimitIsReportedNotHidden) {
+  const Grid g = HertzGrid(32);
+  HalfSpaceSolver solver({1e-8, 2});
+  const auto s = solver.SolveForLoad(g, SphereGap(g, 10.0), 100.0, kEStar);
+  EXPECT_FALSE(s.converged);
+  EXPECT_FALSE(s.message.empty());
+  EXPECT_EQ(s.iterations, 2);
+  EXPECT_TRUE(AllFinite(s));
+  EXPECT_NEAR(s.load_N, 100.0, 1e-9 * 100.0);  // the load is met at every iteration
+}
+
+TEST(ContactHardCases, BadInputThrowsWithAClearMessage) {
+  const Grid g = CenteredGrid(4, 4, 1.0, 1.0);
+  const std::vector<double> h(16, 0.0);
+  HalfSpaceSolver solver;
+  auto expect_throw = [](auto&& call, const std::string& needle) {
+    try {
+      call();
+      ADD_FAILURE() << "no exception, expected one mentioning " << needle;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  expect_throw([&] { solver.SolveForLoad(g, std::vector<double>(15, 0.0), 1.0, kEStar); },
+               "gap_mm has 15 entries");
+  auto nan_gap = h;
+  nan_gap[5] = std::nan("");
+  expect_throw([&] { solver.SolveForLoad(g, nan_gap, 1.0, kEStar); }, "gap_mm[5]");
+  expect_throw([&] { solver.SolveForLoad(g, h, std::nan(""), kEStar); }, "load_N");
+  expect_throw([&] { solver.SolveForApproach(g, h, kInf, kEStar); }, "approach_mm");
+  expect_throw([&] { solver.SolveForLoad(g, h, 1.0, 0.0); }, "E*");
+  expect_throw([&] { SolveDenseForLoad(g, h, 1.0, -5.0); }, "E*");
+  Grid bad = g;
+  bad.dx = 0;
+  expect_throw([&] { solver.SolveForLoad(bad, h, 1.0, kEStar); }, "cell sizes");
+  bad = g;
+  bad.nx = 0;
+  expect_throw([&] { solver.SolveForLoad(bad, {}, 1.0, kEStar); }, "at least one cell");
+  expect_throw([&] { CenteredGrid(3, 3, -1.0, 1.0); }, "cell sizes");
+  const Grid big = CenteredGrid(65, 64, 1.0, 1.0);
+  expect_throw([&] { SolveDenseForLoad(big, std::vector<double>(big.cells(), 0.0), 1.0, kEStar); },
+               "exceed its limit");
 }
 
 }  // namespace

@@ -29,6 +29,17 @@ struct IsJet : std::false_type {};
 template <typename S, int N>
 struct IsJet<ceres::Jet<S, N>> : std::true_type {};
 
+/// Converts a scalar to another scalar type: to double it keeps the value (drops derivatives),
+/// to a Jet it gives a constant.
+template <typename To, typename From>
+To ScalarCast(const From& x) {
+  if constexpr (std::is_same_v<To, double>) {
+    return Value(x);
+  } else {
+    return To(x);
+  }
+}
+
 /// Select a or b on the value of a condition. Use only where the two branches meet continuously
 /// (or where the kink is intended and documented); the derivative is that of the chosen branch.
 template <typename T>

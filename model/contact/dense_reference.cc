@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "model/contact/half_space.h"
@@ -42,9 +43,19 @@ Eigen::MatrixXd InfluenceMatrix(const Grid& grid) {
 
 // Active-set solve. With load control (load > 0) δ is unknown and Σ p·dx·dy = load; otherwise
 // δ = approach is given.
+// The full matrix of N² doubles: 4096 cells are 134 MB and a Cholesky of minutes; beyond that
+// the reference is refused rather than exhausting the machine.
+constexpr int kMaxDenseCells = 4096;
+
 ContactSolution ActiveSet(const Grid& grid, const std::vector<double>& h, bool load_control,
                           double load, double approach, double e_star) {
   const int n = grid.cells();
+  if (n > kMaxDenseCells) {
+    std::ostringstream os;
+    os << "dense contact reference: " << n << " cells exceed its limit of " << kMaxDenseCells
+       << " (use HalfSpaceSolver)";
+    throw std::invalid_argument(os.str());
+  }
   const double area = grid.cell_area_mm2();
   const Eigen::MatrixXd k = InfluenceMatrix(grid);
   const Eigen::Map<const Eigen::VectorXd> hv(h.data(), n);

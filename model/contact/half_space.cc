@@ -116,6 +116,11 @@ ContactSolution Unloaded(const Grid& grid, double approach_mm, std::string messa
 
 }  // namespace detail
 
+std::mutex& FftwPlannerMutex() {
+  static std::mutex m;
+  return m;
+}
+
 Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm) {
   Grid g;
   g.nx = nx;
@@ -134,11 +139,8 @@ Grid CenteredGrid(int nx, int ny, double half_x_mm, double half_y_mm) {
 namespace {
 
 // FFTW's planner is not thread-safe; executing a plan is. All planning and plan destruction go
-// through this one lock.
-std::mutex& PlannerMutex() {
-  static std::mutex m;
-  return m;
-}
+// through one lock (FftwPlannerMutex in the header).
+std::mutex& PlannerMutex() { return FftwPlannerMutex(); }
 
 using Complex = std::complex<double>;
 
@@ -188,10 +190,14 @@ class FftConvolver {
     const double xi = 0.5 * dx, eta = 0.5 * dy;
     const int wx = 2 * nx_ - 1, wy = 2 * ny_ - 1;
     k.table.resize(static_cast<size_t>(wx) * wy);
-    for (int oy = -(ny_ - 1); oy <= ny_ - 1; ++oy)
-      for (int ox = -(nx_ - 1); ox <= nx_ - 1; ++ox)
-        k.table[static_cast<size_t>(oy + ny_ - 1) * wx + (ox + nx_ - 1)] =
-            LoveInfluence(ox * dx, oy * dy, xi, eta);
+    // The coefficient is even in both offsets: evaluate one quadrant, mirror the rest.
+    for (int oy = 0; oy < ny_; ++oy)
+      for (int ox = 0; ox < nx_; ++ox) {
+        const double v = LoveInfluence(ox * dx, oy * dy, xi, eta);
+        for (int sy : {-1, 1})
+          for (int sx : {-1, 1})
+            k.table[static_cast<size_t>(sy * oy + ny_ - 1) * wx + (sx * ox + nx_ - 1)] = v;
+      }
     k.self = k.table[static_cast<size_t>(ny_ - 1) * wx + (nx_ - 1)];
     // Wrapped kernel: offsets 0 … n−1 in the first half, −(n−1) … −1 in the second; the
     // middle index n is never reached by a product and holds 0.
@@ -317,7 +323,7 @@ struct HalfSpaceSolver::Impl {
   SolverOptions options;
   std::map<std::pair<int, int>, std::unique_ptr<FftConvolver>> convolvers;
   std::map<std::tuple<int, int, double, double>, Kernel> kernels;
-  std::vector<double> p, p_old, u, g, t, r;  // work arrays
+  std::vector<double> h, p, p_old, u, g, t, r;  // work arrays (h: the gap above its minimum)
   std::vector<std::pair<int, double>> corrections;
 
   explicit Impl(SolverOptions o) : options(o) {}
@@ -368,24 +374,29 @@ const SolverOptions& HalfSpaceSolver::options() const { return impl_->options; }
 // the (usually few-cell) change made by the projection and the re-entry, added by a direct sum;
 // only when many cells change, and every kRefresh iterations against drift, is u = K p redone by
 // FFT. That halves the FFTs of the textbook algorithm.
-ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector<double>& h,
+ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector<double>& gap,
                                              bool load_control, double target, double e_star,
                                              const std::vector<double>* start) {
   const char* where =
       load_control ? "HalfSpaceSolver::SolveForLoad" : "HalfSpaceSolver::SolveForApproach";
   detail::CheckGrid(grid, where);
-  detail::CheckField(grid, h, "gap_mm", where);
+  detail::CheckField(grid, gap, "gap_mm", where);
   detail::CheckModulus(e_star, where);
   detail::CheckFinite(target, load_control ? "load_N" : "approach_mm", where);
-  const double h_min = *std::min_element(h.begin(), h.end());
   const size_t n = static_cast<size_t>(grid.cells());
   const double area = grid.cell_area_mm2();
-  const double load = target, approach = target;
+  // Work with the gap above its minimum (so a large common offset costs no digits in u + h − δ);
+  // δ is shifted back on return.
+  const double gap_min = *std::min_element(gap.begin(), gap.end());
+  h.resize(n);
+  for (size_t i = 0; i < n; ++i) h[i] = gap[i] - gap_min;
+  const double h_min = 0.0;
+  const double load = target, approach = target - gap_min;
 
   p.assign(n, 0.0);
   if (load_control) {
     if (load <= 0)
-      return detail::Unloaded(grid, h_min, load < 0 ? "negative load treated as zero" : "");
+      return detail::Unloaded(grid, gap_min, load < 0 ? "negative load treated as zero" : "");
     if (UsableStart(start, n)) {
       p = *start;
     } else {
@@ -398,7 +409,7 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
         p[i] = approach - h[i];  // the rigid overlap, scaled below
         any = true;
       }
-    if (!any) return detail::Unloaded(grid, approach, "");
+    if (!any) return detail::Unloaded(grid, target, "");
   }
 
   FftConvolver& conv = Convolver(grid);
@@ -561,9 +572,9 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
         sum_g += u[i] + h[i];
         ++nc;
       }
-    s.approach_mm = nc > 0 ? sum_g / static_cast<double>(nc) : h_min;
+    s.approach_mm = gap_min + (nc > 0 ? sum_g / static_cast<double>(nc) : h_min);
   } else {
-    s.approach_mm = approach;
+    s.approach_mm = target;
   }
   s.pressure_MPa = p;
   detail::Summarise(grid, s);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -105,13 +106,17 @@ class HalfSpaceSolver {
 };
 
 /// Dense reference (the same equations solved with an active-set method on the full matrix);
-/// for tests and the speed comparison only.
+/// for tests and the speed comparison only. @throws std::invalid_argument beyond 4096 cells.
 ContactSolution SolveDenseForLoad(const Grid& grid, const std::vector<double>& gap_mm,
                                   double load_N, double e_star_MPa);
 
 /// Dense reference of the approach-controlled problem (tests only).
 ContactSolution SolveDenseForApproach(const Grid& grid, const std::vector<double>& gap_mm,
                                       double approach_mm, double e_star_MPa);
+
+/// The lock every FFTW planner call in the process must hold (FFTW's planner is not thread-safe;
+/// executing a plan is). The solver takes it for its own planning; other FFTW users should too.
+std::mutex& FftwPlannerMutex();
 
 /// Surface normal displacement at every cell centre from a pressure field (the convolution).
 std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,

@@ -15,15 +15,27 @@
 
 namespace camopt::contact {
 
+/// asinh(z) = sign(z) log1p(|z| + z²/(1 + sqrt(1 + z²))), accurate for small and large |z| and
+/// usable with ceres::Jet (which has no asinh). The sign branch meets continuously at 0.
+template <typename T>
+T Asinh(const T& z) {
+  using std::abs;
+  using std::log1p;
+  using std::sqrt;
+  const T s = abs(z);
+  const T r = log1p(s + s * s / (T(1.0) + sqrt(T(1.0) + s * s)));
+  return Value(z) < 0.0 ? T(-r) : r;
+}
+inline double Asinh(double z) { return std::asinh(z); }
+
 /// Signed integral of 1/sqrt(x'² + y'²) over the rectangle with corners (0, 0) and (x, y):
 /// x asinh(y/|x|) + y asinh(x/|y|). Odd in x and in y; 0 when x or y is 0 (the limit; the
 /// branch only removes the 0·asinh(±∞) form, the two sides meet continuously).
 template <typename T>
 T LoveCornerIntegral(const T& x, const T& y) {
   using std::abs;
-  using std::asinh;
   if (Value(x) == 0.0 || Value(y) == 0.0) return T(0.0);
-  return x * asinh(y / abs(x)) + y * asinh(x / abs(y));
+  return x * Asinh(T(y / abs(x))) + y * Asinh(T(x / abs(y)));
 }
 
 /// Normal surface displacement per unit pressure and unit composite modulus at the point

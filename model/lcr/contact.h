@@ -1,0 +1,73 @@
+// LCR contact at one input angle (paper §3.2–3.4, written with the pitch points of NOTES §1).
+//
+// Every common normal of a cam passes through its pitch point (Aronhold–Kennedy):
+//     I = e k u(θ),  k = n/(n − m).
+// So the force on the cam from roller k acts along d_k = unit(I − O_k) (into the cam), the contact
+// point is O_k + r_r d_k, and the moment arm about the input axis O is a_k = O_k × d_k
+// (the paper's e_Ai = r_dA sin α_Ai, with sign). No root finding is needed; the tests cross-check
+// the contact points against the paper's distance condition L = r_r solved by root finding.
+#pragma once
+
+#include <vector>
+
+#include "model/common/geometry.h"
+#include "model/lcr/kinematics.h"
+#include "model/lcr/profile.h"
+
+namespace camopt::lcr {
+
+template <typename T>
+struct RollerContact {
+  Vec2<T> centre;     // O_k, fixed frame [mm]
+  Vec2<T> direction;  // d_k, unit, force on the cam from the roller
+  Vec2<T> point;      // contact point O_k + r_r d_k [mm]
+  T arm;              // a_k = O_k × d_k [mm], signed
+  T curvature;        // pitch-curve curvature κ at this roller [1/mm], signed
+};
+
+/// Roller-centre positions of one turret at input angle θ [rad]. The output turret turns by
+/// θ_o = (1 − n_A m_B/(m_A n_B)) θ; the fixed turret stands.
+template <typename T>
+std::vector<Vec2<T>> RollerCentres(const Reducer<T>& r, Side s, const T& theta) {
+  const CamSide<T>& c = r.side(s);
+  const T turn = s == Side::kInput ? T(0.0) : T(OutputSpeedRatio(r)) * theta;
+  std::vector<Vec2<T>> centres(c.rollers);
+  for (int i = 0; i < c.rollers; ++i)
+    centres[i] = c.turret_radius * U(T(2.0 * kPi * i / c.rollers) + turn);
+  return centres;
+}
+
+/// Pitch point I = e k u(θ) of one cam [mm].
+template <typename T>
+Vec2<T> PitchPointOfCam(const Reducer<T>& r, Side s, const T& theta) {
+  return r.eccentricity * T(r.side(s).pitch_factor()) * U(theta);
+}
+
+/// Contact geometry of every roller of one turret at input angle θ.
+template <typename T>
+std::vector<RollerContact<T>> RollerContacts(const Reducer<T>& r, Side s, const T& theta) {
+  const CamSide<T>& c = r.side(s);
+  const Vec2<T> pitch = PitchPointOfCam(r, s, theta);
+  const Vec2<T> ecc = U(theta);
+  std::vector<RollerContact<T>> out;
+  out.reserve(c.rollers);
+  for (const Vec2<T>& o : RollerCentres(r, s, theta)) {
+    const Vec2<T> v = pitch - o;
+    const Vec2<T> d = v / v.norm();
+    const T cosine = o.dot(ecc) / c.turret_radius;
+    out.push_back({o, d, o + c.roller_radius * d, Cross(o, d), PitchCurvature(c, r.eccentricity, cosine)});
+  }
+  return out;
+}
+
+/// The sign of a_k on the rollers that carry load. The output turret must be driven along its
+/// motion (ω_o = OutputSpeedRatio · ω_in), so the cam pushes it with torque −F a of the sign of ω_o:
+/// loaded output rollers have sign(a) = −sign(ω_o). The cam's moment balance about O_c then puts the
+/// loaded fixed-turret rollers on the opposite sign.
+template <typename T>
+double LoadedArmSign(const Reducer<T>& r, Side s) {
+  const double output_sign = OutputSpeedRatio(r) > 0 ? -1.0 : 1.0;
+  return s == Side::kOutput ? output_sign : -output_sign;
+}
+
+}  // namespace camopt::lcr

@@ -1,0 +1,102 @@
+// LCR analysis over one input revolution: per-angle series and their extremes, and smooth
+// aggregates of the same quantities for optimizers.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "model/lcr/forces.h"
+
+namespace camopt::lcr {
+
+struct SideSeries {
+  std::vector<int> actuating;
+  std::vector<double> max_force_N, max_stress_MPa, turret_torque_Nmm;
+  std::vector<std::vector<double>> roller_force_N;  // [angle][roller]
+};
+
+struct CycleSeries {
+  std::vector<double> theta_rad;
+  SideSeries input, output;
+  std::vector<double> tangential_force_N, radial_force_N, input_torque_Nmm, efficiency;
+};
+
+/// Samples θ = 2π i / steps, i = 0 … steps − 1. progress(fraction) is called now and then.
+inline CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material,
+                                const LoadCase& load, int steps, const Stages& stages,
+                                const std::function<void(double)>& progress = {}) {
+  CycleSeries s;
+  s.theta_rad.reserve(steps);
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2 * kPi * i / steps;
+    const AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
+    s.theta_rad.push_back(theta);
+    for (auto [series, side] : {std::pair{&s.input, &a.input}, std::pair{&s.output, &a.output}}) {
+      series->actuating.push_back(side->actuating);
+      series->max_force_N.push_back(side->max_force);
+      series->max_stress_MPa.push_back(side->max_stress);
+      series->turret_torque_Nmm.push_back(side->turret_torque);
+      series->roller_force_N.push_back(side->force);
+    }
+    s.tangential_force_N.push_back(a.tangential_force);
+    s.radial_force_N.push_back(a.radial_force);
+    s.input_torque_Nmm.push_back(a.input_torque);
+    s.efficiency.push_back(a.efficiency);
+    if (progress && (i % 256 == 0 || i + 1 == steps)) progress(double(i + 1) / steps);
+  }
+  return s;
+}
+
+/// Cycle aggregates over `steps` input angles, for optimizers: soft maxima (log-sum-exp) of the
+/// roller force and contact stress of each cam, soft minimum of the efficiency, and the mean input
+/// torque. Each soft max is taken on x/scale with dimensionless sharpness k, so it over-estimates
+/// the exact max by at most scale·ln(samples)/k (far less when one sample dominates). The scales
+/// are fixed numbers (not the current maximum), so the aggregate is one smooth function of the
+/// design and its AD gradient is exact.
+struct AggregateOptions {
+  double force_scale_N = 1000.0;
+  double stress_scale_MPa = 1000.0;
+  double sharpness = 200.0;
+};
+
+template <typename T>
+struct CycleAggregates {
+  T max_force_input{}, max_force_output{};    // [N]
+  T max_stress_input{}, max_stress_output{};  // [MPa]
+  T min_efficiency{}, mean_input_torque{};    // fraction, [N·mm]
+};
+
+template <typename T>
+T ScaledSoftMax(const std::vector<T>& x, double scale, double sharpness) {
+  std::vector<T> scaled(x.size());
+  for (size_t i = 0; i < x.size(); ++i) scaled[i] = x[i] / T(scale);
+  return T(scale) * SoftMax(scaled, sharpness);
+}
+
+template <typename T>
+CycleAggregates<T> AggregateCycle(const Reducer<T>& r, const Material& material, const LoadCase& load,
+                                  int steps, const AggregateOptions& options = {}) {
+  std::vector<T> fa, fb, sa, sb, eta, tin;
+  for (int i = 0; i < steps; ++i) {
+    const AngleLoads<T> a = AnalyzeAngle(r, material, load, T(2 * kPi * i / steps));
+    for (const auto& [dst, src] : {std::pair{&fa, &a.input.force}, std::pair{&fb, &a.output.force}})
+      dst->insert(dst->end(), src->begin(), src->end());
+    for (const auto& [dst, src] : {std::pair{&sa, &a.input.stress}, std::pair{&sb, &a.output.stress}})
+      for (const T& v : *src)
+        if (Value(v) > 0) dst->push_back(v);
+    eta.push_back(-a.efficiency);
+    tin.push_back(a.input_torque);
+  }
+  CycleAggregates<T> out;
+  out.max_force_input = ScaledSoftMax(fa, options.force_scale_N, options.sharpness);
+  out.max_force_output = ScaledSoftMax(fb, options.force_scale_N, options.sharpness);
+  out.max_stress_input = sa.empty() ? T(0.0) : ScaledSoftMax(sa, options.stress_scale_MPa, options.sharpness);
+  out.max_stress_output = sb.empty() ? T(0.0) : ScaledSoftMax(sb, options.stress_scale_MPa, options.sharpness);
+  out.min_efficiency = -ScaledSoftMax(eta, 1.0, options.sharpness);
+  T sum(0.0);
+  for (const T& t : tin) sum += t;
+  out.mean_input_torque = sum / T(double(steps));
+  return out;
+}
+
+}  // namespace camopt::lcr

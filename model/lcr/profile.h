@@ -1,0 +1,131 @@
+// LCR cam profiles (paper eqs. 4–9 and the tool path P_t), curvature and undercut.
+//
+// In the cam frame (NOTES §1) the roller-centre trajectory of either cam is
+//     X(ψ) = r_d u(ψ) − e u(kψ),   k = n/(n − m),   ψ ∈ [0, 2π),
+// (input cam: ψ = (n_A − m_A)θ/m_A; output cam: ψ = n_A (n_B − m_B) θ/(m_A n_B)), so both cams of the
+// conjugate cam are drawn in one frame with roller 1 at angle 0 at θ = 0. It is the paper's
+// rigid-body transformation written in closed form. The cam profile is its offset by r_r toward
+// the cam, the cutter path its offset by (d_r − d_t)/2.
+//
+// Signed curvature (positive where the centre of curvature is on the cam side):
+//     κ(c) = (A² + kB² − AB(1+k)c) / (A² + B² − 2ABc)^{3/2},  A = r_d, B = e k,
+// where c = cos(ψ(k−1)) is also the cosine of the angle between a roller and the eccentric
+// direction u(θ) in the fixed frame. Undercut where κ r_r > 1.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "model/common/geometry.h"
+#include "model/lcr/reducer.h"
+
+namespace camopt::lcr {
+
+/// Pitch-curve curvature κ [1/mm] as a function of c ∈ [−1, 1].
+template <typename T>
+T PitchCurvature(const CamSide<T>& side, const T& eccentricity, const T& c) {
+  using std::pow;
+  using std::sqrt;
+  const double k = side.pitch_factor();
+  const T A = side.turret_radius;
+  const T B = eccentricity * T(k);
+  const T num = A * A + T(k) * B * B - A * B * T(1.0 + k) * c;
+  const T den = A * A + B * B - T(2.0) * A * B * c;
+  return num / (den * sqrt(den));
+}
+
+/// Pitch curve point X(ψ) in the cam frame.
+template <typename T>
+Vec2<T> PitchPoint(const CamSide<T>& side, const T& eccentricity, const T& psi) {
+  return side.turret_radius * U(psi) - eccentricity * U(T(side.pitch_factor()) * psi);
+}
+
+/// Unit normal of the pitch curve at ψ pointing into the cam.
+template <typename T>
+Vec2<T> InwardNormal(const CamSide<T>& side, const T& eccentricity, const T& psi) {
+  const T k(side.pitch_factor());
+  const Vec2<T> v = eccentricity * k * U(k * psi) - side.turret_radius * U(psi);
+  return v / v.norm();
+}
+
+/// Point of the curve offset from the pitch curve by `offset` into the cam (cam profile for
+/// offset = r_r, cutter-centre path for offset = r_r − r_t).
+template <typename T>
+Vec2<T> OffsetPoint(const CamSide<T>& side, const T& eccentricity, const T& psi, const T& offset) {
+  return PitchPoint(side, eccentricity, psi) + offset * InwardNormal(side, eccentricity, psi);
+}
+
+/// Sampled closed curve (n points, ψ = 2πi/n) at the given inward offset [mm].
+inline std::vector<Vec2<double>> SampleCurve(const CamSide<double>& side, double eccentricity,
+                                             double offset, int n) {
+  std::vector<Vec2<double>> pts(n);
+  for (int i = 0; i < n; ++i) pts[i] = OffsetPoint(side, eccentricity, 2 * kPi * i / n, offset);
+  return pts;
+}
+
+/// The c ∈ [−1, 1] where κ(c) is largest (the sharpest convex point), found on values only:
+/// a 201-point scan refined by golden section. Used with the envelope theorem below.
+template <typename T>
+double ArgMaxCurvature(const CamSide<T>& side, const T& eccentricity) {
+  const CamSide<double> s = side.template cast<double>();
+  const double e = Value(eccentricity);
+  auto f = [&](double c) { return PitchCurvature(s, e, c); };
+  const int n = 200;
+  int best = 0;
+  double best_v = f(-1.0);
+  for (int i = 1; i <= n; ++i) {
+    const double v = f(-1.0 + 2.0 * i / n);
+    if (v > best_v) best_v = v, best = i;
+  }
+  double lo = -1.0 + 2.0 * std::max(best - 1, 0) / n, hi = -1.0 + 2.0 * std::min(best + 1, n) / n;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < 60; ++it) {
+    if (f1 < f2) {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
+    } else {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
+    }
+  }
+  const double c = 0.5 * (lo + hi);
+  // The ends of the interval are candidates too (the maximum is often at c = −1).
+  double arg = c, val = f(c);
+  for (double end : {-1.0, 1.0})
+    if (f(end) > val) arg = end, val = f(end);
+  return arg;
+}
+
+/// Largest pitch-curve curvature κ_max [1/mm]. Its derivative is exact by the envelope theorem:
+/// at the maximiser c*, dκ_max/dp = ∂κ/∂p (c* is found on values; c = ±1 does not depend on p).
+template <typename T>
+T MaxPitchCurvature(const CamSide<T>& side, const T& eccentricity) {
+  return PitchCurvature(side, eccentricity, T(ArgMaxCurvature(side, eccentricity)));
+}
+
+/// Smallest convex radius of the pitch curve, 1/κ_max [mm].
+template <typename T>
+T MinConvexPitchRadius(const CamSide<T>& side, const T& eccentricity) {
+  return T(1.0) / MaxPitchCurvature(side, eccentricity);
+}
+
+/// Undercut margin 1/κ_max − r_r [mm]: negative means the roller (and any cutter with d_t ≤ d_r,
+/// whose path is offset by r_r − r_t and whose radius is r_t) undercuts the cam.
+template <typename T>
+T UndercutMargin(const CamSide<T>& side, const T& eccentricity) {
+  return MinConvexPitchRadius(side, eccentricity) - side.roller_radius;
+}
+
+/// Smooth undercut margin for optimizers: 1/SoftMax_k(κ(c_i)) − r_r over n samples of c
+/// (c_i = cos(πi/(n−1)), denser near c = ±1). Never above the sampled exact margin; the soft max
+/// over-estimates κ by at most ln(n)/k, so the margin is low by at most ≈ ρ² ln(n)/k
+/// (ρ = 1/κ_max). Sharpness k in mm (units of 1/κ): the default 1e4 mm gives Δκ ≤ 4.2e-4 /mm.
+template <typename T>
+T SmoothUndercutMargin(const CamSide<T>& side, const T& eccentricity, int samples = 64,
+                       double sharpness_mm = 1e4) {
+  std::vector<T> kappa(samples);
+  for (int i = 0; i < samples; ++i)
+    kappa[i] = PitchCurvature(side, eccentricity, T(std::cos(kPi * i / (samples - 1))));
+  return T(1.0) / SoftMax(kappa, sharpness_mm) - side.roller_radius;
+}
+
+}  // namespace camopt::lcr

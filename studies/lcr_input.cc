@@ -1,0 +1,54 @@
+#include "studies/lcr_input.h"
+
+namespace camopt::studies {
+
+namespace {
+
+lcr::CamSide<double> ParseSide(const Node& s) {
+  lcr::CamSide<double> c;
+  c.lobes = s["lobes"].Integer(1);
+  c.rollers = s["rollers"].Integer(2);
+  if (c.rollers <= c.lobes)
+    s["rollers"].Fail("more rollers than lobes (" + std::to_string(c.lobes) + ")");
+  c.turret_radius = s["turret_radius_mm"].Positive();
+  c.roller_radius = s["roller_diameter_mm"].Positive() / 2;
+  c.roller_length = s["roller_length_mm"].Positive();
+  c.cam_thickness = s["cam_thickness_mm"].Positive();
+  return c;
+}
+
+}  // namespace
+
+lcr::Reducer<double> ParseReducer(const Node& node) {
+  lcr::Reducer<double> r;
+  r.eccentricity = node["eccentricity_mm"].Positive();
+  r.input = ParseSide(node["input"]);
+  r.output = ParseSide(node["output"]);
+  const auto problems = lcr::CheckDesign(r);
+  if (!problems.empty()) {
+    // "input.rollers" -> /reducer/input/rollers
+    std::string path = problems.front().field;
+    for (char& ch : path)
+      if (ch == '.') ch = '/';
+    throw StudyError(node.file() + ": " + node.path() + "/" + path + ": " + problems.front().message);
+  }
+  return r;
+}
+
+double ParseCutterDiameter(const Node& side, double roller_diameter) {
+  if (!side.Has("cutter_diameter_mm")) return roller_diameter;
+  const Node n = side["cutter_diameter_mm"];
+  const double d = n.Positive();
+  if (d > roller_diameter)
+    n.Fail("a cutter diameter <= the roller diameter (" + std::to_string(roller_diameter) + " mm)");
+  return d;
+}
+
+lcr::Material ParseMaterial(const Node& node) {
+  lcr::Material m;
+  m.youngs_modulus_MPa = node["youngs_modulus_GPa"].Positive() * 1000.0;
+  m.poisson_ratio = node["poisson_ratio"].NumberIn(0.0, 0.4999);
+  return m;
+}
+
+}  // namespace camopt::studies

@@ -1,0 +1,22 @@
+// Parsing the lobe cam reducer design, material and load from a study file; shared by every
+// study kind that takes an LCR design (lcr_analysis, the lobe_cam_reducer rigidity element, …).
+#pragma once
+
+#include "model/lcr/reducer.h"
+#include "studies/input.h"
+
+namespace camopt::studies {
+
+/// Reads {"eccentricity_mm", "input": {...}, "output": {...}}; each side has lobes, rollers,
+/// turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm. Checks the design
+/// (lobes < rollers, rollers that overlap, …) and throws StudyError naming the JSON path.
+lcr::Reducer<double> ParseReducer(const Node& reducer);
+
+/// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
+/// must be > 0 and <= the roller diameter.
+double ParseCutterDiameter(const Node& side, double roller_diameter);
+
+/// {"youngs_modulus_GPa", "poisson_ratio"}.
+lcr::Material ParseMaterial(const Node& material);
+
+}  // namespace camopt::studies
