@@ -1,0 +1,147 @@
+// Disc cam with an offset translating roller follower or an oscillating roller follower:
+// pitch curve, profile, pressure angle, instant centre Q, shift angle, radius of curvature and
+// undercut. Rzine et al., "Mechanical Error Analysis of Disc Cam Mechanisms" (NOTES.md §2),
+// eqs. (1)–(12), and eq. (28) for the shift angle λ.
+//
+// Frame and sense (the paper's): coordinates fixed on the cam, origin at the cam pivot O₂; the cam
+// angle θ is measured against the cam's rotation, so in the cam frame the follower turns
+// counter-clockwise with θ and the pitch curve C(θ) is traced counter-clockwise.
+//   Translating: follower moves along u(θ), offset e along J u(θ):
+//     C = L u(θ) + e J u(θ), L = sqrt((r_b + r_f)² − e²) + S(θ)                (eq. 5)
+//   Oscillating: pivot O₃ = f u(θ), arm l, ξ the angle at O₃ between O₃O₂ and O₃C:
+//     C = f u(θ) + l u(θ + π − ξ), ξ = acos((l² + f² − (r_b + r_f)²)/(2lf)) + S(θ)   (eq. 11)
+// Contact point A = C − r_f n, n the unit outward normal of the pitch curve (toward the roller
+// centre); the common normal passes through Q.
+#pragma once
+
+#include <cmath>
+
+#include "model/common/geometry.h"
+#include "model/common/scalar.h"
+#include "model/motion/motion_program.h"
+
+namespace camopt::disc_cam {
+
+enum class FollowerType { kTranslatingRoller, kOscillatingRoller };
+
+/// A disc cam design. Lengths in mm; the motion program's rise is in mm for a translating
+/// follower and in rad for an oscillating one; cam angles in rad.
+template <typename T>
+struct DiscCamTpl {
+  FollowerType follower = FollowerType::kTranslatingRoller;
+  T base_radius = T(0.0);     ///< r_b: base circle of the cam profile [mm]
+  T roller_radius = T(0.0);   ///< r_f [mm]
+  T offset = T(0.0);          ///< e, translating only [mm] (positive as in the paper's Fig. 1)
+  T pivot_distance = T(0.0);  ///< f = O₂O₃, oscillating only [mm]
+  T arm_length = T(0.0);      ///< l = O₃C, oscillating only [mm]
+  motion::MotionProgram<T> motion;
+};
+using DiscCam = DiscCamTpl<double>;
+
+/// The cam and follower at one cam angle.
+template <typename T>
+struct CamPoint {
+  T theta;                  ///< cam angle [rad]
+  T s, ds, d2s;             ///< follower motion S(θ) and its θ-derivatives (mm or rad per rad^k)
+  Vec2<T> pitch;            ///< roller centre C [mm]
+  Vec2<T> pitch_d1;         ///< dC/dθ [mm/rad]
+  Vec2<T> contact;          ///< contact point A on the cam profile [mm]
+  Vec2<T> normal;           ///< unit outward normal of the profile at A (from A toward C)
+  Vec2<T> follower_dir;     ///< dC/dS at fixed θ: u(θ) (translating) or l·(unit velocity) [mm/unit]
+  T q;                      ///< signed O₂Q: eq. (4) or eq. (8) [mm]; Q = q J u(θ) or −q u(θ)
+  Vec2<T> instant_centre;   ///< Q [mm]
+  T pressure_angle;         ///< φ [rad], eq. (3) or eq. (12)
+  T shift_angle;            ///< λ = ∠O₂AQ [rad], eq. (28)
+  T pitch_curvature;        ///< κ of the pitch curve [1/mm], > 0 where the cam is convex
+  T radial_dimension;       ///< |O₂A| [mm]
+};
+
+/// Initial follower coordinate on the base circle: sqrt((r_b + r_f)² − e²) (eq. 5) for a
+/// translating follower, ξ₀ = acos((l² + f² − (r_b + r_f)²)/(2lf)) (eq. 11) for an oscillating one.
+/// @pre the geometry is feasible (see GeometryIssue).
+template <typename T>
+T InitialFollowerCoordinate(const DiscCamTpl<T>& cam) {
+  using std::acos;
+  using std::sqrt;
+  const T r0 = cam.base_radius + cam.roller_radius;
+  if (cam.follower == FollowerType::kTranslatingRoller)
+    return sqrt(r0 * r0 - cam.offset * cam.offset);
+  const T l = cam.arm_length, f = cam.pivot_distance;
+  return acos((l * l + f * f - r0 * r0) / (T(2.0) * l * f));
+}
+
+/// Evaluates the cam at angle theta [rad].
+template <typename T>
+CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
+  using std::atan;
+  using std::atan2;
+  using std::sqrt;
+  CamPoint<T> p;
+  p.theta = theta;
+  const motion::Svaj<T> m = cam.motion.Evaluate(theta);
+  p.s = m.s;
+  p.ds = m.v;
+  p.d2s = m.a;
+  const Vec2<T> u = U(theta);
+  const Vec2<T> ju = Perp(u);
+  const T rf = cam.roller_radius;
+  Vec2<T> d2;  // d²C/dθ²
+  if (cam.follower == FollowerType::kTranslatingRoller) {
+    const T e = cam.offset;
+    const T L = InitialFollowerCoordinate(cam) + m.s;  // eq. (5)
+    p.q = m.v;                                          // eq. (4): q = dL/dθ
+    p.pressure_angle = atan((p.q - e) / L);             // eq. (3)
+    p.pitch = L * u + e * ju;
+    p.pitch_d1 = (p.q - e) * u + L * ju;
+    d2 = (m.a - L) * u + (T(2.0) * p.q - e) * ju;
+    // Eq. (2): A = C − r_f u(θ − φ); u(θ − φ) = (L u − (q − e) J u)/sqrt(L² + (q − e)²).
+    const T h = sqrt(L * L + (p.q - e) * (p.q - e));
+    p.normal = (L * u - (p.q - e) * ju) / h;
+    p.instant_centre = p.q * ju;
+    p.follower_dir = u;
+  } else {
+    const T f = cam.pivot_distance, l = cam.arm_length;
+    const T xi = InitialFollowerCoordinate(cam) + m.s;  // eq. (11)
+    const T w1 = T(1.0) - m.v;                          // 1 − dξ/dθ
+    const Vec2<T> w = U(theta + T(kPi) - xi);           // unit O₃ → C
+    p.pitch = f * u + l * w;
+    p.pitch_d1 = f * ju + l * w1 * Perp(w);
+    d2 = -f * u - l * w1 * w1 * w - l * m.a * Perp(w);
+    // Eq. (8): q = f ξ'/(1 − ξ'), Q = −q u(θ). Q runs to infinity where ξ' = 1, so the normal
+    // C − Q of eqs. (6)–(10) is taken in the regular form (1 − ξ')(C − Q) = (1 − ξ')C + f ξ' u,
+    // which keeps its outward sense on both sides of ξ' = 1.
+    p.q = f * m.v / w1;
+    p.instant_centre = -p.q * u;
+    const Vec2<T> nq = w1 * p.pitch + f * m.v * u;
+    p.normal = nq / nq.norm();
+    // Eq. (10): α, the angle of the normal QC from u(θ); eq. (12): φ = 90° − α − ξ.
+    const T alpha = atan2(Cross(u, p.normal), u.dot(p.normal));
+    p.pressure_angle = T(kPi / 2) - alpha - xi;
+    p.follower_dir = -l * Perp(w);  // dC/dξ
+  }
+  p.contact = p.pitch - rf * p.normal;  // eqs. (1)/(6)
+  p.radial_dimension = p.contact.norm();
+  // Eq. (28): λ = ∠O₂AQ, the angle between O₂A and the common normal (AQ lies along −n where Q is
+  // inside the pitch curve), written with atan2 so that it stays defined when Q is at infinity.
+  const Vec2<T> ar = p.contact / p.radial_dimension;
+  p.shift_angle = atan2(Cross(p.normal, ar), p.normal.dot(ar));
+  const T speed = p.pitch_d1.norm();
+  p.pitch_curvature = Cross(p.pitch_d1, d2) / (speed * speed * speed);
+  return p;
+}
+
+/// Radius of curvature of the cam profile at a point: 1/κ − r_f, positive where convex, negative
+/// where concave; ±infinite at an inflection of the pitch curve (κ = 0).
+template <typename T>
+T ProfileRadiusOfCurvature(const CamPoint<T>& p, const T& roller_radius) {
+  return T(1.0) / p.pitch_curvature - roller_radius;
+}
+
+/// Undercut: the pitch curve is convex with a radius smaller than the roller (κ r_f > 1), so the
+/// offset profile folds over itself (NOTES.md §1).
+template <typename T>
+bool IsUndercut(const CamPoint<T>& p, const T& roller_radius) {
+  return Value(p.pitch_curvature) * Value(roller_radius) > 1.0;
+}
+
+}  // namespace camopt::disc_cam

@@ -1,0 +1,136 @@
+#include "model/disc_cam/exact_motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace camopt::disc_cam {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The follower coordinate at which the roller (radius r) touches point P from outside, at cam
+// angle theta; -inf when the roller can never touch P.
+double TouchCoordinate(const DiscCam& cam, double theta, const Vec2<double>& P, double r) {
+  const Vec2<double> u = U(theta);
+  if (cam.follower == FollowerType::kTranslatingRoller) {
+    // |L u + e Ju − P| = r: (L − P·u)² + (e − P·Ju)² = r², larger root.
+    const double pv = cam.offset - P.dot(Perp(u));
+    const double disc = r * r - pv * pv;
+    if (disc < 0.0) return -std::numeric_limits<double>::infinity();
+    return P.dot(u) + std::sqrt(disc) - InitialFollowerCoordinate(cam);
+  }
+  // |O₃ + l u(θ + π − ξ) − P| = r with O₃ = f u(θ): the roller contains P for
+  // |θ + π − ξ − ψ| < acos(c/d), ψ the angle of D = P − O₃, c = (l² + d² − r²)/(2l).
+  const double l = cam.arm_length;
+  const Vec2<double> D = P - cam.pivot_distance * u;
+  const double dist = D.norm();
+  const double c = (l * l + dist * dist - r * r) / (2.0 * l);
+  if (std::abs(c) > dist) return -std::numeric_limits<double>::infinity();
+  const double psi = std::atan2(D.y(), D.x());
+  const double xi0 = InitialFollowerCoordinate(cam);
+  const double xi_nominal = xi0 + cam.motion.Evaluate(theta).s;
+  const double xi = xi_nominal + std::remainder(theta + kPi - psi + std::acos(c / dist) - xi_nominal,
+                                                2.0 * kPi);
+  return xi - xi0;
+}
+
+Vec2<double> PerturbedProfilePoint(const DiscCam& cam, const Deviations<double>& d, double t) {
+  const CamPoint<double> p = EvaluateCam(cam, t);
+  return p.contact + d.normal * p.normal + d.radial * p.contact / p.radial_dimension;
+}
+
+}  // namespace
+
+double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, double theta,
+                             double window_rad) {
+  const double r = cam.roller_radius + d.roller;
+  auto touch = [&](double t) {
+    return TouchCoordinate(cam, theta, PerturbedProfilePoint(cam, d, t), r);
+  };
+  // Coarse scan of the window, then golden-section refinement of the maximum around the best
+  // sample (the touch coordinate is smooth and has a single maximum near the contact).
+  constexpr int kScan = 12;
+  const double step = 2.0 * window_rad / kScan;
+  double best_t = theta, best = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= kScan; ++k) {
+    const double t = theta - window_rad + k * step;
+    const double v = touch(t);
+    if (v > best) best = v, best_t = t;
+  }
+  if (!std::isfinite(best)) return kNaN;
+  double a = best_t - step, b = best_t + step;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  double f1 = touch(x1), f2 = touch(x2);
+  for (int it = 0; it < 40 && b - a > 1e-11; ++it) {
+    if (f1 > f2) {
+      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = touch(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = touch(x2);
+    }
+  }
+  return std::max({best, f1, f2});
+}
+
+std::vector<MonteCarloScale> MonteCarloLinearisation(const DiscCam& cam,
+                                                     const Deviations<double>& tol,
+                                                     const MonteCarloOptions& options) {
+  const int n = options.angle_steps;
+  std::vector<CamPoint<double>> points(n);
+  std::vector<double> thetas(n);
+  for (int i = 0; i < n; ++i) {
+    thetas[i] = 2.0 * kPi * i / n;
+    points[i] = EvaluateCam(cam, thetas[i]);
+  }
+  std::vector<MonteCarloScale> out;
+  for (double scale : options.scales) {
+    std::mt19937_64 rng(options.seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    MonteCarloScale r;
+    r.scale = scale;
+    r.bound_exceed = -std::numeric_limits<double>::infinity();
+    Deviations<double> bound{scale * tol.normal, scale * tol.radial, scale * tol.roller};
+    // The angle where the linear RMS bound is largest: sample statistics are taken there.
+    int i_rms = 0;
+    double rms_max = -1.0;
+    for (int i = 0; i < n; ++i) {
+      const double v = FollowerError(cam, points[i], bound).rms;
+      if (v > rms_max) rms_max = v, i_rms = i;
+    }
+    double sum_sq = 0.0;
+    int within = 0;
+    for (int s = 0; s < options.samples; ++s) {
+      const Deviations<double> d{bound.normal * unit(rng), bound.radial * unit(rng),
+                                 bound.roller * unit(rng)};
+      bool ok = true;
+      for (int i = 0; i < n; ++i) {
+        const double exact = ExactFollowerPosition(cam, d, thetas[i]) - points[i].s;
+        const double linear = [&] {
+          const MechanicalError<double> e = FollowerError(cam, points[i], d);
+          return e.normal + e.radial + e.roller;
+        }();
+        const double worst = FollowerError(cam, points[i], bound).worst_case;
+        r.max_linear = std::max(r.max_linear, std::abs(linear));
+        r.max_exact = std::max(r.max_exact, std::abs(exact));
+        const double diff = std::abs(exact - linear);
+        if (diff > r.max_difference) r.max_difference = diff, r.at_cam_angle_rad = thetas[i];
+        r.bound_exceed = std::max(r.bound_exceed, std::abs(exact) - worst);
+        if (std::abs(exact) > worst) ok = false;
+        if (i == i_rms) sum_sq += exact * exact;
+      }
+      within += ok;
+    }
+    r.relative_difference = r.max_linear > 0.0 ? r.max_difference / r.max_linear : 0.0;
+    r.within_bound_fraction = options.samples > 0 ? double(within) / options.samples : 0.0;
+    r.sample_rms = options.samples > 0 ? std::sqrt(sum_sq / options.samples) : 0.0;
+    // A uniform deviation on ±b has variance b²/3: the linear RMS of eq. (32) over sqrt(3).
+    r.predicted_rms = rms_max / std::sqrt(3.0);
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace camopt::disc_cam

@@ -1,0 +1,345 @@
+// Torsional stiffness of the lobe cam reducer at its output, from the contact compliance of its
+// loaded rollers (derivation: docs/lcr_stiffness.md). Input shaft held, torque T on the output.
+//
+// With the eccentric rigid, the cam can only turn about its centre O_c (δφ_c) and the output
+// turret about O (δθ_o). Roller k's contact closes by δ_k = ψ a_k − c (c: a normal clearance,
+// 0 for the conjugate profile), with one generalised rotation per turret:
+//   fixed turret  ψ_A = −(m_A/n_A) δφ_c,        output turret  ψ_B = δθ_o − (m_B/n_B) δφ_c.
+// Equilibrium decouples the two turrets: g_B(ψ_B) = T, g_A(ψ_A) = −ρ T, with
+//   g(ψ) = Σ_k F(ψ a_k − c) a_k,   ρ = m_B n_A / (n_B m_A),
+// and the output turns by δθ_o = ψ_B − ρ ψ_A: the two turrets' contact sets in series, the fixed
+// one carried through the cam like a gear stage (1/K = 1/g_B' + ρ²/g_A').
+//
+// Contact law: Palmgren's roller approach δ = 3.84·10⁻⁵ Q^0.9 / L^0.8 (mm, N; steel), written
+// dimensionally as δ = K_P (Q/E*)^0.9 L^−0.8 with K_P fixed by Palmgren's steel (E = 207 GPa,
+// ν = 0.3), so that another E* scales it (Palmgren, Ball and Roller Bearing Engineering, 1959;
+// Harris & Kotzalas, Rolling Bearing Analysis, §6). Optionally each roller's needle bearing adds a
+// linear radial spring k_b in series with its contact. The eccentric bearing, bodies and shafts are
+// not included (see the docs).
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ceres/jet.h>
+
+#include "model/common/scalar.h"
+#include "model/lcr/contact.h"
+#include "model/lcr/reducer.h"
+
+namespace camopt::rigidity {
+
+/// Palmgren's constant 3.84e-5 mm·N^−0.9·mm^0.8 at its steel, E* = 207000/(2(1 − 0.3²)) MPa.
+inline double PalmgrenConstant() {
+  const double e_star_ref = 207000.0 / (2.0 * (1.0 - 0.09));
+  return 3.84e-5 * std::pow(e_star_ref, 0.9);
+}
+
+/// Normal approach [mm] of a roller line contact of length L [mm] under force Q [N].
+template <typename T>
+T PalmgrenApproach(const T& force, const T& length, const T& e_star) {
+  using std::pow;
+  return T(PalmgrenConstant()) * pow(force / e_star, T(0.9)) / pow(length, T(0.8));
+}
+
+/// Force [N] at approach δ [mm] (inverse of PalmgrenApproach); 0 for δ <= 0 (separated).
+/// F = E* (δ L^0.8 / K_P)^(10/9): continuous at 0 with a zero derivative there.
+template <typename T>
+T PalmgrenForce(const T& approach, const T& length, const T& e_star) {
+  using std::pow;
+  const T d = PositivePart(approach);
+  if (!(Value(d) > 0)) return T(0.0);
+  return e_star * pow(d * pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
+}
+
+/// One turret as a torsional spring in its generalised rotation ψ [rad].
+template <typename T>
+struct TurretSpring {
+  std::vector<T> arms;  ///< a_k [mm], signed
+  T length;             ///< line-contact length [mm]
+  T e_star;             ///< composite modulus [MPa]
+  T clearance;          ///< normal clearance c [mm] at every roller
+  T bearing = T(0.0);   ///< needle-bearing radial stiffness k_b [N/mm] in series; 0 = rigid
+
+  /// Force of one roller [N] at a closure δ [mm] of contact and bearing in series:
+  /// δ = δ_P + F(δ_P)/k_b with F(δ_P) the contact law. The residual is convex and increasing in the
+  /// contact approach δ_P, so Newton from δ_P = δ (residual >= 0) descends monotonically to the
+  /// root; then one Newton step in T gives exact first derivatives (implicit function theorem).
+  T RollerForce(const T& closure) const {
+    if (!(Value(closure) > 0)) return T(0.0);
+    if (Value(bearing) == 0.0) return PalmgrenForce(closure, length, e_star);
+    const double dv = Value(closure), kb = Value(bearing), l = Value(length), es = Value(e_star);
+    double dc = dv;
+    for (int it = 0; it < 100; ++it) {
+      const double f = PalmgrenForce(dc, l, es);
+      const double h = dc + f / kb - dv;
+      const double next = dc - h / (1.0 + (10.0 / 9.0) * f / (dc * kb));
+      const bool done = std::abs(next - dc) <= 1e-15 * dv;
+      dc = next;
+      if (done) break;
+    }
+    const T dct(dc);
+    const T f = PalmgrenForce(dct, length, e_star);
+    const T dcn = dct - (dct + f / bearing - closure) / (T(1.0) + T(10.0 / 9.0) * f / (dct * bearing));
+    return PalmgrenForce(dcn, length, e_star);
+  }
+  /// dF/dδ of one roller: the contact's (10/9) F/δ_P in series with k_b.
+  T RollerRigidity(const T& closure) const {
+    if (!(Value(closure) > 0)) return T(0.0);
+    const T f = RollerForce(closure);
+    const T kc = T(10.0 / 9.0) * f / PalmgrenApproach(f, length, e_star);
+    if (Value(bearing) == 0.0) return kc;
+    return T(1.0) / (T(1.0) / kc + T(1.0) / bearing);
+  }
+
+  /// g(ψ) = Σ F(ψ a_k − c) a_k [N·mm].
+  T Torque(const T& psi) const {
+    T s(0.0);
+    for (const T& a : arms) s += RollerForce(psi * a - clearance) * a;
+    return s;
+  }
+  /// g'(ψ) = Σ F'(δ_k) a_k² [N·mm/rad].
+  T Rigidity(const T& psi) const {
+    T s(0.0);
+    for (const T& a : arms) s += RollerRigidity(psi * a - clearance) * a * a;
+    return s;
+  }
+  /// Largest force among the rollers at ψ [N].
+  T MaxForce(const T& psi) const {
+    std::vector<T> f;
+    for (const T& a : arms) f.push_back(RollerForce(psi * a - clearance));
+    return HardMax(f);
+  }
+
+  /// ψ with g(ψ) = torque. Without clearance the law is a power of ψ on each side of 0, so
+  /// ψ = sign(T) (|T| / (E* (L^0.8/K_P)^(10/9) Σ_{sign a = sign T} |a|^(19/9)))^0.9 exactly.
+  /// With clearance or a bearing spring: bracketed bisection in double, then one Newton step in T, which carries
+  /// the exact first derivatives (implicit function theorem). T = 0 returns 0 (the middle of the
+  /// dead band). @throws std::domain_error when no roller can carry a torque of this sign.
+  T Rotation(const T& torque) const {
+    using std::abs;
+    using std::pow;
+    const double tv = Value(torque);
+    if (tv == 0.0) return T(0.0);
+    const double sign = tv > 0 ? 1.0 : -1.0;
+    double amax = 0.0;
+    for (const T& a : arms) amax = std::max(amax, sign * Value(a));
+    if (!(amax > 0)) throw std::domain_error("no roller of the turret can carry this torque");
+    if (Value(clearance) == 0.0 && Value(bearing) == 0.0) {
+      T sum(0.0);
+      for (const T& a : arms)
+        if (sign * Value(a) > 0) sum += pow(T(sign) * a, T(19.0 / 9.0));
+      const T c = e_star * pow(pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
+      return T(sign) * pow(abs(torque) / (c * sum), T(0.9));
+    }
+    // g is monotone increasing; bracket on the loaded side beyond the dead band c/amax, then
+    // Newton safeguarded by bisection.
+    const TurretSpring<double> s = ToDouble();
+    const double target = std::abs(tv);
+    double lo = Value(clearance) / amax, hi = 2.0 * lo + 1e-6;
+    auto g = [&](double psi) { return sign * s.Torque(sign * psi); };
+    for (int it = 0; it < 2000 && g(hi) < target; ++it) {
+      lo = hi;
+      hi *= 2.0;
+    }
+    double psi = hi;
+    for (int it = 0; it < 200; ++it) {
+      const double r = g(psi) - target;
+      (r > 0 ? hi : lo) = psi;
+      const double slope = s.Rigidity(sign * psi);
+      double next = slope > 0 ? psi - r / slope : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      const bool done = std::abs(next - psi) <= 1e-14 * psi || hi - lo <= 1e-15 * hi;
+      psi = next;
+      if (done) break;
+    }
+    const T psi0(sign * psi);
+    return psi0 - (Torque(psi0) - torque) / Rigidity(psi0);
+  }
+
+  TurretSpring<double> ToDouble() const {
+    TurretSpring<double> s;
+    for (const T& a : arms) s.arms.push_back(Value(a));
+    s.length = Value(length);
+    s.e_star = Value(e_star);
+    s.clearance = Value(clearance);
+    s.bearing = Value(bearing);
+    return s;
+  }
+};
+
+/// ρ = m_B n_A / (n_B m_A): the fixed turret reacts −ρ T when the output carries T.
+template <typename T>
+double FixedTurretTorqueRatio(const lcr::Reducer<T>& r) {
+  return double(r.output.lobes) * r.input.rollers / (double(r.output.rollers) * r.input.lobes);
+}
+
+template <typename T>
+struct ReducerDeflection {
+  T output_rotation;  ///< δθ_o [rad], input held
+  T first_contact;    ///< δθ_o where the first rollers touch in the sense of T (0 without clearance)
+  T elastic_rotation; ///< output_rotation − first_contact: the part the contacts' compliance makes
+  T psi_input, psi_output;
+  T tangent_rigidity;  ///< dT/dδθ_o [N·mm/rad]
+  T max_force_input, max_force_output;  ///< [N]
+};
+
+/// The reducer at input angle θ [rad] under output torque T [N·mm] (signed: the forward sense
+/// of the paper's load is T = LoadedArmSign(r, Side::kOutput)·|T|), input shaft held.
+template <typename T>
+ReducerDeflection<T> DeflectAtAngle(const lcr::Reducer<T>& r, const lcr::Material& material,
+                                    const T& theta, const T& torque, const T& clearance,
+                                    const T& bearing_stiffness = T(0.0)) {
+  const T e_star(material.composite_modulus_MPa());
+  TurretSpring<T> a{{}, r.input.contact_length(), e_star, clearance, bearing_stiffness};
+  TurretSpring<T> b{{}, r.output.contact_length(), e_star, clearance, bearing_stiffness};
+  for (const auto& c : lcr::RollerContacts(r, lcr::Side::kInput, theta)) a.arms.push_back(c.arm);
+  for (const auto& c : lcr::RollerContacts(r, lcr::Side::kOutput, theta)) b.arms.push_back(c.arm);
+  const double rho = FixedTurretTorqueRatio(r);
+  ReducerDeflection<T> d;
+  d.psi_output = b.Rotation(torque);
+  d.psi_input = a.Rotation(T(-rho) * torque);
+  d.output_rotation = d.psi_output - T(rho) * d.psi_input;
+  // First contact in the sense of T: ψ_B = c/max(sign·a_B), ψ_A = −c/max(−sign·a_A).
+  const double sign = Value(torque) >= 0 ? 1.0 : -1.0;
+  std::vector<T> lead_a, lead_b;
+  for (const T& x : a.arms) lead_a.push_back(T(-sign) * x);
+  for (const T& x : b.arms) lead_b.push_back(T(sign) * x);
+  d.first_contact = T(sign) * (clearance / HardMax(lead_b) + T(rho) * clearance / HardMax(lead_a));
+  d.elastic_rotation = d.output_rotation - d.first_contact;
+  d.tangent_rigidity =
+      T(1.0) / (T(1.0) / b.Rigidity(d.psi_output) + T(rho * rho) / a.Rigidity(d.psi_input));
+  d.max_force_input = a.MaxForce(d.psi_input);
+  d.max_force_output = b.MaxForce(d.psi_output);
+  return d;
+}
+
+/// Over one input revolution (θ = 2π i/steps): the output deflection per angle, and summaries.
+/// Secant rigidities are T over the elastic rotation (measured from first contact), so that a
+/// clearance shows as backlash (DeadBand) and not as compliance.
+struct ReducerStiffnessCycle {
+  std::vector<double> theta_rad, rotation_rad, elastic_rotation_rad;
+  std::vector<double> secant_Nmm_per_rad, tangent_Nmm_per_rad;
+  std::vector<double> max_force_input_N, max_force_output_N;
+  double mean_secant_Nmm_per_rad = 0;  ///< T / mean elastic δθ_o: the stiffness of the mean deflection
+  double min_secant_Nmm_per_rad = 0, max_secant_Nmm_per_rad = 0;
+  double mean_tangent_Nmm_per_rad = 0, min_tangent_Nmm_per_rad = 0, max_tangent_Nmm_per_rad = 0;
+  double ripple = 0;  ///< (max − min)/mean of the secant stiffness
+};
+
+inline ReducerStiffnessCycle StiffnessCycle(const lcr::Reducer<double>& r,
+                                            const lcr::Material& material, double torque_Nmm,
+                                            double clearance_mm, int steps,
+                                            double bearing_N_per_mm = 0.0) {
+  ReducerStiffnessCycle c;
+  double sum_rot = 0, sum_tan = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2 * kPi * i / steps;
+    const auto d = DeflectAtAngle<double>(r, material, theta, torque_Nmm, clearance_mm, bearing_N_per_mm);
+    c.theta_rad.push_back(theta);
+    c.rotation_rad.push_back(d.output_rotation);
+    c.elastic_rotation_rad.push_back(d.elastic_rotation);
+    c.secant_Nmm_per_rad.push_back(torque_Nmm / d.elastic_rotation);
+    c.tangent_Nmm_per_rad.push_back(d.tangent_rigidity);
+    c.max_force_input_N.push_back(d.max_force_input);
+    c.max_force_output_N.push_back(d.max_force_output);
+    sum_rot += d.elastic_rotation;
+    sum_tan += d.tangent_rigidity;
+  }
+  c.mean_secant_Nmm_per_rad = torque_Nmm / (sum_rot / steps);
+  c.min_secant_Nmm_per_rad = HardMin(c.secant_Nmm_per_rad);
+  c.max_secant_Nmm_per_rad = HardMax(c.secant_Nmm_per_rad);
+  c.mean_tangent_Nmm_per_rad = sum_tan / steps;
+  c.min_tangent_Nmm_per_rad = HardMin(c.tangent_Nmm_per_rad);
+  c.max_tangent_Nmm_per_rad = HardMax(c.tangent_Nmm_per_rad);
+  c.ripple = (c.max_secant_Nmm_per_rad - c.min_secant_Nmm_per_rad) / c.mean_secant_Nmm_per_rad;
+  return c;
+}
+
+/// Lost-motion curve: mean output rotation over the revolution for each torque in `torques`
+/// (signed, N·mm), input held. Returns rotations in rad.
+inline std::vector<double> LostMotionCurve(const lcr::Reducer<double>& r,
+                                           const lcr::Material& material,
+                                           const std::vector<double>& torques,
+                                           double clearance_mm, int steps,
+                                           double bearing_N_per_mm = 0.0) {
+  std::vector<double> out;
+  for (double t : torques) {
+    double s = 0;
+    for (int i = 0; i < steps; ++i)
+      s += DeflectAtAngle<double>(r, material, 2 * kPi * i / steps, t, clearance_mm, bearing_N_per_mm)
+               .output_rotation;
+    out.push_back(s / steps);
+  }
+  return out;
+}
+
+/// The dead band of the mean lost-motion curve: the rotation between the first contact in one
+/// sense and in the other, Σ over turrets of c/max(a) in each sense, averaged over the revolution.
+/// 0 without clearance.
+inline double DeadBand(const lcr::Reducer<double>& r, double clearance_mm, int steps) {
+  if (clearance_mm == 0.0) return 0.0;
+  const double rho = FixedTurretTorqueRatio(r);
+  double s = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2 * kPi * i / steps;
+    for (const auto& [side, weight] : {std::pair{lcr::Side::kOutput, 1.0}, std::pair{lcr::Side::kInput, rho}}) {
+      double pos = 0, neg = 0;
+      for (const auto& c : lcr::RollerContacts(r, side, theta)) {
+        pos = std::max(pos, c.arm);
+        neg = std::max(neg, -c.arm);
+      }
+      s += weight * (clearance_mm / pos + clearance_mm / neg);
+    }
+  }
+  return s / steps;
+}
+
+}  // namespace camopt::rigidity
+
+namespace camopt::rigidity {
+
+/// ∂ln K/∂ln p of the reducer's mean secant stiffness K over `steps` input angles (the same
+/// definition as StiffnessCycle) with respect to its free dimensions, by ceres::Jet: the
+/// eccentricity, both turret radii, both line-contact lengths (roller length and cam thickness
+/// scaled together) and, when present, the needle bearings' stiffness. The roller diameter does not
+/// enter: the arms do not depend on it (every normal passes through the pitch point) and Palmgren's
+/// law is independent of the radii.
+inline std::vector<std::pair<std::string, double>> ReducerStiffnessElasticities(
+    const lcr::Reducer<double>& r, const lcr::Material& material, double torque_Nmm,
+    double clearance_mm, double bearing_N_per_mm, int steps) {
+  using J = ceres::Jet<double, 6>;
+  auto seeded = [](double v, int k) {
+    J x(v);
+    x.v[k] = v;  // d/dλ of v·λ at λ = 1: derivatives come out per unit of ln p
+    return x;
+  };
+  lcr::Reducer<J> rj = r.cast<J>();
+  rj.eccentricity = seeded(r.eccentricity, 0);
+  rj.input.turret_radius = seeded(r.input.turret_radius, 1);
+  rj.output.turret_radius = seeded(r.output.turret_radius, 2);
+  rj.input.roller_length = seeded(r.input.roller_length, 3);
+  rj.input.cam_thickness = seeded(r.input.cam_thickness, 3);
+  rj.output.roller_length = seeded(r.output.roller_length, 4);
+  rj.output.cam_thickness = seeded(r.output.cam_thickness, 4);
+  const J bearing = bearing_N_per_mm > 0 ? seeded(bearing_N_per_mm, 5) : J(0.0);
+  J sum(0.0);
+  for (int i = 0; i < steps; ++i)
+    sum += DeflectAtAngle<J>(rj, material, J(2 * kPi * i / steps), J(torque_Nmm), J(clearance_mm), bearing)
+               .elastic_rotation;
+  // K = T / mean rotation, so ∂ln K = −∂ln(mean rotation).
+  std::vector<std::pair<std::string, double>> out = {
+      {"eccentricity_mm", -sum.v[0] / sum.a},
+      {"input.turret_radius_mm", -sum.v[1] / sum.a},
+      {"output.turret_radius_mm", -sum.v[2] / sum.a},
+      {"input.contact_length_mm", -sum.v[3] / sum.a},
+      {"output.contact_length_mm", -sum.v[4] / sum.a},
+  };
+  if (bearing_N_per_mm > 0) out.push_back({"needle_bearing_radial_stiffness_N_per_mm", -sum.v[5] / sum.a});
+  return out;
+}
+
+}  // namespace camopt::rigidity

@@ -1,0 +1,471 @@
+// Study kind "disc_cam": a disc cam with an offset translating or an oscillating roller follower
+// (Rzine et al., NOTES.md §2). Profile, pressure and shift angles, curvature and undercut over a
+// cam revolution; the mechanical error from the tolerances (worst case and RMS, eqs. 31–32); a
+// Monte-Carlo check of the linearised error against the exact follower motion.
+// Outputs: result.json, series.csv, SVAJ / angle / error plots (SVG), profile.svg, profile.dxf.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "model/disc_cam/disc_cam.h"
+#include "model/disc_cam/exact_motion.h"
+#include "model/disc_cam/mechanical_error.h"
+#include "model/motion/motion_program.h"
+#include "studies/study.h"
+#include "studies/writers.h"
+
+namespace camopt::studies {
+namespace {
+
+using disc_cam::CamPoint;
+using disc_cam::DiscCam;
+using disc_cam::FollowerType;
+using motion::MotionLaw;
+
+constexpr double kDeg = kPi / 180.0;
+
+struct McRequest {
+  bool enabled = true;
+  disc_cam::MonteCarloOptions options;
+};
+
+struct DiscCamStudy {
+  std::string name;
+  DiscCam cam;
+  disc_cam::Deviations<double> tolerances;  // mm
+  int angle_steps = 3600;
+  McRequest mc;
+};
+
+// Rejects misspelt fields: a typo in a tolerance would otherwise silently read as zero.
+void CheckKnownFields(const Node& n, const std::set<std::string>& known) {
+  if (!n.json().is_object()) n.Fail("an object");
+  for (auto it = n.json().begin(); it != n.json().end(); ++it) {
+    if (known.count(it.key())) continue;
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    n[it.key()].FailWith("unknown field (known: " + list + ")");
+  }
+}
+
+std::string Format(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+DiscCamStudy Parse(const Node& root) {
+  DiscCamStudy s;
+  s.name = root.StringOr("name", "disc cam");
+  DiscCam& cam = s.cam;
+
+  const Node follower = root["follower"];
+  const std::string type = follower["type"].String();
+  if (type == "translating_roller") {
+    CheckKnownFields(follower, {"type", "offset_mm", "roller_radius_mm"});
+    cam.follower = FollowerType::kTranslatingRoller;
+    cam.offset = follower.NumberOr("offset_mm", 0.0);
+  } else if (type == "oscillating_roller") {
+    CheckKnownFields(follower, {"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
+    cam.follower = FollowerType::kOscillatingRoller;
+    cam.pivot_distance = follower["pivot_distance_mm"].Positive();
+    cam.arm_length = follower["arm_length_mm"].Positive();
+  } else {
+    follower["type"].Fail("\"translating_roller\" or \"oscillating_roller\"");
+  }
+  cam.roller_radius = follower["roller_radius_mm"].Positive();
+  cam.base_radius = root["base_circle_radius_mm"].Positive();
+  const double r0 = cam.base_radius + cam.roller_radius;
+  if (cam.follower == FollowerType::kTranslatingRoller && !(std::abs(cam.offset) < r0))
+    follower["offset_mm"].FailWith("the offset " + Format(cam.offset) +
+                                   " mm must be smaller than base circle + roller radius (" +
+                                   Format(r0) + " mm)");
+  if (cam.follower == FollowerType::kOscillatingRoller) {
+    const double f = cam.pivot_distance, l = cam.arm_length;
+    if (!(r0 > std::abs(f - l) && r0 < f + l))
+      follower["arm_length_mm"].FailWith(
+          "the arm cannot reach the base circle: need |pivot distance − arm length| < base circle "
+          "+ roller radius < pivot distance + arm length (" + Format(std::abs(f - l)) + " < " +
+          Format(r0) + " < " + Format(f + l) + ")");
+  }
+
+  // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
+  const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
+  const std::string rise_key = oscillating ? "rise_deg" : "rise_mm";
+  const std::string wrong_key = oscillating ? "rise_mm" : "rise_deg";
+  const Node motion_node = root["motion"];
+  std::vector<motion::MotionSegment<double>> segments;
+  std::string laws;
+  for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
+  for (const Node& seg : motion_node.Elements()) {
+    CheckKnownFields(seg, {"law", rise_key, wrong_key, "cam_angle_deg"});
+    if (seg.Has(wrong_key))
+      seg[wrong_key].FailWith(std::string("a ") +
+                              (oscillating ? "oscillating follower's rise is an angle: use rise_deg"
+                                           : "translating follower's rise is a length: use rise_mm"));
+    const auto law = motion::LawFromName(seg["law"].String());
+    if (!law) seg["law"].Fail("a motion law (" + laws + ")");
+    motion::MotionSegment<double> m;
+    m.law = *law;
+    m.duration = seg["cam_angle_deg"].Positive() * kDeg;
+    if (*law == MotionLaw::kDwell) {
+      if (seg.Has(rise_key) && seg[rise_key].Number() != 0.0)
+        seg[rise_key].FailWith("a dwell has no rise");
+    } else {
+      m.rise = seg[rise_key].Number();
+      if (m.rise == 0.0) seg[rise_key].Fail("a non-zero rise (use a dwell for no motion)");
+      if (oscillating) m.rise *= kDeg;
+    }
+    segments.push_back(m);
+  }
+  cam.motion = motion::MotionProgram<double>(segments);
+  if (const auto issue = motion::CheckProgram(cam.motion, 2 * kPi, /*must_return=*/true, 1e-6)) {
+    if (issue->segment < 0 && issue->message.find("does not return") != std::string::npos)
+      motion_node.FailWith("the follower does not return: rises sum to " +
+                           Format(cam.motion.NetRise() / (oscillating ? kDeg : 1.0)) +
+                           (oscillating ? " deg" : " mm") + ", expected 0");
+    if (issue->segment < 0) motion_node.FailWith(issue->message);
+    const std::string field = issue->field == "rise" ? rise_key : issue->field;
+    motion_node[issue->segment][field].FailWith(issue->message);
+  }
+
+  if (root.Has("tolerances")) {
+    const Node t = root["tolerances"];
+    CheckKnownFields(t, {"profile_radial_um", "roller_radius_um", "profile_normal_um"});
+    s.tolerances.radial = t.NonNegativeOr("profile_radial_um", 0.0) * 1e-3;
+    s.tolerances.roller = t.NonNegativeOr("roller_radius_um", 0.0) * 1e-3;
+    s.tolerances.normal = t.NonNegativeOr("profile_normal_um", 0.0) * 1e-3;
+  }
+  if (root.Has("analysis")) {
+    const Node a = root["analysis"];
+    CheckKnownFields(a, {"angle_steps", "monte_carlo"});
+    s.angle_steps = a.IntegerOr("angle_steps", 36, 3600);
+    if (s.angle_steps > 1000000) a["angle_steps"].Fail("a whole number <= 1000000");
+    if (a.Has("monte_carlo")) {
+      const Node m = a["monte_carlo"];
+      if (m.json().is_boolean()) {
+        s.mc.enabled = m.Bool();
+      } else {
+        CheckKnownFields(m, {"samples", "angle_steps", "seed", "scales"});
+        s.mc.options.samples = m.IntegerOr("samples", 1, s.mc.options.samples);
+        s.mc.options.angle_steps = m.IntegerOr("angle_steps", 36, s.mc.options.angle_steps);
+        s.mc.options.seed = static_cast<uint64_t>(m.IntegerOr("seed", 0, 1));
+        if (m.Has("scales")) {
+          s.mc.options.scales.clear();
+          for (const Node& k : m["scales"].Elements()) s.mc.options.scales.push_back(k.Positive());
+          if (s.mc.options.scales.empty()) m["scales"].Fail("a non-empty array of numbers > 0");
+        }
+        if (double(s.mc.options.samples) * s.mc.options.angle_steps * s.mc.options.scales.size() >
+            1e8)
+          m.FailWith("samples × angle_steps × scales must stay below 1e8");
+      }
+    }
+  }
+  if (s.tolerances.radial == 0 && s.tolerances.roller == 0 && s.tolerances.normal == 0)
+    s.mc.enabled = false;
+  return s;
+}
+
+// Feasibility over the cycle: the follower stays outside the base circle (S ≥ 0), an oscillating
+// arm stays within (0°, 180°), and the pressure angle stays below 89° (the follower jams).
+void CheckFeasible(const DiscCamStudy& s, const std::vector<CamPoint<double>>& pts,
+                   const Node& root) {
+  const double xi0 = disc_cam::InitialFollowerCoordinate(s.cam);
+  const bool osc = s.cam.follower == FollowerType::kOscillatingRoller;
+  for (const auto& p : pts) {
+    if (p.s < -1e-9 * (osc ? 1.0 : s.cam.base_radius))
+      root["motion"].FailWith("the follower goes inside the base circle at cam angle " +
+                              Format(p.theta / kDeg) + " deg (S = " +
+                              Format(osc ? p.s / kDeg : p.s) + (osc ? " deg)" : " mm)"));
+    if (osc && !(xi0 + p.s > 0.0 && xi0 + p.s < kPi))
+      root["motion"].FailWith("the follower arm leaves (0, 180) deg from the cam centre line at "
+                              "cam angle " + Format(p.theta / kDeg) + " deg");
+    if (!(std::abs(p.pressure_angle) < 89.0 * kDeg) || !std::isfinite(p.pressure_angle))
+      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
+                              Format(p.pressure_angle / kDeg) + " deg at cam angle " +
+                              Format(p.theta / kDeg) + " deg (the follower would jam)");
+  }
+}
+
+// Cam-angle intervals [deg] where flag is set, on a uniform grid of n points over 360°.
+nlohmann::json Intervals(const std::vector<bool>& flag) {
+  nlohmann::json out = nlohmann::json::array();
+  const size_t n = flag.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (!flag[i] || (i > 0 && flag[i - 1])) continue;
+    size_t j = i;
+    while (j + 1 < n && flag[j + 1]) ++j;
+    out.push_back({360.0 * i / n, 360.0 * j / n});
+  }
+  return out;
+}
+
+void Run(const Node& root, const RunContext& ctx, Outputs& out) {
+  const DiscCamStudy s = Parse(root);
+  const DiscCam& cam = s.cam;
+  const bool osc = cam.follower == FollowerType::kOscillatingRoller;
+  // Follower errors in µm at the roller centre: ΔS [mm] for a translating follower, l·Δξ for an
+  // oscillating one (Δξ [rad] is reported separately in arc seconds).
+  const double to_um = osc ? cam.arm_length * 1e3 : 1e3;
+  const double to_arcsec = 180.0 / kPi * 3600.0;
+  const int n = s.angle_steps;
+
+  std::vector<CamPoint<double>> pts(n);
+  std::vector<disc_cam::MechanicalError<double>> err(n);
+  std::vector<double> jerk(n);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * kPi * i / n;
+    pts[i] = disc_cam::EvaluateCam(cam, t);
+    jerk[i] = cam.motion.Evaluate(t).j;
+    err[i] = disc_cam::FollowerError(cam, pts[i], s.tolerances);
+  }
+  CheckFeasible(s, pts, root);
+
+  auto arg_max = [&](auto f) {
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (f(i) > f(best)) best = i;
+    return best;
+  };
+  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
+  auto angle_deg = [&](int i) { return 360.0 * i / n; };
+
+  nlohmann::json r;
+  r["study"] = "disc_cam";
+  r["name"] = s.name;
+  r["follower"] = osc ? "oscillating_roller" : "translating_roller";
+  r["angle_steps"] = n;
+  const int i_rmax = arg_max([&](int i) { return pts[i].radial_dimension; });
+  const int i_rmin = arg_min([&](int i) { return pts[i].radial_dimension; });
+  r["max_radial_dimension_mm"] = pts[i_rmax].radial_dimension;
+  r["max_radial_dimension_at_cam_angle_deg"] = angle_deg(i_rmax);
+  r["min_radial_dimension_mm"] = pts[i_rmin].radial_dimension;
+  const int i_pmax = arg_max([&](int i) { return pts[i].pressure_angle; });
+  const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
+  r["pressure_angle_deg"] = {{"min", pts[i_pmin].pressure_angle / kDeg},
+                             {"at_min_cam_angle_deg", angle_deg(i_pmin)},
+                             {"max", pts[i_pmax].pressure_angle / kDeg},
+                             {"at_max_cam_angle_deg", angle_deg(i_pmax)}};
+  const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
+  const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
+  r["shift_angle_deg"] = {{"min", pts[i_lmin].shift_angle / kDeg},
+                          {"max", pts[i_lmax].shift_angle / kDeg}};
+  auto ratio = [&](int i) { return std::cos(pts[i].shift_angle) / std::cos(pts[i].pressure_angle); };
+  r["cos_shift_over_cos_pressure"] = {{"min", ratio(arg_min(ratio))}, {"max", ratio(arg_max(ratio))}};
+
+  // Curvature: convex radius 1/κ − r_f where κ > 0, concave radius where κ < 0; undercut where
+  // κ r_f > 1 (NOTES.md §1).
+  std::vector<bool> undercut(n);
+  std::optional<double> min_convex, min_concave;
+  std::optional<double> min_convex_at, min_concave_at;
+  for (int i = 0; i < n; ++i) {
+    const double k = pts[i].pitch_curvature;
+    undercut[i] = disc_cam::IsUndercut(pts[i], cam.roller_radius);
+    if (k > 0) {
+      const double rho = 1.0 / k - cam.roller_radius;
+      if (!min_convex || rho < *min_convex) min_convex = rho, min_convex_at = angle_deg(i);
+    } else if (k < 0) {
+      const double rho = 1.0 / -k + cam.roller_radius;
+      if (!min_concave || rho < *min_concave) min_concave = rho, min_concave_at = angle_deg(i);
+    }
+  }
+  const bool any_undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
+  r["min_radius_of_curvature_mm"] = min_convex ? nlohmann::json(*min_convex) : nlohmann::json();
+  r["min_radius_of_curvature_at_cam_angle_deg"] =
+      min_convex_at ? nlohmann::json(*min_convex_at) : nlohmann::json();
+  r["min_concave_radius_of_curvature_mm"] =
+      min_concave ? nlohmann::json(*min_concave) : nlohmann::json();
+  r["min_concave_radius_at_cam_angle_deg"] =
+      min_concave_at ? nlohmann::json(*min_concave_at) : nlohmann::json();
+  r["undercut"] = any_undercut;
+  r["undercut_cam_angle_deg"] = Intervals(undercut);
+
+  // Mechanical error (eqs. 16–32).
+  r["tolerances_um"] = {{"profile_radial", s.tolerances.radial * 1e3},
+                        {"roller_radius", s.tolerances.roller * 1e3},
+                        {"profile_normal", s.tolerances.normal * 1e3}};
+  const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
+  const int i_rms = arg_max([&](int i) { return err[i].rms; });
+  r["worst_case_error_um"] = {{"max", err[i_wor].worst_case * to_um},
+                              {"at_cam_angle_deg", angle_deg(i_wor)},
+                              {"min", err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um}};
+  r["rms_error_um"] = {{"max", err[i_rms].rms * to_um}, {"at_cam_angle_deg", angle_deg(i_rms)}};
+  auto component = [&](auto get) {
+    const int a = arg_max(get), b = arg_min(get);
+    return nlohmann::json{{"max", get(a) * to_um}, {"min", get(b) * to_um}};
+  };
+  r["error_components_um"] = {
+      {"radial", component([&](int i) { return err[i].radial; })},
+      {"roller", component([&](int i) { return err[i].roller; })},
+      {"normal", component([&](int i) { return err[i].normal; })}};
+  if (osc) {
+    r["worst_case_error_arcsec"] = {{"max", err[i_wor].worst_case * to_arcsec},
+                                    {"at_cam_angle_deg", angle_deg(i_wor)}};
+    r["rms_error_arcsec"] = {{"max", err[i_rms].rms * to_arcsec}};
+  }
+
+  // Motion program: continuity at the joints and peak derivatives.
+  nlohmann::json joints = nlohmann::json::array();
+  for (const auto& j : motion::CheckContinuity(cam.motion, 1e-7)) {
+    joints.push_back({{"after_segment", j.segment},
+                      {"cam_angle_deg", j.cam_angle_rad / kDeg},
+                      {"continuity", j.order < 0 ? std::string("discontinuous")
+                                                 : "C" + std::to_string(j.order)}});
+  }
+  const double unit = osc ? 1.0 / kDeg : 1.0;  // follower unit: mm or deg
+  double vmax = 0, amax = 0, jmax = 0;
+  for (int i = 0; i < n; ++i) {
+    vmax = std::max(vmax, std::abs(pts[i].ds));
+    amax = std::max(amax, std::abs(pts[i].d2s));
+    jmax = std::max(jmax, std::abs(jerk[i]));
+  }
+  const std::string fu = osc ? "deg" : "mm";
+  r["motion"] = {{"joints", joints},
+                 {"peak_velocity_" + fu + "_per_rad", vmax * unit},
+                 {"peak_acceleration_" + fu + "_per_rad2", amax * unit},
+                 {"peak_jerk_" + fu + "_per_rad3", jmax * unit}};
+
+  // Monte-Carlo check of the linearisation against the exact follower motion.
+  if (s.mc.enabled && !any_undercut) {
+    Progress progress("disc_cam monte carlo", ctx.quiet);
+    std::vector<disc_cam::MonteCarloScale> mc;
+    for (size_t k = 0; k < s.mc.options.scales.size(); ++k) {
+      progress.Update(double(k) / s.mc.options.scales.size(),
+                      "tolerance scale " + Format(s.mc.options.scales[k]));
+      disc_cam::MonteCarloOptions o = s.mc.options;
+      o.scales = {s.mc.options.scales[k]};
+      const auto one = disc_cam::MonteCarloLinearisation(cam, s.tolerances, o);
+      mc.insert(mc.end(), one.begin(), one.end());
+    }
+    progress.Update(1.0);
+    progress.Done();
+    nlohmann::json scales = nlohmann::json::array();
+    for (const auto& m : mc) {
+      scales.push_back({{"scale", m.scale},
+                        {"max_linear_um", m.max_linear * to_um},
+                        {"max_exact_um", m.max_exact * to_um},
+                        {"max_difference_um", m.max_difference * to_um},
+                        {"relative_difference", m.relative_difference},
+                        {"at_cam_angle_deg", m.at_cam_angle_rad / kDeg},
+                        {"within_worst_case_fraction", m.within_bound_fraction},
+                        {"worst_case_exceeded_by_um", std::max(0.0, m.bound_exceed) * to_um},
+                        {"sample_rms_um", m.sample_rms * to_um},
+                        {"linear_rms_uniform_um", m.predicted_rms * to_um}});
+    }
+    r["monte_carlo"] = {{"samples", s.mc.options.samples},
+                        {"angle_steps", s.mc.options.angle_steps},
+                        {"seed", s.mc.options.seed},
+                        {"distribution", "uniform within ±scale × tolerance, independent"},
+                        {"scales", scales}};
+  } else if (s.mc.enabled) {
+    r["monte_carlo"] = {{"skipped", "the profile is undercut"}};
+  }
+  out.AddJson("result.json", r);
+
+  // Series.
+  Table table;
+  std::vector<double> th(n);
+  for (int i = 0; i < n; ++i) th[i] = angle_deg(i);
+  auto col = [&](auto f) {
+    std::vector<double> c(n);
+    for (int i = 0; i < n; ++i) c[i] = f(i);
+    return c;
+  };
+  table.Add("cam_angle_deg", th);
+  table.Add("follower_" + fu, col([&](int i) { return pts[i].s * unit; }));
+  table.Add("velocity_" + fu + "_per_rad", col([&](int i) { return pts[i].ds * unit; }));
+  table.Add("acceleration_" + fu + "_per_rad2", col([&](int i) { return pts[i].d2s * unit; }));
+  table.Add("jerk_" + fu + "_per_rad3", col([&](int i) { return jerk[i] * unit; }));
+  table.Add("pressure_angle_deg", col([&](int i) { return pts[i].pressure_angle / kDeg; }));
+  table.Add("shift_angle_deg", col([&](int i) { return pts[i].shift_angle / kDeg; }));
+  table.Add("radial_dimension_mm", col([&](int i) { return pts[i].radial_dimension; }));
+  table.Add("contact_x_mm", col([&](int i) { return pts[i].contact.x(); }));
+  table.Add("contact_y_mm", col([&](int i) { return pts[i].contact.y(); }));
+  table.Add("pitch_x_mm", col([&](int i) { return pts[i].pitch.x(); }));
+  table.Add("pitch_y_mm", col([&](int i) { return pts[i].pitch.y(); }));
+  table.Add("q_mm", col([&](int i) { return pts[i].q; }));
+  table.Add("pitch_curvature_per_mm", col([&](int i) { return pts[i].pitch_curvature; }));
+  table.Add("error_radial_um", col([&](int i) { return err[i].radial * to_um; }));
+  table.Add("error_roller_um", col([&](int i) { return err[i].roller * to_um; }));
+  table.Add("error_normal_um", col([&](int i) { return err[i].normal * to_um; }));
+  table.Add("error_worst_case_um", col([&](int i) { return err[i].worst_case * to_um; }));
+  table.Add("error_rms_um", col([&](int i) { return err[i].rms * to_um; }));
+  out.Add("series.csv", ToCsv(table));
+
+  auto series = [&](const std::string& label, const std::vector<double>& y) {
+    return Series{label, th, y};
+  };
+  const char* names[4] = {"displacement", "velocity", "acceleration", "jerk"};
+  for (int k = 0; k < 4; ++k) {
+    const std::string cname = table.names[1 + k];
+    PlotOptions o;
+    o.title = s.name + ": follower " + names[k];
+    o.x_label = "cam angle [deg]";
+    o.y_label = cname;
+    out.Add(std::string("svaj_") + names[k] + ".svg",
+            SvgLinePlot({series(names[k], table.columns[1 + k])}, o));
+  }
+  {
+    PlotOptions o;
+    o.title = s.name + ": pressure angle and shift angle (paper Fig. 12a)";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "angle [deg]";
+    out.Add("angles.svg", SvgLinePlot({series("pressure angle φ", table.columns[5]),
+                                       series("shift angle λ", table.columns[6])},
+                                      o));
+  }
+  {
+    PlotOptions o;
+    o.title = s.name + ": follower error (paper Fig. 12b)";
+    o.x_label = "cam angle [deg]";
+    o.y_label = osc ? "error at the roller centre, l·Δξ [µm]" : "follower error ΔS [µm]";
+    std::vector<Series> ss = {series("ΔS_r (radial)", table.columns[14]),
+                              series("ΔS_rf (roller)", table.columns[15])};
+    if (s.tolerances.normal > 0) ss.push_back(series("ΔS_n (normal)", table.columns[16]));
+    ss.push_back(series("ΔS_wor (worst case)", table.columns[17]));
+    ss.push_back(series("ΔS_rms", table.columns[18]));
+    out.Add("error.svg", SvgLinePlot(ss, o));
+  }
+
+  // Profile drawing: cam profile, pitch curve, base circle, and the follower at θ = 0.
+  Drawing d;
+  d.title = s.name + ": cam profile";
+  Drawing::Layer profile{"profile", "black", {}, {}, true, 1.5};
+  Drawing::Layer pitch{"pitch_curve", "steelblue", {}, {}, true, 0.7};
+  Drawing::Layer base{"base_circle", "gray", {}, {}, true, 0.5};
+  Drawing::Layer follower{"follower", "firebrick", {}, {}, false, 0.7};
+  Polyline pp, pc;
+  for (int i = 0; i < n; ++i) {
+    pp.emplace_back(pts[i].contact.x(), pts[i].contact.y());
+    pc.emplace_back(pts[i].pitch.x(), pts[i].pitch.y());
+  }
+  profile.polylines.push_back(pp);
+  pitch.polylines.push_back(pc);
+  base.circles.push_back({0.0, 0.0, cam.base_radius});
+  base.circles.push_back({0.0, 0.0, 0.5});
+  follower.circles.push_back({pts[0].pitch.x(), pts[0].pitch.y(), cam.roller_radius});
+  if (osc) {
+    const Vec2<double> o3 = cam.pivot_distance * U(0.0);
+    follower.polylines.push_back({{o3.x(), o3.y()}, {pts[0].pitch.x(), pts[0].pitch.y()}});
+    follower.circles.push_back({o3.x(), o3.y(), 1.5});
+  } else {
+    const Vec2<double> c = pts[0].pitch, u = U(0.0);
+    const Vec2<double> a = c + 0.5 * cam.base_radius * u;
+    follower.polylines.push_back({{c.x(), c.y()}, {a.x(), a.y()}});
+  }
+  d.layers = {profile, pitch, base, follower};
+  out.Add("profile.svg", SvgDrawing(d));
+  Drawing dxf;
+  dxf.title = d.title;
+  dxf.layers = {profile, pitch};
+  out.Add("profile.dxf", ToDxf(dxf));
+}
+
+}  // namespace
+
+CAMOPT_REGISTER_STUDY("disc_cam", Run);
+
+}  // namespace camopt::studies

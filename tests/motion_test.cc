@@ -1,0 +1,241 @@
+// Motion-law library: boundary values, derivatives against central differences, textbook peak
+// coefficients, continuity at segment joints, and program checks.
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "model/motion/motion_law.h"
+#include "model/motion/motion_program.h"
+#include "tests/test_util.h"
+
+namespace camopt::motion {
+namespace {
+
+const MotionLaw kRiseLaws[] = {MotionLaw::kCycloidal,         MotionLaw::kSimpleHarmonic,
+                               MotionLaw::kModifiedSine,      MotionLaw::kModifiedTrapezoid,
+                               MotionLaw::kPolynomial345,     MotionLaw::kPolynomial4567};
+
+struct Peaks {
+  double cv, ca, cj;
+};
+
+Peaks SampledPeaks(MotionLaw law) {
+  Peaks p{0, 0, 0};
+  for (int k = 0; k <= 200000; ++k) {
+    const Svaj<double> n = NormalizedLaw(law, k / 200000.0);
+    p.cv = std::max(p.cv, std::abs(n.v));
+    p.ca = std::max(p.ca, std::abs(n.a));
+    p.cj = std::max(p.cj, std::abs(n.j));
+  }
+  return p;
+}
+
+TEST(MotionLaw, RisesFromZeroToOneWithZeroEndVelocity) {
+  for (MotionLaw law : kRiseLaws) {
+    const Svaj<double> a = NormalizedLaw(law, 0.0), b = NormalizedLaw(law, 1.0);
+    EXPECT_NEAR(a.s, 0.0, 1e-14) << LawName(law);
+    EXPECT_NEAR(b.s, 1.0, 1e-14) << LawName(law);
+    EXPECT_NEAR(a.v, 0.0, 1e-13) << LawName(law);
+    EXPECT_NEAR(b.v, 0.0, 1e-13) << LawName(law);
+    // Symmetric laws pass the half rise at mid-time.
+    EXPECT_NEAR(NormalizedLaw(law, 0.5).s, 0.5, 1e-14) << LawName(law);
+  }
+}
+
+TEST(MotionLaw, DerivativesMatchCentralDifferences) {
+  const double h = 1e-5;
+  for (MotionLaw law : kRiseLaws) {
+    for (double u = 0.01; u < 1.0; u += 0.0173) {
+      const Svaj<double> n = NormalizedLaw(law, u), p = NormalizedLaw(law, u + h),
+                         m = NormalizedLaw(law, u - h);
+      EXPECT_NEAR(n.v, (p.s - m.s) / (2 * h), 1e-7) << LawName(law) << " u=" << u;
+      EXPECT_NEAR(n.a, (p.v - m.v) / (2 * h), 1e-6) << LawName(law) << " u=" << u;
+      // The modified trapezoid's jerk jumps at its piece joints (u = k/8): skip those.
+      if (std::abs(u * 8 - std::round(u * 8)) > 1e-3) {
+        EXPECT_NEAR(n.j, (p.a - m.a) / (2 * h), 1e-4) << LawName(law) << " u=" << u;
+      }
+    }
+  }
+}
+
+double Poly4567PeakAcceleration() {
+  const double u = (5.0 - std::sqrt(5.0)) / 10.0;
+  return 420.0 * u * u * (1 - u) * (1 - u) * (1 - 2 * u);
+}
+
+TEST(MotionLaw, PeakCoefficientsAreTheTextbookValues) {
+  // Norton, Cam Design and Manufacturing Handbook, Table 3-2 (and closed forms where they exist).
+  const double pi = kPi;
+  struct Row {
+    MotionLaw law;
+    double cv, ca, cj;  // cj < 0: not compared (infinite or undefined at the ends)
+  };
+  const Row rows[] = {
+      {MotionLaw::kCycloidal, 2.0, 2 * pi, 4 * pi * pi},
+      {MotionLaw::kSimpleHarmonic, pi / 2, pi * pi / 2, -1},
+      {MotionLaw::kModifiedSine, 1.7596, 5.5280, 69.466},
+      {MotionLaw::kModifiedTrapezoid, 2.0, 4.8881, 61.426},
+      {MotionLaw::kPolynomial345, 1.875, 10.0 / std::sqrt(3.0), 60.0},
+      // Peak acceleration at the jerk root u* = (5 − √5)/10: 420u*²(1 − u*)²(1 − 2u*) ≈ 7.5132.
+      {MotionLaw::kPolynomial4567, 2.1875, Poly4567PeakAcceleration(), 52.5},
+  };
+  for (const Row& r : rows) {
+    const Peaks p = SampledPeaks(r.law);
+    EXPECT_NEAR(p.cv, r.cv, 1e-4) << LawName(r.law);
+    EXPECT_NEAR(p.ca, r.ca, 1e-4) << LawName(r.law);
+    if (r.cj > 0) {
+      EXPECT_NEAR(p.cj, r.cj, 2e-3) << LawName(r.law);
+    }
+  }
+  EXPECT_NEAR(SampledPeaks(MotionLaw::kModifiedSine).ca, 4 * pi * pi / (4 + pi), 1e-9);
+  EXPECT_NEAR(SampledPeaks(MotionLaw::kModifiedTrapezoid).ca, 8 * pi / (2 + pi), 1e-9);
+}
+
+TEST(MotionLaw, PiecewiseLawsAreC2InsideTheSegment) {
+  // Modified sine and modified trapezoid are built from pieces: s, v, a continuous at u = k/8.
+  for (MotionLaw law : {MotionLaw::kModifiedSine, MotionLaw::kModifiedTrapezoid}) {
+    for (int k = 1; k < 8; ++k) {
+      const double u = k / 8.0, eps = 1e-12;
+      const Svaj<double> a = NormalizedLaw(law, u - eps), b = NormalizedLaw(law, u + eps);
+      EXPECT_NEAR(a.s, b.s, 1e-11) << LawName(law) << " k=" << k;
+      EXPECT_NEAR(a.v, b.v, 1e-10) << LawName(law) << " k=" << k;
+      EXPECT_NEAR(a.a, b.a, 1e-9) << LawName(law) << " k=" << k;
+    }
+  }
+}
+
+TEST(MotionLaw, NamesRoundTrip) {
+  for (const std::string& name : LawNames()) {
+    const auto law = LawFromName(name);
+    ASSERT_TRUE(law.has_value()) << name;
+    EXPECT_EQ(LawName(*law), name);
+  }
+  EXPECT_FALSE(LawFromName("parabolic").has_value());
+}
+
+MotionProgram<double> DoubleDwell(MotionLaw law) {
+  const double d = kPi / 180;
+  return MotionProgram<double>({{law, 24.0, 120 * d},
+                                {MotionLaw::kDwell, 0.0, 50 * d},
+                                {law, -24.0, 120 * d},
+                                {MotionLaw::kDwell, 0.0, 70 * d}});
+}
+
+TEST(MotionProgram, ScalesTheLawToRiseAndDuration) {
+  const auto prog = DoubleDwell(MotionLaw::kCycloidal);
+  const double b = 120 * kPi / 180;
+  // Mid-rise: S = h/2, S' = Cv h/β with Cv = 2; mid-return likewise with negative sign.
+  const Svaj<double> mid = prog.Evaluate(60 * kPi / 180);
+  EXPECT_NEAR(mid.s, 12.0, 1e-12);
+  EXPECT_NEAR(mid.v, 2 * 24 / b, 1e-12);
+  const Svaj<double> quarter = prog.Evaluate(30 * kPi / 180);
+  EXPECT_NEAR(quarter.a, 2 * kPi * 24 / (b * b), 1e-10);  // Ca h/β² at u = 1/4
+  EXPECT_NEAR(prog.Evaluate(145 * kPi / 180).s, 24.0, 1e-12);
+  EXPECT_NEAR(prog.Evaluate(230 * kPi / 180).s, 12.0, 1e-12);
+  EXPECT_NEAR(prog.Evaluate(230 * kPi / 180).v, -2 * 24 / b, 1e-12);
+  EXPECT_NEAR(prog.Evaluate(330 * kPi / 180).s, 0.0, 1e-12);
+  // Periodic.
+  EXPECT_NEAR(prog.Evaluate(60 * kPi / 180 + 2 * kPi).s, 12.0, 1e-11);
+  EXPECT_NEAR(prog.Evaluate(60 * kPi / 180 - 4 * kPi).s, 12.0, 1e-11);
+}
+
+TEST(MotionProgram, IndexingProgramAccumulatesItsNetRise) {
+  // A globoidal turret indexes: the rise does not return, each cycle adds it.
+  const double d = kPi / 180;
+  MotionProgram<double> prog({{MotionLaw::kModifiedSine, 45 * d, 120 * d},
+                              {MotionLaw::kDwell, 0.0, 240 * d}});
+  EXPECT_NEAR(prog.Evaluate(2 * kPi + 60 * d).s, 45 * d + 22.5 * d, 1e-12);
+  EXPECT_FALSE(CheckProgram(prog, 2 * kPi, /*must_return=*/false).has_value());
+  EXPECT_TRUE(CheckProgram(prog, 2 * kPi, /*must_return=*/true).has_value());
+  for (const auto& j : CheckContinuity(prog)) EXPECT_GE(j.order, 2) << "joint " << j.segment;
+}
+
+TEST(MotionProgram, ContinuityAtJoints) {
+  // Cycloidal, modified sine/trapezoid, 3-4-5 and 4-5-6-7 against dwells: C² at every joint
+  // (4-5-6-7 even C³); simple harmonic: the acceleration jumps (C¹ only).
+  for (MotionLaw law : {MotionLaw::kCycloidal, MotionLaw::kModifiedSine,
+                        MotionLaw::kModifiedTrapezoid, MotionLaw::kPolynomial345,
+                        MotionLaw::kPolynomial4567}) {
+    const auto joints = CheckContinuity(DoubleDwell(law));
+    ASSERT_EQ(joints.size(), 4u);
+    for (const auto& j : joints) EXPECT_GE(j.order, 2) << LawName(law) << " joint " << j.segment;
+    for (const auto& j : joints) {
+      if (law == MotionLaw::kPolynomial4567) {
+        EXPECT_EQ(j.order, 3);
+      }
+      if (law == MotionLaw::kPolynomial345) {
+        EXPECT_EQ(j.order, 2);  // jerk 60 h/β³ jumps to 0
+      }
+    }
+  }
+  const auto shm = CheckContinuity(DoubleDwell(MotionLaw::kSimpleHarmonic));
+  for (const auto& j : shm) {
+    EXPECT_EQ(j.order, 1);
+    EXPECT_NEAR(j.jump_a, kPi * kPi / 2 * 24 / std::pow(120 * kPi / 180, 2), 1e-9);
+  }
+  // An indexing program (no return) wraps into the next cycle, which starts at the net rise.
+  const double d = kPi / 180;
+  MotionProgram<double> open({{MotionLaw::kCycloidal, 10.0, 180 * d},
+                              {MotionLaw::kDwell, 0.0, 180 * d}});
+  EXPECT_EQ(CheckContinuity(open).back().order, 2);  // wraps to the next (indexing) cycle
+}
+
+TEST(MotionProgram, RejectsBadPrograms) {
+  const double d = kPi / 180;
+  EXPECT_FALSE(CheckProgram(DoubleDwell(MotionLaw::kCycloidal), 2 * kPi, true).has_value());
+  {
+    MotionProgram<double> p({{MotionLaw::kCycloidal, 24.0, 120 * d},
+                             {MotionLaw::kCycloidal, -24.0, 120 * d},
+                             {MotionLaw::kDwell, 0.0, 100 * d}});
+    const auto issue = CheckProgram(p, 2 * kPi, true);
+    ASSERT_TRUE(issue.has_value());
+    EXPECT_EQ(issue->segment, -1);
+    EXPECT_NE(issue->message.find("sum to 340"), std::string::npos) << issue->message;
+  }
+  {
+    MotionProgram<double> p({{MotionLaw::kCycloidal, 24.0, 180 * d},
+                             {MotionLaw::kCycloidal, -20.0, 180 * d}});
+    const auto issue = CheckProgram(p, 2 * kPi, true);
+    ASSERT_TRUE(issue.has_value());
+    EXPECT_NE(issue->message.find("does not return"), std::string::npos) << issue->message;
+  }
+  {
+    MotionProgram<double> p({{MotionLaw::kDwell, 3.0, 360 * d}});
+    const auto issue = CheckProgram(p, 2 * kPi, true);
+    ASSERT_TRUE(issue.has_value());
+    EXPECT_EQ(issue->segment, 0);
+    EXPECT_EQ(issue->field, "rise");
+  }
+  {
+    MotionProgram<double> p({{MotionLaw::kCycloidal, 5.0, -10 * d},
+                             {MotionLaw::kCycloidal, -5.0, 370 * d}});
+    const auto issue = CheckProgram(p, 2 * kPi, true);
+    ASSERT_TRUE(issue.has_value());
+    EXPECT_EQ(issue->segment, 0);
+    EXPECT_EQ(issue->field, "cam_angle_deg");
+  }
+}
+
+TEST(MotionProgram, DerivativesWithRespectToRiseAndDurationMatchCentralDifferences) {
+  // Outputs S, S', S'' at fixed cam angles as functions of (rise, rise duration, dwell duration).
+  auto f = [](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    const T dwell2 = T(2 * kPi) - x[1] * T(2.0) - x[2];
+    MotionProgram<T> p({{MotionLaw::kModifiedSine, x[0], x[1]},
+                        {MotionLaw::kDwell, T(0.0), x[2]},
+                        {MotionLaw::kPolynomial4567, -x[0], x[1]},
+                        {MotionLaw::kDwell, T(0.0), dwell2}});
+    std::vector<T> out;
+    for (double th : {0.3, 1.1, 2.5, 3.7, 5.9}) {
+      const Svaj<T> m = p.Evaluate(T(th));
+      out.insert(out.end(), {m.s, m.v, m.a});
+    }
+    return out;
+  };
+  camopt::testing::ExpectJacobianMatchesCentralDifferences<3>(f, {24.0, 2.0, 0.9}, 1e-6, 1e-7);
+}
+
+}  // namespace
+}  // namespace camopt::motion
