@@ -110,9 +110,11 @@ inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::str
     << " MPa; x across the profile (stretched), y along the face width</text>\n";
   auto colour = [&](double p) {
     if (p <= 0 || pmax <= 0) return std::string("#f4f4f4");
-    const double t = std::clamp(p / pmax, 0.0, 1.0);  // blue → green → yellow → red
-    const double r = std::clamp(2.0 * t - 0.5, 0.0, 1.0), g = std::clamp(t < 0.6 ? 2.0 * t : 2.5 - 2.5 * t + 0.5, 0.0, 1.0),
-                 b = std::clamp(1.0 - 2.0 * t, 0.0, 1.0);
+    // "Jet": blue → cyan → green → yellow → red from 0 to the maximum.
+    const double t = std::clamp(p / pmax, 0.0, 1.0);
+    const double r = std::clamp(std::min(4.0 * t - 1.5, -4.0 * t + 4.5), 0.0, 1.0);
+    const double g = std::clamp(std::min(4.0 * t - 0.5, -4.0 * t + 3.5), 0.0, 1.0);
+    const double b = std::clamp(std::min(4.0 * t + 0.5, -4.0 * t + 2.5), 0.0, 1.0);
     char buf[16];
     std::snprintf(buf, sizeof buf, "#%02x%02x%02x", int(255 * r), int(255 * g), int(255 * b));
     return std::string(buf);
