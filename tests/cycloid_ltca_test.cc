@@ -129,6 +129,20 @@ TEST(CycloidLtca, BarelyTouchingPairIsFinite) {
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.05 * b.max_pressure_MPa);
 }
 
+TEST(CycloidLtca, LteTendsToTheUnloadedTeAsTheTorqueVanishes) {
+  // Crowned (point-like) contact on a coarse grid, where the cell centres miss the contact point
+  // by half a cell: the deflection must still vanish with the torque.
+  Crowning fcm;
+  fcm.type = CrowningType::kFull;
+  fcm.radius_mm = 3000;
+  LoadedTca tca(NnmDrive(), fcm, Material{}, Coarse());
+  const double beta0 = UnloadedTca<double>(NnmDrive(), 0.4).rotation;
+  const MeshLoad m = tca.Solve(1e-6, 0.4);
+  ExpectFinite(m);
+  EXPECT_NEAR(m.rotation_rad, beta0, 1e-9);  // 2e-4 arcsec
+  EXPECT_GT(m.rotation_rad, beta0);
+}
+
 TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   // Memory from a light load makes the first iteration at a heavy load mispredict the pair laws
   // (too compliant: too large a deflection, pairs that then lose contact again). The end state

@@ -124,8 +124,15 @@ std::vector<double> LoadedTca::Gap(const contact::Grid& grid, double roller_curv
     const double x = grid.x0 + (ix + 0.5) * grid.dx;
     across[ix] = CircleSeparation(roller_curvature, x) + CircleSeparation(profile_curvature, x);
   }
+  // The cell centres miss the contact point itself (x = y = 0) by half a cell: shift the gap so
+  // that the closest cell touches at zero approach. Otherwise a vanishing load would still need
+  // an approach of min(gap) (7.5 nm at the FCM example's centre cell, q = 40) and the LTE would not
+  // tend to the unloaded TE as the torque goes to zero. The shift is within the discretisation.
+  const double lowest = *std::min_element(across.begin(), across.end()) +
+                        *std::min_element(crown_.begin(), crown_.end());
   for (int iy = 0; iy < grid.ny; ++iy)
-    for (int ix = 0; ix < grid.nx; ++ix) gap[size_t(iy) * grid.nx + ix] = across[ix] + crown_[iy];
+    for (int ix = 0; ix < grid.nx; ++ix)
+      gap[size_t(iy) * grid.nx + ix] = across[ix] + crown_[iy] - lowest;
   return gap;
 }
 
