@@ -123,6 +123,29 @@ void BM_ContactPointSequence(benchmark::State& state) {
 }
 BENCHMARK(BM_ContactPointSequence)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The cycloid outer iteration: one straight roller's grid (32 × 64), the load changing by a
+// few per cent per call; cold start versus warm start from the previous pressure.
+void BM_ContactRollerLoadSequence(benchmark::State& state) {
+  const bool warm = state.range(0) != 0;
+  const double b = LineContactHalfWidth(kRollerLoad, kRollerLength, kRollerRadius, kEStar);
+  const Grid g = CenteredGrid(32, 64, 2.0 * b, 0.5 * kRollerLength);
+  const auto h = CylinderGap(g, kRollerRadius);
+  HalfSpaceSolver solver;
+  ContactSolution s = solver.SolveForLoad(g, h, kRollerLoad, kEStar);
+  double iterations = 0, calls = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < 10; ++k) {
+      const double load = kRollerLoad * (1.0 + 0.03 * k);
+      s = warm ? solver.SolveForLoad(g, h, load, kEStar, s.pressure_MPa)
+               : solver.SolveForLoad(g, h, load, kEStar);
+      iterations += s.iterations;
+      calls += 1;
+    }
+  }
+  state.counters["iters_per_call"] = iterations / calls;
+}
+BENCHMARK(BM_ContactRollerLoadSequence)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 // Straight roller on a flat (line contact); args: nx (over ±2b), ny (over the length L).
 // Mid-face peak and half-width against Hertz line contact, and the edge peak with its dy.
 void BM_ContactRollerCg(benchmark::State& state) {

@@ -324,6 +324,7 @@ struct HalfSpaceSolver::Impl {
   std::map<std::pair<int, int>, std::unique_ptr<FftConvolver>> convolvers;
   std::map<std::tuple<int, int, double, double>, Kernel> kernels;
   std::vector<double> h, p, p_old, u, g, t, r;  // work arrays (h: the gap above its minimum)
+  std::vector<double> sorted;
   std::vector<std::pair<int, double>> corrections;
 
   explicit Impl(SolverOptions o) : options(o) {}
@@ -400,7 +401,23 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     if (UsableStart(start, n)) {
       p = *start;
     } else {
-      p.assign(n, 1.0);
+      // Hertz-like start: p ∝ sqrt(c − h) where h < c, c the gap at the edge of a contact whose
+      // area A gives c = δ/2 with a Hertz approach δ ≈ 3W / (4E* sqrt(A/π)) (exact for a
+      // sphere: the contact edge has h = a²/2R = δ/2, and the profile is then exactly Hertz's).
+      // 40% fewer iterations than a uniform start on point contacts (docs/performance.md).
+      sorted.assign(h.begin(), h.end());
+      std::sort(sorted.begin(), sorted.end());
+      size_t k = 0;
+      for (; k < n; ++k) {
+        const double a_c = static_cast<double>(k + 1) * area;
+        const double half_delta = 0.375 * load / (e_star * std::sqrt(a_c / kPi));
+        if (sorted[k] >= half_delta) break;
+      }
+      if (k == n) {
+        p.assign(n, 1.0);  // the whole grid is expected in contact
+      } else {
+        for (size_t i = 0; i < n; ++i) p[i] = sorted[k] > h[i] ? std::sqrt(sorted[k] - h[i]) : 0.0;
+      }
     }
   } else {
     bool any = false;
