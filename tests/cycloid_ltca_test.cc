@@ -8,6 +8,8 @@
 
 #include "model/contact/hertz.h"
 #include "model/cycloid/loaded_tca.h"
+#include "studies/input.h"
+#include "studies/study.h"
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
@@ -252,6 +254,28 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
               j["per_angle"][2]["max_contact_stress_MPa"].get<double>(), 1e-3 * j["max_contact_stress_MPa"].get<double>());
   for (const char* f : {"per_angle.csv", "backlash.csv", "pressure_map.svg", "lte.svg", "tooth.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+}
+
+TEST(CycloidStudies, ExamplesRunOnACoarseGrid) {
+  // Every shipped example parses and runs (with its analysis made coarse to keep the suite fast).
+  for (const char* name : {"cycloid_ltca_nnm_none", "cycloid_ltca_nnm_fcm", "cycloid_ltca_nnm_pcm",
+                           "cycloid_ltca_nnm_lcm", "cycloid_crowning_tuning_nnm"}) {
+    const std::string file = camopt::testing::SourcePath("studies/examples/") + name + ".json";
+    nlohmann::json j = studies::LoadStudyFile(file);
+    ASSERT_TRUE(j.contains("analysis")) << name;
+    j["analysis"]["grid"] = {8, 8};
+    if (j["analysis"].contains("crank_angle_steps")) j["analysis"]["crank_angle_steps"] = 3;
+    if (j.contains("tuning")) {
+      j["analysis"]["crank_angles_per_mesh_period"] = 2;
+      j["tuning"]["curve_points"] = 3;
+      j["tuning"]["max_evaluations"] = 3;
+    }
+    studies::RunContext ctx;
+    ctx.study_file = file;
+    ctx.quiet = true;
+    const studies::Outputs out = studies::RunStudy(j, ctx);
+    ASSERT_TRUE(out.files().count("result.json")) << name;
+  }
 }
 
 TEST(CycloidStudies, LtcaBadInputExitsWithCode2) {
