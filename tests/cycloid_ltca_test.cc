@@ -79,6 +79,72 @@ TEST(CycloidLtca, EquilibriumAndCompatibilityHold) {
   EXPECT_NEAR(m.rotation_rad, unloaded.rotation + m.deflection_rad, 1e-15);
 }
 
+TEST(CycloidLtca, LoadsMatchAnIndependentApproachControlledBisection) {
+  // Independent construction of eqs. 24–25: bisect the disc deflection Δφc, each pair solved
+  // approach-controlled (δ_i = l_i (Δφc − φ_bl,i)) on the grid the LTCA chose, until Σ F_i l_i = T.
+  // No pair model, no load control: only the equations.
+  const double crank = 0.9, torque = 350.0;
+  for (const Crowning& crown : {Crowning{}, Log(0.005)}) {
+    LoadedTca tca(NnmDrive(), crown, Material{}, Coarse(16, 16));
+    const MeshLoad m = tca.Solve(torque, crank);
+    ASSERT_TRUE(m.converged) << m.message;
+    const auto unloaded = UnloadedTca<double>(NnmDrive(), crank);
+    contact::HalfSpaceSolver solver;
+    // Gaps as in the LTCA (circle separations + crowning, shifted so the closest cell touches),
+    // rebuilt here from the unloaded TCA on each loaded pair's grid.
+    struct Pair {
+      double arm, backlash;
+      contact::Grid grid;
+      std::vector<double> gap;
+      int roller;
+    };
+    std::vector<Pair> pairs;
+    const double grid_x = 0.3;  // wide enough for every pair at this load
+    for (const auto& g : unloaded.pairs) {
+      if (!g.loaded_flank || g.backlash > 5e-3) continue;
+      Pair p{g.arm_mm, g.backlash, contact::CenteredGrid(24, 16, grid_x, 8.5), {}, g.roller};
+      p.gap.resize(24 * 16);
+      double lowest = 1e9;
+      for (int iy = 0; iy < 16; ++iy)
+        for (int ix = 0; ix < 24; ++ix) {
+          const double x = p.grid.x_centre_mm(ix), y = p.grid.y_centre_mm(iy);
+          const double k1 = g.roller_curvature, k2 = g.profile_curvature;
+          const double h = (1.0 / k1 - std::sqrt(1.0 / (k1 * k1) - x * x)) +
+                           k2 * x * x / (1.0 + std::sqrt(1.0 - k2 * k2 * x * x)) +
+                           CrowningDrop(crown, 17.0, y);
+          p.gap[iy * 24 + ix] = h;
+          lowest = std::min(lowest, h);
+        }
+      for (double& h : p.gap) h -= lowest;
+      pairs.push_back(std::move(p));
+    }
+    auto moment = [&](double dphi, std::vector<double>* loads) {
+      double mm = 0;
+      for (const auto& p : pairs) {
+        const double delta = p.arm * (dphi - p.backlash);
+        const double f = delta > 0 ? solver.SolveForApproach(p.grid, p.gap, delta, tca.e_star_MPa()).load_N : 0.0;
+        if (loads) loads->push_back(f);
+        mm += f * p.arm;
+      }
+      return mm;
+    };
+    double lo = 0, hi = 1e-3;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (moment(mid, nullptr) < torque * 1e3 ? lo : hi) = mid;
+    }
+    std::vector<double> loads;
+    moment(0.5 * (lo + hi), &loads);
+    EXPECT_NEAR(m.deflection_rad, 0.5 * (lo + hi), 5e-3 * m.deflection_rad);
+    for (size_t i = 0; i < pairs.size(); ++i) {
+      double ours = 0;
+      for (const auto& p : m.pairs)
+        if (p.roller == pairs[i].roller) ours = p.load_N;
+      EXPECT_NEAR(ours, loads[i], 10.0 + 0.01 * loads[i]) << "roller " << pairs[i].roller;
+    }
+  }
+}
+
 TEST(CycloidLtca, MidFacePressureOfAStraightToothIsNearHertzLineContact) {
   // Away from the face edges an uncrowned pair is a line contact: its mid-face peak is close to
   // Hertz p = sqrt(F E* / (π B R')) with the pair's own load (a little lower, since the edge
