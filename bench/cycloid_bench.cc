@@ -1,0 +1,84 @@
+// Speed of the cycloid drive stages (docs/performance.md, "Cycloid drive"):
+//   build/camopt_bench --benchmark_filter=Cycloid
+// A full 60-angle mesh cycle of the paper's example (NNM, 350 N·m, 40 × 40 cells per pair) from a
+// fresh LoadedTca (cold kernel cache, as a study run), and the crowning tuning example study.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/unloaded_tca.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+
+namespace camopt::cycloid {
+namespace {
+
+Drive Nnm() {
+  Drive d;
+  d.delta_position_mm = -0.016;
+  d.delta_radius_mm = -0.008;
+  return d;
+}
+
+Crowning Case(int k) {
+  Crowning c;
+  if (k == 1) {
+    c.type = CrowningType::kFull;
+    c.radius_mm = 3000;
+  } else if (k == 2) {
+    c.type = CrowningType::kPartial;
+    c.radius_mm = 4500;
+    c.flat_length_mm = 13.6;
+  } else if (k == 3) {
+    c.type = CrowningType::kLogarithmic;
+    c.coefficient_mm = 0.005;
+  }
+  return c;
+}
+
+void BM_CycloidUnloadedTca(benchmark::State& state) {
+  const Drive d = Nnm();
+  double a = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(UnloadedTca<double>(d, a));
+    a += 0.1;
+  }
+}
+BENCHMARK(BM_CycloidUnloadedTca);
+
+// Arg: crowning case 0 none, 1 FCM, 2 PCM, 3 LCM.
+void BM_CycloidMeshCycle60(benchmark::State& state) {
+  const auto angles = UniformCrankAngles(60, 2 * kPi);
+  CycleResult r;
+  for (auto _ : state) {
+    LoadedTca tca(Nnm(), Case(int(state.range(0))), Material{}, LoadedOptions{});
+    r = RunCycle(tca, 350.0, angles);
+    benchmark::DoNotOptimize(r.max_pressure_MPa);
+  }
+  state.counters["max_MPa"] = r.max_pressure_MPa;
+  state.counters["solves"] = r.contact_solves;
+  state.counters["solves_per_angle"] = r.contact_solves / 60.0;
+  state.counters["cg_iters"] = double(r.solver_iterations);
+}
+BENCHMARK(BM_CycloidMeshCycle60)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+void BM_CycloidCrowningTuningStudy(benchmark::State& state) {
+  // The source tree from this file's path (CMake passes absolute paths to the compiler).
+  const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /
+                            "studies/examples/cycloid_crowning_tuning_nnm.json")
+                               .string();
+  const nlohmann::json j = studies::LoadStudyFile(file);
+  studies::RunContext ctx;
+  ctx.study_file = file;
+  ctx.quiet = true;
+  for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
+}
+BENCHMARK(BM_CycloidCrowningTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+}  // namespace camopt::cycloid

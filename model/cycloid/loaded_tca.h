@@ -1,0 +1,169 @@
+// Loaded tooth contact analysis (LTCA) of a cycloid stage with the elastic half-space compliance
+// of each contacting pair. Cycloid load-distribution paper, eqs. (15)–(26).
+//
+// Per crank angle φ: the unloaded TCA gives each pair's arm l_i and backlash φ_bl,i. Under the
+// torque T the disc turns further by Δφc; pair i is pressed by the approach δ_i = l_i (Δφc − φ_bl,i)
+// when positive (compatibility, eq. 24) and carries the force F_i(δ_i) of its half-space contact
+// problem (eqs. 15–23, the gap being the two circles' separations, eqs. 17–18, plus the crowning
+// drop, eqs. 19); the moments balance: Σ F_i l_i = T (equilibrium, eq. 25). The paper iterates
+// the pair compliances C_i = δ_i / F_i until loads and angle change by < 1 %; here the same fixed
+// point is reached by a Newton-like iteration: each pair's law is modelled by a power law
+// δ = δ1 (F/F1)^γ through its last solved point (γ measured from its last two solves, or carried
+// from the previous crank angle), the model equations are solved exactly for Δφc (a monotone
+// equation in one unknown), and each loaded pair whose force moved is solved again
+// (load-controlled, warm-started from its last pressure). Converged when every pair's
+// compatibility holds within the relative tolerance (typically 3 iterations per crank angle).
+//
+// Outputs: loads, pressure maps, pairs in contact, loaded transmission error (LTE = the disc lag
+// β0 + Δφc; β0 is the unloaded TE) and, over a cycle, the instantaneous gear ratio (GR).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "model/contact/half_space.h"
+#include "model/cycloid/crowning.h"
+#include "model/cycloid/tooth_profile.h"
+#include "model/cycloid/unloaded_tca.h"
+
+namespace camopt::cycloid {
+
+struct Material {
+  double youngs_modulus_MPa = 206000.0;
+  double poisson_ratio = 0.3;
+  /// E* of two bodies of this material: E / (2 (1 − ν²)).
+  double CompositeModulus_MPa() const {
+    return youngs_modulus_MPa / (2.0 * (1.0 - poisson_ratio * poisson_ratio));
+  }
+};
+
+struct LoadedOptions {
+  int profile_cells = 40;  ///< p, cells across the contact (profile direction)
+  int axial_cells = 40;    ///< q, cells along the face width
+  double tolerance = 1e-3; ///< relative compatibility residual of the pairs (paper: 1e-2)
+  /// Relative tolerance of the half-space solver's final solves (its default is 1e-8; the cycle's
+  /// peak pressure moves by 0.2 MPa in 1248 between 1e-4 and 1e-8, docs/performance.md; the
+  /// compatibility tolerance above is coarser).
+  double solver_tolerance = 1e-4;
+  /// Solver tolerance of the first (steering) iterations; <= solver_tolerance disables them.
+  double rough_solver_tolerance = 1e-2;
+  int max_iterations = 40;
+  /// Grid half-length in the profile direction, in Hertz line-contact half-widths at the pair's
+  /// load (rounded up to a ladder of sizes so that grids, hence kernels, repeat). Enlarged when a
+  /// pressure reaches the outer cells across the profile.
+  double grid_half_width_factor = 1.6;
+  /// Pairs whose backlash exceeds this [rad] are not considered (they cannot close under load).
+  double max_backlash_rad = 5e-3;
+  /// Keep every pair's pressure map in the results (for maps); off saves memory in sweeps.
+  bool keep_pressure = true;
+  /// Compute the edge margin of every pair (one extra convolution per loaded pair).
+  bool edge_margin = false;
+};
+
+/// One loaded roller-tooth pair at one crank angle.
+struct PairLoad {
+  int roller = 0;
+  double load_N = 0;
+  double approach_mm = 0;       ///< δ_i
+  double max_pressure_MPa = 0;
+  double arm_mm = 0;            ///< l_i
+  double backlash_rad = 0;      ///< φ_bl,i
+  double effective_radius_mm = 0;  ///< R' of the two profiles at the contact
+  contact::Grid grid;
+  std::vector<double> pressure_MPa;  ///< row-major iy * nx + ix, x across, y along the face
+  /// Clearance left at the two axial edge rows [mm] (> 0: the pattern stays off the edges),
+  /// minus (max edge-row pressure / E*) · dy when the contact reaches an edge, so that it is
+  /// continuous and negative for edge contact. Filled when LoadedOptions::edge_margin.
+  double edge_margin_mm = 0;
+  int solver_iterations = 0;
+};
+
+/// The loaded state at one crank angle.
+struct MeshLoad {
+  double crank_angle_rad = 0;
+  double unloaded_rotation_rad = 0;  ///< β0, unloaded TE
+  double deflection_rad = 0;         ///< Δφc
+  double rotation_rad = 0;           ///< β0 + Δφc, the loaded TE (disc lag)
+  double max_pressure_MPa = 0;
+  int pairs_in_contact = 0;          ///< pairs carrying load
+  std::vector<PairLoad> pairs;       ///< the loaded pairs
+  double edge_margin_mm = 0;         ///< min over loaded pairs (0 when none)
+  int iterations = 0;                ///< outer (compatibility) iterations
+  int contact_solves = 0;            ///< half-space solves
+  long solver_iterations = 0;        ///< their conjugate-gradient iterations, summed
+  bool converged = true;
+  std::string message;
+};
+
+/// Per-angle LTCA with memory between calls (pair compliances, grids and pressures are reused
+/// as warm starts at the next crank angle). Not thread-safe; one instance per thread.
+class LoadedTca {
+ public:
+  /// @throws std::invalid_argument for an infeasible drive or crowning (CheckDrive/CheckCrowning).
+  LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
+            LoadedOptions options = {});
+
+  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nm (>= 0).
+  MeshLoad Solve(double torque_Nm, double crank_angle_rad);
+
+  /// Changes the crowning (sweeps and tuning); the pair memory is kept as a warm start.
+  /// @throws std::invalid_argument for invalid crowning.
+  void SetCrowning(const Crowning& crowning);
+
+  const Drive& drive() const { return drive_; }
+  const LoadedOptions& options() const { return options_; }
+  double e_star_MPa() const { return e_star_; }
+
+ private:
+  struct PairMemory {
+    contact::Grid grid;
+    std::vector<double> pressure;
+    double f1 = 0, d1 = 0;  // the last solved (F, δ) of the pair
+    double gamma = 0.9;     // its measured exponent of δ ∝ F^γ
+  };
+  contact::Grid MakeGrid(double half_x_mm) const;
+  std::vector<double> Gap(const contact::Grid& grid, double effective_curvature_roller,
+                          double profile_curvature) const;
+
+  Drive drive_;
+  Crowning crowning_;
+  Material material_;
+  LoadedOptions options_;
+  double e_star_;
+  std::vector<double> crown_;  // crowning drop per axial cell
+  contact::HalfSpaceSolver solver_;        // final tolerance
+  contact::HalfSpaceSolver rough_solver_;  // steering iterations
+  std::map<int, PairMemory> memory_;  // by roller
+};
+
+/// A mesh cycle: the LTCA at each crank angle, with the derived series.
+struct CycleResult {
+  std::vector<MeshLoad> meshes;
+  std::vector<double> lte_arcsec;    ///< loaded TE per angle [arcsec]
+  std::vector<double> gear_ratio;    ///< instantaneous ratio dφ_in/dφ_out per angle
+  double max_pressure_MPa = 0;
+  int max_pressure_index = 0;        ///< angle index of the maximum
+  double lte_peak_to_peak_arcsec = 0;
+  double lte_mean_abs_arcsec = 0;
+  double gear_ratio_peak_to_peak = 0;
+  int max_pairs_in_contact = 0;
+  double edge_margin_mm = 0;         ///< min over angles
+  int contact_solves = 0;
+  long solver_iterations = 0;
+  bool converged = true;
+};
+
+/// Runs the LTCA over the crank angles [rad] (in order). The gear ratio uses the derivative of
+/// the LTE over the crank angle by central differences, periodic when the angles are a uniform
+/// sampling of a whole number of mesh periods 2π/n1, one-sided at the ends otherwise.
+CycleResult RunCycle(LoadedTca& tca, double torque_Nm, const std::vector<double>& crank_angles_rad,
+                     const std::function<void(double)>& progress = nullptr);
+
+/// Uniform crank angles over [0, span) [rad].
+std::vector<double> UniformCrankAngles(int steps, double span_rad);
+
+constexpr double kArcsecPerRad = 180.0 * 3600.0 / kPi;
+
+}  // namespace camopt::cycloid

@@ -1,0 +1,142 @@
+// Parsing and output helpers shared by the two cycloid study kinds (cycloid_ltca,
+// cycloid_crowning_tuning). Header-only; each kind stays one .cc file.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/cycloid/crowning.h"
+#include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/tooth_profile.h"
+#include "studies/input.h"
+
+namespace camopt::studies::cycloid_common {
+
+/// "drive" and the optional "modification" (µm) of a study.
+inline cycloid::Drive ParseDrive(const Node& root) {
+  const Node d = root["drive"];
+  cycloid::Drive drive;
+  drive.teeth = d["teeth"].Integer(2);
+  drive.rollers = d["rollers"].Integer(3);
+  if (drive.rollers != drive.teeth + 1) d["rollers"].Fail("teeth + 1 (a one-tooth-difference drive)");
+  drive.roller_position_radius_mm = d["roller_position_radius_mm"].Positive();
+  drive.roller_radius_mm = d["roller_radius_mm"].Positive();
+  drive.eccentricity_mm = d["eccentricity_mm"].Positive();
+  drive.face_width_mm = d["face_width_mm"].Positive();
+  if (root.Has("modification")) {
+    const Node m = root["modification"];
+    drive.delta_position_mm = m.NumberOr("delta_position_um", 0.0) * 1e-3;
+    drive.delta_radius_mm = m.NumberOr("delta_radius_um", 0.0) * 1e-3;
+  }
+  if (const std::string why = cycloid::CheckDrive(drive); !why.empty())
+    d.FailWith("infeasible drive: " + why);
+  return drive;
+}
+
+inline cycloid::Material ParseMaterial(const Node& root) {
+  cycloid::Material m;
+  const Node n = root["material"];
+  m.youngs_modulus_MPa = n["youngs_modulus_GPa"].Positive() * 1000.0;
+  m.poisson_ratio = n["poisson_ratio"].NumberIn(0.0, 0.499);
+  return m;
+}
+
+/// "crowning": {"type": none | full | partial | logarithmic, ...}.
+inline cycloid::Crowning ParseCrowning(const Node& root, double face_width_mm) {
+  cycloid::Crowning c;
+  if (!root.Has("crowning")) return c;
+  const Node n = root["crowning"];
+  const std::string type = n["type"].String();
+  if (type == "none") {
+    c.type = cycloid::CrowningType::kNone;
+  } else if (type == "full") {
+    c.type = cycloid::CrowningType::kFull;
+    c.radius_mm = n["radius_mm"].Positive();
+  } else if (type == "partial") {
+    c.type = cycloid::CrowningType::kPartial;
+    c.radius_mm = n["radius_mm"].Positive();
+    c.flat_length_mm = n["flat_length_mm"].NonNegative();
+  } else if (type == "logarithmic") {
+    c.type = cycloid::CrowningType::kLogarithmic;
+    c.coefficient_mm = n["coefficient_mm"].NonNegative();
+    c.effective_length_mm = n.NonNegativeOr("effective_length_mm", 0.0);
+  } else {
+    n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
+  }
+  if (const std::string why = cycloid::CheckCrowning(c, face_width_mm); !why.empty())
+    n.FailWith(why);
+  return c;
+}
+
+/// "grid": [p, q] (profile cells, axial cells), default 40 × 40.
+inline void ParseGrid(const Node& analysis, cycloid::LoadedOptions& o) {
+  if (!analysis.Has("grid")) return;
+  const Node g = analysis["grid"];
+  const auto e = g.Elements();
+  if (e.size() != 2) g.Fail("an array [profile_cells, axial_cells]");
+  o.profile_cells = e[0].Integer(4);
+  o.axial_cells = e[1].Integer(4);
+  if (o.profile_cells > 512 || o.axial_cells > 512) g.Fail("at most 512 cells each way");
+}
+
+inline std::string Fmt(double v, const char* f = "%.4g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+/// An SVG heat map of the pressure of each contacting pair, side by side: x across the
+/// profile (stretched to a readable width), y along the face width.
+inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::string& title) {
+  const int cell_w = 6, cell_h = 8;
+  const int panel_gap = 30, top = 50, left = 20;
+  double pmax = 0;
+  for (const auto& p : mesh.pairs) pmax = std::max(pmax, p.max_pressure_MPa);
+  int width = left;
+  for (const auto& p : mesh.pairs) width += p.grid.nx * cell_w + panel_gap;
+  width = std::max(width + 80, 400);
+  int ny = 0;
+  for (const auto& p : mesh.pairs) ny = std::max(ny, p.grid.ny);
+  const int height = top + ny * cell_h + 70;
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+    << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\">" << title << "</text>\n";
+  s << "<text x=\"" << left << "\" y=\"38\">max " << Fmt(pmax, "%.0f")
+    << " MPa; x across the profile (stretched), y along the face width</text>\n";
+  auto colour = [&](double p) {
+    if (p <= 0 || pmax <= 0) return std::string("#f4f4f4");
+    // "Jet": blue → cyan → green → yellow → red from 0 to the maximum.
+    const double t = std::clamp(p / pmax, 0.0, 1.0);
+    const double r = std::clamp(std::min(4.0 * t - 1.5, -4.0 * t + 4.5), 0.0, 1.0);
+    const double g = std::clamp(std::min(4.0 * t - 0.5, -4.0 * t + 3.5), 0.0, 1.0);
+    const double b = std::clamp(std::min(4.0 * t + 0.5, -4.0 * t + 2.5), 0.0, 1.0);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", int(255 * r), int(255 * g), int(255 * b));
+    return std::string(buf);
+  };
+  int x0 = left;
+  for (const auto& p : mesh.pairs) {
+    for (int iy = 0; iy < p.grid.ny; ++iy)
+      for (int ix = 0; ix < p.grid.nx; ++ix) {
+        const double v = p.pressure_MPa.empty() ? 0.0 : p.pressure_MPa[size_t(iy) * p.grid.nx + ix];
+        s << "<rect x=\"" << x0 + ix * cell_w << "\" y=\"" << top + (p.grid.ny - 1 - iy) * cell_h
+          << "\" width=\"" << cell_w << "\" height=\"" << cell_h << "\" fill=\"" << colour(v) << "\"/>\n";
+      }
+    s << "<text x=\"" << x0 << "\" y=\"" << top + p.grid.ny * cell_h + 16 << "\">roller "
+      << p.roller + 1 << ": " << Fmt(p.load_N, "%.0f") << " N, " << Fmt(p.max_pressure_MPa, "%.0f")
+      << " MPa</text>\n";
+    s << "<text x=\"" << x0 << "\" y=\"" << top + p.grid.ny * cell_h + 30 << "\">"
+      << Fmt(2 * p.grid.nx * p.grid.dx * 0.5, "%.3f") << " x " << Fmt(p.grid.ny * p.grid.dy, "%.1f")
+      << " mm</text>\n";
+    x0 += p.grid.nx * cell_w + panel_gap;
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace camopt::studies::cycloid_common

@@ -1,0 +1,388 @@
+// Tests of the cycloid loaded TCA and the two study kinds (coarse grids: the suite stays fast).
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "model/contact/hertz.h"
+#include "model/cycloid/loaded_tca.h"
+#include "studies/input.h"
+#include "studies/study.h"
+#include "tests/test_util.h"
+
+namespace camopt::cycloid {
+namespace {
+
+Drive NnmDrive() {
+  Drive d;  // Table 2 of the paper
+  d.delta_position_mm = -0.016;
+  d.delta_radius_mm = -0.008;
+  return d;
+}
+
+LoadedOptions Coarse(int p = 16, int q = 16) {
+  LoadedOptions o;
+  o.profile_cells = p;
+  o.axial_cells = q;
+  return o;
+}
+
+Crowning Log(double f) {
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = f;
+  return c;
+}
+
+void ExpectFinite(const MeshLoad& m) {
+  EXPECT_TRUE(std::isfinite(m.rotation_rad));
+  EXPECT_TRUE(std::isfinite(m.deflection_rad));
+  EXPECT_TRUE(std::isfinite(m.max_pressure_MPa));
+  for (const auto& p : m.pairs) {
+    EXPECT_TRUE(std::isfinite(p.load_N));
+    EXPECT_TRUE(std::isfinite(p.approach_mm));
+    for (double v : p.pressure_MPa) ASSERT_TRUE(std::isfinite(v) && v >= 0.0);
+  }
+}
+
+TEST(CycloidLtca, EquilibriumAndCompatibilityHold) {
+  LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse());
+  const double crank = 120.0 * kPi / 180.0;
+  const MeshLoad m = tca.Solve(350.0, crank);
+  ASSERT_TRUE(m.converged) << m.message;
+  ExpectFinite(m);
+  ASSERT_GE(m.pairs_in_contact, 2);
+  double moment = 0, max_approach = 0;
+  for (const auto& p : m.pairs) {
+    moment += p.load_N * p.arm_mm;
+    max_approach = std::max(max_approach, p.approach_mm);
+    // Pressure integrates to the pair load.
+    double w = 0;
+    for (double v : p.pressure_MPa) w += v * p.grid.dx * p.grid.dy;
+    EXPECT_NEAR(w, p.load_N, 1e-6 * p.load_N);
+  }
+  EXPECT_NEAR(moment, 350e3, 350e3 * 5e-3);  // eq. 25
+  // Eq. 24: every loaded pair is pressed by l_i (Δφc − φ_bl,i); no other loaded-flank pair closes.
+  for (const auto& p : m.pairs)
+    EXPECT_NEAR(p.approach_mm, p.arm_mm * (m.deflection_rad - p.backlash_rad), 5e-3 * max_approach);
+  const auto unloaded = UnloadedTca<double>(NnmDrive(), crank);
+  for (const auto& g : unloaded.pairs) {
+    if (!g.loaded_flank) continue;
+    bool loaded = false;
+    for (const auto& p : m.pairs) loaded = loaded || p.roller == g.roller;
+    if (!loaded) {
+      EXPECT_LE(g.arm_mm * (m.deflection_rad - g.backlash), 5e-3 * max_approach) << g.roller;
+    }
+  }
+  EXPECT_NEAR(m.rotation_rad, unloaded.rotation + m.deflection_rad, 1e-15);
+}
+
+TEST(CycloidLtca, LoadsMatchAnIndependentApproachControlledBisection) {
+  // Independent construction of eqs. 24–25: bisect the disc deflection Δφc, each pair solved
+  // approach-controlled (δ_i = l_i (Δφc − φ_bl,i)) on the grid the LTCA chose, until Σ F_i l_i = T.
+  // No pair model, no load control: only the equations.
+  const double crank = 0.9, torque = 350.0;
+  for (const Crowning& crown : {Crowning{}, Log(0.005)}) {
+    LoadedTca tca(NnmDrive(), crown, Material{}, Coarse(16, 16));
+    const MeshLoad m = tca.Solve(torque, crank);
+    ASSERT_TRUE(m.converged) << m.message;
+    const auto unloaded = UnloadedTca<double>(NnmDrive(), crank);
+    contact::HalfSpaceSolver solver;
+    // Gaps as in the LTCA (circle separations + crowning, shifted so the closest cell touches),
+    // rebuilt here from the unloaded TCA on each loaded pair's grid.
+    struct Pair {
+      double arm, backlash;
+      contact::Grid grid;
+      std::vector<double> gap;
+      int roller;
+    };
+    std::vector<Pair> pairs;
+    const double grid_x = 0.3;  // wide enough for every pair at this load
+    for (const auto& g : unloaded.pairs) {
+      if (!g.loaded_flank || g.backlash > 5e-3) continue;
+      Pair p{g.arm_mm, g.backlash, contact::CenteredGrid(24, 16, grid_x, 8.5), {}, g.roller};
+      p.gap.resize(24 * 16);
+      double lowest = 1e9;
+      for (int iy = 0; iy < 16; ++iy)
+        for (int ix = 0; ix < 24; ++ix) {
+          const double x = p.grid.x_centre_mm(ix), y = p.grid.y_centre_mm(iy);
+          const double k1 = g.roller_curvature, k2 = g.profile_curvature;
+          const double h = (1.0 / k1 - std::sqrt(1.0 / (k1 * k1) - x * x)) +
+                           k2 * x * x / (1.0 + std::sqrt(1.0 - k2 * k2 * x * x)) +
+                           CrowningDrop(crown, 17.0, y);
+          p.gap[iy * 24 + ix] = h;
+          lowest = std::min(lowest, h);
+        }
+      for (double& h : p.gap) h -= lowest;
+      pairs.push_back(std::move(p));
+    }
+    auto moment = [&](double dphi, std::vector<double>* loads) {
+      double mm = 0;
+      for (const auto& p : pairs) {
+        const double delta = p.arm * (dphi - p.backlash);
+        const double f = delta > 0 ? solver.SolveForApproach(p.grid, p.gap, delta, tca.e_star_MPa()).load_N : 0.0;
+        if (loads) loads->push_back(f);
+        mm += f * p.arm;
+      }
+      return mm;
+    };
+    double lo = 0, hi = 1e-3;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (moment(mid, nullptr) < torque * 1e3 ? lo : hi) = mid;
+    }
+    std::vector<double> loads;
+    moment(0.5 * (lo + hi), &loads);
+    EXPECT_NEAR(m.deflection_rad, 0.5 * (lo + hi), 5e-3 * m.deflection_rad);
+    for (size_t i = 0; i < pairs.size(); ++i) {
+      double ours = 0;
+      for (const auto& p : m.pairs)
+        if (p.roller == pairs[i].roller) ours = p.load_N;
+      EXPECT_NEAR(ours, loads[i], 10.0 + 0.01 * loads[i]) << "roller " << pairs[i].roller;
+    }
+  }
+}
+
+TEST(CycloidLtca, MidFacePressureOfAStraightToothIsNearHertzLineContact) {
+  // Away from the face edges an uncrowned pair is a line contact: its mid-face peak is close to
+  // Hertz p = sqrt(F E* / (π B R')) with the pair's own load (a little lower, since the edge
+  // concentration takes a share of the load).
+  LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(24, 24));
+  const MeshLoad m = tca.Solve(350.0, 0.5);
+  ASSERT_TRUE(m.converged) << m.message;
+  for (const auto& p : m.pairs) {
+    double mid = 0;
+    for (int ix = 0; ix < p.grid.nx; ++ix)
+      mid = std::max(mid, 0.5 * (p.pressure_MPa[size_t(11) * p.grid.nx + ix] +
+                                 p.pressure_MPa[size_t(12) * p.grid.nx + ix]));
+    const double hertz = contact::LineContactPeakPressure(p.load_N, 17.0, p.effective_radius_mm,
+                                                          tca.e_star_MPa());
+    EXPECT_NEAR(mid, hertz, 0.08 * hertz) << "roller " << p.roller;
+    EXPECT_LT(mid, p.max_pressure_MPa) << "edge concentration of a straight tooth";
+  }
+}
+
+TEST(CycloidLtca, ZeroTorqueIsTheUnloadedState) {
+  LoadedTca tca(NnmDrive(), Log(0.005), Material{}, Coarse());
+  const MeshLoad m = tca.Solve(0.0, 1.0);
+  ExpectFinite(m);
+  EXPECT_EQ(m.pairs_in_contact, 0);
+  EXPECT_EQ(m.max_pressure_MPa, 0.0);
+  EXPECT_EQ(m.rotation_rad, UnloadedTca<double>(NnmDrive(), 1.0).rotation);
+  const CycleResult c = RunCycle(tca, 0.0, UniformCrankAngles(4, 2 * kPi / 16));
+  EXPECT_TRUE(std::isfinite(c.gear_ratio_peak_to_peak));
+  EXPECT_TRUE(std::isfinite(c.lte_peak_to_peak_arcsec));
+}
+
+TEST(CycloidLtca, BarelyTouchingPairIsFinite) {
+  // A tiny torque: one pair barely touching (its approach is nanometres).
+  LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse());
+  const MeshLoad m = tca.Solve(1e-6, 0.3);
+  ExpectFinite(m);
+  ASSERT_EQ(m.pairs_in_contact, 1);
+  EXPECT_GT(m.max_pressure_MPa, 0.0);
+  EXPECT_LT(m.pairs[0].approach_mm, 1e-6);
+  // A pair whose backlash is just closed by the torque: raise the torque until a second pair
+  // enters and check the state on both sides of that point stays finite and continuous.
+  double lo = 1.0, hi = 350.0;
+  for (int k = 0; k < 12; ++k) {
+    const double mid = std::sqrt(lo * hi);
+    (tca.Solve(mid, 0.3).pairs_in_contact >= 2 ? hi : lo) = mid;
+  }
+  const MeshLoad a = tca.Solve(lo, 0.3), b = tca.Solve(hi, 0.3);
+  ExpectFinite(a);
+  ExpectFinite(b);
+  EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.05 * b.max_pressure_MPa);
+}
+
+TEST(CycloidLtca, LteTendsToTheUnloadedTeAsTheTorqueVanishes) {
+  // Crowned (point-like) contact on a coarse grid, where the cell centres miss the contact point
+  // by half a cell: the deflection must still vanish with the torque.
+  Crowning fcm;
+  fcm.type = CrowningType::kFull;
+  fcm.radius_mm = 3000;
+  LoadedTca tca(NnmDrive(), fcm, Material{}, Coarse());
+  const double beta0 = UnloadedTca<double>(NnmDrive(), 0.4).rotation;
+  const MeshLoad m = tca.Solve(1e-6, 0.4);
+  ExpectFinite(m);
+  EXPECT_NEAR(m.rotation_rad, beta0, 1e-9);  // 2e-4 arcsec
+  EXPECT_GT(m.rotation_rad, beta0);
+}
+
+TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
+  // Memory from a light load makes the first iteration at a heavy load mispredict the pair laws
+  // (too compliant: too large a deflection, pairs that then lose contact again). The end state
+  // must equal a fresh solve.
+  LoadedTca warm(NnmDrive(), Log(0.005), Material{}, Coarse());
+  warm.Solve(2.0, 0.8);
+  const MeshLoad a = warm.Solve(500.0, 0.8);
+  LoadedTca fresh(NnmDrive(), Log(0.005), Material{}, Coarse());
+  const MeshLoad b = fresh.Solve(500.0, 0.8);
+  ASSERT_TRUE(a.converged && b.converged);
+  ExpectFinite(a);
+  EXPECT_EQ(a.pairs_in_contact, b.pairs_in_contact);
+  EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.01 * b.max_pressure_MPa);
+  EXPECT_NEAR(a.deflection_rad, b.deflection_rad, 0.005 * b.deflection_rad);
+  // And back down: heavy-load memory at a light load.
+  const MeshLoad c = warm.Solve(2.0, 0.8);
+  LoadedTca fresh2(NnmDrive(), Log(0.005), Material{}, Coarse());
+  const MeshLoad d = fresh2.Solve(2.0, 0.8);
+  EXPECT_EQ(c.pairs_in_contact, d.pairs_in_contact);
+  EXPECT_NEAR(c.max_pressure_MPa, d.max_pressure_MPa, 0.01 * d.max_pressure_MPa);
+}
+
+TEST(CycloidLtca, VanishingLogCrowningTendsToTheStraightTooth) {
+  LoadedTca straight(NnmDrive(), Crowning{}, Material{}, Coarse());
+  LoadedTca tiny(NnmDrive(), Log(1e-9), Material{}, Coarse());
+  LoadedTca zero(NnmDrive(), Log(0.0), Material{}, Coarse());
+  const MeshLoad a = straight.Solve(350.0, 0.2), b = tiny.Solve(350.0, 0.2), c = zero.Solve(350.0, 0.2);
+  ExpectFinite(b);
+  ExpectFinite(c);
+  EXPECT_NEAR(b.max_pressure_MPa, a.max_pressure_MPa, 0.005 * a.max_pressure_MPa);
+  EXPECT_NEAR(c.max_pressure_MPa, a.max_pressure_MPa, 1e-9 * a.max_pressure_MPa);
+}
+
+TEST(CycloidLtca, CrowningMovesThePeakOffTheEdges) {
+  // A straight tooth peaks at its axial edge rows; with LCM the edge rows carry less than the middle.
+  LoadedTca straight(NnmDrive(), Crowning{}, Material{}, Coarse());
+  LoadedTca crowned(NnmDrive(), Log(0.005), Material{}, Coarse());
+  auto edge_and_mid = [](const PairLoad& p) {
+    double edge = 0, mid = 0;
+    for (int ix = 0; ix < p.grid.nx; ++ix) {
+      edge = std::max({edge, p.pressure_MPa[ix], p.pressure_MPa[size_t(p.grid.ny - 1) * p.grid.nx + ix]});
+      mid = std::max(mid, p.pressure_MPa[size_t(p.grid.ny / 2) * p.grid.nx + ix]);
+    }
+    return std::pair<double, double>(edge, mid);
+  };
+  for (const auto& p : straight.Solve(350.0, 1.1).pairs) {
+    const auto [edge, mid] = edge_and_mid(p);
+    EXPECT_GT(edge, mid);
+  }
+  for (const auto& p : crowned.Solve(350.0, 1.1).pairs) {
+    const auto [edge, mid] = edge_and_mid(p);
+    EXPECT_LT(edge, mid);
+  }
+}
+
+TEST(CycloidLtca, LteRepeatsEveryMeshPeriod) {
+  LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(12, 12));
+  const double period = 2 * kPi / 16;
+  const MeshLoad a = tca.Solve(350.0, 0.1), b = tca.Solve(350.0, 0.1 + 3 * period);
+  EXPECT_NEAR(a.rotation_rad, b.rotation_rad, 1e-3 * a.rotation_rad);
+  EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 1e-3 * a.max_pressure_MPa);
+}
+
+TEST(CycloidLtca, BadInputIsRejected) {
+  Drive d = NnmDrive();
+  d.eccentricity_mm = 7.0;
+  EXPECT_THROW(LoadedTca(d, Crowning{}, Material{}, Coarse()), std::invalid_argument);
+  Crowning c;
+  c.type = CrowningType::kFull;
+  c.radius_mm = 5.0;  // smaller than half the face
+  EXPECT_THROW(LoadedTca(NnmDrive(), c, Material{}, Coarse()), std::invalid_argument);
+  LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse());
+  EXPECT_THROW(tca.Solve(-1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(tca.Solve(std::nan(""), 0.0), std::invalid_argument);
+}
+
+// --- The study kinds through the CLI ---
+
+std::string StudyJson(const std::string& crowning, const std::string& analysis) {
+  return R"({"study": "cycloid_ltca", "name": "test",
+    "drive": {"teeth": 15, "rollers": 16, "roller_position_radius_mm": 90, "roller_radius_mm": 7.2,
+              "eccentricity_mm": 4.5, "face_width_mm": 17},
+    "modification": {"delta_position_um": -16, "delta_radius_um": -8},
+    "crowning": )" + crowning + R"(,
+    "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
+    "load": {"torque_Nm": 350},
+    "analysis": )" + analysis + "}";
+}
+
+TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
+  const auto dir = camopt::testing::TempDir("cycloid-ltca");
+  camopt::testing::WriteFile(dir / "s.json", StudyJson(R"({"type": "partial", "radius_mm": 4500, "flat_length_mm": 13.6})",
+                                                       R"({"crank_angles_deg": [0, 120, 300], "grid": [12, 10]})"));
+  const auto r = camopt::testing::RunCamopt("run " + (dir / "s.json").string() + " --out " +
+                                            (dir / "out").string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
+  for (const char* k : {"max_contact_stress_MPa", "lte_peak_to_peak_arcsec", "lte_mean_abs_arcsec",
+                        "gear_ratio_peak_to_peak", "max_pairs_in_contact", "axial_cell_mm"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_NEAR(j["axial_cell_mm"].get<double>(), 1.7, 1e-12);
+  ASSERT_EQ(j["per_angle"].size(), 3u);
+  EXPECT_NEAR(j["per_angle"][1]["crank_angle_deg"].get<double>(), 120.0, 1e-9);
+  EXPECT_GE(j["per_angle"][1]["pairs_in_contact"].get<int>(), 1);
+  // 120° and 300° are 8 mesh periods apart: the same state.
+  EXPECT_NEAR(j["per_angle"][1]["max_contact_stress_MPa"].get<double>(),
+              j["per_angle"][2]["max_contact_stress_MPa"].get<double>(), 1e-3 * j["max_contact_stress_MPa"].get<double>());
+  for (const char* f : {"per_angle.csv", "backlash.csv", "pressure_map.svg", "lte.svg", "tooth.dxf"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+}
+
+TEST(CycloidStudies, ExamplesRunOnACoarseGrid) {
+  // Every shipped example parses and runs (with its analysis made coarse to keep the suite fast).
+  for (const char* name : {"cycloid_ltca_nnm_none", "cycloid_ltca_nnm_fcm", "cycloid_ltca_nnm_pcm",
+                           "cycloid_ltca_nnm_lcm", "cycloid_crowning_tuning_nnm"}) {
+    const std::string file = camopt::testing::SourcePath("studies/examples/") + name + ".json";
+    nlohmann::json j = studies::LoadStudyFile(file);
+    ASSERT_TRUE(j.contains("analysis")) << name;
+    j["analysis"]["grid"] = {8, 8};
+    if (j["analysis"].contains("crank_angle_steps")) j["analysis"]["crank_angle_steps"] = 3;
+    if (j.contains("tuning")) {
+      j["analysis"]["crank_angles_per_mesh_period"] = 2;
+      j["tuning"]["curve_points"] = 3;
+      j["tuning"]["max_evaluations"] = 3;
+    }
+    studies::RunContext ctx;
+    ctx.study_file = file;
+    ctx.quiet = true;
+    const studies::Outputs out = studies::RunStudy(j, ctx);
+    ASSERT_TRUE(out.files().count("result.json")) << name;
+  }
+}
+
+TEST(CycloidStudies, LtcaBadInputExitsWithCode2) {
+  const auto dir = camopt::testing::TempDir("cycloid-bad");
+  camopt::testing::WriteFile(dir / "a.json", StudyJson(R"({"type": "elliptic"})", "{}"));
+  auto r = camopt::testing::RunCamopt("run " + (dir / "a.json").string() + " --out " + (dir / "o").string() + " --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("/crowning/type"), std::string::npos) << r.stderr_text;
+  std::string s = StudyJson(R"({"type": "none"})", "{}");
+  s.replace(s.find("\"eccentricity_mm\": 4.5"), 22, "\"eccentricity_mm\": 7.5");
+  camopt::testing::WriteFile(dir / "b.json", s);
+  r = camopt::testing::RunCamopt("run " + (dir / "b.json").string() + " --out " + (dir / "o").string() + " --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("infeasible"), std::string::npos) << r.stderr_text;
+}
+
+TEST(CycloidStudies, CrowningTuningFindsAFeasibleCoefficient) {
+  const auto dir = camopt::testing::TempDir("cycloid-tuning");
+  camopt::testing::WriteFile(dir / "t.json", R"({"study": "cycloid_crowning_tuning", "name": "t",
+    "drive": {"teeth": 15, "rollers": 16, "roller_position_radius_mm": 90, "roller_radius_mm": 7.2,
+              "eccentricity_mm": 4.5, "face_width_mm": 17},
+    "modification": {"delta_position_um": -16, "delta_radius_um": -8},
+    "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
+    "load": {"design_torque_Nm": 350, "max_torque_Nm": 550},
+    "tuning": {"coefficient_mm": [0.0, 0.02], "curve_points": 4, "max_evaluations": 4},
+    "analysis": {"crank_angles_per_mesh_period": 2, "grid": [10, 10]}})");
+  const auto r = camopt::testing::RunCamopt("run " + (dir / "t.json").string() + " --out " +
+                                            (dir / "out").string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
+  EXPECT_TRUE(j["feasible"].get<bool>());
+  EXPECT_GE(j["tuned_edge_margin_at_max_torque_um"].get<double>(), 0.0);
+  // f = 0 (a straight tooth) touches the edges: infeasible, so the tuned f is above it.
+  EXPECT_LT(j["curve"][0]["edge_margin_at_max_torque_um"].get<double>(), 0.0);
+  EXPECT_GT(j["tuned_coefficient_mm"].get<double>(), 0.0);
+  // The tuned stress is no worse than any feasible point of the scan.
+  for (const auto& c : j["curve"])
+    if (c["edge_margin_at_max_torque_um"].get<double>() >= 0) {
+      EXPECT_LE(j["tuned_max_contact_stress_MPa"].get<double>(), c["max_contact_stress_MPa"].get<double>() + 1e-9);
+    }
+}
+
+}  // namespace
+}  // namespace camopt::cycloid
