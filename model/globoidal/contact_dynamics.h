@@ -1,0 +1,109 @@
+// Contact-force dynamics of the globoidal cam's turret (paper §4, eqs. 10–14): the Adams impact
+// force F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ between each roller and its flank of the rib, with
+// K = (4/3) √R E* (eq. 11), 1/R = 1/R₁ + 1/R₂ (eq. 12) and 1/E* = (1−μ₁²)/E₁ + (1−μ₂²)/E₂
+// (eq. 13). The cam turns at a prescribed speed; the turret is one rigid body on its axis
+// (inertia J) with a constant load torque; its swing ψ is integrated by classical fixed-step RK4.
+//
+// Penetration of roller j: the roller axis (at the contact arm l_c) is displaced from its
+// kinematic position by l_c p (ψ − φ_i(θ)) along e_φ; the part of that along the contact normal
+// n_j is the penetration, δ_j = l_c p (ψ − φ_i) (e_φ · n_j) (small deflection, geometry at the
+// kinematic position). The force on the roller is −F_j n_j; its moment about the turret axis
+// drives ψ. Decisions (docs/globoidal.md): no adhesion (F ≥ 0), zero backlash, contact at the
+// roller middle l_c = R_e unless given.
+//
+// Units: mm, N, s; torque in N·mm, inertia in N·mm·s² (= 10⁻³ kg·m²).
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "model/common/scalar.h"
+#include "model/globoidal/globoidal.h"
+
+namespace camopt::globoidal {
+
+/// Adams STEP(x, x0, h0, x1, h1): h0 below x0, h1 above x1, the cubic h0 + (h1−h0) s²(3 − 2s),
+/// s = (x − x0)/(x1 − x0), between (C¹ at both ends, so the branch choice is continuous).
+template <typename T>
+T Step(const T& x, double x0, double h0, double x1, double h1) {
+  if (Value(x) <= x0) return T(h0);
+  if (Value(x) >= x1) return T(h1);
+  const T s = (x - T(x0)) / T(x1 - x0);
+  return T(h0) + T(h1 - h0) * s * s * (T(3.0) - T(2.0) * s);
+}
+
+/// Eq. (13): effective modulus E* [MPa].
+template <typename T>
+T EffectiveModulus(const T& e1, const T& nu1, const T& e2, const T& nu2) {
+  return T(1.0) / ((T(1.0) - nu1 * nu1) / e1 + (T(1.0) - nu2 * nu2) / e2);
+}
+
+/// Eqs. (11)–(12): K = (4/3) √R E*, 1/R = 1/R₁ + 1/R₂ [N/mm^1.5]. R₂ may be negative (concave).
+template <typename T>
+T ContactStiffness(const T& r1, const T& r2, const T& e_star) {
+  using std::sqrt;
+  const T r = T(1.0) / (T(1.0) / r1 + T(1.0) / r2);
+  return T(4.0) / T(3.0) * sqrt(r) * e_star;
+}
+
+/// Eq. (10) with the damping of eq. (14): F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ for δ > 0, never
+/// negative (no adhesion); 0 without penetration. The force is continuous in δ (both terms vanish
+/// at δ = 0), so branching on the value of δ keeps it continuous.
+template <typename T>
+T ImpactForce(const T& delta, const T& delta_rate, double stiffness, double exponent,
+              double c_max, double depth) {
+  using std::pow;
+  if (Value(delta) <= 0.0) return T(0.0);
+  const T f = T(stiffness) * pow(delta, T(exponent)) + Step(delta, 0.0, 0.0, depth, c_max) * delta_rate;
+  return PositivePart(f);
+}
+
+struct ContactMaterial {
+  double cam_modulus_MPa = 206000.0, cam_poisson = 0.3;
+  double roller_modulus_MPa = 206000.0, roller_poisson = 0.3;
+  double exponent = 1.5;             ///< e of eq. (10)
+  double max_damping_Ns_per_mm = 10.0;  ///< C_max of eq. (14)
+  double penetration_depth_mm = 0.01;   ///< d of eq. (14)
+};
+
+struct DynamicsInput {
+  GloboidalCam<double> cam;
+  ContactMaterial contact;
+  double inertia_Nmms2 = 10.0;     ///< turret inertia J [N·mm·s²] (0.01 kg·m²)
+  double load_torque_Nmm = 0.0;    ///< constant load on the turret, acting against direction p
+  double cam_speed_rad_s = 0.0;    ///< ω (0 holds the cam still)
+  double start_cam_angle_rad = 0.0;  ///< θ at t = 0: θ(t) = θ₀ + ω t
+  double end_time_s = 0.1;
+  double time_step_s = 1e-5;
+  int output_every = 10;           ///< keep every n-th step
+  double contact_arm_mm = -1.0;    ///< l_c; ≤ 0 means R_e
+  bool start_static = true;        ///< start at the static deflection under the load at θ₀
+  double initial_swing_rate_rad_s = 0.0;  ///< added to the kinematic rate at t = 0
+};
+
+struct DynamicsSample {
+  double time_s, cam_angle_rad;
+  double swing_rad, swing_rate_rad_s, swing_acc_rad_s2;      ///< ψ, ψ̇, ψ̈ (dynamic)
+  double kin_swing_rad, kin_rate_rad_s, kin_acc_rad_s2;      ///< φ_i and its time derivatives
+  double penetration_mm[2], force_N[2];                       ///< rollers 1 and 2
+  double energy_Nmm;  ///< J ψ̇²/2 + Σ K δ^(e+1)/(e+1) (kinetic + elastic)
+};
+
+struct DynamicsResult {
+  std::vector<DynamicsSample> samples;
+  double stiffness[2] = {0, 0};  ///< K at θ₀ for rollers 1, 2 [N/mm^1.5] (for reference)
+  int steps = 0;
+};
+
+/// Contact stiffness of roller j at cam angle θ from the geometry (eq. 11 with R₁ = R and R₂
+/// the working surface's radius across the roller at the contact arm).
+double RollerStiffness(const DynamicsInput& in, int j, double theta);
+
+/// Integrates the turret swing over [0, end_time].
+DynamicsResult SimulateDynamics(const DynamicsInput& in);
+
+/// Quasi-static force on the loaded roller: |J φ̈_i ω² + p T_load| /(l_c cos α) [N], where α is
+/// the pressure angle of the roller that carries the torque.
+double QuasiStaticForce(const DynamicsInput& in, double theta);
+
+}  // namespace camopt::globoidal

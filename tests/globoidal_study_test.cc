@@ -1,0 +1,227 @@
+// The globoidal_cam study through the CLI: the paper's example end to end (the paper's printed
+// numbers, the exported surfaces against an independent roller-axis construction, the STL mesh),
+// and bad input rejected with exit code 2 and the JSON path.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "model/common/scalar.h"
+#include "tests/test_util.h"
+
+namespace camopt {
+namespace {
+
+using camopt::testing::ReadFile;
+using camopt::testing::RunCamopt;
+using camopt::testing::SourcePath;
+using camopt::testing::TempDir;
+using camopt::testing::WriteFile;
+using nlohmann::json;
+
+constexpr double kDeg = kPi / 180.0;
+
+json Example() {
+  return json::parse(ReadFile(SourcePath("studies/examples/globoidal_cam_paper.json")));
+}
+
+// Columns of a CSV by name.
+std::map<std::string, std::vector<double>> ReadCsv(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  {
+    std::istringstream h(line);
+    std::string n;
+    while (std::getline(h, n, ',')) names.push_back(n);
+  }
+  std::map<std::string, std::vector<double>> cols;
+  while (std::getline(in, line)) {
+    std::istringstream r(line);
+    std::string v;
+    for (size_t i = 0; i < names.size() && std::getline(r, v, ','); ++i)
+      cols[names[i]].push_back(std::stod(v));
+  }
+  return cols;
+}
+
+// Modified sine, written here from its definition (independent of model/motion): the rise's
+// peak acceleration coefficient is 4π²/(4 + π).
+double ModifiedSineCa() { return 4 * kPi * kPi / (4 + kPi); }
+
+TEST(GloboidalStudy, PaperExampleThroughTheCli) {
+  const auto dir = TempDir("globoidal-paper");
+  const auto res = RunCamopt("run " + SourcePath("studies/examples/globoidal_cam_paper.json") +
+                             " --quiet --out " + dir.string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const json r = json::parse(ReadFile(dir / "result.json"));
+  // Eqs. (8)–(9) and (7).
+  EXPECT_DOUBLE_EQ(r["roller_axis_limits_mm"]["l1"].get<double>(), 25.5);
+  EXPECT_DOUBLE_EQ(r["roller_axis_limits_mm"]["l2"].get<double>(), 19.5);
+  EXPECT_NEAR(r["initial_angles_deg"]["top_dead_point"]["roller_1"].get<double>(), 12.5, 1e-12);
+  EXPECT_NEAR(r["initial_angles_deg"]["top_dead_point"]["roller_2"].get<double>(), -32.5, 1e-12);
+  EXPECT_NEAR(r["initial_angles_deg"]["bottom_dead_point"]["roller_1"].get<double>(), 32.5, 1e-12);
+  EXPECT_NEAR(r["initial_angles_deg"]["bottom_dead_point"]["roller_2"].get<double>(), -12.5, 1e-12);
+  EXPECT_NEAR(r["roller_angle_range_deg"]["roller_1"][0].get<double>(), 12.5, 1e-9);
+  EXPECT_NEAR(r["roller_angle_range_deg"]["roller_1"][1].get<double>(), 32.5, 1e-9);
+  EXPECT_NEAR(r["roller_angle_range_deg"]["roller_2"][0].get<double>(), -32.5, 1e-9);
+  EXPECT_FALSE(r["undercut"].get<bool>());
+  EXPECT_GT(r["min_undercut_margin"].get<double>(), 0.0);
+  // Peak acceleration of the swing per rad²: Ca φ_f/θ_f1² on the 60° rise.
+  EXPECT_NEAR(r["motion"]["peak_acceleration_deg_per_rad2"].get<double>(),
+              ModifiedSineCa() * 20.0 / std::pow(60 * kDeg, 2), 1e-3);
+  // The largest pressure angle from the closed form tan α = l φ'/(C − l cos φ), maximised here
+  // by brute force over the rise (peak φ' at its middle for l = l₁, checked on a grid).
+  {
+    double best = 0;
+    const double k = 1 / (4 + kPi), b = 60 * kDeg, f = 20 * kDeg;
+    for (int i = 0; i <= 6000; ++i) {
+      const double u = i / 6000.0;
+      double s, v;
+      if (u <= 0.125) {
+        s = k * (kPi * u - std::sin(4 * kPi * u) / 4), v = k * kPi * (1 - std::cos(4 * kPi * u));
+      } else if (u < 0.875) {
+        const double a = kPi / 3 + 4 * kPi / 3 * u;
+        s = k * (2 + kPi * u - 2.25 * std::sin(a)), v = k * kPi * (1 - 3 * std::cos(a));
+      } else {
+        s = k * (4 + kPi * u - std::sin(4 * kPi * u) / 4), v = k * kPi * (1 - std::cos(4 * kPi * u));
+      }
+      for (double phi0 : {12.5 * kDeg, -32.5 * kDeg})
+        for (double l : {19.5, 25.5}) {
+          const double phi = phi0 + f * s, dphi = f * v / b;
+          best = std::max(best, std::atan(l * dphi / (45 - l * std::cos(phi))));
+        }
+    }
+    EXPECT_NEAR(r["max_pressure_angle_deg"].get<double>(), best / kDeg, 0.05);
+  }
+
+  // Dynamics at both speeds: the kinematic peak acceleration Ca φ_f ω²/θ_f1² (sampled), the
+  // dynamic force never below the static share of the load, and the slower run deflects less.
+  const auto& speeds = r["dynamics"]["speeds"];
+  ASSERT_EQ(speeds.size(), 2u);
+  for (const auto& s : speeds) {
+    const double w = s["cam_speed_rpm"].get<double>() * 2 * kPi / 60;
+    const double expect = ModifiedSineCa() * 20 * kDeg * w * w / std::pow(60 * kDeg, 2);
+    EXPECT_NEAR(s["peak_turret_acceleration_kinematic_rad_s2"].get<double>() / expect, 1.0, 2e-3);
+    EXPECT_GT(s["max_force_roller_1_N"].get<double>(), 500e3 / 22.0);
+    EXPECT_GE(s["max_quasi_static_force_N"].get<double>(), 500e3 / 22.0);
+  }
+  EXPECT_LT(speeds[1]["peak_turret_acceleration_dynamic_rad_s2"].get<double>(),
+            speeds[0]["peak_turret_acceleration_dynamic_rad_s2"].get<double>());
+
+  for (const char* f : {"series.csv", "dynamics_600rpm.csv", "dynamics_120rpm.csv",
+                        "svaj_displacement.svg", "svaj_velocity.svg", "svaj_acceleration.svg",
+                        "svaj_jerk.svg", "pressure_angle.svg", "contact_forces_600rpm.svg",
+                        "contact_forces_120rpm.svg", "turret_velocity_600rpm.svg",
+                        "turret_acceleration_120rpm.svg", "working_surfaces.csv",
+                        "working_surfaces.stl"})
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+
+  // The exported working surfaces: every point is R = 4 mm from the roller axis built here from
+  // eq. (4) with the roller angle of series.csv (the export grid is every second series row).
+  const auto series = ReadCsv(ReadFile(dir / "series.csv"));
+  const auto cloud = ReadCsv(ReadFile(dir / "working_surfaces.csv"));
+  ASSERT_EQ(cloud.at("x_mm").size(), 2u * 360 * 6);
+  for (size_t i = 0; i < cloud.at("x_mm").size(); i += 7) {
+    const int j = int(cloud.at("roller")[i]);
+    const double t = cloud.at("cam_angle_deg")[i] * kDeg;
+    const size_t row = size_t(std::lround(cloud.at("cam_angle_deg")[i] * 2));
+    const double phi = series.at(j == 1 ? "roller_1_angle_deg" : "roller_2_angle_deg")[row] * kDeg;
+    const double px = 45 * std::sin(t), py = 45 * std::cos(t);
+    const double qx = -std::cos(phi) * std::sin(t), qy = -std::cos(phi) * std::cos(t),
+                 qz = std::sin(phi);
+    const double vx = cloud.at("x_mm")[i] - px, vy = cloud.at("y_mm")[i] - py,
+                 vz = cloud.at("z_mm")[i];
+    const double along = vx * qx + vy * qy + vz * qz;
+    const double dist = std::sqrt(vx * vx + vy * vy + vz * vz - along * along);
+    EXPECT_NEAR(dist, 4.0, 1e-6) << i;
+    EXPECT_NEAR(along, cloud.at("axis_mm")[i], 1e-6) << i;
+  }
+  // ASCII STL: 2 rollers × 360 × 5 cells × 2 triangles, unit facet normals.
+  const std::string stl = ReadFile(dir / "working_surfaces.stl");
+  EXPECT_EQ(stl.rfind("solid ", 0), 0u);
+  size_t facets = 0, pos = 0;
+  while ((pos = stl.find("facet normal", pos)) != std::string::npos) ++facets, ++pos;
+  EXPECT_EQ(facets, 2u * 360 * 5 * 2);
+  EXPECT_NE(stl.find("endsolid"), std::string::npos);
+}
+
+TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
+  const auto dir = TempDir("globoidal-undercut");
+  json study = Example();
+  study["cam"]["roller_radius_mm"] = 7.5;
+  study["cam"]["roller_angle_deg"] = 60;
+  study["motion"] = json::parse(R"([{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 12},
+      {"law": "dwell", "cam_angle_deg": 108}, {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 135},
+      {"law": "dwell", "cam_angle_deg": 105}])");
+  WriteFile(dir / "study.json", study.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                             (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const json r = json::parse(ReadFile(dir / "out" / "result.json"));
+  EXPECT_TRUE(r["undercut"].get<bool>());
+  EXPECT_LE(r["min_undercut_margin"].get<double>(), 0.0);
+  EXPECT_TRUE(r["dynamics"].contains("skipped"));
+}
+
+struct BadCase {
+  const char* name;
+  const char* patch;  // a JSON merge patch applied to the example
+  const char* path;   // the JSON path the message must name
+  const char* words;  // and a phrase it must contain
+};
+
+class GloboidalBadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(GloboidalBadInput, ExitCode2AndTheJsonPath) {
+  const BadCase& c = GetParam();
+  const auto dir = TempDir(std::string("globoidal-bad-") + c.name);
+  json study = Example();
+  study.merge_patch(json::parse(c.patch));
+  WriteFile(dir / "study.json", study.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                             (dir / "out").string());
+  EXPECT_EQ(res.exit_code, 2) << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find(std::string(": ") + c.path + ": "), std::string::npos)
+      << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find(c.words), std::string::npos) << res.stderr_text;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "result.json"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, GloboidalBadInput,
+    ::testing::Values(
+        BadCase{"missing", R"({"cam": {"roller_radius_mm": null}})", "/cam/roller_radius_mm", "missing"},
+        BadCase{"negative", R"({"cam": {"pitch_radius_mm": -22}})", "/cam/pitch_radius_mm", "> 0"},
+        BadCase{"typo", R"({"cam": {"roler_radius_mm": 4}})", "/cam/roler_radius_mm", "unknown field"},
+        BadCase{"overlap", R"({"cam": {"roller_angle_deg": 20}})", "/cam/roller_angle_deg", "overlap"},
+        BadCase{"axis", R"({"cam": {"center_distance_mm": 28}})", "/cam/center_distance_mm",
+                "reach the cam axis"},
+        BadCase{"length", R"({"cam": {"roller_length_mm": 50}})", "/cam/roller_length_mm",
+                "turret axis"},
+        BadCase{"direction", R"({"cam": {"first_motion": "up"}})", "/cam/first_motion", "clockwise"},
+        BadCase{"law", R"({"motion": [{"law": "parabolic", "rise_deg": 20, "cam_angle_deg": 360}]})",
+                "/motion/0/law", "modified_sine"},
+        BadCase{"sum", R"({"motion": [{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 60},
+            {"law": "dwell", "cam_angle_deg": 60}, {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 135},
+            {"law": "dwell", "cam_angle_deg": 100}]})", "/motion", "355"},
+        BadCase{"swing", R"({"motion": [{"law": "modified_sine", "rise_deg": 15, "cam_angle_deg": 60},
+            {"law": "dwell", "cam_angle_deg": 60}, {"law": "modified_sine", "rise_deg": -15, "cam_angle_deg": 135},
+            {"law": "dwell", "cam_angle_deg": 105}]})", "/motion", "swing must run from 0 to"},
+        BadCase{"speed", R"({"dynamics": {"cam_speeds_rpm": [600, -120]}})", "/dynamics/cam_speeds_rpm/1",
+                "> 0"},
+        BadCase{"steps", R"({"dynamics": {"time_step_s": 1e-9}})", "/dynamics", "time steps"},
+        BadCase{"poisson", R"({"contact": {"cam_poisson": 0.7}})", "/contact/cam_poisson", "0.499"},
+        BadCase{"arm", R"({"contact": {"contact_arm_mm": 30}})", "/contact/contact_arm_mm", "[l₂, l₁]"},
+        BadCase{"jam", R"({"motion": [{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 0.5},
+            {"law": "dwell", "cam_angle_deg": 119.5}, {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 135},
+            {"law": "dwell", "cam_angle_deg": 105}]})", "/motion", "pressure angle"}));
+
+}  // namespace
+}  // namespace camopt
