@@ -479,9 +479,9 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
         o.x_label = "cam angle [deg]";
         o.y_label = "force [N]";
         out.Add("contact_forces_" + tag + ".svg",
-                SvgLinePlot({{"roller 1", dt.columns[1], dt.columns[10]},
-                             {"roller 2", dt.columns[1], dt.columns[11]},
-                             {"quasi-static", th, qs}},
+                SvgLinePlot({{"quasi-static", th, qs},
+                             {"roller 1", dt.columns[1], dt.columns[10]},
+                             {"roller 2", dt.columns[1], dt.columns[11]}},
                             o));
       }
       {

@@ -9,6 +9,7 @@
 
 #include "model/globoidal/contact_dynamics.h"
 #include "model/globoidal/paper_example.h"
+#include "tests/test_util.h"
 
 namespace camopt::globoidal {
 namespace {
@@ -161,6 +162,24 @@ TEST(GloboidalDynamics, SlowRunFollowsKinematicsAndQuasiStaticForce) {
   }
   EXPECT_LT(worst_angle, 0.05);
   EXPECT_LT(worst_force, 0.05);
+}
+
+// AD gradients of the contact law: K(R₁, R₂, E₁, μ₁, E₂, μ₂) and F(δ, δ̇) in the damping ramp
+// (δ < d) and beyond it.
+TEST(GloboidalDynamics, ContactLawGradients) {
+  auto k = [](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    return std::vector<T>{ContactStiffness(x[0], x[1], EffectiveModulus(x[2], x[3], x[4], x[5]))};
+  };
+  camopt::testing::ExpectJacobianMatchesCentralDifferences<6>(
+      k, {4.0, 9.0, 206000.0, 0.3, 190000.0, 0.28}, 1e-6, 1e-6);
+  for (double delta : {0.004, 0.02}) {
+    auto f = [](const auto& x) {
+      using T = std::decay_t<decltype(x[0])>;
+      return std::vector<T>{ImpactForce(x[0], x[1], 2e5, 1.5, 10.0, 0.01)};
+    };
+    camopt::testing::ExpectJacobianMatchesCentralDifferences<2>(f, {delta, 3.0}, 1e-6, 1e-6);
+  }
 }
 
 TEST(GloboidalDynamics, BadInputThrows) {
