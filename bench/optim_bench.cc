@@ -1,0 +1,90 @@
+// Benchmarks of the optimization layer: the LCR sizing evaluator (values and exact Jacobian), one
+// combination solved by each backend in both constraint forms, and the whole ratio −90 study.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "objectives/lcr_sizing.h"
+#include "optimizers/solver.h"
+#include "studies/study.h"
+
+namespace {
+
+using camopt::objectives::LcrConstraintForm;
+
+camopt::objectives::LcrSizingSpec Spec(LcrConstraintForm form) {
+  camopt::objectives::LcrSizingSpec s;
+  s.lobes_a = 25, s.rollers_a = 26, s.lobes_b = 35, s.rollers_b = 36;  // the −90 optimum's
+  s.output_torque_Nmm = 80000;
+  s.limits = {1500, 1050, 0.5, 1.0};
+  s.form = form;
+  return s;
+}
+
+void BM_LcrSizingValues(benchmark::State& state) {
+  const auto p = camopt::objectives::MakeLcrSizingProblem(Spec(LcrConstraintForm::kAggregate));
+  std::vector<double> x = {0.66, 32.8, 32.8, 4.1, 34.8}, y(p.evaluator->num_outputs());
+  for (auto _ : state) {
+    p.evaluator->Eval(x, y);
+    benchmark::DoNotOptimize(y.data());
+  }
+}
+BENCHMARK(BM_LcrSizingValues)->Unit(benchmark::kMicrosecond);
+
+void BM_LcrSizingJacobian(benchmark::State& state) {
+  const auto p = camopt::objectives::MakeLcrSizingProblem(Spec(LcrConstraintForm::kAggregate));
+  std::vector<double> x = {0.66, 32.8, 32.8, 4.1, 34.8}, y(p.evaluator->num_outputs()),
+                      j(y.size() * x.size());
+  for (auto _ : state) {
+    p.evaluator->EvalWithJacobian(x, y, j);
+    benchmark::DoNotOptimize(j.data());
+  }
+}
+BENCHMARK(BM_LcrSizingJacobian)->Unit(benchmark::kMicrosecond);
+
+// One combination (25/26 + 35/36), one start. Arg 0: backend index; arg 1: 0 aggregate, 1 samples.
+void BM_SolveOneCombination(benchmark::State& state) {
+  const char* backends[] = {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
+  const auto form = state.range(1) ? LcrConstraintForm::kSamples : LcrConstraintForm::kAggregate;
+  const auto p = camopt::objectives::MakeLcrSizingProblem(Spec(form));
+  camopt::optimizers::SolverOptions o;
+  o.backend = backends[state.range(0)];
+  o.max_seconds = 20;
+  camopt::optimizers::SolverResult r;
+  for (auto _ : state) r = camopt::optimizers::Solve(p, o);
+  state.SetLabel(std::string(o.backend) + (state.range(1) ? " samples" : " aggregate") + " " +
+                 camopt::optimizers::ToString(r.status));
+  state.counters["OD_mm"] = r.objective;
+  state.counters["value_evals"] = r.value_evaluations;
+  state.counters["gradient_evals"] = r.gradient_evaluations;
+}
+BENCHMARK(BM_SolveOneCombination)
+    ->Args({0, 0})->Args({1, 0})->Args({2, 0})->Args({3, 0})
+    ->Args({0, 1})->Args({1, 1})->Args({3, 1})
+    ->Unit(benchmark::kMillisecond);
+
+// The whole ratio −90 study of studies/examples/lcr_min_size.json (parse, 4 combinations × 3
+// starts, dense checks, outputs in memory), per backend.
+void BM_LcrMinSizeStudy(benchmark::State& state) {
+  // This file's folder's parent is the source tree (CMake compiles with absolute paths).
+  const auto root = std::filesystem::path(__FILE__).parent_path().parent_path();
+  std::ifstream in(root / "studies" / "examples" / "lcr_min_size.json");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  nlohmann::json study = nlohmann::json::parse(ss.str());
+  const char* backends[] = {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
+  study["optimizer"]["backend"] = backends[state.range(0)];
+  camopt::studies::RunContext ctx;
+  ctx.study_file = "lcr_min_size.json";
+  ctx.quiet = true;
+  for (auto _ : state) {
+    auto out = camopt::studies::RunStudy(study, ctx);
+    benchmark::DoNotOptimize(out.files().size());
+  }
+  state.SetLabel(backends[state.range(0)]);
+}
+BENCHMARK(BM_LcrMinSizeStudy)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+}  // namespace

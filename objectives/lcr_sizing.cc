@@ -1,0 +1,271 @@
+// The LCR sizing problem: the one file where the LCR pipeline is instantiated for
+// ceres::Jet<double, 5> (keep heavy instantiations in few translation units).
+#include "objectives/lcr_sizing.h"
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "model/lcr/cycle.h"
+#include "model/lcr/forces.h"
+#include "model/lcr/profile.h"
+
+namespace camopt::objectives {
+namespace {
+
+constexpr int kJetSize = 6;  // e, r_dA, r_dB, d_rA, d_rB, R at most
+
+struct Layout {
+  int rollers;       // roller-diameter variables: 0 (catalogue), 1 (same roller), 2 (one per cam)
+  int radius_index;  // index of R
+};
+
+Layout LayoutOf(const LcrSizingSpec& spec) {
+  const int rollers = spec.fixed_roller_diameter_mm ? 0 : (spec.same_roller ? 1 : 2);
+  return {rollers, 3 + rollers};
+}
+
+// Load period of one cam in input angle [rad] (see the header).
+double Period(const LcrSizingSpec& s, lcr::Side side) {
+  return side == lcr::Side::kInput ? 2 * kPi / s.rollers_a
+                                   : 2 * kPi * s.lobes_a / (double(s.rollers_a) * s.lobes_b);
+}
+
+template <typename T>
+lcr::Reducer<T> Design(const LcrSizingSpec& s, std::span<const T> x) {
+  const Layout l = LayoutOf(s);
+  const T rr_a = l.rollers > 0 ? x[3] / T(2.0) : T(*s.fixed_roller_diameter_mm / 2.0);
+  const T rr_b = l.rollers == 2 ? x[4] / T(2.0) : rr_a;
+  lcr::Reducer<T> r;
+  r.eccentricity = x[0];
+  r.input = {s.lobes_a, s.rollers_a, x[1], rr_a, T(s.roller_length_mm), T(s.cam_thickness_mm)};
+  r.output = {s.lobes_b, s.rollers_b, x[2], rr_b, T(s.roller_length_mm), T(s.cam_thickness_mm)};
+  return r;
+}
+
+// Reference force of the soft maximum [N]: the load limit, or 1 kN without one.
+double ForceReference(const LcrSizingSpec& s) {
+  return std::isfinite(s.limits.roller_load_N) ? s.limits.roller_load_N : 1000.0;
+}
+
+// Block sizes, in the order the evaluator writes them.
+std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
+  std::vector<std::pair<std::string, int>> sizes = {
+      {"outer_diameter_bound_mm", 1}, {"input_envelope_mm", 1},     {"output_envelope_mm", 1},
+      {"input_roller_gap_mm", 1},     {"output_roller_gap_mm", 1},  {"input_undercut_margin_mm", 1},
+      {"output_undercut_margin_mm", 1}, {"input_pitch_clearance_mm", 1},
+      {"output_pitch_clearance_mm", 1}};
+  const bool samples = s.form == LcrConstraintForm::kSamples;
+  const int na = samples ? s.samples_per_period * s.rollers_a : 1;
+  const int nb = samples ? s.samples_per_period * s.rollers_b : 1;
+  sizes.push_back({"input_roller_force_N", na});
+  sizes.push_back({"output_roller_force_N", nb});
+  if (std::isfinite(s.limits.contact_stress_MPa)) {
+    sizes.push_back({"input_stress_margin", na});
+    sizes.push_back({"output_stress_margin", nb});
+  }
+  if (s.limits.min_efficiency > 0) sizes.push_back({"mean_efficiency", 1});
+  std::vector<OutputBlock> blocks;
+  int offset = 0;
+  for (const auto& [name, size] : sizes) {
+    blocks.push_back({name, offset, size});
+    offset += size;
+  }
+  return blocks;
+}
+
+// Roller forces and Hertz capacity margins of one cam over its load period.
+template <typename T>
+void SideSamples(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side,
+                 std::vector<T>& force, std::vector<T>& margin, std::vector<bool>& loaded) {
+  const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
+  const lcr::Stages stages{true, false, false};
+  const lcr::CamSide<T>& cam = r.side(side);
+  const double e_star = s.material.composite_modulus_MPa();
+  const double p2 = s.limits.contact_stress_MPa * s.limits.contact_stress_MPa;
+  const T load_per_radius = T(e_star / kPi) / cam.contact_length();  // E*/(π L)
+  const double period = Period(s, side);
+  for (int i = 0; i < s.samples_per_period; ++i) {
+    const lcr::AngleLoads<T> a =
+        lcr::AnalyzeAngle(r, s.material, load, T(period * i / s.samples_per_period), stages);
+    const lcr::SideLoads<T>& sl = side == lcr::Side::kInput ? a.input : a.output;
+    for (size_t k = 0; k < sl.force.size(); ++k) {
+      force.push_back(sl.force[k]);
+      loaded.push_back(Value(sl.force[k]) > 0);
+      if (std::isfinite(p2)) {
+        const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * sl.contacts[k].curvature);
+        margin.push_back((T(p2) * r_eff - sl.force[k] * load_per_radius) / (T(p2) * cam.roller_radius));
+      }
+    }
+  }
+}
+
+template <typename T>
+void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
+  const Layout l = LayoutOf(s);
+  const lcr::Reducer<T> r = Design(s, x);
+  const T radius = x[l.radius_index];
+  size_t o = 0;
+  y[o++] = T(2.0) * radius;
+  y[o++] = r.input.turret_radius + r.input.roller_radius - radius;
+  y[o++] = r.output.turret_radius + r.output.roller_radius - radius;
+  y[o++] = lcr::RollerGap(r.input);
+  y[o++] = lcr::RollerGap(r.output);
+  // Exact margin 1/κ_max − r_r; the maximiser of κ is found on values, so its derivative is exact
+  // by the envelope theorem (lcr::MaxPitchCurvature).
+  y[o++] = lcr::UndercutMargin(r.input, r.eccentricity);
+  y[o++] = lcr::UndercutMargin(r.output, r.eccentricity);
+  for (const lcr::CamSide<T>* c : {&r.input, &r.output})
+    y[o++] = c->turret_radius * T(1.0 - s.pitch_clearance_fraction) -
+             r.eccentricity * T(c->pitch_factor());
+  const bool samples = s.form == LcrConstraintForm::kSamples;
+  const bool stress = std::isfinite(s.limits.contact_stress_MPa);
+  std::vector<T> force[2], margin[2];
+  std::vector<bool> loaded[2];
+  T efficiency(0.0);
+  try {
+    SideSamples(s, r, lcr::Side::kInput, force[0], margin[0], loaded[0]);
+    SideSamples(s, r, lcr::Side::kOutput, force[1], margin[1], loaded[1]);
+    if (s.limits.min_efficiency > 0) {
+      // The efficiency mixes both cams' loads (and |F_r|), so it has no short period: a full
+      // revolution. Mean of the per-angle efficiency, as lcr_analysis reports it.
+      const lcr::LoadCase load{s.output_torque_Nmm, s.friction_coefficient, 0.0};
+      const lcr::Stages stages{true, false, true};
+      for (int i = 0; i < s.efficiency_samples; ++i)
+        efficiency += lcr::AnalyzeAngle(r, s.material, load, T(2 * kPi * i / s.efficiency_samples), stages)
+                          .efficiency;
+      efficiency /= T(double(s.efficiency_samples));
+    }
+  } catch (const std::domain_error&) {
+    // No roller can carry load (degenerate geometry): a non-finite output that the adapters
+    // turn into an evaluation error.
+    for (; o < y.size(); ++o) y[o] = T(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  for (int side = 0; side < 2; ++side) {
+    if (samples) {
+      for (const T& f : force[side]) y[o++] = f;
+    } else {
+      // Soft maximum on forces relative to a fixed reference (the load limit). A data-dependent
+      // reference (the current maximum) would make the aggregate kink where the largest sample
+      // changes, and its Jet derivative would omit d(ref)/dx.
+      std::vector<T> scaled(force[side].size());
+      for (size_t k = 0; k < scaled.size(); ++k) scaled[k] = force[side][k] / T(ForceReference(s));
+      y[o++] = T(ForceReference(s)) * SoftMax(scaled, s.sharpness);
+    }
+  }
+  for (int side = 0; side < 2 && stress; ++side) {
+    if (samples) {
+      for (const T& m : margin[side]) y[o++] = m;
+    } else {
+      // Soft minimum over loaded contacts only; at an unloaded contact the margin is 1 − r_r κ,
+      // far above the minimum, so a roller entering or leaving the loaded set carries negligible
+      // weight (e^{−k Δ}) and the aggregate stays continuous to that order.
+      std::vector<T> m;
+      for (size_t k = 0; k < margin[side].size(); ++k)
+        if (loaded[side][k]) m.push_back(margin[side][k]);
+      y[o++] = SoftMin(m, s.sharpness);
+    }
+  }
+  if (s.limits.min_efficiency > 0) y[o++] = efficiency;
+}
+
+}  // namespace
+
+lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double> x) {
+  return Design<double>(spec, x);
+}
+
+Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
+  if (spec.lobes_a < 1 || spec.rollers_a <= spec.lobes_a || spec.lobes_b < 1 ||
+      spec.rollers_b <= spec.lobes_b)
+    throw std::invalid_argument("LCR sizing: invalid lobe/roller counts");
+  if (spec.samples_per_period < 2) throw std::invalid_argument("LCR sizing: samples_per_period < 2");
+  const Layout l = LayoutOf(spec);
+  Problem p;
+  const std::vector<double> x0 = LcrStartingPoints(spec, 1).front();
+  const double e0 = x0[0], ra0 = x0[1], rb0 = x0[2], d0 = l.rollers > 0 ? x0[3] : 0.0;
+  p.variables.push_back({"eccentricity_mm", spec.eccentricity_mm[0], spec.eccentricity_mm[1], e0, 1.0});
+  p.variables.push_back({"input_turret_radius_mm", spec.turret_radius_mm[0], spec.turret_radius_mm[1], ra0, 10.0});
+  p.variables.push_back({"output_turret_radius_mm", spec.turret_radius_mm[0], spec.turret_radius_mm[1], rb0, 10.0});
+  if (l.rollers == 1)
+    p.variables.push_back({"roller_diameter_mm", spec.roller_diameter_mm[0], spec.roller_diameter_mm[1], d0, 5.0});
+  for (const char* side : {"input", "output"})
+    if (l.rollers == 2)
+      p.variables.push_back({std::string(side) + "_roller_diameter_mm", spec.roller_diameter_mm[0],
+                             spec.roller_diameter_mm[1], d0, 5.0});
+  p.variables.push_back({"outer_radius_mm", 0.0, kInf, x0.back(), 10.0});
+
+  const LcrSizingSpec s = spec;
+  p.evaluator = MakeEvaluator<kJetSize>(p.num_vars(), Blocks(spec),
+                                        [s](auto x, auto y) { Evaluate(s, x, y); });
+  p.objective = "outer_diameter_bound_mm";
+  p.objective_scale = 100.0;
+  p.constraints = {{"input_envelope_mm", -kInf, 0.0, 10.0},
+                   {"output_envelope_mm", -kInf, 0.0, 10.0},
+                   {"input_roller_gap_mm", spec.limits.roller_gap_mm, kInf, 1.0},
+                   {"output_roller_gap_mm", spec.limits.roller_gap_mm, kInf, 1.0},
+                   {"input_undercut_margin_mm", spec.limits.undercut_margin_mm, kInf, 1.0},
+                   {"output_undercut_margin_mm", spec.limits.undercut_margin_mm, kInf, 1.0},
+                   {"input_pitch_clearance_mm", 0.0, kInf, 10.0},
+                   {"output_pitch_clearance_mm", 0.0, kInf, 10.0}};
+  if (std::isfinite(spec.limits.roller_load_N)) {
+    p.constraints.push_back({"input_roller_force_N", -kInf, spec.limits.roller_load_N, spec.limits.roller_load_N});
+    p.constraints.push_back({"output_roller_force_N", -kInf, spec.limits.roller_load_N, spec.limits.roller_load_N});
+  }
+  if (std::isfinite(spec.limits.contact_stress_MPa)) {
+    p.constraints.push_back({"input_stress_margin", 0.0, kInf, 1.0});
+    p.constraints.push_back({"output_stress_margin", 0.0, kInf, 1.0});
+  }
+  if (spec.limits.min_efficiency > 0)
+    p.constraints.push_back({"mean_efficiency", spec.limits.min_efficiency, kInf, 0.1});
+  return p;
+}
+
+std::vector<std::vector<double>> LcrStartingPoints(const LcrSizingSpec& spec, int count) {
+  const Layout l = LayoutOf(spec);
+  const auto mid = [](const std::array<double, 2>& b) { return 0.5 * (b[0] + b[1]); };
+  const double d0 = spec.fixed_roller_diameter_mm.value_or(mid(spec.roller_diameter_mm));
+  const double k_max = std::max(double(spec.rollers_a) / (spec.rollers_a - spec.lobes_a),
+                                double(spec.rollers_b) / (spec.rollers_b - spec.lobes_b));
+  // Each turret where the rollers have room (gap limit with some to spare), the eccentricity where
+  // the pitch point e n/(n − m) sits at a fraction of the smaller turret radius (the optima of the
+  // −90 study lie at 0.5–0.7). Start i varies both.
+  const double pitch_fraction[] = {0.5, 0.3, 0.7, 0.4, 0.6};
+  const double room_factor[] = {1.3, 1.1, 1.6, 1.2, 1.45};
+  std::vector<std::vector<double>> starts;
+  for (int i = 0; i < count; ++i) {
+    const int j = i % 5;
+    auto turret0 = [&](int n) {
+      const double room = room_factor[j] * (d0 + std::max(spec.limits.roller_gap_mm, 0.0)) /
+                          (2 * std::sin(kPi / n));
+      return std::clamp(room, spec.turret_radius_mm[0], spec.turret_radius_mm[1]);
+    };
+    const double ra = turret0(spec.rollers_a), rb = turret0(spec.rollers_b);
+    const double e = std::clamp(pitch_fraction[j] * std::min(ra, rb) / k_max, spec.eccentricity_mm[0],
+                                spec.eccentricity_mm[1]);
+    std::vector<double> x = {e, ra, rb};
+    for (int k = 0; k < l.rollers; ++k) x.push_back(d0);
+    x.push_back(std::max(ra, rb) + d0 / 2);
+    starts.push_back(x);
+  }
+  return starts;
+}
+
+std::vector<LobeCombination> LobeCombinations(long target_ratio, int max_lobes,
+                                              const std::vector<int>& differences) {
+  std::vector<LobeCombination> out;
+  for (int ma = 1; ma <= max_lobes; ++ma)
+    for (int da : differences)
+      for (int mb = 1; mb <= max_lobes; ++mb)
+        for (int db : differences) {
+          const long na = ma + da, nb = mb + db;
+          const long num = long(ma) * nb, den = long(ma) * nb - long(mb) * na;
+          if (da < 1 || db < 1 || den == 0 || num != target_ratio * den) continue;
+          if (std::gcd(long(ma), na) != 1 || std::gcd(long(mb), nb) != 1) continue;
+          out.push_back({ma, int(na), mb, int(nb)});
+        }
+  return out;
+}
+
+}  // namespace camopt::objectives

@@ -1,0 +1,102 @@
+// The LCR sizing problem of one lobe/roller combination: minimise the outer diameter over the
+// eccentricity, both turret radii and the roller diameter, subject to contact stress, roller load,
+// undercut, roller gap and pitch-point limits. Built on the LCR pipeline in model/lcr/ (forces.h,
+// profile.h, reducer.h); nothing here re-derives its physics.
+//
+// Variables (mm): e, r_dA, r_dB, d_r, R (R the outer radius, an epigraph variable: the objective
+// 2R is smooth, and r_dX + r_rX <= R for both cams replaces the kink of 2 max(r_dX + r_rX)).
+// With a catalogue roller the diameter is fixed and the variables are e, r_dA, r_dB, R; with a
+// roller per cam (same_roller = false) they are e, r_dA, r_dB, d_rA, d_rB, R.
+//
+// Cycle maxima enter in one of two forms (LcrConstraintForm):
+// - kSamples: one constraint row per (angle sample, roller) of one load period;
+// - kAggregate: one row per cam, a log-sum-exp soft maximum over the same samples: for forces
+//   F_ref·SoftMax(F/F_ref, k) with F_ref the load limit (over-estimates the sampled maximum by at
+//   most F_ref ln(N)/k: conservative); for the stress margin below SoftMin(s, k) (under-estimates
+//   the smallest margin by at most ln(N)/k). Default k = 200.
+// One load period suffices: the input side repeats every 2π/n_A of input angle (the fixed turret
+// maps onto itself), the output side every 2π m_A/(n_A m_B) (the output turret turns relative to
+// the eccentric by 2π/n_B in that time); and the input cam's roller forces depend only on the input
+// turret's geometry (C_A = T_o (m_B/n_B)/((m_A/n_A) Σ a_A²)), the output cam's only on the output's.
+//
+// The stress limit is written as a Hertz load-capacity margin, which stays finite where the cam is
+// undercut (R' <= 0, where p = sqrt(F E*/(π L R')) is not defined):
+//     s = (p_lim² R' − F E*/(π L)) / (p_lim² r_r) >= 0,     R' = r_r (1 − r_r κ),
+// so s = (R'/r_r)(1 − p²/p_lim²): the same sign as p_lim − p wherever R' > 0, and negative
+// (violated) where the cam is undercut.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/lcr/reducer.h"
+#include "objectives/problem.h"
+
+namespace camopt::objectives {
+
+enum class LcrConstraintForm { kSamples, kAggregate };
+
+struct LcrLimits {
+  double contact_stress_MPa = kInf;
+  double roller_load_N = kInf;
+  double undercut_margin_mm = 0.0;
+  double roller_gap_mm = 0.0;
+  double min_efficiency = 0.0;  ///< mean efficiency over the cycle (fraction); 0: no constraint
+};
+
+/// One continuous sizing problem.
+struct LcrSizingSpec {
+  int lobes_a = 0, rollers_a = 0, lobes_b = 0, rollers_b = 0;
+  std::array<double, 2> eccentricity_mm{0.5, 5.0};
+  std::array<double, 2> turret_radius_mm{15.0, 80.0};
+  std::array<double, 2> roller_diameter_mm{3.0, 20.0};
+  std::optional<double> fixed_roller_diameter_mm;  ///< catalogue roller: d_r is not a variable
+  bool same_roller = true;  ///< one d_r for both cams; false: d_rA and d_rB (ignored when fixed)
+  double roller_length_mm = 10.0;
+  double cam_thickness_mm = 8.0;
+  lcr::Material material;
+  double output_torque_Nmm = 0.0;
+  double friction_coefficient = 0.0;  ///< μ of the efficiency (paper eq. 32)
+  LcrLimits limits;
+  LcrConstraintForm form = LcrConstraintForm::kAggregate;
+  int samples_per_period = 24;  ///< angle samples over one load period of each cam
+  double sharpness = 200.0;     ///< log-sum-exp sharpness for kAggregate (dimensionless)
+  int efficiency_samples = 48;  ///< input angles over a full revolution for the mean efficiency
+  /// Smallest pitch-point clearance r_d − e n/(n − m), as a fraction of r_d (the pitch curve must
+  /// not loop; see lcr::CheckDesign).
+  double pitch_clearance_fraction = 0.02;
+};
+
+/// The design of a variable vector x (of the problem built from spec).
+lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double> x);
+
+/// Builds the problem: variables with bounds and scales, the evaluator, objective
+/// "outer_diameter_bound_mm" and constraints. The initial point is a heuristic, not feasible in
+/// general (both backends start from infeasible points).
+/// Output blocks (each also usable for reporting):
+///   outer_diameter_bound_mm (2R), input_envelope_mm / output_envelope_mm (r_d + r_r − R <= 0),
+///   input_roller_gap_mm / output_roller_gap_mm, input_undercut_margin_mm / output_...,
+///   input_pitch_clearance_mm / output_... (r_d − e k − fraction r_d >= 0),
+///   input_roller_force_N / output_... (samples or soft max), input_stress_margin / output_...
+///   (the dimensionless Hertz capacity margin above, samples or soft min; present when the stress
+///   limit is finite), mean_efficiency (mean of lcr::AnalyzeAngle's η over efficiency_samples
+///   angles of a full revolution; present when limits.min_efficiency > 0).
+Problem MakeLcrSizingProblem(const LcrSizingSpec& spec);
+
+/// count starting points for the sizing problem of spec (the first is the problem's own initial
+/// point): heuristics that put the rollers where they have room and the pitch point at a fraction
+/// of the turret radius, varied from one start to the next. Not feasible in general.
+std::vector<std::vector<double>> LcrStartingPoints(const LcrSizingSpec& spec, int count);
+
+/// Every (m_A, m_B) with n = m + difference on each cam and ratio m_A n_B/(m_A n_B − m_B n_A)
+/// exactly equal to target (integer arithmetic), lobes <= max_lobes, lobes and rollers coprime.
+struct LobeCombination {
+  int lobes_a, rollers_a, lobes_b, rollers_b;
+};
+std::vector<LobeCombination> LobeCombinations(long target_ratio, int max_lobes,
+                                              const std::vector<int>& differences);
+
+}  // namespace camopt::objectives

@@ -1,0 +1,109 @@
+#include "optimizers/solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace camopt::optimizers {
+
+const char* ToString(SolverStatus status) {
+  switch (status) {
+    case SolverStatus::kConverged: return "converged";
+    case SolverStatus::kInfeasible: return "infeasible";
+    case SolverStatus::kIterationLimit: return "iteration_limit";
+    case SolverStatus::kFailed: return "failed";
+  }
+  return "failed";
+}
+
+std::vector<std::string> Backends() {
+  return {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
+}
+
+SolverResult Solve(const objectives::Problem& problem, const SolverOptions& options) {
+  problem.Validate();
+  const std::string& b = options.backend;
+  if (b == "ipopt") return SolveIpopt(problem, options);
+  if (b == "nlopt_slsqp" || b == "nlopt_mma" || b == "nlopt_cobyla" || b == "slsqp" ||
+      b == "mma" || b == "cobyla")
+    return SolveNlopt(problem, options);
+  throw std::invalid_argument("unknown optimizer backend '" + b + "'");
+}
+
+SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOptions& options,
+                             const std::vector<std::vector<double>>& starts) {
+  if (starts.empty()) return Solve(problem, options);
+  SolverResult best;
+  bool have = false;
+  int values = 0, gradients = 0, iterations = 0;
+  for (const auto& x0 : starts) {
+    if (x0.size() != problem.variables.size())
+      throw std::invalid_argument("multistart: a starting point has the wrong size");
+    SolverOptions o = options;
+    o.initial = x0;
+    const SolverResult r = Solve(problem, o);
+    values += r.value_evaluations;
+    gradients += r.gradient_evaluations;
+    iterations += r.iterations;
+    const bool better = r.ok() && (!best.ok() || (problem.maximize ? r.objective > best.objective
+                                                                   : r.objective < best.objective));
+    if (!have || better) best = r;
+    have = true;
+  }
+  best.value_evaluations = values;
+  best.gradient_evaluations = gradients;
+  best.iterations = iterations;
+  return best;
+}
+
+std::vector<double> InitialPoint(const objectives::Problem& problem, const SolverOptions& options) {
+  if (!options.initial.empty() && options.initial.size() != problem.variables.size())
+    throw std::invalid_argument("initial point has the wrong size");
+  std::vector<double> x(problem.variables.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const auto& v = problem.variables[i];
+    x[i] = std::clamp(options.initial.empty() ? v.initial : options.initial[i], v.lower, v.upper);
+  }
+  return x;
+}
+
+namespace internal {
+
+bool Assess(const objectives::Problem& problem, const std::vector<double>& x,
+            double constraint_tolerance, SolverResult& result) {
+  for (double v : x)
+    if (!std::isfinite(v)) return false;
+  std::vector<double> y(problem.evaluator->num_outputs());
+  problem.evaluator->Eval(x, y);
+  for (double v : y)
+    if (!std::isfinite(v)) return false;
+  result.objective = y[problem.evaluator->block(problem.objective).offset];
+  result.max_violation = 0.0;
+  result.violated.clear();
+  result.active.clear();
+  // Bounds on variables count as constraints too (a backend may step slightly outside).
+  for (int i = 0; i < problem.num_vars(); ++i) {
+    const auto& v = problem.variables[i];
+    const double viol = std::max(v.lower - x[i], x[i] - v.upper) / v.scale;
+    if (viol > constraint_tolerance) result.violated.push_back(v.name + " bound");
+    result.max_violation = std::max(result.max_violation, viol);
+    // A variable held at a bound binds like a constraint (a designer wants to see it).
+    if (viol <= constraint_tolerance && std::isfinite(v.lower) && (x[i] - v.lower) / v.scale < 1e-6)
+      result.active.push_back(v.name + " lower bound");
+    if (viol <= constraint_tolerance && std::isfinite(v.upper) && (v.upper - x[i]) / v.scale < 1e-6)
+      result.active.push_back(v.name + " upper bound");
+  }
+  for (const auto& row : objectives::ConstraintRows(problem)) {
+    const double g = y[row.output_index];
+    const double viol = std::max(row.lower - g, g - row.upper) / row.scale;
+    result.max_violation = std::max(result.max_violation, viol);
+    if (viol > constraint_tolerance)
+      result.violated.push_back(row.name);
+    else if (viol > -1e-3)
+      result.active.push_back(row.name);
+  }
+  return true;
+}
+
+}  // namespace internal
+}  // namespace camopt::optimizers

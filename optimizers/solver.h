@@ -1,0 +1,74 @@
+// The solver-facing side of a Problem: options, a status that says what happened, and one entry
+// point that dispatches to the adapters (NLopt, Ipopt). Each adapter only translates: bounds and
+// infinities, scaling, constraint splitting, gradients from the evaluator's Jacobian.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "objectives/problem.h"
+
+namespace camopt::optimizers {
+
+enum class SolverStatus {
+  kConverged,       ///< the backend reports success and the final design satisfies every constraint
+  kInfeasible,      ///< the backend stopped at a design that violates a constraint
+  kIterationLimit,  ///< evaluation/iteration/time limit reached (design feasible or not: see violation)
+  kFailed,          ///< numerical failure or a non-finite model output; no design is reported
+};
+const char* ToString(SolverStatus status);
+
+struct SolverOptions {
+  /// "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla", "ipopt" (also "slsqp", "mma", "cobyla").
+  std::string backend = "ipopt";
+  double tolerance = 1e-8;             ///< relative optimality / step tolerance
+  double constraint_tolerance = 1e-6;  ///< on scaled constraints, also used to judge feasibility
+  int max_evaluations = 3000;          ///< NLopt: evaluations; Ipopt: iterations
+  double max_seconds = 60.0;
+  /// Starting point (unscaled); empty: the variables' own initial values. Clamped to the bounds.
+  std::vector<double> initial;
+};
+
+struct SolverResult {
+  SolverStatus status = SolverStatus::kFailed;
+  std::string message;          ///< the backend's own words
+  std::vector<double> x;        ///< the final design (unscaled); empty when status is kFailed
+  double objective = 0.0;       ///< unscaled, at x
+  double max_violation = 0.0;   ///< largest constraint violation at x, in scaled units
+  std::vector<std::string> violated;  ///< constraint rows violated at x
+  std::vector<std::string> active;    ///< constraint rows at a bound at x (within 1e-3 scaled),
+                                      ///< and variables at a bound ("x lower bound")
+  int value_evaluations = 0;    ///< model runs for values only (double)
+  int gradient_evaluations = 0; ///< model runs with exact first derivatives (ceres::Jet)
+  int iterations = 0;           ///< backend iterations where it reports them (Ipopt), else evaluations
+  bool ok() const { return status == SolverStatus::kConverged; }
+};
+
+/// Solves problem (Validate()d first) with the backend named in options.
+/// @throws std::invalid_argument for an unknown backend or an invalid problem.
+SolverResult Solve(const objectives::Problem& problem, const SolverOptions& options);
+
+SolverResult SolveNlopt(const objectives::Problem& problem, const SolverOptions& options);
+SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions& options);
+
+/// Local solves from several starting points (each a full variable vector, unscaled); returns the
+/// converged result with the lowest objective (or, when none converged, the first start's result),
+/// with the evaluation counts of all starts summed. An empty list solves from the problem's own
+/// initial point.
+SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOptions& options,
+                             const std::vector<std::vector<double>>& starts);
+
+/// The starting point of a solve: options.initial or the variables' initial values, in bounds.
+std::vector<double> InitialPoint(const objectives::Problem& problem, const SolverOptions& options);
+
+/// Backend names Solve() accepts.
+std::vector<std::string> Backends();
+
+namespace internal {
+/// Fills status-independent fields of result at x: objective, violation, active/violated rows.
+/// Returns false when an output at x is not finite.
+bool Assess(const objectives::Problem& problem, const std::vector<double>& x,
+            double constraint_tolerance, SolverResult& result);
+}  // namespace internal
+
+}  // namespace camopt::optimizers

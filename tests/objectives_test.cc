@@ -1,0 +1,256 @@
+// The problem layer and the LCR sizing problem: exact gradients of every output against central
+// differences, the one-period sampling against full-cycle analysis, the stress margin against
+// the pipeline's Hertz stress, and the lobe combinations against an independent derivation.
+#include <cmath>
+#include <limits>
+#include <set>
+#include <tuple>
+
+#include <gtest/gtest.h>
+
+#include "model/lcr/cycle.h"
+#include "model/lcr/kinematics.h"
+#include "model/lcr/profile.h"
+#include "objectives/lcr_sizing.h"
+#include "tests/optim_reference_problems.h"
+#include "tests/reference_designs.h"
+
+namespace camopt {
+namespace {
+
+using objectives::LcrConstraintForm;
+using objectives::LcrSizingSpec;
+
+// Checks the evaluator's Jacobian (ceres::Jet) against central differences of its double
+// evaluation, step h = cbrt(eps) max(1, |x|); |ad − fd| <= abs_tol + rel_tol max(|ad|, |fd|).
+void ExpectEvaluatorJacobianMatches(const objectives::Evaluator& ev, std::vector<double> x,
+                                    double rel_tol, double abs_tol) {
+  const int n = ev.num_vars(), m = ev.num_outputs();
+  std::vector<double> y(m), jac(m * n), yp(m), ym(m), y0(m);
+  ev.EvalWithJacobian(x, y, jac);
+  ev.Eval(x, y0);
+  for (int k = 0; k < m; ++k) ASSERT_NEAR(y[k], y0[k], 1e-12 * std::max(1.0, std::abs(y0[k])));
+  const double cbrt_eps = std::cbrt(std::numeric_limits<double>::epsilon());
+  int checked = 0;
+  for (int i = 0; i < n; ++i) {
+    const double h = cbrt_eps * std::max(1.0, std::abs(x[i]));
+    auto xp = x, xm = x;
+    xp[i] += h;
+    xm[i] -= h;
+    ev.Eval(xp, yp);
+    ev.Eval(xm, ym);
+    for (const auto& b : ev.blocks())
+      for (int k = b.offset; k < b.offset + b.size; ++k) {
+        const double fd = (yp[k] - ym[k]) / (2 * h), ad = jac[k * n + i];
+        ASSERT_TRUE(std::isfinite(ad)) << b.name;
+        EXPECT_LE(std::abs(ad - fd), abs_tol + rel_tol * std::max(std::abs(ad), std::abs(fd)))
+            << b.name << "[" << k - b.offset << "] d/d" << i << ": AD " << ad << " vs CD " << fd;
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, n * m);
+}
+
+LcrSizingSpec LcrIISpec(LcrConstraintForm form) {
+  LcrSizingSpec s;
+  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
+  s.output_torque_Nmm = 80000;
+  s.limits = {1500, 1050, 0.5, 1.0};
+  s.form = form;
+  return s;
+}
+
+// LCR II of Table 2 as a variable vector (e, r_dA, r_dB, d_r, R).
+std::vector<double> LcrIIVariables() { return {2.0, 37.0, 42.0, 12.0, 48.0}; }
+
+TEST(Problem, Hs71GradientsMatchCentralDifferences) {
+  const auto p = testing::Hs71();
+  ExpectEvaluatorJacobianMatches(*p.evaluator, {1.3, 4.1, 3.7, 1.5}, 1e-7, 1e-9);
+}
+
+TEST(Problem, ValidateRejectsBadData) {
+  auto p = testing::RosenbrockOnDisk();
+  p.variables[0].scale = 0.0;
+  EXPECT_THROW(p.Validate(), std::invalid_argument);
+  auto q = testing::RosenbrockOnDisk();
+  q.constraints[0].lower = 2.0;  // lower > upper = 1
+  EXPECT_THROW(q.Validate(), std::invalid_argument);
+  auto r = testing::RosenbrockOnDisk();
+  r.variables[1].initial = std::nan("");
+  EXPECT_THROW(r.Validate(), std::invalid_argument);
+}
+
+TEST(Problem, CacheCountsModelRunsOnce) {
+  const auto p = testing::Hs71();
+  objectives::ProblemCache cache(p);
+  const std::vector<double> x = {1, 2, 3, 4};
+  cache.Values(x);
+  cache.Values(x);
+  cache.Jacobian(x);
+  cache.Values(x);  // values came with the Jacobian
+  EXPECT_EQ(cache.value_evaluations(), 1);
+  EXPECT_EQ(cache.jacobian_evaluations(), 1);
+  EXPECT_DOUBLE_EQ(cache.last_values()[0], 1 * 4 * (1 + 2 + 3) + 3);
+}
+
+// Roller variants: 0 one roller for both cams, 1 a catalogue roller (fixed), 2 one per cam.
+class LcrSizingGradients
+    : public ::testing::TestWithParam<std::tuple<LcrConstraintForm, int>> {};
+
+// Every output (objective, envelopes, gaps, undercut margins, pitch clearances, roller forces,
+// stress margins, mean efficiency; soft aggregates or every sample) has the exact derivative. Probed at LCR II and
+// at a design near the −90 optimum where the stress limit binds.
+TEST_P(LcrSizingGradients, EveryOutputMatchesCentralDifferences) {
+  const auto [form, rollers] = GetParam();
+  LcrSizingSpec s = LcrIISpec(form);
+  s.samples_per_period = 8;
+  s.limits.min_efficiency = 0.9;  // adds the mean-efficiency output
+  s.friction_coefficient = 0.05;
+  s.efficiency_samples = 12;
+  if (rollers == 1) s.fixed_roller_diameter_mm = 12.0;
+  if (rollers == 2) s.same_roller = false;
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  for (std::vector<double> x : {LcrIIVariables(), std::vector<double>{1.84, 33.97, 33.97, 6.33, 37.13}}) {
+    if (rollers == 1) x.erase(x.begin() + 3);
+    if (rollers == 2) x.insert(x.begin() + 4, x[3] * 0.9);  // a smaller output roller
+    // Kinks (a roller entering the loaded set, PositivePart) are isolated: a relative tolerance of
+    // 1e-5 with the ∛ε step separates a wrong derivative from truncation error.
+    ExpectEvaluatorJacobianMatches(*p.evaluator, x, 1e-5, 1e-7);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Objectives, LcrSizingGradients,
+                         ::testing::Combine(::testing::Values(LcrConstraintForm::kAggregate,
+                                                              LcrConstraintForm::kSamples),
+                                            ::testing::Values(0, 1, 2)));
+
+// The problem's geometric outputs equal the pipeline's own functions on the same design.
+TEST(LcrSizing, OutputsAreThePipelineQuantities) {
+  const LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kAggregate);
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  const auto x = LcrIIVariables();
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(x, y);
+  auto out = [&](const std::string& name) { return y[p.evaluator->block(name).offset]; };
+  const lcr::Reducer<double> r = testing::LcrII();
+  EXPECT_DOUBLE_EQ(out("outer_diameter_bound_mm"), 96.0);
+  EXPECT_DOUBLE_EQ(lcr::OuterDiameter(r), 96.0);  // the paper's LCR II by this definition
+  EXPECT_NEAR(out("output_envelope_mm"), 0.0, 1e-12);
+  EXPECT_NEAR(out("input_envelope_mm"), -5.0, 1e-12);
+  EXPECT_NEAR(out("input_roller_gap_mm"), 2 * 37 * std::sin(kPi / 13) - 12, 1e-12);
+  EXPECT_NEAR(out("output_roller_gap_mm"), 2 * 42 * std::sin(kPi / 15) - 12, 1e-12);
+  EXPECT_NEAR(out("input_undercut_margin_mm"), lcr::UndercutMargin(r.input, 2.0), 1e-12);
+  EXPECT_NEAR(out("output_undercut_margin_mm"), lcr::UndercutMargin(r.output, 2.0), 1e-12);
+  EXPECT_NEAR(out("input_pitch_clearance_mm"), 37 * 0.98 - 2.0 * 13, 1e-12);
+  const auto design = objectives::LcrDesign(s, x);
+  EXPECT_EQ(design.input.rollers, 13);
+  EXPECT_DOUBLE_EQ(design.output.roller_radius, 6.0);
+}
+
+// One load period holds every configuration: the period maximum of the roller force equals the
+// full-cycle maximum of the pipeline's own cycle analysis (input side on the same angle grid,
+// output side on a fine grid).
+// The mean-efficiency output is the mean of the pipeline's per-angle efficiency.
+TEST(LcrSizing, MeanEfficiencyIsThePipelines) {
+  LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kAggregate);
+  s.limits.min_efficiency = 0.5;
+  s.friction_coefficient = 0.05;
+  s.efficiency_samples = 360;
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(LcrIIVariables(), y);
+  const auto cycle = lcr::AnalyzeCycle(testing::LcrII(), testing::Steel(), {80000, 0.05, 0.0}, 360, {});
+  double mean = 0;
+  for (double e : cycle.efficiency) mean += e / 360;
+  EXPECT_NEAR(y[p.evaluator->block("mean_efficiency").offset], mean, 1e-12);
+  ASSERT_EQ(p.constraints.back().output, "mean_efficiency");
+  EXPECT_EQ(p.constraints.back().lower, 0.5);
+}
+
+TEST(LcrSizing, OnePeriodSamplesCoverTheWholeCycle) {
+  LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kSamples);
+  s.samples_per_period = 360;
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(LcrIIVariables(), y);
+  auto block_max = [&](const std::string& name) {
+    const auto& b = p.evaluator->block(name);
+    return *std::max_element(y.begin() + b.offset, y.begin() + b.offset + b.size);
+  };
+  const lcr::Reducer<double> r = testing::LcrII();
+  const lcr::LoadCase load{80000, 0.0, 0.0};
+  const auto full = lcr::AnalyzeCycle(r, testing::Steel(), load, 360 * 13, {true, false, false});
+  EXPECT_NEAR(block_max("input_roller_force_N"),
+              *std::max_element(full.input.max_force_N.begin(), full.input.max_force_N.end()), 1e-9);
+  EXPECT_NEAR(block_max("output_roller_force_N"),
+              *std::max_element(full.output.max_force_N.begin(), full.output.max_force_N.end()), 1e-3);
+}
+
+// The Hertz capacity margin s = (R'/r_r)(1 − p²/p_lim²) with p the pipeline's stress.
+TEST(LcrSizing, StressMarginIsTheHertzCapacityOfThePipeline) {
+  LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kSamples);
+  s.samples_per_period = 5;
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(LcrIIVariables(), y);
+  const auto& b = p.evaluator->block("input_stress_margin");
+  const lcr::Reducer<double> r = testing::LcrII();
+  int loaded = 0;
+  for (int i = 0; i < 5; ++i) {
+    const double theta = 2 * kPi / 13 * i / 5;
+    const auto a = lcr::AnalyzeAngle(r, testing::Steel(), {80000, 0, 0}, theta);
+    for (int k = 0; k < 13; ++k) {
+      const double rr = 6.0, r_eff = rr * (1 - rr * a.input.contacts[k].curvature);
+      const double pk = a.input.stress[k];
+      EXPECT_NEAR(y[b.offset + i * 13 + k], r_eff / rr * (1 - pk * pk / (1500.0 * 1500.0)), 1e-12);
+      loaded += a.input.force[k] > 0;
+    }
+  }
+  EXPECT_GT(loaded, 10);
+}
+
+// The soft aggregate bounds the sampled maximum from above by at most F_ref ln(N)/k.
+TEST(LcrSizing, AggregateBoundsTheSampledMaximum) {
+  LcrSizingSpec agg = LcrIISpec(LcrConstraintForm::kAggregate), smp = LcrIISpec(LcrConstraintForm::kSamples);
+  const auto pa = objectives::MakeLcrSizingProblem(agg), ps = objectives::MakeLcrSizingProblem(smp);
+  std::vector<double> ya(pa.evaluator->num_outputs()), ys(ps.evaluator->num_outputs());
+  pa.evaluator->Eval(LcrIIVariables(), ya);
+  ps.evaluator->Eval(LcrIIVariables(), ys);
+  for (std::string side : {"input", "output"}) {
+    const auto& bs = ps.evaluator->block(side + "_roller_force_N");
+    const double exact = *std::max_element(ys.begin() + bs.offset, ys.begin() + bs.offset + bs.size);
+    const double soft = ya[pa.evaluator->block(side + "_roller_force_N").offset];
+    EXPECT_GE(soft, exact);
+    EXPECT_LE(soft, exact + 1050.0 * std::log(double(bs.size)) / agg.sharpness);
+    const auto& ms = ps.evaluator->block(side + "_stress_margin");
+    double min_margin = kInf;
+    for (int k = 0; k < ms.size; ++k)
+      if (ys[bs.offset + k] > 0) min_margin = std::min(min_margin, ys[ms.offset + k]);
+    const double soft_margin = ya[pa.evaluator->block(side + "_stress_margin").offset];
+    EXPECT_LE(soft_margin, min_margin);
+    EXPECT_GE(soft_margin, min_margin - std::log(double(ms.size)) / agg.sharpness);
+  }
+}
+
+// Ratio −90 with n = m + 1: m_A (m_B + 1)/(m_A − m_B) = −90 gives m_A = 90 m_B/(m_B + 91), so
+// m_B + 91 divides 90·91 = 8190 = 2·3²·5·7·13; its divisors in [92, 131] are 105, 117, 126, 130.
+TEST(LcrSizing, LobeCombinationsOfRatioMinus90) {
+  const auto c = objectives::LobeCombinations(-90, 40, {1});
+  std::set<std::tuple<int, int, int, int>> got;
+  for (const auto& k : c) {
+    got.insert({k.lobes_a, k.rollers_a, k.lobes_b, k.rollers_b});
+    EXPECT_EQ(lcr::SpeedReductionRatio(k.lobes_a, k.rollers_a, k.lobes_b, k.rollers_b), -90.0);
+  }
+  const std::set<std::tuple<int, int, int, int>> expected = {
+      {12, 13, 14, 15}, {20, 21, 26, 27}, {25, 26, 35, 36}, {27, 28, 39, 40}};
+  EXPECT_EQ(got, expected);
+  // The papers' other designs are found for their ratios.
+  const auto c399 = objectives::LobeCombinations(-399, 40, {1});
+  EXPECT_TRUE(std::any_of(c399.begin(), c399.end(), [](const auto& k) { return k.lobes_a == 19 && k.lobes_b == 20; }));
+  const auto c24 = objectives::LobeCombinations(-24, 40, {1});
+  EXPECT_TRUE(std::any_of(c24.begin(), c24.end(), [](const auto& k) { return k.lobes_a == 4 && k.lobes_b == 5; }));
+  EXPECT_TRUE(objectives::LobeCombinations(7, 3, {1}).empty());
+}
+
+}  // namespace
+}  // namespace camopt

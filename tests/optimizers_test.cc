@@ -1,0 +1,248 @@
+// The solver adapters on shared reference problems with known optima, their statuses on problems
+// that cannot converge, and the Ceres least-squares adapter on fits with known answers.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "model/lcr/cycle.h"
+#include "model/lcr/profile.h"
+#include "optimizers/ceres_fit.h"
+#include "optimizers/solver.h"
+#include "tests/optim_reference_problems.h"
+
+namespace camopt {
+namespace {
+
+using optimizers::SolverOptions;
+using optimizers::SolverStatus;
+
+class EveryBackend : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryBackend, Hs71ReachesTheKnownOptimum) {
+  SolverOptions opt;
+  opt.backend = GetParam();
+  const auto r = optimizers::Solve(testing::Hs71(), opt);
+  ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
+  EXPECT_NEAR(r.objective, testing::kHs71Optimum, 1e-5);
+  const double expected[4] = {1.0, 4.7429994, 3.8211503, 1.3794082};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.x[i], expected[i], 1e-3) << "x" << i + 1;
+  EXPECT_LE(r.max_violation, opt.constraint_tolerance);
+}
+
+TEST_P(EveryBackend, ScalingIsTranslated) {
+  // Same problem with variables in a unit 1000 times smaller: the optimum must scale exactly.
+  SolverOptions opt;
+  opt.backend = GetParam();
+  const auto r = optimizers::Solve(testing::Hs71(1000.0), opt);
+  ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
+  EXPECT_NEAR(r.objective, testing::kHs71Optimum, 1e-5);
+  EXPECT_NEAR(r.x[1], 4742.9994, 1.0);
+}
+
+TEST_P(EveryBackend, RosenbrockOnDiskWithInfiniteBounds) {
+  SolverOptions opt;
+  opt.backend = GetParam();
+  const auto [t, f] = testing::RosenbrockOnDiskOptimum();
+  const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
+  ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
+  EXPECT_NEAR(r.objective, f, 1e-6);
+  EXPECT_NEAR(r.x[0], std::cos(t), 1e-4);
+  EXPECT_NEAR(r.x[1], std::sin(t), 1e-4);
+  ASSERT_EQ(r.active.size(), 1u);
+  EXPECT_EQ(r.active[0], "r2");
+}
+
+TEST_P(EveryBackend, InfeasibleProblemIsReportedAsSuch) {
+  // x >= 2 through a constraint while the bound says x <= 1.
+  objectives::Problem p;
+  p.variables = {{"x", -1.0, 1.0, 0.0, 1.0}, {"y", -1.0, 1.0, 0.0, 1.0}};
+  p.evaluator = objectives::MakeEvaluator<2>(2, {{"f", 0, 1}, {"g", 1, 1}}, [](auto x, auto y) {
+    y[0] = x[0] * x[0] + x[1] * x[1];
+    y[1] = x[0] + 0.0 * x[1];
+  });
+  p.objective = "f";
+  p.constraints = {{"g", 2.0, kInf, 1.0}};
+  SolverOptions opt;
+  opt.backend = GetParam();
+  opt.max_evaluations = 500;
+  const auto r = optimizers::Solve(p, opt);
+  EXPECT_NE(r.status, SolverStatus::kConverged) << r.message;
+  if (!r.x.empty()) {
+    for (double v : r.x) EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GT(r.max_violation, opt.constraint_tolerance);
+    ASSERT_FALSE(r.violated.empty());
+  }
+}
+
+TEST_P(EveryBackend, IterationLimitIsReported) {
+  SolverOptions opt;
+  opt.backend = GetParam();
+  opt.max_evaluations = 2;
+  const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
+  EXPECT_EQ(r.status, SolverStatus::kIterationLimit) << r.message;
+}
+
+TEST_P(EveryBackend, NonFiniteModelGivesNoDesign) {
+  objectives::Problem p;
+  p.variables = {{"x", 0.0, 1.0, 0.5, 1.0}};
+  p.evaluator = objectives::MakeEvaluator<1>(1, {{"f", 0, 1}}, [](auto x, auto y) {
+    using std::sqrt;
+    y[0] = sqrt(x[0] - 2.0);  // NaN everywhere in the bounds
+  });
+  p.objective = "f";
+  SolverOptions opt;
+  opt.backend = GetParam();
+  const auto r = optimizers::Solve(p, opt);
+  EXPECT_EQ(r.status, SolverStatus::kFailed);
+  EXPECT_TRUE(r.x.empty());
+}
+
+// The LCR sizing reference problem: every backend reaches the same design, and it satisfies every
+// limit in the dense check of the pipeline (3600 angles).
+TEST_P(EveryBackend, LcrIISizingAgreesAcrossBackends) {
+  const auto spec = testing::LcrIISizingSpec();
+  SolverOptions opt;
+  opt.backend = "ipopt";
+  const auto reference = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  ASSERT_TRUE(reference.ok()) << reference.message;
+  opt.backend = GetParam();
+  const auto r = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_NEAR(r.objective, reference.objective, 1e-4 * reference.objective);
+  for (size_t i = 0; i < r.x.size(); ++i) EXPECT_NEAR(r.x[i], reference.x[i], 1e-3 * std::abs(reference.x[i]));
+  const lcr::Reducer<double> d = objectives::LcrDesign(spec, r.x);
+  EXPECT_TRUE(lcr::CheckDesign(d).empty());
+  const auto cycle = lcr::AnalyzeCycle(d, spec.material, {spec.output_torque_Nmm, 0.0, 0.0}, 3600, {});
+  for (const auto* side : {&cycle.input, &cycle.output}) {
+    EXPECT_LE(*std::max_element(side->max_stress_MPa.begin(), side->max_stress_MPa.end()), 1500.0);
+    EXPECT_LE(*std::max_element(side->max_force_N.begin(), side->max_force_N.end()), 1050.0);
+  }
+  EXPECT_GE(lcr::UndercutMargin(d.input, d.eccentricity), 0.5 - 1e-6);
+  EXPECT_GE(lcr::UndercutMargin(d.output, d.eccentricity), 0.5 - 1e-6);
+  EXPECT_GE(lcr::RollerGap(d.input), 1.0 - 1e-6);
+  EXPECT_GE(lcr::RollerGap(d.output), 1.0 - 1e-6);
+}
+
+// One constraint row per sample: the same optimum from the backends that handle many rows well
+// (MMA's dual subproblem has one variable per row and is left out: see docs/optimization.md).
+TEST(Optimizers, LcrIISizingPerSampleConstraints) {
+  const auto spec = testing::LcrIISizingSpec(objectives::LcrConstraintForm::kSamples);
+  SolverOptions opt;
+  opt.backend = "nlopt_slsqp";
+  const auto slsqp = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  opt.backend = "ipopt";
+  const auto ipopt = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
+  ASSERT_TRUE(slsqp.ok() && ipopt.ok()) << slsqp.message << " / " << ipopt.message;
+  EXPECT_NEAR(slsqp.objective, ipopt.objective, 1e-4 * ipopt.objective);
+  // Per-sample rows are exact at the samples, the aggregate is conservative: never larger.
+  opt.backend = "nlopt_slsqp";
+  const auto aggregate = optimizers::Solve(objectives::MakeLcrSizingProblem(testing::LcrIISizingSpec()), opt);
+  ASSERT_TRUE(aggregate.ok());
+  EXPECT_LE(slsqp.objective, aggregate.objective);
+}
+
+INSTANTIATE_TEST_SUITE_P(Optimizers, EveryBackend,
+                         ::testing::Values("ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"));
+
+TEST(Optimizers, GradientBackendsUseFarFewerEvaluationsThanCobyla) {
+  SolverOptions opt;
+  opt.backend = "ipopt";
+  const auto ipopt = optimizers::Solve(testing::Hs71(), opt);
+  opt.backend = "nlopt_cobyla";
+  const auto cobyla = optimizers::Solve(testing::Hs71(), opt);
+  ASSERT_TRUE(ipopt.ok() && cobyla.ok());
+  EXPECT_GT(ipopt.gradient_evaluations, 0);
+  EXPECT_EQ(cobyla.gradient_evaluations, 0);
+  EXPECT_LT(ipopt.value_evaluations + ipopt.gradient_evaluations, cobyla.value_evaluations);
+}
+
+TEST(Optimizers, UnknownBackendIsAnError) {
+  SolverOptions opt;
+  opt.backend = "simplex";
+  EXPECT_THROW(optimizers::Solve(testing::Hs71(), opt), std::invalid_argument);
+}
+
+TEST(Optimizers, InvalidProblemIsAnError) {
+  auto p = testing::Hs71();
+  p.variables[0].lower = 6.0;  // lower > upper
+  EXPECT_THROW(optimizers::Solve(p, SolverOptions{}), std::invalid_argument);
+  auto q = testing::Hs71();
+  q.objective = "nothing";
+  EXPECT_THROW(optimizers::Solve(q, SolverOptions{}), std::out_of_range);
+}
+
+// y = a exp(b t) + c sampled without noise: the fit recovers a, b, c.
+TEST(CeresFit, RecoversKnownCurveParameters) {
+  const double a = 2.5, b = -0.7, c = 0.3;
+  std::vector<double> t, y;
+  for (int i = 0; i < 20; ++i) {
+    t.push_back(0.25 * i);
+    y.push_back(a * std::exp(b * t.back()) + c);
+  }
+  optimizers::LeastSquaresProblem p;
+  p.variables = {{"a", 0.0, 10.0, 1.0, 1.0}, {"b", -5.0, 0.0, -0.1, 1.0}, {"c", -kInf, kInf, 0.0, 1.0}};
+  const int m = static_cast<int>(t.size());
+  p.evaluator = objectives::MakeEvaluator<3>(3, {{"r", 0, m}}, [t, y](auto x, auto r) {
+    using std::exp;
+    for (size_t i = 0; i < t.size(); ++i) r[i] = x[0] * exp(x[1] * t[i]) + x[2] - y[i];
+  });
+  p.residuals = "r";
+  const auto fit = optimizers::SolveLeastSquares(p);
+  ASSERT_EQ(fit.status, SolverStatus::kConverged) << fit.message;
+  EXPECT_NEAR(fit.x[0], a, 1e-8);
+  EXPECT_NEAR(fit.x[1], b, 1e-8);
+  EXPECT_NEAR(fit.x[2], c, 1e-8);
+  EXPECT_LT(fit.cost, 1e-20);
+}
+
+// Weighted straight line: the parameter covariance has the closed form (X^T W X)^-1.
+TEST(CeresFit, CovarianceMatchesLinearRegressionClosedForm) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<double> t, y, sd;
+  for (int i = 0; i < 12; ++i) {
+    t.push_back(i);
+    sd.push_back(0.1 + 0.05 * i);
+    y.push_back(1.0 + 0.5 * i + sd.back() * noise(rng));
+  }
+  optimizers::LeastSquaresProblem p;
+  p.variables = {{"a", -kInf, kInf, 0.0, 1.0}, {"b", -kInf, kInf, 0.0, 1.0}};
+  const int m = static_cast<int>(t.size());
+  p.evaluator = objectives::MakeEvaluator<2>(2, {{"r", 0, m}}, [t, y, sd](auto x, auto r) {
+    for (size_t i = 0; i < t.size(); ++i) r[i] = (x[0] + x[1] * t[i] - y[i]) / sd[i];
+  });
+  p.residuals = "r";
+  const auto fit = optimizers::SolveLeastSquares(p);
+  ASSERT_EQ(fit.status, SolverStatus::kConverged) << fit.message;
+  // Normal equations of weighted least squares.
+  double s0 = 0, s1 = 0, s2 = 0, sy = 0, sty = 0;
+  for (int i = 0; i < m; ++i) {
+    const double w = 1 / (sd[i] * sd[i]);
+    s0 += w, s1 += w * t[i], s2 += w * t[i] * t[i], sy += w * y[i], sty += w * t[i] * y[i];
+  }
+  const double det = s0 * s2 - s1 * s1;
+  EXPECT_NEAR(fit.x[0], (s2 * sy - s1 * sty) / det, 1e-7);
+  EXPECT_NEAR(fit.x[1], (s0 * sty - s1 * sy) / det, 1e-7);
+  ASSERT_EQ(fit.covariance.size(), 4u);
+  EXPECT_NEAR(fit.covariance[0], s2 / det, 1e-9 * s2 / det);
+  EXPECT_NEAR(fit.covariance[1], -s1 / det, 1e-9 * std::abs(s1 / det));
+  EXPECT_NEAR(fit.covariance[3], s0 / det, 1e-9 * s0 / det);
+}
+
+TEST(CeresFit, RankDeficientFitHasNoCovariance) {
+  // Only a + b is determined by the data.
+  optimizers::LeastSquaresProblem p;
+  p.variables = {{"a", -kInf, kInf, 0.0, 1.0}, {"b", -kInf, kInf, 0.0, 1.0}};
+  p.evaluator = objectives::MakeEvaluator<2>(2, {{"r", 0, 3}}, [](auto x, auto r) {
+    for (int i = 0; i < 3; ++i) r[i] = x[0] + x[1] - 1.0 - 0.01 * i;
+  });
+  p.residuals = "r";
+  const auto fit = optimizers::SolveLeastSquares(p);
+  ASSERT_FALSE(fit.x.empty());
+  EXPECT_NEAR(fit.x[0] + fit.x[1], 1.01, 1e-9);
+  EXPECT_TRUE(fit.covariance.empty());
+}
+
+}  // namespace
+}  // namespace camopt
