@@ -176,7 +176,7 @@ SliceResult SlicePair(double r_eff, const Crowning& crown, double face, int q, d
     }
     double diff = 0;
     for (int j = 0; j < q; ++j) diff = std::max(diff, std::abs(wn[j] - w[j]));
-    w = wn;
+    w.swap(wn);
     if (diff < 1e-7 * (*std::max_element(w.begin(), w.end()) + 1e-9)) break;
   }
   SliceResult r;
