@@ -182,6 +182,27 @@ TEST(GloboidalDynamics, ContactLawGradients) {
   }
 }
 
+// The anticlockwise cam is the mirror image with the rollers swapped: its roller 2 carries what
+// roller 1 of the clockwise cam carries, sample by sample.
+TEST(GloboidalDynamics, AnticlockwiseMirrorsTheForces) {
+  DynamicsInput in;
+  in.cam = PaperExampleCam<double>();
+  in.cam_speed_rad_s = 2 * kPi * 10;
+  in.load_torque_Nmm = 500e3;
+  in.inertia_Nmms2 = 1.0;
+  in.end_time_s = 0.02;
+  in.output_every = 20;
+  const DynamicsResult a = SimulateDynamics(in);
+  in.cam.direction = -1;
+  const DynamicsResult b = SimulateDynamics(in);
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  for (size_t i = 0; i < a.samples.size(); ++i) {
+    EXPECT_NEAR(b.samples[i].force_N[1], a.samples[i].force_N[0], 1e-6 * a.samples[i].force_N[0]);
+    EXPECT_NEAR(b.samples[i].force_N[0], a.samples[i].force_N[1], 1e-6);
+    EXPECT_NEAR(b.samples[i].swing_rad, a.samples[i].swing_rad, 1e-12);
+  }
+}
+
 TEST(GloboidalDynamics, BadInputThrows) {
   DynamicsInput in = HeldCam(0.0);
   in.inertia_Nmms2 = 0.0;

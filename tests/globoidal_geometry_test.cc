@@ -88,6 +88,25 @@ TEST(GloboidalGeometry, RollerAnglesKeepBetaAndAreSymmetric) {
   }
 }
 
+// p = −1 is the mirror image (z → −z) of p = +1 with the rollers' roles swapped: roller 2 of the
+// anticlockwise cam is roller 1 of the clockwise one, mirrored, and vice versa.
+TEST(GloboidalGeometry, AnticlockwiseIsTheMirrorImage) {
+  auto cw = PaperCam<double>();
+  auto ccw = PaperCam<double>();
+  ccw.direction = -1;
+  for (double tdeg : {10.0, 30.0, 90.0, 150.0, 200.0, 300.0})
+    for (int j = 1; j <= 2; ++j)
+      for (double l : {19.5, 25.5}) {
+        const auto a = EvaluateSurface(cw, j, l, tdeg * kDeg);
+        const auto b = EvaluateSurface(ccw, 3 - j, l, tdeg * kDeg);
+        const Vec3<double> m(a.working.x(), a.working.y(), -a.working.z());
+        EXPECT_LT((b.working - m).norm(), 1e-12) << tdeg << " " << j;
+        EXPECT_NEAR(b.undercut_margin, a.undercut_margin, 1e-12);
+        EXPECT_NEAR(b.contact_radius, a.contact_radius, 1e-9);
+        EXPECT_NEAR(std::abs(b.pressure_angle), std::abs(a.pressure_angle), 1e-12);
+      }
+}
+
 TEST(GloboidalGeometry, TrajectoryIsTheRuledSurfaceOfEq5) {
   const auto cam = PaperCam<double>();
   for (double t : {0.1, 1.0, 2.5, 4.0}) {

@@ -46,7 +46,7 @@ Eval Evaluate(const DynamicsInput& in, double t, const State& s) {
   const double l = Arm(in), p = in.cam.direction;
   const ContactMaterial& c = in.contact;
   Eval e{};
-  double q = -p * in.load_torque_Nmm;
+  double q = -in.load_torque_Nmm;  // against the first motion, i.e. against ψ
   for (int j = 0; j < 2; ++j) {
     const RollerContact rc = Contact(in, j + 1, theta);
     const double delta = l * p * (s.psi - kin.s) * rc.swing_dot_normal;
@@ -80,7 +80,7 @@ double RollerStiffness(const DynamicsInput& in, int j, double theta) {
 double QuasiStaticForce(const DynamicsInput& in, double theta) {
   const motion::Svaj<double> kin = in.cam.motion.Evaluate(theta);
   const double p = in.cam.direction, w = in.cam_speed_rad_s;
-  const double q = in.inertia_Nmms2 * kin.a * w * w + p * in.load_torque_Nmm;
+  const double q = in.inertia_Nmms2 * kin.a * w * w + in.load_torque_Nmm;
   const int j = p * q >= 0.0 ? 1 : 2;  // roller 1 pushes along +p, roller 2 along −p
   const RollerContact rc = Contact(in, j, theta);
   return std::abs(q) / (Arm(in) * std::abs(rc.swing_dot_normal));
@@ -96,7 +96,7 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   const motion::Svaj<double> kin0 = in.cam.motion.Evaluate(theta0);
   State s{kin0.s, kin0.v * omega + in.initial_swing_rate_rad_s};
   if (in.start_static) {
-    const double q = in.inertia_Nmms2 * kin0.a * omega * omega + p * in.load_torque_Nmm;
+    const double q = in.inertia_Nmms2 * kin0.a * omega * omega + in.load_torque_Nmm;
     if (q != 0.0) {
       const int j = p * q >= 0.0 ? 1 : 2;
       const RollerContact rc = Contact(in, j, theta0);

@@ -102,7 +102,7 @@ double RollerStiffness(const DynamicsInput& in, int j, double theta);
 /// Integrates the turret swing over [0, end_time].
 DynamicsResult SimulateDynamics(const DynamicsInput& in);
 
-/// Quasi-static force on the loaded roller: |J φ̈_i ω² + p T_load| /(l_c cos α) [N], where α is
+/// Quasi-static force on the loaded roller: |J φ̈_i ω² + T_load| /(l_c cos α) [N], where α is
 /// the pressure angle of the roller that carries the torque.
 double QuasiStaticForce(const DynamicsInput& in, double theta);
 
