@@ -245,6 +245,8 @@ TEST(GloboidalGeometry, CurvatureMatchesFiniteDifferences) {
         const Vec3<double> wt = (at(0, h).working - at(0, -h).working) / (2 * h);
         const double ratio = wl.cross(wt).dot(s.normal) / s.axis_dir.cross(s.r_theta).dot(s.normal);
         EXPECT_NEAR(ratio, s.offset_jacobian, 1e-6) << j << " " << tdeg << " " << l;
+        // The working surface's own normal (finite differences) is the offset direction n.
+        EXPECT_NEAR(std::abs(wl.cross(wt).normalized().dot(s.normal)), 1.0, 1e-9);
         // Direction across the roller in (l, θ) coordinates: W_l a + W_θ b ∥ n × r_l.
         const Vec3<double> tdir = s.normal.cross(s.axis_dir);
         const double a11 = wl.dot(wl), a12 = wl.dot(wt), a22 = wt.dot(wt);
