@@ -150,6 +150,16 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
   while ((pos = stl.find("facet normal", pos)) != std::string::npos) ++facets, ++pos;
   EXPECT_EQ(facets, 2u * 360 * 5 * 2);
   EXPECT_NE(stl.find("endsolid"), std::string::npos);
+  // The first facet (roller 1, θ = 0, l = l₂) faces out of the rib like the point cloud's normal.
+  {
+    std::istringstream in(stl.substr(stl.find("facet normal") + 12));
+    double nx, ny, nz;
+    in >> nx >> ny >> nz;
+    const double dot = nx * cloud.at("normal_x")[0] + ny * cloud.at("normal_y")[0] +
+                       nz * cloud.at("normal_z")[0];
+    EXPECT_GT(dot, 0.99);
+    EXPECT_NEAR(nx * nx + ny * ny + nz * nz, 1.0, 1e-6);
+  }
 }
 
 TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
