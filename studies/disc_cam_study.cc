@@ -39,17 +39,6 @@ struct DiscCamStudy {
   McRequest mc;
 };
 
-// Rejects misspelt fields: a typo in a tolerance would otherwise silently read as zero.
-void CheckKnownFields(const Node& n, const std::set<std::string>& known) {
-  if (!n.json().is_object()) n.Fail("an object");
-  for (auto it = n.json().begin(); it != n.json().end(); ++it) {
-    if (known.count(it.key())) continue;
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    n[it.key()].FailWith("unknown field (known: " + list + ")");
-  }
-}
-
 std::string Format(double v) {
   std::ostringstream os;
   os.precision(6);
@@ -65,11 +54,11 @@ DiscCamStudy Parse(const Node& root) {
   const Node follower = root["follower"];
   const std::string type = follower["type"].String();
   if (type == "translating_roller") {
-    CheckKnownFields(follower, {"type", "offset_mm", "roller_radius_mm"});
+    follower.CheckKnownFields({"type", "offset_mm", "roller_radius_mm"});
     cam.follower = FollowerType::kTranslatingRoller;
     cam.offset = follower.NumberOr("offset_mm", 0.0);
   } else if (type == "oscillating_roller") {
-    CheckKnownFields(follower, {"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
+    follower.CheckKnownFields({"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
     cam.follower = FollowerType::kOscillatingRoller;
     cam.pivot_distance = follower["pivot_distance_mm"].Positive();
     cam.arm_length = follower["arm_length_mm"].Positive();
@@ -101,7 +90,7 @@ DiscCamStudy Parse(const Node& root) {
   std::string laws;
   for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
   for (const Node& seg : motion_node.Elements()) {
-    CheckKnownFields(seg, {"law", rise_key, wrong_key, "cam_angle_deg"});
+    seg.CheckKnownFields({"law", rise_key, wrong_key, "cam_angle_deg"});
     if (seg.Has(wrong_key))
       seg[wrong_key].FailWith(std::string("a ") +
                               (oscillating ? "oscillating follower's rise is an angle: use rise_deg"
@@ -134,14 +123,14 @@ DiscCamStudy Parse(const Node& root) {
 
   if (root.Has("tolerances")) {
     const Node t = root["tolerances"];
-    CheckKnownFields(t, {"profile_radial_um", "roller_radius_um", "profile_normal_um"});
+    t.CheckKnownFields({"profile_radial_um", "roller_radius_um", "profile_normal_um"});
     s.tolerances.radial = t.NonNegativeOr("profile_radial_um", 0.0) * 1e-3;
     s.tolerances.roller = t.NonNegativeOr("roller_radius_um", 0.0) * 1e-3;
     s.tolerances.normal = t.NonNegativeOr("profile_normal_um", 0.0) * 1e-3;
   }
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
-    CheckKnownFields(a, {"angle_steps", "monte_carlo"});
+    a.CheckKnownFields({"angle_steps", "monte_carlo"});
     s.angle_steps = a.IntegerOr("angle_steps", 36, 3600);
     if (s.angle_steps > 1000000) a["angle_steps"].Fail("a whole number <= 1000000");
     if (a.Has("monte_carlo")) {
@@ -149,7 +138,7 @@ DiscCamStudy Parse(const Node& root) {
       if (m.json().is_boolean()) {
         s.mc.enabled = m.Bool();
       } else {
-        CheckKnownFields(m, {"samples", "angle_steps", "seed", "scales"});
+        m.CheckKnownFields({"samples", "angle_steps", "seed", "scales"});
         s.mc.options.samples = m.IntegerOr("samples", 1, s.mc.options.samples);
         s.mc.options.angle_steps = m.IntegerOr("angle_steps", 36, s.mc.options.angle_steps);
         s.mc.options.seed = static_cast<uint64_t>(m.IntegerOr("seed", 0, 1));

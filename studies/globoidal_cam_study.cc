@@ -41,16 +41,6 @@ struct GloboidalStudy {
   bool export_stl = true, export_point_cloud = true;
 };
 
-void CheckKnownFields(const Node& n, const std::set<std::string>& known) {
-  if (!n.json().is_object()) n.Fail("an object");
-  for (auto it = n.json().begin(); it != n.json().end(); ++it) {
-    if (known.count(it.key())) continue;
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    n[it.key()].FailWith("unknown field (known: " + list + ")");
-  }
-}
-
 std::string Format(double v) {
   std::ostringstream os;
   os.precision(6);
@@ -59,14 +49,14 @@ std::string Format(double v) {
 }
 
 GloboidalStudy Parse(const Node& root) {
-  CheckKnownFields(root, {"study", "name", "cam", "motion", "load", "contact", "dynamics",
+  root.CheckKnownFields({"study", "name", "cam", "motion", "load", "contact", "dynamics",
                           "analysis", "export"});
   GloboidalStudy s;
   s.name = root.StringOr("name", "globoidal cam");
   GloboidalCam<double>& cam = s.dyn.cam;
 
   const Node c = root["cam"];
-  CheckKnownFields(c, {"center_distance_mm", "roller_radius_mm", "pitch_radius_mm",
+  c.CheckKnownFields({"center_distance_mm", "roller_radius_mm", "pitch_radius_mm",
                        "roller_length_mm", "clearance_mm", "roller_angle_deg", "swing_deg",
                        "first_motion"});
   cam.center_distance = c["center_distance_mm"].Positive();
@@ -110,7 +100,7 @@ GloboidalStudy Parse(const Node& root) {
   std::string laws;
   for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
   for (const Node& seg : motion_node.Elements()) {
-    CheckKnownFields(seg, {"law", "rise_deg", "cam_angle_deg"});
+    seg.CheckKnownFields({"law", "rise_deg", "cam_angle_deg"});
     const auto law = motion::LawFromName(seg["law"].String());
     if (!law) seg["law"].Fail("a motion law (" + laws + ")");
     motion::MotionSegment<double> m;
@@ -147,13 +137,13 @@ GloboidalStudy Parse(const Node& root) {
 
   if (root.Has("load")) {
     const Node l = root["load"];
-    CheckKnownFields(l, {"turret_torque_Nm", "turret_inertia_kgm2"});
+    l.CheckKnownFields({"turret_torque_Nm", "turret_inertia_kgm2"});
     s.dyn.load_torque_Nmm = l.NumberOr("turret_torque_Nm", 0.0) * 1e3;
     s.dyn.inertia_Nmms2 = l.PositiveOr("turret_inertia_kgm2", 0.01) * 1e3;
   }
   if (root.Has("contact")) {
     const Node k = root["contact"];
-    CheckKnownFields(k, {"cam_modulus_MPa", "cam_poisson", "roller_modulus_MPa", "roller_poisson",
+    k.CheckKnownFields({"cam_modulus_MPa", "cam_poisson", "roller_modulus_MPa", "roller_poisson",
                          "exponent", "max_damping_Ns_per_mm", "penetration_depth_mm",
                          "contact_arm_mm"});
     auto& m = s.dyn.contact;
@@ -173,7 +163,7 @@ GloboidalStudy Parse(const Node& root) {
   }
   if (root.Has("dynamics")) {
     const Node d = root["dynamics"];
-    CheckKnownFields(d, {"cam_speeds_rpm", "end_time_s", "time_step_s"});
+    d.CheckKnownFields({"cam_speeds_rpm", "end_time_s", "time_step_s"});
     if (d.Has("cam_speeds_rpm"))
       for (const Node& v : d["cam_speeds_rpm"].Elements()) s.speeds_rpm.push_back(v.Positive());
     if (d.Has("end_time_s")) s.end_time_s = d["end_time_s"].Positive();
@@ -188,7 +178,7 @@ GloboidalStudy Parse(const Node& root) {
   }
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
-    CheckKnownFields(a, {"angle_steps", "axis_steps"});
+    a.CheckKnownFields({"angle_steps", "axis_steps"});
     s.angle_steps = a.IntegerOr("angle_steps", 36, s.angle_steps);
     if (s.angle_steps > 200000) a["angle_steps"].Fail("a whole number <= 200000");
     s.axis_steps = a.IntegerOr("axis_steps", 2, s.axis_steps);
@@ -196,7 +186,7 @@ GloboidalStudy Parse(const Node& root) {
   }
   if (root.Has("export")) {
     const Node e = root["export"];
-    CheckKnownFields(e, {"stl", "point_cloud", "angle_steps", "axis_steps"});
+    e.CheckKnownFields({"stl", "point_cloud", "angle_steps", "axis_steps"});
     s.export_stl = e.BoolOr("stl", true);
     s.export_point_cloud = e.BoolOr("point_cloud", true);
     s.export_angle_steps = e.IntegerOr("angle_steps", 36, s.export_angle_steps);

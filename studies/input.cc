@@ -33,6 +33,16 @@ void Node::FailWith(const std::string& message) const {
   throw StudyError(file_ + ": " + path_ + ": " + message);
 }
 
+void Node::CheckKnownFields(const std::set<std::string>& known) const {
+  if (!value_->is_object()) Fail("an object");
+  for (auto it = value_->begin(); it != value_->end(); ++it) {
+    if (known.count(it.key())) continue;
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    (*this)[it.key()].FailWith("unknown field (known: " + list + ")");
+  }
+}
+
 bool Node::Has(const std::string& key) const {
   return value_->is_object() && value_->contains(key);
 }

@@ -2,6 +2,7 @@
 // reported as one line naming the file, the path, what was expected and what was found.
 #pragma once
 
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -54,6 +55,10 @@ class Node {
   int IntegerOr(const std::string& key, int min_value, int fallback) const;
   std::string StringOr(const std::string& key, const std::string& fallback) const;
   bool BoolOr(const std::string& key, bool fallback) const;
+
+  /// Rejects members not in `known` (a misspelt optional field would otherwise silently read as
+  /// its default): "FILE: PATH/key: unknown field (known: …)". Also fails when this is not an object.
+  void CheckKnownFields(const std::set<std::string>& known) const;
 
   /// Throws a StudyError "FILE: PATH: expected EXPECTED, found FOUND".
   [[noreturn]] void Fail(const std::string& expected) const;

@@ -100,19 +100,24 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
 }
 
 void RunLcrAnalysis(const Node& root, const RunContext& ctx, Outputs& out) {
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis"});
   const lcr::Reducer<double> r = ParseReducer(root["reducer"]);
+  root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   const lcr::Material material = ParseMaterial(root["material"]);
   const Node load_node = root["load"];
+  load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N"});
   lcr::LoadCase load;
   load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
   load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
   load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
   const Node analysis = root.Has("analysis") ? root["analysis"] : root;
+  if (root.Has("analysis")) analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate"});
   const int steps = root.Has("analysis") ? analysis.IntegerOr("angle_steps", 12, 3600) : 3600;
   const int points = root.Has("analysis") ? analysis.IntegerOr("profile_points", 100, 3600) : 3600;
   const Request q = root.Has("analysis") ? ParseEvaluate(analysis) : Request{};
   double stress_limit = kInf, force_limit = kInf;
   if (root.Has("limits")) {
+    root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N"});
     stress_limit = root["limits"].PositiveOr("contact_stress_MPa", kInf);
     force_limit = root["limits"].PositiveOr("roller_load_N", kInf);
   }

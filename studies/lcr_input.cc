@@ -5,6 +5,8 @@ namespace camopt::studies {
 namespace {
 
 lcr::CamSide<double> ParseSide(const Node& s) {
+  s.CheckKnownFields({"lobes", "rollers", "turret_radius_mm", "roller_diameter_mm", "roller_length_mm",
+                      "cam_thickness_mm", "cutter_diameter_mm"});
   lcr::CamSide<double> c;
   c.lobes = s["lobes"].Integer(1);
   c.rollers = s["rollers"].Integer(2);
@@ -20,6 +22,7 @@ lcr::CamSide<double> ParseSide(const Node& s) {
 }  // namespace
 
 lcr::Reducer<double> ParseReducer(const Node& node) {
+  node.CheckKnownFields({"eccentricity_mm", "input", "output"});
   lcr::Reducer<double> r;
   r.eccentricity = node["eccentricity_mm"].Positive();
   r.input = ParseSide(node["input"]);

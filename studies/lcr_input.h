@@ -16,7 +16,8 @@ lcr::Reducer<double> ParseReducer(const Node& reducer);
 /// must be > 0 and <= the roller diameter.
 double ParseCutterDiameter(const Node& side, double roller_diameter);
 
-/// {"youngs_modulus_GPa", "poisson_ratio"}.
+/// {"youngs_modulus_GPa", "poisson_ratio"}. Other members are left to the caller (a material
+/// object may be shared with other models, e.g. a shear modulus for shafts).
 lcr::Material ParseMaterial(const Node& material);
 
 }  // namespace camopt::studies

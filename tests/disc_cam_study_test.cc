@@ -23,9 +23,7 @@ using camopt::testing::TempDir;
 using camopt::testing::WriteFile;
 using nlohmann::json;
 
-json Example(const std::string& name) {
-  return json::parse(ReadFile(SourcePath("studies/examples/" + name)));
-}
+using camopt::testing::Example;
 
 // The CSV row whose first column (cam angle) is closest to angle_deg, by column name.
 std::map<std::string, double> CsvRowAt(const std::string& csv, double angle_deg) {

@@ -23,9 +23,7 @@ using camopt::testing::TempDir;
 using camopt::testing::WriteFile;
 using nlohmann::json;
 
-json Example(const std::string& name) {
-  return json::parse(ReadFile(SourcePath("studies/examples/" + name)));
-}
+using camopt::testing::Example;
 
 // Runs a study given as json in dir; returns result.json (or null json on a non-zero exit).
 json RunStudy(const json& study, const std::filesystem::path& dir, int* exit_code = nullptr,

@@ -14,6 +14,7 @@
 
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace camopt::testing {
 
@@ -89,6 +90,11 @@ inline std::string ReadFile(const std::filesystem::path& path) {
 
 inline std::string SourcePath(const std::string& relative) {
   return std::string(CAMOPT_SOURCE_DIR) + "/" + relative;
+}
+
+/// A study from studies/examples/, parsed.
+inline nlohmann::json Example(const std::string& name) {
+  return nlohmann::json::parse(ReadFile(SourcePath("studies/examples/" + name)));
 }
 
 }  // namespace camopt::testing
