@@ -150,17 +150,9 @@ class DiscCamBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(DiscCamBadInput, ExitCode2AndTheJsonPath) {
   const BadCase& c = GetParam();
-  const auto dir = TempDir(std::string("disc-cam-bad-") + c.name);
   json study = Example(c.example);
   study.merge_patch(json::parse(c.patch));
-  WriteFile(dir / "study.json", study.dump());
-  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
-                             (dir / "out").string());
-  EXPECT_EQ(res.exit_code, 2) << res.stderr_text;
-  EXPECT_NE(res.stderr_text.find(std::string(": ") + c.path + ": "), std::string::npos)
-      << res.stderr_text;
-  EXPECT_NE(res.stderr_text.find(c.words), std::string::npos) << res.stderr_text;
-  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "result.json"));
+  camopt::testing::ExpectStudyRejected(study, std::string("disc-cam-") + c.name, c.path, c.words);
 }
 
 const char* kT = "disc_cam_translating.json";

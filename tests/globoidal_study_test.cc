@@ -191,17 +191,9 @@ class GloboidalBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(GloboidalBadInput, ExitCode2AndTheJsonPath) {
   const BadCase& c = GetParam();
-  const auto dir = TempDir(std::string("globoidal-bad-") + c.name);
   json study = Example();
   study.merge_patch(json::parse(c.patch));
-  WriteFile(dir / "study.json", study.dump());
-  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
-                             (dir / "out").string());
-  EXPECT_EQ(res.exit_code, 2) << res.stderr_text;
-  EXPECT_NE(res.stderr_text.find(std::string(": ") + c.path + ": "), std::string::npos)
-      << res.stderr_text;
-  EXPECT_NE(res.stderr_text.find(c.words), std::string::npos) << res.stderr_text;
-  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "result.json"));
+  camopt::testing::ExpectStudyRejected(study, std::string("globoidal-") + c.name, c.path, c.words);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -1,6 +1,7 @@
 // Shared test helpers: AD-versus-central-difference gradient checks and running the CLI.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -90,6 +91,22 @@ inline std::string ReadFile(const std::filesystem::path& path) {
 
 inline std::string SourcePath(const std::string& relative) {
   return std::string(CAMOPT_SOURCE_DIR) + "/" + relative;
+}
+
+/// Runs a study that must be rejected as bad input: exit code 2, one line on stderr naming the
+/// study file and ": PATH: " and containing `words`, and nothing written.
+inline void ExpectStudyRejected(const nlohmann::json& study, const std::string& tag,
+                                const std::string& path, const std::string& words) {
+  const auto dir = TempDir("bad-" + tag);
+  const auto file = dir / "study.json";
+  WriteFile(file, study.dump());
+  const CliResult res = RunCamopt("run " + file.string() + " --quiet --out " + (dir / "out").string());
+  EXPECT_EQ(res.exit_code, 2) << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find(file.string() + ": "), std::string::npos) << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find(": " + path + ": "), std::string::npos) << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find(words), std::string::npos) << res.stderr_text;
+  EXPECT_EQ(std::count(res.stderr_text.begin(), res.stderr_text.end(), '\n'), 1) << res.stderr_text;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing is written for a bad study";
 }
 
 /// A study from studies/examples/, parsed.
