@@ -21,6 +21,7 @@ using namespace camopt::cycloid;
 using cycloid_common::Fmt;
 
 void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
+  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis"});
   const Drive drive = cycloid_common::ParseDrive(root);
   const Crowning crowning = cycloid_common::ParseCrowning(root, drive.face_width_mm);
   const Material material = cycloid_common::ParseMaterial(root);

@@ -47,6 +47,8 @@ std::string Format(double v) {
 }
 
 DiscCamStudy Parse(const Node& root) {
+  root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
+                         "tolerances", "analysis"});
   DiscCamStudy s;
   s.name = root.StringOr("name", "disc cam");
   DiscCam& cam = s.cam;

@@ -47,6 +47,7 @@ Parameter ParseParameter(const Node& parent, const std::string& key, Parameter f
 }
 
 void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "measurements", "parameters", "analysis"});
   const lcr::Reducer<double> r = ParseReducer(root["reducer"]);
   const lcr::Material material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
   std::vector<Measurement> data;

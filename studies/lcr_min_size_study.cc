@@ -333,6 +333,7 @@ nlohmann::json CandidateJson(const Candidate& c) {
 }
 
 void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
+  root.CheckKnownFields({"study", "name", "description", "target", "search", "variables", "fixed", "limits", "material", "load", "optimizer", "roller_catalogue"});
   const Study s = Parse(root, ctx);
   const auto combos = objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences);
   if (combos.empty())

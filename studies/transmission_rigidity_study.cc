@@ -294,6 +294,7 @@ std::string KindAdvice(const std::string& kind) {
 }
 
 void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& out) {
+  root.CheckKnownFields({"study", "name", "description", "material", "chain", "load_torque_Nm", "report_radius_mm"});
   const std::string name = root.StringOr("name", "transmission");
   const Node chain = root["chain"];
   const std::vector<Node> nodes = chain.Elements();

@@ -121,3 +121,23 @@ TEST(Cli, MissingFileAndBadJsonExitWithCode2) {
 
 }  // namespace
 }  // namespace camopt
+
+namespace camopt {
+namespace {
+
+// Every study kind rejects a misspelt top-level field instead of silently ignoring it.
+TEST(Cli, EveryKindRejectsAnUnknownTopLevelField) {
+  int kinds = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(camopt::testing::SourcePath("studies/examples"))) {
+    nlohmann::json study = nlohmann::json::parse(camopt::testing::ReadFile(entry.path()));
+    if (!study.is_object() || !study.contains("study")) continue;  // e.g. a roller catalogue
+    study["nmae"] = "typo";
+    camopt::testing::ExpectStudyRejected(study, "unknown-" + entry.path().stem().string(), "/nmae",
+                                         "unknown field");
+    ++kinds;
+  }
+  EXPECT_GE(kinds, 8);
+}
+
+}  // namespace
+}  // namespace camopt
