@@ -146,6 +146,8 @@ struct BadCase {
   const char* words;  // and a phrase it must contain
 };
 
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
 class DiscCamBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(DiscCamBadInput, ExitCode2AndTheJsonPath) {

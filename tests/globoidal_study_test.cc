@@ -187,6 +187,8 @@ struct BadCase {
   const char* words;  // and a phrase it must contain
 };
 
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
 class GloboidalBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(GloboidalBadInput, ExitCode2AndTheJsonPath) {

@@ -15,6 +15,7 @@
 
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 namespace camopt::testing {
@@ -58,9 +59,10 @@ struct CliResult {
 
 /// Runs the built camopt binary with arguments; captures stderr.
 inline CliResult RunCamopt(const std::string& args) {
+  // Unique per process and call: ctest runs tests in parallel processes.
+  static int calls = 0;
   const auto err = std::filesystem::temp_directory_path() /
-                   ("camopt-test-stderr-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                    "-" + std::to_string(std::rand()));
+                   ("camopt-test-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(++calls));
   const std::string cmd = std::string(CAMOPT_BINARY) + " " + args + " 2> " + err.string();
   const int status = std::system(cmd.c_str());
   std::ifstream in(err);
@@ -72,7 +74,8 @@ inline CliResult RunCamopt(const std::string& args) {
 
 /// A fresh temporary folder for one test.
 inline std::filesystem::path TempDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("camopt-test-" + name);
+  auto dir = std::filesystem::temp_directory_path() /
+             ("camopt-test-" + std::to_string(::getpid()) + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
