@@ -346,6 +346,19 @@ TEST(LcrHardCases, RollerOnTheLoadLineCarriesNothing) {
   EXPECT_NEAR(std::abs(a.input.contacts[1].arm), std::abs(a.input.contacts[12].arm), 1e-9);
 }
 
+TEST(LcrHardCases, HugeRatioKeepsTheBalances) {
+  // 49/50 and 50/51 lobes/rollers: r_i = −2499.
+  Reducer<double> r = camopt::testing::MakeLcr(0.5, 49, 50, 60, 50, 51, 64, 6, 5, 4);
+  EXPECT_DOUBLE_EQ(SpeedReductionRatio(r), -2499.0);
+  EXPECT_TRUE(CheckDesign(r).empty());
+  for (double theta : {0.0, 0.01, 1.0, 4.0}) {
+    const AngleLoads<double> a = AnalyzeAngle(r, Steel(), {80000.0, 0.0, 0.0}, theta);
+    EXPECT_NEAR(a.input_torque, 80000.0 / 2499.0, 1e-9);  // power balance, μ = 0
+    EXPECT_TRUE(std::isfinite(a.input.max_stress) && std::isfinite(a.output.max_stress));
+    EXPECT_GT(a.input.actuating, 10);
+  }
+}
+
 TEST(LcrDesignChecks, RejectsImpossibleDesigns) {
   Reducer<double> r = LcrII();
   EXPECT_TRUE(CheckDesign(r).empty());
