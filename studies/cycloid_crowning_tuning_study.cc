@@ -130,10 +130,13 @@ void RunCycloidCrowningTuning(const Node& root, const RunContext& ctx, Outputs& 
   const Drive drive = cycloid_common::ParseDrive(root);
   const Material material = cycloid_common::ParseMaterial(root);
   const Node load = root["load"];
+  load.CheckKnownFields({"design_torque_Nm", "max_torque_Nm"});
   const double design_torque = load["design_torque_Nm"].Positive();
   const double max_torque = load["max_torque_Nm"].Positive();
   if (max_torque < design_torque) load["max_torque_Nm"].Fail("a torque >= design_torque_Nm");
   const Node tuning = root["tuning"];
+  tuning.CheckKnownFields({"coefficient_mm", "effective_length_mm", "reference_coefficient_mm", "curve_points",
+                           "max_evaluations", "edge_margin_um"});
   const auto [f_lo, f_hi] = tuning["coefficient_mm"].Range();
   if (f_lo < 0 || !(f_hi > f_lo)) tuning["coefficient_mm"].Fail("a range [lo, hi] with 0 <= lo < hi");
   bool tune_length = tuning.Has("effective_length_mm");
@@ -154,6 +157,7 @@ void RunCycloidCrowningTuning(const Node& root, const RunContext& ctx, Outputs& 
   int per_period = 6;
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
+    a.CheckKnownFields({"grid", "crank_angles_per_mesh_period"});
     cycloid_common::ParseGrid(a, options);
     per_period = a.IntegerOr("crank_angles_per_mesh_period", 1, 6);
     if (per_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");

@@ -25,11 +25,13 @@ void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
   const Drive drive = cycloid_common::ParseDrive(root);
   const Crowning crowning = cycloid_common::ParseCrowning(root, drive.face_width_mm);
   const Material material = cycloid_common::ParseMaterial(root);
+  root["load"].CheckKnownFields({"torque_Nm"});
   const double torque = root["load"]["torque_Nm"].NonNegative();
   LoadedOptions options;
   std::vector<double> angles;
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
+    a.CheckKnownFields({"grid", "tolerance", "crank_angles_deg", "crank_angle_steps", "crank_span_deg"});
     cycloid_common::ParseGrid(a, options);
     options.tolerance = a.PositiveOr("tolerance", options.tolerance);
     if (a.Has("crank_angles_deg")) {

@@ -19,6 +19,8 @@ namespace camopt::studies::cycloid_common {
 /// "drive" and the optional "modification" (µm) of a study.
 inline cycloid::Drive ParseDrive(const Node& root) {
   const Node d = root["drive"];
+  d.CheckKnownFields({"teeth", "rollers", "roller_position_radius_mm", "roller_radius_mm", "eccentricity_mm",
+                      "face_width_mm"});
   cycloid::Drive drive;
   drive.teeth = d["teeth"].Integer(2);
   drive.rollers = d["rollers"].Integer(3);
@@ -29,6 +31,7 @@ inline cycloid::Drive ParseDrive(const Node& root) {
   drive.face_width_mm = d["face_width_mm"].Positive();
   if (root.Has("modification")) {
     const Node m = root["modification"];
+    m.CheckKnownFields({"delta_position_um", "delta_radius_um"});
     drive.delta_position_mm = m.NumberOr("delta_position_um", 0.0) * 1e-3;
     drive.delta_radius_mm = m.NumberOr("delta_radius_um", 0.0) * 1e-3;
   }
@@ -40,6 +43,7 @@ inline cycloid::Drive ParseDrive(const Node& root) {
 inline cycloid::Material ParseMaterial(const Node& root) {
   cycloid::Material m;
   const Node n = root["material"];
+  n.CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   m.youngs_modulus_MPa = n["youngs_modulus_GPa"].Positive() * 1000.0;
   m.poisson_ratio = n["poisson_ratio"].NumberIn(0.0, 0.499);
   return m;
@@ -51,16 +55,21 @@ inline cycloid::Crowning ParseCrowning(const Node& root, double face_width_mm) {
   if (!root.Has("crowning")) return c;
   const Node n = root["crowning"];
   const std::string type = n["type"].String();
+  // Each type reads its own fields; any other field (e.g. a coefficient on a full crowning) is an error.
   if (type == "none") {
+    n.CheckKnownFields({"type"});
     c.type = cycloid::CrowningType::kNone;
   } else if (type == "full") {
+    n.CheckKnownFields({"type", "radius_mm"});
     c.type = cycloid::CrowningType::kFull;
     c.radius_mm = n["radius_mm"].Positive();
   } else if (type == "partial") {
+    n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
     c.type = cycloid::CrowningType::kPartial;
     c.radius_mm = n["radius_mm"].Positive();
     c.flat_length_mm = n["flat_length_mm"].NonNegative();
   } else if (type == "logarithmic") {
+    n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm"});
     c.type = cycloid::CrowningType::kLogarithmic;
     c.coefficient_mm = n["coefficient_mm"].NonNegative();
     c.effective_length_mm = n.NonNegativeOr("effective_length_mm", 0.0);

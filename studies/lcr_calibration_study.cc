@@ -34,6 +34,7 @@ struct Parameter {
 Parameter ParseParameter(const Node& parent, const std::string& key, Parameter fallback) {
   if (!parent.Has(key)) return fallback;
   const Node p = parent[key];
+  p.CheckKnownFields({"initial", "bounds"});
   Parameter out = fallback;
   if (p.Has("bounds")) {
     const auto [lo, hi] = p["bounds"].Range();
@@ -49,16 +50,21 @@ Parameter ParseParameter(const Node& parent, const std::string& key, Parameter f
 void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "measurements", "parameters", "analysis"});
   const lcr::Reducer<double> r = ParseReducer(root["reducer"]);
+  if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   const lcr::Material material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
   std::vector<Measurement> data;
   const Node meas = root["measurements"];
-  for (const Node& m : meas.Elements())
+  for (const Node& m : meas.Elements()) {
+    m.CheckKnownFields({"output_torque_Nm", "input_torque_Nm", "input_torque_sd_Nm"});
     data.push_back({m["output_torque_Nm"].Positive(), m["input_torque_Nm"].Positive(),
                     m["input_torque_sd_Nm"].Positive()});
+  }
   if (data.size() < 3) meas.Fail("at least 3 measurements (2 parameters are fitted)");
+  if (root.Has("analysis")) root["analysis"].CheckKnownFields({"angle_steps"});
   const int steps = root.Has("analysis") ? root["analysis"].IntegerOr("angle_steps", 12, 3600) : 3600;
   Parameter mu{0.05, 0.0, 1.0}, drag{0.0, 0.0, 10.0};
   if (root.Has("parameters")) {
+    root["parameters"].CheckKnownFields({"friction_coefficient", "drag_torque_Nm"});
     mu = ParseParameter(root["parameters"], "friction_coefficient", mu);
     drag = ParseParameter(root["parameters"], "drag_torque_Nm", drag);
   }

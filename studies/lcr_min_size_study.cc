@@ -60,6 +60,7 @@ std::vector<CatalogueRoller> ParseCatalogue(const Node& n) {
   const std::vector<Node> items = n.Elements();
   if (items.empty()) n.Fail("a non-empty list of rollers");
   for (const Node& item : items) {
+    item.CheckKnownFields({"name", "diameter_mm", "length_mm", "load_limit_N"});
     CatalogueRoller r;
     r.name = item.StringOr("name", "roller " + std::to_string(out.size() + 1));
     r.diameter_mm = item["diameter_mm"].Positive();
@@ -74,6 +75,7 @@ Study Parse(const Node& root, const RunContext& ctx) {
   Study s;
   s.name = root.StringOr("name", "");
   const Node target = root["target"];
+  target.CheckKnownFields({"speed_ratio", "output_torque_Nm"});
   const Node ratio = target["speed_ratio"];
   const double rv = ratio.Number();
   if (rv != std::round(rv) || std::abs(rv) < 2 || std::abs(rv) > 1e6)
@@ -83,6 +85,7 @@ Study Parse(const Node& root, const RunContext& ctx) {
 
   if (root.Has("search")) {
     const Node search = root["search"];
+    search.CheckKnownFields({"max_lobes", "roller_lobe_difference"});
     s.max_lobes = search.IntegerOr("max_lobes", 1, 40);
     if (s.max_lobes > 200) search["max_lobes"].Fail("a number of lobes <= 200");
     if (search.Has("roller_lobe_difference")) {
@@ -100,18 +103,21 @@ Study Parse(const Node& root, const RunContext& ctx) {
 
   LcrSizingSpec& b = s.base;
   const Node vars = root["variables"];
+  vars.CheckKnownFields({"eccentricity_mm", "turret_radius_mm", "roller_diameter_mm", "same_roller_on_both_cams"});
   b.eccentricity_mm = PositiveRange(vars["eccentricity_mm"]);
   b.turret_radius_mm = PositiveRange(vars["turret_radius_mm"]);
   if (vars.Has("roller_diameter_mm")) b.roller_diameter_mm = PositiveRange(vars["roller_diameter_mm"]);
   b.same_roller = vars.BoolOr("same_roller_on_both_cams", true);
 
   const Node fixed = root["fixed"];
+  fixed.CheckKnownFields({"cam_thickness_mm", "roller_length_mm"});
   b.cam_thickness_mm = fixed["cam_thickness_mm"].Positive();
   if (root.Has("roller_catalogue")) {
     Node cat = root["roller_catalogue"];
     nlohmann::json loaded;
     if (cat.json().is_object()) {
       // {"file": "rollers.json"}, relative to the study file.
+      cat.CheckKnownFields({"file"});
       const Node file = cat["file"];
       std::filesystem::path p(file.String());
       if (p.is_relative()) p = std::filesystem::path(ctx.study_file).parent_path() / p;
@@ -129,18 +135,23 @@ Study Parse(const Node& root, const RunContext& ctx) {
     vars["same_roller_on_both_cams"].Fail("true with a roller catalogue (each catalogue roller is used on both cams)");
 
   const Node limits = root["limits"];
+  limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "undercut_margin_mm", "roller_gap_mm", "min_efficiency"});
   b.limits.contact_stress_MPa = limits.PositiveOr("contact_stress_MPa", kInf);
   b.limits.roller_load_N = limits.PositiveOr("roller_load_N", kInf);
   b.limits.undercut_margin_mm = limits.NonNegativeOr("undercut_margin_mm", 0.0);
   b.limits.roller_gap_mm = limits.NonNegativeOr("roller_gap_mm", 0.0);
   if (limits.Has("min_efficiency")) b.limits.min_efficiency = limits["min_efficiency"].NumberIn(0.0, 0.999);
+  if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   b.material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
+  if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient"});
   b.output_torque_Nmm = s.output_torque_Nmm;
   if (root.Has("load")) s.friction = root["load"].NonNegativeOr("friction_coefficient", 0.0);
   b.friction_coefficient = s.friction;
 
   if (root.Has("optimizer")) {
     const Node o = root["optimizer"];
+    o.CheckKnownFields({"backend", "constraints", "samples_per_period", "sharpness", "tolerance", "max_evaluations",
+                        "starts"});
     s.solver.backend = o.StringOr("backend", "ipopt");
     const auto backends = optimizers::Backends();
     if (std::find(backends.begin(), backends.end(), s.solver.backend) == backends.end())

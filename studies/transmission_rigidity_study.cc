@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,9 +62,11 @@ struct ParsedElement {
 void ParseReducerElement(const Node& e, const Node& root, size_t index, const RunContext& ctx,
                          ParsedElement& parsed) {
   const lcr::Reducer<double> r = ParseReducer(e["reducer"]);
+  if (e.Has("material")) e["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   const lcr::Material material =
       ParseMaterial(e.Has("material") ? e["material"] : root["material"]);
   const Node load = e["load"];
+  load.CheckKnownFields({"output_torque_Nm"});
   const double torque = load["output_torque_Nm"].Positive() * 1000.0;  // N·mm
   const double clearance = e.NonNegativeOr("clearance_um", 0.0) / 1000.0;  // mm
   // Needle bearing radial stiffness per roller, in series with its contact; absent = rigid.
@@ -195,15 +198,28 @@ ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const 
     s.params = std::move(values);
   };
   const std::string& k = s.kind_name;
+  // The fields every element may have (docs/studies.md; "comment" is a free note, ignored), plus
+  // those of its kind.
+  auto check = [&](std::set<std::string> own) {
+    own.insert({"element", "name", "comment", "backlash_arcmin", "shear_modulus_GPa", "youngs_modulus_GPa"});
+    e.CheckKnownFields(own);
+  };
   if (k == "shaft_torsion") {
+    check({"outer_diameter_mm", "inner_diameter_mm", "length_mm"});
     const auto [outer, inner] = Diameters(e, "outer_diameter_mm");
     set(ElementKind::kShaftTorsion,
         {"shear_modulus_MPa", "outer_diameter_mm", "inner_diameter_mm", "length_mm"},
         {ShearMPa(e, root), outer, inner, e["length_mm"].Positive()});
   } else if (k == "shaft_bending") {
+    const std::string support = e.StringOr("support", "between_bearings");
+    if (support == "between_bearings")
+      check({"outer_diameter_mm", "inner_diameter_mm", "pitch_radius_mm", "support", "to_bearing_1_mm",
+             "to_bearing_2_mm"});
+    else if (support == "overhung")
+      check({"outer_diameter_mm", "inner_diameter_mm", "pitch_radius_mm", "support", "bearing_span_mm",
+             "overhang_mm"});
     const auto [outer, inner] = Diameters(e, "outer_diameter_mm");
     const double r = e["pitch_radius_mm"].Positive();
-    const std::string support = e.StringOr("support", "between_bearings");
     if (support == "between_bearings") {
       set(ElementKind::kShaftBending,
           {"youngs_modulus_MPa", "outer_diameter_mm", "inner_diameter_mm", "to_bearing_1_mm",
@@ -220,20 +236,24 @@ ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const 
       e["support"].Fail("\"between_bearings\" or \"overhung\"");
     }
   } else if (k == "linear_stiffness") {
+    check({"stiffness_N_per_mm", "radius_mm"});
     set(ElementKind::kLinearStiffness, {"stiffness_N_per_mm", "radius_mm"},
         {e["stiffness_N_per_mm"].Positive(), e["radius_mm"].Positive()});
   } else if (k == "chain_span" || k == "belt_span") {
+    check({"stiffness_N_per_mm", "reference_length_mm", "span_length_mm", "radius_mm"});
     set(ElementKind::kSpan,
         {"stiffness_N_per_mm", "reference_length_mm", "span_length_mm", "radius_mm"},
         {e["stiffness_N_per_mm"].Positive(), e.PositiveOr("reference_length_mm", 1000.0),
          e["span_length_mm"].Positive(), e["radius_mm"].Positive()});
   } else if (k == "pull_rod") {
+    check({"diameter_mm", "inner_diameter_mm", "length_mm", "lever_radius_mm"});
     const auto [outer, inner] = Diameters(e, "diameter_mm");
     set(ElementKind::kPullRod,
         {"youngs_modulus_MPa", "diameter_mm", "inner_diameter_mm", "length_mm", "lever_radius_mm"},
         {YoungsMPa(e, root), outer, inner, e["length_mm"].Positive(),
          e["lever_radius_mm"].Positive()});
   } else if (k == "lever") {
+    check({"length_mm", "tip_stiffness_N_per_mm", "width_mm", "height_mm"});
     const double length = e["length_mm"].Positive();
     if (e.Has("tip_stiffness_N_per_mm")) {
       set(ElementKind::kLeverStiffness, {"tip_stiffness_N_per_mm", "length_mm"},
@@ -244,6 +264,7 @@ ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const 
           {YoungsMPa(e, root), e["width_mm"].Positive(), e["height_mm"].Positive(), length});
     }
   } else if (k == "coupling") {
+    check({"rigidity_Nm_per_rad", "rigid"});
     if (e.Has("rigidity_Nm_per_rad")) {
       set(ElementKind::kCoupling, {"rigidity_Nmm_per_rad"},
           {1000.0 * e["rigidity_Nm_per_rad"].Positive()});
@@ -253,6 +274,7 @@ ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const 
       e.FailWith("a coupling needs \"rigidity_Nm_per_rad\" or \"rigid\": true");
     }
   } else if (k == "gear_stage") {
+    check({"ratio", "rigidity_Nm_per_rad", "mesh_stiffness_N_per_mm", "driven_pitch_radius_mm"});
     const double ratio = e["ratio"].Positive();
     if (e.Has("rigidity_Nm_per_rad")) {
       set(ElementKind::kGearStage, {"ratio", "mesh_rigidity_Nmm_per_rad"},
@@ -264,6 +286,8 @@ ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const 
       set(ElementKind::kGearStage, {"ratio"}, {ratio});
     }
   } else if (k == "lobe_cam_reducer") {
+    check({"reducer", "material", "load", "clearance_um", "needle_bearing_radial_stiffness_N_per_mm",
+           "angle_steps", "direction"});
     ParseReducerElement(e, root, index, ctx, parsed);
   } else {
     e["element"].Fail(
@@ -295,6 +319,9 @@ std::string KindAdvice(const std::string& kind) {
 
 void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& out) {
   root.CheckKnownFields({"study", "name", "description", "material", "chain", "load_torque_Nm", "report_radius_mm"});
+  // The chain's material serves every element, so it may hold the fields of any of them.
+  if (root.Has("material"))
+    root["material"].CheckKnownFields({"shear_modulus_GPa", "youngs_modulus_GPa", "poisson_ratio"});
   const std::string name = root.StringOr("name", "transmission");
   const Node chain = root["chain"];
   const std::vector<Node> nodes = chain.Elements();

@@ -384,5 +384,15 @@ TEST(CycloidStudies, CrowningTuningFindsAFeasibleCoefficient) {
     }
 }
 
+TEST(CycloidStudies, MisspeltNestedFieldIsRejected) {
+  // Each would otherwise be read as its default: L = B, no required edge margin.
+  nlohmann::json ltca = camopt::testing::Example("cycloid_ltca_nnm_lcm.json");
+  ltca["crowning"]["efective_length_mm"] = 20;
+  camopt::testing::ExpectStudyRejected(ltca, "cycloid-ltca-typo", "/crowning/efective_length_mm", "unknown field");
+  nlohmann::json tuning = camopt::testing::Example("cycloid_crowning_tuning_nnm.json");
+  tuning["tuning"]["edge_margin_mm"] = 0.002;
+  camopt::testing::ExpectStudyRejected(tuning, "cycloid-tuning-typo", "/tuning/edge_margin_mm", "unknown field");
+}
+
 }  // namespace
 }  // namespace camopt::cycloid

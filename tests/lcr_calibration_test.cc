@@ -104,5 +104,13 @@ TEST(LcrFrictionFit, BadInputIsExitCode2) {
   EXPECT_NE(err.find("/parameters/friction_coefficient/initial"), std::string::npos) << err;
 }
 
+TEST(LcrFrictionFit, MisspeltNestedFieldIsRejected) {
+  // Would otherwise start from the default 0.05.
+  json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
+  study["parameters"]["friction_coefficient"]["intial"] = 0.1;
+  camopt::testing::ExpectStudyRejected(study, "friction-typo", "/parameters/friction_coefficient/intial",
+                                       "unknown field");
+}
+
 }  // namespace
 }  // namespace camopt

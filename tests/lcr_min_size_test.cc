@@ -264,5 +264,18 @@ TEST(LcrMinSize, BadInputIsAClearErrorWithExitCode2) {
   }
 }
 
+TEST(LcrMinSize, MisspeltNestedFieldIsRejected) {
+  // Would otherwise be read as "no efficiency limit".
+  json study = Example("lcr_min_size.json");
+  study["limits"]["min_efficency"] = 0.9;
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-typo", "/limits/min_efficency", "unknown field");
+  // A catalogue entry's fields are checked too.
+  study = Example("lcr_min_size_catalogue.json");
+  study["roller_catalogue"] = json::parse(
+      R"([{"nmae": "NR 6x10", "diameter_mm": 6, "length_mm": 10, "load_limit_N": 1050}])");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-catalogue-typo", "/roller_catalogue/0/nmae",
+                                       "unknown field");
+}
+
 }  // namespace
 }  // namespace camopt

@@ -341,5 +341,19 @@ TEST(RigidityStudy, BadInputIsAClearErrorWithExitCode2) {
   }
 }
 
+TEST(RigidityStudy, MisspeltElementFieldIsRejected) {
+  // A misspelt mesh rigidity would otherwise make the gear stage rigid.
+  auto study = nlohmann::json::parse(R"({"study": "transmission_rigidity",
+      "material": {"shear_modulus_GPa": 80, "youngs_modulus_GPa": 206},
+      "chain": [{"element": "shaft_torsion", "outer_diameter_mm": 20, "length_mm": 100},
+                {"element": "gear_stage", "ratio": 3, "rigidty_Nm_per_rad": 2000}]})");
+  camopt::testing::ExpectStudyRejected(study, "rigidity-typo", "/chain/1/rigidty_Nm_per_rad", "unknown field");
+  // A field of the other shaft support is not silently ignored either.
+  study["chain"][1] = nlohmann::json::parse(R"({"element": "shaft_bending", "support": "overhung",
+      "outer_diameter_mm": 20, "pitch_radius_mm": 40, "bearing_span_mm": 100, "overhang_mm": 30,
+      "to_bearing_1_mm": 50})");
+  camopt::testing::ExpectStudyRejected(study, "rigidity-support", "/chain/1/to_bearing_1_mm", "unknown field");
+}
+
 }  // namespace
 }  // namespace camopt::rigidity
