@@ -126,7 +126,7 @@ double EdgeConstraint(const std::vector<double>& x, std::vector<double>& grad, v
 }
 
 void RunCycloidCrowningTuning(const Node& root, const RunContext& ctx, Outputs& out) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis", "tuning"});
+  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis", "tuning"});
   const Drive drive = cycloid_common::ParseDrive(root);
   const Material material = cycloid_common::ParseMaterial(root);
   const Node load = root["load"];
