@@ -414,6 +414,12 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
       } catch (const std::domain_error& e) {
         speeds.push_back({{"cam_speed_rpm", rpm}, {"failed", e.what()}});
         continue;
+      } catch (const std::runtime_error& e) {
+        // The only runtime_error of SimulateDynamics: the explicit integration diverged, which
+        // the user fixes with a smaller step (exit 2, not an internal failure).
+        throw StudyError(ctx.study_file + ": /dynamics/time_step_s: expected a time step the " +
+                         "integration stays stable with at " + Format(rpm) + " rpm, found " +
+                         Format(s.time_step_s) + " s (it diverged; try a 10 times smaller step)");
       }
       const std::string tag = Format(rpm) + "rpm";
       // Quasi-static force over the revolution at this speed.
