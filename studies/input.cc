@@ -258,7 +258,11 @@ class CheckingSax {
   bool end_object() { return Close(); }
   bool end_array() { return Close(); }
 
-  bool parse_error(size_t byte, const std::string& token, const nlohmann::json::exception& e) {
+  bool parse_error(size_t byte, const std::string& raw_token, const nlohmann::json::exception& e) {
+    // The offending text, printable ASCII only (it may be invalid UTF-8 or control bytes).
+    std::string token = raw_token;
+    for (char& c : token)
+      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
     if (e.id == 406)  // out_of_range: number overflow
       throw StudyError(file_ + ": " + Path() + ": expected a number within the range of a double (" +
                        "about ±1.8e308), found " + token.substr(0, 40));

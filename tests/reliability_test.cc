@@ -188,6 +188,17 @@ TEST(StudyInput, SyntaxErrorGivesLineAndColumn) {
   }
 }
 
+TEST(StudyInput, InvalidUtf8IsASyntaxErrorAndTheMessageStaysPrintable) {
+  try {
+    camopt::studies::ParseStudyText("{\"name\": \"\xff\xfe\"}", "u.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("u.json: /name: expected valid JSON"), std::string::npos) << m;
+    for (char c : m) EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f) << m;
+  }
+}
+
 TEST(StudyInput, DescribeOfAHugeValueIsShort) {
   json big = json::array();
   for (int i = 0; i < 200000; ++i) big.push_back(i);
@@ -437,8 +448,8 @@ std::vector<std::string> ExampleNames() {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryExample, TwoRuns, ::testing::ValuesIn(ExampleNames()),
-                         [](const auto& info) {
-                           std::string n = info.param.substr(0, info.param.size() - 5);
+                         [](const auto& example) {
+                           std::string n = example.param.substr(0, example.param.size() - 5);
                            for (char& c : n)
                              if (!isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;
