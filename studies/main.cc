@@ -89,16 +89,13 @@ int main(int argc, char** argv) {
     auto& limits = camopt::studies::CurrentInputLimits();
     limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) *
                                                 std::min(work_factor, 1e3));
-    const std::vector<std::string> incomplete =
-        camopt::studies::RunStudyFile(study_file, out_dir, ctx);
-    if (!incomplete.empty()) {
-      std::cerr << "camopt: finished, but the results do not meet what was asked (written to "
-                << out_dir << "):\n";
-      for (const auto& why : incomplete) std::cerr << "camopt:   " << why << "\n";
-      return 3;
-    }
+    camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     return 0;
+  } catch (const camopt::studies::StudyIncomplete& e) {
+    std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
+              << " (results written to " << out_dir << ")\n";
+    return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";
     return 2;

@@ -245,15 +245,14 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   return outputs;
 }
 
-std::vector<std::string> RunStudyFile(const std::string& file, const std::string& out_dir,
-                                      const RunContext& ctx) {
+void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx) {
   RunContext c = ctx;
   c.study_file = file;
   const nlohmann::json study = LoadStudyFile(file);
   OutputFolder folder(out_dir);  // a bad --out is reported before the work
   const Outputs outputs = RunStudy(study, c);
   folder.Commit(outputs);
-  return outputs.incomplete();
+  if (!outputs.incomplete().empty()) throw StudyIncomplete(outputs.incomplete());
 }
 
 double Finite(double value, const std::string& what) {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -51,14 +52,24 @@ class Outputs {
   /// Writes every file into dir at once (an OutputFolder: temporary sibling folder, one rename).
   void WriteAll(const std::string& dir) const;
 
-  /// The study ran to the end but its headline result is not what was asked (not converged,
-  /// nothing fits): the files are still written, and the CLI exits 3 with this reason.
-  void MarkIncomplete(const std::string& reason) { incomplete_.push_back(reason); }
-  const std::vector<std::string>& incomplete() const { return incomplete_; }
+  /// The study ran to the end but its answer is not what was asked (no feasible design, not
+  /// converged): the outputs are still written, then RunStudyFile throws StudyIncomplete with
+  /// the reasons (exit code 3). Several reasons are joined with "; ".
+  void MarkIncomplete(std::string reason) {
+    incomplete_ += (incomplete_.empty() ? "" : "; ") + std::move(reason);
+  }
+  const std::string& incomplete() const { return incomplete_; }
 
  private:
   std::map<std::string, std::string> files_;
-  std::vector<std::string> incomplete_;
+  std::string incomplete_;
+};
+
+/// Thrown by RunStudyFile after the outputs were written when Outputs::MarkIncomplete was called
+/// (exit code 3); what() is the reason.
+class StudyIncomplete : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 /// The output folder of one run, filled all at once. The constructor checks that `dir` can take
@@ -93,10 +104,9 @@ bool RegisterStudy(const std::string& kind, StudyRunner runner);
 std::vector<std::string> StudyKinds();
 
 /// Runs the study in file: parses, checks the work limits, dispatches on "study", writes into
-/// out_dir (checked first). Returns the reasons the result is incomplete (empty: complete).
-/// Throws StudyError for bad input (exit 2) and std::exception for other failures.
-std::vector<std::string> RunStudyFile(const std::string& file, const std::string& out_dir,
-                                      const RunContext& ctx);
+/// out_dir (checked first). Throws StudyError for bad input (exit 2), StudyIncomplete after
+/// writing an incomplete result (exit 3), and std::exception for other failures.
+void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
 
 /// Runs an already parsed study, returning its outputs without writing them.
 Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx);
