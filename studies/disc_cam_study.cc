@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "model/disc_cam/check.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
@@ -46,6 +47,37 @@ std::string Format(double v) {
   return os.str();
 }
 
+// The JSON path and message of a design issue (model units → the file's units).
+[[noreturn]] void FailOn(const disc_cam::DesignIssue& issue, const DiscCam& cam, const Node& root) {
+  using disc_cam::IssueKind;
+  const bool osc = cam.follower == FollowerType::kOscillatingRoller;
+  const double deg = issue.cam_angle_rad / kDeg;
+  switch (issue.kind) {
+    case IssueKind::kOffsetTooLarge:
+      root["follower"]["offset_mm"].FailWith(
+          "the offset " + Format(issue.value) +
+          " mm must be smaller than base circle + roller radius (" + Format(issue.upper) + " mm)");
+    case IssueKind::kArmCannotReach:
+      root["follower"]["arm_length_mm"].FailWith(
+          "the arm cannot reach the base circle: need |pivot distance − arm length| < base circle "
+          "+ roller radius < pivot distance + arm length (" + Format(issue.lower) + " < " +
+          Format(issue.value) + " < " + Format(issue.upper) + ")");
+    case IssueKind::kInsideBaseCircle:
+      root["motion"].FailWith("the follower goes inside the base circle at cam angle " +
+                              Format(deg) + " deg (S = " +
+                              Format(osc ? issue.value / kDeg : issue.value) +
+                              (osc ? " deg)" : " mm)"));
+    case IssueKind::kArmOutOfRange:
+      root["motion"].FailWith("the follower arm leaves (0, 180) deg from the cam centre line at "
+                              "cam angle " + Format(deg) + " deg");
+    case IssueKind::kJams:
+      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
+                              Format(issue.value / kDeg) + " deg at cam angle " + Format(deg) +
+                              " deg (the follower would jam)");
+  }
+  root.FailWith("unknown design issue");
+}
+
 DiscCamStudy Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
                          "tolerances", "analysis"});
@@ -69,19 +101,7 @@ DiscCamStudy Parse(const Node& root) {
   }
   cam.roller_radius = follower["roller_radius_mm"].Positive();
   cam.base_radius = root["base_circle_radius_mm"].Positive();
-  const double r0 = cam.base_radius + cam.roller_radius;
-  if (cam.follower == FollowerType::kTranslatingRoller && !(std::abs(cam.offset) < r0))
-    follower["offset_mm"].FailWith("the offset " + Format(cam.offset) +
-                                   " mm must be smaller than base circle + roller radius (" +
-                                   Format(r0) + " mm)");
-  if (cam.follower == FollowerType::kOscillatingRoller) {
-    const double f = cam.pivot_distance, l = cam.arm_length;
-    if (!(r0 > std::abs(f - l) && r0 < f + l))
-      follower["arm_length_mm"].FailWith(
-          "the arm cannot reach the base circle: need |pivot distance − arm length| < base circle "
-          "+ roller radius < pivot distance + arm length (" + Format(std::abs(f - l)) + " < " +
-          Format(r0) + " < " + Format(f + l) + ")");
-  }
+  for (const auto& issue : disc_cam::CheckGeometry(cam)) FailOn(issue, cam, root);
 
   // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
   const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
@@ -160,27 +180,6 @@ DiscCamStudy Parse(const Node& root) {
   return s;
 }
 
-// Feasibility over the cycle: the follower stays outside the base circle (S ≥ 0), an oscillating
-// arm stays within (0°, 180°), and the pressure angle stays below 89° (the follower jams).
-void CheckFeasible(const DiscCamStudy& s, const std::vector<CamPoint<double>>& pts,
-                   const Node& root) {
-  const double xi0 = disc_cam::InitialFollowerCoordinate(s.cam);
-  const bool osc = s.cam.follower == FollowerType::kOscillatingRoller;
-  for (const auto& p : pts) {
-    if (p.s < -1e-9 * (osc ? 1.0 : s.cam.base_radius))
-      root["motion"].FailWith("the follower goes inside the base circle at cam angle " +
-                              Format(p.theta / kDeg) + " deg (S = " +
-                              Format(osc ? p.s / kDeg : p.s) + (osc ? " deg)" : " mm)"));
-    if (osc && !(xi0 + p.s > 0.0 && xi0 + p.s < kPi))
-      root["motion"].FailWith("the follower arm leaves (0, 180) deg from the cam centre line at "
-                              "cam angle " + Format(p.theta / kDeg) + " deg");
-    if (!(std::abs(p.pressure_angle) < 89.0 * kDeg) || !std::isfinite(p.pressure_angle))
-      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
-                              Format(p.pressure_angle / kDeg) + " deg at cam angle " +
-                              Format(p.theta / kDeg) + " deg (the follower would jam)");
-  }
-}
-
 // Cam-angle intervals [deg] where flag is set, on a uniform grid of n points over 360°.
 nlohmann::json Intervals(const std::vector<bool>& flag) {
   nlohmann::json out = nlohmann::json::array();
@@ -200,7 +199,7 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   const bool osc = cam.follower == FollowerType::kOscillatingRoller;
   // Follower errors in µm at the roller centre: ΔS [mm] for a translating follower, l·Δξ for an
   // oscillating one (Δξ [rad] is reported separately in arc seconds).
-  const double to_um = osc ? cam.arm_length * 1e3 : 1e3;
+  const double to_um = disc_cam::RollerCentreMmPerFollowerUnit(cam) * 1e3;
   const double to_arcsec = 180.0 / kPi * 3600.0;
   const int n = s.angle_steps;
 
@@ -213,7 +212,8 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
     jerk[i] = cam.motion.Evaluate(t).j;
     err[i] = disc_cam::FollowerError(cam, pts[i], s.tolerances);
   }
-  CheckFeasible(s, pts, root);
+  if (const auto issues = disc_cam::CheckDesign(cam, n); !issues.empty())
+    FailOn(issues.front(), cam, root);
 
   auto arg_max = [&](auto f) {
     int best = 0;
@@ -247,20 +247,19 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   auto ratio = [&](int i) { return std::cos(pts[i].shift_angle) / std::cos(pts[i].pressure_angle); };
   r["cos_shift_over_cos_pressure"] = {{"min", ratio(arg_min(ratio))}, {"max", ratio(arg_max(ratio))}};
 
-  // Curvature: convex radius 1/κ − r_f where κ > 0, concave radius where κ < 0; undercut where
-  // κ r_f > 1 (NOTES.md §1).
+  // Curvature: the profile's radius where the pitch curve is convex, its magnitude where concave;
+  // undercut where κ r_f > 1 (model/disc_cam/disc_cam.h).
   std::vector<bool> undercut(n);
   std::optional<double> min_convex, min_concave;
   std::optional<double> min_convex_at, min_concave_at;
   for (int i = 0; i < n; ++i) {
     const double k = pts[i].pitch_curvature;
     undercut[i] = disc_cam::IsUndercut(pts[i], cam.roller_radius);
+    const double rho = disc_cam::ProfileRadiusOfCurvature(pts[i], cam.roller_radius);
     if (k > 0) {
-      const double rho = 1.0 / k - cam.roller_radius;
       if (!min_convex || rho < *min_convex) min_convex = rho, min_convex_at = angle_deg(i);
     } else if (k < 0) {
-      const double rho = 1.0 / -k + cam.roller_radius;
-      if (!min_concave || rho < *min_concave) min_concave = rho, min_concave_at = angle_deg(i);
+      if (!min_concave || -rho < *min_concave) min_concave = -rho, min_concave_at = angle_deg(i);
     }
   }
   const bool any_undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();

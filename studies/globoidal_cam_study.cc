@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/globoidal/check.h"
 #include "model/globoidal/contact_dynamics.h"
 #include "model/globoidal/globoidal.h"
 #include "model/motion/motion_program.h"
@@ -48,6 +49,40 @@ std::string Format(double v) {
   return os.str();
 }
 
+// The JSON path and message of a design issue (model units → the file's units).
+[[noreturn]] void FailOn(const globoidal::DesignIssue& issue, const GloboidalCam<double>& cam,
+                         const Node& root) {
+  using globoidal::IssueKind;
+  switch (issue.kind) {
+    case IssueKind::kRollerPastTurretAxis:
+      root["cam"]["roller_length_mm"].FailWith("the roller (length " + Format(issue.value) +
+                                               " mm) reaches past the turret axis: need m/2 < R_e");
+    case IssueKind::kRollersReachCamAxis:
+      root["cam"]["center_distance_mm"].FailWith(
+          "the rollers reach the cam axis: need C > l₁ + R = " + Format(issue.lower) +
+          " mm (l₁ = R_e + m/2 + e, eq. 8)");
+    case IssueKind::kRollersOverlap:
+      root["cam"]["roller_angle_deg"].FailWith("the two rollers overlap (no rib between them): need "
+                                               "2 l₂ sin(β/2) > 2R, found " + Format(issue.value) +
+                                               " mm ≤ " + Format(issue.lower) + " mm");
+    case IssueKind::kSwingRange:
+      root["motion"].FailWith("the swing must run from 0 to swing_deg = " +
+                              Format(issue.value / kDeg) +
+                              " deg (rise first, in the first motion's direction); it runs from " +
+                              Format(issue.lower / kDeg) + " to " + Format(issue.upper / kDeg) +
+                              " deg");
+    case IssueKind::kContactArmOutside:
+      root["contact"]["contact_arm_mm"].Fail("a length in [l₂, l₁] = [" + Format(issue.lower) +
+                                             ", " + Format(issue.upper) + "] mm");
+    case IssueKind::kJams:
+      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
+                              Format(issue.value / kDeg) + " deg at cam angle " +
+                              Format(issue.cam_angle_rad / kDeg) + " deg (the turret would jam)");
+  }
+  (void)cam;
+  root.FailWith("unknown design issue");
+}
+
 GloboidalStudy Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "cam", "motion", "load", "contact", "dynamics",
                           "analysis", "export"});
@@ -76,23 +111,7 @@ GloboidalStudy Parse(const Node& root) {
   } else {
     c["first_motion"].Fail("\"clockwise\" or \"anticlockwise\"");
   }
-  const auto lim = globoidal::RollerAxisLimits(cam);
-  if (!(lim.l2 > 0.0))
-    c["roller_length_mm"].FailWith("the roller (length " + Format(cam.roller_length) +
-                                   " mm) reaches past the turret axis: need m/2 < R_e");
-  // Largest roller angle from the oz-plane: the trajectory must stay on the turret's side of the
-  // cam axis, C − l₁ cos φ > 0 for every φ; it suffices that C > l₁.
-  if (!(cam.center_distance > lim.l1 + cam.roller_radius))
-    c["center_distance_mm"].FailWith(
-        "the rollers reach the cam axis: need C > l₁ + R = " + Format(lim.l1 + cam.roller_radius) +
-        " mm (l₁ = R_e + m/2 + e, eq. 8)");
-  // The rib between the two rollers: its thickness at the turret-side end of the rollers.
-  const double rib = 2.0 * lim.l2 * std::sin(cam.roller_angle / 2) - 2.0 * cam.roller_radius;
-  if (!(rib > 0.0))
-    c["roller_angle_deg"].FailWith("the two rollers overlap (no rib between them): need "
-                                   "2 l₂ sin(β/2) > 2R, found " +
-                                   Format(2.0 * lim.l2 * std::sin(cam.roller_angle / 2)) +
-                                   " mm ≤ " + Format(2 * cam.roller_radius) + " mm");
+  for (const auto& issue : globoidal::CheckGeometry(cam)) FailOn(issue, cam, root);
 
   // Motion: the turret swing φ_i, rising by +φ_f in the first motion's direction.
   const Node motion_node = root["motion"];
@@ -125,15 +144,7 @@ GloboidalStudy Parse(const Node& root) {
     motion_node[issue->segment][field].FailWith(issue->message);
   }
   // The swing must run between the dead points 0 and φ_f (eq. 7 places them).
-  double lo = 0, hi = 0;
-  for (int i = 0; i < 3600; ++i) {
-    const double v = cam.motion.Evaluate(2 * kPi * i / 3600).s;
-    lo = std::min(lo, v), hi = std::max(hi, v);
-  }
-  if (lo < -1e-9 || std::abs(hi - cam.swing) > 1e-6)
-    motion_node.FailWith("the swing must run from 0 to swing_deg = " + Format(cam.swing / kDeg) +
-                         " deg (rise first, in the first motion's direction); it runs from " +
-                         Format(lo / kDeg) + " to " + Format(hi / kDeg) + " deg");
+  for (const auto& issue : globoidal::CheckSwing(cam)) FailOn(issue, cam, root);
 
   if (root.Has("load")) {
     const Node l = root["load"];
@@ -156,9 +167,7 @@ GloboidalStudy Parse(const Node& root) {
     m.penetration_depth_mm = k.PositiveOr("penetration_depth_mm", m.penetration_depth_mm);
     if (k.Has("contact_arm_mm")) {
       s.dyn.contact_arm_mm = k["contact_arm_mm"].Positive();
-      if (s.dyn.contact_arm_mm < lim.l2 || s.dyn.contact_arm_mm > lim.l1)
-        k["contact_arm_mm"].Fail("a length in [l₂, l₁] = [" + Format(lim.l2) + ", " +
-                                 Format(lim.l1) + "] mm");
+      for (const auto& issue : globoidal::CheckContactArm(s.dyn)) FailOn(issue, cam, root);
     }
   }
   if (root.Has("dynamics")) {
@@ -236,29 +245,19 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   const GloboidalStudy s = Parse(root);
   const GloboidalCam<double>& cam = s.dyn.cam;
   const auto lim = globoidal::RollerAxisLimits(cam);
-  const double arm = s.dyn.contact_arm_mm > 0 ? s.dyn.contact_arm_mm : cam.pitch_radius;
+  const double arm = globoidal::ContactArm(s.dyn);
   const int n = s.angle_steps, na = s.axis_steps;
   auto angle_deg = [&](int i) { return 360.0 * i / n; };
   auto theta = [&](int i) { return 2 * kPi * i / n; };
-  auto axis_l = [&](int k) { return lim.l2 + (lim.l1 - lim.l2) * k / (na - 1); };
+  auto axis_l = [&](int k) { return globoidal::AxisGridPoint(lim, k, na); };
 
   // Geometry over the grid: pressure angle, undercut margin, contact radius.
-  struct Extreme {
-    double value = 0;
-    double cam_angle_deg = 0, axis_mm = 0;
-    int roller = 1;
-    bool set = false;
-  };
-  Extreme alpha_max, margin_min, jac_min, rcontact_min;
   std::vector<double> alpha[2][2], margin(n, 1e300), rcontact[2], phi[2];
   for (int j = 0; j < 2; ++j) {
     for (int e = 0; e < 2; ++e) alpha[j][e].resize(n);
     rcontact[j].resize(n);
     phi[j].resize(n);
   }
-  auto update = [](Extreme& x, double v, bool larger, double t, double l, int j) {
-    if (!x.set || (larger ? v > x.value : v < x.value)) x = {v, t, l, j, true};
-  };
   for (int i = 0; i < n; ++i) {
     for (int j = 1; j <= 2; ++j) {
       for (int k = 0; k < na; ++k) {
@@ -272,40 +271,16 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
       rcontact[j - 1][i] = globoidal::EvaluateSurface(cam, j, arm, theta(i)).contact_radius;
     }
   }
-  // Extremes on the uniform grid and on 64 samples inside every segment, so that a short
-  // segment is never stepped over.
-  std::vector<double> samples;
-  for (int i = 0; i < n; ++i) samples.push_back(theta(i));
-  {
-    double start = 0;
-    for (const auto& seg : cam.motion.segments()) {
-      for (int q = 0; q < 64; ++q) samples.push_back(start + seg.duration * (q + 0.5) / 64);
-      start += seg.duration;
-    }
-  }
-  bool conformal = false;
-  for (const double t : samples) {
-    for (int j = 1; j <= 2; ++j) {
-      for (int k = 0; k < na; ++k) {
-        const double l = axis_l(k);
-        const SurfacePoint<double> p = globoidal::EvaluateSurface(cam, j, l, t);
-        update(alpha_max, std::abs(p.pressure_angle), true, t / kDeg, l, j);
-        update(margin_min, p.undercut_margin, false, t / kDeg, l, j);
-        update(jac_min, p.offset_jacobian, false, t / kDeg, l, j);
-      }
-      const SurfacePoint<double> pc = globoidal::EvaluateSurface(cam, j, arm, t);
-      if (pc.contact_radius > 0) {
-        update(rcontact_min, pc.contact_radius, false, t / kDeg, arm, j);
-      } else {
-        conformal = true;
-      }
-    }
-  }
+  // Extremes over the cycle survey (model/globoidal/check.h); the jam limit was checked on them.
+  const globoidal::CycleSurvey survey = globoidal::SurveyCycle(cam, arm, n, na);
+  if (const auto issues = globoidal::CheckDesign(s.dyn, n, na); !issues.empty())
+    FailOn(issues.front(), cam, root);
+  const globoidal::Extreme& alpha_max = survey.max_abs_pressure_angle;
+  const globoidal::Extreme& margin_min = survey.min_undercut_margin;
+  const globoidal::Extreme& jac_min = survey.min_offset_jacobian;
+  const globoidal::Extreme& rcontact_min = survey.min_contact_radius;
+  const bool conformal = survey.conformal;
   const bool undercut = margin_min.value <= 0.0;
-  if (!(alpha_max.value < 89.0 * kDeg))
-    root["motion"].FailWith("infeasible design: the pressure angle reaches " +
-                            Format(alpha_max.value / kDeg) + " deg at cam angle " +
-                            Format(alpha_max.cam_angle_deg) + " deg (the turret would jam)");
 
   nlohmann::json r;
   r["study"] = "globoidal_cam";
@@ -324,14 +299,14 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
                                   *std::max_element(v.begin(), v.end()) / kDeg});
   };
   r["roller_angle_range_deg"] = {{"roller_1", range(phi[0])}, {"roller_2", range(phi[1])}};
-  r["rib_thickness_at_l2_mm"] = 2.0 * lim.l2 * std::sin(b / 2) - 2.0 * cam.roller_radius;
+  r["rib_thickness_at_l2_mm"] = globoidal::RibThickness(cam);
   r["max_pressure_angle_deg"] = alpha_max.value / kDeg;
-  r["max_pressure_angle_at"] = {{"cam_angle_deg", alpha_max.cam_angle_deg},
+  r["max_pressure_angle_at"] = {{"cam_angle_deg", alpha_max.cam_angle_rad / kDeg},
                                 {"axis_mm", alpha_max.axis_mm},
                                 {"roller", alpha_max.roller}};
   r["undercut"] = undercut;
   r["min_undercut_margin"] = margin_min.value;
-  r["min_undercut_margin_at"] = {{"cam_angle_deg", margin_min.cam_angle_deg},
+  r["min_undercut_margin_at"] = {{"cam_angle_deg", margin_min.cam_angle_rad / kDeg},
                                  {"axis_mm", margin_min.axis_mm},
                                  {"roller", margin_min.roller}};
   r["min_offset_area_ratio"] = jac_min.value;
@@ -339,7 +314,7 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   r["conformal_contact"] = conformal;
   if (rcontact_min.set) {
     r["min_contact_radius_mm"] = rcontact_min.value;
-    r["min_contact_radius_at"] = {{"cam_angle_deg", rcontact_min.cam_angle_deg},
+    r["min_contact_radius_at"] = {{"cam_angle_deg", rcontact_min.cam_angle_rad / kDeg},
                                   {"roller", rcontact_min.roller}};
   }
 
@@ -509,7 +484,7 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
       std::vector<std::vector<Vec3<double>>> pts(ne), nrm(ne);
       for (int i = 0; i < ne; ++i) {
         for (int k = 0; k < ml; ++k) {
-          const double l = lim.l2 + (lim.l1 - lim.l2) * k / (ml - 1);
+          const double l = globoidal::AxisGridPoint(lim, k, ml);
           const SurfacePoint<double> p =
               globoidal::EvaluateSurface(cam, j, l, 2 * kPi * i / ne);
           pts[i].push_back(p.working);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/disc_cam/check.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
@@ -323,6 +324,80 @@ TEST(DiscCamGradients, SummaryMatchesCentralDifferences) {
                           s.max_worst_case_error, s.max_rms_error};
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<4>(f, {40.0, 10.0, 12.0, 24.0}, 1e-5, 1e-9);
+}
+
+// CheckDesign: one test per kind of issue, each on a design that breaks exactly that rule.
+const DesignIssue* Find(const std::vector<DesignIssue>& issues, IssueKind kind) {
+  for (const auto& i : issues)
+    if (i.kind == kind) return &i;
+  return nullptr;
+}
+
+TEST(DiscCamCheckDesign, TheExamplesAreFeasible) {
+  EXPECT_TRUE(CheckDesign(PaperExample(), 3600).empty());
+  EXPECT_TRUE(CheckDesign(OscillatingExample(), 3600).empty());
+}
+
+TEST(DiscCamCheckDesign, OffsetBeyondBaseCircleAndRoller) {
+  const auto issues = CheckDesign(PaperExample(40.0, 10.0, 55.0), 360);
+  ASSERT_EQ(issues.size(), 1u);  // the geometry fails: the cycle is not evaluated
+  EXPECT_EQ(issues[0].kind, IssueKind::kOffsetTooLarge);
+  EXPECT_EQ(issues[0].value, 55.0);
+  EXPECT_EQ(issues[0].upper, 50.0);
+  EXPECT_TRUE(CheckGeometry(PaperExample(40.0, 10.0, -49.0)).empty());
+}
+
+TEST(DiscCamCheckDesign, ArmThatCannotReachTheBaseCircle) {
+  // f = 100, l = 20: the roller centre stays ≥ 80 mm from the cam centre, the base circle + roller
+  // is 50 mm.
+  const auto issues = CheckDesign(OscillatingExample(40.0, 10.0, 100.0, 20.0), 360);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, IssueKind::kArmCannotReach);
+  EXPECT_EQ(issues[0].value, 50.0);
+  EXPECT_EQ(issues[0].lower, 80.0);
+  EXPECT_EQ(issues[0].upper, 120.0);
+  // Too far the other way: f + l = 45 < 50.
+  EXPECT_EQ(CheckGeometry(OscillatingExample(40.0, 10.0, 25.0, 20.0)).at(0).kind,
+            IssueKind::kArmCannotReach);
+}
+
+TEST(DiscCamCheckDesign, FollowerInsideTheBaseCircle) {
+  DiscCam cam = PaperExample();
+  cam.motion = motion::MotionProgram<double>({{MotionLaw::kCycloidal, -10.0, kPi},
+                                              {MotionLaw::kCycloidal, 10.0, kPi}});
+  const auto issues = CheckDesign(cam, 360);
+  const DesignIssue* inside = Find(issues, IssueKind::kInsideBaseCircle);
+  ASSERT_NE(inside, nullptr);
+  EXPECT_EQ(issues[0].kind, IssueKind::kInsideBaseCircle);
+  EXPECT_LT(inside->value, 0.0);
+  EXPECT_NEAR(inside->cam_angle_rad, 2 * kPi / 360, 1e-15);  // the first sample after θ = 0
+}
+
+TEST(DiscCamCheckDesign, ArmCrossingTheCamCentreLine) {
+  // ξ₀ = acos((80² + 100² − 50²)/(2·80·100)) ≈ 29.7°: a rise of 160° takes ξ past 180°.
+  const auto issues = CheckDesign(OscillatingExample(40.0, 10.0, 100.0, 80.0, 160 * kDeg), 360);
+  const DesignIssue* arm = Find(issues, IssueKind::kArmOutOfRange);
+  ASSERT_NE(arm, nullptr);
+  const double xi0 = std::acos((80.0 * 80 + 100.0 * 100 - 50.0 * 50) / (2 * 80.0 * 100));
+  EXPECT_GE(arm->value, kPi);
+  EXPECT_LE(arm->value, xi0 + 160 * kDeg + 1e-12);
+}
+
+TEST(DiscCamCheckDesign, PressureAngleAtTheJamLimit) {
+  DiscCam cam = PaperExample();
+  cam.motion = motion::MotionProgram<double>({{MotionLaw::kCycloidal, 80.0, 1 * kDeg},
+                                              {MotionLaw::kCycloidal, -80.0, 359 * kDeg}});
+  const auto issues = CheckDesign(cam, 3600);
+  const DesignIssue* jam = Find(issues, IssueKind::kJams);
+  ASSERT_NE(jam, nullptr);
+  EXPECT_GE(std::abs(jam->value), 89 * kDeg);
+  EXPECT_LT(jam->cam_angle_rad, 1 * kDeg);  // within the 1° rise
+  EXPECT_NEAR(kJamPressureAngle, 89 * kDeg, 1e-15);
+}
+
+TEST(DiscCamMechanicalError, RollerCentreDisplacementPerFollowerUnit) {
+  EXPECT_EQ(RollerCentreMmPerFollowerUnit(PaperExample()), 1.0);
+  EXPECT_EQ(RollerCentreMmPerFollowerUnit(OscillatingExample()), 80.0);  // the arm length l
 }
 
 }  // namespace

@@ -40,6 +40,13 @@ T NormalErrorGain(const DiscCamTpl<T>& cam, const CamPoint<T>& p) {
                                                           : T(1.0) / (cam.arm_length * c);
 }
 
+/// Displacement of the roller centre per unit follower error: 1 for a translating follower (mm
+/// per mm), the arm length l for an oscillating one (mm per rad: the roller centre moves l·Δξ).
+template <typename T>
+T RollerCentreMmPerFollowerUnit(const DiscCamTpl<T>& cam) {
+  return cam.follower == FollowerType::kTranslatingRoller ? T(1.0) : cam.arm_length;
+}
+
 /// The follower errors at one cam angle for deviations d (signed) or tolerances (then the signs
 /// of the components are those of a positive deviation, and worst_case/rms are the bounds).
 template <typename T>
