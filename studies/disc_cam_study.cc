@@ -14,6 +14,8 @@
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/motion/motion_program.h"
+#include "studies/format.h"
+#include "studies/motion_input.h"
 #include "studies/study.h"
 #include "studies/writers.h"
 
@@ -39,13 +41,6 @@ struct DiscCamStudy {
   int angle_steps = 3600;
   McRequest mc;
 };
-
-std::string Format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 // The JSON path and message of a design issue (model units → the file's units).
 [[noreturn]] void FailOn(const disc_cam::DesignIssue& issue, const DiscCam& cam, const Node& root) {
@@ -105,43 +100,18 @@ DiscCamStudy Parse(const Node& root) {
 
   // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
   const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
-  const std::string rise_key = oscillating ? "rise_deg" : "rise_mm";
-  const std::string wrong_key = oscillating ? "rise_mm" : "rise_deg";
-  const Node motion_node = root["motion"];
-  std::vector<motion::MotionSegment<double>> segments;
-  std::string laws;
-  for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
-  for (const Node& seg : motion_node.Elements()) {
-    seg.CheckKnownFields({"law", rise_key, wrong_key, "cam_angle_deg"});
-    if (seg.Has(wrong_key))
-      seg[wrong_key].FailWith(std::string("a ") +
-                              (oscillating ? "oscillating follower's rise is an angle: use rise_deg"
-                                           : "translating follower's rise is a length: use rise_mm"));
-    const auto law = motion::LawFromName(seg["law"].String());
-    if (!law) seg["law"].Fail("a motion law (" + laws + ")");
-    motion::MotionSegment<double> m;
-    m.law = *law;
-    m.duration = seg["cam_angle_deg"].Positive() * kDeg;
-    if (*law == MotionLaw::kDwell) {
-      if (seg.Has(rise_key) && seg[rise_key].Number() != 0.0)
-        seg[rise_key].FailWith("a dwell has no rise");
-    } else {
-      m.rise = seg[rise_key].Number();
-      if (m.rise == 0.0) seg[rise_key].Fail("a non-zero rise (use a dwell for no motion)");
-      if (oscillating) m.rise *= kDeg;
-    }
-    segments.push_back(m);
+  MotionInputSpec spec;
+  spec.subject = "follower";
+  if (oscillating) {
+    spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg";
+    spec.misplaced_key = "rise_mm";
+    spec.misplaced_hint = "a oscillating follower's rise is an angle: use rise_deg";
+  } else {
+    spec.rise_key = "rise_mm", spec.rise_scale = 1.0, spec.unit = "mm";
+    spec.misplaced_key = "rise_deg";
+    spec.misplaced_hint = "a translating follower's rise is a length: use rise_mm";
   }
-  cam.motion = motion::MotionProgram<double>(segments);
-  if (const auto issue = motion::CheckProgram(cam.motion, 2 * kPi, /*must_return=*/true, 1e-6)) {
-    if (issue->segment < 0 && issue->message.find("does not return") != std::string::npos)
-      motion_node.FailWith("the follower does not return: rises sum to " +
-                           Format(cam.motion.NetRise() / (oscillating ? kDeg : 1.0)) +
-                           (oscillating ? " deg" : " mm") + ", expected 0");
-    if (issue->segment < 0) motion_node.FailWith(issue->message);
-    const std::string field = issue->field == "rise" ? rise_key : issue->field;
-    motion_node[issue->segment][field].FailWith(issue->message);
-  }
+  cam.motion = ParseMotionProgram(root["motion"], spec);
 
   if (root.Has("tolerances")) {
     const Node t = root["tolerances"];
@@ -298,13 +268,7 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   }
 
   // Motion program: continuity at the joints and peak derivatives.
-  nlohmann::json joints = nlohmann::json::array();
-  for (const auto& j : motion::CheckContinuity(cam.motion, 1e-7)) {
-    joints.push_back({{"after_segment", j.segment},
-                      {"cam_angle_deg", j.cam_angle_rad / kDeg},
-                      {"continuity", j.order < 0 ? std::string("discontinuous")
-                                                 : "C" + std::to_string(j.order)}});
-  }
+  const nlohmann::json joints = JointsJson(motion::CheckContinuity(cam.motion, 1e-7));
   const double unit = osc ? 1.0 / kDeg : 1.0;  // follower unit: mm or deg
   double vmax = 0, amax = 0, jmax = 0;
   for (int i = 0; i < n; ++i) {
@@ -388,16 +352,9 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
-  const char* names[4] = {"displacement", "velocity", "acceleration", "jerk"};
-  for (int k = 0; k < 4; ++k) {
-    const std::string cname = table.names[1 + k];
-    PlotOptions o;
-    o.title = s.name + ": follower " + names[k];
-    o.x_label = "cam angle [deg]";
-    o.y_label = cname;
-    out.Add(std::string("svaj_") + names[k] + ".svg",
-            SvgLinePlot({series(names[k], table.columns[1 + k])}, o));
-  }
+  AddSvajPlots(out, s.name + ": follower", th,
+               {table.names[1], table.names[2], table.names[3], table.names[4]},
+               {&table.columns[1], &table.columns[2], &table.columns[3], &table.columns[4]});
   {
     PlotOptions o;
     o.title = s.name + ": pressure angle and shift angle (paper Fig. 12a)";

@@ -16,6 +16,8 @@
 #include "model/globoidal/contact_dynamics.h"
 #include "model/globoidal/globoidal.h"
 #include "model/motion/motion_program.h"
+#include "studies/format.h"
+#include "studies/motion_input.h"
 #include "studies/study.h"
 #include "studies/writers.h"
 
@@ -41,13 +43,6 @@ struct GloboidalStudy {
   int export_axis_steps = 6;
   bool export_stl = true, export_point_cloud = true;
 };
-
-std::string Format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 // The JSON path and message of a design issue (model units → the file's units).
 [[noreturn]] void FailOn(const globoidal::DesignIssue& issue, const GloboidalCam<double>& cam,
@@ -114,35 +109,9 @@ GloboidalStudy Parse(const Node& root) {
   for (const auto& issue : globoidal::CheckGeometry(cam)) FailOn(issue, cam, root);
 
   // Motion: the turret swing φ_i, rising by +φ_f in the first motion's direction.
-  const Node motion_node = root["motion"];
-  std::vector<motion::MotionSegment<double>> segments;
-  std::string laws;
-  for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
-  for (const Node& seg : motion_node.Elements()) {
-    seg.CheckKnownFields({"law", "rise_deg", "cam_angle_deg"});
-    const auto law = motion::LawFromName(seg["law"].String());
-    if (!law) seg["law"].Fail("a motion law (" + laws + ")");
-    motion::MotionSegment<double> m;
-    m.law = *law;
-    m.duration = seg["cam_angle_deg"].Positive() * kDeg;
-    if (*law == motion::MotionLaw::kDwell) {
-      if (seg.Has("rise_deg") && seg["rise_deg"].Number() != 0.0)
-        seg["rise_deg"].FailWith("a dwell has no rise");
-    } else {
-      m.rise = seg["rise_deg"].Number() * kDeg;
-      if (m.rise == 0.0) seg["rise_deg"].Fail("a non-zero rise (use a dwell for no motion)");
-    }
-    segments.push_back(m);
-  }
-  cam.motion = motion::MotionProgram<double>(segments);
-  if (const auto issue = motion::CheckProgram(cam.motion, 2 * kPi, /*must_return=*/true, 1e-6)) {
-    if (issue->segment < 0 && issue->message.find("does not return") != std::string::npos)
-      motion_node.FailWith("the turret does not return: rises sum to " +
-                           Format(cam.motion.NetRise() / kDeg) + " deg, expected 0");
-    if (issue->segment < 0) motion_node.FailWith(issue->message);
-    const std::string field = issue->field == "rise" ? "rise_deg" : issue->field;
-    motion_node[issue->segment][field].FailWith(issue->message);
-  }
+  MotionInputSpec spec;
+  spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg", spec.subject = "turret";
+  cam.motion = ParseMotionProgram(root["motion"], spec);
   // The swing must run between the dead points 0 and φ_f (eq. 7 places them).
   for (const auto& issue : globoidal::CheckSwing(cam)) FailOn(issue, cam, root);
 
@@ -319,24 +288,12 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   }
 
   // Motion program: continuity and peak coefficients.
-  nlohmann::json joints = nlohmann::json::array();
-  for (const auto& jc : motion::CheckContinuity(cam.motion, 1e-7))
-    joints.push_back({{"after_segment", jc.segment},
-                      {"cam_angle_deg", jc.cam_angle_rad / kDeg},
-                      {"continuity", jc.order < 0 ? std::string("discontinuous")
-                                                  : "C" + std::to_string(jc.order)}});
-  std::vector<motion::Svaj<double>> svaj(n);
-  double vmax = 0, amax = 0, jmax = 0;
-  for (int i = 0; i < n; ++i) {
-    svaj[i] = cam.motion.Evaluate(theta(i));
-    vmax = std::max(vmax, std::abs(svaj[i].v));
-    amax = std::max(amax, std::abs(svaj[i].a));
-    jmax = std::max(jmax, std::abs(svaj[i].j));
-  }
-  r["motion"] = {{"joints", joints},
-                 {"peak_velocity_deg_per_rad", vmax / kDeg},
-                 {"peak_acceleration_deg_per_rad2", amax / kDeg},
-                 {"peak_jerk_deg_per_rad3", jmax / kDeg}};
+  const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
+  const MotionPeaks peaks = PeakDerivatives(svaj);
+  r["motion"] = {{"joints", JointsJson(motion::CheckContinuity(cam.motion, 1e-7))},
+                 {"peak_velocity_deg_per_rad", peaks.velocity / kDeg},
+                 {"peak_acceleration_deg_per_rad2", peaks.acceleration / kDeg},
+                 {"peak_jerk_deg_per_rad3", peaks.jerk / kDeg}};
 
   // Quasi-static forces and dynamics per speed.
   r["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
@@ -526,15 +483,9 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
-  const char* names[4] = {"displacement", "velocity", "acceleration", "jerk"};
-  for (int k = 0; k < 4; ++k) {
-    PlotOptions o;
-    o.title = s.name + ": turret swing " + names[k];
-    o.x_label = "cam angle [deg]";
-    o.y_label = table.names[1 + k];
-    out.Add(std::string("svaj_") + names[k] + ".svg",
-            SvgLinePlot({series(names[k], table.columns[1 + k])}, o));
-  }
+  AddSvajPlots(out, s.name + ": turret swing", th,
+               {table.names[1], table.names[2], table.names[3], table.names[4]},
+               {&table.columns[1], &table.columns[2], &table.columns[3], &table.columns[4]});
   {
     PlotOptions o;
     o.title = s.name + ": pressure angle";
