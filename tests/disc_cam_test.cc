@@ -395,6 +395,22 @@ TEST(DiscCamCheckDesign, PressureAngleAtTheJamLimit) {
   EXPECT_NEAR(kJamPressureAngle, 89 * kDeg, 1e-15);
 }
 
+TEST(DiscCamMechanicalError, RadialErrorRatioOnTheBaseCircle) {
+  // Translating, low dwell: λ = 0 and cos φ = L₀/(r_b + r_f), L₀ = sqrt(50² − 12²).
+  const CamPoint<double> p = EvaluateCam(PaperExample(), 330 * kDeg);
+  EXPECT_NEAR(RadialErrorRatio(p), 50.0 / std::sqrt(50.0 * 50.0 - 144.0), 1e-12);
+}
+
+TEST(DiscCam, OscillatingPivotAndArm) {
+  // The pivot sits at distance f from the cam centre and the roller centre at l from the pivot.
+  const DiscCam cam = OscillatingExample();
+  for (double t : {0.0, 1.0, 4.0}) {
+    const Vec2<double> o3 = FollowerPivot(cam, t);
+    EXPECT_NEAR(o3.norm(), 100.0, 1e-12);
+    EXPECT_NEAR((EvaluateCam(cam, t).pitch - o3).norm(), 80.0, 1e-12);
+  }
+}
+
 TEST(DiscCamMechanicalError, RollerCentreDisplacementPerFollowerUnit) {
   EXPECT_EQ(RollerCentreMmPerFollowerUnit(PaperExample()), 1.0);
   EXPECT_EQ(RollerCentreMmPerFollowerUnit(OscillatingExample()), 80.0);  // the arm length l

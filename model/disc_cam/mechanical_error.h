@@ -40,6 +40,14 @@ T NormalErrorGain(const DiscCamTpl<T>& cam, const CamPoint<T>& p) {
                                                           : T(1.0) / (cam.arm_length * c);
 }
 
+/// cos λ / cos φ: the follower error per unit radial-dimension error of a translating follower
+/// (eq. 29; an oscillating follower's adds the factor 1/l, eq. 30).
+template <typename T>
+T RadialErrorRatio(const CamPoint<T>& p) {
+  using std::cos;
+  return cos(p.shift_angle) / cos(p.pressure_angle);
+}
+
 /// Displacement of the roller centre per unit follower error: 1 for a translating follower (mm
 /// per mm), the arm length l for an oscillating one (mm per rad: the roller centre moves l·Δξ).
 template <typename T>
