@@ -265,9 +265,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   t.swing_jerk_deg_per_rad3 = col([&](int i) { return svaj[i].j / kDeg; });
 
   // Quasi-static forces and dynamics per speed.
-  r.effective_modulus_MPa = globoidal::EffectiveModulus(
-      s.dyn.contact.cam_modulus_MPa, s.dyn.contact.cam_poisson, s.dyn.contact.roller_modulus_MPa,
-      s.dyn.contact.roller_poisson);
+  r.effective_modulus_MPa = s.dyn.contact.composite_modulus_MPa();
   const bool conformal = r.survey.conformal;
   if (!s.speeds_rpm.empty() && (r.undercut || conformal)) {
     r.dynamics_skipped = r.undercut ? "the working surface is undercut"
