@@ -1,4 +1,4 @@
-// Disc cam model: the paper's example (Rzine et al., NOTES.md §2), closed forms, independent
+// Disc cam model: the paper's example (Rzine et al., docs/papers.md §2), closed forms, independent
 // constructions of the normal, instant centre, pressure angle and curvature, the linearised
 // mechanical error against the exact follower motion, and AD gradients.
 #include <algorithm>

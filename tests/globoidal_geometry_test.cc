@@ -53,7 +53,7 @@ TEST(GloboidalPaper, ModifiedSineProgram) {
   const auto cam = PaperCam<double>();
   EXPECT_NEAR(cam.motion.Period(), 2 * kPi, 1e-12);
   EXPECT_NEAR(cam.motion.NetRise(), 0.0, 1e-15);
-  // Peak acceleration of the rise: Ca φ_f / θ_f1², Ca = 4π²/(4 + π) ≈ 5.528 (NOTES §5).
+  // Peak acceleration of the rise: Ca φ_f / θ_f1², Ca = 4π²/(4 + π) ≈ 5.528 (docs/papers.md §5).
   double amax = 0, vmax = 0;
   for (int i = 0; i <= 6000; ++i) {
     const auto s = cam.motion.Evaluate(60.0 * kDeg * i / 6000);

@@ -1,6 +1,6 @@
 // Disc cam with an offset translating roller follower or an oscillating roller follower:
 // pitch curve, profile, pressure angle, instant centre Q, shift angle, radius of curvature and
-// undercut. Rzine et al., "Mechanical Error Analysis of Disc Cam Mechanisms" (NOTES.md §2),
+// undercut. Rzine et al., "Mechanical Error Analysis of Disc Cam Mechanisms" (docs/papers.md §2),
 // eqs. (1)–(12), and eq. (28) for the shift angle λ.
 //
 // Frame and sense (the paper's): coordinates fixed on the cam, origin at the cam pivot O₂; the cam
@@ -144,7 +144,7 @@ T ProfileRadiusOfCurvature(const CamPoint<T>& p, const T& roller_radius) {
 }
 
 /// Undercut: the pitch curve is convex with a radius smaller than the roller (κ r_f > 1), so the
-/// offset profile folds over itself (NOTES.md §1).
+/// offset profile folds over itself (docs/disc_cam.md).
 template <typename T>
 bool IsUndercut(const CamPoint<T>& p, const T& roller_radius) {
   return Value(p.pitch_curvature) * Value(roller_radius) > 1.0;

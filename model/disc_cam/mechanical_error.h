@@ -1,4 +1,4 @@
-// Mechanical error of the follower motion caused by tolerances: Rzine et al. (NOTES.md §2),
+// Mechanical error of the follower motion caused by tolerances: Rzine et al. (docs/papers.md §2),
 // eqs. (16)–(32), by the equivalent linkage and the small-displacement diagram. To first order:
 //   normal profile error Δn:      ΔS_n  = Δn / cos φ               (translating, eq. 17)
 //                                 ΔS_n  = Δn / (l cos φ)           (oscillating, eq. 22)
