@@ -7,10 +7,12 @@
 #include "studies/writers.h"
 
 namespace camopt::studies {
+namespace {
+constexpr double kDeg = kPi / 180.0;
+}  // namespace
 
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
                                                  const MotionInputSpec& spec) {
-  constexpr double kDeg = kPi / 180.0;
   std::set<std::string> known = {"law", spec.rise_key, "cam_angle_deg"};
   if (!spec.misplaced_key.empty()) known.insert(spec.misplaced_key);
   std::string laws;
@@ -66,7 +68,6 @@ MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples) {
 }
 
 nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints) {
-  constexpr double kDeg = kPi / 180.0;
   nlohmann::json out = nlohmann::json::array();
   for (const auto& j : joints)
     out.push_back({{"after_segment", j.segment},
