@@ -216,39 +216,22 @@ Result Run(const Study& s, const RunContext& ctx) {
   r.rib_thickness_at_l2_mm = globoidal::RibThickness(cam);
   r.contact_arm_mm = arm;
 
-  // Geometry over the grid: pressure angle at both ends of the roller axis, undercut margin,
-  // roller angle, contact radius at the contact arm.
-  auto& t = r.series;
-  std::vector<double> alpha[2][2], rcontact[2], phi[2];
-  t.min_undercut_margin.assign(n, 1e300);
-  for (int j = 0; j < 2; ++j) {
-    for (int e = 0; e < 2; ++e) alpha[j][e].resize(n);
-    rcontact[j].resize(n);
-    phi[j].resize(n);
-  }
-  for (int i = 0; i < n; ++i) {
-    for (int j = 1; j <= 2; ++j) {
-      for (int k = 0; k < na; ++k) {
-        const double l = globoidal::AxisGridPoint(lim, k, na);
-        const SurfacePoint<double> p = globoidal::EvaluateSurface(cam, j, l, theta(i));
-        if (k == 0) alpha[j - 1][1][i] = p.pressure_angle;
-        if (k == na - 1) alpha[j - 1][0][i] = p.pressure_angle;
-        t.min_undercut_margin[i] = std::min(t.min_undercut_margin[i], p.undercut_margin);
-        phi[j - 1][i] = p.angle.phi;
-      }
-      rcontact[j - 1][i] = globoidal::EvaluateSurface(cam, j, arm, theta(i)).contact_radius;
-    }
-  }
-  for (int j = 0; j < 2; ++j) {
-    r.roller_angle_range_deg[j] = {*std::min_element(phi[j].begin(), phi[j].end()) / kDeg,
-                                   *std::max_element(phi[j].begin(), phi[j].end()) / kDeg};
-    t.roller_angle_deg[j] = col([&](int i) { return phi[j][i] / kDeg; });
-    for (int e = 0; e < 2; ++e)
-      t.pressure_angle_deg[j][e] = col([&](int i) { return alpha[j][e][i] / kDeg; });
-    t.contact_radius_mm[j] = rcontact[j];
-  }
-  // Extremes over the cycle survey (model/globoidal/check.h; Parse checked the jam limit on it).
+  // Geometry over the cycle (model/globoidal/check.h; Parse checked the jam limit on it): the
+  // extremes, and on the analysis grid the pressure angle at both ends of the roller axis, the
+  // undercut margin, the roller angle and the contact radius at the contact arm.
   r.survey = globoidal::SurveyCycle(cam, arm, n, na);
+  const auto& g = r.survey.grid;
+  auto& t = r.series;
+  for (int j = 0; j < 2; ++j) {
+    const std::vector<double>& phi = g.roller_angle[j];
+    r.roller_angle_range_deg[j] = {*std::min_element(phi.begin(), phi.end()) / kDeg,
+                                   *std::max_element(phi.begin(), phi.end()) / kDeg};
+    t.roller_angle_deg[j] = col([&](int i) { return phi[i] / kDeg; });
+    t.pressure_angle_deg[j][0] = col([&](int i) { return g.pressure_angle_at_l1[j][i] / kDeg; });
+    t.pressure_angle_deg[j][1] = col([&](int i) { return g.pressure_angle_at_l2[j][i] / kDeg; });
+    t.contact_radius_mm[j] = g.contact_radius[j];
+  }
+  t.min_undercut_margin = g.min_undercut_margin;
   r.undercut = r.survey.min_undercut_margin.value <= 0.0;
 
   // Motion program: continuity and peak coefficients.

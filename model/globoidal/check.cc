@@ -54,7 +54,16 @@ CycleSurvey SurveyCycle(const GloboidalCam<double>& cam, double contact_arm_mm, 
     if (!x.set || (larger ? v > x.value : v < x.value)) x = {v, t, l, j, true};
   };
   CycleSurvey s;
-  for (const double t : samples) {
+  for (int j = 0; j < 2; ++j) {
+    s.grid.roller_angle[j].resize(angle_steps);
+    s.grid.pressure_angle_at_l1[j].resize(angle_steps);
+    s.grid.pressure_angle_at_l2[j].resize(angle_steps);
+    s.grid.contact_radius[j].resize(angle_steps);
+  }
+  s.grid.min_undercut_margin.assign(angle_steps, 1e300);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const double t = samples[i];
+    const bool on_grid = i < size_t(angle_steps);  // the uniform grid comes first
     for (int j = 1; j <= 2; ++j) {
       for (int k = 0; k < axis_steps; ++k) {
         const double l = AxisGridPoint(lim, k, axis_steps);
@@ -62,8 +71,15 @@ CycleSurvey SurveyCycle(const GloboidalCam<double>& cam, double contact_arm_mm, 
         update(s.max_abs_pressure_angle, std::abs(p.pressure_angle), true, t, l, j);
         update(s.min_undercut_margin, p.undercut_margin, false, t, l, j);
         update(s.min_offset_jacobian, p.offset_jacobian, false, t, l, j);
+        if (on_grid) {
+          if (k == 0) s.grid.pressure_angle_at_l2[j - 1][i] = p.pressure_angle;
+          if (k == axis_steps - 1) s.grid.pressure_angle_at_l1[j - 1][i] = p.pressure_angle;
+          s.grid.min_undercut_margin[i] = std::min(s.grid.min_undercut_margin[i], p.undercut_margin);
+          s.grid.roller_angle[j - 1][i] = p.angle.phi;
+        }
       }
       const SurfacePoint<double> pc = EvaluateSurface(cam, j, contact_arm_mm, t);
+      if (on_grid) s.grid.contact_radius[j - 1][i] = pc.contact_radius;
       if (pc.contact_radius > 0) {
         update(s.min_contact_radius, pc.contact_radius, false, t, contact_arm_mm, j);
       } else {

@@ -8,6 +8,7 @@
 // axis_steps points of the roller axis in [l₂, l₁].
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -73,6 +74,15 @@ struct CycleSurvey {
   Extreme min_offset_jacobian;     ///< min area ratio working/trajectory surface
   Extreme min_contact_radius;      ///< min eq. (12) radius at the contact arm [mm], where > 0
   bool conformal = false;          ///< the contact radius at the arm is ≤ 0 somewhere
+
+  /// On the uniform grid θᵢ = 2π i/angle_steps, per roller (index j − 1): the roller angle φʲ
+  /// [rad], the pressure angle at l₁ and at l₂ [rad], the contact radius at the contact arm [mm]
+  /// (≤ 0 where conformal); and the smallest undercut margin over both rollers and the axis.
+  struct Grid {
+    std::array<std::vector<double>, 2> roller_angle, pressure_angle_at_l1, pressure_angle_at_l2,
+        contact_radius;
+    std::vector<double> min_undercut_margin;
+  } grid;
 };
 
 /// Axis point k of axis_steps in [l₂, l₁] [mm].
@@ -81,7 +91,8 @@ inline double AxisGridPoint(const AxisLimits<double>& lim, int k, int axis_steps
 }
 
 /// The cycle extremes on angle_steps uniform cam angles plus 64 per motion segment, both rollers,
-/// axis_steps points on the roller axis; the contact radius at contact_arm_mm.
+/// axis_steps points on the roller axis, and the series on the uniform grid; the contact radius at
+/// contact_arm_mm.
 CycleSurvey SurveyCycle(const GloboidalCam<double>& cam, double contact_arm_mm, int angle_steps,
                         int axis_steps);
 
