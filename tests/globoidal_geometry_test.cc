@@ -408,6 +408,20 @@ TEST(GloboidalCheckDesign, SurveyFindsTheClosedFormPressureAngle) {
   EXPECT_GE(s.max_abs_pressure_angle.value, std::abs(PressureAngleClosedForm(cam, a, 25.5)) - 1e-12);
   EXPECT_GT(s.min_undercut_margin.value, 0.0);
   EXPECT_FALSE(s.conformal);
+  // The grid series: roller angles of eq. (1) and the closed-form pressure angle at l₁ and l₂.
+  ASSERT_EQ(s.grid.roller_angle[0].size(), 720u);
+  for (int i : {0, 60, 100, 400}) {
+    const double t = 2 * kPi * i / 720;
+    for (int j = 1; j <= 2; ++j) {
+      const RollerAngle<double> r = RollerAngleAt(cam, j, t);
+      EXPECT_NEAR(s.grid.roller_angle[j - 1][i], r.phi, 1e-12);
+      EXPECT_NEAR(std::abs(s.grid.pressure_angle_at_l1[j - 1][i]),
+                  std::abs(PressureAngleClosedForm(cam, r, 25.5)), 1e-9);
+      EXPECT_NEAR(std::abs(s.grid.pressure_angle_at_l2[j - 1][i]),
+                  std::abs(PressureAngleClosedForm(cam, r, 19.5)), 1e-9);
+    }
+    EXPECT_GE(s.grid.min_undercut_margin[i], s.min_undercut_margin.value);
+  }
 }
 
 }  // namespace
