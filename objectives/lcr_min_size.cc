@@ -257,10 +257,24 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
       s.converged = p.converged;
       if (s.converged) s.outer_diameter_mm = p.check->outer_diameter_mm;
     } else if (!t.result.x.empty() && t.result.status != SolverStatus::kInfeasible) {
-      t.polished = Polish(spec, options, t.result.x, {});
-      values += t.polished->values;
-      gradients += t.polished->gradients;
-      iterations += t.polished->iterations;
+      // A start whose smooth optimum is one an earlier start already reached (to 1e-6 relative)
+      // shares that start's polish.
+      const Trial* same = nullptr;
+      for (const Trial& u : trials) {
+        if (!u.polished || u.result.x.size() != t.result.x.size()) continue;
+        bool close = true;
+        for (size_t i = 0; i < u.result.x.size(); ++i)
+          close = close && std::abs(u.result.x[i] - t.result.x[i]) <= 1e-6 * std::max(1.0, std::abs(u.result.x[i]));
+        if (close) same = &u;
+      }
+      if (same) {
+        t.polished = same->polished;
+      } else {
+        t.polished = Polish(spec, options, t.result.x, {});
+        values += t.polished->values;
+        gradients += t.polished->gradients;
+        iterations += t.polished->iterations;
+      }
       s.status = t.polished->result.status;
       s.converged = t.polished->converged;
       if (s.converged) s.outer_diameter_mm = t.polished->check->outer_diameter_mm;

@@ -29,14 +29,14 @@ inline CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& materi
   s.theta_rad.reserve(steps);
   for (int i = 0; i < steps; ++i) {
     const double theta = 2 * kPi * i / steps;
-    const AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
+    AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
     s.theta_rad.push_back(theta);
     for (auto [series, side] : {std::pair{&s.input, &a.input}, std::pair{&s.output, &a.output}}) {
       series->actuating.push_back(side->actuating);
       series->max_force_N.push_back(side->max_force);
       series->max_stress_MPa.push_back(side->max_stress);
       series->turret_torque_Nmm.push_back(side->turret_torque);
-      series->roller_force_N.push_back(side->force);
+      series->roller_force_N.push_back(std::move(side->force));
     }
     s.tangential_force_N.push_back(a.tangential_force);
     s.radial_force_N.push_back(a.radial_force);
