@@ -413,7 +413,7 @@ TEST(LcrMinSize, InfiniteRatioDesignIsABadStudy) {
                                        "infinite speed ratio");
 }
 
-// Two runs write byte-identical result.json files (no wall time in them).
+// Two runs write byte-identical result.json files (no wall time in them)
 TEST(LcrMinSize, OutputsAreByteIdentical) {
   json study = Example("lcr_min_size.json");
   study["search"]["max_lobes"] = 14;
@@ -426,6 +426,10 @@ TEST(LcrMinSize, OutputsAreByteIdentical) {
     text[i] = ReadFile(dir / "out" / "result.json");
   }
   EXPECT_EQ(text[0], text[1]);
+  // and the registered runner writes what the C++ entry points return.
+  ms::Study parsed;
+  const ms::Result r = Solve(study, &parsed);
+  EXPECT_EQ(text[0], ms::ToJson(parsed, r).dump(2) + "\n");
 }
 
 TEST(LcrMinSize, ProgressLineWithoutQuiet) {
