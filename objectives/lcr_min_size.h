@@ -105,8 +105,9 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
 /// of spec that binds there (dense-check value within 0.1% of the limit; stress, load, undercut
 /// margin, roller gap, efficiency), named by the limit key. Computed by re-solving the polish from
 /// the optimum with the limit moved by ±0.5% (central difference; one-sided where the other side
-/// fails). Positive for upper limits loosened upward means growth; e.g. −0.013 mm/MPa for a
-/// stress limit whose increase shrinks the reducer.
+/// fails), for ±0.5% of max(|limit|, 1) in the limit's unit. Negative where raising the limit
+/// shrinks the reducer (stress, load: −0.046 mm/MPa on the ratio −90 example), positive where it
+/// grows it (undercut margin, gap, efficiency). Local: the lobe combination is kept.
 std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                                const LcrMinSizeOutcome& outcome);
 
