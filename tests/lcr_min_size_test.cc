@@ -314,22 +314,21 @@ TEST(LcrMinSize, CatalogueRollerIsPickedAndItsLoadLimitHeld) {
   study["roller_catalogue"] = json::parse(R"([
     {"name": "A", "diameter_mm": 5, "length_mm": 10, "load_limit_N": 800},
     {"name": "B", "diameter_mm": 6, "length_mm": 10, "load_limit_N": 1000}])");
-  int code = -1;
-  std::string err;
-  const json res = RunStudy(study, TempDir("lcr-min-size-catalogue"), &code, &err);
-  ASSERT_EQ(code, 0) << err;
-  ASSERT_EQ(res["candidates"].size(), 4u);  // 2 combinations × 2 rollers
-  const json& best = res["best"];
-  ASSERT_TRUE(best.is_object());
-  const std::string name = best["catalogue_roller"];
-  const double d = best["input"]["roller_diameter_mm"];
-  EXPECT_EQ(d, name == "A" ? 5.0 : 6.0);
-  EXPECT_EQ(best["output"]["roller_diameter_mm"].get<double>(), d);
-  EXPECT_EQ(best["input"]["roller_length_mm"].get<double>(), 10.0);
-  EXPECT_LE(best["max_roller_force_N"].get<double>(), name == "A" ? 800.0 : 1000.0);
-  for (const json& c : res["candidates"]) {
-    if (!c["feasible"].get<bool>()) continue;
-    EXPECT_GE(c["outer_diameter_mm"].get<double>(), best["outer_diameter_mm"].get<double>());
+  ms::Study parsed;
+  const ms::Result res = Solve(study, &parsed);
+  ASSERT_EQ(res.candidates.size(), 4u);  // 2 combinations × 2 rollers
+  ASSERT_GE(res.best, 0);
+  const ms::Candidate& best = res.candidates[res.best];
+  const std::string name = parsed.catalogue[best.roller].name;
+  const lcr::Reducer<double>& d = *best.outcome.design;
+  EXPECT_EQ(2 * d.input.roller_radius, name == "A" ? 5.0 : 6.0);
+  EXPECT_EQ(d.output.roller_radius, d.input.roller_radius);
+  EXPECT_EQ(d.input.roller_length, 10.0);
+  const auto& k = *best.outcome.check;
+  EXPECT_LE(std::max(k.max_force_N[0], k.max_force_N[1]), name == "A" ? 800.0 : 1000.0);
+  for (const ms::Candidate& c : res.candidates) {
+    if (!c.feasible()) continue;
+    EXPECT_GE(c.outcome.check->outer_diameter_mm, k.outer_diameter_mm);
   }
 }
 
