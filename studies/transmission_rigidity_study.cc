@@ -1,5 +1,5 @@
 // Study kind "transmission_rigidity": the torsional rigidity and backlash of a series chain of
-// shafts, gears, chains, belts, pull-rods, levers, couplings (papers/transmission-rigidity.txt)
+// shafts, gears, chains, belts, pull-rods, levers, couplings (the transmission-rigidity paper, docs/rigidity.md)
 // and lobe cam reducers, seen from either end, with each element's share of the compliance and
 // the design advice the paper gives by hand (which element dominates, which dimension to change).
 #include <cmath>
@@ -14,6 +14,7 @@
 #include "model/lcr/kinematics.h"
 #include "model/rigidity/chain_elements.h"
 #include "model/rigidity/lcr_stiffness.h"
+#include "model/rigidity/lost_motion.h"
 #include "studies/input.h"
 #include "studies/lcr_input.h"
 #include "studies/study.h"
@@ -90,31 +91,17 @@ void ParseReducerElement(const Node& e, const Node& root, size_t index, const Ru
     reverse = rigidity::StiffnessCycle(r, material, -sense * torque, clearance, steps, bearing);
     progress.Update(0.6);
     // Lost-motion curve from −T to +T (sense of the load), mean over 36 input angles (the arms
-    // repeat with the roller pitch, 13- or 15-fold, so a uniform 10° grid averages them well); 0 excluded
-    // (inside a clearance the position is undetermined), a point on each side of it instead.
-    const int n = 40;
-    for (int i = -n; i <= n; ++i) {
-      if (i == 0) {
-        for (double t : {-1e-9, 1e-9}) torques.push_back(t * torque);
-        continue;
-      }
-      const double f = double(i) / n;
-      torques.push_back(f * std::abs(f) * torque);  // denser near zero load
-    }
-    std::vector<double> signed_t;
-    for (double t : torques) signed_t.push_back(sense * t);
-    rotations = rigidity::LostMotionCurve(r, material, signed_t, clearance, std::min(steps, 36), bearing);
-    for (double& x : rotations) x *= sense;
+    // repeat with the roller pitch, 13- or 15-fold, so a uniform 10° grid averages them well).
+    torques = rigidity::LostMotionTorques(torque);
+    rotations = rigidity::LostMotionCurveInSense(r, material, torques, sense, clearance, std::min(steps, 36), bearing);
     dead_band = rigidity::DeadBand(r, clearance, steps);
     progress.Update(1.0);
   } catch (const std::domain_error& err) {
     e.FailWith(std::string("the reducer cannot carry the load: ") + err.what());
   }
-  // Lost motion as reducer catalogues define it: the rotation between ±3 % of the rated torque
-  // (here the load torque), mean over the revolution.
-  const auto lm = rigidity::LostMotionCurve(r, material, {-0.03 * sense * torque, 0.03 * sense * torque},
-                                            clearance, std::min(steps, 36), bearing);
-  const double lost_motion = std::abs(lm[1] - lm[0]);
+  // Lost motion as reducer catalogues define it (±3 % of the rated torque, here the load torque).
+  const double lost_motion =
+      rigidity::LostMotion(r, material, sense * torque, clearance, std::min(steps, 36), bearing);
   parsed.own_elasticity = rigidity::ReducerStiffnessElasticities(
       r, material, sense * torque, clearance, bearing, std::min(steps, 180));
 
@@ -343,9 +330,9 @@ void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& o
   std::vector<std::vector<double>> elasticity(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) {
     if (specs[i].kind == ElementKind::kFixed) {
-      for (const auto& [n, v] : parsed[i].own_elasticity) {
+      for (const auto& [n, v] : rigidity::ChainElasticities(r.share[i], parsed[i].own_elasticity)) {
         el_names[i].push_back(n);
-        elasticity[i].push_back(r.share[i] * v);
+        elasticity[i].push_back(v);
       }
     } else {
       el_names[i] = specs[i].param_names;

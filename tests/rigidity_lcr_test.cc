@@ -11,6 +11,7 @@
 
 #include "model/lcr/contact.h"
 #include "model/rigidity/lcr_stiffness.h"
+#include "model/rigidity/lost_motion.h"
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
@@ -272,6 +273,60 @@ TEST(LcrStiffness, ElasticitiesObeyScalingAndMatchFiniteDifferences) {
   ASSERT_EQ(eb.size(), 6u);
   EXPECT_GT(eb[5].second, 0.0);
   EXPECT_LT(eb[3].second + eb[4].second, 0.8);
+}
+
+// ---- Lost motion (model/rigidity/lost_motion.h) ----------------------------------------------
+
+TEST(LcrLostMotion, TorqueGridIsSymmetricAndDenserNearZero) {
+  const double t = 80000.0;
+  const auto g = LostMotionTorques(t);
+  ASSERT_EQ(g.size(), 82u);
+  EXPECT_EQ(g.front(), -t);
+  EXPECT_EQ(g.back(), t);
+  EXPECT_NEAR(g[40], -1e-9 * t, 1e-20);
+  EXPECT_NEAR(g[41], 1e-9 * t, 1e-20);
+  EXPECT_NEAR(g[61], 0.25 * t, 1e-9);  // f = 1/2: T f|f|
+  for (size_t i = 0; i < g.size(); ++i) {
+    EXPECT_NEAR(g[i], -g[g.size() - 1 - i], 1e-9);
+    if (i > 0) {
+      EXPECT_GT(g[i], g[i - 1]);
+    }
+  }
+}
+
+TEST(LcrLostMotion, WithoutClearanceItScalesAsPalmgrensPowerLaw) {
+  // No clearance, rigid bearings: the loaded rollers of each sense do not depend on the load, and
+  // each contact force goes as approach^(10/9), so the rotation goes as T^0.9: the lost motion at
+  // ±3 % is 0.03^0.9 times that at ±100 %.
+  const auto r = LcrII();
+  const double t = 80000.0 * lcr::LoadedArmSign(r, lcr::Side::kOutput);
+  const double full = LostMotion(r, Steel(), t, 0.0, 36, 0.0, 1.0);
+  const double at3 = LostMotion(r, Steel(), t, 0.0, 36);
+  EXPECT_GT(full, 0.0);
+  EXPECT_NEAR(at3, std::pow(0.03, 0.9) * full, 1e-9 * full);
+  // The curve in the load sense is the model's curve of the signed torques, sign restored.
+  const std::vector<double> ts = {-0.5 * std::abs(t), 0.25 * std::abs(t)};
+  for (double sense : {1.0, -1.0}) {
+    const auto in_sense = LostMotionCurveInSense(r, Steel(), ts, sense, 0.0, 12);
+    const auto plain = LostMotionCurve(r, Steel(), {sense * ts[0], sense * ts[1]}, 0.0, 12);
+    EXPECT_DOUBLE_EQ(in_sense[0], sense * plain[0]);
+    EXPECT_DOUBLE_EQ(in_sense[1], sense * plain[1]);
+  }
+}
+
+TEST(LcrLostMotion, ClearanceAddsAtLeastTheDeadBand) {
+  // With a clearance c, roller k closes at ψ = c/a_k ≥ c/max(a), so each turret's restoring torque
+  // g_c(ψ) = Σ F(ψ a_k − c) a_k ≤ g_0(ψ − c/max a): at any load it turns at least c/max(a) more than
+  // without clearance. In both senses and averaged over the turn, that is the dead band: the lost
+  // motion with clearance is at least the dead band plus the lost motion without.
+  const auto r = LcrII();
+  const double t = 80000.0 * lcr::LoadedArmSign(r, lcr::Side::kOutput);
+  const double c = 0.005;
+  const double with = LostMotion(r, Steel(), t, c, 36);
+  const double without = LostMotion(r, Steel(), t, 0.0, 36);
+  const double dead = DeadBand(r, c, 36);
+  EXPECT_GT(dead, 0.0);
+  EXPECT_GE(with, dead + without - 1e-12);
 }
 
 // ---- The element in a study -------------------------------------------------------------------

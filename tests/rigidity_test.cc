@@ -1,4 +1,4 @@
-// Tests of the transmission rigidity chain (papers/transmission-rigidity.txt, NOTES §4).
+// Tests of the transmission rigidity chain (the transmission-rigidity paper, docs/rigidity.md).
 #include <array>
 #include <cmath>
 #include <string>
@@ -10,6 +10,7 @@
 #include "model/rigidity/chain.h"
 #include "model/rigidity/chain_elements.h"
 #include "model/rigidity/elements.h"
+#include "model/rigidity/lost_motion.h"
 #include "tests/test_util.h"
 
 namespace camopt::rigidity {
@@ -278,6 +279,45 @@ TEST(Rigidity, ChainGradientThroughAGearStageMatchesCentralDifferences) {
                           r.backlash_a, r.share[0]};
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<4>(f, {2.0, 3.0, 5.0, 0.01});
+}
+
+// ---- The chain rule of elasticities (model/rigidity/lost_motion.h) ----------------------------
+
+TEST(RigidityChainRule, SeriesSpringsShareIsTheElasticityOfEach) {
+  // Two springs in series: R = R1 R2/(R1 + R2), so ∂ln R/∂ln R1 = R2/(R1 + R2), the share of 1.
+  const double r1 = 3.0e6, r2 = 1.0e6;
+  const std::vector<ElementSpec> specs = {Coupling(r1), Coupling(r2)};
+  const auto chain = EvaluateChain<double>(specs);
+  EXPECT_NEAR(ChainElasticity(chain.share[0], 1.0), r2 / (r1 + r2), 1e-14);
+  EXPECT_NEAR(ChainElasticity(chain.share[1], 1.0), r1 / (r1 + r2), 1e-14);
+  // The AD elasticities of the whole chain agree.
+  const auto el = RigidityElasticities(specs);
+  EXPECT_NEAR(el[0][0], r2 / (r1 + r2), 1e-12);
+  EXPECT_NEAR(el[1][0], r1 / (r1 + r2), 1e-12);
+}
+
+TEST(RigidityChainRule, UniformShaftInSeriesWithACoupling) {
+  // A solid uniform shaft, R_s = π G D⁴/(32 L): ∂ln R_s/∂ln D = 4, ∂ln R_s/∂ln L = −1. In series
+  // with a coupling R_c the chain's elasticity is that times R_c/(R_s + R_c).
+  const double d = 30.0, l = 400.0, rc = 2.0e6;
+  const double rs = kPi * kG * std::pow(d, 4) / (32.0 * l);
+  const std::vector<ElementSpec> specs = {Torsion(d, 0.0, l), Coupling(rc)};
+  const auto chain = EvaluateChain<double>(specs);
+  const double share = rc / (rs + rc);
+  ASSERT_NEAR(chain.share[0], share, 1e-12);
+  const auto named = ChainElasticities<double>(chain.share[0], {{"outer_diameter_mm", 4.0}, {"length_mm", -1.0}});
+  ASSERT_EQ(named.size(), 2u);
+  EXPECT_EQ(named[0].first, "outer_diameter_mm");
+  EXPECT_NEAR(named[0].second, 4.0 * share, 1e-12);
+  EXPECT_NEAR(named[1].second, -share, 1e-12);
+  const auto el = RigidityElasticities(specs);  // [G, D, d, L] of the shaft
+  EXPECT_NEAR(el[0][1], 4.0 * share, 1e-10);
+  EXPECT_NEAR(el[0][3], -share, 1e-10);
+  // Over ceres::Jet the rule carries derivatives: d(share·e)/d share = e.
+  using J = ceres::Jet<double, 1>;
+  const J j = ChainElasticity(J(share, 0), J(4.0));
+  EXPECT_DOUBLE_EQ(j.a, 4.0 * share);
+  EXPECT_DOUBLE_EQ(j.v[0], 4.0);
 }
 
 // ---- The study through the CLI ---------------------------------------------------------------
