@@ -57,7 +57,7 @@ void BM_CycloidMeshCycle60(benchmark::State& state) {
   CycleResult r;
   for (auto _ : state) {
     LoadedTca tca(Nnm(), Case(int(state.range(0))), Material{}, LoadedOptions{});
-    r = RunCycle(tca, 350.0, angles);
+    r = RunCycle(tca, 350.0e3, angles);
     benchmark::DoNotOptimize(r.max_pressure_MPa);
   }
   state.counters["max_MPa"] = r.max_pressure_MPa;

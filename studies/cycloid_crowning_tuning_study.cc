@@ -43,8 +43,8 @@ class Tuner {
       : drive_(drive),
         design_(drive, Crowning{}, material, Design(options)),
         maximum_(drive, Crowning{}, material, Maximum(options)),
-        design_torque_(design_torque),
-        max_torque_(max_torque),
+        design_torque_Nmm_(design_torque * 1000.0),
+        max_torque_Nmm_(max_torque * 1000.0),
         angles_(std::move(angles)) {}
 
   Evaluation Evaluate(double f, double length) {
@@ -57,8 +57,8 @@ class Tuner {
     Evaluation e;
     e.coefficient_mm = c.coefficient_mm;
     e.length_mm = length;
-    const CycleResult d = RunCycle(design_, design_torque_, angles_);
-    const CycleResult m = RunCycle(maximum_, max_torque_, angles_);
+    const CycleResult d = RunCycle(design_, design_torque_Nmm_, angles_);
+    const CycleResult m = RunCycle(maximum_, max_torque_Nmm_, angles_);
     e.stress_MPa = d.max_pressure_MPa;
     e.pairs = d.max_pairs_in_contact;
     e.edge_margin_um = m.edge_margin_mm * 1e3;
@@ -81,7 +81,7 @@ class Tuner {
   }
   Drive drive_;
   LoadedTca design_, maximum_;
-  double design_torque_, max_torque_;
+  double design_torque_Nmm_, max_torque_Nmm_;
   std::vector<double> angles_;
   int evaluations_ = 0;
 };

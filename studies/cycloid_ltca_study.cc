@@ -50,7 +50,7 @@ void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
 
   LoadedTca tca(drive, crowning, material, options);
   Progress progress("cycloid_ltca", ctx.quiet);
-  const CycleResult cycle = RunCycle(tca, torque, angles, [&](double f) { progress.Update(f); });
+  const CycleResult cycle = RunCycle(tca, torque * 1000.0, angles, [&](double f) { progress.Update(f); });
   progress.Done();
 
   const int n1 = drive.rollers;

@@ -294,7 +294,7 @@ TEST(CycloidAudit, FullCrownLoadsAndPeakMatchAnIndependentHertzModel) {
   o.profile_cells = 24;
   o.axial_cells = 24;
   LoadedTca tca(Nnm(), Full(3000.0), Material{kE, kNu}, o);
-  const MeshLoad m = tca.Solve(350.0, crank);
+  const MeshLoad m = tca.Solve(350.0e3, crank);
   ASSERT_TRUE(m.converged) << m.message;
   ASSERT_EQ(m.pairs.size(), ind.size());
   double ind_peak = 0;
@@ -321,7 +321,7 @@ TEST(CycloidAudit, LogCrownLoadsAndPeakMatchTheSlicingModel) {
   o.profile_cells = 24;
   o.axial_cells = 16;
   LoadedTca tca(Nnm(), lcm, Material{kE, kNu}, o);
-  const MeshLoad m = tca.Solve(350.0, crank);
+  const MeshLoad m = tca.Solve(350.0e3, crank);
   ASSERT_TRUE(m.converged) << m.message;
   double ind_peak = 0;
   for (const auto& p : ind) {

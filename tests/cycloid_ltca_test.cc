@@ -50,7 +50,7 @@ void ExpectFinite(const MeshLoad& m) {
 TEST(CycloidLtca, EquilibriumAndCompatibilityHold) {
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse());
   const double crank = 120.0 * kPi / 180.0;
-  const MeshLoad m = tca.Solve(350.0, crank);
+  const MeshLoad m = tca.Solve(350.0e3, crank);
   ASSERT_TRUE(m.converged) << m.message;
   ExpectFinite(m);
   ASSERT_GE(m.pairs_in_contact, 2);
@@ -86,7 +86,7 @@ TEST(CycloidLtca, LoadsMatchAnIndependentApproachControlledBisection) {
   const double crank = 0.9, torque = 350.0;
   for (const Crowning& crown : {Crowning{}, Log(0.005)}) {
     LoadedTca tca(NnmDrive(), crown, Material{}, Coarse(16, 16));
-    const MeshLoad m = tca.Solve(torque, crank);
+    const MeshLoad m = tca.Solve(torque * 1e3, crank);
     ASSERT_TRUE(m.converged) << m.message;
     const auto unloaded = UnloadedTca<double>(NnmDrive(), crank);
     contact::HalfSpaceSolver solver;
@@ -150,7 +150,7 @@ TEST(CycloidLtca, MidFacePressureOfAStraightToothIsNearHertzLineContact) {
   // Hertz p = sqrt(F E* / (π B R')) with the pair's own load (a little lower, since the edge
   // concentration takes a share of the load).
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(24, 24));
-  const MeshLoad m = tca.Solve(350.0, 0.5);
+  const MeshLoad m = tca.Solve(350.0e3, 0.5);
   ASSERT_TRUE(m.converged) << m.message;
   for (const auto& p : m.pairs) {
     double mid = 0;
@@ -179,7 +179,7 @@ TEST(CycloidLtca, ZeroTorqueIsTheUnloadedState) {
 TEST(CycloidLtca, BarelyTouchingPairIsFinite) {
   // A tiny torque: one pair barely touching (its approach is nanometres).
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse());
-  const MeshLoad m = tca.Solve(1e-6, 0.3);
+  const MeshLoad m = tca.Solve(1e-6 * 1e3, 0.3);
   ExpectFinite(m);
   ASSERT_EQ(m.pairs_in_contact, 1);
   EXPECT_GT(m.max_pressure_MPa, 0.0);
@@ -189,9 +189,9 @@ TEST(CycloidLtca, BarelyTouchingPairIsFinite) {
   double lo = 1.0, hi = 350.0;
   for (int k = 0; k < 12; ++k) {
     const double mid = std::sqrt(lo * hi);
-    (tca.Solve(mid, 0.3).pairs_in_contact >= 2 ? hi : lo) = mid;
+    (tca.Solve(mid * 1e3, 0.3).pairs_in_contact >= 2 ? hi : lo) = mid;
   }
-  const MeshLoad a = tca.Solve(lo, 0.3), b = tca.Solve(hi, 0.3);
+  const MeshLoad a = tca.Solve(lo * 1e3, 0.3), b = tca.Solve(hi * 1e3, 0.3);
   ExpectFinite(a);
   ExpectFinite(b);
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.05 * b.max_pressure_MPa);
@@ -205,7 +205,7 @@ TEST(CycloidLtca, LteTendsToTheUnloadedTeAsTheTorqueVanishes) {
   fcm.radius_mm = 3000;
   LoadedTca tca(NnmDrive(), fcm, Material{}, Coarse());
   const double beta0 = UnloadedTca<double>(NnmDrive(), 0.4).rotation;
-  const MeshLoad m = tca.Solve(1e-6, 0.4);
+  const MeshLoad m = tca.Solve(1e-6 * 1e3, 0.4);
   ExpectFinite(m);
   EXPECT_NEAR(m.rotation_rad, beta0, 1e-9);  // 2e-4 arcsec
   EXPECT_GT(m.rotation_rad, beta0);
@@ -216,19 +216,19 @@ TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   // (too compliant: too large a deflection, pairs that then lose contact again). The end state
   // must equal a fresh solve.
   LoadedTca warm(NnmDrive(), Log(0.005), Material{}, Coarse());
-  warm.Solve(2.0, 0.8);
-  const MeshLoad a = warm.Solve(500.0, 0.8);
+  warm.Solve(2.0e3, 0.8);
+  const MeshLoad a = warm.Solve(500.0e3, 0.8);
   LoadedTca fresh(NnmDrive(), Log(0.005), Material{}, Coarse());
-  const MeshLoad b = fresh.Solve(500.0, 0.8);
+  const MeshLoad b = fresh.Solve(500.0e3, 0.8);
   ASSERT_TRUE(a.converged && b.converged);
   ExpectFinite(a);
   EXPECT_EQ(a.pairs_in_contact, b.pairs_in_contact);
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.01 * b.max_pressure_MPa);
   EXPECT_NEAR(a.deflection_rad, b.deflection_rad, 0.005 * b.deflection_rad);
   // And back down: heavy-load memory at a light load.
-  const MeshLoad c = warm.Solve(2.0, 0.8);
+  const MeshLoad c = warm.Solve(2.0e3, 0.8);
   LoadedTca fresh2(NnmDrive(), Log(0.005), Material{}, Coarse());
-  const MeshLoad d = fresh2.Solve(2.0, 0.8);
+  const MeshLoad d = fresh2.Solve(2.0e3, 0.8);
   EXPECT_EQ(c.pairs_in_contact, d.pairs_in_contact);
   EXPECT_NEAR(c.max_pressure_MPa, d.max_pressure_MPa, 0.01 * d.max_pressure_MPa);
 }
@@ -237,7 +237,7 @@ TEST(CycloidLtca, VanishingLogCrowningTendsToTheStraightTooth) {
   LoadedTca straight(NnmDrive(), Crowning{}, Material{}, Coarse());
   LoadedTca tiny(NnmDrive(), Log(1e-9), Material{}, Coarse());
   LoadedTca zero(NnmDrive(), Log(0.0), Material{}, Coarse());
-  const MeshLoad a = straight.Solve(350.0, 0.2), b = tiny.Solve(350.0, 0.2), c = zero.Solve(350.0, 0.2);
+  const MeshLoad a = straight.Solve(350.0e3, 0.2), b = tiny.Solve(350.0e3, 0.2), c = zero.Solve(350.0e3, 0.2);
   ExpectFinite(b);
   ExpectFinite(c);
   EXPECT_NEAR(b.max_pressure_MPa, a.max_pressure_MPa, 0.005 * a.max_pressure_MPa);
@@ -256,11 +256,11 @@ TEST(CycloidLtca, CrowningMovesThePeakOffTheEdges) {
     }
     return std::pair<double, double>(edge, mid);
   };
-  for (const auto& p : straight.Solve(350.0, 1.1).pairs) {
+  for (const auto& p : straight.Solve(350.0e3, 1.1).pairs) {
     const auto [edge, mid] = edge_and_mid(p);
     EXPECT_GT(edge, mid);
   }
-  for (const auto& p : crowned.Solve(350.0, 1.1).pairs) {
+  for (const auto& p : crowned.Solve(350.0e3, 1.1).pairs) {
     const auto [edge, mid] = edge_and_mid(p);
     EXPECT_LT(edge, mid);
   }
@@ -269,7 +269,7 @@ TEST(CycloidLtca, CrowningMovesThePeakOffTheEdges) {
 TEST(CycloidLtca, LteRepeatsEveryMeshPeriod) {
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(12, 12));
   const double period = 2 * kPi / 16;
-  const MeshLoad a = tca.Solve(350.0, 0.1), b = tca.Solve(350.0, 0.1 + 3 * period);
+  const MeshLoad a = tca.Solve(350.0e3, 0.1), b = tca.Solve(350.0e3, 0.1 + 3 * period);
   EXPECT_NEAR(a.rotation_rad, b.rotation_rad, 1e-3 * a.rotation_rad);
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 1e-3 * a.max_pressure_MPa);
 }
