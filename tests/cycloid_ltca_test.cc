@@ -8,6 +8,8 @@
 
 #include "model/contact/hertz.h"
 #include "model/cycloid/loaded_tca.h"
+#include "studies/cycloid_crowning_tuning_study.h"
+#include "studies/cycloid_ltca_study.h"
 #include "studies/input.h"
 #include "studies/study.h"
 #include "tests/test_util.h"
@@ -287,7 +289,7 @@ TEST(CycloidLtca, BadInputIsRejected) {
   EXPECT_THROW(tca.Solve(std::nan(""), 0.0), std::invalid_argument);
 }
 
-// --- The study kinds through the CLI ---
+// --- The study kinds: numbers through the C++ entry points, files and exit codes through the CLI ---
 
 std::string StudyJson(const std::string& crowning, const std::string& analysis) {
   return R"({"study": "cycloid_ltca", "name": "test",
@@ -300,25 +302,39 @@ std::string StudyJson(const std::string& crowning, const std::string& analysis) 
     "analysis": )" + analysis + "}";
 }
 
+TEST(CycloidStudies, LtcaStudyReportsEveryAngle) {
+  // Through the C++ entry points: Parse, Run and the result.json content.
+  const nlohmann::json study = nlohmann::json::parse(
+      StudyJson(R"({"type": "partial", "radius_mm": 4500, "flat_length_mm": 13.6})",
+                R"({"crank_angles_deg": [0, 120, 300], "grid": [12, 10]})"));
+  namespace ltca = studies::cycloid_ltca;
+  const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  const ltca::Result r = ltca::Run(s, ctx);
+  const nlohmann::json j = ltca::ToJson(s, r);
+  for (const char* k : {"max_contact_stress_MPa", "lte_peak_to_peak_arcsec", "lte_mean_abs_arcsec",
+                        "gear_ratio_peak_to_peak", "max_pairs_in_contact", "axial_cell_mm"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_NEAR(j["axial_cell_mm"].get<double>(), 1.7, 1e-12);
+  ASSERT_EQ(r.cycle.meshes.size(), 3u);
+  ASSERT_EQ(j["per_angle"].size(), 3u);
+  EXPECT_NEAR(j["per_angle"][1]["crank_angle_deg"].get<double>(), 120.0, 1e-9);
+  EXPECT_GE(r.cycle.meshes[1].pairs_in_contact, 1);
+  // 120° and 300° are 8 mesh periods apart: the same state.
+  EXPECT_NEAR(r.cycle.meshes[1].max_pressure_MPa, r.cycle.meshes[2].max_pressure_MPa,
+              1e-3 * r.cycle.max_pressure_MPa);
+}
+
 TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
+  // Through the CLI: exit code and the files written.
   const auto dir = camopt::testing::TempDir("cycloid-ltca");
   camopt::testing::WriteFile(dir / "s.json", StudyJson(R"({"type": "partial", "radius_mm": 4500, "flat_length_mm": 13.6})",
                                                        R"({"crank_angles_deg": [0, 120, 300], "grid": [12, 10]})"));
   const auto r = camopt::testing::RunCamopt("run " + (dir / "s.json").string() + " --out " +
                                             (dir / "out").string() + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
-  for (const char* k : {"max_contact_stress_MPa", "lte_peak_to_peak_arcsec", "lte_mean_abs_arcsec",
-                        "gear_ratio_peak_to_peak", "max_pairs_in_contact", "axial_cell_mm"})
-    EXPECT_TRUE(j.contains(k)) << k;
-  EXPECT_NEAR(j["axial_cell_mm"].get<double>(), 1.7, 1e-12);
-  ASSERT_EQ(j["per_angle"].size(), 3u);
-  EXPECT_NEAR(j["per_angle"][1]["crank_angle_deg"].get<double>(), 120.0, 1e-9);
-  EXPECT_GE(j["per_angle"][1]["pairs_in_contact"].get<int>(), 1);
-  // 120° and 300° are 8 mesh periods apart: the same state.
-  EXPECT_NEAR(j["per_angle"][1]["max_contact_stress_MPa"].get<double>(),
-              j["per_angle"][2]["max_contact_stress_MPa"].get<double>(), 1e-3 * j["max_contact_stress_MPa"].get<double>());
-  for (const char* f : {"per_angle.csv", "backlash.csv", "pressure_map.svg", "lte.svg", "tooth.dxf"})
+  for (const char* f : {"result.json", "per_angle.csv", "backlash.csv", "pressure_map.svg", "lte.svg", "tooth.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
 }
 
@@ -358,30 +374,48 @@ TEST(CycloidStudies, LtcaBadInputExitsWithCode2) {
   EXPECT_NE(r.stderr_text.find("infeasible"), std::string::npos) << r.stderr_text;
 }
 
-TEST(CycloidStudies, CrowningTuningFindsAFeasibleCoefficient) {
-  const auto dir = camopt::testing::TempDir("cycloid-tuning");
-  camopt::testing::WriteFile(dir / "t.json", R"({"study": "cycloid_crowning_tuning", "name": "t",
+const char* kTuningStudy = R"({"study": "cycloid_crowning_tuning", "name": "t",
     "drive": {"teeth": 15, "rollers": 16, "roller_position_radius_mm": 90, "roller_radius_mm": 7.2,
               "eccentricity_mm": 4.5, "face_width_mm": 17},
     "modification": {"delta_position_um": -16, "delta_radius_um": -8},
     "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
     "load": {"design_torque_Nm": 350, "max_torque_Nm": 550},
     "tuning": {"coefficient_mm": [0.0, 0.02], "curve_points": 4, "max_evaluations": 4},
-    "analysis": {"crank_angles_per_mesh_period": 2, "grid": [10, 10]}})");
+    "analysis": {"crank_angles_per_mesh_period": 2, "grid": [10, 10]}})";
+
+TEST(CycloidStudies, CrowningTuningFindsAFeasibleCoefficient) {
+  const nlohmann::json study = nlohmann::json::parse(kTuningStudy);
+  namespace tuning = studies::cycloid_crowning_tuning;
+  const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  const tuning::Result r = tuning::Run(s, ctx);
+  EXPECT_TRUE(r.feasible);
+  EXPECT_GE(r.best.edge_margin_um, 0.0);
+  // f = 0 (a straight tooth) touches the edges: infeasible, so the tuned f is above it.
+  ASSERT_EQ(r.curve.size(), 4u);
+  EXPECT_LT(r.curve[0].edge_margin_um, 0.0);
+  EXPECT_GT(r.best.coefficient_mm, 0.0);
+  // The tuned stress is no worse than any feasible point of the scan.
+  for (const auto& c : r.curve)
+    if (c.edge_margin_um >= 0) {
+      EXPECT_LE(r.best.stress_MPa, c.stress_MPa + 1e-9);
+    }
+  // Every evaluation is counted: the scan, the reference and the optimizer's.
+  EXPECT_EQ(r.evaluations, int(r.curve.size() + 1 + r.history.size()));
+}
+
+TEST(CycloidStudies, CrowningTuningWritesItsFiles) {
+  const auto dir = camopt::testing::TempDir("cycloid-tuning");
+  camopt::testing::WriteFile(dir / "t.json", kTuningStudy);
   const auto r = camopt::testing::RunCamopt("run " + (dir / "t.json").string() + " --out " +
                                             (dir / "out").string() + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  for (const char* f : {"result.json", "stress_vs_coefficient.csv", "history.csv", "stress_vs_coefficient.svg",
+                        "edge_margin_vs_coefficient.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
   EXPECT_TRUE(j["feasible"].get<bool>());
-  EXPECT_GE(j["tuned_edge_margin_at_max_torque_um"].get<double>(), 0.0);
-  // f = 0 (a straight tooth) touches the edges: infeasible, so the tuned f is above it.
-  EXPECT_LT(j["curve"][0]["edge_margin_at_max_torque_um"].get<double>(), 0.0);
-  EXPECT_GT(j["tuned_coefficient_mm"].get<double>(), 0.0);
-  // The tuned stress is no worse than any feasible point of the scan.
-  for (const auto& c : j["curve"])
-    if (c["edge_margin_at_max_torque_um"].get<double>() >= 0) {
-      EXPECT_LE(j["tuned_max_contact_stress_MPa"].get<double>(), c["max_contact_stress_MPa"].get<double>() + 1e-9);
-    }
 }
 
 TEST(CycloidStudies, MisspeltNestedFieldIsRejected) {

@@ -2,6 +2,7 @@
 // derivation in docs/lcr_stiffness.md).
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "model/lcr/contact.h"
 #include "model/rigidity/lcr_stiffness.h"
 #include "model/rigidity/lost_motion.h"
+#include "studies/transmission_rigidity_study.h"
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
@@ -331,36 +333,55 @@ TEST(LcrLostMotion, ClearanceAddsAtLeastTheDeadBand) {
 
 // ---- The element in a study -------------------------------------------------------------------
 
+struct ExampleRun {
+  studies::transmission_rigidity::Result result;
+  nlohmann::json json;
+};
+
+ExampleRun RunExample(const std::string& file) {
+  namespace tr = studies::transmission_rigidity;
+  const nlohmann::json study = camopt::testing::Example(file);
+  const tr::Study s = tr::Parse(studies::Node(&study, file, ""));
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  const tr::Result r = tr::Run(s, ctx);
+  return {r, tr::ToJson(s, r)};
+}
+
 TEST(LcrStiffnessStudy, ReducerElementCarriesItsRatioAndStiffness) {
-  const auto dir = camopt::testing::TempDir("rigidity-lcr");
-  const auto res = camopt::testing::RunCamopt(
-      "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_lcr_ii.json") + " -o " + dir.string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+  const auto [res, j] = RunExample("rigidity_lcr_ii.json");
   const double rb = j["rigidity_Nm_per_rad"].get<double>();
-  EXPECT_NEAR(j["total_ratio"].get<double>(), 90.0, 1e-9);
-  EXPECT_NEAR(j["rigidity_at_end_a_Nm_per_rad"].get<double>(), rb / 8100.0, 1e-9 * rb);
-  const auto& red = j["elements"][0]["reducer"];
-  EXPECT_NEAR(red["mean_secant_rigidity_Nm_per_rad"].get<double>(), rb, 1e-9 * rb);
+  EXPECT_NEAR(res.chain.total_ratio, 90.0, 1e-9);
+  EXPECT_NEAR(1.0e-3 / res.chain.compliance_a, rb / 8100.0, 1e-9 * rb);
+  ASSERT_TRUE(res.elements[0].reducer.has_value());
+  EXPECT_NEAR(res.elements[0].reducer->cycle.mean_secant_Nmm_per_rad / 1000.0, rb, 1e-9 * rb);
+  EXPECT_NEAR(j["elements"][0]["reducer"]["mean_secant_rigidity_Nm_per_rad"].get<double>(), rb, 1e-9 * rb);
   // The reducer alone equals the model's cycle mean.
   const auto r = LcrII();
   const auto cyc = StiffnessCycle(r, Steel(), 80000.0 * lcr::LoadedArmSign(r, lcr::Side::kOutput), 0.0, 720);
   EXPECT_NEAR(rb, cyc.mean_secant_Nmm_per_rad / 1000.0, 1e-9 * rb);
+}
+
+TEST(LcrStiffnessStudy, ReducerElementWritesItsCurves) {
+  const auto dir = camopt::testing::TempDir("rigidity-lcr");
+  const auto res = camopt::testing::RunCamopt(
+      "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_lcr_ii.json") + " -o " + dir.string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(dir / "result.json"));
   EXPECT_TRUE(std::filesystem::exists(dir / "reducer_1_stiffness.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "reducer_1_lost_motion.svg"));
 }
 
 TEST(LcrStiffnessStudy, ClearanceBecomesBacklashInTheChain) {
-  const auto dir = camopt::testing::TempDir("rigidity-servo");
-  const auto res = camopt::testing::RunCamopt(
-      "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_servo_lcr.json") + " -o " + dir.string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+  const auto [res, j] = RunExample("rigidity_servo_lcr.json");
   const auto& e = j["elements"][2];
-  EXPECT_NEAR(e["backlash_at_end_b_arcmin"].get<double>(), e["reducer"]["dead_band_arcmin"].get<double>(), 1e-12);
-  EXPECT_NEAR(j["backlash_at_end_b_arcmin"].get<double>(), e["reducer"]["dead_band_arcmin"].get<double>(), 1e-12);
+  ASSERT_TRUE(res.elements[2].reducer.has_value());
+  const double dead_band_arcmin = e["reducer"]["dead_band_arcmin"].get<double>();
+  EXPECT_NEAR(e["backlash_at_end_b_arcmin"].get<double>(), dead_band_arcmin, 1e-12);
+  EXPECT_NEAR(j["backlash_at_end_b_arcmin"].get<double>(), dead_band_arcmin, 1e-12);
+  EXPECT_NEAR(res.chain.backlash_a, 90.0 * res.chain.backlash_b, 1e-9);
   EXPECT_NEAR(j["backlash_at_end_a_arcmin"].get<double>(), 90.0 * j["backlash_at_end_b_arcmin"].get<double>(), 1e-9);
-  EXPECT_GT(e["reducer"]["dead_band_arcmin"].get<double>(), 0.0);
+  EXPECT_GT(res.elements[2].reducer->dead_band_rad, 0.0);
 }
 
 TEST(LcrStiffnessStudy, BadReducerIsAClearError) {
