@@ -12,17 +12,13 @@
 #include "studies/cycloid_ltca_study.h"
 #include "studies/input.h"
 #include "studies/study.h"
+#include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
 namespace {
 
-Drive NnmDrive() {
-  Drive d;  // Table 2 of the paper
-  d.delta_position_mm = -0.016;
-  d.delta_radius_mm = -0.008;
-  return d;
-}
+Drive NnmDrive() { return camopt::testing::CycloidNnm(); }  // Tables 2 and 3 of the paper
 
 LoadedOptions Coarse(int p = 16, int q = 16) {
   LoadedOptions o;
