@@ -263,6 +263,8 @@ Result Run(const Study& study, const RunContext& ctx) {
       // Its own rigidity is a precomputed ratio and rigidity (not design choices): its
       // elasticities are those of its own dimensions.
       er.spec.params = {std::abs(er.reducer->speed_reduction_ratio), er.reducer->cycle.mean_secant_Nmm_per_rad};
+      er.reducer->rigidity_at_input_Nm_per_rad = rigidity::RigidityThroughRatio(
+          er.reducer->cycle.mean_secant_Nmm_per_rad / 1000.0, er.spec.params[0]);
       er.spec.backlash_rad += er.reducer->dead_band_rad;
       own[i] = rigidity::ReducerStiffnessElasticities(x.reducer, x.material, x.sense * x.torque_Nmm,
                                                       x.clearance_mm, x.bearing_N_per_mm,
@@ -311,6 +313,10 @@ Result Run(const Study& study, const RunContext& ctx) {
     res.advice += buf;
   }
   res.most_effective = best_q;
+  if (study.report_radius_mm)
+    res.linear_stiffness_at_report_radius_N_per_mm =
+        rigidity::LinearStiffnessAtRadius(r.compliance_b, *study.report_radius_mm);
+  if (study.load_torque_Nm) res.deflection_at_end_b_rad = 1000.0 * *study.load_torque_Nm * r.compliance_b;
   return res;
 }
 
@@ -329,12 +335,12 @@ nlohmann::json ToJson(const Study& study, const Result& res) {
     const double rr = *study.report_radius_mm;
     // Eq. 5 transposed: the linear stiffness at a radius of end B (e.g. at the follower roller).
     result["report_radius_mm"] = rr;
-    result["linear_stiffness_at_report_radius_N_per_mm"] = 1.0 / (r.compliance_b * rr * rr);
+    result["linear_stiffness_at_report_radius_N_per_mm"] = *res.linear_stiffness_at_report_radius_N_per_mm;
   }
   if (study.load_torque_Nm) {
     const double t = *study.load_torque_Nm;
     result["load_torque_Nm"] = t;
-    result["deflection_at_end_b_deg"] = 1000.0 * t * r.compliance_b * 180.0 / kPi;
+    result["deflection_at_end_b_deg"] = *res.deflection_at_end_b_rad * 180.0 / kPi;
   }
 
   nlohmann::json elements = nlohmann::json::array();
@@ -350,7 +356,7 @@ nlohmann::json ToJson(const Study& study, const Result& res) {
     e["compliance_share"] = r.share[i];
     // The paper's remark on the stepped shaft: the overall rigidity had this element been
     // ignored (made rigid).
-    e["rigidity_if_rigid_Nm_per_rad"] = FiniteOrNull(1.0e-3 / (r.compliance_b - r.compliance_at_b[i]));
+    e["rigidity_if_rigid_Nm_per_rad"] = FiniteOrNull(1.0e-3 / r.compliance_b_if_rigid[i]);
     if (s.kind == ElementKind::kGearStage || s.kind == ElementKind::kFixed) e["ratio"] = s.params[0];
     e["backlash_arcmin"] = s.backlash_rad * kArcminPerRad;
     e["backlash_at_end_b_arcmin"] = r.backlash_at_b[i] * kArcminPerRad;
@@ -361,7 +367,6 @@ nlohmann::json ToJson(const Study& study, const Result& res) {
       const ReducerElement& in = *study.elements[i].reducer;
       const ReducerResult& x = *er.reducer;
       const auto& cycle = x.cycle;
-      const double ratio = s.params[0];
       nlohmann::json j;
       j["speed_reduction_ratio"] = x.speed_reduction_ratio;
       j["output_torque_Nm"] = in.torque_Nmm / 1000.0;
@@ -378,7 +383,7 @@ nlohmann::json ToJson(const Study& study, const Result& res) {
       j["min_tangent_rigidity_Nm_per_rad"] = cycle.min_tangent_Nmm_per_rad / 1000.0;
       j["max_tangent_rigidity_Nm_per_rad"] = cycle.max_tangent_Nmm_per_rad / 1000.0;
       j["reverse_mean_secant_rigidity_Nm_per_rad"] = x.reverse.mean_secant_Nmm_per_rad / 1000.0;
-      j["rigidity_at_input_Nm_per_rad"] = cycle.mean_secant_Nmm_per_rad / 1000.0 / (ratio * ratio);
+      j["rigidity_at_input_Nm_per_rad"] = x.rigidity_at_input_Nm_per_rad;
       j["mean_elastic_rotation_arcmin"] = in.torque_Nmm / cycle.mean_secant_Nmm_per_rad * kArcminPerRad;
       j["lost_motion_arcmin_at_3pct_torque"] = x.lost_motion_rad * kArcminPerRad;
       j["dead_band_arcmin"] = x.dead_band_rad * kArcminPerRad;
@@ -418,7 +423,7 @@ void Write(const Study& study, const Result& res, Outputs& out) {
     col_own.push_back(1.0e-3 / res.elements[i].compliance_rad_per_Nmm);
     col_at_b.push_back(1.0e-3 / r.compliance_at_b[i]);
     col_share.push_back(r.share[i]);
-    col_without.push_back(1.0e-3 / (r.compliance_b - r.compliance_at_b[i]));
+    col_without.push_back(1.0e-3 / r.compliance_b_if_rigid[i]);
     col_backlash.push_back(r.backlash_at_b[i] * kArcminPerRad);
   }
   table.Add("index", col_idx);

@@ -56,6 +56,7 @@ struct ReducerResult {
   std::vector<double> torques_Nmm, rotations_rad;  ///< lost-motion curve, in the load sense
   double dead_band_rad = 0;
   double lost_motion_rad = 0;        ///< between ±3 % of the load torque
+  double rigidity_at_input_Nm_per_rad = 0;  ///< its own rigidity seen from its input shaft
 };
 
 struct ElementResult {
@@ -68,6 +69,8 @@ struct ElementResult {
 
 struct Result {
   rigidity::ChainResult<double> chain;
+  std::optional<double> linear_stiffness_at_report_radius_N_per_mm;
+  std::optional<double> deflection_at_end_b_rad;  ///< under load_torque_Nm
   std::vector<ElementResult> elements;
   int most_effective = -1;  ///< index into the dominant element's elasticity, −1 for none
   std::string advice;

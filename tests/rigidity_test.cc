@@ -322,6 +322,21 @@ TEST(RigidityChainRule, UniformShaftInSeriesWithACoupling) {
   EXPECT_DOUBLE_EQ(j.v[0], 4.0);
 }
 
+TEST(Rigidity, ReportRadiusAndReferredRigidityClosedForms) {
+  // Eq. 5 transposed: a rigidity R = 9657 N·m/rad at r = 60 mm is S = R/r² = 2682.5 N/mm.
+  const double c = 1.0 / 9657.0e3;  // rad/(N·mm)
+  EXPECT_NEAR(LinearStiffnessAtRadius(c, 60.0), 9657.0e3 / 3600.0, 1e-9);
+  // Eq. 6: 8000 N·m/rad behind a 1:90 reduction is 8000/8100 N·m/rad at its input.
+  EXPECT_NEAR(RigidityThroughRatio(8000.0, 90.0), 8000.0 / 8100.0, 1e-15);
+  // Making a link rigid removes exactly its compliance referred to B.
+  const std::vector<ElementSpec> specs = {Coupling(2.0e6), Gear(3.0), Coupling(5.0e6)};
+  const auto chain = EvaluateChain<double>(specs);
+  const double c0 = 1.0 / 2.0e6 / 9.0, c2 = 1.0 / 5.0e6;
+  EXPECT_NEAR(chain.compliance_b_if_rigid[0], c2, 1e-20);
+  EXPECT_NEAR(chain.compliance_b_if_rigid[2], c0, 1e-20);
+  EXPECT_NEAR(chain.compliance_b_if_rigid[1], c0 + c2, 1e-20);
+}
+
 // ---- The study: numbers through the C++ entry points, exit codes and files through the CLI ---------------------------------------------------------------
 
 TEST(RigidityStudy, ExamplesReportRigidityAndShares) {

@@ -38,6 +38,9 @@ struct ChainResult {
   std::vector<T> compliance_at_b;       ///< each link's compliance referred to end B
   std::vector<T> share;                 ///< each link's share of the total compliance
   std::vector<T> backlash_at_b;         ///< each link's backlash referred to end B [rad]
+  /// The total compliance at end B had link i been rigid (the paper's remark on the stepped
+  /// shaft: what ignoring an element would have predicted).
+  std::vector<T> compliance_b_if_rigid;
   int dominant = -1;                    ///< index of the link with the largest share
 };
 
@@ -50,6 +53,7 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
   r.compliance_at_b.resize(n);
   r.backlash_at_b.resize(n);
   r.share.resize(n);
+  r.compliance_b_if_rigid.resize(n);
   // Walk from end B towards A, carrying the product of the ratios of the stages passed.
   T scale(1.0);  // Π N_j over stages after link k
   r.compliance_b = T(0.0);
@@ -68,6 +72,7 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
   r.backlash_a = r.backlash_b * scale;
   double best = -1.0;
   for (size_t i = 0; i < n; ++i) {
+    r.compliance_b_if_rigid[i] = r.compliance_b - r.compliance_at_b[i];
     // A chain of rigid links only has zero compliance: every share is then 0.
     r.share[i] = Value(r.compliance_b) > 0.0 ? r.compliance_at_b[i] / r.compliance_b : T(0.0);
     if (Value(r.share[i]) > best) {
@@ -76,6 +81,13 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
     }
   }
   return r;
+}
+
+/// A rigidity R (any unit) seen through a gear stage of ratio N from its fast side: R / N² (eq. 6
+/// read backwards: the rigidity at the driving shaft of a reduction).
+template <typename T>
+T RigidityThroughRatio(const T& rigidity, const T& ratio) {
+  return rigidity / (ratio * ratio);
 }
 
 }  // namespace camopt::rigidity

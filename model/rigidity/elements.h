@@ -41,6 +41,13 @@ T RigidityFromLinear(const T& stiffness, const T& radius) {
   return stiffness * radius * radius;
 }
 
+/// The linear stiffness at radius r of a torsional compliance c (eq. 5 transposed, S = R / r²
+/// with R = 1/c): 1/(c r²). c [rad/(N·mm)], r [mm] -> N/mm.
+template <typename T>
+T LinearStiffnessAtRadius(const T& compliance, const T& radius) {
+  return T(1.0) / (compliance * radius * radius);
+}
+
 /// Lateral stiffness at a load point of a simply supported shaft of constant section,
 /// S = 3 E J L / (l₁² l₂²), L = l₁ + l₂ (paper, eq. 8). E [MPa], J [mm⁴], l₁, l₂ [mm] -> N/mm.
 template <typename T>
