@@ -287,11 +287,14 @@ TEST(CycloidLtca, BadInputIsRejected) {
 
 // --- The study kinds: numbers through the C++ entry points, files and exit codes through the CLI ---
 
-std::string StudyJson(const std::string& crowning, const std::string& analysis) {
-  return R"({"study": "cycloid_ltca", "name": "test",
+// testing::CycloidNnm() as a study file's "drive" and "modification".
+const std::string kNnmDriveJson = R"(
     "drive": {"teeth": 15, "rollers": 16, "roller_position_radius_mm": 90, "roller_radius_mm": 7.2,
               "eccentricity_mm": 4.5, "face_width_mm": 17},
-    "modification": {"delta_position_um": -16, "delta_radius_um": -8},
+    "modification": {"delta_position_um": -16, "delta_radius_um": -8},)";
+
+std::string StudyJson(const std::string& crowning, const std::string& analysis) {
+  return R"({"study": "cycloid_ltca", "name": "test",)" + kNnmDriveJson + R"(
     "crowning": )" + crowning + R"(,
     "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
     "load": {"torque_Nm": 350},
@@ -370,10 +373,7 @@ TEST(CycloidStudies, LtcaBadInputExitsWithCode2) {
   EXPECT_NE(r.stderr_text.find("infeasible"), std::string::npos) << r.stderr_text;
 }
 
-const char* kTuningStudy = R"({"study": "cycloid_crowning_tuning", "name": "t",
-    "drive": {"teeth": 15, "rollers": 16, "roller_position_radius_mm": 90, "roller_radius_mm": 7.2,
-              "eccentricity_mm": 4.5, "face_width_mm": 17},
-    "modification": {"delta_position_um": -16, "delta_radius_um": -8},
+const std::string kTuningStudy = R"({"study": "cycloid_crowning_tuning", "name": "t",)" + kNnmDriveJson + R"(
     "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
     "load": {"design_torque_Nm": 350, "max_torque_Nm": 550},
     "tuning": {"coefficient_mm": [0.0, 0.02], "curve_points": 4, "max_evaluations": 4},
