@@ -83,6 +83,23 @@ CrowningEvaluation CycloidCrowningModel::Evaluate(double coefficient_mm, double 
   return e;
 }
 
+std::optional<CrowningEvaluation> LowestFeasibleStress(const std::vector<CrowningEvaluation>& evaluations,
+                                                       double required_margin_um) {
+  const CrowningEvaluation* best = nullptr;
+  for (const auto& e : evaluations)
+    if (e.edge_margin_um >= required_margin_um && (!best || e.stress_MPa < best->stress_MPa)) best = &e;
+  if (!best) return std::nullopt;
+  return *best;
+}
+
+CrowningEvaluation LargestEdgeMargin(const std::vector<CrowningEvaluation>& evaluations) {
+  if (evaluations.empty()) throw std::invalid_argument("LargestEdgeMargin: no evaluation");
+  const CrowningEvaluation* best = &evaluations.front();
+  for (const auto& e : evaluations)
+    if (e.edge_margin_um > best->edge_margin_um) best = &e;
+  return *best;
+}
+
 Problem CycloidCrowningProblem(CycloidCrowningModel& model, const CycloidCrowningSpec& spec,
                                std::function<void(const CrowningEvaluation&)> on_evaluation) {
   Problem p;

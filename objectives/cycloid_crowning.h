@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "model/cycloid/loaded_tca.h"
@@ -49,6 +50,13 @@ class CycloidCrowningModel {
   std::vector<double> angles_;
   int evaluations_ = 0;
 };
+
+/// The evaluation with the lowest stress among those with edge_margin_um >= required_margin_um
+/// (the first one on a tie), or none.
+std::optional<CrowningEvaluation> LowestFeasibleStress(const std::vector<CrowningEvaluation>& evaluations,
+                                                       double required_margin_um);
+/// The evaluation with the largest edge margin (the first one on a tie). @pre not empty.
+CrowningEvaluation LargestEdgeMargin(const std::vector<CrowningEvaluation>& evaluations);
 
 /// Bounds and scaling of the crowning problem.
 struct CycloidCrowningSpec {

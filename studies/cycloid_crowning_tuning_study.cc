@@ -71,22 +71,18 @@ Result Run(const Study& s, const RunContext& ctx) {
   }
   r.reference = model.Evaluate(s.reference_coefficient_mm, s.drive.face_width_mm);
   // 2. Start from the best feasible scan point (else the one with the largest margin).
-  const CrowningEvaluation* start = nullptr;
-  for (const auto& e : r.curve)
-    if (e.edge_margin_um >= s.required_edge_margin_um && (!start || e.stress_MPa < start->stress_MPa)) start = &e;
-  if (!start)
-    for (const auto& e : r.curve)
-      if (!start || e.edge_margin_um > start->edge_margin_um) start = &e;
+  const CrowningEvaluation start = objectives::LowestFeasibleStress(r.curve, s.required_edge_margin_um)
+                                       .value_or(objectives::LargestEdgeMargin(r.curve));
 
   objectives::CycloidCrowningSpec spec;
   spec.coefficient_lo_mm = s.coefficient_lo_mm;
   spec.coefficient_hi_mm = s.coefficient_hi_mm;
-  spec.initial_coefficient_mm = start->coefficient_mm;
+  spec.initial_coefficient_mm = start.coefficient_mm;
   spec.tune_length = s.tune_length;
   spec.length_lo_mm = s.length_lo_mm;
   spec.length_hi_mm = s.length_hi_mm;
   spec.required_edge_margin_um = s.required_edge_margin_um;
-  spec.stress_scale_MPa = std::max(1.0, start->stress_MPa);
+  spec.stress_scale_MPa = std::max(1.0, start.stress_MPa);
   const objectives::Problem problem = objectives::CycloidCrowningProblem(
       model, spec, [&](const CrowningEvaluation& e) {
         r.history.push_back(e);
@@ -109,15 +105,12 @@ Result Run(const Study& s, const RunContext& ctx) {
     default: r.status = "converged"; break;
   }
   progress.Done();
-  // The best feasible point seen anywhere (scan or optimiser).
-  const CrowningEvaluation* best = nullptr;
-  auto consider = [&](const CrowningEvaluation& e) {
-    if (e.edge_margin_um >= s.required_edge_margin_um - 1e-9 && (!best || e.stress_MPa < best->stress_MPa)) best = &e;
-  };
-  for (const auto& e : r.curve) consider(e);
-  for (const auto& e : r.history) consider(e);
-  r.feasible = best != nullptr;
-  r.best = best ? *best : *start;
+  // The best feasible point seen anywhere (scan, then optimiser).
+  std::vector<CrowningEvaluation> seen = r.curve;
+  seen.insert(seen.end(), r.history.begin(), r.history.end());
+  const auto best = objectives::LowestFeasibleStress(seen, s.required_edge_margin_um - 1e-9);
+  r.feasible = best.has_value();
+  r.best = best.value_or(start);
   r.evaluations = model.evaluations();
   return r;
 }

@@ -108,5 +108,23 @@ TEST(CycloidCrowningProblem, CobylaKeepsTheEdgesFreeAndBeatsTheStart) {
   EXPECT_EQ(model.evaluations(), int(seen.size()));  // the final assessment ran nothing new
 }
 
+TEST(CycloidCrowningProblem, ScanSelections) {
+  auto ev = [](double f, double stress, double margin) {
+    CrowningEvaluation e;
+    e.coefficient_mm = f;
+    e.stress_MPa = stress;
+    e.edge_margin_um = margin;
+    return e;
+  };
+  const std::vector<CrowningEvaluation> scan = {ev(0.0, 1200, -3.0), ev(0.002, 1160, 0.3),
+                                                ev(0.004, 1260, 5.0), ev(0.006, 1160, 7.0)};
+  // Lowest stress among margin >= required; the first of a tie.
+  EXPECT_EQ(LowestFeasibleStress(scan, 0.0)->coefficient_mm, 0.002);
+  EXPECT_EQ(LowestFeasibleStress(scan, 1.0)->coefficient_mm, 0.006);
+  EXPECT_FALSE(LowestFeasibleStress(scan, 10.0).has_value());
+  EXPECT_EQ(LargestEdgeMargin(scan).coefficient_mm, 0.006);
+  EXPECT_THROW(LargestEdgeMargin({}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace camopt::objectives
