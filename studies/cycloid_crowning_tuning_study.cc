@@ -67,7 +67,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   for (int k = 0; k < s.curve_points; ++k) {
     const double f = s.coefficient_lo_mm + (s.coefficient_hi_mm - s.coefficient_lo_mm) * k / (s.curve_points - 1);
     r.curve.push_back(model.Evaluate(f, s.length_lo_mm));
-    progress.Update(0.5 * (k + 1) / s.curve_points, "scan f = " + cycloid_common::Fmt(f * 1e3) + " um");
+    progress.Update(0.5 * (k + 1) / s.curve_points, "scan f = " + Format(f * 1e3, 4) + " um");
   }
   r.reference = model.Evaluate(s.reference_coefficient_mm, s.drive.face_width_mm);
   // 2. Start from the best feasible scan point (else the one with the largest margin).
@@ -87,8 +87,8 @@ Result Run(const Study& s, const RunContext& ctx) {
       model, spec, [&](const CrowningEvaluation& e) {
         r.history.push_back(e);
         progress.Update(std::min(1.0, 0.5 + 0.5 * double(r.history.size()) / (s.max_evaluations + 1)),
-                        "f = " + cycloid_common::Fmt(e.coefficient_mm * 1e3) + " um, " +
-                            cycloid_common::Fmt(e.stress_MPa, "%.0f") + " MPa");
+                        "f = " + Format(e.coefficient_mm * 1e3, 4) + " um, " +
+                            cycloid_common::Fixed(e.stress_MPa, 0) + " MPa");
       });
   optimizers::SolverOptions options;
   options.backend = "nlopt_cobyla";

@@ -13,7 +13,6 @@
 namespace camopt::studies::cycloid_ltca {
 
 using namespace camopt::cycloid;
-using cycloid_common::Fmt;
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis"});
@@ -65,7 +64,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   if (!r.cycle.converged) {
     for (const auto& m : r.cycle.meshes)
       if (!m.converged) {
-        r.warning = "not converged at crank angle " + Fmt(m.crank_angle_rad * 180 / kPi) + " deg: " + m.message;
+        r.warning = "not converged at crank angle " + Format(m.crank_angle_rad * 180 / kPi, 4) + " deg: " + m.message;
         break;
       }
   }
@@ -165,7 +164,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   const MeshLoad& worst = cycle.meshes[cycle.max_pressure_index];
   out.Add("pressure_map.svg",
           cycloid_common::PressureMapsSvg(
-              worst, "Contact pressure at crank angle " + Fmt(worst.crank_angle_rad * 180 / kPi) + " deg"));
+              worst, "Contact pressure at crank angle " + Format(worst.crank_angle_rad * 180 / kPi, 4) + " deg"));
   // The pressure field of the worst pair as a long table (x across, y along the face).
   Table pmap;
   std::vector<double> cr, cx, cy, cp;
