@@ -157,7 +157,7 @@ TEST(LcrStiffness, ForcesBalanceTheTorqueOnBothTurrets) {
   for (const auto& c : lcr::RollerContacts(r, lcr::Side::kInput, theta))
     ta += PalmgrenForce(d.psi_input * c.arm, r.input.contact_length(), e_star) * c.arm;
   EXPECT_NEAR(tb, t, 1e-9 * t);
-  // Fixed turret: T_A = −T_o m_B n_A /(n_B m_A) (NOTES §1, in the signed form).
+  // Fixed turret: T_A = −T_o m_B n_A /(n_B m_A) (docs/papers.md §1, in the signed form).
   EXPECT_NEAR(ta, -t * 14.0 * 13.0 / (15.0 * 12.0), 1e-9 * t);
 }
 

@@ -1,4 +1,4 @@
-// Tests of the transmission rigidity chain (the transmission-rigidity paper, docs/rigidity.md).
+// Tests of the transmission rigidity chain (the transmission-rigidity paper, docs/papers.md §4).
 #include <array>
 #include <cmath>
 #include <filesystem>

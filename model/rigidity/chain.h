@@ -1,5 +1,5 @@
 // A transmission as a series chain of compliant elements and gear stages
-// (the transmission-rigidity paper, eqs. 2 and 6; docs/rigidity.md).
+// (the transmission-rigidity paper, docs/papers.md §4, eqs. 2 and 6; docs/rigidity.md).
 //
 // The chain runs from end A (e.g. the motor) to end B (e.g. the cam or the payload). Every link
 // sits on one shaft and has a compliance (1/rigidity, rad per N·mm) and a backlash (rad) measured

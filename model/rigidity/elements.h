@@ -1,5 +1,5 @@
 // Rigidity of transmission elements: closed forms of the transmission-rigidity paper
-// (docs/rigidity.md) plus two textbook beam cases, over the scalar T.
+// (docs/papers.md §4, docs/rigidity.md) plus two textbook beam cases, over the scalar T.
 //
 // Units: lengths mm, forces N, moduli MPa (N/mm²). A linear stiffness is in N/mm, a torsional
 // rigidity in N·mm/rad (divide by 1000 for N·m/rad). "Rigidity" is angular, "stiffness" linear,
