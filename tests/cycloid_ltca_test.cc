@@ -335,6 +335,12 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   for (const char* f : {"result.json", "per_angle.csv", "backlash.csv", "pressure_map.svg", "lte.svg", "tooth.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  // The registered runner writes what the C++ entry points return.
+  namespace ltca = studies::cycloid_ltca;
+  const nlohmann::json study = nlohmann::json::parse(camopt::testing::ReadFile(dir / "s.json"));
+  const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+  EXPECT_EQ(nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json")),
+            ltca::ToJson(s, ltca::Run(s, studies::RunContext{"", true})));
 }
 
 TEST(CycloidStudies, ExamplesRunOnACoarseGrid) {
@@ -412,6 +418,11 @@ TEST(CycloidStudies, CrowningTuningWritesItsFiles) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
   EXPECT_TRUE(j["feasible"].get<bool>());
+  // The registered runner writes what the C++ entry points return.
+  namespace tuning = studies::cycloid_crowning_tuning;
+  const nlohmann::json study = nlohmann::json::parse(kTuningStudy);
+  const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+  EXPECT_EQ(j, tuning::ToJson(s, tuning::Run(s, studies::RunContext{"", true})));
 }
 
 TEST(CycloidStudies, MisspeltNestedFieldIsRejected) {

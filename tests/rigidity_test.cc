@@ -382,6 +382,12 @@ TEST(RigidityStudy, ExamplesRunThroughTheCli) {
     ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
     EXPECT_TRUE(std::filesystem::exists(dir / "result.json"));
     EXPECT_TRUE(std::filesystem::exists(dir / "elements.csv"));
+    // The registered runner writes what the C++ entry points return.
+    namespace tr = studies::transmission_rigidity;
+    const nlohmann::json study = camopt::testing::Example("rigidity_" + name + ".json");
+    const tr::Study s = tr::Parse(studies::Node(&study, name + ".json", ""));
+    EXPECT_EQ(nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json")),
+              tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})));
   }
 }
 
