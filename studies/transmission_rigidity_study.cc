@@ -23,16 +23,14 @@ using rigidity::ElementSpec;
 
 constexpr double kArcminPerRad = 180.0 * 60.0 / kPi;
 
-// Moduli in MPa: the element's own field if given, else the study's "material" (required only
-// when an element needs it).
-double ShearMPa(const Node& element, const Node& root) {
-  if (element.Has("shear_modulus_GPa")) return 1000.0 * element["shear_modulus_GPa"].Positive();
-  return 1000.0 * root["material"]["shear_modulus_GPa"].Positive();
+// A modulus in MPa from its GPa field: the element's own if given, else the study's "material"
+// (required only when an element needs it).
+double ModulusMPa(const Node& element, const Node& root, const std::string& key_GPa) {
+  if (element.Has(key_GPa)) return 1000.0 * element[key_GPa].Positive();
+  return 1000.0 * root["material"][key_GPa].Positive();
 }
-double YoungsMPa(const Node& element, const Node& root) {
-  if (element.Has("youngs_modulus_GPa")) return 1000.0 * element["youngs_modulus_GPa"].Positive();
-  return 1000.0 * root["material"]["youngs_modulus_GPa"].Positive();
-}
+double ShearMPa(const Node& element, const Node& root) { return ModulusMPa(element, root, "shear_modulus_GPa"); }
+double YoungsMPa(const Node& element, const Node& root) { return ModulusMPa(element, root, "youngs_modulus_GPa"); }
 
 // Outer and inner diameter with inner < outer.
 std::pair<double, double> Diameters(const Node& e, const std::string& outer_key) {
