@@ -1,5 +1,6 @@
 // Parsing and output helpers shared by the two cycloid study kinds (cycloid_ltca,
-// cycloid_crowning_tuning). Header-only; each kind stays one .cc file.
+// cycloid_crowning_tuning): the shared parse of drive, modification, material, crowning and grid,
+// and the pressure-map drawing. Header-only; each kind is its own <kind>_study.h/.cc.
 #pragma once
 
 #include <algorithm>
