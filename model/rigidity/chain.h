@@ -73,7 +73,9 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
   double best = -1.0;
   for (size_t i = 0; i < n; ++i) {
     r.compliance_b_if_rigid[i] = r.compliance_b - r.compliance_at_b[i];
-    // A chain of rigid links only has zero compliance: every share is then 0.
+    // A chain of rigid links only has zero compliance: every share is then 0 (a value branch on a
+    // degenerate case, where a share is undefined; the study rejects such a chain). The dominant
+    // link is an argmax in double: nothing differentiates it.
     r.share[i] = Value(r.compliance_b) > 0.0 ? r.compliance_at_b[i] / r.compliance_b : T(0.0);
     if (Value(r.share[i]) > best) {
       best = Value(r.share[i]);
