@@ -77,7 +77,7 @@ TEST(CycloidCrowningProblem, LengthIsAVariableWhenTuned) {
   EXPECT_GT(y[0], 0.0);
 }
 
-TEST(CycloidCrowningProblem, CobylaKeepsTheEdgesFreeAndBeatsTheStart) {
+TEST(CycloidCrowningProblem, CobylaFindsAFeasiblePointBetterThanTheStart) {
   // A straight tooth (f = 0) touches the edges at 550 N·m, and the stress grows with f: from a
   // feasible start (f = 7 µm) COBYLA lowers f and the stress while keeping the edges free.
   CycloidCrowningModel model = Model();
