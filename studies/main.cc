@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
     std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
-              << " (results written to " << out_dir << ")\n";
+              << "\n";
+    if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";
