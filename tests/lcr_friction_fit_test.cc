@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "model/lcr/friction.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -25,6 +26,25 @@ json RunJson(const json& study, const std::string& name, int* code, std::string*
   *code = r.exit_code;
   *err = r.stderr_text;
   return r.exit_code == 0 ? json::parse(ReadFile(dir / "out" / "result.json")) : json();
+}
+
+// The friction law of model/lcr/friction.h on hand-computed numbers (eq. 32: T_in = (F_t + μ|F_r|) e,
+// eq. 33: η = T_o/(T_in |r_i|)), and its AD gradient in (μ, T_drag).
+TEST(LcrFrictionLaw, HandComputedValuesAndGradient) {
+  EXPECT_DOUBLE_EQ(lcr::InputTorque(100.0, -40.0, 0.1, 2.0), (100.0 + 4.0) * 2.0);
+  EXPECT_DOUBLE_EQ(lcr::InputTorque(100.0, 40.0, 0.0, 2.0), 200.0);
+  EXPECT_DOUBLE_EQ(lcr::Efficiency(90.0, 2.0, 50.0), 0.9);
+  EXPECT_DOUBLE_EQ(lcr::IdealInputTorque(90.0, -90.0), 1.0);
+  const lcr::CycleInputTorque unit = lcr::MeanInputTorquePerOutputTorque({1.0, 3.0}, {-2.0, 4.0}, 0.5);
+  EXPECT_DOUBLE_EQ(unit.ideal, 1.0);     // (1 + 3)/2 · 0.5
+  EXPECT_DOUBLE_EQ(unit.friction, 1.5);  // (2 + 4)/2 · 0.5
+  EXPECT_DOUBLE_EQ(lcr::MeanInputTorque(unit, 10.0, 0.2, 0.03), 0.03 + 10.0 * (1.0 + 0.2 * 1.5));
+  testing::ExpectJacobianMatchesCentralDifferences<2>(
+      [&](const auto& x) {
+        using T = std::decay_t<decltype(x[0])>;
+        return std::vector<T>{lcr::MeanInputTorque(unit, T(10.0), x[0], x[1])};
+      },
+      std::array<double, 2>{0.2, 0.03});
 }
 
 // Measurements made by lcr_analysis with μ = 0.12 plus a drag of 0.02 N·m: the fit returns both.

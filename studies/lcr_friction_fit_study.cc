@@ -1,19 +1,16 @@
 // Study kind "lcr_friction_fit": fits friction parameters of the LCR to measured input torques
-// (e.g. Table 4 of lobe-cam-reducer.txt) by bounded least squares with Ceres, and reports the
-// fitted values, residuals and their uncertainty (ceres::Covariance).
+// (e.g. Table 4 of the paper) by bounded least squares with Ceres, and reports the fitted values,
+// residuals and their uncertainty (ceres::Covariance).
 //
-// Friction model (our choice; the paper's eq. 32 plus a drag term):
-//     T_in(T_o) = T_drag + mean_θ[ (F_t(θ) + μ |F_r(θ)|) e ]
-// with F_t, F_r the tangential and radial loads of the cam on the eccentric from the LCR pipeline
-// (model/lcr/forces.h), μ the eccentric-bearing friction coefficient and T_drag a no-load drag
-// torque (seals, bearings, churning). Without a cam weight the pipeline's forces are linear in T_o,
-// so mean F_t e and mean |F_r| e are computed once per unit output torque:
-//     T_in = T_drag + T_o (t_ideal + μ t_friction).
+// The friction model is model/lcr/friction.h (the paper's eq. 32 plus a no-load drag):
+//     T_in(T_o) = T_drag + T_o (t_ideal + μ t_friction),
+// with t_ideal, t_friction the mean F_t e and |F_r| e per unit output torque from the LCR pipeline.
 // Residuals are weighted by the measurements' standard deviations, so (J^T J)^-1 is the parameter
 // covariance when those deviations are the measurement errors.
 #include <cmath>
 
 #include "model/lcr/cycle.h"
+#include "model/lcr/friction.h"
 #include "model/lcr/kinematics.h"
 #include "optimizers/ceres_fit.h"
 #include "studies/lcr_input.h"
@@ -62,7 +59,7 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   if (data.size() < 3) meas.Fail("at least 3 measurements (2 parameters are fitted)");
   if (root.Has("analysis")) root["analysis"].CheckKnownFields({"angle_steps"});
   const int steps = root.Has("analysis") ? root["analysis"].IntegerOr("angle_steps", 12, 3600) : 3600;
-  Parameter mu{0.05, 0.0, 1.0}, drag{0.0, 0.0, 10.0};
+  Parameter mu{lcr::kPaperFrictionCoefficient, 0.0, 1.0}, drag{0.0, 0.0, 10.0};
   if (root.Has("parameters")) {
     root["parameters"].CheckKnownFields({"friction_coefficient", "drag_torque_Nm"});
     mu = ParseParameter(root["parameters"], "friction_coefficient", mu);
@@ -78,13 +75,8 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   } catch (const std::domain_error& e) {
     throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
   }
-  double t_ideal = 0, t_friction = 0;  // [N·m per N·m of output torque]
-  for (size_t i = 0; i < series.theta_rad.size(); ++i) {
-    t_ideal += series.tangential_force_N[i] * r.eccentricity;
-    t_friction += std::abs(series.radial_force_N[i]) * r.eccentricity;
-  }
-  t_ideal /= steps;
-  t_friction /= steps;
+  const lcr::CycleInputTorque unit =
+      lcr::MeanInputTorquePerOutputTorque(series.tangential_force_N, series.radial_force_N, r.eccentricity);
   const double ratio = std::abs(lcr::SpeedReductionRatio(r));
 
   optimizers::LeastSquaresProblem p;
@@ -92,10 +84,10 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
                  {"drag_torque_Nm", drag.lower, drag.upper, drag.initial, 0.1}};
   const int m = static_cast<int>(data.size());
   p.evaluator = objectives::MakeEvaluator<2>(
-      2, {{"weighted_residuals", 0, m}}, [data, t_ideal, t_friction](auto x, auto res) {
+      2, {{"weighted_residuals", 0, m}}, [data, unit](auto x, auto res) {
         using T = std::decay_t<decltype(x[0])>;
         for (size_t i = 0; i < data.size(); ++i) {
-          const T model = x[1] + T(data[i].output_torque_Nm) * (T(t_ideal) + x[0] * T(t_friction));
+          const T model = lcr::MeanInputTorque(unit, T(data[i].output_torque_Nm), x[0], x[1]);
           res[i] = (model - T(data[i].input_torque_Nm)) / T(data[i].sd_Nm);
         }
       });
@@ -110,8 +102,8 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   res["status"] = optimizers::ToString(fit.status);
   res["model"] = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
   res["speed_ratio"] = lcr::SpeedReductionRatio(r);
-  res["ideal_input_torque_per_output_torque"] = t_ideal;
-  res["friction_input_torque_per_output_torque_and_mu"] = t_friction;
+  res["ideal_input_torque_per_output_torque"] = unit.ideal;
+  res["friction_input_torque_per_output_torque_and_mu"] = unit.friction;
   const char* names[2] = {"friction_coefficient", "drag_torque_Nm"};
   for (int i = 0; i < 2; ++i) {
     nlohmann::json j;
@@ -137,12 +129,16 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   Table t;
   std::vector<double> to, tin, tfit, resid, eta_meas, eta_fit;
   for (int i = 0; i < m; ++i) {
-    const double model = fit.x[1] + data[i].output_torque_Nm * (t_ideal + fit.x[0] * t_friction);
-    const double paper_model = data[i].output_torque_Nm * (t_ideal + 0.05 * t_friction);
+    const double model = lcr::MeanInputTorque(unit, data[i].output_torque_Nm, fit.x[0], fit.x[1]);
+    const double paper_model =
+        lcr::MeanInputTorque(unit, data[i].output_torque_Nm, lcr::kPaperFrictionCoefficient, 0.0);
     nlohmann::json row_sd = nullptr;
     if (!fit.covariance.empty()) {
-      // Standard deviation of the fitted torque: sqrt(gᵀ C g), g = ∂T_in/∂(μ, T_drag).
-      const double g0 = data[i].output_torque_Nm * t_friction, g1 = 1.0;
+      // Standard deviation of the fitted torque: sqrt(gᵀ C g), g = ∂T_in/∂(μ, T_drag) by AD.
+      using J2 = ceres::Jet<double, 2>;
+      const J2 t_in = lcr::MeanInputTorque(unit, J2(data[i].output_torque_Nm), J2(fit.x[0], 0),
+                                           J2(fit.x[1], 1));
+      const double g0 = t_in.v[0], g1 = t_in.v[1];
       const auto& c = fit.covariance;
       row_sd = std::sqrt(g0 * g0 * c[0] + 2 * g0 * g1 * c[1] + g1 * g1 * c[3]);
     }
@@ -153,8 +149,8 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
                     {"fitted_input_torque_Nm", model},
                     {"residual_Nm", model - data[i].input_torque_Nm},
                     {"weighted_residual", fit.residuals[i]},
-                    {"fitted_efficiency", data[i].output_torque_Nm / (model * ratio)},
-                    {"measured_efficiency", data[i].output_torque_Nm / (data[i].input_torque_Nm * ratio)},
+                    {"fitted_efficiency", lcr::Efficiency(data[i].output_torque_Nm, model, ratio)},
+                    {"measured_efficiency", lcr::Efficiency(data[i].output_torque_Nm, data[i].input_torque_Nm, ratio)},
                     {"input_torque_with_mu_0.05_no_drag_Nm", paper_model}});
     to.push_back(data[i].output_torque_Nm);
     tin.push_back(data[i].input_torque_Nm);
@@ -174,7 +170,7 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
   const double tmax = *std::max_element(to.begin(), to.end()) * 1.1;
   for (int i = 0; i <= 20; ++i) {
     line_x.push_back(tmax * i / 20);
-    line_y.push_back(fit.x[1] + line_x.back() * (t_ideal + fit.x[0] * t_friction));
+    line_y.push_back(lcr::MeanInputTorque(unit, line_x.back(), fit.x[0], fit.x[1]));
   }
   out.Add("fit.svg", SvgLinePlot({{"fitted model", line_x, line_y}, {"measured", to, tin}},
                                  {"Input torque against output torque", "output torque [N·m]",
