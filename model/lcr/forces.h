@@ -147,6 +147,10 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
     const Vec2<T> u = U(theta);
     out.tangential_force = -g.dot(Perp(u));
     out.radial_force = g.dot(u);
+    // |F_r| in the friction law (ceres' abs: sign(F_r)·dF_r, no branch) has a corner where the
+    // radial load reverses. Harmless for gradients: it is the Coulomb law's own corner (friction
+    // follows the load's direction), the value is continuous, and an exact zero of F_r at a sampled
+    // angle is met on a set of designs of measure zero, where either side is a valid subgradient.
     const T mu(load.friction_coefficient);
     out.input_torque = InputTorque(out.tangential_force, out.radial_force, mu, r.eccentricity);
     const double ratio = std::abs(SpeedReductionRatio(r));

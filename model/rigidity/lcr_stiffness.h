@@ -204,7 +204,10 @@ ReducerDeflection<T> DeflectAtAngle(const lcr::Reducer<T>& r, const lcr::Materia
   d.psi_input = a.Rotation(T(-rho) * torque);
   d.output_rotation = d.psi_output - T(rho) * d.psi_input;
   // First contact in the sense of T: ψ_B = c/max(sign·a_B), ψ_A = −c/max(−sign·a_A).
-  const double sign = Value(torque) >= 0 ? 1.0 : -1.0;
+  // The sense of T picks which rollers lead: first_contact jumps at T = 0 across the dead band
+  // (the backlash is a real discontinuity, not smoothed). Away from T = 0 the sign is locally
+  // constant, so the derivatives are exact; HardMax takes the leading roller's (corner where two tie).
+  const double sign = IfThenElse(Compare::kGreaterEqual, torque, 0.0, 1.0, -1.0);
   std::vector<T> lead_a, lead_b;
   for (const T& x : a.arms) lead_a.push_back(T(-sign) * x);
   for (const T& x : b.arms) lead_b.push_back(T(sign) * x);
