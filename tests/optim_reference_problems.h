@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "model/common/roots.h"
 #include "objectives/lcr_sizing.h"
 #include "objectives/problem.h"
 
@@ -65,16 +66,10 @@ inline std::pair<double, double> RosenbrockOnDiskOptimum() {
     const double t = 2 * kPi * i / 20000;
     if (f(t) < best) best = f(t), best_t = t;
   }
-  double a = best_t - 2 * kPi / 20000, b = best_t + 2 * kPi / 20000;
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 200; ++i) {
-    const double c = b - g * (b - a), d = a + g * (b - a);
-    if (f(c) < f(d))
-      b = d;
-    else
-      a = c;
-  }
-  return {0.5 * (a + b), f(0.5 * (a + b))};
+  const GoldenSectionBracket b = GoldenSectionMaximize([&](double t) { return -f(t); },
+                                                       best_t - 2 * kPi / 20000, best_t + 2 * kPi / 20000, 200);
+  const double t = 0.5 * (b.lo + b.hi);
+  return {t, f(t)};
 }
 
 /// The LCR sizing problem of the paper's LCR II combination (12/13 lobes/rollers on the input

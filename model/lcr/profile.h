@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "model/common/geometry.h"
+#include "model/common/roots.h"
 #include "model/lcr/reducer.h"
 
 namespace camopt::lcr {
@@ -77,17 +78,9 @@ double ArgMaxCurvature(const CamSide<T>& side, const T& eccentricity) {
     const double v = f(-1.0 + 2.0 * i / n);
     if (v > best_v) best_v = v, best = i;
   }
-  double lo = -1.0 + 2.0 * std::max(best - 1, 0) / n, hi = -1.0 + 2.0 * std::min(best + 1, n) / n;
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
-  for (int it = 0; it < 60; ++it) {
-    if (f1 < f2) {
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
-    } else {
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
-    }
-  }
-  const double c = 0.5 * (lo + hi);
+  const GoldenSectionBracket b = GoldenSectionMaximize(
+      f, -1.0 + 2.0 * std::max(best - 1, 0) / n, -1.0 + 2.0 * std::min(best + 1, n) / n, 60);
+  const double c = 0.5 * (b.lo + b.hi);
   // The ends of the interval are candidates too (the maximum is often at c = −1).
   double arg = c, val = f(c);
   for (double end : {-1.0, 1.0})

@@ -26,6 +26,7 @@
 
 #include <ceres/jet.h>
 
+#include "model/common/roots.h"
 #include "model/common/scalar.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/reducer.h"
@@ -145,17 +146,8 @@ struct TurretSpring {
       lo = hi;
       hi *= 2.0;
     }
-    double psi = hi;
-    for (int it = 0; it < 200; ++it) {
-      const double r = g(psi) - target;
-      (r > 0 ? hi : lo) = psi;
-      const double slope = s.Rigidity(sign * psi);
-      double next = slope > 0 ? psi - r / slope : 0.5 * (lo + hi);
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      const bool done = std::abs(next - psi) <= 1e-14 * psi || hi - lo <= 1e-15 * hi;
-      psi = next;
-      if (done) break;
-    }
+    const double psi = SafeguardedNewtonIncreasing(
+        g, [&](double x) { return s.Rigidity(sign * x); }, target, lo, hi, 200, 1e-14, 1e-15);
     const T psi0(sign * psi);
     return psi0 - (Torque(psi0) - torque) / Rigidity(psi0);
   }
