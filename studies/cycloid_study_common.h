@@ -13,6 +13,7 @@
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/tooth_profile.h"
 #include "studies/input.h"
+#include "studies/material_input.h"
 
 namespace camopt::studies::cycloid_common {
 
@@ -41,12 +42,9 @@ inline cycloid::Drive ParseDrive(const Node& root) {
 }
 
 inline cycloid::Material ParseMaterial(const Node& root) {
-  cycloid::Material m;
   const Node n = root["material"];
   n.CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  m.youngs_modulus_MPa = n["youngs_modulus_GPa"].Positive() * 1000.0;
-  m.poisson_ratio = n["poisson_ratio"].NumberIn(0.0, 0.499);
-  return m;
+  return studies::ParseMaterial(n);
 }
 
 /// "crowning": {"type": none | full | partial | logarithmic, ...}.

@@ -366,9 +366,7 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   // Quasi-static forces and dynamics per speed.
   r["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
                {"turret_inertia_kgm2", s.dyn.inertia_Nmms2 * 1e-3}};
-  const double e_star = globoidal::EffectiveModulus(
-      s.dyn.contact.cam_modulus_MPa, s.dyn.contact.cam_poisson, s.dyn.contact.roller_modulus_MPa,
-      s.dyn.contact.roller_poisson);
+  const double e_star = s.dyn.contact.composite_modulus_MPa();
   r["effective_modulus_MPa"] = e_star;
   Table table;
   std::vector<double> th(n);

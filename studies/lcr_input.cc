@@ -47,11 +47,4 @@ double ParseCutterDiameter(const Node& side, double roller_diameter) {
   return d;
 }
 
-lcr::Material ParseMaterial(const Node& node) {
-  lcr::Material m;
-  m.youngs_modulus_MPa = node["youngs_modulus_GPa"].Positive() * 1000.0;
-  m.poisson_ratio = node["poisson_ratio"].NumberIn(0.0, 0.4999);
-  return m;
-}
-
 }  // namespace camopt::studies

@@ -4,6 +4,7 @@
 
 #include "model/lcr/reducer.h"
 #include "studies/input.h"
+#include "studies/material_input.h"
 
 namespace camopt::studies {
 
@@ -15,9 +16,5 @@ lcr::Reducer<double> ParseReducer(const Node& reducer);
 /// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
 /// must be > 0 and <= the roller diameter.
 double ParseCutterDiameter(const Node& side, double roller_diameter);
-
-/// {"youngs_modulus_GPa", "poisson_ratio"}. Other members are left to the caller (a material
-/// object may be shared with other models, e.g. a shear modulus for shafts).
-lcr::Material ParseMaterial(const Node& material);
 
 }  // namespace camopt::studies

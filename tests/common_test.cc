@@ -109,14 +109,15 @@ TEST(Writers, DxfHasPolylineAndEof) {
 
 TEST(Cli, MissingFileAndBadJsonExitWithCode2) {
   const auto dir = camopt::testing::TempDir("cli-bad");
-  auto r = camopt::testing::RunCamopt("run " + (dir / "nope.json").string() + " --quiet");
+  const std::string out = " --out " + (dir / "out").string();
+  auto r = camopt::testing::RunCamopt("run " + (dir / "nope.json").string() + " --quiet" + out);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("nope.json"), std::string::npos);
   camopt::testing::WriteFile(dir / "bad.json", "{ \"study\": ");
-  r = camopt::testing::RunCamopt("run " + (dir / "bad.json").string() + " --quiet");
+  r = camopt::testing::RunCamopt("run " + (dir / "bad.json").string() + " --quiet" + out);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("expected valid JSON"), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "the output folder given is not created";
 }
 
 }  // namespace

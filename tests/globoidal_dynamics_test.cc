@@ -40,7 +40,7 @@ TEST(GloboidalDynamics, AdamsStepFunction) {
 
 TEST(GloboidalDynamics, HertzStiffnessEqs11To13) {
   // Steel on steel: E* = E/(2(1 − ν²)).
-  const double es = EffectiveModulus(206000.0, 0.3, 206000.0, 0.3);
+  const double es = CompositeModulus(206000.0, 0.3, 206000.0, 0.3);
   EXPECT_NEAR(es, 206000.0 / (2 * 0.91), 1e-9);
   // Two equal radii: R = r/2.
   EXPECT_NEAR(ContactStiffness(4.0, 4.0, es), 4.0 / 3.0 * std::sqrt(2.0) * es, 1e-9);
@@ -169,7 +169,7 @@ TEST(GloboidalDynamics, SlowRunFollowsKinematicsAndQuasiStaticForce) {
 TEST(GloboidalDynamics, ContactLawGradients) {
   auto k = [](const auto& x) {
     using T = std::decay_t<decltype(x[0])>;
-    return std::vector<T>{ContactStiffness(x[0], x[1], EffectiveModulus(x[2], x[3], x[4], x[5]))};
+    return std::vector<T>{ContactStiffness(x[0], x[1], CompositeModulus(x[2], x[3], x[4], x[5]))};
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<6>(
       k, {4.0, 9.0, 206000.0, 0.3, 190000.0, 0.28}, 1e-6, 1e-6);

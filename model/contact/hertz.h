@@ -4,15 +4,13 @@
 
 #include <cmath>
 
+#include "model/common/material.h"
 #include "model/common/scalar.h"
 
 namespace camopt::contact {
 
-/// Composite modulus E*: 1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂.
-template <typename T>
-T CompositeModulus(const T& e1, const T& nu1, const T& e2, const T& nu2) {
-  return T(1.0) / ((T(1.0) - nu1 * nu1) / e1 + (T(1.0) - nu2 * nu2) / e2);
-}
+/// The composite modulus E* has one home, model/common/material.h.
+using camopt::CompositeModulus;
 
 /// Line (two-cylinder, plane-strain) contact: load F over length L, effective radius R'
 /// (1/R' = 1/R₁ + 1/R₂, a concave radius negative). p_max = sqrt(F E* / (π L R')).
@@ -29,6 +27,13 @@ T LineContactHalfWidth(const T& force, const T& length, const T& r_eff, const T&
   return sqrt(T(4.0) * force * r_eff / (T(kPi) * length * e_star));
 }
 
+/// Line contact: the load per unit effective radius at which the peak pressure reaches p_max,
+/// F / R' = π L p_max² / E* (the inverse of LineContactPeakPressure; a capacity margin for sizing).
+template <typename T>
+T LineContactLoadPerRadius(const T& peak_pressure, const T& length, const T& e_star) {
+  return T(kPi) * length * peak_pressure * peak_pressure / e_star;
+}
+
 /// Circular point contact (sphere of effective radius R on a flat):
 /// a = (3 F R / (4 E*))^(1/3), p0 = 3F/(2πa²), approach δ = a²/R.
 template <typename T>
@@ -43,6 +48,14 @@ PointContact<T> CircularPointContact(const T& force, const T& r_eff, const T& e_
   using std::cbrt;
   const T a = cbrt(T(3.0) * force * r_eff / (T(4.0) * e_star));
   return {a, T(3.0) * force / (T(2.0 * kPi) * a * a), a * a / r_eff};
+}
+
+/// Hertz point-contact stiffness: F = K δ^(3/2) with K = (4/3) √R E* (R effective radius [mm],
+/// E* [MPa]; K in N/mm^1.5). Follows from a = √(R δ) and F = 4 E* a³ / (3 R).
+template <typename T>
+T PointContactStiffness(const T& r_eff, const T& e_star) {
+  using std::sqrt;
+  return T(4.0) / T(3.0) * sqrt(r_eff) * e_star;
 }
 
 }  // namespace camopt::contact

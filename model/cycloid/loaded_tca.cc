@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "model/common/roots.h"
+#include "model/contact/hertz.h"
 
 namespace camopt::cycloid {
 
@@ -88,7 +89,7 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
     throw std::invalid_argument("Young's modulus must be > 0 and Poisson's ratio in (-1, 0.5)");
   if (options_.profile_cells < 2 || options_.axial_cells < 2)
     throw std::invalid_argument("the contact grid needs at least 2 x 2 cells");
-  e_star_ = material.CompositeModulus_MPa();
+  e_star_ = material.composite_modulus_MPa();
   SetCrowning(crowning);
 }
 
@@ -220,7 +221,8 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
         continue;
       }
       // Grid across the profile: a multiple of the Hertz half-width at this force.
-      const double b_hertz = std::sqrt(4.0 * force / (c.curvature_sum * kPi * drive_.face_width_mm * e_star_));
+      const double b_hertz =
+          contact::LineContactHalfWidth(force, drive_.face_width_mm, 1.0 / c.curvature_sum, e_star_);
       const double want = LadderAbove(options_.grid_half_width_factor * b_hertz);
       if (!c.has_grid) {
         auto it = memory_.find(c.g->roller);

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "model/common/material.h"
 #include "model/contact/half_space.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/tooth_profile.h"
@@ -30,14 +31,8 @@
 
 namespace camopt::cycloid {
 
-struct Material {
-  double youngs_modulus_MPa = 206000.0;
-  double poisson_ratio = 0.3;
-  /// E* of two bodies of this material: E / (2 (1 − ν²)).
-  double CompositeModulus_MPa() const {
-    return youngs_modulus_MPa / (2.0 * (1.0 - poisson_ratio * poisson_ratio));
-  }
-};
+/// Disc and roller material (both the same; E* from model/common/material.h).
+using Material = camopt::Material;
 
 struct LoadedOptions {
   int profile_cells = 40;  ///< p, cells across the contact (profile direction)

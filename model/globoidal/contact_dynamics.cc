@@ -24,9 +24,7 @@ RollerContact Contact(const DynamicsInput& in, int j, double theta) {
                             "by the roller at cam angle " + std::to_string(theta * 180 / kPi) +
                             " deg");
   const ContactMaterial& c = in.contact;
-  const double e_star = EffectiveModulus(c.cam_modulus_MPa, c.cam_poisson, c.roller_modulus_MPa,
-                                         c.roller_poisson);
-  const double k = 4.0 / 3.0 * std::sqrt(1.0 / inv_r) * e_star;  // eq. (11) with eq. (12)
+  const double k = contact::PointContactStiffness(1.0 / inv_r, c.composite_modulus_MPa());  // eqs. (11)–(12)
   return {k, p.swing_dir.dot(p.normal), p.pressure_angle};
 }
 

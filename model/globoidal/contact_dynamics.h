@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "model/common/scalar.h"
+#include "model/contact/hertz.h"
 #include "model/globoidal/globoidal.h"
 
 namespace camopt::globoidal {
@@ -32,18 +33,12 @@ T Step(const T& x, double x0, double h0, double x1, double h1) {
   return T(h0) + T(h1 - h0) * s * s * (T(3.0) - T(2.0) * s);
 }
 
-/// Eq. (13): effective modulus E* [MPa].
-template <typename T>
-T EffectiveModulus(const T& e1, const T& nu1, const T& e2, const T& nu2) {
-  return T(1.0) / ((T(1.0) - nu1 * nu1) / e1 + (T(1.0) - nu2 * nu2) / e2);
-}
-
 /// Eqs. (11)–(12): K = (4/3) √R E*, 1/R = 1/R₁ + 1/R₂ [N/mm^1.5]. R₂ may be negative (concave).
+/// E* (eq. 13) is camopt::CompositeModulus (model/common/material.h).
 template <typename T>
 T ContactStiffness(const T& r1, const T& r2, const T& e_star) {
-  using std::sqrt;
   const T r = T(1.0) / (T(1.0) / r1 + T(1.0) / r2);
-  return T(4.0) / T(3.0) * sqrt(r) * e_star;
+  return contact::PointContactStiffness(r, e_star);
 }
 
 /// Eq. (10) with the damping of eq. (14): F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ for δ > 0, never
@@ -64,6 +59,10 @@ struct ContactMaterial {
   double exponent = 1.5;             ///< e of eq. (10)
   double max_damping_Ns_per_mm = 10.0;  ///< C_max of eq. (14)
   double penetration_depth_mm = 0.01;   ///< d of eq. (14)
+  /// E* of cam against roller, eq. (13).
+  double composite_modulus_MPa() const {
+    return CompositeModulus(cam_modulus_MPa, cam_poisson, roller_modulus_MPa, roller_poisson);
+  }
 };
 
 struct DynamicsInput {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "model/common/material.h"
 #include "model/common/scalar.h"
 
 namespace camopt::lcr {
@@ -54,14 +55,8 @@ struct Reducer {
   }
 };
 
-/// Cam and roller material (both the same). E* from 1/E* = 2(1 − ν²)/E.
-struct Material {
-  double youngs_modulus_MPa = 206000.0;
-  double poisson_ratio = 0.3;
-  double composite_modulus_MPa() const {
-    return 1.0 / (2.0 * (1.0 - poisson_ratio * poisson_ratio) / youngs_modulus_MPa);
-  }
-};
+/// Cam and roller material (both the same; E* from model/common/material.h).
+using Material = camopt::Material;
 
 struct LoadCase {
   double output_torque_Nmm = 0.0;     // T_o, resisting the output's motion

@@ -35,7 +35,7 @@ namespace camopt::rigidity {
 
 /// Palmgren's constant 3.84e-5 mm·N^−0.9·mm^0.8 at its steel, E* = 207000/(2(1 − 0.3²)) MPa.
 inline double PalmgrenConstant() {
-  const double e_star_ref = 207000.0 / (2.0 * (1.0 - 0.09));
+  const double e_star_ref = Material{207000.0, 0.3}.composite_modulus_MPa();
   return 3.84e-5 * std::pow(e_star_ref, 0.9);
 }
 
