@@ -7,26 +7,20 @@
 // with t_ideal, t_friction the mean F_t e and |F_r| e per unit output torque from the LCR pipeline.
 // Residuals are weighted by the measurements' standard deviations, so (J^T J)^-1 is the parameter
 // covariance when those deviations are the measurement errors.
+#include "studies/lcr_friction_fit_study.h"
+
+#include <algorithm>
 #include <cmath>
 
 #include "model/lcr/cycle.h"
-#include "model/lcr/friction.h"
 #include "model/lcr/kinematics.h"
-#include "optimizers/ceres_fit.h"
+#include "objectives/problem.h"
 #include "studies/lcr_input.h"
-#include "studies/study.h"
+#include "studies/material_input.h"
 #include "studies/writers.h"
 
-namespace camopt::studies {
+namespace camopt::studies::lcr_friction_fit {
 namespace {
-
-struct Measurement {
-  double output_torque_Nm, input_torque_Nm, sd_Nm;
-};
-
-struct Parameter {
-  double initial, lower, upper;
-};
 
 Parameter ParseParameter(const Node& parent, const std::string& key, Parameter fallback) {
   if (!parent.Has(key)) return fallback;
@@ -44,95 +38,83 @@ Parameter ParseParameter(const Node& parent, const std::string& key, Parameter f
   return out;
 }
 
-void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
+bool AtBound(double x, const Parameter& p) { return x <= p.lower + 1e-12 || x >= p.upper - 1e-12; }
+
+}  // namespace
+
+Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "measurements", "parameters", "analysis"});
-  const lcr::Reducer<double> r = ParseReducer(root["reducer"]);
+  Study st;
+  st.name = root.StringOr("name", "");
+  st.reducer = ParseReducer(root["reducer"]);
   if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  const lcr::Material material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
-  std::vector<Measurement> data;
+  st.material = root.Has("material") ? ParseMaterial(root["material"]) : Material{};
   const Node meas = root["measurements"];
   for (const Node& m : meas.Elements()) {
     m.CheckKnownFields({"output_torque_Nm", "input_torque_Nm", "input_torque_sd_Nm"});
-    data.push_back({m["output_torque_Nm"].Positive(), m["input_torque_Nm"].Positive(),
-                    m["input_torque_sd_Nm"].Positive()});
+    st.measurements.push_back({m["output_torque_Nm"].Positive(), m["input_torque_Nm"].Positive(),
+                               m["input_torque_sd_Nm"].Positive()});
   }
-  if (data.size() < 3) meas.Fail("at least 3 measurements (2 parameters are fitted)");
+  if (st.measurements.size() < 3) meas.Fail("at least 3 measurements (2 parameters are fitted)");
   if (root.Has("analysis")) root["analysis"].CheckKnownFields({"angle_steps"});
-  const int steps = root.Has("analysis") ? root["analysis"].IntegerOr("angle_steps", 12, 3600) : 3600;
-  Parameter mu{lcr::kPaperFrictionCoefficient, 0.0, 1.0}, drag{0.0, 0.0, 10.0};
+  st.angle_steps = root.Has("analysis") ? root["analysis"].IntegerOr("angle_steps", 12, 3600) : 3600;
   if (root.Has("parameters")) {
     root["parameters"].CheckKnownFields({"friction_coefficient", "drag_torque_Nm"});
-    mu = ParseParameter(root["parameters"], "friction_coefficient", mu);
-    drag = ParseParameter(root["parameters"], "drag_torque_Nm", drag);
+    st.friction_coefficient = ParseParameter(root["parameters"], "friction_coefficient", st.friction_coefficient);
+    st.drag_torque_Nm = ParseParameter(root["parameters"], "drag_torque_Nm", st.drag_torque_Nm);
   }
+  return st;
+}
 
+Result Run(const Study& st, const RunContext& ctx) {
+  const lcr::Reducer<double>& r = st.reducer;
+  const std::vector<Measurement>& data = st.measurements;
   // Pipeline: loads on the eccentric per unit output torque (1 N·mm), no friction.
   lcr::CycleSeries series;
   try {
     Progress progress("lcr_friction_fit", ctx.quiet);
-    series = lcr::AnalyzeCycle(r, material, {1.0, 0.0, 0.0}, steps, {true, false, true},
+    series = lcr::AnalyzeCycle(r, st.material, {1.0, 0.0, 0.0}, st.angle_steps, {true, false, true},
                                [&](double f) { progress.Update(f); });
   } catch (const std::domain_error& e) {
     throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
   }
-  const lcr::CycleInputTorque unit =
+  Result res;
+  res.per_output_torque =
       lcr::MeanInputTorquePerOutputTorque(series.tangential_force_N, series.radial_force_N, r.eccentricity);
-  const double ratio = std::abs(lcr::SpeedReductionRatio(r));
+  const lcr::CycleInputTorque unit = res.per_output_torque;
+  res.speed_ratio = lcr::SpeedReductionRatio(r);
+  const double ratio = std::abs(res.speed_ratio);
 
+  const Parameter& mu = st.friction_coefficient;
+  const Parameter& drag = st.drag_torque_Nm;
   optimizers::LeastSquaresProblem p;
   p.variables = {{"friction_coefficient", mu.lower, mu.upper, mu.initial, 0.1},
                  {"drag_torque_Nm", drag.lower, drag.upper, drag.initial, 0.1}};
   const int m = static_cast<int>(data.size());
   p.evaluator = objectives::MakeEvaluator<2>(
-      2, {{"weighted_residuals", 0, m}}, [data, unit](auto x, auto res) {
+      2, {{"weighted_residuals", 0, m}}, [data, unit](auto x, auto residuals) {
         using T = std::decay_t<decltype(x[0])>;
         for (size_t i = 0; i < data.size(); ++i) {
           const T model = lcr::MeanInputTorque(unit, T(data[i].output_torque_Nm), x[0], x[1]);
-          res[i] = (model - T(data[i].input_torque_Nm)) / T(data[i].sd_Nm);
+          residuals[i] = (model - T(data[i].input_torque_Nm)) / T(data[i].sd_Nm);
         }
       });
   p.residuals = "weighted_residuals";
-  const optimizers::FitResult fit = optimizers::SolveLeastSquares(p);
+  res.fit = optimizers::SolveLeastSquares(p);
+  const optimizers::FitResult& fit = res.fit;
   if (fit.x.empty())
     throw std::runtime_error("friction fit failed: " + fit.message);
-
-  nlohmann::json res;
-  res["study"] = "lcr_friction_fit";
-  res["name"] = root.StringOr("name", "");
-  res["status"] = optimizers::ToString(fit.status);
-  res["model"] = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
-  res["speed_ratio"] = lcr::SpeedReductionRatio(r);
-  res["ideal_input_torque_per_output_torque"] = unit.ideal;
-  res["friction_input_torque_per_output_torque_and_mu"] = unit.friction;
-  const char* names[2] = {"friction_coefficient", "drag_torque_Nm"};
-  for (int i = 0; i < 2; ++i) {
-    nlohmann::json j;
-    j["value"] = fit.x[i];
-    if (!fit.standard_errors.empty()) j["standard_error"] = fit.standard_errors[i];
-    const auto& v = p.variables[i];
-    j["at_bound"] = fit.x[i] <= v.lower + 1e-12 || fit.x[i] >= v.upper - 1e-12;
-    res["parameters"][names[i]] = j;
-  }
-  if (!fit.covariance.empty()) {
-    res["covariance"] = {{fit.covariance[0], fit.covariance[1]}, {fit.covariance[2], fit.covariance[3]}};
-    res["correlation"] = fit.covariance[1] / std::sqrt(fit.covariance[0] * fit.covariance[3]);
-  } else {
-    res["covariance"] = nullptr;
-    res["notes"] = {"the Jacobian is rank deficient at the fit: no covariance"};
-  }
-  const double chi2 = 2 * fit.cost;
-  const int dof = m - 2;
-  res["chi_square"] = chi2;
-  res["degrees_of_freedom"] = dof;
-  res["reduced_chi_square"] = dof > 0 ? nlohmann::json(chi2 / dof) : nlohmann::json(nullptr);
-  nlohmann::json rows = nlohmann::json::array();
-  Table t;
-  std::vector<double> to, tin, tfit, resid, eta_meas, eta_fit;
+  res.friction_coefficient_at_bound = AtBound(fit.x[0], mu);
+  res.drag_torque_at_bound = AtBound(fit.x[1], drag);
+  if (!fit.covariance.empty())
+    res.correlation = fit.covariance[1] / std::sqrt(fit.covariance[0] * fit.covariance[3]);
+  res.chi_square = 2 * fit.cost;
+  res.degrees_of_freedom = m - 2;
   for (int i = 0; i < m; ++i) {
-    const double model = lcr::MeanInputTorque(unit, data[i].output_torque_Nm, fit.x[0], fit.x[1]);
-    const double paper_model =
+    Row row;
+    row.fitted_input_torque_Nm = lcr::MeanInputTorque(unit, data[i].output_torque_Nm, fit.x[0], fit.x[1]);
+    row.paper_input_torque_Nm =
         lcr::MeanInputTorque(unit, data[i].output_torque_Nm, lcr::kPaperFrictionCoefficient, 0.0);
-    nlohmann::json row_sd = nullptr;
     if (!fit.covariance.empty()) {
       // Standard deviation of the fitted torque: sqrt(gᵀ C g), g = ∂T_in/∂(μ, T_drag) by AD.
       using J2 = ceres::Jet<double, 2>;
@@ -140,44 +122,104 @@ void RunLcrFrictionFit(const Node& root, const RunContext& ctx, Outputs& out) {
                                            J2(fit.x[1], 1));
       const double g0 = t_in.v[0], g1 = t_in.v[1];
       const auto& c = fit.covariance;
-      row_sd = std::sqrt(g0 * g0 * c[0] + 2 * g0 * g1 * c[1] + g1 * g1 * c[3]);
+      row.fitted_input_torque_sd_Nm = std::sqrt(g0 * g0 * c[0] + 2 * g0 * g1 * c[1] + g1 * g1 * c[3]);
     }
-    rows.push_back({{"output_torque_Nm", data[i].output_torque_Nm},
-                    {"fitted_input_torque_sd_Nm", row_sd},
-                    {"measured_input_torque_Nm", data[i].input_torque_Nm},
-                    {"measured_sd_Nm", data[i].sd_Nm},
-                    {"fitted_input_torque_Nm", model},
-                    {"residual_Nm", model - data[i].input_torque_Nm},
-                    {"weighted_residual", fit.residuals[i]},
-                    {"fitted_efficiency", lcr::Efficiency(data[i].output_torque_Nm, model, ratio)},
-                    {"measured_efficiency", lcr::Efficiency(data[i].output_torque_Nm, data[i].input_torque_Nm, ratio)},
-                    {"input_torque_with_mu_0.05_no_drag_Nm", paper_model}});
-    to.push_back(data[i].output_torque_Nm);
-    tin.push_back(data[i].input_torque_Nm);
-    tfit.push_back(model);
-    resid.push_back(model - data[i].input_torque_Nm);
+    row.residual_Nm = row.fitted_input_torque_Nm - data[i].input_torque_Nm;
+    row.weighted_residual = fit.residuals[i];
+    row.fitted_efficiency = lcr::Efficiency(data[i].output_torque_Nm, row.fitted_input_torque_Nm, ratio);
+    row.measured_efficiency = lcr::Efficiency(data[i].output_torque_Nm, data[i].input_torque_Nm, ratio);
+    res.rows.push_back(row);
   }
-  res["measurements"] = rows;
-  res["solver"] = {{"message", fit.message}, {"iterations", fit.iterations},
-                   {"residual_evaluations", fit.residual_evaluations}};
-  out.AddJson("result.json", res);
+  double tmax = 0;
+  for (const Measurement& d : data) tmax = std::max(tmax, d.output_torque_Nm);
+  tmax *= 1.1;
+  for (int i = 0; i <= 20; ++i) {
+    res.line_output_torque_Nm.push_back(tmax * i / 20);
+    res.line_input_torque_Nm.push_back(
+        lcr::MeanInputTorque(unit, res.line_output_torque_Nm.back(), fit.x[0], fit.x[1]));
+  }
+  return res;
+}
+
+nlohmann::json ToJson(const Study& st, const Result& res) {
+  const optimizers::FitResult& fit = res.fit;
+  nlohmann::json j;
+  j["study"] = "lcr_friction_fit";
+  j["name"] = st.name;
+  j["status"] = optimizers::ToString(fit.status);
+  j["model"] = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
+  j["speed_ratio"] = res.speed_ratio;
+  j["ideal_input_torque_per_output_torque"] = res.per_output_torque.ideal;
+  j["friction_input_torque_per_output_torque_and_mu"] = res.per_output_torque.friction;
+  const char* names[2] = {"friction_coefficient", "drag_torque_Nm"};
+  const bool at_bound[2] = {res.friction_coefficient_at_bound, res.drag_torque_at_bound};
+  for (int i = 0; i < 2; ++i) {
+    nlohmann::json p;
+    p["value"] = fit.x[i];
+    if (!fit.standard_errors.empty()) p["standard_error"] = fit.standard_errors[i];
+    p["at_bound"] = at_bound[i];
+    j["parameters"][names[i]] = p;
+  }
+  if (!fit.covariance.empty()) {
+    j["covariance"] = {{fit.covariance[0], fit.covariance[1]}, {fit.covariance[2], fit.covariance[3]}};
+    j["correlation"] = *res.correlation;
+  } else {
+    j["covariance"] = nullptr;
+    j["notes"] = {"the Jacobian is rank deficient at the fit: no covariance"};
+  }
+  const int dof = res.degrees_of_freedom;
+  j["chi_square"] = res.chi_square;
+  j["degrees_of_freedom"] = dof;
+  j["reduced_chi_square"] = dof > 0 ? nlohmann::json(res.chi_square / dof) : nlohmann::json(nullptr);
+  nlohmann::json rows = nlohmann::json::array();
+  for (size_t i = 0; i < res.rows.size(); ++i) {
+    const Row& row = res.rows[i];
+    const Measurement& d = st.measurements[i];
+    rows.push_back({{"output_torque_Nm", d.output_torque_Nm},
+                    {"fitted_input_torque_sd_Nm", row.fitted_input_torque_sd_Nm
+                                                      ? nlohmann::json(*row.fitted_input_torque_sd_Nm)
+                                                      : nlohmann::json(nullptr)},
+                    {"measured_input_torque_Nm", d.input_torque_Nm},
+                    {"measured_sd_Nm", d.sd_Nm},
+                    {"fitted_input_torque_Nm", row.fitted_input_torque_Nm},
+                    {"residual_Nm", row.residual_Nm},
+                    {"weighted_residual", row.weighted_residual},
+                    {"fitted_efficiency", row.fitted_efficiency},
+                    {"measured_efficiency", row.measured_efficiency},
+                    {"input_torque_with_mu_0.05_no_drag_Nm", row.paper_input_torque_Nm}});
+  }
+  j["measurements"] = rows;
+  j["solver"] = {{"message", fit.message}, {"iterations", fit.iterations},
+                 {"residual_evaluations", fit.residual_evaluations}};
+  return j;
+}
+
+void Write(const Study& st, const Result& res, Outputs& out) {
+  out.AddJson("result.json", ToJson(st, res));
+  std::vector<double> to, tin, tfit, resid;
+  for (size_t i = 0; i < res.rows.size(); ++i) {
+    to.push_back(st.measurements[i].output_torque_Nm);
+    tin.push_back(st.measurements[i].input_torque_Nm);
+    tfit.push_back(res.rows[i].fitted_input_torque_Nm);
+    resid.push_back(res.rows[i].residual_Nm);
+  }
+  Table t;
   t.Add("output_torque_Nm", to);
   t.Add("measured_input_torque_Nm", tin);
   t.Add("fitted_input_torque_Nm", tfit);
   t.Add("residual_Nm", resid);
   out.Add("fit.csv", ToCsv(t));
-  std::vector<double> line_x, line_y;
-  const double tmax = *std::max_element(to.begin(), to.end()) * 1.1;
-  for (int i = 0; i <= 20; ++i) {
-    line_x.push_back(tmax * i / 20);
-    line_y.push_back(lcr::MeanInputTorque(unit, line_x.back(), fit.x[0], fit.x[1]));
-  }
-  out.Add("fit.svg", SvgLinePlot({{"fitted model", line_x, line_y}, {"measured", to, tin}},
+  out.Add("fit.svg", SvgLinePlot({{"fitted model", res.line_output_torque_Nm, res.line_input_torque_Nm},
+                                  {"measured", to, tin}},
                                  {"Input torque against output torque", "output torque [N·m]",
                                   "input torque [N·m]"}));
 }
 
-CAMOPT_REGISTER_STUDY("lcr_friction_fit", RunLcrFrictionFit);
-
+namespace {
+CAMOPT_REGISTER_STUDY("lcr_friction_fit", [](const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study study = Parse(root);
+  Write(study, Run(study, ctx), out);
+});
 }  // namespace
-}  // namespace camopt::studies
+
+}  // namespace camopt::studies::lcr_friction_fit

@@ -1,12 +1,14 @@
-// The lcr_friction_fit study: recovery of known friction from synthetic data made by a different
-// study (lcr_analysis), the Table 4 fit with its covariance against the linear-regression closed
-// form, and bad input.
+// The lcr_friction_fit study: the friction law, recovery of known friction from synthetic data
+// made by a different study (lcr_analysis), the Table 4 fit with its covariance against the
+// linear-regression closed form (C++ entry points), and bad input (CLI).
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "model/lcr/friction.h"
+#include "studies/lcr_analysis_study.h"
+#include "studies/lcr_friction_fit_study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -47,6 +49,13 @@ TEST(LcrFrictionLaw, HandComputedValuesAndGradient) {
       std::array<double, 2>{0.2, 0.03});
 }
 
+namespace fit = studies::lcr_friction_fit;
+
+fit::Result RunFit(const json& study) {
+  const studies::Node root(&study, "fit.json", "");
+  return fit::Run(fit::Parse(root), {"fit.json", true});
+}
+
 // Measurements made by lcr_analysis with μ = 0.12 plus a drag of 0.02 N·m: the fit returns both.
 TEST(LcrFrictionFit, RecoversFrictionFromLcrAnalysisData) {
   const json fit_study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
@@ -55,23 +64,20 @@ TEST(LcrFrictionFit, RecoversFrictionFromLcrAnalysisData) {
   analysis["analysis"] = {{"angle_steps", 3600}, {"evaluate", {"forces", "efficiency"}}};
   json study = fit_study;
   study["measurements"] = json::array();
-  int code = -1;
-  std::string err;
   for (double to : {5.0, 15.0, 30.0}) {
     analysis["load"]["output_torque_Nm"] = to;
-    const json a = RunJson(analysis, "friction-synthetic-analysis", &code, &err);
-    ASSERT_EQ(code, 0) << err;
-    const double tin = a["input_torque_Nm"]["mean"].get<double>() + 0.02;
+    const studies::Node root(&analysis, "analysis.json", "");
+    const auto a = studies::lcr_analysis::Run(studies::lcr_analysis::Parse(root), {"analysis.json", true});
+    const double tin = a.input_torque_mean_Nm + 0.02;
     study["measurements"].push_back({{"output_torque_Nm", to}, {"input_torque_Nm", tin}, {"input_torque_sd_Nm", 0.005}});
   }
-  const json res = RunJson(study, "friction-synthetic-fit", &code, &err);
-  ASSERT_EQ(code, 0) << err;
-  EXPECT_EQ(res["status"], "converged");
-  EXPECT_NEAR(res["parameters"]["friction_coefficient"]["value"].get<double>(), 0.12, 1e-6);
-  EXPECT_NEAR(res["parameters"]["drag_torque_Nm"]["value"].get<double>(), 0.02, 1e-6);
-  EXPECT_LT(res["chi_square"].get<double>(), 1e-8);
+  const fit::Result res = RunFit(study);
+  EXPECT_EQ(res.fit.status, optimizers::SolverStatus::kConverged);
+  EXPECT_NEAR(res.fit.x[0], 0.12, 1e-6);
+  EXPECT_NEAR(res.fit.x[1], 0.02, 1e-6);
+  EXPECT_LT(res.chi_square, 1e-8);
   // Without friction the mean input torque is the ideal T_o/|r_i| (power balance).
-  EXPECT_NEAR(res["ideal_input_torque_per_output_torque"].get<double>(), 1.0 / 90.0, 1e-9);
+  EXPECT_NEAR(res.per_output_torque.ideal, 1.0 / 90.0, 1e-9);
 }
 
 // Table 4 of the paper: the fit is inside its bounds, every measurement within 3 SD, and the
@@ -79,17 +85,14 @@ TEST(LcrFrictionFit, RecoversFrictionFromLcrAnalysisData) {
 // T_in − T_o t_ideal = T_drag + μ (T_o t_friction).
 TEST(LcrFrictionFit, Table4FitAndItsCovariance) {
   const json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
-  int code = -1;
-  std::string err;
-  const json res = RunJson(study, "friction-table4", &code, &err);
-  ASSERT_EQ(code, 0) << err;
-  EXPECT_EQ(res["status"], "converged");
-  for (const char* p : {"friction_coefficient", "drag_torque_Nm"}) {
-    EXPECT_FALSE(res["parameters"][p]["at_bound"].get<bool>()) << p;
-    EXPECT_GT(res["parameters"][p]["standard_error"].get<double>(), 0.0) << p;
-  }
-  for (const json& m : res["measurements"]) EXPECT_LT(std::abs(m["weighted_residual"].get<double>()), 3.0);
-  const double tf = res["friction_input_torque_per_output_torque_and_mu"];
+  const fit::Result res = RunFit(study);
+  EXPECT_EQ(res.fit.status, optimizers::SolverStatus::kConverged);
+  EXPECT_FALSE(res.friction_coefficient_at_bound);
+  EXPECT_FALSE(res.drag_torque_at_bound);
+  ASSERT_EQ(res.fit.standard_errors.size(), 2u);
+  for (int p = 0; p < 2; ++p) EXPECT_GT(res.fit.standard_errors[p], 0.0) << p;
+  for (const fit::Row& m : res.rows) EXPECT_LT(std::abs(m.weighted_residual), 3.0);
+  const double tf = res.per_output_torque.friction;
   double s00 = 0, s01 = 0, s11 = 0;  // X^T W X with columns (T_o t_friction, 1)
   for (const json& m : study["measurements"]) {
     const double w = 1 / std::pow(m["input_torque_sd_Nm"].get<double>(), 2);
@@ -97,15 +100,18 @@ TEST(LcrFrictionFit, Table4FitAndItsCovariance) {
     s00 += w * x * x, s01 += w * x, s11 += w;
   }
   const double det = s00 * s11 - s01 * s01;
-  const json& cov = res["covariance"];
-  EXPECT_NEAR(cov[0][0].get<double>(), s11 / det, 1e-6 * s11 / det);
-  EXPECT_NEAR(cov[0][1].get<double>(), -s01 / det, 1e-6 * std::abs(s01 / det));
-  EXPECT_NEAR(cov[1][1].get<double>(), s00 / det, 1e-6 * s00 / det);
+  const std::vector<double>& cov = res.fit.covariance;  // row-major 2 x 2
+  ASSERT_EQ(cov.size(), 4u);
+  EXPECT_NEAR(cov[0], s11 / det, 1e-6 * s11 / det);
+  EXPECT_NEAR(cov[1], -s01 / det, 1e-6 * std::abs(s01 / det));
+  EXPECT_NEAR(cov[3], s00 / det, 1e-6 * s00 / det);
   // Prediction uncertainty at each load: sqrt(gᵀ C g) with g = (T_o t_friction, 1).
-  for (const json& m : res["measurements"]) {
-    const double x = m["output_torque_Nm"].get<double>() * tf;
+  ASSERT_EQ(res.rows.size(), study["measurements"].size());
+  for (size_t i = 0; i < res.rows.size(); ++i) {
+    const double x = study["measurements"][i]["output_torque_Nm"].get<double>() * tf;
     const double var = (x * x * s11 - 2 * x * s01 + s00) / det;
-    EXPECT_NEAR(m["fitted_input_torque_sd_Nm"].get<double>(), std::sqrt(var), 1e-6 * std::sqrt(var));
+    ASSERT_TRUE(res.rows[i].fitted_input_torque_sd_Nm.has_value());
+    EXPECT_NEAR(*res.rows[i].fitted_input_torque_sd_Nm, std::sqrt(var), 1e-6 * std::sqrt(var));
   }
 }
 

@@ -101,6 +101,20 @@ T MinConvexPitchRadius(const CamSide<T>& side, const T& eccentricity) {
   return T(1.0) / MaxPitchCurvature(side, eccentricity);
 }
 
+/// Smallest convex radius of the curve offset by `offset` into the cam from the pitch curve,
+/// 1/κ_max − offset [mm]: the cam profile for offset = r_r, the cutter-centre path for
+/// offset = r_r − r_t.
+template <typename T>
+T MinConvexOffsetRadius(const CamSide<T>& side, const T& eccentricity, const T& offset) {
+  return MinConvexPitchRadius(side, eccentricity) - offset;
+}
+
+/// Distance of the pitch point from the input axis, e·n/(n − m) [mm].
+template <typename T>
+T PitchPointRadius(const CamSide<T>& side, const T& eccentricity) {
+  return eccentricity * T(side.pitch_factor());
+}
+
 /// Undercut margin 1/κ_max − r_r [mm]: negative means the roller (and any cutter with d_t ≤ d_r,
 /// whose path is offset by r_r − r_t and whose radius is r_t) undercuts the cam.
 template <typename T>
