@@ -51,14 +51,7 @@ void ExpectEvaluatorJacobianMatches(const objectives::Evaluator& ev, std::vector
   EXPECT_EQ(checked, n * m);
 }
 
-LcrSizingSpec LcrIISpec(LcrConstraintForm form) {
-  LcrSizingSpec s;
-  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
-  return s;
-}
+LcrSizingSpec LcrIISpec(LcrConstraintForm form) { return testing::LcrIISizingSpec(form); }
 
 // LCR II of Table 2 as a variable vector (e, r_dA, r_dB, d_r, R).
 std::vector<double> LcrIIVariables() { return {2.0, 37.0, 42.0, 12.0, 48.0}; }

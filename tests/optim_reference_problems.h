@@ -7,6 +7,7 @@
 #include "model/common/roots.h"
 #include "objectives/lcr_sizing.h"
 #include "objectives/problem.h"
+#include "tests/reference_designs.h"
 
 namespace camopt::testing {
 
@@ -70,18 +71,6 @@ inline std::pair<double, double> RosenbrockOnDiskOptimum() {
                                                        best_t - 2 * kPi / 20000, best_t + 2 * kPi / 20000, 200);
   const double t = 0.5 * (b.lo + b.hi);
   return {t, f(t)};
-}
-
-/// The LCR sizing problem of the paper's LCR II combination (12/13 lobes/rollers on the input
-/// cam, 14/15 on the output cam, ratio −90) at 80 N·m under the limits of the −90 study.
-inline objectives::LcrSizingSpec LcrIISizingSpec(
-    objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate) {
-  objectives::LcrSizingSpec s;
-  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
-  return s;
 }
 
 }  // namespace camopt::testing
