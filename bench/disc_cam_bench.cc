@@ -6,25 +6,18 @@
 #include "model/disc_cam/disc_cam.h"
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
+#include "tests/reference_designs.h"
 
 namespace {
 
 using namespace camopt;
 using namespace camopt::disc_cam;
 using motion::MotionLaw;
-constexpr double kDeg = kPi / 180.0;
 
+// The paper's example (tests/reference_designs.h).
 template <typename T>
 DiscCamTpl<T> PaperCam() {
-  DiscCamTpl<T> cam;
-  cam.base_radius = T(40.0);
-  cam.roller_radius = T(10.0);
-  cam.offset = T(12.0);
-  cam.motion = motion::MotionProgram<T>({{MotionLaw::kCycloidal, T(24.0), T(120 * kDeg)},
-                                         {MotionLaw::kDwell, T(0.0), T(50 * kDeg)},
-                                         {MotionLaw::kCycloidal, T(-24.0), T(120 * kDeg)},
-                                         {MotionLaw::kDwell, T(0.0), T(70 * kDeg)}});
-  return cam;
+  return camopt::testing::DiscCamPaperExample<T>();
 }
 
 void BM_MotionLawModifiedSine(benchmark::State& state) {

@@ -1,55 +1,78 @@
-// Study kind "disc_cam": a disc cam with an offset translating or an oscillating roller follower
-// (Rzine et al., NOTES.md §2). Profile, pressure and shift angles, curvature and undercut over a
-// cam revolution; the mechanical error from the tolerances (worst case and RMS, eqs. 31–32); a
-// Monte-Carlo check of the linearised error against the exact follower motion.
-// Outputs: result.json, series.csv, SVAJ / angle / error plots (SVG), profile.svg, profile.dxf.
+#include "studies/disc_cam_study.h"
+
 #include <algorithm>
 #include <cmath>
-#include <optional>
-#include <set>
-#include <sstream>
 
-#include "model/disc_cam/disc_cam.h"
-#include "model/disc_cam/exact_motion.h"
-#include "model/disc_cam/mechanical_error.h"
-#include "model/motion/motion_program.h"
-#include "studies/study.h"
+#include "model/disc_cam/check.h"
+#include "studies/format.h"
+#include "studies/motion_input.h"
 #include "studies/writers.h"
 
-namespace camopt::studies {
+namespace camopt::studies::disc_cam {
 namespace {
 
-using disc_cam::CamPoint;
-using disc_cam::DiscCam;
-using disc_cam::FollowerType;
-using motion::MotionLaw;
+namespace dc = camopt::disc_cam;
+using dc::CamPoint;
+using dc::DiscCam;
+using dc::FollowerType;
 
 constexpr double kDeg = kPi / 180.0;
 
-struct McRequest {
-  bool enabled = true;
-  disc_cam::MonteCarloOptions options;
-};
-
-struct DiscCamStudy {
-  std::string name;
-  DiscCam cam;
-  disc_cam::Deviations<double> tolerances;  // mm
-  int angle_steps = 3600;
-  McRequest mc;
-};
-
-std::string Format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
+// The JSON path and message of a design issue (model units → the file's units).
+[[noreturn]] void FailOn(const dc::DesignIssue& issue, const DiscCam& cam, const Node& root) {
+  using dc::IssueKind;
+  const bool osc = cam.follower == FollowerType::kOscillatingRoller;
+  const double deg = issue.cam_angle_rad / kDeg;
+  switch (issue.kind) {
+    case IssueKind::kOffsetTooLarge:
+      root["follower"]["offset_mm"].FailWith(
+          "the offset " + Format(issue.value) +
+          " mm must be smaller than base circle + roller radius (" + Format(issue.upper) + " mm)");
+    case IssueKind::kArmCannotReach:
+      root["follower"]["arm_length_mm"].FailWith(
+          "the arm cannot reach the base circle: need |pivot distance − arm length| < base circle "
+          "+ roller radius < pivot distance + arm length (" + Format(issue.lower) + " < " +
+          Format(issue.value) + " < " + Format(issue.upper) + ")");
+    case IssueKind::kInsideBaseCircle:
+      root["motion"].FailWith("the follower goes inside the base circle at cam angle " +
+                              Format(deg) + " deg (S = " +
+                              Format(osc ? issue.value / kDeg : issue.value) +
+                              (osc ? " deg)" : " mm)"));
+    case IssueKind::kArmOutOfRange:
+      root["motion"].FailWith("the follower arm leaves (0, 180) deg from the cam centre line at "
+                              "cam angle " + Format(deg) + " deg");
+    case IssueKind::kJams:
+      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
+                              Format(issue.value / kDeg) + " deg at cam angle " + Format(deg) +
+                              " deg (the follower would jam)");
+  }
+  root.FailWith("unknown design issue");
 }
 
-DiscCamStudy Parse(const Node& root) {
+// Cam-angle intervals [deg] where flag is set, on a uniform grid of n points over 360°.
+std::vector<std::pair<double, double>> Intervals(const std::vector<bool>& flag) {
+  std::vector<std::pair<double, double>> out;
+  const size_t n = flag.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (!flag[i] || (i > 0 && flag[i - 1])) continue;
+    size_t j = i;
+    while (j + 1 < n && flag[j + 1]) ++j;
+    out.push_back({360.0 * i / n, 360.0 * j / n});
+  }
+  return out;
+}
+
+nlohmann::json AtAngleOrNull(const std::optional<AtAngle>& x, bool angle) {
+  if (!x) return nlohmann::json();
+  return angle ? nlohmann::json(x->cam_angle_deg) : nlohmann::json(x->value);
+}
+
+}  // namespace
+
+Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
                          "tolerances", "analysis"});
-  DiscCamStudy s;
+  Study s;
   s.name = root.StringOr("name", "disc cam");
   DiscCam& cam = s.cam;
 
@@ -69,59 +92,22 @@ DiscCamStudy Parse(const Node& root) {
   }
   cam.roller_radius = follower["roller_radius_mm"].Positive();
   cam.base_radius = root["base_circle_radius_mm"].Positive();
-  const double r0 = cam.base_radius + cam.roller_radius;
-  if (cam.follower == FollowerType::kTranslatingRoller && !(std::abs(cam.offset) < r0))
-    follower["offset_mm"].FailWith("the offset " + Format(cam.offset) +
-                                   " mm must be smaller than base circle + roller radius (" +
-                                   Format(r0) + " mm)");
-  if (cam.follower == FollowerType::kOscillatingRoller) {
-    const double f = cam.pivot_distance, l = cam.arm_length;
-    if (!(r0 > std::abs(f - l) && r0 < f + l))
-      follower["arm_length_mm"].FailWith(
-          "the arm cannot reach the base circle: need |pivot distance − arm length| < base circle "
-          "+ roller radius < pivot distance + arm length (" + Format(std::abs(f - l)) + " < " +
-          Format(r0) + " < " + Format(f + l) + ")");
-  }
+  for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
 
   // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
   const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
-  const std::string rise_key = oscillating ? "rise_deg" : "rise_mm";
-  const std::string wrong_key = oscillating ? "rise_mm" : "rise_deg";
-  const Node motion_node = root["motion"];
-  std::vector<motion::MotionSegment<double>> segments;
-  std::string laws;
-  for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
-  for (const Node& seg : motion_node.Elements()) {
-    seg.CheckKnownFields({"law", rise_key, wrong_key, "cam_angle_deg"});
-    if (seg.Has(wrong_key))
-      seg[wrong_key].FailWith(std::string("a ") +
-                              (oscillating ? "oscillating follower's rise is an angle: use rise_deg"
-                                           : "translating follower's rise is a length: use rise_mm"));
-    const auto law = motion::LawFromName(seg["law"].String());
-    if (!law) seg["law"].Fail("a motion law (" + laws + ")");
-    motion::MotionSegment<double> m;
-    m.law = *law;
-    m.duration = seg["cam_angle_deg"].Positive() * kDeg;
-    if (*law == MotionLaw::kDwell) {
-      if (seg.Has(rise_key) && seg[rise_key].Number() != 0.0)
-        seg[rise_key].FailWith("a dwell has no rise");
-    } else {
-      m.rise = seg[rise_key].Number();
-      if (m.rise == 0.0) seg[rise_key].Fail("a non-zero rise (use a dwell for no motion)");
-      if (oscillating) m.rise *= kDeg;
-    }
-    segments.push_back(m);
+  MotionInputSpec spec;
+  spec.subject = "follower";
+  if (oscillating) {
+    spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg";
+    spec.misplaced_key = "rise_mm";
+    spec.misplaced_hint = "a oscillating follower's rise is an angle: use rise_deg";
+  } else {
+    spec.rise_key = "rise_mm", spec.rise_scale = 1.0, spec.unit = "mm";
+    spec.misplaced_key = "rise_deg";
+    spec.misplaced_hint = "a translating follower's rise is a length: use rise_mm";
   }
-  cam.motion = motion::MotionProgram<double>(segments);
-  if (const auto issue = motion::CheckProgram(cam.motion, 2 * kPi, /*must_return=*/true, 1e-6)) {
-    if (issue->segment < 0 && issue->message.find("does not return") != std::string::npos)
-      motion_node.FailWith("the follower does not return: rises sum to " +
-                           Format(cam.motion.NetRise() / (oscillating ? kDeg : 1.0)) +
-                           (oscillating ? " deg" : " mm") + ", expected 0");
-    if (issue->segment < 0) motion_node.FailWith(issue->message);
-    const std::string field = issue->field == "rise" ? rise_key : issue->field;
-    motion_node[issue->segment][field].FailWith(issue->message);
-  }
+  cam.motion = ParseMotionProgram(root["motion"], spec);
 
   if (root.Has("tolerances")) {
     const Node t = root["tolerances"];
@@ -130,6 +116,7 @@ DiscCamStudy Parse(const Node& root) {
     s.tolerances.roller = t.NonNegativeOr("roller_radius_um", 0.0) * 1e-3;
     s.tolerances.normal = t.NonNegativeOr("profile_normal_um", 0.0) * 1e-3;
   }
+  dc::MonteCarloOptions& mc = s.monte_carlo_options;
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
     a.CheckKnownFields({"angle_steps", "monte_carlo"});
@@ -138,82 +125,47 @@ DiscCamStudy Parse(const Node& root) {
     if (a.Has("monte_carlo")) {
       const Node m = a["monte_carlo"];
       if (m.json().is_boolean()) {
-        s.mc.enabled = m.Bool();
+        s.monte_carlo = m.Bool();
       } else {
         m.CheckKnownFields({"samples", "angle_steps", "seed", "scales"});
-        s.mc.options.samples = m.IntegerOr("samples", 1, s.mc.options.samples);
-        s.mc.options.angle_steps = m.IntegerOr("angle_steps", 36, s.mc.options.angle_steps);
-        s.mc.options.seed = static_cast<uint64_t>(m.IntegerOr("seed", 0, 1));
+        mc.samples = m.IntegerOr("samples", 1, mc.samples);
+        mc.angle_steps = m.IntegerOr("angle_steps", 36, mc.angle_steps);
+        mc.seed = static_cast<uint64_t>(m.IntegerOr("seed", 0, 1));
         if (m.Has("scales")) {
-          s.mc.options.scales.clear();
-          for (const Node& k : m["scales"].Elements()) s.mc.options.scales.push_back(k.Positive());
-          if (s.mc.options.scales.empty()) m["scales"].Fail("a non-empty array of numbers > 0");
+          mc.scales.clear();
+          for (const Node& k : m["scales"].Elements()) mc.scales.push_back(k.Positive());
+          if (mc.scales.empty()) m["scales"].Fail("a non-empty array of numbers > 0");
         }
-        if (double(s.mc.options.samples) * s.mc.options.angle_steps * s.mc.options.scales.size() >
-            1e8)
+        if (double(mc.samples) * mc.angle_steps * mc.scales.size() > 1e8)
           m.FailWith("samples × angle_steps × scales must stay below 1e8");
       }
     }
   }
   if (s.tolerances.radial == 0 && s.tolerances.roller == 0 && s.tolerances.normal == 0)
-    s.mc.enabled = false;
+    s.monte_carlo = false;
+  // Feasibility over the cycle, on the analysis grid.
+  if (const auto issues = dc::CheckDesign(cam, s.angle_steps); !issues.empty())
+    FailOn(issues.front(), cam, root);
   return s;
 }
 
-// Feasibility over the cycle: the follower stays outside the base circle (S ≥ 0), an oscillating
-// arm stays within (0°, 180°), and the pressure angle stays below 89° (the follower jams).
-void CheckFeasible(const DiscCamStudy& s, const std::vector<CamPoint<double>>& pts,
-                   const Node& root) {
-  const double xi0 = disc_cam::InitialFollowerCoordinate(s.cam);
-  const bool osc = s.cam.follower == FollowerType::kOscillatingRoller;
-  for (const auto& p : pts) {
-    if (p.s < -1e-9 * (osc ? 1.0 : s.cam.base_radius))
-      root["motion"].FailWith("the follower goes inside the base circle at cam angle " +
-                              Format(p.theta / kDeg) + " deg (S = " +
-                              Format(osc ? p.s / kDeg : p.s) + (osc ? " deg)" : " mm)"));
-    if (osc && !(xi0 + p.s > 0.0 && xi0 + p.s < kPi))
-      root["motion"].FailWith("the follower arm leaves (0, 180) deg from the cam centre line at "
-                              "cam angle " + Format(p.theta / kDeg) + " deg");
-    if (!(std::abs(p.pressure_angle) < 89.0 * kDeg) || !std::isfinite(p.pressure_angle))
-      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
-                              Format(p.pressure_angle / kDeg) + " deg at cam angle " +
-                              Format(p.theta / kDeg) + " deg (the follower would jam)");
-  }
-}
-
-// Cam-angle intervals [deg] where flag is set, on a uniform grid of n points over 360°.
-nlohmann::json Intervals(const std::vector<bool>& flag) {
-  nlohmann::json out = nlohmann::json::array();
-  const size_t n = flag.size();
-  for (size_t i = 0; i < n; ++i) {
-    if (!flag[i] || (i > 0 && flag[i - 1])) continue;
-    size_t j = i;
-    while (j + 1 < n && flag[j + 1]) ++j;
-    out.push_back({360.0 * i / n, 360.0 * j / n});
-  }
-  return out;
-}
-
-void Run(const Node& root, const RunContext& ctx, Outputs& out) {
-  const DiscCamStudy s = Parse(root);
+Result Run(const Study& s, const RunContext& ctx) {
   const DiscCam& cam = s.cam;
   const bool osc = cam.follower == FollowerType::kOscillatingRoller;
   // Follower errors in µm at the roller centre: ΔS [mm] for a translating follower, l·Δξ for an
   // oscillating one (Δξ [rad] is reported separately in arc seconds).
-  const double to_um = osc ? cam.arm_length * 1e3 : 1e3;
+  const double to_um = dc::RollerCentreMmPerFollowerUnit(cam) * 1e3;
   const double to_arcsec = 180.0 / kPi * 3600.0;
+  const double unit = osc ? 1.0 / kDeg : 1.0;  // follower unit: mm or deg
   const int n = s.angle_steps;
 
   std::vector<CamPoint<double>> pts(n);
-  std::vector<disc_cam::MechanicalError<double>> err(n);
-  std::vector<double> jerk(n);
+  std::vector<dc::MechanicalError<double>> err(n);
+  const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
   for (int i = 0; i < n; ++i) {
-    const double t = 2 * kPi * i / n;
-    pts[i] = disc_cam::EvaluateCam(cam, t);
-    jerk[i] = cam.motion.Evaluate(t).j;
-    err[i] = disc_cam::FollowerError(cam, pts[i], s.tolerances);
+    pts[i] = dc::EvaluateCam(cam, 2 * kPi * i / n);
+    err[i] = dc::FollowerError(cam, pts[i], s.tolerances);
   }
-  CheckFeasible(s, pts, root);
 
   auto arg_max = [&](auto f) {
     int best = 0;
@@ -223,201 +175,249 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   };
   auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
   auto angle_deg = [&](int i) { return 360.0 * i / n; };
-
-  nlohmann::json r;
-  r["study"] = "disc_cam";
-  r["name"] = s.name;
-  r["follower"] = osc ? "oscillating_roller" : "translating_roller";
-  r["angle_steps"] = n;
-  const int i_rmax = arg_max([&](int i) { return pts[i].radial_dimension; });
-  const int i_rmin = arg_min([&](int i) { return pts[i].radial_dimension; });
-  r["max_radial_dimension_mm"] = pts[i_rmax].radial_dimension;
-  r["max_radial_dimension_at_cam_angle_deg"] = angle_deg(i_rmax);
-  r["min_radial_dimension_mm"] = pts[i_rmin].radial_dimension;
-  const int i_pmax = arg_max([&](int i) { return pts[i].pressure_angle; });
-  const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
-  r["pressure_angle_deg"] = {{"min", pts[i_pmin].pressure_angle / kDeg},
-                             {"at_min_cam_angle_deg", angle_deg(i_pmin)},
-                             {"max", pts[i_pmax].pressure_angle / kDeg},
-                             {"at_max_cam_angle_deg", angle_deg(i_pmax)}};
-  const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
-  const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
-  r["shift_angle_deg"] = {{"min", pts[i_lmin].shift_angle / kDeg},
-                          {"max", pts[i_lmax].shift_angle / kDeg}};
-  auto ratio = [&](int i) { return std::cos(pts[i].shift_angle) / std::cos(pts[i].pressure_angle); };
-  r["cos_shift_over_cos_pressure"] = {{"min", ratio(arg_min(ratio))}, {"max", ratio(arg_max(ratio))}};
-
-  // Curvature: convex radius 1/κ − r_f where κ > 0, concave radius where κ < 0; undercut where
-  // κ r_f > 1 (NOTES.md §1).
-  std::vector<bool> undercut(n);
-  std::optional<double> min_convex, min_concave;
-  std::optional<double> min_convex_at, min_concave_at;
-  for (int i = 0; i < n; ++i) {
-    const double k = pts[i].pitch_curvature;
-    undercut[i] = disc_cam::IsUndercut(pts[i], cam.roller_radius);
-    if (k > 0) {
-      const double rho = 1.0 / k - cam.roller_radius;
-      if (!min_convex || rho < *min_convex) min_convex = rho, min_convex_at = angle_deg(i);
-    } else if (k < 0) {
-      const double rho = 1.0 / -k + cam.roller_radius;
-      if (!min_concave || rho < *min_concave) min_concave = rho, min_concave_at = angle_deg(i);
-    }
-  }
-  const bool any_undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
-  r["min_radius_of_curvature_mm"] = min_convex ? nlohmann::json(*min_convex) : nlohmann::json();
-  r["min_radius_of_curvature_at_cam_angle_deg"] =
-      min_convex_at ? nlohmann::json(*min_convex_at) : nlohmann::json();
-  r["min_concave_radius_of_curvature_mm"] =
-      min_concave ? nlohmann::json(*min_concave) : nlohmann::json();
-  r["min_concave_radius_at_cam_angle_deg"] =
-      min_concave_at ? nlohmann::json(*min_concave_at) : nlohmann::json();
-  r["undercut"] = any_undercut;
-  r["undercut_cam_angle_deg"] = Intervals(undercut);
-
-  // Mechanical error (eqs. 16–32).
-  r["tolerances_um"] = {{"profile_radial", s.tolerances.radial * 1e3},
-                        {"roller_radius", s.tolerances.roller * 1e3},
-                        {"profile_normal", s.tolerances.normal * 1e3}};
-  const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
-  const int i_rms = arg_max([&](int i) { return err[i].rms; });
-  r["worst_case_error_um"] = {{"max", err[i_wor].worst_case * to_um},
-                              {"at_cam_angle_deg", angle_deg(i_wor)},
-                              {"min", err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um}};
-  r["rms_error_um"] = {{"max", err[i_rms].rms * to_um}, {"at_cam_angle_deg", angle_deg(i_rms)}};
-  auto component = [&](auto get) {
-    const int a = arg_max(get), b = arg_min(get);
-    return nlohmann::json{{"max", get(a) * to_um}, {"min", get(b) * to_um}};
-  };
-  r["error_components_um"] = {
-      {"radial", component([&](int i) { return err[i].radial; })},
-      {"roller", component([&](int i) { return err[i].roller; })},
-      {"normal", component([&](int i) { return err[i].normal; })}};
-  if (osc) {
-    r["worst_case_error_arcsec"] = {{"max", err[i_wor].worst_case * to_arcsec},
-                                    {"at_cam_angle_deg", angle_deg(i_wor)}};
-    r["rms_error_arcsec"] = {{"max", err[i_rms].rms * to_arcsec}};
-  }
-
-  // Motion program: continuity at the joints and peak derivatives.
-  nlohmann::json joints = nlohmann::json::array();
-  for (const auto& j : motion::CheckContinuity(cam.motion, 1e-7)) {
-    joints.push_back({{"after_segment", j.segment},
-                      {"cam_angle_deg", j.cam_angle_rad / kDeg},
-                      {"continuity", j.order < 0 ? std::string("discontinuous")
-                                                 : "C" + std::to_string(j.order)}});
-  }
-  const double unit = osc ? 1.0 / kDeg : 1.0;  // follower unit: mm or deg
-  double vmax = 0, amax = 0, jmax = 0;
-  for (int i = 0; i < n; ++i) {
-    vmax = std::max(vmax, std::abs(pts[i].ds));
-    amax = std::max(amax, std::abs(pts[i].d2s));
-    jmax = std::max(jmax, std::abs(jerk[i]));
-  }
-  const std::string fu = osc ? "deg" : "mm";
-  r["motion"] = {{"joints", joints},
-                 {"peak_velocity_" + fu + "_per_rad", vmax * unit},
-                 {"peak_acceleration_" + fu + "_per_rad2", amax * unit},
-                 {"peak_jerk_" + fu + "_per_rad3", jmax * unit}};
-
-  // Monte-Carlo check of the linearisation against the exact follower motion.
-  if (s.mc.enabled && !any_undercut) {
-    Progress progress("disc_cam monte carlo", ctx.quiet);
-    std::vector<disc_cam::MonteCarloScale> mc;
-    for (size_t k = 0; k < s.mc.options.scales.size(); ++k) {
-      progress.Update(double(k) / s.mc.options.scales.size(),
-                      "tolerance scale " + Format(s.mc.options.scales[k]));
-      disc_cam::MonteCarloOptions o = s.mc.options;
-      o.scales = {s.mc.options.scales[k]};
-      const auto one = disc_cam::MonteCarloLinearisation(cam, s.tolerances, o);
-      mc.insert(mc.end(), one.begin(), one.end());
-    }
-    progress.Update(1.0);
-    progress.Done();
-    nlohmann::json scales = nlohmann::json::array();
-    for (const auto& m : mc) {
-      scales.push_back({{"scale", m.scale},
-                        {"max_linear_um", m.max_linear * to_um},
-                        {"max_exact_um", m.max_exact * to_um},
-                        {"max_difference_um", m.max_difference * to_um},
-                        {"relative_difference", m.relative_difference},
-                        {"at_cam_angle_deg", m.at_cam_angle_rad / kDeg},
-                        {"within_worst_case_fraction", m.within_bound_fraction},
-                        {"worst_case_exceeded_by_um", std::max(0.0, m.bound_exceed) * to_um},
-                        {"sample_rms_um", m.sample_rms * to_um},
-                        {"linear_rms_uniform_um", m.predicted_rms * to_um}});
-    }
-    r["monte_carlo"] = {{"samples", s.mc.options.samples},
-                        {"angle_steps", s.mc.options.angle_steps},
-                        {"seed", s.mc.options.seed},
-                        {"distribution", "uniform within ±scale × tolerance, independent"},
-                        {"scales", scales}};
-  } else if (s.mc.enabled) {
-    r["monte_carlo"] = {{"skipped", "the profile is undercut"}};
-  }
-  out.AddJson("result.json", r);
-
-  // Series.
-  Table table;
-  std::vector<double> th(n);
-  for (int i = 0; i < n; ++i) th[i] = angle_deg(i);
   auto col = [&](auto f) {
     std::vector<double> c(n);
     for (int i = 0; i < n; ++i) c[i] = f(i);
     return c;
   };
-  table.Add("cam_angle_deg", th);
-  table.Add("follower_" + fu, col([&](int i) { return pts[i].s * unit; }));
-  table.Add("velocity_" + fu + "_per_rad", col([&](int i) { return pts[i].ds * unit; }));
-  table.Add("acceleration_" + fu + "_per_rad2", col([&](int i) { return pts[i].d2s * unit; }));
-  table.Add("jerk_" + fu + "_per_rad3", col([&](int i) { return jerk[i] * unit; }));
-  table.Add("pressure_angle_deg", col([&](int i) { return pts[i].pressure_angle / kDeg; }));
-  table.Add("shift_angle_deg", col([&](int i) { return pts[i].shift_angle / kDeg; }));
-  table.Add("radial_dimension_mm", col([&](int i) { return pts[i].radial_dimension; }));
-  table.Add("contact_x_mm", col([&](int i) { return pts[i].contact.x(); }));
-  table.Add("contact_y_mm", col([&](int i) { return pts[i].contact.y(); }));
-  table.Add("pitch_x_mm", col([&](int i) { return pts[i].pitch.x(); }));
-  table.Add("pitch_y_mm", col([&](int i) { return pts[i].pitch.y(); }));
-  table.Add("q_mm", col([&](int i) { return pts[i].q; }));
-  table.Add("pitch_curvature_per_mm", col([&](int i) { return pts[i].pitch_curvature; }));
-  table.Add("error_radial_um", col([&](int i) { return err[i].radial * to_um; }));
-  table.Add("error_roller_um", col([&](int i) { return err[i].roller * to_um; }));
-  table.Add("error_normal_um", col([&](int i) { return err[i].normal * to_um; }));
-  table.Add("error_worst_case_um", col([&](int i) { return err[i].worst_case * to_um; }));
-  table.Add("error_rms_um", col([&](int i) { return err[i].rms * to_um; }));
+
+  Result r;
+  r.oscillating = osc;
+  r.follower_unit = osc ? "deg" : "mm";
+  auto& t = r.series;
+  t.cam_angle_deg = col(angle_deg);
+  t.follower = col([&](int i) { return pts[i].s * unit; });
+  t.velocity_per_rad = col([&](int i) { return pts[i].ds * unit; });
+  t.acceleration_per_rad2 = col([&](int i) { return pts[i].d2s * unit; });
+  t.jerk_per_rad3 = col([&](int i) { return svaj[i].j * unit; });
+  t.pressure_angle_deg = col([&](int i) { return pts[i].pressure_angle / kDeg; });
+  t.shift_angle_deg = col([&](int i) { return pts[i].shift_angle / kDeg; });
+  t.radial_dimension_mm = col([&](int i) { return pts[i].radial_dimension; });
+  t.contact_x_mm = col([&](int i) { return pts[i].contact.x(); });
+  t.contact_y_mm = col([&](int i) { return pts[i].contact.y(); });
+  t.pitch_x_mm = col([&](int i) { return pts[i].pitch.x(); });
+  t.pitch_y_mm = col([&](int i) { return pts[i].pitch.y(); });
+  t.q_mm = col([&](int i) { return pts[i].q; });
+  t.pitch_curvature_per_mm = col([&](int i) { return pts[i].pitch_curvature; });
+  t.error_radial_um = col([&](int i) { return err[i].radial * to_um; });
+  t.error_roller_um = col([&](int i) { return err[i].roller * to_um; });
+  t.error_normal_um = col([&](int i) { return err[i].normal * to_um; });
+  t.error_worst_case_um = col([&](int i) { return err[i].worst_case * to_um; });
+  t.error_rms_um = col([&](int i) { return err[i].rms * to_um; });
+
+  const int i_rmax = arg_max([&](int i) { return pts[i].radial_dimension; });
+  const int i_rmin = arg_min([&](int i) { return pts[i].radial_dimension; });
+  r.max_radial_dimension_mm = {pts[i_rmax].radial_dimension, angle_deg(i_rmax)};
+  r.min_radial_dimension_mm = pts[i_rmin].radial_dimension;
+  const int i_pmax = arg_max([&](int i) { return pts[i].pressure_angle; });
+  const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
+  r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, angle_deg(i_pmin)};
+  r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, angle_deg(i_pmax)};
+  const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
+  const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
+  r.shift_angle_deg = {pts[i_lmin].shift_angle / kDeg, pts[i_lmax].shift_angle / kDeg};
+  auto ratio = [&](int i) { return dc::RadialErrorRatio(pts[i]); };
+  r.cos_shift_over_cos_pressure = {ratio(arg_min(ratio)), ratio(arg_max(ratio))};
+
+  // Curvature: the profile's radius where the pitch curve is convex, its magnitude where concave;
+  // undercut where κ r_f > 1 (model/disc_cam/disc_cam.h).
+  std::vector<bool> undercut(n);
+  for (int i = 0; i < n; ++i) {
+    const double k = pts[i].pitch_curvature;
+    undercut[i] = dc::IsUndercut(pts[i], cam.roller_radius);
+    const double rho = dc::ProfileRadiusOfCurvature(pts[i], cam.roller_radius);
+    auto& convex = r.min_radius_of_curvature_mm;
+    auto& concave = r.min_concave_radius_of_curvature_mm;
+    if (k > 0) {
+      if (!convex || rho < convex->value) convex = AtAngle{rho, angle_deg(i)};
+    } else if (k < 0) {
+      if (!concave || -rho < concave->value) concave = AtAngle{-rho, angle_deg(i)};
+    }
+  }
+  r.undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
+  r.undercut_cam_angle_deg = Intervals(undercut);
+
+  // Mechanical error (eqs. 16–32).
+  const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
+  const int i_rms = arg_max([&](int i) { return err[i].rms; });
+  r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, angle_deg(i_wor)};
+  r.min_worst_case_error_um =
+      err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um;
+  r.max_rms_error_um = {err[i_rms].rms * to_um, angle_deg(i_rms)};
+  auto component = [&](auto get) {
+    const int a = arg_max(get), b = arg_min(get);
+    return MinMax{get(b) * to_um, get(a) * to_um};
+  };
+  r.radial_error_um = component([&](int i) { return err[i].radial; });
+  r.roller_error_um = component([&](int i) { return err[i].roller; });
+  r.normal_error_um = component([&](int i) { return err[i].normal; });
+  if (osc) {
+    r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, angle_deg(i_wor)};
+    r.max_rms_error_arcsec = err[i_rms].rms * to_arcsec;
+  }
+
+  // Motion program: continuity at the joints and peak derivatives.
+  r.joints = motion::CheckContinuity(cam.motion, 1e-7);
+  const MotionPeaks peaks = PeakDerivatives(svaj);
+  r.peak_velocity = peaks.velocity * unit;
+  r.peak_acceleration = peaks.acceleration * unit;
+  r.peak_jerk = peaks.jerk * unit;
+
+  // Monte-Carlo check of the linearisation against the exact follower motion.
+  if (s.monte_carlo && r.undercut) {
+    r.monte_carlo = Result::MonteCarlo::kSkippedUndercut;
+  } else if (s.monte_carlo) {
+    r.monte_carlo = Result::MonteCarlo::kDone;
+    const auto& scales = s.monte_carlo_options.scales;
+    Progress progress("disc_cam monte carlo", ctx.quiet);
+    for (size_t k = 0; k < scales.size(); ++k) {
+      progress.Update(double(k) / scales.size(), "tolerance scale " + Format(scales[k]));
+      dc::MonteCarloOptions o = s.monte_carlo_options;
+      o.scales = {scales[k]};
+      for (const auto& m : dc::MonteCarloLinearisation(cam, s.tolerances, o))
+        r.monte_carlo_rows.push_back({m.scale, m.max_linear * to_um, m.max_exact * to_um,
+                                      m.max_difference * to_um, m.relative_difference,
+                                      m.at_cam_angle_rad / kDeg, m.within_bound_fraction,
+                                      std::max(0.0, m.bound_exceed) * to_um,
+                                      m.sample_rms * to_um, m.predicted_rms * to_um});
+    }
+    progress.Update(1.0);
+    progress.Done();
+  }
+  return r;
+}
+
+nlohmann::json ToJson(const Study& s, const Result& r) {
+  nlohmann::json j;
+  j["study"] = "disc_cam";
+  j["name"] = s.name;
+  j["follower"] = r.oscillating ? "oscillating_roller" : "translating_roller";
+  j["angle_steps"] = s.angle_steps;
+  j["max_radial_dimension_mm"] = r.max_radial_dimension_mm.value;
+  j["max_radial_dimension_at_cam_angle_deg"] = r.max_radial_dimension_mm.cam_angle_deg;
+  j["min_radial_dimension_mm"] = r.min_radial_dimension_mm;
+  j["pressure_angle_deg"] = {{"min", r.min_pressure_angle_deg.value},
+                             {"at_min_cam_angle_deg", r.min_pressure_angle_deg.cam_angle_deg},
+                             {"max", r.max_pressure_angle_deg.value},
+                             {"at_max_cam_angle_deg", r.max_pressure_angle_deg.cam_angle_deg}};
+  j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
+  j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
+                                      {"max", r.cos_shift_over_cos_pressure.max}};
+  j["min_radius_of_curvature_mm"] = AtAngleOrNull(r.min_radius_of_curvature_mm, false);
+  j["min_radius_of_curvature_at_cam_angle_deg"] =
+      AtAngleOrNull(r.min_radius_of_curvature_mm, true);
+  j["min_concave_radius_of_curvature_mm"] =
+      AtAngleOrNull(r.min_concave_radius_of_curvature_mm, false);
+  j["min_concave_radius_at_cam_angle_deg"] =
+      AtAngleOrNull(r.min_concave_radius_of_curvature_mm, true);
+  j["undercut"] = r.undercut;
+  j["undercut_cam_angle_deg"] = nlohmann::json::array();
+  for (const auto& [from, to] : r.undercut_cam_angle_deg)
+    j["undercut_cam_angle_deg"].push_back({from, to});
+
+  j["tolerances_um"] = {{"profile_radial", s.tolerances.radial * 1e3},
+                        {"roller_radius", s.tolerances.roller * 1e3},
+                        {"profile_normal", s.tolerances.normal * 1e3}};
+  j["worst_case_error_um"] = {{"max", r.max_worst_case_error_um.value},
+                              {"at_cam_angle_deg", r.max_worst_case_error_um.cam_angle_deg},
+                              {"min", r.min_worst_case_error_um}};
+  j["rms_error_um"] = {{"max", r.max_rms_error_um.value},
+                       {"at_cam_angle_deg", r.max_rms_error_um.cam_angle_deg}};
+  auto min_max = [](const MinMax& m) { return nlohmann::json{{"max", m.max}, {"min", m.min}}; };
+  j["error_components_um"] = {{"radial", min_max(r.radial_error_um)},
+                              {"roller", min_max(r.roller_error_um)},
+                              {"normal", min_max(r.normal_error_um)}};
+  if (r.max_worst_case_error_arcsec)
+    j["worst_case_error_arcsec"] = {{"max", r.max_worst_case_error_arcsec->value},
+                                    {"at_cam_angle_deg",
+                                     r.max_worst_case_error_arcsec->cam_angle_deg}};
+  if (r.max_rms_error_arcsec) j["rms_error_arcsec"] = {{"max", *r.max_rms_error_arcsec}};
+
+  const std::string& fu = r.follower_unit;
+  j["motion"] = {{"joints", JointsJson(r.joints)},
+                 {"peak_velocity_" + fu + "_per_rad", r.peak_velocity},
+                 {"peak_acceleration_" + fu + "_per_rad2", r.peak_acceleration},
+                 {"peak_jerk_" + fu + "_per_rad3", r.peak_jerk}};
+
+  if (r.monte_carlo == Result::MonteCarlo::kDone) {
+    nlohmann::json scales = nlohmann::json::array();
+    for (const auto& m : r.monte_carlo_rows)
+      scales.push_back({{"scale", m.scale},
+                        {"max_linear_um", m.max_linear_um},
+                        {"max_exact_um", m.max_exact_um},
+                        {"max_difference_um", m.max_difference_um},
+                        {"relative_difference", m.relative_difference},
+                        {"at_cam_angle_deg", m.at_cam_angle_deg},
+                        {"within_worst_case_fraction", m.within_worst_case_fraction},
+                        {"worst_case_exceeded_by_um", m.worst_case_exceeded_by_um},
+                        {"sample_rms_um", m.sample_rms_um},
+                        {"linear_rms_uniform_um", m.linear_rms_uniform_um}});
+    const auto& o = s.monte_carlo_options;
+    j["monte_carlo"] = {{"samples", o.samples},
+                        {"angle_steps", o.angle_steps},
+                        {"seed", o.seed},
+                        {"distribution", "uniform within ±scale × tolerance, independent"},
+                        {"scales", scales}};
+  } else if (r.monte_carlo == Result::MonteCarlo::kSkippedUndercut) {
+    j["monte_carlo"] = {{"skipped", "the profile is undercut"}};
+  }
+  return j;
+}
+
+void Write(const Study& s, const Result& r, Outputs& out) {
+  out.AddJson("result.json", ToJson(s, r));
+  const DiscCam& cam = s.cam;
+  const auto& t = r.series;
+  const std::string& fu = r.follower_unit;
+
+  Table table;
+  table.Add("cam_angle_deg", t.cam_angle_deg);
+  table.Add("follower_" + fu, t.follower);
+  table.Add("velocity_" + fu + "_per_rad", t.velocity_per_rad);
+  table.Add("acceleration_" + fu + "_per_rad2", t.acceleration_per_rad2);
+  table.Add("jerk_" + fu + "_per_rad3", t.jerk_per_rad3);
+  table.Add("pressure_angle_deg", t.pressure_angle_deg);
+  table.Add("shift_angle_deg", t.shift_angle_deg);
+  table.Add("radial_dimension_mm", t.radial_dimension_mm);
+  table.Add("contact_x_mm", t.contact_x_mm);
+  table.Add("contact_y_mm", t.contact_y_mm);
+  table.Add("pitch_x_mm", t.pitch_x_mm);
+  table.Add("pitch_y_mm", t.pitch_y_mm);
+  table.Add("q_mm", t.q_mm);
+  table.Add("pitch_curvature_per_mm", t.pitch_curvature_per_mm);
+  table.Add("error_radial_um", t.error_radial_um);
+  table.Add("error_roller_um", t.error_roller_um);
+  table.Add("error_normal_um", t.error_normal_um);
+  table.Add("error_worst_case_um", t.error_worst_case_um);
+  table.Add("error_rms_um", t.error_rms_um);
   out.Add("series.csv", ToCsv(table));
 
+  const auto& th = t.cam_angle_deg;
+  AddSvajPlots(out, s.name + ": follower", th,
+               {table.names[1], table.names[2], table.names[3], table.names[4]},
+               {&t.follower, &t.velocity_per_rad, &t.acceleration_per_rad2, &t.jerk_per_rad3});
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
-  const char* names[4] = {"displacement", "velocity", "acceleration", "jerk"};
-  for (int k = 0; k < 4; ++k) {
-    const std::string cname = table.names[1 + k];
-    PlotOptions o;
-    o.title = s.name + ": follower " + names[k];
-    o.x_label = "cam angle [deg]";
-    o.y_label = cname;
-    out.Add(std::string("svaj_") + names[k] + ".svg",
-            SvgLinePlot({series(names[k], table.columns[1 + k])}, o));
-  }
   {
     PlotOptions o;
     o.title = s.name + ": pressure angle and shift angle (paper Fig. 12a)";
     o.x_label = "cam angle [deg]";
     o.y_label = "angle [deg]";
-    out.Add("angles.svg", SvgLinePlot({series("pressure angle φ", table.columns[5]),
-                                       series("shift angle λ", table.columns[6])},
+    out.Add("angles.svg", SvgLinePlot({series("pressure angle φ", t.pressure_angle_deg),
+                                       series("shift angle λ", t.shift_angle_deg)},
                                       o));
   }
   {
     PlotOptions o;
     o.title = s.name + ": follower error (paper Fig. 12b)";
     o.x_label = "cam angle [deg]";
-    o.y_label = osc ? "error at the roller centre, l·Δξ [µm]" : "follower error ΔS [µm]";
-    std::vector<Series> ss = {series("ΔS_r (radial)", table.columns[14]),
-                              series("ΔS_rf (roller)", table.columns[15])};
-    if (s.tolerances.normal > 0) ss.push_back(series("ΔS_n (normal)", table.columns[16]));
-    ss.push_back(series("ΔS_wor (worst case)", table.columns[17]));
-    ss.push_back(series("ΔS_rms", table.columns[18]));
+    o.y_label = r.oscillating ? "error at the roller centre, l·Δξ [µm]" : "follower error ΔS [µm]";
+    std::vector<Series> ss = {series("ΔS_r (radial)", t.error_radial_um),
+                              series("ΔS_rf (roller)", t.error_roller_um)};
+    if (s.tolerances.normal > 0) ss.push_back(series("ΔS_n (normal)", t.error_normal_um));
+    ss.push_back(series("ΔS_wor (worst case)", t.error_worst_case_um));
+    ss.push_back(series("ΔS_rms", t.error_rms_um));
     out.Add("error.svg", SvgLinePlot(ss, o));
   }
 
@@ -429,23 +429,23 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   Drawing::Layer base{"base_circle", "gray", {}, {}, true, 0.5};
   Drawing::Layer follower{"follower", "firebrick", {}, {}, false, 0.7};
   Polyline pp, pc;
-  for (int i = 0; i < n; ++i) {
-    pp.emplace_back(pts[i].contact.x(), pts[i].contact.y());
-    pc.emplace_back(pts[i].pitch.x(), pts[i].pitch.y());
+  for (size_t i = 0; i < th.size(); ++i) {
+    pp.emplace_back(t.contact_x_mm[i], t.contact_y_mm[i]);
+    pc.emplace_back(t.pitch_x_mm[i], t.pitch_y_mm[i]);
   }
   profile.polylines.push_back(pp);
   pitch.polylines.push_back(pc);
   base.circles.push_back({0.0, 0.0, cam.base_radius});
   base.circles.push_back({0.0, 0.0, 0.5});
-  follower.circles.push_back({pts[0].pitch.x(), pts[0].pitch.y(), cam.roller_radius});
-  if (osc) {
-    const Vec2<double> o3 = cam.pivot_distance * U(0.0);
-    follower.polylines.push_back({{o3.x(), o3.y()}, {pts[0].pitch.x(), pts[0].pitch.y()}});
+  const Vec2<double> c0(t.pitch_x_mm[0], t.pitch_y_mm[0]);  // roller centre at θ = 0
+  follower.circles.push_back({c0.x(), c0.y(), cam.roller_radius});
+  if (r.oscillating) {
+    const Vec2<double> o3 = dc::FollowerPivot(cam, 0.0);
+    follower.polylines.push_back({{o3.x(), o3.y()}, {c0.x(), c0.y()}});
     follower.circles.push_back({o3.x(), o3.y(), 1.5});
   } else {
-    const Vec2<double> c = pts[0].pitch, u = U(0.0);
-    const Vec2<double> a = c + 0.5 * cam.base_radius * u;
-    follower.polylines.push_back({{c.x(), c.y()}, {a.x(), a.y()}});
+    const Vec2<double> a = c0 + 0.5 * cam.base_radius * U(0.0);
+    follower.polylines.push_back({{c0.x(), c0.y()}, {a.x(), a.y()}});
   }
   d.layers = {profile, pitch, base, follower};
   out.Add("profile.svg", SvgDrawing(d));
@@ -455,8 +455,13 @@ void Run(const Node& root, const RunContext& ctx, Outputs& out) {
   out.Add("profile.dxf", ToDxf(dxf));
 }
 
+namespace {
+void RunStudyKind(const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study study = Parse(root);
+  Write(study, Run(study, ctx), out);
+}
 }  // namespace
 
-CAMOPT_REGISTER_STUDY("disc_cam", Run);
+CAMOPT_REGISTER_STUDY("disc_cam", RunStudyKind);
 
-}  // namespace camopt::studies
+}  // namespace camopt::studies::disc_cam

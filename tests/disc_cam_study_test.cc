@@ -1,16 +1,16 @@
-// The disc_cam study through the CLI: the paper's example and the oscillating example end to end,
-// and every kind of bad input rejected with exit code 2 and a message naming the JSON path.
+// The disc_cam study: the paper's example, the oscillating example and an undercut cam through
+// the C++ entry points (Parse, Run); the files the CLI writes; and every kind of bad input rejected
+// with exit code 2 and a message naming the JSON path.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "model/common/scalar.h"
+#include "studies/disc_cam_study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -24,118 +24,129 @@ using camopt::testing::WriteFile;
 using nlohmann::json;
 
 using camopt::testing::Example;
+using studies::Node;
+using studies::RunContext;
+namespace disc_study = studies::disc_cam;
 
-// The CSV row whose first column (cam angle) is closest to angle_deg, by column name.
-std::map<std::string, double> CsvRowAt(const std::string& csv, double angle_deg) {
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  {
-    std::istringstream h(line);
-    std::string n;
-    while (std::getline(h, n, ',')) names.push_back(n);
-  }
-  std::map<std::string, double> best;
-  double best_d = 1e9;
-  while (std::getline(in, line)) {
-    std::istringstream r(line);
-    std::string v;
-    std::map<std::string, double> row;
-    for (size_t i = 0; i < names.size() && std::getline(r, v, ','); ++i) row[names[i]] = std::stod(v);
-    if (std::abs(row["cam_angle_deg"] - angle_deg) < best_d)
-      best_d = std::abs(row["cam_angle_deg"] - angle_deg), best = row;
-  }
+// The index of the grid angle closest to angle_deg.
+size_t IndexAt(const std::vector<double>& cam_angle_deg, double angle_deg) {
+  size_t best = 0;
+  for (size_t i = 1; i < cam_angle_deg.size(); ++i)
+    if (std::abs(cam_angle_deg[i] - angle_deg) < std::abs(cam_angle_deg[best] - angle_deg)) best = i;
   return best;
+}
+
+// Parse and Run, the C++ entry points of the kind.
+struct Ran {
+  disc_study::Study study;
+  disc_study::Result result;
+};
+Ran ParseAndRun(const json& file) {
+  const Node root(&file, "study.json", "");
+  Ran r{disc_study::Parse(root), {}};
+  RunContext ctx;
+  ctx.quiet = true;
+  r.result = disc_study::Run(r.study, ctx);
+  return r;
+}
+
+TEST(DiscCamStudy, PaperExample) {
+  const Ran ran = ParseAndRun(Example("disc_cam_translating.json"));
+  const disc_study::Result& r = ran.result;
+  // Paper §5: maximum radial dimension 63.525 mm.
+  EXPECT_NEAR(r.max_radial_dimension_mm.value, 63.525, 5e-4);
+  EXPECT_NEAR(r.min_radial_dimension_mm, 40.0, 1e-9);  // base circle
+  EXPECT_FALSE(r.undercut);
+  // On the base circle φ = −atan(e/L₀): the largest |φ| is not smaller than that.
+  const double L0 = std::sqrt(50.0 * 50.0 - 144.0);
+  EXPECT_LE(r.min_pressure_angle_deg.value, -std::atan(12.0 / L0) * 180 / kPi);
+  EXPECT_GT(r.max_pressure_angle_deg.value, 0.0);
+  ASSERT_TRUE(r.min_radius_of_curvature_mm.has_value());
+  EXPECT_GT(r.min_radius_of_curvature_mm->value, 0.0);
+  EXPECT_LE(r.min_radius_of_curvature_mm->value, 40.0);  // ≤ the base circle's
+  // Worst case between the tolerances' sum (cos φ = 1, λ = 0 at best) and the sum over the
+  // smallest cos φ; RMS below the worst case.
+  const double wor = r.max_worst_case_error_um.value;
+  const double phimax = std::max(std::abs(r.min_pressure_angle_deg.value),
+                                 std::abs(r.max_pressure_angle_deg.value));
+  EXPECT_GT(wor, 28.0);
+  EXPECT_LT(wor, 28.0 / std::cos(phimax * kPi / 180) + 1e-9);
+  EXPECT_LT(r.max_rms_error_um.value, wor);
+  const double at = r.max_worst_case_error_um.cam_angle_deg;
+  EXPECT_TRUE(at > 170.0 && at < 290.0) << "the return has the largest |φ|: " << at;
+  // Closed form in the upper dwell (θ = 145°): λ = 0, cos φ = L/|C|,
+  // ΔS_wor = (19 + 9) |C| / L with L = L₀ + 24.
+  const size_t i = IndexAt(r.series.cam_angle_deg, 145.0);
+  const double L = L0 + 24.0, C = std::sqrt(L * L + 144.0);
+  EXPECT_NEAR(r.series.error_worst_case_um[i], 28.0 * C / L, 1e-7);
+  EXPECT_NEAR(r.series.radial_dimension_mm[i], C - 10.0, 1e-7);
+  EXPECT_NEAR(r.series.follower[i], 24.0, 1e-12);
+  // Motion: cycloidal against dwells is C² at every joint; peak velocity Cv h/β = 2·24/(2π/3).
+  for (const auto& j : r.joints) EXPECT_EQ(j.order, 2);
+  EXPECT_NEAR(r.peak_velocity, 48.0 / (2 * kPi / 3), 1e-6);
+  // Monte-Carlo: the linear model holds to well under 1% at the tolerance scale.
+  const auto& mc = r.monte_carlo_rows;
+  ASSERT_GE(mc.size(), 1u);
+  EXPECT_EQ(mc[0].scale, 1.0);
+  EXPECT_LT(mc[0].relative_difference, 1e-3);
+  EXPECT_EQ(mc[0].within_worst_case_fraction, 1.0);
 }
 
 TEST(DiscCamStudy, PaperExampleThroughTheCli) {
   const auto dir = TempDir("disc-cam-translating");
-  const auto res = RunCamopt("run " + SourcePath("studies/examples/disc_cam_translating.json") +
-                             " --quiet --out " + dir.string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const json r = json::parse(ReadFile(dir / "result.json"));
-  // Paper §5: maximum radial dimension 63.525 mm.
-  EXPECT_NEAR(r["max_radial_dimension_mm"].get<double>(), 63.525, 5e-4);
-  EXPECT_NEAR(r["min_radial_dimension_mm"].get<double>(), 40.0, 1e-9);  // base circle
-  EXPECT_FALSE(r["undercut"].get<bool>());
-  // On the base circle φ = −atan(e/L₀): the largest |φ| is not smaller than that.
-  const double L0 = std::sqrt(50.0 * 50.0 - 144.0);
-  EXPECT_LE(r["pressure_angle_deg"]["min"].get<double>(), -std::atan(12.0 / L0) * 180 / kPi);
-  EXPECT_GT(r["pressure_angle_deg"]["max"].get<double>(), 0.0);
-  EXPECT_GT(r["min_radius_of_curvature_mm"].get<double>(), 0.0);
-  EXPECT_LE(r["min_radius_of_curvature_mm"].get<double>(), 40.0);  // ≤ the base circle's
-  // Worst case between the tolerances' sum (cos φ = 1, λ = 0 at best) and the sum over the
-  // smallest cos φ; RMS below the worst case.
-  const double wor = r["worst_case_error_um"]["max"].get<double>();
-  const double phimax = std::max(std::abs(r["pressure_angle_deg"]["min"].get<double>()),
-                                 std::abs(r["pressure_angle_deg"]["max"].get<double>()));
-  EXPECT_GT(wor, 28.0);
-  EXPECT_LT(wor, 28.0 / std::cos(phimax * kPi / 180) + 1e-9);
-  EXPECT_LT(r["rms_error_um"]["max"].get<double>(), wor);
-  const double at = r["worst_case_error_um"]["at_cam_angle_deg"].get<double>();
-  EXPECT_TRUE(at > 170.0 && at < 290.0) << "the return has the largest |φ|: " << at;
-  // Closed form in the upper dwell (θ = 145°): λ = 0, cos φ = L/|C|,
-  // ΔS_wor = (19 + 9) |C| / L with L = L₀ + 24.
-  const auto row = CsvRowAt(ReadFile(dir / "series.csv"), 145.0);
-  const double L = L0 + 24.0, C = std::sqrt(L * L + 144.0);
-  EXPECT_NEAR(row.at("error_worst_case_um"), 28.0 * C / L, 1e-7);  // CSV: 10 digits
-  EXPECT_NEAR(row.at("radial_dimension_mm"), C - 10.0, 1e-7);
-  EXPECT_NEAR(row.at("follower_mm"), 24.0, 1e-12);
-  // Motion: cycloidal against dwells is C² at every joint; peak velocity Cv h/β = 2·24/(2π/3).
-  for (const auto& j : r["motion"]["joints"]) EXPECT_EQ(j["continuity"], "C2");
-  EXPECT_NEAR(r["motion"]["peak_velocity_mm_per_rad"].get<double>(), 48.0 / (2 * kPi / 3), 1e-6);
-  // Monte-Carlo: the linear model holds to well under 1% at the tolerance scale.
-  const json& mc = r["monte_carlo"]["scales"];
-  ASSERT_GE(mc.size(), 1u);
-  EXPECT_EQ(mc[0]["scale"].get<double>(), 1.0);
-  EXPECT_LT(mc[0]["relative_difference"].get<double>(), 1e-3);
-  EXPECT_EQ(mc[0]["within_worst_case_fraction"].get<double>(), 1.0);
-  for (const char* f : {"series.csv", "error.svg", "angles.svg", "svaj_displacement.svg",
-                        "svaj_velocity.svg", "svaj_acceleration.svg", "svaj_jerk.svg",
-                        "profile.svg", "profile.dxf"})
-    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
-  EXPECT_NE(ReadFile(dir / "profile.dxf").find("POLYLINE"), std::string::npos);
-}
-
-TEST(DiscCamStudy, OscillatingExampleThroughTheCli) {
-  const auto dir = TempDir("disc-cam-oscillating");
-  json study = Example("disc_cam_oscillating.json");
+  json study = Example("disc_cam_translating.json");
   study["analysis"]["monte_carlo"] = {{"samples", 10}, {"angle_steps", 90}, {"scales", {1}}};
   WriteFile(dir / "study.json", study.dump());
   const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
                              (dir / "out").string());
   ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
   const json r = json::parse(ReadFile(dir / "out" / "result.json"));
-  EXPECT_EQ(r["follower"], "oscillating_roller");
-  EXPECT_NEAR(r["min_radial_dimension_mm"].get<double>(), 40.0, 1e-9);
+  EXPECT_EQ(r["study"], "disc_cam");
+  EXPECT_EQ(r["motion"]["joints"][0]["continuity"], "C2");
+  // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
+  const Ran ran = ParseAndRun(study);
+  EXPECT_EQ(r, disc_study::ToJson(ran.study, ran.result));
+  for (const char* f : {"series.csv", "error.svg", "angles.svg", "svaj_displacement.svg",
+                        "svaj_velocity.svg", "svaj_acceleration.svg", "svaj_jerk.svg",
+                        "profile.svg", "profile.dxf"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  EXPECT_NE(ReadFile(dir / "out" / "profile.dxf").find("POLYLINE"), std::string::npos);
+}
+
+TEST(DiscCamStudy, OscillatingExample) {
+  json study = Example("disc_cam_oscillating.json");
+  study["analysis"]["monte_carlo"] = {{"samples", 10}, {"angle_steps", 90}, {"scales", {1}}};
+  const Ran ran = ParseAndRun(study);
+  const disc_study::Result& r = ran.result;
+  EXPECT_TRUE(r.oscillating);
+  EXPECT_EQ(disc_study::ToJson(ran.study, r)["follower"], "oscillating_roller");
+  EXPECT_NEAR(r.min_radial_dimension_mm, 40.0, 1e-9);
   // The error at the roller centre is l·Δξ: µm and arc seconds agree through l = 80 mm.
-  EXPECT_NEAR(r["worst_case_error_um"]["max"].get<double>(),
-              r["worst_case_error_arcsec"]["max"].get<double>() / 3600 * kPi / 180 * 80e3, 1e-9);
-  EXPECT_GT(r["worst_case_error_um"]["max"].get<double>(), 19.0 + 9.0 + 5.0 - 1e-9 - 19.0 * 0.2);
-  EXPECT_LT(r["monte_carlo"]["scales"][0]["relative_difference"].get<double>(), 1e-2);
-  // Dwell at ξ₀ + 20°: S = 20° in the CSV.
-  const auto row = CsvRowAt(ReadFile(dir / "out" / "series.csv"), 130.0);
-  EXPECT_NEAR(row.at("follower_deg"), 20.0, 1e-9);
+  ASSERT_TRUE(r.max_worst_case_error_arcsec.has_value());
+  EXPECT_NEAR(r.max_worst_case_error_um.value,
+              r.max_worst_case_error_arcsec->value / 3600 * kPi / 180 * 80e3, 1e-9);
+  EXPECT_GT(r.max_worst_case_error_um.value, 19.0 + 9.0 + 5.0 - 1e-9 - 19.0 * 0.2);
+  ASSERT_EQ(r.monte_carlo_rows.size(), 1u);
+  EXPECT_LT(r.monte_carlo_rows[0].relative_difference, 1e-2);
+  // Dwell at ξ₀ + 20°: S = 20° in the series.
+  EXPECT_NEAR(r.series.follower[IndexAt(r.series.cam_angle_deg, 130.0)], 20.0, 1e-9);
 }
 
 TEST(DiscCamStudy, UndercutIsReportedNotHidden) {
-  const auto dir = TempDir("disc-cam-undercut");
   json study = Example("disc_cam_translating.json");
   study["base_circle_radius_mm"] = 10;
   study["follower"] = {{"type", "translating_roller"}, {"roller_radius_mm", 15}};
   study["motion"] = json::parse(R"([{"law": "cycloidal", "rise_mm": 24, "cam_angle_deg": 60},
       {"law": "cycloidal", "rise_mm": -24, "cam_angle_deg": 60},
       {"law": "dwell", "cam_angle_deg": 240}])");
-  WriteFile(dir / "study.json", study.dump());
-  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
-                             (dir / "out").string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const json r = json::parse(ReadFile(dir / "out" / "result.json"));
-  EXPECT_TRUE(r["undercut"].get<bool>());
-  EXPECT_GE(r["undercut_cam_angle_deg"].size(), 1u);
-  EXPECT_LT(r["min_radius_of_curvature_mm"].get<double>(), 0.0);
-  EXPECT_TRUE(r["monte_carlo"].contains("skipped"));
+  const Ran ran = ParseAndRun(study);
+  const disc_study::Result& r = ran.result;
+  EXPECT_TRUE(r.undercut);
+  EXPECT_GE(r.undercut_cam_angle_deg.size(), 1u);
+  ASSERT_TRUE(r.min_radius_of_curvature_mm.has_value());
+  EXPECT_LT(r.min_radius_of_curvature_mm->value, 0.0);
+  EXPECT_EQ(r.monte_carlo, disc_study::Result::MonteCarlo::kSkippedUndercut);
+  EXPECT_TRUE(disc_study::ToJson(ran.study, r)["monte_carlo"].contains("skipped"));
 }
 
 struct BadCase {

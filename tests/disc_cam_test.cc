@@ -1,4 +1,4 @@
-// Disc cam model: the paper's example (Rzine et al., NOTES.md §2), closed forms, independent
+// Disc cam model: the paper's example (Rzine et al., docs/papers.md §2), closed forms, independent
 // constructions of the normal, instant centre, pressure angle and curvature, the linearised
 // mechanical error against the exact follower motion, and AD gradients.
 #include <algorithm>
@@ -8,10 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include "model/disc_cam/check.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/disc_cam/summary.h"
+#include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
 namespace camopt::disc_cam {
@@ -20,36 +22,9 @@ namespace {
 constexpr double kDeg = kPi / 180.0;
 using motion::MotionLaw;
 
-template <typename T = double>
-DiscCamTpl<T> PaperExample(T rb = T(40.0), T rf = T(10.0), T e = T(12.0), T rise = T(24.0)) {
-  DiscCamTpl<T> cam;
-  cam.follower = FollowerType::kTranslatingRoller;
-  cam.base_radius = rb;
-  cam.roller_radius = rf;
-  cam.offset = e;
-  cam.motion = motion::MotionProgram<T>({{MotionLaw::kCycloidal, rise, T(120 * kDeg)},
-                                         {MotionLaw::kDwell, T(0.0), T(50 * kDeg)},
-                                         {MotionLaw::kCycloidal, -rise, T(120 * kDeg)},
-                                         {MotionLaw::kDwell, T(0.0), T(70 * kDeg)}});
-  return cam;
-}
-
-// An oscillating roller follower: 20° modified-sine rise over 100°, dwell 60°, return over 100°.
-template <typename T = double>
-DiscCamTpl<T> OscillatingExample(T rb = T(40.0), T rf = T(10.0), T f = T(100.0), T l = T(80.0),
-                                 T rise = T(20 * kDeg)) {
-  DiscCamTpl<T> cam;
-  cam.follower = FollowerType::kOscillatingRoller;
-  cam.base_radius = rb;
-  cam.roller_radius = rf;
-  cam.pivot_distance = f;
-  cam.arm_length = l;
-  cam.motion = motion::MotionProgram<T>({{MotionLaw::kModifiedSine, rise, T(100 * kDeg)},
-                                         {MotionLaw::kDwell, T(0.0), T(60 * kDeg)},
-                                         {MotionLaw::kModifiedSine, -rise, T(100 * kDeg)},
-                                         {MotionLaw::kDwell, T(0.0), T(100 * kDeg)}});
-  return cam;
-}
+// The shared reference designs (tests/reference_designs.h).
+using testing::DiscCamOscillatingExample;
+using testing::DiscCamPaperExample;
 
 std::vector<double> Angles(int n) {
   std::vector<double> t(n);
@@ -59,7 +34,7 @@ std::vector<double> Angles(int n) {
 
 TEST(DiscCam, PaperExampleMaximumRadialDimension) {
   // Paper §5: "The cam profile, which has a maximum radial dimension of 63.525 mm".
-  const DiscCam cam = PaperExample();
+  const DiscCam cam = DiscCamPaperExample();
   double rmax = 0.0;
   for (int i = 0; i < 3600; ++i) rmax = std::max(rmax, EvaluateCam(cam, 2 * kPi * i / 3600).radial_dimension);
   EXPECT_NEAR(rmax, 63.525, 5e-4);
@@ -70,7 +45,7 @@ TEST(DiscCam, PaperExampleMaximumRadialDimension) {
 }
 
 TEST(DiscCam, BaseCircleInTheLowDwell) {
-  for (const DiscCam& cam : {PaperExample(), OscillatingExample()}) {
+  for (const DiscCam& cam : {DiscCamPaperExample(), DiscCamOscillatingExample()}) {
     const CamPoint<double> p = EvaluateCam(cam, 330 * kDeg);
     EXPECT_NEAR(p.radial_dimension, 40.0, 1e-12);
     EXPECT_NEAR(p.pitch.norm(), 50.0, 1e-12);
@@ -117,15 +92,15 @@ void CheckAgainstPitchCurve(const DiscCam& cam) {
   }
 }
 
-TEST(DiscCam, TranslatingGeometryAgreesWithThePitchCurve) { CheckAgainstPitchCurve(PaperExample()); }
+TEST(DiscCam, TranslatingGeometryAgreesWithThePitchCurve) { CheckAgainstPitchCurve(DiscCamPaperExample()); }
 TEST(DiscCam, OscillatingGeometryAgreesWithThePitchCurve) {
-  CheckAgainstPitchCurve(OscillatingExample());
+  CheckAgainstPitchCurve(DiscCamOscillatingExample());
 }
 
 TEST(DiscCam, OscillatingProfileMatchesPaperEquation7) {
   // Eq. (7) literally: A = (QC − r_f) u(θ + α) − q u(θ), with q (8), QC (9), α (10), ξ (11);
   // and eq. (12) for the pressure angle.
-  const DiscCam cam = OscillatingExample();
+  const DiscCam cam = DiscCamOscillatingExample();
   const double f = 100, l = 80, rf = 10;
   const double xi0 = std::acos((l * l + f * f - 50.0 * 50.0) / (2 * l * f));
   for (double t : Angles(53)) {
@@ -142,7 +117,7 @@ TEST(DiscCam, OscillatingProfileMatchesPaperEquation7) {
 }
 
 TEST(DiscCam, TranslatingProfileMatchesPaperEquation2) {
-  const DiscCam cam = PaperExample();
+  const DiscCam cam = DiscCamPaperExample();
   const double e = 12, rf = 10, L0 = std::sqrt(50.0 * 50.0 - e * e);
   for (double t : Angles(53)) {
     const motion::Svaj<double> m = cam.motion.Evaluate(t);
@@ -173,7 +148,7 @@ TEST(DiscCam, UndercutAgreesWithTheProfileFoldingOver) {
     undercut += IsUndercut(p, cam.roller_radius);
   }
   EXPECT_GT(undercut, 0);
-  for (double t : Angles(720)) EXPECT_FALSE(IsUndercut(EvaluateCam(PaperExample(), t), 10.0));
+  for (double t : Angles(720)) EXPECT_FALSE(IsUndercut(EvaluateCam(DiscCamPaperExample(), t), 10.0));
 }
 
 // The linearised errors (eqs. 17, 19, 22, 25, 29, 30) are the derivatives of the exact follower
@@ -200,17 +175,17 @@ void CheckLinearErrorAgainstExact(const DiscCam& cam) {
 }
 
 TEST(DiscCamError, TranslatingLinearErrorIsTheDerivativeOfTheExactMotion) {
-  CheckLinearErrorAgainstExact(PaperExample());
+  CheckLinearErrorAgainstExact(DiscCamPaperExample());
 }
 TEST(DiscCamError, OscillatingLinearErrorIsTheDerivativeOfTheExactMotion) {
-  CheckLinearErrorAgainstExact(OscillatingExample());
+  CheckLinearErrorAgainstExact(DiscCamOscillatingExample());
 }
 
 TEST(DiscCamError, OscillatingExampleAgreesWithTheExactFollowerAngle) {
   // The oscillating example with all deviations at their tolerances (Δn = 5, Δr = 19,
   // Δr_f = 9 µm): the follower angle recomputed by intersecting the roller circle with the
   // perturbed profile differs from the linearised ΔS by second-order terms only.
-  const DiscCam cam = OscillatingExample();
+  const DiscCam cam = DiscCamOscillatingExample();
   const Deviations<double> d{0.005, 0.019, 0.009};
   for (int i = 0; i < 360; ++i) {
     const double t = 2 * kPi * i / 360;
@@ -227,7 +202,7 @@ TEST(DiscCamError, PaperExampleCurvesHaveTheShapeOfFig12) {
   // IT6: Δr = 19 µm, Δr_f = 9 µm. Fig. 12 and §5: ΔS_rf = Δr_f / cos φ ≥ Δr_f; the shift angle
   // counteracts the pressure angle, so ΔS_r varies less than ΔS_rf; φ and λ have similar trends;
   // ΔS_wor = ΔS_r + ΔS_rf ≥ ΔS_rms.
-  const DiscCam cam = PaperExample();
+  const DiscCam cam = DiscCamPaperExample();
   const Deviations<double> tol{0.0, 0.019, 0.009};
   double wor_max = 0, wor_at = 0, r_max = 0, r_max_without_shift = 0;
   for (int i = 0; i < 3600; ++i) {
@@ -257,7 +232,7 @@ TEST(DiscCamError, PaperExampleCurvesHaveTheShapeOfFig12) {
 }
 
 TEST(DiscCamError, MonteCarloShowsTheLinearModelHoldsAtToleranceScale) {
-  const DiscCam cam = PaperExample();
+  const DiscCam cam = DiscCamPaperExample();
   MonteCarloOptions opt;
   opt.samples = 20;
   opt.angle_steps = 90;
@@ -274,7 +249,7 @@ TEST(DiscCamError, MonteCarloShowsTheLinearModelHoldsAtToleranceScale) {
 TEST(DiscCamGradients, TranslatingPointMatchesCentralDifferences) {
   auto f = [](const auto& x) {
     using T = std::decay_t<decltype(x[0])>;
-    const DiscCamTpl<T> cam = PaperExample<T>(x[0], x[1], x[2], x[3]);
+    const DiscCamTpl<T> cam = DiscCamPaperExample<T>(x[0], x[1], x[2], x[3]);
     std::vector<T> out;
     for (double th : {0.4, 1.3, 2.5, 3.9, 5.8}) {
       const CamPoint<T> p = EvaluateCam(cam, T(th));
@@ -290,7 +265,7 @@ TEST(DiscCamGradients, TranslatingPointMatchesCentralDifferences) {
 TEST(DiscCamGradients, OscillatingPointMatchesCentralDifferences) {
   auto f = [](const auto& x) {
     using T = std::decay_t<decltype(x[0])>;
-    const DiscCamTpl<T> cam = OscillatingExample<T>(x[0], x[1], x[2], x[3], x[4]);
+    const DiscCamTpl<T> cam = DiscCamOscillatingExample<T>(x[0], x[1], x[2], x[3], x[4]);
     std::vector<T> out;
     for (double th : {0.4, 1.3, 2.5, 3.9, 5.8}) {
       const CamPoint<T> p = EvaluateCam(cam, T(th));
@@ -305,7 +280,7 @@ TEST(DiscCamGradients, OscillatingPointMatchesCentralDifferences) {
 }
 
 TEST(DiscCamSummary, AggregatesAgreeWithThePaperExampleAndUndercut) {
-  const CamSummary<double> s = SummarizeCam(PaperExample(), Deviations<double>{0.0, 0.019, 0.009}, 3600);
+  const CamSummary<double> s = SummarizeCam(DiscCamPaperExample(), Deviations<double>{0.0, 0.019, 0.009}, 3600);
   EXPECT_NEAR(s.max_radial_dimension, 63.525, 5e-4);
   EXPECT_GT(s.curvature_margin, 0.0);  // no undercut
   EXPECT_GE(s.soft_max_abs_pressure_angle, s.max_abs_pressure_angle);
@@ -316,13 +291,103 @@ TEST(DiscCamSummary, AggregatesAgreeWithThePaperExampleAndUndercut) {
 TEST(DiscCamGradients, SummaryMatchesCentralDifferences) {
   auto f = [](const auto& x) {
     using T = std::decay_t<decltype(x[0])>;
-    const DiscCamTpl<T> cam = PaperExample<T>(x[0], x[1], x[2], x[3]);
+    const DiscCamTpl<T> cam = DiscCamPaperExample<T>(x[0], x[1], x[2], x[3]);
     const CamSummary<T> s = SummarizeCam(cam, Deviations<T>{T(0.0), T(0.019), T(0.009)}, 360);
     return std::vector<T>{s.max_radial_dimension, s.max_abs_pressure_angle,
                           s.soft_max_abs_pressure_angle, s.curvature_margin,
                           s.max_worst_case_error, s.max_rms_error};
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<4>(f, {40.0, 10.0, 12.0, 24.0}, 1e-5, 1e-9);
+}
+
+// CheckDesign: one test per kind of issue, each on a design that breaks exactly that rule.
+const DesignIssue* Find(const std::vector<DesignIssue>& issues, IssueKind kind) {
+  for (const auto& i : issues)
+    if (i.kind == kind) return &i;
+  return nullptr;
+}
+
+TEST(DiscCamCheckDesign, TheExamplesAreFeasible) {
+  EXPECT_TRUE(CheckDesign(DiscCamPaperExample(), 3600).empty());
+  EXPECT_TRUE(CheckDesign(DiscCamOscillatingExample(), 3600).empty());
+}
+
+TEST(DiscCamCheckDesign, OffsetBeyondBaseCircleAndRoller) {
+  const auto issues = CheckDesign(DiscCamPaperExample(40.0, 10.0, 55.0), 360);
+  ASSERT_EQ(issues.size(), 1u);  // the geometry fails: the cycle is not evaluated
+  EXPECT_EQ(issues[0].kind, IssueKind::kOffsetTooLarge);
+  EXPECT_EQ(issues[0].value, 55.0);
+  EXPECT_EQ(issues[0].upper, 50.0);
+  EXPECT_TRUE(CheckGeometry(DiscCamPaperExample(40.0, 10.0, -49.0)).empty());
+}
+
+TEST(DiscCamCheckDesign, ArmThatCannotReachTheBaseCircle) {
+  // f = 100, l = 20: the roller centre stays ≥ 80 mm from the cam centre, the base circle + roller
+  // is 50 mm.
+  const auto issues = CheckDesign(DiscCamOscillatingExample(40.0, 10.0, 100.0, 20.0), 360);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, IssueKind::kArmCannotReach);
+  EXPECT_EQ(issues[0].value, 50.0);
+  EXPECT_EQ(issues[0].lower, 80.0);
+  EXPECT_EQ(issues[0].upper, 120.0);
+  // Too far the other way: f + l = 45 < 50.
+  EXPECT_EQ(CheckGeometry(DiscCamOscillatingExample(40.0, 10.0, 25.0, 20.0)).at(0).kind,
+            IssueKind::kArmCannotReach);
+}
+
+TEST(DiscCamCheckDesign, FollowerInsideTheBaseCircle) {
+  DiscCam cam = DiscCamPaperExample();
+  cam.motion = motion::MotionProgram<double>({{MotionLaw::kCycloidal, -10.0, kPi},
+                                              {MotionLaw::kCycloidal, 10.0, kPi}});
+  const auto issues = CheckDesign(cam, 360);
+  const DesignIssue* inside = Find(issues, IssueKind::kInsideBaseCircle);
+  ASSERT_NE(inside, nullptr);
+  EXPECT_EQ(issues[0].kind, IssueKind::kInsideBaseCircle);
+  EXPECT_LT(inside->value, 0.0);
+  EXPECT_NEAR(inside->cam_angle_rad, 2 * kPi / 360, 1e-15);  // the first sample after θ = 0
+}
+
+TEST(DiscCamCheckDesign, ArmCrossingTheCamCentreLine) {
+  // ξ₀ = acos((80² + 100² − 50²)/(2·80·100)) ≈ 29.7°: a rise of 160° takes ξ past 180°.
+  const auto issues = CheckDesign(DiscCamOscillatingExample(40.0, 10.0, 100.0, 80.0, 160 * kDeg), 360);
+  const DesignIssue* arm = Find(issues, IssueKind::kArmOutOfRange);
+  ASSERT_NE(arm, nullptr);
+  const double xi0 = std::acos((80.0 * 80 + 100.0 * 100 - 50.0 * 50) / (2 * 80.0 * 100));
+  EXPECT_GE(arm->value, kPi);
+  EXPECT_LE(arm->value, xi0 + 160 * kDeg + 1e-12);
+}
+
+TEST(DiscCamCheckDesign, PressureAngleAtTheJamLimit) {
+  DiscCam cam = DiscCamPaperExample();
+  cam.motion = motion::MotionProgram<double>({{MotionLaw::kCycloidal, 80.0, 1 * kDeg},
+                                              {MotionLaw::kCycloidal, -80.0, 359 * kDeg}});
+  const auto issues = CheckDesign(cam, 3600);
+  const DesignIssue* jam = Find(issues, IssueKind::kJams);
+  ASSERT_NE(jam, nullptr);
+  EXPECT_GE(std::abs(jam->value), 89 * kDeg);
+  EXPECT_LT(jam->cam_angle_rad, 1 * kDeg);  // within the 1° rise
+  EXPECT_NEAR(kJamPressureAngle, 89 * kDeg, 1e-15);
+}
+
+TEST(DiscCamMechanicalError, RadialErrorRatioOnTheBaseCircle) {
+  // Translating, low dwell: λ = 0 and cos φ = L₀/(r_b + r_f), L₀ = sqrt(50² − 12²).
+  const CamPoint<double> p = EvaluateCam(DiscCamPaperExample(), 330 * kDeg);
+  EXPECT_NEAR(RadialErrorRatio(p), 50.0 / std::sqrt(50.0 * 50.0 - 144.0), 1e-12);
+}
+
+TEST(DiscCam, OscillatingPivotAndArm) {
+  // The pivot sits at distance f from the cam centre and the roller centre at l from the pivot.
+  const DiscCam cam = DiscCamOscillatingExample();
+  for (double t : {0.0, 1.0, 4.0}) {
+    const Vec2<double> o3 = FollowerPivot(cam, t);
+    EXPECT_NEAR(o3.norm(), 100.0, 1e-12);
+    EXPECT_NEAR((EvaluateCam(cam, t).pitch - o3).norm(), 80.0, 1e-12);
+  }
+}
+
+TEST(DiscCamMechanicalError, RollerCentreDisplacementPerFollowerUnit) {
+  EXPECT_EQ(RollerCentreMmPerFollowerUnit(DiscCamPaperExample()), 1.0);
+  EXPECT_EQ(RollerCentreMmPerFollowerUnit(DiscCamOscillatingExample()), 80.0);  // the arm length l
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/globoidal/check.h"
 #include "model/globoidal/globoidal.h"
 #include "model/globoidal/paper_example.h"
 #include "tests/test_util.h"
@@ -52,7 +53,7 @@ TEST(GloboidalPaper, ModifiedSineProgram) {
   const auto cam = PaperCam<double>();
   EXPECT_NEAR(cam.motion.Period(), 2 * kPi, 1e-12);
   EXPECT_NEAR(cam.motion.NetRise(), 0.0, 1e-15);
-  // Peak acceleration of the rise: Ca φ_f / θ_f1², Ca = 4π²/(4 + π) ≈ 5.528 (NOTES §5).
+  // Peak acceleration of the rise: Ca φ_f / θ_f1², Ca = 4π²/(4 + π) ≈ 5.528 (docs/papers.md §5).
   double amax = 0, vmax = 0;
   for (int i = 0; i <= 6000; ++i) {
     const auto s = cam.motion.Evaluate(60.0 * kDeg * i / 6000);
@@ -314,6 +315,113 @@ TEST(GloboidalGeometry, GradientsMatchCentralDifferences) {
       camopt::testing::ExpectJacobianMatchesCentralDifferences<7>(
           f, {45.0, 4.0, 22.0, 45 * kDeg, 20 * kDeg, 23.0, tdeg * kDeg}, 2e-5, 1e-7);
     }
+}
+
+// CheckDesign: one test per kind of issue, each on the paper's design broken in one way.
+DynamicsInput PaperInput(const GloboidalCam<double>& cam = PaperCam<double>()) {
+  DynamicsInput in;
+  in.cam = cam;
+  return in;
+}
+
+const DesignIssue* Find(const std::vector<DesignIssue>& issues, IssueKind kind) {
+  for (const auto& i : issues)
+    if (i.kind == kind) return &i;
+  return nullptr;
+}
+
+TEST(GloboidalCheckDesign, ThePaperDesignIsFeasible) {
+  EXPECT_TRUE(CheckDesign(PaperInput(), 720, 7).empty());
+  // Rib at l₂ = 19.5 mm between rollers 45° apart, R = 4 mm.
+  EXPECT_NEAR(RibThickness(PaperCam<double>()), 2 * 19.5 * std::sin(22.5 * kDeg) - 8.0, 1e-12);
+}
+
+TEST(GloboidalCheckDesign, RollerPastTheTurretAxis) {
+  auto cam = PaperCam<double>();
+  cam.roller_length = 50.0;  // m/2 = 25 > R_e = 22
+  const auto issues = CheckDesign(PaperInput(cam), 72, 3);
+  ASSERT_FALSE(issues.empty());
+  EXPECT_EQ(issues[0].kind, IssueKind::kRollerPastTurretAxis);
+  EXPECT_EQ(issues[0].value, 50.0);
+  EXPECT_EQ(issues[0].upper, 44.0);
+}
+
+TEST(GloboidalCheckDesign, RollersReachTheCamAxis) {
+  const auto issues = CheckDesign(PaperInput(PaperCam<double>(28.0)), 72, 3);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, IssueKind::kRollersReachCamAxis);
+  EXPECT_EQ(issues[0].lower, 25.5 + 4.0);  // l₁ + R
+}
+
+TEST(GloboidalCheckDesign, RollersOverlap) {
+  const auto cam = PaperCam<double>(45.0, 4.0, 22.0, 20 * kDeg);
+  const auto issues = CheckDesign(PaperInput(cam), 72, 3);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, IssueKind::kRollersOverlap);
+  EXPECT_NEAR(issues[0].value, 2 * 19.5 * std::sin(10 * kDeg), 1e-12);
+  EXPECT_EQ(issues[0].lower, 8.0);
+  EXPECT_LT(RibThickness(cam), 0.0);
+}
+
+TEST(GloboidalCheckDesign, SwingThatMissesTheDeadPoint) {
+  auto cam = PaperCam<double>();
+  cam.motion = RiseDwellReturnDwell(motion::MotionLaw::kModifiedSine, 15 * kDeg, 60 * kDeg,
+                                    60 * kDeg, 135 * kDeg, 105 * kDeg);
+  const auto issues = CheckDesign(PaperInput(cam), 72, 3);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, IssueKind::kSwingRange);
+  EXPECT_EQ(issues[0].value, 20 * kDeg);
+  EXPECT_NEAR(issues[0].lower, 0.0, 1e-12);
+  EXPECT_NEAR(issues[0].upper, 15 * kDeg, 1e-9);
+}
+
+TEST(GloboidalCheckDesign, ContactArmOffTheRoller) {
+  DynamicsInput in = PaperInput();
+  in.contact_arm_mm = 30.0;
+  const auto issues = CheckDesign(in, 72, 3);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, IssueKind::kContactArmOutside);
+  EXPECT_EQ(issues[0].lower, 19.5);
+  EXPECT_EQ(issues[0].upper, 25.5);
+  // The default arm is the roller middle R_e.
+  EXPECT_EQ(ContactArm(PaperInput()), 22.0);
+  EXPECT_EQ(ContactArm(in), 30.0);
+}
+
+TEST(GloboidalCheckDesign, PressureAngleAtTheJamLimit) {
+  auto cam = PaperCam<double>();
+  cam.motion = RiseDwellReturnDwell(motion::MotionLaw::kModifiedSine, 20 * kDeg, 0.5 * kDeg,
+                                    119.5 * kDeg, 135 * kDeg, 105 * kDeg);
+  const auto issues = CheckDesign(PaperInput(cam), 720, 7);
+  const DesignIssue* jam = Find(issues, IssueKind::kJams);
+  ASSERT_NE(jam, nullptr);
+  EXPECT_GE(jam->value, 89 * kDeg);
+  EXPECT_LT(jam->cam_angle_rad, 0.5 * kDeg);  // within the short rise
+}
+
+TEST(GloboidalCheckDesign, SurveyFindsTheClosedFormPressureAngle) {
+  // The survey's largest |α| is at least the closed form's at any sampled point.
+  const auto cam = PaperCam<double>();
+  const CycleSurvey s = SurveyCycle(cam, 22.0, 720, 7);
+  ASSERT_TRUE(s.max_abs_pressure_angle.set);
+  const RollerAngle<double> a = RollerAngleAt(cam, 1, 30 * kDeg);  // middle of the rise
+  EXPECT_GE(s.max_abs_pressure_angle.value, std::abs(PressureAngleClosedForm(cam, a, 25.5)) - 1e-12);
+  EXPECT_GT(s.min_undercut_margin.value, 0.0);
+  EXPECT_FALSE(s.conformal);
+  // The grid series: roller angles of eq. (1) and the closed-form pressure angle at l₁ and l₂.
+  ASSERT_EQ(s.grid.roller_angle[0].size(), 720u);
+  for (int i : {0, 60, 100, 400}) {
+    const double t = 2 * kPi * i / 720;
+    for (int j = 1; j <= 2; ++j) {
+      const RollerAngle<double> r = RollerAngleAt(cam, j, t);
+      EXPECT_NEAR(s.grid.roller_angle[j - 1][i], r.phi, 1e-12);
+      EXPECT_NEAR(std::abs(s.grid.pressure_angle_at_l1[j - 1][i]),
+                  std::abs(PressureAngleClosedForm(cam, r, 25.5)), 1e-9);
+      EXPECT_NEAR(std::abs(s.grid.pressure_angle_at_l2[j - 1][i]),
+                  std::abs(PressureAngleClosedForm(cam, r, 19.5)), 1e-9);
+    }
+    EXPECT_GE(s.grid.min_undercut_margin[i], s.min_undercut_margin.value);
+  }
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-// The globoidal_cam study through the CLI: the paper's example end to end (the paper's printed
-// numbers, the exported surfaces against an independent roller-axis construction, the STL mesh),
-// and bad input rejected with exit code 2 and the JSON path.
+// The globoidal_cam study: the paper's example through the C++ entry points (the paper's printed
+// numbers, the surfaces to export against an independent roller-axis construction), the files the
+// CLI writes (point cloud, STL mesh), and bad input rejected with exit code 2 and the JSON path.
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/scalar.h"
+#include "studies/globoidal_cam_study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -23,6 +24,9 @@ using camopt::testing::SourcePath;
 using camopt::testing::TempDir;
 using camopt::testing::WriteFile;
 using nlohmann::json;
+using studies::Node;
+using studies::RunContext;
+namespace globoidal_study = studies::globoidal_cam;
 
 constexpr double kDeg = kPi / 180.0;
 
@@ -55,27 +59,38 @@ std::map<std::string, std::vector<double>> ReadCsv(const std::string& csv) {
 // peak acceleration coefficient is 4π²/(4 + π).
 double ModifiedSineCa() { return 4 * kPi * kPi / (4 + kPi); }
 
-TEST(GloboidalStudy, PaperExampleThroughTheCli) {
-  const auto dir = TempDir("globoidal-paper");
-  const auto res = RunCamopt("run " + SourcePath("studies/examples/globoidal_cam_paper.json") +
-                             " --quiet --out " + dir.string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const json r = json::parse(ReadFile(dir / "result.json"));
+// Parse and Run, the C++ entry points of the kind.
+struct Ran {
+  globoidal_study::Study study;
+  globoidal_study::Result result;
+};
+Ran ParseAndRun(const json& file) {
+  const Node root(&file, "study.json", "");
+  Ran r{globoidal_study::Parse(root), {}};
+  RunContext ctx;
+  ctx.quiet = true;
+  r.result = globoidal_study::Run(r.study, ctx);
+  return r;
+}
+
+TEST(GloboidalStudy, PaperExample) {
+  const Ran ran = ParseAndRun(Example());
+  const globoidal_study::Result& r = ran.result;
   // Eqs. (8)–(9) and (7).
-  EXPECT_DOUBLE_EQ(r["roller_axis_limits_mm"]["l1"].get<double>(), 25.5);
-  EXPECT_DOUBLE_EQ(r["roller_axis_limits_mm"]["l2"].get<double>(), 19.5);
-  EXPECT_NEAR(r["initial_angles_deg"]["top_dead_point"]["roller_1"].get<double>(), 12.5, 1e-12);
-  EXPECT_NEAR(r["initial_angles_deg"]["top_dead_point"]["roller_2"].get<double>(), -32.5, 1e-12);
-  EXPECT_NEAR(r["initial_angles_deg"]["bottom_dead_point"]["roller_1"].get<double>(), 32.5, 1e-12);
-  EXPECT_NEAR(r["initial_angles_deg"]["bottom_dead_point"]["roller_2"].get<double>(), -12.5, 1e-12);
-  EXPECT_NEAR(r["roller_angle_range_deg"]["roller_1"][0].get<double>(), 12.5, 1e-9);
-  EXPECT_NEAR(r["roller_angle_range_deg"]["roller_1"][1].get<double>(), 32.5, 1e-9);
-  EXPECT_NEAR(r["roller_angle_range_deg"]["roller_2"][0].get<double>(), -32.5, 1e-9);
-  EXPECT_FALSE(r["undercut"].get<bool>());
-  EXPECT_GT(r["min_undercut_margin"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(r.roller_axis_limits_mm.l1, 25.5);
+  EXPECT_DOUBLE_EQ(r.roller_axis_limits_mm.l2, 19.5);
+  EXPECT_NEAR(r.initial_angle_top_deg[0], 12.5, 1e-12);
+  EXPECT_NEAR(r.initial_angle_top_deg[1], -32.5, 1e-12);
+  EXPECT_NEAR(r.initial_angle_bottom_deg[0], 32.5, 1e-12);
+  EXPECT_NEAR(r.initial_angle_bottom_deg[1], -12.5, 1e-12);
+  EXPECT_NEAR(r.roller_angle_range_deg[0][0], 12.5, 1e-9);
+  EXPECT_NEAR(r.roller_angle_range_deg[0][1], 32.5, 1e-9);
+  EXPECT_NEAR(r.roller_angle_range_deg[1][0], -32.5, 1e-9);
+  EXPECT_FALSE(r.undercut);
+  EXPECT_GT(r.survey.min_undercut_margin.value, 0.0);
   // Peak acceleration of the swing per rad²: Ca φ_f/θ_f1² on the 60° rise.
-  EXPECT_NEAR(r["motion"]["peak_acceleration_deg_per_rad2"].get<double>(),
-              ModifiedSineCa() * 20.0 / std::pow(60 * kDeg, 2), 1e-3);
+  EXPECT_NEAR(r.peak_acceleration_deg_per_rad2, ModifiedSineCa() * 20.0 / std::pow(60 * kDeg, 2),
+              1e-3);
   // The largest pressure angle from the closed form tan α = l φ'/(C − l cos φ), maximised here
   // by brute force over the rise (peak φ' at its middle for l = l₁, checked on a grid).
   {
@@ -98,23 +113,60 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
           best = std::max(best, std::atan(l * dphi / (45 - l * std::cos(phi))));
         }
     }
-    EXPECT_NEAR(r["max_pressure_angle_deg"].get<double>(), best / kDeg, 0.05);
+    EXPECT_NEAR(r.survey.max_abs_pressure_angle.value / kDeg, best / kDeg, 0.05);
   }
 
   // Dynamics at both speeds: the kinematic peak acceleration Ca φ_f ω²/θ_f1² (sampled), the
   // dynamic force never below the static share of the load, and the slower run deflects less.
-  const auto& speeds = r["dynamics"]["speeds"];
+  const auto& speeds = r.speeds;
   ASSERT_EQ(speeds.size(), 2u);
   for (const auto& s : speeds) {
-    const double w = s["cam_speed_rpm"].get<double>() * 2 * kPi / 60;
+    ASSERT_TRUE(s.failed.empty()) << s.failed;
+    const double w = s.cam_speed_rpm * 2 * kPi / 60;
     const double expect = ModifiedSineCa() * 20 * kDeg * w * w / std::pow(60 * kDeg, 2);
-    EXPECT_NEAR(s["peak_turret_acceleration_kinematic_rad_s2"].get<double>() / expect, 1.0, 2e-3);
-    EXPECT_GT(s["max_force_roller_1_N"].get<double>(), 500e3 / 22.0);
-    EXPECT_GE(s["max_quasi_static_force_N"].get<double>(), 500e3 / 22.0);
+    EXPECT_NEAR(s.peak_turret_acceleration_kinematic_rad_s2 / expect, 1.0, 2e-3);
+    EXPECT_GT(s.max_force_roller_1_N, 500e3 / 22.0);
+    EXPECT_GE(s.max_quasi_static_force_N, 500e3 / 22.0);
   }
-  EXPECT_LT(speeds[1]["peak_turret_acceleration_dynamic_rad_s2"].get<double>(),
-            speeds[0]["peak_turret_acceleration_dynamic_rad_s2"].get<double>());
+  EXPECT_LT(speeds[1].peak_turret_acceleration_dynamic_rad_s2,
+            speeds[0].peak_turret_acceleration_dynamic_rad_s2);
 
+  // The working surfaces to export: every point is R = 4 mm from the roller axis built here from
+  // eq. (4) with the roller angle of the series (the export grid is every second series angle).
+  ASSERT_EQ(r.surface_axis_mm.size(), 6u);
+  size_t count = 0;
+  for (int j = 1; j <= 2; ++j) {
+    const auto& pts = r.surface_points[j - 1];
+    ASSERT_EQ(pts.size(), 360u);
+    for (size_t i = 0; i < pts.size(); ++i) {
+      for (size_t m = 0; m < pts[i].size(); ++m, ++count) {
+        if (count % 7 != 0) continue;
+        const double t = 2 * kPi * i / 360;
+        const double phi = r.series.roller_angle_deg[j - 1][2 * i] * kDeg;
+        const double px = 45 * std::sin(t), py = 45 * std::cos(t);
+        const double qx = -std::cos(phi) * std::sin(t), qy = -std::cos(phi) * std::cos(t),
+                     qz = std::sin(phi);
+        const double vx = pts[i][m].x() - px, vy = pts[i][m].y() - py, vz = pts[i][m].z();
+        const double along = vx * qx + vy * qy + vz * qz;
+        const double dist = std::sqrt(vx * vx + vy * vy + vz * vz - along * along);
+        EXPECT_NEAR(dist, 4.0, 1e-6) << count;
+        EXPECT_NEAR(along, r.surface_axis_mm[m], 1e-6) << count;
+      }
+    }
+  }
+  EXPECT_EQ(count, 2u * 360 * 6);
+}
+
+TEST(GloboidalStudy, PaperExampleThroughTheCli) {
+  const auto dir = TempDir("globoidal-paper");
+  const auto res = RunCamopt("run " + SourcePath("studies/examples/globoidal_cam_paper.json") +
+                             " --quiet --out " + dir.string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const json r = json::parse(ReadFile(dir / "result.json"));
+  EXPECT_EQ(r["dynamics"]["speeds"].size(), 2u);
+  // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
+  const Ran ran = ParseAndRun(Example());
+  EXPECT_EQ(r, globoidal_study::ToJson(ran.study, ran.result));
   for (const char* f : {"series.csv", "dynamics_600rpm.csv", "dynamics_120rpm.csv",
                         "svaj_displacement.svg", "svaj_velocity.svg", "svaj_acceleration.svg",
                         "svaj_jerk.svg", "pressure_angle.svg", "contact_forces_600rpm.svg",
@@ -123,26 +175,9 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
                         "working_surfaces.stl"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
 
-  // The exported working surfaces: every point is R = 4 mm from the roller axis built here from
-  // eq. (4) with the roller angle of series.csv (the export grid is every second series row).
-  const auto series = ReadCsv(ReadFile(dir / "series.csv"));
+  // The exported point cloud: one row per surface point.
   const auto cloud = ReadCsv(ReadFile(dir / "working_surfaces.csv"));
   ASSERT_EQ(cloud.at("x_mm").size(), 2u * 360 * 6);
-  for (size_t i = 0; i < cloud.at("x_mm").size(); i += 7) {
-    const int j = int(cloud.at("roller")[i]);
-    const double t = cloud.at("cam_angle_deg")[i] * kDeg;
-    const size_t row = size_t(std::lround(cloud.at("cam_angle_deg")[i] * 2));
-    const double phi = series.at(j == 1 ? "roller_1_angle_deg" : "roller_2_angle_deg")[row] * kDeg;
-    const double px = 45 * std::sin(t), py = 45 * std::cos(t);
-    const double qx = -std::cos(phi) * std::sin(t), qy = -std::cos(phi) * std::cos(t),
-                 qz = std::sin(phi);
-    const double vx = cloud.at("x_mm")[i] - px, vy = cloud.at("y_mm")[i] - py,
-                 vz = cloud.at("z_mm")[i];
-    const double along = vx * qx + vy * qy + vz * qz;
-    const double dist = std::sqrt(vx * vx + vy * vy + vz * vz - along * along);
-    EXPECT_NEAR(dist, 4.0, 1e-6) << i;
-    EXPECT_NEAR(along, cloud.at("axis_mm")[i], 1e-6) << i;
-  }
   // ASCII STL: 2 rollers × 360 × 5 cells × 2 triangles, unit facet normals.
   const std::string stl = ReadFile(dir / "working_surfaces.stl");
   EXPECT_EQ(stl.rfind("solid ", 0), 0u);
@@ -163,21 +198,19 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
 }
 
 TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
-  const auto dir = TempDir("globoidal-undercut");
   json study = Example();
   study["cam"]["roller_radius_mm"] = 7.5;
   study["cam"]["roller_angle_deg"] = 60;
   study["motion"] = json::parse(R"([{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 12},
       {"law": "dwell", "cam_angle_deg": 108}, {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 135},
       {"law": "dwell", "cam_angle_deg": 105}])");
-  WriteFile(dir / "study.json", study.dump());
-  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
-                             (dir / "out").string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const json r = json::parse(ReadFile(dir / "out" / "result.json"));
-  EXPECT_TRUE(r["undercut"].get<bool>());
-  EXPECT_LE(r["min_undercut_margin"].get<double>(), 0.0);
-  EXPECT_TRUE(r["dynamics"].contains("skipped"));
+  const Ran ran = ParseAndRun(study);
+  const globoidal_study::Result& r = ran.result;
+  EXPECT_TRUE(r.undercut);
+  EXPECT_LE(r.survey.min_undercut_margin.value, 0.0);
+  EXPECT_FALSE(r.dynamics_skipped.empty());
+  EXPECT_TRUE(r.speeds.empty());
+  EXPECT_TRUE(globoidal_study::ToJson(ran.study, r)["dynamics"].contains("skipped"));
 }
 
 struct BadCase {

@@ -1,7 +1,10 @@
-// The papers' reference designs, shared by every suite (LCR I, II, III of Table 2).
+// The papers' reference designs, shared by every suite and the benchmarks: LCR I, II, III of
+// Table 2; the disc-cam example of Rzine et al. and an oscillating-follower disc cam.
 #pragma once
 
+#include "model/disc_cam/disc_cam.h"
 #include "model/lcr/reducer.h"
+#include "model/motion/motion_program.h"
 #include "objectives/lcr_sizing.h"
 
 namespace camopt::testing {
@@ -36,6 +39,48 @@ inline objectives::LcrSizingSpec LcrIISizingSpec(
   s.limits = {1500, 1050, 0.5, 1.0};
   s.form = form;
   return s;
+}
+
+/// The disc-cam example of Rzine et al. §5 (docs/disc_cam.md; studies/examples/
+/// disc_cam_translating.json): translating roller, r_b = 40, r_f = 10, offset e = 12 (mm);
+/// cycloidal rise of 24 mm over 120°, dwell 50°, cycloidal return over 120°, dwell 70°. The sizes
+/// can be given as T so that gradients can be taken with respect to them.
+template <typename T = double>
+disc_cam::DiscCamTpl<T> DiscCamPaperExample(T rb = T(40.0), T rf = T(10.0), T e = T(12.0),
+                                            T rise = T(24.0)) {
+  constexpr double kDeg = kPi / 180.0;
+  using motion::MotionLaw;
+  disc_cam::DiscCamTpl<T> cam;
+  cam.follower = disc_cam::FollowerType::kTranslatingRoller;
+  cam.base_radius = rb;
+  cam.roller_radius = rf;
+  cam.offset = e;
+  cam.motion = motion::MotionProgram<T>({{MotionLaw::kCycloidal, rise, T(120 * kDeg)},
+                                         {MotionLaw::kDwell, T(0.0), T(50 * kDeg)},
+                                         {MotionLaw::kCycloidal, -rise, T(120 * kDeg)},
+                                         {MotionLaw::kDwell, T(0.0), T(70 * kDeg)}});
+  return cam;
+}
+
+/// An oscillating roller follower (studies/examples/disc_cam_oscillating.json): r_b = 40, r_f = 10,
+/// pivot distance f = 100, arm l = 80 (mm); 20° modified-sine rise over 100°, dwell 60°, return
+/// over 100°, dwell 100°.
+template <typename T = double>
+disc_cam::DiscCamTpl<T> DiscCamOscillatingExample(T rb = T(40.0), T rf = T(10.0), T f = T(100.0),
+                                                  T l = T(80.0), T rise = T(20 * (kPi / 180.0))) {
+  constexpr double kDeg = kPi / 180.0;
+  using motion::MotionLaw;
+  disc_cam::DiscCamTpl<T> cam;
+  cam.follower = disc_cam::FollowerType::kOscillatingRoller;
+  cam.base_radius = rb;
+  cam.roller_radius = rf;
+  cam.pivot_distance = f;
+  cam.arm_length = l;
+  cam.motion = motion::MotionProgram<T>({{MotionLaw::kModifiedSine, rise, T(100 * kDeg)},
+                                         {MotionLaw::kDwell, T(0.0), T(60 * kDeg)},
+                                         {MotionLaw::kModifiedSine, -rise, T(100 * kDeg)},
+                                         {MotionLaw::kDwell, T(0.0), T(100 * kDeg)}});
+  return cam;
 }
 
 }  // namespace camopt::testing

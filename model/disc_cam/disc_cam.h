@@ -1,6 +1,6 @@
 // Disc cam with an offset translating roller follower or an oscillating roller follower:
 // pitch curve, profile, pressure angle, instant centre Q, shift angle, radius of curvature and
-// undercut. Rzine et al., "Mechanical Error Analysis of Disc Cam Mechanisms" (NOTES.md §2),
+// undercut. Rzine et al., "Mechanical Error Analysis of Disc Cam Mechanisms" (docs/papers.md §2),
 // eqs. (1)–(12), and eq. (28) for the shift angle λ.
 //
 // Frame and sense (the paper's): coordinates fixed on the cam, origin at the cam pivot O₂; the cam
@@ -70,6 +70,12 @@ T InitialFollowerCoordinate(const DiscCamTpl<T>& cam) {
   return acos((l * l + f * f - r0 * r0) / (T(2.0) * l * f));
 }
 
+/// The oscillating follower's pivot O₃ = f u(θ) in the cam frame [mm] (eq. 11).
+template <typename T>
+Vec2<T> FollowerPivot(const DiscCamTpl<T>& cam, const T& theta) {
+  return cam.pivot_distance * U(theta);
+}
+
 /// Evaluates the cam at angle theta [rad].
 template <typename T>
 CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
@@ -104,7 +110,7 @@ CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
     const T xi = InitialFollowerCoordinate(cam) + m.s;  // eq. (11)
     const T w1 = T(1.0) - m.v;                          // 1 − dξ/dθ
     const Vec2<T> w = U(theta + T(kPi) - xi);           // unit O₃ → C
-    p.pitch = f * u + l * w;
+    p.pitch = FollowerPivot(cam, theta) + l * w;
     p.pitch_d1 = f * ju + l * w1 * Perp(w);
     d2 = -f * u - l * w1 * w1 * w - l * m.a * Perp(w);
     // Eq. (8): q = f ξ'/(1 − ξ'), Q = −q u(θ). Q runs to infinity where ξ' = 1, so the normal
@@ -138,7 +144,7 @@ T ProfileRadiusOfCurvature(const CamPoint<T>& p, const T& roller_radius) {
 }
 
 /// Undercut: the pitch curve is convex with a radius smaller than the roller (κ r_f > 1), so the
-/// offset profile folds over itself (NOTES.md §1).
+/// offset profile folds over itself (docs/disc_cam.md).
 template <typename T>
 bool IsUndercut(const CamPoint<T>& p, const T& roller_radius) {
   return Value(p.pitch_curvature) * Value(roller_radius) > 1.0;

@@ -1,4 +1,4 @@
-// Mechanical error of the follower motion caused by tolerances: Rzine et al. (NOTES.md §2),
+// Mechanical error of the follower motion caused by tolerances: Rzine et al. (docs/papers.md §2),
 // eqs. (16)–(32), by the equivalent linkage and the small-displacement diagram. To first order:
 //   normal profile error Δn:      ΔS_n  = Δn / cos φ               (translating, eq. 17)
 //                                 ΔS_n  = Δn / (l cos φ)           (oscillating, eq. 22)
@@ -38,6 +38,21 @@ T NormalErrorGain(const DiscCamTpl<T>& cam, const CamPoint<T>& p) {
   const T c = cos(p.pressure_angle);
   return cam.follower == FollowerType::kTranslatingRoller ? T(1.0) / c
                                                           : T(1.0) / (cam.arm_length * c);
+}
+
+/// cos λ / cos φ: the follower error per unit radial-dimension error of a translating follower
+/// (eq. 29; an oscillating follower's adds the factor 1/l, eq. 30).
+template <typename T>
+T RadialErrorRatio(const CamPoint<T>& p) {
+  using std::cos;
+  return cos(p.shift_angle) / cos(p.pressure_angle);
+}
+
+/// Displacement of the roller centre per unit follower error: 1 for a translating follower (mm
+/// per mm), the arm length l for an oscillating one (mm per rad: the roller centre moves l·Δξ).
+template <typename T>
+T RollerCentreMmPerFollowerUnit(const DiscCamTpl<T>& cam) {
+  return cam.follower == FollowerType::kTranslatingRoller ? T(1.0) : cam.arm_length;
 }
 
 /// The follower errors at one cam angle for deviations d (signed) or tolerances (then the signs

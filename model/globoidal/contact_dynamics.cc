@@ -7,17 +7,13 @@
 namespace camopt::globoidal {
 namespace {
 
-double Arm(const DynamicsInput& in) {
-  return in.contact_arm_mm > 0.0 ? in.contact_arm_mm : in.cam.pitch_radius;
-}
-
 // Per-roller contact data at one cam angle: stiffness and the projection e_φ · n_j.
 struct RollerContact {
   double stiffness, swing_dot_normal, pressure_angle;
 };
 
 RollerContact Contact(const DynamicsInput& in, int j, double theta) {
-  const SurfacePoint<double> p = EvaluateSurface(in.cam, j, Arm(in), theta);
+  const SurfacePoint<double> p = EvaluateSurface(in.cam, j, ContactArm(in), theta);
   const double inv_r = 1.0 / in.cam.roller_radius + p.working_curvature;
   if (!(inv_r > 0.0) || !std::isfinite(inv_r))
     throw std::domain_error("globoidal contact: the working surface is conformal with or undercut "
@@ -41,7 +37,7 @@ Eval Evaluate(const DynamicsInput& in, double t, const State& s) {
   const double omega = in.cam_speed_rad_s;
   const double theta = in.start_cam_angle_rad + omega * t;
   const motion::Svaj<double> kin = in.cam.motion.Evaluate(theta);
-  const double l = Arm(in), p = in.cam.direction;
+  const double l = ContactArm(in), p = in.cam.direction;
   const ContactMaterial& c = in.contact;
   Eval e{};
   double q = -in.load_torque_Nmm;  // against the first motion, i.e. against ψ
@@ -81,7 +77,7 @@ double QuasiStaticForce(const DynamicsInput& in, double theta) {
   const double q = in.inertia_Nmms2 * kin.a * w * w + in.load_torque_Nmm;
   const int j = p * q >= 0.0 ? 1 : 2;  // roller 1 pushes along +p, roller 2 along −p
   const RollerContact rc = Contact(in, j, theta);
-  return std::abs(q) / (Arm(in) * std::abs(rc.swing_dot_normal));
+  return std::abs(q) / (ContactArm(in) * std::abs(rc.swing_dot_normal));
 }
 
 DynamicsResult SimulateDynamics(const DynamicsInput& in) {
@@ -89,7 +85,7 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   DynamicsResult out;
   out.stiffness[0] = RollerStiffness(in, 1, in.start_cam_angle_rad);
   out.stiffness[1] = RollerStiffness(in, 2, in.start_cam_angle_rad);
-  const double omega = in.cam_speed_rad_s, l = Arm(in), p = in.cam.direction;
+  const double omega = in.cam_speed_rad_s, l = ContactArm(in), p = in.cam.direction;
   const double theta0 = in.start_cam_angle_rad;
   const motion::Svaj<double> kin0 = in.cam.motion.Evaluate(theta0);
   State s{kin0.s, kin0.v * omega + in.initial_swing_rate_rad_s};

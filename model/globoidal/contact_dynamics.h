@@ -94,6 +94,11 @@ struct DynamicsResult {
   int steps = 0;
 };
 
+/// The contact arm l_c [mm]: contact_arm_mm when given (> 0), else the roller middle R_e.
+inline double ContactArm(const DynamicsInput& in) {
+  return in.contact_arm_mm > 0.0 ? in.contact_arm_mm : in.cam.pitch_radius;
+}
+
 /// Contact stiffness of roller j at cam angle θ from the geometry (eq. 11 with R₁ = R and R₂
 /// the working surface's radius across the roller at the contact arm).
 double RollerStiffness(const DynamicsInput& in, int j, double theta);

@@ -1,6 +1,6 @@
 // Globoidal cam with an oscillating, dual-stopping (two-roller) turret (Ge, Wang & Zhang,
 // "Model and simulation of globoidal cam mechanisms with oscillating and dual stopping
-// followers", NOTES.md §5).
+// followers", docs/papers.md §5).
 //
 // Cam frame oxyz: oz is the cam axis, the turret axis lies in the plane oxy at distance C from
 // oz, and oy is the projection of the turret's initial line. Roller j (1 = lower, 2 = upper) sits

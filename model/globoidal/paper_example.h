@@ -1,4 +1,4 @@
-// The paper's example design (§3; NOTES.md §5), shared by tests and benchmarks:
+// The paper's example design (§3; docs/papers.md §5), shared by tests and benchmarks:
 // C = 45, R = 4, R_e = 22, m = 5, e = 1 (mm), β = 45°, φ_f = 20°, cam angles 60°/60°/135°/105°
 // (rise, dwell, return, dwell), modified sine. The continuous parameters can be given as T so
 // that gradients can be taken with respect to them.

@@ -1,0 +1,53 @@
+// Study plumbing shared by the kinds that drive a follower with a motion program (disc_cam,
+// globoidal_cam): parsing the "motion" array, the joints' continuity report, the program sampled
+// over a cam revolution, and the four SVAJ plots.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/motion/motion_program.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::studies {
+
+/// How a kind writes its follower's rise in the study file.
+struct MotionInputSpec {
+  std::string rise_key;        ///< "rise_mm" or "rise_deg"
+  double rise_scale = 1.0;     ///< model units per file unit: 1 (mm) or π/180 (deg → rad)
+  std::string unit;            ///< "mm" or "deg", in messages
+  std::string subject;         ///< "follower" or "turret", in messages
+  /// A rise key in the other unit that is rejected with `misplaced_hint` ("" for none: then it
+  /// is an unknown field like any other).
+  std::string misplaced_key, misplaced_hint;
+};
+
+/// Parses a "motion" array of {law, <rise_key>, cam_angle_deg} into a program that covers one cam
+/// revolution and returns to its start. Throws StudyError naming the segment and field.
+motion::MotionProgram<double> ParseMotionProgram(const Node& motion, const MotionInputSpec& spec);
+
+/// The program at n equally spaced cam angles θᵢ = 2π i/n (model units).
+std::vector<motion::Svaj<double>> SampleMotion(const motion::MotionProgram<double>& program, int n);
+
+/// Largest |S'|, |S''|, |S'''| over samples (model units per rad^k).
+struct MotionPeaks {
+  double velocity = 0.0, acceleration = 0.0, jerk = 0.0;
+};
+MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples);
+
+/// The joints' continuity as result.json writes it: after_segment, cam_angle_deg, continuity
+/// ("C0".."C3" or "discontinuous").
+nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints);
+
+/// svaj_{displacement,velocity,acceleration,jerk}.svg against cam angle [deg]; titles
+/// "<title_prefix> displacement" …, y labels as given (the series.csv column names).
+void AddSvajPlots(Outputs& out, const std::string& title_prefix,
+                  const std::vector<double>& cam_angle_deg,
+                  const std::array<std::string, 4>& y_labels,
+                  const std::array<const std::vector<double>*, 4>& columns);
+
+}  // namespace camopt::studies
