@@ -2,6 +2,7 @@
 // made by a different study (lcr_analysis), the Table 4 fit with its covariance against the
 // linear-regression closed form (C++ entry points), and bad input (CLI).
 #include <cmath>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -113,6 +114,21 @@ TEST(LcrFrictionFit, Table4FitAndItsCovariance) {
     ASSERT_TRUE(res.rows[i].fitted_input_torque_sd_Nm.has_value());
     EXPECT_NEAR(*res.rows[i].fitted_input_torque_sd_Nm, std::sqrt(var), 1e-6 * std::sqrt(var));
   }
+}
+
+// The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run); fit.csv and
+// fit.svg are written.
+TEST(LcrFrictionFit, CliWritesTheEntryPointsResult) {
+  const json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
+  const auto dir = TempDir("friction-cli");
+  WriteFile(dir / "study.json", study.dump());
+  const auto r = RunCamopt("run " + (dir / "study.json").string() + " --out " + (dir / "out").string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const json written = json::parse(ReadFile(dir / "out" / "result.json"));
+  const studies::Node root(&study, "fit.json", "");
+  const fit::Study st = fit::Parse(root);
+  EXPECT_EQ(written, fit::ToJson(st, fit::Run(st, {"fit.json", true})));
+  for (const char* f : {"fit.csv", "fit.svg"}) EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
 }
 
 TEST(LcrFrictionFit, BadInputIsExitCode2) {
