@@ -1,5 +1,5 @@
 // LCR forces, torques, efficiency and Hertz stress at one input angle (paper §4, eqs. 20–33, in
-// the consistent form of NOTES §1).
+// the consistent form of docs/papers.md §1).
 //
 //   F_k = C |a_k| on loaded rollers (sign(a_k) = LoadedArmSign), 0 elsewhere   (paper eqs. 20–21)
 //   output turret:  T_o = C_B Σ a_Bj²                                           (eq. 25)
@@ -8,7 +8,7 @@
 //   eccentric load G = Σ F_k d_k + W (weight along −y); F_t = −G·t, F_r = G·u(θ), t = J u(θ)
 //   input torque    T_in = (F_t + μ |F_r|) e, efficiency η = T_o /(T_in |r_i|)   (eqs. 32–33,
 //                   written once in friction.h)
-//   Hertz line contact p = sqrt(F E* /(π L R')), R' = r_r (1 − r_r κ)           (NOTES §1)
+//   Hertz line contact p = sqrt(F E* /(π L R')), R' = r_r (1 − r_r κ)           (docs/papers.md §1)
 // Without friction e F_t = T_o/|r_i| exactly (power balance), which the tests check.
 #pragma once
 

@@ -1,6 +1,6 @@
 // LCR cam profiles (paper eqs. 4–9 and the tool path P_t), curvature and undercut.
 //
-// In the cam frame (NOTES §1) the roller-centre trajectory of either cam is
+// In the cam frame (docs/papers.md §1) the roller-centre trajectory of either cam is
 //     X(ψ) = r_d u(ψ) − e u(kψ),   k = n/(n − m),   ψ ∈ [0, 2π),
 // (input cam: ψ = (n_A − m_A)θ/m_A; output cam: ψ = n_A (n_B − m_B) θ/(m_A n_B)), so both cams of the
 // conjugate cam are drawn in one frame with roller 1 at angle 0 at θ = 0. It is the paper's

@@ -1,5 +1,5 @@
 // The lobe cam reducer (LCR) design, templated over the scalar, and its validity checks.
-// Paper: lobe-cam-reducer.txt (Machines 2022, 10, 955); notation of NOTES.md §1.
+// Paper and notation: docs/papers.md §1 (Machines 2022, 10, 955).
 // Units: mm, N, N·mm inside the model; MPa for moduli and stresses.
 #pragma once
 
