@@ -1,7 +1,9 @@
 // The papers' reference designs, shared by every suite and the benchmarks: LCR I, II, III of
-// Table 2; the disc-cam example of Rzine et al. and an oscillating-follower disc cam.
+// Table 2; the disc-cam example of Rzine et al. and an oscillating-follower disc cam; the cycloid
+// paper's NNM drive; the LCR II sizing duty of the −90 study.
 #pragma once
 
+#include "model/cycloid/tooth_profile.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/lcr/reducer.h"
 #include "model/motion/motion_program.h"
@@ -39,6 +41,22 @@ inline objectives::LcrSizingSpec LcrIISizingSpec(
   s.limits = {1500, 1050, 0.5, 1.0};
   s.form = form;
   return s;
+}
+
+/// The cycloid load-distribution paper's example drive (Table 2: n2 = 15, n1 = 16, a = 90 mm,
+/// ρ = 7.2 mm, e = 4.5 mm, B = 17 mm) with its NNM profile modification (Table 3: Δa = −16 µm,
+/// Δρ = −8 µm), as cycloid_ltca_nnm_*.json.
+inline cycloid::Drive CycloidNnm() {
+  cycloid::Drive d;
+  d.teeth = 15;
+  d.rollers = 16;
+  d.roller_position_radius_mm = 90.0;
+  d.roller_radius_mm = 7.2;
+  d.eccentricity_mm = 4.5;
+  d.face_width_mm = 17.0;
+  d.delta_position_mm = -0.016;
+  d.delta_radius_mm = -0.008;
+  return d;
 }
 
 /// The disc-cam example of Rzine et al. §5 (docs/disc_cam.md; studies/examples/
