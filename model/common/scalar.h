@@ -66,7 +66,7 @@ T IfThenElse(Compare op, const L& lhs, const R& rhs, const T& then_value, const 
 /// max(0, x) with its one-sided derivative (0 at x <= 0). Continuous, kink at 0.
 template <typename T>
 T PositivePart(const T& x) {
-  return Value(x) > 0.0 ? x : T(0.0);
+  return IfThenElse(Compare::kGreater, x, 0.0, x, T(0.0));
 }
 
 /// Smooth maximum of samples: log-sum-exp with sharpness k (units 1/[x]).
