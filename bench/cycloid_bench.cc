@@ -13,17 +13,13 @@
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/input.h"
 #include "studies/study.h"
+#include "tests/reference_designs.h"
 
 
 namespace camopt::cycloid {
 namespace {
 
-Drive Nnm() {
-  Drive d;
-  d.delta_position_mm = -0.016;
-  d.delta_radius_mm = -0.008;
-  return d;
-}
+using camopt::testing::CycloidNnm;
 
 Crowning Case(int k) {
   Crowning c;
@@ -42,7 +38,7 @@ Crowning Case(int k) {
 }
 
 void BM_CycloidUnloadedTca(benchmark::State& state) {
-  const Drive d = Nnm();
+  const Drive d = CycloidNnm();
   double a = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(UnloadedTca<double>(d, a));
@@ -56,8 +52,8 @@ void BM_CycloidMeshCycle60(benchmark::State& state) {
   const auto angles = UniformCrankAngles(60, 2 * kPi);
   CycleResult r;
   for (auto _ : state) {
-    LoadedTca tca(Nnm(), Case(int(state.range(0))), Material{}, LoadedOptions{});
-    r = RunCycle(tca, 350.0, angles);
+    LoadedTca tca(CycloidNnm(), Case(int(state.range(0))), Material{}, LoadedOptions{});
+    r = RunCycle(tca, 350.0e3, angles);
     benchmark::DoNotOptimize(r.max_pressure_MPa);
   }
   state.counters["max_MPa"] = r.max_pressure_MPa;

@@ -1,76 +1,94 @@
-// Study kind "cycloid_ltca": loaded tooth contact analysis of a cycloid stage over the crank
-// angles (model/cycloid/, docs/cycloid.md). Outputs result.json, per_angle.csv, backlash.csv,
-// lte.svg, gear_ratio.svg, contact_stress.svg, pressure_map.svg (every contacting pair at the
-// angle of the maximum stress), pressure_max.csv and a tooth drawing (tooth.svg, tooth.dxf).
+// Study kind "cycloid_ltca" (studies/cycloid_ltca_study.h): parse, run the LTCA cycle, write.
+#include "studies/cycloid_ltca_study.h"
+
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_study_common.h"
-#include "studies/study.h"
 #include "studies/writers.h"
 
-namespace camopt::studies {
-namespace {
+namespace camopt::studies::cycloid_ltca {
 
 using namespace camopt::cycloid;
-using cycloid_common::Fmt;
 
-void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
+Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis"});
-  const Drive drive = cycloid_common::ParseDrive(root);
-  const Crowning crowning = cycloid_common::ParseCrowning(root, drive.face_width_mm);
-  const Material material = cycloid_common::ParseMaterial(root);
+  Study s;
+  s.name = root.json().value("name", "");
+  s.drive = cycloid_common::ParseDrive(root);
+  s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
+  s.material = cycloid_common::ParseMaterial(root);
   root["load"].CheckKnownFields({"torque_Nm"});
-  const double torque = root["load"]["torque_Nm"].NonNegative();
-  LoadedOptions options;
-  std::vector<double> angles;
+  s.torque_Nm = root["load"]["torque_Nm"].NonNegative();
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
     a.CheckKnownFields({"grid", "tolerance", "crank_angles_deg", "crank_angle_steps", "crank_span_deg"});
-    cycloid_common::ParseGrid(a, options);
-    options.tolerance = a.PositiveOr("tolerance", options.tolerance);
+    cycloid_common::ParseGrid(a, s.options);
+    s.options.tolerance = a.PositiveOr("tolerance", s.options.tolerance);
     if (a.Has("crank_angles_deg")) {
       if (a.Has("crank_angle_steps"))
         a.FailWith("give either crank_angle_steps or crank_angles_deg, not both");
-      for (const Node& e : a["crank_angles_deg"].Elements()) angles.push_back(e.Number() * kPi / 180.0);
-      if (angles.empty()) a["crank_angles_deg"].Fail("a non-empty array of angles");
+      for (const Node& e : a["crank_angles_deg"].Elements()) s.crank_angles_rad.push_back(e.Number() * kPi / 180.0);
+      if (s.crank_angles_rad.empty()) a["crank_angles_deg"].Fail("a non-empty array of angles");
     } else {
       const int steps = a.IntegerOr("crank_angle_steps", 1, 60);
       if (steps > 100000) a["crank_angle_steps"].Fail("at most 100000 steps");
-      angles = UniformCrankAngles(steps, a.PositiveOr("crank_span_deg", 360.0) * kPi / 180.0);
+      s.crank_angles_rad = UniformCrankAngles(steps, a.PositiveOr("crank_span_deg", 360.0) * kPi / 180.0);
     }
   } else {
-    angles = UniformCrankAngles(60, 2.0 * kPi);
+    s.crank_angles_rad = UniformCrankAngles(60, 2.0 * kPi);
   }
+  return s;
+}
 
-  LoadedTca tca(drive, crowning, material, options);
-  Progress progress("cycloid_ltca", ctx.quiet);
-  const CycleResult cycle = RunCycle(tca, torque, angles, [&](double f) { progress.Update(f); });
-  progress.Done();
+Result Run(const Study& s, const RunContext& ctx) {
+  Result r;
+  LoadedTca tca(s.drive, s.crowning, s.material, s.options);
+  {
+    Progress progress("cycloid_ltca", ctx.quiet);
+    r.cycle = RunCycle(tca, s.torque_Nm * 1000.0, s.crank_angles_rad, [&](double f) { progress.Update(f); });
+    progress.Done();
+  }
+  r.composite_modulus_MPa = tca.e_star_MPa();
+  const int n1 = s.drive.rollers;
+  const size_t n = s.crank_angles_rad.size();
+  r.backlash_arcsec.assign(n1, std::vector<double>(n, 0.0));
+  for (size_t k = 0; k < n; ++k) {
+    const UnloadedMesh<double> u = UnloadedTca<double>(s.drive, s.crank_angles_rad[k]);
+    for (const auto& g : u.pairs)
+      r.backlash_arcsec[g.roller][k] = g.loaded_flank ? g.backlash * kArcsecPerRad : -1.0;
+  }
+  if (!r.cycle.converged) {
+    for (const auto& m : r.cycle.meshes)
+      if (!m.converged) {
+        r.warning = "not converged at crank angle " + Format(m.crank_angle_rad * 180 / kPi, 4) + " deg: " + m.message;
+        break;
+      }
+  }
+  // Tooth drawing: the modified profile of the whole disc and the rollers at crank angle 0.
+  const int samples = 40 * s.drive.teeth;
+  for (int k = 0; k < samples; ++k)
+    r.tooth_profile.push_back(ToothProfile<double>(s.drive, 2.0 * kPi * k / samples).point);
+  for (int i = 0; i < n1; ++i) r.roller_centres.push_back(RollerCentreInDisc<double>(s.drive, i, 0.0, 0.0));
+  return r;
+}
 
-  const int n1 = drive.rollers;
+nlohmann::json ToJson(const Study& s, const Result& r) {
+  const CycleResult& cycle = r.cycle;
+  const std::vector<double>& angles = s.crank_angles_rad;
   nlohmann::json per_angle = nlohmann::json::array();
-  Table table;
-  std::vector<double> col_angle, col_lte, col_ute, col_gr, col_p, col_pairs;
-  std::vector<std::vector<double>> col_load(n1, std::vector<double>(angles.size(), 0.0));
-  Table backlash;
-  std::vector<std::vector<double>> col_bl(n1, std::vector<double>(angles.size(), 0.0));
   for (size_t k = 0; k < cycle.meshes.size(); ++k) {
     const MeshLoad& m = cycle.meshes[k];
     nlohmann::json loads = nlohmann::json::array();
-    for (const PairLoad& p : m.pairs) {
+    for (const PairLoad& p : m.pairs)
       loads.push_back({{"roller", p.roller + 1},
                        {"load_N", Finite(p.load_N, "load")},
                        {"max_contact_stress_MPa", Finite(p.max_pressure_MPa, "pressure")},
                        {"approach_um", Finite(p.approach_mm * 1e3, "approach")},
                        {"arm_mm", p.arm_mm}});
-      col_load[p.roller][k] = p.load_N;
-    }
     per_angle.push_back({{"crank_angle_deg", angles[k] * 180.0 / kPi},
                          {"max_contact_stress_MPa", Finite(m.max_pressure_MPa, "max stress")},
                          {"pairs_in_contact", m.pairs_in_contact},
@@ -79,15 +97,44 @@ void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
                          {"gear_ratio", Finite(cycle.gear_ratio[k], "gear ratio")},
                          {"converged", m.converged},
                          {"loads", loads}});
-    col_angle.push_back(angles[k] * 180.0 / kPi);
+  }
+  return {{"study", "cycloid_ltca"},
+          {"name", s.name},
+          {"torque_Nm", s.torque_Nm},
+          {"max_contact_stress_MPa", Finite(cycle.max_pressure_MPa, "max stress")},
+          {"max_contact_stress_crank_angle_deg", angles[cycle.max_pressure_index] * 180.0 / kPi},
+          {"lte_peak_to_peak_arcsec", Finite(cycle.lte_peak_to_peak_arcsec, "lte p2p")},
+          {"lte_mean_abs_arcsec", Finite(cycle.lte_mean_abs_arcsec, "lte mean")},
+          {"gear_ratio_nominal", double(s.drive.teeth)},
+          {"gear_ratio_peak_to_peak", Finite(cycle.gear_ratio_peak_to_peak, "gr p2p")},
+          {"max_pairs_in_contact", cycle.max_pairs_in_contact},
+          {"axial_cell_mm", s.drive.face_width_mm / s.options.axial_cells},
+          {"grid", {s.options.profile_cells, s.options.axial_cells}},
+          {"composite_modulus_MPa", r.composite_modulus_MPa},
+          {"contact_solves", cycle.contact_solves},
+          {"converged", cycle.converged},
+          {"warning", r.warning},
+          {"per_angle", per_angle}};
+}
+
+void Write(const Study& s, const Result& r, Outputs& out) {
+  const CycleResult& cycle = r.cycle;
+  const int n1 = s.drive.rollers;
+  const size_t n = s.crank_angles_rad.size();
+  out.AddJson("result.json", ToJson(s, r));
+
+  Table table;
+  std::vector<double> col_angle, col_lte, col_ute, col_gr, col_p, col_pairs;
+  std::vector<std::vector<double>> col_load(n1, std::vector<double>(n, 0.0));
+  for (size_t k = 0; k < cycle.meshes.size(); ++k) {
+    const MeshLoad& m = cycle.meshes[k];
+    for (const PairLoad& p : m.pairs) col_load[p.roller][k] = p.load_N;
+    col_angle.push_back(s.crank_angles_rad[k] * 180.0 / kPi);
     col_lte.push_back(cycle.lte_arcsec[k]);
     col_ute.push_back(m.unloaded_rotation_rad * kArcsecPerRad);
     col_gr.push_back(cycle.gear_ratio[k]);
     col_p.push_back(m.max_pressure_MPa);
     col_pairs.push_back(m.pairs_in_contact);
-    const UnloadedMesh<double> u = UnloadedTca<double>(drive, angles[k]);
-    for (const auto& g : u.pairs)
-      col_bl[g.roller][k] = g.loaded_flank ? g.backlash * kArcsecPerRad : -1.0;
   }
   table.Add("crank_angle_deg", col_angle);
   table.Add("lte_arcsec", col_lte);
@@ -96,38 +143,10 @@ void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
   table.Add("max_contact_stress_MPa", col_p);
   table.Add("pairs_in_contact", col_pairs);
   for (int i = 0; i < n1; ++i) table.Add("load_roller_" + std::to_string(i + 1) + "_N", col_load[i]);
+  Table backlash;
   backlash.Add("crank_angle_deg", col_angle);
   for (int i = 0; i < n1; ++i)
-    backlash.Add("backlash_roller_" + std::to_string(i + 1) + "_arcsec", col_bl[i]);
-
-  std::string warning;
-  if (!cycle.converged) {
-    for (const auto& m : cycle.meshes)
-      if (!m.converged) {
-        warning = "not converged at crank angle " + Fmt(m.crank_angle_rad * 180 / kPi) + " deg: " + m.message;
-        break;
-      }
-  }
-  const MeshLoad& worst = cycle.meshes[cycle.max_pressure_index];
-  nlohmann::json result = {
-      {"study", "cycloid_ltca"},
-      {"name", root.json().value("name", "")},
-      {"torque_Nm", torque},
-      {"max_contact_stress_MPa", Finite(cycle.max_pressure_MPa, "max stress")},
-      {"max_contact_stress_crank_angle_deg", angles[cycle.max_pressure_index] * 180.0 / kPi},
-      {"lte_peak_to_peak_arcsec", Finite(cycle.lte_peak_to_peak_arcsec, "lte p2p")},
-      {"lte_mean_abs_arcsec", Finite(cycle.lte_mean_abs_arcsec, "lte mean")},
-      {"gear_ratio_nominal", double(drive.teeth)},
-      {"gear_ratio_peak_to_peak", Finite(cycle.gear_ratio_peak_to_peak, "gr p2p")},
-      {"max_pairs_in_contact", cycle.max_pairs_in_contact},
-      {"axial_cell_mm", drive.face_width_mm / options.axial_cells},
-      {"grid", {options.profile_cells, options.axial_cells}},
-      {"composite_modulus_MPa", tca.e_star_MPa()},
-      {"contact_solves", cycle.contact_solves},
-      {"converged", cycle.converged},
-      {"warning", warning},
-      {"per_angle", per_angle}};
-  out.AddJson("result.json", result);
+    backlash.Add("backlash_roller_" + std::to_string(i + 1) + "_arcsec", r.backlash_arcsec[i]);
   out.Add("per_angle.csv", ToCsv(table));
   out.Add("backlash.csv", ToCsv(backlash));
 
@@ -142,9 +161,10 @@ void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
   po.title = "Maximum contact stress";
   po.y_label = "stress [MPa]";
   out.Add("contact_stress.svg", SvgLinePlot({{"max", col_angle, col_p}}, po));
+  const MeshLoad& worst = cycle.meshes[cycle.max_pressure_index];
   out.Add("pressure_map.svg",
           cycloid_common::PressureMapsSvg(
-              worst, "Contact pressure at crank angle " + Fmt(worst.crank_angle_rad * 180 / kPi) + " deg"));
+              worst, "Contact pressure at crank angle " + Format(worst.crank_angle_rad * 180 / kPi, 4) + " deg"));
   // The pressure field of the worst pair as a long table (x across, y along the face).
   Table pmap;
   std::vector<double> cr, cx, cy, cp;
@@ -162,28 +182,25 @@ void RunCycloidLtca(const Node& root, const RunContext& ctx, Outputs& out) {
   pmap.Add("pressure_MPa", cp);
   out.Add("pressure_max.csv", ToCsv(pmap));
 
-  // Tooth drawing: the modified profile of the whole disc and the rollers at crank angle 0.
   Drawing drawing;
   drawing.title = "Cycloid gear (disc frame) and rollers at crank angle 0";
   Drawing::Layer disc{"disc", "black", {}, {}, true, 1.0};
   Polyline pl;
-  const int samples = 40 * drive.teeth;
-  for (int k = 0; k < samples; ++k) {
-    const auto p = ToothProfile<double>(drive, 2.0 * kPi * k / samples);
-    pl.push_back({p.point.x(), p.point.y()});
-  }
+  for (const auto& p : r.tooth_profile) pl.push_back({p.x(), p.y()});
   disc.polylines.push_back(pl);
   Drawing::Layer rollers{"rollers", "blue", {}, {}, true, 1.0};
-  for (int i = 0; i < n1; ++i) {
-    const Vec2<double> c = RollerCentreInDisc<double>(drive, i, 0.0, 0.0);
-    rollers.circles.push_back({c.x(), c.y(), drive.roller_radius_mm});
-  }
+  for (const auto& c : r.roller_centres) rollers.circles.push_back({c.x(), c.y(), s.drive.roller_radius_mm});
   drawing.layers = {disc, rollers};
   out.Add("tooth.svg", SvgDrawing(drawing));
   out.Add("tooth.dxf", ToDxf(drawing));
 }
 
-CAMOPT_REGISTER_STUDY("cycloid_ltca", RunCycloidLtca);
-
+namespace {
+void RunKind(const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study s = Parse(root);
+  Write(s, Run(s, ctx), out);
+}
+CAMOPT_REGISTER_STUDY("cycloid_ltca", RunKind);
 }  // namespace
-}  // namespace camopt::studies
+
+}  // namespace camopt::studies::cycloid_ltca

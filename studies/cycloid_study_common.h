@@ -1,5 +1,6 @@
 // Parsing and output helpers shared by the two cycloid study kinds (cycloid_ltca,
-// cycloid_crowning_tuning). Header-only; each kind stays one .cc file.
+// cycloid_crowning_tuning): the shared parse of drive, modification, material, crowning and grid,
+// and the pressure-map drawing. Header-only; each kind is its own <kind>_study.h/.cc.
 #pragma once
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/tooth_profile.h"
+#include "studies/format.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
 
@@ -90,9 +92,11 @@ inline void ParseGrid(const Node& analysis, cycloid::LoadedOptions& o) {
   if (o.profile_cells > 512 || o.axial_cells > 512) g.Fail("at most 512 cells each way");
 }
 
-inline std::string Fmt(double v, const char* f = "%.4g") {
+/// v with a fixed number of decimals (printf's %.Nf) for labels in drawings; studies::Format
+/// (studies/format.h) gives significant digits.
+inline std::string Fixed(double v, int decimals) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
 }
 
@@ -113,7 +117,7 @@ inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::str
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
     << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   s << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\">" << title << "</text>\n";
-  s << "<text x=\"" << left << "\" y=\"38\">max " << Fmt(pmax, "%.0f")
+  s << "<text x=\"" << left << "\" y=\"38\">max " << Fixed(pmax, 0)
     << " MPa; x across the profile (stretched), y along the face width</text>\n";
   auto colour = [&](double p) {
     if (p <= 0 || pmax <= 0) return std::string("#f4f4f4");
@@ -135,10 +139,10 @@ inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::str
           << "\" width=\"" << cell_w << "\" height=\"" << cell_h << "\" fill=\"" << colour(v) << "\"/>\n";
       }
     s << "<text x=\"" << x0 << "\" y=\"" << top + p.grid.ny * cell_h + 16 << "\">roller "
-      << p.roller + 1 << ": " << Fmt(p.load_N, "%.0f") << " N, " << Fmt(p.max_pressure_MPa, "%.0f")
+      << p.roller + 1 << ": " << Fixed(p.load_N, 0) << " N, " << Fixed(p.max_pressure_MPa, 0)
       << " MPa</text>\n";
     s << "<text x=\"" << x0 << "\" y=\"" << top + p.grid.ny * cell_h + 30 << "\">"
-      << Fmt(2 * p.grid.nx * p.grid.dx * 0.5, "%.3f") << " x " << Fmt(p.grid.ny * p.grid.dy, "%.1f")
+      << Fixed(2 * p.grid.nx * p.grid.dx * 0.5, 3) << " x " << Fixed(p.grid.ny * p.grid.dy, 1)
       << " mm</text>\n";
     x0 += p.grid.nx * cell_w + panel_gap;
   }

@@ -1,25 +1,21 @@
-// Study kind "transmission_rigidity": the torsional rigidity and backlash of a series chain of
-// shafts, gears, chains, belts, pull-rods, levers, couplings (papers/transmission-rigidity.txt)
-// and lobe cam reducers, seen from either end, with each element's share of the compliance and
-// the design advice the paper gives by hand (which element dominates, which dimension to change).
+// Study kind "transmission_rigidity" (studies/transmission_rigidity_study.h): parse the chain,
+// evaluate it through model/rigidity/, write.
+#include "studies/transmission_rigidity_study.h"
+
+#include <algorithm>
 #include <cmath>
-#include <functional>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "model/lcr/kinematics.h"
-#include "model/rigidity/chain_elements.h"
-#include "model/rigidity/lcr_stiffness.h"
-#include "studies/input.h"
+#include "model/rigidity/lost_motion.h"
 #include "studies/lcr_input.h"
-#include "studies/study.h"
 #include "studies/writers.h"
 
-namespace camopt::studies {
+namespace camopt::studies::transmission_rigidity {
 namespace {
 
 using rigidity::ElementKind;
@@ -27,16 +23,14 @@ using rigidity::ElementSpec;
 
 constexpr double kArcminPerRad = 180.0 * 60.0 / kPi;
 
-// Moduli in MPa: the element's own field if given, else the study's "material" (required only
-// when an element needs it).
-double ShearMPa(const Node& element, const Node& root) {
-  if (element.Has("shear_modulus_GPa")) return 1000.0 * element["shear_modulus_GPa"].Positive();
-  return 1000.0 * root["material"]["shear_modulus_GPa"].Positive();
+// A modulus in MPa from its GPa field: the element's own if given, else the study's "material"
+// (required only when an element needs it).
+double ModulusMPa(const Node& element, const Node& root, const std::string& key_GPa) {
+  if (element.Has(key_GPa)) return 1000.0 * element[key_GPa].Positive();
+  return 1000.0 * root["material"][key_GPa].Positive();
 }
-double YoungsMPa(const Node& element, const Node& root) {
-  if (element.Has("youngs_modulus_GPa")) return 1000.0 * element["youngs_modulus_GPa"].Positive();
-  return 1000.0 * root["material"]["youngs_modulus_GPa"].Positive();
-}
+double ShearMPa(const Node& element, const Node& root) { return ModulusMPa(element, root, "shear_modulus_GPa"); }
+double YoungsMPa(const Node& element, const Node& root) { return ModulusMPa(element, root, "youngs_modulus_GPa"); }
 
 // Outer and inner diameter with inner < outer.
 std::pair<double, double> Diameters(const Node& e, const std::string& outer_key) {
@@ -46,148 +40,33 @@ std::pair<double, double> Diameters(const Node& e, const std::string& outer_key)
   return {outer, inner};
 }
 
-// One parsed element: its spec, plus extra result fields and files (a reducer's ripple).
-struct ParsedElement {
-  ElementSpec spec;
-  // For a reducer: ∂ln R/∂ln p of its own rigidity w.r.t. its dimensions (its spec's parameters
-  // are a precomputed ratio and rigidity, which are not design choices).
-  std::vector<std::pair<std::string, double>> own_elasticity;
-  nlohmann::json extra;
-  std::map<std::string, std::string> files;
-};
-
 // A lobe cam reducer as a chain element: a gear stage of ratio |r_i| (input on the A side) whose
 // own rigidity is the reducer's mean secant torsional stiffness at the output under its load
 // (model/rigidity/lcr_stiffness.h) and whose backlash is the dead band of a roller clearance.
-void ParseReducerElement(const Node& e, const Node& root, size_t index, const RunContext& ctx,
-                         ParsedElement& parsed) {
-  const lcr::Reducer<double> r = ParseReducer(e["reducer"]);
+ReducerElement ParseReducerElement(const Node& e, const Node& root) {
+  ReducerElement x;
+  x.reducer = ParseReducer(e["reducer"]);
   if (e.Has("material")) e["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  const lcr::Material material =
-      ParseMaterial(e.Has("material") ? e["material"] : root["material"]);
+  x.material = ParseMaterial(e.Has("material") ? e["material"] : root["material"]);
   const Node load = e["load"];
   load.CheckKnownFields({"output_torque_Nm"});
-  const double torque = load["output_torque_Nm"].Positive() * 1000.0;  // N·mm
-  const double clearance = e.NonNegativeOr("clearance_um", 0.0) / 1000.0;  // mm
+  x.torque_Nmm = load["output_torque_Nm"].Positive() * 1000.0;
+  x.clearance_mm = e.NonNegativeOr("clearance_um", 0.0) / 1000.0;
   // Needle bearing radial stiffness per roller, in series with its contact; absent = rigid.
-  const double bearing = e.Has("needle_bearing_radial_stiffness_N_per_mm")
-                             ? e["needle_bearing_radial_stiffness_N_per_mm"].Positive()
-                             : 0.0;
-  const int steps = e.IntegerOr("angle_steps", 8, 720);
-  const std::string direction = e.StringOr("direction", "forward");
-  if (direction != "forward" && direction != "reverse") e["direction"].Fail("\"forward\" or \"reverse\"");
+  x.bearing_N_per_mm = e.Has("needle_bearing_radial_stiffness_N_per_mm")
+                           ? e["needle_bearing_radial_stiffness_N_per_mm"].Positive()
+                           : 0.0;
+  x.angle_steps = e.IntegerOr("angle_steps", 8, 720);
+  x.direction = e.StringOr("direction", "forward");
+  if (x.direction != "forward" && x.direction != "reverse") e["direction"].Fail("\"forward\" or \"reverse\"");
   // The paper's load sense drives the output along its motion; "reverse" loads the other rollers.
-  const double sense = lcr::LoadedArmSign(r, lcr::Side::kOutput) * (direction == "forward" ? 1.0 : -1.0);
-  const double ratio = std::abs(lcr::SpeedReductionRatio(r));
-
-  rigidity::ReducerStiffnessCycle cycle, reverse;
-  std::vector<double> torques, rotations;
-  double dead_band = 0;
-  try {
-    Progress progress("lobe_cam_reducer stiffness", ctx.quiet);
-    cycle = rigidity::StiffnessCycle(r, material, sense * torque, clearance, steps, bearing);
-    progress.Update(0.4);
-    reverse = rigidity::StiffnessCycle(r, material, -sense * torque, clearance, steps, bearing);
-    progress.Update(0.6);
-    // Lost-motion curve from −T to +T (sense of the load), mean over 36 input angles (the arms
-    // repeat with the roller pitch, 13- or 15-fold, so a uniform 10° grid averages them well); 0 excluded
-    // (inside a clearance the position is undetermined), a point on each side of it instead.
-    const int n = 40;
-    for (int i = -n; i <= n; ++i) {
-      if (i == 0) {
-        for (double t : {-1e-9, 1e-9}) torques.push_back(t * torque);
-        continue;
-      }
-      const double f = double(i) / n;
-      torques.push_back(f * std::abs(f) * torque);  // denser near zero load
-    }
-    std::vector<double> signed_t;
-    for (double t : torques) signed_t.push_back(sense * t);
-    rotations = rigidity::LostMotionCurve(r, material, signed_t, clearance, std::min(steps, 36), bearing);
-    for (double& x : rotations) x *= sense;
-    dead_band = rigidity::DeadBand(r, clearance, steps);
-    progress.Update(1.0);
-  } catch (const std::domain_error& err) {
-    e.FailWith(std::string("the reducer cannot carry the load: ") + err.what());
-  }
-  // Lost motion as reducer catalogues define it: the rotation between ±3 % of the rated torque
-  // (here the load torque), mean over the revolution.
-  const auto lm = rigidity::LostMotionCurve(r, material, {-0.03 * sense * torque, 0.03 * sense * torque},
-                                            clearance, std::min(steps, 36), bearing);
-  const double lost_motion = std::abs(lm[1] - lm[0]);
-  parsed.own_elasticity = rigidity::ReducerStiffnessElasticities(
-      r, material, sense * torque, clearance, bearing, std::min(steps, 180));
-
-  ElementSpec& s = parsed.spec;
-  s.kind = ElementKind::kFixed;
-  s.param_names = {"ratio", "rigidity_Nmm_per_rad"};
-  s.params = {ratio, cycle.mean_secant_Nmm_per_rad};
-  s.backlash_rad += dead_band;
-
-  const double per_arcmin = kArcminPerRad;  // N·m/rad -> N·m/arcmin divides by this
-  nlohmann::json x;
-  x["speed_reduction_ratio"] = lcr::SpeedReductionRatio(r);
-  x["output_torque_Nm"] = torque / 1000.0;
-  x["direction"] = direction;
-  x["clearance_um"] = clearance * 1000.0;
-  if (bearing > 0) x["needle_bearing_radial_stiffness_N_per_mm"] = bearing;
-  x["contact_law"] = "Palmgren line contact, delta = 3.84e-5 Q^0.9 / L^0.8 (steel), scaled by E*";
-  x["mean_secant_rigidity_Nm_per_rad"] = cycle.mean_secant_Nmm_per_rad / 1000.0;
-  x["mean_secant_rigidity_Nm_per_arcmin"] = cycle.mean_secant_Nmm_per_rad / 1000.0 / per_arcmin;
-  x["min_secant_rigidity_Nm_per_rad"] = cycle.min_secant_Nmm_per_rad / 1000.0;
-  x["max_secant_rigidity_Nm_per_rad"] = cycle.max_secant_Nmm_per_rad / 1000.0;
-  x["secant_ripple"] = cycle.ripple;
-  x["mean_tangent_rigidity_Nm_per_rad"] = cycle.mean_tangent_Nmm_per_rad / 1000.0;
-  x["min_tangent_rigidity_Nm_per_rad"] = cycle.min_tangent_Nmm_per_rad / 1000.0;
-  x["max_tangent_rigidity_Nm_per_rad"] = cycle.max_tangent_Nmm_per_rad / 1000.0;
-  x["reverse_mean_secant_rigidity_Nm_per_rad"] = reverse.mean_secant_Nmm_per_rad / 1000.0;
-  x["rigidity_at_input_Nm_per_rad"] = cycle.mean_secant_Nmm_per_rad / 1000.0 / (ratio * ratio);
-  x["mean_elastic_rotation_arcmin"] = torque / cycle.mean_secant_Nmm_per_rad * per_arcmin;
-  x["lost_motion_arcmin_at_3pct_torque"] = lost_motion * per_arcmin;
-  x["dead_band_arcmin"] = dead_band * per_arcmin;
-  x["max_roller_force_input_N"] = HardMax(cycle.max_force_input_N);
-  x["max_roller_force_output_N"] = HardMax(cycle.max_force_output_N);
-  parsed.extra = x;
-
-  const std::string stem = "reducer_" + std::to_string(index + 1);
-  Table t;
-  std::vector<double> deg, rot_arcmin, sec, tan;
-  for (size_t i = 0; i < cycle.theta_rad.size(); ++i) {
-    deg.push_back(cycle.theta_rad[i] * 180.0 / kPi);
-    rot_arcmin.push_back(cycle.rotation_rad[i] * per_arcmin);
-    sec.push_back(cycle.secant_Nmm_per_rad[i] / 1000.0);
-    tan.push_back(cycle.tangent_Nmm_per_rad[i] / 1000.0);
-  }
-  t.Add("input_angle_deg", deg);
-  t.Add("output_rotation_arcmin", rot_arcmin);
-  std::vector<double> el_arcmin;
-  for (double v : cycle.elastic_rotation_rad) el_arcmin.push_back(v * per_arcmin);
-  t.Add("elastic_rotation_arcmin", el_arcmin);
-  t.Add("secant_rigidity_Nm_per_rad", sec);
-  t.Add("tangent_rigidity_Nm_per_rad", tan);
-  t.Add("max_roller_force_input_N", cycle.max_force_input_N);
-  t.Add("max_roller_force_output_N", cycle.max_force_output_N);
-  parsed.files[stem + "_stiffness.csv"] = ToCsv(t);
-  parsed.files[stem + "_stiffness.svg"] = SvgLinePlot(
-      {{"secant", deg, sec}, {"tangent", deg, tan}},
-      {"Torsional rigidity at the output over one input turn (" + s.name + ")", "input angle [deg]",
-       "rigidity [N·m/rad]"});
-  Table lmt;
-  std::vector<double> t_nm, r_arcmin;
-  for (size_t i = 0; i < torques.size(); ++i) {
-    t_nm.push_back(torques[i] / 1000.0);
-    r_arcmin.push_back(rotations[i] * per_arcmin);
-  }
-  lmt.Add("output_torque_Nm", t_nm);
-  lmt.Add("output_rotation_arcmin", r_arcmin);
-  parsed.files[stem + "_lost_motion.csv"] = ToCsv(lmt);
-  parsed.files[stem + "_lost_motion.svg"] = SvgLinePlot(
-      {{"mean over the input turn", r_arcmin, t_nm}},
-      {"Lost-motion curve, input held (" + s.name + ")", "output rotation [arcmin]", "output torque [N·m]"});
+  x.sense = lcr::LoadedArmSign(x.reducer, lcr::Side::kOutput) * (x.direction == "forward" ? 1.0 : -1.0);
+  x.where = e.file() + ": " + e.path();
+  return x;
 }
 
-ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const RunContext& ctx) {
-  ParsedElement parsed;
+Element ParseElement(const Node& e, const Node& root, size_t index) {
+  Element parsed;
   ElementSpec& s = parsed.spec;
   s.kind_name = e["element"].String();
   s.name = e.StringOr("name", s.kind_name + " " + std::to_string(index + 1));
@@ -288,13 +167,45 @@ ParsedElement ParseElement(const Node& e, const Node& root, size_t index, const 
   } else if (k == "lobe_cam_reducer") {
     check({"reducer", "material", "load", "clearance_um", "needle_bearing_radial_stiffness_N_per_mm",
            "angle_steps", "direction"});
-    ParseReducerElement(e, root, index, ctx, parsed);
+    parsed.reducer = ParseReducerElement(e, root);
+    s.kind = ElementKind::kFixed;
+    s.param_names = {"ratio", "rigidity_Nmm_per_rad"};
   } else {
     e["element"].Fail(
         "an element kind (shaft_torsion, shaft_bending, linear_stiffness, chain_span, belt_span, "
         "pull_rod, lever, coupling, gear_stage, lobe_cam_reducer)");
   }
   return parsed;
+}
+
+ReducerResult RunReducer(const ReducerElement& x, bool quiet) {
+  ReducerResult res;
+  const lcr::Reducer<double>& r = x.reducer;
+  const double torque = x.torque_Nmm;
+  const int lm_steps = std::min(x.angle_steps, 36);
+  res.speed_reduction_ratio = lcr::SpeedReductionRatio(r);
+  try {
+    Progress progress("lobe_cam_reducer stiffness", quiet);
+    res.cycle = rigidity::StiffnessCycle(r, x.material, x.sense * torque, x.clearance_mm, x.angle_steps,
+                                         x.bearing_N_per_mm);
+    progress.Update(0.4);
+    res.reverse = rigidity::StiffnessCycle(r, x.material, -x.sense * torque, x.clearance_mm, x.angle_steps,
+                                           x.bearing_N_per_mm);
+    progress.Update(0.6);
+    // Lost-motion curve from −T to +T (sense of the load), mean over 36 input angles (the arms
+    // repeat with the roller pitch, 13- or 15-fold, so a uniform 10° grid averages them well).
+    res.torques_Nmm = rigidity::LostMotionTorques(torque);
+    res.rotations_rad = rigidity::LostMotionCurveInSense(r, x.material, res.torques_Nmm, x.sense,
+                                                         x.clearance_mm, lm_steps, x.bearing_N_per_mm);
+    res.dead_band_rad = rigidity::DeadBand(r, x.clearance_mm, x.angle_steps);
+    progress.Update(1.0);
+  } catch (const std::domain_error& err) {
+    throw StudyError(x.where + ": the reducer cannot carry the load: " + err.what());
+  }
+  // Lost motion as reducer catalogues define it (±3 % of the rated torque, here the load torque).
+  res.lost_motion_rad =
+      rigidity::LostMotion(r, x.material, x.sense * torque, x.clearance_mm, lm_steps, x.bearing_N_per_mm);
+  return res;
 }
 
 nlohmann::json FiniteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
@@ -317,127 +228,202 @@ std::string KindAdvice(const std::string& kind) {
   return it == advice.end() ? "" : it->second;
 }
 
-void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& out) {
+}  // namespace
+
+Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "material", "chain", "load_torque_Nm", "report_radius_mm"});
   // The chain's material serves every element, so it may hold the fields of any of them.
   if (root.Has("material"))
     root["material"].CheckKnownFields({"shear_modulus_GPa", "youngs_modulus_GPa", "poisson_ratio"});
-  const std::string name = root.StringOr("name", "transmission");
+  Study s;
+  s.name = root.StringOr("name", "transmission");
   const Node chain = root["chain"];
+  s.chain_where = chain.file() + ": " + chain.path();
   const std::vector<Node> nodes = chain.Elements();
   if (nodes.empty()) chain.Fail("a non-empty array of elements");
+  for (size_t i = 0; i < nodes.size(); ++i) s.elements.push_back(ParseElement(nodes[i], root, i));
+  if (root.Has("report_radius_mm")) s.report_radius_mm = root["report_radius_mm"].Positive();
+  if (root.Has("load_torque_Nm")) s.load_torque_Nm = root["load_torque_Nm"].Positive();
+  return s;
+}
+
+Result Run(const Study& study, const RunContext& ctx) {
+  Result res;
   std::vector<ElementSpec> specs;
-  std::vector<ParsedElement> parsed;
-  for (size_t i = 0; i < nodes.size(); ++i) {
-    parsed.push_back(ParseElement(nodes[i], root, i, ctx));
-    specs.push_back(parsed.back().spec);
+  std::vector<std::vector<std::pair<std::string, double>>> own(study.elements.size());
+  for (size_t i = 0; i < study.elements.size(); ++i) {
+    const Element& e = study.elements[i];
+    ElementResult er;
+    er.spec = e.spec;
+    if (e.reducer) {
+      const ReducerElement& x = *e.reducer;
+      er.reducer = RunReducer(x, ctx.quiet);
+      // Its own rigidity is a precomputed ratio and rigidity (not design choices): its
+      // elasticities are those of its own dimensions.
+      er.spec.params = {std::abs(er.reducer->speed_reduction_ratio), er.reducer->cycle.mean_secant_Nmm_per_rad};
+      er.reducer->rigidity_at_input_Nm_per_rad = rigidity::RigidityThroughRatio(
+          er.reducer->cycle.mean_secant_Nmm_per_rad / 1000.0, er.spec.params[0]);
+      er.spec.backlash_rad += er.reducer->dead_band_rad;
+      own[i] = rigidity::ReducerStiffnessElasticities(x.reducer, x.material, x.sense * x.torque_Nmm,
+                                                      x.clearance_mm, x.bearing_N_per_mm,
+                                                      std::min(x.angle_steps, 180));
+    }
+    specs.push_back(er.spec);
+    res.elements.push_back(std::move(er));
   }
 
-  const auto r = rigidity::EvaluateChain<double>(specs);
+  res.chain = rigidity::EvaluateChain<double>(specs);
+  const auto& r = res.chain;
   if (!(r.compliance_b > 0.0))
-    chain.FailWith("every element is rigid: the chain has no compliance to report");
-  // Elasticities of the overall rigidity per element parameter; a reducer's are its own times its
-  // compliance share (∂ln R/∂ln p = share · ∂ln R_k/∂ln p).
+    throw StudyError(study.chain_where + ": every element is rigid: the chain has no compliance to report");
+  // Elasticities of the overall rigidity per element parameter; a reducer's come from its own
+  // through the chain rule (model/rigidity/lost_motion.h).
   const auto chain_elasticity = rigidity::RigidityElasticities(specs);
-  std::vector<std::vector<std::string>> el_names(specs.size());
-  std::vector<std::vector<double>> elasticity(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) {
+    ElementResult& er = res.elements[i];
+    er.compliance_rad_per_Nmm = rigidity::EvaluateElement<double>(specs[i], specs[i].params).compliance;
     if (specs[i].kind == ElementKind::kFixed) {
-      for (const auto& [n, v] : parsed[i].own_elasticity) {
-        el_names[i].push_back(n);
-        elasticity[i].push_back(r.share[i] * v);
-      }
+      er.elasticity = rigidity::ChainElasticities(r.share[i], own[i]);
     } else {
-      el_names[i] = specs[i].param_names;
-      elasticity[i] = chain_elasticity[i];
+      for (size_t q = 0; q < specs[i].param_names.size(); ++q)
+        er.elasticity.push_back({specs[i].param_names[q], chain_elasticity[i][q]});
     }
   }
 
+  // The dominant element and its most effective dimension (largest |elasticity| other than a
+  // modulus or a gear ratio, which are rarely free choices).
+  const int d = r.dominant;
+  const ElementSpec& ds = specs[d];
+  const auto& el = res.elements[d].elasticity;
+  res.advice = ds.name + " (" + ds.kind_name + ") holds " +
+               std::to_string(static_cast<int>(std::lround(100.0 * r.share[d]))) +
+               "% of the compliance: " + KindAdvice(ds.kind_name) + ".";
+  int best_q = -1;
+  for (size_t q = 0; q < el.size(); ++q) {
+    const std::string& pn = el[q].first;
+    if (pn.find("modulus") != std::string::npos || pn == "ratio") continue;
+    if (best_q < 0 || std::abs(el[q].second) > std::abs(el[best_q].second)) best_q = static_cast<int>(q);
+  }
+  if (best_q >= 0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, " Most effective dimension: %s (%+.2f%% overall rigidity per +1%%).",
+                  el[best_q].first.c_str(), el[best_q].second);
+    res.advice += buf;
+  }
+  res.most_effective = best_q;
+  if (study.report_radius_mm)
+    res.linear_stiffness_at_report_radius_N_per_mm =
+        rigidity::LinearStiffnessAtRadius(r.compliance_b, *study.report_radius_mm);
+  if (study.load_torque_Nm) res.deflection_at_end_b_rad = 1000.0 * *study.load_torque_Nm * r.compliance_b;
+  return res;
+}
+
+nlohmann::json ToJson(const Study& study, const Result& res) {
+  const auto& r = res.chain;
   nlohmann::json result;
   result["study"] = "transmission_rigidity";
-  result["name"] = name;
+  result["name"] = study.name;
   result["rigidity_Nm_per_rad"] = Finite(1.0e-3 / r.compliance_b, "rigidity");
   result["rigidity_at_end_b_Nm_per_rad"] = 1.0e-3 / r.compliance_b;
   result["rigidity_at_end_a_Nm_per_rad"] = Finite(1.0e-3 / r.compliance_a, "rigidity at end A");
   result["total_ratio"] = r.total_ratio;
   result["backlash_at_end_b_arcmin"] = r.backlash_b * kArcminPerRad;
   result["backlash_at_end_a_arcmin"] = r.backlash_a * kArcminPerRad;
-  if (root.Has("report_radius_mm")) {
-    const double rr = root["report_radius_mm"].Positive();
+  if (study.report_radius_mm) {
+    const double rr = *study.report_radius_mm;
     // Eq. 5 transposed: the linear stiffness at a radius of end B (e.g. at the follower roller).
     result["report_radius_mm"] = rr;
-    result["linear_stiffness_at_report_radius_N_per_mm"] = 1.0 / (r.compliance_b * rr * rr);
+    result["linear_stiffness_at_report_radius_N_per_mm"] = *res.linear_stiffness_at_report_radius_N_per_mm;
   }
-  if (root.Has("load_torque_Nm")) {
-    const double t = root["load_torque_Nm"].Positive();
+  if (study.load_torque_Nm) {
+    const double t = *study.load_torque_Nm;
     result["load_torque_Nm"] = t;
-    result["deflection_at_end_b_deg"] = 1000.0 * t * r.compliance_b * 180.0 / kPi;
+    result["deflection_at_end_b_deg"] = *res.deflection_at_end_b_rad * 180.0 / kPi;
   }
 
-  Table table;
-  std::vector<double> col_idx, col_own, col_at_b, col_share, col_without, col_backlash;
   nlohmann::json elements = nlohmann::json::array();
-  for (size_t i = 0; i < specs.size(); ++i) {
-    const ElementSpec& s = specs[i];
-    const auto link = rigidity::EvaluateElement<double>(s, s.params);
+  for (size_t i = 0; i < res.elements.size(); ++i) {
+    const ElementResult& er = res.elements[i];
+    const ElementSpec& s = er.spec;
     nlohmann::json e;
     e["index"] = i;
     e["name"] = s.name;
     e["element"] = s.kind_name;
-    e["rigidity_Nm_per_rad"] = FiniteOrNull(1.0e-3 / link.compliance);  // null: rigid
+    e["rigidity_Nm_per_rad"] = FiniteOrNull(1.0e-3 / er.compliance_rad_per_Nmm);  // null: rigid
     e["rigidity_at_end_b_Nm_per_rad"] = FiniteOrNull(1.0e-3 / r.compliance_at_b[i]);
     e["compliance_share"] = r.share[i];
     // The paper's remark on the stepped shaft: the overall rigidity had this element been
     // ignored (made rigid).
-    e["rigidity_if_rigid_Nm_per_rad"] = FiniteOrNull(1.0e-3 / (r.compliance_b - r.compliance_at_b[i]));
+    e["rigidity_if_rigid_Nm_per_rad"] = FiniteOrNull(1.0e-3 / r.compliance_b_if_rigid[i]);
     if (s.kind == ElementKind::kGearStage || s.kind == ElementKind::kFixed) e["ratio"] = s.params[0];
     e["backlash_arcmin"] = s.backlash_rad * kArcminPerRad;
     e["backlash_at_end_b_arcmin"] = r.backlash_at_b[i] * kArcminPerRad;
     nlohmann::json el = nlohmann::json::object();
-    for (size_t q = 0; q < el_names[i].size(); ++q) el[el_names[i][q]] = elasticity[i][q];
+    for (const auto& [n, v] : er.elasticity) el[n] = v;
     e["rigidity_elasticity"] = el;
-    if (!parsed[i].extra.is_null()) e["reducer"] = parsed[i].extra;
+    if (er.reducer) {
+      const ReducerElement& in = *study.elements[i].reducer;
+      const ReducerResult& x = *er.reducer;
+      const auto& cycle = x.cycle;
+      nlohmann::json j;
+      j["speed_reduction_ratio"] = x.speed_reduction_ratio;
+      j["output_torque_Nm"] = in.torque_Nmm / 1000.0;
+      j["direction"] = in.direction;
+      j["clearance_um"] = in.clearance_mm * 1000.0;
+      if (in.bearing_N_per_mm > 0) j["needle_bearing_radial_stiffness_N_per_mm"] = in.bearing_N_per_mm;
+      j["contact_law"] = "Palmgren line contact, delta = 3.84e-5 Q^0.9 / L^0.8 (steel), scaled by E*";
+      j["mean_secant_rigidity_Nm_per_rad"] = cycle.mean_secant_Nmm_per_rad / 1000.0;
+      j["mean_secant_rigidity_Nm_per_arcmin"] = cycle.mean_secant_Nmm_per_rad / 1000.0 / kArcminPerRad;
+      j["min_secant_rigidity_Nm_per_rad"] = cycle.min_secant_Nmm_per_rad / 1000.0;
+      j["max_secant_rigidity_Nm_per_rad"] = cycle.max_secant_Nmm_per_rad / 1000.0;
+      j["secant_ripple"] = cycle.ripple;
+      j["mean_tangent_rigidity_Nm_per_rad"] = cycle.mean_tangent_Nmm_per_rad / 1000.0;
+      j["min_tangent_rigidity_Nm_per_rad"] = cycle.min_tangent_Nmm_per_rad / 1000.0;
+      j["max_tangent_rigidity_Nm_per_rad"] = cycle.max_tangent_Nmm_per_rad / 1000.0;
+      j["reverse_mean_secant_rigidity_Nm_per_rad"] = x.reverse.mean_secant_Nmm_per_rad / 1000.0;
+      j["rigidity_at_input_Nm_per_rad"] = x.rigidity_at_input_Nm_per_rad;
+      j["mean_elastic_rotation_arcmin"] = in.torque_Nmm / cycle.mean_secant_Nmm_per_rad * kArcminPerRad;
+      j["lost_motion_arcmin_at_3pct_torque"] = x.lost_motion_rad * kArcminPerRad;
+      j["dead_band_arcmin"] = x.dead_band_rad * kArcminPerRad;
+      j["max_roller_force_input_N"] = HardMax(cycle.max_force_input_N);
+      j["max_roller_force_output_N"] = HardMax(cycle.max_force_output_N);
+      e["reducer"] = j;
+    }
     elements.push_back(e);
-    col_idx.push_back(static_cast<double>(i));
-    col_own.push_back(1.0e-3 / link.compliance);
-    col_at_b.push_back(1.0e-3 / r.compliance_at_b[i]);
-    col_share.push_back(r.share[i]);
-    col_without.push_back(1.0e-3 / (r.compliance_b - r.compliance_at_b[i]));
-    col_backlash.push_back(r.backlash_at_b[i] * kArcminPerRad);
   }
   result["elements"] = elements;
 
-  // The dominant element and its most effective dimension (largest |elasticity| other than a
-  // modulus or a gear ratio, which are rarely free choices).
   const int d = r.dominant;
-  const ElementSpec& ds = specs[d];
+  const ElementSpec& ds = res.elements[d].spec;
   nlohmann::json dom;
   dom["index"] = d;
   dom["name"] = ds.name;
   dom["element"] = ds.kind_name;
   dom["compliance_share"] = r.share[d];
-  std::string advice = ds.name + " (" + ds.kind_name + ") holds " +
-                       std::to_string(static_cast<int>(std::lround(100.0 * r.share[d]))) +
-                       "% of the compliance: " + KindAdvice(ds.kind_name) + ".";
-  int best_q = -1;
-  for (size_t q = 0; q < el_names[d].size(); ++q) {
-    const std::string& pn = el_names[d][q];
-    if (pn.find("modulus") != std::string::npos || pn == "ratio") continue;
-    if (best_q < 0 || std::abs(elasticity[d][q]) > std::abs(elasticity[d][best_q])) best_q = static_cast<int>(q);
+  if (res.most_effective >= 0) {
+    const auto& [n, v] = res.elements[d].elasticity[res.most_effective];
+    dom["most_effective_parameter"] = n;
+    dom["most_effective_parameter_elasticity"] = v;
   }
-  if (best_q >= 0) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, " Most effective dimension: %s (%+.2f%% overall rigidity per +1%%).",
-                  el_names[d][best_q].c_str(), elasticity[d][best_q]);
-    advice += buf;
-    dom["most_effective_parameter"] = el_names[d][best_q];
-    dom["most_effective_parameter_elasticity"] = elasticity[d][best_q];
-  }
-  dom["advice"] = advice;
+  dom["advice"] = res.advice;
   result["dominant"] = dom;
-  out.AddJson("result.json", result);
+  return result;
+}
 
+void Write(const Study& study, const Result& res, Outputs& out) {
+  out.AddJson("result.json", ToJson(study, res));
+  const auto& r = res.chain;
   // CSV: one row per element; infinite rigidities (rigid elements) are written as "inf".
+  Table table;
+  std::vector<double> col_idx, col_own, col_at_b, col_share, col_without, col_backlash;
+  for (size_t i = 0; i < res.elements.size(); ++i) {
+    col_idx.push_back(static_cast<double>(i));
+    col_own.push_back(1.0e-3 / res.elements[i].compliance_rad_per_Nmm);
+    col_at_b.push_back(1.0e-3 / r.compliance_at_b[i]);
+    col_share.push_back(r.share[i]);
+    col_without.push_back(1.0e-3 / r.compliance_b_if_rigid[i]);
+    col_backlash.push_back(r.backlash_at_b[i] * kArcminPerRad);
+  }
   table.Add("index", col_idx);
   table.Add("rigidity_Nm_per_rad", col_own);
   table.Add("rigidity_at_end_b_Nm_per_rad", col_at_b);
@@ -445,11 +431,57 @@ void RunTransmissionRigidity(const Node& root, const RunContext& ctx, Outputs& o
   table.Add("rigidity_if_rigid_Nm_per_rad", col_without);
   table.Add("backlash_at_end_b_arcmin", col_backlash);
   out.Add("elements.csv", ToCsv(table));
-  for (const ParsedElement& p : parsed)
-    for (const auto& [file, content] : p.files) out.Add(file, content);
+
+  for (size_t i = 0; i < res.elements.size(); ++i) {
+    if (!res.elements[i].reducer) continue;
+    const ReducerResult& x = *res.elements[i].reducer;
+    const auto& cycle = x.cycle;
+    const std::string& name = res.elements[i].spec.name;
+    const std::string stem = "reducer_" + std::to_string(i + 1);
+    Table t;
+    std::vector<double> deg, rot_arcmin, sec, tan;
+    for (size_t k = 0; k < cycle.theta_rad.size(); ++k) {
+      deg.push_back(cycle.theta_rad[k] * 180.0 / kPi);
+      rot_arcmin.push_back(cycle.rotation_rad[k] * kArcminPerRad);
+      sec.push_back(cycle.secant_Nmm_per_rad[k] / 1000.0);
+      tan.push_back(cycle.tangent_Nmm_per_rad[k] / 1000.0);
+    }
+    t.Add("input_angle_deg", deg);
+    t.Add("output_rotation_arcmin", rot_arcmin);
+    std::vector<double> el_arcmin;
+    for (double v : cycle.elastic_rotation_rad) el_arcmin.push_back(v * kArcminPerRad);
+    t.Add("elastic_rotation_arcmin", el_arcmin);
+    t.Add("secant_rigidity_Nm_per_rad", sec);
+    t.Add("tangent_rigidity_Nm_per_rad", tan);
+    t.Add("max_roller_force_input_N", cycle.max_force_input_N);
+    t.Add("max_roller_force_output_N", cycle.max_force_output_N);
+    out.Add(stem + "_stiffness.csv", ToCsv(t));
+    out.Add(stem + "_stiffness.svg",
+            SvgLinePlot({{"secant", deg, sec}, {"tangent", deg, tan}},
+                        {"Torsional rigidity at the output over one input turn (" + name + ")",
+                         "input angle [deg]", "rigidity [N·m/rad]"}));
+    Table lmt;
+    std::vector<double> t_nm, r_arcmin;
+    for (size_t k = 0; k < x.torques_Nmm.size(); ++k) {
+      t_nm.push_back(x.torques_Nmm[k] / 1000.0);
+      r_arcmin.push_back(x.rotations_rad[k] * kArcminPerRad);
+    }
+    lmt.Add("output_torque_Nm", t_nm);
+    lmt.Add("output_rotation_arcmin", r_arcmin);
+    out.Add(stem + "_lost_motion.csv", ToCsv(lmt));
+    out.Add(stem + "_lost_motion.svg",
+            SvgLinePlot({{"mean over the input turn", r_arcmin, t_nm}},
+                        {"Lost-motion curve, input held (" + name + ")", "output rotation [arcmin]",
+                         "output torque [N·m]"}));
+  }
 }
 
-CAMOPT_REGISTER_STUDY("transmission_rigidity", RunTransmissionRigidity);
-
+namespace {
+void RunKind(const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study s = Parse(root);
+  Write(s, Run(s, ctx), out);
+}
+CAMOPT_REGISTER_STUDY("transmission_rigidity", RunKind);
 }  // namespace
-}  // namespace camopt::studies
+
+}  // namespace camopt::studies::transmission_rigidity

@@ -23,6 +23,7 @@
 
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/unloaded_tca.h"
+#include "tests/reference_designs.h"
 
 namespace camopt::cycloid {
 namespace {
@@ -30,12 +31,7 @@ namespace {
 constexpr double kE = 206000.0, kNu = 0.3;
 const double kEStar = kE / (2.0 * (1.0 - kNu * kNu));  // two equal steel bodies
 
-Drive Nnm() {
-  Drive d;  // Table 2 of the paper, NNM of Table 3
-  d.delta_position_mm = -0.016;
-  d.delta_radius_mm = -0.008;
-  return d;
-}
+Drive Nnm() { return camopt::testing::CycloidNnm(); }  // Table 2 of the paper, NNM of Table 3
 
 // ---- classical closed-form geometry ----
 struct ClosedPair {
@@ -294,7 +290,7 @@ TEST(CycloidAudit, FullCrownLoadsAndPeakMatchAnIndependentHertzModel) {
   o.profile_cells = 24;
   o.axial_cells = 24;
   LoadedTca tca(Nnm(), Full(3000.0), Material{kE, kNu}, o);
-  const MeshLoad m = tca.Solve(350.0, crank);
+  const MeshLoad m = tca.Solve(350.0e3, crank);
   ASSERT_TRUE(m.converged) << m.message;
   ASSERT_EQ(m.pairs.size(), ind.size());
   double ind_peak = 0;
@@ -321,7 +317,7 @@ TEST(CycloidAudit, LogCrownLoadsAndPeakMatchTheSlicingModel) {
   o.profile_cells = 24;
   o.axial_cells = 16;
   LoadedTca tca(Nnm(), lcm, Material{kE, kNu}, o);
-  const MeshLoad m = tca.Solve(350.0, crank);
+  const MeshLoad m = tca.Solve(350.0e3, crank);
   ASSERT_TRUE(m.converged) << m.message;
   double ind_peak = 0;
   for (const auto& p : ind) {

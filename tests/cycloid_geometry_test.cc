@@ -8,6 +8,7 @@
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
+#include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
@@ -15,12 +16,7 @@ namespace {
 
 // The paper's example (Table 2) with NNM (Table 3): Δa = −16 µm, Δρ = −8 µm.
 Drive PaperDrive(bool nnm) {
-  Drive d;  // defaults are Table 2
-  if (nnm) {
-    d.delta_position_mm = -0.016;
-    d.delta_radius_mm = -0.008;
-  }
-  return d;
+  return nnm ? camopt::testing::CycloidNnm() : Drive{};  // Drive's defaults are Table 2
 }
 
 // Independent construction of the modified tooth: the roller-centre curve X'(t) written out,

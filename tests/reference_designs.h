@@ -1,7 +1,9 @@
 // The papers' reference designs, shared by every suite and the benchmarks: LCR I, II, III of
-// Table 2; the disc-cam example of Rzine et al. and an oscillating-follower disc cam.
+// Table 2; the disc-cam example of Rzine et al. and an oscillating-follower disc cam; the cycloid
+// paper's NNM drive.
 #pragma once
 
+#include "model/cycloid/tooth_profile.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/lcr/reducer.h"
 #include "model/motion/motion_program.h"
@@ -25,6 +27,22 @@ inline lcr::Reducer<double> LcrII() { return MakeLcr(2, 12, 13, 37, 14, 15, 42, 
 inline lcr::Reducer<double> LcrIII() { return MakeLcr(4, 4, 5, 36, 5, 6, 41, 18, 16, 14); }
 
 inline lcr::Material Steel() { return {206000.0, 0.3}; }
+
+/// The cycloid load-distribution paper's example drive (Table 2: n2 = 15, n1 = 16, a = 90 mm,
+/// ρ = 7.2 mm, e = 4.5 mm, B = 17 mm) with its NNM profile modification (Table 3: Δa = −16 µm,
+/// Δρ = −8 µm), as cycloid_ltca_nnm_*.json.
+inline cycloid::Drive CycloidNnm() {
+  cycloid::Drive d;
+  d.teeth = 15;
+  d.rollers = 16;
+  d.roller_position_radius_mm = 90.0;
+  d.roller_radius_mm = 7.2;
+  d.eccentricity_mm = 4.5;
+  d.face_width_mm = 17.0;
+  d.delta_position_mm = -0.016;
+  d.delta_radius_mm = -0.008;
+  return d;
+}
 
 /// The disc-cam example of Rzine et al. §5 (docs/disc_cam.md; studies/examples/
 /// disc_cam_translating.json): translating roller, r_b = 40, r_f = 10, offset e = 12 (mm);

@@ -2,6 +2,7 @@
 // derivation in docs/lcr_stiffness.md).
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -11,6 +12,8 @@
 
 #include "model/lcr/contact.h"
 #include "model/rigidity/lcr_stiffness.h"
+#include "model/rigidity/lost_motion.h"
+#include "studies/transmission_rigidity_study.h"
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
@@ -154,7 +157,7 @@ TEST(LcrStiffness, ForcesBalanceTheTorqueOnBothTurrets) {
   for (const auto& c : lcr::RollerContacts(r, lcr::Side::kInput, theta))
     ta += PalmgrenForce(d.psi_input * c.arm, r.input.contact_length(), e_star) * c.arm;
   EXPECT_NEAR(tb, t, 1e-9 * t);
-  // Fixed turret: T_A = −T_o m_B n_A /(n_B m_A) (NOTES §1, in the signed form).
+  // Fixed turret: T_A = −T_o m_B n_A /(n_B m_A) (docs/papers.md §1, in the signed form).
   EXPECT_NEAR(ta, -t * 14.0 * 13.0 / (15.0 * 12.0), 1e-9 * t);
 }
 
@@ -274,38 +277,114 @@ TEST(LcrStiffness, ElasticitiesObeyScalingAndMatchFiniteDifferences) {
   EXPECT_LT(eb[3].second + eb[4].second, 0.8);
 }
 
+// ---- Lost motion (model/rigidity/lost_motion.h) ----------------------------------------------
+
+TEST(LcrLostMotion, TorqueGridIsSymmetricAndDenserNearZero) {
+  const double t = 80000.0;
+  const auto g = LostMotionTorques(t);
+  ASSERT_EQ(g.size(), 82u);
+  EXPECT_EQ(g.front(), -t);
+  EXPECT_EQ(g.back(), t);
+  EXPECT_NEAR(g[40], -1e-9 * t, 1e-20);
+  EXPECT_NEAR(g[41], 1e-9 * t, 1e-20);
+  EXPECT_NEAR(g[61], 0.25 * t, 1e-9);  // f = 1/2: T f|f|
+  for (size_t i = 0; i < g.size(); ++i) {
+    EXPECT_NEAR(g[i], -g[g.size() - 1 - i], 1e-9);
+    if (i > 0) {
+      EXPECT_GT(g[i], g[i - 1]);
+    }
+  }
+}
+
+TEST(LcrLostMotion, WithoutClearanceItScalesAsPalmgrensPowerLaw) {
+  // No clearance, rigid bearings: the loaded rollers of each sense do not depend on the load, and
+  // each contact force goes as approach^(10/9), so the rotation goes as T^0.9: the lost motion at
+  // ±3 % is 0.03^0.9 times that at ±100 %.
+  const auto r = LcrII();
+  const double t = 80000.0 * lcr::LoadedArmSign(r, lcr::Side::kOutput);
+  const double full = LostMotion(r, Steel(), t, 0.0, 36, 0.0, 1.0);
+  const double at3 = LostMotion(r, Steel(), t, 0.0, 36);
+  EXPECT_GT(full, 0.0);
+  EXPECT_NEAR(at3, std::pow(0.03, 0.9) * full, 1e-9 * full);
+  // The curve in the load sense is the model's curve of the signed torques, sign restored.
+  const std::vector<double> ts = {-0.5 * std::abs(t), 0.25 * std::abs(t)};
+  for (double sense : {1.0, -1.0}) {
+    const auto in_sense = LostMotionCurveInSense(r, Steel(), ts, sense, 0.0, 12);
+    const auto plain = LostMotionCurve(r, Steel(), {sense * ts[0], sense * ts[1]}, 0.0, 12);
+    EXPECT_DOUBLE_EQ(in_sense[0], sense * plain[0]);
+    EXPECT_DOUBLE_EQ(in_sense[1], sense * plain[1]);
+  }
+}
+
+TEST(LcrLostMotion, ClearanceAddsAtLeastTheDeadBand) {
+  // With a clearance c, roller k closes at ψ = c/a_k ≥ c/max(a), so each turret's restoring torque
+  // g_c(ψ) = Σ F(ψ a_k − c) a_k ≤ g_0(ψ − c/max a): at any load it turns at least c/max(a) more than
+  // without clearance. In both senses and averaged over the turn, that is the dead band: the lost
+  // motion with clearance is at least the dead band plus the lost motion without.
+  const auto r = LcrII();
+  const double t = 80000.0 * lcr::LoadedArmSign(r, lcr::Side::kOutput);
+  const double c = 0.005;
+  const double with = LostMotion(r, Steel(), t, c, 36);
+  const double without = LostMotion(r, Steel(), t, 0.0, 36);
+  const double dead = DeadBand(r, c, 36);
+  EXPECT_GT(dead, 0.0);
+  EXPECT_GE(with, dead + without - 1e-12);
+}
+
 // ---- The element in a study -------------------------------------------------------------------
 
+struct ExampleRun {
+  studies::transmission_rigidity::Result result;
+  nlohmann::json json;
+};
+
+ExampleRun RunExample(const std::string& file) {
+  namespace tr = studies::transmission_rigidity;
+  const nlohmann::json study = camopt::testing::Example(file);
+  const tr::Study s = tr::Parse(studies::Node(&study, file, ""));
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  const tr::Result r = tr::Run(s, ctx);
+  return {r, tr::ToJson(s, r)};
+}
+
 TEST(LcrStiffnessStudy, ReducerElementCarriesItsRatioAndStiffness) {
-  const auto dir = camopt::testing::TempDir("rigidity-lcr");
-  const auto res = camopt::testing::RunCamopt(
-      "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_lcr_ii.json") + " -o " + dir.string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+  const auto [res, j] = RunExample("rigidity_lcr_ii.json");
   const double rb = j["rigidity_Nm_per_rad"].get<double>();
-  EXPECT_NEAR(j["total_ratio"].get<double>(), 90.0, 1e-9);
-  EXPECT_NEAR(j["rigidity_at_end_a_Nm_per_rad"].get<double>(), rb / 8100.0, 1e-9 * rb);
-  const auto& red = j["elements"][0]["reducer"];
-  EXPECT_NEAR(red["mean_secant_rigidity_Nm_per_rad"].get<double>(), rb, 1e-9 * rb);
+  EXPECT_NEAR(res.chain.total_ratio, 90.0, 1e-9);
+  EXPECT_NEAR(1.0e-3 / res.chain.compliance_a, rb / 8100.0, 1e-9 * rb);
+  ASSERT_TRUE(res.elements[0].reducer.has_value());
+  EXPECT_NEAR(res.elements[0].reducer->cycle.mean_secant_Nmm_per_rad / 1000.0, rb, 1e-9 * rb);
+  EXPECT_NEAR(j["elements"][0]["reducer"]["mean_secant_rigidity_Nm_per_rad"].get<double>(), rb, 1e-9 * rb);
   // The reducer alone equals the model's cycle mean.
   const auto r = LcrII();
   const auto cyc = StiffnessCycle(r, Steel(), 80000.0 * lcr::LoadedArmSign(r, lcr::Side::kOutput), 0.0, 720);
   EXPECT_NEAR(rb, cyc.mean_secant_Nmm_per_rad / 1000.0, 1e-9 * rb);
+}
+
+TEST(LcrStiffnessStudy, ReducerElementWritesItsCurves) {
+  const auto dir = camopt::testing::TempDir("rigidity-lcr");
+  const auto res = camopt::testing::RunCamopt(
+      "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_lcr_ii.json") + " -o " + dir.string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(dir / "result.json"));
   EXPECT_TRUE(std::filesystem::exists(dir / "reducer_1_stiffness.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "reducer_1_lost_motion.svg"));
+  // The registered runner writes what the C++ entry points return.
+  EXPECT_EQ(nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json")),
+            RunExample("rigidity_lcr_ii.json").json);
 }
 
 TEST(LcrStiffnessStudy, ClearanceBecomesBacklashInTheChain) {
-  const auto dir = camopt::testing::TempDir("rigidity-servo");
-  const auto res = camopt::testing::RunCamopt(
-      "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_servo_lcr.json") + " -o " + dir.string());
-  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-  const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+  const auto [res, j] = RunExample("rigidity_servo_lcr.json");
   const auto& e = j["elements"][2];
-  EXPECT_NEAR(e["backlash_at_end_b_arcmin"].get<double>(), e["reducer"]["dead_band_arcmin"].get<double>(), 1e-12);
-  EXPECT_NEAR(j["backlash_at_end_b_arcmin"].get<double>(), e["reducer"]["dead_band_arcmin"].get<double>(), 1e-12);
+  ASSERT_TRUE(res.elements[2].reducer.has_value());
+  const double dead_band_arcmin = e["reducer"]["dead_band_arcmin"].get<double>();
+  EXPECT_NEAR(e["backlash_at_end_b_arcmin"].get<double>(), dead_band_arcmin, 1e-12);
+  EXPECT_NEAR(j["backlash_at_end_b_arcmin"].get<double>(), dead_band_arcmin, 1e-12);
+  EXPECT_NEAR(res.chain.backlash_a, 90.0 * res.chain.backlash_b, 1e-9);
   EXPECT_NEAR(j["backlash_at_end_a_arcmin"].get<double>(), 90.0 * j["backlash_at_end_b_arcmin"].get<double>(), 1e-9);
-  EXPECT_GT(e["reducer"]["dead_band_arcmin"].get<double>(), 0.0);
+  EXPECT_GT(res.elements[2].reducer->dead_band_rad, 0.0);
 }
 
 TEST(LcrStiffnessStudy, BadReducerIsAClearError) {

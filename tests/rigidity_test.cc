@@ -1,6 +1,7 @@
-// Tests of the transmission rigidity chain (papers/transmission-rigidity.txt, NOTES §4).
+// Tests of the transmission rigidity chain (the transmission-rigidity paper, docs/papers.md §4).
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,8 @@
 #include "model/rigidity/chain.h"
 #include "model/rigidity/chain_elements.h"
 #include "model/rigidity/elements.h"
+#include "model/rigidity/lost_motion.h"
+#include "studies/transmission_rigidity_study.h"
 #include "tests/test_util.h"
 
 namespace camopt::rigidity {
@@ -280,18 +283,74 @@ TEST(Rigidity, ChainGradientThroughAGearStageMatchesCentralDifferences) {
   camopt::testing::ExpectJacobianMatchesCentralDifferences<4>(f, {2.0, 3.0, 5.0, 0.01});
 }
 
-// ---- The study through the CLI ---------------------------------------------------------------
+// ---- The chain rule of elasticities (model/rigidity/lost_motion.h) ----------------------------
 
-TEST(RigidityStudy, ExamplesRunAndReportRigidityAndShares) {
+TEST(RigidityChainRule, SeriesSpringsShareIsTheElasticityOfEach) {
+  // Two springs in series: R = R1 R2/(R1 + R2), so ∂ln R/∂ln R1 = R2/(R1 + R2), the share of 1.
+  const double r1 = 3.0e6, r2 = 1.0e6;
+  const std::vector<ElementSpec> specs = {Coupling(r1), Coupling(r2)};
+  const auto chain = EvaluateChain<double>(specs);
+  EXPECT_NEAR(ChainElasticity(chain.share[0], 1.0), r2 / (r1 + r2), 1e-14);
+  EXPECT_NEAR(ChainElasticity(chain.share[1], 1.0), r1 / (r1 + r2), 1e-14);
+  // The AD elasticities of the whole chain agree.
+  const auto el = RigidityElasticities(specs);
+  EXPECT_NEAR(el[0][0], r2 / (r1 + r2), 1e-12);
+  EXPECT_NEAR(el[1][0], r1 / (r1 + r2), 1e-12);
+}
+
+TEST(RigidityChainRule, UniformShaftInSeriesWithACoupling) {
+  // A solid uniform shaft, R_s = π G D⁴/(32 L): ∂ln R_s/∂ln D = 4, ∂ln R_s/∂ln L = −1. In series
+  // with a coupling R_c the chain's elasticity is that times R_c/(R_s + R_c).
+  const double d = 30.0, l = 400.0, rc = 2.0e6;
+  const double rs = kPi * kG * std::pow(d, 4) / (32.0 * l);
+  const std::vector<ElementSpec> specs = {Torsion(d, 0.0, l), Coupling(rc)};
+  const auto chain = EvaluateChain<double>(specs);
+  const double share = rc / (rs + rc);
+  ASSERT_NEAR(chain.share[0], share, 1e-12);
+  const auto named = ChainElasticities<double>(chain.share[0], {{"outer_diameter_mm", 4.0}, {"length_mm", -1.0}});
+  ASSERT_EQ(named.size(), 2u);
+  EXPECT_EQ(named[0].first, "outer_diameter_mm");
+  EXPECT_NEAR(named[0].second, 4.0 * share, 1e-12);
+  EXPECT_NEAR(named[1].second, -share, 1e-12);
+  const auto el = RigidityElasticities(specs);  // [G, D, d, L] of the shaft
+  EXPECT_NEAR(el[0][1], 4.0 * share, 1e-10);
+  EXPECT_NEAR(el[0][3], -share, 1e-10);
+  // Over ceres::Jet the rule carries derivatives: d(share·e)/d share = e.
+  using J = ceres::Jet<double, 1>;
+  const J j = ChainElasticity(J(share, 0), J(4.0));
+  EXPECT_DOUBLE_EQ(j.a, 4.0 * share);
+  EXPECT_DOUBLE_EQ(j.v[0], 4.0);
+}
+
+TEST(Rigidity, ReportRadiusAndReferredRigidityClosedForms) {
+  // Eq. 5 transposed: a rigidity R = 9657 N·m/rad at r = 60 mm is S = R/r² = 2682.5 N/mm.
+  const double c = 1.0 / 9657.0e3;  // rad/(N·mm)
+  EXPECT_NEAR(LinearStiffnessAtRadius(c, 60.0), 9657.0e3 / 3600.0, 1e-9);
+  // Eq. 6: 8000 N·m/rad behind a 1:90 reduction is 8000/8100 N·m/rad at its input.
+  EXPECT_NEAR(RigidityThroughRatio(8000.0, 90.0), 8000.0 / 8100.0, 1e-15);
+  // Making a link rigid removes exactly its compliance referred to B.
+  const std::vector<ElementSpec> specs = {Coupling(2.0e6), Gear(3.0), Coupling(5.0e6)};
+  const auto chain = EvaluateChain<double>(specs);
+  const double c0 = 1.0 / 2.0e6 / 9.0, c2 = 1.0 / 5.0e6;
+  EXPECT_NEAR(chain.compliance_b_if_rigid[0], c2, 1e-20);
+  EXPECT_NEAR(chain.compliance_b_if_rigid[2], c0, 1e-20);
+  EXPECT_NEAR(chain.compliance_b_if_rigid[1], c0 + c2, 1e-20);
+}
+
+// ---- The study: numbers through the C++ entry points, exit codes and files through the CLI ---------------------------------------------------------------
+
+TEST(RigidityStudy, ExamplesReportRigidityAndShares) {
+  // Through the C++ entry points (Parse, Run, ToJson).
+  namespace tr = studies::transmission_rigidity;
   for (const std::string name : {"stepped_shaft", "input_transmission", "output_transmission",
                                  "gearbox"}) {
     SCOPED_TRACE(name);
-    const auto dir = camopt::testing::TempDir("rigidity-" + name);
-    const auto res = camopt::testing::RunCamopt(
-        "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_" + name + ".json") +
-        " -o " + dir.string());
-    ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
-    const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+    const nlohmann::json study = camopt::testing::Example("rigidity_" + name + ".json");
+    const tr::Study s = tr::Parse(studies::Node(&study, name + ".json", ""));
+    studies::RunContext ctx;
+    ctx.quiet = true;
+    const tr::Result r = tr::Run(s, ctx);
+    const nlohmann::json j = tr::ToJson(s, r);
     ASSERT_TRUE(j["rigidity_Nm_per_rad"].is_number());
     double sum = 0.0;
     for (const auto& e : j["elements"]) {
@@ -300,14 +359,35 @@ TEST(RigidityStudy, ExamplesRunAndReportRigidityAndShares) {
     }
     EXPECT_NEAR(sum, 1.0, 1e-9);
     if (name == "stepped_shaft") {
-      EXPECT_NEAR(j["rigidity_Nm_per_rad"].get<double>(), 9657.0, 1.0);
+      EXPECT_NEAR(1.0e-3 / r.chain.compliance_b, 9657.0, 1.0);
     }
     if (name == "output_transmission") {
       // Eq. 5 transposed at the 60 mm follower arm: S = R / r².
       EXPECT_NEAR(j["linear_stiffness_at_report_radius_N_per_mm"].get<double>(),
                   j["rigidity_Nm_per_rad"].get<double>() * 1000.0 / 3600.0, 1e-6);
+      EXPECT_EQ(r.elements[r.chain.dominant].spec.name, "pivot shaft torsion");
       EXPECT_EQ(j["dominant"]["name"], "pivot shaft torsion");
     }
+  }
+}
+
+TEST(RigidityStudy, ExamplesRunThroughTheCli) {
+  for (const std::string name : {"stepped_shaft", "input_transmission", "output_transmission",
+                                 "gearbox"}) {
+    SCOPED_TRACE(name);
+    const auto dir = camopt::testing::TempDir("rigidity-" + name);
+    const auto res = camopt::testing::RunCamopt(
+        "run -q " + camopt::testing::SourcePath("studies/examples/rigidity_" + name + ".json") +
+        " -o " + dir.string());
+    ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+    EXPECT_TRUE(std::filesystem::exists(dir / "result.json"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "elements.csv"));
+    // The registered runner writes what the C++ entry points return.
+    namespace tr = studies::transmission_rigidity;
+    const nlohmann::json study = camopt::testing::Example("rigidity_" + name + ".json");
+    const tr::Study s = tr::Parse(studies::Node(&study, name + ".json", ""));
+    EXPECT_EQ(nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json")),
+              tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})));
   }
 }
 

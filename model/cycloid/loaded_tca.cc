@@ -138,8 +138,8 @@ std::vector<double> LoadedTca::Gap(const contact::Grid& grid, double roller_curv
   return gap;
 }
 
-MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
-  if (!(std::isfinite(torque_Nm) && torque_Nm >= 0))
+MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
+  if (!(std::isfinite(torque_Nmm) && torque_Nmm >= 0))
     throw std::invalid_argument("torque must be finite and >= 0");
   MeshLoad out;
   out.crank_angle_rad = crank_angle_rad;
@@ -151,7 +151,7 @@ MeshLoad LoadedTca::Solve(double torque_Nm, double crank_angle_rad) {
     out.message = "no roller on the loaded flank";
     return out;
   }
-  const double moment = torque_Nm * 1000.0;  // N·mm
+  const double moment = torque_Nmm;
   if (moment <= 0) return out;               // zero torque: the unloaded state, no loads
 
   // Candidate pairs: loaded flank, backlash small enough to close.
@@ -342,12 +342,12 @@ std::vector<double> UniformCrankAngles(int steps, double span_rad) {
   return a;
 }
 
-CycleResult RunCycle(LoadedTca& tca, double torque_Nm, const std::vector<double>& angles,
+CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double>& angles,
                      const std::function<void(double)>& progress) {
   CycleResult r;
   const size_t n = angles.size();
   for (size_t k = 0; k < n; ++k) {
-    r.meshes.push_back(tca.Solve(torque_Nm, angles[k]));
+    r.meshes.push_back(tca.Solve(torque_Nmm, angles[k]));
     if (progress) progress(double(k + 1) / n);
   }
   r.lte_arcsec.resize(n);

@@ -100,8 +100,8 @@ class LoadedTca {
   LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
             LoadedOptions options = {});
 
-  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nm (>= 0).
-  MeshLoad Solve(double torque_Nm, double crank_angle_rad);
+  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nmm [N·mm] (>= 0).
+  MeshLoad Solve(double torque_Nmm, double crank_angle_rad);
 
   /// Changes the crowning (sweeps and tuning); the pair memory is kept as a warm start.
   /// @throws std::invalid_argument for invalid crowning.
@@ -150,10 +150,10 @@ struct CycleResult {
   bool converged = true;
 };
 
-/// Runs the LTCA over the crank angles [rad] (in order). The gear ratio uses the derivative of
+/// Runs the LTCA under the disc torque torque_Nmm [N·mm] over the crank angles [rad] (in order). The gear ratio uses the derivative of
 /// the LTE over the crank angle by central differences, periodic when the angles are a uniform
 /// sampling of a whole number of mesh periods 2π/n1, one-sided at the ends otherwise.
-CycleResult RunCycle(LoadedTca& tca, double torque_Nm, const std::vector<double>& crank_angles_rad,
+CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double>& crank_angles_rad,
                      const std::function<void(double)>& progress = nullptr);
 
 /// Uniform crank angles over [0, span) [rad].

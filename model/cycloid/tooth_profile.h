@@ -31,20 +31,6 @@ struct DriveTpl {
   T face_width_mm = T(17.0);              ///< B
   T delta_position_mm = T(0.0);           ///< Δa, profile modification of the roller position
   T delta_radius_mm = T(0.0);             ///< Δρ, profile modification of the roller radius
-
-  template <typename S>
-  DriveTpl<S> Cast() const {
-    DriveTpl<S> d;
-    d.teeth = teeth;
-    d.rollers = rollers;
-    d.roller_position_radius_mm = S(Value(roller_position_radius_mm));
-    d.roller_radius_mm = S(Value(roller_radius_mm));
-    d.eccentricity_mm = S(Value(eccentricity_mm));
-    d.face_width_mm = S(Value(face_width_mm));
-    d.delta_position_mm = S(Value(delta_position_mm));
-    d.delta_radius_mm = S(Value(delta_radius_mm));
-    return d;
-  }
 };
 using Drive = DriveTpl<double>;
 

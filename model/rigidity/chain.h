@@ -1,5 +1,5 @@
 // A transmission as a series chain of compliant elements and gear stages
-// (papers/transmission-rigidity.txt, eqs. 2 and 6; NOTES §4).
+// (the transmission-rigidity paper, docs/papers.md §4, eqs. 2 and 6; docs/rigidity.md).
 //
 // The chain runs from end A (e.g. the motor) to end B (e.g. the cam or the payload). Every link
 // sits on one shaft and has a compliance (1/rigidity, rad per N·mm) and a backlash (rad) measured
@@ -38,6 +38,9 @@ struct ChainResult {
   std::vector<T> compliance_at_b;       ///< each link's compliance referred to end B
   std::vector<T> share;                 ///< each link's share of the total compliance
   std::vector<T> backlash_at_b;         ///< each link's backlash referred to end B [rad]
+  /// The total compliance at end B had link i been rigid (the paper's remark on the stepped
+  /// shaft: what ignoring an element would have predicted).
+  std::vector<T> compliance_b_if_rigid;
   int dominant = -1;                    ///< index of the link with the largest share
 };
 
@@ -50,6 +53,7 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
   r.compliance_at_b.resize(n);
   r.backlash_at_b.resize(n);
   r.share.resize(n);
+  r.compliance_b_if_rigid.resize(n);
   // Walk from end B towards A, carrying the product of the ratios of the stages passed.
   T scale(1.0);  // Π N_j over stages after link k
   r.compliance_b = T(0.0);
@@ -68,7 +72,10 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
   r.backlash_a = r.backlash_b * scale;
   double best = -1.0;
   for (size_t i = 0; i < n; ++i) {
-    // A chain of rigid links only has zero compliance: every share is then 0.
+    r.compliance_b_if_rigid[i] = r.compliance_b - r.compliance_at_b[i];
+    // A chain of rigid links only has zero compliance: every share is then 0 (a value branch on a
+    // degenerate case, where a share is undefined; the study rejects such a chain). The dominant
+    // link is an argmax in double: nothing differentiates it.
     r.share[i] = Value(r.compliance_b) > 0.0 ? r.compliance_at_b[i] / r.compliance_b : T(0.0);
     if (Value(r.share[i]) > best) {
       best = Value(r.share[i]);
@@ -76,6 +83,13 @@ ChainResult<T> ComposeChain(const std::vector<Link<T>>& links) {
     }
   }
   return r;
+}
+
+/// A rigidity R (any unit) seen through a gear stage of ratio N from its fast side: R / N² (eq. 6
+/// read backwards: the rigidity at the driving shaft of a reduction).
+template <typename T>
+T RigidityThroughRatio(const T& rigidity, const T& ratio) {
+  return rigidity / (ratio * ratio);
 }
 
 }  // namespace camopt::rigidity

@@ -1,5 +1,5 @@
 // Rigidity of transmission elements: closed forms of the transmission-rigidity paper
-// (papers/transmission-rigidity.txt, NOTES §4) plus two textbook beam cases, over the scalar T.
+// (docs/papers.md §4, docs/rigidity.md) plus two textbook beam cases, over the scalar T.
 //
 // Units: lengths mm, forces N, moduli MPa (N/mm²). A linear stiffness is in N/mm, a torsional
 // rigidity in N·mm/rad (divide by 1000 for N·m/rad). "Rigidity" is angular, "stiffness" linear,
@@ -39,6 +39,13 @@ T ShaftTorsionRigidity(const T& shear_modulus, const T& outer_d, const T& inner_
 template <typename T>
 T RigidityFromLinear(const T& stiffness, const T& radius) {
   return stiffness * radius * radius;
+}
+
+/// The linear stiffness at radius r of a torsional compliance c (eq. 5 transposed, S = R / r²
+/// with R = 1/c): 1/(c r²). c [rad/(N·mm)], r [mm] -> N/mm.
+template <typename T>
+T LinearStiffnessAtRadius(const T& compliance, const T& radius) {
+  return T(1.0) / (compliance * radius * radius);
 }
 
 /// Lateral stiffness at a load point of a simply supported shaft of constant section,

@@ -51,6 +51,8 @@ template <typename T>
 T PalmgrenForce(const T& approach, const T& length, const T& e_star) {
   using std::pow;
   const T d = PositivePart(approach);
+  // Value branch, harmless: F ∝ δ^(10/9) meets 0 with a zero derivative, so both sides agree to
+  // first order; the branch only keeps pow's infinite derivative at δ = 0 out of the Jet.
   if (!(Value(d) > 0)) return T(0.0);
   return e_star * pow(d * pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
 }
@@ -69,6 +71,9 @@ struct TurretSpring {
   /// contact approach δ_P, so Newton from δ_P = δ (residual >= 0) descends monotonically to the
   /// root; then one Newton step in T gives exact first derivatives (implicit function theorem).
   T RollerForce(const T& closure) const {
+    // Value branches, harmless: a separated roller carries nothing, and the force leaves 0 with a
+    // zero derivative (first contact is C¹, see PalmgrenForce); bearing == 0 means "no bearing
+    // spring", a model choice, never a design value crossing 0.
     if (!(Value(closure) > 0)) return T(0.0);
     if (Value(bearing) == 0.0) return PalmgrenForce(closure, length, e_star);
     const double dv = Value(closure), kb = Value(bearing), l = Value(length), es = Value(e_star);
@@ -88,6 +93,7 @@ struct TurretSpring {
   }
   /// dF/dδ of one roller: the contact's (10/9) F/δ_P in series with k_b.
   T RollerRigidity(const T& closure) const {
+    // Continuous at first contact: (10/9) F/δ ∝ δ^(1/9) → 0.
     if (!(Value(closure) > 0)) return T(0.0);
     const T f = RollerForce(closure);
     const T kc = T(10.0 / 9.0) * f / PalmgrenApproach(f, length, e_star);
@@ -128,6 +134,11 @@ struct TurretSpring {
     double amax = 0.0;
     for (const T& a : arms) amax = std::max(amax, sign * Value(a));
     if (!(amax > 0)) throw std::domain_error("no roller of the turret can carry this torque");
+    // Value branches on the load sense and on which rollers carry it (first contact), harmless: a
+    // roller joins the loaded set when its arm crosses 0, where its term |a|^(19/9) and that
+    // term's derivative are both 0, so the sum is C¹ across the change of set. T = 0 (above) is
+    // the middle of the dead band, not a load case. The bracketing below is in double only; the
+    // derivatives come from the Newton step in T at the end.
     if (Value(clearance) == 0.0 && Value(bearing) == 0.0) {
       T sum(0.0);
       for (const T& a : arms)

@@ -1,0 +1,57 @@
+// Study kind "cycloid_crowning_tuning": the logarithmic crowning coefficient f (and, as an option,
+// its effective length L) that minimises the peak contact stress over the mesh cycle at a design
+// torque, subject to the contact pattern staying off the face edges at a maximum torque.
+//
+// Method. The mesh repeats every 2π/n1 of crank angle (up to a relabelling of the rollers), so one
+// mesh period sampled uniformly stands for the cycle. A scan of f over its bounds gives the
+// stress-versus-f curve; COBYLA (bounded, derivative-free, inequality constraints handled directly;
+// optimizers/ through NLopt) then refines from the best feasible point of the scan. The problem is
+// objectives/cycloid_crowning.h.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/cycloid/loaded_tca.h"
+#include "objectives/cycloid_crowning.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::studies::cycloid_crowning_tuning {
+
+struct Study {
+  std::string name;
+  cycloid::Drive drive;
+  cycloid::Material material;
+  double design_torque_Nm = 0, max_torque_Nm = 0;  ///< as in the file (disc torques)
+  double coefficient_lo_mm = 0, coefficient_hi_mm = 0;
+  bool tune_length = false;             ///< L a variable (its range is not a single value)
+  double length_lo_mm = 0, length_hi_mm = 0;  ///< both the face width when L is not given
+  double reference_coefficient_mm = 0.005;
+  int curve_points = 11;
+  int max_evaluations = 30;
+  double required_edge_margin_um = 0;
+  cycloid::LoadedOptions options;
+  int crank_angles_per_mesh_period = 6;
+};
+
+struct Result {
+  std::vector<objectives::CrowningEvaluation> curve;    ///< the scan (L = length_lo_mm)
+  std::vector<objectives::CrowningEvaluation> history;  ///< the optimizer's evaluations, in order
+  objectives::CrowningEvaluation reference;             ///< f = reference, L = face width
+  objectives::CrowningEvaluation best;  ///< best feasible point seen (else the scan's start)
+  bool feasible = false;
+  std::string status;                   ///< "converged", "max_evaluations reached", or why stopped
+  int evaluations = 0;                  ///< model evaluations, scan and reference included
+};
+
+/// @throws StudyError for bad input (exit 2).
+Study Parse(const Node& root);
+Result Run(const Study& study, const RunContext& ctx);
+nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json, stress_vs_coefficient.csv/.svg, history.csv, edge_margin_vs_coefficient.svg.
+void Write(const Study& study, const Result& result, Outputs& out);
+
+}  // namespace camopt::studies::cycloid_crowning_tuning

@@ -1,0 +1,47 @@
+// Study kind "cycloid_ltca": loaded tooth contact analysis of a cycloid stage over the crank
+// angles (model/cycloid/, docs/cycloid.md). Outputs result.json, per_angle.csv, backlash.csv,
+// lte.svg, gear_ratio.svg, contact_stress.svg, pressure_map.svg (every contacting pair at the
+// angle of the maximum stress), pressure_max.csv and a tooth drawing (tooth.svg, tooth.dxf).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/common/geometry.h"
+#include "model/cycloid/crowning.h"
+#include "model/cycloid/loaded_tca.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::studies::cycloid_ltca {
+
+struct Study {
+  std::string name;
+  cycloid::Drive drive;
+  cycloid::Crowning crowning;
+  cycloid::Material material;
+  double torque_Nm = 0;  ///< on the disc, as in the file
+  cycloid::LoadedOptions options;
+  std::vector<double> crank_angles_rad;
+};
+
+struct Result {
+  cycloid::CycleResult cycle;   ///< per angle (meshes) and over the cycle
+  double composite_modulus_MPa = 0;
+  /// Unloaded backlash [arcsec] per roller (outer index) and crank angle; −1 off the loaded flank.
+  std::vector<std::vector<double>> backlash_arcsec;
+  std::string warning;          ///< the first angle that did not converge, or empty
+  std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]
+  std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
+};
+
+/// @throws StudyError for bad input (exit 2).
+Study Parse(const Node& root);
+Result Run(const Study& study, const RunContext& ctx);
+nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json and the tables, plots and drawings listed above.
+void Write(const Study& study, const Result& result, Outputs& out);
+
+}  // namespace camopt::studies::cycloid_ltca
