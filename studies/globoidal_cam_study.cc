@@ -185,7 +185,27 @@ Study Parse(const Node& root) {
   }
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
-    a.CheckKnownFields({"angle_steps", "axis_steps"});
+    a.CheckKnownFields({"angle_steps", "axis_steps", "evaluate"});
+    if (a.Has("evaluate")) {
+      s.evaluate_given = true;
+      s.dynamics_stage = s.export_stage = false;
+      for (const Node& n : a["evaluate"].Elements()) {
+        const std::string stage = n.String();
+        if (stage == "dynamics") {
+          s.dynamics_stage = true;
+        } else if (stage == "export") {
+          s.export_stage = true;
+        } else if (stage != "geometry") {
+          n.Fail("one of \"geometry\", \"dynamics\", \"export\"");
+        }
+      }
+      // A stage asked for needs its inputs; the ones not asked for are not run.
+      if (s.dynamics_stage && s.speeds_rpm.empty()) {
+        const Node speeds = root["dynamics"]["cam_speeds_rpm"];  // "missing" when absent
+        speeds.Fail("at least one cam speed (analysis.evaluate asks for the dynamics)");
+      }
+      if (!s.dynamics_stage) s.speeds_rpm.clear();
+    }
     s.angle_steps = a.IntegerOr("angle_steps", 36, s.angle_steps);
     if (s.angle_steps > 200000) a["angle_steps"].Fail("a whole number <= 200000");
     s.axis_steps = a.IntegerOr("axis_steps", 2, s.axis_steps);
@@ -201,6 +221,7 @@ Study Parse(const Node& root) {
     if (double(s.export_angle_steps) * s.export_axis_steps > 4e6)
       e.FailWith("angle_steps × axis_steps must stay below 4e6");
   }
+  if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
   // Every check, with the jam limit over the analysis grid.
   FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root);
   return s;
@@ -259,10 +280,12 @@ Result Run(const Study& s, const RunContext& ctx) {
   t.swing_acceleration_deg_per_rad2 = col([&](int i) { return svaj[i].a / kDeg; });
   t.swing_jerk_deg_per_rad3 = col([&](int i) { return svaj[i].j / kDeg; });
 
-  // Quasi-static forces and dynamics per speed.
+  // Quasi-static forces and dynamics per speed (the "dynamics" stage).
   r.effective_modulus_MPa = s.dyn.contact.composite_modulus_MPa();
   const bool conformal = r.survey.conformal;
-  if (!s.speeds_rpm.empty() && (r.undercut || conformal)) {
+  if (!s.dynamics_stage) {
+    // not asked for
+  } else if (!s.speeds_rpm.empty() && (r.undercut || conformal)) {
     r.dynamics_skipped = r.undercut ? "the working surface is undercut"
                                     : "the contact is conformal (no Hertz radius)";
   } else {
@@ -381,10 +404,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                  {"peak_velocity_deg_per_rad", r.peak_velocity_deg_per_rad},
                  {"peak_acceleration_deg_per_rad2", r.peak_acceleration_deg_per_rad2},
                  {"peak_jerk_deg_per_rad3", r.peak_jerk_deg_per_rad3}};
-  j["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
-               {"turret_inertia_kgm2", s.dyn.inertia_Nmms2 * 1e-3}};
-  j["effective_modulus_MPa"] = r.effective_modulus_MPa;
-  if (!r.dynamics_skipped.empty()) {
+  if (s.evaluate_given) {
+    j["evaluated"] = {"geometry"};
+    if (s.dynamics_stage) j["evaluated"].push_back("dynamics");
+    if (s.export_stage) j["evaluated"].push_back("export");
+  }
+  if (s.dynamics_stage) {
+    j["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
+                 {"turret_inertia_kgm2", s.dyn.inertia_Nmms2 * 1e-3}};
+    j["effective_modulus_MPa"] = r.effective_modulus_MPa;
+  }
+  if (!s.dynamics_stage) {
+    // not asked for: no dynamics entry at all
+  } else if (!r.dynamics_skipped.empty()) {
     j["dynamics"] = {{"skipped", r.dynamics_skipped}};
   } else {
     nlohmann::json speeds = nlohmann::json::array();

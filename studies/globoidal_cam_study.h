@@ -37,6 +37,11 @@ struct Study {
   int export_angle_steps = 360;
   int export_axis_steps = 6;
   bool export_stl = true, export_point_cloud = true;
+  /// The stages asked for ("analysis.evaluate"; all when absent). The geometry always runs (the
+  /// other stages need it); without "dynamics" no load, contact material or speeds are needed and
+  /// none are simulated; without "export" no surfaces are built.
+  bool dynamics_stage = true, export_stage = true;
+  bool evaluate_given = false;
 };
 
 /// The dynamics at one cam speed, in the units of result.json.

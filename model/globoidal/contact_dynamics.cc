@@ -312,7 +312,7 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
     long nst = 0, netf = 0;
     counters(&nst, &netf);
     if (counted_steps + nst > in.max_steps)
-      throw DynamicsError("max_steps", "more than " + Num(in.max_steps) + " solver steps by t = " +
+      throw DynamicsError("max_steps", "more than " + std::to_string(long(in.max_steps)) + " solver steps by t = " +
                                            Num(t_ret) + " s of " + Num(t_end) +
                                            " s: loosen relative_tolerance (now " +
                                            Num(in.relative_tolerance) +
