@@ -110,6 +110,9 @@ std::vector<DesignProblem> CheckDesign(const Reducer<T>& r) {
     if (Value(c.roller_radius) >= Value(c.turret_radius))
       problems.push_back({name + ".roller_diameter_mm", "roller radius must be below the turret radius"});
   }
+  if (problems.empty() && long(r.input.lobes) * r.output.rollers == long(r.output.lobes) * r.input.rollers)
+    problems.push_back({"output.lobes", "m_A·n_B = m_B·n_A = " + std::to_string(long(r.input.lobes) * r.output.rollers) +
+                                            ": the output turret stands still (infinite speed ratio)"});
   return problems;
 }
 
