@@ -182,6 +182,17 @@ Study Parse(const Node& root) {
     }
     s.max_steps = d.IntegerOr("max_steps", 1, s.max_steps);
     if (s.max_steps > 200000000) d["max_steps"].Fail("a whole number <= 2e8");
+    for (const double rpm : s.speeds_rpm) {
+      // The solver's step is at most 0.5° of cam: a run shorter than max_steps of those.
+      DynamicsInput probe = s.dyn;
+      probe.cam_speed_rad_s = rpm * 2 * kPi / 60;
+      probe.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
+      const double least = probe.end_time_s / globoidal::MaxStep(probe);
+      if (least > s.max_steps)
+        d.FailWith("at " + Format(rpm) + " rpm the run needs at least " + Format(std::ceil(least)) +
+                   " steps (a step spans at most 0.5° of cam), more than max_steps = " +
+                   std::to_string(s.max_steps) + ": shorten end_time_s or raise max_steps");
+    }
   }
   if (root.Has("analysis")) {
     const Node a = root["analysis"];

@@ -260,9 +260,7 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   sv.ls = SUNLinSol_Dense(sv.y, sv.a, sv.ctx);
   Require(CVodeSetLinearSolver(sv.mem, sv.ls, sv.a), "CVodeSetLinearSolver");
   Require(CVodeRootInit(sv.mem, 2, SwitchingFunctions), "CVodeRootInit");
-  // A step never spans more than 0.5° of cam rotation (or 1/200 of a held-cam run), so a contact
-  // cannot open and close within one step unseen by the root finder.
-  const double h_max = omega > 0.0 ? (0.5 * kPi / 180.0) / omega : t_end / 200.0;
+  const double h_max = MaxStep(in);
   auto configure = [&]() {
     Require(CVodeSetMaxStep(sv.mem, h_max), "CVodeSetMaxStep");
     Require(CVodeSetStopTime(sv.mem, t_end), "CVodeSetStopTime");

@@ -151,6 +151,13 @@ inline double ContactArm(const DynamicsInput& in) {
   return in.contact_arm_mm > 0.0 ? in.contact_arm_mm : in.cam.pitch_radius;
 }
 
+/// The longest step the solver may take [s]: 0.5° of cam rotation (1/200 of the run with the cam
+/// held), so that a contact cannot open and close within one step unseen by the root finder.
+/// A run needs at least end_time / MaxStep(in) steps.
+inline double MaxStep(const DynamicsInput& in) {
+  return in.cam_speed_rad_s > 0.0 ? (0.5 * kPi / 180.0) / in.cam_speed_rad_s : in.end_time_s / 200.0;
+}
+
 /// Contact stiffness of roller j at cam angle θ from the geometry (eq. 11 with R₁ = R and R₂
 /// the working surface's radius across the roller at the contact arm).
 double RollerStiffness(const DynamicsInput& in, int j, double theta);
