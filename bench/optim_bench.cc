@@ -10,18 +10,15 @@
 #include "optimizers/solver.h"
 #include "studies/lcr_min_size_study.h"
 #include "studies/study.h"
+#include "tests/reference_designs.h"
 
 namespace {
 
 using camopt::objectives::LcrConstraintForm;
 
+// The LCR II sizing duty on the −90 optimum's lobe/roller counts.
 camopt::objectives::LcrSizingSpec Spec(LcrConstraintForm form) {
-  camopt::objectives::LcrSizingSpec s;
-  s.lobes_a = 25, s.rollers_a = 26, s.lobes_b = 35, s.rollers_b = 36;  // the −90 optimum's
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
-  return s;
+  return camopt::testing::LcrIISizingSpec(form, 25, 26, 35, 36);
 }
 
 void BM_LcrSizingValues(benchmark::State& state) {

@@ -52,11 +52,7 @@ void ExpectEvaluatorJacobianMatches(const objectives::Evaluator& ev, std::vector
 }
 
 LcrSizingSpec LcrIISpec(LcrConstraintForm form) {
-  LcrSizingSpec s;
-  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
+  LcrSizingSpec s = testing::LcrIISizingSpec(form);
   if (form == LcrConstraintForm::kActiveSet)
     for (int side = 0; side < 2; ++side)  // two rollers share one angle
       s.active.force[side] = s.active.stress[side] = {{0.1, 0}, {0.1, 3}, {0.37, 5}, {1.2, 11}, {2.9, 12}};
