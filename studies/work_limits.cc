@@ -114,12 +114,24 @@ WorkEstimate Rigidity(const json& s, double factor, const std::string& file) {
 
 WorkEstimate Globoidal(const json& s, double factor) {
   std::vector<Term> terms;
-  // The dynamics integrator is adaptive and bounds its own steps per speed (its max_steps):
-  // the estimate counts a nominal 1e4 steps per speed, so the number of speeds is capped.
-  const json& speeds = Sub(Sub(s, "dynamics"), "cam_speeds_rpm");
-  const double n_speeds = double(Count(speeds));
-  terms.push_back({1e4 * n_speeds, "/dynamics/cam_speeds_rpm",
-                   Num(n_speeds) + " cam speeds × 1e4 nominal integration steps"});
+  const json& d = Sub(s, "dynamics");
+  // The dynamics run on CVODE with error control: about 5000 accepted steps per cam revolution
+  // at the default tolerance (docs/globoidal.md), never more than max_steps per speed.
+  constexpr double kStepsPerRevolution = 5000;
+  const double end = Size(d, "end_time_s", 0);
+  const double max_steps = Size(d, "max_steps", 2e7);
+  const json& speeds = Sub(d, "cam_speeds_rpm");
+  double steps = 0;
+  if (speeds.is_array())
+    for (const json& v : speeds) {
+      const double rpm = v.is_number() ? v.get<double>() : 0;
+      if (!(rpm > 0) || !std::isfinite(rpm)) continue;
+      const double revolutions = end > 0 ? end * rpm / 60.0 : 1.0;
+      steps += std::min(revolutions * kStepsPerRevolution, max_steps);
+    }
+  terms.push_back({steps, "/dynamics",
+                   Num(double(Count(speeds))) + " cam speeds, about " + Num(kStepsPerRevolution) +
+                       " solver steps per revolution"});
   const json& a = Sub(s, "analysis");
   const double angle = Size(a, "angle_steps", 720), axis = Size(a, "axis_steps", 7);
   terms.push_back({angle * axis, "/analysis/angle_steps",

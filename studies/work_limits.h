@@ -7,7 +7,7 @@
 // Caps per study kind (work units, with F = 1):
 //   lcr_analysis, lcr_friction_fit  angle_steps × rollers + profile_points × lobes  ≤ 2e7
 //   transmission_rigidity           elements ≤ 1000; Σ reducer angle_steps × rollers × 2 ≤ 2e6
-//   globoidal_cam                   speeds × 1e4 nominal steps ≤ 1e7; surface points ≤ 1e7
+//   globoidal_cam                   Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7
 //   cycloid_ltca                    crank angles × rollers × grid cells ≤ 5e7
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
 //   disc_cam                        angle_steps + MC samples × angle_steps × scales ≤ 2e6
