@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "model/contact/hertz.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/profile.h"
@@ -77,13 +78,14 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   return blocks;
 }
 
-// Hertz capacity margin s = (p_lim² R' − F E*/(π L)) / (p_lim² r_r) of a contact (header).
+// Hertz capacity margin s = (R' − F / c) / r_r of a contact (header), with c = F/R' at which the
+// line contact reaches the stress limit (contact::LineContactLoadPerRadius, π L p_lim² / E*).
 template <typename T>
 T StressMargin(const LcrSizingSpec& s, const lcr::CamSide<T>& cam, const T& force, const T& curvature) {
-  const double p2 = s.limits.contact_stress_MPa * s.limits.contact_stress_MPa;
-  const T load_per_radius = T(s.material.composite_modulus_MPa() / kPi) / cam.contact_length();  // E*/(π L)
+  const T capacity_per_radius = contact::LineContactLoadPerRadius(
+      T(s.limits.contact_stress_MPa), cam.contact_length(), T(s.material.composite_modulus_MPa()));
   const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * curvature);
-  return (T(p2) * r_eff - force * load_per_radius) / (T(p2) * cam.roller_radius);
+  return (r_eff - force / capacity_per_radius) / cam.roller_radius;
 }
 
 template <typename T>
