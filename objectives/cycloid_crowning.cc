@@ -69,13 +69,11 @@ CrowningEvaluation CycloidCrowningModel::Evaluate(double coefficient_mm, double 
   c.type = cycloid::CrowningType::kLogarithmic;
   c.coefficient_mm = std::max(0.0, coefficient_mm);
   c.effective_length_mm = length_mm;
-  design_.SetCrowning(c);
-  maximum_.SetCrowning(c);
   CrowningEvaluation e;
   e.coefficient_mm = c.coefficient_mm;
   e.length_mm = length_mm;
-  const cycloid::CycleResult d = cycloid::RunCycle(design_, design_torque_Nmm_, angles_);
-  const cycloid::CycleResult m = cycloid::RunCycle(maximum_, max_torque_Nmm_, angles_);
+  const cycloid::CycleResult d = cycloid::RunCycle(design_.WithCrowning(c), design_torque_Nmm_, angles_);
+  const cycloid::CycleResult m = cycloid::RunCycle(maximum_.WithCrowning(c), max_torque_Nmm_, angles_);
   e.stress_MPa = d.max_pressure_MPa;
   e.pairs = d.max_pairs_in_contact;
   e.edge_margin_um = m.edge_margin_mm * 1e3;

@@ -29,8 +29,8 @@ struct CrowningEvaluation {
 };
 
 /// The two mesh cycles that judge a crowning: the design torque (stress) and the maximum torque
-/// (edge margin), over the same crank angles. The LTCA instances are kept between evaluations
-/// (warm starts), so evaluations are not independent of their order in the last digits.
+/// (edge margin), over the same crank angles. An evaluation depends on its arguments only (bit for
+/// bit, whatever was evaluated before: the LTCA is pure, its solver caches change only the cost).
 class CycloidCrowningModel {
  public:
   /// @param design_torque_Nmm, max_torque_Nmm disc torques [N·mm]; crank angles [rad].

@@ -214,8 +214,9 @@ TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   // (too compliant: too large a deflection, pairs that then lose contact again). The end state
   // must equal a fresh solve.
   LoadedTca warm(NnmDrive(), Log(0.005), Material{}, Coarse());
-  warm.Solve(2.0e3, 0.8);
-  const MeshLoad a = warm.Solve(500.0e3, 0.8);
+  LtcaWarmStart memory;
+  warm.Solve(2.0e3, 0.8, &memory);
+  const MeshLoad a = warm.Solve(500.0e3, 0.8, &memory);
   LoadedTca fresh(NnmDrive(), Log(0.005), Material{}, Coarse());
   const MeshLoad b = fresh.Solve(500.0e3, 0.8);
   ASSERT_TRUE(a.converged && b.converged);
@@ -224,7 +225,7 @@ TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.01 * b.max_pressure_MPa);
   EXPECT_NEAR(a.deflection_rad, b.deflection_rad, 0.005 * b.deflection_rad);
   // And back down: heavy-load memory at a light load.
-  const MeshLoad c = warm.Solve(2.0e3, 0.8);
+  const MeshLoad c = warm.Solve(2.0e3, 0.8, &memory);
   LoadedTca fresh2(NnmDrive(), Log(0.005), Material{}, Coarse());
   const MeshLoad d = fresh2.Solve(2.0e3, 0.8);
   EXPECT_EQ(c.pairs_in_contact, d.pairs_in_contact);
@@ -270,6 +271,55 @@ TEST(CycloidLtca, LteRepeatsEveryMeshPeriod) {
   const MeshLoad a = tca.Solve(350.0e3, 0.1), b = tca.Solve(350.0e3, 0.1 + 3 * period);
   EXPECT_NEAR(a.rotation_rad, b.rotation_rad, 1e-3 * a.rotation_rad);
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 1e-3 * a.max_pressure_MPa);
+}
+
+void ExpectSameBits(const MeshLoad& a, const MeshLoad& b) {
+  EXPECT_EQ(a.rotation_rad, b.rotation_rad);
+  EXPECT_EQ(a.max_pressure_MPa, b.max_pressure_MPa);
+  ASSERT_EQ(a.pairs.size(), b.pairs.size());
+  for (size_t i = 0; i < a.pairs.size(); ++i) {
+    EXPECT_EQ(a.pairs[i].load_N, b.pairs[i].load_N);
+    EXPECT_EQ(a.pairs[i].grid.dx, b.pairs[i].grid.dx);
+    EXPECT_EQ(a.pairs[i].pressure_MPa, b.pairs[i].pressure_MPa);
+  }
+}
+
+TEST(CycloidLtca, ASolveDependsOnItsInputsOnly) {
+  // The same solve before and after other solves (other torques, angles and a crowned copy that
+  // shares the solver caches) gives the same bits; with a warm start from elsewhere it gives the
+  // same grids and the same answer within the tolerances.
+  const LoadedTca tca(NnmDrive(), Log(0.005), Material{}, Coarse());
+  const MeshLoad a = tca.Solve(350.0e3, 0.8);
+  LtcaWarmStart memory;
+  tca.Solve(20.0e3, 0.5, &memory);
+  tca.WithCrowning(Log(0.02)).Solve(550.0e3, 0.75, &memory);
+  tca.Solve(500.0e3, 0.79);
+  const MeshLoad b = tca.Solve(350.0e3, 0.8);
+  ExpectSameBits(a, b);
+  const LoadedTca other(NnmDrive(), Log(0.005), Material{}, Coarse());
+  ExpectSameBits(a, other.Solve(350.0e3, 0.8));
+  const MeshLoad w = tca.Solve(350.0e3, 0.8, &memory);
+  ASSERT_TRUE(w.converged);
+  ASSERT_EQ(w.pairs.size(), a.pairs.size());
+  for (size_t i = 0; i < a.pairs.size(); ++i) {
+    EXPECT_EQ(w.pairs[i].grid.dx, a.pairs[i].grid.dx);
+    EXPECT_NEAR(w.pairs[i].load_N, a.pairs[i].load_N, 3e-3 * a.pairs[i].load_N);
+  }
+  EXPECT_NEAR(w.deflection_rad, a.deflection_rad, 2e-3 * a.deflection_rad);
+}
+
+TEST(CycloidLtca, ACycleDependsOnItsInputsOnly) {
+  const LoadedTca tca(NnmDrive(), Log(0.005), Material{}, Coarse(12, 12));
+  const std::vector<double> angles = UniformCrankAngles(5, 2 * kPi / 16);
+  const CycleResult a = RunCycle(tca, 350.0e3, angles);
+  RunCycle(tca.WithCrowning(Log(0.0)), 550.0e3, UniformCrankAngles(3, 1.0));
+  std::vector<double> reversed(angles.rbegin(), angles.rend());
+  RunCycle(tca, 350.0e3, reversed);
+  const CycleResult b = RunCycle(tca, 350.0e3, angles);
+  EXPECT_EQ(a.lte_arcsec, b.lte_arcsec);
+  EXPECT_EQ(a.gear_ratio, b.gear_ratio);
+  EXPECT_EQ(a.max_pressure_MPa, b.max_pressure_MPa);
+  for (size_t k = 0; k < angles.size(); ++k) ExpectSameBits(a.meshes[k], b.meshes[k]);
 }
 
 TEST(CycloidLtca, BadInputIsRejected) {
@@ -405,6 +455,30 @@ TEST(CycloidStudies, CrowningTuningFindsAFeasibleCoefficient) {
     }
   // Every evaluation is counted: the scan, the reference and the optimizer's.
   EXPECT_EQ(r.evaluations, int(r.curve.size() + 1 + r.history.size()));
+}
+
+TEST(CycloidStudies, CrowningTuningIsTheSameWhateverRanBefore) {
+  // The same study gives byte-identical result.json after another scan (other size) ran in the
+  // same process; a point common to both scans has the same bits in both.
+  namespace tuning = studies::cycloid_crowning_tuning;
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  auto run = [&](const std::string& text) {
+    const nlohmann::json study = nlohmann::json::parse(text);
+    const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+    const tuning::Result r = tuning::Run(s, ctx);
+    return std::pair<tuning::Result, std::string>(r, tuning::ToJson(s, r).dump());
+  };
+  const auto [first, first_json] = run(kTuningStudy);
+  std::string other = kTuningStudy;
+  other.replace(other.find("\"curve_points\": 4"), 17, "\"curve_points\": 3");
+  const auto [wide, wide_json] = run(other);
+  const auto [again, again_json] = run(kTuningStudy);
+  EXPECT_EQ(first_json, again_json);
+  ASSERT_EQ(wide.curve.size(), 3u);
+  EXPECT_EQ(wide.curve[0].stress_MPa, first.curve[0].stress_MPa);       // f = 0
+  EXPECT_EQ(wide.curve[2].stress_MPa, first.curve[3].stress_MPa);       // f = 0.02
+  EXPECT_EQ(wide.curve[2].edge_margin_um, first.curve[3].edge_margin_um);
 }
 
 TEST(CycloidStudies, CrowningTuningWritesItsFiles) {

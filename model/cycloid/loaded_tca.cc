@@ -82,9 +82,10 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
       crowning_(crowning),
       material_(material),
       options_(options),
-      solver_(contact::SolverOptions{options.solver_tolerance, 2000}),
-      rough_solver_(contact::SolverOptions{
-          std::max(options.solver_tolerance, options.rough_solver_tolerance), 2000}) {
+      solver_(std::make_shared<contact::HalfSpaceSolver>(
+          contact::SolverOptions{options.solver_tolerance, 2000})),
+      rough_solver_(std::make_shared<contact::HalfSpaceSolver>(contact::SolverOptions{
+          std::max(options.solver_tolerance, options.rough_solver_tolerance), 2000})) {
   if (const std::string why = CheckDrive(drive); !why.empty()) throw std::invalid_argument(why);
   if (const std::string why = CheckCrowning(crowning, drive.face_width_mm); !why.empty())
     throw std::invalid_argument(why);
@@ -94,6 +95,12 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
     throw std::invalid_argument("the contact grid needs at least 2 x 2 cells");
   e_star_ = material.composite_modulus_MPa();
   SetCrowning(crowning);
+}
+
+LoadedTca LoadedTca::WithCrowning(const Crowning& crowning) const {
+  LoadedTca copy = *this;
+  copy.SetCrowning(crowning);
+  return copy;
 }
 
 void LoadedTca::SetCrowning(const Crowning& crowning) {
@@ -138,7 +145,16 @@ std::vector<double> LoadedTca::Gap(const contact::Grid& grid, double roller_curv
   return gap;
 }
 
-MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
+namespace {
+// A pressure in the outer columns across the profile: the grid cuts the contact.
+bool CutAcross(const contact::Grid& g, const std::vector<double>& p) {
+  for (int iy = 0; iy < g.ny; ++iy)
+    if (p[size_t(iy) * g.nx] > 0 || p[size_t(iy) * g.nx + g.nx - 1] > 0) return true;
+  return false;
+}
+}  // namespace
+
+MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmStart* warm) const {
   if (!(std::isfinite(torque_Nmm) && torque_Nmm >= 0))
     throw std::invalid_argument("torque must be finite and >= 0");
   MeshLoad out;
@@ -160,7 +176,6 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
     double curvature_sum;  // 1/R'
     contact::Grid grid;
     std::vector<double> gap, pressure;
-    bool has_grid = false;
     double load = 0, approach = 0, max_p = 0;
     int solver_iterations = 0;
   };
@@ -178,19 +193,47 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   std::vector<PairModel> models(n);
   std::vector<double> arms(n), backlash(n);
   // First guess of a pair compliance: a line contact of the face width, δ ≈ 2F/(π B E*) · ln(…),
-  // with the logarithm ≈ 5; replaced by the pair's own compliance from the previous crank angle.
+  // with the logarithm ≈ 5.
   const double c_line = 2.0 / (kPi * drive_.face_width_mm * e_star_) * 5.0;
   for (size_t i = 0; i < n; ++i) {
     arms[i] = cand[i].g->arm_mm;
     backlash[i] = cand[i].g->backlash;
     models[i].compliance0 = c_line;
-    // The same roller at the previous crank angle: its law is a close first model.
-    auto it = memory_.find(cand[i].g->roller);
-    if (it != memory_.end() && it->second.f1 > 0 && it->second.d1 > 0) {
-      models[i].f1 = it->second.f1;
-      models[i].d1 = it->second.d1;
-      models[i].gamma = it->second.gamma;
-      models[i].solved = true;
+  }
+  // The grids come from the inputs only: each pair's force under that linear first model (a
+  // deterministic estimate; at least a tenth of the largest), as a ladder size of a multiple of
+  // its Hertz half-width. A grid grows only when the converged contact reaches its outer columns.
+  {
+    const double d0 = SolveDeflection(models, arms, backlash, moment);
+    std::vector<double> f_est(n);
+    double f_max = 0;
+    for (size_t i = 0; i < n; ++i) {
+      f_est[i] = models[i].Force(arms[i] * (d0 - backlash[i]));
+      f_max = std::max(f_max, f_est[i]);
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const double b_hertz = contact::LineContactHalfWidth(
+          std::max(f_est[i], 0.1 * f_max), drive_.face_width_mm, 1.0 / cand[i].curvature_sum, e_star_);
+      cand[i].grid = MakeGrid(LadderAbove(options_.grid_half_width_factor * b_hertz));
+      cand[i].gap = Gap(cand[i].grid, cand[i].g->roller_curvature, cand[i].g->profile_curvature);
+    }
+  }
+  // The warm start: the same roller's law and pressure from the caller's previous solve.
+  if (warm) {
+    for (size_t i = 0; i < n; ++i) {
+      auto it = warm->pairs.find(cand[i].g->roller);
+      if (it == warm->pairs.end()) continue;
+      const LtcaWarmStart::Pair& w = it->second;
+      if (w.f1 > 0 && w.d1 > 0) {
+        models[i].f1 = w.f1;
+        models[i].d1 = w.d1;
+        models[i].gamma = w.gamma;
+        models[i].solved = true;
+      }
+      const contact::Grid& g = cand[i].grid;
+      if (w.grid.nx == g.nx && w.grid.ny == g.ny && w.grid.dx == g.dx && w.grid.x0 == g.x0 &&
+          w.pressure.size() == cand[i].gap.size())
+        cand[i].pressure = w.pressure;
     }
   }
 
@@ -203,7 +246,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   bool final_pass = options_.rough_solver_tolerance <= options_.solver_tolerance;
   int iter = 0;
   for (; iter < options_.max_iterations; ++iter) {
-    contact::HalfSpaceSolver& solver = final_pass ? solver_ : rough_solver_;
+    contact::HalfSpaceSolver& solver = final_pass ? *solver_ : *rough_solver_;
     delta_phi = SolveDeflection(models, arms, backlash, moment);
     double max_residual = 0, max_approach = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -223,46 +266,13 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
         max_approach = std::max(max_approach, c.approach);
         continue;
       }
-      // Grid across the profile: a multiple of the Hertz half-width at this force.
-      const double b_hertz =
-          contact::LineContactHalfWidth(force, drive_.face_width_mm, 1.0 / c.curvature_sum, e_star_);
-      const double want = LadderAbove(options_.grid_half_width_factor * b_hertz);
-      if (!c.has_grid) {
-        auto it = memory_.find(c.g->roller);
-        double half = want;
-        // Keep the previous angle's grid when it still fits: its pressure is a warm start.
-        if (it != memory_.end() && it->second.grid.nx == options_.profile_cells) {
-          const double prev = -it->second.grid.x0;
-          if (prev >= 0.8 * want && prev <= 1.7 * want) half = prev;
-        }
-        c.grid = MakeGrid(half);
-        c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
-        c.has_grid = true;
-        if (it != memory_.end() && std::abs(it->second.grid.x0 - c.grid.x0) < 1e-15)
-          c.pressure = it->second.pressure;
-      } else if (-c.grid.x0 < 0.55 * want) {  // load grew a lot: the contact outgrows the grid
-        c.grid = MakeGrid(want);
-        c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
-        c.pressure.clear();
-      }
-      contact::ContactSolution s;
-      for (int grow = 0; grow < 6; ++grow) {
-        s = c.pressure.size() == c.gap.size()
-                ? solver.SolveForLoad(c.grid, c.gap, force, e_star_, c.pressure)
-                : solver.SolveForLoad(c.grid, c.gap, force, e_star_);
-        ++out.contact_solves;
-        out.solver_iterations += s.iterations;
-        // A pressure in the outer columns across the profile: the grid cuts the contact.
-        bool cut = false;
-        for (int iy = 0; iy < c.grid.ny && !cut; ++iy)
-          cut = s.pressure_MPa[size_t(iy) * c.grid.nx] > 0 ||
-                s.pressure_MPa[size_t(iy) * c.grid.nx + c.grid.nx - 1] > 0;
-        if (!cut) break;
-        c.grid = MakeGrid(LadderAbove(-c.grid.x0 * 1.4));
-        c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
-        c.pressure.clear();
-      }
-      if (!s.converged && out.message.empty()) out.message = "contact solver: " + s.message;
+      const contact::ContactSolution s =
+          c.pressure.size() == c.gap.size()
+              ? solver.SolveForLoad(c.grid, c.gap, force, e_star_, c.pressure)
+              : solver.SolveForLoad(c.grid, c.gap, force, e_star_);
+      ++out.contact_solves;
+      out.solver_iterations += s.iterations;
+      if (!s.converged && final_pass && out.message.empty()) out.message = "contact solver: " + s.message;
       c.pressure = s.pressure_MPa;
       c.load = s.load_N;
       c.approach = s.approach_mm;
@@ -277,9 +287,25 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
     // model force is 0 only there), so the loaded pairs' compatibility is the whole test.
     if (max_approach > 0 && max_residual <= options_.tolerance * max_approach) {
       if (final_pass) {
-        converged = true;
-        ++iter;
-        break;
+        // A converged contact that reaches the outer columns is cut by its grid: grow that grid
+        // (a ladder size 1.4 times larger) and iterate on. Decided on the converged state only,
+        // so the grid does not depend on the path (nor on a warm start).
+        bool grown = false;
+        for (size_t i = 0; i < n; ++i) {
+          Candidate& c = cand[i];
+          if (c.load <= 0 || !CutAcross(c.grid, c.pressure)) continue;
+          c.grid = MakeGrid(LadderAbove(-c.grid.x0 * 1.4));
+          c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
+          c.pressure.clear();
+          solved_here[i] = false;
+          grown = true;
+        }
+        if (!grown) {
+          converged = true;
+          ++iter;
+          break;
+        }
+        continue;
       }
       final_pass = true;
       std::fill(solved_here.begin(), solved_here.end(), false);
@@ -294,13 +320,13 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   std::vector<double> displacement;
   for (size_t i = 0; i < n; ++i) {
     Candidate& c = cand[i];
-    PairMemory& mem = memory_[c.g->roller];
-    if (c.load > 0 && c.approach > 0) {
-      mem.f1 = models[i].f1;
-      mem.d1 = models[i].d1;
-      mem.gamma = models[i].gamma;
-      mem.grid = c.grid;
-      mem.pressure = c.pressure;
+    if (warm && c.load > 0 && c.approach > 0) {
+      LtcaWarmStart::Pair& w = warm->pairs[c.g->roller];
+      w.f1 = models[i].f1;
+      w.d1 = models[i].d1;
+      w.gamma = models[i].gamma;
+      w.grid = c.grid;
+      w.pressure = c.pressure;
     }
     if (c.load <= 0) continue;
     PairLoad p;
@@ -314,7 +340,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
     p.grid = c.grid;
     p.solver_iterations = c.solver_iterations;
     if (options_.edge_margin) {
-      displacement = solver_.Displacement(c.grid, c.pressure, e_star_);
+      displacement = solver_->Displacement(c.grid, c.pressure, e_star_);
       double clearance = kInf, edge_p = 0;
       for (int iy : {0, c.grid.ny - 1})
         for (int ix = 0; ix < c.grid.nx; ++ix) {
@@ -342,12 +368,13 @@ std::vector<double> UniformCrankAngles(int steps, double span_rad) {
   return a;
 }
 
-CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double>& angles,
+CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<double>& angles,
                      const std::function<void(double)>& progress) {
   CycleResult r;
   const size_t n = angles.size();
+  LtcaWarmStart warm;  // local: the cycle depends on its arguments only
   for (size_t k = 0; k < n; ++k) {
-    r.meshes.push_back(tca.Solve(torque_Nmm, angles[k]));
+    r.meshes.push_back(tca.Solve(torque_Nmm, angles[k], &warm));
     if (progress) progress(double(k + 1) / n);
   }
   r.lte_arcsec.resize(n);

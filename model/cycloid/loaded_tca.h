@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -92,35 +93,50 @@ struct MeshLoad {
   std::string message;
 };
 
-/// Per-angle LTCA with memory between calls (pair compliances, grids and pressures are reused
-/// as warm starts at the next crank angle). Not thread-safe; one instance per thread.
+/// What one LTCA solve leaves for the next one as a starting point: per roller, the last solved
+/// point of its force law (F, δ, exponent) and its pressure field with the grid it was solved on.
+/// Explicit and owned by the caller; passing one changes the cost of a solve, never its answer
+/// beyond the compatibility and solver tolerances. The grid of every pair is a function of the
+/// solve's inputs only (never of a warm start), so a pressure is reused only on the same grid.
+struct LtcaWarmStart {
+  struct Pair {
+    contact::Grid grid;
+    std::vector<double> pressure;
+    double f1 = 0, d1 = 0;  // the last solved (F, δ) of the pair
+    double gamma = 0.9;     // its measured exponent of δ ∝ F^γ
+  };
+  std::map<int, Pair> pairs;  // by roller
+};
+
+/// Per-angle LTCA. Immutable: a solve depends only on the drive, crowning, material, options,
+/// torque and crank angle (bit for bit, whatever ran before), and on the warm start when one is
+/// passed (within the tolerances). The half-space solvers' caches of kernels and FFT plans are
+/// shared by the copies made by WithCrowning; they change the cost, not the numbers. Not
+/// thread-safe (the solvers own work arrays); one instance (and its copies) per thread.
 class LoadedTca {
  public:
   /// @throws std::invalid_argument for an infeasible drive or crowning (CheckDrive/CheckCrowning).
   LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
             LoadedOptions options = {});
 
-  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nmm [N·mm] (>= 0).
-  MeshLoad Solve(double torque_Nmm, double crank_angle_rad);
+  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nmm [N·mm] (>= 0). When
+  /// `warm` is given it is read as a starting point and updated with this solve's pairs.
+  MeshLoad Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmStart* warm = nullptr) const;
 
-  /// Changes the crowning (sweeps and tuning); the pair memory is kept as a warm start.
+  /// The same model with another crowning (sweeps and tuning), sharing the solver caches.
   /// @throws std::invalid_argument for invalid crowning.
-  void SetCrowning(const Crowning& crowning);
+  LoadedTca WithCrowning(const Crowning& crowning) const;
 
   const Drive& drive() const { return drive_; }
+  const Crowning& crowning() const { return crowning_; }
   const LoadedOptions& options() const { return options_; }
   double e_star_MPa() const { return e_star_; }
 
  private:
-  struct PairMemory {
-    contact::Grid grid;
-    std::vector<double> pressure;
-    double f1 = 0, d1 = 0;  // the last solved (F, δ) of the pair
-    double gamma = 0.9;     // its measured exponent of δ ∝ F^γ
-  };
   contact::Grid MakeGrid(double half_x_mm) const;
   std::vector<double> Gap(const contact::Grid& grid, double effective_curvature_roller,
                           double profile_curvature) const;
+  void SetCrowning(const Crowning& crowning);
 
   Drive drive_;
   Crowning crowning_;
@@ -128,9 +144,8 @@ class LoadedTca {
   LoadedOptions options_;
   double e_star_;
   std::vector<double> crown_;  // crowning drop per axial cell
-  contact::HalfSpaceSolver solver_;        // final tolerance
-  contact::HalfSpaceSolver rough_solver_;  // steering iterations
-  std::map<int, PairMemory> memory_;  // by roller
+  std::shared_ptr<contact::HalfSpaceSolver> solver_;        // final tolerance
+  std::shared_ptr<contact::HalfSpaceSolver> rough_solver_;  // steering iterations
 };
 
 /// A mesh cycle: the LTCA at each crank angle, with the derived series.
@@ -150,10 +165,12 @@ struct CycleResult {
   bool converged = true;
 };
 
-/// Runs the LTCA under the disc torque torque_Nmm [N·mm] over the crank angles [rad] (in order). The gear ratio uses the derivative of
+/// Runs the LTCA under the disc torque torque_Nmm [N·mm] over the crank angles [rad] (in order),
+/// each angle warm-started from the previous one with a warm start local to the call: the result
+/// is a function of the arguments only. The gear ratio uses the derivative of
 /// the LTE over the crank angle by central differences, periodic when the angles are a uniform
 /// sampling of a whole number of mesh periods 2π/n1, one-sided at the ends otherwise.
-CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double>& crank_angles_rad,
+CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<double>& crank_angles_rad,
                      const std::function<void(double)>& progress = nullptr);
 
 /// Uniform crank angles over [0, span) [rad].
