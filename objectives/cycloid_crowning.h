@@ -34,9 +34,12 @@ struct CrowningEvaluation {
 class CycloidCrowningModel {
  public:
   /// @param design_torque_Nmm, max_torque_Nmm disc torques [N·mm]; crank angles [rad].
+  /// `shape` gives the logarithmic crowning's fields that are not tuned (end drop, flat length;
+  /// its coefficient and effective length are replaced by Evaluate's arguments).
   CycloidCrowningModel(const cycloid::Drive& drive, const cycloid::Material& material,
                        const cycloid::LoadedOptions& options, double design_torque_Nmm,
-                       double max_torque_Nmm, std::vector<double> crank_angles_rad);
+                       double max_torque_Nmm, std::vector<double> crank_angles_rad,
+                       const cycloid::Crowning& shape = {});
 
   /// Runs both cycles with a logarithmic crowning of coefficient f [mm] and length L [mm].
   CrowningEvaluation Evaluate(double coefficient_mm, double length_mm);
@@ -46,6 +49,7 @@ class CycloidCrowningModel {
  private:
   cycloid::Drive drive_;
   cycloid::LoadedTca design_, maximum_;
+  cycloid::Crowning shape_;
   double design_torque_Nmm_, max_torque_Nmm_;
   std::vector<double> angles_;
   int evaluations_ = 0;

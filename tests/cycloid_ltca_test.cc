@@ -375,6 +375,57 @@ TEST(CycloidStudies, LtcaStudyReportsEveryAngle) {
               1e-3 * r.cycle.max_pressure_MPa);
 }
 
+TEST(CycloidStudies, LtcaSamplesOneMeshPeriodAndEstimatesItsErrors) {
+  namespace ltca = studies::cycloid_ltca;
+  const nlohmann::json study = nlohmann::json::parse(
+      StudyJson(R"({"type": "none"})", R"({"crank_angles_per_mesh_period": 8, "grid": [12, 12]})"));
+  const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+  ASSERT_EQ(s.crank_angles_rad.size(), 8u);
+  EXPECT_NEAR(s.crank_angles_rad[1], 2 * kPi / 16 / 8, 1e-15);
+  const ltca::Result r = ltca::Run(s, studies::RunContext{"", true});
+  // The errors recomputed here: every second angle of the cycle, and a 6 x 6 grid over those angles.
+  std::vector<double> sub;
+  std::vector<MeshLoad> meshes;
+  for (size_t k = 0; k < 8; k += 2) {
+    sub.push_back(s.crank_angles_rad[k]);
+    meshes.push_back(r.cycle.meshes[k]);
+  }
+  const CycleResult half = SummariseCycle(s.drive, meshes, sub);
+  const CycleResult coarse = RunCycle(LoadedTca(s.drive, s.crowning, s.material, Coarse(6, 6)), 350.0e3, sub);
+  const nlohmann::json j = ltca::ToJson(s, r);
+  const auto& e = j["estimated_error"];
+  EXPECT_NEAR(e["lte_peak_to_peak_arcsec"].get<double>(),
+              std::abs(r.cycle.lte_peak_to_peak_arcsec - half.lte_peak_to_peak_arcsec) +
+                  std::abs(half.lte_peak_to_peak_arcsec - coarse.lte_peak_to_peak_arcsec), 1e-12);
+  EXPECT_NEAR(e["max_contact_stress_MPa"].get<double>(),
+              std::abs(r.cycle.max_pressure_MPa - half.max_pressure_MPa) +
+                  std::abs(half.max_pressure_MPa - coarse.max_pressure_MPa), 1e-9);
+  for (const char* k : {"gear_ratio_peak_to_peak", "lte_mean_abs_arcsec", "max_pair_load_N"})
+    EXPECT_TRUE(e.contains(k)) << k;
+  EXPECT_EQ(j["estimated_error_sources"]["grid"]["coarse_grid"], nlohmann::json::array({6, 6}));
+  // A straight tooth's edge peak on a 12 x 12 grid against 6 x 6: the peak stress moves by more
+  // than 5 %, and the study says so.
+  ASSERT_GT(e["max_contact_stress_MPa"].get<double>(), 0.05 * r.cycle.max_pressure_MPa);
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().rfind("max_contact_stress_MPa", 0) == 0;
+  EXPECT_TRUE(warned);
+}
+
+TEST(CycloidStudies, PaperDriveRippleWithTheExampleSettingsIsNearTheConvergedValues) {
+  // The paper's drive (NNM, 350 N·m, no crowning) with the example's settings against an
+  // independent model converged in crank angle and grid (issue 13; docs/validation.md): LTE
+  // peak-to-peak 1.37 arcsec and GR peak-to-peak 0.027, within 5 % or within the estimated error.
+  namespace ltca = studies::cycloid_ltca;
+  const nlohmann::json study = nlohmann::json::parse(
+      camopt::testing::ReadFile(camopt::testing::SourcePath("studies/examples/cycloid_ltca_nnm_none.json")));
+  const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+  const ltca::Result r = ltca::Run(s, studies::RunContext{"", true});
+  const nlohmann::json j = ltca::ToJson(s, r);
+  const double lte = j["lte_peak_to_peak_arcsec"], gr = j["gear_ratio_peak_to_peak"];
+  EXPECT_LE(std::abs(lte - 1.37), std::max(0.05 * 1.37, j["estimated_error"]["lte_peak_to_peak_arcsec"].get<double>()));
+  EXPECT_LE(std::abs(gr - 0.027), std::max(0.05 * 0.027, j["estimated_error"]["gear_ratio_peak_to_peak"].get<double>()));
+}
+
 TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
   // Through the CLI: exit code and the files written.
   const auto dir = camopt::testing::TempDir("cycloid-ltca");
@@ -479,6 +530,36 @@ TEST(CycloidStudies, CrowningTuningIsTheSameWhateverRanBefore) {
   EXPECT_EQ(wide.curve[0].stress_MPa, first.curve[0].stress_MPa);       // f = 0
   EXPECT_EQ(wide.curve[2].stress_MPa, first.curve[3].stress_MPa);       // f = 0.02
   EXPECT_EQ(wide.curve[2].edge_margin_um, first.curve[3].edge_margin_um);
+}
+
+TEST(CycloidStudies, CrowningTuningTakesAFiniteDropForm) {
+  namespace tuning = studies::cycloid_crowning_tuning;
+  std::string text = kTuningStudy;
+  text.replace(text.find("\"tuning\""), 0,
+               R"("crowning": {"type": "logarithmic", "effective_length_mm": 18.7, "end_drop_mm": 0.01}, )");
+  const nlohmann::json study = nlohmann::json::parse(text);
+  const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+  EXPECT_FALSE(s.tune_length);
+  EXPECT_EQ(s.length_lo_mm, 18.7);
+  EXPECT_EQ(s.shape.end_drop_mm, 0.01);
+  const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
+  for (const auto& e : r.history) EXPECT_EQ(e.length_mm, 18.7);
+  // The scan's f = 0.02 point is that finite-drop crowning: the model run directly gives its bits.
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.02;
+  c.effective_length_mm = 18.7;
+  c.end_drop_mm = 0.01;
+  LoadedOptions o = s.options;
+  o.keep_pressure = false;
+  const CycleResult d = RunCycle(LoadedTca(s.drive, c, s.material, o), 350.0e3,
+                                 UniformCrankAngles(2, 2 * kPi / 16));
+  EXPECT_EQ(r.curve.back().stress_MPa, d.max_pressure_MPa);
+  // A crowning that is not logarithmic is an input error.
+  std::string bad = kTuningStudy;
+  bad.replace(bad.find("\"tuning\""), 0, R"("crowning": {"type": "full"}, )");
+  const nlohmann::json jb = nlohmann::json::parse(bad);
+  EXPECT_THROW(tuning::Parse(studies::Node(&jb, "t.json", "")), studies::StudyError);
 }
 
 TEST(CycloidStudies, CrowningTuningWritesItsFiles) {

@@ -377,10 +377,19 @@ CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<
     r.meshes.push_back(tca.Solve(torque_Nmm, angles[k], &warm));
     if (progress) progress(double(k + 1) / n);
   }
+  return SummariseCycle(tca.drive(), std::move(r.meshes), angles);
+}
+
+CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
+                           const std::vector<double>& angles) {
+  CycleResult r;
+  r.meshes = std::move(meshes);
+  const size_t n = angles.size();
+  if (r.meshes.size() != n) throw std::invalid_argument("SummariseCycle: one mesh per angle");
   r.lte_arcsec.resize(n);
   for (size_t k = 0; k < n; ++k) r.lte_arcsec[k] = r.meshes[k].rotation_rad * kArcsecPerRad;
   // Periodic when the angles sample a whole number of mesh periods uniformly.
-  const int n1 = tca.drive().rollers;
+  const int n1 = drive.rollers;
   const double period = 2.0 * kPi / n1;
   bool periodic = n >= 3;
   double step = 0, span = 0;
@@ -394,7 +403,7 @@ CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<
                std::round(periods) >= 1;
   }
   r.gear_ratio.resize(n);
-  const double n2 = tca.drive().teeth;
+  const double n2 = drive.teeth;
   for (size_t k = 0; k < n; ++k) {
     double slope = 0;  // dβ/dφ
     if (n >= 2) {
@@ -428,6 +437,7 @@ CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<
       r.max_pressure_index = int(k);
     }
     r.max_pairs_in_contact = std::max(r.max_pairs_in_contact, m.pairs_in_contact);
+    for (const PairLoad& p : m.pairs) r.max_pair_load_N = std::max(r.max_pair_load_N, p.load_N);
     r.contact_solves += m.contact_solves;
     r.solver_iterations += m.solver_iterations;
     r.converged = r.converged && m.converged;

@@ -159,6 +159,7 @@ struct CycleResult {
   double lte_mean_abs_arcsec = 0;
   double gear_ratio_peak_to_peak = 0;
   int max_pairs_in_contact = 0;
+  double max_pair_load_N = 0;        ///< max over pairs and angles
   double edge_margin_mm = 0;         ///< min over angles
   int contact_solves = 0;
   long solver_iterations = 0;
@@ -172,6 +173,12 @@ struct CycleResult {
 /// sampling of a whole number of mesh periods 2π/n1, one-sided at the ends otherwise.
 CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<double>& crank_angles_rad,
                      const std::function<void(double)>& progress = nullptr);
+
+/// The series and cycle values of RunCycle from the solved meshes (one per angle, in order): a
+/// subset of a cycle's meshes (e.g. every second angle) gives the values of the coarser sampling.
+/// @throws std::invalid_argument when the sizes differ.
+CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
+                           const std::vector<double>& crank_angles_rad);
 
 /// Uniform crank angles over [0, span) [rad].
 std::vector<double> UniformCrankAngles(int steps, double span_rad);
