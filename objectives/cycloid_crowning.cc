@@ -79,7 +79,7 @@ CrowningEvaluation CycloidCrowningModel::Evaluate(double coefficient_mm, double 
   const cycloid::CycleResult m = cycloid::RunCycle(maximum_.WithCrowning(c), max_torque_Nmm_, angles_);
   e.stress_MPa = d.max_pressure_MPa;
   e.pairs = d.max_pairs_in_contact;
-  e.edge_margin_um = m.edge_margin_mm * 1e3;
+  e.edge_margin_um = m.end_distance_mm * 1e3;
   ++evaluations_;
   return e;
 }

@@ -6,8 +6,10 @@
 // Each evaluation solves a complementarity problem per loaded pair and takes a maximum over cells
 // and crank angles: the objective is non-smooth in f (and slightly grid-quantised), so the problem
 // is value-only (a derivative-free solver such as COBYLA drives it; asking for a Jacobian throws).
-// The constraint is the edge margin of model/cycloid (clearance left at the outermost axial cells,
-// negative in proportion to the edge pressure when the contact reaches an edge), continuous in f.
+// The constraint is the end distance of model/cycloid (axial distance of the contact end from the
+// face end, located within a cell, negative and bounded when the pressure indicates contact beyond
+// the end; continuous in f and converging with the grid, docs/cycloid.md), named edge margin here
+// and in the study's result. It replaced the edge-row clearance, whose zero moved with the cell.
 #pragma once
 
 #include <functional>
@@ -24,7 +26,7 @@ struct CrowningEvaluation {
   double coefficient_mm = 0;  ///< f of the logarithmic crowning (negative requests are taken as 0)
   double length_mm = 0;       ///< its effective length L
   double stress_MPa = 0;      ///< max contact stress over the design-torque cycle
-  double edge_margin_um = 0;  ///< min edge margin over the max-torque cycle
+  double edge_margin_um = 0;  ///< min end distance [µm] over the max-torque cycle
   int pairs = 0;              ///< max pairs in contact over the design-torque cycle
 };
 

@@ -265,6 +265,42 @@ TEST(CycloidLtca, CrowningMovesThePeakOffTheEdges) {
   }
 }
 
+TEST(CycloidLtca, ContactEndDistanceIsLocatedWithinACell) {
+  // A crowned tooth whose pattern ends inside the face: the end distance on coarse grids against
+  // the last loaded row's outer boundary on a fine grid (error <= its cell), within a fifth of the
+  // coarse cell (the row-centre rule alone would be off by up to half a cell).
+  Crowning c = Log(0.006);
+  c.effective_length_mm = 18.7;
+  auto solve = [&](int q) {
+    LoadedOptions o = Coarse(16, q);
+    o.edge_margin = true;
+    return LoadedTca(NnmDrive(), c, Material{}, o).Solve(350.0e3, 0.8);
+  };
+  const MeshLoad fine = solve(192);
+  ASSERT_TRUE(fine.converged);
+  const double dy_fine = 17.0 / 192;
+  for (const PairLoad& p : fine.pairs) {
+    double reference = kInf;  // per pair: the smaller of the two sides
+    for (int side : {0, 1}) {
+      int last = -1;
+      for (int j = 0; j < 96; ++j) {
+        const int iy = side ? 96 + j : 95 - j;
+        for (int ix = 0; ix < p.grid.nx; ++ix)
+          if (p.pressure_MPa[size_t(iy) * p.grid.nx + ix] > 0) last = j;
+      }
+      reference = std::min(reference, 8.5 - (last + 1) * dy_fine);
+    }
+    ASSERT_GT(reference, 0.5);  // the pattern ends inside the face
+    for (int q : {24, 48}) {
+      const MeshLoad m = solve(q);
+      for (const PairLoad& pq : m.pairs)
+        if (pq.roller == p.roller) {
+          EXPECT_NEAR(pq.end_distance_mm, reference, 0.2 * 17.0 / q + dy_fine) << "q " << q << " roller " << p.roller;
+        }
+    }
+  }
+}
+
 TEST(CycloidLtca, LteRepeatsEveryMeshPeriod) {
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(12, 12));
   const double period = 2 * kPi / 16;

@@ -74,6 +74,47 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
   return 0.5 * (lo + hi);
 }
 
+// Distance from the contact's axial end to the face end [mm], the smaller of the two sides, with
+// the end located within a cell: along each side the row maxima P (over x) fall like sqrt(distance
+// to the end) near an elliptical end, so P² is linear there and the end lies t/(1 − t) cells beyond
+// the outermost loaded row k, t = P_k² / P_(k−1)². When the end row itself is loaded the distance
+// is dy/2 − dy·t/(1 − t) down to t = 1/3 (end exactly at the face end), continued linearly (C¹)
+// beyond: −(9/4)·dy·(t − 1/3), bounded for a pressure that rises towards the edge (a straight
+// tooth). Continuous in the crowning up to the P² model's error when a row enters contact.
+double EndDistance(const contact::Grid& g, const std::vector<double>& p) {
+  std::vector<double> rows(g.ny, 0.0);
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) rows[iy] = std::max(rows[iy], p[size_t(iy) * g.nx + ix]);
+  const double half = 0.5 * g.ny * g.dy;
+  double result = kInf;
+  for (int side : {-1, 1}) {
+    // Rows outward from the face centre on this side.
+    std::vector<int> out;
+    if (side > 0)
+      for (int iy = g.ny / 2; iy < g.ny; ++iy) out.push_back(iy);
+    else
+      for (int iy = (g.ny - 1) / 2; iy >= 0; --iy) out.push_back(iy);
+    int k = -1;
+    for (int j = 0; j < int(out.size()); ++j)
+      if (rows[out[j]] > 0) k = j;
+    if (k < 0) continue;
+    const double dist_k = std::abs(g.y_centre_mm(out[k]));
+    if (k == 0 || !(rows[out[k - 1]] > 0)) {
+      result = std::min(result, half - dist_k - 0.5 * g.dy);
+      continue;
+    }
+    const double pk = rows[out[k]], pp = rows[out[k - 1]];
+    const double t = (pk * pk) / (pp * pp);
+    double d;
+    if (k == int(out.size()) - 1)
+      d = t <= 1.0 / 3.0 ? 0.5 * g.dy - g.dy * t / (1.0 - t) : -2.25 * g.dy * (t - 1.0 / 3.0);
+    else
+      d = half - dist_k - g.dy * std::min(t / (1.0 - std::min(t, 0.5)), 1.0);
+    result = std::min(result, d);
+  }
+  return std::isfinite(result) ? result : 0.0;
+}
+
 }  // namespace
 
 LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
@@ -349,6 +390,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
           edge_p = std::max(edge_p, c.pressure[k]);
         }
       p.edge_margin_mm = edge_p > 0 ? -edge_p / e_star_ * c.grid.dy : std::max(0.0, clearance);
+      p.end_distance_mm = EndDistance(c.grid, c.pressure);
     }
     if (options_.keep_pressure) p.pressure_MPa = c.pressure;
     out.max_pressure_MPa = std::max(out.max_pressure_MPa, c.max_p);
@@ -357,7 +399,11 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
   out.pairs_in_contact = int(out.pairs.size());
   if (!out.pairs.empty()) {
     out.edge_margin_mm = kInf;
-    for (const auto& p : out.pairs) out.edge_margin_mm = std::min(out.edge_margin_mm, p.edge_margin_mm);
+    out.end_distance_mm = kInf;
+    for (const auto& p : out.pairs) {
+      out.edge_margin_mm = std::min(out.edge_margin_mm, p.edge_margin_mm);
+      out.end_distance_mm = std::min(out.end_distance_mm, p.end_distance_mm);
+    }
   }
   return out;
 }
@@ -429,6 +475,7 @@ CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
     const auto [glo, ghi] = std::minmax_element(r.gear_ratio.begin(), r.gear_ratio.end());
     r.gear_ratio_peak_to_peak = *ghi - *glo;
     r.edge_margin_mm = kInf;
+    r.end_distance_mm = kInf;
   }
   for (size_t k = 0; k < n; ++k) {
     const MeshLoad& m = r.meshes[k];
@@ -441,9 +488,13 @@ CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
     r.contact_solves += m.contact_solves;
     r.solver_iterations += m.solver_iterations;
     r.converged = r.converged && m.converged;
-    if (!m.pairs.empty()) r.edge_margin_mm = std::min(r.edge_margin_mm, m.edge_margin_mm);
+    if (!m.pairs.empty()) {
+      r.edge_margin_mm = std::min(r.edge_margin_mm, m.edge_margin_mm);
+      r.end_distance_mm = std::min(r.end_distance_mm, m.end_distance_mm);
+    }
   }
   if (!std::isfinite(r.edge_margin_mm)) r.edge_margin_mm = 0;
+  if (!std::isfinite(r.end_distance_mm)) r.end_distance_mm = 0;
   return r;
 }
 

@@ -73,6 +73,10 @@ struct PairLoad {
   /// minus (max edge-row pressure / E*) · dy when the contact reaches an edge, so that it is
   /// continuous and negative for edge contact. Filled when LoadedOptions::edge_margin.
   double edge_margin_mm = 0;
+  /// Axial distance from the contact's end to the face end [mm], the end located within a cell
+  /// from the row maxima (P² linear near an elliptical end); negative when the pressure indicates
+  /// contact beyond the face end (bounded, continuous). Filled when LoadedOptions::edge_margin.
+  double end_distance_mm = 0;
   int solver_iterations = 0;
 };
 
@@ -86,6 +90,7 @@ struct MeshLoad {
   int pairs_in_contact = 0;          ///< pairs carrying load
   std::vector<PairLoad> pairs;       ///< the loaded pairs
   double edge_margin_mm = 0;         ///< min over loaded pairs (0 when none)
+  double end_distance_mm = 0;        ///< min over loaded pairs (0 when none)
   int iterations = 0;                ///< outer (compatibility) iterations
   int contact_solves = 0;            ///< half-space solves
   long solver_iterations = 0;        ///< their conjugate-gradient iterations, summed
@@ -161,6 +166,7 @@ struct CycleResult {
   int max_pairs_in_contact = 0;
   double max_pair_load_N = 0;        ///< max over pairs and angles
   double edge_margin_mm = 0;         ///< min over angles
+  double end_distance_mm = 0;        ///< min over angles
   int contact_solves = 0;
   long solver_iterations = 0;
   bool converged = true;
