@@ -8,19 +8,17 @@
 
 #include "objectives/lcr_sizing.h"
 #include "optimizers/solver.h"
+#include "studies/lcr_min_size_study.h"
 #include "studies/study.h"
+#include "tests/reference_designs.h"
 
 namespace {
 
 using camopt::objectives::LcrConstraintForm;
 
+// The LCR II sizing duty on the −90 optimum's lobe/roller counts.
 camopt::objectives::LcrSizingSpec Spec(LcrConstraintForm form) {
-  camopt::objectives::LcrSizingSpec s;
-  s.lobes_a = 25, s.rollers_a = 26, s.lobes_b = 35, s.rollers_b = 36;  // the −90 optimum's
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
-  return s;
+  return camopt::testing::LcrIISizingSpec(form, 25, 26, 35, 36);
 }
 
 void BM_LcrSizingValues(benchmark::State& state) {
@@ -65,26 +63,35 @@ BENCHMARK(BM_SolveOneCombination)
     ->Args({0, 1})->Args({1, 1})->Args({3, 1})
     ->Unit(benchmark::kMillisecond);
 
-// The whole ratio −90 study of studies/examples/lcr_min_size.json (parse, 4 combinations × 3
-// starts, dense checks, outputs in memory), per backend.
+// The whole ratio −90 study of studies/examples/lcr_min_size.json through the C++ entry point
+// (parse, 4 combinations × 3 starts, smooth phase, polish, dense checks, limit sensitivity).
+// Arg 0: backend index; arg 1: smooth-phase form 0 aggregate, 1 samples; arg 2: polish 1/0.
+// Counters: the best outer diameter and the model runs.
 void BM_LcrMinSizeStudy(benchmark::State& state) {
-  // This file's folder's parent is the source tree (CMake compiles with absolute paths).
-  const auto root = std::filesystem::path(__FILE__).parent_path().parent_path();
-  std::ifstream in(root / "studies" / "examples" / "lcr_min_size.json");
+  std::ifstream in(std::filesystem::path(CAMOPT_SOURCE_DIR) / "studies" / "examples" / "lcr_min_size.json");
   std::stringstream ss;
   ss << in.rdbuf();
   nlohmann::json study = nlohmann::json::parse(ss.str());
   const char* backends[] = {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
   study["optimizer"]["backend"] = backends[state.range(0)];
+  study["optimizer"]["constraints"] = state.range(1) ? "samples" : "aggregate";
+  study["optimizer"]["polish"] = state.range(2) != 0;
+  const camopt::studies::Node root(&study, "lcr_min_size.json", "");
+  const auto s = camopt::studies::lcr_min_size::Parse(root);
   camopt::studies::RunContext ctx;
-  ctx.study_file = "lcr_min_size.json";
   ctx.quiet = true;
-  for (auto _ : state) {
-    auto out = camopt::studies::RunStudy(study, ctx);
-    benchmark::DoNotOptimize(out.files().size());
-  }
-  state.SetLabel(backends[state.range(0)]);
+  camopt::studies::lcr_min_size::Result r;
+  for (auto _ : state) r = camopt::studies::lcr_min_size::Run(s, ctx);
+  state.SetLabel(std::string(backends[state.range(0)]) + (state.range(1) ? " samples" : " aggregate") +
+                 (state.range(2) ? " +polish" : " smooth only"));
+  state.counters["OD_mm"] = r.best >= 0 ? r.candidates[r.best].outcome.check->outer_diameter_mm : 0.0;
+  state.counters["value_evals"] = r.value_evaluations;
+  state.counters["gradient_evals"] = r.gradient_evaluations;
 }
-BENCHMARK(BM_LcrMinSizeStudy)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_LcrMinSizeStudy)
+    ->Args({0, 0, 1})->Args({1, 0, 1})->Args({2, 0, 1})->Args({3, 0, 1})
+    ->Args({0, 1, 1})->Args({1, 1, 1})
+    ->Args({0, 0, 0})->Args({1, 0, 0})->Args({1, 1, 0})
+    ->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

@@ -3,7 +3,9 @@
 #include "objectives/lcr_sizing.h"
 
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "model/lcr/cycle.h"
@@ -56,13 +58,14 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
       {"output_undercut_margin_mm", 1}, {"input_pitch_clearance_mm", 1},
       {"output_pitch_clearance_mm", 1}};
   const bool samples = s.form == LcrConstraintForm::kSamples;
+  const bool active = s.form == LcrConstraintForm::kActiveSet;
   const int na = samples ? s.samples_per_period * s.rollers_a : 1;
   const int nb = samples ? s.samples_per_period * s.rollers_b : 1;
-  sizes.push_back({"input_roller_force_N", na});
-  sizes.push_back({"output_roller_force_N", nb});
+  sizes.push_back({"input_roller_force_N", active ? int(s.active.force[0].size()) : na});
+  sizes.push_back({"output_roller_force_N", active ? int(s.active.force[1].size()) : nb});
   if (std::isfinite(s.limits.contact_stress_MPa)) {
-    sizes.push_back({"input_stress_margin", na});
-    sizes.push_back({"output_stress_margin", nb});
+    sizes.push_back({"input_stress_margin", active ? int(s.active.stress[0].size()) : na});
+    sizes.push_back({"output_stress_margin", active ? int(s.active.stress[1].size()) : nb});
   }
   if (s.limits.min_efficiency > 0) sizes.push_back({"mean_efficiency", 1});
   std::vector<OutputBlock> blocks;
@@ -74,30 +77,86 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   return blocks;
 }
 
-// Roller forces and Hertz capacity margins of one cam over its load period.
+// Hertz capacity margin s = (p_lim² R' − F E*/(π L)) / (p_lim² r_r) of a contact (header).
+template <typename T>
+T StressMargin(const LcrSizingSpec& s, const lcr::CamSide<T>& cam, const T& force, const T& curvature) {
+  const double p2 = s.limits.contact_stress_MPa * s.limits.contact_stress_MPa;
+  const T load_per_radius = T(s.material.composite_modulus_MPa() / kPi) / cam.contact_length();  // E*/(π L)
+  const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * curvature);
+  return (T(p2) * r_eff - force * load_per_radius) / (T(p2) * cam.roller_radius);
+}
+
+template <typename T>
+lcr::SideLoads<T> SideAt(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side, double theta) {
+  const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
+  lcr::AngleLoads<T> a = lcr::AnalyzeAngle(r, s.material, load, T(theta), lcr::Stages{true, false, false});
+  return side == lcr::Side::kInput ? std::move(a.input) : std::move(a.output);
+}
+
+// Force (stress = false) or stress margin of roller k at θ.
+template <typename T>
+T SampleValue(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side, double theta, int k, bool stress) {
+  const lcr::SideLoads<T> sl = SideAt(s, r, side, theta);
+  return stress ? StressMargin(s, r.side(side), sl.force[k], sl.contacts[k].curvature) : sl.force[k];
+}
+
+// θ* of a sample: θ0 without a window, else the angle of the largest force (smallest margin) of
+// its roller in θ0 ± window, on values only.
+double PeakAngle(const LcrSizingSpec& s, const lcr::Reducer<double>& r, lcr::Side side, const LcrSample& a,
+                 bool stress) {
+  if (!(a.window_rad > 0)) return a.theta_rad;
+  auto f = [&](double t) {
+    const double v = SampleValue(s, r, side, t, a.roller, stress);
+    return stress ? -v : v;
+  };
+  const int n = 8;
+  const double lo0 = a.theta_rad - a.window_rad, step = 2 * a.window_rad / n;
+  int best = 0;
+  double best_v = f(lo0);
+  for (int i = 1; i <= n; ++i)
+    if (const double v = f(lo0 + i * step); v > best_v) best_v = v, best = i;
+  double lo = lo0 + std::max(best - 1, 0) * step, hi = lo0 + std::min(best + 1, n) * step;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < 24; ++it) {
+    if (f1 < f2)
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
+    else
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
+  }
+  const double mid = 0.5 * (lo + hi);
+  return f(mid) >= best_v ? mid : lo0 + best * step;
+}
+
+// Roller forces and Hertz capacity margins of one cam over its load period (kSamples,
+// kAggregate: every roller at samples_per_period angles).
 template <typename T>
 void SideSamples(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side,
                  std::vector<T>& force, std::vector<T>& margin, std::vector<bool>& loaded) {
-  const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
-  const lcr::Stages stages{true, false, false};
   const lcr::CamSide<T>& cam = r.side(side);
-  const double e_star = s.material.composite_modulus_MPa();
-  const double p2 = s.limits.contact_stress_MPa * s.limits.contact_stress_MPa;
-  const T load_per_radius = T(e_star / kPi) / cam.contact_length();  // E*/(π L)
   const double period = Period(s, side);
   for (int i = 0; i < s.samples_per_period; ++i) {
-    const lcr::AngleLoads<T> a =
-        lcr::AnalyzeAngle(r, s.material, load, T(period * i / s.samples_per_period), stages);
-    const lcr::SideLoads<T>& sl = side == lcr::Side::kInput ? a.input : a.output;
+    const lcr::SideLoads<T> sl = SideAt(s, r, side, period * i / s.samples_per_period);
     for (size_t k = 0; k < sl.force.size(); ++k) {
       force.push_back(sl.force[k]);
       loaded.push_back(Value(sl.force[k]) > 0);
-      if (std::isfinite(p2)) {
-        const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * sl.contacts[k].curvature);
-        margin.push_back((T(p2) * r_eff - sl.force[k] * load_per_radius) / (T(p2) * cam.roller_radius));
-      }
+      if (std::isfinite(s.limits.contact_stress_MPa))
+        margin.push_back(StressMargin(s, cam, sl.force[k], sl.contacts[k].curvature));
     }
   }
+}
+
+// kActiveSet rows of one cam (header): the peaks are found on the double design.
+template <typename T>
+void ActiveSamples(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side, std::vector<T>& force,
+                   std::vector<T>& margin) {
+  const int i = side == lcr::Side::kInput ? 0 : 1;
+  const lcr::Reducer<double> rd = r.template cast<double>();
+  for (const LcrSample& a : s.active.force[i])
+    force.push_back(SampleValue(s, r, side, PeakAngle(s, rd, side, a, false), a.roller, false));
+  if (std::isfinite(s.limits.contact_stress_MPa))
+    for (const LcrSample& a : s.active.stress[i])
+      margin.push_back(SampleValue(s, r, side, PeakAngle(s, rd, side, a, true), a.roller, true));
 }
 
 template <typename T>
@@ -118,14 +177,19 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   for (const lcr::CamSide<T>* c : {&r.input, &r.output})
     y[o++] = c->turret_radius * T(1.0 - s.pitch_clearance_fraction) -
              r.eccentricity * T(c->pitch_factor());
-  const bool samples = s.form == LcrConstraintForm::kSamples;
+  const bool aggregate = s.form == LcrConstraintForm::kAggregate;
   const bool stress = std::isfinite(s.limits.contact_stress_MPa);
   std::vector<T> force[2], margin[2];
   std::vector<bool> loaded[2];
   T efficiency(0.0);
   try {
-    SideSamples(s, r, lcr::Side::kInput, force[0], margin[0], loaded[0]);
-    SideSamples(s, r, lcr::Side::kOutput, force[1], margin[1], loaded[1]);
+    if (s.form == LcrConstraintForm::kActiveSet) {
+      ActiveSamples(s, r, lcr::Side::kInput, force[0], margin[0]);
+      ActiveSamples(s, r, lcr::Side::kOutput, force[1], margin[1]);
+    } else {
+      SideSamples(s, r, lcr::Side::kInput, force[0], margin[0], loaded[0]);
+      SideSamples(s, r, lcr::Side::kOutput, force[1], margin[1], loaded[1]);
+    }
     if (s.limits.min_efficiency > 0) {
       // The efficiency mixes both cams' loads (and |F_r|), so it has no short period: a full
       // revolution. Mean of the per-angle efficiency, as lcr_analysis reports it.
@@ -143,19 +207,17 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     return;
   }
   for (int side = 0; side < 2; ++side) {
-    if (samples) {
+    if (!aggregate) {
       for (const T& f : force[side]) y[o++] = f;
     } else {
       // Soft maximum on forces relative to a fixed reference (the load limit). A data-dependent
       // reference (the current maximum) would make the aggregate kink where the largest sample
       // changes, and its Jet derivative would omit d(ref)/dx.
-      std::vector<T> scaled(force[side].size());
-      for (size_t k = 0; k < scaled.size(); ++k) scaled[k] = force[side][k] / T(ForceReference(s));
-      y[o++] = T(ForceReference(s)) * SoftMax(scaled, s.sharpness);
+      y[o++] = lcr::ScaledSoftMax(force[side], ForceReference(s), s.sharpness);
     }
   }
   for (int side = 0; side < 2 && stress; ++side) {
-    if (samples) {
+    if (!aggregate) {
       for (const T& m : margin[side]) y[o++] = m;
     } else {
       // Soft minimum over loaded contacts only; at an unloaded contact the margin is 1 − r_r κ,
@@ -163,14 +225,16 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
       // weight (e^{−k Δ}) and the aggregate stays continuous to that order.
       std::vector<T> m;
       for (size_t k = 0; k < margin[side].size(); ++k)
-        if (loaded[side][k]) m.push_back(margin[side][k]);
-      y[o++] = SoftMin(m, s.sharpness);
+        if (loaded[side][k]) m.push_back(-margin[side][k]);
+      y[o++] = -lcr::ScaledSoftMax(m, 1.0, s.sharpness);
     }
   }
   if (s.limits.min_efficiency > 0) y[o++] = efficiency;
 }
 
 }  // namespace
+
+double LcrLoadPeriod(const LcrSizingSpec& spec, lcr::Side side) { return Period(spec, side); }
 
 lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double> x) {
   return Design<double>(spec, x);
@@ -181,6 +245,16 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
       spec.rollers_b <= spec.lobes_b)
     throw std::invalid_argument("LCR sizing: invalid lobe/roller counts");
   if (spec.samples_per_period < 2) throw std::invalid_argument("LCR sizing: samples_per_period < 2");
+  if (spec.form == LcrConstraintForm::kActiveSet)
+    for (int side = 0; side < 2; ++side) {
+      const int n = side == 0 ? spec.rollers_a : spec.rollers_b;
+      const bool stress = std::isfinite(spec.limits.contact_stress_MPa);
+      if (spec.active.force[side].empty() || (stress && spec.active.stress[side].empty()))
+        throw std::invalid_argument("LCR sizing: an active set needs at least one sample per cam");
+      for (const auto* list : {&spec.active.force[side], &spec.active.stress[side]})
+        for (const LcrSample& a : *list)
+          if (a.roller < 0 || a.roller >= n) throw std::invalid_argument("LCR sizing: roller index out of range");
+    }
   const Layout l = LayoutOf(spec);
   Problem p;
   const std::vector<double> x0 = LcrStartingPoints(spec, 1).front();

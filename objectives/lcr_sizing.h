@@ -8,12 +8,20 @@
 // With a catalogue roller the diameter is fixed and the variables are e, r_dA, r_dB, R; with a
 // roller per cam (same_roller = false) they are e, r_dA, r_dB, d_rA, d_rB, R.
 //
-// Cycle maxima enter in one of two forms (LcrConstraintForm):
+// Cycle maxima enter in one of three forms (LcrConstraintForm):
 // - kSamples: one constraint row per (angle sample, roller) of one load period;
-// - kAggregate: one row per cam, a log-sum-exp soft maximum over the same samples: for forces
+// - kAggregate: one row per cam, a log-sum-exp soft maximum over the same samples
+//   (lcr::ScaledSoftMax, the one cycle aggregate of model/lcr/cycle.h): for forces
 //   F_ref·SoftMax(F/F_ref, k) with F_ref the load limit (over-estimates the sampled maximum by at
-//   most F_ref ln(N)/k: conservative); for the stress margin below SoftMin(s, k) (under-estimates
-//   the smallest margin by at most ln(N)/k). Default k = 200.
+//   most F_ref ln(N)/k: conservative); for the stress margin below −SoftMax(−s, k) (under-estimates
+//   the smallest margin by at most ln(N)/k). Default k = 200;
+// - kActiveSet: one force row per sample of active.force and one stress-margin row per sample of
+//   active.stress (each an input angle and a roller). A sample with a window w > 0 is a tracked
+//   peak: its row is the roller's largest force (smallest margin) over θ ∈ [θ0 − w, θ0 + w], the
+//   maximiser θ* found on values (a 9-point scan refined by golden section) and the row then
+//   evaluated at θ* for the scalar T. Its derivative is exact by the envelope theorem (∂q/∂θ = 0
+//   at an interior maximum), as for lcr::MaxPitchCurvature. The minimum-size search seeds these
+//   peaks from the dense check (objectives/lcr_min_size.h).
 // One load period suffices: the input side repeats every 2π/n_A of input angle (the fixed turret
 // maps onto itself), the output side every 2π m_A/(n_A m_B) (the output turret turns relative to
 // the eccentric by 2π/n_B in that time); and the input cam's roller forces depend only on the input
@@ -27,6 +35,7 @@
 #pragma once
 
 #include <array>
+#include <compare>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,7 +46,20 @@
 
 namespace camopt::objectives {
 
-enum class LcrConstraintForm { kSamples, kAggregate };
+enum class LcrConstraintForm { kSamples, kAggregate, kActiveSet };
+
+/// One (input angle, roller) sample of a cam for LcrConstraintForm::kActiveSet.
+struct LcrSample {
+  double theta_rad = 0.0;   ///< input angle θ0
+  int roller = 0;           ///< roller index k of that cam's turret
+  double window_rad = 0.0;  ///< 0: the row is at θ0; > 0: the peak over θ0 ± window
+  auto operator<=>(const LcrSample&) const = default;
+};
+
+/// The samples of kActiveSet, per cam ([0] input, [1] output) and quantity.
+struct LcrActiveSet {
+  std::array<std::vector<LcrSample>, 2> force, stress;
+};
 
 struct LcrLimits {
   double contact_stress_MPa = kInf;
@@ -64,11 +86,18 @@ struct LcrSizingSpec {
   LcrConstraintForm form = LcrConstraintForm::kAggregate;
   int samples_per_period = 24;  ///< angle samples over one load period of each cam
   double sharpness = 200.0;     ///< log-sum-exp sharpness for kAggregate (dimensionless)
+  /// kActiveSet: the samples that get rows; every force list must not be empty, nor every stress
+  /// list when the stress limit is finite.
+  LcrActiveSet active;
   int efficiency_samples = 48;  ///< input angles over a full revolution for the mean efficiency
   /// Smallest pitch-point clearance r_d − e n/(n − m), as a fraction of r_d (the pitch curve must
   /// not loop; see lcr::CheckDesign).
   double pitch_clearance_fraction = 0.02;
 };
+
+/// Load period of one cam [rad of input angle]: the input cam's configuration repeats every
+/// 2π/n_A (roller k taking the place of roller k ± 1), the output cam's every 2π m_A/(n_A m_B).
+double LcrLoadPeriod(const LcrSizingSpec& spec, lcr::Side side);
 
 /// The design of a variable vector x (of the problem built from spec).
 lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double> x);
@@ -80,7 +109,7 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   outer_diameter_bound_mm (2R), input_envelope_mm / output_envelope_mm (r_d + r_r − R <= 0),
 ///   input_roller_gap_mm / output_roller_gap_mm, input_undercut_margin_mm / output_...,
 ///   input_pitch_clearance_mm / output_... (r_d − e k − fraction r_d >= 0),
-///   input_roller_force_N / output_... (samples or soft max), input_stress_margin / output_...
+///   input_roller_force_N / output_... (samples, soft max, or the active samples in their order), input_stress_margin / output_...
 ///   (the dimensionless Hertz capacity margin above, samples or soft min; present when the stress
 ///   limit is finite), mean_efficiency (mean of lcr::AnalyzeAngle's η over efficiency_samples
 ///   angles of a full revolution; present when limits.min_efficiency > 0).

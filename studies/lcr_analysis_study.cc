@@ -1,18 +1,21 @@
 // Study kind "lcr_analysis": analyse one lobe cam reducer over an input revolution.
 // Stages run only as the study asks ("analysis.evaluate"): profile, undercut, forces, stress,
 // efficiency. Outputs: result.json, series.csv, SVG plots and drawings, DXF profiles with cutter paths.
+// Parse → Run → Write (studies/lcr_analysis_study.h); the physics is model/lcr/.
+#include "studies/lcr_analysis_study.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <optional>
 #include <set>
 
-#include "model/lcr/cycle.h"
+#include "model/lcr/friction.h"
+#include "model/lcr/profile.h"
 #include "studies/lcr_input.h"
-#include "studies/study.h"
+#include "studies/material_input.h"
 #include "studies/writers.h"
 
-namespace camopt::studies {
+namespace camopt::studies::lcr_analysis {
 namespace {
 
 using lcr::Side;
@@ -25,12 +28,8 @@ int MaxI(const std::vector<I>& v) { return *std::max_element(v.begin(), v.end())
 template <typename I>
 int MinI(const std::vector<I>& v) { return *std::min_element(v.begin(), v.end()); }
 
-struct Request {
-  bool profile = true, undercut = true, forces = true, stress = true, efficiency = true;
-};
-
-Request ParseEvaluate(const Node& analysis) {
-  Request q;
+Evaluate ParseEvaluate(const Node& analysis) {
+  Evaluate q;
   if (!analysis.Has("evaluate")) return q;
   q = {false, false, false, false, false};
   const std::set<std::string> known = {"profile", "undercut", "forces", "stress", "efficiency"};
@@ -99,123 +98,184 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
   return d;
 }
 
-void RunLcrAnalysis(const Node& root, const RunContext& ctx, Outputs& out) {
+}  // namespace
+
+Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis"});
-  const lcr::Reducer<double> r = ParseReducer(root["reducer"]);
+  Study st;
+  st.name = root.StringOr("name", "");
+  st.reducer = ParseReducer(root["reducer"]);
   root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  const lcr::Material material = ParseMaterial(root["material"]);
+  st.material = ParseMaterial(root["material"]);
   const Node load_node = root["load"];
   load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N"});
-  lcr::LoadCase load;
-  load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
-  load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
-  load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
-  const Node analysis = root.Has("analysis") ? root["analysis"] : root;
-  if (root.Has("analysis")) analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate"});
-  const int steps = root.Has("analysis") ? analysis.IntegerOr("angle_steps", 12, 3600) : 3600;
-  const int points = root.Has("analysis") ? analysis.IntegerOr("profile_points", 100, 3600) : 3600;
-  const Request q = root.Has("analysis") ? ParseEvaluate(analysis) : Request{};
-  double stress_limit = kInf, force_limit = kInf;
+  st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
+  st.load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
+  st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
+  if (root.Has("analysis")) {
+    const Node analysis = root["analysis"];
+    analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate"});
+    st.angle_steps = analysis.IntegerOr("angle_steps", 12, 3600);
+    st.profile_points = analysis.IntegerOr("profile_points", 100, 3600);
+    st.evaluate = ParseEvaluate(analysis);
+  }
   if (root.Has("limits")) {
     root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N"});
-    stress_limit = root["limits"].PositiveOr("contact_stress_MPa", kInf);
-    force_limit = root["limits"].PositiveOr("roller_load_N", kInf);
+    st.contact_stress_limit_MPa = root["limits"].PositiveOr("contact_stress_MPa", kInf);
+    st.roller_load_limit_N = root["limits"].PositiveOr("roller_load_N", kInf);
   }
   const Node reducer_node = root["reducer"];
-  const double cutter_a = ParseCutterDiameter(reducer_node["input"], 2 * r.input.roller_radius) / 2;
-  const double cutter_b = ParseCutterDiameter(reducer_node["output"], 2 * r.output.roller_radius) / 2;
+  st.cutter_radius_input_mm = ParseCutterDiameter(reducer_node["input"], 2 * st.reducer.input.roller_radius) / 2;
+  st.cutter_radius_output_mm = ParseCutterDiameter(reducer_node["output"], 2 * st.reducer.output.roller_radius) / 2;
+  return st;
+}
 
-  nlohmann::json res;
-  res["study"] = "lcr_analysis";
-  res["name"] = root.StringOr("name", "");
-  res["speed_ratio"] = lcr::SpeedReductionRatio(r);
-  res["cam_speed_ratio"] = lcr::CamSpeedRatio(r);
-  res["output_speed_ratio"] = lcr::OutputSpeedRatio(r);
-  res["outer_diameter_mm"] = lcr::OuterDiameter(r);
-  res["angle_steps"] = steps;
-  std::vector<std::string> notes;
+Result Run(const Study& st, const RunContext& ctx) {
+  const lcr::Reducer<double>& r = st.reducer;
+  const Evaluate& q = st.evaluate;
+  Result res;
+  res.speed_ratio = lcr::SpeedReductionRatio(r);
+  res.cam_speed_ratio = lcr::CamSpeedRatio(r);
+  res.output_speed_ratio = lcr::OutputSpeedRatio(r);
+  res.outer_diameter_mm = lcr::OuterDiameter(r);
 
   // Undercut: cheap and needed by the stress stage's validity.
-  bool any_undercut = false;
+  res.undercut_evaluated = q.undercut || q.stress;
   for (Side s : {Side::kInput, Side::kOutput}) {
     const auto& c = r.side(s);
-    nlohmann::json& j = res[s == Side::kInput ? "input_cam" : "output_cam"];
-    j["lobes"] = c.lobes;
-    j["rollers"] = c.rollers;
-    j["roller_gap_mm"] = lcr::RollerGap(c);
-    j["pitch_point_radius_mm"] = r.eccentricity * c.pitch_factor();
-    if (q.undercut || q.stress) {
-      const double rho = lcr::MinConvexPitchRadius(c, r.eccentricity);
-      const double margin = rho - c.roller_radius;
-      const double cutter = s == Side::kInput ? cutter_a : cutter_b;
-      j["min_pitch_curve_radius_mm"] = rho;
-      j["min_convex_cam_radius_mm"] = margin;
-      j["undercut_margin_mm"] = margin;
-      j["undercut"] = margin < 0;
-      j["cutter_diameter_mm"] = 2 * cutter;
-      j["min_cutter_path_radius_mm"] = rho - (c.roller_radius - cutter);
-      any_undercut = any_undercut || margin < 0;
+    CamResult& j = s == Side::kInput ? res.input_cam : res.output_cam;
+    j.lobes = c.lobes;
+    j.rollers = c.rollers;
+    j.roller_gap_mm = lcr::RollerGap(c);
+    j.pitch_point_radius_mm = lcr::PitchPointRadius(c, r.eccentricity);
+    if (res.undercut_evaluated) {
+      const double cutter = s == Side::kInput ? st.cutter_radius_input_mm : st.cutter_radius_output_mm;
+      j.min_pitch_curve_radius_mm = lcr::MinConvexPitchRadius(c, r.eccentricity);
+      j.undercut_margin_mm = lcr::MinConvexOffsetRadius(c, r.eccentricity, c.roller_radius);
+      j.cutter_diameter_mm = 2 * cutter;
+      j.min_cutter_path_radius_mm = lcr::MinConvexOffsetRadius(c, r.eccentricity, c.roller_radius - cutter);
+      res.any_undercut = res.any_undercut || j.undercut_margin_mm < 0;
     }
   }
-  if (any_undercut)
-    notes.push_back("undercut: the roller is larger than the smallest convex pitch-curve radius; "
-                    "the cam cannot be cut to this profile and contact stresses are not valid");
+  if (res.any_undercut)
+    res.notes.push_back("undercut: the roller is larger than the smallest convex pitch-curve radius; "
+                        "the cam cannot be cut to this profile and contact stresses are not valid");
 
-  lcr::CycleSeries series;
   if (q.forces) {
+    const int steps = st.angle_steps;
     Progress progress("lcr_analysis", ctx.quiet);
     lcr::Stages stages{true, q.stress, q.efficiency};
     try {
-      series = lcr::AnalyzeCycle(r, material, load, steps, stages,
-                                 [&](double f) { progress.Update(f, std::to_string(steps) + " angles"); });
+      res.series = lcr::AnalyzeCycle(r, st.material, st.load, steps, stages,
+                                     [&](double f) { progress.Update(f, std::to_string(steps) + " angles"); });
     } catch (const std::domain_error& e) {
       throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
     }
     progress.Done();
+    const lcr::CycleSeries& series = res.series;
     for (Side s : {Side::kInput, Side::kOutput}) {
       const lcr::SideSeries& ss = s == Side::kInput ? series.input : series.output;
-      nlohmann::json& j = res[s == Side::kInput ? "input_cam" : "output_cam"];
-      j["actuating_rollers_max"] = MaxI(ss.actuating);
-      j["actuating_rollers_min"] = MinI(ss.actuating);
-      j["max_roller_force_N"] = Max(ss.max_force_N);
-      if (std::isfinite(force_limit)) {
-        j["roller_load_limit_N"] = force_limit;
-        j["roller_load_ok"] = Max(ss.max_force_N) <= force_limit;
-      }
+      CamResult& j = s == Side::kInput ? res.input_cam : res.output_cam;
+      j.actuating_rollers_max = MaxI(ss.actuating);
+      j.actuating_rollers_min = MinI(ss.actuating);
+      j.max_roller_force_N = Max(ss.max_force_N);
       if (q.stress) {
-        const double p = Max(ss.max_stress_MPa);
-        if (std::isfinite(p)) {
-          j["max_contact_stress_MPa"] = p;
-          if (std::isfinite(stress_limit)) {
-            j["contact_stress_limit_MPa"] = stress_limit;
-            j["contact_stress_ok"] = p <= stress_limit;
-          }
-        } else {
-          j["max_contact_stress_MPa"] = nullptr;  // a loaded roller sits on an undercut point
-        }
-        j["contact_length_mm"] = r.side(s).contact_length();
+        j.max_contact_stress_MPa = Max(ss.max_stress_MPa);
+        j.contact_length_mm = r.side(s).contact_length();
       }
     }
-    res["fixed_turret_torque_Nm"] = Mean(series.input.turret_torque_Nmm) / 1000.0;
-    res["output_torque_Nm"] = load.output_torque_Nmm / 1000.0;
+    res.fixed_turret_torque_Nm = Mean(series.input.turret_torque_Nmm) / 1000.0;
     if (q.efficiency) {
-      res["input_torque_Nm"] = {{"mean", Mean(series.input_torque_Nmm) / 1000},
-                                {"max", Max(series.input_torque_Nmm) / 1000},
-                                {"min", Min(series.input_torque_Nmm) / 1000},
-                                {"ideal", load.output_torque_Nmm / std::abs(lcr::SpeedReductionRatio(r)) / 1000}};
-      res["efficiency"] = {{"mean", Mean(series.efficiency)},
-                           {"min", Min(series.efficiency)},
-                           {"max", Max(series.efficiency)}};
-      res["eccentric_load_N"] = {{"tangential_max", Max(series.tangential_force_N)},
-                                 {"radial_max_abs", std::max(Max(series.radial_force_N), -Min(series.radial_force_N))}};
-      res["friction_coefficient"] = load.friction_coefficient;
-      if (load.output_torque_Nmm == 0)
-        notes.push_back(load.cam_weight_N > 0
-                            ? "zero output torque: efficiency is 0 (the cam weight still loads the eccentric)"
-                            : "zero output torque: efficiency is its limit as the torque tends to 0 "
-                              "(the model is linear in the torque)");
+      res.input_torque_mean_Nm = Mean(series.input_torque_Nmm) / 1000;
+      res.input_torque_max_Nm = Max(series.input_torque_Nmm) / 1000;
+      res.input_torque_min_Nm = Min(series.input_torque_Nmm) / 1000;
+      res.input_torque_ideal_Nm = lcr::IdealInputTorque(st.load.output_torque_Nmm, res.speed_ratio) / 1000;
+      res.efficiency_mean = Mean(series.efficiency);
+      res.efficiency_min = Min(series.efficiency);
+      res.efficiency_max = Max(series.efficiency);
+      res.eccentric_tangential_max_N = Max(series.tangential_force_N);
+      res.eccentric_radial_max_abs_N = std::max(Max(series.radial_force_N), -Min(series.radial_force_N));
+      if (st.load.output_torque_Nmm == 0)
+        res.notes.push_back(st.load.cam_weight_N > 0
+                                ? "zero output torque: efficiency is 0 (the cam weight still loads the eccentric)"
+                                : "zero output torque: efficiency is its limit as the torque tends to 0 "
+                                  "(the model is linear in the torque)");
     }
-    // CSV series.
+    if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
+  }
+  return res;
+}
+
+nlohmann::json ToJson(const Study& st, const Result& res) {
+  const Evaluate& q = st.evaluate;
+  nlohmann::json j;
+  j["study"] = "lcr_analysis";
+  j["name"] = st.name;
+  j["speed_ratio"] = res.speed_ratio;
+  j["cam_speed_ratio"] = res.cam_speed_ratio;
+  j["output_speed_ratio"] = res.output_speed_ratio;
+  j["outer_diameter_mm"] = res.outer_diameter_mm;
+  j["angle_steps"] = st.angle_steps;
+  for (Side s : {Side::kInput, Side::kOutput}) {
+    const CamResult& c = s == Side::kInput ? res.input_cam : res.output_cam;
+    nlohmann::json& cj = j[s == Side::kInput ? "input_cam" : "output_cam"];
+    cj["lobes"] = c.lobes;
+    cj["rollers"] = c.rollers;
+    cj["roller_gap_mm"] = c.roller_gap_mm;
+    cj["pitch_point_radius_mm"] = c.pitch_point_radius_mm;
+    if (res.undercut_evaluated) {
+      cj["min_pitch_curve_radius_mm"] = c.min_pitch_curve_radius_mm;
+      cj["min_convex_cam_radius_mm"] = c.undercut_margin_mm;
+      cj["undercut_margin_mm"] = c.undercut_margin_mm;
+      cj["undercut"] = c.undercut_margin_mm < 0;
+      cj["cutter_diameter_mm"] = c.cutter_diameter_mm;
+      cj["min_cutter_path_radius_mm"] = c.min_cutter_path_radius_mm;
+    }
+    if (!q.forces) continue;
+    cj["actuating_rollers_max"] = c.actuating_rollers_max;
+    cj["actuating_rollers_min"] = c.actuating_rollers_min;
+    cj["max_roller_force_N"] = c.max_roller_force_N;
+    if (std::isfinite(st.roller_load_limit_N)) {
+      cj["roller_load_limit_N"] = st.roller_load_limit_N;
+      cj["roller_load_ok"] = c.max_roller_force_N <= st.roller_load_limit_N;
+    }
+    if (q.stress) {
+      const double p = c.max_contact_stress_MPa;
+      if (std::isfinite(p)) {
+        cj["max_contact_stress_MPa"] = p;
+        if (std::isfinite(st.contact_stress_limit_MPa)) {
+          cj["contact_stress_limit_MPa"] = st.contact_stress_limit_MPa;
+          cj["contact_stress_ok"] = p <= st.contact_stress_limit_MPa;
+        }
+      } else {
+        cj["max_contact_stress_MPa"] = nullptr;  // a loaded roller sits on an undercut point
+      }
+      cj["contact_length_mm"] = c.contact_length_mm;
+    }
+  }
+  if (q.forces) {
+    j["fixed_turret_torque_Nm"] = res.fixed_turret_torque_Nm;
+    j["output_torque_Nm"] = st.load.output_torque_Nmm / 1000.0;
+    if (q.efficiency) {
+      j["input_torque_Nm"] = {{"mean", res.input_torque_mean_Nm},
+                              {"max", res.input_torque_max_Nm},
+                              {"min", res.input_torque_min_Nm},
+                              {"ideal", res.input_torque_ideal_Nm}};
+      j["efficiency"] = {{"mean", res.efficiency_mean}, {"min", res.efficiency_min}, {"max", res.efficiency_max}};
+      j["eccentric_load_N"] = {{"tangential_max", res.eccentric_tangential_max_N},
+                               {"radial_max_abs", res.eccentric_radial_max_abs_N}};
+      j["friction_coefficient"] = st.load.friction_coefficient;
+    }
+  }
+  j["notes"] = res.notes;
+  return j;
+}
+
+void Write(const Study& st, const Result& res, Outputs& out) {
+  const lcr::Reducer<double>& r = st.reducer;
+  const Evaluate& q = st.evaluate;
+  if (q.forces) {
+    const lcr::CycleSeries& series = res.series;
     Table t;
     std::vector<double> deg(series.theta_rad.size());
     for (size_t i = 0; i < deg.size(); ++i) deg[i] = series.theta_rad[i] * 180 / kPi;
@@ -243,7 +303,7 @@ void RunLcrAnalysis(const Node& root, const RunContext& ctx, Outputs& out) {
                                        {"output cam (output turret)", deg, series.output.max_force_N}},
                                       {"Largest roller force over the input revolution", "input angle [deg]",
                                        "roller force [N]"}));
-    if (q.stress && !any_undercut)
+    if (q.stress && !res.any_undercut)
       out.Add("contact_stress.svg",
               SvgLinePlot({{"input cam", deg, series.input.max_stress_MPa},
                            {"output cam", deg, series.output.max_stress_MPa}},
@@ -253,26 +313,27 @@ void RunLcrAnalysis(const Node& root, const RunContext& ctx, Outputs& out) {
                                             {"Efficiency (paper's friction model)", "input angle [deg]",
                                              "efficiency [-]"}));
   }
-
   if (q.profile) {
-    std::optional<lcr::AngleLoads<double>> at_zero;
-    if (q.forces) at_zero = lcr::AnalyzeAngle(r, material, load, 0.0, {true, false, false});
+    const int points = st.profile_points;
     for (Side s : {Side::kInput, Side::kOutput}) {
       const std::string which = s == Side::kInput ? "input" : "output";
-      const double cutter = s == Side::kInput ? cutter_a : cutter_b;
+      const double cutter = s == Side::kInput ? st.cutter_radius_input_mm : st.cutter_radius_output_mm;
       const Drawing cam = CamDrawing(r, s, cutter, points, which + " cam: profile, pitch curve, cutter path");
       out.Add(which + "_cam.dxf", ToDxf(cam));
       out.Add(which + "_cam.svg", SvgDrawing(cam));
       out.Add(which + "_assembly.svg",
-              SvgDrawing(AssemblyDrawing(r, s, at_zero ? &*at_zero : nullptr, points,
+              SvgDrawing(AssemblyDrawing(r, s, res.loads_at_zero ? &*res.loads_at_zero : nullptr, points,
                                          which + " cam and rollers at input angle 0 (loaded rollers red)")));
     }
   }
-  res["notes"] = notes;
-  out.AddJson("result.json", res);
+  out.AddJson("result.json", ToJson(st, res));
 }
 
-CAMOPT_REGISTER_STUDY("lcr_analysis", RunLcrAnalysis);
-
+namespace {
+CAMOPT_REGISTER_STUDY("lcr_analysis", [](const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study study = Parse(root);
+  Write(study, Run(study, ctx), out);
+});
 }  // namespace
-}  // namespace camopt::studies
+
+}  // namespace camopt::studies::lcr_analysis

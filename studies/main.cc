@@ -1,5 +1,6 @@
 // camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet]`.
-// Exit codes: 0 success, 2 bad input (study file or arguments), 1 any other failure.
+// Exit codes: 0 success, 2 bad input (study file or arguments), 3 the study ran and its outputs
+// were written but the answer is not what was asked (e.g. no design fits), 1 any other failure.
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -38,6 +39,10 @@ int main(int argc, char** argv) {
     camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     return 0;
+  } catch (const camopt::studies::StudyIncomplete& e) {
+    std::cerr << "camopt: " << e.what() << "\n";
+    if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
+    return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";
     return 2;

@@ -109,6 +109,7 @@ void RunStudyFile(const std::string& file, const std::string& out_dir, const Run
   const nlohmann::json study = LoadStudyFile(file);
   const Outputs outputs = RunStudy(study, c);
   outputs.WriteAll(out_dir);
+  if (!outputs.incomplete().empty()) throw StudyIncomplete(outputs.incomplete());
 }
 
 double Finite(double value, const std::string& what) {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,22 @@ class Outputs {
   /// Writes every file into dir (created if needed) through a staging folder and renames.
   void WriteAll(const std::string& dir) const;
 
+  /// The study ran to the end but its answer is not what was asked (no feasible design, not
+  /// converged): the outputs are still written, then RunStudyFile throws StudyIncomplete with
+  /// this one-line reason (exit code 3).
+  void MarkIncomplete(std::string reason) { incomplete_ = std::move(reason); }
+  const std::string& incomplete() const { return incomplete_; }
+
  private:
   std::map<std::string, std::string> files_;
+  std::string incomplete_;
+};
+
+/// Thrown by RunStudyFile after the outputs were written when Outputs::MarkIncomplete was called
+/// (exit code 3); what() is the reason.
+class StudyIncomplete : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 using StudyRunner = std::function<void(const Node& root, const RunContext&, Outputs&)>;
@@ -60,7 +75,8 @@ bool RegisterStudy(const std::string& kind, StudyRunner runner);
 std::vector<std::string> StudyKinds();
 
 /// Runs the study in file: parses, dispatches on "study", writes into out_dir.
-/// Throws StudyError for bad input (exit 2) and std::exception for other failures.
+/// Throws StudyError for bad input (exit 2), StudyIncomplete after writing an incomplete result
+/// (exit 3) and std::exception for other failures.
 void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
 
 /// Runs an already parsed study, returning its outputs without writing them.

@@ -1,10 +1,12 @@
-// The lcr_analysis study through the CLI: outputs, fields, only-what-is-asked, bad input.
+// The lcr_analysis study: numbers through the C++ entry points (Parse, Run, ToJson, Write), and
+// through the CLI the exit codes, messages and files written.
 #include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "studies/lcr_analysis_study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -21,6 +23,27 @@ nlohmann::json LcrIIStudy() {
   return nlohmann::json::parse(ReadFile(SourcePath("studies/examples/lcr_ii.json")));
 }
 
+// The C++ entry points: Parse then Run on a study held in memory.
+studies::lcr_analysis::Result RunAnalysis(const nlohmann::json& study) {
+  const studies::Node root(&study, "lcr.json", "");
+  return studies::lcr_analysis::Run(studies::lcr_analysis::Parse(root), {"lcr.json", true});
+}
+
+TEST(LcrStudy, ExampleNumbers) {
+  nlohmann::json study = LcrIIStudy();
+  study["analysis"]["angle_steps"] = 720;
+  const studies::lcr_analysis::Result res = RunAnalysis(study);
+  EXPECT_DOUBLE_EQ(res.speed_ratio, -90.0);
+  for (const auto* cam : {&res.input_cam, &res.output_cam}) EXPECT_GE(cam->undercut_margin_mm, 0.0);
+  for (double eta : {res.efficiency_mean, res.efficiency_min, res.efficiency_max}) {
+    EXPECT_GT(eta, 0.0);
+    EXPECT_LT(eta, 1.0);
+  }
+  EXPECT_NEAR(res.fixed_turret_torque_Nm, 80.0 * 14 * 13 / (15.0 * 12), 1e-9);
+  EXPECT_EQ(res.series.theta_rad.size(), 720u);
+}
+
+// The CLI: exit code, no progress line with --quiet, result.json fields, every file written.
 TEST(LcrStudy, ExampleWritesEveryOutputWithTheRequiredFields) {
   const fs::path dir = TempDir("lcr-study");
   nlohmann::json study = LcrIIStudy();
@@ -32,7 +55,6 @@ TEST(LcrStudy, ExampleWritesEveryOutputWithTheRequiredFields) {
   const auto res = nlohmann::json::parse(ReadFile(dir / "out/result.json"));
   EXPECT_EQ(res["study"], "lcr_analysis");
   EXPECT_EQ(res["name"], "LCR II");
-  EXPECT_DOUBLE_EQ(res["speed_ratio"].get<double>(), -90.0);
   for (const char* cam : {"input_cam", "output_cam"}) {
     for (const char* f : {"actuating_rollers_max", "actuating_rollers_min", "max_roller_force_N",
                           "max_contact_stress_MPa", "min_pitch_curve_radius_mm", "undercut_margin_mm"})
@@ -41,12 +63,10 @@ TEST(LcrStudy, ExampleWritesEveryOutputWithTheRequiredFields) {
   }
   EXPECT_TRUE(res["input_torque_Nm"]["mean"].is_number());
   EXPECT_TRUE(res["input_torque_Nm"]["max"].is_number());
-  for (const char* f : {"mean", "min", "max"}) {
-    const double eta = res["efficiency"][f].get<double>();
-    EXPECT_GT(eta, 0.0);
-    EXPECT_LT(eta, 1.0);
-  }
-  EXPECT_NEAR(res["fixed_turret_torque_Nm"].get<double>(), 80.0 * 14 * 13 / (15.0 * 12), 1e-9);
+  // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
+  const studies::Node root(&study, "lcr.json", "");
+  const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(root);
+  EXPECT_EQ(res, studies::lcr_analysis::ToJson(st, studies::lcr_analysis::Run(st, {"lcr.json", true})));
   for (const char* f : {"series.csv", "forces.svg", "contact_stress.svg", "efficiency.svg", "input_cam.dxf",
                         "output_cam.dxf", "input_assembly.svg", "output_assembly.svg"})
     EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
@@ -59,46 +79,40 @@ TEST(LcrStudy, ExampleWritesEveryOutputWithTheRequiredFields) {
 }
 
 TEST(LcrStudy, ProfileOnlyEvaluatesNoForces) {
-  const fs::path dir = TempDir("lcr-profile-only");
   nlohmann::json study = LcrIIStudy();
   study["analysis"]["evaluate"] = {"profile", "undercut"};
   study["reducer"]["input"]["cutter_diameter_mm"] = 10;
-  WriteFile(dir / "s.json", study.dump());
-  const auto r = RunCamopt("run " + (dir / "s.json").string() + " --out " + (dir / "out").string() + " --quiet");
-  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const auto res = nlohmann::json::parse(ReadFile(dir / "out/result.json"));
-  EXPECT_FALSE(res["input_cam"].contains("max_roller_force_N"));
-  EXPECT_FALSE(res.contains("efficiency"));
-  EXPECT_FALSE(fs::exists(dir / "out/series.csv"));
-  EXPECT_TRUE(fs::exists(dir / "out/input_cam.dxf"));
-  EXPECT_DOUBLE_EQ(res["input_cam"]["cutter_diameter_mm"].get<double>(), 10.0);
-  EXPECT_NEAR(res["input_cam"]["min_cutter_path_radius_mm"].get<double>(),
-              res["input_cam"]["min_pitch_curve_radius_mm"].get<double>() - 1.0, 1e-12);
+  const studies::Node root(&study, "lcr.json", "");
+  const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(root);
+  const studies::lcr_analysis::Result res = studies::lcr_analysis::Run(st, {"lcr.json", true});
+  const nlohmann::json j = studies::lcr_analysis::ToJson(st, res);
+  EXPECT_FALSE(j["input_cam"].contains("max_roller_force_N"));
+  EXPECT_FALSE(j.contains("efficiency"));
+  EXPECT_TRUE(res.series.theta_rad.empty());
+  studies::Outputs out;
+  studies::lcr_analysis::Write(st, res, out);
+  EXPECT_FALSE(out.files().count("series.csv"));
+  EXPECT_TRUE(out.files().count("input_cam.dxf"));
+  EXPECT_DOUBLE_EQ(res.input_cam.cutter_diameter_mm, 10.0);
+  EXPECT_NEAR(res.input_cam.min_cutter_path_radius_mm, res.input_cam.min_pitch_curve_radius_mm - 1.0, 1e-12);
 }
 
 TEST(LcrStudy, ZeroTorqueAndUndercutAreReportedNotCrashed) {
-  const fs::path dir = TempDir("lcr-hard");
   nlohmann::json study = LcrIIStudy();
   study["analysis"]["angle_steps"] = 360;
   study["load"]["output_torque_Nm"] = 0;
-  WriteFile(dir / "zero.json", study.dump());
-  auto r = RunCamopt("run " + (dir / "zero.json").string() + " --out " + (dir / "zero").string() + " --quiet");
-  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  auto res = nlohmann::json::parse(ReadFile(dir / "zero/result.json"));
-  EXPECT_EQ(res["input_cam"]["max_roller_force_N"].get<double>(), 0.0);
-  EXPECT_FALSE(res["notes"].empty());
+  studies::lcr_analysis::Result res = RunAnalysis(study);
+  EXPECT_EQ(res.input_cam.max_roller_force_N, 0.0);
+  EXPECT_FALSE(res.notes.empty());
 
   // A roller larger than the smallest convex pitch radius (9.05 mm on the input cam) undercuts.
   study = LcrIIStudy();
   study["analysis"]["angle_steps"] = 360;
   study["reducer"]["eccentricity_mm"] = 2.7;
-  WriteFile(dir / "uc.json", study.dump());
-  r = RunCamopt("run " + (dir / "uc.json").string() + " --out " + (dir / "uc").string() + " --quiet");
-  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  res = nlohmann::json::parse(ReadFile(dir / "uc/result.json"));
-  EXPECT_EQ(res["input_cam"]["undercut"], true);
-  EXPECT_LT(res["input_cam"]["undercut_margin_mm"].get<double>(), 0.0);
-  EXPECT_FALSE(res["notes"].empty());
+  res = RunAnalysis(study);
+  EXPECT_TRUE(res.any_undercut);
+  EXPECT_LT(res.input_cam.undercut_margin_mm, 0.0);
+  EXPECT_FALSE(res.notes.empty());
 }
 
 struct BadCase {

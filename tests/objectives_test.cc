@@ -52,11 +52,10 @@ void ExpectEvaluatorJacobianMatches(const objectives::Evaluator& ev, std::vector
 }
 
 LcrSizingSpec LcrIISpec(LcrConstraintForm form) {
-  LcrSizingSpec s;
-  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
+  LcrSizingSpec s = testing::LcrIISizingSpec(form);
+  if (form == LcrConstraintForm::kActiveSet)
+    for (int side = 0; side < 2; ++side)  // two rollers share one angle
+      s.active.force[side] = s.active.stress[side] = {{0.1, 0}, {0.1, 3}, {0.37, 5}, {1.2, 11}, {2.9, 12}};
   return s;
 }
 
@@ -109,6 +108,11 @@ TEST_P(LcrSizingGradients, EveryOutputMatchesCentralDifferences) {
   s.efficiency_samples = 12;
   if (rollers == 1) s.fixed_roller_diameter_mm = 12.0;
   if (rollers == 2) s.same_roller = false;
+  if (form == LcrConstraintForm::kActiveSet)  // tracked peaks too (envelope theorem)
+    for (int side = 0; side < 2; ++side) {
+      s.active.force[side].push_back({0.2, 2, 0.1});
+      s.active.stress[side].push_back({0.2, 2, 0.1});
+    }
   const auto p = objectives::MakeLcrSizingProblem(s);
   for (std::vector<double> x : {LcrIIVariables(), std::vector<double>{1.84, 33.97, 33.97, 6.33, 37.13}}) {
     if (rollers == 1) x.erase(x.begin() + 3);
@@ -121,7 +125,8 @@ TEST_P(LcrSizingGradients, EveryOutputMatchesCentralDifferences) {
 
 INSTANTIATE_TEST_SUITE_P(Objectives, LcrSizingGradients,
                          ::testing::Combine(::testing::Values(LcrConstraintForm::kAggregate,
-                                                              LcrConstraintForm::kSamples),
+                                                              LcrConstraintForm::kSamples,
+                                                              LcrConstraintForm::kActiveSet),
                                             ::testing::Values(0, 1, 2)));
 
 // The problem's geometric outputs equal the pipeline's own functions on the same design.
@@ -207,6 +212,57 @@ TEST(LcrSizing, StressMarginIsTheHertzCapacityOfThePipeline) {
     }
   }
   EXPECT_GT(loaded, 10);
+}
+
+// Active-set rows are the pipeline's force and Hertz margin of the listed (angle, roller) samples,
+// in the order listed; a tracked peak is the largest force of its roller over its window (checked
+// against a fine scan).
+TEST(LcrSizing, ActiveSetRowsAreThePipelineSamples) {
+  const LcrSizingSpec s = LcrIISpec(LcrConstraintForm::kActiveSet);
+  const auto p = objectives::MakeLcrSizingProblem(s);
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(LcrIIVariables(), y);
+  const lcr::Reducer<double> r = testing::LcrII();
+  const char* names[2] = {"input", "output"};
+  for (int side = 0; side < 2; ++side) {
+    const auto& f = p.evaluator->block(std::string(names[side]) + "_roller_force_N");
+    const auto& m = p.evaluator->block(std::string(names[side]) + "_stress_margin");
+    ASSERT_EQ(f.size, int(s.active.force[side].size()));
+    ASSERT_EQ(m.size, int(s.active.stress[side].size()));
+    for (int i = 0; i < f.size; ++i) {
+      const auto [theta, k] = std::pair{s.active.force[side][i].theta_rad, s.active.force[side][i].roller};
+      const auto a = lcr::AnalyzeAngle(r, testing::Steel(), {80000, 0, 0}, theta);
+      const auto& sl = side == 0 ? a.input : a.output;
+      EXPECT_DOUBLE_EQ(y[f.offset + i], sl.force[k]);
+      const double rr = 6.0, r_eff = rr * (1 - rr * sl.contacts[k].curvature);
+      EXPECT_NEAR(y[m.offset + i], r_eff / rr * (1 - sl.stress[k] * sl.stress[k] / (1500.0 * 1500.0)), 1e-12);
+    }
+  }
+  LcrSizingSpec peak = s;
+  peak.active.force[0] = {{0.2, 2, 0.1}};
+  const auto pp = objectives::MakeLcrSizingProblem(peak);
+  std::vector<double> yp(pp.evaluator->num_outputs());
+  pp.evaluator->Eval(LcrIIVariables(), yp);
+  double scan = 0;
+  for (int i = 0; i <= 20000; ++i)
+    scan = std::max(scan, lcr::AnalyzeAngle(r, testing::Steel(), {80000, 0, 0}, 0.1 + 0.2 * i / 20000).input.force[2]);
+  EXPECT_NEAR(yp[pp.evaluator->block("input_roller_force_N").offset], scan, 1e-6 * scan);
+}
+
+// The one cycle aggregate: a +inf sample (undercut contact) gives +inf with a zero derivative,
+// never NaN; finite samples stay within [max, max + scale ln(N)/k].
+TEST(LcrAggregates, ScaledSoftMaxIsSafeAtInfinityAndBounded) {
+  using J = ceres::Jet<double, 2>;
+  std::vector<J> x = {J(900.0, 0), J(1200.0, 1), J(kInf)};
+  const J inf = lcr::ScaledSoftMax(x, 1000.0, 200.0);
+  EXPECT_EQ(inf.a, kInf);
+  EXPECT_EQ(inf.v[0], 0.0);
+  EXPECT_EQ(inf.v[1], 0.0);
+  x.pop_back();
+  const J soft = lcr::ScaledSoftMax(x, 1000.0, 200.0);
+  EXPECT_GE(soft.a, 1200.0);
+  EXPECT_LE(soft.a, 1200.0 + 1000.0 * std::log(2.0) / 200.0);
+  EXPECT_NEAR(soft.v[0] + soft.v[1], 1.0, 1e-12);  // weights of a soft max sum to one
 }
 
 // The soft aggregate bounds the sampled maximum from above by at most F_ref ln(N)/k.

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <span>
 
+#include "model/common/roots.h"
 #include "objectives/lcr_sizing.h"
 #include "objectives/problem.h"
+#include "tests/reference_designs.h"
 
 namespace camopt::testing {
 
@@ -65,28 +67,10 @@ inline std::pair<double, double> RosenbrockOnDiskOptimum() {
     const double t = 2 * kPi * i / 20000;
     if (f(t) < best) best = f(t), best_t = t;
   }
-  double a = best_t - 2 * kPi / 20000, b = best_t + 2 * kPi / 20000;
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 200; ++i) {
-    const double c = b - g * (b - a), d = a + g * (b - a);
-    if (f(c) < f(d))
-      b = d;
-    else
-      a = c;
-  }
-  return {0.5 * (a + b), f(0.5 * (a + b))};
-}
-
-/// The LCR sizing problem of the paper's LCR II combination (12/13 lobes/rollers on the input
-/// cam, 14/15 on the output cam, ratio −90) at 80 N·m under the limits of the −90 study.
-inline objectives::LcrSizingSpec LcrIISizingSpec(
-    objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate) {
-  objectives::LcrSizingSpec s;
-  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
-  s.output_torque_Nmm = 80000;
-  s.limits = {1500, 1050, 0.5, 1.0};
-  s.form = form;
-  return s;
+  const GoldenSectionBracket b = GoldenSectionMaximize([&](double t) { return -f(t); },
+                                                       best_t - 2 * kPi / 20000, best_t + 2 * kPi / 20000, 200);
+  const double t = 0.5 * (b.lo + b.hi);
+  return {t, f(t)};
 }
 
 }  // namespace camopt::testing

@@ -1,12 +1,13 @@
 // The papers' reference designs, shared by every suite and the benchmarks: LCR I, II, III of
 // Table 2; the disc-cam example of Rzine et al. and an oscillating-follower disc cam; the cycloid
-// paper's NNM drive.
+// paper's NNM drive; the LCR II sizing duty of the −90 study.
 #pragma once
 
 #include "model/cycloid/tooth_profile.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/lcr/reducer.h"
 #include "model/motion/motion_program.h"
+#include "objectives/lcr_sizing.h"
 
 namespace camopt::testing {
 
@@ -27,6 +28,20 @@ inline lcr::Reducer<double> LcrII() { return MakeLcr(2, 12, 13, 37, 14, 15, 42, 
 inline lcr::Reducer<double> LcrIII() { return MakeLcr(4, 4, 5, 36, 5, 6, 41, 18, 16, 14); }
 
 inline lcr::Material Steel() { return {206000.0, 0.3}; }
+
+/// The LCR sizing problem of the −90 study, the paper's LCR II duty: 80 N·m output torque under
+/// 1500 MPa contact stress, 1050 N roller load, 0.5 mm undercut margin and 1 mm roller gap. The
+/// lobe/roller counts default to LCR II's (12/13 on the input cam, 14/15 on the output cam).
+inline objectives::LcrSizingSpec LcrIISizingSpec(
+    objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate, int lobes_a = 12,
+    int rollers_a = 13, int lobes_b = 14, int rollers_b = 15) {
+  objectives::LcrSizingSpec s;
+  s.lobes_a = lobes_a, s.rollers_a = rollers_a, s.lobes_b = lobes_b, s.rollers_b = rollers_b;
+  s.output_torque_Nmm = 80000;
+  s.limits = {1500, 1050, 0.5, 1.0};
+  s.form = form;
+  return s;
+}
 
 /// The cycloid load-distribution paper's example drive (Table 2: n2 = 15, n1 = 16, a = 90 mm,
 /// ρ = 7.2 mm, e = 4.5 mm, B = 17 mm) with its NNM profile modification (Table 3: Δa = −16 µm,

@@ -1,4 +1,4 @@
-// Planar geometry over the scalar T (double or ceres::Jet), in the notation of NOTES.md §1:
+// Planar geometry over the scalar T (double or ceres::Jet), in the notation of docs/papers.md §1:
 // u(a) = (cos a, sin a), J rotates by +90°, a × b = a_x b_y − a_y b_x.
 #pragma once
 

@@ -40,17 +40,33 @@ To ScalarCast(const From& x) {
   }
 }
 
-/// Select a or b on the value of a condition. Use only where the two branches meet continuously
-/// (or where the kink is intended and documented); the derivative is that of the chosen branch.
-template <typename T>
-T IfThenElse(bool condition, const T& a, const T& b) {
-  return condition ? a : b;
+/// The comparison IfThenElse makes between two scalars.
+enum class Compare { kLess, kLessEqual, kGreater, kGreaterEqual, kEqual, kNotEqual };
+
+/// then_value if `lhs op rhs` holds on the values (real parts) of lhs and rhs, else else_value.
+/// The comparison sits in the call, so every branch on a T is one visible place. The result
+/// carries the derivative of the chosen branch only: use it where the branches meet continuously
+/// (a min, a max, a piecewise law whose pieces join) or where the jump is physical and documented.
+/// @tparam L, R double or a Jet; @tparam T the result scalar.
+template <typename L, typename R, typename T>
+T IfThenElse(Compare op, const L& lhs, const R& rhs, const T& then_value, const T& else_value) {
+  const double l = Value(lhs), r = Value(rhs);
+  bool holds = false;
+  switch (op) {
+    case Compare::kLess: holds = l < r; break;
+    case Compare::kLessEqual: holds = l <= r; break;
+    case Compare::kGreater: holds = l > r; break;
+    case Compare::kGreaterEqual: holds = l >= r; break;
+    case Compare::kEqual: holds = l == r; break;
+    case Compare::kNotEqual: holds = l != r; break;
+  }
+  return holds ? then_value : else_value;
 }
 
 /// max(0, x) with its one-sided derivative (0 at x <= 0). Continuous, kink at 0.
 template <typename T>
 T PositivePart(const T& x) {
-  return Value(x) > 0.0 ? x : T(0.0);
+  return IfThenElse(Compare::kGreater, x, 0.0, x, T(0.0));
 }
 
 /// Smooth maximum of samples: log-sum-exp with sharpness k (units 1/[x]).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/common/roots.h"
 #include "model/contact/hertz.h"
 
 namespace camopt::cycloid {
@@ -65,13 +66,9 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
       m += arms[i] * models[i].Force(arms[i] * (delta_phi - backlash[i]));
     return m;
   };
-  double lo = 0, hi = 1e-5;
+  double hi = 1e-5;
   while (total(hi) < moment && hi < 1.0) hi *= 2.0;
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * std::max(1e-6, hi); ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (total(mid) < moment ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  return BisectIncreasing(total, moment, 0.0, hi, 200, 1e-15, 1e-6).mid();
 }
 
 // Distance from the contact's axial end to the face end [mm], the smaller of the two sides, with

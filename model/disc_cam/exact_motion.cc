@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 
+#include "model/common/roots.h"
+
 namespace camopt::disc_cam {
 
 namespace {
@@ -61,18 +63,8 @@ double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, do
     if (v > best) best = v, best_t = t;
   }
   if (!std::isfinite(best)) return kNaN;
-  double a = best_t - step, b = best_t + step;
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  double f1 = touch(x1), f2 = touch(x2);
-  for (int it = 0; it < 40 && b - a > 1e-11; ++it) {
-    if (f1 > f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = touch(x1);
-    } else {
-      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = touch(x2);
-    }
-  }
-  return std::max({best, f1, f2});
+  const GoldenSectionBracket b = GoldenSectionMaximize(touch, best_t - step, best_t + step, 40, 1e-11);
+  return std::max({best, b.f1, b.f2});
 }
 
 std::vector<MonteCarloScale> MonteCarloLinearisation(const DiscCam& cam,

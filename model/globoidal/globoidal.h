@@ -164,8 +164,8 @@ SurfacePoint<T> EvaluateSurface(const GloboidalCam<T>& cam, int j, const T& l, c
   const T s21 = (E * M - F * L) / det_i, s22 = (E * N - F * M) / det_i;
   const T H = (s11 + s22) / T(2.0), K = s11 * s22 - s12 * s21;
   const T disc = H * H - K;  // ≥ 0; zero only at planar points (then both κ vanish)
-  const T root = IfThenElse(Value(disc) > 0.0, sqrt(IfThenElse(Value(disc) > 0.0, disc, T(1.0))),
-                            T(0.0));
+  const T root = IfThenElse(Compare::kGreater, disc, 0.0,
+                            sqrt(IfThenElse(Compare::kGreater, disc, 0.0, disc, T(1.0))), T(0.0));
   p.kappa1 = H + root;
   p.kappa2 = H - root;
   const T R = cam.roller_radius;

@@ -1,4 +1,4 @@
-// LCR contact at one input angle (paper §3.2–3.4, written with the pitch points of NOTES §1).
+// LCR contact at one input angle (paper §3.2–3.4, written with the pitch points of docs/papers.md §1).
 //
 // Every common normal of a cam passes through its pitch point (Aronhold–Kennedy):
 //     I = e k u(θ),  k = n/(n − m).

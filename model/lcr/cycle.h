@@ -29,14 +29,14 @@ inline CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& materi
   s.theta_rad.reserve(steps);
   for (int i = 0; i < steps; ++i) {
     const double theta = 2 * kPi * i / steps;
-    const AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
+    AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
     s.theta_rad.push_back(theta);
     for (auto [series, side] : {std::pair{&s.input, &a.input}, std::pair{&s.output, &a.output}}) {
       series->actuating.push_back(side->actuating);
       series->max_force_N.push_back(side->max_force);
       series->max_stress_MPa.push_back(side->max_stress);
       series->turret_torque_Nmm.push_back(side->turret_torque);
-      series->roller_force_N.push_back(side->force);
+      series->roller_force_N.push_back(std::move(side->force));
     }
     s.tangential_force_N.push_back(a.tangential_force);
     s.radial_force_N.push_back(a.radial_force);
@@ -47,12 +47,36 @@ inline CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& materi
   return s;
 }
 
-/// Cycle aggregates over `steps` input angles, for optimizers: soft maxima (log-sum-exp) of the
-/// roller force and contact stress of each cam, soft minimum of the efficiency, and the mean input
-/// torque. Each soft max is taken on x/scale with dimensionless sharpness k, so it over-estimates
-/// the exact max by at most scale·ln(samples)/k (far less when one sample dominates). The scales
-/// are fixed numbers (not the current maximum), so the aggregate is one smooth function of the
-/// design and its AD gradient is exact.
+/// The one cycle aggregate of the LCR (used by AggregateCycle and by the sizing problem of
+/// objectives/lcr_sizing.h): a log-sum-exp soft maximum taken on x/scale with dimensionless
+/// sharpness k,
+///     ScaledSoftMax(x) = scale · SoftMax(x/scale, k),
+/// so max(x) <= ScaledSoftMax(x) <= max(x) + scale·ln(N)/k. The bias is largest when the N samples
+/// are all equal and far smaller when one sample dominates; its bound per sample count, in units of
+/// the scale, for the default k = 200:
+///
+///   | N samples          | 24     | 90     | 360    | 624 (24 × 26 rollers) | 3600   |
+///   | ln(N)/k            | 0.0159 | 0.0225 | 0.0294 | 0.0322                | 0.0409 |
+///
+/// (for a 1000 MPa scale, up to 16–41 MPa; the minimum-size search therefore uses the aggregate
+/// only to find the region of the optimum, see objectives/lcr_min_size.h). The scale is a fixed
+/// number (not the current maximum), so the aggregate is one smooth function of the design and its
+/// AD gradient is exact.
+/// A sample of +∞ (the Hertz stress of a contact on an undercut part of the pitch curve, see
+/// forces.h) makes the aggregate +∞ with a zero derivative, never NaN.
+/// @tparam T double or ceres::Jet. @pre x not empty, scale > 0, sharpness > 0.
+template <typename T>
+T ScaledSoftMax(const std::vector<T>& x, double scale, double sharpness) {
+  for (const T& v : x)
+    if (Value(v) == kInf) return T(kInf);
+  std::vector<T> scaled(x.size());
+  for (size_t i = 0; i < x.size(); ++i) scaled[i] = x[i] / T(scale);
+  return T(scale) * SoftMax(scaled, sharpness);
+}
+
+/// Cycle aggregates over `steps` input angles, for optimizers: ScaledSoftMax of the roller force
+/// and contact stress of each cam, soft minimum of the efficiency (scale 1), and the mean input
+/// torque.
 struct AggregateOptions {
   double force_scale_N = 1000.0;
   double stress_scale_MPa = 1000.0;
@@ -62,16 +86,9 @@ struct AggregateOptions {
 template <typename T>
 struct CycleAggregates {
   T max_force_input{}, max_force_output{};    // [N]
-  T max_stress_input{}, max_stress_output{};  // [MPa]
+  T max_stress_input{}, max_stress_output{};  // [MPa]; +∞ when a loaded contact is undercut
   T min_efficiency{}, mean_input_torque{};    // fraction, [N·mm]
 };
-
-template <typename T>
-T ScaledSoftMax(const std::vector<T>& x, double scale, double sharpness) {
-  std::vector<T> scaled(x.size());
-  for (size_t i = 0; i < x.size(); ++i) scaled[i] = x[i] / T(scale);
-  return T(scale) * SoftMax(scaled, sharpness);
-}
 
 template <typename T>
 CycleAggregates<T> AggregateCycle(const Reducer<T>& r, const Material& material, const LoadCase& load,

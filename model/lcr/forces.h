@@ -1,13 +1,14 @@
 // LCR forces, torques, efficiency and Hertz stress at one input angle (paper §4, eqs. 20–33, in
-// the consistent form of NOTES §1).
+// the consistent form of docs/papers.md §1).
 //
 //   F_k = C |a_k| on loaded rollers (sign(a_k) = LoadedArmSign), 0 elsewhere   (paper eqs. 20–21)
 //   output turret:  T_o = C_B Σ a_Bj²                                           (eq. 25)
 //   cam about O_c (arms (m/n) a_k): C_A (m_A/n_A) Σ a_Ai² = C_B (m_B/n_B) Σ a_Bj²
 //   fixed turret:   T_A = C_A Σ a_Ai² = T_o m_B n_A /(n_B m_A)                  (eq. 24)
 //   eccentric load G = Σ F_k d_k + W (weight along −y); F_t = −G·t, F_r = G·u(θ), t = J u(θ)
-//   input torque    T_in = (F_t + μ |F_r|) e, efficiency η = T_o /(T_in |r_i|)   (eqs. 32–33)
-//   Hertz line contact p = sqrt(F E* /(π L R')), R' = r_r (1 − r_r κ)           (NOTES §1)
+//   input torque    T_in = (F_t + μ |F_r|) e, efficiency η = T_o /(T_in |r_i|)   (eqs. 32–33,
+//                   written once in friction.h)
+//   Hertz line contact p = sqrt(F E* /(π L R')), R' = r_r (1 − r_r κ)           (docs/papers.md §1)
 // Without friction e F_t = T_o/|r_i| exactly (power balance), which the tests check.
 #pragma once
 
@@ -19,6 +20,7 @@
 
 #include "model/contact/hertz.h"
 #include "model/lcr/contact.h"
+#include "model/lcr/friction.h"
 
 namespace camopt::lcr {
 
@@ -105,7 +107,6 @@ void FillStresses(SideLoads<T>& side, const CamSide<T>& cam, double e_star) {
 template <typename T>
 AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const LoadCase& load,
                            const T& theta, const Stages& stages = {}) {
-  using std::abs;
   AngleLoads<T> out;
   out.theta = theta;
   out.input.contacts = RollerContacts(r, Side::kInput, theta);
@@ -146,17 +147,20 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
     const Vec2<T> u = U(theta);
     out.tangential_force = -g.dot(Perp(u));
     out.radial_force = g.dot(u);
-    out.input_torque = (out.tangential_force + T(load.friction_coefficient) * abs(out.radial_force)) *
-                       r.eccentricity;
+    // |F_r| in the friction law (ceres' abs: sign(F_r)·dF_r, no branch) has a corner where the
+    // radial load reverses. Harmless for gradients: it is the Coulomb law's own corner (friction
+    // follows the load's direction), the value is continuous, and an exact zero of F_r at a sampled
+    // angle is met on a set of designs of measure zero, where either side is a valid subgradient.
+    const T mu(load.friction_coefficient);
+    out.input_torque = InputTorque(out.tangential_force, out.radial_force, mu, r.eccentricity);
     const double ratio = std::abs(SpeedReductionRatio(r));
     if (!unloaded) {
-      out.efficiency = T(load.output_torque_Nmm) / (out.input_torque * T(ratio));
+      out.efficiency = Efficiency(T(load.output_torque_Nmm), out.input_torque, ratio);
     } else if (load.cam_weight_N > 0) {
       out.efficiency = T(0.0);
     } else {
-      const T unit_torque = (-per_torque.dot(Perp(u)) +
-                             T(load.friction_coefficient) * abs(per_torque.dot(u))) * r.eccentricity;
-      out.efficiency = T(1.0) / (unit_torque * T(ratio));
+      const T unit_torque = InputTorque(T(-per_torque.dot(Perp(u))), T(per_torque.dot(u)), mu, r.eccentricity);
+      out.efficiency = Efficiency(T(1.0), unit_torque, ratio);
     }
   }
   return out;

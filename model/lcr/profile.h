@@ -1,6 +1,6 @@
 // LCR cam profiles (paper eqs. 4–9 and the tool path P_t), curvature and undercut.
 //
-// In the cam frame (NOTES §1) the roller-centre trajectory of either cam is
+// In the cam frame (docs/papers.md §1) the roller-centre trajectory of either cam is
 //     X(ψ) = r_d u(ψ) − e u(kψ),   k = n/(n − m),   ψ ∈ [0, 2π),
 // (input cam: ψ = (n_A − m_A)θ/m_A; output cam: ψ = n_A (n_B − m_B) θ/(m_A n_B)), so both cams of the
 // conjugate cam are drawn in one frame with roller 1 at angle 0 at θ = 0. It is the paper's
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "model/common/geometry.h"
+#include "model/common/roots.h"
 #include "model/lcr/reducer.h"
 
 namespace camopt::lcr {
@@ -77,17 +78,9 @@ double ArgMaxCurvature(const CamSide<T>& side, const T& eccentricity) {
     const double v = f(-1.0 + 2.0 * i / n);
     if (v > best_v) best_v = v, best = i;
   }
-  double lo = -1.0 + 2.0 * std::max(best - 1, 0) / n, hi = -1.0 + 2.0 * std::min(best + 1, n) / n;
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
-  for (int it = 0; it < 60; ++it) {
-    if (f1 < f2) {
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
-    } else {
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
-    }
-  }
-  const double c = 0.5 * (lo + hi);
+  const GoldenSectionBracket b = GoldenSectionMaximize(
+      f, -1.0 + 2.0 * std::max(best - 1, 0) / n, -1.0 + 2.0 * std::min(best + 1, n) / n, 60);
+  const double c = 0.5 * (b.lo + b.hi);
   // The ends of the interval are candidates too (the maximum is often at c = −1).
   double arg = c, val = f(c);
   for (double end : {-1.0, 1.0})
@@ -106,6 +99,20 @@ T MaxPitchCurvature(const CamSide<T>& side, const T& eccentricity) {
 template <typename T>
 T MinConvexPitchRadius(const CamSide<T>& side, const T& eccentricity) {
   return T(1.0) / MaxPitchCurvature(side, eccentricity);
+}
+
+/// Smallest convex radius of the curve offset by `offset` into the cam from the pitch curve,
+/// 1/κ_max − offset [mm]: the cam profile for offset = r_r, the cutter-centre path for
+/// offset = r_r − r_t.
+template <typename T>
+T MinConvexOffsetRadius(const CamSide<T>& side, const T& eccentricity, const T& offset) {
+  return MinConvexPitchRadius(side, eccentricity) - offset;
+}
+
+/// Distance of the pitch point from the input axis, e·n/(n − m) [mm].
+template <typename T>
+T PitchPointRadius(const CamSide<T>& side, const T& eccentricity) {
+  return eccentricity * T(side.pitch_factor());
 }
 
 /// Undercut margin 1/κ_max − r_r [mm]: negative means the roller (and any cutter with d_t ≤ d_r,

@@ -1,5 +1,5 @@
 // The lobe cam reducer (LCR) design, templated over the scalar, and its validity checks.
-// Paper: lobe-cam-reducer.txt (Machines 2022, 10, 955); notation of NOTES.md §1.
+// Paper and notation: docs/papers.md §1 (Machines 2022, 10, 955).
 // Units: mm, N, N·mm inside the model; MPa for moduli and stresses.
 #pragma once
 
@@ -26,8 +26,11 @@ struct CamSide {
   int difference() const { return rollers - lobes; }
   /// k = n/(n − m): the pitch point lies at e·k from the input axis.
   double pitch_factor() const { return double(rollers) / double(rollers - lobes); }
-  /// Line-contact length min(roller length, cam thickness).
-  T contact_length() const { return Value(roller_length) < Value(cam_thickness) ? roller_length : cam_thickness; }
+  /// Line-contact length min(roller length, cam thickness). Continuous; at equal sizes the
+  /// derivative is the cam thickness's (a one-sided derivative of the min, a true corner).
+  T contact_length() const {
+    return IfThenElse(Compare::kLess, roller_length, cam_thickness, roller_length, cam_thickness);
+  }
 
   template <typename U>
   CamSide<U> cast() const {
@@ -110,6 +113,9 @@ std::vector<DesignProblem> CheckDesign(const Reducer<T>& r) {
     if (Value(c.roller_radius) >= Value(c.turret_radius))
       problems.push_back({name + ".roller_diameter_mm", "roller radius must be below the turret radius"});
   }
+  if (problems.empty() && long(r.input.lobes) * r.output.rollers == long(r.output.lobes) * r.input.rollers)
+    problems.push_back({"output.lobes", "m_A·n_B = m_B·n_A = " + std::to_string(long(r.input.lobes) * r.output.rollers) +
+                                            ": the output turret stands still (infinite speed ratio)"});
   return problems;
 }
 
@@ -120,12 +126,14 @@ T RollerGap(const CamSide<T>& c) {
   return T(2.0) * c.turret_radius * T(std::sin(kPi / c.rollers)) - T(2.0) * c.roller_radius;
 }
 
-/// Outer diameter 2·max(r_d + r_r) over both cams [mm].
+/// Outer diameter 2·max(r_d + r_r) over both cams [mm]. Continuous; where both cams are equally
+/// large the derivative is the input cam's (one side of the max's corner): an optimizer that meets
+/// the corner sees a valid subgradient.
 template <typename T>
 T OuterDiameter(const Reducer<T>& r) {
   const T a = r.input.turret_radius + r.input.roller_radius;
   const T b = r.output.turret_radius + r.output.roller_radius;
-  return T(2.0) * (Value(a) >= Value(b) ? a : b);
+  return T(2.0) * IfThenElse(Compare::kGreaterEqual, a, b, a, b);
 }
 
 }  // namespace camopt::lcr

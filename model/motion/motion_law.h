@@ -67,7 +67,7 @@ Svaj<T> NormalizedLaw(MotionLaw law, const T& u) {
       const double uv = Value(u);
       if (uv <= 0.125 || uv >= 0.875) {
         const T w = T(4.0) * pi;
-        const T c = IfThenElse(uv <= 0.125, T(0.0), T(4.0));  // 4k: the middle piece's rise
+        const T c = IfThenElse(Compare::kLessEqual, uv, 0.125, T(0.0), T(4.0));  // 4k: the middle piece's rise
         return {k * (c + pi * u - sin(w * u) / T(4.0)), k * pi * (T(1.0) - cos(w * u)),
                 k * T(4.0) * pi * pi * sin(w * u), k * T(16.0) * pi * pi * pi * cos(w * u)};
       }

@@ -26,6 +26,7 @@
 
 #include <ceres/jet.h>
 
+#include "model/common/roots.h"
 #include "model/common/scalar.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/reducer.h"
@@ -156,17 +157,8 @@ struct TurretSpring {
       lo = hi;
       hi *= 2.0;
     }
-    double psi = hi;
-    for (int it = 0; it < 200; ++it) {
-      const double r = g(psi) - target;
-      (r > 0 ? hi : lo) = psi;
-      const double slope = s.Rigidity(sign * psi);
-      double next = slope > 0 ? psi - r / slope : 0.5 * (lo + hi);
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      const bool done = std::abs(next - psi) <= 1e-14 * psi || hi - lo <= 1e-15 * hi;
-      psi = next;
-      if (done) break;
-    }
+    const double psi = SafeguardedNewtonIncreasing(
+        g, [&](double x) { return s.Rigidity(sign * x); }, target, lo, hi, 200, 1e-14, 1e-15);
     const T psi0(sign * psi);
     return psi0 - (Torque(psi0) - torque) / Rigidity(psi0);
   }
@@ -215,7 +207,10 @@ ReducerDeflection<T> DeflectAtAngle(const lcr::Reducer<T>& r, const lcr::Materia
   d.psi_input = a.Rotation(T(-rho) * torque);
   d.output_rotation = d.psi_output - T(rho) * d.psi_input;
   // First contact in the sense of T: ψ_B = c/max(sign·a_B), ψ_A = −c/max(−sign·a_A).
-  const double sign = Value(torque) >= 0 ? 1.0 : -1.0;
+  // The sense of T picks which rollers lead: first_contact jumps at T = 0 across the dead band
+  // (the backlash is a real discontinuity, not smoothed). Away from T = 0 the sign is locally
+  // constant, so the derivatives are exact; HardMax takes the leading roller's (corner where two tie).
+  const double sign = IfThenElse(Compare::kGreaterEqual, torque, 0.0, 1.0, -1.0);
   std::vector<T> lead_a, lead_b;
   for (const T& x : a.arms) lead_a.push_back(T(-sign) * x);
   for (const T& x : b.arms) lead_b.push_back(T(sign) * x);

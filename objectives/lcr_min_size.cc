@@ -1,0 +1,400 @@
+#include "objectives/lcr_min_size.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "model/lcr/forces.h"
+#include "model/lcr/profile.h"
+
+namespace camopt::objectives {
+namespace {
+
+using optimizers::SolverResult;
+using optimizers::SolverStatus;
+
+// The solvers meet constraints to about their tolerance (1e-6 scaled), so they are given limits
+// tightened by more than that; the dense check holds the design to the study's own limits.
+constexpr double kLimitMargin = 1e-5;      // relative, on stress, load and efficiency limits
+constexpr double kLengthMargin_mm = 1e-4;  // on gap and undercut limits (0.1 µm)
+// Active-set selection: samples whose local maximum in angle lies within this fraction of the
+// limit (or of the current maximum when that is lower), the largest kActivePeaks per cam.
+constexpr double kNearFraction = 0.03;
+constexpr int kActivePeaks = 4;
+// A limit binds when the dense-check value is within this fraction of it (lengths: in mm).
+constexpr double kBindingFraction = 1e-3;
+// Relative move of a limit for its sensitivity (central difference).
+constexpr double kSensitivityStep = 5e-3;
+
+LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
+  LcrSizingSpec t = spec;
+  t.limits.contact_stress_MPa *= 1 - kLimitMargin;
+  t.limits.roller_load_N *= 1 - kLimitMargin;
+  t.limits.roller_gap_mm += kLengthMargin_mm;
+  t.limits.undercut_margin_mm += kLengthMargin_mm;
+  if (t.limits.min_efficiency > 0) t.limits.min_efficiency *= 1 + kLimitMargin;
+  return t;
+}
+
+// Circular distance of two input angles modulo a load period.
+double PhaseDistance(double a, double b, double period) {
+  const double d = std::fmod(std::abs(a - b), period);
+  return std::min(d, period - d);
+}
+
+// Takes the fresh peaks of `from` into `to`: a fresh peak replaces an old one within its window
+// (the same physical peak, re-centred), others are added. Returns whether a peak was added or
+// moved by more than 1% of the period.
+bool Merge(const LcrSizingSpec& spec, LcrActiveSet& to, const LcrActiveSet& from) {
+  bool changed = false;
+  for (int side = 0; side < 2; ++side) {
+    const double period = LcrLoadPeriod(spec, side == 0 ? lcr::Side::kInput : lcr::Side::kOutput);
+    for (auto list : {&LcrActiveSet::force, &LcrActiveSet::stress}) {
+      std::vector<LcrSample>& old = (to.*list)[side];
+      for (const LcrSample& fresh : (from.*list)[side]) {
+        auto same = std::find_if(old.begin(), old.end(), [&](const LcrSample& o) {
+          return PhaseDistance(o.theta_rad, fresh.theta_rad, period) < fresh.window_rad;
+        });
+        if (same == old.end()) {
+          old.push_back(fresh);
+          changed = true;
+        } else {
+          changed = changed || PhaseDistance(same->theta_rad, fresh.theta_rad, period) > 0.01 * period;
+          *same = fresh;
+        }
+      }
+    }
+  }
+  return changed;
+}
+
+struct Polished {
+  SolverResult result;
+  std::vector<double> x;
+  std::optional<LcrDenseCheck> check;
+  LcrActiveSet active;
+  int rounds = 0, values = 0, gradients = 0, iterations = 0;
+  bool converged = false;
+  std::string note;
+};
+
+std::optional<LcrDenseCheck> TryCheck(const LcrSizingSpec& exact, const std::vector<double>& x, int steps,
+                                      LcrActiveSet* near, std::string& note) {
+  try {
+    return DenseCheck(exact, LcrDesign(exact, x), steps, near);
+  } catch (const std::domain_error& e) {
+    note = std::string("degenerate geometry: ") + e.what();
+    return std::nullopt;
+  }
+}
+
+// Step 2 of the header comment from x (a smooth-phase optimum or an earlier polished one).
+Polished Polish(const LcrSizingSpec& exact, const LcrMinSizeOptions& o, std::vector<double> x,
+                LcrActiveSet active) {
+  Polished p;
+  LcrSizingSpec tight = Tightened(exact);
+  tight.form = LcrConstraintForm::kActiveSet;
+  LcrActiveSet near;
+  if (!TryCheck(exact, x, o.dense_steps, &near, p.note)) return p;
+  Merge(exact, active, near);
+  for (p.rounds = 1; p.rounds <= o.max_polish_rounds; ++p.rounds) {
+    tight.active = active;
+    optimizers::SolverOptions so = o.solver;
+    so.initial = x;
+    p.result = optimizers::Solve(MakeLcrSizingProblem(tight), so);
+    p.values += p.result.value_evaluations;
+    p.gradients += p.result.gradient_evaluations;
+    p.iterations += p.result.iterations;
+    p.active = active;
+    if (p.result.x.empty()) return p;
+    x = p.x = p.result.x;
+    p.check = TryCheck(exact, x, o.dense_steps, &near, p.note);
+    if (!p.check) return p;
+    if (p.result.ok() && p.check->ok()) {
+      p.converged = true;
+      return p;
+    }
+    bool changed = Merge(exact, active, near);
+    // The efficiency is a 48-angle mean in the problem against 3600 in the check: raise its limit
+    // by the deficit.
+    const double deficit = exact.limits.min_efficiency - p.check->mean_efficiency;
+    if (exact.limits.min_efficiency > 0 && deficit > 0) {
+      tight.limits.min_efficiency += 1.5 * deficit;
+      changed = true;
+    }
+    if (!changed) return p;
+  }
+  p.rounds = o.max_polish_rounds;
+  return p;
+}
+
+// Largest relative violation of a check (0 when it holds; +inf for design problems).
+double WorstRelativeViolation(const LcrDenseCheck& c) {
+  if (!c.design_problems.empty()) return kInf;
+  double worst = 0.0;
+  for (const LcrViolation& v : c.violations)
+    worst = std::max(worst, v.excess() / std::max(std::abs(v.limit_value), 1.0));
+  return worst;
+}
+
+}  // namespace
+
+double LcrViolation::excess() const {
+  const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N";
+  return upper ? value - limit_value : limit_value - value;
+}
+
+LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps,
+                         LcrActiveSet* near) {
+  LcrDenseCheck c;
+  c.outer_diameter_mm = lcr::OuterDiameter(r);
+  for (int k = 0; k < 2; ++k) {
+    const lcr::CamSide<double>& side = k == 0 ? r.input : r.output;
+    c.undercut_margin_mm[k] = lcr::UndercutMargin(side, r.eccentricity);
+    c.roller_gap_mm[k] = lcr::RollerGap(side);
+    c.pitch_clearance_mm[k] = side.turret_radius - r.eccentricity * side.pitch_factor();
+  }
+  const LcrLimits& lim = spec.limits;
+  const lcr::LoadCase load{spec.output_torque_Nmm, spec.friction_coefficient, 0.0};
+  const int n[2] = {r.input.rollers, r.output.rollers};
+  // Per (angle, roller) force and stress, for the choice of peaks.
+  std::array<std::vector<double>, 2> fq, sq;
+  if (near)
+    for (int k = 0; k < 2; ++k) fq[k].assign(size_t(steps) * n[k], 0.0), sq[k] = fq[k];
+  double eta = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, 2 * kPi * i / steps);
+    eta += a.efficiency;
+    for (int k = 0; k < 2; ++k) {
+      const lcr::SideLoads<double>& sl = k == 0 ? a.input : a.output;
+      c.max_stress_MPa[k] = std::max(c.max_stress_MPa[k], sl.max_stress);
+      c.max_force_N[k] = std::max(c.max_force_N[k], sl.max_force);
+      if (!near) continue;
+      std::copy(sl.force.begin(), sl.force.end(), fq[k].begin() + size_t(i) * n[k]);
+      std::copy(sl.stress.begin(), sl.stress.end(), sq[k].begin() + size_t(i) * n[k]);
+    }
+  }
+  c.mean_efficiency = eta / steps;
+
+  auto upper = [&](const char* key, double value, double limit) {
+    if (!(value <= limit)) c.violations.push_back({key, value, limit});
+  };
+  auto lower = [&](const char* key, double value, double limit) {
+    if (!(value >= limit)) c.violations.push_back({key, value, limit});
+  };
+  upper("contact_stress_MPa", std::max(c.max_stress_MPa[0], c.max_stress_MPa[1]), lim.contact_stress_MPa);
+  upper("roller_load_N", std::max(c.max_force_N[0], c.max_force_N[1]), lim.roller_load_N);
+  lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
+  lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
+  if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
+  for (const lcr::DesignProblem& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
+
+  if (near) {
+    // Per cam and quantity: the rollers' local maxima in angle within kNearFraction of the limit
+    // (or of the largest value, when that is lower; the largest alone without a limit), one per
+    // phase of the load period (equal phases are the same peak on another roller), at most
+    // kActivePeaks, each tracked over an eighth of the period either side.
+    for (int k = 0; k < 2; ++k) {
+      const double period = LcrLoadPeriod(spec, k == 0 ? lcr::Side::kInput : lcr::Side::kOutput);
+      for (int quantity = 0; quantity < 2; ++quantity) {
+        const std::vector<double>& v = quantity == 0 ? fq[k] : sq[k];
+        const double limit = quantity == 0 ? lim.roller_load_N : lim.contact_stress_MPa;
+        const double vmax = *std::max_element(v.begin(), v.end());
+        const double threshold = std::isfinite(limit) ? (1 - kNearFraction) * std::min(limit, vmax) : vmax;
+        auto at = [&](int i, int j) { return v[size_t((i + steps) % steps) * n[k] + j]; };
+        std::vector<std::pair<double, std::pair<int, int>>> peaks;
+        for (int i = 0; i < steps; ++i)
+          for (int j = 0; j < n[k]; ++j) {
+            const double q = at(i, j);
+            if (q > 0 && q >= threshold && q >= at(i - 1, j) && q >= at(i + 1, j)) peaks.push_back({q, {i, j}});
+          }
+        std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+        std::vector<LcrSample> chosen;
+        for (const auto& [q, ij] : peaks) {
+          const double theta = 2 * kPi * ij.first / steps;
+          const bool seen = std::any_of(chosen.begin(), chosen.end(), [&](const LcrSample& o) {
+            return PhaseDistance(o.theta_rad, theta, period) < period / 8;
+          });
+          if (!seen) chosen.push_back({theta, ij.second, period / 8});
+          if (int(chosen.size()) == kActivePeaks) break;
+        }
+        (quantity == 0 ? near->force : near->stress)[k] = std::move(chosen);
+      }
+    }
+  }
+  return c;
+}
+
+LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOptions& options) {
+  LcrMinSizeOutcome out;
+  LcrSizingSpec smooth = Tightened(spec);
+  smooth.form = options.smooth_form;
+  const Problem problem = MakeLcrSizingProblem(smooth);
+  int values = 0, gradients = 0, iterations = 0;
+  struct Trial {
+    SolverResult result;
+    std::optional<Polished> polished;
+  };
+  std::vector<Trial> trials;
+  for (const std::vector<double>& x0 : LcrStartingPoints(smooth, options.starts)) {
+    optimizers::SolverOptions so = options.solver;
+    so.initial = x0;
+    Trial t{optimizers::Solve(problem, so), std::nullopt};
+    values += t.result.value_evaluations;
+    gradients += t.result.gradient_evaluations;
+    iterations += t.result.iterations;
+    LcrStartOutcome s;
+    s.status = t.result.status;
+    // An infeasible end of the smooth phase is the closest point the solver found; polishing it
+    // toward an optimum has no sense.
+    if (!options.polish && !t.result.x.empty()) {
+      Polished p;  // the smooth optimum as it is, held to the dense check
+      p.result = t.result;
+      p.x = t.result.x;
+      p.check = TryCheck(spec, p.x, options.dense_steps, nullptr, p.note);
+      p.converged = p.result.ok() && p.check && p.check->ok();
+      t.polished = p;
+      s.converged = p.converged;
+      if (s.converged) s.outer_diameter_mm = p.check->outer_diameter_mm;
+    } else if (!t.result.x.empty() && t.result.status != SolverStatus::kInfeasible) {
+      // A start whose smooth optimum is one an earlier start already reached (to 1e-6 relative)
+      // shares that start's polish.
+      const Trial* same = nullptr;
+      for (const Trial& u : trials) {
+        if (!u.polished || u.result.x.size() != t.result.x.size()) continue;
+        bool close = true;
+        for (size_t i = 0; i < u.result.x.size(); ++i)
+          close = close && std::abs(u.result.x[i] - t.result.x[i]) <= 1e-6 * std::max(1.0, std::abs(u.result.x[i]));
+        if (close) same = &u;
+      }
+      if (same) {
+        t.polished = same->polished;
+      } else {
+        t.polished = Polish(spec, options, t.result.x, {});
+        values += t.polished->values;
+        gradients += t.polished->gradients;
+        iterations += t.polished->iterations;
+      }
+      s.status = t.polished->result.status;
+      s.converged = t.polished->converged;
+      if (s.converged) s.outer_diameter_mm = t.polished->check->outer_diameter_mm;
+    }
+    out.starts.push_back(s);
+    trials.push_back(std::move(t));
+  }
+
+  // The chosen start: the smallest converged design; else the polished or smooth end point with the
+  // smallest violation of the study's limits (the closest point); else the first.
+  int best = -1;
+  for (size_t i = 0; i < trials.size(); ++i)
+    if (out.starts[i].converged && (best < 0 || out.starts[i].outer_diameter_mm < out.starts[best].outer_diameter_mm))
+      best = int(i);
+  if (best >= 0) {
+    const Polished& p = *trials[best].polished;
+    out.result = p.result;
+    out.x = p.x;
+    out.check = p.check;
+    out.converged = true;
+    out.polish_rounds = p.rounds;
+    out.active = p.active;
+  } else {
+    double least = kInf;
+    for (size_t i = 0; i < trials.size(); ++i) {
+      const Trial& t = trials[i];
+      SolverResult r = t.polished && !t.polished->x.empty() ? t.polished->result : t.result;
+      if (r.x.empty()) continue;
+      std::string note;
+      std::optional<LcrDenseCheck> c = TryCheck(spec, r.x, options.dense_steps, nullptr, note);
+      const double worst = c ? WorstRelativeViolation(*c) : kInf;
+      if (best < 0 || worst < least) {
+        best = int(i), least = worst;
+        out.result = r;
+        out.x = r.x;
+        out.check = c;
+        out.note = note;
+        out.polish_rounds = t.polished ? t.polished->rounds : 0;
+      }
+    }
+    if (best < 0) out.result = trials.front().result;
+  }
+  if (!out.x.empty()) out.design = LcrDesign(spec, out.x);
+  out.result.value_evaluations = values;
+  out.result.gradient_evaluations = gradients;
+  out.result.iterations = iterations;
+  return out;
+}
+
+std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                               const LcrMinSizeOutcome& outcome) {
+  std::map<std::string, double> out;
+  if (!outcome.converged || !outcome.check) return out;
+  const LcrDenseCheck& c = *outcome.check;
+  const LcrLimits& l = spec.limits;
+  struct Entry {
+    const char* key;
+    double LcrLimits::*field;
+    bool binds;
+  };
+  const double stress = std::max(c.max_stress_MPa[0], c.max_stress_MPa[1]);
+  const double force = std::max(c.max_force_N[0], c.max_force_N[1]);
+  const double undercut = std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]);
+  const double gap = std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]);
+  const Entry entries[] = {
+      {"contact_stress_MPa", &LcrLimits::contact_stress_MPa,
+       std::isfinite(l.contact_stress_MPa) && stress >= l.contact_stress_MPa * (1 - kBindingFraction)},
+      {"roller_load_N", &LcrLimits::roller_load_N,
+       std::isfinite(l.roller_load_N) && force >= l.roller_load_N * (1 - kBindingFraction)},
+      {"undercut_margin_mm", &LcrLimits::undercut_margin_mm, undercut <= l.undercut_margin_mm + kBindingFraction},
+      {"roller_gap_mm", &LcrLimits::roller_gap_mm, gap <= l.roller_gap_mm + kBindingFraction},
+      {"min_efficiency", &LcrLimits::min_efficiency,
+       l.min_efficiency > 0 && c.mean_efficiency <= l.min_efficiency * (1 + kBindingFraction)},
+  };
+  for (const Entry& e : entries) {
+    if (!e.binds) continue;
+    const double base = l.*(e.field);
+    const double h = std::max(std::abs(base), 1.0) * kSensitivityStep;
+    double od[2] = {kInf, kInf}, at[2] = {base - h, base + h};
+    for (int s = 0; s < 2; ++s) {
+      if (at[s] <= 0 && e.field != &LcrLimits::undercut_margin_mm) continue;
+      LcrSizingSpec moved = spec;
+      moved.limits.*(e.field) = at[s];
+      const Polished p = Polish(moved, options, outcome.x, outcome.active);
+      if (p.converged) od[s] = p.check->outer_diameter_mm;
+    }
+    if (std::isfinite(od[0]) && std::isfinite(od[1]))
+      out[e.key] = (od[1] - od[0]) / (at[1] - at[0]);
+    else if (std::isfinite(od[1]))
+      out[e.key] = (od[1] - c.outer_diameter_mm) / h;
+    else if (std::isfinite(od[0]))
+      out[e.key] = (c.outer_diameter_mm - od[0]) / h;
+  }
+  return out;
+}
+
+std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                 const std::string& key) {
+  double LcrLimits::*field = nullptr;
+  if (key == "contact_stress_MPa") field = &LcrLimits::contact_stress_MPa;
+  if (key == "roller_load_N") field = &LcrLimits::roller_load_N;
+  if (!field || !std::isfinite(spec.limits.*field)) return std::nullopt;
+  LcrMinSizeOptions o = options;
+  o.starts = 1;
+  o.solver.max_evaluations = std::min(o.solver.max_evaluations, 300);
+  auto fits = [&](double limit) {
+    LcrSizingSpec moved = spec;
+    moved.limits.*field = limit;
+    return SolveLcrMinSize(moved, o).converged;
+  };
+  double lo = spec.limits.*field, hi = 2 * lo;
+  for (int i = 0; !fits(hi); ++i) {
+    if (i == 5) return std::nullopt;
+    lo = hi, hi *= 2;
+  }
+  while (hi - lo > 0.01 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (fits(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+}  // namespace camopt::objectives

@@ -1,0 +1,121 @@
+// The minimum-size search of one LCR lobe/roller combination, to the optimum of the exact
+// constraints: the cycle maxima of contact stress and roller force as the dense check evaluates
+// them (lcr_analysis' grid of 3600 input angles over the full cycle), the exact undercut margin
+// (lcr::UndercutMargin) and roller gap.
+//
+// 1. Smooth phase: the aggregate problem (one soft-max row per cam and quantity, kAggregate of
+//    lcr_sizing.h) from several starting points. Its soft max over-estimates the cycle maximum by
+//    up to scale·ln(N)/k, so its optimum is feasible but short of the limit (1484 of 1500 MPa on
+//    the ratio −90 example: a 1.4% larger reducer).
+// 2. Polish from each smooth optimum: the same problem with one row per peak that comes near a
+//    limit (kActiveSet with tracked peaks): the dense check finds, per cam and quantity (roller
+//    force, contact stress), the rollers' local maxima in angle within 3% of the limit (or of the
+//    current maximum), one per phase of the cam's load period (a peak repeats every period on the
+//    next roller), at most 4; each becomes a row "largest force (smallest Hertz margin) of that
+//    roller within ±1/8 period", its maximiser found on values, so the row follows the peak as the
+//    design moves and is never below the dense grid's value. After each solve the dense check runs
+//    again; peaks that came near the limit join the set (or re-centre the one they belong to) and
+//    the problem is solved again from the last point, until the dense check holds (at most 8
+//    rounds). Samples far from the limit carry no row: they are inactive at the optimum of the
+//    full dense problem, so a KKT point of the small problem is one of the dense problem (Drake's
+//    MinimumValueConstraint makes the same argument with its influence distance).
+// 3. A combination is `converged` only when the optimizer's own test passes on the last polish
+//    and the dense check holds at its point.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/lcr/reducer.h"
+#include "objectives/lcr_sizing.h"
+#include "optimizers/solver.h"
+
+namespace camopt::objectives {
+
+/// A limit exceeded at a design, named by the study's limit key.
+struct LcrViolation {
+  std::string limit;      ///< "contact_stress_MPa", "roller_load_N", "undercut_margin_mm",
+                          ///< "roller_gap_mm", "min_efficiency"
+  double value = 0.0;     ///< the design's worst value of that quantity (both cams)
+  double limit_value = 0.0;
+  /// By how much, in the limit's unit, positive: value − limit for upper limits, limit − value
+  /// for lower ones.
+  double excess() const;
+};
+
+/// A design's numbers on the dense grid (as lcr_analysis computes them) and the limits it breaks.
+struct LcrDenseCheck {
+  double outer_diameter_mm = 0.0;
+  std::array<double, 2> max_stress_MPa{}, max_force_N{}, undercut_margin_mm{}, roller_gap_mm{},
+      pitch_clearance_mm{};  ///< [0] input cam, [1] output cam
+  double mean_efficiency = 0.0;
+  std::vector<LcrViolation> violations;
+  std::vector<std::string> design_problems;  ///< lcr::CheckDesign, "field: message"
+  bool ok() const { return violations.empty() && design_problems.empty(); }
+};
+
+/// The dense check of design r against spec.limits (the study's own limits) over `steps` input
+/// angles of the full cycle with the spec's torque, friction and material. When near is given it
+/// receives the samples that come near a limit (step 2 of the header comment), sorted by angle.
+/// @throws std::domain_error for a degenerate design (no roller of a turret carries load).
+LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps = 3600,
+                         LcrActiveSet* near = nullptr);
+
+struct LcrMinSizeOptions {
+  optimizers::SolverOptions solver;  ///< backend, tolerances, limits of each local solve
+  int starts = 3;                    ///< smooth-phase starting points (LcrStartingPoints)
+  int dense_steps = 3600;            ///< the dense check's grid over the full cycle
+  int max_polish_rounds = 8;
+  /// Form of the smooth phase (kAggregate or kSamples: one row per uniform sample).
+  LcrConstraintForm smooth_form = LcrConstraintForm::kAggregate;
+  /// false: stop after the smooth phase (for comparisons; its optimum is then `converged` only
+  /// when the dense check holds there).
+  bool polish = true;
+};
+
+/// Result of one start (smooth phase and its polish).
+struct LcrStartOutcome {
+  optimizers::SolverStatus status = optimizers::SolverStatus::kFailed;
+  bool converged = false;            ///< optimizer's test and dense check both hold
+  double outer_diameter_mm = 0.0;    ///< meaningful when converged
+};
+
+/// Result of one combination.
+struct LcrMinSizeOutcome {
+  /// The last solve of the chosen start, evaluation counts summed over every solve of every start.
+  optimizers::SolverResult result;
+  std::vector<double> x;                        ///< its variables (empty when every start failed)
+  std::optional<lcr::Reducer<double>> design;   ///< the optimum, or the closest point when infeasible
+  std::optional<LcrDenseCheck> check;           ///< dense check of design against the study's limits
+  bool converged = false;
+  int polish_rounds = 0;                        ///< of the chosen start
+  std::vector<LcrStartOutcome> starts;          ///< every start, in order
+  LcrActiveSet active;                          ///< the chosen start's last active set
+  std::string note;                             ///< why a design has no check, when it has none
+};
+
+/// Solves one combination (spec's lobe/roller counts, roller options and the study's own limits;
+/// spec.form is ignored) to the optimum of the exact constraints.
+LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOptions& options);
+
+/// d(outer diameter)/d(limit) [mm per unit of the limit] at a converged outcome, for every limit
+/// of spec that binds there (dense-check value within 0.1% of the limit; stress, load, undercut
+/// margin, roller gap, efficiency), named by the limit key. Computed by re-solving the polish from
+/// the optimum with the limit moved by ±0.5% (central difference; one-sided where the other side
+/// fails), for ±0.5% of max(|limit|, 1) in the limit's unit. Negative where raising the limit
+/// shrinks the reducer (stress, load: −0.046 mm/MPa on the ratio −90 example), positive where it
+/// grows it (undercut margin, gap, efficiency). Local: the lobe combination is kept.
+std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                               const LcrMinSizeOutcome& outcome);
+
+/// The smallest value of an upper limit ("contact_stress_MPa" or "roller_load_N") at which spec
+/// has a converged design, the other limits held: doubled from the spec's value until a design fits
+/// (at most 6 times), then bisected to 1%. Empty when none fits within 64 times the limit. For a
+/// study where nothing fits: the value of the blocking limit that would admit this combination.
+std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                 const std::string& key);
+
+}  // namespace camopt::objectives

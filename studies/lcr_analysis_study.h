@@ -1,0 +1,80 @@
+// Study kind "lcr_analysis": one lobe cam reducer over an input revolution. Parse reads the study
+// file into a Study, Run calls the LCR stages of model/lcr/ that the study asks for, ToJson and
+// Write turn the typed Result into result.json, series.csv, SVG plots and DXF profiles.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/common/material.h"
+#include "model/lcr/cycle.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::studies::lcr_analysis {
+
+/// The stages a study asks for ("analysis.evaluate"); stress and efficiency imply forces.
+struct Evaluate {
+  bool profile = true, undercut = true, forces = true, stress = true, efficiency = true;
+};
+
+/// What the study file says, parsed and validated, in model units (mm, N, N·mm, MPa).
+struct Study {
+  std::string name;
+  lcr::Reducer<double> reducer;
+  Material material;
+  lcr::LoadCase load;
+  int angle_steps = 3600;     ///< input angles over one revolution
+  int profile_points = 3600;  ///< points per drawn curve
+  Evaluate evaluate;
+  double contact_stress_limit_MPa = kInf;  ///< kInf: no limit given
+  double roller_load_limit_N = kInf;
+  double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
+};
+
+/// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
+struct CamResult {
+  int lobes = 0, rollers = 0;
+  double roller_gap_mm = 0, pitch_point_radius_mm = 0;
+  // Undercut stage (evaluate.undercut or evaluate.stress).
+  double min_pitch_curve_radius_mm = 0;
+  double undercut_margin_mm = 0;  ///< smallest convex cam radius; < 0 is an undercut
+  double cutter_diameter_mm = 0, min_cutter_path_radius_mm = 0;
+  // Forces stage, extremes over the revolution.
+  int actuating_rollers_max = 0, actuating_rollers_min = 0;
+  double max_roller_force_N = 0;
+  double max_contact_stress_MPa = 0;  ///< +inf when a loaded roller sits on an undercut point
+  double contact_length_mm = 0;
+};
+
+/// Every number the kind reports; the series are those of the forces stage.
+struct Result {
+  double speed_ratio = 0, cam_speed_ratio = 0, output_speed_ratio = 0, outer_diameter_mm = 0;
+  bool undercut_evaluated = false, any_undercut = false;
+  CamResult input_cam, output_cam;
+  lcr::CycleSeries series;  ///< empty unless forces were evaluated
+  double fixed_turret_torque_Nm = 0;  ///< mean over the revolution
+  // Efficiency stage.
+  double input_torque_mean_Nm = 0, input_torque_max_Nm = 0, input_torque_min_Nm = 0;
+  double input_torque_ideal_Nm = 0;  ///< T_o/|r_i|, frictionless
+  double efficiency_mean = 0, efficiency_min = 0, efficiency_max = 0;
+  double eccentric_tangential_max_N = 0, eccentric_radial_max_abs_N = 0;
+  /// Loads at input angle 0 (loaded rollers of the assembly drawings), when forces and the
+  /// profile are evaluated.
+  std::optional<lcr::AngleLoads<double>> loads_at_zero;
+  std::vector<std::string> notes;
+};
+
+/// @throws StudyError (exit 2) naming the JSON path of bad input.
+Study Parse(const Node& root);
+/// Runs the stages asked. @throws StudyError for a design no roller can carry load on.
+Result Run(const Study& study, const RunContext& ctx);
+/// The content of result.json.
+nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json, series.csv and plots (forces), DXF/SVG drawings (profile).
+void Write(const Study& study, const Result& result, Outputs& out);
+
+}  // namespace camopt::studies::lcr_analysis

@@ -1,0 +1,225 @@
+// Study kind "lcr_friction_fit": fits friction parameters of the LCR to measured input torques
+// (e.g. Table 4 of the paper) by bounded least squares with Ceres, and reports the fitted values,
+// residuals and their uncertainty (ceres::Covariance).
+//
+// The friction model is model/lcr/friction.h (the paper's eq. 32 plus a no-load drag):
+//     T_in(T_o) = T_drag + T_o (t_ideal + μ t_friction),
+// with t_ideal, t_friction the mean F_t e and |F_r| e per unit output torque from the LCR pipeline.
+// Residuals are weighted by the measurements' standard deviations, so (J^T J)^-1 is the parameter
+// covariance when those deviations are the measurement errors.
+#include "studies/lcr_friction_fit_study.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/lcr/cycle.h"
+#include "model/lcr/kinematics.h"
+#include "objectives/problem.h"
+#include "studies/lcr_input.h"
+#include "studies/material_input.h"
+#include "studies/writers.h"
+
+namespace camopt::studies::lcr_friction_fit {
+namespace {
+
+Parameter ParseParameter(const Node& parent, const std::string& key, Parameter fallback) {
+  if (!parent.Has(key)) return fallback;
+  const Node p = parent[key];
+  p.CheckKnownFields({"initial", "bounds"});
+  Parameter out = fallback;
+  if (p.Has("bounds")) {
+    const auto [lo, hi] = p["bounds"].Range();
+    out.lower = lo, out.upper = hi;
+  }
+  out.initial = p.NumberOr("initial", std::clamp(fallback.initial, out.lower, out.upper));
+  if (out.initial < out.lower || out.initial > out.upper)
+    p["initial"].Fail("a number within the bounds [" + std::to_string(out.lower) + ", " +
+                      std::to_string(out.upper) + "]");
+  return out;
+}
+
+bool AtBound(double x, const Parameter& p) { return x <= p.lower + 1e-12 || x >= p.upper - 1e-12; }
+
+}  // namespace
+
+Study Parse(const Node& root) {
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "measurements", "parameters", "analysis"});
+  Study st;
+  st.name = root.StringOr("name", "");
+  st.reducer = ParseReducer(root["reducer"]);
+  if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
+  st.material = root.Has("material") ? ParseMaterial(root["material"]) : Material{};
+  const Node meas = root["measurements"];
+  for (const Node& m : meas.Elements()) {
+    m.CheckKnownFields({"output_torque_Nm", "input_torque_Nm", "input_torque_sd_Nm"});
+    st.measurements.push_back({m["output_torque_Nm"].Positive(), m["input_torque_Nm"].Positive(),
+                               m["input_torque_sd_Nm"].Positive()});
+  }
+  if (st.measurements.size() < 3) meas.Fail("at least 3 measurements (2 parameters are fitted)");
+  if (root.Has("analysis")) root["analysis"].CheckKnownFields({"angle_steps"});
+  st.angle_steps = root.Has("analysis") ? root["analysis"].IntegerOr("angle_steps", 12, 3600) : 3600;
+  if (root.Has("parameters")) {
+    root["parameters"].CheckKnownFields({"friction_coefficient", "drag_torque_Nm"});
+    st.friction_coefficient = ParseParameter(root["parameters"], "friction_coefficient", st.friction_coefficient);
+    st.drag_torque_Nm = ParseParameter(root["parameters"], "drag_torque_Nm", st.drag_torque_Nm);
+  }
+  return st;
+}
+
+Result Run(const Study& st, const RunContext& ctx) {
+  const lcr::Reducer<double>& r = st.reducer;
+  const std::vector<Measurement>& data = st.measurements;
+  // Pipeline: loads on the eccentric per unit output torque (1 N·mm), no friction.
+  lcr::CycleSeries series;
+  try {
+    Progress progress("lcr_friction_fit", ctx.quiet);
+    series = lcr::AnalyzeCycle(r, st.material, {1.0, 0.0, 0.0}, st.angle_steps, {true, false, true},
+                               [&](double f) { progress.Update(f); });
+  } catch (const std::domain_error& e) {
+    throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
+  }
+  Result res;
+  res.per_output_torque =
+      lcr::MeanInputTorquePerOutputTorque(series.tangential_force_N, series.radial_force_N, r.eccentricity);
+  const lcr::CycleInputTorque unit = res.per_output_torque;
+  res.speed_ratio = lcr::SpeedReductionRatio(r);
+  const double ratio = std::abs(res.speed_ratio);
+
+  const Parameter& mu = st.friction_coefficient;
+  const Parameter& drag = st.drag_torque_Nm;
+  optimizers::LeastSquaresProblem p;
+  p.variables = {{"friction_coefficient", mu.lower, mu.upper, mu.initial, 0.1},
+                 {"drag_torque_Nm", drag.lower, drag.upper, drag.initial, 0.1}};
+  const int m = static_cast<int>(data.size());
+  p.evaluator = objectives::MakeEvaluator<2>(
+      2, {{"weighted_residuals", 0, m}}, [data, unit](auto x, auto residuals) {
+        using T = std::decay_t<decltype(x[0])>;
+        for (size_t i = 0; i < data.size(); ++i) {
+          const T model = lcr::MeanInputTorque(unit, T(data[i].output_torque_Nm), x[0], x[1]);
+          residuals[i] = (model - T(data[i].input_torque_Nm)) / T(data[i].sd_Nm);
+        }
+      });
+  p.residuals = "weighted_residuals";
+  res.fit = optimizers::SolveLeastSquares(p);
+  const optimizers::FitResult& fit = res.fit;
+  if (fit.x.empty())
+    throw std::runtime_error("friction fit failed: " + fit.message);
+  res.friction_coefficient_at_bound = AtBound(fit.x[0], mu);
+  res.drag_torque_at_bound = AtBound(fit.x[1], drag);
+  if (!fit.covariance.empty())
+    res.correlation = fit.covariance[1] / std::sqrt(fit.covariance[0] * fit.covariance[3]);
+  res.chi_square = 2 * fit.cost;
+  res.degrees_of_freedom = m - 2;
+  for (int i = 0; i < m; ++i) {
+    Row row;
+    row.fitted_input_torque_Nm = lcr::MeanInputTorque(unit, data[i].output_torque_Nm, fit.x[0], fit.x[1]);
+    row.paper_input_torque_Nm =
+        lcr::MeanInputTorque(unit, data[i].output_torque_Nm, lcr::kPaperFrictionCoefficient, 0.0);
+    if (!fit.covariance.empty()) {
+      // Standard deviation of the fitted torque: sqrt(gᵀ C g), g = ∂T_in/∂(μ, T_drag) by AD.
+      using J2 = ceres::Jet<double, 2>;
+      const J2 t_in = lcr::MeanInputTorque(unit, J2(data[i].output_torque_Nm), J2(fit.x[0], 0),
+                                           J2(fit.x[1], 1));
+      const double g0 = t_in.v[0], g1 = t_in.v[1];
+      const auto& c = fit.covariance;
+      row.fitted_input_torque_sd_Nm = std::sqrt(g0 * g0 * c[0] + 2 * g0 * g1 * c[1] + g1 * g1 * c[3]);
+    }
+    row.residual_Nm = row.fitted_input_torque_Nm - data[i].input_torque_Nm;
+    row.weighted_residual = fit.residuals[i];
+    row.fitted_efficiency = lcr::Efficiency(data[i].output_torque_Nm, row.fitted_input_torque_Nm, ratio);
+    row.measured_efficiency = lcr::Efficiency(data[i].output_torque_Nm, data[i].input_torque_Nm, ratio);
+    res.rows.push_back(row);
+  }
+  double tmax = 0;
+  for (const Measurement& d : data) tmax = std::max(tmax, d.output_torque_Nm);
+  tmax *= 1.1;
+  for (int i = 0; i <= 20; ++i) {
+    res.line_output_torque_Nm.push_back(tmax * i / 20);
+    res.line_input_torque_Nm.push_back(
+        lcr::MeanInputTorque(unit, res.line_output_torque_Nm.back(), fit.x[0], fit.x[1]));
+  }
+  return res;
+}
+
+nlohmann::json ToJson(const Study& st, const Result& res) {
+  const optimizers::FitResult& fit = res.fit;
+  nlohmann::json j;
+  j["study"] = "lcr_friction_fit";
+  j["name"] = st.name;
+  j["status"] = optimizers::ToString(fit.status);
+  j["model"] = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
+  j["speed_ratio"] = res.speed_ratio;
+  j["ideal_input_torque_per_output_torque"] = res.per_output_torque.ideal;
+  j["friction_input_torque_per_output_torque_and_mu"] = res.per_output_torque.friction;
+  const char* names[2] = {"friction_coefficient", "drag_torque_Nm"};
+  const bool at_bound[2] = {res.friction_coefficient_at_bound, res.drag_torque_at_bound};
+  for (int i = 0; i < 2; ++i) {
+    nlohmann::json p;
+    p["value"] = fit.x[i];
+    if (!fit.standard_errors.empty()) p["standard_error"] = fit.standard_errors[i];
+    p["at_bound"] = at_bound[i];
+    j["parameters"][names[i]] = p;
+  }
+  if (!fit.covariance.empty()) {
+    j["covariance"] = {{fit.covariance[0], fit.covariance[1]}, {fit.covariance[2], fit.covariance[3]}};
+    j["correlation"] = *res.correlation;
+  } else {
+    j["covariance"] = nullptr;
+    j["notes"] = {"the Jacobian is rank deficient at the fit: no covariance"};
+  }
+  const int dof = res.degrees_of_freedom;
+  j["chi_square"] = res.chi_square;
+  j["degrees_of_freedom"] = dof;
+  j["reduced_chi_square"] = dof > 0 ? nlohmann::json(res.chi_square / dof) : nlohmann::json(nullptr);
+  nlohmann::json rows = nlohmann::json::array();
+  for (size_t i = 0; i < res.rows.size(); ++i) {
+    const Row& row = res.rows[i];
+    const Measurement& d = st.measurements[i];
+    rows.push_back({{"output_torque_Nm", d.output_torque_Nm},
+                    {"fitted_input_torque_sd_Nm", row.fitted_input_torque_sd_Nm
+                                                      ? nlohmann::json(*row.fitted_input_torque_sd_Nm)
+                                                      : nlohmann::json(nullptr)},
+                    {"measured_input_torque_Nm", d.input_torque_Nm},
+                    {"measured_sd_Nm", d.sd_Nm},
+                    {"fitted_input_torque_Nm", row.fitted_input_torque_Nm},
+                    {"residual_Nm", row.residual_Nm},
+                    {"weighted_residual", row.weighted_residual},
+                    {"fitted_efficiency", row.fitted_efficiency},
+                    {"measured_efficiency", row.measured_efficiency},
+                    {"input_torque_with_mu_0.05_no_drag_Nm", row.paper_input_torque_Nm}});
+  }
+  j["measurements"] = rows;
+  j["solver"] = {{"message", fit.message}, {"iterations", fit.iterations},
+                 {"residual_evaluations", fit.residual_evaluations}};
+  return j;
+}
+
+void Write(const Study& st, const Result& res, Outputs& out) {
+  out.AddJson("result.json", ToJson(st, res));
+  std::vector<double> to, tin, tfit, resid;
+  for (size_t i = 0; i < res.rows.size(); ++i) {
+    to.push_back(st.measurements[i].output_torque_Nm);
+    tin.push_back(st.measurements[i].input_torque_Nm);
+    tfit.push_back(res.rows[i].fitted_input_torque_Nm);
+    resid.push_back(res.rows[i].residual_Nm);
+  }
+  Table t;
+  t.Add("output_torque_Nm", to);
+  t.Add("measured_input_torque_Nm", tin);
+  t.Add("fitted_input_torque_Nm", tfit);
+  t.Add("residual_Nm", resid);
+  out.Add("fit.csv", ToCsv(t));
+  out.Add("fit.svg", SvgLinePlot({{"fitted model", res.line_output_torque_Nm, res.line_input_torque_Nm},
+                                  {"measured", to, tin}},
+                                 {"Input torque against output torque", "output torque [N·m]",
+                                  "input torque [N·m]"}));
+}
+
+namespace {
+CAMOPT_REGISTER_STUDY("lcr_friction_fit", [](const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study study = Parse(root);
+  Write(study, Run(study, ctx), out);
+});
+}  // namespace
+
+}  // namespace camopt::studies::lcr_friction_fit

@@ -1,0 +1,71 @@
+// Study kind "lcr_min_size": the smallest lobe cam reducer for a target speed ratio and output
+// torque. Enumerates every lobe/roller combination giving the ratio exactly, solves each to the
+// optimum of the exact constraints (objectives/lcr_min_size.h), and reports the best design, what
+// each binding limit costs (limit_sensitivity), and one candidate per combination (and catalogue
+// roller) with its multistart spread and, when nothing fits, the limits it breaks at its closest
+// point. Nothing fitting is an incomplete result (exit code 3, outputs still written).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "objectives/lcr_min_size.h"
+#include "objectives/lcr_sizing.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::studies::lcr_min_size {
+
+struct CatalogueRoller {
+  std::string name;
+  double diameter_mm = 0, length_mm = 0, load_limit_N = 0;
+};
+
+struct Study {
+  std::string name;
+  long ratio = 0;
+  double output_torque_Nmm = 0;
+  int max_lobes = 40;
+  std::vector<int> differences{1};
+  objectives::LcrSizingSpec base;  ///< bounds, fixed sizes, material, load and the study's limits
+  std::vector<CatalogueRoller> catalogue;
+  objectives::LcrMinSizeOptions options;
+  objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate;  ///< as written
+};
+
+struct Candidate {
+  objectives::LobeCombination combo{};
+  int roller = -1;  ///< index into Study::catalogue, −1 without a catalogue
+  objectives::LcrSizingSpec spec;  ///< what was solved (counts, roller, the study's limits)
+  objectives::LcrMinSizeOutcome outcome;
+  bool feasible() const { return outcome.converged; }
+};
+
+struct Result {
+  std::vector<Candidate> candidates;
+  int best = -1;  ///< index of the smallest feasible candidate, −1 when nothing fits
+  /// d(outer diameter)/d(limit) of the best design [mm per unit of the limit], by limit key.
+  std::map<std::string, double> limit_sensitivity;
+  int value_evaluations = 0, gradient_evaluations = 0;
+  double seconds = 0;  ///< wall time of the search (summary only, never in result.json)
+  /// When nothing fits: the limit that blocks most, the closest candidate, and the value of that
+  /// limit that its closest point needs.
+  std::string blocking_message;
+};
+
+/// @throws StudyError for bad input (exit 2).
+Study Parse(const Node& root);
+Result Run(const Study& study, const RunContext& ctx);
+nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json, candidates.csv, best_lcr_analysis.json (when something fits); marks the outputs
+/// incomplete (exit code 3) when nothing fits.
+void Write(const Study& study, const Result& result, Outputs& out);
+/// Lines for the terminal: best outer diameter, time, and what each binding limit costs
+/// ("contact stress limit +10 MPa → −0.13 mm").
+std::string Summary(const Study& study, const Result& result);
+
+}  // namespace camopt::studies::lcr_min_size
