@@ -301,6 +301,52 @@ TEST(CycloidLtca, ContactEndDistanceIsLocatedWithinACell) {
   }
 }
 
+TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
+  // Frozen contact sets (design-notes §1) against central differences of converged solves, for the
+  // torque and each field of a finite-drop logarithmic crowning.
+  LoadedOptions o = Coarse(16, 16);
+  o.tolerance = 1e-11;
+  o.solver_tolerance = 1e-12;
+  o.rough_solver_tolerance = 0;  // final-tolerance passes only
+  o.max_iterations = 400;
+  Crowning c = Log(0.004);
+  c.effective_length_mm = 18.7;
+  c.end_drop_mm = 0.006;
+  const double torque = 350.0e3, crank = 0.8;
+  const LoadedTca tca(NnmDrive(), c, Material{}, o);
+  const MeshLoad m = tca.Solve(torque, crank);
+  ASSERT_TRUE(m.converged) << m.message;
+  for (const char* name : {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm"}) {
+    const LoadedTca::Derivative d = tca.Differentiate(m, name);
+    ASSERT_TRUE(d.converged) << name;
+    auto at = [&](double sign) {
+      Crowning cc = c;
+      double t = torque;
+      const std::string n = name;
+      double h = 0;
+      if (n == "torque_Nmm") t += sign * (h = 1e-5 * torque);
+      if (n == "coefficient_mm") cc.coefficient_mm += sign * (h = 1e-5 * c.coefficient_mm);
+      if (n == "effective_length_mm") cc.effective_length_mm += sign * (h = 1e-5 * c.effective_length_mm);
+      if (n == "end_drop_mm") cc.end_drop_mm += sign * (h = 1e-5 * c.end_drop_mm);
+      return std::pair<MeshLoad, double>(tca.WithCrowning(cc).Solve(t, crank), h);
+    };
+    const auto [plus, h] = at(1.0);
+    const auto [minus, h2] = at(-1.0);
+    ASSERT_EQ(plus.pairs.size(), m.pairs.size());
+    ASSERT_EQ(minus.pairs.size(), m.pairs.size());
+    const double fd = (plus.deflection_rad - minus.deflection_rad) / (2 * h);
+    EXPECT_NEAR(d.deflection_rad, fd, 2e-3 * std::abs(fd) + 1e-14) << name;
+    double scale = 0;
+    for (size_t i = 0; i < m.pairs.size(); ++i)
+      scale = std::max(scale, std::abs((plus.pairs[i].load_N - minus.pairs[i].load_N) / (2 * h)));
+    for (size_t i = 0; i < m.pairs.size(); ++i) {
+      const double fdl = (plus.pairs[i].load_N - minus.pairs[i].load_N) / (2 * h);
+      EXPECT_NEAR(d.pair_load_N[i], fdl, 5e-3 * scale) << name << " pair " << i;
+    }
+  }
+  EXPECT_THROW(tca.Differentiate(m, "flat_length_um"), std::invalid_argument);
+}
+
 TEST(CycloidLtca, LteRepeatsEveryMeshPeriod) {
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(12, 12));
   const double period = 2 * kPi / 16;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "model/common/roots.h"
+#include <ceres/jet.h>
+
 #include "model/contact/hertz.h"
 
 namespace camopt::cycloid {
@@ -400,6 +402,79 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
     for (const auto& p : out.pairs) {
       out.edge_margin_mm = std::min(out.edge_margin_mm, p.edge_margin_mm);
       out.end_distance_mm = std::min(out.end_distance_mm, p.end_distance_mm);
+    }
+  }
+  return out;
+}
+
+LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std::string& parameter) const {
+  // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact).
+  const bool torque = parameter == "torque_Nmm";
+  std::vector<double> dcrown(options_.axial_cells, 0.0);
+  if (!torque) {
+    using J = ceres::Jet<double, 1>;
+    const double b = drive_.face_width_mm;
+    const double dy = b / options_.axial_cells;
+    J radius(crowning_.radius_mm), flat(crowning_.flat_length_mm), coefficient(crowning_.coefficient_mm),
+        length(crowning_.effective_length_mm > 0 ? crowning_.effective_length_mm : b), drop(crowning_.end_drop_mm);
+    J* field = parameter == "coefficient_mm"        ? &coefficient
+               : parameter == "effective_length_mm" ? &length
+               : parameter == "end_drop_mm"         ? &drop
+               : parameter == "radius_mm"           ? &radius
+                                                    : nullptr;
+    if (!field) throw std::invalid_argument("Differentiate: unknown parameter " + parameter);
+    field->v[0] = 1.0;
+    for (int iy = 0; iy < options_.axial_cells; ++iy)
+      dcrown[iy] = CrowningDrop<J>(crowning_.type, radius, flat, coefficient, length,
+                                   J(-0.5 * b + (iy + 0.5) * dy), drop).v[0];
+    // The gap is shifted so that its lowest cell touches: the shift's derivative is the lowest
+    // row's (the across-profile part does not depend on s).
+    const int low = int(std::min_element(crown_.begin(), crown_.end()) - crown_.begin());
+    const double d_low = dcrown[low];
+    for (double& d : dcrown) d -= d_low;
+  }
+  Derivative out;
+  const size_t n = solved.pairs.size();
+  std::vector<double> compliance(n), gap_rate(n);
+  std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n), by_gap(n);
+  for (size_t i = 0; i < n; ++i) {
+    const PairLoad& p = solved.pairs[i];
+    if (p.pressure_MPa.size() != size_t(p.grid.cells()))
+      throw std::invalid_argument("Differentiate: the solve must keep its pressures");
+    const std::vector<double> zero(p.pressure_MPa.size(), 0.0);
+    by_load[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, zero, 1.0, e_star_);
+    compliance[i] = by_load[i].approach_mm;
+    out.converged = out.converged && by_load[i].converged;
+    if (!torque) {
+      std::vector<double> dgap(p.pressure_MPa.size());
+      for (int iy = 0; iy < p.grid.ny; ++iy)
+        for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[iy];
+      by_gap[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_);
+      gap_rate[i] = by_gap[i].approach_mm;
+      out.converged = out.converged && by_gap[i].converged;
+    }
+  }
+  // c_i dF_i + a_i = l_i dΔφ,  Σ l_i dF_i = dT.
+  double num = torque ? 1.0 : 0.0, den = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double l = solved.pairs[i].arm_mm;
+    num += l * gap_rate[i] / compliance[i];
+    den += l * l / compliance[i];
+  }
+  out.deflection_rad = den > 0 ? num / den : 0.0;
+  double best = -1;
+  for (size_t i = 0; i < n; ++i) {
+    const PairLoad& p = solved.pairs[i];
+    const double df = (p.arm_mm * out.deflection_rad - gap_rate[i]) / compliance[i];
+    out.pair_load_N.push_back(df);
+    const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
+                               p.pressure_MPa.begin());
+    double dp = df * by_load[i].pressure_MPa[peak];
+    if (!torque) dp += by_gap[i].pressure_MPa[peak];
+    out.pair_max_pressure_MPa.push_back(dp);
+    if (p.max_pressure_MPa > best) {
+      best = p.max_pressure_MPa;
+      out.max_pressure_MPa = dp;
     }
   }
   return out;

@@ -128,6 +128,23 @@ class LoadedTca {
   /// `warm` is given it is read as a starting point and updated with this solve's pairs.
   MeshLoad Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmStart* warm = nullptr) const;
 
+  /// Derivatives of a converged solve's outputs with respect to one parameter, by implicit
+  /// differentiation with every pair's contact set and the set of loaded pairs frozen
+  /// (design-notes §1): per pair one forward sensitivity for its load (its compliance dδ/dF) and
+  /// one for the parameter at fixed load (dδ/ds), then the outer equations δ_i = l_i (Δφc − φ_bl,i),
+  /// Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] and the crowning's coefficient_mm,
+  /// effective_length_mm, end_drop_mm, radius_mm (as applicable to its type).
+  /// @pre `solved` from Solve(torque_Nmm, ·) on this model with LoadedOptions::keep_pressure.
+  /// @throws std::invalid_argument for an unknown parameter or a solve without pressures.
+  struct Derivative {
+    double deflection_rad = 0;            ///< dΔφc/ds (= d LTE / ds)
+    std::vector<double> pair_load_N;      ///< dF_i/ds, in the order of solved.pairs
+    std::vector<double> pair_max_pressure_MPa;  ///< d p_i(peak cell)/ds, peak cell frozen
+    double max_pressure_MPa = 0;          ///< of the pair carrying the maximum
+    bool converged = true;
+  };
+  Derivative Differentiate(const MeshLoad& solved, const std::string& parameter) const;
+
   /// The same model with another crowning (sweeps and tuning), sharing the solver caches.
   /// @throws std::invalid_argument for invalid crowning.
   LoadedTca WithCrowning(const Crowning& crowning) const;
