@@ -475,7 +475,7 @@ TEST(HalfSpaceSensitivity, MatchesCentralDifferencesOfTheLoadControlledSolve) {
     for (int iy = 0; iy < g.ny; ++iy)
       for (int ix = 0; ix < g.nx; ++ix) {
         const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
-        h[size_t(iy) * g.nx + ix] = x * x / (2 * 5.0) + (1.0 + s) * 2e-4 * y * y + s * 1e-4 * y;
+        h[size_t(iy) * g.nx + ix] = x * x / (2 * 5.0) * (1.0 + 0.3 * s) + (1.0 + s) * 2e-4 * y * y + s * 1e-4 * y;
       }
     return h;
   };
