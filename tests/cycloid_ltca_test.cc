@@ -303,7 +303,7 @@ TEST(CycloidLtca, ContactEndDistanceIsLocatedWithinACell) {
 
 TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
   // Frozen contact sets (design-notes §1) against central differences of converged solves, for the
-  // torque and each field of a finite-drop logarithmic crowning.
+  // torque, each field of a finite-drop logarithmic crowning and the modifications Δa, Δρ.
   LoadedOptions o = Coarse(16, 16);
   o.tolerance = 1e-11;
   o.solver_tolerance = 1e-12;
@@ -316,7 +316,8 @@ TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
   const LoadedTca tca(NnmDrive(), c, Material{}, o);
   const MeshLoad m = tca.Solve(torque, crank);
   ASSERT_TRUE(m.converged) << m.message;
-  for (const char* name : {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm"}) {
+  for (const char* name : {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm",
+                           "delta_position_mm", "delta_radius_mm"}) {
     const LoadedTca::Derivative d = tca.Differentiate(m, name);
     ASSERT_TRUE(d.converged) << name;
     auto at = [&](double sign) {
@@ -328,6 +329,11 @@ TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
       if (n == "coefficient_mm") cc.coefficient_mm += sign * (h = 1e-5 * c.coefficient_mm);
       if (n == "effective_length_mm") cc.effective_length_mm += sign * (h = 1e-5 * c.effective_length_mm);
       if (n == "end_drop_mm") cc.end_drop_mm += sign * (h = 1e-5 * c.end_drop_mm);
+      Drive dd = NnmDrive();
+      if (n == "delta_position_mm") dd.delta_position_mm += sign * (h = 1e-6);
+      if (n == "delta_radius_mm") dd.delta_radius_mm += sign * (h = 1e-6);
+      if (n == "delta_position_mm" || n == "delta_radius_mm")
+        return std::pair<MeshLoad, double>(LoadedTca(dd, c, Material{}, o).Solve(t, crank), h);
       return std::pair<MeshLoad, double>(tca.WithCrowning(cc).Solve(t, crank), h);
     };
     const auto [plus, h] = at(1.0);
@@ -336,6 +342,8 @@ TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
     ASSERT_EQ(minus.pairs.size(), m.pairs.size());
     const double fd = (plus.deflection_rad - minus.deflection_rad) / (2 * h);
     EXPECT_NEAR(d.deflection_rad, fd, 2e-3 * std::abs(fd) + 1e-14) << name;
+    const double fdr = (plus.rotation_rad - minus.rotation_rad) / (2 * h);
+    EXPECT_NEAR(d.rotation_rad, fdr, 2e-3 * std::abs(fdr) + 1e-14) << name;
     double scale = 0;
     for (size_t i = 0; i < m.pairs.size(); ++i)
       scale = std::max(scale, std::abs((plus.pairs[i].load_N - minus.pairs[i].load_N) / (2 * h)));

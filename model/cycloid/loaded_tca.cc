@@ -430,10 +430,30 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
 
 LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std::string& parameter) const {
   // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact).
+  using J = ceres::Jet<double, 1>;
   const bool torque = parameter == "torque_Nmm";
+  const bool geometry = parameter == "delta_position_mm" || parameter == "delta_radius_mm";
   std::vector<double> dcrown(options_.axial_cells, 0.0);
-  if (!torque) {
-    using J = ceres::Jet<double, 1>;
+  // Δa, Δρ: the unloaded TCA with a Jet gives each pair's d(arm), d(backlash), d(profile
+  // curvature) and dβ0 (frozen first-contact pair).
+  std::map<int, PairGeometry<J>> dgeom;
+  double d_beta0 = 0;
+  if (geometry) {
+    DriveTpl<J> dj;
+    dj.teeth = drive_.teeth;
+    dj.rollers = drive_.rollers;
+    dj.roller_position_radius_mm = J(drive_.roller_position_radius_mm);
+    dj.roller_radius_mm = J(drive_.roller_radius_mm);
+    dj.eccentricity_mm = J(drive_.eccentricity_mm);
+    dj.face_width_mm = J(drive_.face_width_mm);
+    dj.delta_position_mm = J(drive_.delta_position_mm);
+    dj.delta_radius_mm = J(drive_.delta_radius_mm);
+    (parameter == "delta_position_mm" ? dj.delta_position_mm : dj.delta_radius_mm).v[0] = 1.0;
+    const UnloadedMesh<J> u = UnloadedTca<J>(dj, J(solved.crank_angle_rad));
+    d_beta0 = u.rotation.v[0];
+    for (const auto& g : u.pairs) dgeom[g.roller] = g;
+  }
+  if (!torque && !geometry) {
     const double b = drive_.face_width_mm;
     const double dy = b / options_.axial_cells;
     J radius(crowning_.radius_mm), flat(crowning_.flat_length_mm), coefficient(crowning_.coefficient_mm),
@@ -456,7 +476,7 @@ LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std
   }
   Derivative out;
   const size_t n = solved.pairs.size();
-  std::vector<double> compliance(n), gap_rate(n);
+  std::vector<double> compliance(n), gap_rate(n, 0.0), d_arm(n, 0.0), d_backlash(n, 0.0);
   std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n), by_gap(n);
   for (size_t i = 0; i < n; ++i) {
     const PairLoad& p = solved.pairs[i];
@@ -466,27 +486,52 @@ LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std
     by_load[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, zero, 1.0, e_star_);
     compliance[i] = by_load[i].approach_mm;
     out.converged = out.converged && by_load[i].converged;
-    if (!torque) {
-      std::vector<double> dgap(p.pressure_MPa.size());
+    if (torque) continue;
+    std::vector<double> dgap(p.pressure_MPa.size());
+    if (geometry) {
+      // The gap across the profile through the tooth's curvature (the roller's is unmodified),
+      // shifted so that the lowest cell touches: its derivative at the lowest column.
+      const PairGeometry<J>& g = dgeom.at(p.roller);
+      d_arm[i] = g.arm_mm.v[0];
+      d_backlash[i] = g.backlash.v[0];
+      const J kappa = g.profile_curvature;
+      std::vector<double> across(p.grid.nx), d_across(p.grid.nx);
+      for (int ix = 0; ix < p.grid.nx; ++ix) {
+        const double x = p.grid.x_centre_mm(ix);
+        const J sep = kappa * x * x / (1.0 + sqrt(1.0 - kappa * kappa * x * x));
+        across[ix] = CircleSeparation(1.0 / drive_.roller_radius_mm, x) + sep.a;
+        d_across[ix] = sep.v[0];
+      }
+      const int low = int(std::min_element(across.begin(), across.end()) - across.begin());
+      for (int iy = 0; iy < p.grid.ny; ++iy)
+        for (int ix = 0; ix < p.grid.nx; ++ix)
+          dgap[size_t(iy) * p.grid.nx + ix] = d_across[ix] - d_across[low];
+    } else {
       for (int iy = 0; iy < p.grid.ny; ++iy)
         for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[iy];
-      by_gap[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_);
-      gap_rate[i] = by_gap[i].approach_mm;
-      out.converged = out.converged && by_gap[i].converged;
     }
+    by_gap[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_);
+    gap_rate[i] = by_gap[i].approach_mm;
+    out.converged = out.converged && by_gap[i].converged;
   }
-  // c_i dF_i + a_i = l_i dΔφ,  Σ l_i dF_i = dT.
+  // δ_i = l_i (Δφc − φ_bl,i) and Σ l_i F_i = T differentiated, with dδ_i = c_i dF_i + a_i:
+  // dF_i = (l_i dΔφc + r_i) / c_i, r_i = dl_i (Δφc − φ_bl,i) − l_i dφ_bl,i − a_i.
+  const double deflection = solved.deflection_rad;
+  std::vector<double> r(n);
   double num = torque ? 1.0 : 0.0, den = 0;
   for (size_t i = 0; i < n; ++i) {
-    const double l = solved.pairs[i].arm_mm;
-    num += l * gap_rate[i] / compliance[i];
+    const PairLoad& p = solved.pairs[i];
+    const double l = p.arm_mm;
+    r[i] = d_arm[i] * (deflection - p.backlash_rad) - l * d_backlash[i] - gap_rate[i];
+    num -= d_arm[i] * p.load_N + l * r[i] / compliance[i];
     den += l * l / compliance[i];
   }
   out.deflection_rad = den > 0 ? num / den : 0.0;
+  out.rotation_rad = d_beta0 + out.deflection_rad;
   double best = -1;
   for (size_t i = 0; i < n; ++i) {
     const PairLoad& p = solved.pairs[i];
-    const double df = (p.arm_mm * out.deflection_rad - gap_rate[i]) / compliance[i];
+    const double df = (p.arm_mm * out.deflection_rad + r[i]) / compliance[i];
     out.pair_load_N.push_back(df);
     const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
                                p.pressure_MPa.begin());
