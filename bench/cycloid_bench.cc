@@ -77,6 +77,23 @@ void BM_CycloidMeshPeriod32(benchmark::State& state) {
 }
 BENCHMARK(BM_CycloidMeshPeriod32)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
 
+// One LTCA solve (40 x 40, LCM with L = 18.7 mm, 120°) and, Arg 1, the same solve followed by its
+// implicit derivatives for one parameter (coefficient_mm): the gradient's cost over the value's.
+void BM_CycloidSolveAndDerivative(benchmark::State& state) {
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.004;
+  c.effective_length_mm = 18.7;
+  const LoadedTca tca(CycloidNnm(), c, Material{}, LoadedOptions{});
+  tca.Solve(350.0e3, 2.0);  // kernels and plans cached: the pure model's answer does not change
+  for (auto _ : state) {
+    const MeshLoad m = tca.Solve(350.0e3, 2.0944);
+    if (state.range(0) == 1) benchmark::DoNotOptimize(tca.Differentiate(m, "coefficient_mm").deflection_rad);
+    benchmark::DoNotOptimize(m.max_pressure_MPa);
+  }
+}
+BENCHMARK(BM_CycloidSolveAndDerivative)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(10);
+
 void RunExample(benchmark::State& state, const char* name) {
   const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /
                             "studies/examples" / name)
