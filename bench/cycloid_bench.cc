@@ -63,6 +63,52 @@ void BM_CycloidMeshCycle60(benchmark::State& state) {
 }
 BENCHMARK(BM_CycloidMeshCycle60)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
 
+// One mesh period at the cycloid_ltca default (32 angles), no error estimate. Arg: crowning case.
+void BM_CycloidMeshPeriod32(benchmark::State& state) {
+  const auto angles = UniformCrankAngles(32, 2 * kPi / 16);
+  CycleResult r;
+  for (auto _ : state) {
+    LoadedTca tca(CycloidNnm(), Case(int(state.range(0))), Material{}, LoadedOptions{});
+    r = RunCycle(tca, 350.0e3, angles);
+    benchmark::DoNotOptimize(r.max_pressure_MPa);
+  }
+  state.counters["solves"] = r.contact_solves;
+  state.counters["cg_iters"] = double(r.solver_iterations);
+}
+BENCHMARK(BM_CycloidMeshPeriod32)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+// One LTCA solve (40 x 40, LCM with L = 18.7 mm, 120°) and, Arg 1, the same solve followed by its
+// implicit derivatives for one parameter (coefficient_mm): the gradient's cost over the value's.
+void BM_CycloidSolveAndDerivative(benchmark::State& state) {
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.004;
+  c.effective_length_mm = 18.7;
+  const LoadedTca tca(CycloidNnm(), c, Material{}, LoadedOptions{});
+  tca.Solve(350.0e3, 2.0);  // kernels and plans cached: the pure model's answer does not change
+  for (auto _ : state) {
+    const MeshLoad m = tca.Solve(350.0e3, 2.0944);
+    if (state.range(0) == 1) benchmark::DoNotOptimize(tca.Differentiate(m, "coefficient_mm").deflection_rad);
+    benchmark::DoNotOptimize(m.max_pressure_MPa);
+  }
+}
+BENCHMARK(BM_CycloidSolveAndDerivative)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(10);
+
+void RunExample(benchmark::State& state, const char* name) {
+  const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /
+                            "studies/examples" / name)
+                               .string();
+  const nlohmann::json j = studies::LoadStudyFile(file);
+  studies::RunContext ctx;
+  ctx.study_file = file;
+  ctx.quiet = true;
+  for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
+}
+
+// The cycloid_ltca example without crowning: 32 angles per mesh period and its error estimate.
+void BM_CycloidLtcaExampleStudy(benchmark::State& state) { RunExample(state, "cycloid_ltca_nnm_none.json"); }
+BENCHMARK(BM_CycloidLtcaExampleStudy)->Unit(benchmark::kMillisecond)->Iterations(2);
+
 void BM_CycloidCrowningTuningStudy(benchmark::State& state) {
   // The source tree from this file's path (CMake passes absolute paths to the compiler).
   const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /

@@ -56,29 +56,30 @@ CycloidCrowningModel::CycloidCrowningModel(const cycloid::Drive& drive,
                                            const cycloid::Material& material,
                                            const cycloid::LoadedOptions& options,
                                            double design_torque_Nmm, double max_torque_Nmm,
-                                           std::vector<double> crank_angles_rad)
+                                           std::vector<double> crank_angles_rad,
+                                           const cycloid::Crowning& shape)
     : drive_(drive),
       design_(drive, cycloid::Crowning{}, material, WithoutMaps(options, false)),
       maximum_(drive, cycloid::Crowning{}, material, WithoutMaps(options, true)),
+      shape_(shape),
       design_torque_Nmm_(design_torque_Nmm),
       max_torque_Nmm_(max_torque_Nmm),
-      angles_(std::move(crank_angles_rad)) {}
+      angles_(std::move(crank_angles_rad)) {
+  shape_.type = cycloid::CrowningType::kLogarithmic;
+}
 
 CrowningEvaluation CycloidCrowningModel::Evaluate(double coefficient_mm, double length_mm) {
-  cycloid::Crowning c;
-  c.type = cycloid::CrowningType::kLogarithmic;
+  cycloid::Crowning c = shape_;
   c.coefficient_mm = std::max(0.0, coefficient_mm);
   c.effective_length_mm = length_mm;
-  design_.SetCrowning(c);
-  maximum_.SetCrowning(c);
   CrowningEvaluation e;
   e.coefficient_mm = c.coefficient_mm;
   e.length_mm = length_mm;
-  const cycloid::CycleResult d = cycloid::RunCycle(design_, design_torque_Nmm_, angles_);
-  const cycloid::CycleResult m = cycloid::RunCycle(maximum_, max_torque_Nmm_, angles_);
+  const cycloid::CycleResult d = cycloid::RunCycle(design_.WithCrowning(c), design_torque_Nmm_, angles_);
+  const cycloid::CycleResult m = cycloid::RunCycle(maximum_.WithCrowning(c), max_torque_Nmm_, angles_);
   e.stress_MPa = d.max_pressure_MPa;
   e.pairs = d.max_pairs_in_contact;
-  e.edge_margin_um = m.edge_margin_mm * 1e3;
+  e.edge_margin_um = m.end_distance_mm * 1e3;
   ++evaluations_;
   return e;
 }

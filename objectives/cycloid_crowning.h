@@ -6,8 +6,10 @@
 // Each evaluation solves a complementarity problem per loaded pair and takes a maximum over cells
 // and crank angles: the objective is non-smooth in f (and slightly grid-quantised), so the problem
 // is value-only (a derivative-free solver such as COBYLA drives it; asking for a Jacobian throws).
-// The constraint is the edge margin of model/cycloid (clearance left at the outermost axial cells,
-// negative in proportion to the edge pressure when the contact reaches an edge), continuous in f.
+// The constraint is the end distance of model/cycloid (axial distance of the contact end from the
+// face end, located within a cell, negative and bounded when the pressure indicates contact beyond
+// the end; continuous in f and converging with the grid, docs/cycloid.md), named edge margin here
+// and in the study's result. It replaced the edge-row clearance, whose zero moved with the cell.
 #pragma once
 
 #include <functional>
@@ -24,19 +26,22 @@ struct CrowningEvaluation {
   double coefficient_mm = 0;  ///< f of the logarithmic crowning (negative requests are taken as 0)
   double length_mm = 0;       ///< its effective length L
   double stress_MPa = 0;      ///< max contact stress over the design-torque cycle
-  double edge_margin_um = 0;  ///< min edge margin over the max-torque cycle
+  double edge_margin_um = 0;  ///< min end distance [µm] over the max-torque cycle
   int pairs = 0;              ///< max pairs in contact over the design-torque cycle
 };
 
 /// The two mesh cycles that judge a crowning: the design torque (stress) and the maximum torque
-/// (edge margin), over the same crank angles. The LTCA instances are kept between evaluations
-/// (warm starts), so evaluations are not independent of their order in the last digits.
+/// (edge margin), over the same crank angles. An evaluation depends on its arguments only (bit for
+/// bit, whatever was evaluated before: the LTCA is pure, its solver caches change only the cost).
 class CycloidCrowningModel {
  public:
   /// @param design_torque_Nmm, max_torque_Nmm disc torques [N·mm]; crank angles [rad].
+  /// `shape` gives the logarithmic crowning's fields that are not tuned (end drop, flat length;
+  /// its coefficient and effective length are replaced by Evaluate's arguments).
   CycloidCrowningModel(const cycloid::Drive& drive, const cycloid::Material& material,
                        const cycloid::LoadedOptions& options, double design_torque_Nmm,
-                       double max_torque_Nmm, std::vector<double> crank_angles_rad);
+                       double max_torque_Nmm, std::vector<double> crank_angles_rad,
+                       const cycloid::Crowning& shape = {});
 
   /// Runs both cycles with a logarithmic crowning of coefficient f [mm] and length L [mm].
   CrowningEvaluation Evaluate(double coefficient_mm, double length_mm);
@@ -46,6 +51,7 @@ class CycloidCrowningModel {
  private:
   cycloid::Drive drive_;
   cycloid::LoadedTca design_, maximum_;
+  cycloid::Crowning shape_;
   double design_torque_Nmm_, max_torque_Nmm_;
   std::vector<double> angles_;
   int evaluations_ = 0;

@@ -17,7 +17,7 @@ namespace camopt::studies::cycloid_crowning_tuning {
 using objectives::CrowningEvaluation;
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis", "tuning"});
+  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis", "tuning", "crowning"});
   Study s;
   s.name = root.json().value("name", "");
   s.drive = cycloid_common::ParseDrive(root);
@@ -41,6 +41,24 @@ Study Parse(const Node& root) {
       tuning["effective_length_mm"].Fail("a range with lo >= the face width");
     s.tune_length = s.length_hi_mm > s.length_lo_mm;
   }
+  // "crowning": the logarithmic form whose coefficient is tuned; its other fields stay fixed.
+  if (root.Has("crowning")) {
+    const Node c = root["crowning"];
+    c.CheckKnownFields({"type", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
+    if (c["type"].String() != "logarithmic") c["type"].Fail("\"logarithmic\"");
+    s.shape.type = cycloid::CrowningType::kLogarithmic;
+    s.shape.end_drop_mm = c.NonNegativeOr("end_drop_mm", 0.0);
+    s.shape.flat_length_mm = c.NonNegativeOr("flat_length_mm", 0.0);
+    if (c.Has("effective_length_mm")) {
+      if (tuning.Has("effective_length_mm"))
+        c["effective_length_mm"].Fail("no value here when tuning.effective_length_mm is given");
+      s.length_lo_mm = s.length_hi_mm = c["effective_length_mm"].Positive();
+      if (s.length_lo_mm < s.drive.face_width_mm) c["effective_length_mm"].Fail("a length >= the face width");
+    }
+    s.shape.effective_length_mm = s.length_lo_mm;
+    if (const std::string why = cycloid::CheckCrowning(s.shape, s.drive.face_width_mm); !why.empty())
+      c.FailWith(why);
+  }
   s.reference_coefficient_mm = tuning.NonNegativeOr("reference_coefficient_mm", 0.005);
   s.curve_points = tuning.IntegerOr("curve_points", 2, 11);
   s.max_evaluations = tuning.IntegerOr("max_evaluations", 1, 30);
@@ -60,6 +78,9 @@ Result Run(const Study& s, const RunContext& ctx) {
   const std::vector<double> angles =
       cycloid::UniformCrankAngles(s.crank_angles_per_mesh_period, 2.0 * kPi / s.drive.rollers);
   objectives::CycloidCrowningModel model(s.drive, s.material, s.options, s.design_torque_Nm * 1000.0,
+                                         s.max_torque_Nm * 1000.0, angles, s.shape);
+  // The paper's form (eq. 7, L = B) for the reference coefficient.
+  objectives::CycloidCrowningModel paper(s.drive, s.material, s.options, s.design_torque_Nm * 1000.0,
                                          s.max_torque_Nm * 1000.0, angles);
   Result r;
   Progress progress("cycloid_crowning_tuning", ctx.quiet);
@@ -69,7 +90,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     r.curve.push_back(model.Evaluate(f, s.length_lo_mm));
     progress.Update(0.5 * (k + 1) / s.curve_points, "scan f = " + Format(f * 1e3, 4) + " um");
   }
-  r.reference = model.Evaluate(s.reference_coefficient_mm, s.drive.face_width_mm);
+  r.reference = paper.Evaluate(s.reference_coefficient_mm, s.drive.face_width_mm);
   // 2. Start from the best feasible scan point (else the one with the largest margin).
   const CrowningEvaluation start = objectives::LowestFeasibleStress(r.curve, s.required_edge_margin_um)
                                        .value_or(objectives::LargestEdgeMargin(r.curve));
@@ -111,7 +132,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   const auto best = objectives::LowestFeasibleStress(seen, s.required_edge_margin_um - 1e-9);
   r.feasible = best.has_value();
   r.best = best.value_or(start);
-  r.evaluations = model.evaluations();
+  r.evaluations = model.evaluations() + paper.evaluations();
   return r;
 }
 
@@ -128,6 +149,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"feasible", r.feasible},
           {"tuned_coefficient_mm", Finite(r.best.coefficient_mm, "f")},
           {"tuned_effective_length_mm", Finite(r.best.length_mm, "L")},
+          {"end_drop_mm", s.shape.end_drop_mm},
+          {"flat_length_mm", s.shape.flat_length_mm},
           {"tuned_max_contact_stress_MPa", Finite(r.best.stress_MPa, "stress")},
           {"tuned_edge_margin_at_max_torque_um", Finite(r.best.edge_margin_um, "margin")},
           {"reference_coefficient_mm", s.reference_coefficient_mm},

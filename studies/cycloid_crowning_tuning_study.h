@@ -29,6 +29,9 @@ struct Study {
   double coefficient_lo_mm = 0, coefficient_hi_mm = 0;
   bool tune_length = false;             ///< L a variable (its range is not a single value)
   double length_lo_mm = 0, length_hi_mm = 0;  ///< both the face width when L is not given
+  /// The tuned logarithmic crowning's fixed fields ("crowning": end_drop_mm, flat_length_mm;
+  /// effective_length_mm fixes L); the defaults are the paper's eq. 7.
+  cycloid::Crowning shape{cycloid::CrowningType::kLogarithmic};
   double reference_coefficient_mm = 0.005;
   int curve_points = 11;
   int max_evaluations = 30;

@@ -23,25 +23,111 @@ Study Parse(const Node& root) {
   s.material = cycloid_common::ParseMaterial(root);
   root["load"].CheckKnownFields({"torque_Nm"});
   s.torque_Nm = root["load"]["torque_Nm"].NonNegative();
+  s.crank_angles_per_mesh_period = kDefaultCrankAnglesPerMeshPeriod;
+  const double period = 2.0 * kPi / s.drive.rollers;
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
-    a.CheckKnownFields({"grid", "tolerance", "crank_angles_deg", "crank_angle_steps", "crank_span_deg"});
+    a.CheckKnownFields({"grid", "tolerance", "crank_angles_deg", "crank_angle_steps", "crank_span_deg",
+                        "crank_angles_per_mesh_period", "estimate_error"});
     cycloid_common::ParseGrid(a, s.options);
     s.options.tolerance = a.PositiveOr("tolerance", s.options.tolerance);
+    s.estimate_error = a.BoolOr("estimate_error", true);
+    const int given = int(a.Has("crank_angles_deg")) + int(a.Has("crank_angle_steps")) +
+                      int(a.Has("crank_angles_per_mesh_period"));
+    if (given > 1)
+      a.FailWith("give one of crank_angles_per_mesh_period, crank_angle_steps and crank_angles_deg");
+    if (a.Has("crank_span_deg") && !a.Has("crank_angle_steps"))
+      a["crank_span_deg"].Fail("crank_span_deg only with crank_angle_steps");
     if (a.Has("crank_angles_deg")) {
-      if (a.Has("crank_angle_steps"))
-        a.FailWith("give either crank_angle_steps or crank_angles_deg, not both");
+      s.crank_angles_per_mesh_period = 0;
       for (const Node& e : a["crank_angles_deg"].Elements()) s.crank_angles_rad.push_back(e.Number() * kPi / 180.0);
       if (s.crank_angles_rad.empty()) a["crank_angles_deg"].Fail("a non-empty array of angles");
-    } else {
-      const int steps = a.IntegerOr("crank_angle_steps", 1, 60);
+    } else if (a.Has("crank_angle_steps")) {
+      s.crank_angles_per_mesh_period = 0;
+      const int steps = a["crank_angle_steps"].Integer(1);
       if (steps > 100000) a["crank_angle_steps"].Fail("at most 100000 steps");
       s.crank_angles_rad = UniformCrankAngles(steps, a.PositiveOr("crank_span_deg", 360.0) * kPi / 180.0);
+    } else {
+      s.crank_angles_per_mesh_period =
+          a.IntegerOr("crank_angles_per_mesh_period", 1, kDefaultCrankAnglesPerMeshPeriod);
+      if (s.crank_angles_per_mesh_period > 10000) a["crank_angles_per_mesh_period"].Fail("at most 10000");
     }
-  } else {
-    s.crank_angles_rad = UniformCrankAngles(60, 2.0 * kPi);
   }
+  if (s.crank_angles_per_mesh_period > 0)
+    s.crank_angles_rad = UniformCrankAngles(s.crank_angles_per_mesh_period, period);
   return s;
+}
+
+namespace {
+
+// The headline outputs of a cycle, by their result.json names.
+std::vector<std::pair<std::string, double>> Headlines(const CycleResult& c) {
+  return {{"max_contact_stress_MPa", c.max_pressure_MPa},
+          {"lte_peak_to_peak_arcsec", c.lte_peak_to_peak_arcsec},
+          {"lte_mean_abs_arcsec", c.lte_mean_abs_arcsec},
+          {"gear_ratio_peak_to_peak", c.gear_ratio_peak_to_peak},
+          {"max_pair_load_N", c.max_pair_load_N}};
+}
+
+// True when the angles are a uniform sampling of whole mesh periods (the cycle is periodic).
+bool WholePeriods(const std::vector<double>& a, int rollers) {
+  const size_t n = a.size();
+  if (n < 3) return false;
+  const double step = a[1] - a[0];
+  for (size_t k = 1; k < n; ++k)
+    if (std::abs(a[k] - a[k - 1] - step) > 1e-9 * std::max(1.0, std::abs(step))) return false;
+  const double periods = step * n / (2.0 * kPi / rollers);
+  return step > 0 && std::abs(periods - std::round(periods)) < 1e-6 && std::round(periods) >= 1;
+}
+
+}  // namespace
+
+// Estimated discretisation errors of the headline outputs (docs/cycloid.md, "Estimated error"):
+// crank-angle sampling as the difference between the cycle and its every-second-angle subset
+// (the same solves; the order is not used: pairs entering and leaving contact make the LTE kinked),
+// grid as the difference between the grid and one with half the cells each way over the same
+// angles (the edge peaks are singular, no order is assumed either). Sums of the two are reported.
+void EstimateErrors(const Study& s, const LoadedTca& tca, Result& r) {
+  if (!s.estimate_error) return;
+  const CycleResult& fine = r.cycle;
+  const size_t n = s.crank_angles_rad.size();
+  std::vector<double> sub_angles = s.crank_angles_rad;
+  CycleResult sub = fine;
+  const bool crank = WholePeriods(s.crank_angles_rad, s.drive.rollers) && n % 2 == 0 && n >= 8;
+  if (crank) {
+    sub_angles.clear();
+    std::vector<MeshLoad> meshes;
+    for (size_t k = 0; k < n; k += 2) {
+      sub_angles.push_back(s.crank_angles_rad[k]);
+      meshes.push_back(fine.meshes[k]);
+    }
+    sub = SummariseCycle(s.drive, std::move(meshes), sub_angles);
+    r.crank_error_angles = int(sub_angles.size());
+  } else {
+    r.warnings.push_back("crank-angle sampling error not estimated: the angles are not an even number "
+                         "(>= 8) of uniform samples of whole mesh periods");
+  }
+  LoadedOptions coarse = s.options;
+  coarse.profile_cells = std::max(4, s.options.profile_cells / 2);
+  coarse.axial_cells = std::max(4, s.options.axial_cells / 2);
+  coarse.keep_pressure = false;
+  r.coarse_grid = {coarse.profile_cells, coarse.axial_cells};
+  const LoadedTca coarse_tca(s.drive, tca.crowning(), s.material, coarse);
+  const CycleResult g = RunCycle(coarse_tca, s.torque_Nm * 1000.0, sub_angles);
+  const auto hf = Headlines(fine), hs = Headlines(sub), hg = Headlines(g);
+  for (size_t i = 0; i < hf.size(); ++i) {
+    const std::string& name = hf[i].first;
+    const double e_grid = std::abs(hs[i].second - hg[i].second);
+    const double e_crank = crank ? std::abs(hf[i].second - hs[i].second) : 0.0;
+    r.error_grid.push_back({name, e_grid});
+    if (crank) r.error_crank.push_back({name, e_crank});
+    r.estimated_error.push_back({name, e_grid + e_crank});
+    const double value = std::abs(hf[i].second);
+    if (e_grid + e_crank > kErrorShare * value)
+      r.warnings.push_back(name + ": estimated error " + Format(e_grid + e_crank, 3) + " (grid " +
+                           Format(e_grid, 3) + ", crank angles " + Format(e_crank, 3) + ") exceeds " +
+                           Format(100 * kErrorShare, 3) + "% of its value " + Format(hf[i].second, 4));
+  }
 }
 
 Result Run(const Study& s, const RunContext& ctx) {
@@ -53,6 +139,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     progress.Done();
   }
   r.composite_modulus_MPa = tca.e_star_MPa();
+  EstimateErrors(s, tca, r);
   const int n1 = s.drive.rollers;
   const size_t n = s.crank_angles_rad.size();
   r.backlash_arcsec.assign(n1, std::vector<double>(n, 0.0));
@@ -98,6 +185,18 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"converged", m.converged},
                          {"loads", loads}});
   }
+  nlohmann::json errors = nlohmann::json::object(), by_grid = nlohmann::json::object(),
+                 by_crank = nlohmann::json::object();
+  for (const auto& [k, v] : r.estimated_error) errors[k] = Finite(v, "error");
+  for (const auto& [k, v] : r.error_grid) by_grid[k] = Finite(v, "error");
+  for (const auto& [k, v] : r.error_crank) by_crank[k] = Finite(v, "error");
+  nlohmann::json sources = nlohmann::json::object();
+  if (s.estimate_error) {
+    sources["grid"] = {{"coarse_grid", {r.coarse_grid[0], r.coarse_grid[1]}}, {"error", by_grid}};
+    if (r.crank_error_angles > 0)
+      sources["crank_angles"] = {{"coarse_angles", r.crank_error_angles}, {"error", by_crank}};
+    sources["warning_share"] = kErrorShare;
+  }
   return {{"study", "cycloid_ltca"},
           {"name", s.name},
           {"torque_Nm", s.torque_Nm},
@@ -108,12 +207,17 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"gear_ratio_nominal", double(s.drive.teeth)},
           {"gear_ratio_peak_to_peak", Finite(cycle.gear_ratio_peak_to_peak, "gr p2p")},
           {"max_pairs_in_contact", cycle.max_pairs_in_contact},
+          {"max_pair_load_N", Finite(cycle.max_pair_load_N, "max pair load")},
+          {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
           {"axial_cell_mm", s.drive.face_width_mm / s.options.axial_cells},
           {"grid", {s.options.profile_cells, s.options.axial_cells}},
           {"composite_modulus_MPa", r.composite_modulus_MPa},
           {"contact_solves", cycle.contact_solves},
           {"converged", cycle.converged},
           {"warning", r.warning},
+          {"estimated_error", errors},
+          {"estimated_error_sources", sources},
+          {"warnings", r.warnings},
           {"per_angle", per_angle}};
 }
 

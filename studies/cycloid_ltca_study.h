@@ -4,7 +4,9 @@
 // angle of the maximum stress), pressure_max.csv and a tooth drawing (tooth.svg, tooth.dxf).
 #pragma once
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -25,7 +27,16 @@ struct Study {
   double torque_Nm = 0;  ///< on the disc, as in the file
   cycloid::LoadedOptions options;
   std::vector<double> crank_angles_rad;
+  /// Uniform samples of one mesh period 2π/n1 (0 when the file gives crank_angle_steps or
+  /// crank_angles_deg instead).
+  int crank_angles_per_mesh_period = 0;
+  bool estimate_error = true;  ///< analysis.estimate_error: the coarse-grid run and the differences
 };
+
+/// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
+inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 32;
+/// A headline output whose estimated error exceeds this share of its value gets a warning.
+inline constexpr double kErrorShare = 0.05;
 
 struct Result {
   cycloid::CycleResult cycle;   ///< per angle (meshes) and over the cycle
@@ -33,6 +44,12 @@ struct Result {
   /// Unloaded backlash [arcsec] per roller (outer index) and crank angle; −1 off the loaded flank.
   std::vector<std::vector<double>> backlash_arcsec;
   std::string warning;          ///< the first angle that did not converge, or empty
+  /// Estimated discretisation error of each headline output (by its result.json name, its unit):
+  /// the sum of the grid and crank-angle parts; empty when not estimated.
+  std::vector<std::pair<std::string, double>> estimated_error, error_grid, error_crank;
+  std::array<int, 2> coarse_grid{0, 0};  ///< the grid of the error run
+  int crank_error_angles = 0;            ///< angles of the coarser sampling (0: not estimated)
+  std::vector<std::string> warnings;     ///< headline errors above kErrorShare, and the like
   std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
 };

@@ -69,10 +69,12 @@ inline cycloid::Crowning ParseCrowning(const Node& root, double face_width_mm) {
     c.radius_mm = n["radius_mm"].Positive();
     c.flat_length_mm = n["flat_length_mm"].NonNegative();
   } else if (type == "logarithmic") {
-    n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm"});
+    n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
     c.type = cycloid::CrowningType::kLogarithmic;
     c.coefficient_mm = n["coefficient_mm"].NonNegative();
     c.effective_length_mm = n.NonNegativeOr("effective_length_mm", 0.0);
+    c.end_drop_mm = n.NonNegativeOr("end_drop_mm", 0.0);
+    c.flat_length_mm = n.NonNegativeOr("flat_length_mm", 0.0);
   } else {
     n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
   }

@@ -462,3 +462,49 @@ TEST(ContactHardCases, BadInputThrowsWithAClearMessage) {
 
 }  // namespace
 }  // namespace camopt::contact
+
+namespace camopt::contact {
+namespace {
+
+TEST(HalfSpaceSensitivity, MatchesCentralDifferencesOfTheLoadControlledSolve) {
+  // A crowned roller on a 24 x 24 grid: the gap depends on s through a crown scale and a tilt, the
+  // load through dW/ds. The frozen-set sensitivity against central differences of full solves.
+  const Grid g = CenteredGrid(24, 24, 0.3, 6.0);
+  auto gap = [&](double s) {
+    std::vector<double> h(size_t(g.cells()));
+    for (int iy = 0; iy < g.ny; ++iy)
+      for (int ix = 0; ix < g.nx; ++ix) {
+        const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
+        h[size_t(iy) * g.nx + ix] = x * x / (2 * 5.0) * (1.0 + 0.3 * s) + (1.0 + s) * 2e-4 * y * y + s * 1e-4 * y;
+      }
+    return h;
+  };
+  auto load = [](double s) { return 1500.0 + 400.0 * s; };
+  HalfSpaceSolver solver(SolverOptions{1e-13, 5000});
+  const double e_star = 113000.0;
+  const ContactSolution base = solver.SolveForLoad(g, gap(0.0), load(0.0), e_star);
+  ASSERT_TRUE(base.converged);
+  const double h = 1e-5;
+  const std::vector<double> g0 = gap(0.0), g1 = gap(1.0);
+  std::vector<double> dgap(g0.size());
+  for (size_t k = 0; k < g0.size(); ++k) dgap[k] = g1[k] - g0[k];  // linear in s
+  const HalfSpaceSolver::Sensitivity d = solver.SensitivityForLoad(g, base.pressure_MPa, dgap, 400.0, e_star);
+  ASSERT_TRUE(d.converged);
+  const ContactSolution plus = solver.SolveForLoad(g, gap(h), load(h), e_star);
+  const ContactSolution minus = solver.SolveForLoad(g, gap(-h), load(-h), e_star);
+  ASSERT_EQ(plus.cells_in_contact, base.cells_in_contact);  // the set does not change over ±h
+  ASSERT_EQ(minus.cells_in_contact, base.cells_in_contact);
+  const double fd_approach = (plus.approach_mm - minus.approach_mm) / (2 * h);
+  EXPECT_NEAR(d.approach_mm, fd_approach, 1e-5 * std::abs(fd_approach));
+  double total = 0;
+  for (double v : d.pressure_MPa) total += v * g.cell_area_mm2();
+  EXPECT_NEAR(total, 400.0, 1e-8 * 400.0);
+  const size_t peak = size_t(base.max_pressure_cell);
+  for (size_t k : {peak, size_t(12 * 24 + 12), size_t(3 * 24 + 12)}) {
+    const double fd = (plus.pressure_MPa[k] - minus.pressure_MPa[k]) / (2 * h);
+    EXPECT_NEAR(d.pressure_MPa[k], fd, 1e-4 * std::abs(fd) + 1e-3) << k;
+  }
+}
+
+}  // namespace
+}  // namespace camopt::contact

@@ -177,6 +177,34 @@ TEST(CycloidGeometry, CrowningDropsMatchTheirFormulas) {
   EXPECT_NE(CheckCrowning(l, 30.0), "");  // effective length below the face width
 }
 
+TEST(CycloidGeometry, LogarithmicCrowningWithAnEndDropIsFinite) {
+  // Fujiwara-Kawase form: a flat of L0, then f ln(1 / (1 - (1 - exp(-zm/f)) s^2)), s from 0 at the
+  // flat's end to 1 at L/2 where the drop is zm.
+  const double b = 17.0;
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.002;
+  c.end_drop_mm = 0.01;
+  c.flat_length_mm = 4.0;
+  c.effective_length_mm = 18.0;
+  EXPECT_NEAR(CrowningDrop(c, b, 9.0), 0.01, 1e-15);   // the end of L (outside the face; formula only)
+  EXPECT_EQ(CrowningDrop(c, b, 1.5), 0.0);             // on the flat
+  for (double u : {-8.4, -5.0, 2.5, 7.0, 8.49}) {
+    const double s = (std::abs(u) - 2.0) / (9.0 - 2.0);
+    const double expected = 0.002 * std::log(1.0 / (1.0 - (1.0 - std::exp(-0.01 / 0.002)) * s * s));
+    EXPECT_NEAR(CrowningDrop(c, b, u), expected, 1e-15);
+    EXPECT_LT(CrowningDrop(c, b, u), 0.01);
+  }
+  // A large end drop tends to eq. 7 over the crowned part; a zero coefficient is no crowning.
+  c.end_drop_mm = 1.0;
+  const double s = (7.0 - 2.0) / 7.0;
+  EXPECT_NEAR(CrowningDrop(c, b, 7.0), 0.002 * std::log(1.0 / (1.0 - s * s)), 1e-12);
+  c.coefficient_mm = 0.0;
+  EXPECT_EQ(CrowningDrop(c, b, 8.0), 0.0);
+  c.end_drop_mm = -1e-3;
+  EXPECT_NE(CheckCrowning(c, b), "");
+}
+
 TEST(CycloidGeometry, InfeasibleDrivesAreReported) {
   Drive d = PaperDrive(false);
   d.eccentricity_mm = 6.0;  // e n1 = 96 > a

@@ -214,8 +214,9 @@ TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   // (too compliant: too large a deflection, pairs that then lose contact again). The end state
   // must equal a fresh solve.
   LoadedTca warm(NnmDrive(), Log(0.005), Material{}, Coarse());
-  warm.Solve(2.0e3, 0.8);
-  const MeshLoad a = warm.Solve(500.0e3, 0.8);
+  LtcaWarmStart memory;
+  warm.Solve(2.0e3, 0.8, &memory);
+  const MeshLoad a = warm.Solve(500.0e3, 0.8, &memory);
   LoadedTca fresh(NnmDrive(), Log(0.005), Material{}, Coarse());
   const MeshLoad b = fresh.Solve(500.0e3, 0.8);
   ASSERT_TRUE(a.converged && b.converged);
@@ -224,7 +225,7 @@ TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 0.01 * b.max_pressure_MPa);
   EXPECT_NEAR(a.deflection_rad, b.deflection_rad, 0.005 * b.deflection_rad);
   // And back down: heavy-load memory at a light load.
-  const MeshLoad c = warm.Solve(2.0e3, 0.8);
+  const MeshLoad c = warm.Solve(2.0e3, 0.8, &memory);
   LoadedTca fresh2(NnmDrive(), Log(0.005), Material{}, Coarse());
   const MeshLoad d = fresh2.Solve(2.0e3, 0.8);
   EXPECT_EQ(c.pairs_in_contact, d.pairs_in_contact);
@@ -264,12 +265,151 @@ TEST(CycloidLtca, CrowningMovesThePeakOffTheEdges) {
   }
 }
 
+TEST(CycloidLtca, ContactEndDistanceIsLocatedWithinACell) {
+  // A crowned tooth whose pattern ends inside the face: the end distance on coarse grids against
+  // the last loaded row's outer boundary on a fine grid (error <= its cell), within a fifth of the
+  // coarse cell (the row-centre rule alone would be off by up to half a cell).
+  Crowning c = Log(0.006);
+  c.effective_length_mm = 18.7;
+  auto solve = [&](int q) {
+    LoadedOptions o = Coarse(16, q);
+    o.edge_margin = true;
+    return LoadedTca(NnmDrive(), c, Material{}, o).Solve(350.0e3, 0.8);
+  };
+  const MeshLoad fine = solve(192);
+  ASSERT_TRUE(fine.converged);
+  const double dy_fine = 17.0 / 192;
+  for (const PairLoad& p : fine.pairs) {
+    double reference = kInf;  // per pair: the smaller of the two sides
+    for (int side : {0, 1}) {
+      int last = -1;
+      for (int j = 0; j < 96; ++j) {
+        const int iy = side ? 96 + j : 95 - j;
+        for (int ix = 0; ix < p.grid.nx; ++ix)
+          if (p.pressure_MPa[size_t(iy) * p.grid.nx + ix] > 0) last = j;
+      }
+      reference = std::min(reference, 8.5 - (last + 1) * dy_fine);
+    }
+    ASSERT_GT(reference, 0.5);  // the pattern ends inside the face
+    for (int q : {24, 48}) {
+      const MeshLoad m = solve(q);
+      for (const PairLoad& pq : m.pairs)
+        if (pq.roller == p.roller) {
+          EXPECT_NEAR(pq.end_distance_mm, reference, 0.2 * 17.0 / q + dy_fine) << "q " << q << " roller " << p.roller;
+        }
+    }
+  }
+}
+
+TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
+  // Frozen contact sets (design-notes §1) against central differences of converged solves, for the
+  // torque, each field of a finite-drop logarithmic crowning and the modifications Δa, Δρ.
+  LoadedOptions o = Coarse(16, 16);
+  o.tolerance = 1e-11;
+  o.solver_tolerance = 1e-12;
+  o.rough_solver_tolerance = 0;  // final-tolerance passes only
+  o.max_iterations = 400;
+  Crowning c = Log(0.004);
+  c.effective_length_mm = 18.7;
+  c.end_drop_mm = 0.006;
+  const double torque = 350.0e3, crank = 0.8;
+  const LoadedTca tca(NnmDrive(), c, Material{}, o);
+  const MeshLoad m = tca.Solve(torque, crank);
+  ASSERT_TRUE(m.converged) << m.message;
+  for (const char* name : {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm",
+                           "delta_position_mm", "delta_radius_mm"}) {
+    const LoadedTca::Derivative d = tca.Differentiate(m, name);
+    ASSERT_TRUE(d.converged) << name;
+    auto at = [&](double sign) {
+      Crowning cc = c;
+      double t = torque;
+      const std::string n = name;
+      double h = 0;
+      if (n == "torque_Nmm") t += sign * (h = 1e-5 * torque);
+      if (n == "coefficient_mm") cc.coefficient_mm += sign * (h = 1e-5 * c.coefficient_mm);
+      if (n == "effective_length_mm") cc.effective_length_mm += sign * (h = 1e-5 * c.effective_length_mm);
+      if (n == "end_drop_mm") cc.end_drop_mm += sign * (h = 1e-5 * c.end_drop_mm);
+      Drive dd = NnmDrive();
+      if (n == "delta_position_mm") dd.delta_position_mm += sign * (h = 1e-6);
+      if (n == "delta_radius_mm") dd.delta_radius_mm += sign * (h = 1e-6);
+      if (n == "delta_position_mm" || n == "delta_radius_mm")
+        return std::pair<MeshLoad, double>(LoadedTca(dd, c, Material{}, o).Solve(t, crank), h);
+      return std::pair<MeshLoad, double>(tca.WithCrowning(cc).Solve(t, crank), h);
+    };
+    const auto [plus, h] = at(1.0);
+    const auto [minus, h2] = at(-1.0);
+    ASSERT_EQ(plus.pairs.size(), m.pairs.size());
+    ASSERT_EQ(minus.pairs.size(), m.pairs.size());
+    const double fd = (plus.deflection_rad - minus.deflection_rad) / (2 * h);
+    EXPECT_NEAR(d.deflection_rad, fd, 2e-3 * std::abs(fd) + 1e-14) << name;
+    const double fdr = (plus.rotation_rad - minus.rotation_rad) / (2 * h);
+    EXPECT_NEAR(d.rotation_rad, fdr, 2e-3 * std::abs(fdr) + 1e-14) << name;
+    double scale = 0;
+    for (size_t i = 0; i < m.pairs.size(); ++i)
+      scale = std::max(scale, std::abs((plus.pairs[i].load_N - minus.pairs[i].load_N) / (2 * h)));
+    for (size_t i = 0; i < m.pairs.size(); ++i) {
+      const double fdl = (plus.pairs[i].load_N - minus.pairs[i].load_N) / (2 * h);
+      EXPECT_NEAR(d.pair_load_N[i], fdl, 5e-3 * scale) << name << " pair " << i;
+    }
+  }
+  EXPECT_THROW(tca.Differentiate(m, "flat_length_um"), std::invalid_argument);
+}
+
 TEST(CycloidLtca, LteRepeatsEveryMeshPeriod) {
   LoadedTca tca(NnmDrive(), Crowning{}, Material{}, Coarse(12, 12));
   const double period = 2 * kPi / 16;
   const MeshLoad a = tca.Solve(350.0e3, 0.1), b = tca.Solve(350.0e3, 0.1 + 3 * period);
   EXPECT_NEAR(a.rotation_rad, b.rotation_rad, 1e-3 * a.rotation_rad);
   EXPECT_NEAR(a.max_pressure_MPa, b.max_pressure_MPa, 1e-3 * a.max_pressure_MPa);
+}
+
+void ExpectSameBits(const MeshLoad& a, const MeshLoad& b) {
+  EXPECT_EQ(a.rotation_rad, b.rotation_rad);
+  EXPECT_EQ(a.max_pressure_MPa, b.max_pressure_MPa);
+  ASSERT_EQ(a.pairs.size(), b.pairs.size());
+  for (size_t i = 0; i < a.pairs.size(); ++i) {
+    EXPECT_EQ(a.pairs[i].load_N, b.pairs[i].load_N);
+    EXPECT_EQ(a.pairs[i].grid.dx, b.pairs[i].grid.dx);
+    EXPECT_EQ(a.pairs[i].pressure_MPa, b.pairs[i].pressure_MPa);
+  }
+}
+
+TEST(CycloidLtca, ASolveDependsOnItsInputsOnly) {
+  // The same solve before and after other solves (other torques, angles and a crowned copy that
+  // shares the solver caches) gives the same bits; with a warm start from elsewhere it gives the
+  // same grids and the same answer within the tolerances.
+  const LoadedTca tca(NnmDrive(), Log(0.005), Material{}, Coarse());
+  const MeshLoad a = tca.Solve(350.0e3, 0.8);
+  LtcaWarmStart memory;
+  tca.Solve(20.0e3, 0.5, &memory);
+  tca.WithCrowning(Log(0.02)).Solve(550.0e3, 0.75, &memory);
+  tca.Solve(500.0e3, 0.79);
+  const MeshLoad b = tca.Solve(350.0e3, 0.8);
+  ExpectSameBits(a, b);
+  const LoadedTca other(NnmDrive(), Log(0.005), Material{}, Coarse());
+  ExpectSameBits(a, other.Solve(350.0e3, 0.8));
+  const MeshLoad w = tca.Solve(350.0e3, 0.8, &memory);
+  ASSERT_TRUE(w.converged);
+  ASSERT_EQ(w.pairs.size(), a.pairs.size());
+  for (size_t i = 0; i < a.pairs.size(); ++i) {
+    EXPECT_EQ(w.pairs[i].grid.dx, a.pairs[i].grid.dx);
+    EXPECT_NEAR(w.pairs[i].load_N, a.pairs[i].load_N, 3e-3 * a.pairs[i].load_N);
+  }
+  EXPECT_NEAR(w.deflection_rad, a.deflection_rad, 2e-3 * a.deflection_rad);
+}
+
+TEST(CycloidLtca, ACycleDependsOnItsInputsOnly) {
+  const LoadedTca tca(NnmDrive(), Log(0.005), Material{}, Coarse(12, 12));
+  const std::vector<double> angles = UniformCrankAngles(5, 2 * kPi / 16);
+  const CycleResult a = RunCycle(tca, 350.0e3, angles);
+  RunCycle(tca.WithCrowning(Log(0.0)), 550.0e3, UniformCrankAngles(3, 1.0));
+  std::vector<double> reversed(angles.rbegin(), angles.rend());
+  RunCycle(tca, 350.0e3, reversed);
+  const CycleResult b = RunCycle(tca, 350.0e3, angles);
+  EXPECT_EQ(a.lte_arcsec, b.lte_arcsec);
+  EXPECT_EQ(a.gear_ratio, b.gear_ratio);
+  EXPECT_EQ(a.max_pressure_MPa, b.max_pressure_MPa);
+  for (size_t k = 0; k < angles.size(); ++k) ExpectSameBits(a.meshes[k], b.meshes[k]);
 }
 
 TEST(CycloidLtca, BadInputIsRejected) {
@@ -323,6 +463,57 @@ TEST(CycloidStudies, LtcaStudyReportsEveryAngle) {
   // 120° and 300° are 8 mesh periods apart: the same state.
   EXPECT_NEAR(r.cycle.meshes[1].max_pressure_MPa, r.cycle.meshes[2].max_pressure_MPa,
               1e-3 * r.cycle.max_pressure_MPa);
+}
+
+TEST(CycloidStudies, LtcaSamplesOneMeshPeriodAndEstimatesItsErrors) {
+  namespace ltca = studies::cycloid_ltca;
+  const nlohmann::json study = nlohmann::json::parse(
+      StudyJson(R"({"type": "none"})", R"({"crank_angles_per_mesh_period": 8, "grid": [12, 12]})"));
+  const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+  ASSERT_EQ(s.crank_angles_rad.size(), 8u);
+  EXPECT_NEAR(s.crank_angles_rad[1], 2 * kPi / 16 / 8, 1e-15);
+  const ltca::Result r = ltca::Run(s, studies::RunContext{"", true});
+  // The errors recomputed here: every second angle of the cycle, and a 6 x 6 grid over those angles.
+  std::vector<double> sub;
+  std::vector<MeshLoad> meshes;
+  for (size_t k = 0; k < 8; k += 2) {
+    sub.push_back(s.crank_angles_rad[k]);
+    meshes.push_back(r.cycle.meshes[k]);
+  }
+  const CycleResult half = SummariseCycle(s.drive, meshes, sub);
+  const CycleResult coarse = RunCycle(LoadedTca(s.drive, s.crowning, s.material, Coarse(6, 6)), 350.0e3, sub);
+  const nlohmann::json j = ltca::ToJson(s, r);
+  const auto& e = j["estimated_error"];
+  EXPECT_NEAR(e["lte_peak_to_peak_arcsec"].get<double>(),
+              std::abs(r.cycle.lte_peak_to_peak_arcsec - half.lte_peak_to_peak_arcsec) +
+                  std::abs(half.lte_peak_to_peak_arcsec - coarse.lte_peak_to_peak_arcsec), 1e-12);
+  EXPECT_NEAR(e["max_contact_stress_MPa"].get<double>(),
+              std::abs(r.cycle.max_pressure_MPa - half.max_pressure_MPa) +
+                  std::abs(half.max_pressure_MPa - coarse.max_pressure_MPa), 1e-9);
+  for (const char* k : {"gear_ratio_peak_to_peak", "lte_mean_abs_arcsec", "max_pair_load_N"})
+    EXPECT_TRUE(e.contains(k)) << k;
+  EXPECT_EQ(j["estimated_error_sources"]["grid"]["coarse_grid"], nlohmann::json::array({6, 6}));
+  // A straight tooth's edge peak on a 12 x 12 grid against 6 x 6: the peak stress moves by more
+  // than 5 %, and the study says so.
+  ASSERT_GT(e["max_contact_stress_MPa"].get<double>(), 0.05 * r.cycle.max_pressure_MPa);
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().rfind("max_contact_stress_MPa", 0) == 0;
+  EXPECT_TRUE(warned);
+}
+
+TEST(CycloidStudies, PaperDriveRippleWithTheExampleSettingsIsNearTheConvergedValues) {
+  // The paper's drive (NNM, 350 N·m, no crowning) with the example's settings against an
+  // independent model converged in crank angle and grid (issue 13; docs/validation.md): LTE
+  // peak-to-peak 1.37 arcsec and GR peak-to-peak 0.027, within 5 % or within the estimated error.
+  namespace ltca = studies::cycloid_ltca;
+  const nlohmann::json study = nlohmann::json::parse(
+      camopt::testing::ReadFile(camopt::testing::SourcePath("studies/examples/cycloid_ltca_nnm_none.json")));
+  const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+  const ltca::Result r = ltca::Run(s, studies::RunContext{"", true});
+  const nlohmann::json j = ltca::ToJson(s, r);
+  const double lte = j["lte_peak_to_peak_arcsec"], gr = j["gear_ratio_peak_to_peak"];
+  EXPECT_LE(std::abs(lte - 1.37), std::max(0.05 * 1.37, j["estimated_error"]["lte_peak_to_peak_arcsec"].get<double>()));
+  EXPECT_LE(std::abs(gr - 0.027), std::max(0.05 * 0.027, j["estimated_error"]["gear_ratio_peak_to_peak"].get<double>()));
 }
 
 TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
@@ -405,6 +596,60 @@ TEST(CycloidStudies, CrowningTuningFindsAFeasibleCoefficient) {
     }
   // Every evaluation is counted: the scan, the reference and the optimizer's.
   EXPECT_EQ(r.evaluations, int(r.curve.size() + 1 + r.history.size()));
+}
+
+TEST(CycloidStudies, CrowningTuningIsTheSameWhateverRanBefore) {
+  // The same study gives byte-identical result.json after another scan (other size) ran in the
+  // same process; a point common to both scans has the same bits in both.
+  namespace tuning = studies::cycloid_crowning_tuning;
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  auto run = [&](const std::string& text) {
+    const nlohmann::json study = nlohmann::json::parse(text);
+    const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+    const tuning::Result r = tuning::Run(s, ctx);
+    return std::pair<tuning::Result, std::string>(r, tuning::ToJson(s, r).dump());
+  };
+  const auto [first, first_json] = run(kTuningStudy);
+  std::string other = kTuningStudy;
+  other.replace(other.find("\"curve_points\": 4"), 17, "\"curve_points\": 3");
+  const auto [wide, wide_json] = run(other);
+  const auto [again, again_json] = run(kTuningStudy);
+  EXPECT_EQ(first_json, again_json);
+  ASSERT_EQ(wide.curve.size(), 3u);
+  EXPECT_EQ(wide.curve[0].stress_MPa, first.curve[0].stress_MPa);       // f = 0
+  EXPECT_EQ(wide.curve[2].stress_MPa, first.curve[3].stress_MPa);       // f = 0.02
+  EXPECT_EQ(wide.curve[2].edge_margin_um, first.curve[3].edge_margin_um);
+}
+
+TEST(CycloidStudies, CrowningTuningTakesAFiniteDropForm) {
+  namespace tuning = studies::cycloid_crowning_tuning;
+  std::string text = kTuningStudy;
+  text.replace(text.find("\"tuning\""), 0,
+               R"("crowning": {"type": "logarithmic", "effective_length_mm": 18.7, "end_drop_mm": 0.01}, )");
+  const nlohmann::json study = nlohmann::json::parse(text);
+  const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+  EXPECT_FALSE(s.tune_length);
+  EXPECT_EQ(s.length_lo_mm, 18.7);
+  EXPECT_EQ(s.shape.end_drop_mm, 0.01);
+  const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
+  for (const auto& e : r.history) EXPECT_EQ(e.length_mm, 18.7);
+  // The scan's f = 0.02 point is that finite-drop crowning: the model run directly gives its bits.
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.02;
+  c.effective_length_mm = 18.7;
+  c.end_drop_mm = 0.01;
+  LoadedOptions o = s.options;
+  o.keep_pressure = false;
+  const CycleResult d = RunCycle(LoadedTca(s.drive, c, s.material, o), 350.0e3,
+                                 UniformCrankAngles(2, 2 * kPi / 16));
+  EXPECT_EQ(r.curve.back().stress_MPa, d.max_pressure_MPa);
+  // A crowning that is not logarithmic is an input error.
+  std::string bad = kTuningStudy;
+  bad.replace(bad.find("\"tuning\""), 0, R"("crowning": {"type": "full"}, )");
+  const nlohmann::json jb = nlohmann::json::parse(bad);
+  EXPECT_THROW(tuning::Parse(studies::Node(&jb, "t.json", "")), studies::StudyError);
 }
 
 TEST(CycloidStudies, CrowningTuningWritesItsFiles) {

@@ -615,6 +615,78 @@ ContactSolution HalfSpaceSolver::SolveForApproach(const Grid& grid,
   return impl_->Solve(grid, gap_mm, false, approach_mm, e_star_MPa, nullptr);
 }
 
+HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
+    const Grid& grid, const std::vector<double>& pressure, const std::vector<double>& dgap,
+    double dload, double e_star, double tolerance) {
+  const size_t n = size_t(grid.nx) * grid.ny;
+  if (pressure.size() != n || dgap.size() != n)
+    throw std::invalid_argument("SensitivityForLoad: pressure and gap derivative need one value per cell");
+  Sensitivity out;
+  out.pressure_MPa.assign(n, 0.0);
+  std::vector<size_t> set;
+  for (size_t k = 0; k < n; ++k)
+    if (pressure[k] > 0) set.push_back(k);
+  if (set.empty()) {
+    out.converged = true;
+    return out;
+  }
+  const double m = double(set.size());
+  // The part that carries the load change: uniform over C; the rest z sums to zero.
+  const double uniform = dload / (grid.cell_area_mm2() * m);
+  std::vector<double> full(n, 0.0);
+  auto apply = [&](const std::vector<double>& z_on_set) {  // P K z on C (z zero off C)
+    std::fill(full.begin(), full.end(), 0.0);
+    for (size_t i = 0; i < set.size(); ++i) full[set[i]] = z_on_set[i];
+    const std::vector<double> u = Displacement(grid, full, e_star);
+    std::vector<double> r(set.size());
+    double mean = 0;
+    for (size_t i = 0; i < set.size(); ++i) mean += (r[i] = u[set[i]]);
+    mean /= m;
+    for (double& v : r) v -= mean;
+    return r;
+  };
+  std::vector<double> base(set.size(), uniform);
+  std::vector<double> kb = apply(base);  // P K dp0
+  std::vector<double> b(set.size());
+  double mean_dh = 0;
+  for (size_t i = 0; i < set.size(); ++i) mean_dh += dgap[set[i]];
+  mean_dh /= m;
+  for (size_t i = 0; i < set.size(); ++i) b[i] = -(dgap[set[i]] - mean_dh) - kb[i];
+  std::vector<double> z(set.size(), 0.0), r = b, d = b;
+  double rr = 0, bb = 0;
+  for (size_t i = 0; i < set.size(); ++i) rr += r[i] * r[i];
+  bb = rr;
+  int it = 0;
+  const int max_it = std::max(50, 4 * int(set.size()));
+  while (it < max_it && rr > tolerance * tolerance * bb && bb > 0) {
+    const std::vector<double> ad = apply(d);
+    double dad = 0;
+    for (size_t i = 0; i < set.size(); ++i) dad += d[i] * ad[i];
+    if (!(dad > 0)) break;
+    const double alpha = rr / dad;
+    double rr_new = 0;
+    for (size_t i = 0; i < set.size(); ++i) {
+      z[i] += alpha * d[i];
+      r[i] -= alpha * ad[i];
+      rr_new += r[i] * r[i];
+    }
+    const double beta = rr_new / rr;
+    rr = rr_new;
+    for (size_t i = 0; i < set.size(); ++i) d[i] = r[i] + beta * d[i];
+    ++it;
+  }
+  out.iterations = it;
+  out.converged = bb == 0 || rr <= tolerance * tolerance * bb;
+  // dδ = mean over C of (K dp + dh).
+  std::fill(full.begin(), full.end(), 0.0);
+  for (size_t i = 0; i < set.size(); ++i) full[set[i]] = out.pressure_MPa[set[i]] = uniform + z[i];
+  const std::vector<double> u = Displacement(grid, full, e_star);
+  double da = 0;
+  for (size_t i = 0; i < set.size(); ++i) da += u[set[i]] + dgap[set[i]];
+  out.approach_mm = da / m;
+  return out;
+}
+
 std::vector<double> HalfSpaceSolver::Displacement(const Grid& grid,
                                                   const std::vector<double>& pressure_MPa,
                                                   double e_star_MPa) {

@@ -98,6 +98,20 @@ class HalfSpaceSolver {
   std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
                                    double e_star_MPa);
 
+  /// Forward sensitivity at a converged load-controlled solution (design-notes §1): with the
+  /// contact set C = {p > 0} of `pressure_MPa` frozen, solves K_CC dp_C − dδ·1 = −dh_C and
+  /// cA·Σ dp_C = dW for one parameter s (dgap_mm = ∂h/∂s per cell, dload_N = dW/ds) by conjugate
+  /// gradients on the zero-sum subspace of C (the same convolution). Exact away from set changes.
+  struct Sensitivity {
+    std::vector<double> pressure_MPa;  ///< dp/ds per cell (0 off C)
+    double approach_mm = 0;            ///< dδ/ds
+    int iterations = 0;
+    bool converged = false;
+  };
+  Sensitivity SensitivityForLoad(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                 const std::vector<double>& dgap_mm, double dload_N,
+                                 double e_star_MPa, double tolerance = 1e-10);
+
   const SolverOptions& options() const;
 
  private:

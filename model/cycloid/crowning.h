@@ -6,6 +6,17 @@
 //   PCM (partial):     Δp(u) = R_p − sqrt(R_p² − (|u| − L0/2)²) for |u| > L0/2, else 0  eq. (6)
 //   LCM (logarithmic): Δl(u) = f ln(1 / (1 − (2u/L)²)),  |u| < L/2                    eq. (7)
 //
+// Eq. (7) with L = the face width B has an unbounded drop at the face ends: the end cell of a grid
+// of q axial cells sees f·ln(1/(1 − (1 − 1/q)²)) ≈ f·ln(q/2), which grows as the cells shrink, so
+// no grid-converged optimum exists for that form (docs/cycloid.md). Two finite-drop forms:
+//   - LCM with an effective length L > B (drop f·ln(1/(1 − (B/L)²)) at the face ends);
+//   - the logarithmic profile with a prescribed end drop z_m (the three-parameter form of
+//     Fujiwara & Kawase, NTN Technical Review 75, 2007, written here from the formula): a flat
+//     centre of length L0, then with s = (|u| − L0/2)/(L/2 − L0/2) ∈ [0, 1]
+//       Δ(u) = f ln(1 / (1 − (1 − e^(−z_m/f)) s²)),
+//     equal to z_m at the end of the effective length (s = 1) and tending to eq. (7) as z_m → ∞.
+//     end_drop_mm = 0 selects eq. (7) (no prescribed drop).
+//
 // Where the paper's discretised forms (eqs. 18–19) differ from eqs. (5)–(7) we follow eqs. (5)–(7)
 // evaluated at the cell centres: eq. (18) applies the full-circle drop R_p − sqrt(R_p² − u²) beyond
 // the flat (a step at |u| = L0/2, not a circle tangent to the flat as eq. (6) and the text define),
@@ -29,6 +40,7 @@ struct Crowning {
   double flat_length_mm = 0;       ///< L0 (partial)
   double coefficient_mm = 0;       ///< f (logarithmic)
   double effective_length_mm = 0;  ///< L (logarithmic); >= face width; 0 = face width
+  double end_drop_mm = 0;          ///< z_m (logarithmic), the drop at |u| = L/2; 0 = unbounded (eq. 7)
 };
 
 /// Checks crowning parameters against the face width; "" or the reason they are invalid.
@@ -49,6 +61,9 @@ inline std::string CheckCrowning(const Crowning& c, double face_width_mm) {
       if (!(c.coefficient_mm >= 0)) return "logarithmic crowning coefficient must be >= 0";
       if (!(c.effective_length_mm == 0 || c.effective_length_mm >= face_width_mm))
         return "effective length must be >= the face width";
+      if (!(c.end_drop_mm >= 0)) return "end drop must be >= 0";
+      if (!(c.flat_length_mm >= 0 && c.flat_length_mm < face_width_mm))
+        return "flat length must be in [0, face width)";
       return "";
   }
   return "unknown crowning type";
@@ -59,7 +74,7 @@ inline std::string CheckCrowning(const Crowning& c, double face_width_mm) {
 ///      cell centres are always inside). Over T so that the coefficient can carry derivatives.
 template <typename T>
 T CrowningDrop(CrowningType type, const T& radius, const T& flat_length, const T& coefficient,
-               const T& effective_length, const T& u) {
+               const T& effective_length, const T& u, const T& end_drop = T(0.0)) {
   using std::abs;
   using std::log;
   using std::sqrt;
@@ -74,8 +89,14 @@ T CrowningDrop(CrowningType type, const T& radius, const T& flat_length, const T
       return s * s / (radius + sqrt(radius * radius - s * s));
     }
     case CrowningType::kLogarithmic: {
-      const T r = T(2.0) * u / effective_length;
-      return -coefficient * log(T(1.0) - r * r);  // log1p-free: r² ≤ (1 − 1/q)² in use
+      using std::exp;
+      const T half_flat = T(0.5) * flat_length;
+      const T r = PositivePart(T(abs(u) - half_flat)) / (T(0.5) * effective_length - half_flat);
+      if (!(end_drop > T(0.0)))
+        return -coefficient * log(T(1.0) - r * r);  // log1p-free: r² ≤ (1 − 1/q)² in use
+      if (!(coefficient > T(0.0))) return T(0.0);
+      // f ln(1 / (1 − (1 − e^(−z_m/f)) r²)): finite, z_m at r = 1.
+      return -coefficient * log(T(1.0) - (T(1.0) - exp(-end_drop / coefficient)) * r * r);
     }
   }
   return T(0.0);
@@ -84,7 +105,8 @@ T CrowningDrop(CrowningType type, const T& radius, const T& flat_length, const T
 /// Crowning drop [mm] for the parameters of c on a face of width face_width_mm.
 inline double CrowningDrop(const Crowning& c, double face_width_mm, double u_mm) {
   const double length = c.effective_length_mm > 0 ? c.effective_length_mm : face_width_mm;
-  return CrowningDrop<double>(c.type, c.radius_mm, c.flat_length_mm, c.coefficient_mm, length, u_mm);
+  return CrowningDrop<double>(c.type, c.radius_mm, c.flat_length_mm, c.coefficient_mm, length, u_mm,
+                              c.end_drop_mm);
 }
 
 }  // namespace camopt::cycloid

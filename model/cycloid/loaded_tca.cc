@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "model/common/roots.h"
+#include <ceres/jet.h>
+
 #include "model/contact/hertz.h"
 
 namespace camopt::cycloid {
@@ -72,6 +74,47 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
   return BisectIncreasing(total, moment, 0.0, hi, 200, 1e-15, 1e-6).mid();
 }
 
+// Distance from the contact's axial end to the face end [mm], the smaller of the two sides, with
+// the end located within a cell: along each side the row maxima P (over x) fall like sqrt(distance
+// to the end) near an elliptical end, so P² is linear there and the end lies t/(1 − t) cells beyond
+// the outermost loaded row k, t = P_k² / P_(k−1)². When the end row itself is loaded the distance
+// is dy/2 − dy·t/(1 − t) down to t = 1/3 (end exactly at the face end), continued linearly (C¹)
+// beyond: −(9/4)·dy·(t − 1/3), bounded for a pressure that rises towards the edge (a straight
+// tooth). Continuous in the crowning up to the P² model's error when a row enters contact.
+double EndDistance(const contact::Grid& g, const std::vector<double>& p) {
+  std::vector<double> rows(g.ny, 0.0);
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) rows[iy] = std::max(rows[iy], p[size_t(iy) * g.nx + ix]);
+  const double half = 0.5 * g.ny * g.dy;
+  double result = kInf;
+  for (int side : {-1, 1}) {
+    // Rows outward from the face centre on this side.
+    std::vector<int> out;
+    if (side > 0)
+      for (int iy = g.ny / 2; iy < g.ny; ++iy) out.push_back(iy);
+    else
+      for (int iy = (g.ny - 1) / 2; iy >= 0; --iy) out.push_back(iy);
+    int k = -1;
+    for (int j = 0; j < int(out.size()); ++j)
+      if (rows[out[j]] > 0) k = j;
+    if (k < 0) continue;
+    const double dist_k = std::abs(g.y_centre_mm(out[k]));
+    if (k == 0 || !(rows[out[k - 1]] > 0)) {
+      result = std::min(result, half - dist_k - 0.5 * g.dy);
+      continue;
+    }
+    const double pk = rows[out[k]], pp = rows[out[k - 1]];
+    const double t = (pk * pk) / (pp * pp);
+    double d;
+    if (k == int(out.size()) - 1)
+      d = t <= 1.0 / 3.0 ? 0.5 * g.dy - g.dy * t / (1.0 - t) : -2.25 * g.dy * (t - 1.0 / 3.0);
+    else
+      d = half - dist_k - g.dy * std::min(t / (1.0 - std::min(t, 0.5)), 1.0);
+    result = std::min(result, d);
+  }
+  return std::isfinite(result) ? result : 0.0;
+}
+
 }  // namespace
 
 LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
@@ -80,9 +123,10 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
       crowning_(crowning),
       material_(material),
       options_(options),
-      solver_(contact::SolverOptions{options.solver_tolerance, 2000}),
-      rough_solver_(contact::SolverOptions{
-          std::max(options.solver_tolerance, options.rough_solver_tolerance), 2000}) {
+      solver_(std::make_shared<contact::HalfSpaceSolver>(
+          contact::SolverOptions{options.solver_tolerance, 2000})),
+      rough_solver_(std::make_shared<contact::HalfSpaceSolver>(contact::SolverOptions{
+          std::max(options.solver_tolerance, options.rough_solver_tolerance), 2000})) {
   if (const std::string why = CheckDrive(drive); !why.empty()) throw std::invalid_argument(why);
   if (const std::string why = CheckCrowning(crowning, drive.face_width_mm); !why.empty())
     throw std::invalid_argument(why);
@@ -92,6 +136,12 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
     throw std::invalid_argument("the contact grid needs at least 2 x 2 cells");
   e_star_ = material.composite_modulus_MPa();
   SetCrowning(crowning);
+}
+
+LoadedTca LoadedTca::WithCrowning(const Crowning& crowning) const {
+  LoadedTca copy = *this;
+  copy.SetCrowning(crowning);
+  return copy;
 }
 
 void LoadedTca::SetCrowning(const Crowning& crowning) {
@@ -136,7 +186,16 @@ std::vector<double> LoadedTca::Gap(const contact::Grid& grid, double roller_curv
   return gap;
 }
 
-MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
+namespace {
+// A pressure in the outer columns across the profile: the grid cuts the contact.
+bool CutAcross(const contact::Grid& g, const std::vector<double>& p) {
+  for (int iy = 0; iy < g.ny; ++iy)
+    if (p[size_t(iy) * g.nx] > 0 || p[size_t(iy) * g.nx + g.nx - 1] > 0) return true;
+  return false;
+}
+}  // namespace
+
+MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmStart* warm) const {
   if (!(torque_Nmm >= 0)) throw std::invalid_argument("torque must be >= 0");
   MeshLoad out;
   out.crank_angle_rad = crank_angle_rad;
@@ -162,7 +221,6 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
     double curvature_sum;  // 1/R'
     contact::Grid grid;
     std::vector<double> gap, pressure;
-    bool has_grid = false;
     double load = 0, approach = 0, max_p = 0;
     int solver_iterations = 0;
   };
@@ -180,19 +238,47 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   std::vector<PairModel> models(n);
   std::vector<double> arms(n), backlash(n);
   // First guess of a pair compliance: a line contact of the face width, δ ≈ 2F/(π B E*) · ln(…),
-  // with the logarithm ≈ 5; replaced by the pair's own compliance from the previous crank angle.
+  // with the logarithm ≈ 5.
   const double c_line = 2.0 / (kPi * drive_.face_width_mm * e_star_) * 5.0;
   for (size_t i = 0; i < n; ++i) {
     arms[i] = cand[i].g->arm_mm;
     backlash[i] = cand[i].g->backlash;
     models[i].compliance0 = c_line;
-    // The same roller at the previous crank angle: its law is a close first model.
-    auto it = memory_.find(cand[i].g->roller);
-    if (it != memory_.end() && it->second.f1 > 0 && it->second.d1 > 0) {
-      models[i].f1 = it->second.f1;
-      models[i].d1 = it->second.d1;
-      models[i].gamma = it->second.gamma;
-      models[i].solved = true;
+  }
+  // The grids come from the inputs only: each pair's force under that linear first model (a
+  // deterministic estimate; at least a tenth of the largest), as a ladder size of a multiple of
+  // its Hertz half-width. A grid grows only when the converged contact reaches its outer columns.
+  {
+    const double d0 = SolveDeflection(models, arms, backlash, moment);
+    std::vector<double> f_est(n);
+    double f_max = 0;
+    for (size_t i = 0; i < n; ++i) {
+      f_est[i] = models[i].Force(arms[i] * (d0 - backlash[i]));
+      f_max = std::max(f_max, f_est[i]);
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const double b_hertz = contact::LineContactHalfWidth(
+          std::max(f_est[i], 0.1 * f_max), drive_.face_width_mm, 1.0 / cand[i].curvature_sum, e_star_);
+      cand[i].grid = MakeGrid(LadderAbove(options_.grid_half_width_factor * b_hertz));
+      cand[i].gap = Gap(cand[i].grid, cand[i].g->roller_curvature, cand[i].g->profile_curvature);
+    }
+  }
+  // The warm start: the same roller's law and pressure from the caller's previous solve.
+  if (warm) {
+    for (size_t i = 0; i < n; ++i) {
+      auto it = warm->pairs.find(cand[i].g->roller);
+      if (it == warm->pairs.end()) continue;
+      const LtcaWarmStart::Pair& w = it->second;
+      if (w.f1 > 0 && w.d1 > 0) {
+        models[i].f1 = w.f1;
+        models[i].d1 = w.d1;
+        models[i].gamma = w.gamma;
+        models[i].solved = true;
+      }
+      const contact::Grid& g = cand[i].grid;
+      if (w.grid.nx == g.nx && w.grid.ny == g.ny && w.grid.dx == g.dx && w.grid.x0 == g.x0 &&
+          w.pressure.size() == cand[i].gap.size())
+        cand[i].pressure = w.pressure;
     }
   }
 
@@ -205,7 +291,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   bool final_pass = options_.rough_solver_tolerance <= options_.solver_tolerance;
   int iter = 0;
   for (; iter < options_.max_iterations; ++iter) {
-    contact::HalfSpaceSolver& solver = final_pass ? solver_ : rough_solver_;
+    contact::HalfSpaceSolver& solver = final_pass ? *solver_ : *rough_solver_;
     delta_phi = SolveDeflection(models, arms, backlash, moment);
     double max_residual = 0, max_approach = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -225,46 +311,13 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
         max_approach = std::max(max_approach, c.approach);
         continue;
       }
-      // Grid across the profile: a multiple of the Hertz half-width at this force.
-      const double b_hertz =
-          contact::LineContactHalfWidth(force, drive_.face_width_mm, 1.0 / c.curvature_sum, e_star_);
-      const double want = LadderAbove(options_.grid_half_width_factor * b_hertz);
-      if (!c.has_grid) {
-        auto it = memory_.find(c.g->roller);
-        double half = want;
-        // Keep the previous angle's grid when it still fits: its pressure is a warm start.
-        if (it != memory_.end() && it->second.grid.nx == options_.profile_cells) {
-          const double prev = -it->second.grid.x0;
-          if (prev >= 0.8 * want && prev <= 1.7 * want) half = prev;
-        }
-        c.grid = MakeGrid(half);
-        c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
-        c.has_grid = true;
-        if (it != memory_.end() && std::abs(it->second.grid.x0 - c.grid.x0) < 1e-15)
-          c.pressure = it->second.pressure;
-      } else if (-c.grid.x0 < 0.55 * want) {  // load grew a lot: the contact outgrows the grid
-        c.grid = MakeGrid(want);
-        c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
-        c.pressure.clear();
-      }
-      contact::ContactSolution s;
-      for (int grow = 0; grow < 6; ++grow) {
-        s = c.pressure.size() == c.gap.size()
-                ? solver.SolveForLoad(c.grid, c.gap, force, e_star_, c.pressure)
-                : solver.SolveForLoad(c.grid, c.gap, force, e_star_);
-        ++out.contact_solves;
-        out.solver_iterations += s.iterations;
-        // A pressure in the outer columns across the profile: the grid cuts the contact.
-        bool cut = false;
-        for (int iy = 0; iy < c.grid.ny && !cut; ++iy)
-          cut = s.pressure_MPa[size_t(iy) * c.grid.nx] > 0 ||
-                s.pressure_MPa[size_t(iy) * c.grid.nx + c.grid.nx - 1] > 0;
-        if (!cut) break;
-        c.grid = MakeGrid(LadderAbove(-c.grid.x0 * 1.4));
-        c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
-        c.pressure.clear();
-      }
-      if (!s.converged && out.message.empty()) out.message = "contact solver: " + s.message;
+      const contact::ContactSolution s =
+          c.pressure.size() == c.gap.size()
+              ? solver.SolveForLoad(c.grid, c.gap, force, e_star_, c.pressure)
+              : solver.SolveForLoad(c.grid, c.gap, force, e_star_);
+      ++out.contact_solves;
+      out.solver_iterations += s.iterations;
+      if (!s.converged && final_pass && out.message.empty()) out.message = "contact solver: " + s.message;
       c.pressure = s.pressure_MPa;
       c.load = s.load_N;
       c.approach = s.approach_mm;
@@ -279,9 +332,25 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
     // model force is 0 only there), so the loaded pairs' compatibility is the whole test.
     if (max_approach > 0 && max_residual <= options_.tolerance * max_approach) {
       if (final_pass) {
-        converged = true;
-        ++iter;
-        break;
+        // A converged contact that reaches the outer columns is cut by its grid: grow that grid
+        // (a ladder size 1.4 times larger) and iterate on. Decided on the converged state only,
+        // so the grid does not depend on the path (nor on a warm start).
+        bool grown = false;
+        for (size_t i = 0; i < n; ++i) {
+          Candidate& c = cand[i];
+          if (c.load <= 0 || !CutAcross(c.grid, c.pressure)) continue;
+          c.grid = MakeGrid(LadderAbove(-c.grid.x0 * 1.4));
+          c.gap = Gap(c.grid, c.g->roller_curvature, c.g->profile_curvature);
+          c.pressure.clear();
+          solved_here[i] = false;
+          grown = true;
+        }
+        if (!grown) {
+          converged = true;
+          ++iter;
+          break;
+        }
+        continue;
       }
       final_pass = true;
       std::fill(solved_here.begin(), solved_here.end(), false);
@@ -312,13 +381,13 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   std::vector<double> displacement;
   for (size_t i = 0; i < n; ++i) {
     Candidate& c = cand[i];
-    PairMemory& mem = memory_[c.g->roller];
-    if (c.load > 0 && c.approach > 0) {
-      mem.f1 = models[i].f1;
-      mem.d1 = models[i].d1;
-      mem.gamma = models[i].gamma;
-      mem.grid = c.grid;
-      mem.pressure = c.pressure;
+    if (warm && c.load > 0 && c.approach > 0) {
+      LtcaWarmStart::Pair& w = warm->pairs[c.g->roller];
+      w.f1 = models[i].f1;
+      w.d1 = models[i].d1;
+      w.gamma = models[i].gamma;
+      w.grid = c.grid;
+      w.pressure = c.pressure;
     }
     if (c.load <= 0) continue;
     PairLoad p;
@@ -332,7 +401,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
     p.grid = c.grid;
     p.solver_iterations = c.solver_iterations;
     if (options_.edge_margin) {
-      displacement = solver_.Displacement(c.grid, c.pressure, e_star_);
+      displacement = solver_->Displacement(c.grid, c.pressure, e_star_);
       double clearance = kInf, edge_p = 0;
       for (int iy : {0, c.grid.ny - 1})
         for (int ix = 0; ix < c.grid.nx; ++ix) {
@@ -341,6 +410,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
           edge_p = std::max(edge_p, c.pressure[k]);
         }
       p.edge_margin_mm = edge_p > 0 ? -edge_p / e_star_ * c.grid.dy : std::max(0.0, clearance);
+      p.end_distance_mm = EndDistance(c.grid, c.pressure);
     }
     if (options_.keep_pressure) p.pressure_MPa = c.pressure;
     out.max_pressure_MPa = std::max(out.max_pressure_MPa, c.max_p);
@@ -349,7 +419,129 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   out.pairs_in_contact = int(out.pairs.size());
   if (!out.pairs.empty()) {
     out.edge_margin_mm = kInf;
-    for (const auto& p : out.pairs) out.edge_margin_mm = std::min(out.edge_margin_mm, p.edge_margin_mm);
+    out.end_distance_mm = kInf;
+    for (const auto& p : out.pairs) {
+      out.edge_margin_mm = std::min(out.edge_margin_mm, p.edge_margin_mm);
+      out.end_distance_mm = std::min(out.end_distance_mm, p.end_distance_mm);
+    }
+  }
+  return out;
+}
+
+LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std::string& parameter) const {
+  // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact).
+  using J = ceres::Jet<double, 1>;
+  const bool torque = parameter == "torque_Nmm";
+  const bool geometry = parameter == "delta_position_mm" || parameter == "delta_radius_mm";
+  std::vector<double> dcrown(options_.axial_cells, 0.0);
+  // Δa, Δρ: the unloaded TCA with a Jet gives each pair's d(arm), d(backlash), d(profile
+  // curvature) and dβ0 (frozen first-contact pair).
+  std::map<int, PairGeometry<J>> dgeom;
+  double d_beta0 = 0;
+  if (geometry) {
+    DriveTpl<J> dj;
+    dj.teeth = drive_.teeth;
+    dj.rollers = drive_.rollers;
+    dj.roller_position_radius_mm = J(drive_.roller_position_radius_mm);
+    dj.roller_radius_mm = J(drive_.roller_radius_mm);
+    dj.eccentricity_mm = J(drive_.eccentricity_mm);
+    dj.face_width_mm = J(drive_.face_width_mm);
+    dj.delta_position_mm = J(drive_.delta_position_mm);
+    dj.delta_radius_mm = J(drive_.delta_radius_mm);
+    (parameter == "delta_position_mm" ? dj.delta_position_mm : dj.delta_radius_mm).v[0] = 1.0;
+    const UnloadedMesh<J> u = UnloadedTca<J>(dj, J(solved.crank_angle_rad));
+    d_beta0 = u.rotation.v[0];
+    for (const auto& g : u.pairs) dgeom[g.roller] = g;
+  }
+  if (!torque && !geometry) {
+    const double b = drive_.face_width_mm;
+    const double dy = b / options_.axial_cells;
+    J radius(crowning_.radius_mm), flat(crowning_.flat_length_mm), coefficient(crowning_.coefficient_mm),
+        length(crowning_.effective_length_mm > 0 ? crowning_.effective_length_mm : b), drop(crowning_.end_drop_mm);
+    J* field = parameter == "coefficient_mm"        ? &coefficient
+               : parameter == "effective_length_mm" ? &length
+               : parameter == "end_drop_mm"         ? &drop
+               : parameter == "radius_mm"           ? &radius
+                                                    : nullptr;
+    if (!field) throw std::invalid_argument("Differentiate: unknown parameter " + parameter);
+    field->v[0] = 1.0;
+    for (int iy = 0; iy < options_.axial_cells; ++iy)
+      dcrown[iy] = CrowningDrop<J>(crowning_.type, radius, flat, coefficient, length,
+                                   J(-0.5 * b + (iy + 0.5) * dy), drop).v[0];
+    // The gap is shifted so that its lowest cell touches: the shift's derivative is the lowest
+    // row's (the across-profile part does not depend on s).
+    const int low = int(std::min_element(crown_.begin(), crown_.end()) - crown_.begin());
+    const double d_low = dcrown[low];
+    for (double& d : dcrown) d -= d_low;
+  }
+  Derivative out;
+  const size_t n = solved.pairs.size();
+  std::vector<double> compliance(n), gap_rate(n, 0.0), d_arm(n, 0.0), d_backlash(n, 0.0);
+  std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n), by_gap(n);
+  for (size_t i = 0; i < n; ++i) {
+    const PairLoad& p = solved.pairs[i];
+    if (p.pressure_MPa.size() != size_t(p.grid.cells()))
+      throw std::invalid_argument("Differentiate: the solve must keep its pressures");
+    const std::vector<double> zero(p.pressure_MPa.size(), 0.0);
+    by_load[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, zero, 1.0, e_star_);
+    compliance[i] = by_load[i].approach_mm;
+    out.converged = out.converged && by_load[i].converged;
+    if (torque) continue;
+    std::vector<double> dgap(p.pressure_MPa.size());
+    if (geometry) {
+      // The gap across the profile through the tooth's curvature (the roller's is unmodified),
+      // shifted so that the lowest cell touches: its derivative at the lowest column.
+      const PairGeometry<J>& g = dgeom.at(p.roller);
+      d_arm[i] = g.arm_mm.v[0];
+      d_backlash[i] = g.backlash.v[0];
+      const J kappa = g.profile_curvature;
+      std::vector<double> across(p.grid.nx), d_across(p.grid.nx);
+      for (int ix = 0; ix < p.grid.nx; ++ix) {
+        const double x = p.grid.x_centre_mm(ix);
+        const J sep = kappa * x * x / (1.0 + sqrt(1.0 - kappa * kappa * x * x));
+        across[ix] = CircleSeparation(1.0 / drive_.roller_radius_mm, x) + sep.a;
+        d_across[ix] = sep.v[0];
+      }
+      const int low = int(std::min_element(across.begin(), across.end()) - across.begin());
+      for (int iy = 0; iy < p.grid.ny; ++iy)
+        for (int ix = 0; ix < p.grid.nx; ++ix)
+          dgap[size_t(iy) * p.grid.nx + ix] = d_across[ix] - d_across[low];
+    } else {
+      for (int iy = 0; iy < p.grid.ny; ++iy)
+        for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[iy];
+    }
+    by_gap[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_);
+    gap_rate[i] = by_gap[i].approach_mm;
+    out.converged = out.converged && by_gap[i].converged;
+  }
+  // δ_i = l_i (Δφc − φ_bl,i) and Σ l_i F_i = T differentiated, with dδ_i = c_i dF_i + a_i:
+  // dF_i = (l_i dΔφc + r_i) / c_i, r_i = dl_i (Δφc − φ_bl,i) − l_i dφ_bl,i − a_i.
+  const double deflection = solved.deflection_rad;
+  std::vector<double> r(n);
+  double num = torque ? 1.0 : 0.0, den = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const PairLoad& p = solved.pairs[i];
+    const double l = p.arm_mm;
+    r[i] = d_arm[i] * (deflection - p.backlash_rad) - l * d_backlash[i] - gap_rate[i];
+    num -= d_arm[i] * p.load_N + l * r[i] / compliance[i];
+    den += l * l / compliance[i];
+  }
+  out.deflection_rad = den > 0 ? num / den : 0.0;
+  out.rotation_rad = d_beta0 + out.deflection_rad;
+  double best = -1;
+  for (size_t i = 0; i < n; ++i) {
+    const PairLoad& p = solved.pairs[i];
+    const double df = (p.arm_mm * out.deflection_rad + r[i]) / compliance[i];
+    out.pair_load_N.push_back(df);
+    const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
+                               p.pressure_MPa.begin());
+    double dp = df * by_load[i].pressure_MPa[peak];
+    if (!torque) dp += by_gap[i].pressure_MPa[peak];
+    out.pair_max_pressure_MPa.push_back(dp);
+    if (p.max_pressure_MPa > best) {
+      best = p.max_pressure_MPa;
+      out.max_pressure_MPa = dp;
+    }
   }
   return out;
 }
@@ -360,18 +552,28 @@ std::vector<double> UniformCrankAngles(int steps, double span_rad) {
   return a;
 }
 
-CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double>& angles,
+CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<double>& angles,
                      const std::function<void(double)>& progress) {
   CycleResult r;
   const size_t n = angles.size();
+  LtcaWarmStart warm;  // local: the cycle depends on its arguments only
   for (size_t k = 0; k < n; ++k) {
-    r.meshes.push_back(tca.Solve(torque_Nmm, angles[k]));
+    r.meshes.push_back(tca.Solve(torque_Nmm, angles[k], &warm));
     if (progress) progress(double(k + 1) / n);
   }
+  return SummariseCycle(tca.drive(), std::move(r.meshes), angles);
+}
+
+CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
+                           const std::vector<double>& angles) {
+  CycleResult r;
+  r.meshes = std::move(meshes);
+  const size_t n = angles.size();
+  if (r.meshes.size() != n) throw std::invalid_argument("SummariseCycle: one mesh per angle");
   r.lte_arcsec.resize(n);
   for (size_t k = 0; k < n; ++k) r.lte_arcsec[k] = r.meshes[k].rotation_rad * kArcsecPerRad;
   // Periodic when the angles sample a whole number of mesh periods uniformly.
-  const int n1 = tca.drive().rollers;
+  const int n1 = drive.rollers;
   const double period = 2.0 * kPi / n1;
   bool periodic = n >= 3;
   double step = 0, span = 0;
@@ -385,7 +587,7 @@ CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double
                std::round(periods) >= 1;
   }
   r.gear_ratio.resize(n);
-  const double n2 = tca.drive().teeth;
+  const double n2 = drive.teeth;
   for (size_t k = 0; k < n; ++k) {
     double slope = 0;  // dβ/dφ
     if (n >= 2) {
@@ -411,6 +613,7 @@ CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double
     const auto [glo, ghi] = std::minmax_element(r.gear_ratio.begin(), r.gear_ratio.end());
     r.gear_ratio_peak_to_peak = *ghi - *glo;
     r.edge_margin_mm = kInf;
+    r.end_distance_mm = kInf;
   }
   for (size_t k = 0; k < n; ++k) {
     const MeshLoad& m = r.meshes[k];
@@ -419,12 +622,17 @@ CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double
       r.max_pressure_index = int(k);
     }
     r.max_pairs_in_contact = std::max(r.max_pairs_in_contact, m.pairs_in_contact);
+    for (const PairLoad& p : m.pairs) r.max_pair_load_N = std::max(r.max_pair_load_N, p.load_N);
     r.contact_solves += m.contact_solves;
     r.solver_iterations += m.solver_iterations;
     r.converged = r.converged && m.converged;
-    if (!m.pairs.empty()) r.edge_margin_mm = std::min(r.edge_margin_mm, m.edge_margin_mm);
+    if (!m.pairs.empty()) {
+      r.edge_margin_mm = std::min(r.edge_margin_mm, m.edge_margin_mm);
+      r.end_distance_mm = std::min(r.end_distance_mm, m.end_distance_mm);
+    }
   }
   if (!std::isfinite(r.edge_margin_mm)) r.edge_margin_mm = 0;
+  if (!std::isfinite(r.end_distance_mm)) r.end_distance_mm = 0;
   return r;
 }
 

@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,10 @@ struct PairLoad {
   /// minus (max edge-row pressure / E*) · dy when the contact reaches an edge, so that it is
   /// continuous and negative for edge contact. Filled when LoadedOptions::edge_margin.
   double edge_margin_mm = 0;
+  /// Axial distance from the contact's end to the face end [mm], the end located within a cell
+  /// from the row maxima (P² linear near an elliptical end); negative when the pressure indicates
+  /// contact beyond the face end (bounded, continuous). Filled when LoadedOptions::edge_margin.
+  double end_distance_mm = 0;
   int solver_iterations = 0;
 };
 
@@ -85,6 +90,7 @@ struct MeshLoad {
   int pairs_in_contact = 0;          ///< pairs carrying load
   std::vector<PairLoad> pairs;       ///< the loaded pairs
   double edge_margin_mm = 0;         ///< min over loaded pairs (0 when none)
+  double end_distance_mm = 0;        ///< min over loaded pairs (0 when none)
   int iterations = 0;                ///< outer (compatibility) iterations
   int contact_solves = 0;            ///< half-space solves
   long solver_iterations = 0;        ///< their conjugate-gradient iterations, summed
@@ -92,35 +98,70 @@ struct MeshLoad {
   std::string message;
 };
 
-/// Per-angle LTCA with memory between calls (pair compliances, grids and pressures are reused
-/// as warm starts at the next crank angle). Not thread-safe; one instance per thread.
+/// What one LTCA solve leaves for the next one as a starting point: per roller, the last solved
+/// point of its force law (F, δ, exponent) and its pressure field with the grid it was solved on.
+/// Explicit and owned by the caller; passing one changes the cost of a solve, never its answer
+/// beyond the compatibility and solver tolerances. The grid of every pair is a function of the
+/// solve's inputs only (never of a warm start), so a pressure is reused only on the same grid.
+struct LtcaWarmStart {
+  struct Pair {
+    contact::Grid grid;
+    std::vector<double> pressure;
+    double f1 = 0, d1 = 0;  // the last solved (F, δ) of the pair
+    double gamma = 0.9;     // its measured exponent of δ ∝ F^γ
+  };
+  std::map<int, Pair> pairs;  // by roller
+};
+
+/// Per-angle LTCA. Immutable: a solve depends only on the drive, crowning, material, options,
+/// torque and crank angle (bit for bit, whatever ran before), and on the warm start when one is
+/// passed (within the tolerances). The half-space solvers' caches of kernels and FFT plans are
+/// shared by the copies made by WithCrowning; they change the cost, not the numbers. Not
+/// thread-safe (the solvers own work arrays); one instance (and its copies) per thread.
 class LoadedTca {
  public:
   /// @throws std::invalid_argument for an infeasible drive or crowning (CheckDrive/CheckCrowning).
   LoadedTca(const Drive& drive, const Crowning& crowning, const Material& material,
             LoadedOptions options = {});
 
-  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nmm [N·mm] (>= 0).
-  MeshLoad Solve(double torque_Nmm, double crank_angle_rad);
+  /// LTCA at crank angle φ [rad] under the torque on the disc torque_Nmm [N·mm] (>= 0). When
+  /// `warm` is given it is read as a starting point and updated with this solve's pairs.
+  MeshLoad Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmStart* warm = nullptr) const;
 
-  /// Changes the crowning (sweeps and tuning); the pair memory is kept as a warm start.
+  /// Derivatives of a converged solve's outputs with respect to one parameter, by implicit
+  /// differentiation with every pair's contact set and the set of loaded pairs frozen
+  /// (design-notes §1): per pair one forward sensitivity for its load (its compliance dδ/dF) and
+  /// one for the parameter at fixed load (dδ/ds), then the outer equations δ_i = l_i (Δφc − φ_bl,i),
+  /// Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] ("torque_Nmm"), the profile
+  /// modifications "delta_position_mm" and "delta_radius_mm" (Δa, Δρ: arms, backlash and the
+  /// tooth curvature through the unloaded TCA with a Jet, the first-contact pair frozen) and the
+  /// crowning's coefficient_mm, effective_length_mm, end_drop_mm, radius_mm (per its type).
+  /// @pre `solved` from Solve(torque_Nmm, ·) on this model with LoadedOptions::keep_pressure.
+  /// @throws std::invalid_argument for an unknown parameter or a solve without pressures.
+  struct Derivative {
+    double deflection_rad = 0;            ///< dΔφc/ds
+    double rotation_rad = 0;              ///< d(β0 + Δφc)/ds, the LTE's derivative
+    std::vector<double> pair_load_N;      ///< dF_i/ds, in the order of solved.pairs
+    std::vector<double> pair_max_pressure_MPa;  ///< d p_i(peak cell)/ds, peak cell frozen
+    double max_pressure_MPa = 0;          ///< of the pair carrying the maximum
+    bool converged = true;
+  };
+  Derivative Differentiate(const MeshLoad& solved, const std::string& parameter) const;
+
+  /// The same model with another crowning (sweeps and tuning), sharing the solver caches.
   /// @throws std::invalid_argument for invalid crowning.
-  void SetCrowning(const Crowning& crowning);
+  LoadedTca WithCrowning(const Crowning& crowning) const;
 
   const Drive& drive() const { return drive_; }
+  const Crowning& crowning() const { return crowning_; }
   const LoadedOptions& options() const { return options_; }
   double e_star_MPa() const { return e_star_; }
 
  private:
-  struct PairMemory {
-    contact::Grid grid;
-    std::vector<double> pressure;
-    double f1 = 0, d1 = 0;  // the last solved (F, δ) of the pair
-    double gamma = 0.9;     // its measured exponent of δ ∝ F^γ
-  };
   contact::Grid MakeGrid(double half_x_mm) const;
   std::vector<double> Gap(const contact::Grid& grid, double effective_curvature_roller,
                           double profile_curvature) const;
+  void SetCrowning(const Crowning& crowning);
 
   Drive drive_;
   Crowning crowning_;
@@ -128,9 +169,8 @@ class LoadedTca {
   LoadedOptions options_;
   double e_star_;
   std::vector<double> crown_;  // crowning drop per axial cell
-  contact::HalfSpaceSolver solver_;        // final tolerance
-  contact::HalfSpaceSolver rough_solver_;  // steering iterations
-  std::map<int, PairMemory> memory_;  // by roller
+  std::shared_ptr<contact::HalfSpaceSolver> solver_;        // final tolerance
+  std::shared_ptr<contact::HalfSpaceSolver> rough_solver_;  // steering iterations
 };
 
 /// A mesh cycle: the LTCA at each crank angle, with the derived series.
@@ -144,17 +184,27 @@ struct CycleResult {
   double lte_mean_abs_arcsec = 0;
   double gear_ratio_peak_to_peak = 0;
   int max_pairs_in_contact = 0;
+  double max_pair_load_N = 0;        ///< max over pairs and angles
   double edge_margin_mm = 0;         ///< min over angles
+  double end_distance_mm = 0;        ///< min over angles
   int contact_solves = 0;
   long solver_iterations = 0;
   bool converged = true;
 };
 
-/// Runs the LTCA under the disc torque torque_Nmm [N·mm] over the crank angles [rad] (in order). The gear ratio uses the derivative of
+/// Runs the LTCA under the disc torque torque_Nmm [N·mm] over the crank angles [rad] (in order),
+/// each angle warm-started from the previous one with a warm start local to the call: the result
+/// is a function of the arguments only. The gear ratio uses the derivative of
 /// the LTE over the crank angle by central differences, periodic when the angles are a uniform
 /// sampling of a whole number of mesh periods 2π/n1, one-sided at the ends otherwise.
-CycleResult RunCycle(LoadedTca& tca, double torque_Nmm, const std::vector<double>& crank_angles_rad,
+CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<double>& crank_angles_rad,
                      const std::function<void(double)>& progress = nullptr);
+
+/// The series and cycle values of RunCycle from the solved meshes (one per angle, in order): a
+/// subset of a cycle's meshes (e.g. every second angle) gives the values of the coarser sampling.
+/// @throws std::invalid_argument when the sizes differ.
+CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
+                           const std::vector<double>& crank_angles_rad);
 
 /// Uniform crank angles over [0, span) [rad].
 std::vector<double> UniformCrankAngles(int steps, double span_rad);
