@@ -114,4 +114,17 @@ FitResult SolveLeastSquares(const LeastSquaresProblem& problem, int max_iteratio
   return result;
 }
 
+double FitResult::Correlation(size_t i, size_t j) const {
+  const size_t n = x.size();
+  return covariance[i * n + j] / std::sqrt(covariance[i * n + i] * covariance[j * n + j]);
+}
+
+double FitResult::PropagatedStandardDeviation(const std::vector<double>& gradient) const {
+  const size_t n = x.size();
+  double variance = 0.0;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) variance += gradient[i] * covariance[i * n + j] * gradient[j];
+  return std::sqrt(variance);
+}
+
 }  // namespace camopt::optimizers

@@ -31,6 +31,13 @@ struct FitResult {
   std::vector<double> standard_errors;
   int iterations = 0;
   int residual_evaluations = 0;  ///< Ceres always asks for the Jacobian with the residuals
+
+  /// Correlation coefficient of parameters i and j, C_ij / sqrt(C_ii C_jj).
+  /// @pre covariance is not empty.
+  double Correlation(size_t i, size_t j) const;
+  /// Standard deviation of a derived quantity q(x) to first order, sqrt(gᵀ C g), with g = ∂q/∂x
+  /// at x (one entry per parameter). @pre covariance is not empty.
+  double PropagatedStandardDeviation(const std::vector<double>& gradient) const;
 };
 
 /// @throws std::invalid_argument for an inconsistent problem.

@@ -119,7 +119,7 @@ Study Parse(const Node& root) {
   dc::MonteCarloOptions& mc = s.monte_carlo_options;
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
-    a.CheckKnownFields({"angle_steps", "monte_carlo"});
+    a.CheckKnownFields({"angle_steps", "monte_carlo", "evaluate"});
     s.angle_steps = a.IntegerOr("angle_steps", 36, 3600);
     if (s.angle_steps > 1000000) a["angle_steps"].Fail("a whole number <= 1000000");
     if (a.Has("monte_carlo")) {
@@ -140,6 +140,25 @@ Study Parse(const Node& root) {
           m.FailWith("samples × angle_steps × scales must stay below 1e8");
       }
     }
+  }
+  if (root.Has("analysis") && root["analysis"].Has("evaluate")) {
+    // Lazy stages: the profile always runs; "error" adds the mechanical error, "monte_carlo"
+    // the error and its Monte-Carlo check. A stage asked for needs its inputs (the tolerances).
+    s.evaluate_given = true;
+    bool error = false, mc_asked = false;
+    for (const Node& n : root["analysis"]["evaluate"].Elements()) {
+      const std::string stage = n.String();
+      if (stage == "error") {
+        error = true;
+      } else if (stage == "monte_carlo") {
+        error = mc_asked = true;
+      } else if (stage != "profile") {
+        n.Fail("one of \"profile\", \"error\", \"monte_carlo\"");
+      }
+    }
+    if (error) (void)root["tolerances"];  // "missing required field" when absent
+    s.error_stage = error;
+    if (!mc_asked) s.monte_carlo = false;
   }
   if (s.tolerances.radial == 0 && s.tolerances.roller == 0 && s.tolerances.normal == 0)
     s.monte_carlo = false;
@@ -164,7 +183,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
   for (int i = 0; i < n; ++i) {
     pts[i] = dc::EvaluateCam(cam, 2 * kPi * i / n);
-    err[i] = dc::FollowerError(cam, pts[i], s.tolerances);
+    if (s.error_stage) err[i] = dc::FollowerError(cam, pts[i], s.tolerances);
   }
 
   auto arg_max = [&](auto f) {
@@ -199,11 +218,13 @@ Result Run(const Study& s, const RunContext& ctx) {
   t.pitch_y_mm = col([&](int i) { return pts[i].pitch.y(); });
   t.q_mm = col([&](int i) { return pts[i].q; });
   t.pitch_curvature_per_mm = col([&](int i) { return pts[i].pitch_curvature; });
-  t.error_radial_um = col([&](int i) { return err[i].radial * to_um; });
-  t.error_roller_um = col([&](int i) { return err[i].roller * to_um; });
-  t.error_normal_um = col([&](int i) { return err[i].normal * to_um; });
-  t.error_worst_case_um = col([&](int i) { return err[i].worst_case * to_um; });
-  t.error_rms_um = col([&](int i) { return err[i].rms * to_um; });
+  if (s.error_stage) {
+    t.error_radial_um = col([&](int i) { return err[i].radial * to_um; });
+    t.error_roller_um = col([&](int i) { return err[i].roller * to_um; });
+    t.error_normal_um = col([&](int i) { return err[i].normal * to_um; });
+    t.error_worst_case_um = col([&](int i) { return err[i].worst_case * to_um; });
+    t.error_rms_um = col([&](int i) { return err[i].rms * to_um; });
+  }
 
   const int i_rmax = arg_max([&](int i) { return pts[i].radial_dimension; });
   const int i_rmin = arg_min([&](int i) { return pts[i].radial_dimension; });
@@ -237,23 +258,26 @@ Result Run(const Study& s, const RunContext& ctx) {
   r.undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
   r.undercut_cam_angle_deg = Intervals(undercut);
 
-  // Mechanical error (eqs. 16–32).
-  const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
-  const int i_rms = arg_max([&](int i) { return err[i].rms; });
-  r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, angle_deg(i_wor)};
-  r.min_worst_case_error_um =
-      err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um;
-  r.max_rms_error_um = {err[i_rms].rms * to_um, angle_deg(i_rms)};
-  auto component = [&](auto get) {
-    const int a = arg_max(get), b = arg_min(get);
-    return MinMax{get(b) * to_um, get(a) * to_um};
-  };
-  r.radial_error_um = component([&](int i) { return err[i].radial; });
-  r.roller_error_um = component([&](int i) { return err[i].roller; });
-  r.normal_error_um = component([&](int i) { return err[i].normal; });
-  if (osc) {
-    r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, angle_deg(i_wor)};
-    r.max_rms_error_arcsec = err[i_rms].rms * to_arcsec;
+  // Mechanical error (eqs. 16–32), when asked for.
+  r.error_evaluated = s.error_stage;
+  if (s.error_stage) {
+    const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
+    const int i_rms = arg_max([&](int i) { return err[i].rms; });
+    r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, angle_deg(i_wor)};
+    r.min_worst_case_error_um =
+        err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um;
+    r.max_rms_error_um = {err[i_rms].rms * to_um, angle_deg(i_rms)};
+    auto component = [&](auto get) {
+      const int a = arg_max(get), b = arg_min(get);
+      return MinMax{get(b) * to_um, get(a) * to_um};
+    };
+    r.radial_error_um = component([&](int i) { return err[i].radial; });
+    r.roller_error_um = component([&](int i) { return err[i].roller; });
+    r.normal_error_um = component([&](int i) { return err[i].normal; });
+    if (osc) {
+      r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, angle_deg(i_wor)};
+      r.max_rms_error_arcsec = err[i_rms].rms * to_arcsec;
+    }
   }
 
   // Motion program: continuity at the joints and peak derivatives.
@@ -315,23 +339,30 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   for (const auto& [from, to] : r.undercut_cam_angle_deg)
     j["undercut_cam_angle_deg"].push_back({from, to});
 
-  j["tolerances_um"] = {{"profile_radial", s.tolerances.radial * 1e3},
-                        {"roller_radius", s.tolerances.roller * 1e3},
-                        {"profile_normal", s.tolerances.normal * 1e3}};
-  j["worst_case_error_um"] = {{"max", r.max_worst_case_error_um.value},
-                              {"at_cam_angle_deg", r.max_worst_case_error_um.cam_angle_deg},
-                              {"min", r.min_worst_case_error_um}};
-  j["rms_error_um"] = {{"max", r.max_rms_error_um.value},
-                       {"at_cam_angle_deg", r.max_rms_error_um.cam_angle_deg}};
-  auto min_max = [](const MinMax& m) { return nlohmann::json{{"max", m.max}, {"min", m.min}}; };
-  j["error_components_um"] = {{"radial", min_max(r.radial_error_um)},
-                              {"roller", min_max(r.roller_error_um)},
-                              {"normal", min_max(r.normal_error_um)}};
-  if (r.max_worst_case_error_arcsec)
-    j["worst_case_error_arcsec"] = {{"max", r.max_worst_case_error_arcsec->value},
-                                    {"at_cam_angle_deg",
-                                     r.max_worst_case_error_arcsec->cam_angle_deg}};
-  if (r.max_rms_error_arcsec) j["rms_error_arcsec"] = {{"max", *r.max_rms_error_arcsec}};
+  if (s.evaluate_given) {
+    j["evaluated"] = {"profile"};
+    if (s.error_stage) j["evaluated"].push_back("error");
+    if (s.monte_carlo) j["evaluated"].push_back("monte_carlo");
+  }
+  if (r.error_evaluated) {
+    j["tolerances_um"] = {{"profile_radial", s.tolerances.radial * 1e3},
+                          {"roller_radius", s.tolerances.roller * 1e3},
+                          {"profile_normal", s.tolerances.normal * 1e3}};
+    j["worst_case_error_um"] = {{"max", r.max_worst_case_error_um.value},
+                                {"at_cam_angle_deg", r.max_worst_case_error_um.cam_angle_deg},
+                                {"min", r.min_worst_case_error_um}};
+    j["rms_error_um"] = {{"max", r.max_rms_error_um.value},
+                         {"at_cam_angle_deg", r.max_rms_error_um.cam_angle_deg}};
+    auto min_max = [](const MinMax& m) { return nlohmann::json{{"max", m.max}, {"min", m.min}}; };
+    j["error_components_um"] = {{"radial", min_max(r.radial_error_um)},
+                                {"roller", min_max(r.roller_error_um)},
+                                {"normal", min_max(r.normal_error_um)}};
+    if (r.max_worst_case_error_arcsec)
+      j["worst_case_error_arcsec"] = {{"max", r.max_worst_case_error_arcsec->value},
+                                      {"at_cam_angle_deg",
+                                       r.max_worst_case_error_arcsec->cam_angle_deg}};
+    if (r.max_rms_error_arcsec) j["rms_error_arcsec"] = {{"max", *r.max_rms_error_arcsec}};
+  }
 
   const std::string& fu = r.follower_unit;
   j["motion"] = {{"joints", JointsJson(r.joints)},
@@ -385,11 +416,13 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("pitch_y_mm", t.pitch_y_mm);
   table.Add("q_mm", t.q_mm);
   table.Add("pitch_curvature_per_mm", t.pitch_curvature_per_mm);
-  table.Add("error_radial_um", t.error_radial_um);
-  table.Add("error_roller_um", t.error_roller_um);
-  table.Add("error_normal_um", t.error_normal_um);
-  table.Add("error_worst_case_um", t.error_worst_case_um);
-  table.Add("error_rms_um", t.error_rms_um);
+  if (r.error_evaluated) {
+    table.Add("error_radial_um", t.error_radial_um);
+    table.Add("error_roller_um", t.error_roller_um);
+    table.Add("error_normal_um", t.error_normal_um);
+    table.Add("error_worst_case_um", t.error_worst_case_um);
+    table.Add("error_rms_um", t.error_rms_um);
+  }
   out.Add("series.csv", ToCsv(table));
 
   const auto& th = t.cam_angle_deg;
@@ -408,7 +441,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                                        series("shift angle λ", t.shift_angle_deg)},
                                       o));
   }
-  {
+  if (r.error_evaluated) {
     PlotOptions o;
     o.title = s.name + ": follower error (paper Fig. 12b)";
     o.x_label = "cam angle [deg]";

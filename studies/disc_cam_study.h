@@ -29,6 +29,11 @@ struct Study {
   int angle_steps = 3600;
   bool monte_carlo = true;  ///< off when asked or when every tolerance is zero
   camopt::disc_cam::MonteCarloOptions monte_carlo_options;
+  /// The stages asked for ("analysis.evaluate"; all when absent). The profile always runs;
+  /// without "error" (or "monte_carlo") no tolerances are needed and the mechanical error is not
+  /// computed.
+  bool error_stage = true;
+  bool evaluate_given = false;
 };
 
 /// A value and the cam angle where it is reached.
@@ -85,6 +90,7 @@ struct Result {
   double peak_velocity = 0.0, peak_acceleration = 0.0, peak_jerk = 0.0;  ///< follower unit/rad^k
 
   enum class MonteCarlo { kOff, kSkippedUndercut, kDone } monte_carlo = MonteCarlo::kOff;
+  bool error_evaluated = false;  ///< the mechanical-error stage ran (the error fields are set)
   std::vector<MonteCarloRow> monte_carlo_rows;
 };
 

@@ -158,22 +158,65 @@ Study Parse(const Node& root) {
   }
   if (root.Has("dynamics")) {
     const Node d = root["dynamics"];
-    d.CheckKnownFields({"cam_speeds_rpm", "end_time_s", "time_step_s"});
+    d.CheckKnownFields({"cam_speeds_rpm", "end_time_s", "relative_tolerance",
+                         "absolute_tolerance", "max_steps", "time_step_s"});
+    if (d.Has("time_step_s"))
+      d["time_step_s"].FailWith(
+          "no longer used: the dynamics run with error control (CVODE); give "
+          "\"relative_tolerance\" (e.g. 1e-8) and \"absolute_tolerance\" (e.g. 1e-10) instead");
     if (d.Has("cam_speeds_rpm"))
       for (const Node& v : d["cam_speeds_rpm"].Elements()) s.speeds_rpm.push_back(v.Positive());
     if (d.Has("end_time_s")) s.end_time_s = d["end_time_s"].Positive();
-    s.time_step_s = d.PositiveOr("time_step_s", s.time_step_s);
-    if (s.time_step_s > 1e-3) d["time_step_s"].Fail("a time step ≤ 1e-3 s");
-    for (size_t i = 0; i < s.speeds_rpm.size(); ++i) {
-      const double t_end = s.end_time_s > 0 ? s.end_time_s : 60.0 / s.speeds_rpm[i];
-      if (t_end / s.time_step_s > 2e7)
-        d.FailWith("more than 2e7 time steps at " + Format(s.speeds_rpm[i]) +
-                   " rpm: shorten end_time_s or enlarge time_step_s");
+    if (d.Has("relative_tolerance")) {
+      s.relative_tolerance = d["relative_tolerance"].Positive();
+      if (s.relative_tolerance < 1e-13 || s.relative_tolerance > 1e-3)
+        d["relative_tolerance"].Fail(
+            "a relative tolerance in [1e-13, 1e-3] (tighter is beyond double precision, looser "
+            "cannot resolve the contact oscillation)");
+    }
+    if (d.Has("absolute_tolerance")) {
+      s.absolute_tolerance = d["absolute_tolerance"].Positive();
+      if (s.absolute_tolerance < 1e-16 || s.absolute_tolerance > 1e-4)
+        d["absolute_tolerance"].Fail(
+            "an absolute tolerance in [1e-16, 1e-4] rad (on the deviation ψ − φ_i and its rate)");
+    }
+    s.max_steps = d.IntegerOr("max_steps", 1, s.max_steps);
+    if (s.max_steps > 200000000) d["max_steps"].Fail("a whole number <= 2e8");
+    for (const double rpm : s.speeds_rpm) {
+      // The solver's step is at most 0.5° of cam: a run shorter than max_steps of those.
+      DynamicsInput probe = s.dyn;
+      probe.cam_speed_rad_s = rpm * 2 * kPi / 60;
+      probe.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
+      const double least = probe.end_time_s / globoidal::MaxStep(probe);
+      if (least > s.max_steps)
+        d.FailWith("at " + Format(rpm) + " rpm the run needs at least " + Format(std::ceil(least)) +
+                   " steps (a step spans at most 0.5° of cam), more than max_steps = " +
+                   std::to_string(s.max_steps) + ": shorten end_time_s or raise max_steps");
     }
   }
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
-    a.CheckKnownFields({"angle_steps", "axis_steps"});
+    a.CheckKnownFields({"angle_steps", "axis_steps", "evaluate"});
+    if (a.Has("evaluate")) {
+      s.evaluate_given = true;
+      s.dynamics_stage = s.export_stage = false;
+      for (const Node& n : a["evaluate"].Elements()) {
+        const std::string stage = n.String();
+        if (stage == "dynamics") {
+          s.dynamics_stage = true;
+        } else if (stage == "export") {
+          s.export_stage = true;
+        } else if (stage != "geometry") {
+          n.Fail("one of \"geometry\", \"dynamics\", \"export\"");
+        }
+      }
+      // A stage asked for needs its inputs; the ones not asked for are not run.
+      if (s.dynamics_stage && s.speeds_rpm.empty()) {
+        const Node speeds = root["dynamics"]["cam_speeds_rpm"];  // "missing" when absent
+        speeds.Fail("at least one cam speed (analysis.evaluate asks for the dynamics)");
+      }
+      if (!s.dynamics_stage) s.speeds_rpm.clear();
+    }
     s.angle_steps = a.IntegerOr("angle_steps", 36, s.angle_steps);
     if (s.angle_steps > 200000) a["angle_steps"].Fail("a whole number <= 200000");
     s.axis_steps = a.IntegerOr("axis_steps", 2, s.axis_steps);
@@ -189,6 +232,7 @@ Study Parse(const Node& root) {
     if (double(s.export_angle_steps) * s.export_axis_steps > 4e6)
       e.FailWith("angle_steps × axis_steps must stay below 4e6");
   }
+  if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
   // Every check, with the jam limit over the analysis grid.
   FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root);
   return s;
@@ -247,10 +291,12 @@ Result Run(const Study& s, const RunContext& ctx) {
   t.swing_acceleration_deg_per_rad2 = col([&](int i) { return svaj[i].a / kDeg; });
   t.swing_jerk_deg_per_rad3 = col([&](int i) { return svaj[i].j / kDeg; });
 
-  // Quasi-static forces and dynamics per speed.
+  // Quasi-static forces and dynamics per speed (the "dynamics" stage).
   r.effective_modulus_MPa = s.dyn.contact.composite_modulus_MPa();
   const bool conformal = r.survey.conformal;
-  if (!s.speeds_rpm.empty() && (r.undercut || conformal)) {
+  if (!s.dynamics_stage) {
+    // not asked for
+  } else if (!s.speeds_rpm.empty() && (r.undercut || conformal)) {
     r.dynamics_skipped = r.undercut ? "the working surface is undercut"
                                     : "the contact is conformal (no Hertz radius)";
   } else {
@@ -261,8 +307,10 @@ Result Run(const Study& s, const RunContext& ctx) {
       DynamicsInput in = s.dyn;
       in.cam_speed_rad_s = rpm * 2 * kPi / 60;
       in.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
-      in.time_step_s = s.time_step_s;
-      in.output_every = std::max(1, int(std::lround(in.end_time_s / in.time_step_s / 2000)));
+      in.relative_tolerance = s.relative_tolerance;
+      in.absolute_tolerance = s.absolute_tolerance;
+      in.max_steps = s.max_steps;
+      in.output_interval_s = in.end_time_s / 2000;  // the CSV's samples; not the peaks
       SpeedResult sr;
       sr.cam_speed_rpm = rpm;
       globoidal::DynamicsResult dr;
@@ -272,33 +320,32 @@ Result Run(const Study& s, const RunContext& ctx) {
         sr.failed = e.what();
         r.speeds.push_back(std::move(sr));
         continue;
+      } catch (const globoidal::DynamicsError& e) {
+        // Settings that cannot work: exit 2, naming the setting to change.
+        const std::string field = e.setting() == "max_steps" ? "max_steps" : "relative_tolerance";
+        throw StudyError(ctx.study_file + ": /dynamics/" + field + ": at " + Format(rpm) +
+                         " rpm: " + e.what());
       }
       sr.end_time_s = in.end_time_s;
-      sr.time_step_s = in.time_step_s;
       sr.steps = dr.steps;
+      sr.rhs_evaluations = dr.rhs_evaluations;
+      sr.events = dr.events;
+      sr.smallest_step_s = dr.smallest_step_s;
+      sr.largest_step_s = dr.largest_step_s;
       // Quasi-static force over the revolution at this speed.
       sr.quasi_static_force_N = col([&](int i) { return globoidal::QuasiStaticForce(in, theta(i)); });
-      double vk = 0, vd = 0, ak = 0, ad = 0, f1 = 0, f2 = 0, dev = 0, dmax = 0;
-      for (const auto& x : dr.samples) {
-        vk = std::max(vk, std::abs(x.kin_rate_rad_s));
-        vd = std::max(vd, std::abs(x.swing_rate_rad_s));
-        ak = std::max(ak, std::abs(x.kin_acc_rad_s2));
-        ad = std::max(ad, std::abs(x.swing_acc_rad_s2));
-        f1 = std::max(f1, x.force_N[0]);
-        f2 = std::max(f2, x.force_N[1]);
-        dev = std::max(dev, std::abs(x.swing_rad - x.kin_swing_rad));
-        dmax = std::max({dmax, x.penetration_mm[0], x.penetration_mm[1]});
-      }
-      sr.peak_turret_velocity_kinematic_rad_s = vk;
-      sr.peak_turret_velocity_dynamic_rad_s = vd;
-      sr.peak_turret_acceleration_kinematic_rad_s2 = ak;
-      sr.peak_turret_acceleration_dynamic_rad_s2 = ad;
-      sr.max_force_roller_1_N = f1;
-      sr.max_force_roller_2_N = f2;
+      // Peaks over every accepted solver step, step midpoint and contact event.
+      const globoidal::DynamicsPeaks& pk = dr.peaks;
+      sr.peak_turret_velocity_kinematic_rad_s = pk.kin_rate_rad_s;
+      sr.peak_turret_velocity_dynamic_rad_s = pk.swing_rate_rad_s;
+      sr.peak_turret_acceleration_kinematic_rad_s2 = pk.kin_acc_rad_s2;
+      sr.peak_turret_acceleration_dynamic_rad_s2 = pk.swing_acc_rad_s2;
+      sr.max_force_roller_1_N = pk.force_N[0];
+      sr.max_force_roller_2_N = pk.force_N[1];
       sr.max_quasi_static_force_N =
           *std::max_element(sr.quasi_static_force_N.begin(), sr.quasi_static_force_N.end());
-      sr.max_swing_deviation_deg = dev / kDeg;
-      sr.max_penetration_mm = dmax;
+      sr.max_swing_deviation_deg = pk.swing_deviation_rad / kDeg;
+      sr.max_penetration_mm = pk.penetration_mm;
       sr.samples = std::move(dr.samples);
       r.speeds.push_back(std::move(sr));
     }
@@ -368,10 +415,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                  {"peak_velocity_deg_per_rad", r.peak_velocity_deg_per_rad},
                  {"peak_acceleration_deg_per_rad2", r.peak_acceleration_deg_per_rad2},
                  {"peak_jerk_deg_per_rad3", r.peak_jerk_deg_per_rad3}};
-  j["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
-               {"turret_inertia_kgm2", s.dyn.inertia_Nmms2 * 1e-3}};
-  j["effective_modulus_MPa"] = r.effective_modulus_MPa;
-  if (!r.dynamics_skipped.empty()) {
+  if (s.evaluate_given) {
+    j["evaluated"] = {"geometry"};
+    if (s.dynamics_stage) j["evaluated"].push_back("dynamics");
+    if (s.export_stage) j["evaluated"].push_back("export");
+  }
+  if (s.dynamics_stage) {
+    j["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
+                 {"turret_inertia_kgm2", s.dyn.inertia_Nmms2 * 1e-3}};
+    j["effective_modulus_MPa"] = r.effective_modulus_MPa;
+  }
+  if (!s.dynamics_stage) {
+    // not asked for: no dynamics entry at all
+  } else if (!r.dynamics_skipped.empty()) {
     j["dynamics"] = {{"skipped", r.dynamics_skipped}};
   } else {
     nlohmann::json speeds = nlohmann::json::array();
@@ -382,8 +438,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       }
       speeds.push_back({{"cam_speed_rpm", x.cam_speed_rpm},
                         {"end_time_s", x.end_time_s},
-                        {"time_step_s", x.time_step_s},
+                        {"relative_tolerance", s.relative_tolerance},
+                        {"absolute_tolerance", s.absolute_tolerance},
                         {"steps", x.steps},
+                        {"rhs_evaluations", x.rhs_evaluations},
+                        {"contact_events", x.events},
+                        {"smallest_step_s", x.smallest_step_s},
+                        {"largest_step_s", x.largest_step_s},
                         {"peak_turret_velocity_kinematic_rad_s",
                          x.peak_turret_velocity_kinematic_rad_s},
                         {"peak_turret_velocity_dynamic_rad_s", x.peak_turret_velocity_dynamic_rad_s},
@@ -397,7 +458,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                         {"max_swing_deviation_deg", x.max_swing_deviation_deg},
                         {"max_penetration_mm", x.max_penetration_mm}});
     }
-    j["dynamics"] = {{"contact_model", "F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ (eqs. 10–14), RK4"},
+    j["dynamics"] = {{"contact_model", "F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ (eqs. 10–14)"},
+                     {"integrator", "CVODE (BDF, variable step and order), contact onset "
+                                    "and loss located as events; peaks over every step"},
                      {"speeds", speeds}};
   }
   if (s.export_point_cloud || s.export_stl)

@@ -2,7 +2,7 @@
 // turret (Ge, Wang & Zhang; docs/globoidal.md). Geometry over a cam revolution (eqs. 1–9: roller
 // angles, trajectory and working surfaces, pressure angle, undercut, contact radius), the
 // quasi-static roller force, the Adams-style contact dynamics at the requested cam speeds
-// (eqs. 10–14), and the working surfaces exported as a CSV point cloud and an ASCII STL mesh.
+// (eqs. 10–14; CVODE with error control and contact events), and the working surfaces exported as a CSV point cloud and an ASCII STL mesh.
 // Outputs: result.json, series.csv, dynamics_<rpm>rpm.csv, SVG plots, working_surfaces.csv,
 // working_surfaces.stl.
 #pragma once
@@ -29,27 +29,37 @@ struct Study {
   globoidal::DynamicsInput dyn;  ///< the cam, the contact material, the load and the inertia
   std::vector<double> speeds_rpm;
   double end_time_s = -1.0;  ///< ≤ 0: one cam revolution
-  double time_step_s = 1e-5;
+  double relative_tolerance = 1e-8;   ///< CVODE's local error control (dynamics)
+  double absolute_tolerance = 1e-10;  ///< [rad, rad/s] on ψ − φ_i and its rate
+  int max_steps = 20000000;           ///< accepted solver steps per speed
   int angle_steps = 720;
   int axis_steps = 7;
   int export_angle_steps = 360;
   int export_axis_steps = 6;
   bool export_stl = true, export_point_cloud = true;
+  /// The stages asked for ("analysis.evaluate"; all when absent). The geometry always runs (the
+  /// other stages need it); without "dynamics" no load, contact material or speeds are needed and
+  /// none are simulated; without "export" no surfaces are built.
+  bool dynamics_stage = true, export_stage = true;
+  bool evaluate_given = false;
 };
 
 /// The dynamics at one cam speed, in the units of result.json.
 struct SpeedResult {
   double cam_speed_rpm = 0.0;
   std::string failed;  ///< why the simulation stopped; empty when it ran
-  double end_time_s = 0.0, time_step_s = 0.0;
-  int steps = 0;
+  double end_time_s = 0.0;
+  long steps = 0, rhs_evaluations = 0;  ///< accepted solver steps, right-hand-side evaluations
+  int events = 0;                       ///< contact onsets/losses located
+  double smallest_step_s = 0.0, largest_step_s = 0.0;
   double peak_turret_velocity_kinematic_rad_s = 0.0, peak_turret_velocity_dynamic_rad_s = 0.0;
   double peak_turret_acceleration_kinematic_rad_s2 = 0.0;
   double peak_turret_acceleration_dynamic_rad_s2 = 0.0;
   double max_force_roller_1_N = 0.0, max_force_roller_2_N = 0.0;
   double max_quasi_static_force_N = 0.0, max_swing_deviation_deg = 0.0, max_penetration_mm = 0.0;
   std::vector<double> quasi_static_force_N;         ///< on the analysis grid
-  std::vector<globoidal::DynamicsSample> samples;   ///< the simulation's kept steps
+  /// The thinned samples for the CSV and the plots (the peaks above do not come from them).
+  std::vector<globoidal::DynamicsSample> samples;
 };
 
 /// Every number the kind reports.

@@ -107,7 +107,7 @@ Result Run(const Study& st, const RunContext& ctx) {
   res.friction_coefficient_at_bound = AtBound(fit.x[0], mu);
   res.drag_torque_at_bound = AtBound(fit.x[1], drag);
   if (!fit.covariance.empty())
-    res.correlation = fit.covariance[1] / std::sqrt(fit.covariance[0] * fit.covariance[3]);
+    res.correlation = fit.Correlation(0, 1);
   res.chi_square = 2 * fit.cost;
   res.degrees_of_freedom = m - 2;
   for (int i = 0; i < m; ++i) {
@@ -116,13 +116,11 @@ Result Run(const Study& st, const RunContext& ctx) {
     row.paper_input_torque_Nm =
         lcr::MeanInputTorque(unit, data[i].output_torque_Nm, lcr::kPaperFrictionCoefficient, 0.0);
     if (!fit.covariance.empty()) {
-      // Standard deviation of the fitted torque: sqrt(gᵀ C g), g = ∂T_in/∂(μ, T_drag) by AD.
+      // Standard deviation of the fitted torque, with g = ∂T_in/∂(μ, T_drag) by AD.
       using J2 = ceres::Jet<double, 2>;
       const J2 t_in = lcr::MeanInputTorque(unit, J2(data[i].output_torque_Nm), J2(fit.x[0], 0),
                                            J2(fit.x[1], 1));
-      const double g0 = t_in.v[0], g1 = t_in.v[1];
-      const auto& c = fit.covariance;
-      row.fitted_input_torque_sd_Nm = std::sqrt(g0 * g0 * c[0] + 2 * g0 * g1 * c[1] + g1 * g1 * c[3]);
+      row.fitted_input_torque_sd_Nm = fit.PropagatedStandardDeviation({t_in.v[0], t_in.v[1]});
     }
     row.residual_Nm = row.fitted_input_torque_Nm - data[i].input_torque_Nm;
     row.weighted_residual = fit.residuals[i];

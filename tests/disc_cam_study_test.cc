@@ -132,6 +132,46 @@ TEST(DiscCamStudy, OscillatingExample) {
   EXPECT_NEAR(r.series.follower[IndexAt(r.series.cam_angle_deg, 130.0)], 20.0, 1e-9);
 }
 
+// Lazy stages: "analysis.evaluate": ["profile"] needs no tolerances and computes neither the
+// mechanical error nor the Monte-Carlo check (no error series, fields or plot), with the same
+// profile as the full study; ["error"] adds the error but not the Monte-Carlo check.
+TEST(DiscCamStudy, ProfileOnlySkipsTheErrorStages) {
+  const Ran full = ParseAndRun(Example("disc_cam_translating.json"));
+  ASSERT_TRUE(full.result.error_evaluated);
+  ASSERT_EQ(full.result.monte_carlo, disc_study::Result::MonteCarlo::kDone);
+
+  json file = Example("disc_cam_translating.json");
+  file.erase("tolerances");
+  file["analysis"]["evaluate"] = {"profile"};
+  const Ran bare = ParseAndRun(file);
+  EXPECT_FALSE(bare.result.error_evaluated);
+  EXPECT_TRUE(bare.result.series.error_worst_case_um.empty());
+  EXPECT_EQ(bare.result.monte_carlo, disc_study::Result::MonteCarlo::kOff);
+  EXPECT_TRUE(bare.result.monte_carlo_rows.empty());
+  EXPECT_EQ(bare.result.series.pressure_angle_deg, full.result.series.pressure_angle_deg);
+  EXPECT_EQ(bare.result.max_radial_dimension_mm.value, full.result.max_radial_dimension_mm.value);
+  const json j = disc_study::ToJson(bare.study, bare.result);
+  EXPECT_FALSE(j.contains("worst_case_error_um"));
+  EXPECT_FALSE(j.contains("monte_carlo"));
+  EXPECT_EQ(j["evaluated"], json({"profile"}));
+
+  const auto dir = TempDir("disc-cam-profile-only");
+  WriteFile(dir / "study.json", file.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                             (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "profile.svg"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "error.svg"));
+  EXPECT_EQ(ReadFile(dir / "out" / "series.csv").find("error_"), std::string::npos);
+
+  file = Example("disc_cam_translating.json");
+  file["analysis"]["evaluate"] = {"error"};
+  const Ran error = ParseAndRun(file);
+  EXPECT_TRUE(error.result.error_evaluated);
+  EXPECT_EQ(error.result.monte_carlo, disc_study::Result::MonteCarlo::kOff);
+  EXPECT_EQ(error.result.series.error_worst_case_um, full.result.series.error_worst_case_um);
+}
+
 TEST(DiscCamStudy, UndercutIsReportedNotHidden) {
   json study = Example("disc_cam_translating.json");
   study["base_circle_radius_mm"] = 10;
@@ -205,7 +245,11 @@ INSTANTIATE_TEST_SUITE_P(
             {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 180}]})", "/motion/0/rise_mm", "rise_deg"},
         BadCase{"noreturndeg", kO, R"({"motion": [{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 180},
             {"law": "modified_sine", "rise_deg": -15, "cam_angle_deg": 180}]})", "/motion", "rises sum to 5 deg"},
-        BadCase{"steps", kT, R"({"analysis": {"angle_steps": 10}})", "/analysis/angle_steps", ">= 36"}),
+        BadCase{"steps", kT, R"({"analysis": {"angle_steps": 10}})", "/analysis/angle_steps", ">= 36"},
+        BadCase{"stage", kT, R"({"analysis": {"evaluate": ["stress"]}})", "/analysis/evaluate/0",
+                "\"monte_carlo\""},
+        BadCase{"stage_input", kT, R"({"tolerances": null, "analysis": {"evaluate": ["error"]}})",
+                "/tolerances", "missing"}),
     [](const ::testing::TestParamInfo<BadCase>& p) { return std::string(p.param.name); });
 
 }  // namespace

@@ -197,6 +197,54 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
   }
 }
 
+// Lazy stages: "analysis.evaluate": ["geometry"] needs no load, contact or dynamics inputs and
+// runs neither the dynamics nor the surface export, even when the file asks for speeds and files;
+// the geometry is that of the full study.
+TEST(GloboidalStudy, GeometryOnlySkipsDynamicsAndExport) {
+  const Ran full = ParseAndRun(Example());
+  json file = Example();
+  file.erase("load");
+  file.erase("contact");
+  file.erase("dynamics");
+  file["analysis"]["evaluate"] = {"geometry"};
+  const Ran bare = ParseAndRun(file);
+  EXPECT_TRUE(bare.result.speeds.empty());
+  EXPECT_TRUE(bare.result.surface_points[0].empty());
+  EXPECT_TRUE(bare.result.surface_axis_mm.empty());
+  EXPECT_EQ(bare.result.survey.max_abs_pressure_angle.value,
+            full.result.survey.max_abs_pressure_angle.value);
+  EXPECT_EQ(bare.result.series.min_undercut_margin, full.result.series.min_undercut_margin);
+
+  file = Example();  // speeds and export given, but not asked for
+  file["analysis"]["evaluate"] = {"geometry"};
+  const Ran asked = ParseAndRun(file);
+  EXPECT_TRUE(asked.result.speeds.empty());
+  EXPECT_TRUE(asked.result.surface_points[1].empty());
+  const json j = globoidal_study::ToJson(asked.study, asked.result);
+  EXPECT_FALSE(j.contains("dynamics"));
+  EXPECT_FALSE(j.contains("load"));
+  EXPECT_FALSE(j.contains("surface_export"));
+  EXPECT_EQ(j["evaluated"], json({"geometry"}));
+
+  // Through the CLI: no dynamics or surface files are written.
+  const auto dir = TempDir("globoidal-geometry-only");
+  WriteFile(dir / "study.json", file.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                             (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "series.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "dynamics_600rpm.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "working_surfaces.stl"));
+
+  // Dynamics without the export: the speeds run, no surfaces.
+  file = Example();
+  file["analysis"]["evaluate"] = {"geometry", "dynamics"};
+  file["dynamics"]["relative_tolerance"] = 1e-6;
+  const Ran dyn = ParseAndRun(file);
+  EXPECT_EQ(dyn.result.speeds.size(), 2u);
+  EXPECT_TRUE(dyn.result.surface_points[0].empty());
+}
+
 TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
   json study = Example();
   study["cam"]["roller_radius_mm"] = 7.5;
@@ -253,7 +301,26 @@ INSTANTIATE_TEST_SUITE_P(
             {"law": "dwell", "cam_angle_deg": 105}]})", "/motion", "swing must run from 0 to"},
         BadCase{"speed", R"({"dynamics": {"cam_speeds_rpm": [600, -120]}})", "/dynamics/cam_speeds_rpm/1",
                 "> 0"},
-        BadCase{"steps", R"({"dynamics": {"time_step_s": 1e-9}})", "/dynamics", "time steps"},
+        BadCase{"step", R"({"dynamics": {"time_step_s": 1e-3}})", "/dynamics/time_step_s",
+                "give \"relative_tolerance\""},
+        BadCase{"tiny_step", R"({"dynamics": {"time_step_s": 1e-9}})", "/dynamics/time_step_s",
+                "no longer used"},
+        BadCase{"rtol", R"({"dynamics": {"relative_tolerance": 1e-20}})",
+                "/dynamics/relative_tolerance", "[1e-13, 1e-3]"},
+        BadCase{"loose_rtol", R"({"dynamics": {"relative_tolerance": 0.1}})",
+                "/dynamics/relative_tolerance", "[1e-13, 1e-3]"},
+        BadCase{"atol", R"({"dynamics": {"absolute_tolerance": 0}})",
+                "/dynamics/absolute_tolerance", "> 0"},
+        BadCase{"max_steps", R"({"dynamics": {"max_steps": 1000}})", "/dynamics/max_steps",
+                "loosen relative_tolerance"},
+        BadCase{"long_run", R"({"dynamics": {"end_time_s": 1e6}})", "/dynamics",
+                "shorten end_time_s or raise max_steps"},
+        BadCase{"stage", R"({"analysis": {"evaluate": ["geometry", "stress"]}})",
+                "/analysis/evaluate/1", "\"dynamics\""},
+        BadCase{"stage_input", R"({"dynamics": {"cam_speeds_rpm": null}, "analysis": {"evaluate": ["dynamics"]}})",
+                "/dynamics/cam_speeds_rpm", "missing"},
+        BadCase{"stage_speeds", R"({"dynamics": {"cam_speeds_rpm": []}, "analysis": {"evaluate": ["dynamics"]}})",
+                "/dynamics/cam_speeds_rpm", "at least one cam speed"},
         BadCase{"poisson", R"({"contact": {"cam_poisson": 0.7}})", "/contact/cam_poisson", "0.499"},
         BadCase{"arm", R"({"contact": {"contact_arm_mm": 30}})", "/contact/contact_arm_mm", "[l₂, l₁]"},
         BadCase{"jam", R"({"motion": [{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 0.5},

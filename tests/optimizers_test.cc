@@ -126,6 +126,19 @@ TEST_P(EveryBackend, LcrIISizingAgreesAcrossBackends) {
 
 // One constraint row per sample: the same optimum from the backends that handle many rows well
 // (MMA's dual subproblem has one variable per row and is left out: see docs/optimization.md).
+// Fit statistics against hand-computed values for a 2x2 covariance [[4, 3], [3, 9]]:
+// correlation 3 / sqrt(4·9) = 0.5; q = 2 x0 − x1 has variance 4·4 − 2·2·3 + 9 = 13.
+TEST(CeresFit, CorrelationAndPropagatedStandardDeviation) {
+  optimizers::FitResult fit;
+  fit.x = {1.0, 2.0};
+  fit.covariance = {4.0, 3.0, 3.0, 9.0};
+  EXPECT_DOUBLE_EQ(fit.Correlation(0, 1), 0.5);
+  EXPECT_DOUBLE_EQ(fit.Correlation(1, 0), 0.5);
+  EXPECT_DOUBLE_EQ(fit.Correlation(0, 0), 1.0);
+  EXPECT_NEAR(fit.PropagatedStandardDeviation({2.0, -1.0}), std::sqrt(13.0), 1e-14);
+  EXPECT_DOUBLE_EQ(fit.PropagatedStandardDeviation({0.0, 1.0}), 3.0);
+}
+
 TEST(Optimizers, LcrIISizingPerSampleConstraints) {
   const auto spec = testing::LcrIISizingSpec(objectives::LcrConstraintForm::kSamples);
   SolverOptions opt;
