@@ -1,8 +1,13 @@
 #include "studies/input.h"
 
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstring>
 #include <sstream>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace camopt::studies {
 
@@ -13,9 +18,43 @@ const nlohmann::json kMissing;  // null, for absent members
 Node::Node(const nlohmann::json* value, std::string file, std::string path)
     : value_(value), file_(std::move(file)), path_(path.empty() ? "/" : std::move(path)) {}
 
+namespace {
+
+// Appends a short text of j to out, stopping once out is longer than limit: a huge or deeply
+// nested value costs no more than the characters shown (the old dump() copied it all).
+void AppendShort(const nlohmann::json& j, std::string& out, size_t limit) {
+  if (out.size() > limit) return;
+  if (j.is_object()) {
+    out += '{';
+    bool first = true;
+    for (auto it = j.begin(); it != j.end() && out.size() <= limit; ++it) {
+      if (!first) out += ',';
+      first = false;
+      out += nlohmann::json(it.key()).dump() + ':';
+      AppendShort(*it, out, limit);
+    }
+    out += '}';
+  } else if (j.is_array()) {
+    out += '[';
+    for (size_t i = 0; i < j.size() && out.size() <= limit; ++i) {
+      if (i) out += ',';
+      AppendShort(j[i], out, limit);
+    }
+    out += ']';
+  } else if (j.is_string() && j.get_ref<const std::string&>().size() > limit) {
+    out += nlohmann::json(j.get_ref<const std::string&>().substr(0, limit)).dump(
+        -1, ' ', false, nlohmann::json::error_handler_t::replace);
+  } else {
+    out += j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  }
+}
+
+}  // namespace
+
 std::string Describe(const nlohmann::json& value) {
   if (value.is_null()) return "null";
-  std::string text = value.dump();
+  std::string text;
+  AppendShort(value, text, 60);
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   const char* kind = value.is_object()    ? "an object "
                      : value.is_array()   ? "an array "
@@ -143,17 +182,147 @@ bool Node::BoolOr(const std::string& key, bool fallback) const {
   return Has(key) ? (*this)[key].Bool() : fallback;
 }
 
-nlohmann::json LoadStudyFile(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw StudyError(file + ": cannot open the study file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  try {
-    return nlohmann::json::parse(buffer.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw StudyError(file + ": /: expected valid JSON, found a syntax error at byte " +
-                     std::to_string(e.byte));
+InputLimits& CurrentInputLimits() {
+  static InputLimits limits;
+  return limits;
+}
+
+std::string ReadFileCapped(const std::string& file, size_t max_bytes, const std::string& what) {
+  const auto fail = [&](const std::string& why) -> std::string {
+    throw StudyError(file + ": cannot read the " + what + ": " + why);
+  };
+  // O_NONBLOCK: opening a FIFO with no writer must not block; a regular file ignores it.
+  const int fd = open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return fail(std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (fstat(fd, &st) != 0) return fail(std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) return fail("it is a folder");
+  if (!S_ISREG(st.st_mode)) return fail("not a regular file (a device, FIFO or socket)");
+  if (static_cast<unsigned long long>(st.st_size) > max_bytes)
+    return fail("it has " + std::to_string(st.st_size) + " bytes, more than the limit of " +
+                std::to_string(max_bytes) + " (raise it with --max-work-factor)");
+  std::string text(static_cast<size_t>(st.st_size), '\0');
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = read(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return fail(std::strerror(errno));
+    if (n == 0) break;  // shrank while reading
+    done += static_cast<size_t>(n);
   }
+  text.resize(done);
+  return text;
+}
+
+namespace {
+
+// "line L, column C" of a byte offset (1-based), for syntax errors.
+std::string LineColumn(const std::string& text, size_t byte) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// A SAX pass over the text before the value is built: it keeps the JSON path of the current
+// value (only max_depth levels can exist) so that too deep nesting, an out-of-range number and a
+// syntax error are reported with a path. nlohmann's parser itself is iterative.
+class CheckingSax {
+ public:
+  CheckingSax(const std::string& text, const std::string& file, int max_depth)
+      : text_(text), file_(file), max_depth_(max_depth) {}
+
+  bool null() { return Value(); }
+  bool boolean(bool) { return Value(); }
+  bool number_integer(nlohmann::json::number_integer_t) { return Value(); }
+  bool number_unsigned(nlohmann::json::number_unsigned_t) { return Value(); }
+  bool number_float(nlohmann::json::number_float_t, const std::string&) { return Value(); }
+  bool string(std::string&) { return Value(); }
+  bool binary(nlohmann::json::binary_t&) { return Value(); }
+  bool start_object(size_t) { return Open(false); }
+  bool start_array(size_t) { return Open(true); }
+  bool key(std::string& k) {
+    frames_.back().key = k;
+    return true;
+  }
+  bool end_object() { return Close(); }
+  bool end_array() { return Close(); }
+
+  bool parse_error(size_t byte, const std::string& raw_token, const nlohmann::json::exception& e) {
+    // The offending text, printable ASCII only (it may be invalid UTF-8 or control bytes).
+    std::string token = raw_token;
+    for (char& c : token)
+      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+    if (e.id == 406)  // out_of_range: number overflow
+      throw StudyError(file_ + ": " + Path() + ": expected a number within the range of a double (" +
+                       "about ±1.8e308), found " + token.substr(0, 40));
+    throw StudyError(file_ + ": " + Path() + ": expected valid JSON, found a syntax error at " +
+                     LineColumn(text_, byte > 0 ? byte - 1 : 0) + " (near '" + token.substr(0, 20) +
+                     "')");
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    size_t count = 0;
+    std::string key;
+  };
+
+  bool Value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().count;
+    return true;
+  }
+  bool Open(bool array) {
+    if (static_cast<int>(frames_.size()) >= max_depth_)
+      throw StudyError(file_ + ": " + Path() + ": expected at most " + std::to_string(max_depth_) +
+                       " levels of nested arrays and objects, found deeper nesting");
+    frames_.push_back(Frame{array, 0, {}});
+    return true;
+  }
+  bool Close() {
+    frames_.pop_back();
+    return Value();
+  }
+  // The path of the value being read (in an array: the element about to be counted).
+  std::string Path() const {
+    std::string p;
+    for (const Frame& f : frames_) {
+      p += "/";
+      p += f.array ? std::to_string(f.count) : f.key;
+    }
+    return p.empty() ? "/" : p;
+  }
+
+  const std::string& text_;
+  const std::string& file_;
+  int max_depth_;
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
+nlohmann::json ParseStudyText(const std::string& text, const std::string& file, int max_depth) {
+  CheckingSax sax(text, file, max_depth);
+  if (!nlohmann::json::sax_parse(text, &sax))
+    throw StudyError(file + ": /: expected valid JSON, found a syntax error");
+  // The text is known to be valid, shallow and in range: build the value.
+  return nlohmann::json::parse(text);
+}
+
+nlohmann::json LoadStudyFile(const std::string& file) {
+  const InputLimits& limits = CurrentInputLimits();
+  return ParseStudyText(ReadFileCapped(file, limits.max_file_bytes, "file"), file,
+                        limits.max_depth);
 }
 
 }  // namespace camopt::studies

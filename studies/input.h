@@ -74,7 +74,27 @@ class Node {
 /// A short description of a JSON value for messages: its text, cut to a sensible length.
 std::string Describe(const nlohmann::json& value);
 
-/// Parses a study file; throws StudyError for an unreadable file or invalid JSON.
+/// Limits on what is read, checked before anything is parsed or allocated for it.
+struct InputLimits {
+  /// Largest study or catalogue file read, in bytes (a real study is a few kB).
+  size_t max_file_bytes = size_t{16} << 20;
+  /// Deepest nesting of arrays and objects (real studies nest 4 levels).
+  int max_depth = 64;
+};
+/// The limits LoadStudyFile uses (process-wide; the CLI raises them with --max-work-factor).
+InputLimits& CurrentInputLimits();
+
+/// The whole content of a regular file of at most max_bytes: the type and size are checked
+/// before reading, so /dev/zero, a FIFO or a huge file is refused at once. `what` names the file
+/// in messages ("study file", "roller catalogue"). Throws StudyError with the OS reason.
+std::string ReadFileCapped(const std::string& file, size_t max_bytes, const std::string& what);
+
+/// Parses JSON text of `file`: nesting deeper than max_depth, numbers outside the range of a
+/// double (1e400) and syntax errors are StudyErrors naming the file, the JSON path, and line and
+/// column. No recursion over the value: a 100 000-deep text is refused, not a stack overflow.
+nlohmann::json ParseStudyText(const std::string& text, const std::string& file, int max_depth);
+
+/// Reads (ReadFileCapped) and parses (ParseStudyText) a study file with CurrentInputLimits().
 nlohmann::json LoadStudyFile(const std::string& file);
 
 }  // namespace camopt::studies

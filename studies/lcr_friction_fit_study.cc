@@ -29,6 +29,8 @@ Parameter ParseParameter(const Node& parent, const std::string& key, Parameter f
   Parameter out = fallback;
   if (p.Has("bounds")) {
     const auto [lo, hi] = p["bounds"].Range();
+    // Equal bounds leave nothing to fit (and Ceres refuses them with an opaque message).
+    if (!(lo < hi)) p["bounds"].Fail("[lower, upper] with lower < upper");
     out.lower = lo, out.upper = hi;
   }
   out.initial = p.NumberOr("initial", std::clamp(fallback.initial, out.lower, out.upper));

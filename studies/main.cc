@@ -1,23 +1,66 @@
-// camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet]`.
-// Exit codes: 0 success, 2 bad input (study file or arguments), 3 the study ran and its outputs
-// were written but the answer is not what was asked (e.g. no design fits), 1 any other failure.
+// camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]`.
+// Exit codes, by cause:
+//   0   success
+//   2   something the user can fix: the study file, the arguments, the output folder (with the
+//       operating system's reason), a study over its work limits (docs/reliability.md)
+//   3   the study ran to the end but its result is not what was asked (not converged, nothing
+//       fits); the files are written and stderr says why
+//   1   a defect of camopt ("internal error")
+//   130 interrupted by SIGINT or SIGTERM (the temporary output folder is removed)
+#include <csignal>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <new>
+#include <thread>
+
+#include <pthread.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <glog/logging.h>
 
 #include "studies/study.h"
 
+namespace {
+
+// SIGINT and SIGTERM are blocked in every thread and taken by one thread with sigwait: it can
+// safely remove the temporary output folder (not possible in a signal handler) and end the
+// process, whatever the solvers are doing at that moment.
+void StartSignalThread() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  std::thread([set] {
+    int sig = 0;
+    sigwait(&set, &sig);
+    camopt::studies::RemoveTemporaryOutputForInterrupt();
+    static const char kMessage[] = "\ncamopt: interrupted\n";
+    if (write(2, kMessage, sizeof kMessage - 1) < 0) {}
+    _exit(130);
+  }).detach();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  StartSignalThread();
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
   app.require_subcommand(1);
   std::string study_file, out_dir;
   bool quiet = false;
+  double work_factor = 1.0;
   CLI::App* run = app.add_subcommand("run", "Analyse or size the design described in a study file");
   run->add_option("study", study_file, "Study file (JSON)")->required();
   run->add_option("--out,-o", out_dir, "Output folder (default: results/<study file stem>)");
   run->add_flag("--quiet,-q", quiet, "No progress lines on stderr");
+  run->add_option("--max-work-factor", work_factor,
+                  "Multiply every work, memory and file-size cap by this factor (default 1; "
+                  "see docs/reliability.md)")
+      ->check(CLI::Range(1e-6, 1e6));
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
 
   try {
@@ -26,6 +69,12 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+
+  // Ceres logs through Google logging: nothing of it reaches stderr under --quiet, and only
+  // errors otherwise (our own messages say what failed, with context).
+  FLAGS_logtostderr = false;
+  FLAGS_minloglevel = quiet ? google::GLOG_FATAL : google::GLOG_ERROR;
+  FLAGS_stderrthreshold = quiet ? google::GLOG_FATAL : google::GLOG_ERROR;
 
   if (kinds->parsed()) {
     for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
@@ -36,18 +85,29 @@ int main(int argc, char** argv) {
   try {
     camopt::studies::RunContext ctx;
     ctx.quiet = quiet;
+    ctx.max_work_factor = work_factor;
+    auto& limits = camopt::studies::CurrentInputLimits();
+    limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) *
+                                                std::min(work_factor, 1e3));
     camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
-    std::cerr << "camopt: " << e.what() << "\n";
+    std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
+              << "\n";
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "camopt: error: " << study_file
+              << ": out of memory (the work limits did not foresee this study's size; "
+                 "please report it)\n";
+    return 1;
   } catch (const std::exception& e) {
-    std::cerr << "camopt: failure: " << e.what() << "\n";
+    std::cerr << "camopt: internal error while running " << study_file << ": " << e.what()
+              << " (a camopt defect; please report it with the study file)\n";
     return 1;
   }
 }

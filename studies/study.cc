@@ -1,13 +1,19 @@
 #include "studies/study.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <mutex>
 #include <stdexcept>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include "studies/work_limits.h"
 
 namespace camopt::studies {
 
@@ -47,7 +53,7 @@ std::map<std::string, StudyRunner>& Registry() {
 // Rejects NaN and infinities anywhere in a json tree, naming the path.
 void CheckFiniteTree(const nlohmann::json& j, const std::string& path) {
   if (j.is_number_float() && !std::isfinite(j.get<double>()))
-    throw std::runtime_error("internal error: non-finite number at " + path);
+    throw NonFiniteResult(path);
   if (j.is_object())
     for (auto it = j.begin(); it != j.end(); ++it) CheckFiniteTree(*it, path + "/" + it.key());
   if (j.is_array())
@@ -62,18 +68,133 @@ void Outputs::AddJson(const std::string& name, const nlohmann::json& value) {
 }
 
 void Outputs::WriteAll(const std::string& dir) const {
-  const fs::path out(dir);
-  fs::create_directories(out);
-  const fs::path staging = out / ".camopt-staging";
-  fs::remove_all(staging);
-  fs::create_directories(staging);
-  for (const auto& [name, content] : files_) {
-    std::ofstream f(staging / name, std::ios::binary);
-    f << content;
-    if (!f) throw std::runtime_error("cannot write " + (staging / name).string());
+  OutputFolder folder(dir);
+  folder.Commit(*this);
+}
+
+namespace {
+
+// The temporary folder of the run in progress, for the signal thread; the mutex also covers the
+// whole Commit, so that an interrupt never lands between writing and renaming.
+std::mutex& OutputMutex() {
+  static std::mutex m;
+  return m;
+}
+std::string& ActiveTemporary() {
+  static std::string path;
+  return path;
+}
+
+[[noreturn]] void OutputFail(const std::string& what, const std::string& path, int err) {
+  throw StudyError("--out " + path + ": " + what + ": " + std::strerror(err));
+}
+
+void WriteWholeFile(const std::string& path, const std::string& content) {
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) OutputFail("cannot create " + fs::path(path).filename().string(), path, errno);
+  size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int err = errno;
+      close(fd);
+      OutputFail("cannot write " + fs::path(path).filename().string(), path, err);
+    }
+    done += static_cast<size_t>(n);
   }
-  for (const auto& [name, content] : files_) fs::rename(staging / name, out / name);
-  fs::remove_all(staging);
+  if (close(fd) != 0) OutputFail("cannot write " + fs::path(path).filename().string(), path, errno);
+}
+
+// Whether an existing folder may be replaced: empty, or a previous result (result.json, no
+// sub-folders). Anything else is the user's and is never deleted.
+bool IsReplaceable(const fs::path& dir) {
+  std::error_code ec;
+  bool has_result = false, empty = true;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    empty = false;
+    if (entry.is_directory(ec)) return false;
+    if (entry.path().filename() == "result.json") has_result = true;
+  }
+  return !ec && (empty || has_result);
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::string& dir) {
+  fs::path out = fs::path(dir).lexically_normal();
+  if (out.has_parent_path() && !out.has_filename()) out = out.parent_path();  // "out/"
+  if (out.empty() || out == "." || out == ".." || out == "/" || out.filename() == "..")
+    throw StudyError("--out " + dir + ": expected a folder name for the results, found " +
+                     (dir.empty() ? std::string("nothing") : dir));
+  dir_ = out.string();
+  struct stat st {};
+  if (lstat(dir_.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      throw StudyError("--out " + dir + ": exists and is not a folder");
+    if (!IsReplaceable(out))
+      throw StudyError("--out " + dir + ": the folder holds files that are not a camopt result " +
+                       "(no result.json, or sub-folders); choose a new or empty folder");
+  } else if (errno != ENOENT) {
+    OutputFail("cannot use the folder", dir, errno);
+  }
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  if (ec) throw StudyError("--out " + dir + ": cannot create " + parent.string() + ": " + ec.message());
+  const std::string tmp = dir_ + ".camopt-tmp-" + std::to_string(getpid());
+  fs::remove_all(tmp, ec);  // left by an earlier process with the same id
+  if (mkdir(tmp.c_str(), 0755) != 0) OutputFail("cannot create a folder next to it", dir, errno);
+  std::lock_guard<std::mutex> lock(OutputMutex());
+  tmp_ = tmp;
+  ActiveTemporary() = tmp_;
+}
+
+OutputFolder::~OutputFolder() {
+  std::lock_guard<std::mutex> lock(OutputMutex());
+  if (!committed_) {
+    std::error_code ec;
+    fs::remove_all(tmp_, ec);
+  }
+  if (ActiveTemporary() == tmp_) ActiveTemporary().clear();
+}
+
+void OutputFolder::Commit(const Outputs& outputs) {
+  std::lock_guard<std::mutex> lock(OutputMutex());
+  for (const auto& [name, content] : outputs.files())
+    WriteWholeFile((fs::path(tmp_) / name).string(), content);
+  // One rename makes the new results visible: an atomic exchange with the previous folder when
+  // there is one (Linux renameat2), a plain rename otherwise.
+  if (rename(tmp_.c_str(), dir_.c_str()) != 0) {
+    if (errno != ENOTEMPTY && errno != EEXIST) OutputFail("cannot move the results in", dir_, errno);
+    if (renameat2(AT_FDCWD, tmp_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0) {
+      // No exchange on this file system: move the old folder aside, then the new one in.
+      const std::string old = dir_ + ".camopt-old-" + std::to_string(getpid());
+      if (rename(dir_.c_str(), old.c_str()) != 0)
+        OutputFail("cannot move the previous results aside", dir_, errno);
+      if (rename(tmp_.c_str(), dir_.c_str()) != 0) {
+        const int err = errno;
+        rename(old.c_str(), dir_.c_str());
+        OutputFail("cannot move the results in", dir_, err);
+      }
+      std::error_code ec;
+      fs::remove_all(old, ec);
+      committed_ = true;
+      return;
+    }
+    std::error_code ec;
+    fs::remove_all(tmp_, ec);  // now the previous run
+  }
+  committed_ = true;
+}
+
+void RemoveTemporaryOutputForInterrupt() {
+  std::lock_guard<std::mutex> lock(OutputMutex());
+  if (!ActiveTemporary().empty()) {
+    std::error_code ec;
+    fs::remove_all(ActiveTemporary(), ec);
+    ActiveTemporary().clear();
+  }
 }
 
 bool RegisterStudy(const std::string& kind, StudyRunner runner) {
@@ -98,8 +219,29 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
     for (const auto& k : StudyKinds()) known += (known.empty() ? "" : ", ") + k;
     kind_node.Fail("a known study kind (" + known + ")");
   }
+  CheckWorkLimits(study, ctx.study_file, ctx.max_work_factor);
   Outputs outputs;
-  it->second(root, ctx, outputs);
+  try {
+    it->second(root, ctx, outputs);
+  } catch (const NonFiniteResult& e) {
+    throw StudyError(ctx.study_file + ": /: expected values the models can compute, found a " +
+                     "study whose result " + e.what() + " is not a finite number (check for " +
+                     "extreme sizes, such as 1e308 mm or 1e-6 mm)");
+  }
+  // A headline that says it did not converge (or is infeasible) makes the run incomplete
+  // (exit 3), for every kind alike; the kind's own warning is the reason.
+  const auto result = outputs.files().find("result.json");
+  if (result != outputs.files().end()) {
+    const nlohmann::json r = nlohmann::json::parse(result->second, nullptr, false);
+    if (r.is_object()) {
+      std::string why;
+      if (r.contains("warning") && r["warning"].is_string()) why = r["warning"].get<std::string>();
+      if (r.contains("converged") && r["converged"] == false)
+        outputs.MarkIncomplete(kind + ": not converged" + (why.empty() ? "" : ": " + why));
+      if (r.contains("feasible") && r["feasible"] == false)
+        outputs.MarkIncomplete(kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
+    }
+  }
   return outputs;
 }
 
@@ -107,13 +249,14 @@ void RunStudyFile(const std::string& file, const std::string& out_dir, const Run
   RunContext c = ctx;
   c.study_file = file;
   const nlohmann::json study = LoadStudyFile(file);
+  OutputFolder folder(out_dir);  // a bad --out is reported before the work
   const Outputs outputs = RunStudy(study, c);
-  outputs.WriteAll(out_dir);
+  folder.Commit(outputs);
   if (!outputs.incomplete().empty()) throw StudyIncomplete(outputs.incomplete());
 }
 
 double Finite(double value, const std::string& what) {
-  if (!std::isfinite(value)) throw std::runtime_error("internal error: " + what + " is not finite");
+  if (!std::isfinite(value)) throw NonFiniteResult(what);
   return value;
 }
 

@@ -38,6 +38,8 @@ class Progress {
 struct RunContext {
   std::string study_file;
   bool quiet = false;
+  /// Multiplies every work cap of studies/work_limits.h (--max-work-factor).
+  double max_work_factor = 1.0;
 };
 
 /// Files a study produces, kept in memory until the whole run succeeded, then written together:
@@ -47,13 +49,15 @@ class Outputs {
   void Add(const std::string& name, std::string content) { files_[name] = std::move(content); }
   void AddJson(const std::string& name, const nlohmann::json& value);
   const std::map<std::string, std::string>& files() const { return files_; }
-  /// Writes every file into dir (created if needed) through a staging folder and renames.
+  /// Writes every file into dir at once (an OutputFolder: temporary sibling folder, one rename).
   void WriteAll(const std::string& dir) const;
 
   /// The study ran to the end but its answer is not what was asked (no feasible design, not
   /// converged): the outputs are still written, then RunStudyFile throws StudyIncomplete with
-  /// this one-line reason (exit code 3).
-  void MarkIncomplete(std::string reason) { incomplete_ = std::move(reason); }
+  /// the reasons (exit code 3). Several reasons are joined with "; ".
+  void MarkIncomplete(std::string reason) {
+    incomplete_ += (incomplete_.empty() ? "" : "; ") + std::move(reason);
+  }
   const std::string& incomplete() const { return incomplete_; }
 
  private:
@@ -68,21 +72,54 @@ class StudyIncomplete : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The output folder of one run, filled all at once. The constructor checks that `dir` can take
+/// results and creates the sibling temporary folder `<dir>.camopt-tmp-<pid>` (so a bad --out is
+/// reported before any work, with the operating system's reason, as a StudyError: exit 2);
+/// Commit writes every file there and swaps the folder in with one rename, the previous run
+/// staying in place until that rename. An existing `dir` is replaced only when it is empty or
+/// holds a previous result (result.json and no sub-folders): camopt never deletes other folders.
+/// Destroying an uncommitted OutputFolder removes the temporary folder.
+class OutputFolder {
+ public:
+  explicit OutputFolder(const std::string& dir);
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+  void Commit(const Outputs& outputs);
+  const std::string& temporary() const { return tmp_; }
+
+ private:
+  std::string dir_, tmp_;
+  bool committed_ = false;
+};
+
+/// For the CLI's signal thread: removes the temporary folder of the run in progress (waiting for a
+/// Commit under way to finish, so that `--out` is left either old or new, never mixed).
+void RemoveTemporaryOutputForInterrupt();
+
 using StudyRunner = std::function<void(const Node& root, const RunContext&, Outputs&)>;
 
 /// Registers a study kind; returns true so that it can initialise a static.
 bool RegisterStudy(const std::string& kind, StudyRunner runner);
 std::vector<std::string> StudyKinds();
 
-/// Runs the study in file: parses, dispatches on "study", writes into out_dir.
-/// Throws StudyError for bad input (exit 2), StudyIncomplete after writing an incomplete result
-/// (exit 3) and std::exception for other failures.
+/// Runs the study in file: parses, checks the work limits, dispatches on "study", writes into
+/// out_dir (checked first). Throws StudyError for bad input (exit 2), StudyIncomplete after
+/// writing an incomplete result (exit 3), and std::exception for other failures.
 void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
 
 /// Runs an already parsed study, returning its outputs without writing them.
 Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx);
 
-/// A json number that is never NaN or infinite: throws std::runtime_error naming the field
+/// A result number that came out NaN or infinite. The inputs passed their checks, so it means
+/// the study's values are outside what the models can compute (a base radius of 1e308 mm, a
+/// roller of 1e-6 mm): RunStudy reports it as a StudyError (exit 2) naming the study file.
+class NonFiniteResult : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A json number that is never NaN or infinite: throws NonFiniteResult naming the field
 /// otherwise, so no non-finite number can reach a result file.
 double Finite(double value, const std::string& what);
 

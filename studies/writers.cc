@@ -226,7 +226,9 @@ std::string ToDxf(const Drawing& d) {
                      DL_Attributes("", static_cast<int>(1 + i % 6), 100, "CONTINUOUS", 1.0));
     dw->tableEnd();
     dw->tableStyle(1);
-    dxf.writeStyle(*dw, DL_StyleData("standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
+    // Exactly "Standard": dxflib gives DIMSTYLE the handle of the style of that name, and leaves
+    // it uninitialised (different bytes on every run) when there is none.
+    dxf.writeStyle(*dw, DL_StyleData("Standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
     dw->tableEnd();
     dxf.writeView(*dw);
     dxf.writeUcs(*dw);

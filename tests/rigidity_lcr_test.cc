@@ -232,7 +232,9 @@ TEST(LcrStiffness, NeedleBearingSpringIsInSeriesWithTheContact) {
 }
 
 TEST(LcrStiffness, GradientsMatchCentralDifferences) {
-  for (const auto& [clearance, bearing] : {std::pair{0.0, 0.0}, std::pair{0.003, 0.0}, std::pair{0.002, 2e5}}) {
+  for (const auto& cb : {std::pair{0.0, 0.0}, std::pair{0.003, 0.0}, std::pair{0.002, 2e5}}) {
+    // Plain copies: clang 14 cannot capture a structured binding in a lambda.
+    const double clearance = cb.first, bearing = cb.second;
     SCOPED_TRACE(::testing::Message() << clearance << " " << bearing);
     // Variables: eccentricity, output turret radius, roller length (input and output), torque [N·m].
     auto f = [clearance, bearing](const auto& x) {

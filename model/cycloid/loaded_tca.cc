@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "model/common/roots.h"
@@ -136,10 +137,14 @@ std::vector<double> LoadedTca::Gap(const contact::Grid& grid, double roller_curv
 }
 
 MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
-  if (!(std::isfinite(torque_Nmm) && torque_Nmm >= 0))
-    throw std::invalid_argument("torque must be finite and >= 0");
+  if (!(torque_Nmm >= 0)) throw std::invalid_argument("torque must be >= 0");
   MeshLoad out;
   out.crank_angle_rad = crank_angle_rad;
+  if (std::isinf(torque_Nmm)) {  // a torque that overflowed its unit conversion (1e308 N·m)
+    out.converged = false;
+    out.message = "torque balance not met: the torque is not a finite number in N·mm";
+    return out;
+  }
   const UnloadedMesh<double> unloaded = UnloadedTca<double>(drive_, crank_angle_rad);
   out.unloaded_rotation_rad = unloaded.rotation;
   out.rotation_rad = unloaded.rotation;
@@ -285,6 +290,22 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad) {
   out.iterations = iter;
   out.converged = converged && out.message.empty();
   if (!converged) out.message = "compatibility not converged in " + std::to_string(iter) + " iterations";
+  // The converged flag is earned: the pair loads must carry the torque, Σ l_i F_i = M, within
+  // the compatibility tolerance (pairs not re-solved may lag by half of it). The deflection
+  // search stops at 1 rad, so a drive far too soft or a torque far too large fails this check
+  // even when every pair is compatible.
+  double carried = 0;
+  for (size_t i = 0; i < n; ++i) carried += arms[i] * cand[i].load;
+  const double balance_tolerance = 2.0 * options_.tolerance;
+  if (!(std::isfinite(moment) && std::abs(carried - moment) <= balance_tolerance * moment)) {
+    out.converged = false;
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "torque balance not met: the pair loads carry %.4g%% of the torque (Σ l·F = "
+                  "%.4g N·mm against %.4g N·mm; tolerance %.2g%%)",
+                  100.0 * carried / moment, carried, moment, 100.0 * balance_tolerance);
+    out.message = buf;
+  }
   out.deflection_rad = delta_phi;
   out.rotation_rad = unloaded.rotation + delta_phi;
 

@@ -1,0 +1,258 @@
+#include "studies/work_limits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "studies/input.h"
+
+namespace camopt::studies {
+
+namespace {
+
+using nlohmann::json;
+
+const json kNull;
+
+const json& Sub(const json& o, const char* key) {
+  if (!o.is_object()) return kNull;
+  auto it = o.find(key);
+  return it == o.end() ? kNull : *it;
+}
+
+// A size from the raw file: a finite number >= 0, else the kind's default (the kind's own parser
+// reports a value of the wrong type with its path).
+double Size(const json& o, const char* key, double fallback) {
+  const json& v = Sub(o, key);
+  if (!v.is_number()) return fallback;
+  const double x = v.get<double>();
+  return std::isfinite(x) && x >= 0 ? x : fallback;
+}
+
+size_t Count(const json& v) { return v.is_array() || v.is_object() ? v.size() : 0; }
+
+std::string Num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+// One term of an estimate: the work it adds and the path that sets it.
+struct Term {
+  double work;
+  std::string path;
+  std::string detail;
+};
+
+WorkEstimate Largest(std::vector<Term> terms, double cap, std::string unit, double bytes_per_unit) {
+  WorkEstimate e;
+  e.cap = cap;
+  e.unit = std::move(unit);
+  double largest = -1;
+  for (const Term& t : terms) {
+    e.work += t.work;
+    if (t.work > largest) {
+      largest = t.work;
+      e.path = t.path;
+      e.detail = t.detail;
+    }
+  }
+  e.memory_bytes = e.work * bytes_per_unit;
+  return e;
+}
+
+// Rollers and lobes of both cams of an LCR "reducer" object (defaults: a typical reducer).
+void LcrCounts(const json& reducer, double& rollers, double& lobes) {
+  rollers = Size(Sub(reducer, "input"), "rollers", 13) + Size(Sub(reducer, "output"), "rollers", 15);
+  lobes = Size(Sub(reducer, "input"), "lobes", 12) + Size(Sub(reducer, "output"), "lobes", 14);
+}
+
+WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
+  const json& a = Sub(s, "analysis");
+  double rollers, lobes;
+  LcrCounts(Sub(s, "reducer"), rollers, lobes);
+  const double steps = Size(a, "angle_steps", 3600);
+  std::vector<Term> terms = {{steps * rollers, "/analysis/angle_steps",
+                              Num(steps) + " angle steps × " + Num(rollers) + " rollers"}};
+  if (!fit) {
+    const double points = Size(a, "profile_points", 3600);
+    terms.push_back({points * lobes, "/analysis/profile_points",
+                     Num(points) + " profile points × " + Num(lobes) + " lobes"});
+  } else {
+    terms.push_back({double(Count(Sub(s, "measurements"))), "/measurements", "measurements"});
+  }
+  return Largest(terms, 2e7 * factor, "roller contact evaluations", 64);
+}
+
+WorkEstimate Rigidity(const json& s, double factor, const std::string& file) {
+  const json& chain = Sub(s, "chain");
+  const double elements = double(Count(chain));
+  if (elements > 1000 * factor)
+    throw StudyError(file + ": /chain: the chain has " + Num(elements) +
+                     " elements, more than the cap of " + Num(1000 * factor) +
+                     "; raise the caps with --max-work-factor");
+  std::vector<Term> terms;
+  if (chain.is_array()) {
+    for (size_t i = 0; i < chain.size(); ++i) {
+      const json& e = chain[i];
+      const json& kind = Sub(e, "element");
+      if (!kind.is_string() || kind.get<std::string>() != "lobe_cam_reducer") {
+        terms.push_back({1.0, "/chain/" + std::to_string(i), "one element"});
+        continue;
+      }
+      double rollers, lobes;
+      LcrCounts(Sub(e, "reducer"), rollers, lobes);
+      const double steps = Size(e, "angle_steps", 720);
+      terms.push_back({2 * steps * rollers, "/chain/" + std::to_string(i) + "/angle_steps",
+                       "2 load directions × " + Num(steps) + " angle steps × " + Num(rollers) +
+                           " rollers"});
+    }
+  }
+  return Largest(terms, 2e6 * factor, "roller load-sharing solves", 200);
+}
+
+WorkEstimate Globoidal(const json& s, double factor) {
+  std::vector<Term> terms;
+  const json& d = Sub(s, "dynamics");
+  // The dynamics run on CVODE with error control: about 5000 accepted steps per cam revolution
+  // at the default tolerance (docs/globoidal.md), never more than max_steps per speed.
+  constexpr double kStepsPerRevolution = 5000;
+  const double end = Size(d, "end_time_s", 0);
+  const double max_steps = Size(d, "max_steps", 2e7);
+  const json& speeds = Sub(d, "cam_speeds_rpm");
+  double steps = 0;
+  if (speeds.is_array())
+    for (const json& v : speeds) {
+      const double rpm = v.is_number() ? v.get<double>() : 0;
+      if (!(rpm > 0) || !std::isfinite(rpm)) continue;
+      const double revolutions = end > 0 ? end * rpm / 60.0 : 1.0;
+      steps += std::min(revolutions * kStepsPerRevolution, max_steps);
+    }
+  terms.push_back({steps, "/dynamics",
+                   Num(double(Count(speeds))) + " cam speeds, about " + Num(kStepsPerRevolution) +
+                       " solver steps per revolution"});
+  const json& a = Sub(s, "analysis");
+  const double angle = Size(a, "angle_steps", 720), axis = Size(a, "axis_steps", 7);
+  terms.push_back({angle * axis, "/analysis/angle_steps",
+                   Num(angle) + " angle steps × " + Num(axis) + " axis steps"});
+  const json& x = Sub(s, "export");
+  const double xa = Size(x, "angle_steps", 360), xx = Size(x, "axis_steps", 6);
+  terms.push_back({xa * xx, "/export/angle_steps", Num(xa) + " × " + Num(xx) + " surface points"});
+  return Largest(terms, 1e7 * factor, "time steps and surface points", 150);
+}
+
+double GridCells(const json& analysis) {
+  const json& g = Sub(analysis, "grid");
+  double p = 40, q = 40;
+  if (g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number()) {
+    p = std::max(0.0, g[0].get<double>());
+    q = std::max(0.0, g[1].get<double>());
+  }
+  return p * q;
+}
+
+WorkEstimate CycloidLtca(const json& s, double factor) {
+  const json& a = Sub(s, "analysis");
+  const double rollers = Size(Sub(s, "drive"), "rollers", 16);
+  const double cells = GridCells(a);
+  const json& list = Sub(a, "crank_angles_deg");
+  const double angles = list.is_array() ? double(list.size()) : Size(a, "crank_angle_steps", 60);
+  return Largest({{angles * rollers * cells, Sub(a, "grid").is_null() ? "/analysis" : "/analysis/grid",
+                   Num(angles) + " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +
+                       " grid cells"}},
+                 5e7 * factor, "contact cell solves", 24);
+}
+
+WorkEstimate CrowningTuning(const json& s, double factor) {
+  const json& a = Sub(s, "analysis");
+  const json& t = Sub(s, "tuning");
+  const double rollers = Size(Sub(s, "drive"), "rollers", 16);
+  const double cells = GridCells(a);
+  const double angles = Size(a, "crank_angles_per_mesh_period", 6);
+  const double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
+  return Largest({{2 * evaluations * angles * rollers * cells, "/analysis/grid",
+                   "2 torques × " + Num(evaluations) + " evaluations × " + Num(angles) +
+                       " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +
+                       " grid cells"}},
+                 5e7 * factor, "contact cell solves", 1);
+}
+
+WorkEstimate DiscCam(const json& s, double factor) {
+  const json& a = Sub(s, "analysis");
+  const double steps = Size(a, "angle_steps", 3600);
+  std::vector<Term> terms = {{steps, "/analysis/angle_steps", Num(steps) + " angle steps"}};
+  const json& mc = Sub(a, "monte_carlo");
+  if (!mc.is_boolean() || mc.get<bool>()) {
+    const double samples = Size(mc, "samples", 200), mc_steps = Size(mc, "angle_steps", 360);
+    const json& scales = Sub(mc, "scales");
+    const double n_scales = scales.is_array() ? double(scales.size()) : 3;
+    terms.push_back({samples * mc_steps * n_scales, "/analysis/monte_carlo",
+                     Num(samples) + " samples × " + Num(mc_steps) + " angle steps × " +
+                         Num(n_scales) + " scales"});
+  }
+  return Largest(terms, 2e6 * factor, "cam angle evaluations", 200);
+}
+
+WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
+  const json& search = Sub(s, "search");
+  const double lobes = Size(search, "max_lobes", 40);
+  const json& diffs = Sub(search, "roller_lobe_difference");
+  const double n_diffs = diffs.is_array() ? double(diffs.size()) : 1;
+  const double starts = Size(Sub(s, "optimizer"), "starts", 1);
+  double rollers = 1;
+  const json& cat = Sub(s, "roller_catalogue");
+  if (cat.is_array()) rollers = std::max<double>(1, cat.size());
+  const json& cat_file = Sub(cat, "file");
+  if (cat_file.is_string()) {
+    // The catalogue file is checked here (regular file, size cap) so that /dev/zero or a huge
+    // file is refused with the JSON path that names it, before any work.
+    std::filesystem::path p(cat_file.get<std::string>());
+    if (p.is_relative()) p = std::filesystem::path(file).parent_path() / p;
+    std::error_code ec;
+    // A missing file is the kind's to report (after its own checks of the study).
+    if (std::filesystem::exists(p, ec)) {
+      try {
+        rollers = std::max<double>(1, Count(LoadStudyFile(p.string())));
+      } catch (const StudyError& e) {
+        throw StudyError(file + ": /roller_catalogue/file: " + e.what());
+      }
+    }
+  }
+  return Largest({{lobes * n_diffs * rollers * starts, "/search/max_lobes",
+                   Num(lobes) + " lobe counts × " + Num(n_diffs) + " roller-lobe differences × " +
+                       Num(rollers) + " catalogue rollers × " + Num(starts) + " starts"}},
+                 2e4 * factor, "local optimizations", 1000);
+}
+
+}  // namespace
+
+WorkEstimate EstimateWork(const json& study, const std::string& file, double factor) {
+  const json& kind_json = Sub(study, "study");
+  const std::string kind = kind_json.is_string() ? kind_json.get<std::string>() : "";
+  if (kind == "lcr_analysis") return LcrAnalysis(study, factor, false);
+  if (kind == "lcr_friction_fit") return LcrAnalysis(study, factor, true);
+  if (kind == "transmission_rigidity") return Rigidity(study, factor, file);
+  if (kind == "globoidal_cam") return Globoidal(study, factor);
+  if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
+  if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
+  if (kind == "disc_cam") return DiscCam(study, factor);
+  if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
+  WorkEstimate none;
+  none.cap = 1;
+  return none;
+}
+
+void CheckWorkLimits(const json& study, const std::string& file, double factor) {
+  const WorkEstimate e = EstimateWork(study, file, factor);
+  const std::string raise = "; raise the caps with --max-work-factor (see docs/reliability.md)";
+  if (e.work > e.cap)
+    throw StudyError(file + ": " + e.path + ": the study needs about " + Num(e.work) + " " +
+                     e.unit + " (" + e.detail + "), more than the cap of " + Num(e.cap) + raise);
+  if (e.memory_bytes > kMaxMemoryBytes * factor)
+    throw StudyError(file + ": " + e.path + ": the study needs about " + Num(e.memory_bytes / 1e9) +
+                     " GB of memory (" + e.detail + "), more than the cap of " +
+                     Num(kMaxMemoryBytes * factor / 1e9) + " GB" + raise);
+}
+
+}  // namespace camopt::studies

@@ -1,0 +1,45 @@
+// Up-front limits on the work of a study: one place that estimates, from the sizes in the study
+// file, how much a study will compute and how much memory it will hold, before anything runs.
+// A study over its cap is refused at once (exit 2) with the estimate and the cap, instead of
+// running for hours or exhausting memory. The caps are sized for a laptop (about a minute of
+// work and well under 2 GB); --max-work-factor F multiplies every cap for a bigger machine.
+//
+// Caps per study kind (work units, with F = 1):
+//   lcr_analysis, lcr_friction_fit  angle_steps × rollers + profile_points × lobes  ≤ 2e7
+//   transmission_rigidity           elements ≤ 1000; Σ reducer angle_steps × rollers × 2 ≤ 2e6
+//   globoidal_cam                   Σ over speeds of time steps ≤ 1e7; surface points ≤ 1e7
+//   cycloid_ltca                    crank angles × rollers × grid cells ≤ 5e7
+//   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
+//   disc_cam                        angle_steps + MC samples × angle_steps × scales ≤ 2e6
+//   lcr_min_size                    lobe counts × differences × catalogue rollers × starts ≤ 2e4
+//   every kind                      estimated memory ≤ 2 GB
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace camopt::studies {
+
+/// The estimate of one study: `work` in the kind's unit, against `cap` (already × factor).
+struct WorkEstimate {
+  double work = 0;          ///< estimated work units
+  double cap = 0;           ///< the cap for this kind × factor
+  double memory_bytes = 0;  ///< estimated peak memory of the results held
+  std::string unit;         ///< what one unit is ("roller contact evaluations", …)
+  std::string path;         ///< JSON path of the size that dominates ("/analysis/angle_steps")
+  std::string detail;       ///< how the estimate was formed ("3600 angle steps × 28 rollers")
+};
+
+/// The memory cap with factor 1, in bytes.
+constexpr double kMaxMemoryBytes = 2.0e9;
+
+/// Estimates the work of a study from its raw JSON (before the kind parses it; values of the wrong
+/// type count as their defaults, the kind reports them). Unknown kinds estimate zero.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor);
+
+/// Throws a StudyError "FILE: PATH: the study needs about X UNIT (DETAIL), more than the cap of Y;
+/// raise the caps with --max-work-factor" when the work or the memory is over its cap × factor.
+void CheckWorkLimits(const nlohmann::json& study, const std::string& file, double factor);
+
+}  // namespace camopt::studies

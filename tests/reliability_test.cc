@@ -1,0 +1,450 @@
+// Reliability (issue 14, docs/reliability.md): every case of the table has its test here — bad
+// input refused with exit 2 and a path, absurd sizes refused up front within a second with the
+// cap and the estimate, results that are not converged exit 3, the output folder replaced all at
+// once, interrupts, and byte-identical output for the same study.
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/input.h"
+#include "studies/study.h"
+#include "studies/work_limits.h"
+#include "tests/test_util.h"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using camopt::testing::Example;
+using camopt::testing::ReadFile;
+using camopt::testing::RunCamopt;
+using camopt::testing::SourcePath;
+using camopt::testing::TempDir;
+using camopt::testing::WriteFile;
+using nlohmann::json;
+
+struct Timed {
+  camopt::testing::CliResult result;
+  double seconds;
+};
+
+Timed RunTimed(const std::string& args) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto r = RunCamopt(args);
+  return {r, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+}
+
+// The up-front refusal: exit 2, quickly, one line with the file, the JSON path, and the words
+// (the cap and the estimate); nothing written. The issue asks for "within a second"; the bound
+// here is looser because the test machine is shared and may run under sanitizers.
+void ExpectRefusedQuickly(const std::string& tag, const fs::path& file, const std::string& path,
+                          const std::string& words) {
+  SCOPED_TRACE(tag);
+  const auto out = file.parent_path() / ("out-" + tag);
+  const Timed t = RunTimed("run " + file.string() + " --quiet --out " + out.string());
+  EXPECT_EQ(t.result.exit_code, 2) << t.result.stderr_text;
+  EXPECT_LT(t.seconds, 10.0);
+  EXPECT_NE(t.result.stderr_text.find(file.string() + ": " + path), std::string::npos)
+      << t.result.stderr_text;
+  EXPECT_NE(t.result.stderr_text.find(words), std::string::npos) << t.result.stderr_text;
+  EXPECT_EQ(std::count(t.result.stderr_text.begin(), t.result.stderr_text.end(), '\n'), 1)
+      << t.result.stderr_text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+fs::path Write(const fs::path& dir, const std::string& name, const json& study) {
+  WriteFile(dir / name, study.dump());
+  return dir / name;
+}
+
+// ---- Point 2: hangs and memory exhaustion become up-front refusals ---------------------------
+
+TEST(WorkLimits, AbsurdSizesAreRefusedWithinASecondWithCapAndEstimate) {
+  const auto dir = TempDir("work-limits");
+  const std::string cap = "more than the cap of ";
+  json s = Example("lcr_ii.json");
+  s["analysis"]["angle_steps"] = 1e9;
+  ExpectRefusedQuickly("lcr-steps", Write(dir, "a.json", s), "/analysis/angle_steps: ", cap);
+  s = Example("lcr_ii.json");
+  s["analysis"]["profile_points"] = 1e9;
+  ExpectRefusedQuickly("lcr-points", Write(dir, "b.json", s), "/analysis/profile_points: ", cap);
+  s = Example("lcr_friction_fit.json");
+  s["analysis"] = {{"angle_steps", 1e9}};
+  ExpectRefusedQuickly("fit-steps", Write(dir, "c.json", s), "/analysis/angle_steps: ", cap);
+  s = Example("rigidity_lcr_ii.json");
+  s["chain"][0]["angle_steps"] = 1e9;
+  ExpectRefusedQuickly("rigidity-steps", Write(dir, "d.json", s), "/chain/0/angle_steps: ", cap);
+  s = Example("rigidity_lcr_ii.json");
+  s["chain"] = json::array();
+  for (int i = 0; i < 100000; ++i)
+    s["chain"].push_back({{"element", "coupling"}, {"name", "c"}, {"rigidity_Nm_per_rad", 1500}});
+  ExpectRefusedQuickly("rigidity-chain", Write(dir, "e.json", s), "/chain: ", cap);
+  s = Example("globoidal_cam_paper.json");
+  s["dynamics"]["cam_speeds_rpm"] = json::array();
+  for (int i = 0; i < 100000; ++i) s["dynamics"]["cam_speeds_rpm"].push_back(600);
+  ExpectRefusedQuickly("globoidal-speeds", Write(dir, "f.json", s), "/dynamics: ", cap);
+  s = Example("lcr_min_size_catalogue.json");
+  s["roller_catalogue"] = {{"file", "/dev/zero"}};
+  ExpectRefusedQuickly("catalogue-dev-zero", Write(dir, "g.json", s), "/roller_catalogue/file: ",
+                       "not a regular file");
+  s = Example("cycloid_ltca_nnm_fcm.json");
+  s["analysis"]["grid"] = {512, 512};
+  ExpectRefusedQuickly("cycloid-512", Write(dir, "h.json", s), "/analysis/grid: ", cap);
+  // A 250 MB study: refused from its size, before it is read (a sparse file: no disk used).
+  const auto big = dir / "big.json";
+  WriteFile(big, Example("lcr_ii.json").dump());
+  fs::resize_file(big, 250u << 20);
+  ExpectRefusedQuickly("study-250MB", big, "", "more than the limit of");
+  // A catalogue file that is too big, through the same check.
+  const auto big_catalogue = dir / "rollers.json";
+  WriteFile(big_catalogue, "[]");
+  fs::resize_file(big_catalogue, 100u << 20);
+  s = Example("lcr_min_size_catalogue.json");
+  s["roller_catalogue"] = {{"file", "rollers.json"}};
+  ExpectRefusedQuickly("catalogue-big", Write(dir, "i.json", s), "/roller_catalogue/file: ",
+                       "more than the limit of");
+}
+
+TEST(WorkLimits, TheFactorRaisesEveryCap) {
+  json s = Example("lcr_ii.json");
+  s["analysis"]["angle_steps"] = 1000000;  // 2.8e7 evaluations, cap 2e7
+  EXPECT_THROW(camopt::studies::CheckWorkLimits(s, "s.json", 1.0), camopt::studies::StudyError);
+  EXPECT_NO_THROW(camopt::studies::CheckWorkLimits(s, "s.json", 2.0));
+  const auto e = camopt::studies::EstimateWork(s, "s.json", 2.0);
+  EXPECT_DOUBLE_EQ(e.work, 1e6 * (13 + 15) + 3600.0 * (12 + 14));
+  EXPECT_DOUBLE_EQ(e.cap, 4e7);
+  // The CLI flag reaches the check: a tiny factor refuses the plain example.
+  const auto dir = TempDir("work-factor");
+  const auto r = RunCamopt("run " + SourcePath("studies/examples/lcr_ii.json") +
+                           " --quiet --max-work-factor 0.001 --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("more than the cap of 2e+04"), std::string::npos) << r.stderr_text;
+}
+
+TEST(WorkLimits, EveryExampleIsWithinTheCaps) {
+  for (const auto& e : fs::directory_iterator(SourcePath("studies/examples"))) {
+    if (e.path().filename() == "needle_rollers.json") continue;  // a catalogue, not a study
+    SCOPED_TRACE(e.path().filename().string());
+    const json s = json::parse(ReadFile(e.path()));
+    EXPECT_NO_THROW(camopt::studies::CheckWorkLimits(s, e.path().string(), 1.0));
+  }
+}
+
+// ---- Point 3 and 4: parsing — nesting, numbers out of range, syntax --------------------------
+
+TEST(StudyInput, DeepNestingIsRefusedWithoutRecursion) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  try {
+    camopt::studies::ParseStudyText(deep, "deep.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("deep.json: /0/0/"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at most 64 levels"), std::string::npos) << e.what();
+  }
+  // 64 levels are fine.
+  EXPECT_NO_THROW(camopt::studies::ParseStudyText(std::string(64, '[') + std::string(64, ']'), "ok.json", 64));
+  // Through the CLI: exit 2 with one line, not a stack overflow.
+  const auto dir = TempDir("deep");
+  WriteFile(dir / "deep.json", deep);
+  ExpectRefusedQuickly("deep", dir / "deep.json", "/0/0/0", "levels of nested arrays");
+}
+
+TEST(StudyInput, NumberOutOfRangeNamesFileAndPath) {
+  try {
+    camopt::studies::ParseStudyText(R"({"a": {"b": [1, 2, 1e400]}})", "n.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "n.json: /a/b/2: expected a number within the range of a double (about ±1.8e308), "
+              "found 1e400");
+  }
+  const auto dir = TempDir("big-number");
+  std::string text = ReadFile(SourcePath("studies/examples/lcr_ii.json"));
+  text.replace(text.find("\"output_torque_Nm\": 80"), 22, "\"output_torque_Nm\": 1e400");
+  WriteFile(dir / "s.json", text);
+  ExpectRefusedQuickly("1e400", dir / "s.json", "/load/output_torque_Nm: ", "found 1e400");
+}
+
+TEST(StudyInput, SyntaxErrorGivesLineAndColumn) {
+  try {
+    camopt::studies::ParseStudyText("{\n  \"a\": 1,\n  \"b\": ]\n}", "s.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /b: expected valid JSON, found a syntax error at line 3"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(StudyInput, InvalidUtf8IsASyntaxErrorAndTheMessageStaysPrintable) {
+  try {
+    camopt::studies::ParseStudyText("{\"name\": \"\xff\xfe\"}", "u.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("u.json: /name: expected valid JSON"), std::string::npos) << m;
+    for (char c : m) EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f) << m;
+  }
+}
+
+TEST(StudyInput, DescribeOfAHugeValueIsShort) {
+  json big = json::array();
+  for (int i = 0; i < 200000; ++i) big.push_back(i);
+  const std::string d = camopt::studies::Describe(big);
+  EXPECT_LE(d.size(), 80u);
+  EXPECT_EQ(d.substr(0, 17), "an array [0,1,2,3");
+}
+
+TEST(StudyInput, FifoAndFolderAreRefusedAtOnce) {
+  const auto dir = TempDir("fifo");
+  ASSERT_EQ(mkfifo((dir / "fifo.json").c_str(), 0644), 0);
+  EXPECT_THROW(camopt::studies::LoadStudyFile((dir / "fifo.json").string()), camopt::studies::StudyError);
+  EXPECT_THROW(camopt::studies::LoadStudyFile(dir.string()), camopt::studies::StudyError);
+  EXPECT_THROW(camopt::studies::LoadStudyFile("/dev/zero"), camopt::studies::StudyError);
+  try {
+    camopt::studies::LoadStudyFile((dir / "missing.json").string());
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
+  }
+}
+
+// ---- Point 4: bad input that used to be an internal failure (exit 1) -------------------------
+
+TEST(BadInput, ExtremeSizesAndEqualBoundsExitWith2) {
+  const auto dir = TempDir("bad-extreme");
+  json s = Example("disc_cam_translating.json");
+  s["base_circle_radius_mm"] = 1e308;
+  s["analysis"]["monte_carlo"] = false;
+  ExpectRefusedQuickly("disc-1e308", Write(dir, "a.json", s), "/: ", "not a finite number");
+  s = Example("disc_cam_translating.json");
+  s["follower"]["roller_radius_mm"] = 1e-6;
+  s["analysis"]["monte_carlo"]["samples"] = 5;
+  ExpectRefusedQuickly("disc-tiny-roller", Write(dir, "b.json", s), "/: ", "not a finite number");
+  s = Example("lcr_friction_fit.json");
+  s["parameters"]["friction_coefficient"] = {{"initial", 0.05}, {"bounds", {0.05, 0.05}}};
+  ExpectRefusedQuickly("fit-equal-bounds", Write(dir, "c.json", s),
+                       "/parameters/friction_coefficient/bounds: ", "lower < upper");
+  s = Example("globoidal_cam_paper.json");
+  s["dynamics"]["time_step_s"] = 1e-3;  // a fixed step: the dynamics now run with error control
+  ExpectRefusedQuickly("globoidal-step", Write(dir, "d.json", s), "/dynamics/time_step_s: ",
+                       "give \"relative_tolerance\"");
+}
+
+TEST(BadInput, BadOutFolderExitsWith2WithTheReasonBeforeTheWork) {
+  const auto dir = TempDir("bad-out");
+  WriteFile(dir / "file", "x");
+  const std::string study = SourcePath("studies/examples/lcr_ii.json");
+  auto r = RunCamopt("run " + study + " --quiet --out " + (dir / "file").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("exists and is not a folder"), std::string::npos) << r.stderr_text;
+  r = RunCamopt("run " + study + " --quiet --out " + (dir / "file" / "sub").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("Not a directory"), std::string::npos) << r.stderr_text;
+  // A folder of the user's (not a previous result) is never replaced.
+  fs::create_directories(dir / "mine" / "sub");
+  WriteFile(dir / "mine" / "notes.txt", "keep");
+  r = RunCamopt("run " + study + " --quiet --out " + (dir / "mine").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_EQ(ReadFile(dir / "mine" / "notes.txt"), "keep");
+  EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
+}
+
+TEST(BadInput, QuietMeansNothingOnStderr) {
+  const auto dir = TempDir("quiet");
+  for (const char* name : {"lcr_friction_fit.json", "globoidal_cam_paper.json"}) {
+    const auto r = RunCamopt("run " + SourcePath(std::string("studies/examples/") + name) +
+                             " --quiet --out " + (dir / name).string());
+    EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+    EXPECT_EQ(r.stderr_text, "") << name;
+  }
+}
+
+// ---- Point 1: a converged flag is earned; not converged exits 3 ------------------------------
+
+json SmallCycloid() {
+  json s = Example("cycloid_ltca_nnm_none.json");
+  s["analysis"] = {{"crank_angle_steps", 2}, {"grid", {12, 12}}};
+  return s;
+}
+
+void ExpectExit3(const std::string& tag, const json& study, const std::string& words) {
+  SCOPED_TRACE(tag);
+  const auto dir = TempDir("exit3-" + tag);
+  WriteFile(dir / "s.json", study.dump());
+  const auto r = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("the results do not meet what was asked"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find(words), std::string::npos) << r.stderr_text;
+  // The files are written, and say so.
+  const json result = json::parse(ReadFile(dir / "o" / "result.json"));
+  EXPECT_FALSE(result["converged"].get<bool>());
+}
+
+TEST(Converged, CycloidSoftMaterialHugeTorqueOrTinyEccentricityExit3) {
+  json s = SmallCycloid();
+  s["material"]["youngs_modulus_GPa"] = 1e-6;
+  ExpectExit3("soft", s, "torque balance not met");
+  s = SmallCycloid();
+  s["load"]["torque_Nm"] = 1e308;
+  ExpectExit3("torque", s, "torque balance not met");
+  s = SmallCycloid();
+  s["drive"]["eccentricity_mm"] = 1e-4;
+  ExpectExit3("eccentricity", s, "no roller on the loaded flank");
+}
+
+TEST(Converged, ThePaperExampleStillConvergesAndCarriesTheTorque) {
+  const auto dir = TempDir("converged-ok");
+  WriteFile(dir / "s.json", SmallCycloid().dump());
+  const auto r = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+  const json result = json::parse(ReadFile(dir / "o" / "result.json"));
+  EXPECT_TRUE(result["converged"].get<bool>());
+}
+
+// ---- Point 5: transactional output, interrupts -----------------------------------------------
+
+std::vector<fs::path> Leftovers(const fs::path& dir) {
+  std::vector<fs::path> left;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().find(".camopt-") != std::string::npos) left.push_back(e.path());
+  return left;
+}
+
+TEST(Output, APreviousResultStaysUntilTheNewOneIsComplete) {
+  const auto dir = TempDir("transaction");
+  const auto out = dir / "out";
+  auto r = RunCamopt("run " + SourcePath("studies/examples/lcr_friction_fit.json") + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const std::string before = ReadFile(out / "result.json");
+  // A study that fails after the output folder was prepared: the old results stay, whole.
+  json bad = Example("lcr_friction_fit.json");
+  bad["measurements"] = json::array();
+  WriteFile(dir / "bad.json", bad.dump());
+  r = RunCamopt("run " + (dir / "bad.json").string() + " --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_EQ(ReadFile(out / "result.json"), before);
+  EXPECT_TRUE(Leftovers(dir).empty());
+  EXPECT_TRUE(Leftovers(out).empty());
+  // A different study replaces the folder as a whole: no file of the previous run remains.
+  r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(json::parse(ReadFile(out / "result.json"))["study"], "transmission_rigidity");
+  EXPECT_FALSE(fs::exists(out / "fit.csv") && fs::exists(out / "residuals.csv"));
+  for (const auto& e : fs::directory_iterator(out)) EXPECT_FALSE(e.path().extension() == ".dxf");
+  EXPECT_TRUE(Leftovers(dir).empty());
+}
+
+// Starts camopt, sends `sig` after `delay_s`, returns (exit code, stderr).
+std::pair<int, std::string> RunAndSignal(const std::vector<std::string>& args, int sig, double delay_s,
+                                         const fs::path& err_file) {
+  std::vector<char*> argv;
+  std::string bin = CAMOPT_BINARY;
+  argv.push_back(bin.data());
+  std::vector<std::string> copy = args;
+  for (auto& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  EXPECT_EQ(posix_spawn(&pid, bin.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  usleep(static_cast<useconds_t>(delay_s * 1e6));
+  kill(pid, sig);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ReadFile(err_file)};
+}
+
+TEST(Output, SigintAndSigtermStopTheRunRemoveTheTemporaryFolderAndExit130) {
+  const auto dir = TempDir("interrupt");
+  json s = Example("cycloid_ltca_nnm_none.json");
+  s["analysis"]["crank_angle_steps"] = 600;  // about 20 s: certainly running after 1 s
+  WriteFile(dir / "slow.json", s.dump());
+  for (int sig : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(sig);
+    const auto out = dir / ("out" + std::to_string(sig));
+    const auto [code, err] =
+        RunAndSignal({"run", (dir / "slow.json").string(), "--out", out.string()}, sig, 1.0, dir / "err.txt");
+    EXPECT_EQ(code, 130) << err;
+    EXPECT_NE(err.find("interrupted"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_TRUE(Leftovers(dir).empty());
+  }
+}
+
+// ---- Point 5: the same study gives the same bytes --------------------------------------------
+
+// Examples made lighter where they are slow (the test runs each twice, and under sanitizers).
+json Coarse(const std::string& name) {
+  json s = Example(name);
+  if (name.rfind("cycloid_ltca", 0) == 0) s["analysis"] = {{"crank_angle_steps", 4}, {"grid", {16, 16}}};
+  if (name == "cycloid_crowning_tuning_nnm.json") {
+    s["tuning"]["curve_points"] = 3;
+    s["tuning"]["max_evaluations"] = 3;
+    s["analysis"] = {{"crank_angles_per_mesh_period", 2}, {"grid", {12, 12}}};
+  }
+  if (name.rfind("disc_cam", 0) == 0) s["analysis"]["monte_carlo"]["samples"] = 10;
+  if (name == "globoidal_cam_paper.json") s["dynamics"]["cam_speeds_rpm"] = {600};
+  return s;
+}
+
+std::map<std::string, std::string> Folder(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::directory_iterator(dir)) files[e.path().filename().string()] = ReadFile(e.path());
+  return files;
+}
+
+class TwoRuns : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(TwoRuns, GiveByteIdenticalFolders) {
+  const std::string name = GetParam();
+  const auto dir = TempDir("twice-" + name);
+  WriteFile(dir / name, Coarse(name).dump(2));
+  fs::copy_file(SourcePath("studies/examples/needle_rollers.json"), dir / "needle_rollers.json");
+  std::map<std::string, std::string> runs[2];
+  for (int k = 0; k < 2; ++k) {
+    const auto out = dir / ("out" + std::to_string(k));
+    const auto r = RunCamopt("run " + (dir / name).string() + " --quiet --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+    runs[k] = Folder(out);
+  }
+  ASSERT_EQ(runs[0].size(), runs[1].size());
+  for (const auto& [file, content] : runs[0]) {
+    SCOPED_TRACE(file);
+    ASSERT_TRUE(runs[1].count(file));
+    const std::string& a = content;
+    const std::string& b = runs[1][file];
+    EXPECT_TRUE(a == b) << "differs between two runs";
+  }
+}
+
+std::vector<std::string> ExampleNames() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(SourcePath("studies/examples")))
+    if (e.path().filename() != "needle_rollers.json") names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryExample, TwoRuns, ::testing::ValuesIn(ExampleNames()),
+                         [](const auto& example) {
+                           std::string n = example.param.substr(0, example.param.size() - 5);
+                           for (char& c : n)
+                             if (!isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+}  // namespace
