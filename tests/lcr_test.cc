@@ -161,6 +161,38 @@ TEST(LcrForces, FrictionLowersEfficiencyAsThePapersModelSays) {
   EXPECT_LT(a.efficiency, 1.0);
 }
 
+// AnalyzeCycle's double fast path (structure-of-arrays buffers, the fixed turret's centres computed
+// once) must give AnalyzeAngle's numbers bit for bit at every angle, for every stage set and load.
+TEST(LcrCycle, FastPathEqualsAnalyzeAngleBitForBit) {
+  const std::vector<LoadCase> loads = {{80000.0, 0.05, 0.0}, {80000.0, 0.0, 30.0}, {0.0, 0.05, 0.0},
+                                       {0.0, 0.05, 20.0}, {1.0, 0.0, 0.0}};
+  const std::vector<Stages> stage_sets = {{}, {true, false, true}, {true, true, false},
+                                          {true, false, false}, {false, false, true}, {false, false, false}};
+  for (const Reducer<double>& r : {LcrI(), LcrII(), LcrIII()})
+    for (const LoadCase& load : loads)
+      for (const Stages& stages : stage_sets) {
+        const int steps = 97;
+        const CycleSeries s = AnalyzeCycle(r, Steel(), load, steps, stages);
+        ASSERT_EQ(s.theta_rad.size(), size_t(steps));
+        for (int i = 0; i < steps; ++i) {
+          const double theta = 2 * kPi * i / steps;
+          const AngleLoads<double> a = AnalyzeAngle(r, Steel(), load, theta, stages);
+          EXPECT_EQ(s.theta_rad[i], theta);
+          for (auto [series, side] : {std::pair{&s.input, &a.input}, std::pair{&s.output, &a.output}}) {
+            EXPECT_EQ(series->actuating[i], side->actuating);
+            EXPECT_EQ(series->max_force_N[i], side->max_force);
+            EXPECT_EQ(series->max_stress_MPa[i], side->max_stress);
+            EXPECT_EQ(series->turret_torque_Nmm[i], side->turret_torque);
+            EXPECT_EQ(series->roller_force_N[i], side->force);
+          }
+          EXPECT_EQ(s.tangential_force_N[i], a.tangential_force);
+          EXPECT_EQ(s.radial_force_N[i], a.radial_force);
+          EXPECT_EQ(s.input_torque_Nmm[i], a.input_torque);
+          EXPECT_EQ(s.efficiency[i], a.efficiency);
+        }
+      }
+}
+
 // Table 3 of the paper: max roller force within 3%, actuating roller counts within 1.
 TEST(LcrPaper, Table3ForcesAndActuatingCounts) {
   struct Row { Reducer<double> r; int act_a, act_b; double f_a, f_b; };

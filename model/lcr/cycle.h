@@ -2,7 +2,10 @@
 // aggregates of the same quantities for optimizers.
 #pragma once
 
+#include <cmath>
 #include <functional>
+#include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "model/lcr/forces.h"
@@ -22,30 +25,14 @@ struct CycleSeries {
 };
 
 /// Samples θ = 2π i / steps, i = 0 … steps − 1. progress(fraction) is called now and then.
-inline CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material,
-                                const LoadCase& load, int steps, const Stages& stages,
-                                const std::function<void(double)>& progress = {}) {
-  CycleSeries s;
-  s.theta_rad.reserve(steps);
-  for (int i = 0; i < steps; ++i) {
-    const double theta = 2 * kPi * i / steps;
-    AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
-    s.theta_rad.push_back(theta);
-    for (auto [series, side] : {std::pair{&s.input, &a.input}, std::pair{&s.output, &a.output}}) {
-      series->actuating.push_back(side->actuating);
-      series->max_force_N.push_back(side->max_force);
-      series->max_stress_MPa.push_back(side->max_stress);
-      series->turret_torque_Nmm.push_back(side->turret_torque);
-      series->roller_force_N.push_back(std::move(side->force));
-    }
-    s.tangential_force_N.push_back(a.tangential_force);
-    s.radial_force_N.push_back(a.radial_force);
-    s.input_torque_Nmm.push_back(a.input_torque);
-    s.efficiency.push_back(a.efficiency);
-    if (progress && (i % 256 == 0 || i + 1 == steps)) progress(double(i + 1) / steps);
-  }
-  return s;
-}
+/// Gives exactly (bit for bit) the numbers of AnalyzeAngle at each θ: the per-roller work runs on
+/// reused structure-of-arrays buffers (the input turret's centres, which do not move, are computed
+/// once), in the order of operations of contact.h and forces.h.
+/// Defined in cycle.cc (double only; keeping it out of the header leaves the inlining of the
+/// templated Jet paths in the including files as it was).
+CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, const LoadCase& load,
+                         int steps, const Stages& stages,
+                         const std::function<void(double)>& progress = {});
 
 /// The one cycle aggregate of the LCR (used by AggregateCycle and by the sizing problem of
 /// objectives/lcr_sizing.h): a log-sum-exp soft maximum taken on x/scale with dimensionless

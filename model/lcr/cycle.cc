@@ -1,0 +1,206 @@
+// AnalyzeCycle's double fast path (declared in cycle.h): structure-of-arrays buffers reused over
+// the angles, so that the per-roller square roots and divisions run two at a time; the same
+// operations in the same order as AnalyzeAngle (contact.h, forces.h), hence the same bits.
+#include "model/lcr/cycle.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+
+namespace camopt::lcr {
+
+namespace internal {
+namespace {
+
+/// Reusable per-turret buffers of the double fast path of AnalyzeCycle, in structure-of-arrays
+/// form so that the per-roller square roots and divisions of one turret run several at a time.
+struct TurretBuffers {
+  std::vector<double> cx, cy;            // roller centres O_k [mm]
+  std::vector<double> arm, dx, dy, kappa;  // a_k, d_k, κ_k (contact.h's RollerContact, without the point)
+  std::vector<double> loaded;            // PositivePart(sign · a_k)
+  std::vector<double> stress;            // Hertz p_max [MPa]
+};
+
+void Resize(TurretBuffers& b, int n) {
+  for (auto* v : {&b.cx, &b.cy, &b.arm, &b.dx, &b.dy, &b.kappa, &b.loaded, &b.stress}) v->resize(n);
+}
+
+/// Roller centres of one turret at θ into b.cx, b.cy: the same expression as RollerCentres.
+void FillCentres(TurretBuffers& b, const Reducer<double>& r, Side s, double theta) {
+  const CamSide<double>& c = r.side(s);
+  const double turn = s == Side::kInput ? 0.0 : OutputSpeedRatio(r) * theta;
+  for (int i = 0; i < c.rollers; ++i) {
+    const Vec2<double> o = c.turret_radius * U(double(2.0 * kPi * i / c.rollers) + turn);
+    b.cx[i] = o.x(), b.cy[i] = o.y();
+  }
+}
+
+/// The per-roller loop of FillContacts over plain arrays (restrict: no aliasing, so it vectorises).
+void ContactKernel(const CamSide<double> c, double e, double px, double py, double ex, double ey,
+                          double sign, int n, const double* __restrict cx, const double* __restrict cy,
+                          double* __restrict arm, double* __restrict dx, double* __restrict dy,
+                          double* __restrict kappa, double* __restrict loaded) {
+  const double rd = c.turret_radius;
+  for (int k = 0; k < n; ++k) {
+    const double vx = px - cx[k], vy = py - cy[k];
+    const double norm = std::sqrt(vx * vx + vy * vy);
+    const double ux = vx / norm, uy = vy / norm;
+    dx[k] = ux, dy[k] = uy;
+    const double a = cx[k] * uy - cy[k] * ux;
+    arm[k] = a;
+    const double sa = sign * a;
+    loaded[k] = sa > 0.0 ? sa : 0.0;  // PositivePart
+    kappa[k] = PitchCurvature(c, e, (cx[k] * ex + cy[k] * ey) / rd);
+  }
+}
+
+/// FillStresses' Hertz stress of every roller into p (0 where unloaded, +∞ on an undercut part of
+/// the pitch curve), branch-free over plain arrays so that it vectorises.
+void StressKernel(int n, const double* __restrict force, const double* __restrict kappa,
+                         double roller_radius, double length, double e_star, double* __restrict p) {
+  // The square roots on every lane first (NaN where r_eff <= 0: discarded below), then the choice.
+  for (int k = 0; k < n; ++k) {
+    const double r_eff = roller_radius * (1.0 - roller_radius * kappa[k]);
+    p[k] = contact::LineContactPeakPressure(force[k], length, r_eff, e_star);
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!(force[k] > 0)) {
+      p[k] = 0.0;  // p → 0 continuously as F → 0
+    } else if (!(roller_radius * (1.0 - roller_radius * kappa[k]) > 0)) {
+      p[k] = kInf;  // the roller sits on an undercut part of the pitch curve
+    }
+  }
+}
+
+/// The contact geometry of RollerContacts (same operations in the same order, so the same bits),
+/// written as plain loops over arrays that the compiler vectorises.
+void FillContacts(TurretBuffers& b, const Reducer<double>& r, Side s, const Vec2<double>& ecc,
+                         double sign) {
+  const CamSide<double>& c = r.side(s);
+  const Vec2<double> pitch = r.eccentricity * double(c.pitch_factor()) * ecc;  // PitchPointOfCam
+  ContactKernel(c, r.eccentricity, pitch.x(), pitch.y(), ecc.x(), ecc.y(), sign, c.rollers, b.cx.data(),
+                b.cy.data(), b.arm.data(), b.dx.data(), b.dy.data(), b.kappa.data(), b.loaded.data());
+}
+
+}  // namespace
+}  // namespace internal
+
+// AnalyzeCycle: see cycle.h.
+CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, const LoadCase& load,
+                         int steps, const Stages& stages, const std::function<void(double)>& progress) {
+  CycleSeries s;
+  s.theta_rad.reserve(steps);
+  for (SideSeries* series : {&s.input, &s.output}) {
+    series->actuating.reserve(steps);
+    series->max_force_N.reserve(steps);
+    series->max_stress_MPa.reserve(steps);
+    series->turret_torque_Nmm.reserve(steps);
+    series->roller_force_N.reserve(steps);
+  }
+  for (auto* v : {&s.tangential_force_N, &s.radial_force_N, &s.input_torque_Nmm, &s.efficiency})
+    v->reserve(steps);
+  const bool any_stage = stages.forces || stages.stress || stages.efficiency;
+
+  internal::TurretBuffers buf_a, buf_b;
+  internal::Resize(buf_a, r.input.rollers);
+  internal::Resize(buf_b, r.output.rollers);
+  if (any_stage) internal::FillCentres(buf_a, r, Side::kInput, 0.0);  // the fixed turret stands
+  const double sign_a = LoadedArmSign(r, Side::kInput), sign_b = LoadedArmSign(r, Side::kOutput);
+  const double ratio_b = double(r.output.lobes) / r.output.rollers;
+  const double ratio_a = double(r.input.lobes) / r.input.rollers;
+  const double tol_a = 1e-9 * r.input.turret_radius, tol_b = 1e-9 * r.output.turret_radius;
+  const double e_star = material.composite_modulus_MPa();
+  const double ratio = std::abs(SpeedReductionRatio(r));
+  const double mu = load.friction_coefficient;
+
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2 * kPi * i / steps;
+    s.theta_rad.push_back(theta);
+    if (!any_stage) {  // contacts only: nothing of the series depends on them
+      AngleLoads<double> a = AnalyzeAngle(r, material, load, theta, stages);
+      for (auto [series, side] : {std::pair{&s.input, &a.input}, std::pair{&s.output, &a.output}}) {
+        series->actuating.push_back(side->actuating);
+        series->max_force_N.push_back(side->max_force);
+        series->max_stress_MPa.push_back(side->max_stress);
+        series->turret_torque_Nmm.push_back(side->turret_torque);
+        series->roller_force_N.push_back(std::move(side->force));
+      }
+      s.tangential_force_N.push_back(a.tangential_force);
+      s.radial_force_N.push_back(a.radial_force);
+      s.input_torque_Nmm.push_back(a.input_torque);
+      s.efficiency.push_back(a.efficiency);
+    } else {
+      const Vec2<double> u = U(theta);
+      internal::FillCentres(buf_b, r, Side::kOutput, theta);
+      internal::FillContacts(buf_a, r, Side::kInput, u, sign_a);
+      internal::FillContacts(buf_b, r, Side::kOutput, u, sign_b);
+      double sum_a = 0.0, sum_b = 0.0;  // SumLoadedArmSquares
+      for (double a : buf_a.loaded) sum_a += a * a;
+      for (double a : buf_b.loaded) sum_b += a * a;
+      if (!(sum_a > 0) || !(sum_b > 0))
+        throw std::domain_error("no roller of a turret can carry load at this input angle");
+      const double c_b = load.output_torque_Nmm / sum_b;
+      const double c_a = c_b * ratio_b * sum_b / (ratio_a * sum_a);
+      for (auto [series, buf, cam, c, tol] :
+           {std::tuple{&s.input, &buf_a, &r.input, c_a, tol_a},
+            std::tuple{&s.output, &buf_b, &r.output, c_b, tol_b}}) {
+        // FillForces
+        const size_t n = buf->loaded.size();
+        std::vector<double> force(n);
+        int actuating = 0;
+        double max_force = 0.0, torque = 0.0;
+        for (size_t k = 0; k < n; ++k) {
+          const double a = buf->loaded[k];
+          force[k] = c * a;
+          torque += force[k] * a;
+          if (a > tol) ++actuating;
+          if (force[k] > max_force) max_force = force[k];
+        }
+        // FillStresses
+        double max_stress = 0.0;
+        if (stages.stress) {
+          internal::StressKernel(int(n), force.data(), buf->kappa.data(), cam->roller_radius, cam->contact_length(),
+                       e_star, buf->stress.data());
+          for (size_t k = 0; k < n; ++k)
+            if (buf->stress[k] > max_stress) max_stress = buf->stress[k];
+        }
+        series->actuating.push_back(actuating);
+        series->max_force_N.push_back(max_force);
+        series->max_stress_MPa.push_back(max_stress);
+        series->turret_torque_Nmm.push_back(torque);
+        series->roller_force_N.push_back(std::move(force));
+      }
+      double tangential = 0.0, radial = 0.0, input_torque = 0.0, efficiency = 0.0;
+      if (stages.efficiency) {
+        const bool unloaded = load.output_torque_Nmm == 0.0;
+        Vec2<double> per_torque(0.0, 0.0);
+        const double unit_b = 1.0 / sum_b;
+        const double unit_a = unit_b * ratio_b * sum_b / (ratio_a * sum_a);
+        for (auto [buf, c] : {std::pair{&buf_a, unit_a}, std::pair{&buf_b, unit_b}})
+          for (size_t k = 0; k < buf->loaded.size(); ++k)
+            per_torque += c * buf->loaded[k] * Vec2<double>(buf->dx[k], buf->dy[k]);
+        const Vec2<double> g = load.output_torque_Nmm * per_torque + Vec2<double>(0.0, -load.cam_weight_N);
+        tangential = -g.dot(Perp(u));
+        radial = g.dot(u);
+        input_torque = InputTorque(tangential, radial, mu, r.eccentricity);
+        if (!unloaded) {
+          efficiency = Efficiency(load.output_torque_Nmm, input_torque, ratio);
+        } else if (load.cam_weight_N > 0) {
+          efficiency = 0.0;
+        } else {
+          const double unit_torque = InputTorque(-per_torque.dot(Perp(u)), per_torque.dot(u), mu, r.eccentricity);
+          efficiency = Efficiency(1.0, unit_torque, ratio);
+        }
+      }
+      s.tangential_force_N.push_back(tangential);
+      s.radial_force_N.push_back(radial);
+      s.input_torque_Nmm.push_back(input_torque);
+      s.efficiency.push_back(efficiency);
+    }
+    if (progress && (i % 256 == 0 || i + 1 == steps)) progress(double(i + 1) / steps);
+  }
+  return s;
+}
+
+}  // namespace camopt::lcr
