@@ -1,4 +1,4 @@
-// Validation of the half-space contact solver against closed forms (NOTES §1, model/contact/
+// Validation of the half-space contact solver against closed forms (docs/papers.md §1, model/contact/
 // hertz.h): Hertz point contact of a sphere on a flat, and the mid-face of a long straight roller
 // against Hertz line contact; and the edge peak of that roller growing as the axial cells shrink.
 // The numbers behind docs/validation.md ("Half-space contact solver") come from
@@ -22,7 +22,7 @@ namespace {
 constexpr double kEStar = 115384.6;  // steel on steel [MPa]
 
 TEST(ContactHertz, NotesSteelExampleOfLineContact) {
-  // NOTES §1: E = 210 GPa, ν = 0.3 both, F = 1000 N, L = 10 mm, R' = 10 mm → E* = 115.4 GPa,
+  // docs/papers.md §1: E = 210 GPa, ν = 0.3 both, F = 1000 N, L = 10 mm, R' = 10 mm → E* = 115.4 GPa,
   // p_max ≈ 606 MPa.
   const double e_star = CompositeModulus(210000.0, 0.3, 210000.0, 0.3);
   EXPECT_NEAR(e_star, 115384.6, 0.1);

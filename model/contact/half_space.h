@@ -5,7 +5,7 @@
 //
 // Units: mm, N, MPa (N/mm²). Grid cells are rectangles of size dx × dy (full sizes), cell
 // (ix, iy) has centre (x0 + (ix + 0.5) dx, y0 + (iy + 0.5) dy); arrays are row-major, index
-// iy * nx + ix. The agreed interface is /work/wt/CONTACT_API.md; docs/contact.md explains the
+// iy * nx + ix. docs/contact.md explains the
 // model, the cost and the cell-size dependence of edge peaks.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Gap fields of the closed-form reference contacts used to validate the half-space solver
-// (Hertz point and line contact, NOTES §1), on a Grid of half_space.h.
+// (Hertz point and line contact, docs/papers.md §1), on a Grid of half_space.h.
 #pragma once
 
 #include <vector>
