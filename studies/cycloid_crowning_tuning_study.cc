@@ -205,11 +205,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-void RunKind(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  Write(s, Run(s, ctx), out);
-}
-CAMOPT_REGISTER_STUDY("cycloid_crowning_tuning", RunKind);
+CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_crowning_tuning

@@ -300,11 +300,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-void RunKind(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  Write(s, Run(s, ctx), out);
-}
-CAMOPT_REGISTER_STUDY("cycloid_ltca", RunKind);
+CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

@@ -489,12 +489,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-void RunStudyKind(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study study = Parse(root);
-  Write(study, Run(study, ctx), out);
-}
+CAMOPT_REGISTER_STUDY_KIND("disc_cam");
 }  // namespace
-
-CAMOPT_REGISTER_STUDY("disc_cam", RunStudyKind);
 
 }  // namespace camopt::studies::disc_cam

@@ -611,12 +611,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-void RunStudyKind(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study study = Parse(root);
-  Write(study, Run(study, ctx), out);
-}
+CAMOPT_REGISTER_STUDY_KIND("globoidal_cam");
 }  // namespace
-
-CAMOPT_REGISTER_STUDY("globoidal_cam", RunStudyKind);
 
 }  // namespace camopt::studies::globoidal_cam

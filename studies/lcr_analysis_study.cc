@@ -330,10 +330,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY("lcr_analysis", [](const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study study = Parse(root);
-  Write(study, Run(study, ctx), out);
-});
+CAMOPT_REGISTER_STUDY_KIND("lcr_analysis");
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

@@ -130,3 +130,14 @@ double Finite(double value, const std::string& what);
 #define CAMOPT_REGISTER_STUDY(kind, fn) \
   static const bool CAMOPT_CONCAT(camopt_study_registered_, __LINE__) = \
       ::camopt::studies::RegisterStudy(kind, fn)
+
+/// Registers a study kind of the Parse → Run → Write shape: used inside the kind's namespace,
+/// which defines Study, Parse(const Node&), Run(const Study&, const RunContext&) and
+/// Write(const Study&, const Result&, Outputs&).
+#define CAMOPT_REGISTER_STUDY_KIND(kind)                                                        \
+  CAMOPT_REGISTER_STUDY(kind, [](const ::camopt::studies::Node& root,                           \
+                                 const ::camopt::studies::RunContext& ctx,                      \
+                                 ::camopt::studies::Outputs& out) {                             \
+    const auto study = Parse(root);                                                             \
+    Write(study, Run(study, ctx), out);                                                         \
+  })

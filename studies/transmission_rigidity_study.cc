@@ -477,11 +477,7 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 }
 
 namespace {
-void RunKind(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  Write(s, Run(s, ctx), out);
-}
-CAMOPT_REGISTER_STUDY("transmission_rigidity", RunKind);
+CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
 }  // namespace
 
 }  // namespace camopt::studies::transmission_rigidity
