@@ -12,6 +12,7 @@
 #include "model/common/material.h"
 #include "model/lcr/cycle.h"
 #include "studies/input.h"
+#include "studies/geometry_files.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -33,6 +34,9 @@ struct Study {
   double contact_stress_limit_MPa = kInf;  ///< kInf: no limit given
   double roller_load_limit_N = kInf;
   double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
+  bool cutter_input_given = false, cutter_output_given = false;      ///< a cutter other than the roller
+  double bore_diameter_input_mm = 0, bore_diameter_output_mm = 0;    ///< 0: no bore in the solids
+  GeometryFileOptions geometry;                                      ///< "geometry_files"
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).

@@ -1,0 +1,181 @@
+#include "studies/geometry_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "cad/dxf.h"
+#include "cad/solid.h"
+#include "studies/format.h"
+
+#ifndef CAMOPT_VERSION_STRING
+#define CAMOPT_VERSION_STRING "unknown"
+#endif
+
+namespace camopt::studies {
+
+namespace {
+
+// Exact-curve points per fitted arc in the independent check after the fit (on top of the fit's
+// own check points): the reported deviation is the larger of the two.
+constexpr int kVerifySamplesPerArc = 8;
+
+std::vector<cad::ArcSegment> Reversed(const std::vector<cad::ArcSegment>& chain) {
+  std::vector<cad::ArcSegment> r;
+  r.reserve(chain.size());
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) r.push_back({it->end, it->start, -it->bulge});
+  return r;
+}
+
+struct Fit {
+  cad::FittedCurve curve;
+  double deviation_mm;
+};
+
+Fit FitCurve(const cad::CurveFunction& f, const PlanarCamGeometry& cam, double tol_mm) {
+  cad::FitOptions o;
+  o.tolerance_mm = tol_mm;
+  o.initial_segments = cam.initial_segments;
+  Fit fit{cad::FitBiarcs(f, cam.t0, cam.t1, o), 0.0};
+  const int samples = std::max(1000, kVerifySamplesPerArc * static_cast<int>(fit.curve.arcs.size()));
+  fit.deviation_mm = std::max(fit.curve.max_deviation_mm,
+                              cad::MaxDistanceToChain(f, cam.t0, cam.t1, samples, fit.curve.arcs));
+  fit.curve.checked_points += samples + 1;
+  return fit;
+}
+
+}  // namespace
+
+std::string CamoptVersion() { return CAMOPT_VERSION_STRING; }
+
+GeometryFileOptions ParseGeometryFiles(const Node& root) {
+  GeometryFileOptions o;
+  if (!root.Has("geometry_files")) return o;
+  const Node g = root["geometry_files"];
+  g.CheckKnownFields({"dxf_tolerance_um", "stl_format", "step"});
+  if (g.Has("dxf_tolerance_um")) o.dxf_tolerance_um = g["dxf_tolerance_um"].NumberIn(0.01, 1000.0);
+  const std::string stl = g.StringOr("stl_format", "binary");
+  if (stl != "binary" && stl != "ascii") g["stl_format"].Fail("\"binary\" or \"ascii\"");
+  o.stl_ascii = stl == "ascii";
+  o.step = g.BoolOr("step", true);
+  return o;
+}
+
+std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& o) {
+  return o.stl_ascii ? cad::AsciiStl(mesh, name) : cad::BinaryStl(mesh, name);
+}
+
+nlohmann::json WritePlanarCamFiles(const PlanarCamGeometry& cam, const GeometryFileOptions& options,
+                                   Outputs& out) {
+  const double tol_mm = options.dxf_tolerance_um * 1e-3;
+  nlohmann::json j;
+  Fit profile = FitCurve(cam.profile, cam, tol_mm);
+  // Counter-clockwise outer profile (positive area) for the solid and for readers that expect it.
+  if (cad::EnclosedArea(profile.curve.arcs) < 0) profile.curve.arcs = Reversed(profile.curve.arcs);
+  double worst_mm = profile.deviation_mm;
+  long checked = profile.curve.checked_points;
+
+  cad::DxfDocument dxf;
+  dxf.AddLayer("CAM_PROFILE", 7);
+  dxf.AddChain("CAM_PROFILE", profile.curve.arcs, true);
+  nlohmann::json layers = {"CAM_PROFILE"};
+  if (cam.pitch) {
+    const Fit pitch = FitCurve(cam.pitch, cam, tol_mm);
+    dxf.AddLayer("PITCH_CURVE", 8);
+    dxf.AddChain("PITCH_CURVE", pitch.curve.arcs, true);
+    layers.push_back("PITCH_CURVE");
+    worst_mm = std::max(worst_mm, pitch.deviation_mm);
+    checked += pitch.curve.checked_points;
+  }
+  if (cam.cutter) {
+    const Fit cutter = FitCurve(cam.cutter, cam, tol_mm);
+    dxf.AddLayer("CUTTER_PATH", 1);
+    dxf.AddChain("CUTTER_PATH", cutter.curve.arcs, true);
+    layers.push_back("CUTTER_PATH");
+    worst_mm = std::max(worst_mm, cutter.deviation_mm);
+    checked += cutter.curve.checked_points;
+    j["cutter_diameter_mm"] = cam.cutter_diameter_mm;
+  } else if (!cam.cutter_note.empty()) {
+    j["cutter_path"] = cam.cutter_note;
+  }
+  if (!cam.rollers.empty()) {
+    dxf.AddLayer("ROLLERS", 5);
+    for (const auto& [c, r] : cam.rollers) dxf.AddCircle("ROLLERS", c, r);
+    layers.push_back("ROLLERS");
+  }
+  if (cam.bore_diameter_mm > 0) {
+    dxf.AddLayer("BORE", 7);
+    dxf.AddCircle("BORE", cam.centre, 0.5 * cam.bore_diameter_mm);
+    layers.push_back("BORE");
+  }
+  // Centre marks (cam axis, and each roller) and the text block below the drawing.
+  dxf.AddLayer("CENTRE_MARKS", 3);
+  double ymin = cam.centre.y(), xmin = cam.centre.x(), size = 0.0;
+  for (const auto& a : profile.curve.arcs) {
+    ymin = std::min(ymin, a.start.y());
+    xmin = std::min(xmin, a.start.x());
+    size = std::max(size, (a.start - cam.centre).norm());
+  }
+  for (const auto& [c, r] : cam.rollers) ymin = std::min(ymin, c.y() - r), xmin = std::min(xmin, c.x() - r);
+  const double mark = std::max(1.0, 0.08 * size);
+  dxf.AddCentreMark("CENTRE_MARKS", cam.centre, mark);
+  for (const auto& [c, r] : cam.rollers) dxf.AddCentreMark("CENTRE_MARKS", c, std::min(mark, r));
+  layers.push_back("CENTRE_MARKS");
+  dxf.AddLayer("TEXT", 7);
+  layers.push_back("TEXT");
+  const double h = std::max(1.0, 0.04 * size);
+  const std::vector<std::string> lines = {
+      cam.design_name + ": " + cam.cam_name,
+      "units: mm (INSUNITS 4); curves: arcs within " + Format(options.dxf_tolerance_um, 4) +
+          " um of the exact profile (largest found " + Format(worst_mm * 1e3, 3) + " um)",
+      cam.cutter ? "cutter path: cutter diameter " + Format(cam.cutter_diameter_mm, 6) + " mm"
+                 : "cutter path: " + (cam.cutter_note.empty() ? std::string("none") : cam.cutter_note),
+      "camopt " + CamoptVersion()};
+  for (size_t i = 0; i < lines.size(); ++i)
+    dxf.AddText("TEXT", Vec2<double>(xmin, ymin - (2.0 + 1.6 * (i + 1)) * h), h, lines[i]);
+
+  const std::string dxf_name = cam.file_stem + ".dxf";
+  out.Add(dxf_name, dxf.ToString());
+  j["dxf"] = dxf_name;
+  j["dxf_layers"] = layers;
+  j["dxf_tolerance_um"] = options.dxf_tolerance_um;
+  j["dxf_max_deviation_um"] = worst_mm * 1e3;
+  j["dxf_deviation_check_points"] = checked;
+  j["dxf_within_tolerance"] = worst_mm <= tol_mm;
+  j["profile_arcs"] = profile.curve.arcs.size();
+  const double profile_area = cad::EnclosedArea(profile.curve.arcs);
+  j["profile_area_mm2"] = profile_area;
+  j["thickness_mm"] = cam.thickness_mm;
+  j["bore_diameter_mm"] = cam.bore_diameter_mm;
+
+  cad::Extrusion e;
+  e.profile = profile.curve.arcs;
+  e.bore_centre = cam.centre;
+  e.bore_diameter_mm = cam.bore_diameter_mm;
+  e.thickness_mm = cam.thickness_mm;
+  e.name = cam.design_name + " " + cam.cam_name;
+  try {
+    const cad::SolidOutput solid = cad::ExtrudeCam(e);
+    if (options.step) {
+      out.Add(cam.file_stem + ".step", solid.step);
+      j["step"] = cam.file_stem + ".step";
+    }
+    j["solid_volume_mm3"] = solid.volume_mm3;
+    j["solid_area_mm2"] = solid.area_mm2;
+    const double bore_area = kPi * 0.25 * cam.bore_diameter_mm * cam.bore_diameter_mm;
+    j["solid_volume_check_mm3"] = (profile_area - bore_area) * cam.thickness_mm;
+    out.Add(cam.file_stem + ".stl", StlFile(solid.mesh, e.name, options));
+    j["stl"] = cam.file_stem + ".stl";
+    j["stl_format"] = options.stl_ascii ? "ascii" : "binary";
+    j["stl_triangles"] = solid.mesh.triangles.size();
+    const cad::EdgeCheck edges = cad::CheckEdges(solid.mesh);
+    j["stl_free_edges"] = edges.free_edges;
+    j["stl_misoriented_edges"] = edges.misoriented_edges;
+  } catch (const std::runtime_error& err) {
+    // An undercut profile crosses itself: no solid exists; the DXF still shows the curves.
+    j["solid"] = std::string("not written: ") + err.what();
+  }
+  return j;
+}
+
+}  // namespace camopt::studies
