@@ -8,6 +8,7 @@
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_study_common.h"
+#include "studies/format.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::cycloid_ltca {
@@ -15,11 +16,21 @@ namespace camopt::studies::cycloid_ltca {
 using namespace camopt::cycloid;
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis"});
+  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
+                         "geometry_files"});
   Study s;
   s.name = root.json().value("name", "");
   s.drive = cycloid_common::ParseDrive(root);
   s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
+  s.geometry = ParseGeometryFiles(root);
+  if (root["drive"].Has("bore_diameter_mm")) {
+    const Node b = root["drive"]["bore_diameter_mm"];
+    s.bore_diameter_mm = b.Positive();
+    const double root_diameter = 2 * (s.drive.roller_position_radius_mm - s.drive.eccentricity_mm -
+                                      s.drive.roller_radius_mm);
+    if (!(s.bore_diameter_mm < root_diameter))
+      b.Fail("a bore diameter below the disc's root diameter (" + Format(root_diameter, 4) + " mm)");
+  }
   s.material = cycloid_common::ParseMaterial(root);
   root["load"].CheckKnownFields({"torque_Nm"});
   s.torque_Nm = root["load"]["torque_Nm"].NonNegative();
@@ -225,7 +236,21 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   const CycleResult& cycle = r.cycle;
   const int n1 = s.drive.rollers;
   const size_t n = s.crank_angles_rad.size();
-  out.AddJson("result.json", ToJson(s, r));
+  {
+    // Geometry files of the disc: its true modified profile (eqs. 3–4) fitted with arcs.
+    PlanarCamGeometry g;
+    g.file_stem = "tooth";
+    g.design_name = s.name;
+    g.cam_name = "cycloid disc (modified profile)";
+    g.profile = [d = s.drive](double t) { return ToothProfile<double>(d, t).point; };
+    g.initial_segments = 8 * n1;
+    g.thickness_mm = s.drive.face_width_mm;
+    g.bore_diameter_mm = s.bore_diameter_mm;
+    for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
+    nlohmann::json j = ToJson(s, r);
+    j["geometry_files"]["tooth"] = WritePlanarCamFiles(g, s.geometry, out);
+    out.AddJson("result.json", j);
+  }
 
   Table table;
   std::vector<double> col_angle, col_lte, col_ute, col_gr, col_p, col_pairs;
@@ -296,7 +321,6 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   for (const auto& c : r.roller_centres) rollers.circles.push_back({c.x(), c.y(), s.drive.roller_radius_mm});
   drawing.layers = {disc, rollers};
   out.Add("tooth.svg", SvgDrawing(drawing));
-  out.Add("tooth.dxf", ToDxf(drawing));
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "studies/input.h"
+#include "studies/geometry_files.h"
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_ltca {
@@ -31,6 +32,8 @@ struct Study {
   /// crank_angles_deg instead).
   int crank_angles_per_mesh_period = 0;
   bool estimate_error = true;  ///< analysis.estimate_error: the coarse-grid run and the differences
+  double bore_diameter_mm = 0;   ///< drive.bore_diameter_mm: bore of the disc's solid, 0 = none
+  GeometryFileOptions geometry;  ///< "geometry_files"
 };
 
 /// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
