@@ -118,6 +118,23 @@ double EnclosedArea(const std::vector<ArcSegment>& chain) {
   return area;
 }
 
+bool ChainCrossesItself(const std::vector<ArcSegment>& chain) {
+  const size_t n = chain.size();
+  auto orient = [](const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c) {
+    return Cross(Vec2<double>(b - a), Vec2<double>(c - a));
+  };
+  for (size_t i = 0; i < n; ++i)
+    for (size_t k = i + 2; k < n; ++k) {
+      if (i == 0 && k == n - 1) continue;  // neighbours through the closing point
+      const ArcSegment &a = chain[i], &b = chain[k];
+      const double d1 = orient(a.start, a.end, b.start), d2 = orient(a.start, a.end, b.end);
+      const double d3 = orient(b.start, b.end, a.start), d4 = orient(b.start, b.end, a.end);
+      if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0)
+        return true;
+    }
+  return false;
+}
+
 FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const FitOptions& o) {
   FittedCurve fit;
   const double span = t1 - t0;

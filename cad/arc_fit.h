@@ -52,6 +52,10 @@ double DistanceToArc(const ArcSegment& a, const Vec2<double>& p);
 /// the end points plus each arc's circular segment.
 double EnclosedArea(const std::vector<ArcSegment>& chain);
 
+/// Whether the chords of a closed chain cross each other (an undercut profile loops over itself;
+/// such a profile bounds no solid). O(n²) over the chords.
+bool ChainCrossesItself(const std::vector<ArcSegment>& chain);
+
 using CurveFunction = std::function<Vec2<double>(double)>;
 
 struct FitOptions {

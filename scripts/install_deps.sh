@@ -7,7 +7,7 @@ PACKAGES=(build-essential cmake pkg-config
   # Geometry files (issue 15): OpenCASCADE for STEP solids and their STL meshes (libtbb-dev: OCCT's
   # CMake targets link it), and the independent readers the tests check the files with.
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
-  libocct-data-exchange-dev libtbb-dev python3-ezdxf admesh)
+  libocct-data-exchange-dev libtbb-dev python3-ezdxf python3-numpy admesh)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

@@ -171,6 +171,19 @@ Result Run(const Study& s, const RunContext& ctx) {
   for (int k = 0; k < samples; ++k)
     r.tooth_profile.push_back(ToothProfile<double>(s.drive, 2.0 * kPi * k / samples).point);
   for (int i = 0; i < n1; ++i) r.roller_centres.push_back(RollerCentreInDisc<double>(s.drive, i, 0.0, 0.0));
+  {
+    // Geometry files of the disc: its true modified profile (eqs. 3–4) fitted with arcs.
+    PlanarCamGeometry g;
+    g.file_stem = "tooth";
+    g.design_name = s.name;
+    g.cam_name = "cycloid disc (modified profile)";
+    g.profile = [d = s.drive](double t) { return ToothProfile<double>(d, t).point; };
+    g.initial_segments = 8 * n1;
+    g.thickness_mm = s.drive.face_width_mm;
+    g.bore_diameter_mm = s.bore_diameter_mm;
+    for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
+    r.tooth_files = FitPlanarCam(g, s.geometry);
+  }
   return r;
 }
 
@@ -208,7 +221,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       sources["crank_angles"] = {{"coarse_angles", r.crank_error_angles}, {"error", by_crank}};
     sources["warning_share"] = kErrorShare;
   }
-  return {{"study", "cycloid_ltca"},
+  nlohmann::json j = {{"study", "cycloid_ltca"},
           {"name", s.name},
           {"torque_Nm", s.torque_Nm},
           {"max_contact_stress_MPa", Finite(cycle.max_pressure_MPa, "max stress")},
@@ -230,27 +243,16 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"estimated_error_sources", sources},
           {"warnings", r.warnings},
           {"per_angle", per_angle}};
+  j["geometry_files"]["tooth"] = r.tooth_files.summary;
+  return j;
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   const CycleResult& cycle = r.cycle;
   const int n1 = s.drive.rollers;
   const size_t n = s.crank_angles_rad.size();
-  {
-    // Geometry files of the disc: its true modified profile (eqs. 3–4) fitted with arcs.
-    PlanarCamGeometry g;
-    g.file_stem = "tooth";
-    g.design_name = s.name;
-    g.cam_name = "cycloid disc (modified profile)";
-    g.profile = [d = s.drive](double t) { return ToothProfile<double>(d, t).point; };
-    g.initial_segments = 8 * n1;
-    g.thickness_mm = s.drive.face_width_mm;
-    g.bore_diameter_mm = s.bore_diameter_mm;
-    for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
-    nlohmann::json j = ToJson(s, r);
-    j["geometry_files"]["tooth"] = WritePlanarCamFiles(g, s.geometry, out);
-    out.AddJson("result.json", j);
-  }
+  out.AddJson("result.json", ToJson(s, r));
+  WritePlanarCamFiles(r.tooth_files, s.geometry, out);
 
   Table table;
   std::vector<double> col_angle, col_lte, col_ute, col_gr, col_p, col_pairs;

@@ -55,6 +55,7 @@ struct Result {
   std::vector<std::string> warnings;     ///< headline errors above kErrorShare, and the like
   std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
+  PlanarCamFit tooth_files;  ///< the disc's geometry files (arcs of the modified profile)
 };
 
 /// @throws StudyError for bad input (exit 2).

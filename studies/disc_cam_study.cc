@@ -182,6 +182,33 @@ Study Parse(const Node& root) {
   return s;
 }
 
+// The geometry files of the cam: exact profile, pitch curve and cutter path as functions of θ.
+PlanarCamFit FitGeometryFiles(const Study& s) {
+  const DiscCam& cam = s.cam;
+  PlanarCamGeometry g;
+  g.file_stem = "profile";
+  g.design_name = s.name;
+  g.cam_name = "disc cam";
+  g.profile = [cam](double th) { return dc::EvaluateCam(cam, th).contact; };
+  g.pitch = [cam](double th) { return dc::EvaluateCam(cam, th).pitch; };
+  if (s.cutter_radius_mm > 0 && s.cutter_radius_mm != cam.roller_radius) {
+    g.cutter = [cam, rt = s.cutter_radius_mm](double th) {
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      return Vec2<double>(p.pitch + (cam.roller_radius - rt) * (p.contact - p.pitch) / cam.roller_radius);
+    };
+    g.cutter_diameter_mm = 2 * s.cutter_radius_mm;
+  } else {
+    g.cutter_note = s.cutter_radius_mm > 0
+                        ? "omitted: the cutter equals the roller, so its path is the pitch curve (layer PITCH_CURVE)"
+                        : "no cutter_radius_mm given: a cutter of the roller's size follows the pitch curve "
+                          "(layer PITCH_CURVE)";
+  }
+  g.initial_segments = 128;
+  g.thickness_mm = s.cam_thickness_mm;
+  g.bore_diameter_mm = s.bore_diameter_mm;
+  return FitPlanarCam(g, s.geometry);
+}
+
 Result Run(const Study& s, const RunContext& ctx) {
   const DiscCam& cam = s.cam;
   const bool osc = cam.follower == FollowerType::kOscillatingRoller;
@@ -322,6 +349,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     progress.Update(1.0);
     progress.Done();
   }
+  r.profile_files = FitGeometryFiles(s);
   return r;
 }
 
@@ -406,42 +434,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else if (r.monte_carlo == Result::MonteCarlo::kSkippedUndercut) {
     j["monte_carlo"] = {{"skipped", "the profile is undercut"}};
   }
+  j["geometry_files"]["profile"] = r.profile_files.summary;
   return j;
 }
 
-// The geometry files of the cam: exact profile, pitch curve and cutter path as functions of θ.
-nlohmann::json WriteGeometryFiles(const Study& s, Outputs& out) {
-  const DiscCam& cam = s.cam;
-  PlanarCamGeometry g;
-  g.file_stem = "profile";
-  g.design_name = s.name;
-  g.cam_name = "disc cam";
-  g.profile = [cam](double th) { return dc::EvaluateCam(cam, th).contact; };
-  g.pitch = [cam](double th) { return dc::EvaluateCam(cam, th).pitch; };
-  if (s.cutter_radius_mm > 0 && s.cutter_radius_mm != cam.roller_radius) {
-    g.cutter = [cam, rt = s.cutter_radius_mm](double th) {
-      const CamPoint<double> p = dc::EvaluateCam(cam, th);
-      return Vec2<double>(p.pitch + (cam.roller_radius - rt) * (p.contact - p.pitch) / cam.roller_radius);
-    };
-    g.cutter_diameter_mm = 2 * s.cutter_radius_mm;
-  } else {
-    g.cutter_note = s.cutter_radius_mm > 0
-                        ? "omitted: the cutter equals the roller, so its path is the pitch curve (layer PITCH_CURVE)"
-                        : "no cutter_radius_mm given: a cutter of the roller's size follows the pitch curve "
-                          "(layer PITCH_CURVE)";
-  }
-  g.initial_segments = 128;
-  g.thickness_mm = s.cam_thickness_mm;
-  g.bore_diameter_mm = s.bore_diameter_mm;
-  return WritePlanarCamFiles(g, s.geometry, out);
-}
-
 void Write(const Study& s, const Result& r, Outputs& out) {
-  {
-    nlohmann::json j = ToJson(s, r);
-    j["geometry_files"]["profile"] = WriteGeometryFiles(s, out);
-    out.AddJson("result.json", j);
-  }
+  out.AddJson("result.json", ToJson(s, r));
+  WritePlanarCamFiles(r.profile_files, s.geometry, out);
   const DiscCam& cam = s.cam;
   const auto& t = r.series;
   const std::string& fu = r.follower_unit;

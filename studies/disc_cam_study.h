@@ -97,6 +97,7 @@ struct Result {
   enum class MonteCarlo { kOff, kSkippedUndercut, kDone } monte_carlo = MonteCarlo::kOff;
   bool error_evaluated = false;  ///< the mechanical-error stage ran (the error fields are set)
   std::vector<MonteCarloRow> monte_carlo_rows;
+  PlanarCamFit profile_files;  ///< the cam's geometry files (arcs of the exact profile)
 };
 
 /// Parses and validates a "disc_cam" study. @throws StudyError (exit 2) naming the JSON path.

@@ -52,11 +52,23 @@ struct PlanarCamGeometry {
   double bore_diameter_mm = 0.0;  ///< 0: no bore
 };
 
-/// Writes <stem>.dxf, <stem>.step (when asked) and <stem>.stl into `out`; returns the entry
-/// for result.json (file names, fitting error, arc count, STEP volume and area, STL triangles and
-/// free edges, notes).
-nlohmann::json WritePlanarCamFiles(const PlanarCamGeometry& cam, const GeometryFileOptions& options,
-                                   Outputs& out);
+/// A cam's curves fitted with arcs (in Run: cheap) and what result.json says about them.
+struct PlanarCamFit {
+  PlanarCamGeometry cam;
+  cad::FittedCurve profile, pitch, cutter;  ///< profile counter-clockwise
+  double max_deviation_mm = 0.0;            ///< over profile, pitch and cutter path
+  long checked_points = 0;
+  double profile_area_mm2 = 0.0;            ///< of the exact profile
+  bool solid = false;                       ///< STEP/STL written (a thickness, no undercut)
+  nlohmann::json summary;                   ///< the entry for result.json
+};
+
+/// Fits the curves and measures the fit against the exact curve functions.
+PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOptions& options);
+
+/// Writes <stem>.dxf, and <stem>.step (when asked) and <stem>.stl when the cam has a thickness,
+/// into `out`. The solid is built by OpenCASCADE from the fitted arcs.
+void WritePlanarCamFiles(const PlanarCamFit& fit, const GeometryFileOptions& options, Outputs& out);
 
 /// STL file content in the chosen format.
 std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& options);

@@ -249,6 +249,10 @@ Result Run(const Study& st, const RunContext& ctx) {
     }
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
+  if (q.profile) {
+    res.input_cam_files = FitPlanarCam(CamGeometry(st, Side::kInput), st.geometry);
+    res.output_cam_files = FitPlanarCam(CamGeometry(st, Side::kOutput), st.geometry);
+  }
   return res;
 }
 
@@ -314,6 +318,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
     }
   }
   j["notes"] = res.notes;
+  if (res.input_cam_files) j["geometry_files"]["input_cam"] = res.input_cam_files->summary;
+  if (res.output_cam_files) j["geometry_files"]["output_cam"] = res.output_cam_files->summary;
   return j;
 }
 
@@ -359,23 +365,21 @@ void Write(const Study& st, const Result& res, Outputs& out) {
                                             {"Efficiency (paper's friction model)", "input angle [deg]",
                                              "efficiency [-]"}));
   }
-  nlohmann::json geometry;
   if (q.profile) {
     const int points = st.profile_points;
     for (Side s : {Side::kInput, Side::kOutput}) {
       const std::string which = s == Side::kInput ? "input" : "output";
       const double cutter = s == Side::kInput ? st.cutter_radius_input_mm : st.cutter_radius_output_mm;
       const Drawing cam = CamDrawing(r, s, cutter, points, which + " cam: profile, pitch curve, cutter path");
-      geometry[which + "_cam"] = WritePlanarCamFiles(CamGeometry(st, s), st.geometry, out);
+      const std::optional<PlanarCamFit>& files = s == Side::kInput ? res.input_cam_files : res.output_cam_files;
+      if (files) WritePlanarCamFiles(*files, st.geometry, out);
       out.Add(which + "_cam.svg", SvgDrawing(cam));
       out.Add(which + "_assembly.svg",
               SvgDrawing(AssemblyDrawing(r, s, res.loads_at_zero ? &*res.loads_at_zero : nullptr, points,
                                          which + " cam and rollers at input angle 0 (loaded rollers red)")));
     }
   }
-  nlohmann::json j = ToJson(st, res);
-  if (!geometry.is_null()) j["geometry_files"] = geometry;
-  out.AddJson("result.json", j);
+  out.AddJson("result.json", ToJson(st, res));
 }
 
 namespace {

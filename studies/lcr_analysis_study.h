@@ -69,6 +69,7 @@ struct Result {
   /// Loads at input angle 0 (loaded rollers of the assembly drawings), when forces and the
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
+  std::optional<PlanarCamFit> input_cam_files, output_cam_files;  ///< with the profile stage
   std::vector<std::string> notes;
 };
 
