@@ -23,7 +23,6 @@
 #include <GC_MakeSegment.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
-#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
@@ -172,7 +171,7 @@ SolidOutput ExtrudeCam(const Extrusion& e) {
   return out;
 }
 
-SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name, double tolerance_mm) {
+SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name) {
   SilenceOcct();
   SurfaceOutput out;
   BRep_Builder builder;
@@ -184,14 +183,10 @@ SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::st
     TColgp_Array2OfPnt pts(1, nu, 1, nv);
     for (int i = 0; i < nu; ++i)
       for (int j = 0; j < nv; ++j) pts.SetValue(i + 1, j + 1, gp_Pnt(g[i][j].x(), g[i][j].y(), g[i][j].z()));
-    GeomAPI_PointsToBSplineSurface fit(pts, 3, 8, GeomAbs_C2, tolerance_mm);
+    GeomAPI_PointsToBSplineSurface fit;
+    fit.Interpolate(pts);
     if (!fit.IsDone()) throw std::runtime_error("OCCT: B-spline surface fit failed");
     const Handle(Geom_BSplineSurface) surface = fit.Surface();
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) {
-        GeomAPI_ProjectPointOnSurf proj(pts.Value(i + 1, j + 1), surface);
-        if (proj.NbPoints() > 0) out.max_grid_deviation_mm = std::max(out.max_grid_deviation_mm, proj.LowerDistance());
-      }
     const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
     builder.Add(compound, face);
     GProp_GProps area;

@@ -38,17 +38,14 @@ SolidOutput ExtrudeCam(const Extrusion& e);
 /// A grid of points on a surface: points[i][j], i along one direction, j along the other [mm].
 using PointGrid = std::vector<std::vector<Eigen::Vector3d>>;
 
-/// B-spline surfaces approximating each grid (OCCT GeomAPI_PointsToBSplineSurface, cubic,
-/// tolerance `tolerance_mm`) in one STEP AP214 file, with the largest distance of a grid point
-/// from its surface.
+/// One B-spline surface through each grid (OCCT GeomAPI_PointsToBSplineSurface::Interpolate:
+/// cubic, through every grid point) in one STEP AP214 file.
 struct SurfaceOutput {
   std::string step;
-  double max_grid_deviation_mm = 0.0;
   double area_mm2 = 0.0;
   int faces = 0;
 };
-SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name,
-                              double tolerance_mm);
+SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name);
 
 /// What OCCT reads back from a STEP file (content in memory).
 struct StepReadBack {

@@ -1,4 +1,5 @@
-// Output writers shared by every study kind: CSV series, SVG line plots and drawings, DXF.
+// Output writers shared by every study kind: CSV series, SVG line plots and drawings (the
+// geometry files, DXF/STEP/STL, are in studies/geometry_files.h and cad/).
 // They return the file content as a string; Outputs writes everything at once.
 #pragma once
 
@@ -55,9 +56,5 @@ struct Drawing {
 
 /// SVG of a drawing, fitted to the canvas with equal axis scales.
 std::string SvgDrawing(const Drawing& drawing, int size_px = 800);
-
-/// DXF (R2000, through dxflib) of a drawing: one DXF layer per drawing layer, polylines as
-/// POLYLINE entities in mm, circles as CIRCLE entities.
-std::string ToDxf(const Drawing& drawing);
 
 }  // namespace camopt::studies

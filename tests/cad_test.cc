@@ -1,7 +1,11 @@
 // Geometry files (issue 15): bi-arc fitting against closed forms, and the STEP solids of the
 // cam kinds read back with OpenCASCADE and compared with closed-form areas and volumes. The DXF
 // and STL files are checked by independent readers in tests/geometry_files_test.py.
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -16,6 +20,7 @@
 #include "cad/stl.h"
 #include "studies/cycloid_ltca_study.h"
 #include "studies/disc_cam_study.h"
+#include "studies/globoidal_cam_study.h"
 #include "studies/lcr_analysis_study.h"
 #include "tests/test_util.h"
 
@@ -239,6 +244,7 @@ TEST(GeometryFiles, CycloidNnmDiscStepSolid) {
 TEST(GeometryFiles, DiscCamStepSolidAndCutterPath) {
   json study = Example("disc_cam_translating.json");
   study["analysis"] = {{"angle_steps", 3600}, {"evaluate", {"profile"}}};
+  study["bore_diameter_mm"] = 20;
   const studies::Node root(&study, "disc.json", "");
   const auto st = studies::disc_cam::Parse(root);
   const auto res = studies::disc_cam::Run(st, {"disc.json", true});
@@ -264,6 +270,58 @@ TEST(GeometryFiles, DiscCamStepSolidAndCutterPath) {
   const json g = studies::disc_cam::ToJson(st, res)["geometry_files"]["profile"];
   EXPECT_LE(double(g["dxf_max_deviation_um"]), 1.0);
   EXPECT_EQ(g["cutter_diameter_mm"], 2 * double(study["cutter_radius_mm"]));
+}
+
+// The globoidal cam's working surfaces: binary STL by default (two open bands: only their rims are
+// free edges, none misoriented) and two B-spline surfaces in STEP whose area matches the mesh's.
+TEST(GeometryFiles, GloboidalSurfacesBinaryStlAndStep) {
+  json study = Example("globoidal_cam_paper.json");
+  study["analysis"]["evaluate"] = {"geometry", "export"};
+  const studies::Node root(&study, "glob.json", "");
+  const auto st = studies::globoidal_cam::Parse(root);
+  const auto res = studies::globoidal_cam::Run(st, {"glob.json", true});
+  studies::Outputs out;
+  studies::globoidal_cam::Write(st, res, out);
+  const std::string& stl = out.files().at("working_surfaces.stl");
+  ASSERT_GE(stl.size(), 84u);
+  EXPECT_NE(stl.compare(0, 5, "solid"), 0);
+  uint32_t n = 0;
+  std::memcpy(&n, stl.data() + 80, 4);
+  const size_t na = res.surface_points[0].size(), nl = res.surface_points[0][0].size();
+  EXPECT_EQ(n, 2 * na * (nl - 1) * 2);
+  EXPECT_EQ(stl.size(), 84u + 50u * n);
+  // Independent edge count on the file's float coordinates.
+  std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> directed;
+  for (uint32_t t = 0; t < n; ++t) {
+    std::array<std::array<float, 3>, 3> v;
+    for (int k = 0; k < 3; ++k) std::memcpy(v[k].data(), stl.data() + 84 + 50 * t + 12 + 12 * k, 12);
+    for (int k = 0; k < 3; ++k) ++directed[{v[k], v[(k + 1) % 3]}];
+  }
+  long free_edges = 0, misoriented = 0;
+  for (const auto& [e, c] : directed) {
+    const auto back = directed.find({e.second, e.first});
+    if (back == directed.end()) ++free_edges;
+    else if (c != 1 || back->second != 1) ++misoriented;
+  }
+  EXPECT_EQ(free_edges, static_cast<long>(2 * 2 * na));  // the two rims of each band
+  EXPECT_EQ(misoriented, 0);
+  // STEP: two B-spline faces; their area against the grid's triangles (chordal, slightly less).
+  double mesh_area = 0.0;
+  for (const auto& grid : res.surface_points)
+    for (size_t i = 0; i < na; ++i)
+      for (size_t m = 0; m + 1 < nl; ++m) {
+        const auto& a = grid[i][m];
+        const auto& b = grid[(i + 1) % na][m];
+        const auto& c = grid[(i + 1) % na][m + 1];
+        const auto& d = grid[i][m + 1];
+        mesh_area += 0.5 * ((b - a).cross(c - a)).norm() + 0.5 * ((c - a).cross(d - a)).norm();
+      }
+  const cad::StepReadBack back = cad::ReadStep(out.files().at("working_surfaces.step"));
+  EXPECT_EQ(back.faces, 2);
+  EXPECT_EQ(back.solids, 0);
+  EXPECT_NEAR(back.area_mm2 / mesh_area - 1, 0.0, 1e-3);
+  std::printf("globoidal: STEP surface area %.3f mm², grid triangles %.3f mm² (rel. diff %.2e)\n", back.area_mm2,
+              mesh_area, back.area_mm2 / mesh_area - 1);
 }
 
 }  // namespace
