@@ -155,7 +155,9 @@ ConvergenceRun RunConvergence(const json& study, const RunContext& ctx) {
   report["name"] = study.value("name", "");
   report["study_file"] = ctx.study_file;
   report["note"] = "each knob refined and coarsened one at a time, the others at the study's "
-                   "settings; wall times are of this machine and this run (they vary)";
+                   "settings; wall times are of this machine and this run (they vary); the "
+                   "knobs' runs, the study's included, apply study_run.variant_overrides when "
+                   "given (work that does not change the headlines)";
   report["headlines"] = fid.headlines;
   json own_values = json::object();
   for (size_t h = 0; h < fid.headlines.size(); ++h) own_values[fid.headlines[h]] = NumberOrNull(own.values[h]);
@@ -164,8 +166,25 @@ ConvergenceRun RunConvergence(const json& study, const RunContext& ctx) {
 
   RunContext quiet_ctx = ctx;
   quiet_ctx.quiet = true;
-  const size_t total_runs = 1 + 2 * fid.knobs.size();
+  const bool overrides = !fid.knobs.empty() && !fid.variant_overrides.empty();
+  const size_t total_runs = 1 + 2 * fid.knobs.size() + (overrides ? 1 : 0);
   size_t run_no = 1;
+  // The variants skip work that does not change the headlines (variant_overrides): the study's
+  // settings are run once more that way, so that the times of one knob compare like with like.
+  double study_seconds = own.seconds;
+  if (overrides) {
+    json variant = study;
+    for (auto it = fid.variant_overrides.begin(); it != fid.variant_overrides.end(); ++it)
+      variant[json::json_pointer(it.key())] = it.value();
+    ++run_no;
+    if (talk)
+      std::cerr << "convergence: run " << run_no << "/" << total_runs << ": the study's settings without "
+                << fid.variant_overrides.dump() << "\n";
+    const Ran bare = RunOne(variant, quiet_ctx, fid.headlines, false);
+    if (bare.ok) study_seconds = bare.seconds;
+    report["study_run"]["variant_overrides"] = fid.variant_overrides;
+    report["study_run"]["wall_time_s_with_overrides"] = bare.ok ? json(bare.seconds) : json(nullptr);
+  }
   std::vector<double> total_error(fid.headlines.size(), 0.0);
   std::vector<bool> has_error(fid.headlines.size(), false);
   // For the plots: per headline, per knob, the (time, error) points.
@@ -188,7 +207,7 @@ ConvergenceRun RunConvergence(const json& study, const RunContext& ctx) {
       if (s == 1) {
         settings[s] = ValueAt(study, k, k.paths.front());
         runs[s].ok = true;
-        runs[s].seconds = own.seconds;
+        runs[s].seconds = study_seconds;
         runs[s].values = own.values;
         runs[s].incomplete = out.own.incomplete();
         continue;
