@@ -203,7 +203,11 @@ ConvergenceRun RunConvergence(const json& study, const RunContext& ctx) {
     std::vector<Ran> runs(3);
     std::vector<json> settings(3);
     for (int s = 0; s < 3; ++s) {
-      settings[s] = Scale(ValueAt(study, k, k.paths.front()), factors[s], k.integer);
+      try {
+        settings[s] = Scale(ValueAt(study, k, k.paths.front()), factors[s], k.integer);
+      } catch (const json::exception&) {
+        settings[s] = nullptr;
+      }
       if (s == 1) {
         settings[s] = ValueAt(study, k, k.paths.front());
         runs[s].ok = true;
@@ -212,14 +216,21 @@ ConvergenceRun RunConvergence(const json& study, const RunContext& ctx) {
         runs[s].incomplete = out.own.incomplete();
         continue;
       }
-      json variant = study;
-      for (auto it = fid.variant_overrides.begin(); it != fid.variant_overrides.end(); ++it)
-        variant[json::json_pointer(it.key())] = it.value();
-      for (const std::string& p : k.paths) variant[json::json_pointer(p)] = Scale(ValueAt(study, k, p), factors[s], k.integer);
       ++run_no;
       if (talk)
         std::cerr << "convergence: run " << run_no << "/" << total_runs << ": " << k.name << " = "
                   << Show(settings[s]) << " (" << names[s] << ")\n";
+      json variant = study;
+      try {
+        for (auto it = fid.variant_overrides.begin(); it != fid.variant_overrides.end(); ++it)
+          variant[json::json_pointer(it.key())] = it.value();
+        for (const std::string& p : k.paths)
+          variant[json::json_pointer(p)] = Scale(ValueAt(study, k, p), factors[s], k.integer);
+      } catch (const json::exception&) {  // the file has something else at the knob's path
+        runs[s].skipped = "the study file has no number at " + k.paths.front();
+        if (talk) std::cerr << "convergence: skipped: " << runs[s].skipped << "\n";
+        continue;
+      }
       runs[s] = RunOne(variant, quiet_ctx, fid.headlines, false);
       if (talk && !runs[s].ok) std::cerr << "convergence: skipped: " << runs[s].skipped << "\n";
     }

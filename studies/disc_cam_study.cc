@@ -499,7 +499,7 @@ Fidelity Knobs(const nlohmann::json& study) {
                      "samples of the revolution (extrema are sampled)"});
   const auto mc = nlohmann::json::json_pointer("/analysis/monte_carlo");
   const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
-  bool mc_on = !(study.contains(mc) && study[mc].is_boolean() && !study[mc].get<bool>());
+  bool mc_on = !study.contains(mc) || study[mc].is_object();  // `true` has no fields to set
   if (study.contains(ev)) {
     bool asked = false;
     for (const auto& e : study[ev]) asked = asked || e == "monte_carlo";
