@@ -3,7 +3,8 @@
 set -euo pipefail
 PACKAGES=(build-essential cmake pkg-config
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev libceres-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libdxflib-dev libfftw3-dev libsundials-dev ccache)
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libdxflib-dev libfftw3-dev libsundials-dev ccache
+  libboost-dev libopenmpi-dev openmpi-bin)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

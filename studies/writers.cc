@@ -132,8 +132,15 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
       path << (pen ? " L" : " M") << Px(X(s.x[i])) << "," << Px(Y(s.y[i]));
       pen = true;
     }
-    os << "<path d=\"" << path.str() << "\" fill=\"none\" stroke=\"" << color
-       << "\" stroke-width=\"1.5\"/>\n";
+    if (s.markers) {
+      for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+          os << "<circle cx=\"" << Px(X(s.x[i])) << "\" cy=\"" << Px(Y(s.y[i])) << "\" r=\"3\" fill=\""
+             << color << "\"/>\n";
+    } else {
+      os << "<path d=\"" << path.str() << "\" fill=\"none\" stroke=\"" << color
+         << "\" stroke-width=\"1.5\"/>\n";
+    }
     os << "<line x1=\"" << Px(L + 10) << "\" x2=\"" << Px(L + 30) << "\" y1=\"" << Px(T + 14 + 16 * k)
        << "\" y2=\"" << Px(T + 14 + 16 * k) << "\" stroke=\"" << color << "\" stroke-width=\"2\"/>\n";
     os << "<text x=\"" << Px(L + 35) << "\" y=\"" << Px(T + 18 + 16 * k) << "\">" << Escape(s.label)

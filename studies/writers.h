@@ -24,6 +24,7 @@ std::string ToCsv(const Table& table);
 struct Series {
   std::string label;
   std::vector<double> x, y;
+  bool markers = false;  ///< a dot at each point instead of a line (a scatter plot)
 };
 
 struct PlotOptions {
