@@ -761,7 +761,14 @@ int RunCommand(const Options& o) {
         std::cerr << "camopt: nothing to resume in " << partial.string() << "; starting\n";
       fs::create_directories(partial / (s.case_outputs ? "cases" : ""), ec);
       if (ec) throw StudyError("--out " + o.out + ": cannot create " + partial.string() + ": " + ec.message());
-      if (o.resume) done = ReadCheckpoints(partial, header, cases.size(), s.outputs.size());
+      if (o.resume) {
+        done = ReadCheckpoints(partial, header, cases.size(), s.outputs.size());
+        // Case folders being written when the sweep was interrupted (OutputFolder's temporary
+        // siblings): their cases were not checkpointed and run again.
+        for (const auto& e : fs::directory_iterator(partial / "cases", ec))
+          if (e.path().filename().string().find(".camopt-tmp-") != std::string::npos)
+            fs::remove_all(e.path(), ec);
+      }
       if (o.resume && !done.empty() && !o.quiet)
         std::cerr << "camopt: resuming: " << done.size() << " of " << cases.size()
                   << " cases already done\n";

@@ -379,6 +379,12 @@ TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
                            "cases/0000/per_angle.csv"})
     EXPECT_EQ(ReadFile(out / file), ReadFile(dir / "whole" / file)) << file;
   EXPECT_FALSE(fs::exists(partial));
+  int folders = 0;
+  for (const auto& e : fs::directory_iterator(out / "cases")) {
+    EXPECT_EQ(e.path().filename().string().size(), 4u) << e.path();
+    ++folders;
+  }
+  EXPECT_EQ(folders, 30);
   // A resume of a different sweep is refused, naming the checkpoint.
   ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
   for (int k = 0; k < 6000 && CheckpointedCases(partial) < 1; ++k) usleep(5000);
