@@ -7,7 +7,9 @@
 # own computation is a few microseconds, so that its time per case is the cost of the sweep
 # (building the case's JSON, the registry's parse and checks, the kind's result files in memory,
 # the result.json parse, the checkpoint line) plus that small computation.
-# Each configuration runs once (wall clock of the whole command, mpirun's start-up included).
+# Each configuration runs once: wall clock of the whole command (mpirun's start-up included) and
+# CPU time (user + system of every thread and rank): on a machine shared with other work the wall
+# clock shows the share of the cores we got, the CPU time what the sweep cost.
 set -euo pipefail
 bin=$(realpath "${1:-build/camopt}")
 work=$(realpath -m "${2:-$(mktemp -d)}")
@@ -29,13 +31,10 @@ mpirun=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
 run() {  # label cases command...
   local label=$1 n=$2; shift 2
-  local t0 t1
   rm -rf "$work/out"
-  t0=$(date +%s.%N)
-  "$@" > /dev/null
-  t1=$(date +%s.%N)
-  awk -v l="$label" -v n="$n" -v a="$t0" -v b="$t1" \
-    'BEGIN { printf "%-34s %6d cases %8.2f s %9.2f cases/s %9.3f ms/case\n", l, n, b - a, n / (b - a), 1000 * (b - a) / n }'
+  /usr/bin/time -f "%e %U %S" -o "$work/time.txt" "$@" > /dev/null
+  # wall and CPU (user + system, every thread and rank) seconds
+  awk -v l="$label" -v n="$n" '{ printf "%-24s %5d cases %7.2f s wall %8.2f cases/s %8.3f ms/case wall %8.3f ms/case CPU\n", l, n, $1, n / $1, 1000 * $1 / n, 1000 * ($2 + $3) / n }' "$work/time.txt"
 }
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
 run "work, 1 thread"           40 "$bin" sweep "$work/work.json" --quiet --jobs 1 --out "$work/out"
