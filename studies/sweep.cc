@@ -705,7 +705,9 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
 
 }  // namespace
 
-int RunCommand(const Options& o) {
+namespace {
+
+int Run(const Options& o, World& world) {
   const double factor = std::min(o.max_work_factor, 1e3);
   auto& limits = CurrentInputLimits();
   limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) * factor);
@@ -728,7 +730,6 @@ int RunCommand(const Options& o) {
     return 2;
   }
 
-  World world;
   std::string why;
   if (!world.Start(why)) {
     std::cerr << "camopt: error: " << why << "\n";
@@ -826,12 +827,16 @@ int RunCommand(const Options& o) {
   const std::string all = world.GatherToRoot(text);
   int code = 0;
   if (world.rank() == 0) {
+    // Keyed by case number: every case exactly once, whatever ran where.
+    std::istringstream gathered(all);
+    std::string line;
+    while (std::getline(gathered, line))
+      if (!line.empty()) {
+        CaseRecord r = CaseRecord::FromJson(json::parse(line));
+        done.emplace(r.index, std::move(r));
+      }
     std::vector<CaseRecord> records;
     for (auto& [i, r] : done) records.push_back(std::move(r));
-    std::istringstream in(all);
-    std::string line;
-    while (std::getline(in, line))
-      if (!line.empty()) records.push_back(CaseRecord::FromJson(json::parse(line)));
     size_t not_ok = 0;
     std::string not_ok_text;
     try {
@@ -853,6 +858,26 @@ int RunCommand(const Options& o) {
   }
   code = world.BroadcastInt(code);
   world.Finish();
+  return code;
+}
+
+}  // namespace
+
+int RunCommand(const Options& options) {
+  World world;
+  int code = 1;
+  try {
+    return Run(options, world);
+  } catch (const StudyError& e) {
+    std::cerr << "camopt: error: " << e.what() << "\n";
+    code = 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "camopt: error: " << options.file << ": out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << "camopt: internal error while running the sweep " << options.file << ": " << e.what()
+              << " (a camopt defect; please report it with the sweep file)\n";
+  }
+  if (world.size() > 1) world.Abort(code);  // the other ranks may be waiting for this one
   return code;
 }
 
