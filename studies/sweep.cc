@@ -703,10 +703,6 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
   MoveFolderIn(partial.string(), out.string());
 }
 
-}  // namespace
-
-namespace {
-
 int Run(const Options& o, World& world) {
   const double factor = std::min(o.max_work_factor, 1e3);
   auto& limits = CurrentInputLimits();
