@@ -456,8 +456,10 @@ std::vector<size_t> ParetoFront(const Sweep& s, const std::vector<CaseRecord>& r
 
 namespace {
 
-// The Pareto plot: every ok case as a point, the front as a line, over the first two objectives
-// (or over the case number when there is one objective).
+// The Pareto plot over the first two objectives (or over the case number when there is one):
+// every ok case as a dot, the front's cases as larger dots of another colour, joined in order of
+// the first objective when there are exactly two objectives (with more, the front seen in two of
+// them is no line).
 std::string ParetoSvg(const Sweep& s, const std::vector<CaseRecord>& records,
                       const std::vector<size_t>& front) {
   std::vector<size_t> objectives = s.minimize;
@@ -467,8 +469,8 @@ std::string ParetoSvg(const Sweep& s, const std::vector<CaseRecord>& records,
     return one ? static_cast<double>(r.index) : r.outputs[objectives[0]].get<double>();
   };
   auto y_of = [&](const CaseRecord& r) { return r.outputs[objectives[one ? 0 : 1]].get<double>(); };
-  Series all{"cases", {}, {}}, line{"Pareto front", {}, {}};
-  all.markers = true;
+  Series all{"ok cases", {}, {}}, dots{"Pareto front", {}, {}};
+  all.markers = dots.markers = true;
   std::vector<double> f;
   for (const CaseRecord& r : records)
     if (r.status == "ok" && Objectives(s, r, f)) {
@@ -479,19 +481,22 @@ std::string ParetoSvg(const Sweep& s, const std::vector<CaseRecord>& records,
   for (size_t i : front) points.push_back({x_of(records[i]), y_of(records[i])});
   std::sort(points.begin(), points.end());
   for (const auto& [x, y] : points) {
-    line.x.push_back(x);
-    line.y.push_back(y);
+    dots.x.push_back(x);
+    dots.y.push_back(y);
   }
+  std::vector<Series> series = {all, dots};
+  if (objectives.size() == 2) series.push_back({"front in order", dots.x, dots.y});
   auto label = [&](size_t k) {
     const bool max = std::find(s.maximize.begin(), s.maximize.end(), k) != s.maximize.end();
     return s.outputs[k].path + (max ? " (maximize)" : " (minimize)");
   };
   PlotOptions o;
-  o.title = s.name + ": Pareto front (" + std::to_string(front.size()) + " of " +
-            std::to_string(all.x.size()) + " ok cases)";
+  o.title = s.name + ": Pareto front, " + std::to_string(front.size()) + " of " +
+            std::to_string(all.x.size()) + " ok cases" +
+            (objectives.size() > 2 ? " (" + std::to_string(objectives.size()) + " objectives, two shown)" : "");
   o.x_label = one ? "case" : label(objectives[0]);
   o.y_label = label(objectives[one ? 0 : 1]);
-  return SvgLinePlot({line, all}, o);
+  return SvgLinePlot(series, o);
 }
 
 // ---- The output folder, the partial folder and its checkpoints ------------------------------
