@@ -91,6 +91,7 @@ std::string AxisLabel(const std::string& column) {
   for (auto [from, to] : {std::pair<std::string, std::string>{"_per_", "/"}, {"rad2", "rad²"}, {"rad3", "rad³"}})
     for (size_t at = unit.find(from); at != std::string::npos; at = unit.find(from, at + to.size()))
       unit.replace(at, from.size(), to);
+  if (quantity == "follower" || quantity == "swing") quantity += " displacement";
   return quantity + " [" + unit + "]";
 }
 
