@@ -208,6 +208,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("cycloid_crowning_tuning", {
     {"tuned LCM coefficient", "/tuned_coefficient_mm", "mm"},

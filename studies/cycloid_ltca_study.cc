@@ -308,6 +308,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("cycloid_ltca", {
     {"largest contact stress", "/max_contact_stress_MPa", "MPa", "", NAN, true, "/estimated_error/max_contact_stress_MPa"},

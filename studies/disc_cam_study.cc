@@ -491,6 +491,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("disc_cam");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("disc_cam", {
     {"largest pressure angle", "/pressure_angle_deg/max", "deg"},

@@ -613,6 +613,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("globoidal_cam");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("globoidal_cam", {
     {"largest pressure angle", "/max_pressure_angle_deg", "deg"},

@@ -338,6 +338,9 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_analysis");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("lcr_analysis", {
     {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},

@@ -219,6 +219,9 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_friction_fit");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("lcr_friction_fit", {
     {"friction coefficient", "/parameters/friction_coefficient/value", "", "", NAN, true,

@@ -469,6 +469,10 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 }
 
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
+
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"smallest outer diameter", "/best/outer_diameter_mm", "mm"},
@@ -483,6 +487,6 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
     {"binding limits", "/best/binding", ""},
 });
-
 }  // namespace
+
 }  // namespace camopt::studies::lcr_min_size

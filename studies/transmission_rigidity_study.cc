@@ -479,6 +479,9 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
+}  // namespace
+
+namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("transmission_rigidity", {
     {"torsional rigidity at end b", "/rigidity_at_end_b_Nm_per_rad", "N·m/rad"},

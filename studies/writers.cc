@@ -113,6 +113,7 @@ std::string Tick(double v, double step) {
 }
 
 bool DrawsLine(const Series& s) {
+  if (s.markers) return false;
   switch (s.style) {
     case SeriesStyle::kLine:
     case SeriesStyle::kLineAndMarkers: return true;
@@ -123,7 +124,7 @@ bool DrawsLine(const Series& s) {
 }
 
 bool DrawsMarkers(const Series& s) {
-  return s.style == SeriesStyle::kMarkers || s.style == SeriesStyle::kLineAndMarkers ||
+  return s.markers || s.style == SeriesStyle::kMarkers || s.style == SeriesStyle::kLineAndMarkers ||
          (s.style == SeriesStyle::kAuto && !DrawsLine(s));
 }
 
@@ -189,9 +190,7 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
   std::vector<Entry> entries;
   for (size_t k = 0; k < series.size(); ++k)
     entries.push_back({series[k].label, kPalette[k % 10], kDashes[k % 6], DrawsLine(series[k]),
-                       DrawsMarkers(series[k]) || series[k].style == SeriesStyle::kLineAndMarkers
-                           ? static_cast<int>(k % 5)
-                           : -1,
+                       DrawsMarkers(series[k]) ? static_cast<int>(k % 5) : -1,
                        false});
   for (const auto& g : o.guides)
     if (std::isfinite(g.value)) entries.push_back({g.label, "#000000", "6,3", true, -1, false});
@@ -282,7 +281,7 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
          << "," << Px(y1) << " L" << Px(x + 4) << "," << Px(y1) << "\" fill=\"none\" stroke=\""
          << color << "\" stroke-width=\"1.2\"/>\n";
     }
-    if (DrawsMarkers(s) || s.style == SeriesStyle::kLineAndMarkers)
+    if (DrawsMarkers(s))
       for (size_t i = 0; i < n; ++i)
         if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
           os << Marker(static_cast<Shape>(k % 5), X(s.x[i]), Y(s.y[i]), 3.5, color, false);

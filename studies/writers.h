@@ -32,6 +32,7 @@ struct Series {
   /// Optional ±error bars on y (one per point, e.g. a measurement's standard deviation).
   std::vector<double> y_error = {};
   SeriesStyle style = SeriesStyle::kAuto;
+  bool markers = false;  ///< true: the same as style = kMarkers (a scatter plot)
 };
 
 /// A horizontal line at y = value (a limit, a target) or a vertical one at x = value, drawn dashed

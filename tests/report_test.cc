@@ -63,6 +63,14 @@ TEST(SvgLinePlot, MeasuredPointsAsMarkersWithErrorBars) {
   EXPECT_NE(svg.find(">35</text>"), std::string::npos);  // 30 + 3 is inside the axis range
 }
 
+TEST(SvgLinePlot, MarkersFlagIsAScatterPlot) {
+  Series cloud{"cases", {1, 2, 3}, {3, 1, 2}};
+  cloud.markers = true;
+  const std::string svg = SvgLinePlot({cloud}, {"t", "x", "y"});
+  EXPECT_EQ(Count(svg, "<circle"), 3 + 1);   // three markers and the legend sample
+  EXPECT_EQ(Count(svg, "<path d=\" M"), 0);  // no line
+}
+
 TEST(SvgLinePlot, MarkedPointIsLabelledOnThePlotAndInTheLegend) {
   PlotOptions o{"t", "x", "y"};
   o.points = {{"optimum", 2, 1}};
