@@ -101,7 +101,8 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis"});
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis",
+                         "tolerances", "monte_carlo"});
   Study st;
   st.name = root.StringOr("name", "");
   st.reducer = ParseReducer(root["reducer"]);
@@ -114,11 +115,17 @@ Study Parse(const Node& root) {
   st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
   if (root.Has("analysis")) {
     const Node analysis = root["analysis"];
-    analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate"});
+    analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate", "load_model"});
     st.angle_steps = analysis.IntegerOr("angle_steps", 12, 3600);
     st.profile_points = analysis.IntegerOr("profile_points", 100, 3600);
     st.evaluate = ParseEvaluate(analysis);
+    st.load_model = ParseLoadModel(analysis);
+    if (st.load_model == lcr::LoadModel::kCompliant && !(st.load.output_torque_Nmm > 0))
+      load_node["output_torque_Nm"].Fail("a torque > 0 for \"load_model\": \"compliant\"");
   }
+  st.tolerances = ParseLcrTolerances(root);
+  if (st.tolerances && !(st.load.output_torque_Nmm > 0))
+    load_node["output_torque_Nm"].Fail("a torque > 0 for the transmission error under \"tolerances\"");
   if (root.Has("limits")) {
     root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N"});
     st.contact_stress_limit_MPa = root["limits"].PositiveOr("contact_stress_MPa", kInf);
@@ -166,8 +173,10 @@ Result Run(const Study& st, const RunContext& ctx) {
     Progress progress("lcr_analysis", ctx.quiet);
     lcr::Stages stages{true, q.stress, q.efficiency};
     try {
-      res.series = lcr::AnalyzeCycle(r, st.material, st.load, steps, stages,
-                                     [&](double f) { progress.Update(f, std::to_string(steps) + " angles"); });
+      auto update = [&](double f) { progress.Update(f, std::to_string(steps) + " angles"); };
+      res.series = st.load_model == lcr::LoadModel::kCompliant
+                       ? lcr::AnalyzeCycleCompliant(r, st.material, st.load, steps, stages, update)
+                       : lcr::AnalyzeCycle(r, st.material, st.load, steps, stages, update);
     } catch (const std::domain_error& e) {
       throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
     }
@@ -203,6 +212,23 @@ Result Run(const Study& st, const RunContext& ctx) {
     }
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
+  if (st.tolerances) {
+    const LcrToleranceSpec& t = *st.tolerances;
+    Progress progress("lcr_analysis transmission error", ctx.quiet);
+    lcr::TransmissionErrorOptions o;
+    o.output_torque_Nmm = st.load.output_torque_Nmm;
+    o.lost_motion_torque_Nmm = t.lost_motion_torque_fraction * st.load.output_torque_Nmm;
+    o.angle_steps = t.angle_steps;
+    o.samples = t.samples;
+    o.seed = t.seed;
+    o.progress = [&](double f) { progress.Update(f, std::to_string(t.samples) + " Monte-Carlo samples"); };
+    try {
+      res.transmission_error = lcr::AnalyzeTransmissionError(r, st.material, t.bands, o);
+    } catch (const std::domain_error& e) {
+      throw StudyError(ctx.study_file + ": /tolerances: the toleranced reducer cannot carry the load: " + e.what());
+    }
+    progress.Done();
+  }
   return res;
 }
 
@@ -216,6 +242,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   j["output_speed_ratio"] = res.output_speed_ratio;
   j["outer_diameter_mm"] = res.outer_diameter_mm;
   j["angle_steps"] = st.angle_steps;
+  j["load_model"] = LoadModelName(st.load_model);
   for (Side s : {Side::kInput, Side::kOutput}) {
     const CamResult& c = s == Side::kInput ? res.input_cam : res.output_cam;
     nlohmann::json& cj = j[s == Side::kInput ? "input_cam" : "output_cam"];
@@ -267,6 +294,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
       j["friction_coefficient"] = st.load.friction_coefficient;
     }
   }
+  if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
   j["notes"] = res.notes;
   return j;
 }
@@ -312,6 +340,24 @@ void Write(const Study& st, const Result& res, Outputs& out) {
       out.Add("efficiency.svg", SvgLinePlot({{"efficiency", deg, series.efficiency}},
                                             {"Efficiency (paper's friction model)", "input angle [deg]",
                                              "efficiency [-]"}));
+  }
+  if (res.transmission_error) {
+    const lcr::TransmissionErrorResult& te = *res.transmission_error;
+    Table t;
+    std::vector<double> deg(te.theta_rad.size()), windup(te.theta_rad.size());
+    for (size_t i = 0; i < deg.size(); ++i) {
+      deg[i] = te.theta_rad[i] * 180 / kPi;
+      windup[i] = te.nominal_rotation_rad[i] * 180 / kPi * 3600;
+    }
+    t.Add("input_angle_deg", deg);
+    t.Add("nominal_windup_arcsec", windup);
+    t.Add("linear_te_sigma_arcsec", te.linear_sigma_arcsec);
+    if (!te.worst_sample_te_arcsec.empty()) t.Add("worst_sample_te_arcsec", te.worst_sample_te_arcsec);
+    out.Add("transmission_error.csv", ToCsv(t));
+    std::vector<Series> lines = {{"linear σ", deg, te.linear_sigma_arcsec}};
+    if (!te.worst_sample_te_arcsec.empty()) lines.push_back({"worst Monte-Carlo sample", deg, te.worst_sample_te_arcsec});
+    out.Add("transmission_error.svg", SvgLinePlot(lines, {"Transmission error from the tolerances", "input angle [deg]",
+                                                          "output angle error [arcsec]"}));
   }
   if (q.profile) {
     const int points = st.profile_points;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <ceres/jet.h>
 
@@ -37,6 +38,60 @@ double Percentile(std::vector<double> v, double q) {
 }
 
 }  // namespace
+
+CycleSeries AnalyzeCycleCompliant(const Reducer<double>& r, const Material& material, const LoadCase& load,
+                                  int steps, const Stages& stages, const std::function<void(double)>& progress) {
+  CycleSeries s;
+  const double sense = LoadedArmSign(r, Side::kOutput);
+  const double e_star = material.composite_modulus_MPa();
+  const double ratio = std::abs(SpeedReductionRatio(r));
+  for (auto [series, cam] : {std::pair{&s.input, &r.input}, std::pair{&s.output, &r.output}})
+    series->roller_force_N.Reset(cam->rollers, steps);
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2 * kPi * i / steps;
+    s.theta_rad.push_back(theta);
+    const CompliantAngle<double> c = CompliantAtAngle<double>(r, material, theta, sense * load.output_torque_Nmm, nullptr);
+    Vec2<double> g(0.0, -load.cam_weight_N);
+    for (auto [series, side, forces] : {std::tuple{&s.input, Side::kInput, &c.force_input},
+                                        std::tuple{&s.output, Side::kOutput, &c.force_output}}) {
+      const CamSide<double>& cam = r.side(side);
+      const auto contacts = RollerContacts(r, side, theta);
+      int actuating = 0;
+      double max_force = 0, torque = 0, max_stress = 0;
+      for (size_t k = 0; k < contacts.size(); ++k) {
+        const double f = (*forces)[k];
+        actuating += f > 0;  // Palmgren: exactly 0 once separated
+        max_force = std::max(max_force, f);
+        torque += f * contacts[k].arm;
+        g += f * contacts[k].direction;
+        if (stages.stress && f > 0) {
+          const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * contacts[k].curvature);
+          max_stress = std::max(max_stress, r_eff > 0 ? contact::LineContactPeakPressure(f, cam.contact_length(), r_eff, e_star)
+                                                      : kInf);
+        }
+      }
+      series->roller_force_N.AddRow(*forces);
+      series->actuating.push_back(actuating);
+      series->max_force_N.push_back(max_force);
+      series->max_stress_MPa.push_back(max_stress);
+      series->turret_torque_Nmm.push_back(std::abs(torque));
+    }
+    double tangential = 0, radial = 0, input_torque = 0, efficiency = 0;
+    if (stages.efficiency) {
+      const Vec2<double> u = U(theta);
+      tangential = -g.dot(Perp(u));
+      radial = g.dot(u);
+      input_torque = InputTorque(tangential, radial, load.friction_coefficient, r.eccentricity);
+      efficiency = Efficiency(load.output_torque_Nmm, input_torque, ratio);
+    }
+    s.tangential_force_N.push_back(tangential);
+    s.radial_force_N.push_back(radial);
+    s.input_torque_Nmm.push_back(input_torque);
+    s.efficiency.push_back(efficiency);
+    if (progress && (i % 64 == 0 || i + 1 == steps)) progress(double(i + 1) / steps);
+  }
+  return s;
+}
 
 std::vector<ToleranceParameter> ToleranceParameters(const Reducer<double>& r, const ToleranceBands& b) {
   std::vector<ToleranceParameter> p;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/tolerance.h"
 #include "model/rigidity/lcr_stiffness.h"
@@ -107,6 +108,18 @@ CompliantAngle<T> CompliantAtAngle(const Reducer<double>& r, const Material& mat
   out.force_output = b.Forces(out.psi_output);
   return out;
 }
+
+/// The load-sharing model of an analysis: the paper's rigid law (F ∝ moment arm, forces.h) or the
+/// compliant contacts of the stiffness model (CompliantAtAngle).
+enum class LoadModel { kRigid, kCompliant };
+
+/// AnalyzeCycle's series with the compliant load sharing of the nominal reducer: roller forces from
+/// CompliantAtAngle (the stiffness model's, Palmgren contacts), Hertz stress and efficiency from
+/// those forces with the formulas of forces.h/friction.h. @pre load.output_torque_Nmm > 0.
+/// @throws std::domain_error when a turret cannot carry the torque.
+CycleSeries AnalyzeCycleCompliant(const Reducer<double>& r, const Material& material, const LoadCase& load,
+                                  int steps, const Stages& stages,
+                                  const std::function<void(double)>& progress = {});
 
 /// What to compute.
 struct TransmissionErrorOptions {
