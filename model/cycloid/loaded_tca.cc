@@ -602,6 +602,7 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
     }
     d.deflection_rad = den > 0 ? num / den : 0.0;
     d.rotation_rad = d_beta0[j] + d.deflection_rad;
+    d.unloaded_rotation_rad = d_beta0[j];
     double best = -1, nearest_end = kInf;
     for (size_t i = 0; i < n; ++i) {
       const PairLoad& p = solved.pairs[i];
@@ -652,6 +653,7 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
   for (size_t j = 0; j < np; ++j) {
     out[j].parameter = parameters[j];
     out[j].rotation_rad.assign(na, 0.0);
+    out[j].unloaded_rotation_rad.assign(na, 0.0);
     out[j].max_pressure_per_angle_MPa.assign(na, 0.0);
     out[j].end_distance_per_angle_mm.assign(na, 0.0);
     out[j].pair_load_N.assign(na, {});
@@ -681,6 +683,7 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
       CycleDerivative& c = out[j];
       c.converged = c.converged && d[j].converged;
       c.rotation_rad[k] = d[j].rotation_rad;
+      c.unloaded_rotation_rad[k] = d[j].unloaded_rotation_rad;
       c.max_pressure_per_angle_MPa[k] = d[j].max_pressure_MPa;
       c.end_distance_per_angle_mm[k] = d[j].end_distance_mm;
       c.pair_load_N[k] = d[j].pair_load_N;

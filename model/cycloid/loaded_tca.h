@@ -145,6 +145,7 @@ class LoadedTca {
     std::string parameter;
     double deflection_rad = 0;            ///< dΔφc/ds
     double rotation_rad = 0;              ///< d(β0 + Δφc)/ds, the LTE's derivative
+    double unloaded_rotation_rad = 0;     ///< dβ0/ds, the unloaded TE's (Δa, Δρ only)
     std::vector<double> pair_load_N;      ///< dF_i/ds, in the order of solved.pairs
     std::vector<double> pair_max_pressure_MPa;  ///< d p_i(peak cell)/ds, peak cell frozen
     double max_pressure_MPa = 0;          ///< of the pair carrying the maximum
@@ -239,6 +240,7 @@ struct CycleDerivative {
   double max_pair_load_N = 0;           ///< at the active angle and pair
   double end_distance_mm = 0;           ///< d(min over angles), active angle (edge_margin only)
   std::vector<double> rotation_rad;     ///< per angle, d LTE
+  std::vector<double> unloaded_rotation_rad;  ///< per angle, dβ0 (the unloaded TE)
   std::vector<double> max_pressure_per_angle_MPa;  ///< per angle (its peak pair)
   std::vector<double> end_distance_per_angle_mm;   ///< per angle (edge_margin only)
   std::vector<std::vector<double>> pair_load_N;    ///< per angle, per loaded pair (in its order)
