@@ -132,6 +132,14 @@ std::pair<std::string, double> ModelParameter(const std::string& name) {
 
 }  // namespace
 
+namespace {
+// The derivatives' CG tolerance: a hundredth of the contact solver's (the values are no more
+// accurate than that), between 1e-10 and 1e-6.
+double SensitivityTolerance(const cycloid::LoadedOptions& o) {
+  return std::clamp(1e-2 * o.solver_tolerance, 1e-10, 1e-6);
+}
+}  // namespace
+
 std::vector<std::string> TuningVariableNames() {
   return {"coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm",
           "radius_mm",      "delta_position_um",   "delta_radius_um"};
@@ -164,6 +172,7 @@ CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloi
                 cycloid::LoadedOptions o = options;
                 o.keep_pressure = true;  // the derivatives need the converged pressures
                 o.edge_margin = false;
+                o.sensitivity_tolerance = SensitivityTolerance(options);
                 return o;
               }()),
       maximum_(drive, crowning, material,
@@ -171,6 +180,7 @@ CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloi
                  cycloid::LoadedOptions o = options;
                  o.keep_pressure = true;
                  o.edge_margin = true;
+                 o.sensitivity_tolerance = SensitivityTolerance(options);
                  return o;
                }()),
       design_torque_Nmm_(design_torque_Nmm),

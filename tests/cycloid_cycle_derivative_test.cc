@@ -55,6 +55,7 @@ Point Moved(Point p, const std::string& name, double h) {
   if (name == "effective_length_mm") p.crowning.effective_length_mm += h;
   if (name == "end_drop_mm") p.crowning.end_drop_mm += h;
   if (name == "flat_length_mm") p.crowning.flat_length_mm += h;
+  if (name == "radius_mm") p.crowning.radius_mm += h;
   if (name == "delta_position_mm") p.drive.delta_position_mm += h;
   if (name == "delta_radius_mm") p.drive.delta_radius_mm += h;
   return p;
@@ -66,17 +67,14 @@ double Step(const Point& p, const std::string& name) {
   if (name == "effective_length_mm") return 1e-5 * p.crowning.effective_length_mm;
   if (name == "end_drop_mm") return 1e-5 * p.crowning.end_drop_mm;
   if (name == "flat_length_mm") return 1e-5 * p.crowning.flat_length_mm;
+  if (name == "radius_mm") return 1e-5 * p.crowning.radius_mm;
   return 1e-6;  // Δa, Δρ [mm]
 }
 
 constexpr double kTemperatureMPa = 5.0;
 
-TEST(CycloidCycleDerivative, EveryOutputMatchesCentralDifferencesForEveryParameter) {
-  const std::vector<std::string> names = {"torque_Nmm",     "coefficient_mm",    "effective_length_mm",
-                                          "end_drop_mm",    "flat_length_mm",    "delta_position_mm",
-                                          "delta_radius_mm"};
+void ExpectCycleDerivativesMatch(const Point& base, const std::vector<std::string>& names) {
   const std::vector<double> angles = UniformCrankAngles(4, 2 * kPi / 16);
-  const Point base;
   const LoadedTca tca(base.drive, base.crowning, Material{}, Tight());
   const CycleResult cycle = RunCycle(tca, base.torque_Nmm, angles);
   ASSERT_TRUE(cycle.converged);
@@ -120,6 +118,25 @@ TEST(CycloidCycleDerivative, EveryOutputMatchesCentralDifferencesForEveryParamet
     expect(d[j].end_distance_mm, fd(plus.end_distance_mm, minus.end_distance_mm), kEndDistanceTol,
            "end distance");
   }
+}
+
+TEST(CycloidCycleDerivative, EveryOutputMatchesCentralDifferencesForEveryParameter) {
+  ExpectCycleDerivativesMatch(Point{}, {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm",
+                                        "flat_length_mm", "delta_position_mm", "delta_radius_mm"});
+}
+
+TEST(CycloidCycleDerivative, FullAndPartialCrowningParametersMatchCentralDifferences) {
+  Point full;
+  full.crowning = Crowning{};
+  full.crowning.type = CrowningType::kFull;
+  full.crowning.radius_mm = 3000;
+  ExpectCycleDerivativesMatch(full, {"radius_mm"});
+  Point partial;
+  partial.crowning = Crowning{};
+  partial.crowning.type = CrowningType::kPartial;
+  partial.crowning.radius_mm = 1500;
+  partial.crowning.flat_length_mm = 8.0;
+  ExpectCycleDerivativesMatch(partial, {"radius_mm", "flat_length_mm"});
 }
 
 TEST(CycloidCycleDerivative, SmoothPeakBiasIsWithinItsStatedBound) {
