@@ -146,7 +146,9 @@ void ParseJoint(const Node& root, Study& s) {
     s.curve_points = t.IntegerOr("curve_points", 0, 11);
     if (s.curve_points == 1) t["curve_points"].Fail("0 or at least 2 points");
     if (s.curve_points > 200) t["curve_points"].Fail("at most 200 points");
-    s.max_evaluations = t.IntegerOr("max_evaluations", 1, s.max_evaluations);
+    // optimizer.max_evaluations wins over tuning.max_evaluations when both are given.
+    if (!(root.Has("optimizer") && root["optimizer"].Has("max_evaluations")))
+      s.max_evaluations = t.IntegerOr("max_evaluations", 1, s.max_evaluations);
     s.required_edge_margin_um = t.NumberOr("edge_margin_um", 0.0);
     s.temperature_MPa = t.PositiveOr("softmax_temperature_MPa", 2.0);
     s.max_lte_peak_to_peak_arcsec = t.PositiveOr("max_lte_peak_to_peak_arcsec", kInf);
@@ -557,14 +559,20 @@ CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): crank angles, contact grid and
 // the optimizer's evaluation budget (its tolerances are fixed).
-Fidelity Knobs(const nlohmann::json&) {
+Fidelity Knobs(const nlohmann::json& study) {
   Fidelity f;
+  // The general form (issue 13) reads its budget from optimizer.max_evaluations.
+  const bool joint = study.is_object() && study.contains("variables");
   f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"}, 6, 2,
                      true, 0, "uniform crank angles per mesh period"});
   f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
                      "contact cells across the profile and along the face"});
-  f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, 30, 2, true, 0,
-                     "COBYLA evaluations after the scan"});
+  if (joint)
+    f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, 30, 2, true, 0,
+                       "optimizer budget (NLopt: evaluations; Ipopt: iterations)"});
+  else
+    f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, 30, 2, true, 0,
+                       "COBYLA evaluations after the scan"});
   f.headlines = {"/tuned_coefficient_mm", "/tuned_max_contact_stress_MPa",
                  "/reference_max_contact_stress_MPa"};
   return f;
