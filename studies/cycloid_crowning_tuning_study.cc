@@ -20,7 +20,7 @@ using objectives::CrowningEvaluation;
 namespace {
 
 // The general form's "crowning": start values; a field that is a variable may be omitted.
-cycloid::Crowning ParseStartCrowning(const Node& root, const Study& s, const std::set<std::string>& vars) {
+cycloid::Crowning ParseStartCrowning(const Node& root, const std::set<std::string>& vars) {
   cycloid::Crowning c;
   if (!root.Has("crowning")) return c;
   const Node n = root["crowning"];
@@ -51,7 +51,6 @@ cycloid::Crowning ParseStartCrowning(const Node& root, const Study& s, const std
   } else {
     n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
   }
-  (void)s;
   return c;
 }
 
@@ -63,7 +62,7 @@ void ParseJoint(const Node& root, Study& s) {
   for (const auto& [key, _] : v.json().items()) names.insert(key);
   const std::vector<std::string> known = objectives::TuningVariableNames();
   v.CheckKnownFields(std::set<std::string>(known.begin(), known.end()));
-  s.crowning = ParseStartCrowning(root, s, names);
+  s.crowning = ParseStartCrowning(root, names);
   // The variables in a fixed order (TuningVariableNames), whatever the file's order.
   for (const std::string& name : known) {
     if (!names.count(name)) continue;
