@@ -166,7 +166,8 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
         worst = std::max(worst, std::min(DistanceToArc(b.first, q), DistanceToArc(b.second, q)));
       }
     }
-    if (!(worst <= o.tolerance_mm) && p.depth < o.max_depth) {
+    const size_t planned = fit.arcs.size() + 2 * (stack.size() + 1);
+    if (!(worst <= o.tolerance_mm) && p.depth < o.max_depth && planned + 2 <= size_t(o.max_arcs)) {
       const double tm = 0.5 * (p.ta + p.tb);
       stack.push_back({tm, p.tb, p.depth + 1});
       stack.push_back({p.ta, tm, p.depth + 1});
@@ -183,8 +184,8 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
       fit.arcs.push_back(b.second);
     }
     fit.checked_points += o.check_points - 1;
-    fit.max_deviation_mm = std::max(fit.max_deviation_mm, worst);
-    if (worst > o.tolerance_mm) fit.within_tolerance = false;
+    if (!(worst <= fit.max_deviation_mm)) fit.max_deviation_mm = worst;  // NaN and ∞ stay visible
+    if (!(worst <= o.tolerance_mm)) fit.within_tolerance = false;
   }
   return fit;
 }
@@ -200,19 +201,19 @@ double MaxDistanceToChain(const CurveFunction& curve, double t0, double t1, int 
     const Vec2<double> q = curve(t0 + (t1 - t0) * i / samples);
     double best = std::numeric_limits<double>::infinity();
     size_t best_k = hint;
-    for (size_t w = 0; w < std::min<size_t>(n, 16); ++w) {
-      const size_t k = (hint + n - 4 + w) % n;
+    for (size_t w = 0; w < std::min<size_t>(n, 32); ++w) {
+      const size_t k = (hint + n - 8 + w) % n;
       const double dist = DistanceToArc(chain[k], q);
       if (dist < best) best = dist, best_k = k;
     }
-    if (best > 1e-2) {
+    if (best > 1e-2 && n <= 4096) {  // far from the window: every arc (bounded work)
       for (size_t k = 0; k < n; ++k) {
         const double dist = DistanceToArc(chain[k], q);
         if (dist < best) best = dist, best_k = k;
       }
     }
     hint = best_k;
-    worst = std::max(worst, best);
+    if (!(best <= worst)) worst = best;
   }
   return worst;
 }

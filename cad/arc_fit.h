@@ -63,6 +63,7 @@ struct FitOptions {
   int initial_segments = 64;      ///< uniform parameter intervals to start from
   int check_points = 32;          ///< exact-curve points checked inside each fitted interval
   int max_depth = 24;             ///< halvings of one interval at most
+  int max_arcs = 20000;           ///< no more halving once the chain would pass this many arcs
 };
 
 /// A fitted chain of arcs and how far it is from the exact curve.
@@ -70,7 +71,7 @@ struct FittedCurve {
   std::vector<ArcSegment> arcs;
   double max_deviation_mm = 0.0;  ///< largest distance of a checked exact point from the arcs
   long checked_points = 0;        ///< exact-curve points the deviation was measured on
-  bool within_tolerance = true;   ///< false where max_depth stopped the halving
+  bool within_tolerance = true;   ///< false where max_depth or max_arcs stopped the halving
 };
 
 /// Fits bi-arcs to curve(t), t ∈ [t0, t1]; a closed curve (curve(t1) = curve(t0)) gives a closed

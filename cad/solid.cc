@@ -29,6 +29,7 @@
 #include <Message_Messenger.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
@@ -139,9 +140,7 @@ TriangleMesh MeshOf(const TopoDS_Shape& shape, double deflection) {
   return mesh;
 }
 
-}  // namespace
-
-SolidOutput ExtrudeCam(const Extrusion& e) {
+SolidOutput ExtrudeCamUnguarded(const Extrusion& e) {
   SilenceOcct();
   BRepBuilderAPI_MakeFace face_maker(WireOf(e.profile), Standard_True);
   if (!face_maker.IsDone()) throw std::runtime_error("OCCT: no planar face on the cam profile");
@@ -171,7 +170,7 @@ SolidOutput ExtrudeCam(const Extrusion& e) {
   return out;
 }
 
-SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name) {
+SurfaceOutput BSplineSurfacesUnguarded(const std::vector<PointGrid>& grids, const std::string& name) {
   SilenceOcct();
   SurfaceOutput out;
   BRep_Builder builder;
@@ -198,7 +197,7 @@ SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::st
   return out;
 }
 
-StepReadBack ReadStep(const std::string& content) {
+StepReadBack ReadStepUnguarded(const std::string& content) {
   SilenceOcct();
   StepReadBack r;
   STEPControl_Reader reader;
@@ -217,6 +216,31 @@ StepReadBack ReadStep(const std::string& content) {
   r.area_mm2 = area.Mass();
   r.valid = BRepCheck_Analyzer(shape).IsValid();
   return r;
+}
+
+// OCCT reports failures as Standard_Failure, which is not a std::exception: turned into one here,
+// so that camopt reports them (exit 1, a defect: the inputs were checked) instead of terminating.
+template <typename F>
+auto Guarded(const char* what, F f) {
+  try {
+    return f();
+  } catch (const Standard_Failure& failure) {
+    throw std::runtime_error(std::string("OCCT: ") + what + ": " + failure.GetMessageString());
+  }
+}
+
+}  // namespace
+
+SolidOutput ExtrudeCam(const Extrusion& e) {
+  return Guarded("extruded cam", [&] { return ExtrudeCamUnguarded(e); });
+}
+
+SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name) {
+  return Guarded("B-spline surfaces", [&] { return BSplineSurfacesUnguarded(grids, name); });
+}
+
+StepReadBack ReadStep(const std::string& content) {
+  return Guarded("STEP read", [&] { return ReadStepUnguarded(content); });
 }
 
 }  // namespace camopt::cad

@@ -7,7 +7,11 @@ PACKAGES=(build-essential cmake pkg-config
   # Geometry files (issue 15): OpenCASCADE for STEP solids and their STL meshes (libtbb-dev: OCCT's
   # CMake targets link it), and the independent readers the tests check the files with.
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
-  libocct-data-exchange-dev libtbb-dev python3-ezdxf python3-numpy admesh)
+  libocct-data-exchange-dev libtbb-dev python3-ezdxf python3-numpy admesh
+  # Issue 19 (sweeps): Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
+  libboost-dev libopenmpi-dev openmpi-bin
+  # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
+  chromium python3-pil)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

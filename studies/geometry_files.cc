@@ -37,14 +37,17 @@ struct Fit {
 // largest at them.
 constexpr double kFitTarget = 0.9;
 
+// The larger of two deviations, NaN winning (std::max would hide it).
+double Worse(double a, double b) { return b <= a ? a : b; }
+
 Fit FitCurve(const cad::CurveFunction& f, const PlanarCamGeometry& cam, double tol_mm) {
   cad::FitOptions o;
   o.tolerance_mm = kFitTarget * tol_mm;
   o.initial_segments = cam.initial_segments;
   Fit fit{cad::FitBiarcs(f, cam.t0, cam.t1, o), 0.0};
   const int samples = std::max(1000, kVerifySamplesPerArc * static_cast<int>(fit.curve.arcs.size()));
-  fit.deviation_mm = std::max(fit.curve.max_deviation_mm,
-                              cad::MaxDistanceToChain(f, cam.t0, cam.t1, samples, fit.curve.arcs));
+  fit.deviation_mm =
+      Worse(fit.curve.max_deviation_mm, cad::MaxDistanceToChain(f, cam.t0, cam.t1, samples, fit.curve.arcs));
   fit.curve.checked_points += samples + 1;
   return fit;
 }
@@ -98,7 +101,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   if (cam.pitch) {
     const Fit pitch = FitCurve(cam.pitch, cam, tol_mm);
     f.pitch = pitch.curve;
-    f.max_deviation_mm = std::max(f.max_deviation_mm, pitch.deviation_mm);
+    f.max_deviation_mm = Worse(f.max_deviation_mm, pitch.deviation_mm);
     f.checked_points += pitch.curve.checked_points;
     layers.push_back("PITCH_CURVE");
   }
@@ -106,7 +109,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   if (cam.cutter) {
     const Fit cutter = FitCurve(cam.cutter, cam, tol_mm);
     f.cutter = cutter.curve;
-    f.max_deviation_mm = std::max(f.max_deviation_mm, cutter.deviation_mm);
+    f.max_deviation_mm = Worse(f.max_deviation_mm, cutter.deviation_mm);
     f.checked_points += cutter.curve.checked_points;
     layers.push_back("CUTTER_PATH");
     j["cutter_diameter_mm"] = cam.cutter_diameter_mm;
@@ -118,6 +121,17 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   layers.push_back("CENTRE_MARKS");
   layers.push_back("TEXT");
   f.profile_area_mm2 = ExactArea(cam.profile, cam.t0, cam.t1);
+  // A curve the fit cannot follow within the tolerance (absurd sizes, non-finite points): no files.
+  f.files = std::isfinite(f.max_deviation_mm) && f.max_deviation_mm <= tol_mm && f.profile.within_tolerance;
+  if (!f.files) {
+    j["not_written"] = "the curves could not be fitted within " + Format(options.dxf_tolerance_um, 4) +
+                       " um (largest deviation " + Format(f.max_deviation_mm * 1e3, 4) + " um, " +
+                       std::to_string(f.profile.arcs.size()) + " arcs)";
+    j["dxf_max_deviation_um"] = std::isfinite(f.max_deviation_mm) ? nlohmann::json(f.max_deviation_mm * 1e3)
+                                                                  : nlohmann::json(nullptr);
+    j["dxf_tolerance_um"] = options.dxf_tolerance_um;
+    return f;
+  }
 
   j["dxf"] = cam.file_stem + ".dxf";
   j["dxf_layers"] = layers;
@@ -146,6 +160,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
 }
 
 void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& options, Outputs& out) {
+  if (!f.files) return;
   const PlanarCamGeometry& cam = f.cam;
   cad::DxfDocument dxf;
   dxf.AddLayer("CAM_PROFILE", 7);

@@ -59,6 +59,7 @@ struct PlanarCamFit {
   double max_deviation_mm = 0.0;            ///< over profile, pitch and cutter path
   long checked_points = 0;
   double profile_area_mm2 = 0.0;            ///< of the exact profile
+  bool files = false;                       ///< fitted within the tolerance: the files are written
   bool solid = false;                       ///< STEP/STL written (a thickness, no undercut)
   nlohmann::json summary;                   ///< the entry for result.json
 };

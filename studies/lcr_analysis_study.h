@@ -13,6 +13,7 @@
 #include "model/lcr/cycle.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
+#include "studies/lcr_tolerance_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -37,6 +38,8 @@ struct Study {
   bool cutter_input_given = false, cutter_output_given = false;      ///< a cutter other than the roller
   double bore_diameter_input_mm = 0, bore_diameter_output_mm = 0;    ///< 0: no bore in the solids
   GeometryFileOptions geometry;                                      ///< "geometry_files"
+  lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
+  std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
@@ -70,6 +73,8 @@ struct Result {
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
   std::optional<PlanarCamFit> input_cam_files, output_cam_files;  ///< with the profile stage
+  /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
+  std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
 };
 

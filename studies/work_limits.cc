@@ -82,6 +82,15 @@ WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
   } else {
     terms.push_back({double(Count(Sub(s, "measurements"))), "/measurements", "measurements"});
   }
+  if (!fit && s.contains("tolerances")) {
+    // Transmission error (issue 18): per Monte-Carlo sample, angle and roller about two contact
+    // evaluations' time (gap foot point + compliant solves, measured 6 µs per roller and angle).
+    const json& mc = Sub(s, "monte_carlo");
+    const double samples = Size(mc, "samples", 0), mc_steps = Size(mc, "angle_steps", 72);
+    terms.push_back({2.0 * (samples + 8.0) * mc_steps * rollers, "/monte_carlo/samples",
+                     Num(samples) + " Monte-Carlo samples × " + Num(mc_steps) + " angles × " + Num(rollers) +
+                         " rollers × 2"});
+  }
   return Largest(terms, 2e7 * factor, "roller contact evaluations", 64);
 }
 
@@ -170,7 +179,14 @@ WorkEstimate CrowningTuning(const json& s, double factor) {
   const double rollers = Size(Sub(s, "drive"), "rollers", 16);
   const double cells = GridCells(a);
   const double angles = Size(a, "crank_angles_per_mesh_period", 6);
-  const double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
+  double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
+  // The general form (issue 13): optimizer.max_evaluations, each a value run and its gradient,
+  // which costs about 0.65 value runs per variable (measured: 1.9× for 3 variables,
+  // docs/performance.md).
+  if (s.contains("variables") && s["variables"].is_object())
+    evaluations = Size(t, "curve_points", 11) +
+                  Size(Sub(s, "optimizer"), "max_evaluations", Size(t, "max_evaluations", 30)) *
+                      (1.0 + 0.65 * double(s["variables"].size()));
   return Largest({{2 * evaluations * angles * rollers * cells, "/analysis/grid",
                    "2 torques × " + Num(evaluations) + " evaluations × " + Num(angles) +
                        " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +

@@ -3,6 +3,7 @@
 // and STL files are checked by independent readers in tests/geometry_files_test.py.
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -270,6 +271,56 @@ TEST(GeometryFiles, DiscCamStepSolidAndCutterPath) {
   const json g = studies::disc_cam::ToJson(st, res)["geometry_files"]["profile"];
   EXPECT_LE(double(g["dxf_max_deviation_um"]), 1.0);
   EXPECT_EQ(g["cutter_diameter_mm"], 2 * double(study["cutter_radius_mm"]));
+}
+
+// Every STEP solid the examples write, read back by OpenCASCADE: one valid solid whose volume is
+// result.json's (exact profile area − bore area) × thickness within 0.1 %. Stages cut to the
+// geometry (profile / unloaded), which is what the files depend on.
+TEST(GeometryFiles, EveryExampleStepSolidReadsBack) {
+  int solids = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourcePath("studies/examples"))) {
+    if (entry.path().extension() != ".json") continue;
+    json study = json::parse(ReadFile(entry.path()));
+    if (!study.is_object() || !study.contains("study")) continue;
+    const std::string kind = study["study"];
+    const std::string name = entry.path().filename().string();
+    studies::Outputs out;
+    json j;
+    const studies::Node root(&study, name, "");
+    if (kind == "lcr_analysis") {
+      study["analysis"]["evaluate"] = {"profile"};
+      const auto st = studies::lcr_analysis::Parse(root);
+      const auto res = studies::lcr_analysis::Run(st, {name, true});
+      studies::lcr_analysis::Write(st, res, out);
+      j = studies::lcr_analysis::ToJson(st, res);
+    } else if (kind == "cycloid_ltca") {
+      study["analysis"] = {{"evaluate", {"unloaded"}}, {"crank_angles_deg", {0}}};
+      const auto st = studies::cycloid_ltca::Parse(root);
+      const auto res = studies::cycloid_ltca::Run(st, {name, true});
+      studies::cycloid_ltca::Write(st, res, out);
+      j = studies::cycloid_ltca::ToJson(st, res);
+    } else if (kind == "disc_cam") {
+      study["analysis"] = {{"evaluate", {"profile"}}};
+      const auto st = studies::disc_cam::Parse(root);
+      const auto res = studies::disc_cam::Run(st, {name, true});
+      studies::disc_cam::Write(st, res, out);
+      j = studies::disc_cam::ToJson(st, res);
+    } else {
+      continue;
+    }
+    ASSERT_TRUE(j.contains("geometry_files")) << name;
+    for (const auto& [part, g] : j["geometry_files"].items()) {
+      EXPECT_LE(double(g["dxf_max_deviation_um"]), double(g["dxf_tolerance_um"])) << name << " " << part;
+      EXPECT_TRUE(out.files().count(g["dxf"].get<std::string>())) << name << " " << part;
+      if (!g.contains("step")) continue;
+      const cad::StepReadBack back = cad::ReadStep(out.files().at(g["step"].get<std::string>()));
+      EXPECT_EQ(back.solids, 1) << name << " " << part;
+      EXPECT_TRUE(back.valid) << name << " " << part;
+      EXPECT_NEAR(back.volume_mm3 / double(g["solid_volume_mm3"]) - 1, 0.0, kSolidRelTol) << name << " " << part;
+      ++solids;
+    }
+  }
+  EXPECT_GE(solids, 8);  // 2 LCR examples × 2 cams, 4 cycloid discs, 2 disc cams
 }
 
 // The globoidal cam's working surfaces: binary STL by default (two open bands: only their rims are

@@ -201,7 +201,9 @@ def check_example(camopt, path, tmp, run):
         return
     result = json.load(open(os.path.join(out, "result.json")))
     files = result.get("geometry_files", {})
-    check(len(files) > 0, f"{name}: result.json has no geometry_files")
+    evaluate = study.get("analysis", {}).get("evaluate")
+    profile_asked = evaluate is None or kind != "lcr_analysis" or "profile" in evaluate
+    check((len(files) > 0) == profile_asked, f"{name}: geometry_files {'missing' if profile_asked else 'unasked'}")
     for part, info in files.items():
         tol_mm = info["dxf_tolerance_um"] * 1e-3
         dxf_path = os.path.join(out, info["dxf"])
