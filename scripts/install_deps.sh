@@ -3,7 +3,10 @@
 set -euo pipefail
 PACKAGES=(build-essential cmake pkg-config
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev libceres-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libdxflib-dev libfftw3-dev libsundials-dev ccache)
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libdxflib-dev libfftw3-dev libsundials-dev ccache
+  # Issue 17: the Python module (pybind11), its tests and example (NumPy, matplotlib) and the
+  # schema tests (jsonschema), all for Debian's /usr/bin/python3.
+  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-jsonschema)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

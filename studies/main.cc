@@ -1,4 +1,6 @@
-// camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]`.
+// camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]`,
+// `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind), `camopt --version`.
+// A successful run prints a short summary of the headline numbers of result.json on stdout.
 // Exit codes, by cause:
 //   0   success
 //   2   something the user can fix: the study file, the arguments, the output folder (with the
@@ -11,6 +13,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <new>
 #include <thread>
@@ -20,7 +23,10 @@
 
 #include <CLI/CLI.hpp>
 #include <glog/logging.h>
+#include <nlohmann/json.hpp>
 
+#include "studies/provenance.h"
+#include "studies/schemas.h"
 #include "studies/study.h"
 
 namespace {
@@ -44,12 +50,56 @@ void StartSignalThread() {
   }).detach();
 }
 
+// The headline numbers of result.json, one "key: value" line each (at most 24): first the
+// top-level numbers, flags and short strings, then from the objects one level down the extremes
+// and verdicts (max…, min…, mean…, …_ok, feasible, converged).
+void PrintSummary(const std::string& out_dir) {
+  std::ifstream in(std::filesystem::path(out_dir) / "result.json");
+  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+  if (!r.is_object()) return;
+  std::cout << "camopt: " << r.value("study", std::string("study"));
+  if (r.contains("name") && r["name"].is_string()) std::cout << " \"" << r["name"].get<std::string>() << "\"";
+  std::cout << "\n";
+  constexpr int kMaxLines = 24;
+  int lines = 0;
+  bool cut = false;
+  const auto show = [&](const std::string& key, const nlohmann::json& v) {
+    if (lines >= kMaxLines) {
+      cut = true;
+      return;
+    }
+    std::cout << "  " << key << ": " << v.dump() << "\n";
+    ++lines;
+  };
+  const auto scalar = [](const nlohmann::json& v) {
+    return v.is_number() || v.is_boolean() || (v.is_string() && v.get<std::string>().size() <= 40);
+  };
+  const auto headline = [](const std::string& k) {
+    const auto ends = [&](const std::string& s) {
+      return k.size() >= s.size() && k.compare(k.size() - s.size(), s.size(), s) == 0;
+    };
+    return k.rfind("max", 0) == 0 || k.rfind("min", 0) == 0 || k.rfind("mean", 0) == 0 || ends("_ok") ||
+           k == "feasible" || k == "converged";
+  };
+  for (auto it = r.begin(); it != r.end(); ++it) {
+    const std::string& key = it.key();
+    if (key == "study" || key == "name" || key == "camopt_version" || key == "study_sha256") continue;
+    if (scalar(*it)) show(key, *it);
+  }
+  for (auto it = r.begin(); it != r.end(); ++it)
+    if (it->is_object())
+      for (auto jt = it->begin(); jt != it->end(); ++jt)
+        if (scalar(*jt) && !jt->is_string() && headline(jt.key())) show(it.key() + "." + jt.key(), *jt);
+  if (cut) std::cout << "  ... (the rest in result.json)\n";
+  if (r.contains("warnings") && r["warnings"].is_array() && !r["warnings"].empty())
+    std::cout << "  warnings: " << r["warnings"].size() << " (see result.json)\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   StartSignalThread();
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
-  app.require_subcommand(1);
   std::string study_file, out_dir;
   bool quiet = false;
   double work_factor = 1.0;
@@ -62,6 +112,11 @@ int main(int argc, char** argv) {
                   "see docs/reliability.md)")
       ->check(CLI::Range(1e-6, 1e6));
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
+  std::string schema_kind;
+  CLI::App* schema = app.add_subcommand("schema", "Print the JSON Schema of a study kind");
+  schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
+  app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
+  app.require_subcommand(0, 1);
 
   try {
     app.parse(argc, argv);
@@ -80,6 +135,19 @@ int main(int argc, char** argv) {
     for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
     return 0;
   }
+  if (schema->parsed()) {
+    try {
+      std::cout << camopt::studies::StudySchema(schema_kind);
+      return 0;
+    } catch (const camopt::studies::StudyError& e) {
+      std::cerr << "camopt: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (!run->parsed()) {
+    std::cerr << app.help();
+    return 2;
+  }
   if (out_dir.empty())
     out_dir = (std::filesystem::path("results") / std::filesystem::path(study_file).stem()).string();
   try {
@@ -91,6 +159,7 @@ int main(int argc, char** argv) {
                                                 std::min(work_factor, 1e3));
     camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
+    PrintSummary(out_dir);
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
     std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
