@@ -149,15 +149,19 @@ Study Parse(const Node& root) {
     // (*_modulus_MPa, *_poisson) stay accepted as aliases (docs/studies.md, "Units"), one of each.
     const auto modulus = [&](const std::string& side, double fallback_MPa) {
       const std::string gpa = side + "_youngs_modulus_GPa", mpa = side + "_modulus_MPa";
+      const double value = k.Has(mpa)   ? k[mpa].Positive()
+                           : k.Has(gpa) ? k[gpa].Positive() * 1000.0
+                                        : fallback_MPa;
       if (k.Has(gpa) && k.Has(mpa)) k[mpa].FailWith("give either " + gpa + " or its old name " + mpa + ", not both");
-      if (k.Has(mpa)) return k[mpa].Positive();
-      return k.Has(gpa) ? k[gpa].Positive() * 1000.0 : fallback_MPa;
+      return value;
     };
     const auto poisson = [&](const std::string& side, double fallback) {
       const std::string now = side + "_poisson_ratio", old = side + "_poisson";
+      const double value = k.Has(old)   ? k[old].NumberIn(0.0, 0.499)
+                           : k.Has(now) ? k[now].NumberIn(0.0, 0.499)
+                                        : fallback;
       if (k.Has(now) && k.Has(old)) k[old].FailWith("give either " + now + " or its old name " + old + ", not both");
-      if (k.Has(old)) return k[old].NumberIn(0.0, 0.499);
-      return k.Has(now) ? k[now].NumberIn(0.0, 0.499) : fallback;
+      return value;
     };
     m.cam_modulus_MPa = modulus("cam", m.cam_modulus_MPa);
     m.roller_modulus_MPa = modulus("roller", m.roller_modulus_MPa);
