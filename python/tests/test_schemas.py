@@ -78,6 +78,20 @@ BAD_STUDIES = [
 ]
 
 
+class LightStages(unittest.TestCase):
+    def test_a_study_without_the_inputs_of_stages_it_skips_is_accepted_by_both(self):
+        s = helpers.example("lcr_ii.json")
+        del s["material"], s["load"], s["limits"]
+        s["analysis"] = {"angle_steps": 360, "evaluate": ["profile", "undercut"]}
+        self.assertEqual(errors(s, "lcr_analysis"), [])
+        self.assertEqual(camopt.run(s)["study"], "lcr_analysis")
+        s["analysis"]["evaluate"].append("stress")  # now the material is needed
+        self.assertNotEqual(errors(s, "lcr_analysis"), [])
+        with self.assertRaises(camopt.StudyError) as cm:
+            camopt.run(s)
+        self.assertIn(cm.exception.path, ("/material", "/load"))
+
+
 class BadStudies(unittest.TestCase):
     def test_rejected_by_the_schema_and_by_camopt(self):
         self.assertGreaterEqual(len(BAD_STUDIES), 10)
