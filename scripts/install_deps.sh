@@ -6,7 +6,9 @@ PACKAGES=(build-essential cmake pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libdxflib-dev libfftw3-dev libsundials-dev ccache
   # Issue 17: the Python module (pybind11), its tests and example (NumPy, matplotlib) and the
   # schema tests (jsonschema), all for Debian's /usr/bin/python3.
-  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-jsonschema)
+  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-jsonschema
+  # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
+  chromium python3-pil)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

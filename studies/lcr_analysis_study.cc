@@ -13,6 +13,7 @@
 #include "model/lcr/profile.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -63,7 +64,8 @@ Drawing CamDrawing(const lcr::Reducer<double>& r, Side s, double cutter_radius, 
   d.title = title;
   Drawing::Layer profile{"CAM_PROFILE", "#000000", {}, {}, true, 1.5};
   Drawing::Layer pitch{"PITCH_CURVE", "#888888", {}, {}, true, 0.7};
-  Drawing::Layer cutter{"CUTTER_PATH", "#d62728", {}, {}, true, 0.7};
+  // Dashed: with a cutter of the roller's size its path is the pitch curve, which stays visible.
+  Drawing::Layer cutter{"CUTTER_PATH", "#d62728", {}, {}, true, 0.7, "6,4"};
   profile.polylines.push_back(ToPolyline(lcr::SampleCurve(c, r.eccentricity, c.roller_radius, points)));
   pitch.polylines.push_back(ToPolyline(lcr::SampleCurve(c, r.eccentricity, 0.0, points)));
   cutter.polylines.push_back(
@@ -91,6 +93,7 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
     const bool is_loaded =
         loads && (s == Side::kInput ? loads->input.force : loads->output.force)[k] > 0;
     (is_loaded ? loaded : free_rollers).circles.push_back(circle);
+    d.labels.push_back({circle.x, circle.y, std::to_string(k + 1), is_loaded ? "#d62728" : "#1f77b4"});
   }
   axes.circles.push_back({0.0, 0.0, 0.6});
   axes.circles.push_back({centre.x(), centre.y(), 0.6});
@@ -305,15 +308,19 @@ void Write(const Study& st, const Result& res, Outputs& out) {
       t.Add("efficiency", series.efficiency);
     }
     out.Add("series.csv", ToCsv(t));
+    PlotOptions forces{"Largest roller force over the input revolution", "input angle [deg]",
+                       "largest roller force [N]"};
+    forces.guides = {{"roller load limit", st.roller_load_limit_N}};
     out.Add("forces.svg", SvgLinePlot({{"input cam (fixed turret)", deg, series.input.max_force_N},
                                        {"output cam (output turret)", deg, series.output.max_force_N}},
-                                      {"Largest roller force over the input revolution", "input angle [deg]",
-                                       "roller force [N]"}));
-    if (q.stress && !res.any_undercut)
-      out.Add("contact_stress.svg",
-              SvgLinePlot({{"input cam", deg, series.input.max_stress_MPa},
-                           {"output cam", deg, series.output.max_stress_MPa}},
-                          {"Largest Hertz contact stress", "input angle [deg]", "contact stress [MPa]"}));
+                                      forces));
+    if (q.stress && !res.any_undercut) {
+      PlotOptions stress{"Largest Hertz contact stress", "input angle [deg]", "contact stress [MPa]"};
+      stress.guides = {{"contact stress limit", st.contact_stress_limit_MPa}};
+      out.Add("contact_stress.svg", SvgLinePlot({{"input cam", deg, series.input.max_stress_MPa},
+                                                 {"output cam", deg, series.output.max_stress_MPa}},
+                                                stress));
+    }
     if (q.efficiency)
       out.Add("efficiency.svg", SvgLinePlot({{"efficiency", deg, series.efficiency}},
                                             {"Efficiency (paper's friction model)", "input angle [deg]",
@@ -360,6 +367,24 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_analysis", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("lcr_analysis", {
+    {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},
+    {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
+    {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
+    {"largest roller force, output cam", "/output_cam/max_roller_force_N", "N", "/output_cam/roller_load_limit_N"},
+    {"undercut margin, input cam", "/input_cam/undercut_margin_mm", "mm", "", 0.0, false},
+    {"undercut margin, output cam", "/output_cam/undercut_margin_mm", "mm", "", 0.0, false},
+    {"gap between rollers, input cam", "/input_cam/roller_gap_mm", "mm", "", 0.0, false},
+    {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "", 0.0, false},
+    {"outer diameter", "/outer_diameter_mm", "mm"},
+    {"speed ratio", "/speed_ratio", ""},
+    {"mean efficiency", "/efficiency/mean", ""},
+    {"largest input torque", "/input_torque_Nm/max", "N·m"},
+});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "studies/provenance.h"
+#include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/work_limits.h"
 
@@ -272,6 +273,7 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
       outputs.AddJson("result.json", stamped);
     }
   }
+  AddReport(kind, study, outputs);  // last: it shows every other file of the run
   return outputs;
 }
 
