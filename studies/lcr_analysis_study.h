@@ -12,6 +12,7 @@
 #include "model/common/material.h"
 #include "model/lcr/cycle.h"
 #include "studies/input.h"
+#include "studies/lcr_tolerance_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -33,6 +34,8 @@ struct Study {
   double contact_stress_limit_MPa = kInf;  ///< kInf: no limit given
   double roller_load_limit_N = kInf;
   double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
+  lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
+  std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
@@ -65,6 +68,8 @@ struct Result {
   /// Loads at input angle 0 (loaded rollers of the assembly drawings), when forces and the
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
+  /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
+  std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
 };
 
