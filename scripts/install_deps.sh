@@ -7,6 +7,8 @@ PACKAGES=(build-essential cmake pkg-config
   # Issue 17: the Python module (pybind11), its tests and example (NumPy, matplotlib) and the
   # schema tests (jsonschema), all for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-jsonschema
+  # Issue 19 (sweeps): Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
+  libboost-dev libopenmpi-dev openmpi-bin
   # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
   chromium python3-pil)
 SUDO=""
