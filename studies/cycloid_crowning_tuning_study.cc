@@ -501,11 +501,15 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     cs.push_back(e.stress_MPa);
     cm.push_back(e.edge_margin_um);
   }
-  table.Add("coefficient_um", cf);
+  // The coefficient in mm, as in the study file and result.json (the plots show µm).
+  std::vector<double> cf_mm, hf_mm;
+  for (const auto& e : r.curve) cf_mm.push_back(e.coefficient_mm);
+  for (const auto& e : r.history) hf_mm.push_back(e.coefficient_mm);
+  table.Add("coefficient_mm", cf_mm);
   table.Add("max_contact_stress_MPa", cs);
   table.Add("edge_margin_at_max_torque_um", cm);
   Table hist;
-  std::vector<double> hf, hl, hs, hm;
+  std::vector<double> hl, hs, hm;
   if (s.joint) {
     // One column per variable (its own unit), then the outputs.
     for (size_t j = 0; j < s.variables.size(); ++j) {
@@ -526,13 +530,12 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     hist.Add("with_gradient", grad);
   }
   for (const auto& e : r.history) {
-    hf.push_back(e.coefficient_mm * 1e3);
     hl.push_back(e.length_mm);
     hs.push_back(e.stress_MPa);
     hm.push_back(e.edge_margin_um);
   }
   if (!s.joint) {
-    hist.Add("coefficient_um", hf);
+    hist.Add("coefficient_mm", hf_mm);
     hist.Add("effective_length_mm", hl);
     hist.Add("max_contact_stress_MPa", hs);
     hist.Add("edge_margin_at_max_torque_um", hm);

@@ -134,14 +134,33 @@ Study Parse(const Node& root) {
   }
   if (root.Has("contact")) {
     const Node k = root["contact"];
-    k.CheckKnownFields({"cam_modulus_MPa", "cam_poisson", "roller_modulus_MPa", "roller_poisson",
-                         "exponent", "max_damping_Ns_per_mm", "penetration_depth_mm",
+    k.CheckKnownFields({"cam_youngs_modulus_GPa", "cam_poisson_ratio", "roller_youngs_modulus_GPa",
+                         "roller_poisson_ratio", "cam_modulus_MPa", "cam_poisson", "roller_modulus_MPa",
+                         "roller_poisson", "exponent", "max_damping_Ns_per_mm", "penetration_depth_mm",
                          "contact_arm_mm"});
     auto& m = s.dyn.contact;
-    m.cam_modulus_MPa = k.PositiveOr("cam_modulus_MPa", m.cam_modulus_MPa);
-    m.roller_modulus_MPa = k.PositiveOr("roller_modulus_MPa", m.roller_modulus_MPa);
-    if (k.Has("cam_poisson")) m.cam_poisson = k["cam_poisson"].NumberIn(0.0, 0.499);
-    if (k.Has("roller_poisson")) m.roller_poisson = k["roller_poisson"].NumberIn(0.0, 0.499);
+    // Young's moduli in GPa and "poisson_ratio" as in every other kind; the earlier names
+    // (*_modulus_MPa, *_poisson) stay accepted as aliases (docs/studies.md, "Units"), one of each.
+    const auto modulus = [&](const std::string& side, double fallback_MPa) {
+      const std::string gpa = side + "_youngs_modulus_GPa", mpa = side + "_modulus_MPa";
+      const double value = k.Has(mpa)   ? k[mpa].Positive()
+                           : k.Has(gpa) ? k[gpa].Positive() * 1000.0
+                                        : fallback_MPa;
+      if (k.Has(gpa) && k.Has(mpa)) k[mpa].FailWith("give either " + gpa + " or its old name " + mpa + ", not both");
+      return value;
+    };
+    const auto poisson = [&](const std::string& side, double fallback) {
+      const std::string now = side + "_poisson_ratio", old = side + "_poisson";
+      const double value = k.Has(old)   ? k[old].NumberIn(0.0, 0.499)
+                           : k.Has(now) ? k[now].NumberIn(0.0, 0.499)
+                                        : fallback;
+      if (k.Has(now) && k.Has(old)) k[old].FailWith("give either " + now + " or its old name " + old + ", not both");
+      return value;
+    };
+    m.cam_modulus_MPa = modulus("cam", m.cam_modulus_MPa);
+    m.roller_modulus_MPa = modulus("roller", m.roller_modulus_MPa);
+    m.cam_poisson = poisson("cam", m.cam_poisson);
+    m.roller_poisson = poisson("roller", m.roller_poisson);
     if (k.Has("exponent")) m.exponent = k["exponent"].NumberIn(1.0, 3.0);
     m.max_damping_Ns_per_mm = k.NonNegativeOr("max_damping_Ns_per_mm", m.max_damping_Ns_per_mm);
     m.penetration_depth_mm = k.PositiveOr("penetration_depth_mm", m.penetration_depth_mm);

@@ -65,11 +65,13 @@ std::string Describe(const nlohmann::json& value) {
 }
 
 void Node::Fail(const std::string& expected) const {
-  throw StudyError(file_ + ": " + path_ + ": expected " + expected + ", found " + Describe(*value_));
+  const std::string found = Describe(*value_);
+  throw StudyError(file_ + ": " + path_ + ": expected " + expected + ", found " + found, file_, path_,
+                   expected, found);
 }
 
 void Node::FailWith(const std::string& message) const {
-  throw StudyError(file_ + ": " + path_ + ": " + message);
+  throw StudyError(file_ + ": " + path_ + ": " + message, file_, path_, message, Describe(*value_));
 }
 
 void Node::CheckKnownFields(const std::set<std::string>& known) const {
@@ -91,7 +93,8 @@ Node Node::operator[](const std::string& key) const {
   if (!value_->is_object()) Fail("an object with field \"" + key + "\"");
   auto it = value_->find(key);
   if (it == value_->end())
-    throw StudyError(file_ + ": " + child + ": missing required field");
+    throw StudyError(file_ + ": " + child + ": missing required field", file_, child,
+                     "a required field", "nothing");
   return Node(&*it, file_, child);
 }
 

@@ -11,10 +11,23 @@
 
 namespace camopt::studies {
 
-/// A bad study file (exit code 2). what() is the whole one-line message.
+/// A bad study file (exit code 2). what() is the whole one-line message. Errors raised through a
+/// Node also carry its parts (for the Python module's camopt.StudyError): the file, the JSON path,
+/// what was expected and what was found (empty when the message is not of that form).
 class StudyError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  StudyError(const std::string& message, std::string file, std::string path, std::string expected,
+             std::string found)
+      : std::runtime_error(message), file_(std::move(file)), path_(std::move(path)),
+        expected_(std::move(expected)), found_(std::move(found)) {}
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  const std::string& expected() const { return expected_; }
+  const std::string& found() const { return found_; }
+
+ private:
+  std::string file_, path_, expected_, found_;
 };
 
 /// A view of one JSON value in a study file, with its path for error messages.

@@ -1,6 +1,8 @@
 // camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
-// [--convergence]`.
-// `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]` (studies/sweep.h).
+// [--convergence]`, `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
+// `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
+// (studies/sweep.h). A successful run prints a short summary of the headline numbers of
+// result.json on stdout.
 // Exit codes, by cause:
 //   0   success
 //   2   something the user can fix: the study file, the arguments, the output folder (with the
@@ -13,6 +15,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <new>
 #include <thread>
@@ -22,8 +25,11 @@
 
 #include <CLI/CLI.hpp>
 #include <glog/logging.h>
+#include <nlohmann/json.hpp>
 
 #include "studies/convergence.h"
+#include "studies/provenance.h"
+#include "studies/schemas.h"
 #include "studies/study.h"
 #include "studies/sweep.h"
 
@@ -48,12 +54,56 @@ void StartSignalThread() {
   }).detach();
 }
 
+// The headline numbers of result.json, one "key: value" line each (at most 24): first the
+// top-level numbers, flags and short strings, then from the objects one level down the extremes
+// and verdicts (max…, min…, mean…, …_ok, feasible, converged).
+void PrintSummary(const std::string& out_dir) {
+  std::ifstream in(std::filesystem::path(out_dir) / "result.json");
+  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+  if (!r.is_object()) return;
+  std::cout << "camopt: " << r.value("study", std::string("study"));
+  if (r.contains("name") && r["name"].is_string()) std::cout << " \"" << r["name"].get<std::string>() << "\"";
+  std::cout << "\n";
+  constexpr int kMaxLines = 24;
+  int lines = 0;
+  bool cut = false;
+  const auto show = [&](const std::string& key, const nlohmann::json& v) {
+    if (lines >= kMaxLines) {
+      cut = true;
+      return;
+    }
+    std::cout << "  " << key << ": " << v.dump() << "\n";
+    ++lines;
+  };
+  const auto scalar = [](const nlohmann::json& v) {
+    return v.is_number() || v.is_boolean() || (v.is_string() && v.get<std::string>().size() <= 40);
+  };
+  const auto headline = [](const std::string& k) {
+    const auto ends = [&](const std::string& s) {
+      return k.size() >= s.size() && k.compare(k.size() - s.size(), s.size(), s) == 0;
+    };
+    return k.rfind("max", 0) == 0 || k.rfind("min", 0) == 0 || k.rfind("mean", 0) == 0 || ends("_ok") ||
+           k == "feasible" || k == "converged";
+  };
+  for (auto it = r.begin(); it != r.end(); ++it) {
+    const std::string& key = it.key();
+    if (key == "study" || key == "name" || key == "camopt_version" || key == "study_sha256") continue;
+    if (scalar(*it)) show(key, *it);
+  }
+  for (auto it = r.begin(); it != r.end(); ++it)
+    if (it->is_object())
+      for (auto jt = it->begin(); jt != it->end(); ++jt)
+        if (scalar(*jt) && !jt->is_string() && headline(jt.key())) show(it.key() + "." + jt.key(), *jt);
+  if (cut) std::cout << "  ... (the rest in result.json)\n";
+  if (r.contains("warnings") && r["warnings"].is_array() && !r["warnings"].empty())
+    std::cout << "  warnings: " << r["warnings"].size() << " (see result.json)\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   StartSignalThread();
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
-  app.require_subcommand(1);
   std::string study_file, out_dir;
   bool quiet = false, convergence = false;
   double work_factor = 1.0;
@@ -79,6 +129,11 @@ int main(int argc, char** argv) {
   sweep_cmd->add_flag("--case-outputs", sweep.case_outputs, "Keep every case's result folder");
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress lines on stderr");
   sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(CLI::Range(1e-6, 1e6));
+  std::string schema_kind;
+  CLI::App* schema = app.add_subcommand("schema", "Print the JSON Schema of a study kind");
+  schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
+  app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
+  app.require_subcommand(0, 1);
 
   try {
     app.parse(argc, argv);
@@ -101,6 +156,19 @@ int main(int argc, char** argv) {
     for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
     return 0;
   }
+  if (schema->parsed()) {
+    try {
+      std::cout << camopt::studies::StudySchema(schema_kind);
+      return 0;
+    } catch (const camopt::studies::StudyError& e) {
+      std::cerr << "camopt: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (!run->parsed()) {
+    std::cerr << app.help();
+    return 2;
+  }
   if (out_dir.empty())
     out_dir = (std::filesystem::path("results") / std::filesystem::path(study_file).stem()).string();
   try {
@@ -115,6 +183,7 @@ int main(int argc, char** argv) {
     else
       camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
+    if (!convergence) PrintSummary(out_dir);  // --convergence prints its own table
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
     std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()

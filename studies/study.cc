@@ -13,7 +13,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "studies/provenance.h"
 #include "studies/report.h"
+#include "studies/schemas.h"
 #include "studies/work_limits.h"
 
 namespace camopt::studies {
@@ -245,6 +247,9 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
     kind_node.Fail("a known study kind (" + known + ")");
   }
   CheckWorkLimits(study, ctx.study_file, ctx.max_work_factor);
+  const std::vector<std::string> implausible = PlausibilityWarnings(study);
+  if (!ctx.quiet)
+    for (const auto& w : implausible) std::cerr << "camopt: warning: " << ctx.study_file << ": " << w << "\n";
   Outputs outputs;
   try {
     it->second(root, ctx, outputs);
@@ -265,6 +270,14 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
         outputs.MarkIncomplete(kind + ": not converged" + (why.empty() ? "" : ": " + why));
       if (r.contains("feasible") && r["feasible"] == false)
         outputs.MarkIncomplete(kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
+      // Provenance and the warnings, the same three fields for every kind (issue 17).
+      nlohmann::json stamped = r;
+      stamped["camopt_version"] = CamoptVersion();
+      stamped["study_sha256"] = ctx.study_sha256.empty() ? Sha256Hex(study.dump()) : ctx.study_sha256;
+      nlohmann::json& warnings = stamped["warnings"];
+      if (!warnings.is_array()) warnings = nlohmann::json::array();
+      for (const auto& w : implausible) warnings.push_back(w);
+      outputs.AddJson("result.json", stamped);
     }
   }
   AddReport(kind, study, outputs);  // last: it shows every other file of the run
@@ -274,11 +287,23 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
 void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx) {
   RunContext c = ctx;
   c.study_file = file;
-  const nlohmann::json study = LoadStudyFile(file);
+  const InputLimits& limits = CurrentInputLimits();
+  const std::string text = ReadFileCapped(file, limits.max_file_bytes, "file");
+  const nlohmann::json study = ParseStudyText(text, file, limits.max_depth);
+  c.study_sha256 = Sha256Hex(text);
   OutputFolder folder(out_dir);  // a bad --out is reported before the work
   const Outputs outputs = RunStudy(study, c);
   folder.Commit(outputs);
   if (!outputs.incomplete().empty()) throw StudyIncomplete(outputs.incomplete());
+}
+
+const std::string& StudySchema(const std::string& kind) {
+  const auto& schemas = EmbeddedSchemas();
+  const auto it = schemas.find(kind);
+  if (it != schemas.end()) return it->second;
+  std::string known;
+  for (const auto& [k, text] : schemas) known += (known.empty() ? "" : ", ") + k;
+  throw StudyError("schema " + kind + ": expected a known study kind (" + known + "), found " + kind);
 }
 
 double Finite(double value, const std::string& what) {

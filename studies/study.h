@@ -40,6 +40,9 @@ struct RunContext {
   bool quiet = false;
   /// Multiplies every work cap of studies/work_limits.h (--max-work-factor).
   double max_work_factor = 1.0;
+  /// SHA-256 of the study as read (RunStudyFile: the file's bytes); empty: RunStudy takes that of
+  /// the study's compact JSON text (nlohmann::json::dump()), e.g. for a study given as a dict.
+  std::string study_sha256;
 };
 
 /// Files a study produces, kept in memory until the whole run succeeded, then written together:
@@ -147,7 +150,9 @@ const FidelityOf* FindFidelity(const std::string& kind);
 /// writing an incomplete result (exit 3), and std::exception for other failures.
 void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
 
-/// Runs an already parsed study, returning its outputs without writing them.
+/// Runs an already parsed study, returning its outputs without writing them. result.json gets
+/// "camopt_version", "study_sha256" and "warnings" (the kind's own and PlausibilityWarnings of
+/// studies/provenance.h, also printed on stderr unless ctx.quiet).
 Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx);
 
 /// A result number that came out NaN or infinite. The inputs passed their checks, so it means

@@ -112,6 +112,18 @@ inline void ExpectStudyRejected(const nlohmann::json& study, const std::string& 
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing is written for a bad study";
 }
 
+/// A result.json without what every run adds to the kind's ToJson (studies/study.cc, issue 17):
+/// "camopt_version", "study_sha256", and "warnings" when it is empty. Tests that check that the
+/// CLI writes what Parse → Run → ToJson gives compare through it; the added fields have their own
+/// tests (tests/provenance_test.cc).
+inline nlohmann::json WithoutRunStamp(nlohmann::json result) {
+  result.erase("camopt_version");
+  result.erase("study_sha256");
+  if (result.contains("warnings") && result["warnings"].is_array() && result["warnings"].empty())
+    result.erase("warnings");
+  return result;
+}
+
 /// A study from studies/examples/, parsed.
 inline nlohmann::json Example(const std::string& name) {
   return nlohmann::json::parse(ReadFile(SourcePath("studies/examples/" + name)));

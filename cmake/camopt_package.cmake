@@ -1,0 +1,58 @@
+# camopt as a CMake package (issue 17): the library camopt::camopt, the executable, the headers and
+# the exported targets, so that an installed camopt is used with
+#   find_package(camopt 0.1 REQUIRED)
+#   target_link_libraries(app PRIVATE camopt::camopt)
+# The library is shared: every object of camopt_core is in it, so the self-registering study kinds
+# are always there (a static archive would drop them unless linked whole).
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+add_library(camopt_lib SHARED)
+add_library(camopt::camopt ALIAS camopt_lib)
+set_target_properties(camopt_lib PROPERTIES OUTPUT_NAME camopt EXPORT_NAME camopt
+                      VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+# The objects and private dependencies come from camopt_core; what a user of the headers needs is
+# public: the include root (headers are included as "model/…", "studies/…") and the libraries the
+# headers include (Eigen, Ceres' Jet, nlohmann::json).
+target_link_libraries(camopt_lib PRIVATE camopt_core)
+target_include_directories(camopt_lib PUBLIC
+  $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/camopt>)
+target_link_libraries(camopt_lib PUBLIC Eigen3::Eigen Ceres::ceres nlohmann_json::nlohmann_json)
+target_compile_features(camopt_lib PUBLIC cxx_std_20)
+set_target_properties(camopt_lib PROPERTIES INSTALL_RPATH "$ORIGIN")
+set_target_properties(camopt PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
+
+install(TARGETS camopt RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS camopt_lib EXPORT camoptTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+foreach(room model objectives optimizers studies)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${room} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/camopt
+          FILES_MATCHING PATTERN "*.h")
+endforeach()
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/schema DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt
+        FILES_MATCHING PATTERN "*.json")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt
+        FILES_MATCHING PATTERN "*.json")
+
+set(CAMOPT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/camopt)
+install(EXPORT camoptTargets NAMESPACE camopt:: DESTINATION ${CAMOPT_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/camoptConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/camoptConfig.cmake INSTALL_DESTINATION ${CAMOPT_CMAKE_DIR}
+  PATH_VARS CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_BINDIR CMAKE_INSTALL_DATADIR)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/camoptConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/camoptConfig.cmake ${PROJECT_BINARY_DIR}/camoptConfigVersion.cmake
+        DESTINATION ${CAMOPT_CMAKE_DIR})
+
+if(CAMOPT_BUILD_TESTS AND NOT CAMOPT_SANITIZE AND NOT CAMOPT_FUZZ)
+  # (not in the sanitizer build: an unsanitized consumer cannot load the sanitized library)
+  # Installs this build into build/consumer-install, then configures and builds
+  # examples/consumer against it and runs it (scripts/test_consumer.sh).
+  add_test(NAME ConsumerProject.BuildsAndRunsAgainstTheInstallTree
+           COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/test_consumer.sh ${PROJECT_BINARY_DIR}
+                   ${PROJECT_SOURCE_DIR})
+  set_tests_properties(ConsumerProject.BuildsAndRunsAgainstTheInstallTree PROPERTIES TIMEOUT 600)
+endif()

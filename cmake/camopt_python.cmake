@@ -1,0 +1,42 @@
+# The Python module `camopt` (pybind11, python/camopt_module.cc), built for Debian's Python
+# /usr/bin/python3 (which has python3-numpy, -matplotlib and -jsonschema from Debian) — not for a
+# python that may come first on PATH (e.g. pyenv's). Change with -DCAMOPT_PYTHON=/path/to/python3.
+# The module lands in build/python/ (PYTHONPATH=build/python); its tests and the example script
+# run through ctest with that python.
+set(CAMOPT_PYTHON_DEFAULT ON)
+if(CAMOPT_SANITIZE OR CAMOPT_FUZZ)
+  set(CAMOPT_PYTHON_DEFAULT OFF)  # a sanitized module cannot be loaded into an unsanitized python
+endif()
+option(CAMOPT_BUILD_PYTHON "Build the Python module (needs pybind11-dev, python3-dev)" ${CAMOPT_PYTHON_DEFAULT})
+if(NOT CAMOPT_BUILD_PYTHON)
+  return()
+endif()
+set(CAMOPT_PYTHON /usr/bin/python3 CACHE FILEPATH "The Python the module is built for and tested with")
+set(Python_EXECUTABLE ${CAMOPT_PYTHON})
+set(PYBIND11_FINDPYTHON ON)
+find_package(Python 3.9 REQUIRED COMPONENTS Interpreter Development.Module)
+find_package(pybind11 2.6 CONFIG)
+if(NOT pybind11_FOUND)
+  message(FATAL_ERROR "The Python module needs pybind11 (Debian pybind11-dev; scripts/install_deps.sh);"
+                      " or configure with -DCAMOPT_BUILD_PYTHON=OFF")
+endif()
+
+pybind11_add_module(camopt_python MODULE ${PROJECT_SOURCE_DIR}/python/camopt_module.cc)
+set_target_properties(camopt_python PROPERTIES OUTPUT_NAME camopt
+                      LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/python)
+target_compile_options(camopt_python PRIVATE ${CAMOPT_WARNINGS})
+target_link_libraries(camopt_python PRIVATE camopt_lib)
+set_target_properties(camopt_python PROPERTIES INSTALL_RPATH "$ORIGIN/../..")
+install(TARGETS camopt_python LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/python3/dist-packages)
+
+if(CAMOPT_BUILD_TESTS)
+  set(CAMOPT_PY_ENV "PYTHONPATH=${PROJECT_BINARY_DIR}/python" "MPLBACKEND=Agg"
+      "CAMOPT_SOURCE_DIR=${PROJECT_SOURCE_DIR}" "CAMOPT_BINARY=$<TARGET_FILE:camopt>"
+      "CAMOPT_TEST_TMP=${PROJECT_BINARY_DIR}/python-test-tmp")
+  foreach(t module schemas example)
+    add_test(NAME Python.${t}
+             COMMAND ${CAMOPT_PYTHON} -m unittest -v test_${t}
+             WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
+    set_tests_properties(Python.${t} PROPERTIES ENVIRONMENT "${CAMOPT_PY_ENV}" TIMEOUT 600)
+  endforeach()
+endif()

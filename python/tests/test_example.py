@@ -1,0 +1,27 @@
+"""examples/python/sweep_plot.py runs (Agg backend) and writes a plot that is not blank."""
+import os
+import subprocess
+import sys
+import unittest
+
+import matplotlib.image
+
+import helpers
+
+
+class Example(unittest.TestCase):
+    def test_the_sweep_script_writes_a_plot(self):
+        out = helpers.temp_dir("py-example") / "sweep.png"
+        env = dict(os.environ, MPLBACKEND="Agg")
+        r = subprocess.run([sys.executable, str(helpers.SOURCE / "examples" / "python" / "sweep_plot.py"), str(out)],
+                           capture_output=True, text=True, env=env)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("plot written to", r.stdout)
+        self.assertEqual(r.stdout.count("MPa"), 3 * 6, r.stdout)
+        image = matplotlib.image.imread(str(out))
+        self.assertGreater(image.shape[0], 100)
+        self.assertGreater(float(image.std()), 0.01)  # not a blank page
+
+
+if __name__ == "__main__":
+    unittest.main()
