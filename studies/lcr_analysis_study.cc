@@ -5,6 +5,7 @@
 #include "studies/lcr_analysis_study.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <set>
@@ -98,13 +99,28 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
   return d;
 }
 
+// The finite-length contact model of each cam (studies/lcr_contact_input.h, model/lcr/contact3d_cycle.h).
+void RunContact3D(const Study& st, Result& res) {
+  for (Side s : {Side::kInput, Side::kOutput}) {
+    const auto& crowning = s == Side::kInput ? st.contact.input_crowning : st.contact.output_crowning;
+    lcr::Contact3DCycleSide c = lcr::AnalyzeCycleContact3D(st.reducer, s, res.series, st.material.composite_modulus_MPa(),
+                                                          crowning, st.contact.options);
+    CamResult& j = s == Side::kInput ? res.input_cam : res.output_cam;
+    j.max_contact_stress_MPa = c.max_contact_stress_MPa;
+    if (!c.converged)
+      res.notes.push_back(std::string(s == Side::kInput ? "input" : "output") +
+                          " cam: a contact solve did not converge (see docs/lcr.md)");
+    (s == Side::kInput ? res.contact_input : res.contact_output) = std::move(c);
+  }
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis"});
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis", "contact"});
   Study st;
   st.name = root.StringOr("name", "");
-  st.reducer = ParseReducer(root["reducer"]);
+  st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true);
   root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   st.material = ParseMaterial(root["material"]);
   const Node load_node = root["load"];
@@ -127,6 +143,7 @@ Study Parse(const Node& root) {
   const Node reducer_node = root["reducer"];
   st.cutter_radius_input_mm = ParseCutterDiameter(reducer_node["input"], 2 * st.reducer.input.roller_radius) / 2;
   st.cutter_radius_output_mm = ParseCutterDiameter(reducer_node["output"], 2 * st.reducer.output.roller_radius) / 2;
+  st.contact = ParseLcrContact(root, st.reducer);
   return st;
 }
 
@@ -201,6 +218,7 @@ Result Run(const Study& st, const RunContext& ctx) {
                                 : "zero output torque: efficiency is its limit as the torque tends to 0 "
                                   "(the model is linear in the torque)");
     }
+    if (q.stress && st.contact.given && !res.any_undercut) RunContact3D(st, res);
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
   return res;
@@ -251,6 +269,21 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
         cj["max_contact_stress_MPa"] = nullptr;  // a loaded roller sits on an undercut point
       }
       cj["contact_length_mm"] = c.contact_length_mm;
+      const auto& c3 = s == Side::kInput ? res.contact_input : res.contact_output;
+      if (c3) {
+        const lcr::ContactModel m = st.contact.options.model;
+        cj["contact_model"] = ContactModelName(m);
+        cj["edge_loaded"] = c3->edge_loaded;
+        if (c3->worst_angle >= 0) cj["worst_input_angle_deg"] = res.series.theta_rad[c3->worst_angle] * 180 / kPi;
+        if (m != lcr::ContactModel::kLine) {
+          cj["slice_width_mm"] = c3->slice_width_mm;
+          cj["interpolation_error_MPa"] = c3->interpolation_error_MPa;
+        }
+        if (m == lcr::ContactModel::kHalfSpace) {
+          cj["cell_size_mm"] = {c3->cell_dx_mm, c3->cell_dy_mm};
+          cj["slices_max_contact_stress_MPa"] = c3->slices_peak_at_worst_MPa;
+        }
+      }
     }
   }
   if (q.forces) {
@@ -267,9 +300,39 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
       j["friction_coefficient"] = st.load.friction_coefficient;
     }
   }
+  if (st.contact.given) {
+    j["contact"] = {{"model", ContactModelName(st.contact.options.model)},
+                    {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3}};
+    if (st.contact.options.model != lcr::ContactModel::kLine) j["contact"]["slices"] = st.contact.options.slices;
+    if (st.contact.options.model == lcr::ContactModel::kHalfSpace)
+      j["contact"]["grid"] = {st.contact.options.grid_nx, st.contact.options.grid_ny};
+  }
   j["notes"] = res.notes;
   return j;
 }
+
+namespace {
+// Pressure along the roller at each cam's worst contact: roller_pressure.csv and .svg.
+void WriteRollerPressure(const Study& st, const Result& res, Outputs& out) {
+  std::vector<Series> curves;
+  Table t;
+  for (const auto& [name, c3] : {std::pair{"input", &*res.contact_input}, std::pair{"output", &*res.contact_output}}) {
+    if (c3->worst_angle < 0) continue;
+    const double angle = res.series.theta_rad[c3->worst_angle] * 180 / kPi;
+    t.Add(std::string(name) + "_y_mm", c3->worst_y_mm);
+    t.Add(std::string(name) + "_pressure_MPa", c3->worst_pressure_MPa);
+    char label[160];
+    std::snprintf(label, sizeof label, "%s cam, roller %d at input angle %.2f deg", name, c3->worst_roller, angle);
+    curves.push_back({label, c3->worst_y_mm, c3->worst_pressure_MPa});
+  }
+  if (curves.empty()) return;
+  out.Add("roller_pressure.csv", ToCsv(t));
+  out.Add("roller_pressure.svg",
+          SvgLinePlot(curves, {std::string("Contact pressure along the roller at the worst angle (") +
+                                   ContactModelName(st.contact.options.model) + " model)",
+                               "position along the roller from its mid-length [mm]", "contact pressure [MPa]"}));
+}
+}  // namespace
 
 void Write(const Study& st, const Result& res, Outputs& out) {
   const lcr::Reducer<double>& r = st.reducer;
@@ -285,9 +348,16 @@ void Write(const Study& st, const Result& res, Outputs& out) {
     t.Add("output_actuating_rollers", as_double(series.output.actuating));
     t.Add("input_max_roller_force_N", series.input.max_force_N);
     t.Add("output_max_roller_force_N", series.output.max_force_N);
-    if (q.stress) {
+    if (q.stress && !res.contact_input) {
       t.Add("input_max_contact_stress_MPa", series.input.max_stress_MPa);
       t.Add("output_max_contact_stress_MPa", series.output.max_stress_MPa);
+    }
+    if (res.contact_input && res.contact_output) {
+      for (const auto& [name, c3] : {std::pair{"input", &*res.contact_input}, std::pair{"output", &*res.contact_output}}) {
+        t.Add(std::string(name) + "_max_contact_stress_MPa", c3->max_stress_MPa);
+        t.Add(std::string(name) + "_stress_roller_force_N", c3->stress_force_N);
+        t.Add(std::string(name) + "_stress_roller_radius_mm", c3->stress_radius_mm);
+      }
     }
     auto nm = [](std::vector<double> v) { for (double& x : v) x /= 1000; return v; };
     t.Add("fixed_turret_torque_Nm", nm(series.input.turret_torque_Nmm));
@@ -303,10 +373,11 @@ void Write(const Study& st, const Result& res, Outputs& out) {
                                        {"output cam (output turret)", deg, series.output.max_force_N}},
                                       {"Largest roller force over the input revolution", "input angle [deg]",
                                        "roller force [N]"}));
+    if (res.contact_input && res.contact_output) WriteRollerPressure(st, res, out);
     if (q.stress && !res.any_undercut)
       out.Add("contact_stress.svg",
-              SvgLinePlot({{"input cam", deg, series.input.max_stress_MPa},
-                           {"output cam", deg, series.output.max_stress_MPa}},
+              SvgLinePlot({{"input cam", deg, res.contact_input ? res.contact_input->max_stress_MPa : series.input.max_stress_MPa},
+                           {"output cam", deg, res.contact_output ? res.contact_output->max_stress_MPa : series.output.max_stress_MPa}},
                           {"Largest Hertz contact stress", "input angle [deg]", "contact stress [MPa]"}));
     if (q.efficiency)
       out.Add("efficiency.svg", SvgLinePlot({{"efficiency", deg, series.efficiency}},

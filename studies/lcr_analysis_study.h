@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/material.h"
+#include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
+#include "studies/lcr_contact_input.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -33,6 +35,7 @@ struct Study {
   double contact_stress_limit_MPa = kInf;  ///< kInf: no limit given
   double roller_load_limit_N = kInf;
   double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
+  LcrContactInput contact;  ///< "contact" and the rollers' "crowning" (issue 12)
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
@@ -66,6 +69,8 @@ struct Result {
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
   std::vector<std::string> notes;
+  /// The finite-length contact per cam, when the study has a "contact" object and stress is evaluated.
+  std::optional<lcr::Contact3DCycleSide> contact_input, contact_output;
 };
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.

@@ -14,8 +14,9 @@
 // t = sin φ (split at b t = |η|), or by its series in (b/η)² where b/|η| < 0.15 (error < 1e-7 of C).
 // Contact conditions: u_i = δ − h_i where q_i > 0, u_i ≥ δ − h_i where q_i = 0, q ≥ 0,
 // w Σ q_j = F (h the gap along y: crowning + misalignment). Solved in double by an active-set
-// method on the (dense, N × N) system with the half-widths updated to the loads until the loads
-// stop changing; the result is checked against the equations. The half-widths use q_j + 1e-6 F/l
+// method on the (dense, N × N) system with the half-widths updated to the loads, then Newton steps
+// on the contact set (exact Jacobian) until the loads stop changing; the result is checked against
+// the equations. The half-widths use q_j + 1e-6 F/l
 // so that C stays finite for an unloaded slice (its effect on the pressures is below 1e-6).
 //
 // Derivatives (T = ceres::Jet): one Newton step of the compatibility equations at the solution
@@ -229,11 +230,14 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
       std::fill(q.begin(), q.end(), 0.0);
       for (int r = 0; r < m; ++r) q[a[r]] = x(r);
       delta = x(m);
-      // Drop the most negative load, else add the most penetrating free slice.
+      // Drop negative loads (all of them in the first passes, then the most negative only, which
+      // cannot cycle), else add the most penetrating free slice.
       int worst = -1;
       double worst_q = 0;
-      for (int r = 0; r < m; ++r)
+      for (int r = 0; r < m; ++r) {
         if (x(r) < worst_q) worst_q = x(r), worst = a[r];
+        if (pass < 4 && x(r) < 0 && m > 1) active[a[r]] = 0;
+      }
       if (worst >= 0) {
         active[worst] = 0;
         continue;
@@ -254,11 +258,58 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
     }
     return false;
   };
+  // Newton step on the current contact set with the exact Jacobian (half-widths included);
+  // false when it leaves the set's conditions (then the active-set solve takes over).
+  const auto jacobian = [&](const std::vector<int>& a) {
+    const int m = int(a.size());
+    Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(m + 1, m + 1);
+    using J1 = ceres::Jet<double, 1>;
+    for (int s = 0; s < m; ++s) {
+      const int j = a[s];
+      const double dbdq = 2.0 * rp / (kPi * e_star * b[j]);
+      for (int r = 0; r < m; ++r) {
+        const J1 cj = Influence(J1(y[a[r]] - y[j]), J1(w), J1(b[j], 0), e_star);
+        jac(r, s) = cj.a + q[j] * cj.v[0] * dbdq;
+      }
+      jac(m, s) = w;
+    }
+    for (int r = 0; r < m; ++r) jac(r, m) = -1.0;
+    return jac;
+  };
+  const auto newton = [&] {
+    std::vector<int> a;
+    for (int i = 0; i < n; ++i)
+      if (active[i]) a.push_back(i);
+    const int m = int(a.size());
+    Eigen::VectorXd res(m + 1);
+    for (int r = 0; r < m; ++r) {
+      double u = 0;
+      for (int s = 0; s < m; ++s) u += c(a[r], a[s]) * q[a[s]];
+      res(r) = u - delta + hd[a[r]];
+    }
+    double total = 0;
+    for (int s = 0; s < m; ++s) total += q[a[s]];
+    res(m) = w * total - f;
+    const Eigen::VectorXd dx = jacobian(a).partialPivLu().solve(-res);
+    for (int s = 0; s < m; ++s)
+      if (!(q[a[s]] + dx(s) > 0)) return false;
+    for (int s = 0; s < m; ++s) q[a[s]] += dx(s);
+    delta += dx(m);
+    double scale = 0;
+    for (int i = 0; i < n; ++i) scale = std::max(scale, std::abs(delta - hd[i]));
+    for (int i = 0; i < n; ++i) {  // a free slice that the bodies overlap: the set must change
+      if (active[i]) continue;
+      double u = 0;
+      for (int j = 0; j < n; ++j) u += c(i, j) * q[j];
+      if (delta - hd[i] - u > 1e-12 * scale) return false;
+    }
+    return true;
+  };
   bool set_ok = true;
   for (out.iterations = 1; out.iterations <= options.max_iterations; ++out.iterations) {
     const std::vector<double> previous = q;
     fill();
-    set_ok = solve_active_set();
+    set_ok = out.iterations > 2 && newton() ? true : solve_active_set();
     double change = 0, top = 0;
     for (int j = 0; j < n; ++j) change = std::max(change, std::abs(q[j] - previous[j])), top = std::max(top, q[j]);
     if (set_ok && change <= options.tolerance * top) {
@@ -288,19 +339,7 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
   std::vector<T> qt(n, T(0.0));
   T delta_t(delta);
   if constexpr (!std::is_same_v<T, double>) {
-    Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(m + 1, m + 1);
-    using J1 = ceres::Jet<double, 1>;
-    for (int s = 0; s < m; ++s) {
-      const int j = a[s];
-      const double dbdq = 2.0 * rp / (kPi * e_star * b[j]);
-      for (int r = 0; r < m; ++r) {
-        const J1 cj = Influence(J1(y[a[r]] - y[j]), J1(w), J1(b[j], 0), e_star);
-        jac(r, s) = cj.a + q[j] * cj.v[0] * dbdq;
-      }
-      jac(m, s) = w;
-    }
-    for (int r = 0; r < m; ++r) jac(r, m) = -1.0;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jac);
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian(a));
     std::vector<T> res(m + 1, T(0.0));
     std::vector<T> bt(n);
     for (int s = 0; s < m; ++s) bt[a[s]] = HalfWidth(T(q[a[s]]), T(q_floor), r_eff, e_star);
