@@ -3,6 +3,7 @@
 // The numbers behind docs/validation.md "Crowned rollers and 3D contact (LCR)".
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <type_traits>
@@ -178,6 +179,61 @@ TEST(RollerSlices, GradientsMatchCentralDifferences) {
     return std::vector<T>{s.peak_pressure, s.approach * T(1000.0), s.line_load_N_per_mm[5]};
   };
   testing::ExpectJacobianMatchesCentralDifferences<5>(fn, {8000.0, 5.0, 20.0, 0.002, 0.0003}, 1e-5, 1e-6);
+}
+
+}  // namespace
+}  // namespace camopt::contact
+
+namespace camopt::contact {
+namespace {
+
+// Convergence of the two fidelities on LCR II's worst output contact at 80 N·m (F = 835 N,
+// R' = 2.02 mm, l = 8 mm, the example's crown f = 0.01 mm, Le = 10.5 mm): the numbers behind
+// docs/validation.md "Crowned rollers and 3D contact" (times printed, never asserted).
+TEST(RollerContactConvergence, SliceCountAndGridForStraightAndCrownedRollers) {
+  const double f = 835.0, rp = 2.02, l = 8.0;
+  HalfSpaceSolver solver;
+  struct Case {
+    const char* name;
+    double coefficient, tilt;
+  };
+  for (const Case c : {Case{"straight", 0.0, 0.0}, Case{"crowned", 0.01, 0.0}, Case{"crowned 0.5 mrad", 0.01, 5e-4}}) {
+    const auto gap = [&](const auto& y) {
+      using T = std::decay_t<decltype(y)>;
+      return Gap<T>(CrowningType::kLogarithmic, T(0.0), T(c.coefficient), T(10.5), T(c.tilt), y);
+    };
+    std::vector<double> slice_peaks, grid_peaks;
+    for (int n : {10, 20, 40, 80, 160}) {
+      SliceOptions o;
+      o.slices = n;
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto s = SolveRollerSlices<double>(f, rp, l, kEStar, gap, o);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      ASSERT_TRUE(s.converged);
+      std::printf("%s slices %3d (w %.3f mm): peak %.1f MPa edge %d  %.2f ms\n", c.name, n, Value(s.slice_width),
+                  s.peak_pressure, s.edge_loaded, ms);
+      slice_peaks.push_back(s.peak_pressure);
+    }
+    for (auto [nx, ny] : {std::pair{24, 64}, std::pair{32, 128}, std::pair{48, 256}, std::pair{64, 512}}) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto h = SolveRollerHalfSpace(f, rp, l, kEStar, gap, nx, ny, 0, solver);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      ASSERT_TRUE(h.converged) << h.message;
+      std::printf("%s half_space %dx%d (dx %.4f dy %.4f mm): peak %.1f MPa edge %d  %.1f ms\n", c.name, nx, ny,
+                  h.dx_mm, h.dy_mm, h.peak_pressure_MPa, h.edge_loaded, ms);
+      grid_peaks.push_back(h.peak_pressure_MPa);
+    }
+    if (c.coefficient == 0) {  // edge peaks grow as the resolution refines (reported with w, dy)
+      for (size_t i = 1; i < slice_peaks.size(); ++i) EXPECT_GT(slice_peaks[i], slice_peaks[i - 1]);
+      for (size_t i = 1; i < grid_peaks.size(); ++i) EXPECT_GT(grid_peaks[i], grid_peaks[i - 1]);
+    } else {  // converged, and the slices model (40 slices) within 3% of the finest grid
+      const double fine = grid_peaks.back();
+      EXPECT_LT(std::abs(grid_peaks[2] / fine - 1), 0.005);
+      EXPECT_LT(std::abs(slice_peaks[3] / slice_peaks[4] - 1), 0.005);
+      EXPECT_LT(std::abs(slice_peaks[2] / fine - 1), 0.03);
+      std::printf("%s: slices(40) vs half_space(64x512): %+.2f%%\n", c.name, 100 * (slice_peaks[2] / fine - 1));
+    }
+  }
 }
 
 }  // namespace
