@@ -22,7 +22,7 @@ lcr::RollerCrowning<double> LogCrown(double f, double le) {
 
 LcrCrowningCheck CheckLcrCrowning(const LcrCrowningTuningSpec& spec, lcr::Side side,
                                   const lcr::RollerCrowning<double>& crowning, lcr::ContactModel model,
-                                  std::vector<lcr::Contact3DCycleSide>* details) {
+                                  std::vector<lcr::Contact3DCycleSide>* details, int grid_nx, int grid_ny) {
   const double e_star = spec.material.composite_modulus_MPa();
   lcr::LoadCase over = spec.design_load;
   over.output_torque_Nmm = spec.overload_torque_Nmm;
@@ -35,6 +35,8 @@ LcrCrowningCheck CheckLcrCrowning(const LcrCrowningTuningSpec& spec, lcr::Side s
     o.model = model;
     o.slices = spec.slices;
     o.misalignment_rad = gamma;
+    o.grid_nx = grid_nx;
+    o.grid_ny = grid_ny;
     const auto d = lcr::AnalyzeCycleContact3D(spec.reducer, side, design, e_star, crowning, o);
     const auto v = lcr::AnalyzeCycleContact3D(spec.reducer, side, overload, e_star, crowning, o);
     out.design_MPa.push_back(d.max_contact_stress_MPa);
@@ -59,8 +61,10 @@ std::array<LcrCrowningSideResult, 2> TuneLcrCrowning(const LcrCrowningTuningSpec
       throw std::invalid_argument("crowning tuning: effective length must exceed the roller length");
     LcrCrowningSideResult& res = out[k];
     // The quantity minimised: the worst design pressure, +inf where the overload reaches an end.
+    const double total = 2.0 * (std::max(spec.curve_points, 3) + spec.refine_iterations + 2);
     const auto cost = [&](double f) {
       ++res.evaluations;
+      if (spec.progress) spec.progress(std::min(1.0, (k * total / 2 + res.evaluations) / total));
       const LcrCrowningCheck c = CheckLcrCrowning(spec, side, LogCrown(f, le), lcr::ContactModel::kSlices);
       return std::pair{c.worst_design_MPa, c.edge_free_at_overload};
     };

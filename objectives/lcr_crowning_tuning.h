@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "model/lcr/contact3d_cycle.h"
@@ -30,6 +31,7 @@ struct LcrCrowningTuningSpec {
   int slices = 40;
   int curve_points = 12;
   int refine_iterations = 8;
+  std::function<void(double)> progress;  // fraction done, now and then (may be empty)
 };
 
 /// One cam's pressures at one crowning: per misalignment, at design and overload torque.
@@ -52,9 +54,10 @@ struct LcrCrowningSideResult {
 /// @throws std::invalid_argument for Le <= roller length or a bad range.
 std::array<LcrCrowningSideResult, 2> TuneLcrCrowning(const LcrCrowningTuningSpec& spec);
 
-/// The check of one cam's crowning with the given contact model (slices or half_space).
+/// The check of one cam (details: the cycle result per misalignment, design then overload)'s crowning with the given contact model (slices or half_space).
 LcrCrowningCheck CheckLcrCrowning(const LcrCrowningTuningSpec& spec, lcr::Side side,
                                   const lcr::RollerCrowning<double>& crowning, lcr::ContactModel model,
-                                  std::vector<lcr::Contact3DCycleSide>* details = nullptr);
+                                  std::vector<lcr::Contact3DCycleSide>* details = nullptr, int grid_nx = 48,
+                                  int grid_ny = 256);
 
 }  // namespace camopt::objectives

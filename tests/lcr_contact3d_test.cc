@@ -16,6 +16,7 @@
 #include "model/lcr/contact.h"
 #include "model/lcr/contact3d.h"
 #include "studies/lcr_analysis_study.h"
+#include "studies/lcr_crowning_tuning_study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -66,6 +67,26 @@ TEST(LcrContact3DInput, WhatTheLineModelIgnoresIsABadStudy) {
   u["reducer"]["input"]["crowning"] = {{"type", "none"}};
   u["contact"] = {{"model", "line"}};
   EXPECT_EQ(ParseError(u), "");
+}
+
+TEST(LcrCrowningTuningStudy, ParseRejectsAnUnboundedDropAndReadsTheExample) {
+  json s = Example("lcr_crowning_tuning.json");
+  const auto parse = [](const json& j) {
+    const studies::Node root(&j, "t.json", "");
+    return studies::lcr_crowning_tuning::Parse(root);
+  };
+  const auto st = parse(s);
+  EXPECT_EQ(st.spec.misalignments_rad, (std::vector<double>{0.0, 1e-3}));
+  EXPECT_DOUBLE_EQ(st.spec.overload_torque_Nmm, 120000.0);
+  s["tuning"]["effective_length_mm"] = 10.0;
+  try {
+    parse(s);
+    ADD_FAILURE() << "accepted Le = roller length";
+  } catch (const studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.json: /tuning/effective_length_mm: expected an effective length above"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(LcrContact3DInput, ExplicitLineModelGivesTheLineStress) {
