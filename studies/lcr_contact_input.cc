@@ -71,14 +71,14 @@ LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& re
       c["model"].Fail("one of line, slices, half_space");
     }
     in.options.slices = c.IntegerOr("slices", 4, 40);
-    if (in.options.slices > 400) c["slices"].Fail("at most 400 slices");
+    if (in.options.slices > 200) c["slices"].Fail("at most 200 slices");
     if (c.Has("grid")) {
       const auto e = c["grid"].Elements();
       if (e.size() != 2) c["grid"].Fail("[nx, ny]");
       in.options.grid_nx = e[0].Integer(8);
       in.options.grid_ny = e[1].Integer(8);
-      if (in.options.grid_nx > 1024) e[0].Fail("at most 1024");
-      if (in.options.grid_ny > 2048) e[1].Fail("at most 2048");
+      if (in.options.grid_nx > 256) e[0].Fail("at most 256");
+      if (in.options.grid_ny > 1024) e[1].Fail("at most 1024");
     }
     in.options.misalignment_rad = c.NumberOr("misalignment_mrad", 0.0) * 1e-3;
     if (std::abs(in.options.misalignment_rad) > 0.05) c["misalignment_mrad"].Fail("a misalignment within ±50 mrad");

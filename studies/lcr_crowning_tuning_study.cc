@@ -55,14 +55,14 @@ Study Parse(const Node& root) {
   sp.angle_steps = t.IntegerOr("angle_steps", 12, 360);
   if (sp.angle_steps > 3600) t["angle_steps"].Fail("at most 3600 angle steps");
   sp.slices = t.IntegerOr("slices", 4, 40);
-  if (sp.slices > 400) t["slices"].Fail("at most 400 slices");
+  if (sp.slices > 200) t["slices"].Fail("at most 200 slices");
   st.half_space_check = t.BoolOr("half_space_check", true);
   if (t.Has("grid")) {
     const auto e = t["grid"].Elements();
     if (e.size() != 2) t["grid"].Fail("[nx, ny]");
     st.grid_nx = e[0].Integer(8);
     st.grid_ny = e[1].Integer(8);
-    if (st.grid_nx > 1024 || st.grid_ny > 2048) t["grid"].Fail("a grid of at most [1024, 2048]");
+    if (st.grid_nx > 256 || st.grid_ny > 1024) t["grid"].Fail("a grid of at most [256, 1024]");
   }
   return st;
 }

@@ -17,6 +17,7 @@
 #include "model/lcr/contact3d.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_crowning_tuning_study.h"
+#include "studies/work_limits.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -85,6 +86,20 @@ TEST(LcrCrowningTuningStudy, ParseRejectsAnUnboundedDropAndReadsTheExample) {
   } catch (const studies::StudyError& e) {
     EXPECT_NE(std::string(e.what()).find("t.json: /tuning/effective_length_mm: expected an effective length above"),
               std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(LcrCrowningTuningStudy, WorkLimitRefusesAHugeScanUpFront) {
+  json s = Example("lcr_crowning_tuning.json");
+  EXPECT_NO_THROW(studies::CheckWorkLimits(s, "t.json", 1.0));
+  s["tuning"]["slices"] = 200;
+  s["tuning"]["curve_points"] = 60;
+  try {
+    studies::CheckWorkLimits(s, "t.json", 1.0);
+    ADD_FAILURE() << "accepted";
+  } catch (const studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.json: /tuning/curve_points: the study needs about"), std::string::npos)
         << e.what();
   }
 }
