@@ -86,6 +86,24 @@ TEST(RollerSlices, LongStraightRollerMidPressureIsHertzLineAndMatchesHalfSpace) 
   EXPECT_GT(s.peak_pressure, 1.2 * mid);  // the ends carry more
 }
 
+TEST(RollerSlices, StraightRollerMidPressureTendsToHertzLineAsTheRollerLengthens) {
+  // The mid-length deficit against Hertz line of F/l falls as the roller lengthens (logarithmically:
+  // 4.8%, 2.6%, 1.9% at l/b = 120, 1200, 12000 with 80 slices).
+  const double rp = 5;
+  double previous = 0;
+  for (double l : {20.0, 200.0, 2000.0}) {
+    const double f = 500.0 * l;  // 500 N/mm, b = 0.166 mm
+    SliceOptions o;
+    o.slices = 80;
+    const auto s = SolveRollerSlices<double>(f, rp, l, kEStar, [](double) { return 0.0; }, o);
+    const double ratio = 0.5 * (s.pressure_MPa[39] + s.pressure_MPa[40]) / LineContactPeakPressure(f, l, rp, kEStar);
+    EXPECT_GT(ratio, previous);
+    EXPECT_LT(ratio, 1.0);
+    previous = ratio;
+  }
+  EXPECT_GT(previous, 0.98);
+}
+
 TEST(RollerSlices, StraightRollerEdgePeakGrowsWithResolution) {
   // The pressure at an abrupt end is singular: the end slice's peak grows as the slices shrink
   // (it must be reported with the slice width), the mid-length stays.

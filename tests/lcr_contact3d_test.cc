@@ -6,6 +6,7 @@
 #include <tuple>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -102,6 +103,19 @@ TEST(LcrCrowningTuningStudy, WorkLimitRefusesAHugeScanUpFront) {
     EXPECT_NE(std::string(e.what()).find("t.json: /tuning/curve_points: the study needs about"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(LcrContact3DInput, CliExitsTwoWithOneLineForCrowningUnderTheLineModel) {
+  const auto dir = testing::TempDir("lcr-contact3d-cli");
+  json s = Example("lcr_ii_crowned.json");
+  s["contact"] = {{"model", "line"}};
+  testing::WriteFile(dir / "s.json", s.dump());
+  const auto r = testing::RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("/contact/model: expected slices or half_space with crowned rollers"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o" / "result.json"));
 }
 
 TEST(LcrContact3DInput, ExplicitLineModelGivesTheLineStress) {
