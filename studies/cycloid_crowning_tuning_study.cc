@@ -206,6 +206,22 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): crank angles, contact grid and
+// the optimizer's evaluation budget (its tolerances are fixed).
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"}, 6, 2,
+                     true, 0, "uniform crank angles per mesh period"});
+  f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
+                     "contact cells across the profile and along the face"});
+  f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, 30, 2, true, 0,
+                     "COBYLA evaluations after the scan"});
+  f.headlines = {"/tuned_coefficient_mm", "/tuned_max_contact_stress_MPa",
+                 "/reference_max_contact_stress_MPa"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("cycloid_crowning_tuning", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_crowning_tuning

@@ -1,6 +1,7 @@
 // Study kind "cycloid_ltca" (studies/cycloid_ltca_study.h): parse, run the LTCA cycle, write.
 #include "studies/cycloid_ltca_study.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -20,15 +21,26 @@ Study Parse(const Node& root) {
   s.name = root.json().value("name", "");
   s.drive = cycloid_common::ParseDrive(root);
   s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
-  s.material = cycloid_common::ParseMaterial(root);
-  root["load"].CheckKnownFields({"torque_Nm"});
-  s.torque_Nm = root["load"]["torque_Nm"].NonNegative();
+  // Lazy stages: ["unloaded"] asks for the unloaded TCA only, which needs no material or load.
+  if (root.Has("analysis") && root["analysis"].Has("evaluate")) {
+    s.loaded = false;
+    for (const Node& n : root["analysis"]["evaluate"].Elements()) {
+      const std::string stage = n.String();
+      if (stage == "loaded") s.loaded = true;
+      else if (stage != "unloaded") n.Fail("one of \"unloaded\", \"loaded\"");
+    }
+  }
+  if (s.loaded || root.Has("material")) s.material = cycloid_common::ParseMaterial(root);
+  if (s.loaded || root.Has("load")) {
+    root["load"].CheckKnownFields({"torque_Nm"});
+    s.torque_Nm = root["load"]["torque_Nm"].NonNegative();
+  }
   s.crank_angles_per_mesh_period = kDefaultCrankAnglesPerMeshPeriod;
   const double period = 2.0 * kPi / s.drive.rollers;
   if (root.Has("analysis")) {
     const Node a = root["analysis"];
     a.CheckKnownFields({"grid", "tolerance", "crank_angles_deg", "crank_angle_steps", "crank_span_deg",
-                        "crank_angles_per_mesh_period", "estimate_error"});
+                        "crank_angles_per_mesh_period", "estimate_error", "evaluate"});
     cycloid_common::ParseGrid(a, s.options);
     s.options.tolerance = a.PositiveOr("tolerance", s.options.tolerance);
     s.estimate_error = a.BoolOr("estimate_error", true);
@@ -55,6 +67,7 @@ Study Parse(const Node& root) {
   }
   if (s.crank_angles_per_mesh_period > 0)
     s.crank_angles_rad = UniformCrankAngles(s.crank_angles_per_mesh_period, period);
+  if (!s.loaded) s.estimate_error = false;
   return s;
 }
 
@@ -130,21 +143,36 @@ void EstimateErrors(const Study& s, const LoadedTca& tca, Result& r) {
   }
 }
 
+// A loose compatibility tolerance moves the LTE and GR far more than the stress (measured on the
+// paper's examples, docs/cycloid.md): say so in the warnings.
+void ToleranceWarning(const Study& s, Result& r) {
+  if (s.options.tolerance <= kLooseTolerance) return;
+  r.warnings.push_back("analysis.tolerance " + Format(s.options.tolerance, 3) + " is looser than " +
+                       Format(kLooseTolerance, 3) + ": on the paper's examples such a tolerance moves " +
+                       "lte_peak_to_peak_arcsec and gear_ratio_peak_to_peak by more than " +
+                       Format(100 * kToleranceShare, 3) + "% of their values (the stress much less); " +
+                       "use 1e-3 (the default) for the transmission error");
+}
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r;
-  LoadedTca tca(s.drive, s.crowning, s.material, s.options);
-  {
-    Progress progress("cycloid_ltca", ctx.quiet);
-    r.cycle = RunCycle(tca, s.torque_Nm * 1000.0, s.crank_angles_rad, [&](double f) { progress.Update(f); });
-    progress.Done();
+  if (s.loaded) {
+    LoadedTca tca(s.drive, s.crowning, s.material, s.options);
+    {
+      Progress progress("cycloid_ltca", ctx.quiet);
+      r.cycle = RunCycle(tca, s.torque_Nm * 1000.0, s.crank_angles_rad, [&](double f) { progress.Update(f); });
+      progress.Done();
+    }
+    r.composite_modulus_MPa = tca.e_star_MPa();
+    EstimateErrors(s, tca, r);
+    ToleranceWarning(s, r);
   }
-  r.composite_modulus_MPa = tca.e_star_MPa();
-  EstimateErrors(s, tca, r);
   const int n1 = s.drive.rollers;
   const size_t n = s.crank_angles_rad.size();
   r.backlash_arcsec.assign(n1, std::vector<double>(n, 0.0));
   for (size_t k = 0; k < n; ++k) {
     const UnloadedMesh<double> u = UnloadedTca<double>(s.drive, s.crank_angles_rad[k]);
+    r.unloaded_te_arcsec.push_back(u.rotation * kArcsecPerRad);
     for (const auto& g : u.pairs)
       r.backlash_arcsec[g.roller][k] = g.loaded_flank ? g.backlash * kArcsecPerRad : -1.0;
   }
@@ -163,7 +191,69 @@ Result Run(const Study& s, const RunContext& ctx) {
   return r;
 }
 
+namespace {
+
+// The unloaded TCA only (analysis.evaluate ["unloaded"]).
+nlohmann::json UnloadedJson(const Study& s, const Result& r) {
+  nlohmann::json per_angle = nlohmann::json::array();
+  double lo = 0, hi = 0;
+  for (size_t k = 0; k < r.unloaded_te_arcsec.size(); ++k) {
+    const double te = Finite(r.unloaded_te_arcsec[k], "ute");
+    lo = k == 0 ? te : std::min(lo, te);
+    hi = k == 0 ? te : std::max(hi, te);
+    per_angle.push_back({{"crank_angle_deg", s.crank_angles_rad[k] * 180.0 / kPi}, {"unloaded_te_arcsec", te}});
+  }
+  return {{"study", "cycloid_ltca"},
+          {"name", s.name},
+          {"evaluated", {"unloaded"}},
+          {"unloaded_te_peak_to_peak_arcsec", hi - lo},
+          {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
+          {"per_angle", per_angle}};
+}
+
+void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
+  Drawing drawing;
+  drawing.title = "Cycloid gear (disc frame) and rollers at crank angle 0";
+  Drawing::Layer disc{"disc", "black", {}, {}, true, 1.0};
+  Polyline pl;
+  for (const auto& p : r.tooth_profile) pl.push_back({p.x(), p.y()});
+  disc.polylines.push_back(pl);
+  Drawing::Layer rollers{"rollers", "blue", {}, {}, true, 1.0};
+  for (const auto& c : r.roller_centres) rollers.circles.push_back({c.x(), c.y(), s.drive.roller_radius_mm});
+  drawing.layers = {disc, rollers};
+  out.Add("tooth.svg", SvgDrawing(drawing));
+  out.Add("tooth.dxf", ToDxf(drawing));
+}
+
+Table BacklashTable(const Study& s, const Result& r, const std::vector<double>& col_angle) {
+  Table backlash;
+  backlash.Add("crank_angle_deg", col_angle);
+  for (int i = 0; i < s.drive.rollers; ++i)
+    backlash.Add("backlash_roller_" + std::to_string(i + 1) + "_arcsec", r.backlash_arcsec[i]);
+  return backlash;
+}
+
+void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
+  out.AddJson("result.json", UnloadedJson(s, r));
+  std::vector<double> col_angle;
+  for (double a : s.crank_angles_rad) col_angle.push_back(a * 180.0 / kPi);
+  Table table;
+  table.Add("crank_angle_deg", col_angle);
+  table.Add("unloaded_te_arcsec", r.unloaded_te_arcsec);
+  out.Add("per_angle.csv", ToCsv(table));
+  out.Add("backlash.csv", ToCsv(BacklashTable(s, r, col_angle)));
+  PlotOptions po;
+  po.x_label = "crank angle [deg]";
+  po.title = "Unloaded transmission error";
+  po.y_label = "TE [arcsec]";
+  out.Add("lte.svg", SvgLinePlot({{"unloaded", col_angle, r.unloaded_te_arcsec}}, po));
+  AddToothDrawing(s, r, out);
+}
+
+}  // namespace
+
 nlohmann::json ToJson(const Study& s, const Result& r) {
+  if (!s.loaded) return UnloadedJson(s, r);
   const CycleResult& cycle = r.cycle;
   const std::vector<double>& angles = s.crank_angles_rad;
   nlohmann::json per_angle = nlohmann::json::array();
@@ -222,6 +312,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
+  if (!s.loaded) return WriteUnloaded(s, r, out);
   const CycleResult& cycle = r.cycle;
   const int n1 = s.drive.rollers;
   const size_t n = s.crank_angles_rad.size();
@@ -247,12 +338,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("max_contact_stress_MPa", col_p);
   table.Add("pairs_in_contact", col_pairs);
   for (int i = 0; i < n1; ++i) table.Add("load_roller_" + std::to_string(i + 1) + "_N", col_load[i]);
-  Table backlash;
-  backlash.Add("crank_angle_deg", col_angle);
-  for (int i = 0; i < n1; ++i)
-    backlash.Add("backlash_roller_" + std::to_string(i + 1) + "_arcsec", r.backlash_arcsec[i]);
   out.Add("per_angle.csv", ToCsv(table));
-  out.Add("backlash.csv", ToCsv(backlash));
+  out.Add("backlash.csv", ToCsv(BacklashTable(s, r, col_angle)));
 
   PlotOptions po;
   po.x_label = "crank angle [deg]";
@@ -286,21 +373,34 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   pmap.Add("pressure_MPa", cp);
   out.Add("pressure_max.csv", ToCsv(pmap));
 
-  Drawing drawing;
-  drawing.title = "Cycloid gear (disc frame) and rollers at crank angle 0";
-  Drawing::Layer disc{"disc", "black", {}, {}, true, 1.0};
-  Polyline pl;
-  for (const auto& p : r.tooth_profile) pl.push_back({p.x(), p.y()});
-  disc.polylines.push_back(pl);
-  Drawing::Layer rollers{"rollers", "blue", {}, {}, true, 1.0};
-  for (const auto& c : r.roller_centres) rollers.circles.push_back({c.x(), c.y(), s.drive.roller_radius_mm});
-  drawing.layers = {disc, rollers};
-  out.Add("tooth.svg", SvgDrawing(drawing));
-  out.Add("tooth.dxf", ToDxf(drawing));
+  AddToothDrawing(s, r, out);
 }
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): crank-angle sampling (the one
+// the file uses; explicit angles have none), contact grid and compatibility tolerance. The
+// variants skip the kind's own coarse-grid error run (it does not change the headlines).
+Fidelity Knobs(const nlohmann::json& study) {
+  Fidelity f;
+  const nlohmann::json a = study.value("analysis", nlohmann::json::object());
+  if (a.contains("crank_angle_steps"))
+    f.knobs.push_back({"crank_angle_steps", {"/analysis/crank_angle_steps"}, 0, 2, true, 0,
+                       "uniform crank angles over crank_span_deg"});
+  else if (!a.contains("crank_angles_deg"))
+    f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"},
+                       kDefaultCrankAnglesPerMeshPeriod, 2, true, 0, "uniform crank angles per mesh period"});
+  f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
+                     "contact cells across the profile and along the face"});
+  f.knobs.push_back({"tolerance", {"/analysis/tolerance"}, 1e-3, 0.1, false, 0,
+                     "relative compatibility residual of the contact solver"});
+  f.headlines = {"/max_contact_stress_MPa", "/lte_peak_to_peak_arcsec", "/lte_mean_abs_arcsec",
+                 "/gear_ratio_peak_to_peak", "/max_pair_load_N"};
+  f.variant_overrides["/analysis/estimate_error"] = false;
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("cycloid_ltca", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

@@ -490,6 +490,33 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("disc_cam");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid and, when the
+// Monte-Carlo check runs, its sample count and grid.
+Fidelity Knobs(const nlohmann::json& study) {
+  Fidelity f;
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 3600, 2, true, 0,
+                     "samples of the revolution (extrema are sampled)"});
+  const auto mc = nlohmann::json::json_pointer("/analysis/monte_carlo");
+  const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
+  bool mc_on = !study.contains(mc) || study[mc].is_object();  // `true` has no fields to set
+  if (study.contains(ev)) {
+    bool asked = false;
+    for (const auto& e : study[ev]) asked = asked || e == "monte_carlo";
+    mc_on = mc_on && asked;
+  }
+  if (mc_on) {
+    f.knobs.push_back({"monte_carlo_samples", {"/analysis/monte_carlo/samples"}, 200, 2, true, 0,
+                       "Monte-Carlo samples per scale"});
+    f.knobs.push_back({"monte_carlo_angle_steps", {"/analysis/monte_carlo/angle_steps"}, 360, 2, true, 0,
+                       "angle grid of each Monte-Carlo sample"});
+  }
+  f.headlines = {"/pressure_angle_deg/max", "/min_radius_of_curvature_mm", "/max_radial_dimension_mm",
+                 "/worst_case_error_um/max", "/rms_error_um/max",
+                 "/monte_carlo/scales/0/max_exact_um", "/monte_carlo/scales/0/relative_difference"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("disc_cam", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::disc_cam

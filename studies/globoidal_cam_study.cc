@@ -612,6 +612,40 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("globoidal_cam");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the analysis grid of the
+// geometry and, when the dynamics run, CVODE's tolerances. The variants skip the surface export.
+Fidelity Knobs(const nlohmann::json& study) {
+  Fidelity f;
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 720, 2, true, 0,
+                     "cam angles of the geometry survey (extrema are sampled)"});
+  f.knobs.push_back({"axis_steps", {"/analysis/axis_steps"}, 7, 2, true, 0,
+                     "points along the roller axis of the geometry survey"});
+  f.headlines = {"/max_pressure_angle_deg", "/min_undercut_margin", "/min_contact_radius_mm"};
+  bool dynamics = true;
+  const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
+  if (study.contains(ev)) {
+    dynamics = false;
+    for (const auto& e : study[ev]) dynamics = dynamics || e == "dynamics";
+  }
+  const auto speeds = nlohmann::json::json_pointer("/dynamics/cam_speeds_rpm");
+  if (dynamics && study.contains(speeds) && !study[speeds].empty()) {
+    f.knobs.push_back({"relative_tolerance", {"/dynamics/relative_tolerance"}, 1e-8, 0.1, false, 0,
+                       "CVODE's relative tolerance"});
+    f.knobs.push_back({"absolute_tolerance", {"/dynamics/absolute_tolerance"}, 1e-10, 0.1, false, 0,
+                       "CVODE's absolute tolerance [rad, rad/s]"});
+    for (size_t i = 0; i < study[speeds].size(); ++i) {
+      const std::string p = "/dynamics/speeds/" + std::to_string(i) + "/";
+      f.headlines.push_back(p + "peak_turret_acceleration_dynamic_rad_s2");
+      f.headlines.push_back(p + "max_force_roller_1_N");
+      f.headlines.push_back(p + "max_penetration_mm");
+    }
+  }
+  f.variant_overrides["/export/stl"] = false;
+  f.variant_overrides["/export/point_cloud"] = false;
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("globoidal_cam", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::globoidal_cam

@@ -121,19 +121,25 @@ Study Parse(const Node& root) {
   Study st;
   st.name = root.StringOr("name", "");
   st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true);
-  root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  st.material = ParseMaterial(root["material"]);
-  const Node load_node = root["load"];
-  load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N"});
-  st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
-  st.load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
-  st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
   if (root.Has("analysis")) {
     const Node analysis = root["analysis"];
     analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate"});
     st.angle_steps = analysis.IntegerOr("angle_steps", 12, 3600);
     st.profile_points = analysis.IntegerOr("profile_points", 100, 3600);
     st.evaluate = ParseEvaluate(analysis);
+  }
+  // Lazy stages: the material is needed by the stress stage only, the load by the force stages
+  // (forces, stress, efficiency); a profile/undercut study needs neither (checked when given).
+  if (st.evaluate.stress || root.Has("material")) {
+    root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
+    st.material = ParseMaterial(root["material"]);
+  }
+  if (st.evaluate.forces || root.Has("load")) {
+    const Node load_node = root["load"];
+    load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N"});
+    st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
+    st.load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
+    st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
   }
   if (root.Has("limits")) {
     root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N"});
@@ -402,6 +408,38 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_analysis");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the force
+// stages (the maxima are sampled: no order assumed). The profile and undercut stages have none.
+Fidelity Knobs(const nlohmann::json& study) {
+  Fidelity f;
+  bool forces = true;
+  const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
+  if (study.contains(ev)) {
+    forces = false;
+    for (const auto& e : study[ev]) forces = forces || e == "forces" || e == "stress" || e == "efficiency";
+  }
+  if (forces)
+    f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 3600, 2, true, 0,
+                       "samples of the input revolution (cycle maxima and means)"});
+  else
+    f.no_knob = "profile and undercut only: closed forms and root finding, no setting to refine";
+  // The finite-length contact (issue 12): slice count, and the half_space grid.
+  const auto model = nlohmann::json::json_pointer("/contact/model");
+  if (forces && study.contains(model) && study[model] != "line") {
+    f.knobs.push_back({"contact_slices", {"/contact/slices"}, 40, 2, true, 0,
+                       "slices along the roller (the slices model; an edge peak grows with it)"});
+    if (study[model] == "half_space")
+      f.knobs.push_back({"contact_grid", {"/contact/grid"}, {64, 256}, 2, true, 0,
+                         "half_space cells across rolling and along the roller"});
+  }
+  f.headlines = {"/input_cam/max_roller_force_N", "/output_cam/max_roller_force_N",
+                 "/input_cam/max_contact_stress_MPa", "/output_cam/max_contact_stress_MPa",
+                 "/efficiency/mean", "/input_torque_Nm/max", "/input_cam/undercut_margin_mm",
+                 "/output_cam/undercut_margin_mm"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("lcr_analysis", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

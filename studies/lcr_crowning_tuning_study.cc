@@ -167,6 +167,22 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_crowning_tuning");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): slices, angle grid, the
+// golden-section steps and the half_space check's grid.
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"slices", {"/tuning/slices"}, 40, 2, true, 0, "slices along the roller"});
+  f.knobs.push_back({"angle_steps", {"/tuning/angle_steps"}, 360, 2, true, 0, "samples of the input revolution"});
+  f.knobs.push_back({"refine_iterations", {"/tuning/refine_iterations"}, 8, 2, true, 0,
+                     "golden-section steps in ln f after the scan"});
+  f.knobs.push_back({"grid", {"/tuning/grid"}, {48, 256}, 2, true, 0, "half_space check cells"});
+  f.headlines = {"/input/crowning/coefficient_mm", "/output/crowning/coefficient_mm",
+                 "/input/tuned/slices/0/design_max_contact_stress_MPa",
+                 "/output/tuned/slices/0/design_max_contact_stress_MPa"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("lcr_crowning_tuning", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::lcr_crowning_tuning

@@ -217,6 +217,18 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_friction_fit");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the model's
+// mean input torque (Ceres' tolerances are fixed).
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 3600, 2, true, 0,
+                     "samples of the input revolution in the torque model"});
+  f.headlines = {"/parameters/friction_coefficient/value", "/parameters/drag_torque_Nm/value",
+                 "/chi_square"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("lcr_friction_fit", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::lcr_friction_fit

@@ -460,5 +460,19 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
 
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the optimizer's tolerance and
+// the angle samples of the smooth phase (the reported numbers come from the 3600-angle check).
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"optimizer_tolerance", {"/optimizer/tolerance"}, 1e-8, 0.1, false, 0,
+                     "relative optimality / step tolerance of each start"});
+  f.knobs.push_back({"samples_per_period", {"/optimizer/samples_per_period"}, 24, 2, true, 0,
+                     "angle samples per load period in the optimizer's problem"});
+  f.headlines = {"/best/outer_diameter_mm", "/best/eccentricity_mm", "/best/max_contact_stress_MPa",
+                 "/best/max_roller_force_N", "/best/mean_efficiency"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("lcr_min_size", Knobs);
+
 }  // namespace
 }  // namespace camopt::studies::lcr_min_size

@@ -1,4 +1,5 @@
-// camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]`.
+// camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
+// [--convergence]`.
 // Exit codes, by cause:
 //   0   success
 //   2   something the user can fix: the study file, the arguments, the output folder (with the
@@ -21,6 +22,7 @@
 #include <CLI/CLI.hpp>
 #include <glog/logging.h>
 
+#include "studies/convergence.h"
 #include "studies/study.h"
 
 namespace {
@@ -51,12 +53,15 @@ int main(int argc, char** argv) {
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
   app.require_subcommand(1);
   std::string study_file, out_dir;
-  bool quiet = false;
+  bool quiet = false, convergence = false;
   double work_factor = 1.0;
   CLI::App* run = app.add_subcommand("run", "Analyse or size the design described in a study file");
   run->add_option("study", study_file, "Study file (JSON)")->required();
   run->add_option("--out,-o", out_dir, "Output folder (default: results/<study file stem>)");
   run->add_flag("--quiet,-q", quiet, "No progress lines on stderr");
+  run->add_flag("--convergence", convergence,
+                "Also run each fidelity knob refined and coarsened: convergence.json, "
+                "convergence_*.svg and a table on stdout (docs/performance.md)");
   run->add_option("--max-work-factor", work_factor,
                   "Multiply every work, memory and file-size cap by this factor (default 1; "
                   "see docs/reliability.md)")
@@ -89,7 +94,10 @@ int main(int argc, char** argv) {
     auto& limits = camopt::studies::CurrentInputLimits();
     limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) *
                                                 std::min(work_factor, 1e3));
-    camopt::studies::RunStudyFile(study_file, out_dir, ctx);
+    if (convergence)
+      camopt::studies::RunConvergenceFile(study_file, out_dir, ctx);
+    else
+      camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {

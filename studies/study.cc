@@ -202,6 +202,23 @@ bool RegisterStudy(const std::string& kind, StudyRunner runner) {
   return true;
 }
 
+namespace {
+std::map<std::string, FidelityOf>& FidelityRegistry() {
+  static std::map<std::string, FidelityOf> registry;
+  return registry;
+}
+}  // namespace
+
+bool RegisterFidelity(const std::string& kind, FidelityOf fidelity) {
+  FidelityRegistry()[kind] = std::move(fidelity);
+  return true;
+}
+
+const FidelityOf* FindFidelity(const std::string& kind) {
+  const auto it = FidelityRegistry().find(kind);
+  return it == FidelityRegistry().end() ? nullptr : &it->second;
+}
+
 std::vector<std::string> StudyKinds() {
   std::vector<std::string> kinds;
   for (const auto& [k, v] : Registry()) kinds.push_back(k);

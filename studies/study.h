@@ -103,6 +103,37 @@ using StudyRunner = std::function<void(const Node& root, const RunContext&, Outp
 bool RegisterStudy(const std::string& kind, StudyRunner runner);
 std::vector<std::string> StudyKinds();
 
+/// A fidelity setting of a study kind, refined and coarsened by `camopt run --convergence`
+/// (studies/convergence.h).
+struct FidelityKnob {
+  std::string name;                ///< e.g. "angle_steps"
+  std::vector<std::string> paths;  ///< JSON pointers in the study file, all set together
+  nlohmann::json default_value;    ///< the kind's value when the file does not give it (number or array)
+  double refine = 2;               ///< refined = value × refine, coarsened = value / refine (0.1: ÷10)
+  bool integer = false;            ///< whole numbers (rounded)
+  /// The error of an output goes as h^order with h ∝ 1/refine per refinement (Richardson);
+  /// 0: not known (the error is the difference to the finest run).
+  double order = 0;
+  std::string note;                ///< what the knob is, for convergence.json
+};
+
+/// What `--convergence` varies and reads for one study (it may depend on the file: stages asked,
+/// speeds, elements).
+struct Fidelity {
+  std::vector<FidelityKnob> knobs;
+  std::vector<std::string> headlines;  ///< JSON pointers into result.json
+  std::string no_knob;                 ///< why there is no knob, when knobs is empty
+  /// Settings applied to the refined and coarsened runs only (e.g. switch a kind's own error
+  /// estimate off): they change the cost, not the headline outputs.
+  nlohmann::json variant_overrides = nlohmann::json::object();  ///< JSON pointer → value
+};
+
+using FidelityOf = std::function<Fidelity(const nlohmann::json& study)>;
+/// Declares the fidelity knobs and headline outputs of a kind; returns true (for a static).
+bool RegisterFidelity(const std::string& kind, FidelityOf fidelity);
+/// The kind's declaration, or nullptr when it has none.
+const FidelityOf* FindFidelity(const std::string& kind);
+
 /// Runs the study in file: parses, checks the work limits, dispatches on "study", writes into
 /// out_dir (checked first). Throws StudyError for bad input (exit 2), StudyIncomplete after
 /// writing an incomplete result (exit 3), and std::exception for other failures.
@@ -126,6 +157,9 @@ double Finite(double value, const std::string& what);
 }  // namespace camopt::studies
 
 #define CAMOPT_CONCAT_INNER(a, b) a##b
+#define CAMOPT_REGISTER_FIDELITY(kind, fn) \
+  static const bool CAMOPT_CONCAT(camopt_fidelity_registered_, __LINE__) = \
+      ::camopt::studies::RegisterFidelity(kind, fn)
 #define CAMOPT_CONCAT(a, b) CAMOPT_CONCAT_INNER(a, b)
 #define CAMOPT_REGISTER_STUDY(kind, fn) \
   static const bool CAMOPT_CONCAT(camopt_study_registered_, __LINE__) = \

@@ -478,6 +478,27 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of every lobe
+// cam reducer in the chain (together); the other elements are closed forms.
+Fidelity Knobs(const nlohmann::json& study) {
+  Fidelity f;
+  std::vector<std::string> paths;
+  if (study.contains("chain") && study["chain"].is_array())
+    for (size_t i = 0; i < study["chain"].size(); ++i)
+      if (study["chain"][i].value("element", "") == "lobe_cam_reducer") {
+        paths.push_back("/chain/" + std::to_string(i) + "/angle_steps");
+        f.headlines.push_back("/elements/" + std::to_string(i) + "/reducer/mean_secant_rigidity_Nm_per_rad");
+      }
+  if (!paths.empty())
+    f.knobs.push_back({"reducer_angle_steps", paths, 720, 2, true, 0,
+                       "input angles of each reducer's stiffness cycle"});
+  else
+    f.no_knob = "closed-form elements only: nothing to refine";
+  f.headlines.insert(f.headlines.begin(), {"/rigidity_Nm_per_rad", "/rigidity_at_end_a_Nm_per_rad"});
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("transmission_rigidity", Knobs);
 }  // namespace
 
 }  // namespace camopt::studies::transmission_rigidity
