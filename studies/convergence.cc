@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "studies/format.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies {
@@ -352,6 +353,8 @@ void RunConvergenceFile(const std::string& file, const std::string& out_dir, con
   OutputFolder folder(out_dir);  // a bad --out is reported before the work
   ConvergenceRun run = RunConvergence(study, c);
   run.own.AddJson("convergence.json", run.report);
+  // report.html again, now with the convergence plots in it.
+  if (study.contains("study") && study["study"].is_string()) AddReport(study["study"].get<std::string>(), study, run.own);
   folder.Commit(run.own);
   std::cout << run.table << std::flush;
   if (!run.own.incomplete().empty()) throw StudyIncomplete(run.own.incomplete());

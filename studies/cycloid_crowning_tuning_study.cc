@@ -10,6 +10,7 @@
 
 #include "optimizers/solver.h"
 #include "studies/cycloid_study_common.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::cycloid_crowning_tuning {
@@ -193,15 +194,16 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   PlotOptions po;
   po.title = "Peak contact stress over the mesh at the design torque";
   po.x_label = "LCM coefficient f [um]";
-  po.y_label = "stress [MPa]";
-  out.Add("stress_vs_coefficient.svg",
-          SvgLinePlot({{"max stress", cf, cs},
-                       {"tuned", {r.best.coefficient_mm * 1e3}, {r.best.stress_MPa}},
-                       {"paper f", {s.reference_coefficient_mm * 1e3}, {r.reference.stress_MPa}}},
-                      po));
+  po.y_label = "peak contact stress [MPa]";
+  po.points = {{"tuned", r.best.coefficient_mm * 1e3, r.best.stress_MPa},
+               {"paper f", s.reference_coefficient_mm * 1e3, r.reference.stress_MPa}};
+  out.Add("stress_vs_coefficient.svg", SvgLinePlot({{"peak contact stress", cf, cs}}, po));
   po.title = "Edge margin at the maximum torque (>= 0: off the face edges)";
-  po.y_label = "margin [um]";
-  out.Add("edge_margin_vs_coefficient.svg", SvgLinePlot({{"margin", cf, cm}}, po));
+  po.y_label = "edge margin [um]";
+  po.guides = {{"required edge margin", s.required_edge_margin_um}};
+  po.points = {{"tuned", r.best.coefficient_mm * 1e3, r.best.edge_margin_um},
+               {"paper f", s.reference_coefficient_mm * 1e3, r.reference.edge_margin_um}};
+  out.Add("edge_margin_vs_coefficient.svg", SvgLinePlot({{"edge margin", cf, cm}}, po));
 }
 
 namespace {
@@ -222,6 +224,20 @@ Fidelity Knobs(const nlohmann::json&) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("cycloid_crowning_tuning", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("cycloid_crowning_tuning", {
+    {"tuned LCM coefficient", "/tuned_coefficient_mm", "mm"},
+    {"peak contact stress, tuned", "/tuned_max_contact_stress_MPa", "MPa"},
+    {"peak contact stress, paper's coefficient", "/reference_max_contact_stress_MPa", "MPa"},
+    {"edge margin at the maximum torque, tuned", "/tuned_edge_margin_at_max_torque_um", "um",
+     "study:/tuning/edge_margin_um", 0.0, false},
+    {"edge margin at the maximum torque, paper's coefficient", "/reference_edge_margin_at_max_torque_um", "um",
+     "study:/tuning/edge_margin_um", 0.0, false},
+    {"status", "/status", ""},
+});
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_crowning_tuning

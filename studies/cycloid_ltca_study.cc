@@ -9,6 +9,7 @@
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_study_common.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::cycloid_ltca {
@@ -219,7 +220,11 @@ void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
   for (const auto& p : r.tooth_profile) pl.push_back({p.x(), p.y()});
   disc.polylines.push_back(pl);
   Drawing::Layer rollers{"rollers", "blue", {}, {}, true, 1.0};
-  for (const auto& c : r.roller_centres) rollers.circles.push_back({c.x(), c.y(), s.drive.roller_radius_mm});
+  for (size_t i = 0; i < r.roller_centres.size(); ++i) {
+    const auto& c = r.roller_centres[i];
+    rollers.circles.push_back({c.x(), c.y(), s.drive.roller_radius_mm});
+    drawing.labels.push_back({c.x(), c.y(), std::to_string(i + 1), "blue"});
+  }
   drawing.layers = {disc, rollers};
   out.Add("tooth.svg", SvgDrawing(drawing));
   out.Add("tooth.dxf", ToDxf(drawing));
@@ -245,7 +250,7 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
   PlotOptions po;
   po.x_label = "crank angle [deg]";
   po.title = "Unloaded transmission error";
-  po.y_label = "TE [arcsec]";
+  po.y_label = "transmission error [arcsec]";
   out.Add("lte.svg", SvgLinePlot({{"unloaded", col_angle, r.unloaded_te_arcsec}}, po));
   AddToothDrawing(s, r, out);
 }
@@ -344,14 +349,16 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   PlotOptions po;
   po.x_label = "crank angle [deg]";
   po.title = "Loaded transmission error";
-  po.y_label = "LTE [arcsec]";
+  po.y_label = "transmission error [arcsec]";
   out.Add("lte.svg", SvgLinePlot({{"loaded", col_angle, col_lte}, {"unloaded", col_angle, col_ute}}, po));
   po.title = "Instantaneous gear ratio";
-  po.y_label = "ratio";
-  out.Add("gear_ratio.svg", SvgLinePlot({{"GR", col_angle, col_gr}}, po));
+  po.y_label = "gear ratio [-]";
+  po.guides = {{"nominal ratio", double(s.drive.teeth)}};
+  out.Add("gear_ratio.svg", SvgLinePlot({{"instantaneous gear ratio", col_angle, col_gr}}, po));
+  po.guides.clear();
   po.title = "Maximum contact stress";
-  po.y_label = "stress [MPa]";
-  out.Add("contact_stress.svg", SvgLinePlot({{"max", col_angle, col_p}}, po));
+  po.y_label = "contact stress [MPa]";
+  out.Add("contact_stress.svg", SvgLinePlot({{"largest over the rollers", col_angle, col_p}}, po));
   const MeshLoad& worst = cycle.meshes[cycle.max_pressure_index];
   out.Add("pressure_map.svg",
           cycloid_common::PressureMapsSvg(
@@ -401,6 +408,22 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("cycloid_ltca", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("cycloid_ltca", {
+    {"largest contact stress", "/max_contact_stress_MPa", "MPa", "", NAN, true, "/estimated_error/max_contact_stress_MPa"},
+    {"at crank angle", "/max_contact_stress_crank_angle_deg", "deg"},
+    {"largest roller load", "/max_pair_load_N", "N", "", NAN, true, "/estimated_error/max_pair_load_N"},
+    {"mean |loaded transmission error|", "/lte_mean_abs_arcsec", "arcsec", "", NAN, true,
+     "/estimated_error/lte_mean_abs_arcsec"},
+    {"loaded transmission error, peak to peak", "/lte_peak_to_peak_arcsec", "arcsec", "", NAN, true,
+     "/estimated_error/lte_peak_to_peak_arcsec"},
+    {"gear ratio, peak to peak", "/gear_ratio_peak_to_peak", "", "", NAN, true, "/estimated_error/gear_ratio_peak_to_peak"},
+    {"most rollers in contact", "/max_pairs_in_contact", ""},
+    {"converged", "/converged", ""},
+});
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

@@ -114,7 +114,7 @@ inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::str
   width = std::max(width + 80, 400);
   int ny = 0;
   for (const auto& p : mesh.pairs) ny = std::max(ny, p.grid.ny);
-  const int height = top + ny * cell_h + 70;
+  const int height = top + std::max(ny * cell_h, 100) + 70;
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
     << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -148,6 +148,20 @@ inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::str
       << " mm</text>\n";
     x0 += p.grid.nx * cell_w + panel_gap;
   }
+  // Colour bar with its unit, right of the panels: 0 (bottom) to the maximum (top).
+  const int bar_x = width - 70, bar_h = std::max(ny * cell_h, 100), steps = 50;
+  for (int k = 0; k < steps; ++k) {
+    const double p = pmax * (k + 0.5) / steps;
+    s << "<rect x=\"" << bar_x << "\" y=\"" << Fixed(top + bar_h * (steps - 1 - k) / double(steps), 2)
+      << "\" width=\"14\" height=\"" << Fixed(bar_h / double(steps) + 0.3, 2) << "\" fill=\"" << colour(p)
+      << "\"/>\n";
+  }
+  s << "<rect x=\"" << bar_x << "\" y=\"" << top << "\" width=\"14\" height=\"" << bar_h
+    << "\" fill=\"none\" stroke=\"black\" stroke-width=\"0.5\"/>\n";
+  for (int k = 0; k <= 4; ++k)
+    s << "<text x=\"" << bar_x + 18 << "\" y=\"" << Fixed(top + bar_h * (1 - k / 4.0) + 4, 2) << "\">"
+      << Fixed(pmax * k / 4, 0) << "</text>\n";
+  s << "<text x=\"" << bar_x << "\" y=\"" << top - 16 << "\">p [MPa]</text>\n";
   s << "</svg>\n";
   return s.str();
 }

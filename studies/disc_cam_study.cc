@@ -6,6 +6,7 @@
 #include "model/disc_cam/check.h"
 #include "studies/format.h"
 #include "studies/motion_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::disc_cam {
@@ -517,6 +518,19 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("disc_cam", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("disc_cam", {
+    {"largest pressure angle", "/pressure_angle_deg/max", "deg"},
+    {"smallest pressure angle", "/pressure_angle_deg/min", "deg"},
+    {"smallest radius of curvature", "/min_radius_of_curvature_mm", "mm"},
+    {"undercut", "/undercut", ""},
+    {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
+    {"worst-case follower error", "/worst_case_error_um/max", "µm"},
+    {"largest rms follower error", "/rms_error_um/max", "µm"},
+});
 }  // namespace
 
 }  // namespace camopt::studies::disc_cam

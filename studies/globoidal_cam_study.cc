@@ -8,6 +8,7 @@
 
 #include "studies/format.h"
 #include "studies/motion_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::globoidal_cam {
@@ -646,6 +647,19 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("globoidal_cam", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("globoidal_cam", {
+    {"largest pressure angle", "/max_pressure_angle_deg", "deg"},
+    {"smallest contact radius", "/min_contact_radius_mm", "mm"},
+    {"smallest undercut margin", "/min_undercut_margin", "", "", 0.0, false},
+    {"undercut", "/undercut", ""},
+    {"rib thickness at l2", "/rib_thickness_at_l2_mm", "mm", "", 0.0, false},
+    {"largest force on roller 1 (first speed)", "/dynamics/speeds/0/max_force_roller_1_N", "N"},
+    {"largest quasi-static force (first speed)", "/dynamics/speeds/0/max_quasi_static_force_N", "N"},
+});
 }  // namespace
 
 }  // namespace camopt::studies::globoidal_cam

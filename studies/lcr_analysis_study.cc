@@ -14,6 +14,7 @@
 #include "model/lcr/profile.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -64,7 +65,8 @@ Drawing CamDrawing(const lcr::Reducer<double>& r, Side s, double cutter_radius, 
   d.title = title;
   Drawing::Layer profile{"CAM_PROFILE", "#000000", {}, {}, true, 1.5};
   Drawing::Layer pitch{"PITCH_CURVE", "#888888", {}, {}, true, 0.7};
-  Drawing::Layer cutter{"CUTTER_PATH", "#d62728", {}, {}, true, 0.7};
+  // Dashed: with a cutter of the roller's size its path is the pitch curve, which stays visible.
+  Drawing::Layer cutter{"CUTTER_PATH", "#d62728", {}, {}, true, 0.7, "6,4"};
   profile.polylines.push_back(ToPolyline(lcr::SampleCurve(c, r.eccentricity, c.roller_radius, points)));
   pitch.polylines.push_back(ToPolyline(lcr::SampleCurve(c, r.eccentricity, 0.0, points)));
   cutter.polylines.push_back(
@@ -92,6 +94,7 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
     const bool is_loaded =
         loads && (s == Side::kInput ? loads->input.force : loads->output.force)[k] > 0;
     (is_loaded ? loaded : free_rollers).circles.push_back(circle);
+    d.labels.push_back({circle.x, circle.y, std::to_string(k + 1), is_loaded ? "#d62728" : "#1f77b4"});
   }
   axes.circles.push_back({0.0, 0.0, 0.6});
   axes.circles.push_back({centre.x(), centre.y(), 0.6});
@@ -117,29 +120,38 @@ void RunContact3D(const Study& st, Result& res) {
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis", "contact"});
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis",
+                         "tolerances", "monte_carlo", "contact"});
   Study st;
   st.name = root.StringOr("name", "");
   st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true);
   if (root.Has("analysis")) {
     const Node analysis = root["analysis"];
-    analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate"});
+    analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate", "load_model"});
     st.angle_steps = analysis.IntegerOr("angle_steps", 12, 3600);
     st.profile_points = analysis.IntegerOr("profile_points", 100, 3600);
     st.evaluate = ParseEvaluate(analysis);
+    st.load_model = ParseLoadModel(analysis);
   }
   // Lazy stages: the material is needed by the stress stage only, the load by the force stages
   // (forces, stress, efficiency); a profile/undercut study needs neither (checked when given).
-  if (st.evaluate.stress || root.Has("material")) {
+  // The compliant load model and the transmission error (Palmgren contacts) need both.
+  st.tolerances = ParseLcrTolerances(root);
+  const bool compliant = st.load_model == lcr::LoadModel::kCompliant || st.tolerances.has_value();
+  if (st.evaluate.stress || compliant || root.Has("material")) {
     root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
     st.material = ParseMaterial(root["material"]);
   }
-  if (st.evaluate.forces || root.Has("load")) {
+  if (st.evaluate.forces || compliant || root.Has("load")) {
     const Node load_node = root["load"];
     load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N"});
     st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
     st.load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
     st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
+    if (st.load_model == lcr::LoadModel::kCompliant && !(st.load.output_torque_Nmm > 0))
+      load_node["output_torque_Nm"].Fail("a torque > 0 for \"load_model\": \"compliant\"");
+    if (st.tolerances && !(st.load.output_torque_Nmm > 0))
+      load_node["output_torque_Nm"].Fail("a torque > 0 for the transmission error under \"tolerances\"");
   }
   if (root.Has("limits")) {
     root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N"});
@@ -189,8 +201,10 @@ Result Run(const Study& st, const RunContext& ctx) {
     Progress progress("lcr_analysis", ctx.quiet);
     lcr::Stages stages{true, q.stress, q.efficiency};
     try {
-      res.series = lcr::AnalyzeCycle(r, st.material, st.load, steps, stages,
-                                     [&](double f) { progress.Update(f, std::to_string(steps) + " angles"); });
+      auto update = [&](double f) { progress.Update(f, std::to_string(steps) + " angles"); };
+      res.series = st.load_model == lcr::LoadModel::kCompliant
+                       ? lcr::AnalyzeCycleCompliant(r, st.material, st.load, steps, stages, update)
+                       : lcr::AnalyzeCycle(r, st.material, st.load, steps, stages, update);
     } catch (const std::domain_error& e) {
       throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
     }
@@ -227,6 +241,23 @@ Result Run(const Study& st, const RunContext& ctx) {
     if (q.stress && st.contact.given && !res.any_undercut) RunContact3D(st, res);
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
+  if (st.tolerances) {
+    const LcrToleranceSpec& t = *st.tolerances;
+    Progress progress("lcr_analysis transmission error", ctx.quiet);
+    lcr::TransmissionErrorOptions o;
+    o.output_torque_Nmm = st.load.output_torque_Nmm;
+    o.lost_motion_torque_Nmm = t.lost_motion_torque_fraction * st.load.output_torque_Nmm;
+    o.angle_steps = t.angle_steps;
+    o.samples = t.samples;
+    o.seed = t.seed;
+    o.progress = [&](double f) { progress.Update(f, std::to_string(t.samples) + " Monte-Carlo samples"); };
+    try {
+      res.transmission_error = lcr::AnalyzeTransmissionError(r, st.material, t.bands, o);
+    } catch (const std::domain_error& e) {
+      throw StudyError(ctx.study_file + ": /tolerances: the toleranced reducer cannot carry the load: " + e.what());
+    }
+    progress.Done();
+  }
   return res;
 }
 
@@ -240,6 +271,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   j["output_speed_ratio"] = res.output_speed_ratio;
   j["outer_diameter_mm"] = res.outer_diameter_mm;
   j["angle_steps"] = st.angle_steps;
+  j["load_model"] = LoadModelName(st.load_model);
   for (Side s : {Side::kInput, Side::kOutput}) {
     const CamResult& c = s == Side::kInput ? res.input_cam : res.output_cam;
     nlohmann::json& cj = j[s == Side::kInput ? "input_cam" : "output_cam"];
@@ -313,6 +345,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
     if (st.contact.options.model == lcr::ContactModel::kHalfSpace)
       j["contact"]["grid"] = {st.contact.options.grid_nx, st.contact.options.grid_ny};
   }
+  if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
   j["notes"] = res.notes;
   return j;
 }
@@ -375,20 +408,43 @@ void Write(const Study& st, const Result& res, Outputs& out) {
       t.Add("efficiency", series.efficiency);
     }
     out.Add("series.csv", ToCsv(t));
+    PlotOptions forces{"Largest roller force over the input revolution", "input angle [deg]",
+                       "largest roller force [N]"};
+    forces.guides = {{"roller load limit", st.roller_load_limit_N}};
     out.Add("forces.svg", SvgLinePlot({{"input cam (fixed turret)", deg, series.input.max_force_N},
                                        {"output cam (output turret)", deg, series.output.max_force_N}},
-                                      {"Largest roller force over the input revolution", "input angle [deg]",
-                                       "roller force [N]"}));
+                                      forces));
     if (res.contact_input && res.contact_output) WriteRollerPressure(st, res, out);
-    if (q.stress && !res.any_undercut)
+    if (q.stress && !res.any_undercut) {
+      PlotOptions stress{"Largest Hertz contact stress", "input angle [deg]", "contact stress [MPa]"};
+      stress.guides = {{"contact stress limit", st.contact_stress_limit_MPa}};
       out.Add("contact_stress.svg",
               SvgLinePlot({{"input cam", deg, res.contact_input ? res.contact_input->max_stress_MPa : series.input.max_stress_MPa},
                            {"output cam", deg, res.contact_output ? res.contact_output->max_stress_MPa : series.output.max_stress_MPa}},
-                          {"Largest Hertz contact stress", "input angle [deg]", "contact stress [MPa]"}));
+                          stress));
+    }
     if (q.efficiency)
       out.Add("efficiency.svg", SvgLinePlot({{"efficiency", deg, series.efficiency}},
                                             {"Efficiency (paper's friction model)", "input angle [deg]",
                                              "efficiency [-]"}));
+  }
+  if (res.transmission_error) {
+    const lcr::TransmissionErrorResult& te = *res.transmission_error;
+    Table t;
+    std::vector<double> deg(te.theta_rad.size()), windup(te.theta_rad.size());
+    for (size_t i = 0; i < deg.size(); ++i) {
+      deg[i] = te.theta_rad[i] * 180 / kPi;
+      windup[i] = te.nominal_rotation_rad[i] * 180 / kPi * 3600;
+    }
+    t.Add("input_angle_deg", deg);
+    t.Add("nominal_windup_arcsec", windup);
+    t.Add("linear_te_sigma_arcsec", te.linear_sigma_arcsec);
+    if (!te.worst_sample_te_arcsec.empty()) t.Add("worst_sample_te_arcsec", te.worst_sample_te_arcsec);
+    out.Add("transmission_error.csv", ToCsv(t));
+    std::vector<Series> lines = {{"linear σ", deg, te.linear_sigma_arcsec}};
+    if (!te.worst_sample_te_arcsec.empty()) lines.push_back({"worst Monte-Carlo sample", deg, te.worst_sample_te_arcsec});
+    out.Add("transmission_error.svg", SvgLinePlot(lines, {"Transmission error from the tolerances", "input angle [deg]",
+                                                          "output angle error [arcsec]"}));
   }
   if (q.profile) {
     const int points = st.profile_points;
@@ -437,9 +493,34 @@ Fidelity Knobs(const nlohmann::json& study) {
                  "/input_cam/max_contact_stress_MPa", "/output_cam/max_contact_stress_MPa",
                  "/efficiency/mean", "/input_torque_Nm/max", "/input_cam/undercut_margin_mm",
                  "/output_cam/undercut_margin_mm"};
+  if (study.contains("tolerances")) {  // issue 18: the transmission error's own angle grid
+    f.knobs.push_back({"monte_carlo_angle_steps", {"/monte_carlo/angle_steps"}, 72, 2, true, 0,
+                       "input angles of the transmission error (peak-to-peak and lost-motion maxima are sampled)"});
+    for (const char* h : {"/transmission_error/linear_worst_case_arcsec", "/transmission_error/monte_carlo_max_arcsec",
+                          "/transmission_error/lost_motion_arcmin"})
+      f.headlines.push_back(h);
+  }
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_analysis", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("lcr_analysis", {
+    {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},
+    {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
+    {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
+    {"largest roller force, output cam", "/output_cam/max_roller_force_N", "N", "/output_cam/roller_load_limit_N"},
+    {"undercut margin, input cam", "/input_cam/undercut_margin_mm", "mm", "", 0.0, false},
+    {"undercut margin, output cam", "/output_cam/undercut_margin_mm", "mm", "", 0.0, false},
+    {"gap between rollers, input cam", "/input_cam/roller_gap_mm", "mm", "", 0.0, false},
+    {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "", 0.0, false},
+    {"outer diameter", "/outer_diameter_mm", "mm"},
+    {"speed ratio", "/speed_ratio", ""},
+    {"mean efficiency", "/efficiency/mean", ""},
+    {"largest input torque", "/input_torque_Nm/max", "N·m"},
+});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

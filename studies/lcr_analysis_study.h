@@ -14,6 +14,7 @@
 #include "model/lcr/cycle.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/input.h"
+#include "studies/lcr_tolerance_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -36,6 +37,8 @@ struct Study {
   double roller_load_limit_N = kInf;
   double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
   LcrContactInput contact;  ///< "contact" and the rollers' "crowning" (issue 12)
+  lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
+  std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
@@ -68,6 +71,8 @@ struct Result {
   /// Loads at input angle 0 (loaded rollers of the assembly drawings), when forces and the
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
+  /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
+  std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
   /// The finite-length contact per cam, when the study has a "contact" object and stress is evaluated.
   std::optional<lcr::Contact3DCycleSide> contact_input, contact_output;

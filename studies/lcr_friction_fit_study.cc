@@ -17,6 +17,7 @@
 #include "objectives/problem.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_friction_fit {
@@ -196,10 +197,11 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
 
 void Write(const Study& st, const Result& res, Outputs& out) {
   out.AddJson("result.json", ToJson(st, res));
-  std::vector<double> to, tin, tfit, resid;
+  std::vector<double> to, tin, tsd, tfit, resid;
   for (size_t i = 0; i < res.rows.size(); ++i) {
     to.push_back(st.measurements[i].output_torque_Nm);
     tin.push_back(st.measurements[i].input_torque_Nm);
+    tsd.push_back(st.measurements[i].sd_Nm);
     tfit.push_back(res.rows[i].fitted_input_torque_Nm);
     resid.push_back(res.rows[i].residual_Nm);
   }
@@ -210,7 +212,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
   t.Add("residual_Nm", resid);
   out.Add("fit.csv", ToCsv(t));
   out.Add("fit.svg", SvgLinePlot({{"fitted model", res.line_output_torque_Nm, res.line_input_torque_Nm},
-                                  {"measured", to, tin}},
+                                  {"measured (± standard deviation)", to, tin, tsd, SeriesStyle::kMarkers}},
                                  {"Input torque against output torque", "output torque [N·m]",
                                   "input torque [N·m]"}));
 }
@@ -229,6 +231,19 @@ Fidelity Knobs(const nlohmann::json&) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_friction_fit", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("lcr_friction_fit", {
+    {"friction coefficient", "/parameters/friction_coefficient/value", "", "", NAN, true,
+     "/parameters/friction_coefficient/standard_error"},
+    {"no-load drag torque", "/parameters/drag_torque_Nm/value", "N·m", "", NAN, true,
+     "/parameters/drag_torque_Nm/standard_error"},
+    {"reduced chi-square", "/reduced_chi_square", ""},
+    {"degrees of freedom", "/degrees_of_freedom", ""},
+    {"solver status", "/status", ""},
+});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_friction_fit

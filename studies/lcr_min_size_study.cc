@@ -13,6 +13,7 @@
 
 #include "model/lcr/kinematics.h"
 #include "studies/lcr_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_min_size {
@@ -416,6 +417,15 @@ void Write(const Study& s, const Result& result, Outputs& out) {
   t.Add("outer_diameter_mm", od);
   t.Add("feasible", feas);
   out.Add("candidates.csv", ToCsv(t));
+  // The answer at a glance: outer diameter of each feasible lobe combination, the smallest marked.
+  PlotOptions po{"Smallest outer diameter of each feasible lobe combination", "input cam lobes [-]",
+                 "outer diameter [mm]"};
+  if (result.best >= 0) {
+    const Candidate& best = result.candidates[result.best];
+    po.points = {{"smallest: " + ComboName(best.combo), double(best.combo.lobes_a),
+                  lcr::OuterDiameter(*best.outcome.design)}};
+  }
+  out.Add("outer_diameter.svg", SvgLinePlot({{"feasible candidates", ma, od, {}, SeriesStyle::kMarkers}}, po));
 }
 
 std::string Summary(const Study& s, const Result& result) {
@@ -475,4 +485,22 @@ Fidelity Knobs(const nlohmann::json&) {
 CAMOPT_REGISTER_FIDELITY("lcr_min_size", Knobs);
 
 }  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("lcr_min_size", {
+    {"smallest outer diameter", "/best/outer_diameter_mm", "mm"},
+    {"input cam lobes", "/best/input/lobes", ""},
+    {"output cam lobes", "/best/output/lobes", ""},
+    {"eccentricity", "/best/eccentricity_mm", "mm"},
+    {"roller diameter", "/best/input/roller_diameter_mm", "mm"},
+    {"largest contact stress", "/best/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa"},
+    {"largest roller force", "/best/max_roller_force_N", "N", "study:/limits/roller_load_N"},
+    {"undercut margin", "/best/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
+    {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
+    {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
+    {"binding limits", "/best/binding", ""},
+});
+}  // namespace
+
 }  // namespace camopt::studies::lcr_min_size

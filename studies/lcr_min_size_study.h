@@ -61,8 +61,8 @@ struct Result {
 Study Parse(const Node& root);
 Result Run(const Study& study, const RunContext& ctx);
 nlohmann::json ToJson(const Study& study, const Result& result);
-/// result.json, candidates.csv, best_lcr_analysis.json (when something fits); marks the outputs
-/// incomplete (exit code 3) when nothing fits.
+/// result.json, candidates.csv, outer_diameter.svg, best_lcr_analysis.json (when something fits);
+/// marks the outputs incomplete (exit code 3) when nothing fits.
 void Write(const Study& study, const Result& result, Outputs& out);
 /// Lines for the terminal: best outer diameter, time, and what each binding limit costs
 /// ("contact stress limit +10 MPa → −0.13 mm").

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "studies/format.h"
 #include "studies/writers.h"
@@ -77,6 +78,25 @@ nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints) {
   return out;
 }
 
+namespace {
+
+// "acceleration_deg_per_rad2" → "acceleration [deg/rad²]": a CSV column name as an axis label.
+std::string AxisLabel(const std::string& column) {
+  size_t cut = std::string::npos;
+  for (const char* unit : {"_deg", "_mm", "_rad"}) cut = std::min(cut, column.find(unit));
+  if (cut == std::string::npos) return column;
+  std::string quantity = column.substr(0, cut), unit = column.substr(cut + 1);
+  for (char& c : quantity)
+    if (c == '_') c = ' ';
+  for (auto [from, to] : {std::pair<std::string, std::string>{"_per_", "/"}, {"rad2", "rad²"}, {"rad3", "rad³"}})
+    for (size_t at = unit.find(from); at != std::string::npos; at = unit.find(from, at + to.size()))
+      unit.replace(at, from.size(), to);
+  if (quantity == "follower" || quantity == "swing") quantity += " displacement";
+  return quantity + " [" + unit + "]";
+}
+
+}  // namespace
+
 void AddSvajPlots(Outputs& out, const std::string& title_prefix,
                   const std::vector<double>& cam_angle_deg,
                   const std::array<std::string, 4>& y_labels,
@@ -86,7 +106,7 @@ void AddSvajPlots(Outputs& out, const std::string& title_prefix,
     PlotOptions o;
     o.title = title_prefix + " " + names[k];
     o.x_label = "cam angle [deg]";
-    o.y_label = y_labels[k];
+    o.y_label = AxisLabel(y_labels[k]);
     out.Add(std::string("svaj_") + names[k] + ".svg",
             SvgLinePlot({Series{names[k], cam_angle_deg, *columns[k]}}, o));
   }

@@ -44,7 +44,8 @@ MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples);
 nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints);
 
 /// svaj_{displacement,velocity,acceleration,jerk}.svg against cam angle [deg]; titles
-/// "<title_prefix> displacement" …, y labels as given (the series.csv column names).
+/// "<title_prefix> displacement" …; y_labels are the series.csv column names, shown as
+/// "quantity [unit]" ("acceleration_deg_per_rad2" → "acceleration [deg/rad²]").
 void AddSvajPlots(Outputs& out, const std::string& title_prefix,
                   const std::vector<double>& cam_angle_deg,
                   const std::array<std::string, 4>& y_labels,

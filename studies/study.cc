@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "studies/report.h"
 #include "studies/work_limits.h"
 
 namespace camopt::studies {
@@ -259,6 +260,7 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
         outputs.MarkIncomplete(kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
     }
   }
+  AddReport(kind, study, outputs);  // last: it shows every other file of the run
   return outputs;
 }
 

@@ -13,6 +13,7 @@
 #include "model/lcr/kinematics.h"
 #include "model/rigidity/lost_motion.h"
 #include "studies/lcr_input.h"
+#include "studies/report.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::transmission_rigidity {
@@ -499,6 +500,20 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("transmission_rigidity", Knobs);
+}  // namespace
+
+namespace {
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("transmission_rigidity", {
+    {"torsional rigidity at end b", "/rigidity_at_end_b_Nm_per_rad", "N·m/rad"},
+    {"torsional rigidity at end a", "/rigidity_at_end_a_Nm_per_rad", "N·m/rad"},
+    {"backlash at end b", "/backlash_at_end_b_arcmin", "arcmin"},
+    {"backlash at end a", "/backlash_at_end_a_arcmin", "arcmin"},
+    {"deflection at end b", "/deflection_at_end_b_deg", "deg"},
+    {"total ratio", "/total_ratio", ""},
+    {"most compliant element", "/dominant/name", ""},
+    {"its share of the compliance", "/dominant/compliance_share", ""},
+});
 }  // namespace
 
 }  // namespace camopt::studies::transmission_rigidity

@@ -69,35 +69,157 @@ std::string ToCsv(const Table& table) {
   return os.str();
 }
 
+namespace {
+
+// Dash pattern and marker shape of series k: the first solid with circles, the next ones dashed
+// or dotted, so that a series lying exactly on another still shows.
+const char* kDashes[] = {"", "8,4", "2,3", "12,3,3,3", "5,5", "1,4"};
+enum class Shape { kCircle, kSquare, kTriangle, kDiamond, kDown };
+
+std::string Marker(Shape shape, double x, double y, double r, const std::string& color, bool filled) {
+  std::ostringstream os;
+  const std::string paint = std::string(" fill=\"") + (filled ? color : "white") + "\" stroke=\"" +
+                            (filled ? "black" : color) + "\" stroke-width=\"1.2\"/>";
+  switch (shape) {
+    case Shape::kCircle:
+      os << "<circle cx=\"" << Px(x) << "\" cy=\"" << Px(y) << "\" r=\"" << Px(r) << "\"" << paint;
+      break;
+    case Shape::kSquare:
+      os << "<rect x=\"" << Px(x - r) << "\" y=\"" << Px(y - r) << "\" width=\"" << Px(2 * r)
+         << "\" height=\"" << Px(2 * r) << "\"" << paint;
+      break;
+    case Shape::kTriangle:
+      os << "<path d=\"M" << Px(x) << "," << Px(y - 1.2 * r) << " L" << Px(x + 1.1 * r) << ","
+         << Px(y + 0.8 * r) << " L" << Px(x - 1.1 * r) << "," << Px(y + 0.8 * r) << " Z\"" << paint;
+      break;
+    case Shape::kDiamond:
+      os << "<path d=\"M" << Px(x) << "," << Px(y - 1.3 * r) << " L" << Px(x + 1.3 * r) << ","
+         << Px(y) << " L" << Px(x) << "," << Px(y + 1.3 * r) << " L" << Px(x - 1.3 * r) << ","
+         << Px(y) << " Z\"" << paint;
+      break;
+    case Shape::kDown:
+      os << "<path d=\"M" << Px(x) << "," << Px(y + 1.2 * r) << " L" << Px(x + 1.1 * r) << ","
+         << Px(y - 0.8 * r) << " L" << Px(x - 1.1 * r) << "," << Px(y - 0.8 * r) << " Z\"" << paint;
+      break;
+  }
+  return os.str() + "\n";
+}
+
+// Tick label: short, and exactly 0 near zero.
+std::string Tick(double v, double step) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", std::abs(v) < 1e-9 * step ? 0.0 : v);
+  return buf;
+}
+
+bool DrawsLine(const Series& s) {
+  if (s.markers) return false;
+  switch (s.style) {
+    case SeriesStyle::kLine:
+    case SeriesStyle::kLineAndMarkers: return true;
+    case SeriesStyle::kMarkers: return false;
+    case SeriesStyle::kAuto: break;
+  }
+  return std::min(s.x.size(), s.y.size()) > 1 && s.y_error.empty();
+}
+
+bool DrawsMarkers(const Series& s) {
+  return s.markers || s.style == SeriesStyle::kMarkers || s.style == SeriesStyle::kLineAndMarkers ||
+         (s.style == SeriesStyle::kAuto && !DrawsLine(s));
+}
+
+}  // namespace
+
 std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o) {
   double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+  auto grow_x = [&](double x) { xmin = std::min(xmin, x), xmax = std::max(xmax, x); };
+  auto grow_y = [&](double y) { ymin = std::min(ymin, y), ymax = std::max(ymax, y); };
   for (const auto& s : series)
     for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-      xmin = std::min(xmin, s.x[i]);
-      xmax = std::max(xmax, s.x[i]);
-      ymin = std::min(ymin, s.y[i]);
-      ymax = std::max(ymax, s.y[i]);
+      grow_x(s.x[i]);
+      grow_y(s.y[i]);
+      if (i < s.y_error.size() && std::isfinite(s.y_error[i])) {
+        grow_y(s.y[i] - std::abs(s.y_error[i]));
+        grow_y(s.y[i] + std::abs(s.y_error[i]));
+      }
     }
-  if (!std::isfinite(xmin)) xmin = 0, xmax = 1, ymin = 0, ymax = 1;
-  if (xmax - xmin < 1e-12) xmax = xmin + 1;
+  for (const auto& p : o.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y)) grow_x(p.x), grow_y(p.y);
+  const bool have_data = std::isfinite(xmin);
+  for (const auto& g : o.guides) {
+    if (!std::isfinite(g.value)) continue;
+    if (g.vertical) grow_x(g.value);
+    else grow_y(g.value);
+  }
+  if (!have_data || !std::isfinite(xmin) || !std::isfinite(ymin)) xmin = 0, xmax = 1, ymin = 0, ymax = 1;
+  // Markers keep clear of the frame: a little room left and right.
+  const bool markers = !o.points.empty() || std::any_of(series.begin(), series.end(), [](const Series& s) {
+    return DrawsMarkers(s);
+  });
+  if (markers && xmax > xmin) {
+    const double xpad = 0.03 * (xmax - xmin);
+    xmin -= xpad;
+    xmax += xpad;
+  }
+  if (xmax - xmin < 1e-12 * std::max(1.0, std::abs(xmax))) {
+    const double pad = std::max(1.0, std::abs(xmax)) * 0.05;
+    xmin -= pad;
+    xmax += pad;
+  }
   if (ymax - ymin < 1e-12 * std::max(1.0, std::abs(ymax))) {
     const double pad = std::max(1.0, std::abs(ymax)) * 0.05;
     ymin -= pad;
     ymax += pad;
   }
+  // A little room above and below, so that no curve or limit line lies on the frame.
+  const double ypad = 0.02 * (ymax - ymin);
+  ymin -= ypad;
+  ymax += ypad;
   const double ystep = NiceStep(ymax - ymin, 6), xstep = NiceStep(xmax - xmin, 8);
   ymin = std::floor(ymin / ystep) * ystep;
   ymax = std::ceil(ymax / ystep) * ystep;
 
-  const double L = 80, R = 20, T = 40, B = 60;
-  const double W = o.width - L - R, H = o.height - T - B;
+  // Legend entries (series, guides, points) in rows above the plot area.
+  struct Entry {
+    std::string label, color, dash;
+    bool line;
+    int shape;  // -1: none
+    bool filled;
+  };
+  std::vector<Entry> entries;
+  for (size_t k = 0; k < series.size(); ++k)
+    entries.push_back({series[k].label, kPalette[k % 10], kDashes[k % 6], DrawsLine(series[k]),
+                       DrawsMarkers(series[k]) ? static_cast<int>(k % 5) : -1,
+                       false});
+  for (const auto& g : o.guides)
+    if (std::isfinite(g.value)) entries.push_back({g.label, "#000000", "6,3", true, -1, false});
+  for (size_t i = 0; i < o.points.size(); ++i)
+    entries.push_back({o.points[i].label, kPalette[(series.size() + i) % 10], "", false,
+                       static_cast<int>((3 + i) % 5), true});
+  const double L = 80, R = 20, B = 60, row_h = 16;
+  std::vector<std::pair<double, int>> slots;  // x offset, row
+  {
+    double x = 0;
+    int row = 0;
+    for (const auto& e : entries) {
+      const double w = 42 + 6.8 * static_cast<double>(e.label.size());
+      if (x > 0 && x + w > o.width - L - R) x = 0, ++row;
+      slots.push_back({x, row});
+      x += w + 14;
+    }
+  }
+  const int legend_rows = slots.empty() ? 0 : slots.back().second + 1;
+  const double T = 44 + row_h * legend_rows + (legend_rows ? 6 : 0);
+  const int height = o.height + static_cast<int>(row_h * std::max(0, legend_rows - 1));
+  const double W = o.width - L - R, H = height - T - B;
   auto X = [&](double x) { return L + (x - xmin) / (xmax - xmin) * W; };
   auto Y = [&](double y) { return T + (ymax - y) / (ymax - ymin) * H; };
 
   std::ostringstream os;
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << o.width << "\" height=\""
-     << o.height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+     << height << "\" viewBox=\"0 0 " << o.width << " " << height
+     << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   os << "<text x=\"" << o.width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
      << Escape(o.title) << "</text>\n";
@@ -105,39 +227,87 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
     os << "<line x1=\"" << Px(L) << "\" x2=\"" << Px(L + W) << "\" y1=\"" << Px(Y(y))
        << "\" y2=\"" << Px(Y(y)) << "\" stroke=\"#ddd\"/>\n";
     os << "<text x=\"" << Px(L - 6) << "\" y=\"" << Px(Y(y) + 4) << "\" text-anchor=\"end\">"
-       << Num(std::abs(y) < 1e-12 * ystep ? 0.0 : y) << "</text>\n";
+       << Tick(y, ystep) << "</text>\n";
   }
   for (double x = std::ceil(xmin / xstep) * xstep; x <= xmax + 1e-9 * xstep; x += xstep) {
     os << "<line y1=\"" << Px(T) << "\" y2=\"" << Px(T + H) << "\" x1=\"" << Px(X(x))
        << "\" x2=\"" << Px(X(x)) << "\" stroke=\"#eee\"/>\n";
     os << "<text x=\"" << Px(X(x)) << "\" y=\"" << Px(T + H + 18) << "\" text-anchor=\"middle\">"
-       << Num(std::abs(x) < 1e-12 * xstep ? 0.0 : x) << "</text>\n";
+       << Tick(x, xstep) << "</text>\n";
   }
   os << "<rect x=\"" << Px(L) << "\" y=\"" << Px(T) << "\" width=\"" << Px(W) << "\" height=\""
      << Px(H) << "\" fill=\"none\" stroke=\"black\"/>\n";
-  os << "<text x=\"" << Px(L + W / 2) << "\" y=\"" << o.height - 15
+  os << "<text x=\"" << Px(L + W / 2) << "\" y=\"" << height - 15
      << "\" text-anchor=\"middle\">" << Escape(o.x_label) << "</text>\n";
   os << "<text transform=\"translate(18," << Px(T + H / 2)
      << ") rotate(-90)\" text-anchor=\"middle\">" << Escape(o.y_label) << "</text>\n";
+  // Guides under the data.
+  for (const auto& g : o.guides) {
+    if (!std::isfinite(g.value)) continue;
+    if (g.vertical)
+      os << "<line x1=\"" << Px(X(g.value)) << "\" x2=\"" << Px(X(g.value)) << "\" y1=\"" << Px(T)
+         << "\" y2=\"" << Px(T + H) << "\"";
+    else
+      os << "<line x1=\"" << Px(L) << "\" x2=\"" << Px(L + W) << "\" y1=\"" << Px(Y(g.value))
+         << "\" y2=\"" << Px(Y(g.value)) << "\"";
+    os << " stroke=\"#000000\" stroke-width=\"1.5\" stroke-dasharray=\"6,3\"/>\n";
+  }
   for (size_t k = 0; k < series.size(); ++k) {
     const auto& s = series[k];
-    const char* color = kPalette[k % 10];
-    std::ostringstream path;
-    bool pen = false;
-    for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
-        pen = false;
-        continue;
+    const std::string color = kPalette[k % 10];
+    const size_t n = std::min(s.x.size(), s.y.size());
+    if (DrawsLine(s)) {
+      std::ostringstream path;
+      bool pen = false;
+      for (size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+          pen = false;
+          continue;
+        }
+        path << (pen ? " L" : " M") << Px(X(s.x[i])) << "," << Px(Y(s.y[i]));
+        pen = true;
       }
-      path << (pen ? " L" : " M") << Px(X(s.x[i])) << "," << Px(Y(s.y[i]));
-      pen = true;
+      os << "<path d=\"" << path.str() << "\" fill=\"none\" stroke=\"" << color
+         << "\" stroke-width=\"" << (k == 0 ? "2" : "1.5") << "\"";
+      if (*kDashes[k % 6]) os << " stroke-dasharray=\"" << kDashes[k % 6] << "\"";
+      os << "/>\n";
     }
-    os << "<path d=\"" << path.str() << "\" fill=\"none\" stroke=\"" << color
-       << "\" stroke-width=\"1.5\"/>\n";
-    os << "<line x1=\"" << Px(L + 10) << "\" x2=\"" << Px(L + 30) << "\" y1=\"" << Px(T + 14 + 16 * k)
-       << "\" y2=\"" << Px(T + 14 + 16 * k) << "\" stroke=\"" << color << "\" stroke-width=\"2\"/>\n";
-    os << "<text x=\"" << Px(L + 35) << "\" y=\"" << Px(T + 18 + 16 * k) << "\">" << Escape(s.label)
+    for (size_t i = 0; i < std::min(n, s.y_error.size()); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || !std::isfinite(s.y_error[i])) continue;
+      const double x = X(s.x[i]), y0 = Y(s.y[i] - std::abs(s.y_error[i])),
+                   y1 = Y(s.y[i] + std::abs(s.y_error[i]));
+      os << "<path d=\"M" << Px(x) << "," << Px(y0) << " L" << Px(x) << "," << Px(y1) << " M"
+         << Px(x - 4) << "," << Px(y0) << " L" << Px(x + 4) << "," << Px(y0) << " M" << Px(x - 4)
+         << "," << Px(y1) << " L" << Px(x + 4) << "," << Px(y1) << "\" fill=\"none\" stroke=\""
+         << color << "\" stroke-width=\"1.2\"/>\n";
+    }
+    if (DrawsMarkers(s))
+      for (size_t i = 0; i < n; ++i)
+        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+          os << Marker(static_cast<Shape>(k % 5), X(s.x[i]), Y(s.y[i]), 3.5, color, false);
+  }
+  for (size_t i = 0; i < o.points.size(); ++i) {
+    const auto& p = o.points[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    const double x = X(p.x), y = Y(p.y);
+    os << Marker(static_cast<Shape>((3 + i) % 5), x, y, 6, kPalette[(series.size() + i) % 10], true);
+    const bool right_half = x > L + 0.6 * W;
+    os << "<text x=\"" << Px(right_half ? x - 10 : x + 10) << "\" y=\"" << Px(y - 8)
+       << "\" text-anchor=\"" << (right_half ? "end" : "start")
+       << "\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">" << Escape(p.label)
        << "</text>\n";
+  }
+  for (size_t k = 0; k < entries.size(); ++k) {
+    const auto& e = entries[k];
+    const double x = L + slots[k].first, y = 40 + row_h * slots[k].second;
+    if (e.line) {
+      os << "<line x1=\"" << Px(x) << "\" x2=\"" << Px(x + 28) << "\" y1=\"" << Px(y) << "\" y2=\""
+         << Px(y) << "\" stroke=\"" << e.color << "\" stroke-width=\"2\"";
+      if (!e.dash.empty()) os << " stroke-dasharray=\"" << e.dash << "\"";
+      os << "/>\n";
+    }
+    if (e.shape >= 0) os << Marker(static_cast<Shape>(e.shape), x + 14, y, e.filled ? 5 : 3.5, e.color, e.filled);
+    os << "<text x=\"" << Px(x + 34) << "\" y=\"" << Px(y + 4) << "\">" << Escape(e.label) << "</text>\n";
   }
   os << "</svg>\n";
   return os.str();
@@ -157,6 +327,8 @@ std::string SvgDrawing(const Drawing& d, int size) {
         if (std::isfinite(x) && std::isfinite(y)) grow(x, y, 0);
     for (const auto& c : layer.circles) grow(c.x, c.y, c.r);
   }
+  for (const auto& l : d.labels)
+    if (std::isfinite(l.x) && std::isfinite(l.y)) grow(l.x, l.y, 0);
   if (!std::isfinite(xmin)) xmin = ymin = -1, xmax = ymax = 1;
   const double span = std::max({xmax - xmin, ymax - ymin, 1e-9});
   const double margin = 30, title = 30, scale = (size - 2 * margin) / span;
@@ -166,7 +338,8 @@ std::string SvgDrawing(const Drawing& d, int size) {
 
   std::ostringstream os;
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\""
-     << size + title << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+     << size + title << "\" viewBox=\"0 0 " << size << " " << size + title
+     << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   os << "<text x=\"" << size / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"15\">"
      << Escape(d.title) << "</text>\n";
@@ -185,14 +358,22 @@ std::string SvgDrawing(const Drawing& d, int size) {
       }
       if (layer.closed) path << " Z";
       os << "<path d=\"" << path.str() << "\" fill=\"none\" stroke=\"" << layer.color
-         << "\" stroke-width=\"" << layer.stroke_width << "\"/>\n";
+         << "\" stroke-width=\"" << layer.stroke_width << "\"";
+      if (!layer.dash.empty()) os << " stroke-dasharray=\"" << layer.dash << "\"";
+      os << "/>\n";
     }
     for (const auto& c : layer.circles)
       os << "<circle cx=\"" << Px(X(c.x)) << "\" cy=\"" << Px(Y(c.y)) << "\" r=\"" << Px(c.r * scale)
          << "\" fill=\"none\" stroke=\"" << layer.color << "\" stroke-width=\"" << layer.stroke_width
          << "\"/>\n";
     os << "<text x=\"10\" y=\"" << 48 + 16 * row++ << "\" fill=\"" << layer.color << "\">"
-       << Escape(layer.name) << "</text>\n";
+       << Escape(layer.name) << (layer.dash.empty() ? "" : " (dashed)") << "</text>\n";
+  }
+  for (const auto& l : d.labels) {
+    if (!std::isfinite(l.x) || !std::isfinite(l.y)) continue;
+    os << "<text x=\"" << Px(X(l.x)) << "\" y=\"" << Px(Y(l.y) + 4) << "\" text-anchor=\"middle\" fill=\""
+       << l.color << "\" font-size=\"11\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">"
+       << Escape(l.text) << "</text>\n";
   }
   os << "</svg>\n";
   return os.str();

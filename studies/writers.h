@@ -1,4 +1,5 @@
-// Output writers shared by every study kind: CSV series, SVG line plots and drawings, DXF.
+// Output writers shared by every study kind: CSV series, SVG plots and drawings, DXF.
+// (report.html, which gathers every SVG of a run, is in studies/report.h.)
 // They return the file content as a string; Outputs writes everything at once.
 #pragma once
 
@@ -21,17 +22,45 @@ struct Table {
 /// CSV with a header line; full precision (%.10g).
 std::string ToCsv(const Table& table);
 
+/// How a series is drawn. kAuto: a line, or a marker when the series has a single point or
+/// error bars.
+enum class SeriesStyle { kAuto, kLine, kMarkers, kLineAndMarkers };
+
 struct Series {
   std::string label;
   std::vector<double> x, y;
+  /// Optional ±error bars on y (one per point, e.g. a measurement's standard deviation).
+  std::vector<double> y_error = {};
+  SeriesStyle style = SeriesStyle::kAuto;
+  bool markers = false;  ///< true: the same as style = kMarkers (a scatter plot)
+};
+
+/// A horizontal line at y = value (a limit, a target) or a vertical one at x = value, drawn dashed
+/// across the plot and named in the legend. A non-finite value (no limit) draws nothing.
+struct GuideLine {
+  std::string label;
+  double value;
+  bool vertical = false;
+};
+
+/// A labelled point on a curve (optimum, reference design): a large filled marker, its label
+/// beside it and in the legend.
+struct MarkedPoint {
+  std::string label;
+  double x, y;
 };
 
 struct PlotOptions {
-  std::string title, x_label, y_label;
+  std::string title, x_label, y_label;  // axis labels as "quantity [unit]"
   int width = 800, height = 480;
+  std::vector<GuideLine> guides = {};
+  std::vector<MarkedPoint> points = {};
 };
 
-/// An SVG line plot with axes, ticks, labels and a legend. Non-finite points are skipped.
+/// An SVG plot with axes, ticks, labels and a legend above the plot area (so that it hides no
+/// data). Series k has its own colour and, from the second on, its own dash pattern and marker
+/// shape, so that a series lying on another stays visible. Guides, marked points and error bars
+/// are inside the axis range. Non-finite points are skipped.
 std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& options);
 
 using Polyline = std::vector<std::pair<double, double>>;
@@ -48,12 +77,21 @@ struct Drawing {
     std::vector<Circle> circles;
     bool closed = true;
     double stroke_width = 1.0;  // in px at the default scale
+    std::string dash = "";      // SVG stroke-dasharray ("" solid), e.g. for a curve on another
+  };
+  /// A short text centred at (x, y) in model units, e.g. a roller's number.
+  struct Label {
+    double x, y;
+    std::string text;
+    std::string color = "black";
   };
   std::string title;
   std::vector<Layer> layers;
+  std::vector<Label> labels = {};
 };
 
-/// SVG of a drawing, fitted to the canvas with equal axis scales.
+/// SVG of a drawing, fitted to the canvas with equal axis scales; a layer's name is its legend
+/// entry, labels are drawn last (on top).
 std::string SvgDrawing(const Drawing& drawing, int size_px = 800);
 
 /// DXF (R2000, through dxflib) of a drawing: one DXF layer per drawing layer, polylines as

@@ -25,15 +25,31 @@ struct RollerContact {
   T curvature;        // pitch-curve curvature κ at this roller [1/mm], signed
 };
 
+/// Unit vector u(2πi/n) of roller slot i on a turret of n rollers (a double for every scalar).
+inline Vec2<double> TurretSlot(int i, int n) { return U(2.0 * kPi * i / n); }
+
+/// Roller centre of a slot on a turret turned by u(θ_o) (given as its cosine and sine):
+/// r_d · (u(θ_o) rotating u(2πi/n)), the angle-addition formula. Each centre carries the rounding of
+/// one sincos and two products (a few ulp, no accumulation over rollers or angles), instead of one
+/// sincos per roller; the values differ from r_d u(2πi/n + θ_o) only in the last digits.
+template <typename T>
+Vec2<T> RotatedSlot(const T& turret_radius, const Vec2<double>& slot, const Vec2<T>& turn) {
+  return turret_radius * Vec2<T>(turn.x() * slot.x() - turn.y() * slot.y(),
+                                 turn.y() * slot.x() + turn.x() * slot.y());
+}
+
 /// Roller-centre positions of one turret at input angle θ [rad]. The output turret turns by
-/// θ_o = (1 − n_A m_B/(m_A n_B)) θ; the fixed turret stands.
+/// θ_o = (1 − n_A m_B/(m_A n_B)) θ (one sincos, then RotatedSlot per roller); the fixed turret stands.
 template <typename T>
 std::vector<Vec2<T>> RollerCentres(const Reducer<T>& r, Side s, const T& theta) {
   const CamSide<T>& c = r.side(s);
-  const T turn = s == Side::kInput ? T(0.0) : T(OutputSpeedRatio(r)) * theta;
   std::vector<Vec2<T>> centres(c.rollers);
-  for (int i = 0; i < c.rollers; ++i)
-    centres[i] = c.turret_radius * U(T(2.0 * kPi * i / c.rollers) + turn);
+  if (s == Side::kInput) {
+    for (int i = 0; i < c.rollers; ++i) centres[i] = c.turret_radius * TurretSlot(i, c.rollers).template cast<T>();
+    return centres;
+  }
+  const Vec2<T> turn = U(T(OutputSpeedRatio(r)) * theta);
+  for (int i = 0; i < c.rollers; ++i) centres[i] = RotatedSlot(c.turret_radius, TurretSlot(i, c.rollers), turn);
   return centres;
 }
 
@@ -49,12 +65,13 @@ std::vector<RollerContact<T>> RollerContacts(const Reducer<T>& r, Side s, const 
   const CamSide<T>& c = r.side(s);
   const Vec2<T> pitch = PitchPointOfCam(r, s, theta);
   const Vec2<T> ecc = U(theta);
+  const T inv_radius = T(1.0) / c.turret_radius;
   std::vector<RollerContact<T>> out;
   out.reserve(c.rollers);
   for (const Vec2<T>& o : RollerCentres(r, s, theta)) {
     const Vec2<T> v = pitch - o;
-    const Vec2<T> d = v / v.norm();
-    const T cosine = o.dot(ecc) / c.turret_radius;
+    const Vec2<T> d = v * (T(1.0) / v.norm());  // one division for both components
+    const T cosine = o.dot(ecc) * inv_radius;
     out.push_back({o, d, o + c.roller_radius * d, Cross(o, d), PitchCurvature(c, r.eccentricity, cosine)});
   }
   return out;

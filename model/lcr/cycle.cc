@@ -26,12 +26,24 @@ void Resize(TurretBuffers& b, int n) {
   for (auto* v : {&b.cx, &b.cy, &b.arm, &b.dx, &b.dy, &b.kappa, &b.loaded, &b.stress}) v->resize(n);
 }
 
-/// Roller centres of one turret at θ into b.cx, b.cy: the same expression as RollerCentres.
-void FillCentres(TurretBuffers& b, const Reducer<double>& r, Side s, double theta) {
+/// The slots u(2πi/n) of one turret (TurretSlot), computed once per cycle.
+std::vector<Vec2<double>> Slots(const CamSide<double>& c) {
+  std::vector<Vec2<double>> slots(c.rollers);
+  for (int i = 0; i < c.rollers; ++i) slots[i] = TurretSlot(i, c.rollers);
+  return slots;
+}
+
+/// Roller centres of one turret at θ into b.cx, b.cy: the same expressions as RollerCentres.
+void FillCentres(TurretBuffers& b, const Reducer<double>& r, Side s, const std::vector<Vec2<double>>& slots,
+                 double theta) {
   const CamSide<double>& c = r.side(s);
-  const double turn = s == Side::kInput ? 0.0 : OutputSpeedRatio(r) * theta;
+  if (s == Side::kInput) {
+    for (int i = 0; i < c.rollers; ++i) b.cx[i] = c.turret_radius * slots[i].x(), b.cy[i] = c.turret_radius * slots[i].y();
+    return;
+  }
+  const Vec2<double> turn = U(OutputSpeedRatio(r) * theta);
   for (int i = 0; i < c.rollers; ++i) {
-    const Vec2<double> o = c.turret_radius * U(double(2.0 * kPi * i / c.rollers) + turn);
+    const Vec2<double> o = RotatedSlot(c.turret_radius, slots[i], turn);
     b.cx[i] = o.x(), b.cy[i] = o.y();
   }
 }
@@ -41,36 +53,41 @@ void ContactKernel(const CamSide<double> c, double e, double px, double py, doub
                           double sign, int n, const double* __restrict cx, const double* __restrict cy,
                           double* __restrict arm, double* __restrict dx, double* __restrict dy,
                           double* __restrict kappa, double* __restrict loaded) {
-  const double rd = c.turret_radius;
+  const double inv_radius = 1.0 / c.turret_radius;
   for (int k = 0; k < n; ++k) {
     const double vx = px - cx[k], vy = py - cy[k];
     const double norm = std::sqrt(vx * vx + vy * vy);
-    const double ux = vx / norm, uy = vy / norm;
+    const double inv = 1.0 / norm;
+    const double ux = vx * inv, uy = vy * inv;
     dx[k] = ux, dy[k] = uy;
     const double a = cx[k] * uy - cy[k] * ux;
     arm[k] = a;
     const double sa = sign * a;
     loaded[k] = sa > 0.0 ? sa : 0.0;  // PositivePart
-    kappa[k] = PitchCurvature(c, e, (cx[k] * ex + cy[k] * ey) / rd);
+    kappa[k] = PitchCurvature(c, e, (cx[k] * ex + cy[k] * ey) * inv_radius);
   }
 }
 
 /// FillStresses' Hertz stress of every roller into p (0 where unloaded, +∞ on an undercut part of
-/// the pitch curve), branch-free over plain arrays so that it vectorises.
-void StressKernel(int n, const double* __restrict force, const double* __restrict kappa,
-                         double roller_radius, double length, double e_star, double* __restrict p) {
+/// the pitch curve), branch-free over plain arrays so that it vectorises; returns the largest.
+double StressKernel(int n, const double* __restrict force, const double* __restrict kappa,
+                    double roller_radius, double length, double e_star, double* __restrict p) {
   // The square roots on every lane first (NaN where r_eff <= 0: discarded below), then the choice.
   for (int k = 0; k < n; ++k) {
     const double r_eff = roller_radius * (1.0 - roller_radius * kappa[k]);
     p[k] = contact::LineContactPeakPressure(force[k], length, r_eff, e_star);
   }
+  // 0 where unloaded (p → 0 continuously as F → 0), +∞ where the roller sits on an undercut part
+  // of the pitch curve; written as selects so that the loop vectorises too. The maximum of
+  // non-NaN numbers does not depend on the order in which it is taken.
+  double max = 0.0;
   for (int k = 0; k < n; ++k) {
-    if (!(force[k] > 0)) {
-      p[k] = 0.0;  // p → 0 continuously as F → 0
-    } else if (!(roller_radius * (1.0 - roller_radius * kappa[k]) > 0)) {
-      p[k] = kInf;  // the roller sits on an undercut part of the pitch curve
-    }
+    const bool loaded = force[k] > 0;
+    const bool convex = roller_radius * (1.0 - roller_radius * kappa[k]) > 0;
+    p[k] = loaded ? (convex ? p[k] : kInf) : 0.0;
+    max = p[k] > max ? p[k] : max;
   }
+  return max;
 }
 
 /// The contact geometry of RollerContacts (same operations in the same order, so the same bits),
@@ -91,21 +108,22 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
                          int steps, const Stages& stages, const std::function<void(double)>& progress) {
   CycleSeries s;
   s.theta_rad.reserve(steps);
-  for (SideSeries* series : {&s.input, &s.output}) {
+  const bool any_stage = stages.forces || stages.stress || stages.efficiency;
+  for (auto [series, cam] : {std::pair{&s.input, &r.input}, std::pair{&s.output, &r.output}}) {
     series->actuating.reserve(steps);
     series->max_force_N.reserve(steps);
     series->max_stress_MPa.reserve(steps);
     series->turret_torque_Nmm.reserve(steps);
-    series->roller_force_N.reserve(steps);
+    series->roller_force_N.Reset(any_stage ? cam->rollers : 0, steps);  // no forces: empty rows
   }
   for (auto* v : {&s.tangential_force_N, &s.radial_force_N, &s.input_torque_Nmm, &s.efficiency})
     v->reserve(steps);
-  const bool any_stage = stages.forces || stages.stress || stages.efficiency;
 
   internal::TurretBuffers buf_a, buf_b;
   internal::Resize(buf_a, r.input.rollers);
   internal::Resize(buf_b, r.output.rollers);
-  if (any_stage) internal::FillCentres(buf_a, r, Side::kInput, 0.0);  // the fixed turret stands
+  const std::vector<Vec2<double>> slots_a = internal::Slots(r.input), slots_b = internal::Slots(r.output);
+  if (any_stage) internal::FillCentres(buf_a, r, Side::kInput, slots_a, 0.0);  // the fixed turret stands
   const double sign_a = LoadedArmSign(r, Side::kInput), sign_b = LoadedArmSign(r, Side::kOutput);
   const double ratio_b = double(r.output.lobes) / r.output.rollers;
   const double ratio_a = double(r.input.lobes) / r.input.rollers;
@@ -124,7 +142,7 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
         series->max_force_N.push_back(side->max_force);
         series->max_stress_MPa.push_back(side->max_stress);
         series->turret_torque_Nmm.push_back(side->turret_torque);
-        series->roller_force_N.push_back(std::move(side->force));
+        series->roller_force_N.AddRow(side->force);
       }
       s.tangential_force_N.push_back(a.tangential_force);
       s.radial_force_N.push_back(a.radial_force);
@@ -132,7 +150,7 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
       s.efficiency.push_back(a.efficiency);
     } else {
       const Vec2<double> u = U(theta);
-      internal::FillCentres(buf_b, r, Side::kOutput, theta);
+      internal::FillCentres(buf_b, r, Side::kOutput, slots_b, theta);
       internal::FillContacts(buf_a, r, Side::kInput, u, sign_a);
       internal::FillContacts(buf_b, r, Side::kOutput, u, sign_b);
       double sum_a = 0.0, sum_b = 0.0;  // SumLoadedArmSquares
@@ -147,39 +165,39 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
             std::tuple{&s.output, &buf_b, &r.output, c_b, tol_b}}) {
         // FillForces
         const size_t n = buf->loaded.size();
-        std::vector<double> force(n);
+        double* __restrict force = series->roller_force_N.AddRow();
         int actuating = 0;
         double max_force = 0.0, torque = 0.0;
         for (size_t k = 0; k < n; ++k) {
           const double a = buf->loaded[k];
           force[k] = c * a;
           torque += force[k] * a;
-          if (a > tol) ++actuating;
-          if (force[k] > max_force) max_force = force[k];
+          actuating += a > tol;
+          max_force = force[k] > max_force ? force[k] : max_force;  // branch-free, same value
         }
         // FillStresses
         double max_stress = 0.0;
         if (stages.stress) {
-          internal::StressKernel(int(n), force.data(), buf->kappa.data(), cam->roller_radius, cam->contact_length(),
-                       e_star, buf->stress.data());
-          for (size_t k = 0; k < n; ++k)
-            if (buf->stress[k] > max_stress) max_stress = buf->stress[k];
+          max_stress = internal::StressKernel(int(n), force, buf->kappa.data(), cam->roller_radius,
+                                              cam->contact_length(), e_star, buf->stress.data());
         }
         series->actuating.push_back(actuating);
         series->max_force_N.push_back(max_force);
         series->max_stress_MPa.push_back(max_stress);
         series->turret_torque_Nmm.push_back(torque);
-        series->roller_force_N.push_back(std::move(force));
       }
       double tangential = 0.0, radial = 0.0, input_torque = 0.0, efficiency = 0.0;
       if (stages.efficiency) {
         const bool unloaded = load.output_torque_Nmm == 0.0;
-        Vec2<double> per_torque(0.0, 0.0);
+        double px = 0.0, py = 0.0;  // per_torque, summed in AnalyzeAngle's order
         const double unit_b = 1.0 / sum_b;
         const double unit_a = unit_b * ratio_b * sum_b / (ratio_a * sum_a);
         for (auto [buf, c] : {std::pair{&buf_a, unit_a}, std::pair{&buf_b, unit_b}})
-          for (size_t k = 0; k < buf->loaded.size(); ++k)
-            per_torque += c * buf->loaded[k] * Vec2<double>(buf->dx[k], buf->dy[k]);
+          for (size_t k = 0; k < buf->loaded.size(); ++k) {
+            const double w = c * buf->loaded[k];
+            px += w * buf->dx[k], py += w * buf->dy[k];
+          }
+        const Vec2<double> per_torque(px, py);
         const Vec2<double> g = load.output_torque_Nmm * per_torque + Vec2<double>(0.0, -load.cam_weight_N);
         tangential = -g.dot(Perp(u));
         radial = g.dot(u);

@@ -12,10 +12,45 @@
 
 namespace camopt::lcr {
 
+/// One number per roller per angle, stored flat (one allocation per cycle, not one per angle).
+class PerRoller {
+ public:
+  void Reset(int rollers, int angles) {
+    rollers_ = rollers;
+    rows_ = 0;
+    data_.clear();
+    data_.reserve(size_t(rollers) * angles);
+  }
+  /// Appends one angle's row; returns its first element. @pre Reset was called.
+  double* AddRow() {
+    ++rows_;
+    data_.resize(data_.size() + rollers_);
+    return data_.data() + data_.size() - rollers_;
+  }
+  /// Appends a row of `rollers` numbers, or an empty row to a table reset with 0 rollers.
+  void AddRow(const std::vector<double>& row) {
+    if (row.size() != size_t(rollers_)) throw std::logic_error("PerRoller::AddRow: row of the wrong size");
+    ++rows_;
+    data_.insert(data_.end(), row.begin(), row.end());
+  }
+  size_t size() const { return rows_; }
+  /// Row of angle i as a vector (a copy).
+  std::vector<double> operator[](size_t i) const {
+    return {data_.begin() + i * rollers_, data_.begin() + (i + 1) * rollers_};
+  }
+  const double* row(size_t i) const { return data_.data() + i * rollers_; }
+  int rollers() const { return rollers_; }
+
+ private:
+  int rollers_ = 0;
+  size_t rows_ = 0;
+  std::vector<double> data_;
+};
+
 struct SideSeries {
   std::vector<int> actuating;
   std::vector<double> max_force_N, max_stress_MPa, turret_torque_Nmm;
-  std::vector<std::vector<double>> roller_force_N;  // [angle][roller]
+  PerRoller roller_force_N;  // [angle][roller]
 };
 
 struct CycleSeries {

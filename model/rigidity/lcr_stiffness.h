@@ -66,6 +66,12 @@ struct TurretSpring {
   T e_star;             ///< composite modulus [MPa]
   T clearance;          ///< normal clearance c [mm] at every roller
   T bearing = T(0.0);   ///< needle-bearing radial stiffness k_b [N/mm] in series; 0 = rigid
+  /// Per-roller normal gaps c_k [mm] added to the clearance (manufacturing deviations,
+  /// model/lcr/tolerance.h; < 0 is interference, a preload). Empty: none.
+  std::vector<T> gaps = {};
+
+  /// The normal gap of roller k [mm].
+  T Gap(size_t k) const { return gaps.empty() ? clearance : clearance + gaps[k]; }
 
   /// Force of one roller [N] at a closure δ [mm] of contact and bearing in series:
   /// δ = δ_P + F(δ_P)/k_b with F(δ_P) the contact law. The residual is convex and increasing in the
@@ -105,21 +111,23 @@ struct TurretSpring {
   /// g(ψ) = Σ F(ψ a_k − c) a_k [N·mm].
   T Torque(const T& psi) const {
     T s(0.0);
-    for (const T& a : arms) s += RollerForce(psi * a - clearance) * a;
+    for (size_t k = 0; k < arms.size(); ++k) s += RollerForce(psi * arms[k] - Gap(k)) * arms[k];
     return s;
   }
   /// g'(ψ) = Σ F'(δ_k) a_k² [N·mm/rad].
   T Rigidity(const T& psi) const {
     T s(0.0);
-    for (const T& a : arms) s += RollerRigidity(psi * a - clearance) * a * a;
+    for (size_t k = 0; k < arms.size(); ++k) s += RollerRigidity(psi * arms[k] - Gap(k)) * arms[k] * arms[k];
     return s;
   }
-  /// Largest force among the rollers at ψ [N].
-  T MaxForce(const T& psi) const {
+  /// Force of every roller at ψ [N].
+  std::vector<T> Forces(const T& psi) const {
     std::vector<T> f;
-    for (const T& a : arms) f.push_back(RollerForce(psi * a - clearance));
-    return HardMax(f);
+    for (size_t k = 0; k < arms.size(); ++k) f.push_back(RollerForce(psi * arms[k] - Gap(k)));
+    return f;
   }
+  /// Largest force among the rollers at ψ [N].
+  T MaxForce(const T& psi) const { return HardMax(Forces(psi)); }
 
   /// ψ with g(ψ) = torque. Without clearance the law is a power of ψ on each side of 0, so
   /// ψ = sign(T) (|T| / (E* (L^0.8/K_P)^(10/9) Σ_{sign a = sign T} |a|^(19/9)))^0.9 exactly.
@@ -130,6 +138,7 @@ struct TurretSpring {
     using std::abs;
     using std::pow;
     const double tv = Value(torque);
+    if (!gaps.empty()) return RotationWithGaps(torque);
     if (tv == 0.0) return T(0.0);
     const double sign = tv > 0 ? 1.0 : -1.0;
     double amax = 0.0;
@@ -163,6 +172,40 @@ struct TurretSpring {
     return psi0 - (Torque(psi0) - torque) / Rigidity(psi0);
   }
 
+  /// Rotation with per-roller gaps: g(ψ) = Σ F(ψ a_k − c_k) a_k is non-decreasing in ψ over the
+  /// whole line (interference preloads rollers of both signs of a), so the root is bracketed by
+  /// doubling steps from ψ = 0 in the direction of the residual, found by safeguarded Newton on
+  /// values, and finished by one Newton step in T (implicit function theorem). Any torque,
+  /// including 0 (the preloaded rest position; in a dead band of pure clearance the point where
+  /// the band's rollers are about to touch is not unique, and the bracket's end is returned).
+  /// @throws std::domain_error when the torque cannot be carried.
+  T RotationWithGaps(const T& torque) const {
+    const TurretSpring<double> s = ToDouble();
+    const double target = Value(torque);
+    double amax = 0.0;
+    for (double a : s.arms) amax = std::max(amax, std::abs(a));
+    double gmax = 0.0;
+    for (size_t k = 0; k < s.arms.size(); ++k) gmax = std::max(gmax, std::abs(s.Gap(k)));
+    // Every closure ψ a_k − c_k is below 1 µm of approach at |ψ| = (|c|max + 1e-3)/a_max... start
+    // there and double outward until the residual changes sign.
+    double step = (gmax + 1e-3) / amax;
+    double lo = -step, hi = step;
+    for (int it = 0; it < 200 && s.Torque(lo) > target; ++it) lo -= (step *= 2.0);
+    step = (gmax + 1e-3) / amax;
+    for (int it = 0; it < 200 && s.Torque(hi) < target; ++it) hi += (step *= 2.0);
+    if (!(s.Torque(lo) <= target && s.Torque(hi) >= target))
+      throw std::domain_error("no roller of the turret can carry this torque");
+    // SafeguardedNewtonIncreasing works on a positive variable: y = ψ − lo + w, w the bracket width.
+    const double w = hi - lo;
+    const double y = SafeguardedNewtonIncreasing(
+        [&](double v) { return s.Torque(v + lo - w); }, [&](double v) { return s.Rigidity(v + lo - w); },
+        target, w, 2.0 * w, 200, 1e-15, 1e-15);
+    const T psi0(y + lo - w);
+    const T slope = Rigidity(psi0);
+    if (!(Value(slope) > 0)) return psi0;  // inside a dead band: no rigidity, no derivative
+    return psi0 - (Torque(psi0) - torque) / slope;
+  }
+
   TurretSpring<double> ToDouble() const {
     TurretSpring<double> s;
     for (const T& a : arms) s.arms.push_back(Value(a));
@@ -170,6 +213,7 @@ struct TurretSpring {
     s.e_star = Value(e_star);
     s.clearance = Value(clearance);
     s.bearing = Value(bearing);
+    for (const T& g : gaps) s.gaps.push_back(Value(g));
     return s;
   }
 };

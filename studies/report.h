@@ -1,0 +1,52 @@
+// report.html: one self-contained page per run, written for every study kind.
+//
+// It shows the study's inputs, the headline numbers with their limits and pass/fail, the
+// warnings, every SVG plot of the run inline, and the full result.json; it loads nothing from
+// anywhere else (no script, no style sheet, no font, no image file), so it can be mailed as is.
+// The page is built from the run's own outputs (result.json and the *.svg files), so a kind only
+// declares which result.json numbers are its headlines and where their limits are
+// (CAMOPT_REGISTER_REPORT). Same outputs → byte-identical page.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studies/study.h"
+
+namespace camopt::studies {
+
+/// One headline number of a kind's report: a number in result.json and, optionally, its limit.
+/// A headline whose pointer is not in result.json (an optional stage not run) is left out.
+struct Headline {
+  std::string label;    // "largest contact stress, input cam"
+  std::string pointer;  // JSON pointer into result.json: "/input_cam/max_contact_stress_MPa"
+  std::string unit;     // "MPa" ("" for a pure number)
+  /// The limit: a JSON pointer into result.json, or into the study when it starts with "study:"
+  /// ("study:/limits/contact_stress_MPa"); where it points at no number, limit_value (NaN: no
+  /// limit, e.g. a default of 0 for a margin).
+  std::string limit_pointer = "";
+  double limit_value = NAN;
+  /// true: the value passes when value ≤ limit (a stress); false: when value ≥ limit (a margin).
+  bool upper_limit = true;
+  /// The value's error estimate (a JSON pointer into result.json), shown as "± error".
+  std::string error_pointer = "";
+};
+
+/// Registers the headlines of a kind's report; returns true so that it can initialise a static.
+/// A kind without registered headlines gets every top-level number of result.json instead.
+bool RegisterReport(const std::string& kind, std::vector<Headline> headlines);
+
+/// The page for a run of `kind` on `study` whose files are `outputs` (result.json, *.svg, …).
+std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs);
+
+/// Adds report.html (HtmlReport) to outputs.
+void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs);
+
+}  // namespace camopt::studies
+
+#define CAMOPT_REGISTER_REPORT(kind, ...)                                 \
+  static const bool CAMOPT_CONCAT(camopt_report_registered_, __LINE__) = \
+      ::camopt::studies::RegisterReport(kind, std::vector<::camopt::studies::Headline> __VA_ARGS__)

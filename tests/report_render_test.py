@@ -1,0 +1,147 @@
+#!/usr/bin/env python3
+"""report.html opens in headless Chromium: it renders and logs nothing on the console.
+
+Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR]
+
+For each of three examples (LCR analysis, LCR min-size, cycloid LTCA) it runs camopt, then checks
+report.html:
+  * statically: self-contained (no src/href/url() other than data: and in-page #anchors, no
+    <script>), every inline <svg> is well-formed XML, one inline plot per .svg file of the run;
+  * in Chromium, one start per report (--headless --screenshot, with --enable-logging=stderr
+    --v=0): the screenshot is not blank (enough non-white pixels, more than a handful of colours)
+    and the log holds no console line. The page has no script, so any console message (an error,
+    a warning, a blocked resource) means something is wrong; Chromium writes them to stderr as
+    "INFO:CONSOLE:<line>] ...".
+Exit 77 (ctest SKIP_RETURN_CODE) only when no Chromium is installed; scripts/install_deps.sh
+installs Debian's chromium, so CI runs it. With SCREENSHOT_DIR, the screenshots are copied there
+(docs/images/ is made that way).
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+EXAMPLES = [  # (example, screenshot name)
+    ("lcr_ii", "report_lcr_analysis.png"),
+    ("lcr_min_size", "report_lcr_min_size.png"),
+    ("cycloid_ltca_nnm_lcm", "report_cycloid_ltca.png"),
+]
+WINDOW = (1280, 2000)
+
+
+def find_chromium():
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def static_checks(html, out_dir):
+    errors = []
+    for m in re.finditer(r'\b(?:src|href)\s*=\s*"([^"]*)"', html):
+        if not (m.group(1).startswith("data:") or m.group(1).startswith("#")):
+            errors.append("external reference: " + m.group(0))
+    for m in re.finditer(r"url\(([^)]*)\)", html):
+        if not m.group(1).strip("'\" ").startswith("data:"):
+            errors.append("external url(): " + m.group(0))
+    if re.search(r"<script\b", html, re.I):
+        errors.append("a <script> element")
+    svgs = re.findall(r"<svg\b.*?</svg>", html, re.S)
+    for k, svg in enumerate(svgs):
+        try:
+            ET.fromstring(svg)
+        except ET.ParseError as e:
+            errors.append("inline SVG %d is not well-formed XML: %s" % (k, e))
+    files = sorted(f for f in os.listdir(out_dir) if f.endswith(".svg"))
+    if len(svgs) != len(files):
+        errors.append("%d inline plots for %d .svg files (%s)" % (len(svgs), len(files), ", ".join(files)))
+    if not files:
+        errors.append("no plot in the run")
+    return errors
+
+
+def render(chromium, html_path, png_path, profile_dir):
+    cmd = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+           "--no-first-run", "--disable-extensions", "--user-data-dir=" + profile_dir,
+           "--enable-logging=stderr", "--v=0", "--log-level=0",
+           "--window-size=%d,%d" % WINDOW, "--screenshot=" + png_path, "file://" + html_path]
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
+    return p.returncode, p.stdout + p.stderr
+
+
+def pixel_checks(png_path):
+    from PIL import Image  # Debian python3-pil
+    im = Image.open(png_path).convert("RGB")
+    if im.size != WINDOW:
+        return ["screenshot is %dx%d, expected %dx%d" % (im.size + WINDOW)]
+    small = im.resize((im.size[0] // 4, im.size[1] // 4))
+    pixels = list(small.getdata())
+    non_white = sum(1 for p in pixels if min(p) < 235)
+    colours = len(set((r // 32, g // 32, b // 32) for r, g, b in pixels))
+    share = non_white / len(pixels)
+    print("  screenshot: %.1f%% non-white pixels, %d colour bins" % (100 * share, colours))
+    errors = []
+    if share < 0.03:
+        errors.append("screenshot nearly blank (%.2f%% non-white)" % (100 * share))
+    if colours < 8:
+        errors.append("screenshot has only %d colour bins (plots not drawn?)" % colours)
+    return errors
+
+
+def main():
+    if len(sys.argv) < 4:
+        print(__doc__)
+        return 2
+    camopt, source, work = sys.argv[1], sys.argv[2], os.path.abspath(sys.argv[3])
+    shots = sys.argv[4] if len(sys.argv) > 4 else None
+    chromium = find_chromium()
+    if not chromium:
+        print("SKIPPED: no chromium on PATH (Debian package chromium; scripts/install_deps.sh installs it)")
+        return 77
+    try:
+        import PIL  # noqa: F401
+    except ImportError:
+        print("FAILED: %s has no PIL (Debian python3-pil; scripts/install_deps.sh installs it)" % sys.executable)
+        return 1
+    os.makedirs(work, exist_ok=True)
+    failures = []
+    for example, shot in EXAMPLES:
+        print(example)
+        out = os.path.join(work, example)
+        study = os.path.join(source, "studies", "examples", example + ".json")
+        run = subprocess.run([camopt, "run", study, "--out", out, "--quiet"], cwd=source,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
+        if run.returncode != 0:
+            failures.append("%s: camopt exit %d: %s" % (example, run.returncode, run.stderr.strip()))
+            continue
+        html_path = os.path.join(out, "report.html")
+        with open(html_path, encoding="utf-8") as f:
+            html = f.read()
+        errors = static_checks(html, out)
+        png = os.path.join(work, shot)
+        if os.path.exists(png):
+            os.remove(png)
+        profile = os.path.join(work, "chromium-profile")
+        shutil.rmtree(profile, ignore_errors=True)
+        code, log = render(chromium, html_path, png, profile)
+        console = [line for line in log.splitlines() if ":CONSOLE" in line]
+        errors += ["console: " + line for line in console]
+        if not os.path.exists(png):
+            errors.append("chromium (exit %d) wrote no screenshot; its log:\n%s" % (code, log[-2000:]))
+        else:
+            errors += pixel_checks(png)
+            if shots:
+                os.makedirs(shots, exist_ok=True)
+                shutil.copyfile(png, os.path.join(shots, shot))
+        failures += ["%s: %s" % (example, e) for e in errors]
+    for f in failures:
+        print("FAILED: " + f)
+    print("%d reports checked, %d problems" % (len(EXAMPLES), len(failures)))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

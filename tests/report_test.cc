@@ -1,0 +1,181 @@
+// Plots that show the answer (limits, markers, error bars, marked points, legend above the data,
+// numbered drawings) and report.html (headlines with limits and pass/fail, warnings, every plot
+// inline, self-contained, deterministic). That the page renders in a browser is
+// tests/report_render_test.py (ctest Report.renders_in_chromium).
+#include <regex>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/report.h"
+#include "studies/study.h"
+#include "studies/writers.h"
+
+namespace camopt::studies {
+namespace {
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+TEST(SvgLinePlot, LimitOutsideTheDataWidensTheAxisAndIsDrawnDashedInTheLegend) {
+  PlotOptions o{"t", "x [mm]", "stress [MPa]"};
+  o.guides = {{"stress limit", 2000.0}, {"no limit", INFINITY}};
+  const std::string svg = SvgLinePlot({{"stress", {0, 1, 2}, {1000, 1200, 1100}}}, o);
+  // The data ends at 1200; the axis reaches the limit: a tick label 2000 exists.
+  EXPECT_NE(svg.find(">2000</text>"), std::string::npos);
+  EXPECT_NE(svg.find("stress limit"), std::string::npos);
+  EXPECT_EQ(svg.find("no limit"), std::string::npos);  // an infinite limit draws nothing
+  EXPECT_EQ(Count(svg, "stroke-dasharray=\"6,3\""), 2);  // the line and its legend sample
+}
+
+TEST(SvgLinePlot, LegendSitsAboveThePlotArea) {
+  const std::string svg = SvgLinePlot({{"a", {0, 1}, {0, 1}}, {"b", {0, 1}, {1, 0}}}, {"t", "x", "y"});
+  // The frame is the rect with fill none; its top edge is below every legend text baseline.
+  std::smatch frame;
+  ASSERT_TRUE(std::regex_search(svg, frame, std::regex("<rect x=\"[0-9.]+\" y=\"([0-9.]+)\" width=\"[0-9.]+\" "
+                                                       "height=\"[0-9.]+\" fill=\"none\"")));
+  const double top = std::stod(frame[1]);
+  for (const char* label : {">a</text>", ">b</text>"}) {
+    const size_t at = svg.find(label);
+    ASSERT_NE(at, std::string::npos);
+    const size_t y = svg.rfind(" y=\"", at);
+    EXPECT_LT(std::stod(svg.substr(y + 4)), top) << label;
+  }
+}
+
+TEST(SvgLinePlot, SecondSeriesIsDashedSoThatItShowsOnTopOfAnEqualFirst) {
+  const std::string svg =
+      SvgLinePlot({{"first", {0, 1, 2}, {1, 2, 3}}, {"second", {0, 1, 2}, {1, 2, 3}}}, {"t", "x", "y"});
+  EXPECT_EQ(Count(svg, "<path d=\" M"), 2);
+  EXPECT_EQ(Count(svg, "stroke-dasharray=\"8,4\""), 2);  // the second series and its legend sample
+}
+
+TEST(SvgLinePlot, MeasuredPointsAsMarkersWithErrorBars) {
+  Series measured{"measured", {1, 2, 3}, {10, 20, 30}, {1, 2, 3}, SeriesStyle::kMarkers};
+  const std::string svg = SvgLinePlot({measured}, {"t", "x", "y"});
+  EXPECT_EQ(Count(svg, "<circle"), 3 + 1);      // three markers and the legend sample
+  EXPECT_EQ(Count(svg, "<path d=\"M"), 3);      // one error bar (with caps) per point
+  EXPECT_EQ(Count(svg, "<path d=\" M"), 0);     // no line through the measurements
+  EXPECT_NE(svg.find(">35</text>"), std::string::npos);  // 30 + 3 is inside the axis range
+}
+
+TEST(SvgLinePlot, MarkersFlagIsAScatterPlot) {
+  Series cloud{"cases", {1, 2, 3}, {3, 1, 2}};
+  cloud.markers = true;
+  const std::string svg = SvgLinePlot({cloud}, {"t", "x", "y"});
+  EXPECT_EQ(Count(svg, "<circle"), 3 + 1);   // three markers and the legend sample
+  EXPECT_EQ(Count(svg, "<path d=\" M"), 0);  // no line
+}
+
+TEST(SvgLinePlot, MarkedPointIsLabelledOnThePlotAndInTheLegend) {
+  PlotOptions o{"t", "x", "y"};
+  o.points = {{"optimum", 2, 1}};
+  const std::string svg = SvgLinePlot({{"curve", {0, 1, 2, 3}, {3, 2, 1, 2}}}, o);
+  EXPECT_EQ(Count(svg, ">optimum</text>"), 2);
+}
+
+TEST(SvgLinePlot, SinglePointSeriesIsAMarker) {
+  const std::string svg = SvgLinePlot({{"curve", {0, 1}, {0, 1}}, {"one", {0.5}, {0.5}}}, {"t", "x", "y"});
+  // The frame, the second series' square marker and its legend sample.
+  EXPECT_EQ(Count(svg, "<rect x="), 3);
+  EXPECT_EQ(Count(svg, "<path d=\" M"), 1);  // only the first series is a line
+}
+
+TEST(SvgDrawing, LabelsAreDrawnOnTop) {
+  Drawing d;
+  d.title = "rollers";
+  Drawing::Layer rollers{"ROLLERS", "blue", {}, {{0, 0, 1}, {5, 0, 1}}, true, 1.0};
+  d.layers = {rollers};
+  d.labels = {{0, 0, "1"}, {5, 0, "2"}};
+  const std::string svg = SvgDrawing(d);
+  const size_t last_circle = svg.rfind("<circle");
+  EXPECT_GT(svg.find(">1</text>"), last_circle);
+  EXPECT_GT(svg.find(">2</text>"), last_circle);
+}
+
+Outputs SampleOutputs(double stress) {
+  Outputs out;
+  out.AddJson("result.json", {{"max_stress_MPa", stress},
+                              {"limit_MPa", 1500.0},
+                              {"margin_mm", 0.2},
+                              {"warnings", {"roller <b> is small"}},
+                              {"status", "converged"}});
+  PlotOptions o{"stress", "x [deg]", "stress [MPa]"};
+  out.Add("a.svg", SvgLinePlot({{"s", {0, 1}, {1, 2}}}, o));
+  out.Add("b.svg", SvgLinePlot({{"s", {0, 1}, {2, 1}}}, o));
+  out.Add("c.csv", "x\n1\n");
+  return out;
+}
+
+const bool kRegistered = RegisterReport(
+    "report_test_kind", {{"largest stress", "/max_stress_MPa", "MPa", "/limit_MPa"},
+                         {"margin", "/margin_mm", "mm", "study:/limits/margin_mm", 0.0, false},
+                         {"not in this result", "/absent", "N"},
+                         {"status", "/status", ""}});
+
+TEST(HtmlReport, HeadlinesWithLimitsPassOrFail) {
+  ASSERT_TRUE(kRegistered);
+  const nlohmann::json study = {{"study", "report_test_kind"}, {"name", "sample"}, {"limits", {{"margin_mm", 0.5}}}};
+  const std::string html = HtmlReport("report_test_kind", study, SampleOutputs(1400));
+  // 1400 ≤ 1500 passes; 0.2 ≥ 0.5 (the study's limit) fails.
+  EXPECT_NE(html.find("1 of 2 limits exceeded"), std::string::npos);
+  EXPECT_EQ(Count(html, ">pass</td>"), 1);
+  EXPECT_EQ(Count(html, ">FAIL</td>"), 1);
+  EXPECT_NE(html.find("≤ 1500 MPa"), std::string::npos);
+  EXPECT_NE(html.find("0.2 mm</td><td class=\"n\">≥ 0.5 mm</td><td class=\"n\">-0.3 mm"), std::string::npos);
+  EXPECT_NE(html.find("100 MPa"), std::string::npos);  // the stress margin
+  EXPECT_EQ(html.find("not in this result"), std::string::npos);
+  EXPECT_NE(html.find(">converged<"), std::string::npos);
+  const std::string all_pass = HtmlReport("report_test_kind", {{"name", "sample"}}, SampleOutputs(1400));
+  EXPECT_NE(all_pass.find("All 2 limits met"), std::string::npos);  // margin limit defaults to 0
+}
+
+TEST(HtmlReport, WarningsEscapedEveryPlotInlineNothingExternal) {
+  const std::string html = HtmlReport("report_test_kind", {{"name", "a <name>"}}, SampleOutputs(1600));
+  EXPECT_NE(html.find("roller &lt;b&gt; is small"), std::string::npos);
+  EXPECT_NE(html.find("a &lt;name&gt;"), std::string::npos);
+  EXPECT_EQ(Count(html, "<svg "), 2);
+  EXPECT_EQ(Count(html, "<figcaption>"), 2);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  // Every src/href is a data: URI; the only URL is the SVG namespace name, which loads nothing.
+  const std::regex ref("(src|href)=\"(?!data:)");
+  EXPECT_FALSE(std::regex_search(html, ref));
+}
+
+TEST(HtmlReport, AnSvgWithoutViewBoxGetsOneSoThatThePageScalesItWithoutCropping) {
+  Outputs out = SampleOutputs(1400);
+  out.Add("map.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1450\" height=\"440\"><rect/></svg>\n");
+  const std::string html = HtmlReport("report_test_kind", {{"name", "n"}}, out);
+  EXPECT_NE(html.find("<svg viewBox=\"0 0 1450 440\" xmlns="), std::string::npos);
+  EXPECT_EQ(Count(html, "<figure class=\"wide\">"), 1);  // wider than a grid column: full width
+}
+
+TEST(HtmlReport, SameOutputsSamePage) {
+  const nlohmann::json study = {{"name", "x"}, {"b", {1, 2}}, {"a", {{"c", "d"}}}};
+  EXPECT_EQ(HtmlReport("report_test_kind", study, SampleOutputs(1400)),
+            HtmlReport("report_test_kind", study, SampleOutputs(1400)));
+}
+
+TEST(HtmlReport, UnregisteredKindShowsTopLevelNumbers) {
+  const std::string html = HtmlReport("no_such_kind_for_report", {{"name", "n"}}, SampleOutputs(1234.5));
+  EXPECT_NE(html.find(">max_stress_MPa<"), std::string::npos);
+  EXPECT_NE(html.find(">1234.5<"), std::string::npos);
+  EXPECT_NE(html.find("No limits to check"), std::string::npos);
+}
+
+TEST(HtmlReport, EveryRunWritesOne) {
+  const nlohmann::json study = nlohmann::json::parse(R"({"study": "transmission_rigidity", "name": "shaft",
+    "material": {"shear_modulus_GPa": 80, "youngs_modulus_GPa": 206},
+    "chain": [{"element": "shaft_torsion", "name": "s", "length_mm": 100, "outer_diameter_mm": 20,
+               "inner_diameter_mm": 0}]})");
+  const Outputs out = RunStudy(study, RunContext{});
+  ASSERT_TRUE(out.files().count("report.html"));
+  EXPECT_NE(out.files().at("report.html").find("torsional rigidity at end b"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace camopt::studies
