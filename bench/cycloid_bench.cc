@@ -94,6 +94,38 @@ void BM_CycloidSolveAndDerivative(benchmark::State& state) {
 }
 BENCHMARK(BM_CycloidSolveAndDerivative)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(10);
 
+void RunExample(benchmark::State& state, const char* name);
+
+// The 60-angle cycle of the LCM example (L = 18.7 mm) from a warm model, Arg 0: its value;
+// Arg 1: the value and the cycle's implicit derivatives w.r.t. f, Δa and Δρ (DifferentiateCycle,
+// CG tolerance: second Arg × 1e-6; the tuning uses 1e-6). The gradient's share is the difference.
+void BM_CycloidCycle60Gradient(benchmark::State& state) {
+  Crowning c;
+  c.type = CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.0035;
+  c.effective_length_mm = 18.7;
+  LoadedOptions o;
+  o.sensitivity_tolerance = state.range(1) * 1e-6;
+  const LoadedTca tca(CycloidNnm(), c, Material{}, o);
+  const auto angles = UniformCrankAngles(60, 2 * kPi);
+  RunCycle(tca, 350.0e3, angles);  // kernels and plans cached (cost only)
+  for (auto _ : state) {
+    const CycleResult r = RunCycle(tca, 350.0e3, angles);
+    if (state.range(0) == 1)
+      benchmark::DoNotOptimize(
+          DifferentiateCycle(tca, r, {"coefficient_mm", "delta_position_mm", "delta_radius_mm"}, 2.0)
+              .front()
+              .smooth_peak_MPa);
+    benchmark::DoNotOptimize(r.max_pressure_MPa);
+  }
+}
+BENCHMARK(BM_CycloidCycle60Gradient)->Args({0, 1})->Args({1, 1})->Args({1, 100})->Unit(benchmark::kMillisecond)->Repetitions(3)->Iterations(1);
+
+// The joint tuning example (Ipopt, f with Δa and Δρ).
+void BM_CycloidJointTuningStudy(benchmark::State& state) {
+  RunExample(state, "cycloid_crowning_tuning_joint_nnm.json");
+}
+
 void RunExample(benchmark::State& state, const char* name) {
   const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /
                             "studies/examples" / name)
@@ -121,6 +153,7 @@ void BM_CycloidCrowningTuningStudy(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
 }
 BENCHMARK(BM_CycloidCrowningTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_CycloidJointTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 }  // namespace camopt::cycloid

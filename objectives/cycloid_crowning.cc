@@ -1,6 +1,8 @@
 #include "objectives/cycloid_crowning.h"
 
 #include <algorithm>
+#include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <utility>
 
@@ -113,6 +115,224 @@ Problem CycloidCrowningProblem(CycloidCrowningModel& model, const CycloidCrownin
   p.objective = kCrowningStress;
   p.objective_scale = spec.stress_scale_MPa;
   p.constraints.push_back({kCrowningEdgeMargin, spec.required_edge_margin_um, kInf, 1.0});
+  return p;
+}
+
+}  // namespace camopt::objectives
+
+namespace camopt::objectives {
+namespace {
+
+// A variable's model parameter (LoadedTca::Differentiate) and the factor from its unit to mm.
+std::pair<std::string, double> ModelParameter(const std::string& name) {
+  if (name == "delta_position_um") return {"delta_position_mm", 1e-3};
+  if (name == "delta_radius_um") return {"delta_radius_mm", 1e-3};
+  return {name, 1.0};
+}
+
+}  // namespace
+
+namespace {
+// The derivatives' CG tolerance: the contact solver's own (the values are no more accurate than
+// that), between 1e-10 and 1e-4. At 1e-4 the 60-angle cycle's gradient (f, Δa, Δρ) costs 1.9×
+// the value, at 1e-6 2.7× (docs/performance.md).
+double SensitivityTolerance(const cycloid::LoadedOptions& o) {
+  return std::clamp(o.solver_tolerance, 1e-10, 1e-4);
+}
+}  // namespace
+
+std::vector<std::string> TuningVariableNames() {
+  return {"coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm",
+          "radius_mm",      "delta_position_um",   "delta_radius_um"};
+}
+
+std::string TuningVariableAllowed(const std::string& name, cycloid::CrowningType type) {
+  using cycloid::CrowningType;
+  if (name == "delta_position_um" || name == "delta_radius_um") return "";
+  const bool log = type == CrowningType::kLogarithmic;
+  if (name == "coefficient_mm" || name == "effective_length_mm" || name == "end_drop_mm")
+    return log ? "" : "a parameter of the logarithmic crowning only";
+  if (name == "flat_length_mm")
+    return log || type == CrowningType::kPartial ? "" : "a parameter of the logarithmic or partial crowning only";
+  if (name == "radius_mm")
+    return type == CrowningType::kFull || type == CrowningType::kPartial
+               ? ""
+               : "a parameter of the full or partial crowning only";
+  return "not a tuning variable";
+}
+
+CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloid::Crowning& crowning,
+                                       const cycloid::Material& material,
+                                       const cycloid::LoadedOptions& options, double design_torque_Nmm,
+                                       double max_torque_Nmm, std::vector<double> crank_angles_rad,
+                                       std::vector<std::string> variables, double temperature_MPa)
+    : drive_(drive),
+      crowning_(crowning),
+      design_(drive, crowning, material,
+              [&] {
+                cycloid::LoadedOptions o = options;
+                o.keep_pressure = true;  // the derivatives need the converged pressures
+                o.edge_margin = false;
+                o.sensitivity_tolerance = SensitivityTolerance(options);
+                return o;
+              }()),
+      maximum_(drive, crowning, material,
+               [&] {
+                 cycloid::LoadedOptions o = options;
+                 o.keep_pressure = true;
+                 o.edge_margin = true;
+                 o.sensitivity_tolerance = SensitivityTolerance(options);
+                 return o;
+               }()),
+      design_torque_Nmm_(design_torque_Nmm),
+      max_torque_Nmm_(max_torque_Nmm),
+      angles_(std::move(crank_angles_rad)),
+      variables_(std::move(variables)),
+      temperature_MPa_(temperature_MPa) {
+  for (const std::string& v : variables_)
+    if (const std::string why = TuningVariableAllowed(v, crowning.type); !why.empty())
+      throw std::invalid_argument("tuning variable " + v + ": " + why);
+}
+
+std::pair<cycloid::Drive, cycloid::Crowning> CycloidTuningModel::Design(const std::vector<double>& x) const {
+  if (x.size() != variables_.size()) throw std::invalid_argument("CycloidTuningModel: one value per variable");
+  cycloid::Drive d = drive_;
+  cycloid::Crowning c = crowning_;
+  for (size_t j = 0; j < x.size(); ++j) {
+    const std::string& v = variables_[j];
+    if (v == "delta_position_um") d.delta_position_mm = x[j] * 1e-3;
+    if (v == "delta_radius_um") d.delta_radius_mm = x[j] * 1e-3;
+    if (v == "coefficient_mm") c.coefficient_mm = std::max(0.0, x[j]);
+    if (v == "effective_length_mm") c.effective_length_mm = x[j];
+    if (v == "end_drop_mm") c.end_drop_mm = x[j];
+    if (v == "flat_length_mm") c.flat_length_mm = x[j];
+    if (v == "radius_mm") c.radius_mm = x[j];
+  }
+  return {d, c};
+}
+
+TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool with_gradient) {
+  const auto [d, c] = Design(x);
+  const cycloid::LoadedTca des = design_.WithModification(d.delta_position_mm, d.delta_radius_mm).WithCrowning(c);
+  const cycloid::LoadedTca max = maximum_.WithModification(d.delta_position_mm, d.delta_radius_mm).WithCrowning(c);
+  if (!(last_x_ == x && last_design_ && last_max_)) {
+    last_x_ = x;
+    last_design_ = cycloid::RunCycle(des, design_torque_Nmm_, angles_);
+    last_max_ = cycloid::RunCycle(max, max_torque_Nmm_, angles_);
+    ++evaluations_;
+  }
+  const cycloid::CycleResult& dc = *last_design_;
+  const cycloid::CycleResult& mc = *last_max_;
+  TuningEvaluation e;
+  e.x = x;
+  e.smooth_stress_MPa = cycloid::SmoothPeakPressure(dc, temperature_MPa_);
+  e.stress_MPa = dc.max_pressure_MPa;
+  e.edge_margin_um = mc.end_distance_mm * 1e3;
+  for (const cycloid::MeshLoad& m : mc.meshes) e.end_distance_um.push_back(m.end_distance_mm * 1e3);
+  e.lte_peak_to_peak_arcsec = dc.lte_peak_to_peak_arcsec;
+  for (const cycloid::MeshLoad& m : dc.meshes) e.unloaded_te_arcsec.push_back(m.unloaded_rotation_rad * cycloid::kArcsecPerRad);
+  e.max_pair_load_N = dc.max_pair_load_N;
+  e.pairs = dc.max_pairs_in_contact;
+  e.converged = dc.converged && mc.converged;
+  if (!with_gradient) return e;
+  ++gradient_evaluations_;
+  const size_t nv = variables_.size(), na = angles_.size();
+  std::vector<std::string> params;
+  std::vector<double> factor;
+  for (const std::string& v : variables_) {
+    const auto [p, f] = ModelParameter(v);
+    params.push_back(p);
+    factor.push_back(f);
+  }
+  const std::vector<cycloid::CycleDerivative> dd = cycloid::DifferentiateCycle(des, dc, params, temperature_MPa_);
+  const std::vector<cycloid::CycleDerivative> dm = cycloid::DifferentiateCycle(max, mc, params, temperature_MPa_);
+  e.d_smooth_stress.resize(nv);
+  e.d_stress.resize(nv);
+  e.d_lte.resize(nv);
+  e.d_end_distance.assign(na * nv, 0.0);
+  e.d_unloaded_te.assign(na * nv, 0.0);
+  for (size_t j = 0; j < nv; ++j) {
+    // coefficient_mm is clamped at 0 (Design): its derivative is the one-sided one above 0.
+    e.d_smooth_stress[j] = dd[j].smooth_peak_MPa * factor[j];
+    e.d_stress[j] = dd[j].max_pressure_MPa * factor[j];
+    e.d_lte[j] = dd[j].lte_peak_to_peak_arcsec * factor[j];
+    for (size_t k = 0; k < na; ++k) {
+      e.d_end_distance[k * nv + j] = dm[j].end_distance_per_angle_mm[k] * 1e3 * factor[j];
+      e.d_unloaded_te[k * nv + j] = dd[j].unloaded_rotation_rad[k] * cycloid::kArcsecPerRad * factor[j];
+    }
+    e.converged = e.converged && dd[j].converged && dm[j].converged;
+  }
+  return e;
+}
+
+namespace {
+
+class TuningEvaluator final : public Evaluator {
+ public:
+  TuningEvaluator(CycloidTuningModel& model, std::function<void(const TuningEvaluation&)> on_evaluation)
+      : Evaluator(int(model.variables().size()),
+                  {{kTuningSmoothStress, 0, 1},
+                   {kTuningEndDistance, 1, int(model.crank_angles().size())},
+                   {kTuningLte, 1 + int(model.crank_angles().size()), 1},
+                   {kTuningBacklash, 2 + int(model.crank_angles().size()), int(model.crank_angles().size())}}),
+        model_(model),
+        on_evaluation_(std::move(on_evaluation)) {}
+
+ protected:
+  void DoEval(std::span<const double> x, std::span<double> y) const override {
+    Fill(Get(x, false), y);
+  }
+  void DoEvalWithJacobian(std::span<const double> x, std::span<double> y,
+                          std::span<double> jacobian) const override {
+    const TuningEvaluation& e = Get(x, true);
+    Fill(e, y);
+    const size_t nv = size_t(num_vars()), na = e.end_distance_um.size();
+    for (size_t j = 0; j < nv; ++j) {
+      jacobian[j] = e.d_smooth_stress[j];
+      for (size_t k = 0; k < na; ++k) jacobian[(1 + k) * nv + j] = e.d_end_distance[k * nv + j];
+      jacobian[(1 + na) * nv + j] = e.d_lte[j];
+      for (size_t k = 0; k < na; ++k) jacobian[(2 + na + k) * nv + j] = e.d_unloaded_te[k * nv + j];
+    }
+  }
+
+ private:
+  static void Fill(const TuningEvaluation& e, std::span<double> y) {
+    y[0] = e.smooth_stress_MPa;
+    for (size_t k = 0; k < e.end_distance_um.size(); ++k) y[1 + k] = e.end_distance_um[k];
+    const size_t na = e.end_distance_um.size();
+    y[1 + na] = e.lte_peak_to_peak_arcsec;
+    for (size_t k = 0; k < na; ++k) y[2 + na + k] = e.unloaded_te_arcsec[k];
+  }
+  const TuningEvaluation& Get(std::span<const double> x, bool gradient) const {
+    const std::vector<double> key(x.begin(), x.end());
+    for (const auto& m : memory_)
+      if (m.x == key && (!gradient || !m.d_smooth_stress.empty())) return m;
+    memory_.push_back(model_.Evaluate(key, gradient));
+    if (on_evaluation_) on_evaluation_(memory_.back());
+    return memory_.back();
+  }
+
+  CycloidTuningModel& model_;
+  std::function<void(const TuningEvaluation&)> on_evaluation_;
+  mutable std::deque<TuningEvaluation> memory_;
+};
+
+}  // namespace
+
+Problem CycloidTuningProblem(CycloidTuningModel& model, const CycloidTuningSpec& spec,
+                             std::function<void(const TuningEvaluation&)> on_evaluation) {
+  if (spec.variables.size() != model.variables().size())
+    throw std::invalid_argument("CycloidTuningProblem: one variable per model variable");
+  Problem p;
+  p.variables = spec.variables;
+  p.evaluator = std::make_unique<TuningEvaluator>(model, std::move(on_evaluation));
+  p.objective = kTuningSmoothStress;
+  p.objective_scale = spec.stress_scale_MPa;
+  p.constraints.push_back({kTuningEndDistance, spec.required_end_distance_um, kInf, 10.0});
+  if (std::isfinite(spec.min_unloaded_te_arcsec))
+    p.constraints.push_back({kTuningBacklash, spec.min_unloaded_te_arcsec, kInf, 1.0});
+  if (std::isfinite(spec.max_lte_peak_to_peak_arcsec))
+    p.constraints.push_back({kTuningLte, -kInf, spec.max_lte_peak_to_peak_arcsec, 1.0});
   return p;
 }
 

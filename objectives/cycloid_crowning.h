@@ -14,6 +14,8 @@
 
 #include <functional>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "model/cycloid/loaded_tca.h"
@@ -86,5 +88,106 @@ inline constexpr const char* kCrowningEdgeMargin = "edge_margin_um";
 /// on_evaluation (may be empty) after each run. `model` must outlive the problem.
 Problem CycloidCrowningProblem(CycloidCrowningModel& model, const CycloidCrowningSpec& spec,
                                std::function<void(const CrowningEvaluation&)> on_evaluation);
+
+}  // namespace camopt::objectives
+
+namespace camopt::objectives {
+
+// ---------------------------------------------------------------------------------------------
+// Joint tuning of the profile modifications and any crowning's parameters with exact gradients
+// (issue 13). Variables are named by the field they set: the crowning's coefficient_mm,
+// effective_length_mm, radius_mm, flat_length_mm, end_drop_mm [mm] and the modifications
+// delta_position_um, delta_radius_um [µm]; what is not a variable keeps its start value.
+//
+// Outputs of the evaluator:
+//   kTuningSmoothStress  the soft-max of the pairs' peak stresses over the design-torque cycle
+//                        (cycloid::SmoothPeakPressure, temperature τ; bias 0 … τ ln N above the
+//                        exact maximum, N = (angle, pair) terms) — the objective;
+//   kTuningEndDistance   the end distance [µm] at every crank angle of the maximum-torque cycle
+//                        (one constraint row per angle: smooth where the exact minimum switches);
+//   kTuningLte           LTE peak-to-peak [arcsec] at the design torque (may be bounded);
+//   kTuningBacklash      the unloaded TE β0 [arcsec] at every crank angle: the disc's rotation to
+//                        first contact, >= 0 when no roller interferes with the modified tooth at
+//                        the kinematic position (the assembly / backlash condition; without it
+//                        the stress is lowest for a tooth fuller than the rollers' envelope).
+// Values and exact first derivatives (implicit differentiation at the converged states,
+// cycloid::DifferentiateCycle): value-only solvers (COBYLA) run DoEval only.
+// ---------------------------------------------------------------------------------------------
+
+inline constexpr const char* kTuningSmoothStress = "smooth_max_contact_stress_MPa";
+inline constexpr const char* kTuningEndDistance = "end_distance_at_max_torque_um";
+inline constexpr const char* kTuningLte = "lte_peak_to_peak_arcsec";
+inline constexpr const char* kTuningBacklash = "unloaded_te_arcsec";
+
+/// Field names a tuning variable may have (per crowning type: see TuningVariableAllowed).
+std::vector<std::string> TuningVariableNames();
+/// "" when `name` may be tuned for this crowning type, else why not.
+std::string TuningVariableAllowed(const std::string& name, cycloid::CrowningType type);
+
+/// One judged design of the joint tuning.
+struct TuningEvaluation {
+  std::vector<double> x;                ///< the variables, in their own units
+  double smooth_stress_MPa = 0;         ///< soft-max over the design cycle
+  double stress_MPa = 0;                ///< exact maximum over the design cycle
+  double edge_margin_um = 0;            ///< min end distance over the max-torque cycle [µm]
+  std::vector<double> end_distance_um;  ///< per angle of the max-torque cycle
+  std::vector<double> unloaded_te_arcsec;  ///< β0 per angle (the design cycle's angles)
+  double lte_peak_to_peak_arcsec = 0;   ///< design cycle
+  double max_pair_load_N = 0;           ///< design cycle
+  int pairs = 0;
+  bool converged = true;
+  /// With gradients: d/dx of smooth stress, exact stress, LTE p-p (per variable), and of the end
+  /// distance per angle (angle-major: [angle][variable]).
+  std::vector<double> d_smooth_stress, d_stress, d_lte, d_end_distance, d_unloaded_te;
+};
+
+/// The two mesh cycles of the joint tuning (design and maximum torque) over the same crank angles.
+/// Pure: an evaluation depends on its arguments only.
+class CycloidTuningModel {
+ public:
+  /// `drive` and `crowning` hold the start values (and every field that is not a variable).
+  CycloidTuningModel(const cycloid::Drive& drive, const cycloid::Crowning& crowning,
+                     const cycloid::Material& material, const cycloid::LoadedOptions& options,
+                     double design_torque_Nmm, double max_torque_Nmm, std::vector<double> crank_angles_rad,
+                     std::vector<std::string> variables, double temperature_MPa);
+
+  /// Runs both cycles at x (in the variables' units); with_gradient adds the derivatives (the
+  /// cycles of the previous call are reused when x is the same point).
+  TuningEvaluation Evaluate(const std::vector<double>& x, bool with_gradient);
+  /// The drive and crowning that x sets.
+  std::pair<cycloid::Drive, cycloid::Crowning> Design(const std::vector<double>& x) const;
+  const std::vector<std::string>& variables() const { return variables_; }
+  const std::vector<double>& crank_angles() const { return angles_; }
+  /// Cycle runs (each both torques) and derivative runs.
+  int evaluations() const { return evaluations_; }
+  int gradient_evaluations() const { return gradient_evaluations_; }
+
+ private:
+  cycloid::Drive drive_;
+  cycloid::Crowning crowning_;
+  cycloid::LoadedTca design_, maximum_;
+  double design_torque_Nmm_, max_torque_Nmm_;
+  std::vector<double> angles_;
+  std::vector<std::string> variables_;
+  double temperature_MPa_;
+  int evaluations_ = 0, gradient_evaluations_ = 0;
+  // The last point's cycles: a gradient asked at the point just valued reuses them.
+  std::vector<double> last_x_;
+  std::optional<cycloid::CycleResult> last_design_, last_max_;
+};
+
+struct CycloidTuningSpec {
+  std::vector<Variable> variables;       ///< names as the model's, bounds, start, scale
+  double required_end_distance_um = 0;   ///< every angle's end distance >= this
+  double max_lte_peak_to_peak_arcsec = kInf;  ///< LTE p-p <= this (kInf: unbounded)
+  double min_unloaded_te_arcsec = 0;     ///< every angle's β0 >= this (-kInf: unbounded)
+  double stress_scale_MPa = 1000;
+};
+
+/// Minimise kTuningSmoothStress subject to kTuningEndDistance >= required (per angle),
+/// kTuningBacklash >= min (per angle, when finite) and, when bounded, kTuningLte <= max. Each distinct point runs once per kind (values / gradients; a
+/// gradient run also answers values); on_evaluation is called after each model run.
+Problem CycloidTuningProblem(CycloidTuningModel& model, const CycloidTuningSpec& spec,
+                             std::function<void(const TuningEvaluation&)> on_evaluation);
 
 }  // namespace camopt::objectives

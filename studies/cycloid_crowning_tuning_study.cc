@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -17,8 +18,149 @@ namespace camopt::studies::cycloid_crowning_tuning {
 
 using objectives::CrowningEvaluation;
 
+namespace {
+
+// The general form's "crowning": start values; a field that is a variable may be omitted.
+cycloid::Crowning ParseStartCrowning(const Node& root, const std::set<std::string>& vars) {
+  cycloid::Crowning c;
+  if (!root.Has("crowning")) return c;
+  const Node n = root["crowning"];
+  const std::string type = n["type"].String();
+  auto value = [&](const char* field, bool required, double fallback) {
+    if (n.Has(field)) return n[field].NonNegative();
+    if (required && !vars.count(field)) n[field].NonNegative();  // "missing field"
+    return fallback;
+  };
+  if (type == "none") {
+    n.CheckKnownFields({"type"});
+  } else if (type == "full") {
+    n.CheckKnownFields({"type", "radius_mm"});
+    c.type = cycloid::CrowningType::kFull;
+    c.radius_mm = value("radius_mm", true, 0.0);
+  } else if (type == "partial") {
+    n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
+    c.type = cycloid::CrowningType::kPartial;
+    c.radius_mm = value("radius_mm", true, 0.0);
+    c.flat_length_mm = value("flat_length_mm", true, 0.0);
+  } else if (type == "logarithmic") {
+    n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
+    c.type = cycloid::CrowningType::kLogarithmic;
+    c.coefficient_mm = value("coefficient_mm", true, 0.0);
+    c.effective_length_mm = value("effective_length_mm", false, 0.0);
+    c.end_drop_mm = value("end_drop_mm", false, 0.0);
+    c.flat_length_mm = value("flat_length_mm", false, 0.0);
+  } else {
+    n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
+  }
+  return c;
+}
+
+void ParseJoint(const Node& root, Study& s) {
+  s.joint = true;
+  const Node v = root["variables"];
+  if (!v.json().is_object() || v.json().empty()) v.Fail("an object of variables {\"field\": [lo, hi], ...}");
+  std::set<std::string> names;
+  for (const auto& [key, _] : v.json().items()) names.insert(key);
+  const std::vector<std::string> known = objectives::TuningVariableNames();
+  v.CheckKnownFields(std::set<std::string>(known.begin(), known.end()));
+  s.crowning = ParseStartCrowning(root, names);
+  // The variables in a fixed order (TuningVariableNames), whatever the file's order.
+  for (const std::string& name : known) {
+    if (!names.count(name)) continue;
+    const Node r = v[name];
+    if (const std::string why = objectives::TuningVariableAllowed(name, s.crowning.type); !why.empty())
+      r.FailWith("cannot be tuned with this crowning: " + why);
+    const auto [lo, hi] = r.Range();
+    if (!(hi > lo)) r.Fail("a range [lo, hi] with lo < hi");
+    objectives::Variable var;
+    var.name = name;
+    var.lower = lo;
+    var.upper = hi;
+    var.scale = hi - lo;
+    // Start: the field's value in "crowning"/"modification" when given, else the range's middle.
+    double start = 0.5 * (lo + hi);
+    const bool modification = name == "delta_position_um" || name == "delta_radius_um";
+    if (modification) {
+      start = 1e3 * (name == "delta_position_um" ? s.drive.delta_position_mm : s.drive.delta_radius_mm);
+    } else if (root.Has("crowning") && root["crowning"].Has(name)) {
+      start = root["crowning"][name].Number();
+    }
+    var.initial = std::clamp(start, lo, hi);
+    if (name == "coefficient_mm" && lo < 0) r.Fail("a range with lo >= 0");
+    if (name == "effective_length_mm" && lo < s.drive.face_width_mm) r.Fail("a range with lo >= the face width");
+    if (name == "end_drop_mm" && !(lo > 0)) r.Fail("a range with lo > 0 (0 means an unbounded drop)");
+    if ((name == "flat_length_mm" || name == "radius_mm") && lo < 0) r.Fail("a range with lo >= 0");
+    if (modification && hi > 0) r.Fail("a range with hi <= 0 (a positive modification interferes)");
+    s.variables.push_back(var);
+  }
+  // Every corner of the box must give a valid crowning and a feasible drive (else an evaluation
+  // inside it could fail).
+  for (size_t corner = 0; corner < (size_t(1) << s.variables.size()); ++corner) {
+    cycloid::Drive d = s.drive;
+    cycloid::Crowning c = s.crowning;
+    for (size_t j = 0; j < s.variables.size(); ++j) {
+      const objectives::Variable& var = s.variables[j];
+      const double x = (corner >> j) & 1 ? var.upper : var.lower;
+      if (var.name == "delta_position_um") d.delta_position_mm = 1e-3 * x;
+      if (var.name == "delta_radius_um") d.delta_radius_mm = 1e-3 * x;
+      if (var.name == "coefficient_mm") c.coefficient_mm = x;
+      if (var.name == "effective_length_mm") c.effective_length_mm = x;
+      if (var.name == "end_drop_mm") c.end_drop_mm = x;
+      if (var.name == "flat_length_mm") c.flat_length_mm = x;
+      if (var.name == "radius_mm") c.radius_mm = x;
+    }
+    if (const std::string why = cycloid::CheckDrive(d); !why.empty())
+      v.FailWith("a corner of the variables' ranges gives an infeasible drive: " + why);
+    if (const std::string why = cycloid::CheckCrowning(c, s.drive.face_width_mm); !why.empty())
+      v.FailWith("a corner of the variables' ranges gives an invalid crowning: " + why);
+  }
+  {
+    cycloid::Crowning c = s.crowning;
+    for (const auto& var : s.variables) {
+      if (var.name == "coefficient_mm") c.coefficient_mm = var.initial;
+      if (var.name == "effective_length_mm") c.effective_length_mm = var.initial;
+      if (var.name == "end_drop_mm") c.end_drop_mm = var.initial;
+      if (var.name == "flat_length_mm") c.flat_length_mm = var.initial;
+      if (var.name == "radius_mm") c.radius_mm = var.initial;
+    }
+    if (const std::string why = cycloid::CheckCrowning(c, s.drive.face_width_mm); !why.empty())
+      root["crowning"].FailWith(why);
+    s.crowning = c;
+  }
+  if (root.Has("optimizer")) {
+    const Node o = root["optimizer"];
+    o.CheckKnownFields({"backend", "max_evaluations"});
+    s.backend = o.StringOr("backend", "ipopt");
+    if (s.backend != "ipopt" && s.backend != "slsqp" && s.backend != "cobyla")
+      o["backend"].Fail("one of \"ipopt\", \"slsqp\", \"cobyla\"");
+    s.max_evaluations = o.IntegerOr("max_evaluations", 1, s.max_evaluations);
+  } else {
+    s.backend = "ipopt";
+  }
+  s.length_lo_mm = s.length_hi_mm = s.drive.face_width_mm;
+  if (root.Has("tuning")) {
+    const Node t = root["tuning"];
+    t.CheckKnownFields({"reference_coefficient_mm", "curve_points", "max_evaluations", "edge_margin_um",
+                        "softmax_temperature_MPa", "max_lte_peak_to_peak_arcsec", "min_unloaded_te_arcsec"});
+    s.reference_coefficient_mm = t.NonNegativeOr("reference_coefficient_mm", 0.005);
+    s.curve_points = t.IntegerOr("curve_points", 0, 11);
+    if (s.curve_points == 1) t["curve_points"].Fail("0 or at least 2 points");
+    if (s.curve_points > 200) t["curve_points"].Fail("at most 200 points");
+    // optimizer.max_evaluations wins over tuning.max_evaluations when both are given.
+    if (!(root.Has("optimizer") && root["optimizer"].Has("max_evaluations")))
+      s.max_evaluations = t.IntegerOr("max_evaluations", 1, s.max_evaluations);
+    s.required_edge_margin_um = t.NumberOr("edge_margin_um", 0.0);
+    s.temperature_MPa = t.PositiveOr("softmax_temperature_MPa", 2.0);
+    s.max_lte_peak_to_peak_arcsec = t.PositiveOr("max_lte_peak_to_peak_arcsec", kInf);
+    s.min_unloaded_te_arcsec = t.NumberOr("min_unloaded_te_arcsec", 0.0);
+  }
+}
+
+}  // namespace
+
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis", "tuning", "crowning"});
+  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis",
+                         "tuning", "crowning", "variables", "optimizer"});
   Study s;
   s.name = root.json().value("name", "");
   s.drive = cycloid_common::ParseDrive(root);
@@ -28,6 +170,24 @@ Study Parse(const Node& root) {
   s.design_torque_Nm = load["design_torque_Nm"].Positive();
   s.max_torque_Nm = load["max_torque_Nm"].Positive();
   if (s.max_torque_Nm < s.design_torque_Nm) load["max_torque_Nm"].Fail("a torque >= design_torque_Nm");
+  if (root.Has("variables")) {
+    ParseJoint(root, s);
+    if (root.Has("analysis")) {
+      const Node a = root["analysis"];
+      a.CheckKnownFields({"grid", "crank_angles_per_mesh_period"});
+      cycloid_common::ParseGrid(a, s.options);
+      s.crank_angles_per_mesh_period = a.IntegerOr("crank_angles_per_mesh_period", 1, 6);
+      if (s.crank_angles_per_mesh_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
+    }
+    return s;
+  }
+  // The shorthand: "tuning.coefficient_mm" (and optionally effective_length_mm) with COBYLA.
+  if (root.Has("optimizer")) {
+    const Node o = root["optimizer"];
+    o.CheckKnownFields({"backend"});
+    if (o["backend"].String() != "cobyla")
+      o["backend"].Fail("\"cobyla\" (the tuning.coefficient_mm shorthand is value-only; use \"variables\" for gradients)");
+  }
   const Node tuning = root["tuning"];
   tuning.CheckKnownFields({"coefficient_mm", "effective_length_mm", "reference_coefficient_mm", "curve_points",
                            "max_evaluations", "edge_margin_um"});
@@ -75,7 +235,124 @@ Study Parse(const Node& root) {
   return s;
 }
 
-Result Run(const Study& s, const RunContext& ctx) {
+namespace {
+
+std::string BackendName(const std::string& backend) {
+  return backend == "ipopt" ? "ipopt" : backend == "slsqp" ? "nlopt_slsqp" : "nlopt_cobyla";
+}
+
+// The discretisation error of a tuned design's outputs: |value − value with half the cells each
+// way and, when the angles are an even number >= 4, every second angle| (the difference itself,
+// no order assumed: docs/cycloid.md, "Estimated error"). One extra run at about 1/8 of the cost.
+void EstimateError(const Study& s, const cycloid::Drive& drive, const cycloid::Crowning& crowning,
+                   double stress_MPa, double margin_um, Result& r) {
+  cycloid::LoadedOptions coarse = s.options;
+  coarse.profile_cells = std::max(4, s.options.profile_cells / 2);
+  coarse.axial_cells = std::max(4, s.options.axial_cells / 2);
+  const int n = s.crank_angles_per_mesh_period;
+  const int m = n % 2 == 0 && n >= 4 ? n / 2 : n;
+  const std::vector<double> angles = cycloid::UniformCrankAngles(m, 2.0 * kPi / s.drive.rollers);
+  objectives::CycloidTuningModel model(drive, crowning, s.material, coarse, s.design_torque_Nm * 1000.0,
+                                       s.max_torque_Nm * 1000.0, angles, {}, s.temperature_MPa);
+  const objectives::TuningEvaluation e = model.Evaluate({}, false);
+  const double stress_error = std::abs(stress_MPa - e.stress_MPa);
+  r.estimated_error = {{"tuned_max_contact_stress_MPa", stress_error},
+                       {"tuned_edge_margin_at_max_torque_um", std::abs(margin_um - e.edge_margin_um)}};
+  if (stress_error > 0.05 * stress_MPa)
+    r.warnings.push_back("tuned_max_contact_stress_MPa: estimated discretisation error " +
+                         Format(stress_error, 3) + " MPa exceeds 5% of the value (refine analysis.grid or "
+                         "analysis.crank_angles_per_mesh_period)");
+}
+
+Result RunJoint(const Study& s, const RunContext& ctx) {
+  const std::vector<double> angles =
+      cycloid::UniformCrankAngles(s.crank_angles_per_mesh_period, 2.0 * kPi / s.drive.rollers);
+  std::vector<std::string> names;
+  std::vector<double> start;
+  for (const auto& v : s.variables) {
+    names.push_back(v.name);
+    start.push_back(v.initial);
+  }
+  objectives::CycloidTuningModel model(s.drive, s.crowning, s.material, s.options, s.design_torque_Nm * 1000.0,
+                                       s.max_torque_Nm * 1000.0, angles, names, s.temperature_MPa);
+  objectives::CycloidCrowningModel paper(s.drive, s.material, s.options, s.design_torque_Nm * 1000.0,
+                                         s.max_torque_Nm * 1000.0, angles);
+  Result r;
+  r.backend = s.backend;
+  Progress progress("cycloid_crowning_tuning", ctx.quiet);
+  const double length = s.crowning.effective_length_mm > 0 ? s.crowning.effective_length_mm : s.drive.face_width_mm;
+  // 1. The stress-versus-f curve when f is a variable (the others at their start values). The
+  //    optimizer does not start from it: the tuned design does not depend on the scan.
+  const auto fpos = std::find(names.begin(), names.end(), "coefficient_mm");
+  if (fpos != names.end() && s.curve_points >= 2) {
+    const size_t j = size_t(fpos - names.begin());
+    const auto& var = s.variables[j];
+    for (int k = 0; k < s.curve_points; ++k) {
+      std::vector<double> x = start;
+      x[j] = var.lower + (var.upper - var.lower) * k / (s.curve_points - 1);
+      const objectives::TuningEvaluation e = model.Evaluate(x, false);
+      r.curve.push_back({x[j], length, e.stress_MPa, e.edge_margin_um, e.pairs});
+      progress.Update(0.3 * (k + 1) / s.curve_points, "scan f = " + Format(x[j] * 1e3, 4) + " um");
+    }
+  }
+  r.reference = paper.Evaluate(s.reference_coefficient_mm, s.drive.face_width_mm);
+  const int scan_runs = model.evaluations();
+  // 2. The optimizer from the start values.
+  objectives::CycloidTuningSpec spec;
+  spec.variables = s.variables;
+  spec.required_end_distance_um = s.required_edge_margin_um;
+  spec.max_lte_peak_to_peak_arcsec = s.max_lte_peak_to_peak_arcsec;
+  spec.min_unloaded_te_arcsec = s.min_unloaded_te_arcsec;
+  spec.stress_scale_MPa = 1000.0;
+  const objectives::Problem problem = objectives::CycloidTuningProblem(
+      model, spec, [&](const objectives::TuningEvaluation& e) {
+        r.joint_history.push_back(e);
+        progress.Update(std::min(1.0, 0.3 + 0.7 * double(model.evaluations() - scan_runs) / (s.max_evaluations + 1)),
+                        cycloid_common::Fixed(e.stress_MPa, 0) + " MPa, end distance " +
+                            cycloid_common::Fixed(e.edge_margin_um, 1) + " um");
+      });
+  optimizers::SolverOptions options;
+  options.backend = BackendName(s.backend);
+  options.tolerance = 1e-3;
+  options.constraint_tolerance = 1e-3;  // scaled: 0.01 µm of end distance (scale 10 µm)
+  options.max_evaluations = s.max_evaluations;
+  options.max_seconds = 1e9;  // no time limit: the evaluation budget bounds the run
+  const optimizers::SolverResult solved = optimizers::Solve(problem, options);
+  r.solver_status = optimizers::ToString(solved.status);
+  switch (solved.status) {
+    case optimizers::SolverStatus::kIterationLimit: r.status = "max_evaluations reached"; break;
+    case optimizers::SolverStatus::kFailed: r.status = "optimizer stopped: " + solved.message; break;
+    case optimizers::SolverStatus::kInfeasible: r.status = "optimizer ended at an infeasible design"; break;
+    default: r.status = "converged"; break;
+  }
+  progress.Done();
+  r.solver_evaluations = model.evaluations() - scan_runs;
+  r.solver_gradient_evaluations = model.gradient_evaluations();
+  // The best feasible design the optimizer evaluated (smooth stress; feasible within the
+  // constraint tolerance: 0.01 µm of end distance, 1e-3 arcsec), else the one with the largest
+  // margin.
+  const objectives::TuningEvaluation* best = nullptr;
+  const objectives::TuningEvaluation* widest = nullptr;
+  for (const auto& e : r.joint_history) {
+    if (!widest || e.edge_margin_um > widest->edge_margin_um) widest = &e;
+    const double te = *std::min_element(e.unloaded_te_arcsec.begin(), e.unloaded_te_arcsec.end());
+    const bool ok = e.converged && e.edge_margin_um >= s.required_edge_margin_um - 0.01 &&
+                    e.lte_peak_to_peak_arcsec <= s.max_lte_peak_to_peak_arcsec + 1e-3 &&
+                    te >= s.min_unloaded_te_arcsec - 1e-3;
+    if (ok && (!best || e.smooth_stress_MPa < best->smooth_stress_MPa)) best = &e;
+  }
+  r.feasible = best != nullptr;
+  r.joint_best = best ? *best : widest ? *widest : model.Evaluate(start, false);
+  const auto [drive, crowning] = model.Design(r.joint_best.x);
+  r.best = {crowning.coefficient_mm, crowning.effective_length_mm > 0 ? crowning.effective_length_mm : s.drive.face_width_mm,
+            r.joint_best.stress_MPa, r.joint_best.edge_margin_um, r.joint_best.pairs};
+  for (size_t j = 0; j < names.size(); ++j) r.tuned.push_back({names[j], r.joint_best.x[j]});
+  r.evaluations = model.evaluations() + paper.evaluations();
+  EstimateError(s, drive, crowning, r.joint_best.stress_MPa, r.joint_best.edge_margin_um, r);
+  return r;
+}
+
+Result RunShorthand(const Study& s, const RunContext& ctx) {
   const std::vector<double> angles =
       cycloid::UniformCrankAngles(s.crank_angles_per_mesh_period, 2.0 * kPi / s.drive.rollers);
   objectives::CycloidCrowningModel model(s.drive, s.material, s.options, s.design_torque_Nm * 1000.0,
@@ -134,8 +411,21 @@ Result Run(const Study& s, const RunContext& ctx) {
   r.feasible = best.has_value();
   r.best = best.value_or(start);
   r.evaluations = model.evaluations() + paper.evaluations();
+  r.backend = "cobyla";
+  r.solver_status = optimizers::ToString(solved.status);
+  r.solver_evaluations = int(r.history.size());
+  r.tuned.push_back({"coefficient_mm", r.best.coefficient_mm});
+  if (s.tune_length) r.tuned.push_back({"effective_length_mm", r.best.length_mm});
+  cycloid::Crowning tuned = s.shape;
+  tuned.coefficient_mm = r.best.coefficient_mm;
+  tuned.effective_length_mm = r.best.length_mm;
+  EstimateError(s, s.drive, tuned, r.best.stress_MPa, r.best.edge_margin_um, r);
   return r;
 }
+
+}  // namespace
+
+Result Run(const Study& s, const RunContext& ctx) { return s.joint ? RunJoint(s, ctx) : RunShorthand(s, ctx); }
 
 nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json jcurve = nlohmann::json::array();
@@ -143,9 +433,25 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     jcurve.push_back({{"coefficient_mm", e.coefficient_mm},
                       {"max_contact_stress_MPa", Finite(e.stress_MPa, "stress")},
                       {"edge_margin_at_max_torque_um", Finite(e.edge_margin_um, "margin")}});
-  return {{"study", "cycloid_crowning_tuning"},
+  nlohmann::json tuned = nlohmann::json::object();
+  for (const auto& [name, value] : r.tuned) tuned[name] = Finite(value, name.c_str());
+  nlohmann::json error = nlohmann::json::object();
+  for (const auto& [name, value] : r.estimated_error) error[name] = Finite(value, name.c_str());
+  nlohmann::json optimizer = {
+      {"backend", r.backend},
+      {"status", r.solver_status},
+      {"evaluations", r.solver_evaluations},
+      {"gradient_evaluations", r.solver_gradient_evaluations},
+      {"method", s.joint ? (s.backend == "cobyla" ? "NLopt LN_COBYLA on the smooth peak stress (values only)"
+                            : s.backend == "slsqp" ? "NLopt LD_SLSQP with exact gradients (implicit differentiation)"
+                                                   : "Ipopt with exact gradients (implicit differentiation)")
+                         : "NLopt LN_COBYLA from the best feasible point of a scan"}};
+  nlohmann::json j = {{"study", "cycloid_crowning_tuning"},
           {"name", s.name},
-          {"optimizer", "NLopt LN_COBYLA from the best feasible point of a scan"},
+          {"optimizer", optimizer},
+          {"tuned", tuned},
+          {"estimated_error", error},
+          {"warnings", r.warnings},
           {"status", r.status},
           {"feasible", r.feasible},
           {"tuned_coefficient_mm", Finite(r.best.coefficient_mm, "f")},
@@ -163,6 +469,27 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"axial_cell_mm", s.drive.face_width_mm / s.options.axial_cells},
           {"evaluations", r.evaluations},
           {"curve", jcurve}};
+  if (s.joint) {
+    const objectives::TuningEvaluation& b = r.joint_best;
+    j["crowning_type"] = s.crowning.type == cycloid::CrowningType::kFull       ? "full"
+                         : s.crowning.type == cycloid::CrowningType::kPartial    ? "partial"
+                         : s.crowning.type == cycloid::CrowningType::kLogarithmic ? "logarithmic"
+                                                                                  : "none";
+    j["softmax_temperature_MPa"] = s.temperature_MPa;
+    j["tuned_smooth_max_contact_stress_MPa"] = Finite(b.smooth_stress_MPa, "stress");
+    j["tuned_lte_peak_to_peak_arcsec"] = Finite(b.lte_peak_to_peak_arcsec, "LTE");
+    j["tuned_max_pair_load_N"] = Finite(b.max_pair_load_N, "load");
+    if (!b.unloaded_te_arcsec.empty())
+      j["tuned_min_unloaded_te_arcsec"] =
+          Finite(*std::min_element(b.unloaded_te_arcsec.begin(), b.unloaded_te_arcsec.end()), "TE");
+    j["min_unloaded_te_arcsec"] = s.min_unloaded_te_arcsec;
+    if (!r.joint_history.empty()) {
+      const objectives::TuningEvaluation& a = r.joint_history.front();
+      j["start_max_contact_stress_MPa"] = Finite(a.stress_MPa, "stress");
+      j["start_edge_margin_at_max_torque_um"] = Finite(a.edge_margin_um, "margin");
+    }
+  }
+  return j;
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
@@ -179,18 +506,40 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("edge_margin_at_max_torque_um", cm);
   Table hist;
   std::vector<double> hf, hl, hs, hm;
+  if (s.joint) {
+    // One column per variable (its own unit), then the outputs.
+    for (size_t j = 0; j < s.variables.size(); ++j) {
+      std::vector<double> col;
+      for (const auto& e : r.joint_history) col.push_back(e.x[j]);
+      hist.Add(s.variables[j].name, col);
+    }
+    std::vector<double> ss, grad;
+    for (const auto& e : r.joint_history) {
+      ss.push_back(e.smooth_stress_MPa);
+      hs.push_back(e.stress_MPa);
+      hm.push_back(e.edge_margin_um);
+      grad.push_back(e.d_smooth_stress.empty() ? 0.0 : 1.0);
+    }
+    hist.Add("smooth_max_contact_stress_MPa", ss);
+    hist.Add("max_contact_stress_MPa", hs);
+    hist.Add("edge_margin_at_max_torque_um", hm);
+    hist.Add("with_gradient", grad);
+  }
   for (const auto& e : r.history) {
     hf.push_back(e.coefficient_mm * 1e3);
     hl.push_back(e.length_mm);
     hs.push_back(e.stress_MPa);
     hm.push_back(e.edge_margin_um);
   }
-  hist.Add("coefficient_um", hf);
-  hist.Add("effective_length_mm", hl);
-  hist.Add("max_contact_stress_MPa", hs);
-  hist.Add("edge_margin_at_max_torque_um", hm);
-  out.Add("stress_vs_coefficient.csv", ToCsv(table));
+  if (!s.joint) {
+    hist.Add("coefficient_um", hf);
+    hist.Add("effective_length_mm", hl);
+    hist.Add("max_contact_stress_MPa", hs);
+    hist.Add("edge_margin_at_max_torque_um", hm);
+  }
   out.Add("history.csv", ToCsv(hist));
+  if (r.curve.empty()) return;  // the general form without f among its variables (or no scan)
+  out.Add("stress_vs_coefficient.csv", ToCsv(table));
   PlotOptions po;
   po.title = "Peak contact stress over the mesh at the design torque";
   po.x_label = "LCM coefficient f [um]";
@@ -211,14 +560,20 @@ CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): crank angles, contact grid and
 // the optimizer's evaluation budget (its tolerances are fixed).
-Fidelity Knobs(const nlohmann::json&) {
+Fidelity Knobs(const nlohmann::json& study) {
   Fidelity f;
+  // The general form (issue 13) reads its budget from optimizer.max_evaluations.
+  const bool joint = study.is_object() && study.contains("variables");
   f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"}, 6, 2,
                      true, 0, "uniform crank angles per mesh period"});
   f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
                      "contact cells across the profile and along the face"});
-  f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, 30, 2, true, 0,
-                     "COBYLA evaluations after the scan"});
+  if (joint)
+    f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, 30, 2, true, 0,
+                       "optimizer budget (NLopt: evaluations; Ipopt: iterations)"});
+  else
+    f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, 30, 2, true, 0,
+                       "COBYLA evaluations after the scan"});
   f.headlines = {"/tuned_coefficient_mm", "/tuned_max_contact_stress_MPa",
                  "/reference_max_contact_stress_MPa"};
   return f;

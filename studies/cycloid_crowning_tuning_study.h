@@ -38,6 +38,18 @@ struct Study {
   double required_edge_margin_um = 0;
   cycloid::LoadedOptions options;
   int crank_angles_per_mesh_period = 6;
+
+  /// The general form ("variables" given): any crowning's parameters and the modifications, each
+  /// variable named by the field it sets, with exact gradients for Ipopt/SLSQP (issue 13).
+  bool joint = false;
+  cycloid::Crowning crowning;                   ///< start values and fixed fields
+  std::vector<objectives::Variable> variables;  ///< in their own units (mm, µm for delta_*_um)
+  std::string backend = "cobyla";               ///< "ipopt", "slsqp" or "cobyla"
+  double temperature_MPa = 2.0;                 ///< soft-max temperature of the smooth peak
+  double max_lte_peak_to_peak_arcsec = kInf;    ///< optional bound
+  /// The unloaded TE β0 >= this at every angle (no roller interferes with the tooth at the
+  /// kinematic position: the assembly/backlash condition); "tuning.min_unloaded_te_arcsec".
+  double min_unloaded_te_arcsec = 0;
 };
 
 struct Result {
@@ -48,6 +60,20 @@ struct Result {
   bool feasible = false;
   std::string status;                   ///< "converged", "max_evaluations reached", or why stopped
   int evaluations = 0;                  ///< model evaluations, scan and reference included
+
+  /// Optimizer report: backend, its status word, model runs (values) and gradient runs.
+  std::string backend = "cobyla";
+  std::string solver_status;
+  int solver_evaluations = 0, solver_gradient_evaluations = 0;
+  /// Every tuned variable by name at the best point (the general form: the variables; the
+  /// shorthand: coefficient_mm and, when tuned, effective_length_mm).
+  std::vector<std::pair<std::string, double>> tuned;
+  /// The general form: the optimizer's evaluations in order and the best one.
+  std::vector<objectives::TuningEvaluation> joint_history;
+  objectives::TuningEvaluation joint_best;
+  /// Discretisation error of the tuned point's outputs (grid and crank-angle sampling), by name.
+  std::vector<std::pair<std::string, double>> estimated_error;
+  std::vector<std::string> warnings;
 };
 
 /// @throws StudyError for bad input (exit 2).

@@ -179,7 +179,14 @@ WorkEstimate CrowningTuning(const json& s, double factor) {
   const double rollers = Size(Sub(s, "drive"), "rollers", 16);
   const double cells = GridCells(a);
   const double angles = Size(a, "crank_angles_per_mesh_period", 6);
-  const double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
+  double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
+  // The general form (issue 13): optimizer.max_evaluations, each a value run and its gradient,
+  // which costs about 0.65 value runs per variable (measured: 1.9× for 3 variables,
+  // docs/performance.md).
+  if (s.contains("variables") && s["variables"].is_object())
+    evaluations = Size(t, "curve_points", 11) +
+                  Size(Sub(s, "optimizer"), "max_evaluations", Size(t, "max_evaluations", 30)) *
+                      (1.0 + 0.65 * double(s["variables"].size()));
   return Largest({{2 * evaluations * angles * rollers * cells, "/analysis/grid",
                    "2 torques × " + Num(evaluations) + " evaluations × " + Num(angles) +
                        " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +

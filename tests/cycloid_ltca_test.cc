@@ -537,7 +537,8 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
 TEST(CycloidStudies, ExamplesRunOnACoarseGrid) {
   // Every shipped example parses and runs (with its analysis made coarse to keep the suite fast).
   for (const char* name : {"cycloid_ltca_nnm_none", "cycloid_ltca_nnm_fcm", "cycloid_ltca_nnm_pcm",
-                           "cycloid_ltca_nnm_lcm", "cycloid_crowning_tuning_nnm"}) {
+                           "cycloid_ltca_nnm_lcm", "cycloid_crowning_tuning_nnm",
+                           "cycloid_crowning_tuning_joint_nnm"}) {
     const std::string file = camopt::testing::SourcePath("studies/examples/") + name + ".json";
     nlohmann::json j = studies::LoadStudyFile(file);
     ASSERT_TRUE(j.contains("analysis")) << name;
@@ -547,6 +548,7 @@ TEST(CycloidStudies, ExamplesRunOnACoarseGrid) {
       j["analysis"]["crank_angles_per_mesh_period"] = 2;
       j["tuning"]["curve_points"] = 3;
       j["tuning"]["max_evaluations"] = 3;
+      if (j.contains("optimizer")) j["optimizer"]["max_evaluations"] = 3;
     }
     studies::RunContext ctx;
     ctx.study_file = file;

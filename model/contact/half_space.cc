@@ -633,20 +633,27 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
   const double m = double(set.size());
   // The part that carries the load change: uniform over C; the rest z sums to zero.
   const double uniform = dload / (grid.cell_area_mm2() * m);
-  std::vector<double> full(n, 0.0);
-  auto apply = [&](const std::vector<double>& z_on_set) {  // P K z on C (z zero off C)
+  detail::CheckGrid(grid, "HalfSpaceSolver::SensitivityForLoad");
+  detail::CheckModulus(e_star, "HalfSpaceSolver::SensitivityForLoad");
+  // The convolution with the cached plan and kernel, on work arrays reused by every product (the
+  // same arithmetic as Displacement, without its allocation per product).
+  FftConvolver& conv = impl_->Convolver(grid);
+  const Kernel& kernel = impl_->KernelFor(grid, conv);
+  std::vector<double> full(n, 0.0), u(n);
+  auto displacement = [&]() { conv.Apply(kernel, full.data(), u.data(), 1.0 / e_star); };
+  std::vector<double> product(set.size());
+  auto apply = [&](const std::vector<double>& z_on_set) -> const std::vector<double>& {  // P K z on C
     std::fill(full.begin(), full.end(), 0.0);
     for (size_t i = 0; i < set.size(); ++i) full[set[i]] = z_on_set[i];
-    const std::vector<double> u = Displacement(grid, full, e_star);
-    std::vector<double> r(set.size());
+    displacement();
     double mean = 0;
-    for (size_t i = 0; i < set.size(); ++i) mean += (r[i] = u[set[i]]);
+    for (size_t i = 0; i < set.size(); ++i) mean += (product[i] = u[set[i]]);
     mean /= m;
-    for (double& v : r) v -= mean;
-    return r;
+    for (double& v : product) v -= mean;
+    return product;
   };
   std::vector<double> base(set.size(), uniform);
-  std::vector<double> kb = apply(base);  // P K dp0
+  const std::vector<double> kb = apply(base);  // P K dp0 (a copy: the work array is reused)
   std::vector<double> b(set.size());
   double mean_dh = 0;
   for (size_t i = 0; i < set.size(); ++i) mean_dh += dgap[set[i]];
@@ -659,7 +666,7 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
   int it = 0;
   const int max_it = std::max(50, 4 * int(set.size()));
   while (it < max_it && rr > tolerance * tolerance * bb && bb > 0) {
-    const std::vector<double> ad = apply(d);
+    const std::vector<double>& ad = apply(d);
     double dad = 0;
     for (size_t i = 0; i < set.size(); ++i) dad += d[i] * ad[i];
     if (!(dad > 0)) break;
@@ -680,7 +687,7 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
   // dδ = mean over C of (K dp + dh).
   std::fill(full.begin(), full.end(), 0.0);
   for (size_t i = 0; i < set.size(); ++i) full[set[i]] = out.pressure_MPa[set[i]] = uniform + z[i];
-  const std::vector<double> u = Displacement(grid, full, e_star);
+  displacement();
   double da = 0;
   for (size_t i = 0; i < set.size(); ++i) da += u[set[i]] + dgap[set[i]];
   out.approach_mm = da / m;

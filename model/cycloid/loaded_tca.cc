@@ -81,12 +81,33 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
 // is dy/2 − dy·t/(1 − t) down to t = 1/3 (end exactly at the face end), continued linearly (C¹)
 // beyond: −(9/4)·dy·(t − 1/3), bounded for a pressure that rises towards the edge (a straight
 // tooth). Continuous in the crowning up to the P² model's error when a row enters contact.
-double EndDistance(const contact::Grid& g, const std::vector<double>& p) {
-  std::vector<double> rows(g.ny, 0.0);
+// The row maxima (over x) of a pressure field and, when dp is given, their derivatives with
+// each row's peak cell frozen: Jets (value, derivative).
+using J1 = ceres::Jet<double, 1>;
+std::vector<J1> RowMaxima(const contact::Grid& g, const std::vector<double>& p,
+                          const std::vector<double>* dp) {
+  std::vector<J1> rows(g.ny, J1(0.0));
   for (int iy = 0; iy < g.ny; ++iy)
-    for (int ix = 0; ix < g.nx; ++ix) rows[iy] = std::max(rows[iy], p[size_t(iy) * g.nx + ix]);
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const size_t k = size_t(iy) * g.nx + ix;
+      if (p[k] > rows[iy].a) {
+        rows[iy].a = p[k];
+        rows[iy].v[0] = dp ? (*dp)[k] : 0.0;
+      }
+    }
+  return rows;
+}
+
+template <typename T>
+T EndDistanceFromRows(const contact::Grid& g, const std::vector<T>& rows) {
+  using std::abs;
   const double half = 0.5 * g.ny * g.dy;
-  double result = kInf;
+  T result(kInf);
+  bool any = false;
+  auto take = [&](const T& d) {
+    if (!any || d < result) result = d;
+    any = true;
+  };
   for (int side : {-1, 1}) {
     // Rows outward from the face centre on this side.
     std::vector<int> out;
@@ -96,23 +117,39 @@ double EndDistance(const contact::Grid& g, const std::vector<double>& p) {
       for (int iy = (g.ny - 1) / 2; iy >= 0; --iy) out.push_back(iy);
     int k = -1;
     for (int j = 0; j < int(out.size()); ++j)
-      if (rows[out[j]] > 0) k = j;
+      if (rows[out[j]] > T(0.0)) k = j;
     if (k < 0) continue;
     const double dist_k = std::abs(g.y_centre_mm(out[k]));
-    if (k == 0 || !(rows[out[k - 1]] > 0)) {
-      result = std::min(result, half - dist_k - 0.5 * g.dy);
+    if (k == 0 || !(rows[out[k - 1]] > T(0.0))) {
+      take(T(half - dist_k - 0.5 * g.dy));
       continue;
     }
-    const double pk = rows[out[k]], pp = rows[out[k - 1]];
-    const double t = (pk * pk) / (pp * pp);
-    double d;
+    const T pk = rows[out[k]], pp = rows[out[k - 1]];
+    const T t = (pk * pk) / (pp * pp);
+    T d;
     if (k == int(out.size()) - 1)
-      d = t <= 1.0 / 3.0 ? 0.5 * g.dy - g.dy * t / (1.0 - t) : -2.25 * g.dy * (t - 1.0 / 3.0);
+      d = t <= T(1.0 / 3.0) ? T(0.5 * g.dy) - g.dy * t / (T(1.0) - t) : T(-2.25 * g.dy) * (t - T(1.0 / 3.0));
+    else if (t < T(0.5))
+      d = T(half - dist_k) - g.dy * (t / (T(1.0) - t));
     else
-      d = half - dist_k - g.dy * std::min(t / (1.0 - std::min(t, 0.5)), 1.0);
-    result = std::min(result, d);
+      d = T(half - dist_k - g.dy) + T(0.0) * t;  // min(t/(1 − min(t, 0.5)), 1) = 1 for t >= 0.5
+    take(d);
   }
-  return std::isfinite(result) ? result : 0.0;
+  return any ? result : T(0.0);
+}
+
+// Distance from the contact's axial end to the face end [mm], the smaller of the two sides, with
+// the end located within a cell: along each side the row maxima P (over x) fall like sqrt(distance
+// to the end) near an elliptical end, so P² is linear there and the end lies t/(1 − t) cells beyond
+// the outermost loaded row k, t = P_k² / P_(k−1)². When the end row itself is loaded the distance
+// is dy/2 − dy·t/(1 − t) down to t = 1/3 (end exactly at the face end), continued linearly (C¹)
+// beyond: −(9/4)·dy·(t − 1/3), bounded for a pressure that rises towards the edge (a straight
+// tooth). Continuous in the crowning up to the P² model's error when a row enters contact.
+double EndDistance(const contact::Grid& g, const std::vector<double>& p) {
+  std::vector<double> rows(g.ny, 0.0);
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) rows[iy] = std::max(rows[iy], p[size_t(iy) * g.nx + ix]);
+  return EndDistanceFromRows<double>(g, rows);
 }
 
 }  // namespace
@@ -428,121 +465,241 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
   return out;
 }
 
+LoadedTca LoadedTca::WithModification(double delta_position_mm, double delta_radius_mm) const {
+  LoadedTca copy = *this;
+  copy.drive_.delta_position_mm = delta_position_mm;
+  copy.drive_.delta_radius_mm = delta_radius_mm;
+  if (const std::string why = CheckDrive(copy.drive_); !why.empty()) throw std::invalid_argument(why);
+  return copy;
+}
+
 LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std::string& parameter) const {
-  // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact).
+  return Differentiate(solved, std::vector<std::string>{parameter}).front();
+}
+
+std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
+    const MeshLoad& solved, const std::vector<std::string>& parameters) const {
   using J = ceres::Jet<double, 1>;
-  const bool torque = parameter == "torque_Nmm";
-  const bool geometry = parameter == "delta_position_mm" || parameter == "delta_radius_mm";
-  std::vector<double> dcrown(options_.axial_cells, 0.0);
-  // Δa, Δρ: the unloaded TCA with a Jet gives each pair's d(arm), d(backlash), d(profile
-  // curvature) and dβ0 (frozen first-contact pair).
-  std::map<int, PairGeometry<J>> dgeom;
-  double d_beta0 = 0;
-  if (geometry) {
-    DriveTpl<J> dj;
-    dj.teeth = drive_.teeth;
-    dj.rollers = drive_.rollers;
-    dj.roller_position_radius_mm = J(drive_.roller_position_radius_mm);
-    dj.roller_radius_mm = J(drive_.roller_radius_mm);
-    dj.eccentricity_mm = J(drive_.eccentricity_mm);
-    dj.face_width_mm = J(drive_.face_width_mm);
-    dj.delta_position_mm = J(drive_.delta_position_mm);
-    dj.delta_radius_mm = J(drive_.delta_radius_mm);
-    (parameter == "delta_position_mm" ? dj.delta_position_mm : dj.delta_radius_mm).v[0] = 1.0;
-    const UnloadedMesh<J> u = UnloadedTca<J>(dj, J(solved.crank_angle_rad));
-    d_beta0 = u.rotation.v[0];
-    for (const auto& g : u.pairs) dgeom[g.roller] = g;
-  }
-  if (!torque && !geometry) {
-    const double b = drive_.face_width_mm;
-    const double dy = b / options_.axial_cells;
-    J radius(crowning_.radius_mm), flat(crowning_.flat_length_mm), coefficient(crowning_.coefficient_mm),
-        length(crowning_.effective_length_mm > 0 ? crowning_.effective_length_mm : b), drop(crowning_.end_drop_mm);
-    J* field = parameter == "coefficient_mm"        ? &coefficient
-               : parameter == "effective_length_mm" ? &length
-               : parameter == "end_drop_mm"         ? &drop
-               : parameter == "radius_mm"           ? &radius
-                                                    : nullptr;
-    if (!field) throw std::invalid_argument("Differentiate: unknown parameter " + parameter);
-    field->v[0] = 1.0;
-    for (int iy = 0; iy < options_.axial_cells; ++iy)
-      dcrown[iy] = CrowningDrop<J>(crowning_.type, radius, flat, coefficient, length,
-                                   J(-0.5 * b + (iy + 0.5) * dy), drop).v[0];
-    // The gap is shifted so that its lowest cell touches: the shift's derivative is the lowest
-    // row's (the across-profile part does not depend on s).
-    const int low = int(std::min_element(crown_.begin(), crown_.end()) - crown_.begin());
-    const double d_low = dcrown[low];
-    for (double& d : dcrown) d -= d_low;
-  }
-  Derivative out;
+  const size_t np = parameters.size();
   const size_t n = solved.pairs.size();
-  std::vector<double> compliance(n), gap_rate(n, 0.0), d_arm(n, 0.0), d_backlash(n, 0.0);
-  std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n), by_gap(n);
+  // What each parameter changes: the torque (the moment balance), Δa/Δρ (arms, backlash, tooth
+  // curvature, β0 through the unloaded TCA with a Jet), or the crowning drop per axial row.
+  enum class Kind { kTorque, kGeometry, kCrowning };
+  std::vector<Kind> kind(np);
+  std::vector<std::vector<double>> dcrown(np);
+  std::vector<std::map<int, PairGeometry<J>>> dgeom(np);
+  std::vector<double> d_beta0(np, 0.0);
+  for (size_t j = 0; j < np; ++j) {
+    const std::string& parameter = parameters[j];
+    if (parameter == "torque_Nmm") {
+      kind[j] = Kind::kTorque;
+    } else if (parameter == "delta_position_mm" || parameter == "delta_radius_mm") {
+      kind[j] = Kind::kGeometry;
+      DriveTpl<J> dj;
+      dj.teeth = drive_.teeth;
+      dj.rollers = drive_.rollers;
+      dj.roller_position_radius_mm = J(drive_.roller_position_radius_mm);
+      dj.roller_radius_mm = J(drive_.roller_radius_mm);
+      dj.eccentricity_mm = J(drive_.eccentricity_mm);
+      dj.face_width_mm = J(drive_.face_width_mm);
+      dj.delta_position_mm = J(drive_.delta_position_mm);
+      dj.delta_radius_mm = J(drive_.delta_radius_mm);
+      (parameter == "delta_position_mm" ? dj.delta_position_mm : dj.delta_radius_mm).v[0] = 1.0;
+      const UnloadedMesh<J> u = UnloadedTca<J>(dj, J(solved.crank_angle_rad));
+      d_beta0[j] = u.rotation.v[0];
+      for (const auto& g : u.pairs) dgeom[j][g.roller] = g;
+    } else {
+      kind[j] = Kind::kCrowning;
+      // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact).
+      const double b = drive_.face_width_mm;
+      const double dy = b / options_.axial_cells;
+      J radius(crowning_.radius_mm), flat(crowning_.flat_length_mm), coefficient(crowning_.coefficient_mm),
+          length(crowning_.effective_length_mm > 0 ? crowning_.effective_length_mm : b),
+          drop(crowning_.end_drop_mm);
+      J* field = parameter == "coefficient_mm"        ? &coefficient
+                 : parameter == "effective_length_mm" ? &length
+                 : parameter == "end_drop_mm"         ? &drop
+                 : parameter == "flat_length_mm"      ? &flat
+                 : parameter == "radius_mm"           ? &radius
+                                                      : nullptr;
+      if (!field) throw std::invalid_argument("Differentiate: unknown parameter " + parameter);
+      field->v[0] = 1.0;
+      dcrown[j].resize(options_.axial_cells);
+      for (int iy = 0; iy < options_.axial_cells; ++iy)
+        dcrown[j][iy] = CrowningDrop<J>(crowning_.type, radius, flat, coefficient, length,
+                                        J(-0.5 * b + (iy + 0.5) * dy), drop).v[0];
+      // The gap is shifted so that its lowest cell touches: the shift's derivative is the lowest
+      // row's (the across-profile part does not depend on s).
+      const int low = int(std::min_element(crown_.begin(), crown_.end()) - crown_.begin());
+      const double d_low = dcrown[j][low];
+      for (double& d : dcrown[j]) d -= d_low;
+    }
+  }
+  std::vector<Derivative> out(np);
+  for (size_t j = 0; j < np; ++j) out[j].parameter = parameters[j];
+  const double tol = options_.sensitivity_tolerance;
+  std::vector<double> compliance(n);
+  std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n);
+  // by_gap[j][i], gap_rate, d_arm, d_backlash per parameter and pair.
+  std::vector<std::vector<contact::HalfSpaceSolver::Sensitivity>> by_gap(
+      np, std::vector<contact::HalfSpaceSolver::Sensitivity>(n));
+  std::vector<std::vector<double>> gap_rate(np, std::vector<double>(n, 0.0)),
+      d_arm(np, std::vector<double>(n, 0.0)), d_backlash(np, std::vector<double>(n, 0.0));
+  bool converged = true;
   for (size_t i = 0; i < n; ++i) {
     const PairLoad& p = solved.pairs[i];
     if (p.pressure_MPa.size() != size_t(p.grid.cells()))
       throw std::invalid_argument("Differentiate: the solve must keep its pressures");
     const std::vector<double> zero(p.pressure_MPa.size(), 0.0);
-    by_load[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, zero, 1.0, e_star_);
+    by_load[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, zero, 1.0, e_star_, tol);
     compliance[i] = by_load[i].approach_mm;
-    out.converged = out.converged && by_load[i].converged;
-    if (torque) continue;
-    std::vector<double> dgap(p.pressure_MPa.size());
-    if (geometry) {
-      // The gap across the profile through the tooth's curvature (the roller's is unmodified),
-      // shifted so that the lowest cell touches: its derivative at the lowest column.
-      const PairGeometry<J>& g = dgeom.at(p.roller);
-      d_arm[i] = g.arm_mm.v[0];
-      d_backlash[i] = g.backlash.v[0];
-      const J kappa = g.profile_curvature;
-      std::vector<double> across(p.grid.nx), d_across(p.grid.nx);
-      for (int ix = 0; ix < p.grid.nx; ++ix) {
-        const double x = p.grid.x_centre_mm(ix);
-        const J sep = kappa * x * x / (1.0 + sqrt(1.0 - kappa * kappa * x * x));
-        across[ix] = CircleSeparation(1.0 / drive_.roller_radius_mm, x) + sep.a;
-        d_across[ix] = sep.v[0];
+    converged = converged && by_load[i].converged;
+    for (size_t j = 0; j < np; ++j) {
+      if (kind[j] == Kind::kTorque) continue;
+      std::vector<double> dgap(p.pressure_MPa.size());
+      if (kind[j] == Kind::kGeometry) {
+        // The gap across the profile through the tooth's curvature (the roller's is unmodified),
+        // shifted so that the lowest cell touches: its derivative at the lowest column.
+        const PairGeometry<J>& g = dgeom[j].at(p.roller);
+        d_arm[j][i] = g.arm_mm.v[0];
+        d_backlash[j][i] = g.backlash.v[0];
+        const J kappa = g.profile_curvature;
+        std::vector<double> across(p.grid.nx), d_across(p.grid.nx);
+        for (int ix = 0; ix < p.grid.nx; ++ix) {
+          const double x = p.grid.x_centre_mm(ix);
+          const J sep = kappa * x * x / (1.0 + sqrt(1.0 - kappa * kappa * x * x));
+          across[ix] = CircleSeparation(1.0 / drive_.roller_radius_mm, x) + sep.a;
+          d_across[ix] = sep.v[0];
+        }
+        const int low = int(std::min_element(across.begin(), across.end()) - across.begin());
+        for (int iy = 0; iy < p.grid.ny; ++iy)
+          for (int ix = 0; ix < p.grid.nx; ++ix)
+            dgap[size_t(iy) * p.grid.nx + ix] = d_across[ix] - d_across[low];
+      } else {
+        for (int iy = 0; iy < p.grid.ny; ++iy)
+          for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[j][iy];
       }
-      const int low = int(std::min_element(across.begin(), across.end()) - across.begin());
-      for (int iy = 0; iy < p.grid.ny; ++iy)
-        for (int ix = 0; ix < p.grid.nx; ++ix)
-          dgap[size_t(iy) * p.grid.nx + ix] = d_across[ix] - d_across[low];
-    } else {
-      for (int iy = 0; iy < p.grid.ny; ++iy)
-        for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[iy];
+      by_gap[j][i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_, tol);
+      gap_rate[j][i] = by_gap[j][i].approach_mm;
+      converged = converged && by_gap[j][i].converged;
     }
-    by_gap[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_);
-    gap_rate[i] = by_gap[i].approach_mm;
-    out.converged = out.converged && by_gap[i].converged;
   }
   // δ_i = l_i (Δφc − φ_bl,i) and Σ l_i F_i = T differentiated, with dδ_i = c_i dF_i + a_i:
   // dF_i = (l_i dΔφc + r_i) / c_i, r_i = dl_i (Δφc − φ_bl,i) − l_i dφ_bl,i − a_i.
   const double deflection = solved.deflection_rad;
-  std::vector<double> r(n);
-  double num = torque ? 1.0 : 0.0, den = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const PairLoad& p = solved.pairs[i];
-    const double l = p.arm_mm;
-    r[i] = d_arm[i] * (deflection - p.backlash_rad) - l * d_backlash[i] - gap_rate[i];
-    num -= d_arm[i] * p.load_N + l * r[i] / compliance[i];
-    den += l * l / compliance[i];
-  }
-  out.deflection_rad = den > 0 ? num / den : 0.0;
-  out.rotation_rad = d_beta0 + out.deflection_rad;
-  double best = -1;
-  for (size_t i = 0; i < n; ++i) {
-    const PairLoad& p = solved.pairs[i];
-    const double df = (p.arm_mm * out.deflection_rad + r[i]) / compliance[i];
-    out.pair_load_N.push_back(df);
-    const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
-                               p.pressure_MPa.begin());
-    double dp = df * by_load[i].pressure_MPa[peak];
-    if (!torque) dp += by_gap[i].pressure_MPa[peak];
-    out.pair_max_pressure_MPa.push_back(dp);
-    if (p.max_pressure_MPa > best) {
-      best = p.max_pressure_MPa;
-      out.max_pressure_MPa = dp;
+  for (size_t j = 0; j < np; ++j) {
+    Derivative& d = out[j];
+    d.converged = converged;
+    const bool torque = kind[j] == Kind::kTorque;
+    std::vector<double> r(n);
+    double num = torque ? 1.0 : 0.0, den = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const PairLoad& p = solved.pairs[i];
+      const double l = p.arm_mm;
+      r[i] = d_arm[j][i] * (deflection - p.backlash_rad) - l * d_backlash[j][i] - gap_rate[j][i];
+      num -= d_arm[j][i] * p.load_N + l * r[i] / compliance[i];
+      den += l * l / compliance[i];
+    }
+    d.deflection_rad = den > 0 ? num / den : 0.0;
+    d.rotation_rad = d_beta0[j] + d.deflection_rad;
+    d.unloaded_rotation_rad = d_beta0[j];
+    double best = -1, nearest_end = kInf;
+    for (size_t i = 0; i < n; ++i) {
+      const PairLoad& p = solved.pairs[i];
+      const double df = (p.arm_mm * d.deflection_rad + r[i]) / compliance[i];
+      d.pair_load_N.push_back(df);
+      const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
+                                 p.pressure_MPa.begin());
+      double dp = df * by_load[i].pressure_MPa[peak];
+      if (!torque) dp += by_gap[j][i].pressure_MPa[peak];
+      d.pair_max_pressure_MPa.push_back(dp);
+      if (p.max_pressure_MPa > best) {
+        best = p.max_pressure_MPa;
+        d.max_pressure_MPa = dp;
+      }
+      if (options_.edge_margin) {
+        // The end distance through the row maxima (their cells frozen): dp over the field.
+        std::vector<double> field(p.pressure_MPa.size());
+        for (size_t k = 0; k < field.size(); ++k)
+          field[k] = df * by_load[i].pressure_MPa[k] + (torque ? 0.0 : by_gap[j][i].pressure_MPa[k]);
+        const J1 e = EndDistanceFromRows<J1>(p.grid, RowMaxima(p.grid, p.pressure_MPa, &field));
+        d.pair_end_distance_mm.push_back(e.v[0]);
+        if (p.end_distance_mm < nearest_end) {
+          nearest_end = p.end_distance_mm;
+          d.end_distance_mm = e.v[0];
+        }
+      }
     }
   }
+  return out;
+}
+
+double SmoothPeakPressure(const CycleResult& cycle, double temperature_MPa) {
+  double m = 0;
+  for (const MeshLoad& mesh : cycle.meshes)
+    for (const PairLoad& p : mesh.pairs) m = std::max(m, p.max_pressure_MPa);
+  if (!(temperature_MPa > 0)) return m;
+  double s = 0;
+  for (const MeshLoad& mesh : cycle.meshes)
+    for (const PairLoad& p : mesh.pairs) s += std::exp((p.max_pressure_MPa - m) / temperature_MPa);
+  return s > 0 ? m + temperature_MPa * std::log(s) : m;
+}
+
+std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const CycleResult& cycle,
+                                                const std::vector<std::string>& parameters,
+                                                double temperature_MPa) {
+  const size_t np = parameters.size(), na = cycle.meshes.size();
+  std::vector<CycleDerivative> out(np);
+  for (size_t j = 0; j < np; ++j) {
+    out[j].parameter = parameters[j];
+    out[j].rotation_rad.assign(na, 0.0);
+    out[j].unloaded_rotation_rad.assign(na, 0.0);
+    out[j].max_pressure_per_angle_MPa.assign(na, 0.0);
+    out[j].end_distance_per_angle_mm.assign(na, 0.0);
+    out[j].pair_load_N.assign(na, {});
+  }
+  // Soft-max weights over (angle, pair) peaks and the active terms of the exact maxima.
+  const double smooth = SmoothPeakPressure(cycle, temperature_MPa);
+  double peak = -1, load = -1;
+  size_t peak_angle = 0, load_angle = 0, load_pair = 0;
+  for (size_t k = 0; k < na; ++k) {
+    const MeshLoad& m = cycle.meshes[k];
+    if (m.max_pressure_MPa > peak) peak = m.max_pressure_MPa, peak_angle = k;
+    for (size_t i = 0; i < m.pairs.size(); ++i)
+      if (m.pairs[i].load_N > load) load = m.pairs[i].load_N, load_angle = k, load_pair = i;
+  }
+  size_t lte_hi = 0, lte_lo = 0, end_angle = 0;
+  double end = kInf;
+  for (size_t k = 0; k < na; ++k) {
+    if (cycle.meshes[k].rotation_rad > cycle.meshes[lte_hi].rotation_rad) lte_hi = k;
+    if (cycle.meshes[k].rotation_rad < cycle.meshes[lte_lo].rotation_rad) lte_lo = k;
+    if (!cycle.meshes[k].pairs.empty() && cycle.meshes[k].end_distance_mm < end)
+      end = cycle.meshes[k].end_distance_mm, end_angle = k;
+  }
+  for (size_t k = 0; k < na; ++k) {
+    const MeshLoad& m = cycle.meshes[k];
+    const std::vector<LoadedTca::Derivative> d = tca.Differentiate(m, parameters);
+    for (size_t j = 0; j < np; ++j) {
+      CycleDerivative& c = out[j];
+      c.converged = c.converged && d[j].converged;
+      c.rotation_rad[k] = d[j].rotation_rad;
+      c.unloaded_rotation_rad[k] = d[j].unloaded_rotation_rad;
+      c.max_pressure_per_angle_MPa[k] = d[j].max_pressure_MPa;
+      c.end_distance_per_angle_mm[k] = d[j].end_distance_mm;
+      c.pair_load_N[k] = d[j].pair_load_N;
+      for (size_t i = 0; i < m.pairs.size(); ++i) {
+        const double w = temperature_MPa > 0
+                             ? std::exp((m.pairs[i].max_pressure_MPa - smooth) / temperature_MPa)
+                             : (k == peak_angle && m.pairs[i].max_pressure_MPa == peak ? 1.0 : 0.0);
+        c.smooth_peak_MPa += w * d[j].pair_max_pressure_MPa[i];
+      }
+      if (k == peak_angle) c.max_pressure_MPa = d[j].max_pressure_MPa;
+      if (k == load_angle && load_pair < d[j].pair_load_N.size()) c.max_pair_load_N = d[j].pair_load_N[load_pair];
+      if (k == end_angle) c.end_distance_mm = d[j].end_distance_mm;
+    }
+  }
+  for (CycleDerivative& c : out)
+    if (na > 0) c.lte_peak_to_peak_arcsec = (c.rotation_rad[lte_hi] - c.rotation_rad[lte_lo]) * kArcsecPerRad;
   return out;
 }
 

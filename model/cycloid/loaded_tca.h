@@ -56,6 +56,8 @@ struct LoadedOptions {
   bool keep_pressure = true;
   /// Compute the edge margin of every pair (one extra convolution per loaded pair).
   bool edge_margin = false;
+  /// Relative residual of the conjugate gradients of the implicit derivatives (Differentiate).
+  double sensitivity_tolerance = 1e-10;
 };
 
 /// One loaded roller-tooth pair at one crank angle.
@@ -132,21 +134,36 @@ class LoadedTca {
   /// differentiation with every pair's contact set and the set of loaded pairs frozen
   /// (design-notes §1): per pair one forward sensitivity for its load (its compliance dδ/dF) and
   /// one for the parameter at fixed load (dδ/ds), then the outer equations δ_i = l_i (Δφc − φ_bl,i),
-  /// Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] ("torque_Nmm"), the profile
-  /// modifications "delta_position_mm" and "delta_radius_mm" (Δa, Δρ: arms, backlash and the
-  /// tooth curvature through the unloaded TCA with a Jet, the first-contact pair frozen) and the
-  /// crowning's coefficient_mm, effective_length_mm, end_drop_mm, radius_mm (per its type).
+  /// Σ l_i F_i = T differentiated. Parameters (kLtcaParameters): the torque [N·mm]
+  /// ("torque_Nmm"), the profile modifications "delta_position_mm" and "delta_radius_mm" (Δa, Δρ:
+  /// arms, backlash and the tooth curvature through the unloaded TCA with a Jet, the first-contact
+  /// pair frozen) and the crowning's coefficient_mm, effective_length_mm, end_drop_mm,
+  /// flat_length_mm, radius_mm (per its type).
   /// @pre `solved` from Solve(torque_Nmm, ·) on this model with LoadedOptions::keep_pressure.
   /// @throws std::invalid_argument for an unknown parameter or a solve without pressures.
   struct Derivative {
+    std::string parameter;
     double deflection_rad = 0;            ///< dΔφc/ds
     double rotation_rad = 0;              ///< d(β0 + Δφc)/ds, the LTE's derivative
+    double unloaded_rotation_rad = 0;     ///< dβ0/ds, the unloaded TE's (Δa, Δρ only)
     std::vector<double> pair_load_N;      ///< dF_i/ds, in the order of solved.pairs
     std::vector<double> pair_max_pressure_MPa;  ///< d p_i(peak cell)/ds, peak cell frozen
     double max_pressure_MPa = 0;          ///< of the pair carrying the maximum
+    /// d(end distance)/ds of each pair and of the solve's minimum (the active pair), row maxima's
+    /// cells frozen; filled when LoadedOptions::edge_margin.
+    std::vector<double> pair_end_distance_mm;
+    double end_distance_mm = 0;
     bool converged = true;
   };
   Derivative Differentiate(const MeshLoad& solved, const std::string& parameter) const;
+  /// The same for several parameters at once: each pair's load sensitivity is solved once and
+  /// shared (one forward sensitivity per pair plus one per pair and parameter).
+  std::vector<Derivative> Differentiate(const MeshLoad& solved,
+                                        const std::vector<std::string>& parameters) const;
+
+  /// The same model with other profile modifications Δa, Δρ [mm] (tuning), sharing the solver
+  /// caches. @throws std::invalid_argument for an infeasible drive.
+  LoadedTca WithModification(double delta_position_mm, double delta_radius_mm) const;
 
   /// The same model with another crowning (sweeps and tuning), sharing the solver caches.
   /// @throws std::invalid_argument for invalid crowning.
@@ -205,6 +222,36 @@ CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<
 /// @throws std::invalid_argument when the sizes differ.
 CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
                            const std::vector<double>& crank_angles_rad);
+
+/// A smooth peak of the contact stress over a cycle: the soft-max
+///   S = m + τ ln Σ_k exp((p_k − m)/τ),  m = max_k p_k,
+/// over every (crank angle, loaded pair) peak pressure p_k with the temperature τ [MPa]. Its bias
+/// is stated: 0 <= S − m <= τ ln N (N terms); it tends to the exact maximum as τ → 0 and is
+/// differentiable where the exact maximum switches between angles or pairs.
+double SmoothPeakPressure(const CycleResult& cycle, double temperature_MPa);
+
+/// Derivatives of the cycle's outputs with respect to one parameter (LoadedTca::Differentiate at
+/// every crank angle, at the converged states).
+struct CycleDerivative {
+  std::string parameter;
+  double smooth_peak_MPa = 0;           ///< d SmoothPeakPressure(τ)
+  double max_pressure_MPa = 0;          ///< d(exact maximum), at its active angle and pair
+  double lte_peak_to_peak_arcsec = 0;   ///< at the active angles of the LTE's max and min
+  double max_pair_load_N = 0;           ///< at the active angle and pair
+  double end_distance_mm = 0;           ///< d(min over angles), active angle (edge_margin only)
+  std::vector<double> rotation_rad;     ///< per angle, d LTE
+  std::vector<double> unloaded_rotation_rad;  ///< per angle, dβ0 (the unloaded TE)
+  std::vector<double> max_pressure_per_angle_MPa;  ///< per angle (its peak pair)
+  std::vector<double> end_distance_per_angle_mm;   ///< per angle (edge_margin only)
+  std::vector<std::vector<double>> pair_load_N;    ///< per angle, per loaded pair (in its order)
+  bool converged = true;
+};
+
+/// The cycle's derivatives for each parameter (names as LoadedTca::Differentiate). The cycle must
+/// come from RunCycle(tca, …) with LoadedOptions::keep_pressure; τ as SmoothPeakPressure.
+std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const CycleResult& cycle,
+                                                const std::vector<std::string>& parameters,
+                                                double temperature_MPa);
 
 /// Uniform crank angles over [0, span) [rad].
 std::vector<double> UniformCrankAngles(int steps, double span_rad);

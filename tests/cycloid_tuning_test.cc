@@ -1,0 +1,170 @@
+// The joint tuning of the cycloid modifications and crowning (issue 13): the problem's exact
+// Jacobian against central differences of its own values, the general study form (variables named
+// by their field, optimizer backends), its determinism and its input errors.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "objectives/cycloid_crowning.h"
+#include "studies/cycloid_crowning_tuning_study.h"
+#include "studies/input.h"
+#include "studies/study.h"
+#include "tests/reference_designs.h"
+
+namespace camopt::objectives {
+namespace {
+
+// The problem's Jacobian rows (smooth stress, end distance per angle, LTE p-p) against central
+// differences of the evaluator's values; the solves are tight so that the differences resolve
+// the derivatives. Relative tolerance of each entry (to its row's largest central difference).
+constexpr double kJacobianRelTol = 1e-4;
+
+TEST(CycloidTuningProblem, JacobianMatchesCentralDifferencesInTheVariablesUnits) {
+  cycloid::LoadedOptions o;
+  o.profile_cells = o.axial_cells = 12;
+  o.tolerance = 1e-11;
+  o.solver_tolerance = 1e-12;
+  o.rough_solver_tolerance = 0;
+  o.max_iterations = 400;
+  cycloid::Crowning c;
+  c.type = cycloid::CrowningType::kLogarithmic;
+  c.coefficient_mm = 0.003;
+  c.effective_length_mm = 18.7;
+  const std::vector<std::string> names = {"coefficient_mm", "effective_length_mm", "delta_position_um",
+                                          "delta_radius_um"};
+  CycloidTuningModel model(camopt::testing::CycloidNnm(), c, cycloid::Material{}, o, 350.0e3, 550.0e3,
+                           cycloid::UniformCrankAngles(3, 2 * kPi / 16), names, 5.0);
+  CycloidTuningSpec spec;
+  for (const auto& n : names) spec.variables.push_back({n, -kInf, kInf, 0.0, 1.0});
+  const Problem p = CycloidTuningProblem(model, spec, nullptr);
+  const std::vector<double> x = {0.003, 18.7, -16.0, -8.0};
+  const int m = p.evaluator->num_outputs(), n = int(names.size());
+  ASSERT_EQ(m, 1 + 3 + 1 + 3);
+  std::vector<double> y(m), jac(size_t(m) * n);
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  const std::vector<double> steps = {3e-8, 1.87e-4, 1e-3, 1e-3};
+  std::vector<std::vector<double>> fd(m, std::vector<double>(n));
+  for (int j = 0; j < n; ++j) {
+    std::vector<double> xp = x, xm = x, yp(m), ym(m);
+    xp[j] += steps[j];
+    xm[j] -= steps[j];
+    p.evaluator->Eval(xp, yp);
+    p.evaluator->Eval(xm, ym);
+    for (int k = 0; k < m; ++k) fd[k][j] = (yp[k] - ym[k]) / (2 * steps[j]);
+  }
+  for (int k = 0; k < m; ++k) {
+    double scale = 0;
+    for (int j = 0; j < n; ++j) scale = std::max(scale, std::abs(fd[k][j]));
+    ASSERT_GT(scale, 0.0) << "output " << k;
+    for (int j = 0; j < n; ++j)
+      EXPECT_NEAR(jac[size_t(k) * n + j], fd[k][j], kJacobianRelTol * scale)
+          << "output " << k << " variable " << names[j];
+  }
+  // β0 is the unloaded TE: the crowning does not move it.
+  for (int k = 5; k < 8; ++k) EXPECT_EQ(jac[size_t(k) * n + 0], 0.0);
+  // Each distinct point runs its cycles once: 1 + 2n cycle runs, 1 derivative run.
+  EXPECT_EQ(model.evaluations(), 1 + 2 * n);
+  EXPECT_EQ(model.gradient_evaluations(), 1);
+}
+
+TEST(CycloidTuningProblem, VariablesAreCheckedAgainstTheCrowningType) {
+  EXPECT_EQ(TuningVariableAllowed("radius_mm", cycloid::CrowningType::kFull), "");
+  EXPECT_NE(TuningVariableAllowed("coefficient_mm", cycloid::CrowningType::kFull), "");
+  EXPECT_EQ(TuningVariableAllowed("delta_radius_um", cycloid::CrowningType::kNone), "");
+  EXPECT_NE(TuningVariableAllowed("radius_mm", cycloid::CrowningType::kLogarithmic), "");
+  EXPECT_EQ(TuningVariableAllowed("flat_length_mm", cycloid::CrowningType::kPartial), "");
+}
+
+// A small general-form study (coarse: the suite stays fast).
+constexpr const char* kJointStudy = R"({
+    "study": "cycloid_crowning_tuning",
+    "drive": {"teeth": 15, "rollers": 16, "roller_position_radius_mm": 90, "roller_radius_mm": 7.2,
+              "eccentricity_mm": 4.5, "face_width_mm": 17},
+    "modification": {"delta_position_um": -16, "delta_radius_um": -8},
+    "crowning": {"type": "logarithmic", "coefficient_mm": 0.005, "effective_length_mm": 18.7},
+    "variables": {"delta_radius_um": [-30, 0], "coefficient_mm": [0, 0.02], "delta_position_um": [-30, 0]},
+    "optimizer": {"backend": "ipopt", "max_evaluations": 3},
+    "load": {"design_torque_Nm": 350, "max_torque_Nm": 550},
+    "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
+    "tuning": {"curve_points": 3},
+    "analysis": {"crank_angles_per_mesh_period": 2, "grid": [10, 10]}})";
+
+namespace tuning = studies::cycloid_crowning_tuning;
+
+std::pair<tuning::Result, nlohmann::json> RunStudy(const std::string& text) {
+  const nlohmann::json study = nlohmann::json::parse(text);
+  const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
+  const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
+  return {r, tuning::ToJson(s, r)};
+}
+
+TEST(CycloidTuningStudy, GeneralFormReportsEveryVariableAndTheOptimizer) {
+  const auto [r, j] = RunStudy(kJointStudy);
+  // Variables in a fixed order whatever the file's, each reported by name.
+  ASSERT_EQ(j["tuned"].size(), 3u);
+  for (const char* name : {"coefficient_mm", "delta_position_um", "delta_radius_um"})
+    EXPECT_TRUE(j["tuned"].contains(name)) << name;
+  EXPECT_EQ(j["optimizer"]["backend"], "ipopt");
+  EXPECT_GT(j["optimizer"]["gradient_evaluations"].get<int>(), 0);
+  EXPECT_GE(j["optimizer"]["evaluations"].get<int>(), j["optimizer"]["gradient_evaluations"].get<int>());
+  EXPECT_TRUE(j["estimated_error"].contains("tuned_max_contact_stress_MPa"));
+  // The tuned stress is the exact maximum of the best evaluation; its smooth peak is above it by
+  // at most τ ln N (N <= angles × pairs = 2 × 16).
+  EXPECT_GE(j["tuned_smooth_max_contact_stress_MPa"].get<double>(), j["tuned_max_contact_stress_MPa"].get<double>());
+  EXPECT_LE(j["tuned_smooth_max_contact_stress_MPa"].get<double>(),
+            j["tuned_max_contact_stress_MPa"].get<double>() + 2.0 * std::log(32.0));
+  // The design the optimizer reports is no worse (smooth stress) than its start when feasible.
+  if (r.feasible) EXPECT_LE(r.joint_best.smooth_stress_MPa, r.joint_history.front().smooth_stress_MPa);
+  ASSERT_EQ(r.curve.size(), 3u);  // f scanned at the other variables' start values
+}
+
+TEST(CycloidTuningStudy, ResultDoesNotDependOnTheScanOrWhatRanBefore) {
+  // The optimizer starts from the start values, not from the scan: the tuned design, its outputs
+  // and the optimizer's report are the same bits with a scan of 0, 3 or 5 points, and the same
+  // study gives byte-identical result.json after other studies ran in the process.
+  const auto [a, ja] = RunStudy(kJointStudy);
+  std::string five = kJointStudy;
+  five.replace(five.find("\"curve_points\": 3"), 17, "\"curve_points\": 5");
+  const auto [b, jb] = RunStudy(five);
+  std::string none = kJointStudy;
+  none.replace(none.find("\"curve_points\": 3"), 17, "\"curve_points\": 0");
+  const auto [c, jc] = RunStudy(none);
+  const auto [d, jd] = RunStudy(kJointStudy);
+  EXPECT_EQ(ja.dump(), jd.dump());
+  for (const char* key : {"tuned", "optimizer", "tuned_max_contact_stress_MPa", "tuned_edge_margin_at_max_torque_um",
+                          "estimated_error", "tuned_smooth_max_contact_stress_MPa"}) {
+    EXPECT_EQ(ja[key].dump(), jb[key].dump()) << key;
+    EXPECT_EQ(ja[key].dump(), jc[key].dump()) << key;
+  }
+  // The variables' order in the file does not matter either.
+  std::string reordered = kJointStudy;
+  reordered.replace(reordered.find("\"variables\""), std::string("\"variables\": {\"delta_radius_um\": [-30, 0], "
+                                                                 "\"coefficient_mm\": [0, 0.02], \"delta_position_um\": [-30, 0]}").size(),
+                    "\"variables\": {\"delta_position_um\": [-30, 0], \"delta_radius_um\": [-30, 0], "
+                    "\"coefficient_mm\": [0, 0.02]}");
+  EXPECT_EQ(RunStudy(reordered).second.dump(), ja.dump());
+}
+
+TEST(CycloidTuningStudy, BadGeneralFormsAreInputErrors) {
+  auto rejected = [](const std::string& text) {
+    const nlohmann::json study = nlohmann::json::parse(text);
+    EXPECT_THROW(tuning::Parse(studies::Node(&study, "t.json", "")), studies::StudyError) << text;
+  };
+  auto with = [](std::string from, const std::string& what, const std::string& by) {
+    from.replace(from.find(what), what.size(), by);
+    return from;
+  };
+  const nlohmann::json good = nlohmann::json::parse(kJointStudy);
+  EXPECT_NO_THROW(tuning::Parse(studies::Node(&good, "t.json", "")));  // each case below is one edit
+  rejected(with(kJointStudy, "\"coefficient_mm\": [0, 0.02]", "\"radius_mm\": [1000, 5000]"));  // not LCM's
+  rejected(with(kJointStudy, "\"coefficient_mm\": [0, 0.02]", "\"coefficient_um\": [0, 20]"));   // unknown
+  rejected(with(kJointStudy, "\"delta_position_um\": [-30, 0]", "\"delta_position_um\": [-30, 5]"));
+  rejected(with(kJointStudy, "\"backend\": \"ipopt\"", "\"backend\": \"bfgs\""));
+  rejected(with(kJointStudy, "\"coefficient_mm\": [0, 0.02]", "\"effective_length_mm\": [10, 20]"));  // < B
+}
+
+}  // namespace
+}  // namespace camopt::objectives
