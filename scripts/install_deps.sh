@@ -4,6 +4,8 @@ set -euo pipefail
 PACKAGES=(build-essential cmake pkg-config
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev libceres-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libdxflib-dev libfftw3-dev libsundials-dev ccache
+  # Issue 19 (sweeps): Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
+  libboost-dev libopenmpi-dev openmpi-bin
   # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
   chromium python3-pil)
 SUDO=""
