@@ -5,6 +5,7 @@
 #include "studies/lcr_analysis_study.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <set>
@@ -141,14 +142,29 @@ double ParseBoreDiameter(const Node& side, const lcr::Reducer<double>& r, Side s
   return d;
 }
 
+// The finite-length contact model of each cam (studies/lcr_contact_input.h, model/lcr/contact3d_cycle.h).
+void RunContact3D(const Study& st, Result& res) {
+  for (Side s : {Side::kInput, Side::kOutput}) {
+    const auto& crowning = s == Side::kInput ? st.contact.input_crowning : st.contact.output_crowning;
+    lcr::Contact3DCycleSide c = lcr::AnalyzeCycleContact3D(st.reducer, s, res.series, st.material.composite_modulus_MPa(),
+                                                          crowning, st.contact.options);
+    CamResult& j = s == Side::kInput ? res.input_cam : res.output_cam;
+    j.max_contact_stress_MPa = c.max_contact_stress_MPa;
+    if (!c.converged)
+      res.notes.push_back(std::string(s == Side::kInput ? "input" : "output") +
+                          " cam: a contact solve did not converge (see docs/lcr.md)");
+    (s == Side::kInput ? res.contact_input : res.contact_output) = std::move(c);
+  }
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis",
-                         "tolerances", "monte_carlo", "geometry_files"});
+                         "tolerances", "monte_carlo", "geometry_files", "contact"});
   Study st;
   st.name = root.StringOr("name", "");
-  st.reducer = ParseReducer(root["reducer"]);
+  st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true);
   if (root.Has("analysis")) {
     const Node analysis = root["analysis"];
     analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate", "load_model"});
@@ -190,6 +206,7 @@ Study Parse(const Node& root) {
   st.bore_diameter_input_mm = ParseBoreDiameter(reducer_node["input"], st.reducer, Side::kInput);
   st.bore_diameter_output_mm = ParseBoreDiameter(reducer_node["output"], st.reducer, Side::kOutput);
   st.geometry = ParseGeometryFiles(root);
+  st.contact = ParseLcrContact(root, st.reducer);
   return st;
 }
 
@@ -266,6 +283,7 @@ Result Run(const Study& st, const RunContext& ctx) {
                                 : "zero output torque: efficiency is its limit as the torque tends to 0 "
                                   "(the model is linear in the torque)");
     }
+    if (q.stress && st.contact.given && !res.any_undercut) RunContact3D(st, res);
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
   if (q.profile) {
@@ -338,6 +356,21 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
         cj["max_contact_stress_MPa"] = nullptr;  // a loaded roller sits on an undercut point
       }
       cj["contact_length_mm"] = c.contact_length_mm;
+      const auto& c3 = s == Side::kInput ? res.contact_input : res.contact_output;
+      if (c3) {
+        const lcr::ContactModel m = st.contact.options.model;
+        cj["contact_model"] = ContactModelName(m);
+        cj["edge_loaded"] = c3->edge_loaded;
+        if (c3->worst_angle >= 0) cj["worst_input_angle_deg"] = res.series.theta_rad[c3->worst_angle] * 180 / kPi;
+        if (m != lcr::ContactModel::kLine) {
+          cj["slice_width_mm"] = c3->slice_width_mm;
+          cj["interpolation_error_MPa"] = c3->interpolation_error_MPa;
+        }
+        if (m == lcr::ContactModel::kHalfSpace) {
+          cj["cell_size_mm"] = {c3->cell_dx_mm, c3->cell_dy_mm};
+          cj["slices_max_contact_stress_MPa"] = c3->slices_peak_at_worst_MPa;
+        }
+      }
     }
   }
   if (q.forces) {
@@ -354,12 +387,42 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
       j["friction_coefficient"] = st.load.friction_coefficient;
     }
   }
+  if (st.contact.given) {
+    j["contact"] = {{"model", ContactModelName(st.contact.options.model)},
+                    {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3}};
+    if (st.contact.options.model != lcr::ContactModel::kLine) j["contact"]["slices"] = st.contact.options.slices;
+    if (st.contact.options.model == lcr::ContactModel::kHalfSpace)
+      j["contact"]["grid"] = {st.contact.options.grid_nx, st.contact.options.grid_ny};
+  }
   if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
   j["notes"] = res.notes;
   if (res.input_cam_files) j["geometry_files"]["input_cam"] = res.input_cam_files->summary;
   if (res.output_cam_files) j["geometry_files"]["output_cam"] = res.output_cam_files->summary;
   return j;
 }
+
+namespace {
+// Pressure along the roller at each cam's worst contact: roller_pressure.csv and .svg.
+void WriteRollerPressure(const Study& st, const Result& res, Outputs& out) {
+  std::vector<Series> curves;
+  Table t;
+  for (const auto& [name, c3] : {std::pair{"input", &*res.contact_input}, std::pair{"output", &*res.contact_output}}) {
+    if (c3->worst_angle < 0) continue;
+    const double angle = res.series.theta_rad[c3->worst_angle] * 180 / kPi;
+    t.Add(std::string(name) + "_y_mm", c3->worst_y_mm);
+    t.Add(std::string(name) + "_pressure_MPa", c3->worst_pressure_MPa);
+    char label[160];
+    std::snprintf(label, sizeof label, "%s cam, roller %d at input angle %.2f deg", name, c3->worst_roller, angle);
+    curves.push_back({label, c3->worst_y_mm, c3->worst_pressure_MPa});
+  }
+  if (curves.empty()) return;
+  out.Add("roller_pressure.csv", ToCsv(t));
+  out.Add("roller_pressure.svg",
+          SvgLinePlot(curves, {std::string("Contact pressure along the roller at the worst angle (") +
+                                   ContactModelName(st.contact.options.model) + " model)",
+                               "position along the roller from its mid-length [mm]", "contact pressure [MPa]"}));
+}
+}  // namespace
 
 void Write(const Study& st, const Result& res, Outputs& out) {
   const lcr::Reducer<double>& r = st.reducer;
@@ -375,9 +438,16 @@ void Write(const Study& st, const Result& res, Outputs& out) {
     t.Add("output_actuating_rollers", as_double(series.output.actuating));
     t.Add("input_max_roller_force_N", series.input.max_force_N);
     t.Add("output_max_roller_force_N", series.output.max_force_N);
-    if (q.stress) {
+    if (q.stress && !res.contact_input) {
       t.Add("input_max_contact_stress_MPa", series.input.max_stress_MPa);
       t.Add("output_max_contact_stress_MPa", series.output.max_stress_MPa);
+    }
+    if (res.contact_input && res.contact_output) {
+      for (const auto& [name, c3] : {std::pair{"input", &*res.contact_input}, std::pair{"output", &*res.contact_output}}) {
+        t.Add(std::string(name) + "_max_contact_stress_MPa", c3->max_stress_MPa);
+        t.Add(std::string(name) + "_stress_roller_force_N", c3->stress_force_N);
+        t.Add(std::string(name) + "_stress_roller_radius_mm", c3->stress_radius_mm);
+      }
     }
     auto nm = [](std::vector<double> v) { for (double& x : v) x /= 1000; return v; };
     t.Add("fixed_turret_torque_Nm", nm(series.input.turret_torque_Nmm));
@@ -395,12 +465,14 @@ void Write(const Study& st, const Result& res, Outputs& out) {
     out.Add("forces.svg", SvgLinePlot({{"input cam (fixed turret)", deg, series.input.max_force_N},
                                        {"output cam (output turret)", deg, series.output.max_force_N}},
                                       forces));
+    if (res.contact_input && res.contact_output) WriteRollerPressure(st, res, out);
     if (q.stress && !res.any_undercut) {
       PlotOptions stress{"Largest Hertz contact stress", "input angle [deg]", "contact stress [MPa]"};
       stress.guides = {{"contact stress limit", st.contact_stress_limit_MPa}};
-      out.Add("contact_stress.svg", SvgLinePlot({{"input cam", deg, series.input.max_stress_MPa},
-                                                 {"output cam", deg, series.output.max_stress_MPa}},
-                                                stress));
+      out.Add("contact_stress.svg",
+              SvgLinePlot({{"input cam", deg, res.contact_input ? res.contact_input->max_stress_MPa : series.input.max_stress_MPa},
+                           {"output cam", deg, res.contact_output ? res.contact_output->max_stress_MPa : series.output.max_stress_MPa}},
+                          stress));
     }
     if (q.efficiency)
       out.Add("efficiency.svg", SvgLinePlot({{"efficiency", deg, series.efficiency}},
@@ -460,6 +532,15 @@ Fidelity Knobs(const nlohmann::json& study) {
                        "samples of the input revolution (cycle maxima and means)"});
   else
     f.no_knob = "profile and undercut only: closed forms and root finding, no setting to refine";
+  // The finite-length contact (issue 12): slice count, and the half_space grid.
+  const auto model = nlohmann::json::json_pointer("/contact/model");
+  if (forces && study.contains(model) && study[model] != "line") {
+    f.knobs.push_back({"contact_slices", {"/contact/slices"}, 40, 2, true, 0,
+                       "slices along the roller (the slices model; an edge peak grows with it)"});
+    if (study[model] == "half_space")
+      f.knobs.push_back({"contact_grid", {"/contact/grid"}, {64, 256}, 2, true, 0,
+                         "half_space cells across rolling and along the roller"});
+  }
   f.headlines = {"/input_cam/max_roller_force_N", "/output_cam/max_roller_force_N",
                  "/input_cam/max_contact_stress_MPa", "/output_cam/max_contact_stress_MPa",
                  "/efficiency/mean", "/input_torque_Nm/max", "/input_cam/undercut_margin_mm",

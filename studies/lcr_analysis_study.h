@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/material.h"
+#include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
+#include "studies/lcr_contact_input.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
 #include "studies/lcr_tolerance_input.h"
@@ -38,6 +40,7 @@ struct Study {
   bool cutter_input_given = false, cutter_output_given = false;      ///< a cutter other than the roller
   double bore_diameter_input_mm = 0, bore_diameter_output_mm = 0;    ///< 0: no bore in the solids
   GeometryFileOptions geometry;                                      ///< "geometry_files"
+  LcrContactInput contact;  ///< "contact" and the rollers' "crowning" (issue 12)
   lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
   std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
 };
@@ -76,6 +79,8 @@ struct Result {
   /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
   std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
+  /// The finite-length contact per cam, when the study has a "contact" object and stress is evaluated.
+  std::optional<lcr::Contact3DCycleSide> contact_input, contact_output;
 };
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.

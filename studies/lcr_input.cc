@@ -4,9 +4,11 @@ namespace camopt::studies {
 
 namespace {
 
-lcr::CamSide<double> ParseSide(const Node& s) {
-  s.CheckKnownFields({"lobes", "rollers", "turret_radius_mm", "roller_diameter_mm", "roller_length_mm",
-                      "cam_thickness_mm", "cutter_diameter_mm", "bore_diameter_mm"});
+lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning) {
+  std::set<std::string> known = {"lobes", "rollers", "turret_radius_mm", "roller_diameter_mm", "roller_length_mm",
+                                    "cam_thickness_mm", "cutter_diameter_mm", "bore_diameter_mm"};
+  if (allow_crowning) known.insert("crowning");  // read by studies/lcr_contact_input.h
+  s.CheckKnownFields(known);
   lcr::CamSide<double> c;
   c.lobes = s["lobes"].Integer(1);
   c.rollers = s["rollers"].Integer(2);
@@ -21,12 +23,12 @@ lcr::CamSide<double> ParseSide(const Node& s) {
 
 }  // namespace
 
-lcr::Reducer<double> ParseReducer(const Node& node) {
+lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning) {
   node.CheckKnownFields({"eccentricity_mm", "input", "output"});
   lcr::Reducer<double> r;
   r.eccentricity = node["eccentricity_mm"].Positive();
-  r.input = ParseSide(node["input"]);
-  r.output = ParseSide(node["output"]);
+  r.input = ParseSide(node["input"], allow_crowning);
+  r.output = ParseSide(node["output"], allow_crowning);
   const auto problems = lcr::CheckDesign(r);
   if (!problems.empty()) {
     // "input.rollers" -> /reducer/input/rollers

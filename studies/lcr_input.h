@@ -11,7 +11,8 @@ namespace camopt::studies {
 /// Reads {"eccentricity_mm", "input": {...}, "output": {...}}; each side has lobes, rollers,
 /// turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm. Checks the design
 /// (lobes < rollers, rollers that overlap, …) and throws StudyError naming the JSON path.
-lcr::Reducer<double> ParseReducer(const Node& reducer);
+/// allow_crowning: the sides may carry a "crowning" object (kinds with the finite-length contact).
+lcr::Reducer<double> ParseReducer(const Node& reducer, bool allow_crowning = false);
 
 /// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
 /// must be > 0 and <= the roller diameter.

@@ -12,6 +12,8 @@
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
 //   disc_cam                        angle_steps + MC samples × angle_steps × scales ≤ 2e6
 //   lcr_min_size                    lobe counts × differences × catalogue rollers × starts ≤ 2e4
+//   lcr_crowning_tuning             evaluations × 2 cams × 2 torques × misalignments × 69 × (slices/40)³
+//                                   + half_space checks (100 per 48×256 grid) ≤ 1e5
 //   every kind                      estimated memory ≤ 2 GB
 #pragma once
 

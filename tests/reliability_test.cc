@@ -399,6 +399,12 @@ json Coarse(const std::string& name) {
   }
   if (name.rfind("disc_cam", 0) == 0) s["analysis"]["monte_carlo"]["samples"] = 10;
   if (name == "globoidal_cam_paper.json") s["dynamics"]["cam_speeds_rpm"] = {600};
+  if (name == "lcr_crowning_tuning.json") {
+    s["tuning"]["curve_points"] = 3;
+    s["tuning"]["refine_iterations"] = 0;
+    s["tuning"]["angle_steps"] = 36;
+    s["tuning"]["grid"] = {16, 32};
+  }
   return s;
 }
 

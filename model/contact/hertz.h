@@ -2,9 +2,11 @@
 // Units: forces N, lengths mm, moduli and pressures MPa (N/mm²).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/common/material.h"
+#include "model/common/roots.h"
 #include "model/common/scalar.h"
 
 namespace camopt::contact {
@@ -56,6 +58,69 @@ template <typename T>
 T PointContactStiffness(const T& r_eff, const T& e_star) {
   using std::sqrt;
   return T(4.0) / T(3.0) * sqrt(r_eff) * e_star;
+}
+
+/// Complete elliptic integrals K(m) and E(m) of the first and second kind, parameter m = e²
+/// (0 <= m < 1), by the arithmetic–geometric mean (Abramowitz & Stegun 17.6).
+struct CompleteEllipticIntegrals {
+  double k = 0, e = 0;
+};
+
+inline CompleteEllipticIntegrals EllipticKE(double m) {
+  double a = 1.0, b = std::sqrt(1.0 - m), c2 = m, sum = 0.5 * c2, power = 0.5;
+  for (int n = 0; n < 40 && std::abs(a - b) > 1e-16 * a; ++n) {
+    const double c = 0.5 * (a - b);
+    const double next_b = std::sqrt(a * b);
+    a = 0.5 * (a + b);
+    b = next_b;
+    power *= 2.0;
+    sum += power * c * c;
+  }
+  const double k = kPi / (2.0 * a);
+  return {k, k * (1.0 - sum)};
+}
+
+/// Elliptical point contact (Johnson §4.2): gap A x² + B y² with A = 1/(2 R_x), B = 1/(2 R_y)
+/// (R_x, R_y the effective radii of relative curvature in the two principal directions).
+/// Semi-axes a_x, a_y (the longer one along the larger radius), peak pressure
+/// p0 = 3F/(2π a_x a_y), approach δ. With the major semi-axis a, minor b, e² = 1 − b²/a²:
+///   B/A (large over small curvature) = ((a/b)² E(e) − K(e)) / (K(e) − E(e)),
+///   A_small = p0 b (K − E)/(E* a² e²),  δ = p0 b K(e)/E*.
+/// e is found by bisection; equal radii give the circular contact.
+struct EllipticalContact {
+  double semi_axis_x = 0, semi_axis_y = 0;  // [mm]
+  double peak_pressure = 0;                 // p0 [MPa]
+  double approach = 0;                      // δ [mm]
+  double eccentricity_squared = 0;          // e² of the contact ellipse
+};
+
+inline EllipticalContact EllipticalPointContact(double force, double r_x, double r_y, double e_star) {
+  const double r_large = std::max(r_x, r_y), r_small = std::min(r_x, r_y);
+  const double ratio = r_large / r_small;  // = B/A
+  EllipticalContact out;
+  if (ratio <= 1.0 + 1e-12) {
+    const PointContact<double> c = CircularPointContact(force, 2.0 / (1.0 / r_x + 1.0 / r_y), e_star);
+    out.semi_axis_x = out.semi_axis_y = c.radius;
+    out.peak_pressure = c.peak_pressure;
+    out.approach = c.approach;
+    return out;
+  }
+  const auto curvature_ratio = [](double m) {
+    const CompleteEllipticIntegrals ke = EllipticKE(m);
+    return (ke.e / (1.0 - m) - ke.k) / (ke.k - ke.e);
+  };
+  const RootBracket br = BisectIncreasing(curvature_ratio, ratio, 1e-8, 1.0 - 1e-15, 200, 1e-15);
+  const double m = br.mid();
+  const CompleteEllipticIntegrals ke = EllipticKE(m);
+  const double g = e_star * m / (2.0 * r_large * (ke.k - ke.e));  // p0 b / a²
+  const double a = std::cbrt(3.0 * force / (2.0 * kPi * g));
+  const double b = a * std::sqrt(1.0 - m);
+  out.peak_pressure = g * a * a / b;
+  out.approach = out.peak_pressure * b * ke.k / e_star;
+  out.eccentricity_squared = m;
+  out.semi_axis_x = r_x >= r_y ? a : b;
+  out.semi_axis_y = r_x >= r_y ? b : a;
+  return out;
 }
 
 }  // namespace camopt::contact

@@ -28,6 +28,7 @@
 #include <string>
 
 #include "model/common/scalar.h"
+#include "model/contact/crowning.h"
 
 namespace camopt::cycloid {
 
@@ -75,31 +76,12 @@ inline std::string CheckCrowning(const Crowning& c, double face_width_mm) {
 template <typename T>
 T CrowningDrop(CrowningType type, const T& radius, const T& flat_length, const T& coefficient,
                const T& effective_length, const T& u, const T& end_drop = T(0.0)) {
-  using std::abs;
-  using std::log;
-  using std::sqrt;
-  switch (type) {
-    case CrowningType::kNone:
-      return T(0.0);
-    case CrowningType::kFull:
-      // R − sqrt(R² − u²) written as u² / (R + sqrt(R² − u²)): no cancellation for R ≫ u.
-      return u * u / (radius + sqrt(radius * radius - u * u));
-    case CrowningType::kPartial: {
-      const T s = PositivePart(T(abs(u) - T(0.5) * flat_length));  // zero on the flat
-      return s * s / (radius + sqrt(radius * radius - s * s));
-    }
-    case CrowningType::kLogarithmic: {
-      using std::exp;
-      const T half_flat = T(0.5) * flat_length;
-      const T r = PositivePart(T(abs(u) - half_flat)) / (T(0.5) * effective_length - half_flat);
-      if (!(end_drop > T(0.0)))
-        return -coefficient * log(T(1.0) - r * r);  // log1p-free: r² ≤ (1 − 1/q)² in use
-      if (!(coefficient > T(0.0))) return T(0.0);
-      // f ln(1 / (1 − (1 − e^(−z_m/f)) r²)): finite, z_m at r = 1.
-      return -coefficient * log(T(1.0) - (T(1.0) - exp(-end_drop / coefficient)) * r * r);
-    }
-  }
-  return T(0.0);
+  // The formulas have one home, model/contact/crowning.h.
+  const contact::CrowningType t = type == CrowningType::kFull        ? contact::CrowningType::kCircular
+                                  : type == CrowningType::kPartial     ? contact::CrowningType::kPartial
+                                  : type == CrowningType::kLogarithmic ? contact::CrowningType::kLogarithmic
+                                                                       : contact::CrowningType::kNone;
+  return contact::CrowningDrop(t, radius, flat_length, coefficient, effective_length, u, end_drop);
 }
 
 /// Crowning drop [mm] for the parameters of c on a face of width face_width_mm.

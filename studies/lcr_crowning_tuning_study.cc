@@ -1,0 +1,188 @@
+#include "studies/lcr_crowning_tuning_study.h"
+
+#include <cmath>
+
+#include "studies/lcr_input.h"
+#include "studies/material_input.h"
+#include "studies/writers.h"
+
+namespace camopt::studies::lcr_crowning_tuning {
+
+Study Parse(const Node& root) {
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "tuning"});
+  Study st;
+  auto& sp = st.spec;
+  st.name = root.StringOr("name", "");
+  sp.reducer = ParseReducer(root["reducer"]);
+  root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
+  sp.material = ParseMaterial(root["material"]);
+  const Node load = root["load"];
+  load.CheckKnownFields({"output_torque_Nm", "overload_torque_Nm", "friction_coefficient"});
+  sp.design_load.output_torque_Nmm = load["output_torque_Nm"].Positive() * 1000.0;
+  sp.design_load.friction_coefficient = load.NonNegativeOr("friction_coefficient", 0.0);
+  sp.overload_torque_Nmm = load["overload_torque_Nm"].Positive() * 1000.0;
+  if (sp.overload_torque_Nmm < sp.design_load.output_torque_Nmm)
+    load["overload_torque_Nm"].Fail("an overload torque >= output_torque_Nm");
+  const Node t = root["tuning"];
+  t.CheckKnownFields({"effective_length_mm", "coefficient_range_mm", "misalignment_mrad", "curve_points",
+                      "refine_iterations", "angle_steps", "slices", "half_space_check", "grid"});
+  const Node le = t["effective_length_mm"];
+  for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const int k = s == lcr::Side::kInput ? 0 : 1;
+    sp.effective_length_mm[k] = le.Positive();
+    if (!(sp.effective_length_mm[k] > sp.reducer.side(s).roller_length))
+      le.Fail("an effective length above the roller length (" + std::to_string(sp.reducer.side(s).roller_length) +
+              " mm; Le <= l_r gives an unbounded drop at the roller's ends)");
+  }
+  if (t.Has("coefficient_range_mm")) {
+    const auto [lo, hi] = t["coefficient_range_mm"].Range();
+    if (!(lo > 0 && hi > lo)) t["coefficient_range_mm"].Fail("[lo, hi] with 0 < lo < hi");
+    sp.coefficient_range_mm = {lo, hi};
+  } else {
+    sp.coefficient_range_mm = {1e-3, 0.05};
+  }
+  sp.misalignments_rad.clear();
+  if (t.Has("misalignment_mrad")) {
+    for (const Node& m : t["misalignment_mrad"].Elements()) sp.misalignments_rad.push_back(m.NumberIn(-50, 50) * 1e-3);
+    if (sp.misalignments_rad.empty()) t["misalignment_mrad"].Fail("a non-empty list of misalignments [mrad]");
+  } else {
+    sp.misalignments_rad = {0.0};
+  }
+  sp.curve_points = t.IntegerOr("curve_points", 3, 12);
+  if (sp.curve_points > 60) t["curve_points"].Fail("at most 60 points");
+  sp.refine_iterations = t.IntegerOr("refine_iterations", 0, 8);
+  if (sp.refine_iterations > 40) t["refine_iterations"].Fail("at most 40 iterations");
+  sp.angle_steps = t.IntegerOr("angle_steps", 12, 360);
+  if (sp.angle_steps > 3600) t["angle_steps"].Fail("at most 3600 angle steps");
+  sp.slices = t.IntegerOr("slices", 4, 40);
+  if (sp.slices > 200) t["slices"].Fail("at most 200 slices");
+  st.half_space_check = t.BoolOr("half_space_check", true);
+  if (t.Has("grid")) {
+    const auto e = t["grid"].Elements();
+    if (e.size() != 2) t["grid"].Fail("[nx, ny]");
+    st.grid_nx = e[0].Integer(8);
+    st.grid_ny = e[1].Integer(8);
+    if (st.grid_nx > 256 || st.grid_ny > 1024) t["grid"].Fail("a grid of at most [256, 1024]");
+  }
+  return st;
+}
+
+Result Run(const Study& st, const RunContext& ctx) {
+  Result res;
+  objectives::LcrCrowningTuningSpec spec = st.spec;
+  Progress progress("lcr_crowning_tuning", ctx.quiet);
+  spec.progress = [&](double f) { progress.Update(f, "crowning coefficient scan and refinement"); };
+  try {
+    res.tuned = objectives::TuneLcrCrowning(spec);
+  } catch (const std::domain_error& e) {
+    throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
+  }
+  progress.Done();
+  for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const int k = s == lcr::Side::kInput ? 0 : 1;
+    lcr::RollerCrowning<double> crown;
+    crown.type = contact::CrowningType::kLogarithmic;
+    crown.coefficient = res.tuned[k].coefficient_mm;
+    crown.effective_length = spec.effective_length_mm[k];
+    res.tuned_check[k].slices = res.tuned[k].tuned;
+    res.uncrowned_check[k].slices = res.tuned[k].uncrowned;
+    if (!st.half_space_check) continue;
+    for (auto [check, c] : {std::pair{&res.tuned_check[k], crown}, std::pair{&res.uncrowned_check[k], lcr::RollerCrowning<double>{}}}) {
+      std::vector<lcr::Contact3DCycleSide> details;
+      check->half_space = objectives::CheckLcrCrowning(spec, s, c, lcr::ContactModel::kHalfSpace, &details,
+                                                       st.grid_nx, st.grid_ny);
+      for (size_t g = 0; g < spec.misalignments_rad.size(); ++g) check->half_space_dy_mm.push_back(details[2 * g].cell_dy_mm);
+    }
+  }
+  return res;
+}
+
+namespace {
+
+nlohmann::json CheckJson(const Study& st, const objectives::LcrCrowningCheck& c, const std::vector<double>& dy) {
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t g = 0; g < st.spec.misalignments_rad.size(); ++g) {
+    nlohmann::json j = {{"misalignment_mrad", st.spec.misalignments_rad[g] * 1e3},
+                        {"design_max_contact_stress_MPa", c.design_MPa[g]},
+                        {"design_edge_loaded", bool(c.design_edge[g])},
+                        {"overload_max_contact_stress_MPa", c.overload_MPa[g]},
+                        {"overload_edge_loaded", bool(c.overload_edge[g])}};
+    if (g < dy.size()) j["cell_dy_mm"] = dy[g];
+    out.push_back(j);
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json ToJson(const Study& st, const Result& res) {
+  nlohmann::json j;
+  j["study"] = "lcr_crowning_tuning";
+  j["name"] = st.name;
+  j["design_torque_Nm"] = st.spec.design_load.output_torque_Nmm / 1000;
+  j["overload_torque_Nm"] = st.spec.overload_torque_Nmm / 1000;
+  j["slices"] = st.spec.slices;
+  j["angle_steps"] = st.spec.angle_steps;
+  for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const int k = s == lcr::Side::kInput ? 0 : 1;
+    const auto& r = res.tuned[k];
+    nlohmann::json& c = j[k == 0 ? "input" : "output"];
+    c["crowning"] = {{"type", "logarithmic"}, {"coefficient_mm", r.coefficient_mm},
+                     {"effective_length_mm", st.spec.effective_length_mm[k]}};
+    c["feasible"] = r.feasible;
+    c["evaluations"] = r.evaluations;
+    c["tuned"] = {{"slices", CheckJson(st, res.tuned_check[k].slices, {})}};
+    c["uncrowned"] = {{"slices", CheckJson(st, res.uncrowned_check[k].slices, {})}};
+    if (st.half_space_check) {
+      c["tuned"]["half_space"] = CheckJson(st, res.tuned_check[k].half_space, res.tuned_check[k].half_space_dy_mm);
+      c["uncrowned"]["half_space"] =
+          CheckJson(st, res.uncrowned_check[k].half_space, res.uncrowned_check[k].half_space_dy_mm);
+      c["half_space_grid"] = {st.grid_nx, st.grid_ny};
+    }
+  }
+  j["notes"] = nlohmann::json::array(
+      {"uncrowned rollers are edge-loaded: their peak is the end row's pressure and grows as the resolution "
+       "refines (slice width / cell_dy_mm); the crowned values are converged (docs/lcr.md)"});
+  return j;
+}
+
+void Write(const Study& st, const Result& res, Outputs& out) {
+  Table t;
+  t.Add("coefficient_mm", res.tuned[0].curve_coefficient_mm);
+  std::vector<Series> curves;
+  for (int k : {0, 1}) {
+    const std::string name = k == 0 ? "input" : "output";
+    const auto& r = res.tuned[k];
+    t.Add(name + "_worst_design_stress_MPa", r.curve_worst_design_MPa);
+    t.Add(name + "_edge_free_at_overload",
+          std::vector<double>(r.curve_edge_free_at_overload.begin(), r.curve_edge_free_at_overload.end()));
+    curves.push_back({name + " cam", r.curve_coefficient_mm, r.curve_worst_design_MPa});
+  }
+  out.Add("stress_vs_coefficient.csv", ToCsv(t));
+  out.Add("stress_vs_coefficient.svg",
+          SvgLinePlot(curves, {"Largest contact pressure at the design torque (worst misalignment), slices model",
+                               "logarithmic crowning coefficient f [mm]", "contact pressure [MPa]"}));
+  out.AddJson("result.json", ToJson(st, res));
+}
+
+namespace {
+CAMOPT_REGISTER_STUDY_KIND("lcr_crowning_tuning");
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): slices, angle grid, the
+// golden-section steps and the half_space check's grid.
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"slices", {"/tuning/slices"}, 40, 2, true, 0, "slices along the roller"});
+  f.knobs.push_back({"angle_steps", {"/tuning/angle_steps"}, 360, 2, true, 0, "samples of the input revolution"});
+  f.knobs.push_back({"refine_iterations", {"/tuning/refine_iterations"}, 8, 2, true, 0,
+                     "golden-section steps in ln f after the scan"});
+  f.knobs.push_back({"grid", {"/tuning/grid"}, {48, 256}, 2, true, 0, "half_space check cells"});
+  f.headlines = {"/input/crowning/coefficient_mm", "/output/crowning/coefficient_mm",
+                 "/input/tuned/slices/0/design_max_contact_stress_MPa",
+                 "/output/tuned/slices/0/design_max_contact_stress_MPa"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("lcr_crowning_tuning", Knobs);
+}  // namespace
+
+}  // namespace camopt::studies::lcr_crowning_tuning
