@@ -7,6 +7,7 @@
 #include "cad/dxf.h"
 #include "cad/solid.h"
 #include "studies/format.h"
+#include "studies/provenance.h"
 
 #ifndef CAMOPT_VERSION_STRING
 #define CAMOPT_VERSION_STRING "unknown"
@@ -68,7 +69,6 @@ double ExactArea(const cad::CurveFunction& f, double t0, double t1) {
 
 }  // namespace
 
-std::string CamoptVersion() { return CAMOPT_VERSION_STRING; }
 
 GeometryFileOptions ParseGeometryFiles(const Node& root) {
   GeometryFileOptions o;

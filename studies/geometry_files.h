@@ -75,6 +75,5 @@ void WritePlanarCamFiles(const PlanarCamFit& fit, const GeometryFileOptions& opt
 std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& options);
 
 /// camopt's version (the project version), for the files' text blocks.
-std::string CamoptVersion();
 
 }  // namespace camopt::studies
