@@ -520,10 +520,13 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
       }
     const double tau = (den > 0 && std::isfinite(num / den)) ? num / den : tau_self;
 
-    // Step, projection, re-entry; c_i = p_new − (p − τ t) on the cells these two touched.
-    p_old = p;
+    // Step, projection, re-entry; c_i = p_new − (p − τ t) on the cells these two touched. The
+    // new pressure goes to p_old, which then swaps with p (no copy); its sum is taken on the way
+    // (the same order of additions as a separate pass).
     corrections.clear();
     bool overlap = false;
+    double sum_p = 0;
+    p_old.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const double raw = p[i] - tau * t[i];  // t = 0 off the contact
       double next = raw > 0 ? raw : 0.0;
@@ -532,14 +535,14 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
         overlap = true;
       }
       if (next != raw) corrections.emplace_back(static_cast<int>(i), next - raw);
-      p[i] = next;
+      p_old[i] = next;
+      sum_p += next;
     }
+    p.swap(p_old);
     conjugate = !overlap;
 
     double f = 1;
     if (load_control) {
-      double sum_p = 0;
-      for (double v : p) sum_p += v;
       if (!(sum_p > 0) || !std::isfinite(sum_p)) {  // not in exact arithmetic; restart
         p.assign(n, load / (area * static_cast<double>(n)));
         conjugate = false;
@@ -548,15 +551,26 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
       }
       f = load / (area * sum_p);
     }
+    // Rescale, measure the change, and (when the sparse update is taken) step the displacement
+    // in the same pass: u ← u − τ r here, + K c and × f below.
+    const bool sparse = corrections.size() <= max_sparse;
     double change = 0, total = 0;
-    for (size_t i = 0; i < n; ++i) {
-      p[i] *= f;
-      change += std::abs(p[i] - p_old[i]);
-      total += p[i];
+    if (sparse) {
+      for (size_t i = 0; i < n; ++i) {
+        p[i] *= f;
+        change += std::abs(p[i] - p_old[i]);
+        total += p[i];
+        u[i] -= tau * r[i];
+      }
+    } else {
+      for (size_t i = 0; i < n; ++i) {
+        p[i] *= f;
+        change += std::abs(p[i] - p_old[i]);
+        total += p[i];
+      }
     }
     // The displacement of the new pressure.
-    if (corrections.size() <= max_sparse) {
-      for (size_t i = 0; i < n; ++i) u[i] -= tau * r[i];
+    if (sparse) {
       conv.AddSparse(kernel, corrections, u.data(), inv_e);
       if (f != 1)
         for (double& v : u) v *= f;
