@@ -7,6 +7,7 @@
 // - a non-finite model output makes the callback return false, which Ipopt treats as an
 //   evaluation error and answers by cutting the step.
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 
 #include <coin/IpIpoptApplication.hpp>
@@ -147,6 +148,11 @@ class ProblemTnlp : public Ipopt::TNLP {
 
 SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions& options) {
   problem.Validate();
+  // Debian's Ipopt 3.11 solves with the sequential MUMPS, which is not thread-safe (Ipopt's own
+  // maintainers say so; Ipopt 3.14 added the same lock): one Ipopt solve at a time per process.
+  // Threads of a sweep (studies/sweep.cc) therefore take turns here; MPI ranks do not.
+  static std::mutex ipopt_mutex;
+  const std::lock_guard<std::mutex> ipopt_lock(ipopt_mutex);
   Ipopt::SmartPtr<ProblemTnlp> tnlp = new ProblemTnlp(problem, InitialPoint(problem, options));
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", 0);

@@ -9,6 +9,7 @@
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_study_common.h"
+#include "studies/format.h"
 #include "studies/report.h"
 #include "studies/writers.h"
 
@@ -17,11 +18,21 @@ namespace camopt::studies::cycloid_ltca {
 using namespace camopt::cycloid;
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis"});
+  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
+                         "geometry_files"});
   Study s;
   s.name = root.json().value("name", "");
   s.drive = cycloid_common::ParseDrive(root);
   s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
+  s.geometry = ParseGeometryFiles(root);
+  if (root["drive"].Has("bore_diameter_mm")) {
+    const Node b = root["drive"]["bore_diameter_mm"];
+    s.bore_diameter_mm = b.Positive();
+    const double root_diameter = 2 * (s.drive.roller_position_radius_mm - s.drive.eccentricity_mm -
+                                      s.drive.roller_radius_mm);
+    if (!(s.bore_diameter_mm < root_diameter))
+      b.Fail("a bore diameter below the disc's root diameter (" + Format(root_diameter, 4) + " mm)");
+  }
   // Lazy stages: ["unloaded"] asks for the unloaded TCA only, which needs no material or load.
   if (root.Has("analysis") && root["analysis"].Has("evaluate")) {
     s.loaded = false;
@@ -189,6 +200,19 @@ Result Run(const Study& s, const RunContext& ctx) {
   for (int k = 0; k < samples; ++k)
     r.tooth_profile.push_back(ToothProfile<double>(s.drive, 2.0 * kPi * k / samples).point);
   for (int i = 0; i < n1; ++i) r.roller_centres.push_back(RollerCentreInDisc<double>(s.drive, i, 0.0, 0.0));
+  {
+    // Geometry files of the disc: its true modified profile (eqs. 3–4) fitted with arcs.
+    PlanarCamGeometry g;
+    g.file_stem = "tooth";
+    g.design_name = s.name;
+    g.cam_name = "cycloid disc (modified profile)";
+    g.profile = [d = s.drive](double t) { return ToothProfile<double>(d, t).point; };
+    g.initial_segments = 8 * n1;
+    g.thickness_mm = s.drive.face_width_mm;
+    g.bore_diameter_mm = s.bore_diameter_mm;
+    for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
+    r.tooth_files = FitPlanarCam(g, s.geometry);
+  }
   return r;
 }
 
@@ -204,12 +228,14 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
     hi = k == 0 ? te : std::max(hi, te);
     per_angle.push_back({{"crank_angle_deg", s.crank_angles_rad[k] * 180.0 / kPi}, {"unloaded_te_arcsec", te}});
   }
-  return {{"study", "cycloid_ltca"},
-          {"name", s.name},
-          {"evaluated", {"unloaded"}},
-          {"unloaded_te_peak_to_peak_arcsec", hi - lo},
-          {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
-          {"per_angle", per_angle}};
+  nlohmann::json j = {{"study", "cycloid_ltca"},
+                      {"name", s.name},
+                      {"evaluated", {"unloaded"}},
+                      {"unloaded_te_peak_to_peak_arcsec", hi - lo},
+                      {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
+                      {"per_angle", per_angle}};
+  j["geometry_files"]["tooth"] = r.tooth_files.summary;
+  return j;
 }
 
 void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
@@ -227,7 +253,7 @@ void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
   }
   drawing.layers = {disc, rollers};
   out.Add("tooth.svg", SvgDrawing(drawing));
-  out.Add("tooth.dxf", ToDxf(drawing));
+  WritePlanarCamFiles(r.tooth_files, s.geometry, out);
 }
 
 Table BacklashTable(const Study& s, const Result& r, const std::vector<double>& col_angle) {
@@ -292,7 +318,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       sources["crank_angles"] = {{"coarse_angles", r.crank_error_angles}, {"error", by_crank}};
     sources["warning_share"] = kErrorShare;
   }
-  return {{"study", "cycloid_ltca"},
+  nlohmann::json j = {{"study", "cycloid_ltca"},
           {"name", s.name},
           {"torque_Nm", s.torque_Nm},
           {"max_contact_stress_MPa", Finite(cycle.max_pressure_MPa, "max stress")},
@@ -314,6 +340,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"estimated_error_sources", sources},
           {"warnings", r.warnings},
           {"per_angle", per_angle}};
+  j["geometry_files"]["tooth"] = r.tooth_files.summary;
+  return j;
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {

@@ -15,6 +15,7 @@
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "studies/input.h"
+#include "studies/geometry_files.h"
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_ltca {
@@ -34,6 +35,8 @@ struct Study {
   /// analysis.evaluate: false when only the unloaded TCA is asked (["unloaded"]): no material, load
   /// or contact solves; the loaded stage ("loaded", the default) includes the unloaded one.
   bool loaded = true;
+  double bore_diameter_mm = 0;   ///< drive.bore_diameter_mm: bore of the disc's solid, 0 = none
+  GeometryFileOptions geometry;  ///< "geometry_files"
 };
 
 /// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
@@ -61,6 +64,7 @@ struct Result {
   std::vector<double> unloaded_te_arcsec;    ///< β0 per crank angle (both stages)
   std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
+  PlanarCamFit tooth_files;  ///< the disc's geometry files (arcs of the modified profile)
 };
 
 /// @throws StudyError for bad input (exit 2).

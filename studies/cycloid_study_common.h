@@ -23,7 +23,7 @@ namespace camopt::studies::cycloid_common {
 inline cycloid::Drive ParseDrive(const Node& root) {
   const Node d = root["drive"];
   d.CheckKnownFields({"teeth", "rollers", "roller_position_radius_mm", "roller_radius_mm", "eccentricity_mm",
-                      "face_width_mm"});
+                      "face_width_mm", "bore_diameter_mm"});
   cycloid::Drive drive;
   drive.teeth = d["teeth"].Integer(2);
   drive.rollers = d["rollers"].Integer(3);

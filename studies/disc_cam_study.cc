@@ -72,7 +72,8 @@ nlohmann::json AtAngleOrNull(const std::optional<AtAngle>& x, bool angle) {
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
-                         "tolerances", "analysis"});
+                         "tolerances", "analysis", "cam_thickness_mm", "bore_diameter_mm", "cutter_radius_mm",
+                         "geometry_files"});
   Study s;
   s.name = root.StringOr("name", "disc cam");
   DiscCam& cam = s.cam;
@@ -110,6 +111,19 @@ Study Parse(const Node& root) {
   }
   cam.motion = ParseMotionProgram(root["motion"], spec);
 
+  s.geometry = ParseGeometryFiles(root);
+  s.cam_thickness_mm = root.PositiveOr("cam_thickness_mm", 0.0);
+  if (root.Has("cutter_radius_mm")) {
+    s.cutter_radius_mm = root["cutter_radius_mm"].Positive();
+    if (s.cutter_radius_mm > cam.roller_radius)
+      root["cutter_radius_mm"].Fail("a cutter radius <= the roller radius (" + Format(cam.roller_radius, 6) + " mm)");
+  }
+  if (root.Has("bore_diameter_mm")) {
+    s.bore_diameter_mm = root["bore_diameter_mm"].Positive();
+    if (!(s.bore_diameter_mm < 2 * cam.base_radius))
+      root["bore_diameter_mm"].Fail("a bore diameter below the base circle diameter (" +
+                                    Format(2 * cam.base_radius, 6) + " mm)");
+  }
   if (root.Has("tolerances")) {
     const Node t = root["tolerances"];
     t.CheckKnownFields({"profile_radial_um", "roller_radius_um", "profile_normal_um"});
@@ -167,6 +181,33 @@ Study Parse(const Node& root) {
   if (const auto issues = dc::CheckDesign(cam, s.angle_steps); !issues.empty())
     FailOn(issues.front(), cam, root);
   return s;
+}
+
+// The geometry files of the cam: exact profile, pitch curve and cutter path as functions of θ.
+PlanarCamFit FitGeometryFiles(const Study& s) {
+  const DiscCam& cam = s.cam;
+  PlanarCamGeometry g;
+  g.file_stem = "profile";
+  g.design_name = s.name;
+  g.cam_name = "disc cam";
+  g.profile = [cam](double th) { return dc::EvaluateCam(cam, th).contact; };
+  g.pitch = [cam](double th) { return dc::EvaluateCam(cam, th).pitch; };
+  if (s.cutter_radius_mm > 0 && s.cutter_radius_mm != cam.roller_radius) {
+    g.cutter = [cam, rt = s.cutter_radius_mm](double th) {
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      return Vec2<double>(p.pitch + (cam.roller_radius - rt) * (p.contact - p.pitch) / cam.roller_radius);
+    };
+    g.cutter_diameter_mm = 2 * s.cutter_radius_mm;
+  } else {
+    g.cutter_note = s.cutter_radius_mm > 0
+                        ? "omitted: the cutter equals the roller, so its path is the pitch curve (layer PITCH_CURVE)"
+                        : "no cutter_radius_mm given: a cutter of the roller's size follows the pitch curve "
+                          "(layer PITCH_CURVE)";
+  }
+  g.initial_segments = 128;
+  g.thickness_mm = s.cam_thickness_mm;
+  g.bore_diameter_mm = s.bore_diameter_mm;
+  return FitPlanarCam(g, s.geometry);
 }
 
 Result Run(const Study& s, const RunContext& ctx) {
@@ -309,6 +350,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     progress.Update(1.0);
     progress.Done();
   }
+  r.profile_files = FitGeometryFiles(s);
   return r;
 }
 
@@ -393,11 +435,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else if (r.monte_carlo == Result::MonteCarlo::kSkippedUndercut) {
     j["monte_carlo"] = {{"skipped", "the profile is undercut"}};
   }
+  j["geometry_files"]["profile"] = r.profile_files.summary;
   return j;
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", ToJson(s, r));
+  WritePlanarCamFiles(r.profile_files, s.geometry, out);
   const DiscCam& cam = s.cam;
   const auto& t = r.series;
   const std::string& fu = r.follower_unit;
@@ -483,10 +527,6 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   }
   d.layers = {profile, pitch, base, follower};
   out.Add("profile.svg", SvgDrawing(d));
-  Drawing dxf;
-  dxf.title = d.title;
-  dxf.layers = {profile, pitch};
-  out.Add("profile.dxf", ToDxf(dxf));
 }
 
 namespace {

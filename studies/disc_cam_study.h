@@ -16,6 +16,7 @@
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/motion/motion_program.h"
+#include "studies/geometry_files.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -34,6 +35,10 @@ struct Study {
   /// computed.
   bool error_stage = true;
   bool evaluate_given = false;
+  /// Geometry files: cam thickness and bore of the solid [mm] (no STEP/STL without a thickness),
+  /// a cutter radius for a cutter-path layer (0: none given), "geometry_files" options.
+  double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
+  GeometryFileOptions geometry;
 };
 
 /// A value and the cam angle where it is reached.
@@ -92,6 +97,7 @@ struct Result {
   enum class MonteCarlo { kOff, kSkippedUndercut, kDone } monte_carlo = MonteCarlo::kOff;
   bool error_evaluated = false;  ///< the mechanical-error stage ran (the error fields are set)
   std::vector<MonteCarloRow> monte_carlo_rows;
+  PlanarCamFit profile_files;  ///< the cam's geometry files (arcs of the exact profile)
 };
 
 /// Parses and validates a "disc_cam" study. @throws StudyError (exit 2) naming the JSON path.

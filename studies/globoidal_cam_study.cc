@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cad/solid.h"
 #include "studies/format.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
@@ -57,37 +58,29 @@ void FailOnFirst(const std::vector<globoidal::DesignIssue>& issues, const Node& 
   if (!issues.empty()) FailOn(issues.front(), root);
 }
 
-// ASCII STL of one grid surface per roller (open surfaces, not a closed solid): each grid cell
-// as two triangles, oriented so that the facet normal is the working-surface normal (out of the
-// rib, toward the roller: −n).
-void AppendStlSurface(std::ostringstream& os, const std::vector<std::vector<Vec3<double>>>& pts,
-                      const std::vector<std::vector<Vec3<double>>>& normals) {
-  auto facet = [&](const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c,
-                   const Vec3<double>& want) {
-    Vec3<double> n = (b - a).cross(c - a);
-    const double len = n.norm();
-    if (!(len > 0)) return;  // degenerate cell
-    n /= len;
-    const bool flip = n.dot(want) < 0;
-    const Vec3<double>& p1 = flip ? c : b;
-    const Vec3<double>& p2 = flip ? b : c;
-    if (flip) n = -n;
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "  facet normal %.7e %.7e %.7e\n    outer loop\n      vertex %.9e %.9e %.9e\n"
-                  "      vertex %.9e %.9e %.9e\n      vertex %.9e %.9e %.9e\n    endloop\n"
-                  "  endfacet\n",
-                  n.x(), n.y(), n.z(), a.x(), a.y(), a.z(), p1.x(), p1.y(), p1.z(), p2.x(), p2.y(),
-                  p2.z());
-    os << buf;
-  };
+// The mesh of one grid surface per roller (open surfaces, not a closed solid): each grid cell as
+// two triangles, oriented so that the facet normal is the working-surface normal (out of the rib,
+// toward the roller: −n); the surface closes around the cam (the last angle joins the first).
+void AppendSurfaceMesh(cad::TriangleMesh& mesh, const std::vector<std::vector<Vec3<double>>>& pts,
+                       const std::vector<std::vector<Vec3<double>>>& normals) {
   const size_t na = pts.size(), nl = pts[0].size();
+  const int base = static_cast<int>(mesh.vertices.size());
+  for (size_t i = 0; i < na; ++i)
+    for (size_t m = 0; m < nl; ++m) mesh.vertices.push_back(pts[i][m]);
+  auto id = [&](size_t i, size_t m) { return base + static_cast<int>(i * nl + m); };
+  auto facet = [&](int a, int b, int c, const Vec3<double>& want) {
+    const Vec3<double>& pa = mesh.vertices[a];
+    const Vec3<double> n = (mesh.vertices[b] - pa).cross(mesh.vertices[c] - pa);
+    if (!(n.norm() > 0)) return;  // degenerate cell
+    if (n.dot(want) < 0) std::swap(b, c);
+    mesh.triangles.push_back({a, b, c});
+  };
   for (size_t i = 0; i < na; ++i) {
-    const size_t k = (i + 1) % na;  // closes the surface around the cam
+    const size_t k = (i + 1) % na;
     for (size_t m = 0; m + 1 < nl; ++m) {
       const Vec3<double> want = -(normals[i][m] + normals[k][m + 1]);
-      facet(pts[i][m], pts[k][m], pts[k][m + 1], want);
-      facet(pts[i][m], pts[k][m + 1], pts[i][m + 1], want);
+      facet(id(i, m), id(k, m), id(k, m + 1), want);
+      facet(id(i, m), id(k, m + 1), id(i, m + 1), want);
     }
   }
 }
@@ -98,7 +91,7 @@ std::string SpeedTag(double rpm) { return Format(rpm) + "rpm"; }
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "cam", "motion", "load", "contact", "dynamics",
-                          "analysis", "export"});
+                          "analysis", "export", "geometry_files"});
   Study s;
   s.name = root.StringOr("name", "globoidal cam");
   GloboidalCam<double>& cam = s.dyn.cam;
@@ -234,6 +227,7 @@ Study Parse(const Node& root) {
       e.FailWith("angle_steps × axis_steps must stay below 4e6");
   }
   if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
+  s.geometry = ParseGeometryFiles(root);
   // Every check, with the jam limit over the analysis grid.
   FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root);
   return s;
@@ -470,6 +464,10 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                            {"angle_steps", s.export_angle_steps},
                            {"axis_steps", s.export_axis_steps},
                            {"stl", s.export_stl ? "working_surfaces.stl" : ""},
+                           {"stl_format", s.geometry.stl_ascii ? "ascii" : "binary"},
+                           {"step", s.export_stl && s.geometry.step ? "working_surfaces.step" : ""},
+                           {"solid", "not written: the two working surfaces are open bands (the rib's "
+                                     "crest and root surfaces are not modelled), so they close no solid"},
                            {"point_cloud", s.export_point_cloud ? "working_surfaces.csv" : ""}};
   return j;
 }
@@ -554,9 +552,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   // Surface export: a point cloud with the rib's outward normal (toward the roller), and STL.
   if (s.export_point_cloud || s.export_stl) {
     const int ne = s.export_angle_steps;
-    std::ostringstream stl;
+    cad::TriangleMesh mesh;
+    std::vector<cad::PointGrid> grids;
     std::vector<double> cr, cl, ct, cx, cy, cz, cnx, cny, cnz;
-    if (s.export_stl) stl << "solid globoidal_working_surfaces\n";
     for (int j = 1; j <= 2; ++j) {
       const auto& pts = r.surface_points[j - 1];
       const auto& nrm = r.surface_normals[j - 1];
@@ -569,11 +567,18 @@ void Write(const Study& s, const Result& r, Outputs& out) {
           cnx.push_back(-nv.x()), cny.push_back(-nv.y()), cnz.push_back(-nv.z());
         }
       }
-      if (s.export_stl) AppendStlSurface(stl, pts, nrm);
+      if (s.export_stl) {
+        AppendSurfaceMesh(mesh, pts, nrm);
+        cad::PointGrid grid(pts.begin(), pts.end());
+        grid.push_back(pts.front());  // closed around the cam
+        grids.push_back(std::move(grid));
+      }
     }
     if (s.export_stl) {
-      stl << "endsolid globoidal_working_surfaces\n";
-      out.Add("working_surfaces.stl", stl.str());
+      out.Add("working_surfaces.stl", StlFile(mesh, "globoidal_working_surfaces", s.geometry));
+      // Each working surface as one cubic B-spline surface through its grid points (OCCT).
+      if (s.geometry.step)
+        out.Add("working_surfaces.step", cad::BSplineSurfaces(grids, s.name + " working surfaces").step);
     }
     if (s.export_point_cloud) {
       Table cloud;

@@ -19,6 +19,7 @@
 #include "model/globoidal/globoidal.h"
 #include "model/motion/motion_program.h"
 #include "studies/input.h"
+#include "studies/geometry_files.h"
 #include "studies/study.h"
 
 namespace camopt::studies::globoidal_cam {
@@ -37,6 +38,7 @@ struct Study {
   int export_angle_steps = 360;
   int export_axis_steps = 6;
   bool export_stl = true, export_point_cloud = true;
+  GeometryFileOptions geometry;  ///< "geometry_files": STL format, STEP surfaces
   /// The stages asked for ("analysis.evaluate"; all when absent). The geometry always runs (the
   /// other stages need it); without "dynamics" no load, contact material or speeds are needed and
   /// none are simulated; without "export" no surfaces are built.

@@ -11,6 +11,7 @@
 
 #include "model/lcr/friction.h"
 #include "model/lcr/profile.h"
+#include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/report.h"
@@ -74,6 +75,31 @@ Drawing CamDrawing(const lcr::Reducer<double>& r, Side s, double cutter_radius, 
   return d;
 }
 
+// The geometry files of one cam: exact profile, pitch curve and cutter path as curve functions.
+PlanarCamGeometry CamGeometry(const Study& st, Side s) {
+  const lcr::Reducer<double>& r = st.reducer;
+  const lcr::CamSide<double>& c = r.side(s);
+  const bool input = s == Side::kInput;
+  const double e = r.eccentricity, rr = c.roller_radius;
+  const double cutter = input ? st.cutter_radius_input_mm : st.cutter_radius_output_mm;
+  PlanarCamGeometry g;
+  g.file_stem = input ? "input_cam" : "output_cam";
+  g.design_name = st.name;
+  g.cam_name = input ? "input cam" : "output cam";
+  g.profile = [c, e, rr](double psi) { return lcr::OffsetPoint(c, e, psi, rr); };
+  g.pitch = [c, e](double psi) { return lcr::PitchPoint(c, e, psi); };
+  if (input ? st.cutter_input_given : st.cutter_output_given) {
+    g.cutter = [c, e, off = rr - cutter](double psi) { return lcr::OffsetPoint(c, e, psi, off); };
+    g.cutter_diameter_mm = 2 * cutter;
+  } else {
+    g.cutter_note = "omitted: the cutter equals the roller, so its path is the pitch curve (layer PITCH_CURVE)";
+  }
+  g.initial_segments = 8 * c.rollers;
+  g.thickness_mm = c.cam_thickness;
+  g.bore_diameter_mm = input ? st.bore_diameter_input_mm : st.bore_diameter_output_mm;
+  return g;
+}
+
 // Assembled view at input angle 0: the cam (centre at e u(0), not yet turned) with its rollers,
 // loaded rollers in red.
 Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleLoads<double>* loads,
@@ -101,11 +127,25 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
   return d;
 }
 
+// Optional "bore_diameter_mm" of a cam: positive and inside the smallest profile radius.
+double ParseBoreDiameter(const Node& side, const lcr::Reducer<double>& r, Side s) {
+  if (!side.Has("bore_diameter_mm")) return 0.0;
+  const Node n = side["bore_diameter_mm"];
+  const double d = n.Positive();
+  const lcr::CamSide<double>& c = r.side(s);
+  double rmin = kInf;
+  for (int i = 0; i < 720; ++i)
+    rmin = std::min(rmin, lcr::OffsetPoint(c, r.eccentricity, 2 * kPi * i / 720, c.roller_radius).norm());
+  if (!(d < 2 * rmin))
+    n.Fail("a bore diameter below the cam's smallest profile diameter (" + Format(2 * rmin, 4) + " mm)");
+  return d;
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis",
-                         "tolerances", "monte_carlo"});
+                         "tolerances", "monte_carlo", "geometry_files"});
   Study st;
   st.name = root.StringOr("name", "");
   st.reducer = ParseReducer(root["reducer"]);
@@ -145,6 +185,11 @@ Study Parse(const Node& root) {
   const Node reducer_node = root["reducer"];
   st.cutter_radius_input_mm = ParseCutterDiameter(reducer_node["input"], 2 * st.reducer.input.roller_radius) / 2;
   st.cutter_radius_output_mm = ParseCutterDiameter(reducer_node["output"], 2 * st.reducer.output.roller_radius) / 2;
+  st.cutter_input_given = st.cutter_radius_input_mm != st.reducer.input.roller_radius;
+  st.cutter_output_given = st.cutter_radius_output_mm != st.reducer.output.roller_radius;
+  st.bore_diameter_input_mm = ParseBoreDiameter(reducer_node["input"], st.reducer, Side::kInput);
+  st.bore_diameter_output_mm = ParseBoreDiameter(reducer_node["output"], st.reducer, Side::kOutput);
+  st.geometry = ParseGeometryFiles(root);
   return st;
 }
 
@@ -222,6 +267,10 @@ Result Run(const Study& st, const RunContext& ctx) {
                                   "(the model is linear in the torque)");
     }
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
+  }
+  if (q.profile) {
+    res.input_cam_files = FitPlanarCam(CamGeometry(st, Side::kInput), st.geometry);
+    res.output_cam_files = FitPlanarCam(CamGeometry(st, Side::kOutput), st.geometry);
   }
   if (st.tolerances) {
     const LcrToleranceSpec& t = *st.tolerances;
@@ -307,6 +356,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   }
   if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
   j["notes"] = res.notes;
+  if (res.input_cam_files) j["geometry_files"]["input_cam"] = res.input_cam_files->summary;
+  if (res.output_cam_files) j["geometry_files"]["output_cam"] = res.output_cam_files->summary;
   return j;
 }
 
@@ -380,7 +431,8 @@ void Write(const Study& st, const Result& res, Outputs& out) {
       const std::string which = s == Side::kInput ? "input" : "output";
       const double cutter = s == Side::kInput ? st.cutter_radius_input_mm : st.cutter_radius_output_mm;
       const Drawing cam = CamDrawing(r, s, cutter, points, which + " cam: profile, pitch curve, cutter path");
-      out.Add(which + "_cam.dxf", ToDxf(cam));
+      const std::optional<PlanarCamFit>& files = s == Side::kInput ? res.input_cam_files : res.output_cam_files;
+      if (files) WritePlanarCamFiles(*files, st.geometry, out);
       out.Add(which + "_cam.svg", SvgDrawing(cam));
       out.Add(which + "_assembly.svg",
               SvgDrawing(AssemblyDrawing(r, s, res.loads_at_zero ? &*res.loads_at_zero : nullptr, points,

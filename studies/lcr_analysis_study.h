@@ -12,6 +12,7 @@
 #include "model/common/material.h"
 #include "model/lcr/cycle.h"
 #include "studies/input.h"
+#include "studies/geometry_files.h"
 #include "studies/lcr_tolerance_input.h"
 #include "studies/study.h"
 
@@ -34,6 +35,9 @@ struct Study {
   double contact_stress_limit_MPa = kInf;  ///< kInf: no limit given
   double roller_load_limit_N = kInf;
   double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
+  bool cutter_input_given = false, cutter_output_given = false;      ///< a cutter other than the roller
+  double bore_diameter_input_mm = 0, bore_diameter_output_mm = 0;    ///< 0: no bore in the solids
+  GeometryFileOptions geometry;                                      ///< "geometry_files"
   lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
   std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
 };
@@ -68,6 +72,7 @@ struct Result {
   /// Loads at input angle 0 (loaded rollers of the assembly drawings), when forces and the
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
+  std::optional<PlanarCamFit> input_cam_files, output_cam_files;  ///< with the profile stage
   /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
   std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;

@@ -6,7 +6,7 @@ namespace {
 
 lcr::CamSide<double> ParseSide(const Node& s) {
   s.CheckKnownFields({"lobes", "rollers", "turret_radius_mm", "roller_diameter_mm", "roller_length_mm",
-                      "cam_thickness_mm", "cutter_diameter_mm"});
+                      "cam_thickness_mm", "cutter_diameter_mm", "bore_diameter_mm"});
   lcr::CamSide<double> c;
   c.lobes = s["lobes"].Integer(1);
   c.rollers = s["rollers"].Integer(2);

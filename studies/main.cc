@@ -1,5 +1,6 @@
 // camopt: the command line. `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
 // [--convergence]`.
+// `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]` (studies/sweep.h).
 // Exit codes, by cause:
 //   0   success
 //   2   something the user can fix: the study file, the arguments, the output folder (with the
@@ -24,6 +25,7 @@
 
 #include "studies/convergence.h"
 #include "studies/study.h"
+#include "studies/sweep.h"
 
 namespace {
 
@@ -67,6 +69,16 @@ int main(int argc, char** argv) {
                   "see docs/reliability.md)")
       ->check(CLI::Range(1e-6, 1e6));
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
+  camopt::studies::sweep::Options sweep;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a study over many cases (docs/studies.md)");
+  sweep_cmd->add_option("sweep", sweep.file, "Sweep file (JSON)")->required();
+  sweep_cmd->add_option("--out,-o", sweep.out, "Output folder");
+  sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Threads per process (default: all cores)")->check(CLI::Range(1, 4096));
+  sweep_cmd->add_flag("--dry-run", sweep.dry_run, "Print the number of cases and stop");
+  sweep_cmd->add_flag("--resume", sweep.resume, "Continue an interrupted sweep from its checkpoint");
+  sweep_cmd->add_flag("--case-outputs", sweep.case_outputs, "Keep every case's result folder");
+  sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress lines on stderr");
+  sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(CLI::Range(1e-6, 1e6));
 
   try {
     app.parse(argc, argv);
@@ -81,6 +93,10 @@ int main(int argc, char** argv) {
   FLAGS_minloglevel = quiet ? google::GLOG_FATAL : google::GLOG_ERROR;
   FLAGS_stderrthreshold = quiet ? google::GLOG_FATAL : google::GLOG_ERROR;
 
+  if (sweep_cmd->parsed()) {
+    FLAGS_minloglevel = FLAGS_stderrthreshold = google::GLOG_FATAL;  // cases run quietly
+    return camopt::studies::sweep::RunCommand(sweep);
+  }
   if (kinds->parsed()) {
     for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
     return 0;

@@ -160,32 +160,39 @@ OutputFolder::~OutputFolder() {
   if (ActiveTemporary() == tmp_) ActiveTemporary().clear();
 }
 
-void OutputFolder::Commit(const Outputs& outputs) {
-  std::lock_guard<std::mutex> lock(OutputMutex());
+void WriteFilesInto(const std::string& dir, const Outputs& outputs) {
   for (const auto& [name, content] : outputs.files())
-    WriteWholeFile((fs::path(tmp_) / name).string(), content);
+    WriteWholeFile((fs::path(dir) / name).string(), content);
+}
+
+void MoveFolderIn(const std::string& tmp, const std::string& dir) {
   // One rename makes the new results visible: an atomic exchange with the previous folder when
   // there is one (Linux renameat2), a plain rename otherwise.
-  if (rename(tmp_.c_str(), dir_.c_str()) != 0) {
-    if (errno != ENOTEMPTY && errno != EEXIST) OutputFail("cannot move the results in", dir_, errno);
-    if (renameat2(AT_FDCWD, tmp_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0) {
+  if (rename(tmp.c_str(), dir.c_str()) != 0) {
+    if (errno != ENOTEMPTY && errno != EEXIST) OutputFail("cannot move the results in", dir, errno);
+    if (renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, dir.c_str(), RENAME_EXCHANGE) != 0) {
       // No exchange on this file system: move the old folder aside, then the new one in.
-      const std::string old = dir_ + ".camopt-old-" + std::to_string(getpid());
-      if (rename(dir_.c_str(), old.c_str()) != 0)
-        OutputFail("cannot move the previous results aside", dir_, errno);
-      if (rename(tmp_.c_str(), dir_.c_str()) != 0) {
+      const std::string old = dir + ".camopt-old-" + std::to_string(getpid());
+      if (rename(dir.c_str(), old.c_str()) != 0)
+        OutputFail("cannot move the previous results aside", dir, errno);
+      if (rename(tmp.c_str(), dir.c_str()) != 0) {
         const int err = errno;
-        rename(old.c_str(), dir_.c_str());
-        OutputFail("cannot move the results in", dir_, err);
+        rename(old.c_str(), dir.c_str());
+        OutputFail("cannot move the results in", dir, err);
       }
       std::error_code ec;
       fs::remove_all(old, ec);
-      committed_ = true;
       return;
     }
     std::error_code ec;
-    fs::remove_all(tmp_, ec);  // now the previous run
+    fs::remove_all(tmp, ec);  // now the previous run
   }
+}
+
+void OutputFolder::Commit(const Outputs& outputs) {
+  std::lock_guard<std::mutex> lock(OutputMutex());
+  WriteFilesInto(tmp_, outputs);
+  MoveFolderIn(tmp_, dir_);
   committed_ = true;
 }
 

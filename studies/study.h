@@ -93,6 +93,14 @@ class OutputFolder {
   bool committed_ = false;
 };
 
+/// Writes every file of `outputs` into the existing folder `dir` (StudyError with the operating
+/// system's reason otherwise). OutputFolder::Commit and the sweep's merged output use it.
+void WriteFilesInto(const std::string& dir, const Outputs& outputs);
+
+/// Replaces `dir` by the complete folder `tmp` with one rename (an atomic exchange when `dir`
+/// exists; the previous folder is then removed). StudyError with the operating system's reason.
+void MoveFolderIn(const std::string& tmp, const std::string& dir);
+
 /// For the CLI's signal thread: removes the temporary folder of the run in progress (waiting for a
 /// Commit under way to finish, so that `--out` is left either old or new, never mixed).
 void RemoveTemporaryOutputForInterrupt();

@@ -9,8 +9,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <dxflib/dl_dxf.h>
-#include <unistd.h>
 
 namespace camopt::studies {
 
@@ -377,78 +375,6 @@ std::string SvgDrawing(const Drawing& d, int size) {
   }
   os << "</svg>\n";
   return os.str();
-}
-
-std::string ToDxf(const Drawing& d) {
-  // dxflib writes to a path; write to a private temporary file and read it back.
-  char tmpl[] = "/tmp/camopt-dxf-XXXXXX";
-  const int fd = mkstemp(tmpl);
-  if (fd < 0) throw std::runtime_error("cannot create a temporary file for DXF output");
-  close(fd);
-  const std::string tmp = tmpl;
-  {
-    DL_Dxf dxf;
-    std::unique_ptr<DL_WriterA> dw(dxf.out(tmp.c_str(), DL_Codes::AC1015));
-    if (!dw) throw std::runtime_error("cannot open " + tmp + " for DXF output");
-    dxf.writeHeader(*dw);
-    dw->sectionEnd();
-    dw->sectionTables();
-    dxf.writeVPort(*dw);
-    dw->tableLinetypes(3);
-    dxf.writeLinetype(*dw, DL_LinetypeData("BYBLOCK", "BYBLOCK", 0, 0, 0.0));
-    dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "BYLAYER", 0, 0, 0.0));
-    dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Continuous", 0, 0, 0.0));
-    dw->tableEnd();
-    dw->tableLayers(static_cast<int>(d.layers.size()) + 1);
-    dxf.writeLayer(*dw, DL_LayerData("0", 0),
-                   DL_Attributes("", DL_Codes::black, 100, "CONTINUOUS", 1.0));
-    for (size_t i = 0; i < d.layers.size(); ++i)
-      dxf.writeLayer(*dw, DL_LayerData(d.layers[i].name, 0),
-                     DL_Attributes("", static_cast<int>(1 + i % 6), 100, "CONTINUOUS", 1.0));
-    dw->tableEnd();
-    dw->tableStyle(1);
-    // Exactly "Standard": dxflib gives DIMSTYLE the handle of the style of that name, and leaves
-    // it uninitialised (different bytes on every run) when there is none.
-    dxf.writeStyle(*dw, DL_StyleData("Standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
-    dw->tableEnd();
-    dxf.writeView(*dw);
-    dxf.writeUcs(*dw);
-    dw->tableAppid(1);
-    dxf.writeAppid(*dw, "ACAD");
-    dw->tableEnd();
-    dxf.writeDimStyle(*dw, 1, 1, 1, 1, 1);
-    dxf.writeBlockRecord(*dw);
-    dw->tableEnd();
-    dw->sectionEnd();
-    dw->sectionBlocks();
-    dxf.writeBlock(*dw, DL_BlockData("*Model_Space", 0, 0.0, 0.0, 0.0));
-    dxf.writeEndBlock(*dw, "*Model_Space");
-    dxf.writeBlock(*dw, DL_BlockData("*Paper_Space", 0, 0.0, 0.0, 0.0));
-    dxf.writeEndBlock(*dw, "*Paper_Space");
-    dw->sectionEnd();
-    dw->sectionEntities();
-    for (const auto& layer : d.layers) {
-      const DL_Attributes attr(layer.name, 256, -1, "BYLAYER", 1.0);
-      for (const auto& pl : layer.polylines) {
-        dxf.writePolyline(*dw, DL_PolylineData(static_cast<int>(pl.size()), 0, 0, layer.closed ? 1 : 0),
-                          attr);
-        for (const auto& [x, y] : pl) dxf.writeVertex(*dw, DL_VertexData(x, y, 0.0, 0.0));
-        dxf.writePolylineEnd(*dw);
-      }
-      for (const auto& c : layer.circles)
-        dxf.writeCircle(*dw, DL_CircleData(c.x, c.y, 0.0, c.r), attr);
-    }
-    dw->sectionEnd();
-    dxf.writeObjects(*dw);
-    dxf.writeObjectsEnd(*dw);
-    dw->dxfEOF();
-    dw->close();
-  }
-  std::ifstream in(tmp, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::filesystem::remove(tmp);
-  return buffer.str();
 }
 
 }  // namespace camopt::studies

@@ -1,5 +1,6 @@
-// Output writers shared by every study kind: CSV series, SVG plots and drawings, DXF.
-// (report.html, which gathers every SVG of a run, is in studies/report.h.)
+// Output writers shared by every study kind: CSV series, SVG plots and drawings (the geometry
+// files, DXF/STEP/STL, are in studies/geometry_files.h and cad/; report.html, which gathers every
+// SVG of a run, is in studies/report.h).
 // They return the file content as a string; Outputs writes everything at once.
 #pragma once
 
@@ -93,9 +94,5 @@ struct Drawing {
 /// SVG of a drawing, fitted to the canvas with equal axis scales; a layer's name is its legend
 /// entry, labels are drawn last (on top).
 std::string SvgDrawing(const Drawing& drawing, int size_px = 800);
-
-/// DXF (R2000, through dxflib) of a drawing: one DXF layer per drawing layer, polylines as
-/// POLYLINE entities in mm, circles as CIRCLE entities.
-std::string ToDxf(const Drawing& drawing);
 
 }  // namespace camopt::studies

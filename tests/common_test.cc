@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cad/dxf.h"
 #include "model/common/geometry.h"
 #include "model/common/scalar.h"
 #include "studies/input.h"
@@ -95,13 +96,12 @@ TEST(Writers, CsvHasHeaderAndRows) {
 }
 
 TEST(Writers, DxfHasPolylineAndEof) {
-  studies::Drawing d;
-  studies::Drawing::Layer layer;
-  layer.name = "PROFILE";
-  layer.color = "black";
-  layer.polylines.push_back({{0, 0}, {1, 0}, {1, 1}});
-  d.layers.push_back(layer);
-  const std::string dxf = studies::ToDxf(d);
+  // The DXF writer is cad::DxfDocument since issue 15 (dxflib's output had invalid owner handles).
+  cad::DxfDocument d;
+  d.AddLayer("PROFILE", 7);
+  d.AddChain("PROFILE", {{Vec2<double>(0, 0), Vec2<double>(1, 0), 0.0}, {Vec2<double>(1, 0), Vec2<double>(1, 1), 0.0}},
+             false);
+  const std::string dxf = d.ToString();
   EXPECT_NE(dxf.find("POLYLINE"), std::string::npos);
   EXPECT_NE(dxf.find("PROFILE"), std::string::npos);
   EXPECT_NE(dxf.find("EOF"), std::string::npos);

@@ -1,0 +1,369 @@
+#include "cad/dxf.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace camopt::cad {
+
+namespace {
+
+// Group-code / value writer with a running handle counter.
+class Out {
+ public:
+  void Pair(int code, const std::string& value) { os_ << code << "\n" << value << "\n"; }
+  void Pair(int code, int value) { Pair(code, std::to_string(value)); }
+  void Num(int code, double value) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.12g", value == 0.0 ? 0.0 : value);  // no "-0"
+    Pair(code, std::string(buf));
+  }
+  std::string Handle() {
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%X", next_++);
+    return buf;
+  }
+  std::string Peek() const {
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%X", next_);
+    return buf;
+  }
+  std::string str() const { return os_.str(); }
+
+ private:
+  std::ostringstream os_;
+  unsigned next_ = 0x20;
+};
+
+}  // namespace
+
+void DxfDocument::AddLayer(const std::string& name, int color) { layers_.push_back({name, color}); }
+
+void DxfDocument::AddChain(const std::string& layer, const std::vector<ArcSegment>& chain, bool closed) {
+  Entity e;
+  e.kind = Entity::kChain;
+  e.layer = layer;
+  e.chain = chain;
+  e.closed = closed;
+  entities_.push_back(std::move(e));
+}
+
+void DxfDocument::AddCircle(const std::string& layer, const Vec2<double>& centre, double radius) {
+  Entity e;
+  e.kind = Entity::kCircle;
+  e.layer = layer;
+  e.a = centre;
+  e.value = radius;
+  entities_.push_back(std::move(e));
+}
+
+void DxfDocument::AddLine(const std::string& layer, const Vec2<double>& a, const Vec2<double>& b) {
+  Entity e;
+  e.kind = Entity::kLine;
+  e.layer = layer;
+  e.a = a;
+  e.b = b;
+  entities_.push_back(std::move(e));
+}
+
+void DxfDocument::AddCentreMark(const std::string& layer, const Vec2<double>& c, double size) {
+  const double h = 0.5 * size;
+  AddLine(layer, c - Vec2<double>(h, 0), c + Vec2<double>(h, 0));
+  AddLine(layer, c - Vec2<double>(0, h), c + Vec2<double>(0, h));
+}
+
+void DxfDocument::AddText(const std::string& layer, const Vec2<double>& position, double height,
+                          const std::string& text) {
+  Entity e;
+  e.kind = Entity::kText;
+  e.layer = layer;
+  e.a = position;
+  e.value = height;
+  e.text = text;
+  entities_.push_back(std::move(e));
+}
+
+std::string DxfDocument::ToString() const {
+  // Handles fixed up front for the objects that are referenced before they are written.
+  Out o;
+  const std::string root = o.Handle(), group_dict = o.Handle(), layout_dict = o.Handle();
+  const std::string model_layout = o.Handle(), paper_layout = o.Handle();
+  const std::string model_record = o.Handle(), paper_record = o.Handle();
+  const std::string style_standard = o.Handle();
+
+  std::ostringstream body_dummy;
+  auto table = [&](const std::string& name, int count, const std::string& handle) {
+    o.Pair(0, "TABLE");
+    o.Pair(2, name);
+    o.Pair(5, handle);
+    o.Pair(330, "0");
+    o.Pair(100, "AcDbSymbolTable");
+    o.Pair(70, count);
+  };
+  auto record = [&](const std::string& type, const std::string& handle, const std::string& owner,
+                    const std::string& subclass) {
+    o.Pair(0, type);
+    o.Pair(type == "DIMSTYLE" ? 105 : 5, handle);
+    o.Pair(330, owner);
+    o.Pair(100, "AcDbSymbolTableRecord");
+    o.Pair(100, subclass);
+  };
+
+  // The header is written last into its own buffer: $HANDSEED is known only at the end.
+  Out& w = o;
+  w.Pair(0, "SECTION");
+  w.Pair(2, "CLASSES");
+  w.Pair(0, "ENDSEC");
+  w.Pair(0, "SECTION");
+  w.Pair(2, "TABLES");
+  {
+    const std::string t = w.Handle();
+    table("VPORT", 1, t);
+    record("VPORT", w.Handle(), t, "AcDbViewportTableRecord");
+    w.Pair(2, "*Active");
+    w.Pair(70, 0);
+    w.Num(10, 0); w.Num(20, 0); w.Num(11, 1); w.Num(21, 1);
+    w.Num(12, 0); w.Num(22, 0); w.Num(13, 0); w.Num(23, 0);
+    w.Num(14, 1); w.Num(24, 1); w.Num(15, 1); w.Num(25, 1);
+    w.Num(16, 0); w.Num(26, 0); w.Num(36, 1); w.Num(17, 0); w.Num(27, 0); w.Num(37, 0);
+    w.Num(40, 200); w.Num(41, 1); w.Num(42, 50); w.Num(43, 0); w.Num(44, 0); w.Num(50, 0); w.Num(51, 0);
+    w.Pair(71, 0); w.Pair(72, 100); w.Pair(73, 1); w.Pair(74, 3); w.Pair(75, 0); w.Pair(76, 0);
+    w.Pair(77, 0); w.Pair(78, 0);
+    w.Pair(0, "ENDTAB");
+  }
+  {
+    const std::string t = w.Handle();
+    table("LTYPE", 3, t);
+    for (const char* name : {"ByBlock", "ByLayer", "Continuous"}) {
+      record("LTYPE", w.Handle(), t, "AcDbLinetypeTableRecord");
+      w.Pair(2, name);
+      w.Pair(70, 0);
+      w.Pair(3, std::string(name) == "Continuous" ? "Solid line" : "");
+      w.Pair(72, 65);
+      w.Pair(73, 0);
+      w.Num(40, 0);
+    }
+    w.Pair(0, "ENDTAB");
+  }
+  {
+    const std::string t = w.Handle();
+    table("LAYER", static_cast<int>(layers_.size()) + 1, t);
+    std::vector<Layer> all = {{"0", 7}};
+    all.insert(all.end(), layers_.begin(), layers_.end());
+    for (const Layer& l : all) {
+      record("LAYER", w.Handle(), t, "AcDbLayerTableRecord");
+      w.Pair(2, l.name);
+      w.Pair(70, 0);
+      w.Pair(62, l.color);
+      w.Pair(6, "Continuous");
+    }
+    w.Pair(0, "ENDTAB");
+  }
+  {
+    const std::string t = w.Handle();
+    table("STYLE", 1, t);
+    record("STYLE", style_standard, t, "AcDbTextStyleTableRecord");
+    w.Pair(2, "Standard");
+    w.Pair(70, 0);
+    w.Num(40, 0);
+    w.Num(41, 1);
+    w.Num(50, 0);
+    w.Pair(71, 0);
+    w.Num(42, 2.5);
+    w.Pair(3, "txt");
+    w.Pair(4, "");
+    w.Pair(0, "ENDTAB");
+  }
+  for (const char* name : {"VIEW", "UCS"}) {
+    table(name, 0, w.Handle());
+    w.Pair(0, "ENDTAB");
+  }
+  {
+    const std::string t = w.Handle();
+    table("APPID", 1, t);
+    record("APPID", w.Handle(), t, "AcDbRegAppTableRecord");
+    w.Pair(2, "ACAD");
+    w.Pair(70, 0);
+    w.Pair(0, "ENDTAB");
+  }
+  {
+    const std::string t = w.Handle();
+    w.Pair(0, "TABLE");
+    w.Pair(2, "DIMSTYLE");
+    w.Pair(5, t);
+    w.Pair(330, "0");
+    w.Pair(100, "AcDbSymbolTable");
+    w.Pair(70, 1);
+    w.Pair(100, "AcDbDimStyleTable");
+    w.Pair(71, 0);
+    record("DIMSTYLE", w.Handle(), t, "AcDbDimStyleTableRecord");
+    w.Pair(2, "Standard");
+    w.Pair(70, 0);
+    w.Pair(0, "ENDTAB");
+  }
+  {
+    const std::string t = w.Handle();
+    table("BLOCK_RECORD", 2, t);
+    record("BLOCK_RECORD", model_record, t, "AcDbBlockTableRecord");
+    w.Pair(2, "*Model_Space");
+    w.Pair(340, model_layout);
+    record("BLOCK_RECORD", paper_record, t, "AcDbBlockTableRecord");
+    w.Pair(2, "*Paper_Space");
+    w.Pair(340, paper_layout);
+    w.Pair(0, "ENDTAB");
+  }
+  w.Pair(0, "ENDSEC");
+
+  w.Pair(0, "SECTION");
+  w.Pair(2, "BLOCKS");
+  for (int paper = 0; paper < 2; ++paper) {
+    const std::string& rec = paper ? paper_record : model_record;
+    const std::string name = paper ? "*Paper_Space" : "*Model_Space";
+    w.Pair(0, "BLOCK");
+    w.Pair(5, w.Handle());
+    w.Pair(330, rec);
+    w.Pair(100, "AcDbEntity");
+    if (paper) w.Pair(67, 1);
+    w.Pair(8, "0");
+    w.Pair(100, "AcDbBlockBegin");
+    w.Pair(2, name);
+    w.Pair(70, 0);
+    w.Num(10, 0); w.Num(20, 0); w.Num(30, 0);
+    w.Pair(3, name);
+    w.Pair(1, "");
+    w.Pair(0, "ENDBLK");
+    w.Pair(5, w.Handle());
+    w.Pair(330, rec);
+    w.Pair(100, "AcDbEntity");
+    if (paper) w.Pair(67, 1);
+    w.Pair(8, "0");
+    w.Pair(100, "AcDbBlockEnd");
+  }
+  w.Pair(0, "ENDSEC");
+
+  w.Pair(0, "SECTION");
+  w.Pair(2, "ENTITIES");
+  for (const Entity& e : entities_) {
+    auto head = [&](const char* type, const char* subclass) {
+      w.Pair(0, type);
+      w.Pair(5, w.Handle());
+      w.Pair(330, model_record);
+      w.Pair(100, "AcDbEntity");
+      w.Pair(8, e.layer);
+      w.Pair(100, subclass);
+    };
+    switch (e.kind) {
+      case Entity::kChain: {
+        head("LWPOLYLINE", "AcDbPolyline");
+        const size_t n = e.chain.size() + (e.closed ? 0 : 1);
+        w.Pair(90, static_cast<int>(n));
+        w.Pair(70, e.closed ? 1 : 0);
+        w.Num(43, 0);
+        for (size_t i = 0; i < e.chain.size(); ++i) {
+          w.Num(10, e.chain[i].start.x());
+          w.Num(20, e.chain[i].start.y());
+          if (e.chain[i].bulge != 0.0) w.Num(42, e.chain[i].bulge);
+        }
+        if (!e.closed && !e.chain.empty()) {
+          w.Num(10, e.chain.back().end.x());
+          w.Num(20, e.chain.back().end.y());
+        }
+        break;
+      }
+      case Entity::kCircle:
+        head("CIRCLE", "AcDbCircle");
+        w.Num(10, e.a.x()); w.Num(20, e.a.y()); w.Num(30, 0);
+        w.Num(40, e.value);
+        break;
+      case Entity::kLine:
+        head("LINE", "AcDbLine");
+        w.Num(10, e.a.x()); w.Num(20, e.a.y()); w.Num(30, 0);
+        w.Num(11, e.b.x()); w.Num(21, e.b.y()); w.Num(31, 0);
+        break;
+      case Entity::kText:
+        head("TEXT", "AcDbText");
+        w.Num(10, e.a.x()); w.Num(20, e.a.y()); w.Num(30, 0);
+        w.Num(40, e.value);
+        w.Pair(1, e.text);
+        w.Pair(7, "Standard");
+        w.Pair(100, "AcDbText");
+        break;
+    }
+  }
+  w.Pair(0, "ENDSEC");
+
+  w.Pair(0, "SECTION");
+  w.Pair(2, "OBJECTS");
+  auto dictionary = [&](const std::string& h, const std::string& owner,
+                        const std::vector<std::pair<std::string, std::string>>& items) {
+    w.Pair(0, "DICTIONARY");
+    w.Pair(5, h);
+    w.Pair(330, owner);
+    w.Pair(100, "AcDbDictionary");
+    w.Pair(281, 1);
+    for (const auto& [key, value] : items) {
+      w.Pair(3, key);
+      w.Pair(350, value);
+    }
+  };
+  dictionary(root, "0", {{"ACAD_GROUP", group_dict}, {"ACAD_LAYOUT", layout_dict}});
+  dictionary(group_dict, root, {});
+  dictionary(layout_dict, root, {{"Layout1", paper_layout}, {"Model", model_layout}});
+  for (int paper = 0; paper < 2; ++paper) {
+    w.Pair(0, "LAYOUT");
+    w.Pair(5, paper ? paper_layout : model_layout);
+    w.Pair(330, layout_dict);
+    w.Pair(100, "AcDbPlotSettings");
+    w.Pair(1, "");
+    w.Pair(4, "");
+    w.Pair(6, "");
+    for (int c = 40; c <= 49; ++c) w.Num(c, 0);
+    w.Num(140, 0); w.Num(141, 0); w.Num(142, 1); w.Num(143, 1);
+    w.Pair(70, paper ? 0 : 1024);
+    w.Pair(72, 1);
+    w.Pair(73, 0);
+    w.Pair(74, 5);
+    w.Pair(7, "");
+    w.Pair(75, 16);
+    w.Num(147, 1); w.Num(148, 0); w.Num(149, 0);
+    w.Pair(100, "AcDbLayout");
+    w.Pair(1, paper ? "Layout1" : "Model");
+    w.Pair(70, 1);
+    w.Pair(71, paper ? 1 : 0);
+    w.Num(10, 0); w.Num(20, 0); w.Num(11, 420); w.Num(21, 297);
+    w.Num(12, 0); w.Num(22, 0); w.Num(32, 0);
+    w.Num(14, 0); w.Num(24, 0); w.Num(34, 0);
+    w.Num(15, 0); w.Num(25, 0); w.Num(35, 0);
+    w.Num(146, 0);
+    w.Num(13, 0); w.Num(23, 0); w.Num(33, 0);
+    w.Num(16, 1); w.Num(26, 0); w.Num(36, 0);
+    w.Num(17, 0); w.Num(27, 1); w.Num(37, 0);
+    w.Pair(76, 0);
+    w.Pair(330, paper ? paper_record : model_record);
+  }
+  w.Pair(0, "ENDSEC");
+  w.Pair(0, "EOF");
+
+  Out h;
+  h.Pair(0, "SECTION");
+  h.Pair(2, "HEADER");
+  h.Pair(9, "$ACADVER");
+  h.Pair(1, "AC1015");
+  h.Pair(9, "$DWGCODEPAGE");
+  h.Pair(3, "ANSI_1252");
+  h.Pair(9, "$INSBASE");
+  h.Num(10, 0); h.Num(20, 0); h.Num(30, 0);
+  h.Pair(9, "$INSUNITS");
+  h.Pair(70, 4);  // millimetres
+  h.Pair(9, "$MEASUREMENT");
+  h.Pair(70, 1);  // metric
+  h.Pair(9, "$LUNITS");
+  h.Pair(70, 2);  // decimal
+  h.Pair(9, "$LUPREC");
+  h.Pair(70, 4);
+  h.Pair(9, "$HANDSEED");
+  h.Pair(5, o.Peek());
+  h.Pair(0, "ENDSEC");
+  return h.str() + o.str();
+}
+
+}  // namespace camopt::cad

@@ -1,0 +1,58 @@
+// Solids and surfaces through OpenCASCADE (OCCT): STEP AP214 files and triangle meshes for STL.
+// Only this file includes OCCT headers, and it builds as its own library (camopt_cad_occt), so
+// the rest of camopt compiles without them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cad/arc_fit.h"
+#include "cad/stl.h"
+
+namespace camopt::cad {
+
+/// A planar cam extruded along +z: outer profile (a closed, counter-clockwise chain of arcs in the
+/// xy plane) minus an optional circular bore.
+struct Extrusion {
+  std::vector<ArcSegment> profile;     ///< closed chain [mm]
+  Vec2<double> bore_centre = Vec2<double>::Zero();
+  double bore_diameter_mm = 0.0;       ///< 0: no bore
+  double thickness_mm = 10.0;
+  std::string name = "cam";            ///< product name in the STEP file
+  double mesh_deflection_mm = 0.002;   ///< STL chord deviation from the solid's faces
+};
+
+/// The solid's files and measures as OCCT computes them from the B-rep.
+struct SolidOutput {
+  std::string step;         ///< STEP AP214 file, with a fixed time stamp (same input, same bytes)
+  TriangleMesh mesh;        ///< closed mesh of the solid's faces (vertices merged)
+  double volume_mm3 = 0.0;  ///< of the B-rep
+  double area_mm2 = 0.0;    ///< surface area of the B-rep
+  int faces = 0;
+};
+
+/// Builds the extruded solid (arc edges exactly as in the chain) and its STEP file and mesh.
+/// @throws std::runtime_error if OCCT cannot build a valid solid.
+SolidOutput ExtrudeCam(const Extrusion& e);
+
+/// A grid of points on a surface: points[i][j], i along one direction, j along the other [mm].
+using PointGrid = std::vector<std::vector<Eigen::Vector3d>>;
+
+/// One B-spline surface through each grid (OCCT GeomAPI_PointsToBSplineSurface::Interpolate:
+/// cubic, through every grid point) in one STEP AP214 file.
+struct SurfaceOutput {
+  std::string step;
+  double area_mm2 = 0.0;
+  int faces = 0;
+};
+SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name);
+
+/// What OCCT reads back from a STEP file (content in memory).
+struct StepReadBack {
+  int solids = 0, shells = 0, faces = 0;
+  double volume_mm3 = 0.0, area_mm2 = 0.0;
+  bool valid = false;  ///< BRepCheck_Analyzer on the result
+};
+StepReadBack ReadStep(const std::string& content);
+
+}  // namespace camopt::cad

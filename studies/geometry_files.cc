@@ -1,0 +1,221 @@
+#include "studies/geometry_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "cad/dxf.h"
+#include "cad/solid.h"
+#include "studies/format.h"
+
+#ifndef CAMOPT_VERSION_STRING
+#define CAMOPT_VERSION_STRING "unknown"
+#endif
+
+namespace camopt::studies {
+
+namespace {
+
+// Exact-curve points per fitted arc in the independent check after the fit (on top of the fit's
+// own check points): the reported deviation is the larger of the two.
+constexpr int kVerifySamplesPerArc = 8;
+
+std::vector<cad::ArcSegment> Reversed(const std::vector<cad::ArcSegment>& chain) {
+  std::vector<cad::ArcSegment> r;
+  r.reserve(chain.size());
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) r.push_back({it->end, it->start, -it->bulge});
+  return r;
+}
+
+struct Fit {
+  cad::FittedCurve curve;
+  double deviation_mm;
+};
+
+// The fit aims at 90 % of the tolerance: its check points are discrete, and the largest distance
+// between them (found by the independent dense checks in the tests) is up to 0.3 % above the
+// largest at them.
+constexpr double kFitTarget = 0.9;
+
+// The larger of two deviations, NaN winning (std::max would hide it).
+double Worse(double a, double b) { return b <= a ? a : b; }
+
+Fit FitCurve(const cad::CurveFunction& f, const PlanarCamGeometry& cam, double tol_mm) {
+  cad::FitOptions o;
+  o.tolerance_mm = kFitTarget * tol_mm;
+  o.initial_segments = cam.initial_segments;
+  Fit fit{cad::FitBiarcs(f, cam.t0, cam.t1, o), 0.0};
+  const int samples = std::max(1000, kVerifySamplesPerArc * static_cast<int>(fit.curve.arcs.size()));
+  fit.deviation_mm =
+      Worse(fit.curve.max_deviation_mm, cad::MaxDistanceToChain(f, cam.t0, cam.t1, samples, fit.curve.arcs));
+  fit.curve.checked_points += samples + 1;
+  return fit;
+}
+
+// Area enclosed by the exact closed curve [mm²]: the polygon through 2^17 points (the chords cut
+// off less than 1e-5 mm² of a cam of a few hundred mm around).
+double ExactArea(const cad::CurveFunction& f, double t0, double t1) {
+  const int n = 1 << 17;
+  double a = 0.0;
+  Vec2<double> prev = f(t0);
+  for (int i = 1; i <= n; ++i) {
+    const Vec2<double> p = f(t0 + (t1 - t0) * i / n);
+    a += 0.5 * Cross(prev, p);
+    prev = p;
+  }
+  return std::abs(a);
+}
+
+}  // namespace
+
+std::string CamoptVersion() { return CAMOPT_VERSION_STRING; }
+
+GeometryFileOptions ParseGeometryFiles(const Node& root) {
+  GeometryFileOptions o;
+  if (!root.Has("geometry_files")) return o;
+  const Node g = root["geometry_files"];
+  g.CheckKnownFields({"dxf_tolerance_um", "stl_format", "step"});
+  if (g.Has("dxf_tolerance_um")) o.dxf_tolerance_um = g["dxf_tolerance_um"].NumberIn(0.01, 1000.0);
+  const std::string stl = g.StringOr("stl_format", "binary");
+  if (stl != "binary" && stl != "ascii") g["stl_format"].Fail("\"binary\" or \"ascii\"");
+  o.stl_ascii = stl == "ascii";
+  o.step = g.BoolOr("step", true);
+  return o;
+}
+
+std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& o) {
+  return o.stl_ascii ? cad::AsciiStl(mesh, name) : cad::BinaryStl(mesh, name);
+}
+
+PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOptions& options) {
+  const double tol_mm = options.dxf_tolerance_um * 1e-3;
+  PlanarCamFit f;
+  f.cam = cam;
+  Fit profile = FitCurve(cam.profile, cam, tol_mm);
+  // Counter-clockwise outer profile (positive area) for the solid and for readers that expect it.
+  if (cad::EnclosedArea(profile.curve.arcs) < 0) profile.curve.arcs = Reversed(profile.curve.arcs);
+  f.profile = profile.curve;
+  f.max_deviation_mm = profile.deviation_mm;
+  f.checked_points = profile.curve.checked_points;
+  nlohmann::json layers = {"CAM_PROFILE"};
+  if (cam.pitch) {
+    const Fit pitch = FitCurve(cam.pitch, cam, tol_mm);
+    f.pitch = pitch.curve;
+    f.max_deviation_mm = Worse(f.max_deviation_mm, pitch.deviation_mm);
+    f.checked_points += pitch.curve.checked_points;
+    layers.push_back("PITCH_CURVE");
+  }
+  nlohmann::json& j = f.summary;
+  if (cam.cutter) {
+    const Fit cutter = FitCurve(cam.cutter, cam, tol_mm);
+    f.cutter = cutter.curve;
+    f.max_deviation_mm = Worse(f.max_deviation_mm, cutter.deviation_mm);
+    f.checked_points += cutter.curve.checked_points;
+    layers.push_back("CUTTER_PATH");
+    j["cutter_diameter_mm"] = cam.cutter_diameter_mm;
+  } else if (!cam.cutter_note.empty()) {
+    j["cutter_path"] = cam.cutter_note;
+  }
+  if (!cam.rollers.empty()) layers.push_back("ROLLERS");
+  if (cam.bore_diameter_mm > 0) layers.push_back("BORE");
+  layers.push_back("CENTRE_MARKS");
+  layers.push_back("TEXT");
+  f.profile_area_mm2 = ExactArea(cam.profile, cam.t0, cam.t1);
+  // A curve the fit cannot follow within the tolerance (absurd sizes, non-finite points): no files.
+  f.files = std::isfinite(f.max_deviation_mm) && f.max_deviation_mm <= tol_mm && f.profile.within_tolerance;
+  if (!f.files) {
+    j["not_written"] = "the curves could not be fitted within " + Format(options.dxf_tolerance_um, 4) +
+                       " um (largest deviation " + Format(f.max_deviation_mm * 1e3, 4) + " um, " +
+                       std::to_string(f.profile.arcs.size()) + " arcs)";
+    j["dxf_max_deviation_um"] = std::isfinite(f.max_deviation_mm) ? nlohmann::json(f.max_deviation_mm * 1e3)
+                                                                  : nlohmann::json(nullptr);
+    j["dxf_tolerance_um"] = options.dxf_tolerance_um;
+    return f;
+  }
+
+  j["dxf"] = cam.file_stem + ".dxf";
+  j["dxf_layers"] = layers;
+  j["dxf_tolerance_um"] = options.dxf_tolerance_um;
+  j["dxf_max_deviation_um"] = f.max_deviation_mm * 1e3;
+  j["dxf_deviation_check_points"] = f.checked_points;
+  j["dxf_within_tolerance"] = f.max_deviation_mm <= tol_mm;
+  j["profile_arcs"] = f.profile.arcs.size();
+  j["profile_area_mm2"] = f.profile_area_mm2;
+  f.solid = cam.thickness_mm > 0;
+  if (f.solid && cad::ChainCrossesItself(f.profile.arcs)) {
+    f.solid = false;
+    j["solid"] = "not written: the profile crosses itself (undercut), it bounds no solid";
+  } else if (f.solid) {
+    const double bore_area = kPi * 0.25 * cam.bore_diameter_mm * cam.bore_diameter_mm;
+    j["thickness_mm"] = cam.thickness_mm;
+    j["bore_diameter_mm"] = cam.bore_diameter_mm;
+    j["solid_volume_mm3"] = (f.profile_area_mm2 - bore_area) * cam.thickness_mm;
+    if (options.step) j["step"] = cam.file_stem + ".step";
+    j["stl"] = cam.file_stem + ".stl";
+    j["stl_format"] = options.stl_ascii ? "ascii" : "binary";
+  } else {
+    j["solid"] = "not written: no cam thickness given (cam_thickness_mm)";
+  }
+  return f;
+}
+
+void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& options, Outputs& out) {
+  if (!f.files) return;
+  const PlanarCamGeometry& cam = f.cam;
+  cad::DxfDocument dxf;
+  dxf.AddLayer("CAM_PROFILE", 7);
+  dxf.AddChain("CAM_PROFILE", f.profile.arcs, true);
+  if (cam.pitch) {
+    dxf.AddLayer("PITCH_CURVE", 8);
+    dxf.AddChain("PITCH_CURVE", f.pitch.arcs, true);
+  }
+  if (cam.cutter) {
+    dxf.AddLayer("CUTTER_PATH", 1);
+    dxf.AddChain("CUTTER_PATH", f.cutter.arcs, true);
+  }
+  if (!cam.rollers.empty()) {
+    dxf.AddLayer("ROLLERS", 5);
+    for (const auto& [c, r] : cam.rollers) dxf.AddCircle("ROLLERS", c, r);
+  }
+  if (cam.bore_diameter_mm > 0) {
+    dxf.AddLayer("BORE", 7);
+    dxf.AddCircle("BORE", cam.centre, 0.5 * cam.bore_diameter_mm);
+  }
+  // Centre marks (cam axis, and each roller) and the text block below the drawing.
+  dxf.AddLayer("CENTRE_MARKS", 3);
+  double ymin = cam.centre.y(), xmin = cam.centre.x(), size = 0.0;
+  for (const auto& a : f.profile.arcs) {
+    ymin = std::min(ymin, a.start.y());
+    xmin = std::min(xmin, a.start.x());
+    size = std::max(size, (a.start - cam.centre).norm());
+  }
+  for (const auto& [c, r] : cam.rollers) ymin = std::min(ymin, c.y() - r), xmin = std::min(xmin, c.x() - r);
+  const double mark = std::max(1.0, 0.08 * size);
+  dxf.AddCentreMark("CENTRE_MARKS", cam.centre, mark);
+  for (const auto& [c, r] : cam.rollers) dxf.AddCentreMark("CENTRE_MARKS", c, std::min(mark, r));
+  dxf.AddLayer("TEXT", 7);
+  const double h = std::max(1.0, 0.04 * size);
+  const std::vector<std::string> lines = {
+      cam.design_name + ": " + cam.cam_name,
+      "units: mm (INSUNITS 4); curves: arcs within " + Format(options.dxf_tolerance_um, 4) +
+          " um of the exact profile (largest found " + Format(f.max_deviation_mm * 1e3, 3) + " um)",
+      cam.cutter ? "cutter path: cutter diameter " + Format(cam.cutter_diameter_mm, 6) + " mm"
+                 : "cutter path: " + (cam.cutter_note.empty() ? std::string("none") : cam.cutter_note),
+      "camopt " + CamoptVersion()};
+  for (size_t i = 0; i < lines.size(); ++i)
+    dxf.AddText("TEXT", Vec2<double>(xmin, ymin - (2.0 + 1.6 * (i + 1)) * h), h, lines[i]);
+  out.Add(cam.file_stem + ".dxf", dxf.ToString());
+
+  if (!f.solid) return;
+  cad::Extrusion e;
+  e.profile = f.profile.arcs;
+  e.bore_centre = cam.centre;
+  e.bore_diameter_mm = cam.bore_diameter_mm;
+  e.thickness_mm = cam.thickness_mm;
+  e.name = cam.design_name + " " + cam.cam_name;
+  const cad::SolidOutput solid = cad::ExtrudeCam(e);
+  if (options.step) out.Add(cam.file_stem + ".step", solid.step);
+  out.Add(cam.file_stem + ".stl", StlFile(solid.mesh, e.name, options));
+}
+
+}  // namespace camopt::studies

@@ -1,0 +1,80 @@
+// Geometry files of a planar cam (DXF with arcs, STEP solid, STL mesh) and the shared
+// "geometry_files" block of a study, for every cam kind (lcr_analysis, cycloid_ltca, disc_cam;
+// globoidal_cam uses the same options for its surfaces):
+//
+//   "geometry_files": { "dxf_tolerance_um": 1,        // largest distance of the DXF/STEP arcs
+//                                                      // from the model's exact profile
+//                       "stl_format": "binary",        // or "ascii"
+//                       "step": true }                 // write the STEP solids/surfaces
+//
+// The fitting error, measured against the exact profile function (not the sampled points), goes
+// to result.json under "geometry_files".
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cad/arc_fit.h"
+#include "cad/stl.h"
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::studies {
+
+struct GeometryFileOptions {
+  double dxf_tolerance_um = 1.0;
+  bool stl_ascii = false;
+  bool step = true;
+};
+
+/// Reads the optional root block "geometry_files" (defaults when absent).
+GeometryFileOptions ParseGeometryFiles(const Node& root);
+
+/// One planar cam as its geometry files see it. Curves are functions of a parameter over
+/// [t0, t1] (closed curves), in the cam frame [mm].
+struct PlanarCamGeometry {
+  std::string file_stem;   ///< "input_cam" → input_cam.dxf, input_cam.step, input_cam.stl
+  std::string design_name; ///< the study's name (text block, STEP product)
+  std::string cam_name;    ///< "input cam", "cycloid disc", ...
+  cad::CurveFunction profile;
+  cad::CurveFunction pitch;   ///< roller-centre curve; empty: none
+  cad::CurveFunction cutter;  ///< cutter-centre path; empty: none (see cutter_note)
+  double cutter_diameter_mm = 0.0;
+  std::string cutter_note;    ///< why there is no cutter path layer
+  double t0 = 0.0, t1 = 2 * kPi;
+  int initial_segments = 64;
+  Vec2<double> centre = Vec2<double>::Zero();  ///< cam axis
+  std::vector<std::pair<Vec2<double>, double>> rollers;  ///< circles drawn on a ROLLERS layer
+  double thickness_mm = 10.0;
+  double bore_diameter_mm = 0.0;  ///< 0: no bore
+};
+
+/// A cam's curves fitted with arcs (in Run: cheap) and what result.json says about them.
+struct PlanarCamFit {
+  PlanarCamGeometry cam;
+  cad::FittedCurve profile, pitch, cutter;  ///< profile counter-clockwise
+  double max_deviation_mm = 0.0;            ///< over profile, pitch and cutter path
+  long checked_points = 0;
+  double profile_area_mm2 = 0.0;            ///< of the exact profile
+  bool files = false;                       ///< fitted within the tolerance: the files are written
+  bool solid = false;                       ///< STEP/STL written (a thickness, no undercut)
+  nlohmann::json summary;                   ///< the entry for result.json
+};
+
+/// Fits the curves and measures the fit against the exact curve functions.
+PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOptions& options);
+
+/// Writes <stem>.dxf, and <stem>.step (when asked) and <stem>.stl when the cam has a thickness,
+/// into `out`. The solid is built by OpenCASCADE from the fitted arcs.
+void WritePlanarCamFiles(const PlanarCamFit& fit, const GeometryFileOptions& options, Outputs& out);
+
+/// STL file content in the chosen format.
+std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& options);
+
+/// camopt's version (the project version), for the files' text blocks.
+std::string CamoptVersion();
+
+}  // namespace camopt::studies

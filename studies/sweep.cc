@@ -1,0 +1,885 @@
+#include "studies/sweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <new>
+#include <random>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <boost/random/sobol.hpp>
+
+#include "studies/sweep_world.h"
+#include "studies/writers.h"
+
+namespace camopt::studies::sweep {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Pointer = json::json_pointer;
+
+namespace {
+
+const std::set<std::string> kDesigns = {"factorial", "zip", "latin_hypercube", "sobol"};
+
+std::string Fmt(double v, const char* format = "%.10g") {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// A JSON pointer from a string node ("/target/speed_ratio").
+Pointer ReadPointer(const Node& n) {
+  const std::string s = n.String();
+  if (s.empty() || s[0] != '/') n.Fail("a JSON pointer such as \"/load/torque_Nm\"");
+  try {
+    return Pointer(s);
+  } catch (const json::exception&) {
+    n.Fail("a JSON pointer such as \"/load/torque_Nm\"");
+  }
+}
+
+// The study must already hold the object (or array element) that the pointer writes into: a
+// misspelt path is refused here, not silently added as a new field.
+void CheckSettable(const json& study, const Pointer& p, const Node& n) {
+  const Pointer parent = p.parent_pointer();
+  if (!study.contains(parent))
+    n.FailWith("the base study has no " + (parent.empty() ? std::string("/") : parent.to_string()) +
+               " to set \"" + p.back() + "\" in");
+  const json& holder = study.at(parent);
+  if (holder.is_object()) return;
+  if (holder.is_array()) {
+    const std::string& key = p.back();
+    const bool digits = !key.empty() && std::all_of(key.begin(), key.end(), ::isdigit);
+    if (digits && key.size() < 10 && std::stoul(key) < holder.size()) return;
+    n.FailWith("the base study's " + parent.to_string() + " has " + std::to_string(holder.size()) +
+               " elements; \"" + key + "\" is not one of them");
+  }
+  n.FailWith("the base study's " + parent.to_string() + " is " + Describe(holder) +
+             ", not an object to set \"" + p.back() + "\" in");
+}
+
+// The value of a level: rounded to a whole number on request.
+json Level(double x, const Variation& v) {
+  if (v.integer) return json(static_cast<int64_t>(std::llround(x)));
+  return json(x);
+}
+
+// A point u in [0, 1) mapped onto a variation: across its range, or onto one of its values.
+json AtFraction(const Variation& v, double u) {
+  if (v.has_range) {
+    const double x = v.log ? std::exp(std::log(v.lo) + u * (std::log(v.hi) - std::log(v.lo)))
+                           : v.lo + u * (v.hi - v.lo);
+    return Level(x, v);
+  }
+  const size_t n = v.values.size();
+  return v.values[std::min(n - 1, static_cast<size_t>(u * static_cast<double>(n)))];
+}
+
+// A double in [0, 1) from 53 bits of the generator (the standard's distributions are not the same
+// on every library; this is).
+double Uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+// 64-bit FNV-1a of a text: the fingerprint of a sweep in its checkpoint.
+std::string Fingerprint(const std::string& text) {
+  uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string CsvText(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string CsvCell(const json& v) {
+  if (v.is_null()) return "";
+  if (v.is_number_float()) return Fmt(v.get<double>());
+  if (v.is_number()) return v.dump();
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_string()) return CsvText(v.get<std::string>());
+  return CsvText(v.dump());
+}
+
+}  // namespace
+
+Sweep Parse(const std::string& file, double max_cases) {
+  const json doc = LoadStudyFile(file);
+  const Node root(&doc, file, "");
+  if (!doc.is_object()) root.Fail("a sweep object");
+  root.CheckKnownFields({"sweep", "description", "base", "set", "vary", "design", "samples", "seed",
+                         "outputs", "pareto", "case_outputs"});
+  Sweep s;
+  s.file = file;
+  s.name = root["sweep"].String();
+
+  const Node base = root["base"];
+  if (base.json().is_string()) {
+    fs::path p(base.String());
+    if (p.is_relative()) p = fs::path(file).parent_path() / p;
+    s.study_file = p.string();
+    try {
+      s.base = LoadStudyFile(s.study_file);
+    } catch (const StudyError& e) {
+      throw StudyError(file + ": /base: " + e.what());
+    }
+  } else if (base.json().is_object()) {
+    s.base = base.json();
+    s.study_file = file;
+  } else {
+    base.Fail("a study file name or an inline study object");
+  }
+  if (!s.base.is_object() || !s.base.contains("study"))
+    base.FailWith("the base is not a study (it has no \"study\" kind)");
+
+  if (root.Has("set")) {
+    const Node set = root["set"];
+    if (!set.json().is_object()) set.Fail("an object of JSON pointer: value");
+    for (auto it = set.json().begin(); it != set.json().end(); ++it) {
+      const std::string key_path = "/set/" + it.key();
+      const json key = it.key();
+      const Node key_node(&key, file, key_path);
+      const Pointer p = ReadPointer(key_node);
+      CheckSettable(s.base, p, key_node);
+      s.base[p] = it.value();
+    }
+  }
+
+  s.design = root.StringOr("design", "factorial");
+  if (!kDesigns.count(s.design))
+    root["design"].Fail("one of factorial, zip, latin_hypercube, sobol");
+  const bool sampled = s.design == "latin_hypercube" || s.design == "sobol";
+  if (sampled) {
+    s.samples = root["samples"].Integer(1);
+    if (s.samples > max_cases)
+      root["samples"].FailWith("more than the cap of " + Fmt(max_cases, "%.3g") +
+                               " cases; raise it with --max-work-factor");
+  } else if (root.Has("samples")) {
+    root["samples"].FailWith("samples are for the latin_hypercube and sobol designs");
+  }
+  if (root.Has("seed")) {
+    if (s.design != "latin_hypercube") root["seed"].FailWith("a seed is for the latin_hypercube design");
+    s.seed = static_cast<uint64_t>(root["seed"].Integer(0));
+  }
+
+  const Node vary = root["vary"];
+  const std::vector<Node> entries = vary.Elements();
+  if (entries.empty()) vary.Fail("at least one field to vary");
+  double cases = 1;
+  for (const Node& e : entries) {
+    e.CheckKnownFields({"path", "values", "range", "count", "log", "integer"});
+    Variation v;
+    const Pointer p = ReadPointer(e["path"]);
+    CheckSettable(s.base, p, e["path"]);
+    v.path = p.to_string();
+    for (const Variation& other : s.vary)
+      if (other.path == v.path) e["path"].FailWith("varied twice");
+    v.log = e.BoolOr("log", false);
+    v.integer = e.BoolOr("integer", false);
+    if (e.Has("values") == e.Has("range")) e.FailWith("expected either \"values\" or \"range\"");
+    if (e.Has("values")) {
+      for (const Node& x : e["values"].Elements()) {
+        if (v.integer && !x.json().is_number_integer()) x.Fail("a whole number (\"integer\": true)");
+        v.values.push_back(x.json());
+      }
+      if (v.values.empty()) e["values"].Fail("at least one value");
+      if (e.Has("count")) e["count"].FailWith("a count is for a range");
+      if (v.log) e["log"].FailWith("log spacing is for a range");
+    } else {
+      std::tie(v.lo, v.hi) = e["range"].Range();
+      if (v.log && !(v.lo > 0)) e["range"].Fail("a range of positive numbers (\"log\": true)");
+      v.has_range = true;
+      if (sampled) {
+        if (e.Has("count"))
+          e["count"].FailWith("a count is for the factorial and zip designs; the " + s.design +
+                              " design takes \"samples\"");
+      } else {
+        const int count = e["count"].Integer(1);
+        if (count > max_cases) e["count"].FailWith("more than the cap of " + Fmt(max_cases, "%.3g") + " cases");
+        for (int k = 0; k < count; ++k) {
+          const double u = count == 1 ? 0.0 : static_cast<double>(k) / (count - 1);
+          const double x = v.log ? std::exp(std::log(v.lo) + u * (std::log(v.hi) - std::log(v.lo)))
+                                 : v.lo + u * (v.hi - v.lo);
+          v.values.push_back(Level(k == count - 1 && count > 1 ? v.hi : x, v));
+        }
+      }
+    }
+    if (s.design == "factorial") cases *= static_cast<double>(v.values.size());
+    if (s.design == "zip") {
+      if (!s.vary.empty() && v.values.size() != s.vary.front().values.size())
+        e.FailWith("the zip design needs as many levels in every field (" +
+                   std::to_string(s.vary.front().values.size()) + " in the first, " +
+                   std::to_string(v.values.size()) + " here)");
+      cases = static_cast<double>(v.values.size());
+    }
+    s.vary.push_back(std::move(v));
+  }
+  if (s.design == "factorial" && cases > max_cases)
+    vary.FailWith("the factorial design has " + Fmt(cases, "%.3g") + " cases, more than the cap of " +
+                  Fmt(max_cases, "%.3g") + "; raise it with --max-work-factor");
+  if (s.design == "sobol" && s.vary.size() > 3667)  // Boost's table of direction numbers
+    vary.FailWith("the sobol design takes at most 3667 fields");
+
+  const Node outputs = root["outputs"];
+  auto add_output = [&](const Node& n) {
+    const std::string path = ReadPointer(n).to_string();
+    for (size_t i = 0; i < s.outputs.size(); ++i)
+      if (s.outputs[i].path == path) return i;
+    s.outputs.push_back({path});
+    return s.outputs.size() - 1;
+  };
+  for (const Node& o : outputs.Elements()) add_output(o);
+  if (s.outputs.empty()) outputs.Fail("at least one JSON pointer into result.json");
+  if (root.Has("pareto")) {
+    const Node pareto = root["pareto"];
+    pareto.CheckKnownFields({"minimize", "maximize"});
+    std::set<size_t> seen;
+    auto objectives = [&](const char* key, std::vector<size_t>& into) {
+      if (!pareto.Has(key)) return;
+      for (const Node& o : pareto[key].Elements()) {
+        const size_t i = add_output(o);  // an objective is an output column too
+        if (!seen.insert(i).second) o.FailWith("this output is already an objective");
+        into.push_back(i);
+      }
+    };
+    objectives("minimize", s.minimize);
+    objectives("maximize", s.maximize);
+    if (s.minimize.empty() && s.maximize.empty())
+      pareto.Fail("at least one output to minimize or maximize");
+  }
+  s.case_outputs = root.BoolOr("case_outputs", false);
+  return s;
+}
+
+std::vector<std::vector<json>> Cases(const Sweep& s) {
+  std::vector<std::vector<json>> cases;
+  const size_t dims = s.vary.size();
+  if (s.design == "factorial") {
+    // The first field varies slowest: the cases read like nested loops in the order written.
+    std::vector<size_t> at(dims, 0);
+    while (true) {
+      std::vector<json> c;
+      for (size_t d = 0; d < dims; ++d) c.push_back(s.vary[d].values[at[d]]);
+      cases.push_back(std::move(c));
+      size_t d = dims;
+      while (d > 0) {
+        --d;
+        if (++at[d] < s.vary[d].values.size()) break;
+        at[d] = 0;
+        if (d == 0) return cases;
+      }
+      if (dims == 0) return cases;
+    }
+  }
+  if (s.design == "zip") {
+    for (size_t i = 0; i < s.vary.front().values.size(); ++i) {
+      std::vector<json> c;
+      for (const Variation& v : s.vary) c.push_back(v.values[i]);
+      cases.push_back(std::move(c));
+    }
+    return cases;
+  }
+  const size_t n = static_cast<size_t>(s.samples);
+  std::vector<std::vector<double>> u(n, std::vector<double>(dims));
+  if (s.design == "latin_hypercube") {
+    // One sample in each of n equal strata of every field; the strata are paired at random
+    // (a permutation per field) and each sample is placed at random within its stratum.
+    std::mt19937_64 rng(s.seed);
+    for (size_t d = 0; d < dims; ++d) {
+      std::vector<size_t> strata(n);
+      for (size_t i = 0; i < n; ++i) strata[i] = i;
+      for (size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[rng() % i]);  // Fisher-Yates
+      for (size_t i = 0; i < n; ++i)
+        u[i][d] = (static_cast<double>(strata[i]) + Uniform(rng)) / static_cast<double>(n);
+    }
+  } else {
+    // Boost.Random's Sobol sequence (its own table of direction numbers); the first point (the
+    // origin, a corner of the box) is skipped.
+    boost::random::sobol gen(dims);
+    gen.discard(dims);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t d = 0; d < dims; ++d) u[i][d] = std::ldexp(static_cast<double>(gen()), -64);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    std::vector<json> c;
+    for (size_t d = 0; d < dims; ++d) c.push_back(AtFraction(s.vary[d], std::min(u[i][d], 1.0 - 0x1.0p-53)));
+    cases.push_back(std::move(c));
+  }
+  return cases;
+}
+
+json CaseStudy(const Sweep& s, const std::vector<json>& inputs) {
+  json study = s.base;
+  for (size_t d = 0; d < s.vary.size(); ++d) study[Pointer(s.vary[d].path)] = inputs[d];
+  return study;
+}
+
+json CaseRecord::ToJson() const {
+  return {{"case", index}, {"status", status}, {"message", message}, {"outputs", outputs}};
+}
+
+CaseRecord CaseRecord::FromJson(const json& j) {
+  CaseRecord r;
+  r.index = j.at("case").get<size_t>();
+  r.status = j.at("status").get<std::string>();
+  r.message = j.at("message").get<std::string>();
+  r.outputs = j.at("outputs").get<std::vector<json>>();
+  return r;
+}
+
+CaseRecord RunCase(const Sweep& s, size_t index, const std::vector<json>& inputs,
+                   const RunContext& ctx, Outputs* files) {
+  CaseRecord r;
+  r.index = index;
+  r.outputs.assign(s.outputs.size(), json());
+  RunContext c = ctx;
+  c.study_file = s.study_file;
+  c.quiet = true;  // the sweep shows its own progress; the cases' lines would interleave
+  try {
+    Outputs out = RunStudy(CaseStudy(s, inputs), c);
+    r.status = out.incomplete().empty() ? "ok" : "incomplete";
+    r.message = out.incomplete();
+    const auto it = out.files().find("result.json");
+    const json result = it == out.files().end() ? json() : json::parse(it->second);
+    for (size_t k = 0; k < s.outputs.size(); ++k) {
+      const Pointer p(s.outputs[k].path);
+      if (!result.contains(p)) continue;
+      const json& v = result.at(p);
+      r.outputs[k] = v.is_structured() ? json(v.dump()) : v;
+    }
+    if (files) *files = std::move(out);
+  } catch (const StudyError& e) {
+    r.status = "error";
+    r.message = e.what();
+  } catch (const std::bad_alloc&) {
+    r.status = "failed";
+    r.message = "out of memory";
+  } catch (const std::exception& e) {
+    r.status = "failed";
+    r.message = std::string("internal error (a camopt defect; please report it): ") + e.what();
+  }
+  return r;
+}
+
+std::string CasesCsv(const Sweep& s, const std::vector<std::vector<json>>& cases,
+                     const std::vector<CaseRecord>& records) {
+  std::ostringstream os;
+  os << "case";
+  for (const Variation& v : s.vary) os << "," << CsvText(v.path);
+  os << ",status";
+  for (const OutputColumn& o : s.outputs) os << "," << CsvText(o.path);
+  os << ",message\n";
+  std::vector<const CaseRecord*> sorted;
+  for (const CaseRecord& r : records) sorted.push_back(&r);
+  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->index < b->index; });
+  for (const CaseRecord* r : sorted) {
+    os << r->index;
+    for (const json& x : cases[r->index]) os << "," << CsvCell(x);
+    os << "," << r->status;
+    for (const json& x : r->outputs) os << "," << CsvCell(x);
+    os << "," << CsvText(r->message) << "\n";
+  }
+  return os.str();
+}
+
+namespace {
+
+// The objective values of a record, each oriented for minimisation; false when one is not a number.
+bool Objectives(const Sweep& s, const CaseRecord& r, std::vector<double>& f) {
+  f.clear();
+  for (size_t i : s.minimize) {
+    if (!r.outputs[i].is_number()) return false;
+    f.push_back(r.outputs[i].get<double>());
+  }
+  for (size_t i : s.maximize) {
+    if (!r.outputs[i].is_number()) return false;
+    f.push_back(-r.outputs[i].get<double>());
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<size_t> ParetoFront(const Sweep& s, const std::vector<CaseRecord>& records) {
+  // Candidates in lexicographic order of their objectives: whatever dominates a point comes
+  // before it, and (dominance being transitive) so does some point of the front that dominates
+  // it, so each candidate is compared with the front found so far only.
+  std::vector<std::pair<std::vector<double>, size_t>> candidates;
+  std::vector<double> f;
+  for (size_t i = 0; i < records.size(); ++i)
+    if (records[i].status == "ok" && Objectives(s, records[i], f)) candidates.push_back({f, i});
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<size_t> front;
+  std::vector<const std::vector<double>*> front_values;
+  for (const auto& [values, i] : candidates) {
+    bool dominated = false;
+    for (const auto* g : front_values) {
+      bool no_worse = true, better = false;
+      for (size_t k = 0; k < values.size(); ++k) {
+        no_worse = no_worse && (*g)[k] <= values[k];
+        better = better || (*g)[k] < values[k];
+      }
+      if (no_worse && better) {
+        dominated = true;
+        break;
+      }
+    }
+    if (!dominated) {
+      front.push_back(i);
+      front_values.push_back(&values);
+    }
+  }
+  std::sort(front.begin(), front.end());
+  return front;
+}
+
+namespace {
+
+// The Pareto plot over the first two objectives (or over the case number when there is one):
+// every ok case as a dot, the front's cases as larger dots of another colour, joined in order of
+// the first objective when there are exactly two objectives (with more, the front seen in two of
+// them is no line).
+std::string ParetoSvg(const Sweep& s, const std::vector<CaseRecord>& records,
+                      const std::vector<size_t>& front) {
+  std::vector<size_t> objectives = s.minimize;
+  objectives.insert(objectives.end(), s.maximize.begin(), s.maximize.end());
+  const bool one = objectives.size() == 1;
+  auto x_of = [&](const CaseRecord& r) {
+    return one ? static_cast<double>(r.index) : r.outputs[objectives[0]].get<double>();
+  };
+  auto y_of = [&](const CaseRecord& r) { return r.outputs[objectives[one ? 0 : 1]].get<double>(); };
+  Series all{"ok cases", {}, {}}, dots{"Pareto front", {}, {}};
+  all.markers = dots.markers = true;
+  std::vector<double> f;
+  for (const CaseRecord& r : records)
+    if (r.status == "ok" && Objectives(s, r, f)) {
+      all.x.push_back(x_of(r));
+      all.y.push_back(y_of(r));
+    }
+  std::vector<std::pair<double, double>> points;
+  for (size_t i : front) points.push_back({x_of(records[i]), y_of(records[i])});
+  std::sort(points.begin(), points.end());
+  for (const auto& [x, y] : points) {
+    dots.x.push_back(x);
+    dots.y.push_back(y);
+  }
+  std::vector<Series> series = {all, dots};
+  if (objectives.size() == 2) series.push_back({"front in order", dots.x, dots.y});
+  auto label = [&](size_t k) {
+    const bool max = std::find(s.maximize.begin(), s.maximize.end(), k) != s.maximize.end();
+    return s.outputs[k].path + (max ? " (maximize)" : " (minimize)");
+  };
+  PlotOptions o;
+  o.title = s.name + ": Pareto front, " + std::to_string(front.size()) + " of " +
+            std::to_string(all.x.size()) + " ok cases" +
+            (objectives.size() > 2 ? " (" + std::to_string(objectives.size()) + " objectives, two shown)" : "");
+  o.x_label = one ? "case" : label(objectives[0]);
+  o.y_label = label(objectives[one ? 0 : 1]);
+  return SvgLinePlot(series, o);
+}
+
+// ---- The output folder, the partial folder and its checkpoints ------------------------------
+
+fs::path NormalOut(const std::string& dir) {
+  fs::path out = fs::path(dir).lexically_normal();
+  if (out.has_parent_path() && !out.has_filename()) out = out.parent_path();  // "out/"
+  if (out.empty() || out == "." || out == ".." || out == "/" || out.filename() == "..")
+    throw StudyError("--out " + dir + ": expected a folder name for the results, found " +
+                     (dir.empty() ? std::string("nothing") : dir));
+  return out;
+}
+
+// An existing --out is replaced only when it is empty or holds a previous sweep (cases.csv, and
+// no sub-folder other than cases/): camopt never deletes the user's other folders.
+void CheckReplaceable(const fs::path& out, const std::string& dir) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(out, ec))) return;
+  if (!fs::is_directory(fs::symlink_status(out, ec)))
+    throw StudyError("--out " + dir + ": exists and is not a folder");
+  bool empty = true, sweep = false, other = false;
+  for (const auto& e : fs::directory_iterator(out, ec)) {
+    empty = false;
+    const std::string name = e.path().filename().string();
+    if (name == "cases.csv") sweep = true;
+    if (e.is_directory(ec) && name != "cases") other = true;
+  }
+  if (ec) throw StudyError("--out " + dir + ": cannot read the folder: " + ec.message());
+  if (!empty && (!sweep || other))
+    throw StudyError("--out " + dir + ": the folder holds files that are not a camopt sweep " +
+                     "(no cases.csv, or other sub-folders); choose a new or empty folder");
+}
+
+std::string CheckpointName(int rank) { return "checkpoint-" + std::to_string(rank) + ".jsonl"; }
+
+// The checkpoint of one rank: a header line with the sweep's fingerprint, then one line per
+// finished case, each written with one write() as soon as the case ends (an interrupt loses
+// only the cases under way; a line cut short is ignored on resume).
+class Checkpoint {
+ public:
+  Checkpoint(const fs::path& file, const std::string& header) {
+    fd_ = open(file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+      throw StudyError("--out: cannot create the checkpoint " + file.string() + ": " + std::strerror(errno));
+    if (lseek(fd_, 0, SEEK_END) == 0) Write(header + "\n");
+    else Write("\n");  // ends a line cut short by an interrupt (an empty line is skipped)
+  }
+  ~Checkpoint() {
+    if (fd_ >= 0) close(fd_);
+  }
+  void Append(const CaseRecord& r) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Write(r.ToJson().dump() + "\n");
+  }
+
+ private:
+  void Write(const std::string& line) {
+    size_t done = 0;
+    while (done < line.size()) {
+      const ssize_t n = write(fd_, line.data() + done, line.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw StudyError(std::string("cannot write the checkpoint: ") + std::strerror(errno));
+      done += static_cast<size_t>(n);
+    }
+  }
+  int fd_ = -1;
+  std::mutex mutex_;
+};
+
+// The finished cases of every checkpoint in the partial folder.
+std::map<size_t, CaseRecord> ReadCheckpoints(const fs::path& partial, const std::string& header,
+                                             size_t n_cases, size_t n_outputs) {
+  std::map<size_t, CaseRecord> done;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(partial, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("checkpoint-", 0) != 0) continue;
+    std::istringstream in(ReadFileCapped(e.path().string(), size_t{1} << 34, "checkpoint"));
+    std::string line;
+    if (!std::getline(in, line) || line != header)
+      throw StudyError("--resume: " + e.path().string() +
+                       " is the checkpoint of another sweep (the sweep file or its base study "
+                       "changed); run without --resume to start again");
+    while (std::getline(in, line)) {
+      if (line.empty()) continue;
+      try {
+        CaseRecord r = CaseRecord::FromJson(json::parse(line));
+        if (r.index < n_cases && r.outputs.size() == n_outputs) done.emplace(r.index, std::move(r));
+      } catch (const std::exception&) {
+        // a line cut short by an interrupt: that case runs again
+      }
+    }
+  }
+  return done;
+}
+
+std::string CaseFolderName(size_t index, size_t n_cases) {
+  const int width = std::max<int>(4, static_cast<int>(std::to_string(n_cases - 1).size()));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%0*zu", width, index);
+  return buf;
+}
+
+// Runs `pending` cases on `jobs` threads; each finished record goes to the checkpoint (and its
+// files to cases/NNNN) before it counts as done.
+std::vector<CaseRecord> RunPool(const Sweep& s, const std::vector<std::vector<json>>& cases,
+                                const std::vector<size_t>& pending, int jobs, const RunContext& ctx,
+                                Checkpoint& checkpoint, const fs::path& partial,
+                                const std::string& label, bool quiet) {
+  std::vector<CaseRecord> records(pending.size());
+  std::atomic<size_t> next{0};
+  std::mutex m;
+  std::condition_variable cv;
+  size_t finished = 0, not_ok = 0;
+  std::exception_ptr fatal;
+  auto worker = [&] {
+    while (true) {
+      const size_t k = next.fetch_add(1);
+      if (k >= pending.size()) return;
+      const size_t i = pending[k];
+      try {
+        Outputs files;
+        CaseRecord r = RunCase(s, i, cases[i], ctx, s.case_outputs ? &files : nullptr);
+        if (s.case_outputs && !files.files().empty()) {
+          OutputFolder folder((partial / "cases" / CaseFolderName(i, cases.size())).string());
+          folder.Commit(files);
+        }
+        checkpoint.Append(r);
+        const std::lock_guard<std::mutex> lock(m);
+        not_ok += r.status != "ok";
+        records[k] = std::move(r);
+        ++finished;
+      } catch (...) {  // the checkpoint or a case folder cannot be written: stop the sweep
+        const std::lock_guard<std::mutex> lock(m);
+        if (!fatal) fatal = std::current_exception();
+        next = pending.size();
+      }
+      cv.notify_one();
+    }
+  };
+  std::vector<std::thread> threads;
+  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(pending.size())));
+  for (int t = 0; t < n && !pending.empty(); ++t) threads.emplace_back(worker);
+  {
+    Progress progress(label, quiet);
+    std::unique_lock<std::mutex> lock(m);
+    while (finished < pending.size() && !fatal) {
+      cv.wait_for(lock, std::chrono::milliseconds(200));
+      const size_t f = finished, bad = not_ok;
+      lock.unlock();
+      progress.Update(double(f) / double(pending.size()),
+                      std::to_string(f) + "/" + std::to_string(pending.size()) + " cases" +
+                          (bad ? ", " + std::to_string(bad) + " not ok" : ""));
+      lock.lock();
+    }
+  }
+  for (auto& t : threads) t.join();
+  if (fatal) std::rethrow_exception(fatal);
+  return records;
+}
+
+int DefaultJobs(int local_ranks) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::max(1, static_cast<int>(cores) / std::max(1, local_ranks));
+}
+
+// The merged folder: written into the partial folder, which then replaces --out in one rename.
+void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
+                 std::vector<CaseRecord> records, const fs::path& partial, const fs::path& out,
+                 size_t& not_ok_count, std::string& not_ok_text) {
+  std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  Outputs outputs;
+  outputs.Add("cases.csv", CasesCsv(s, cases, records));
+  json summary = {{"sweep", s.name}, {"design", s.design}, {"cases", cases.size()}};
+  std::map<std::string, size_t> counts = {{"ok", 0}, {"incomplete", 0}, {"error", 0}, {"failed", 0}};
+  json not_ok = json::array();
+  for (const CaseRecord& r : records) {
+    ++counts[r.status];
+    if (r.status == "ok") continue;
+    not_ok.push_back({{"case", r.index}, {"status", r.status}, {"message", r.message}});
+    if (not_ok_count < 10)
+      not_ok_text += "  case " + std::to_string(r.index) + " (" + r.status + "): " + r.message + "\n";
+    ++not_ok_count;
+  }
+  summary["status_counts"] = counts;
+  summary["cases_not_ok"] = not_ok;
+  json vary = json::array(), outs = json::array();
+  for (const Variation& v : s.vary) vary.push_back(v.path);
+  for (const OutputColumn& o : s.outputs) outs.push_back(o.path);
+  summary["vary"] = vary;
+  summary["outputs"] = outs;
+  if (!s.minimize.empty() || !s.maximize.empty()) {
+    const std::vector<size_t> front = ParetoFront(s, records);
+    std::vector<CaseRecord> front_records;
+    json front_cases = json::array();
+    for (size_t i : front) {
+      front_records.push_back(records[i]);
+      front_cases.push_back(records[i].index);
+    }
+    outputs.Add("pareto.csv", CasesCsv(s, cases, front_records));
+    outputs.Add("pareto.svg", ParetoSvg(s, records, front));
+    summary["pareto_front_cases"] = front_cases;
+  }
+  outputs.AddJson("result.json", summary);
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(partial, ec))
+    if (e.path().filename().string().rfind("checkpoint-", 0) == 0) fs::remove(e.path(), ec);
+  WriteFilesInto(partial.string(), outputs);
+  MoveFolderIn(partial.string(), out.string());
+}
+
+int Run(const Options& o, World& world) {
+  const double factor = std::min(o.max_work_factor, 1e3);
+  auto& limits = CurrentInputLimits();
+  limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) * factor);
+  Sweep s;
+  std::vector<std::vector<json>> cases;
+  fs::path out, partial;
+  try {
+    s = Parse(o.file, 1e6 * factor);
+    if (o.case_outputs) s.case_outputs = true;
+    cases = Cases(s);
+    if (o.dry_run) {
+      std::cout << cases.size() << " cases\n";
+      return 0;
+    }
+    out = NormalOut(o.out);
+    partial = out.string() + ".camopt-sweep";
+    CheckReplaceable(out, o.out);
+  } catch (const StudyError& e) {
+    std::cerr << "camopt: error: " << e.what() << "\n";
+    return 2;
+  }
+
+  std::string why;
+  if (!world.Start(why)) {
+    std::cerr << "camopt: error: " << why << "\n";
+    return 2;
+  }
+  json header_json = {{"base", s.base}, {"cases", cases}, {"outputs", json::array()},
+                      {"case_outputs", s.case_outputs}};
+  for (const OutputColumn& c : s.outputs) header_json["outputs"].push_back(c.path);
+  const std::string header = json({{"sweep_fingerprint", Fingerprint(header_json.dump())}}).dump();
+  const std::string label =
+      "sweep " + s.name + (world.size() > 1 ? " (rank " + std::to_string(world.rank()) + " of " +
+                                                  std::to_string(world.size()) + ")"
+                                            : "");
+
+  // Rank 0 prepares the partial folder and reads what an earlier run finished.
+  std::map<size_t, CaseRecord> done;
+  int status = 0;
+  std::string message;
+  if (world.rank() == 0) {
+    try {
+      std::error_code ec;
+      const bool had_partial = fs::exists(partial, ec);
+      if (had_partial && !o.resume) {
+        if (!o.quiet)
+          std::cerr << "camopt: " << partial.string()
+                    << " holds an interrupted sweep; starting again (--resume continues it)\n";
+        fs::remove_all(partial, ec);
+      }
+      if (o.resume && !had_partial && !o.quiet)
+        std::cerr << "camopt: nothing to resume in " << partial.string() << "; starting\n";
+      fs::create_directories(partial / (s.case_outputs ? "cases" : ""), ec);
+      if (ec) throw StudyError("--out " + o.out + ": cannot create " + partial.string() + ": " + ec.message());
+      if (o.resume) {
+        done = ReadCheckpoints(partial, header, cases.size(), s.outputs.size());
+        // Case folders being written when the sweep was interrupted (OutputFolder's temporary
+        // siblings): their cases were not checkpointed and run again.
+        for (const auto& e : fs::directory_iterator(partial / "cases", ec))
+          if (e.path().filename().string().find(".camopt-tmp-") != std::string::npos)
+            fs::remove_all(e.path(), ec);
+      }
+      if (o.resume && !done.empty() && !o.quiet)
+        std::cerr << "camopt: resuming: " << done.size() << " of " << cases.size()
+                  << " cases already done\n";
+    } catch (const StudyError& e) {
+      status = 2;
+      message = e.what();
+    }
+  }
+  status = world.BroadcastInt(status);
+  if (status != 0) {
+    if (world.rank() == 0) std::cerr << "camopt: error: " << message << "\n";
+    world.Finish();
+    return status;
+  }
+  std::vector<uint64_t> done_list;
+  for (const auto& [i, r] : done) done_list.push_back(i);
+  done_list = world.BroadcastIndices(done_list);
+
+  // This rank's cases: round-robin by case number, skipping the finished ones.
+  std::vector<size_t> pending;
+  {
+    size_t d = 0;
+    std::sort(done_list.begin(), done_list.end());
+    for (size_t i = 0; i < cases.size(); ++i) {
+      while (d < done_list.size() && done_list[d] < i) ++d;
+      if (d < done_list.size() && done_list[d] == i) continue;
+      if (static_cast<int>(i % static_cast<size_t>(world.size())) == world.rank()) pending.push_back(i);
+    }
+  }
+
+  RunContext ctx;
+  ctx.quiet = true;
+  ctx.max_work_factor = o.max_work_factor;
+  const int jobs = o.jobs > 0 ? o.jobs : DefaultJobs(world.local_size());
+  std::vector<CaseRecord> mine;
+  try {
+    std::error_code ec;
+    fs::create_directories(partial / (s.case_outputs ? "cases" : ""), ec);
+    Checkpoint checkpoint(partial / CheckpointName(world.rank()), header);
+    const auto t0 = std::chrono::steady_clock::now();
+    mine = RunPool(s, cases, pending, jobs, ctx, checkpoint, partial, label, o.quiet);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!o.quiet && world.rank() == 0)
+      std::cerr << "camopt: " << label << ": " << pending.size() << " cases in " << Fmt(seconds, "%.3g")
+                << " s on " << jobs << " thread" << (jobs == 1 ? "" : "s") << "\n";
+  } catch (const StudyError& e) {
+    std::cerr << "camopt: error: " << e.what() << "\n";
+    world.Abort(2);
+    return 2;
+  }
+
+  // Gather to rank 0 (in rank order), merge with the checkpointed cases, write.
+  std::string text;
+  for (const CaseRecord& r : mine) text += r.ToJson().dump() + "\n";
+  const std::string all = world.GatherToRoot(text);
+  int code = 0;
+  if (world.rank() == 0) {
+    // Keyed by case number: every case exactly once, whatever ran where.
+    std::istringstream gathered(all);
+    std::string line;
+    while (std::getline(gathered, line))
+      if (!line.empty()) {
+        CaseRecord r = CaseRecord::FromJson(json::parse(line));
+        done.emplace(r.index, std::move(r));
+      }
+    std::vector<CaseRecord> records;
+    for (auto& [i, r] : done) records.push_back(std::move(r));
+    size_t not_ok = 0;
+    std::string not_ok_text;
+    try {
+      if (records.size() != cases.size())
+        throw std::runtime_error("the ranks returned " + std::to_string(records.size()) + " of " +
+                                 std::to_string(cases.size()) + " cases");
+      WriteMerged(s, cases, std::move(records), partial, out, not_ok, not_ok_text);
+      if (not_ok > 0) {
+        std::cerr << "camopt: sweep finished; " << not_ok << " of " << cases.size()
+                  << " cases are not ok (see cases.csv):\n"
+                  << not_ok_text << (not_ok > 10 ? "  ...\n" : "");
+        code = 3;
+      }
+      if (!o.quiet) std::cerr << "camopt: results written to " << out.string() << "\n";
+    } catch (const StudyError& e) {
+      std::cerr << "camopt: error: " << e.what() << "\n";
+      code = 2;
+    }
+  }
+  code = world.BroadcastInt(code);
+  world.Finish();
+  return code;
+}
+
+}  // namespace
+
+int RunCommand(const Options& options) {
+  World world;
+  int code = 1;
+  try {
+    return Run(options, world);
+  } catch (const StudyError& e) {
+    std::cerr << "camopt: error: " << e.what() << "\n";
+    code = 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "camopt: error: " << options.file << ": out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << "camopt: internal error while running the sweep " << options.file << ": " << e.what()
+              << " (a camopt defect; please report it with the sweep file)\n";
+  }
+  if (world.size() > 1) world.Abort(code);  // the other ranks may be waiting for this one
+  return code;
+}
+
+}  // namespace camopt::studies::sweep

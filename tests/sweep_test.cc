@@ -1,0 +1,426 @@
+// Sweeps (issue 19, docs/studies.md "Sweeps"): the designs give the cases they promise, the
+// Pareto front is the set of non-dominated cases, and through the CLI the merged table is the
+// same bytes with 1 or 2 threads and with 2 MPI ranks, failing cases are reported without
+// stopping the sweep, and --resume after SIGINT ends with the table of an uninterrupted run.
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/sweep.h"
+#include "tests/test_util.h"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace sw = camopt::studies::sweep;
+using camopt::testing::ReadFile;
+using camopt::testing::RunCamopt;
+using camopt::testing::SourcePath;
+using camopt::testing::TempDir;
+using camopt::testing::WriteFile;
+using nlohmann::json;
+
+// A fast cycloid LTCA sweep (a coarse grid: a few hundredths of a second per case) over the
+// crowning coefficient and the torque; `torques` may hold a bad torque (a failing case).
+json CycloidSweep(const json& torques, const json& coefficients = {0.002, 0.005, 0.01}) {
+  json base = camopt::testing::Example("cycloid_ltca_nnm_lcm.json");
+  base["analysis"] = {{"crank_angle_steps", 4}, {"grid", {10, 10}}};
+  return {{"sweep", "test"},
+          {"base", base},
+          {"vary", {{{"path", "/crowning/coefficient_mm"}, {"values", coefficients}},
+                    {{"path", "/load/torque_Nm"}, {"values", torques}}}},
+          {"outputs", {"/max_contact_stress_MPa", "/lte_peak_to_peak_arcsec"}},
+          {"pareto", {{"minimize", {"/max_contact_stress_MPa", "/lte_peak_to_peak_arcsec"}}}}};
+}
+
+sw::Sweep ParseText(const fs::path& dir, const json& sweep) {
+  WriteFile(dir / "sweep.json", sweep.dump(2));
+  return sw::Parse((dir / "sweep.json").string());
+}
+
+// ---- Designs ----------------------------------------------------------------------------------
+
+TEST(SweepDesign, FactorialListsEveryCombinationFirstFieldSlowest) {
+  const auto dir = TempDir("sweep-factorial");
+  json s = CycloidSweep({100, 200});
+  s["vary"][1] = {{"path", "/load/torque_Nm"}, {"range", {20, 120}}, {"count", 3}};
+  const auto cases = sw::Cases(ParseText(dir, s));
+  ASSERT_EQ(cases.size(), 9u);
+  EXPECT_EQ(cases[0], (std::vector<json>{0.002, 20.0}));
+  EXPECT_EQ(cases[1], (std::vector<json>{0.002, 70.0}));
+  EXPECT_EQ(cases[2], (std::vector<json>{0.002, 120.0}));
+  EXPECT_EQ(cases[8], (std::vector<json>{0.01, 120.0}));
+}
+
+TEST(SweepDesign, ZipLogAndIntegerLevels) {
+  const auto dir = TempDir("sweep-zip");
+  json s = CycloidSweep({100, 200, 400});
+  s["design"] = "zip";
+  s["vary"][0] = {{"path", "/crowning/coefficient_mm"}, {"range", {0.001, 0.1}}, {"count", 3}, {"log", true}};
+  s["vary"][1] = {{"path", "/load/torque_Nm"}, {"range", {10, 20}}, {"count", 3}, {"integer", true}};
+  const auto cases = sw::Cases(ParseText(dir, s));
+  ASSERT_EQ(cases.size(), 3u);
+  EXPECT_NEAR(cases[1][0].get<double>(), 0.01, 1e-15);  // the geometric mean of 0.001 and 0.1
+  EXPECT_EQ(cases[1][1], json(15));
+  EXPECT_TRUE(cases[1][1].is_number_integer());
+}
+
+TEST(SweepDesign, LatinHypercubeHasOneSampleInEachStratumOfEveryField) {
+  const auto dir = TempDir("sweep-lhs");
+  json s = CycloidSweep({100});
+  s["design"] = "latin_hypercube";
+  s["samples"] = 20;
+  s["seed"] = 7;
+  s["vary"][0] = {{"path", "/crowning/coefficient_mm"}, {"range", {0.0, 0.02}}};
+  s["vary"][1] = {{"path", "/load/torque_Nm"}, {"range", {100, 600}}};
+  const auto cases = sw::Cases(ParseText(dir, s));
+  ASSERT_EQ(cases.size(), 20u);
+  const double lo[2] = {0.0, 100}, hi[2] = {0.02, 600};
+  for (int d = 0; d < 2; ++d) {
+    std::set<int> strata;
+    for (const auto& c : cases) strata.insert(int((c[d].get<double>() - lo[d]) / (hi[d] - lo[d]) * 20));
+    EXPECT_EQ(strata.size(), 20u) << "field " << d;
+  }
+  // The same seed gives the same samples; another seed others.
+  EXPECT_EQ(sw::Cases(ParseText(dir, s)), cases);
+  s["seed"] = 8;
+  EXPECT_NE(sw::Cases(ParseText(dir, s)), cases);
+}
+
+TEST(SweepDesign, SobolPointsFillTheBoxAndBalanceTheHalves) {
+  const auto dir = TempDir("sweep-sobol");
+  json s = CycloidSweep({100});
+  s["design"] = "sobol";
+  s["samples"] = 64;
+  s["vary"][0] = {{"path", "/crowning/coefficient_mm"}, {"range", {0.0, 1.0}}};
+  s["vary"][1] = {{"path", "/load/torque_Nm"}, {"values", {100, 200, 300, 400}}};
+  const auto cases = sw::Cases(ParseText(dir, s));
+  ASSERT_EQ(cases.size(), 64u);
+  // The first 64 points of a Sobol sequence put exactly 16 in each quarter of each coordinate;
+  // skipping the first point (the origin) and taking the 65th instead moves at most one.
+  int below_half = 0;
+  std::map<int, int> per_value;
+  std::set<double> distinct;
+  for (const auto& c : cases) {
+    const double x = c[0].get<double>();
+    EXPECT_GE(x, 0.0);
+    EXPECT_LT(x, 1.0);
+    below_half += x < 0.5;
+    distinct.insert(x);
+    ++per_value[c[1].get<int>()];
+  }
+  EXPECT_EQ(distinct.size(), 64u);
+  EXPECT_NEAR(below_half, 32, 1);
+  for (const auto& [v, n] : per_value) EXPECT_NEAR(n, 16, 1) << v;
+}
+
+// ---- Pareto ------------------------------------------------------------------------------------
+
+TEST(SweepPareto, FrontIsTheNonDominatedOkCases) {
+  const auto dir = TempDir("sweep-pareto");
+  json s = CycloidSweep({100});
+  s["pareto"] = {{"minimize", {"/max_contact_stress_MPa"}}, {"maximize", {"/lte_peak_to_peak_arcsec"}}};
+  const sw::Sweep sweep = ParseText(dir, s);
+  // (minimize a, maximize b): worked out by hand.
+  const std::vector<std::pair<double, double>> points = {
+      {1, 1}, {2, 3}, {3, 3}, {2, 2}, {4, 5}, {5, 4}, {1, 1}, {0.5, 0.5}};
+  std::vector<sw::CaseRecord> records;
+  for (size_t i = 0; i < points.size(); ++i) {
+    sw::CaseRecord r;
+    r.index = i;
+    r.status = "ok";
+    r.outputs = {points[i].first, points[i].second};
+    records.push_back(r);
+  }
+  sw::CaseRecord failed;
+  failed.index = 8;
+  failed.status = "error";
+  failed.outputs = {0.0, 100.0};  // would dominate everything, but the case is not ok
+  records.push_back(failed);
+  sw::CaseRecord missing;
+  missing.index = 9;
+  missing.status = "ok";
+  missing.outputs = {0.1, json()};  // no value: takes no part
+  records.push_back(missing);
+  // Non-dominated: (1,1) twice (equal points do not dominate each other), (2,3), (4,5), (0.5,0.5).
+  EXPECT_EQ(sw::ParetoFront(sweep, records), (std::vector<size_t>{0, 1, 4, 6, 7}));
+}
+
+// ---- Bad sweep files -----------------------------------------------------------------------------
+
+TEST(SweepInput, BadSweepFilesExit2WithThePath) {
+  const auto dir = TempDir("sweep-bad");
+  struct Bad {
+    std::string tag, path, words;
+    json sweep;
+  };
+  std::vector<Bad> bad;
+  json s = CycloidSweep({100});
+  s["vary"][0]["path"] = "/crowing/coefficient_mm";
+  bad.push_back({"no-parent", "/vary/0/path", "has no /crowing", s});
+  s = CycloidSweep({100});
+  s["vary"][1].erase("values");
+  bad.push_back({"no-levels", "/vary/1", "either \"values\" or \"range\"", s});
+  s = CycloidSweep({100});
+  s["design"] = "random";
+  bad.push_back({"design", "/design", "expected one of factorial", s});
+  s = CycloidSweep({100});
+  s["outputs"] = {"max_contact_stress_MPa"};
+  bad.push_back({"pointer", "/outputs/0", "expected a JSON pointer", s});
+  s = CycloidSweep({100});
+  s["base"] = "missing.json";
+  bad.push_back({"base", "/base", "missing.json", s});
+  s = CycloidSweep({100});
+  s["vary"][1] = {{"path", "/load/torque_Nm"}, {"range", {1, 2}}, {"count", 2000000}};
+  bad.push_back({"cap", "/vary/1/count", "cap", s});
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.tag);
+    const auto file = dir / (b.tag + ".json");
+    WriteFile(file, b.sweep.dump());
+    const auto r = RunCamopt("sweep " + file.string() + " --quiet --out " + (dir / "out").string());
+    EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(file.string() + ": " + b.path), std::string::npos) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(b.words), std::string::npos) << r.stderr_text;
+    EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+  }
+}
+
+TEST(SweepCli, AnOutputFolderHoldingOtherFilesIsRefusedBeforeAnyCase) {
+  const auto dir = TempDir("sweep-out");
+  WriteFile(dir / "s.json", CycloidSweep({100}).dump());
+  fs::create_directories(dir / "mine" / "photos");
+  WriteFile(dir / "mine" / "notes.txt", "keep");
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + (dir / "mine").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("not a camopt sweep"), std::string::npos) << r.stderr_text;
+  EXPECT_EQ(ReadFile(dir / "mine" / "notes.txt"), "keep");
+  EXPECT_FALSE(fs::exists(dir / "mine.camopt-sweep"));
+  // A previous sweep's folder is replaced whole.
+  ASSERT_EQ(RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --case-outputs --out " + (dir / "o").string()).exit_code, 0);
+  WriteFile(dir / "s.json", CycloidSweep({100, 200}).dump());
+  ASSERT_EQ(RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir / "o" / "cases"));
+  const std::string table = ReadFile(dir / "o" / "cases.csv");
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 7);
+}
+
+TEST(SweepCli, DryRunPrintsTheNumberOfCases) {
+  const auto dir = TempDir("sweep-dry");
+  WriteFile(dir / "s.json", CycloidSweep({100, 200, 300, 400}).dump());
+  const std::string out = (dir / "stdout.txt").string();
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --dry-run > " + out);
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(ReadFile(out), "12 cases\n");
+  EXPECT_FALSE(fs::exists(dir / "s"));
+  // The examples parse, with the counts their files describe.
+  for (const auto& [name, n] : {std::pair<std::string, size_t>{"sweep_lcr_ratios.json", 9},
+                                {"sweep_cycloid_crowning.json", 15}}) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(sw::Cases(sw::Parse(SourcePath("studies/sweeps/" + name))).size(), n);
+  }
+}
+
+// ---- Running: the same table whatever the threads or ranks --------------------------------------
+
+int RunShell(const std::string& cmd) {
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(SweepRun, OneAndTwoThreadsAndTwoRanksGiveByteIdenticalTables) {
+  const auto dir = TempDir("sweep-identical");
+  WriteFile(dir / "s.json", CycloidSweep({100, 350, 600}).dump());
+  const std::string sweep = (dir / "s.json").string();
+  std::vector<std::string> outs;
+  for (int jobs : {1, 2}) {
+    const auto out = dir / ("j" + std::to_string(jobs));
+    const auto r = RunCamopt("sweep " + sweep + " --quiet --jobs " + std::to_string(jobs) + " --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+    outs.push_back(out.string());
+  }
+#ifdef CAMOPT_MPIEXEC
+  {
+    const auto out = dir / "mpi2";
+    const std::string cmd = std::string(CAMOPT_MPIEXEC) +
+                            " --allow-run-as-root --oversubscribe -n 2 " + CAMOPT_BINARY +
+                            " sweep " + sweep + " --quiet --jobs 1 --out " + out.string() + " 2> " +
+                            (dir / "mpi.err").string();
+    ASSERT_EQ(RunShell(cmd), 0) << ReadFile(dir / "mpi.err");
+    outs.push_back(out.string());
+  }
+#else
+  std::cerr << "built without MPI (CAMOPT_MPI off): the 2-rank run is not compared\n";
+#endif
+  const std::string table = ReadFile(fs::path(outs[0]) / "cases.csv");
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 10);  // header + 9 cases
+  EXPECT_EQ(table.rfind("case,/crowning/coefficient_mm,/load/torque_Nm,status,", 0), 0u) << table;
+  for (size_t k = 1; k < outs.size(); ++k) {
+    SCOPED_TRACE(outs[k]);
+    for (const char* file : {"cases.csv", "pareto.csv", "pareto.svg", "result.json"})
+      EXPECT_EQ(ReadFile(fs::path(outs[k]) / file), ReadFile(fs::path(outs[0]) / file)) << file;
+  }
+  // Each row's numbers are those of the case's study run alone (here case 4: 0.005 mm, 350 Nm).
+  json study = CycloidSweep({350})["base"];
+  study["crowning"]["coefficient_mm"] = 0.005;
+  WriteFile(dir / "case4.json", study.dump());
+  ASSERT_EQ(RunCamopt("run " + (dir / "case4.json").string() + " --quiet --out " + (dir / "c4").string()).exit_code, 0);
+  const json alone = json::parse(ReadFile(dir / "c4" / "result.json"));
+  char row[200];
+  std::snprintf(row, sizeof row, "\n4,0.005,350,ok,%.10g,%.10g,\n", alone["max_contact_stress_MPa"].get<double>(),
+                alone["lte_peak_to_peak_arcsec"].get<double>());
+  EXPECT_NE(table.find(row), std::string::npos) << row << table;
+  EXPECT_FALSE(fs::exists(dir / "j1.camopt-sweep"));
+}
+
+TEST(SweepRun, LcrMinSizeCasesOnTwoThreadsMatchOneThread) {
+  // lcr_min_size solves with Ipopt, whose MUMPS is not thread-safe: the solves take turns.
+  const auto dir = TempDir("sweep-lcr");
+  json s = json::parse(ReadFile(SourcePath("studies/sweeps/sweep_lcr_ratios.json")));
+  s["base"] = SourcePath("studies/examples/lcr_min_size.json");
+  s["vary"][0]["values"] = {-35, -45};
+  s["vary"][1] = {{"path", "/target/output_torque_Nm"}, {"values", {20, 120}}};
+  s["set"] = {{"/search/max_lobes", 26}};
+  WriteFile(dir / "s.json", s.dump());
+  for (int jobs : {1, 2}) {
+    const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --jobs " +
+                             std::to_string(jobs) + " --out " + (dir / ("j" + std::to_string(jobs))).string());
+    EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+  }
+#ifdef CAMOPT_MPIEXEC
+  // Under mpirun, MPI is initialised in the process that also holds the sequential MUMPS and its
+  // stand-in MPI functions (studies/sweep_world.cc): the solves must give the same table.
+  const std::string cmd = std::string(CAMOPT_MPIEXEC) + " --allow-run-as-root --oversubscribe -n 2 " +
+                          CAMOPT_BINARY + " sweep " + (dir / "s.json").string() +
+                          " --quiet --jobs 1 --out " + (dir / "mpi2").string() + " 2> " + (dir / "mpi.err").string();
+  EXPECT_EQ(RunShell(cmd), 0) << ReadFile(dir / "mpi.err");
+#endif
+  const std::string one = ReadFile(dir / "j1" / "cases.csv");
+  EXPECT_EQ(ReadFile(dir / "j2" / "cases.csv"), one);
+#ifdef CAMOPT_MPIEXEC
+  EXPECT_EQ(ReadFile(dir / "mpi2" / "cases.csv"), one);
+#endif
+  EXPECT_EQ(std::count(one.begin(), one.end(), '\n'), 5) << one;
+  EXPECT_EQ(one.find(",error,"), std::string::npos) << one;
+}
+
+TEST(SweepRun, FailingCasesAreReportedAndTheSweepFinishes) {
+  const auto dir = TempDir("sweep-failing");
+  json s = CycloidSweep({100, -5, 350}, {0.005});  // a negative torque is refused by the kind
+  s["vary"].push_back({{"path", "/drive/eccentricity_mm"}, {"values", {4.5, 1e308}}});
+  WriteFile(dir / "s.json", s.dump());
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --jobs 2 --case-outputs --out " +
+                           (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("4 of 6 cases are not ok"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("case 2 (error): "), std::string::npos) << r.stderr_text;
+  const std::string table = ReadFile(dir / "out" / "cases.csv");
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 7) << table;
+  EXPECT_NE(table.find("\n0,0.005,100,4.5,ok,"), std::string::npos) << table;
+  EXPECT_NE(table.find("\n2,0.005,-5,4.5,error,,,"), std::string::npos) << table;
+  EXPECT_NE(table.find("/load/torque_Nm"), std::string::npos) << table;
+  const json summary = json::parse(ReadFile(dir / "out" / "result.json"));
+  EXPECT_EQ(summary["status_counts"]["ok"], 2);
+  EXPECT_EQ(summary["cases_not_ok"].size(), 4u);
+  // Per-case folders for the cases that ran; none for the refused ones.
+  EXPECT_TRUE(fs::exists(dir / "out" / "cases" / "0000" / "result.json"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "cases" / "0002"));
+  EXPECT_FALSE(fs::exists(dir / "out.camopt-sweep"));
+  // A misspelt varied field: every case is refused by the kind, with the field's path.
+  s = CycloidSweep({100});
+  s["vary"][0]["path"] = "/crowning/coefficent_mm";
+  WriteFile(dir / "typo.json", s.dump());
+  const auto t = RunCamopt("sweep " + (dir / "typo.json").string() + " --quiet --out " + (dir / "typo").string());
+  EXPECT_EQ(t.exit_code, 3) << t.stderr_text;
+  EXPECT_NE(ReadFile(dir / "typo" / "cases.csv").find("/crowning/coefficent_mm: unknown field"), std::string::npos);
+}
+
+// Lines of case records in the partial folder's checkpoints.
+int CheckpointedCases(const fs::path& partial) {
+  int n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(partial, ec)) {
+    const std::string text = ReadFile(e.path());
+    n += static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1;
+  }
+  return n;
+}
+
+TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
+  const auto dir = TempDir("sweep-resume");
+  json s = CycloidSweep({100, 200, 300, 400, 500, 600}, {0.001, 0.002, 0.005, 0.01, 0.02});
+  s["base"]["analysis"] = {{"crank_angle_steps", 12}, {"grid", {16, 16}}};
+  s["case_outputs"] = true;
+  WriteFile(dir / "s.json", s.dump());
+  const std::string sweep = (dir / "s.json").string();
+  ASSERT_EQ(RunCamopt("sweep " + sweep + " --quiet --jobs 1 --out " + (dir / "whole").string()).exit_code, 0);
+
+  // Interrupted once a few cases are checkpointed, long before the 30 are done.
+  const auto out = dir / "cut";
+  std::string bin = CAMOPT_BINARY;
+  std::vector<std::string> args = {bin, "sweep", sweep, "--quiet", "--jobs", "2", "--out", out.string()};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  const fs::path partial = out.string() + ".camopt-sweep";
+  int status = 0;
+  bool exited = false;
+  for (int k = 0; k < 6000 && CheckpointedCases(partial) < 3; ++k) {
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      break;
+    }
+    usleep(5000);
+  }
+  ASSERT_FALSE(exited) << "the sweep ended before it could be interrupted";
+  kill(pid, SIGINT);
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_FALSE(fs::exists(out));
+  const int checkpointed = CheckpointedCases(partial);
+  EXPECT_GE(checkpointed, 3);
+  EXPECT_LT(checkpointed, 30);
+
+  const auto r = RunCamopt("sweep " + sweep + " --resume --jobs 2 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("resuming: "), std::string::npos) << r.stderr_text;
+  for (const char* file : {"cases.csv", "pareto.csv", "pareto.svg", "result.json", "cases/0029/result.json",
+                           "cases/0000/per_angle.csv"})
+    EXPECT_EQ(ReadFile(out / file), ReadFile(dir / "whole" / file)) << file;
+  EXPECT_FALSE(fs::exists(partial));
+  int folders = 0;
+  for (const auto& e : fs::directory_iterator(out / "cases")) {
+    EXPECT_EQ(e.path().filename().string().size(), 4u) << e.path();
+    ++folders;
+  }
+  EXPECT_EQ(folders, 30);
+  // A resume of a different sweep is refused, naming the checkpoint.
+  ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  for (int k = 0; k < 6000 && CheckpointedCases(partial) < 1; ++k) usleep(5000);
+  kill(pid, SIGINT);
+  waitpid(pid, &status, 0);
+  s["outputs"].push_back("/max_pair_load_N");
+  WriteFile(dir / "s.json", s.dump());
+  const auto other = RunCamopt("sweep " + sweep + " --resume --quiet --out " + out.string());
+  EXPECT_EQ(other.exit_code, 2) << other.stderr_text;
+  EXPECT_NE(other.stderr_text.find("checkpoint of another sweep"), std::string::npos) << other.stderr_text;
+}
+
+}  // namespace
