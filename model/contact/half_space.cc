@@ -162,15 +162,20 @@ class FftConvolver {
       : nx_(nx), ny_(ny), mx_(2 * nx), my_(2 * ny), mxc_(nx + 1) {
     real_ = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
     spec_ = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
-    if (real_ == nullptr || spec_ == nullptr) {
+    half_ = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
+    if (real_ == nullptr || spec_ == nullptr || half_ == nullptr) {
       Free();
       throw std::bad_alloc();
     }
     std::lock_guard<std::mutex> lock(PlannerMutex());
     const int n_row[1] = {mx_}, n_col[1] = {my_};
-    rows_forward_ = fftw_plan_many_dft_r2c(1, n_row, ny_, real_, nullptr, 1, mx_, spec_, nullptr,
+    // The row transforms write the first ny rows of half_; its last ny rows are the zero
+    // padding, set once after planning (FFTW_MEASURE overwrites the arrays while it plans) and
+    // never written: the column transform reads half_ out of place into spec_ (no re-zeroing per
+    // product; the same codelets as the in-place plan, without its buffer copy).
+    rows_forward_ = fftw_plan_many_dft_r2c(1, n_row, ny_, real_, nullptr, 1, mx_, half_, nullptr,
                                            1, mxc_, planner);
-    cols_forward_ = fftw_plan_many_dft(1, n_col, mxc_, spec_, nullptr, mxc_, 1, spec_, nullptr,
+    cols_forward_ = fftw_plan_many_dft(1, n_col, mxc_, half_, nullptr, mxc_, 1, spec_, nullptr,
                                        mxc_, 1, FFTW_FORWARD, planner);
     cols_backward_ = fftw_plan_many_dft(1, n_col, mxc_, spec_, nullptr, mxc_, 1, spec_, nullptr,
                                         mxc_, 1, FFTW_BACKWARD, planner);
@@ -180,6 +185,8 @@ class FftConvolver {
       FreeLocked();
       throw std::runtime_error("FFTW could not plan the contact convolution");
     }
+    Complex* h = reinterpret_cast<Complex*>(half_);
+    std::fill(h, h + static_cast<size_t>(mxc_) * my_, Complex(0.0, 0.0));
   }
   ~FftConvolver() { Free(); }
   FftConvolver(const FftConvolver&) = delete;
@@ -246,8 +253,6 @@ class FftConvolver {
       std::fill(row + nx_, row + mx_, 0.0);
     }
     Complex* s = reinterpret_cast<Complex*>(spec_);
-    std::fill(s + static_cast<size_t>(ny_) * mxc_, s + static_cast<size_t>(my_) * mxc_,
-              Complex(0.0, 0.0));
     fftw_execute(rows_forward_);
     fftw_execute(cols_forward_);
     const size_t n = static_cast<size_t>(mxc_) * my_;
@@ -289,13 +294,16 @@ class FftConvolver {
     }
     if (real_ != nullptr) fftw_free(real_);
     if (spec_ != nullptr) fftw_free(spec_);
+    if (half_ != nullptr) fftw_free(half_);
     real_ = nullptr;
     spec_ = nullptr;
+    half_ = nullptr;
   }
 
   int nx_, ny_, mx_, my_, mxc_;
   double* real_ = nullptr;
   fftw_complex* spec_ = nullptr;
+  fftw_complex* half_ = nullptr;  // the row transforms' output, its last ny rows always zero
   fftw_plan rows_forward_ = nullptr, cols_forward_ = nullptr;
   fftw_plan cols_backward_ = nullptr, rows_backward_ = nullptr;
 };
@@ -520,10 +528,13 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
       }
     const double tau = (den > 0 && std::isfinite(num / den)) ? num / den : tau_self;
 
-    // Step, projection, re-entry; c_i = p_new − (p − τ t) on the cells these two touched.
-    p_old = p;
+    // Step, projection, re-entry; c_i = p_new − (p − τ t) on the cells these two touched. The
+    // new pressure goes to p_old, which then swaps with p (no copy); its sum is taken on the way
+    // (the same order of additions as a separate pass).
     corrections.clear();
     bool overlap = false;
+    double sum_p = 0;
+    p_old.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const double raw = p[i] - tau * t[i];  // t = 0 off the contact
       double next = raw > 0 ? raw : 0.0;
@@ -532,14 +543,14 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
         overlap = true;
       }
       if (next != raw) corrections.emplace_back(static_cast<int>(i), next - raw);
-      p[i] = next;
+      p_old[i] = next;
+      sum_p += next;
     }
+    p.swap(p_old);
     conjugate = !overlap;
 
     double f = 1;
     if (load_control) {
-      double sum_p = 0;
-      for (double v : p) sum_p += v;
       if (!(sum_p > 0) || !std::isfinite(sum_p)) {  // not in exact arithmetic; restart
         p.assign(n, load / (area * static_cast<double>(n)));
         conjugate = false;
@@ -548,15 +559,26 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
       }
       f = load / (area * sum_p);
     }
+    // Rescale, measure the change, and (when the sparse update is taken) step the displacement
+    // in the same pass: u ← u − τ r here, + K c and × f below.
+    const bool sparse = corrections.size() <= max_sparse;
     double change = 0, total = 0;
-    for (size_t i = 0; i < n; ++i) {
-      p[i] *= f;
-      change += std::abs(p[i] - p_old[i]);
-      total += p[i];
+    if (sparse) {
+      for (size_t i = 0; i < n; ++i) {
+        p[i] *= f;
+        change += std::abs(p[i] - p_old[i]);
+        total += p[i];
+        u[i] -= tau * r[i];
+      }
+    } else {
+      for (size_t i = 0; i < n; ++i) {
+        p[i] *= f;
+        change += std::abs(p[i] - p_old[i]);
+        total += p[i];
+      }
     }
     // The displacement of the new pressure.
-    if (corrections.size() <= max_sparse) {
-      for (size_t i = 0; i < n; ++i) u[i] -= tau * r[i];
+    if (sparse) {
       conv.AddSparse(kernel, corrections, u.data(), inv_e);
       if (f != 1)
         for (double& v : u) v *= f;
