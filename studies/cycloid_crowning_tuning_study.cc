@@ -55,6 +55,16 @@ cycloid::Crowning ParseStartCrowning(const Node& root, const std::set<std::strin
   return c;
 }
 
+// "analysis": the contact grid and the crank-angle sampling, the same for both study forms.
+void ParseAnalysis(const Node& root, Study& s) {
+  if (!root.Has("analysis")) return;
+  const Node a = root["analysis"];
+  a.CheckKnownFields({"grid", "crank_angles_per_mesh_period"});
+  cycloid_common::ParseGrid(a, s.options);
+  s.crank_angles_per_mesh_period = a.IntegerOr("crank_angles_per_mesh_period", 1, 6);
+  if (s.crank_angles_per_mesh_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
+}
+
 void ParseJoint(const Node& root, Study& s) {
   s.joint = true;
   const Node v = root["variables"];
@@ -172,13 +182,7 @@ Study Parse(const Node& root) {
   if (s.max_torque_Nm < s.design_torque_Nm) load["max_torque_Nm"].Fail("a torque >= design_torque_Nm");
   if (root.Has("variables")) {
     ParseJoint(root, s);
-    if (root.Has("analysis")) {
-      const Node a = root["analysis"];
-      a.CheckKnownFields({"grid", "crank_angles_per_mesh_period"});
-      cycloid_common::ParseGrid(a, s.options);
-      s.crank_angles_per_mesh_period = a.IntegerOr("crank_angles_per_mesh_period", 1, 6);
-      if (s.crank_angles_per_mesh_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
-    }
+    ParseAnalysis(root, s);
     return s;
   }
   // The shorthand: "tuning.coefficient_mm" (and optionally effective_length_mm) with COBYLA.
@@ -225,13 +229,7 @@ Study Parse(const Node& root) {
   s.max_evaluations = tuning.IntegerOr("max_evaluations", 1, 30);
   s.required_edge_margin_um = tuning.NumberOr("edge_margin_um", 0.0);
   if (s.curve_points > 200) tuning["curve_points"].Fail("at most 200 points");
-  if (root.Has("analysis")) {
-    const Node a = root["analysis"];
-    a.CheckKnownFields({"grid", "crank_angles_per_mesh_period"});
-    cycloid_common::ParseGrid(a, s.options);
-    s.crank_angles_per_mesh_period = a.IntegerOr("crank_angles_per_mesh_period", 1, 6);
-    if (s.crank_angles_per_mesh_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
-  }
+  ParseAnalysis(root, s);
   return s;
 }
 
