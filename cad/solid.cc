@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -105,6 +106,17 @@ std::string StepOf(const TopoDS_Shape& shape, const std::string& name) {
     if (q4 != std::string::npos) {
       s.replace(q3 + 1, q4 - q3 - 1, "2000-01-01T00:00:00");
       s.replace(q1 + 1, q2 - q1 - 1, name);
+    }
+  }
+  // PRODUCT('name','description',...): OCCT 7.6 appends a process-wide counter to the product name
+  // ("cam 2", "cam 10"), so the bytes depended on how many files the process had written before
+  // (a sweep's cases, in thread order). Both strings become the name, unfolded.
+  const size_t pr = s.find("= PRODUCT('");
+  if (pr != std::string::npos) {
+    const size_t a1 = s.find('\'', pr), a2 = s.find('\'', a1 + 1);
+    const size_t b1 = s.find('\'', a2 + 1), b2 = s.find('\'', b1 + 1);
+    if (b2 != std::string::npos && s.find_first_not_of(", \n", a2 + 1) == b1) {
+      s.replace(a1, b2 + 1 - a1, "'" + name + "','" + name + "'");
     }
   }
   return s;
@@ -220,8 +232,17 @@ StepReadBack ReadStepUnguarded(const std::string& content) {
 
 // OCCT reports failures as Standard_Failure, which is not a std::exception: turned into one here,
 // so that camopt reports them (exit 1, a defect: the inputs were checked) instead of terminating.
+// OCCT's STEP translator keeps its settings and controller in process-wide statics
+// (Interface_Static, STEPControl_Controller), so two threads of a sweep writing STEP at once made
+// the transfer fail (seen under ASan timing in CI). Every OCCT call of this file holds one lock.
+std::mutex& OcctMutex() {
+  static std::mutex m;
+  return m;
+}
+
 template <typename F>
 auto Guarded(const char* what, F f) {
+  const std::lock_guard<std::mutex> lock(OcctMutex());
   try {
     return f();
   } catch (const Standard_Failure& failure) {

@@ -10,6 +10,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -36,6 +37,10 @@ class Progress {
 };
 
 struct RunContext {
+  RunContext() = default;
+  /// The common short form {file, quiet}; the other members keep their defaults.
+  RunContext(std::string file, bool quiet_run) : study_file(std::move(file)), quiet(quiet_run) {}
+
   std::string study_file;
   bool quiet = false;
   /// Multiplies every work cap of studies/work_limits.h (--max-work-factor).

@@ -11,6 +11,8 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -104,6 +106,43 @@ TEST(ArcFit, EllipseWithinToleranceEverywhere) {
   EXPECT_NEAR(cad::EnclosedArea(fit.arcs), kPi * ax * by, 159 * o.tolerance_mm);
   // Arcs, not chords: far fewer than a 1 µm polyline would need (~2000 chords).
   EXPECT_LT(fit.arcs.size(), 400u);
+}
+
+// A sweep writes STEP files from several threads at once; OCCT's STEP translator keeps process-wide
+// state, and unguarded this failed in CI ("STEP transfer failed"). Every thread must get the same
+// file as a lone call and the closed-form volume of a 20 mm disc with a 6 mm bore, 5 mm thick.
+TEST(StepSolid, ConcurrentWritersGiveTheSameFileAsOneWriter) {
+  const double q = std::tan(kPi / 8);
+  cad::Extrusion e;
+  e.profile = {{Vec2<double>(10, 0), Vec2<double>(0, 10), q},
+               {Vec2<double>(0, 10), Vec2<double>(-10, 0), q},
+               {Vec2<double>(-10, 0), Vec2<double>(0, -10), q},
+               {Vec2<double>(0, -10), Vec2<double>(10, 0), q}};
+  e.bore_diameter_mm = 6.0;
+  e.thickness_mm = 5.0;
+  e.mesh_deflection_mm = 0.01;
+  const std::string lone = cad::ExtrudeCam(e).step;
+  constexpr int kThreads = 4, kRepeats = 3;
+  std::vector<std::string> step(kThreads * kRepeats);
+  std::vector<std::string> error(kThreads);
+  std::vector<std::thread> pool;
+  for (int t = 0; t < kThreads; ++t) {
+    pool.emplace_back([&, t] {
+      try {
+        for (int r = 0; r < kRepeats; ++r) step[t * kRepeats + r] = cad::ExtrudeCam(e).step;
+      } catch (const std::exception& x) {
+        error[t] = x.what();
+      }
+    });
+  }
+  for (std::thread& th : pool) th.join();
+  for (int t = 0; t < kThreads; ++t) EXPECT_EQ(error[t], "") << "thread " << t;
+  for (const std::string& s : step) EXPECT_EQ(s, lone);
+  // The product name is the one given, not OCCT's "cam <counter>" that followed earlier writes.
+  EXPECT_NE(lone.find("PRODUCT('cam','cam',"), std::string::npos);
+  const cad::StepReadBack back = cad::ReadStep(lone);
+  EXPECT_EQ(back.solids, 1);
+  EXPECT_NEAR(back.volume_mm3 / (kPi * (100.0 - 9.0) * 5.0) - 1, 0.0, kSolidRelTol);
 }
 
 TEST(Stl, BinaryLayoutAndEdgeCheck) {

@@ -117,7 +117,9 @@ TEST(CycloidTuningStudy, GeneralFormReportsEveryVariableAndTheOptimizer) {
   EXPECT_LE(j["tuned_smooth_max_contact_stress_MPa"].get<double>(),
             j["tuned_max_contact_stress_MPa"].get<double>() + 2.0 * std::log(32.0));
   // The design the optimizer reports is no worse (smooth stress) than its start when feasible.
-  if (r.feasible) EXPECT_LE(r.joint_best.smooth_stress_MPa, r.joint_history.front().smooth_stress_MPa);
+  if (r.feasible) {
+    EXPECT_LE(r.joint_best.smooth_stress_MPa, r.joint_history.front().smooth_stress_MPa);
+  }
   ASSERT_EQ(r.curve.size(), 3u);  // f scanned at the other variables' start values
 }
 
