@@ -171,13 +171,8 @@ SolidOutput ExtrudeCamUnguarded(const Extrusion& e) {
   const TopoDS_Shape solid = prism.Shape();
   if (!BRepCheck_Analyzer(solid).IsValid()) throw std::runtime_error("OCCT: the extruded cam is not a valid solid");
   SolidOutput out;
-  GProp_GProps vol, area;
-  BRepGProp::VolumeProperties(solid, vol, 1e-9);
-  BRepGProp::SurfaceProperties(solid, area, 1e-9);
-  out.volume_mm3 = vol.Mass();
-  out.area_mm2 = area.Mass();
   for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next()) ++out.faces;
-  out.step = StepOf(solid, e.name);
+  if (e.step) out.step = StepOf(solid, e.name);
   out.mesh = MeshOf(solid, e.mesh_deflection_mm);
   return out;
 }

@@ -213,6 +213,7 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   e.bore_diameter_mm = cam.bore_diameter_mm;
   e.thickness_mm = cam.thickness_mm;
   e.name = cam.design_name + " " + cam.cam_name;
+  e.step = options.step;
   const cad::SolidOutput solid = cad::ExtrudeCam(e);
   if (options.step) out.Add(cam.file_stem + ".step", solid.step);
   out.Add(cam.file_stem + ".stl", StlFile(solid.mesh, e.name, options));
