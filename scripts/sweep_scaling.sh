@@ -17,7 +17,7 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$work"
 cat > "$work/work.json" <<JSON
 { "sweep": "scaling", "base": "$src/studies/examples/cycloid_ltca_nnm_lcm.json",
-  "set": { "/analysis": { "crank_angles_per_mesh_period": 16, "grid": [24, 24] } },
+  "set": { "/analysis": { "crank_angles_per_mesh_period": 16, "grid": [24, 24] }, "/geometry_files": false },
   "vary": [ { "path": "/crowning/coefficient_mm", "range": [0.001, 0.02], "count": 8 },
             { "path": "/load/torque_Nm", "range": [100, 600], "count": 5 } ],
   "outputs": ["/max_contact_stress_MPa"] }

@@ -234,7 +234,7 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
                       {"unloaded_te_peak_to_peak_arcsec", hi - lo},
                       {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
                       {"per_angle", per_angle}};
-  j["geometry_files"]["tooth"] = r.tooth_files.summary;
+  j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   return j;
 }
 
@@ -340,7 +340,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"estimated_error_sources", sources},
           {"warnings", r.warnings},
           {"per_angle", per_angle}};
-  j["geometry_files"]["tooth"] = r.tooth_files.summary;
+  j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   return j;
 }
 

@@ -435,7 +435,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else if (r.monte_carlo == Result::MonteCarlo::kSkippedUndercut) {
     j["monte_carlo"] = {{"skipped", "the profile is undercut"}};
   }
-  j["geometry_files"]["profile"] = r.profile_files.summary;
+  j["geometry_files"] = GeometryFilesJson(s.geometry, {{"profile", &r.profile_files}});
   return j;
 }
 

@@ -74,6 +74,11 @@ GeometryFileOptions ParseGeometryFiles(const Node& root) {
   GeometryFileOptions o;
   if (!root.Has("geometry_files")) return o;
   const Node g = root["geometry_files"];
+  if (g.json().is_boolean()) {
+    o.write = g.Bool();
+    return o;
+  }
+  if (!g.json().is_object()) g.Fail("an object or a boolean");
   g.CheckKnownFields({"dxf_tolerance_um", "stl_format", "step"});
   if (g.Has("dxf_tolerance_um")) o.dxf_tolerance_um = g["dxf_tolerance_um"].NumberIn(0.01, 1000.0);
   const std::string stl = g.StringOr("stl_format", "binary");
@@ -81,6 +86,14 @@ GeometryFileOptions ParseGeometryFiles(const Node& root) {
   o.stl_ascii = stl == "ascii";
   o.step = g.BoolOr("step", true);
   return o;
+}
+
+nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,
+                                 const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts) {
+  if (!options.write) return {{"written", false}};
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, fit] : parts) j[name] = fit->summary;
+  return j;
 }
 
 std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& o) {
@@ -91,6 +104,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   const double tol_mm = options.dxf_tolerance_um * 1e-3;
   PlanarCamFit f;
   f.cam = cam;
+  if (!options.write) return f;
   Fit profile = FitCurve(cam.profile, cam, tol_mm);
   // Counter-clockwise outer profile (positive area) for the solid and for readers that expect it.
   if (cad::EnclosedArea(profile.curve.arcs) < 0) profile.curve.arcs = Reversed(profile.curve.arcs);

@@ -6,6 +6,9 @@
 //                                                      // from the model's exact profile
 //                       "stl_format": "binary",        // or "ascii"
 //                       "step": true }                 // write the STEP solids/surfaces
+//   "geometry_files": false                              // none at all: no arc fit, no DXF/STEP/STL
+//                                                        // (a sweep of analyses); result.json
+//                                                        // says {"written": false}
 //
 // The fitting error, measured against the exact profile function (not the sampled points), goes
 // to result.json under "geometry_files".
@@ -25,12 +28,13 @@
 namespace camopt::studies {
 
 struct GeometryFileOptions {
+  bool write = true;  ///< false: "geometry_files": false, no geometry files and no fit
   double dxf_tolerance_um = 1.0;
   bool stl_ascii = false;
   bool step = true;
 };
 
-/// Reads the optional root block "geometry_files" (defaults when absent).
+/// Reads the optional root block "geometry_files" (defaults when absent or true; false: none).
 GeometryFileOptions ParseGeometryFiles(const Node& root);
 
 /// One planar cam as its geometry files see it. Curves are functions of a parameter over
@@ -64,8 +68,14 @@ struct PlanarCamFit {
   nlohmann::json summary;                   ///< the entry for result.json
 };
 
-/// Fits the curves and measures the fit against the exact curve functions.
+/// Fits the curves and measures the fit against the exact curve functions (nothing when
+/// options.write is false: files = false, an empty summary).
 PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOptions& options);
+
+/// result.json's "geometry_files": each part's summary by its name, or {"written": false} when the
+/// files are switched off.
+nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,
+                                 const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts);
 
 /// Writes <stem>.dxf, and <stem>.step (when asked) and <stem>.stl when the cam has a thickness,
 /// into `out`. The solid is built by OpenCASCADE from the fitted arcs.
@@ -74,6 +84,5 @@ void WritePlanarCamFiles(const PlanarCamFit& fit, const GeometryFileOptions& opt
 /// STL file content in the chosen format.
 std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& options);
 
-/// camopt's version (the project version), for the files' text blocks.
 
 }  // namespace camopt::studies

@@ -247,6 +247,9 @@ Study Parse(const Node& root) {
   }
   if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
   s.geometry = ParseGeometryFiles(root);
+  // "geometry_files": false: no STL/STEP of the surfaces, whatever export.stl says (a sweep can
+  // switch them off in any base study); the point cloud is data and stays.
+  if (!s.geometry.write) s.export_stl = false;
   // Every check, with the jam limit over the analysis grid.
   FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root);
   return s;
@@ -429,6 +432,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                  {"peak_velocity_deg_per_rad", r.peak_velocity_deg_per_rad},
                  {"peak_acceleration_deg_per_rad2", r.peak_acceleration_deg_per_rad2},
                  {"peak_jerk_deg_per_rad3", r.peak_jerk_deg_per_rad3}};
+  if (!s.geometry.write) j["geometry_files"] = GeometryFilesJson(s.geometry, {});
   if (s.evaluate_given) {
     j["evaluated"] = {"geometry"};
     if (s.dynamics_stage) j["evaluated"].push_back("dynamics");

@@ -396,8 +396,9 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   }
   if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
   j["notes"] = res.notes;
-  if (res.input_cam_files) j["geometry_files"]["input_cam"] = res.input_cam_files->summary;
-  if (res.output_cam_files) j["geometry_files"]["output_cam"] = res.output_cam_files->summary;
+  if (res.input_cam_files && res.output_cam_files)
+    j["geometry_files"] =
+        GeometryFilesJson(st.geometry, {{"input_cam", &*res.input_cam_files}, {"output_cam", &*res.output_cam_files}});
   return j;
 }
 
