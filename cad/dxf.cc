@@ -17,6 +17,12 @@ class Out {
     std::snprintf(buf, sizeof buf, "%.12g", value == 0.0 ? 0.0 : value);  // no "-0"
     Pair(code, std::string(buf));
   }
+  /// A point in the xy plane: group codes `code` (x), code + 10 (y), code + 20 (z = 0).
+  void Point(int code, const Vec2<double>& p) {
+    Num(code, p.x());
+    Num(code + 10, p.y());
+    Num(code + 20, 0);
+  }
   std::string Handle() {
     char buf[20];
     std::snprintf(buf, sizeof buf, "%X", next_++);
@@ -38,31 +44,29 @@ class Out {
 
 void DxfDocument::AddLayer(const std::string& name, int color) { layers_.push_back({name, color}); }
 
-void DxfDocument::AddChain(const std::string& layer, const std::vector<ArcSegment>& chain, bool closed) {
-  Entity e;
-  e.kind = Entity::kChain;
+DxfDocument::Entity& DxfDocument::NewEntity(Entity::Kind kind, const std::string& layer) {
+  Entity& e = entities_.emplace_back();
+  e.kind = kind;
   e.layer = layer;
+  return e;
+}
+
+void DxfDocument::AddChain(const std::string& layer, const std::vector<ArcSegment>& chain, bool closed) {
+  Entity& e = NewEntity(Entity::kChain, layer);
   e.chain = chain;
   e.closed = closed;
-  entities_.push_back(std::move(e));
 }
 
 void DxfDocument::AddCircle(const std::string& layer, const Vec2<double>& centre, double radius) {
-  Entity e;
-  e.kind = Entity::kCircle;
-  e.layer = layer;
+  Entity& e = NewEntity(Entity::kCircle, layer);
   e.a = centre;
   e.value = radius;
-  entities_.push_back(std::move(e));
 }
 
 void DxfDocument::AddLine(const std::string& layer, const Vec2<double>& a, const Vec2<double>& b) {
-  Entity e;
-  e.kind = Entity::kLine;
-  e.layer = layer;
+  Entity& e = NewEntity(Entity::kLine, layer);
   e.a = a;
   e.b = b;
-  entities_.push_back(std::move(e));
 }
 
 void DxfDocument::AddCentreMark(const std::string& layer, const Vec2<double>& c, double size) {
@@ -73,13 +77,10 @@ void DxfDocument::AddCentreMark(const std::string& layer, const Vec2<double>& c,
 
 void DxfDocument::AddText(const std::string& layer, const Vec2<double>& position, double height,
                           const std::string& text) {
-  Entity e;
-  e.kind = Entity::kText;
-  e.layer = layer;
+  Entity& e = NewEntity(Entity::kText, layer);
   e.a = position;
   e.value = height;
   e.text = text;
-  entities_.push_back(std::move(e));
 }
 
 std::string DxfDocument::ToString() const {
@@ -91,21 +92,28 @@ std::string DxfDocument::ToString() const {
   const std::string style_standard = o.Handle();
 
   std::ostringstream body_dummy;
-  auto table = [&](const std::string& name, int count, const std::string& handle) {
+  // A table's head with a new handle, returned (the owner of its records).
+  auto table = [&](const std::string& name, int count) {
+    const std::string handle = o.Handle();
     o.Pair(0, "TABLE");
     o.Pair(2, name);
     o.Pair(5, handle);
     o.Pair(330, "0");
     o.Pair(100, "AcDbSymbolTable");
     o.Pair(70, count);
+    return handle;
   };
+  // A table record's head and its name (group 2), then the standard flags (group 70 = 0) except
+  // for block records, which have none.
   auto record = [&](const std::string& type, const std::string& handle, const std::string& owner,
-                    const std::string& subclass) {
+                    const std::string& subclass, const std::string& name) {
     o.Pair(0, type);
     o.Pair(type == "DIMSTYLE" ? 105 : 5, handle);
     o.Pair(330, owner);
     o.Pair(100, "AcDbSymbolTableRecord");
     o.Pair(100, subclass);
+    o.Pair(2, name);
+    if (type != "BLOCK_RECORD") o.Pair(70, 0);
   };
 
   // The header is written last into its own buffer: $HANDSEED is known only at the end.
@@ -116,11 +124,8 @@ std::string DxfDocument::ToString() const {
   w.Pair(0, "SECTION");
   w.Pair(2, "TABLES");
   {
-    const std::string t = w.Handle();
-    table("VPORT", 1, t);
-    record("VPORT", w.Handle(), t, "AcDbViewportTableRecord");
-    w.Pair(2, "*Active");
-    w.Pair(70, 0);
+    const std::string t = table("VPORT", 1);
+    record("VPORT", w.Handle(), t, "AcDbViewportTableRecord", "*Active");
     w.Num(10, 0); w.Num(20, 0); w.Num(11, 1); w.Num(21, 1);
     w.Num(12, 0); w.Num(22, 0); w.Num(13, 0); w.Num(23, 0);
     w.Num(14, 1); w.Num(24, 1); w.Num(15, 1); w.Num(25, 1);
@@ -131,12 +136,9 @@ std::string DxfDocument::ToString() const {
     w.Pair(0, "ENDTAB");
   }
   {
-    const std::string t = w.Handle();
-    table("LTYPE", 3, t);
+    const std::string t = table("LTYPE", 3);
     for (const char* name : {"ByBlock", "ByLayer", "Continuous"}) {
-      record("LTYPE", w.Handle(), t, "AcDbLinetypeTableRecord");
-      w.Pair(2, name);
-      w.Pair(70, 0);
+      record("LTYPE", w.Handle(), t, "AcDbLinetypeTableRecord", name);
       w.Pair(3, std::string(name) == "Continuous" ? "Solid line" : "");
       w.Pair(72, 65);
       w.Pair(73, 0);
@@ -145,25 +147,19 @@ std::string DxfDocument::ToString() const {
     w.Pair(0, "ENDTAB");
   }
   {
-    const std::string t = w.Handle();
-    table("LAYER", static_cast<int>(layers_.size()) + 1, t);
+    const std::string t = table("LAYER", static_cast<int>(layers_.size()) + 1);
     std::vector<Layer> all = {{"0", 7}};
     all.insert(all.end(), layers_.begin(), layers_.end());
     for (const Layer& l : all) {
-      record("LAYER", w.Handle(), t, "AcDbLayerTableRecord");
-      w.Pair(2, l.name);
-      w.Pair(70, 0);
+      record("LAYER", w.Handle(), t, "AcDbLayerTableRecord", l.name);
       w.Pair(62, l.color);
       w.Pair(6, "Continuous");
     }
     w.Pair(0, "ENDTAB");
   }
   {
-    const std::string t = w.Handle();
-    table("STYLE", 1, t);
-    record("STYLE", style_standard, t, "AcDbTextStyleTableRecord");
-    w.Pair(2, "Standard");
-    w.Pair(70, 0);
+    const std::string t = table("STYLE", 1);
+    record("STYLE", style_standard, t, "AcDbTextStyleTableRecord", "Standard");
     w.Num(40, 0);
     w.Num(41, 1);
     w.Num(50, 0);
@@ -174,40 +170,26 @@ std::string DxfDocument::ToString() const {
     w.Pair(0, "ENDTAB");
   }
   for (const char* name : {"VIEW", "UCS"}) {
-    table(name, 0, w.Handle());
+    table(name, 0);
     w.Pair(0, "ENDTAB");
   }
   {
-    const std::string t = w.Handle();
-    table("APPID", 1, t);
-    record("APPID", w.Handle(), t, "AcDbRegAppTableRecord");
-    w.Pair(2, "ACAD");
-    w.Pair(70, 0);
+    const std::string t = table("APPID", 1);
+    record("APPID", w.Handle(), t, "AcDbRegAppTableRecord", "ACAD");
     w.Pair(0, "ENDTAB");
   }
   {
-    const std::string t = w.Handle();
-    w.Pair(0, "TABLE");
-    w.Pair(2, "DIMSTYLE");
-    w.Pair(5, t);
-    w.Pair(330, "0");
-    w.Pair(100, "AcDbSymbolTable");
-    w.Pair(70, 1);
+    const std::string t = table("DIMSTYLE", 1);
     w.Pair(100, "AcDbDimStyleTable");
     w.Pair(71, 0);
-    record("DIMSTYLE", w.Handle(), t, "AcDbDimStyleTableRecord");
-    w.Pair(2, "Standard");
-    w.Pair(70, 0);
+    record("DIMSTYLE", w.Handle(), t, "AcDbDimStyleTableRecord", "Standard");
     w.Pair(0, "ENDTAB");
   }
   {
-    const std::string t = w.Handle();
-    table("BLOCK_RECORD", 2, t);
-    record("BLOCK_RECORD", model_record, t, "AcDbBlockTableRecord");
-    w.Pair(2, "*Model_Space");
+    const std::string t = table("BLOCK_RECORD", 2);
+    record("BLOCK_RECORD", model_record, t, "AcDbBlockTableRecord", "*Model_Space");
     w.Pair(340, model_layout);
-    record("BLOCK_RECORD", paper_record, t, "AcDbBlockTableRecord");
-    w.Pair(2, "*Paper_Space");
+    record("BLOCK_RECORD", paper_record, t, "AcDbBlockTableRecord", "*Paper_Space");
     w.Pair(340, paper_layout);
     w.Pair(0, "ENDTAB");
   }
@@ -271,17 +253,17 @@ std::string DxfDocument::ToString() const {
       }
       case Entity::kCircle:
         head("CIRCLE", "AcDbCircle");
-        w.Num(10, e.a.x()); w.Num(20, e.a.y()); w.Num(30, 0);
+        w.Point(10, e.a);
         w.Num(40, e.value);
         break;
       case Entity::kLine:
         head("LINE", "AcDbLine");
-        w.Num(10, e.a.x()); w.Num(20, e.a.y()); w.Num(30, 0);
-        w.Num(11, e.b.x()); w.Num(21, e.b.y()); w.Num(31, 0);
+        w.Point(10, e.a);
+        w.Point(11, e.b);
         break;
       case Entity::kText:
         head("TEXT", "AcDbText");
-        w.Num(10, e.a.x()); w.Num(20, e.a.y()); w.Num(30, 0);
+        w.Point(10, e.a);
         w.Num(40, e.value);
         w.Pair(1, e.text);
         w.Pair(7, "Standard");

@@ -42,6 +42,8 @@ class DxfDocument {
     double value = 0.0;
     std::string text;
   };
+  /// A new entity of `kind` on `layer`, appended (drawing order is writing order).
+  Entity& NewEntity(Entity::Kind kind, const std::string& layer);
   std::vector<Layer> layers_;
   std::vector<Entity> entities_;
 };
