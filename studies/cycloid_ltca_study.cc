@@ -264,6 +264,21 @@ Table BacklashTable(const Study& s, const Result& r, const std::vector<double>& 
   return backlash;
 }
 
+// per_angle.csv (`table`), backlash.csv and lte.svg, for the unloaded and the loaded evaluation;
+// returns the plot options (crank-angle axis) for the loaded evaluation's further plots.
+PlotOptions WriteTransmissionErrorFiles(const Study& s, const Result& r, const Table& table,
+                                        const std::vector<double>& col_angle, const std::string& title,
+                                        const std::vector<Series>& lines, Outputs& out) {
+  out.Add("per_angle.csv", ToCsv(table));
+  out.Add("backlash.csv", ToCsv(BacklashTable(s, r, col_angle)));
+  PlotOptions po;
+  po.x_label = "crank angle [deg]";
+  po.title = title;
+  po.y_label = "transmission error [arcsec]";
+  out.Add("lte.svg", SvgLinePlot(lines, po));
+  return po;
+}
+
 void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", UnloadedJson(s, r));
   std::vector<double> col_angle;
@@ -271,13 +286,8 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
   Table table;
   table.Add("crank_angle_deg", col_angle);
   table.Add("unloaded_te_arcsec", r.unloaded_te_arcsec);
-  out.Add("per_angle.csv", ToCsv(table));
-  out.Add("backlash.csv", ToCsv(BacklashTable(s, r, col_angle)));
-  PlotOptions po;
-  po.x_label = "crank angle [deg]";
-  po.title = "Unloaded transmission error";
-  po.y_label = "transmission error [arcsec]";
-  out.Add("lte.svg", SvgLinePlot({{"unloaded", col_angle, r.unloaded_te_arcsec}}, po));
+  WriteTransmissionErrorFiles(s, r, table, col_angle, "Unloaded transmission error",
+                              {{"unloaded", col_angle, r.unloaded_te_arcsec}}, out);
   AddToothDrawing(s, r, out);
 }
 
@@ -371,14 +381,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("max_contact_stress_MPa", col_p);
   table.Add("pairs_in_contact", col_pairs);
   for (int i = 0; i < n1; ++i) table.Add("load_roller_" + std::to_string(i + 1) + "_N", col_load[i]);
-  out.Add("per_angle.csv", ToCsv(table));
-  out.Add("backlash.csv", ToCsv(BacklashTable(s, r, col_angle)));
-
-  PlotOptions po;
-  po.x_label = "crank angle [deg]";
-  po.title = "Loaded transmission error";
-  po.y_label = "transmission error [arcsec]";
-  out.Add("lte.svg", SvgLinePlot({{"loaded", col_angle, col_lte}, {"unloaded", col_angle, col_ute}}, po));
+  PlotOptions po = WriteTransmissionErrorFiles(s, r, table, col_angle, "Loaded transmission error",
+                                               {{"loaded", col_angle, col_lte}, {"unloaded", col_angle, col_ute}}, out);
   po.title = "Instantaneous gear ratio";
   po.y_label = "gear ratio [-]";
   po.guides = {{"nominal ratio", double(s.drive.teeth)}};

@@ -112,20 +112,18 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   f.max_deviation_mm = profile.deviation_mm;
   f.checked_points = profile.curve.checked_points;
   nlohmann::json layers = {"CAM_PROFILE"};
-  if (cam.pitch) {
-    const Fit pitch = FitCurve(cam.pitch, cam, tol_mm);
-    f.pitch = pitch.curve;
-    f.max_deviation_mm = Worse(f.max_deviation_mm, pitch.deviation_mm);
-    f.checked_points += pitch.curve.checked_points;
-    layers.push_back("PITCH_CURVE");
-  }
+  // A further curve (pitch curve, cutter path) on its own layer, its deviation counted.
+  auto add_curve = [&](const cad::CurveFunction& curve, cad::FittedCurve& into, const char* layer) {
+    const Fit fit = FitCurve(curve, cam, tol_mm);
+    into = fit.curve;
+    f.max_deviation_mm = Worse(f.max_deviation_mm, fit.deviation_mm);
+    f.checked_points += fit.curve.checked_points;
+    layers.push_back(layer);
+  };
+  if (cam.pitch) add_curve(cam.pitch, f.pitch, "PITCH_CURVE");
   nlohmann::json& j = f.summary;
   if (cam.cutter) {
-    const Fit cutter = FitCurve(cam.cutter, cam, tol_mm);
-    f.cutter = cutter.curve;
-    f.max_deviation_mm = Worse(f.max_deviation_mm, cutter.deviation_mm);
-    f.checked_points += cutter.curve.checked_points;
-    layers.push_back("CUTTER_PATH");
+    add_curve(cam.cutter, f.cutter, "CUTTER_PATH");
     j["cutter_diameter_mm"] = cam.cutter_diameter_mm;
   } else if (!cam.cutter_note.empty()) {
     j["cutter_path"] = cam.cutter_note;
