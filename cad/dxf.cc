@@ -118,6 +118,17 @@ std::string DxfDocument::ToString() const {
 
   // The header is written last into its own buffer: $HANDSEED is known only at the end.
   Out& w = o;
+  // An entity's head (blocks' BLOCK and ENDBLK too) with a new handle; paper-space ones carry 67.
+  auto entity = [&](const char* type, const std::string& owner, bool paper, const std::string& layer,
+                    const char* subclass) {
+    w.Pair(0, type);
+    w.Pair(5, w.Handle());
+    w.Pair(330, owner);
+    w.Pair(100, "AcDbEntity");
+    if (paper) w.Pair(67, 1);
+    w.Pair(8, layer);
+    w.Pair(100, subclass);
+  };
   w.Pair(0, "SECTION");
   w.Pair(2, "CLASSES");
   w.Pair(0, "ENDSEC");
@@ -200,39 +211,20 @@ std::string DxfDocument::ToString() const {
   for (int paper = 0; paper < 2; ++paper) {
     const std::string& rec = paper ? paper_record : model_record;
     const std::string name = paper ? "*Paper_Space" : "*Model_Space";
-    w.Pair(0, "BLOCK");
-    w.Pair(5, w.Handle());
-    w.Pair(330, rec);
-    w.Pair(100, "AcDbEntity");
-    if (paper) w.Pair(67, 1);
-    w.Pair(8, "0");
-    w.Pair(100, "AcDbBlockBegin");
+    entity("BLOCK", rec, paper, "0", "AcDbBlockBegin");
     w.Pair(2, name);
     w.Pair(70, 0);
-    w.Num(10, 0); w.Num(20, 0); w.Num(30, 0);
+    w.Point(10, Vec2<double>::Zero());
     w.Pair(3, name);
     w.Pair(1, "");
-    w.Pair(0, "ENDBLK");
-    w.Pair(5, w.Handle());
-    w.Pair(330, rec);
-    w.Pair(100, "AcDbEntity");
-    if (paper) w.Pair(67, 1);
-    w.Pair(8, "0");
-    w.Pair(100, "AcDbBlockEnd");
+    entity("ENDBLK", rec, paper, "0", "AcDbBlockEnd");
   }
   w.Pair(0, "ENDSEC");
 
   w.Pair(0, "SECTION");
   w.Pair(2, "ENTITIES");
   for (const Entity& e : entities_) {
-    auto head = [&](const char* type, const char* subclass) {
-      w.Pair(0, type);
-      w.Pair(5, w.Handle());
-      w.Pair(330, model_record);
-      w.Pair(100, "AcDbEntity");
-      w.Pair(8, e.layer);
-      w.Pair(100, subclass);
-    };
+    auto head = [&](const char* type, const char* subclass) { entity(type, model_record, false, e.layer, subclass); };
     switch (e.kind) {
       case Entity::kChain: {
         head("LWPOLYLINE", "AcDbPolyline");
@@ -333,7 +325,7 @@ std::string DxfDocument::ToString() const {
   h.Pair(9, "$DWGCODEPAGE");
   h.Pair(3, "ANSI_1252");
   h.Pair(9, "$INSBASE");
-  h.Num(10, 0); h.Num(20, 0); h.Num(30, 0);
+  h.Point(10, Vec2<double>::Zero());
   h.Pair(9, "$INSUNITS");
   h.Pair(70, 4);  // millimetres
   h.Pair(9, "$MEASUREMENT");
