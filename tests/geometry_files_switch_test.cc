@@ -17,11 +17,8 @@
 namespace camopt {
 namespace {
 
-using camopt::testing::ReadFile;
-using camopt::testing::SourcePath;
+using camopt::testing::Example;
 using nlohmann::json;
-
-json Example(const std::string& name) { return json::parse(ReadFile(SourcePath("studies/examples/" + name))); }
 
 // The CAD files among a run's outputs.
 int CadFiles(const studies::Outputs& out) {
@@ -34,81 +31,44 @@ int CadFiles(const studies::Outputs& out) {
   return n;
 }
 
-// Parses, runs and writes `study` of kind K; returns the outputs and result.json.
-template <typename Kind>
-std::pair<studies::Outputs, json> RunKind(const json& study) {
-  const studies::Node root(&study, "study.json", "");
-  const auto st = Kind::Parse(root);
-  const auto res = Kind::Run(st, {"study.json", true});
-  studies::Outputs out;
-  Kind::Write(st, res, out);
-  return {out, Kind::ToJson(st, res)};
-}
+// One study kind's entry points (studies/<kind>_study.h).
+template <typename Study, typename Result>
+struct Kind {
+  Study (*parse)(const studies::Node&);
+  Result (*run)(const Study&, const studies::RunContext&);
+  void (*write)(const Study&, const Result&, studies::Outputs&);
+  json (*to_json)(const Study&, const Result&);
+};
+template <typename Study, typename Result>
+Kind(Study (*)(const studies::Node&), Result (*)(const Study&, const studies::RunContext&),
+     void (*)(const Study&, const Result&, studies::Outputs&), json (*)(const Study&, const Result&))
+    -> Kind<Study, Result>;
 
-struct LcrAnalysis {
-  static auto Parse(const studies::Node& n) { return studies::lcr_analysis::Parse(n); }
-  static auto Run(const studies::lcr_analysis::Study& s, const studies::RunContext& c) {
-    return studies::lcr_analysis::Run(s, c);
-  }
-  static void Write(const studies::lcr_analysis::Study& s, const studies::lcr_analysis::Result& r,
-                    studies::Outputs& o) {
-    studies::lcr_analysis::Write(s, r, o);
-  }
-  static json ToJson(const studies::lcr_analysis::Study& s, const studies::lcr_analysis::Result& r) {
-    return studies::lcr_analysis::ToJson(s, r);
-  }
-};
-struct CycloidLtca {
-  static auto Parse(const studies::Node& n) { return studies::cycloid_ltca::Parse(n); }
-  static auto Run(const studies::cycloid_ltca::Study& s, const studies::RunContext& c) {
-    return studies::cycloid_ltca::Run(s, c);
-  }
-  static void Write(const studies::cycloid_ltca::Study& s, const studies::cycloid_ltca::Result& r,
-                    studies::Outputs& o) {
-    studies::cycloid_ltca::Write(s, r, o);
-  }
-  static json ToJson(const studies::cycloid_ltca::Study& s, const studies::cycloid_ltca::Result& r) {
-    return studies::cycloid_ltca::ToJson(s, r);
-  }
-};
-struct DiscCam {
-  static auto Parse(const studies::Node& n) { return studies::disc_cam::Parse(n); }
-  static auto Run(const studies::disc_cam::Study& s, const studies::RunContext& c) {
-    return studies::disc_cam::Run(s, c);
-  }
-  static void Write(const studies::disc_cam::Study& s, const studies::disc_cam::Result& r, studies::Outputs& o) {
-    studies::disc_cam::Write(s, r, o);
-  }
-  static json ToJson(const studies::disc_cam::Study& s, const studies::disc_cam::Result& r) {
-    return studies::disc_cam::ToJson(s, r);
-  }
-};
-struct GloboidalCam {
-  static auto Parse(const studies::Node& n) { return studies::globoidal_cam::Parse(n); }
-  static auto Run(const studies::globoidal_cam::Study& s, const studies::RunContext& c) {
-    return studies::globoidal_cam::Run(s, c);
-  }
-  static void Write(const studies::globoidal_cam::Study& s, const studies::globoidal_cam::Result& r,
-                    studies::Outputs& o) {
-    studies::globoidal_cam::Write(s, r, o);
-  }
-  static json ToJson(const studies::globoidal_cam::Study& s, const studies::globoidal_cam::Result& r) {
-    return studies::globoidal_cam::ToJson(s, r);
-  }
-};
+#define CAMOPT_KIND(ns) Kind{&studies::ns::Parse, &studies::ns::Run, &studies::ns::Write, &studies::ns::ToJson}
+
+// Parses, runs and writes `study`; returns the outputs and result.json.
+template <typename K>
+std::pair<studies::Outputs, json> RunKind(const K& kind, const json& study) {
+  const studies::Node root(&study, "study.json", "");
+  const auto st = kind.parse(root);
+  const auto res = kind.run(st, {"study.json", true});
+  studies::Outputs out;
+  kind.write(st, res, out);
+  return {out, kind.to_json(st, res)};
+}
 
 // As given: `cad_files` geometry files; with "geometry_files": false: none, every other file the
 // same, and result.json says so.
-template <typename Kind>
-void ExpectSwitchedOff(json study, int cad_files) {
-  const auto [on, on_json] = RunKind<Kind>(study);
+template <typename K>
+void ExpectSwitchedOff(const K& kind, json study, int cad_files) {
+  const auto [on, on_json] = RunKind(kind, study);
   EXPECT_EQ(CadFiles(on), cad_files);
   // The planar kinds list their parts; globoidal_cam names its files under "surface_export".
   if (on_json.contains("geometry_files")) {
     EXPECT_FALSE(on_json.at("geometry_files").contains("written"));
   }
   study["geometry_files"] = false;
-  const auto [off, off_json] = RunKind<Kind>(study);
+  const auto [off, off_json] = RunKind(kind, study);
   EXPECT_EQ(CadFiles(off), 0);
   EXPECT_EQ(off_json["geometry_files"], json({{"written", false}}));
   EXPECT_EQ(off.files().size() + cad_files, on.files().size());
@@ -119,22 +79,22 @@ TEST(GeometryFilesSwitch, LcrAnalysisWritesNoCadFiles) {
   json study = Example("lcr_ii.json");
   study["analysis"]["evaluate"] = {"profile"};
   study["geometry_files"] = {{"step", false}};  // the STEP solids are slow; the switch is what is tested
-  ExpectSwitchedOff<LcrAnalysis>(study, 2 * 2);  // input_cam and output_cam .dxf, .stl
+  ExpectSwitchedOff(CAMOPT_KIND(lcr_analysis), study, 2 * 2);  // input_cam and output_cam .dxf, .stl
 }
 
 TEST(GeometryFilesSwitch, CycloidLtcaWritesNoCadFiles) {
   json study = Example("cycloid_ltca_nnm_lcm.json");
   study["analysis"] = {{"crank_angles_deg", {0}}, {"grid", {8, 8}}, {"estimate_error", false}};
-  ExpectSwitchedOff<CycloidLtca>(study, 3);  // tooth.dxf, .step, .stl
+  ExpectSwitchedOff(CAMOPT_KIND(cycloid_ltca), study, 3);  // tooth.dxf, .step, .stl
 }
 
 TEST(GeometryFilesSwitch, TrueIsTheDefaults) {
   json study = Example("cycloid_ltca_nnm_lcm.json");
   study["analysis"] = {{"crank_angles_deg", {0}}, {"grid", {8, 8}}, {"estimate_error", false}};
   study["geometry_files"] = {{"step", false}};
-  const auto [given, given_json] = RunKind<CycloidLtca>(study);
+  const auto [given, given_json] = RunKind(CAMOPT_KIND(cycloid_ltca), study);
   study["geometry_files"] = true;
-  const auto [on, on_json] = RunKind<CycloidLtca>(study);
+  const auto [on, on_json] = RunKind(CAMOPT_KIND(cycloid_ltca), study);
   EXPECT_EQ(CadFiles(on), 3);
   EXPECT_EQ(on_json["geometry_files"]["tooth"]["step"], "tooth.step");
   EXPECT_EQ(on.files().at("tooth.dxf"), given.files().at("tooth.dxf"));
@@ -144,7 +104,7 @@ TEST(GeometryFilesSwitch, DiscCamWritesNoCadFiles) {
   json study = Example("disc_cam_translating.json");
   study["analysis"] = {{"angle_steps", 360}, {"evaluate", {"profile"}}};
   ASSERT_TRUE(study.contains("cam_thickness_mm"));
-  ExpectSwitchedOff<DiscCam>(study, 3);  // profile.dxf, .step, .stl
+  ExpectSwitchedOff(CAMOPT_KIND(disc_cam), study, 3);  // profile.dxf, .step, .stl
 }
 
 TEST(GeometryFilesSwitch, GloboidalCamWritesNoSurfaceFiles) {
@@ -153,9 +113,9 @@ TEST(GeometryFilesSwitch, GloboidalCamWritesNoSurfaceFiles) {
   study["export"]["angle_steps"] = 36;
   study["export"]["axis_steps"] = 2;
   ASSERT_EQ(study["export"]["stl"], true);  // false overrides an explicit export.stl
-  ExpectSwitchedOff<GloboidalCam>(study, 2);  // working_surfaces.stl, .step
+  ExpectSwitchedOff(CAMOPT_KIND(globoidal_cam), study, 2);  // working_surfaces.stl, .step
   study["geometry_files"] = false;
-  const json j = RunKind<GloboidalCam>(study).second;
+  const json j = RunKind(CAMOPT_KIND(globoidal_cam), study).second;
   EXPECT_EQ(j.at("surface_export").at("stl"), "");
   EXPECT_EQ(j.at("surface_export").at("step"), "");
   EXPECT_EQ(j.at("surface_export").at("point_cloud"), "working_surfaces.csv");
