@@ -5,9 +5,7 @@
 
 namespace camopt::studies {
 
-namespace {
-
-lcr::RollerCrowning<double> ParseCrowning(const Node& n, double roller_length) {
+lcr::RollerCrowning<double> ParseRollerCrowning(const Node& n, double roller_length, bool coefficient_given) {
   n.CheckKnownFields({"type", "radius_mm", "flat_length_mm", "coefficient_mm", "effective_length_mm"});
   lcr::RollerCrowning<double> c;
   const std::string type = n["type"].String();
@@ -22,7 +20,7 @@ lcr::RollerCrowning<double> ParseCrowning(const Node& n, double roller_length) {
     c.flat_length = n["flat_length_mm"].NonNegative();
   } else if (type == "logarithmic") {
     c.type = contact::CrowningType::kLogarithmic;
-    c.coefficient = n["coefficient_mm"].NonNegative();
+    c.coefficient = coefficient_given ? n["coefficient_mm"].NonNegative() : n.NonNegativeOr("coefficient_mm", 0.0);
     c.effective_length = n["effective_length_mm"].Positive();
   } else {
     n["type"].Fail("one of none, circular, partial, logarithmic");
@@ -31,8 +29,6 @@ lcr::RollerCrowning<double> ParseCrowning(const Node& n, double roller_length) {
   if (!problem.empty()) n.FailWith(problem + " (roller length " + std::to_string(roller_length) + " mm)");
   return c;
 }
-
-}  // namespace
 
 const char* ContactModelName(lcr::ContactModel m) {
   switch (m) {
@@ -51,14 +47,25 @@ LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& re
     const Node s = red[side];
     if (!s.Has("crowning")) continue;
     auto& c = std::string(side) == "input" ? in.input_crowning : in.output_crowning;
-    c = ParseCrowning(s["crowning"], Value(reducer.side(std::string(side) == "input" ? lcr::Side::kInput
+    c = ParseRollerCrowning(s["crowning"], Value(reducer.side(std::string(side) == "input" ? lcr::Side::kInput
                                                                                       : lcr::Side::kOutput)
                                                     .roller_length));
     crowned = crowned || c.type != contact::CrowningType::kNone;
   }
   if (root.Has("contact")) {
     in.given = true;
-    const Node c = root["contact"];
+    in.options = ParseContactOptions(root["contact"]);
+  }
+  if (crowned && in.options.model == lcr::ContactModel::kLine) {
+    if (in.given && root["contact"].Has("model")) root["contact"]["model"].Fail("slices or half_space with crowned rollers (the line model ignores crowning)");
+    root.FailWith("crowned rollers need \"contact\": {\"model\": \"slices\" or \"half_space\"} (the line model ignores crowning)");
+  }
+  return in;
+}
+
+lcr::ContactModelOptions ParseContactOptions(const Node& c) {
+  LcrContactInput in;
+  {
     c.CheckKnownFields({"model", "slices", "grid", "misalignment_mrad"});
     const std::string model = c.StringOr("model", "line");
     if (model == "line") {
@@ -88,11 +95,7 @@ LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& re
       c.FailWith("model must be " + want);
     }
   }
-  if (crowned && in.options.model == lcr::ContactModel::kLine) {
-    if (in.given && root["contact"].Has("model")) root["contact"]["model"].Fail("slices or half_space with crowned rollers (the line model ignores crowning)");
-    root.FailWith("crowned rollers need \"contact\": {\"model\": \"slices\" or \"half_space\"} (the line model ignores crowning)");
-  }
-  return in;
+  return in.options;
 }
 
 }  // namespace camopt::studies

@@ -20,6 +20,14 @@ struct LcrContactInput {
 /// 2: the line model ignores them).
 LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& reducer);
 
+/// The "contact" object itself (model, slices, grid, misalignment_mrad; misalignment with model
+/// "line" is a StudyError).
+lcr::ContactModelOptions ParseContactOptions(const Node& contact);
+
+/// One roller "crowning" object, checked against the roller length. coefficient_given = false:
+/// a logarithmic crown's coefficient_mm may be absent (a sizing variable), 0 then.
+lcr::RollerCrowning<double> ParseRollerCrowning(const Node& n, double roller_length, bool coefficient_given = true);
+
 /// "line", "slices" or "half_space".
 const char* ContactModelName(lcr::ContactModel m);
 

@@ -13,6 +13,7 @@
 
 #include "model/lcr/kinematics.h"
 #include "studies/lcr_input.h"
+#include "studies/lcr_min_size_contact.h"
 #include "studies/report.h"
 #include "studies/writers.h"
 
@@ -171,7 +172,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "target", "search", "variables", "fixed", "limits",
-                         "material", "load", "optimizer", "roller_catalogue"});
+                         "material", "load", "optimizer", "roller_catalogue", "contact"});
   Study s;
   s.name = root.StringOr("name", "");
   const Node target = root["target"];
@@ -203,14 +204,15 @@ Study Parse(const Node& root) {
 
   LcrSizingSpec& b = s.base;
   const Node vars = root["variables"];
-  vars.CheckKnownFields({"eccentricity_mm", "turret_radius_mm", "roller_diameter_mm", "same_roller_on_both_cams"});
+  vars.CheckKnownFields({"eccentricity_mm", "turret_radius_mm", "roller_diameter_mm", "same_roller_on_both_cams",
+                         "crowning_coefficient_mm"});
   b.eccentricity_mm = PositiveRange(vars["eccentricity_mm"]);
   b.turret_radius_mm = PositiveRange(vars["turret_radius_mm"]);
   if (vars.Has("roller_diameter_mm")) b.roller_diameter_mm = PositiveRange(vars["roller_diameter_mm"]);
   b.same_roller = vars.BoolOr("same_roller_on_both_cams", true);
 
   const Node fixed = root["fixed"];
-  fixed.CheckKnownFields({"cam_thickness_mm", "roller_length_mm"});
+  fixed.CheckKnownFields({"cam_thickness_mm", "roller_length_mm", "crowning"});
   b.cam_thickness_mm = fixed["cam_thickness_mm"].Positive();
   if (root.Has("roller_catalogue")) {
     Node cat = root["roller_catalogue"];
@@ -242,7 +244,7 @@ Study Parse(const Node& root) {
   if (limits.Has("min_efficiency")) b.limits.min_efficiency = limits["min_efficiency"].NumberIn(0.0, 0.999);
   if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   b.material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
-  if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient"});
+  if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient", "overload_torque_Nm"});
   b.output_torque_Nmm = s.output_torque_Nmm;
   b.friction_coefficient = root.Has("load") ? root["load"].NonNegativeOr("friction_coefficient", 0.0) : 0.0;
 
@@ -272,6 +274,9 @@ Study Parse(const Node& root) {
     if (s.options.starts > 5) o["starts"].Fail("a number of starts between 1 and 5");
   }
   solver.max_seconds = 10.0;  // per local solve
+  double longest = b.roller_length_mm;
+  for (const CatalogueRoller& r : s.catalogue) longest = std::max(longest, r.length_mm);
+  s.contact3d = ParseContact3D(root, s.catalogue.empty() ? b.roller_length_mm : longest);
   s.options.smooth_form = s.form;
 
   if (objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences).empty())
@@ -305,7 +310,10 @@ Result Run(const Study& s, const RunContext& ctx) {
         c.spec.roller_length_mm = r.length_mm;
         c.spec.limits.roller_load_N = std::min(c.spec.limits.roller_load_N, r.load_limit_N);
       }
-      c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
+      if (s.contact3d)
+        SolveCandidate3D(s, c);
+      else
+        c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
       res.value_evaluations += c.outcome.result.value_evaluations;
       res.gradient_evaluations += c.outcome.result.gradient_evaluations;
       if (c.feasible() && (res.best < 0 || c.outcome.check->outer_diameter_mm <
@@ -314,7 +322,11 @@ Result Run(const Study& s, const RunContext& ctx) {
     }
     progress.Update(1.0, std::to_string(res.candidates.size()) + " candidates");
   }
-  if (res.best >= 0) {
+  if (res.best >= 0 && s.contact3d) {
+    // The limit sensitivities re-solve the line problem: not done for the 3D contact.
+    const Candidate& b = res.candidates[res.best];
+    res.half_space = objectives::HalfSpaceRecheck(b.spec, *s.contact3d, *b.outcome.design, b.outcome3d->crowning);
+  } else if (res.best >= 0) {
     const Candidate& b = res.candidates[res.best];
     res.limit_sensitivity = objectives::LimitSensitivity(b.spec, s.options, b.outcome);
   } else {
@@ -343,6 +355,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   if (result.best < 0) {
     res["best"] = nullptr;
     res["notes"] = {result.blocking_message};
+    if (s.contact3d) AddContact3DJson(s, result, res);
     return res;
   }
   const Candidate& best = result.candidates[result.best];
@@ -371,6 +384,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   b["limit_sensitivity"] = nlohmann::json::object();
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
   res["best"] = b;
+  if (s.contact3d) AddContact3DJson(s, result, res);
   return res;
 }
 
@@ -392,6 +406,7 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     if (std::isfinite(best.spec.limits.roller_load_N)) lim["roller_load_N"] = best.spec.limits.roller_load_N;
     a["limits"] = lim;
     a["analysis"] = {{"angle_steps", s.options.dense_steps}};
+    if (s.contact3d) AddContact3DAnalysis(s, best, a);
     out.AddJson("best_lcr_analysis.json", a);
   } else {
     out.MarkIncomplete(result.blocking_message);

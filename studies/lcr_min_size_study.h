@@ -15,6 +15,7 @@
 
 #include "objectives/lcr_min_size.h"
 #include "objectives/lcr_sizing.h"
+#include "objectives/lcr_sizing3d.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -35,6 +36,9 @@ struct Study {
   std::vector<CatalogueRoller> catalogue;
   objectives::LcrMinSizeOptions options;
   objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate;  ///< as written
+  /// The finite-length contact (crowning, misalignment, overload; studies/lcr_min_size_contact.h);
+  /// empty: the line model.
+  std::optional<objectives::LcrSizing3DSpec> contact3d;
 };
 
 struct Candidate {
@@ -42,6 +46,7 @@ struct Candidate {
   int roller = -1;  ///< index into Study::catalogue, −1 without a catalogue
   objectives::LcrSizingSpec spec;  ///< what was solved (counts, roller, the study's limits)
   objectives::LcrMinSizeOutcome outcome;
+  std::optional<objectives::LcrMinSize3DOutcome> outcome3d;  ///< with Study::contact3d
   bool feasible() const { return outcome.converged; }
 };
 
@@ -51,6 +56,7 @@ struct Result {
   /// d(outer diameter)/d(limit) of the best design [mm per unit of the limit], by limit key.
   std::map<std::string, double> limit_sensitivity;
   int value_evaluations = 0, gradient_evaluations = 0;
+  std::optional<objectives::LcrHalfSpaceCheck> half_space;  ///< best design, with Study::contact3d
   double seconds = 0;  ///< wall time of the search (summary only, never in result.json)
   /// When nothing fits: the limit that blocks most, the closest candidate, and the value of that
   /// limit that its closest point needs.

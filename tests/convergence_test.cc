@@ -63,6 +63,7 @@ json Coarse(json s) {
     s["optimizer"]["samples_per_period"] = 8;
     s["optimizer"]["tolerance"] = 1e-6;
     s["search"]["max_lobes"] = 14;
+    if (s.contains("contact")) s["contact"]["slices"] = 10;  // the 3D sizing examples
   }
   if (kind == "cycloid_ltca") {
     s["analysis"] = {{"crank_angles_per_mesh_period", 4}, {"grid", {8, 8}}, {"estimate_error", false}};

@@ -1,0 +1,438 @@
+// See lcr_sizing3d.h. The LCR pipeline and the slices model instantiated for ceres::Jet<double, 8>.
+#include "objectives/lcr_sizing3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "model/contact/hertz.h"
+#include "model/contact/roller_half_space.h"
+#include "model/lcr/contact3d_edge.h"
+#include "model/lcr/cycle.h"
+#include "model/lcr/forces.h"
+#include "model/lcr/profile.h"
+
+namespace camopt::objectives {
+namespace {
+
+constexpr int kJetSize = 8;  // e, r_dA, r_dB, d_rA, d_rB, R, f_A, f_B at most
+// The solvers meet constraints to about their tolerance; the 3D stress limit is tightened by more
+// than the line limits of lcr_min_size.cc (1e-5) because its rows sit at fixed angles of the dense
+// grid, whose maximum may move to a neighbouring angle (a second-order change, ~1e-5 here).
+constexpr double kStressMargin3D = 1e-4;
+constexpr double kEdgeMargin = 1e-3;       // the edge rows: >= this (dimensionless)
+constexpr double kLimitMargin = 1e-5;      // as lcr_min_size.cc
+constexpr double kLengthMargin_mm = 1e-4;  // as lcr_min_size.cc
+constexpr double kNearFraction = 0.03;     // contacts within 3% of the limit get rows
+constexpr int kPeaksPerCam = 4;
+constexpr int kEdgeContacts = 6;           // overload contacts checked per cam
+constexpr int kMaxRounds = 8;
+
+int RollerVariables(const LcrSizingSpec& s) { return s.fixed_roller_diameter_mm ? 0 : (s.same_roller ? 1 : 2); }
+int BaseVariables(const LcrSizingSpec& s) { return 4 + RollerVariables(s); }
+
+template <typename T>
+lcr::Reducer<T> DesignOf(const LcrSizingSpec& s, std::span<const T> x) {
+  const int rollers = RollerVariables(s);
+  const T rr_a = rollers > 0 ? x[3] / T(2.0) : T(*s.fixed_roller_diameter_mm / 2.0);
+  const T rr_b = rollers == 2 ? x[4] / T(2.0) : rr_a;
+  lcr::Reducer<T> r;
+  r.eccentricity = x[0];
+  r.input = {s.lobes_a, s.rollers_a, x[1], rr_a, T(s.roller_length_mm), T(s.cam_thickness_mm)};
+  r.output = {s.lobes_b, s.rollers_b, x[2], rr_b, T(s.roller_length_mm), T(s.cam_thickness_mm)};
+  return r;
+}
+
+template <typename T>
+lcr::RollerCrowning<T> CrowningOf(const LcrSizing3DSpec& s3, std::span<const T> x, int base_vars, int side) {
+  lcr::RollerCrowning<T> c = s3.crowning.cast<T>();
+  if (s3.coefficient_range_mm) c.coefficient = x[base_vars + side];
+  return c;
+}
+
+// Margin of one contact (header): the line margin of lcr_sizing.cc with the slices peak.
+template <typename T>
+T StressMargin3D(const LcrSizing3DSpec& s3, double p_lim, double e_star, const lcr::CamSide<T>& cam,
+                 const T& force, const T& curvature, const lcr::RollerCrowning<T>& crowning) {
+  const T rr = cam.roller_radius;
+  const T r_eff = rr * (T(1.0) - rr * curvature);
+  if (!(Value(r_eff) > 0) || !(Value(force) > 0)) {
+    const T c = contact::LineContactLoadPerRadius(T(p_lim), cam.contact_length(), T(e_star));
+    return (r_eff - force / c) / rr;
+  }
+  const auto sol = lcr::RollerContactSlices(force, r_eff, cam.contact_length(), e_star, crowning,
+                                            T(s3.contact.misalignment_rad), s3.contact.slices);
+  const T ratio = sol.peak_pressure / T(p_lim);
+  return r_eff / rr * (T(1.0) - ratio * ratio);
+}
+
+template <typename T>
+T EdgeMarginAt(const LcrSizing3DSpec& s3, double e_star, const lcr::CamSide<T>& cam, const T& force,
+               const T& curvature, const lcr::RollerCrowning<T>& crowning) {
+  const T rr = cam.roller_radius;
+  const T r_eff = rr * (T(1.0) - rr * curvature);
+  if (!(Value(r_eff) > 0) || !(Value(force) > 0)) return T(-1.0);  // undercut: no contact to assess
+  const T gamma(s3.contact.misalignment_rad);
+  const auto sol =
+      lcr::RollerContactSlices(force, r_eff, cam.contact_length(), e_star, crowning, gamma, s3.contact.slices);
+  return lcr::EdgeMargin(sol, force, r_eff, cam.contact_length(), e_star, crowning, gamma);
+}
+
+// Force and curvature of one roller of one cam at θ (the load stage, no friction: linear in torque).
+template <typename T>
+std::pair<T, T> ContactAt(const LcrSizingSpec& s, const lcr::Reducer<T>& r, int side, double theta, int roller) {
+  const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
+  const lcr::AngleLoads<T> a = lcr::AnalyzeAngle(r, s.material, load, T(theta), lcr::Stages{true, false, false});
+  const lcr::SideLoads<T>& sl = side == 0 ? a.input : a.output;
+  return {sl.force[roller], sl.contacts[roller].curvature};
+}
+
+// The 3D rows (stress margins per cam, then edge margins per cam).
+template <typename T>
+void Evaluate3D(const LcrSizingSpec& s, const LcrSizing3DSpec& s3, double p_lim, const LcrTracked3D& tr,
+                std::span<const T> x, std::span<T> y) {
+  const int nb = BaseVariables(s);
+  const lcr::Reducer<T> r = DesignOf(s, x);
+  const double e_star = s.material.composite_modulus_MPa();
+  const double overload = s3.overload_torque_Nmm / s.output_torque_Nmm;
+  size_t o = 0;
+  try {
+    for (int side = 0; side < 2; ++side)
+      for (const LcrContactSample& c : tr.stress)
+        if (c.side == side) {
+          const auto [f, k] = ContactAt(s, r, side, c.theta_rad, c.roller);
+          y[o++] = StressMargin3D(s3, p_lim, e_star, r.side(side == 0 ? lcr::Side::kInput : lcr::Side::kOutput), f, k,
+                                  CrowningOf(s3, x, nb, side));
+        }
+    if (s3.overload_torque_Nmm > 0)
+      for (int side = 0; side < 2; ++side)
+        for (const LcrContactSample& c : tr.edge)
+          if (c.side == side) {
+            const auto [f, k] = ContactAt(s, r, side, c.theta_rad, c.roller);
+            y[o++] = EdgeMarginAt(s3, e_star, r.side(side == 0 ? lcr::Side::kInput : lcr::Side::kOutput),
+                                  T(overload) * f, k, CrowningOf(s3, x, nb, side));
+          }
+  } catch (const std::exception&) {
+    for (; o < y.size(); ++o) y[o] = T(std::numeric_limits<double>::quiet_NaN());
+  }
+}
+
+int Count(const std::vector<LcrContactSample>& v, int side) {
+  return int(std::count_if(v.begin(), v.end(), [&](const LcrContactSample& c) { return c.side == side; }));
+}
+
+// The polish problem's evaluator: the base problem's outputs (crowning columns zero) then the 3D rows.
+class Composite final : public Evaluator {
+ public:
+  Composite(std::unique_ptr<Evaluator> base, std::unique_ptr<Evaluator> rows, int num_vars,
+            std::vector<OutputBlock> blocks)
+      : Evaluator(num_vars, std::move(blocks)), base_(std::move(base)), rows_(std::move(rows)) {}
+
+ protected:
+  void DoEval(std::span<const double> x, std::span<double> y) const override {
+    const int nb = base_->num_vars(), mb = base_->num_outputs();
+    base_->Eval(x.first(nb), y.first(mb));
+    rows_->Eval(x, y.subspan(mb));
+  }
+  void DoEvalWithJacobian(std::span<const double> x, std::span<double> y, std::span<double> jac) const override {
+    const int n = num_vars(), nb = base_->num_vars(), mb = base_->num_outputs(), mr = rows_->num_outputs();
+    std::vector<double> jb(size_t(mb) * nb);
+    base_->EvalWithJacobian(x.first(nb), y.first(mb), jb);
+    std::fill(jac.begin(), jac.end(), 0.0);
+    for (int i = 0; i < mb; ++i)
+      for (int j = 0; j < nb; ++j) jac[size_t(i) * n + j] = jb[size_t(i) * nb + j];
+    rows_->EvalWithJacobian(x, y.subspan(mb), jac.subspan(size_t(mb) * n, size_t(mr) * n));
+  }
+
+ private:
+  std::unique_ptr<Evaluator> base_, rows_;
+};
+
+LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
+  LcrSizingSpec t = spec;
+  t.limits.contact_stress_MPa = kInf;  // held by the 3D rows
+  t.limits.roller_load_N *= 1 - kLimitMargin;
+  t.limits.roller_gap_mm += kLengthMargin_mm;
+  t.limits.undercut_margin_mm += kLengthMargin_mm;
+  if (t.limits.min_efficiency > 0) t.limits.min_efficiency *= 1 + kLimitMargin;
+  t.form = LcrConstraintForm::kActiveSet;
+  return t;
+}
+
+double PhaseDistance(double a, double b, double period) {
+  const double d = std::fmod(std::abs(a - b), period);
+  return std::min(d, period - d);
+}
+
+void AddUnique(std::vector<LcrContactSample>& to, const LcrContactSample& c, bool& changed) {
+  if (std::find(to.begin(), to.end(), c) != to.end()) return;
+  to.push_back(c);
+  changed = true;
+}
+
+struct DenseResult {
+  LcrDenseCheck check;
+  LcrContact3DCheck contact;
+  LcrActiveSet near;
+  LcrTracked3D fresh;  // contacts near a limit
+};
+
+// Step 2's dense check of x. @throws std::domain_error for a degenerate design.
+DenseResult Dense(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, std::span<const double> x, int steps) {
+  DenseResult d;
+  const int nb = BaseVariables(spec);
+  const lcr::Reducer<double> r = LcrDesign(spec, x.first(nb));
+  LcrSizingSpec no_stress = spec;
+  no_stress.limits.contact_stress_MPa = kInf;
+  d.check = DenseCheck(no_stress, r, steps, &d.near);
+  const double e_star = spec.material.composite_modulus_MPa();
+  const lcr::LoadCase load{spec.output_torque_Nmm, 0.0, 0.0};
+  const lcr::CycleSeries series = lcr::AnalyzeCycle(r, spec.material, load, steps, lcr::Stages{true, false, false});
+  lcr::ContactModelOptions o = s3.contact;
+  o.model = lcr::ContactModel::kSlices;
+  const double p_lim = spec.limits.contact_stress_MPa;
+  const double overload = s3.overload_torque_Nmm / spec.output_torque_Nmm;
+  for (int k = 0; k < 2; ++k) {
+    const lcr::Side side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
+    const lcr::SideSeries& ss = k == 0 ? series.input : series.output;
+    const lcr::RollerCrowning<double> crown = CrowningOf<double>(s3, x, nb, k);
+    lcr::Contact3DCycleSide c3 = lcr::AnalyzeCycleContact3D(r, side, series, e_star, crown, o);
+    d.check.max_stress_MPa[k] = c3.max_contact_stress_MPa;
+    // The roller of an angle's largest (estimated) pressure: the one with that angle's force.
+    auto roller_of = [&](int i) {
+      const auto& f = ss.roller_force_N[i];
+      for (size_t j = 0; j < f.size(); ++j)
+        if (f[j] == c3.stress_force_N[i]) return int(j);
+      return -1;
+    };
+    const double period = LcrLoadPeriod(spec, side);
+    const double vmax = c3.max_contact_stress_MPa;
+    const double threshold = (1 - kNearFraction) * std::min(p_lim, vmax);
+    std::vector<std::pair<double, int>> peaks;
+    if (c3.worst_angle >= 0) peaks.push_back({kInf, c3.worst_angle});
+    const auto& v = c3.max_stress_MPa;
+    for (int i = 0; i < steps; ++i)
+      if (v[i] >= threshold && v[i] >= v[(i + steps - 1) % steps] && v[i] >= v[(i + 1) % steps]) peaks.push_back({v[i], i});
+    std::stable_sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<double> chosen;
+    bool changed = false;  // (unused here: the caller merges)
+    for (const auto& [value, i] : peaks) {
+      const double theta = series.theta_rad[i];
+      const bool seen = std::any_of(chosen.begin(), chosen.end(),
+                                    [&](double t) { return PhaseDistance(t, theta, period) < period / 8; });
+      const int roller = i == c3.worst_angle ? c3.worst_roller : roller_of(i);
+      if (seen || roller < 0) continue;
+      chosen.push_back(theta);
+      AddUnique(d.fresh.stress, {k, theta, roller}, changed);
+      if (int(chosen.size()) == kPeaksPerCam) break;
+    }
+    // Overload: exact slices solves at the largest forces (one per angle, distinct phases).
+    if (s3.overload_torque_Nmm > 0) {
+      std::vector<double> fm(steps);
+      std::vector<int> jm(steps);
+      for (int i = 0; i < steps; ++i) {
+        const auto& f = ss.roller_force_N[i];
+        jm[i] = int(std::max_element(f.begin(), f.end()) - f.begin());
+        fm[i] = f[jm[i]];
+      }
+      std::vector<std::pair<double, std::pair<int, int>>> forces;
+      for (int i = 0; i < steps; ++i)
+        if (fm[i] > 0 && fm[i] >= fm[(i + steps - 1) % steps] && fm[i] >= fm[(i + 1) % steps])
+          forces.push_back({fm[i], {i, jm[i]}});
+      std::stable_sort(forces.begin(), forces.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+      std::vector<double> used;
+      const lcr::CamSide<double>& cam = r.side(side);
+      for (const auto& [f, ij] : forces) {
+        const double theta = series.theta_rad[ij.first];
+        if (std::any_of(used.begin(), used.end(), [&](double t) { return PhaseDistance(t, theta, period) < period / 16; }))
+          continue;
+        used.push_back(theta);
+        const auto rc = lcr::RollerContacts(r, side, theta);
+        const double m = EdgeMarginAt(s3, e_star, cam, overload * f, rc[ij.second].curvature, crown);
+        if (m < d.contact.overload_edge_margin[k]) d.contact.overload_edge_margin[k] = m;
+        d.contact.overload_edge_loaded[k] = d.contact.overload_edge_loaded[k] || m <= 0;
+        if (m < 0.1) AddUnique(d.fresh.edge, {k, theta, ij.second}, changed);
+        if (int(used.size()) == kEdgeContacts) break;
+      }
+      if (Count(d.fresh.edge, k) == 0) {
+        // Keep one row per cam at the largest force so that the end constraint is always present.
+        if (!forces.empty())
+          AddUnique(d.fresh.edge, {k, series.theta_rad[forces[0].second.first], forces[0].second.second}, changed);
+      }
+    }
+    d.contact.design[k] = std::move(c3);
+  }
+  const double stress = std::max(d.check.max_stress_MPa[0], d.check.max_stress_MPa[1]);
+  if (!(stress <= p_lim)) d.check.violations.push_back({"contact_stress_MPa", stress, p_lim});
+  if (s3.overload_torque_Nmm > 0) {
+    const double m = std::min(d.contact.overload_edge_margin[0], d.contact.overload_edge_margin[1]);
+    if (!(m > 0)) d.check.violations.push_back({"overload_edge_margin", m, 0.0});
+  }
+  return d;
+}
+
+}  // namespace
+
+Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec& s3, double stress_limit_MPa,
+                               const LcrTracked3D& tracked) {
+  Problem p = MakeLcrSizingProblem(base);
+  const int nb = p.num_vars();
+  if (s3.coefficient_range_mm) {
+    const auto [lo, hi] = *s3.coefficient_range_mm;
+    const double start = std::clamp(s3.crowning.coefficient, lo, hi);
+    for (const char* side : {"input", "output"})
+      p.variables.push_back({std::string(side) + "_crowning_coefficient_mm", lo, hi, start, std::max(hi, 1e-3) / 2});
+  }
+  std::vector<OutputBlock> rows;
+  int offset = 0;
+  auto add = [&](const std::string& name, int size) {
+    rows.push_back({name, offset, size});
+    offset += size;
+  };
+  add("input_stress_margin_3d", Count(tracked.stress, 0));
+  add("output_stress_margin_3d", Count(tracked.stress, 1));
+  if (s3.overload_torque_Nmm > 0) {
+    add("input_edge_margin", Count(tracked.edge, 0));
+    add("output_edge_margin", Count(tracked.edge, 1));
+  }
+  const LcrSizingSpec s = base;
+  const LcrSizing3DSpec spec3 = s3;
+  const LcrTracked3D tr = tracked;
+  const int n = p.num_vars();
+  auto row_eval = MakeEvaluator<kJetSize>(
+      n, rows, [s, spec3, tr, stress_limit_MPa](auto x, auto y) { Evaluate3D(s, spec3, stress_limit_MPa, tr, x, y); });
+  std::vector<OutputBlock> blocks = p.evaluator->blocks();
+  const int mb = p.evaluator->num_outputs();
+  for (OutputBlock b : rows) {
+    b.offset += mb;
+    blocks.push_back(b);
+  }
+  p.evaluator = std::make_unique<Composite>(std::move(p.evaluator), std::move(row_eval), n, blocks);
+  for (const OutputBlock& b : rows) {
+    if (b.size == 0) continue;
+    const bool edge = b.name.find("edge") != std::string::npos;
+    p.constraints.push_back({b.name, edge ? kEdgeMargin : 0.0, kInf, 1.0});
+  }
+  (void)nb;
+  return p;
+}
+
+LcrHalfSpaceCheck HalfSpaceRecheck(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
+                                   const lcr::Reducer<double>& r,
+                                   const std::array<lcr::RollerCrowning<double>, 2>& crowning) {
+  LcrHalfSpaceCheck out;
+  const double e_star = spec.material.composite_modulus_MPa();
+  const lcr::LoadCase load{spec.output_torque_Nmm, 0.0, 0.0};
+  const lcr::CycleSeries series =
+      lcr::AnalyzeCycle(r, spec.material, load, 3600, lcr::Stages{true, false, false});
+  lcr::ContactModelOptions o = s3.contact;
+  o.model = lcr::ContactModel::kHalfSpace;
+  for (int k = 0; k < 2; ++k) {
+    const lcr::Side side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
+    const lcr::Contact3DCycleSide c = lcr::AnalyzeCycleContact3D(r, side, series, e_star, crowning[k], o);
+    out.half_space_MPa[k] = c.max_contact_stress_MPa;
+    out.slices_MPa[k] = c.slices_peak_at_worst_MPa;
+    out.difference_percent[k] = 100.0 * (c.slices_peak_at_worst_MPa - c.max_contact_stress_MPa) / c.max_contact_stress_MPa;
+    out.edge_loaded[k] = c.edge_loaded;
+    out.cell_dx_mm = c.cell_dx_mm, out.cell_dy_mm = c.cell_dy_mm;
+    out.converged = out.converged && c.converged;
+  }
+  return out;
+}
+
+LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
+                                      const LcrMinSizeOptions& options) {
+  LcrMinSize3DOutcome out;
+  // Step 1: the line-model optimum (the fast path) as the start.
+  LcrMinSizeOutcome line = SolveLcrMinSize(spec, options);
+  if (line.converged) out.line_outer_diameter_mm = line.check->outer_diameter_mm;
+  LcrSizing3DSpec s = s3;
+  std::vector<double> x = line.x;
+  if (x.empty()) {
+    out.outcome = std::move(line);
+    out.outcome.converged = false;
+    out.outcome.note = "the line-model search found no point to start the 3D search from";
+    return out;
+  }
+  const int nb = BaseVariables(spec);
+  if (s.coefficient_range_mm) {
+    // Lundberg's coefficient of the largest roller force over the shorter contact length.
+    const lcr::Reducer<double> r = LcrDesign(spec, x);
+    const double f_max = line.check ? std::max(line.check->max_force_N[0], line.check->max_force_N[1]) : 0.0;
+    const double f0 = contact::LundbergCoefficient(f_max, r.input.contact_length(), spec.material.composite_modulus_MPa());
+    const auto [lo, hi] = *s.coefficient_range_mm;
+    s.crowning.coefficient = std::clamp(f0, lo, hi);
+    x.push_back(s.crowning.coefficient);
+    x.push_back(s.crowning.coefficient);
+  }
+  const double p_lim = spec.limits.contact_stress_MPa;
+  const LcrSizingSpec tight = Tightened(spec);
+  LcrActiveSet active = line.active;
+  LcrTracked3D tracked;
+  LcrMinSizeOutcome& o = out.outcome;
+  int values = line.result.value_evaluations, gradients = line.result.gradient_evaluations,
+      iterations = line.result.iterations;
+  bool done = false;
+  for (int round = 1; round <= kMaxRounds && !done; ++round) {
+    DenseResult d;
+    try {
+      d = Dense(spec, s, x, options.dense_steps);
+    } catch (const std::domain_error& e) {
+      o.note = std::string("degenerate geometry: ") + e.what();
+      break;
+    }
+    // The tracked sets grow: the fresh contacts join (the line force peaks are merged by phase).
+    bool changed = round == 1;
+    for (const auto& c : d.fresh.stress) AddUnique(tracked.stress, c, changed);
+    for (const auto& c : d.fresh.edge) AddUnique(tracked.edge, c, changed);
+    for (int k = 0; k < 2; ++k)
+      for (const LcrSample& f : d.near.force[k]) {
+        auto& list = active.force[k];
+        if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f), changed = true;
+      }
+    if (round > 1) {
+      o.check = d.check;
+      out.contact = d.contact;
+      if (o.result.ok() && d.check.ok()) {
+        o.converged = true;
+        break;
+      }
+      if (!changed) break;
+    }
+    LcrSizingSpec t = tight;
+    t.active = active;
+    Problem p = MakeLcrSizing3DProblem(t, s, p_lim * (1 - kStressMargin3D), tracked);
+    optimizers::SolverOptions so = options.solver;
+    so.initial = x;
+    o.result = optimizers::Solve(p, so);
+    values += o.result.value_evaluations;
+    gradients += o.result.gradient_evaluations;
+    iterations += o.result.iterations;
+    o.polish_rounds = round;
+    if (o.result.x.empty()) break;
+    x = o.result.x;
+    if (round == kMaxRounds) {
+      try {
+        const DenseResult last = Dense(spec, s, x, options.dense_steps);
+        o.check = last.check;
+        out.contact = last.contact;
+        o.converged = o.result.ok() && last.check.ok();
+      } catch (const std::domain_error& e) {
+        o.note = std::string("degenerate geometry: ") + e.what();
+      }
+    }
+  }
+  o.x = x;
+  o.design = LcrDesign(spec, std::span<const double>(x).first(nb));
+  o.active = active;
+  o.result.value_evaluations = values;
+  o.result.gradient_evaluations = gradients;
+  o.result.iterations = iterations;
+  // One start: the line optimum (the multistart of the line search chose it).
+  o.starts = {LcrStartOutcome{o.result.status, o.converged, o.converged ? o.check->outer_diameter_mm : 0.0}};
+  for (int k = 0; k < 2; ++k) out.crowning[k] = CrowningOf<double>(s, x, nb, k);
+  out.tracked = tracked;
+  return out;
+}
+
+}  // namespace camopt::objectives

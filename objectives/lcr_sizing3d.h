@@ -1,0 +1,103 @@
+// The minimum-size search of one LCR lobe/roller combination under the finite-length contact
+// model (issue 12; docs/lcr.md "Sizing with crowned rollers"): the stress limit holds for the
+// slices model (model/lcr/contact3d.h) at the study's misalignment, the roller crowning
+// coefficient of each cam may be a variable, and at an overload torque the pressure must stay off
+// the contact's ends.
+//
+// Method (on top of objectives/lcr_min_size.h):
+// 1. The line-model search (SolveLcrMinSize) gives the starting design; the crowning starts at
+//    Lundberg's coefficient of the largest roller force (clamped to its range).
+// 2. Rounds of a polish problem: the line problem in its active-set form without stress rows
+//    (geometry, undercut, gap, pitch, the tracked roller-force peaks) with the crowning
+//    coefficients appended as variables, plus, per tracked contact (cam, input angle, roller):
+//    - `input_stress_margin_3d` / `output_...`: s = (R'/r_r)(1 − p²/p_lim²), p the slices peak
+//      pressure (the line margin of lcr_sizing.h with the 3D peak; the line form where R' <= 0);
+//    - `input_edge_margin` / `output_...` (with an overload torque): at the contact's force scaled
+//      to the overload torque (the forces of the load stage are linear in the torque), the end
+//      slice's separation over Lundberg's length F/(π l E*) minus its line load over F/l, the
+//      smaller of the two ends: positive when the pressure stays off the ends, negative when it
+//      reaches one, continuous at the onset (a kink there, like any max).
+//    Derivatives are exact: Jets through the force pipeline and the slices model's implicit step.
+//    Tracked contacts are fixed (angle, roller) pairs; after each solve the dense check (3600
+//    angles: the line check for geometry and forces, lcr::AnalyzeCycleContact3D for the 3D
+//    stress, exact slices solves at the largest overload forces for the ends) adds the contacts
+//    that come near a limit, until it holds (at most 8 rounds).
+// 3. The best design is re-checked with the half_space model (Half-space check below).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/lcr/contact3d.h"
+#include "model/lcr/contact3d_cycle.h"
+#include "objectives/lcr_min_size.h"
+#include "objectives/lcr_sizing.h"
+
+namespace camopt::objectives {
+
+struct LcrSizing3DSpec {
+  lcr::ContactModelOptions contact;  ///< slices N, misalignment γ, half_space grid of the check
+  /// Crowning of both cams (type and fixed parameters; the coefficient is the start value when it
+  /// is a variable).
+  lcr::RollerCrowning<double> crowning;
+  /// Logarithmic coefficient f of each cam as a variable over this range [mm] (empty: fixed).
+  std::optional<std::array<double, 2>> coefficient_range_mm;
+  double overload_torque_Nmm = 0;  ///< 0: no end constraint
+};
+
+/// One tracked contact of the 3D rows.
+struct LcrContactSample {
+  int side = 0;  ///< 0 input cam, 1 output cam
+  double theta_rad = 0;
+  int roller = 0;
+  bool operator==(const LcrContactSample&) const = default;
+};
+
+/// Rows of the 3D polish problem.
+struct LcrTracked3D {
+  std::vector<LcrContactSample> stress, edge;
+};
+
+/// The polish problem (header step 2): variables of MakeLcrSizingProblem(base) followed by
+/// `input_crowning_coefficient_mm`, `output_crowning_coefficient_mm` when they are variables.
+/// base: the tightened spec in kActiveSet form without a stress limit; stress_limit_MPa the
+/// (tightened) 3D limit.
+Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec& spec3d, double stress_limit_MPa,
+                               const LcrTracked3D& tracked);
+
+/// The 3D numbers of a design (header step 2's dense check).
+struct LcrContact3DCheck {
+  std::array<lcr::Contact3DCycleSide, 2> design;  ///< slices model over the cycle per cam
+  std::array<double, 2> overload_edge_margin{kInf, kInf};  ///< smallest over the checked contacts
+  std::array<bool, 2> overload_edge_loaded{false, false};
+};
+
+struct LcrHalfSpaceCheck {
+  std::array<double, 2> half_space_MPa{}, slices_MPa{};  ///< at each cam's worst contact
+  std::array<double, 2> difference_percent{};             ///< (slices − half_space)/half_space
+  std::array<bool, 2> edge_loaded{false, false};
+  double cell_dx_mm = 0, cell_dy_mm = 0;
+  bool converged = true;
+};
+
+struct LcrMinSize3DOutcome {
+  LcrMinSizeOutcome outcome;  ///< check->max_stress_MPa holds the 3D (slices) peaks
+  std::array<lcr::RollerCrowning<double>, 2> crowning;  ///< the chosen crowning per cam
+  std::optional<LcrContact3DCheck> contact;
+  LcrTracked3D tracked;
+  double line_outer_diameter_mm = 0;  ///< the line-model optimum it started from (0: none)
+};
+
+/// Solves one combination under the 3D contact model (header).
+LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& spec3d,
+                                      const LcrMinSizeOptions& options);
+
+/// The half_space re-check of a design: each cam's worst contact of the slices cycle solved by
+/// DC-FFT on the spec's grid.
+LcrHalfSpaceCheck HalfSpaceRecheck(const LcrSizingSpec& spec, const LcrSizing3DSpec& spec3d,
+                                   const lcr::Reducer<double>& design,
+                                   const std::array<lcr::RollerCrowning<double>, 2>& crowning);
+
+}  // namespace camopt::objectives

@@ -1,0 +1,141 @@
+// See lcr_min_size_contact.h.
+#include "studies/lcr_min_size_contact.h"
+
+#include <cmath>
+
+#include "studies/lcr_contact_input.h"
+#include "studies/lcr_min_size_study.h"
+
+namespace camopt::studies::lcr_min_size {
+
+namespace {
+
+const char* CrowningTypeName(contact::CrowningType t) {
+  switch (t) {
+    case contact::CrowningType::kNone: return "none";
+    case contact::CrowningType::kCircular: return "circular";
+    case contact::CrowningType::kPartial: return "partial";
+    case contact::CrowningType::kLogarithmic: return "logarithmic";
+  }
+  return "none";
+}
+
+nlohmann::json CrowningJson(const lcr::RollerCrowning<double>& c) {
+  nlohmann::json j = {{"type", CrowningTypeName(c.type)}};
+  switch (c.type) {
+    case contact::CrowningType::kNone: break;
+    case contact::CrowningType::kCircular: j["radius_mm"] = c.radius; break;
+    case contact::CrowningType::kPartial: j["radius_mm"] = c.radius, j["flat_length_mm"] = c.flat_length; break;
+    case contact::CrowningType::kLogarithmic:
+      j["coefficient_mm"] = c.coefficient, j["effective_length_mm"] = c.effective_length;
+      break;
+  }
+  return j;
+}
+
+nlohmann::json MaybeFinite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm) {
+  const Node vars = root["variables"], fixed = root["fixed"];
+  const bool has_contact = root.Has("contact"), has_crown = fixed.Has("crowning"),
+             has_var = vars.Has("crowning_coefficient_mm"),
+             has_over = root.Has("load") && root["load"].Has("overload_torque_Nm");
+  if (!has_contact && !has_crown && !has_var && !has_over) return std::nullopt;
+  objectives::LcrSizing3DSpec s;
+  if (has_contact) s.contact = ParseContactOptions(root["contact"]);
+  if (has_crown) s.crowning = ParseRollerCrowning(fixed["crowning"], roller_length_mm, !has_var);
+  if (has_var) {
+    if (!has_crown || s.crowning.type != contact::CrowningType::kLogarithmic)
+      vars["crowning_coefficient_mm"].Fail(
+          "a range only with fixed.crowning {\"type\": \"logarithmic\", \"effective_length_mm\": Le}");
+    const auto [lo, hi] = vars["crowning_coefficient_mm"].Range();
+    if (!(lo > 0) || !(hi <= 1.0)) vars["crowning_coefficient_mm"].Fail("a [lo, hi] range with 0 < lo < hi <= 1 mm");
+    s.coefficient_range_mm = std::array<double, 2>{lo, hi};
+  }
+  if (has_over) {
+    const Node over = root["load"]["overload_torque_Nm"];
+    s.overload_torque_Nmm = over.Positive() * 1000.0;
+    if (!(s.overload_torque_Nmm >= root["target"]["output_torque_Nm"].Number() * 1000.0))
+      over.Fail("an overload torque >= the target's output_torque_Nm");
+  }
+  if (s.contact.model == lcr::ContactModel::kLine) {
+    const std::string why = has_crown || has_var ? "crowned rollers" : has_over ? "an overload torque" : "";
+    if (!why.empty()) {
+      const std::string want = "slices or half_space with " + why + " (the line model ignores them)";
+      if (has_contact && root["contact"].Has("model")) root["contact"]["model"].Fail(want);
+      root.FailWith(std::string("\"contact\": {\"model\": ...} must be ") + want);
+    }
+    return std::nullopt;  // "contact": {"model": "line"}: the fast path
+  }
+  return s;
+}
+
+void SolveCandidate3D(const Study& s, Candidate& c) {
+  objectives::LcrMinSize3DOutcome o = objectives::SolveLcrMinSize3D(c.spec, *s.contact3d, s.options);
+  c.outcome = o.outcome;
+  c.outcome3d = std::move(o);
+}
+
+void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
+  const objectives::LcrSizing3DSpec& c3 = *s.contact3d;
+  res["contact"] = {{"model", ContactModelName(c3.contact.model)},
+                    {"sizing_model", "slices"},
+                    {"slices", c3.contact.slices},
+                    {"misalignment_mrad", c3.contact.misalignment_rad * 1e3},
+                    {"crowning", CrowningJson(c3.crowning)},
+                    {"crowning_variable", bool(c3.coefficient_range_mm)}};
+  if (c3.overload_torque_Nmm > 0) res["contact"]["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
+  for (size_t i = 0; i < r.candidates.size(); ++i) {
+    const auto& o3 = r.candidates[i].outcome3d;
+    if (!o3 || !r.candidates[i].feasible()) continue;
+    res["candidates"][i]["input"]["crowning"] = CrowningJson(o3->crowning[0]);
+    res["candidates"][i]["output"]["crowning"] = CrowningJson(o3->crowning[1]);
+    res["candidates"][i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
+  }
+  if (r.best < 0) return;
+  const objectives::LcrMinSize3DOutcome& b = *r.candidates[r.best].outcome3d;
+  nlohmann::json& best = res["best"];
+  const char* sides[2] = {"input", "output"};
+  nlohmann::json contact = {{"line_model_outer_diameter_mm", b.line_outer_diameter_mm}};
+  for (int k = 0; k < 2; ++k) {
+    best[sides[k]]["crowning"] = CrowningJson(b.crowning[k]);
+    if (!b.contact) continue;
+    const lcr::Contact3DCycleSide& d = b.contact->design[k];
+    nlohmann::json side = {{"max_contact_stress_MPa", MaybeFinite(d.max_contact_stress_MPa)},
+                           {"edge_loaded", d.edge_loaded},
+                           {"slice_width_mm", d.slice_width_mm},
+                           {"interpolation_error_MPa", d.interpolation_error_MPa}};
+    if (c3.overload_torque_Nmm > 0) {
+      side["overload_edge_margin"] = MaybeFinite(b.contact->overload_edge_margin[k]);
+      side["overload_edge_loaded"] = b.contact->overload_edge_loaded[k];
+    }
+    contact[sides[k]] = side;
+  }
+  best["contact"] = contact;
+  if (r.half_space) {
+    const objectives::LcrHalfSpaceCheck& h = *r.half_space;
+    nlohmann::json j = {{"cell_dx_mm", h.cell_dx_mm}, {"cell_dy_mm", h.cell_dy_mm}, {"converged", h.converged},
+                        {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}}};
+    for (int k = 0; k < 2; ++k)
+      j[sides[k]] = {{"half_space_MPa", MaybeFinite(h.half_space_MPa[k])},
+                     {"slices_MPa", MaybeFinite(h.slices_MPa[k])},
+                     {"slices_minus_half_space_percent", MaybeFinite(h.difference_percent[k])},
+                     {"edge_loaded", h.edge_loaded[k]}};
+    best["half_space_check"] = j;
+  }
+}
+
+void AddContact3DAnalysis(const Study& s, const Candidate& best, nlohmann::json& a) {
+  const objectives::LcrSizing3DSpec& c3 = *s.contact3d;
+  a["contact"] = {{"model", ContactModelName(c3.contact.model)},
+                  {"slices", c3.contact.slices},
+                  {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}},
+                  {"misalignment_mrad", c3.contact.misalignment_rad * 1e3}};
+  if (!best.outcome3d) return;
+  a["reducer"]["input"]["crowning"] = CrowningJson(best.outcome3d->crowning[0]);
+  a["reducer"]["output"]["crowning"] = CrowningJson(best.outcome3d->crowning[1]);
+}
+
+}  // namespace camopt::studies::lcr_min_size

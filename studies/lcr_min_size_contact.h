@@ -1,0 +1,36 @@
+// The finite-length contact in lcr_min_size (issue 12): parsing of the top-level "contact" object,
+// fixed.crowning, variables.crowning_coefficient_mm and load.overload_torque_Nm, the 3D solve of a
+// candidate (objectives/lcr_sizing3d.h) and its part of result.json. Kept apart from
+// lcr_min_size_study.cc, which calls these hooks only when the study has a 3D contact.
+#pragma once
+
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "objectives/lcr_sizing3d.h"
+#include "studies/input.h"
+
+namespace camopt::studies::lcr_min_size {
+
+struct Study;
+struct Candidate;
+struct Result;
+
+/// The 3D contact of the study, or nothing (the line model: the fast path). roller_length_mm: the
+/// longest roller the crowning must fit. @throws StudyError: crowning, misalignment or an
+/// overload torque with the line model; a crowning variable without a logarithmic crown.
+std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm);
+
+/// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d).
+void SolveCandidate3D(const Study& s, Candidate& c);
+
+/// Adds the 3D parts to result.json (res: ToJson's object): "contact", best.input/output.crowning,
+/// best.contact (3D peaks, edge margins, the line-model outer diameter), best.half_space_check,
+/// and each candidate's crowning.
+void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res);
+
+/// Adds crowning and contact to the best design's lcr_analysis study.
+void AddContact3DAnalysis(const Study& s, const Candidate& best, nlohmann::json& analysis);
+
+}  // namespace camopt::studies::lcr_min_size

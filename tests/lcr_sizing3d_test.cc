@@ -1,0 +1,200 @@
+// lcr_min_size with the finite-length contact (issue 12): AD gradients of the new constraint rows
+// (3D stress margin, overload edge margin) against central differences, the crowned sizing of one
+// combination held to an independent 3D check and the half_space re-check, the fast path of a
+// crowning-free study, and bad input (exit 2 with the JSON path).
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "model/lcr/contact3d_cycle.h"
+#include "model/lcr/contact3d_edge.h"
+#include "model/lcr/cycle.h"
+#include "model/lcr/forces.h"
+#include "objectives/lcr_sizing3d.h"
+#include "studies/input.h"
+#include "studies/lcr_min_size_study.h"
+#include "tests/test_util.h"
+
+namespace camopt {
+namespace {
+
+using nlohmann::json;
+using objectives::LcrContactSample;
+
+// Central differences of an iterative solve (line loads converged to 1e-10 relative): the
+// difference quotient carries ~1e-10/h ≈ 2e-5 relative noise.
+constexpr double kGradientRelTol = 2e-4;
+constexpr double kGradientAbsTol = 1e-6;
+constexpr double kHalfSpaceAgreementPercent = 3.0;  // issue 12: slices within 3% for crowned rollers
+
+// One combination of the ratio −90 study (20/21 + 26/27) near the crowned optimum.
+objectives::LcrSizingSpec Spec() {
+  objectives::LcrSizingSpec s;
+  s.lobes_a = 20, s.rollers_a = 21, s.lobes_b = 26, s.rollers_b = 27;
+  s.roller_length_mm = 10, s.cam_thickness_mm = 8;
+  s.output_torque_Nmm = 80e3;
+  s.limits.contact_stress_MPa = 1500;
+  s.limits.roller_load_N = 1050;
+  s.limits.undercut_margin_mm = 0.5;
+  s.limits.roller_gap_mm = 1.0;
+  s.form = objectives::LcrConstraintForm::kActiveSet;
+  return s;
+}
+
+objectives::LcrSizing3DSpec Spec3D() {
+  objectives::LcrSizing3DSpec s;
+  s.contact.model = lcr::ContactModel::kSlices;
+  s.contact.slices = 20;
+  s.contact.misalignment_rad = 1e-3;
+  s.crowning.type = contact::CrowningType::kLogarithmic;
+  s.crowning.effective_length = 12;
+  s.coefficient_range_mm = std::array<double, 2>{1e-4, 0.05};
+  s.overload_torque_Nmm = 120e3;
+  return s;
+}
+
+// The most loaded roller of a cam at θ.
+int TopRoller(const objectives::LcrSizingSpec& s, const std::vector<double>& x, int side, double theta) {
+  const auto r = objectives::LcrDesign(s, std::span<const double>(x).first(5));
+  const auto a = lcr::AnalyzeAngle(r, s.material, lcr::LoadCase{s.output_torque_Nmm, 0, 0}, theta);
+  const auto& f = (side == 0 ? a.input : a.output).force;
+  return int(std::max_element(f.begin(), f.end()) - f.begin());
+}
+
+void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0) {
+  objectives::LcrSizingSpec s = Spec();
+  s.limits.contact_stress_MPa = kInf;
+  objectives::LcrTracked3D tr;
+  for (int side = 0; side < 2; ++side)
+    for (double theta : {0.05, 0.11}) {
+      tr.stress.push_back({side, theta, TopRoller(s, x0, side, theta)});
+      tr.edge.push_back({side, theta, TopRoller(s, x0, side, theta)});
+    }
+  for (int side = 0; side < 2; ++side) s.active.force[side] = {{0.05, TopRoller(s, x0, side, 0.05), 0.0}};
+  const objectives::Problem p = objectives::MakeLcrSizing3DProblem(s, Spec3D(), 1500, tr);
+  ASSERT_EQ(p.num_vars(), 7);
+  const auto& ev = *p.evaluator;
+  const int first = ev.block("input_stress_margin_3d").offset, m = ev.num_outputs();
+  ASSERT_EQ(m - first, 8);
+  // f over the 7 variables: doubles through Eval, Jets through EvalWithJacobian and the chain rule.
+  auto f = [&](const auto& x) {
+    using T = typename std::decay_t<decltype(x)>::value_type;
+    std::vector<double> xv(7), y(m), jac(size_t(m) * 7);
+    for (int i = 0; i < 7; ++i) xv[i] = Value(x[i]);
+    std::vector<T> out;
+    if constexpr (std::is_same_v<T, double>) {
+      ev.Eval(xv, y);
+      for (int k = first; k < m; ++k) out.push_back(y[k]);
+    } else {
+      ev.EvalWithJacobian(xv, y, jac);
+      for (int k = first; k < m; ++k) {
+        T v(y[k]);
+        for (int i = 0; i < 7; ++i) v.v += jac[size_t(k) * 7 + i] * x[i].v;
+        out.push_back(v);
+      }
+    }
+    return out;
+  };
+  std::array<double, 7> x;
+  std::copy(x0.begin(), x0.end(), x.begin());
+  camopt::testing::ExpectJacobianMatchesCentralDifferences<7>(f, x, kGradientRelTol, kGradientAbsTol);
+}
+
+TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOffTheEnds) {
+  // e, r_dA, r_dB, d_r, R, f_A, f_B: crowned enough to keep the overload well off the ends (near
+  // the onset a slice entering the contact set is a kink of the discrete model, where central
+  // differences straddle two pieces).
+  const std::vector<double> x = {1.2266, 48.889, 48.889, 7.722, 52.75, 0.03, 0.025};
+  ExpectRowsMatchCentralDifferences(x);
+}
+
+TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOnTheEnds) {
+  // A light crown: at 1 mrad the overload pressure reaches an end (edge margins negative).
+  const std::vector<double> x = {1.2266, 48.889, 48.889, 7.722, 52.75, 0.002, 0.0015};
+  ExpectRowsMatchCentralDifferences(x);
+}
+
+TEST(LcrSizing3D, EdgeMarginSignFollowsTheEndSlices) {
+  // The margin is positive exactly when both end slices carry no load (model/lcr/contact3d_edge.h).
+  lcr::RollerCrowning<double> c;
+  c.type = contact::CrowningType::kLogarithmic;
+  c.effective_length = 12;
+  for (double f : {0.001, 0.004, 0.02}) {
+    c.coefficient = f;
+    const auto sol = lcr::RollerContactSlices<double>(900.0, 3.0, 8.0, 226373.6, c, 1e-3, 20);
+    const double m = lcr::EdgeMargin<double>(sol, 900.0, 3.0, 8.0, 226373.6, c, 1e-3);
+    EXPECT_EQ(m > 0, !sol.edge_loaded) << "f = " << f << ", margin " << m;
+  }
+}
+
+// One combination of the crowned example (max_lobes 14: 12/13 + 14/15).
+json CrownedStudy() {
+  json j = camopt::testing::Example("lcr_min_size_crowned.json");
+  j["search"]["max_lobes"] = 14;
+  return j;
+}
+
+TEST(LcrSizing3D, CrownedSizingHoldsTheLimitsUnderAnIndependentCheck) {
+  const json j = CrownedStudy();
+  const studies::Node root(&j, "crowned.json", "");
+  const auto study = studies::lcr_min_size::Parse(root);
+  ASSERT_TRUE(study.contact3d);
+  const auto res = studies::lcr_min_size::Run(study, studies::RunContext("", true));
+  ASSERT_GE(res.best, 0);
+  const auto& best = res.candidates[res.best];
+  const auto& r = *best.outcome.design;
+  const auto& o3 = *best.outcome3d;
+  // Independent check: the slices model over a finer cycle (7200 angles) with the chosen crowning.
+  const auto series = lcr::AnalyzeCycle(r, study.base.material, lcr::LoadCase{80e3, 0, 0}, 7200, lcr::Stages{true, false, false});
+  lcr::ContactModelOptions o = study.contact3d->contact;
+  o.model = lcr::ContactModel::kSlices;
+  for (int k = 0; k < 2; ++k) {
+    const auto side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
+    EXPECT_GT(o3.crowning[k].coefficient, 1e-4);  // a crown, inside its range
+    EXPECT_LT(o3.crowning[k].coefficient, 0.05);
+    const auto c = lcr::AnalyzeCycleContact3D(r, side, series, study.base.material.composite_modulus_MPa(),
+                                              o3.crowning[k], o);
+    // The 3600-angle check holds the limit; 7200 angles may find a peak between its angles.
+    EXPECT_LE(c.max_contact_stress_MPa, 1500 * (1 + 1e-4)) << k;
+    EXPECT_GT(o3.contact->overload_edge_margin[k], 0) << k;
+    ASSERT_TRUE(res.half_space);
+    EXPECT_LE(std::abs(res.half_space->difference_percent[k]), kHalfSpaceAgreementPercent) << k;
+  }
+  // The 3D limit makes the reducer larger than the line model's optimum.
+  EXPECT_GT(best.outcome.check->outer_diameter_mm, o3.line_outer_diameter_mm);
+  const json out = studies::lcr_min_size::ToJson(study, res);
+  EXPECT_EQ(out["best"]["input"]["crowning"]["type"], "logarithmic");
+  EXPECT_TRUE(out["best"].contains("half_space_check"));
+}
+
+TEST(LcrSizing3D, CrowningFreeStudyTakesTheLinePath) {
+  json j = camopt::testing::Example("lcr_min_size.json");
+  EXPECT_FALSE(studies::lcr_min_size::Parse(studies::Node(&j, "s.json", "")).contact3d);
+  j["contact"] = {{"model", "line"}};
+  EXPECT_FALSE(studies::lcr_min_size::Parse(studies::Node(&j, "s.json", "")).contact3d);
+}
+
+TEST(LcrSizing3D, BadInputIsExit2WithThePath) {
+  using camopt::testing::ExpectStudyRejected;
+  json line = CrownedStudy();
+  line["contact"]["model"] = "line";
+  line["contact"].erase("misalignment_mrad");
+  ExpectStudyRejected(line, "crown-line", "/contact/model", "line model ignores");
+  json no_crown = CrownedStudy();
+  no_crown["fixed"].erase("crowning");
+  ExpectStudyRejected(no_crown, "crown-var", "/variables/crowning_coefficient_mm", "logarithmic");
+  json short_le = CrownedStudy();
+  short_le["fixed"]["crowning"]["effective_length_mm"] = 10;
+  ExpectStudyRejected(short_le, "crown-le", "/fixed/crowning", "effective length");
+  json over = CrownedStudy();
+  over["load"]["overload_torque_Nm"] = 50;
+  ExpectStudyRejected(over, "crown-over", "/load/overload_torque_Nm", "overload");
+  json circ = CrownedStudy();
+  circ["fixed"]["crowning"] = {{"type", "circular"}, {"radius_mm", 500}};
+  ExpectStudyRejected(circ, "crown-circ", "/variables/crowning_coefficient_mm", "logarithmic");
+}
+
+}  // namespace
+}  // namespace camopt
