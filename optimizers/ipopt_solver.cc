@@ -163,6 +163,15 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
   app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_evaluations);
   app->Options()->SetNumericValue("max_cpu_time", options.max_seconds);
+  if (options.stall_iterations > 0) {
+    app->Options()->SetIntegerValue("acceptable_iter", options.stall_iterations);
+    app->Options()->SetNumericValue("acceptable_tol", 1e19);           // optimality error: not tested
+    app->Options()->SetNumericValue("acceptable_dual_inf_tol", 1e19);  // (it jumps at a kink)
+    app->Options()->SetNumericValue(
+        "acceptable_constr_viol_tol",
+        options.stall_violation > 0 ? options.stall_violation : options.constraint_tolerance);
+    app->Options()->SetNumericValue("acceptable_obj_change_tol", options.tolerance);
+  }
 
   SolverResult result;
   if (app->Initialize() != Ipopt::Solve_Succeeded) {

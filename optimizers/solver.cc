@@ -9,7 +9,7 @@ namespace camopt::optimizers {
 const char* ToString(SolverStatus status) {
   switch (status) {
     case SolverStatus::kConverged: return "converged";
-    case SolverStatus::kInfeasible: return "infeasible";
+    case SolverStatus::kInfeasible: return "stopped_infeasible";
     case SolverStatus::kIterationLimit: return "iteration_limit";
     case SolverStatus::kFailed: return "failed";
   }

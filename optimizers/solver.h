@@ -12,7 +12,9 @@ namespace camopt::optimizers {
 
 enum class SolverStatus {
   kConverged,       ///< the backend reports success and the final design satisfies every constraint
-  kInfeasible,      ///< the backend stopped at a design that violates a constraint
+  kInfeasible,      ///< the backend stopped at a design that violates a constraint ("stopped_infeasible":
+                    ///< about that end point only; a study reporting the best feasible point it saw
+                    ///< may still have one — its own `feasible` says so)
   kIterationLimit,  ///< evaluation/iteration/time limit reached (design feasible or not: see violation)
   kFailed,          ///< numerical failure or a non-finite model output; no design is reported
 };
@@ -25,6 +27,17 @@ struct SolverOptions {
   double constraint_tolerance = 1e-6;  ///< on scaled constraints, also used to judge feasibility
   int max_evaluations = 3000;          ///< NLopt: evaluations; Ipopt: iterations
   double max_seconds = 60.0;
+  /// Ipopt only; 0 (the default) leaves Ipopt's own test alone. k > 0: Ipopt also stops, as
+  /// converged, once k consecutive iterations meet every constraint within constraint_tolerance
+  /// (scaled) and change the objective by less than `tolerance` (relative) — Ipopt's acceptable
+  /// level with the optimality part left out. For problems whose constraints are only piecewise
+  /// smooth (a discretised contact model), where the multipliers, and with them Ipopt's
+  /// optimality error, jump from one iteration to the next at a kink although the design no longer
+  /// moves (docs/optimization.md).
+  int stall_iterations = 0;
+  /// The stall test's constraint violation (largest over the rows, in the rows' own units, as
+  /// Ipopt measures it): the model's noise level on the constraints. <= 0: constraint_tolerance.
+  double stall_violation = 0;
   /// Starting point (unscaled); empty: the variables' own initial values. Clamped to the bounds.
   std::vector<double> initial;
 };

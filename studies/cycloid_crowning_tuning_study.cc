@@ -262,6 +262,20 @@ void EstimateError(const Study& s, const cycloid::Drive& drive, const cycloid::C
                          "analysis.crank_angles_per_mesh_period)");
 }
 
+// The run's `status` sentence from the optimizer's status at its final point (docs/studies.md):
+// the same words for both forms. It speaks of the optimizer's end point; `feasible` speaks of the
+// reported design (the best feasible point evaluated), so "stopped at an infeasible point" with
+// feasible = true means: the optimizer's last point violates a constraint, an earlier one did not.
+std::string RunStatus(const optimizers::SolverResult& solved) {
+  switch (solved.status) {
+    case optimizers::SolverStatus::kIterationLimit: return "max_evaluations reached";
+    case optimizers::SolverStatus::kFailed: return "optimizer stopped: " + solved.message;
+    case optimizers::SolverStatus::kInfeasible: return "optimizer stopped at an infeasible point";
+    case optimizers::SolverStatus::kConverged: break;
+  }
+  return "converged";
+}
+
 Result RunJoint(const Study& s, const RunContext& ctx) {
   const std::vector<double> angles =
       cycloid::UniformCrankAngles(s.crank_angles_per_mesh_period, 2.0 * kPi / s.drive.rollers);
@@ -315,14 +329,18 @@ Result RunJoint(const Study& s, const RunContext& ctx) {
   options.constraint_tolerance = 1e-3;  // scaled: 0.01 µm of end distance (scale 10 µm)
   options.max_evaluations = s.max_evaluations;
   options.max_seconds = 1e9;  // no time limit: the evaluation budget bounds the run
+  // Near the optimum the end distance at 550 N·m scatters by ±2 µm and the stress by 0.3 MPa for
+  // design changes of 1e-9 (the contact solves stop at their tolerance, rows and cells enter the
+  // contact): Ipopt's multipliers then jump and its optimality test never passes although the
+  // design no longer moves. Ipopt also stops once 3 iterations in a row change the stress by less
+  // than 1e-3 (relative) within 2 µm of the end-distance bound (docs/cycloid.md); the status
+  // still judges that final point at the constraint tolerance, and the reported design is the
+  // best feasible one evaluated.
+  options.stall_iterations = 3;
+  options.stall_violation = 2.0;  // µm of end distance (the β0 rows, arcsec, stay far inside it)
   const optimizers::SolverResult solved = optimizers::Solve(problem, options);
   r.solver_status = optimizers::ToString(solved.status);
-  switch (solved.status) {
-    case optimizers::SolverStatus::kIterationLimit: r.status = "max_evaluations reached"; break;
-    case optimizers::SolverStatus::kFailed: r.status = "optimizer stopped: " + solved.message; break;
-    case optimizers::SolverStatus::kInfeasible: r.status = "optimizer ended at an infeasible design"; break;
-    default: r.status = "converged"; break;
-  }
+  r.status = RunStatus(solved);
   progress.Done();
   r.solver_evaluations = model.evaluations() - scan_runs;
   r.solver_gradient_evaluations = model.gradient_evaluations();
@@ -394,13 +412,7 @@ Result RunShorthand(const Study& s, const RunContext& ctx) {
   options.max_evaluations = s.max_evaluations;
   options.max_seconds = 1e9;  // no time limit: the evaluation budget bounds the run
   const optimizers::SolverResult solved = optimizers::Solve(problem, options);
-  switch (solved.status) {
-    case optimizers::SolverStatus::kIterationLimit: r.status = "max_evaluations reached"; break;
-    case optimizers::SolverStatus::kFailed: r.status = "optimizer stopped: " + solved.message; break;
-    // COBYLA stopped on its tolerances; whether the point is feasible is judged below over every
-    // evaluation.
-    default: r.status = "converged"; break;
-  }
+  r.status = RunStatus(solved);
   progress.Done();
   // The best feasible point seen anywhere (scan, then optimiser).
   std::vector<CrowningEvaluation> seen = r.curve;

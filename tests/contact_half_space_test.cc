@@ -287,6 +287,35 @@ TEST(ContactSolver, SolversInTwoThreadsAgreeWithOneThread) {
   for (const auto& s : out) EXPECT_EQ(s.pressure_MPa, reference.pressure_MPa);
 }
 
+// A solve warm-started from a previous solution reuses that solution's displacement (a per-thread
+// memo) instead of convolving again; the answer must be the same bits as on a thread that never
+// saw the start (empty memo), and a Displacement of a solved pressure likewise.
+TEST(ContactSolver, WarmStartFromTheLastSolutionIsBitIdenticalWithAnEmptyMemo) {
+  const Grid g = HertzGrid(30);
+  const auto h1 = SphereGap(g, 10.0);
+  const auto h2 = SphereGap(g, 10.0, 0.2 * g.dx, 0.1 * g.dy);
+  HalfSpaceSolver rough(SolverOptions{1e-2, 2000});
+  HalfSpaceSolver fine(SolverOptions{1e-6, 2000});
+  const auto start = rough.SolveForLoad(g, h1, 100.0, kEStar);  // memo now holds start's u
+  const auto warm = fine.SolveForLoad(g, h2, 110.0, kEStar, start.pressure_MPa);
+  const auto u_warm = fine.Displacement(g, warm.pressure_MPa, kEStar);
+  ContactSolution other;
+  std::vector<double> u_other;
+  std::thread([&] {  // a new thread: its memo is empty
+    HalfSpaceSolver fresh(SolverOptions{1e-6, 2000});
+    other = fresh.SolveForLoad(g, h2, 110.0, kEStar, start.pressure_MPa);
+    u_other = HalfSpaceSolver().Displacement(g, other.pressure_MPa, kEStar);
+  }).join();
+  ASSERT_TRUE(warm.converged);
+  EXPECT_EQ(warm.pressure_MPa, other.pressure_MPa);
+  EXPECT_EQ(warm.approach_mm, other.approach_mm);
+  EXPECT_EQ(warm.iterations, other.iterations);
+  EXPECT_EQ(u_warm, u_other);
+  // A different modulus must not be answered from the memo: u scales with 1/E*.
+  const auto u_half = fine.Displacement(g, warm.pressure_MPa, 2.0 * kEStar);
+  for (int i = 0; i < g.cells(); ++i) EXPECT_NEAR(u_half[i], 0.5 * u_warm[i], 1e-12 * std::abs(u_warm[i]) + 1e-18);
+}
+
 TEST(ContactSolver, ReportsTheCellSizesItUsed) {
   const Grid g = CenteredGrid(10, 20, 0.5, 2.0);
   const auto s = HalfSpaceSolver().SolveForLoad(g, CylinderGap(g, 5.0), 50.0, kEStar);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -255,8 +256,16 @@ class FftConvolver {
     Complex* s = reinterpret_cast<Complex*>(spec_);
     fftw_execute(rows_forward_);
     fftw_execute(cols_forward_);
+    // The product written out (a·c − b·d, a·d + b·c: the same operations as std::complex's
+    // finite-value path, without its NaN check and library fallback per element).
     const size_t n = static_cast<size_t>(mxc_) * my_;
-    for (size_t i = 0; i < n; ++i) s[i] *= kernel.spectrum[i];
+    double* sd = reinterpret_cast<double*>(s);
+    const double* kd = reinterpret_cast<const double*>(kernel.spectrum.data());
+    for (size_t i = 0; i < n; ++i) {
+      const double a = sd[2 * i], b = sd[2 * i + 1], c = kd[2 * i], d = kd[2 * i + 1];
+      sd[2 * i] = a * c - b * d;
+      sd[2 * i + 1] = a * d + b * c;
+    }
     fftw_execute(cols_backward_);
     fftw_execute(rows_backward_);
     for (int iy = 0; iy < ny_; ++iy)
@@ -311,6 +320,59 @@ class FftConvolver {
 // Caches are bounded: beyond these many entries they are cleared (a study uses a few shapes).
 constexpr size_t kMaxConvolvers = 8;
 constexpr size_t kMaxKernels = 64;
+
+// The displacement u = K p / E* of the last pressures this thread solved or convolved, so that a
+// solve warm-started from a previous solution (or a Displacement of it) skips its first
+// convolution. The stored u is the exact output of the same convolution (same kernel values, same
+// FFTW_ESTIMATE plan for the shape, same input bits), so reusing it changes no bit of any result,
+// only the cost. Per thread (a solver instance is single-threaded; the cycloid LTCA's steering and
+// final solvers are two instances that hand pressures to each other). Keyed by the grid shape,
+// cell sizes and E*, matched on the pressure's bits.
+class DisplacementMemo {
+ public:
+  static DisplacementMemo& ForThisThread() {
+    thread_local DisplacementMemo memo;
+    return memo;
+  }
+  // Copies the stored displacement of `p` into u and returns true when there is one.
+  bool Find(const Grid& grid, double e_star, bool measured, const std::vector<double>& p,
+            std::vector<double>& u) const {
+    for (const Entry& e : entries_) {
+      if (e.measured != measured || e.nx != grid.nx || e.ny != grid.ny || e.dx != grid.dx || e.dy != grid.dy || e.e_star != e_star ||
+          e.p.size() != p.size())
+        continue;
+      if (std::memcmp(e.p.data(), p.data(), p.size() * sizeof(double)) != 0) continue;
+      u.assign(e.u.begin(), e.u.end());
+      return true;
+    }
+    return false;
+  }
+  void Store(const Grid& grid, double e_star, bool measured, const std::vector<double>& p,
+             const std::vector<double>& u) {
+    if (entries_.size() < kSize) entries_.emplace_back();
+    Entry& e = entries_[next_];
+    next_ = (next_ + 1) % kSize;
+    e.nx = grid.nx;
+    e.ny = grid.ny;
+    e.dx = grid.dx;
+    e.dy = grid.dy;
+    e.e_star = e_star;
+    e.measured = measured;
+    e.p.assign(p.begin(), p.end());
+    e.u.assign(u.begin(), u.end());
+  }
+
+ private:
+  static constexpr size_t kSize = 32;  // more than the pairs of a crank angle, twice
+  struct Entry {
+    int nx = 0, ny = 0;
+    double dx = 0, dy = 0, e_star = 0;
+    bool measured = false;  // FFTW_MEASURE plans may differ from FFTW_ESTIMATE ones in rounding
+    std::vector<double> p, u;
+  };
+  std::vector<Entry> entries_;
+  size_t next_ = 0;
+};
 
 bool UsableStart(const std::vector<double>* start, size_t n) {
   if (start == nullptr || start->size() != n) return false;
@@ -403,11 +465,13 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
   const double load = target, approach = target - gap_min;
 
   p.assign(n, 0.0);
+  bool from_start = false;
   if (load_control) {
     if (load <= 0)
       return detail::Unloaded(grid, gap_min, load < 0 ? "negative load treated as zero" : "");
     if (UsableStart(start, n)) {
       p = *start;
+      from_start = true;
     } else {
       // Hertz-like start: p ∝ sqrt(c − h) where h < c, c the gap at the edge of a contact whose
       // area A gives c = δ/2 with a Hertz approach δ ≈ 3W / (4E* sqrt(A/π)) (exact for a
@@ -454,7 +518,8 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
   g.assign(n, 0.0);
   t.assign(n, 0.0);
   r.assign(n, 0.0);
-  convolve(p, u);
+  DisplacementMemo& memo = DisplacementMemo::ForThisThread();
+  if (!(from_start && memo.Find(grid, e_star, options.measure_fft_plans, p, u))) convolve(p, u);
   // Scale the start: to the load, or by the best single factor (exact line search on the
   // energy ½pᵀKp + pᵀ(h − δ)).
   {
@@ -489,27 +554,35 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
       since_refresh = 0;
     }
     ++since_refresh;
+    // The arrays through local pointers (the loops below then keep them in registers instead of
+    // reloading them from the members after every store; the arithmetic is unchanged).
+    double* const pp = p.data();
+    double* const uu = u.data();
+    double* const gg = g.data();
+    double* const tt = t.data();
+    const double* const hh = h.data();
+    const double* const rr = r.data();
     double shift = approach;
     size_t nc = 0;
     if (load_control) {
       double sum_g = 0;
       for (size_t i = 0; i < n; ++i)
-        if (p[i] > 0) {
-          sum_g += u[i] + h[i];
+        if (pp[i] > 0) {
+          sum_g += uu[i] + hh[i];
           ++nc;
         }
       shift = nc > 0 ? sum_g / static_cast<double>(nc) : h_min;
     }
     double big_g = 0;
     for (size_t i = 0; i < n; ++i) {
-      g[i] = u[i] + h[i] - shift;
-      if (p[i] > 0) {
-        big_g += g[i] * g[i];
+      gg[i] = uu[i] + hh[i] - shift;
+      if (pp[i] > 0) {
+        big_g += gg[i] * gg[i];
         if (!load_control) ++nc;
       }
     }
     const double beta = (conjugate && g_old > 0) ? big_g / g_old : 0.0;
-    for (size_t i = 0; i < n; ++i) t[i] = p[i] > 0 ? g[i] + beta * t[i] : 0.0;
+    for (size_t i = 0; i < n; ++i) tt[i] = pp[i] > 0 ? gg[i] + beta * tt[i] : 0.0;
     g_old = big_g;
 
     convolve(t, r);
@@ -517,14 +590,14 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     if (load_control && nc > 0) {
       double sum_r = 0;
       for (size_t i = 0; i < n; ++i)
-        if (p[i] > 0) sum_r += r[i];
+        if (pp[i] > 0) sum_r += rr[i];
       r_bar = sum_r / static_cast<double>(nc);
     }
     double num = 0, den = 0;
     for (size_t i = 0; i < n; ++i)
-      if (p[i] > 0) {
-        num += g[i] * t[i];
-        den += (r[i] - r_bar) * t[i];
+      if (pp[i] > 0) {
+        num += gg[i] * tt[i];
+        den += (rr[i] - r_bar) * tt[i];
       }
     const double tau = (den > 0 && std::isfinite(num / den)) ? num / den : tau_self;
 
@@ -535,16 +608,19 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     bool overlap = false;
     double sum_p = 0;
     p_old.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-      const double raw = p[i] - tau * t[i];  // t = 0 off the contact
-      double next = raw > 0 ? raw : 0.0;
-      if (next == 0 && g[i] < 0) {
-        next = -tau * g[i];
-        overlap = true;
+    {
+      double* const pn = p_old.data();
+      for (size_t i = 0; i < n; ++i) {
+        const double raw = pp[i] - tau * tt[i];  // t = 0 off the contact
+        double next = raw > 0 ? raw : 0.0;
+        if (next == 0 && gg[i] < 0) {
+          next = -tau * gg[i];
+          overlap = true;
+        }
+        if (next != raw) corrections.emplace_back(static_cast<int>(i), next - raw);
+        pn[i] = next;
+        sum_p += next;
       }
-      if (next != raw) corrections.emplace_back(static_cast<int>(i), next - raw);
-      p_old[i] = next;
-      sum_p += next;
     }
     p.swap(p_old);
     conjugate = !overlap;
@@ -563,25 +639,29 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     // in the same pass: u ← u − τ r here, + K c and × f below.
     const bool sparse = corrections.size() <= max_sparse;
     double change = 0, total = 0;
-    if (sparse) {
-      for (size_t i = 0; i < n; ++i) {
-        p[i] *= f;
-        change += std::abs(p[i] - p_old[i]);
-        total += p[i];
-        u[i] -= tau * r[i];
-      }
-    } else {
-      for (size_t i = 0; i < n; ++i) {
-        p[i] *= f;
-        change += std::abs(p[i] - p_old[i]);
-        total += p[i];
+    {
+      double* const pn = p.data();
+      const double* const po = p_old.data();
+      if (sparse) {
+        for (size_t i = 0; i < n; ++i) {
+          pn[i] *= f;
+          change += std::abs(pn[i] - po[i]);
+          total += pn[i];
+          uu[i] -= tau * rr[i];
+        }
+      } else {
+        for (size_t i = 0; i < n; ++i) {
+          pn[i] *= f;
+          change += std::abs(pn[i] - po[i]);
+          total += pn[i];
+        }
       }
     }
     // The displacement of the new pressure.
     if (sparse) {
-      conv.AddSparse(kernel, corrections, u.data(), inv_e);
+      conv.AddSparse(kernel, corrections, uu, inv_e);
       if (f != 1)
-        for (double& v : u) v *= f;
+        for (size_t i = 0; i < n; ++i) uu[i] *= f;
       u_exact = true;
     } else {
       u_exact = false;
@@ -604,6 +684,7 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
   if (load_control) {
     // The approach from the final pressure: the mean of u + h over the contact.
     convolve(p, u);
+    memo.Store(grid, e_star, options.measure_fft_plans, p, u);
     double sum_g = 0;
     size_t nc = 0;
     for (size_t i = 0; i < n; ++i)
@@ -723,9 +804,12 @@ std::vector<double> HalfSpaceSolver::Displacement(const Grid& grid,
   detail::CheckGrid(grid, where);
   detail::CheckField(grid, pressure_MPa, "pressure_MPa", where);
   detail::CheckModulus(e_star_MPa, where);
+  std::vector<double> out;
+  if (DisplacementMemo::ForThisThread().Find(grid, e_star_MPa, impl_->options.measure_fft_plans,
+                                               pressure_MPa, out)) return out;
   FftConvolver& conv = impl_->Convolver(grid);
   const Kernel& kernel = impl_->KernelFor(grid, conv);
-  std::vector<double> out(grid.cells());
+  out.resize(grid.cells());
   conv.Apply(kernel, pressure_MPa.data(), out.data(), 1.0 / e_star_MPa);
   return out;
 }
