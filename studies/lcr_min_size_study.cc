@@ -171,7 +171,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "target", "search", "variables", "fixed", "limits",
-                         "material", "load", "optimizer", "roller_catalogue"});
+                         "material", "load", "optimizer", "roller_catalogue", "tolerances", "monte_carlo", "robust"});
   Study s;
   s.name = root.StringOr("name", "");
   const Node target = root["target"];
@@ -278,6 +278,7 @@ Study Parse(const Node& root) {
     throw StudyError(root.file() + ": /target/speed_ratio: no lobe/roller combination with at most " +
                      std::to_string(s.max_lobes) + " lobes gives the ratio " + std::to_string(s.ratio) +
                      " exactly");
+  ParseRobust(root, s);
   return s;
 }
 
@@ -320,6 +321,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   } else {
     res.blocking_message = BlockingMessage(s, res);
   }
+  if (s.robust) RunRobust(s, res, ctx);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
@@ -343,6 +345,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   if (result.best < 0) {
     res["best"] = nullptr;
     res["notes"] = {result.blocking_message};
+    if (s.robust) RobustJson(s, result, res);
     return res;
   }
   const Candidate& best = result.candidates[result.best];
@@ -371,6 +374,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   b["limit_sensitivity"] = nlohmann::json::object();
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
   res["best"] = b;
+  if (s.robust) RobustJson(s, result, res);
   return res;
 }
 
@@ -396,6 +400,8 @@ void Write(const Study& s, const Result& result, Outputs& out) {
   } else {
     out.MarkIncomplete(result.blocking_message);
   }
+  if (s.robust && result.best >= 0 && result.robust_best < 0)
+    out.MarkIncomplete("no design meets the limits across the tolerances (see result.json robust.candidates)");
 
   // One row per feasible candidate (an infeasible one has no outer diameter to show).
   Table t;
