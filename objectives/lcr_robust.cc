@@ -311,10 +311,12 @@ LcrRobustOutcome SolveLcrRobust(const LcrSizingSpec& spec, const LcrMinSizeOptio
       out.converged = true;
       break;
     }
-    // Tighten what the grid found broken by 1.5 times the excess, and solve again.
+    // Tighten what the grid found broken by 1.5 times the excess (at most 10% of the limit), and
+    // solve again; a failed solve is not tightened further.
+    if (!out.result.ok()) break;
     bool changed = false;
     for (const LcrViolation& v : out.grid->violations) {
-      const double d = 1.5 * v.excess();
+      const double d = std::min(1.5 * v.excess(), 0.1 * std::max(std::abs(v.limit_value), 1.0));
       if (!(d > 0) || !std::isfinite(d)) continue;
       changed = true;
       if (v.limit == "roller_load_N") tight.limits.roller_load_N -= d;
