@@ -188,7 +188,16 @@ TEST(LcrRobust, LinearWorstCaseBoundsTheExactModelAtSmallTolerances) {
 }
 
 TEST(LcrRobust, RobustOptimumIsLargerHoldsTheGridAndFewerSamplesViolate) {
-  const LcrSizingSpec spec = Spec(LcrRobustMethod::kWorstCase);
+  // The sub-micrometre grade of studies/examples/lcr_min_size_robust.json at mean + 3σ (the
+  // precision grade of Spec has no robust design within the bounds).
+  LcrSizingSpec spec = Spec(LcrRobustMethod::kSigma);
+  auto rule = std::make_shared<LcrRobustRule>(*spec.robust);
+  rule->bands.eccentricity_mm = rule->bands.turret_radius_mm = rule->bands.roller_diameter_mm = 0.2e-3;
+  rule->bands.profile_mm = 0.2e-3;
+  rule->bands.roller_pitch_rad = 0.5 / 206265.0;
+  rule->bands.bearing_clearance_mm = 0.5e-3;
+  rule->k = 3;
+  spec.robust = rule;
   LcrSizingSpec nominal = spec;
   nominal.robust = nullptr;
   objectives::LcrMinSizeOptions o;
@@ -200,8 +209,8 @@ TEST(LcrRobust, RobustOptimumIsLargerHoldsTheGridAndFewerSamplesViolate) {
   EXPECT_TRUE(r.grid->ok());
   EXPECT_TRUE(r.dense->ok());
   EXPECT_GT(r.dense->outer_diameter_mm, n.check->outer_diameter_mm);
-  const auto mc_robust = objectives::MonteCarloCheck(spec, *r.design, 40, 3, 240);
-  const auto mc_nominal = objectives::MonteCarloCheck(spec, *n.design, 40, 3, 240);
+  const auto mc_robust = objectives::MonteCarloCheck(spec, *r.design, 10, 3, 120);
+  const auto mc_nominal = objectives::MonteCarloCheck(spec, *n.design, 10, 3, 120);
   EXPECT_LT(mc_robust.violating_fraction, mc_nominal.violating_fraction);
   EXPECT_GT(mc_nominal.violating_fraction, 0.5);  // the nominal optimum sits on its limits
 }
@@ -225,6 +234,7 @@ TEST(LcrRobust, BadRobustInputIsAClearErrorWithExitCode2) {
   }
   json study = base;
   study.erase("tolerances");
+  study.erase("monte_carlo");
   camopt::testing::ExpectStudyRejected(study, "lcr-robust-no-tol", "/robust", "tolerances");
   study = base;
   study.erase("robust");
