@@ -397,4 +397,6 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
   return hi;
 }
 
+LcrSizingSpec LcrTightened(const LcrSizingSpec& spec) { return Tightened(spec); }
+
 }  // namespace camopt::objectives

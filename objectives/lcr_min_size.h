@@ -118,4 +118,8 @@ std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const 
 std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                  const std::string& key);
 
+/// spec with the limits the solvers are given: tightened by a little more than their constraint
+/// tolerance (the dense check holds the design to the study's own limits).
+LcrSizingSpec LcrTightened(const LcrSizingSpec& spec);
+
 }  // namespace camopt::objectives

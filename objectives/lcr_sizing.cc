@@ -12,6 +12,7 @@
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/profile.h"
+#include "objectives/lcr_robust.h"
 
 namespace camopt::objectives {
 namespace {
@@ -78,14 +79,10 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   return blocks;
 }
 
-// Hertz capacity margin s = (R' − F / c) / r_r of a contact (header), with c = F/R' at which the
-// line contact reaches the stress limit (contact::LineContactLoadPerRadius, π L p_lim² / E*).
+// Hertz capacity margin of a contact (header, LcrStressMargin).
 template <typename T>
 T StressMargin(const LcrSizingSpec& s, const lcr::CamSide<T>& cam, const T& force, const T& curvature) {
-  const T capacity_per_radius = contact::LineContactLoadPerRadius(
-      T(s.limits.contact_stress_MPa), cam.contact_length(), T(s.material.composite_modulus_MPa()));
-  const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * curvature);
-  return (r_eff - force / capacity_per_radius) / cam.roller_radius;
+  return LcrStressMargin(s, cam.contact_length(), cam.roller_radius, force, curvature);
 }
 
 template <typename T>
@@ -139,11 +136,14 @@ void SideSamples(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side sid
   const double period = Period(s, side);
   for (int i = 0; i < s.samples_per_period; ++i) {
     const lcr::SideLoads<T> sl = SideAt(s, r, side, period * i / s.samples_per_period);
+    const LcrRobustIncrements<T> inc = s.robust ? RobustIncrements(s, r, side, period * i / s.samples_per_period, sl)
+                                                : LcrRobustIncrements<T>{};
     for (size_t k = 0; k < sl.force.size(); ++k) {
-      force.push_back(sl.force[k]);
+      force.push_back(s.robust ? sl.force[k] + inc.force[k] : sl.force[k]);
       loaded.push_back(Value(sl.force[k]) > 0);
       if (std::isfinite(s.limits.contact_stress_MPa))
-        margin.push_back(StressMargin(s, cam, sl.force[k], sl.contacts[k].curvature));
+        margin.push_back(s.robust ? StressMargin(s, cam, sl.force[k], sl.contacts[k].curvature) + inc.margin[k]
+                                  : StressMargin(s, cam, sl.force[k], sl.contacts[k].curvature));
     }
   }
 }
@@ -176,6 +176,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   // by the envelope theorem (lcr::MaxPitchCurvature).
   y[o++] = lcr::UndercutMargin(r.input, r.eccentricity);
   y[o++] = lcr::UndercutMargin(r.output, r.eccentricity);
+  if (s.robust) y[o - 2] += RobustUndercutIncrement(*s.robust), y[o - 1] += RobustUndercutIncrement(*s.robust);
   for (const lcr::CamSide<T>* c : {&r.input, &r.output})
     y[o++] = c->turret_radius * T(1.0 - s.pitch_clearance_fraction) -
              r.eccentricity * T(c->pitch_factor());
@@ -247,6 +248,8 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
       spec.rollers_b <= spec.lobes_b)
     throw std::invalid_argument("LCR sizing: invalid lobe/roller counts");
   if (spec.samples_per_period < 2) throw std::invalid_argument("LCR sizing: samples_per_period < 2");
+  if (spec.robust && spec.form == LcrConstraintForm::kActiveSet)
+    throw std::invalid_argument("LCR sizing: robust rows need the samples or aggregate form");
   if (spec.form == LcrConstraintForm::kActiveSet)
     for (int side = 0; side < 2; ++side) {
       const int n = side == 0 ? spec.rollers_a : spec.rollers_b;

@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "model/contact/hertz.h"
 #include "model/lcr/reducer.h"
 #include "objectives/problem.h"
 
@@ -60,6 +61,8 @@ struct LcrSample {
 struct LcrActiveSet {
   std::array<std::vector<LcrSample>, 2> force, stress;
 };
+
+struct LcrRobustRule;  // objectives/lcr_robust.h
 
 struct LcrLimits {
   double contact_stress_MPa = kInf;
@@ -93,7 +96,21 @@ struct LcrSizingSpec {
   /// Smallest pitch-point clearance r_d − e n/(n − m), as a fraction of r_d (the pitch curve must
   /// not loop; see lcr::CheckDesign).
   double pitch_clearance_fraction = 0.02;
+  /// Tolerances and the rule by which the force, stress and undercut rows hold across them
+  /// (objectives/lcr_robust.h); null: the nominal design. Shared, immutable, by every copy of a spec.
+  std::shared_ptr<const LcrRobustRule> robust;
 };
+
+/// The Hertz capacity margin s = (R' − F/c)/r_r of the header for a roller of radius r_r [mm] and
+/// contact length L [mm] under force F [N] at pitch-curve curvature κ [1/mm].
+template <typename T>
+T LcrStressMargin(const LcrSizingSpec& s, const T& length, const T& roller_radius, const T& force,
+                  const T& curvature) {
+  const T capacity_per_radius = contact::LineContactLoadPerRadius(
+      T(s.limits.contact_stress_MPa), length, T(s.material.composite_modulus_MPa()));
+  const T r_eff = roller_radius * (T(1.0) - roller_radius * curvature);
+  return (r_eff - force / capacity_per_radius) / roller_radius;
+}
 
 /// Load period of one cam [rad of input angle]: the input cam's configuration repeats every
 /// 2π/n_A (roller k taking the place of roller k ± 1), the output cam's every 2π m_A/(n_A m_B).

@@ -172,7 +172,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "target", "search", "variables", "fixed", "limits",
-                         "material", "load", "optimizer", "roller_catalogue", "contact"});
+                         "material", "load", "optimizer", "roller_catalogue", "contact", "tolerances", "monte_carlo", "robust"});
   Study s;
   s.name = root.StringOr("name", "");
   const Node target = root["target"];
@@ -283,6 +283,12 @@ Study Parse(const Node& root) {
     throw StudyError(root.file() + ": /target/speed_ratio: no lobe/roller combination with at most " +
                      std::to_string(s.max_lobes) + " lobes gives the ratio " + std::to_string(s.ratio) +
                      " exactly");
+  ParseRobust(root, s);
+  // The robust rows (objectives/lcr_robust.h) linearise the line-model stress margin; with the
+  // finite-length contact they would check a stress the 3D constraint does not use.
+  if (s.robust && s.contact3d)
+    root["robust"].Fail("no \"robust\" block together with a 3D \"contact\" (robust sizing uses the line "
+                        "contact model; remove one of the two)");
   return s;
 }
 
@@ -332,6 +338,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   } else {
     res.blocking_message = BlockingMessage(s, res);
   }
+  if (s.robust) RunRobust(s, res, ctx);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
@@ -356,6 +363,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
     res["best"] = nullptr;
     res["notes"] = {result.blocking_message};
     if (s.contact3d) AddContact3DJson(s, result, res);
+    if (s.robust) RobustJson(s, result, res);
     return res;
   }
   const Candidate& best = result.candidates[result.best];
@@ -385,6 +393,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
   res["best"] = b;
   if (s.contact3d) AddContact3DJson(s, result, res);
+  if (s.robust) RobustJson(s, result, res);
   return res;
 }
 
@@ -411,6 +420,8 @@ void Write(const Study& s, const Result& result, Outputs& out) {
   } else {
     out.MarkIncomplete(result.blocking_message);
   }
+  if (s.robust && result.best >= 0 && result.robust_best < 0)
+    out.MarkIncomplete("no design meets the limits across the tolerances (see result.json robust.candidates)");
 
   // One row per feasible candidate (an infeasible one has no outer diameter to show).
   Table t;

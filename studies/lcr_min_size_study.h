@@ -6,7 +6,9 @@
 // point. Nothing fitting is an incomplete result (exit code 3, outputs still written).
 #pragma once
 
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "objectives/lcr_min_size.h"
+#include "objectives/lcr_robust.h"
 #include "objectives/lcr_sizing.h"
 #include "objectives/lcr_sizing3d.h"
 #include "studies/input.h"
@@ -39,6 +42,10 @@ struct Study {
   /// The finite-length contact (crowning, misalignment, overload; studies/lcr_min_size_contact.h);
   /// empty: the line model.
   std::optional<objectives::LcrSizing3DSpec> contact3d;
+  /// "tolerances" + "robust" (+ "monte_carlo"): studies/lcr_min_size_robust.cc. Null: nominal only.
+  std::shared_ptr<const objectives::LcrRobustRule> robust;
+  int mc_samples = 200, mc_angle_steps = 720;
+  std::uint64_t mc_seed = 1;
 };
 
 struct Candidate {
@@ -61,10 +68,20 @@ struct Result {
   /// When nothing fits: the limit that blocks most, the closest candidate, and the value of that
   /// limit that its closest point needs.
   std::string blocking_message;
+  /// With Study::robust: the robust solve of every candidate (same order), the smallest converged
+  /// one, and the Monte-Carlo checks of the robust and the nominal best designs.
+  std::vector<objectives::LcrRobustOutcome> robust;
+  int robust_best = -1;
+  std::optional<objectives::LcrMonteCarloCheck> robust_mc, nominal_mc;
 };
 
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
+/// The robust parts (studies/lcr_min_size_robust.cc): "tolerances", "robust", "monte_carlo" into s;
+/// the robust solves and checks into r; "best" (robust), "nominal_best" and "robust" into res.
+void ParseRobust(const Node& root, Study& s);
+void RunRobust(const Study& s, Result& r, const RunContext& ctx);
+void RobustJson(const Study& s, const Result& r, nlohmann::json& res);
 Result Run(const Study& study, const RunContext& ctx);
 nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, candidates.csv, outer_diameter.svg, best_lcr_analysis.json (when something fits);

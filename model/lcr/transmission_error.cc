@@ -23,11 +23,8 @@ std::uint64_t SplitMix64(std::uint64_t& state) {
 /// Uniform in [0, 1) with 53 random bits.
 double Uniform01(std::uint64_t& state) { return double(SplitMix64(state) >> 11) * 0x1.0p-53; }
 
-/// G/|G| of the paper law at θ under the forward torque (direction of the bearing clearance's shift).
 Vec2<double> LoadDirection(const Reducer<double>& r, const Material& material, double torque_Nmm, double theta) {
-  const AngleLoads<double> a = AnalyzeAngle(r, material, LoadCase{std::max(torque_Nmm, 1.0), 0.0, 0.0}, theta);
-  const double n = a.eccentric_load.norm();
-  return n > 0 ? Vec2<double>(a.eccentric_load / n) : Vec2<double>(1.0, 0.0);
+  return EccentricLoadDirection(r, material, torque_Nmm, theta);
 }
 
 double Percentile(std::vector<double> v, double q) {

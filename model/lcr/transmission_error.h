@@ -109,6 +109,15 @@ CompliantAngle<T> CompliantAtAngle(const Reducer<double>& r, const Material& mat
   return out;
 }
 
+/// G/|G| of the paper law at θ under the forward torque (the bearing clearance pushes the cam
+/// this way); (1, 0) where the eccentric carries no load. D: double or a Jet.
+template <typename D>
+Vec2<D> EccentricLoadDirection(const Reducer<D>& r, const Material& material, double torque_Nmm, double theta) {
+  const AngleLoads<D> a = AnalyzeAngle(r, material, LoadCase{std::max(torque_Nmm, 1.0), 0.0, 0.0}, D(theta));
+  const D n = a.eccentric_load.norm();
+  return Value(n) > 0 ? Vec2<D>(a.eccentric_load / n) : Vec2<D>(D(1.0), D(0.0));
+}
+
 /// The load-sharing model of an analysis: the paper's rigid law (F ∝ moment arm, forces.h) or the
 /// compliant contacts of the stiffness model (CompliantAtAngle).
 enum class LoadModel { kRigid, kCompliant };

@@ -1,0 +1,335 @@
+// The robust rows, checks and solve of objectives/lcr_robust.h.
+#include "objectives/lcr_robust.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <ceres/jet.h>
+
+#include "model/contact/hertz.h"
+#include "model/lcr/profile.h"
+
+namespace camopt::objectives {
+namespace {
+
+// The deviations that move one cam's rollers: the eccentricity and the bearing clearance (the cam
+// centre), and that cam's turret radius, rollers, pitch errors and profile.
+std::vector<lcr::ToleranceParameter> SideParameters(const lcr::Reducer<double>& r, const lcr::ToleranceBands& b,
+                                                    int side) {
+  std::vector<lcr::ToleranceParameter> out;
+  for (const lcr::ToleranceParameter& p : lcr::ToleranceParameters(r, b))
+    if (p.key == 0 || p.key == 5 || p.side == side) out.push_back(p);
+  return out;
+}
+
+bool OneSided(const lcr::ToleranceParameter& p) { return p.key == 5; }  // clearance 0 … c
+
+// w = ∂W/∂S of a row with sensitivities S (header); sign +1 for an upper limit, −1 for a lower.
+std::vector<double> Weights(const LcrRobustRule& rule, const std::vector<lcr::ToleranceParameter>& params,
+                            const std::vector<double>& s, double sign) {
+  std::vector<double> w(params.size(), 0.0);
+  if (rule.method == LcrRobustMethod::kWorstCase) {
+    for (size_t p = 0; p < params.size(); ++p) {
+      const double y = sign * s[p];
+      if (OneSided(params[p]))
+        w[p] = y > 0 ? params[p].band : 0.0;
+      else
+        w[p] = y > 0 ? params[p].band : (y < 0 ? -params[p].band : 0.0);
+    }
+    return w;
+  }
+  double var = 0;
+  std::vector<double> sigma2(params.size());
+  for (size_t p = 0; p < params.size(); ++p) {
+    const double b = params[p].band;
+    sigma2[p] = OneSided(params[p]) ? b * b / 12.0 : b * b / 3.0;
+    var += sigma2[p] * s[p] * s[p];
+  }
+  const double sd = std::sqrt(var);
+  for (size_t p = 0; p < params.size(); ++p) {
+    const double mean = OneSided(params[p]) ? 0.5 * params[p].band : 0.0;
+    w[p] = mean + (sd > 0 ? rule.k * sigma2[p] * sign * s[p] / sd : 0.0);
+  }
+  return w;
+}
+
+// Output torque in the forward sense, and the torque one turret reacts (lcr_stiffness.h).
+double TurretTorque(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, lcr::Side side) {
+  const double t = lcr::LoadedArmSign(r, lcr::Side::kOutput) * spec.output_torque_Nmm;
+  return side == lcr::Side::kOutput ? t : -rigidity::FixedTurretTorqueRatio(r) * t;
+}
+
+// Roller radius with the deviation of roller k of cam `si` (none when the vector is empty).
+template <typename S>
+S RollerRadius(const S& nominal, const lcr::Deviations<S>& dev, int si, int k) {
+  return dev.roller_radius[si].empty() ? nominal : nominal + dev.roller_radius[si][k];
+}
+
+template <typename T>
+std::vector<double> Values(const std::vector<T>& v) {
+  std::vector<double> out;
+  for (const T& x : v) out.push_back(Value(x));
+  return out;
+}
+
+}  // namespace
+
+template <typename T>
+LcrToleranceSensitivities<T> ToleranceSensitivities(const LcrSizingSpec& spec, const lcr::Reducer<T>& r,
+                                                    lcr::Side side, double theta, const lcr::SideLoads<T>& sl) {
+  using std::sqrt;
+  const int si = lcr::SideIndex(side);
+  const lcr::Reducer<double> rd = r.template cast<double>();
+  const lcr::CamSide<T>& cam = r.side(side);
+  const int n = cam.rollers;
+  LcrToleranceSensitivities<T> out;
+  out.params = SideParameters(rd, spec.robust->bands, si);
+  const size_t np = out.params.size();
+  // The nominal compliant turret (no gaps: closed-form ψ) and each roller's contact rigidity F'_k.
+  rigidity::TurretSpring<T> spring{{}, cam.contact_length(), T(spec.material.composite_modulus_MPa()), T(0.0), T(0.0)};
+  for (const auto& c : sl.contacts) spring.arms.push_back(c.arm);
+  const T psi = spring.Rotation(T(TurretTorque(spec, rd, side)));
+  std::vector<T> rigidity(n);
+  T sum(0.0);
+  for (int k = 0; k < n; ++k) {
+    rigidity[k] = spring.RollerRigidity(psi * spring.arms[k]);
+    sum += rigidity[k] * spring.arms[k] * spring.arms[k];
+  }
+  // ∂c_k/∂t_p (header): −d_k is the outward normal at the roller centre, fixed frame.
+  const Vec2<T> load_dir = lcr::EccentricLoadDirection(r, spec.material, spec.output_torque_Nmm, theta);
+  const double turn = side == lcr::Side::kInput ? 0.0 : lcr::OutputSpeedRatio(rd) * theta;
+  const Vec2<T> ecc = U(T(theta));
+  std::vector<std::vector<T>> gap(n, std::vector<T>(np, T(0.0)));
+  for (int k = 0; k < n; ++k) {
+    const Vec2<T> normal = -sl.contacts[k].direction;
+    const Vec2<T> slot = U(T(2.0 * kPi * k / n + turn));
+    for (size_t p = 0; p < np; ++p) {
+      const lcr::ToleranceParameter& q = out.params[p];
+      switch (q.key) {
+        case 0: gap[k][p] = -normal.dot(ecc); break;
+        case 1: gap[k][p] = normal.dot(slot); break;
+        case 2: gap[k][p] = T(q.roller == k ? -1.0 : 0.0); break;
+        case 3: gap[k][p] = q.roller == k ? cam.turret_radius * normal.dot(Perp(slot)) : T(0.0); break;
+        case 4: gap[k][p] = T(-1.0); break;
+        case 5: gap[k][p] = -normal.dot(load_dir); break;
+      }
+    }
+  }
+  // dψ = Σ F'_j a_j dc_j / Σ F'_j a_j², dF_k = F'_k (a_k dψ − dc_k).
+  out.force.assign(n, std::vector<T>(np, T(0.0)));
+  for (size_t p = 0; p < np; ++p) {
+    T num(0.0);
+    for (int j = 0; j < n; ++j) num += rigidity[j] * spring.arms[j] * gap[j][p];
+    const T dpsi = num / sum;
+    for (int k = 0; k < n; ++k) out.force[k][p] = rigidity[k] * (spring.arms[k] * dpsi - gap[k][p]);
+  }
+  if (!std::isfinite(spec.limits.contact_stress_MPa)) return out;
+  // s = 1 − r_r κ − F/(c r_r) (LcrStressMargin, c the capacity per radius): ∂s/∂F = −1/(c r_r),
+  // ∂s/∂r_r = −κ + F/(c r_r²) for the roller's own radius.
+  const T capacity = contact::LineContactLoadPerRadius(T(spec.limits.contact_stress_MPa), cam.contact_length(),
+                                                       T(spec.material.composite_modulus_MPa()));
+  const T rr = cam.roller_radius;
+  out.margin.assign(n, std::vector<T>(np, T(0.0)));
+  for (int k = 0; k < n; ++k)
+    for (size_t p = 0; p < np; ++p) {
+      out.margin[k][p] = -out.force[k][p] / (capacity * rr);
+      const lcr::ToleranceParameter& q = out.params[p];
+      if (q.key == 2 && q.roller == k)
+        out.margin[k][p] += -sl.contacts[k].curvature + sl.force[k] / (capacity * rr * rr);
+    }
+  return out;
+}
+
+template <typename T>
+LcrRobustIncrements<T> RobustIncrements(const LcrSizingSpec& spec, const lcr::Reducer<T>& r, lcr::Side side,
+                                        double theta, const lcr::SideLoads<T>& sl) {
+  const LcrToleranceSensitivities<T> s = ToleranceSensitivities(spec, r, side, theta, sl);
+  LcrRobustIncrements<T> inc;
+  // W = Σ w_p S_p with w = ∂W/∂S at the values (header): exact value and exact gradient.
+  auto apply = [&](const std::vector<T>& row, double sign) {
+    const std::vector<double> w = Weights(*spec.robust, s.params, Values(row), sign);
+    T sum(0.0);
+    for (size_t p = 0; p < row.size(); ++p)
+      if (w[p] != 0.0) sum += w[p] * row[p];
+    return sum;
+  };
+  for (const auto& row : s.force) inc.force.push_back(apply(row, 1.0));
+  for (const auto& row : s.margin) inc.margin.push_back(apply(row, -1.0));
+  return inc;
+}
+
+template LcrToleranceSensitivities<double> ToleranceSensitivities(const LcrSizingSpec&, const lcr::Reducer<double>&,
+                                                                  lcr::Side, double, const lcr::SideLoads<double>&);
+template LcrRobustIncrements<double> RobustIncrements(const LcrSizingSpec&, const lcr::Reducer<double>&, lcr::Side,
+                                                      double, const lcr::SideLoads<double>&);
+template LcrRobustIncrements<ceres::Jet<double, 6>> RobustIncrements(const LcrSizingSpec&,
+                                                                     const lcr::Reducer<ceres::Jet<double, 6>>&,
+                                                                     lcr::Side, double,
+                                                                     const lcr::SideLoads<ceres::Jet<double, 6>>&);
+
+double RobustUndercutIncrement(const LcrRobustRule& rule) {
+  const double b = rule.bands.profile_mm;
+  return rule.method == LcrRobustMethod::kWorstCase ? -b : -rule.k * b / std::sqrt(3.0);
+}
+
+LcrRobustCheck RobustGridCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps) {
+  LcrRobustCheck c;
+  c.steps_per_period = steps;
+  c.min_stress_margin = kInf;
+  c.undercut_margin_mm = kInf;
+  const bool stress = std::isfinite(spec.limits.contact_stress_MPa);
+  const lcr::LoadCase load{spec.output_torque_Nmm, 0.0, 0.0};
+  for (lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const lcr::CamSide<double>& cam = r.side(side);
+    c.undercut_margin_mm = std::min(c.undercut_margin_mm, lcr::UndercutMargin(cam, r.eccentricity) +
+                                                              RobustUndercutIncrement(*spec.robust));
+    const double period = LcrLoadPeriod(spec, side);
+    for (int i = 0; i < steps; ++i) {
+      const double theta = period * (i + 0.5) / steps;
+      const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, theta, lcr::Stages{true, false, false});
+      const lcr::SideLoads<double>& sl = side == lcr::Side::kInput ? a.input : a.output;
+      const LcrRobustIncrements<double> inc = RobustIncrements(spec, r, side, theta, sl);
+      for (int k = 0; k < cam.rollers; ++k) {
+        c.max_force_N = std::max(c.max_force_N, sl.force[k] + inc.force[k]);
+        if (!stress || !(sl.force[k] > 0)) continue;
+        const double m = LcrStressMargin(spec, cam.contact_length(), cam.roller_radius, sl.force[k],
+                                         sl.contacts[k].curvature) + inc.margin[k];
+        if (m < c.min_stress_margin) {
+          // The margin is (R'/r_r)(1 − p²/p_lim²): the stress it stands for.
+          c.min_stress_margin = m;
+          const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * sl.contacts[k].curvature);
+          const double q = 1.0 - m * cam.roller_radius / r_eff;
+          c.max_stress_MPa = r_eff > 0 && q >= 0 ? spec.limits.contact_stress_MPa * std::sqrt(q) : kInf;
+        }
+      }
+    }
+  }
+  const LcrLimits& l = spec.limits;
+  if (c.max_force_N > l.roller_load_N) c.violations.push_back({"roller_load_N", c.max_force_N, l.roller_load_N});
+  if (stress && c.min_stress_margin < 0)
+    c.violations.push_back({"contact_stress_MPa", c.max_stress_MPa, l.contact_stress_MPa});
+  if (c.undercut_margin_mm < l.undercut_margin_mm)
+    c.violations.push_back({"undercut_margin_mm", c.undercut_margin_mm, l.undercut_margin_mm});
+  if (!stress) c.min_stress_margin = 0;
+  return c;
+}
+
+LcrMonteCarloCheck MonteCarloCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int samples,
+                                   std::uint64_t seed, int angle_steps) {
+  LcrMonteCarloCheck c;
+  c.samples = samples;
+  c.seed = seed;
+  c.angle_steps = angle_steps;
+  c.min_undercut_margin_mm = kInf;
+  const LcrLimits& l = spec.limits;
+  const double e_star = spec.material.composite_modulus_MPa();
+  const double torque = lcr::LoadedArmSign(r, lcr::Side::kOutput) * spec.output_torque_Nmm;
+  const lcr::LoadCase load{spec.output_torque_Nmm, 0.0, 0.0};
+  struct Angle {
+    double theta;
+    Vec2<double> dir;
+    lcr::AngleLoads<double> rigid;
+    lcr::CompliantAngle<double> nominal;
+  };
+  std::vector<Angle> angles;
+  for (int i = 0; i < angle_steps; ++i) {
+    const double th = 2 * kPi * i / angle_steps;
+    angles.push_back({th, lcr::EccentricLoadDirection(r, spec.material, spec.output_torque_Nmm, th),
+                      lcr::AnalyzeAngle(r, spec.material, load, th, lcr::Stages{true, false, false}),
+                      lcr::CompliantAtAngle<double>(r, spec.material, th, torque, nullptr)});
+  }
+  const double undercut[2] = {lcr::UndercutMargin(r.input, r.eccentricity), lcr::UndercutMargin(r.output, r.eccentricity)};
+  const std::vector<lcr::ToleranceParameter> params = lcr::ToleranceParameters(r, spec.robust->bands);
+  std::uint64_t state = seed;
+  for (int m = 0; m < samples; ++m) {
+    const lcr::Deviations<double> dev = lcr::SampleDeviations(r, params, state);
+    double f_max = 0, p_max = 0, u_min = kInf;
+    for (int si = 0; si < 2; ++si) u_min = std::min(u_min, undercut[si] + dev.profile[si]);
+    for (const Angle& a : angles) {
+      const lcr::CompliantAngle<double> cd = lcr::CompliantAtAngle<double>(r, spec.material, a.theta, torque, &dev, a.dir);
+      for (int si = 0; si < 2; ++si) {
+        const lcr::CamSide<double>& cam = si == 0 ? r.input : r.output;
+        const lcr::SideLoads<double>& rigid = si == 0 ? a.rigid.input : a.rigid.output;
+        const std::vector<double>& fd = si == 0 ? cd.force_input : cd.force_output;
+        const std::vector<double>& f0 = si == 0 ? a.nominal.force_input : a.nominal.force_output;
+        for (int k = 0; k < cam.rollers; ++k) {
+          const double f = rigid.force[k] + fd[k] - f0[k];
+          f_max = std::max(f_max, f);
+          if (!(f > 0)) continue;
+          const double rr = RollerRadius(cam.roller_radius, dev, si, k);
+          const double r_eff = rr * (1.0 - rr * rigid.contacts[k].curvature);
+          p_max = std::max(p_max, r_eff > 0 ? contact::LineContactPeakPressure(f, cam.contact_length(), r_eff, e_star) : kInf);
+        }
+      }
+    }
+    c.max_force_N = std::max(c.max_force_N, f_max);
+    c.max_stress_MPa = std::max(c.max_stress_MPa, p_max);
+    c.min_undercut_margin_mm = std::min(c.min_undercut_margin_mm, u_min);
+    double excess = -kInf;
+    if (std::isfinite(l.roller_load_N)) excess = std::max(excess, (f_max - l.roller_load_N) / l.roller_load_N);
+    if (std::isfinite(l.contact_stress_MPa)) excess = std::max(excess, (p_max - l.contact_stress_MPa) / l.contact_stress_MPa);
+    excess = std::max(excess, (l.undercut_margin_mm - u_min) / std::max(l.undercut_margin_mm, 1.0));
+    c.violating += excess > 0;
+    if (c.worst_sample < 0 || excess > c.worst_relative_excess) c.worst_sample = m, c.worst_relative_excess = excess;
+  }
+  c.violating_fraction = samples > 0 ? double(c.violating) / samples : 0.0;
+  return c;
+}
+
+LcrRobustOutcome SolveLcrRobust(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                const std::vector<double>& x0) {
+  LcrRobustOutcome out;
+  LcrSizingSpec tight = LcrTightened(spec);
+  std::vector<double> x = x0;
+  int values = 0, gradients = 0, iterations = 0;
+  auto solve = [&](LcrConstraintForm form) {
+    tight.form = form;
+    optimizers::SolverOptions so = options.solver;
+    so.initial = x;
+    out.result = optimizers::Solve(MakeLcrSizingProblem(tight), so);
+    values += out.result.value_evaluations;
+    gradients += out.result.gradient_evaluations;
+    iterations += out.result.iterations;
+    if (!out.result.x.empty()) x = out.result.x;
+  };
+  solve(LcrConstraintForm::kAggregate);
+  constexpr int kRounds = 4;
+  for (out.rounds = 1; out.rounds <= kRounds && !out.result.x.empty(); ++out.rounds) {
+    solve(LcrConstraintForm::kSamples);
+    if (out.result.x.empty()) break;
+    out.x = x;
+    out.design = LcrDesign(spec, x);
+    try {
+      out.dense = DenseCheck(spec, *out.design, options.dense_steps);
+      out.grid = RobustGridCheck(spec, *out.design, 4 * spec.samples_per_period);
+    } catch (const std::domain_error& e) {
+      out.note = std::string("degenerate geometry: ") + e.what();
+      break;
+    }
+    if (out.result.ok() && out.dense->ok() && out.grid->ok()) {
+      out.converged = true;
+      break;
+    }
+    // Tighten what the grid found broken by 1.5 times the excess (at most 10% of the limit), and
+    // solve again; a failed solve is not tightened further.
+    if (!out.result.ok()) break;
+    bool changed = false;
+    for (const LcrViolation& v : out.grid->violations) {
+      const double d = std::min(1.5 * v.excess(), 0.1 * std::max(std::abs(v.limit_value), 1.0));
+      if (!(d > 0) || !std::isfinite(d)) continue;
+      changed = true;
+      if (v.limit == "roller_load_N") tight.limits.roller_load_N -= d;
+      if (v.limit == "contact_stress_MPa") tight.limits.contact_stress_MPa -= d;
+      if (v.limit == "undercut_margin_mm") tight.limits.undercut_margin_mm += d;
+    }
+    if (!changed) break;
+  }
+  out.rounds = std::min(out.rounds, kRounds);
+  out.result.value_evaluations = values;
+  out.result.gradient_evaluations = gradients;
+  out.result.iterations = iterations;
+  return out;
+}
+
+}  // namespace camopt::objectives

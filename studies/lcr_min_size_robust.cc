@@ -1,0 +1,171 @@
+// The robust parts of study kind "lcr_min_size" (issue 18): "tolerances" (as lcr_analysis reads
+// them, studies/lcr_tolerance_input.h), "robust": {"method": "worst_case" | "sigma", "k"} and
+// "monte_carlo": {"samples", "seed", "angle_steps"}. Every candidate is solved again with the
+// robust rows (objectives/lcr_robust.h) from its nominal optimum; result.json's "best" is the
+// smallest robust design, "nominal_best" the study without tolerances, and both carry the
+// Monte-Carlo check against the exact model.
+#include <algorithm>
+#include <cmath>
+
+#include "model/lcr/kinematics.h"
+#include "studies/lcr_min_size_study.h"
+#include "studies/lcr_tolerance_input.h"
+#include "studies/report.h"
+
+namespace camopt::studies::lcr_min_size {
+namespace {
+
+nlohmann::json Side(const lcr::CamSide<double>& c) {
+  return {{"lobes", c.lobes}, {"rollers", c.rollers}, {"turret_radius_mm", c.turret_radius},
+          {"roller_diameter_mm", 2 * c.roller_radius}};
+}
+
+nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json MonteCarloJson(const objectives::LcrMonteCarloCheck& c) {
+  return {{"samples", c.samples},
+          {"seed", c.seed},
+          {"angle_steps", c.angle_steps},
+          {"violating_samples", c.violating},
+          {"violating_fraction", c.violating_fraction},
+          {"max_roller_force_N", c.max_force_N},
+          {"max_contact_stress_MPa", Finite(c.max_stress_MPa)},
+          {"min_undercut_margin_mm", c.min_undercut_margin_mm},
+          {"worst_sample", c.worst_sample},
+          {"worst_sample_relative_excess", c.worst_relative_excess}};
+}
+
+}  // namespace
+
+void ParseRobust(const Node& root, Study& s) {
+  const std::optional<LcrToleranceSpec> tol = ParseLcrTolerances(root);
+  if (!root.Has("robust")) {
+    if (tol) root["tolerances"].Fail("no \"tolerances\" without \"robust\" in lcr_min_size");
+    return;
+  }
+  const Node r = root["robust"];
+  if (!tol) r.Fail("\"robust\" with \"tolerances\" beside it");
+  r.CheckKnownFields({"method", "k"});
+  auto rule = std::make_shared<objectives::LcrRobustRule>();
+  rule->bands = tol->bands;
+  if (!rule->bands.any()) root["tolerances"].Fail("at least one tolerance band > 0");
+  const std::string method = r["method"].String();
+  if (method == "worst_case") {
+    rule->method = objectives::LcrRobustMethod::kWorstCase;
+    if (r.Has("k")) r["k"].Fail("no \"k\" with \"worst_case\" (k belongs to \"sigma\")");
+  } else if (method == "sigma") {
+    rule->method = objectives::LcrRobustMethod::kSigma;
+    rule->k = r.Has("k") ? r["k"].NumberIn(0.1, 10.0) : 3.0;
+  } else {
+    r["method"].Fail("\"worst_case\" or \"sigma\"");
+  }
+  if (s.form != objectives::LcrConstraintForm::kAggregate)
+    root["optimizer"]["constraints"].Fail("\"aggregate\" with \"robust\" (the robust solve picks its own forms)");
+  s.robust = rule;
+  s.base.robust = nullptr;  // the nominal search stays nominal; RunRobust sets it per candidate
+  if (root.Has("monte_carlo")) {
+    const Node m = root["monte_carlo"];
+    s.mc_samples = m.Has("samples") ? tol->samples : s.mc_samples;
+    s.mc_seed = tol->seed;
+    s.mc_angle_steps = m.Has("angle_steps") ? tol->angle_steps : s.mc_angle_steps;
+    if (m.Has("lost_motion_torque_fraction")) m["lost_motion_torque_fraction"].Fail("no lost motion in lcr_min_size");
+  }
+}
+
+void RunRobust(const Study& s, Result& res, const RunContext& ctx) {
+  Progress progress("lcr_min_size robust", ctx.quiet);
+  res.robust.assign(res.candidates.size(), {});
+  for (size_t i = 0; i < res.candidates.size(); ++i) {
+    const Candidate& c = res.candidates[i];
+    progress.Update(double(i) / (res.candidates.size() + 1), "robust solve " + std::to_string(i + 1));
+    if (!c.feasible()) continue;  // no nominal optimum to start from
+    objectives::LcrSizingSpec spec = c.spec;
+    spec.robust = s.robust;
+    res.robust[i] = objectives::SolveLcrRobust(spec, s.options, c.outcome.x);
+    const auto& o = res.robust[i];
+    if (o.converged && (res.robust_best < 0 || lcr::OuterDiameter(*o.design) <
+                                                   lcr::OuterDiameter(*res.robust[res.robust_best].design)))
+      res.robust_best = int(i);
+  }
+  progress.Update(double(res.candidates.size()) / (res.candidates.size() + 1), "Monte-Carlo checks");
+  auto check = [&](int i, const lcr::Reducer<double>& design) {
+    objectives::LcrSizingSpec spec = res.candidates[i].spec;
+    spec.robust = s.robust;
+    return objectives::MonteCarloCheck(spec, design, s.mc_samples, s.mc_seed, s.mc_angle_steps);
+  };
+  if (res.best >= 0) res.nominal_mc = check(res.best, *res.candidates[res.best].outcome.design);
+  if (res.robust_best >= 0) res.robust_mc = check(res.robust_best, *res.robust[res.robust_best].design);
+  progress.Update(1.0, "robust done");
+}
+
+void RobustJson(const Study& s, const Result& r, nlohmann::json& res) {
+  const objectives::LcrRobustRule& rule = *s.robust;
+  nlohmann::json rj;
+  rj["method"] = rule.method == objectives::LcrRobustMethod::kWorstCase ? "worst_case" : "sigma";
+  if (rule.method == objectives::LcrRobustMethod::kSigma) rj["k"] = rule.k;
+  const lcr::ToleranceBands& b = rule.bands;
+  rj["tolerances"] = {{"eccentricity_um", b.eccentricity_mm * 1e3},
+                      {"turret_radius_um", b.turret_radius_mm * 1e3},
+                      {"roller_diameter_um", b.roller_diameter_mm * 1e3},
+                      {"roller_pitch_arcsec", b.roller_pitch_rad * 180.0 / kPi * 3600.0},
+                      {"profile_um", b.profile_mm * 1e3},
+                      {"bearing_clearance_um", b.bearing_clearance_mm * 1e3}};
+  rj["model"] = "roller force = rigid-law force + change of the compliant (Palmgren) load sharing under the "
+                "deviations; linearised sensitivities in the optimizer (worst case over the band box, or mean + "
+                "k sigma with uniform deviations), exact compliant model in the Monte-Carlo check";
+  nlohmann::json cands = nlohmann::json::array();
+  for (size_t i = 0; i < r.robust.size(); ++i) {
+    const auto& o = r.robust[i];
+    nlohmann::json j = {{"candidate", i}, {"converged", o.converged}, {"rounds", o.rounds}};
+    if (!r.candidates[i].feasible()) j["status"] = "no nominal optimum";
+    else j["status"] = o.converged ? "converged" : optimizers::ToString(o.result.status);
+    if (o.design) j["outer_diameter_mm"] = lcr::OuterDiameter(*o.design);
+    if (!o.note.empty()) j["note"] = o.note;
+    cands.push_back(j);
+  }
+  rj["candidates"] = cands;
+  res["robust"] = rj;
+  if (r.best >= 0) {
+    res["nominal_best"] = res["best"];
+    if (r.nominal_mc) res["nominal_best"]["monte_carlo"] = MonteCarloJson(*r.nominal_mc);
+  } else {
+    res["nominal_best"] = nullptr;
+  }
+  if (r.robust_best < 0) {
+    res["best"] = nullptr;
+    return;
+  }
+  const objectives::LcrRobustOutcome& o = r.robust[r.robust_best];
+  const lcr::Reducer<double>& d = *o.design;
+  const objectives::LcrDenseCheck& k = *o.dense;
+  const objectives::LcrRobustCheck& g = *o.grid;
+  nlohmann::json bj;
+  bj["eccentricity_mm"] = d.eccentricity;
+  bj["outer_diameter_mm"] = k.outer_diameter_mm;
+  bj["speed_ratio"] = lcr::SpeedReductionRatio(d);
+  bj["input"] = Side(d.input);
+  bj["output"] = Side(d.output);
+  bj["nominal"] = {{"max_contact_stress_MPa", std::max(k.max_stress_MPa[0], k.max_stress_MPa[1])},
+                   {"max_roller_force_N", std::max(k.max_force_N[0], k.max_force_N[1])},
+                   {"undercut_margin_mm", std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1])},
+                   {"roller_gap_mm", std::min(k.roller_gap_mm[0], k.roller_gap_mm[1])},
+                   {"mean_efficiency", k.mean_efficiency}};
+  bj["robust_linear"] = {{"max_contact_stress_MPa", Finite(g.max_stress_MPa)},
+                         {"min_stress_margin", g.min_stress_margin},
+                         {"max_roller_force_N", g.max_force_N},
+                         {"undercut_margin_mm", g.undercut_margin_mm},
+                         {"steps_per_period", g.steps_per_period}};
+  std::vector<std::string> binding;
+  for (const std::string& row : o.result.active) {
+    const std::string base = row.substr(0, row.find('['));
+    if (std::find(binding.begin(), binding.end(), base) == binding.end()) binding.push_back(base);
+  }
+  bj["binding"] = binding;
+  if (r.robust_mc) bj["monte_carlo"] = MonteCarloJson(*r.robust_mc);
+  res["best"] = bj;
+  if (r.best >= 0)
+    res["robust"]["outer_diameter_increase_mm"] =
+        k.outer_diameter_mm - r.candidates[r.best].outcome.check->outer_diameter_mm;
+}
+
+}  // namespace camopt::studies::lcr_min_size
