@@ -15,11 +15,19 @@ namespace camopt::contact {
 using camopt::CompositeModulus;
 
 /// Line (two-cylinder, plane-strain) contact: load F over length L, effective radius R'
-/// (1/R' = 1/R₁ + 1/R₂, a concave radius negative). p_max = sqrt(F E* / (π L R')).
+/// (1/R' = 1/R₁ + 1/R₂, a concave radius negative). p_max² = F E* / (π L R').
+template <typename T>
+T LineContactPeakPressureSquared(const T& force, const T& length, const T& r_eff, const T& e_star) {
+  return force * e_star / (T(kPi) * length * r_eff);
+}
+
+/// p_max = sqrt(LineContactPeakPressureSquared): the square root is monotonic and correctly
+/// rounded, so the largest p_max of several contacts is exactly the root of the largest square
+/// (one root per maximum instead of one per contact, model/lcr/cycle.cc).
 template <typename T>
 T LineContactPeakPressure(const T& force, const T& length, const T& r_eff, const T& e_star) {
   using std::sqrt;
-  return sqrt(force * e_star / (T(kPi) * length * r_eff));
+  return sqrt(LineContactPeakPressureSquared(force, length, r_eff, e_star));
 }
 
 /// Line contact half-width b = sqrt(4 F R' / (π L E*)).

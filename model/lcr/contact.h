@@ -70,9 +70,11 @@ std::vector<RollerContact<T>> RollerContacts(const Reducer<T>& r, Side s, const 
   out.reserve(c.rollers);
   for (const Vec2<T>& o : RollerCentres(r, s, theta)) {
     const Vec2<T> v = pitch - o;
-    const Vec2<T> d = v * (T(1.0) / v.norm());  // one division for both components
+    const T inv_norm = T(1.0) / v.norm();  // one division for both components and κ
+    const Vec2<T> d = v * inv_norm;
     const T cosine = o.dot(ecc) * inv_radius;
-    out.push_back({o, d, o + c.roller_radius * d, Cross(o, d), PitchCurvature(c, r.eccentricity, cosine)});
+    out.push_back({o, d, o + c.roller_radius * d, Cross(o, d),
+                   PitchCurvatureAtPitchDistance(c, r.eccentricity, cosine, inv_norm)});
   }
   return out;
 }

@@ -19,11 +19,10 @@ struct TurretBuffers {
   std::vector<double> cx, cy;            // roller centres O_k [mm]
   std::vector<double> arm, dx, dy, kappa;  // a_k, d_k, κ_k (contact.h's RollerContact, without the point)
   std::vector<double> loaded;            // PositivePart(sign · a_k)
-  std::vector<double> stress;            // Hertz p_max [MPa]
 };
 
 void Resize(TurretBuffers& b, int n) {
-  for (auto* v : {&b.cx, &b.cy, &b.arm, &b.dx, &b.dy, &b.kappa, &b.loaded, &b.stress}) v->resize(n);
+  for (auto* v : {&b.cx, &b.cy, &b.arm, &b.dx, &b.dy, &b.kappa, &b.loaded}) v->resize(n);
 }
 
 /// The slots u(2πi/n) of one turret (TurretSlot), computed once per cycle.
@@ -64,30 +63,27 @@ void ContactKernel(const CamSide<double> c, double e, double px, double py, doub
     arm[k] = a;
     const double sa = sign * a;
     loaded[k] = sa > 0.0 ? sa : 0.0;  // PositivePart
-    kappa[k] = PitchCurvature(c, e, (cx[k] * ex + cy[k] * ey) * inv_radius);
+    kappa[k] = PitchCurvatureAtPitchDistance(c, e, (cx[k] * ex + cy[k] * ey) * inv_radius, inv);
   }
 }
 
-/// FillStresses' Hertz stress of every roller into p (0 where unloaded, +∞ on an undercut part of
-/// the pitch curve), branch-free over plain arrays so that it vectorises; returns the largest.
-double StressKernel(int n, const double* __restrict force, const double* __restrict kappa,
-                    double roller_radius, double length, double e_star, double* __restrict p) {
-  // The square roots on every lane first (NaN where r_eff <= 0: discarded below), then the choice.
+/// FillStresses' largest Hertz stress of one turret (0 when nothing is loaded, +∞ when a loaded
+/// roller sits on an undercut part of the pitch curve), branch-free over plain arrays so that it
+/// vectorises. It takes the maximum of p² and one square root of it: the root is monotonic and
+/// correctly rounded, so this is bit for bit the maximum of FillStresses' per-roller p.
+double MaxStressKernel(int n, const double* __restrict force, const double* __restrict kappa,
+                       double roller_radius, double length, double e_star) {
+  double max_sq = 0.0;
   for (int k = 0; k < n; ++k) {
     const double r_eff = roller_radius * (1.0 - roller_radius * kappa[k]);
-    p[k] = contact::LineContactPeakPressure(force[k], length, r_eff, e_star);
+    // NaN or negative where r_eff <= 0: replaced by the choice below.
+    const double q = contact::LineContactPeakPressureSquared(force[k], length, r_eff, e_star);
+    const bool loaded = force[k] > 0;  // p → 0 continuously as F → 0
+    const bool convex = r_eff > 0;
+    const double p_sq = loaded ? (convex ? q : kInf) : 0.0;
+    max_sq = p_sq > max_sq ? p_sq : max_sq;
   }
-  // 0 where unloaded (p → 0 continuously as F → 0), +∞ where the roller sits on an undercut part
-  // of the pitch curve; written as selects so that the loop vectorises too. The maximum of
-  // non-NaN numbers does not depend on the order in which it is taken.
-  double max = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const bool loaded = force[k] > 0;
-    const bool convex = roller_radius * (1.0 - roller_radius * kappa[k]) > 0;
-    p[k] = loaded ? (convex ? p[k] : kInf) : 0.0;
-    max = p[k] > max ? p[k] : max;
-  }
-  return max;
+  return std::sqrt(max_sq);
 }
 
 /// The contact geometry of RollerContacts (same operations in the same order, so the same bits),
@@ -178,8 +174,8 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
         // FillStresses
         double max_stress = 0.0;
         if (stages.stress) {
-          max_stress = internal::StressKernel(int(n), force, buf->kappa.data(), cam->roller_radius,
-                                              cam->contact_length(), e_star, buf->stress.data());
+          max_stress = internal::MaxStressKernel(int(n), force, buf->kappa.data(), cam->roller_radius,
+                                                 cam->contact_length(), e_star);
         }
         series->actuating.push_back(actuating);
         series->max_force_N.push_back(max_force);

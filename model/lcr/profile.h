@@ -22,17 +22,34 @@
 
 namespace camopt::lcr {
 
+/// Numerator A² + kB² − AB(1+k)c of the pitch-curve curvature κ(c) (A = r_d, B = e k).
+template <typename T>
+T PitchCurvatureNumerator(const CamSide<T>& side, const T& eccentricity, const T& c) {
+  const double k = side.pitch_factor();
+  const T A = side.turret_radius;
+  const T B = eccentricity * T(k);
+  return A * A + T(k) * B * B - A * B * T(1.0 + k) * c;
+}
+
 /// Pitch-curve curvature κ [1/mm] as a function of c ∈ [−1, 1].
 template <typename T>
 T PitchCurvature(const CamSide<T>& side, const T& eccentricity, const T& c) {
-  using std::pow;
   using std::sqrt;
   const double k = side.pitch_factor();
   const T A = side.turret_radius;
   const T B = eccentricity * T(k);
-  const T num = A * A + T(k) * B * B - A * B * T(1.0 + k) * c;
   const T den = A * A + B * B - T(2.0) * A * B * c;
-  return num / (den * sqrt(den));
+  return PitchCurvatureNumerator(side, eccentricity, c) / (den * sqrt(den));
+}
+
+/// κ at a roller whose centre O lies at distance ρ = |I − O| from the cam's pitch point I = e k u(θ),
+/// given 1/ρ: by the law of cosines the denominator's A² + B² − 2ABc is ρ² (c the cosine between
+/// O and u(θ)), so κ = num · (1/ρ)³ — no square root or division of its own when the contact
+/// geometry already has 1/ρ (contact.h). Equal to PitchCurvature up to rounding.
+template <typename T>
+T PitchCurvatureAtPitchDistance(const CamSide<T>& side, const T& eccentricity, const T& c,
+                                const T& inv_distance) {
+  return PitchCurvatureNumerator(side, eccentricity, c) * (inv_distance * inv_distance * inv_distance);
 }
 
 /// Pitch curve point X(ψ) in the cam frame.
