@@ -296,8 +296,8 @@ Result Run(const Study& s, const RunContext& ctx) {
   Result res;
   const auto t0 = std::chrono::steady_clock::now();
   for (const auto& c : objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences)) {
-    if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}});
-    for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}});
+    if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}});
+    for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}});
   }
   {
     Progress progress("lcr_min_size", ctx.quiet);
