@@ -19,6 +19,7 @@
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_crowning_tuning_study.h"
 #include "studies/work_limits.h"
+#include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -180,12 +181,7 @@ TEST(LcrContact3D, SlicesPeakGradientThroughTheReducerMatchesCentralDifferences)
   // input angle 0.3 rad, with R' from the pitch curvature.
   auto fn = [](const auto& x) {
     using T = std::decay_t<decltype(x[0])>;
-    lcr::Reducer<T> r;
-    r.eccentricity = x[0];
-    r.input = {12, 13, T(37.0), x[1], T(10.0), T(8.0)};
-    r.output = {14, 15, T(42.0), x[1], T(10.0), T(8.0)};
-    const auto contacts = lcr::RollerContacts(r, lcr::Side::kOutput, T(0.3));
-    const T r_eff = r.output.roller_radius * (T(1.0) - r.output.roller_radius * contacts[3].curvature);
+    const auto [r, r_eff] = testing::LcrIIOutputRoller3(x[0], x[1]);
     lcr::RollerCrowning<T> c;
     c.type = contact::CrowningType::kLogarithmic;
     c.coefficient = x[2];

@@ -5,6 +5,7 @@
 
 #include "model/cycloid/tooth_profile.h"
 #include "model/disc_cam/disc_cam.h"
+#include "model/lcr/contact.h"
 #include "model/lcr/reducer.h"
 #include "model/motion/motion_program.h"
 #include "objectives/lcr_sizing.h"
@@ -99,6 +100,25 @@ disc_cam::DiscCamTpl<T> DiscCamOscillatingExample(T rb = T(40.0), T rf = T(10.0)
                                          {MotionLaw::kModifiedSine, -rise, T(100 * kDeg)},
                                          {MotionLaw::kDwell, T(0.0), T(100 * kDeg)}});
   return cam;
+}
+
+/// LCR II with its eccentricity and the roller radius of both sides given as T (gradients through
+/// them), and the effective radius R' = r_r (1 − r_r κ) of output roller 3 at input angle 0.3 rad:
+/// the contact the 3D-contact gradient tests differentiate.
+template <typename T>
+struct LcrIIContact {
+  lcr::Reducer<T> reducer;
+  T effective_radius;
+};
+template <typename T>
+LcrIIContact<T> LcrIIOutputRoller3(T eccentricity, T roller_radius) {
+  LcrIIContact<T> c;
+  c.reducer.eccentricity = eccentricity;
+  c.reducer.input = {12, 13, T(37.0), roller_radius, T(10.0), T(8.0)};
+  c.reducer.output = {14, 15, T(42.0), roller_radius, T(10.0), T(8.0)};
+  const auto contacts = lcr::RollerContacts(c.reducer, lcr::Side::kOutput, T(0.3));
+  c.effective_radius = c.reducer.output.roller_radius * (T(1.0) - c.reducer.output.roller_radius * contacts[3].curvature);
+  return c;
 }
 
 }  // namespace camopt::testing
