@@ -497,13 +497,19 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the optimizer's tolerance and
-// the angle samples of the smooth phase (the reported numbers come from the 3600-angle check).
-Fidelity Knobs(const nlohmann::json&) {
+// the angle samples of the smooth phase (the reported numbers come from the 3600-angle check);
+// with the finite-length contact (issue 12) also the slice count of the slices model, which sets
+// the 3D stress rows and the check (an edge peak of straight rollers grows with it).
+Fidelity Knobs(const nlohmann::json& study) {
   Fidelity f;
   f.knobs.push_back({"optimizer_tolerance", {"/optimizer/tolerance"}, 1e-8, 0.1, false, 0,
                      "relative optimality / step tolerance of each start"});
   f.knobs.push_back({"samples_per_period", {"/optimizer/samples_per_period"}, 24, 2, true, 0,
                      "angle samples per load period in the optimizer's problem"});
+  const auto model = nlohmann::json::json_pointer("/contact/model");
+  if (study.contains(model) && study[model] != "line")
+    f.knobs.push_back({"contact_slices", {"/contact/slices"}, 40, 2, true, 0,
+                       "slices along the roller (the slices model of the stress rows and the check)"});
   f.headlines = {"/best/outer_diameter_mm", "/best/eccentricity_mm", "/best/max_contact_stress_MPa",
                  "/best/max_roller_force_N", "/best/mean_efficiency"};
   return f;

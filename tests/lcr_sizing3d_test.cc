@@ -4,6 +4,8 @@
 // crowning-free study, and bad input (exit 2 with the JSON path).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -116,17 +118,32 @@ TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOnTheEnds) {
   ExpectRowsMatchCentralDifferences(x);
 }
 
-TEST(LcrSizing3D, EdgeMarginSignFollowsTheEndSlices) {
-  // The margin is positive exactly when both end slices carry no load (model/lcr/contact3d_edge.h).
+TEST(LcrSizing3D, EdgeMarginSignFollowsAConvergedSolution) {
+  // The margin (model/lcr/contact3d_edge.h) is extrapolated from the two end slices to the
+  // contact's end: at 20 slices its sign says whether a converged solution (320 slices) has load on
+  // an end slice, for a light crown (loaded end), a crown near the onset and a heavy crown (free
+  // ends), and the margin itself converges at second order in the slice width.
   lcr::RollerCrowning<double> c;
   c.type = contact::CrowningType::kLogarithmic;
   c.effective_length = 12;
   for (double f : {0.001, 0.004, 0.02}) {
     c.coefficient = f;
+    const auto fine = lcr::RollerContactSlices<double>(900.0, 3.0, 8.0, 226373.6, c, 1e-3, 320);
     const auto sol = lcr::RollerContactSlices<double>(900.0, 3.0, 8.0, 226373.6, c, 1e-3, 20);
     const double m = lcr::EdgeMargin<double>(sol, 900.0, 3.0, 8.0, 226373.6, c, 1e-3);
-    EXPECT_EQ(m > 0, !sol.edge_loaded) << "f = " << f << ", margin " << m;
+    EXPECT_EQ(m > 0, !fine.edge_loaded) << "f = " << f << ", margin " << m;
   }
+  // Convergence off the ends (f = 0.02): the change per doubling of the slices falls by >= 3x
+  // (second order: 4x; the end slice's own value, first order, would give 2x).
+  c.coefficient = 0.02;
+  std::vector<double> m;
+  for (int n : {10, 20, 40, 80, 160}) {
+    const auto sol = lcr::RollerContactSlices<double>(900.0, 3.0, 8.0, 226373.6, c, 1e-3, n);
+    m.push_back(lcr::EdgeMargin<double>(sol, 900.0, 3.0, 8.0, 226373.6, c, 1e-3));
+    std::printf("edge margin, f 0.02, %d slices: %.6f\n", n, m.back());
+  }
+  for (size_t i = 2; i < m.size(); ++i)
+    EXPECT_GE(std::abs(m[i - 2] - m[i - 1]), 3 * std::abs(m[i - 1] - m[i])) << i;
 }
 
 // One combination of the crowned example (max_lobes 14: 12/13 + 14/15).
