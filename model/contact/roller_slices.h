@@ -92,6 +92,26 @@ inline const Gauss& Rule() {
   return g;
 }
 
+/// cos φ_i and sin φ_i at the rule's nodes mapped to [0, π/2] (the whole range of SmoothIntegral
+/// for k <= 1): the same φ_i = π/4 + (π/4) x_i and the same library calls as a run-time evaluation,
+/// so the values are the same bits, computed once.
+struct QuarterNodes {
+  std::vector<double> c, s;
+  QuarterNodes() {
+    const Gauss& g = Rule();
+    const double half = 0.5 * (kPi / 2 - 0.0), mid = 0.5 * (kPi / 2 + 0.0);
+    for (double x : g.x) {
+      const double phi = mid + half * x;
+      c.push_back(std::cos(phi));
+      s.push_back(std::sin(phi));
+    }
+  }
+};
+inline const QuarterNodes& Quarter() {
+  static const QuarterNodes q;
+  return q;
+}
+
 /// ∫₀¹ sqrt(1 − t²) ln(1 + sqrt(1 + (k t)²)) dt, k = b/|η| > 0.
 template <typename S>
 S SmoothIntegral(const S& k) {
@@ -115,7 +135,15 @@ S SmoothIntegral(const S& k) {
     }
     return half * sum;
   };
-  if (Value(k) <= 1.0) return segment(S(0.0), S(kPi / 2));
+  if (Value(k) <= 1.0) {  // segment(0, π/2) with the nodes' cos and sin from the table
+    const QuarterNodes& q = Quarter();
+    S sum(0.0);
+    for (size_t i = 0; i < g.x.size(); ++i) {
+      const S c(q.c[i]), kt = k * S(q.s[i]);
+      sum += S(g.w[i]) * c * c * log(S(1.0) + sqrt(S(1.0) + kt * kt));
+    }
+    return S(0.5 * (kPi / 2 - 0.0)) * sum;
+  }
   const S split = asin(S(1.0) / k);
   return segment(S(0.0), split) + segment(split, S(kPi / 2));
 }
