@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/common/roots.h"
+#include "model/contact/crowning.h"
 #include "model/contact/hertz.h"
 
 namespace camopt::contact {
@@ -54,6 +56,29 @@ RollerHalfSpaceResult SolveRollerHalfSpace(double force_N, double r_eff_mm, doub
     out.edge_loaded = out.pressure_along_y.front() > tiny || out.pressure_along_y.back() > tiny;
     break;
   }
+  return out;
+}
+
+LogCrownDesign DesignLogCrownForLoad(double force_N, double r_eff_mm, double length_mm, double e_star_MPa,
+                                     double effective_length_mm, int nx, int ny, double k1_lo, double k1_hi,
+                                     double k1_tolerance, HalfSpaceSolver& solver) {
+  if (!(effective_length_mm > length_mm) || !(k1_lo > 0) || !(k1_hi > k1_lo))
+    throw std::invalid_argument("log crown design: need Le > l and 0 < k1_lo < k1_hi");
+  const double f_lundberg = LundbergCoefficient(force_N, length_mm, e_star_MPa);
+  LogCrownDesign out;
+  const auto peak = [&](double k1) {
+    const auto h = SolveRollerHalfSpace(force_N, r_eff_mm, length_mm, e_star_MPa, [&](double y) {
+      return CrowningDrop<double>(CrowningType::kLogarithmic, 0.0, 0.0, k1 * f_lundberg, effective_length_mm, y);
+    }, nx, ny, 0, solver);
+    ++out.solves;
+    if (!h.converged) throw std::runtime_error("log crown design: half_space solve not converged: " + h.message);
+    return h.peak_pressure_MPa;
+  };
+  const auto b = GoldenSectionMaximize([&](double k1) { return -peak(k1); }, k1_lo, k1_hi, 60, k1_tolerance);
+  // The better of the two interior points of the final bracket (both evaluated).
+  out.k1 = b.f1 >= b.f2 ? b.x1 : b.x2;
+  out.peak_pressure_MPa = -std::max(b.f1, b.f2);
+  out.coefficient_mm = out.k1 * f_lundberg;
   return out;
 }
 

@@ -34,4 +34,21 @@ RollerHalfSpaceResult SolveRollerHalfSpace(double force_N, double r_eff_mm, doub
                                            int nx, int ny, double half_width_hint_mm,
                                            HalfSpaceSolver& solver);
 
+/// A logarithmic crown designed for its load by Fujiwara & Kawase's criterion (NTN Technical
+/// Review 75, 2007: the crown's parameters minimise the peak contact pressure at the design load):
+/// Lundberg's form f ln(1/(1 − (2y/Le)²)) with a given effective length Le > l and the
+/// coefficient f = K1·F/(π l E*) (K1 their load coefficient; 1 is Lundberg's), K1 the minimiser of
+/// the half_space peak pressure at F over [k1_lo, k1_hi] on an nx × ny grid (golden section to a
+/// bracket of k1_tolerance). The peak is the larger of the middle's pressure (rises with K1) and
+/// the end region's (falls with K1), so the minimiser is where they meet.
+struct LogCrownDesign {
+  double k1 = 0;               ///< load coefficient [-]
+  double coefficient_mm = 0;   ///< f = K1 F/(π l E*)
+  double peak_pressure_MPa = 0;  ///< at the design, on the design grid
+  int solves = 0;
+};
+LogCrownDesign DesignLogCrownForLoad(double force_N, double r_eff_mm, double length_mm, double e_star_MPa,
+                                     double effective_length_mm, int nx, int ny, double k1_lo, double k1_hi,
+                                     double k1_tolerance, HalfSpaceSolver& solver);
+
 }  // namespace camopt::contact
