@@ -15,7 +15,10 @@
 namespace camopt::objectives {
 namespace {
 
-constexpr int kJetSize = 8;  // e, r_dA, r_dB, d_rA, d_rB, R, f_A, f_B at most
+// e, r_dA, r_dB, d_rA, d_rB (at most 6 line variables) and two crowning variables: the usual
+// problems; the larger Jet only when more crowning parameters or the lengths are variables.
+constexpr int kJetSize = 8;
+constexpr int kJetSizeLarge = 14;  // 6 + 3 crowning pairs + roller length + cam thickness
 // The solvers meet constraints to about their tolerance; the 3D stress limit is tightened by more
 // than the line limits of lcr_min_size.cc (1e-5) because its rows sit at fixed angles of the dense
 // grid, whose maximum may move to a neighbouring angle (a second-order change, ~1e-5 here).
@@ -43,11 +46,23 @@ lcr::Reducer<T> DesignOf(const LcrSizingSpec& s, std::span<const T> x) {
   return r;
 }
 
+// The crowning of one cam: the fixed one with the variables of the header's order set.
 template <typename T>
 lcr::RollerCrowning<T> CrowningOf(const LcrSizing3DSpec& s3, std::span<const T> x, int base_vars, int side) {
   lcr::RollerCrowning<T> c = s3.crowning.cast<T>();
-  if (s3.coefficient_range_mm) c.coefficient = x[base_vars + side];
+  int o = base_vars;
+  if (s3.coefficient_range_mm) c.coefficient = x[o + side], o += 2;
+  if (s3.radius_range_mm) c.radius = x[o + side], o += 2;
+  if (s3.flat_length_range_mm) c.flat_length = x[o + side], o += 2;
   return c;
+}
+
+// The roller length and cam thickness variables (header's order) set on both cams of r.
+template <typename T>
+void SetLengths(const LcrSizing3DSpec& s3, std::span<const T> x, int base_vars, lcr::Reducer<T>& r) {
+  int o = base_vars + s3.extra_variables() - int(bool(s3.roller_length_range_mm)) - int(bool(s3.cam_thickness_range_mm));
+  if (s3.roller_length_range_mm) r.input.roller_length = r.output.roller_length = x[o++];
+  if (s3.cam_thickness_range_mm) r.input.cam_thickness = r.output.cam_thickness = x[o++];
 }
 
 // Margin of one contact (header): the line margin of lcr_sizing.cc with the slices peak.
@@ -92,7 +107,8 @@ template <typename T>
 void Evaluate3D(const LcrSizingSpec& s, const LcrSizing3DSpec& s3, double p_lim, const LcrTracked3D& tr,
                 std::span<const T> x, std::span<T> y) {
   const int nb = BaseVariables(s);
-  const lcr::Reducer<T> r = DesignOf(s, x);
+  lcr::Reducer<T> r = DesignOf(s, x);
+  SetLengths(s3, x, nb, r);
   const double e_star = s.material.composite_modulus_MPa();
   const double overload = s3.overload_torque_Nmm / s.output_torque_Nmm;
   size_t o = 0;
@@ -181,7 +197,8 @@ struct DenseResult {
 DenseResult Dense(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, std::span<const double> x, int steps) {
   DenseResult d;
   const int nb = BaseVariables(spec);
-  const lcr::Reducer<double> r = LcrDesign(spec, x.first(nb));
+  lcr::Reducer<double> r = LcrDesign(spec, x.first(nb));
+  SetLengths(s3, x, nb, r);
   LcrSizingSpec no_stress = spec;
   no_stress.limits.contact_stress_MPa = kInf;
   d.check = DenseCheck(no_stress, r, steps, &d.near);
@@ -277,11 +294,24 @@ Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec&
                                const LcrTracked3D& tracked) {
   Problem p = MakeLcrSizingProblem(base);
   const int nb = p.num_vars();
-  if (s3.coefficient_range_mm) {
-    const auto [lo, hi] = *s3.coefficient_range_mm;
-    const double start = std::clamp(s3.crowning.coefficient, lo, hi);
+  // The start values are the fixed crowning's (SolveLcrMinSize3D sets them inside the ranges).
+  const auto pair = [&](const std::optional<std::array<double, 2>>& range, const char* name, double value) {
+    if (!range) return;
+    const auto [lo, hi] = *range;
     for (const char* side : {"input", "output"})
-      p.variables.push_back({std::string(side) + "_crowning_coefficient_mm", lo, hi, start, std::max(hi, 1e-3) / 2});
+      p.variables.push_back({std::string(side) + "_crowning_" + name, lo, hi, std::clamp(value, lo, hi),
+                             std::max(hi, 1e-3) / 2});
+  };
+  pair(s3.coefficient_range_mm, "coefficient_mm", s3.crowning.coefficient);
+  pair(s3.radius_range_mm, "radius_mm", s3.crowning.radius);
+  pair(s3.flat_length_range_mm, "flat_length_mm", s3.crowning.flat_length);
+  if (s3.roller_length_range_mm) {
+    const auto [lo, hi] = *s3.roller_length_range_mm;
+    p.variables.push_back({"roller_length_mm", lo, hi, std::clamp(base.roller_length_mm, lo, hi), hi / 2});
+  }
+  if (s3.cam_thickness_range_mm) {
+    const auto [lo, hi] = *s3.cam_thickness_range_mm;
+    p.variables.push_back({"cam_thickness_mm", lo, hi, std::clamp(base.cam_thickness_mm, lo, hi), hi / 2});
   }
   std::vector<OutputBlock> rows;
   int offset = 0;
@@ -299,8 +329,8 @@ Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec&
   const LcrSizing3DSpec spec3 = s3;
   const LcrTracked3D tr = tracked;
   const int n = p.num_vars();
-  auto row_eval = MakeEvaluator<kJetSize>(
-      n, rows, [s, spec3, tr, stress_limit_MPa](auto x, auto y) { Evaluate3D(s, spec3, stress_limit_MPa, tr, x, y); });
+  const auto f = [s, spec3, tr, stress_limit_MPa](auto x, auto y) { Evaluate3D(s, spec3, stress_limit_MPa, tr, x, y); };
+  auto row_eval = n <= kJetSize ? MakeEvaluator<kJetSize>(n, rows, f) : MakeEvaluator<kJetSizeLarge>(n, rows, f);
   std::vector<OutputBlock> blocks = p.evaluator->blocks();
   const int mb = p.evaluator->num_outputs();
   for (OutputBlock b : rows) {
@@ -365,6 +395,17 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
     x.push_back(s.crowning.coefficient);
     x.push_back(s.crowning.coefficient);
   }
+  // The other variables start at the fixed values (the parser requires them), clamped.
+  const auto start = [&](const std::optional<std::array<double, 2>>& range, double& value, int copies) {
+    if (!range) return;
+    value = std::clamp(value, (*range)[0], (*range)[1]);
+    for (int i = 0; i < copies; ++i) x.push_back(value);
+  };
+  double roller_length = spec.roller_length_mm, cam_thickness = spec.cam_thickness_mm;
+  start(s.radius_range_mm, s.crowning.radius, 2);
+  start(s.flat_length_range_mm, s.crowning.flat_length, 2);
+  start(s.roller_length_range_mm, roller_length, 1);
+  start(s.cam_thickness_range_mm, cam_thickness, 1);
   const double p_lim = spec.limits.contact_stress_MPa;
   const LcrSizingSpec tight = Tightened(spec);
   LcrActiveSet active = line.active;
@@ -424,6 +465,7 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
   }
   o.x = x;
   o.design = LcrDesign(spec, std::span<const double>(x).first(nb));
+  SetLengths<double>(s, x, nb, *o.design);
   o.active = active;
   o.result.value_evaluations = values;
   o.result.gradient_evaluations = gradients;

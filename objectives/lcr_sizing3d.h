@@ -42,9 +42,23 @@ struct LcrSizing3DSpec {
   /// Crowning of both cams (type and fixed parameters; the coefficient is the start value when it
   /// is a variable).
   lcr::RollerCrowning<double> crowning;
-  /// Logarithmic coefficient f of each cam as a variable over this range [mm] (empty: fixed).
+  /// Crowning parameters of each cam as variables over these ranges (empty: fixed): the
+  /// logarithmic coefficient f, the radius R (circular, partial) and the flat length L0 (partial)
+  /// [mm]; each adds one variable per cam (input, output).
   std::optional<std::array<double, 2>> coefficient_range_mm;
+  std::optional<std::array<double, 2>> radius_range_mm;
+  std::optional<std::array<double, 2>> flat_length_range_mm;
+  /// The roller length and the cam thickness (one value for both cams) as variables [mm] (empty:
+  /// the spec's fixed values). They set the contact length min(l_r, b_c) of the 3D rows.
+  std::optional<std::array<double, 2>> roller_length_range_mm;
+  std::optional<std::array<double, 2>> cam_thickness_range_mm;
   double overload_torque_Nmm = 0;  ///< 0: no end constraint
+
+  /// Variables appended after the line problem's: 2 per crowning range, 1 per length range.
+  int extra_variables() const {
+    return 2 * (int(bool(coefficient_range_mm)) + int(bool(radius_range_mm)) + int(bool(flat_length_range_mm))) +
+           int(bool(roller_length_range_mm)) + int(bool(cam_thickness_range_mm));
+  }
 };
 
 /// One tracked contact of the 3D rows.
@@ -60,8 +74,10 @@ struct LcrTracked3D {
   std::vector<LcrContactSample> stress, edge;
 };
 
-/// The polish problem (header step 2): variables of MakeLcrSizingProblem(base) followed by
-/// `input_crowning_coefficient_mm`, `output_crowning_coefficient_mm` when they are variables.
+/// The polish problem (header step 2): variables of MakeLcrSizingProblem(base) followed by those
+/// of spec3d's ranges, in this order: `input_crowning_coefficient_mm`, `output_…`,
+/// `input_crowning_radius_mm`, `output_…`, `input_crowning_flat_length_mm`, `output_…`,
+/// `roller_length_mm`, `cam_thickness_mm` (each pair or single only when it is a variable).
 /// base: the tightened spec in kActiveSet form without a stress limit; stress_limit_MPa the
 /// (tightened) 3D limit.
 Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec& spec3d, double stress_limit_MPa,
@@ -83,7 +99,9 @@ struct LcrHalfSpaceCheck {
 };
 
 struct LcrMinSize3DOutcome {
-  LcrMinSizeOutcome outcome;  ///< check->max_stress_MPa holds the 3D (slices) peaks
+  /// check->max_stress_MPa holds the 3D (slices) peaks; design carries the chosen roller length
+  /// and cam thickness when they are variables.
+  LcrMinSizeOutcome outcome;
   std::array<lcr::RollerCrowning<double>, 2> crowning;  ///< the chosen crowning per cam
   std::optional<LcrContact3DCheck> contact;
   LcrTracked3D tracked;

@@ -1,7 +1,9 @@
 // See lcr_min_size_contact.h.
 #include "studies/lcr_min_size_contact.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "studies/lcr_contact_input.h"
 #include "studies/lcr_min_size_study.h"
@@ -37,22 +39,70 @@ nlohmann::json MaybeFinite(double v) { return std::isfinite(v) ? nlohmann::json(
 
 }  // namespace
 
-std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm) {
+std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm, bool catalogue) {
   const Node vars = root["variables"], fixed = root["fixed"];
+  const char* crown_vars[] = {"crowning_coefficient_mm", "crowning_radius_mm", "crowning_flat_length_mm"};
+  const char* length_vars[] = {"roller_length_mm", "cam_thickness_mm"};
+  bool has_var = false, has_length_var = false;
+  for (const char* v : crown_vars) has_var = has_var || vars.Has(v);
+  for (const char* v : length_vars) has_length_var = has_length_var || vars.Has(v);
   const bool has_contact = root.Has("contact"), has_crown = fixed.Has("crowning"),
-             has_var = vars.Has("crowning_coefficient_mm"),
              has_over = root.Has("load") && root["load"].Has("overload_torque_Nm");
-  if (!has_contact && !has_crown && !has_var && !has_over) return std::nullopt;
+  if (!has_contact && !has_crown && !has_var && !has_length_var && !has_over) return std::nullopt;
   objectives::LcrSizing3DSpec s;
   if (has_contact) s.contact = ParseContactOptions(root["contact"]);
-  if (has_crown) s.crowning = ParseRollerCrowning(fixed["crowning"], roller_length_mm, !has_var);
-  if (has_var) {
-    if (!has_crown || s.crowning.type != contact::CrowningType::kLogarithmic)
-      vars["crowning_coefficient_mm"].Fail(
-          "a range only with fixed.crowning {\"type\": \"logarithmic\", \"effective_length_mm\": Le}");
-    const auto [lo, hi] = vars["crowning_coefficient_mm"].Range();
-    if (!(lo > 0) || !(hi <= 1.0)) vars["crowning_coefficient_mm"].Fail("a [lo, hi] range with 0 < lo < hi <= 1 mm");
-    s.coefficient_range_mm = std::array<double, 2>{lo, hi};
+  // The roller length variable's upper end is the longest roller the crowning must fit.
+  double longest = roller_length_mm;
+  if (vars.Has("roller_length_mm")) {
+    const Node v = vars["roller_length_mm"];
+    if (catalogue) v.Fail("no roller length variable with a roller catalogue (the catalogue gives the lengths)");
+    const auto [lo, hi] = v.Range();
+    if (!(lo > 0)) v.Fail("a [lo, hi] range with 0 < lo < hi mm");
+    s.roller_length_range_mm = std::array<double, 2>{lo, hi};
+    longest = std::max(longest, hi);
+  }
+  if (vars.Has("cam_thickness_mm")) {
+    const Node v = vars["cam_thickness_mm"];
+    const auto [lo, hi] = v.Range();
+    if (!(lo > 0)) v.Fail("a [lo, hi] range with 0 < lo < hi mm");
+    s.cam_thickness_range_mm = std::array<double, 2>{lo, hi};
+  }
+  if (has_crown)
+    s.crowning = ParseRollerCrowning(fixed["crowning"], longest, !vars.Has("crowning_coefficient_mm"));
+  using contact::CrowningType;
+  const auto range = [&](const char* name, std::initializer_list<CrowningType> types, const char* want,
+                         double lo_min, double hi_max) -> std::optional<std::array<double, 2>> {
+    if (!vars.Has(name)) return std::nullopt;
+    const Node v = vars[name];
+    if (!has_crown || std::find(types.begin(), types.end(), s.crowning.type) == types.end())
+      v.Fail(std::string("a range only with fixed.crowning ") + want + " (its fixed value is the start)");
+    const auto [lo, hi] = v.Range();
+    if (!(lo >= lo_min) || !(hi <= hi_max))
+      v.Fail("a [lo, hi] range with " + std::to_string(lo_min) + " <= lo < hi <= " + std::to_string(hi_max) + " mm");
+    return std::array<double, 2>{lo, hi};
+  };
+  s.coefficient_range_mm = range("crowning_coefficient_mm", {CrowningType::kLogarithmic},
+                                 "{\"type\": \"logarithmic\", \"effective_length_mm\": Le}", 1e-9, 1.0);
+  if (s.coefficient_range_mm && !((*s.coefficient_range_mm)[0] > 0))
+    vars["crowning_coefficient_mm"].Fail("a [lo, hi] range with 0 < lo < hi <= 1 mm");
+  s.radius_range_mm = range("crowning_radius_mm", {CrowningType::kCircular, CrowningType::kPartial},
+                            "{\"type\": \"circular\" or \"partial\", \"radius_mm\": R, ...}", 1e-9, 1e6);
+  s.flat_length_range_mm = range("crowning_flat_length_mm", {CrowningType::kPartial},
+                                 "{\"type\": \"partial\", \"radius_mm\": R, \"flat_length_mm\": L0}", 0.0, 1e6);
+  // Every point of the ranges must fit the longest roller: the smallest radius over the longest
+  // crowned length (the shortest flat), the longest flat.
+  if (s.radius_range_mm || s.flat_length_range_mm) {
+    lcr::RollerCrowning<double> worst = s.crowning;
+    if (s.radius_range_mm) worst.radius = (*s.radius_range_mm)[0];
+    if (s.flat_length_range_mm) worst.flat_length = (*s.flat_length_range_mm)[0];
+    std::string problem = lcr::CheckRollerCrowning(worst, longest);
+    if (problem.empty() && s.flat_length_range_mm) {
+      worst.flat_length = (*s.flat_length_range_mm)[1];
+      problem = lcr::CheckRollerCrowning(worst, std::min(longest, roller_length_mm));
+    }
+    if (!problem.empty())
+      vars[s.radius_range_mm ? "crowning_radius_mm" : "crowning_flat_length_mm"].Fail(
+          "a range the crowning fits at both ends: " + problem);
   }
   if (has_over) {
     const Node over = root["load"]["overload_torque_Nm"];
@@ -61,7 +111,12 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, doub
       over.Fail("an overload torque >= the target's output_torque_Nm");
   }
   if (s.contact.model == lcr::ContactModel::kLine) {
-    const std::string why = has_crown || has_var ? "crowned rollers" : has_over ? "an overload torque" : "";
+    // Under the line model the stress only falls as a roller or cam gets longer and nothing else
+    // depends on the length: a length variable would sit at its upper bound (docs/studies.md).
+    const std::string why = has_crown || has_var ? "crowned rollers"
+                            : has_over           ? "an overload torque"
+                            : has_length_var     ? "roller length or cam thickness variables"
+                                                 : "";
     if (!why.empty()) {
       const std::string want = "slices or half_space with " + why + " (the line model ignores them)";
       if (has_contact && root["contact"].Has("model")) root["contact"]["model"].Fail(want);
@@ -85,7 +140,9 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
                     {"slices", c3.contact.slices},
                     {"misalignment_mrad", c3.contact.misalignment_rad * 1e3},
                     {"crowning", CrowningJson(c3.crowning)},
-                    {"crowning_variable", bool(c3.coefficient_range_mm)}};
+                    {"crowning_variable", bool(c3.coefficient_range_mm || c3.radius_range_mm || c3.flat_length_range_mm)},
+                    {"length_variables", {{"roller_length_mm", bool(c3.roller_length_range_mm)},
+                                          {"cam_thickness_mm", bool(c3.cam_thickness_range_mm)}}}};
   if (c3.overload_torque_Nmm > 0) res["contact"]["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
   for (size_t i = 0; i < r.candidates.size(); ++i) {
     const auto& o3 = r.candidates[i].outcome3d;

@@ -18,9 +18,11 @@ struct Candidate;
 struct Result;
 
 /// The 3D contact of the study, or nothing (the line model: the fast path). roller_length_mm: the
-/// longest roller the crowning must fit. @throws StudyError: crowning, misalignment or an
-/// overload torque with the line model; a crowning variable without a logarithmic crown.
-std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm);
+/// longest roller the crowning must fit; catalogue: the rollers come from a catalogue (no roller
+/// length variable). @throws StudyError: crowning, misalignment, an overload torque or a crowning
+/// or length variable with the line model; a crowning variable the crowning type does not have;
+/// ranges whose ends the crowning does not fit.
+std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm, bool catalogue);
 
 /// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d).
 void SolveCandidate3D(const Study& s, Candidate& c);

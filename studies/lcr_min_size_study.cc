@@ -205,7 +205,8 @@ Study Parse(const Node& root) {
   LcrSizingSpec& b = s.base;
   const Node vars = root["variables"];
   vars.CheckKnownFields({"eccentricity_mm", "turret_radius_mm", "roller_diameter_mm", "same_roller_on_both_cams",
-                         "crowning_coefficient_mm"});
+                         "crowning_coefficient_mm", "crowning_radius_mm", "crowning_flat_length_mm",
+                         "roller_length_mm", "cam_thickness_mm"});
   b.eccentricity_mm = PositiveRange(vars["eccentricity_mm"]);
   b.turret_radius_mm = PositiveRange(vars["turret_radius_mm"]);
   if (vars.Has("roller_diameter_mm")) b.roller_diameter_mm = PositiveRange(vars["roller_diameter_mm"]);
@@ -276,7 +277,7 @@ Study Parse(const Node& root) {
   solver.max_seconds = 10.0;  // per local solve
   double longest = b.roller_length_mm;
   for (const CatalogueRoller& r : s.catalogue) longest = std::max(longest, r.length_mm);
-  s.contact3d = ParseContact3D(root, s.catalogue.empty() ? b.roller_length_mm : longest);
+  s.contact3d = ParseContact3D(root, s.catalogue.empty() ? b.roller_length_mm : longest, !s.catalogue.empty());
   s.options.smooth_form = s.form;
 
   if (objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences).empty())

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -65,9 +66,14 @@ int TopRoller(const objectives::LcrSizingSpec& s, const std::vector<double>& x, 
   return int(std::max_element(f.begin(), f.end()) - f.begin());
 }
 
-void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0) {
+// The 3D rows' Jacobian (AD through the evaluator) against central differences over all N
+// variables of the problem of s3 at x0 (the 5 line variables of Spec() first).
+template <int N>
+void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0, const objectives::LcrSizing3DSpec& s3,
+                                       double cam_thickness_mm = 8, double roller_length_mm = 10) {
   objectives::LcrSizingSpec s = Spec();
   s.limits.contact_stress_MPa = kInf;
+  s.cam_thickness_mm = cam_thickness_mm, s.roller_length_mm = roller_length_mm;
   objectives::LcrTracked3D tr;
   for (int side = 0; side < 2; ++side)
     for (double theta : {0.05, 0.11}) {
@@ -75,16 +81,17 @@ void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0) {
       tr.edge.push_back({side, theta, TopRoller(s, x0, side, theta)});
     }
   for (int side = 0; side < 2; ++side) s.active.force[side] = {{0.05, TopRoller(s, x0, side, 0.05), 0.0}};
-  const objectives::Problem p = objectives::MakeLcrSizing3DProblem(s, Spec3D(), 1500, tr);
-  ASSERT_EQ(p.num_vars(), 7);
+  const objectives::Problem p = objectives::MakeLcrSizing3DProblem(s, s3, 1500, tr);
+  ASSERT_EQ(p.num_vars(), N);
+  ASSERT_EQ(int(x0.size()), N);
   const auto& ev = *p.evaluator;
   const int first = ev.block("input_stress_margin_3d").offset, m = ev.num_outputs();
   ASSERT_EQ(m - first, 8);
-  // f over the 7 variables: doubles through Eval, Jets through EvalWithJacobian and the chain rule.
+  // f over the N variables: doubles through Eval, Jets through EvalWithJacobian and the chain rule.
   auto f = [&](const auto& x) {
     using T = typename std::decay_t<decltype(x)>::value_type;
-    std::vector<double> xv(7), y(m), jac(size_t(m) * 7);
-    for (int i = 0; i < 7; ++i) xv[i] = Value(x[i]);
+    std::vector<double> xv(N), y(m), jac(size_t(m) * N);
+    for (int i = 0; i < N; ++i) xv[i] = Value(x[i]);
     std::vector<T> out;
     if constexpr (std::is_same_v<T, double>) {
       ev.Eval(xv, y);
@@ -93,15 +100,15 @@ void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0) {
       ev.EvalWithJacobian(xv, y, jac);
       for (int k = first; k < m; ++k) {
         T v(y[k]);
-        for (int i = 0; i < 7; ++i) v.v += jac[size_t(k) * 7 + i] * x[i].v;
+        for (int i = 0; i < N; ++i) v.v += jac[size_t(k) * N + i] * x[i].v;
         out.push_back(v);
       }
     }
     return out;
   };
-  std::array<double, 7> x;
+  std::array<double, N> x;
   std::copy(x0.begin(), x0.end(), x.begin());
-  camopt::testing::ExpectJacobianMatchesCentralDifferences<7>(f, x, kGradientRelTol, kGradientAbsTol);
+  camopt::testing::ExpectJacobianMatchesCentralDifferences<N>(f, x, kGradientRelTol, kGradientAbsTol);
 }
 
 TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOffTheEnds) {
@@ -109,13 +116,37 @@ TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOffTheEnds) {
   // the onset a slice entering the contact set is a kink of the discrete model, where central
   // differences straddle two pieces).
   const std::vector<double> x = {1.2266, 48.889, 48.889, 7.722, 52.75, 0.03, 0.025};
-  ExpectRowsMatchCentralDifferences(x);
+  ExpectRowsMatchCentralDifferences<7>(x, Spec3D());
 }
 
 TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOnTheEnds) {
   // A light crown: at 1 mrad the overload pressure reaches an end (edge margins negative).
   const std::vector<double> x = {1.2266, 48.889, 48.889, 7.722, 52.75, 0.002, 0.0015};
-  ExpectRowsMatchCentralDifferences(x);
+  ExpectRowsMatchCentralDifferences<7>(x, Spec3D());
+}
+
+TEST(LcrSizing3D, RowsMatchCentralDifferencesInTheCrownRadiusFlatLengthAndLengths) {
+  // A partial crown (R, L0 per cam as variables) and the roller length and cam thickness as
+  // variables: 5 + 2 + 2 + 1 + 1 = 11. The contact length is min(l_r, b_c): with l_r < b_c the
+  // roller length sets it (the cam thickness column is zero), with b_c < l_r the cam thickness.
+  objectives::LcrSizing3DSpec s3 = Spec3D();
+  s3.coefficient_range_mm.reset();
+  s3.crowning = {};
+  s3.crowning.type = contact::CrowningType::kPartial;
+  s3.crowning.radius = 300, s3.crowning.flat_length = 2;
+  s3.radius_range_mm = std::array<double, 2>{50, 2000};
+  s3.flat_length_range_mm = std::array<double, 2>{0, 6};
+  s3.roller_length_range_mm = std::array<double, 2>{5, 12};
+  s3.cam_thickness_range_mm = std::array<double, 2>{5, 12};
+  ExpectRowsMatchCentralDifferences<11>({1.2266, 48.889, 48.889, 7.722, 52.75, 300, 350, 2.0, 1.5, 9.0, 10.0}, s3, 10, 9);
+  ExpectRowsMatchCentralDifferences<11>({1.2266, 48.889, 48.889, 7.722, 52.75, 300, 350, 2.0, 1.5, 10.0, 8.5}, s3, 8.5, 10);
+}
+
+TEST(LcrSizing3D, RowsMatchCentralDifferencesInTheLogCoefficientAndLengths) {
+  objectives::LcrSizing3DSpec s3 = Spec3D();  // log crown, Le 12, coefficient per cam
+  s3.roller_length_range_mm = std::array<double, 2>{5, 11};
+  s3.cam_thickness_range_mm = std::array<double, 2>{5, 12};
+  ExpectRowsMatchCentralDifferences<9>({1.2266, 48.889, 48.889, 7.722, 52.75, 0.03, 0.025, 9.5, 10.5}, s3, 10.5, 9.5);
 }
 
 TEST(LcrSizing3D, EdgeMarginSignFollowsAConvergedSolution) {
@@ -184,6 +215,87 @@ TEST(LcrSizing3D, CrownedSizingHoldsTheLimitsUnderAnIndependentCheck) {
   const json out = studies::lcr_min_size::ToJson(study, res);
   EXPECT_EQ(out["best"]["input"]["crowning"]["type"], "logarithmic");
   EXPECT_TRUE(out["best"].contains("half_space_check"));
+}
+
+// One combination (12/13 + 14/15) with a circular crown's radius per cam as the variable, or the
+// cam thickness as a variable (log crown), sized by Ipopt and by NLopt SLSQP.
+json OneCombination(const std::string& variant, const std::string& backend) {
+  json j = CrownedStudy();
+  j["optimizer"]["backend"] = backend;
+  if (variant == "radius") {
+    j["variables"].erase("crowning_coefficient_mm");
+    j["variables"]["crowning_radius_mm"] = {20, 2000};
+    j["fixed"]["crowning"] = {{"type", "circular"}, {"radius_mm", 200}};
+  } else {
+    j["variables"]["cam_thickness_mm"] = {5, 9};
+  }
+  return j;
+}
+
+TEST(LcrSizing3D, CrownRadiusAndCamThicknessVariablesIpoptAndSlsqpAgree) {
+  for (const std::string variant : {"radius", "cam_thickness"}) {
+    std::array<double, 2> od{};
+    std::array<std::array<double, 2>, 2> param{};
+    int b = 0;
+    for (const std::string backend : {"ipopt", "nlopt_slsqp"}) {
+      const json j = OneCombination(variant, backend);
+      const auto study = studies::lcr_min_size::Parse(studies::Node(&j, "vars.json", ""));
+      ASSERT_TRUE(study.contact3d);
+      const auto res = studies::lcr_min_size::Run(study, studies::RunContext("", true));
+      ASSERT_GE(res.best, 0) << variant << " " << backend;
+      const auto& best = res.candidates[res.best];
+      const auto& r = *best.outcome.design;
+      const auto& o3 = *best.outcome3d;
+      od[b] = best.outcome.check->outer_diameter_mm;
+      for (int k = 0; k < 2; ++k)
+        param[b][k] = variant == "radius" ? o3.crowning[k].radius : Value(r.side(k == 0 ? lcr::Side::kInput : lcr::Side::kOutput).cam_thickness);
+      std::printf("%s, %s: outer diameter %.6f mm, %s %.4f / %.4f mm\n", variant.c_str(), backend.c_str(), od[b],
+                  variant.c_str(), param[b][0], param[b][1]);
+      // Independent check with the chosen crowning and lengths: the slices model over 7200 angles.
+      const auto series = lcr::AnalyzeCycle(r, study.base.material, lcr::LoadCase{80e3, 0, 0}, 7200, lcr::Stages{true, false, false});
+      lcr::ContactModelOptions o = study.contact3d->contact;
+      o.model = lcr::ContactModel::kSlices;
+      for (int k = 0; k < 2; ++k) {
+        const auto side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
+        const auto c = lcr::AnalyzeCycleContact3D(r, side, series, study.base.material.composite_modulus_MPa(), o3.crowning[k], o);
+        EXPECT_LE(c.max_contact_stress_MPa, 1500 * (1 + 1e-4)) << variant << " " << backend << " " << k;
+        EXPECT_GT(o3.contact->overload_edge_margin[k], 0) << variant << " " << backend << " " << k;
+      }
+      ++b;
+    }
+    EXPECT_NEAR(od[0], od[1], 1e-4 * od[1]) << variant;  // the same optimum
+    if (variant == "cam_thickness") {  // at its upper bound: a thicker cam only lowers the stress
+      EXPECT_NEAR(param[0][0], 9, 1e-6);
+      EXPECT_NEAR(param[1][0], 9, 1e-6);
+    } else {
+      for (int k = 0; k < 2; ++k) EXPECT_NEAR(param[0][k], param[1][k], 0.01 * param[1][k]) << k;
+    }
+  }
+}
+
+TEST(LcrSizing3D, NewVariablesBadInputIsExit2WithThePath) {
+  using camopt::testing::ExpectStudyRejected;
+  json radius_log = CrownedStudy();  // a radius with a logarithmic crown
+  radius_log["variables"]["crowning_radius_mm"] = {20, 2000};
+  ExpectStudyRejected(radius_log, "var-radius-log", "/variables/crowning_radius_mm", "circular");
+  json flat_circ = OneCombination("radius", "ipopt");  // a flat length with a circular crown
+  flat_circ["variables"]["crowning_flat_length_mm"] = {0, 4};
+  ExpectStudyRejected(flat_circ, "var-flat-circ", "/variables/crowning_flat_length_mm", "partial");
+  json small_r = OneCombination("radius", "ipopt");  // R = 3 mm cannot crown a 10 mm roller
+  small_r["variables"]["crowning_radius_mm"] = {3, 2000};
+  ExpectStudyRejected(small_r, "var-radius-small", "/variables/crowning_radius_mm", "half the roller length");
+  json long_roller = CrownedStudy();  // the roller's upper end reaches Le = 12
+  long_roller["variables"]["roller_length_mm"] = {5, 12.5};
+  ExpectStudyRejected(long_roller, "var-length-le", "/fixed/crowning", "effective length");
+  json line = camopt::testing::Example("lcr_min_size.json");  // a length variable under the line model
+  line["variables"]["cam_thickness_mm"] = {5, 9};
+  line["contact"] = {{"model", "line"}};
+  ExpectStudyRejected(line, "var-length-line", "/contact/model", "line model ignores");
+  json catalogue = camopt::testing::Example("lcr_min_size_catalogue.json");
+  catalogue["roller_catalogue"] = json::array({{{"name", "NR 5x10"}, {"diameter_mm", 5}, {"length_mm", 10}, {"load_limit_N", 800}}});
+  catalogue["contact"] = {{"model", "slices"}};
+  catalogue["variables"]["roller_length_mm"] = {5, 9};
+  ExpectStudyRejected(catalogue, "var-length-cat", "/variables/roller_length_mm", "catalogue");
 }
 
 TEST(LcrSizing3D, CrowningFreeStudyTakesTheLinePath) {
