@@ -22,6 +22,70 @@
 namespace camopt::contact {
 
 // ---------------------------------------------------------------------------------------------
+// The two element-wise loops of the convolution, compiled twice: for the x86-64 baseline (SSE2)
+// and with AVX2 where the processor has it (chosen at run time). Both are element-wise products
+// and sums without fused multiply-adds (AVX2 does not enable FMA), so both give the same bits.
+namespace kernels {
+
+// out[i] += scale · Σ_j c_j K(i − j) over `count` listed cells j of an nx × ny grid, K from the
+// offset table (row stride wx = 2nx − 1, offset (0, 0) at (ny − 1, nx − 1)).
+template <int kTag>
+inline void AddSparseBody(const double* table, int nx, int ny, const std::pair<int, double>* c, size_t count,
+                          double* out, double scale) {
+  const int wx = 2 * nx - 1;
+  for (size_t k = 0; k < count; ++k) {
+    const int j = c[k].first, jx = j % nx, jy = j / nx;
+    const double w = scale * c[k].second;
+    for (int iy = 0; iy < ny; ++iy) {
+      const double* trow = table + static_cast<size_t>(iy - jy + ny - 1) * wx + (nx - 1 - jx);
+      double* orow = out + static_cast<size_t>(iy) * nx;
+      for (int ix = 0; ix < nx; ++ix) orow[ix] += w * trow[ix];
+    }
+  }
+}
+// s ← s · k for n complex numbers stored as (re, im) pairs: (a·c − b·d, a·d + b·c).
+template <int kTag>
+inline void ComplexProductBody(double* s, const double* k, size_t n) {
+  for (size_t i = 0; i < n; ++i) {
+    const double a = s[2 * i], b = s[2 * i + 1], c = k[2 * i], d = k[2 * i + 1];
+    s[2 * i] = a * c - b * d;
+    s[2 * i + 1] = a * d + b * c;
+  }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) void AddSparseAvx2(const double* table, int nx, int ny,
+                                                   const std::pair<int, double>* c, size_t count, double* out,
+                                                   double scale) {
+  AddSparseBody<1>(table, nx, ny, c, count, out, scale);
+}
+__attribute__((target("avx2"))) void ComplexProductAvx2(double* s, const double* k, size_t n) {
+  ComplexProductBody<1>(s, k, n);
+}
+bool HasAvx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+#endif
+
+void AddSparse(const double* table, int nx, int ny, const std::pair<int, double>* c, size_t count, double* out,
+               double scale) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (HasAvx2()) return AddSparseAvx2(table, nx, ny, c, count, out, scale);
+#endif
+  AddSparseBody<0>(table, nx, ny, c, count, out, scale);
+}
+
+void ComplexProduct(double* s, const double* k, size_t n) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (HasAvx2()) return ComplexProductAvx2(s, k, n);
+#endif
+  ComplexProductBody<0>(s, k, n);
+}
+
+}  // namespace kernels
+
+// ---------------------------------------------------------------------------------------------
 // Shared helpers.
 
 namespace detail {
@@ -164,7 +228,8 @@ class FftConvolver {
     real_ = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
     spec_ = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
     half_ = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
-    if (real_ == nullptr || spec_ == nullptr || half_ == nullptr) {
+    back_ = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
+    if (real_ == nullptr || spec_ == nullptr || half_ == nullptr || back_ == nullptr) {
       Free();
       throw std::bad_alloc();
     }
@@ -178,9 +243,12 @@ class FftConvolver {
                                            1, mxc_, planner);
     cols_forward_ = fftw_plan_many_dft(1, n_col, mxc_, half_, nullptr, mxc_, 1, spec_, nullptr,
                                        mxc_, 1, FFTW_FORWARD, planner);
-    cols_backward_ = fftw_plan_many_dft(1, n_col, mxc_, spec_, nullptr, mxc_, 1, spec_, nullptr,
+    // Backwards out of place too (spec_ → back_): FFTW's in-place strided column plan copied
+    // every column batch through a buffer it allocated on each execution (malloc_consolidate,
+    // fftw_cpy2d: ~15% of a cycloid cycle's time, docs/performance.md).
+    cols_backward_ = fftw_plan_many_dft(1, n_col, mxc_, spec_, nullptr, mxc_, 1, back_, nullptr,
                                         mxc_, 1, FFTW_BACKWARD, planner);
-    rows_backward_ = fftw_plan_many_dft_c2r(1, n_row, ny_, spec_, nullptr, 1, mxc_, real_,
+    rows_backward_ = fftw_plan_many_dft_c2r(1, n_row, ny_, back_, nullptr, 1, mxc_, real_,
                                             nullptr, 1, mx_, planner);
     if (!rows_forward_ || !cols_forward_ || !cols_backward_ || !rows_backward_) {
       FreeLocked();
@@ -258,14 +326,8 @@ class FftConvolver {
     fftw_execute(cols_forward_);
     // The product written out (a·c − b·d, a·d + b·c: the same operations as std::complex's
     // finite-value path, without its NaN check and library fallback per element).
-    const size_t n = static_cast<size_t>(mxc_) * my_;
-    double* sd = reinterpret_cast<double*>(s);
-    const double* kd = reinterpret_cast<const double*>(kernel.spectrum.data());
-    for (size_t i = 0; i < n; ++i) {
-      const double a = sd[2 * i], b = sd[2 * i + 1], c = kd[2 * i], d = kd[2 * i + 1];
-      sd[2 * i] = a * c - b * d;
-      sd[2 * i + 1] = a * d + b * c;
-    }
+    kernels::ComplexProduct(reinterpret_cast<double*>(s), reinterpret_cast<const double*>(kernel.spectrum.data()),
+                            static_cast<size_t>(mxc_) * my_);
     fftw_execute(cols_backward_);
     fftw_execute(rows_backward_);
     for (int iy = 0; iy < ny_; ++iy)
@@ -274,19 +336,9 @@ class FftConvolver {
   }
 
   // out += scale · Σ_j c_j K(i − j) over the few listed cells j (direct sum).
-  void AddSparse(const Kernel& kernel, const std::vector<std::pair<int, double>>& c, double* out,
+  void AddSparse(const Kernel& kernel, const std::pair<int, double>* c, size_t count, double* out,
                  double scale) const {
-    const int wx = 2 * nx_ - 1;
-    for (const auto& [j, cj] : c) {
-      const int jx = j % nx_, jy = j / nx_;
-      const double w = scale * cj;
-      for (int iy = 0; iy < ny_; ++iy) {
-        const double* trow =
-            kernel.table.data() + static_cast<size_t>(iy - jy + ny_ - 1) * wx + (nx_ - 1 - jx);
-        double* orow = out + static_cast<size_t>(iy) * nx_;
-        for (int ix = 0; ix < nx_; ++ix) orow[ix] += w * trow[ix];
-      }
-    }
+    kernels::AddSparse(kernel.table.data(), nx_, ny_, c, count, out, scale);
   }
 
   int cells() const { return nx_ * ny_; }
@@ -304,15 +356,18 @@ class FftConvolver {
     if (real_ != nullptr) fftw_free(real_);
     if (spec_ != nullptr) fftw_free(spec_);
     if (half_ != nullptr) fftw_free(half_);
+    if (back_ != nullptr) fftw_free(back_);
     real_ = nullptr;
     spec_ = nullptr;
     half_ = nullptr;
+    back_ = nullptr;
   }
 
   int nx_, ny_, mx_, my_, mxc_;
   double* real_ = nullptr;
   fftw_complex* spec_ = nullptr;
   fftw_complex* half_ = nullptr;  // the row transforms' output, its last ny rows always zero
+  fftw_complex* back_ = nullptr;  // the backward column transforms' output
   fftw_plan rows_forward_ = nullptr, cols_forward_ = nullptr;
   fftw_plan cols_backward_ = nullptr, rows_backward_ = nullptr;
 };
@@ -426,6 +481,20 @@ struct HalfSpaceSolver::Impl {
 
   ContactSolution Solve(const Grid& grid, const std::vector<double>& h, bool load_control,
                         double target, double e_star, const std::vector<double>* start);
+  // Solve's body, inlined twice: into SolveBaseline (x86-64 baseline) and SolveAvx2 (compiled
+  // for AVX2, chosen at run time). Only loops without reductions vectorise (the compiler keeps
+  // floating-point sums in order), and AVX2 has no fused multiply-add: both give the same bits.
+  template <int kTag>
+  [[gnu::always_inline]] inline ContactSolution SolveBody(const Grid& grid, const std::vector<double>& h,
+                                                          bool load_control, double target, double e_star,
+                                                          const std::vector<double>* start);
+  ContactSolution SolveBaseline(const Grid& grid, const std::vector<double>& h, bool load_control, double target,
+                                double e_star, const std::vector<double>* start);
+#if defined(__x86_64__) && defined(__GNUC__)
+  [[gnu::target("avx2")]] ContactSolution SolveAvx2(const Grid& grid, const std::vector<double>& h,
+                                                    bool load_control, double target, double e_star,
+                                                    const std::vector<double>* start);
+#endif
 };
 
 HalfSpaceSolver::HalfSpaceSolver(SolverOptions options)
@@ -448,6 +517,30 @@ const SolverOptions& HalfSpaceSolver::options() const { return impl_->options; }
 ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector<double>& gap,
                                              bool load_control, double target, double e_star,
                                              const std::vector<double>* start) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (kernels::HasAvx2()) return SolveAvx2(grid, gap, load_control, target, e_star, start);
+#endif
+  return SolveBaseline(grid, gap, load_control, target, e_star, start);
+}
+
+ContactSolution HalfSpaceSolver::Impl::SolveBaseline(const Grid& grid, const std::vector<double>& gap,
+                                                     bool load_control, double target, double e_star,
+                                                     const std::vector<double>* start) {
+  return SolveBody<0>(grid, gap, load_control, target, e_star, start);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+ContactSolution HalfSpaceSolver::Impl::SolveAvx2(const Grid& grid, const std::vector<double>& gap,
+                                                 bool load_control, double target, double e_star,
+                                                 const std::vector<double>* start) {
+  return SolveBody<1>(grid, gap, load_control, target, e_star, start);
+}
+#endif
+
+template <int kTag>
+ContactSolution HalfSpaceSolver::Impl::SolveBody(const Grid& grid, const std::vector<double>& gap,
+                                                 bool load_control, double target, double e_star,
+                                                 const std::vector<double>* start) {
   const char* where =
       load_control ? "HalfSpaceSolver::SolveForLoad" : "HalfSpaceSolver::SolveForApproach";
   detail::CheckGrid(grid, where);
@@ -604,12 +697,16 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     // Step, projection, re-entry; c_i = p_new − (p − τ t) on the cells these two touched. The
     // new pressure goes to p_old, which then swaps with p (no copy); its sum is taken on the way
     // (the same order of additions as a separate pass).
-    corrections.clear();
+    // The corrections go into a buffer of n entries through a pointer (no push_back in the loop:
+    // its possible reallocation made the compiler keep the sum and the array in memory).
     bool overlap = false;
     double sum_p = 0;
     p_old.resize(n);
+    corrections.resize(n);
+    size_t n_corr = 0;
     {
       double* const pn = p_old.data();
+      std::pair<int, double>* const cc = corrections.data();
       for (size_t i = 0; i < n; ++i) {
         const double raw = pp[i] - tau * tt[i];  // t = 0 off the contact
         double next = raw > 0 ? raw : 0.0;
@@ -617,7 +714,7 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
           next = -tau * gg[i];
           overlap = true;
         }
-        if (next != raw) corrections.emplace_back(static_cast<int>(i), next - raw);
+        if (next != raw) cc[n_corr++] = {static_cast<int>(i), next - raw};
         pn[i] = next;
         sum_p += next;
       }
@@ -637,7 +734,7 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     }
     // Rescale, measure the change, and (when the sparse update is taken) step the displacement
     // in the same pass: u ← u − τ r here, + K c and × f below.
-    const bool sparse = corrections.size() <= max_sparse;
+    const bool sparse = n_corr <= max_sparse;
     double change = 0, total = 0;
     {
       double* const pn = p.data();
@@ -659,7 +756,7 @@ ContactSolution HalfSpaceSolver::Impl::Solve(const Grid& grid, const std::vector
     }
     // The displacement of the new pressure.
     if (sparse) {
-      conv.AddSparse(kernel, corrections, uu, inv_e);
+      conv.AddSparse(kernel, corrections.data(), n_corr, uu, inv_e);
       if (f != 1)
         for (size_t i = 0; i < n; ++i) uu[i] *= f;
       u_exact = true;
