@@ -13,16 +13,6 @@
 namespace camopt::objectives {
 namespace {
 
-// The deviations that move one cam's rollers: the eccentricity and the bearing clearance (the cam
-// centre), and that cam's turret radius, rollers, pitch errors and profile.
-std::vector<lcr::ToleranceParameter> SideParameters(const lcr::Reducer<double>& r, const lcr::ToleranceBands& b,
-                                                    int side) {
-  std::vector<lcr::ToleranceParameter> out;
-  for (const lcr::ToleranceParameter& p : lcr::ToleranceParameters(r, b))
-    if (p.key == 0 || p.key == 5 || p.side == side) out.push_back(p);
-  return out;
-}
-
 bool OneSided(const lcr::ToleranceParameter& p) { return p.key == 5; }  // clearance 0 … c
 
 // w = ∂W/∂S of a row with sensitivities S (header); sign +1 for an upper limit, −1 for a lower.
@@ -54,12 +44,6 @@ std::vector<double> Weights(const LcrRobustRule& rule, const std::vector<lcr::To
   return w;
 }
 
-// Output torque in the forward sense, and the torque one turret reacts (lcr_stiffness.h).
-double TurretTorque(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, lcr::Side side) {
-  const double t = lcr::LoadedArmSign(r, lcr::Side::kOutput) * spec.output_torque_Nmm;
-  return side == lcr::Side::kOutput ? t : -rigidity::FixedTurretTorqueRatio(r) * t;
-}
-
 // Roller radius with the deviation of roller k of cam `si` (none when the vector is empty).
 template <typename S>
 S RollerRadius(const S& nominal, const lcr::Deviations<S>& dev, int si, int k) {
@@ -76,75 +60,11 @@ std::vector<double> Values(const std::vector<T>& v) {
 }  // namespace
 
 template <typename T>
-LcrToleranceSensitivities<T> ToleranceSensitivities(const LcrSizingSpec& spec, const lcr::Reducer<T>& r,
-                                                    lcr::Side side, double theta, const lcr::SideLoads<T>& sl) {
-  using std::sqrt;
-  const int si = lcr::SideIndex(side);
-  const lcr::Reducer<double> rd = r.template cast<double>();
-  const lcr::CamSide<T>& cam = r.side(side);
-  const int n = cam.rollers;
-  LcrToleranceSensitivities<T> out;
-  out.params = SideParameters(rd, spec.robust->bands, si);
-  const size_t np = out.params.size();
-  // The nominal compliant turret (no gaps: closed-form ψ) and each roller's contact rigidity F'_k.
-  rigidity::TurretSpring<T> spring{{}, cam.contact_length(), T(spec.material.composite_modulus_MPa()), T(0.0), T(0.0)};
-  for (const auto& c : sl.contacts) spring.arms.push_back(c.arm);
-  const T psi = spring.Rotation(T(TurretTorque(spec, rd, side)));
-  std::vector<T> rigidity(n);
-  T sum(0.0);
-  for (int k = 0; k < n; ++k) {
-    rigidity[k] = spring.RollerRigidity(psi * spring.arms[k]);
-    sum += rigidity[k] * spring.arms[k] * spring.arms[k];
-  }
-  // ∂c_k/∂t_p (header): −d_k is the outward normal at the roller centre, fixed frame.
-  const Vec2<T> load_dir = lcr::EccentricLoadDirection(r, spec.material, spec.output_torque_Nmm, theta);
-  const double turn = side == lcr::Side::kInput ? 0.0 : lcr::OutputSpeedRatio(rd) * theta;
-  const Vec2<T> ecc = U(T(theta));
-  std::vector<std::vector<T>> gap(n, std::vector<T>(np, T(0.0)));
-  for (int k = 0; k < n; ++k) {
-    const Vec2<T> normal = -sl.contacts[k].direction;
-    const Vec2<T> slot = U(T(2.0 * kPi * k / n + turn));
-    for (size_t p = 0; p < np; ++p) {
-      const lcr::ToleranceParameter& q = out.params[p];
-      switch (q.key) {
-        case 0: gap[k][p] = -normal.dot(ecc); break;
-        case 1: gap[k][p] = normal.dot(slot); break;
-        case 2: gap[k][p] = T(q.roller == k ? -1.0 : 0.0); break;
-        case 3: gap[k][p] = q.roller == k ? cam.turret_radius * normal.dot(Perp(slot)) : T(0.0); break;
-        case 4: gap[k][p] = T(-1.0); break;
-        case 5: gap[k][p] = -normal.dot(load_dir); break;
-      }
-    }
-  }
-  // dψ = Σ F'_j a_j dc_j / Σ F'_j a_j², dF_k = F'_k (a_k dψ − dc_k).
-  out.force.assign(n, std::vector<T>(np, T(0.0)));
-  for (size_t p = 0; p < np; ++p) {
-    T num(0.0);
-    for (int j = 0; j < n; ++j) num += rigidity[j] * spring.arms[j] * gap[j][p];
-    const T dpsi = num / sum;
-    for (int k = 0; k < n; ++k) out.force[k][p] = rigidity[k] * (spring.arms[k] * dpsi - gap[k][p]);
-  }
-  if (!std::isfinite(spec.limits.contact_stress_MPa)) return out;
-  // s = 1 − r_r κ − F/(c r_r) (LcrStressMargin, c the capacity per radius): ∂s/∂F = −1/(c r_r),
-  // ∂s/∂r_r = −κ + F/(c r_r²) for the roller's own radius.
-  const T capacity = contact::LineContactLoadPerRadius(T(spec.limits.contact_stress_MPa), cam.contact_length(),
-                                                       T(spec.material.composite_modulus_MPa()));
-  const T rr = cam.roller_radius;
-  out.margin.assign(n, std::vector<T>(np, T(0.0)));
-  for (int k = 0; k < n; ++k)
-    for (size_t p = 0; p < np; ++p) {
-      out.margin[k][p] = -out.force[k][p] / (capacity * rr);
-      const lcr::ToleranceParameter& q = out.params[p];
-      if (q.key == 2 && q.roller == k)
-        out.margin[k][p] += -sl.contacts[k].curvature + sl.force[k] / (capacity * rr * rr);
-    }
-  return out;
-}
-
-template <typename T>
 LcrRobustIncrements<T> RobustIncrements(const LcrSizingSpec& spec, const lcr::Reducer<T>& r, lcr::Side side,
                                         double theta, const lcr::SideLoads<T>& sl) {
-  const LcrToleranceSensitivities<T> s = ToleranceSensitivities(spec, r, side, theta, sl);
+  const lcr::ToleranceSensitivities<T> s =
+      lcr::RollerToleranceSensitivities(r, spec.material, spec.output_torque_Nmm, spec.limits.contact_stress_MPa,
+                                        spec.robust->bands, side, theta, sl);
   LcrRobustIncrements<T> inc;
   // W = Σ w_p S_p with w = ∂W/∂S at the values (header): exact value and exact gradient.
   auto apply = [&](const std::vector<T>& row, double sign) {
@@ -159,8 +79,6 @@ LcrRobustIncrements<T> RobustIncrements(const LcrSizingSpec& spec, const lcr::Re
   return inc;
 }
 
-template LcrToleranceSensitivities<double> ToleranceSensitivities(const LcrSizingSpec&, const lcr::Reducer<double>&,
-                                                                  lcr::Side, double, const lcr::SideLoads<double>&);
 template LcrRobustIncrements<double> RobustIncrements(const LcrSizingSpec&, const lcr::Reducer<double>&, lcr::Side,
                                                       double, const lcr::SideLoads<double>&);
 template LcrRobustIncrements<ceres::Jet<double, 6>> RobustIncrements(const LcrSizingSpec&,

@@ -21,15 +21,8 @@
 // (sign(S_p) b_p, or μ_p + k σ_p² S_p / σ_W) and ∇_x W = Σ_p w_p ∇_x S_p (Euler: Σ_p S_p ∇w_p = 0).
 // The sensitivities are written in closed form over the design's scalar, so the problem's own Jet
 // carries their exact derivatives (the mixed second-order terms ∂²q/∂x∂t) without nested Jets.
-// Linearising the compliant turret (lcr_stiffness.h; arms nominal, no gaps at t = 0):
-//   dF_k = F'_k (a_k dψ − dc_k),   dψ = Σ_j F'_j a_j dc_j / Σ_j F'_j a_j²,
-// F'_k the contact rigidity at the nominal closure ψ a_k, and the gap's first-order change from
-// tolerance.h's c_k = (x_k − X(ψ*))·n_out − Δr_k − δ (the foot point's move is second order, the
-// roller centre lies on the pitch curve): dc_k = ν_k·(dO_k − dC) − dr_k − dδ with ν_k = −d_k the
-// outward normal at the roller centre (the common normal through the pitch point, contact.h),
-//   ∂c_k/∂e = −ν_k·u(θ), ∂c_k/∂r_d = ν_k·u(slot_k), ∂c_k/∂β_k = r_d ν_k·u⊥(slot_k),
-//   ∂c_k/∂clearance = −ν_k·G/|G|, ∂c_k/∂r_r,k = ∂c_k/∂δ = −1.
-// tests/lcr_robust_test.cc checks them against ceres::Jet through lcr::CompliantAtAngle.
+// The sensitivities S_p are physics: model/lcr/tolerance_sensitivity.h (closed form over the
+// design's scalar, checked against ceres::Jet through lcr::CompliantAtAngle in tests/lcr_robust_test.cc).
 #pragma once
 
 #include <cstdint>
@@ -37,6 +30,7 @@
 #include <vector>
 
 #include "model/lcr/forces.h"
+#include "model/lcr/tolerance_sensitivity.h"
 #include "model/lcr/transmission_error.h"
 #include "objectives/lcr_min_size.h"
 #include "objectives/lcr_sizing.h"
@@ -59,23 +53,13 @@ struct LcrRobustIncrements {
   std::vector<T> force, margin;
 };
 
-/// The increments of every roller of one cam at input angle θ [rad], from the rigid-law loads sl
+/// The increments of every roller of one cam at input angle θ [rad] (the rule applied to
+/// lcr::RollerToleranceSensitivities), from the rigid-law loads sl
 /// of design r at θ (the sizing's own, lcr::AnalyzeAngle). T: double or ceres::Jet<double, 6>
 /// (the sizing problem's Jet). @pre spec.robust.
 template <typename T>
 LcrRobustIncrements<T> RobustIncrements(const LcrSizingSpec& spec, const lcr::Reducer<T>& r, lcr::Side side,
                                         double theta, const lcr::SideLoads<T>& sl);
-
-/// S_p of every roller's force [N per model unit] and stress margin of one cam at θ, [roller][p],
-/// over the deviations `params` that move that cam (lcr::ToleranceParameters filtered).
-template <typename T>
-struct LcrToleranceSensitivities {
-  std::vector<lcr::ToleranceParameter> params;
-  std::vector<std::vector<T>> force, margin;
-};
-template <typename T>
-LcrToleranceSensitivities<T> ToleranceSensitivities(const LcrSizingSpec& spec, const lcr::Reducer<T>& r,
-                                                    lcr::Side side, double theta, const lcr::SideLoads<T>& sl);
 
 /// What the rule adds to the undercut margin [mm] (≤ 0).
 double RobustUndercutIncrement(const LcrRobustRule& rule);

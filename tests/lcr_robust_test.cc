@@ -108,7 +108,9 @@ TEST(LcrRobust, ClosedFormSensitivitiesMatchJetsThroughTheCompliantModel) {
                                                         theta, lcr::Stages{true, false, false});
     const Vec2<double> dir = lcr::EccentricLoadDirection(r, spec.material, spec.output_torque_Nmm, theta);
     for (lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
-      const auto s = objectives::ToleranceSensitivities(spec, r, side, theta, side == lcr::Side::kInput ? a.input : a.output);
+      const auto s = lcr::RollerToleranceSensitivities(r, spec.material, spec.output_torque_Nmm,
+                                                       spec.limits.contact_stress_MPa, spec.robust->bands, side,
+                                                       theta, side == lcr::Side::kInput ? a.input : a.output);
       for (size_t p = 0; p < s.params.size(); ++p) {
         lcr::Deviations<J> dev;
         lcr::AddDeviation(dev, r, s.params[p], J(0.0, 0));
