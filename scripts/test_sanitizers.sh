@@ -8,7 +8,8 @@
 # suite under the sanitizers 15 min here, and on CI more than the rest of the run together. So the
 # build is -O1 with line tables only (-g1: reports still give file:line), and the run leaves out
 # the tests that repeat whole studies over and over: each example at every convergence setting,
-# the sizing examples run twice, sweeps of 30-60 cases, the readers in Python and Chromium. Those
+# the sizing examples run twice, sweeps run three or four times over, the readers in Python and
+# Chromium. Those
 # took 80% of the sanitized suite's time; the code they run is run under the sanitizers by the
 # lighter tests of the same kind (unit tests of each stage, the other examples' convergence runs,
 # one end-to-end run of every study kind, a sweep of 6 cases). The README's test command runs
@@ -26,11 +27,13 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=0:detect_container_overflow=0:
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # Left out under the sanitizers (each took 10 s or more there; what still covers its code):
 long_tests=(
-  # convergence runs of the heavy examples (the other 15 examples' convergence runs stay)
+  # convergence runs of the heavy examples; lcr_i matches lcr_i, lcr_ii, lcr_ii_crowned and
+  # lcr_ii_tolerances (the other 15 examples' convergence runs stay)
   'EveryExample/ConvergenceOfExample\.CoarseSettings/(cycloid_ltca_nnm_|lcr_i|lcr_min_size_crowned|lcr_min_size_robust|lcr_min_size_straight3d)'
   # two runs of the 3D and catalogue sizing examples (LcrSizing3D and LcrMinSize.Catalogue* stay)
   'EveryExample/TwoRuns\.GiveByteIdenticalFolders/(lcr_crowning_tuning|lcr_min_size_catalogue|lcr_min_size_crowned|lcr_min_size_straight3d)'
-  # sweeps of 30-60 cycloid cases and of sizing cases (SweepRun.FailingCases* and SweepCli stay)
+  # sweeps run three or four times over: resumed, on 1/2 threads and 2 MPI ranks, of sizing cases
+  # (SweepRun.FailingCases* and the other SweepCli tests stay)
   '^SweepRun\.(ResumeAfterSigint|OneAndTwoThreadsAndTwoRanks|LcrMinSizeCasesOnTwoThreads)'
   '^SweepCli\.AnOutputFolderHoldingOtherFilesIsRefusedBeforeAnyCase'
   # many Ipopt/NLopt sizings of LCR II (the other LcrMinSize tests stay)

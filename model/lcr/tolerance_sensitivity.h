@@ -64,7 +64,6 @@ ToleranceSensitivities<T> RollerToleranceSensitivities(const Reducer<T>& r, cons
                                                        double output_torque_Nmm, double stress_limit_MPa,
                                                        const ToleranceBands& bands, Side side, double theta,
                                                        const SideLoads<T>& sl) {
-  using std::sqrt;
   const int si = SideIndex(side);
   const Reducer<double> rd = r.template cast<double>();
   const CamSide<T>& cam = r.side(side);
