@@ -399,4 +399,35 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
 
 LcrSizingSpec LcrTightened(const LcrSizingSpec& spec) { return Tightened(spec); }
 
+Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps) {
+  Verification v;
+  v.ran = true;
+  v.accurate_model = "line contact, exact cycle on " + std::to_string(2 * steps) + " input angles (error: the change from " +
+                     std::to_string(steps) + ")";
+  const LcrDenseCheck a = DenseCheck(spec, r, steps), b = DenseCheck(spec, r, 2 * steps);
+  const LcrLimits& lim = spec.limits;
+  const char* cams[2] = {"input cam", "output cam"};
+  auto add = [&](const char* key, const char* where, double coarse, double fine, double limit, bool upper) {
+    VerifiedLimit c;
+    c.limit = key;
+    c.where = where;
+    c.limit_value = limit;
+    c.accurate_value = fine;
+    c.estimated_error = std::abs(fine - coarse);
+    c.fast_value = coarse;
+    c.upper = upper;
+    v.checks.push_back(c);
+  };
+  for (int k = 0; k < 2; ++k) {
+    if (std::isfinite(lim.contact_stress_MPa))
+      add("contact_stress_MPa", cams[k], a.max_stress_MPa[k], b.max_stress_MPa[k], lim.contact_stress_MPa, true);
+    if (std::isfinite(lim.roller_load_N))
+      add("roller_load_N", cams[k], a.max_force_N[k], b.max_force_N[k], lim.roller_load_N, true);
+    add("undercut_margin_mm", cams[k], a.undercut_margin_mm[k], b.undercut_margin_mm[k], lim.undercut_margin_mm, false);
+    add("roller_gap_mm", cams[k], a.roller_gap_mm[k], b.roller_gap_mm[k], lim.roller_gap_mm, false);
+  }
+  if (lim.min_efficiency > 0) add("min_efficiency", "mean over the cycle", a.mean_efficiency, b.mean_efficiency, lim.min_efficiency, false);
+  return v;
+}
+
 }  // namespace camopt::objectives

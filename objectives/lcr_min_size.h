@@ -31,6 +31,7 @@
 
 #include "model/lcr/reducer.h"
 #include "objectives/lcr_sizing.h"
+#include "objectives/verification.h"
 #include "optimizers/solver.h"
 
 namespace camopt::objectives {
@@ -117,6 +118,15 @@ std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const 
 /// study where nothing fits: the value of the blocking limit that would admit this combination.
 std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                  const std::string& key);
+
+/// The verified-optimum contract (objectives/verification.h) of a line-model design: the accurate
+/// model is the dense check on 2·steps input angles (the reported values), its error the change
+/// from `steps` angles (a refinement, not a subset: the finer set has every other angle new). Per
+/// cam: contact stress and roller force (upper limits, when finite), undercut margin and roller gap
+/// (lower limits, exact: no angle sampling); the mean efficiency when it is a limit. The line
+/// model's own tightening rounds are the polish rounds of SolveLcrMinSize (tracked peaks join until
+/// the dense check holds), so this check only reports.
+Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps = 3600);
 
 /// spec with the limits the solvers are given: tightened by a little more than their constraint
 /// tolerance (the dense check holds the design to the study's own limits).

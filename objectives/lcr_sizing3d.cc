@@ -30,6 +30,17 @@ constexpr double kNearFraction = 0.03;     // contacts within 3% of the limit ge
 constexpr int kPeaksPerCam = 4;
 constexpr int kEdgeContacts = 6;           // overload contacts checked per cam
 constexpr int kMaxRounds = 8;
+// The verification (header step 3): tightening rounds, and the largest pressure at a contact's
+// end cell as a share of the peak that still counts as "off the ends" (a crowned contact that
+// ends inside the roller has exactly 0 there; an edge-loaded one has the peak itself there).
+constexpr int kVerifyRounds = 3;
+constexpr double kEdgeShareLimit = 0.01;
+
+// The torque of the edge rows over the design torque: the overload's when one is given (the end
+// margin falls as the load grows, so it holds at the design torque too), else 1.
+double EdgeTorqueRatio(const LcrSizingSpec& s, const LcrSizing3DSpec& s3) {
+  return s3.overload_torque_Nmm > 0 ? s3.overload_torque_Nmm / s.output_torque_Nmm : 1.0;
+}
 
 int RollerVariables(const LcrSizingSpec& s) { return s.fixed_roller_diameter_mm ? 0 : (s.same_roller ? 1 : 2); }
 int BaseVariables(const LcrSizingSpec& s) { return 4 + RollerVariables(s); }
@@ -110,7 +121,7 @@ void Evaluate3D(const LcrSizingSpec& s, const LcrSizing3DSpec& s3, double p_lim,
   lcr::Reducer<T> r = DesignOf(s, x);
   SetLengths(s3, x, nb, r);
   const double e_star = s.material.composite_modulus_MPa();
-  const double overload = s3.overload_torque_Nmm / s.output_torque_Nmm;
+  const double overload = EdgeTorqueRatio(s, s3);
   size_t o = 0;
   try {
     for (int side = 0; side < 2; ++side)
@@ -120,8 +131,7 @@ void Evaluate3D(const LcrSizingSpec& s, const LcrSizing3DSpec& s3, double p_lim,
           y[o++] = StressMargin3D(s3, p_lim, e_star, r.side(side == 0 ? lcr::Side::kInput : lcr::Side::kOutput), f, k,
                                   CrowningOf(s3, x, nb, side));
         }
-    if (s3.overload_torque_Nmm > 0)
-      for (int side = 0; side < 2; ++side)
+    for (int side = 0; side < 2; ++side)
         for (const LcrContactSample& c : tr.edge)
           if (c.side == side) {
             const auto [f, k] = ContactAt(s, r, side, c.theta_rad, c.roller);
@@ -208,7 +218,7 @@ DenseResult Dense(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, std::spa
   lcr::ContactModelOptions o = s3.contact;
   o.model = lcr::ContactModel::kSlices;
   const double p_lim = spec.limits.contact_stress_MPa;
-  const double overload = s3.overload_torque_Nmm / spec.output_torque_Nmm;
+  const double overload = EdgeTorqueRatio(spec, s3);
   for (int k = 0; k < 2; ++k) {
     const lcr::Side side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
     const lcr::SideSeries& ss = k == 0 ? series.input : series.output;
@@ -243,8 +253,9 @@ DenseResult Dense(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, std::spa
       AddUnique(d.fresh.stress, {k, theta, roller}, changed);
       if (int(chosen.size()) == kPeaksPerCam) break;
     }
-    // Overload: exact slices solves at the largest forces (one per angle, distinct phases).
-    if (s3.overload_torque_Nmm > 0) {
+    // The edge torque (overload, else design): exact slices solves at the largest forces (one per
+    // angle, distinct phases).
+    {
       std::vector<double> fm(steps);
       std::vector<int> jm(steps);
       for (int i = 0; i < steps; ++i) {
@@ -281,9 +292,10 @@ DenseResult Dense(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, std::spa
   }
   const double stress = std::max(d.check.max_stress_MPa[0], d.check.max_stress_MPa[1]);
   if (!(stress <= p_lim)) d.check.violations.push_back({"contact_stress_MPa", stress, p_lim});
-  if (s3.overload_torque_Nmm > 0) {
+  {
     const double m = std::min(d.contact.overload_edge_margin[0], d.contact.overload_edge_margin[1]);
-    if (!(m > 0)) d.check.violations.push_back({"overload_edge_margin", m, 0.0});
+    if (!(m > 0))
+      d.check.violations.push_back({s3.overload_torque_Nmm > 0 ? "overload_edge_margin" : "edge_margin", m, 0.0});
   }
   return d;
 }
@@ -321,10 +333,8 @@ Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec&
   };
   add("input_stress_margin_3d", Count(tracked.stress, 0));
   add("output_stress_margin_3d", Count(tracked.stress, 1));
-  if (s3.overload_torque_Nmm > 0) {
-    add("input_edge_margin", Count(tracked.edge, 0));
-    add("output_edge_margin", Count(tracked.edge, 1));
-  }
+  add("input_edge_margin", Count(tracked.edge, 0));
+  add("output_edge_margin", Count(tracked.edge, 1));
   const LcrSizingSpec s = base;
   const LcrSizing3DSpec spec3 = s3;
   const LcrTracked3D tr = tracked;
@@ -370,54 +380,29 @@ LcrHalfSpaceCheck HalfSpaceRecheck(const LcrSizingSpec& spec, const LcrSizing3DS
   return out;
 }
 
-LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
-                                      const LcrMinSizeOptions& options) {
-  LcrMinSize3DOutcome out;
-  // Step 1: the line-model optimum (the fast path) as the start.
-  LcrMinSizeOutcome line = SolveLcrMinSize(spec, options);
-  if (line.converged) out.line_outer_diameter_mm = line.check->outer_diameter_mm;
-  LcrSizing3DSpec s = s3;
-  std::vector<double> x = line.x;
-  if (x.empty()) {
-    out.outcome = std::move(line);
-    out.outcome.converged = false;
-    out.outcome.note = "the line-model search found no point to start the 3D search from";
-    return out;
-  }
+namespace {
+
+// Header step 2 from out.outcome.x (its tracked sets and active set) with the 3D stress rows at
+// p_fast (the study's limit, or the limit tightened by the verification): rounds of polish and
+// dense check until the check holds at p_fast. Fills out (design, check, crowning, tracked) and adds
+// the evaluation counts to those already there.
+void Polish3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s, const LcrMinSizeOptions& options, double p_fast,
+              LcrMinSize3DOutcome& out) {
   const int nb = BaseVariables(spec);
-  if (s.coefficient_range_mm) {
-    // Lundberg's coefficient of the largest roller force over the shorter contact length.
-    const lcr::Reducer<double> r = LcrDesign(spec, x);
-    const double f_max = line.check ? std::max(line.check->max_force_N[0], line.check->max_force_N[1]) : 0.0;
-    const double f0 = contact::LundbergCoefficient(f_max, r.input.contact_length(), spec.material.composite_modulus_MPa());
-    const auto [lo, hi] = *s.coefficient_range_mm;
-    s.crowning.coefficient = std::clamp(f0, lo, hi);
-    x.push_back(s.crowning.coefficient);
-    x.push_back(s.crowning.coefficient);
-  }
-  // The other variables start at the fixed values (the parser requires them), clamped.
-  const auto start = [&](const std::optional<std::array<double, 2>>& range, double& value, int copies) {
-    if (!range) return;
-    value = std::clamp(value, (*range)[0], (*range)[1]);
-    for (int i = 0; i < copies; ++i) x.push_back(value);
-  };
-  double roller_length = spec.roller_length_mm, cam_thickness = spec.cam_thickness_mm;
-  start(s.radius_range_mm, s.crowning.radius, 2);
-  start(s.flat_length_range_mm, s.crowning.flat_length, 2);
-  start(s.roller_length_range_mm, roller_length, 1);
-  start(s.cam_thickness_range_mm, cam_thickness, 1);
-  const double p_lim = spec.limits.contact_stress_MPa;
-  const LcrSizingSpec tight = Tightened(spec);
-  LcrActiveSet active = line.active;
-  LcrTracked3D tracked;
   LcrMinSizeOutcome& o = out.outcome;
-  int values = line.result.value_evaluations, gradients = line.result.gradient_evaluations,
-      iterations = line.result.iterations;
-  bool done = false;
-  for (int round = 1; round <= kMaxRounds && !done; ++round) {
+  std::vector<double> x = o.x;
+  LcrSizingSpec at = spec;  // the dense check's limits: the study's with the 3D stress limit at p_fast
+  at.limits.contact_stress_MPa = p_fast;
+  const LcrSizingSpec tight = Tightened(spec);
+  LcrActiveSet active = o.active;
+  LcrTracked3D tracked = out.tracked;
+  int values = o.result.value_evaluations, gradients = o.result.gradient_evaluations,
+      iterations = o.result.iterations;
+  o.converged = false;
+  for (int round = 1; round <= kMaxRounds; ++round) {
     DenseResult d;
     try {
-      d = Dense(spec, s, x, options.dense_steps);
+      d = Dense(at, s, x, options.dense_steps);
     } catch (const std::domain_error& e) {
       o.note = std::string("degenerate geometry: ") + e.what();
       break;
@@ -442,19 +427,19 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
     }
     LcrSizingSpec t = tight;
     t.active = active;
-    Problem p = MakeLcrSizing3DProblem(t, s, p_lim * (1 - kStressMargin3D), tracked);
+    Problem p = MakeLcrSizing3DProblem(t, s, p_fast * (1 - kStressMargin3D), tracked);
     optimizers::SolverOptions so = options.solver;
     so.initial = x;
     o.result = optimizers::Solve(p, so);
     values += o.result.value_evaluations;
     gradients += o.result.gradient_evaluations;
     iterations += o.result.iterations;
-    o.polish_rounds = round;
+    o.polish_rounds += 1;
     if (o.result.x.empty()) break;
     x = o.result.x;
     if (round == kMaxRounds) {
       try {
-        const DenseResult last = Dense(spec, s, x, options.dense_steps);
+        const DenseResult last = Dense(at, s, x, options.dense_steps);
         o.check = last.check;
         out.contact = last.contact;
         o.converged = o.result.ok() && last.check.ok();
@@ -474,7 +459,193 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
   o.starts = {LcrStartOutcome{o.result.status, o.converged, o.converged ? o.check->outer_diameter_mm : 0.0}};
   for (int k = 0; k < 2; ++k) out.crowning[k] = CrowningOf<double>(s, x, nb, k);
   out.tracked = tracked;
+}
+
+}  // namespace
+
+LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
+                                      const LcrMinSizeOptions& options) {
+  LcrMinSize3DOutcome out;
+  // Step 1: the line-model optimum (the fast path) as the start.
+  LcrMinSizeOutcome line = SolveLcrMinSize(spec, options);
+  if (line.converged) out.line_outer_diameter_mm = line.check->outer_diameter_mm;
+  LcrSizing3DSpec s = s3;
+  std::vector<double> x = line.x;
+  if (x.empty()) {
+    out.outcome = std::move(line);
+    out.outcome.converged = false;
+    out.outcome.note = "the line-model search found no point to start the 3D search from";
+    return out;
+  }
+  if (s.coefficient_range_mm) {
+    // Lundberg's coefficient of the largest roller force over the shorter contact length.
+    const lcr::Reducer<double> r = LcrDesign(spec, x);
+    const double f_max = line.check ? std::max(line.check->max_force_N[0], line.check->max_force_N[1]) : 0.0;
+    const double f0 = contact::LundbergCoefficient(f_max, r.input.contact_length(), spec.material.composite_modulus_MPa());
+    const auto [lo, hi] = *s.coefficient_range_mm;
+    s.crowning.coefficient = std::clamp(f0, lo, hi);
+    x.push_back(s.crowning.coefficient);
+    x.push_back(s.crowning.coefficient);
+  }
+  // The other variables start at the fixed values (the parser requires them), clamped.
+  const auto start = [&](const std::optional<std::array<double, 2>>& range, double& value, int copies) {
+    if (!range) return;
+    value = std::clamp(value, (*range)[0], (*range)[1]);
+    for (int i = 0; i < copies; ++i) x.push_back(value);
+  };
+  double roller_length = spec.roller_length_mm, cam_thickness = spec.cam_thickness_mm;
+  start(s.radius_range_mm, s.crowning.radius, 2);
+  start(s.flat_length_range_mm, s.crowning.flat_length, 2);
+  start(s.roller_length_range_mm, roller_length, 1);
+  start(s.cam_thickness_range_mm, cam_thickness, 1);
+  out.outcome = line;
+  out.outcome.result.status = optimizers::SolverStatus::kFailed;  // until a polish has run
+  out.outcome.check.reset();
+  out.outcome.x = x;
+  out.outcome.polish_rounds = 0;
+  out.outcome.note.clear();
+  const bool straight = s.crowning.type == contact::CrowningType::kNone && s.extra_variables() == 0;
+  if (straight) {
+    // A straight roller carries load on its ends at any force (the end slice touches; the
+    // half-space pressure there is singular and grows as the cell shrinks): no design keeps the
+    // pressure off the ends, so the edge rows cannot hold. The dense check at the line optimum
+    // gives the numbers for the message; no polish.
+    LcrMinSizeOutcome& o = out.outcome;
+    o.converged = false;
+    try {
+      const DenseResult d = Dense(spec, s, x, options.dense_steps);
+      o.check = d.check;
+      out.contact = d.contact;
+    } catch (const std::domain_error& e) {
+      o.note = std::string("degenerate geometry: ") + e.what();
+    }
+    o.design = LcrDesign(spec, std::span<const double>(x).first(BaseVariables(spec)));
+    o.note = "edge-loaded: straight rollers carry their load on the contact's ends at any torque; crown "
+             "the rollers (fixed.crowning with a crowning variable)";
+    for (int k = 0; k < 2; ++k) out.crowning[k] = s.crowning;
+    return out;
+  }
+  Polish3D(spec, s, options, spec.limits.contact_stress_MPa, out);
   return out;
+}
+
+namespace {
+
+// The accurate model's numbers of one cam at one torque on one half_space grid.
+struct AccurateSide {
+  double peak_MPa = 0, slices_MPa = 0, end_share = 0;
+  bool edge_loaded = false, converged = true;
+  double cell_dx_mm = 0, cell_dy_mm = 0;
+};
+
+std::array<AccurateSide, 2> AccurateAt(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, const lcr::Reducer<double>& r,
+                                       const std::array<lcr::RollerCrowning<double>, 2>& crowning, double torque_Nmm,
+                                       int nx, int ny) {
+  std::array<AccurateSide, 2> out;
+  const double e_star = spec.material.composite_modulus_MPa();
+  const lcr::LoadCase load{torque_Nmm, 0.0, 0.0};
+  const lcr::CycleSeries series = lcr::AnalyzeCycle(r, spec.material, load, 3600, lcr::Stages{true, false, false});
+  lcr::ContactModelOptions o = s3.contact;
+  o.model = lcr::ContactModel::kHalfSpace;
+  o.grid_nx = nx, o.grid_ny = ny;
+  for (int k = 0; k < 2; ++k) {
+    const lcr::Side side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
+    const lcr::Contact3DCycleSide c = lcr::AnalyzeCycleContact3D(r, side, series, e_star, crowning[k], o);
+    AccurateSide& a = out[k];
+    a.peak_MPa = c.max_contact_stress_MPa;
+    a.slices_MPa = c.slices_peak_at_worst_MPa;
+    a.edge_loaded = c.edge_loaded;
+    a.converged = c.converged;
+    a.cell_dx_mm = c.cell_dx_mm, a.cell_dy_mm = c.cell_dy_mm;
+    const auto& p = c.worst_pressure_MPa;
+    if (!p.empty() && a.peak_MPa > 0) a.end_share = std::max(p.front(), p.back()) / a.peak_MPa;
+  }
+  return out;
+}
+
+LcrHalfSpaceCheck HalfSpaceCheckOf(const std::array<double, 2>& half_space, const std::array<double, 2>& slices,
+                                   const std::array<bool, 2>& edge, double dx, double dy, bool converged) {
+  LcrHalfSpaceCheck h;
+  for (int k = 0; k < 2; ++k) {
+    h.half_space_MPa[k] = half_space[k];
+    h.slices_MPa[k] = slices[k];
+    h.difference_percent[k] = 100.0 * (slices[k] - half_space[k]) / half_space[k];
+    h.edge_loaded[k] = edge[k];
+  }
+  h.cell_dx_mm = dx, h.cell_dy_mm = dy;
+  h.converged = converged;
+  return h;
+}
+
+}  // namespace
+
+Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, const LcrMinSizeOptions& options,
+                                LcrMinSize3DOutcome& out, LcrHalfSpaceCheck* first_grid) {
+  Verification v;
+  v.max_rounds = kVerifyRounds;
+  const int nx = s3.contact.grid_nx, ny = s3.contact.grid_ny;
+  v.accurate_model = "half_space on " + std::to_string(nx) + "x" + std::to_string(ny) + " and " +
+                     std::to_string(2 * nx) + "x" + std::to_string(2 * ny) + " cells (the finer reported, the " +
+                     "difference its error) at the slices cycle's 4 worst contacts per cam of 3600 input angles";
+  const double p_lim = spec.limits.contact_stress_MPa;
+  const double torque = spec.output_torque_Nmm;
+  const bool over = s3.overload_torque_Nmm > 0;
+  const char* cams[2] = {"input cam", "output cam"};
+  double p_fast = p_lim;
+  for (int round = 0;; ++round) {
+    if (!out.outcome.converged || !out.outcome.design) return v;
+    v.ran = true;
+    v.checks.clear();
+    const lcr::Reducer<double>& r = *out.outcome.design;
+    const auto a0 = AccurateAt(spec, s3, r, out.crowning, torque, nx, ny);
+    const auto a1 = AccurateAt(spec, s3, r, out.crowning, torque, 2 * nx, 2 * ny);
+    if (first_grid)
+      *first_grid = HalfSpaceCheckOf({a0[0].peak_MPa, a0[1].peak_MPa}, {a0[0].slices_MPa, a0[1].slices_MPa},
+                                     {a0[0].edge_loaded, a0[1].edge_loaded}, a0[1].cell_dx_mm, a0[1].cell_dy_mm,
+                                     a0[0].converged && a0[1].converged);
+    std::array<AccurateSide, 2> o0 = a0, o1 = a1;
+    if (over) {
+      o0 = AccurateAt(spec, s3, r, out.crowning, s3.overload_torque_Nmm, nx, ny);
+      o1 = AccurateAt(spec, s3, r, out.crowning, s3.overload_torque_Nmm, 2 * nx, 2 * ny);
+    }
+    for (int k = 0; k < 2; ++k) {
+      if (std::isfinite(p_lim)) {
+        VerifiedLimit c;
+        c.limit = "contact_stress_MPa";
+        c.where = cams[k];
+        c.limit_value = p_lim;
+        c.accurate_value = a1[k].peak_MPa;
+        c.estimated_error = std::abs(a1[k].peak_MPa - a0[k].peak_MPa);
+        c.fast_value = a1[k].slices_MPa;
+        v.checks.push_back(c);
+      }
+      VerifiedLimit e;
+      e.limit = over ? "overload_edge_pressure_share" : "edge_pressure_share";
+      e.where = std::string(cams[k]) + (over ? " at the overload torque" : " at the design torque");
+      e.limit_value = kEdgeShareLimit;
+      e.accurate_value = o1[k].end_share;
+      e.estimated_error = std::abs(o1[k].end_share - o0[k].end_share);
+      e.fast_value = NAN;
+      v.checks.push_back(e);
+    }
+    if (v.verified() || round >= kVerifyRounds) return v;
+    // Tighten the 3D stress limit by the accurate/fast ratio of the cams that break it; an edge
+    // share that breaks its limit cannot be tightened here (the slices edge rows already demand a
+    // separated end slice): the loop ends and the study reports it.
+    double next = p_fast;
+    std::string where;
+    double accurate = 0;
+    for (const VerifiedLimit& c : v.checks)
+      if (c.limit == "contact_stress_MPa" && !c.holds()) {
+        const double t = TightenedUpperLimit(p_fast, p_lim, c.fast_value, c.accurate_value);
+        if (t < next) next = t, where = c.where, accurate = c.accurate_value;
+      }
+    if (!(next < p_fast)) return v;
+    v.history.push_back({round + 1, "contact_stress_MPa", where, p_fast, next, accurate, p_lim});
+    p_fast = next;
+    Polish3D(spec, s3, options, p_fast, out);
+    // The crowning the polish starts from is the outcome's own (the variables carry it).
+  }
 }
 
 }  // namespace camopt::objectives

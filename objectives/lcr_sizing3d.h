@@ -12,17 +12,20 @@
 //    coefficients appended as variables, plus, per tracked contact (cam, input angle, roller):
 //    - `input_stress_margin_3d` / `output_...`: s = (R'/r_r)(1 − p²/p_lim²), p the slices peak
 //      pressure (the line margin of lcr_sizing.h with the 3D peak; the line form where R' <= 0);
-//    - `input_edge_margin` / `output_...` (with an overload torque): at the contact's force scaled
-//      to the overload torque (the forces of the load stage are linear in the torque), the end
-//      slice's separation over Lundberg's length F/(π l E*) minus its line load over F/l, the
-//      smaller of the two ends: positive when the pressure stays off the ends, negative when it
-//      reaches one, continuous at the onset (a kink there, like any max).
+//    - `input_edge_margin` / `output_...`: at the contact's force scaled to the edge torque (the
+//      overload torque when one is given, else the design torque; the forces of the load stage are
+//      linear in the torque), the end slice's separation over Lundberg's length F/(π l E*) minus
+//      its line load over F/l, the smaller of the two ends: positive when the pressure stays off
+//      the ends, negative when it reaches one, continuous at the onset (a kink there, like any
+//      max). A straight roller has no design with a positive margin: SolveLcrMinSize3D says so
+//      ("edge-loaded: ... crown the rollers") without a polish.
 //    Derivatives are exact: Jets through the force pipeline and the slices model's implicit step.
 //    Tracked contacts are fixed (angle, roller) pairs; after each solve the dense check (3600
 //    angles: the line check for geometry and forces, lcr::AnalyzeCycleContact3D for the 3D
 //    stress, exact slices solves at the largest overload forces for the ends) adds the contacts
 //    that come near a limit, until it holds (at most 8 rounds).
-// 3. The best design is re-checked with the half_space model (Half-space check below).
+// 3. The best design is verified by the half_space model on a refined grid, with the slices
+//    stress limit tightened and the polish re-run where it breaks the limit (VerifyLcrMinSize3D).
 #pragma once
 
 #include <array>
@@ -34,6 +37,7 @@
 #include "model/lcr/contact3d_cycle.h"
 #include "objectives/lcr_min_size.h"
 #include "objectives/lcr_sizing.h"
+#include "objectives/verification.h"
 
 namespace camopt::objectives {
 
@@ -111,6 +115,19 @@ struct LcrMinSize3DOutcome {
 /// Solves one combination under the 3D contact model (header).
 LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& spec3d,
                                       const LcrMinSizeOptions& options);
+
+/// The verified-optimum contract (objectives/verification.h) of a converged outcome: the accurate
+/// model is the half_space solver at the slices cycle's worst contacts (3600 input angles) on the
+/// study's grid and on one with twice the cells each way; the finer value is reported with the
+/// difference as its error. Checks, per cam: the contact stress at the design torque against the
+/// study's limit, and the largest pressure at a contact end as a share of the peak (<= 0.01) at the
+/// edge torque (the overload's, else the design torque). Where a stress check fails, the slices
+/// model's stress limit is tightened by the accurate/fast ratio (TightenedUpperLimit) and the
+/// polish re-run from the outcome's point (out is updated), at most 3 rounds. first_grid, when
+/// given, receives the last round's half_space numbers on the study's own grid.
+Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& spec3d,
+                                const LcrMinSizeOptions& options, LcrMinSize3DOutcome& out,
+                                LcrHalfSpaceCheck* first_grid = nullptr);
 
 /// The half_space re-check of a design: each cam's worst contact of the slices cycle solved by
 /// DC-FFT on the spec's grid.

@@ -78,7 +78,7 @@ struct Verification {
 /// accurate value lands on the study's limit (minus a margin of `margin` of it, so that the next
 /// round does not land just above). Never loosened beyond the study's own limit.
 inline double TightenedUpperLimit(double fast_limit, double study_limit, double fast_value,
-                                  double accurate_value, double margin = 2e-3) {
+                                  double accurate_value, double margin = 1e-3) {
   if (!(accurate_value > 0) || !(fast_value > 0)) return fast_limit * (1 - 0.05);
   const double ratio = accurate_value / fast_value;
   const double next = study_limit * (1 - margin) / ratio;

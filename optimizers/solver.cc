@@ -20,14 +20,38 @@ std::vector<std::string> Backends() {
   return {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
 }
 
-SolverResult Solve(const objectives::Problem& problem, const SolverOptions& options) {
-  problem.Validate();
+namespace {
+SolverResult SolveWith(const objectives::Problem& problem, const SolverOptions& options) {
   const std::string& b = options.backend;
   if (b == "ipopt") return SolveIpopt(problem, options);
   if (b == "nlopt_slsqp" || b == "nlopt_mma" || b == "nlopt_cobyla" || b == "slsqp" ||
       b == "mma" || b == "cobyla")
     return SolveNlopt(problem, options);
   throw std::invalid_argument("unknown optimizer backend '" + b + "'");
+}
+}  // namespace
+
+SolverResult Solve(const objectives::Problem& problem, const SolverOptions& options) {
+  problem.Validate();
+  SolverResult first = SolveWith(problem, options);
+  const bool stuck = first.status == SolverStatus::kIterationLimit || first.status == SolverStatus::kInfeasible;
+  if (!stuck || options.fallback_backend.empty() || options.fallback_backend == options.backend || first.x.empty())
+    return first;
+  SolverOptions o = options;
+  o.backend = options.fallback_backend;
+  o.fallback_backend.clear();
+  o.max_evaluations = options.fallback_max_evaluations;
+  o.initial = first.x;
+  SolverResult second = SolveWith(problem, o);
+  SolverResult& out = second.ok() ? second : first;
+  out.value_evaluations = first.value_evaluations + second.value_evaluations;
+  out.gradient_evaluations = first.gradient_evaluations + second.gradient_evaluations;
+  out.iterations = first.iterations + second.iterations;
+  out.message = second.ok() ? options.backend + " stopped (" + first.message + "); " + o.backend +
+                                  " polished its last point: " + second.message
+                            : first.message + " (the " + o.backend + " polish did not converge: " +
+                                  second.message + ")";
+  return out;
 }
 
 SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOptions& options,

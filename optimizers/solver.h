@@ -40,6 +40,12 @@ struct SolverOptions {
   double stall_violation = 0;
   /// Starting point (unscaled); empty: the variables' own initial values. Clamped to the bounds.
   std::vector<double> initial;
+  /// When the backend stops at its iteration limit (or stalls infeasible), its last point is
+  /// polished by this backend (same tolerances, its own evaluation budget); empty: no fallback.
+  /// The result is the fallback's when it converges, else the first backend's. Its message says
+  /// which backend finished.
+  std::string fallback_backend;
+  int fallback_max_evaluations = 3000;
 };
 
 struct SolverResult {

@@ -1,12 +1,20 @@
 #include "studies/lcr_crowning_tuning_study.h"
+#include "studies/verification_json.h"
 
 #include <cmath>
 
+#include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_crowning_tuning {
+
+namespace {
+// A contact's end pressure up to this share of its peak counts as off the ends (as in
+// objectives/lcr_sizing3d.cc's verification).
+constexpr double kEdgeShareLimit = 0.01;
+}  // namespace
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "tuning"});
@@ -87,12 +95,49 @@ Result Run(const Study& st, const RunContext& ctx) {
     res.tuned_check[k].slices = res.tuned[k].tuned;
     res.uncrowned_check[k].slices = res.tuned[k].uncrowned;
     if (!st.half_space_check) continue;
+    std::vector<lcr::Contact3DCycleSide> coarse;
     for (auto [check, c] : {std::pair{&res.tuned_check[k], crown}, std::pair{&res.uncrowned_check[k], lcr::RollerCrowning<double>{}}}) {
       std::vector<lcr::Contact3DCycleSide> details;
       check->half_space = objectives::CheckLcrCrowning(spec, s, c, lcr::ContactModel::kHalfSpace, &details,
                                                        st.grid_nx, st.grid_ny);
       for (size_t g = 0; g < spec.misalignments_rad.size(); ++g) check->half_space_dy_mm.push_back(details[2 * g].cell_dy_mm);
+      if (check == &res.tuned_check[k]) coarse = details;
     }
+    // The verified-optimum contract: the tuned crowning on twice the input angles and twice the
+    // half_space cells each way; per misalignment, the largest pressure at a contact end as a
+    // share of the peak at the overload torque (the tuning's constraint: off the ends) and at the
+    // design torque, the error the change from the study's own settings.
+    objectives::LcrCrowningTuningSpec fine_spec = spec;
+    fine_spec.angle_steps = 2 * spec.angle_steps;
+    fine_spec.progress = nullptr;
+    std::vector<lcr::Contact3DCycleSide> fine;
+    objectives::CheckLcrCrowning(fine_spec, s, crown, lcr::ContactModel::kHalfSpace, &fine, 2 * st.grid_nx,
+                                 2 * st.grid_ny);
+    const auto end_share = [](const lcr::Contact3DCycleSide& c) {
+      const auto& p = c.worst_pressure_MPa;
+      return p.empty() || !(c.max_contact_stress_MPa > 0) ? 0.0
+                                                           : std::max(p.front(), p.back()) / c.max_contact_stress_MPa;
+    };
+    for (size_t g = 0; g < spec.misalignments_rad.size(); ++g)
+      for (int torque = 0; torque < 2; ++torque) {
+        objectives::VerifiedLimit c;
+        c.limit = torque == 1 ? "overload_edge_pressure_share" : "design_edge_pressure_share";
+        c.where = std::string(k == 0 ? "input cam" : "output cam") + " at " + Format(spec.misalignments_rad[g] * 1e3) +
+                  " mrad, " + (torque == 1 ? "overload" : "design") + " torque";
+        c.limit_value = kEdgeShareLimit;
+        c.accurate_value = end_share(fine[2 * g + torque]);
+        c.fast_value = end_share(coarse[2 * g + torque]);
+        c.estimated_error = std::abs(c.accurate_value - c.fast_value);
+        res.verification.checks.push_back(c);
+      }
+  }
+  if (st.half_space_check) {
+    res.verification.ran = true;
+    res.verification.accurate_model = "half_space on " + std::to_string(2 * st.grid_nx) + "x" +
+                                      std::to_string(2 * st.grid_ny) + " cells at the worst contacts of " +
+                                      std::to_string(2 * spec.angle_steps) + " input angles (error: the change from " +
+                                      std::to_string(st.grid_nx) + "x" + std::to_string(st.grid_ny) + " cells, " +
+                                      std::to_string(spec.angle_steps) + " angles)";
   }
   return res;
 }
@@ -140,6 +185,12 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
       c["half_space_grid"] = {st.grid_nx, st.grid_ny};
     }
   }
+  if (st.half_space_check) {
+    AddVerificationJson(res.verification, j);
+  } else {
+    j["verified"] = false;
+    j["verification"] = {{"accurate_model", nullptr}, {"note", "tuning.half_space_check is false: not verified"}};
+  }
   j["notes"] = nlohmann::json::array(
       {"uncrowned rollers are edge-loaded: their peak is the end row's pressure and grows as the resolution "
        "refines (slice width / cell_dy_mm); the crowned values are converged (docs/lcr.md)"});
@@ -163,6 +214,9 @@ void Write(const Study& st, const Result& res, Outputs& out) {
           SvgLinePlot(curves, {"Largest contact pressure at the design torque (worst misalignment), slices model",
                                "logarithmic crowning coefficient f [mm]", "contact pressure [MPa]"}));
   out.AddJson("result.json", ToJson(st, res));
+  if (st.half_space_check && !res.verification.verified())
+    out.MarkIncomplete(VerificationFailure(res.verification, "the pressure reaches a roller end: raise "
+                                                             "tuning.effective_length_mm or the coefficient range"));
 }
 
 namespace {

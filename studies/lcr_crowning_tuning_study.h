@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "objectives/lcr_crowning_tuning.h"
+#include "objectives/verification.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -32,6 +33,9 @@ struct SideCheck {
 struct Result {
   std::array<objectives::LcrCrowningSideResult, 2> tuned;
   std::array<SideCheck, 2> tuned_check, uncrowned_check;  // half_space part empty when not asked
+  /// The tuned crowning checked by the accurate model (objectives/verification.h): not run when
+  /// the half_space check is off.
+  objectives::Verification verification;
 };
 
 /// @throws StudyError for bad input (exit 2).

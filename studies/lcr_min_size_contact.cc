@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "studies/format.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/lcr_min_size_study.h"
 
@@ -78,13 +79,12 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, doub
       v.Fail(std::string("a range only with fixed.crowning ") + want + " (its fixed value is the start)");
     const auto [lo, hi] = v.Range();
     if (!(lo >= lo_min) || !(hi <= hi_max))
-      v.Fail("a [lo, hi] range with " + std::to_string(lo_min) + " <= lo < hi <= " + std::to_string(hi_max) + " mm");
+      v.Fail("a [lo, hi] range with " + Format(lo_min) + " <= lo < hi <= " + Format(hi_max) + " mm");
     return std::array<double, 2>{lo, hi};
   };
+  // A coefficient of 0 is a straight roller: a design a user may want inside the range.
   s.coefficient_range_mm = range("crowning_coefficient_mm", {CrowningType::kLogarithmic},
-                                 "{\"type\": \"logarithmic\", \"effective_length_mm\": Le}", 1e-9, 1.0);
-  if (s.coefficient_range_mm && !((*s.coefficient_range_mm)[0] > 0))
-    vars["crowning_coefficient_mm"].Fail("a [lo, hi] range with 0 < lo < hi <= 1 mm");
+                                 "{\"type\": \"logarithmic\", \"effective_length_mm\": Le}", 0.0, 1.0);
   s.radius_range_mm = range("crowning_radius_mm", {CrowningType::kCircular, CrowningType::kPartial},
                             "{\"type\": \"circular\" or \"partial\", \"radius_mm\": R, ...}", 1e-9, 1e6);
   s.flat_length_range_mm = range("crowning_flat_length_mm", {CrowningType::kPartial},
@@ -167,6 +167,8 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
     if (c3.overload_torque_Nmm > 0) {
       side["overload_edge_margin"] = MaybeFinite(b.contact->overload_edge_margin[k]);
       side["overload_edge_loaded"] = b.contact->overload_edge_loaded[k];
+    } else {
+      side["edge_margin"] = MaybeFinite(b.contact->overload_edge_margin[k]);  // at the design torque
     }
     contact[sides[k]] = side;
   }

@@ -9,6 +9,7 @@
 
 #include "model/lcr/kinematics.h"
 #include "studies/lcr_min_size_study.h"
+#include "studies/verification_json.h"
 #include "studies/lcr_tolerance_input.h"
 #include "studies/report.h"
 
@@ -94,7 +95,11 @@ void RunRobust(const Study& s, Result& res, const RunContext& ctx) {
     return objectives::MonteCarloCheck(spec, design, s.mc_samples, s.mc_seed, s.mc_angle_steps);
   };
   if (res.best >= 0) res.nominal_mc = check(res.best, *res.candidates[res.best].outcome.design);
-  if (res.robust_best >= 0) res.robust_mc = check(res.robust_best, *res.robust[res.robust_best].design);
+  if (res.robust_best >= 0) {
+    res.robust_mc = check(res.robust_best, *res.robust[res.robust_best].design);
+    res.robust_verification = objectives::VerifyLcrLineDesign(res.candidates[res.robust_best].spec,
+                                                              *res.robust[res.robust_best].design, s.options.dense_steps);
+  }
   progress.Update(1.0, "robust done");
 }
 
@@ -133,8 +138,11 @@ void RobustJson(const Study& s, const Result& r, nlohmann::json& res) {
   }
   if (r.robust_best < 0) {
     res["best"] = nullptr;
+    res["verified"] = false;
+    res["verification"] = {{"accurate_model", nullptr}, {"note", "no robust design to verify"}};
     return;
   }
+  if (r.robust_verification) AddVerificationJson(*r.robust_verification, res);
   const objectives::LcrRobustOutcome& o = r.robust[r.robust_best];
   const lcr::Reducer<double>& d = *o.design;
   const objectives::LcrDenseCheck& k = *o.dense;

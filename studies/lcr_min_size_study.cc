@@ -15,6 +15,7 @@
 #include "studies/lcr_input.h"
 #include "studies/lcr_min_size_contact.h"
 #include "studies/report.h"
+#include "studies/verification_json.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_min_size {
@@ -138,6 +139,18 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
 // point is least (an undercut contact counts as infinite), that violation's limit, and, for a
 // stress or load limit, the value at which that candidate fits (objectives::LimitToFit).
 std::string BlockingMessage(const Study& s, const Result& r) {
+  // A candidate that converged on the fast model but failed the accurate model's check: that
+  // check's words (the limit, the accurate value, what to change).
+  for (const Candidate& c : r.candidates)
+    if (c.verification && c.verification->ran && !c.verification->verified()) {
+      const objectives::VerifiedLimit* w = c.verification->worst();
+      const bool edge = w && w->limit.find("edge") != std::string::npos;
+      return ComboName(c.combo) + " converged on the fast model but is " +
+             VerificationFailure(*c.verification,
+                                 edge ? "edge-loaded: crown the rollers more (a larger crowning range or effective "
+                                        "length), or lower the misalignment"
+                                      : "refine contact.slices, or raise the limit");
+    }
   const Candidate* closest = nullptr;
   const objectives::LcrViolation* worst = nullptr;
   double least = kInf;
@@ -152,6 +165,18 @@ std::string BlockingMessage(const Study& s, const Result& r) {
     if (w && (!closest || rel < least)) closest = &c, worst = w, least = rel;
   }
   if (!closest) return "no design meets the limits, and no candidate reached a point that the dense check could assess";
+  if (worst->limit == "edge_margin" || worst->limit == "overload_edge_margin") {
+    const bool straight = s.contact3d && s.contact3d->crowning.type == contact::CrowningType::kNone &&
+                          s.contact3d->extra_variables() == 0;
+    const std::string torque = worst->limit == "edge_margin" ? "design" : "overload";
+    std::ostringstream m;
+    m.precision(4);
+    m << "edge-loaded: the pressure reaches the rollers' ends at the " << torque << " torque for every design ("
+      << ComboName(closest->combo) << ": end margin " << worst->value << ", needs > 0); "
+      << (straight ? "crown the rollers (fixed.crowning with variables.crowning_coefficient_mm)"
+                   : "allow more crowning (a wider crowning range, a longer effective length) or less misalignment");
+    return m.str();
+  }
   std::ostringstream m;
   m.precision(4);
   m << "no design meets the limits: " << worst->limit << " blocks most; ";
@@ -275,6 +300,9 @@ Study Parse(const Node& root) {
     if (s.options.starts > 5) o["starts"].Fail("a number of starts between 1 and 5");
   }
   solver.max_seconds = 10.0;  // per local solve
+  // A local solve that Ipopt ends at its iteration limit is polished by SLSQP from Ipopt's last
+  // point (Ipopt may cycle on the kinks of tracked maxima; SLSQP's active set settles them).
+  if (solver.backend == "ipopt") solver.fallback_backend = "nlopt_slsqp";
   double longest = b.roller_length_mm;
   for (const CatalogueRoller& r : s.catalogue) longest = std::max(longest, r.length_mm);
   s.contact3d = ParseContact3D(root, s.catalogue.empty() ? b.roller_length_mm : longest, !s.catalogue.empty());
@@ -297,8 +325,8 @@ Result Run(const Study& s, const RunContext& ctx) {
   Result res;
   const auto t0 = std::chrono::steady_clock::now();
   for (const auto& c : objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences)) {
-    if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}});
-    for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}});
+    if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}, {}, {}});
+    for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}, {}, {}});
   }
   {
     Progress progress("lcr_min_size", ctx.quiet);
@@ -323,16 +351,40 @@ Result Run(const Study& s, const RunContext& ctx) {
         c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
       res.value_evaluations += c.outcome.result.value_evaluations;
       res.gradient_evaluations += c.outcome.result.gradient_evaluations;
+    }
+    progress.Update(1.0, std::to_string(res.candidates.size()) + " candidates");
+  }
+  // The verified-optimum contract: the smallest feasible candidate is checked by the accurate
+  // model (3D: half_space on a refined grid, tightening and re-solving where it breaks a limit;
+  // line: the exact cycle on twice the angles); one that fails is dropped and the next smallest
+  // checked, until one holds or none is left.
+  for (;;) {
+    res.best = -1;
+    for (size_t i = 0; i < res.candidates.size(); ++i) {
+      const Candidate& c = res.candidates[i];
       if (c.feasible() && (res.best < 0 || c.outcome.check->outer_diameter_mm <
                                                res.candidates[res.best].outcome.check->outer_diameter_mm))
         res.best = int(i);
     }
-    progress.Update(1.0, std::to_string(res.candidates.size()) + " candidates");
+    if (res.best < 0) break;
+    Candidate& b = res.candidates[res.best];
+    if (b.verification) break;  // checked and holds: the answer
+    if (s.contact3d) {
+      const int values = b.outcome3d->outcome.result.value_evaluations,
+                gradients = b.outcome3d->outcome.result.gradient_evaluations;
+      objectives::LcrHalfSpaceCheck h;
+      b.verification = objectives::VerifyLcrMinSize3D(b.spec, *s.contact3d, s.options, *b.outcome3d, &h);
+      b.outcome = b.outcome3d->outcome;
+      res.value_evaluations += b.outcome.result.value_evaluations - values;
+      res.gradient_evaluations += b.outcome.result.gradient_evaluations - gradients;
+      if (b.verification->ran) b.half_space = h;
+    } else {
+      b.verification = objectives::VerifyLcrLineDesign(b.spec, *b.outcome.design, s.options.dense_steps);
+    }
   }
   if (res.best >= 0 && s.contact3d) {
     // The limit sensitivities re-solve the line problem: not done for the 3D contact.
-    const Candidate& b = res.candidates[res.best];
-    res.half_space = objectives::HalfSpaceRecheck(b.spec, *s.contact3d, *b.outcome.design, b.outcome3d->crowning);
+    res.half_space = res.candidates[res.best].half_space;
   } else if (res.best >= 0) {
     const Candidate& b = res.candidates[res.best];
     res.limit_sensitivity = objectives::LimitSensitivity(b.spec, s.options, b.outcome);
@@ -360,6 +412,19 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   nlohmann::json cj = nlohmann::json::array();
   for (const auto& c : result.candidates) cj.push_back(CandidateJson(s, c));
   res["candidates"] = cj;
+  // The verified-optimum contract: of the best design, or, when nothing fits, of the candidate
+  // that failed its check.
+  const objectives::Verification* verification = nullptr;
+  if (result.best >= 0) verification = result.candidates[result.best].verification ? &*result.candidates[result.best].verification : nullptr;
+  else
+    for (const Candidate& c : result.candidates)
+      if (c.verification && !verification) verification = &*c.verification;
+  if (verification) {
+    AddVerificationJson(*verification, res);
+  } else {
+    res["verified"] = false;
+    res["verification"] = {{"accurate_model", nullptr}, {"note", "no design to verify"}};
+  }
   if (result.best < 0) {
     res["best"] = nullptr;
     res["notes"] = {result.blocking_message};

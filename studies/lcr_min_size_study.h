@@ -54,7 +54,11 @@ struct Candidate {
   objectives::LcrSizingSpec spec;  ///< what was solved (counts, roller, the study's limits)
   objectives::LcrMinSizeOutcome outcome;
   std::optional<objectives::LcrMinSize3DOutcome> outcome3d;  ///< with Study::contact3d
-  bool feasible() const { return outcome.converged; }
+  /// The accurate model's check (objectives/verification.h), of the candidates that were chosen
+  /// as best at some point: one that fails it is not feasible.
+  std::optional<objectives::Verification> verification;
+  std::optional<objectives::LcrHalfSpaceCheck> half_space;  ///< 3D: the verification's study-grid numbers
+  bool feasible() const { return outcome.converged && (!verification || verification->verified()); }
 };
 
 struct Result {
@@ -73,6 +77,8 @@ struct Result {
   std::vector<objectives::LcrRobustOutcome> robust;
   int robust_best = -1;
   std::optional<objectives::LcrMonteCarloCheck> robust_mc, nominal_mc;
+  /// With Study::robust: the accurate check of the robust best design (its nominal limits).
+  std::optional<objectives::Verification> robust_verification;
 };
 
 /// @throws StudyError for bad input (exit 2).
