@@ -185,6 +185,13 @@ LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
   return t;
 }
 
+// A start value clamped into its range with 1% of the range's width to spare at either end: a
+// start on a bound makes Ipopt push it off by its own rule and SLSQP start on an active bound.
+double Interior(double value, const std::array<double, 2>& range) {
+  const double pad = 0.01 * (range[1] - range[0]);
+  return std::clamp(value, range[0] + pad, range[1] - pad);
+}
+
 double PhaseDistance(double a, double b, double period) {
   const double d = std::fmod(std::abs(a - b), period);
   return std::min(d, period - d);
@@ -482,15 +489,14 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
     const lcr::Reducer<double> r = LcrDesign(spec, x);
     const double f_max = line.check ? std::max(line.check->max_force_N[0], line.check->max_force_N[1]) : 0.0;
     const double f0 = contact::LundbergCoefficient(f_max, r.input.contact_length(), spec.material.composite_modulus_MPa());
-    const auto [lo, hi] = *s.coefficient_range_mm;
-    s.crowning.coefficient = std::clamp(f0, lo, hi);
+    s.crowning.coefficient = Interior(f0, *s.coefficient_range_mm);
     x.push_back(s.crowning.coefficient);
     x.push_back(s.crowning.coefficient);
   }
   // The other variables start at the fixed values (the parser requires them), clamped.
   const auto start = [&](const std::optional<std::array<double, 2>>& range, double& value, int copies) {
     if (!range) return;
-    value = std::clamp(value, (*range)[0], (*range)[1]);
+    value = Interior(value, *range);
     for (int i = 0; i < copies; ++i) x.push_back(value);
   };
   double roller_length = spec.roller_length_mm, cam_thickness = spec.cam_thickness_mm;

@@ -68,6 +68,12 @@ void LcrCounts(const json& reducer, double& rollers, double& lobes) {
   lobes = Size(Sub(reducer, "input"), "lobes", 12) + Size(Sub(reducer, "output"), "lobes", 14);
 }
 
+// Cells of a "grid": [nx, ny] (fallback when absent or not two numbers).
+double GridCellsOr(const json& g, double fallback) {
+  if (!(g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number())) return fallback;
+  return std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>());
+}
+
 WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
   const json& a = Sub(s, "analysis");
   double rollers, lobes;
@@ -81,6 +87,21 @@ WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
                      Num(points) + " profile points × " + Num(lobes) + " lobes"});
   } else {
     terms.push_back({double(Count(Sub(s, "measurements"))), "/measurements", "measurements"});
+  }
+  const json& contact = Sub(s, "contact");
+  const json& model = Sub(contact, "model");
+  if (!fit && model.is_string() && model.get<std::string>() != "line") {
+    // The finite-length contact: per cam, a table of 65 slices solves (13 forces × 5 radii) and 4
+    // exact ones, a solve of N slices costing about (N/40)³ of a 40-slice one (≈0.6 ms, about
+    // 1e4 roller contact evaluations); the half_space model adds 4 DC-FFT solves per cam of about
+    // nx·ny·20 units (a 64×256 grid ≈ 0.1 s).
+    const double slices = std::max(Size(contact, "slices", 40), 4.0);
+    terms.push_back({2 * 69 * 1e4 * std::pow(slices / 40.0, 3), "/contact/slices",
+                     "2 cams × 69 slices solves of " + Num(slices) + " slices"});
+    if (model.get<std::string>() == "half_space") {
+      const double cells = GridCellsOr(Sub(contact, "grid"), 64.0 * 256.0);
+      terms.push_back({2 * 4 * cells * 20, "/contact/grid", "2 cams × 4 half_space solves on " + Num(cells) + " cells"});
+    }
   }
   if (!fit && s.contains("tolerances")) {
     // Transmission error (issue 18): per Monte-Carlo sample, angle and roller about two contact
@@ -166,10 +187,25 @@ WorkEstimate CycloidLtca(const json& s, double factor) {
   const double rollers = Size(Sub(s, "drive"), "rollers", 16);
   const double cells = GridCells(a);
   const json& list = Sub(a, "crank_angles_deg");
-  const double angles = list.is_array() ? double(list.size()) : Size(a, "crank_angle_steps", 60);
-  return Largest({{angles * rollers * cells, Sub(a, "grid").is_null() ? "/analysis" : "/analysis/grid",
-                   Num(angles) + " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +
-                       " grid cells"}},
+  // Every way of giving the angles counts: a list, uniform steps, or samples per mesh period.
+  const bool steps_given = Sub(a, "crank_angle_steps").is_number();
+  const double angles = list.is_array() ? double(list.size())
+                        : steps_given   ? Size(a, "crank_angle_steps", 60)
+                                        : Size(a, "crank_angles_per_mesh_period", 60);
+  // The path named is the factor furthest above its default (60 angles, 40×40 cells).
+  const std::string angles_path = list.is_array() ? "/analysis/crank_angles_deg"
+                                  : steps_given   ? "/analysis/crank_angle_steps"
+                                  : Sub(a, "crank_angles_per_mesh_period").is_null()
+                                      ? "/analysis"
+                                      : "/analysis/crank_angles_per_mesh_period";
+  const std::string path = !Sub(a, "grid").is_null() && cells / 1600.0 >= angles / 60.0 ? "/analysis/grid" : angles_path;
+  // The error estimate (on unless estimate_error is false) runs the angles once more (a shifted
+  // set) and a grid with a quarter of the cells.
+  const json& est = Sub(a, "estimate_error");
+  const double runs = est.is_boolean() && !est.get<bool>() ? 1.0 : 2.25;
+  return Largest({{runs * angles * rollers * cells, path,
+                   Num(runs) + " runs × " + Num(angles) + " crank angles × " + Num(rollers) + " rollers × " +
+                       Num(cells) + " grid cells"}},
                  5e7 * factor, "contact cell solves", 24);
 }
 
@@ -235,10 +271,38 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
       }
     }
   }
-  return Largest({{lobes * n_diffs * rollers * starts, "/search/max_lobes",
-                   Num(lobes) + " lobe counts × " + Num(n_diffs) + " roller-lobe differences × " +
-                       Num(rollers) + " catalogue rollers × " + Num(starts) + " starts"}},
-                 2e4 * factor, "local optimizations", 1000);
+  // A local optimization of the line model (24 samples per load period) is the unit (~30 ms); its
+  // cost grows with the samples. Under the finite-length contact each candidate adds the 3D polish
+  // (about 30 units at 20 slices, a slices solve costing ∝ N³) and the best design's verification
+  // (half_space solves on the grid and on twice it each way: ≈ 40 units at 48×128).
+  const json& opt = Sub(s, "optimizer");
+  const double samples = std::max(Size(opt, "samples_per_period", 24), 4.0);
+  const double per_start = 0.5 + 0.5 * samples / 24.0;
+  const double combos = lobes * n_diffs * rollers;
+  std::vector<Term> terms = {{combos * starts * per_start, "/search/max_lobes",
+                              Num(lobes) + " lobe counts × " + Num(n_diffs) + " roller-lobe differences × " +
+                                  Num(rollers) + " catalogue rollers × " + Num(starts) + " starts × " +
+                                  Num(per_start) + " (samples per period)"}};
+  const json& contact = Sub(s, "contact");
+  const json& model = Sub(contact, "model");
+  const bool three_d = (model.is_string() && model.get<std::string>() != "line") ||
+                       Sub(Sub(s, "fixed"), "crowning").is_object();
+  if (three_d) {
+    const double slices = std::max(Size(contact, "slices", 40), 4.0);
+    terms.push_back({combos * 30 * std::pow(slices / 20.0, 3), "/contact/slices",
+                     Num(combos) + " candidates × 3D polish with " + Num(slices) + " slices"});
+    const double cells = GridCellsOr(Sub(contact, "grid"), 64.0 * 256.0);
+    terms.push_back({40 * 5 * cells / (48.0 * 128.0), "/contact/grid",
+                     "half_space verification on " + Num(cells) + " cells and four times as many"});
+  }
+  const json& mc = Sub(s, "monte_carlo");
+  if (s.contains("robust")) {
+    // Two Monte-Carlo checks (robust and nominal best): a sample of 720 angles ≈ 36 ms ≈ 1 unit.
+    const double mc_samples = Size(mc, "samples", 200), mc_steps = Size(mc, "angle_steps", 720);
+    terms.push_back({2 * mc_samples * mc_steps / 720.0, "/monte_carlo/samples",
+                     "2 × " + Num(mc_samples) + " Monte-Carlo samples × " + Num(mc_steps) + " angles"});
+  }
+  return Largest(terms, 2e4 * factor, "local optimizations", 1000);
 }
 
 // lcr_crowning_tuning (issue 12): slices solves of 40 slices as the unit (≈0.6 ms; N slices cost
@@ -254,13 +318,19 @@ WorkEstimate LcrCrowningTuning(const json& s, double factor) {
   const double cells = grid.is_array() && grid.size() == 2 && grid[0].is_number() && grid[1].is_number()
                            ? grid[0].get<double>() * grid[1].get<double>()
                            : 48.0 * 256.0;
+  // The check: tuned and uncrowned on the grid, and the tuned crowning verified on twice the cells
+  // each way (four times the cells, about five times the time).
   const double check = Sub(t, "half_space_check").is_boolean() && !Sub(t, "half_space_check").get<bool>()
                            ? 0.0
-                           : 2 * 2 * 2 * misalignments * 4 * 100 * cells / (48.0 * 256.0);
+                           : (2 + 5) * 2 * misalignments * 4 * 100 * cells / (48.0 * 256.0);
+  // The load stage over the angle grid: about 1/4000 of a slices solve per angle and cam.
+  const double angle_steps = Size(t, "angle_steps", 360);
+  const double angles = evaluations * 2 * 2 * misalignments * angle_steps / 4000.0;
   return Largest({{evaluations * 2 * 2 * misalignments * 69 * per_solve, "/tuning/curve_points",
                    Num(evaluations) + " evaluations × 2 cams × 2 torques × " + Num(misalignments) +
                        " misalignments × 69 contact solves × " + Num(per_solve) + " (slices)"},
-                  {check, "/tuning/grid", "half_space checks on " + Num(cells) + " cells"}},
+                  {check, "/tuning/grid", "half_space checks on " + Num(cells) + " cells"},
+                  {angles, "/tuning/angle_steps", Num(angle_steps) + " input angles per cycle"}},
                  1e5 * factor, "slice-solve units", 1000);
 }
 

@@ -8,12 +8,18 @@
 //   lcr_analysis, lcr_friction_fit  angle_steps × rollers + profile_points × lobes  ≤ 2e7
 //   transmission_rigidity           elements ≤ 1000; Σ reducer angle_steps × rollers × 2 ≤ 2e6
 //   globoidal_cam                   Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7
-//   cycloid_ltca                    crank angles × rollers × grid cells ≤ 5e7
+//   cycloid_ltca                    runs (2.25 with the error estimate) × crank angles (a list,
+//                                   crank_angle_steps or crank_angles_per_mesh_period) × rollers × cells ≤ 5e7
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
 //   disc_cam                        angle_steps + MC samples × angle_steps × scales ≤ 2e6
-//   lcr_min_size                    lobe counts × differences × catalogue rollers × starts ≤ 2e4
+//   lcr_min_size                    lobe counts × differences × catalogue rollers × starts × (0.5 +
+//                                   samples_per_period/48) + with a 3D contact 30·(slices/20)³ per
+//                                   candidate and the half_space verification + robust Monte-Carlo ≤ 2e4
 //   lcr_crowning_tuning             evaluations × 2 cams × 2 torques × misalignments × 69 × (slices/40)³
-//                                   + half_space checks (100 per 48×256 grid) ≤ 1e5
+//                                   + half_space checks and verification (100 per 48×256 grid)
+//                                   + the load stage's angle_steps ≤ 1e5
+//   lcr_analysis's 3D contact adds its slices and half_space solves; every fidelity knob of every
+//   kind is counted (tests/reliability_test.cc WorkLimits.EveryFidelityKnobOfEveryExampleIsCounted).
 //   every kind                      estimated memory ≤ 2 GB
 #pragma once
 
