@@ -14,6 +14,8 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -107,6 +109,17 @@ int main(int argc, char** argv) {
   std::string study_file, out_dir;
   bool quiet = false, convergence = false;
   double work_factor = 1.0;
+  // A factor in [1e-6, 1e6]; NaN passes CLI::Range (its comparisons are false) and would switch
+  // every cap off, so the check is written out.
+  const CLI::Validator factor_range(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < 1e-6 || v > 1e6)
+          return "expected a number between 1e-6 and 1e6, found " + text;
+        return "";
+      },
+      "FACTOR in [1e-6, 1e6]");
   CLI::App* run = app.add_subcommand("run", "Analyse or size the design described in a study file");
   run->add_option("study", study_file, "Study file (JSON)")->required();
   run->add_option("--out,-o", out_dir, "Output folder (default: results/<study file stem>)");
@@ -117,7 +130,7 @@ int main(int argc, char** argv) {
   run->add_option("--max-work-factor", work_factor,
                   "Multiply every work, memory and file-size cap by this factor (default 1; "
                   "see docs/reliability.md)")
-      ->check(CLI::Range(1e-6, 1e6));
+      ->check(factor_range);
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
   camopt::studies::sweep::Options sweep;
   CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a study over many cases (docs/studies.md)");
@@ -128,7 +141,7 @@ int main(int argc, char** argv) {
   sweep_cmd->add_flag("--resume", sweep.resume, "Continue an interrupted sweep from its checkpoint");
   sweep_cmd->add_flag("--case-outputs", sweep.case_outputs, "Keep every case's result folder");
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress lines on stderr");
-  sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(CLI::Range(1e-6, 1e6));
+  sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(factor_range);
   std::string schema_kind;
   CLI::App* schema = app.add_subcommand("schema", "Print the JSON Schema of a study kind");
   schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
@@ -167,6 +180,10 @@ int main(int argc, char** argv) {
   }
   if (!run->parsed()) {
     std::cerr << app.help();
+    return 2;
+  }
+  if (run->count("--out") > 0 && out_dir.empty()) {
+    std::cerr << "camopt: error: --out: expected a folder name for the results, found nothing\n";
     return 2;
   }
   if (out_dir.empty())

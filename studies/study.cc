@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <vector>
+#include <fstream>
+#include <set>
 #include <iostream>
 #include <mutex>
 #include <stdexcept>
@@ -109,17 +112,32 @@ void WriteWholeFile(const std::string& path, const std::string& content) {
   if (close(fd) != 0) OutputFail("cannot write " + fs::path(path).filename().string(), path, errno);
 }
 
-// Whether an existing folder may be replaced: empty, or a previous result (result.json, no
-// sub-folders). Anything else is the user's and is never deleted.
-bool IsReplaceable(const fs::path& dir) {
+// The list of the files a run wrote, kept in its output folder: only those are ever replaced.
+constexpr char kManifest[] = ".camopt_manifest";
+
+// What keeps an existing folder from being replaced, or "" when it may be: it is empty, or it
+// holds a previous result — the manifest and only the files it lists (no sub-folders). Anything
+// else is the user's and is never deleted (a study file copied into the folder, notes, a result
+// of a camopt that wrote no manifest).
+std::string NotReplaceable(const fs::path& dir) {
   std::error_code ec;
-  bool has_result = false, empty = true;
+  std::vector<std::string> names;
+  bool has_manifest = false;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    empty = false;
-    if (entry.is_directory(ec)) return false;
-    if (entry.path().filename() == "result.json") has_result = true;
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory(ec) || !entry.is_regular_file(ec)) return "it holds " + name + ", not a file camopt wrote";
+    if (name == kManifest) has_manifest = true;
+    else names.push_back(name);
   }
-  return !ec && (empty || has_result);
+  if (ec) return "it cannot be listed: " + ec.message();
+  if (names.empty() && !has_manifest) return "";
+  if (!has_manifest) return "it holds files and no " + std::string(kManifest) + " list of a camopt result";
+  std::ifstream in(dir / kManifest);
+  std::set<std::string> listed;
+  for (std::string line; std::getline(in, line);) listed.insert(line);
+  for (const std::string& n : names)
+    if (!listed.count(n)) return "it holds " + n + ", which camopt did not write";
+  return "";
 }
 
 }  // namespace
@@ -135,9 +153,10 @@ OutputFolder::OutputFolder(const std::string& dir) {
   if (lstat(dir_.c_str(), &st) == 0) {
     if (!S_ISDIR(st.st_mode))
       throw StudyError("--out " + dir + ": exists and is not a folder");
-    if (!IsReplaceable(out))
-      throw StudyError("--out " + dir + ": the folder holds files that are not a camopt result " +
-                       "(no result.json, or sub-folders); choose a new or empty folder");
+    const std::string why = NotReplaceable(out);
+    if (!why.empty())
+      throw StudyError("--out " + dir + ": the folder is not a camopt result camopt may replace (" + why +
+                       "); choose a new or empty folder");
   } else if (errno != ENOENT) {
     OutputFail("cannot use the folder", dir, errno);
   }
@@ -194,6 +213,17 @@ void MoveFolderIn(const std::string& tmp, const std::string& dir) {
 void OutputFolder::Commit(const Outputs& outputs) {
   std::lock_guard<std::mutex> lock(OutputMutex());
   WriteFilesInto(tmp_, outputs);
+  std::string manifest;
+  for (const auto& [name, content] : outputs.files()) manifest += name + "\n";
+  WriteWholeFile((fs::path(tmp_) / kManifest).string(), manifest);
+  // Checked again at the swap: files a user added to the folder while the study ran are theirs.
+  struct stat st {};
+  if (lstat(dir_.c_str(), &st) == 0) {
+    const std::string why = S_ISDIR(st.st_mode) ? NotReplaceable(dir_) : "it is no longer a folder";
+    if (!why.empty())
+      throw StudyError("--out " + dir_ + ": the folder changed while the study ran (" + why +
+                       "); nothing was replaced, choose a new or empty folder");
+  }
   MoveFolderIn(tmp_, dir_);
   committed_ = true;
 }

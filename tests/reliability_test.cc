@@ -398,6 +398,53 @@ TEST(Output, APreviousResultStaysUntilTheNewOneIsComplete) {
   EXPECT_TRUE(Leftovers(dir).empty());
 }
 
+// A previous result folder that also holds the user's files (the study file being run, notes) is
+// not replaced: before, camopt deleted them with the old result and exited 0. The folder keeps a
+// list of what camopt wrote (.camopt_manifest); only a folder of exactly those files is replaced.
+TEST(Output, UserFilesInAPreviousResultFolderAreNeverDeleted) {
+  const auto dir = TempDir("user-files");
+  const auto out = dir / "res";
+  auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(out / ".camopt_manifest"));
+  // The same study again replaces its own previous result.
+  r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  fs::copy_file(SourcePath("studies/examples/rigidity_gearbox.json"), out / "my_study.json");
+  WriteFile(out / "notes.txt", "x");
+  const std::string before = ReadFile(out / "result.json");
+  r = RunCamopt("run " + (out / "my_study.json").string() + " --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("camopt did not write"), std::string::npos) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(out / "my_study.json"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  EXPECT_EQ(ReadFile(out / "result.json"), before);
+  // A folder of files without the list (the user's, or an older camopt's result) is not replaced.
+  const auto plain = dir / "plain";
+  fs::create_directories(plain);
+  WriteFile(plain / "result.json", "{}");
+  r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + plain.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_EQ(ReadFile(plain / "result.json"), "{}");
+}
+
+// --max-work-factor nan passed the option's range check and switched every cap off; '' as --out
+// wrote to results/<stem>.
+TEST(BadInput, NanWorkFactorAndEmptyOutAreRefused) {
+  const auto dir = TempDir("nan-factor");
+  for (const char* f : {"nan", "inf", "-1", "0", "1e7", "x"}) {
+    SCOPED_TRACE(f);
+    const auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --max-work-factor " +
+                             f + " --out " + (dir / "o").string());
+    EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find("between 1e-6 and 1e6"), std::string::npos) << r.stderr_text;
+    EXPECT_FALSE(fs::exists(dir / "o"));
+  }
+  const auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out ''");
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("--out"), std::string::npos) << r.stderr_text;
+}
+
 // Starts camopt, sends `sig` after `delay_s`, returns (exit code, stderr).
 std::pair<int, std::string> RunAndSignal(const std::vector<std::string>& args, int sig, double delay_s,
                                          const fs::path& err_file) {
