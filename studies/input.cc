@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <sstream>
 
 #include <fcntl.h>
@@ -255,6 +256,13 @@ class CheckingSax {
   bool start_object(size_t) { return Open(false); }
   bool start_array(size_t) { return Open(true); }
   bool key(std::string& k) {
+    // A key given twice: nlohmann keeps the last one silently (a study with "load_torque_Nm": 50
+    // and then 5000 would compute 5000); refuse it with the path.
+    if (!frames_.back().keys.insert(k).second) {
+      frames_.back().key = k;
+      throw StudyError(file_ + ": " + Path() + ": expected each key once in an object, found \"" +
+                       k.substr(0, 40) + "\" a second time; keep one");
+    }
     frames_.back().key = k;
     return true;
   }
@@ -279,6 +287,7 @@ class CheckingSax {
     bool array;
     size_t count = 0;
     std::string key;
+    std::set<std::string> keys;  // of an object, so far
   };
 
   bool Value() {
@@ -289,7 +298,7 @@ class CheckingSax {
     if (static_cast<int>(frames_.size()) >= max_depth_)
       throw StudyError(file_ + ": " + Path() + ": expected at most " + std::to_string(max_depth_) +
                        " levels of nested arrays and objects, found deeper nesting");
-    frames_.push_back(Frame{array, 0, {}});
+    frames_.push_back(Frame{array, 0, {}, {}});
     return true;
   }
   bool Close() {

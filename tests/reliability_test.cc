@@ -228,6 +228,25 @@ TEST(StudyInput, NumberOutOfRangeNamesFileAndPath) {
   ExpectRefusedQuickly("1e400", dir / "s.json", "/load/output_torque_Nm: ", "found 1e400");
 }
 
+// A key given twice was accepted and the last one won (50 N·m written, 5000 computed).
+TEST(StudyInput, DuplicateKeysAreRefusedWithThePath) {
+  try {
+    camopt::studies::ParseStudyText(R"({"load": {"output_torque_Nm": 50, "output_torque_Nm": 5000}})", "s.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /load/output_torque_Nm: expected each key once"), std::string::npos)
+        << e.what();
+  }
+  try {
+    camopt::studies::ParseStudyText(R"({"study": "lcr_analysis", "study": "disc_cam"})", "s.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /study: expected each key once"), std::string::npos) << e.what();
+  }
+  // The same key in two objects is not a duplicate.
+  EXPECT_NO_THROW(camopt::studies::ParseStudyText(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 1}, {"x": 2}]})", "s.json", 64));
+}
+
 TEST(StudyInput, SyntaxErrorGivesLineAndColumn) {
   try {
     camopt::studies::ParseStudyText("{\n  \"a\": 1,\n  \"b\": ]\n}", "s.json", 64);
