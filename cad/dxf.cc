@@ -10,7 +10,13 @@ namespace {
 // Group-code / value writer with a running handle counter.
 class Out {
  public:
-  void Pair(int code, const std::string& value) { os_ << code << "\n" << value << "\n"; }
+  // A value is one line of the file: a line break or another control byte in a user's text (a
+  // study name) would end it and shift every following group, so they become spaces.
+  void Pair(int code, const std::string& value) {
+    os_ << code << "\n";
+    for (char c : value) os_ << (static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c);
+    os_ << "\n";
+  }
   void Pair(int code, int value) { Pair(code, std::to_string(value)); }
   void Num(int code, double value) {
     char buf[40];

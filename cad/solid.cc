@@ -76,12 +76,58 @@ TopoDS_Wire WireOf(const std::vector<ArcSegment>& chain) {
   return wire.Wire();
 }
 
+// The text of a STEP string (ISO 10303-21 §6.4.3, between its apostrophes): an apostrophe and
+// a backslash doubled, control bytes as spaces, and every other non-ASCII character of the UTF-8
+// text as \X2\hhhh\X0\ (UCS-2; a character beyond it, or an invalid byte, as '?').
+std::string StepString(const std::string& text) {
+  std::string out;
+  char buf[8];
+  bool in_x2 = false;
+  auto close_x2 = [&] {
+    if (in_x2) out += "\\X0\\";
+    in_x2 = false;
+  };
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      close_x2();
+      if (c == '\'') out += "''";
+      else if (c == '\\') out += "\\\\";
+      else out += (c < 0x20 || c == 0x7f) ? ' ' : char(c);
+      ++i;
+      continue;
+    }
+    const int n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+    unsigned code = n == 2 ? c & 0x1F : n == 3 ? c & 0x0F : c & 0x07;
+    bool valid = n > 1 && i + n <= text.size();
+    for (int k = 1; valid && k < n; ++k) {
+      const unsigned char d = static_cast<unsigned char>(text[i + k]);
+      valid = (d & 0xC0) == 0x80;
+      code = (code << 6) | (d & 0x3F);
+    }
+    if (!valid || code > 0xFFFF) {
+      close_x2();
+      out += '?';
+      i += valid ? n : 1;
+      continue;
+    }
+    if (!in_x2) out += "\\X2\\", in_x2 = true;
+    std::snprintf(buf, sizeof buf, "%04X", code);
+    out += buf;
+    i += n;
+  }
+  close_x2();
+  return out;
+}
+
 // Writes a shape to STEP AP214 in memory with a fixed time stamp.
-std::string StepOf(const TopoDS_Shape& shape, const std::string& name) {
+std::string StepOf(const TopoDS_Shape& shape, const std::string& raw_name) {
   SilenceOcct();
+  // OCCT gets a plain placeholder; the name enters the text below, encoded as a STEP string.
+  const std::string name = StepString(raw_name);
   Interface_Static::SetCVal("write.step.schema", "AP214IS");
   Interface_Static::SetCVal("write.step.unit", "MM");
-  Interface_Static::SetCVal("write.step.product.name", name.c_str());
+  Interface_Static::SetCVal("write.step.product.name", "camopt part");
   STEPControl_Writer writer;
   if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
     throw std::runtime_error("OCCT: STEP transfer failed");

@@ -49,7 +49,12 @@ std::string BinaryStl(const TriangleMesh& mesh, const std::string& solid_name) {
   return s;
 }
 
-std::string AsciiStl(const TriangleMesh& mesh, const std::string& solid_name) {
+std::string AsciiStl(const TriangleMesh& mesh, const std::string& name) {
+  // "solid NAME" is one line and its name one token for some readers: control bytes and
+  // spaces become '_' (a study name with a line break broke the file).
+  std::string solid_name = name;
+  for (char& c : solid_name)
+    if (static_cast<unsigned char>(c) <= 0x20 || c == 0x7f) c = '_';
   std::ostringstream os;
   char buf[160];
   os << "solid " << solid_name << "\n";

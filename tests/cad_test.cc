@@ -3,6 +3,7 @@
 // and STL files are checked by independent readers in tests/geometry_files_test.py.
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <cstdint>
 #include <cstring>
@@ -222,6 +223,46 @@ TEST(GeometryFiles, LcrIIStepSolidsReadBack) {
     EXPECT_TRUE(g.contains("cutter_path"));
     EXPECT_EQ(out.files().at(stem + ".dxf").find("CUTTER_PATH"), std::string::npos);
   }
+}
+
+// A study name with a line break, apostrophes, a backslash and a non-ASCII letter: it went into
+// the DXF text, the ASCII STL's "solid" line and the STEP strings unescaped (an independent DXF
+// reader failed with "missing ENDSEC"; the apostrophe ended the STEP string).
+TEST(GeometryFiles, AnyStudyNameGivesWellFormedFiles) {
+  json study = Example("lcr_ii.json");
+  study["name"] = "line one\nline 'two' \\ Getriebe \u00fc";
+  study["analysis"]["evaluate"] = {"profile", "undercut"};
+  study["geometry_files"] = {{"stl_format", "ascii"}};
+  const studies::Node root(&study, "lcr_ii.json", "");
+  const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(root);
+  const studies::lcr_analysis::Result res = studies::lcr_analysis::Run(st, {"lcr_ii.json", true});
+  studies::Outputs out;
+  studies::lcr_analysis::Write(st, res, out);
+  const std::string& dxf = out.files().at("input_cam.dxf");
+  // Group codes and values alternate line by line: every odd line is a whole number.
+  std::istringstream in(dxf);
+  std::string code, value;
+  int pairs = 0, sections = 0, ends = 0;
+  while (std::getline(in, code) && std::getline(in, value)) {
+    ASSERT_FALSE(code.empty());
+    char* end = nullptr;
+    std::strtol(code.c_str(), &end, 10);
+    ASSERT_EQ(*end, '\0') << "line pair " << pairs << ": '" << code << "' is not a group code";
+    if (code == "0" && value == "SECTION") ++sections;
+    if (code == "0" && value == "ENDSEC") ++ends;
+    ++pairs;
+  }
+  EXPECT_EQ(sections, ends);
+  EXPECT_GT(sections, 2);
+  EXPECT_NE(dxf.find("line one line 'two'"), std::string::npos);
+  const std::string& stl = out.files().at("input_cam.stl");
+  EXPECT_EQ(stl.substr(0, stl.find('\n')).find(' ', 6), std::string::npos) << "the solid name is one token";
+  EXPECT_EQ(stl.substr(0, 6), "solid ");
+  const std::string& step = out.files().at("input_cam.step");
+  EXPECT_NE(step.find("line one line ''two'' \\\\ Getriebe \\X2\\00FC\\X0\\"), std::string::npos);
+  const cad::StepReadBack back = cad::ReadStep(step);
+  EXPECT_EQ(back.solids, 1);
+  EXPECT_TRUE(back.valid);
 }
 
 TEST(GeometryFiles, LcrCutterPathLayerWhenACutterIsGiven) {
