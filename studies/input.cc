@@ -250,7 +250,17 @@ class CheckingSax {
   bool boolean(bool) { return Value(); }
   bool number_integer(nlohmann::json::number_integer_t) { return Value(); }
   bool number_unsigned(nlohmann::json::number_unsigned_t) { return Value(); }
-  bool number_float(nlohmann::json::number_float_t, const std::string&) { return Value(); }
+  bool number_float(nlohmann::json::number_float_t v, const std::string& raw) {
+    // A literal with a non-zero digit that reads as 0 underflowed (1e-400): say so with its text
+    // rather than letting a later check report "found 0.0".
+    if (v == 0) {
+      const std::string mantissa = raw.substr(0, raw.find_first_of("eE"));
+      if (mantissa.find_first_of("123456789") != std::string::npos)
+        throw StudyError(file_ + ": " + Path() + ": expected a number within the range of a double (" +
+                         "about ±2.2e-308 … ±1.8e308, or 0), found " + raw.substr(0, 40));
+    }
+    return Value();
+  }
   bool string(std::string&) { return Value(); }
   bool binary(nlohmann::json::binary_t&) { return Value(); }
   bool start_object(size_t) { return Open(false); }

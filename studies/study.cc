@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -131,6 +132,9 @@ std::string NotReplaceable(const fs::path& dir) {
   }
   if (ec) return "it cannot be listed: " + ec.message();
   if (names.empty() && !has_manifest) return "";
+  // The swap moves the old folder aside and removes it: a folder the user made read-only would
+  // be swapped out and then left behind under a temporary name.
+  if (access(dir.c_str(), W_OK) != 0) return "it is read-only";
   if (!has_manifest) return "it holds files and no " + std::string(kManifest) + " list of a camopt result";
   std::ifstream in(dir / kManifest);
   std::set<std::string> listed;
@@ -138,6 +142,28 @@ std::string NotReplaceable(const fs::path& dir) {
   for (const std::string& n : names)
     if (!listed.count(n)) return "it holds " + n + ", which camopt did not write";
   return "";
+}
+
+// Sibling folders `<dir>.camopt-tmp-<pid>` / `.camopt-old-<pid>` of runs that were killed
+// (SIGKILL leaves them: no handler runs) are removed when their process no longer exists.
+void RemoveStaleTemporaries(const fs::path& dir) {
+  const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
+  const std::string stem = dir.filename().string();
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(parent, ec)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* tag : {".camopt-tmp-", ".camopt-old-"}) {
+      const std::string prefix = stem + tag;
+      if (name.rfind(prefix, 0) != 0) continue;
+      const std::string digits = name.substr(prefix.size());
+      if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+      const pid_t pid = static_cast<pid_t>(std::stol(digits));
+      if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) {
+        std::error_code rm;
+        fs::remove_all(entry.path(), rm);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -148,8 +174,13 @@ OutputFolder::OutputFolder(const std::string& dir) {
   if (out.empty() || out == "." || out == ".." || out == "/" || out.filename() == "..")
     throw StudyError("--out " + dir + ": expected a folder name for the results, found " +
                      (dir.empty() ? std::string("nothing") : dir));
-  dir_ = out.string();
+  // A symbolic link to a folder: the results go to the folder it names (a rename onto the link
+  // would fail, "not a folder").
   struct stat st {};
+  std::error_code link_ec;
+  if (lstat(out.c_str(), &st) == 0 && S_ISLNK(st.st_mode) && fs::is_directory(out, link_ec))
+    out = fs::canonical(out, link_ec);
+  dir_ = out.string();
   if (lstat(dir_.c_str(), &st) == 0) {
     if (!S_ISDIR(st.st_mode))
       throw StudyError("--out " + dir + ": exists and is not a folder");
@@ -164,6 +195,7 @@ OutputFolder::OutputFolder(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(parent, ec);
   if (ec) throw StudyError("--out " + dir + ": cannot create " + parent.string() + ": " + ec.message());
+  RemoveStaleTemporaries(out);
   const std::string tmp = dir_ + ".camopt-tmp-" + std::to_string(getpid());
   fs::remove_all(tmp, ec);  // left by an earlier process with the same id
   if (mkdir(tmp.c_str(), 0755) != 0) OutputFail("cannot create a folder next to it", dir, errno);

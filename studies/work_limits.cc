@@ -276,7 +276,8 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   // (about 30 units at 20 slices, a slices solve costing ∝ N³) and the best design's verification
   // (half_space solves on the grid and on twice it each way: ≈ 40 units at 48×128).
   const json& opt = Sub(s, "optimizer");
-  const double samples = std::max(Size(opt, "samples_per_period", 24), 4.0);
+  // Values outside what the parser accepts are counted at its bound: the parser's message names them.
+  const double samples = std::clamp(Size(opt, "samples_per_period", 24), 4.0, 720.0);
   const double per_start = 0.5 + 0.5 * samples / 24.0;
   const double combos = lobes * n_diffs * rollers;
   std::vector<Term> terms = {{combos * starts * per_start, "/search/max_lobes",
@@ -288,7 +289,7 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   const bool three_d = (model.is_string() && model.get<std::string>() != "line") ||
                        Sub(Sub(s, "fixed"), "crowning").is_object();
   if (three_d) {
-    const double slices = std::max(Size(contact, "slices", 40), 4.0);
+    const double slices = std::clamp(Size(contact, "slices", 40), 4.0, 200.0);
     terms.push_back({combos * 30 * std::pow(slices / 20.0, 3), "/contact/slices",
                      Num(combos) + " candidates × 3D polish with " + Num(slices) + " slices"});
     const double cells = GridCellsOr(Sub(contact, "grid"), 64.0 * 256.0);

@@ -447,6 +447,55 @@ TEST(Output, UserFilesInAPreviousResultFolderAreNeverDeleted) {
   EXPECT_EQ(ReadFile(plain / "result.json"), "{}");
 }
 
+// SIGKILL leaves OUT.camopt-tmp-PID behind (no handler runs); the next run into OUT removes
+// those whose process is gone. --out through a symbolic link to a folder writes into that folder.
+TEST(Output, StaleTemporaryFoldersGoAndASymlinkedOutFolderIsUsed) {
+  const auto dir = TempDir("stale-tmp");
+  const pid_t gone = 4194303;  // above Linux's default pid_max (4194304) minus one: no such process here
+  ASSERT_NE(kill(gone, 0), 0);
+  fs::create_directories(dir / ("out.camopt-tmp-" + std::to_string(gone)));
+  fs::create_directories(dir / "out.camopt-tmp-notapid");
+  auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / ("out.camopt-tmp-" + std::to_string(gone))));
+  EXPECT_TRUE(fs::exists(dir / "out.camopt-tmp-notapid")) << "only folders named by a process id are camopt's";
+  fs::create_directories(dir / "real");
+  fs::create_directory_symlink(dir / "real", dir / "link");
+  r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + (dir / "link").string() + "/");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(dir / "real" / "result.json"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link"));
+}
+
+// A previous result the user made read-only is not replaced (it was swapped out and left behind
+// as a temporary folder). Root may write anywhere, so the case does not arise for root.
+TEST(Output, AReadOnlyPreviousResultIsNotReplaced) {
+  if (geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders: nothing is left behind";
+  const auto dir = TempDir("read-only");
+  const auto out = dir / "out";
+  auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  fs::permissions(out, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write, fs::perm_options::remove);
+  r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("read-only"), std::string::npos) << r.stderr_text;
+  fs::permissions(out, fs::perms::owner_write, fs::perm_options::add);
+  EXPECT_TRUE(Leftovers(dir).empty());
+}
+
+// A literal that underflows to 0 is reported with its own text (before: "found 0.0" later on).
+TEST(StudyInput, AnUnderflowingNumberIsReportedWithItsText) {
+  try {
+    camopt::studies::ParseStudyText(R"({"load": {"output_torque_Nm": 1e-400}})", "s.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /load/output_torque_Nm: expected a number within the range of a double"),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("found 1e-400"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(camopt::studies::ParseStudyText(R"({"a": 0.0, "b": 0e5, "c": -0.000})", "s.json", 64));
+}
+
 // --max-work-factor nan passed the option's range check and switched every cap off; '' as --out
 // wrote to results/<stem>.
 TEST(BadInput, NanWorkFactorAndEmptyOutAreRefused) {
