@@ -375,6 +375,12 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   }
   if (q.forces) {
     j["fixed_turret_torque_Nm"] = res.fixed_turret_torque_Nm;
+    // The paper's force model: the roller forces are frictionless and the friction enters the input
+    // torque only (T_in = (F_t + μ F_r) e), so the three members' torques balance without it.
+    if (st.load.friction_coefficient > 0)
+      j["fixed_turret_torque_model"] =
+          "from the frictionless roller forces (the paper's model): the friction moment of the input torque is "
+          "not in it, so input, output and fixed-turret torques balance only up to the friction terms";
     j["output_torque_Nm"] = st.load.output_torque_Nmm / 1000.0;
     if (q.efficiency) {
       j["input_torque_Nm"] = {{"mean", res.input_torque_mean_Nm},

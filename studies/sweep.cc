@@ -19,6 +19,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <boost/random/sobol.hpp>
@@ -663,6 +664,35 @@ int DefaultJobs(int local_ranks) {
   return std::max(1, static_cast<int>(cores) / std::max(1, local_ranks));
 }
 
+// An advisory lock (flock) on `<out>.camopt-sweep-lock`, held while a sweep runs into out; the
+// file goes when the sweep ends. A killed sweep's lock is released by the kernel.
+class SweepLock {
+ public:
+  SweepLock() = default;
+  SweepLock(const SweepLock&) = delete;
+  SweepLock& operator=(const SweepLock&) = delete;
+  ~SweepLock() {
+    if (fd_ < 0) return;
+    ::unlink(path_.c_str());
+    ::close(fd_);
+  }
+  void Take(const fs::path& out, const std::string& given) {
+    path_ = out.string() + ".camopt-sweep-lock";
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw StudyError("--out " + given + ": cannot create the lock " + path_ + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+      throw StudyError("--out " + given + ": another sweep is running into this folder (it holds " + path_ +
+                       "); wait for it to end or choose another folder");
+    }
+  }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
+
 // The merged folder: written into the partial folder, which then replaces --out in one rename.
 void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
                  std::vector<CaseRecord> records, const fs::path& partial, const fs::path& out,
@@ -701,10 +731,12 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
     summary["pareto_front_cases"] = front_cases;
   }
   outputs.AddJson("result.json", summary);
+  // The merged files first: when they cannot be written (a full disk) the checkpoints stay and
+  // --resume finds every case done. Removing the checkpoints and the rename need no space.
+  WriteFilesInto(partial.string(), outputs);
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(partial, ec))
     if (e.path().filename().string().rfind("checkpoint-", 0) == 0) fs::remove(e.path(), ec);
-  WriteFilesInto(partial.string(), outputs);
   MoveFolderIn(partial.string(), out.string());
 }
 
@@ -745,12 +777,16 @@ int Run(const Options& o, World& world) {
                                                   std::to_string(world.size()) + ")"
                                             : "");
 
-  // Rank 0 prepares the partial folder and reads what an earlier run finished.
+  // Rank 0 prepares the partial folder and reads what an earlier run finished, holding a lock
+  // beside --out for the whole sweep: a second sweep into the same folder would delete the
+  // first one's partial folder.
   std::map<size_t, CaseRecord> done;
   int status = 0;
   std::string message;
+  SweepLock lock;
   if (world.rank() == 0) {
     try {
+      lock.Take(out, o.out);
       std::error_code ec;
       const bool had_partial = fs::exists(partial, ec);
       if (had_partial && !o.resume) {

@@ -360,6 +360,44 @@ int CheckpointedCases(const fs::path& partial) {
   return n;
 }
 
+// Two sweeps into the same --out: the second one deleted the first's partial folder and one of
+// them ended with a confusing error. Now the second is refused at once while the first runs.
+TEST(SweepRun, ASecondSweepIntoTheSameFolderIsRefusedWhileTheFirstRuns) {
+  const auto dir = TempDir("sweep-lock");
+  json s = CycloidSweep({100, 200, 300, 400}, {0.001, 0.005, 0.02});
+  s["base"]["analysis"] = {{"crank_angle_steps", 12}, {"grid", {16, 16}}};
+  WriteFile(dir / "s.json", s.dump());
+  const std::string sweep = (dir / "s.json").string();
+  const auto out = dir / "out";
+  std::string bin = CAMOPT_BINARY;
+  std::vector<std::string> args = {bin, "sweep", sweep, "--quiet", "--jobs", "1", "--out", out.string()};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  const fs::path partial = out.string() + ".camopt-sweep";
+  int status = 0;
+  bool exited = false;
+  for (int k = 0; k < 6000 && CheckpointedCases(partial) < 1; ++k) {
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      break;
+    }
+    usleep(5000);
+  }
+  ASSERT_FALSE(exited) << "the first sweep ended before the second could start";
+  const auto second = RunCamopt("sweep " + sweep + " --quiet --jobs 1 --out " + out.string());
+  EXPECT_EQ(second.exit_code, 2) << second.stderr_text;
+  EXPECT_NE(second.stderr_text.find("another sweep is running"), std::string::npos) << second.stderr_text;
+  EXPECT_TRUE(fs::exists(partial)) << "the first sweep's partial folder stays";
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the first sweep finishes";
+  EXPECT_TRUE(fs::exists(out / "cases.csv"));
+  EXPECT_FALSE(fs::exists(out.string() + ".camopt-sweep-lock"));
+}
+
 TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
   const auto dir = TempDir("sweep-resume");
   // 12 cases (4 torques x 3 tolerances): enough to interrupt after 3 and leave most undone.
