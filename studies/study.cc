@@ -244,10 +244,18 @@ void MoveFolderIn(const std::string& tmp, const std::string& dir) {
 
 void OutputFolder::Commit(const Outputs& outputs) {
   std::lock_guard<std::mutex> lock(OutputMutex());
-  WriteFilesInto(tmp_, outputs);
   std::string manifest;
   for (const auto& [name, content] : outputs.files()) manifest += name + "\n";
-  WriteWholeFile((fs::path(tmp_) / kManifest).string(), manifest);
+  try {
+    WriteFilesInto(tmp_, outputs);
+    WriteWholeFile((fs::path(tmp_) / kManifest).string(), manifest);
+  } catch (const StudyError& e) {
+    // The message names the folder the user gave, not the temporary sibling (a full disk, a quota).
+    std::string m = e.what();
+    for (size_t at = m.find(tmp_); at != std::string::npos; at = m.find(tmp_, at + dir_.size()))
+      m.replace(at, tmp_.size(), dir_);
+    throw StudyError(m);
+  }
   // Checked again at the swap: files a user added to the folder while the study ran are theirs.
   struct stat st {};
   if (lstat(dir_.c_str(), &st) == 0) {

@@ -483,6 +483,25 @@ TEST(Output, AReadOnlyPreviousResultIsNotReplaced) {
   EXPECT_TRUE(Leftovers(dir).empty());
 }
 
+// A file that cannot be written (here: over the process's file-size limit, as on a full disk)
+// is reported under the folder the user gave, not the temporary sibling, and nothing is left.
+TEST(Output, AWriteErrorNamesTheOutFolder) {
+  const auto dir = TempDir("write-error");
+  const auto out = dir / "out";
+  // result.json and report.html of this study are over 4 KiB.
+  const std::string cmd = "bash -c 'trap \"\" XFSZ; ulimit -f 4; " + std::string(CAMOPT_BINARY) + " run " +
+                          SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string() + "' 2> " +
+                          (dir / "err.txt").string();
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string err = ReadFile(dir / "err.txt");
+  EXPECT_NE(err.find("--out " + out.string() + "/"), std::string::npos) << err;
+  EXPECT_EQ(err.find(".camopt-tmp-"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(Leftovers(dir).empty());
+}
+
 // A literal that underflows to 0 is reported with its own text (before: "found 0.0" later on).
 TEST(StudyInput, AnUnderflowingNumberIsReportedWithItsText) {
   try {
