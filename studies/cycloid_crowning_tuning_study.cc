@@ -369,7 +369,7 @@ Result RunJoint(const Study& s, const RunContext& ctx) {
   options.stall_iterations = 3;
   options.stall_violation = 2.0;  // µm of end distance (the β0 rows, arcsec, stay far inside it)
   // The epigraph has one row per (angle, roller), 96 on the paper's drive, each with a barrier
-  // term that pushes t up: with Ipopt's default barrier (adaptive, about 1 at the start) t went
+  // term that pushes t up: with Ipopt's own barrier settings (mu about 1 at the start) t went
   // to 5900 MPa before coming back, and the start, 0.09 arcsec inside the β0 bound, was pushed
   // off it. A small fixed initial barrier and a start kept at its bounds (docs/cycloid.md, the
   // measured comparison) let it start from where the design is.
@@ -384,6 +384,10 @@ Result RunJoint(const Study& s, const RunContext& ctx) {
   // The best feasible design the optimizer evaluated (smooth stress; feasible within the
   // constraint tolerance: 0.01 µm of end distance, 1e-3 arcsec), else the one with the largest
   // margin.
+  // The objective the optimizer saw: the exact maximum (epigraph) or the soft-max.
+  auto objective = [&](const objectives::TuningEvaluation& e) {
+    return spec.epigraph ? e.stress_MPa : e.smooth_stress_MPa;
+  };
   const objectives::TuningEvaluation* best = nullptr;
   const objectives::TuningEvaluation* widest = nullptr;
   for (const auto& e : r.joint_history) {
@@ -392,9 +396,7 @@ Result RunJoint(const Study& s, const RunContext& ctx) {
     const bool ok = e.converged && e.edge_margin_um >= s.required_edge_margin_um - 0.01 &&
                     e.lte_peak_to_peak_arcsec <= s.max_lte_peak_to_peak_arcsec + 1e-3 &&
                     te >= s.min_unloaded_te_arcsec - 1e-3;
-    // The objective the optimizer saw: the exact maximum (epigraph) or the soft-max.
-    const double objective = s.backend != "cobyla" ? e.stress_MPa : e.smooth_stress_MPa;
-    if (ok && (!best || objective < (s.backend != "cobyla" ? best->stress_MPa : best->smooth_stress_MPa))) best = &e;
+    if (ok && (!best || objective(e) < objective(*best))) best = &e;
   }
   r.feasible = best != nullptr;
   r.joint_best = best ? *best : widest ? *widest : model.Evaluate(start, false);
