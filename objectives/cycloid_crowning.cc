@@ -234,6 +234,10 @@ TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool
   e.max_pair_load_N = dc.max_pair_load_N;
   e.pairs = dc.max_pairs_in_contact;
   e.converged = dc.converged && mc.converged;
+  const size_t n1 = size_t(drive_.rollers);
+  e.pair_peak_MPa.assign(dc.meshes.size() * n1, 0.0);
+  for (size_t k = 0; k < dc.meshes.size(); ++k)
+    for (const cycloid::PairLoad& p : dc.meshes[k].pairs) e.pair_peak_MPa[k * n1 + size_t(p.roller)] = p.max_pressure_MPa;
   if (!with_gradient) return e;
   ++gradient_evaluations_;
   const size_t nv = variables_.size(), na = angles_.size();
@@ -251,7 +255,12 @@ TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool
   e.d_lte.resize(nv);
   e.d_end_distance.assign(na * nv, 0.0);
   e.d_unloaded_te.assign(na * nv, 0.0);
+  e.d_pair_peak.assign(na * n1 * nv, 0.0);
   for (size_t j = 0; j < nv; ++j) {
+    for (size_t k = 0; k < na; ++k)
+      for (size_t i = 0; i < dc.meshes[k].pairs.size(); ++i)
+        e.d_pair_peak[(k * n1 + size_t(dc.meshes[k].pairs[i].roller)) * nv + j] =
+            dd[j].pair_max_pressure_MPa[k][i] * factor[j];
     // coefficient_mm is clamped at 0 (Design): its derivative is the one-sided one above 0.
     e.d_smooth_stress[j] = dd[j].smooth_peak_MPa * factor[j];
     e.d_stress[j] = dd[j].max_pressure_MPa * factor[j];
@@ -267,44 +276,64 @@ TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool
 
 namespace {
 
+// Outputs: [objective][end distance per angle][LTE p-p][β0 per angle] and, in the epigraph
+// form, [pair peak − t per (angle, roller)] after them; x = [model variables][t (epigraph)].
 class TuningEvaluator final : public Evaluator {
  public:
-  TuningEvaluator(CycloidTuningModel& model, std::function<void(const TuningEvaluation&)> on_evaluation)
-      : Evaluator(int(model.variables().size()),
-                  {{kTuningSmoothStress, 0, 1},
-                   {kTuningEndDistance, 1, int(model.crank_angles().size())},
-                   {kTuningLte, 1 + int(model.crank_angles().size()), 1},
-                   {kTuningBacklash, 2 + int(model.crank_angles().size()), int(model.crank_angles().size())}}),
+  TuningEvaluator(CycloidTuningModel& model, bool epigraph,
+                  std::function<void(const TuningEvaluation&)> on_evaluation)
+      : Evaluator(int(model.variables().size()) + (epigraph ? 1 : 0), Blocks(model, epigraph)),
         model_(model),
+        epigraph_(epigraph),
         on_evaluation_(std::move(on_evaluation)) {}
 
  protected:
   void DoEval(std::span<const double> x, std::span<double> y) const override {
-    Fill(Get(x, false), y);
+    Fill(Get(x, false), x, y);
   }
   void DoEvalWithJacobian(std::span<const double> x, std::span<double> y,
                           std::span<double> jacobian) const override {
     const TuningEvaluation& e = Get(x, true);
-    Fill(e, y);
-    const size_t nv = size_t(num_vars()), na = e.end_distance_um.size();
+    Fill(e, x, y);
+    const size_t n = size_t(num_vars()), nv = model_.variables().size(), na = e.end_distance_um.size();
+    std::fill(jacobian.begin(), jacobian.end(), 0.0);
     for (size_t j = 0; j < nv; ++j) {
-      jacobian[j] = e.d_smooth_stress[j];
-      for (size_t k = 0; k < na; ++k) jacobian[(1 + k) * nv + j] = e.d_end_distance[k * nv + j];
-      jacobian[(1 + na) * nv + j] = e.d_lte[j];
-      for (size_t k = 0; k < na; ++k) jacobian[(2 + na + k) * nv + j] = e.d_unloaded_te[k * nv + j];
+      jacobian[j] = epigraph_ ? 0.0 : e.d_smooth_stress[j];
+      for (size_t k = 0; k < na; ++k) jacobian[(1 + k) * n + j] = e.d_end_distance[k * nv + j];
+      jacobian[(1 + na) * n + j] = e.d_lte[j];
+      for (size_t k = 0; k < na; ++k) jacobian[(2 + na + k) * n + j] = e.d_unloaded_te[k * nv + j];
+    }
+    if (!epigraph_) return;
+    jacobian[nv] = 1.0;  // d t / d t
+    const size_t first = 2 + 2 * na;
+    for (size_t s = 0; s < e.pair_peak_MPa.size(); ++s) {
+      for (size_t j = 0; j < nv; ++j) jacobian[(first + s) * n + j] = e.d_pair_peak[s * nv + j];
+      jacobian[(first + s) * n + nv] = -1.0;
     }
   }
 
  private:
-  static void Fill(const TuningEvaluation& e, std::span<double> y) {
-    y[0] = e.smooth_stress_MPa;
+  static std::vector<OutputBlock> Blocks(const CycloidTuningModel& model, bool epigraph) {
+    const int na = int(model.crank_angles().size());
+    std::vector<OutputBlock> b = {{epigraph ? kTuningPeakBound : kTuningSmoothStress, 0, 1},
+                                  {kTuningEndDistance, 1, na},
+                                  {kTuningLte, 1 + na, 1},
+                                  {kTuningBacklash, 2 + na, na}};
+    if (epigraph) b.push_back({kTuningStressExcess, 2 + 2 * na, na * model.drive().rollers});
+    return b;
+  }
+  void Fill(const TuningEvaluation& e, std::span<const double> x, std::span<double> y) const {
+    const size_t nv = model_.variables().size();
+    y[0] = epigraph_ ? x[nv] : e.smooth_stress_MPa;
     for (size_t k = 0; k < e.end_distance_um.size(); ++k) y[1 + k] = e.end_distance_um[k];
     const size_t na = e.end_distance_um.size();
     y[1 + na] = e.lte_peak_to_peak_arcsec;
     for (size_t k = 0; k < na; ++k) y[2 + na + k] = e.unloaded_te_arcsec[k];
+    if (epigraph_)
+      for (size_t s = 0; s < e.pair_peak_MPa.size(); ++s) y[2 + 2 * na + s] = e.pair_peak_MPa[s] - x[nv];
   }
   const TuningEvaluation& Get(std::span<const double> x, bool gradient) const {
-    const std::vector<double> key(x.begin(), x.end());
+    const std::vector<double> key(x.begin(), x.begin() + std::ptrdiff_t(model_.variables().size()));
     for (const auto& m : memory_)
       if (m.x == key && (!gradient || !m.d_smooth_stress.empty())) return m;
     memory_.push_back(model_.Evaluate(key, gradient));
@@ -313,6 +342,7 @@ class TuningEvaluator final : public Evaluator {
   }
 
   CycloidTuningModel& model_;
+  bool epigraph_;
   std::function<void(const TuningEvaluation&)> on_evaluation_;
   mutable std::deque<TuningEvaluation> memory_;
 };
@@ -325,9 +355,13 @@ Problem CycloidTuningProblem(CycloidTuningModel& model, const CycloidTuningSpec&
     throw std::invalid_argument("CycloidTuningProblem: one variable per model variable");
   Problem p;
   p.variables = spec.variables;
-  p.evaluator = std::make_unique<TuningEvaluator>(model, std::move(on_evaluation));
-  p.objective = kTuningSmoothStress;
+  p.evaluator = std::make_unique<TuningEvaluator>(model, spec.epigraph, std::move(on_evaluation));
+  p.objective = spec.epigraph ? kTuningPeakBound : kTuningSmoothStress;
   p.objective_scale = spec.stress_scale_MPa;
+  if (spec.epigraph) {
+    p.variables.push_back({kTuningPeakBound, 0.0, kInf, spec.initial_peak_bound_MPa, spec.stress_scale_MPa});
+    p.constraints.push_back({kTuningStressExcess, -kInf, 0.0, spec.stress_scale_MPa});
+  }
   p.constraints.push_back({kTuningEndDistance, spec.required_end_distance_um, kInf, 10.0});
   if (std::isfinite(spec.min_unloaded_te_arcsec))
     p.constraints.push_back({kTuningBacklash, spec.min_unloaded_te_arcsec, kInf, 1.0});

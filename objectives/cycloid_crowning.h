@@ -112,12 +112,25 @@ namespace camopt::objectives {
 //                        the stress is lowest for a tooth fuller than the rollers' envelope).
 // Values and exact first derivatives (implicit differentiation at the converged states,
 // cycloid::DifferentiateCycle): value-only solvers (COBYLA) run DoEval only.
+//
+// Epigraph form (CycloidTuningSpec::epigraph, for the gradient solvers): the peak over crank
+// angles and contact cells is non-smooth and its soft-max with a small temperature is stiff, so
+// gradient methods stall on it. Instead the problem gets one more variable t (kTuningPeakBound,
+// MPa, scaled by stress_scale_MPa) and minimises t subject to
+//   kTuningStressExcess  p_(k,r) − t <= 0 for every crank angle k of the design cycle and every
+//                        roller r (angle-major, n1 rows per angle): the peak pressure of roller
+//                        r's pair at angle k (0 when it carries no load), with its exact gradient
+//                        (peak cell frozen, cycloid::CycleDerivative::pair_max_pressure_MPa).
+// Every row is smooth where the pair's peak cell stays put; at the optimum t is the exact maximum
+// over the samples.
 // ---------------------------------------------------------------------------------------------
 
 inline constexpr const char* kTuningSmoothStress = "smooth_max_contact_stress_MPa";
 inline constexpr const char* kTuningEndDistance = "end_distance_at_max_torque_um";
 inline constexpr const char* kTuningLte = "lte_peak_to_peak_arcsec";
 inline constexpr const char* kTuningBacklash = "unloaded_te_arcsec";
+inline constexpr const char* kTuningPeakBound = "peak_stress_bound_MPa";
+inline constexpr const char* kTuningStressExcess = "pair_peak_minus_bound_MPa";
 
 /// Field names a tuning variable may have (per crowning type: see TuningVariableAllowed).
 std::vector<std::string> TuningVariableNames();
@@ -139,6 +152,10 @@ struct TuningEvaluation {
   /// With gradients: d/dx of smooth stress, exact stress, LTE p-p (per variable), and of the end
   /// distance per angle (angle-major: [angle][variable]).
   std::vector<double> d_smooth_stress, d_stress, d_lte, d_end_distance, d_unloaded_te;
+  /// The peak pressure of every (angle, roller) of the design cycle [MPa], angle-major (n1 per
+  /// angle; 0 when the roller's pair carries no load), and with gradients its derivatives
+  /// ([sample][variable]).
+  std::vector<double> pair_peak_MPa, d_pair_peak;
 };
 
 /// The two mesh cycles of the joint tuning (design and maximum torque) over the same crank angles.
@@ -158,6 +175,7 @@ class CycloidTuningModel {
   std::pair<cycloid::Drive, cycloid::Crowning> Design(const std::vector<double>& x) const;
   const std::vector<std::string>& variables() const { return variables_; }
   const std::vector<double>& crank_angles() const { return angles_; }
+  const cycloid::Drive& drive() const { return drive_; }
   /// Cycle runs (each both torques) and derivative runs.
   int evaluations() const { return evaluations_; }
   int gradient_evaluations() const { return gradient_evaluations_; }
@@ -182,9 +200,13 @@ struct CycloidTuningSpec {
   double max_lte_peak_to_peak_arcsec = kInf;  ///< LTE p-p <= this (kInf: unbounded)
   double min_unloaded_te_arcsec = 0;     ///< every angle's β0 >= this (-kInf: unbounded)
   double stress_scale_MPa = 1000;
+  /// The epigraph form (above): variable kTuningPeakBound appended to `variables`, starting at
+  /// initial_peak_bound_MPa (e.g. the start design's exact maximum).
+  bool epigraph = false;
+  double initial_peak_bound_MPa = 0;
 };
 
-/// Minimise kTuningSmoothStress subject to kTuningEndDistance >= required (per angle),
+/// Minimise kTuningSmoothStress (epigraph: kTuningPeakBound subject to kTuningStressExcess <= 0) subject to kTuningEndDistance >= required (per angle),
 /// kTuningBacklash >= min (per angle, when finite) and, when bounded, kTuningLte <= max. Each distinct point runs once per kind (values / gradients; a
 /// gradient run also answers values); on_evaluation is called after each model run.
 Problem CycloidTuningProblem(CycloidTuningModel& model, const CycloidTuningSpec& spec,

@@ -163,10 +163,21 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
   app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_evaluations);
   app->Options()->SetNumericValue("max_cpu_time", options.max_seconds);
+  // A start near the optimum (warm start): a small fixed initial barrier, and the start kept
+  // close to its bounds instead of pushed into the interior.
+  if (options.barrier_initial > 0) {
+    app->Options()->SetStringValue("mu_strategy", "monotone");
+    app->Options()->SetNumericValue("mu_init", options.barrier_initial);
+  }
+  if (options.bound_push > 0) {
+    app->Options()->SetNumericValue("bound_push", options.bound_push);
+    app->Options()->SetNumericValue("bound_frac", options.bound_push);
+  }
   if (options.stall_iterations > 0) {
     app->Options()->SetIntegerValue("acceptable_iter", options.stall_iterations);
     app->Options()->SetNumericValue("acceptable_tol", 1e19);           // optimality error: not tested
     app->Options()->SetNumericValue("acceptable_dual_inf_tol", 1e19);  // (it jumps at a kink)
+    app->Options()->SetNumericValue("acceptable_compl_inf_tol", 1e19);  // (part of optimality)
     app->Options()->SetNumericValue(
         "acceptable_constr_viol_tol",
         options.stall_violation > 0 ? options.stall_violation : options.constraint_tolerance);

@@ -38,6 +38,13 @@ struct SolverOptions {
   /// The stall test's constraint violation (largest over the rows, in the rows' own units, as
   /// Ipopt measures it): the model's noise level on the constraints. <= 0: constraint_tolerance.
   double stall_violation = 0;
+  /// Ipopt's initial barrier parameter (mu_init, with the monotone barrier update); <= 0: Ipopt's
+  /// defaults (adaptive update). A small value suits a start close to an active constraint or
+  /// to many epigraph rows at once, which the default barrier pushes far away first. NLopt ignores it.
+  double barrier_initial = 0;
+  /// Ipopt's bound_push and bound_frac (how far the start is moved into the interior of its
+  /// bounds and constraint slacks); <= 0: Ipopt's default (1e-2). NLopt ignores it.
+  double bound_push = 0;
   /// Starting point (unscaled); empty: the variables' own initial values. Clamped to the bounds.
   std::vector<double> initial;
   /// When the backend stops at its iteration limit (or stalls infeasible), its last point is

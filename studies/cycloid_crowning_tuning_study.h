@@ -5,8 +5,14 @@
 // Method. The mesh repeats every 2π/n1 of crank angle (up to a relabelling of the rollers), so one
 // mesh period sampled uniformly stands for the cycle. A scan of f over its bounds gives the
 // stress-versus-f curve; COBYLA (bounded, derivative-free, inequality constraints handled directly;
-// optimizers/ through NLopt) then refines from the best feasible point of the scan. The problem is
-// objectives/cycloid_crowning.h.
+// optimizers/ through NLopt) then refines from the best feasible point of the scan. The general
+// form ("variables") gives Ipopt and SLSQP the epigraph of the peak (minimise t with every
+// (angle, roller) peak <= t, exact gradients), COBYLA the soft-max. The problems are
+// objectives/cycloid_crowning.h. After the optimizer, the tuned design is verified
+// (objectives/verification.h): re-evaluated at twice the crank angles on a grid with twice the
+// cells, the edge margin's limit re-checked within its estimated error, the fast model's required
+// margin raised and the problem solved again while it does not hold (kVerificationRounds); the
+// reported stress and margin are the accurate values.
 #pragma once
 
 #include <string>
@@ -16,6 +22,7 @@
 
 #include "model/cycloid/loaded_tca.h"
 #include "objectives/cycloid_crowning.h"
+#include "objectives/verification.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -52,6 +59,12 @@ struct Study {
   double min_unloaded_te_arcsec = 0;
 };
 
+/// Rounds of the verified-optimum loop (objectives/verification.h): how often the fast model's
+/// required edge margin may be raised and the problem solved again.
+inline constexpr int kVerificationRounds = 3;
+/// Added to the measured excess when the fast model's required edge margin is raised [µm].
+inline constexpr double kMarginStepUm = 0.5;
+
 struct Result {
   std::vector<objectives::CrowningEvaluation> curve;    ///< the scan (L = length_lo_mm)
   std::vector<objectives::CrowningEvaluation> history;  ///< the optimizer's evaluations, in order
@@ -71,8 +84,15 @@ struct Result {
   /// The general form: the optimizer's evaluations in order and the best one.
   std::vector<objectives::TuningEvaluation> joint_history;
   objectives::TuningEvaluation joint_best;
-  /// Discretisation error of the tuned point's outputs (grid and crank-angle sampling), by name.
+  /// Discretisation error of the reported (accurate) tuned stress and edge margin, by name.
   std::vector<std::pair<std::string, double>> estimated_error;
+  /// The tuned design (drive with its modifications, crowning).
+  cycloid::Drive tuned_drive;
+  cycloid::Crowning tuned_crowning;
+  /// The fast model's (the optimizer's) values at the tuned design; `best` holds the accurate ones.
+  double fast_stress_MPa = 0, fast_edge_margin_um = 0;
+  double accurate_lte_peak_to_peak_arcsec = 0;
+  objectives::Verification verification;
   std::vector<std::string> warnings;
 };
 

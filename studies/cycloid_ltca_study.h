@@ -31,7 +31,9 @@ struct Study {
   /// Uniform samples of one mesh period 2π/n1 (0 when the file gives crank_angle_steps or
   /// crank_angles_deg instead).
   int crank_angles_per_mesh_period = 0;
-  bool estimate_error = true;  ///< analysis.estimate_error: the coarse-grid run and the differences
+  /// analysis.estimate_error: the refinement runs (the half-step-shifted crank angles, whose union
+  /// with the study's angles is the doubled set reported, and the coarse grid) and the errors.
+  bool estimate_error = true;
   /// analysis.evaluate: false when only the unloaded TCA is asked (["unloaded"]): no material, load
   /// or contact solves; the loaded stage ("loaded", the default) includes the unloaded one.
   bool loaded = true;
@@ -41,6 +43,9 @@ struct Study {
 
 /// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
 inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 32;
+/// Largest factor on |v(N) − v(2N)| in the crank-angle error (no shrinking of the differences
+/// observed); the smallest is 1 (docs/cycloid.md, "Estimated error").
+inline constexpr double kMaxTailFactor = 4.0;
 /// A headline output whose estimated error exceeds this share of its value gets a warning.
 inline constexpr double kErrorShare = 0.05;
 
@@ -50,7 +55,10 @@ inline constexpr double kLooseTolerance = 0.1;
 inline constexpr double kToleranceShare = 0.05;
 
 struct Result {
-  cycloid::CycleResult cycle;   ///< per angle (meshes) and over the cycle
+  /// Per angle (meshes) and over the cycle, at crank_angles_rad: the study's angles, or their
+  /// union with the half-step-shifted set (twice as many) when the crank angles were refined.
+  cycloid::CycleResult cycle;
+  std::vector<double> crank_angles_rad;  ///< the angles of `cycle` (and of the per-angle outputs)
   double composite_modulus_MPa = 0;
   /// Unloaded backlash [arcsec] per roller (outer index) and crank angle; −1 off the loaded flank.
   std::vector<std::vector<double>> backlash_arcsec;
@@ -59,7 +67,9 @@ struct Result {
   /// the sum of the grid and crank-angle parts; empty when not estimated.
   std::vector<std::pair<std::string, double>> estimated_error, error_grid, error_crank;
   std::array<int, 2> coarse_grid{0, 0};  ///< the grid of the error run
-  int crank_error_angles = 0;            ///< angles of the coarser sampling (0: not estimated)
+  /// Angles of the coarser sampling the crank-angle error compares with (the study's own, when
+  /// the reported cycle is the doubled set); 0: not estimated.
+  int crank_error_angles = 0;
   std::vector<std::string> warnings;     ///< headline errors above kErrorShare, and the like
   std::vector<double> unloaded_te_arcsec;    ///< β0 per crank angle (both stages)
   std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]

@@ -473,23 +473,52 @@ TEST(CycloidStudies, LtcaSamplesOneMeshPeriodAndEstimatesItsErrors) {
   ASSERT_EQ(s.crank_angles_rad.size(), 8u);
   EXPECT_NEAR(s.crank_angles_rad[1], 2 * kPi / 16 / 8, 1e-15);
   const ltca::Result r = ltca::Run(s, studies::RunContext{"", true});
-  // The errors recomputed here: every second angle of the cycle, and a 6 x 6 grid over those angles.
-  std::vector<double> sub;
+  // The refinement recomputed here: the 8 angles, the same shifted by half a step, their union
+  // (16 uniform angles) reported; the grid part on a 6 x 6 grid over the 8 angles.
+  const double step = 2 * kPi / 16 / 8;
+  std::vector<double> shifted, both;
+  for (double a : s.crank_angles_rad) shifted.push_back(a + 0.5 * step);
+  const LoadedTca tca(s.drive, s.crowning, s.material, s.options);
+  const CycleResult base = RunCycle(tca, 350.0e3, s.crank_angles_rad);
+  const CycleResult moved = RunCycle(tca, 350.0e3, shifted);
   std::vector<MeshLoad> meshes;
-  for (size_t k = 0; k < 8; k += 2) {
-    sub.push_back(s.crank_angles_rad[k]);
-    meshes.push_back(r.cycle.meshes[k]);
+  for (size_t k = 0; k < 8; ++k) {
+    meshes.push_back(base.meshes[k]);
+    meshes.push_back(moved.meshes[k]);
+    both.push_back(s.crank_angles_rad[k]);
+    both.push_back(shifted[k]);
   }
-  const CycleResult half = SummariseCycle(s.drive, meshes, sub);
-  const CycleResult coarse = RunCycle(LoadedTca(s.drive, s.crowning, s.material, Coarse(6, 6)), 350.0e3, sub);
+  const CycleResult doubled = SummariseCycle(s.drive, meshes, both);
+  ASSERT_EQ(r.cycle.meshes.size(), 16u);
+  ASSERT_EQ(r.crank_angles_rad.size(), 16u);
+  for (size_t k = 0; k < 16; ++k) EXPECT_NEAR(r.crank_angles_rad[k], step * 0.5 * double(k), 1e-15);
+  EXPECT_EQ(r.cycle.max_pressure_MPa, doubled.max_pressure_MPa);
+  EXPECT_EQ(r.cycle.lte_peak_to_peak_arcsec, doubled.lte_peak_to_peak_arcsec);
+  EXPECT_EQ(r.cycle.gear_ratio_peak_to_peak, doubled.gear_ratio_peak_to_peak);
+  const CycleResult coarse = RunCycle(LoadedTca(s.drive, s.crowning, s.material, Coarse(6, 6)), 350.0e3,
+                                      s.crank_angles_rad);
   const nlohmann::json j = ltca::ToJson(s, r);
+  EXPECT_EQ(j["crank_angles_used"], 16);
+  EXPECT_EQ(j["crank_angles_refined"], true);
+  EXPECT_EQ(j["per_angle"].size(), 16u);
+  EXPECT_EQ(j["lte_peak_to_peak_arcsec"].get<double>(), doubled.lte_peak_to_peak_arcsec);
   const auto& e = j["estimated_error"];
-  EXPECT_NEAR(e["lte_peak_to_peak_arcsec"].get<double>(),
-              std::abs(r.cycle.lte_peak_to_peak_arcsec - half.lte_peak_to_peak_arcsec) +
-                  std::abs(half.lte_peak_to_peak_arcsec - coarse.lte_peak_to_peak_arcsec), 1e-12);
-  EXPECT_NEAR(e["max_contact_stress_MPa"].get<double>(),
-              std::abs(r.cycle.max_pressure_MPa - half.max_pressure_MPa) +
-                  std::abs(half.max_pressure_MPa - coarse.max_pressure_MPa), 1e-9);
+  const auto& grid = j["estimated_error_sources"]["grid"]["error"];
+  const auto& crank = j["estimated_error_sources"]["crank_angles"]["error"];
+  // The grid part: the 8 angles on 12 x 12 against 6 x 6. The crank-angle part: at least the
+  // change from 8 to 16 angles (CrankError's smallest factor is 1). The total is their sum.
+  EXPECT_NEAR(grid["lte_peak_to_peak_arcsec"].get<double>(),
+              std::abs(base.lte_peak_to_peak_arcsec - coarse.lte_peak_to_peak_arcsec), 1e-12);
+  EXPECT_NEAR(grid["max_contact_stress_MPa"].get<double>(), std::abs(base.max_pressure_MPa - coarse.max_pressure_MPa),
+              1e-9);
+  EXPECT_GE(crank["lte_peak_to_peak_arcsec"].get<double>(),
+            std::abs(doubled.lte_peak_to_peak_arcsec - base.lte_peak_to_peak_arcsec));
+  EXPECT_GE(crank["max_contact_stress_MPa"].get<double>(), std::abs(doubled.max_pressure_MPa - base.max_pressure_MPa));
+  for (const char* k : {"max_contact_stress_MPa", "lte_peak_to_peak_arcsec", "lte_mean_abs_arcsec",
+                        "gear_ratio_peak_to_peak", "max_pair_load_N"})
+    EXPECT_NEAR(e[k].get<double>(), grid[k].get<double>() + crank[k].get<double>(), 1e-12 * (1 + e[k].get<double>())) << k;
+  EXPECT_EQ(j["estimated_error_sources"]["crank_angles"]["coarse_angles"], 8);
+  EXPECT_EQ(j["estimated_error_sources"]["crank_angles"]["refined_angles"], 16);
   for (const char* k : {"gear_ratio_peak_to_peak", "lte_mean_abs_arcsec", "max_pair_load_N"})
     EXPECT_TRUE(e.contains(k)) << k;
   EXPECT_EQ(j["estimated_error_sources"]["grid"]["coarse_grid"], nlohmann::json::array({6, 6}));

@@ -657,6 +657,7 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
     out[j].max_pressure_per_angle_MPa.assign(na, 0.0);
     out[j].end_distance_per_angle_mm.assign(na, 0.0);
     out[j].pair_load_N.assign(na, {});
+    out[j].pair_max_pressure_MPa.assign(na, {});
   }
   // Soft-max weights over (angle, pair) peaks and the active terms of the exact maxima.
   const double smooth = SmoothPeakPressure(cycle, temperature_MPa);
@@ -687,6 +688,7 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
       c.max_pressure_per_angle_MPa[k] = d[j].max_pressure_MPa;
       c.end_distance_per_angle_mm[k] = d[j].end_distance_mm;
       c.pair_load_N[k] = d[j].pair_load_N;
+      c.pair_max_pressure_MPa[k] = d[j].pair_max_pressure_MPa;
       for (size_t i = 0; i < m.pairs.size(); ++i) {
         const double w = temperature_MPa > 0
                              ? std::exp((m.pairs[i].max_pressure_MPa - smooth) / temperature_MPa)

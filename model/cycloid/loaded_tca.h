@@ -244,6 +244,8 @@ struct CycleDerivative {
   std::vector<double> max_pressure_per_angle_MPa;  ///< per angle (its peak pair)
   std::vector<double> end_distance_per_angle_mm;   ///< per angle (edge_margin only)
   std::vector<std::vector<double>> pair_load_N;    ///< per angle, per loaded pair (in its order)
+  /// per angle, per loaded pair (in its order): d(the pair's peak pressure)/ds, peak cell frozen
+  std::vector<std::vector<double>> pair_max_pressure_MPa;
   bool converged = true;
 };
 
