@@ -510,7 +510,7 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
   out.outcome.x = x;
   out.outcome.polish_rounds = 0;
   out.outcome.note.clear();
-  const bool straight = s.crowning.type == contact::CrowningType::kNone && s.extra_variables() == 0;
+  const bool straight = s.crowning.type == contact::CrowningType::kNone;  // no crowning variable exists without a type
   if (straight) {
     // A straight roller carries load on its ends at any force (the end slice touches; the
     // half-space pressure there is singular and grows as the cell shrinks): no design keeps the

@@ -166,8 +166,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
   }
   if (!closest) return "no design meets the limits, and no candidate reached a point that the dense check could assess";
   if (worst->limit == "edge_margin" || worst->limit == "overload_edge_margin") {
-    const bool straight = s.contact3d && s.contact3d->crowning.type == contact::CrowningType::kNone &&
-                          s.contact3d->extra_variables() == 0;
+    const bool straight = s.contact3d && s.contact3d->crowning.type == contact::CrowningType::kNone;
     const std::string torque = worst->limit == "edge_margin" ? "design" : "overload";
     std::ostringstream m;
     m.precision(4);
