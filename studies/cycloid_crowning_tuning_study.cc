@@ -173,7 +173,7 @@ Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis",
                          "tuning", "crowning", "variables", "optimizer"});
   Study s;
-  s.name = root.json().value("name", "");
+  s.name = root.StringOr("name", "");
   s.drive = cycloid_common::ParseDrive(root);
   s.material = cycloid_common::ParseMaterial(root);
   const Node load = root["load"];

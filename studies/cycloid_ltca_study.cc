@@ -21,7 +21,7 @@ Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
                          "geometry_files"});
   Study s;
-  s.name = root.json().value("name", "");
+  s.name = root.StringOr("name", "");
   s.drive = cycloid_common::ParseDrive(root);
   s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
   s.geometry = ParseGeometryFiles(root);

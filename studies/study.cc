@@ -135,7 +135,10 @@ std::string NotReplaceable(const fs::path& dir) {
   // The swap moves the old folder aside and removes it: a folder the user made read-only would
   // be swapped out and then left behind under a temporary name.
   if (access(dir.c_str(), W_OK) != 0) return "it is read-only";
-  if (!has_manifest) return "it holds files and no " + std::string(kManifest) + " list of a camopt result";
+  if (!has_manifest)
+    return "it holds files and no " + std::string(kManifest) +
+           " list of a camopt result: files of yours, or a result of an older camopt — remove it " +
+           "yourself if it is one";
   std::ifstream in(dir / kManifest);
   std::set<std::string> listed;
   for (std::string line; std::getline(in, line);) listed.insert(line);

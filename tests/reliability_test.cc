@@ -502,6 +502,18 @@ TEST(Output, AWriteErrorNamesTheOutFolder) {
   EXPECT_TRUE(Leftovers(dir).empty());
 }
 
+// A non-string `name` in the cycloid kinds was an internal error (exit 1, "type must be string");
+// every kind answers exit 2 with /name.
+TEST(BadInput, ANonStringNameIsExit2InEveryKind) {
+  for (const auto& e : fs::directory_iterator(SourcePath("studies/examples"))) {
+    if (e.path().filename() == "needle_rollers.json") continue;
+    SCOPED_TRACE(e.path().filename().string());
+    json s = json::parse(ReadFile(e.path()));
+    s["name"] = json::array({1, 2});
+    camopt::testing::ExpectStudyRejected(s, "name-" + e.path().stem().string(), "/name", "string");
+  }
+}
+
 // A literal that underflows to 0 is reported with its own text (before: "found 0.0" later on).
 TEST(StudyInput, AnUnderflowingNumberIsReportedWithItsText) {
   try {
