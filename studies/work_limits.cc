@@ -223,10 +223,15 @@ WorkEstimate CrowningTuning(const json& s, double factor) {
     evaluations = Size(t, "curve_points", 11) +
                   Size(Sub(s, "optimizer"), "max_evaluations", Size(t, "max_evaluations", 30)) *
                       (1.0 + 0.65 * double(s["variables"].size()));
+  // The verification of the tuned design: both torques on twice the angles and four times the
+  // cells, and the study's own settings beside them, up to 3 rounds.
+  const double verification = 3 * 2 * (1 + 2 * 4) * angles * rollers * cells;
   return Largest({{2 * evaluations * angles * rollers * cells, "/analysis/grid",
                    "2 torques × " + Num(evaluations) + " evaluations × " + Num(angles) +
                        " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +
-                       " grid cells"}},
+                       " grid cells"},
+                  {verification, "/analysis/grid",
+                   "verification: up to 3 rounds × 2 torques on twice the angles and cells"}},
                  5e7 * factor, "contact cell solves", 1);
 }
 

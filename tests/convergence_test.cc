@@ -222,11 +222,11 @@ TEST(Convergence, CommandLine) {
 TEST(Convergence, RefinementOverTheWorkLimitIsSkipped) {
   json study = Example("cycloid_ltca_nnm_none.json");
   study["analysis"] = {{"crank_angles_per_mesh_period", 4}, {"grid", {64, 64}}, {"estimate_error", false}};
-  // The work cap of cycloid_ltca is 5e7 cell solves (docs/reliability.md), estimated as 60 angles
-  // × 16 rollers × cells: 64×64 is 3.9e6, 128×128 is 1.6e7; a factor 0.1 lets only the first pass.
+  // The work cap of cycloid_ltca is 5e7 cell solves (docs/reliability.md), estimated as 4 angles
+  // × 16 rollers × cells: 64×64 is 2.6e5, 128×128 is 1.05e6; a factor 0.01 lets only the first pass.
   studies::RunContext ctx;
   ctx.quiet = true;
-  ctx.max_work_factor = 0.1;
+  ctx.max_work_factor = 0.01;
   const studies::ConvergenceRun run = studies::RunConvergence(study, ctx);
   const json* grid = nullptr;
   for (const json& k : run.report["knobs"])
