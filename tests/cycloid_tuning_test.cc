@@ -23,17 +23,28 @@ namespace {
 // the derivatives. Relative tolerance of each entry (to its row's largest central difference).
 constexpr double kJacobianRelTol = 1e-4;
 
-TEST(CycloidTuningProblem, JacobianMatchesCentralDifferencesInTheVariablesUnits) {
+// Contact solves tight enough for central differences to resolve the derivatives.
+cycloid::LoadedOptions TightSolves() {
   cycloid::LoadedOptions o;
   o.profile_cells = o.axial_cells = 12;
   o.tolerance = 1e-11;
   o.solver_tolerance = 1e-12;
   o.rough_solver_tolerance = 0;
   o.max_iterations = 400;
+  return o;
+}
+
+cycloid::Crowning TestCrown() {
   cycloid::Crowning c;
   c.type = cycloid::CrowningType::kLogarithmic;
   c.coefficient_mm = 0.003;
   c.effective_length_mm = 18.7;
+  return c;
+}
+
+TEST(CycloidTuningProblem, JacobianMatchesCentralDifferencesInTheVariablesUnits) {
+  const cycloid::LoadedOptions o = TightSolves();
+  const cycloid::Crowning c = TestCrown();
   const std::vector<std::string> names = {"coefficient_mm", "effective_length_mm", "delta_position_um",
                                           "delta_radius_um"};
   CycloidTuningModel model(camopt::testing::CycloidNnm(), c, cycloid::Material{}, o, 350.0e3, 550.0e3,
@@ -76,16 +87,8 @@ TEST(CycloidTuningProblem, JacobianMatchesCentralDifferencesInTheVariablesUnits)
 // against central differences, with the same tight solves and tolerance as above; the peak cell of
 // each pair stays put for these steps. Rows of rollers without load are 0 − t.
 TEST(CycloidTuningProblem, EpigraphRowsMatchCentralDifferences) {
-  cycloid::LoadedOptions o;
-  o.profile_cells = o.axial_cells = 12;
-  o.tolerance = 1e-11;
-  o.solver_tolerance = 1e-12;
-  o.rough_solver_tolerance = 0;
-  o.max_iterations = 400;
-  cycloid::Crowning c;
-  c.type = cycloid::CrowningType::kLogarithmic;
-  c.coefficient_mm = 0.003;
-  c.effective_length_mm = 18.7;
+  const cycloid::LoadedOptions o = TightSolves();
+  const cycloid::Crowning c = TestCrown();
   const std::vector<std::string> names = {"coefficient_mm", "delta_position_um", "delta_radius_um"};
   const int angles = 3, rollers = 16;
   CycloidTuningModel model(camopt::testing::CycloidNnm(), c, cycloid::Material{}, o, 350.0e3, 550.0e3,

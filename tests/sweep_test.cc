@@ -360,6 +360,26 @@ int CheckpointedCases(const fs::path& partial) {
   return n;
 }
 
+// Starts `camopt sweep SWEEP --quiet --jobs JOBS --out OUT` in the background and waits until at
+// least `cases` cases are checkpointed. Returns its pid, or -1 (and the exit status in *status)
+// when it ended first.
+pid_t StartSweepUntilCheckpointed(const std::string& sweep, const fs::path& out, const char* jobs, int cases,
+                                  int* status) {
+  std::string bin = CAMOPT_BINARY;
+  std::vector<std::string> args = {bin, "sweep", sweep, "--quiet", "--jobs", jobs, "--out", out.string()};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  const fs::path partial = out.string() + ".camopt-sweep";
+  for (int k = 0; k < 6000 && CheckpointedCases(partial) < cases; ++k) {
+    if (waitpid(pid, status, WNOHANG) == pid) return -1;
+    usleep(5000);
+  }
+  return pid;
+}
+
 // Two sweeps into the same --out: the second one deleted the first's partial folder and one of
 // them ended with a confusing error. Now the second is refused at once while the first runs.
 TEST(SweepRun, ASecondSweepIntoTheSameFolderIsRefusedWhileTheFirstRuns) {
@@ -369,24 +389,10 @@ TEST(SweepRun, ASecondSweepIntoTheSameFolderIsRefusedWhileTheFirstRuns) {
   WriteFile(dir / "s.json", s.dump());
   const std::string sweep = (dir / "s.json").string();
   const auto out = dir / "out";
-  std::string bin = CAMOPT_BINARY;
-  std::vector<std::string> args = {bin, "sweep", sweep, "--quiet", "--jobs", "1", "--out", out.string()};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
   const fs::path partial = out.string() + ".camopt-sweep";
   int status = 0;
-  bool exited = false;
-  for (int k = 0; k < 6000 && CheckpointedCases(partial) < 1; ++k) {
-    if (waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
-      break;
-    }
-    usleep(5000);
-  }
-  ASSERT_FALSE(exited) << "the first sweep ended before the second could start";
+  const pid_t pid = StartSweepUntilCheckpointed(sweep, out, "1", 1, &status);
+  ASSERT_GT(pid, 0) << "the first sweep ended before the second could start";
   const auto second = RunCamopt("sweep " + sweep + " --quiet --jobs 1 --out " + out.string());
   EXPECT_EQ(second.exit_code, 2) << second.stderr_text;
   EXPECT_NE(second.stderr_text.find("another sweep is running"), std::string::npos) << second.stderr_text;
@@ -410,24 +416,10 @@ TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
 
   // Interrupted once a few cases are checkpointed, before the 12 are done.
   const auto out = dir / "cut";
-  std::string bin = CAMOPT_BINARY;
-  std::vector<std::string> args = {bin, "sweep", sweep, "--quiet", "--jobs", "2", "--out", out.string()};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
   const fs::path partial = out.string() + ".camopt-sweep";
   int status = 0;
-  bool exited = false;
-  for (int k = 0; k < 6000 && CheckpointedCases(partial) < 3; ++k) {
-    if (waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
-      break;
-    }
-    usleep(5000);
-  }
-  ASSERT_FALSE(exited) << "the sweep ended before it could be interrupted";
+  pid_t pid = StartSweepUntilCheckpointed(sweep, out, "2", 3, &status);
+  ASSERT_GT(pid, 0) << "the sweep ended before it could be interrupted";
   kill(pid, SIGINT);
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
@@ -451,8 +443,8 @@ TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
   }
   EXPECT_EQ(folders, 12);
   // A resume of a different sweep is refused, naming the checkpoint.
-  ASSERT_EQ(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ), 0);
-  for (int k = 0; k < 6000 && CheckpointedCases(partial) < 1; ++k) usleep(5000);
+  pid = StartSweepUntilCheckpointed(sweep, out, "2", 1, &status);
+  ASSERT_GT(pid, 0) << "the sweep ended before it could be interrupted";
   kill(pid, SIGINT);
   waitpid(pid, &status, 0);
   s["outputs"].push_back("/max_pair_load_N");
