@@ -364,29 +364,6 @@ Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec&
   return p;
 }
 
-LcrHalfSpaceCheck HalfSpaceRecheck(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
-                                   const lcr::Reducer<double>& r,
-                                   const std::array<lcr::RollerCrowning<double>, 2>& crowning) {
-  LcrHalfSpaceCheck out;
-  const double e_star = spec.material.composite_modulus_MPa();
-  const lcr::LoadCase load{spec.output_torque_Nmm, 0.0, 0.0};
-  const lcr::CycleSeries series =
-      lcr::AnalyzeCycle(r, spec.material, load, 3600, lcr::Stages{true, false, false});
-  lcr::ContactModelOptions o = s3.contact;
-  o.model = lcr::ContactModel::kHalfSpace;
-  for (int k = 0; k < 2; ++k) {
-    const lcr::Side side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
-    const lcr::Contact3DCycleSide c = lcr::AnalyzeCycleContact3D(r, side, series, e_star, crowning[k], o);
-    out.half_space_MPa[k] = c.max_contact_stress_MPa;
-    out.slices_MPa[k] = c.slices_peak_at_worst_MPa;
-    out.difference_percent[k] = 100.0 * (c.slices_peak_at_worst_MPa - c.max_contact_stress_MPa) / c.max_contact_stress_MPa;
-    out.edge_loaded[k] = c.edge_loaded;
-    out.cell_dx_mm = c.cell_dx_mm, out.cell_dy_mm = c.cell_dy_mm;
-    out.converged = out.converged && c.converged;
-  }
-  return out;
-}
-
 namespace {
 
 // Header step 2 from out.outcome.x (its tracked sets and active set) with the 3D stress rows at

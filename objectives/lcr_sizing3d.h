@@ -129,10 +129,5 @@ Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec
                                 const LcrMinSizeOptions& options, LcrMinSize3DOutcome& out,
                                 LcrHalfSpaceCheck* first_grid = nullptr);
 
-/// The half_space re-check of a design: each cam's worst contact of the slices cycle solved by
-/// DC-FFT on the spec's grid.
-LcrHalfSpaceCheck HalfSpaceRecheck(const LcrSizingSpec& spec, const LcrSizing3DSpec& spec3d,
-                                   const lcr::Reducer<double>& design,
-                                   const std::array<lcr::RollerCrowning<double>, 2>& crowning);
 
 }  // namespace camopt::objectives
