@@ -63,19 +63,22 @@ void BM_CycloidMeshCycle60(benchmark::State& state) {
 }
 BENCHMARK(BM_CycloidMeshCycle60)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
 
-// One mesh period at the cycloid_ltca default (32 angles), no error estimate. Arg: crowning case.
+// One mesh period at the cycloid_ltca default (32 angles), no error estimate. Args: crowning case;
+// the gear ratio's implicit crank slope at every solve (LoadedOptions::crank_slope) off / on.
 void BM_CycloidMeshPeriod32(benchmark::State& state) {
   const auto angles = UniformCrankAngles(32, 2 * kPi / 16);
+  LoadedOptions o;
+  o.crank_slope = state.range(1) == 1;
   CycleResult r;
   for (auto _ : state) {
-    LoadedTca tca(CycloidNnm(), Case(int(state.range(0))), Material{}, LoadedOptions{});
+    LoadedTca tca(CycloidNnm(), Case(int(state.range(0))), Material{}, o);
     r = RunCycle(tca, 350.0e3, angles);
     benchmark::DoNotOptimize(r.max_pressure_MPa);
   }
   state.counters["solves"] = r.contact_solves;
   state.counters["cg_iters"] = double(r.solver_iterations);
 }
-BENCHMARK(BM_CycloidMeshPeriod32)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(BM_CycloidMeshPeriod32)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMillisecond)->Iterations(2);
 
 // One LTCA solve (40 x 40, LCM with L = 18.7 mm, 120°) and, Arg 1, the same solve followed by its
 // implicit derivatives for one parameter (coefficient_mm): the gradient's cost over the value's.

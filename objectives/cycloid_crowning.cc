@@ -11,6 +11,7 @@ namespace {
 
 cycloid::LoadedOptions WithoutMaps(cycloid::LoadedOptions o, bool edge_margin) {
   o.keep_pressure = false;
+  o.crank_slope = false;  // no gear ratio in the tuning
   o.edge_margin = edge_margin;
   return o;
 }
@@ -172,6 +173,7 @@ CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloi
               [&] {
                 cycloid::LoadedOptions o = options;
                 o.keep_pressure = true;  // the derivatives need the converged pressures
+                o.crank_slope = false;
                 o.edge_margin = false;
                 o.sensitivity_tolerance = SensitivityTolerance(options);
                 return o;
@@ -180,6 +182,7 @@ CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloi
                [&] {
                  cycloid::LoadedOptions o = options;
                  o.keep_pressure = true;
+                 o.crank_slope = false;
                  o.edge_margin = true;
                  o.sensitivity_tolerance = SensitivityTolerance(options);
                  return o;

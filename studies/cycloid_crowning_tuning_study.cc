@@ -257,6 +257,7 @@ Accurate AccurateEvaluation(const Study& s, const cycloid::Drive& drive, const c
   cycloid::LoadedOptions fine = s.options;
   fine.profile_cells = 2 * s.options.profile_cells;
   fine.axial_cells = 2 * s.options.axial_cells;
+  fine.crank_slope = false;  // no gear ratio in the tuning
   const int n = s.crank_angles_per_mesh_period;
   const double period = 2.0 * kPi / s.drive.rollers;
   const std::vector<double> base = cycloid::UniformCrankAngles(n, period);

@@ -114,7 +114,11 @@ bool WholePeriods(const std::vector<double>& a, int rollers) {
 // - A kink (a pair entering or leaving contact; missed by O(h)): the rising secant through the two
 //   samples before the extreme and the falling secant through the two after, extended, meet
 //   above y₀ when the kink lies between y₀ and a neighbour.
-double PeakBias(const std::vector<double>& values, double sign) {
+// - A jump (`jumps`: a derivative such as the gear ratio jumps where a pair enters or leaves
+//   contact; its extreme is the one-sided limit at the jump, missed by O(h)): the series on the
+//   near side of the jump continues its trend for up to one step, y₀ minus the nearer neighbour
+//   (the smaller of the two drops; the larger one is the jump).
+double PeakBias(const std::vector<double>& values, double sign, bool jumps = false) {
   const size_t n = values.size();
   if (n < 5) return 0.0;
   size_t k = 0;
@@ -140,6 +144,7 @@ double PeakBias(const std::vector<double>& values, double sign) {
       if (x >= -1 && x <= 0) bias = std::max(bias, fall * x);
     }
   }
+  if (jumps) bias = std::max(bias, std::min(y(0) - y(-1), y(0) - y(1)));
   return bias;
 }
 
@@ -154,7 +159,7 @@ std::vector<double> PeakBiases(const CycleResult& c) {
     load.push_back(l);
   }
   return {PeakBias(stress, 1), PeakBias(c.lte_arcsec, 1) + PeakBias(c.lte_arcsec, -1), 0.0,
-          PeakBias(c.gear_ratio, 1) + PeakBias(c.gear_ratio, -1), PeakBias(load, 1)};
+          PeakBias(c.gear_ratio, 1, true) + PeakBias(c.gear_ratio, -1, true), PeakBias(load, 1)};
 }
 
 // Crank-angle error of a value at 2N angles from its values at N/2 (when known), N and 2N: the

@@ -139,6 +139,59 @@ TEST(CycloidCycleDerivative, FullAndPartialCrowningParametersMatchCentralDiffere
   ExpectCycleDerivativesMatch(partial, {"radius_mm", "flat_length_mm"});
 }
 
+// The LTE's slope over the crank angle (MeshLoad::rotation_slope, the instantaneous gear ratio's
+// dLTE/dφ) against central differences of converged solves over ±1e-6 rad (no contact cell
+// changes state within the step on these grids), for the three crowning forms, at the zero torque
+// (the unloaded TE's slope alone) and at a torque; and the cycle's gear ratio built from it.
+TEST(CycloidCycleDerivative, CrankSlopeMatchesCentralDifferencesOfTheLte) {
+  constexpr double kStepRad = 1e-6;
+  // The slopes are ~1e-5 rad/rad, so the central difference carries the solves' residual noise
+  // divided by the small step: measured agreement 1.1e-5 relative at worst.
+  constexpr double kSlopeRelTol = 3e-5;
+  // The default (looser) CG residual of the slope's sensitivity solves against the tight one.
+  constexpr double kDefaultSlopeRelTol = 1e-4;  // measured: 1e-5
+  Crowning full;
+  full.type = CrowningType::kFull;
+  full.radius_mm = 3000;
+  for (const Crowning& crowning : {FiniteDropLog(), full, Crowning{}}) {
+    LoadedOptions tight = Tight();
+    tight.crank_slope_tolerance = 1e-10;
+    const LoadedTca tca(camopt::testing::CycloidNnm(), crowning, Material{}, tight);
+    const LoadedTca by_default(camopt::testing::CycloidNnm(), crowning, Material{}, Tight());
+    for (double torque : {0.0, 350.0e3})
+      for (double angle : {0.05, 0.21, 0.33}) {
+        const MeshLoad m = tca.Solve(torque, angle);
+        ASSERT_TRUE(m.converged);
+        EXPECT_NEAR(by_default.Solve(torque, angle).rotation_slope, m.rotation_slope,
+                    kDefaultSlopeRelTol * std::abs(m.rotation_slope));
+        const double cd =
+            (tca.Solve(torque, angle + kStepRad).rotation_rad - tca.Solve(torque, angle - kStepRad).rotation_rad) /
+            (2 * kStepRad);
+        EXPECT_NEAR(m.rotation_slope, cd, kSlopeRelTol * std::abs(cd) + 1e-12)
+            << "torque " << torque << " angle " << angle << " crowning " << int(crowning.type);
+      }
+    const std::vector<double> angles = UniformCrankAngles(4, 2 * kPi / 16);
+    const CycleResult c = RunCycle(tca, 350.0e3, angles);
+    ASSERT_EQ(c.gear_ratio.size(), angles.size());
+    double lo = 1e300, hi = -1e300;
+    for (size_t k = 0; k < angles.size(); ++k) {
+      const double ratio = 1.0 / (1.0 / 15.0 + c.meshes[k].rotation_slope);  // n2 = 15 teeth
+      EXPECT_NEAR(c.gear_ratio[k], ratio, 1e-12 * ratio);
+      lo = std::min(lo, ratio);
+      hi = std::max(hi, ratio);
+    }
+    EXPECT_NEAR(c.gear_ratio_peak_to_peak, hi - lo, 1e-12);
+  }
+  // Without the slope the cycle says so: no gear ratio, a NaN peak-to-peak.
+  LoadedOptions off = Tight();
+  off.crank_slope = false;
+  const CycleResult c = RunCycle(LoadedTca(camopt::testing::CycloidNnm(), FiniteDropLog(), Material{}, off), 350.0e3,
+                                 UniformCrankAngles(4, 2 * kPi / 16));
+  EXPECT_TRUE(c.gear_ratio.empty());
+  EXPECT_TRUE(std::isnan(c.gear_ratio_peak_to_peak));
+  for (const MeshLoad& m : c.meshes) EXPECT_TRUE(std::isnan(m.rotation_slope));
+}
+
 TEST(CycloidCycleDerivative, SmoothPeakBiasIsWithinItsStatedBound) {
   const LoadedTca tca(camopt::testing::CycloidNnm(), FiniteDropLog(), Material{}, Tight());
   const CycleResult cycle = RunCycle(tca, 350.0e3, UniformCrankAngles(4, 2 * kPi / 16));

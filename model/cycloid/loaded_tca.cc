@@ -250,7 +250,10 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
     return out;
   }
   const double moment = torque_Nmm;
-  if (moment <= 0) return out;               // zero torque: the unloaded state, no loads
+  if (moment <= 0) {  // zero torque: the unloaded state, no loads
+    if (options_.crank_slope) out.rotation_slope = CrankSlope(out);
+    return out;
+  }
 
   // Candidate pairs: loaded flank, backlash small enough to close.
   struct Candidate {
@@ -449,7 +452,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
       p.edge_margin_mm = edge_p > 0 ? -edge_p / e_star_ * c.grid.dy : std::max(0.0, clearance);
       p.end_distance_mm = EndDistance(c.grid, c.pressure);
     }
-    if (options_.keep_pressure) p.pressure_MPa = c.pressure;
+    if (options_.keep_pressure || options_.crank_slope) p.pressure_MPa = c.pressure;
     out.max_pressure_MPa = std::max(out.max_pressure_MPa, c.max_p);
     out.pairs.push_back(std::move(p));
   }
@@ -462,7 +465,15 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
       out.end_distance_mm = std::min(out.end_distance_mm, p.end_distance_mm);
     }
   }
+  // The slope at the state reached (converged or not: an unconverged solve is reported as such).
+  if (options_.crank_slope) out.rotation_slope = CrankSlope(out);
+  if (!options_.keep_pressure)
+    for (PairLoad& p : out.pairs) p.pressure_MPa = {};
   return out;
+}
+
+double LoadedTca::CrankSlope(const MeshLoad& solved) const {
+  return Differentiate(solved, {"crank_angle_rad"}, options_.crank_slope_tolerance, true).front().rotation_rad;
 }
 
 LoadedTca LoadedTca::WithModification(double delta_position_mm, double delta_radius_mm) const {
@@ -479,6 +490,12 @@ LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std
 
 std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
     const MeshLoad& solved, const std::vector<std::string>& parameters) const {
+  return Differentiate(solved, parameters, options_.sensitivity_tolerance, false);
+}
+
+std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solved,
+                                                            const std::vector<std::string>& parameters,
+                                                            double tol, bool rotation_only) const {
   using J = ceres::Jet<double, 1>;
   const size_t np = parameters.size();
   const size_t n = solved.pairs.size();
@@ -493,7 +510,8 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
     const std::string& parameter = parameters[j];
     if (parameter == "torque_Nmm") {
       kind[j] = Kind::kTorque;
-    } else if (parameter == "delta_position_mm" || parameter == "delta_radius_mm") {
+    } else if (parameter == "delta_position_mm" || parameter == "delta_radius_mm" ||
+               parameter == "crank_angle_rad") {
       kind[j] = Kind::kGeometry;
       DriveTpl<J> dj;
       dj.teeth = drive_.teeth;
@@ -504,8 +522,11 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
       dj.face_width_mm = J(drive_.face_width_mm);
       dj.delta_position_mm = J(drive_.delta_position_mm);
       dj.delta_radius_mm = J(drive_.delta_radius_mm);
-      (parameter == "delta_position_mm" ? dj.delta_position_mm : dj.delta_radius_mm).v[0] = 1.0;
-      const UnloadedMesh<J> u = UnloadedTca<J>(dj, J(solved.crank_angle_rad));
+      J crank(solved.crank_angle_rad);
+      (parameter == "delta_position_mm"   ? dj.delta_position_mm
+       : parameter == "delta_radius_mm" ? dj.delta_radius_mm
+                                          : crank).v[0] = 1.0;
+      const UnloadedMesh<J> u = UnloadedTca<J>(dj, crank);
       d_beta0[j] = u.rotation.v[0];
       for (const auto& g : u.pairs) dgeom[j][g.roller] = g;
     } else {
@@ -537,7 +558,6 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
   }
   std::vector<Derivative> out(np);
   for (size_t j = 0; j < np; ++j) out[j].parameter = parameters[j];
-  const double tol = options_.sensitivity_tolerance;
   std::vector<double> compliance(n);
   std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n);
   // by_gap[j][i], gap_rate, d_arm, d_backlash per parameter and pair.
@@ -579,6 +599,18 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
         for (int iy = 0; iy < p.grid.ny; ++iy)
           for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[j][iy];
       }
+      if (rotation_only) {
+        // Reciprocity: with K w = c·1 on the frozen set (w = dp/dW, the load sensitivity) and
+        // K dp = dδ·1 − dh there with Σ dp = 0 at fixed load, wᵀK dp = c Σ dp = 0 gives
+        // dδ = Σ w dh / Σ w: the approach's rate without a second solve (K symmetric).
+        double wh = 0, ws = 0;
+        for (size_t k = 0; k < dgap.size(); ++k) {
+          wh += by_load[i].pressure_MPa[k] * dgap[k];
+          ws += by_load[i].pressure_MPa[k];
+        }
+        gap_rate[j][i] = ws != 0 ? wh / ws : 0.0;
+        continue;
+      }
       by_gap[j][i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_, tol);
       gap_rate[j][i] = by_gap[j][i].approach_mm;
       converged = converged && by_gap[j][i].converged;
@@ -603,6 +635,7 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(
     d.deflection_rad = den > 0 ? num / den : 0.0;
     d.rotation_rad = d_beta0[j] + d.deflection_rad;
     d.unloaded_rotation_rad = d_beta0[j];
+    if (rotation_only) continue;
     double best = -1, nearest_end = kInf;
     for (size_t i = 0; i < n; ++i) {
       const PairLoad& p = solved.pairs[i];
@@ -731,46 +764,25 @@ CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,
   if (r.meshes.size() != n) throw std::invalid_argument("SummariseCycle: one mesh per angle");
   r.lte_arcsec.resize(n);
   for (size_t k = 0; k < n; ++k) r.lte_arcsec[k] = r.meshes[k].rotation_rad * kArcsecPerRad;
-  // Periodic when the angles sample a whole number of mesh periods uniformly.
-  const int n1 = drive.rollers;
-  const double period = 2.0 * kPi / n1;
-  bool periodic = n >= 3;
-  double step = 0, span = 0;
-  if (periodic) {
-    step = angles[1] - angles[0];
-    for (size_t k = 1; k < n && periodic; ++k)
-      periodic = std::abs(angles[k] - angles[k - 1] - step) < 1e-9 * std::max(1.0, std::abs(step));
-    span = step * n;
-    const double periods = span / period;
-    periodic = periodic && step > 0 && std::abs(periods - std::round(periods)) < 1e-6 &&
-               std::round(periods) >= 1;
-  }
-  r.gear_ratio.resize(n);
   const double n2 = drive.teeth;
-  for (size_t k = 0; k < n; ++k) {
-    double slope = 0;  // dβ/dφ
-    if (n >= 2) {
-      if (periodic) {
-        const size_t kp = (k + 1) % n, km = (k + n - 1) % n;
-        slope = (r.meshes[kp].rotation_rad - r.meshes[km].rotation_rad) / (2.0 * step);
-      } else {
-        const size_t kp = std::min(k + 1, n - 1), km = k == 0 ? 0 : k - 1;
-        const double h = angles[kp] - angles[km];
-        if (std::abs(h) > 0) slope = (r.meshes[kp].rotation_rad - r.meshes[km].rotation_rad) / h;
-      }
-    }
-    // The disc turns by −φ/n2 − β (clockwise for a counter-clockwise crank): |dφ_out/dφ| =
-    // 1/n2 + dβ/dφ, and the ratio is its inverse.
-    r.gear_ratio[k] = 1.0 / (1.0 / n2 + slope);
-  }
+  bool slopes = true;
+  for (const MeshLoad& m : r.meshes) slopes = slopes && std::isfinite(m.rotation_slope);
+  // The disc turns by −φ/n2 − β (clockwise for a counter-clockwise crank): |dφ_out/dφ| =
+  // 1/n2 + dβ/dφ, and the ratio is its inverse.
+  if (slopes)
+    for (size_t k = 0; k < n; ++k) r.gear_ratio.push_back(1.0 / (1.0 / n2 + r.meshes[k].rotation_slope));
   if (n > 0) {
     const auto [lo, hi] = std::minmax_element(r.lte_arcsec.begin(), r.lte_arcsec.end());
     r.lte_peak_to_peak_arcsec = *hi - *lo;
     double s = 0;
     for (double v : r.lte_arcsec) s += std::abs(v);
     r.lte_mean_abs_arcsec = s / n;
-    const auto [glo, ghi] = std::minmax_element(r.gear_ratio.begin(), r.gear_ratio.end());
-    r.gear_ratio_peak_to_peak = *ghi - *glo;
+    if (slopes) {
+      const auto [glo, ghi] = std::minmax_element(r.gear_ratio.begin(), r.gear_ratio.end());
+      r.gear_ratio_peak_to_peak = *ghi - *glo;
+    } else {
+      r.gear_ratio_peak_to_peak = std::numeric_limits<double>::quiet_NaN();
+    }
     r.edge_margin_mm = kInf;
     r.end_distance_mm = kInf;
   }
