@@ -411,7 +411,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"pairs_in_contact", m.pairs_in_contact},
                          {"lte_arcsec", Finite(cycle.lte_arcsec[k], "lte")},
                          {"unloaded_te_arcsec", Finite(m.unloaded_rotation_rad * kArcsecPerRad, "ute")},
-                         {"gear_ratio", Finite(cycle.gear_ratio[k], "gear ratio")},
+                         {"gear_ratio", Finite(cycle.gear_ratio.at(k), "gear ratio")},
                          {"converged", m.converged},
                          {"loads", loads}});
   }
@@ -476,7 +476,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     col_angle.push_back(r.crank_angles_rad[k] * 180.0 / kPi);
     col_lte.push_back(cycle.lte_arcsec[k]);
     col_ute.push_back(m.unloaded_rotation_rad * kArcsecPerRad);
-    col_gr.push_back(cycle.gear_ratio[k]);
+    col_gr.push_back(cycle.gear_ratio.at(k));
     col_p.push_back(m.max_pressure_MPa);
     col_pairs.push_back(m.pairs_in_contact);
   }

@@ -19,6 +19,45 @@
 
 namespace camopt::studies::cycloid_common {
 
+// Plausibility against the drive's own scale (before any work). Real drives have a shortening
+// coefficient K1 = e·N/R_p of 0.5–0.9 and pins filling 30–80% of their half pitch R_p·sin(π/N);
+// profile modifications are corrections of micrometres. Far outside these the input is a unit or
+// typing mistake, and the profile's features fall below what the geometry files can resolve
+// (a pin circle of 2^31 mm with a 4.5 mm eccentricity; a Δa of 1e9 µm, a disc 2 km wide).
+constexpr double kMinShortening = 0.05;      // K1
+constexpr double kMinPinToHalfPitch = 0.02;  // r_p / (R_p sin(π/N))
+
+inline void CheckPlausible(const Node& root, const cycloid::Drive& drive) {
+  const Node d = root["drive"];
+  const double rp = drive.roller_radius_mm, R = drive.roller_position_radius_mm, e = drive.eccentricity_mm;
+  const int n = drive.rollers;
+  if (root.Has("modification")) {
+    const Node m = root["modification"];
+    if (std::abs(drive.delta_position_mm) >= rp)
+      m["delta_position_um"].FailWith("a profile modification of " + Format(drive.delta_position_mm * 1e3, 6) +
+                                      " um is not below the pin radius " + Format(rp * 1e3, 6) +
+                                      " um: modifications are corrections of micrometres (the field is in um)");
+    if (std::abs(drive.delta_radius_mm) >= rp)
+      m["delta_radius_um"].FailWith("a profile modification of " + Format(drive.delta_radius_mm * 1e3, 6) +
+                                    " um is not below the pin radius " + Format(rp * 1e3, 6) +
+                                    " um: modifications are corrections of micrometres (the field is in um)");
+  }
+  const double k1 = e * n / R;
+  if (k1 < kMinShortening)
+    d["eccentricity_mm"].FailWith("the shortening coefficient e * rollers / roller_position_radius_mm = " +
+                                  Format(k1, 4) + " is below " + Format(kMinShortening, 3) +
+                                  " (real drives: 0.5-0.9): the teeth vanish; with these rollers an "
+                                  "eccentricity of at least " + Format(kMinShortening * R / n, 4) +
+                                  " mm, or a pin circle of at most " + Format(e * n / kMinShortening, 4) +
+                                  " mm, would fit");
+  const double half_pitch = R * std::sin(kPi / n);
+  if (rp < kMinPinToHalfPitch * half_pitch)
+    d["roller_radius_mm"].FailWith("the pin radius " + Format(rp, 4) + " mm is below " +
+                                   Format(100 * kMinPinToHalfPitch, 3) + "% of the half pitch " +
+                                   Format(half_pitch, 4) + " mm (real drives: 30-80%): at least " +
+                                   Format(kMinPinToHalfPitch * half_pitch, 4) + " mm would fit");
+}
+
 /// "drive" and the optional "modification" (µm) of a study.
 inline cycloid::Drive ParseDrive(const Node& root) {
   const Node d = root["drive"];
@@ -38,6 +77,7 @@ inline cycloid::Drive ParseDrive(const Node& root) {
     drive.delta_position_mm = m.NumberOr("delta_position_um", 0.0) * 1e-3;
     drive.delta_radius_mm = m.NumberOr("delta_radius_um", 0.0) * 1e-3;
   }
+  CheckPlausible(root, drive);  // first: a unit mistake explains whatever else fails
   if (const std::string why = cycloid::CheckDrive(drive); !why.empty())
     d.FailWith("infeasible drive: " + why);
   return drive;

@@ -67,6 +67,24 @@ double ExactArea(const cad::CurveFunction& f, double t0, double t1) {
   return std::abs(a);
 }
 
+// The finest DXF tolerance relative to the part's size: 1 µm on 10 m (machine tools hold about
+// 1e-6 of their travel).
+constexpr double kMinRelativeTolerance = 1e-7;
+
+// Diagonal of the bounding box of the exact closed curve, from 4096 points [mm].
+double ProfileSize(const cad::CurveFunction& f, double t0, double t1) {
+  const int n = 4096;
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (int i = 0; i < n; ++i) {
+    const Vec2<double> p = f(t0 + (t1 - t0) * i / n);
+    lo_x = std::min(lo_x, p.x());
+    hi_x = std::max(hi_x, p.x());
+    lo_y = std::min(lo_y, p.y());
+    hi_y = std::max(hi_y, p.y());
+  }
+  return std::hypot(hi_x - lo_x, hi_y - lo_y);
+}
+
 }  // namespace
 
 
@@ -101,10 +119,18 @@ std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, cons
 }
 
 PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOptions& options) {
-  const double tol_mm = options.dxf_tolerance_um * 1e-3;
   PlanarCamFit f;
   f.cam = cam;
   if (!options.write) return f;
+  // No tolerance finer than kMinRelativeTolerance of the part's size (the diagonal of the exact
+  // profile's bounding box): the arcs, hence the solid's and the mesh's work, then stay those of a
+  // part of ten metres at 1 µm, whatever the size.
+  double tol_mm = options.dxf_tolerance_um * 1e-3;
+  const double size = ProfileSize(cam.profile, cam.t0, cam.t1);
+  const bool raised = std::isfinite(size) && kMinRelativeTolerance * size > tol_mm;
+  if (raised) tol_mm = kMinRelativeTolerance * size;
+  const double tol_um = tol_mm * 1e3;
+  f.tolerance_mm = tol_mm;
   Fit profile = FitCurve(cam.profile, cam, tol_mm);
   // Counter-clockwise outer profile (positive area) for the solid and for readers that expect it.
   if (cad::EnclosedArea(profile.curve.arcs) < 0) profile.curve.arcs = Reversed(profile.curve.arcs);
@@ -136,18 +162,22 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   // A curve the fit cannot follow within the tolerance (absurd sizes, non-finite points): no files.
   f.files = std::isfinite(f.max_deviation_mm) && f.max_deviation_mm <= tol_mm && f.profile.within_tolerance;
   if (!f.files) {
-    j["not_written"] = "the curves could not be fitted within " + Format(options.dxf_tolerance_um, 4) +
+    j["not_written"] = "the curves could not be fitted within " + Format(tol_um, 4) +
                        " um (largest deviation " + Format(f.max_deviation_mm * 1e3, 4) + " um, " +
                        std::to_string(f.profile.arcs.size()) + " arcs)";
     j["dxf_max_deviation_um"] = std::isfinite(f.max_deviation_mm) ? nlohmann::json(f.max_deviation_mm * 1e3)
                                                                   : nlohmann::json(nullptr);
-    j["dxf_tolerance_um"] = options.dxf_tolerance_um;
+    j["dxf_tolerance_um"] = tol_um;
     return f;
   }
 
   j["dxf"] = cam.file_stem + ".dxf";
   j["dxf_layers"] = layers;
-  j["dxf_tolerance_um"] = options.dxf_tolerance_um;
+  j["dxf_tolerance_um"] = tol_um;
+  if (raised)
+    j["dxf_tolerance_note"] = "geometry_files.dxf_tolerance_um " + Format(options.dxf_tolerance_um, 4) +
+                              " is below " + Format(kMinRelativeTolerance, 3) + " of the part's size (" +
+                              Format(size * 1e-3, 4) + " m): " + Format(tol_um, 4) + " um used";
   j["dxf_max_deviation_um"] = f.max_deviation_mm * 1e3;
   j["dxf_deviation_check_points"] = f.checked_points;
   j["dxf_within_tolerance"] = f.max_deviation_mm <= tol_mm;
@@ -209,7 +239,7 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   const double h = std::max(1.0, 0.04 * size);
   const std::vector<std::string> lines = {
       cam.design_name + ": " + cam.cam_name,
-      "units: mm (INSUNITS 4); curves: arcs within " + Format(options.dxf_tolerance_um, 4) +
+      "units: mm (INSUNITS 4); curves: arcs within " + Format(f.tolerance_mm * 1e3, 4) +
           " um of the exact profile (largest found " + Format(f.max_deviation_mm * 1e3, 3) + " um)",
       cam.cutter ? "cutter path: cutter diameter " + Format(cam.cutter_diameter_mm, 6) + " mm"
                  : "cutter path: " + (cam.cutter_note.empty() ? std::string("none") : cam.cutter_note),

@@ -60,6 +60,7 @@ struct PlanarCamGeometry {
 struct PlanarCamFit {
   PlanarCamGeometry cam;
   cad::FittedCurve profile, pitch, cutter;  ///< profile counter-clockwise
+  double tolerance_mm = 0.0;                ///< used: dxf_tolerance_um, or 1e-7 of a larger part
   double max_deviation_mm = 0.0;            ///< over profile, pitch and cutter path
   long checked_points = 0;
   double profile_area_mm2 = 0.0;            ///< of the exact profile

@@ -182,6 +182,17 @@ TEST(CycloidCycleDerivative, CrankSlopeMatchesCentralDifferencesOfTheLte) {
     }
     EXPECT_NEAR(c.gear_ratio_peak_to_peak, hi - lo, 1e-12);
   }
+  // A solve without a loaded state (no roller on the loaded flank: a vanishing eccentricity) is
+  // not converged and carries the placeholder slope 0, so the cycle's series stay whole.
+  {
+    Drive flat = camopt::testing::CycloidNnm();
+    flat.eccentricity_mm = 1e-4;
+    const CycleResult c = RunCycle(LoadedTca(flat, Crowning{}, Material{}, Tight()), 350.0e3,
+                                   UniformCrankAngles(4, 2 * kPi / 16));
+    EXPECT_FALSE(c.converged);
+    ASSERT_EQ(c.gear_ratio.size(), 4u);
+    for (const MeshLoad& m : c.meshes) EXPECT_EQ(m.rotation_slope, 0.0) << m.message;
+  }
   // Without the slope the cycle says so: no gear ratio, a NaN peak-to-peak.
   LoadedOptions off = Tight();
   off.crank_slope = false;

@@ -3,6 +3,7 @@
 // cap and the estimate, results that are not converged exit 3, the output folder replaced all at
 // once, interrupts, and byte-identical output for the same study.
 #include <chrono>
+#include <cstring>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -370,9 +371,72 @@ TEST(Converged, CycloidSoftMaterialHugeTorqueOrTinyEccentricityExit3) {
   s = SmallCycloid();
   s["load"]["torque_Nm"] = 1e308;
   ExpectExit3("torque", s, "torque balance not met");
-  s = SmallCycloid();
+}
+
+// The geometry files' work does not grow with the part's physical size: the mesh's chord
+// deviation and the DXF tolerance follow the part above half a metre and ten metres (a 5 m base
+// circle took 85 s and 4.8 GB to mesh at a fixed 2 µm; a 10 m one ended "a face has no
+// triangulation"). The machine-independent measures: the STL's triangles and the profile's arcs
+// against the 40 mm example's.
+TEST(GeometryScale, LargePartsKeepTheFilesWorkOfANormalPart) {
+  const auto dir = TempDir("geometry-scale");
+  auto run = [&](const std::string& tag, double base_radius_mm) {
+    json s = Example("disc_cam_translating.json");
+    s["base_circle_radius_mm"] = base_radius_mm;
+    s["analysis"]["monte_carlo"] = false;
+    const auto out = dir / ("out-" + tag);
+    const auto r = RunCamopt("run " + Write(dir, tag + ".json", s).string() + " --quiet --out " + out.string());
+    EXPECT_EQ(r.exit_code, 0) << tag << ": " << r.stderr_text;
+    const std::string stl = ReadFile(out / "profile.stl");
+    uint32_t triangles = 0;
+    if (stl.size() >= 84) std::memcpy(&triangles, stl.data() + 80, 4);
+    return std::make_pair(json::parse(ReadFile(out / "result.json"))["geometry_files"]["profile"], triangles);
+  };
+  const auto [normal, normal_triangles] = run("normal", 40);
+  EXPECT_EQ(normal["dxf_tolerance_um"].get<double>(), 1.0);
+  EXPECT_FALSE(normal.contains("dxf_tolerance_note"));
+  for (const double radius : {5000.0, 1e7}) {
+    const auto [big, big_triangles] = run("r" + std::to_string(int(std::log10(radius))), radius);
+    SCOPED_TRACE(radius);
+    EXPECT_GT(big_triangles, 0u);
+    EXPECT_LE(big_triangles, 4 * normal_triangles);
+    EXPECT_LE(big["profile_arcs"].get<int>(), 4 * normal["profile_arcs"].get<int>());
+    // The tolerance used is 1e-7 of the profile's diagonal (about 2.83 radii across a disc).
+    const double tolerance_um = big["dxf_tolerance_um"].get<double>();
+    EXPECT_NEAR(tolerance_um, 1e-7 * 2.0 * std::sqrt(2.0) * radius * 1e3, 0.05 * tolerance_um);
+    EXPECT_NE(big["dxf_tolerance_note"].get<std::string>().find("um used"), std::string::npos);
+    EXPECT_LE(big["dxf_max_deviation_um"].get<double>(), tolerance_um);
+  }
+}
+
+// Plausibility against the drive's own scale, before any work: a vanishing eccentricity (it used
+// to run and end "no roller on the loaded flank"), a pin circle of 2^31 mm (OCCT then failed to
+// join the profile's arcs, exit 1), a profile modification of 1e9 µm (a disc 2 km wide: over 120 s
+// and 7.5 GB), a pin far smaller than its pitch. Exit 2 with the path and what would fit.
+TEST(BadInput, ImplausibleCycloidDrivesAreRefusedBeforeWork) {
+  const auto dir = TempDir("bad-cycloid-scale");
+  json s = SmallCycloid();
   s["drive"]["eccentricity_mm"] = 1e-4;
-  ExpectExit3("eccentricity", s, "no roller on the loaded flank");
+  ExpectRefusedQuickly("eccentricity", Write(dir, "a.json", s), "/drive/eccentricity_mm: ",
+                       "an eccentricity of at least 0.2812 mm");  // 0.05 · 90 / 16
+  s = SmallCycloid();
+  s["drive"]["roller_position_radius_mm"] = 2147483648.0;
+  ExpectRefusedQuickly("pin-circle", Write(dir, "b.json", s), "/drive/eccentricity_mm: ",
+                       "a pin circle of at most 1440 mm");  // 4.5 · 16 / 0.05
+  s = SmallCycloid();
+  s["modification"]["delta_position_um"] = 1e9;
+  ExpectRefusedQuickly("delta-a", Write(dir, "c.json", s), "/modification/delta_position_um: ",
+                       "not below the pin radius 7200 um");
+  s = SmallCycloid();
+  s["modification"]["delta_radius_um"] = -8000;
+  ExpectRefusedQuickly("delta-rho", Write(dir, "d.json", s), "/modification/delta_radius_um: ",
+                       "not below the pin radius 7200 um");
+  s = SmallCycloid();
+  s["drive"]["roller_radius_mm"] = 0.3;  // half pitch 90 sin(π/16) = 17.56 mm
+  ExpectRefusedQuickly("pin", Write(dir, "e.json", s), "/drive/roller_radius_mm: ", "at least 0.3512 mm would fit");
+  s = Example("cycloid_crowning_tuning_nnm.json");
+  s["drive"]["eccentricity_mm"] = 1e-4;
+  ExpectRefusedQuickly("tuning", Write(dir, "f.json", s), "/drive/eccentricity_mm: ", "would fit");
 }
 
 TEST(Converged, ThePaperExampleStillConvergesAndCarriesTheTorque) {

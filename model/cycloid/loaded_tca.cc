@@ -236,6 +236,9 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
   if (!(torque_Nmm >= 0)) throw std::invalid_argument("torque must be >= 0");
   MeshLoad out;
   out.crank_angle_rad = crank_angle_rad;
+  // A solve without a loaded state (below: an infinite torque, no roller on the loaded flank) is
+  // reported as not converged; its slope is a placeholder 0 so that a cycle's series stay whole.
+  if (options_.crank_slope) out.rotation_slope = 0.0;
   if (std::isinf(torque_Nmm)) {  // a torque that overflowed its unit conversion (1e308 N·m)
     out.converged = false;
     out.message = "torque balance not met: the torque is not a finite number in N·mm";
@@ -466,7 +469,14 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
     }
   }
   // The slope at the state reached (converged or not: an unconverged solve is reported as such).
-  if (options_.crank_slope) out.rotation_slope = CrankSlope(out);
+  if (options_.crank_slope) {
+    const double slope = CrankSlope(out);
+    out.rotation_slope = std::isfinite(slope) ? slope : 0.0;  // the placeholder, as above
+    if (!std::isfinite(slope) && out.converged) {
+      out.converged = false;
+      out.message = "the LTE's slope over the crank angle is not a finite number";
+    }
+  }
   if (!options_.keep_pressure)
     for (PairLoad& p : out.pairs) p.pressure_MPa = {};
   return out;
