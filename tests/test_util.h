@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -217,6 +218,27 @@ inline std::string ReadFile(const std::filesystem::path& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// The columns of a CSV with a header line, by name; every other cell read as a number.
+inline std::map<std::string, std::vector<double>> ReadCsv(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  {
+    std::istringstream h(line);
+    std::string n;
+    while (std::getline(h, n, ',')) names.push_back(n);
+  }
+  std::map<std::string, std::vector<double>> cols;
+  while (std::getline(in, line)) {
+    std::istringstream r(line);
+    std::string v;
+    for (size_t i = 0; i < names.size() && std::getline(r, v, ','); ++i)
+      cols[names[i]].push_back(std::stod(v));
+  }
+  return cols;
 }
 
 inline std::string SourcePath(const std::string& relative) {
