@@ -1,7 +1,9 @@
 // Tests of the cycloid loaded TCA and the two study kinds (coarse grids: the suite stays fast).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -559,9 +561,55 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
   namespace ltca = studies::cycloid_ltca;
   const nlohmann::json study = nlohmann::json::parse(camopt::testing::ReadFile(dir / "s.json"));
   const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(
-                nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"))),
-            ltca::ToJson(s, ltca::Run(s, studies::RunContext{"", true})));
+  const nlohmann::json j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(j), ltca::ToJson(s, ltca::Run(s, studies::RunContext{"", true})));
+
+  // The tables: a row per crank angle of the study (0, 120, 300°), a load column per roller of the
+  // drive (16), and numbers (written to 10 digits) that agree with result.json.
+  const std::vector<double> angles = {0.0, 120.0, 300.0};
+  auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); };
+  const auto per_angle = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out" / "per_angle.csv"));
+  ASSERT_EQ(per_angle.at("crank_angle_deg").size(), angles.size());
+  ASSERT_EQ(j["per_angle"].size(), angles.size());
+  EXPECT_TRUE(per_angle.count("load_roller_16_N"));
+  EXPECT_FALSE(per_angle.count("load_roller_17_N"));
+  double max_stress = 0, lte_min = kInf, lte_max = -kInf;
+  for (size_t k = 0; k < angles.size(); ++k) {
+    const nlohmann::json& row = j["per_angle"][k];
+    EXPECT_NEAR(per_angle.at("crank_angle_deg")[k], angles[k], 1e-9);
+    EXPECT_TRUE(near(per_angle.at("max_contact_stress_MPa")[k], row["max_contact_stress_MPa"])) << k;
+    EXPECT_TRUE(near(per_angle.at("lte_arcsec")[k], row["lte_arcsec"])) << k;
+    EXPECT_EQ(per_angle.at("pairs_in_contact")[k], row["pairs_in_contact"].get<double>()) << k;
+    int loaded = 0;
+    for (const nlohmann::json& pair : row["loads"]) {
+      const std::string column = "load_roller_" + std::to_string(pair["roller"].get<int>()) + "_N";
+      EXPECT_TRUE(near(per_angle.at(column)[k], pair["load_N"])) << column << " at row " << k;
+      loaded += pair["load_N"].get<double>() > 0;
+    }
+    EXPECT_GE(loaded, 1) << k;
+    max_stress = std::max(max_stress, per_angle.at("max_contact_stress_MPa")[k]);
+    lte_min = std::min(lte_min, per_angle.at("lte_arcsec")[k]);
+    lte_max = std::max(lte_max, per_angle.at("lte_arcsec")[k]);
+  }
+  // The summary is the table's extreme and range (a difference of two 10-digit numbers).
+  EXPECT_TRUE(near(max_stress, j["max_contact_stress_MPa"])) << max_stress;
+  EXPECT_NEAR(lte_max - lte_min, j["lte_peak_to_peak_arcsec"].get<double>(),
+              2e-9 * std::max(std::abs(lte_max), std::abs(lte_min)));
+  const auto backlash = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out" / "backlash.csv"));
+  EXPECT_EQ(backlash.size(), 1u + 16u);
+  EXPECT_EQ(backlash.at("crank_angle_deg"), per_angle.at("crank_angle_deg"));
+  EXPECT_EQ(backlash.at("backlash_roller_16_arcsec").size(), angles.size());
+  // The drawings are whole files of their kind, with their titles.
+  const std::string lte_svg = camopt::testing::ReadFile(dir / "out" / "lte.svg");
+  EXPECT_EQ(lte_svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(lte_svg.find("</svg>"), std::string::npos);
+  EXPECT_NE(lte_svg.find("Loaded transmission error"), std::string::npos);
+  const std::string map_svg = camopt::testing::ReadFile(dir / "out" / "pressure_map.svg");
+  EXPECT_NE(map_svg.find("Contact pressure at crank angle"), std::string::npos);
+  EXPECT_NE(map_svg.find("</svg>"), std::string::npos);
+  const std::string dxf = camopt::testing::ReadFile(dir / "out" / "tooth.dxf");
+  EXPECT_NE(dxf.find("ENTITIES"), std::string::npos);
+  EXPECT_NE(dxf.rfind("EOF"), std::string::npos);
 }
 
 TEST(CycloidStudies, ExamplesRunOnACoarseGrid) {
@@ -695,6 +743,24 @@ TEST(CycloidStudies, CrowningTuningWritesItsFiles) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   const auto j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
   EXPECT_TRUE(j["feasible"].get<bool>());
+  // The scan: curve_points = 4 coefficients spread evenly over the study's range [0, 0.02] mm, with
+  // result.json's values; the optimizer's history stays in that range.
+  const auto curve = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out" / "stress_vs_coefficient.csv"));
+  ASSERT_EQ(curve.at("coefficient_mm").size(), 4u);
+  ASSERT_EQ(j["curve"].size(), 4u);
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(curve.at("coefficient_mm")[k], 0.02 * double(k) / 3, 1e-9 * 0.02) << k;  // 10 digits
+    for (const char* c : {"max_contact_stress_MPa", "edge_margin_at_max_torque_um"}) {
+      const double v = j["curve"][k][c].get<double>();
+      EXPECT_NEAR(curve.at(c)[k], v, 1e-9 * std::max(1.0, std::abs(v))) << c << " " << k;
+    }
+  }
+  const auto history = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out" / "history.csv"));
+  ASSERT_FALSE(history.at("coefficient_mm").empty());
+  for (double f : history.at("coefficient_mm")) {
+    EXPECT_GE(f, 0.0);
+    EXPECT_LE(f, 0.02);
+  }
   // The registered runner writes what the C++ entry points return.
   namespace tuning = studies::cycloid_crowning_tuning;
   const nlohmann::json study = nlohmann::json::parse(kTuningStudy);

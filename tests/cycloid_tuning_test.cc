@@ -21,7 +21,25 @@ namespace {
 // The problem's Jacobian rows (smooth stress, end distance per angle, LTE p-p) against central
 // differences of the evaluator's values; the solves are tight so that the differences resolve
 // the derivatives. Relative tolerance of each entry (to its row's largest central difference).
-constexpr double kJacobianRelTol = 1e-4;
+constexpr double kTuningJacobianRelTol = 1e-4;
+
+// |ad − fd| <= kTuningJacobianRelTol · (the largest |fd| of the entry's row or column), no absolute part.
+camopt::testing::JacobianCheck RelativeToLargest(camopt::testing::JacobianCheck::Scale scale) {
+  camopt::testing::JacobianCheck check;
+  check.rel_tol = kTuningJacobianRelTol;
+  check.abs_tol = 0.0;
+  check.scale = scale;
+  return check;
+}
+
+// The problem's values as a function of its variables, for central differences.
+auto ValuesOf(const Problem& p) {
+  return [&p](const std::vector<double>& x) {
+    std::vector<double> y(size_t(p.evaluator->num_outputs()));
+    p.evaluator->Eval(x, y);
+    return y;
+  };
+}
 
 // Contact solves tight enough for central differences to resolve the derivatives.
 cycloid::LoadedOptions TightSolves() {
@@ -57,24 +75,10 @@ TEST(CycloidTuningProblem, JacobianMatchesCentralDifferencesInTheVariablesUnits)
   ASSERT_EQ(m, 1 + 3 + 1 + 3);
   std::vector<double> y(m), jac(size_t(m) * n);
   p.evaluator->EvalWithJacobian(x, y, jac);
-  const std::vector<double> steps = {3e-8, 1.87e-4, 1e-3, 1e-3};
-  std::vector<std::vector<double>> fd(m, std::vector<double>(n));
-  for (int j = 0; j < n; ++j) {
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[j] += steps[j];
-    xm[j] -= steps[j];
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    for (int k = 0; k < m; ++k) fd[k][j] = (yp[k] - ym[k]) / (2 * steps[j]);
-  }
-  for (int k = 0; k < m; ++k) {
-    double scale = 0;
-    for (int j = 0; j < n; ++j) scale = std::max(scale, std::abs(fd[k][j]));
-    ASSERT_GT(scale, 0.0) << "output " << k;
-    for (int j = 0; j < n; ++j)
-      EXPECT_NEAR(jac[size_t(k) * n + j], fd[k][j], kJacobianRelTol * scale)
-          << "output " << k << " variable " << names[j];
-  }
+  camopt::testing::JacobianCheck check = RelativeToLargest(camopt::testing::JacobianCheck::Scale::kRow);
+  check.steps = {3e-8, 1.87e-4, 1e-3, 1e-3};
+  check.variable_names = names;
+  camopt::testing::ExpectGivenJacobianMatchesCentralDifferences(ValuesOf(p), x, y, jac, check);
   // β0 is the unloaded TE: the crowning does not move it.
   for (int k = 5; k < 8; ++k) EXPECT_EQ(jac[size_t(k) * n + 0], 0.0);
   // Each distinct point runs its cycles once: 1 + 2n cycle runs, 1 derivative run.
@@ -119,23 +123,14 @@ TEST(CycloidTuningProblem, EpigraphRowsMatchCentralDifferences) {
   double largest = 0;
   for (double v : e.pair_peak_MPa) largest = std::max(largest, v);
   EXPECT_EQ(largest, e.stress_MPa);
-  const std::vector<double> steps = {3e-8, 1e-3, 1e-3};
-  for (int j = 0; j < 3; ++j) {
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[j] += steps[j];
-    xm[j] -= steps[j];
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    double scale = 0;
-    std::vector<double> fd(m);
-    for (int k = first; k < m; ++k) {
-      fd[k] = (yp[k] - ym[k]) / (2 * steps[j]);
-      scale = std::max(scale, std::abs(fd[k]));
-    }
-    ASSERT_GT(scale, 0.0) << names[j];
-    for (int k = first; k < m; ++k)
-      EXPECT_NEAR(jac[size_t(k) * n + j], fd[k], kJacobianRelTol * scale) << "row " << k << " variable " << names[j];
-  }
+  // Relative to each variable's largest central difference over the new rows; t (variable 3)
+  // enters them exactly, checked below.
+  camopt::testing::JacobianCheck check = RelativeToLargest(camopt::testing::JacobianCheck::Scale::kColumn);
+  check.steps = {3e-8, 1e-3, 1e-3, 0.0};
+  check.variables = {0, 1, 2};
+  for (int k = first; k < m; ++k) check.rows.push_back(k);
+  check.variable_names = {names[0], names[1], names[2], "t"};
+  camopt::testing::ExpectGivenJacobianMatchesCentralDifferences(ValuesOf(p), x, y, jac, check);
   for (int k = first; k < m; ++k) EXPECT_EQ(jac[size_t(k) * n + 3], -1.0);
 }
 

@@ -1,10 +1,12 @@
 // The disc_cam study: the paper's example, the oscillating example and an undercut cam through
 // the C++ entry points (Parse, Run); the files the CLI writes; and every kind of bad input rejected
 // with exit code 2 and a message naming the JSON path.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -111,6 +113,17 @@ TEST(DiscCamStudy, PaperExampleThroughTheCli) {
                         "profile.svg", "profile.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   EXPECT_NE(ReadFile(dir / "out" / "profile.dxf").find("POLYLINE"), std::string::npos);
+  // series.csv against the motion's closed form: the cycloidal rise of 24 mm over 120° ends at
+  // 120°, where the upper dwell starts, and the largest velocity is Cv h/β = 2·24/(2π/3).
+  const auto series = camopt::testing::ReadCsv(ReadFile(dir / "out" / "series.csv"));
+  const std::vector<double>& deg = series.at("cam_angle_deg");
+  const size_t at_120 = size_t(std::find_if(deg.begin(), deg.end(), [](double d) { return d >= 120.0 - 1e-9; }) -
+                               deg.begin());
+  ASSERT_LT(at_120, deg.size());
+  EXPECT_NEAR(deg[at_120], 120.0, 1e-9);
+  EXPECT_NEAR(series.at("follower_mm")[at_120], 24.0, 1e-9);
+  const std::vector<double>& v = series.at("velocity_mm_per_rad");
+  EXPECT_NEAR(*std::max_element(v.begin(), v.end()), 48.0 / (2 * kPi / 3), 1e-6);
 }
 
 TEST(DiscCamStudy, OscillatingExample) {

@@ -18,6 +18,7 @@
 namespace camopt {
 namespace {
 
+using camopt::testing::ReadCsv;
 using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
 using camopt::testing::SourcePath;
@@ -32,27 +33,6 @@ constexpr double kDeg = kPi / 180.0;
 
 json Example() {
   return json::parse(ReadFile(SourcePath("studies/examples/globoidal_cam_paper.json")));
-}
-
-// Columns of a CSV by name.
-std::map<std::string, std::vector<double>> ReadCsv(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  {
-    std::istringstream h(line);
-    std::string n;
-    while (std::getline(h, n, ',')) names.push_back(n);
-  }
-  std::map<std::string, std::vector<double>> cols;
-  while (std::getline(in, line)) {
-    std::istringstream r(line);
-    std::string v;
-    for (size_t i = 0; i < names.size() && std::getline(r, v, ','); ++i)
-      cols[names[i]].push_back(std::stod(v));
-  }
-  return cols;
 }
 
 // Modified sine, written here from its definition (independent of model/motion): the rise's

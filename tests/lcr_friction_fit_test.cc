@@ -116,8 +116,9 @@ TEST(LcrFrictionFit, Table4FitAndItsCovariance) {
   }
 }
 
-// The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run); fit.csv and
-// fit.svg are written.
+// The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run); fit.csv has a
+// row per measurement of the study file, its torques, and residual = fitted − measured; fit.svg is
+// written.
 TEST(LcrFrictionFit, CliWritesTheEntryPointsResult) {
   const json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
   const auto dir = TempDir("friction-cli");
@@ -129,6 +130,20 @@ TEST(LcrFrictionFit, CliWritesTheEntryPointsResult) {
   const fit::Study st = fit::Parse(root);
   EXPECT_EQ(camopt::testing::WithoutRunStamp(written), fit::ToJson(st, fit::Run(st, {"fit.json", true})));
   for (const char* f : {"fit.csv", "fit.svg"}) EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  const auto table = camopt::testing::ReadCsv(ReadFile(dir / "out" / "fit.csv"));
+  const json& measured = study["measurements"];
+  ASSERT_EQ(table.at("output_torque_Nm").size(), measured.size());
+  for (size_t i = 0; i < measured.size(); ++i) {
+    const double input = measured[i]["input_torque_Nm"].get<double>();
+    const double fitted = table.at("fitted_input_torque_Nm")[i];
+    EXPECT_EQ(table.at("output_torque_Nm")[i], measured[i]["output_torque_Nm"].get<double>()) << i;
+    EXPECT_EQ(table.at("measured_input_torque_Nm")[i], input) << i;
+    EXPECT_NEAR(table.at("residual_Nm")[i], fitted - input, 1e-9) << i;
+    EXPECT_NEAR(fitted, written["measurements"][i]["fitted_input_torque_Nm"].get<double>(), 1e-9 * std::abs(fitted)) << i;
+  }
+  const std::string svg = ReadFile(dir / "out" / "fit.svg");
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 
 TEST(LcrFrictionFit, BadInputIsExitCode2) {

@@ -14,6 +14,7 @@
 #include "objectives/lcr_sizing.h"
 #include "tests/optim_reference_problems.h"
 #include "tests/reference_designs.h"
+#include "tests/test_util.h"
 
 namespace camopt {
 namespace {
@@ -22,33 +23,18 @@ using objectives::LcrConstraintForm;
 using objectives::LcrSizingSpec;
 
 // Checks the evaluator's Jacobian (ceres::Jet) against central differences of its double
-// evaluation, step h = cbrt(eps) max(1, |x|); |ad − fd| <= abs_tol + rel_tol max(|ad|, |fd|).
-void ExpectEvaluatorJacobianMatches(const objectives::Evaluator& ev, std::vector<double> x,
+// evaluation (tests/test_util.h): every entry of every output, the outputs being exactly those of
+// the blocks, |ad − fd| <= abs_tol + rel_tol max(|ad|, |fd|).
+void ExpectEvaluatorJacobianMatches(const objectives::Evaluator& ev, const std::vector<double>& x,
                                     double rel_tol, double abs_tol) {
-  const int n = ev.num_vars(), m = ev.num_outputs();
-  std::vector<double> y(m), jac(m * n), yp(m), ym(m), y0(m);
-  ev.EvalWithJacobian(x, y, jac);
-  ev.Eval(x, y0);
-  for (int k = 0; k < m; ++k) ASSERT_NEAR(y[k], y0[k], 1e-12 * std::max(1.0, std::abs(y0[k])));
-  const double cbrt_eps = std::cbrt(std::numeric_limits<double>::epsilon());
-  int checked = 0;
-  for (int i = 0; i < n; ++i) {
-    const double h = cbrt_eps * std::max(1.0, std::abs(x[i]));
-    auto xp = x, xm = x;
-    xp[i] += h;
-    xm[i] -= h;
-    ev.Eval(xp, yp);
-    ev.Eval(xm, ym);
-    for (const auto& b : ev.blocks())
-      for (int k = b.offset; k < b.offset + b.size; ++k) {
-        const double fd = (yp[k] - ym[k]) / (2 * h), ad = jac[k * n + i];
-        ASSERT_TRUE(std::isfinite(ad)) << b.name;
-        EXPECT_LE(std::abs(ad - fd), abs_tol + rel_tol * std::max(std::abs(ad), std::abs(fd)))
-            << b.name << "[" << k - b.offset << "] d/d" << i << ": AD " << ad << " vs CD " << fd;
-        ++checked;
-      }
-  }
-  EXPECT_EQ(checked, n * m);
+  testing::JacobianCheck check;
+  check.rel_tol = rel_tol;
+  check.abs_tol = abs_tol;
+  int in_blocks = 0;
+  for (const auto& b : ev.blocks()) in_blocks += b.size;
+  EXPECT_EQ(in_blocks, ev.num_outputs());
+  EXPECT_EQ(testing::ExpectEvaluatorJacobianMatchesCentralDifferences(ev, x, check),
+            ev.num_vars() * ev.num_outputs());
 }
 
 LcrSizingSpec LcrIISpec(LcrConstraintForm form) {

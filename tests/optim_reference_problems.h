@@ -38,6 +38,25 @@ inline objectives::Problem Hs71(double unit_scale = 1.0) {
 }
 constexpr double kHs71Optimum = 17.0140173;
 
+/// A convex QP whose optimum has a general constraint and a variable bound active:
+///   min (x − 3)² + (y − 2)²  s.t. x + y <= 2,  −10 <= x <= 10,  −10 <= y <= 0.25,  start (0, 0).
+/// KKT by hand: with y at its upper bound 0.25, x + y = 2 gives x = 1.75; ∇f = (−2.5, −3.5) and
+/// ∇f + λ (1, 1) + μ (0, 1) = 0 give λ = 2.5 >= 0 and μ = 1 >= 0. A KKT point of a convex problem
+/// is its global minimum: x* = (1.75, 0.25), f* = 1.25² + 1.75² = 4.625.
+inline objectives::Problem QpWithActiveConstraintAndBound() {
+  objectives::Problem p;
+  p.variables = {{"x", -10.0, 10.0, 0.0, 1.0}, {"y", -10.0, 0.25, 0.0, 1.0}};
+  p.evaluator = objectives::MakeEvaluator<2>(2, {{"f", 0, 1}, {"sum", 1, 1}}, [](auto x, auto y) {
+    y[0] = (x[0] - 3.0) * (x[0] - 3.0) + (x[1] - 2.0) * (x[1] - 2.0);
+    y[1] = x[0] + x[1];
+  });
+  p.objective = "f";
+  p.constraints = {{"sum", -kInf, 2.0, 1.0}};
+  return p;
+}
+constexpr double kQpOptimum = 4.625;
+constexpr double kQpOptimumX = 1.75, kQpOptimumY = 0.25;
+
 /// Rosenbrock restricted to the unit disk: min (1 - x)^2 + 100 (y - x^2)^2 s.t. x^2 + y^2 <= 1,
 /// unbounded variables (real infinities), start at (-0.5, 0.5).
 inline objectives::Problem RosenbrockOnDisk() {

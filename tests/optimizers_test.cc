@@ -1,7 +1,9 @@
 // The solver adapters on shared reference problems with known optima, their statuses on problems
 // that cannot converge, and the Ceres least-squares adapter on fits with known answers.
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,15 +21,22 @@ using optimizers::SolverStatus;
 
 class EveryBackend : public ::testing::TestWithParam<std::string> {};
 
+// A converged result at the known optimum: objective within 1e-5 of f*, x within x_tol of x*,
+// feasible within the solver's constraint tolerance.
+void ExpectKnownOptimum(const optimizers::SolverResult& r, double f_star, const std::vector<double>& x_star,
+                        double x_tol, double constraint_tolerance) {
+  ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
+  EXPECT_NEAR(r.objective, f_star, 1e-5);
+  ASSERT_EQ(r.x.size(), x_star.size());
+  for (size_t i = 0; i < x_star.size(); ++i) EXPECT_NEAR(r.x[i], x_star[i], x_tol) << "x" << i + 1;
+  EXPECT_LE(r.max_violation, constraint_tolerance);
+}
+
 TEST_P(EveryBackend, Hs71ReachesTheKnownOptimum) {
   SolverOptions opt;
   opt.backend = GetParam();
-  const auto r = optimizers::Solve(testing::Hs71(), opt);
-  ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
-  EXPECT_NEAR(r.objective, testing::kHs71Optimum, 1e-5);
-  const double expected[4] = {1.0, 4.7429994, 3.8211503, 1.3794082};
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.x[i], expected[i], 1e-3) << "x" << i + 1;
-  EXPECT_LE(r.max_violation, opt.constraint_tolerance);
+  ExpectKnownOptimum(optimizers::Solve(testing::Hs71(), opt), testing::kHs71Optimum,
+                     {1.0, 4.7429994, 3.8211503, 1.3794082}, 1e-3, opt.constraint_tolerance);
 }
 
 TEST_P(EveryBackend, ScalingIsTranslated) {
@@ -98,12 +107,25 @@ TEST_P(EveryBackend, NonFiniteModelGivesNoDesign) {
   EXPECT_TRUE(r.x.empty());
 }
 
-// The LCR sizing reference problem: every backend reaches the same design, and it satisfies every
-// limit in the dense check of the pipeline (3600 angles).
+TEST_P(EveryBackend, QpReachesTheHandComputedKktPoint) {
+  // x* = (1.75, 0.25), f* = 4.625 with x + y <= 2 and y <= 0.25 active (KKT derivation in
+  // tests/optim_reference_problems.h).
+  SolverOptions opt;
+  opt.backend = GetParam();
+  const auto r = optimizers::Solve(testing::QpWithActiveConstraintAndBound(), opt);
+  ExpectKnownOptimum(r, testing::kQpOptimum, {testing::kQpOptimumX, testing::kQpOptimumY}, 1e-4,
+                     opt.constraint_tolerance);
+  for (const char* a : {"sum", "y upper bound"})
+    EXPECT_NE(std::find(r.active.begin(), r.active.end(), a), r.active.end()) << a;
+}
+
+// The LCR sizing reference problem has no closed-form optimum: every backend reaches the design of
+// another backend (Ipopt's; for Ipopt itself SLSQP's, so that no backend is compared with its own
+// answer), and it satisfies every limit in the dense check of the pipeline (3600 angles).
 TEST_P(EveryBackend, LcrIISizingAgreesAcrossBackends) {
   const auto spec = testing::LcrIISizingSpec();
   SolverOptions opt;
-  opt.backend = "ipopt";
+  opt.backend = GetParam() == "ipopt" ? "nlopt_slsqp" : "ipopt";
   const auto reference = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
   ASSERT_TRUE(reference.ok()) << reference.message;
   opt.backend = GetParam();

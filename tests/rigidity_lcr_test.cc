@@ -373,8 +373,19 @@ TEST(LcrStiffnessStudy, ReducerElementWritesItsCurves) {
   EXPECT_TRUE(std::filesystem::exists(dir / "reducer_1_stiffness.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "reducer_1_lost_motion.svg"));
   // The registered runner writes what the C++ entry points return.
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"))),
-            RunExample("rigidity_lcr_ii.json").json);
+  const nlohmann::json j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(j), RunExample("rigidity_lcr_ii.json").json);
+  // The curve: one row per input angle of the study's angle_steps = 720 over one turn; the study's
+  // 80 N·m over the mean elastic rotation of the rows is result.json's mean secant rigidity.
+  const auto curve = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "reducer_1_stiffness.csv"));
+  const std::vector<double>& deg = curve.at("input_angle_deg");
+  ASSERT_EQ(deg.size(), 720u);
+  EXPECT_EQ(deg.front(), 0.0);
+  for (size_t k = 1; k < deg.size(); ++k) EXPECT_NEAR(deg[k] - deg[k - 1], 0.5, 1e-9) << k;
+  double mean_rotation_rad = 0;
+  for (double v : curve.at("elastic_rotation_arcmin")) mean_rotation_rad += v / 60.0 * kPi / 180.0 / 720.0;
+  const double reported = j["elements"][0]["reducer"]["mean_secant_rigidity_Nm_per_rad"].get<double>();
+  EXPECT_NEAR(80.0 / mean_rotation_rad, reported, 1e-8 * reported);
 }
 
 TEST(LcrStiffnessStudy, ClearanceBecomesBacklashInTheChain) {

@@ -381,13 +381,25 @@ TEST(RigidityStudy, ExamplesRunThroughTheCli) {
         " -o " + dir.string());
     ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
     EXPECT_TRUE(std::filesystem::exists(dir / "result.json"));
-    EXPECT_TRUE(std::filesystem::exists(dir / "elements.csv"));
     // The registered runner writes what the C++ entry points return.
     namespace tr = studies::transmission_rigidity;
     const nlohmann::json study = camopt::testing::Example("rigidity_" + name + ".json");
     const tr::Study s = tr::Parse(studies::Node(&study, name + ".json", ""));
-    EXPECT_EQ(camopt::testing::WithoutRunStamp(nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"))),
-              tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})));
+    const nlohmann::json j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
+    EXPECT_EQ(camopt::testing::WithoutRunStamp(j), tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})));
+    // elements.csv: a row per element of the study's chain; springs in series, so the element
+    // rigidities referred to end B combine as 1/R = Σ 1/R_i to result.json's rigidity, and the
+    // compliance shares sum to 1.
+    const auto table = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "elements.csv"));
+    ASSERT_EQ(table.at("index").size(), study["chain"].size());
+    double compliance = 0, shares = 0;
+    for (size_t i = 0; i < study["chain"].size(); ++i) {
+      compliance += 1.0 / table.at("rigidity_at_end_b_Nm_per_rad")[i];
+      shares += table.at("compliance_share")[i];
+    }
+    const double rigidity = j["rigidity_Nm_per_rad"].get<double>();
+    EXPECT_NEAR(1.0 / compliance, rigidity, 1e-8 * rigidity);
+    EXPECT_NEAR(shares, 1.0, 1e-8);
   }
 }
 

@@ -32,9 +32,17 @@ TEST(Scalar, IfThenElseKeepsTheChosenBranchsDerivative) {
   EXPECT_EQ(hi.v[0], 1.0);
   EXPECT_EQ(lo.a, 2.0);
   EXPECT_EQ(lo.v[0], 0.0);
-  // The comparison looks at the value only: a Jet with a large derivative part compares as 3.
-  const J steep(3.0, 0);
-  EXPECT_EQ(IfThenElse(Compare::kEqual, steep * J(1.0), 3.0, 1.0, 0.0), 1.0);
+  // The comparison looks at the value only: a Jet with a large derivative part (1e8) compares as
+  // its value 3, on either side of the comparison, and the chosen branch carries that derivative.
+  J steep(3.0);
+  steep.v[0] = 1e8;
+  EXPECT_EQ(IfThenElse(Compare::kEqual, steep, 3.0, 1.0, 0.0), 1.0);
+  EXPECT_EQ(IfThenElse(Compare::kLess, steep, 3.0 + 1e-9, 1.0, 0.0), 1.0);
+  EXPECT_EQ(IfThenElse(Compare::kGreater, 3.0 + 1e-9, steep, 1.0, 0.0), 1.0);
+  // d/dv (2 steep) = 2e8 through the then branch; the else branch's derivative 0 is not mixed in.
+  const J chosen = IfThenElse(Compare::kLessEqual, steep, 3.0, 2.0 * steep, J(0.0));
+  EXPECT_EQ(chosen.a, 6.0);
+  EXPECT_EQ(chosen.v[0], 2e8);
 }
 
 }  // namespace
