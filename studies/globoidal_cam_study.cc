@@ -90,7 +90,7 @@ std::string SpeedTag(double rpm) { return Format(rpm) + "rpm"; }
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "cam", "motion", "load", "contact", "dynamics",
+  root.CheckKnownFields({"study", "name", "description", "cam", "motion", "load", "contact", "dynamics",
                           "analysis", "export", "geometry_files"});
   Study s;
   s.name = root.StringOr("name", "globoidal cam");

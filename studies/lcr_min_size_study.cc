@@ -560,6 +560,7 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 }
 
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
+CAMOPT_REGISTER_STUDY_PARSER("lcr_min_size", [](const Node& root) { (void)Parse(root); });
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the optimizer's tolerance and
 // the angle samples of the smooth phase (the reported numbers come from the 3600-angle check);
