@@ -240,6 +240,8 @@ Study Parse(const Node& root) {
   fixed.CheckKnownFields({"cam_thickness_mm", "roller_length_mm", "crowning"});
   b.cam_thickness_mm = fixed["cam_thickness_mm"].Positive();
   if (root.Has("roller_catalogue")) {
+    if (fixed.Has("roller_length_mm"))
+      fixed["roller_length_mm"].FailWith("no fixed roller length with a roller catalogue (the catalogue gives the lengths)");
     Node cat = root["roller_catalogue"];
     if (cat.json().is_object()) {
       // {"file": "rollers.json"}, relative to the study file.
