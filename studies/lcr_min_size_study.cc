@@ -240,8 +240,6 @@ Study Parse(const Node& root) {
   fixed.CheckKnownFields({"cam_thickness_mm", "roller_length_mm", "crowning"});
   b.cam_thickness_mm = fixed["cam_thickness_mm"].Positive();
   if (root.Has("roller_catalogue")) {
-    if (fixed.Has("roller_length_mm"))
-      fixed["roller_length_mm"].FailWith("no fixed roller length with a roller catalogue (the catalogue gives the lengths)");
     Node cat = root["roller_catalogue"];
     if (cat.json().is_object()) {
       // {"file": "rollers.json"}, relative to the study file.
@@ -261,6 +259,8 @@ Study Parse(const Node& root) {
 
   if (!b.same_roller && !s.catalogue.empty())
     vars["same_roller_on_both_cams"].Fail("true with a roller catalogue (each catalogue roller is used on both cams)");
+  if (!s.catalogue.empty() && fixed.Has("roller_length_mm"))
+    fixed["roller_length_mm"].FailWith("no fixed roller length with a roller catalogue (the catalogue gives the lengths)");
 
   const Node limits = root["limits"];
   limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "undercut_margin_mm", "roller_gap_mm", "min_efficiency"});
