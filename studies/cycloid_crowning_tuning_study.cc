@@ -189,7 +189,7 @@ Study Parse(const Node& root) {
   // The shorthand: "tuning.coefficient_mm" (and optionally effective_length_mm) with COBYLA.
   if (root.Has("optimizer")) {
     const Node o = root["optimizer"];
-    o.CheckKnownFields({"backend"});
+    o.CheckKnownFields({"backend", "max_evaluations"});
     if (o["backend"].String() != "cobyla")
       o["backend"].Fail("\"cobyla\" (the tuning.coefficient_mm shorthand is value-only; use \"variables\" for gradients)");
   }
@@ -228,6 +228,8 @@ Study Parse(const Node& root) {
   s.reference_coefficient_mm = tuning.NonNegativeOr("reference_coefficient_mm", 0.005);
   s.curve_points = tuning.IntegerOr("curve_points", 2, 11);
   s.max_evaluations = tuning.IntegerOr("max_evaluations", 1, 30);
+  // optimizer.max_evaluations wins over tuning.max_evaluations, as in the general form.
+  if (root.Has("optimizer")) s.max_evaluations = root["optimizer"].IntegerOr("max_evaluations", 1, s.max_evaluations);
   s.required_edge_margin_um = tuning.NumberOr("edge_margin_um", 0.0);
   if (s.curve_points > 200) tuning["curve_points"].Fail("at most 200 points");
   ParseAnalysis(root, s);

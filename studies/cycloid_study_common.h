@@ -71,6 +71,8 @@ inline cycloid::Drive ParseDrive(const Node& root) {
   drive.roller_radius_mm = d["roller_radius_mm"].Positive();
   drive.eccentricity_mm = d["eccentricity_mm"].Positive();
   drive.face_width_mm = d["face_width_mm"].Positive();
+  // The cam's bore: read by cycloid_ltca (geometry files); a number > 0 wherever it is given.
+  if (d.Has("bore_diameter_mm")) d["bore_diameter_mm"].Positive();
   if (root.Has("modification")) {
     const Node m = root["modification"];
     m.CheckKnownFields({"delta_position_um", "delta_radius_um"});

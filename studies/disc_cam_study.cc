@@ -367,6 +367,12 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                              {"at_min_cam_angle_deg", r.min_pressure_angle_deg.cam_angle_deg},
                              {"max", r.max_pressure_angle_deg.value},
                              {"at_max_cam_angle_deg", r.max_pressure_angle_deg.cam_angle_deg}};
+  // "warnings" only when there is one (RunStudy adds the list to every result.json).
+  if (const double worst = std::max(std::abs(r.min_pressure_angle_deg.value), std::abs(r.max_pressure_angle_deg.value));
+      worst > dc::kHighPressureAngle / kDeg)
+    j["warnings"].push_back("the pressure angle reaches " + Format(worst) + " deg, above the " +
+                            Format(dc::kHighPressureAngle / kDeg) +
+                            " deg warning limit (docs/disc_cam.md): large side thrust on the follower, near jamming");
   j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
   j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
                                       {"max", r.cos_shift_over_cos_pressure.max}};

@@ -90,7 +90,7 @@ std::string SpeedTag(double rpm) { return Format(rpm) + "rpm"; }
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "cam", "motion", "load", "contact", "dynamics",
+  root.CheckKnownFields({"study", "name", "description", "cam", "motion", "load", "contact", "dynamics",
                           "analysis", "export", "geometry_files"});
   Study s;
   s.name = root.StringOr("name", "globoidal cam");
@@ -412,6 +412,11 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   const auto& margin = r.survey.min_undercut_margin;
   const auto& rcontact = r.survey.min_contact_radius;
   j["max_pressure_angle_deg"] = alpha.value / kDeg;
+  // "warnings" only when there is one (RunStudy adds the list to every result.json).
+  if (alpha.value > globoidal::kHighPressureAngle)
+    j["warnings"].push_back("the pressure angle reaches " + Format(alpha.value / kDeg) + " deg, above the " +
+                            Format(globoidal::kHighPressureAngle / kDeg) +
+                            " deg warning limit (docs/globoidal.md): large side thrust on the turret, near jamming");
   j["max_pressure_angle_at"] = {{"cam_angle_deg", alpha.cam_angle_rad / kDeg},
                                 {"axis_mm", alpha.axis_mm},
                                 {"roller", alpha.roller}};

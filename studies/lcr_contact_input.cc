@@ -9,6 +9,11 @@ lcr::RollerCrowning<double> ParseRollerCrowning(const Node& n, double roller_len
   n.CheckKnownFields({"type", "radius_mm", "flat_length_mm", "coefficient_mm", "effective_length_mm"});
   lcr::RollerCrowning<double> c;
   const std::string type = n["type"].String();
+  // Each form takes its own fields only (a field of another form would be silently ignored).
+  if (type == "none") n.CheckKnownFields({"type"});
+  if (type == "circular") n.CheckKnownFields({"type", "radius_mm"});
+  if (type == "partial") n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
+  if (type == "logarithmic") n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm"});
   if (type == "none") {
     c.type = contact::CrowningType::kNone;
   } else if (type == "circular") {

@@ -18,6 +18,9 @@ lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning) {
   c.roller_radius = s["roller_diameter_mm"].Positive() / 2;
   c.roller_length = s["roller_length_mm"].Positive();
   c.cam_thickness = s["cam_thickness_mm"].Positive();
+  // Read by some kinds only (geometry files, the cutter offset): a number > 0 wherever given.
+  for (const char* optional : {"cutter_diameter_mm", "bore_diameter_mm"})
+    if (s.Has(optional)) s[optional].Positive();
   return c;
 }
 

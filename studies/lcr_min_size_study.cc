@@ -259,6 +259,8 @@ Study Parse(const Node& root) {
 
   if (!b.same_roller && !s.catalogue.empty())
     vars["same_roller_on_both_cams"].Fail("true with a roller catalogue (each catalogue roller is used on both cams)");
+  if (!s.catalogue.empty() && fixed.Has("roller_length_mm"))
+    fixed["roller_length_mm"].FailWith("no fixed roller length with a roller catalogue (the catalogue gives the lengths)");
 
   const Node limits = root["limits"];
   limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "undercut_margin_mm", "roller_gap_mm", "min_efficiency"});
@@ -560,6 +562,7 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 }
 
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
+CAMOPT_REGISTER_STUDY_PARSER("lcr_min_size", [](const Node& root) { (void)Parse(root); });
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the optimizer's tolerance and
 // the angle samples of the smooth phase (the reported numbers come from the 3600-angle check);

@@ -308,17 +308,45 @@ std::vector<std::string> StudyKinds() {
   return kinds;
 }
 
-Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
-  const Node root(&study, ctx.study_file, "");
-  if (!study.is_object()) root.Fail("a study object");
+namespace {
+std::map<std::string, StudyParser>& ParserRegistry() {
+  static std::map<std::string, StudyParser> registry;
+  return registry;
+}
+}  // namespace
+
+bool RegisterStudyParser(const std::string& kind, StudyParser parser) {
+  ParserRegistry()[kind] = std::move(parser);
+  return true;
+}
+
+std::string CheckCommonFields(const Node& root) {
+  if (!root.json().is_object()) root.Fail("a study object");
   const Node kind_node = root["study"];
   const std::string kind = kind_node.String();
-  auto it = Registry().find(kind);
-  if (it == Registry().end()) {
+  if (Registry().find(kind) == Registry().end()) {
     std::string known;
     for (const auto& k : StudyKinds()) known += (known.empty() ? "" : ", ") + k;
     kind_node.Fail("a known study kind (" + known + ")");
   }
+  // Every kind takes a name and a description (free text; the schemas say "type": "string").
+  for (const char* text : {"name", "description"})
+    if (root.Has(text)) root[text].String();
+  return kind;
+}
+
+void CheckStudy(const nlohmann::json& study, const std::string& file) {
+  const Node root(&study, file, "");
+  const std::string kind = CheckCommonFields(root);
+  const auto it = ParserRegistry().find(kind);
+  if (it == ParserRegistry().end()) throw std::logic_error("study kind " + kind + " has no registered parser");
+  it->second(root);
+}
+
+Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
+  const Node root(&study, ctx.study_file, "");
+  const std::string kind = CheckCommonFields(root);
+  auto it = Registry().find(kind);
   CheckWorkLimits(study, ctx.study_file, ctx.max_work_factor);
   const std::vector<std::string> implausible = PlausibilityWarnings(study);
   if (!ctx.quiet)

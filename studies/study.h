@@ -119,6 +119,21 @@ using StudyRunner = std::function<void(const Node& root, const RunContext&, Outp
 bool RegisterStudy(const std::string& kind, StudyRunner runner);
 std::vector<std::string> StudyKinds();
 
+/// The parse step of a kind alone (its Parse: every check of the file, nothing run).
+using StudyParser = std::function<void(const Node& root)>;
+/// Registers the parse step of a kind (CAMOPT_REGISTER_STUDY_KIND does it); returns true.
+bool RegisterStudyParser(const std::string& kind, StudyParser parser);
+
+/// The checks every kind shares before its own: a study object, a known "study" kind, and "name"
+/// and "description" strings when given (StudyError otherwise). Returns the kind.
+std::string CheckCommonFields(const Node& root);
+
+/// Checks a study as `camopt run` does before running it (CheckCommonFields, then the kind's
+/// Parse), without running it: StudyError (exit 2) for what the run would refuse as bad input.
+/// The work limits (studies/work_limits.h) are not checked. tests/schema_parser_agreement_test.cc
+/// compares it with the kind's JSON Schema.
+void CheckStudy(const nlohmann::json& study, const std::string& file);
+
 /// A fidelity setting of a study kind, refined and coarsened by `camopt run --convergence`
 /// (studies/convergence.h).
 struct FidelityKnob {
@@ -192,4 +207,10 @@ double Finite(double value, const std::string& what);
                                  ::camopt::studies::Outputs& out) {                             \
     const auto study = Parse(root);                                                             \
     Write(study, Run(study, ctx), out);                                                         \
-  })
+  });                                                                                           \
+  CAMOPT_REGISTER_STUDY_PARSER(kind, [](const ::camopt::studies::Node& root) { (void)Parse(root); })
+
+/// Registers the parse step of a kind registered with CAMOPT_REGISTER_STUDY (for CheckStudy).
+#define CAMOPT_REGISTER_STUDY_PARSER(kind, fn) \
+  static const bool CAMOPT_CONCAT(camopt_study_parser_registered_, __LINE__) = \
+      ::camopt::studies::RegisterStudyParser(kind, fn)

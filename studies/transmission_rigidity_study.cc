@@ -234,8 +234,14 @@ std::string KindAdvice(const std::string& kind) {
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "material", "chain", "load_torque_Nm", "report_radius_mm"});
   // The chain's material serves every element, so it may hold the fields of any of them.
-  if (root.Has("material"))
-    root["material"].CheckKnownFields({"shear_modulus_GPa", "youngs_modulus_GPa", "poisson_ratio"});
+  if (root.Has("material")) {
+    const Node m = root["material"];
+    m.CheckKnownFields({"shear_modulus_GPa", "youngs_modulus_GPa", "poisson_ratio"});
+    // Each field is read by the elements that need it; a given one is checked here either way.
+    if (m.Has("shear_modulus_GPa")) m["shear_modulus_GPa"].Positive();
+    if (m.Has("youngs_modulus_GPa")) m["youngs_modulus_GPa"].Positive();
+    if (m.Has("poisson_ratio")) m["poisson_ratio"].NumberIn(0.0, 0.4999);
+  }
   Study s;
   s.name = root.StringOr("name", "transmission");
   const Node chain = root["chain"];

@@ -13,6 +13,7 @@
 
 #include "model/common/scalar.h"
 #include "studies/disc_cam_study.h"
+#include "studies/study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -264,6 +265,30 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"stage_input", kT, R"({"tolerances": null, "analysis": {"evaluate": ["error"]}})",
                 "/tolerances", "missing"}),
     [](const ::testing::TestParamInfo<BadCase>& p) { return std::string(p.param.name); });
+
+// A pressure angle of 88° is feasible (the jam limit is 89°) but gets a line in the result's
+// warnings above model/disc_cam/check.h kHighPressureAngle (45°); the paper example (30.6°) none.
+TEST(DiscCamStudy, HighPressureAngleIsAWarning) {
+  const auto warnings_of = [](const json& study) {
+    RunContext ctx;
+    ctx.quiet = true;
+    const studies::Outputs out = studies::RunStudy(study, ctx);
+    return json::parse(out.files().at("result.json"))["warnings"];
+  };
+  json steep = Example("disc_cam_translating.json");
+  steep.erase("tolerances");
+  steep["analysis"].erase("monte_carlo");
+  steep["motion"] = json::parse(R"([{"law": "cycloidal", "rise_mm": 24, "cam_angle_deg": 1.5},
+      {"law": "dwell", "cam_angle_deg": 168.5}, {"law": "cycloidal", "rise_mm": -24, "cam_angle_deg": 120},
+      {"law": "dwell", "cam_angle_deg": 70}])");
+  const json w = warnings_of(steep);
+  ASSERT_EQ(w.size(), 1u) << w.dump();
+  EXPECT_NE(w[0].get<std::string>().find("the pressure angle reaches 88.1"), std::string::npos) << w.dump();
+  EXPECT_NE(w[0].get<std::string>().find("45 deg warning limit"), std::string::npos) << w.dump();
+  json plain = Example("disc_cam_translating.json");
+  plain["analysis"].erase("monte_carlo");
+  EXPECT_TRUE(warnings_of(plain).empty());
+}
 
 }  // namespace
 }  // namespace camopt

@@ -14,6 +14,10 @@ namespace camopt::disc_cam {
 
 /// Pressure angle at which the follower is taken to jam [rad] (89°).
 inline constexpr double kJamPressureAngle = 89.0 * (kPi / 180.0);
+/// Pressure angle above which a study warns [rad] (45°, docs/disc_cam.md "Pressure angle
+/// warning"): the contact force exceeds √2 × the force that drives the follower and the side thrust
+/// equals it; the design works but is close to the self-locking that kJamPressureAngle refuses.
+inline constexpr double kHighPressureAngle = 45.0 * (kPi / 180.0);
 
 enum class IssueKind {
   /// Translating: |e| ≥ r_b + r_f, the follower cannot touch the base circle.

@@ -20,6 +20,10 @@ namespace camopt::globoidal {
 
 /// Pressure angle at which the turret is taken to jam [rad] (89°).
 inline constexpr double kJamPressureAngle = 89.0 * (kPi / 180.0);
+/// Pressure angle above which a study warns [rad] (45°, docs/globoidal.md "Pressure angle
+/// warning"): the contact force exceeds √2 × the force that drives the turret and the side thrust
+/// equals it; the design works but is close to the self-locking that kJamPressureAngle refuses.
+inline constexpr double kHighPressureAngle = 45.0 * (kPi / 180.0);
 
 /// Thickness of the rib between the two rollers at the turret-side end of the rollers (l = l₂):
 /// 2 l₂ sin(β/2) − 2R [mm]; ≤ 0 when the rollers overlap.
