@@ -1,0 +1,287 @@
+// Rolling-bearing life: ISO 281:2007 basic rating life, the equivalent load of a load that varies
+// over a revolution and over a duty cycle, Palmgren–Miner damage summation, the static safety
+// factor, and a smooth life margin for sizing. Over the scalar T (double or ceres::Jet).
+// Units: forces N, speeds rpm, lives in millions of revolutions (_Mrev) or hours (_h).
+//
+// ISO 281:2007 §5.3 (radial ball) and §6.3 (radial roller bearings): the basic rating life
+// L10 = (C/P)^p [10⁶ rev], p = 3 for ball and 10/3 for roller bearings; at a constant speed n,
+// L10h = 10⁶ L10 / (60 n) [h]. (The modified life L_nm = a1 a_ISO L10 of §9 is not modelled.)
+// A load F(θ) that varies over a revolution has the constant equivalent load of the same life,
+//   P = ( (1/2π) ∫₀^{2π} F(θ)^p dθ )^(1/p),
+// the revolution-weighted p-mean (the cubic mean for balls). For a duty cycle of lines i with
+// time shares t_i and speeds n_i, line i turns a share t_i n_i / Σ t_j n_j of the revolutions, and
+// Palmgren–Miner damage summation (Palmgren 1924; Miner 1945) gives 1/L10h = Σ t_i / L10h,i. Both
+// routes give the same life (the algebra is in DutyCycleLifeHours's comment; tests/bearing_life_test.cc
+// checks it).
+//
+// A stationary line (n = 0) adds no revolutions and no fatigue damage; it is judged by the static
+// safety factor s0 = C0 / P0 instead (C0 and P0 per ISO 76:2006; s0 as the catalogues define it).
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/common/scalar.h"
+
+namespace camopt {
+
+/// Ball or roller bearing: selects the life exponent p of ISO 281:2007.
+enum class BearingKind { kBall, kRoller };
+
+/// The life exponent p of ISO 281:2007 §5.3 / §6.3: 3 for ball, 10/3 for roller bearings.
+inline double LifeExponent(BearingKind kind) { return kind == BearingKind::kBall ? 3.0 : 10.0 / 3.0; }
+
+/// Tolerance on the sum of a duty cycle's time shares: |Σ t_i − 1| <= kTimeShareSumTolerance.
+inline constexpr double kTimeShareSumTolerance = 1e-9;
+
+/// One line of a duty cycle: the share of time it runs, its speed, and the bearing's load sampled
+/// at N uniform angles θ_k = 2π k / N of one revolution (or one load cycle) of that line.
+/// @tparam T double or ceres::Jet (speeds and loads may carry derivatives; shares are data).
+template <typename T>
+struct DutyCycleLine {
+  double time_share = 1.0;   ///< t_i, in [0, 1]; the shares of a duty cycle sum to 1
+  T speed_rpm = T(0.0);      ///< n_i [rpm], >= 0
+  std::vector<T> loads_N;    ///< F_ik [N], finite, >= 0, at uniform angles; at least one
+};
+
+namespace bearing_life_internal {
+
+[[noreturn]] inline void Reject(const std::string& field, const std::string& requirement, double found) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "bearing life: " << field << " must be " << requirement << ", found " << found;
+  throw std::invalid_argument(os.str());
+}
+
+template <typename T>
+void CheckPositive(const std::string& field, const T& x) {
+  const double v = Value(x);
+  if (!(std::isfinite(v) && v > 0.0)) Reject(field, "finite and > 0", v);
+}
+
+template <typename T>
+void CheckNonNegative(const std::string& field, const T& x) {
+  const double v = Value(x);
+  if (!(std::isfinite(v) && v >= 0.0)) Reject(field, "finite and >= 0", v);
+}
+
+template <typename T>
+void CheckLoads(const std::string& field, const std::vector<T>& loads) {
+  if (loads.empty()) Reject(field + ".size()", ">= 1", 0.0);
+  for (size_t k = 0; k < loads.size(); ++k) CheckNonNegative(field + "[" + std::to_string(k) + "]", loads[k]);
+}
+
+/// The largest value of the samples as a double (a constant scale; 0 when every sample is 0).
+template <typename T>
+double LargestValue(const std::vector<T>& loads) {
+  double s = 0.0;
+  for (const T& f : loads) s = std::max(s, Value(f));
+  return s;
+}
+
+/// (1/N) Σ_k (F_k / s)^p for a constant scale s > 0.
+template <typename T>
+T ScaledMeanOfPower(const std::vector<T>& loads, double scale, double p) {
+  using std::pow;
+  T sum(0.0);
+  for (const T& f : loads) sum += pow(f / scale, p);
+  return sum / double(loads.size());
+}
+
+}  // namespace bearing_life_internal
+
+/// Checks a duty cycle: at least one line; shares >= 0 summing to 1 within kTimeShareSumTolerance;
+/// speeds finite >= 0, at least one > 0 (no revolutions, no rating life); loads finite >= 0.
+/// @throws std::invalid_argument naming the field (`duty_cycle[i].speed_rpm`, ...) and its value.
+template <typename T>
+void ValidateDutyCycle(const std::vector<DutyCycleLine<T>>& lines) {
+  using bearing_life_internal::Reject;
+  if (lines.empty()) Reject("duty_cycle.size()", ">= 1", 0.0);
+  double share_sum = 0.0, speed_max = 0.0;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::string line = "duty_cycle[" + std::to_string(i) + "]";
+    const double t = lines[i].time_share;
+    if (!(std::isfinite(t) && t >= 0.0 && t <= 1.0)) Reject(line + ".time_share", "in [0, 1]", t);
+    share_sum += t;
+    bearing_life_internal::CheckNonNegative(line + ".speed_rpm", lines[i].speed_rpm);
+    speed_max = std::max(speed_max, Value(lines[i].speed_rpm));
+    bearing_life_internal::CheckLoads(line + ".loads_N", lines[i].loads_N);
+  }
+  if (!(std::abs(share_sum - 1.0) <= kTimeShareSumTolerance))
+    Reject("the sum of duty_cycle[*].time_share", "1 (within 1e-9)", share_sum);
+  if (!(speed_max > 0.0)) Reject("the largest duty_cycle[*].speed_rpm", "> 0 (no revolutions, no rating life)", 0.0);
+}
+
+/// ISO 281:2007 §5.3 / §6.3: the basic rating life L10 = (C/P)^p [10⁶ revolutions].
+/// P = 0 gives +∞ (no load, no fatigue).
+/// @tparam T double or ceres::Jet.  @param dynamic_rating_N C [N], > 0.
+/// @param equivalent_load_N P [N], finite, >= 0.  @param kind ball (p = 3) or roller (p = 10/3).
+/// @throws std::invalid_argument for C <= 0 or a negative or non-finite P.
+template <typename T>
+T BasicRatingLifeMrev(const T& dynamic_rating_N, const T& equivalent_load_N, BearingKind kind) {
+  using std::pow;
+  bearing_life_internal::CheckPositive("C_N", dynamic_rating_N);
+  bearing_life_internal::CheckNonNegative("P_N", equivalent_load_N);
+  if (Value(equivalent_load_N) == 0.0) return T(kInf);
+  return pow(dynamic_rating_N / equivalent_load_N, LifeExponent(kind));
+}
+
+/// ISO 281:2007 §5.3 / §6.3: the basic rating life in operating hours at a constant speed,
+/// L10h = 10⁶ L10 / (60 n). n = 0 gives +∞ (no revolutions).
+/// @param life_Mrev L10 [10⁶ rev], >= 0.  @param speed_rpm n [rpm], finite, >= 0.
+/// @throws std::invalid_argument for a negative life or a negative or non-finite speed.
+template <typename T>
+T RatingLifeHours(const T& life_Mrev, const T& speed_rpm) {
+  const double l = Value(life_Mrev);
+  if (!(l >= 0.0)) bearing_life_internal::Reject("L10_Mrev", ">= 0", l);
+  bearing_life_internal::CheckNonNegative("speed_rpm", speed_rpm);
+  if (Value(speed_rpm) == 0.0) return T(kInf);
+  return T(1e6) * life_Mrev / (T(60.0) * speed_rpm);
+}
+
+/// The equivalent load of a load varying over one revolution: the revolution-weighted p-mean
+///   P = ( (1/2π) ∫ F(θ)^p dθ )^(1/p)  ≈  ( (1/N) Σ_k F(θ_k)^p )^(1/p),  θ_k = 2π k / N.
+/// Quadrature: the uniform-sample mean is the trapezoidal rule on a periodic integrand. For a
+/// smooth periodic load it is spectrally accurate: exact when F^p is a trigonometric polynomial of
+/// degree < N (F = F0 (1 + a cos θ) with p = 3 from N = 4 on), and with error O(e^{−σN}) when F^p
+/// is analytic in a strip |Im θ| < σ (any F > 0 smooth). For a load that is zero over part of the
+/// cycle (a roller out of contact), the error is set by how the load leaves zero: F rising
+/// linearly from 0 at the ends of the loaded arc makes F^p ~ (θ − θ0)₊^p, whose Fourier
+/// coefficients fall as |m|^−(p+1), and the error in the mean of F^p is O(N^−(p+1)) (N^−4 for
+/// balls, N^−13/3 for rollers); a load that jumps at an end (by Δ in F^p) adds an error below
+/// |Δ|/N per jump — first order, the case where N matters. The relative error of P is 1/p of the
+/// relative error of the mean of F^p. At P = 0 (every sample 0) the p-mean is not differentiable
+/// (it is a norm at the origin); there it returns 0 with zero derivative.
+/// @param loads_N F(θ_k) [N] at uniform angles, finite, >= 0, at least one.
+/// @throws std::invalid_argument for no samples or a negative or non-finite sample.
+template <typename T>
+T EquivalentLoad(const std::vector<T>& loads_N, BearingKind kind) {
+  using std::pow;
+  bearing_life_internal::CheckLoads("loads_N", loads_N);
+  const double p = LifeExponent(kind);
+  // Scaled by the largest sample (a constant), so F^p cannot overflow: P = s (mean (F/s)^p)^(1/p).
+  const double s = bearing_life_internal::LargestValue(loads_N);
+  if (s == 0.0) return T(0.0);
+  return T(s) * pow(bearing_life_internal::ScaledMeanOfPower(loads_N, s, p), 1.0 / p);
+}
+
+/// The duty cycle's time-mean speed n̄ = Σ t_i n_i [rpm]: revolutions per minute over the spectrum.
+/// @throws std::invalid_argument as ValidateDutyCycle.
+template <typename T>
+T DutyCycleMeanSpeed(const std::vector<DutyCycleLine<T>>& lines) {
+  ValidateDutyCycle(lines);
+  T n(0.0);
+  for (const auto& line : lines) n += line.time_share * line.speed_rpm;
+  return n;
+}
+
+/// The equivalent load over a duty cycle: the revolution-weighted p-mean over every angle of every
+/// line, line i weighted by its share of the revolutions w_i = t_i n_i / n̄:
+///   P = ( Σ_i w_i · (1/N_i) Σ_k F_ik^p )^(1/p).
+/// With n̄ from DutyCycleMeanSpeed, L10h = 10⁶ (C/P)^p / (60 n̄) is the life of the duty cycle.
+/// The quadrature error per line is EquivalentLoad's. P = 0 (every sample 0) has zero derivative.
+/// @throws std::invalid_argument as ValidateDutyCycle.
+template <typename T>
+T DutyCycleEquivalentLoad(const std::vector<DutyCycleLine<T>>& lines, BearingKind kind) {
+  using std::pow;
+  const T n_mean = DutyCycleMeanSpeed(lines);
+  const double p = LifeExponent(kind);
+  double s = 0.0;
+  for (const auto& line : lines) s = std::max(s, bearing_life_internal::LargestValue(line.loads_N));
+  if (s == 0.0) return T(0.0);
+  T weighted(0.0);
+  for (const auto& line : lines)
+    weighted += line.time_share * line.speed_rpm * bearing_life_internal::ScaledMeanOfPower(line.loads_N, s, p);
+  return T(s) * pow(weighted / n_mean, 1.0 / p);
+}
+
+namespace bearing_life_internal {
+
+/// Palmgren–Miner damage rate per hour over the duty cycle, divided by (s/C)^p:
+///   D_h = Σ_i t_i / L10h,i = Σ_i t_i · 60 n_i (P_i/C)^p / 10⁶ = (s/C)^p · R,
+///   R = (60/10⁶) Σ_i t_i n_i (1/N_i) Σ_k (F_ik/s)^p,
+/// with s the largest load sample (a constant scale). Returns R; s through `scale`.
+template <typename T>
+T ScaledMinerDamageRate(const std::vector<DutyCycleLine<T>>& lines, BearingKind kind, double* scale) {
+  const double p = LifeExponent(kind);
+  double s = 0.0;
+  for (const auto& line : lines) s = std::max(s, LargestValue(line.loads_N));
+  *scale = s;
+  T r(0.0);
+  if (s == 0.0) return r;
+  for (const auto& line : lines) r += line.time_share * line.speed_rpm * ScaledMeanOfPower(line.loads_N, s, p);
+  return T(60.0 / 1e6) * r;
+}
+
+}  // namespace bearing_life_internal
+
+/// The basic rating life of a duty cycle in hours by Palmgren–Miner: 1/L10h = Σ_i t_i / L10h,i,
+/// L10h,i = 10⁶ (C/P_i)^p / (60 n_i), P_i the line's EquivalentLoad. Summing the damage rates,
+///   Σ_i t_i 60 n_i P_i^p / (10⁶ C^p) = 60 n̄ / (10⁶ C^p) · Σ_i (t_i n_i / n̄) P_i^p
+///                                    = 60 n̄ P^p / (10⁶ C^p),
+/// with P = DutyCycleEquivalentLoad and n̄ = DutyCycleMeanSpeed: the same life as
+/// RatingLifeHours(BasicRatingLifeMrev(C, P), n̄). Zero damage (every load 0) gives +∞.
+/// @param dynamic_rating_N C [N], > 0.
+/// @throws std::invalid_argument for C <= 0 and as ValidateDutyCycle.
+template <typename T>
+T DutyCycleLifeHours(const T& dynamic_rating_N, const std::vector<DutyCycleLine<T>>& lines, BearingKind kind) {
+  using std::pow;
+  bearing_life_internal::CheckPositive("C_N", dynamic_rating_N);
+  ValidateDutyCycle(lines);
+  double s = 0.0;
+  const T r = bearing_life_internal::ScaledMinerDamageRate(lines, kind, &s);
+  if (Value(r) == 0.0) return T(kInf);
+  return pow(dynamic_rating_N / s, LifeExponent(kind)) / r;
+}
+
+/// A life margin for sizing: m = ln(L10h / L10h_required), >= 0 when the duty cycle's life
+/// (DutyCycleLifeHours) reaches the required hours. In logarithms it is smooth wherever some load
+/// is positive, of order one over decades of life, and linear in ln C and in ln of each line's
+/// equivalent load: ∂m/∂ln C = p, ∂m/∂ln P_i = −p · (line i's share of the damage). Computed as
+///   m = p ln(C/s) − ln R − ln L10h_required   (s, R of the Miner sum; no overflow).
+/// Zero damage (every load 0) gives +∞ with zero derivative.
+/// @param dynamic_rating_N C [N], > 0.  @param required_life_h L10h_required [h], > 0.
+/// @throws std::invalid_argument for C <= 0, a required life <= 0, and as ValidateDutyCycle.
+template <typename T>
+T LifeMargin(const T& dynamic_rating_N, const std::vector<DutyCycleLine<T>>& lines, BearingKind kind,
+             double required_life_h) {
+  using std::log;
+  bearing_life_internal::CheckPositive("C_N", dynamic_rating_N);
+  bearing_life_internal::CheckPositive("required_life_h", required_life_h);
+  ValidateDutyCycle(lines);
+  double s = 0.0;
+  const T r = bearing_life_internal::ScaledMinerDamageRate(lines, kind, &s);
+  if (Value(r) == 0.0) return T(kInf);
+  return LifeExponent(kind) * log(dynamic_rating_N / s) - log(r) - T(std::log(required_life_h));
+}
+
+/// The static safety factor s0 = C0 / P0max (C0, P0 per ISO 76:2006), P0max the largest static
+/// equivalent load of the samples (for a purely radial load on a radial bearing, the largest
+/// radial force). The derivative is that of the largest sample (HardMax, a subgradient at ties);
+/// a sizing constraint on s0 can use SoftMax (model/common/scalar.h) of the samples instead.
+/// Every sample 0 gives +∞.
+/// @param static_rating_N C0 [N], > 0.  @param loads_N static equivalent loads [N], finite, >= 0.
+/// @throws std::invalid_argument for C0 <= 0, no samples, or a negative or non-finite sample.
+template <typename T>
+T StaticSafetyFactor(const T& static_rating_N, const std::vector<T>& loads_N) {
+  bearing_life_internal::CheckPositive("C0_N", static_rating_N);
+  bearing_life_internal::CheckLoads("loads_N", loads_N);
+  const T p0 = HardMax(loads_N);
+  if (Value(p0) == 0.0) return T(kInf);
+  return static_rating_N / p0;
+}
+
+/// s0 over a duty cycle: C0 over the largest load of any line (stationary lines included).
+/// @throws std::invalid_argument for C0 <= 0 and as ValidateDutyCycle.
+template <typename T>
+T StaticSafetyFactor(const T& static_rating_N, const std::vector<DutyCycleLine<T>>& lines) {
+  ValidateDutyCycle(lines);
+  std::vector<T> all;
+  for (const auto& line : lines) all.insert(all.end(), line.loads_N.begin(), line.loads_N.end());
+  return StaticSafetyFactor(static_rating_N, all);
+}
+
+}  // namespace camopt
