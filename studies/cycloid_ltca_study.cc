@@ -26,12 +26,9 @@ Study Parse(const Node& root) {
   s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
   s.geometry = ParseGeometryFiles(root);
   if (root["drive"].Has("bore_diameter_mm")) {
-    const Node b = root["drive"]["bore_diameter_mm"];
-    s.bore_diameter_mm = b.Positive();
     const double root_diameter = 2 * (s.drive.roller_position_radius_mm - s.drive.eccentricity_mm -
                                       s.drive.roller_radius_mm);
-    if (!(s.bore_diameter_mm < root_diameter))
-      b.Fail("a bore diameter below the disc's root diameter (" + Format(root_diameter, 4) + " mm)");
+    s.bore_diameter_mm = ParseBoreDiameter(root["drive"]["bore_diameter_mm"], root_diameter, "the disc's root diameter");
   }
   // Lazy stages: ["unloaded"] asks for the unloaded TCA only, which needs no material or load.
   if (root.Has("analysis") && root["analysis"].Has("evaluate")) {

@@ -112,17 +112,15 @@ Study Parse(const Node& root) {
   cam.motion = ParseMotionProgram(root["motion"], spec);
 
   s.geometry = ParseGeometryFiles(root);
-  s.cam_thickness_mm = root.PositiveOr("cam_thickness_mm", 0.0);
+  if (root.Has("cam_thickness_mm"))
+    s.cam_thickness_mm = PlausibleLength(root["cam_thickness_mm"], cam.base_radius, "the base circle radius");
   if (root.Has("cutter_radius_mm")) {
     s.cutter_radius_mm = root["cutter_radius_mm"].Positive();
     if (s.cutter_radius_mm > cam.roller_radius)
       root["cutter_radius_mm"].Fail("a cutter radius <= the roller radius (" + Format(cam.roller_radius, 6) + " mm)");
   }
   if (root.Has("bore_diameter_mm")) {
-    s.bore_diameter_mm = root["bore_diameter_mm"].Positive();
-    if (!(s.bore_diameter_mm < 2 * cam.base_radius))
-      root["bore_diameter_mm"].Fail("a bore diameter below the base circle diameter (" +
-                                    Format(2 * cam.base_radius, 6) + " mm)");
+    s.bore_diameter_mm = ParseBoreDiameter(root["bore_diameter_mm"], 2 * cam.base_radius, "the base circle diameter");
   }
   if (root.Has("tolerances")) {
     const Node t = root["tolerances"];

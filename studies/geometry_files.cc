@@ -88,6 +88,15 @@ double ProfileSize(const cad::CurveFunction& f, double t0, double t1) {
 }  // namespace
 
 
+double ParseBoreDiameter(const Node& n, double limit_diameter_mm, const std::string& limit_name) {
+  const double d = n.Positive();
+  const double lo = 1e-3 * limit_diameter_mm, hi = (1 - 2e-3) * limit_diameter_mm;
+  if (!(d >= lo && d <= hi))
+    n.Fail("a bore diameter between " + Format(lo, 4) + " and " + Format(hi, 4) + " mm (0.1% of " + limit_name +
+           " (" + Format(limit_diameter_mm, 4) + " mm) and that diameter less a web of 0.1% each side)");
+  return d;
+}
+
 GeometryFileOptions ParseGeometryFiles(const Node& root) {
   GeometryFileOptions o;
   if (!root.Has("geometry_files")) return o;

@@ -37,6 +37,12 @@ struct GeometryFileOptions {
 /// Reads the optional root block "geometry_files" (defaults when absent or true; false: none).
 GeometryFileOptions ParseGeometryFiles(const Node& root);
 
+/// The optional bore of a part at `n` (a "bore_diameter_mm" field, > 0): between 1e-3 and
+/// 1 − 2e-3 times `limit_diameter_mm` (the diameter the bore must stay inside, named by
+/// `limit_name`, e.g. "the disc's root diameter"), so that the part keeps a bore a shop can drill
+/// and a web its solid model can close. Fails with the range that would fit.
+double ParseBoreDiameter(const Node& n, double limit_diameter_mm, const std::string& limit_name);
+
 /// One planar cam as its geometry files see it. Curves are functions of a parameter over
 /// [t0, t1] (closed curves), in the cam frame [mm].
 struct PlanarCamGeometry {

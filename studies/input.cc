@@ -52,6 +52,19 @@ void AppendShort(const nlohmann::json& j, std::string& out, size_t limit) {
 
 }  // namespace
 
+double PlausibleLength(const Node& n, double scale_mm, const std::string& scale_name) {
+  const double v = n.Positive();
+  const double lo = 1e-6 * scale_mm, hi = 1e6 * scale_mm;
+  if (!(v >= lo && v <= hi)) {
+    std::ostringstream m;
+    m.precision(4);
+    m << "a length between " << lo << " and " << hi << " mm (1e-6 to 1e6 times " << scale_name << ", " << scale_mm
+      << " mm)";
+    n.Fail(m.str());
+  }
+  return v;
+}
+
 std::string Describe(const nlohmann::json& value) {
   if (value.is_null()) return "null";
   std::string text;

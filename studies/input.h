@@ -87,6 +87,12 @@ class Node {
 /// A short description of a JSON value for messages: its text, cut to a sensible length.
 std::string Describe(const nlohmann::json& value);
 
+/// A length [mm] at `n`, > 0 and on the design's own scale: within [1e-6, 1e6] × scale_mm, the
+/// size of the part it belongs to (named by scale_name, e.g. "the turret radius"). Fails with the
+/// range that would fit: a part of 8e-12 mm or of a kilometre is a typing error, and the solid
+/// modeller cannot close it.
+double PlausibleLength(const Node& n, double scale_mm, const std::string& scale_name);
+
 /// Limits on what is read, checked before anything is parsed or allocated for it.
 struct InputLimits {
   /// Largest study or catalogue file read, in bytes (a real study is a few kB).

@@ -128,18 +128,15 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
   return d;
 }
 
-// Optional "bore_diameter_mm" of a cam: positive and inside the smallest profile radius.
+// Optional "bore_diameter_mm" of a cam, inside the smallest profile diameter (ParseBoreDiameter).
 double ParseBoreDiameter(const Node& side, const lcr::Reducer<double>& r, Side s) {
   if (!side.Has("bore_diameter_mm")) return 0.0;
   const Node n = side["bore_diameter_mm"];
-  const double d = n.Positive();
   const lcr::CamSide<double>& c = r.side(s);
   double rmin = kInf;
   for (int i = 0; i < 720; ++i)
     rmin = std::min(rmin, lcr::OffsetPoint(c, r.eccentricity, 2 * kPi * i / 720, c.roller_radius).norm());
-  if (!(d < 2 * rmin))
-    n.Fail("a bore diameter below the cam's smallest profile diameter (" + Format(2 * rmin, 4) + " mm)");
-  return d;
+  return studies::ParseBoreDiameter(n, 2 * rmin, "the cam's smallest profile diameter");
 }
 
 // The finite-length contact model of each cam (studies/lcr_contact_input.h, model/lcr/contact3d_cycle.h).

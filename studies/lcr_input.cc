@@ -16,8 +16,8 @@ lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning) {
     s["rollers"].Fail("more rollers than lobes (" + std::to_string(c.lobes) + ")");
   c.turret_radius = s["turret_radius_mm"].Positive();
   c.roller_radius = s["roller_diameter_mm"].Positive() / 2;
-  c.roller_length = s["roller_length_mm"].Positive();
-  c.cam_thickness = s["cam_thickness_mm"].Positive();
+  c.roller_length = PlausibleLength(s["roller_length_mm"], c.turret_radius, "the turret radius");
+  c.cam_thickness = PlausibleLength(s["cam_thickness_mm"], c.turret_radius, "the turret radius");
   // Read by some kinds only (geometry files, the cutter offset): a number > 0 wherever given.
   for (const char* optional : {"cutter_diameter_mm", "bore_diameter_mm"})
     if (s.Has(optional)) s[optional].Positive();

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "objectives/lcr_min_size.h"
 #include "studies/input.h"
 
 namespace camopt::studies {
@@ -256,7 +257,7 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   const double lobes = Size(search, "max_lobes", 40);
   const json& diffs = Sub(search, "roller_lobe_difference");
   const double n_diffs = diffs.is_array() ? double(diffs.size()) : 1;
-  const double starts = Size(Sub(s, "optimizer"), "starts", 1);
+  const double starts = Size(Sub(s, "optimizer"), "starts", objectives::LcrMinSizeOptions{}.starts);
   double rollers = 1;
   const json& cat = Sub(s, "roller_catalogue");
   if (cat.is_array()) rollers = std::max<double>(1, cat.size());
@@ -301,6 +302,13 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
     terms.push_back({40 * 5 * cells / (48.0 * 128.0), "/contact/grid",
                      "half_space verification on " + Num(cells) + " cells and four times as many"});
   }
+  // When nothing fits, the message names the limit that would fit (objectives::LimitToFit: up to 13
+  // solves of the closest combination, each up to 8 polish rounds of an infeasible problem, measured
+  // at about 4 units a round and start); a converged result prices its binding limits with fewer
+  // re-solves than that. Counted always: whether anything fits is not known before the search.
+  terms.push_back({13 * 8 * 4 * starts * per_start, "/limits",
+                   "if nothing fits: up to 13 solves × 8 polish rounds × " + Num(starts) +
+                       " starts to find the limit that would fit"});
   const json& mc = Sub(s, "monte_carlo");
   if (s.contains("robust")) {
     // Two Monte-Carlo checks (robust and nominal best): a sample of 720 angles ≈ 36 ms ≈ 1 unit.

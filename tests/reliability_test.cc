@@ -298,6 +298,7 @@ TEST(BadInput, ExtremeSizesAndEqualBoundsExitWith2) {
   json s = Example("disc_cam_translating.json");
   s["base_circle_radius_mm"] = 1e308;
   s["analysis"]["monte_carlo"] = false;
+  s.erase("cam_thickness_mm");  // 12 mm would be refused first (off the part's scale)
   ExpectRefusedQuickly("disc-1e308", Write(dir, "a.json", s), "/: ", "not a finite number");
   s = Example("disc_cam_translating.json");
   s["follower"]["roller_radius_mm"] = 1e-6;
@@ -437,6 +438,28 @@ TEST(BadInput, ImplausibleCycloidDrivesAreRefusedBeforeWork) {
   s = Example("cycloid_crowning_tuning_nnm.json");
   s["drive"]["eccentricity_mm"] = 1e-4;
   ExpectRefusedQuickly("tuning", Write(dir, "f.json", s), "/drive/eccentricity_mm: ", "would fit");
+}
+
+// Found by the mutation fuzzer (fuzz/mutation_fuzzer.cc): a bore or a cam thickness off the part's
+// own scale reached OpenCASCADE, which failed, and the run ended "internal error" (exit 1).
+TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
+  const auto dir = TempDir("bad-part-scale");
+  json s = Example("lcr_ii.json");
+  s["reducer"]["output"]["bore_diameter_mm"] = 2.4e-8;
+  ExpectRefusedQuickly("bore", Write(dir, "a.json", s), "/reducer/output/bore_diameter_mm: ",
+                       "a bore diameter between");
+  s = Example("lcr_ii.json");
+  s["reducer"]["input"]["cam_thickness_mm"] = 8e-12;  // the turret radius is 37 mm
+  ExpectRefusedQuickly("thickness", Write(dir, "b.json", s), "/reducer/input/cam_thickness_mm: ",
+                       "1e-6 to 1e6 times the turret radius");
+  s = Example("disc_cam_translating.json");
+  s["cam_thickness_mm"] = 1e9;  // a 1000 km extrusion of a cam of a few cm
+  ExpectRefusedQuickly("disc-thickness", Write(dir, "c.json", s), "/cam_thickness_mm: ",
+                       "times the base circle radius");
+  s = SmallCycloid();
+  s["drive"]["bore_diameter_mm"] = 1e-6;
+  ExpectRefusedQuickly("cycloid-bore", Write(dir, "d.json", s), "/drive/bore_diameter_mm: ",
+                       "0.1% of the disc's root diameter");
 }
 
 TEST(Converged, ThePaperExampleStillConvergesAndCarriesTheTorque) {

@@ -1,0 +1,230 @@
+// camopt's command line, as a function (studies/main.cc calls it; the mutation fuzzer
+// fuzz/mutation_fuzzer.cc calls it in a forked child, so that it exercises exactly the CLI). The
+// command line: `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
+// [--convergence]`, `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
+// `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
+// (studies/sweep.h). A successful run prints a short summary of the headline numbers of
+// result.json on stdout.
+// Exit codes, by cause:
+//   0   success
+//   2   something the user can fix: the study file, the arguments, the output folder (with the
+//       operating system's reason), a study over its work limits (docs/reliability.md)
+//   3   the study ran to the end but its result is not what was asked (not converged, nothing
+//       fits); the files are written and stderr says why
+//   1   a defect of camopt ("internal error")
+//   130 interrupted by SIGINT or SIGTERM (the temporary output folder is removed)
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <new>
+#include <thread>
+
+#include <pthread.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <glog/logging.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/cli.h"
+#include "studies/convergence.h"
+#include "studies/provenance.h"
+#include "studies/schemas.h"
+#include "studies/study.h"
+#include "studies/sweep.h"
+
+namespace {
+
+// SIGINT and SIGTERM are blocked in every thread and taken by one thread with sigwait: it can
+// safely remove the temporary output folder (not possible in a signal handler) and end the
+// process, whatever the solvers are doing at that moment.
+void StartSignalThread() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  std::thread([set] {
+    int sig = 0;
+    sigwait(&set, &sig);
+    camopt::studies::RemoveTemporaryOutputForInterrupt();
+    static const char kMessage[] = "\ncamopt: interrupted\n";
+    if (write(2, kMessage, sizeof kMessage - 1) < 0) {}
+    _exit(130);
+  }).detach();
+}
+
+// The headline numbers of result.json, one "key: value" line each (at most 24): first the
+// top-level numbers, flags and short strings, then from the objects one level down the extremes
+// and verdicts (max…, min…, mean…, …_ok, feasible, converged).
+void PrintSummary(const std::string& out_dir) {
+  std::ifstream in(std::filesystem::path(out_dir) / "result.json");
+  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+  if (!r.is_object()) return;
+  std::cout << "camopt: " << r.value("study", std::string("study"));
+  if (r.contains("name") && r["name"].is_string()) std::cout << " \"" << r["name"].get<std::string>() << "\"";
+  std::cout << "\n";
+  constexpr int kMaxLines = 24;
+  int lines = 0;
+  bool cut = false;
+  const auto show = [&](const std::string& key, const nlohmann::json& v) {
+    if (lines >= kMaxLines) {
+      cut = true;
+      return;
+    }
+    std::cout << "  " << key << ": " << v.dump() << "\n";
+    ++lines;
+  };
+  const auto scalar = [](const nlohmann::json& v) {
+    return v.is_number() || v.is_boolean() || (v.is_string() && v.get<std::string>().size() <= 40);
+  };
+  const auto headline = [](const std::string& k) {
+    const auto ends = [&](const std::string& s) {
+      return k.size() >= s.size() && k.compare(k.size() - s.size(), s.size(), s) == 0;
+    };
+    return k.rfind("max", 0) == 0 || k.rfind("min", 0) == 0 || k.rfind("mean", 0) == 0 || ends("_ok") ||
+           k == "feasible" || k == "converged";
+  };
+  for (auto it = r.begin(); it != r.end(); ++it) {
+    const std::string& key = it.key();
+    if (key == "study" || key == "name" || key == "camopt_version" || key == "study_sha256") continue;
+    if (scalar(*it)) show(key, *it);
+  }
+  for (auto it = r.begin(); it != r.end(); ++it)
+    if (it->is_object())
+      for (auto jt = it->begin(); jt != it->end(); ++jt)
+        if (scalar(*jt) && !jt->is_string() && headline(jt.key())) show(it.key() + "." + jt.key(), *jt);
+  if (cut) std::cout << "  ... (the rest in result.json)\n";
+  if (r.contains("warnings") && r["warnings"].is_array() && !r["warnings"].empty())
+    std::cout << "  warnings: " << r["warnings"].size() << " (see result.json)\n";
+}
+
+}  // namespace
+
+namespace camopt::studies {
+
+int CliMain(int argc, char** argv) {
+  StartSignalThread();
+  CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
+  std::string study_file, out_dir;
+  bool quiet = false, convergence = false;
+  double work_factor = 1.0;
+  // A factor in [1e-6, 1e6]; NaN passes CLI::Range (its comparisons are false) and would switch
+  // every cap off, so the check is written out.
+  const CLI::Validator factor_range(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < 1e-6 || v > 1e6)
+          return "expected a number between 1e-6 and 1e6, found " + text;
+        return "";
+      },
+      "FACTOR in [1e-6, 1e6]");
+  CLI::App* run = app.add_subcommand("run", "Analyse or size the design described in a study file");
+  run->add_option("study", study_file, "Study file (JSON)")->required();
+  run->add_option("--out,-o", out_dir, "Output folder (default: results/<study file stem>)");
+  run->add_flag("--quiet,-q", quiet, "No progress lines on stderr");
+  run->add_flag("--convergence", convergence,
+                "Also run each fidelity knob refined and coarsened: convergence.json, "
+                "convergence_*.svg and a table on stdout (docs/performance.md)");
+  run->add_option("--max-work-factor", work_factor,
+                  "Multiply every work, memory and file-size cap by this factor (default 1; "
+                  "see docs/reliability.md)")
+      ->check(factor_range);
+  CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
+  camopt::studies::sweep::Options sweep;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a study over many cases (docs/studies.md)");
+  sweep_cmd->add_option("sweep", sweep.file, "Sweep file (JSON)")->required();
+  sweep_cmd->add_option("--out,-o", sweep.out, "Output folder");
+  sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Threads per process (default: all cores)")->check(CLI::Range(1, 4096));
+  sweep_cmd->add_flag("--dry-run", sweep.dry_run, "Print the number of cases and stop");
+  sweep_cmd->add_flag("--resume", sweep.resume, "Continue an interrupted sweep from its checkpoint");
+  sweep_cmd->add_flag("--case-outputs", sweep.case_outputs, "Keep every case's result folder");
+  sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress lines on stderr");
+  sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(factor_range);
+  std::string schema_kind;
+  CLI::App* schema = app.add_subcommand("schema", "Print the JSON Schema of a study kind");
+  schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
+  app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
+  app.require_subcommand(0, 1);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  // Ceres logs through Google logging: nothing of it reaches stderr under --quiet, and only
+  // errors otherwise (our own messages say what failed, with context).
+  FLAGS_logtostderr = false;
+  FLAGS_minloglevel = quiet ? google::GLOG_FATAL : google::GLOG_ERROR;
+  FLAGS_stderrthreshold = quiet ? google::GLOG_FATAL : google::GLOG_ERROR;
+
+  if (sweep_cmd->parsed()) {
+    FLAGS_minloglevel = FLAGS_stderrthreshold = google::GLOG_FATAL;  // cases run quietly
+    return camopt::studies::sweep::RunCommand(sweep);
+  }
+  if (kinds->parsed()) {
+    for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
+    return 0;
+  }
+  if (schema->parsed()) {
+    try {
+      std::cout << camopt::studies::StudySchema(schema_kind);
+      return 0;
+    } catch (const camopt::studies::StudyError& e) {
+      std::cerr << "camopt: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (!run->parsed()) {
+    std::cerr << app.help();
+    return 2;
+  }
+  if (run->count("--out") > 0 && out_dir.empty()) {
+    std::cerr << "camopt: error: --out: expected a folder name for the results, found nothing\n";
+    return 2;
+  }
+  if (out_dir.empty())
+    out_dir = (std::filesystem::path("results") / std::filesystem::path(study_file).stem()).string();
+  try {
+    camopt::studies::RunContext ctx;
+    ctx.quiet = quiet;
+    ctx.max_work_factor = work_factor;
+    auto& limits = camopt::studies::CurrentInputLimits();
+    limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) *
+                                                std::min(work_factor, 1e3));
+    if (convergence)
+      camopt::studies::RunConvergenceFile(study_file, out_dir, ctx);
+    else
+      camopt::studies::RunStudyFile(study_file, out_dir, ctx);
+    if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
+    if (!convergence) PrintSummary(out_dir);  // --convergence prints its own table
+    return 0;
+  } catch (const camopt::studies::StudyIncomplete& e) {
+    std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
+              << "\n";
+    if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
+    return 3;
+  } catch (const camopt::studies::StudyError& e) {
+    std::cerr << "camopt: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "camopt: error: " << study_file
+              << ": out of memory (the work limits did not foresee this study's size; "
+                 "please report it)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "camopt: internal error while running " << study_file << ": " << e.what()
+              << " (a camopt defect; please report it with the study file)\n";
+    return 1;
+  }
+}
+
+}  // namespace camopt::studies
