@@ -11,6 +11,7 @@
 #include <set>
 
 #include "model/lcr/friction.h"
+#include "model/lcr/life.h"
 #include "model/lcr/profile.h"
 #include "studies/format.h"
 #include "studies/lcr_input.h"
@@ -154,14 +155,160 @@ void RunContact3D(const Study& st, Result& res) {
   }
 }
 
+
+// A bearing's ratings from `node` (a reducer side or "eccentric_bearing"): C required when a life
+// is asked, C0 optional (s0 is reported when given).
+BearingRating ParseRating(const Node& node, BearingKind kind, const std::string& why) {
+  BearingRating b;
+  b.kind = kind;
+  if (!node.Has("dynamic_rating_N")) {
+    const std::string path = node.path() + "/dynamic_rating_N";
+    const std::string expected = "the bearing's dynamic load rating C [N] > 0 (" + why + ")";
+    throw StudyError(node.file() + ": " + path + ": expected " + expected + ", found nothing", node.file(), path,
+                     expected, "nothing");
+  }
+  b.dynamic_N = node["dynamic_rating_N"].Positive();
+  b.static_N = node.PositiveOr("static_rating_N", 0.0);
+  return b;
+}
+
+// "load.input_speed_rpm" or "duty_cycle" (docs/life.md); nullopt when neither is given.
+std::optional<LifeSpec> ParseLife(const Node& root, const lcr::LoadCase& load) {
+  const bool speed = root.Has("load") && root["load"].Has("input_speed_rpm");
+  const bool duty = root.Has("duty_cycle");
+  if (!speed && !duty) return std::nullopt;
+  LifeSpec life;
+  if (speed && duty)
+    root["load"]["input_speed_rpm"].Fail("no input_speed_rpm when a \"duty_cycle\" is given (one or the other)");
+  if (speed) {
+    life.lines.push_back({load.output_torque_Nmm, root["load"]["input_speed_rpm"].Positive(), 1.0});
+  } else {
+    const Node dc = root["duty_cycle"];
+    const std::vector<Node> items = dc.Elements();
+    if (items.empty()) dc.Fail("a non-empty array of duty-cycle lines");
+    double share_sum = 0.0, speed_max = 0.0;
+    for (const Node& item : items) {
+      item.CheckKnownFields({"output_torque_Nm", "input_speed_rpm", "time_share"});
+      DutyLine line;
+      line.output_torque_Nmm = item["output_torque_Nm"].NonNegative() * 1000.0;
+      line.input_speed_rpm = item["input_speed_rpm"].NonNegative();
+      line.time_share = item["time_share"].Positive();
+      if (line.time_share > 1.0) item["time_share"].Fail("a share in (0, 1]");
+      share_sum += line.time_share;
+      speed_max = std::max(speed_max, line.input_speed_rpm);
+      life.lines.push_back(line);
+    }
+    if (!(std::abs(share_sum - 1.0) <= 1e-6))
+      throw StudyError(dc.file() + ": " + dc.path() + ": expected time shares summing to 1 (within 1e-6), found " +
+                           Format(share_sum, 10), dc.file(), dc.path(), "time shares summing to 1 (within 1e-6)",
+                       Format(share_sum, 10));
+    if (!(speed_max > 0))
+      dc.Fail("at least one line with input_speed_rpm > 0 (no revolutions, no rating life)");
+    for (DutyLine& line : life.lines) line.time_share /= share_sum;  // exactly 1 for Palmgren–Miner
+    life.from_duty_cycle = true;
+  }
+  const std::string why = speed ? "a life is asked: load.input_speed_rpm is given" : "a life is asked: duty_cycle is given";
+  const Node reducer = root["reducer"];
+  life.input_roller = ParseRating(reducer["input"], BearingKind::kRoller, why);
+  life.output_roller = ParseRating(reducer["output"], BearingKind::kRoller, why);
+  if (reducer.Has("eccentric_bearing")) {
+    const Node eb = reducer["eccentric_bearing"];
+    eb.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
+    const std::string kind = eb["kind"].String();
+    if (kind != "ball" && kind != "roller") eb["kind"].Fail("one of ball, roller");
+    life.eccentric = ParseRating(eb, kind == "ball" ? BearingKind::kBall : BearingKind::kRoller, why);
+  }
+  return life;
+}
+
+// Checks "reducer.eccentric_bearing" of a study that asks no life (its fields are still checked).
+void CheckEccentricBearing(const Node& reducer) {
+  if (!reducer.Has("eccentric_bearing")) return;
+  const Node eb = reducer["eccentric_bearing"];
+  eb.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
+  eb["dynamic_rating_N"].Positive();
+  if (eb.Has("static_rating_N")) eb["static_rating_N"].Positive();
+  const std::string kind = eb["kind"].String();
+  if (kind != "ball" && kind != "roller") eb["kind"].Fail("one of ball, roller");
+}
+
+
+// The bearing lives over the duty cycle (docs/life.md, "LCR"): for each line a force analysis at its
+// torque over each bearing's load period (model/lcr/life.h), the revolution-weighted equivalent load
+// per line, Palmgren–Miner over the lines (model/common/bearing_life.h).
+LifeResult RunLife(const Study& st, const std::string& file) {
+  const LifeSpec& spec = *st.life;
+  const lcr::Reducer<double>& r = st.reducer;
+  struct Member {
+    const char* name;
+    lcr::LcrBearing bearing;
+    const BearingRating* rating;
+  };
+  std::vector<Member> members = {{"input_roller", lcr::LcrBearing::kInputRoller, &spec.input_roller},
+                                 {"output_roller", lcr::LcrBearing::kOutputRoller, &spec.output_roller}};
+  if (spec.eccentric) members.push_back({"eccentric_bearing", lcr::LcrBearing::kEccentric, &*spec.eccentric});
+  LifeResult out;
+  // Per member: per line (equivalent load, largest load); revolutions per input revolution.
+  std::vector<std::vector<double>> line_p(members.size()), line_max(members.size());
+  std::vector<double> revolutions(members.size(), 0.0);
+  double output_energy = 0.0, input_energy = 0.0;  // per unit time, up to the same constant
+  const double ratio = std::abs(lcr::SpeedReductionRatio(r));
+  for (const DutyLine& line : spec.lines) {
+    lcr::LoadCase load = st.load;
+    load.output_torque_Nmm = line.output_torque_Nmm;
+    try {
+      // The eccentric's load period also gives the mean input torque of the line.
+      const lcr::BearingLoadSamples ecc = lcr::SampleBearingLoad(r, st.material, load, st.load_model,
+                                                                 lcr::LcrBearing::kEccentric, st.angle_steps);
+      out.line_mean_input_torque_Nm.push_back(ecc.mean_input_torque_Nmm / 1000.0);
+      output_energy += line.time_share * line.input_speed_rpm * line.output_torque_Nmm / ratio;
+      input_energy += line.time_share * line.input_speed_rpm * ecc.mean_input_torque_Nmm;
+      for (size_t m = 0; m < members.size(); ++m) {
+        const lcr::BearingLoadSamples x =
+            members[m].bearing == lcr::LcrBearing::kEccentric
+                ? ecc
+                : lcr::SampleBearingLoad(r, st.material, load, st.load_model, members[m].bearing, st.angle_steps);
+        line_p[m].push_back(EquivalentLoad(x.load_N, x.spin_rate, members[m].rating->kind));
+        line_max[m].push_back(*std::max_element(x.load_N.begin(), x.load_N.end()));
+        revolutions[m] = Mean(x.spin_rate);  // kinematics only: the same for every line
+      }
+    } catch (const std::domain_error& e) {
+      throw StudyError(file + ": /reducer: infeasible geometry: " + e.what());
+    }
+  }
+  out.efficiency_energy_mean = input_energy > 0 ? output_energy / input_energy : 0.0;
+  for (const DutyLine& line : spec.lines) out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
+  out.shortest_L10h = kInf;
+  for (size_t m = 0; m < members.size(); ++m) {
+    BearingLifeResult b;
+    b.name = members[m].name;
+    b.rating = *members[m].rating;
+    b.revolutions_per_input_revolution = revolutions[m];
+    b.line_equivalent_load_N = line_p[m];
+    // Line i turns t_i n_i R revolutions per unit time under its equivalent load P_i: one sample.
+    std::vector<DutyCycleLine<double>> lines;
+    for (size_t i = 0; i < spec.lines.size(); ++i)
+      lines.push_back({spec.lines[i].time_share, spec.lines[i].input_speed_rpm * revolutions[m], {line_p[m][i]}});
+    b.mean_speed_rpm = DutyCycleMeanSpeed(lines);
+    b.equivalent_load_N = DutyCycleEquivalentLoad(lines, b.rating.kind);
+    b.L10_Mrev = BasicRatingLifeMrev(b.rating.dynamic_N, b.equivalent_load_N, b.rating.kind);
+    b.L10h = DutyCycleLifeHours(b.rating.dynamic_N, lines, b.rating.kind);
+    b.max_load_N = *std::max_element(line_max[m].begin(), line_max[m].end());
+    if (b.rating.static_N > 0) b.s0 = StaticSafetyFactor(b.rating.static_N, line_max[m]);
+    if (b.L10h < out.shortest_L10h || out.shortest.empty()) out.shortest_L10h = b.L10h, out.shortest = b.name;
+    out.bearings.push_back(std::move(b));
+  }
+  return out;
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis",
-                         "tolerances", "monte_carlo", "geometry_files", "contact"});
+                         "tolerances", "monte_carlo", "geometry_files", "contact", "duty_cycle"});
   Study st;
   st.name = root.StringOr("name", "");
-  st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true);
+  st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true, /*allow_bearing_ratings=*/true);
   if (root.Has("analysis")) {
     const Node analysis = root["analysis"];
     analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate", "load_model"});
@@ -181,7 +328,7 @@ Study Parse(const Node& root) {
   }
   if (st.evaluate.forces || compliant || root.Has("load")) {
     const Node load_node = root["load"];
-    load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N"});
+    load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N", "input_speed_rpm"});
     st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
     st.load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
     st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
@@ -204,6 +351,8 @@ Study Parse(const Node& root) {
   st.bore_diameter_output_mm = ParseBoreDiameter(reducer_node["output"], st.reducer, Side::kOutput);
   st.geometry = ParseGeometryFiles(root);
   st.contact = ParseLcrContact(root, st.reducer);
+  CheckEccentricBearing(reducer_node);
+  st.life = ParseLife(root, st.load);
   return st;
 }
 
@@ -283,6 +432,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     if (q.stress && st.contact.given && !res.any_undercut) RunContact3D(st, res);
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
+  if (st.life) res.life = RunLife(st, ctx.study_file);
   if (q.profile) {
     res.input_cam_files = FitPlanarCam(CamGeometry(st, Side::kInput), st.geometry);
     res.output_cam_files = FitPlanarCam(CamGeometry(st, Side::kOutput), st.geometry);
@@ -398,6 +548,47 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
       j["contact"]["grid"] = {st.contact.options.grid_nx, st.contact.options.grid_ny};
   }
   if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
+  if (res.life) {
+    const LifeResult& l = *res.life;
+    const LifeSpec& spec = *st.life;
+    // +∞ (a bearing without load) is written as null.
+    auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    nlohmann::json lj;
+    lj["shortest_L10h"] = finite(l.shortest_L10h);
+    lj["shortest_bearing"] = l.shortest;
+    for (const BearingLifeResult& b : l.bearings) lj[b.name + "_L10h"] = finite(b.L10h);
+    lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
+    lj["efficiency_energy_mean"] = l.efficiency_energy_mean;
+    nlohmann::json lines = nlohmann::json::array();
+    for (size_t i = 0; i < spec.lines.size(); ++i)
+      lines.push_back({{"output_torque_Nm", spec.lines[i].output_torque_Nmm / 1000.0},
+                       {"input_speed_rpm", spec.lines[i].input_speed_rpm},
+                       {"time_share", spec.lines[i].time_share},
+                       {"mean_input_torque_Nm", l.line_mean_input_torque_Nm[i]}});
+    lj["duty_cycle"] = lines;
+    for (const BearingLifeResult& b : l.bearings) {
+      nlohmann::json bj;
+      bj["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
+      bj["life_exponent"] = LifeExponent(b.rating.kind);
+      bj["dynamic_rating_N"] = b.rating.dynamic_N;
+      if (b.rating.static_N > 0) {
+        bj["static_rating_N"] = b.rating.static_N;
+        bj["s0"] = finite(b.s0);
+      }
+      bj["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
+      bj["mean_speed_rpm"] = b.mean_speed_rpm;
+      bj["equivalent_load_N"] = b.equivalent_load_N;
+      bj["line_equivalent_load_N"] = b.line_equivalent_load_N;
+      bj["max_load_N"] = b.max_load_N;
+      bj["L10_Mrev"] = finite(b.L10_Mrev);
+      bj["L10h"] = finite(b.L10h);
+      lj[b.name] = bj;
+    }
+    lj["model"] = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
+                  "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
+                  "the same load over its period; the modified life (a1, a_ISO) is not modelled (docs/life.md)";
+    j["life"] = lj;
+  }
   j["notes"] = res.notes;
   if (res.input_cam_files && res.output_cam_files)
     j["geometry_files"] =

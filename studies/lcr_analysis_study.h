@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/common/bearing_life.h"
 #include "model/common/material.h"
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
@@ -23,6 +24,26 @@ namespace camopt::studies::lcr_analysis {
 /// The stages a study asks for ("analysis.evaluate"); stress and efficiency imply forces.
 struct Evaluate {
   bool profile = true, undercut = true, forces = true, stress = true, efficiency = true;
+};
+
+/// A bearing's load ratings: C (ISO 281) and, when given, C0 (ISO 76; 0 when not given).
+struct BearingRating {
+  double dynamic_N = 0.0, static_N = 0.0;
+  BearingKind kind = BearingKind::kRoller;
+};
+
+/// One line of the duty cycle, in model units.
+struct DutyLine {
+  double output_torque_Nmm = 0.0, input_speed_rpm = 0.0, time_share = 1.0;
+};
+
+/// The bearing life asked by "load.input_speed_rpm" (one line at the load's torque) or
+/// "duty_cycle" (docs/life.md).
+struct LifeSpec {
+  std::vector<DutyLine> lines;  ///< time shares normalised to sum to 1
+  bool from_duty_cycle = false;
+  BearingRating input_roller, output_roller;
+  std::optional<BearingRating> eccentric;  ///< "reducer.eccentric_bearing"
 };
 
 /// What the study file says, parsed and validated, in model units (mm, N, N·mm, MPa).
@@ -43,6 +64,29 @@ struct Study {
   LcrContactInput contact;  ///< "contact" and the rollers' "crowning" (issue 12)
   lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
   std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
+  std::optional<LifeSpec> life;                        ///< a speed or a duty cycle given
+};
+
+/// The rating life of one bearing over the duty cycle (model/common/bearing_life.h, model/lcr/life.h).
+struct BearingLifeResult {
+  std::string name;  ///< input_roller, output_roller, eccentric_bearing
+  BearingRating rating;
+  double revolutions_per_input_revolution = 0;
+  double mean_speed_rpm = 0;          ///< Σ t_i n_i × revolutions per input revolution
+  double equivalent_load_N = 0;       ///< P of the duty cycle (revolution-weighted p-mean)
+  std::vector<double> line_equivalent_load_N;  ///< P_i per duty-cycle line
+  double max_load_N = 0;              ///< largest load of any line (P0 of s0)
+  double L10_Mrev = 0, L10h = 0;      ///< +inf without load
+  double s0 = 0;                      ///< C0 / P0max; 0 when C0 is not given, +inf without load
+};
+
+struct LifeResult {
+  std::vector<BearingLifeResult> bearings;
+  double shortest_L10h = 0;
+  std::string shortest;  ///< name of the bearing with the shortest life
+  double mean_input_speed_rpm = 0;
+  double efficiency_energy_mean = 0;  ///< output energy / input energy over the duty cycle
+  std::vector<double> line_mean_input_torque_Nm;
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
@@ -81,6 +125,7 @@ struct Result {
   std::vector<std::string> notes;
   /// The finite-length contact per cam, when the study has a "contact" object and stress is evaluated.
   std::optional<lcr::Contact3DCycleSide> contact_input, contact_output;
+  std::optional<LifeResult> life;  ///< when the study asks for a life
 };
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.

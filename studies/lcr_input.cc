@@ -4,10 +4,11 @@ namespace camopt::studies {
 
 namespace {
 
-lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning) {
+lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning, bool allow_ratings) {
   std::set<std::string> known = {"lobes", "rollers", "turret_radius_mm", "roller_diameter_mm", "roller_length_mm",
                                     "cam_thickness_mm", "cutter_diameter_mm", "bore_diameter_mm"};
   if (allow_crowning) known.insert("crowning");  // read by studies/lcr_contact_input.h
+  if (allow_ratings) known.insert({"dynamic_rating_N", "static_rating_N"});  // the roller bearing's C, C0
   s.CheckKnownFields(known);
   lcr::CamSide<double> c;
   c.lobes = s["lobes"].Integer(1);
@@ -19,19 +20,22 @@ lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning) {
   c.roller_length = PlausibleLength(s["roller_length_mm"], c.turret_radius, "the turret radius");
   c.cam_thickness = PlausibleLength(s["cam_thickness_mm"], c.turret_radius, "the turret radius");
   // Read by some kinds only (geometry files, the cutter offset): a number > 0 wherever given.
-  for (const char* optional : {"cutter_diameter_mm", "bore_diameter_mm"})
+  for (const char* optional : {"cutter_diameter_mm", "bore_diameter_mm", "dynamic_rating_N", "static_rating_N"})
     if (s.Has(optional)) s[optional].Positive();
   return c;
 }
 
 }  // namespace
 
-lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning) {
-  node.CheckKnownFields({"eccentricity_mm", "input", "output"});
+lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning, bool allow_bearing_ratings) {
+  if (allow_bearing_ratings)
+    node.CheckKnownFields({"eccentricity_mm", "input", "output", "eccentric_bearing"});
+  else
+    node.CheckKnownFields({"eccentricity_mm", "input", "output"});
   lcr::Reducer<double> r;
   r.eccentricity = node["eccentricity_mm"].Positive();
-  r.input = ParseSide(node["input"], allow_crowning);
-  r.output = ParseSide(node["output"], allow_crowning);
+  r.input = ParseSide(node["input"], allow_crowning, allow_bearing_ratings);
+  r.output = ParseSide(node["output"], allow_crowning, allow_bearing_ratings);
   const auto problems = lcr::CheckDesign(r);
   if (!problems.empty()) {
     // "input.rollers" -> /reducer/input/rollers

@@ -12,7 +12,10 @@ namespace camopt::studies {
 /// turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm. Checks the design
 /// (lobes < rollers, rollers that overlap, …) and throws StudyError naming the JSON path.
 /// allow_crowning: the sides may carry a "crowning" object (kinds with the finite-length contact).
-lcr::Reducer<double> ParseReducer(const Node& reducer, bool allow_crowning = false);
+/// allow_bearing_ratings: the sides may carry the rollers' "dynamic_rating_N" / "static_rating_N"
+/// and the reducer an "eccentric_bearing" (kinds with the bearing life; read by the kind, checked
+/// here to be > 0 wherever given).
+lcr::Reducer<double> ParseReducer(const Node& reducer, bool allow_crowning = false, bool allow_bearing_ratings = false);
 
 /// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
 /// must be > 0 and <= the roller diameter.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
 
 #include "objectives/lcr_min_size.h"
 #include "studies/input.h"
@@ -112,6 +113,26 @@ WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
     terms.push_back({2.0 * (samples + 8.0) * mc_steps * rollers, "/monte_carlo/samples",
                      Num(samples) + " Monte-Carlo samples × " + Num(mc_steps) + " angles × " + Num(rollers) +
                          " rollers × 2"});
+  }
+  if (!fit && (s.contains("duty_cycle") || Sub(Sub(s, "load"), "input_speed_rpm").is_number())) {
+    // Bearing life (docs/life.md): per duty-cycle line, one force analysis per sample over each
+    // bearing's load period (model/lcr/life.h): an input revolution (input roller), 2π m_A n_B/(n_A m_B)
+    // (output roller) and the eccentric's 2π lcm(m_A, m_B)/(n_A m_B), a whole number of revolutions
+    // when the cam has a weight — at angle_steps samples per revolution.
+    const json& red = Sub(s, "reducer");
+    auto count = [&](const char* side, const char* key, double fallback) {
+      return (long long)std::clamp(Size(Sub(red, side), key, fallback), 1.0, 1e6);
+    };
+    const long long ma = count("input", "lobes", 12), na = count("input", "rollers", 13);
+    const long long mb = count("output", "lobes", 14), nb = count("output", "rollers", 15);
+    const long long l = std::lcm(ma, mb), d = na * mb, g = std::gcd(l, d);
+    const bool weight = Size(Sub(s, "load"), "cam_weight_N", 0) > 0;
+    const double ecc_revs = weight ? double(l / g) : double(l) / double(d);
+    const double revs = 1.0 + double(ma * nb) / double(d) + ecc_revs;
+    const double lines = s.contains("duty_cycle") ? std::max<double>(1, double(Count(Sub(s, "duty_cycle")))) : 1.0;
+    terms.push_back({lines * revs * steps * rollers, s.contains("duty_cycle") ? "/duty_cycle" : "/load/input_speed_rpm",
+                     Num(lines) + " duty-cycle lines × " + Num(revs) + " revolutions of bearing load periods × " +
+                         Num(steps) + " angle steps × " + Num(rollers) + " rollers"});
   }
   return Largest(terms, 2e7 * factor, "roller contact evaluations", 64);
 }

@@ -130,6 +130,38 @@ std::vector<DutyCycleLine<double>> TwoLineCycle() {
   return {{0.4, 1000.0, std::vector<double>(3, 6000.0)}, {0.6, 500.0, std::vector<double>(4, 10000.0)}};
 }
 
+// The revolution-weighted p-mean (a bearing turning at a varying speed over the load cycle)
+// against closed forms of ∫ w F^p dθ / ∫ w dθ.
+TEST(BearingLife, RevolutionWeightedMeanMatchesItsIntegral) {
+  // F = F0 (1 + a cos θ), w = 1 + b cos θ, p = 3: w F³ is a trigonometric polynomial of degree 4,
+  // so N >= 5 uniform samples integrate it exactly:
+  //   ∫ w F³ / ∫ w = F0³ (1 + 3a²/2 + b (3a/2 + 3a³/8)).
+  const double f0 = 2000.0, a = 0.4, b = 0.7;
+  for (int n : {5, 12, 360}) {
+    const auto loads = UniformSamples(n, [&](double t) { return f0 * (1 + a * std::cos(t)); });
+    const auto weights = UniformSamples(n, [&](double t) { return 1 + b * std::cos(t); });
+    const double expected = f0 * std::cbrt(1 + 1.5 * a * a + b * (1.5 * a + 0.375 * a * a * a));
+    EXPECT_NEAR(EquivalentLoad(loads, weights, BearingKind::kBall), expected, kClosedFormRelTol * expected) << n;
+  }
+  // A load F0 over the half revolution where the bearing turns twice as fast, 0 elsewhere
+  // (roller, p = 10/3): P^p = (2 · F0^p · π) / (2 · π + 1 · π) = (2/3) F0^p.
+  const int n = 8;
+  std::vector<double> loads(n, 0.0), weights(n, 1.0);
+  for (int k = 0; k < n / 2; ++k) loads[k] = f0, weights[k] = 2.0;
+  const double expected = f0 * std::pow(2.0 / 3.0, 0.3);
+  EXPECT_NEAR(EquivalentLoad(loads, weights, BearingKind::kRoller), expected, kClosedFormRelTol * expected);
+  // Weighted by input angle instead (equal weights) it would be (1/2)^(3/10) F0: lower.
+  EXPECT_LT(EquivalentLoad(loads, BearingKind::kRoller), expected);
+  // Equal weights: EquivalentLoad.
+  EXPECT_NEAR(EquivalentLoad(loads, std::vector<double>(n, 3.0), BearingKind::kRoller),
+              EquivalentLoad(loads, BearingKind::kRoller), kClosedFormRelTol * f0);
+  // Bad weights.
+  EXPECT_THROW(EquivalentLoad(loads, std::vector<double>(n - 1, 1.0), BearingKind::kRoller), std::invalid_argument);
+  EXPECT_THROW(EquivalentLoad(loads, std::vector<double>(n, 0.0), BearingKind::kRoller), std::invalid_argument);
+  weights[3] = -1.0;
+  EXPECT_THROW(EquivalentLoad(loads, weights, BearingKind::kRoller), std::invalid_argument);
+}
+
 TEST(BearingLife, TwoLineDutyCycleHandCalculation) {
   const auto cycle = TwoLineCycle();
   const double hand_h = 1e6 * (27000.0 / 552.0) / (60.0 * 700.0);

@@ -168,6 +168,39 @@ T EquivalentLoad(const std::vector<T>& loads_N, BearingKind kind) {
   return T(s) * pow(bearing_life_internal::ScaledMeanOfPower(loads_N, s, p), 1.0 / p);
 }
 
+/// The equivalent load of a load sampled at angles where the bearing does not turn uniformly: the
+/// revolution-weighted p-mean with weights w_k ∝ dφ_k, the bearing's rotation over sample k,
+///   P = ( ∫ F^p dφ / ∫ dφ )^(1/p)  ≈  ( Σ_k w_k F_k^p / Σ_k w_k )^(1/p).
+/// The rating life counts revolutions (ISO 281:2007 §5.3 / §6.3: L10 in 10⁶ revolutions), so where
+/// the speed varies over the load cycle (an LCR roller rolling on its cam) each load counts by the
+/// revolutions turned under it, not by the time or input angle spent under it. With w_k = dφ/dθ at
+/// uniform θ_k the quadrature is EquivalentLoad's (the trapezoidal rule on the periodic w F^p).
+/// Equal weights give EquivalentLoad. Weights are data (double); loads may carry derivatives.
+/// @param loads_N F_k [N], finite, >= 0, at least one.  @param weights w_k, finite, >= 0, one per
+/// load, not all 0.
+/// @throws std::invalid_argument for mismatched sizes, a negative or non-finite load or weight, or
+/// weights that are all 0.
+template <typename T>
+T EquivalentLoad(const std::vector<T>& loads_N, const std::vector<double>& weights, BearingKind kind) {
+  using std::pow;
+  bearing_life_internal::CheckLoads("loads_N", loads_N);
+  if (weights.size() != loads_N.size())
+    bearing_life_internal::Reject("weights.size()", "loads_N.size() (" + std::to_string(loads_N.size()) + ")",
+                                  double(weights.size()));
+  double weight_sum = 0.0;
+  for (size_t k = 0; k < weights.size(); ++k) {
+    bearing_life_internal::CheckNonNegative("weights[" + std::to_string(k) + "]", weights[k]);
+    weight_sum += weights[k];
+  }
+  if (!(weight_sum > 0.0)) bearing_life_internal::Reject("the sum of weights", "> 0", weight_sum);
+  const double p = LifeExponent(kind);
+  const double s = bearing_life_internal::LargestValue(loads_N);
+  if (s == 0.0) return T(0.0);
+  T sum(0.0);
+  for (size_t k = 0; k < loads_N.size(); ++k) sum += weights[k] * pow(loads_N[k] / s, p);
+  return T(s) * pow(sum / weight_sum, 1.0 / p);
+}
+
 /// The duty cycle's time-mean speed n̄ = Σ t_i n_i [rpm]: revolutions per minute over the spectrum.
 /// @throws std::invalid_argument as ValidateDutyCycle.
 template <typename T>
