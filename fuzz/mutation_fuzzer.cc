@@ -475,6 +475,7 @@ int main(int argc, char** argv) {
   long refused_by_caps = 0;  // refusals that name the work or memory caps
   double max_refusal_cpu = 0, max_refusal_rss = 0, max_rss = 0, slowest = 0;
   std::string slowest_case, biggest_case;
+  std::vector<std::pair<double, std::string>> biggest;  // (peak MB, case), largest first
   std::vector<Running> slots(static_cast<size_t>(o.jobs));
   const auto t0 = std::chrono::steady_clock::now();
   auto last_progress = t0;
@@ -535,6 +536,10 @@ int main(int argc, char** argv) {
     const std::string name = replay.empty() ? "case " + std::to_string(r.index) + " (" + r.from + ")" : r.from;
     if (f.wall_s > slowest) slowest = f.wall_s, slowest_case = name + ", " + f.outcome;
     if (f.rss_mb > max_rss) max_rss = f.rss_mb, biggest_case = name + ", " + f.outcome;
+    // The five largest cases by peak memory (candidates for the corpus run under a memory limit).
+    biggest.push_back({f.rss_mb, name + ", " + f.outcome});
+    std::sort(biggest.begin(), biggest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    if (biggest.size() > 5) biggest.pop_back();
     if (Failure(f.outcome)) {
       std::ostringstream line;
       line << name << ": " << f.outcome << " (exit " << f.code << ", " << f.wall_s << " s, " << f.rss_mb
@@ -585,6 +590,9 @@ int main(int argc, char** argv) {
   rec["refusals_max_rss_mb"] = max_refusal_rss;
   rec["max_rss_mb"] = max_rss;
   rec["biggest_case"] = biggest_case;
+  json big = json::array();
+  for (const auto& [mb, c] : biggest) big.push_back(json::object({{"peak_mb", mb}, {"case", c}}));
+  rec["biggest_cases"] = big;
   rec["slowest_s"] = slowest;
   rec["slowest_case"] = slowest_case;
   json k = json::object();

@@ -156,8 +156,11 @@ int CliMain(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // Every user error has the same first words on stderr (docs/reliability.md, exit codes).
+    std::cerr << "camopt: error: " << e.what() << "\n"
+              << "Run with --help for more information.\n";
+    return 2;
   }
 
   // Ceres logs through Google logging: nothing of it reaches stderr under --quiet, and only

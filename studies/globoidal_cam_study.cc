@@ -178,8 +178,10 @@ Study Parse(const Node& root) {
           "no longer used: the dynamics run with error control (CVODE); give "
           "\"relative_tolerance\" (e.g. 1e-8) and \"absolute_tolerance\" (e.g. 1e-10) instead");
     if (d.Has("cam_speeds_rpm"))
-      for (const Node& v : d["cam_speeds_rpm"].Elements()) s.speeds_rpm.push_back(v.Positive());
-    if (d.Has("end_time_s")) s.end_time_s = d["end_time_s"].Positive();
+      // 0.01 rpm (a revolution in 100 minutes) to 1e5 rpm: the simulated time of a revolution
+      // and its solver steps stay countable (studies/work_limits.cc).
+      for (const Node& v : d["cam_speeds_rpm"].Elements()) s.speeds_rpm.push_back(v.NumberIn(0.01, 1e5));
+    if (d.Has("end_time_s")) s.end_time_s = d["end_time_s"].Positive();  // bounded by max_steps below
     if (d.Has("relative_tolerance")) {
       s.relative_tolerance = d["relative_tolerance"].Positive();
       if (s.relative_tolerance < 1e-13 || s.relative_tolerance > 1e-3)

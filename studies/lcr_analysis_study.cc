@@ -330,7 +330,7 @@ Study Parse(const Node& root) {
     const Node load_node = root["load"];
     load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N", "input_speed_rpm"});
     st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
-    st.load.friction_coefficient = load_node.NonNegativeOr("friction_coefficient", 0.0);
+    st.load.friction_coefficient = load_node.Has("friction_coefficient") ? load_node["friction_coefficient"].NumberIn(0, 1) : 0.0;
     st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
     if (st.load_model == lcr::LoadModel::kCompliant && !(st.load.output_torque_Nmm > 0))
       load_node["output_torque_Nm"].Fail("a torque > 0 for \"load_model\": \"compliant\"");

@@ -27,7 +27,7 @@ Study Parse(const Node& root) {
   const Node load = root["load"];
   load.CheckKnownFields({"output_torque_Nm", "overload_torque_Nm", "friction_coefficient"});
   sp.design_load.output_torque_Nmm = load["output_torque_Nm"].Positive() * 1000.0;
-  sp.design_load.friction_coefficient = load.NonNegativeOr("friction_coefficient", 0.0);
+  sp.design_load.friction_coefficient = load.Has("friction_coefficient") ? load["friction_coefficient"].NumberIn(0, 1) : 0.0;
   sp.overload_torque_Nmm = load["overload_torque_Nm"].Positive() * 1000.0;
   if (sp.overload_torque_Nmm < sp.design_load.output_torque_Nmm)
     load["overload_torque_Nm"].Fail("an overload torque >= output_torque_Nm");

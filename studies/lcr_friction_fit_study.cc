@@ -15,6 +15,7 @@
 #include "model/lcr/cycle.h"
 #include "model/lcr/kinematics.h"
 #include "objectives/problem.h"
+#include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/report.h"
@@ -94,6 +95,17 @@ Result Run(const Study& st, const RunContext& ctx) {
   p.variables = {{"friction_coefficient", mu.lower, mu.upper, mu.initial, 0.1},
                  {"drag_torque_Nm", drag.lower, drag.upper, drag.initial, 0.1}};
   const int m = static_cast<int>(data.size());
+  // A measurement whose weighted residual at the start is not a number, or one whose square is not
+  // (a torque of 1e308, a standard deviation of 1e-320), is the study's, not the fit's.
+  for (int i = 0; i < m; ++i) {
+    const double r0 = (lcr::MeanInputTorque(unit, data[i].output_torque_Nm, mu.initial, drag.initial) -
+                       data[i].input_torque_Nm) / data[i].sd_Nm;
+    if (!(std::abs(r0) <= 1e100))  // its square must stay a number too
+      throw StudyError(ctx.study_file + ": /measurements/" + std::to_string(i) +
+                       ": expected a measurement whose weighted residual (model - measured) / input_torque_sd_Nm "
+                       "is within ±1e100, found " + (std::isfinite(r0) ? Format(r0, 4) : std::string("one that is not a finite number")) +
+                       " (check for extreme values such as 1e308 or 1e-300)");
+  }
   p.evaluator = objectives::MakeEvaluator<2>(
       2, {{"weighted_residuals", 0, m}}, [data, unit](auto x, auto residuals) {
         using T = std::decay_t<decltype(x[0])>;

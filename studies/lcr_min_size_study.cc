@@ -273,7 +273,9 @@ Study Parse(const Node& root) {
   b.material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
   if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient", "overload_torque_Nm"});
   b.output_torque_Nmm = s.output_torque_Nmm;
-  b.friction_coefficient = root.Has("load") ? root["load"].NonNegativeOr("friction_coefficient", 0.0) : 0.0;
+  b.friction_coefficient = root.Has("load") && root["load"].Has("friction_coefficient")
+                               ? root["load"]["friction_coefficient"].NumberIn(0, 1)
+                               : 0.0;
 
   optimizers::SolverOptions& solver = s.options.solver;
   solver.max_evaluations = 200;  // ipopt, see below

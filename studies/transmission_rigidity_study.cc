@@ -283,6 +283,12 @@ Result Run(const Study& study, const RunContext& ctx) {
   const auto& r = res.chain;
   if (!(r.compliance_b > 0.0))
     throw StudyError(study.chain_where + ": every element is rigid: the chain has no compliance to report");
+  // An element of (nearly) zero modulus or size makes the compliance infinite and its shares NaN:
+  // no element dominates, and nothing the chain reports is a number.
+  if (!std::isfinite(r.compliance_b) || r.dominant < 0 || r.dominant >= static_cast<int>(specs.size()))
+    throw StudyError(study.chain_where + ": expected a chain whose compliance is a finite number, found " +
+                     (std::isfinite(r.compliance_b) ? "shares that are not numbers" : "an infinite compliance") +
+                     " (an element is infinitely soft: check for extreme moduli or sizes, such as 5e-324 GPa or 1e-300 mm)");
   // Elasticities of the overall rigidity per element parameter; a reducer's come from its own
   // through the chain rule (model/rigidity/lost_motion.h).
   const auto chain_elasticity = rigidity::RigidityElasticities(specs);

@@ -169,7 +169,7 @@ WorkEstimate Globoidal(const json& s, double factor) {
   const json& d = Sub(s, "dynamics");
   // The dynamics run on CVODE with error control: about 5000 accepted steps per cam revolution
   // at the default tolerance (docs/globoidal.md), never more than max_steps per speed.
-  constexpr double kStepsPerRevolution = 5000;
+  constexpr double kStepsPerRevolution = 5000, kStepsPerSecond = 1e4;
   const double end = Size(d, "end_time_s", 0);
   const double max_steps = Size(d, "max_steps", 2e7);
   const json& speeds = Sub(d, "cam_speeds_rpm");
@@ -177,13 +177,16 @@ WorkEstimate Globoidal(const json& s, double factor) {
   if (speeds.is_array())
     for (const json& v : speeds) {
       const double rpm = v.is_number() ? v.get<double>() : 0;
-      if (!(rpm > 0) || !std::isfinite(rpm)) continue;
+      if (!(rpm >= 0.01 && rpm <= 1e5)) continue;  // outside the parser's range: its message names it
       const double revolutions = end > 0 ? end * rpm / 60.0 : 1.0;
-      steps += std::min(revolutions * kStepsPerRevolution, max_steps);
+      // A slow cam under a light load: the steps follow the simulated time, not the revolutions
+      // (the paper cam at 1 N·m: 6.3k steps per simulated second from 1 to 0.1 rpm).
+      const double seconds = end > 0 ? end : 60.0 / rpm;
+      steps += std::min(std::max(revolutions * kStepsPerRevolution, seconds * kStepsPerSecond), max_steps);
     }
   terms.push_back({steps, "/dynamics",
-                   Num(double(Count(speeds))) + " cam speeds, about " + Num(kStepsPerRevolution) +
-                       " solver steps per revolution"});
+                   Num(double(Count(speeds))) + " cam speeds, the larger of " + Num(kStepsPerRevolution) +
+                       " solver steps per revolution and " + Num(kStepsPerSecond) + " per simulated second"});
   const json& a = Sub(s, "analysis");
   const double angle = Size(a, "angle_steps", 720), axis = Size(a, "axis_steps", 7);
   terms.push_back({angle * axis, "/analysis/angle_steps",

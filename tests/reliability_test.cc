@@ -441,7 +441,10 @@ TEST(BadInput, ImplausibleCycloidDrivesAreRefusedBeforeWork) {
 }
 
 // Found by the mutation fuzzer (fuzz/mutation_fuzzer.cc): a bore or a cam thickness off the part's
-// own scale reached OpenCASCADE, which failed, and the run ended "internal error" (exit 1).
+// own scale reached OpenCASCADE, which failed, and the run ended "internal error" (exit 1); a
+// friction coefficient of 1.8e308 ran 3 s to a NaN; a shear modulus of 5e-324 crashed; a measured
+// torque of 1.8e308 failed the fit as a camopt defect; a globoidal cam at 5e-324 rpm failed CVODE, and
+// one at 0.0012 rpm under 1 N·m ran for minutes on a work estimate of one revolution's steps.
 TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
   const auto dir = TempDir("bad-part-scale");
   json s = Example("lcr_ii.json");
@@ -456,6 +459,22 @@ TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
   s["cam_thickness_mm"] = 1e9;  // a 1000 km extrusion of a cam of a few cm
   ExpectRefusedQuickly("disc-thickness", Write(dir, "c.json", s), "/cam_thickness_mm: ",
                        "times the base circle radius");
+  s = Example("lcr_ii.json");
+  s["load"]["friction_coefficient"] = 1.7976931348623157e308;  // ran 3 s to a NaN result before
+  ExpectRefusedQuickly("friction", Write(dir, "e.json", s), "/load/friction_coefficient: ", "in [0, 1]");
+  s = Example("rigidity_stepped_shaft.json");
+  s["material"]["shear_modulus_GPa"] = 5e-324;  // an infinite compliance: a segmentation fault before
+  ExpectRefusedQuickly("rigidity-modulus", Write(dir, "f.json", s), "/chain: ", "a finite number");
+  s = Example("lcr_friction_fit.json");
+  s["measurements"][2]["input_torque_Nm"] = 1.7976931348623157e308;  // "internal error: fit failed" before
+  ExpectRefusedQuickly("fit-measurement", Write(dir, "g.json", s), "/measurements/2: ", "is within ±1e100");
+  s = Example("globoidal_cam_paper.json");
+  s["dynamics"]["cam_speeds_rpm"] = {600, 5e-324};  // "internal error: bad end time" before
+  ExpectRefusedQuickly("globoidal-speed", Write(dir, "h.json", s), "/dynamics/cam_speeds_rpm/1: ", "in [0.01, 100000]");
+  s = Example("globoidal_cam_paper.json");
+  s["load"]["turret_torque_Nm"] = 1;  // a light load: the steps follow the simulated time
+  s["dynamics"]["cam_speeds_rpm"] = {0.02};
+  ExpectRefusedQuickly("globoidal-slow", Write(dir, "i.json", s), "/dynamics: ", "solver steps");
   s = SmallCycloid();
   s["drive"]["bore_diameter_mm"] = 1e-6;
   ExpectRefusedQuickly("cycloid-bore", Write(dir, "d.json", s), "/drive/bore_diameter_mm: ",
