@@ -254,6 +254,25 @@ Study Parse(const Node& root) {
   if (!s.geometry.write) s.export_stl = false;
   // Every check, with the jam limit over the analysis grid.
   FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root);
+  // A torque no contact can carry: the Hertz law (eq. 11) holds for penetrations small against
+  // the radii; under the turret torque alone the static penetration δ = (F/K)^(1/n) at the start
+  // angle must stay below a tenth of the roller radius (the paper example: see docs/globoidal.md).
+  if (!s.speeds_rpm.empty() && s.dyn.load_torque_Nmm != 0.0) {
+    DynamicsInput probe = s.dyn;
+    probe.cam_speed_rad_s = 0.0;
+    const double theta0 = probe.start_cam_angle_rad;
+    const double force = globoidal::QuasiStaticForce(probe, theta0);
+    const double k = std::min(globoidal::RollerStiffness(probe, 1, theta0), globoidal::RollerStiffness(probe, 2, theta0));
+    const double n = probe.contact.exponent, allowed = 0.1 * s.dyn.cam.roller_radius;
+    const double delta = std::pow(force / k, 1.0 / n);
+    if (!(delta <= allowed)) {
+      const double t_max = std::abs(s.dyn.load_torque_Nmm) * 1e-3 * k * std::pow(allowed, n) / force;
+      root["load"]["turret_torque_Nm"].Fail(
+          "a torque whose static contact penetration stays below a tenth of the roller radius (" + Format(allowed, 4) +
+          " mm; at most " + Format(t_max, 4) + " N·m here): it gives " + Format(delta, 4) +
+          " mm, outside the Hertz contact law");
+    }
+  }
   return s;
 }
 

@@ -475,6 +475,10 @@ TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
   s["load"]["turret_torque_Nm"] = 1;  // a light load: the steps follow the simulated time
   s["dynamics"]["cam_speeds_rpm"] = {0.02};
   ExpectRefusedQuickly("globoidal-slow", Write(dir, "i.json", s), "/dynamics: ", "solver steps");
+  s = Example("globoidal_cam_paper.json");
+  s["load"]["turret_torque_Nm"] = 5e11;  // a stiff, endless integration before (timeout)
+  ExpectRefusedQuickly("globoidal-torque", Write(dir, "j.json", s), "/load/turret_torque_Nm: ",
+                       "at most 1610 N·m here");  // 0.1 · 4 mm static penetration
   s = SmallCycloid();
   s["drive"]["bore_diameter_mm"] = 1e-6;
   ExpectRefusedQuickly("cycloid-bore", Write(dir, "d.json", s), "/drive/bore_diameter_mm: ",

@@ -397,6 +397,8 @@ struct CrossField {
   std::string kind, path, message, why;
 };
 const std::vector<CrossField> kCrossField = {
+    {"globoidal_cam", "/contact/exponent", "static contact penetration",
+     "the turret torque against the contact law's static penetration (exponent, stiffness, roller radius)"},
     {"cycloid_crowning_tuning", "/drive/", "teeth + 1", "rollers = teeth + 1 (one-tooth difference)"},
     {"cycloid_ltca", "/drive/", "teeth + 1", "rollers = teeth + 1 (one-tooth difference)"},
     {"cycloid_crowning_tuning", "/variables/", "with lo < hi", "a range [lo, hi] needs lo < hi"},
