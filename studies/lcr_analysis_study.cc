@@ -332,6 +332,19 @@ Study Parse(const Node& root) {
     st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
     st.load.friction_coefficient = load_node.Has("friction_coefficient") ? load_node["friction_coefficient"].NumberIn(0, 1) : 0.0;
     st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
+    // A torque no contact can carry: the output rollers' forces balance it on arms no longer than
+    // the turret radius, so the largest carries at least T / (n R); a contact is no wider than
+    // the roller, so its mean pressure is at least that force over the roller's projected area
+    // d L. Above the Young's modulus (a strain of one) no contact model applies.
+    {
+      const lcr::CamSide<double>& out = st.reducer.output;
+      const double projected = 2 * out.roller_radius * out.roller_length;
+      const double t_max_Nmm = st.material.youngs_modulus_MPa * projected * out.rollers * out.turret_radius;
+      if (!(st.load.output_torque_Nmm <= t_max_Nmm))
+        load_node["output_torque_Nm"].Fail("a torque the output rollers can carry (at most " + Format(t_max_Nmm / 1000, 4) +
+                                           " N·m: their least force over the roller's projected area reaches the "
+                                           "Young's modulus there)");
+    }
     if (st.load_model == lcr::LoadModel::kCompliant && !(st.load.output_torque_Nmm > 0))
       load_node["output_torque_Nm"].Fail("a torque > 0 for \"load_model\": \"compliant\"");
     if (st.tolerances && !(st.load.output_torque_Nmm > 0))

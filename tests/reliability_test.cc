@@ -479,6 +479,10 @@ TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
   s["load"]["turret_torque_Nm"] = 5e11;  // a stiff, endless integration before (timeout)
   ExpectRefusedQuickly("globoidal-torque", Write(dir, "j.json", s), "/load/turret_torque_Nm: ",
                        "at most 1610 N·m here");  // 0.1 · 4 mm static penetration
+  s = Example("lcr_ii.json");
+  s["load"]["output_torque_Nm"] = 1e308;  // 2.8 s of work to a NaN result before
+  ExpectRefusedQuickly("lcr-torque", Write(dir, "k.json", s), "/load/output_torque_Nm: ",
+                       "at most 1.557e+07 N·m");  // 206 GPa · 12 mm · 10 mm · 15 rollers · 42 mm
   s = SmallCycloid();
   s["drive"]["bore_diameter_mm"] = 1e-6;
   ExpectRefusedQuickly("cycloid-bore", Write(dir, "d.json", s), "/drive/bore_diameter_mm: ",
