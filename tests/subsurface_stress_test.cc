@@ -55,7 +55,7 @@ void GaussLegendre(int n, std::vector<double>* x, std::vector<double>* w) {
 }
 
 /// Stresses on the z axis under p0 √(1 − x²/a² − y²/b²) by superposing Boussinesq's point-load
-/// solution (Johnson eq. 3.22: σ_r, σ_θ, σ_z of a normal point load P, rotated to x, y) over the
+/// solution (Johnson §3.2: σ_r, σ_θ, σ_z of a normal point load P, rotated to x, y) over the
 /// ellipse: x = a sin φ cos θ, y = b sin φ sin θ, dA·p = p0 a b sin φ cos² φ dφ dθ. Gauss–Legendre in
 /// φ ∈ [0, π/2], trapezoid (periodic, spectral) in θ. Independent of the potentials and of R_D.
 AxisStresses<double> BoussinesqQuadrature(double p0, double a, double b, double z, double nu) {
@@ -90,12 +90,12 @@ double MaxShearOf(const AxisStresses<double>& s) {
 // ---- Line contact ---------------------------------------------------------------------------------
 
 TEST(SubsurfaceLine, PrincipalShearMaximumIsJohnsons) {
-  // Johnson §4.2 (Fig. 4.6): τ1 = (σ_x − σ_z)/2 on the axis has its maximum 0.300 p0 at z = 0.786 b.
+  // Johnson (1985), line contact: τ1 = (σ_x − σ_z)/2 on the axis has its maximum 0.300 p0 at z = 0.786 b.
   const double p0 = 1500.0, b = 0.2;
   const StressPeak<double> pk = LineContactMaxPrincipalShear(p0, b);
   EXPECT_NEAR(pk.value / p0, 0.300, 0.300 * kLiteratureRelTol);
   EXPECT_NEAR(pk.depth / b, 0.786, 0.786 * kLiteratureRelTol);
-  // The closed form (ζ² = 1/φ) against a golden section on the axis stresses of eq. 4.53.
+  // The closed form (ζ² = 1/φ) against a golden section on the axis stresses (eq. 4.50 ff. at x = 0).
   const auto tau = [&](double z) {
     const AxisStresses<double> s = LineContactAxisStresses(p0, b, z, kNu);
     return 0.5 * (s.sigma_x - s.sigma_z);
@@ -107,13 +107,13 @@ TEST(SubsurfaceLine, PrincipalShearMaximumIsJohnsons) {
 }
 
 TEST(SubsurfaceLine, OrthogonalShearMaximumIsLundbergPalmgrensTau0) {
-  // Johnson §4.2: τ_xz has its maximum 0.25 p0 at z = 0.5 b, x = ±0.87 b.
+  // Johnson (1985), line contact: τ_xz has its maximum 0.25 p0 at z = 0.5 b, x = ±0.87 b.
   const double p0 = 1200.0, b = 0.15;
   const StressPeak<double> pk = LineContactMaxOrthogonalShear(p0, b);
   EXPECT_NEAR(pk.value / p0, 0.25, 0.25 * kLiteratureRelTol);
   EXPECT_NEAR(pk.depth / b, 0.5, 0.5 * kLiteratureRelTol);
   EXPECT_NEAR(pk.x / b, 0.87, 0.87 * kLiteratureRelTol);
-  // Closer: the maximum is at (√3/2, 1/2) b with m² = 3/4, n² = 1/4 in eq. 4.49, τ = ½ (¾ − ¼) = ¼ exactly.
+  // Closer: the maximum is at (√3/2, 1/2) b with m² = 3/4, n² = 1/4 in McEwen's m, n, τ = ½ (¾ − ¼) = ¼ exactly.
   EXPECT_NEAR(pk.value / p0, 0.25, 1e-10);
   EXPECT_NEAR(pk.depth / b, 0.5, 1e-5);
   EXPECT_NEAR(pk.x / b, std::sqrt(3.0) / 2, 1e-5);
@@ -122,7 +122,7 @@ TEST(SubsurfaceLine, OrthogonalShearMaximumIsLundbergPalmgrensTau0) {
 }
 
 TEST(SubsurfaceLine, VonMisesMaximum) {
-  // Johnson §4.2 (p. 101) and Harris & Kotzalas, Rolling Bearing Analysis (2006), §5: the largest
+  // Harris & Kotzalas, Rolling Bearing Analysis (5th ed., 2006), ch. on contact stresses: the largest
   // von Mises stress of a line contact, ν = 0.3, is 0.56 p0 at about 0.70 b.
   const double p0 = 1000.0, b = 0.1;
   const StressPeak<double> pk = LineContactMaxVonMises(p0, b, kNu);
@@ -139,7 +139,7 @@ TEST(SubsurfaceLine, FieldStressesReduceToTheAxisFormulas) {
     EXPECT_NEAR(f.sigma_z, s.sigma_z, 1e-12 * p0) << zeta;
     EXPECT_EQ(f.tau_xz, 0.0) << zeta;
   }
-  // Just below the surface inside the contact: σ_x = σ_z = −p(x) (Johnson §4.2).
+  // Just below the surface inside the contact: σ_x = σ_z = −p(x) (the surface).
   for (double xi : {0.0, 0.3, 0.8}) {
     const PlaneStresses<double> f = LineContactStresses(p0, b, xi * b, 1e-9 * b);
     EXPECT_NEAR(f.sigma_z, -p0 * std::sqrt(1 - xi * xi), 1e-6 * p0) << xi;
@@ -173,14 +173,14 @@ TEST(SubsurfacePoint, CircularAxisStressesAreJohnsonEq345) {
       EXPECT_NEAR(s->sigma_z, ref.sigma_z, kClosedFormTol * p0) << zeta;
     }
   }
-  // The surface: σ_z = −p0, σ_r = −(1 + 2ν) p0/2 (Johnson eq. 3.44).
+  // The surface: σ_z = −p0, σ_r = −(1 + 2ν) p0/2 (the surface values of eq. 3.45's limit z → 0).
   const AxisStresses<double> s = EllipticalContactAxisStresses(p0, a, a, 1e-9 * a, kNu);
   EXPECT_NEAR(s.sigma_z, -p0, 1e-6 * p0);
   EXPECT_NEAR(s.sigma_x, -(1 + 2 * kNu) / 2 * p0, 1e-6 * p0);
 }
 
 TEST(SubsurfacePoint, CircularPrincipalShearMaximumIsJohnsons) {
-  // Johnson §3.4 (Fig. 3.7): τ1 = ½|σ_z − σ_r| on the axis, 0.31 p0 at z = 0.48 a for ν = 0.3.
+  // Johnson (1985), Hertz circular contact: τ1 = ½|σ_z − σ_r| on the axis, 0.31 p0 at z = 0.48 a for ν = 0.3.
   const double p0 = 2000.0, a = 0.4;
   const StressPeak<double> c = CircularContactMaxPrincipalShear(p0, a, kNu);
   EXPECT_NEAR(c.value / p0, 0.31, 0.31 * kLiteratureRelTol);
@@ -236,7 +236,7 @@ TEST(SubsurfacePoint, EllipticalAxisStressesMatchBoussinesqQuadrature) {
 
 TEST(SubsurfacePoint, EllipticalPrincipalShearMaximumAgainstQuadrature) {
   // b/a = 0.5 and 0.2: the maximum of τ1 on the axis, against a golden section on the Boussinesq
-  // quadrature (numbers in docs/validation.md, "Contact fatigue"). Johnson Fig. 3.9 shows τ1max/p0
+  // quadrature (numbers in docs/validation.md, "Contact fatigue"). Johnson's figure of τ1max against b/a shows τ1max/p0
   // rising from 0.31 (b/a = 1) above 0.32 and back to 0.30 as b/a → 0; we read no digits off it.
   const double p0 = 1.0, b = 1.0;
   for (double k : {0.5, 0.2}) {
@@ -265,8 +265,8 @@ TEST(SubsurfacePoint, EllipticalPeakDerivativesMatchCentralDifferences) {
 // ---- Contact-fatigue life ---------------------------------------------------------------------------
 
 TEST(ContactFatigueLife, LundbergPalmgrenGivesTheirLoadLifeExponents) {
-  // Hertz scaling at fixed geometry: point contact p0, a, b ∝ Q^(1/3) (Johnson eq. 3.68); line
-  // contact p0, b ∝ q^(1/2) with the length fixed (eq. 4.45). τ0 = 0.25 p0 at 0.5 b in both.
+  // Hertz scaling at fixed geometry: point contact p0, a, b ∝ Q^(1/3) ; line contact
+  // p0, b ∝ q^(1/2) with the length fixed (Hertz). τ0 = 0.25 p0 at 0.5 b in both.
   // Lundberg–Palmgren (1947, 1952): L ∝ Q^−3 for point contact (e = 10/9), Q^−4 for line contact
   // (e = 9/8); on the peak pressure n = 9 and 8.
   for (double k : {1.5, 2.0, 3.0}) {

@@ -3,10 +3,10 @@
 // stresses negative; z is the depth below the surface (z > 0 into the solid).
 //
 // Line contact (plane strain, half-width b, peak pressure p0): McEwen (1949) as in Johnson, Contact
-// Mechanics (1985), eq. 4.49–4.50 (everywhere) and eq. 4.53 (on the axis x = 0).
+// Mechanics (1985), eq. 4.50 ff. (McEwen's m, n everywhere; their limit on the axis x = 0).
 // Circular contact (radius a): Johnson eq. 3.45 (on the axis r = 0).
 // Elliptical contact (semi-axes a ≥ b along x and y): the stresses on the z axis, after Thomas &
-// Hoersch (1930) and Johnson §3.7, written here with Carlson's symmetric integral R_D instead of
+// Hoersch (1930) and Johnson §3.7 (the ellipse, z axis), written here with Carlson's symmetric integral R_D instead of
 // incomplete Legendre integrals (derivation in docs/life.md, "Contact fatigue"). They reduce to eq.
 // 3.45 at a = b and to the line contact as a/b → ∞ (tests/subsurface_stress_test.cc).
 // Life: the stress-life law L ∝ p0^−n and the Lundberg–Palmgren (1947) relation, docs/life.md.
@@ -105,7 +105,7 @@ T CarlsonRD(T x, T y, T z) {
 
 // ---- Line contact -------------------------------------------------------------------------------
 
-/// Line contact, stresses on the axis x = 0 at depth z > 0 (Johnson eq. 4.53; plane strain
+/// Line contact, stresses on the axis x = 0 at depth z > 0 (Johnson eq. 4.50 ff. at x = 0; plane strain
 /// σ_y = ν(σ_x + σ_z)): σ_x = −(p0/b)((b² + 2z²)/√(b² + z²) − 2z), σ_z = −p0 b/√(b² + z²).
 /// @param p0 peak pressure [MPa], b half-width [mm], z depth [mm], nu Poisson's ratio.
 template <typename T>
@@ -118,7 +118,7 @@ AxisStresses<T> LineContactAxisStresses(const T& p0, const T& b, const T& z, dou
   return {sx, T(nu) * (sx + sz), sz};
 }
 
-/// Line contact, in-plane stresses at (x, z), z > 0 (McEwen 1949; Johnson eq. 4.49–4.50):
+/// Line contact, in-plane stresses at (x, z), z > 0 (McEwen 1949; Johnson eq. 4.50 ff.):
 /// m² = ½(√((b² − x² + z²)² + 4x²z²) + (b² − x² + z²)), n² = ½(√(…) − (b² − x² + z²)), n with the
 /// sign of x; σ_x = −(p0/b)(m(1 + (z² + n²)/(m² + n²)) − 2z), σ_z = −(p0/b) m (1 − (z² + n²)/(m² + n²)),
 /// τ_xz = (p0/b) n (m² − z²)/(m² + n²).
@@ -139,8 +139,8 @@ PlaneStresses<T> LineContactStresses(const T& p0, const T& b, const T& x, const 
 }
 
 /// Line contact, the largest principal shear τ1 = (σ_x − σ_z)/2 (on the axis): closed form. Setting
-/// d/dζ[ζ − ζ²/√(1 + ζ²)] = 0 (ζ = z/b, Johnson eq. 4.53) gives ζ⁴ + ζ² − 1 = 0, ζ² = 1/φ,
-/// φ = (1 + √5)/2: depth b/√φ = 0.78615 b, value p0 φ^(−5/2) = 0.30028 p0 (Johnson §4.2: 0.30 p0 at 0.78 b).
+/// d/dζ[ζ − ζ²/√(1 + ζ²)] = 0 (ζ = z/b, the axis stresses above) gives ζ⁴ + ζ² − 1 = 0, ζ² = 1/φ,
+/// φ = (1 + √5)/2: depth b/√φ = 0.78615 b, value p0 φ^(−5/2) = 0.30028 p0 (Johnson: 0.30 p0 at 0.78 b).
 template <typename T>
 StressPeak<T> LineContactMaxPrincipalShear(const T& p0, const T& b) {
   const double phi = 0.5 * (1.0 + std::sqrt(5.0));
@@ -150,7 +150,7 @@ StressPeak<T> LineContactMaxPrincipalShear(const T& p0, const T& b) {
 /// Line contact, the largest orthogonal shear |τ_xz| (Lundberg–Palmgren's τ0) over the half-plane:
 /// nested golden sections on the scaled stresses (x/b in (0, 3], z/b in (0, 2]), then evaluated in T
 /// at the maximiser (envelope theorem: the derivative of the value is the partial derivative there;
-/// value ∝ p0 and position ∝ b exactly, so these derivatives are exact). Johnson §4.2: 0.25 p0 at
+/// value ∝ p0 and position ∝ b exactly, so these derivatives are exact). Johnson (1985): 0.25 p0 at
 /// z = 0.5 b, x = ±0.87 b.
 template <typename T>
 StressPeak<T> LineContactMaxOrthogonalShear(const T& p0, const T& b) {
@@ -187,7 +187,7 @@ AxisStresses<T> CircularContactAxisStresses(const T& p0, const T& a, const T& z,
 }
 
 /// Elliptical contact, semi-axes a (along x) ≥ b (along y), peak pressure p0: stresses on the z
-/// axis at depth z > 0. From Love's potentials of the Hertz pressure (Johnson eq. 3.18–3.20 and
+/// axis at depth z > 0. From Love's potentials of the Hertz pressure (Johnson §3.2 and
 /// §3.7), ψ = (π a b p0/2) ∫_λ^∞ (1 − z²/w) dw/Δ(w), Δ = √((a² + w)(b² + w) w), λ = z²:
 ///   σ_x = (1/2π)(2ν ψ_z − z ψ_xx − (1 − 2ν) ψ1_xx),  σ_y likewise,  σ_z = (1/2π)(ψ_z − z ψ_zz),
 /// with, for A = a² + z², B = b² + z², C = π a b p0/2,
@@ -215,7 +215,7 @@ AxisStresses<T> EllipticalContactAxisStresses(const T& p0, const T& a, const T& 
 }
 
 /// Circular contact, the largest principal shear on the axis, τ1 = (σ_r − σ_z)/2: golden section on
-/// z/a in (0, 2], evaluated in T there (value ∝ p0, depth ∝ a). Johnson §3.4: 0.31 p0 at 0.48 a (ν 0.3).
+/// z/a in (0, 2], evaluated in T there (value ∝ p0, depth ∝ a). Johnson (1985): 0.31 p0 at 0.48 a (ν 0.3).
 template <typename T>
 StressPeak<T> CircularContactMaxPrincipalShear(const T& p0, const T& a, double nu) {
   const auto tau = [nu](double z) { return subsurface_internal::MaxShear(CircularContactAxisStresses(1.0, 1.0, z, nu)); };
