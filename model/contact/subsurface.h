@@ -82,7 +82,7 @@ T CarlsonRD(T x, T y, T z) {
   const double kErrTol = 5e-4;  // relative error ~ kErrTol^6 / (1 − kErrTol) ≈ 1.6e-20 (Carlson 1995 eq. 2.15)
   T sum = T(0.0);
   double factor = 1.0;
-  T ave, dx, dy, dz;
+  T ave = T(1.0), dx = T(0.0), dy = T(0.0), dz = T(0.0);
   for (int it = 0; it < 100; ++it) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
