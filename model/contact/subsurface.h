@@ -6,9 +6,9 @@
 // Mechanics (1985), eq. 4.50 ff. (McEwen's m, n everywhere; their limit on the axis x = 0).
 // Circular contact (radius a): Johnson eq. 3.45 (on the axis r = 0).
 // Elliptical contact (semi-axes a ≥ b along x and y): the stresses on the z axis, after Thomas &
-// Hoersch (1930) and Johnson §3.7 (the ellipse, z axis), written here with Carlson's symmetric integral R_D instead of
-// incomplete Legendre integrals (derivation in docs/life.md, "Contact fatigue"). They reduce to eq.
-// 3.45 at a = b and to the line contact as a/b → ∞ (tests/subsurface_stress_test.cc).
+// Hoersch (1930) and Johnson §3.7, written here with Carlson's symmetric integral R_D instead of
+// incomplete Legendre integrals (derivation in docs/life.md, "Contact fatigue"). They reduce to
+// eq. 3.45 at a = b and to the line contact as a/b → ∞ (tests/subsurface_stress_test.cc).
 // Life: the stress-life law L ∝ p0^−n and the Lundberg–Palmgren (1947) relation, docs/life.md.
 #pragma once
 
