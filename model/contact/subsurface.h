@@ -115,7 +115,8 @@ T CarlsonRD(T x, T y, T z) {
   }
   const double c1 = 3.0 / 14.0, c2 = 1.0 / 6.0, c3 = 9.0 / 22.0, c4 = 3.0 / 26.0, c5 = 0.25 * c3, c6 = 1.5 * c4;
   const T ea = dx * dy, eb = dz * dz, ec = ea - eb, ed = ea - T(6.0) * eb, ee = ed + ec + ec;
-  const T series = T(1.0) + ed * (T(-c1) + T(c5) * ed - T(c6) * dz * ee) + dz * (T(c2) * ee + dz * (T(-c3) * ec + dz * T(c4) * ea));
+  const T series = T(1.0) + ed * (T(-c1) + T(c5) * ed - T(c6) * dz * ee) +
+                   dz * (T(c2) * ee + dz * (T(-c3) * ec + dz * T(c4) * ea));
   return T(3.0) * sum + factor * series / (ave * sqrt(ave));
 }
 
@@ -135,8 +136,8 @@ AxisStresses<T> LineContactAxisStresses(const T& p0, const T& b, const T& z, dou
 }
 
 /// Line contact, in-plane stresses at (x, z), z > 0 (McEwen 1949; Johnson eq. 4.50 ff.):
-/// m² = ½(√((b² − x² + z²)² + 4x²z²) + (b² − x² + z²)), n² = ½(√(…) − (b² − x² + z²)), n with the
-/// sign of x; σ_x = −(p0/b)(m(1 + (z² + n²)/(m² + n²)) − 2z), σ_z = −(p0/b) m (1 − (z² + n²)/(m² + n²)),
+/// m² = ½(√((b² − x² + z²)² + 4x²z²) + (b² − x² + z²)), n² = ½(√(…) − (b² − x² + z²)),
+/// n with the sign of x; σ_x = −(p0/b)(m(1 + (z² + n²)/(m² + n²)) − 2z), σ_z = −(p0/b) m (1 − (z² + n²)/(m² + n²)),
 /// τ_xz = (p0/b) n (m² − z²)/(m² + n²).
 template <typename T>
 PlaneStresses<T> LineContactStresses(const T& p0, const T& b, const T& x, const T& z) {
