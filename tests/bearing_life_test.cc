@@ -50,6 +50,34 @@ TEST(BearingLife, SingleLoadBallHandCalculation) {
   EXPECT_NEAR(RatingLifeHours(l10, 1500.0), 64e6 / 90000.0, kHandCalcRelTol * 711.1);
 }
 
+// Published worked examples, reproduced to the digits they print (each bound is half a unit of
+// the last printed digit, carried through the formula).
+
+TEST(BearingLife, SkfCatalogueExample1DeepGrooveBall6309) {
+  // SKF General Catalogue 6000 EN (2005), "Selection of bearing size", Calculation examples,
+  // Example 1: an SKF Explorer 6309 deep groove ball bearing, C = 55.3 kN (product table), purely
+  // radial P = Fr = 10 kN, 3000 r/min: L10 = (55.3/10)³ = 169 million revolutions,
+  // L10h = 10⁶/(60·3000)·169 = 940 operating hours.
+  const double l10 = BasicRatingLifeMrev(55300.0, 10000.0, BearingKind::kBall);
+  EXPECT_NEAR(l10, 169.0, 0.5);  // ours 169.112
+  EXPECT_NEAR(RatingLifeHours(l10, 3000.0), 940.0, 5.0);  // ours 939.51
+}
+
+TEST(BearingLife, ShigleyProblem11_3CylindricalRoller) {
+  // Budynas & Nisbett, Shigley's Mechanical Engineering Design, 8th ed. (2006), Instructor's
+  // Solutions Manual, Problem 11-3 (straight-roller 03-series): design life 50 000 h at 480 rev/min
+  // (x_D = 50 000·480·60/10⁶ = 1440 rating lives), design load F_D = 1.4·1650 lbf = 10.279 kN,
+  // C10 = 10.279·1440^(3/10) = 91.1 kN (a = 10/3, the reliability term taken as 1). Reversed with
+  // our functions: the printed C10 = 91.1 kN at F = 10.279 kN and 480 rpm gives 50 000 h, within
+  // what the rounding of C10 to 0.1 kN allows: (1 + 0.05/91.1)^(10/3) − 1 = 0.18%.
+  const double l10 = BasicRatingLifeMrev(91100.0, 10279.0, BearingKind::kRoller);
+  const double bound = std::pow(1.0 + 0.05 / 91.1, 10.0 / 3.0) - 1.0;
+  EXPECT_NEAR(l10, 1440.0, bound * 1440.0);  // ours 1440.6
+  EXPECT_NEAR(RatingLifeHours(l10, 480.0), 50000.0, bound * 50000.0);  // ours 50 022 h
+  // The forward direction of the manual: C10 = F_D x_D^(1/a) = 91.09 kN.
+  EXPECT_NEAR(10279.0 * std::pow(50000.0 * 480.0 * 60.0 / 1e6, 0.3), 91100.0, 50.0);
+}
+
 TEST(BearingLife, NoLoadOrNoSpeedGivesInfiniteLife) {
   EXPECT_EQ(BasicRatingLifeMrev(20000.0, 0.0, BearingKind::kBall), kInf);
   EXPECT_EQ(RatingLifeHours(64.0, 0.0), kInf);
