@@ -14,7 +14,10 @@
 //
 // The time limit is CPU time (T s, default 10; the wall clock at 4 T).
 //
-//   camopt_mutate --cases N [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M]
+// --memory-mb M is the address-space limit of a case (RLIMIT_AS; a case past it ends "out of memory",
+// exit 1); --budget-mb B makes any case whose peak resident memory exceeds B a failure.
+//
+//   camopt_mutate --cases N [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]
 //                 [--work-factor F] [--save DIR] [--record FILE] [--quiet]
 //   camopt_mutate --replay DIR      (every *.json in DIR as it is: the corpus of past failures)
 //   camopt_mutate --show I --seed S (print case I's study text: a failure is reproducible)
@@ -84,6 +87,7 @@ struct Options {
   double memory_mb = 8192;  // address-space limit of a case (0: none)
   double work_factor = 0.01;
   double refusal_cpu_s = 1, refusal_rss_mb = 500;
+  double budget_mb = 0;  // any case above this peak memory fails (0: only refusals are held to one)
   fs::path save, record, replay;
   long show = -1;
   bool quiet = false;
@@ -284,7 +288,7 @@ class Mutator {
 const std::vector<std::string> kOutcomes = {
     "ran", "refused", "incomplete",  // the three good answers
     "defect (exit 1)", "signal", "timeout", "no message", "slow refusal", "big refusal",
-    "refusal left files", "no result.json", "other exit code"};
+    "refusal left files", "no result.json", "other exit code", "over the memory budget"};
 bool Failure(const std::string& outcome) {
   return outcome != "ran" && outcome != "refused" && outcome != "incomplete";
 }
@@ -338,6 +342,7 @@ Finished Judge(int status, const rusage& ru, double wall_s, const fs::path& err_
     case 1: f.outcome = "defect (exit 1)"; break;
     default: f.outcome = "other exit code"; break;
   }
+  if (o.budget_mb > 0 && !Failure(f.outcome) && f.rss_mb > o.budget_mb * scale) f.outcome = "over the memory budget";
   return f;
 }
 
@@ -404,7 +409,7 @@ std::string Clock(double s) {
 
 int Usage(const std::string& why) {
   std::cerr << "camopt_mutate: " << why << "\n"
-            << "usage: camopt_mutate [--cases N] [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M]\n"
+            << "usage: camopt_mutate [--cases N] [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]\n"
                "                     [--work-factor F] [--examples DIR] [--save DIR] [--record FILE] [--quiet]\n"
                "       camopt_mutate --replay DIR | --show I [--seed S]\n";
   return 2;
@@ -426,6 +431,7 @@ int main(int argc, char** argv) {
       else if (a == "--jobs") o.jobs = std::max(1, std::stoi(next()));
       else if (a == "--timeout-s") o.timeout_s = std::stod(next());
       else if (a == "--memory-mb") o.memory_mb = std::stod(next());
+      else if (a == "--budget-mb") o.budget_mb = std::stod(next());
       else if (a == "--work-factor") o.work_factor = std::stod(next());
       else if (a == "--examples") o.examples = next();
       else if (a == "--save") o.save = next();
