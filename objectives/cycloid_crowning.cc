@@ -135,8 +135,8 @@ std::pair<std::string, double> ModelParameter(const std::string& name) {
 
 namespace {
 // The derivatives' CG tolerance: the contact solver's own (the values are no more accurate than
-// that), between 1e-10 and 1e-4. At 1e-4 the 60-angle cycle's gradient (f, Δa, Δρ) costs 1.9×
-// the value, at 1e-6 2.7× (docs/performance.md).
+// that), between 1e-10 and 1e-4. At 1e-4 the 60-angle cycle's gradient (f, Δa, Δρ) costs 1.67×
+// the value, at 1e-6 2.3× (docs/performance.md, "Cycloid drive").
 double SensitivityTolerance(const cycloid::LoadedOptions& o) {
   return std::clamp(o.solver_tolerance, 1e-10, 1e-4);
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs `camopt run EXAMPLE --convergence` over the example studies and prints markdown tables (one
-# per knob per example) for docs/performance.md, then the estimated errors of the default settings.
+# per knob per example), then the estimated errors of the default settings (docs/performance.md,
+# "Speed against error of every example", keeps a summary of those).
 # Usage: scripts/convergence_tables.sh [CAMOPT_BINARY] [EXAMPLE.json ...]
 # (default binary build/camopt, default examples: every study in studies/examples/). Wall times are
 # this machine's and vary from run to run.

@@ -242,8 +242,8 @@ WorkEstimate CrowningTuning(const json& s, double factor) {
   const double angles = Size(a, "crank_angles_per_mesh_period", 6);
   double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
   // The general form (issue 13): optimizer.max_evaluations, each a value run and its gradient,
-  // which costs about 0.65 value runs per variable (measured: 1.9× for 3 variables,
-  // docs/performance.md).
+  // which costs about 0.65 value runs per variable (measured: 1.9× for 3 variables, since then
+  // 1.67×, docs/performance.md, "Cycloid drive"; the estimate keeps the margin).
   if (s.contains("variables") && s["variables"].is_object())
     evaluations = Size(t, "curve_points", 11) +
                   Size(Sub(s, "optimizer"), "max_evaluations", Size(t, "max_evaluations", 30)) *
