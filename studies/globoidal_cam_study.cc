@@ -101,7 +101,7 @@ Study Parse(const Node& root) {
                        "roller_length_mm", "clearance_mm", "roller_angle_deg", "swing_deg",
                        "first_motion"});
   cam.center_distance = c["center_distance_mm"].Positive();
-  cam.roller_radius = c["roller_radius_mm"].Positive();
+  cam.roller_radius = PlausibleLength(c["roller_radius_mm"], cam.center_distance, "the center distance");
   cam.pitch_radius = c["pitch_radius_mm"].Positive();
   cam.roller_length = c["roller_length_mm"].Positive();
   cam.clearance = c["clearance_mm"].NonNegative();
@@ -261,8 +261,13 @@ Study Parse(const Node& root) {
     DynamicsInput probe = s.dyn;
     probe.cam_speed_rad_s = 0.0;
     const double theta0 = probe.start_cam_angle_rad;
-    const double force = globoidal::QuasiStaticForce(probe, theta0);
-    const double k = std::min(globoidal::RollerStiffness(probe, 1, theta0), globoidal::RollerStiffness(probe, 2, theta0));
+    double force = 0, k = 0;
+    try {
+      force = globoidal::QuasiStaticForce(probe, theta0);
+      k = std::min(globoidal::RollerStiffness(probe, 1, theta0), globoidal::RollerStiffness(probe, 2, theta0));
+    } catch (const std::domain_error&) {
+      return s;  // no Hertz contact at the start angle: the dynamics stage reports it per speed
+    }
     const double n = probe.contact.exponent, allowed = 0.1 * s.dyn.cam.roller_radius;
     const double delta = std::pow(force / k, 1.0 / n);
     if (!(delta <= allowed)) {

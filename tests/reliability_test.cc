@@ -483,6 +483,10 @@ TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
   s["load"]["output_torque_Nm"] = 1e308;  // 2.8 s of work to a NaN result before
   ExpectRefusedQuickly("lcr-torque", Write(dir, "k.json", s), "/load/output_torque_Nm: ",
                        "at most 1.557e+07 N·m");  // 206 GPa · 12 mm · 10 mm · 15 rollers · 42 mm
+  s = Example("globoidal_cam_paper.json");
+  s["cam"]["roller_radius_mm"] = 5e-324;  // "internal error: … conformal with or undercut" before
+  ExpectRefusedQuickly("globoidal-roller", Write(dir, "l.json", s), "/cam/roller_radius_mm: ",
+                       "1e-6 to 1e6 times the center distance");
   s = SmallCycloid();
   s["drive"]["bore_diameter_mm"] = 1e-6;
   ExpectRefusedQuickly("cycloid-bore", Write(dir, "d.json", s), "/drive/bore_diameter_mm: ",
