@@ -92,8 +92,8 @@ Study Parse(const Node& root) {
   } else {
     follower["type"].Fail("\"translating_roller\" or \"oscillating_roller\"");
   }
-  cam.roller_radius = follower["roller_radius_mm"].Positive();
   cam.base_radius = root["base_circle_radius_mm"].Positive();
+  cam.roller_radius = PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius");
   for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
 
   // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.

@@ -58,8 +58,9 @@ double PlausibleLength(const Node& n, double scale_mm, const std::string& scale_
   if (!(v >= lo && v <= hi)) {
     std::ostringstream m;
     m.precision(4);
-    m << "a length between " << lo << " and " << hi << " mm (1e-6 to 1e6 times " << scale_name << ", " << scale_mm
-      << " mm)";
+    if (std::isfinite(hi)) m << "a length between " << lo << " and " << hi << " mm";
+    else m << "a length of at least " << lo << " mm";
+    m << " (1e-6 to 1e6 times " << scale_name << ", " << scale_mm << " mm)";
     n.Fail(m.str());
   }
   return v;

@@ -298,13 +298,17 @@ TEST(BadInput, ExtremeSizesAndEqualBoundsExitWith2) {
   json s = Example("disc_cam_translating.json");
   s["base_circle_radius_mm"] = 1e308;
   s["analysis"]["monte_carlo"] = false;
-  s.erase("cam_thickness_mm");  // 12 mm would be refused first (off the part's scale)
-  ExpectRefusedQuickly("disc-1e308", Write(dir, "a.json", s), "/: ", "not a finite number");
+  s.erase("cam_thickness_mm");
+  // The roller (10 mm) is off the scale of a 1e308 mm cam: refused before the work, which ran to
+  // a non-finite result before.
+  ExpectRefusedQuickly("disc-1e308", Write(dir, "a.json", s), "/follower/roller_radius_mm: ",
+                       "a length of at least 1e+302 mm (1e-6 to 1e6 times the base circle radius, 1e+308 mm)");
   s = Example("disc_cam_translating.json");
-  s["follower"]["roller_radius_mm"] = 1e-6;
+  s["follower"]["roller_radius_mm"] = 1e-6;  // 1.9 s of work to a NaN before: now refused on its scale
   s.erase("cutter_radius_mm");  // the example's 8 mm cutter would be refused first (cutter <= roller)
   s["analysis"]["monte_carlo"]["samples"] = 5;
-  ExpectRefusedQuickly("disc-tiny-roller", Write(dir, "b.json", s), "/: ", "not a finite number");
+  ExpectRefusedQuickly("disc-tiny-roller", Write(dir, "b.json", s), "/follower/roller_radius_mm: ",
+                       "1e-6 to 1e6 times the base circle radius");
   s = Example("lcr_friction_fit.json");
   s["parameters"]["friction_coefficient"] = {{"initial", 0.05}, {"bounds", {0.05, 0.05}}};
   ExpectRefusedQuickly("fit-equal-bounds", Write(dir, "c.json", s),
