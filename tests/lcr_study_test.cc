@@ -152,7 +152,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"poisson", "/material/poisson_ratio", "0.7", "/material/poisson_ratio: expected a number in [0, 0.4999]"},
         BadCase{"cutter", "/reducer/input/cutter_diameter_mm", "14", "/reducer/input/cutter_diameter_mm: expected a cutter diameter <= the roller diameter"},
         BadCase{"loop", "/reducer/eccentricity_mm", "3", "/reducer/input/turret_radius_mm: the pitch point"},
-        BadCase{"typo", "/load/friction_coeficient", "0.05", "/load/friction_coeficient: unknown field (known: cam_weight_N, friction_coefficient, output_torque_Nm)"},
+        BadCase{"typo", "/load/friction_coeficient", "0.05", "/load/friction_coeficient: unknown field (known: cam_weight_N, friction_coefficient, input_speed_rpm, output_torque_Nm)"},
         BadCase{"evaluate", "/analysis/evaluate", "[\"forcez\"]", "/analysis/evaluate/0: expected one of profile"}),
     [](const auto& p) { return p.param.name; });
 
