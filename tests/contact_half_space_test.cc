@@ -102,6 +102,32 @@ TEST(ContactDisplacement, FftMatchesDirectSum) {
   }
 }
 
+TEST(ContactDisplacement, RateByCellHeightMatchesCentralDifferencesOfTheDirectSum) {
+  // The grid stretched along y at fixed cell pressures (rows of a face width): the Jet derivative
+  // of Love's kernel against central differences of the direct sum on grids dy ± h.
+  constexpr double kRelTol = 1e-6;  // step 1e-5 dy: truncation ~1e-10, rounding ~1e-11 relative
+  for (const auto& [nx, ny] : {std::array<int, 2>{13, 7}, {6, 11}, {1, 5}}) {
+    const Grid g = CenteredGrid(nx, ny, 0.4, 3.0);
+    std::vector<double> p(g.cells(), 0.0);
+    for (int i = 0; i < g.cells(); ++i)
+      if (i % 3 != 1) p[i] = 100.0 + std::fmod(37.0 * i, 11.0) * 50.0;  // some cells unloaded
+    const std::vector<double> rate = DisplacementRateByCellHeight(g, p, kEStar);
+    const double h = 1e-5 * g.dy;
+    auto at = [&](double s) {
+      Grid m = g;
+      m.dy += s * h;
+      m.y0 = -0.5 * m.ny * m.dy;
+      return DisplacementDense(m, p, kEStar);
+    };
+    const std::vector<double> plus = at(1), minus = at(-1);
+    double scale = 0;
+    for (int i = 0; i < g.cells(); ++i) scale = std::max(scale, std::abs(plus[i] - minus[i]) / (2 * h));
+    ASSERT_GT(scale, 0.0);
+    for (int i = 0; i < g.cells(); ++i)
+      EXPECT_NEAR(rate[i], (plus[i] - minus[i]) / (2 * h), kRelTol * scale) << nx << "x" << ny << " cell " << i;
+  }
+}
+
 // ---- CG against the dense reference --------------------------------------------------------
 
 TEST(ContactSolver, DenseAndCgAgreeOn40x40) {

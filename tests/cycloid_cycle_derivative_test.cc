@@ -58,6 +58,10 @@ Point Moved(Point p, const std::string& name, double h) {
   if (name == "radius_mm") p.crowning.radius_mm += h;
   if (name == "delta_position_mm") p.drive.delta_position_mm += h;
   if (name == "delta_radius_mm") p.drive.delta_radius_mm += h;
+  if (name == "eccentricity_mm") p.drive.eccentricity_mm += h;
+  if (name == "roller_position_radius_mm") p.drive.roller_position_radius_mm += h;
+  if (name == "roller_radius_mm") p.drive.roller_radius_mm += h;
+  if (name == "face_width_mm") p.drive.face_width_mm += h;
   return p;
 }
 
@@ -68,6 +72,10 @@ double Step(const Point& p, const std::string& name) {
   if (name == "end_drop_mm") return 1e-5 * p.crowning.end_drop_mm;
   if (name == "flat_length_mm") return 1e-5 * p.crowning.flat_length_mm;
   if (name == "radius_mm") return 1e-5 * p.crowning.radius_mm;
+  if (name == "eccentricity_mm") return 1e-5 * p.drive.eccentricity_mm;
+  if (name == "roller_position_radius_mm") return 1e-5 * p.drive.roller_position_radius_mm;
+  if (name == "roller_radius_mm") return 1e-5 * p.drive.roller_radius_mm;
+  if (name == "face_width_mm") return 1e-5 * p.drive.face_width_mm;
   return 1e-6;  // Δa, Δρ [mm]
 }
 
@@ -123,6 +131,18 @@ void ExpectCycleDerivativesMatch(const Point& base, const std::vector<std::strin
 TEST(CycloidCycleDerivative, EveryOutputMatchesCentralDifferencesForEveryParameter) {
   ExpectCycleDerivativesMatch(Point{}, {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm",
                                         "flat_length_mm", "delta_position_mm", "delta_radius_mm"});
+}
+
+TEST(CycloidCycleDerivative, GeometryParametersMatchCentralDifferences) {
+  // The sizing variables: eccentricity, pin circle, pin radius, face width (the rows stretch; the
+  // crowning's effective length is its own field here and the face width's own in the second).
+  ExpectCycleDerivativesMatch(Point{}, {"eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm",
+                                        "face_width_mm"});
+  Point whole_face;
+  whole_face.crowning.effective_length_mm = 0;  // L = the face width
+  whole_face.crowning.end_drop_mm = 0;
+  whole_face.crowning.flat_length_mm = 0;
+  ExpectCycleDerivativesMatch(whole_face, {"face_width_mm"});
 }
 
 TEST(CycloidCycleDerivative, FullAndPartialCrowningParametersMatchCentralDifferences) {

@@ -319,7 +319,8 @@ TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
   const MeshLoad m = tca.Solve(torque, crank);
   ASSERT_TRUE(m.converged) << m.message;
   for (const char* name : {"torque_Nmm", "coefficient_mm", "effective_length_mm", "end_drop_mm",
-                           "delta_position_mm", "delta_radius_mm"}) {
+                           "delta_position_mm", "delta_radius_mm", "eccentricity_mm",
+                           "roller_position_radius_mm", "roller_radius_mm", "face_width_mm"}) {
     const LoadedTca::Derivative d = tca.Differentiate(m, name);
     ASSERT_TRUE(d.converged) << name;
     auto at = [&](double sign) {
@@ -334,8 +335,15 @@ TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
       Drive dd = NnmDrive();
       if (n == "delta_position_mm") dd.delta_position_mm += sign * (h = 1e-6);
       if (n == "delta_radius_mm") dd.delta_radius_mm += sign * (h = 1e-6);
-      if (n == "delta_position_mm" || n == "delta_radius_mm")
-        return std::pair<MeshLoad, double>(LoadedTca(dd, c, Material{}, o).Solve(t, crank), h);
+      if (n == "eccentricity_mm") dd.eccentricity_mm += sign * (h = 1e-6 * dd.eccentricity_mm);
+      if (n == "roller_position_radius_mm") dd.roller_position_radius_mm += sign * (h = 1e-6 * dd.roller_position_radius_mm);
+      if (n == "roller_radius_mm") dd.roller_radius_mm += sign * (h = 1e-6 * dd.roller_radius_mm);
+      if (n == "face_width_mm") {
+        dd.face_width_mm += sign * (h = 1e-6 * dd.face_width_mm);
+        cc.effective_length_mm = c.effective_length_mm;  // L is its own field here
+      }
+      if (n.find("delta_") == 0 || n == "eccentricity_mm" || n.find("roller_") == 0 || n == "face_width_mm")
+        return std::pair<MeshLoad, double>(LoadedTca(dd, cc, Material{}, o).Solve(t, crank), h);
       return std::pair<MeshLoad, double>(tca.WithCrowning(cc).Solve(t, crank), h);
     };
     const auto [plus, h] = at(1.0);

@@ -16,6 +16,8 @@
 #include <tuple>
 #include <utility>
 
+#include <ceres/jet.h>
+
 #include "model/contact/half_space_detail.h"
 #include "model/contact/love.h"
 
@@ -915,6 +917,45 @@ std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pr
                                  double e_star_MPa) {
   HalfSpaceSolver solver;
   return solver.Displacement(grid, pressure_MPa, e_star_MPa);
+}
+
+std::vector<double> DisplacementRateByCellHeight(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                                 double e_star_MPa) {
+  const char* where = "DisplacementRateByCellHeight";
+  detail::CheckGrid(grid, where);
+  detail::CheckField(grid, pressure_MPa, "pressure_MPa", where);
+  detail::CheckModulus(e_star_MPa, where);
+  // With centres y_i = y0 + (iy + ½) dy and y0 = −ny dy / 2, an offset of o rows is o·dy and the
+  // cell's half-height dy/2: d/d(dy) of LoveInfluence(ox dx, oy dy, dx/2, dy/2), even in both
+  // offsets, so one table over |ox|, |oy|.
+  using J = ceres::Jet<double, 1>;
+  using Key = std::tuple<int, int, double, double>;
+  thread_local std::map<Key, std::vector<double>> cache;
+  const Key key{grid.nx, grid.ny, grid.dx, grid.dy};
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    if (cache.size() >= 16) cache.clear();
+    std::vector<double> table(size_t(grid.nx) * grid.ny);
+    const J dy(grid.dy, 0);
+    for (int oy = 0; oy < grid.ny; ++oy)
+      for (int ox = 0; ox < grid.nx; ++ox)
+        table[size_t(oy) * grid.nx + ox] =
+            LoveInfluence(J(ox * grid.dx), J(double(oy)) * dy, J(0.5 * grid.dx), 0.5 * dy).v[0];
+    it = cache.emplace(key, std::move(table)).first;
+  }
+  const std::vector<double>& table = it->second;
+  std::vector<std::pair<int, double>> loaded;
+  for (int j = 0; j < grid.cells(); ++j)
+    if (pressure_MPa[j] != 0) loaded.emplace_back(j, pressure_MPa[j]);
+  std::vector<double> rate(grid.cells(), 0.0);
+  for (int i = 0; i < grid.cells(); ++i) {
+    const int ix = i % grid.nx, iy = i / grid.nx;
+    double sum = 0;
+    for (const auto& [j, p] : loaded)
+      sum += p * table[size_t(std::abs(iy - j / grid.nx)) * grid.nx + std::abs(ix - j % grid.nx)];
+    rate[i] = sum / e_star_MPa;
+  }
+  return rate;
 }
 
 }  // namespace camopt::contact

@@ -136,6 +136,15 @@ std::mutex& FftwPlannerMutex();
 std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
                                  double e_star_MPa);
 
+/// Rate of the surface displacement at every cell centre with respect to the cell height dy at
+/// fixed cell pressures [mm per mm]: the grid stretched along y (cell centres at y0 + (iy + ½) dy
+/// with y0 = −ny·dy/2, each cell dy high), as when a face width divided into a fixed number of
+/// rows changes. Exact: Love's influence coefficient (love.h) differentiated with a ceres::Jet,
+/// summed over the loaded cells (O(cells × loaded cells)); the kernel's derivative per offset is
+/// computed once per grid shape and cell size (a small per-thread cache).
+std::vector<double> DisplacementRateByCellHeight(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                                 double e_star_MPa);
+
 /// Dense form of the same displacement (direct double sum over the cells; tests only).
 std::vector<double> DisplacementDense(const Grid& grid, const std::vector<double>& pressure_MPa,
                                       double e_star_MPa);

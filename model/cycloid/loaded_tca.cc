@@ -20,6 +20,12 @@ double CircleSeparation(double kappa, double x) {
   const double kx = kappa * x;
   return kappa * x * x / (1.0 + std::sqrt(std::max(0.0, 1.0 - kx * kx)));
 }
+template <typename T>
+T CircleSeparation(const T& kappa, double x) {
+  using std::sqrt;
+  const T kx = kappa * x;
+  return kappa * x * x / (1.0 + sqrt(1.0 - kx * kx));
+}
 
 // Grid half-sizes come from a ladder 0.005 mm · 2^(k/4) so that grids (and the solver's cached
 // kernels) repeat from one pair and crank angle to the next.
@@ -511,7 +517,7 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
   const size_t n = solved.pairs.size();
   // What each parameter changes: the torque (the moment balance), Δa/Δρ (arms, backlash, tooth
   // curvature, β0 through the unloaded TCA with a Jet), or the crowning drop per axial row.
-  enum class Kind { kTorque, kGeometry, kCrowning };
+  enum class Kind { kTorque, kGeometry, kCrowning, kFaceWidth };
   std::vector<Kind> kind(np);
   std::vector<std::vector<double>> dcrown(np);
   std::vector<std::map<int, PairGeometry<J>>> dgeom(np);
@@ -521,7 +527,8 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
     if (parameter == "torque_Nmm") {
       kind[j] = Kind::kTorque;
     } else if (parameter == "delta_position_mm" || parameter == "delta_radius_mm" ||
-               parameter == "crank_angle_rad") {
+               parameter == "crank_angle_rad" || parameter == "eccentricity_mm" ||
+               parameter == "roller_position_radius_mm" || parameter == "roller_radius_mm") {
       kind[j] = Kind::kGeometry;
       DriveTpl<J> dj;
       dj.teeth = drive_.teeth;
@@ -533,21 +540,27 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
       dj.delta_position_mm = J(drive_.delta_position_mm);
       dj.delta_radius_mm = J(drive_.delta_radius_mm);
       J crank(solved.crank_angle_rad);
-      (parameter == "delta_position_mm"   ? dj.delta_position_mm
-       : parameter == "delta_radius_mm" ? dj.delta_radius_mm
-                                          : crank).v[0] = 1.0;
+      (parameter == "delta_position_mm"           ? dj.delta_position_mm
+       : parameter == "delta_radius_mm"           ? dj.delta_radius_mm
+       : parameter == "eccentricity_mm"           ? dj.eccentricity_mm
+       : parameter == "roller_position_radius_mm" ? dj.roller_position_radius_mm
+       : parameter == "roller_radius_mm"          ? dj.roller_radius_mm
+                                                  : crank).v[0] = 1.0;
       const UnloadedMesh<J> u = UnloadedTca<J>(dj, crank);
       d_beta0[j] = u.rotation.v[0];
       for (const auto& g : u.pairs) dgeom[j][g.roller] = g;
     } else {
-      kind[j] = Kind::kCrowning;
-      // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact).
-      const double b = drive_.face_width_mm;
-      const double dy = b / options_.axial_cells;
+      // ∂(crowning drop per axial row)/∂s through the drop formula with a ceres::Jet (exact). The
+      // face width b also moves the rows (y = −b/2 + (iy + ½) b/q) and, when the logarithmic
+      // crowning's effective length is the face width, L.
+      const bool face = parameter == "face_width_mm";
+      kind[j] = face ? Kind::kFaceWidth : Kind::kCrowning;
+      J b(drive_.face_width_mm);
       J radius(crowning_.radius_mm), flat(crowning_.flat_length_mm), coefficient(crowning_.coefficient_mm),
-          length(crowning_.effective_length_mm > 0 ? crowning_.effective_length_mm : b),
+          length(crowning_.effective_length_mm > 0 ? crowning_.effective_length_mm : drive_.face_width_mm),
           drop(crowning_.end_drop_mm);
-      J* field = parameter == "coefficient_mm"        ? &coefficient
+      J* field = face                                 ? &b
+                 : parameter == "coefficient_mm"      ? &coefficient
                  : parameter == "effective_length_mm" ? &length
                  : parameter == "end_drop_mm"         ? &drop
                  : parameter == "flat_length_mm"      ? &flat
@@ -555,10 +568,12 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
                                                       : nullptr;
       if (!field) throw std::invalid_argument("Differentiate: unknown parameter " + parameter);
       field->v[0] = 1.0;
+      if (face && !(crowning_.effective_length_mm > 0)) length = b;
+      const J dy = b / double(options_.axial_cells);
       dcrown[j].resize(options_.axial_cells);
       for (int iy = 0; iy < options_.axial_cells; ++iy)
         dcrown[j][iy] = CrowningDrop<J>(crowning_.type, radius, flat, coefficient, length,
-                                        J(-0.5 * b + (iy + 0.5) * dy), drop).v[0];
+                                        -0.5 * b + (iy + 0.5) * dy, drop).v[0];
       // The gap is shifted so that its lowest cell touches: the shift's derivative is the lowest
       // row's (the across-profile part does not depend on s).
       const int low = int(std::min_element(crown_.begin(), crown_.end()) - crown_.begin());
@@ -574,7 +589,8 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
   std::vector<std::vector<contact::HalfSpaceSolver::Sensitivity>> by_gap(
       np, std::vector<contact::HalfSpaceSolver::Sensitivity>(n));
   std::vector<std::vector<double>> gap_rate(np, std::vector<double>(n, 0.0)),
-      d_arm(np, std::vector<double>(n, 0.0)), d_backlash(np, std::vector<double>(n, 0.0));
+      d_arm(np, std::vector<double>(n, 0.0)), d_backlash(np, std::vector<double>(n, 0.0)),
+      dload(np, std::vector<double>(n, 0.0));
   bool converged = true;
   for (size_t i = 0; i < n; ++i) {
     const PairLoad& p = solved.pairs[i];
@@ -593,12 +609,11 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
         const PairGeometry<J>& g = dgeom[j].at(p.roller);
         d_arm[j][i] = g.arm_mm.v[0];
         d_backlash[j][i] = g.backlash.v[0];
-        const J kappa = g.profile_curvature;
         std::vector<double> across(p.grid.nx), d_across(p.grid.nx);
         for (int ix = 0; ix < p.grid.nx; ++ix) {
           const double x = p.grid.x_centre_mm(ix);
-          const J sep = kappa * x * x / (1.0 + sqrt(1.0 - kappa * kappa * x * x));
-          across[ix] = CircleSeparation(1.0 / drive_.roller_radius_mm, x) + sep.a;
+          const J sep = CircleSeparation(g.roller_curvature, x) + CircleSeparation(g.profile_curvature, x);
+          across[ix] = sep.a;
           d_across[ix] = sep.v[0];
         }
         const int low = int(std::min_element(across.begin(), across.end()) - across.begin());
@@ -608,6 +623,16 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
       } else {
         for (int iy = 0; iy < p.grid.ny; ++iy)
           for (int ix = 0; ix < p.grid.nx; ++ix) dgap[size_t(iy) * p.grid.nx + ix] = dcrown[j][iy];
+        if (kind[j] == Kind::kFaceWidth) {
+          // The rows stretch with b (dy = b/q): the displacement of the same pressures changes by
+          // (∂K/∂b) p, which acts on the contact equations as a gap change, and the same force
+          // now needs Σ p dA with a larger cell: at fixed load cA Σ dp = −F / b.
+          const std::vector<double> du =
+              contact::DisplacementRateByCellHeight(p.grid, p.pressure_MPa, e_star_);
+          const double per_b = 1.0 / options_.axial_cells;
+          for (size_t k = 0; k < dgap.size(); ++k) dgap[k] += du[k] * per_b;
+          dload[j][i] = -p.load_N / drive_.face_width_mm;
+        }
       }
       if (rotation_only) {
         // Reciprocity: with K w = c·1 on the frozen set (w = dp/dW, the load sensitivity) and
@@ -618,10 +643,11 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
           wh += by_load[i].pressure_MPa[k] * dgap[k];
           ws += by_load[i].pressure_MPa[k];
         }
-        gap_rate[j][i] = ws != 0 ? wh / ws : 0.0;
+        // With cA Σ dp = dW (face width) the same product adds c·dW: dδ = c dW + Σ w dh / Σ w.
+        gap_rate[j][i] = (ws != 0 ? wh / ws : 0.0) + compliance[i] * dload[j][i];
         continue;
       }
-      by_gap[j][i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, 0.0, e_star_, tol);
+      by_gap[j][i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, dload[j][i], e_star_, tol);
       gap_rate[j][i] = by_gap[j][i].approach_mm;
       converged = converged && by_gap[j][i].converged;
     }
@@ -666,10 +692,13 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
         for (size_t k = 0; k < field.size(); ++k)
           field[k] = df * by_load[i].pressure_MPa[k] + (torque ? 0.0 : by_gap[j][i].pressure_MPa[k]);
         const J1 e = EndDistanceFromRows<J1>(p.grid, RowMaxima(p.grid, p.pressure_MPa, &field));
-        d.pair_end_distance_mm.push_back(e.v[0]);
+        // Every length of the end distance (half face, row positions, dy) is proportional to b at
+        // fixed row maxima: its partial derivative in b is its value over b.
+        const double stretch = kind[j] == Kind::kFaceWidth ? e.a / drive_.face_width_mm : 0.0;
+        d.pair_end_distance_mm.push_back(e.v[0] + stretch);
         if (p.end_distance_mm < nearest_end) {
           nearest_end = p.end_distance_mm;
-          d.end_distance_mm = e.v[0];
+          d.end_distance_mm = e.v[0] + stretch;
         }
       }
     }

@@ -145,19 +145,22 @@ class LoadedTca {
   /// differentiation with every pair's contact set and the set of loaded pairs frozen
   /// (design-notes §1): per pair one forward sensitivity for its load (its compliance dδ/dF) and
   /// one for the parameter at fixed load (dδ/ds), then the outer equations δ_i = l_i (Δφc − φ_bl,i),
-  /// Σ l_i F_i = T differentiated. Parameters (kLtcaParameters): the torque [N·mm]
-  /// ("torque_Nmm"), the profile modifications "delta_position_mm" and "delta_radius_mm" (Δa, Δρ:
-  /// arms, backlash and the tooth curvature through the unloaded TCA with a Jet, the first-contact
-  /// pair frozen), the crank angle "crank_angle_rad" (the same path: the LTE's slope dLTE/dφ of
-  /// the instantaneous gear ratio) and the crowning's coefficient_mm, effective_length_mm,
-  /// end_drop_mm, flat_length_mm, radius_mm (per its type).
+  /// Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] ("torque_Nmm"); the geometry
+  /// "eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm" and the profile
+  /// modifications "delta_position_mm", "delta_radius_mm" (arms, backlash, the tooth's and the
+  /// roller's curvature through the unloaded TCA with a Jet, the first-contact pair frozen); the
+  /// crank angle "crank_angle_rad" (the same path: the LTE's slope dLTE/dφ of the instantaneous
+  /// gear ratio); "face_width_mm" (the q rows stretch: the crowning drop at the moved rows, the
+  /// half-space kernel's change contact::DisplacementRateByCellHeight, the larger cell area at
+  /// fixed force; the pairs' x-grids, laddered, stay); and the crowning's coefficient_mm,
+  /// effective_length_mm, end_drop_mm, flat_length_mm, radius_mm (per its type).
   /// @pre `solved` from Solve(torque_Nmm, ·) on this model with LoadedOptions::keep_pressure.
   /// @throws std::invalid_argument for an unknown parameter or a solve without pressures.
   struct Derivative {
     std::string parameter;
     double deflection_rad = 0;            ///< dΔφc/ds
     double rotation_rad = 0;              ///< d(β0 + Δφc)/ds, the LTE's derivative
-    double unloaded_rotation_rad = 0;     ///< dβ0/ds, the unloaded TE's (Δa, Δρ only)
+    double unloaded_rotation_rad = 0;     ///< dβ0/ds, the unloaded TE's (geometry parameters)
     std::vector<double> pair_load_N;      ///< dF_i/ds, in the order of solved.pairs
     std::vector<double> pair_max_pressure_MPa;  ///< d p_i(peak cell)/ds, peak cell frozen
     double max_pressure_MPa = 0;          ///< of the pair carrying the maximum
