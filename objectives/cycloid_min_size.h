@@ -1,0 +1,193 @@
+// The smallest one-tooth-difference cycloid drive for a ratio and a torque, sized together with
+// its profile modifications and crowning on the 3D loaded contact (model/cycloid/loaded_tca.h).
+//
+// Variables (each named by the cycloid_ltca field it sets; fixed fields keep their values):
+// eccentricity_mm, roller_position_radius_mm (pin circle a), roller_radius_mm (pin ρ),
+// face_width_mm, delta_position_um, delta_radius_um (Δa, Δρ) and the crowning's coefficient_mm,
+// effective_length_mm, end_drop_mm, flat_length_mm, radius_mm (per its type).
+//
+// Objective: the ring's outer diameter 2(a + ρ), or the volume of the ring-and-disc envelope
+// π (a + ρ)² b.
+//
+// Constraint rows, each with its exact first derivative:
+//   kSizingPeakPressure   the peak pressure of every (crank angle, roller) of the design-torque
+//                         cycle <= contact_stress_MPa (0 and a zero gradient for a roller that
+//                         carries no load; implicit-function derivative, peak cell frozen);
+//   kSizingEndDistance    the end distance at every crank angle of the overload cycle >=
+//                         min_edge_margin_um (only with an overload torque);
+//   kSizingBacklash       the unloaded TE β0 (the disc's free rotation to first contact) at every
+//                         angle in [min_backlash_arcsec, max_backlash_arcsec];
+//   kSizingLte            the loaded TE's peak-to-peak at the design torque (only when bounded);
+//   kSizingCurtate        1 − e N / a' >= min_curtate_margin (geometry_limits.h);
+//   kSizingUndercut       the smallest convex radius of the tooth, closed form (C3)/(C4) of
+//                         geometry_limits.h, minus min_profile_radius_mm, >= 0;
+//   kSizingPinGap         2 a sin(π/N) − 2ρ − min_pin_gap_mm >= 0;
+//   kSizingWeb            a' − e − ρ' − bore radius − min_web_mm >= 0 (only with a bore).
+// The crank angles sample one mesh period 2π/N uniformly: a peak between two samples is missed by
+// the fast model, which is what the verified-optimum loop (objectives/verification.h) catches.
+//
+// The solve (SolveCycloidMinSize): local solves from several starts, the best converged one
+// re-evaluated by the accurate model (twice the cells across and along the contact, twice the
+// crank angles; each value's error estimated as its change from the fast settings); while a limit
+// breaks beyond its error, the fast limit is tightened (stress: by the accurate/fast ratio; edge
+// margin and backlash: by the excess plus a step) and the problem solved again from the last
+// design, at most `verify_rounds` times.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/cycloid/loaded_tca.h"
+#include "objectives/problem.h"
+#include "objectives/verification.h"
+#include "optimizers/solver.h"
+
+namespace camopt::objectives {
+
+inline constexpr const char* kSizingOuterDiameter = "outer_diameter_mm";
+inline constexpr const char* kSizingVolume = "envelope_volume_mm3";
+inline constexpr const char* kSizingPeakPressure = "pair_peak_pressure_MPa";
+inline constexpr const char* kSizingEndDistance = "end_distance_at_overload_um";
+inline constexpr const char* kSizingBacklash = "unloaded_te_arcsec";
+inline constexpr const char* kSizingLte = "lte_peak_to_peak_arcsec";
+inline constexpr const char* kSizingCurtate = "curtate_margin";
+inline constexpr const char* kSizingUndercut = "undercut_margin_mm";
+inline constexpr const char* kSizingPinGap = "pin_gap_margin_mm";
+inline constexpr const char* kSizingWeb = "web_margin_mm";
+
+/// Field names a sizing variable may have.
+std::vector<std::string> CycloidSizingVariableNames();
+/// "" when `name` may be a sizing variable with this crowning type, else why not.
+std::string CycloidSizingVariableAllowed(const std::string& name, cycloid::CrowningType type);
+
+enum class CycloidSizeObjective { kOuterDiameter, kVolume };
+
+/// The study's limits (the `limits` object of cycloid_min_size, same names).
+struct CycloidSizingLimits {
+  double contact_stress_MPa = kInf;      ///< peak pressure over the design-torque cycle
+  double min_edge_margin_um = 0;         ///< end distance over the overload cycle (with an overload)
+  double min_curtate_margin = 0.05;      ///< 1 − e N / a'
+  double min_profile_radius_mm = 0;      ///< smallest convex radius of the tooth (no undercut: 0)
+  double min_pin_gap_mm = 0;             ///< clearance between neighbouring pins
+  double min_backlash_arcsec = 0;        ///< β0 at every angle (no interference at assembly)
+  double max_backlash_arcsec = kInf;     ///< β0 at every angle (backlash bound)
+  double max_lte_peak_to_peak_arcsec = kInf;
+  double bore_radius_mm = 0;             ///< the disc's central bore; 0: no web row
+  double min_web_mm = 0;                 ///< web between the tooth root and the bore
+};
+
+struct CycloidSizingSpec {
+  cycloid::Drive drive;             ///< teeth, rollers, and the start (or fixed) value of every field
+  cycloid::Crowning crowning;       ///< its type, start (or fixed) values
+  cycloid::Material material;
+  cycloid::LoadedOptions options;   ///< the fast model's grid and tolerances
+  double design_torque_Nmm = 0;     ///< on the disc
+  double overload_torque_Nmm = 0;   ///< 0: no overload cycle, no edge rows
+  int angles_per_period = 6;        ///< crank angles over one mesh period 2π/N
+  /// Names from CycloidSizingVariableNames, in their own units (µm for delta_*_um), bounds and
+  /// start; every listed variable varies (a fixed field is not listed).
+  std::vector<Variable> variables;
+  CycloidSizingLimits limits;
+  CycloidSizeObjective objective = CycloidSizeObjective::kOuterDiameter;
+};
+
+/// One design as the fast (or, in CycloidAccurateCheck, the accurate) model sees it.
+struct CycloidSizingEvaluation {
+  std::vector<double> x;
+  double outer_diameter_mm = 0, volume_mm3 = 0;
+  double stress_MPa = 0;               ///< exact maximum over the design cycle's samples
+  std::vector<double> pair_peak_MPa;   ///< per (angle, roller), angle-major (0: roller unloaded)
+  double edge_margin_um = kInf;        ///< min end distance over the overload cycle (kInf: none)
+  std::vector<double> end_distance_um; ///< per angle of the overload cycle
+  std::vector<double> unloaded_te_arcsec;  ///< β0 per angle
+  double lte_peak_to_peak_arcsec = 0;
+  double max_pair_load_N = 0;
+  double curtate_margin = 0, undercut_margin_mm = 0, pin_gap_margin_mm = 0, web_margin_mm = 0;
+  double min_profile_radius_mm = 0;    ///< smallest convex radius of the tooth itself
+  bool converged = true;
+  /// With gradients, [row][variable] for the vector blocks, [variable] for the scalars.
+  std::vector<double> d_pair_peak, d_end_distance, d_unloaded_te, d_lte;
+  std::vector<double> d_objective, d_curtate, d_undercut, d_pin_gap, d_web;
+};
+
+/// The two cycles (design and overload torque) and the closed-form limits of a design x. Pure:
+/// an evaluation depends on its arguments only.
+class CycloidSizingModel {
+ public:
+  /// @throws std::invalid_argument for an unknown or disallowed variable name.
+  explicit CycloidSizingModel(CycloidSizingSpec spec);
+  CycloidSizingEvaluation Evaluate(const std::vector<double>& x, bool with_gradient);
+  /// The drive and crowning that x sets.
+  std::pair<cycloid::Drive, cycloid::Crowning> Design(const std::vector<double>& x) const;
+  const CycloidSizingSpec& spec() const { return spec_; }
+  const std::vector<double>& crank_angles() const { return angles_; }
+  int evaluations() const { return evaluations_; }
+  int gradient_evaluations() const { return gradient_evaluations_; }
+  double value_seconds() const { return value_seconds_; }        ///< CPU time of the cycles
+  double gradient_seconds() const { return gradient_seconds_; }  ///< of their derivatives
+
+ private:
+  CycloidSizingSpec spec_;
+  std::vector<double> angles_;
+  int evaluations_ = 0, gradient_evaluations_ = 0;
+  double value_seconds_ = 0, gradient_seconds_ = 0;
+  std::vector<double> last_x_;
+  std::optional<cycloid::CycleResult> last_design_, last_over_;
+};
+
+/// The fast limits the solver is given (the study's, tightened by the verified-optimum loop).
+struct CycloidFastLimits {
+  double contact_stress_MPa = kInf;
+  double min_edge_margin_um = 0;
+  double min_backlash_arcsec = 0;
+  double max_backlash_arcsec = kInf;
+};
+
+/// Minimise the objective subject to the rows above with `fast` in place of the study's
+/// contact-stress, edge-margin and backlash limits. `model` must outlive the problem.
+Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits& fast,
+                             std::function<void(const CycloidSizingEvaluation&)> on_evaluation = nullptr);
+
+/// The accurate model's values at a design (cells ×2 both ways, crank angles ×2) with each
+/// value's estimated error (|accurate − fast settings|), and the limits checked against them.
+struct CycloidAccurateCheck {
+  CycloidSizingEvaluation fast, accurate;
+  double stress_error_MPa = 0, edge_margin_error_um = 0, backlash_error_arcsec = 0, lte_error_arcsec = 0;
+  std::string model;   ///< in words, with its settings
+  std::vector<VerifiedLimit> checks;
+};
+CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cycloid::Drive& drive,
+                                        const cycloid::Crowning& crowning);
+
+struct CycloidMinSizeOptions {
+  optimizers::SolverOptions solver;   ///< backend ("ipopt", "slsqp"), tolerances, budgets
+  int starts = 2;                     ///< starting points: the variables' own, then box points
+  int verify_rounds = 3;              ///< tightening rounds of the verified-optimum loop
+  std::function<void(double fraction, const std::string& stage)> progress;
+};
+
+struct CycloidMinSizeOutcome {
+  bool converged = false;             ///< the last solve converged (the optimizer's own test)
+  bool verified = false;              ///< every limit holds on the accurate model
+  std::vector<double> x;              ///< the reported design's variables (empty: no design)
+  cycloid::Drive drive;
+  cycloid::Crowning crowning;
+  optimizers::SolverResult result;    ///< the last solve (evaluation counts summed over all)
+  CycloidAccurateCheck check;         ///< at the reported design
+  Verification verification;
+  /// Limits that bind at the optimum (study limit key → d(objective)/d(limit), in the objective's
+  /// unit per unit of the limit), from the KKT multipliers of the active rows.
+  std::map<std::string, double> limit_cost;
+  std::vector<optimizers::SolverResult> starts;   ///< each start's solve in the first round
+  int evaluations = 0, gradient_evaluations = 0;
+  double value_seconds = 0, gradient_seconds = 0, verification_seconds = 0;
+};
+
+/// @throws std::invalid_argument for a spec the model refuses.
+CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const CycloidMinSizeOptions& options);
+
+}  // namespace camopt::objectives
