@@ -21,41 +21,6 @@ using objectives::CrowningEvaluation;
 
 namespace {
 
-// The general form's "crowning": start values; a field that is a variable may be omitted.
-cycloid::Crowning ParseStartCrowning(const Node& root, const std::set<std::string>& vars) {
-  cycloid::Crowning c;
-  if (!root.Has("crowning")) return c;
-  const Node n = root["crowning"];
-  const std::string type = n["type"].String();
-  auto value = [&](const char* field, bool required, double fallback) {
-    if (n.Has(field)) return n[field].NonNegative();
-    if (required && !vars.count(field)) n[field].NonNegative();  // "missing field"
-    return fallback;
-  };
-  if (type == "none") {
-    n.CheckKnownFields({"type"});
-  } else if (type == "full") {
-    n.CheckKnownFields({"type", "radius_mm"});
-    c.type = cycloid::CrowningType::kFull;
-    c.radius_mm = value("radius_mm", true, 0.0);
-  } else if (type == "partial") {
-    n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
-    c.type = cycloid::CrowningType::kPartial;
-    c.radius_mm = value("radius_mm", true, 0.0);
-    c.flat_length_mm = value("flat_length_mm", true, 0.0);
-  } else if (type == "logarithmic") {
-    n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
-    c.type = cycloid::CrowningType::kLogarithmic;
-    c.coefficient_mm = value("coefficient_mm", true, 0.0);
-    c.effective_length_mm = value("effective_length_mm", false, 0.0);
-    c.end_drop_mm = value("end_drop_mm", false, 0.0);
-    c.flat_length_mm = value("flat_length_mm", false, 0.0);
-  } else {
-    n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
-  }
-  return c;
-}
-
 // "analysis": the contact grid and the crank-angle sampling, the same for both study forms.
 void ParseAnalysis(const Node& root, Study& s) {
   if (!root.Has("analysis")) return;
@@ -74,7 +39,7 @@ void ParseJoint(const Node& root, Study& s) {
   for (const auto& [key, _] : v.json().items()) names.insert(key);
   const std::vector<std::string> known = objectives::TuningVariableNames();
   v.CheckKnownFields(std::set<std::string>(known.begin(), known.end()));
-  s.crowning = ParseStartCrowning(root, names);
+  s.crowning = cycloid_common::ParseCrowningStart(root, names);
   // The variables in a fixed order (TuningVariableNames), whatever the file's order.
   for (const std::string& name : known) {
     if (!names.count(name)) continue;
@@ -593,10 +558,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"curve", jcurve}};
   if (s.joint) {
     const objectives::TuningEvaluation& b = r.joint_best;
-    j["crowning_type"] = s.crowning.type == cycloid::CrowningType::kFull       ? "full"
-                         : s.crowning.type == cycloid::CrowningType::kPartial    ? "partial"
-                         : s.crowning.type == cycloid::CrowningType::kLogarithmic ? "logarithmic"
-                                                                                  : "none";
+    j["crowning_type"] = cycloid_common::CrowningTypeName(s.crowning.type);
     j["softmax_temperature_MPa"] = s.temperature_MPa;
     j["tuned_smooth_max_contact_stress_MPa"] = Finite(b.smooth_stress_MPa, "stress");
     j["tuned_lte_peak_to_peak_arcsec"] = Finite(r.accurate_lte_peak_to_peak_arcsec, "LTE");

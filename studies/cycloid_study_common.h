@@ -1,11 +1,12 @@
-// Parsing and output helpers shared by the two cycloid study kinds (cycloid_ltca,
-// cycloid_crowning_tuning): the shared parse of drive, modification, material, crowning and grid,
+// Parsing and output helpers shared by the cycloid study kinds (cycloid_ltca,
+// cycloid_crowning_tuning, cycloid_min_size): the shared parse of drive, modification, material, crowning and grid,
 // and the pressure-map drawing. Header-only; each kind is its own <kind>_study.h/.cc.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -123,6 +124,77 @@ inline cycloid::Crowning ParseCrowning(const Node& root, double face_width_mm) {
   if (const std::string why = cycloid::CheckCrowning(c, face_width_mm); !why.empty())
     n.FailWith(why);
   return c;
+}
+
+/// "crowning" of a study that tunes or sizes some of its fields: its type and the start (or fixed)
+/// values of its fields. A field named in `variables` may be left out (it is 0 here; the variable
+/// sets it); a required field of the type (cycloid_ltca's) that is neither given nor a variable is
+/// "missing". No "crowning": none. CheckCrowning is left to the caller, which knows the values the
+/// variables take.
+inline cycloid::Crowning ParseCrowningStart(const Node& root, const std::set<std::string>& variables) {
+  cycloid::Crowning c;
+  if (!root.Has("crowning")) return c;
+  const Node n = root["crowning"];
+  const std::string type = n["type"].String();
+  auto value = [&](const char* field, bool required, double fallback) {
+    if (n.Has(field)) return n[field].NonNegative();
+    if (required && !variables.count(field)) n[field].NonNegative();  // "missing field"
+    return fallback;
+  };
+  if (type == "none") {
+    n.CheckKnownFields({"type"});
+  } else if (type == "full") {
+    n.CheckKnownFields({"type", "radius_mm"});
+    c.type = cycloid::CrowningType::kFull;
+    c.radius_mm = value("radius_mm", true, 0.0);
+  } else if (type == "partial") {
+    n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
+    c.type = cycloid::CrowningType::kPartial;
+    c.radius_mm = value("radius_mm", true, 0.0);
+    c.flat_length_mm = value("flat_length_mm", true, 0.0);
+  } else if (type == "logarithmic") {
+    n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
+    c.type = cycloid::CrowningType::kLogarithmic;
+    c.coefficient_mm = value("coefficient_mm", true, 0.0);
+    c.effective_length_mm = value("effective_length_mm", false, 0.0);
+    c.end_drop_mm = value("end_drop_mm", false, 0.0);
+    c.flat_length_mm = value("flat_length_mm", false, 0.0);
+  } else {
+    n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
+  }
+  return c;
+}
+
+/// The file's word for a crowning type ("none", "full", "partial", "logarithmic").
+inline const char* CrowningTypeName(cycloid::CrowningType type) {
+  switch (type) {
+    case cycloid::CrowningType::kFull: return "full";
+    case cycloid::CrowningType::kPartial: return "partial";
+    case cycloid::CrowningType::kLogarithmic: return "logarithmic";
+    case cycloid::CrowningType::kNone: break;
+  }
+  return "none";
+}
+
+/// A crowning as the "crowning" object of a cycloid_ltca study (ParseCrowning reads it back): its
+/// type and the fields of that type.
+inline nlohmann::json CrowningJson(const cycloid::Crowning& c) {
+  nlohmann::json j = {{"type", CrowningTypeName(c.type)}};
+  switch (c.type) {
+    case cycloid::CrowningType::kNone: break;
+    case cycloid::CrowningType::kFull: j["radius_mm"] = c.radius_mm; break;
+    case cycloid::CrowningType::kPartial:
+      j["radius_mm"] = c.radius_mm;
+      j["flat_length_mm"] = c.flat_length_mm;
+      break;
+    case cycloid::CrowningType::kLogarithmic:
+      j["coefficient_mm"] = c.coefficient_mm;
+      j["effective_length_mm"] = c.effective_length_mm;
+      j["end_drop_mm"] = c.end_drop_mm;
+      j["flat_length_mm"] = c.flat_length_mm;
+      break;
+  }
+  return j;
 }
 
 /// "grid": [p, q] (profile cells, axial cells), default 40 × 40.
