@@ -1,0 +1,912 @@
+// Study kind "cycloid_min_size" (studies/cycloid_min_size_study.h): parse, check the ranges against
+// the closed-form limits, size through objectives/cycloid_min_size.h, write.
+#include "studies/cycloid_min_size_study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/cycloid/geometry_limits.h"
+#include "optimizers/solver.h"
+#include "studies/cycloid_study_common.h"
+#include "studies/format.h"
+#include "studies/report.h"
+#include "studies/verification_json.h"
+#include "studies/writers.h"
+
+namespace camopt::studies::cycloid_min_size {
+
+using objectives::CycloidSizingLimits;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Parsing.
+
+// The section of the file that holds a sized field when it is not a variable.
+const char* SectionOf(const std::string& name) {
+  if (name == "eccentricity_mm" || name == "roller_position_radius_mm" || name == "roller_radius_mm" ||
+      name == "face_width_mm")
+    return "drive";
+  if (name == "delta_position_um" || name == "delta_radius_um") return "modification";
+  return "crowning";
+}
+
+bool IsDriveField(const std::string& name) { return std::string(SectionOf(name)) == "drive"; }
+
+// One sized field as the file gives it: a range (lo < hi, a variable) or a value (lo = hi), in the
+// field's own unit (µm for the modifications), with the nodes its bounds came from (messages).
+struct Field {
+  std::string name;
+  bool given = false;     ///< in the file (variables or its section); else its default
+  bool variable = false;  ///< a range with lo < hi
+  double lo = 0, hi = 0, start = 0;
+  std::optional<Node> node, lo_node, hi_node;  ///< the entry and the nodes of its bounds
+  std::string path() const { return node ? node->path() : "/variables/" + name; }
+};
+
+// "[lo, hi]": two numbers, lo <= hi. An empty range (lo > hi) is refused with the range that fits.
+std::pair<double, double> RangeOf(const Node& n) {
+  const nlohmann::json& j = n.json();
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) n.Fail("[lower, upper], two numbers");
+  const double lo = n[0].Number(), hi = n[1].Number();
+  if (lo > hi)
+    n.FailWith("expected [lower, upper] with lower <= upper, found " + Describe(j) + " (an empty range); [" +
+               Format(hi) + ", " + Format(lo) + "] would fit");
+  return {lo, hi};
+}
+
+// An entry of "variables": a number (fixed), [lo, hi] (start at the middle) or
+// {"range": [lo, hi], "start": value}. lo = hi is a fixed value.
+Field ParseVariable(const Node& n, const std::string& name) {
+  Field f;
+  f.name = name;
+  f.given = true;
+  f.node = n;
+  const nlohmann::json& j = n.json();
+  if (j.is_number()) {
+    f.lo = f.hi = f.start = n.Number();
+    f.lo_node = f.hi_node = n;
+  } else if (j.is_array()) {
+    std::tie(f.lo, f.hi) = RangeOf(n);
+    f.start = 0.5 * (f.lo + f.hi);
+    f.lo_node = n[0];
+    f.hi_node = n[1];
+  } else if (j.is_object()) {
+    n.CheckKnownFields({"range", "start"});
+    const Node r = n["range"];
+    std::tie(f.lo, f.hi) = RangeOf(r);
+    f.lo_node = r[0];
+    f.hi_node = r[1];
+    f.start = 0.5 * (f.lo + f.hi);
+    if (n.Has("start")) {
+      f.start = n["start"].Number();
+      if (f.start < f.lo || f.start > f.hi)
+        n["start"].Fail("a start within the range [" + Format(f.lo) + ", " + Format(f.hi) + "]");
+    }
+  } else {
+    n.Fail("a number (a fixed value), [lo, hi] (a range, starting at its middle) or "
+           "{\"range\": [lo, hi], \"start\": value}");
+  }
+  f.variable = f.hi > f.lo;
+  if (!f.variable) f.start = f.lo;
+  return f;
+}
+
+// A field given in its section ("drive", "modification", "crowning"): a fixed value.
+Field SectionField(const Node& n, const std::string& name, double value) {
+  Field f;
+  f.name = name;
+  f.given = true;
+  f.node = f.lo_node = f.hi_node = n;
+  f.lo = f.hi = f.start = value;
+  return f;
+}
+
+// The bounds each field's own kind requires (what the schema states per field): lengths of the
+// drive > 0, modification ranges <= 0, crowning parameters >= 0 (an end drop range > 0, a radius > 0).
+void CheckFieldBounds(const Field& f) {
+  if (!f.given) return;
+  const Node& lo = *f.lo_node;
+  const Node& hi = *f.hi_node;
+  if (IsDriveField(f.name) && !(f.lo > 0)) lo.Fail("a number > 0");
+  if (f.name == "delta_position_um" || f.name == "delta_radius_um") {
+    if (f.variable && f.hi > 0) hi.Fail("an upper bound <= 0 (a positive modification interferes)");
+    return;
+  }
+  if (std::string(SectionOf(f.name)) != "crowning") return;
+  if (f.name == "radius_mm") {
+    if (!(f.lo > 0)) lo.Fail("a number > 0");
+  } else if (f.name == "end_drop_mm" && f.variable) {
+    if (!(f.lo > 0)) lo.Fail("a lower bound > 0 (0 means an unbounded drop)");
+  } else if (!(f.lo >= 0)) {
+    lo.Fail("a number >= 0");
+  }
+  (void)hi;
+}
+
+void SetDriveField(cycloid::Drive& d, const std::string& name, double v) {
+  if (name == "eccentricity_mm") d.eccentricity_mm = v;
+  if (name == "roller_position_radius_mm") d.roller_position_radius_mm = v;
+  if (name == "roller_radius_mm") d.roller_radius_mm = v;
+  if (name == "face_width_mm") d.face_width_mm = v;
+  if (name == "delta_position_um") d.delta_position_mm = v * 1e-3;
+  if (name == "delta_radius_um") d.delta_radius_mm = v * 1e-3;
+}
+
+void SetCrowningField(cycloid::Crowning& c, const std::string& name, double v) {
+  if (name == "coefficient_mm") c.coefficient_mm = v;
+  if (name == "effective_length_mm") c.effective_length_mm = v;
+  if (name == "end_drop_mm") c.end_drop_mm = v;
+  if (name == "flat_length_mm") c.flat_length_mm = v;
+  if (name == "radius_mm") c.radius_mm = v;
+}
+
+double CrowningFieldOf(const cycloid::Crowning& c, const std::string& name) {
+  if (name == "coefficient_mm") return c.coefficient_mm;
+  if (name == "effective_length_mm") return c.effective_length_mm;
+  if (name == "end_drop_mm") return c.end_drop_mm;
+  if (name == "flat_length_mm") return c.flat_length_mm;
+  return c.radius_mm;
+}
+
+void ParseTarget(const Node& root, Study& s) {
+  const Node t = root["target"];
+  t.CheckKnownFields({"teeth", "speed_ratio", "design_torque_Nm", "overload_torque_Nm", "misalignment_mrad"});
+  if (t.Has("misalignment_mrad"))
+    t["misalignment_mrad"].FailWith(
+        "the cycloid contact model has no misalignment (model/cycloid/loaded_tca.h: disc and pins are "
+        "parallel; only the crowning shapes the load along the face); remove the field, and keep the "
+        "contact off the face ends at a higher overload_torque_Nm instead");
+  const bool teeth = t.Has("teeth"), ratio = t.Has("speed_ratio");
+  if (teeth == ratio)
+    t.FailWith(teeth ? "give one of \"teeth\" and \"speed_ratio\", not both (for this drive they are the same number z)"
+                     : "missing required field: \"teeth\" (z, the disc's teeth) or \"speed_ratio\" (z)");
+  int z = 0;
+  if (teeth) {
+    z = t["teeth"].Integer(2);
+  } else {
+    // A one-tooth-difference drive with the ring (z + 1 pins) fixed and the output taken from the
+    // disc turns the output 1/z of the input, in the opposite sense: the reduction is z.
+    const Node r = t["speed_ratio"];
+    const double v = r.Number();
+    if (v != std::round(v) || v < 2 || v > 1e9) {
+      const double fit = std::clamp(std::round(std::abs(v)), 2.0, 1e9);
+      r.FailWith("expected a whole-number reduction z >= 2 (ring of z + 1 pins fixed, output from the disc: the "
+                 "output turns 1/z of the input, in the opposite sense), found " + Describe(r.json()) + "; " +
+                 Format(fit, 10) + " would fit");
+    }
+    z = int(v);
+    s.ratio_given = true;
+  }
+  s.spec.drive.teeth = z;
+  s.spec.drive.rollers = z + 1;
+  s.design_torque_Nm = t["design_torque_Nm"].Positive();
+  s.spec.design_torque_Nmm = s.design_torque_Nm * 1000.0;
+  if (t.Has("overload_torque_Nm")) {
+    s.overload_torque_Nm = t["overload_torque_Nm"].Positive();
+    if (s.overload_torque_Nm < s.design_torque_Nm)
+      t["overload_torque_Nm"].Fail("a torque >= design_torque_Nm (" + Format(s.design_torque_Nm) + " N·m)");
+    s.spec.overload_torque_Nmm = s.overload_torque_Nm * 1000.0;
+  }
+}
+
+void ParseLimits(const Node& root, Study& s) {
+  const Node l = root["limits"];
+  l.CheckKnownFields({"contact_stress_MPa", "min_edge_margin_um", "min_curtate_margin", "min_profile_radius_mm",
+                      "min_pin_gap_mm", "min_backlash_arcsec", "max_backlash_arcsec", "max_lte_peak_to_peak_arcsec",
+                      "bore_diameter_mm", "min_web_mm"});
+  CycloidSizingLimits& lim = s.spec.limits;
+  lim.contact_stress_MPa = l["contact_stress_MPa"].Positive();
+  if (l.Has("min_edge_margin_um")) {
+    if (s.overload_torque_Nm == 0)
+      l["min_edge_margin_um"].FailWith("needs target.overload_torque_Nm: the edge margin is checked on the overload "
+                                       "cycle (give the torque at which the contact must stay off the face ends)");
+    lim.min_edge_margin_um = l["min_edge_margin_um"].Number();
+  }
+  if (l.Has("min_curtate_margin")) {
+    const Node m = l["min_curtate_margin"];
+    const double v = m.Number();
+    if (!(v >= 0 && v < 1)) m.Fail("a number in [0, 1) (1 - e (z + 1) / a')");
+    lim.min_curtate_margin = v;
+  }
+  lim.min_profile_radius_mm = l.NonNegativeOr("min_profile_radius_mm", 0.0);
+  lim.min_pin_gap_mm = l.NonNegativeOr("min_pin_gap_mm", 0.0);
+  lim.min_backlash_arcsec = l.NonNegativeOr("min_backlash_arcsec", 0.0);
+  lim.max_backlash_arcsec = l.PositiveOr("max_backlash_arcsec", kInf);
+  if (!(lim.max_backlash_arcsec > lim.min_backlash_arcsec))
+    l["max_backlash_arcsec"].Fail("a backlash > min_backlash_arcsec (" + Format(lim.min_backlash_arcsec) + " arcsec)");
+  lim.max_lte_peak_to_peak_arcsec = l.PositiveOr("max_lte_peak_to_peak_arcsec", kInf);
+  if (l.Has("bore_diameter_mm")) {
+    s.bore_diameter_mm = l["bore_diameter_mm"].Positive();
+    lim.bore_radius_mm = 0.5 * s.bore_diameter_mm;
+  }
+  if (l.Has("min_web_mm")) {
+    if (!l.Has("bore_diameter_mm"))
+      l["min_web_mm"].FailWith("needs bore_diameter_mm: the web is the ring between the bore and the tooth roots");
+    lim.min_web_mm = l["min_web_mm"].NonNegative();
+  }
+}
+
+void ParseAnalysis(const Node& root, Study& s) {
+  s.spec.angles_per_period = kDefaultCrankAnglesPerMeshPeriod;
+  if (!root.Has("analysis")) return;
+  const Node a = root["analysis"];
+  a.CheckKnownFields({"grid", "crank_angles_per_mesh_period", "tolerance"});
+  cycloid_common::ParseGrid(a, s.spec.options);
+  s.spec.angles_per_period = a.IntegerOr("crank_angles_per_mesh_period", 1, kDefaultCrankAnglesPerMeshPeriod);
+  if (s.spec.angles_per_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
+  s.spec.options.tolerance = a.PositiveOr("tolerance", s.spec.options.tolerance);
+}
+
+void ParseOptimizer(const Node& root, Study& s) {
+  optimizers::SolverOptions& so = s.options.solver;
+  s.options.starts = kDefaultStarts;
+  s.options.verify_rounds = kDefaultVerifyRounds;
+  so.max_evaluations = kDefaultMaxEvaluations;
+  if (root.Has("optimizer")) {
+    const Node o = root["optimizer"];
+    o.CheckKnownFields({"backend", "starts", "max_evaluations", "verify_rounds"});
+    s.backend = o.StringOr("backend", "ipopt");
+    if (s.backend != "ipopt" && s.backend != "slsqp") o["backend"].Fail("one of \"ipopt\", \"slsqp\"");
+    s.options.starts = o.IntegerOr("starts", 1, kDefaultStarts);
+    if (s.options.starts > 10) o["starts"].Fail("at most 10 starts");
+    so.max_evaluations = o.IntegerOr("max_evaluations", 1, kDefaultMaxEvaluations);
+    if (so.max_evaluations > 10000) o["max_evaluations"].Fail("at most 10000");
+    s.options.verify_rounds = o.IntegerOr("verify_rounds", 0, kDefaultVerifyRounds);
+    if (s.options.verify_rounds > 10) o["verify_rounds"].Fail("at most 10 rounds");
+  }
+  so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
+  // The evaluation budget bounds the run, never the clock: the same study gives the same design.
+  so.max_seconds = 1e9;
+  // The contact model is discretised: its peaks move by a fraction of a MPa between neighbouring
+  // designs (cells entering the contact), so the optimality test is relative 1e-4 on the size and the
+  // constraints are met to 1e-3 of their scales, as in cycloid_crowning_tuning.
+  so.tolerance = 1e-4;
+  so.constraint_tolerance = 1e-3;
+}
+
+// The sizing fields: "variables" and the sections. Fills s.spec.drive, s.spec.crowning and
+// s.spec.variables; returns every field by name (for the checks that follow).
+std::map<std::string, Field> ParseDesign(const Node& root, Study& s) {
+  const std::vector<std::string> names = objectives::CycloidSizingVariableNames();
+  const Node v = root["variables"];
+  if (!v.json().is_object() || v.json().empty())
+    v.Fail("an object of sized fields {\"field\": [lo, hi] or a number, ...}");
+  v.CheckKnownFields(std::set<std::string>(names.begin(), names.end()));
+  std::set<std::string> in_variables;
+  for (const auto& [key, _] : v.json().items()) in_variables.insert(key);
+
+  // The sections: "drive" and "modification" hold fixed fields; "crowning" its type and fixed fields.
+  if (root.Has("drive")) {
+    const Node d = root["drive"];
+    d.CheckKnownFields({"eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm", "face_width_mm"});
+  }
+  if (root.Has("modification")) root["modification"].CheckKnownFields({"delta_position_um", "delta_radius_um"});
+  s.spec.crowning = cycloid_common::ParseCrowningStart(root, in_variables);
+  const cycloid::Crowning section_crowning = s.spec.crowning;
+
+  std::map<std::string, Field> fields;
+  for (const std::string& name : names) {
+    const std::string section = SectionOf(name);
+    const bool in_section = root.Has(section) && root[section].Has(name);
+    Field f;
+    f.name = name;
+    if (in_variables.count(name)) {
+      if (in_section)
+        root[section][name].FailWith("given twice: also in /variables/" + name +
+                                     "; give it once (a range or a number in \"variables\", or a number here)");
+      if (const std::string why = objectives::CycloidSizingVariableAllowed(name, s.spec.crowning.type); !why.empty())
+        v[name].FailWith("not with the crowning type \"" +
+                         std::string(cycloid_common::CrowningTypeName(s.spec.crowning.type)) + "\": " + why +
+                         " (choose the crowning with \"crowning\": {\"type\": ...})");
+      f = ParseVariable(v[name], name);
+    } else if (in_section) {
+      const Node n = root[section][name];
+      const double value = section == "drive"          ? n.Positive()
+                           : section == "modification" ? n.Number()
+                                                       : CrowningFieldOf(section_crowning, name);
+      f = SectionField(n, name, value);
+    } else if (section == "drive") {
+      v.FailWith("missing " + name + ": give it in \"variables\" (a range [lo, hi] or a number) or in \"drive\"");
+    } else {
+      // Not given: a modification is 0; a crowning field keeps ParseCrowningStart's default.
+      f.lo = f.hi = f.start = section == "crowning" ? CrowningFieldOf(section_crowning, name) : 0.0;
+    }
+    CheckFieldBounds(f);
+    if (section == "crowning")
+      SetCrowningField(s.spec.crowning, name, f.start);
+    else
+      SetDriveField(s.spec.drive, name, f.start);
+    if (f.variable) {
+      objectives::Variable var;
+      var.name = name;
+      var.lower = f.lo;
+      var.upper = f.hi;
+      var.initial = f.start;
+      var.scale = f.hi - f.lo;
+      s.spec.variables.push_back(var);
+    }
+    fields[name] = f;
+  }
+  if (s.spec.variables.empty())
+    v.FailWith("nothing to size: every field is fixed; give at least one as a range [lo, hi] with lo < hi");
+  return fields;
+}
+
+// Every design in the box must be a plausible drive (cycloid_common::CheckPlausible for the whole
+// box): a shortening coefficient e N / a' >= kMinShortening at its smallest, pins of at least
+// kMinPinToHalfPitch of the half pitch, modifications below the pin radius, a face width on the pin
+// circle's scale. Outside these the input is a unit or typing mistake.
+void CheckPlausibleBox(const std::map<std::string, Field>& f, int n) {
+  const Field &e = f.at("eccentricity_mm"), &a = f.at("roller_position_radius_mm"), &rho = f.at("roller_radius_mm"),
+              &b = f.at("face_width_mm"), &da = f.at("delta_position_um"), &dr = f.at("delta_radius_um");
+  for (const Field* m : {&da, &dr})
+    if (m->given && std::max(std::abs(m->lo), std::abs(m->hi)) * 1e-3 >= rho.lo)
+      m->node->FailWith("a profile modification of " + Format(std::max(std::abs(m->lo), std::abs(m->hi)), 6) +
+                        " um is not below the smallest pin radius " + Format(rho.lo * 1e3, 6) +
+                        " um: modifications are corrections of micrometres (the field is in um)");
+  const double a_hi = a.hi + da.hi * 1e-3;
+  const double k1 = e.lo * n / a_hi;
+  if (k1 < cycloid_common::kMinShortening)
+    e.lo_node->FailWith("the smallest shortening coefficient e * rollers / a' = " + Format(k1, 4) + " (e = " +
+                        Format(e.lo) + " mm, a' = " + Format(a_hi) + " mm) is below " +
+                        Format(cycloid_common::kMinShortening, 3) +
+                        " (real drives: 0.5-0.9): the teeth vanish; an eccentricity of at least " +
+                        Format(cycloid_common::kMinShortening * a_hi / n, 4) + " mm would fit");
+  const double half_pitch = a.hi * std::sin(kPi / n);
+  if (rho.lo < cycloid_common::kMinPinToHalfPitch * half_pitch)
+    rho.lo_node->FailWith("the pin radius " + Format(rho.lo, 4) + " mm is below " +
+                          Format(100 * cycloid_common::kMinPinToHalfPitch, 3) + "% of the half pitch " +
+                          Format(half_pitch, 4) + " mm at the largest pin circle (real drives: 30-80%): at least " +
+                          Format(cycloid_common::kMinPinToHalfPitch * half_pitch, 4) + " mm would fit");
+  for (const Node* bound : {&*b.lo_node, &*b.hi_node}) PlausibleLength(*bound, a.hi, "the largest pin circle radius");
+}
+
+// The crowning's conditions (cycloid::CheckCrowning) at the most favourable values of the ranges:
+// each is linear in the face width and the crowning's fields, so if even its best corner breaks it,
+// every design of the box does (bad input, with the bound that would fit); designs of the box that
+// break it elsewhere are kept out by the sizing problem's crowning rows. The start design's
+// crowning must be valid: the solve begins there.
+void CheckCrowningBox(const Node& root, const std::map<std::string, Field>& f, const Study& s) {
+  const Field &b = f.at("face_width_mm"), &len = f.at("effective_length_mm"), &flat = f.at("flat_length_mm"),
+              &radius = f.at("radius_mm");
+  const auto at = [&](const Field& x) { return x.given ? *x.hi_node : root["crowning"]; };
+  switch (s.spec.crowning.type) {
+    case cycloid::CrowningType::kNone: break;
+    case cycloid::CrowningType::kFull:
+      if (!(radius.hi > 0.5 * b.lo))
+        at(radius).FailWith("every crowning radius of the ranges is at most half the face width (radius " +
+                            Format(radius.hi) + " mm, face width " + Format(b.lo) + " mm at the most favourable "
+                            "corner); a radius above " + Format(0.5 * b.lo) + " mm would fit");
+      break;
+    case cycloid::CrowningType::kPartial:
+      if (!(flat.lo <= b.hi))
+        at(flat).FailWith("every flat length of the ranges exceeds the face width (" + Format(flat.lo) + " > " +
+                          Format(b.hi) + " mm); a flat length of at most " + Format(b.hi) + " mm would fit");
+      if (!(radius.hi > 0.5 * (b.lo - flat.hi)))
+        at(radius).FailWith("every crowning radius of the ranges is at most half the crowned length (radius " +
+                            Format(radius.hi) + " mm, crowned length " + Format(b.lo - flat.hi) +
+                            " mm at the most favourable corner); a radius above " + Format(0.5 * (b.lo - flat.hi)) +
+                            " mm would fit");
+      break;
+    case cycloid::CrowningType::kLogarithmic:
+      if (len.variable && !(len.lo > 0))
+        len.lo_node->Fail("a lower bound > 0 (0, L = the face width, is a fixed value only)");
+      if ((len.variable || len.hi > 0) && !(len.hi >= b.lo))
+        at(len).FailWith("every effective length of the ranges is below the face width (" + Format(len.hi) + " < " +
+                         Format(b.lo) + " mm); an effective length of at least " + Format(b.lo) +
+                         " mm (or 0: L = the face width) would fit");
+      if (!(flat.lo < b.hi))
+        at(flat).FailWith("every flat length of the ranges reaches the face width (" + Format(flat.lo) + " >= " +
+                          Format(b.hi) + " mm); a flat length below " + Format(b.hi) + " mm would fit");
+      break;
+  }
+  if (const std::string why = cycloid::CheckCrowning(s.spec.crowning, s.spec.drive.face_width_mm); !why.empty())
+    (root.Has("crowning") ? root["crowning"] : root["variables"])
+        .FailWith("the start design's crowning is invalid (face width " + Format(s.spec.drive.face_width_mm) +
+                  " mm): " + why + "; give starts inside the valid region ({\"range\": [lo, hi], \"start\": value})");
+}
+
+// The closed-form limits of geometry_limits.h at the most favourable corner of the box: the smallest
+// e, the largest a and Δa, the smallest ρ and Δρ. The curtate margin 1 − e N / a' grows with a' and
+// falls with e; the smallest convex radius of the generating curve, a'·g(e N / a') with g
+// decreasing ((C3), (C4)), grows with a' and falls with e, and the tooth's is that minus ρ'; the
+// pin gap 2 a sin(π/N) − 2ρ and the web a' − e − ρ' − r_b grow with a and fall with ρ. If even this
+// corner breaks a limit, every design in the box does: bad input, with the bound that would fit.
+void CheckClosedFormCorner(const Node& root, const std::map<std::string, Field>& f, const Study& s) {
+  const Field &e = f.at("eccentricity_mm"), &a = f.at("roller_position_radius_mm"), &rho = f.at("roller_radius_mm"),
+              &da = f.at("delta_position_um"), &dr = f.at("delta_radius_um");
+  const CycloidSizingLimits& lim = s.spec.limits;
+  cycloid::Drive d = s.spec.drive;
+  d.eccentricity_mm = e.lo;
+  d.roller_position_radius_mm = a.hi;
+  d.roller_radius_mm = rho.lo;
+  d.delta_position_mm = da.hi * 1e-3;
+  d.delta_radius_mm = dr.lo * 1e-3;
+  const int n = d.rollers;
+  const double a_mod = a.hi + d.delta_position_mm;  // a'
+  const std::string corner = "e = " + Format(e.lo) + " mm, a = " + Format(a.hi) + " mm, rho = " + Format(rho.lo) +
+                             " mm" + (da.hi != 0 ? ", delta_a = " + Format(da.hi) + " um" : "") +
+                             (dr.lo != 0 ? ", delta_rho = " + Format(dr.lo) + " um" : "");
+  const double curtate = cycloid::CurtateMargin(d);
+  if (curtate < lim.min_curtate_margin)
+    e.lo_node->FailWith(
+        "every design in the ranges is too curtate: even the most favourable corner (" + corner +
+        ") has 1 - e (z + 1) / a' = " + Format(curtate, 4) + ", below min_curtate_margin " +
+        Format(lim.min_curtate_margin, 4) + "; an eccentricity of at most " +
+        Format((1 - lim.min_curtate_margin) * a_mod / n, 5) + " mm, or a pin circle radius of at least " +
+        Format(e.lo * n / (1 - lim.min_curtate_margin) - d.delta_position_mm, 5) + " mm, would fit");
+  const double gap = cycloid::PinGapMargin(d, lim.min_pin_gap_mm);
+  if (gap < 0)
+    rho.lo_node->FailWith(
+        "the pins overlap in every design of the ranges: even the largest pin circle and the smallest pins (a = " +
+        Format(a.hi) + " mm, rho = " + Format(rho.lo) + " mm) leave a gap 2 a sin(pi / rollers) - 2 rho = " +
+        Format(gap + lim.min_pin_gap_mm, 4) + " mm, below min_pin_gap_mm " + Format(lim.min_pin_gap_mm) +
+        "; a pin radius of at most " + Format(0.5 * (2 * a.hi * std::sin(kPi / n) - lim.min_pin_gap_mm), 5) +
+        " mm, or a pin circle radius of at least " +
+        Format((2 * rho.lo + lim.min_pin_gap_mm) / (2 * std::sin(kPi / n)), 5) + " mm, would fit");
+  const double undercut = cycloid::UndercutMargin(d, lim.min_profile_radius_mm);
+  if (undercut < 0) {
+    // The largest pin radius that fits at this corner; when none does, the largest eccentricity
+    // (the margin falls monotonically with e: bisection on the closed form).
+    const double rho_fit = cycloid::MinConvexCentreRadius(d) - d.delta_radius_mm - lim.min_profile_radius_mm;
+    std::string fit;
+    if (rho_fit > 0) {
+      fit = "a pin radius of at most " + Format(rho_fit, 5) + " mm would fit";
+    } else {
+      double lo = 0, hi = e.lo;
+      for (int k = 0; k < 100; ++k) {
+        cycloid::Drive t = d;
+        t.eccentricity_mm = 0.5 * (lo + hi);
+        (cycloid::UndercutMargin(t, lim.min_profile_radius_mm) >= 0 ? lo : hi) = t.eccentricity_mm;
+      }
+      fit = lo > 0 ? "an eccentricity of at most " + Format(lo, 5) + " mm would fit" : "no eccentricity fits";
+    }
+    rho.lo_node->FailWith("every tooth in the ranges is undercut: even the most favourable corner (" + corner +
+                          ") has a smallest tooth radius of " + Format(cycloid::MinConvexProfileRadius(d), 4) +
+                          " mm, below min_profile_radius_mm " + Format(lim.min_profile_radius_mm) + "; " + fit);
+  }
+  if (lim.bore_radius_mm > 0) {
+    const double web = cycloid::WebMargin(d, lim.bore_radius_mm, lim.min_web_mm);
+    if (web < 0) {
+      const double fit = 2 * (cycloid::RootRadius(d) - lim.min_web_mm);
+      root["limits"]["bore_diameter_mm"].FailWith(
+          "no design of the ranges has room for the bore: even the most favourable corner (" + corner +
+          ") has a root radius a' - e - rho' of " + Format(cycloid::RootRadius(d), 5) + " mm, less than the bore radius " +
+          Format(lim.bore_radius_mm) + " mm plus min_web_mm " + Format(lim.min_web_mm) + "; " +
+          (fit > 0 ? "a bore of at most " + Format(fit, 5) + " mm diameter would fit" : "no bore fits"));
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Running.
+
+// A limit row's study key (its name without the sample index).
+std::string LimitKeyOfRow(const std::string& row) {
+  const std::string base = row.substr(0, row.find('['));
+  if (base == objectives::kSizingPeakPressure) return "contact_stress_MPa";
+  if (base == objectives::kSizingEndDistance) return "min_edge_margin_um";
+  if (base == objectives::kSizingBacklash) return "min_backlash_arcsec / max_backlash_arcsec";
+  if (base == objectives::kSizingLte) return "max_lte_peak_to_peak_arcsec";
+  if (base == objectives::kSizingCurtate) return "min_curtate_margin";
+  if (base == objectives::kSizingUndercut) return "min_profile_radius_mm";
+  if (base == objectives::kSizingPinGap) return "min_pin_gap_mm";
+  if (base == objectives::kSizingWeb) return "min_web_mm";
+  return base;
+}
+
+// Why the answer is not what was asked (exit 3), or "" when it is: the limit that blocks, its value
+// at the design the solve ended on, and the value of that limit at which that design fits.
+std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutcome& o) {
+  if (o.x.empty())
+    return "no design meets the limits: the optimizer ended without a design (" +
+           (o.result.message.empty() ? std::string(optimizers::ToString(o.result.status)) : o.result.message) +
+           "); widen the ranges or relax the limits";
+  if (o.verified && o.converged) return "";
+  const std::string size = "the closest design (outer diameter " + Format(o.check.accurate.outer_diameter_mm, 5) + " mm)";
+  const objectives::VerifiedLimit* w = o.verification.worst();
+  if (w) {
+    // The value of the limit at which that design holds: its accurate value within its error.
+    const double fit = w->upper ? w->accurate_value - w->estimated_error : w->accurate_value + w->estimated_error;
+    const std::string head = o.converged ? "the optimum of the fast model is not verified: "
+                                         : "no design meets the limits (the optimizer stopped at an infeasible point, " +
+                                               std::string(optimizers::ToString(o.result.status)) + "): ";
+    return head + w->limit + (w->where.empty() ? "" : " (" + w->where + ")") + " blocks; at " + size + " it is " +
+           Format(w->accurate_value, 5) + " +- " + Format(w->estimated_error, 2) + " by the accurate model against the limit " +
+           Format(w->limit_value, 5) + "; that design fits with " + w->limit + " = " + Format(fit, 5) +
+           (o.verification.history.empty() ? "" : " (after " + std::to_string(o.verification.history.size()) +
+                                                      " tightening rounds)");
+  }
+  // No accurate check breaks: the closed-form rows the solver left violated.
+  const objectives::CycloidSizingEvaluation& a = o.check.accurate;
+  const CycloidSizingLimits& lim = s.spec.limits;
+  struct Row {
+    const char* key;
+    double value, limit;
+  };
+  const Row rows[] = {{"min_curtate_margin", a.curtate_margin, lim.min_curtate_margin},
+                      {"min_profile_radius_mm", a.min_profile_radius_mm, lim.min_profile_radius_mm},
+                      {"min_pin_gap_mm", a.pin_gap_margin_mm + lim.min_pin_gap_mm, lim.min_pin_gap_mm},
+                      {"min_web_mm", a.web_margin_mm + lim.min_web_mm, lim.min_web_mm}};
+  for (const Row& r : rows)
+    if (r.value < r.limit && (std::string(r.key) != "min_web_mm" || lim.bore_radius_mm > 0))
+      return "no design meets the limits (the optimizer stopped at " + std::string(optimizers::ToString(o.result.status)) +
+             "): " + r.key + " blocks; at " + size + " it is " + Format(r.value, 5) + " against the limit " +
+             Format(r.limit, 5) + "; that design fits with " + r.key + " = " + Format(r.value, 5);
+  std::string rows_violated;
+  std::set<std::string> seen;
+  for (const std::string& row : o.result.violated)
+    if (seen.insert(LimitKeyOfRow(row)).second) rows_violated += (rows_violated.empty() ? "" : ", ") + LimitKeyOfRow(row);
+  return "no design meets the limits: the optimizer stopped at " + std::string(optimizers::ToString(o.result.status)) +
+         (rows_violated.empty() ? "" : " with " + rows_violated + " broken") + " at " + size + " (" + o.result.message + ")";
+}
+
+}  // namespace
+
+Study Parse(const Node& root) {
+  root.CheckKnownFields({"study", "name", "description", "target", "variables", "drive", "modification", "crowning",
+                         "limits", "objective", "material", "analysis", "optimizer"});
+  Study s;
+  s.name = root.StringOr("name", "");
+  ParseTarget(root, s);
+  ParseLimits(root, s);
+  s.spec.material = cycloid_common::ParseMaterial(root);
+  ParseAnalysis(root, s);
+  ParseOptimizer(root, s);
+  const std::string objective = root.StringOr("objective", "outer_diameter");
+  if (objective == "volume") s.spec.objective = objectives::CycloidSizeObjective::kVolume;
+  else if (objective != "outer_diameter") root["objective"].Fail("one of \"outer_diameter\", \"volume\"");
+  const std::map<std::string, Field> fields = ParseDesign(root, s);
+  CheckPlausibleBox(fields, s.spec.drive.rollers);
+  CheckCrowningBox(root, fields, s);
+  CheckClosedFormCorner(root, fields, s);
+  return s;
+}
+
+Result Run(const Study& s, const RunContext& ctx) {
+  Result r;
+  const auto t0 = std::chrono::steady_clock::now();
+  Progress progress("cycloid_min_size", ctx.quiet);
+  objectives::CycloidMinSizeOptions options = s.options;
+  options.progress = [&](double fraction, const std::string& stage) { progress.Update(0.9 * fraction, stage); };
+  try {
+    r.outcome = objectives::SolveCycloidMinSize(s.spec, options);
+  } catch (const std::invalid_argument& e) {
+    // A spec the sizing model refuses that the parse let through: bad input all the same.
+    throw StudyError(ctx.study_file + ": /variables: the sizing model refuses the study: " + e.what());
+  }
+  if (!r.outcome.x.empty()) {
+    // The stress over the cycle and the pressure maps of the reported design at the accurate
+    // settings (twice the cells each way, twice the crank angles: objectives/cycloid_min_size.h).
+    cycloid::LoadedOptions accurate = s.spec.options;
+    accurate.profile_cells *= 2;
+    accurate.axial_cells *= 2;
+    accurate.keep_pressure = true;
+    const int n = s.spec.drive.rollers;
+    r.best_cycle_angles_rad = cycloid::UniformCrankAngles(2 * s.spec.angles_per_period, 2.0 * kPi / n);
+    try {
+      const cycloid::LoadedTca tca(r.outcome.drive, r.outcome.crowning, s.spec.material, accurate);
+      r.best_cycle = cycloid::RunCycle(tca, s.spec.design_torque_Nmm, r.best_cycle_angles_rad, [&](double f) {
+        progress.Update(0.9 + 0.1 * f, "the best design's cycle at the accurate settings");
+      });
+    } catch (const std::invalid_argument& e) {
+      r.best_cycle_angles_rad.clear();
+      r.warnings.push_back("no stress_over_cycle or pressure_map: the loaded contact analysis refuses the design (" +
+                           std::string(e.what()) + ")");
+    }
+    const objectives::CycloidAccurateCheck& k = r.outcome.check;
+    if (k.stress_error_MPa > 0.05 * k.accurate.stress_MPa)
+      r.warnings.push_back("best.accurate.max_contact_stress_MPa: estimated discretisation error " +
+                           Format(k.stress_error_MPa, 3) + " MPa exceeds 5% of the value " +
+                           Format(k.accurate.stress_MPa, 5) +
+                           " MPa (refine analysis.grid or analysis.crank_angles_per_mesh_period)");
+  }
+  progress.Done();
+  r.blocking_message = BlockingMessage(s, r.outcome);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+namespace {
+
+nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// The values of one model at the reported design (accurate or fast), by their result.json names.
+nlohmann::json ModelJson(const Study& s, const objectives::CycloidSizingEvaluation& e) {
+  nlohmann::json j;
+  j["max_contact_stress_MPa"] = Finite(e.stress_MPa, "stress");
+  j["max_pair_load_N"] = Finite(e.max_pair_load_N, "pair load");
+  if (s.spec.overload_torque_Nmm > 0) j["edge_margin_at_overload_um"] = Finite(e.edge_margin_um, "edge margin");
+  if (!e.unloaded_te_arcsec.empty()) {
+    const auto [lo, hi] = std::minmax_element(e.unloaded_te_arcsec.begin(), e.unloaded_te_arcsec.end());
+    j["backlash_min_arcsec"] = Finite(*lo, "backlash");
+    j["backlash_max_arcsec"] = Finite(*hi, "backlash");
+  }
+  j["lte_peak_to_peak_arcsec"] = Finite(e.lte_peak_to_peak_arcsec, "LTE");
+  j["converged"] = e.converged;
+  return j;
+}
+
+nlohmann::json DriveJson(const cycloid::Drive& d) {
+  return {{"teeth", d.teeth},
+          {"rollers", d.rollers},
+          {"roller_position_radius_mm", d.roller_position_radius_mm},
+          {"roller_radius_mm", d.roller_radius_mm},
+          {"eccentricity_mm", d.eccentricity_mm},
+          {"face_width_mm", d.face_width_mm}};
+}
+
+nlohmann::json ModificationJson(const cycloid::Drive& d) {
+  return {{"delta_position_um", d.delta_position_mm * 1e3}, {"delta_radius_um", d.delta_radius_mm * 1e3}};
+}
+
+std::string ObjectiveUnit(const Study& s) {
+  return s.spec.objective == objectives::CycloidSizeObjective::kVolume ? "mm3" : "mm";
+}
+
+// The unit of a limit, from its key (the suffix of the study's field name).
+std::string LimitUnit(const std::string& key) {
+  for (const char* u : {"MPa", "um", "mm", "arcsec"}) {
+    const std::string suffix = std::string("_") + u;
+    if (key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) return u;
+  }
+  return "1";
+}
+
+// The study's value of a limit, by its key (NaN for an unknown key).
+double LimitValue(const Study& s, const std::string& key) {
+  const CycloidSizingLimits& l = s.spec.limits;
+  if (key == "contact_stress_MPa") return l.contact_stress_MPa;
+  if (key == "min_edge_margin_um") return l.min_edge_margin_um;
+  if (key == "min_curtate_margin") return l.min_curtate_margin;
+  if (key == "min_profile_radius_mm") return l.min_profile_radius_mm;
+  if (key == "min_pin_gap_mm") return l.min_pin_gap_mm;
+  if (key == "min_backlash_arcsec") return l.min_backlash_arcsec;
+  if (key == "max_backlash_arcsec") return l.max_backlash_arcsec;
+  if (key == "max_lte_peak_to_peak_arcsec") return l.max_lte_peak_to_peak_arcsec;
+  if (key == "min_web_mm") return l.min_web_mm;
+  if (key == "bore_diameter_mm") return 2 * l.bore_radius_mm;
+  return NAN;
+}
+
+nlohmann::json StartJson(const optimizers::SolverResult& r) {
+  nlohmann::json j = {{"status", optimizers::ToString(r.status)},
+                      {"message", r.message},
+                      {"objective", NumberOrNull(r.objective)},
+                      {"max_violation", NumberOrNull(r.max_violation)},
+                      {"evaluations", r.value_evaluations},
+                      {"gradient_evaluations", r.gradient_evaluations},
+                      {"iterations", r.iterations}};
+  j["x"] = nlohmann::json::array();
+  for (double x : r.x) j["x"].push_back(NumberOrNull(x));
+  return j;
+}
+
+// The accurate settings of the verification and the plots (objectives/cycloid_min_size.h: twice
+// the cells each way, twice the crank angles), as cycloid_ltca's "analysis" block.
+nlohmann::json AccurateAnalysisJson(const Study& s) {
+  return {{"grid", {std::min(512, 2 * s.spec.options.profile_cells), std::min(512, 2 * s.spec.options.axial_cells)}},
+          {"crank_angles_per_mesh_period", std::min(10000, 2 * s.spec.angles_per_period)},
+          {"tolerance", s.spec.options.tolerance}};
+}
+
+}  // namespace
+
+nlohmann::json ToJson(const Study& s, const Result& r) {
+  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  nlohmann::json j;
+  j["study"] = "cycloid_min_size";
+  j["name"] = s.name;
+  nlohmann::json target = {{"teeth", s.spec.drive.teeth},
+                           {"rollers", s.spec.drive.rollers},
+                           {"speed_ratio", s.spec.drive.teeth},
+                           {"design_torque_Nm", s.design_torque_Nm}};
+  if (s.overload_torque_Nm > 0) target["overload_torque_Nm"] = s.overload_torque_Nm;
+  j["target"] = target;
+  j["objective"] = s.spec.objective == objectives::CycloidSizeObjective::kVolume ? "volume" : "outer_diameter";
+  nlohmann::json vars = nlohmann::json::array();
+  for (const objectives::Variable& v : s.spec.variables)
+    vars.push_back({{"name", v.name}, {"lower", v.lower}, {"upper", v.upper}, {"start", v.initial}});
+  j["variables"] = vars;
+  AddVerificationJson(o.verification, j);
+  j["converged"] = o.converged;
+  if (o.x.empty()) {
+    j["best"] = nullptr;
+  } else {
+    const objectives::CycloidSizingEvaluation& acc = o.check.accurate;
+    nlohmann::json b;
+    b["outer_diameter_mm"] = Finite(2 * (o.drive.roller_position_radius_mm + o.drive.roller_radius_mm), "outer diameter");
+    b["envelope_volume_mm3"] =
+        Finite(kPi * std::pow(o.drive.roller_position_radius_mm + o.drive.roller_radius_mm, 2) * o.drive.face_width_mm,
+               "volume");
+    b["drive"] = DriveJson(o.drive);
+    b["modification"] = ModificationJson(o.drive);
+    b["crowning"] = cycloid_common::CrowningJson(o.crowning);
+    nlohmann::json x = nlohmann::json::object();
+    for (size_t k = 0; k < s.spec.variables.size() && k < o.x.size(); ++k)
+      x[s.spec.variables[k].name] = Finite(o.x[k], s.spec.variables[k].name);
+    b["variables"] = x;
+    // The closed-form limits (geometry_limits.h): exact, the same for both models.
+    b["curtate_margin"] = Finite(acc.curtate_margin, "curtate margin");
+    b["undercut_margin_mm"] = Finite(acc.undercut_margin_mm, "undercut margin");
+    b["min_profile_radius_mm"] = Finite(acc.min_profile_radius_mm, "profile radius");
+    b["pin_gap_margin_mm"] = Finite(acc.pin_gap_margin_mm, "pin gap margin");
+    if (s.spec.limits.bore_radius_mm > 0) b["web_margin_mm"] = Finite(acc.web_margin_mm, "web margin");
+    b["accurate"] = ModelJson(s, acc);
+    b["fast"] = ModelJson(s, o.check.fast);
+    nlohmann::json err = {{"max_contact_stress_MPa", Finite(o.check.stress_error_MPa, "error")},
+                          {"backlash_arcsec", Finite(o.check.backlash_error_arcsec, "error")},
+                          {"lte_peak_to_peak_arcsec", Finite(o.check.lte_error_arcsec, "error")}};
+    if (s.spec.overload_torque_Nmm > 0) err["edge_margin_at_overload_um"] = Finite(o.check.edge_margin_error_um, "error");
+    b["estimated_error"] = err;
+    b["accurate_model"] = o.check.model;
+    j["best"] = b;
+  }
+  // What each limit that binds at the optimum costs: d(objective)/d(limit) from the multipliers.
+  nlohmann::json binding = nlohmann::json::array();
+  for (const auto& [key, cost] : o.limit_cost)
+    binding.push_back({{"limit", key},
+                       {"limit_value", NumberOrNull(LimitValue(s, key))},
+                       {"limit_cost", Finite(cost, "limit cost")},
+                       {"unit", ObjectiveUnit(s) + " per " + LimitUnit(key)}});
+  j["binding_limits"] = binding;
+  nlohmann::json starts = nlohmann::json::array();
+  for (const optimizers::SolverResult& st : o.starts) starts.push_back(StartJson(st));
+  // Counts only: the time split (values, gradients, verification) goes to the terminal, so that two
+  // runs write identical files.
+  j["optimizer"] = {{"backend", s.backend},
+                    {"status", optimizers::ToString(o.result.status)},
+                    {"message", o.result.message},
+                    {"starts", s.options.starts},
+                    {"max_evaluations", s.options.solver.max_evaluations},
+                    {"verify_rounds", s.options.verify_rounds},
+                    {"evaluations", o.evaluations},
+                    {"gradient_evaluations", o.gradient_evaluations},
+                    {"binding_rows", o.result.active},
+                    {"start_outcomes", starts}};
+  j["analysis"] = {{"grid", {s.spec.options.profile_cells, s.spec.options.axial_cells}},
+                   {"crank_angles_per_mesh_period", s.spec.angles_per_period},
+                   {"tolerance", s.spec.options.tolerance},
+                   {"accurate", AccurateAnalysisJson(s)}};
+  if (!r.blocking_message.empty()) j["notes"] = {r.blocking_message};
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
+  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  if (o.x.empty()) return nullptr;
+  nlohmann::json a;
+  a["study"] = "cycloid_ltca";
+  a["name"] = (o.verified && o.converged ? "best of " : "closest design (not verified) of ") +
+              (s.name.empty() ? std::string("cycloid_min_size") : s.name);
+  nlohmann::json drive = DriveJson(o.drive);
+  if (s.bore_diameter_mm > 0) drive["bore_diameter_mm"] = s.bore_diameter_mm;
+  a["drive"] = drive;
+  a["modification"] = ModificationJson(o.drive);
+  a["crowning"] = cycloid_common::CrowningJson(o.crowning);
+  a["material"] = {{"youngs_modulus_GPa", s.spec.material.youngs_modulus_MPa / 1000.0},
+                   {"poisson_ratio", s.spec.material.poisson_ratio}};
+  a["load"] = {{"torque_Nm", s.design_torque_Nm}};
+  a["analysis"] = AccurateAnalysisJson(s);
+  return a;
+}
+
+void Write(const Study& s, const Result& r, Outputs& out) {
+  out.AddJson("result.json", ToJson(s, r));
+  if (!r.blocking_message.empty()) out.MarkIncomplete("cycloid_min_size: " + r.blocking_message);
+  if (r.outcome.x.empty()) return;
+  out.AddJson("best_cycloid_ltca.json", BestCycloidLtcaStudy(s, r));
+  const cycloid::CycleResult& c = r.best_cycle;
+  if (c.meshes.empty()) return;
+  Table t;
+  std::vector<double> angle, stress, pairs, lte;
+  for (size_t k = 0; k < c.meshes.size(); ++k) {
+    angle.push_back(r.best_cycle_angles_rad[k] * 180.0 / kPi);
+    stress.push_back(c.meshes[k].max_pressure_MPa);
+    pairs.push_back(c.meshes[k].pairs_in_contact);
+    lte.push_back(c.lte_arcsec.at(k));
+  }
+  t.Add("crank_angle_deg", angle);
+  t.Add("max_contact_stress_MPa", stress);
+  t.Add("pairs_in_contact", pairs);
+  t.Add("lte_arcsec", lte);
+  out.Add("stress_over_cycle.csv", ToCsv(t));
+  PlotOptions po;
+  po.title = "Peak contact stress of the best design over one mesh period (design torque, accurate settings)";
+  po.x_label = "crank angle [deg]";
+  po.y_label = "peak contact stress [MPa]";
+  po.guides = {{"contact_stress_MPa limit", s.spec.limits.contact_stress_MPa}};
+  out.Add("stress_over_cycle.svg", SvgLinePlot({{"largest over the rollers", angle, stress}}, po));
+  const cycloid::MeshLoad& worst = c.meshes[c.max_pressure_index];
+  out.Add("pressure_map.svg",
+          cycloid_common::PressureMapsSvg(worst, "Contact pressure of the best design at crank angle " +
+                                                     Format(worst.crank_angle_rad * 180 / kPi, 4) + " deg"));
+}
+
+std::string Summary(const Study& s, const Result& r) {
+  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  std::ostringstream m;
+  char buf[300];
+  if (!o.x.empty()) {
+    std::snprintf(buf, sizeof buf, "cycloid_min_size: %s outer diameter %.3f mm (%d teeth), %.2f s\n",
+                  o.verified && o.converged ? "best" : "closest (not verified)",
+                  2 * (o.drive.roller_position_radius_mm + o.drive.roller_radius_mm), s.spec.drive.teeth, r.seconds);
+    m << buf;
+  }
+  std::snprintf(buf, sizeof buf,
+                "cycloid_min_size: %d LTCA value runs (%.2f s), %d gradient runs (%.2f s), verification %.2f s\n",
+                o.evaluations, o.value_seconds, o.gradient_evaluations, o.gradient_seconds, o.verification_seconds);
+  m << buf;
+  for (const auto& [key, cost] : o.limit_cost) {
+    std::snprintf(buf, sizeof buf, "cycloid_min_size: %s binds: %+.4g %s per %s\n", key.c_str(), cost,
+                  ObjectiveUnit(s).c_str(), LimitUnit(key).c_str());
+    m << buf;
+  }
+  return m.str();
+}
+
+namespace {
+
+void RunCycloidMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study s = Parse(root);
+  const Result r = Run(s, ctx);
+  Write(s, r, out);
+  if (!ctx.quiet) std::cerr << Summary(s, r);
+}
+
+CAMOPT_REGISTER_STUDY("cycloid_min_size", RunCycloidMinSize);
+CAMOPT_REGISTER_STUDY_PARSER("cycloid_min_size", [](const Node& root) { (void)Parse(root); });
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the fast model's crank angles
+// and contact grid (the accurate check follows them at twice each) and the optimizer's budget.
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"},
+                     kDefaultCrankAnglesPerMeshPeriod, 2, true, 0, "uniform crank angles per mesh period (fast model)"});
+  f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
+                     "contact cells across the profile and along the face (fast model)"});
+  f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, kDefaultMaxEvaluations, 2, true, 0,
+                     "optimizer budget per solve (Ipopt: iterations; SLSQP: evaluations)"});
+  f.headlines = {"/best/outer_diameter_mm", "/best/accurate/max_contact_stress_MPa"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("cycloid_min_size", Knobs);
+
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("cycloid_min_size", {
+    {"smallest outer diameter", "/best/outer_diameter_mm", "mm"},
+    {"teeth (disc) / pins", "/target/teeth", ""},
+    {"pin circle radius", "/best/drive/roller_position_radius_mm", "mm"},
+    {"pin radius", "/best/drive/roller_radius_mm", "mm"},
+    {"eccentricity", "/best/drive/eccentricity_mm", "mm"},
+    {"face width", "/best/drive/face_width_mm", "mm"},
+    {"peak contact stress (accurate model)", "/best/accurate/max_contact_stress_MPa", "MPa",
+     "study:/limits/contact_stress_MPa", NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
+    {"edge margin at the overload torque", "/best/accurate/edge_margin_at_overload_um", "um",
+     "study:/limits/min_edge_margin_um", 0.0, false, "/best/estimated_error/edge_margin_at_overload_um"},
+    {"smallest backlash", "/best/accurate/backlash_min_arcsec", "arcsec", "study:/limits/min_backlash_arcsec", 0.0,
+     false},
+    {"largest backlash", "/best/accurate/backlash_max_arcsec", "arcsec", "study:/limits/max_backlash_arcsec", NAN,
+     true},
+    {"loaded transmission error, peak to peak", "/best/accurate/lte_peak_to_peak_arcsec", "arcsec",
+     "study:/limits/max_lte_peak_to_peak_arcsec", NAN, true, "/best/estimated_error/lte_peak_to_peak_arcsec"},
+    {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
+    {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
+    {"verified", "/verified", ""},
+});
+
+}  // namespace
+
+}  // namespace camopt::studies::cycloid_min_size
