@@ -76,6 +76,12 @@ json Coarse(json s) {
     s["tuning"]["curve_points"] = 3;
     s["tuning"]["max_evaluations"] = 4;
   }
+  if (kind == "cycloid_min_size") {
+    s["analysis"] = {{"crank_angles_per_mesh_period", 2}, {"grid", {8, 8}}};
+    s["optimizer"]["starts"] = 1;
+    s["optimizer"]["max_evaluations"] = 4;
+    s["optimizer"]["verify_rounds"] = 0;
+  }
   if (kind == "lcr_crowning_tuning") {
     s["tuning"]["curve_points"] = 3;
     s["tuning"]["refine_iterations"] = 1;
