@@ -500,6 +500,14 @@ LoadedTca LoadedTca::WithModification(double delta_position_mm, double delta_rad
   return copy;
 }
 
+LoadedTca LoadedTca::WithDesign(const Drive& drive, const Crowning& crowning) const {
+  LoadedTca copy = *this;
+  copy.drive_ = drive;
+  if (const std::string why = CheckDrive(copy.drive_); !why.empty()) throw std::invalid_argument(why);
+  copy.SetCrowning(crowning);
+  return copy;
+}
+
 LoadedTca::Derivative LoadedTca::Differentiate(const MeshLoad& solved, const std::string& parameter) const {
   return Differentiate(solved, std::vector<std::string>{parameter}).front();
 }
