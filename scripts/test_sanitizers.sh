@@ -36,6 +36,8 @@ long_tests=(
   # (SweepRun.FailingCases* and the other SweepCli tests stay)
   '^SweepRun\.(ResumeAfterSigint|OneAndTwoThreadsAndTwoRanks|LcrMinSizeCasesOnTwoThreads)'
   '^SweepCli\.AnOutputFolderHoldingOtherFilesIsRefusedBeforeAnyCase'
+  # whole cycloid sizings (10-15 s each in Release; the rows' derivative tests stay)
+  '^CycloidMinSize\.(PaperDriveSized|Ratio29Crowning|IpoptAndSlsqp)'
   # many Ipopt/NLopt sizings of LCR II (the other LcrMinSize tests stay)
   '^LcrMinSize\.(ImpossibleLimitsGiveNoBestAndSayWhy|BackendsAgreeAndGradientsSaveEvaluations)'
   '^LcrCrowningTuning\.LcrIIAt80NmUncrownedVersusTuned'

@@ -20,11 +20,15 @@ double CircleSeparation(double kappa, double x) {
   const double kx = kappa * x;
   return kappa * x * x / (1.0 + std::sqrt(std::max(0.0, 1.0 - kx * kx)));
 }
+// The same over a Jet; where |κx| >= 1 (the cell lies beyond a very sharp tooth's quarter circle)
+// the double version's clamped root is 0, and so is this one's (no NaN from the root's derivative).
 template <typename T>
 T CircleSeparation(const T& kappa, double x) {
   using std::sqrt;
   const T kx = kappa * x;
-  return kappa * x * x / (1.0 + sqrt(1.0 - kx * kx));
+  const T radicand = 1.0 - kx * kx;
+  if (!(Value(radicand) > 0.0)) return kappa * x * x;
+  return kappa * x * x / (1.0 + sqrt(radicand));
 }
 
 // Grid half-sizes come from a ladder 0.005 mm · 2^(k/4) so that grids (and the solver's cached
@@ -497,6 +501,14 @@ LoadedTca LoadedTca::WithModification(double delta_position_mm, double delta_rad
   copy.drive_.delta_position_mm = delta_position_mm;
   copy.drive_.delta_radius_mm = delta_radius_mm;
   if (const std::string why = CheckDrive(copy.drive_); !why.empty()) throw std::invalid_argument(why);
+  return copy;
+}
+
+LoadedTca LoadedTca::WithDesign(const Drive& drive, const Crowning& crowning) const {
+  LoadedTca copy = *this;
+  copy.drive_ = drive;
+  if (const std::string why = CheckDrive(copy.drive_); !why.empty()) throw std::invalid_argument(why);
+  copy.SetCrowning(crowning);
   return copy;
 }
 

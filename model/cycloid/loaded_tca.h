@@ -180,6 +180,10 @@ class LoadedTca {
   /// caches. @throws std::invalid_argument for an infeasible drive.
   LoadedTca WithModification(double delta_position_mm, double delta_radius_mm) const;
 
+  /// The same material and options with another drive and crowning (sizing), sharing the solver
+  /// caches. @throws std::invalid_argument for an infeasible drive or crowning.
+  LoadedTca WithDesign(const Drive& drive, const Crowning& crowning) const;
+
   /// The same model with another crowning (sweeps and tuning), sharing the solver caches.
   /// @throws std::invalid_argument for invalid crowning.
   LoadedTca WithCrowning(const Crowning& crowning) const;

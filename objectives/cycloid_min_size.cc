@@ -1,0 +1,759 @@
+#include "objectives/cycloid_min_size.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+#include <ceres/jet.h>
+
+#include "model/cycloid/geometry_limits.h"
+
+namespace camopt::objectives {
+
+namespace {
+
+// A variable's model parameter (LoadedTca::Differentiate) and the factor from its unit to mm.
+std::pair<std::string, double> ModelParameter(const std::string& name) {
+  if (name == "delta_position_um") return {"delta_position_mm", 1e-3};
+  if (name == "delta_radius_um") return {"delta_radius_mm", 1e-3};
+  return {name, 1.0};
+}
+
+bool IsDriveField(const std::string& name) {
+  return name == "eccentricity_mm" || name == "roller_position_radius_mm" || name == "roller_radius_mm" ||
+         name == "face_width_mm" || name == "delta_position_um" || name == "delta_radius_um";
+}
+
+// The derivatives' CG tolerance: the contact solver's own, between 1e-10 and 1e-4 (as the crowning
+// tuning's, objectives/cycloid_crowning.cc).
+double SensitivityTolerance(const cycloid::LoadedOptions& o) { return std::clamp(o.solver_tolerance, 1e-10, 1e-4); }
+
+cycloid::LoadedOptions CycleOptions(cycloid::LoadedOptions o, bool edge) {
+  o.keep_pressure = true;  // the derivatives need the converged pressures
+  o.crank_slope = false;
+  o.edge_margin = edge;
+  o.sensitivity_tolerance = SensitivityTolerance(o);
+  return o;
+}
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
+
+// The closed-form values of a drive: objective, curtate, undercut, pin gap, web margins.
+template <typename T>
+struct ClosedForms {
+  T diameter, volume, curtate, undercut, profile_radius, pin_gap, web;
+};
+
+template <typename T>
+ClosedForms<T> ClosedFormsOf(const cycloid::DriveTpl<T>& d, const CycloidSizingLimits& l) {
+  ClosedForms<T> c;
+  const T outer = d.roller_position_radius_mm + d.roller_radius_mm;
+  c.diameter = T(2.0) * outer;
+  c.volume = T(kPi) * outer * outer * d.face_width_mm;
+  c.curtate = cycloid::CurtateMargin(d);
+  c.profile_radius = cycloid::MinConvexProfileRadius(d);
+  c.undercut = c.profile_radius - T(l.min_profile_radius_mm);
+  c.pin_gap = cycloid::PinGapMargin(d, l.min_pin_gap_mm);
+  c.web = cycloid::WebMargin(d, T(l.bore_radius_mm), l.min_web_mm);
+  return c;
+}
+
+// The kSizingCrowningFit rows of a drive's face width and a crowning (values and, per variable,
+// derivatives: the variables are named, so the derivative of each row is read off its formula).
+struct CrowningFit {
+  std::array<double, 2> value{1.0, 1.0};
+  std::array<std::map<std::string, double>, 2> d;  // by variable name
+};
+
+CrowningFit CrowningFitOf(const cycloid::Drive& d, const cycloid::Crowning& c) {
+  CrowningFit f;
+  const double b = d.face_width_mm;
+  using cycloid::CrowningType;
+  switch (c.type) {
+    case CrowningType::kNone:
+      break;
+    case CrowningType::kFull:
+      f.value[0] = c.radius_mm - 0.5 * b;
+      f.d[0] = {{"radius_mm", 1.0}, {"face_width_mm", -0.5}};
+      break;
+    case CrowningType::kPartial:
+      f.value[0] = c.radius_mm - 0.5 * (b - c.flat_length_mm);
+      f.d[0] = {{"radius_mm", 1.0}, {"face_width_mm", -0.5}, {"flat_length_mm", 0.5}};
+      f.value[1] = b - c.flat_length_mm;
+      f.d[1] = {{"face_width_mm", 1.0}, {"flat_length_mm", -1.0}};
+      break;
+    case CrowningType::kLogarithmic:
+      if (c.effective_length_mm > 0) {
+        f.value[0] = c.effective_length_mm - b;
+        f.d[0] = {{"effective_length_mm", 1.0}, {"face_width_mm", -1.0}};
+      }
+      f.value[1] = b - c.flat_length_mm;
+      f.d[1] = {{"face_width_mm", 1.0}, {"flat_length_mm", -1.0}};
+      break;
+  }
+  return f;
+}
+
+}  // namespace
+
+std::vector<std::string> CycloidSizingVariableNames() {
+  return {"eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm", "face_width_mm",
+          "delta_position_um", "delta_radius_um", "coefficient_mm", "effective_length_mm",
+          "end_drop_mm", "flat_length_mm", "radius_mm"};
+}
+
+std::string CycloidSizingVariableAllowed(const std::string& name, cycloid::CrowningType type) {
+  if (IsDriveField(name)) return "";
+  using cycloid::CrowningType;
+  const bool log = type == CrowningType::kLogarithmic;
+  if (name == "coefficient_mm" || name == "effective_length_mm" || name == "end_drop_mm")
+    return log ? "" : "a parameter of the logarithmic crowning only";
+  if (name == "flat_length_mm")
+    return log || type == CrowningType::kPartial ? "" : "a parameter of the logarithmic or partial crowning only";
+  if (name == "radius_mm")
+    return type == CrowningType::kFull || type == CrowningType::kPartial ? ""
+                                                                         : "a parameter of the full or partial crowning only";
+  return "not a sizing variable";
+}
+
+CycloidSizingModel::CycloidSizingModel(CycloidSizingSpec spec) : spec_(std::move(spec)) {
+  for (const Variable& v : spec_.variables)
+    if (const std::string why = CycloidSizingVariableAllowed(v.name, spec_.crowning.type); !why.empty())
+      throw std::invalid_argument("sizing variable " + v.name + ": " + why);
+  if (spec_.angles_per_period < 1) throw std::invalid_argument("CycloidSizingModel: angles_per_period < 1");
+  if (!(spec_.design_torque_Nmm > 0)) throw std::invalid_argument("CycloidSizingModel: design torque must be > 0");
+  angles_ = cycloid::UniformCrankAngles(spec_.angles_per_period, 2.0 * kPi / spec_.drive.rollers);
+}
+
+std::pair<cycloid::Drive, cycloid::Crowning> CycloidSizingModel::Design(const std::vector<double>& x) const {
+  if (x.size() != spec_.variables.size()) throw std::invalid_argument("CycloidSizingModel: one value per variable");
+  cycloid::Drive d = spec_.drive;
+  cycloid::Crowning c = spec_.crowning;
+  for (size_t j = 0; j < x.size(); ++j) {
+    const std::string& v = spec_.variables[j].name;
+    if (v == "eccentricity_mm") d.eccentricity_mm = x[j];
+    if (v == "roller_position_radius_mm") d.roller_position_radius_mm = x[j];
+    if (v == "roller_radius_mm") d.roller_radius_mm = x[j];
+    if (v == "face_width_mm") d.face_width_mm = x[j];
+    if (v == "delta_position_um") d.delta_position_mm = x[j] * 1e-3;
+    if (v == "delta_radius_um") d.delta_radius_mm = x[j] * 1e-3;
+    if (v == "coefficient_mm") c.coefficient_mm = x[j];
+    if (v == "effective_length_mm") c.effective_length_mm = x[j];
+    if (v == "end_drop_mm") c.end_drop_mm = x[j];
+    if (v == "flat_length_mm") c.flat_length_mm = x[j];
+    if (v == "radius_mm") c.radius_mm = x[j];
+  }
+  return {d, c};
+}
+
+CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& x, bool with_gradient) {
+  const auto [d, c] = Design(x);
+  const size_t nv = x.size(), na = angles_.size(), n1 = size_t(d.rollers);
+  const bool over = spec_.overload_torque_Nmm > 0;
+  CycloidSizingEvaluation e;
+  e.x = x;
+  // Closed forms (values; their derivatives below with one Jet per variable).
+  const ClosedForms<double> cf = ClosedFormsOf(d, spec_.limits);
+  e.outer_diameter_mm = cf.diameter;
+  e.volume_mm3 = cf.volume;
+  e.curtate_margin = cf.curtate;
+  e.undercut_margin_mm = cf.undercut;
+  e.min_profile_radius_mm = cf.profile_radius;
+  e.pin_gap_margin_mm = cf.pin_gap;
+  e.web_margin_mm = cf.web;
+  const CrowningFit fit = CrowningFitOf(d, c);
+  e.crowning_fit_mm = fit.value;
+  if (with_gradient) {
+    for (int r = 0; r < 2; ++r)
+      for (const Variable& v : spec_.variables) {
+        const auto it = fit.d[size_t(r)].find(v.name);
+        e.d_crowning_fit.push_back(it == fit.d[size_t(r)].end() ? 0.0 : it->second);
+      }
+  }
+  if (with_gradient) {
+    using J = ceres::Jet<double, 1>;
+    const bool volume = spec_.objective == CycloidSizeObjective::kVolume;
+    for (size_t j = 0; j < nv; ++j) {
+      cycloid::DriveTpl<J> dj;
+      dj.teeth = d.teeth;
+      dj.rollers = d.rollers;
+      dj.eccentricity_mm = J(d.eccentricity_mm);
+      dj.roller_position_radius_mm = J(d.roller_position_radius_mm);
+      dj.roller_radius_mm = J(d.roller_radius_mm);
+      dj.face_width_mm = J(d.face_width_mm);
+      dj.delta_position_mm = J(d.delta_position_mm);
+      dj.delta_radius_mm = J(d.delta_radius_mm);
+      const std::string& v = spec_.variables[j].name;
+      if (v == "eccentricity_mm") dj.eccentricity_mm.v[0] = 1;
+      if (v == "roller_position_radius_mm") dj.roller_position_radius_mm.v[0] = 1;
+      if (v == "roller_radius_mm") dj.roller_radius_mm.v[0] = 1;
+      if (v == "face_width_mm") dj.face_width_mm.v[0] = 1;
+      if (v == "delta_position_um") dj.delta_position_mm.v[0] = 1e-3;
+      if (v == "delta_radius_um") dj.delta_radius_mm.v[0] = 1e-3;
+      const ClosedForms<J> cj = ClosedFormsOf(dj, spec_.limits);
+      e.d_objective.push_back((volume ? cj.volume : cj.diameter).v[0]);
+      e.d_curtate.push_back(cj.curtate.v[0]);
+      e.d_undercut.push_back(cj.undercut.v[0]);
+      e.d_pin_gap.push_back(cj.pin_gap.v[0]);
+      e.d_web.push_back(cj.web.v[0]);
+    }
+  }
+  // The loaded cycles: only for a drive inside the model's domain (no loop, no pin overlap, no
+  // undercut: cycloid::CheckDrive); elsewhere their rows are NaN, which the solvers answer by a
+  // shorter step.
+  e.pair_peak_MPa.assign(na * n1, NAN);
+  e.end_distance_um.assign(over ? na : 0, NAN);
+  e.unloaded_te_arcsec.assign(na, NAN);
+  e.lte_peak_to_peak_arcsec = e.stress_MPa = e.max_pair_load_N = NAN;
+  e.edge_margin_um = over ? NAN : kInf;
+  auto nan_gradients = [&] {
+    if (!with_gradient) return;
+    e.d_pair_peak.assign(na * n1 * nv, NAN);
+    e.d_end_distance.assign((over ? na : 0) * nv, NAN);
+    e.d_unloaded_te.assign(na * nv, NAN);
+    e.d_lte.assign(nv, NAN);
+  };
+  if (!cycloid::CheckDrive(d).empty() || !cycloid::CheckCrowning(c, d.face_width_mm).empty()) {
+    e.converged = false;
+    nan_gradients();
+    return e;
+  }
+  if (!base_design_) {
+    base_design_.emplace(d, c, spec_.material, CycleOptions(spec_.options, false));
+    if (over) base_over_.emplace(d, c, spec_.material, CycleOptions(spec_.options, true));
+  }
+  const cycloid::LoadedTca des = base_design_->WithDesign(d, c);
+  std::optional<cycloid::LoadedTca> ovl;
+  if (over) ovl.emplace(base_over_->WithDesign(d, c));
+  if (!(last_x_ == x && last_design_)) {
+    const auto t0 = Clock::now();
+    last_x_ = x;
+    last_design_ = cycloid::RunCycle(des, spec_.design_torque_Nmm, angles_);
+    if (over) last_over_ = cycloid::RunCycle(*ovl, spec_.overload_torque_Nmm, angles_);
+    ++evaluations_;
+    value_seconds_ += Seconds(t0);
+  }
+  const cycloid::CycleResult& dc = *last_design_;
+  e.stress_MPa = dc.max_pressure_MPa;
+  e.lte_peak_to_peak_arcsec = dc.lte_peak_to_peak_arcsec;
+  e.max_pair_load_N = dc.max_pair_load_N;
+  e.converged = dc.converged;
+  std::fill(e.pair_peak_MPa.begin(), e.pair_peak_MPa.end(), 0.0);
+  for (size_t k = 0; k < na; ++k) {
+    for (const cycloid::PairLoad& p : dc.meshes[k].pairs) e.pair_peak_MPa[k * n1 + size_t(p.roller)] = p.max_pressure_MPa;
+    e.unloaded_te_arcsec[k] = dc.meshes[k].unloaded_rotation_rad * cycloid::kArcsecPerRad;
+  }
+  if (over) {
+    const cycloid::CycleResult& mc = *last_over_;
+    e.edge_margin_um = mc.end_distance_mm * 1e3;
+    for (size_t k = 0; k < na; ++k) e.end_distance_um[k] = mc.meshes[k].end_distance_mm * 1e3;
+    e.converged = e.converged && mc.converged;
+  }
+  if (!with_gradient) return e;
+  const auto t0 = Clock::now();
+  ++gradient_evaluations_;
+  std::vector<std::string> params;
+  std::vector<double> factor;
+  for (const Variable& v : spec_.variables) {
+    const auto [p, f] = ModelParameter(v.name);
+    params.push_back(p);
+    factor.push_back(f);
+  }
+  e.d_pair_peak.assign(na * n1 * nv, 0.0);
+  e.d_unloaded_te.assign(na * nv, 0.0);
+  e.d_lte.assign(nv, 0.0);
+  e.d_end_distance.assign((over ? na : 0) * nv, 0.0);
+  if (nv > 0) {
+    const std::vector<cycloid::CycleDerivative> dd = cycloid::DifferentiateCycle(des, dc, params, 0.0);
+    for (size_t j = 0; j < nv; ++j) {
+      for (size_t k = 0; k < na; ++k) {
+        for (size_t i = 0; i < dc.meshes[k].pairs.size(); ++i)
+          e.d_pair_peak[(k * n1 + size_t(dc.meshes[k].pairs[i].roller)) * nv + j] =
+              dd[j].pair_max_pressure_MPa[k][i] * factor[j];
+        e.d_unloaded_te[k * nv + j] = dd[j].unloaded_rotation_rad[k] * cycloid::kArcsecPerRad * factor[j];
+      }
+      e.d_lte[j] = dd[j].lte_peak_to_peak_arcsec * factor[j];
+      e.converged = e.converged && dd[j].converged;
+    }
+    if (over) {
+      const std::vector<cycloid::CycleDerivative> dm = cycloid::DifferentiateCycle(*ovl, *last_over_, params, 0.0);
+      for (size_t j = 0; j < nv; ++j) {
+        for (size_t k = 0; k < na; ++k)
+          e.d_end_distance[k * nv + j] = dm[j].end_distance_per_angle_mm[k] * 1e3 * factor[j];
+        e.converged = e.converged && dm[j].converged;
+      }
+    }
+  }
+  gradient_seconds_ += Seconds(t0);
+  return e;
+}
+
+namespace {
+
+// Output layout of the evaluator: [objective][peaks: na·N][end distances: na (overload)]
+// [β0: na][LTE p-p][curtate][undercut][pin gap][web (bore)].
+struct Layout {
+  size_t na = 0, n1 = 0;
+  bool over = false, web = false;
+  size_t peaks() const { return 1; }
+  size_t ends() const { return 1 + na * n1; }
+  size_t backlash() const { return ends() + (over ? na : 0); }
+  size_t lte() const { return backlash() + na; }
+  size_t curtate() const { return lte() + 1; }
+  size_t undercut() const { return curtate() + 1; }
+  size_t pin_gap() const { return undercut() + 1; }
+  size_t web_row() const { return pin_gap() + 1; }
+  size_t fit() const { return web_row() + (web ? 1 : 0); }
+  size_t size() const { return fit() + 2; }
+};
+
+Layout LayoutOf(const CycloidSizingModel& m) {
+  Layout l;
+  l.na = m.crank_angles().size();
+  l.n1 = size_t(m.spec().drive.rollers);
+  l.over = m.spec().overload_torque_Nmm > 0;
+  l.web = m.spec().limits.bore_radius_mm > 0;
+  return l;
+}
+
+class SizingEvaluator final : public Evaluator {
+ public:
+  SizingEvaluator(CycloidSizingModel& model, std::function<void(const CycloidSizingEvaluation&)> on_evaluation,
+                  OutsideDomain outside)
+      : Evaluator(int(model.spec().variables.size()), Blocks(model)),
+        model_(model),
+        layout_(LayoutOf(model)),
+        on_evaluation_(std::move(on_evaluation)),
+        outside_(outside) {}
+
+ protected:
+  void DoEval(std::span<const double> x, std::span<double> y) const override { Fill(Get(x, false), y); }
+  void DoEvalWithJacobian(std::span<const double> x, std::span<double> y, std::span<double> jac) const override {
+    const CycloidSizingEvaluation& e = Get(x, true);
+    Fill(e, y);
+    const size_t nv = size_t(num_vars());
+    const Layout& l = layout_;
+    for (size_t j = 0; j < nv; ++j) {
+      jac[j] = e.d_objective[j];
+      for (size_t s = 0; s < l.na * l.n1; ++s) jac[(l.peaks() + s) * nv + j] = e.d_pair_peak[s * nv + j];
+      if (l.over)
+        for (size_t k = 0; k < l.na; ++k) jac[(l.ends() + k) * nv + j] = e.d_end_distance[k * nv + j];
+      for (size_t k = 0; k < l.na; ++k) jac[(l.backlash() + k) * nv + j] = e.d_unloaded_te[k * nv + j];
+      jac[l.lte() * nv + j] = e.d_lte[j];
+      jac[l.curtate() * nv + j] = e.d_curtate[j];
+      jac[l.undercut() * nv + j] = e.d_undercut[j];
+      jac[l.pin_gap() * nv + j] = e.d_pin_gap[j];
+      if (l.web) jac[l.web_row() * nv + j] = e.d_web[j];
+      for (size_t r = 0; r < 2; ++r) jac[(l.fit() + r) * nv + j] = e.d_crowning_fit[r * nv + j];
+    }
+    if (outside_ == OutsideDomain::kPenalty)
+      for (double& v : jac)
+        if (!std::isfinite(v)) v = 0.0;
+  }
+
+ private:
+  static std::vector<OutputBlock> Blocks(const CycloidSizingModel& m) {
+    const Layout l = LayoutOf(m);
+    const bool volume = m.spec().objective == CycloidSizeObjective::kVolume;
+    std::vector<OutputBlock> b = {{volume ? kSizingVolume : kSizingOuterDiameter, 0, 1},
+                                  {kSizingPeakPressure, int(l.peaks()), int(l.na * l.n1)}};
+    if (l.over) b.push_back({kSizingEndDistance, int(l.ends()), int(l.na)});
+    b.push_back({kSizingBacklash, int(l.backlash()), int(l.na)});
+    b.push_back({kSizingLte, int(l.lte()), 1});
+    b.push_back({kSizingCurtate, int(l.curtate()), 1});
+    b.push_back({kSizingUndercut, int(l.undercut()), 1});
+    b.push_back({kSizingPinGap, int(l.pin_gap()), 1});
+    if (l.web) b.push_back({kSizingWeb, int(l.web_row()), 1});
+    b.push_back({kSizingCrowningFit, int(l.fit()), 2});
+    return b;
+  }
+  void Fill(const CycloidSizingEvaluation& e, std::span<double> y) const {
+    const Layout& l = layout_;
+    y[0] = model_.spec().objective == CycloidSizeObjective::kVolume ? e.volume_mm3 : e.outer_diameter_mm;
+    for (size_t s = 0; s < l.na * l.n1; ++s) y[l.peaks() + s] = e.pair_peak_MPa[s];
+    if (l.over)
+      for (size_t k = 0; k < l.na; ++k) y[l.ends() + k] = e.end_distance_um[k];
+    for (size_t k = 0; k < l.na; ++k) y[l.backlash() + k] = e.unloaded_te_arcsec[k];
+    y[l.lte()] = e.lte_peak_to_peak_arcsec;
+    y[l.curtate()] = e.curtate_margin;
+    y[l.undercut()] = e.undercut_margin_mm;
+    y[l.pin_gap()] = e.pin_gap_margin_mm;
+    if (l.web) y[l.web_row()] = e.web_margin_mm;
+    for (size_t r = 0; r < 2; ++r) y[l.fit() + r] = e.crowning_fit_mm[r];
+    if (outside_ == OutsideDomain::kPenalty && !std::isfinite(e.stress_MPa)) {
+      for (size_t s = 0; s < l.na * l.n1; ++s) y[l.peaks() + s] = 1e6;
+      if (l.over)
+        for (size_t k = 0; k < l.na; ++k) y[l.ends() + k] = -1e4;
+      for (size_t k = 0; k < l.na; ++k) y[l.backlash() + k] = -1e4;
+      y[l.lte()] = 1e6;
+    }
+  }
+  const CycloidSizingEvaluation& Get(std::span<const double> x, bool gradient) const {
+    const std::vector<double> key(x.begin(), x.end());
+    for (const auto& m : memory_)
+      if (m.x == key && (!gradient || !m.d_objective.empty() || key.empty())) return m;
+    if (memory_.size() >= 8) memory_.pop_front();
+    memory_.push_back(model_.Evaluate(key, gradient));
+    if (on_evaluation_) on_evaluation_(memory_.back());
+    return memory_.back();
+  }
+
+  CycloidSizingModel& model_;
+  Layout layout_;
+  std::function<void(const CycloidSizingEvaluation&)> on_evaluation_;
+  mutable std::deque<CycloidSizingEvaluation> memory_;
+  OutsideDomain outside_;
+};
+
+}  // namespace
+
+Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits& fast,
+                             std::function<void(const CycloidSizingEvaluation&)> on_evaluation,
+                             OutsideDomain outside) {
+  const CycloidSizingSpec& s = model.spec();
+  Problem p;
+  p.variables = s.variables;
+  p.evaluator = std::make_unique<SizingEvaluator>(model, std::move(on_evaluation), outside);
+  const bool volume = s.objective == CycloidSizeObjective::kVolume;
+  p.objective = volume ? kSizingVolume : kSizingOuterDiameter;
+  const double outer = s.drive.roller_position_radius_mm + s.drive.roller_radius_mm;
+  p.objective_scale = volume ? kPi * outer * outer * s.drive.face_width_mm : 2.0 * outer;
+  const double stress_scale = std::isfinite(fast.contact_stress_MPa) ? fast.contact_stress_MPa : 1000.0;
+  p.constraints.push_back({kSizingPeakPressure, -kInf, fast.contact_stress_MPa, stress_scale});
+  if (s.overload_torque_Nmm > 0) p.constraints.push_back({kSizingEndDistance, fast.min_edge_margin_um, kInf, 100.0});
+  p.constraints.push_back({kSizingBacklash, fast.min_backlash_arcsec, fast.max_backlash_arcsec, 10.0});
+  if (std::isfinite(s.limits.max_lte_peak_to_peak_arcsec))
+    p.constraints.push_back({kSizingLte, -kInf, s.limits.max_lte_peak_to_peak_arcsec, 10.0});
+  p.constraints.push_back({kSizingCurtate, s.limits.min_curtate_margin, kInf, 0.1});
+  p.constraints.push_back({kSizingUndercut, 0.0, kInf, 1.0});
+  p.constraints.push_back({kSizingPinGap, 0.0, kInf, 1.0});
+  if (s.limits.bore_radius_mm > 0) p.constraints.push_back({kSizingWeb, 0.0, kInf, 1.0});
+  p.constraints.push_back({kSizingCrowningFit, 0.0, kInf, 1.0});
+  return p;
+}
+
+CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cycloid::Drive& drive,
+                                        const cycloid::Crowning& crowning) {
+  CycloidAccurateCheck out;
+  CycloidSizingSpec fixed = spec;
+  fixed.drive = drive;
+  fixed.crowning = crowning;
+  fixed.variables.clear();
+  out.fast = CycloidSizingModel(fixed).Evaluate({}, false);
+  CycloidSizingSpec fine = fixed;
+  fine.options.profile_cells *= 2;
+  fine.options.axial_cells *= 2;
+  fine.angles_per_period *= 2;
+  out.accurate = CycloidSizingModel(fine).Evaluate({}, false);
+  const CycloidSizingEvaluation &f = out.fast, &a = out.accurate;
+  auto min_of = [](const std::vector<double>& v) { return v.empty() ? kInf : *std::min_element(v.begin(), v.end()); };
+  auto max_of = [](const std::vector<double>& v) { return v.empty() ? -kInf : *std::max_element(v.begin(), v.end()); };
+  out.stress_error_MPa = std::abs(a.stress_MPa - f.stress_MPa);
+  out.edge_margin_error_um = std::isfinite(a.edge_margin_um) ? std::abs(a.edge_margin_um - f.edge_margin_um) : 0.0;
+  // β0 comes from a Newton solve closed to 1e-12 rad (unloaded_tca.h), 2e-7″: below 1e-6″ the
+  // backlash is zero (an unmodified tooth) within the solve's own resolution.
+  constexpr double kUnloadedTeResolutionArcsec = 1e-6;
+  out.backlash_error_arcsec = std::max({std::abs(min_of(a.unloaded_te_arcsec) - min_of(f.unloaded_te_arcsec)),
+                                        std::abs(max_of(a.unloaded_te_arcsec) - max_of(f.unloaded_te_arcsec)),
+                                        kUnloadedTeResolutionArcsec});
+  out.lte_error_arcsec = std::abs(a.lte_peak_to_peak_arcsec - f.lte_peak_to_peak_arcsec);
+  std::ostringstream m;
+  m << "3D half-space LTCA on " << fine.options.profile_cells << " x " << fine.options.axial_cells
+    << " cells per pair at " << fine.angles_per_period << " crank angles per mesh period; each value's error "
+    << "is its change from " << spec.options.profile_cells << " x " << spec.options.axial_cells << " cells at "
+    << spec.angles_per_period << " angles";
+  out.model = m.str();
+  const CycloidSizingLimits& l = spec.limits;
+  auto add = [&](const std::string& limit, const std::string& where, double limit_value, double accurate,
+                 double error, double fast, bool upper) {
+    VerifiedLimit c;
+    c.limit = limit;
+    c.where = where;
+    c.limit_value = limit_value;
+    c.accurate_value = accurate;
+    c.estimated_error = error;
+    c.fast_value = fast;
+    c.upper = upper;
+    out.checks.push_back(c);
+  };
+  if (std::isfinite(l.contact_stress_MPa))
+    add("contact_stress_MPa", "design torque", l.contact_stress_MPa, a.stress_MPa, out.stress_error_MPa, f.stress_MPa,
+        true);
+  if (spec.overload_torque_Nmm > 0)
+    add("min_edge_margin_um", "overload torque", l.min_edge_margin_um, a.edge_margin_um, out.edge_margin_error_um,
+        f.edge_margin_um, false);
+  add("min_backlash_arcsec", "unloaded, every crank angle", l.min_backlash_arcsec, min_of(a.unloaded_te_arcsec),
+      out.backlash_error_arcsec, min_of(f.unloaded_te_arcsec), false);
+  if (std::isfinite(l.max_backlash_arcsec))
+    add("max_backlash_arcsec", "unloaded, every crank angle", l.max_backlash_arcsec, max_of(a.unloaded_te_arcsec),
+        out.backlash_error_arcsec, max_of(f.unloaded_te_arcsec), true);
+  if (std::isfinite(l.max_lte_peak_to_peak_arcsec))
+    add("max_lte_peak_to_peak_arcsec", "design torque", l.max_lte_peak_to_peak_arcsec, a.lte_peak_to_peak_arcsec,
+        out.lte_error_arcsec, f.lte_peak_to_peak_arcsec, true);
+  // Closed forms: exact, no discretisation.
+  add("min_curtate_margin", "generating curve", l.min_curtate_margin, a.curtate_margin, 0.0, f.curtate_margin, false);
+  add("min_profile_radius_mm", "tooth profile", l.min_profile_radius_mm, a.min_profile_radius_mm, 0.0,
+      f.min_profile_radius_mm, false);
+  add("min_pin_gap_mm", "neighbouring pins", l.min_pin_gap_mm, a.pin_gap_margin_mm + l.min_pin_gap_mm, 0.0,
+      f.pin_gap_margin_mm + l.min_pin_gap_mm, false);
+  if (l.bore_radius_mm > 0)
+    add("min_web_mm", "disc web", l.min_web_mm, a.web_margin_mm + l.min_web_mm, 0.0, f.web_margin_mm + l.min_web_mm,
+        false);
+  return out;
+}
+
+namespace {
+
+// Starting points: the variables' own, then points across the box (fractions of each range),
+// each pulled towards the first along the segment between them (halving) until it lies inside
+// the model's domain (a NaN at its start stops Ipopt).
+std::vector<std::vector<double>> Starts(const CycloidSizingModel& model, int count) {
+  const CycloidSizingSpec& s = model.spec();
+  auto inside = [&](const std::vector<double>& x) {
+    const auto [d, c] = model.Design(x);
+    return cycloid::CheckDrive(d).empty() && cycloid::CheckCrowning(c, d.face_width_mm).empty();
+  };
+  std::vector<std::vector<double>> starts;
+  std::vector<double> x0;
+  for (const Variable& v : s.variables) x0.push_back(std::clamp(v.initial, v.lower, v.upper));
+  starts.push_back(x0);
+  const double fractions[] = {0.75, 0.25, 0.5, 0.9, 0.1};
+  for (int k = 1; k < count && k <= 5; ++k) {
+    std::vector<double> x;
+    for (const Variable& v : s.variables)
+      x.push_back(std::isfinite(v.lower) && std::isfinite(v.upper) ? v.lower + fractions[k - 1] * (v.upper - v.lower)
+                                                                   : v.initial);
+    for (int halving = 0; halving < 30 && !inside(x) && inside(x0); ++halving)
+      for (size_t j = 0; j < x.size(); ++j) x[j] = 0.5 * (x[j] + x0[j]);
+    starts.push_back(x);
+  }
+  return starts;
+}
+
+// The limit key of a constraint row (its block name) and whether the row sits at its lower bound.
+std::string LimitKeyOf(const std::string& block, bool at_lower) {
+  if (block == kSizingPeakPressure) return "contact_stress_MPa";
+  if (block == kSizingEndDistance) return "min_edge_margin_um";
+  if (block == kSizingBacklash) return at_lower ? "min_backlash_arcsec" : "max_backlash_arcsec";
+  if (block == kSizingLte) return "max_lte_peak_to_peak_arcsec";
+  if (block == kSizingCurtate) return "min_curtate_margin";
+  if (block == kSizingUndercut) return "min_profile_radius_mm";
+  if (block == kSizingPinGap) return "min_pin_gap_mm";
+  if (block == kSizingWeb) return "min_web_mm";
+  if (block == kSizingCrowningFit) return "crowning_on_the_face";
+  return block;
+}
+
+// Lawson–Hanson non-negative least squares: min |A c − g| subject to c >= 0.
+Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& g) {
+  const int k = int(A.cols());
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(k);
+  std::vector<bool> passive(size_t(k), false);
+  const double tol = 1e-12 * std::max(1.0, A.norm() * g.norm());
+  for (int outer = 0; outer < 3 * k + 3; ++outer) {
+    const Eigen::VectorXd w = A.transpose() * (g - A * c);
+    int j = -1;
+    for (int i = 0; i < k; ++i)
+      if (!passive[size_t(i)] && w(i) > tol && (j < 0 || w(i) > w(j))) j = i;
+    if (j < 0) break;
+    passive[size_t(j)] = true;
+    for (int inner = 0; inner < 3 * k + 3; ++inner) {
+      std::vector<int> p;
+      for (int i = 0; i < k; ++i)
+        if (passive[size_t(i)]) p.push_back(i);
+      Eigen::MatrixXd Ap(A.rows(), Eigen::Index(p.size()));
+      for (size_t i = 0; i < p.size(); ++i) Ap.col(Eigen::Index(i)) = A.col(p[i]);
+      const Eigen::VectorXd sp = Ap.colPivHouseholderQr().solve(g);
+      Eigen::VectorXd s = Eigen::VectorXd::Zero(k);
+      for (size_t i = 0; i < p.size(); ++i) s(p[i]) = sp(Eigen::Index(i));
+      bool positive = true;
+      for (int i : p) positive = positive && s(i) > 0;
+      if (positive) {
+        c = s;
+        break;
+      }
+      double alpha = 1;
+      for (int i : p)
+        if (s(i) <= 0) alpha = std::min(alpha, c(i) / (c(i) - s(i)));
+      c += alpha * (s - c);
+      for (int i : p)
+        if (c(i) <= tol) passive[size_t(i)] = false, c(i) = 0;
+    }
+  }
+  return c;
+}
+
+// d(objective)/d(limit) at x from the KKT conditions of min f subject to the rows: with the
+// multipliers λ >= 0 of the active rows and bounds, ∇f = Σ −λ_i ∇g_i over rows at their upper
+// bound (and variables at theirs) + Σ λ_i ∇g_i over rows at their lower bound, solved for λ >= 0
+// in the least-squares sense (in the solver's scaled variables). The optimum moves by −λ_i per unit
+// of an upper bound and by +λ_i per unit of a lower one; the rows of one limit add up.
+std::map<std::string, double> LimitCosts(const Problem& p, const std::vector<double>& x) {
+  std::map<std::string, double> out;
+  const int n = p.num_vars();
+  if (n == 0) return out;
+  const int m = p.evaluator->num_outputs();
+  std::vector<double> y(m), jac(size_t(m) * n);
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  for (double v : jac)
+    if (!std::isfinite(v)) return out;
+  const int obj = p.evaluator->block(p.objective).offset;
+  struct Column {
+    int row;  // output index, or −1 − variable for a bound
+    double sign;
+    std::string key;
+  };
+  std::vector<Column> cols;
+  for (const ConstraintRow& r : ConstraintRows(p)) {
+    const double v = y[r.output_index];
+    const double tol = 1e-3 * r.scale;
+    const std::string block = r.name.substr(0, r.name.find('['));
+    if (std::isfinite(r.upper) && std::abs(v - r.upper) <= tol)
+      cols.push_back({r.output_index, -1.0, LimitKeyOf(block, false)});
+    else if (std::isfinite(r.lower) && std::abs(v - r.lower) <= tol)
+      cols.push_back({r.output_index, 1.0, LimitKeyOf(block, true)});
+  }
+  bool any_row = !cols.empty();
+  for (int j = 0; j < n; ++j) {
+    const Variable& v = p.variables[size_t(j)];
+    const double tol = 1e-6 * std::max(1.0, std::abs(v.scale));
+    if (std::abs(x[size_t(j)] - v.upper) <= tol) cols.push_back({-1 - j, -1.0, ""});
+    else if (std::abs(x[size_t(j)] - v.lower) <= tol) cols.push_back({-1 - j, 1.0, ""});
+  }
+  if (!any_row) return out;
+  Eigen::MatrixXd A(n, Eigen::Index(cols.size()));
+  Eigen::VectorXd g(n);
+  for (int j = 0; j < n; ++j) {
+    const double s = p.variables[size_t(j)].scale;  // d/d(x/s) = s d/dx
+    g(j) = s * jac[size_t(obj) * n + j];
+    for (size_t i = 0; i < cols.size(); ++i)
+      A(j, Eigen::Index(i)) = cols[i].row >= 0 ? cols[i].sign * s * jac[size_t(cols[i].row) * n + j]
+                                               : (cols[i].row == -1 - j ? cols[i].sign * s : 0.0);
+  }
+  const Eigen::VectorXd lambda = NonNegativeLeastSquares(A, g);
+  for (size_t i = 0; i < cols.size(); ++i)
+    if (cols[i].row >= 0) out[cols[i].key] += cols[i].sign * lambda(Eigen::Index(i));
+  return out;
+}
+
+}  // namespace
+
+CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const CycloidMinSizeOptions& options) {
+  CycloidMinSizeOutcome out;
+  CycloidSizingModel model(spec);
+  CycloidFastLimits fast;
+  fast.contact_stress_MPa = spec.limits.contact_stress_MPa;
+  fast.min_edge_margin_um = spec.limits.min_edge_margin_um;
+  fast.min_backlash_arcsec = spec.limits.min_backlash_arcsec;
+  fast.max_backlash_arcsec = spec.limits.max_backlash_arcsec;
+  out.verification.max_rounds = options.verify_rounds;
+  const int starts = std::max(1, options.starts);
+  const double steps = double(starts + options.verify_rounds + 1);
+  auto progress = [&](double done, const std::string& stage) {
+    if (options.progress) options.progress(std::min(1.0, done / steps), stage);
+  };
+  std::vector<double> x_last;
+  const std::string backend = options.solver.backend;
+  const OutsideDomain outside = backend == "ipopt" ? OutsideDomain::kNaN : OutsideDomain::kPenalty;
+  for (int round = 0;; ++round) {
+    Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
+    optimizers::SolverResult best;
+    bool have = false;
+    const std::vector<std::vector<double>> points =
+        round == 0 ? Starts(model, starts) : std::vector<std::vector<double>>{x_last};
+    for (size_t s = 0; s < points.size(); ++s) {
+      progress(round == 0 ? double(s) : double(starts + round - 1),
+               round == 0 ? "start " + std::to_string(s + 1) + " of " + std::to_string(points.size())
+                          : "verification round " + std::to_string(round));
+      optimizers::SolverOptions so = options.solver;
+      so.initial = points[s];
+      optimizers::SolverResult r = optimizers::Solve(problem, so);
+      out.evaluations += r.value_evaluations;
+      out.gradient_evaluations += r.gradient_evaluations;
+      if (round == 0) out.starts.push_back(r);
+      const bool better = r.ok() && (!have || !best.ok() || r.objective < best.objective);
+      const bool first = !have && !r.x.empty();
+      if (better || first) {
+        best = r;
+        have = true;
+      }
+    }
+    if (!have) {
+      out.result = best;
+      out.verification.ran = false;
+      break;
+    }
+    out.result = best;
+    out.converged = best.ok();
+    out.x = best.x;
+    x_last = best.x;
+    std::tie(out.drive, out.crowning) = model.Design(best.x);
+    progress(double(starts + round), "verifying");
+    const auto t0 = Clock::now();
+    out.check = CheckCycloidDesign(spec, out.drive, out.crowning);
+    out.verification_seconds += Seconds(t0);
+    out.verification.accurate_model = out.check.model;
+    out.verification.checks = out.check.checks;
+    out.verification.ran = true;
+    // The loop aims at the accurate value itself within the limit (0.1% slack), not only within
+    // the limit plus its estimated error: a peak that grows with refinement (a straight tooth's
+    // edge) has a large error that would otherwise pass a design the accurate model puts above it.
+    auto beyond = [](const VerifiedLimit& c) {
+      const double slack = 1e-3 * std::max(std::abs(c.limit_value), 1.0);
+      return !std::isfinite(c.accurate_value) ||
+             (c.upper ? c.accurate_value > c.limit_value + slack : c.accurate_value < c.limit_value - slack);
+    };
+    auto tightenable = [](const VerifiedLimit& c) {
+      return c.limit == "contact_stress_MPa" || c.limit == "min_edge_margin_um" || c.limit == "min_backlash_arcsec" ||
+             c.limit == "max_backlash_arcsec";
+    };
+    bool aim = true;
+    for (const VerifiedLimit& c : out.check.checks) aim = aim && !(tightenable(c) && beyond(c));
+    if ((out.verification.verified() && aim) || round >= options.verify_rounds || !best.ok()) break;
+    // Tighten the fast limits whose accurate value is beyond the limit, and solve again from here.
+    bool moved = false;
+    for (const VerifiedLimit& c : out.check.checks) {
+      if (!tightenable(c) || !beyond(c)) continue;
+      TighteningStep step;
+      step.round = round + 1;
+      step.limit = c.limit;
+      step.where = c.where;
+      step.accurate_value = c.accurate_value;
+      step.limit_value = c.limit_value;
+      double* fl = c.limit == "contact_stress_MPa"     ? &fast.contact_stress_MPa
+                   : c.limit == "min_edge_margin_um"   ? &fast.min_edge_margin_um
+                   : c.limit == "min_backlash_arcsec"  ? &fast.min_backlash_arcsec
+                   : c.limit == "max_backlash_arcsec"  ? &fast.max_backlash_arcsec
+                                                       : nullptr;
+      if (!fl) continue;  // a closed form or the LTE: not tightened (the rows are exact or report-only)
+      step.fast_limit_before = *fl;
+      const double miss = c.upper ? c.accurate_value - c.limit_value : c.limit_value - c.accurate_value;
+      if (c.limit == "contact_stress_MPa")
+        *fl = TightenedUpperLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
+      else if (c.upper)
+        *fl -= miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
+      else
+        *fl += miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
+      step.fast_limit_after = *fl;
+      out.verification.history.push_back(step);
+      moved = true;
+    }
+    if (!moved) break;
+  }
+  out.verified = out.verification.verified();
+  if (out.converged && !out.x.empty()) {
+    Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
+    out.limit_cost = LimitCosts(problem, out.x);
+  }
+  out.value_seconds = model.value_seconds();
+  out.gradient_seconds = model.gradient_seconds();
+  progress(steps, "done");
+  return out;
+}
+
+}  // namespace camopt::objectives
