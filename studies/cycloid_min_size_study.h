@@ -28,7 +28,7 @@ namespace camopt::studies::cycloid_min_size {
 
 /// Defaults of the "optimizer" block.
 inline constexpr int kDefaultStarts = 2;
-inline constexpr int kDefaultMaxEvaluations = 40;
+inline constexpr int kDefaultMaxEvaluations = 200;
 inline constexpr int kDefaultVerifyRounds = 3;
 /// Defaults of the "analysis" block (as cycloid_crowning_tuning).
 inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 6;

@@ -11,8 +11,8 @@
 //   cycloid_ltca                    runs (2.25 with the error estimate) × crank angles (a list,
 //                                   crank_angle_steps or crank_angles_per_mesh_period) × rollers × cells ≤ 5e7
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
-//   cycloid_min_size                max_evaluations × (starts + verify_rounds) × (1 + 0.65 variables) ×
-//                                   torques × angles × rollers × cells + the accurate checks ≤ 5e7
+//   cycloid_min_size                max_evaluations × (starts + verify_rounds) × (2 + 0.65 variables) ×
+//                                   torques × angles × rollers × cells + the accurate checks ≤ 5e8
 //   disc_cam                        angle_steps + MC samples × angle_steps × scales ≤ 2e6
 //   lcr_min_size                    lobe counts × differences × catalogue rollers × starts × (0.5 +
 //                                   samples_per_period/48) + with a 3D contact 30·(slices/20)³ per
