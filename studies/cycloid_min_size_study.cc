@@ -750,6 +750,17 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     for (size_t k = 0; k < s.spec.variables.size() && k < o.x.size(); ++k)
       x[s.spec.variables[k].name] = Finite(o.x[k], s.spec.variables[k].name);
     b["variables"] = x;
+    // Variables the optimum presses against a bound of their range: widening it would shrink the
+    // drive further (the bounds' own multipliers are not reported).
+    nlohmann::json at_bounds = nlohmann::json::array();
+    for (size_t k = 0; k < s.spec.variables.size() && k < o.x.size(); ++k) {
+      const objectives::Variable& v = s.spec.variables[k];
+      // Ipopt stays a little inside its bounds (bound_push): 0.1% of the range.
+      const double tol = 1e-3 * (v.upper - v.lower);
+      if (o.x[k] <= v.lower + tol) at_bounds.push_back({{"name", v.name}, {"bound", "lower"}, {"value", v.lower}});
+      else if (o.x[k] >= v.upper - tol) at_bounds.push_back({{"name", v.name}, {"bound", "upper"}, {"value", v.upper}});
+    }
+    b["variables_at_bounds"] = at_bounds;
     // The closed-form limits (geometry_limits.h): exact, the same for both models.
     b["curtate_margin"] = Finite(acc.curtate_margin, "curtate margin");
     b["undercut_margin_mm"] = Finite(acc.undercut_margin_mm, "undercut margin");

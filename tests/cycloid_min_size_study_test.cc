@@ -123,7 +123,7 @@ TEST(CycloidMinSizeStudy, ParsedSpecHasTheFileValues) {
   const auto s29 = studies::cycloid_min_size::Parse(studies::Node(&r, "r.json", ""));
   EXPECT_EQ(s29.spec.drive.teeth, 29);
   EXPECT_EQ(s29.spec.drive.rollers, 30);
-  EXPECT_DOUBLE_EQ(s29.spec.drive.eccentricity_mm, 0.5 * (0.5 + 1.2));
+  EXPECT_DOUBLE_EQ(s29.spec.drive.eccentricity_mm, 0.5 * (0.3 + 1.2));
   EXPECT_DOUBLE_EQ(s29.spec.limits.bore_radius_mm, 5);  // bore_diameter_mm 10
 }
 
