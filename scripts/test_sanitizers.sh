@@ -31,13 +31,16 @@ long_tests=(
   # lcr_ii_tolerances (the other 15 examples' convergence runs stay)
   'EveryExample/ConvergenceOfExample\.CoarseSettings/(cycloid_ltca_nnm_|lcr_i|lcr_min_size_crowned|lcr_min_size_robust|lcr_min_size_straight3d)'
   # two runs of the 3D and catalogue sizing examples (LcrSizing3D and LcrMinSize.Catalogue* stay)
-  'EveryExample/TwoRuns\.GiveByteIdenticalFolders/(lcr_crowning_tuning|lcr_min_size_catalogue|lcr_min_size_crowned|lcr_min_size_straight3d)'
+  'EveryExample/TwoRuns\.GiveByteIdenticalFolders/(lcr_crowning_tuning|lcr_min_size_catalogue|lcr_min_size_crowned|lcr_min_size_straight3d|cycloid_min_size_)'
   # sweeps run three or four times over: resumed, on 1/2 threads and 2 MPI ranks, of sizing cases
   # (SweepRun.FailingCases* and the other SweepCli tests stay)
   '^SweepRun\.(ResumeAfterSigint|OneAndTwoThreadsAndTwoRanks|LcrMinSizeCasesOnTwoThreads)'
   '^SweepCli\.AnOutputFolderHoldingOtherFilesIsRefusedBeforeAnyCase'
   # whole cycloid sizings (10-15 s each in Release; the rows' derivative tests stay)
   '^CycloidMinSize\.(PaperDriveSized|Ratio29Crowning|IpoptAndSlsqp)'
+  # the study kind's end-to-end run (two sizings and the best design's cycloid_ltca run; its
+  # exit-3 run and both examples' convergence runs stay)
+  '^CycloidMinSizeStudy\.SmallStudyEndToEnd'
   # many Ipopt/NLopt sizings of LCR II (the other LcrMinSize tests stay)
   '^LcrMinSize\.(ImpossibleLimitsGiveNoBestAndSayWhy|BackendsAgreeAndGradientsSaveEvaluations)'
   '^LcrCrowningTuning\.LcrIIAt80NmUncrownedVersusTuned'

@@ -717,6 +717,12 @@ json Coarse(const std::string& name) {
     s["tuning"]["max_evaluations"] = 3;
     s["analysis"] = {{"crank_angles_per_mesh_period", 2}, {"grid", {12, 12}}};
   }
+  if (name.rfind("cycloid_min_size", 0) == 0) {
+    s["analysis"] = {{"crank_angles_per_mesh_period", 2}, {"grid", {10, 10}}};
+    s["optimizer"]["starts"] = 1;
+    s["optimizer"]["max_evaluations"] = 20;
+    s["optimizer"]["verify_rounds"] = 0;
+  }
   if (name.rfind("disc_cam", 0) == 0) s["analysis"]["monte_carlo"]["samples"] = 10;
   if (name == "globoidal_cam_paper.json") s["dynamics"]["cam_speeds_rpm"] = {600};
   if (name == "lcr_crowning_tuning.json") {
@@ -744,10 +750,14 @@ TEST_P(TwoRuns, GiveByteIdenticalFolders) {
   std::map<std::string, std::string> runs[2];
   // Straight rollers under misalignment are edge-loaded at any size: that example's answer is
   // exit 3 with its outputs written (docs/studies.md, lcr_min_size).
-  const int expected = name == "lcr_min_size_straight3d.json" ? 3 : 0;
+  // The cycloid sizings on their coarse settings (20 iterations on a 10 × 10 grid) may end short of
+  // a verified optimum (exit 3, outputs written): both runs must end the same way.
+  const bool sizing_coarse = name.rfind("cycloid_min_size", 0) == 0;
+  int expected = name == "lcr_min_size_straight3d.json" ? 3 : 0;
   for (int k = 0; k < 2; ++k) {
     const auto out = dir / ("out" + std::to_string(k));
     const auto r = RunCamopt("run " + (dir / name).string() + " --quiet --out " + out.string());
+    if (sizing_coarse && k == 0 && r.exit_code == 3) expected = 3;
     ASSERT_EQ(r.exit_code, expected) << r.stderr_text;
     runs[k] = Folder(out);
   }
