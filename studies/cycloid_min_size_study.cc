@@ -13,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "model/cycloid/geometry_limits.h"
@@ -51,7 +52,6 @@ struct Field {
   bool variable = false;  ///< a range with lo < hi
   double lo = 0, hi = 0, start = 0;
   std::optional<Node> node, lo_node, hi_node;  ///< the entry and the nodes of its bounds
-  std::string path() const { return node ? node->path() : "/variables/" + name; }
 };
 
 // "[lo, hi]": two numbers, lo <= hi. An empty range (lo > hi) is refused with the range that fits.
@@ -131,7 +131,6 @@ void CheckFieldBounds(const Field& f) {
   } else if (!(f.lo >= 0)) {
     lo.Fail("a number >= 0");
   }
-  (void)hi;
 }
 
 void SetDriveField(cycloid::Drive& d, const std::string& name, double v) {
