@@ -455,9 +455,10 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
   auto max_of = [](const std::vector<double>& v) { return v.empty() ? -kInf : *std::max_element(v.begin(), v.end()); };
   out.stress_error_MPa = std::abs(a.stress_MPa - f.stress_MPa);
   out.edge_margin_error_um = std::isfinite(a.edge_margin_um) ? std::abs(a.edge_margin_um - f.edge_margin_um) : 0.0;
-  // β0 comes from a Newton solve closed to 1e-12 rad (unloaded_tca.h), 2e-7″: below 1e-6″ the
-  // backlash is zero (an unmodified tooth) within the solve's own resolution.
-  constexpr double kUnloadedTeResolutionArcsec = 1e-6;
+  // β0 comes from a Newton solve closed to 1e-12 rad (unloaded_tca.h, 2e-7″), and an optimizer
+  // that drives Δa, Δρ to a full tooth leaves it at −1e-6″ or so. The resolution taken: 1e-4″
+  // (5e-10 rad: 0.05 nm of play at a 100 mm pin circle), zero backlash for any purpose.
+  constexpr double kUnloadedTeResolutionArcsec = 1e-4;
   out.backlash_error_arcsec = std::max({std::abs(min_of(a.unloaded_te_arcsec) - min_of(f.unloaded_te_arcsec)),
                                         std::abs(max_of(a.unloaded_te_arcsec) - max_of(f.unloaded_te_arcsec)),
                                         kUnloadedTeResolutionArcsec});
