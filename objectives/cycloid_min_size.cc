@@ -11,6 +11,7 @@
 #include <ceres/jet.h>
 
 #include "model/cycloid/geometry_limits.h"
+#include "objectives/sizing_driver.h"
 
 namespace camopt::objectives {
 
@@ -455,9 +456,11 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
   auto max_of = [](const std::vector<double>& v) { return v.empty() ? -kInf : *std::max_element(v.begin(), v.end()); };
   out.stress_error_MPa = std::abs(a.stress_MPa - f.stress_MPa);
   out.edge_margin_error_um = std::isfinite(a.edge_margin_um) ? std::abs(a.edge_margin_um - f.edge_margin_um) : 0.0;
-  // β0 comes from a Newton solve closed to 1e-12 rad (unloaded_tca.h), 2e-7″: below 1e-6″ the
-  // backlash is zero (an unmodified tooth) within the solve's own resolution.
-  constexpr double kUnloadedTeResolutionArcsec = 1e-6;
+  // β0 comes from a Newton solve closed to 1e-12 rad (unloaded_tca.h, 2e-7″), and an optimizer
+  // that drives Δa, Δρ to a full tooth leaves it a little below its bound (its constraint
+  // tolerance). The resolution taken: 1e-3″ (4.8e-9 rad: 0.5 nm of play at a 100 mm pin circle),
+  // zero backlash for any purpose, and the verified loop's own slack for a limit of 0.
+  constexpr double kUnloadedTeResolutionArcsec = 1e-3;
   out.backlash_error_arcsec = std::max({std::abs(min_of(a.unloaded_te_arcsec) - min_of(f.unloaded_te_arcsec)),
                                         std::abs(max_of(a.unloaded_te_arcsec) - max_of(f.unloaded_te_arcsec)),
                                         kUnloadedTeResolutionArcsec});
@@ -657,21 +660,25 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   auto progress = [&](double done, const std::string& stage) {
     if (options.progress) options.progress(std::min(1.0, done / steps), stage);
   };
-  std::vector<double> x_last;
-  const std::string backend = options.solver.backend;
-  const OutsideDomain outside = backend == "ipopt" ? OutsideDomain::kNaN : OutsideDomain::kPenalty;
-  for (int round = 0;; ++round) {
+  const OutsideDomain outside = options.solver.backend == "ipopt" ? OutsideDomain::kNaN : OutsideDomain::kPenalty;
+
+  // One round of solves with the current fast limits: round 0 from every start, later rounds from
+  // the last design. The smallest converged end point (else the first with a design) is kept.
+  auto solve_round = [&](int round) {
     Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
     optimizers::SolverResult best;
     bool have = false;
     const std::vector<std::vector<double>> points =
-        round == 0 ? Starts(model, starts) : std::vector<std::vector<double>>{x_last};
+        round == 0 ? Starts(model, starts) : std::vector<std::vector<double>>{out.x};
     for (size_t s = 0; s < points.size(); ++s) {
       progress(round == 0 ? double(s) : double(starts + round - 1),
                round == 0 ? "start " + std::to_string(s + 1) + " of " + std::to_string(points.size())
                           : "verification round " + std::to_string(round));
       optimizers::SolverOptions so = options.solver;
       so.initial = points[s];
+      // Ipopt may cycle on the kinks of the rows (a peak cell or a loaded pair switching) until its
+      // iteration limit: SLSQP polishes its last point then (as the LCR sizing does).
+      if (so.backend == "ipopt" && so.fallback_backend.empty()) so.fallback_backend = "nlopt_slsqp";
       optimizers::SolverResult r = optimizers::Solve(problem, so);
       out.evaluations += r.value_evaluations;
       out.gradient_evaluations += r.gradient_evaluations;
@@ -683,16 +690,14 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         have = true;
       }
     }
-    if (!have) {
-      out.result = best;
-      out.verification.ran = false;
-      break;
-    }
     out.result = best;
+    if (!have) return false;
     out.converged = best.ok();
     out.x = best.x;
-    x_last = best.x;
     std::tie(out.drive, out.crowning) = model.Design(best.x);
+    return true;
+  };
+  auto check = [&](int round) {
     progress(double(starts + round), "verifying");
     const auto t0 = Clock::now();
     out.check = CheckCycloidDesign(spec, out.drive, out.crowning);
@@ -700,51 +705,79 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     out.verification.accurate_model = out.check.model;
     out.verification.checks = out.check.checks;
     out.verification.ran = true;
-    // The loop aims at the accurate value itself within the limit (0.1% slack), not only within
-    // the limit plus its estimated error: a peak that grows with refinement (a straight tooth's
-    // edge) has a large error that would otherwise pass a design the accurate model puts above it.
-    auto beyond = [](const VerifiedLimit& c) {
-      const double slack = 1e-3 * std::max(std::abs(c.limit_value), 1.0);
-      return !std::isfinite(c.accurate_value) ||
-             (c.upper ? c.accurate_value > c.limit_value + slack : c.accurate_value < c.limit_value - slack);
-    };
-    auto tightenable = [](const VerifiedLimit& c) {
-      return c.limit == "contact_stress_MPa" || c.limit == "min_edge_margin_um" || c.limit == "min_backlash_arcsec" ||
-             c.limit == "max_backlash_arcsec";
-    };
-    bool aim = true;
-    for (const VerifiedLimit& c : out.check.checks) aim = aim && !(tightenable(c) && beyond(c));
-    if ((out.verification.verified() && aim) || round >= options.verify_rounds || !best.ok()) break;
-    // Tighten the fast limits whose accurate value is beyond the limit, and solve again from here.
-    bool moved = false;
-    for (const VerifiedLimit& c : out.check.checks) {
-      if (!tightenable(c) || !beyond(c)) continue;
-      TighteningStep step;
-      step.round = round + 1;
-      step.limit = c.limit;
-      step.where = c.where;
-      step.accurate_value = c.accurate_value;
-      step.limit_value = c.limit_value;
-      double* fl = c.limit == "contact_stress_MPa"     ? &fast.contact_stress_MPa
-                   : c.limit == "min_edge_margin_um"   ? &fast.min_edge_margin_um
-                   : c.limit == "min_backlash_arcsec"  ? &fast.min_backlash_arcsec
-                   : c.limit == "max_backlash_arcsec"  ? &fast.max_backlash_arcsec
-                                                       : nullptr;
-      if (!fl) continue;  // a closed form or the LTE: not tightened (the rows are exact or report-only)
-      step.fast_limit_before = *fl;
-      const double miss = c.upper ? c.accurate_value - c.limit_value : c.limit_value - c.accurate_value;
-      if (c.limit == "contact_stress_MPa")
-        *fl = TightenedUpperLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
-      else if (c.upper)
-        *fl -= miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
-      else
-        *fl += miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
-      step.fast_limit_after = *fl;
-      out.verification.history.push_back(step);
-      moved = true;
+  };
+  // The loop aims at the accurate value itself within the limit (0.1% slack), not only within the
+  // limit plus its estimated error: a peak that grows with refinement (a straight tooth's edge) has
+  // a large error that would otherwise pass a design the accurate model puts above it.
+  auto beyond = [](const VerifiedLimit& c) {
+    const double slack = 1e-3 * std::max(std::abs(c.limit_value), 1.0);
+    return !std::isfinite(c.accurate_value) ||
+           (c.upper ? c.accurate_value > c.limit_value + slack : c.accurate_value < c.limit_value - slack);
+  };
+  auto fast_limit = [&](const VerifiedLimit& c) -> double* {
+    return c.limit == "contact_stress_MPa"    ? &fast.contact_stress_MPa
+           : c.limit == "min_edge_margin_um"  ? &fast.min_edge_margin_um
+           : c.limit == "min_backlash_arcsec" ? &fast.min_backlash_arcsec
+           : c.limit == "max_backlash_arcsec" ? &fast.max_backlash_arcsec
+                                              : nullptr;  // closed forms and the LTE: exact or report-only
+  };
+  // The verification of the solved design: check; while a tightenable limit is beyond, tighten
+  // its fast limit, solve again from the last design and check again.
+  auto verify = [&] {
+    for (int round = 0;; ++round) {
+      check(round);
+      bool aim = true;
+      for (const VerifiedLimit& c : out.check.checks) aim = aim && !(fast_limit(c) && beyond(c));
+      if ((out.verification.verified() && aim) || round >= options.verify_rounds || !out.result.ok()) return;
+      bool moved = false;
+      for (const VerifiedLimit& c : out.check.checks) {
+        double* fl = fast_limit(c);
+        if (!fl || !beyond(c)) continue;
+        TighteningStep step;
+        step.round = round + 1;
+        step.limit = c.limit;
+        step.where = c.where;
+        step.accurate_value = c.accurate_value;
+        step.limit_value = c.limit_value;
+        step.fast_limit_before = *fl;
+        const double miss = c.upper ? c.accurate_value - c.limit_value : c.limit_value - c.accurate_value;
+        if (c.limit == "contact_stress_MPa")
+          *fl = TightenedUpperLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
+        else if (c.upper)
+          *fl -= miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
+        else
+          *fl += miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
+        step.fast_limit_after = *fl;
+        out.verification.history.push_back(step);
+        moved = true;
+      }
+      if (!moved) return;
+      if (!solve_round(round + 1)) {
+        out.verification.ran = false;
+        return;
+      }
     }
-    if (!moved) break;
-  }
+  };
+
+  // The sizing driver (objectives/sizing_driver.h) with one candidate: the tooth count is given.
+  SizingCandidates loop;
+  loop.count = 1;
+  loop.label = [&](int) { return std::to_string(spec.drive.teeth) + " teeth"; };
+  bool solved = false;
+  loop.solve = [&](int) { solved = solve_round(0); };
+  loop.feasible_size = [&](int) -> std::optional<double> {
+    if (!solved || !out.converged || out.x.empty()) return std::nullopt;
+    if (out.verification.ran && !out.verified) return std::nullopt;
+    return out.result.objective;
+  };
+  loop.verify = [&](int) {
+    verify();
+    out.verified = out.verification.verified();
+  };
+  RunSizingDriver(loop);
+  // A design that was solved but not feasible on the fast model is still checked: the study
+  // reports the closest point with the accurate values.
+  if (solved && !out.verification.ran && !out.x.empty()) check(0);
   out.verified = out.verification.verified();
   if (out.converged && !out.x.empty()) {
     Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);

@@ -186,7 +186,9 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
                                         const cycloid::Crowning& crowning);
 
 struct CycloidMinSizeOptions {
-  optimizers::SolverOptions solver;   ///< backend ("ipopt", "slsqp"), tolerances, budgets
+  /// backend ("ipopt", "slsqp"), tolerances, budgets; Ipopt without a fallback backend gets SLSQP
+  /// as its fallback (it polishes Ipopt's last point when Ipopt ends at its iteration limit).
+  optimizers::SolverOptions solver;
   int starts = 2;                     ///< starting points: the variables' own, then box points
   int verify_rounds = 3;              ///< tightening rounds of the verified-optimum loop
   std::function<void(double fraction, const std::string& stage)> progress;

@@ -2,6 +2,8 @@
 // every combination (and catalogue roller), write.
 #include "studies/lcr_min_size_study.h"
 
+#include "objectives/sizing_driver.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -331,47 +333,43 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}, {}, {}});
     for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}, {}, {}});
   }
-  {
-    Progress progress("lcr_min_size", ctx.quiet);
-    for (size_t i = 0; i < res.candidates.size(); ++i) {
-      Candidate& c = res.candidates[i];
-      progress.Update(double(i) / res.candidates.size(),
-                      ComboName(c.combo) + (c.roller >= 0 ? " " + s.catalogue[c.roller].name : ""));
-      c.spec = s.base;
-      c.spec.lobes_a = c.combo.lobes_a;
-      c.spec.rollers_a = c.combo.rollers_a;
-      c.spec.lobes_b = c.combo.lobes_b;
-      c.spec.rollers_b = c.combo.rollers_b;
-      if (c.roller >= 0) {
-        const CatalogueRoller& r = s.catalogue[c.roller];
-        c.spec.fixed_roller_diameter_mm = r.diameter_mm;
-        c.spec.roller_length_mm = r.length_mm;
-        c.spec.limits.roller_load_N = std::min(c.spec.limits.roller_load_N, r.load_limit_N);
-      }
-      if (s.contact3d)
-        SolveCandidate3D(s, c);
-      else
-        c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
-      res.value_evaluations += c.outcome.result.value_evaluations;
-      res.gradient_evaluations += c.outcome.result.gradient_evaluations;
+  // The sizing driver (objectives/sizing_driver.h): every candidate solved, then the smallest
+  // feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
+  // re-solving where it breaks a limit; line: the exact cycle on twice the angles); one that fails
+  // is dropped and the next smallest checked, until one holds or none is left.
+  objectives::SizingCandidates loop;
+  loop.count = int(res.candidates.size());
+  loop.label = [&](int i) {
+    const Candidate& c = res.candidates[size_t(i)];
+    return ComboName(c.combo) + (c.roller >= 0 ? " " + s.catalogue[c.roller].name : "");
+  };
+  loop.solve = [&](int i) {
+    Candidate& c = res.candidates[size_t(i)];
+    c.spec = s.base;
+    c.spec.lobes_a = c.combo.lobes_a;
+    c.spec.rollers_a = c.combo.rollers_a;
+    c.spec.lobes_b = c.combo.lobes_b;
+    c.spec.rollers_b = c.combo.rollers_b;
+    if (c.roller >= 0) {
+      const CatalogueRoller& r = s.catalogue[c.roller];
+      c.spec.fixed_roller_diameter_mm = r.diameter_mm;
+      c.spec.roller_length_mm = r.length_mm;
+      c.spec.limits.roller_load_N = std::min(c.spec.limits.roller_load_N, r.load_limit_N);
     }
-    progress.Update(1.0, std::to_string(res.candidates.size()) + " candidates");
-  }
-  // The verified-optimum contract: the smallest feasible candidate is checked by the accurate
-  // model (3D: half_space on a refined grid, tightening and re-solving where it breaks a limit;
-  // line: the exact cycle on twice the angles); one that fails is dropped and the next smallest
-  // checked, until one holds or none is left.
-  for (;;) {
-    res.best = -1;
-    for (size_t i = 0; i < res.candidates.size(); ++i) {
-      const Candidate& c = res.candidates[i];
-      if (c.feasible() && (res.best < 0 || c.outcome.check->outer_diameter_mm <
-                                               res.candidates[res.best].outcome.check->outer_diameter_mm))
-        res.best = int(i);
-    }
-    if (res.best < 0) break;
-    Candidate& b = res.candidates[res.best];
-    if (b.verification) break;  // checked and holds: the answer
+    if (s.contact3d)
+      SolveCandidate3D(s, c);
+    else
+      c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
+    res.value_evaluations += c.outcome.result.value_evaluations;
+    res.gradient_evaluations += c.outcome.result.gradient_evaluations;
+  };
+  loop.feasible_size = [&](int i) -> std::optional<double> {
+    const Candidate& c = res.candidates[size_t(i)];
+    if (!c.feasible()) return std::nullopt;
+    return c.outcome.check->outer_diameter_mm;
+  };
+  loop.verify = [&](int i) {
+    Candidate& b = res.candidates[size_t(i)];
     if (s.contact3d) {
       const int values = b.outcome3d->outcome.result.value_evaluations,
                 gradients = b.outcome3d->outcome.result.gradient_evaluations;
@@ -384,6 +382,10 @@ Result Run(const Study& s, const RunContext& ctx) {
     } else {
       b.verification = objectives::VerifyLcrLineDesign(b.spec, *b.outcome.design, s.options.dense_steps);
     }
+  };
+  {
+    Progress progress("lcr_min_size", ctx.quiet);
+    res.best = objectives::RunSizingDriver(loop, [&](double f, const std::string& what) { progress.Update(f, what); }).best;
   }
   if (res.best >= 0 && s.contact3d) {
     // The limit sensitivities re-solve the line problem: not done for the 3D contact.
