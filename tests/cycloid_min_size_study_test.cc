@@ -118,13 +118,23 @@ TEST(CycloidMinSizeStudy, ParsedSpecHasTheFileValues) {
   EXPECT_EQ(s.spec.angles_per_period, 4);
   EXPECT_EQ(s.spec.options.profile_cells, 16);
   EXPECT_EQ(s.options.solver.backend, "ipopt");
-  // A range without a start starts at its middle; speed_ratio z is the same drive as teeth z.
+  // speed_ratio z is the same drive as teeth z; the fixed face width comes from "drive".
   const json r = Example("cycloid_min_size_ratio29.json");
   const auto s29 = studies::cycloid_min_size::Parse(studies::Node(&r, "r.json", ""));
   EXPECT_EQ(s29.spec.drive.teeth, 29);
   EXPECT_EQ(s29.spec.drive.rollers, 30);
-  EXPECT_DOUBLE_EQ(s29.spec.drive.eccentricity_mm, 0.5 * (0.3 + 1.2));
-  EXPECT_DOUBLE_EQ(s29.spec.limits.bore_radius_mm, 5);  // bore_diameter_mm 10
+  EXPECT_DOUBLE_EQ(s29.spec.drive.face_width_mm, 8);
+  EXPECT_DOUBLE_EQ(s29.spec.overload_torque_Nmm, 40e3);
+  EXPECT_EQ(s29.options.solver.backend, "nlopt_slsqp");
+  EXPECT_DOUBLE_EQ(s29.spec.limits.bore_radius_mm, 0);  // no bore: no web row
+  // A range without a start starts at its middle; the bore diameter gives the bore radius.
+  json small = SmallStudy();
+  small["limits"]["bore_diameter_mm"] = 10;
+  const auto ss = studies::cycloid_min_size::Parse(studies::Node(&small, "s.json", ""));
+  EXPECT_DOUBLE_EQ(ss.spec.drive.eccentricity_mm, 0.5 * (1.0 + 4.0));
+  EXPECT_DOUBLE_EQ(ss.spec.drive.roller_radius_mm, 0.5 * (2.0 + 9.0));
+  EXPECT_DOUBLE_EQ(ss.spec.limits.bore_radius_mm, 5);
+  EXPECT_DOUBLE_EQ(ss.spec.drive.delta_position_mm, -0.010);  // modification.delta_position_um
 }
 
 TEST(CycloidMinSizeStudy, ImpossibleRatiosAreRefusedWithTheNearestThatFits) {
