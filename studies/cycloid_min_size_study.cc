@@ -531,7 +531,16 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
            Format(o.check.accurate.outer_diameter_mm, 5) +
            " mm) that the accurate model verifies: it meets every limit but is not known to be the smallest; "
            "give more optimizer.starts or optimizer.max_evaluations, or start elsewhere";
-  const objectives::VerifiedLimit* w = o.verification.worst();
+  // The check that breaks its limit by the largest share of the larger of the limit and the
+  // value (Verification::worst divides by the limit alone, which makes any broken limit of 0, an
+  // edge margin or a backlash, the worst whatever its size).
+  const objectives::VerifiedLimit* w = nullptr;
+  double share = 0;
+  for (const objectives::VerifiedLimit& c : o.verification.checks) {
+    if (c.holds()) continue;
+    const double s = c.excess() / std::max({std::abs(c.limit_value), std::abs(c.accurate_value), c.estimated_error, 1e-12});
+    if (!w || s > share) w = &c, share = s;
+  }
   if (w) {
     // The value of the limit at which that design holds: its accurate value within its error.
     const double fit = w->upper ? w->accurate_value - w->estimated_error : w->accurate_value + w->estimated_error;
