@@ -11,8 +11,7 @@
 
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/unloaded_tca.h"
-#include "studies/input.h"
-#include "studies/study.h"
+#include "bench/example_study.h"
 #include "tests/reference_designs.h"
 
 
@@ -97,7 +96,6 @@ void BM_CycloidSolveAndDerivative(benchmark::State& state) {
 }
 BENCHMARK(BM_CycloidSolveAndDerivative)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(10);
 
-void RunExample(benchmark::State& state, const char* name);
 
 // The 60-angle cycle of the LCM example (L = 18.7 mm) from a warm model, Arg 0: its value;
 // Arg 1: the value and the cycle's implicit derivatives w.r.t. f, Δa and Δρ (DifferentiateCycle,
@@ -126,34 +124,15 @@ BENCHMARK(BM_CycloidCycle60Gradient)->Args({0, 1})->Args({1, 1})->Args({1, 100})
 
 // The joint tuning example (Ipopt, f with Δa and Δρ).
 void BM_CycloidJointTuningStudy(benchmark::State& state) {
-  RunExample(state, "cycloid_crowning_tuning_joint_nnm.json");
-}
-
-void RunExample(benchmark::State& state, const char* name) {
-  const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /
-                            "studies/examples" / name)
-                               .string();
-  const nlohmann::json j = studies::LoadStudyFile(file);
-  studies::RunContext ctx;
-  ctx.study_file = file;
-  ctx.quiet = true;
-  for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
+  bench::RunExampleStudy(state, "cycloid_crowning_tuning_joint_nnm.json");
 }
 
 // The cycloid_ltca example without crowning: 32 angles per mesh period and its error estimate.
-void BM_CycloidLtcaExampleStudy(benchmark::State& state) { RunExample(state, "cycloid_ltca_nnm_none.json"); }
+void BM_CycloidLtcaExampleStudy(benchmark::State& state) { bench::RunExampleStudy(state, "cycloid_ltca_nnm_none.json"); }
 BENCHMARK(BM_CycloidLtcaExampleStudy)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 void BM_CycloidCrowningTuningStudy(benchmark::State& state) {
-  // The source tree from this file's path (CMake passes absolute paths to the compiler).
-  const std::string file = (std::filesystem::path(__FILE__).parent_path().parent_path() /
-                            "studies/examples/cycloid_crowning_tuning_nnm.json")
-                               .string();
-  const nlohmann::json j = studies::LoadStudyFile(file);
-  studies::RunContext ctx;
-  ctx.study_file = file;
-  ctx.quiet = true;
-  for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
+  bench::RunExampleStudy(state, "cycloid_crowning_tuning_nnm.json");
 }
 BENCHMARK(BM_CycloidCrowningTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_CycloidJointTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -7,36 +7,11 @@
 #include <benchmark/benchmark.h>
 
 #include "objectives/cycloid_min_size.h"
+#include "bench/example_study.h"
+#include "tests/reference_designs.h"
 
 namespace camopt::objectives {
 namespace {
-
-CycloidSizingSpec Ratio29() {
-  CycloidSizingSpec s;
-  s.drive.teeth = 29;
-  s.drive.rollers = 30;
-  s.drive.roller_position_radius_mm = 35;
-  s.drive.roller_radius_mm = 2.5;
-  s.drive.eccentricity_mm = 0.9;
-  s.drive.face_width_mm = 8;
-  s.drive.delta_position_mm = -0.010;
-  s.drive.delta_radius_mm = -0.005;
-  s.crowning.type = cycloid::CrowningType::kLogarithmic;
-  s.crowning.coefficient_mm = 0.002;
-  s.design_torque_Nmm = 20e3;
-  s.overload_torque_Nmm = 40e3;
-  s.angles_per_period = 4;
-  s.options.profile_cells = 16;
-  s.options.axial_cells = 16;
-  s.limits.contact_stress_MPa = 1500;
-  s.variables = {{"eccentricity_mm", 0.3, 2.0, 0.9, 0.1},
-                 {"roller_position_radius_mm", 8.0, 60.0, 35.0, 10.0},
-                 {"roller_radius_mm", 0.5, 5.0, 2.5, 1.0},
-                 {"delta_position_um", -30.0, 0.0, -10.0, 10.0},
-                 {"delta_radius_um", -30.0, 0.0, -5.0, 10.0},
-                 {"coefficient_mm", 0.0, 0.02, 0.002, 0.001}};
-  return s;
-}
 
 void BM_CycloidMinSizeRatio29(benchmark::State& state) {
   CycloidMinSizeOptions o;
@@ -50,7 +25,7 @@ void BM_CycloidMinSizeRatio29(benchmark::State& state) {
   CycloidMinSizeOutcome r;
   // (DoNotOptimize is not given r's doubles: its "+r" constraint on a double field corrupted
   // it here with GCC 12 -O1 and above; the solve has effects that cannot be optimised away.)
-  for (auto _ : state) r = SolveCycloidMinSize(Ratio29(), o);
+  for (auto _ : state) r = SolveCycloidMinSize(camopt::testing::CycloidRatio29Sizing(cycloid::CrowningType::kLogarithmic, 40), o);
   state.counters["values_s"] = r.value_seconds;
   state.counters["gradients_s"] = r.gradient_seconds;
   state.counters["verification_s"] = r.verification_seconds;
@@ -60,6 +35,13 @@ void BM_CycloidMinSizeRatio29(benchmark::State& state) {
   state.counters["verified"] = r.verified ? 1 : 0;
 }
 BENCHMARK(BM_CycloidMinSizeRatio29)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The example studies themselves, as `camopt run` runs them (parse, sizing, the accurate cycle of
+// the best design for the plots, the files): ratio 29 (SLSQP) and the paper's drive (Ipopt).
+void BM_CycloidMinSizeRatio29Study(benchmark::State& state) { bench::RunExampleStudy(state, "cycloid_min_size_ratio29.json"); }
+void BM_CycloidMinSizePaperStudy(benchmark::State& state) { bench::RunExampleStudy(state, "cycloid_min_size_paper.json"); }
+BENCHMARK(BM_CycloidMinSizeRatio29Study)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_CycloidMinSizePaperStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 }  // namespace camopt::objectives

@@ -1,5 +1,7 @@
 #include "objectives/cycloid_crowning.h"
 
+#include "objectives/cycloid_fields.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -122,25 +124,7 @@ Problem CycloidCrowningProblem(CycloidCrowningModel& model, const CycloidCrownin
 }  // namespace camopt::objectives
 
 namespace camopt::objectives {
-namespace {
 
-// A variable's model parameter (LoadedTca::Differentiate) and the factor from its unit to mm.
-std::pair<std::string, double> ModelParameter(const std::string& name) {
-  if (name == "delta_position_um") return {"delta_position_mm", 1e-3};
-  if (name == "delta_radius_um") return {"delta_radius_mm", 1e-3};
-  return {name, 1.0};
-}
-
-}  // namespace
-
-namespace {
-// The derivatives' CG tolerance: the contact solver's own (the values are no more accurate than
-// that), between 1e-10 and 1e-4. At 1e-4 the 60-angle cycle's gradient (f, Δa, Δρ) costs 1.67×
-// the value, at 1e-6 2.3× (docs/performance.md, "Cycloid drive").
-double SensitivityTolerance(const cycloid::LoadedOptions& o) {
-  return std::clamp(o.solver_tolerance, 1e-10, 1e-4);
-}
-}  // namespace
 
 std::vector<std::string> TuningVariableNames() {
   return {"coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm",
@@ -175,7 +159,7 @@ CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloi
                 o.keep_pressure = true;  // the derivatives need the converged pressures
                 o.crank_slope = false;
                 o.edge_margin = false;
-                o.sensitivity_tolerance = SensitivityTolerance(options);
+                o.sensitivity_tolerance = CycloidSensitivityTolerance(options);
                 return o;
               }()),
       maximum_(drive, crowning, material,
@@ -184,7 +168,7 @@ CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloi
                  o.keep_pressure = true;
                  o.crank_slope = false;
                  o.edge_margin = true;
-                 o.sensitivity_tolerance = SensitivityTolerance(options);
+                 o.sensitivity_tolerance = CycloidSensitivityTolerance(options);
                  return o;
                }()),
       design_torque_Nmm_(design_torque_Nmm),
@@ -202,14 +186,8 @@ std::pair<cycloid::Drive, cycloid::Crowning> CycloidTuningModel::Design(const st
   cycloid::Drive d = drive_;
   cycloid::Crowning c = crowning_;
   for (size_t j = 0; j < x.size(); ++j) {
-    const std::string& v = variables_[j];
-    if (v == "delta_position_um") d.delta_position_mm = x[j] * 1e-3;
-    if (v == "delta_radius_um") d.delta_radius_mm = x[j] * 1e-3;
-    if (v == "coefficient_mm") c.coefficient_mm = std::max(0.0, x[j]);
-    if (v == "effective_length_mm") c.effective_length_mm = x[j];
-    if (v == "end_drop_mm") c.end_drop_mm = x[j];
-    if (v == "flat_length_mm") c.flat_length_mm = x[j];
-    if (v == "radius_mm") c.radius_mm = x[j];
+    SetCycloidField(variables_[j], x[j], d, c);
+    if (variables_[j] == "coefficient_mm") c.coefficient_mm = std::max(0.0, x[j]);  // negative requests are 0
   }
   return {d, c};
 }
@@ -247,7 +225,7 @@ TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool
   std::vector<std::string> params;
   std::vector<double> factor;
   for (const std::string& v : variables_) {
-    const auto [p, f] = ModelParameter(v);
+    const auto [p, f] = CycloidModelParameter(v);
     params.push_back(p);
     factor.push_back(f);
   }

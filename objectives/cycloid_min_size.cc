@@ -11,33 +11,23 @@
 #include <ceres/jet.h>
 
 #include "model/cycloid/geometry_limits.h"
+#include "objectives/cycloid_fields.h"
 #include "objectives/sizing_driver.h"
 
 namespace camopt::objectives {
 
 namespace {
 
-// A variable's model parameter (LoadedTca::Differentiate) and the factor from its unit to mm.
-std::pair<std::string, double> ModelParameter(const std::string& name) {
-  if (name == "delta_position_um") return {"delta_position_mm", 1e-3};
-  if (name == "delta_radius_um") return {"delta_radius_mm", 1e-3};
-  return {name, 1.0};
-}
-
 bool IsDriveField(const std::string& name) {
   return name == "eccentricity_mm" || name == "roller_position_radius_mm" || name == "roller_radius_mm" ||
          name == "face_width_mm" || name == "delta_position_um" || name == "delta_radius_um";
 }
 
-// The derivatives' CG tolerance: the contact solver's own, between 1e-10 and 1e-4 (as the crowning
-// tuning's, objectives/cycloid_crowning.cc).
-double SensitivityTolerance(const cycloid::LoadedOptions& o) { return std::clamp(o.solver_tolerance, 1e-10, 1e-4); }
-
 cycloid::LoadedOptions CycleOptions(cycloid::LoadedOptions o, bool edge) {
   o.keep_pressure = true;  // the derivatives need the converged pressures
   o.crank_slope = false;
   o.edge_margin = edge;
-  o.sensitivity_tolerance = SensitivityTolerance(o);
+  o.sensitivity_tolerance = CycloidSensitivityTolerance(o);
   return o;
 }
 
@@ -135,20 +125,7 @@ std::pair<cycloid::Drive, cycloid::Crowning> CycloidSizingModel::Design(const st
   if (x.size() != spec_.variables.size()) throw std::invalid_argument("CycloidSizingModel: one value per variable");
   cycloid::Drive d = spec_.drive;
   cycloid::Crowning c = spec_.crowning;
-  for (size_t j = 0; j < x.size(); ++j) {
-    const std::string& v = spec_.variables[j].name;
-    if (v == "eccentricity_mm") d.eccentricity_mm = x[j];
-    if (v == "roller_position_radius_mm") d.roller_position_radius_mm = x[j];
-    if (v == "roller_radius_mm") d.roller_radius_mm = x[j];
-    if (v == "face_width_mm") d.face_width_mm = x[j];
-    if (v == "delta_position_um") d.delta_position_mm = x[j] * 1e-3;
-    if (v == "delta_radius_um") d.delta_radius_mm = x[j] * 1e-3;
-    if (v == "coefficient_mm") c.coefficient_mm = x[j];
-    if (v == "effective_length_mm") c.effective_length_mm = x[j];
-    if (v == "end_drop_mm") c.end_drop_mm = x[j];
-    if (v == "flat_length_mm") c.flat_length_mm = x[j];
-    if (v == "radius_mm") c.radius_mm = x[j];
-  }
+  for (size_t j = 0; j < x.size(); ++j) SetCycloidField(spec_.variables[j].name, x[j], d, c);
   return {d, c};
 }
 
@@ -261,7 +238,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   std::vector<std::string> params;
   std::vector<double> factor;
   for (const Variable& v : spec_.variables) {
-    const auto [p, f] = ModelParameter(v.name);
+    const auto [p, f] = CycloidModelParameter(v.name);
     params.push_back(p);
     factor.push_back(f);
   }

@@ -54,6 +54,28 @@ CycloidSizingSpec PaperSpec() {
   return s;
 }
 
+// Every output row's derivative by every variable against central differences with the step
+// rel_step × the variable's scale, within tol × the largest difference quotient of the row's block.
+void ExpectRowsMatchCentralDifferences(const Problem& p, const CycloidSizingSpec& spec, const std::vector<double>& x,
+                                       const std::vector<double>& jac, double rel_step, double tol) {
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  for (int j = 0; j < n; ++j) {
+    const double h = rel_step * spec.variables[size_t(j)].scale;
+    std::vector<double> xp = x, xm = x, yp(m), ym(m);
+    xp[size_t(j)] += h;
+    xm[size_t(j)] -= h;
+    p.evaluator->Eval(xp, yp);
+    p.evaluator->Eval(xm, ym);
+    for (const OutputBlock& b : p.evaluator->blocks()) {
+      double scale = 0;
+      for (int r = b.offset; r < b.offset + b.size; ++r) scale = std::max(scale, std::abs(yp[r] - ym[r]) / (2 * h));
+      for (int r = b.offset; r < b.offset + b.size; ++r)
+        EXPECT_NEAR(jac[size_t(r) * n + j], (yp[r] - ym[r]) / (2 * h), tol * scale + 1e-9)
+            << b.name << "[" << r - b.offset << "] by " << spec.variables[size_t(j)].name;
+    }
+  }
+}
+
 TEST(CycloidMinSize, EveryRowsDerivativeMatchesCentralDifferences) {
   CycloidSizingSpec spec = PaperSpec();
   CycloidSizingModel model(spec);
@@ -65,23 +87,7 @@ TEST(CycloidMinSize, EveryRowsDerivativeMatchesCentralDifferences) {
   for (const Variable& v : spec.variables) x.push_back(v.initial);
   std::vector<double> y(m), jac(size_t(m) * n);
   p.evaluator->EvalWithJacobian(x, y, jac);
-  for (int j = 0; j < n; ++j) {
-    const double h = 1e-5 * spec.variables[size_t(j)].scale;
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[size_t(j)] += h;
-    xm[size_t(j)] -= h;
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    for (const OutputBlock& b : p.evaluator->blocks()) {
-      double scale = 0;
-      for (int r = b.offset; r < b.offset + b.size; ++r) scale = std::max(scale, std::abs(yp[r] - ym[r]) / (2 * h));
-      for (int r = b.offset; r < b.offset + b.size; ++r) {
-        const double fd = (yp[r] - ym[r]) / (2 * h);
-        EXPECT_NEAR(jac[size_t(r) * n + j], fd, kRowRelTol * scale + 1e-12)
-            << b.name << "[" << r - b.offset << "] by " << spec.variables[size_t(j)].name;
-      }
-    }
-  }
+  ExpectRowsMatchCentralDifferences(p, spec, x, jac, 1e-5, kRowRelTol);
   // The rows are not all flat: the stress rows move with every geometric variable.
   const OutputBlock& peaks = p.evaluator->block(kSizingPeakPressure);
   for (int j = 0; j < 4; ++j) {
@@ -127,31 +133,7 @@ void ExpectEveryLimitHolds(const CycloidMinSizeOutcome& r) {
   EXPECT_TRUE(r.verified);
 }
 
-// The ratio-29 drive of the sizing tests: 20 N·m on the disc, face width 8 mm, 1500 MPa.
-CycloidSizingSpec Ratio29(cycloid::CrowningType crowning) {
-  CycloidSizingSpec s;
-  s.drive.teeth = 29;
-  s.drive.rollers = 30;
-  s.drive.roller_position_radius_mm = 35;
-  s.drive.roller_radius_mm = 2.5;
-  s.drive.eccentricity_mm = 0.9;
-  s.drive.face_width_mm = 8;
-  s.drive.delta_position_mm = -0.010;
-  s.drive.delta_radius_mm = -0.005;
-  s.crowning.type = crowning;
-  s.crowning.coefficient_mm = 0.002;
-  s.design_torque_Nmm = 20e3;
-  s.angles_per_period = 4;
-  s.options = Fast();
-  s.limits.contact_stress_MPa = 1500;
-  s.variables = {{"eccentricity_mm", 0.3, 2.0, 0.9, 0.1},
-                 {"roller_position_radius_mm", 8.0, 60.0, 35.0, 10.0},
-                 {"roller_radius_mm", 0.5, 5.0, 2.5, 1.0},
-                 {"delta_position_um", -30.0, 0.0, -10.0, 10.0},
-                 {"delta_radius_um", -30.0, 0.0, -5.0, 10.0}};
-  if (crowning == cycloid::CrowningType::kLogarithmic) s.variables.push_back({"coefficient_mm", 0.0, 0.02, 0.002, 0.001});
-  return s;
-}
+CycloidSizingSpec Ratio29(cycloid::CrowningType crowning) { return camopt::testing::CycloidRatio29Sizing(crowning); }
 
 TEST(CycloidMinSize, PaperDriveSizedAtItsOwnLcmPeakIsNoLargerThanThePaper) {
   // The load-distribution paper's drive (15 teeth, R_p 90 mm, r_p 7.2 mm, e 4.5 mm, 17 mm face,
@@ -246,21 +228,7 @@ TEST(CycloidMinSize, RowDerivativesHoldAtTheUndercutBoundary) {
   p.evaluator->EvalWithJacobian(x, y, jac);
   const int undercut = p.evaluator->block(kSizingUndercut).offset;
   ASSERT_NEAR(y[undercut], 0.002, 1e-9);
-  for (int j = 0; j < n; ++j) {
-    const double h = 1e-6 * spec.variables[size_t(j)].scale;  // stays inside the 2 µm
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[size_t(j)] += h;
-    xm[size_t(j)] -= h;
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    for (const OutputBlock& b : p.evaluator->blocks()) {
-      double scale = 0;
-      for (int r = b.offset; r < b.offset + b.size; ++r) scale = std::max(scale, std::abs(yp[r] - ym[r]) / (2 * h));
-      for (int r = b.offset; r < b.offset + b.size; ++r)
-        EXPECT_NEAR(jac[size_t(r) * n + j], (yp[r] - ym[r]) / (2 * h), 1e-4 * scale + 1e-9)
-            << b.name << "[" << r - b.offset << "] by " << spec.variables[size_t(j)].name;
-    }
-  }
+  ExpectRowsMatchCentralDifferences(p, spec, x, jac, 1e-6, 1e-4);  // steps stay inside the 2 µm
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "model/lcr/contact.h"
 #include "model/lcr/reducer.h"
 #include "model/motion/motion_program.h"
+#include "objectives/cycloid_min_size.h"
 #include "objectives/lcr_sizing.h"
 
 namespace camopt::testing {
@@ -119,6 +120,39 @@ LcrIIContact<T> LcrIIOutputRoller3(T eccentricity, T roller_radius) {
   const auto contacts = lcr::RollerContacts(c.reducer, lcr::Side::kOutput, T(0.3));
   c.effective_radius = c.reducer.output.roller_radius * (T(1.0) - c.reducer.output.roller_radius * contacts[3].curvature);
   return c;
+}
+
+/// The ratio-29 cycloid sizing of the sizing tests and benchmarks (studies/examples/
+/// cycloid_min_size_ratio29.json is the same problem with the overload): 29 teeth, 30 pins,
+/// 20 N·m on the disc, 1500 MPa, 8 mm face; e, a, ρ, Δa, Δρ and (crowned) the LCM coefficient free,
+/// starting at a = 35, ρ = 2.5, e = 0.9 mm, Δa −10, Δρ −5 µm, f = 2 µm; 16 × 16 cells, 4 angles per
+/// mesh period. overload_Nm > 0 adds the contact-inside-the-face row at that torque.
+inline objectives::CycloidSizingSpec CycloidRatio29Sizing(cycloid::CrowningType crowning, double overload_Nm = 0) {
+  objectives::CycloidSizingSpec s;
+  s.drive.teeth = 29;
+  s.drive.rollers = 30;
+  s.drive.roller_position_radius_mm = 35;
+  s.drive.roller_radius_mm = 2.5;
+  s.drive.eccentricity_mm = 0.9;
+  s.drive.face_width_mm = 8;
+  s.drive.delta_position_mm = -0.010;
+  s.drive.delta_radius_mm = -0.005;
+  s.crowning.type = crowning;
+  s.crowning.coefficient_mm = 0.002;
+  s.design_torque_Nmm = 20e3;
+  s.overload_torque_Nmm = overload_Nm * 1e3;
+  s.angles_per_period = 4;
+  s.options.profile_cells = 16;
+  s.options.axial_cells = 16;
+  s.limits.contact_stress_MPa = 1500;
+  s.variables = {{"eccentricity_mm", 0.3, 2.0, 0.9, 0.1},
+                 {"roller_position_radius_mm", 8.0, 60.0, 35.0, 10.0},
+                 {"roller_radius_mm", 0.5, 5.0, 2.5, 1.0},
+                 {"delta_position_um", -30.0, 0.0, -10.0, 10.0},
+                 {"delta_radius_um", -30.0, 0.0, -5.0, 10.0}};
+  if (crowning == cycloid::CrowningType::kLogarithmic)
+    s.variables.push_back({"coefficient_mm", 0.0, 0.02, 0.002, 0.001});
+  return s;
 }
 
 }  // namespace camopt::testing

@@ -1,0 +1,27 @@
+// Runs an example study of studies/examples as `camopt run` does (parse, run, the files in memory)
+// once per benchmark iteration.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/input.h"
+#include "studies/study.h"
+
+namespace camopt::bench {
+
+inline void RunExampleStudy(benchmark::State& state, const char* name) {
+  // The source tree from this file's path (CMake passes absolute paths to the compiler).
+  const std::string file =
+      (std::filesystem::path(__FILE__).parent_path().parent_path() / "studies/examples" / name).string();
+  const nlohmann::json j = studies::LoadStudyFile(file);
+  studies::RunContext ctx;
+  ctx.study_file = file;
+  ctx.quiet = true;
+  for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
+}
+
+}  // namespace camopt::bench
