@@ -174,40 +174,12 @@ BearingRating ParseRating(const Node& node, BearingKind kind, const std::string&
 
 // "load.input_speed_rpm" or "duty_cycle" (docs/life.md); nullopt when neither is given.
 std::optional<LifeSpec> ParseLife(const Node& root, const lcr::LoadCase& load) {
-  const bool speed = root.Has("load") && root["load"].Has("input_speed_rpm");
-  const bool duty = root.Has("duty_cycle");
-  if (!speed && !duty) return std::nullopt;
+  std::string why;
+  std::optional<std::vector<lcr::LcrDutyLine>> lines = ParseDutyCycle(root, load.output_torque_Nmm, &why);
+  if (!lines) return std::nullopt;
   LifeSpec life;
-  if (speed && duty)
-    root["load"]["input_speed_rpm"].Fail("no input_speed_rpm when a \"duty_cycle\" is given (one or the other)");
-  if (speed) {
-    life.lines.push_back({load.output_torque_Nmm, root["load"]["input_speed_rpm"].Positive(), 1.0});
-  } else {
-    const Node dc = root["duty_cycle"];
-    const std::vector<Node> items = dc.Elements();
-    if (items.empty()) dc.Fail("a non-empty array of duty-cycle lines");
-    double share_sum = 0.0, speed_max = 0.0;
-    for (const Node& item : items) {
-      item.CheckKnownFields({"output_torque_Nm", "input_speed_rpm", "time_share"});
-      DutyLine line;
-      line.output_torque_Nmm = item["output_torque_Nm"].NonNegative() * 1000.0;
-      line.input_speed_rpm = item["input_speed_rpm"].NonNegative();
-      line.time_share = item["time_share"].Positive();
-      if (line.time_share > 1.0) item["time_share"].Fail("a share in (0, 1]");
-      share_sum += line.time_share;
-      speed_max = std::max(speed_max, line.input_speed_rpm);
-      life.lines.push_back(line);
-    }
-    if (!(std::abs(share_sum - 1.0) <= 1e-6))
-      throw StudyError(dc.file() + ": " + dc.path() + ": expected time shares summing to 1 (within 1e-6), found " +
-                           Format(share_sum, 10), dc.file(), dc.path(), "time shares summing to 1 (within 1e-6)",
-                       Format(share_sum, 10));
-    if (!(speed_max > 0))
-      dc.Fail("at least one line with input_speed_rpm > 0 (no revolutions, no rating life)");
-    for (DutyLine& line : life.lines) line.time_share /= share_sum;  // exactly 1 for Palmgren–Miner
-    life.from_duty_cycle = true;
-  }
-  const std::string why = speed ? "a life is asked: load.input_speed_rpm is given" : "a life is asked: duty_cycle is given";
+  life.lines = std::move(*lines);
+  life.from_duty_cycle = root.Has("duty_cycle");
   const Node reducer = root["reducer"];
   life.input_roller = ParseRating(reducer["input"], BearingKind::kRoller, why);
   life.output_roller = ParseRating(reducer["output"], BearingKind::kRoller, why);
