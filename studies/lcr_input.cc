@@ -91,7 +91,7 @@ std::optional<std::vector<lcr::LcrDutyLine>> ParseDutyCycle(const Node& root, do
   }
   if (!(std::abs(share_sum - 1.0) <= 1e-6))
     throw StudyError(dc.file() + ": " + dc.path() + ": expected time shares summing to 1 (within 1e-6), found " +
-                         Format(share_sum, 10),
+                         Format(share_sum, 10) + "; would fit: each time_share divided by " + Format(share_sum, 10),
                      dc.file(), dc.path(), "time shares summing to 1 (within 1e-6)", Format(share_sum, 10));
   if (!(speed_max > 0)) dc.Fail("at least one line with input_speed_rpm > 0 (no revolutions, no rating life)");
   for (lcr::LcrDutyLine& line : lines) line.time_share /= share_sum;  // exactly 1 for Palmgren–Miner

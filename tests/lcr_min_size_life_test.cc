@@ -2,7 +2,9 @@
 // rating scaled with roller size against its ISO 281 closed form, the life rows' exact gradients
 // against central differences, the rows against the dense computation of lcr_analysis, the sized
 // design's lives through lcr_analysis, and bad input.
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -116,5 +118,137 @@ TEST(LcrMinSizeLife, RowsAgreeWithTheDenseLifeOfLcrAnalysis) {
   // The eccentric bearing turns n_A/m_A per input revolution (model/lcr/life.h).
   EXPECT_NEAR(c.life[2].life.revolutions_per_input_revolution, 13.0 / 12.0, 1e-12);
 }
+
+// Runs a study given as json in dir; returns result.json (null json on a non-zero exit).
+json RunStudy(const json& study, const std::filesystem::path& dir, int* exit_code, std::string* stderr_text = nullptr) {
+  const auto file = dir / "study.json";
+  WriteFile(file, study.dump());
+  const auto r = RunCamopt("run " + file.string() + " --out " + (dir / "out").string() + " --quiet");
+  *exit_code = r.exit_code;
+  if (stderr_text) *stderr_text = r.stderr_text;
+  if (r.exit_code != 0) return json();
+  return json::parse(ReadFile(dir / "out" / "result.json"));
+}
+
+// The ratio −90 example with a 2000 h life at 1000 rpm against the same without the limit: the life
+// binds (its row is active, the input roller is the shortest-lived bearing), the design is larger,
+// raising the limit costs diameter (mm per hour > 0), and lcr_analysis of the sized design computes
+// the same lives.
+TEST(LcrMinSizeLife, LifeLimitBindsAndCostsDiameter) {
+  int code = -1;
+  std::string err;
+  const auto dir = TempDir("lcr-min-size-life");
+  const json res = RunStudy(Example("lcr_min_size_life.json"), dir, &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_TRUE(res["verified"].get<bool>());
+  const json& best = res["best"];
+  const json& life = best["life"];
+  EXPECT_EQ(life["life_h"].get<double>(), 2000.0);
+  EXPECT_GE(life["shortest_L10h"].get<double>(), 2000.0);
+  EXPECT_LT(life["shortest_L10h"].get<double>(), 2000.0 * 1.001);  // binds: within 0.1%
+  EXPECT_EQ(life["shortest_bearing"], "input_roller");
+  const auto& binding = best["binding"];
+  EXPECT_NE(std::find(binding.begin(), binding.end(), "input_roller_life"), binding.end()) << binding.dump();
+  ASSERT_TRUE(best["limit_sensitivity"].contains("life_h"));
+  EXPECT_GT(best["limit_sensitivity"]["life_h"].get<double>(), 0.0);
+  for (const json& e : life["table"]) {
+    SCOPED_TRACE(e["element"].get<std::string>());
+    EXPECT_TRUE(e["pass"].get<bool>());
+    EXPECT_EQ(e["L10h"].get<double>(), life[e["element"].get<std::string>() + "_L10h"].get<double>());
+    // ISO 281: L10h = 10⁶ (C/P)^(10/3) / (60 n R), n = 1000 rpm, R the revolutions per input revolution.
+    const double hand = 1e6 * std::pow(e["dynamic_rating_N"].get<double>() / e["equivalent_load_N"].get<double>(),
+                                       10.0 / 3.0) /
+                        (60.0 * 1000.0 * e["revolutions_per_input_revolution"].get<double>());
+    EXPECT_NEAR(e["L10h"].get<double>(), hand, 1e-9 * hand);
+    EXPECT_NEAR(e["s0"].get<double>(), e["static_rating_N"].get<double>() / e["max_load_N"].get<double>(), 1e-12);
+  }
+  // The eccentric bearing turns n_A/m_A per input revolution.
+  const json& ecc = life["table"][2];
+  EXPECT_NEAR(ecc["revolutions_per_input_revolution"].get<double>(),
+              best["input"]["rollers"].get<double>() / best["input"]["lobes"].get<double>(), 1e-12);
+  // The rollers' C scales from the 10 mm x 10 mm, 2700 N reference (ISO 281 6.1.1, same length).
+  const double d = best["input"]["roller_diameter_mm"].get<double>();
+  EXPECT_NEAR(life["table"][0]["dynamic_rating_N"].get<double>(), 2700.0 * std::pow(d / 10.0, 29.0 / 27.0), 1e-9);
+
+  // Without the limit (the speed and ratings kept): the ratio −90 example's design, whose shortest
+  // life is below 2000 h, and a smaller reducer.
+  json free = Example("lcr_min_size_life.json");
+  free["limits"].erase("life_h");
+  const json res0 = RunStudy(free, TempDir("lcr-min-size-life-free"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_LT(res0["best"]["life"]["shortest_L10h"].get<double>(), 2000.0);
+  EXPECT_TRUE(res0["best"]["life"]["life_h"].is_null());
+  EXPECT_LT(res0["best"]["outer_diameter_mm"].get<double>(), best["outer_diameter_mm"].get<double>() - 1.0);
+  EXPECT_FALSE(res0["best"]["limit_sensitivity"].contains("life_h"));
+  const json plain = RunStudy(Example("lcr_min_size.json"), TempDir("lcr-min-size-life-plain"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_EQ(res0["best"]["outer_diameter_mm"], plain["best"]["outer_diameter_mm"]);
+
+  // best_lcr_analysis.json carries the speed and the ratings at the sized roller: lcr_analysis
+  // computes the same lives (the same functions, the same 3600 steps per revolution).
+  const auto r = RunCamopt("run " + (dir / "out" / "best_lcr_analysis.json").string() + " --quiet --out " +
+                           (dir / "analysis").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const json a = json::parse(ReadFile(dir / "analysis" / "result.json"));
+  for (const char* key : {"input_roller_L10h", "output_roller_L10h", "eccentric_bearing_L10h", "shortest_L10h"})
+    EXPECT_NEAR(a["life"][key].get<double>(), life[key].get<double>(), 1e-9 * life[key].get<double>()) << key;
+}
+
+// A catalogue that carries C and C0: with a life limit, the chosen roller meets it; an entry
+// without C is a bad study naming the entry.
+TEST(LcrMinSizeLife, CatalogueRatingsAndAnEntryWithoutC) {
+  json study = Example("lcr_min_size_catalogue.json");
+  study["search"]["max_lobes"] = 14;  // one combination (12/13 + 14/15), five rollers: keep the test short
+  study["roller_catalogue"] = json::parse(ReadFile(camopt::testing::SourcePath("studies/examples/needle_rollers.json")));
+  study["load"]["input_speed_rpm"] = 1000;
+  study["limits"]["life_h"] = 2000;
+  int code = -1;
+  std::string err;
+  const json res = RunStudy(study, TempDir("lcr-min-size-life-cat"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  const json& life = res["best"]["life"];
+  EXPECT_GE(life["shortest_L10h"].get<double>(), 2000.0);
+  const std::string name = res["best"]["catalogue_roller"];
+  for (const json& entry : study["roller_catalogue"])
+    if (entry["name"] == name) {
+      // The catalogue's own C and C0, not scaled.
+      EXPECT_EQ(life["table"][0]["dynamic_rating_N"], entry["dynamic_rating_N"]);
+      EXPECT_EQ(life["table"][0]["static_rating_N"], entry["static_rating_N"]);
+    }
+  study["roller_catalogue"][1].erase("dynamic_rating_N");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-noC", "/roller_catalogue/1/dynamic_rating_N",
+                                       "expected the roller's dynamic load rating C [N] > 0");
+}
+
+TEST(LcrMinSizeLife, BadInputIsAClearErrorWithExitCode2) {
+  struct Case {
+    std::string pointer, value, path, words;
+  };
+  const std::vector<Case> cases = {
+      {"/load/input_speed_rpm", "-500", "/load/input_speed_rpm", "expected"},
+      {"/duty_cycle", R"([{"output_torque_Nm": 80, "input_speed_rpm": 1000, "time_share": 0.5},
+                          {"output_torque_Nm": 40, "input_speed_rpm": -1500, "time_share": 0.5}])",
+       "/duty_cycle/1/input_speed_rpm", "expected"},
+      {"/duty_cycle", R"([{"output_torque_Nm": 80, "input_speed_rpm": 1000, "time_share": 0.5},
+                          {"output_torque_Nm": 40, "input_speed_rpm": 1500, "time_share": 0.3}])",
+       "/duty_cycle", "expected time shares summing to 1 (within 1e-6), found 0.8; would fit: each time_share divided by 0.8"},
+      {"/limits/life_h", "-1", "/limits/life_h", "expected"},
+  };
+  for (const auto& c : cases) {
+    json study = Example("lcr_min_size_life.json");
+    if (c.pointer == "/duty_cycle") study["load"].erase("input_speed_rpm");
+    study[json::json_pointer(c.pointer)] = json::parse(c.value);
+    camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-bad", c.path, c.words);
+  }
+  json study = Example("lcr_min_size_life.json");  // a limit without a speed
+  study["load"].erase("input_speed_rpm");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-nospeed", "/limits/life_h",
+                                       "expected load.input_speed_rpm (> 0) or a duty_cycle");
+  study = Example("lcr_min_size_life.json");  // a speed without the rollers' rating
+  study.erase("rollers");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-norating", "/rollers",
+                                       "expected {\"dynamic_rating_N\", \"reference_diameter_mm\"}");
+}
+
 }  // namespace
 }  // namespace camopt
