@@ -56,7 +56,7 @@ LcrSizingSpec LifeSpec(bool same_roller) {
 }
 
 TEST(LcrMinSizeLife, ScaledRatingsFollowIso281AndIso76) {
-  // Twice the diameter at the same length: 2^(29/27) = 2.1087...; the length doubled: 2^(7/9).
+  // Twice the diameter at the same length: 2^(29/27) = 2.1054; the length doubled: 2^(7/9) = 1.7145.
   EXPECT_NEAR(ScaledDynamicRating(5000.0, 10.0, 10.0, 20.0, 10.0), 5000.0 * std::exp(29.0 / 27.0 * std::log(2.0)),
               1e-9);
   EXPECT_NEAR(ScaledDynamicRating(5000.0, 10.0, 10.0, 10.0, 20.0), 5000.0 * std::exp(7.0 / 9.0 * std::log(2.0)), 1e-9);
