@@ -220,55 +220,44 @@ LifeResult RunLife(const Study& st, const std::string& file) {
                                  {"output_roller", lcr::LcrBearing::kOutputRoller, &spec.output_roller}};
   if (spec.eccentric) members.push_back({"eccentric_bearing", lcr::LcrBearing::kEccentric, &*spec.eccentric});
   LifeResult out;
-  // Per member: per line (equivalent load, largest load); revolutions per input revolution.
-  std::vector<std::vector<double>> line_p(members.size()), line_max(members.size());
-  std::vector<double> revolutions(members.size(), 0.0);
   double output_energy = 0.0, input_energy = 0.0;  // per unit time, up to the same constant
   const double ratio = std::abs(lcr::SpeedReductionRatio(r));
-  for (const DutyLine& line : spec.lines) {
-    lcr::LoadCase load = st.load;
-    load.output_torque_Nmm = line.output_torque_Nmm;
-    try {
+  try {
+    for (const DutyLine& line : spec.lines) {
       // The eccentric's load period also gives the mean input torque of the line.
+      lcr::LoadCase load = st.load;
+      load.output_torque_Nmm = line.output_torque_Nmm;
       const lcr::BearingLoadSamples ecc = lcr::SampleBearingLoad(r, st.material, load, st.load_model,
                                                                  lcr::LcrBearing::kEccentric, st.angle_steps);
       out.line_mean_input_torque_Nm.push_back(ecc.mean_input_torque_Nmm / 1000.0);
       output_energy += line.time_share * line.input_speed_rpm * line.output_torque_Nmm / ratio;
       input_energy += line.time_share * line.input_speed_rpm * ecc.mean_input_torque_Nmm;
-      for (size_t m = 0; m < members.size(); ++m) {
-        const lcr::BearingLoadSamples x =
-            members[m].bearing == lcr::LcrBearing::kEccentric
-                ? ecc
-                : lcr::SampleBearingLoad(r, st.material, load, st.load_model, members[m].bearing, st.angle_steps);
-        line_p[m].push_back(EquivalentLoad(x.load_N, x.spin_rate, members[m].rating->kind));
-        line_max[m].push_back(*std::max_element(x.load_N.begin(), x.load_N.end()));
-        revolutions[m] = Mean(x.spin_rate);  // kinematics only: the same for every line
-      }
-    } catch (const std::domain_error& e) {
-      throw StudyError(file + ": /reducer: infeasible geometry: " + e.what());
     }
-  }
-  out.efficiency_energy_mean = input_energy > 0 ? output_energy / input_energy : 0.0;
-  for (const DutyLine& line : spec.lines) out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
-  out.shortest_L10h = kInf;
-  for (size_t m = 0; m < members.size(); ++m) {
-    BearingLifeResult b;
-    b.name = members[m].name;
-    b.rating = *members[m].rating;
-    b.revolutions_per_input_revolution = revolutions[m];
-    b.line_equivalent_load_N = line_p[m];
-    // Line i turns t_i n_i R revolutions per unit time under its equivalent load P_i: one sample.
-    std::vector<DutyCycleLine<double>> lines;
-    for (size_t i = 0; i < spec.lines.size(); ++i)
-      lines.push_back({spec.lines[i].time_share, spec.lines[i].input_speed_rpm * revolutions[m], {line_p[m][i]}});
-    b.mean_speed_rpm = DutyCycleMeanSpeed(lines);
-    b.equivalent_load_N = DutyCycleEquivalentLoad(lines, b.rating.kind);
-    b.L10_Mrev = BasicRatingLifeMrev(b.rating.dynamic_N, b.equivalent_load_N, b.rating.kind);
-    b.L10h = DutyCycleLifeHours(b.rating.dynamic_N, lines, b.rating.kind);
-    b.max_load_N = *std::max_element(line_max[m].begin(), line_max[m].end());
-    if (b.rating.static_N > 0) b.s0 = StaticSafetyFactor(b.rating.static_N, line_max[m]);
-    if (b.L10h < out.shortest_L10h || out.shortest.empty()) out.shortest_L10h = b.L10h, out.shortest = b.name;
-    out.bearings.push_back(std::move(b));
+    out.efficiency_energy_mean = input_energy > 0 ? output_energy / input_energy : 0.0;
+    for (const DutyLine& line : spec.lines) out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
+    out.shortest_L10h = kInf;
+    for (const Member& m : members) {
+      // One home for a bearing's life over the duty cycle (model/lcr/life.h), shared with the
+      // dense check of lcr_min_size.
+      const lcr::LcrBearingLife l = lcr::BearingLifeOverDutyCycle(r, st.material, st.load, st.load_model, m.bearing,
+                                                                  m.rating->dynamic_N, m.rating->kind, spec.lines,
+                                                                  st.angle_steps);
+      BearingLifeResult b;
+      b.name = m.name;
+      b.rating = *m.rating;
+      b.revolutions_per_input_revolution = l.revolutions_per_input_revolution;
+      b.line_equivalent_load_N = l.line_equivalent_load_N;
+      b.mean_speed_rpm = l.mean_speed_rpm;
+      b.equivalent_load_N = l.equivalent_load_N;
+      b.L10_Mrev = l.L10_Mrev;
+      b.L10h = l.L10h;
+      b.max_load_N = l.max_load_N;
+      if (b.rating.static_N > 0) b.s0 = StaticSafetyFactor(b.rating.static_N, std::vector<double>{b.max_load_N});
+      if (b.L10h < out.shortest_L10h || out.shortest.empty()) out.shortest_L10h = b.L10h, out.shortest = b.name;
+      out.bearings.push_back(std::move(b));
+    }
+  } catch (const std::domain_error& e) {
+    throw StudyError(file + ": /reducer: infeasible geometry: " + e.what());
   }
   return out;
 }
