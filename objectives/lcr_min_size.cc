@@ -418,7 +418,8 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
   double LcrLimits::*field = nullptr;
   if (key == "contact_stress_MPa") field = &LcrLimits::contact_stress_MPa;
   if (key == "roller_load_N") field = &LcrLimits::roller_load_N;
-  if (!field || !std::isfinite(spec.limits.*field)) return std::nullopt;
+  if (key == "life_h") field = &LcrLimits::life_h;
+  if (!field || !std::isfinite(spec.limits.*field) || !(spec.limits.*field > 0)) return std::nullopt;
   LcrMinSizeOptions o = options;
   o.starts = 1;
   o.solver.max_evaluations = std::min(o.solver.max_evaluations, 300);
@@ -427,6 +428,19 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
     moved.limits.*field = limit;
     return SolveLcrMinSize(moved, o).converged;
   };
+  if (field == &LcrLimits::life_h) {
+    // A lower limit: halved until a design fits (at most 6 times), then bisected to 1%.
+    double hi = spec.limits.life_h, lo = hi / 2;
+    for (int i = 0; !fits(lo); ++i) {
+      if (i == 5) return std::nullopt;
+      hi = lo, lo /= 2;
+    }
+    while (hi - lo > 0.01 * hi) {
+      const double mid = 0.5 * (lo + hi);
+      (fits(mid) ? lo : hi) = mid;
+    }
+    return lo;
+  }
   double lo = spec.limits.*field, hi = 2 * lo;
   for (int i = 0; !fits(hi); ++i) {
     if (i == 5) return std::nullopt;

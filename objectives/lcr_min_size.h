@@ -129,7 +129,8 @@ std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const 
 
 /// The smallest value of an upper limit ("contact_stress_MPa" or "roller_load_N") at which spec
 /// has a converged design, the other limits held: doubled from the spec's value until a design fits
-/// (at most 6 times), then bisected to 1%. Empty when none fits within 64 times the limit. For a
+/// (at most 6 times), then bisected to 1%. Empty when none fits within 64 times the limit. For the
+/// lower limit "life_h", the largest value: halved likewise (down to 1/64), bisected to 1%. For a
 /// study where nothing fits: the value of the blocking limit that would admit this combination.
 std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                  const std::string& key);

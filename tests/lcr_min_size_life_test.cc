@@ -220,6 +220,31 @@ TEST(LcrMinSizeLife, CatalogueRatingsAndAnEntryWithoutC) {
                                        "expected the roller's dynamic load rating C [N] > 0");
 }
 
+// A life no design of the combination reaches: exit 3, the message names life_h as the blocking
+// limit and the largest life at which the combination fits (objectives::LimitToFit, halving and
+// bisecting to 1%), and the study with that life fits.
+TEST(LcrMinSizeLife, UnreachableLifeSaysWhichLifeWouldFit) {
+  json study = Example("lcr_min_size_life.json");
+  study["search"]["max_lobes"] = 14;  // one combination (12/13 + 14/15)
+  study["limits"]["life_h"] = 1e5;
+  study["optimizer"] = json::parse(R"({"backend": "nlopt_slsqp", "starts": 1})");  // 1 s instead of 40 (Ipopt)
+  int code = -1;
+  std::string err;
+  RunStudy(study, TempDir("lcr-min-size-life-unreachable"), &code, &err);
+  ASSERT_EQ(code, 3) << err;
+  const std::string fits = "12/13 + 14/15 fits with life_h = ";
+  const size_t at = err.find(fits);
+  ASSERT_NE(err.find("life_h blocks most"), std::string::npos) << err;
+  ASSERT_NE(at, std::string::npos) << err;
+  const double life = std::stod(err.substr(at + fits.size()));
+  EXPECT_GE(life, 5e4);
+  EXPECT_LT(life, 1e5);
+  study["limits"]["life_h"] = life;
+  const json res = RunStudy(study, TempDir("lcr-min-size-life-reachable"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_GE(res["best"]["life"]["shortest_L10h"].get<double>(), life);
+}
+
 TEST(LcrMinSizeLife, BadInputIsAClearErrorWithExitCode2) {
   struct Case {
     std::string pointer, value, path, words;
