@@ -197,7 +197,10 @@ void LifeMargins(const LcrSizingSpec& s, const lcr::Reducer<T>& r, std::vector<T
     for (const lcr::LcrDutyLine& l : life.lines)
       lines.push_back({l.time_share, T(l.input_speed_rpm) * revolutions,
                        {p_design * T(l.output_torque_Nmm / s.output_torque_Nmm)}});
-    return LifeMargin(rating, lines, kind, s.limits.life_h);
+    // No damage (every line without torque) is an infinite life: a large finite margin (e^50 times
+    // the required life) with zero derivative, so that the solvers see a finite row.
+    const T m = LifeMargin(rating, lines, kind, s.limits.life_h);
+    return std::isfinite(Value(m)) ? m : T(50.0);
   };
   for (lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
     const double period = Period(s, side);
