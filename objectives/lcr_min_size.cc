@@ -33,6 +33,7 @@ LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
   t.limits.roller_gap_mm += kLengthMargin_mm;
   t.limits.undercut_margin_mm += kLengthMargin_mm;
   if (t.limits.min_efficiency > 0) t.limits.min_efficiency *= 1 + kLimitMargin;
+  if (t.limits.life_h > 0) t.limits.life_h *= 1 + kLimitMargin;
   return t;
 }
 
@@ -122,6 +123,13 @@ Polished Polish(const LcrSizingSpec& exact, const LcrMinSizeOptions& o, std::vec
       tight.limits.min_efficiency += 1.5 * deficit;
       changed = true;
     }
+    // The life rows sample each cam period at samples_per_period angles (the eccentric bearing's
+    // long period more coarsely) against the check's 3600 per revolution: raise the required life
+    // by the shortfall (ratio), one and a half times over.
+    if (exact.limits.life_h > 0 && p.check->shortest_L10h < exact.limits.life_h) {
+      tight.limits.life_h *= std::pow(exact.limits.life_h / p.check->shortest_L10h, 1.5);
+      changed = true;
+    }
     if (!changed) return p;
   }
   p.rounds = o.max_polish_rounds;
@@ -140,7 +148,7 @@ double WorstRelativeViolation(const LcrDenseCheck& c) {
 }  // namespace
 
 double LcrViolation::excess() const {
-  const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N";
+  const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N";  // lower: the rest, life_h too
   return upper ? value - limit_value : limit_value - value;
 }
 
@@ -187,6 +195,39 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
   lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
   lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
   if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
+  if (spec.life) {
+    // Every rated bearing (docs/life.md, "Life as a sizing limit"): the lcr_analysis computation of
+    // the same design at `steps` samples per input revolution (rigid law, no cam weight).
+    const LcrLifeSpec& life = *spec.life;
+    struct Member {
+      const char* name;
+      lcr::LcrBearing bearing;
+    };
+    std::vector<Member> members = {{"input_roller", lcr::LcrBearing::kInputRoller},
+                                   {"output_roller", lcr::LcrBearing::kOutputRoller}};
+    if (life.eccentric) members.push_back({"eccentric_bearing", lcr::LcrBearing::kEccentric});
+    for (const Member& m : members) {
+      LcrBearingLifeCheck b;
+      b.name = m.name;
+      if (m.bearing == lcr::LcrBearing::kEccentric) {
+        b.ball = life.eccentric->ball;
+        b.dynamic_rating_N = life.eccentric->dynamic_N;
+        b.static_rating_N = life.eccentric->static_N;
+      } else {
+        const lcr::CamSide<double>& cam = m.bearing == lcr::LcrBearing::kInputRoller ? r.input : r.output;
+        b.dynamic_rating_N = LcrRollerRatingAt(life.roller, 2 * cam.roller_radius, cam.roller_length, false);
+        if (life.roller.static_N > 0)
+          b.static_rating_N = LcrRollerRatingAt(life.roller, 2 * cam.roller_radius, cam.roller_length, true);
+      }
+      const BearingKind kind = b.ball ? BearingKind::kBall : BearingKind::kRoller;
+      b.life = lcr::BearingLifeOverDutyCycle(r, spec.material, load, lcr::LoadModel::kRigid, m.bearing,
+                                             b.dynamic_rating_N, kind, life.lines, steps);
+      if (b.static_rating_N > 0 && b.life.max_load_N > 0) b.s0 = b.static_rating_N / b.life.max_load_N;
+      c.shortest_L10h = std::min(c.shortest_L10h, b.life.L10h);
+      c.life.push_back(std::move(b));
+    }
+    if (lim.life_h > 0) lower("life_h", c.shortest_L10h, lim.life_h);
+  }
   for (const lcr::DesignProblem& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
 
   if (near) {
@@ -348,6 +389,7 @@ std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const 
       {"roller_gap_mm", &LcrLimits::roller_gap_mm, gap <= l.roller_gap_mm + kBindingFraction},
       {"min_efficiency", &LcrLimits::min_efficiency,
        l.min_efficiency > 0 && c.mean_efficiency <= l.min_efficiency * (1 + kBindingFraction)},
+      {"life_h", &LcrLimits::life_h, l.life_h > 0 && c.shortest_L10h <= l.life_h * (1 + kBindingFraction)},
   };
   for (const Entry& e : entries) {
     if (!e.binds) continue;
@@ -376,7 +418,8 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
   double LcrLimits::*field = nullptr;
   if (key == "contact_stress_MPa") field = &LcrLimits::contact_stress_MPa;
   if (key == "roller_load_N") field = &LcrLimits::roller_load_N;
-  if (!field || !std::isfinite(spec.limits.*field)) return std::nullopt;
+  if (key == "life_h") field = &LcrLimits::life_h;
+  if (!field || !std::isfinite(spec.limits.*field) || !(spec.limits.*field > 0)) return std::nullopt;
   LcrMinSizeOptions o = options;
   o.starts = 1;
   o.solver.max_evaluations = std::min(o.solver.max_evaluations, 300);
@@ -385,6 +428,19 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
     moved.limits.*field = limit;
     return SolveLcrMinSize(moved, o).converged;
   };
+  if (field == &LcrLimits::life_h) {
+    // A lower limit: halved until a design fits (at most 6 times), then bisected to 1%.
+    double hi = spec.limits.life_h, lo = hi / 2;
+    for (int i = 0; !fits(lo); ++i) {
+      if (i == 5) return std::nullopt;
+      hi = lo, lo /= 2;
+    }
+    while (hi - lo > 0.01 * hi) {
+      const double mid = 0.5 * (lo + hi);
+      (fits(mid) ? lo : hi) = mid;
+    }
+    return lo;
+  }
   double lo = spec.limits.*field, hi = 2 * lo;
   for (int i = 0; !fits(hi); ++i) {
     if (i == 5) return std::nullopt;
@@ -427,6 +483,10 @@ Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<d
     add("roller_gap_mm", cams[k], a.roller_gap_mm[k], b.roller_gap_mm[k], lim.roller_gap_mm, false);
   }
   if (lim.min_efficiency > 0) add("min_efficiency", "mean over the cycle", a.mean_efficiency, b.mean_efficiency, lim.min_efficiency, false);
+  if (lim.life_h > 0)
+    for (size_t i = 0; i < a.life.size(); ++i)
+      if (std::isfinite(b.life[i].life.L10h))  // a bearing without load (+∞) has nothing to check
+        add("life_h", a.life[i].name.c_str(), a.life[i].life.L10h, b.life[i].life.L10h, lim.life_h, false);
   return v;
 }
 

@@ -39,12 +39,22 @@ namespace camopt::objectives {
 /// A limit exceeded at a design, named by the study's limit key.
 struct LcrViolation {
   std::string limit;      ///< "contact_stress_MPa", "roller_load_N", "undercut_margin_mm",
-                          ///< "roller_gap_mm", "min_efficiency"
+                          ///< "roller_gap_mm", "min_efficiency", "life_h"
   double value = 0.0;     ///< the design's worst value of that quantity (both cams)
   double limit_value = 0.0;
   /// By how much, in the limit's unit, positive: value − limit for upper limits, limit − value
   /// for lower ones.
   double excess() const;
+};
+
+/// One rated bearing's life at a design (docs/life.md, "Life as a sizing limit").
+struct LcrBearingLifeCheck {
+  std::string name;               ///< "input_roller", "output_roller", "eccentric_bearing"
+  bool ball = false;
+  double dynamic_rating_N = 0.0;  ///< C at the design's roller size
+  double static_rating_N = 0.0;   ///< C0; 0 when not given
+  lcr::LcrBearingLife life;       ///< loads, revolutions, L10h over the duty cycle
+  double s0 = kInf;               ///< C0 / largest load (+∞ without C0 or load)
 };
 
 /// A design's numbers on the dense grid (as lcr_analysis computes them) and the limits it breaks.
@@ -53,6 +63,11 @@ struct LcrDenseCheck {
   std::array<double, 2> max_stress_MPa{}, max_force_N{}, undercut_margin_mm{}, roller_gap_mm{},
       pitch_clearance_mm{};  ///< [0] input cam, [1] output cam
   double mean_efficiency = 0.0;
+  /// With spec.life: every rated bearing's life, `steps` samples per input revolution over its load
+  /// period and each duty line at its torque (lcr::BearingLifeOverDutyCycle, the rigid law);
+  /// shortest_L10h the least of them (+∞ without spec.life).
+  std::vector<LcrBearingLifeCheck> life;
+  double shortest_L10h = kInf;
   std::vector<LcrViolation> violations;
   std::vector<std::string> design_problems;  ///< lcr::CheckDesign, "field: message"
   bool ok() const { return violations.empty() && design_problems.empty(); }
@@ -104,17 +119,18 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
 
 /// d(outer diameter)/d(limit) [mm per unit of the limit] at a converged outcome, for every limit
 /// of spec that binds there (dense-check value within 0.1% of the limit; stress, load, undercut
-/// margin, roller gap, efficiency), named by the limit key. Computed by re-solving the polish from
+/// margin, roller gap, efficiency, life), named by the limit key. Computed by re-solving the polish from
 /// the optimum with the limit moved by ±0.5% (central difference; one-sided where the other side
 /// fails), for ±0.5% of max(|limit|, 1) in the limit's unit. Negative where raising the limit
 /// shrinks the reducer (stress, load: −0.046 mm/MPa on the ratio −90 example), positive where it
-/// grows it (undercut margin, gap, efficiency). Local: the lobe combination is kept.
+/// grows it (undercut margin, gap, efficiency, life_h in mm per hour). Local: the lobe combination is kept.
 std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                                const LcrMinSizeOutcome& outcome);
 
 /// The smallest value of an upper limit ("contact_stress_MPa" or "roller_load_N") at which spec
 /// has a converged design, the other limits held: doubled from the spec's value until a design fits
-/// (at most 6 times), then bisected to 1%. Empty when none fits within 64 times the limit. For a
+/// (at most 6 times), then bisected to 1%. Empty when none fits within 64 times the limit. For the
+/// lower limit "life_h", the largest value: halved likewise (down to 1/64), bisected to 1%. For a
 /// study where nothing fits: the value of the blocking limit that would admit this combination.
 std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                  const std::string& key);
@@ -123,7 +139,9 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
 /// model is the dense check on 2·steps input angles (the reported values), its error the change
 /// from `steps` angles (a refinement, not a subset: the finer set has every other angle new). Per
 /// cam: contact stress and roller force (upper limits, when finite), undercut margin and roller gap
-/// (lower limits, exact: no angle sampling); the mean efficiency when it is a limit. The line
+/// (lower limits, exact: no angle sampling); the mean efficiency when it is a limit; each rated
+/// bearing's L10h when life_h is a limit (lower, its error the change from `steps` samples per
+/// revolution to 2·steps). The line
 /// model's own tightening rounds are the polish rounds of SolveLcrMinSize (tracked peaks join until
 /// the dense check holds), so this check only reports.
 Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps = 3600);

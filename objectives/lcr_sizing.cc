@@ -11,6 +11,7 @@
 #include "model/contact/hertz.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
+#include "model/lcr/life.h"
 #include "model/lcr/profile.h"
 #include "objectives/lcr_robust.h"
 
@@ -52,6 +53,9 @@ double ForceReference(const LcrSizingSpec& s) {
   return std::isfinite(s.limits.roller_load_N) ? s.limits.roller_load_N : 1000.0;
 }
 
+// The life rows are present (header, LcrLimits::life_h).
+bool LifeRows(const LcrSizingSpec& s) { return s.limits.life_h > 0 && s.life.has_value(); }
+
 // Block sizes, in the order the evaluator writes them.
 std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   std::vector<std::pair<std::string, int>> sizes = {
@@ -70,6 +74,11 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
     sizes.push_back({"output_stress_margin", active ? int(s.active.stress[1].size()) : nb});
   }
   if (s.limits.min_efficiency > 0) sizes.push_back({"mean_efficiency", 1});
+  if (LifeRows(s)) {
+    sizes.push_back({"input_roller_life", 1});
+    sizes.push_back({"output_roller_life", 1});
+    if (s.life->eccentric) sizes.push_back({"eccentric_bearing_life", 1});
+  }
   std::vector<OutputBlock> blocks;
   int offset = 0;
   for (const auto& [name, size] : sizes) {
@@ -161,6 +170,70 @@ void ActiveSamples(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side s
       margin.push_back(SampleValue(s, r, side, PeakAngle(s, rd, side, a, true), a.roller, true));
 }
 
+// Samples of the eccentric bearing's load over its load period (lcr::LoadPeriodRad, no cam weight:
+// m_A/gcd(m_A, m_B) input cam periods): samples_per_period per input cam period, at most 8 periods'
+// worth (the dense check holds the result to the limit; objectives/lcr_min_size.h).
+int EccentricSamples(const LcrSizingSpec& s) {
+  const int periods = s.lobes_a / std::gcd(s.lobes_a, s.lobes_b);
+  return s.samples_per_period * std::min(periods, 8);
+}
+
+// The life margins ln(L10h / life_h) of the rated bearings (docs/life.md, "Life as a sizing
+// limit"): input roller, output roller, eccentric bearing (when rated).
+// Rollers: the forces and spin rates of every roller at the samples_per_period angles of the cam's
+// load period are roller 0's at uniform phases over its whole load period (roller k's phase is
+// roller 0's shifted by k/n of that period; model/lcr/life.h), so their revolution-weighted
+// p-mean (EquivalentLoad with the spin rates ψ'|ρ − r_r|/r_r as weights, both carrying
+// derivatives) is the equivalent load P of one period, and the mean spin rate R the revolutions per
+// input revolution. The rigid load law is linear in the output torque (forces.h: C_A, C_B ∝ T_o), so
+// duty line i has P_i = P·T_i/T_o at speed R n_i; Palmgren–Miner over the lines and C at the roller's
+// size give LifeMargin (model/common/bearing_life.h): one smooth row per bearing, in logarithms.
+template <typename T>
+void LifeMargins(const LcrSizingSpec& s, const lcr::Reducer<T>& r, std::vector<T>& out) {
+  const LcrLifeSpec& life = *s.life;
+  const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
+  auto margin = [&](const T& p_design, const T& revolutions, const T& rating, BearingKind kind) {
+    std::vector<DutyCycleLine<T>> lines;
+    for (const lcr::LcrDutyLine& l : life.lines)
+      lines.push_back({l.time_share, T(l.input_speed_rpm) * revolutions,
+                       {p_design * T(l.output_torque_Nmm / s.output_torque_Nmm)}});
+    // No damage (every line without torque) is an infinite life: a large finite margin (e^50 times
+    // the required life) with zero derivative, so that the solvers see a finite row.
+    const T m = LifeMargin(rating, lines, kind, s.limits.life_h);
+    return std::isfinite(Value(m)) ? m : T(50.0);
+  };
+  for (lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const double period = Period(s, side);
+    std::vector<T> loads, spin;
+    for (int i = 0; i < s.samples_per_period; ++i) {
+      const T theta(period * i / s.samples_per_period);
+      const lcr::SideLoads<T> sl = SideAt(s, r, side, Value(theta));
+      for (size_t k = 0; k < sl.force.size(); ++k) {
+        loads.push_back(sl.force[k]);
+        spin.push_back(lcr::RollerSpinRate(r, side, theta, int(k)));
+      }
+    }
+    T revolutions(0.0);
+    for (const T& w : spin) revolutions += w;
+    revolutions /= T(double(spin.size()));
+    const lcr::CamSide<T>& cam = r.side(side);
+    const T rating = LcrRollerRatingAt(life.roller, T(2.0) * cam.roller_radius, cam.roller_length, false);
+    out.push_back(margin(EquivalentLoad(loads, spin, BearingKind::kRoller), revolutions, rating, BearingKind::kRoller));
+  }
+  if (life.eccentric) {
+    // |G| over its load period (model/lcr/life.h); the bearing turns n_A/m_A per input revolution.
+    const double period = 2 * kPi * double(std::lcm(s.lobes_a, s.lobes_b)) / (double(s.rollers_a) * s.lobes_b);
+    const int n = EccentricSamples(s);
+    const lcr::Stages stages{true, false, true};
+    std::vector<T> loads;
+    for (int i = 0; i < n; ++i)
+      loads.push_back(lcr::AnalyzeAngle(r, s.material, load, T(period * i / n), stages).eccentric_load.norm());
+    const BearingKind kind = life.eccentric->ball ? BearingKind::kBall : BearingKind::kRoller;
+    out.push_back(margin(EquivalentLoad(loads, kind), T(double(s.rollers_a) / s.lobes_a), T(life.eccentric->dynamic_N),
+                         kind));
+  }
+}
+
 template <typename T>
 void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   const Layout l = LayoutOf(s);
@@ -185,7 +258,9 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   std::vector<T> force[2], margin[2];
   std::vector<bool> loaded[2];
   T efficiency(0.0);
+  std::vector<T> life;
   try {
+    if (LifeRows(s)) LifeMargins(s, r, life);
     if (s.form == LcrConstraintForm::kActiveSet) {
       ActiveSamples(s, r, lcr::Side::kInput, force[0], margin[0]);
       ActiveSamples(s, r, lcr::Side::kOutput, force[1], margin[1]);
@@ -233,6 +308,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     }
   }
   if (s.limits.min_efficiency > 0) y[o++] = efficiency;
+  for (const T& m : life) y[o++] = m;
 }
 
 }  // namespace
@@ -298,6 +374,12 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   }
   if (spec.limits.min_efficiency > 0)
     p.constraints.push_back({"mean_efficiency", spec.limits.min_efficiency, kInf, 0.1});
+  if (LifeRows(spec)) {
+    // ln(L10h / life_h) >= 0: order one (a factor e of life per unit), scale 1.
+    p.constraints.push_back({"input_roller_life", 0.0, kInf, 1.0});
+    p.constraints.push_back({"output_roller_life", 0.0, kInf, 1.0});
+    if (spec.life->eccentric) p.constraints.push_back({"eccentric_bearing_life", 0.0, kInf, 1.0});
+  }
   return p;
 }
 

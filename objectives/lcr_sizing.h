@@ -41,7 +41,9 @@
 #include <string>
 #include <vector>
 
+#include "model/common/bearing_life.h"
 #include "model/contact/hertz.h"
+#include "model/lcr/life.h"
 #include "model/lcr/reducer.h"
 #include "objectives/problem.h"
 
@@ -70,6 +72,32 @@ struct LcrLimits {
   double undercut_margin_mm = 0.0;
   double roller_gap_mm = 0.0;
   double min_efficiency = 0.0;  ///< mean efficiency over the cycle (fraction); 0: no constraint
+  /// Shortest ISO 281 basic rating life L10h of any rated bearing [h] over LcrLifeSpec's duty cycle;
+  /// 0: no constraint (docs/life.md, "Life as a sizing limit").
+  double life_h = 0.0;
+};
+
+/// The rollers' ratings. Fixed (a catalogue roller: reference_diameter_mm = 0) or scaled with the
+/// roller's diameter and length from a reference roller of the same design by ISO 281 / ISO 76
+/// (ScaledDynamicRating, ScaledStaticRating of model/common/bearing_life.h).
+struct LcrRollerRating {
+  double dynamic_N = 0.0;             ///< C [N] of the reference (or catalogue) roller, > 0
+  double static_N = 0.0;              ///< C0 [N]; 0: not given (no s0)
+  double reference_diameter_mm = 0.0; ///< D_ref; 0: the rating is the roller's own (not scaled)
+  double reference_length_mm = 0.0;   ///< L_ref
+};
+
+/// The eccentric bearing (fixed ratings, its size is not a sizing variable).
+struct LcrEccentricRating {
+  bool ball = false;  ///< ball (p = 3) or roller (p = 10/3) bearing
+  double dynamic_N = 0.0, static_N = 0.0;
+};
+
+/// What the bearing lives are computed from (docs/life.md): the duty cycle and the ratings.
+struct LcrLifeSpec {
+  std::vector<lcr::LcrDutyLine> lines;  ///< time shares summing to 1
+  LcrRollerRating roller;
+  std::optional<LcrEccentricRating> eccentric;
 };
 
 /// One continuous sizing problem.
@@ -99,7 +127,20 @@ struct LcrSizingSpec {
   /// Tolerances and the rule by which the force, stress and undercut rows hold across them
   /// (objectives/lcr_robust.h); null: the nominal design. Shared, immutable, by every copy of a spec.
   std::shared_ptr<const LcrRobustRule> robust;
+  /// The duty cycle and ratings of the bearing lives; with limits.life_h > 0 the life rows.
+  std::optional<LcrLifeSpec> life;
 };
+
+/// The roller's dynamic (static = false) or static rating [N] at roller diameter d and length L
+/// [mm]: LcrRollerRating's fixed value, or scaled from its reference roller.
+template <typename T>
+T LcrRollerRatingAt(const LcrRollerRating& rating, const T& diameter_mm, const T& length_mm, bool static_rating) {
+  const double c = static_rating ? rating.static_N : rating.dynamic_N;
+  if (!(rating.reference_diameter_mm > 0)) return T(c);
+  return static_rating
+             ? ScaledStaticRating(c, rating.reference_diameter_mm, rating.reference_length_mm, diameter_mm, length_mm)
+             : ScaledDynamicRating(c, rating.reference_diameter_mm, rating.reference_length_mm, diameter_mm, length_mm);
+}
 
 /// The Hertz capacity margin s = (R' − F/c)/r_r of the header for a roller of radius r_r [mm] and
 /// contact length L [mm] under force F [N] at pitch-curve curvature κ [1/mm].

@@ -174,40 +174,12 @@ BearingRating ParseRating(const Node& node, BearingKind kind, const std::string&
 
 // "load.input_speed_rpm" or "duty_cycle" (docs/life.md); nullopt when neither is given.
 std::optional<LifeSpec> ParseLife(const Node& root, const lcr::LoadCase& load) {
-  const bool speed = root.Has("load") && root["load"].Has("input_speed_rpm");
-  const bool duty = root.Has("duty_cycle");
-  if (!speed && !duty) return std::nullopt;
+  std::string why;
+  std::optional<std::vector<lcr::LcrDutyLine>> lines = ParseDutyCycle(root, load.output_torque_Nmm, &why);
+  if (!lines) return std::nullopt;
   LifeSpec life;
-  if (speed && duty)
-    root["load"]["input_speed_rpm"].Fail("no input_speed_rpm when a \"duty_cycle\" is given (one or the other)");
-  if (speed) {
-    life.lines.push_back({load.output_torque_Nmm, root["load"]["input_speed_rpm"].Positive(), 1.0});
-  } else {
-    const Node dc = root["duty_cycle"];
-    const std::vector<Node> items = dc.Elements();
-    if (items.empty()) dc.Fail("a non-empty array of duty-cycle lines");
-    double share_sum = 0.0, speed_max = 0.0;
-    for (const Node& item : items) {
-      item.CheckKnownFields({"output_torque_Nm", "input_speed_rpm", "time_share"});
-      DutyLine line;
-      line.output_torque_Nmm = item["output_torque_Nm"].NonNegative() * 1000.0;
-      line.input_speed_rpm = item["input_speed_rpm"].NonNegative();
-      line.time_share = item["time_share"].Positive();
-      if (line.time_share > 1.0) item["time_share"].Fail("a share in (0, 1]");
-      share_sum += line.time_share;
-      speed_max = std::max(speed_max, line.input_speed_rpm);
-      life.lines.push_back(line);
-    }
-    if (!(std::abs(share_sum - 1.0) <= 1e-6))
-      throw StudyError(dc.file() + ": " + dc.path() + ": expected time shares summing to 1 (within 1e-6), found " +
-                           Format(share_sum, 10), dc.file(), dc.path(), "time shares summing to 1 (within 1e-6)",
-                       Format(share_sum, 10));
-    if (!(speed_max > 0))
-      dc.Fail("at least one line with input_speed_rpm > 0 (no revolutions, no rating life)");
-    for (DutyLine& line : life.lines) line.time_share /= share_sum;  // exactly 1 for Palmgren–Miner
-    life.from_duty_cycle = true;
-  }
-  const std::string why = speed ? "a life is asked: load.input_speed_rpm is given" : "a life is asked: duty_cycle is given";
+  life.lines = std::move(*lines);
+  life.from_duty_cycle = root.Has("duty_cycle");
   const Node reducer = root["reducer"];
   life.input_roller = ParseRating(reducer["input"], BearingKind::kRoller, why);
   life.output_roller = ParseRating(reducer["output"], BearingKind::kRoller, why);
@@ -248,55 +220,44 @@ LifeResult RunLife(const Study& st, const std::string& file) {
                                  {"output_roller", lcr::LcrBearing::kOutputRoller, &spec.output_roller}};
   if (spec.eccentric) members.push_back({"eccentric_bearing", lcr::LcrBearing::kEccentric, &*spec.eccentric});
   LifeResult out;
-  // Per member: per line (equivalent load, largest load); revolutions per input revolution.
-  std::vector<std::vector<double>> line_p(members.size()), line_max(members.size());
-  std::vector<double> revolutions(members.size(), 0.0);
   double output_energy = 0.0, input_energy = 0.0;  // per unit time, up to the same constant
   const double ratio = std::abs(lcr::SpeedReductionRatio(r));
-  for (const DutyLine& line : spec.lines) {
-    lcr::LoadCase load = st.load;
-    load.output_torque_Nmm = line.output_torque_Nmm;
-    try {
+  try {
+    for (const DutyLine& line : spec.lines) {
       // The eccentric's load period also gives the mean input torque of the line.
+      lcr::LoadCase load = st.load;
+      load.output_torque_Nmm = line.output_torque_Nmm;
       const lcr::BearingLoadSamples ecc = lcr::SampleBearingLoad(r, st.material, load, st.load_model,
                                                                  lcr::LcrBearing::kEccentric, st.angle_steps);
       out.line_mean_input_torque_Nm.push_back(ecc.mean_input_torque_Nmm / 1000.0);
       output_energy += line.time_share * line.input_speed_rpm * line.output_torque_Nmm / ratio;
       input_energy += line.time_share * line.input_speed_rpm * ecc.mean_input_torque_Nmm;
-      for (size_t m = 0; m < members.size(); ++m) {
-        const lcr::BearingLoadSamples x =
-            members[m].bearing == lcr::LcrBearing::kEccentric
-                ? ecc
-                : lcr::SampleBearingLoad(r, st.material, load, st.load_model, members[m].bearing, st.angle_steps);
-        line_p[m].push_back(EquivalentLoad(x.load_N, x.spin_rate, members[m].rating->kind));
-        line_max[m].push_back(*std::max_element(x.load_N.begin(), x.load_N.end()));
-        revolutions[m] = Mean(x.spin_rate);  // kinematics only: the same for every line
-      }
-    } catch (const std::domain_error& e) {
-      throw StudyError(file + ": /reducer: infeasible geometry: " + e.what());
     }
-  }
-  out.efficiency_energy_mean = input_energy > 0 ? output_energy / input_energy : 0.0;
-  for (const DutyLine& line : spec.lines) out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
-  out.shortest_L10h = kInf;
-  for (size_t m = 0; m < members.size(); ++m) {
-    BearingLifeResult b;
-    b.name = members[m].name;
-    b.rating = *members[m].rating;
-    b.revolutions_per_input_revolution = revolutions[m];
-    b.line_equivalent_load_N = line_p[m];
-    // Line i turns t_i n_i R revolutions per unit time under its equivalent load P_i: one sample.
-    std::vector<DutyCycleLine<double>> lines;
-    for (size_t i = 0; i < spec.lines.size(); ++i)
-      lines.push_back({spec.lines[i].time_share, spec.lines[i].input_speed_rpm * revolutions[m], {line_p[m][i]}});
-    b.mean_speed_rpm = DutyCycleMeanSpeed(lines);
-    b.equivalent_load_N = DutyCycleEquivalentLoad(lines, b.rating.kind);
-    b.L10_Mrev = BasicRatingLifeMrev(b.rating.dynamic_N, b.equivalent_load_N, b.rating.kind);
-    b.L10h = DutyCycleLifeHours(b.rating.dynamic_N, lines, b.rating.kind);
-    b.max_load_N = *std::max_element(line_max[m].begin(), line_max[m].end());
-    if (b.rating.static_N > 0) b.s0 = StaticSafetyFactor(b.rating.static_N, line_max[m]);
-    if (b.L10h < out.shortest_L10h || out.shortest.empty()) out.shortest_L10h = b.L10h, out.shortest = b.name;
-    out.bearings.push_back(std::move(b));
+    out.efficiency_energy_mean = input_energy > 0 ? output_energy / input_energy : 0.0;
+    for (const DutyLine& line : spec.lines) out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
+    out.shortest_L10h = kInf;
+    for (const Member& m : members) {
+      // One home for a bearing's life over the duty cycle (model/lcr/life.h), shared with the
+      // dense check of lcr_min_size.
+      const lcr::LcrBearingLife l = lcr::BearingLifeOverDutyCycle(r, st.material, st.load, st.load_model, m.bearing,
+                                                                  m.rating->dynamic_N, m.rating->kind, spec.lines,
+                                                                  st.angle_steps);
+      BearingLifeResult b;
+      b.name = m.name;
+      b.rating = *m.rating;
+      b.revolutions_per_input_revolution = l.revolutions_per_input_revolution;
+      b.line_equivalent_load_N = l.line_equivalent_load_N;
+      b.mean_speed_rpm = l.mean_speed_rpm;
+      b.equivalent_load_N = l.equivalent_load_N;
+      b.L10_Mrev = l.L10_Mrev;
+      b.L10h = l.L10h;
+      b.max_load_N = l.max_load_N;
+      if (b.rating.static_N > 0) b.s0 = StaticSafetyFactor(b.rating.static_N, std::vector<double>{b.max_load_N});
+      if (b.L10h < out.shortest_L10h || out.shortest.empty()) out.shortest_L10h = b.L10h, out.shortest = b.name;
+      out.bearings.push_back(std::move(b));
+    }
+  } catch (const std::domain_error& e) {
+    throw StudyError(file + ": /reducer: infeasible geometry: " + e.what());
   }
   return out;
 }

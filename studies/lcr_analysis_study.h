@@ -13,6 +13,7 @@
 #include "model/common/material.h"
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
+#include "model/lcr/life.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
@@ -32,10 +33,8 @@ struct BearingRating {
   BearingKind kind = BearingKind::kRoller;
 };
 
-/// One line of the duty cycle, in model units.
-struct DutyLine {
-  double output_torque_Nmm = 0.0, input_speed_rpm = 0.0, time_share = 1.0;
-};
+/// One line of the duty cycle, in model units (studies/lcr_input.h ParseDutyCycle).
+using DutyLine = lcr::LcrDutyLine;
 
 /// The bearing life asked by "load.input_speed_rpm" (one line at the load's torque) or
 /// "duty_cycle" (docs/life.md).

@@ -32,20 +32,67 @@ std::array<double, 2> PositiveRange(const Node& n) {
   return {lo, hi};
 }
 
-std::vector<CatalogueRoller> ParseCatalogue(const Node& n) {
+// `life_why`: non-empty when a life is asked (then every entry needs its C).
+std::vector<CatalogueRoller> ParseCatalogue(const Node& n, const std::string& life_why) {
   std::vector<CatalogueRoller> out;
   const std::vector<Node> items = n.Elements();
   if (items.empty()) n.Fail("a non-empty list of rollers");
   for (const Node& item : items) {
-    item.CheckKnownFields({"name", "diameter_mm", "length_mm", "load_limit_N"});
+    item.CheckKnownFields({"name", "diameter_mm", "length_mm", "load_limit_N", "dynamic_rating_N", "static_rating_N"});
     CatalogueRoller r;
     r.name = item.StringOr("name", "roller " + std::to_string(out.size() + 1));
     r.diameter_mm = item["diameter_mm"].Positive();
     r.length_mm = item["length_mm"].Positive();
     r.load_limit_N = item["load_limit_N"].Positive();
+    if (!life_why.empty() && !item.Has("dynamic_rating_N")) {
+      const std::string path = item.path() + "/dynamic_rating_N";
+      const std::string expected = "the roller's dynamic load rating C [N] > 0, as its catalogue gives it (" + life_why + ")";
+      throw StudyError(item.file() + ": " + path + ": expected " + expected + ", found nothing; would fit: \"dynamic_rating_N\" "
+                           "(and \"static_rating_N\" for s0) on every catalogue entry, or no speed and no life limit",
+                       item.file(), path, expected, "nothing");
+    }
+    r.dynamic_rating_N = item.PositiveOr("dynamic_rating_N", 0.0);
+    r.static_rating_N = item.PositiveOr("static_rating_N", 0.0);
     out.push_back(r);
   }
   return out;
+}
+
+// The life of the sizing (docs/life.md, "Life as a sizing limit"): the duty cycle, the rollers'
+// ratings ("rollers" without a catalogue: a reference roller whose rating scales with the sized
+// diameter; a catalogue: each entry's own) and the optional "eccentric_bearing". nullopt when no
+// speed and no duty cycle is given.
+std::optional<objectives::LcrLifeSpec> ParseLife(const Node& root, const objectives::LcrSizingSpec& b,
+                                                 bool catalogue, const std::vector<lcr::LcrDutyLine>* lines,
+                                                 const std::string& why) {
+  // The ratings' fields are checked whenever given; they are used with a speed or a duty cycle.
+  if (catalogue && root.Has("rollers"))
+    root["rollers"].FailWith("no \"rollers\" ratings with a roller catalogue (each catalogue entry gives its "
+                             "dynamic_rating_N and static_rating_N)");
+  objectives::LcrLifeSpec life;
+  if (root.Has("rollers")) {
+    const Node r = root["rollers"];
+    r.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "reference_diameter_mm", "reference_length_mm"});
+    life.roller.dynamic_N = r["dynamic_rating_N"].Positive();
+    life.roller.static_N = r.PositiveOr("static_rating_N", 0.0);
+    life.roller.reference_diameter_mm = r["reference_diameter_mm"].Positive();
+    life.roller.reference_length_mm = r.PositiveOr("reference_length_mm", b.roller_length_mm);
+  } else if (lines && !catalogue) {
+    const std::string path = "/rollers";
+    const std::string expected = "{\"dynamic_rating_N\", \"reference_diameter_mm\"} (the rating of a reference roller, "
+                                 "scaled with the sized roller diameter; " + why + ")";
+    throw StudyError(root.file() + ": " + path + ": expected " + expected +
+                         ", found nothing; would fit: e.g. \"rollers\": {\"dynamic_rating_N\": 2700, "
+                         "\"reference_diameter_mm\": 10} (the catalogue C of a 10 mm roller of the study's length)",
+                     root.file(), path, expected, "nothing");
+  }
+  if (root.Has("eccentric_bearing")) {
+    const EccentricBearingRating e = ParseEccentricBearing(root["eccentric_bearing"]);
+    life.eccentric = objectives::LcrEccentricRating{e.ball, e.dynamic_N, e.static_N};
+  }
+  if (!lines) return std::nullopt;
+  life.lines = *lines;
+  return life;
 }
 
 std::string ComboName(const objectives::LobeCombination& c) {
@@ -72,6 +119,49 @@ nlohmann::json SideJson(const lcr::CamSide<double>& c) {
 
 // A number that may be +inf (the stress of an undercut contact): null in JSON.
 nlohmann::json MaybeFinite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// The lives of a design (docs/life.md, "Life as a sizing limit"): `<bearing>_L10h` per bearing,
+// shortest_L10h, and a table per element (load, C, L10h, s0, pass/fail against life_h).
+nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives::LcrDenseCheck& k) {
+  nlohmann::json lj;
+  const double limit = spec.limits.life_h;
+  lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
+  lj["shortest_L10h"] = MaybeFinite(k.shortest_L10h);
+  const auto shortest = std::min_element(k.life.begin(), k.life.end(),
+                                          [](const auto& a, const auto& b) { return a.life.L10h < b.life.L10h; });
+  lj["shortest_bearing"] = shortest->name;
+  for (const auto& b : k.life) lj[b.name + "_L10h"] = MaybeFinite(b.life.L10h);
+  nlohmann::json lines = nlohmann::json::array();
+  for (const lcr::LcrDutyLine& l : spec.life->lines)
+    lines.push_back({{"output_torque_Nm", l.output_torque_Nmm / 1000.0},
+                     {"input_speed_rpm", l.input_speed_rpm},
+                     {"time_share", l.time_share}});
+  lj["duty_cycle"] = lines;
+  nlohmann::json table = nlohmann::json::array();
+  for (const auto& b : k.life) {
+    nlohmann::json e;
+    e["element"] = b.name;
+    e["kind"] = b.ball ? "ball" : "roller";
+    e["equivalent_load_N"] = b.life.equivalent_load_N;
+    e["max_load_N"] = b.life.max_load_N;
+    e["revolutions_per_input_revolution"] = b.life.revolutions_per_input_revolution;
+    e["dynamic_rating_N"] = b.dynamic_rating_N;
+    e["L10h"] = MaybeFinite(b.life.L10h);
+    if (b.static_rating_N > 0) {
+      e["static_rating_N"] = b.static_rating_N;
+      e["s0"] = MaybeFinite(b.s0);
+    }
+    e["pass"] = limit > 0 ? nlohmann::json(b.life.L10h >= limit) : nlohmann::json(nullptr);
+    table.push_back(e);
+  }
+  lj["table"] = table;
+  lj["rating_rule"] = spec.life->roller.reference_diameter_mm > 0
+                          ? "roller C = C_ref (d/d_ref)^(29/27) (L/L_ref)^(7/9) (ISO 281:2007 6.1.1), C0 = C0_ref (d/d_ref)(L/L_ref) (ISO 76)"
+                          : "roller C, C0 as the catalogue gives them";
+  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner), loads of the rigid law "
+                "revolution-weighted over each bearing's load period, computed as lcr_analysis does (docs/life.md)";
+  return lj;
+}
 
 std::string StatusOf(const Candidate& c) {
   if (c.feasible()) return "converged";
@@ -120,6 +210,7 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
     j["max_contact_stress_MPa"] = std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]);
     j["max_roller_force_N"] = std::max(k.max_force_N[0], k.max_force_N[1]);
     j["undercut_margin_mm"] = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
+    if (!k.life.empty()) j["shortest_L10h"] = MaybeFinite(k.shortest_L10h);
   } else if (o.design) {
     // Not a result: the point where the search came closest, and what it breaks there.
     j["closest_point"] = {{"eccentricity_mm", o.design->eccentricity},
@@ -198,7 +289,8 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "target", "search", "variables", "fixed", "limits",
-                         "material", "load", "optimizer", "roller_catalogue", "contact", "tolerances", "monte_carlo", "robust"});
+                         "material", "load", "optimizer", "roller_catalogue", "contact", "tolerances", "monte_carlo", "robust",
+                         "duty_cycle", "rollers", "eccentric_bearing"});
   Study s;
   s.name = root.StringOr("name", "");
   const Node target = root["target"];
@@ -209,6 +301,10 @@ Study Parse(const Node& root) {
     ratio.Fail("a whole-number speed ratio with 2 <= |ratio| <= 1e6");
   s.ratio = static_cast<long>(rv);
   s.output_torque_Nmm = target["output_torque_Nm"].Positive() * 1000.0;
+  if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient", "overload_torque_Nm", "input_speed_rpm"});
+  // A life (docs/life.md): a speed or a duty cycle; its ratings are read below.
+  std::string life_why;
+  const std::optional<std::vector<lcr::LcrDutyLine>> duty = ParseDutyCycle(root, s.output_torque_Nmm, &life_why);
 
   if (root.Has("search")) {
     const Node search = root["search"];
@@ -250,9 +346,9 @@ Study Parse(const Node& root) {
       std::filesystem::path p(file.String());
       if (p.is_relative()) p = std::filesystem::path(root.file()).parent_path() / p;
       const nlohmann::json loaded = LoadStudyFile(p.string());
-      s.catalogue = ParseCatalogue(Node(&loaded, p.string(), ""));
+      s.catalogue = ParseCatalogue(Node(&loaded, p.string(), ""), life_why);
     } else {
-      s.catalogue = ParseCatalogue(cat);
+      s.catalogue = ParseCatalogue(cat, life_why);
     }
   } else {
     b.roller_length_mm = fixed["roller_length_mm"].Positive();
@@ -265,15 +361,19 @@ Study Parse(const Node& root) {
     fixed["roller_length_mm"].FailWith("no fixed roller length with a roller catalogue (the catalogue gives the lengths)");
 
   const Node limits = root["limits"];
-  limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "undercut_margin_mm", "roller_gap_mm", "min_efficiency"});
+  limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "undercut_margin_mm", "roller_gap_mm", "min_efficiency",
+                           "life_h"});
   b.limits.contact_stress_MPa = limits.PositiveOr("contact_stress_MPa", kInf);
   b.limits.roller_load_N = limits.PositiveOr("roller_load_N", kInf);
   b.limits.undercut_margin_mm = limits.NonNegativeOr("undercut_margin_mm", 0.0);
   b.limits.roller_gap_mm = limits.NonNegativeOr("roller_gap_mm", 0.0);
   if (limits.Has("min_efficiency")) b.limits.min_efficiency = limits["min_efficiency"].NumberIn(0.0, 0.999);
+  b.limits.life_h = limits.PositiveOr("life_h", 0.0);
+  if (b.limits.life_h > 0 && !duty)
+    limits["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a duty_cycle "
+                              "beside limits.life_h, found neither");
   if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   b.material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
-  if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient", "overload_torque_Nm"});
   b.output_torque_Nmm = s.output_torque_Nmm;
   b.friction_coefficient = root.Has("load") && root["load"].Has("friction_coefficient")
                                ? root["load"]["friction_coefficient"].NumberIn(0, 1)
@@ -317,7 +417,14 @@ Study Parse(const Node& root) {
     throw StudyError(root.file() + ": /target/speed_ratio: no lobe/roller combination with at most " +
                      std::to_string(s.max_lobes) + " lobes gives the ratio " + std::to_string(s.ratio) +
                      " exactly");
+  b.life = ParseLife(root, b, !s.catalogue.empty(), duty ? &*duty : nullptr, life_why);
   ParseRobust(root, s);
+  // The life rows and checks are those of the line model's nominal design (objectives/lcr_sizing.h).
+  if (b.life && (s.contact3d || s.robust))
+    (duty->size() == 1 && !root.Has("duty_cycle") ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
+        .FailWith(std::string("bearing lives are sized on the line contact model without tolerances: no speed or duty "
+                              "cycle together with ") + (s.contact3d ? "a 3D \"contact\"" : "\"robust\"") +
+                  " (remove one of the two)");
   // The robust rows (objectives/lcr_robust.h) linearise the line-model stress margin; with the
   // finite-length contact they would check a stress the 3D constraint does not use.
   if (s.robust && s.contact3d)
@@ -355,6 +462,7 @@ Result Run(const Study& s, const RunContext& ctx) {
       c.spec.fixed_roller_diameter_mm = r.diameter_mm;
       c.spec.roller_length_mm = r.length_mm;
       c.spec.limits.roller_load_N = std::min(c.spec.limits.roller_load_N, r.load_limit_N);
+      if (c.spec.life) c.spec.life->roller = {r.dynamic_rating_N, r.static_rating_N, 0.0, 0.0};  // the catalogue's own
     }
     if (s.contact3d)
       SolveCandidate3D(s, c);
@@ -462,6 +570,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   b["binding"] = Unique(best.outcome.result.active);
   b["limit_sensitivity"] = nlohmann::json::object();
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
+  if (!k.life.empty()) b["life"] = LifeJson(best.spec, k);
   res["best"] = b;
   if (s.contact3d) AddContact3DJson(s, result, res);
   if (s.robust) RobustJson(s, result, res);
@@ -486,6 +595,29 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     if (std::isfinite(best.spec.limits.roller_load_N)) lim["roller_load_N"] = best.spec.limits.roller_load_N;
     a["limits"] = lim;
     a["analysis"] = {{"angle_steps", s.options.dense_steps}};
+    if (best.spec.life && best.outcome.check) {
+      // The speed or duty cycle and the ratings at the design's roller size: lcr_analysis then
+      // computes the same lives (docs/life.md).
+      const auto& life = *best.spec.life;
+      if (life.lines.size() == 1 && life.lines[0].output_torque_Nmm == s.output_torque_Nmm) {
+        a["load"]["input_speed_rpm"] = life.lines[0].input_speed_rpm;
+      } else {
+        nlohmann::json lines = nlohmann::json::array();
+        for (const lcr::LcrDutyLine& l : life.lines)
+          lines.push_back({{"output_torque_Nm", l.output_torque_Nmm / 1000.0},
+                           {"input_speed_rpm", l.input_speed_rpm},
+                           {"time_share", l.time_share}});
+        a["duty_cycle"] = lines;
+      }
+      for (const auto& b : best.outcome.check->life) {
+        nlohmann::json& where = b.name == "input_roller"    ? a["reducer"]["input"]
+                                : b.name == "output_roller" ? a["reducer"]["output"]
+                                                            : a["reducer"]["eccentric_bearing"];
+        where["dynamic_rating_N"] = b.dynamic_rating_N;
+        if (b.static_rating_N > 0) where["static_rating_N"] = b.static_rating_N;
+        if (b.name == "eccentric_bearing") where["kind"] = b.ball ? "ball" : "roller";
+      }
+    }
     if (s.contact3d) AddContact3DAnalysis(s, best, a);
     out.AddJson("best_lcr_analysis.json", a);
   } else {
@@ -544,7 +676,8 @@ std::string Summary(const Study& s, const Result& result) {
                          {"roller_load_N", "roller load limit", 10, "N"},
                          {"undercut_margin_mm", "undercut margin", 0.1, "mm"},
                          {"roller_gap_mm", "roller gap", 0.1, "mm"},
-                         {"min_efficiency", "efficiency limit", 0.01, ""}};
+                         {"min_efficiency", "efficiency limit", 0.01, ""},
+                         {"life_h", "life limit", 1000, "h"}};
   for (const Shown& sh : shown) {
     const auto it = result.limit_sensitivity.find(sh.key);
     if (it == result.limit_sensitivity.end()) continue;
@@ -603,6 +736,7 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"undercut margin", "/best/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
     {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
     {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
+    {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
     {"binding limits", "/best/binding", ""},
 });
 }  // namespace

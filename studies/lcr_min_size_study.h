@@ -27,6 +27,9 @@ namespace camopt::studies::lcr_min_size {
 struct CatalogueRoller {
   std::string name;
   double diameter_mm = 0, length_mm = 0, load_limit_N = 0;
+  /// The roller's ratings C and C0 [N] as the catalogue gives them (0: not given); C is required
+  /// when a life is asked (load.input_speed_rpm or duty_cycle).
+  double dynamic_rating_N = 0, static_rating_N = 0;
 };
 
 struct Study {

@@ -362,6 +362,14 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
     terms.push_back({40 * 5 * cells / (48.0 * 128.0), "/contact/grid",
                      "half_space verification on " + Num(cells) + " cells and four times as many"});
   }
+  // Bearing lives (docs/life.md): every dense check computes each rated bearing's life per duty
+  // line, one force analysis per angle of its load period (about a third of a unit per line and
+  // polish round of a start; a study's lines multiply it).
+  const json& duty = Sub(s, "duty_cycle");
+  if (duty.is_array() && duty.size() > 1)
+    terms.push_back({combos * starts * per_start * double(duty.size()), "/duty_cycle",
+                     Num(combos) + " candidates × " + Num(starts) + " starts × " + Num(double(duty.size())) +
+                         " duty-cycle lines (each line's bearing lives in every dense check)"});
   // When nothing fits, the message names the limit that would fit (objectives::LimitToFit: up to 13
   // solves of the closest combination, each up to 8 polish rounds of an infeasible problem, measured
   // at about 4 units a round and start); a converged result prices its binding limits with fewer

@@ -175,24 +175,25 @@ T EquivalentLoad(const std::vector<T>& loads_N, BearingKind kind) {
 /// the speed varies over the load cycle (an LCR roller rolling on its cam) each load counts by the
 /// revolutions turned under it, not by the time or input angle spent under it. With w_k = dφ/dθ at
 /// uniform θ_k the quadrature is EquivalentLoad's (the trapezoidal rule on the periodic w F^p).
-/// Equal weights give EquivalentLoad. Weights are data (double); loads may carry derivatives.
+/// Equal weights give EquivalentLoad. Loads and weights may carry derivatives (W = T: weights that
+/// depend on the design, as a roller's spin rate in a sizing) or the weights be data (W = double).
 /// @param loads_N F_k [N], finite, >= 0, at least one.  @param weights w_k, finite, >= 0, one per
 /// load, not all 0.
 /// @throws std::invalid_argument for mismatched sizes, a negative or non-finite load or weight, or
 /// weights that are all 0.
-template <typename T>
-T EquivalentLoad(const std::vector<T>& loads_N, const std::vector<double>& weights, BearingKind kind) {
+template <typename T, typename W>
+T EquivalentLoad(const std::vector<T>& loads_N, const std::vector<W>& weights, BearingKind kind) {
   using std::pow;
   bearing_life_internal::CheckLoads("loads_N", loads_N);
   if (weights.size() != loads_N.size())
     bearing_life_internal::Reject("weights.size()", "loads_N.size() (" + std::to_string(loads_N.size()) + ")",
                                   double(weights.size()));
-  double weight_sum = 0.0;
+  W weight_sum(0.0);
   for (size_t k = 0; k < weights.size(); ++k) {
     bearing_life_internal::CheckNonNegative("weights[" + std::to_string(k) + "]", weights[k]);
     weight_sum += weights[k];
   }
-  if (!(weight_sum > 0.0)) bearing_life_internal::Reject("the sum of weights", "> 0", weight_sum);
+  if (!(Value(weight_sum) > 0.0)) bearing_life_internal::Reject("the sum of weights", "> 0", Value(weight_sum));
   const double p = LifeExponent(kind);
   const double s = bearing_life_internal::LargestValue(loads_N);
   if (s == 0.0) return T(0.0);
@@ -289,6 +290,31 @@ T LifeMargin(const T& dynamic_rating_N, const std::vector<DutyCycleLine<T>>& lin
   const T r = bearing_life_internal::ScaledMinerDamageRate(lines, kind, &s);
   if (Value(r) == 0.0) return T(kInf);
   return LifeExponent(kind) * log(dynamic_rating_N / s) - log(r) - T(std::log(required_life_h));
+}
+
+/// The basic dynamic radial load rating of a roller scaled from a reference roller of the same
+/// design (internal geometry, material, make) by ISO 281:2007 §6.1.1 (radial roller bearings),
+/// C_r = b_m f_c (i L_we cos α)^(7/9) Z^(3/4) D_we^(29/27): with b_m, f_c, i, α and Z held,
+///   C = C_ref (D/D_ref)^(29/27) (L/L_ref)^(7/9).
+/// D and L stand for the rolling element's diameter and length; for a cam-follower roller they are
+/// the roller's outer diameter and length (its needles scale with it). Smooth in D and L.
+/// @param reference_rating_N C_ref [N], > 0.  @param reference_diameter_mm D_ref, > 0.
+/// @param reference_length_mm L_ref, > 0.  @param diameter_mm D, > 0.  @param length_mm L, > 0.
+template <typename T>
+T ScaledDynamicRating(double reference_rating_N, double reference_diameter_mm, double reference_length_mm,
+                      const T& diameter_mm, const T& length_mm) {
+  using std::pow;
+  return T(reference_rating_N) * pow(diameter_mm / reference_diameter_mm, 29.0 / 27.0) *
+         pow(length_mm / reference_length_mm, 7.0 / 9.0);
+}
+
+/// The basic static radial load rating scaled likewise by ISO 76:2006 (radial roller bearings),
+/// C_0r = 44 (1 − D_we cos α / D_pw) i Z L_we D_we cos α, with the factor (1 − D_we cos α / D_pw)
+/// held (D_pw grows with D_we):  C0 = C0_ref (D/D_ref)(L/L_ref).
+template <typename T>
+T ScaledStaticRating(double reference_rating_N, double reference_diameter_mm, double reference_length_mm,
+                     const T& diameter_mm, const T& length_mm) {
+  return T(reference_rating_N) * (diameter_mm / reference_diameter_mm) * (length_mm / reference_length_mm);
 }
 
 /// The static safety factor s0 = C0 / P0max (C0, P0 per ISO 76:2006), P0max the largest static

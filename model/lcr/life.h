@@ -23,11 +23,13 @@
 // load is sampled over its own period so that the p-mean is that of the long-run load.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
 
+#include "model/common/bearing_life.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/transmission_error.h"
 
@@ -79,15 +81,25 @@ inline double TurretSpeedRelativeToCam(const Reducer<double>& r, Side s) {
   return std::abs(turret - CamSpeedRatio(r));
 }
 
+/// Roller k's speed relative to its pin per unit input speed at input angle θ: ψ' |ρ − r_r| / r_r
+/// (see the file comment), over the scalar T (the sizing's rows differentiate it through e, r_d, r_r).
+/// ψ' is kinematic (lobe and roller counts only). |ρ − r_r| is smooth where ρ > r_r, which holds
+/// wherever the pitch curve does not loop round the roller (lcr::CheckDesign's pitch-point clearance).
+template <typename T>
+T RollerSpinRate(const Reducer<T>& r, Side s, const T& theta, int roller) {
+  using std::abs;
+  const CamSide<T>& c = r.side(s);
+  const T rho = (PitchPointOfCam(r, s, theta) - RollerCentres(r, s, theta)[size_t(roller)]).norm();
+  const T psi_prime(std::abs((s == Side::kInput ? 0.0 : OutputSpeedRatio(r)) - CamSpeedRatio(r)));
+  return psi_prime * abs(rho - c.roller_radius) / c.roller_radius;
+}
+
 /// The bearing's speed relative to its seat per unit input speed at input angle θ (for the
 /// rollers, roller 0 of the turret): ψ' |ρ − r_r| / r_r for a roller (see the file comment),
 /// n_A/m_A for the eccentric bearing.
 inline double BearingSpinRate(const Reducer<double>& r, LcrBearing b, double theta) {
   if (b == LcrBearing::kEccentric) return double(r.input.rollers) / r.input.lobes;
-  const Side s = b == LcrBearing::kInputRoller ? Side::kInput : Side::kOutput;
-  const CamSide<double>& c = r.side(s);
-  const double rho = (PitchPointOfCam(r, s, theta) - RollerCentres(r, s, theta)[0]).norm();
-  return TurretSpeedRelativeToCam(r, s) * std::abs(rho - c.roller_radius) / c.roller_radius;
+  return RollerSpinRate(r, b == LcrBearing::kInputRoller ? Side::kInput : Side::kOutput, theta, 0);
 }
 
 /// The input angle [rad] over which the bearing's load repeats (see the file comment): 2π for an
@@ -140,6 +152,52 @@ inline BearingLoadSamples SampleBearingLoad(const Reducer<double>& r, const Mate
     torque_sum += a.input_torque_Nmm;
   }
   out.mean_input_torque_Nmm = torque_sum / n;
+  return out;
+}
+
+/// One line of a duty cycle in model units: output torque, input speed, time share.
+struct LcrDutyLine {
+  double output_torque_Nmm = 0.0, input_speed_rpm = 0.0, time_share = 1.0;
+};
+
+/// A bearing's life over a duty cycle (docs/life.md, "LCR").
+struct LcrBearingLife {
+  double revolutions_per_input_revolution = 0.0;  ///< R, the mean spin rate over the load period
+  std::vector<double> line_equivalent_load_N;     ///< P_i, revolution-weighted over the load period
+  double equivalent_load_N = 0.0;                 ///< P of the duty cycle (DutyCycleEquivalentLoad)
+  double mean_speed_rpm = 0.0;                    ///< Σ t_i n_i R
+  double L10_Mrev = 0.0, L10h = 0.0;              ///< +∞ without load
+  double max_load_N = 0.0;                        ///< the largest load of any line (for s0)
+};
+
+/// The life of one bearing of r over the duty cycle: per line one force analysis per sample at the
+/// line's torque over the bearing's load period (SampleBearingLoad), the revolution-weighted
+/// equivalent load P_i, and Palmgren–Miner over the lines with speeds t_i n_i R
+/// (DutyCycleLifeHours of model/common/bearing_life.h). `load` gives friction and cam weight; its
+/// torque is replaced by each line's. The lines are checked as ValidateDutyCycle does.
+/// @throws std::domain_error when a turret cannot carry the torque; std::invalid_argument for bad lines.
+inline LcrBearingLife BearingLifeOverDutyCycle(const Reducer<double>& r, const Material& material, LoadCase load,
+                                               LoadModel model, LcrBearing b, double dynamic_rating_N,
+                                               BearingKind kind, const std::vector<LcrDutyLine>& lines,
+                                               int steps_per_revolution) {
+  LcrBearingLife out;
+  for (const LcrDutyLine& line : lines) {
+    load.output_torque_Nmm = line.output_torque_Nmm;
+    const BearingLoadSamples x = SampleBearingLoad(r, material, load, model, b, steps_per_revolution);
+    out.line_equivalent_load_N.push_back(EquivalentLoad(x.load_N, x.spin_rate, kind));
+    out.max_load_N = std::max(out.max_load_N, *std::max_element(x.load_N.begin(), x.load_N.end()));
+    double spin = 0.0;
+    for (double w : x.spin_rate) spin += w;
+    out.revolutions_per_input_revolution = spin / double(x.spin_rate.size());  // kinematic: every line alike
+  }
+  std::vector<DutyCycleLine<double>> d;
+  for (size_t i = 0; i < lines.size(); ++i)
+    d.push_back({lines[i].time_share, lines[i].input_speed_rpm * out.revolutions_per_input_revolution,
+                 {out.line_equivalent_load_N[i]}});
+  out.mean_speed_rpm = DutyCycleMeanSpeed(d);
+  out.equivalent_load_N = DutyCycleEquivalentLoad(d, kind);
+  out.L10_Mrev = BasicRatingLifeMrev(dynamic_rating_N, out.equivalent_load_N, kind);
+  out.L10h = DutyCycleLifeHours(dynamic_rating_N, d, kind);
   return out;
 }
 

@@ -1,0 +1,279 @@
+// Bearing life as a sizing limit of lcr_min_size (docs/life.md, "Life as a sizing limit"): the
+// rating scaled with roller size against its ISO 281 closed form, the life rows' exact gradients
+// against central differences, the rows against the dense computation of lcr_analysis, the sized
+// design's lives through lcr_analysis, and bad input.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "model/common/bearing_life.h"
+#include "model/lcr/life.h"
+#include "objectives/lcr_min_size.h"
+#include "objectives/lcr_sizing.h"
+#include "tests/test_util.h"
+
+namespace camopt {
+namespace {
+
+using camopt::testing::Example;
+using camopt::testing::ReadFile;
+using camopt::testing::RunCamopt;
+using camopt::testing::TempDir;
+using camopt::testing::WriteFile;
+using nlohmann::json;
+using objectives::LcrSizingSpec;
+
+// Central differences with step h = ∛ε·max(1, |x|) have truncation and rounding errors of order
+// ε^(2/3) ≈ 4e-11 times the scale of the function's third derivative and values; the rows are
+// O(1) (logarithms of life), so 1e-6 of max(1, |g|) leaves three decades for curvature.
+constexpr double kLifeRowGradientTol = 1e-6;
+// The rows sample each cam period at samples_per_period angles (every roller: 24·n samples over a
+// roller's period), the dense check 3600 per input revolution; the trapezoidal rule on a load that
+// leaves zero linearly errs by O(N^−13/3) in the p-mean (docs/life.md): below 1e-3 in ln L10h.
+constexpr double kRowAgainstDenseLogTol = 1e-3;
+
+// The ratio −90 example's best combination (12/13 + 14/15) with a life: two duty lines and an
+// eccentric ball bearing; the roller's rating scales from a 10 mm × 10 mm reference roller.
+LcrSizingSpec LifeSpec(bool same_roller) {
+  LcrSizingSpec s;
+  s.lobes_a = 12, s.rollers_a = 13, s.lobes_b = 14, s.rollers_b = 15;
+  s.output_torque_Nmm = 80e3;
+  s.friction_coefficient = 0.05;
+  s.same_roller = same_roller;
+  s.limits = {1500.0, 1050.0, 0.5, 1.0, 0.0, 20000.0};
+  objectives::LcrLifeSpec life;
+  life.lines = {{80e3, 1000.0, 0.7}, {40e3, 1500.0, 0.3}};
+  life.roller = {5000.0, 5500.0, 10.0, 10.0};
+  life.eccentric = objectives::LcrEccentricRating{true, 20000.0, 15000.0};
+  s.life = life;
+  return s;
+}
+
+TEST(LcrMinSizeLife, ScaledRatingsFollowIso281AndIso76) {
+  // Twice the diameter at the same length: 2^(29/27) = 2.1054; the length doubled: 2^(7/9) = 1.7145.
+  EXPECT_NEAR(ScaledDynamicRating(5000.0, 10.0, 10.0, 20.0, 10.0), 5000.0 * std::exp(29.0 / 27.0 * std::log(2.0)),
+              1e-9);
+  EXPECT_NEAR(ScaledDynamicRating(5000.0, 10.0, 10.0, 10.0, 20.0), 5000.0 * std::exp(7.0 / 9.0 * std::log(2.0)), 1e-9);
+  EXPECT_NEAR(ScaledDynamicRating(5000.0, 10.0, 10.0, 10.0, 10.0), 5000.0, 1e-12);
+  EXPECT_NEAR(ScaledStaticRating(5500.0, 10.0, 10.0, 5.0, 20.0), 5500.0, 1e-12);  // ½ · 2
+  // A catalogue roller's rating is its own (no reference roller): not scaled.
+  EXPECT_EQ(objectives::LcrRollerRatingAt(objectives::LcrRollerRating{3300.0, 3400.0, 0.0, 0.0}, 7.0, 9.0, false),
+            3300.0);
+}
+
+TEST(LcrMinSizeLife, LifeRowGradientsMatchCentralDifferences) {
+  for (bool same_roller : {true, false}) {
+    SCOPED_TRACE(same_roller ? "one roller diameter" : "a roller diameter per cam");
+    const LcrSizingSpec spec = LifeSpec(same_roller);
+    const objectives::Problem p = objectives::MakeLcrSizingProblem(spec);
+    const int n = p.num_vars(), m = p.evaluator->num_outputs();
+    std::vector<int> rows;
+    for (const auto& block : p.evaluator->blocks())
+      if (block.name.size() > 5 && block.name.substr(block.name.size() - 5) == "_life") rows.push_back(block.offset);
+    ASSERT_EQ(rows.size(), 3u);  // input roller, output roller, eccentric bearing
+    for (const std::vector<double>& x : objectives::LcrStartingPoints(spec, 3)) {
+      std::vector<double> y(m), jac(size_t(m) * n);
+      p.evaluator->EvalWithJacobian(x, y, jac);
+      for (int row : rows) ASSERT_TRUE(std::isfinite(y[row]));
+      for (int i = 0; i < n; ++i) {
+        const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[i]));
+        std::vector<double> xp = x, xm = x, yp(m), ym(m);
+        xp[i] += h, xm[i] -= h;
+        p.evaluator->Eval(xp, yp);
+        p.evaluator->Eval(xm, ym);
+        for (int row : rows) {
+          const double fd = (yp[row] - ym[row]) / (2 * h), g = jac[size_t(row) * n + i];
+          EXPECT_NEAR(g, fd, kLifeRowGradientTol * std::max(1.0, std::abs(fd)))
+              << "row " << row << ", variable " << p.variables[i].name;
+        }
+      }
+    }
+  }
+}
+
+TEST(LcrMinSizeLife, RowsAgreeWithTheDenseLifeOfLcrAnalysis) {
+  // The rows (every roller at 24 angles of the cam's period, torque-scaled lines) against the dense
+  // check (roller 0 over its own period at 3600 steps per revolution, one force analysis per line
+  // at its torque): two routes to ln(L10h / life_h).
+  const LcrSizingSpec spec = LifeSpec(true);
+  const objectives::Problem p = objectives::MakeLcrSizingProblem(spec);
+  const std::vector<double> x = objectives::LcrStartingPoints(spec, 1).front();
+  std::vector<double> y(p.evaluator->num_outputs());
+  p.evaluator->Eval(x, y);
+  const objectives::LcrDenseCheck c = objectives::DenseCheck(spec, objectives::LcrDesign(spec, x));
+  ASSERT_EQ(c.life.size(), 3u);
+  for (const auto& b : c.life) {
+    int offset = -1;
+    for (const auto& block : p.evaluator->blocks())
+      if (block.name == b.name + "_life") offset = block.offset;
+    ASSERT_GE(offset, 0) << b.name;
+    EXPECT_NEAR(y[offset], std::log(b.life.L10h / spec.limits.life_h), kRowAgainstDenseLogTol) << b.name;
+  }
+  // The eccentric bearing turns n_A/m_A per input revolution (model/lcr/life.h).
+  EXPECT_NEAR(c.life[2].life.revolutions_per_input_revolution, 13.0 / 12.0, 1e-12);
+}
+
+// Runs a study given as json in dir; returns result.json (null json on a non-zero exit).
+json RunStudy(const json& study, const std::filesystem::path& dir, int* exit_code, std::string* stderr_text = nullptr) {
+  const auto file = dir / "study.json";
+  WriteFile(file, study.dump());
+  const auto r = RunCamopt("run " + file.string() + " --out " + (dir / "out").string() + " --quiet");
+  *exit_code = r.exit_code;
+  if (stderr_text) *stderr_text = r.stderr_text;
+  if (r.exit_code != 0) return json();
+  return json::parse(ReadFile(dir / "out" / "result.json"));
+}
+
+// The ratio −90 example with a 2000 h life at 1000 rpm against the same without the limit: the life
+// binds (its row is active, the input roller is the shortest-lived bearing), the design is larger,
+// raising the limit costs diameter (mm per hour > 0), and lcr_analysis of the sized design computes
+// the same lives.
+TEST(LcrMinSizeLife, LifeLimitBindsAndCostsDiameter) {
+  int code = -1;
+  std::string err;
+  const auto dir = TempDir("lcr-min-size-life");
+  const json res = RunStudy(Example("lcr_min_size_life.json"), dir, &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_TRUE(res["verified"].get<bool>());
+  const json& best = res["best"];
+  const json& life = best["life"];
+  EXPECT_EQ(life["life_h"].get<double>(), 2000.0);
+  EXPECT_GE(life["shortest_L10h"].get<double>(), 2000.0);
+  EXPECT_LT(life["shortest_L10h"].get<double>(), 2000.0 * 1.001);  // binds: within 0.1%
+  EXPECT_EQ(life["shortest_bearing"], "input_roller");
+  const auto& binding = best["binding"];
+  EXPECT_NE(std::find(binding.begin(), binding.end(), "input_roller_life"), binding.end()) << binding.dump();
+  ASSERT_TRUE(best["limit_sensitivity"].contains("life_h"));
+  EXPECT_GT(best["limit_sensitivity"]["life_h"].get<double>(), 0.0);
+  for (const json& e : life["table"]) {
+    SCOPED_TRACE(e["element"].get<std::string>());
+    EXPECT_TRUE(e["pass"].get<bool>());
+    EXPECT_EQ(e["L10h"].get<double>(), life[e["element"].get<std::string>() + "_L10h"].get<double>());
+    // ISO 281: L10h = 10⁶ (C/P)^(10/3) / (60 n R), n = 1000 rpm, R the revolutions per input revolution.
+    const double hand = 1e6 * std::pow(e["dynamic_rating_N"].get<double>() / e["equivalent_load_N"].get<double>(),
+                                       10.0 / 3.0) /
+                        (60.0 * 1000.0 * e["revolutions_per_input_revolution"].get<double>());
+    EXPECT_NEAR(e["L10h"].get<double>(), hand, 1e-9 * hand);
+    EXPECT_NEAR(e["s0"].get<double>(), e["static_rating_N"].get<double>() / e["max_load_N"].get<double>(), 1e-12);
+  }
+  // The eccentric bearing turns n_A/m_A per input revolution.
+  const json& ecc = life["table"][2];
+  EXPECT_NEAR(ecc["revolutions_per_input_revolution"].get<double>(),
+              best["input"]["rollers"].get<double>() / best["input"]["lobes"].get<double>(), 1e-12);
+  // The rollers' C scales from the 10 mm x 10 mm, 2700 N reference (ISO 281 6.1.1, same length).
+  const double d = best["input"]["roller_diameter_mm"].get<double>();
+  EXPECT_NEAR(life["table"][0]["dynamic_rating_N"].get<double>(), 2700.0 * std::pow(d / 10.0, 29.0 / 27.0), 1e-9);
+
+  // Without the limit (the speed and ratings kept): the ratio −90 example's design, whose shortest
+  // life is below 2000 h, and a smaller reducer.
+  json free = Example("lcr_min_size_life.json");
+  free["limits"].erase("life_h");
+  const json res0 = RunStudy(free, TempDir("lcr-min-size-life-free"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_LT(res0["best"]["life"]["shortest_L10h"].get<double>(), 2000.0);
+  EXPECT_TRUE(res0["best"]["life"]["life_h"].is_null());
+  EXPECT_LT(res0["best"]["outer_diameter_mm"].get<double>(), best["outer_diameter_mm"].get<double>() - 1.0);
+  EXPECT_FALSE(res0["best"]["limit_sensitivity"].contains("life_h"));
+  const json plain = RunStudy(Example("lcr_min_size.json"), TempDir("lcr-min-size-life-plain"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_EQ(res0["best"]["outer_diameter_mm"], plain["best"]["outer_diameter_mm"]);
+
+  // best_lcr_analysis.json carries the speed and the ratings at the sized roller: lcr_analysis
+  // computes the same lives (the same functions, the same 3600 steps per revolution).
+  const auto r = RunCamopt("run " + (dir / "out" / "best_lcr_analysis.json").string() + " --quiet --out " +
+                           (dir / "analysis").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const json a = json::parse(ReadFile(dir / "analysis" / "result.json"));
+  for (const char* key : {"input_roller_L10h", "output_roller_L10h", "eccentric_bearing_L10h", "shortest_L10h"})
+    EXPECT_NEAR(a["life"][key].get<double>(), life[key].get<double>(), 1e-9 * life[key].get<double>()) << key;
+}
+
+// A catalogue that carries C and C0: with a life limit, the chosen roller meets it; an entry
+// without C is a bad study naming the entry.
+TEST(LcrMinSizeLife, CatalogueRatingsAndAnEntryWithoutC) {
+  json study = Example("lcr_min_size_catalogue.json");
+  study["search"]["max_lobes"] = 14;  // one combination (12/13 + 14/15), five rollers: keep the test short
+  study["roller_catalogue"] = json::parse(ReadFile(camopt::testing::SourcePath("studies/examples/needle_rollers.json")));
+  study["load"]["input_speed_rpm"] = 1000;
+  study["limits"]["life_h"] = 2000;
+  int code = -1;
+  std::string err;
+  const json res = RunStudy(study, TempDir("lcr-min-size-life-cat"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  const json& life = res["best"]["life"];
+  EXPECT_GE(life["shortest_L10h"].get<double>(), 2000.0);
+  const std::string name = res["best"]["catalogue_roller"];
+  for (const json& entry : study["roller_catalogue"])
+    if (entry["name"] == name) {
+      // The catalogue's own C and C0, not scaled.
+      EXPECT_EQ(life["table"][0]["dynamic_rating_N"], entry["dynamic_rating_N"]);
+      EXPECT_EQ(life["table"][0]["static_rating_N"], entry["static_rating_N"]);
+    }
+  study["roller_catalogue"][1].erase("dynamic_rating_N");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-noC", "/roller_catalogue/1/dynamic_rating_N",
+                                       "expected the roller's dynamic load rating C [N] > 0");
+}
+
+// A life no design of the combination reaches: exit 3, the message names life_h as the blocking
+// limit and the largest life at which the combination fits (objectives::LimitToFit, halving and
+// bisecting to 1%), and the study with that life fits.
+TEST(LcrMinSizeLife, UnreachableLifeSaysWhichLifeWouldFit) {
+  json study = Example("lcr_min_size_life.json");
+  study["search"]["max_lobes"] = 14;  // one combination (12/13 + 14/15)
+  study["limits"]["life_h"] = 1e5;
+  study["optimizer"] = json::parse(R"({"backend": "nlopt_slsqp", "starts": 1})");  // 1 s instead of 40 (Ipopt)
+  int code = -1;
+  std::string err;
+  RunStudy(study, TempDir("lcr-min-size-life-unreachable"), &code, &err);
+  ASSERT_EQ(code, 3) << err;
+  const std::string fits = "12/13 + 14/15 fits with life_h = ";
+  const size_t at = err.find(fits);
+  ASSERT_NE(err.find("life_h blocks most"), std::string::npos) << err;
+  ASSERT_NE(at, std::string::npos) << err;
+  const double life = std::stod(err.substr(at + fits.size()));
+  EXPECT_GE(life, 5e4);
+  EXPECT_LT(life, 1e5);
+  study["limits"]["life_h"] = life;
+  const json res = RunStudy(study, TempDir("lcr-min-size-life-reachable"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_GE(res["best"]["life"]["shortest_L10h"].get<double>(), life);
+}
+
+TEST(LcrMinSizeLife, BadInputIsAClearErrorWithExitCode2) {
+  struct Case {
+    std::string pointer, value, path, words;
+  };
+  const std::vector<Case> cases = {
+      {"/load/input_speed_rpm", "-500", "/load/input_speed_rpm", "expected"},
+      {"/duty_cycle", R"([{"output_torque_Nm": 80, "input_speed_rpm": 1000, "time_share": 0.5},
+                          {"output_torque_Nm": 40, "input_speed_rpm": -1500, "time_share": 0.5}])",
+       "/duty_cycle/1/input_speed_rpm", "expected"},
+      {"/duty_cycle", R"([{"output_torque_Nm": 80, "input_speed_rpm": 1000, "time_share": 0.5},
+                          {"output_torque_Nm": 40, "input_speed_rpm": 1500, "time_share": 0.3}])",
+       "/duty_cycle", "expected time shares summing to 1 (within 1e-6), found 0.8; would fit: each time_share divided by 0.8"},
+      {"/limits/life_h", "-1", "/limits/life_h", "expected"},
+  };
+  for (const auto& c : cases) {
+    json study = Example("lcr_min_size_life.json");
+    if (c.pointer == "/duty_cycle") study["load"].erase("input_speed_rpm");
+    study[json::json_pointer(c.pointer)] = json::parse(c.value);
+    camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-bad", c.path, c.words);
+  }
+  json study = Example("lcr_min_size_life.json");  // a limit without a speed
+  study["load"].erase("input_speed_rpm");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-nospeed", "/limits/life_h",
+                                       "expected load.input_speed_rpm (> 0) or a duty_cycle");
+  study = Example("lcr_min_size_life.json");  // a speed without the rollers' rating
+  study.erase("rollers");
+  camopt::testing::ExpectStudyRejected(study, "lcr-min-size-life-norating", "/rollers",
+                                       "expected {\"dynamic_rating_N\", \"reference_diameter_mm\"}");
+}
+
+}  // namespace
+}  // namespace camopt
