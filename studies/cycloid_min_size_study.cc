@@ -538,8 +538,8 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
   double share = 0;
   for (const objectives::VerifiedLimit& c : o.verification.checks) {
     if (c.holds()) continue;
-    const double s = c.excess() / std::max({std::abs(c.limit_value), std::abs(c.accurate_value), c.estimated_error, 1e-12});
-    if (!w || s > share) w = &c, share = s;
+    const double part = c.excess() / std::max({std::abs(c.limit_value), std::abs(c.accurate_value), c.estimated_error, 1e-12});
+    if (!w || part > share) w = &c, share = part;
   }
   if (w) {
     // The value of the limit at which that design holds: its accurate value within its error.
