@@ -88,6 +88,32 @@ AxisStresses<double> BoussinesqQuadrature(double p0, double a, double b, double 
   return {sx, sy, sz};
 }
 
+/// The orthogonal shear τ_yz at (0, y, z) under the same pressure, by the same quadrature:
+/// Boussinesq's τ_rz = −(3P/2π) r z²/ρ⁵ (Johnson §3.2) resolved on y, τ_yz = −(3P/2π) z² (y − y_P)/ρ⁵.
+double BoussinesqOrthogonalShear(double p0, double a, double b, double y, double z) {
+  std::vector<double> gx, gw;
+  GaussLegendre(96, &gx, &gw);  // where the test looks (z >= 0.3 b): within 4e-9 p0 of 160 x 512
+  const int n_theta = 256;
+  double tyz = 0;
+  for (size_t i = 0; i < gx.size(); ++i) {
+    const double phi = 0.5 * kPi * gx[i], wphi = 0.5 * kPi * gw[i];
+    const double r = std::sin(phi), load_density = p0 * a * b * r * std::cos(phi) * std::cos(phi);
+    for (int j = 0; j < n_theta; ++j) {
+      const double th = 2 * kPi * j / n_theta;
+      const double dx = -a * r * std::cos(th), dy = y - b * r * std::sin(th);
+      const double P = load_density * wphi * 2 * kPi / n_theta;
+      const double rho2 = dx * dx + dy * dy + z * z, rho5 = rho2 * rho2 * std::sqrt(rho2);
+      tyz += -3 * P / (2 * kPi) * z * z * dy / rho5;
+    }
+  }
+  return tyz;
+}
+
+double VonMisesOf(const AxisStresses<double>& s) {
+  const double a = s.sigma_x - s.sigma_y, b = s.sigma_y - s.sigma_z, c = s.sigma_z - s.sigma_x;
+  return std::sqrt(0.5 * (a * a + b * b + c * c));
+}
+
 double MaxShearOf(const AxisStresses<double>& s) {
   return 0.5 * std::max({std::abs(s.sigma_x - s.sigma_y), std::abs(s.sigma_y - s.sigma_z), std::abs(s.sigma_z - s.sigma_x)});
 }
@@ -256,6 +282,56 @@ TEST(SubsurfacePoint, EllipticalPrincipalShearMaximumAgainstQuadrature) {
   }
 }
 
+TEST(SubsurfacePoint, EllipticalVonMisesMaximumAgainstQuadratureAndItsLimits) {
+  // On the axis σ_x, σ_y, σ_z are principal: the von Mises maximum there. b/a = 0.5, 0.2 against a
+  // golden section on the Boussinesq quadrature; b/a = 1 is twice the circular principal shear
+  // (σ_x = σ_y: Johnson's 0.31 p0 at 0.48 a gives 0.62 p0, yield at p0 = 1.61 Y); b/a = 1e-5 is
+  // the line contact's 0.5575 p0 at 0.7043 b.
+  const double p0 = 1.0, b = 1.0;
+  for (double k : {0.5, 0.2}) {
+    const double a = b / k;
+    const StressPeak<double> pk = EllipticalContactMaxVonMises(p0, a, b, kNu);
+    const auto vm = [&](double z) { return VonMisesOf(BoussinesqQuadrature(p0, a, b, z, kNu)); };
+    const GoldenSectionBracket br = GoldenSectionMaximize(vm, 0.3, 1.0, 40, 1e-6);
+    EXPECT_NEAR(pk.value, std::max(br.f1, br.f2), kQuadratureTol) << k;
+    EXPECT_NEAR(pk.depth, 0.5 * (br.lo + br.hi), 1e-4) << k;
+  }
+  const StressPeak<double> round = EllipticalContactMaxVonMises(1.0, 1.0, 1.0, kNu);
+  const StressPeak<double> tau = CircularContactMaxPrincipalShear(1.0, 1.0, kNu);
+  EXPECT_NEAR(round.value, 2 * tau.value, kClosedFormTol);
+  EXPECT_NEAR(round.depth, tau.depth, 1e-6);
+  EXPECT_NEAR(round.value, 0.62, kLiteratureRelTol * 0.62);
+  EXPECT_NEAR(round.depth, 0.48, kLiteratureRelTol * 0.48);
+  const StressPeak<double> thin = EllipticalContactMaxVonMises(1.0, 1e5, 1.0, kNu);
+  const StressPeak<double> line = LineContactMaxVonMises(1.0, 1.0, kNu);
+  EXPECT_NEAR(thin.value, line.value, 1e-4);
+  EXPECT_NEAR(thin.depth, line.depth, 1e-3);
+}
+
+TEST(SubsurfacePoint, EllipticalOrthogonalShearIsLundbergPalmgrensClosedForm) {
+  // The closed form (t: (b/a)² = (t² − 1)(2t − 1)) against the largest |τ_yz| over (y, z) in the
+  // plane x = 0 of the Boussinesq quadrature (nested golden sections), b/a = 1, 0.5, 0.2; and its
+  // line-contact limit, Johnson's 0.25 p0 at 0.5 b (LineContactMaxOrthogonalShear).
+  const double p0 = 1.0, b = 1.0;
+  for (double k : {1.0, 0.5, 0.2}) {
+    const double a = b / k;
+    const DepthPeak<double> lp = EllipticalContactMaxOrthogonalShear(p0, a, b);
+    const auto at_depth = [&](double z) {
+      const auto f = [&](double y) { return std::abs(BoussinesqOrthogonalShear(p0, a, b, y, z)); };
+      const GoldenSectionBracket by = GoldenSectionMaximize(f, 0.2 * b, 1.6 * b, 40, 1e-4);  // flat: value to ~1e-9
+      return std::max(by.f1, by.f2);
+    };
+    const GoldenSectionBracket bz = GoldenSectionMaximize(at_depth, 0.25 * b, 0.8 * b, 40, 2e-5);
+    EXPECT_NEAR(lp.value, std::max(bz.f1, bz.f2), 1e-7) << k;
+    EXPECT_NEAR(lp.depth, 0.5 * (bz.lo + bz.hi), 1e-4) << k;
+  }
+  const DepthPeak<double> thin = EllipticalContactMaxOrthogonalShear(1.0, 1e6, 1.0);
+  const StressPeak<double> line = LineContactMaxOrthogonalShear(1.0, 1.0);
+  EXPECT_NEAR(thin.value, line.value, 1e-6);
+  EXPECT_NEAR(thin.depth, line.depth, 1e-6);
+  EXPECT_THROW(EllipticalContactMaxOrthogonalShear(1.0, 0.5, 1.0), std::invalid_argument);
+}
+
 TEST(SubsurfacePoint, EllipticalPeakDerivativesMatchCentralDifferences) {
   // x = (p0, a, b); σ at a fixed depth, and the τ1 maximum (envelope theorem for a, b).
   const auto f = [](const auto& x) {
@@ -263,7 +339,9 @@ TEST(SubsurfacePoint, EllipticalPeakDerivativesMatchCentralDifferences) {
     const AxisStresses<T> s = EllipticalContactAxisStresses(x[0], x[1], x[2], T(0.4), kNu);
     const StressPeak<T> pk = EllipticalContactMaxPrincipalShear(x[0], x[1], x[2], kNu);
     const StressPeak<T> c = CircularContactMaxPrincipalShear(x[0], x[2], kNu);
-    return std::vector<T>{s.sigma_x, s.sigma_y, s.sigma_z, pk.value, c.value, c.depth};
+    const StressPeak<T> vm = EllipticalContactMaxVonMises(x[0], x[1], x[2], kNu);
+    const DepthPeak<T> t0 = EllipticalContactMaxOrthogonalShear(x[0], x[1], x[2]);
+    return std::vector<T>{s.sigma_x, s.sigma_y, s.sigma_z, pk.value, c.value, c.depth, vm.value, t0.value, t0.depth};
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<3>(f, {1800.0, 0.9, 0.35}, camopt::testing::kJacobianRelTol,
                                                              kStressGradAbsTol);
@@ -298,6 +376,8 @@ TEST(SubsurfacePoint, AxisMaximaAreTheOnlyMaximaOfADenseScan) {
   for (double k : {0.5, 0.2, 0.05}) {
     check("elliptical tau1", [k](double z) { return MaxShearOf(EllipticalContactAxisStresses(1.0, 1.0 / k, 1.0, z, kNu)); },
           EllipticalContactMaxPrincipalShear(1.0, 1.0 / k, 1.0, kNu).value);
+    check("elliptical von Mises", [k](double z) { return VonMisesOf(EllipticalContactAxisStresses(1.0, 1.0 / k, 1.0, z, kNu)); },
+          EllipticalContactMaxVonMises(1.0, 1.0 / k, 1.0, kNu).value, k < 0.1 ? 2 : 1);
   }
 }
 

@@ -241,25 +241,23 @@ StressPeak<T> CircularContactMaxPrincipalShear(const T& p0, const T& a, double n
   return {subsurface_internal::MaxShear(CircularContactAxisStresses(p0, a, z, nu)), z, T(0.0)};
 }
 
-/// Elliptical contact (a ≥ b), the largest principal shear on the z axis (the largest half
-/// difference of σ_x, σ_y, σ_z): golden section on z/b in (0, 2.5], evaluated in T there. At fixed
-/// a/b the value is ∝ p0 and the depth ∝ b; the derivative of the value w.r.t. a and b is exact
-/// (envelope theorem), that of the depth w.r.t. a/b is not carried (the maximiser is a double).
-template <typename T>
-StressPeak<T> EllipticalContactMaxPrincipalShear(const T& p0, const T& a, const T& b, double nu) {
-  const double ratio = Value(a) / Value(b);
-  if (!(ratio >= 1.0)) throw std::invalid_argument("elliptical contact: the semi-axes must satisfy a >= b");
-  const auto tau = [nu, ratio](const auto& zeta) {
+namespace subsurface_internal {
+
+/// The maximiser ζ = z/b of a measure of the elliptical contact's axis stresses at p0 = b = 1,
+/// a/b = ratio: a 64-sample scan and golden section on (0, 2.5], then Newton steps on ∂f/∂ζ = 0.
+/// The golden section leaves the maximiser uncertain by ~√ε (the maximum is flat), which leaves
+/// ∂f/∂z ≠ 0 there and breaks the envelope theorem at the 1e-6 level in the derivative w.r.t. a/b;
+/// the Newton steps (the slope by a Jet, its derivative by a central difference of the slope) put
+/// the slope at rounding level.
+template <typename Measure>
+double EllipticalAxisArgMax(const Measure& measure, double ratio, double nu) {
+  const auto f = [&measure, nu, ratio](const auto& zeta) {
     using S = std::decay_t<decltype(zeta)>;
-    return subsurface_internal::MaxShear(EllipticalContactAxisStresses(S(1.0), S(ratio), S(1.0), zeta, nu));
+    return measure(EllipticalContactAxisStresses(S(1.0), S(ratio), S(1.0), zeta, nu));
   };
-  double zeta = subsurface_internal::ArgMax(tau, 1e-6, 2.5);
-  // The golden section leaves the maximiser uncertain by ~√ε (the maximum is flat), which leaves
-  // ∂τ/∂z ≠ 0 there and breaks the envelope theorem at the 1e-6 level in the derivative w.r.t. a/b.
-  // Newton steps on ∂τ/∂ζ = 0 (the slope by a Jet, its derivative by a central difference of the
-  // slope) put the slope at rounding level.
+  double zeta = ArgMax(f, 1e-6, 2.5);
   using J1 = ceres::Jet<double, 1>;
-  const auto slope = [&tau](double t) { return tau(J1(t, 0)).v[0]; };
+  const auto slope = [&f](double t) { return f(J1(t, 0)).v[0]; };
   for (int it = 0; it < 4; ++it) {
     const double d = 1e-5, g = slope(zeta), curvature = (slope(zeta + d) - slope(zeta - d)) / (2.0 * d);
     if (!(curvature < 0.0)) break;
@@ -267,8 +265,77 @@ StressPeak<T> EllipticalContactMaxPrincipalShear(const T& p0, const T& a, const 
     if (!(std::abs(step) < 1e-3)) break;
     zeta += step;
   }
+  return zeta;
+}
+
+inline double CheckedAxisRatio(double a, double b) {
+  const double ratio = a / b;
+  if (!(ratio >= 1.0)) throw std::invalid_argument("elliptical contact: the semi-axes must satisfy a >= b");
+  return ratio;
+}
+
+}  // namespace subsurface_internal
+
+/// Elliptical contact (a ≥ b), the largest principal shear on the z axis (the largest half
+/// difference of σ_x, σ_y, σ_z): the maximiser of z/b by subsurface_internal::EllipticalAxisArgMax,
+/// the stress evaluated in T there. At fixed a/b the value is ∝ p0 and the depth ∝ b; the
+/// derivative of the value w.r.t. a and b is exact (envelope theorem), that of the depth w.r.t. a/b
+/// is not carried (the maximiser is a double).
+template <typename T>
+StressPeak<T> EllipticalContactMaxPrincipalShear(const T& p0, const T& a, const T& b, double nu) {
+  const double ratio = subsurface_internal::CheckedAxisRatio(Value(a), Value(b));
+  const double zeta = subsurface_internal::EllipticalAxisArgMax(
+      [](const auto& s) { return subsurface_internal::MaxShear(s); }, ratio, nu);
   const T z = b * zeta;
   return {subsurface_internal::MaxShear(EllipticalContactAxisStresses(p0, a, b, z, nu)), z, T(0.0)};
+}
+
+/// Elliptical contact (a ≥ b), the largest von Mises stress on the z axis (σ_x, σ_y, σ_z are the
+/// principal stresses there): as EllipticalContactMaxPrincipalShear. At a = b it is twice the
+/// principal shear (σ_x = σ_y on the axis of a circular contact); as a/b → ∞ it tends to the line
+/// contact's (LineContactMaxVonMises; ν 0.3: 0.5575 p0 at 0.7043 b).
+template <typename T>
+StressPeak<T> EllipticalContactMaxVonMises(const T& p0, const T& a, const T& b, double nu) {
+  const double ratio = subsurface_internal::CheckedAxisRatio(Value(a), Value(b));
+  const double zeta = subsurface_internal::EllipticalAxisArgMax(
+      [](const auto& s) { return subsurface_internal::VonMises(s); }, ratio, nu);
+  const T z = b * zeta;
+  return {subsurface_internal::VonMises(EllipticalContactAxisStresses(p0, a, b, z, nu)), z, T(0.0)};
+}
+
+/// A maximum of a stress measure at a depth below the surface, its position along the surface not
+/// given [MPa, mm].
+template <typename T>
+struct DepthPeak {
+  T value, depth;
+};
+
+/// Elliptical contact (a ≥ b, b along the rolling direction y), the largest orthogonal shear
+/// |τ_yz| (Lundberg–Palmgren's τ0) and its depth z0, by Lundberg & Palmgren's closed form (Acta
+/// Polytechnica, Mech. Eng. Ser. 1(3), 1947; as in Harris & Kotzalas, Rolling Bearing Analysis,
+/// ch. on subsurface stresses) in the auxiliary parameter t ≥ 1:
+///   (b/a)² = (t² − 1)(2t − 1),  τ0/p0 = √(2t − 1) / (2t(t + 1)),  z0/b = 1 / ((t + 1)√(2t − 1)).
+/// b/a → 0 (t → 1) gives the line contact's 0.25 p0 at 0.5 b. t by Newton from t = 1 + b/a (the
+/// cubic is convex for t ≥ 1 and that start lies right of the root, so the iterates fall
+/// monotonically), then one Newton step in T: the derivative w.r.t. a and b is that of the root.
+/// Independent of ν (the orthogonal shear of a frictionless Hertz contact).
+template <typename T>
+DepthPeak<T> EllipticalContactMaxOrthogonalShear(const T& p0, const T& a, const T& b) {
+  using std::sqrt;
+  const double k = subsurface_internal::CheckedAxisRatio(Value(a), Value(b));
+  const double k2 = 1.0 / (k * k);  // (b/a)²
+  const auto g = [k2](double t) { return (t * t - 1.0) * (2.0 * t - 1.0) - k2; };
+  const auto dg = [](double t) { return 6.0 * t * t - 2.0 * t - 2.0; };
+  double t = 1.0 + 1.0 / k;
+  for (int it = 0; it < 100; ++it) {
+    const double step = g(t) / dg(t);
+    t -= step;
+    if (!(std::abs(step) > 1e-15 * t)) break;
+  }
+  const T ba = b / a;
+  const T tt = T(t) + (ba * ba - T(k2)) / T(dg(t));  // exact first derivative of the root
+  const T s = sqrt(T(2.0) * tt - T(1.0));
+  return {p0 * s / (T(2.0) * tt * (tt + T(1.0))), b / ((tt + T(1.0)) * s)};
 }
 
 // ---- Contact-fatigue life -----------------------------------------------------------------------
