@@ -14,7 +14,9 @@ PACKAGES=(build-essential cmake pkg-config
   # Issue 19 (sweeps): Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
   libboost-dev libopenmpi-dev openmpi-bin
   # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
-  chromium python3-pil)
+  chromium python3-pil
+  # The SHA-256 of provenance (studies/provenance.cc) from a maintained library.
+  nettle-dev)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

@@ -13,8 +13,7 @@ namespace camopt::studies {
 /// The version of this camopt build ("0.1.0", the project() version of CMakeLists.txt).
 std::string CamoptVersion();
 
-/// SHA-256 (FIPS 180-4) of `bytes`, as 64 lower-case hexadecimal digits. A small implementation
-/// of our own: no cryptographic library is needed for a provenance fingerprint.
+/// SHA-256 (FIPS 180-4) of `bytes`, as 64 lower-case hexadecimal digits (Nettle's).
 std::string Sha256Hex(std::string_view bytes);
 
 /// Values of a study that parse but are very likely a mistake (a modulus given in MPa under a GPa
