@@ -28,9 +28,15 @@ install(TARGETS camopt_lib EXPORT camoptTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(room model objectives optimizers studies)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${room} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/camopt
-          FILES_MATCHING PATTERN "*.h")
+# Every header of the rooms, each at its path under include/camopt (cad/ too: studies/ headers
+# include it). Listed file by file, not by directory, so that no empty folder is installed.
+# Each installed header compiles on its own against the install tree (scripts/test_consumer.sh).
+foreach(room model objectives optimizers studies cad)
+  file(GLOB_RECURSE room_headers RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${room}/*.h)
+  foreach(header ${room_headers})
+    get_filename_component(header_dir ${header} DIRECTORY)
+    install(FILES ${PROJECT_SOURCE_DIR}/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/camopt/${header_dir})
+  endforeach()
 endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/schema DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt
         FILES_MATCHING PATTERN "*.json")
@@ -55,4 +61,9 @@ if(CAMOPT_BUILD_TESTS AND NOT CAMOPT_SANITIZE AND NOT CAMOPT_FUZZ)
            COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/test_consumer.sh ${PROJECT_BINARY_DIR}
                    ${PROJECT_SOURCE_DIR})
   set_tests_properties(ConsumerProject.BuildsAndRunsAgainstTheInstallTree PROPERTIES TIMEOUT 600)
+  # Every installed header on its own against the install tree; no empty folder installed.
+  add_test(NAME InstalledHeaders.EachCompilesOnItsOwn
+           COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/test_installed_headers.sh ${PROJECT_BINARY_DIR}
+                   ${PROJECT_SOURCE_DIR})
+  set_tests_properties(InstalledHeaders.EachCompilesOnItsOwn PROPERTIES TIMEOUT 1200)
 endif()

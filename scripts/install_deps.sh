@@ -15,8 +15,9 @@ PACKAGES=(build-essential cmake pkg-config
   libboost-dev libopenmpi-dev openmpi-bin
   # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
   chromium python3-pil
-  # The SHA-256 of provenance (studies/provenance.cc) from a maintained library.
-  nettle-dev)
+  # The SHA-256 of provenance (studies/provenance.cc) from a maintained library; the API
+  # reference from the headers' comments (cmake/camopt_docs.cmake).
+  nettle-dev doxygen)
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()

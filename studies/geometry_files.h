@@ -84,7 +84,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
 nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,
                                  const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts);
 
-/// Writes <stem>.dxf, and <stem>.step (when asked) and <stem>.stl when the cam has a thickness,
+/// Writes `STEM.dxf`, and `STEM.step` (when asked) and `STEM.stl` when the cam has a thickness,
 /// into `out`. The solid is built by OpenCASCADE from the fitted arcs.
 void WritePlanarCamFiles(const PlanarCamFit& fit, const GeometryFileOptions& options, Outputs& out);
 

@@ -26,7 +26,7 @@ struct MotionInputSpec {
   std::string misplaced_key, misplaced_hint;
 };
 
-/// Parses a "motion" array of {law, <rise_key>, cam_angle_deg} into a program that covers one cam
+/// Parses a "motion" array of `{law, RISE_KEY, cam_angle_deg}` into a program that covers one cam
 /// revolution and returns to its start. Throws StudyError naming the segment and field.
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion, const MotionInputSpec& spec);
 

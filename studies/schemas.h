@@ -7,7 +7,7 @@
 
 namespace camopt::studies {
 
-/// kind → the text of studies/schema/<kind>.schema.json (JSON Schema draft 2020-12).
+/// kind → the text of `studies/schema/KIND.schema.json` (JSON Schema draft 2020-12).
 const std::map<std::string, std::string>& EmbeddedSchemas();
 
 /// The schema of a study kind; throws StudyError "schema KIND: expected a known study kind
