@@ -34,6 +34,7 @@
 #include "studies/cli.h"
 #include "studies/convergence.h"
 #include "studies/provenance.h"
+#include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
 #include "studies/sweep.h"
@@ -59,16 +60,35 @@ void StartSignalThread() {
   }).detach();
 }
 
-// The headline numbers of result.json, one "key: value" line each (at most 24): first the
-// top-level numbers, flags and short strings, then from the objects one level down the extremes
-// and verdicts (max…, min…, mean…, …_ok, feasible, converged).
-void PrintSummary(const std::string& out_dir) {
+// The answer first: the verdict over the kind's limits and its headline numbers with units and
+// limits, the same list report.html shows (studies/report.h, EvaluateHeadlines). A kind without
+// registered headlines: the headline numbers of result.json, one "key: value" line each (at most
+// 24): first the top-level numbers, flags and short strings, then from the objects one level down
+// the extremes and verdicts (max…, min…, mean…, …_ok, feasible, converged).
+void PrintSummary(const std::string& out_dir, const std::string& study_file) {
   std::ifstream in(std::filesystem::path(out_dir) / "result.json");
   const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
   if (!r.is_object()) return;
   std::cout << "camopt: " << r.value("study", std::string("study"));
   if (r.contains("name") && r["name"].is_string()) std::cout << " \"" << r["name"].get<std::string>() << "\"";
   std::cout << "\n";
+  std::ifstream study_in(study_file);
+  nlohmann::json study = nlohmann::json::parse(study_in, nullptr, false);
+  if (study.is_discarded()) study = nlohmann::json::object();
+  const camopt::studies::HeadlineTable table =
+      camopt::studies::EvaluateHeadlines(r.value("study", std::string()), study, r);
+  if (table.registered) {
+    std::cout << "  verdict: " << camopt::studies::VerdictLine(table) << "\n";
+    for (const camopt::studies::HeadlineRow& row : table.rows) {
+      std::cout << "  " << row.label << ": " << row.value;
+      if (!row.limit.empty()) std::cout << " (limit " << row.limit << ": " << row.status << ")";
+      std::cout << "\n";
+    }
+    if (r.contains("warnings") && r["warnings"].is_array() && !r["warnings"].empty())
+      std::cout << "  warnings: " << r["warnings"].size() << " (see result.json)\n";
+    std::cout << "  details: " << (std::filesystem::path(out_dir) / "report.html").string() << "\n";
+    return;
+  }
   constexpr int kMaxLines = 24;
   int lines = 0;
   bool cut = false;
@@ -208,12 +228,13 @@ int CliMain(int argc, char** argv) {
     else
       camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
-    if (!convergence) PrintSummary(out_dir);  // --convergence prints its own table
+    if (!convergence) PrintSummary(out_dir, study_file);  // --convergence prints its own table
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
     std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
               << "\n";
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
+    if (!convergence) PrintSummary(out_dir, study_file);
     return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";

@@ -120,6 +120,55 @@ bool RegisterReport(const std::string& kind, std::vector<Headline> headlines) {
   return true;
 }
 
+HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result) {
+  HeadlineTable table;
+  const auto reg = Reports().find(kind);
+  if (reg == Reports().end()) {
+    for (const auto& [k, v] : result.items())
+      if (v.is_number()) table.rows.push_back({k, Value(v), "", "", ""});
+    return table;
+  }
+  table.registered = true;
+  for (const Headline& h : reg->second) {
+    const nlohmann::json* v = At(result, h.pointer);
+    if (!v) continue;
+    const std::string unit = h.unit.empty() ? "" : " " + h.unit;
+    std::string value = Value(*v);
+    double error = 0;  // the value's error estimate, when the kind gives one
+    if (const nlohmann::json* e = At(result, h.error_pointer); e && e->is_number() && v->is_number()) {
+      value += " ± " + Error(e->get<double>());
+      error = std::abs(e->get<double>());
+    }
+    HeadlineRow row{h.label, value + (v->is_number() ? unit : ""), "", "", ""};
+    double limit = h.limit_value;
+    const bool in_study = h.limit_pointer.rfind("study:", 0) == 0;
+    if (const nlohmann::json* l = At(in_study ? study : result, h.limit_pointer.substr(in_study ? 6 : 0));
+        l && l->is_number())
+      limit = l->get<double>();
+    if (v->is_number() && std::isfinite(limit)) {
+      const double margin = h.upper_limit ? limit - v->get<double>() : v->get<double>() - limit;
+      row.limit = (h.upper_limit ? "≤ " : "≥ ") + Number(limit) + unit;
+      row.margin = Number(margin) + unit;
+      // A limit holds when the value is within it plus its estimated error (the verified-optimum
+      // contract, objectives/verification.h), as result.json's verification says.
+      const bool holds = margin >= -error;
+      row.status = holds ? "pass" : "fail";
+      ++table.limits;
+      if (!holds) table.exceeded.push_back(h.label);
+    }
+    table.rows.push_back(row);
+  }
+  return table;
+}
+
+std::string VerdictLine(const HeadlineTable& table) {
+  if (table.limits == 0) return "No limits to check in this study";
+  if (table.exceeded.empty()) return "All " + std::to_string(table.limits) + " limits met";
+  std::string s = std::to_string(table.exceeded.size()) + " of " + std::to_string(table.limits) + " limits exceeded: ";
+  for (size_t i = 0; i < table.exceeded.size(); ++i) s += (i ? ", " : "") + table.exceeded[i];
+  return s;
+}
+
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs) {
   const auto& files = outputs.files();
   nlohmann::json result = nlohmann::json::object();
@@ -132,47 +181,9 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
                          : "";
   if (name.empty()) name = kind;
 
-  // Headline rows: label, value, limit, margin, status ("" without a limit).
-  struct Row {
-    std::string label, value, limit, margin, status;
-  };
-  std::vector<Row> rows;
-  int limits = 0, exceeded = 0;
-  const auto reg = Reports().find(kind);
-  if (reg != Reports().end()) {
-    for (const Headline& h : reg->second) {
-      const nlohmann::json* v = At(result, h.pointer);
-      if (!v) continue;
-      const std::string unit = h.unit.empty() ? "" : " " + h.unit;
-      std::string value = Value(*v);
-      double error = 0;  // the value's error estimate, when the kind gives one
-      if (const nlohmann::json* e = At(result, h.error_pointer); e && e->is_number() && v->is_number()) {
-        value += " ± " + Error(e->get<double>());
-        error = std::abs(e->get<double>());
-      }
-      Row row{h.label, value + (v->is_number() ? unit : ""), "", "", ""};
-      double limit = h.limit_value;
-      const bool in_study = h.limit_pointer.rfind("study:", 0) == 0;
-      if (const nlohmann::json* l = At(in_study ? study : result, h.limit_pointer.substr(in_study ? 6 : 0));
-          l && l->is_number())
-        limit = l->get<double>();
-      if (v->is_number() && std::isfinite(limit)) {
-        const double margin = h.upper_limit ? limit - v->get<double>() : v->get<double>() - limit;
-        row.limit = (h.upper_limit ? "≤ " : "≥ ") + Number(limit) + unit;
-        row.margin = Number(margin) + unit;
-        // A limit holds when the value is within it plus its estimated error (the verified-optimum
-        // contract, objectives/verification.h), as result.json's verification says.
-        const bool holds = margin >= -error;
-        row.status = holds ? "pass" : "fail";
-        ++limits;
-        exceeded += !holds;
-      }
-      rows.push_back(row);
-    }
-  } else {
-    for (const auto& [k, v] : result.items())
-      if (v.is_number()) rows.push_back({k, Value(v), "", "", ""});
-  }
+  const HeadlineTable table = EvaluateHeadlines(kind, study, result);
+  const std::vector<HeadlineRow>& rows = table.rows;
+  const int limits = table.limits, exceeded = int(table.exceeded.size());
 
   std::vector<std::string> warnings;
   if (result.contains("warnings") && result["warnings"].is_array())
@@ -199,19 +210,16 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
   if (!outputs.incomplete().empty())
     os << "<div class=\"verdict bad\">Incomplete: " << Html(outputs.incomplete()) << "</div>\n";
   if (limits > 0)
-    os << "<div class=\"verdict " << (exceeded ? "bad" : "ok") << "\">"
-       << (exceeded ? std::to_string(exceeded) + " of " + std::to_string(limits) + " limits exceeded"
-                    : "All " + std::to_string(limits) + " limits met")
-       << "</div>\n";
+    os << "<div class=\"verdict " << (exceeded ? "bad" : "ok") << "\">" << Html(VerdictLine(table)) << "</div>\n";
   else if (outputs.incomplete().empty())
-    os << "<div class=\"verdict info\">No limits to check in this study</div>\n";
+    os << "<div class=\"verdict info\">" << Html(VerdictLine(table)) << "</div>\n";
 
   os << "<h2>Headline numbers</h2>\n";
   if (rows.empty()) {
     os << "<p>None.</p>\n";
   } else {
     os << "<table>\n<tr><th>quantity</th><th>value</th><th>limit</th><th>margin</th><th>status</th></tr>\n";
-    for (const Row& r : rows)
+    for (const HeadlineRow& r : rows)
       os << "<tr><td>" << Html(r.label) << "</td><td class=\"n\">" << Html(r.value) << "</td><td class=\"n\">"
          << Html(r.limit) << "</td><td class=\"n\">" << Html(r.margin) << "</td><td class=\""
          << r.status << "\">" << (r.status.empty() ? "" : r.status == "pass" ? "pass" : "FAIL") << "</td></tr>\n";

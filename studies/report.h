@@ -39,6 +39,29 @@ struct Headline {
 /// A kind without registered headlines gets every top-level number of result.json instead.
 bool RegisterReport(const std::string& kind, std::vector<Headline> headlines);
 
+/// One headline evaluated on a run, as report.html and the stdout summary show it.
+struct HeadlineRow {
+  std::string label;
+  std::string value;   ///< with its error estimate ("± …") and unit
+  std::string limit;   ///< "≤ 1500 MPa", "" without a limit
+  std::string margin;  ///< limit − value (upper) or value − limit (lower), with unit
+  std::string status;  ///< "pass", "fail" or "" without a limit
+};
+
+/// A kind's headlines evaluated on a result: a limit holds when the value is within it plus the
+/// value's estimated error (the verified-optimum contract, objectives/verification.h). A kind
+/// without registered headlines gets every top-level number of result.json (registered false).
+struct HeadlineTable {
+  std::vector<HeadlineRow> rows;
+  int limits = 0;                      ///< rows with a limit
+  std::vector<std::string> exceeded;   ///< labels of the rows that fail
+  bool registered = false;
+};
+HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result);
+
+/// "All 7 limits met", "2 of 7 limits exceeded: a, b", or "No limits to check in this study".
+std::string VerdictLine(const HeadlineTable& table);
+
 /// The page for a run of `kind` on `study` whose files are `outputs` (result.json, *.svg, …).
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs);
 
