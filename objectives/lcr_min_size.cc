@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "model/lcr/forces.h"
+#include "model/contact/hertz.h"
 #include "model/lcr/profile.h"
 
 namespace camopt::objectives {
@@ -175,7 +176,18 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     eta += a.efficiency;
     for (int k = 0; k < 2; ++k) {
       const lcr::SideLoads<double>& sl = k == 0 ? a.input : a.output;
-      c.max_stress_MPa[k] = std::max(c.max_stress_MPa[k], sl.max_stress);
+      if (sl.max_stress > c.max_stress_MPa[k]) {
+        c.max_stress_MPa[k] = sl.max_stress;
+        c.peak_half_width_mm[k] = 0.0;
+        const lcr::CamSide<double>& cam = k == 0 ? r.input : r.output;
+        for (size_t j = 0; j < sl.stress.size(); ++j)
+          if (sl.stress[j] == sl.max_stress && std::isfinite(sl.max_stress)) {
+            const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * sl.contacts[j].curvature);
+            c.peak_half_width_mm[k] = contact::LineContactHalfWidth(sl.force[j], cam.contact_length(), r_eff,
+                                                                    spec.material.composite_modulus_MPa());
+            break;
+          }
+      }
       c.max_force_N[k] = std::max(c.max_force_N[k], sl.max_force);
       if (!near) continue;
       std::copy(sl.force.begin(), sl.force.end(), fq[k].begin() + size_t(i) * n[k]);

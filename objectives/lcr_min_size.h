@@ -62,6 +62,9 @@ struct LcrDenseCheck {
   double outer_diameter_mm = 0.0;
   std::array<double, 2> max_stress_MPa{}, max_force_N{}, undercut_margin_mm{}, roller_gap_mm{},
       pitch_clearance_mm{};  ///< [0] input cam, [1] output cam
+  /// Half-width b [mm] of the Hertz line contact that sets max_stress_MPa (its subsurface stresses,
+  /// docs/life.md "Contact fatigue of the cam surfaces"); 0 without load or on an undercut contact.
+  std::array<double, 2> peak_half_width_mm{};
   double mean_efficiency = 0.0;
   /// With spec.life: every rated bearing's life, `steps` samples per input revolution over its load
   /// period and each duty line at its torque (lcr::BearingLifeOverDutyCycle, the rigid law);

@@ -5,14 +5,19 @@
 #include "studies/lcr_analysis_study.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <set>
 
+#include "model/common/sliced_bearing_life.h"
+#include "model/lcr/contact_fatigue.h"
 #include "model/lcr/friction.h"
 #include "model/lcr/life.h"
 #include "model/lcr/profile.h"
+#include "model/lcr/sliced_life.h"
+#include "studies/contact_fatigue_input.h"
 #include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
@@ -148,6 +153,26 @@ void RunContact3D(const Study& st, Result& res) {
                                                           crowning, st.contact.options);
     CamResult& j = s == Side::kInput ? res.input_cam : res.output_cam;
     j.max_contact_stress_MPa = c.max_contact_stress_MPa;
+    // The subsurface stresses of the peak: the worst slice as a line contact of its own peak
+    // pressure, b = 2 p0 R'/E* (model/contact/hertz.h), R' of the contact that sets the peak.
+    j.peak_half_width_mm = 0;
+    if (c.worst_angle >= 0 && std::isfinite(c.max_contact_stress_MPa)) {
+      const double e_star = st.material.composite_modulus_MPa();
+      j.peak_half_width_mm = contact::LineContactHalfWidthFromPeakPressure(
+          c.max_contact_stress_MPa, c.stress_radius_mm[size_t(c.worst_angle)], e_star);
+      const lcr::ContactModel m = st.contact.options.model;
+      char where[120];
+      std::snprintf(where, sizeof where, "roller %d at input angle %.6g deg", c.worst_roller,
+                    res.series.theta_rad[size_t(c.worst_angle)] * 180 / kPi);
+      j.subsurface_basis =
+          m == lcr::ContactModel::kLine
+              ? std::string("Hertz line contact of the cam's peak pressure (") + where +
+                    "), frictionless, homogeneous half-spaces (Johnson 1985, eq. 4.50 ff.)"
+              : std::string(m == lcr::ContactModel::kSlices ? "the worst slice of the slices model"
+                                                            : "the half_space model's peak pressure") +
+                    " (" + where + ") taken as a line contact of that peak pressure and half-width b = 2 p0 R'/E* "
+                    "(plane strain under the peak; frictionless, homogeneous half-spaces, Johnson 1985 eq. 4.50 ff.)";
+    }
     if (!c.converged)
       res.notes.push_back(std::string(s == Side::kInput ? "input" : "output") +
                           " cam: a contact solve did not converge (see docs/lcr.md)");
@@ -205,6 +230,88 @@ void CheckEccentricBearing(const Node& reducer) {
 }
 
 
+// The peak contact pressure of each cam at a duty line's torque, by the study's load model and,
+// when the study has a "contact" object, its contact model (as the stress stage computes it).
+std::array<double, 2> PeakPressures(const Study& st, double torque_Nmm) {
+  if (!(torque_Nmm > 0)) return {0.0, 0.0};
+  lcr::LoadCase load = st.load;
+  load.output_torque_Nmm = torque_Nmm;
+  const lcr::Stages stages{true, true, false};
+  const lcr::CycleSeries series =
+      st.load_model == lcr::LoadModel::kCompliant
+          ? lcr::AnalyzeCycleCompliant(st.reducer, st.material, load, st.angle_steps, stages)
+          : lcr::AnalyzeCycle(st.reducer, st.material, load, st.angle_steps, stages);
+  std::array<double, 2> p{Max(series.input.max_stress_MPa), Max(series.output.max_stress_MPa)};
+  if (st.contact.given)
+    for (Side s : {Side::kInput, Side::kOutput}) {
+      const auto& crowning = s == Side::kInput ? st.contact.input_crowning : st.contact.output_crowning;
+      p[s == Side::kInput ? 0 : 1] = lcr::AnalyzeCycleContact3D(st.reducer, s, series, st.material.composite_modulus_MPa(),
+                                                                crowning, st.contact.options)
+                                         .max_contact_stress_MPa;
+    }
+  return p;
+}
+
+// The contact lives of the cams' tracks (docs/life.md, "Contact fatigue of the cam surfaces";
+// model/lcr/contact_fatigue.h): the peak pressure of each line, N_c over-rollings per input
+// revolution, the material's S–N point and Palmgren–Miner over the lines.
+std::vector<CamContactLifeResult> CamContactLives(const Study& st) {
+  const ContactFatigueSpec& cf = *st.contact_fatigue;
+  std::vector<std::array<double, 2>> peaks;
+  for (const DutyLine& line : st.life->lines) peaks.push_back(PeakPressures(st, line.output_torque_Nmm));
+  std::vector<CamContactLifeResult> out;
+  for (Side s : {Side::kInput, Side::kOutput}) {
+    CamContactLifeResult c;
+    c.name = s == Side::kInput ? "input_cam_contact" : "output_cam_contact";
+    c.passes_per_input_revolution = lcr::ContactPassesPerInputRevolution(st.reducer, s);
+    for (const auto& p : peaks) c.line_peak_pressure_MPa.push_back(p[s == Side::kInput ? 0 : 1]);
+    const lcr::CamContactLife l =
+        lcr::CamContactLifeOverDutyCycle(c.line_peak_pressure_MPa, st.life->lines, c.passes_per_input_revolution,
+                                         cf.reference_pressure_MPa, cf.reference_cycles, cf.exponent);
+    c.equivalent_pressure_MPa = l.equivalent_pressure_MPa;
+    c.L10h = l.L10h;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// The sliced life of the rollers of cam s (docs/life.md, "Sliced roller life under tilt"): the
+// slices model's load per slice at each sample of the roller's load period, for every duty line.
+BearingLifeResult::Sliced SlicedRollerLife(const Study& st, Side s, const BearingRating& rating) {
+  const auto& crowning = s == Side::kInput ? st.contact.input_crowning : st.contact.output_crowning;
+  std::vector<SlicedDutyLine> lines;
+  BearingLifeResult::Sliced out;
+  out.slices = st.contact.options.slices;
+  std::vector<double> y;
+  for (const DutyLine& line : st.life->lines) {
+    lcr::LoadCase load = st.load;
+    load.output_torque_Nmm = line.output_torque_Nmm;
+    lcr::RollerSliceSamples x = lcr::SampleRollerSliceLoads(st.reducer, st.material, load, st.load_model, s,
+                                                            st.angle_steps, crowning, st.contact.options.misalignment_rad,
+                                                            st.contact.options.slices);
+    out.converged = out.converged && x.converged;
+    out.edge_loaded = out.edge_loaded || x.edge_loaded;
+    y = x.y_mm;
+    lines.push_back({line.time_share, line.input_speed_rpm * x.revolutions_per_input_revolution, std::move(x.loads),
+                     std::move(x.weights)});
+  }
+  const SlicedLife l = SlicedRatingLifeHours(rating.dynamic_N, lines, rating.kind);
+  out.L10h = l.L10h;
+  out.slice_rating_N = l.slice_rating_N;
+  out.weibull_slope = l.weibull_slope;
+  if (l.worst_slice >= 0) {
+    out.worst_slice_y_mm = y[size_t(l.worst_slice)];
+    out.worst_slice_L10h = l.slice_L10h[size_t(l.worst_slice)];
+  }
+  const SlicedDutyLine& first = lines.front();
+  for (int k = 0; k < out.slices; ++k) {
+    std::vector<double> q(first.loads.size());
+    for (size_t i = 0; i < q.size(); ++i) q[i] = first.loads[i][size_t(k)];
+    out.slice_equivalent_load_N.push_back(EquivalentLoad(q, first.weights, rating.kind));
+  }
+  return out;
+}
+
 // The bearing lives over the duty cycle (docs/life.md, "LCR"): for each line a force analysis at its
 // torque over each bearing's load period (model/lcr/life.h), the revolution-weighted equivalent load
 // per line, Palmgren–Miner over the lines (model/common/bearing_life.h).
@@ -253,9 +360,14 @@ LifeResult RunLife(const Study& st, const std::string& file) {
       b.L10h = l.L10h;
       b.max_load_N = l.max_load_N;
       if (b.rating.static_N > 0) b.s0 = StaticSafetyFactor(b.rating.static_N, std::vector<double>{b.max_load_N});
+      if (m.bearing != lcr::LcrBearing::kEccentric && st.contact.given &&
+          st.contact.options.model != lcr::ContactModel::kLine)
+        b.sliced = SlicedRollerLife(st, m.bearing == lcr::LcrBearing::kInputRoller ? Side::kInput : Side::kOutput,
+                                    *m.rating);
       if (b.L10h < out.shortest_L10h || out.shortest.empty()) out.shortest_L10h = b.L10h, out.shortest = b.name;
       out.bearings.push_back(std::move(b));
     }
+    if (st.contact_fatigue) out.cam_contacts = CamContactLives(st);
   } catch (const std::domain_error& e) {
     throw StudyError(file + ": /reducer: infeasible geometry: " + e.what());
   }
@@ -284,8 +396,9 @@ Study Parse(const Node& root) {
   st.tolerances = ParseLcrTolerances(root);
   const bool compliant = st.load_model == lcr::LoadModel::kCompliant || st.tolerances.has_value();
   if (st.evaluate.stress || compliant || root.Has("material")) {
-    root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
+    root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio", "contact_fatigue"});
     st.material = ParseMaterial(root["material"]);
+    st.contact_fatigue = ParseContactFatigue(root["material"]);
   }
   if (st.evaluate.forces || compliant || root.Has("load")) {
     const Node load_node = root["load"];
@@ -312,7 +425,8 @@ Study Parse(const Node& root) {
       load_node["output_torque_Nm"].Fail("a torque > 0 for the transmission error under \"tolerances\"");
   }
   if (root.Has("limits")) {
-    root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N"});
+    root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N", "life_h"});
+    st.life_limit_h = root["limits"].PositiveOr("life_h", 0.0);
     st.contact_stress_limit_MPa = root["limits"].PositiveOr("contact_stress_MPa", kInf);
     st.roller_load_limit_N = root["limits"].PositiveOr("roller_load_N", kInf);
   }
@@ -327,6 +441,11 @@ Study Parse(const Node& root) {
   st.contact = ParseLcrContact(root, st.reducer);
   CheckEccentricBearing(reducer_node);
   st.life = ParseLife(root, st.load);
+  if (st.contact_fatigue && !st.life)
+    root["material"]["contact_fatigue"].Fail(
+        "a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a contact life in hours needs one");
+  if (st.life_limit_h > 0 && !st.life)
+    root["limits"]["life_h"].Fail("a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a life in hours needs one");
   return st;
 }
 
@@ -384,6 +503,16 @@ Result Run(const Study& st, const RunContext& ctx) {
       if (q.stress) {
         j.max_contact_stress_MPa = Max(ss.max_stress_MPa);
         j.contact_length_mm = r.side(s).contact_length();
+        // The contact of the peak pressure, for its subsurface stresses (model/lcr/contact_fatigue.h).
+        const lcr::PeakContact pk = lcr::FindPeakLineContact(r, s, series, st.material.composite_modulus_MPa());
+        j.peak_half_width_mm = pk.half_width_mm;
+        if (pk.angle >= 0) {
+          char where[120];
+          std::snprintf(where, sizeof where, "roller %d at input angle %.6g deg", pk.roller,
+                        series.theta_rad[size_t(pk.angle)] * 180 / kPi);
+          j.subsurface_basis = std::string("Hertz line contact of the cam's peak pressure (") + where +
+                               "), frictionless, homogeneous half-spaces (Johnson 1985, eq. 4.50 ff.)";
+        }
       }
     }
     res.fixed_turret_torque_Nm = Mean(series.input.turret_torque_Nmm) / 1000.0;
@@ -477,6 +606,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
         cj["max_contact_stress_MPa"] = nullptr;  // a loaded roller sits on an undercut point
       }
       cj["contact_length_mm"] = c.contact_length_mm;
+      if (c.peak_half_width_mm > 0 || !std::isfinite(p))
+        cj["subsurface"] = SubsurfaceJson(p, c.peak_half_width_mm, st.material.poisson_ratio, c.subsurface_basis);
       const auto& c3 = s == Side::kInput ? res.contact_input : res.contact_output;
       if (c3) {
         const lcr::ContactModel m = st.contact.options.model;
@@ -531,6 +662,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
     lj["shortest_L10h"] = finite(l.shortest_L10h);
     lj["shortest_bearing"] = l.shortest;
     for (const BearingLifeResult& b : l.bearings) lj[b.name + "_L10h"] = finite(b.L10h);
+    for (const BearingLifeResult& b : l.bearings)
+      if (b.sliced) lj[b.name + "_sliced_L10h"] = finite(b.sliced->L10h);
     lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
     lj["efficiency_energy_mean"] = l.efficiency_energy_mean;
     nlohmann::json lines = nlohmann::json::array();
@@ -556,11 +689,95 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
       bj["max_load_N"] = b.max_load_N;
       bj["L10_Mrev"] = finite(b.L10_Mrev);
       bj["L10h"] = finite(b.L10h);
+      if (b.sliced) {
+        const BearingLifeResult::Sliced& sl = *b.sliced;
+        bj["sliced"] = {{"L10h", finite(sl.L10h)},
+                        {"slices", sl.slices},
+                        {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3},
+                        {"slice_rating_N", sl.slice_rating_N},
+                        {"weibull_slope", sl.weibull_slope},
+                        {"worst_slice_y_mm", sl.worst_slice_y_mm},
+                        {"worst_slice_L10h", finite(sl.worst_slice_L10h)},
+                        {"slice_equivalent_load_N", sl.slice_equivalent_load_N},
+                        {"edge_loaded", sl.edge_loaded},
+                        {"converged", sl.converged},
+                        {"model", "ISO/TS 16281's idea: the roller cut into slices along its length, the load per slice "
+                                  "from the slices contact model (crowning, misalignment) at each sample, each slice "
+                                  "rated C (w/L)^(7/9) (ISO 281 6.1.1), slice lives over the duty cycle combined as "
+                                  "1/L^e = sum 1/L_k^e with e = 9/(2p), which gives back ISO 281 for a uniform load "
+                                  "(docs/life.md)"}};
+      }
       lj[b.name] = bj;
     }
     lj["model"] = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
                   "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
                   "the same load over its period; the modified life (a1, a_ISO) is not modelled (docs/life.md)";
+    // The cams' contact lives (docs/life.md, "Contact fatigue of the cam surfaces"): separate from
+    // the bearings' shortest_L10h.
+    for (const CamContactLifeResult& c : l.cam_contacts) lj[c.name + "_L10h"] = finite(c.L10h);
+    if (!l.cam_contacts.empty()) {
+      const ContactFatigueSpec& cf = *st.contact_fatigue;
+      nlohmann::json cl;
+      cl["reference_pressure_MPa"] = cf.reference_pressure_MPa;
+      cl["reference_cycles"] = cf.reference_cycles;
+      cl["exponent"] = cf.exponent;
+      cl["exponent_source"] = cf.exponent_given ? "given" : "default: Lundberg-Palmgren line contact, n = 8";
+      cl["pressure_model"] = st.contact.given ? ContactModelName(st.contact.options.model) : "line";
+      for (const CamContactLifeResult& c : l.cam_contacts)
+        cl[c.name] = {{"contacts_per_input_revolution", c.passes_per_input_revolution},
+                      {"line_peak_pressure_MPa", c.line_peak_pressure_MPa},
+                      {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
+                      {"L10h", finite(c.L10h)}};
+      cl["model"] =
+          "stress-life law of the material, N = N_ref (p_ref/p0)^n over-rollings of a point of the cam's track to 10% "
+          "failure, Palmgren-Miner over the duty cycle; every over-rolling counted at the cam's peak Hertz pressure of "
+          "its line (n rollers times the turret's turns relative to the cam per input revolution); assumes the same "
+          "contact geometry, material, heat treatment and lubrication as the reference, no fatigue limit, subsurface "
+          "(not surface) initiated fatigue; not part of shortest_L10h (docs/life.md)";
+      lj["contact_life"] = cl;
+    }
+    // One row per element, the same keys as lcr_min_size's best.life.table (report.html's life table).
+    const double limit = st.life_limit_h;
+    lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
+    auto pass = [limit](double h) { return limit > 0 ? nlohmann::json(h >= limit) : nlohmann::json(nullptr); };
+    nlohmann::json table = nlohmann::json::array();
+    for (const BearingLifeResult& b : l.bearings) {
+      nlohmann::json e;
+      e["element"] = b.name;
+      e["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
+      e["equivalent_load_N"] = b.equivalent_load_N;
+      e["max_load_N"] = b.max_load_N;
+      e["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
+      e["dynamic_rating_N"] = b.rating.dynamic_N;
+      e["L10h"] = finite(b.L10h);
+      if (b.rating.static_N > 0) {
+        e["static_rating_N"] = b.rating.static_N;
+        e["s0"] = finite(b.s0);
+      }
+      e["pass"] = pass(b.L10h);
+      table.push_back(e);
+      if (b.sliced) {
+        nlohmann::json es = e;
+        es["element"] = b.name + "_sliced";
+        es["kind"] = "roller, sliced (ISO/TS 16281)";
+        es["L10h"] = finite(b.sliced->L10h);
+        es["pass"] = pass(b.sliced->L10h);
+        table.push_back(es);
+      }
+    }
+    for (const CamContactLifeResult& c : l.cam_contacts) {
+      double peak = 0;
+      for (double p : c.line_peak_pressure_MPa) peak = std::max(peak, p);
+      table.push_back({{"element", c.name},
+                       {"kind", "cam contact"},
+                       {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
+                       {"max_pressure_MPa", finite(peak)},
+                       {"contacts_per_input_revolution", c.passes_per_input_revolution},
+                       {"reference_pressure_MPa", st.contact_fatigue->reference_pressure_MPa},
+                       {"L10h", finite(c.L10h)},
+                       {"pass", pass(c.L10h)}});
+    }
+    lj["table"] = table;
     j["life"] = lj;
   }
   j["notes"] = res.notes;
@@ -741,6 +958,9 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", {
     {"speed ratio", "/speed_ratio", ""},
     {"mean efficiency", "/efficiency/mean", ""},
     {"largest input torque", "/input_torque_Nm/max", "N·m"},
+    {"shortest bearing life L10h", "/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
+    {"input cam contact life L10h", "/life/input_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
+    {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
 });
 }  // namespace
 

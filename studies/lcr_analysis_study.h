@@ -14,6 +14,7 @@
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/life.h"
+#include "studies/contact_fatigue_input.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
@@ -64,6 +65,9 @@ struct Study {
   lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
   std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
   std::optional<LifeSpec> life;                        ///< a speed or a duty cycle given
+  /// "material.contact_fatigue": the cams' contact lives (needs a speed or a duty cycle).
+  std::optional<ContactFatigueSpec> contact_fatigue;
+  double life_limit_h = 0;  ///< "limits.life_h" (0: none): pass/fail of each life in the table
 };
 
 /// The rating life of one bearing over the duty cycle (model/common/bearing_life.h, model/lcr/life.h).
@@ -77,10 +81,31 @@ struct BearingLifeResult {
   double max_load_N = 0;              ///< largest load of any line (P0 of s0)
   double L10_Mrev = 0, L10h = 0;      ///< +inf without load
   double s0 = 0;                      ///< C0 / P0max; 0 when C0 is not given, +inf without load
+  /// The sliced life under the 3D contact's tilt and crowning (a roller with a "contact" model
+  /// other than line; model/common/sliced_bearing_life.h, model/lcr/sliced_life.h).
+  struct Sliced {
+    double L10h = 0;
+    int slices = 0;
+    double slice_rating_N = 0, weibull_slope = 0;
+    double worst_slice_y_mm = 0, worst_slice_L10h = 0;
+    std::vector<double> slice_equivalent_load_N;  ///< first duty line's P per slice (the load's shape)
+    bool converged = true, edge_loaded = false;
+  };
+  std::optional<Sliced> sliced;
+};
+
+/// The contact life of one cam's track over the duty cycle (model/lcr/contact_fatigue.h).
+struct CamContactLifeResult {
+  std::string name;  ///< input_cam_contact, output_cam_contact
+  double passes_per_input_revolution = 0;     ///< N_c = n ψ'
+  std::vector<double> line_peak_pressure_MPa; ///< the cam's peak pressure per duty-cycle line
+  double equivalent_pressure_MPa = 0;         ///< p_eq (Miner-equivalent at the mean speed)
+  double L10h = 0;                            ///< +inf without load
 };
 
 struct LifeResult {
   std::vector<BearingLifeResult> bearings;
+  std::vector<CamContactLifeResult> cam_contacts;  ///< with material.contact_fatigue
   double shortest_L10h = 0;
   std::string shortest;  ///< name of the bearing with the shortest life
   double mean_input_speed_rpm = 0;
@@ -101,6 +126,10 @@ struct CamResult {
   double max_roller_force_N = 0;
   double max_contact_stress_MPa = 0;  ///< +inf when a loaded roller sits on an undercut point
   double contact_length_mm = 0;
+  // The peak contact's line-contact half-width and what it is of (the subsurface stresses,
+  // docs/life.md "Contact fatigue of the cam surfaces"); b = 0: no loaded contact.
+  double peak_half_width_mm = 0;
+  std::string subsurface_basis;
 };
 
 /// Every number the kind reports; the series are those of the forces stage.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "model/lcr/sliced_life.h"
 #include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
@@ -17,15 +18,15 @@ constexpr double kEdgeShareLimit = 0.01;
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "tuning"});
+  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "tuning", "duty_cycle"});
   Study st;
   auto& sp = st.spec;
   st.name = root.StringOr("name", "");
-  sp.reducer = ParseReducer(root["reducer"]);
+  sp.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/false, /*allow_bearing_ratings=*/true);
   root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
   sp.material = ParseMaterial(root["material"]);
   const Node load = root["load"];
-  load.CheckKnownFields({"output_torque_Nm", "overload_torque_Nm", "friction_coefficient"});
+  load.CheckKnownFields({"output_torque_Nm", "overload_torque_Nm", "friction_coefficient", "input_speed_rpm"});
   sp.design_load.output_torque_Nmm = load["output_torque_Nm"].Positive() * 1000.0;
   sp.design_load.friction_coefficient = load.Has("friction_coefficient") ? load["friction_coefficient"].NumberIn(0, 1) : 0.0;
   sp.overload_torque_Nmm = load["overload_torque_Nm"].Positive() * 1000.0;
@@ -72,8 +73,73 @@ Study Parse(const Node& root) {
     st.grid_ny = e[1].Integer(8);
     if (st.grid_nx > 256 || st.grid_ny > 1024) t["grid"].Fail("a grid of at most [256, 1024]");
   }
+  // The tuned design's lives (the tuning's objective stays the contact pressure).
+  std::string why;
+  if (auto lines = ParseDutyCycle(root, sp.design_load.output_torque_Nmm, &why)) {
+    LifeSpec life;
+    life.lines = std::move(*lines);
+    const Node reducer = root["reducer"];
+    for (int k = 0; k < 2; ++k) {
+      const Node side = reducer[k == 0 ? "input" : "output"];
+      if (!side.Has("dynamic_rating_N")) {
+        const std::string path = side.path() + "/dynamic_rating_N";
+        const std::string expected = "the bearing's dynamic load rating C [N] > 0 (" + why + ")";
+        throw StudyError(side.file() + ": " + path + ": expected " + expected + ", found nothing", side.file(), path,
+                         expected, "nothing");
+      }
+      life.dynamic_rating_N[size_t(k)] = side["dynamic_rating_N"].Positive();
+      life.static_rating_N[size_t(k)] = side.PositiveOr("static_rating_N", 0.0);
+    }
+    if (reducer.Has("eccentric_bearing")) life.eccentric = ParseEccentricBearing(reducer["eccentric_bearing"]);
+    st.life = std::move(life);
+  } else if (root["reducer"].Has("eccentric_bearing")) {
+    ParseEccentricBearing(root["reducer"]["eccentric_bearing"]);  // checked, unused without a speed
+  }
   return st;
 }
+
+namespace {
+// The lives of the tuned design (docs/life.md, "Sliced roller life under tilt"): ISO 281 of each
+// bearing over the duty cycle (rigid law, the tuning's angle steps), and each roller sliced with
+// its tuned crowning at every misalignment of the tuning (the slices model's load per slice).
+LifeResult TunedLives(const Study& st, const std::array<objectives::LcrCrowningSideResult, 2>& tuned) {
+  const objectives::LcrCrowningTuningSpec& sp = st.spec;
+  const LifeSpec& spec = *st.life;
+  LifeResult out;
+  for (int k = 0; k < 2; ++k)
+    out.rollers[size_t(k)] = lcr::BearingLifeOverDutyCycle(
+        sp.reducer, sp.material, sp.design_load, lcr::LoadModel::kRigid,
+        k == 0 ? lcr::LcrBearing::kInputRoller : lcr::LcrBearing::kOutputRoller, spec.dynamic_rating_N[size_t(k)],
+        BearingKind::kRoller, spec.lines, sp.angle_steps);
+  if (spec.eccentric)
+    out.eccentric = lcr::BearingLifeOverDutyCycle(sp.reducer, sp.material, sp.design_load, lcr::LoadModel::kRigid,
+                                                  lcr::LcrBearing::kEccentric, spec.eccentric->dynamic_N,
+                                                  spec.eccentric->ball ? BearingKind::kBall : BearingKind::kRoller,
+                                                  spec.lines, sp.angle_steps);
+  for (double gamma : sp.misalignments_rad) {
+    std::array<SlicedLife, 2> at;
+    for (int k = 0; k < 2; ++k) {
+      const lcr::Side s = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
+      lcr::RollerCrowning<double> crown;
+      crown.type = contact::CrowningType::kLogarithmic;
+      crown.coefficient = tuned[size_t(k)].coefficient_mm;
+      crown.effective_length = sp.effective_length_mm[size_t(k)];
+      std::vector<SlicedDutyLine> lines;
+      for (const lcr::LcrDutyLine& line : spec.lines) {
+        lcr::LoadCase load = sp.design_load;
+        load.output_torque_Nmm = line.output_torque_Nmm;
+        lcr::RollerSliceSamples x = lcr::SampleRollerSliceLoads(sp.reducer, sp.material, load, lcr::LoadModel::kRigid, s,
+                                                                sp.angle_steps, crown, gamma, sp.slices);
+        lines.push_back({line.time_share, line.input_speed_rpm * x.revolutions_per_input_revolution,
+                         std::move(x.loads), std::move(x.weights)});
+      }
+      at[size_t(k)] = SlicedRatingLifeHours(spec.dynamic_rating_N[size_t(k)], lines, BearingKind::kRoller);
+    }
+    out.sliced.push_back(at);
+  }
+  return out;
+}
+}  // namespace
 
 Result Run(const Study& st, const RunContext& ctx) {
   Result res;
@@ -130,6 +196,13 @@ Result Run(const Study& st, const RunContext& ctx) {
         c.estimated_error = std::abs(c.accurate_value - c.fast_value);
         res.verification.checks.push_back(c);
       }
+  }
+  if (st.life) {
+    try {
+      res.life = TunedLives(st, res.tuned);
+    } catch (const std::domain_error& e) {
+      throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
+    }
   }
   if (st.half_space_check) {
     res.verification.ran = true;
@@ -190,6 +263,69 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   } else {
     j["verified"] = false;
     j["verification"] = {{"accurate_model", nullptr}, {"note", "tuning.half_space_check is false: not verified"}};
+  }
+  if (res.life) {
+    const LifeResult& l = *res.life;
+    auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    nlohmann::json lj;
+    const char* names[2] = {"input_roller", "output_roller"};
+    double shortest = kInf;
+    std::string shortest_name;
+    nlohmann::json table = nlohmann::json::array();
+    auto row = [&](const std::string& element, const std::string& kind, const lcr::LcrBearingLife& b, double c,
+                   double c0, double hours) {
+      nlohmann::json e = {{"element", element},
+                          {"kind", kind},
+                          {"equivalent_load_N", b.equivalent_load_N},
+                          {"max_load_N", b.max_load_N},
+                          {"revolutions_per_input_revolution", b.revolutions_per_input_revolution},
+                          {"dynamic_rating_N", c},
+                          {"L10h", finite(hours)},
+                          {"pass", nullptr}};
+      if (c0 > 0) e["static_rating_N"] = c0, e["s0"] = b.max_load_N > 0 ? nlohmann::json(c0 / b.max_load_N) : nullptr;
+      table.push_back(e);
+    };
+    for (int k = 0; k < 2; ++k) {
+      lj[std::string(names[k]) + "_L10h"] = finite(l.rollers[size_t(k)].L10h);
+      if (l.rollers[size_t(k)].L10h < shortest || shortest_name.empty())
+        shortest = l.rollers[size_t(k)].L10h, shortest_name = names[k];
+      row(names[k], "roller", l.rollers[size_t(k)], st.life->dynamic_rating_N[size_t(k)],
+          st.life->static_rating_N[size_t(k)], l.rollers[size_t(k)].L10h);
+    }
+    if (l.eccentric) {
+      lj["eccentric_bearing_L10h"] = finite(l.eccentric->L10h);
+      if (l.eccentric->L10h < shortest) shortest = l.eccentric->L10h, shortest_name = "eccentric_bearing";
+      row("eccentric_bearing", st.life->eccentric->ball ? "ball" : "roller", *l.eccentric, st.life->eccentric->dynamic_N,
+          st.life->eccentric->static_N, l.eccentric->L10h);
+    }
+    lj["shortest_L10h"] = finite(shortest);
+    lj["shortest_bearing"] = shortest_name;
+    nlohmann::json sliced = nlohmann::json::array();
+    for (size_t g = 0; g < l.sliced.size(); ++g) {
+      const double mrad = st.spec.misalignments_rad[g] * 1e3;
+      nlohmann::json sj = {{"misalignment_mrad", mrad}};
+      for (int k = 0; k < 2; ++k) {
+        const SlicedLife& sl = l.sliced[g][size_t(k)];
+        sj[std::string(names[k]) + "_sliced_L10h"] = finite(sl.L10h);
+        row(std::string(names[k]) + "_sliced at " + Format(mrad) + " mrad", "roller, sliced (ISO/TS 16281)",
+            l.rollers[size_t(k)], st.life->dynamic_rating_N[size_t(k)], st.life->static_rating_N[size_t(k)], sl.L10h);
+      }
+      sliced.push_back(sj);
+    }
+    lj["sliced"] = sliced;
+    nlohmann::json lines = nlohmann::json::array();
+    for (const lcr::LcrDutyLine& line : st.life->lines)
+      lines.push_back({{"output_torque_Nm", line.output_torque_Nmm / 1000.0},
+                       {"input_speed_rpm", line.input_speed_rpm},
+                       {"time_share", line.time_share}});
+    lj["duty_cycle"] = lines;
+    lj["life_h"] = nullptr;
+    lj["table"] = table;
+    lj["model"] = "lives of the tuned design (the tuning's objective is the contact pressure, not the life): ISO 281:2007 "
+                  "basic rating life of each bearing over the duty cycle (rigid load law, the tuning's angle steps), and "
+                  "each roller sliced with its tuned crowning at every misalignment of the tuning (ISO/TS 16281's idea, "
+                  "docs/life.md \"Sliced roller life under tilt\"); sliced lives are not in shortest_L10h";
+    j["life"] = lj;
   }
   j["notes"] = nlohmann::json::array(
       {"uncrowned rollers are edge-loaded: their peak is the end row's pressure and grows as the resolution "

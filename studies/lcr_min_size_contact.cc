@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "model/contact/hertz.h"
+#include "studies/contact_fatigue_input.h"
 #include "studies/format.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/lcr_min_size_study.h"
@@ -164,6 +166,15 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
                            {"edge_loaded", d.edge_loaded},
                            {"slice_width_mm", d.slice_width_mm},
                            {"interpolation_error_MPa", d.interpolation_error_MPa}};
+    if (d.worst_angle >= 0 && std::isfinite(d.max_contact_stress_MPa)) {
+      // The worst slice as a line contact of its own peak pressure, b = 2 p0 R'/E* (model/contact/hertz.h).
+      const double b_mm = contact::LineContactHalfWidthFromPeakPressure(
+          d.max_contact_stress_MPa, d.stress_radius_mm[size_t(d.worst_angle)], s.base.material.composite_modulus_MPa());
+      side["subsurface"] = SubsurfaceJson(d.max_contact_stress_MPa, b_mm, s.base.material.poisson_ratio,
+                                          "the worst slice of the slices model taken as a line contact of its peak "
+                                          "pressure and half-width b = 2 p0 R'/E* (frictionless, homogeneous "
+                                          "half-spaces, Johnson 1985 eq. 4.50 ff.)");
+    }
     if (c3.overload_torque_Nmm > 0) {
       side["overload_edge_margin"] = MaybeFinite(b.contact->overload_edge_margin[k]);
       side["overload_edge_loaded"] = b.contact->overload_edge_loaded[k];

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "model/lcr/kinematics.h"
+#include "studies/contact_fatigue_input.h"
 #include "studies/lcr_input.h"
 #include "studies/lcr_min_size_contact.h"
 #include "studies/report.h"
@@ -565,6 +566,11 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
     b[sides[i]]["max_roller_force_N"] = k.max_force_N[i];
     b[sides[i]]["undercut_margin_mm"] = k.undercut_margin_mm[i];
     b[sides[i]]["roller_gap_mm"] = k.roller_gap_mm[i];
+    if (k.peak_half_width_mm[i] > 0 || !std::isfinite(k.max_stress_MPa[i]))
+      b[sides[i]]["subsurface"] = SubsurfaceJson(
+          k.max_stress_MPa[i], k.peak_half_width_mm[i], s.base.material.poisson_ratio,
+          "Hertz line contact of the cam's peak pressure in the dense check, frictionless, homogeneous "
+          "half-spaces (Johnson 1985, eq. 4.50 ff.)");
   }
   if (best.roller >= 0) b["catalogue_roller"] = s.catalogue[best.roller].name;
   b["binding"] = Unique(best.outcome.result.active);

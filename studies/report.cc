@@ -113,7 +113,138 @@ figure{margin:0;border:1px solid #ddd;padding:6px;overflow-x:auto}figure.wide{gr
 figure svg{max-width:100%;height:auto}pre{font-size:12px;background:#f7f7f7;padding:8px;overflow-x:auto}
 code{font-size:13px}ul.w li{color:#8a5300})";
 
+// A number of a row, or NaN.
+double RowNumber(const nlohmann::json& row, const char* key) {
+  return row.contains(key) && row[key].is_number() ? row[key].get<double>() : NAN;
+}
+
+std::string Cell(double v, const std::string& unit = "") {
+  return std::isfinite(v) ? Number(v) + (unit.empty() ? "" : " " + unit) : "";
+}
+
+// The life table as HTML: element, kind, equivalent load, C, C0, s0, L10h, pass/fail.
+void LifeTableHtml(std::ostringstream& os, const std::string& pointer, const nlohmann::json& life) {
+  const nlohmann::json& table = life["table"];
+  const double limit = life.contains("life_h") && life["life_h"].is_number() ? life["life_h"].get<double>() : NAN;
+  os << "<p class=\"meta\"><code>" << Html(pointer) << "/table</code>"
+     << (std::isfinite(limit) ? " · limit <code>life_h</code> = " + Number(limit) + " h" : std::string(" · no life limit"))
+     << "</p>\n<table>\n<tr><th>element</th><th>kind</th><th>equivalent load</th><th>C</th><th>C0</th><th>s0</th>"
+     << "<th>L10h</th><th>status</th></tr>\n";
+  for (const nlohmann::json& row : table) {
+    if (!row.is_object()) continue;
+    const std::string element = row.contains("element") ? Value(row["element"]) : "";
+    const std::string kind = row.contains("kind") ? Value(row["kind"]) : "";
+    // A cam track's contact life is rated by a pressure (material.contact_fatigue), a bearing's by a load.
+    std::string load = Cell(RowNumber(row, "equivalent_load_N"), "N");
+    if (load.empty() && std::isfinite(RowNumber(row, "equivalent_pressure_MPa")))
+      load = "p_eq " + Cell(RowNumber(row, "equivalent_pressure_MPa"), "MPa");
+    std::string c = Cell(RowNumber(row, "dynamic_rating_N"), "N");
+    if (c.empty() && std::isfinite(RowNumber(row, "reference_pressure_MPa")))
+      c = "p_ref " + Cell(RowNumber(row, "reference_pressure_MPa"), "MPa");
+    const bool has_life = row.contains("L10h") && row["L10h"].is_number();
+    const std::string l10 = has_life ? Cell(row["L10h"].get<double>(), "h") : "no load";
+    std::string status, cls;
+    if (row.contains("pass") && row["pass"].is_boolean()) {
+      const bool ok = row["pass"].get<bool>();
+      status = ok ? "pass" : "FAIL";
+      cls = ok ? "pass" : "fail";
+    }
+    os << "<tr><td>" << Html(element) << "</td><td>" << Html(kind) << "</td><td class=\"n\">" << Html(load)
+       << "</td><td class=\"n\">" << Html(c) << "</td><td class=\"n\">"
+       << Html(Cell(RowNumber(row, "static_rating_N"), "N")) << "</td><td class=\"n\">"
+       << Html(Cell(RowNumber(row, "s0"))) << "</td><td class=\"n\">" << Html(l10) << "</td><td class=\"" << cls
+       << "\">" << status << "</td></tr>\n";
+  }
+  os << "</table>\n";
+}
+
 }  // namespace
+
+std::vector<std::pair<std::string, const nlohmann::json*>> LifeTables(const nlohmann::json& result) {
+  std::vector<std::pair<std::string, const nlohmann::json*>> out;
+  const auto is_life = [](const nlohmann::json& v) {
+    return v.is_object() && v.contains("table") && v["table"].is_array() && !v["table"].empty();
+  };
+  if (!result.is_object()) return out;
+  if (result.contains("life") && is_life(result["life"])) out.emplace_back("/life", &result["life"]);
+  for (const auto& [key, v] : result.items())
+    if (v.is_object() && v.contains("life") && is_life(v["life"])) out.emplace_back("/" + key + "/life", &v["life"]);
+  return out;
+}
+
+std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::string& title) {
+  struct Bar {
+    std::string label;
+    double hours;  // NaN: no load (infinite life)
+    bool fails;
+  };
+  std::vector<Bar> bars;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const nlohmann::json& row : table) {
+    if (!row.is_object()) continue;
+    const double h = row.contains("L10h") && row["L10h"].is_number() ? row["L10h"].get<double>() : NAN;
+    const bool fails = row.contains("pass") && row["pass"].is_boolean() && !row["pass"].get<bool>();
+    bars.push_back({row.contains("element") ? Value(row["element"]) : "", h > 0 ? h : NAN, fails});
+    if (h > 0 && std::isfinite(h)) lo = std::min(lo, h), hi = std::max(hi, h);
+  }
+  if (limit_h > 0 && std::isfinite(limit_h)) lo = std::min(lo, limit_h), hi = std::max(hi, limit_h);
+  if (!std::isfinite(lo)) lo = 1, hi = 10;
+  // Whole decades around the data, at least one.
+  double d0 = std::floor(std::log10(lo)), d1 = std::ceil(std::log10(hi));
+  if (d1 <= d0) d1 = d0 + 1;
+  const double left = 190, right = 30, top = 52, row_h = 26, width = 720;
+  const double plot_w = width - left - right, height = top + row_h * bars.size() + 50;
+  const auto x_of = [&](double h) { return left + plot_w * (std::log10(h) - d0) / (d1 - d0); };
+  std::ostringstream os;
+  char buf[400];
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << Number(width) << "\" height=\"" << Number(height)
+     << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  os << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  os << "<text x=\"" << Number(width / 2) << "\" y=\"18\" text-anchor=\"middle\" font-size=\"14\">" << Html(title)
+     << "</text>\n";
+  const double bottom = top + row_h * bars.size();
+  for (int d = int(d0); d <= int(d1); ++d) {
+    const double x = x_of(std::pow(10.0, d));
+    std::snprintf(buf, sizeof buf,
+                  "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#dddddd\"/>\n"
+                  "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">1e%d</text>\n",
+                  x, top - 4, x, bottom, x, bottom + 16, d);
+    os << buf;
+  }
+  std::snprintf(buf, sizeof buf, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">L10h [h] (log scale)</text>\n",
+                left + plot_w / 2, bottom + 36);
+  os << buf;
+  for (size_t i = 0; i < bars.size(); ++i) {
+    const Bar& b = bars[i];
+    const double y = top + row_h * i;
+    std::snprintf(buf, sizeof buf, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\">", left - 6, y + row_h * 0.65);
+    os << buf << Html(b.label) << "</text>\n";
+    if (std::isnan(b.hours)) {
+      std::snprintf(buf, sizeof buf, "<text x=\"%.2f\" y=\"%.2f\">no load</text>\n", left + 4, y + row_h * 0.65);
+      os << buf;
+      continue;
+    }
+    const double x = std::max(left, std::min(left + plot_w, x_of(b.hours)));
+    std::snprintf(buf, sizeof buf,
+                  "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n"
+                  "<text x=\"%.2f\" y=\"%.2f\">",
+                  left, y + 4, std::max(x - left, 0.5), row_h - 8, b.fails ? "#d62728" : "#1f77b4",
+                  std::min(x + 4, left + plot_w - 60), y + row_h * 0.65);
+    os << buf << Html(Number(b.hours)) << " h</text>\n";
+  }
+  if (limit_h > 0 && std::isfinite(limit_h)) {
+    const double x = x_of(limit_h);
+    std::snprintf(buf, sizeof buf,
+                  "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#000000\" stroke-width=\"1.5\" "
+                  "stroke-dasharray=\"6,4\"/>\n<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">",
+                  x, top - 4, x, bottom, x, top - 8);
+    os << buf << "limit life_h = " << Html(Number(limit_h)) << " h</text>\n";
+  }
+  std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#000000\"/>\n", left,
+                top - 4, left, bottom);
+  os << buf << "</svg>\n";
+  return os.str();
+}
 
 bool RegisterReport(const std::string& kind, std::vector<Headline> headlines) {
   Reports()[kind] = std::move(headlines);
@@ -240,6 +371,12 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
     os << "</ul>\n";
   }
 
+  const auto lives = LifeTables(result);
+  if (!lives.empty()) {
+    os << "<h2>Lives</h2>\n";
+    for (const auto& [pointer, life] : lives) LifeTableHtml(os, pointer, *life);
+  }
+
   os << "<h2>Plots</h2>\n<div class=\"plots\">\n";
   int plots = 0;
   for (const auto& [file, content] : files) {
@@ -268,6 +405,17 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
 }
 
 void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs) {
+  const auto& files = outputs.files();
+  if (const auto it = files.find("result.json"); it != files.end()) {
+    const nlohmann::json result = nlohmann::json::parse(it->second, nullptr, false);
+    const auto lives = result.is_discarded() ? decltype(LifeTables(result)){} : LifeTables(result);
+    for (size_t i = 0; i < lives.size(); ++i) {
+      const nlohmann::json& life = *lives[i].second;
+      const double limit = life.contains("life_h") && life["life_h"].is_number() ? life["life_h"].get<double>() : 0.0;
+      outputs.Add(i == 0 ? "life.svg" : "life_" + std::to_string(i + 1) + ".svg",
+                  SvgLifeBars(life["table"], limit, "Lives L10h (" + lives[i].first + "/table)"));
+    }
+  }
   outputs.Add("report.html", HtmlReport(kind, study, outputs));
 }
 

@@ -65,7 +65,18 @@ std::string VerdictLine(const HeadlineTable& table);
 /// The page for a run of `kind` on `study` whose files are `outputs` (result.json, *.svg, …).
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs);
 
-/// Adds report.html (HtmlReport) to outputs.
+/// The life tables of a result: every object named "life" with a "table" array, at the top level
+/// or one level down (lcr_analysis's /life, the sizing kinds' /best/life), with its JSON pointer.
+std::vector<std::pair<std::string, const nlohmann::json*>> LifeTables(const nlohmann::json& result);
+
+/// A horizontal bar plot of the lives L10h [h] of a life table's rows on a logarithmic axis, the
+/// limit life_h (when > 0) drawn as a vertical dashed line; bars that fail it red. Rows without a
+/// finite L10h (no load) are listed as "no load" at the axis end.
+std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::string& title);
+
+/// Adds report.html (HtmlReport) to outputs, and before it life.svg (SvgLifeBars) when result.json
+/// has a life table (LifeTables; life_<n>.svg for a second one), so that the plot is a file of the
+/// run like every other.
 void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs);
 
 }  // namespace camopt::studies

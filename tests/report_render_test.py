@@ -3,7 +3,7 @@
 
 Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR]
 
-For each of three examples (LCR analysis, LCR min-size, cycloid LTCA) it runs camopt, then checks
+For each of four examples (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives: its life table and life.svg) it runs camopt, then checks
 report.html:
   * statically: self-contained (no src/href/url() other than data: and in-page #anchors, no
     <script>), every inline <svg> is well-formed XML, one inline plot per .svg file of the run;
@@ -27,6 +27,7 @@ EXAMPLES = [  # (example, screenshot name)
     ("lcr_ii", "report_lcr_analysis.png"),
     ("lcr_min_size", "report_lcr_min_size.png"),
     ("cycloid_ltca_nnm_lcm", "report_cycloid_ltca.png"),
+    ("lcr_ii_life", "report_lcr_life.png"),
 ]
 WINDOW = (1280, 2000)
 

@@ -177,5 +177,60 @@ TEST(HtmlReport, EveryRunWritesOne) {
   EXPECT_NE(out.files().at("report.html").find("torsional rigidity at end b"), std::string::npos);
 }
 
+// A life table anywhere a kind writes one (here /best/life, as the sizing kinds do): the table on
+// the page, and life.svg, a bar per element on a log axis with the limit drawn.
+Outputs LifeOutputs() {
+  Outputs out;
+  const nlohmann::json table = nlohmann::json::parse(R"([
+    {"element": "input_roller", "kind": "roller", "equivalent_load_N": 543.5, "dynamic_rating_N": 3300,
+     "static_rating_N": 3400, "s0": 3.55, "L10h": 2000, "pass": true},
+    {"element": "eccentric_bearing", "kind": "ball", "equivalent_load_N": 2020.8, "dynamic_rating_N": 9000,
+     "L10h": 500, "pass": false},
+    {"element": "input_cam_contact", "kind": "cam contact", "equivalent_pressure_MPa": 1369.4,
+     "reference_pressure_MPa": 1500, "L10h": 1000, "pass": true},
+    {"element": "idle_roller", "kind": "roller", "equivalent_load_N": 0, "dynamic_rating_N": 3300, "L10h": null,
+     "pass": true}])");
+  out.AddJson("result.json", {{"best", {{"life", {{"life_h", 1000.0}, {"table", table}}}}}});
+  return out;
+}
+
+TEST(HtmlReport, LifeTableAndBarPlotOfAnyResultWithALife) {
+  Outputs out = LifeOutputs();
+  AddReport("no_such_kind_for_report", {{"name", "n"}}, out);
+  ASSERT_TRUE(out.files().count("life.svg"));
+  const std::string& html = out.files().at("report.html");
+  EXPECT_NE(html.find("<h2>Lives</h2>"), std::string::npos);
+  EXPECT_NE(html.find("<code>/best/life/table</code>"), std::string::npos);
+  EXPECT_NE(html.find("<td>input_roller</td><td>roller</td><td class=\"n\">543.5 N</td><td class=\"n\">3300 N</td>"
+                      "<td class=\"n\">3400 N</td><td class=\"n\">3.55</td><td class=\"n\">2000 h</td>"
+                      "<td class=\"pass\">pass</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td class=\"n\">500 h</td><td class=\"fail\">FAIL</td>"), std::string::npos);
+  EXPECT_NE(html.find("p_eq 1369.4 MPa</td><td class=\"n\">p_ref 1500 MPa"), std::string::npos);
+  EXPECT_NE(html.find(">no load</td>"), std::string::npos);
+  EXPECT_EQ(Count(html, "<figcaption>life.svg</figcaption>"), 1);
+  // Axis: decades 10² … 10⁴ over 500 px from x = 190: the limit 1000 h at 190 + 500·(3 − 2)/2 = 440;
+  // the 2000 h bar 500·(log10 2000 − 2)/2 = 325.26 px long, the 500 h bar (failing: red) 174.74 px.
+  const std::string& svg = out.files().at("life.svg");
+  EXPECT_NE(svg.find("x1=\"440.00\" y1=\"48.00\" x2=\"440.00\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("width=\"325.26\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("width=\"174.74\" height=\"18.00\" fill=\"#d62728\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">1e2</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">1e4</text>"), std::string::npos);
+  EXPECT_NE(svg.find("limit life_h = 1000 h"), std::string::npos);
+  EXPECT_NE(svg.find(">no load</text>"), std::string::npos);
+  // Same outputs, same files.
+  Outputs again = LifeOutputs();
+  AddReport("no_such_kind_for_report", {{"name", "n"}}, again);
+  EXPECT_EQ(again.files(), out.files());
+}
+
+TEST(HtmlReport, NoLifeNoLifePlot) {
+  Outputs out = SampleOutputs(1400);
+  AddReport("report_test_kind", {{"name", "n"}}, out);
+  EXPECT_FALSE(out.files().count("life.svg"));
+  EXPECT_EQ(out.files().at("report.html").find("<h2>Lives</h2>"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace camopt::studies

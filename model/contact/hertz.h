@@ -37,6 +37,14 @@ T LineContactHalfWidth(const T& force, const T& length, const T& r_eff, const T&
   return sqrt(T(4.0) * force * r_eff / (T(kPi) * length * e_star));
 }
 
+/// Line contact half-width from its peak pressure, b = 2 p_max R'/E*: the ratio of
+/// LineContactHalfWidth and LineContactPeakPressure (b²/p_max² = 4 R'²/E*², F and L cancel), so it
+/// holds for a slice of a finite-length contact too (model/contact/roller_slices.h: b_j, p0_j).
+template <typename T>
+T LineContactHalfWidthFromPeakPressure(const T& peak_pressure, const T& r_eff, const T& e_star) {
+  return T(2.0) * peak_pressure * r_eff / e_star;
+}
+
 /// Line contact: the load per unit effective radius at which the peak pressure reaches p_max,
 /// F / R' = π L p_max² / E* (the inverse of LineContactPeakPressure; a capacity margin for sizing).
 template <typename T>

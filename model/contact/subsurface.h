@@ -190,6 +190,21 @@ StressPeak<T> LineContactMaxVonMises(const T& p0, const T& b, double nu) {
   return {subsurface_internal::VonMises(LineContactAxisStresses(p0, b, z, nu)), z, T(0.0)};
 }
 
+/// The three subsurface maxima of a line contact that a fatigue check compares: the largest
+/// principal shear τ1 (Tresca; 0.30028 p0 at 0.78615 b), the largest orthogonal shear |τ_xz|
+/// (Lundberg–Palmgren's τ0; 0.25 p0 at 0.5 b, x = ±0.866 b) and the largest von Mises stress
+/// (0.5575 p0 at 0.7043 b for ν = 0.3), each with its depth (docs/life.md, "Contact fatigue").
+template <typename T>
+struct LineSubsurfaceMaxima {
+  StressPeak<T> max_shear, max_orthogonal_shear, max_von_mises;
+};
+
+/// @param p0 peak pressure [MPa], b half-width [mm], nu Poisson's ratio of the (common) material.
+template <typename T>
+LineSubsurfaceMaxima<T> LineContactSubsurfaceMaxima(const T& p0, const T& b, double nu) {
+  return {LineContactMaxPrincipalShear(p0, b), LineContactMaxOrthogonalShear(p0, b), LineContactMaxVonMises(p0, b, nu)};
+}
+
 // ---- Circular and elliptical point contact -------------------------------------------------------
 
 /// Circular contact of radius a, stresses on the axis r = 0 at depth z > 0 (Johnson eq. 3.45):
