@@ -335,5 +335,23 @@ TEST(CycloidLife, BadInputExitsTwoNamingThePath) {
   ExpectStudyRejected(s, "cyc-life-angles", "/duty_cycle", "whole mesh periods");
 }
 
+TEST(CycloidLife, SizingLifeLimitNeedsTheSpeedAndRatings) {
+  using camopt::testing::ExpectStudyRejected;
+  const nlohmann::json base = nlohmann::json::parse(
+      camopt::testing::ReadFile(camopt::testing::SourcePath("studies/examples/cycloid_min_size_ratio29_life.json")));
+  nlohmann::json s = base;
+  s.erase("load");
+  ExpectStudyRejected(s, "cyc-size-life-no-speed", "/limits/life_h", "needs the speed");
+  s = base;
+  s["duty_cycle"] = {{{"output_torque_Nm", 20}, {"input_speed_rpm", 100}, {"time_share", 1.0}}};
+  ExpectStudyRejected(s, "cyc-size-life-both", "/load/input_speed_rpm", "one or the other");
+  s = base;
+  s["crank_bearing"].erase("dynamic_rating_N");
+  ExpectStudyRejected(s, "cyc-size-life-no-c", "/crank_bearing/dynamic_rating_N", "dynamic load rating C");
+  s = base;
+  s["limits"]["life_h"] = -5;
+  ExpectStudyRejected(s, "cyc-size-life-negative", "/limits/life_h", "expected");
+}
+
 }  // namespace
 }  // namespace camopt::cycloid
