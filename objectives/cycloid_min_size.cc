@@ -90,6 +90,95 @@ CrowningFit CrowningFitOf(const cycloid::Drive& d, const cycloid::Crowning& c) {
   return f;
 }
 
+// A drive over a Jet whose derivative is along the sizing variable `name` (µm variables: 1e-3 mm).
+using J1 = ceres::Jet<double, 1>;
+cycloid::DriveTpl<J1> JetDrive(const cycloid::Drive& d, const std::string& name) {
+  cycloid::DriveTpl<J1> dj;
+  dj.teeth = d.teeth;
+  dj.rollers = d.rollers;
+  dj.eccentricity_mm = J1(d.eccentricity_mm);
+  dj.roller_position_radius_mm = J1(d.roller_position_radius_mm);
+  dj.roller_radius_mm = J1(d.roller_radius_mm);
+  dj.face_width_mm = J1(d.face_width_mm);
+  dj.delta_position_mm = J1(d.delta_position_mm);
+  dj.delta_radius_mm = J1(d.delta_radius_mm);
+  if (name == "eccentricity_mm") dj.eccentricity_mm.v[0] = 1;
+  if (name == "roller_position_radius_mm") dj.roller_position_radius_mm.v[0] = 1;
+  if (name == "roller_radius_mm") dj.roller_radius_mm.v[0] = 1;
+  if (name == "face_width_mm") dj.face_width_mm.v[0] = 1;
+  if (name == "delta_position_um") dj.delta_position_mm.v[0] = 1e-3;
+  if (name == "delta_radius_um") dj.delta_radius_mm.v[0] = 1e-3;
+  return dj;
+}
+
+// The life margins m = ln(L10h / H) of the rated bearings (crank bearing, then the pins) over T
+// (docs/life.md, "Cycloid"): per duty line i the ring-pin resultants ring[i][k] (crank frame) at the
+// sizing's angles φ_k (one mesh period), the pins' loads pin_load[i][k n1 + r] and their spin rates
+// pin_weight[k n1 + r] (the same on every line). Crank bearing: |B| over its load period, its
+// p-mean per line, n1/n2 revolutions per input revolution; pins: the spin-weighted 10/3-mean, the
+// mean spin per input revolution; Palmgren–Miner over the lines (LifeMargin).
+template <typename T>
+std::vector<T> LifeMarginsOf(const CycloidSizingLife& life, double required_h, const cycloid::Drive& d,
+                             const std::vector<std::vector<Vec2<T>>>& ring, const std::vector<std::vector<T>>& pin_load,
+                             const std::vector<T>& pin_weight, const std::vector<double>& angles) {
+  std::vector<T> out;
+  std::vector<DutyCycleLine<T>> crank;
+  const double rc = cycloid::CrankBearingRevolutionsPerInputRevolution(d);
+  for (size_t i = 0; i < life.lines.size(); ++i) {
+    const OperatingLine& l = life.lines[i];
+    const std::vector<T> loads =
+        cycloid::CrankBearingLoadsOverPeriod<T>(d, life.output, ring[i], angles, l.output_torque_Nmm);
+    crank.push_back({l.time_share, T(l.input_speed_rpm * rc), {EquivalentLoad(loads, life.crank_kind)}});
+  }
+  out.push_back(LifeMargin(T(life.crank_dynamic_N), crank, life.crank_kind, required_h));
+  if (life.pins_rated) {
+    T spin(0.0);
+    for (const T& w : pin_weight) spin += w;
+    spin /= double(pin_weight.size());
+    std::vector<DutyCycleLine<T>> pins;
+    for (size_t i = 0; i < life.lines.size(); ++i)
+      pins.push_back({life.lines[i].time_share, T(life.lines[i].input_speed_rpm) * spin,
+                      {EquivalentLoad(pin_load[i], pin_weight, BearingKind::kRoller)}});
+    out.push_back(LifeMargin(T(life.pins_dynamic_N), pins, BearingKind::kRoller, required_h));
+  }
+  return out;
+}
+
+// The lives of a design as cycloid_ltca reports them (LifeOverDutyCycle of each rated bearing).
+std::vector<CycloidBearingLife> LivesOf(const CycloidSizingLife& life, const cycloid::Drive& d,
+                                        const std::vector<const std::vector<cycloid::MeshLoad>*>& meshes) {
+  std::vector<cycloid::BearingLineSamples> crank, pins;
+  for (size_t i = 0; i < life.lines.size(); ++i) {
+    const OperatingLine& l = life.lines[i];
+    const std::vector<double> b = cycloid::CrankBearingLoads(d, life.output, *meshes[i], l.output_torque_Nmm);
+    crank.push_back({l.time_share, l.input_speed_rpm, b, std::vector<double>(b.size(), 1.0)});
+    if (life.pins_rated) {
+      const cycloid::PinLoadSamples p = cycloid::PinBearingLoads(d, *meshes[i]);
+      pins.push_back({l.time_share, l.input_speed_rpm, p.load_N, p.spin_rate});
+    }
+  }
+  std::vector<CycloidBearingLife> out;
+  auto add = [&](const std::string& name, bool ball, double c, double c0, double revolutions,
+                 const std::vector<cycloid::BearingLineSamples>& lines) {
+    CycloidBearingLife b;
+    b.name = name;
+    b.ball = ball;
+    b.dynamic_N = c;
+    b.static_N = c0;
+    b.life = cycloid::LifeOverDutyCycle(c, ball ? BearingKind::kBall : BearingKind::kRoller, revolutions, lines);
+    if (c0 > 0) b.s0 = StaticSafetyFactor(c0, std::vector<double>{b.life.max_load_N});
+    out.push_back(std::move(b));
+  };
+  add("crank_bearing", life.crank_kind == BearingKind::kBall, life.crank_dynamic_N, life.crank_static_N,
+      cycloid::CrankBearingRevolutionsPerInputRevolution(d), crank);
+  if (life.pins_rated) {
+    double spin = 0.0;
+    for (double w : pins.front().weight) spin += w;
+    add("pins", false, life.pins_dynamic_N, life.pins_static_N, spin / double(pins.front().weight.size()), pins);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> CycloidSizingVariableNames() {
@@ -154,25 +243,10 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
       }
   }
   if (with_gradient) {
-    using J = ceres::Jet<double, 1>;
+    using J = J1;
     const bool volume = spec_.objective == CycloidSizeObjective::kVolume;
     for (size_t j = 0; j < nv; ++j) {
-      cycloid::DriveTpl<J> dj;
-      dj.teeth = d.teeth;
-      dj.rollers = d.rollers;
-      dj.eccentricity_mm = J(d.eccentricity_mm);
-      dj.roller_position_radius_mm = J(d.roller_position_radius_mm);
-      dj.roller_radius_mm = J(d.roller_radius_mm);
-      dj.face_width_mm = J(d.face_width_mm);
-      dj.delta_position_mm = J(d.delta_position_mm);
-      dj.delta_radius_mm = J(d.delta_radius_mm);
-      const std::string& v = spec_.variables[j].name;
-      if (v == "eccentricity_mm") dj.eccentricity_mm.v[0] = 1;
-      if (v == "roller_position_radius_mm") dj.roller_position_radius_mm.v[0] = 1;
-      if (v == "roller_radius_mm") dj.roller_radius_mm.v[0] = 1;
-      if (v == "face_width_mm") dj.face_width_mm.v[0] = 1;
-      if (v == "delta_position_um") dj.delta_position_mm.v[0] = 1e-3;
-      if (v == "delta_radius_um") dj.delta_radius_mm.v[0] = 1e-3;
+      const cycloid::DriveTpl<J> dj = JetDrive(d, spec_.variables[j].name);
       const ClosedForms<J> cj = ClosedFormsOf(dj, spec_.limits);
       e.d_objective.push_back((volume ? cj.volume : cj.diameter).v[0]);
       e.d_curtate.push_back(cj.curtate.v[0]);
@@ -189,8 +263,12 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   e.unloaded_te_arcsec.assign(na, NAN);
   e.lte_peak_to_peak_arcsec = e.stress_MPa = e.max_pair_load_N = NAN;
   e.edge_margin_um = over ? NAN : kInf;
+  const bool life_rows = spec_.life && spec_.limits.life_h > 0;
+  const size_t nl = life_rows ? (spec_.life->pins_rated ? 2 : 1) : 0;
+  e.life_margin.assign(nl, NAN);
   auto nan_gradients = [&] {
     if (!with_gradient) return;
+    e.d_life_margin.assign(nl * nv, NAN);
     e.d_pair_peak.assign(na * n1 * nv, NAN);
     e.d_end_distance.assign((over ? na : 0) * nv, NAN);
     e.d_unloaded_te.assign(na * nv, NAN);
@@ -213,6 +291,14 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
     last_x_ = x;
     last_design_ = cycloid::RunCycle(des, spec_.design_torque_Nmm, angles_);
     if (over) last_over_ = cycloid::RunCycle(*ovl, spec_.overload_torque_Nmm, angles_);
+    // Each duty line at another torque is one cycle of its own (the contact is nonlinear).
+    last_lines_.clear();
+    if (spec_.life)
+      for (const OperatingLine& l : spec_.life->lines) {
+        last_lines_.emplace_back();
+        if (l.output_torque_Nmm > 0 && l.output_torque_Nmm != spec_.design_torque_Nmm)
+          last_lines_.back() = cycloid::RunCycle(des, l.output_torque_Nmm, angles_);
+      }
     ++evaluations_;
     value_seconds_ += Seconds(t0);
   }
@@ -232,6 +318,65 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
     for (size_t k = 0; k < na; ++k) e.end_distance_um[k] = mc.meshes[k].end_distance_mm * 1e3;
     e.converged = e.converged && mc.converged;
   }
+  // The duty lines' meshes: the design cycle's, a line's own cycle, or unloaded (no torque).
+  std::vector<cycloid::MeshLoad> unloaded;
+  for (double a : angles_) {
+    cycloid::MeshLoad m;
+    m.crank_angle_rad = a;
+    unloaded.push_back(m);
+  }
+  std::vector<const std::vector<cycloid::MeshLoad>*> line_meshes;
+  if (spec_.life) {
+    for (size_t i = 0; i < spec_.life->lines.size(); ++i) {
+      const double torque = spec_.life->lines[i].output_torque_Nmm;
+      line_meshes.push_back(torque == spec_.design_torque_Nmm ? &dc.meshes
+                            : last_lines_[i]                  ? &last_lines_[i]->meshes
+                                                              : &unloaded);
+      if (last_lines_[i]) e.converged = e.converged && last_lines_[i]->converged;
+    }
+    e.lives = LivesOf(*spec_.life, d, line_meshes);
+    e.shortest_life_h = kInf;
+    for (const CycloidBearingLife& b : e.lives) e.shortest_life_h = std::min(e.shortest_life_h, b.life.L10h);
+  }
+  // The life rows over double (their values; the same numbers as e.lives' L10h, in logarithms).
+  auto life_inputs = [&](auto zero, const auto& load_of, const auto& lag_of, const auto& unloaded_at,
+                         const auto& spin_of, auto& ring, auto& pin_load, auto& pin_weight) {
+    using T = decltype(zero);
+    ring.assign(line_meshes.size(), {});
+    pin_load.assign(line_meshes.size(), std::vector<T>(na * n1, zero));
+    pin_weight.assign(na * n1, zero);
+    for (size_t k = 0; k < na; ++k) {
+      const auto& u = unloaded_at(k);
+      for (size_t r = 0; r < n1; ++r) pin_weight[k * n1 + r] = spin_of(u, r, k);
+      for (size_t i = 0; i < line_meshes.size(); ++i) {
+        const cycloid::MeshLoad& m = (*line_meshes[i])[k];
+        std::vector<std::pair<int, T>> loads;
+        for (size_t p = 0; p < m.pairs.size(); ++p) {
+          loads.push_back({m.pairs[p].roller, load_of(i, k, p)});
+          pin_load[i][k * n1 + size_t(m.pairs[p].roller)] = loads.back().second;
+        }
+        ring[i].push_back(cycloid::RingPinResultantCrankFrame(u.drive, u.mesh, loads, T(angles_[k]), lag_of(i, k)));
+      }
+    }
+  };
+  if (life_rows) {
+    struct U {
+      const cycloid::Drive& drive;
+      cycloid::UnloadedMesh<double> mesh;
+    };
+    std::vector<U> meshes_u;
+    for (size_t k = 0; k < na; ++k) meshes_u.push_back({d, cycloid::UnloadedTca<double>(d, angles_[k])});
+    std::vector<std::vector<Vec2<double>>> ring;
+    std::vector<std::vector<double>> pin_load;
+    std::vector<double> pin_weight;
+    life_inputs(
+        0.0, [&](size_t i, size_t k, size_t p) { return (*line_meshes[i])[k].pairs[p].load_N; },
+        [&](size_t i, size_t k) { return (*line_meshes[i])[k].rotation_rad; },
+        [&](size_t k) -> const U& { return meshes_u[k]; },
+        [&](const U& u, size_t r, size_t k) { return cycloid::RollerSpinRate(d, u.mesh.pairs[r], angles_[k]); }, ring,
+        pin_load, pin_weight);
+    e.life_margin = LifeMarginsOf<double>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
+  }
   if (!with_gradient) return e;
   const auto t0 = Clock::now();
   ++gradient_evaluations_;
@@ -246,8 +391,55 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   e.d_unloaded_te.assign(na * nv, 0.0);
   e.d_lte.assign(nv, 0.0);
   e.d_end_distance.assign((over ? na : 0) * nv, 0.0);
+  e.d_life_margin.assign(nl * nv, 0.0);
   if (nv > 0) {
     const std::vector<cycloid::CycleDerivative> dd = cycloid::DifferentiateCycle(des, dc, params, 0.0);
+    if (life_rows) {
+      // dF_i/ds and the lag's derivative of every duty line's cycle (the design cycle's own: dd).
+      std::vector<std::vector<cycloid::CycleDerivative>> line_dd(line_meshes.size());
+      for (size_t i = 0; i < line_meshes.size(); ++i)
+        if (last_lines_[i] && line_meshes[i] == &last_lines_[i]->meshes)
+          line_dd[i] = cycloid::DifferentiateCycle(des, *last_lines_[i], params, 0.0);
+      auto derivative_of = [&](size_t i) -> const std::vector<cycloid::CycleDerivative>* {
+        if (line_meshes[i] == &dc.meshes) return &dd;
+        return line_dd[i].empty() ? nullptr : &line_dd[i];
+      };
+      for (size_t j = 0; j < nv; ++j) {
+        const cycloid::DriveTpl<J1> dj = JetDrive(d, spec_.variables[j].name);
+        struct UJ {
+          const cycloid::DriveTpl<J1>& drive;
+          cycloid::UnloadedMesh<J1> mesh;
+        };
+        std::vector<UJ> meshes_u;
+        for (size_t k = 0; k < na; ++k) meshes_u.push_back({dj, cycloid::UnloadedTca<J1>(dj, J1(angles_[k]))});
+        std::vector<std::vector<Vec2<J1>>> ring;
+        std::vector<std::vector<J1>> pin_load;
+        std::vector<J1> pin_weight;
+        auto jet = [](double value, double slope) {
+          J1 x(value);
+          x.v[0] = slope;
+          return x;
+        };
+        life_inputs(
+            J1(0.0),
+            [&](size_t i, size_t k, size_t p) {
+              const auto* di = derivative_of(i);
+              return jet((*line_meshes[i])[k].pairs[p].load_N, di ? (*di)[j].pair_load_N[k][p] * factor[j] : 0.0);
+            },
+            [&](size_t i, size_t k) {
+              const auto* di = derivative_of(i);
+              return jet((*line_meshes[i])[k].rotation_rad, di ? (*di)[j].rotation_rad[k] * factor[j] : 0.0);
+            },
+            [&](size_t k) -> const UJ& { return meshes_u[k]; },
+            [&](const UJ& u, size_t r, size_t k) { return cycloid::RollerSpinRate(dj, u.mesh.pairs[r], J1(angles_[k])); },
+            ring, pin_load, pin_weight);
+        const std::vector<J1> m =
+            LifeMarginsOf<J1>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
+        for (size_t r = 0; r < nl; ++r) e.d_life_margin[r * nv + j] = m[r].v[0];
+      }
+      for (const auto& di : line_dd)
+        for (const auto& x : di) e.converged = e.converged && x.converged;
+    }
     for (size_t j = 0; j < nv; ++j) {
       for (size_t k = 0; k < na; ++k) {
         for (size_t i = 0; i < dc.meshes[k].pairs.size(); ++i)
@@ -287,7 +479,9 @@ struct Layout {
   size_t pin_gap() const { return undercut() + 1; }
   size_t web_row() const { return pin_gap() + 1; }
   size_t fit() const { return web_row() + (web ? 1 : 0); }
-  size_t size() const { return fit() + 2; }
+  size_t life() const { return fit() + 2; }
+  size_t size() const { return life() + lives; }
+  size_t lives = 0;  // life rows (limits.life_h): crank bearing, pins
 };
 
 Layout LayoutOf(const CycloidSizingModel& m) {
@@ -296,6 +490,7 @@ Layout LayoutOf(const CycloidSizingModel& m) {
   l.n1 = size_t(m.spec().drive.rollers);
   l.over = m.spec().overload_torque_Nmm > 0;
   l.web = m.spec().limits.bore_radius_mm > 0;
+  if (m.spec().life && m.spec().limits.life_h > 0) l.lives = m.spec().life->pins_rated ? 2 : 1;
   return l;
 }
 
@@ -328,6 +523,7 @@ class SizingEvaluator final : public Evaluator {
       jac[l.pin_gap() * nv + j] = e.d_pin_gap[j];
       if (l.web) jac[l.web_row() * nv + j] = e.d_web[j];
       for (size_t r = 0; r < 2; ++r) jac[(l.fit() + r) * nv + j] = e.d_crowning_fit[r * nv + j];
+      for (size_t r = 0; r < l.lives; ++r) jac[(l.life() + r) * nv + j] = e.d_life_margin[r * nv + j];
     }
     if (outside_ == OutsideDomain::kPenalty)
       for (double& v : jac)
@@ -348,6 +544,7 @@ class SizingEvaluator final : public Evaluator {
     b.push_back({kSizingPinGap, int(l.pin_gap()), 1});
     if (l.web) b.push_back({kSizingWeb, int(l.web_row()), 1});
     b.push_back({kSizingCrowningFit, int(l.fit()), 2});
+    if (l.lives > 0) b.push_back({kSizingLife, int(l.life()), int(l.lives)});
     return b;
   }
   void Fill(const CycloidSizingEvaluation& e, std::span<double> y) const {
@@ -363,7 +560,9 @@ class SizingEvaluator final : public Evaluator {
     y[l.pin_gap()] = e.pin_gap_margin_mm;
     if (l.web) y[l.web_row()] = e.web_margin_mm;
     for (size_t r = 0; r < 2; ++r) y[l.fit() + r] = e.crowning_fit_mm[r];
+    for (size_t r = 0; r < l.lives; ++r) y[l.life() + r] = e.life_margin[r];
     if (outside_ == OutsideDomain::kPenalty && !std::isfinite(e.stress_MPa)) {
+      for (size_t r = 0; r < l.lives; ++r) y[l.life() + r] = -100.0;  // e^-100 of the required life
       for (size_t s = 0; s < l.na * l.n1; ++s) y[l.peaks() + s] = 1e6;
       if (l.over)
         for (size_t k = 0; k < l.na; ++k) y[l.ends() + k] = -1e4;
@@ -412,6 +611,8 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
   p.constraints.push_back({kSizingPinGap, 0.0, kInf, 1.0});
   if (s.limits.bore_radius_mm > 0) p.constraints.push_back({kSizingWeb, 0.0, kInf, 1.0});
   p.constraints.push_back({kSizingCrowningFit, 0.0, kInf, 1.0});
+  if (s.life && s.limits.life_h > 0)  // ln(L10h / life_h) >= ln(fast life / life_h): O(1) over decades
+    p.constraints.push_back({kSizingLife, std::log(std::max(fast.life_h, s.limits.life_h) / s.limits.life_h), kInf, 1.0});
   return p;
 }
 
@@ -442,6 +643,7 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
                                         std::abs(max_of(a.unloaded_te_arcsec) - max_of(f.unloaded_te_arcsec)),
                                         kUnloadedTeResolutionArcsec});
   out.lte_error_arcsec = std::abs(a.lte_peak_to_peak_arcsec - f.lte_peak_to_peak_arcsec);
+  if (spec.life) out.life_error_h = std::abs(a.shortest_life_h - f.shortest_life_h);
   std::ostringstream m;
   m << "3D half-space LTCA on " << fine.options.profile_cells << " x " << fine.options.axial_cells
     << " cells per pair at " << fine.angles_per_period << " crank angles per mesh period; each value's error "
@@ -475,6 +677,9 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
   if (std::isfinite(l.max_lte_peak_to_peak_arcsec))
     add("max_lte_peak_to_peak_arcsec", "design torque", l.max_lte_peak_to_peak_arcsec, a.lte_peak_to_peak_arcsec,
         out.lte_error_arcsec, f.lte_peak_to_peak_arcsec, true);
+  if (spec.life && l.life_h > 0)
+    add("life_h", "shortest L10h over the duty cycle", l.life_h, a.shortest_life_h, out.life_error_h, f.shortest_life_h,
+        false);
   // Closed forms: exact, no discretisation.
   add("min_curtate_margin", "generating curve", l.min_curtate_margin, a.curtate_margin, 0.0, f.curtate_margin, false);
   add("min_profile_radius_mm", "tooth profile", l.min_profile_radius_mm, a.min_profile_radius_mm, 0.0,
@@ -526,6 +731,7 @@ std::string LimitKeyOf(const std::string& block, bool at_lower) {
   if (block == kSizingPinGap) return "min_pin_gap_mm";
   if (block == kSizingWeb) return "min_web_mm";
   if (block == kSizingCrowningFit) return "crowning_on_the_face";
+  if (block == kSizingLife) return "life_h";
   return block;
 }
 
@@ -631,6 +837,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   fast.min_edge_margin_um = spec.limits.min_edge_margin_um;
   fast.min_backlash_arcsec = spec.limits.min_backlash_arcsec;
   fast.max_backlash_arcsec = spec.limits.max_backlash_arcsec;
+  fast.life_h = spec.limits.life_h;
   out.verification.max_rounds = options.verify_rounds;
   const int starts = std::max(1, options.starts);
   const double steps = double(starts + options.verify_rounds + 1);
@@ -686,8 +893,11 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   // The loop aims at the accurate value itself within the limit (0.1% slack), not only within the
   // limit plus its estimated error: a peak that grows with refinement (a straight tooth's edge) has
   // a large error that would otherwise pass a design the accurate model puts above it.
+  // The life (a smooth integral of the loads, its error small) is tightened whenever it does not
+  // hold within its error, not only beyond the slack.
   auto beyond = [](const VerifiedLimit& c) {
     const double slack = 1e-3 * std::max(std::abs(c.limit_value), 1.0);
+    if (c.limit == "life_h" && !c.holds()) return true;
     return !std::isfinite(c.accurate_value) ||
            (c.upper ? c.accurate_value > c.limit_value + slack : c.accurate_value < c.limit_value - slack);
   };
@@ -696,6 +906,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
            : c.limit == "min_edge_margin_um"  ? &fast.min_edge_margin_um
            : c.limit == "min_backlash_arcsec" ? &fast.min_backlash_arcsec
            : c.limit == "max_backlash_arcsec" ? &fast.max_backlash_arcsec
+           : c.limit == "life_h"              ? &fast.life_h
                                               : nullptr;  // closed forms and the LTE: exact or report-only
   };
   // The verification of the solved design: check; while a tightenable limit is beyond, tighten
@@ -720,6 +931,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         const double miss = c.upper ? c.accurate_value - c.limit_value : c.limit_value - c.accurate_value;
         if (c.limit == "contact_stress_MPa")
           *fl = TightenedUpperLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
+        else if (c.limit == "life_h")  // by the accurate shortfall, 1.5 times, and 0.1% more (as lcr_min_size)
+          *fl *= std::pow(c.limit_value / std::max(c.accurate_value, 1e-9 * c.limit_value), 1.5) * 1.001;
         else if (c.upper)
           *fl -= miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
         else
@@ -759,6 +972,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   if (out.converged && !out.x.empty()) {
     Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
     out.limit_cost = LimitCosts(problem, out.x);
+    // The life row's bound is ln(fast life / life_h): its multiplier is per unit of ln, d/dH = 1/H.
+    if (auto it = out.limit_cost.find("life_h"); it != out.limit_cost.end()) it->second /= fast.life_h;
   }
   out.value_seconds = model.value_seconds();
   out.gradient_seconds = model.gradient_seconds();

@@ -26,7 +26,15 @@
 //   kSizingCrowningFit    two rows >= 0 that keep the crowning on the face as the face width and
 //                         the crowning's parameters move (cycloid::CheckCrowning): logarithmic
 //                         L − b (when L is its own field) and b − flat length; full R − b/2;
-//                         partial R − (b − flat)/2 and b − flat; 1 where a row does not apply.
+//                         partial R − (b − flat)/2 and b − flat; 1 where a row does not apply;
+//   kSizingLife           one row per rated bearing (crank bearing, then the ring pins when
+//                         rated), m = ln(L10h / life_h) >= ln(fast life / life_h) (LifeMargin of
+//                         model/common/bearing_life.h; only with limits.life_h): the ISO 281 life
+//                         over the duty cycle of the loads the sizing's own cycles give
+//                         (model/cycloid/bearing_loads.h), each duty line one cycle at its torque.
+//                         Exact derivatives: the pair loads by implicit differentiation, the
+//                         contact normals, the disc lag and the pins' spin through the unloaded
+//                         TCA with a Jet.
 // The crank angles sample one mesh period 2π/N uniformly: a peak between two samples is missed by
 // the fast model, which is what the verified-optimum loop (objectives/verification.h) catches.
 //
@@ -50,6 +58,8 @@
 #include <utility>
 #include <vector>
 
+#include "model/common/bearing_life.h"
+#include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/loaded_tca.h"
 #include "objectives/problem.h"
 #include "objectives/verification.h"
@@ -68,6 +78,7 @@ inline constexpr const char* kSizingUndercut = "undercut_margin_mm";
 inline constexpr const char* kSizingPinGap = "pin_gap_margin_mm";
 inline constexpr const char* kSizingWeb = "web_margin_mm";
 inline constexpr const char* kSizingCrowningFit = "crowning_fit_mm";
+inline constexpr const char* kSizingLife = "life_margin";
 
 /// Field names a sizing variable may have.
 std::vector<std::string> CycloidSizingVariableNames();
@@ -88,6 +99,27 @@ struct CycloidSizingLimits {
   double max_lte_peak_to_peak_arcsec = kInf;
   double bore_radius_mm = 0;             ///< the disc's central bore; 0: no web row
   double min_web_mm = 0;                 ///< web between the tooth root and the bore
+  double life_h = 0;                     ///< shortest L10h of any rated bearing; 0: no life row
+};
+
+/// The bearing life of a sizing (docs/life.md, "Cycloid"): the duty cycle (output torque = the
+/// disc's), the crank bearing's ratings, the ring pins' (optional) and the output mechanism (fixed:
+/// not a sizing variable).
+struct CycloidSizingLife {
+  std::vector<OperatingLine> lines;
+  BearingKind crank_kind = BearingKind::kBall;
+  double crank_dynamic_N = 0, crank_static_N = 0;
+  bool pins_rated = false;
+  double pins_dynamic_N = 0, pins_static_N = 0;
+  cycloid::OutputMechanism output;
+};
+
+/// One rated bearing's life at a design.
+struct CycloidBearingLife {
+  std::string name;  ///< "crank_bearing", "pins"
+  bool ball = false;
+  double dynamic_N = 0, static_N = 0, s0 = 0;
+  cycloid::BearingLifeOverCycle life;
 };
 
 struct CycloidSizingSpec {
@@ -103,6 +135,8 @@ struct CycloidSizingSpec {
   std::vector<Variable> variables;
   CycloidSizingLimits limits;
   CycloidSizeObjective objective = CycloidSizeObjective::kOuterDiameter;
+  /// The speed or duty cycle and the ratings: lives reported; with limits.life_h, one row each.
+  std::optional<CycloidSizingLife> life;
 };
 
 /// One design as the fast (or, in CycloidAccurateCheck, the accurate) model sees it.
@@ -124,6 +158,10 @@ struct CycloidSizingEvaluation {
   std::vector<double> d_pair_peak, d_end_distance, d_unloaded_te, d_lte;
   std::vector<double> d_objective, d_curtate, d_undercut, d_pin_gap, d_web;
   std::vector<double> d_crowning_fit;  ///< [row][variable], 2 rows
+  std::vector<CycloidBearingLife> lives;  ///< crank bearing, then pins (with spec.life)
+  double shortest_life_h = kInf;          ///< shortest L10h of lives
+  std::vector<double> life_margin;        ///< ln(L10h / life_h) per bearing (with limits.life_h)
+  std::vector<double> d_life_margin;      ///< [row][variable]
 };
 
 /// The two cycles (design and overload torque) and the closed-form limits of a design x. Pure:
@@ -149,6 +187,7 @@ class CycloidSizingModel {
   double value_seconds_ = 0, gradient_seconds_ = 0;
   std::vector<double> last_x_;
   std::optional<cycloid::CycleResult> last_design_, last_over_;
+  std::vector<std::optional<cycloid::CycleResult>> last_lines_;  // duty lines at other torques
   // The first design's models: every later one is WithDesign of these (shared solver caches).
   std::optional<cycloid::LoadedTca> base_design_, base_over_;
 };
@@ -159,6 +198,7 @@ struct CycloidFastLimits {
   double min_edge_margin_um = 0;
   double min_backlash_arcsec = 0;
   double max_backlash_arcsec = kInf;
+  double life_h = 0;  ///< the life rows' required L10h (>= limits.life_h)
 };
 
 /// What the LTCA rows say at a design outside the model's domain (a looped or undercut tooth,
@@ -179,6 +219,7 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
 struct CycloidAccurateCheck {
   CycloidSizingEvaluation fast, accurate;
   double stress_error_MPa = 0, edge_margin_error_um = 0, backlash_error_arcsec = 0, lte_error_arcsec = 0;
+  double life_error_h = 0;  ///< |accurate − fast| of the shortest L10h
   std::string model;   ///< in words, with its settings
   std::vector<VerifiedLimit> checks;
 };

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "model/common/geometry.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
+#include "studies/cycloid_study_common.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
 #include "studies/study.h"
@@ -39,6 +41,25 @@ struct Study {
   bool loaded = true;
   double bore_diameter_mm = 0;   ///< drive.bore_diameter_mm: bore of the disc's solid, 0 = none
   GeometryFileOptions geometry;  ///< "geometry_files"
+  /// The bearing life (load.input_speed_rpm or duty_cycle, the ratings, the output mechanism;
+  /// docs/life.md, "Cycloid"); nullopt: no life asked, result.json without "life".
+  std::optional<cycloid_common::LifeSpec> life;
+};
+
+/// One rated element's life over the duty cycle.
+struct ElementLife {
+  std::string name;  ///< "crank_bearing", "pins"
+  RollingBearingRating rating;
+  cycloid::BearingLifeOverCycle life;
+  double s0 = 0.0;   ///< C0 / largest load (when C0 is given)
+};
+
+struct LifeResult {
+  std::vector<ElementLife> elements;
+  double shortest_L10h = 0.0;
+  std::string shortest;
+  double mean_input_speed_rpm = 0.0;
+  int crank_bearing_samples = 0;  ///< samples of the crank bearing's load period per line
 };
 
 /// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
@@ -75,6 +96,7 @@ struct Result {
   std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
   PlanarCamFit tooth_files;  ///< the disc's geometry files (arcs of the modified profile)
+  std::optional<LifeResult> life;
 };
 
 /// @throws StudyError for bad input (exit 2).

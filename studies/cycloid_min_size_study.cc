@@ -203,8 +203,9 @@ void ParseLimits(const Node& root, Study& s) {
   const Node l = root["limits"];
   l.CheckKnownFields({"contact_stress_MPa", "min_edge_margin_um", "min_curtate_margin", "min_profile_radius_mm",
                       "min_pin_gap_mm", "min_backlash_arcsec", "max_backlash_arcsec", "max_lte_peak_to_peak_arcsec",
-                      "bore_diameter_mm", "min_web_mm"});
+                      "bore_diameter_mm", "min_web_mm", "life_h"});
   CycloidSizingLimits& lim = s.spec.limits;
+  lim.life_h = l.PositiveOr("life_h", 0.0);  // needs the speed: checked in ParseLife
   lim.contact_stress_MPa = l["contact_stress_MPa"].Positive();
   if (l.Has("min_edge_margin_um")) {
     if (s.overload_torque_Nm == 0)
@@ -507,6 +508,7 @@ std::string LimitKeyOfRow(const std::string& row) {
   if (base == objectives::kSizingPinGap) return "min_pin_gap_mm";
   if (base == objectives::kSizingWeb) return "min_web_mm";
   if (base == objectives::kSizingCrowningFit) return "crowning_on_the_face";
+  if (base == objectives::kSizingLife) return "life_h";
   return base;
 }
 
@@ -573,11 +575,36 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
          (rows_violated.empty() ? "" : " with " + rows_violated + " broken") + " at " + size + " (" + o.result.message + ")";
 }
 
+// The bearing life (docs/life.md, "Cycloid"): "load.input_speed_rpm" (at the design torque) or a
+// "duty_cycle", the ratings and the output mechanism as cycloid_ltca reads them; "limits.life_h"
+// needs them. The output pins' circle is checked against the start's root radius (it is fixed:
+// the report says when the sized disc's root falls inside it).
+void ParseSizingLife(const Node& root, Study& s) {
+  if (root.Has("load")) root["load"].CheckKnownFields({"input_speed_rpm"});
+  const std::optional<cycloid_common::LifeSpec> life =
+      cycloid_common::ParseLife(root, s.spec.drive, s.spec.design_torque_Nmm);
+  if (s.spec.limits.life_h > 0 && !life)
+    root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a "
+                                      "duty_cycle beside limits.life_h, found neither");
+  if (!life) return;
+  objectives::CycloidSizingLife l;
+  l.lines = life->lines;
+  l.crank_kind = life->crank_bearing.kind;
+  l.crank_dynamic_N = life->crank_bearing.dynamic_N;
+  l.crank_static_N = life->crank_bearing.static_N;
+  l.pins_rated = life->pins_rated;
+  l.pins_dynamic_N = life->pins.dynamic_N;
+  l.pins_static_N = life->pins.static_N;
+  l.output = life->output;
+  s.spec.life = l;
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "target", "variables", "drive", "modification", "crowning",
-                         "limits", "objective", "material", "analysis", "optimizer"});
+                         "limits", "objective", "material", "analysis", "optimizer", "load", "duty_cycle",
+                         "crank_bearing", "pins", "output_mechanism"});
   Study s;
   s.name = root.StringOr("name", "");
   ParseTarget(root, s);
@@ -592,6 +619,7 @@ Study Parse(const Node& root) {
   CheckPlausibleBox(fields, s.spec.drive.rollers);
   CheckCrowningBox(root, fields, s);
   CheckClosedFormCorner(root, fields, s);
+  ParseSizingLife(root, s);
   return s;
 }
 
@@ -627,6 +655,16 @@ Result Run(const Study& s, const RunContext& ctx) {
                            std::string(e.what()) + ")");
     }
     const objectives::CycloidAccurateCheck& k = r.outcome.check;
+    if (s.spec.life) {
+      const cycloid::Drive& d = r.outcome.drive;
+      const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
+                                 d.roller_radius_mm - d.delta_radius_mm;
+      if (!(s.spec.life->output.pin_circle_radius_mm < root_radius))
+        r.warnings.push_back("output_mechanism.pin_circle_radius_mm " +
+                             Format(s.spec.life->output.pin_circle_radius_mm, 5) + " mm is not inside the sized disc's "
+                             "root radius " + Format(root_radius, 5) + " mm: the output pins are fixed in the sizing "
+                             "(not a variable); choose a smaller pin circle for this drive");
+    }
     if (k.stress_error_MPa > 0.05 * k.accurate.stress_MPa)
       r.warnings.push_back("best.accurate.max_contact_stress_MPa: estimated discretisation error " +
                            Format(k.stress_error_MPa, 3) + " MPa exceeds 5% of the value " +
@@ -679,7 +717,7 @@ std::string ObjectiveUnit(const Study& s) {
 // The unit of a limit, from its key (the suffix of the study's field name).
 std::string LimitUnit(const std::string& key) {
   if (key == "crowning_on_the_face") return "mm";  // the crowning rows (objectives::kSizingCrowningFit)
-  for (const char* u : {"MPa", "um", "mm", "arcsec"}) {
+  for (const char* u : {"MPa", "um", "mm", "arcsec", "h"}) {
     const std::string suffix = std::string("_") + u;
     if (key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) return u;
   }
@@ -699,7 +737,43 @@ double LimitValue(const Study& s, const std::string& key) {
   if (key == "max_lte_peak_to_peak_arcsec") return l.max_lte_peak_to_peak_arcsec;
   if (key == "min_web_mm") return l.min_web_mm;
   if (key == "bore_diameter_mm") return 2 * l.bore_radius_mm;
+  if (key == "life_h") return l.life_h;
   return NAN;
+}
+
+// best.life (docs/life.md, "Cycloid"): the lives of the accurate model as cycloid_ltca's "life",
+// with pass/fail against limits.life_h.
+nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const objectives::CycloidSizingEvaluation& acc) {
+  const objectives::CycloidSizingLife& life = *s.spec.life;
+  const double limit = s.spec.limits.life_h;
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  nlohmann::json lj;
+  lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
+  lj["shortest_L10h"] = finite(acc.shortest_life_h);
+  nlohmann::json table = nlohmann::json::array();
+  std::string shortest;
+  double least = kInf;
+  for (const objectives::CycloidBearingLife& b : acc.lives) {
+    lj[b.name + "_L10h"] = finite(b.life.L10h);
+    if (shortest.empty() || b.life.L10h < least) shortest = b.name, least = b.life.L10h;
+    table.push_back(LifeTableRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
+                                 b.life.revolutions_per_input_revolution, b.dynamic_N, b.static_N, b.s0, b.life.L10h,
+                                 limit));
+    table.back()["line_equivalent_load_N"] = b.life.line_equivalent_load_N;
+  }
+  lj["shortest_bearing"] = shortest;
+  lj["table"] = table;
+  lj["duty_cycle"] = DutyCycleJson(life.lines);
+  const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
+                             d.roller_radius_mm - d.delta_radius_mm;
+  lj["output_mechanism"] = {
+      {"pin_count", life.output.pin_count > 0 ? nlohmann::json(life.output.pin_count) : nlohmann::json("continuous")},
+      {"pin_circle_radius_mm", life.output.pin_circle_radius_mm},
+      {"inside_root_radius", life.output.pin_circle_radius_mm < root_radius}};
+  lj["efficiency"] = "not computed: the cycloid model is frictionless (docs/cycloid.md, Limits)";
+  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner) on the accurate model's "
+                "cycles, computed as cycloid_ltca does (docs/life.md, Cycloid)";
+  return lj;
 }
 
 nlohmann::json StartJson(const optimizers::SolverResult& r) {
@@ -783,6 +857,10 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (s.spec.overload_torque_Nmm > 0) err["edge_margin_at_overload_um"] = Finite(o.check.edge_margin_error_um, "error");
     b["estimated_error"] = err;
     b["accurate_model"] = o.check.model;
+    if (s.spec.life) {
+      b["life"] = SizingLifeJson(s, o.drive, acc);
+      b["estimated_error"]["shortest_L10h"] = Finite(o.check.life_error_h, "error");
+    }
     j["best"] = b;
   }
   // What each limit that binds at the optimum costs: d(objective)/d(limit) from the multipliers.
@@ -833,6 +911,22 @@ nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
                    {"poisson_ratio", s.spec.material.poisson_ratio}};
   a["load"] = {{"torque_Nm", s.design_torque_Nm}};
   a["analysis"] = AccurateAnalysisJson(s);
+  if (s.spec.life) {  // the same lives through cycloid_ltca (docs/life.md)
+    const objectives::CycloidSizingLife& life = *s.spec.life;
+    a["duty_cycle"] = DutyCycleJson(life.lines);
+    nlohmann::json cb = {{"kind", life.crank_kind == BearingKind::kBall ? "ball" : "roller"},
+                         {"dynamic_rating_N", life.crank_dynamic_N}};
+    if (life.crank_static_N > 0) cb["static_rating_N"] = life.crank_static_N;
+    a["crank_bearing"] = cb;
+    if (life.pins_rated) {
+      nlohmann::json pj = {{"dynamic_rating_N", life.pins_dynamic_N}};
+      if (life.pins_static_N > 0) pj["static_rating_N"] = life.pins_static_N;
+      a["pins"] = pj;
+    }
+    nlohmann::json om = {{"pin_circle_radius_mm", life.output.pin_circle_radius_mm}};
+    if (life.output.pin_count > 0) om["pin_count"] = life.output.pin_count;
+    a["output_mechanism"] = om;
+  }
   return a;
 }
 

@@ -6,14 +6,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/tooth_profile.h"
+#include "studies/bearing_life_io.h"
 #include "studies/format.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
@@ -278,6 +281,68 @@ inline std::string PressureMapsSvg(const cycloid::MeshLoad& mesh, const std::str
   s << "<text x=\"" << bar_x << "\" y=\"" << top - 16 << "\">p [MPa]</text>\n";
   s << "</svg>\n";
   return s.str();
+}
+
+/// The bearing life of a cycloid study (docs/life.md, "Cycloid"): the duty cycle, the crank
+/// bearing's and (optionally) the ring pins' ratings, and the output mechanism.
+struct LifeSpec {
+  std::vector<OperatingLine> lines;
+  RollingBearingRating crank_bearing;
+  bool pins_rated = false;
+  RollingBearingRating pins;  ///< per ring pin (a roller on a needle or roller sleeve), p = 10/3
+  cycloid::OutputMechanism output;
+};
+
+/// "output_mechanism": {"pin_circle_radius_mm" > 0 (inside the disc's root radius), "pin_count"
+/// >= 3 (optional: the continuous limit without it)}.
+inline cycloid::OutputMechanism ParseOutputMechanism(const Node& n, const cycloid::Drive& d) {
+  n.CheckKnownFields({"pin_count", "pin_circle_radius_mm"});
+  cycloid::OutputMechanism m;
+  m.pin_count = n.Has("pin_count") ? n["pin_count"].Integer(3) : 0;
+  m.pin_circle_radius_mm = n["pin_circle_radius_mm"].Positive();
+  const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
+                             d.roller_radius_mm - d.delta_radius_mm;
+  if (!(m.pin_circle_radius_mm < root_radius))
+    n["pin_circle_radius_mm"].Fail("a pin circle inside the disc's root radius " + Format(root_radius, 6) + " mm");
+  return m;
+}
+
+/// The life fields of a cycloid study: "load.input_speed_rpm" or "duty_cycle" (ParseDutyCycle, the
+/// one-line form at `torque_Nmm`), "crank_bearing": {kind, dynamic_rating_N, static_rating_N}
+/// (required with a life), "pins": {dynamic_rating_N, static_rating_N} (optional),
+/// "output_mechanism" (required with a life: the crank bearing's load needs R_w). Without a speed
+/// or a duty cycle the ratings are still checked and nullopt is returned.
+/// @throws StudyError naming the JSON path.
+inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive& d, double torque_Nmm) {
+  std::string why;
+  std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, torque_Nmm, &why);
+  if (!lines) {
+    const std::string unused = "checked: no speed or duty cycle is given, so no life is computed";
+    if (root.Has("crank_bearing")) ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, unused);
+    if (root.Has("pins")) ParseBearingRating(root["pins"], false, BearingKind::kRoller, unused);
+    if (root.Has("output_mechanism")) ParseOutputMechanism(root["output_mechanism"], d);
+    return std::nullopt;
+  }
+  LifeSpec life;
+  life.lines = std::move(*lines);
+  auto missing = [&](const std::string& key, const std::string& expected) {
+    const std::string path = (root.path() == "/" ? std::string() : root.path()) + "/" + key;
+    throw StudyError(root.file() + ": " + path + ": expected " + expected + ", found nothing", root.file(), path,
+                     expected, "nothing");
+  };
+  if (!root.Has("crank_bearing"))
+    missing("crank_bearing", "{\"kind\": \"ball\" | \"roller\", \"dynamic_rating_N\", \"static_rating_N\"} (" +
+                                 why + ")");
+  life.crank_bearing = ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, why);
+  if (root.Has("pins")) {
+    life.pins_rated = true;
+    life.pins = ParseBearingRating(root["pins"], false, BearingKind::kRoller, why);
+  }
+  if (!root.Has("output_mechanism"))
+    missing("output_mechanism", "{\"pin_circle_radius_mm\", \"pin_count\"} (" + why +
+                                    ": the crank bearing's load depends on the output pins' circle)");
+  life.output = ParseOutputMechanism(root["output_mechanism"], d);
+  return life;
 }
 
 }  // namespace camopt::studies::cycloid_common

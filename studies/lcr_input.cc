@@ -61,43 +61,6 @@ double ParseCutterDiameter(const Node& side, double roller_diameter) {
   return d;
 }
 
-std::optional<std::vector<lcr::LcrDutyLine>> ParseDutyCycle(const Node& root, double output_torque_Nmm,
-                                                            std::string* why) {
-  const bool speed = root.Has("load") && root["load"].Has("input_speed_rpm");
-  const bool duty = root.Has("duty_cycle");
-  if (!speed && !duty) return std::nullopt;
-  if (speed && duty)
-    root["load"]["input_speed_rpm"].Fail("no input_speed_rpm when a \"duty_cycle\" is given (one or the other)");
-  if (why) *why = speed ? "a life is asked: load.input_speed_rpm is given" : "a life is asked: duty_cycle is given";
-  std::vector<lcr::LcrDutyLine> lines;
-  if (speed) {
-    lines.push_back({output_torque_Nmm, root["load"]["input_speed_rpm"].Positive(), 1.0});
-    return lines;
-  }
-  const Node dc = root["duty_cycle"];
-  const std::vector<Node> items = dc.Elements();
-  if (items.empty()) dc.Fail("a non-empty array of duty-cycle lines");
-  double share_sum = 0.0, speed_max = 0.0;
-  for (const Node& item : items) {
-    item.CheckKnownFields({"output_torque_Nm", "input_speed_rpm", "time_share"});
-    lcr::LcrDutyLine line;
-    line.output_torque_Nmm = item["output_torque_Nm"].NonNegative() * 1000.0;
-    line.input_speed_rpm = item["input_speed_rpm"].NonNegative();
-    line.time_share = item["time_share"].Positive();
-    if (line.time_share > 1.0) item["time_share"].Fail("a share in (0, 1]");
-    share_sum += line.time_share;
-    speed_max = std::max(speed_max, line.input_speed_rpm);
-    lines.push_back(line);
-  }
-  if (!(std::abs(share_sum - 1.0) <= 1e-6))
-    throw StudyError(dc.file() + ": " + dc.path() + ": expected time shares summing to 1 (within 1e-6), found " +
-                         Format(share_sum, 10) + "; would fit: each time_share divided by " + Format(share_sum, 10),
-                     dc.file(), dc.path(), "time shares summing to 1 (within 1e-6)", Format(share_sum, 10));
-  if (!(speed_max > 0)) dc.Fail("at least one line with input_speed_rpm > 0 (no revolutions, no rating life)");
-  for (lcr::LcrDutyLine& line : lines) line.time_share /= share_sum;  // exactly 1 for Palmgren–Miner
-  return lines;
-}
-
 EccentricBearingRating ParseEccentricBearing(const Node& eb) {
   eb.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
   EccentricBearingRating b;

@@ -8,6 +8,7 @@
 
 #include "model/lcr/life.h"
 #include "model/lcr/reducer.h"
+#include "studies/bearing_life_io.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
 
@@ -25,15 +26,6 @@ lcr::Reducer<double> ParseReducer(const Node& reducer, bool allow_crowning = fal
 /// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
 /// must be > 0 and <= the roller diameter.
 double ParseCutterDiameter(const Node& side, double roller_diameter);
-
-/// The duty cycle of a bearing life (docs/life.md, "LCR"): "load.input_speed_rpm" (> 0, one line
-/// at output_torque_Nmm) or "duty_cycle": [{output_torque_Nm >= 0, input_speed_rpm >= 0,
-/// time_share in (0, 1]}, …] with shares summing to 1 within 1e-6 (then divided by their sum) and
-/// at least one speed > 0; not both. nullopt when neither is given. `why` (when given) receives the
-/// reason a rating is required ("a life is asked: … is given").
-/// @throws StudyError naming the JSON path, what was expected and what was found.
-std::optional<std::vector<lcr::LcrDutyLine>> ParseDutyCycle(const Node& root, double output_torque_Nmm,
-                                                            std::string* why = nullptr);
 
 /// The ratings of an eccentric bearing {"dynamic_rating_N" > 0, "static_rating_N" > 0 (optional),
 /// "kind": "ball" | "roller"}: C, C0 (0 when not given) and whether it is a ball bearing.

@@ -132,29 +132,12 @@ nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives:
                                           [](const auto& a, const auto& b) { return a.life.L10h < b.life.L10h; });
   lj["shortest_bearing"] = shortest->name;
   for (const auto& b : k.life) lj[b.name + "_L10h"] = MaybeFinite(b.life.L10h);
-  nlohmann::json lines = nlohmann::json::array();
-  for (const lcr::LcrDutyLine& l : spec.life->lines)
-    lines.push_back({{"output_torque_Nm", l.output_torque_Nmm / 1000.0},
-                     {"input_speed_rpm", l.input_speed_rpm},
-                     {"time_share", l.time_share}});
-  lj["duty_cycle"] = lines;
+  lj["duty_cycle"] = DutyCycleJson(spec.life->lines);
   nlohmann::json table = nlohmann::json::array();
-  for (const auto& b : k.life) {
-    nlohmann::json e;
-    e["element"] = b.name;
-    e["kind"] = b.ball ? "ball" : "roller";
-    e["equivalent_load_N"] = b.life.equivalent_load_N;
-    e["max_load_N"] = b.life.max_load_N;
-    e["revolutions_per_input_revolution"] = b.life.revolutions_per_input_revolution;
-    e["dynamic_rating_N"] = b.dynamic_rating_N;
-    e["L10h"] = MaybeFinite(b.life.L10h);
-    if (b.static_rating_N > 0) {
-      e["static_rating_N"] = b.static_rating_N;
-      e["s0"] = MaybeFinite(b.s0);
-    }
-    e["pass"] = limit > 0 ? nlohmann::json(b.life.L10h >= limit) : nlohmann::json(nullptr);
-    table.push_back(e);
-  }
+  for (const auto& b : k.life)
+    table.push_back(LifeTableRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
+                                 b.life.revolutions_per_input_revolution, b.dynamic_rating_N, b.static_rating_N,
+                                 b.s0, b.life.L10h, limit));
   lj["table"] = table;
   lj["rating_rule"] = spec.life->roller.reference_diameter_mm > 0
                           ? "roller C = C_ref (d/d_ref)^(29/27) (L/L_ref)^(7/9) (ISO 281:2007 6.1.1), C0 = C0_ref (d/d_ref)(L/L_ref) (ISO 76)"

@@ -97,6 +97,62 @@ TEST(CycloidMinSize, EveryRowsDerivativeMatchesCentralDifferences) {
   }
 }
 
+// The life rows (ln L10h / H) against central differences: the pair loads' implicit derivatives,
+// the normals, the disc lag and the pins' spin (a Jet through the unloaded TCA) together. Measured
+// agreement: see docs/life.md, "Cycloid" (the same converged-cycle tolerances as the other rows).
+constexpr double kLifeRowRelTol = 1e-5;
+
+CycloidSizingLife PaperLife() {
+  CycloidSizingLife l;
+  l.lines = {{350.0e3, 1500.0, 0.6}, {150.0e3, 3000.0, 0.3}, {450.0e3, 0.0, 0.1}};
+  l.crank_kind = BearingKind::kRoller;
+  l.crank_dynamic_N = 60000;
+  l.crank_static_N = 55000;
+  l.pins_rated = true;
+  l.pins_dynamic_N = 7000;
+  l.pins_static_N = 8000;
+  l.output = {8, 50.0};
+  return l;
+}
+
+TEST(CycloidMinSize, LifeRowsDerivativesMatchCentralDifferences) {
+  CycloidSizingSpec spec = PaperSpec();
+  spec.life = PaperLife();
+  spec.limits.life_h = 5000;
+  CycloidSizingModel model(spec);
+  CycloidFastLimits fast;
+  fast.contact_stress_MPa = 1500;
+  fast.life_h = 5000;
+  Problem p = CycloidSizingProblem(model, fast);
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  std::vector<double> x;
+  for (const Variable& v : spec.variables) x.push_back(v.initial);
+  std::vector<double> y(m), jac(size_t(m) * n);
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  const OutputBlock& life = p.evaluator->block(kSizingLife);
+  ASSERT_EQ(life.size, 2);
+  // The rows are ln(L10h / H) of the lives the study reports.
+  const CycloidSizingEvaluation e = model.Evaluate(x, false);
+  ASSERT_EQ(e.lives.size(), 2u);
+  for (int r = 0; r < 2; ++r)
+    EXPECT_NEAR(y[size_t(life.offset + r)], std::log(e.lives[size_t(r)].life.L10h / 5000.0), 1e-12);
+  for (int j = 0; j < n; ++j) {
+    const double h = 1e-5 * spec.variables[size_t(j)].scale;
+    std::vector<double> xp = x, xm = x, yp(m), ym(m);
+    xp[size_t(j)] += h;
+    xm[size_t(j)] -= h;
+    p.evaluator->Eval(xp, yp);
+    p.evaluator->Eval(xm, ym);
+    for (int r = life.offset; r < life.offset + life.size; ++r) {
+      const double fd = (yp[size_t(r)] - ym[size_t(r)]) / (2 * h);
+      EXPECT_NEAR(jac[size_t(r) * n + j], fd, kLifeRowRelTol * std::max(1.0, std::abs(fd)))
+          << "life row " << r - life.offset << " by " << spec.variables[size_t(j)].name;
+    }
+  }
+  // Not flat: a larger eccentricity lowers the crank bearing's load (T/(n2 e) across the crank).
+  EXPECT_GT(jac[size_t(life.offset) * n + 0], 0.1);
+}
+
 }  // namespace
 }  // namespace camopt::objectives
 

@@ -47,6 +47,12 @@ struct DutyCycleLine {
   std::vector<T> loads_N;    ///< F_ik [N], finite, >= 0, at uniform angles; at least one
 };
 
+/// One line of a reducer's duty cycle in model units, as a study gives it (output torque, input
+/// speed, time share); every reducer kind turns it into its bearings' DutyCycleLines.
+struct OperatingLine {
+  double output_torque_Nmm = 0.0, input_speed_rpm = 0.0, time_share = 1.0;
+};
+
 namespace bearing_life_internal {
 
 [[noreturn]] inline void Reject(const std::string& field, const std::string& requirement, double found) {

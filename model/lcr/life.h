@@ -156,9 +156,7 @@ inline BearingLoadSamples SampleBearingLoad(const Reducer<double>& r, const Mate
 }
 
 /// One line of a duty cycle in model units: output torque, input speed, time share.
-struct LcrDutyLine {
-  double output_torque_Nmm = 0.0, input_speed_rpm = 0.0, time_share = 1.0;
-};
+using LcrDutyLine = OperatingLine;
 
 /// A bearing's life over a duty cycle (docs/life.md, "LCR").
 struct LcrBearingLife {
