@@ -1,6 +1,7 @@
 #include "studies/study.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -37,10 +38,22 @@ void Progress::Update(double fraction, const std::string& detail) {
   if (!shown_ && !tty && fraction >= 1.0) return;  // finished before the first line was due
   last_ = now;
   shown_ = true;
+  const double f = std::clamp(fraction, 0.0, 1.0);
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
   char pct[16];
-  std::snprintf(pct, sizeof pct, "%5.1f%%", 100.0 * std::clamp(fraction, 0.0, 1.0));
-  std::cerr << (tty ? "\r" : "") << label_ << ": " << pct << (detail.empty() ? "" : "  ") << detail
+  std::snprintf(pct, sizeof pct, "%5.1f%%", 100.0 * f);
+  std::string timing = "  " + ClockText(elapsed) + " elapsed";
+  if (f >= 0.01 && f < 1.0 && elapsed >= 1.0) timing += ", ETA " + ClockText(elapsed * (1.0 - f) / f);
+  std::cerr << (tty ? "\r" : "") << label_ << ": " << pct << timing << (detail.empty() ? "" : "  ") << detail
             << (tty ? "\033[K" : "\n") << std::flush;
+}
+
+std::string ClockText(double seconds) {
+  const long s = std::lround(std::max(0.0, std::min(seconds, 3.6e8)));
+  char buf[32];
+  if (s >= 3600) std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+  return buf;
 }
 
 void Progress::Done() {

@@ -19,11 +19,14 @@
 
 namespace camopt::studies {
 
-/// A progress line on stderr for long work ("name: 42% (detail)"), rewritten in place,
-/// at most ~10 times a second; silent when quiet.
+/// A progress line on stderr for long work ("name:  42.0%  0:12 elapsed, ETA 0:17  detail"),
+/// rewritten in place on a terminal at most ~10 times a second (a plain line every 2 s into a file
+/// or pipe); silent when quiet. The ETA is elapsed·(1 − f)/f, shown once 1% is done and a second
+/// has passed (a linear extrapolation: work that is not uniform in the fraction makes it move).
 class Progress {
  public:
-  Progress(std::string label, bool quiet) : label_(std::move(label)), quiet_(quiet) {}
+  Progress(std::string label, bool quiet)
+      : label_(std::move(label)), quiet_(quiet), start_(std::chrono::steady_clock::now()) {}
   ~Progress() { Done(); }
   /// fraction in [0, 1].
   void Update(double fraction, const std::string& detail = "");
@@ -33,8 +36,12 @@ class Progress {
   std::string label_;
   bool quiet_;
   bool shown_ = false;
+  std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_{};
 };
+
+/// A duration as a person reads it on a progress line: "0:07", "12:34", "1:02:03".
+std::string ClockText(double seconds);
 
 struct RunContext {
   RunContext() = default;

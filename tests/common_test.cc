@@ -1,6 +1,8 @@
 // Tests of the foundation: scalar helpers, study input errors, writers, the CLI contract.
 #include <array>
 #include <cmath>
+#include <iostream>
+#include <sstream>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -79,6 +81,27 @@ TEST(StudyRunner, UnknownKindIsAStudyError) {
               std::string::npos)
         << e.what();
   }
+}
+
+TEST(Progress, LineShowsElapsedTimeAndClockTextReads) {
+  using camopt::studies::ClockText;
+  EXPECT_EQ(ClockText(0), "0:00");
+  EXPECT_EQ(ClockText(7.4), "0:07");
+  EXPECT_EQ(ClockText(754), "12:34");
+  EXPECT_EQ(ClockText(3723), "1:02:03");
+  EXPECT_EQ(ClockText(-5), "0:00");
+  // The first line is shown at once (stderr is not a terminal under ctest): label, percentage,
+  // elapsed time; no ETA before a second has passed.
+  std::ostringstream captured;
+  std::streambuf* old = std::cerr.rdbuf(captured.rdbuf());
+  {
+    camopt::studies::Progress p("demo", false);
+    p.Update(0.25, "case 1");
+  }
+  std::cerr.rdbuf(old);
+  const std::string line = captured.str();
+  EXPECT_NE(line.find("demo:  25.0%  0:00 elapsed  case 1"), std::string::npos) << line;
+  EXPECT_EQ(line.find("ETA"), std::string::npos) << line;
 }
 
 TEST(Outputs, RejectsNonFiniteNumbers) {
