@@ -18,6 +18,11 @@ using dc::DiscCam;
 using dc::FollowerType;
 
 constexpr double kDeg = kPi / 180.0;
+// Default pressure-angle limits [deg]: 30° for a translating and 45° for an oscillating roller
+// follower (Rothbart, Cam Design Handbook, ch. 6 "pressure angle"; Norton, Design of Machinery,
+// §8.8: "keep the pressure angle between about ±30° for a translating roller follower").
+constexpr double kDefaultPressureAngleTranslatingDeg = 30.0;
+constexpr double kDefaultPressureAngleOscillatingDeg = 45.0;
 
 // The JSON path and message of a design issue (model units → the file's units).
 [[noreturn]] void FailOn(const dc::DesignIssue& issue, const DiscCam& cam, const Node& root) {
@@ -73,7 +78,7 @@ nlohmann::json AtAngleOrNull(const std::optional<AtAngle>& x, bool angle) {
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
                          "tolerances", "analysis", "cam_thickness_mm", "bore_diameter_mm", "cutter_radius_mm",
-                         "geometry_files"});
+                         "geometry_files", "limits"});
   Study s;
   s.name = root.StringOr("name", "disc cam");
   DiscCam& cam = s.cam;
@@ -128,6 +133,25 @@ Study Parse(const Node& root) {
     s.tolerances.radial = t.NonNegativeOr("profile_radial_um", 0.0) * 1e-3;
     s.tolerances.roller = t.NonNegativeOr("roller_radius_um", 0.0) * 1e-3;
     s.tolerances.normal = t.NonNegativeOr("profile_normal_um", 0.0) * 1e-3;
+  }
+  // Limits of the verdict; defaults are the textbook rules (docs/disc_cam.md "Limits and verdict").
+  s.limits.pressure_angle_deg = oscillating ? kDefaultPressureAngleOscillatingDeg : kDefaultPressureAngleTranslatingDeg;
+  s.limits.radius_margin_mm = cam.roller_radius;
+  if (root.Has("limits")) {
+    const Node l = root["limits"];
+    l.CheckKnownFields({"pressure_angle_deg", "radius_margin_mm"});
+    if (l.Has("pressure_angle_deg")) {
+      const double a = l["pressure_angle_deg"].Positive();
+      if (!(a < dc::kJamPressureAngle / kDeg))
+        l["pressure_angle_deg"].Fail("a pressure angle > 0 and < " + Format(dc::kJamPressureAngle / kDeg) +
+                                     " deg (the jam limit)");
+      s.limits.pressure_angle_deg = a;
+      s.limits.pressure_angle_default = false;
+    }
+    if (l.Has("radius_margin_mm")) {
+      s.limits.radius_margin_mm = l["radius_margin_mm"].NonNegative();
+      s.limits.radius_margin_default = false;
+    }
   }
   dc::MonteCarloOptions& mc = s.monte_carlo_options;
   if (root.Has("analysis")) {
@@ -274,6 +298,15 @@ Result Run(const Study& s, const RunContext& ctx) {
   const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
   r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, angle_deg(i_pmin)};
   r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, angle_deg(i_pmax)};
+  // Pressure angle on the rise (and dwells, S' >= 0) and on the return (S' < 0), as |φ|.
+  for (int i = 0; i < n; ++i) {
+    const AtAngle a{std::abs(pts[i].pressure_angle) / kDeg, angle_deg(i)};
+    if (pts[i].ds >= 0.0) {
+      if (a.value > r.max_pressure_angle_rise_deg.value) r.max_pressure_angle_rise_deg = a;
+    } else if (!r.max_pressure_angle_return_deg || a.value > r.max_pressure_angle_return_deg->value) {
+      r.max_pressure_angle_return_deg = a;
+    }
+  }
   const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
   const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
   r.shift_angle_deg = {pts[i_lmin].shift_angle / kDeg, pts[i_lmax].shift_angle / kDeg};
@@ -371,6 +404,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     j["warnings"].push_back("the pressure angle reaches " + Format(worst) + " deg, above the " +
                             Format(dc::kHighPressureAngle / kDeg) +
                             " deg warning limit (docs/disc_cam.md): large side thrust on the follower, near jamming");
+  // The limits: the value, the limit and pass/fail side by side, as lcr_analysis writes them
+  // (docs/disc_cam.md "Limits and verdict").
+  nlohmann::json& pa = j["pressure_angle_deg"];
+  const double pa_limit = s.limits.pressure_angle_deg;
+  pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
+  pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
+  if (r.max_pressure_angle_return_deg) {
+    pa["max_return"] = r.max_pressure_angle_return_deg->value;
+    pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+  }
+  pa["limit"] = pa_limit;
+  pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
+  pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
   j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
   j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
                                       {"max", r.cos_shift_over_cos_pressure.max}};
@@ -381,6 +427,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       AtAngleOrNull(r.min_concave_radius_of_curvature_mm, false);
   j["min_concave_radius_at_cam_angle_deg"] =
       AtAngleOrNull(r.min_concave_radius_of_curvature_mm, true);
+  // ρ_pitch − r_f (the profile's smallest convex radius) against the margin; no convex part: met.
+  j["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
+  j["radius_margin_ok"] = !r.min_radius_of_curvature_mm || r.min_radius_of_curvature_mm->value >= s.limits.radius_margin_mm;
   j["undercut"] = r.undercut;
   j["undercut_cam_angle_deg"] = nlohmann::json::array();
   for (const auto& [from, to] : r.undercut_cam_angle_deg)
@@ -410,6 +459,14 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                                        r.max_worst_case_error_arcsec->cam_angle_deg}};
     if (r.max_rms_error_arcsec) j["rms_error_arcsec"] = {{"max", *r.max_rms_error_arcsec}};
   }
+
+  // The verdict: every limit met, and which limits are the defaults.
+  nlohmann::json defaults = nlohmann::json::array();
+  if (s.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
+  if (s.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
+  j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
+                 {"defaults", defaults}};
+  j["limits_ok"] = pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>() && j["radius_margin_ok"].get<bool>();
 
   const std::string& fu = r.follower_unit;
   j["motion"] = {{"joints", JointsJson(r.joints)},
@@ -569,7 +626,10 @@ namespace {
 CAMOPT_REGISTER_REPORT("disc_cam", {
     {"largest pressure angle", "/pressure_angle_deg/max", "deg"},
     {"smallest pressure angle", "/pressure_angle_deg/min", "deg"},
-    {"smallest radius of curvature", "/min_radius_of_curvature_mm", "mm"},
+    {"largest pressure angle, rise", "/pressure_angle_deg/max_rise", "deg", "/pressure_angle_deg/limit"},
+    {"largest pressure angle, return", "/pressure_angle_deg/max_return", "deg", "/pressure_angle_deg/limit"},
+    {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
+     NAN, false},
     {"undercut", "/undercut", ""},
     {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
     {"worst-case follower error", "/worst_case_error_um/max", "µm"},

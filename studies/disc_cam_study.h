@@ -39,6 +39,16 @@ struct Study {
   /// a cutter radius for a cutter-path layer (0: none given), "geometry_files" options.
   double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
   GeometryFileOptions geometry;
+
+  /// The limits of the verdict ("limits"; docs/disc_cam.md "Limits and verdict"). A limit not
+  /// given takes its default (recorded in *_default): the pressure angle 30° translating / 45°
+  /// oscillating, the radius margin the roller radius.
+  struct Limits {
+    double pressure_angle_deg = 30.0;
+    bool pressure_angle_default = true;
+    double radius_margin_mm = 0.0;
+    bool radius_margin_default = true;
+  } limits;
 };
 
 /// A value and the cam angle where it is reached.
@@ -90,6 +100,10 @@ struct Result {
   MinMax radial_error_um, roller_error_um, normal_error_um;
   std::optional<AtAngle> max_worst_case_error_arcsec;  ///< oscillating only
   std::optional<double> max_rms_error_arcsec;          ///< oscillating only
+
+  /// Largest |φ| where the follower rises or dwells (S' ≥ 0) and where it returns (S' < 0).
+  AtAngle max_pressure_angle_rise_deg;
+  std::optional<AtAngle> max_pressure_angle_return_deg;
 
   std::vector<motion::JointContinuity> joints;
   double peak_velocity = 0.0, peak_acceleration = 0.0, peak_jerk = 0.0;  ///< follower unit/rad^k
