@@ -106,6 +106,7 @@ Study Parse(const Node& root) {
   const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
   MotionInputSpec spec;
   spec.subject = "follower";
+  spec.allow_polynomial = true;
   if (oscillating) {
     spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg";
     spec.misplaced_key = "rise_mm";

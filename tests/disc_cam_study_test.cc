@@ -387,5 +387,64 @@ TEST(DiscCamStudy, HighPressureAngleIsAWarning) {
   EXPECT_TRUE(warnings_of(plain).empty());
 }
 
+// Polynomial segments in a study file (docs/disc_cam.md "Polynomial segments"): the example's
+// dwell → constant velocity → dwell rise. Between 60° and 140° the follower moves at exactly
+// 0.25 mm/deg: S(100°) = 10 + 0.25 × 40 = 20 mm, S' = 0.25 × 180/π mm/rad, S'' = 0; the first blend
+// is P(u) = 40u³ − 45u⁴ + 15u⁵ (solved by hand from S(1) = 10, S'(1)β = 15, S''(1) = 0), so
+// S(30°) = 5 − 2.8125 + 0.46875 = 2.65625 mm; every joint is C² (the cycloid meets zero velocity
+// and acceleration at 360°).
+TEST(DiscCamStudy, PolynomialSegmentsWriteDwellConstantVelocityDwell) {
+  json file = Example("disc_cam_dynamics.json");
+  const Ran ran = ParseAndRun(file);
+  const auto& t = ran.result.series;
+  const size_t i100 = IndexAt(t.cam_angle_deg, 100.0), i30 = IndexAt(t.cam_angle_deg, 30.0);
+  EXPECT_NEAR(t.follower[i100], 20.0, 1e-12);
+  EXPECT_NEAR(t.velocity_per_rad[i100], 0.25 * 180 / kPi, 1e-12);
+  EXPECT_NEAR(t.acceleration_per_rad2[i100], 0.0, 1e-10);
+  EXPECT_NEAR(t.follower[i30], 2.65625, 1e-12);
+  for (const auto& j : ran.result.joints) EXPECT_GE(j.order, 2) << "joint after segment " << j.segment;
+}
+
+// A polynomial boundary value that does not continue the program is refused with its JSON path
+// and both values; so are a rise on a polynomial, a jerk without acceleration, a missing velocity.
+TEST(DiscCamStudy, PolynomialDiscontinuitiesAreRejectedWithBothValues) {
+  struct Case {
+    const char* tag;
+    const char* pointer;  // set to value (null: removed)
+    json value;
+    const char* words;
+  };
+  const Case cases[] = {
+      {"poly-velocity", "/motion/1/boundary/start/velocity_mm_per_deg", 0.3,
+       "segment 0 ends with velocity 0.25 mm/deg, this boundary gives 0.3 mm/deg"},
+      {"poly-position", "/motion/1/boundary/start/position_mm", 11, "segment 0 ends with position 10 mm, this boundary gives 11 mm"},
+      {"poly-first", "/motion/0/boundary/start/position_mm", 1, "the cycle starts on the base circle with position 0 mm"},
+      {"poly-accel", "/motion/0/boundary/start/acceleration_mm_per_deg2", 0.01, "segment 4 ends with acceleration"},
+      {"poly-end", "/motion/2/boundary/end/velocity_mm_per_deg", 0.1, "segment 3 starts with velocity 0 mm/deg"},
+      {"poly-rise", "/motion/0/rise_mm", 10, "boundary.end minus boundary.start"},
+      {"poly-jerk", "/motion/0/boundary/end/jerk_mm_per_deg3", 0, ""},
+      {"poly-missing", "/motion/0/boundary/end/velocity_mm_per_deg", nullptr, "missing"},
+      {"poly-unit", "/motion/0/boundary/end/velocity_deg_per_deg", 0, "unknown field"}};
+  for (const Case& c : cases) {
+    json s = Example("disc_cam_dynamics.json");
+    const json::json_pointer ptr(c.pointer);
+    if (c.value.is_null()) {
+      s[ptr.parent_pointer()].erase(ptr.back());
+    } else {
+      s[ptr] = c.value;
+    }
+    std::string words = c.words;
+    if (std::string(c.tag) == "poly-jerk") {  // a jerk without the acceleration at that end
+      s[json::json_pointer("/motion/0/boundary/end")].erase("acceleration_mm_per_deg2");
+      words = "needs the acceleration";
+    }
+    camopt::testing::ExpectStudyRejected(s, std::string("disc-cam-") + c.tag, c.pointer, words);
+  }
+  // Another kind with a motion program (globoidal_cam) does not take polynomial segments.
+  json g = Example("globoidal_cam_paper.json");
+  g["motion"][0]["law"] = "polynomial";
+  camopt::testing::ExpectStudyRejected(g, "globoidal-polynomial", "/motion/0/law", "a motion law (dwell");
+}
+
 }  // namespace
 }  // namespace camopt
