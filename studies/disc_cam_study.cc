@@ -5,6 +5,7 @@
 
 #include "model/disc_cam/check.h"
 #include "studies/format.h"
+#include "studies/material_input.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
 #include "studies/writers.h"
@@ -18,6 +19,11 @@ using dc::DiscCam;
 using dc::FollowerType;
 
 constexpr double kDeg = kPi / 180.0;
+// Default pressure-angle limits [deg]: 30° for a translating and 45° for an oscillating roller
+// follower (Rothbart, Cam Design Handbook, ch. 6 "pressure angle"; Norton, Design of Machinery,
+// §8.8: "keep the pressure angle between about ±30° for a translating roller follower").
+constexpr double kDefaultPressureAngleTranslatingDeg = 30.0;
+constexpr double kDefaultPressureAngleOscillatingDeg = 45.0;
 
 // The JSON path and message of a design issue (model units → the file's units).
 [[noreturn]] void FailOn(const dc::DesignIssue& issue, const DiscCam& cam, const Node& root) {
@@ -73,7 +79,7 @@ nlohmann::json AtAngleOrNull(const std::optional<AtAngle>& x, bool angle) {
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
                          "tolerances", "analysis", "cam_thickness_mm", "bore_diameter_mm", "cutter_radius_mm",
-                         "geometry_files"});
+                         "geometry_files", "limits", "dynamics", "face_width_mm", "material"});
   Study s;
   s.name = root.StringOr("name", "disc cam");
   DiscCam& cam = s.cam;
@@ -100,6 +106,7 @@ Study Parse(const Node& root) {
   const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
   MotionInputSpec spec;
   spec.subject = "follower";
+  spec.allow_polynomial = true;
   if (oscillating) {
     spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg";
     spec.misplaced_key = "rise_mm";
@@ -128,6 +135,68 @@ Study Parse(const Node& root) {
     s.tolerances.radial = t.NonNegativeOr("profile_radial_um", 0.0) * 1e-3;
     s.tolerances.roller = t.NonNegativeOr("roller_radius_um", 0.0) * 1e-3;
     s.tolerances.normal = t.NonNegativeOr("profile_normal_um", 0.0) * 1e-3;
+  }
+  // Limits of the verdict; defaults are the textbook rules (docs/disc_cam.md "Limits and verdict").
+  s.limits.pressure_angle_deg = oscillating ? kDefaultPressureAngleOscillatingDeg : kDefaultPressureAngleTranslatingDeg;
+  s.limits.radius_margin_mm = cam.roller_radius;
+  if (root.Has("limits")) {
+    const Node l = root["limits"];
+    l.CheckKnownFields({"pressure_angle_deg", "radius_margin_mm", "contact_stress_MPa"});
+    if (l.Has("pressure_angle_deg")) {
+      const double a = l["pressure_angle_deg"].Positive();
+      if (!(a < dc::kJamPressureAngle / kDeg))
+        l["pressure_angle_deg"].Fail("a pressure angle > 0 and < " + Format(dc::kJamPressureAngle / kDeg) +
+                                     " deg (the jam limit)");
+      s.limits.pressure_angle_deg = a;
+      s.limits.pressure_angle_default = false;
+    }
+    if (l.Has("radius_margin_mm")) {
+      s.limits.radius_margin_mm = l["radius_margin_mm"].NonNegative();
+      s.limits.radius_margin_default = false;
+    }
+  }
+  if (root.Has("face_width_mm"))
+    s.face_width_mm = PlausibleLength(root["face_width_mm"], cam.base_radius, "the base circle radius");
+  if (root.Has("material")) {
+    root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
+    s.material = ParseMaterial(root["material"]);
+  }
+  if (root.Has("dynamics")) {
+    const Node d = root["dynamics"];
+    if (oscillating)
+      d.FailWith("the kinetostatic loads are implemented for a translating roller follower only (an oscillating "
+                 "arm needs its moment of inertia and the moments about its pivot): remove \"dynamics\" or use "
+                 "follower.type \"translating_roller\"");
+    d.CheckKnownFields({"speed_rpm", "follower_mass_kg", "spring_rate_N_per_mm", "spring_preload_N",
+                        "external_load_N", "follower_axis"});
+    Study::Dynamics dyn;
+    dyn.speed_rpm = d["speed_rpm"].Positive();
+    dyn.loads.mass_kg = d["follower_mass_kg"].Positive();
+    dyn.loads.spring_rate_N_per_mm = d.NonNegativeOr("spring_rate_N_per_mm", 0.0);
+    dyn.loads.spring_preload_N = d.NonNegativeOr("spring_preload_N", 0.0);
+    dyn.loads.external_load_N = d.NumberOr("external_load_N", 0.0);
+    dyn.follower_axis = d.StringOr("follower_axis", dyn.follower_axis);
+    // The weight along the follower axis, toward the cam: a follower above the cam presses on it.
+    if (dyn.follower_axis == "vertical_above_cam") {
+      dyn.loads.weight_N = dyn.loads.mass_kg * dc::kStandardGravity;
+    } else if (dyn.follower_axis == "vertical_below_cam") {
+      dyn.loads.weight_N = -dyn.loads.mass_kg * dc::kStandardGravity;
+    } else if (dyn.follower_axis == "horizontal") {
+      dyn.loads.weight_N = 0.0;
+    } else {
+      d["follower_axis"].Fail("\"vertical_above_cam\", \"vertical_below_cam\" or \"horizontal\"");
+    }
+    s.dynamics = dyn;
+  }
+  if (root.Has("limits") && root["limits"].Has("contact_stress_MPa")) {
+    const Node l = root["limits"]["contact_stress_MPa"];
+    s.limits.contact_stress_MPa = l.Positive();
+    std::string missing;
+    for (const auto& [absent, what] : {std::pair{!s.face_width_mm, "face_width_mm (the contact length of roller and cam)"},
+                                       std::pair{!s.material, "material (youngs_modulus_GPa, poisson_ratio)"},
+                                       std::pair{!s.dynamics, "dynamics (the contact force: speed_rpm, follower_mass_kg, spring)"}})
+      if (absent) missing += (missing.empty() ? "" : ", ") + std::string(what);
+    if (!missing.empty()) l.FailWith("the contact stress cannot be checked without " + missing + ": add them or remove the limit");
   }
   dc::MonteCarloOptions& mc = s.monte_carlo_options;
   if (root.Has("analysis")) {
@@ -274,6 +343,15 @@ Result Run(const Study& s, const RunContext& ctx) {
   const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
   r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, angle_deg(i_pmin)};
   r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, angle_deg(i_pmax)};
+  // Pressure angle on the rise (and dwells, S' >= 0) and on the return (S' < 0), as |φ|.
+  for (int i = 0; i < n; ++i) {
+    const AtAngle a{std::abs(pts[i].pressure_angle) / kDeg, angle_deg(i)};
+    if (pts[i].ds >= 0.0) {
+      if (a.value > r.max_pressure_angle_rise_deg.value) r.max_pressure_angle_rise_deg = a;
+    } else if (!r.max_pressure_angle_return_deg || a.value > r.max_pressure_angle_return_deg->value) {
+      r.max_pressure_angle_return_deg = a;
+    }
+  }
   const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
   const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
   r.shift_angle_deg = {pts[i_lmin].shift_angle / kDeg, pts[i_lmax].shift_angle / kDeg};
@@ -297,6 +375,41 @@ Result Run(const Study& s, const RunContext& ctx) {
   }
   r.undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
   r.undercut_cam_angle_deg = Intervals(undercut);
+
+  // Kinetostatic loads at the given speed (model/disc_cam/kinetostatics.h).
+  if (s.dynamics) {
+    Result::Loads L;
+    const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
+    L.weight_N = s.dynamics->loads.weight_N;
+    const bool stress = s.face_width_mm && s.material;
+    const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
+    L.stress_evaluated = stress;
+    for (int i = 0; i < n; ++i) {
+      const dc::CamLoad<double> c = dc::CamLoadAt(pts[i], s.dynamics->loads, omega);
+      L.contact_force_N.push_back(c.contact_force);
+      L.camshaft_torque_Nm.push_back(c.camshaft_torque * 1e-3);
+      if (stress) {
+        const double p = dc::RollerCamContactStress(pts[i], cam.roller_radius, c.contact_force, *s.face_width_mm, e_star);
+        if (!std::isfinite(p)) L.stress_finite = false;
+        L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
+      }
+    }
+    const auto& f = L.contact_force_N;
+    const auto& tq = L.camshaft_torque_Nm;
+    const int i_fmin = arg_min([&](int i) { return f[i]; }), i_fmax = arg_max([&](int i) { return f[i]; });
+    L.min_contact_force_N = {f[i_fmin], angle_deg(i_fmin)};
+    L.max_contact_force_N = {f[i_fmax], angle_deg(i_fmax)};
+    const int i_tabs = arg_max([&](int i) { return std::abs(tq[i]); });
+    L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), angle_deg(i_tabs)};
+    L.min_camshaft_torque_Nm = tq[arg_min([&](int i) { return tq[i]; })];
+    L.max_camshaft_torque_Nm = tq[arg_max([&](int i) { return tq[i]; })];
+    L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
+    if (stress) {
+      const int i_p = arg_max([&](int i) { return L.contact_stress_MPa[i]; });
+      L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], angle_deg(i_p)};
+    }
+    r.loads = std::move(L);
+  }
 
   // Mechanical error (eqs. 16–32), when asked for.
   r.error_evaluated = s.error_stage;
@@ -371,6 +484,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     j["warnings"].push_back("the pressure angle reaches " + Format(worst) + " deg, above the " +
                             Format(dc::kHighPressureAngle / kDeg) +
                             " deg warning limit (docs/disc_cam.md): large side thrust on the follower, near jamming");
+  // The limits: the value, the limit and pass/fail side by side, as lcr_analysis writes them
+  // (docs/disc_cam.md "Limits and verdict").
+  nlohmann::json& pa = j["pressure_angle_deg"];
+  const double pa_limit = s.limits.pressure_angle_deg;
+  pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
+  pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
+  if (r.max_pressure_angle_return_deg) {
+    pa["max_return"] = r.max_pressure_angle_return_deg->value;
+    pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+  }
+  pa["limit"] = pa_limit;
+  pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
+  pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
   j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
   j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
                                       {"max", r.cos_shift_over_cos_pressure.max}};
@@ -381,6 +507,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       AtAngleOrNull(r.min_concave_radius_of_curvature_mm, false);
   j["min_concave_radius_at_cam_angle_deg"] =
       AtAngleOrNull(r.min_concave_radius_of_curvature_mm, true);
+  // ρ_pitch − r_f (the profile's smallest convex radius) against the margin; no convex part: met.
+  j["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
+  j["radius_margin_ok"] = !r.min_radius_of_curvature_mm || r.min_radius_of_curvature_mm->value >= s.limits.radius_margin_mm;
   j["undercut"] = r.undercut;
   j["undercut_cam_angle_deg"] = nlohmann::json::array();
   for (const auto& [from, to] : r.undercut_cam_angle_deg)
@@ -410,6 +539,67 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                                        r.max_worst_case_error_arcsec->cam_angle_deg}};
     if (r.max_rms_error_arcsec) j["rms_error_arcsec"] = {{"max", *r.max_rms_error_arcsec}};
   }
+
+  bool loads_ok = true;
+  if (r.loads) {
+    const Result::Loads& L = *r.loads;
+    const auto& d = *s.dynamics;
+    nlohmann::json dj = {{"speed_rpm", d.speed_rpm},
+                         {"follower_mass_kg", d.loads.mass_kg},
+                         {"spring_rate_N_per_mm", d.loads.spring_rate_N_per_mm},
+                         {"spring_preload_N", d.loads.spring_preload_N},
+                         {"external_load_N", d.loads.external_load_N},
+                         {"follower_axis", d.follower_axis},
+                         {"weight_toward_cam_N", L.weight_N},
+                         {"min_contact_force_N", L.min_contact_force_N.value},
+                         {"at_min_contact_force_cam_angle_deg", L.min_contact_force_N.cam_angle_deg},
+                         {"max_contact_force_N", L.max_contact_force_N.value},
+                         {"at_max_contact_force_cam_angle_deg", L.max_contact_force_N.cam_angle_deg},
+                         {"separation_ok", L.min_contact_force_N.value > 0.0},
+                         {"max_camshaft_torque_Nm", L.max_abs_camshaft_torque_Nm.value},
+                         {"at_max_camshaft_torque_cam_angle_deg", L.max_abs_camshaft_torque_Nm.cam_angle_deg},
+                         {"camshaft_torque_range_Nm", {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm}}};
+    // The jump speed is infinite when the follower never decelerates: null, and a note says why.
+    if (std::isfinite(L.jump_speed_rpm)) {
+      dj["jump_speed_rpm"] = L.jump_speed_rpm;
+    } else {
+      dj["jump_speed_rpm"] = nullptr;
+      j["notes"].push_back("jump_speed_rpm is null: the follower never decelerates, so no speed lifts it off the cam");
+    }
+    loads_ok = L.min_contact_force_N.value > 0.0;
+    if (L.stress_evaluated) {
+      dj["face_width_mm"] = *s.face_width_mm;
+      dj["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
+      if (L.stress_finite) {
+        dj["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
+        dj["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
+      } else {
+        dj["max_contact_stress_MPa"] = nullptr;  // a loaded point of the profile is undercut
+        j["notes"].push_back("max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile");
+      }
+      if (s.limits.contact_stress_MPa) {
+        dj["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
+        dj["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
+        loads_ok = loads_ok && dj["contact_stress_ok"].get<bool>();
+      }
+    } else if (s.face_width_mm || s.material) {
+      j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
+    }
+    j["dynamics"] = dj;
+  } else if (s.face_width_mm || s.material) {
+    j["notes"].push_back("no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
+  }
+
+  // The verdict: every limit met, and which limits are the defaults.
+  nlohmann::json defaults = nlohmann::json::array();
+  if (s.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
+  if (s.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
+  j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
+                 {"defaults", defaults}};
+  if (r.loads) j["limits"]["min_contact_force_N"] = 0.0;
+  if (s.limits.contact_stress_MPa) j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
+  j["limits_ok"] = pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>() && j["radius_margin_ok"].get<bool>() &&
+                   loads_ok;
 
   const std::string& fu = r.follower_unit;
   j["motion"] = {{"joints", JointsJson(r.joints)},
@@ -472,6 +662,11 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     table.Add("error_worst_case_um", t.error_worst_case_um);
     table.Add("error_rms_um", t.error_rms_um);
   }
+  if (r.loads) {
+    table.Add("contact_force_N", r.loads->contact_force_N);
+    table.Add("camshaft_torque_Nm", r.loads->camshaft_torque_Nm);
+    if (r.loads->stress_evaluated) table.Add("contact_stress_MPa", r.loads->contact_stress_MPa);
+  }
   out.Add("series.csv", ToCsv(table));
 
   const auto& th = t.cam_angle_deg;
@@ -501,6 +696,16 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     ss.push_back(series("ΔS_wor (worst case)", t.error_worst_case_um));
     ss.push_back(series("ΔS_rms", t.error_rms_um));
     out.Add("error.svg", SvgLinePlot(ss, o));
+  }
+
+  if (r.loads) {
+    PlotOptions o;
+    o.title = s.name + ": contact force and camshaft torque at " + Format(s.dynamics->speed_rpm) + " rpm";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "force [N], torque [N·m]";
+    out.Add("loads.svg", SvgLinePlot({series("contact force F_c [N]", r.loads->contact_force_N),
+                                      series("camshaft torque T [N·m]", r.loads->camshaft_torque_Nm)},
+                                     o));
   }
 
   // Profile drawing: cam profile, pitch curve, base circle, and the follower at θ = 0.
@@ -569,8 +774,16 @@ namespace {
 CAMOPT_REGISTER_REPORT("disc_cam", {
     {"largest pressure angle", "/pressure_angle_deg/max", "deg"},
     {"smallest pressure angle", "/pressure_angle_deg/min", "deg"},
-    {"smallest radius of curvature", "/min_radius_of_curvature_mm", "mm"},
+    {"largest pressure angle, rise", "/pressure_angle_deg/max_rise", "deg", "/pressure_angle_deg/limit"},
+    {"largest pressure angle, return", "/pressure_angle_deg/max_return", "deg", "/pressure_angle_deg/limit"},
+    {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
+     NAN, false},
     {"undercut", "/undercut", ""},
+    {"smallest contact force (separation)", "/dynamics/min_contact_force_N", "N", "", 0.0, false},
+    {"largest contact force", "/dynamics/max_contact_force_N", "N"},
+    {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},
+    {"jump speed (kinetostatic)", "/dynamics/jump_speed_rpm", "rpm"},
+    {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
     {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
     {"worst-case follower error", "/worst_case_error_um/max", "µm"},
     {"largest rms follower error", "/rms_error_um/max", "µm"},

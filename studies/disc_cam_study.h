@@ -13,7 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "model/disc_cam/disc_cam.h"
+#include "model/common/material.h"
 #include "model/disc_cam/exact_motion.h"
+#include "model/disc_cam/kinetostatics.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/motion/motion_program.h"
 #include "studies/geometry_files.h"
@@ -39,6 +41,27 @@ struct Study {
   /// a cutter radius for a cutter-path layer (0: none given), "geometry_files" options.
   double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
   GeometryFileOptions geometry;
+
+  /// The limits of the verdict ("limits"; docs/disc_cam.md "Limits and verdict"). A limit not
+  /// given takes its default (recorded in *_default): the pressure angle 30° translating / 45°
+  /// oscillating, the radius margin the roller radius; the contact stress has no default.
+  struct Limits {
+    double pressure_angle_deg = 30.0;
+    bool pressure_angle_default = true;
+    double radius_margin_mm = 0.0;
+    bool radius_margin_default = true;
+    std::optional<double> contact_stress_MPa;  ///< no default: needs a material's strength
+  } limits;
+  /// Contact length of roller and cam [mm] and their material (both bodies), for the Hertz stress.
+  std::optional<double> face_width_mm;
+  std::optional<Material> material;
+  /// Kinetostatic follower loads ("dynamics"; translating roller follower only).
+  struct Dynamics {
+    double speed_rpm = 0.0;
+    std::string follower_axis = "vertical_above_cam";
+    camopt::disc_cam::FollowerLoads loads;
+  };
+  std::optional<Dynamics> dynamics;
 };
 
 /// A value and the cam angle where it is reached.
@@ -90,6 +113,25 @@ struct Result {
   MinMax radial_error_um, roller_error_um, normal_error_um;
   std::optional<AtAngle> max_worst_case_error_arcsec;  ///< oscillating only
   std::optional<double> max_rms_error_arcsec;          ///< oscillating only
+
+  /// Largest |φ| where the follower rises or dwells (S' ≥ 0) and where it returns (S' < 0).
+  AtAngle max_pressure_angle_rise_deg;
+  std::optional<AtAngle> max_pressure_angle_return_deg;
+
+  /// Kinetostatic loads (Study::dynamics given; model/disc_cam/kinetostatics.h).
+  struct Loads {
+    AtAngle min_contact_force_N, max_contact_force_N;
+    AtAngle max_abs_camshaft_torque_Nm;     ///< largest |T|
+    double min_camshaft_torque_Nm = 0.0, max_camshaft_torque_Nm = 0.0;  ///< signed range
+    double jump_speed_rpm = 0.0;  ///< +infinity when the follower never decelerates
+    double weight_N = 0.0;
+    /// Peak Hertz stress (face width and material given); stress_finite false when a loaded
+    /// point of the profile is undercut.
+    bool stress_evaluated = false, stress_finite = true;
+    AtAngle max_contact_stress_MPa;
+    std::vector<double> contact_force_N, camshaft_torque_Nm, contact_stress_MPa;  ///< series
+  };
+  std::optional<Loads> loads;
 
   std::vector<motion::JointContinuity> joints;
   double peak_velocity = 0.0, peak_acceleration = 0.0, peak_jerk = 0.0;  ///< follower unit/rad^k

@@ -1,6 +1,8 @@
 #include "studies/motion_input.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <utility>
 
@@ -10,6 +12,19 @@
 namespace camopt::studies {
 namespace {
 constexpr double kDeg = kPi / 180.0;
+
+// The study-file keys of a polynomial segment's boundary values for a follower unit ("mm", "deg"):
+// position, then the derivatives per degree of cam angle.
+std::array<std::string, 4> BoundaryKeys(const std::string& unit) {
+  return {"position_" + unit, "velocity_" + unit + "_per_deg", "acceleration_" + unit + "_per_deg2",
+          "jerk_" + unit + "_per_deg3"};
+}
+
+// A polynomial segment's boundary as given in the file (file units), with its nodes for messages.
+struct GivenEnd {
+  std::vector<double> values;  // position, velocity, … as given
+  std::vector<Node> nodes;
+};
 }  // namespace
 
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
@@ -17,17 +32,56 @@ motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
   std::set<std::string> known = {"law", spec.rise_key, "cam_angle_deg"};
   if (!spec.misplaced_key.empty()) known.insert(spec.misplaced_key);
   std::string laws;
-  for (const auto& n : motion::LawNames()) laws += (laws.empty() ? "" : ", ") + n;
+  for (const auto& n : motion::LawNames())
+    if (spec.allow_polynomial || n != motion::LawName(motion::MotionLaw::kPolynomial))
+      laws += (laws.empty() ? "" : ", ") + n;
+  const std::array<std::string, 4> keys = BoundaryKeys(spec.unit);
+  // Model units per file unit of position, velocity, acceleration, jerk (per degree → per rad).
+  const double scale[4] = {spec.rise_scale, spec.rise_scale / kDeg, spec.rise_scale / (kDeg * kDeg),
+                           spec.rise_scale / (kDeg * kDeg * kDeg)};
   std::vector<motion::MotionSegment<double>> segments;
-  for (const Node& seg : motion_node.Elements()) {
+  std::vector<std::optional<std::pair<GivenEnd, GivenEnd>>> given;  // polynomial segments
+  const std::vector<Node> elements = motion_node.Elements();
+  for (const Node& seg : elements) {
+    const auto law = motion::LawFromName(seg["law"].String());
+    if (!law || (*law == motion::MotionLaw::kPolynomial && !spec.allow_polynomial))
+      seg["law"].Fail("a motion law (" + laws + ")");
+    const double duration = seg["cam_angle_deg"].Positive() * kDeg;
+    if (*law == motion::MotionLaw::kPolynomial) {
+      std::set<std::string> poly_known = {"law", "cam_angle_deg", "boundary"};
+      for (const std::string& k : {spec.rise_key, spec.misplaced_key})
+        if (!k.empty() && seg.Has(k))
+          seg[k].FailWith("a polynomial segment's rise is boundary.end minus boundary.start: remove " + k);
+      seg.CheckKnownFields(poly_known);
+      const Node boundary = seg["boundary"];
+      boundary.CheckKnownFields({"start", "end"});
+      std::pair<GivenEnd, GivenEnd> ends;
+      motion::BoundaryState<double> states[2];
+      for (int e = 0; e < 2; ++e) {
+        const Node end = boundary[e == 0 ? "start" : "end"];
+        end.CheckKnownFields({keys[0], keys[1], keys[2], keys[3]});
+        GivenEnd& g = e == 0 ? ends.first : ends.second;
+        for (int k = 0; k < 4; ++k) {
+          if (k >= 2 && !end.Has(keys[k])) break;
+          const Node v = end[keys[k]];  // position and velocity required: "missing field"
+          g.values.push_back(v.Number());
+          g.nodes.push_back(v);
+        }
+        if (g.values.size() < 3 && end.Has(keys[3]))  // a jerk without the acceleration
+          end[keys[3]].FailWith("a jerk needs the acceleration at the same end (" + keys[2] + ")");
+        states[e].position = g.values[0] * scale[0];
+        for (size_t k = 1; k < g.values.size(); ++k) states[e].derivatives.push_back(g.values[k] * scale[k]);
+      }
+      segments.push_back(motion::PolynomialThrough(states[0], states[1], duration));
+      given.push_back(std::move(ends));
+      continue;
+    }
     seg.CheckKnownFields(known);
     if (!spec.misplaced_key.empty() && seg.Has(spec.misplaced_key))
       seg[spec.misplaced_key].FailWith(spec.misplaced_hint);
-    const auto law = motion::LawFromName(seg["law"].String());
-    if (!law) seg["law"].Fail("a motion law (" + laws + ")");
     motion::MotionSegment<double> m;
     m.law = *law;
-    m.duration = seg["cam_angle_deg"].Positive() * kDeg;
+    m.duration = duration;
     if (*law == motion::MotionLaw::kDwell) {
       if (seg.Has(spec.rise_key) && seg[spec.rise_key].Number() != 0.0)
         seg[spec.rise_key].FailWith("a dwell has no rise");
@@ -37,6 +91,43 @@ motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
       m.rise = rise * spec.rise_scale;
     }
     segments.push_back(m);
+    given.push_back(std::nullopt);
+  }
+  // Continuity of every value a polynomial segment gives with the program around it: its start
+  // position is where the program has brought the follower (0 at the start of the cycle), each
+  // derivative equals the neighbour's at the joint (the segment before its start, the segment
+  // after its end; the cycle wraps).
+  const size_t n = segments.size();
+  const char* quantity[4] = {"position", "velocity", "acceleration", "jerk"};
+  auto units = [&](int k) {
+    return k == 0 ? spec.unit : spec.unit + "/deg" + (k == 1 ? "" : k == 2 ? "²" : "³");
+  };
+  auto agree = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); };
+  double s_start = 0.0;  // model units
+  for (size_t i = 0; i < n; ++i) {
+    if (given[i]) {
+      for (int e = 0; e < 2; ++e) {
+        const GivenEnd& g = e == 0 ? given[i]->first : given[i]->second;
+        const size_t other = e == 0 ? (i + n - 1) % n : (i + 1) % n;
+        const motion::Svaj<double> shape = motion::MotionSegmentShape(segments[other], e == 0 ? 1.0 : 0.0);
+        const double b = segments[other].duration;
+        const double actual[4] = {0.0, shape.v / b, shape.a / (b * b), shape.j / (b * b * b)};
+        for (size_t k = 0; k < g.values.size(); ++k) {
+          if (k == 0 && e == 1) continue;  // the end position sets the rise; the next start checks it
+          // A value the next polynomial also gives at this joint: its start reports a mismatch.
+          if (e == 1 && given[other] && k < given[other]->first.values.size()) continue;
+          const double have = k == 0 ? s_start / scale[0] : actual[k] / scale[k];
+          if (agree(have, g.values[k])) continue;
+          const std::string where =
+              k == 0 ? (i == 0 ? "the cycle starts on the base circle" : "segment " + std::to_string(i - 1) + " ends")
+                     : (e == 0 ? "segment " + std::to_string(other) + " ends" : "segment " + std::to_string(other) + " starts");
+          g.nodes[k].FailWith("the motion is not continuous: " + where + " with " + quantity[k] + " " +
+                              Format(have, 12) + " " + units(int(k)) + ", this boundary gives " +
+                              Format(g.values[k], 12) + " " + units(int(k)));
+        }
+      }
+    }
+    s_start += segments[i].rise;
   }
   motion::MotionProgram<double> program(segments);
   if (const auto issue = motion::CheckProgram(program, 2 * kPi, /*must_return=*/true, 1e-6)) {

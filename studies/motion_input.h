@@ -24,10 +24,17 @@ struct MotionInputSpec {
   /// A rise key in the other unit that is rejected with `misplaced_hint` ("" for none: then it
   /// is an unknown field like any other).
   std::string misplaced_key, misplaced_hint;
+  /// Accept "law": "polynomial" segments with "boundary": {"start": {…}, "end": {…}}: position_<unit>
+  /// and velocity_<unit>_per_deg required, acceleration_<unit>_per_deg2 and jerk_<unit>_per_deg3
+  /// optional (docs/disc_cam.md "Polynomial segments").
+  bool allow_polynomial = false;
 };
 
-/// Parses a "motion" array of `{law, RISE_KEY, cam_angle_deg}` into a program that covers one cam
-/// revolution and returns to its start. Throws StudyError naming the segment and field.
+/// Parses a "motion" array of `{law, RISE_KEY, cam_angle_deg}` (or, with spec.allow_polynomial,
+/// `{"law": "polynomial", cam_angle_deg, boundary}`) into a program that covers one cam revolution
+/// and returns to its start. Every boundary value of a polynomial segment must continue its
+/// neighbours (position from the program so far, derivatives from the segment before or after).
+/// Throws StudyError naming the segment and field, and for a discontinuity the two values.
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion, const MotionInputSpec& spec);
 
 /// The program at n equally spaced cam angles θᵢ = 2π i/n (model units).

@@ -203,6 +203,99 @@ TEST(DiscCamStudy, UndercutIsReportedNotHidden) {
   EXPECT_TRUE(disc_study::ToJson(ran.study, r)["monte_carlo"].contains("skipped"));
 }
 
+// Limits and verdict (docs/disc_cam.md "Limits and verdict"). The paper's translating example
+// with the default limits: on the rise (and dwells) the largest |φ| is on the base circle, where
+// S' = 0 and φ = −atan(e/L₀) (eq. 3); on the return the cycloidal fall of 24 mm over 120° from
+// θ = 170° gives φ = atan((S' − e)/L), recomputed here from the law's closed form on the study's
+// grid: 30.596° > 30° (the default, Norton's ±30° for a translating roller follower) — the one
+// limit the paper's design does not meet. The smallest convex profile radius 36.56 mm ≥ the roller
+// radius 10 mm (the default margin: pitch-curve radius ≥ 2 × roller).
+TEST(DiscCamStudy, DefaultLimitsGiveAVerdict) {
+  json file = Example("disc_cam_translating.json");
+  file["analysis"]["monte_carlo"] = false;
+  const Ran ran = ParseAndRun(file);
+  const disc_study::Result& r = ran.result;
+  const double L0 = std::sqrt(50.0 * 50.0 - 144.0);
+  EXPECT_NEAR(r.max_pressure_angle_rise_deg.value, std::atan(12.0 / L0) * 180 / kPi, 1e-9);
+  double ret = 0.0, ret_at = 0.0;
+  const double beta = 120.0 * kPi / 180;
+  for (int i = 0; i < 3600; ++i) {
+    const double deg = 0.1 * i;
+    if (deg <= 170.0 || deg >= 290.0) continue;
+    const double u = (deg - 170.0) * kPi / 180 / beta;
+    const double S = 24.0 - 24.0 * (u - std::sin(2 * kPi * u) / (2 * kPi));
+    const double dS = -24.0 / beta * (1.0 - std::cos(2 * kPi * u));
+    const double phi = std::abs(std::atan((dS - 12.0) / (L0 + S))) * 180 / kPi;
+    if (phi > ret) ret = phi, ret_at = deg;
+  }
+  ASSERT_TRUE(r.max_pressure_angle_return_deg.has_value());
+  EXPECT_NEAR(r.max_pressure_angle_return_deg->value, ret, 1e-9);
+  EXPECT_NEAR(r.max_pressure_angle_return_deg->cam_angle_deg, ret_at, 1e-9);
+  EXPECT_NEAR(ret, 30.596, 1e-3);
+  const json j = disc_study::ToJson(ran.study, r);
+  EXPECT_EQ(j["pressure_angle_deg"]["limit"], 30.0);
+  EXPECT_EQ(j["pressure_angle_deg"]["rise_ok"], true);
+  EXPECT_EQ(j["pressure_angle_deg"]["return_ok"], false);
+  EXPECT_EQ(j["radius_margin_limit_mm"], 10.0);
+  EXPECT_EQ(j["radius_margin_ok"], true);
+  EXPECT_EQ(j["limits_ok"], false);
+  EXPECT_EQ(j["limits"]["defaults"], json({"pressure_angle_deg", "radius_margin_mm"}));
+  // report.html: the banner counts the three limits; the CLI exits 0 as lcr_analysis does with a
+  // limit exceeded (the verdict is in result.json and the report, not in the exit code).
+  RunContext ctx;
+  ctx.quiet = true;
+  const std::string html = studies::RunStudy(file, ctx).files().at("report.html");
+  EXPECT_NE(html.find("1 of 3 limits exceeded"), std::string::npos);
+  const auto dir = TempDir("disc-cam-verdict");
+  WriteFile(dir / "study.json", file.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string() +
+                             " > " + (dir / "stdout.txt").string());
+  EXPECT_EQ(res.exit_code, 0) << res.stderr_text;
+  const std::string summary = ReadFile(dir / "stdout.txt");
+  EXPECT_NE(summary.find("limits_ok: false"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("pressure_angle_deg.return_ok: false"), std::string::npos) << summary;
+
+  // Given limits replace the defaults: 31° passes the return; a margin of 37 mm fails 36.56 mm.
+  file["limits"] = {{"pressure_angle_deg", 31}, {"radius_margin_mm", 37}};
+  const Ran given = ParseAndRun(file);
+  const json g = disc_study::ToJson(given.study, given.result);
+  EXPECT_EQ(g["pressure_angle_deg"]["return_ok"], true);
+  EXPECT_EQ(g["radius_margin_ok"], false);
+  EXPECT_NEAR(g["min_radius_of_curvature_mm"].get<double>(), 36.558, 1e-3);
+  EXPECT_EQ(g["limits"]["defaults"], json::array());
+  EXPECT_EQ(g["limits_ok"], false);
+  file["limits"] = {{"radius_margin_mm", 36.5}};
+  const json h = disc_study::ToJson(ParseAndRun(file).study, ParseAndRun(file).result);
+  EXPECT_EQ(h["radius_margin_ok"], true);
+  EXPECT_EQ(h["limits"]["defaults"], json({"pressure_angle_deg"}));
+}
+
+// An oscillating follower's default pressure-angle limit is 45° (Rothbart; docs/disc_cam.md):
+// the example's 26.3° passes. An undercut profile fails the radius margin whatever it is.
+TEST(DiscCamStudy, OscillatingDefaultAndUndercutVerdict) {
+  json osc = Example("disc_cam_oscillating.json");
+  osc["analysis"]["monte_carlo"] = false;
+  const Ran o = ParseAndRun(osc);
+  const json jo = disc_study::ToJson(o.study, o.result);
+  EXPECT_EQ(jo["pressure_angle_deg"]["limit"], 45.0);
+  EXPECT_NEAR(jo["pressure_angle_deg"]["max_return"].get<double>(), 26.311, 1e-3);
+  EXPECT_EQ(jo["limits_ok"], true);
+
+  json study = Example("disc_cam_translating.json");
+  study["base_circle_radius_mm"] = 10;
+  study["follower"] = {{"type", "translating_roller"}, {"roller_radius_mm", 15}};
+  study["limits"] = {{"radius_margin_mm", 0}, {"pressure_angle_deg", 88}};
+  study["analysis"]["monte_carlo"] = false;
+  study["motion"] = json::parse(R"([{"law": "cycloidal", "rise_mm": 24, "cam_angle_deg": 60},
+      {"law": "cycloidal", "rise_mm": -24, "cam_angle_deg": 60},
+      {"law": "dwell", "cam_angle_deg": 240}])");
+  const Ran u = ParseAndRun(study);
+  const json ju = disc_study::ToJson(u.study, u.result);
+  EXPECT_EQ(ju["undercut"], true);
+  EXPECT_EQ(ju["radius_margin_ok"], false);
+  EXPECT_EQ(ju["limits_ok"], false);
+}
+
 struct BadCase {
   const char* name;
   const char* example;
@@ -262,6 +355,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"steps", kT, R"({"analysis": {"angle_steps": 10}})", "/analysis/angle_steps", ">= 36"},
         BadCase{"stage", kT, R"({"analysis": {"evaluate": ["stress"]}})", "/analysis/evaluate/0",
                 "\"monte_carlo\""},
+        BadCase{"limit_pa", kT, R"({"limits": {"pressure_angle_deg": 89}})", "/limits/pressure_angle_deg",
+                "jam limit"},
+        BadCase{"limit_margin", kT, R"({"limits": {"radius_margin_mm": -1}})", "/limits/radius_margin_mm", ">= 0"},
+        BadCase{"limit_typo", kT, R"({"limits": {"pressure_angle": 30}})", "/limits/pressure_angle", "unknown field"},
         BadCase{"stage_input", kT, R"({"tolerances": null, "analysis": {"evaluate": ["error"]}})",
                 "/tolerances", "missing"}),
     [](const ::testing::TestParamInfo<BadCase>& p) { return std::string(p.param.name); });
@@ -288,6 +385,65 @@ TEST(DiscCamStudy, HighPressureAngleIsAWarning) {
   json plain = Example("disc_cam_translating.json");
   plain["analysis"].erase("monte_carlo");
   EXPECT_TRUE(warnings_of(plain).empty());
+}
+
+// Polynomial segments in a study file (docs/disc_cam.md "Polynomial segments"): the example's
+// dwell → constant velocity → dwell rise. Between 60° and 140° the follower moves at exactly
+// 0.25 mm/deg: S(100°) = 10 + 0.25 × 40 = 20 mm, S' = 0.25 × 180/π mm/rad, S'' = 0; the first blend
+// is P(u) = 40u³ − 45u⁴ + 15u⁵ (solved by hand from S(1) = 10, S'(1)β = 15, S''(1) = 0), so
+// S(30°) = 5 − 2.8125 + 0.46875 = 2.65625 mm; every joint is C² (the cycloid meets zero velocity
+// and acceleration at 360°).
+TEST(DiscCamStudy, PolynomialSegmentsWriteDwellConstantVelocityDwell) {
+  json file = Example("disc_cam_dynamics.json");
+  const Ran ran = ParseAndRun(file);
+  const auto& t = ran.result.series;
+  const size_t i100 = IndexAt(t.cam_angle_deg, 100.0), i30 = IndexAt(t.cam_angle_deg, 30.0);
+  EXPECT_NEAR(t.follower[i100], 20.0, 1e-12);
+  EXPECT_NEAR(t.velocity_per_rad[i100], 0.25 * 180 / kPi, 1e-12);
+  EXPECT_NEAR(t.acceleration_per_rad2[i100], 0.0, 1e-10);
+  EXPECT_NEAR(t.follower[i30], 2.65625, 1e-12);
+  for (const auto& j : ran.result.joints) EXPECT_GE(j.order, 2) << "joint after segment " << j.segment;
+}
+
+// A polynomial boundary value that does not continue the program is refused with its JSON path
+// and both values; so are a rise on a polynomial, a jerk without acceleration, a missing velocity.
+TEST(DiscCamStudy, PolynomialDiscontinuitiesAreRejectedWithBothValues) {
+  struct Case {
+    const char* tag;
+    const char* pointer;  // set to value (null: removed)
+    json value;
+    const char* words;
+  };
+  const Case cases[] = {
+      {"poly-velocity", "/motion/1/boundary/start/velocity_mm_per_deg", 0.3,
+       "segment 0 ends with velocity 0.25 mm/deg, this boundary gives 0.3 mm/deg"},
+      {"poly-position", "/motion/1/boundary/start/position_mm", 11, "segment 0 ends with position 10 mm, this boundary gives 11 mm"},
+      {"poly-first", "/motion/0/boundary/start/position_mm", 1, "the cycle starts on the base circle with position 0 mm"},
+      {"poly-accel", "/motion/0/boundary/start/acceleration_mm_per_deg2", 0.01, "segment 4 ends with acceleration"},
+      {"poly-end", "/motion/2/boundary/end/velocity_mm_per_deg", 0.1, "segment 3 starts with velocity 0 mm/deg"},
+      {"poly-rise", "/motion/0/rise_mm", 10, "boundary.end minus boundary.start"},
+      {"poly-jerk", "/motion/0/boundary/end/jerk_mm_per_deg3", 0, ""},
+      {"poly-missing", "/motion/0/boundary/end/velocity_mm_per_deg", nullptr, "missing"},
+      {"poly-unit", "/motion/0/boundary/end/velocity_deg_per_deg", 0, "unknown field"}};
+  for (const Case& c : cases) {
+    json s = Example("disc_cam_dynamics.json");
+    const json::json_pointer ptr(c.pointer);
+    if (c.value.is_null()) {
+      s[ptr.parent_pointer()].erase(ptr.back());
+    } else {
+      s[ptr] = c.value;
+    }
+    std::string words = c.words;
+    if (std::string(c.tag) == "poly-jerk") {  // a jerk without the acceleration at that end
+      s[json::json_pointer("/motion/0/boundary/end")].erase("acceleration_mm_per_deg2");
+      words = "needs the acceleration";
+    }
+    camopt::testing::ExpectStudyRejected(s, std::string("disc-cam-") + c.tag, c.pointer, words);
+  }
+  // Another kind with a motion program (globoidal_cam) does not take polynomial segments.
+  json g = Example("globoidal_cam_paper.json");
+  g["motion"][0]["law"] = "polynomial";
+  camopt::testing::ExpectStudyRejected(g, "globoidal-polynomial", "/motion/0/law", "a motion law (dwell");
 }
 
 }  // namespace

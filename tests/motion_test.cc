@@ -237,5 +237,88 @@ TEST(MotionProgram, DerivativesWithRespectToRiseAndDurationMatchCentralDifferenc
   camopt::testing::ExpectJacobianMatchesCentralDifferences<3>(f, {24.0, 2.0, 0.9}, 1e-6, 1e-7);
 }
 
+// General polynomial segments (PolynomialThrough). The check: three 5th-order segments
+// with (θ, S, S', S'') = (0°, 0, 0, 0), (120°, 120, 1, 0), (240°, 240, 1, 0), (360°, 360, 0, 0),
+// S' per degree: each reproduces its boundary values to 1e-12, the program is C² at every joint,
+// and the middle segment is exactly the straight line S = θ (constant velocity, no acceleration).
+TEST(MotionPolynomial, DwellConstantVelocityDwellThroughFifthOrderSegments) {
+  const double d = kPi / 180;
+  const double v = 1.0 / d;  // 1 per degree, in per rad
+  using B = BoundaryState<double>;
+  const B p0{0.0, {0.0, 0.0}}, p1{120.0, {v, 0.0}}, p2{240.0, {v, 0.0}}, p3{360.0, {0.0, 0.0}};
+  const MotionSegment<double> a = PolynomialThrough(p0, p1, 120 * d), b = PolynomialThrough(p1, p2, 120 * d),
+                              c = PolynomialThrough(p2, p3, 120 * d);
+  EXPECT_EQ(a.coefficients.size(), 5u);  // c₁ … c₅: degree 5
+  const MotionProgram<double> prog({a, b, c});
+  const B* ends[4] = {&p0, &p1, &p2, &p3};
+  for (int k = 0; k < 3; ++k) {
+    for (int side = 0; side < 2; ++side) {
+      // Just inside the segment (the program picks the segment on θ), and at its exact ends
+      // through the segment's own shape.
+      const MotionSegment<double>& seg = k == 0 ? a : k == 1 ? b : c;
+      const Svaj<double> sh = MotionSegmentShape(seg, double(side));
+      const B& want = *ends[k + side];
+      const double b1 = seg.duration;
+      EXPECT_NEAR(ends[k]->position + sh.s, want.position, 1e-12) << k << side;
+      EXPECT_NEAR(sh.v / b1, want.derivatives[0], 1e-12) << k << side;
+      EXPECT_NEAR(sh.a / (b1 * b1), want.derivatives[1], 1e-12) << k << side;
+    }
+  }
+  // The middle segment: S = θ in degrees, S' = 1/deg, S'' = 0 everywhere on it.
+  for (double deg = 120; deg < 240; deg += 0.7) {
+    const Svaj<double> s = prog.Evaluate(deg * d);
+    EXPECT_NEAR(s.s, deg, 1e-12 * 240);
+    EXPECT_NEAR(s.v, v, 1e-12 * v);
+    EXPECT_NEAR(s.a, 0.0, 1e-12 * v);
+    EXPECT_NEAR(s.j, 0.0, 1e-12 * v);
+  }
+  // The first segment by hand: P(0) = P'(0) = P''(0) = 0 leave c₃u³ + c₄u⁴ + c₅u⁵ with
+  // c₃ + c₄ + c₅ = 120 (S), 3c₃ + 4c₄ + 5c₅ = 120 (S'β = 1/deg × 120°), 6c₃ + 12c₄ + 20c₅ = 0:
+  // c₃ = 720, c₄ = −960, c₅ = 360, and S(60°) = P(1/2) = 90 − 60 + 11.25 = 41.25.
+  const auto& co = a.coefficients;
+  EXPECT_NEAR(co[0], 0.0, 1e-12);
+  EXPECT_NEAR(co[1], 0.0, 1e-12);
+  EXPECT_NEAR(co[2], 720.0, 1e-10);
+  EXPECT_NEAR(co[3], -960.0, 1e-10);
+  EXPECT_NEAR(co[4], 360.0, 1e-10);
+  EXPECT_NEAR(prog.Evaluate(60 * d).s, 41.25, 1e-12);
+  // C² at the two inner joints and at the wrap-around (the next cycle starts at the net rise 360).
+  for (const auto& j : CheckContinuity(prog)) EXPECT_GE(j.order, 2) << "joint " << j.segment;
+}
+
+// Degrees 3 and 7: position and velocity at both ends give a cubic, with acceleration and jerk a
+// 7th-order polynomial; both pass through every given value (to 1e-12 of its size), also with
+// unequal numbers of conditions at the two ends (degree 4) and a segment that returns to its start.
+TEST(MotionPolynomial, EveryDegreeReproducesItsBoundaryValues) {
+  using B = BoundaryState<double>;
+  struct Case {
+    B start, end;
+    double beta;
+    size_t coefficients;
+  };
+  const Case cases[] = {{{0.0, {0.3}}, {5.0, {-0.2}}, 1.1, 3},
+                        {{1.0, {0.5, -2.0, 10.0}}, {-3.0, {1.0, 4.0, -20.0}}, 0.7, 7},
+                        {{2.0, {0.0, 1.0}}, {4.0, {3.0}}, 2.0, 4},
+                        {{2.0, {1.0}}, {2.0, {-1.0}}, 1.5, 3}};
+  for (const Case& c : cases) {
+    const MotionSegment<double> seg = PolynomialThrough(c.start, c.end, c.beta);
+    ASSERT_EQ(seg.coefficients.size(), c.coefficients);
+    EXPECT_NEAR(seg.rise, c.end.position - c.start.position, 1e-15);
+    for (int side = 0; side < 2; ++side) {
+      const B& want = side == 0 ? c.start : c.end;
+      const Svaj<double> sh = MotionSegmentShape(seg, double(side));
+      EXPECT_NEAR(c.start.position + sh.s, want.position, 1e-12 * std::max(1.0, std::abs(want.position)));
+      const double got[3] = {sh.v / c.beta, sh.a / (c.beta * c.beta), sh.j / (c.beta * c.beta * c.beta)};
+      for (size_t k = 0; k < want.derivatives.size(); ++k)
+        EXPECT_NEAR(got[k], want.derivatives[k], 1e-12 * std::max(1.0, std::abs(want.derivatives[k])))
+            << "degree " << c.coefficients << " side " << side << " derivative " << k + 1;
+    }
+  }
+  // A polynomial returning to its start is a moving segment without a net rise: accepted.
+  const MotionSegment<double> back = PolynomialThrough(cases[3].start, cases[3].end, cases[3].beta);
+  const MotionSegment<double> rest{MotionLaw::kDwell, 0.0, 2 * kPi - 1.5};
+  EXPECT_FALSE(CheckProgram(MotionProgram<double>({back, rest}), 2 * kPi, true).has_value());
+}
+
 }  // namespace
 }  // namespace camopt::motion

@@ -15,6 +15,7 @@ constexpr LawEntry kLaws[] = {
     {MotionLaw::kModifiedTrapezoid, "modified_trapezoid"},
     {MotionLaw::kPolynomial345, "poly_345"},
     {MotionLaw::kPolynomial4567, "poly_4567"},
+    {MotionLaw::kPolynomial, "polynomial"},
 };
 }  // namespace
 

@@ -23,6 +23,9 @@ enum class MotionLaw {
   kModifiedTrapezoid,
   kPolynomial345,
   kPolynomial4567,
+  /// A polynomial through given boundary values (PolynomialThrough, motion_program.h); its shape
+  /// is carried by the segment's coefficients, not by NormalizedLaw.
+  kPolynomial,
 };
 
 /// Displacement and its first three derivatives.
@@ -39,6 +42,7 @@ std::optional<MotionLaw> LawFromName(const std::string& name);
 std::vector<std::string> LawNames();
 
 /// The normalised law: s(0) = 0, s(1) = 1 (0 for a dwell), derivatives with respect to u.
+/// kPolynomial has no normalised form (zeros here): MotionSegmentShape evaluates it.
 /// @tparam T double or ceres::Jet. @param u normalised time, [0, 1].
 /// Piecewise laws pick their piece on the value of u; pieces meet with continuous s, v, a
 /// (C² for modified sine and modified trapezoid), so the derivative is right at the joints.
@@ -49,6 +53,7 @@ Svaj<T> NormalizedLaw(MotionLaw law, const T& u) {
   const T pi(kPi);
   switch (law) {
     case MotionLaw::kDwell:
+    case MotionLaw::kPolynomial:  // its shape is the segment's (MotionSegmentShape)
       return {T(0.0), T(0.0), T(0.0), T(0.0)};
     case MotionLaw::kCycloidal: {
       // s = u − sin(2πu)/(2π): Cv = 2, Ca = 2π, Cj = 4π².

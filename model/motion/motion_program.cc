@@ -13,12 +13,12 @@ std::vector<JointContinuity> CheckContinuity(const MotionProgram<double>& progra
   double scale[4] = {0, 0, 0, 0};
   for (const auto& seg : segs) {
     for (int k = 0; k <= 64; ++k) {
-      const Svaj<double> n = NormalizedLaw(seg.law, k / 64.0);
+      const Svaj<double> n = MotionSegmentShape(seg, k / 64.0);
       const double b = seg.duration;
-      scale[0] = std::max(scale[0], std::abs(seg.rise));
-      scale[1] = std::max(scale[1], std::abs(seg.rise * n.v / b));
-      scale[2] = std::max(scale[2], std::abs(seg.rise * n.a / (b * b)));
-      scale[3] = std::max(scale[3], std::abs(seg.rise * n.j / (b * b * b)));
+      scale[0] = std::max(scale[0], std::max(std::abs(seg.rise), std::abs(n.s)));
+      scale[1] = std::max(scale[1], std::abs(n.v / b));
+      scale[2] = std::max(scale[2], std::abs(n.a / (b * b)));
+      scale[3] = std::max(scale[3], std::abs(n.j / (b * b * b)));
     }
   }
   std::vector<JointContinuity> joints;
@@ -26,21 +26,21 @@ std::vector<JointContinuity> CheckContinuity(const MotionProgram<double>& progra
   for (size_t i = 0; i < segs.size(); ++i) {
     const auto& a = segs[i];
     const auto& b = segs[(i + 1) % segs.size()];
-    const Svaj<double> end = NormalizedLaw(a.law, 1.0);
-    const Svaj<double> begin = NormalizedLaw(b.law, 0.0);
+    const Svaj<double> end = MotionSegmentShape(a, 1.0);
+    const Svaj<double> begin = MotionSegmentShape(b, 0.0);
     const double ba = a.duration, bb = b.duration;
     angle += ba;
-    const double s_end = s_start + a.rise * end.s;
+    const double s_end = s_start + end.s;
     s_start += a.rise;
     // At the wrap-around joint the next cycle starts from the net rise (0 for a returning cam).
     const double s_next = (i + 1 == segs.size()) ? program.NetRise() : s_start;
     JointContinuity jc;
     jc.segment = static_cast<int>(i);
     jc.cam_angle_rad = angle;
-    jc.jump_s = std::abs(s_next + b.rise * begin.s - s_end);
-    jc.jump_v = std::abs(b.rise * begin.v / bb - a.rise * end.v / ba);
-    jc.jump_a = std::abs(b.rise * begin.a / (bb * bb) - a.rise * end.a / (ba * ba));
-    jc.jump_j = std::abs(b.rise * begin.j / (bb * bb * bb) - a.rise * end.j / (ba * ba * ba));
+    jc.jump_s = std::abs(s_next + begin.s - s_end);
+    jc.jump_v = std::abs(begin.v / bb - end.v / ba);
+    jc.jump_a = std::abs(begin.a / (bb * bb) - end.a / (ba * ba));
+    jc.jump_j = std::abs(begin.j / (bb * bb * bb) - end.j / (ba * ba * ba));
     const double jumps[4] = {jc.jump_s, jc.jump_v, jc.jump_a, jc.jump_j};
     jc.order = -1;
     for (int k = 0; k < 4; ++k) {
@@ -65,7 +65,7 @@ std::optional<ProgramIssue> CheckProgram(const MotionProgram<double>& program, d
     if (!std::isfinite(s.rise)) return ProgramIssue{idx, "rise", "expected a finite rise"};
     if (s.law == MotionLaw::kDwell && s.rise != 0.0)
       return ProgramIssue{idx, "rise", "a dwell has no rise"};
-    if (s.law != MotionLaw::kDwell && s.rise == 0.0)
+    if (s.law != MotionLaw::kDwell && s.law != MotionLaw::kPolynomial && s.rise == 0.0)
       return ProgramIssue{idx, "rise", "a moving segment needs a non-zero rise (use a dwell)"};
     max_rise = std::max(max_rise, std::abs(s.rise));
   }

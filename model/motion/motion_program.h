@@ -1,6 +1,11 @@
 // A follower displacement program: a sequence of motion-law segments over one cycle of the cam
 // angle θ. Each segment scales a normalised law (motion_law.h) to a rise h over a duration β:
 //   S(θ) = S₀ + h N(u), u = (θ − θ₀)/β, dS/dθ = h N'(u)/β, d²S/dθ² = h N''/β², d³S/dθ³ = h N'''/β³.
+// A polynomial segment (law kPolynomial) carries its own shape instead of a normalised law:
+//   S(θ) = S₀ + P(u), P(u) = Σ_{k=1..n} c_k u^k, fitted through boundary values at both ends
+//   (PolynomialThrough: position and velocity → degree 3, with acceleration → 5, with jerk → 7;
+//   Norton, Cam Design and Manufacturing Handbook §3.9–3.10, polynomial functions fitted to
+//   boundary conditions). Its rise is P(1).
 // The rise is in the follower's own unit (mm for a translating follower, rad for an oscillating
 // one or a globoidal turret); angles are in rad. Independent of any cam type.
 #pragma once
@@ -17,10 +22,100 @@ namespace camopt::motion {
 
 template <typename T>
 struct MotionSegment {
+  MotionSegment() = default;
+  /// A segment of a normalised law: {law, rise, duration}.
+  MotionSegment(MotionLaw segment_law, T segment_rise, T segment_duration)
+      : law(segment_law), rise(segment_rise), duration(segment_duration) {}
+
   MotionLaw law = MotionLaw::kDwell;
   T rise = T(0.0);      ///< signed rise h over the segment (follower unit)
   T duration = T(0.0);  ///< cam angle β of the segment [rad], > 0
+  /// kPolynomial only: c_1 … c_n of P(u) = Σ c_k u^k (follower unit); rise = P(1). (No default
+  /// member initialiser: with one, g++ 12 fails on MotionSegment<ceres::Jet> in nothrow_spec_p.)
+  std::vector<T> coefficients;
 };
+
+/// The segment's displacement above its start and its derivatives with respect to u (not θ):
+/// h N(u), h N'(u), h N''(u), h N'''(u) for a law; P(u) and its derivatives for a polynomial.
+template <typename T>
+Svaj<T> MotionSegmentShape(const MotionSegment<T>& seg, const T& u) {
+  if (seg.law != MotionLaw::kPolynomial) {
+    const Svaj<T> n = NormalizedLaw(seg.law, u);
+    return {seg.rise * n.s, seg.rise * n.v, seg.rise * n.a, seg.rise * n.j};
+  }
+  // Horner's scheme on Q(u) = Σ c_k u^(k−1), carrying Q, Q', Q'', Q'''; then P = u Q.
+  Svaj<T> q{T(0.0), T(0.0), T(0.0), T(0.0)};
+  for (size_t i = seg.coefficients.size(); i-- > 0;) {
+    q.j = q.j * u + T(3.0) * q.a;
+    q.a = q.a * u + T(2.0) * q.v;
+    q.v = q.v * u + q.s;
+    q.s = q.s * u + seg.coefficients[i];
+  }
+  return {q.s * u, q.s + q.v * u, T(2.0) * q.v + q.a * u, T(3.0) * q.a + q.j * u};
+}
+
+/// The follower at one end of a polynomial segment: position S and the θ-derivatives given,
+/// derivatives[0] = dS/dθ [unit/rad], [1] = d²S/dθ² [unit/rad²], [2] = d³S/dθ³ [unit/rad³].
+template <typename T>
+struct BoundaryState {
+  T position = T(0.0);
+  std::vector<T> derivatives;
+};
+
+/// The polynomial segment of duration β [rad] from `start` to `end`: the c_k of the lowest-degree
+/// polynomial P(u) with P(0) = 0, P(1) = S_end − S_start, P^(k)(0) = S_start^(k) β^k and
+/// P^(k)(1) = S_end^(k) β^k for every derivative given (degree = number of conditions − 1: 3, 5
+/// or 7 with the first, second or third derivative at both ends). Gaussian elimination with
+/// partial pivoting, the pivots chosen on the value (a Jet gets the derivative of that solution).
+/// @pre each end gives 1 to 3 derivatives; duration > 0.
+template <typename T>
+MotionSegment<T> PolynomialThrough(const BoundaryState<T>& start, const BoundaryState<T>& end,
+                                   const T& duration) {
+  const size_t m0 = start.derivatives.size(), m1 = end.derivatives.size();
+  const size_t n = 1 + m0 + m1;  // unknowns c_1 … c_n
+  std::vector<std::vector<T>> a(n, std::vector<T>(n + 1, T(0.0)));
+  // d^k/du^k u^i = i (i − 1) … (i − k + 1) u^(i−k): at u = 1 the falling factorial, at u = 0
+  // k! for i = k and 0 otherwise.
+  auto falling = [](size_t i, size_t k) {
+    double f = 1.0;
+    for (size_t r = 0; r < k; ++r) f *= double(i) - double(r);
+    return f;
+  };
+  size_t row = 0;
+  T bk = T(1.0);
+  for (size_t k = 1; k <= m0; ++k, ++row) {
+    bk = bk * duration;
+    a[row][k - 1] = T(falling(k, k));
+    a[row][n] = start.derivatives[k - 1] * bk;
+  }
+  for (size_t i = 1; i <= n; ++i) a[row][i - 1] = T(1.0);
+  a[row][n] = end.position - start.position;
+  ++row;
+  bk = T(1.0);
+  for (size_t k = 1; k <= m1; ++k, ++row) {
+    bk = bk * duration;
+    for (size_t i = 1; i <= n; ++i) a[row][i - 1] = T(falling(i, k));
+    a[row][n] = end.derivatives[k - 1] * bk;
+  }
+  for (size_t c = 0; c < n; ++c) {
+    size_t pivot = c;
+    for (size_t r = c + 1; r < n; ++r)
+      if (std::abs(Value(a[r][c])) > std::abs(Value(a[pivot][c]))) pivot = r;
+    std::swap(a[c], a[pivot]);
+    for (size_t r = 0; r < n; ++r) {
+      if (r == c) continue;
+      const T f = a[r][c] / a[c][c];
+      for (size_t k = c; k <= n; ++k) a[r][k] = a[r][k] - f * a[c][k];
+    }
+  }
+  MotionSegment<T> seg;
+  seg.law = MotionLaw::kPolynomial;
+  seg.duration = duration;
+  seg.coefficients.resize(n);
+  for (size_t c = 0; c < n; ++c) seg.coefficients[c] = a[c][n] / a[c][c];
+  seg.rise = end.position - start.position;
+  return seg;
+}
 
 template <typename T>
 class MotionProgram {
@@ -57,10 +152,9 @@ class MotionProgram {
       const bool last = i + 1 == segments_.size();
       if (last || Value(t) < Value(start + seg.duration)) {
         const T u = (t - start) / seg.duration;
-        const Svaj<T> n = NormalizedLaw(seg.law, u);
+        const Svaj<T> n = MotionSegmentShape(seg, u);
         const T b = seg.duration;
-        return {s0 + seg.rise * n.s, seg.rise * n.v / b, seg.rise * n.a / (b * b),
-                seg.rise * n.j / (b * b * b)};
+        return {s0 + n.s, n.v / b, n.a / (b * b), n.j / (b * b * b)};
       }
       start += seg.duration;
       s0 += seg.rise;
@@ -95,7 +189,7 @@ struct ProgramIssue {
 };
 
 /// Checks a program for a cam: at least one segment, positive durations, dwells without rise,
-/// moving segments with a non-zero rise, durations summing to `period` (2π for a disc cam)
+/// moving segments (other than polynomials, which may return to their start) with a non-zero rise, durations summing to `period` (2π for a disc cam)
 /// within `angle_tol` [rad], and, when `must_return`, a net rise of zero within `rise_tol`.
 std::optional<ProgramIssue> CheckProgram(const MotionProgram<double>& program, double period,
                                          bool must_return, double angle_tol = 1e-9,

@@ -1,0 +1,118 @@
+// Kinetostatic loads of a disc cam with a translating roller follower: the follower is rigid, its
+// motion is the one the cam prescribes, friction is neglected (Rothbart, Cam Design Handbook,
+// ch. 8 "Cam mechanism forces"; Norton, Cam Design and Manufacturing Handbook, ch. 8).
+//   Cam speed ω [rad/s]; follower acceleration in time a = S''(θ) ω² (S'' in mm/rad²).
+//   Axial force the cam must supply:  F_y = m a + k S + F₀ + P + W          (Rothbart Fig. 8.7)
+//     m follower mass, k spring rate, F₀ spring force at S = 0 (preload), P external load pressing
+//     the follower onto the cam, W the weight component along the follower axis toward the cam.
+//   Contact force along the common normal:  F_c = F_y / cos φ
+//   Camshaft torque (moment of F_c about the cam axis):  T = F_c (n × A), which equals F_y S'(θ)
+//     (frictionless power balance T ω = F_y Ṡ; a test checks the two).
+//   Jump speed (F_c reaches 0 first; cos φ > 0 does not move the zero):
+//     ω_jump² = min over θ with S'' < 0 of (k S + F₀ + P + W) / (−m S'').
+//   Hertz stress, roller on cam (line contact, Johnson eq. 4.45): p₀ = sqrt(F_c E* / (π w R')),
+//     1/R' = 1/r_f + 1/ρ with ρ = 1/κ − r_f the profile radius, i.e. R' = r_f (1 − r_f κ): finite at
+//     an inflection of the pitch curve (κ = 0: R' = r_f), not positive where the profile is undercut.
+// Units: lengths mm, forces N, mass kg, speed rad/s, torque N·mm, stress MPa.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "model/common/geometry.h"
+#include "model/common/scalar.h"
+#include "model/contact/hertz.h"
+#include "model/disc_cam/disc_cam.h"
+
+namespace camopt::disc_cam {
+
+/// Standard gravity [m/s²] (ISO 80000-3).
+inline constexpr double kStandardGravity = 9.80665;
+
+/// The loads on a translating roller follower.
+struct FollowerLoads {
+  double mass_kg = 0.0;               ///< m: follower, roller and a third of the spring [kg]
+  double spring_rate_N_per_mm = 0.0;  ///< k
+  double spring_preload_N = 0.0;      ///< F₀: spring force on the base circle (S = 0)
+  double external_load_N = 0.0;       ///< P: constant, pressing the follower onto the cam
+  double weight_N = 0.0;              ///< W: weight component toward the cam (m g for a vertical
+                                      ///< follower above the cam, −m g below it, 0 horizontal)
+};
+
+/// Cam speed [rad/s] from revolutions per minute.
+inline double RadPerSecond(double rpm) { return rpm * 2.0 * kPi / 60.0; }
+/// Revolutions per minute from a speed [rad/s].
+inline double Rpm(double rad_per_s) { return rad_per_s * 60.0 / (2.0 * kPi); }
+
+/// F_y = m S'' ω² + k S + F₀ + P + W [N], the force along the follower axis the cam must supply.
+/// @param s follower displacement S [mm]. @param d2s S'' [mm/rad²]. @param omega cam speed [rad/s].
+template <typename T>
+T FollowerAxialForce(const FollowerLoads& f, const T& s, const T& d2s, const T& omega) {
+  const T inertia = T(f.mass_kg) * d2s * omega * omega * T(1e-3);  // kg · m/s²
+  return inertia + T(f.spring_rate_N_per_mm) * s + T(f.spring_preload_N) + T(f.external_load_N) +
+         T(f.weight_N);
+}
+
+/// The static part k S + F₀ + P + W [N]: what holds the follower on the cam at rest.
+template <typename T>
+T FollowerStaticForce(const FollowerLoads& f, const T& s) {
+  return T(f.spring_rate_N_per_mm) * s + T(f.spring_preload_N) + T(f.external_load_N) + T(f.weight_N);
+}
+
+/// The contact force along the common normal and the camshaft torque at one cam point.
+template <typename T>
+struct CamLoad {
+  T axial_force;     ///< F_y [N]
+  T contact_force;   ///< F_c = F_y / cos φ [N] (negative: the follower has left the cam)
+  T camshaft_torque; ///< T = F_c (n × A) [N·mm], > 0 where the camshaft drives the follower
+};
+
+/// Loads at one point of a translating roller follower cam at speed omega [rad/s].
+template <typename T>
+CamLoad<T> CamLoadAt(const CamPoint<T>& p, const FollowerLoads& f, const T& omega) {
+  using std::cos;
+  CamLoad<T> out;
+  out.axial_force = FollowerAxialForce(f, p.s, p.d2s, omega);
+  out.contact_force = out.axial_force / cos(p.pressure_angle);
+  // The cam pushes the roller along +n at A; the roller pushes back along −n, whose moment about
+  // O₂ is A × (−F_c n) = F_c (n × A): the torque the camshaft must overcome.
+  out.camshaft_torque = out.contact_force * Cross(p.normal, p.contact);
+  return out;
+}
+
+/// The speed [rad/s] at which the contact force first reaches zero, from the closed form
+/// ω² = min over the points with S'' < 0 of (k S + F₀ + P + W)/(−m S''): 0 when the static force
+/// is not positive somewhere (the follower leaves the cam at rest), +infinity when no point
+/// decelerates the follower (S'' ≥ 0 everywhere) or the mass is zero.
+/// @param points the cam over the analysis grid (S, S'' used).
+inline double JumpSpeed(const std::vector<CamPoint<double>>& points, const FollowerLoads& f) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const CamPoint<double>& p : points) {
+    const double stat = FollowerStaticForce(f, p.s);
+    if (!(stat > 0.0)) return 0.0;
+    const double inertia_per_omega2 = f.mass_kg * p.d2s * 1e-3;  // N per (rad/s)²
+    if (inertia_per_omega2 < 0.0) best = std::min(best, stat / -inertia_per_omega2);
+  }
+  return std::sqrt(best);
+}
+
+/// Effective radius R' = r_f (1 − r_f κ) of the roller on the cam profile [mm] (1/R' = 1/r_f + 1/ρ,
+/// ρ the profile radius, concave negative); ≤ 0 where the profile is undercut.
+template <typename T>
+T RollerCamEffectiveRadius(const CamPoint<T>& p, const T& roller_radius) {
+  return roller_radius * (T(1.0) - roller_radius * p.pitch_curvature);
+}
+
+/// Peak Hertz line-contact pressure between roller and cam [MPa] for a contact force [N] over the
+/// face width [mm]; 0 for a force ≤ 0 (no contact); NaN where the profile is undercut (R' ≤ 0).
+inline double RollerCamContactStress(const CamPoint<double>& p, double roller_radius, double force_N,
+                                     double face_width_mm, double composite_modulus_MPa) {
+  if (!(force_N > 0.0)) return 0.0;
+  const double r_eff = RollerCamEffectiveRadius(p, roller_radius);
+  if (!(r_eff > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return contact::LineContactPeakPressure(force_N, face_width_mm, r_eff, composite_modulus_MPa);
+}
+
+}  // namespace camopt::disc_cam
