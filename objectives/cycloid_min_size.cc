@@ -416,9 +416,9 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         std::vector<std::vector<J1>> pin_load;
         std::vector<J1> pin_weight;
         auto jet = [](double value, double slope) {
-          J1 x(value);
-          x.v[0] = slope;
-          return x;
+          J1 t(value);
+          t.v[0] = slope;
+          return t;
         };
         life_inputs(
             J1(0.0),
@@ -438,7 +438,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         for (size_t r = 0; r < nl; ++r) e.d_life_margin[r * nv + j] = m[r].v[0];
       }
       for (const auto& di : line_dd)
-        for (const auto& x : di) e.converged = e.converged && x.converged;
+        for (const auto& one : di) e.converged = e.converged && one.converged;
     }
     for (size_t j = 0; j < nv; ++j) {
       for (size_t k = 0; k < na; ++k) {

@@ -1,0 +1,94 @@
+// The bearing lives of a cycloid drive over a duty cycle (docs/life.md, "Cycloid").
+#include "studies/cycloid_life.h"
+
+#include <cmath>
+
+#include "studies/bearing_life_io.h"
+
+namespace camopt::studies::cycloid_common {
+
+LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const std::vector<double>& crank_angles_rad,
+                   double solved_torque_Nmm, const std::vector<cycloid::MeshLoad>* solved_meshes) {
+  using namespace camopt::cycloid;
+  const Drive& drive = tca.drive();
+  std::vector<cycloid::BearingLineSamples> crank, pins;
+  LifeResult out;
+  for (const OperatingLine& line : spec.lines) {
+    std::vector<MeshLoad> meshes;
+    if (solved_meshes && line.output_torque_Nmm == solved_torque_Nmm) {
+      meshes = *solved_meshes;
+    } else if (line.output_torque_Nmm > 0.0) {
+      meshes = RunCycle(tca, line.output_torque_Nmm, crank_angles_rad).meshes;
+    } else {  // no torque, no load: no contact solve
+      for (double a : crank_angles_rad) {
+        MeshLoad m;
+        m.crank_angle_rad = a;
+        meshes.push_back(m);
+      }
+    }
+    const std::vector<double> b = cycloid::CrankBearingLoads(drive, spec.output, meshes, line.output_torque_Nmm);
+    out.crank_bearing_samples = int(b.size());
+    crank.push_back({line.time_share, line.input_speed_rpm, b, std::vector<double>(b.size(), 1.0)});
+    if (spec.pins_rated) {
+      const cycloid::PinLoadSamples p = cycloid::PinBearingLoads(drive, meshes);
+      pins.push_back({line.time_share, line.input_speed_rpm, p.load_N, p.spin_rate});
+    }
+    out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
+  }
+  auto add = [&](const std::string& name, const RollingBearingRating& rating, double revolutions,
+                 const std::vector<cycloid::BearingLineSamples>& lines) {
+    ElementLife e;
+    e.name = name;
+    e.rating = rating;
+    e.life = cycloid::LifeOverDutyCycle(rating.dynamic_N, rating.kind, revolutions, lines);
+    if (rating.static_N > 0) e.s0 = StaticSafetyFactor(rating.static_N, std::vector<double>{e.life.max_load_N});
+    if (out.shortest.empty() || e.life.L10h < out.shortest_L10h) out.shortest_L10h = e.life.L10h, out.shortest = name;
+    out.elements.push_back(std::move(e));
+  };
+  add("crank_bearing", spec.crank_bearing, cycloid::CrankBearingRevolutionsPerInputRevolution(drive), crank);
+  if (spec.pins_rated) {
+    // The spin rates are the same on every line (geometry only): their mean over one roller's
+    // period is its revolutions per input revolution.
+    double mean = 0.0;
+    for (double w : pins.front().weight) mean += w;
+    mean /= double(pins.front().weight.size());
+    add("pins", spec.pins, mean, pins);
+  }
+  return out;
+}
+
+nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  nlohmann::json lj;
+  lj["shortest_L10h"] = finite(l.shortest_L10h);
+  lj["shortest_bearing"] = l.shortest;
+  nlohmann::json table = nlohmann::json::array();
+  for (const ElementLife& e : l.elements) {
+    lj[e.name + "_L10h"] = finite(e.life.L10h);
+    table.push_back(LifeTableRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
+                                 e.life.max_load_N, e.life.revolutions_per_input_revolution, e.rating.dynamic_N,
+                                 e.rating.static_N, e.s0, e.life.L10h, 0.0));
+    table.back()["line_equivalent_load_N"] = e.life.line_equivalent_load_N;
+    table.back()["mean_speed_rpm"] = e.life.mean_speed_rpm;
+    table.back()["L10_Mrev"] = finite(e.life.L10_Mrev);
+  }
+  lj["table"] = table;
+  lj["duty_cycle"] = DutyCycleJson(spec.lines);
+  lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
+  lj["output_mechanism"] = {
+      {"pin_count", spec.output.pin_count > 0 ? nlohmann::json(spec.output.pin_count) : nlohmann::json("continuous")},
+      {"pin_circle_radius_mm", spec.output.pin_circle_radius_mm},
+      {"model", spec.output.pin_count > 0
+                    ? "rigid zero-clearance output pins, Q_j = Q_max max(0, sin phi_j) (Blagojevic et al. 2011)"
+                    : "continuous limit of rigid output pins: resultant 4 T / (pi R_w) along the crank"}};
+  lj["crank_bearing_samples_per_line"] = l.crank_bearing_samples;
+  lj["efficiency_energy_mean"] = nullptr;
+  lj["efficiency"] = "not computed: the cycloid model is frictionless (docs/cycloid.md, Limits)";
+  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner); each line one LTCA cycle "
+                "at its torque; crank bearing: |B| = |ring-pin forces + output-pin forces| over its load period, "
+                "n1/n2 revolutions per input revolution; pins: the pair loads, revolution-weighted by the rolling "
+                "spin (C - I).N / (n2 rho); the modified life (a1, a_ISO) is not modelled (docs/life.md)";
+  return lj;
+}
+
+}  // namespace camopt::studies::cycloid_common
