@@ -55,6 +55,12 @@ RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, Bearin
   } else {
     node.CheckKnownFields({"dynamic_rating_N", "static_rating_N"});
   }
+  return ParseRatingValues(node, b.kind, why);
+}
+
+RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const std::string& why) {
+  RollingBearingRating b;
+  b.kind = kind;
   if (!node.Has("dynamic_rating_N")) {
     const std::string path = node.path() + "/dynamic_rating_N";
     const std::string expected = "the bearing's dynamic load rating C [N] > 0 (" + why + ")";

@@ -28,6 +28,11 @@ struct RollingBearingRating {
   double dynamic_N = 0.0, static_N = 0.0;
 };
 
+/// Reads "dynamic_rating_N" > 0 and "static_rating_N" > 0 (optional) from `node`, which may hold
+/// other fields (an LCR's reducer side); a missing C is an error that says why it is needed.
+/// @throws StudyError naming the JSON path.
+RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const std::string& why);
+
 /// Reads {"dynamic_rating_N" > 0, "static_rating_N" > 0 (optional)} and, when `with_kind`, "kind":
 /// "ball" | "roller" (else `kind`). A missing C is an error that says why it is needed (`why`).
 /// @throws StudyError naming the JSON path.

@@ -4,6 +4,8 @@
 // Parse → Run → Write (studies/lcr_analysis_study.h); the physics is model/lcr/.
 #include "studies/lcr_analysis_study.h"
 
+#include "studies/bearing_life_io.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -184,16 +186,11 @@ void RunContact3D(const Study& st, Result& res) {
 // A bearing's ratings from `node` (a reducer side or "eccentric_bearing"): C required when a life
 // is asked, C0 optional (s0 is reported when given).
 BearingRating ParseRating(const Node& node, BearingKind kind, const std::string& why) {
+  const RollingBearingRating r = ParseRatingValues(node, kind, why);
   BearingRating b;
-  b.kind = kind;
-  if (!node.Has("dynamic_rating_N")) {
-    const std::string path = node.path() + "/dynamic_rating_N";
-    const std::string expected = "the bearing's dynamic load rating C [N] > 0 (" + why + ")";
-    throw StudyError(node.file() + ": " + path + ": expected " + expected + ", found nothing", node.file(), path,
-                     expected, "nothing");
-  }
-  b.dynamic_N = node["dynamic_rating_N"].Positive();
-  b.static_N = node.PositiveOr("static_rating_N", 0.0);
+  b.kind = r.kind;
+  b.dynamic_N = r.dynamic_N;
+  b.static_N = r.static_N;
   return b;
 }
 
