@@ -136,16 +136,20 @@ void ParseJoint(const Node& root, Study& s) {
 
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis",
-                         "tuning", "crowning", "variables", "optimizer"});
+                         "tuning", "crowning", "variables", "optimizer", "duty_cycle", "crank_bearing", "pins",
+                         "output_mechanism"});
   Study s;
   s.name = root.StringOr("name", "");
   s.drive = cycloid_common::ParseDrive(root);
   s.material = cycloid_common::ParseMaterial(root);
   const Node load = root["load"];
-  load.CheckKnownFields({"design_torque_Nm", "max_torque_Nm"});
+  load.CheckKnownFields({"design_torque_Nm", "max_torque_Nm", "input_speed_rpm"});
   s.design_torque_Nm = load["design_torque_Nm"].Positive();
   s.max_torque_Nm = load["max_torque_Nm"].Positive();
   if (s.max_torque_Nm < s.design_torque_Nm) load["max_torque_Nm"].Fail("a torque >= design_torque_Nm");
+  // The tuned design's bearing lives (docs/life.md, "Cycloid"); the one-line form runs at the
+  // design torque.
+  s.life = cycloid_common::ParseLife(root, s.drive, s.design_torque_Nm * 1000.0);
   if (root.Has("variables")) {
     ParseJoint(root, s);
     ParseAnalysis(root, s);
@@ -451,6 +455,21 @@ Result RunShorthand(const Study& s, const RunContext& ctx) {
 // by more than its error, raise the fast model's required margin by the measured excess (plus
 // kMarginStepUm) and solve again from the last design, at most kVerificationRounds times. The
 // reported stress and margin are the accurate values; the fast ones stay beside them.
+// The tuned design's bearing lives on the accurate model's settings (AccurateEvaluation: the
+// grid doubled both ways, 2n crank angles per mesh period, uniform over the mesh period as the
+// bearings' load periods need), each duty line one LTCA cycle at its torque.
+cycloid_common::LifeResult TunedLife(const Study& s, const Result& r) {
+  cycloid::LoadedOptions fine = s.options;
+  fine.profile_cells = 2 * s.options.profile_cells;
+  fine.axial_cells = 2 * s.options.axial_cells;
+  fine.crank_slope = false;
+  fine.keep_pressure = false;
+  const cycloid::LoadedTca tca(r.tuned_drive, r.tuned_crowning, s.material, fine);
+  const std::vector<double> angles =
+      cycloid::UniformCrankAngles(2 * s.crank_angles_per_mesh_period, 2.0 * kPi / s.drive.rollers);
+  return cycloid_common::RunLife(*s.life, tca, angles);
+}
+
 Result Run(const Study& s, const RunContext& ctx) {
   Study fast = s;
   objectives::Verification v;
@@ -494,6 +513,7 @@ Result Run(const Study& s, const RunContext& ctx) {
                              "analysis.crank_angles_per_mesh_period)");
       r.evaluations = evaluations;
       r.verification = v;
+      if (s.life) r.life = TunedLife(s, r);
       return r;
     }
     objectives::TighteningStep step;
@@ -572,6 +592,11 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       j["start_max_contact_stress_MPa"] = Finite(a.stress_MPa, "stress");
       j["start_edge_margin_at_max_torque_um"] = Finite(a.edge_margin_um, "margin");
     }
+  }
+  if (r.life) {
+    j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
+    j["life"]["design"] = "the tuned design (tuned crowning and modifications) on the accurate model's grid and "
+                          "crank angles";
   }
   AddVerificationJson(r.verification, j);
   return j;
@@ -684,6 +709,7 @@ CAMOPT_REGISTER_REPORT("cycloid_crowning_tuning", {
      "study:/tuning/edge_margin_um", 0.0, false},
     {"edge margin at the maximum torque, paper's coefficient", "/reference_edge_margin_at_max_torque_um", "um",
      "study:/tuning/edge_margin_um", 0.0, false},
+    {"shortest bearing life L10h, tuned design", "/life/shortest_L10h", "h"},
     {"status", "/status", ""},
 });
 }  // namespace

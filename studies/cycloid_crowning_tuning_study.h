@@ -15,6 +15,7 @@
 // reported stress and margin are the accurate values.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "model/cycloid/loaded_tca.h"
 #include "objectives/cycloid_crowning.h"
 #include "objectives/verification.h"
+#include "studies/cycloid_life.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -57,6 +59,10 @@ struct Study {
   /// The unloaded TE β0 >= this at every angle (no roller interferes with the tooth at the
   /// kinematic position: the assembly/backlash condition); "tuning.min_unloaded_te_arcsec".
   double min_unloaded_te_arcsec = 0;
+  /// The tuned design's bearing lives ("load.input_speed_rpm" or "duty_cycle", "crank_bearing",
+  /// "pins", "output_mechanism", as in cycloid_ltca; docs/life.md, "Cycloid"); nullopt: none asked.
+  /// The tuning's objective does not change.
+  std::optional<cycloid_common::LifeSpec> life;
 };
 
 /// Rounds of the verified-optimum loop (objectives/verification.h): how often the fast model's
@@ -94,6 +100,8 @@ struct Result {
   double accurate_lte_peak_to_peak_arcsec = 0;
   objectives::Verification verification;
   std::vector<std::string> warnings;
+  /// The tuned design's lives on the accurate model's grid and angles (when Study::life).
+  std::optional<cycloid_common::LifeResult> life;
 };
 
 /// @throws StudyError for bad input (exit 2).

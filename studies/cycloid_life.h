@@ -39,7 +39,7 @@ struct LifeResult {
 LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const std::vector<double>& crank_angles_rad,
                    double solved_torque_Nmm = 0.0, const std::vector<cycloid::MeshLoad>* solved_meshes = nullptr);
 
-/// result.json "life": <element>_L10h, shortest_L10h, shortest_bearing, the duty cycle, the output
+/// result.json "life": `ELEMENT_L10h`, shortest_L10h, shortest_bearing, the duty cycle, the output
 /// mechanism and the table (the rows of lcr_min_size's best.life.table).
 nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l);
 

@@ -8,6 +8,7 @@
 
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
+#include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
 #include "studies/report.h"
@@ -271,62 +272,6 @@ void ToleranceWarning(const Study& s, Result& r) {
 
 namespace {
 
-// The bearing lives over the duty cycle (docs/life.md, "Cycloid"): each line one LTCA cycle at its
-// torque on the reported crank angles (the study's own cycle for the study's torque; the contact is
-// nonlinear, so no scaling between lines), the crank bearing's load |B| over its load period
-// (model/cycloid/bearing_loads.h) and the ring pins' loads and spin over one roller's period, each
-// line's revolution-weighted equivalent load, Palmgren–Miner over the lines.
-LifeResult RunLife(const Study& s, const Result& r) {
-  const cycloid_common::LifeSpec& spec = *s.life;
-  LoadedOptions options = s.options;
-  options.keep_pressure = false;
-  options.crank_slope = false;
-  const LoadedTca tca(s.drive, s.crowning, s.material, options);
-  std::vector<cycloid::BearingLineSamples> crank, pins;
-  LifeResult out;
-  for (const OperatingLine& line : spec.lines) {
-    std::vector<MeshLoad> meshes;
-    if (line.output_torque_Nmm == s.torque_Nm * 1000.0) {
-      meshes = r.cycle.meshes;
-    } else if (line.output_torque_Nmm > 0.0) {
-      meshes = RunCycle(tca, line.output_torque_Nmm, r.crank_angles_rad).meshes;
-    } else {  // no torque, no load: no contact solve
-      for (double a : r.crank_angles_rad) {
-        MeshLoad m;
-        m.crank_angle_rad = a;
-        meshes.push_back(m);
-      }
-    }
-    const std::vector<double> b = cycloid::CrankBearingLoads(s.drive, spec.output, meshes, line.output_torque_Nmm);
-    out.crank_bearing_samples = int(b.size());
-    crank.push_back({line.time_share, line.input_speed_rpm, b, std::vector<double>(b.size(), 1.0)});
-    if (spec.pins_rated) {
-      const cycloid::PinLoadSamples p = cycloid::PinBearingLoads(s.drive, meshes);
-      pins.push_back({line.time_share, line.input_speed_rpm, p.load_N, p.spin_rate});
-    }
-    out.mean_input_speed_rpm += line.time_share * line.input_speed_rpm;
-  }
-  auto add = [&](const std::string& name, const RollingBearingRating& rating, double revolutions,
-                 const std::vector<cycloid::BearingLineSamples>& lines) {
-    ElementLife e;
-    e.name = name;
-    e.rating = rating;
-    e.life = cycloid::LifeOverDutyCycle(rating.dynamic_N, rating.kind, revolutions, lines);
-    if (rating.static_N > 0) e.s0 = StaticSafetyFactor(rating.static_N, std::vector<double>{e.life.max_load_N});
-    if (out.shortest.empty() || e.life.L10h < out.shortest_L10h) out.shortest_L10h = e.life.L10h, out.shortest = name;
-    out.elements.push_back(std::move(e));
-  };
-  add("crank_bearing", spec.crank_bearing, cycloid::CrankBearingRevolutionsPerInputRevolution(s.drive), crank);
-  if (spec.pins_rated) {
-    // The spin rates are the same on every line (geometry only): their mean over one roller's
-    // period is its revolutions per input revolution.
-    double mean = 0.0;
-    for (double w : pins.front().weight) mean += w;
-    mean /= double(pins.front().weight.size());
-    add("pins", spec.pins, mean, pins);
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -381,7 +326,13 @@ Result Run(const Study& s, const RunContext& ctx) {
     for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
     r.tooth_files = FitPlanarCam(g, s.geometry);
   }
-  if (s.life) r.life = RunLife(s, r);
+  if (s.life) {
+    LoadedOptions options = s.options;
+    options.keep_pressure = false;
+    options.crank_slope = false;
+    const LoadedTca tca(s.drive, s.crowning, s.material, options);
+    r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.torque_Nm * 1000.0, &r.cycle.meshes);
+  }
   return r;
 }
 
@@ -461,42 +412,6 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
 }
 
 
-// result.json "life" (docs/life.md, "Cycloid"): <element>_L10h, shortest_L10h, shortest_bearing,
-// the duty cycle, the output mechanism and the table (the rows of lcr_min_size's best.life.table).
-nlohmann::json LifeJson(const Study& s, const LifeResult& l) {
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  const cycloid_common::LifeSpec& spec = *s.life;
-  nlohmann::json lj;
-  lj["shortest_L10h"] = finite(l.shortest_L10h);
-  lj["shortest_bearing"] = l.shortest;
-  nlohmann::json table = nlohmann::json::array();
-  for (const ElementLife& e : l.elements) {
-    lj[e.name + "_L10h"] = finite(e.life.L10h);
-    table.push_back(LifeTableRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
-                                 e.life.max_load_N, e.life.revolutions_per_input_revolution, e.rating.dynamic_N,
-                                 e.rating.static_N, e.s0, e.life.L10h, 0.0));
-    table.back()["line_equivalent_load_N"] = e.life.line_equivalent_load_N;
-    table.back()["mean_speed_rpm"] = e.life.mean_speed_rpm;
-    table.back()["L10_Mrev"] = finite(e.life.L10_Mrev);
-  }
-  lj["table"] = table;
-  lj["duty_cycle"] = DutyCycleJson(spec.lines);
-  lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
-  lj["output_mechanism"] = {
-      {"pin_count", spec.output.pin_count > 0 ? nlohmann::json(spec.output.pin_count) : nlohmann::json("continuous")},
-      {"pin_circle_radius_mm", spec.output.pin_circle_radius_mm},
-      {"model", spec.output.pin_count > 0
-                    ? "rigid zero-clearance output pins, Q_j = Q_max max(0, sin phi_j) (Blagojevic et al. 2011)"
-                    : "continuous limit of rigid output pins: resultant 4 T / (pi R_w) along the crank"}};
-  lj["crank_bearing_samples_per_line"] = l.crank_bearing_samples;
-  lj["efficiency_energy_mean"] = nullptr;
-  lj["efficiency"] = "not computed: the cycloid model is frictionless (docs/cycloid.md, Limits)";
-  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner); each line one LTCA cycle "
-                "at its torque; crank bearing: |B| = |ring-pin forces + output-pin forces| over its load period, "
-                "n1/n2 revolutions per input revolution; pins: the pair loads, revolution-weighted by the rolling "
-                "spin (C - I).N / (n2 rho); the modified life (a1, a_ISO) is not modelled (docs/life.md)";
-  return lj;
-}
 
 }  // namespace
 
@@ -565,7 +480,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"warnings", r.warnings},
           {"per_angle", per_angle}};
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
-  if (r.life) j["life"] = LifeJson(s, *r.life);
+  if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
   return j;
 }
 

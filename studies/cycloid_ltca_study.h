@@ -15,6 +15,7 @@
 #include "model/common/geometry.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
+#include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
@@ -46,21 +47,8 @@ struct Study {
   std::optional<cycloid_common::LifeSpec> life;
 };
 
-/// One rated element's life over the duty cycle.
-struct ElementLife {
-  std::string name;  ///< "crank_bearing", "pins"
-  RollingBearingRating rating;
-  cycloid::BearingLifeOverCycle life;
-  double s0 = 0.0;   ///< C0 / largest load (when C0 is given)
-};
-
-struct LifeResult {
-  std::vector<ElementLife> elements;
-  double shortest_L10h = 0.0;
-  std::string shortest;
-  double mean_input_speed_rpm = 0.0;
-  int crank_bearing_samples = 0;  ///< samples of the crank bearing's load period per line
-};
+using cycloid_common::ElementLife;
+using cycloid_common::LifeResult;
 
 /// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
 inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 32;

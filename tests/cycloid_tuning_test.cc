@@ -10,6 +10,7 @@
 
 #include "objectives/cycloid_crowning.h"
 #include "studies/cycloid_crowning_tuning_study.h"
+#include "studies/cycloid_ltca_study.h"
 #include "studies/input.h"
 #include "studies/study.h"
 #include "tests/reference_designs.h"
@@ -248,6 +249,56 @@ TEST(CycloidTuningStudy, ExamplesAreVerifiedByTheAccurateModel) {
     studies::Outputs out;
     tuning::Write(s, r, out);
     EXPECT_EQ(out.incomplete(), "");
+  }
+}
+
+// A duty cycle in the tuning: the tuned design's lives (the tuning's objective unchanged) agree with
+// those of cycloid_ltca run on the tuned design with the accurate model's settings (grid doubled,
+// 2n angles per mesh period), and each L10h is 10⁶ (C/P)^p / (60 n̄) from its own table row. The
+// two runs' LTCA solves start from different warm starts and stop at the compatibility tolerance:
+// measured 1.5e-6 (crank bearing) and 8e-4 (pins, whose lives weigh the lightly loaded pairs that
+// enter and leave contact) relative; kSameDesignLifeRelTol bounds both.
+TEST(CycloidTuningStudy, TunedDesignLivesEqualTheLtcaOfTheTunedDesign) {
+  nlohmann::json study = camopt::testing::Example("cycloid_crowning_tuning_nnm.json");
+  study["tuning"]["curve_points"] = 3;
+  study["tuning"]["max_evaluations"] = 6;
+  study["analysis"] = {{"crank_angles_per_mesh_period", 4}, {"grid", {16, 16}}};
+  const nlohmann::json duty = {{{"output_torque_Nm", 350}, {"input_speed_rpm", 1500}, {"time_share", 0.7}},
+                               {{"output_torque_Nm", 200}, {"input_speed_rpm", 3000}, {"time_share", 0.3}}};
+  const nlohmann::json crank = {{"kind", "roller"}, {"dynamic_rating_N", 60000}, {"static_rating_N", 55000}};
+  const nlohmann::json pins = {{"dynamic_rating_N", 7000}, {"static_rating_N", 8000}};
+  const nlohmann::json output = {{"pin_count", 8}, {"pin_circle_radius_mm", 50}};
+  study["duty_cycle"] = duty;
+  study["crank_bearing"] = crank;
+  study["pins"] = pins;
+  study["output_mechanism"] = output;
+  const tuning::Study s = tuning::Parse(studies::Node(&study, "tuning.json", ""));
+  const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
+  const nlohmann::json j = tuning::ToJson(s, r);
+  ASSERT_TRUE(j.contains("life")) << j.dump(1);
+  const nlohmann::json& life = j["life"];
+
+  nlohmann::json ltca = camopt::testing::Example("cycloid_ltca_life.json");
+  ltca["drive"].erase("bore_diameter_mm");
+  ltca["crowning"] = {{"type", "logarithmic"}, {"coefficient_mm", j["tuned_coefficient_mm"]},
+                      {"effective_length_mm", j["tuned_effective_length_mm"]}};
+  ltca["load"] = {{"torque_Nm", 350}};
+  ltca["duty_cycle"] = duty;
+  ltca["crank_bearing"] = crank;
+  ltca["pins"] = pins;
+  ltca["output_mechanism"] = output;
+  ltca["analysis"] = {{"crank_angles_per_mesh_period", 8}, {"grid", {32, 32}}};
+  const studies::cycloid_ltca::Study ls = studies::cycloid_ltca::Parse(studies::Node(&ltca, "ltca.json", ""));
+  const nlohmann::json lj = studies::cycloid_ltca::ToJson(ls, studies::cycloid_ltca::Run(ls, studies::RunContext{"", true}));
+  constexpr double kSameDesignLifeRelTol = 2e-3;
+  for (const char* key : {"crank_bearing_L10h", "pins_L10h", "shortest_L10h"})
+    EXPECT_NEAR(life[key].get<double>(), lj["life"][key].get<double>(),
+                kSameDesignLifeRelTol * lj["life"][key].get<double>()) << key;
+  for (const nlohmann::json& row : life["table"]) {
+    const double p = row["kind"] == "ball" ? 3.0 : 10.0 / 3.0;
+    const double hand = 1e6 * std::pow(row["dynamic_rating_N"].get<double>() / row["equivalent_load_N"].get<double>(), p) /
+                        (60.0 * row["mean_speed_rpm"].get<double>());
+    EXPECT_NEAR(row["L10h"].get<double>(), hand, 1e-9 * hand) << row.dump();
   }
 }
 
