@@ -24,8 +24,8 @@ struct MotionInputSpec {
   /// A rise key in the other unit that is rejected with `misplaced_hint` ("" for none: then it
   /// is an unknown field like any other).
   std::string misplaced_key, misplaced_hint;
-  /// Accept "law": "polynomial" segments with "boundary": {"start": {…}, "end": {…}}: position_<unit>
-  /// and velocity_<unit>_per_deg required, acceleration_<unit>_per_deg2 and jerk_<unit>_per_deg3
+  /// Accept "law": "polynomial" segments with "boundary": {"start": {…}, "end": {…}}: `position_UNIT`
+  /// and `velocity_UNIT_per_deg` required, `acceleration_UNIT_per_deg2` and `jerk_UNIT_per_deg3`
   /// optional (docs/disc_cam.md "Polynomial segments").
   bool allow_polynomial = false;
 };
@@ -51,7 +51,7 @@ MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples);
 nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints);
 
 /// svaj_{displacement,velocity,acceleration,jerk}.svg against cam angle [deg]; titles
-/// "<title_prefix> displacement" …; y_labels are the series.csv column names, shown as
+/// "TITLE_PREFIX displacement" …; y_labels are the series.csv column names, shown as
 /// "quantity [unit]" ("acceleration_deg_per_rad2" → "acceleration [deg/rad²]").
 void AddSvajPlots(Outputs& out, const std::string& title_prefix,
                   const std::vector<double>& cam_angle_deg,

@@ -75,7 +75,7 @@ std::vector<std::pair<std::string, const nlohmann::json*>> LifeTables(const nloh
 std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::string& title);
 
 /// Adds report.html (HtmlReport) to outputs, and before it life.svg (SvgLifeBars) when result.json
-/// has a life table (LifeTables; life_<n>.svg for a second one), so that the plot is a file of the
+/// has a life table (LifeTables; `life_N.svg` for a second one), so that the plot is a file of the
 /// run like every other.
 void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs);
 

@@ -184,6 +184,27 @@ TEST(LcrLife, OneLineDutyCycleEqualsTorqueAndSpeed) {
   }
 }
 
+// LCR II at the paper's torque (80 N·m, its Table 3) and the speed of its tests (900 rpm, Table 4):
+// every bearing's L10h by hand from its own equivalent load and revolutions, 10⁶ (C/P)^p / (60 n R),
+// and 10/9 of the lives at 1000 rpm (the loads do not depend on the speed; docs/life.md, "LCR").
+TEST(LcrLife, PapersTorqueAndTestSpeedGiveEveryBearingsLifeByHand) {
+  nlohmann::json s = LifeStudy();
+  s["load"]["input_speed_rpm"] = 900;
+  const studies::lcr_analysis::Result at900 = RunStudy(s);
+  const studies::lcr_analysis::Result at1000 = RunStudy(LifeStudy());
+  ASSERT_TRUE(at900.life && at1000.life);
+  ASSERT_EQ(at900.life->bearings.size(), 3u);
+  for (const auto& b : at900.life->bearings) {
+    SCOPED_TRACE(b.name);
+    const double p = b.rating.kind == BearingKind::kBall ? 3.0 : 10.0 / 3.0;
+    const double hand = 1e6 * std::pow(b.rating.dynamic_N / b.equivalent_load_N, p) /
+                        (60.0 * 900.0 * b.revolutions_per_input_revolution);
+    EXPECT_NEAR(b.L10h, hand, kHandCalcRelTol * hand);
+    const double l1000 = Bearing(at1000, b.name).L10h;
+    EXPECT_NEAR(b.L10h, l1000 * 1000.0 / 900.0, kHandCalcRelTol * l1000);
+  }
+}
+
 TEST(LcrLife, StudyWithoutSpeedHasNoLife) {
   nlohmann::json s = nlohmann::json::parse(ReadFile(SourcePath("studies/examples/lcr_ii.json")));
   s["analysis"]["angle_steps"] = 72;
