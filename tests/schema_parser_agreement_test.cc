@@ -434,8 +434,6 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_min_size", "/target/speed_ratio", "no lobe/roller combination", "the speed ratio must be reachable"},
     {"lcr_min_size", "/duty_cycle", "time shares summing to 1", "the duty cycle's time shares sum to 1 (docs/life.md)"},
     {"cycloid_ltca", "/duty_cycle", "time shares summing to 1", "the duty cycle's time shares sum to 1 (docs/life.md)"},
-    {"cycloid_crowning_tuning", "/duty_cycle", "time shares summing to 1",
-     "the duty cycle's time shares sum to 1 (docs/life.md)"},
 };
 
 // Disagreements found by this test and not yet resolved: conditions JSON Schema could state
