@@ -584,6 +584,9 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", {
      "/estimated_error/lte_peak_to_peak_arcsec"},
     {"gear ratio, peak to peak", "/gear_ratio_peak_to_peak", "", "", NAN, true, "/estimated_error/gear_ratio_peak_to_peak"},
     {"most rollers in contact", "/max_pairs_in_contact", ""},
+    {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
+    {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
+    {"ring pin life L10h", "/life/pins_L10h", "h"},
     {"converged", "/converged", ""},
 });
 }  // namespace
