@@ -54,8 +54,10 @@ void StartSignalThread() {
     int sig = 0;
     sigwait(&set, &sig);
     camopt::studies::RemoveTemporaryOutputForInterrupt();
-    static const char kMessage[] = "\ncamopt: interrupted\n";
-    if (write(2, kMessage, sizeof kMessage - 1) < 0) {}
+    std::string message = "\ncamopt: interrupted\n";
+    const std::string hint = camopt::studies::sweep::InterruptHint();
+    if (!hint.empty()) message += "camopt: " + hint + "\n";
+    if (write(2, message.data(), message.size()) < 0) {}
     _exit(130);
   }).detach();
 }

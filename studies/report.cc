@@ -404,6 +404,45 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
   return os.str();
 }
 
+const char* ReportStyle() { return kStyle; }
+std::string HtmlEscape(const std::string& text) { return Html(text); }
+std::string ReportNumber(double value) { return Number(value); }
+
+std::string PlainName(const std::string& kind, const std::string& pointer) {
+  const auto it = Reports().find(kind);
+  if (it != Reports().end())
+    for (const Headline& h : it->second)
+      if (h.pointer == pointer) return h.label + (h.unit.empty() ? "" : " [" + h.unit + "]");
+  // Unit suffixes of result keys (docs/studies.md, "Units"), longest first.
+  static const std::vector<std::pair<std::string, std::string>> kUnits = {
+      {"_Nm_per_arcmin", "N·m/arcmin"}, {"_Nm_per_rad", "N·m/rad"}, {"_N_per_mm", "N/mm"},
+      {"_arcmin", "arcmin"}, {"_arcsec", "arcsec"}, {"_percent", "%"}, {"_MPa", "MPa"},
+      {"_GPa", "GPa"}, {"_rpm", "rpm"}, {"_deg", "deg"}, {"_rad", "rad"}, {"_mm", "mm"},
+      {"_um", "µm"}, {"_Nm", "N·m"}, {"_kg", "kg"}, {"_N", "N"}, {"_W", "W"}, {"_h", "h"},
+      {"_s", "s"}};
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(pointer);
+  while (std::getline(in, part, '/'))
+    if (!part.empty()) parts.push_back(part);
+  if (parts.empty()) return pointer;
+  std::string unit;
+  std::string& last = parts.back();
+  for (const auto& [suffix, name] : kUnits)
+    if (last.size() > suffix.size() && last.compare(last.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      last.resize(last.size() - suffix.size());
+      unit = name;
+      break;
+    }
+  std::string words;
+  for (const std::string& p : parts) {
+    std::string w = p;
+    std::replace(w.begin(), w.end(), '_', ' ');
+    words += (words.empty() ? "" : ", ") + w;
+  }
+  return words + (unit.empty() ? "" : " [" + unit + "]");
+}
+
 void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs) {
   const auto& files = outputs.files();
   if (const auto it = files.find("result.json"); it != files.end()) {

@@ -74,6 +74,17 @@ std::vector<std::pair<std::string, const nlohmann::json*>> LifeTables(const nloh
 /// finite L10h (no load) are listed as "no load" at the axis end.
 std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::string& title);
 
+/// A result number's plain name for tables and axis titles: the kind's headline label and unit
+/// when `pointer` is one of its headlines, else the pointer's words with the unit of its key's
+/// suffix ("/input_cam/max_contact_stress_MPa" → "input cam, max contact stress [MPa]").
+std::string PlainName(const std::string& kind, const std::string& pointer);
+
+/// For pages built like report.html (the sweep's): its style sheet, HTML escaping, and a number
+/// as it shows one (integers exactly, others to 6 significant digits).
+const char* ReportStyle();
+std::string HtmlEscape(const std::string& text);
+std::string ReportNumber(double value);
+
 /// Adds report.html (HtmlReport) to outputs, and before it life.svg (SvgLifeBars) when result.json
 /// has a life table (LifeTables; `life_N.svg` for a second one), so that the plot is a file of the
 /// run like every other.

@@ -24,6 +24,7 @@
 
 #include <boost/random/sobol.hpp>
 
+#include "studies/sweep_report.h"
 #include "studies/sweep_world.h"
 #include "studies/writers.h"
 
@@ -406,98 +407,17 @@ std::string CasesCsv(const Sweep& s, const std::vector<std::vector<json>>& cases
 
 namespace {
 
-// The objective values of a record, each oriented for minimisation; false when one is not a number.
-bool Objectives(const Sweep& s, const CaseRecord& r, std::vector<double>& f) {
-  f.clear();
-  for (size_t i : s.minimize) {
-    if (!r.outputs[i].is_number()) return false;
-    f.push_back(r.outputs[i].get<double>());
-  }
-  for (size_t i : s.maximize) {
-    if (!r.outputs[i].is_number()) return false;
-    f.push_back(-r.outputs[i].get<double>());
-  }
-  return true;
+std::mutex& HintMutex() {
+  static std::mutex m;
+  return m;
 }
-
-}  // namespace
-
-std::vector<size_t> ParetoFront(const Sweep& s, const std::vector<CaseRecord>& records) {
-  // Candidates in lexicographic order of their objectives: whatever dominates a point comes
-  // before it, and (dominance being transitive) so does some point of the front that dominates
-  // it, so each candidate is compared with the front found so far only.
-  std::vector<std::pair<std::vector<double>, size_t>> candidates;
-  std::vector<double> f;
-  for (size_t i = 0; i < records.size(); ++i)
-    if (records[i].status == "ok" && Objectives(s, records[i], f)) candidates.push_back({f, i});
-  std::sort(candidates.begin(), candidates.end());
-  std::vector<size_t> front;
-  std::vector<const std::vector<double>*> front_values;
-  for (const auto& [values, i] : candidates) {
-    bool dominated = false;
-    for (const auto* g : front_values) {
-      bool no_worse = true, better = false;
-      for (size_t k = 0; k < values.size(); ++k) {
-        no_worse = no_worse && (*g)[k] <= values[k];
-        better = better || (*g)[k] < values[k];
-      }
-      if (no_worse && better) {
-        dominated = true;
-        break;
-      }
-    }
-    if (!dominated) {
-      front.push_back(i);
-      front_values.push_back(&values);
-    }
-  }
-  std::sort(front.begin(), front.end());
-  return front;
+std::string& Hint() {
+  static std::string hint;
+  return hint;
 }
-
-namespace {
-
-// The Pareto plot over the first two objectives (or over the case number when there is one):
-// every ok case as a dot, the front's cases as larger dots of another colour, joined in order of
-// the first objective when there are exactly two objectives (with more, the front seen in two of
-// them is no line).
-std::string ParetoSvg(const Sweep& s, const std::vector<CaseRecord>& records,
-                      const std::vector<size_t>& front) {
-  std::vector<size_t> objectives = s.minimize;
-  objectives.insert(objectives.end(), s.maximize.begin(), s.maximize.end());
-  const bool one = objectives.size() == 1;
-  auto x_of = [&](const CaseRecord& r) {
-    return one ? static_cast<double>(r.index) : r.outputs[objectives[0]].get<double>();
-  };
-  auto y_of = [&](const CaseRecord& r) { return r.outputs[objectives[one ? 0 : 1]].get<double>(); };
-  Series all{"ok cases", {}, {}}, dots{"Pareto front", {}, {}};
-  all.markers = dots.markers = true;
-  std::vector<double> f;
-  for (const CaseRecord& r : records)
-    if (r.status == "ok" && Objectives(s, r, f)) {
-      all.x.push_back(x_of(r));
-      all.y.push_back(y_of(r));
-    }
-  std::vector<std::pair<double, double>> points;
-  for (size_t i : front) points.push_back({x_of(records[i]), y_of(records[i])});
-  std::sort(points.begin(), points.end());
-  for (const auto& [x, y] : points) {
-    dots.x.push_back(x);
-    dots.y.push_back(y);
-  }
-  std::vector<Series> series = {all, dots};
-  if (objectives.size() == 2) series.push_back({"front in order", dots.x, dots.y});
-  auto label = [&](size_t k) {
-    const bool max = std::find(s.maximize.begin(), s.maximize.end(), k) != s.maximize.end();
-    return s.outputs[k].path + (max ? " (maximize)" : " (minimize)");
-  };
-  PlotOptions o;
-  o.title = s.name + ": Pareto front, " + std::to_string(front.size()) + " of " +
-            std::to_string(all.x.size()) + " ok cases" +
-            (objectives.size() > 2 ? " (" + std::to_string(objectives.size()) + " objectives, two shown)" : "");
-  o.x_label = one ? "case" : label(objectives[0]);
-  o.y_label = label(objectives[one ? 0 : 1]);
-  return SvgLinePlot(series, o);
+void SetInterruptHint(std::string hint) {
+  const std::lock_guard<std::mutex> lock(HintMutex());
+  Hint() = std::move(hint);
 }
 
 // ---- The output folder, the partial folder and its checkpoints ------------------------------
@@ -696,7 +616,7 @@ class SweepLock {
 // The merged folder: written into the partial folder, which then replaces --out in one rename.
 void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
                  std::vector<CaseRecord> records, const fs::path& partial, const fs::path& out,
-                 size_t& not_ok_count, std::string& not_ok_text) {
+                 size_t& not_ok_count, std::string& not_ok_text, std::string& summary_text) {
   std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   Outputs outputs;
   outputs.Add("cases.csv", CasesCsv(s, cases, records));
@@ -718,8 +638,8 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
   for (const OutputColumn& o : s.outputs) outs.push_back(o.path);
   summary["vary"] = vary;
   summary["outputs"] = outs;
+  const std::vector<size_t> front = ParetoFront(s, records);
   if (!s.minimize.empty() || !s.maximize.empty()) {
-    const std::vector<size_t> front = ParetoFront(s, records);
     std::vector<CaseRecord> front_records;
     json front_cases = json::array();
     for (size_t i : front) {
@@ -727,9 +647,12 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
       front_cases.push_back(records[i].index);
     }
     outputs.Add("pareto.csv", CasesCsv(s, cases, front_records));
-    outputs.Add("pareto.svg", ParetoSvg(s, records, front));
     summary["pareto_front_cases"] = front_cases;
   }
+  const auto plots = ParetoPlots(s, records, front);
+  for (const auto& [file, svg] : plots) outputs.Add(file, svg);
+  outputs.Add("report.html", SweepHtml(s, cases, records, front, plots));
+  summary_text = SweepSummary(s, records, front, out.string());
   outputs.AddJson("result.json", summary);
   // The merged files first: when they cannot be written (a full disk) the checkpoints stay and
   // --resume finds every case done. Removing the checkpoints and the rename need no space.
@@ -837,6 +760,12 @@ int Run(const Options& o, World& world) {
     }
   }
 
+  if (world.rank() == 0) {
+    std::string command = "camopt sweep " + o.file + " --out " + o.out;
+    if (o.case_outputs) command += " --case-outputs";
+    SetInterruptHint("the finished cases are kept in " + partial.string() + "; `" + command +
+                     " --resume` runs only the others");
+  }
   RunContext ctx;
   ctx.quiet = true;
   ctx.max_work_factor = o.max_work_factor;
@@ -875,12 +804,13 @@ int Run(const Options& o, World& world) {
     std::vector<CaseRecord> records;
     for (auto& [i, r] : done) records.push_back(std::move(r));
     size_t not_ok = 0;
-    std::string not_ok_text;
+    std::string not_ok_text, summary_text;
     try {
       if (records.size() != cases.size())
         throw std::runtime_error("the ranks returned " + std::to_string(records.size()) + " of " +
                                  std::to_string(cases.size()) + " cases");
-      WriteMerged(s, cases, std::move(records), partial, out, not_ok, not_ok_text);
+      WriteMerged(s, cases, std::move(records), partial, out, not_ok, not_ok_text, summary_text);
+      std::cout << summary_text << std::flush;
       if (not_ok > 0) {
         std::cerr << "camopt: sweep finished; " << not_ok << " of " << cases.size()
                   << " cases are not ok (see cases.csv):\n"
@@ -899,6 +829,11 @@ int Run(const Options& o, World& world) {
 }
 
 }  // namespace
+
+std::string InterruptHint() {
+  const std::lock_guard<std::mutex> lock(HintMutex());
+  return Hint();
+}
 
 int RunCommand(const Options& options) {
   World world;

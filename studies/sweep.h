@@ -5,7 +5,8 @@
 // lists them and assigned to ranks round-robin by that number, so the merged table is the same
 // whatever the number of threads or ranks. Every finished case is appended to a checkpoint at
 // once; `--resume` continues an interrupted sweep from it. The merged folder (cases.csv,
-// pareto.csv, pareto.svg, result.json, cases/NNNN/ on request) is moved in whole at the end.
+// pareto.csv, pareto*.svg, report.html, result.json, cases/NNNN/ on request) is moved in whole at
+// the end; studies/sweep_report.h makes the front's plots, the page and the stdout summary.
 #pragma once
 
 #include <cstdint>
@@ -79,9 +80,10 @@ CaseRecord RunCase(const Sweep& sweep, size_t index, const std::vector<nlohmann:
 std::string CasesCsv(const Sweep& sweep, const std::vector<std::vector<nlohmann::json>>& cases,
                      const std::vector<CaseRecord>& records);
 
-/// The indices (into records) of the non-dominated "ok" records for the sweep's Pareto
-/// objectives, in record order. Records with a non-numeric objective take no part.
-std::vector<size_t> ParetoFront(const Sweep& sweep, const std::vector<CaseRecord>& records);
+
+/// What the CLI's signal thread prints after "interrupted" while a sweep runs: how to resume it
+/// ("" when no sweep runs).
+std::string InterruptHint();
 
 /// The command line of `camopt sweep`.
 struct Options {

@@ -283,6 +283,15 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
       for (size_t i = 0; i < n; ++i)
         if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
           os << Marker(static_cast<Shape>(k % 5), X(s.x[i]), Y(s.y[i]), 3.5, color, false);
+    for (size_t i = 0; i < std::min(n, s.point_labels.size()); ++i) {
+      if (s.point_labels[i].empty() || !std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+      const double x = X(s.x[i]), y = Y(s.y[i]);
+      const bool right_half = x > L + 0.8 * W;
+      os << "<text x=\"" << Px(right_half ? x - 6 : x + 6) << "\" y=\"" << Px(y - 5) << "\" text-anchor=\""
+         << (right_half ? "end" : "start") << "\" font-size=\"11\" fill=\"" << color
+         << "\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">" << Escape(s.point_labels[i])
+         << "</text>\n";
+    }
   }
   for (size_t i = 0; i < o.points.size(); ++i) {
     const auto& p = o.points[i];

@@ -34,6 +34,8 @@ struct Series {
   std::vector<double> y_error = {};
   SeriesStyle style = SeriesStyle::kAuto;
   bool markers = false;  ///< true: the same as style = kMarkers (a scatter plot)
+  /// Optional text beside each point (one per point, "" for none), e.g. a sweep case's number.
+  std::vector<std::string> point_labels = {};
 };
 
 /// A horizontal line at y = value (a limit, a target) or a vertical one at x = value, drawn dashed

@@ -3,6 +3,7 @@
 // same bytes with 1 or 2 threads and with 2 MPI ranks, failing cases are reported without
 // stopping the sweep, and --resume after SIGINT ends with the table of an uninterrupted run.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -19,6 +20,8 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/sweep.h"
+#include "studies/sweep_report.h"
+#include "studies/report.h"
 #include "tests/test_util.h"
 
 extern char** environ;
@@ -160,6 +163,94 @@ TEST(SweepPareto, FrontIsTheNonDominatedOkCases) {
   EXPECT_EQ(sw::ParetoFront(sweep, records), (std::vector<size_t>{0, 1, 4, 6, 7}));
 }
 
+// ---- What shows the front: plots, report.html, the stdout summary -------------------------------
+
+TEST(SweepReport, PlainNamesOfResultPointers) {
+  // A kind without headlines: the pointer's words and the unit of the key's suffix.
+  EXPECT_EQ(camopt::studies::PlainName("no_such_kind", "/input_cam/max_contact_stress_MPa"),
+            "input cam, max contact stress [MPa]");
+  EXPECT_EQ(camopt::studies::PlainName("no_such_kind", "/best/stiffness_Nm_per_arcmin"),
+            "best, stiffness [N·m/arcmin]");
+  EXPECT_EQ(camopt::studies::PlainName("no_such_kind", "/speed_ratio"), "speed ratio");
+  EXPECT_EQ(camopt::studies::PlainName("no_such_kind", "/life/shortest_L10h_h"), "life, shortest L10h [h]");
+}
+
+TEST(SweepReport, ThreeObjectivesGetAPanelPerPairAndTheSummaryNamesEachBest) {
+  const auto dir = TempDir("sweep-report");
+  json s = CycloidSweep({100});
+  s["sweep"] = "three objectives";
+  s["outputs"] = {"/a_mm", "/b_MPa", "/c_h"};
+  s["pareto"] = {{"minimize", {"/a_mm", "/b_MPa"}}, {"maximize", {"/c_h"}}};
+  const sw::Sweep sweep = ParseText(dir, s);
+  // (minimize a, minimize b, maximize c), worked out by hand: case 2 is dominated by case 1;
+  // case 4 looks dominated by case 1 in (a, b) but has the largest c; case 5 is not ok.
+  const std::vector<std::array<double, 3>> values = {{1, 5, 1}, {2, 2, 1}, {3, 3, 0}, {5, 1, 1}, {4, 4, 9}, {0, 0, 99}};
+  std::vector<sw::CaseRecord> records;
+  for (size_t i = 0; i < values.size(); ++i) {
+    sw::CaseRecord r;
+    r.index = i;
+    r.status = i == 5 ? "error" : "ok";
+    r.message = i == 5 ? "/load/torque_Nm: expected a positive number" : "";
+    r.outputs = {values[i][0], values[i][1], values[i][2]};
+    records.push_back(r);
+  }
+  const std::vector<size_t> front = sw::ParetoFront(sweep, records);
+  ASSERT_EQ(front, (std::vector<size_t>{0, 1, 3, 4}));
+
+  const auto plots = sw::ParetoPlots(sweep, records, front);
+  ASSERT_EQ(plots.size(), 3u);
+  EXPECT_EQ(plots[0].first, "pareto.svg");
+  EXPECT_EQ(plots[1].first, "pareto_1_3.svg");
+  EXPECT_EQ(plots[2].first, "pareto_2_3.svg");
+  EXPECT_NE(plots[0].second.find("objectives 1 and 2 of 3"), std::string::npos);
+  EXPECT_NE(plots[1].second.find("objectives 1 and 3 of 3"), std::string::npos);
+  // Axis titles in plain words with the direction, not JSON pointers.
+  EXPECT_NE(plots[1].second.find(">a [mm] (minimize)<"), std::string::npos) << plots[1].second;
+  EXPECT_NE(plots[1].second.find(">c [h] (maximize)<"), std::string::npos);
+  EXPECT_EQ(plots[1].second.find(">/a_mm"), std::string::npos);
+  // Each front case labelled with its number in each panel.
+  for (const auto& [file, svg] : plots) {
+    SCOPED_TRACE(file);
+    const std::string tag = "paint-order=\"stroke\">";  // a point's label, not an axis tick
+    for (const char* label : {"0", "1", "3", "4"})
+      EXPECT_NE(svg.find(tag + label + "</text>"), std::string::npos) << label;
+    EXPECT_EQ(svg.find(tag + "2</text>"), std::string::npos) << "case 2 is not on the front";
+  }
+
+  EXPECT_EQ(sw::SweepSummary(sweep, records, front, "out"),
+            "camopt: sweep \"three objectives\": 6 cases, 5 ok, 1 error\n"
+            "  Pareto front: 4 of 5 ok cases: 0, 1, 3, 4\n"
+            "  minimize a [mm]: best 1 (case 0)\n"
+            "  minimize b [MPa]: best 1 (case 3)\n"
+            "  maximize c [h]: best 9 (case 4)\n"
+            "  details: out/report.html\n");
+
+  std::vector<std::vector<json>> cases(6, std::vector<json>{0.005, 100.0});
+  const std::string html = sw::SweepHtml(sweep, cases, records, front, plots);
+  EXPECT_NE(html.find("5 of 6 cases ok, 1 error"), std::string::npos);
+  EXPECT_NE(html.find("/load/torque_Nm: expected a positive number"), std::string::npos);
+  EXPECT_NE(html.find("minimize a [mm]; minimize b [MPa]; maximize c [h]"), std::string::npos);
+  EXPECT_NE(html.find("pareto_2_3.svg"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);  // self-contained, nothing to run
+}
+
+TEST(SweepCli, ASweepWritesItsReportAndPrintsTheAnswerFirst) {
+  const auto dir = TempDir("sweep-summary");
+  WriteFile(dir / "s.json", CycloidSweep({100}, {0.002, 0.005}).dump());
+  const std::string out = (dir / "o").string();
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + out + " > " +
+                           (dir / "stdout.txt").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const std::string text = ReadFile(dir / "stdout.txt");
+  EXPECT_EQ(text.rfind("camopt: sweep \"test\": 2 cases, 2 ok\n  Pareto front: ", 0), 0u) << text;
+  EXPECT_NE(text.find("  details: " + out + "/report.html\n"), std::string::npos) << text;
+  const std::string html = ReadFile(fs::path(out) / "report.html");
+  EXPECT_NE(html.find("All 2 cases ok"), std::string::npos);
+  // Both cases' rows.
+  EXPECT_NE(html.find("<td class=\"n\">0.002</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"n\">0.005</td>"), std::string::npos);
+}
+
 // ---- Bad sweep files -----------------------------------------------------------------------------
 
 TEST(SweepInput, BadSweepFilesExit2WithThePath) {
@@ -271,7 +362,7 @@ TEST(SweepRun, OneAndTwoThreadsAndTwoRanksGiveByteIdenticalTables) {
   EXPECT_EQ(table.rfind("case,/crowning/coefficient_mm,/load/torque_Nm,status,", 0), 0u) << table;
   for (size_t k = 1; k < outs.size(); ++k) {
     SCOPED_TRACE(outs[k]);
-    for (const char* file : {"cases.csv", "pareto.csv", "pareto.svg", "result.json"})
+    for (const char* file : {"cases.csv", "pareto.csv", "pareto.svg", "report.html", "result.json"})
       EXPECT_EQ(ReadFile(fs::path(outs[k]) / file), ReadFile(fs::path(outs[0]) / file)) << file;
   }
   // Each row's numbers are those of the case's study run alone (here case 4: 0.005 mm, 350 Nm).
@@ -364,14 +455,20 @@ int CheckpointedCases(const fs::path& partial) {
 // least `cases` cases are checkpointed. Returns its pid, or -1 (and the exit status in *status)
 // when it ended first.
 pid_t StartSweepUntilCheckpointed(const std::string& sweep, const fs::path& out, const char* jobs, int cases,
-                                  int* status) {
+                                  int* status, const fs::path& stderr_file = {}) {
   std::string bin = CAMOPT_BINARY;
   std::vector<std::string> args = {bin, "sweep", sweep, "--quiet", "--jobs", jobs, "--out", out.string()};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  if (posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (!stderr_file.empty())
+    posix_spawn_file_actions_addopen(&actions, 2, stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int spawned = posix_spawn(&pid, bin.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
   const fs::path partial = out.string() + ".camopt-sweep";
   for (int k = 0; k < 6000 && CheckpointedCases(partial) < cases; ++k) {
     if (waitpid(pid, status, WNOHANG) == pid) return -1;
@@ -418,12 +515,17 @@ TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
   const auto out = dir / "cut";
   const fs::path partial = out.string() + ".camopt-sweep";
   int status = 0;
-  pid_t pid = StartSweepUntilCheckpointed(sweep, out, "2", 3, &status);
+  pid_t pid = StartSweepUntilCheckpointed(sweep, out, "2", 3, &status, dir / "cut.err");
   ASSERT_GT(pid, 0) << "the sweep ended before it could be interrupted";
   kill(pid, SIGINT);
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);
+  // The interrupt says where the finished cases are and how to go on.
+  const std::string err = ReadFile(dir / "cut.err");
+  EXPECT_NE(err.find("interrupted"), std::string::npos) << err;
+  EXPECT_NE(err.find("kept in " + partial.string()), std::string::npos) << err;
+  EXPECT_NE(err.find("--out " + out.string() + " --resume` runs only the others"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out));
   const int checkpointed = CheckpointedCases(partial);
   EXPECT_GE(checkpointed, 3);

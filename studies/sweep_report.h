@@ -1,0 +1,41 @@
+// The Pareto front of a sweep and what shows it: the front's plots (pareto.svg and, with more than
+// two objectives, one panel per pair), the sweep's report.html and its stdout summary. The cases'
+// running and checkpointing stay in studies/sweep.cc.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studies/sweep.h"
+
+namespace camopt::studies::sweep {
+
+/// The indices (into records) of the non-dominated "ok" records for the sweep's Pareto
+/// objectives, in record order. Records with a non-numeric objective take no part.
+std::vector<size_t> ParetoFront(const Sweep& sweep, const std::vector<CaseRecord>& records);
+
+/// The front's plots as {file name, SVG}: one objective, the objective over the case number; two,
+/// pareto.svg; k > 2, pareto.svg for objectives 1 and 2 and pareto_I_J.svg for each other pair
+/// (a front case can look dominated in two of k objectives: it is better in another, and the
+/// titles say so). Front cases are labelled with their numbers (up to 20 of them), axes with the
+/// objectives' plain names (PlainName) and the direction.
+std::vector<std::pair<std::string, std::string>> ParetoPlots(const Sweep& sweep,
+                                                             const std::vector<CaseRecord>& records,
+                                                             const std::vector<size_t>& front);
+
+/// The sweep's report.html: the verdict over the cases, the design, the Pareto front (its cases
+/// and plots), the cases not ok and why, and every case's row. `records` sorted by case number;
+/// `plots` the SVG files to show inline.
+std::string SweepHtml(const Sweep& sweep, const std::vector<std::vector<nlohmann::json>>& cases,
+                      const std::vector<CaseRecord>& records, const std::vector<size_t>& front,
+                      const std::vector<std::pair<std::string, std::string>>& plots);
+
+/// The answer first, for stdout: the counts by status, the front's cases, the best case of each
+/// objective (or each output's range without objectives), and where report.html is.
+std::string SweepSummary(const Sweep& sweep, const std::vector<CaseRecord>& records,
+                         const std::vector<size_t>& front, const std::string& out_dir);
+
+}  // namespace camopt::studies::sweep
