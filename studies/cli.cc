@@ -1,7 +1,7 @@
 // camopt's command line, as a function (studies/main.cc calls it; the mutation fuzzer
 // fuzz/mutation_fuzzer.cc calls it in a forked child, so that it exercises exactly the CLI). The
 // command line: `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
-// [--convergence]`, `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
+// [--convergence] [--strict]`, `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
 // `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
 // (studies/sweep.h). A successful run prints a short summary of the headline numbers of
 // result.json on stdout.
@@ -10,9 +10,11 @@
 //   2   something the user can fix: the study file, the arguments, the output folder (with the
 //       operating system's reason), a study over its work limits (docs/reliability.md)
 //   3   the study ran to the end but its result is not what was asked (not converged, nothing
-//       fits); the files are written and stderr says why
+//       fits; with --strict, a limit of the kind's verdict exceeded); the files are written and
+//       stderr says why
 //   1   a defect of camopt ("internal error")
 //   130 interrupted by SIGINT or SIGTERM (the temporary output folder is removed)
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -37,6 +39,7 @@
 #include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
+#include "studies/suggest.h"
 #include "studies/sweep.h"
 
 namespace {
@@ -126,6 +129,19 @@ void PrintSummary(const std::string& out_dir, const std::string& study_file) {
     std::cout << "  warnings: " << r["warnings"].size() << " (see result.json)\n";
 }
 
+// For --strict: the verdict line when a limit of the kind's headlines is exceeded, "" otherwise.
+std::string ExceededLimits(const std::string& out_dir, const std::string& study_file) {
+  std::ifstream in(std::filesystem::path(out_dir) / "result.json");
+  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+  if (!r.is_object()) return "";
+  std::ifstream study_in(study_file);
+  nlohmann::json study = nlohmann::json::parse(study_in, nullptr, false);
+  if (study.is_discarded()) study = nlohmann::json::object();
+  const camopt::studies::HeadlineTable table =
+      camopt::studies::EvaluateHeadlines(r.value("study", std::string()), study, r);
+  return table.exceeded.empty() ? "" : camopt::studies::VerdictLine(table);
+}
+
 }  // namespace
 
 namespace camopt::studies {
@@ -134,7 +150,7 @@ int CliMain(int argc, char** argv) {
   StartSignalThread();
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
   std::string study_file, out_dir;
-  bool quiet = false, convergence = false;
+  bool quiet = false, convergence = false, strict = false;
   double work_factor = 1.0;
   // A factor in [1e-6, 1e6]; NaN passes CLI::Range (its comparisons are false) and would switch
   // every cap off, so the check is written out.
@@ -151,6 +167,8 @@ int CliMain(int argc, char** argv) {
   run->add_option("study", study_file, "Study file (JSON)")->required();
   run->add_option("--out,-o", out_dir, "Output folder (default: results/<study file stem>)");
   run->add_flag("--quiet,-q", quiet, "No progress lines on stderr");
+  run->add_flag("--strict", strict,
+                "Exit 3 when a limit of the kind's verdict is exceeded (for scripts and CI pipelines)");
   run->add_flag("--convergence", convergence,
                 "Also run each fidelity knob refined and coarsened: convergence.json, "
                 "convergence_*.svg and a table on stdout (docs/performance.md)");
@@ -175,6 +193,23 @@ int CliMain(int argc, char** argv) {
   app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
   app.require_subcommand(0, 1);
 
+  // A first word that is no command: say so, and which command was meant.
+  if (argc >= 2 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema"};
+    if (std::find(commands.begin(), commands.end(), word) == commands.end()) {
+      if (word.size() > 5 && word.compare(word.size() - 5, 5, ".json") == 0) {
+        std::cerr << "camopt: error: a command comes before the file: `camopt run " << word
+                  << "` (a study) or `camopt sweep " << word << " --out DIR` (a sweep)\n";
+        return 2;
+      }
+      const std::string near = camopt::studies::NearestName(word, commands);
+      std::cerr << "camopt: error: unknown command \"" << word << "\""
+                << (near.empty() ? "" : " (did you mean \"" + near + "\"?)")
+                << "; the commands are run, sweep, kinds and schema (camopt --help)\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -231,6 +266,13 @@ int CliMain(int argc, char** argv) {
       camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     if (!convergence) PrintSummary(out_dir, study_file);  // --convergence prints its own table
+    if (strict) {
+      const std::string exceeded = ExceededLimits(out_dir, study_file);
+      if (!exceeded.empty()) {
+        std::cerr << "camopt: --strict: " << exceeded << "\n";
+        return 3;
+      }
+    }
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
     std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()

@@ -10,6 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "studies/suggest.h"
+
 namespace camopt::studies {
 
 namespace {
@@ -81,7 +83,11 @@ std::string Describe(const nlohmann::json& value) {
 
 void Node::Fail(const std::string& expected) const {
   const std::string found = Describe(*value_);
-  throw StudyError(file_ + ": " + path_ + ": expected " + expected + ", found " + found, file_, path_,
+  std::string hint;
+  if (value_->is_string())
+    if (const std::string near = NearestName(value_->get<std::string>(), NamesInExpected(expected)); !near.empty())
+      hint = " (did you mean \"" + near + "\"?)";
+  throw StudyError(file_ + ": " + path_ + ": expected " + expected + ", found " + found + hint, file_, path_,
                    expected, found);
 }
 
@@ -95,7 +101,9 @@ void Node::CheckKnownFields(const std::set<std::string>& known) const {
     if (known.count(it.key())) continue;
     std::string list;
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    (*this)[it.key()].FailWith("unknown field (known: " + list + ")");
+    const std::string near = NearestName(it.key(), std::vector<std::string>(known.begin(), known.end()));
+    (*this)[it.key()].FailWith("unknown field (known: " + list + ")" +
+                               (near.empty() ? "" : "; did you mean \"" + near + "\"?"));
   }
 }
 

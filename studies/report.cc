@@ -296,7 +296,7 @@ std::string VerdictLine(const HeadlineTable& table) {
   if (table.limits == 0) return "No limits to check in this study";
   if (table.exceeded.empty()) return "All " + std::to_string(table.limits) + " limits met";
   std::string s = std::to_string(table.exceeded.size()) + " of " + std::to_string(table.limits) + " limits exceeded: ";
-  for (size_t i = 0; i < table.exceeded.size(); ++i) s += (i ? ", " : "") + table.exceeded[i];
+  for (size_t i = 0; i < table.exceeded.size(); ++i) s += (i ? "; " : "") + table.exceeded[i];
   return s;
 }
 

@@ -335,6 +335,9 @@ bool RegisterStudyParser(const std::string& kind, StudyParser parser) {
 
 std::string CheckCommonFields(const Node& root) {
   if (!root.json().is_object()) root.Fail("a study object");
+  if (!root.Has("study") && root.Has("sweep") && root.Has("vary"))
+    root.FailWith("this is a sweep file (it has \"sweep\" and \"vary\", no \"study\"): run it with "
+                  "`camopt sweep " + root.file() + " --out DIR`");
   const Node kind_node = root["study"];
   const std::string kind = kind_node.String();
   if (Registry().find(kind) == Registry().end()) {

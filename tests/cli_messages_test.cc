@@ -1,0 +1,104 @@
+// What a new user meets at the command line: a misspelt command, field or enum value gets the
+// nearest accepted name; a sweep file given to `camopt run` is named as one; --strict turns a
+// failed limit into exit 3.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/suggest.h"
+#include "tests/test_util.h"
+
+namespace {
+
+using camopt::studies::NamesInExpected;
+using camopt::studies::NearestName;
+using camopt::testing::Example;
+using camopt::testing::ReadFile;
+using camopt::testing::RunCamopt;
+using camopt::testing::SourcePath;
+using camopt::testing::TempDir;
+using camopt::testing::WriteFile;
+using nlohmann::json;
+
+TEST(Suggest, NearestNameWithinAThirdOfTheLength) {
+  const std::vector<std::string> laws = {"dwell", "cycloidal", "harmonic", "quintic", "modified_trapezoidal"};
+  EXPECT_EQ(NearestName("quntic", laws), "quintic");              // a deletion
+  EXPECT_EQ(NearestName("cycloidl", laws), "cycloidal");          // a deletion
+  EXPECT_EQ(NearestName("Harmonic", laws), "");                   // only the case differs: not misspelt
+  EXPECT_EQ(NearestName("dwlel", laws), "dwell");                 // two neighbours swapped
+  EXPECT_EQ(NearestName("linear", laws), "");                     // nothing near
+  EXPECT_EQ(NearestName("modified_trapezoid", laws), "modified_trapezoidal");  // 2 of 20
+  EXPECT_EQ(NearestName("ab", {"ac", "ad"}), "");                 // a tie: no guess
+  EXPECT_EQ(NearestName("", laws), "");
+}
+
+TEST(Suggest, NamesInTheExpectedText) {
+  EXPECT_EQ(NamesInExpected("one of \"ipopt\", \"slsqp\""), (std::vector<std::string>{"ipopt", "slsqp"}));
+  EXPECT_EQ(NamesInExpected("one of factorial, zip, latin_hypercube, sobol"),
+            (std::vector<std::string>{"factorial", "zip", "latin_hypercube", "sobol"}));
+  EXPECT_EQ(NamesInExpected("a motion law (dwell, cycloidal, quintic)"),
+            (std::vector<std::string>{"dwell", "cycloidal", "quintic"}));
+  EXPECT_EQ(NamesInExpected("a positive number"), std::vector<std::string>{});
+}
+
+TEST(CliMessages, MisspeltEnumValueAndFieldGetTheNearestName) {
+  json study = Example("disc_cam_translating.json");
+  study["motion"][0]["law"] = "cycloidl";
+  camopt::testing::ExpectStudyRejected(study, "law-typo", "/motion/0/law", "(did you mean \"cycloidal\"?)");
+  study = Example("disc_cam_translating.json");
+  study["follower"]["roller_radus_mm"] = study["follower"]["roller_radius_mm"];
+  study["follower"].erase("roller_radius_mm");
+  camopt::testing::ExpectStudyRejected(study, "field-typo", "/follower/roller_radus_mm",
+                                       "; did you mean \"roller_radius_mm\"?");
+}
+
+TEST(CliMessages, UnknownCommandAndAFileWithoutACommand) {
+  auto r = RunCamopt("runn " + SourcePath("studies/examples/lcr_ii.json"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_text,
+            "camopt: error: unknown command \"runn\" (did you mean \"run\"?); the commands are run, sweep, "
+            "kinds and schema (camopt --help)\n");
+  r = RunCamopt("frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_text.find("did you mean"), std::string::npos) << r.stderr_text;
+  r = RunCamopt("study.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("a command comes before the file: `camopt run study.json`"), std::string::npos)
+      << r.stderr_text;
+}
+
+TEST(CliMessages, ASweepFileGivenToRunIsNamedAsOne) {
+  const std::string sweep = SourcePath("studies/sweeps/sweep_cycloid_crowning.json");
+  const auto dir = TempDir("run-a-sweep");
+  const auto r = RunCamopt("run " + sweep + " --quiet --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("this is a sweep file"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("`camopt sweep " + sweep + " --out DIR`"), std::string::npos) << r.stderr_text;
+}
+
+TEST(CliMessages, StrictTurnsAnExceededLimitIntoExit3) {
+  const auto dir = TempDir("strict");
+  // LCR II's example meets its limits (1500 MPa, 1050 N); a 100 MPa stress limit cannot be met.
+  json study = Example("lcr_ii.json");
+  study["analysis"]["angle_steps"] = 360;
+  WriteFile(dir / "ok.json", study.dump());
+  study["limits"]["contact_stress_MPa"] = 100;
+  WriteFile(dir / "tight.json", study.dump());
+  auto r = RunCamopt("run " + (dir / "ok.json").string() + " --quiet --strict --out " + (dir / "ok").string());
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+  r = RunCamopt("run " + (dir / "tight.json").string() + " --quiet --out " + (dir / "t1").string());
+  EXPECT_EQ(r.exit_code, 0) << "without --strict a failed limit is reported, not an error";
+  r = RunCamopt("run " + (dir / "tight.json").string() + " --quiet --strict --out " + (dir / "t2").string());
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  // Both cams' stresses (1369 and 1215 MPa in LCR II's validation) are over 100 MPa; the forces,
+  // undercut margins and roller gaps stay within theirs: 2 of lcr_analysis's 8 limits.
+  EXPECT_NE(r.stderr_text.find("camopt: --strict: 2 of 8 limits exceeded: largest contact stress, input cam; "
+                               "largest contact stress, output cam\n"),
+            std::string::npos)
+      << r.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(dir / "t2" / "result.json")) << "the files are written";
+}
+
+}  // namespace
