@@ -3,8 +3,9 @@
 
 Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR]
 
-For each of four examples (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives: its life table and life.svg) it runs camopt, then checks
-report.html:
+For each of four examples (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives: its
+life table and life.svg) and a small sweep (its report.html and Pareto plot) it runs camopt, then
+checks report.html:
   * statically: self-contained (no src/href/url() other than data: and in-page #anchors, no
     <script>), every inline <svg> is well-formed XML, one inline plot per .svg file of the run;
   * in Chromium, one start per report (--headless --screenshot, with --enable-logging=stderr
@@ -23,12 +24,31 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
-EXAMPLES = [  # (example, screenshot name)
+EXAMPLES = [  # (example, screenshot name); "sweep:" a sweep written by sweep_file()
     ("lcr_ii", "report_lcr_analysis.png"),
     ("lcr_min_size", "report_lcr_min_size.png"),
     ("cycloid_ltca_nnm_lcm", "report_cycloid_ltca.png"),
     ("lcr_ii_life", "report_lcr_life.png"),
+    ("sweep:crowning_vs_torque", "report_sweep.png"),
 ]
+
+
+def sweep_file(source, work):
+    """A small sweep of the cycloid example (6 cases on a coarse grid) with a Pareto front."""
+    import json
+    path = os.path.join(work, "sweep_crowning_vs_torque.json")
+    sweep = {
+        "sweep": "crowning against torque",
+        "base": os.path.join(os.path.abspath(source), "studies", "examples", "cycloid_ltca_nnm_lcm.json"),
+        "set": {"/analysis": {"crank_angle_steps": 6, "grid": [12, 12]}},
+        "vary": [{"path": "/crowning/coefficient_mm", "values": [0.002, 0.005, 0.01]},
+                 {"path": "/load/torque_Nm", "values": [100, 300]}],
+        "outputs": ["/max_contact_stress_MPa", "/lte_peak_to_peak_arcsec"],
+        "pareto": {"minimize": ["/max_contact_stress_MPa"], "maximize": ["/lte_peak_to_peak_arcsec"]},
+    }
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(sweep, f)
+    return path
 WINDOW = (1280, 2000)
 
 
@@ -112,8 +132,13 @@ def main():
     for example, shot in EXAMPLES:
         print(example)
         out = os.path.join(work, example)
-        study = os.path.join(source, "studies", "examples", example + ".json")
-        run = subprocess.run([camopt, "run", study, "--out", out, "--quiet"], cwd=source,
+        if example.startswith("sweep:"):
+            out = os.path.join(work, example[6:])
+            command = [camopt, "sweep", sweep_file(source, work), "--out", out, "--quiet", "--jobs", "1"]
+        else:
+            study = os.path.join(source, "studies", "examples", example + ".json")
+            command = [camopt, "run", study, "--out", out, "--quiet"]
+        run = subprocess.run(command, cwd=source,
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
         if run.returncode != 0:
             failures.append("%s: camopt exit %d: %s" % (example, run.returncode, run.stderr.strip()))
