@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -108,6 +109,43 @@ std::vector<std::string> Unique(const std::vector<std::string>& rows) {
   for (const std::string& row : rows) {
     const std::string base = row.substr(0, row.find('['));
     if (seen.insert(base).second) out.push_back(base);
+  }
+  return out;
+}
+
+// A constraint row's plain name for the summary and the report ("input_stress_margin_3d" →
+// "contact stress (3D), input cam"); result.json's `binding` keeps the row names scripts use.
+std::string PlainLimitName(const std::string& row) {
+  static const std::map<std::string, std::string> kNames = {
+      {"outer_diameter_bound_mm", "outer diameter bound"},
+      {"roller_gap_mm", "gap between rollers"},
+      {"undercut_margin_mm", "undercut margin"},
+      {"pitch_clearance_mm", "pitch clearance"},
+      {"roller_force_N", "roller force"},
+      {"stress_margin", "contact stress"},
+      {"stress_margin_3d", "contact stress (3D contact)"},
+      {"mean_efficiency", "mean efficiency"},
+      {"roller_life", "roller life"},
+      {"eccentric_bearing_life", "eccentric bearing life"}};
+  std::string side, rest = row;
+  for (const char* s : {"input", "output"})
+    if (row.rfind(std::string(s) + "_", 0) == 0) {
+      side = std::string(", ") + s + " cam";
+      rest = row.substr(std::string(s).size() + 1);
+    }
+  const auto it = kNames.find(rest);
+  std::string name = it != kNames.end() ? it->second : rest;
+  if (it == kNames.end()) std::replace(name.begin(), name.end(), '_', ' ');
+  return name + side;
+}
+
+std::vector<std::string> PlainLimitNames(const std::vector<std::string>& rows) {
+  std::vector<std::string> out;
+  for (const std::string& row : rows) {
+    // The rows that define the outer diameter (the objective) bind at every optimum: not limits.
+    if (row == "outer_radius_mm" || row == "input_envelope_mm" || row == "output_envelope_mm") continue;
+    const std::string name = PlainLimitName(row);
+    if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
   }
   return out;
 }
@@ -493,6 +531,33 @@ Result Run(const Study& s, const RunContext& ctx) {
   return res;
 }
 
+// What each binding limit costs in outer diameter, one line per limit ("stress limit +10 MPa →
+// -0.458 mm"), from the limit sensitivities (re-solves of the line problem).
+std::vector<std::string> LimitCosts(const Result& result) {
+  struct Shown {
+    const char* key;
+    const char* label;
+    double step;
+    const char* unit;
+  };
+  const Shown shown[] = {{"contact_stress_MPa", "stress limit", 10, "MPa"},
+                         {"roller_load_N", "roller load limit", 10, "N"},
+                         {"undercut_margin_mm", "undercut margin", 0.1, "mm"},
+                         {"roller_gap_mm", "roller gap", 0.1, "mm"},
+                         {"min_efficiency", "efficiency limit", 0.01, ""},
+                         {"life_h", "life limit", 1000, "h"}};
+  std::vector<std::string> lines;
+  char buf[200];
+  for (const Shown& sh : shown) {
+    const auto it = result.limit_sensitivity.find(sh.key);
+    if (it == result.limit_sensitivity.end()) continue;
+    std::snprintf(buf, sizeof buf, "%s +%g%s%s → %+.3f mm", sh.label, sh.step, *sh.unit ? " " : "", sh.unit,
+                  it->second * sh.step);
+    lines.push_back(buf);
+  }
+  return lines;
+}
+
 nlohmann::json ToJson(const Study& s, const Result& result) {
   nlohmann::json res;
   res["study"] = "lcr_min_size";
@@ -557,8 +622,14 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   }
   if (best.roller >= 0) b["catalogue_roller"] = s.catalogue[best.roller].name;
   b["binding"] = Unique(best.outcome.result.active);
+  b["binding_limits"] = PlainLimitNames(Unique(best.outcome.result.active));
   b["limit_sensitivity"] = nlohmann::json::object();
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
+  if (!result.limit_sensitivity.empty()) b["limit_costs"] = LimitCosts(result);
+  if (s.contact3d)
+    b["limit_sensitivity_note"] =
+        "not computed for a sizing on the 3D contact: each limit's cost would take two more verified 3D "
+        "sizings; move the limit in the study and run it again";
   if (!k.life.empty()) b["life"] = LifeJson(best.spec, k);
   res["best"] = b;
   if (s.contact3d) AddContact3DJson(s, result, res);
@@ -655,25 +726,7 @@ std::string Summary(const Study& s, const Result& result) {
                 ComboName(b.combo).c_str(), b.outcome.check->outer_diameter_mm, result.candidates.size(),
                 result.seconds);
   m << buf;
-  struct Shown {
-    const char* key;
-    const char* label;
-    double step;
-    const char* unit;
-  };
-  const Shown shown[] = {{"contact_stress_MPa", "stress limit", 10, "MPa"},
-                         {"roller_load_N", "roller load limit", 10, "N"},
-                         {"undercut_margin_mm", "undercut margin", 0.1, "mm"},
-                         {"roller_gap_mm", "roller gap", 0.1, "mm"},
-                         {"min_efficiency", "efficiency limit", 0.01, ""},
-                         {"life_h", "life limit", 1000, "h"}};
-  for (const Shown& sh : shown) {
-    const auto it = result.limit_sensitivity.find(sh.key);
-    if (it == result.limit_sensitivity.end()) continue;
-    std::snprintf(buf, sizeof buf, "lcr_min_size: %s +%g%s%s → %+.3f mm\n", sh.label, sh.step,
-                  *sh.unit ? " " : "", sh.unit, it->second * sh.step);
-    m << buf;
-  }
+  for (const std::string& line : LimitCosts(result)) m << "lcr_min_size: " << line << "\n";
   (void)s;
   return m.str();
 }
@@ -726,7 +779,9 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
     {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
     {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
-    {"binding limits", "/best/binding", ""},
+    {"binding limits", "/best/binding_limits", ""},
+    {"what the binding limits cost", "/best/limit_costs", ""},
+    {"limit costs", "/best/limit_sensitivity_note", ""},
 });
 }  // namespace
 

@@ -42,7 +42,7 @@ std::string Value(const nlohmann::json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_array() && std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_string(); })) {
     std::string joined;
-    for (const auto& e : v) joined += (joined.empty() ? "" : ", ") + e.get<std::string>();
+    for (const auto& e : v) joined += (joined.empty() ? "" : "; ") + e.get<std::string>();
     return joined.empty() ? "none" : joined;
   }
   return v.dump();

@@ -1,6 +1,8 @@
 // What a new user meets at the command line: a misspelt command, field or enum value gets the
 // nearest accepted name; a sweep file given to `camopt run` is named as one; --strict turns a
 // failed limit into exit 3.
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -99,6 +101,30 @@ TEST(CliMessages, StrictTurnsAnExceededLimitIntoExit3) {
             std::string::npos)
       << r.stderr_text;
   EXPECT_TRUE(std::filesystem::exists(dir / "t2" / "result.json")) << "the files are written";
+}
+
+TEST(CliMessages, SizingSummaryNamesWhatBindsInPlainWordsAndWhatItCosts) {
+  const auto dir = TempDir("sizing-summary");
+  const std::string out = (dir / "o").string();
+  const auto r = RunCamopt("run " + SourcePath("studies/examples/lcr_min_size.json") + " --quiet --out " + out +
+                           " > " + (dir / "stdout.txt").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const json best = json::parse(ReadFile(std::filesystem::path(out) / "result.json"))["best"];
+  const std::string text = ReadFile(dir / "stdout.txt");
+  // Both cams sit at the 1500 MPa stress limit and nothing else binds (forces, margins and gaps
+  // clear of theirs): the plain names of exactly those rows, not the solver's row names.
+  ASSERT_NEAR(best["input"]["max_contact_stress_MPa"].get<double>(), 1500, 1.5);
+  ASSERT_NEAR(best["output"]["max_contact_stress_MPa"].get<double>(), 1500, 1.5);
+  EXPECT_LT(best["max_roller_force_N"].get<double>(), 1050 * 0.99);
+  EXPECT_NE(text.find("  binding limits: contact stress, input cam; contact stress, output cam\n"), std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("stress_margin"), std::string::npos) << text;
+  // The cost of the stress limit: 10 MPa times d(outer diameter)/d(limit) of result.json.
+  char line[120];
+  std::snprintf(line, sizeof line, "  what the binding limits cost: stress limit +10 MPa → %+.3f mm\n",
+                10 * best["limit_sensitivity"]["contact_stress_MPa"].get<double>());
+  EXPECT_NE(text.find(line), std::string::npos) << line << text;
+  EXPECT_LT(best["limit_sensitivity"]["contact_stress_MPa"].get<double>(), 0.0) << "a higher limit, a smaller reducer";
 }
 
 }  // namespace
