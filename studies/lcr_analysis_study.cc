@@ -422,7 +422,11 @@ Study Parse(const Node& root) {
       load_node["output_torque_Nm"].Fail("a torque > 0 for the transmission error under \"tolerances\"");
   }
   if (root.Has("limits")) {
-    root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N", "life_h"});
+    root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N", "life_h", "undercut_margin_mm",
+                                     "roller_gap_mm"});
+    // The margins are read by the report's headlines ("study:/limits/…"); checked here.
+    root["limits"].NonNegativeOr("undercut_margin_mm", 0.0);
+    root["limits"].NonNegativeOr("roller_gap_mm", 0.0);
     st.life_limit_h = root["limits"].PositiveOr("life_h", 0.0);
     st.contact_stress_limit_MPa = root["limits"].PositiveOr("contact_stress_MPa", kInf);
     st.roller_load_limit_N = root["limits"].PositiveOr("roller_load_N", kInf);
@@ -947,10 +951,10 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", {
     {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
     {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
     {"largest roller force, output cam", "/output_cam/max_roller_force_N", "N", "/output_cam/roller_load_limit_N"},
-    {"undercut margin, input cam", "/input_cam/undercut_margin_mm", "mm", "", 0.0, false},
-    {"undercut margin, output cam", "/output_cam/undercut_margin_mm", "mm", "", 0.0, false},
-    {"gap between rollers, input cam", "/input_cam/roller_gap_mm", "mm", "", 0.0, false},
-    {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "", 0.0, false},
+    {"undercut margin, input cam", "/input_cam/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
+    {"undercut margin, output cam", "/output_cam/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
+    {"gap between rollers, input cam", "/input_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
+    {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
     {"outer diameter", "/outer_diameter_mm", "mm"},
     {"speed ratio", "/speed_ratio", ""},
     {"mean efficiency", "/efficiency/mean", ""},

@@ -653,6 +653,8 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     nlohmann::json lim = nlohmann::json::object();
     if (std::isfinite(best.spec.limits.contact_stress_MPa)) lim["contact_stress_MPa"] = best.spec.limits.contact_stress_MPa;
     if (std::isfinite(best.spec.limits.roller_load_N)) lim["roller_load_N"] = best.spec.limits.roller_load_N;
+    lim["undercut_margin_mm"] = best.spec.limits.undercut_margin_mm;
+    lim["roller_gap_mm"] = best.spec.limits.roller_gap_mm;
     a["limits"] = lim;
     a["analysis"] = {{"angle_steps", s.options.dense_steps}};
     if (best.spec.life && best.outcome.check) {
