@@ -81,6 +81,20 @@ Drawing CamDrawing(const lcr::Reducer<double>& r, Side s, double cutter_radius, 
   cutter.polylines.push_back(
       ToPolyline(lcr::SampleCurve(c, r.eccentricity, c.roller_radius - cutter_radius, points)));
   d.layers = {profile, pitch, cutter};
+  double r_min = INFINITY, r_max = 0;
+  for (const auto& [x, y] : profile.polylines.front()) {
+    r_min = std::min(r_min, std::hypot(x, y));
+    r_max = std::max(r_max, std::hypot(x, y));
+  }
+  char line[200];
+  std::snprintf(line, sizeof line, "%d lobes, %d rollers; eccentricity %g mm; turret radius %g mm", c.lobes,
+                c.rollers, r.eccentricity, c.turret_radius);
+  d.dimensions.push_back(line);
+  std::snprintf(line, sizeof line, "roller diameter %g mm; cam thickness %g mm; cutter diameter %g mm",
+                2 * c.roller_radius, c.cam_thickness, 2 * cutter_radius);
+  d.dimensions.push_back(line);
+  std::snprintf(line, sizeof line, "profile radius from the cam centre %.3f to %.3f mm (sampled)", r_min, r_max);
+  d.dimensions.push_back(line);
   return d;
 }
 

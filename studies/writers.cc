@@ -342,10 +342,13 @@ std::string SvgDrawing(const Drawing& d, int size) {
   const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
   auto X = [&](double x) { return size / 2.0 + (x - cx) * scale; };
   auto Y = [&](double y) { return title + size / 2.0 - (y - cy) * scale; };
+  // The footer: the scale bar and extent on one line, then one line per main dimension.
+  const double footer = 30 + 16 * static_cast<double>(d.dimensions.size());
+  const int height = static_cast<int>(size + title + footer);
 
   std::ostringstream os;
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\""
-     << size + title << "\" viewBox=\"0 0 " << size << " " << size + title
+     << height << "\" viewBox=\"0 0 " << size << " " << height
      << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   os << "<text x=\"" << size / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"15\">"
@@ -382,6 +385,22 @@ std::string SvgDrawing(const Drawing& d, int size) {
        << l.color << "\" font-size=\"11\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">"
        << Escape(l.text) << "</text>\n";
   }
+  // Scale bar: the round length nearest a fifth of the drawing's span.
+  const double target = span / 5, decade = std::pow(10.0, std::floor(std::log10(target)));
+  double bar = decade;
+  for (double m : {2.0, 5.0, 10.0})
+    if (std::abs(m * decade - target) < std::abs(bar - target)) bar = m * decade;
+  const double y0 = size + title + 12, x1 = size - margin, x0 = x1 - bar * scale;
+  os << "<path d=\"M" << Px(x0) << "," << Px(y0 - 5) << " L" << Px(x0) << "," << Px(y0) << " L" << Px(x1) << ","
+     << Px(y0) << " L" << Px(x1) << "," << Px(y0 - 5) << "\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n";
+  char text[160];
+  std::snprintf(text, sizeof text, "%g mm", bar);
+  os << "<text x=\"" << Px(x0 - 6) << "\" y=\"" << Px(y0 + 4) << "\" text-anchor=\"end\">" << text << "</text>\n";
+  std::snprintf(text, sizeof text, "extent %.1f × %.1f mm", xmax - xmin, ymax - ymin);
+  os << "<text x=\"10\" y=\"" << Px(y0 + 4) << "\">" << text << "</text>\n";
+  for (size_t i = 0; i < d.dimensions.size(); ++i)
+    os << "<text x=\"10\" y=\"" << Px(y0 + 20 + 16 * static_cast<double>(i)) << "\">" << Escape(d.dimensions[i])
+       << "</text>\n";
   os << "</svg>\n";
   return os.str();
 }

@@ -91,10 +91,13 @@ struct Drawing {
   std::string title;
   std::vector<Layer> layers;
   std::vector<Label> labels = {};
+  /// The main dimensions as text lines under the drawing ("outer diameter 96 mm").
+  std::vector<std::string> dimensions = {};
 };
 
 /// SVG of a drawing, fitted to the canvas with equal axis scales; a layer's name is its legend
-/// entry, labels are drawn last (on top).
+/// entry, labels are drawn last (on top). Under the drawing: a scale bar of a round length (1, 2
+/// or 5 × 10^k mm, about a fifth of the drawing), its overall extent and its main dimensions.
 std::string SvgDrawing(const Drawing& drawing, int size_px = 800);
 
 }  // namespace camopt::studies

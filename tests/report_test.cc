@@ -97,6 +97,29 @@ TEST(SvgDrawing, LabelsAreDrawnOnTop) {
   EXPECT_GT(svg.find(">2</text>"), last_circle);
 }
 
+TEST(SvgDrawing, ScaleBarExtentAndMainDimensionsUnderTheDrawing) {
+  // A 100 mm × 60 mm rectangle on the default 800 px canvas: 740 px for the larger span, so
+  // 7.4 px per mm, and the round length nearest 100/5 mm is 20 mm: a bar of 148 px ending 30 px
+  // from the right edge.
+  Drawing d;
+  d.title = "plate";
+  Drawing::Layer plate{"PLATE", "black", {{{0, 0}, {100, 0}, {100, 60}, {0, 60}}}, {}, true, 1.0};
+  d.layers = {plate};
+  d.dimensions = {"width 100 mm", "height 60 mm"};
+  const std::string svg = SvgDrawing(d);
+  EXPECT_NE(svg.find("<path d=\"M622.00,837.00 L622.00,842.00 L770.00,842.00 L770.00,837.00\""), std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find(">20 mm</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">extent 100.0 × 60.0 mm</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">width 100 mm</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">height 60 mm</text>"), std::string::npos);
+  // The canvas grows by the footer: 800 + 30 (title) + 30 + 2 × 16.
+  EXPECT_NE(svg.find("height=\"892\""), std::string::npos);
+  // 3 mm wide: the bar is 0.5 mm (the round length nearest 0.6).
+  d.layers[0].polylines = {{{0, 0}, {3, 0}, {3, 1}, {0, 1}}};
+  EXPECT_NE(SvgDrawing(d).find(">0.5 mm</text>"), std::string::npos);
+}
+
 Outputs SampleOutputs(double stress) {
   Outputs out;
   out.AddJson("result.json", {{"max_stress_MPa", stress},
