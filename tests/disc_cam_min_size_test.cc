@@ -199,6 +199,60 @@ TEST(DiscCamMinSize, AnOffsetPaysOnlyForAnAsymmetricProgram) {
   EXPECT_NEAR(b.outcome.check.accurate.max_pressure_return_deg, 30.0, 1e-4);
 }
 
+// The contact-stress limit binding: the dwell → constant velocity → dwell example (docs/disc_cam.md,
+// 250 rpm, spring 1.5 N/mm with 30 N preload, 1.2 kg above the cam, steel 12 mm wide) with the base
+// circle and the roller (4…16 mm) free and 150 MPa. The roller goes to its largest size and the
+// peak is on the top dwell (S = 40 mm, S'' = 0), where by hand F_c = k S + F₀ + m g = 101.768 N,
+// the pitch radius is r_b + r_f + 40 and p₀ = sqrt(F_c E*/(π w R')) with R' = r_f (1 − r_f κ)
+// (Johnson eq. 4.45), E* = E/(2(1 − ν²)): p₀ = 150 MPa gives R', then X = r_b + 40 from
+// R' = r_f X/(X + r_f), X = R' r_f/(r_f − R').
+TEST(DiscCamMinSize, ContactStressLimitMatchesTheDwellClosedForm) {
+  json j = testing::Example("disc_cam_dynamics.json");
+  j["study"] = "disc_cam_min_size";
+  j.erase("analysis");  // the disc_cam stages; the sizing has its own analysis block
+  j["limits"] = {{"pressure_angle_deg", 30}, {"contact_stress_MPa", 150}};
+  j["variables"] = {{"base_circle_radius_mm", {10, 80}}, {"roller_radius_mm", {4, 16}}};
+  const double force = 1.5 * 40 + 30 + 1.2 * 9.80665;
+  const double e_star = 206000.0 / (2 * (1 - 0.3 * 0.3));
+  const double r_eff = force * e_star / (kPiHere * 12 * 150.0 * 150.0);
+  const double expected = r_eff * 16 / (16 - r_eff) - 40;
+  for (const char* backend : {"ipopt", "slsqp"}) {
+    SCOPED_TRACE(backend);
+    j["optimizer"] = {{"backend", backend}};
+    const dcs::Result r = dcs::Run(ParseStudy(j), {"s.json", true});
+    const auto& o = r.outcome;
+    ASSERT_TRUE(o.verified) << r.blocking_message;
+    EXPECT_NEAR(o.cam.roller_radius, 16.0, 1e-6);
+    EXPECT_NEAR(o.cam.base_radius, expected, 1e-3);  // the limit held 2e-7 inside: ~2e-4 mm
+    EXPECT_LE(o.check.accurate.max_contact_stress_MPa, 150.0);
+    EXPECT_GE(o.check.accurate.at_stress_deg, 200.0 - 1e-6);
+    EXPECT_LE(o.check.accurate.at_stress_deg, 240.0);
+    EXPECT_EQ(o.binding, std::vector<std::string>{"contact_stress_MPa"});
+    ASSERT_TRUE(o.limit_cost.count("contact_stress_MPa"));
+    EXPECT_LT(o.limit_cost.at("contact_stress_MPa"), 0.0) << "a higher stress limit allows a smaller cam";
+  }
+}
+
+// The radius margin binding: at 40° the pressure angle needs only r_b = 7.40 mm, but a margin of
+// 25 mm on the profile's convex radius holds the base circle itself (ρ_pitch − r_f = r_b on the
+// dwells, and the rise and return of this program are flatter there): r_b = 25 mm and its cost
+// 1 mm per mm, by hand.
+TEST(DiscCamMinSize, RadiusMarginBindsOnTheBaseCircle) {
+  for (const char* backend : {"ipopt", "slsqp"}) {
+    SCOPED_TRACE(backend);
+    json j = InLineStudy(backend, 40);
+    j["limits"]["radius_margin_mm"] = 25;
+    const dcs::Result r = dcs::Run(ParseStudy(j), {"s.json", true});
+    const auto& o = r.outcome;
+    ASSERT_TRUE(o.verified) << r.blocking_message;
+    EXPECT_NEAR(o.cam.base_radius, 25.0, 1e-5);
+    EXPECT_GE(o.check.accurate.min_radius_of_curvature_mm, 25.0);
+    EXPECT_EQ(o.binding, std::vector<std::string>{"radius_margin_mm"});
+    ASSERT_TRUE(o.limit_cost.count("radius_margin_mm"));
+    EXPECT_NEAR(o.limit_cost.at("radius_margin_mm"), 1.0, 1e-6);
+  }
+}
+
 // Through the CLI: exit 3 with the limit that blocks when no design in the ranges meets the limits.
 TEST(DiscCamMinSize, InfeasibleLimitsExitThreeWithTheReason) {
   json j = Example();
