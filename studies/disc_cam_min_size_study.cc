@@ -63,14 +63,14 @@ std::string BlockingMessage(const Study& s, const objectives::DiscCamMinSizeOutc
   if (w) {
     const std::string head = o.converged ? "the optimum of the sampled angles is not verified after " +
                                                std::to_string(o.rounds) + " tightening rounds: "
-                                         : "no design in the variables' ranges meets the limits (the optimizer stopped " +
+                                         : "no design in the variables' ranges meets the limits (optimizer status " +
                                                std::string(optimizers::ToString(o.result.status)) + "): ";
     return head + w->limit + " (" + w->where + ") blocks; " + at + " it is " + Format(w->accurate_value, 6) +
            " against the limit " + Format(w->limit_value, 6) +
            (w->upper ? "; widen the ranges (a larger base circle, another offset or roller) or raise the limit"
                      : "; widen the ranges or lower the margin");
   }
-  return "the optimizer stopped " + std::string(optimizers::ToString(o.result.status)) + " " + at +
+  return "the optimizer ended with status " + std::string(optimizers::ToString(o.result.status)) + " " + at +
          " although the accurate model meets every limit there: it is not known to be the smallest (" +
          o.result.message + "); give more optimizer.max_evaluations";
 }
@@ -356,7 +356,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 
-std::string Summary(const Study& s, const Result& r) {
+std::string Summary(const Result& r) {
   const objectives::DiscCamMinSizeOutcome& o = r.outcome;
   std::ostringstream m;
   char buf[300];
@@ -371,7 +371,6 @@ std::string Summary(const Study& s, const Result& r) {
                   LimitUnit(key).c_str());
     m << buf;
   }
-  (void)s;
   return m.str();
 }
 
@@ -379,7 +378,7 @@ void RunDiscCamMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
   const Study s = Parse(root);
   const Result r = Run(s, ctx);
   Write(s, r, out);
-  if (!ctx.quiet) std::cerr << Summary(s, r);
+  if (!ctx.quiet) std::cerr << Summary(r);
 }
 
 CAMOPT_REGISTER_STUDY("disc_cam_min_size", RunDiscCamMinSize);
