@@ -414,6 +414,7 @@ const std::vector<CrossField> kCrossField = {
     {"cycloid_min_size", "/target/", "shortening coefficient",
      "the pin count against the eccentricity and pin circle ranges (a plausible drive everywhere in the box)"},
     {"disc_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
+    {"disc_cam_min_size", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"disc_cam", "/motion", "the motion is not continuous",
      "a polynomial segment's boundary values continue the program (position so far, the neighbours' derivatives)"},
     {"globoidal_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},

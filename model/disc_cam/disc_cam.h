@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "model/common/geometry.h"
 #include "model/common/scalar.h"
@@ -37,6 +38,27 @@ struct DiscCamTpl {
   motion::MotionProgram<T> motion;
 };
 using DiscCam = DiscCamTpl<double>;
+
+/// The design with every number converted to the scalar To (a Jet gets constants; seed the
+/// variables afterwards), as pinocchio's `model.cast<NewScalar>()`.
+template <typename To>
+DiscCamTpl<To> CastCam(const DiscCamTpl<double>& cam) {
+  DiscCamTpl<To> out;
+  out.follower = cam.follower;
+  out.base_radius = To(cam.base_radius);
+  out.roller_radius = To(cam.roller_radius);
+  out.offset = To(cam.offset);
+  out.pivot_distance = To(cam.pivot_distance);
+  out.arm_length = To(cam.arm_length);
+  std::vector<motion::MotionSegment<To>> segments;
+  for (const motion::MotionSegment<double>& s : cam.motion.segments()) {
+    motion::MotionSegment<To> c(s.law, To(s.rise), To(s.duration));
+    for (double k : s.coefficients) c.coefficients.push_back(To(k));
+    segments.push_back(std::move(c));
+  }
+  out.motion = motion::MotionProgram<To>(std::move(segments));
+  return out;
+}
 
 /// The cam and follower at one cam angle.
 template <typename T>

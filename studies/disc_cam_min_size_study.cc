@@ -1,0 +1,419 @@
+#include "studies/disc_cam_min_size_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "studies/format.h"
+#include "studies/report.h"
+#include "studies/verification_json.h"
+#include "studies/writers.h"
+
+namespace camopt::studies::disc_cam_min_size {
+namespace {
+
+namespace dc = camopt::disc_cam;
+using objectives::DiscCamSizingVariable;
+constexpr double kDeg = kPi / 180.0;
+
+nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// The unit of a limit key, for the costs ("mm per deg").
+std::string LimitUnit(const std::string& key) {
+  if (key == "pressure_angle_deg") return "deg";
+  if (key == "contact_stress_MPa") return "MPa";
+  return "mm";
+}
+
+double LimitValue(const Study& s, const objectives::DiscCamMinSizeOutcome& o, const std::string& key) {
+  if (key == "pressure_angle_deg") return s.spec.limits.pressure_angle_deg;
+  if (key == "contact_stress_MPa") return s.spec.limits.contact_stress_MPa;
+  return objectives::RadiusMarginOf(s.spec, o.cam);
+}
+
+std::string DesignWords(const Study& s, const objectives::DiscCamMinSizeOutcome& o) {
+  std::string w = "base circle " + Format(o.cam.base_radius, 6) + " mm";
+  for (size_t k = 1; k < s.spec.which.size(); ++k)
+    w += ", " + objectives::DiscCamSizingVariableName(s.spec.which[k]) + " " + Format(o.x[k], 6);
+  return w;
+}
+
+// Why the answer is not what was asked (exit 3), or "" when it is: the limit that blocks, its
+// accurate value at the closest design, and what would help.
+std::string BlockingMessage(const Study& s, const objectives::DiscCamMinSizeOutcome& o) {
+  if (o.x.empty())
+    return "no design meets the limits: the optimizer ended without a design (" +
+           (o.result.message.empty() ? std::string(optimizers::ToString(o.result.status)) : o.result.message) +
+           "); widen the variables' ranges or relax the limits";
+  if (o.verified && o.converged) return "";
+  // The check that breaks its limit by the largest share of the limit.
+  const objectives::VerifiedLimit* w = nullptr;
+  double share = 0;
+  for (const objectives::VerifiedLimit& c : o.check.checks) {
+    const double miss = !std::isfinite(c.accurate_value) ? kInf
+                        : c.upper                        ? c.accurate_value - c.limit_value
+                                                         : c.limit_value - c.accurate_value;
+    if (!(miss > 0)) continue;
+    const double part = miss / std::max(std::abs(c.limit_value), 1e-9);
+    if (!w || part > share) w = &c, share = part;
+  }
+  const std::string at = "at the closest design (" + DesignWords(s, o) + ")";
+  if (w) {
+    const std::string head = o.converged ? "the optimum of the sampled angles is not verified after " +
+                                               std::to_string(o.rounds) + " tightening rounds: "
+                                         : "no design in the variables' ranges meets the limits (optimizer status " +
+                                               std::string(optimizers::ToString(o.result.status)) + "): ";
+    return head + w->limit + " (" + w->where + ") blocks; " + at + " it is " + Format(w->accurate_value, 6) +
+           " against the limit " + Format(w->limit_value, 6) +
+           (w->upper ? "; widen the ranges (a larger base circle, another offset or roller) or raise the limit"
+                     : "; widen the ranges or lower the margin");
+  }
+  return "the optimizer ended with status " + std::string(optimizers::ToString(o.result.status)) + " " + at +
+         " although the accurate model meets every limit there: it is not known to be the smallest (" +
+         o.result.message + "); give more optimizer.max_evaluations";
+}
+
+nlohmann::json CycleJson(const objectives::DiscCamCycleValues& v) {
+  nlohmann::json pa = {{"max_rise", v.max_pressure_rise_deg}, {"at_max_rise_cam_angle_deg", v.at_rise_deg}};
+  if (v.has_return) {
+    pa["max_return"] = v.max_pressure_return_deg;
+    pa["at_max_return_cam_angle_deg"] = v.at_return_deg;
+  }
+  nlohmann::json j = {{"pressure_angle_deg", pa},
+                      {"min_radius_of_curvature_mm", NumberOrNull(v.min_radius_of_curvature_mm)},
+                      {"at_min_radius_of_curvature_cam_angle_deg", v.at_curvature_deg},
+                      {"max_radial_dimension_mm", v.max_radial_dimension_mm}};
+  if (v.stress_evaluated) {
+    j["max_contact_stress_MPa"] = NumberOrNull(v.max_contact_stress_MPa);
+    j["at_max_contact_stress_cam_angle_deg"] = v.at_stress_deg;
+  }
+  return j;
+}
+
+}  // namespace
+
+Study Parse(const Node& root) {
+  root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion", "tolerances",
+                         "analysis", "cam_thickness_mm", "bore_diameter_mm", "cutter_radius_mm", "geometry_files",
+                         "limits", "dynamics", "face_width_mm", "material", "variables", "optimizer"});
+  Study s;
+  // The disc_cam part, read by the disc_cam parser (same paths: only the sizing's own fields are
+  // taken out, and its analysis block, which is the sizing's).
+  s.base_json = root.json();
+  for (const char* k : {"variables", "optimizer", "analysis"}) s.base_json.erase(k);
+  s.base_json["study"] = "disc_cam";
+  {
+    nlohmann::json checked = s.base_json;
+    checked["analysis"] = {{"monte_carlo", false}};
+    s.base = disc_cam::Parse(Node(&checked, root.file(), root.path()));
+  }
+  s.name = root.StringOr("name", "disc cam");
+  const dc::DiscCam& cam = s.base.cam;
+  if (cam.follower != dc::FollowerType::kTranslatingRoller)
+    root["follower"]["type"].FailWith(
+        "disc_cam_min_size sizes a translating roller follower (variables base_circle_radius_mm, offset_mm, "
+        "roller_radius_mm); an oscillating follower's pivot and arm are not sizing variables yet: use follower.type "
+        "\"translating_roller\", or study \"disc_cam\" to analyse an oscillating design");
+
+  objectives::DiscCamSizingSpec& spec = s.spec;
+  spec.cam = cam;
+  const Node vars = root["variables"];
+  vars.CheckKnownFields({"base_circle_radius_mm", "offset_mm", "roller_radius_mm"});
+  struct Entry {
+    const char* key;
+    DiscCamSizingVariable which;
+    double start;
+    bool positive;
+  };
+  const Entry entries[] = {{"base_circle_radius_mm", DiscCamSizingVariable::kBaseCircle, cam.base_radius, true},
+                           {"offset_mm", DiscCamSizingVariable::kOffset, cam.offset, false},
+                           {"roller_radius_mm", DiscCamSizingVariable::kRollerRadius, cam.roller_radius, true}};
+  for (const Entry& e : entries) {
+    if (e.which == DiscCamSizingVariable::kBaseCircle) (void)vars[e.key];  // required: "missing field"
+    if (!vars.Has(e.key)) continue;
+    const Node n = vars[e.key];
+    if (e.positive && n.json().is_array() && n.json().size() == 2) {
+      (void)n[0].Positive();
+      (void)n[1].Positive();
+    }
+    const auto [lo, hi] = n.Range();
+    objectives::Variable v;
+    v.name = e.key;
+    v.lower = lo;
+    v.upper = hi;
+    v.initial = std::clamp(e.start, lo, hi);
+    v.scale = std::max(1.0, std::max(std::abs(lo), std::abs(hi)) / 2);
+    spec.which.push_back(e.which);
+    spec.variables.push_back(v);
+  }
+
+  spec.limits.pressure_angle_deg = s.base.limits.pressure_angle_deg;
+  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default;
+  spec.limits.radius_margin_mm = s.base.limits.radius_margin_mm;
+  if (s.base.limits.contact_stress_MPa) spec.limits.contact_stress_MPa = *s.base.limits.contact_stress_MPa;
+  if (s.base.dynamics && s.base.face_width_mm && s.base.material) {
+    objectives::DiscCamStressModel m;
+    m.loads = s.base.dynamics->loads;
+    m.omega_rad_per_s = dc::RadPerSecond(s.base.dynamics->speed_rpm);
+    m.face_width_mm = *s.base.face_width_mm;
+    m.composite_modulus_MPa = s.base.material->composite_modulus_MPa();
+    spec.stress = m;
+  }
+
+  spec.angle_steps = kDefaultAngleSteps;
+  spec.accurate_factor = kDefaultAccurateFactor;
+  if (root.Has("analysis")) {
+    const Node a = root["analysis"];
+    a.CheckKnownFields({"angle_steps", "accurate_factor"});
+    spec.angle_steps = a.IntegerOr("angle_steps", 36, kDefaultAngleSteps);
+    if (spec.angle_steps > 100000) a["angle_steps"].Fail("a whole number <= 100000");
+    spec.accurate_factor = a.IntegerOr("accurate_factor", 2, kDefaultAccurateFactor);
+    if (spec.accurate_factor > 64) a["accurate_factor"].Fail("a whole number <= 64");
+  }
+
+  optimizers::SolverOptions& so = s.options.solver;
+  so.max_evaluations = kDefaultMaxEvaluations;
+  s.options.verify_rounds = kDefaultVerifyRounds;
+  if (root.Has("optimizer")) {
+    const Node o = root["optimizer"];
+    o.CheckKnownFields({"backend", "max_evaluations", "verify_rounds"});
+    s.backend = o.StringOr("backend", "ipopt");
+    if (s.backend != "ipopt" && s.backend != "slsqp") o["backend"].Fail("one of \"ipopt\", \"slsqp\"");
+    so.max_evaluations = o.IntegerOr("max_evaluations", 1, kDefaultMaxEvaluations);
+    if (so.max_evaluations > 10000) o["max_evaluations"].Fail("a whole number <= 10000");
+    s.options.verify_rounds = o.IntegerOr("verify_rounds", 0, kDefaultVerifyRounds);
+    if (s.options.verify_rounds > 10) o["verify_rounds"].Fail("a whole number <= 10");
+  }
+  so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
+  // The rows are smooth (closed forms over the angle samples): tight tolerances, and the budget,
+  // never the clock, bounds a run (the same study gives the same design).
+  so.tolerance = 1e-10;
+  so.constraint_tolerance = 1e-7;
+  so.max_seconds = 1e9;
+  return s;
+}
+
+Result Run(const Study& s, const RunContext& ctx) {
+  Result r;
+  Progress progress("disc_cam_min_size", ctx.quiet);
+  progress.Update(0.0, "solving");
+  r.outcome = objectives::SolveDiscCamMinSize(s.spec, s.options);
+  progress.Update(1.0);
+  progress.Done();
+  r.blocking_message = BlockingMessage(s, r.outcome);
+  return r;
+}
+
+nlohmann::json ToJson(const Study& s, const Result& r) {
+  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  nlohmann::json j;
+  j["study"] = "disc_cam_min_size";
+  j["name"] = s.name;
+  j["follower"] = "translating_roller";
+  j["objective"] = "base_circle_radius_mm";
+  nlohmann::json vars = nlohmann::json::array();
+  for (const objectives::Variable& v : s.spec.variables)
+    vars.push_back({{"name", v.name}, {"lower", v.lower}, {"upper", v.upper}, {"start", v.initial}});
+  j["variables"] = vars;
+  nlohmann::json defaults = nlohmann::json::array();
+  if (s.base.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
+  if (s.base.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
+  nlohmann::json limits = {{"pressure_angle_deg", s.spec.limits.pressure_angle_deg}, {"defaults", defaults}};
+  if (s.spec.limits.radius_margin_is_roller) {
+    limits["radius_margin_mm"] = o.x.empty() ? s.spec.cam.roller_radius : o.cam.roller_radius;
+    limits["radius_margin_follows"] = "roller_radius_mm";
+  } else {
+    limits["radius_margin_mm"] = s.spec.limits.radius_margin_mm;
+  }
+  if (std::isfinite(s.spec.limits.contact_stress_MPa)) limits["contact_stress_MPa"] = s.spec.limits.contact_stress_MPa;
+  j["limits"] = limits;
+  AddVerificationJson(o.verification, j);
+  // Verified: the accurate values themselves within the limits at a converged optimum (exit 0).
+  j["verified"] = o.verified && o.converged;
+  if (o.x.empty()) {
+    j["best"] = nullptr;
+  } else {
+    nlohmann::json b;
+    b["base_circle_radius_mm"] = Finite(o.cam.base_radius, "base circle");
+    b["offset_mm"] = Finite(o.cam.offset, "offset");
+    b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
+    b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
+    nlohmann::json at_bounds = nlohmann::json::array();
+    for (size_t k = 0; k < s.spec.variables.size(); ++k) {
+      const objectives::Variable& v = s.spec.variables[k];
+      const double tol = 1e-6 * std::max(1.0, v.upper - v.lower);
+      if (v.upper > v.lower && o.x[k] <= v.lower + tol)
+        at_bounds.push_back({{"name", v.name}, {"bound", "lower"}, {"value", v.lower}});
+      else if (v.upper > v.lower && o.x[k] >= v.upper - tol)
+        at_bounds.push_back({{"name", v.name}, {"bound", "upper"}, {"value", v.upper}});
+    }
+    b["variables_at_bounds"] = at_bounds;
+    b["accurate"] = CycleJson(o.check.accurate);
+    b["fast"] = CycleJson(o.check.fast);
+    // The accurate values' own error estimate, and the fast (sampled) model's error: accurate − fast.
+    const objectives::DiscCamCycleValues &a = o.check.accurate, &d = o.check.dense, &f = o.check.fast;
+    nlohmann::json err = {{"pressure_angle_rise_deg", a.max_pressure_rise_deg - d.max_pressure_rise_deg}};
+    nlohmann::json fast_err = {{"pressure_angle_rise_deg", a.max_pressure_rise_deg - f.max_pressure_rise_deg}};
+    if (a.has_return) {
+      err["pressure_angle_return_deg"] = a.max_pressure_return_deg - d.max_pressure_return_deg;
+      fast_err["pressure_angle_return_deg"] = a.max_pressure_return_deg - f.max_pressure_return_deg;
+    }
+    err["min_radius_of_curvature_mm"] = NumberOrNull(d.min_radius_of_curvature_mm - a.min_radius_of_curvature_mm);
+    fast_err["min_radius_of_curvature_mm"] = NumberOrNull(a.min_radius_of_curvature_mm - f.min_radius_of_curvature_mm);
+    if (a.stress_evaluated) {
+      err["max_contact_stress_MPa"] = NumberOrNull(a.max_contact_stress_MPa - d.max_contact_stress_MPa);
+      fast_err["max_contact_stress_MPa"] = NumberOrNull(a.max_contact_stress_MPa - f.max_contact_stress_MPa);
+    }
+    b["estimated_error"] = err;
+    b["fast_model_error"] = fast_err;
+    b["accurate_model"] = o.check.model;
+    j["best"] = b;
+  }
+  j["binding"] = o.binding;
+  nlohmann::json costs = nlohmann::json::array();
+  for (const auto& [key, cost] : o.limit_cost)
+    costs.push_back({{"limit", key},
+                     {"limit_value", NumberOrNull(LimitValue(s, o, key))},
+                     {"limit_cost", Finite(cost, "limit cost")},
+                     {"unit", "mm of base circle per " + LimitUnit(key)}});
+  j["binding_limits"] = costs;
+  nlohmann::json starts = nlohmann::json::array();
+  for (const optimizers::SolverResult& st : o.starts)
+    starts.push_back({{"status", optimizers::ToString(st.status)},
+                      {"base_circle_radius_mm", st.x.empty() ? nlohmann::json(nullptr) : nlohmann::json(st.objective)},
+                      {"max_violation", st.max_violation}});
+  j["optimizer"] = {{"backend", s.backend},
+                    {"converged", o.converged},
+                    {"status", optimizers::ToString(o.result.status)},
+                    {"message", o.result.message},
+                    {"max_violation", o.result.max_violation},
+                    {"binding_rows", o.result.active},
+                    {"max_evaluations", s.options.solver.max_evaluations},
+                    {"verify_rounds", s.options.verify_rounds},
+                    {"rounds", o.rounds},
+                    {"evaluations", o.result.value_evaluations},
+                    {"gradient_evaluations", o.result.gradient_evaluations},
+                    {"start_outcomes", starts}};
+  j["analysis"] = {{"angle_steps", s.spec.angle_steps},
+                   {"accurate_factor", s.spec.accurate_factor},
+                   {"accurate_angle_steps", s.spec.angle_steps * s.spec.accurate_factor}};
+  if (!r.blocking_message.empty()) j["notes"] = {r.blocking_message};
+  return j;
+}
+
+nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
+  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  if (o.x.empty()) return nullptr;
+  nlohmann::json a = s.base_json;
+  a["name"] = (o.verified && o.converged ? "best of " : "closest design (not verified) of ") + s.name;
+  a["base_circle_radius_mm"] = o.cam.base_radius;
+  a["follower"]["offset_mm"] = o.cam.offset;
+  a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
+  // Fields the sized design may no longer take (the cutter no larger than the roller, the bore
+  // inside the base circle) are left out.
+  if (a.contains("cutter_radius_mm") && a["cutter_radius_mm"].is_number() &&
+      a["cutter_radius_mm"].get<double>() > o.cam.roller_radius)
+    a.erase("cutter_radius_mm");
+  if (a.contains("bore_diameter_mm") && a["bore_diameter_mm"].is_number() &&
+      a["bore_diameter_mm"].get<double>() >= 2 * o.cam.base_radius)
+    a.erase("bore_diameter_mm");
+  a["analysis"] = {{"angle_steps", std::min(1000000, s.spec.angle_steps * s.spec.accurate_factor)}, {"monte_carlo", false}};
+  return a;
+}
+
+void Write(const Study& s, const Result& r, Outputs& out) {
+  out.AddJson("result.json", ToJson(s, r));
+  if (!r.blocking_message.empty()) out.MarkIncomplete("disc_cam_min_size: " + r.blocking_message);
+  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  if (o.x.empty()) return;
+  out.AddJson("best_disc_cam.json", BestDiscCamStudy(s, r));
+  // The best design over the accurate grid: pressure angle and the profile's radius of curvature.
+  const int n = s.spec.angle_steps * s.spec.accurate_factor;
+  const size_t m = static_cast<size_t>(n);
+  std::vector<double> th(m), phi(m), kappa(m), s_mm(m);
+  for (int i = 0; i < n; ++i) {
+    const dc::CamPoint<double> p = dc::EvaluateCam(o.cam, 2 * kPi * i / n);
+    th[size_t(i)] = 360.0 * i / n;
+    phi[size_t(i)] = p.pressure_angle / kDeg;
+    kappa[size_t(i)] = p.pitch_curvature;
+    s_mm[size_t(i)] = p.s;
+  }
+  Table t;
+  t.Add("cam_angle_deg", th);
+  t.Add("follower_mm", s_mm);
+  t.Add("pressure_angle_deg", phi);
+  t.Add("pitch_curvature_per_mm", kappa);
+  out.Add("series.csv", ToCsv(t));
+  PlotOptions po;
+  po.title = s.name + ": pressure angle of the smallest cam (base circle " + Format(o.cam.base_radius, 5) + " mm)";
+  po.x_label = "cam angle [deg]";
+  po.y_label = "pressure angle [deg]";
+  po.guides = {{"limit", s.spec.limits.pressure_angle_deg}, {"−limit", -s.spec.limits.pressure_angle_deg}};
+  out.Add("pressure_angle.svg", SvgLinePlot({{"pressure angle φ", th, phi}}, po));
+}
+
+namespace {
+
+std::string Summary(const Result& r) {
+  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  std::ostringstream m;
+  char buf[300];
+  if (!o.x.empty()) {
+    std::snprintf(buf, sizeof buf, "disc_cam_min_size: %s base circle %.6g mm (offset %.6g mm, roller %.6g mm)\n",
+                  o.verified && o.converged ? "smallest" : "closest (not verified)", o.cam.base_radius, o.cam.offset,
+                  o.cam.roller_radius);
+    m << buf;
+  }
+  for (const auto& [key, cost] : o.limit_cost) {
+    std::snprintf(buf, sizeof buf, "disc_cam_min_size: %s binds: %+.4g mm of base circle per %s\n", key.c_str(), cost,
+                  LimitUnit(key).c_str());
+    m << buf;
+  }
+  return m.str();
+}
+
+void RunDiscCamMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study s = Parse(root);
+  const Result r = Run(s, ctx);
+  Write(s, r, out);
+  if (!ctx.quiet) std::cerr << Summary(r);
+}
+
+CAMOPT_REGISTER_STUDY("disc_cam_min_size", RunDiscCamMinSize);
+CAMOPT_REGISTER_STUDY_PARSER("disc_cam_min_size", [](const Node& root) { (void)Parse(root); });
+
+// Fidelity for `camopt run --convergence` (studies/convergence.h): the fast rows' angles (the
+// accurate grid follows them) and the optimizer's budget. The verified answer should not move.
+Fidelity Knobs(const nlohmann::json&) {
+  Fidelity f;
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, kDefaultAngleSteps, 2, true, 0,
+                     "cam angles of the fast rows (the accurate grid is accurate_factor times as fine)"});
+  f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, kDefaultMaxEvaluations, 2, true, 0,
+                     "optimizer budget per solve (Ipopt: iterations; SLSQP: evaluations)"});
+  f.headlines = {"/best/base_circle_radius_mm", "/best/accurate/pressure_angle_deg/max_rise"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("disc_cam_min_size", Knobs);
+
+// report.html: the headline numbers and their limits.
+CAMOPT_REGISTER_REPORT("disc_cam_min_size", {
+    {"smallest base circle radius", "/best/base_circle_radius_mm", "mm"},
+    {"offset", "/best/offset_mm", "mm"},
+    {"roller radius", "/best/roller_radius_mm", "mm"},
+    {"largest pressure angle, rise (accurate)", "/best/accurate/pressure_angle_deg/max_rise", "deg",
+     "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_rise_deg"},
+    {"largest pressure angle, return (accurate)", "/best/accurate/pressure_angle_deg/max_return", "deg",
+     "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_return_deg"},
+    {"smallest convex radius of curvature (ρ_pitch − r_roller)", "/best/accurate/min_radius_of_curvature_mm", "mm",
+     "/limits/radius_margin_mm", NAN, false, "/best/estimated_error/min_radius_of_curvature_mm"},
+    {"largest contact stress (accurate)", "/best/accurate/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa",
+     NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
+    {"largest radial dimension", "/best/accurate/max_radial_dimension_mm", "mm"},
+    {"verified", "/verified", ""},
+});
+
+}  // namespace
+
+}  // namespace camopt::studies::disc_cam_min_size
