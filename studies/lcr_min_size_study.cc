@@ -27,6 +27,7 @@ namespace {
 
 using objectives::LcrConstraintForm;
 using objectives::LcrSizingSpec;
+using objectives::LcrLimits;
 
 std::array<double, 2> PositiveRange(const Node& n) {
   const auto [lo, hi] = n.Range();
@@ -622,10 +623,24 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   }
   if (best.roller >= 0) b["catalogue_roller"] = s.catalogue[best.roller].name;
   b["binding"] = Unique(best.outcome.result.active);
-  b["binding_limits"] = PlainLimitNames(Unique(best.outcome.result.active));
+  b["binding_names"] = PlainLimitNames(Unique(best.outcome.result.active));
   b["limit_sensitivity"] = nlohmann::json::object();
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
   if (!result.limit_sensitivity.empty()) b["limit_costs"] = LimitCosts(result);
+  // The same as cycloid_min_size and disc_cam_min_size give it: limit, its value, its cost.
+  b["binding_limits"] = nlohmann::json::array();
+  for (const auto& [key, cost] : result.limit_sensitivity) {
+    const LcrLimits& l = best.spec.limits;
+    const std::map<std::string, std::pair<double, std::string>> values = {
+        {"contact_stress_MPa", {l.contact_stress_MPa, "MPa"}}, {"roller_load_N", {l.roller_load_N, "N"}},
+        {"undercut_margin_mm", {l.undercut_margin_mm, "mm"}},  {"roller_gap_mm", {l.roller_gap_mm, "mm"}},
+        {"min_efficiency", {l.min_efficiency, "1"}},          {"life_h", {l.life_h, "h"}}};
+    const auto it = values.find(key);
+    b["binding_limits"].push_back({{"limit", key},
+                                   {"limit_value", it != values.end() ? it->second.first : NAN},
+                                   {"limit_cost", cost},
+                                   {"unit", "mm per " + (it != values.end() ? it->second.second : std::string("unit"))}});
+  }
   if (s.contact3d)
     b["limit_sensitivity_note"] =
         "not computed for a sizing on the 3D contact: each limit's cost would take two more verified 3D "
@@ -781,7 +796,7 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
     {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
     {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
-    {"binding limits", "/best/binding_limits", ""},
+    {"binding limits", "/best/binding_names", ""},
     {"what the binding limits cost", "/best/limit_costs", ""},
     {"limit costs", "/best/limit_sensitivity_note", ""},
 });

@@ -125,6 +125,12 @@ TEST(CliMessages, SizingSummaryNamesWhatBindsInPlainWordsAndWhatItCosts) {
                 10 * best["limit_sensitivity"]["contact_stress_MPa"].get<double>());
   EXPECT_NE(text.find(line), std::string::npos) << line << text;
   EXPECT_LT(best["limit_sensitivity"]["contact_stress_MPa"].get<double>(), 0.0) << "a higher limit, a smaller reducer";
+  // binding_limits shaped as the other sizing kinds give it.
+  ASSERT_EQ(best["binding_limits"].size(), 1u) << best["binding_limits"];
+  EXPECT_EQ(best["binding_limits"][0]["limit"], "contact_stress_MPa");
+  EXPECT_EQ(best["binding_limits"][0]["limit_value"], 1500.0);
+  EXPECT_EQ(best["binding_limits"][0]["limit_cost"], best["limit_sensitivity"]["contact_stress_MPa"]);
+  EXPECT_EQ(best["binding_limits"][0]["unit"], "mm per MPa");
 }
 
 }  // namespace
