@@ -104,7 +104,7 @@ void ParseDiscsAndOutput(const Node& root, Study& s) {
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
                          "geometry_files", "duty_cycle", "crank_bearing", "pins", "output_mechanism", "discs",
-                         "disc_spacing_mm"});
+                         "disc_spacing_mm", "stiffness"});
   Study s;
   s.name = root.StringOr("name", "");
   s.drive = cycloid_common::ParseDrive(root);
@@ -163,6 +163,16 @@ Study Parse(const Node& root) {
     s.crank_angles_rad = UniformCrankAngles(s.crank_angles_per_mesh_period, period);
   if (!s.loaded) s.estimate_error = false;
   ParseDiscsAndOutput(root, s);
+  if (root.Has("stiffness")) {
+    const Node n = root["stiffness"];
+    n.CheckKnownFields({"rated_torque_Nm", "crank_angle_deg"});
+    Study::StiffnessSpec st;
+    st.rated_torque_Nm = n["rated_torque_Nm"].Positive();
+    st.crank_angle_deg = n.NumberOr("crank_angle_deg", 0.0);
+    if (!s.loaded)
+      n.FailWith("the torsional curve needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
+    s.stiffness = st;
+  }
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
   s.life = cycloid_common::ParseLife(root, s.drive, s.disc_torque_Nmm(), true);
   if (s.life && s.discs > 1)
@@ -490,6 +500,20 @@ Result Run(const Study& s, const RunContext& ctx) {
     r.tooth_files = FitPlanarCam(g, s.geometry);
   }
   if (s.output) RunOutputMechanism(s, r);
+  if (s.stiffness) {
+    LoadedOptions options = s.options;
+    options.keep_pressure = false;
+    options.crank_slope = false;
+    const LoadedTca tca(s.drive, s.crowning, s.material, options);
+    std::optional<OutputPins> pins;
+    if (s.output) {
+      pins = s.output->pins;
+      pins->face_width_mm = s.drive.face_width_mm;
+      pins->e_star_MPa = tca.e_star_MPa();
+    }
+    r.torsion = TorsionalCurve(tca, pins ? &*pins : nullptr, s.stiffness->crank_angle_deg * kPi / 180.0,
+                               s.stiffness->rated_torque_Nm * 1000.0, s.discs);
+  }
   if (s.life) {
     LoadedOptions options = s.options;
     options.keep_pressure = false;
@@ -649,6 +673,28 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     j["discs"] = s.discs;
     j["disc_torque_Nm"] = s.disc_torque_Nmm() / 1000.0;
   }
+  if (r.torsion) {
+    const cycloid::TorsionCurve& c = *r.torsion;
+    const double arcmin = 60.0 * 180.0 / kPi;
+    j["torsional_stiffness_Nm_per_arcmin"] = Finite(c.stiffness_Nmm_per_rad / 1000.0 / arcmin, "stiffness");
+    j["lost_motion_arcmin"] = Finite(c.lost_motion_rad * arcmin, "lost motion");
+    j["backlash_arcmin"] = Finite(c.backlash_rad * arcmin, "backlash");
+    j["stiffness"] = {
+        {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
+        {"crank_angle_deg", s.stiffness->crank_angle_deg},
+        {"stiffness_positive_Nm_per_arcmin", c.stiffness_positive_Nmm_per_rad / 1000.0 / arcmin},
+        {"stiffness_negative_Nm_per_arcmin", c.stiffness_negative_Nmm_per_rad / 1000.0 / arcmin},
+        {"ring_pins_share", c.ring_share},
+        {"output_pins_share", c.output_pins_share},
+        {"output_pins", s.output ? "compliant (output_mechanism)" : "rigid (no pin and hole radii given)"},
+        {"contact_solves", c.contact_solves},
+        {"hysteresis_width_arcmin", 0.0},
+        {"definitions",
+         "input held at crank_angle_deg; output angle = disc against ring (LTCA: beta0 + deflection) + output "
+         "against disc (output pins); stiffness: mean of the two directions' slopes between 50% and 100% of the "
+         "rated torque; lost motion: angle(+3%) - angle(-3%); backlash: angle(0+) - angle(0-); frictionless: "
+         "loading and unloading coincide (hysteresis width 0)"}};
+  }
   if (s.output) {
     const OutputSpec& o = *s.output;
     j["max_ring_pin_force_N"] = Finite(cycle.max_pair_load_N, "max ring-pin force");
@@ -740,6 +786,37 @@ void WriteOutputMechanism(const Study& s, const Result& r, Outputs& out) {
   out.Add("eccentric_bearing_load.svg", SvgLinePlot(lines, po));
 }
 
+// hysteresis.csv (the output angle against the output torque, −T_r → T_r loading and back
+// unloading, the same curve in this frictionless model, with each element's part) and
+// hysteresis.svg.
+void WriteTorsion(const Result& r, Outputs& out) {
+  const double arcmin = 60.0 * 180.0 / kPi;
+  std::vector<double> branch, torque, angle, ring, pins;
+  const auto& p = r.torsion->points;
+  auto add = [&](int b, const cycloid::TorsionPoint& x) {
+    branch.push_back(b);
+    torque.push_back(x.torque_Nmm / 1000.0);
+    angle.push_back(x.output_angle_rad * arcmin);
+    ring.push_back(x.ring_rad * arcmin);
+    pins.push_back(x.output_pins_rad * arcmin);
+  };
+  for (const auto& x : p) add(0, x);
+  for (auto it = p.rbegin(); it != p.rend(); ++it) add(1, *it);
+  Table t;
+  t.Add("branch_loading_0_unloading_1", branch);
+  t.Add("output_torque_Nm", torque);
+  t.Add("output_angle_arcmin", angle);
+  t.Add("ring_pins_arcmin", ring);
+  t.Add("output_pins_arcmin", pins);
+  out.Add("hysteresis.csv", ToCsv(t));
+  PlotOptions po;
+  po.x_label = "output torque [N m]";
+  po.y_label = "output angle [arcmin]";
+  po.title = "Output angle against output torque, input held (frictionless: no hysteresis width)";
+  std::vector<double> x(torque.begin(), torque.begin() + long(p.size())), y(angle.begin(), angle.begin() + long(p.size()));
+  out.Add("hysteresis.svg", SvgLinePlot({{"output angle", x, y}}, po));
+}
+
 }  // namespace
 
 void Write(const Study& s, const Result& r, Outputs& out) {
@@ -802,6 +879,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   out.Add("pressure_max.csv", ToCsv(pmap));
 
   if (s.output) WriteOutputMechanism(s, r, out);
+  if (r.torsion) WriteTorsion(r, out);
   AddToothDrawing(s, r, out);
 }
 
@@ -849,6 +927,9 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", {
     {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N"},
     {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa"},
     {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa"},
+    {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
+    {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+    {"backlash", "/backlash_arcmin", "arcmin"},
     {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
     {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
     {"ring pin life L10h", "/life/pins_L10h", "h"},

@@ -16,6 +16,7 @@
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/output_mechanism.h"
+#include "model/cycloid/stiffness.h"
 #include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/input.h"
@@ -56,6 +57,11 @@ struct Study {
   std::optional<cycloid_common::LifeSpec> life;
   /// "output_mechanism" with the pins' and holes' radii; nullopt: no output-mechanism outputs.
   std::optional<OutputSpec> output;
+  /// "stiffness": {"rated_torque_Nm", "crank_angle_deg"}: the torsional curve (model/cycloid/stiffness.h).
+  struct StiffnessSpec {
+    double rated_torque_Nm = 0, crank_angle_deg = 0;
+  };
+  std::optional<StiffnessSpec> stiffness;
   int discs = 1;                 ///< "discs": N, phased by 360°/N about the crank, each carrying T/N
   double disc_spacing_mm = 0;    ///< "disc_spacing_mm": mid-plane to mid-plane (default the face width)
   /// The torque on each disc [N·mm]: load.torque_Nm (the output torque) over the discs (equal split
@@ -115,6 +121,7 @@ struct Result {
   std::vector<double> pin_bending_stress_MPa;   ///< per angle, the largest over the pins
   double max_output_pin_force_N = 0, max_contact_pressure_MPa = 0, max_bearing_load_N = 0,
          max_bending_stress_MPa = 0, max_net_crank_force_N = 0, max_couple_Nmm = 0, max_moment_residual = 0;
+  std::optional<cycloid::TorsionCurve> torsion;       ///< with "stiffness"
   std::vector<double> bearing_load_at_ltca_angles_N;  ///< |B| of disc 1 at crank_angles_rad (per_angle.csv)
 };
 

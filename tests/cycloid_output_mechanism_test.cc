@@ -334,6 +334,30 @@ TEST(CycloidOutputMechanismStudy, TwoDiscExampleBalancesAndIsDeterministic) {
   EXPECT_NEAR(*std::max_element(b1.begin(), b1.end()), r["eccentric_bearing_load_N"].get<double>(), 1e-6);
   // The load period: n2 / gcd(n2, 8) = 15 mesh periods of 22.5°.
   EXPECT_NEAR(r["output_mechanism"]["load_period_crank_deg"].get<double>(), 337.5, 1e-9);
+  // The torsional curve (input held at crank 0, rated 700 N·m): the catalogue numbers from
+  // hysteresis.csv by hand.
+  const auto h = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out0" / "hysteresis.csv"));
+  const auto& torque = h.at("output_torque_Nm");
+  const auto& angle = h.at("output_angle_arcmin");
+  auto angle_at = [&](double t, bool positive_zero = true) {
+    for (size_t k = 0; k < torque.size() / 2; ++k)  // the loading branch
+      if (torque[k] == t && (t != 0.0 || std::signbit(torque[k]) != positive_zero)) return angle[k];
+    ADD_FAILURE() << "torque " << t << " not sampled";
+    return 0.0;
+  };
+  EXPECT_NEAR(r["torsional_stiffness_Nm_per_arcmin"].get<double>(), 350.0 / (angle_at(700) - angle_at(350)),
+              1e-6 * r["torsional_stiffness_Nm_per_arcmin"].get<double>());
+  EXPECT_NEAR(r["lost_motion_arcmin"].get<double>(), angle_at(21) - angle_at(-21), 1e-8);
+  EXPECT_NEAR(r["backlash_arcmin"].get<double>(), angle_at(0.0, true) - angle_at(0.0, false), 1e-8);
+  EXPECT_GT(r["lost_motion_arcmin"].get<double>(), r["backlash_arcmin"].get<double>());
+  for (size_t k = 0; k < torque.size() / 2; ++k)  // odd at crank 0 (the drive's mirror symmetry)
+    EXPECT_NEAR(angle[k], -angle[torque.size() / 2 - 1 - k], 1e-9) << torque[k];
+  // At zero torque the output pins have taken up their clearance: w = c / R_w (the pins at ±90°
+  // from the crank at crank 0 close first), 5 µm / 50 mm.
+  const auto& pins_part = h.at("output_pins_arcmin");
+  EXPECT_NEAR(pins_part[torque.size() / 4], 0.005 / 50.0 * 180.0 / kPi * 60.0, 1e-4);
+  EXPECT_NEAR(r["stiffness"]["ring_pins_share"].get<double>() + r["stiffness"]["output_pins_share"].get<double>(),
+              1.0, 1e-12);
   const auto per_angle = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out0" / "per_angle.csv"));
   EXPECT_EQ(per_angle.at("eccentric_bearing_load_N").size(), per_angle.at("crank_angle_deg").size());
 }
@@ -348,6 +372,9 @@ TEST(CycloidOutputMechanismStudy, BadOutputMechanismIsRejectedWithThePathAndWhat
   study = Example("cycloid_ltca_two_discs.json");
   study["output_mechanism"]["pin_span_mm"] = 30;
   ExpectStudyRejected(study, "span", "/output_mechanism/pin_span_mm", "disc stack");
+  study = Example("cycloid_ltca_two_discs.json");
+  study["stiffness"]["rated_torque_Nm"] = 0;
+  ExpectStudyRejected(study, "rated", "/stiffness/rated_torque_Nm", "expected a number > 0");
   study = Example("cycloid_ltca_two_discs.json");
   study["discs"] = 3;
   study["output_mechanism"]["pin_span_mm"] = 80;
