@@ -499,7 +499,14 @@ Result Run(const Study& s, const RunContext& ctx) {
     for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
     r.tooth_files = FitPlanarCam(g, s.geometry);
   }
-  if (s.output) RunOutputMechanism(s, r);
+  if (s.output) {
+    try {
+      RunOutputMechanism(s, r);
+    } catch (const std::invalid_argument& e) {
+      r.output_failed = e.what();
+      r.warnings.push_back(std::string("output mechanism not solved: ") + e.what());
+    }
+  }
   if (s.stiffness) {
     LoadedOptions options = s.options;
     options.keep_pressure = false;
@@ -511,8 +518,13 @@ Result Run(const Study& s, const RunContext& ctx) {
       pins->face_width_mm = s.drive.face_width_mm;
       pins->e_star_MPa = tca.e_star_MPa();
     }
-    r.torsion = TorsionalCurve(tca, pins ? &*pins : nullptr, s.stiffness->crank_angle_deg * kPi / 180.0,
-                               s.stiffness->rated_torque_Nm * 1000.0, s.discs);
+    try {
+      r.torsion = TorsionalCurve(tca, pins ? &*pins : nullptr, s.stiffness->crank_angle_deg * kPi / 180.0,
+                                 s.stiffness->rated_torque_Nm * 1000.0, s.discs);
+    } catch (const std::invalid_argument& e) {
+      r.torsion_failed = e.what();
+      r.warnings.push_back(std::string("torsional curve not solved: ") + e.what());
+    }
   }
   if (s.life) {
     LoadedOptions options = s.options;
@@ -673,6 +685,14 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     j["discs"] = s.discs;
     j["disc_torque_Nm"] = s.disc_torque_Nmm() / 1000.0;
   }
+  if (s.stiffness && !r.torsion)
+    for (const char* key : {"torsional_stiffness_Nm_per_arcmin", "lost_motion_arcmin", "backlash_arcmin"}) j[key] = nullptr;
+  if (s.output && !r.output_failed.empty()) {
+    for (const char* key : {"max_ring_pin_force_N", "max_output_pin_force_N", "eccentric_bearing_load_N",
+                            "output_pin_bending_stress_MPa", "output_pin_contact_pressure_MPa"})
+      j[key] = nullptr;
+    j["output_mechanism"] = {{"error", r.output_failed}};
+  }
   if (r.torsion) {
     const cycloid::TorsionCurve& c = *r.torsion;
     const double arcmin = 60.0 * 180.0 / kPi;
@@ -695,7 +715,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
          "rated torque; lost motion: angle(+3%) - angle(-3%); backlash: angle(0+) - angle(0-); frictionless: "
          "loading and unloading coincide (hysteresis width 0)"}};
   }
-  if (s.output) {
+  if (s.output && r.output_failed.empty()) {
     const OutputSpec& o = *s.output;
     j["max_ring_pin_force_N"] = Finite(cycle.max_pair_load_N, "max ring-pin force");
     j["max_output_pin_force_N"] = Finite(r.max_output_pin_force_N, "max output-pin force");
@@ -846,7 +866,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("max_contact_stress_MPa", col_p);
   table.Add("pairs_in_contact", col_pairs);
   for (int i = 0; i < n1; ++i) table.Add("load_roller_" + std::to_string(i + 1) + "_N", col_load[i]);
-  if (s.output) table.Add("eccentric_bearing_load_N", r.bearing_load_at_ltca_angles_N);
+  if (s.output && r.output_failed.empty()) table.Add("eccentric_bearing_load_N", r.bearing_load_at_ltca_angles_N);
   PlotOptions po = WriteTransmissionErrorFiles(s, r, table, col_angle, "Loaded transmission error",
                                                {{"loaded", col_angle, col_lte}, {"unloaded", col_angle, col_ute}}, out);
   po.title = "Instantaneous gear ratio";
@@ -878,7 +898,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   pmap.Add("pressure_MPa", cp);
   out.Add("pressure_max.csv", ToCsv(pmap));
 
-  if (s.output) WriteOutputMechanism(s, r, out);
+  if (s.output && r.output_failed.empty()) WriteOutputMechanism(s, r, out);
   if (r.torsion) WriteTorsion(r, out);
   AddToothDrawing(s, r, out);
 }

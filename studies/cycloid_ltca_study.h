@@ -122,6 +122,9 @@ struct Result {
   double max_output_pin_force_N = 0, max_contact_pressure_MPa = 0, max_bearing_load_N = 0,
          max_bending_stress_MPa = 0, max_net_crank_force_N = 0, max_couple_Nmm = 0, max_moment_residual = 0;
   std::optional<cycloid::TorsionCurve> torsion;       ///< with "stiffness"
+  /// Why the output mechanism or the torsional curve could not be solved (a torque the output pins
+  /// cannot carry); empty when solved. Their result keys are then null, and `warnings` says why.
+  std::string output_failed, torsion_failed;
   std::vector<double> bearing_load_at_ltca_angles_N;  ///< |B| of disc 1 at crank_angles_rad (per_angle.csv)
 };
 

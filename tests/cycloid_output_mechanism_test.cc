@@ -139,6 +139,18 @@ TEST(CycloidOutputMechanism, ClearanceLeavesFewerPinsAndTheExactMomentBalanceHol
   }
 }
 
+TEST(CycloidOutputMechanism, ATorqueThePinsCannotCarryIsAnErrorNotANonsenseRoot) {
+  // Beyond w = 0.1 rad the exact geometry's moment is no longer monotone; a torque that needs more
+  // is refused (the study reports the keys as null with a warning).
+  try {
+    SolveOutputPins(Pins(0.005), 4.5, 1e15, 0.3);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot carry"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(SolveOutputPins(Pins(-0.001), 4.5, 1e3, 0.3), std::invalid_argument) << "hole below pin + e";
+}
+
 TEST(CycloidOutputMechanism, CrankBearingForceClosesTheDiscsForceBalance) {
   // The published drive, rigid ring pins (normals through the pitch point), compliant output pins:
   // B + Σ ring-pin forces + Σ output-pin forces = 0, each force written here from its geometry.

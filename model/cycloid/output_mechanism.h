@@ -99,6 +99,9 @@ inline std::string CheckOutputPins(const OutputPins& m, double eccentricity_mm) 
   return {};
 }
 
+/// The largest rotation of a disc against the output that SolveOutputPins searches [rad].
+inline constexpr double kMaxOutputPinRotation = 0.1;
+
 /// The output pins of one disc at one crank angle (crank frame, from the disc centre).
 template <typename T>
 struct OutputPinLoads {
@@ -164,7 +167,7 @@ W Moment(const OutputPinsTpl<S>& m, const S& eccentricity_mm, const S& pin0_angl
 /// Jet, w's derivative is the implicit one at the converged w (one Newton step at the root), the
 /// contact set frozen.
 /// @tparam T double or ceres::Jet.
-/// @throws std::invalid_argument when CheckOutputPins fails or T < 0.
+/// @throws std::invalid_argument when CheckOutputPins fails, T < 0, or T needs w > kMaxOutputPinRotation.
 template <typename T>
 OutputPinLoads<T> SolveOutputPins(const OutputPinsTpl<T>& m, const T& eccentricity_mm, const T& torque_Nmm,
                                   const T& pin0_angle_rad) {
@@ -197,9 +200,14 @@ OutputPinLoads<T> SolveOutputPins(const OutputPinsTpl<T>& m, const T& eccentrici
   const double c = md.clearance_mm(e), rw = md.pin_circle_radius_mm;
   double lo = std::max(c / rw, 1e-15), hi = std::max(2.0 * lo, 1e-9);
   for (int k = 0; k < 100 && f(lo) >= torque; ++k) lo *= 0.5;  // second-order closure before c/R_w
+  // The moment rises with w while the pins press deeper; beyond a tenth of a radian the pins
+  // would have sunk millimetres into the disc: a torque they cannot carry.
   int it = 0;
-  while (f(hi) < torque && it < 200) lo = hi, hi *= 2.0, ++it;
-  if (!(f(hi) >= torque)) throw std::invalid_argument("output pins: no rotation carries the torque");
+  while (f(hi) < torque && hi < kMaxOutputPinRotation) lo = hi, hi = std::min(2.0 * hi, kMaxOutputPinRotation), ++it;
+  if (!(f(hi) >= torque))
+    throw std::invalid_argument("output pins: the disc torque " + std::to_string(torque) +
+                                " N mm needs a rotation of the disc against the output above " +
+                                std::to_string(kMaxOutputPinRotation) + " rad (the pins cannot carry it)");
   const double w = SafeguardedNewtonIncreasing(f, slope, torque, lo, hi, 200, 1e-15, 1e-15);
   const double residual = std::abs(f(w) - torque);
   if constexpr (std::is_same_v<T, double>) {
