@@ -27,8 +27,9 @@
 // scaled to the study's E* (model/rigidity/lcr_stiffness.h, Palmgren 1959; Harris & Kotzalas,
 // Rolling Bearing Analysis, §6), L the disc's face width; or a linear spring k [N/mm] (closed forms,
 // tests). Peak contact pressure of the pin (or roller) inside its hole, an internal line contact
-// (Johnson, Contact Mechanics, 1985, §4.3 and eq. 4.45; Roark, Formulas for Stress and Strain, 7th
-// ed., Table 14.1 case 2c, a cylinder in a cylindrical socket):
+// (Hertz's two-cylinder contact with the hole's radius negative, as model/contact/hertz.h: Johnson,
+// Contact Mechanics, 1985, ch. 4; Roark, Formulas for Stress and Strain, 7th ed., Table 14.1, a
+// cylinder in a cylindrical socket):
 //   p_max = sqrt(Q E* / (π L R')),   1/R' = 1/r_c − 1/r_h.
 //
 // Crank bearing. The disc is in equilibrium under the ring-pin forces (resultant G, crank frame),
