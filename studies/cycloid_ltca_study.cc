@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,92 @@ namespace camopt::studies::cycloid_ltca {
 
 using namespace camopt::cycloid;
 
+namespace {
+
+// "discs", "disc_spacing_mm" and the compliant "output_mechanism" (docs/cycloid.md, "Output
+// mechanism"). The output mechanism needs the loaded stage and crank angles that sample whole mesh
+// periods uniformly, with the discs' phase 360°/N a whole number of crank steps (each disc's
+// ring-pin state is the first disc's at its own crank angle).
+void ParseDiscsAndOutput(const Node& root, Study& s) {
+  s.discs = root.IntegerOr("discs", 1, 1);
+  if (s.discs > 8) root["discs"].Fail("at most 8 discs");
+  s.disc_spacing_mm = s.drive.face_width_mm;
+  if (root.Has("disc_spacing_mm")) {
+    s.disc_spacing_mm = root["disc_spacing_mm"].Positive();
+    if (s.disc_spacing_mm < s.drive.face_width_mm)
+      root["disc_spacing_mm"].Fail("a spacing of the discs' mid-planes >= the face width " +
+                                   Format(s.drive.face_width_mm, 6) + " mm (the discs would overlap)");
+  }
+  const bool compliant = root.Has("output_mechanism") &&
+                         (root["output_mechanism"].Has("pin_radius_mm") || root["output_mechanism"].Has("hole_radius_mm"));
+  if (!compliant) {
+    if (root.Has("output_mechanism")) {
+      const Node n = root["output_mechanism"];
+      for (const char* f : {"roller_radius_mm", "pin_support", "pin_span_mm"})
+        if (n.Has(f)) n[f].FailWith(std::string(f) + " needs the pins' and holes' radii (pin_radius_mm, hole_radius_mm)");
+    }
+    return;
+  }
+  const Node n = root["output_mechanism"];
+  const cycloid::OutputMechanism rigid = cycloid_common::ParseOutputMechanism(n, s.drive, true);
+  if (rigid.pin_count == 0) n["pins"].Integer(3);  // "missing field": the compliant model counts its pins
+  OutputSpec o;
+  o.pins.pins = rigid.pin_count;
+  o.pins.pin_circle_radius_mm = rigid.pin_circle_radius_mm;
+  o.pins.pin_radius_mm = n["pin_radius_mm"].Positive();
+  o.pins.hole_radius_mm = n["hole_radius_mm"].Positive();
+  o.pins.roller_radius_mm = n.PositiveOr("roller_radius_mm", 0.0);
+  if (n.Has("roller_radius_mm") && !(o.pins.roller_radius_mm > o.pins.pin_radius_mm))
+    n["roller_radius_mm"].Fail("a roller radius > pin_radius_mm " + Format(o.pins.pin_radius_mm, 6) + " mm");
+  const double e = s.drive.eccentricity_mm, rc = o.pins.contact_radius_mm();
+  const std::string what = n.Has("roller_radius_mm") ? "roller_radius_mm" : "pin_radius_mm";
+  if (!(o.pins.hole_radius_mm >= rc + e))
+    n["hole_radius_mm"].Fail("a hole radius >= " + what + " + e = " + Format(rc, 6) + " + " + Format(e, 6) + " = " +
+                             Format(rc + e, 6) + " mm (the pin must follow the disc's orbit of radius e); a " +
+                             what + " of at most " + Format(o.pins.hole_radius_mm - e, 6) + " mm would fit this hole");
+  // Neighbouring holes must not overlap, and the holes must stay inside the disc's root circle.
+  const double root_radius = s.drive.roller_position_radius_mm + s.drive.delta_position_mm - e -
+                             s.drive.roller_radius_mm - s.drive.delta_radius_mm;
+  if (!(o.pins.pin_circle_radius_mm + o.pins.hole_radius_mm < root_radius))
+    n["hole_radius_mm"].Fail("holes inside the disc's root circle: pin_circle_radius_mm + hole_radius_mm < " +
+                             Format(root_radius, 6) + " mm; a hole radius below " +
+                             Format(root_radius - o.pins.pin_circle_radius_mm, 6) + " mm would fit");
+  const double chord = 2.0 * o.pins.pin_circle_radius_mm * std::sin(kPi / o.pins.pins);
+  if (!(2.0 * o.pins.hole_radius_mm < chord))
+    n["hole_radius_mm"].Fail("holes that do not overlap: 2 hole_radius_mm < " + Format(chord, 6) +
+                             " mm (the holes' pitch); a hole radius below " + Format(0.5 * chord, 6) + " mm would fit");
+  const std::string support = n.StringOr("pin_support", "cantilever");
+  if (support == "cantilever") o.support = cycloid::PinSupport::kCantilever;
+  else if (support == "both_ends") o.support = cycloid::PinSupport::kBothEnds;
+  else n["pin_support"].Fail("one of \"cantilever\", \"both_ends\"");
+  const double stack = (s.discs - 1) * s.disc_spacing_mm + s.drive.face_width_mm;
+  o.span_mm = n.PositiveOr("pin_span_mm", stack);
+  if (o.span_mm < stack)
+    n["pin_span_mm"].Fail("a span >= the disc stack (discs - 1) * disc_spacing_mm + face_width_mm = " +
+                          Format(stack, 6) + " mm");
+  if (!s.loaded)
+    n.FailWith("the output mechanism needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
+  int periods = 0;
+  const Node at = root.Has("analysis") ? root["analysis"] : n;
+  if (!cycloid::UniformWholeMeshPeriods(s.crank_angles_rad, s.drive.rollers, &periods))
+    at.FailWith("the output mechanism needs crank angles that sample whole mesh periods (360/" +
+                std::to_string(s.drive.rollers) + " deg) uniformly: use analysis.crank_angles_per_mesh_period");
+  // The disc phase 2π/N in crank steps: n1 · (angles per period) / N must be whole.
+  const long steps = long(s.crank_angles_rad.size()) * s.drive.rollers / periods;
+  if (steps % s.discs != 0)
+    at.FailWith("with " + std::to_string(s.discs) + " discs the crank angles per revolution (" + std::to_string(steps) +
+                ") must be a multiple of the discs (each disc is the first one at its own crank angle): use "
+                "analysis.crank_angles_per_mesh_period a multiple of " +
+                std::to_string(s.discs / std::gcd(s.discs, s.drive.rollers)));
+  s.output = o;
+}
+
+}  // namespace
+
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
-                         "geometry_files", "duty_cycle", "crank_bearing", "pins", "output_mechanism"});
+                         "geometry_files", "duty_cycle", "crank_bearing", "pins", "output_mechanism", "discs",
+                         "disc_spacing_mm", "stiffness"});
   Study s;
   s.name = root.StringOr("name", "");
   s.drive = cycloid_common::ParseDrive(root);
@@ -78,8 +162,22 @@ Study Parse(const Node& root) {
   if (s.crank_angles_per_mesh_period > 0)
     s.crank_angles_rad = UniformCrankAngles(s.crank_angles_per_mesh_period, period);
   if (!s.loaded) s.estimate_error = false;
+  ParseDiscsAndOutput(root, s);
+  if (root.Has("stiffness")) {
+    const Node n = root["stiffness"];
+    n.CheckKnownFields({"rated_torque_Nm", "crank_angle_deg"});
+    Study::StiffnessSpec st;
+    st.rated_torque_Nm = n["rated_torque_Nm"].Positive();
+    st.crank_angle_deg = n.NumberOr("crank_angle_deg", 0.0);
+    if (!s.loaded)
+      n.FailWith("the torsional curve needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
+    s.stiffness = st;
+  }
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
-  s.life = cycloid_common::ParseLife(root, s.drive, s.torque_Nm * 1000.0);
+  s.life = cycloid_common::ParseLife(root, s.drive, s.disc_torque_Nmm(), true);
+  if (s.life && s.discs > 1)
+    root["discs"].Fail("1 with a bearing life (the life is modelled for one disc; found " + std::to_string(s.discs) +
+                       " discs)");
   if (s.life) {
     const Node at = root.Has("duty_cycle") ? root["duty_cycle"] : root["load"]["input_speed_rpm"];
     if (!s.loaded)
@@ -216,7 +314,7 @@ void RefineAndEstimateErrors(const Study& s, const LoadedTca& tca, Result& r, Pr
     const double half_step = 0.5 * (angles[1] - angles[0]);
     std::vector<double> shifted;
     for (double a : angles) shifted.push_back(a + half_step);
-    CycleResult sh = RunCycle(tca, s.torque_Nm * 1000.0, shifted,
+    CycleResult sh = RunCycle(tca, s.disc_torque_Nmm(), shifted,
                               [&](double f) { progress.Update(0.5 + 0.4 * f, "half-step-shifted angles"); });
     std::vector<MeshLoad> meshes;
     std::vector<double> both;
@@ -239,7 +337,7 @@ void RefineAndEstimateErrors(const Study& s, const LoadedTca& tca, Result& r, Pr
   coarse.keep_pressure = false;
   r.coarse_grid = {coarse.profile_cells, coarse.axial_cells};
   const LoadedTca coarse_tca(s.drive, tca.crowning(), s.material, coarse);
-  const CycleResult g = RunCycle(coarse_tca, s.torque_Nm * 1000.0, angles,
+  const CycleResult g = RunCycle(coarse_tca, s.disc_torque_Nmm(), angles,
                                  [&](double f) { progress.Update(0.9 + 0.1 * f, "coarse grid"); });
   const auto hf = Headlines(r.cycle), hb = Headlines(base), hg = Headlines(g);
   const auto hh = half_ok ? Headlines(half) : hb;
@@ -275,6 +373,81 @@ namespace {
 
 }  // namespace
 
+namespace {
+
+// The output mechanism over the crank bearing's load period (docs/cycloid.md, "Output mechanism"):
+// every disc k at its own crank angle φ + 2πk/N, its ring-pin resultant the first disc's at that
+// angle (periodic in the crank frame with the mesh period, so a shift of the sampled series), its
+// output pins solved with clearance and compliance at the shared output angle −φ/n2, the bearing
+// force from its force balance; the pins' bending under every disc's force, the crankshaft's net
+// force and couple.
+void RunOutputMechanism(const Study& s, Result& r) {
+  using namespace camopt::cycloid;
+  const OutputSpec& o = *s.output;
+  OutputPins pins = o.pins;
+  pins.face_width_mm = s.drive.face_width_mm;
+  pins.e_star_MPa = r.composite_modulus_MPa;
+  const std::vector<double>& a = r.crank_angles_rad;
+  const size_t n = a.size();
+  int periods = 0;
+  if (!UniformWholeMeshPeriods(a, s.drive.rollers, &periods))
+    throw std::logic_error("output mechanism: the crank angles are not a uniform sampling of whole mesh periods");
+  const double tau = 2.0 * kPi / s.drive.rollers, h = tau * periods / double(n);
+  std::vector<Vec2<double>> ring;
+  for (const MeshLoad& m : r.cycle.meshes) ring.push_back(RingPinResultantCrankFrame(s.drive, m));
+  const long per_rev = long(n) * s.drive.rollers / periods;
+  const int load_period = OutputPinPeriodInMeshPeriods(OutputMechanism{pins.pins, pins.pin_circle_radius_mm}, s.drive.teeth);
+  const int repeats = load_period / std::gcd(load_period, periods);
+  const std::vector<double> z =
+      DiscPlanesOnPin(o.support, o.span_mm, s.discs, s.drive.face_width_mm, s.disc_spacing_mm);
+  double z_mean = 0.0;
+  for (double x : z) z_mean += x / double(z.size());
+  const double torque = s.disc_torque_Nmm();
+  for (size_t m = 0; m < n * size_t(repeats); ++m) {
+    const double phi = a[0] + double(m) * h, output_angle = -phi / s.drive.teeth;
+    r.output_angles_rad.push_back(phi);
+    std::vector<Result::DiscSample> discs;
+    Vec2<double> net(0.0, 0.0), couple(0.0, 0.0);
+    for (int k = 0; k < s.discs; ++k) {
+      const double phi_k = phi + 2.0 * kPi * k / s.discs;
+      const size_t shift = size_t(per_rev / s.discs) * size_t(k);
+      Result::DiscSample d;
+      d.pins = SolveOutputPins(pins, s.drive.eccentricity_mm, torque, output_angle - phi_k);
+      d.bearing_crank_frame = CrankBearingForce(ring[(m + shift) % n], d.pins);
+      d.bearing_fixed_frame = Rotate(d.bearing_crank_frame, phi_k);
+      net += d.bearing_fixed_frame;
+      couple += (z[size_t(k)] - z_mean) * d.bearing_fixed_frame;
+      r.max_bearing_load_N = std::max(r.max_bearing_load_N, d.bearing_crank_frame.norm());
+      for (double q : d.pins.force_N) r.max_output_pin_force_N = std::max(r.max_output_pin_force_N, q);
+      r.max_moment_residual = std::max(r.max_moment_residual, torque > 0 ? d.pins.moment_residual_Nmm / torque : 0.0);
+      discs.push_back(std::move(d));
+    }
+    // Each pin's bending under every disc's force Q_jk n_jk (on the pin, fixed frame).
+    double sigma = 0.0;
+    for (int j = 0; j < pins.pins; ++j) {
+      std::vector<Vec2<double>> f;
+      for (int k = 0; k < s.discs; ++k)
+        f.push_back(Rotate(Vec2<double>(discs[size_t(k)].pins.force_N[size_t(j)] * discs[size_t(k)].pins.normal[size_t(j)]),
+                           phi + 2.0 * kPi * k / s.discs));
+      sigma = std::max(sigma, PinBendingStress(PinBendingMoment(o.support, o.span_mm, z, f), pins.pin_radius_mm));
+    }
+    r.pin_bending_stress_MPa.push_back(sigma);
+    r.net_crank_force_N.push_back(net.norm());
+    r.crank_couple_Nmm.push_back(couple.norm());
+    r.max_bending_stress_MPa = std::max(r.max_bending_stress_MPa, sigma);
+    r.max_net_crank_force_N = std::max(r.max_net_crank_force_N, net.norm());
+    r.max_couple_Nmm = std::max(r.max_couple_Nmm, couple.norm());
+    if (m < n) r.bearing_load_at_ltca_angles_N.push_back(discs[0].bearing_crank_frame.norm());
+    r.output.push_back(std::move(discs));
+  }
+  r.max_contact_pressure_MPa = HoleContactPressure(pins, r.max_output_pin_force_N);
+  if (r.max_moment_residual > 1e-9)
+    r.warnings.push_back("output mechanism: the moment balance of the output pins closes only to " +
+                         Format(r.max_moment_residual, 3) + " of the disc torque");
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   if (s.loaded) {
@@ -283,7 +456,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     {
       Progress progress("cycloid_ltca", ctx.quiet);
       const double share = s.estimate_error ? 0.5 : 1.0;
-      r.cycle = RunCycle(tca, s.torque_Nm * 1000.0, s.crank_angles_rad,
+      r.cycle = RunCycle(tca, s.disc_torque_Nmm(), s.crank_angles_rad,
                          [&](double f) { progress.Update(share * f); });
       RefineAndEstimateErrors(s, tca, r, progress);
       progress.Done();
@@ -326,12 +499,39 @@ Result Run(const Study& s, const RunContext& ctx) {
     for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
     r.tooth_files = FitPlanarCam(g, s.geometry);
   }
+  if (s.output) {
+    try {
+      RunOutputMechanism(s, r);
+    } catch (const std::invalid_argument& e) {
+      r.output_failed = e.what();
+      r.warnings.push_back(std::string("output mechanism not solved: ") + e.what());
+    }
+  }
+  if (s.stiffness) {
+    LoadedOptions options = s.options;
+    options.keep_pressure = false;
+    options.crank_slope = false;
+    const LoadedTca tca(s.drive, s.crowning, s.material, options);
+    std::optional<OutputPins> pins;
+    if (s.output) {
+      pins = s.output->pins;
+      pins->face_width_mm = s.drive.face_width_mm;
+      pins->e_star_MPa = tca.e_star_MPa();
+    }
+    try {
+      r.torsion = TorsionalCurve(tca, pins ? &*pins : nullptr, s.stiffness->crank_angle_deg * kPi / 180.0,
+                                 s.stiffness->rated_torque_Nm * 1000.0, s.discs);
+    } catch (const std::invalid_argument& e) {
+      r.torsion_failed = e.what();
+      r.warnings.push_back(std::string("torsional curve not solved: ") + e.what());
+    }
+  }
   if (s.life) {
     LoadedOptions options = s.options;
     options.keep_pressure = false;
     options.crank_slope = false;
     const LoadedTca tca(s.drive, s.crowning, s.material, options);
-    r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.torque_Nm * 1000.0, &r.cycle.meshes);
+    r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.disc_torque_Nmm(), &r.cycle.meshes);
   }
   return r;
 }
@@ -481,8 +681,163 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"per_angle", per_angle}};
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
+  if (s.discs > 1) {
+    j["discs"] = s.discs;
+    j["disc_torque_Nm"] = s.disc_torque_Nmm() / 1000.0;
+  }
+  if (s.stiffness && !r.torsion)
+    for (const char* key : {"torsional_stiffness_Nm_per_arcmin", "lost_motion_arcmin", "backlash_arcmin"}) j[key] = nullptr;
+  if (s.output && !r.output_failed.empty()) {
+    for (const char* key : {"max_ring_pin_force_N", "max_output_pin_force_N", "eccentric_bearing_load_N",
+                            "output_pin_bending_stress_MPa", "output_pin_contact_pressure_MPa"})
+      j[key] = nullptr;
+    j["output_mechanism"] = {{"error", r.output_failed}};
+  }
+  if (r.torsion) {
+    const cycloid::TorsionCurve& c = *r.torsion;
+    const double arcmin = 60.0 * 180.0 / kPi;
+    j["torsional_stiffness_Nm_per_arcmin"] = Finite(c.stiffness_Nmm_per_rad / 1000.0 / arcmin, "stiffness");
+    j["lost_motion_arcmin"] = Finite(c.lost_motion_rad * arcmin, "lost motion");
+    j["backlash_arcmin"] = Finite(c.backlash_rad * arcmin, "backlash");
+    j["stiffness"] = {
+        {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
+        {"crank_angle_deg", s.stiffness->crank_angle_deg},
+        {"stiffness_positive_Nm_per_arcmin", c.stiffness_positive_Nmm_per_rad / 1000.0 / arcmin},
+        {"stiffness_negative_Nm_per_arcmin", c.stiffness_negative_Nmm_per_rad / 1000.0 / arcmin},
+        {"ring_pins_share", c.ring_share},
+        {"output_pins_share", c.output_pins_share},
+        {"output_pins", s.output ? "compliant (output_mechanism)" : "rigid (no pin and hole radii given)"},
+        {"contact_solves", c.contact_solves},
+        {"hysteresis_width_arcmin", 0.0},
+        {"definitions",
+         "input held at crank_angle_deg; output angle = disc against ring (LTCA: beta0 + deflection) + output "
+         "against disc (output pins); stiffness: mean of the two directions' slopes between 50% and 100% of the "
+         "rated torque; lost motion: angle(+3%) - angle(-3%); backlash: angle(0+) - angle(0-); frictionless: "
+         "loading and unloading coincide (hysteresis width 0)"}};
+  }
+  if (s.output && r.output_failed.empty()) {
+    const OutputSpec& o = *s.output;
+    j["max_ring_pin_force_N"] = Finite(cycle.max_pair_load_N, "max ring-pin force");
+    j["max_output_pin_force_N"] = Finite(r.max_output_pin_force_N, "max output-pin force");
+    j["eccentric_bearing_load_N"] = Finite(r.max_bearing_load_N, "eccentric bearing load");
+    j["output_pin_bending_stress_MPa"] = Finite(r.max_bending_stress_MPa, "pin bending stress");
+    j["output_pin_contact_pressure_MPa"] = Finite(r.max_contact_pressure_MPa, "pin contact pressure");
+    const double rc = o.pins.contact_radius_mm();
+    nlohmann::json om = {
+        {"pins", o.pins.pins},
+        {"pin_circle_radius_mm", o.pins.pin_circle_radius_mm},
+        {"pin_radius_mm", o.pins.pin_radius_mm},
+        {"hole_radius_mm", o.pins.hole_radius_mm},
+        {"contact_radius_mm", rc},
+        {"clearance_mm", o.pins.hole_radius_mm - rc - s.drive.eccentricity_mm},
+        {"pin_support", o.support == cycloid::PinSupport::kCantilever ? "cantilever" : "both_ends"},
+        {"pin_span_mm", o.span_mm},
+        {"disc_planes_mm", cycloid::DiscPlanesOnPin(o.support, o.span_mm, s.discs, s.drive.face_width_mm,
+                                                    s.disc_spacing_mm)},
+        {"disc_spacing_mm", s.disc_spacing_mm},
+        {"discs", s.discs},
+        {"disc_torque_Nm", s.disc_torque_Nmm() / 1000.0},
+        {"load_period_crank_deg", r.output_angles_rad.size() * (r.output_angles_rad.size() > 1
+                                      ? (r.output_angles_rad[1] - r.output_angles_rad[0]) * 180.0 / kPi : 0.0)},
+        {"samples", r.output_angles_rad.size()},
+        {"max_net_crank_force_N", r.max_net_crank_force_N},
+        {"max_crank_couple_Nmm", r.max_couple_Nmm},
+        {"max_moment_residual_relative", r.max_moment_residual},
+        {"model",
+         "pins in the disc's holes with clearance (hole - contact radius - e) and Palmgren line-contact compliance, "
+         "exact geometry, solved for the disc's rotation against the output (sum of the pins' moments = disc torque); "
+         "eccentric bearing load from the disc's force balance (ring-pin forces along the LTCA's contact normals + "
+         "output-pin forces); pin bending 32 M / (pi d^3) as a beam (Roark, Table 8.1); hole-pin pressure: internal "
+         "Hertz line contact, 1/R' = 1/r_contact - 1/r_hole"},
+        {"disc_split",
+         "each disc carries the output torque / discs (identical discs, equal split assumed); disc k runs at crank "
+         "angle phi + 360 k / discs deg"}};
+    if (o.pins.roller_radius_mm > 0) om["roller_radius_mm"] = o.pins.roller_radius_mm;
+    j["output_mechanism"] = om;
+  }
   return j;
 }
+
+namespace {
+
+// output_mechanism.csv (over the crank bearing's load period: every disc's bearing load, its
+// direction from the disc's eccentricity, the disc's rotation against the output, its output
+// pins' forces; the crankshaft's net force and couple; the pins' bending stress) and
+// eccentric_bearing_load.svg.
+void WriteOutputMechanism(const Study& s, const Result& r, Outputs& out) {
+  Table t;
+  std::vector<double> angle;
+  for (double a : r.output_angles_rad) angle.push_back(a * 180.0 / kPi);
+  t.Add("crank_angle_deg", angle);
+  std::vector<Series> lines;
+  for (int k = 0; k < s.discs; ++k) {
+    const std::string tag = s.discs > 1 ? "_disc_" + std::to_string(k + 1) : "";
+    std::vector<double> load, dir, rot, qmax, count;
+    for (const auto& row : r.output) {
+      const Result::DiscSample& d = row[size_t(k)];
+      load.push_back(d.bearing_crank_frame.norm());
+      dir.push_back(std::atan2(d.bearing_crank_frame.y(), d.bearing_crank_frame.x()) * 180.0 / kPi);
+      rot.push_back(d.pins.rotation_rad * kArcsecPerRad);
+      qmax.push_back(*std::max_element(d.pins.force_N.begin(), d.pins.force_N.end()));
+      count.push_back(d.pins.pins_in_contact);
+    }
+    t.Add("eccentric_bearing_load" + tag + "_N", load);
+    t.Add("eccentric_bearing_direction" + tag + "_deg", dir);
+    t.Add("output_pin_rotation" + tag + "_arcsec", rot);
+    t.Add("max_output_pin_force" + tag + "_N", qmax);
+    t.Add("output_pins_in_contact" + tag, count);
+    lines.push_back({s.discs > 1 ? "disc " + std::to_string(k + 1) : "eccentric bearing", angle, load});
+  }
+  if (s.discs > 1) {
+    t.Add("net_crank_force_N", r.net_crank_force_N);
+    t.Add("crank_couple_Nmm", r.crank_couple_Nmm);
+  }
+  t.Add("output_pin_bending_stress_MPa", r.pin_bending_stress_MPa);
+  for (int j = 0; j < s.output->pins.pins; ++j) {
+    std::vector<double> q;
+    for (const auto& row : r.output) q.push_back(row[0].pins.force_N[size_t(j)]);
+    t.Add("output_pin_" + std::to_string(j + 1) + (s.discs > 1 ? "_disc_1" : "") + "_force_N", q);
+  }
+  out.Add("output_mechanism.csv", ToCsv(t));
+  PlotOptions po;
+  po.x_label = "crank angle [deg]";
+  po.y_label = "eccentric bearing load [N]";
+  po.title = "Eccentric (crank) bearing load over its load period";
+  out.Add("eccentric_bearing_load.svg", SvgLinePlot(lines, po));
+}
+
+// hysteresis.csv (the output angle against the output torque, −T_r → T_r loading and back
+// unloading, the same curve in this frictionless model, with each element's part) and
+// hysteresis.svg.
+void WriteTorsion(const Result& r, Outputs& out) {
+  const double arcmin = 60.0 * 180.0 / kPi;
+  std::vector<double> branch, torque, angle, ring, pins;
+  const auto& p = r.torsion->points;
+  auto add = [&](int b, const cycloid::TorsionPoint& x) {
+    branch.push_back(b);
+    torque.push_back(x.torque_Nmm / 1000.0);
+    angle.push_back(x.output_angle_rad * arcmin);
+    ring.push_back(x.ring_rad * arcmin);
+    pins.push_back(x.output_pins_rad * arcmin);
+  };
+  for (const auto& x : p) add(0, x);
+  for (auto it = p.rbegin(); it != p.rend(); ++it) add(1, *it);
+  Table t;
+  t.Add("branch_loading_0_unloading_1", branch);
+  t.Add("output_torque_Nm", torque);
+  t.Add("output_angle_arcmin", angle);
+  t.Add("ring_pins_arcmin", ring);
+  t.Add("output_pins_arcmin", pins);
+  out.Add("hysteresis.csv", ToCsv(t));
+  PlotOptions po;
+  po.x_label = "output torque [N m]";
+  po.y_label = "output angle [arcmin]";
+  po.title = "Output angle against output torque, input held (frictionless: no hysteresis width)";
+  std::vector<double> x(torque.begin(), torque.begin() + long(p.size())), y(angle.begin(), angle.begin() + long(p.size()));
+  out.Add("hysteresis.svg", SvgLinePlot({{"output angle", x, y}}, po));
+}
+
+}  // namespace
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   if (!s.loaded) return WriteUnloaded(s, r, out);
@@ -511,6 +866,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("max_contact_stress_MPa", col_p);
   table.Add("pairs_in_contact", col_pairs);
   for (int i = 0; i < n1; ++i) table.Add("load_roller_" + std::to_string(i + 1) + "_N", col_load[i]);
+  if (s.output && r.output_failed.empty()) table.Add("eccentric_bearing_load_N", r.bearing_load_at_ltca_angles_N);
   PlotOptions po = WriteTransmissionErrorFiles(s, r, table, col_angle, "Loaded transmission error",
                                                {{"loaded", col_angle, col_lte}, {"unloaded", col_angle, col_ute}}, out);
   po.title = "Instantaneous gear ratio";
@@ -542,6 +898,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   pmap.Add("pressure_MPa", cp);
   out.Add("pressure_max.csv", ToCsv(pmap));
 
+  if (s.output && r.output_failed.empty()) WriteOutputMechanism(s, r, out);
+  if (r.torsion) WriteTorsion(r, out);
   AddToothDrawing(s, r, out);
 }
 
@@ -584,6 +942,14 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", {
      "/estimated_error/lte_peak_to_peak_arcsec"},
     {"gear ratio, peak to peak", "/gear_ratio_peak_to_peak", "", "", NAN, true, "/estimated_error/gear_ratio_peak_to_peak"},
     {"most rollers in contact", "/max_pairs_in_contact", ""},
+    {"largest ring-pin force", "/max_ring_pin_force_N", "N"},
+    {"largest output-pin force", "/max_output_pin_force_N", "N"},
+    {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N"},
+    {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa"},
+    {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa"},
+    {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
+    {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+    {"backlash", "/backlash_arcmin", "arcmin"},
     {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
     {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
     {"ring pin life L10h", "/life/pins_L10h", "h"},

@@ -15,6 +15,8 @@
 #include "model/common/geometry.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/output_mechanism.h"
+#include "model/cycloid/stiffness.h"
 #include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/input.h"
@@ -22,6 +24,14 @@
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_ltca {
+
+/// The output mechanism with clearance and compliance (model/cycloid/output_mechanism.h): the
+/// "output_mechanism" object with pin_radius_mm and hole_radius_mm.
+struct OutputSpec {
+  cycloid::OutputPins pins;  ///< face width and E* filled from the drive and the material
+  cycloid::PinSupport support = cycloid::PinSupport::kCantilever;
+  double span_mm = 0;        ///< the pin's span (cantilever: flange to free end)
+};
 
 struct Study {
   std::string name;
@@ -45,6 +55,18 @@ struct Study {
   /// The bearing life (load.input_speed_rpm or duty_cycle, the ratings, the output mechanism;
   /// docs/life.md, "Cycloid"); nullopt: no life asked, result.json without "life".
   std::optional<cycloid_common::LifeSpec> life;
+  /// "output_mechanism" with the pins' and holes' radii; nullopt: no output-mechanism outputs.
+  std::optional<OutputSpec> output;
+  /// "stiffness": {"rated_torque_Nm", "crank_angle_deg"}: the torsional curve (model/cycloid/stiffness.h).
+  struct StiffnessSpec {
+    double rated_torque_Nm = 0, crank_angle_deg = 0;
+  };
+  std::optional<StiffnessSpec> stiffness;
+  int discs = 1;                 ///< "discs": N, phased by 360°/N about the crank, each carrying T/N
+  double disc_spacing_mm = 0;    ///< "disc_spacing_mm": mid-plane to mid-plane (default the face width)
+  /// The torque on each disc [N·mm]: load.torque_Nm (the output torque) over the discs (equal split
+  /// of identical discs).
+  double disc_torque_Nmm() const { return torque_Nm * 1000.0 / discs; }
 };
 
 using cycloid_common::ElementLife;
@@ -85,6 +107,25 @@ struct Result {
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
   PlanarCamFit tooth_files;  ///< the disc's geometry files (arcs of the modified profile)
   std::optional<LifeResult> life;
+  /// The output mechanism over the crank bearing's load period (output_angles_rad), per disc k:
+  /// the disc's own solve at its crank angle φ + 2πk/N.
+  struct DiscSample {
+    cycloid::OutputPinLoads<double> pins;
+    Vec2<double> bearing_crank_frame{0.0, 0.0};  ///< B on the disc, the disc's crank frame
+    Vec2<double> bearing_fixed_frame{0.0, 0.0};
+  };
+  std::vector<double> output_angles_rad;
+  std::vector<std::vector<DiscSample>> output;  ///< [angle][disc]
+  std::vector<double> net_crank_force_N;        ///< |Σ_k B_k| per angle (the crankshaft's net radial load)
+  std::vector<double> crank_couple_Nmm;         ///< |Σ_k (z_k − z̄) B_k| per angle
+  std::vector<double> pin_bending_stress_MPa;   ///< per angle, the largest over the pins
+  double max_output_pin_force_N = 0, max_contact_pressure_MPa = 0, max_bearing_load_N = 0,
+         max_bending_stress_MPa = 0, max_net_crank_force_N = 0, max_couple_Nmm = 0, max_moment_residual = 0;
+  std::optional<cycloid::TorsionCurve> torsion;       ///< with "stiffness"
+  /// Why the output mechanism or the torsional curve could not be solved (a torque the output pins
+  /// cannot carry); empty when solved. Their result keys are then null, and `warnings` says why.
+  std::string output_failed, torsion_failed;
+  std::vector<double> bearing_load_at_ltca_angles_N;  ///< |B| of disc 1 at crank_angles_rad (per_angle.csv)
 };
 
 /// @throws StudyError for bad input (exit 2).

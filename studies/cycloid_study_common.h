@@ -293,12 +293,27 @@ struct LifeSpec {
   cycloid::OutputMechanism output;
 };
 
+/// The fields of cycloid_ltca's "output_mechanism" beyond the life's (the compliant pins and holes;
+/// studies/cycloid_ltca_study.cc reads them).
+inline const std::set<std::string>& OutputMechanismFields() {
+  static const std::set<std::string> f = {"pins", "pin_radius_mm", "hole_radius_mm", "roller_radius_mm",
+                                          "pin_support", "pin_span_mm"};
+  return f;
+}
+
 /// "output_mechanism": {"pin_circle_radius_mm" > 0 (inside the disc's root radius), "pin_count"
-/// >= 3 (optional: the continuous limit without it)}.
-inline cycloid::OutputMechanism ParseOutputMechanism(const Node& n, const cycloid::Drive& d) {
-  n.CheckKnownFields({"pin_count", "pin_circle_radius_mm"});
+/// >= 3 (optional: the continuous limit without it)}. `extended` (cycloid_ltca): the fields of
+/// OutputMechanismFields are known too, and "pins" is the pin count ("pin_count" its older name;
+/// not both).
+inline cycloid::OutputMechanism ParseOutputMechanism(const Node& n, const cycloid::Drive& d, bool extended = false) {
+  std::set<std::string> known = {"pin_count", "pin_circle_radius_mm"};
+  if (extended) known.insert(OutputMechanismFields().begin(), OutputMechanismFields().end());
+  n.CheckKnownFields(known);
   cycloid::OutputMechanism m;
-  m.pin_count = n.Has("pin_count") ? n["pin_count"].Integer(3) : 0;
+  if (extended && n.Has("pins") && n.Has("pin_count"))
+    n["pin_count"].FailWith("give the pin count once: \"pins\" (\"pin_count\" is its older name)");
+  const char* count = extended && n.Has("pins") ? "pins" : "pin_count";
+  m.pin_count = n.Has(count) ? n[count].Integer(3) : 0;
   m.pin_circle_radius_mm = n["pin_circle_radius_mm"].Positive();
   const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
                              d.roller_radius_mm - d.delta_radius_mm;
@@ -313,14 +328,15 @@ inline cycloid::OutputMechanism ParseOutputMechanism(const Node& n, const cycloi
 /// "output_mechanism" (required with a life: the crank bearing's load needs R_w). Without a speed
 /// or a duty cycle the ratings are still checked and nullopt is returned.
 /// @throws StudyError naming the JSON path.
-inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive& d, double torque_Nmm) {
+inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive& d, double torque_Nmm,
+                                         bool extended_output = false) {
   std::string why;
   std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, torque_Nmm, &why);
   if (!lines) {
     const std::string unused = "checked: no speed or duty cycle is given, so no life is computed";
     if (root.Has("crank_bearing")) ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, unused);
     if (root.Has("pins")) ParseBearingRating(root["pins"], false, BearingKind::kRoller, unused);
-    if (root.Has("output_mechanism")) ParseOutputMechanism(root["output_mechanism"], d);
+    if (root.Has("output_mechanism")) ParseOutputMechanism(root["output_mechanism"], d, extended_output);
     return std::nullopt;
   }
   LifeSpec life;
@@ -341,7 +357,7 @@ inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive&
   if (!root.Has("output_mechanism"))
     missing("output_mechanism", "{\"pin_circle_radius_mm\", \"pin_count\"} (" + why +
                                     ": the crank bearing's load depends on the output pins' circle)");
-  life.output = ParseOutputMechanism(root["output_mechanism"], d);
+  life.output = ParseOutputMechanism(root["output_mechanism"], d, extended_output);
   return life;
 }
 

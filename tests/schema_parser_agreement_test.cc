@@ -435,6 +435,10 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_min_size", "/target/speed_ratio", "no lobe/roller combination", "the speed ratio must be reachable"},
     {"lcr_min_size", "/duty_cycle", "time shares summing to 1", "the duty cycle's time shares sum to 1 (docs/life.md)"},
     {"cycloid_ltca", "/duty_cycle", "time shares summing to 1", "the duty cycle's time shares sum to 1 (docs/life.md)"},
+    {"cycloid_ltca", "/disc_spacing_mm", "the discs would overlap", "the discs' spacing against drive.face_width_mm"},
+    {"cycloid_ltca", "/discs", "the disc stack", "the output pins' span against the discs' stack (discs, spacing, face width)"},
+    {"cycloid_ltca", "/output_mechanism/roller_radius_mm", "a roller radius > pin_radius_mm",
+     "a roller on the pin is larger than the pin"},
 };
 
 // Disagreements found by this test and not yet resolved: conditions JSON Schema could state

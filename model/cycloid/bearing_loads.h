@@ -170,6 +170,43 @@ inline Vec2<double> RingPinResultantCrankFrame(const Drive& d, const MeshLoad& m
   return RingPinResultantCrankFrame(d, u, loads, mesh.crank_angle_rad, mesh.rotation_rad);
 }
 
+/// The classic rigid-body ring-pin loads of the unmodified tooth (equal, rigid-body compliance; no
+/// modification, no clearance): every normal passes through the pitch point I = D + n2 e u(φ)
+/// (Aronhold–Kennedy), a disc rotation Δφ closes pair i by l_i Δφ with l_i its arm about the disc
+/// centre (eq. 26; l_i = e n2 sin α_i, α_i the angle between the normal and the line of centres), so
+/// with equal stiffness F_i ∝ l_i ∝ sin α_i on the loaded flank (l_i > 0) and the moment balance
+/// Σ F_i l_i = T gives F_i = T l_i / Σ_{l_k > 0} l_k² (Blanche & Yang, "Cycloid drives with machining
+/// tolerances", J. Mech. Transm. Autom. Des. 111 (1989) 337; Gorla et al. 2008, eqs. of the
+/// rigid-body force analysis). Returns (roller, F_i [N]) for every loaded pin and, through
+/// `resultant_crank_frame`, Σ −F_i N_i in the crank frame (N_i = unit(O_i − I), towards the roller).
+/// @throws std::invalid_argument for a modified tooth (its normals miss I).
+inline std::vector<std::pair<int, double>> RigidRingPinLoads(const Drive& d, double torque_Nmm, double crank,
+                                                             Vec2<double>* resultant_crank_frame = nullptr) {
+  if (d.delta_position_mm != 0.0 || d.delta_radius_mm != 0.0)
+    throw std::invalid_argument("rigid ring-pin loads: the closed form holds for the unmodified tooth only");
+  const Vec2<double> centre = d.eccentricity_mm * U(crank);
+  const Vec2<double> pitch = double(d.rollers) * d.eccentricity_mm * U(crank);
+  std::vector<double> arm(size_t(d.rollers));
+  std::vector<Vec2<double>> normal(size_t(d.rollers));
+  double sum_sq = 0.0;
+  for (int i = 0; i < d.rollers; ++i) {
+    const Vec2<double> o = d.roller_position_radius_mm * U(2.0 * kPi * i / d.rollers);
+    normal[size_t(i)] = (o - pitch).normalized();
+    arm[size_t(i)] = Cross(Vec2<double>(o - centre), normal[size_t(i)]);
+    if (arm[size_t(i)] > 0.0) sum_sq += arm[size_t(i)] * arm[size_t(i)];
+  }
+  std::vector<std::pair<int, double>> loads;
+  Vec2<double> sum(0.0, 0.0);
+  for (int i = 0; i < d.rollers; ++i)
+    if (arm[size_t(i)] > 0.0) {
+      const double f = torque_Nmm * arm[size_t(i)] / sum_sq;
+      loads.push_back({i, f});
+      sum -= f * normal[size_t(i)];
+    }
+  if (resultant_crank_frame) *resultant_crank_frame = Rotate(sum, -crank);
+  return loads;
+}
+
 /// The crank bearing's force on the disc in the crank frame from the ring-pin resultant G (crank
 /// frame) and the output pins' resultant magnitude Q: B = −G + Q (1, 0).
 template <typename T>
