@@ -104,7 +104,17 @@ void ParseDiscsAndOutput(const Node& root, Study& s) {
 Study Parse(const Node& root) {
   root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
                          "geometry_files", "duty_cycle", "crank_bearing", "pins", "output_mechanism", "discs",
-                         "disc_spacing_mm", "stiffness"});
+                         "disc_spacing_mm", "stiffness", "limits"});
+  // The verdict's limits (report.html, the summary, --strict): read by the headlines from the
+  // study ("study:/limits/…"), checked here.
+  if (root.Has("limits")) {
+    const Node limits = root["limits"];
+    limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "output_pin_stress_MPa",
+                             "output_pin_contact_pressure_MPa", "eccentric_bearing_load_N"});
+    for (const char* key : {"contact_stress_MPa", "roller_load_N", "output_pin_stress_MPa",
+                            "output_pin_contact_pressure_MPa", "eccentric_bearing_load_N"})
+      if (limits.Has(key)) limits[key].Positive();
+  }
   Study s;
   s.name = root.StringOr("name", "");
   s.drive = cycloid_common::ParseDrive(root);
@@ -933,9 +943,10 @@ CAMOPT_REGISTER_FIDELITY("cycloid_ltca", Knobs);
 namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("cycloid_ltca", {
-    {"largest contact stress", "/max_contact_stress_MPa", "MPa", "", NAN, true, "/estimated_error/max_contact_stress_MPa"},
+    {"largest contact stress", "/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa", NAN, true,
+     "/estimated_error/max_contact_stress_MPa"},
     {"at crank angle", "/max_contact_stress_crank_angle_deg", "deg"},
-    {"largest roller load", "/max_pair_load_N", "N", "", NAN, true, "/estimated_error/max_pair_load_N"},
+    {"largest roller load", "/max_pair_load_N", "N", "study:/limits/roller_load_N", NAN, true, "/estimated_error/max_pair_load_N"},
     {"mean |loaded transmission error|", "/lte_mean_abs_arcsec", "arcsec", "", NAN, true,
      "/estimated_error/lte_mean_abs_arcsec"},
     {"loaded transmission error, peak to peak", "/lte_peak_to_peak_arcsec", "arcsec", "", NAN, true,
@@ -944,9 +955,9 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", {
     {"most rollers in contact", "/max_pairs_in_contact", ""},
     {"largest ring-pin force", "/max_ring_pin_force_N", "N"},
     {"largest output-pin force", "/max_output_pin_force_N", "N"},
-    {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N"},
-    {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa"},
-    {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa"},
+    {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N", "study:/limits/eccentric_bearing_load_N"},
+    {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa", "study:/limits/output_pin_stress_MPa"},
+    {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa", "study:/limits/output_pin_contact_pressure_MPa"},
     {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
     {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
     {"backlash", "/backlash_arcmin", "arcmin"},
