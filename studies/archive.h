@@ -150,6 +150,7 @@ class NameCollector {
   template <typename T>
   void Visit(const char* name, T*, const Field&) { names.insert(name); }
   void Retired(const char* name, const char*) { names.insert(name); }
+  void Alias(const char*, const char*) {}
   std::set<std::string> names;
 };
 
@@ -189,6 +190,11 @@ class JsonReader {
   /// A field no longer read: refused with `message` when given (it stays a known field).
   void Retired(const char* name, const char* message) {
     if (node_.Has(name)) node_[name].FailWith(message);
+  }
+  /// `old_name` is an earlier name of `name` (both visited as fields): one of the two at most.
+  void Alias(const char* name, const char* old_name) {
+    if (node_.Has(name) && node_.Has(old_name))
+      node_[old_name].FailWith(std::string("give either ") + name + " or its old name " + old_name + ", not both");
   }
 
   /// Reads the value at `n` (a whole struct, an array, a scalar).
@@ -266,6 +272,10 @@ class SchemaEmitter {
     if (f.required) (*object_)["required"].push_back(name);
   }
   void Retired(const char*, const char*) {}
+  /// Not both names: `"not": {"anyOf": [{"required": [name, old_name]}, …]}`.
+  void Alias(const char* name, const char* old_name) {
+    (*object_)["not"]["anyOf"].push_back({{"required", {name, old_name}}});
+  }
 
   /// The schema keywords of a value of type T (its type, bounds, items, properties) into `s`.
   template <typename T>
@@ -278,6 +288,11 @@ class SchemaEmitter {
       SchemaEmitter inner(&s);
       value->Serialize(&inner);
       s["additionalProperties"] = false;
+      if (s.contains("not")) {  // after the properties, for the reader of the schema
+        nlohmann::ordered_json n = std::move(s["not"]);
+        s.erase("not");
+        s["not"] = std::move(n);
+      }
     } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
       s["type"] = std::is_same_v<T, int> ? "integer" : "number";
       NumberKeywords(f, std::is_same_v<T, int>, s);
@@ -334,6 +349,7 @@ class JsonWriter {
     }
   }
   void Retired(const char*, const char*) {}
+  void Alias(const char*, const char*) {}
 
  private:
   nlohmann::ordered_json* object_;

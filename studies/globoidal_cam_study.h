@@ -93,6 +93,10 @@ struct Input {
         a->Visit((s + "_poisson").c_str(), old_nu,
                  Field().In(0.0, 0.499).Desc("old name of " + s + "_poisson_ratio"));
       }
+      a->Alias("cam_youngs_modulus_GPa", "cam_modulus_MPa");
+      a->Alias("roller_youngs_modulus_GPa", "roller_modulus_MPa");
+      a->Alias("cam_poisson_ratio", "cam_poisson");
+      a->Alias("roller_poisson_ratio", "roller_poisson");
       a->Visit("exponent", &exponent, Field().In(1.0, 3.0).Desc("e of the contact law F = K δ^e (eq. 10)"));
       a->Visit("max_damping_Ns_per_mm", &max_damping_Ns_per_mm,
                Field().NonNegative().Unit("N·s/mm").Desc("C_max, the full contact damping (eq. 14)"));
