@@ -40,6 +40,18 @@ foreach(room model objectives optimizers studies cad)
 endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/schema DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt
         FILES_MATCHING PATTERN "*.json")
+# The schemas of the kinds declared once (studies/archive.h) exist only as `camopt schema KIND`:
+# every kind's schema is written from the built binary (the hand-kept ones come out the same).
+install(CODE "
+  execute_process(COMMAND $<TARGET_FILE:camopt> kinds OUTPUT_VARIABLE camopt_kinds COMMAND_ERROR_IS_FATAL ANY)
+  string(REPLACE \"\\n\" \";\" camopt_kinds \"\${camopt_kinds}\")
+  foreach(k \${camopt_kinds})
+    if(k)
+      execute_process(COMMAND $<TARGET_FILE:camopt> schema \${k}
+        OUTPUT_FILE \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_DATADIR}/camopt/schema/\${k}.schema.json\"
+        COMMAND_ERROR_IS_FATAL ANY)
+    endif()
+  endforeach()")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt
         FILES_MATCHING PATTERN "*.json")
 

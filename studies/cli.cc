@@ -37,6 +37,7 @@
 #include "studies/convergence.h"
 #include "studies/provenance.h"
 #include "studies/report.h"
+#include "studies/archive.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
 #include "studies/suggest.h"
@@ -190,6 +191,8 @@ int CliMain(int argc, char** argv) {
   std::string schema_kind;
   CLI::App* schema = app.add_subcommand("schema", "Print the JSON Schema of a study kind");
   schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
+  bool schema_table = false;
+  schema->add_flag("--table", schema_table, "Print the fields as a Markdown table (docs/studies.md)");
   app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
   app.require_subcommand(0, 1);
 
@@ -236,7 +239,11 @@ int CliMain(int argc, char** argv) {
   }
   if (schema->parsed()) {
     try {
-      std::cout << camopt::studies::StudySchema(schema_kind);
+      const std::string& text = camopt::studies::StudySchema(schema_kind);
+      if (schema_table)
+        std::cout << camopt::studies::SchemaFieldTable(nlohmann::ordered_json::parse(text));
+      else
+        std::cout << text;
       return 0;
     } catch (const camopt::studies::StudyError& e) {
       std::cerr << "camopt: error: " << e.what() << "\n";

@@ -106,13 +106,19 @@ GeometryFileOptions ParseGeometryFiles(const Node& root) {
     return o;
   }
   if (!g.json().is_object()) g.Fail("an object or a boolean");
-  g.CheckKnownFields({"dxf_tolerance_um", "stl_format", "step"});
-  if (g.Has("dxf_tolerance_um")) o.dxf_tolerance_um = g["dxf_tolerance_um"].NumberIn(0.01, 1000.0);
-  const std::string stl = g.StringOr("stl_format", "binary");
-  if (stl != "binary" && stl != "ascii") g["stl_format"].Fail("\"binary\" or \"ascii\"");
-  o.stl_ascii = stl == "ascii";
-  o.step = g.BoolOr("step", true);
+  const auto in = Read<GeometryFilesInput>(g);
+  o.dxf_tolerance_um = in.dxf_tolerance_um;
+  o.stl_ascii = in.stl_format == "ascii";
+  o.step = in.step;
   return o;
+}
+
+nlohmann::ordered_json GeometryFilesSchema(const std::string& description) {
+  nlohmann::ordered_json s = {{"description", description}};
+  GeometryFilesInput defaults;
+  SchemaEmitter::Describe(&defaults, Field(), s);
+  s["type"] = {"object", "boolean"};
+  return s;
 }
 
 nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,

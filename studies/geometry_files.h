@@ -22,6 +22,7 @@
 
 #include "cad/arc_fit.h"
 #include "cad/stl.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -34,8 +35,26 @@ struct GeometryFileOptions {
   bool step = true;
 };
 
+/// The object form of the "geometry_files" block, declared once (studies/archive.h).
+struct GeometryFilesInput {
+  double dxf_tolerance_um = 1.0;
+  std::string stl_format = "binary";
+  bool step = true;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("dxf_tolerance_um", &dxf_tolerance_um,
+             Field().In(0.01, 1000.0).Unit("µm").Desc("largest distance of the DXF/STEP arcs from the exact profile"));
+    a->Visit("stl_format", &stl_format, Field().OneOf({"binary", "ascii"}).Desc("STL encoding"));
+    a->Visit("step", &step, Field().Desc("write the STEP solids or surfaces"));
+  }
+};
+
 /// Reads the optional root block "geometry_files" (defaults when absent or true; false: none).
 GeometryFileOptions ParseGeometryFiles(const Node& root);
+
+/// The JSON Schema of the "geometry_files" block (an object of GeometryFilesInput, or a boolean),
+/// with the kind's own `description`.
+nlohmann::ordered_json GeometryFilesSchema(const std::string& description);
 
 /// The optional bore of a part at `n` (a "bore_diameter_mm" field, > 0): between 1e-3 and
 /// 1 − 2e-3 times `limit_diameter_mm` (the diameter the bore must stay inside, named by

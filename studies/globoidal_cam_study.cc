@@ -10,6 +10,7 @@
 #include "studies/format.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::globoidal_cam {
@@ -89,34 +90,40 @@ std::string SpeedTag(double rpm) { return Format(rpm) + "rpm"; }
 
 }  // namespace
 
-Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "cam", "motion", "load", "contact", "dynamics",
-                          "analysis", "export", "geometry_files"});
-  Study s;
-  s.name = root.StringOr("name", "globoidal cam");
-  GloboidalCam<double>& cam = s.dyn.cam;
+nlohmann::ordered_json Input::MotionSchema() {
+  nlohmann::ordered_json laws = nlohmann::ordered_json::array();
+  for (const std::string& law : motion::LawNames())
+    if (law != motion::LawName(motion::MotionLaw::kPolynomial)) laws.push_back(law);
+  return {{"type", "array"},
+          {"minItems", 1},
+          {"items",
+           {{"type", "object"},
+            {"properties",
+             {{"law", {{"description", "the motion law of the segment"}, {"enum", laws}}},
+              {"rise_deg", {{"description", "the segment's swing (none for a dwell) [deg]"}, {"type", "number"}}},
+              {"cam_angle_deg",
+               {{"description", "the cam angle the segment spans [deg]"}, {"type", "number"}, {"exclusiveMinimum", 0}}}}},
+            {"required", {"law", "cam_angle_deg"}},
+            {"additionalProperties", false}}}};
+}
 
+// The checks that span fields (the geometry, the motion against the swing, the contact arm, the
+// steps a speed needs, the stages against their inputs, the load against the contact law) and
+// the conversion of the declared input to model units.
+Study Parse(const Node& root) {
+  const Input in = Read<Input>(root);
+  Study s;
+  s.name = in.name;
+  GloboidalCam<double>& cam = s.dyn.cam;
   const Node c = root["cam"];
-  c.CheckKnownFields({"center_distance_mm", "roller_radius_mm", "pitch_radius_mm",
-                       "roller_length_mm", "clearance_mm", "roller_angle_deg", "swing_deg",
-                       "first_motion"});
-  cam.center_distance = c["center_distance_mm"].Positive();
+  cam.center_distance = in.cam.center_distance_mm;
   cam.roller_radius = PlausibleLength(c["roller_radius_mm"], cam.center_distance, "the center distance");
-  cam.pitch_radius = c["pitch_radius_mm"].Positive();
-  cam.roller_length = c["roller_length_mm"].Positive();
-  cam.clearance = c["clearance_mm"].NonNegative();
-  cam.roller_angle = c["roller_angle_deg"].Positive() * kDeg;
-  if (cam.roller_angle >= kPi) c["roller_angle_deg"].Fail("an angle in (0, 180) deg");
-  cam.swing = c["swing_deg"].Positive() * kDeg;
-  if (cam.swing >= kPi / 2) c["swing_deg"].Fail("an angle in (0, 90) deg");
-  const std::string first = c.StringOr("first_motion", "clockwise");
-  if (first == "clockwise") {
-    cam.direction = 1;
-  } else if (first == "anticlockwise") {
-    cam.direction = -1;
-  } else {
-    c["first_motion"].Fail("\"clockwise\" or \"anticlockwise\"");
-  }
+  cam.pitch_radius = in.cam.pitch_radius_mm;
+  cam.roller_length = in.cam.roller_length_mm;
+  cam.clearance = in.cam.clearance_mm;
+  cam.roller_angle = in.cam.roller_angle_deg * kDeg;
+  cam.swing = in.cam.swing_deg * kDeg;
+  cam.direction = in.cam.first_motion == "clockwise" ? 1 : -1;
   FailOnFirst(globoidal::CheckGeometry(cam), root);
 
   // Motion: the turret swing φ_i, rising by +φ_f in the first motion's direction, between the
@@ -126,127 +133,66 @@ Study Parse(const Node& root) {
   cam.motion = ParseMotionProgram(root["motion"], spec);
   FailOnFirst(globoidal::CheckSwing(cam), root);
 
-  if (root.Has("load")) {
-    const Node l = root["load"];
-    l.CheckKnownFields({"turret_torque_Nm", "turret_inertia_kgm2"});
-    s.dyn.load_torque_Nmm = l.NumberOr("turret_torque_Nm", 0.0) * 1e3;
-    s.dyn.inertia_Nmms2 = l.PositiveOr("turret_inertia_kgm2", 0.01) * 1e3;
+  s.dyn.load_torque_Nmm = in.load.turret_torque_Nm * 1e3;
+  s.dyn.inertia_Nmms2 = in.load.turret_inertia_kgm2 * 1e3;
+  // Young's moduli in GPa and "poisson_ratio" as in every other kind; the earlier names
+  // (*_modulus_MPa, *_poisson) stay accepted as aliases (docs/studies.md, "Units"; the declaration
+  // refuses both names of a pair).
+  const Input::Contact& kc = in.contact;
+  auto& m = s.dyn.contact;
+  if (kc.cam_modulus_MPa) m.cam_modulus_MPa = *kc.cam_modulus_MPa;
+  if (kc.cam_youngs_modulus_GPa) m.cam_modulus_MPa = *kc.cam_youngs_modulus_GPa * 1000.0;
+  if (kc.roller_modulus_MPa) m.roller_modulus_MPa = *kc.roller_modulus_MPa;
+  if (kc.roller_youngs_modulus_GPa) m.roller_modulus_MPa = *kc.roller_youngs_modulus_GPa * 1000.0;
+  m.cam_poisson = kc.cam_poisson.value_or(kc.cam_poisson_ratio.value_or(m.cam_poisson));
+  m.roller_poisson = kc.roller_poisson.value_or(kc.roller_poisson_ratio.value_or(m.roller_poisson));
+  m.exponent = kc.exponent;
+  m.max_damping_Ns_per_mm = kc.max_damping_Ns_per_mm;
+  m.penetration_depth_mm = kc.penetration_depth_mm;
+  if (kc.contact_arm_mm) {
+    s.dyn.contact_arm_mm = *kc.contact_arm_mm;
+    FailOnFirst(globoidal::CheckContactArm(s.dyn), root);
   }
-  if (root.Has("contact")) {
-    const Node k = root["contact"];
-    k.CheckKnownFields({"cam_youngs_modulus_GPa", "cam_poisson_ratio", "roller_youngs_modulus_GPa",
-                         "roller_poisson_ratio", "cam_modulus_MPa", "cam_poisson", "roller_modulus_MPa",
-                         "roller_poisson", "exponent", "max_damping_Ns_per_mm", "penetration_depth_mm",
-                         "contact_arm_mm"});
-    auto& m = s.dyn.contact;
-    // Young's moduli in GPa and "poisson_ratio" as in every other kind; the earlier names
-    // (*_modulus_MPa, *_poisson) stay accepted as aliases (docs/studies.md, "Units"), one of each.
-    const auto modulus = [&](const std::string& side, double fallback_MPa) {
-      const std::string gpa = side + "_youngs_modulus_GPa", mpa = side + "_modulus_MPa";
-      const double value = k.Has(mpa)   ? k[mpa].Positive()
-                           : k.Has(gpa) ? k[gpa].Positive() * 1000.0
-                                        : fallback_MPa;
-      if (k.Has(gpa) && k.Has(mpa)) k[mpa].FailWith("give either " + gpa + " or its old name " + mpa + ", not both");
-      return value;
-    };
-    const auto poisson = [&](const std::string& side, double fallback) {
-      const std::string now = side + "_poisson_ratio", old = side + "_poisson";
-      const double value = k.Has(old)   ? k[old].NumberIn(0.0, 0.499)
-                           : k.Has(now) ? k[now].NumberIn(0.0, 0.499)
-                                        : fallback;
-      if (k.Has(now) && k.Has(old)) k[old].FailWith("give either " + now + " or its old name " + old + ", not both");
-      return value;
-    };
-    m.cam_modulus_MPa = modulus("cam", m.cam_modulus_MPa);
-    m.roller_modulus_MPa = modulus("roller", m.roller_modulus_MPa);
-    m.cam_poisson = poisson("cam", m.cam_poisson);
-    m.roller_poisson = poisson("roller", m.roller_poisson);
-    if (k.Has("exponent")) m.exponent = k["exponent"].NumberIn(1.0, 3.0);
-    m.max_damping_Ns_per_mm = k.NonNegativeOr("max_damping_Ns_per_mm", m.max_damping_Ns_per_mm);
-    m.penetration_depth_mm = k.PositiveOr("penetration_depth_mm", m.penetration_depth_mm);
-    if (k.Has("contact_arm_mm")) {
-      s.dyn.contact_arm_mm = k["contact_arm_mm"].Positive();
-      FailOnFirst(globoidal::CheckContactArm(s.dyn), root);
-    }
+
+  const Input::Dynamics& d = in.dynamics;
+  s.speeds_rpm = d.cam_speeds_rpm;
+  s.end_time_s = d.end_time_s.value_or(s.end_time_s);  // bounded by max_steps below
+  s.relative_tolerance = d.relative_tolerance;
+  s.absolute_tolerance = d.absolute_tolerance;
+  s.max_steps = d.max_steps;
+  for (const double rpm : s.speeds_rpm) {
+    // The solver's step is at most 0.5° of cam: a run shorter than max_steps of those.
+    DynamicsInput probe = s.dyn;
+    probe.cam_speed_rad_s = rpm * 2 * kPi / 60;
+    probe.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
+    const double least = probe.end_time_s / globoidal::MaxStep(probe);
+    if (least > s.max_steps)
+      root["dynamics"].FailWith("at " + Format(rpm) + " rpm the run needs at least " + Format(std::ceil(least)) +
+                                " steps (a step spans at most 0.5° of cam), more than max_steps = " +
+                                std::to_string(s.max_steps) + ": shorten end_time_s or raise max_steps");
   }
-  if (root.Has("dynamics")) {
-    const Node d = root["dynamics"];
-    d.CheckKnownFields({"cam_speeds_rpm", "end_time_s", "relative_tolerance",
-                         "absolute_tolerance", "max_steps", "time_step_s"});
-    if (d.Has("time_step_s"))
-      d["time_step_s"].FailWith(
-          "no longer used: the dynamics run with error control (CVODE); give "
-          "\"relative_tolerance\" (e.g. 1e-8) and \"absolute_tolerance\" (e.g. 1e-10) instead");
-    if (d.Has("cam_speeds_rpm"))
-      // 0.01 rpm (a revolution in 100 minutes) to 1e5 rpm: the simulated time of a revolution
-      // and its solver steps stay countable (studies/work_limits.cc).
-      for (const Node& v : d["cam_speeds_rpm"].Elements()) s.speeds_rpm.push_back(v.NumberIn(0.01, 1e5));
-    if (d.Has("end_time_s")) s.end_time_s = d["end_time_s"].Positive();  // bounded by max_steps below
-    if (d.Has("relative_tolerance")) {
-      s.relative_tolerance = d["relative_tolerance"].Positive();
-      if (s.relative_tolerance < 1e-13 || s.relative_tolerance > 1e-3)
-        d["relative_tolerance"].Fail(
-            "a relative tolerance in [1e-13, 1e-3] (tighter is beyond double precision, looser "
-            "cannot resolve the contact oscillation)");
+  if (in.analysis.evaluate) {
+    s.evaluate_given = true;
+    s.dynamics_stage = s.export_stage = false;
+    for (const std::string& stage : *in.analysis.evaluate) {
+      s.dynamics_stage = s.dynamics_stage || stage == "dynamics";
+      s.export_stage = s.export_stage || stage == "export";
     }
-    if (d.Has("absolute_tolerance")) {
-      s.absolute_tolerance = d["absolute_tolerance"].Positive();
-      if (s.absolute_tolerance < 1e-16 || s.absolute_tolerance > 1e-4)
-        d["absolute_tolerance"].Fail(
-            "an absolute tolerance in [1e-16, 1e-4] rad (on the deviation ψ − φ_i and its rate)");
+    // A stage asked for needs its inputs; the ones not asked for are not run.
+    if (s.dynamics_stage && s.speeds_rpm.empty()) {
+      const Node speeds = root["dynamics"]["cam_speeds_rpm"];  // "missing" when absent
+      speeds.Fail("at least one cam speed (analysis.evaluate asks for the dynamics)");
     }
-    s.max_steps = d.IntegerOr("max_steps", 1, s.max_steps);
-    if (s.max_steps > 200000000) d["max_steps"].Fail("a whole number <= 2e8");
-    for (const double rpm : s.speeds_rpm) {
-      // The solver's step is at most 0.5° of cam: a run shorter than max_steps of those.
-      DynamicsInput probe = s.dyn;
-      probe.cam_speed_rad_s = rpm * 2 * kPi / 60;
-      probe.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
-      const double least = probe.end_time_s / globoidal::MaxStep(probe);
-      if (least > s.max_steps)
-        d.FailWith("at " + Format(rpm) + " rpm the run needs at least " + Format(std::ceil(least)) +
-                   " steps (a step spans at most 0.5° of cam), more than max_steps = " +
-                   std::to_string(s.max_steps) + ": shorten end_time_s or raise max_steps");
-    }
+    if (!s.dynamics_stage) s.speeds_rpm.clear();
   }
-  if (root.Has("analysis")) {
-    const Node a = root["analysis"];
-    a.CheckKnownFields({"angle_steps", "axis_steps", "evaluate"});
-    if (a.Has("evaluate")) {
-      s.evaluate_given = true;
-      s.dynamics_stage = s.export_stage = false;
-      for (const Node& n : a["evaluate"].Elements()) {
-        const std::string stage = n.String();
-        if (stage == "dynamics") {
-          s.dynamics_stage = true;
-        } else if (stage == "export") {
-          s.export_stage = true;
-        } else if (stage != "geometry") {
-          n.Fail("one of \"geometry\", \"dynamics\", \"export\"");
-        }
-      }
-      // A stage asked for needs its inputs; the ones not asked for are not run.
-      if (s.dynamics_stage && s.speeds_rpm.empty()) {
-        const Node speeds = root["dynamics"]["cam_speeds_rpm"];  // "missing" when absent
-        speeds.Fail("at least one cam speed (analysis.evaluate asks for the dynamics)");
-      }
-      if (!s.dynamics_stage) s.speeds_rpm.clear();
-    }
-    s.angle_steps = a.IntegerOr("angle_steps", 36, s.angle_steps);
-    if (s.angle_steps > 200000) a["angle_steps"].Fail("a whole number <= 200000");
-    s.axis_steps = a.IntegerOr("axis_steps", 2, s.axis_steps);
-    if (s.axis_steps > 1000) a["axis_steps"].Fail("a whole number <= 1000");
-  }
-  if (root.Has("export")) {
-    const Node e = root["export"];
-    e.CheckKnownFields({"stl", "point_cloud", "angle_steps", "axis_steps"});
-    s.export_stl = e.BoolOr("stl", true);
-    s.export_point_cloud = e.BoolOr("point_cloud", true);
-    s.export_angle_steps = e.IntegerOr("angle_steps", 36, s.export_angle_steps);
-    s.export_axis_steps = e.IntegerOr("axis_steps", 2, s.export_axis_steps);
-    if (double(s.export_angle_steps) * s.export_axis_steps > 4e6)
-      e.FailWith("angle_steps × axis_steps must stay below 4e6");
-  }
+  s.angle_steps = in.analysis.angle_steps;
+  s.axis_steps = in.analysis.axis_steps;
+  s.export_stl = in.export_.stl;
+  s.export_point_cloud = in.export_.point_cloud;
+  s.export_angle_steps = in.export_.angle_steps;
+  s.export_axis_steps = in.export_.axis_steps;
+  if (double(s.export_angle_steps) * s.export_axis_steps > 4e6)
+    root["export"].FailWith("angle_steps × axis_steps must stay below 4e6");
   if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
   s.geometry = ParseGeometryFiles(root);
   // "geometry_files": false: no STL/STEP of the surfaces, whatever export.stl says (a sweep can
@@ -673,28 +619,30 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("globoidal_cam");
 
+CAMOPT_REGISTER_DECLARED_KIND("globoidal_cam", Input, "camopt study: globoidal cam indexer");
+
+// The declared input of a study, for the estimates below that run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
+
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the analysis grid of the
 // geometry and, when the dynamics run, CVODE's tolerances. The variants skip the surface export.
 Fidelity Knobs(const nlohmann::json& study) {
+  const Input in = ReadInput(study, "");
+  const Input defaults;
   Fidelity f;
-  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 720, 2, true, 0,
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, defaults.analysis.angle_steps, 2, true, 0,
                      "cam angles of the geometry survey (extrema are sampled)"});
-  f.knobs.push_back({"axis_steps", {"/analysis/axis_steps"}, 7, 2, true, 0,
+  f.knobs.push_back({"axis_steps", {"/analysis/axis_steps"}, defaults.analysis.axis_steps, 2, true, 0,
                      "points along the roller axis of the geometry survey"});
   f.headlines = {"/max_pressure_angle_deg", "/min_undercut_margin", "/min_contact_radius_mm"};
-  bool dynamics = true;
-  const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
-  if (study.contains(ev)) {
-    dynamics = false;
-    for (const auto& e : study[ev]) dynamics = dynamics || e == "dynamics";
-  }
-  const auto speeds = nlohmann::json::json_pointer("/dynamics/cam_speeds_rpm");
-  if (dynamics && study.contains(speeds) && !study[speeds].empty()) {
-    f.knobs.push_back({"relative_tolerance", {"/dynamics/relative_tolerance"}, 1e-8, 0.1, false, 0,
-                       "CVODE's relative tolerance"});
-    f.knobs.push_back({"absolute_tolerance", {"/dynamics/absolute_tolerance"}, 1e-10, 0.1, false, 0,
-                       "CVODE's absolute tolerance [rad, rad/s]"});
-    for (size_t i = 0; i < study[speeds].size(); ++i) {
+  const auto& evaluate = in.analysis.evaluate;
+  const bool dynamics = !evaluate || std::find(evaluate->begin(), evaluate->end(), "dynamics") != evaluate->end();
+  if (dynamics && !in.dynamics.cam_speeds_rpm.empty()) {
+    f.knobs.push_back({"relative_tolerance", {"/dynamics/relative_tolerance"}, defaults.dynamics.relative_tolerance,
+                       0.1, false, 0, "CVODE's relative tolerance"});
+    f.knobs.push_back({"absolute_tolerance", {"/dynamics/absolute_tolerance"}, defaults.dynamics.absolute_tolerance,
+                       0.1, false, 0, "CVODE's absolute tolerance [rad, rad/s]"});
+    for (size_t i = 0; i < in.dynamics.cam_speeds_rpm.size(); ++i) {
       const std::string p = "/dynamics/speeds/" + std::to_string(i) + "/";
       f.headlines.push_back(p + "peak_turret_acceleration_dynamic_rad_s2");
       f.headlines.push_back(p + "max_force_roller_1_N");
@@ -706,6 +654,36 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("globoidal_cam", Knobs);
+
+// The work limit (studies/work_limits.h): the dynamics run on CVODE with error control, about
+// 5000 accepted steps per cam revolution at the default tolerance (docs/globoidal.md), never more
+// than max_steps per speed; the geometry survey's grid; the exported surface points.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const Input::Dynamics& d = in.dynamics;
+  constexpr double kStepsPerRevolution = 5000, kStepsPerSecond = 1e4;
+  double steps = 0;
+  for (const double rpm : d.cam_speeds_rpm) {
+    const double revolutions = d.end_time_s ? *d.end_time_s * rpm / 60.0 : 1.0;
+    // A slow cam under a light load: the steps follow the simulated time, not the revolutions
+    // (the paper cam at 1 N·m: 6.3k steps per simulated second from 1 to 0.1 rpm).
+    const double seconds = d.end_time_s ? *d.end_time_s : 60.0 / rpm;
+    steps += std::min(std::max(revolutions * kStepsPerRevolution, seconds * kStepsPerSecond), double(d.max_steps));
+  }
+  const Input::Analysis& a = in.analysis;
+  const Input::Export& x = in.export_;
+  return LargestTerm(
+      {{steps, "/dynamics",
+        WorkNumber(double(d.cam_speeds_rpm.size())) + " cam speeds, the larger of " +
+            WorkNumber(kStepsPerRevolution) + " solver steps per revolution and " + WorkNumber(kStepsPerSecond) +
+            " per simulated second"},
+       {double(a.angle_steps) * a.axis_steps, "/analysis/angle_steps",
+        WorkNumber(a.angle_steps) + " angle steps × " + WorkNumber(a.axis_steps) + " axis steps"},
+       {double(x.angle_steps) * x.axis_steps, "/export/angle_steps",
+        WorkNumber(x.angle_steps) + " × " + WorkNumber(x.axis_steps) + " surface points"}},
+      1e7 * factor, "time steps and surface points", 150);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("globoidal_cam", EstimateWork);
 }  // namespace
 
 namespace {

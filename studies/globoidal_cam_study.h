@@ -10,6 +10,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,11 +19,180 @@
 #include "model/globoidal/contact_dynamics.h"
 #include "model/globoidal/globoidal.h"
 #include "model/motion/motion_program.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
 #include "studies/study.h"
 
 namespace camopt::studies::globoidal_cam {
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds
+/// and description (studies/archive.h). Parse reads it, checks what spans fields, and converts it
+/// to the model's units (Study); `camopt schema globoidal_cam` is emitted from it.
+struct Input {
+  struct Cam {
+    double center_distance_mm = 0, roller_radius_mm = 0, pitch_radius_mm = 0, roller_length_mm = 0,
+           clearance_mm = 0, roller_angle_deg = 0, swing_deg = 0;
+    std::string first_motion = "clockwise";
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("center_distance_mm", &center_distance_mm,
+               Field().Required().Positive().Unit("mm").Desc("C, between the cam axis and the turret axis"));
+      a->Visit("roller_radius_mm", &roller_radius_mm,
+               Field().Required().Positive().Unit("mm").Desc("R, of each roller (1e-6 to 1e6 times C)"));
+      a->Visit("pitch_radius_mm", &pitch_radius_mm,
+               Field().Required().Positive().Unit("mm").Desc("R_e, turret axis to the roller's base end"));
+      a->Visit("roller_length_mm", &roller_length_mm,
+               Field().Required().Positive().Unit("mm").Desc("m, the roller's length along its axis"));
+      a->Visit("clearance_mm", &clearance_mm,
+               Field().Required().NonNegative().Unit("mm").Desc("e, between the roller and the turret"));
+      a->Visit("roller_angle_deg", &roller_angle_deg,
+               Field().Required().Positive().Below(180, "an angle in (0, 180) deg").Unit("deg")
+                   .Desc("β, between the two rollers of a pair"));
+      a->Visit("swing_deg", &swing_deg,
+               Field().Required().Positive().Below(90, "an angle in (0, 90) deg").Unit("deg")
+                   .Desc("φ_f, the turret's swing (its motion's rise)"));
+      a->Visit("first_motion", &first_motion,
+               Field().OneOf({"clockwise", "anticlockwise"}).Desc("direction of the turret's first motion"));
+    }
+  };
+  struct Load {
+    double turret_torque_Nm = 0.0, turret_inertia_kgm2 = 0.01;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("turret_torque_Nm", &turret_torque_Nm,
+               Field().Unit("N·m").Desc("constant load on the turret, against its motion"));
+      a->Visit("turret_inertia_kgm2", &turret_inertia_kgm2,
+               Field().Positive().Unit("kg·m²").Desc("the turret's moment of inertia J"));
+    }
+  };
+  struct Contact {
+    /// The new names (GPa, poisson_ratio) and their old ones (MPa, poisson): one of each pair.
+    std::optional<double> cam_youngs_modulus_GPa, roller_youngs_modulus_GPa, cam_poisson_ratio,
+        roller_poisson_ratio, cam_modulus_MPa, roller_modulus_MPa, cam_poisson, roller_poisson;
+    double exponent = globoidal::ContactMaterial{}.exponent;
+    double max_damping_Ns_per_mm = globoidal::ContactMaterial{}.max_damping_Ns_per_mm;
+    double penetration_depth_mm = globoidal::ContactMaterial{}.penetration_depth_mm;
+    std::optional<double> contact_arm_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const globoidal::ContactMaterial m;
+      for (const auto& [side, E, nu, old_E, old_nu, default_E, default_nu] :
+           {std::tuple{"cam", &cam_youngs_modulus_GPa, &cam_poisson_ratio, &cam_modulus_MPa, &cam_poisson,
+                       m.cam_modulus_MPa, m.cam_poisson},
+            std::tuple{"roller", &roller_youngs_modulus_GPa, &roller_poisson_ratio, &roller_modulus_MPa,
+                       &roller_poisson, m.roller_modulus_MPa, m.roller_poisson}}) {
+        const std::string s = side;
+        a->Visit((s + "_youngs_modulus_GPa").c_str(), E,
+                 Field().Positive().Unit("GPa").Default(default_E / 1000.0).Desc(s + "'s Young's modulus"));
+        a->Visit((s + "_poisson_ratio").c_str(), nu,
+                 Field().In(0.0, 0.499).Default(default_nu).Desc(s + "'s Poisson's ratio"));
+        a->Visit((s + "_modulus_MPa").c_str(), old_E,
+                 Field().Positive().Unit("MPa").Desc("old name: " + s + "'s Young's modulus in MPa (use " + s +
+                                                     "_youngs_modulus_GPa)"));
+        a->Visit((s + "_poisson").c_str(), old_nu,
+                 Field().In(0.0, 0.499).Desc("old name of " + s + "_poisson_ratio"));
+      }
+      a->Alias("cam_youngs_modulus_GPa", "cam_modulus_MPa");
+      a->Alias("roller_youngs_modulus_GPa", "roller_modulus_MPa");
+      a->Alias("cam_poisson_ratio", "cam_poisson");
+      a->Alias("roller_poisson_ratio", "roller_poisson");
+      a->Visit("exponent", &exponent, Field().In(1.0, 3.0).Desc("e of the contact law F = K δ^e (eq. 10)"));
+      a->Visit("max_damping_Ns_per_mm", &max_damping_Ns_per_mm,
+               Field().NonNegative().Unit("N·s/mm").Desc("C_max, the full contact damping (eq. 14)"));
+      a->Visit("penetration_depth_mm", &penetration_depth_mm,
+               Field().Positive().Unit("mm").Desc("d, the penetration of full damping (eq. 14)"));
+      a->Visit("contact_arm_mm", &contact_arm_mm,
+               Field().Positive().Unit("mm").Desc("l_c, turret axis to the contact point, in [l₂, l₁] (absent: R_e)"));
+    }
+  };
+  struct Dynamics {
+    std::vector<double> cam_speeds_rpm;
+    std::optional<double> end_time_s;
+    double relative_tolerance = 1e-8, absolute_tolerance = 1e-10;
+    int max_steps = 20000000;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Retired("time_step_s",
+                 "no longer used: the dynamics run with error control (CVODE); give "
+                 "\"relative_tolerance\" (e.g. 1e-8) and \"absolute_tolerance\" (e.g. 1e-10) instead");
+      // 0.01 rpm (a revolution in 100 minutes) to 1e5 rpm: the simulated time of a revolution
+      // and its solver steps stay countable (the work estimate).
+      a->Visit("cam_speeds_rpm", &cam_speeds_rpm,
+               Field().In(0.01, 1e5).Unit("rpm").Desc("cam speeds to simulate, one run each"));
+      a->Visit("end_time_s", &end_time_s,
+               Field().Positive().Unit("s").Desc("simulated time per speed (absent: one cam revolution)"));
+      a->Visit("relative_tolerance", &relative_tolerance,
+               Field().Positive().In(1e-13, 1e-3,
+                                     "a relative tolerance in [1e-13, 1e-3] (tighter is beyond double precision, "
+                                     "looser cannot resolve the contact oscillation)")
+                   .Desc("CVODE's local relative error control"));
+      a->Visit("absolute_tolerance", &absolute_tolerance,
+               Field().Positive().In(1e-16, 1e-4,
+                                     "an absolute tolerance in [1e-16, 1e-4] rad (on the deviation ψ − φ_i and its rate)")
+                   .Unit("rad, rad/s").Desc("CVODE's absolute error control on ψ − φ_i and its rate"));
+      a->Visit("max_steps", &max_steps,
+               Field().AtLeast(1).AtMost(200000000, "a whole number <= 2e8").Desc("accepted solver steps per speed, at most"));
+    }
+  };
+  struct Analysis {
+    int angle_steps = 720, axis_steps = 7;
+    std::optional<std::vector<std::string>> evaluate;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_steps", &angle_steps,
+               Field().AtLeast(36).AtMost(200000).Desc("cam angles of the geometry survey over a revolution"));
+      a->Visit("axis_steps", &axis_steps,
+               Field().AtLeast(2).AtMost(1000).Desc("points along the roller axis of the geometry survey"));
+      a->Visit("evaluate", &evaluate,
+               Field().OneOf({"geometry", "dynamics", "export"})
+                   .Desc("the stages to run (absent: all; the geometry always runs)"));
+    }
+  };
+  struct Export {
+    bool stl = true, point_cloud = true;
+    int angle_steps = 360, axis_steps = 6;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("stl", &stl, Field().Desc("write working_surfaces.stl (and .step)"));
+      a->Visit("point_cloud", &point_cloud, Field().Desc("write working_surfaces.csv"));
+      a->Visit("angle_steps", &angle_steps, Field().AtLeast(36).Desc("cam angles of the exported surfaces"));
+      a->Visit("axis_steps", &axis_steps, Field().AtLeast(2).Desc("points along the roller axis of the exported surfaces"));
+    }
+  };
+
+  std::string study = "globoidal_cam", name = "globoidal cam";
+  std::optional<std::string> description;
+  Cam cam;
+  nlohmann::json motion;
+  Load load;
+  Contact contact;
+  Dynamics dynamics;
+  Analysis analysis;
+  Export export_;
+  nlohmann::json geometry_files;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("globoidal_cam").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("cam", &cam, Field().Required().Desc("the cam and the turret (Ge, Wang & Zhang, eqs. 1–9)"));
+    a->Visit("motion", &motion, Field().Required().Schema(MotionSchema()).Desc(
+        "the turret's swing over one cam revolution: segments whose cam angles sum to 360"));
+    a->Visit("load", &load, Field().Desc("the turret's load"));
+    a->Visit("contact", &contact, Field().Desc("the contact law of the dynamics (eqs. 10–14)"));
+    a->Visit("dynamics", &dynamics, Field().Desc("the contact dynamics at the given cam speeds"));
+    a->Visit("analysis", &analysis, Field().Desc("the geometry survey's grid and the stages to run"));
+    a->Visit("export", &export_, Field().Desc("the working surfaces as a point cloud and a mesh"));
+    a->Visit("geometry_files", &geometry_files,
+             Field().Schema(GeometryFilesSchema(
+                 "geometry files (docs/studies.md 'Geometry files'); false: no STL/STEP of the working "
+                 "surfaces (whatever export.stl says; the point cloud stays)")));
+  }
+  /// The schema of a "motion" segment (read by ParseMotionProgram, shared with disc_cam).
+  static nlohmann::ordered_json MotionSchema();
+};
 
 /// The study file, parsed and validated (CheckDesign passed), in model units.
 struct Study {

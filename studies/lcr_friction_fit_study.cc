@@ -19,26 +19,23 @@
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/report.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_friction_fit {
 namespace {
 
-Parameter ParseParameter(const Node& parent, const std::string& key, Parameter fallback) {
-  if (!parent.Has(key)) return fallback;
-  const Node p = parent[key];
-  p.CheckKnownFields({"initial", "bounds"});
-  Parameter out = fallback;
-  if (p.Has("bounds")) {
-    const auto [lo, hi] = p["bounds"].Range();
-    // Equal bounds leave nothing to fit (and Ceres refuses them with an opaque message).
-    if (!(lo < hi)) p["bounds"].Fail("[lower, upper] with lower < upper");
-    out.lower = lo, out.upper = hi;
-  }
-  out.initial = p.NumberOr("initial", std::clamp(fallback.initial, out.lower, out.upper));
+// A fitted parameter from its declaration: equal bounds leave nothing to fit (and Ceres refuses them
+// with an opaque message); a start within the bounds.
+Parameter ToParameter(const Input::Parameter& in, double default_start, const Node& root, const char* key) {
+  const auto node = [&](const char* field) { return root["parameters"][key][field]; };
+  Parameter out;
+  out.lower = in.bounds[0], out.upper = in.bounds[1];
+  if (!(out.lower < out.upper)) node("bounds").Fail("[lower, upper] with lower < upper");
+  out.initial = in.initial.value_or(std::clamp(default_start, out.lower, out.upper));
   if (out.initial < out.lower || out.initial > out.upper)
-    p["initial"].Fail("a number within the bounds [" + std::to_string(out.lower) + ", " +
-                      std::to_string(out.upper) + "]");
+    node("initial").Fail("a number within the bounds [" + std::to_string(out.lower) + ", " +
+                         std::to_string(out.upper) + "]");
   return out;
 }
 
@@ -46,27 +43,19 @@ bool AtBound(double x, const Parameter& p) { return x <= p.lower + 1e-12 || x >=
 
 }  // namespace
 
+// The checks between fields and the conversion of the declared input.
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "measurements", "parameters", "analysis"});
+  const Input in = Read<Input>(root);
   Study st;
-  st.name = root.StringOr("name", "");
-  st.reducer = ParseReducer(root["reducer"]);
-  if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  st.material = root.Has("material") ? ParseMaterial(root["material"]) : Material{};
-  const Node meas = root["measurements"];
-  for (const Node& m : meas.Elements()) {
-    m.CheckKnownFields({"output_torque_Nm", "input_torque_Nm", "input_torque_sd_Nm"});
-    st.measurements.push_back({m["output_torque_Nm"].Positive(), m["input_torque_Nm"].Positive(),
-                               m["input_torque_sd_Nm"].Positive()});
-  }
-  if (st.measurements.size() < 3) meas.Fail("at least 3 measurements (2 parameters are fitted)");
-  if (root.Has("analysis")) root["analysis"].CheckKnownFields({"angle_steps"});
-  st.angle_steps = root.Has("analysis") ? root["analysis"].IntegerOr("angle_steps", 12, 3600) : 3600;
-  if (root.Has("parameters")) {
-    root["parameters"].CheckKnownFields({"friction_coefficient", "drag_torque_Nm"});
-    st.friction_coefficient = ParseParameter(root["parameters"], "friction_coefficient", st.friction_coefficient);
-    st.drag_torque_Nm = ParseParameter(root["parameters"], "drag_torque_Nm", st.drag_torque_Nm);
-  }
+  st.name = in.name;
+  st.reducer = ToReducer(in.reducer, root["reducer"]);
+  if (in.material) st.material = in.material->ToMaterial();
+  for (const Input::Measurement& m : in.measurements)
+    st.measurements.push_back({m.output_torque_Nm, m.input_torque_Nm, m.input_torque_sd_Nm});
+  st.angle_steps = in.analysis.angle_steps;
+  st.friction_coefficient = ToParameter(in.parameters.friction_coefficient, lcr::kPaperFrictionCoefficient, root,
+                                        "friction_coefficient");
+  st.drag_torque_Nm = ToParameter(in.parameters.drag_torque_Nm, 0.0, root, "drag_torque_Nm");
   return st;
 }
 
@@ -231,18 +220,32 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_friction_fit");
+CAMOPT_REGISTER_DECLARED_KIND("lcr_friction_fit", Input, "camopt study: friction fit of a lobe cam reducer");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the model's
 // mean input torque (Ceres' tolerances are fixed).
 Fidelity Knobs(const nlohmann::json&) {
   Fidelity f;
-  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 3600, 2, true, 0,
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, Input::Analysis{}.angle_steps, 2, true, 0,
                      "samples of the input revolution in the torque model"});
   f.headlines = {"/parameters/friction_coefficient/value", "/parameters/drag_torque_Nm/value",
                  "/chi_square"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_friction_fit", Knobs);
+
+// The work limit (studies/work_limits.h): the torque model's angle grid over every roller (the
+// model runs once, at a unit torque; the fit scales it), and the measurements.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = Read<Input>(Node(&study, file, ""));
+  const double steps = in.analysis.angle_steps;
+  const double rollers = in.reducer.input.rollers + in.reducer.output.rollers;
+  return LargestTerm({{steps * rollers, "/analysis/angle_steps",
+                       WorkNumber(steps) + " angle steps × " + WorkNumber(rollers) + " rollers"},
+                      {double(in.measurements.size()), "/measurements", "measurements"}},
+                     2e7 * factor, "roller contact evaluations", 64);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("lcr_friction_fit", EstimateWork);
 }  // namespace
 
 namespace {

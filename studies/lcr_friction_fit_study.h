@@ -3,6 +3,7 @@
 // squares with Ceres, with the parameters' covariance. Parse → Run → ToJson / Write.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,7 +14,10 @@
 #include "model/lcr/friction.h"
 #include "model/lcr/reducer.h"
 #include "optimizers/ceres_fit.h"
+#include "studies/archive.h"
 #include "studies/input.h"
+#include "studies/lcr_input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_friction_fit {
@@ -27,6 +31,71 @@ struct Parameter {
   double initial = 0, lower = 0, upper = 0;
 };
 
+/// The study file as declared: each field once, in the file's units, with its default, bounds
+/// and description (studies/archive.h); `camopt schema lcr_friction_fit` is emitted from it.
+struct Input {
+  struct Measurement {
+    double output_torque_Nm = 0, input_torque_Nm = 0, input_torque_sd_Nm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Required().Positive().Unit("N·m").Desc("the load"));
+      a->Visit("input_torque_Nm", &input_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc("the measured input torque"));
+      a->Visit("input_torque_sd_Nm", &input_torque_sd_Nm,
+               Field().Required().Positive().Unit("N·m").Desc("its standard deviation (weights the fit)"));
+    }
+  };
+  struct Parameter {
+    std::optional<double> initial;
+    std::array<double, 2> bounds{0.0, 1.0};
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("initial", &initial, Field().Desc("start of the fit, within the bounds (absent: the default start "
+                                                "clamped into the bounds)"));
+      a->Visit("bounds", &bounds, Field().Expect("[lower, upper], two numbers").Desc("[lower, upper], lower < upper"));
+    }
+  };
+  struct Parameters {
+    Parameter friction_coefficient{std::nullopt, {0.0, 1.0}};
+    Parameter drag_torque_Nm{std::nullopt, {0.0, 10.0}};
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("friction_coefficient", &friction_coefficient,
+               Field().Desc("μ of the eccentric, the paper's eq. 32 (default start: the paper's μ)"));
+      a->Visit("drag_torque_Nm", &drag_torque_Nm, Field().Desc("the no-load drag torque [N·m] (default start: 0)"));
+    }
+  };
+  struct Analysis {
+    int angle_steps = 3600;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_steps", &angle_steps, Field().AtLeast(12).Desc("samples of the input revolution in the torque model"));
+    }
+  };
+
+  std::string study = "lcr_friction_fit", name;
+  std::optional<std::string> description;
+  LcrReducerInput reducer;
+  std::optional<MaterialInput> material;
+  std::vector<Measurement> measurements;
+  Parameters parameters;
+  Analysis analysis;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("lcr_friction_fit").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("reducer", &reducer, Field().Required().Desc("the lobe cam reducer's design"));
+    a->Visit("material", &material, Field().Desc("the cams' and rollers' material (absent: steel)"));
+    a->Visit("measurements", &measurements,
+             Field().Required().MinItems(3, "at least 3 measurements (2 parameters are fitted)")
+                 .Desc("measured input torques under load"));
+    a->Visit("parameters", &parameters, Field().Desc("the fitted parameters' starts and bounds"));
+    a->Visit("analysis", &analysis, Field().Desc("the torque model's grid"));
+  }
+};
+
 /// What the study file says, parsed and validated.
 struct Study {
   std::string name;
@@ -34,8 +103,7 @@ struct Study {
   Material material;
   std::vector<Measurement> measurements;  ///< at least 3
   int angle_steps = 3600;
-  Parameter friction_coefficient{lcr::kPaperFrictionCoefficient, 0.0, 1.0};
-  Parameter drag_torque_Nm{0.0, 0.0, 10.0};
+  Parameter friction_coefficient, drag_torque_Nm;  ///< Input::Parameters' defaults
 };
 
 /// The fitted model at one measurement.

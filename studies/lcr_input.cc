@@ -9,38 +9,38 @@ namespace camopt::studies {
 
 namespace {
 
-lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning, bool allow_ratings) {
-  std::set<std::string> known = {"lobes", "rollers", "turret_radius_mm", "roller_diameter_mm", "roller_length_mm",
-                                    "cam_thickness_mm", "cutter_diameter_mm", "bore_diameter_mm"};
-  if (allow_crowning) known.insert("crowning");  // read by studies/lcr_contact_input.h
-  if (allow_ratings) known.insert({"dynamic_rating_N", "static_rating_N"});  // the roller bearing's C, C0
-  s.CheckKnownFields(known);
+// A side's design from its declared fields: the checks between them.
+lcr::CamSide<double> SideOf(const LcrSideInput& in, const Node& s) {
   lcr::CamSide<double> c;
-  c.lobes = s["lobes"].Integer(1);
-  c.rollers = s["rollers"].Integer(2);
+  c.lobes = in.lobes;
+  c.rollers = in.rollers;
   if (c.rollers <= c.lobes)
     s["rollers"].Fail("more rollers than lobes (" + std::to_string(c.lobes) + ")");
-  c.turret_radius = s["turret_radius_mm"].Positive();
-  c.roller_radius = s["roller_diameter_mm"].Positive() / 2;
+  c.turret_radius = in.turret_radius_mm;
+  c.roller_radius = in.roller_diameter_mm / 2;
   c.roller_length = PlausibleLength(s["roller_length_mm"], c.turret_radius, "the turret radius");
   c.cam_thickness = PlausibleLength(s["cam_thickness_mm"], c.turret_radius, "the turret radius");
-  // Read by some kinds only (geometry files, the cutter offset): a number > 0 wherever given.
-  for (const char* optional : {"cutter_diameter_mm", "bore_diameter_mm", "dynamic_rating_N", "static_rating_N"})
-    if (s.Has(optional)) s[optional].Positive();
   return c;
 }
 
-}  // namespace
+// A side of a kind that adds the crowning or the bearing ratings to the declared fields.
+lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning, bool allow_ratings) {
+  archive_detail::NameCollector names;
+  LcrSideInput in;
+  in.Serialize(&names);
+  std::set<std::string> known = names.names;
+  if (allow_crowning) known.insert("crowning");  // read by studies/lcr_contact_input.h
+  if (allow_ratings) known.insert({"dynamic_rating_N", "static_rating_N"});  // the roller bearing's C, C0
+  s.CheckKnownFields(known);
+  JsonReader reader(s);
+  in.Serialize(&reader);
+  // Read by the kinds with the bearing life: a number > 0 wherever given.
+  for (const char* optional : {"dynamic_rating_N", "static_rating_N"})
+    if (s.Has(optional)) s[optional].Positive();
+  return SideOf(in, s);
+}
 
-lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning, bool allow_bearing_ratings) {
-  if (allow_bearing_ratings)
-    node.CheckKnownFields({"eccentricity_mm", "input", "output", "eccentric_bearing"});
-  else
-    node.CheckKnownFields({"eccentricity_mm", "input", "output"});
-  lcr::Reducer<double> r;
-  r.eccentricity = node["eccentricity_mm"].Positive();
-  r.input = ParseSide(node["input"], allow_crowning, allow_bearing_ratings);
-  r.output = ParseSide(node["output"], allow_crowning, allow_bearing_ratings);
+lcr::Reducer<double> Checked(const lcr::Reducer<double>& r, const Node& node) {
   const auto problems = lcr::CheckDesign(r);
   if (!problems.empty()) {
     // "input.rollers" -> /reducer/input/rollers
@@ -50,6 +50,29 @@ lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning, bool al
     throw StudyError(node.file() + ": " + node.path() + "/" + path + ": " + problems.front().message);
   }
   return r;
+}
+
+}  // namespace
+
+lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node) {
+  lcr::Reducer<double> r;
+  r.eccentricity = in.eccentricity_mm;
+  r.input = SideOf(in.input, node["input"]);
+  r.output = SideOf(in.output, node["output"]);
+  return Checked(r, node);
+}
+
+lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning, bool allow_bearing_ratings) {
+  if (!allow_crowning && !allow_bearing_ratings) return ToReducer(Read<LcrReducerInput>(node), node);
+  if (allow_bearing_ratings)
+    node.CheckKnownFields({"eccentricity_mm", "input", "output", "eccentric_bearing"});
+  else
+    node.CheckKnownFields({"eccentricity_mm", "input", "output"});
+  lcr::Reducer<double> r;
+  r.eccentricity = node["eccentricity_mm"].Positive();
+  r.input = ParseSide(node["input"], allow_crowning, allow_bearing_ratings);
+  r.output = ParseSide(node["output"], allow_crowning, allow_bearing_ratings);
+  return Checked(r, node);
 }
 
 double ParseCutterDiameter(const Node& side, double roller_diameter) {

@@ -8,11 +8,51 @@
 
 #include "model/lcr/life.h"
 #include "model/lcr/reducer.h"
+#include "studies/archive.h"
 #include "studies/bearing_life_io.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
 
 namespace camopt::studies {
+
+/// One cam side of a lobe cam reducer as the study file gives it, declared once (studies/archive.h).
+struct LcrSideInput {
+  int lobes = 0, rollers = 0;
+  double turret_radius_mm = 0, roller_diameter_mm = 0, roller_length_mm = 0, cam_thickness_mm = 0;
+  std::optional<double> cutter_diameter_mm, bore_diameter_mm;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("lobes", &lobes, Field().Required().AtLeast(1).Desc("lobes of the cam"));
+    a->Visit("rollers", &rollers, Field().Required().AtLeast(2).Desc("rollers of the turret (more than the lobes)"));
+    a->Visit("turret_radius_mm", &turret_radius_mm,
+             Field().Required().Positive().Unit("mm").Desc("radius of the roller centres' circle"));
+    a->Visit("roller_diameter_mm", &roller_diameter_mm, Field().Required().Positive().Unit("mm").Desc("roller diameter"));
+    a->Visit("roller_length_mm", &roller_length_mm,
+             Field().Required().Positive().Unit("mm").Desc("roller length (1e-6 to 1e6 times the turret radius)"));
+    a->Visit("cam_thickness_mm", &cam_thickness_mm,
+             Field().Required().Positive().Unit("mm").Desc("cam thickness (1e-6 to 1e6 times the turret radius)"));
+    a->Visit("cutter_diameter_mm", &cutter_diameter_mm,
+             Field().Positive().Unit("mm").Desc("cutter of the cam profile (absent: the roller diameter)"));
+    a->Visit("bore_diameter_mm", &bore_diameter_mm, Field().Positive().Unit("mm").Desc("the cam's bore (absent: none)"));
+  }
+};
+
+/// A lobe cam reducer's design as the study file gives it (without crowning or bearing ratings).
+struct LcrReducerInput {
+  double eccentricity_mm = 0;
+  LcrSideInput input, output;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("eccentricity_mm", &eccentricity_mm, Field().Required().Positive().Unit("mm").Desc("eccentricity e"));
+    a->Visit("input", &input, Field().Required().Desc("the input cam and its rollers"));
+    a->Visit("output", &output, Field().Required().Desc("the output cam and its rollers"));
+  }
+};
+
+/// The design of a reducer read from `node` as LcrReducerInput: the checks between fields (more
+/// rollers than lobes, lengths on the turret's scale, lcr::CheckDesign) with ParseReducer's
+/// messages. @throws StudyError naming the JSON path.
+lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node);
 
 /// Reads {"eccentricity_mm", "input": {...}, "output": {...}}; each side has lobes, rollers,
 /// turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm. Checks the design

@@ -3,10 +3,10 @@
 namespace camopt::studies {
 
 Material ParseMaterial(const Node& node) {
-  Material m;
-  m.youngs_modulus_MPa = node["youngs_modulus_GPa"].Positive() * 1000.0;
-  m.poisson_ratio = node["poisson_ratio"].NumberIn(0.0, 0.4999);
-  return m;
+  MaterialInput in;
+  JsonReader reader(node);  // the fields alone: the caller checks the object's known fields
+  in.Serialize(&reader);
+  return in.ToMaterial();
 }
 
 }  // namespace camopt::studies

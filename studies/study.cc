@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "studies/archive.h"
 #include "studies/provenance.h"
 #include "studies/report.h"
 #include "studies/schemas.h"
@@ -415,11 +416,17 @@ void RunStudyFile(const std::string& file, const std::string& out_dir, const Run
 }
 
 const std::string& StudySchema(const std::string& kind) {
+  // A kind declared once (studies/archive.h) has its schema emitted from the declaration.
+  if (const std::string* declared = DeclaredSchema(kind)) return *declared;
   const auto& schemas = EmbeddedSchemas();
   const auto it = schemas.find(kind);
   if (it != schemas.end()) return it->second;
+  std::set<std::string> kinds;
+  for (const auto& [k, text] : schemas) kinds.insert(k);
+  for (const auto& k : StudyKinds())
+    if (DeclaredSchema(k)) kinds.insert(k);
   std::string known;
-  for (const auto& [k, text] : schemas) known += (known.empty() ? "" : ", ") + k;
+  for (const auto& k : kinds) known += (known.empty() ? "" : ", ") + k;
   throw StudyError("schema " + kind + ": expected a known study kind (" + known + "), found " + kind);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <numeric>
 
 #include "objectives/lcr_min_size.h"
@@ -34,20 +35,18 @@ double Size(const json& o, const char* key, double fallback) {
 
 size_t Count(const json& v) { return v.is_array() || v.is_object() ? v.size() : 0; }
 
-std::string Num(double v) {
+using Term = WorkTerm;
+std::string Num(double v) { return WorkNumber(v); }
+
+}  // namespace
+
+std::string WorkNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
 }
 
-// One term of an estimate: the work it adds and the path that sets it.
-struct Term {
-  double work;
-  std::string path;
-  std::string detail;
-};
-
-WorkEstimate Largest(std::vector<Term> terms, double cap, std::string unit, double bytes_per_unit) {
+WorkEstimate LargestTerm(std::vector<WorkTerm> terms, double cap, std::string unit, double bytes_per_unit) {
   WorkEstimate e;
   e.cap = cap;
   e.unit = std::move(unit);
@@ -64,6 +63,12 @@ WorkEstimate Largest(std::vector<Term> terms, double cap, std::string unit, doub
   return e;
 }
 
+namespace {
+
+WorkEstimate Largest(std::vector<Term> terms, double cap, std::string unit, double bytes_per_unit) {
+  return LargestTerm(std::move(terms), cap, std::move(unit), bytes_per_unit);
+}
+
 // Rollers and lobes of both cams of an LCR "reducer" object (defaults: a typical reducer).
 void LcrCounts(const json& reducer, double& rollers, double& lobes) {
   rollers = Size(Sub(reducer, "input"), "rollers", 13) + Size(Sub(reducer, "output"), "rollers", 15);
@@ -76,23 +81,19 @@ double GridCellsOr(const json& g, double fallback) {
   return std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>());
 }
 
-WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
+WorkEstimate LcrAnalysis(const json& s, double factor) {
   const json& a = Sub(s, "analysis");
   double rollers, lobes;
   LcrCounts(Sub(s, "reducer"), rollers, lobes);
   const double steps = Size(a, "angle_steps", 3600);
   std::vector<Term> terms = {{steps * rollers, "/analysis/angle_steps",
                               Num(steps) + " angle steps × " + Num(rollers) + " rollers"}};
-  if (!fit) {
-    const double points = Size(a, "profile_points", 3600);
-    terms.push_back({points * lobes, "/analysis/profile_points",
-                     Num(points) + " profile points × " + Num(lobes) + " lobes"});
-  } else {
-    terms.push_back({double(Count(Sub(s, "measurements"))), "/measurements", "measurements"});
-  }
+  const double points = Size(a, "profile_points", 3600);
+  terms.push_back({points * lobes, "/analysis/profile_points",
+                   Num(points) + " profile points × " + Num(lobes) + " lobes"});
   const json& contact = Sub(s, "contact");
   const json& model = Sub(contact, "model");
-  if (!fit && model.is_string() && model.get<std::string>() != "line") {
+  if (model.is_string() && model.get<std::string>() != "line") {
     // The finite-length contact: per cam, a table of 65 slices solves (13 forces × 5 radii) and 4
     // exact ones, a solve of N slices costing about (N/40)³ of a 40-slice one (≈0.6 ms, about
     // 1e4 roller contact evaluations); the half_space model adds 4 DC-FFT solves per cam of about
@@ -105,7 +106,7 @@ WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
       terms.push_back({2 * 4 * cells * 20, "/contact/grid", "2 cams × 4 half_space solves on " + Num(cells) + " cells"});
     }
   }
-  if (!fit && s.contains("tolerances")) {
+  if (s.contains("tolerances")) {
     // Transmission error (issue 18): per Monte-Carlo sample, angle and roller about two contact
     // evaluations' time (gap foot point + compliant solves, measured 6 µs per roller and angle).
     const json& mc = Sub(s, "monte_carlo");
@@ -114,7 +115,7 @@ WorkEstimate LcrAnalysis(const json& s, double factor, bool fit) {
                      Num(samples) + " Monte-Carlo samples × " + Num(mc_steps) + " angles × " + Num(rollers) +
                          " rollers × 2"});
   }
-  if (!fit && (s.contains("duty_cycle") || Sub(Sub(s, "load"), "input_speed_rpm").is_number())) {
+  if ((s.contains("duty_cycle") || Sub(Sub(s, "load"), "input_speed_rpm").is_number())) {
     // Bearing life (docs/life.md): per duty-cycle line, one force analysis per sample over each
     // bearing's load period (model/lcr/life.h): an input revolution (input roller), 2π m_A n_B/(n_A m_B)
     // (output roller) and the eccentric's 2π lcm(m_A, m_B)/(n_A m_B), a whole number of revolutions
@@ -162,39 +163,6 @@ WorkEstimate Rigidity(const json& s, double factor, const std::string& file) {
     }
   }
   return Largest(terms, 2e6 * factor, "roller load-sharing solves", 200);
-}
-
-WorkEstimate Globoidal(const json& s, double factor) {
-  std::vector<Term> terms;
-  const json& d = Sub(s, "dynamics");
-  // The dynamics run on CVODE with error control: about 5000 accepted steps per cam revolution
-  // at the default tolerance (docs/globoidal.md), never more than max_steps per speed.
-  constexpr double kStepsPerRevolution = 5000, kStepsPerSecond = 1e4;
-  const double end = Size(d, "end_time_s", 0);
-  const double max_steps = Size(d, "max_steps", 2e7);
-  const json& speeds = Sub(d, "cam_speeds_rpm");
-  double steps = 0;
-  if (speeds.is_array())
-    for (const json& v : speeds) {
-      const double rpm = v.is_number() ? v.get<double>() : 0;
-      if (!(rpm >= 0.01 && rpm <= 1e5)) continue;  // outside the parser's range: its message names it
-      const double revolutions = end > 0 ? end * rpm / 60.0 : 1.0;
-      // A slow cam under a light load: the steps follow the simulated time, not the revolutions
-      // (the paper cam at 1 N·m: 6.3k steps per simulated second from 1 to 0.1 rpm).
-      const double seconds = end > 0 ? end : 60.0 / rpm;
-      steps += std::min(std::max(revolutions * kStepsPerRevolution, seconds * kStepsPerSecond), max_steps);
-    }
-  terms.push_back({steps, "/dynamics",
-                   Num(double(Count(speeds))) + " cam speeds, the larger of " + Num(kStepsPerRevolution) +
-                       " solver steps per revolution and " + Num(kStepsPerSecond) + " per simulated second"});
-  const json& a = Sub(s, "analysis");
-  const double angle = Size(a, "angle_steps", 720), axis = Size(a, "axis_steps", 7);
-  terms.push_back({angle * axis, "/analysis/angle_steps",
-                   Num(angle) + " angle steps × " + Num(axis) + " axis steps"});
-  const json& x = Sub(s, "export");
-  const double xa = Size(x, "angle_steps", 360), xx = Size(x, "axis_steps", 6);
-  terms.push_back({xa * xx, "/export/angle_steps", Num(xa) + " × " + Num(xx) + " surface points"});
-  return Largest(terms, 1e7 * factor, "time steps and surface points", 150);
 }
 
 double GridCells(const json& analysis) {
@@ -435,13 +403,25 @@ WorkEstimate LcrCrowningTuning(const json& s, double factor) {
 
 }  // namespace
 
+namespace {
+std::map<std::string, WorkEstimator>& EstimatorRegistry() {
+  static std::map<std::string, WorkEstimator> registry;
+  return registry;
+}
+}  // namespace
+
+bool RegisterWorkEstimate(const std::string& kind, WorkEstimator estimator) {
+  EstimatorRegistry()[kind] = std::move(estimator);
+  return true;
+}
+
 WorkEstimate EstimateWork(const json& study, const std::string& file, double factor) {
   const json& kind_json = Sub(study, "study");
   const std::string kind = kind_json.is_string() ? kind_json.get<std::string>() : "";
-  if (kind == "lcr_analysis") return LcrAnalysis(study, factor, false);
-  if (kind == "lcr_friction_fit") return LcrAnalysis(study, factor, true);
+  if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
+    return it->second(study, file, factor);
+  if (kind == "lcr_analysis") return LcrAnalysis(study, factor);
   if (kind == "transmission_rigidity") return Rigidity(study, factor, file);
-  if (kind == "globoidal_cam") return Globoidal(study, factor);
   if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);

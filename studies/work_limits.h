@@ -5,9 +5,10 @@
 // work and well under 2 GB); --max-work-factor F multiplies every cap for a bigger machine.
 //
 // Caps per study kind (work units, with F = 1):
-//   lcr_analysis, lcr_friction_fit  angle_steps × rollers + profile_points × lobes  ≤ 2e7
+//   lcr_analysis                    angle_steps × rollers + profile_points × lobes  ≤ 2e7
+//   lcr_friction_fit                angle_steps × rollers + measurements  ≤ 2e7 (in the kind's file)
 //   transmission_rigidity           elements ≤ 1000; Σ reducer angle_steps × rollers × 2 ≤ 2e6
-//   globoidal_cam                   Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7
+//   globoidal_cam (in the kind's file) Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7
 //   cycloid_ltca                    runs (2.25 with the error estimate) × crank angles (a list,
 //                                   crank_angle_steps or crank_angles_per_mesh_period) × rollers × cells ≤ 5e7
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
@@ -27,7 +28,9 @@
 //   every kind                      estimated memory ≤ 2 GB
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -49,6 +52,25 @@ constexpr double kMaxMemoryBytes = 2.0e9;
 /// Estimates the work of a study from its raw JSON (before the kind parses it; values of the wrong
 /// type count as their defaults, the kind reports them). Unknown kinds estimate zero.
 WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor);
+
+/// The estimate of a kind that reads its declared input (studies/archive.h): the study as read,
+/// defaults filled in. It may throw the StudyError its reader throws (the kind's parse would refuse
+/// the study with the same message).
+using WorkEstimator =
+    std::function<WorkEstimate(const nlohmann::json& study, const std::string& file, double factor)>;
+/// Registers a kind's estimate (EstimateWork then calls it); returns true (for a static).
+bool RegisterWorkEstimate(const std::string& kind, WorkEstimator estimator);
+
+/// One term of an estimate: the work it adds, the path that sets it and how it was formed.
+struct WorkTerm {
+  double work;
+  std::string path;
+  std::string detail;
+};
+/// The estimate of a sum of terms, named by its largest one; memory is work × bytes_per_unit.
+WorkEstimate LargestTerm(std::vector<WorkTerm> terms, double cap, std::string unit, double bytes_per_unit);
+/// A number for an estimate's text ("%.3g").
+std::string WorkNumber(double v);
 
 /// Throws a StudyError "FILE: PATH: the study needs about X UNIT (DETAIL), more than the cap of Y;
 /// raise the caps with --max-work-factor" when the work or the memory is over its cap × factor.

@@ -1,6 +1,8 @@
-// The hand-kept JSON Schemas of studies/schema/ and the C++ parsers of studies/ accept the same
+// The JSON Schemas `camopt schema KIND` prints and the C++ parsers of studies/ accept the same
 // studies (docs/studies.md "Keeping the schemas in step with the parsers", docs/reliability.md
-// item 13). For every study kind, studies are generated from the kind's schema, starting from each
+// item 13). A kind declared once (studies/archive.h, listed in kDeclaredKinds below) has its schema
+// emitted from the declaration; the others have a hand-kept file in studies/schema/. For every study
+// kind, studies are generated from the kind's schema, starting from each
 // example of that kind in studies/examples/: every optional property the schema declares added
 // with a valid value, every enum value, every numeric and item-count bound (at the bound and just
 // outside it), wrong types, a removed property and an unknown one, and the fields the parser
@@ -22,9 +24,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
+#include "test_util.h"
 
 namespace camopt {
 namespace {
@@ -32,6 +36,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using studies::Node;
+using testing::ReadFile;
+using testing::RunCamopt;
+using testing::TempDir;
+using testing::WriteFile;
 
 // ---------------------------------------------------------------------------------------------
 // A JSON Schema validator for the keywords the camopt schemas use: $ref (to #/$defs/…), type,
@@ -420,6 +428,8 @@ const std::vector<CrossField> kCrossField = {
     {"globoidal_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"globoidal_cam", "/contact/contact_arm_mm", "expected a length in [l₂, l₁]",
      "the contact arm lies on the roller, [l₂, l₁] from the cam geometry"},
+    {"globoidal_cam", "/export/", "angle_steps × axis_steps must stay below 4e6",
+     "the exported surface points: angle_steps × axis_steps below 4e6"},
     {"globoidal_cam", "/dynamics/max_steps", "the run needs at least",
      "max_steps against the speeds and end_time_s (0.5° of cam a step)"},
     {"lcr_analysis", "/reducer/", "rollers − lobes", "rollers = lobes + 1 (a difference above 1 self-crosses)"},
@@ -430,6 +440,7 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_friction_fit", "/reducer/", "rollers − lobes", "rollers = lobes + 1"},
     {"lcr_friction_fit", "/reducer/", "more rollers than lobes", "rollers > lobes"},
     {"lcr_friction_fit", "/parameters/", "with lower < upper", "bounds [lower, upper] need lower < upper"},
+    {"lcr_friction_fit", "/reducer/", "no common divisor", "lobes and rollers without a common divisor"},
     {"lcr_min_size", "/load/overload_torque_Nm", ">= the target's output_torque_Nm", "overload >= design torque"},
     {"lcr_min_size", "/search/max_lobes", "no lobe/roller combination", "the speed ratio must be reachable"},
     {"lcr_min_size", "/target/speed_ratio", "no lobe/roller combination", "the speed ratio must be reachable"},
@@ -592,6 +603,169 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
   EXPECT_TRUE(disagreements.empty()) << disagreements.size() << " disagreements in " << cases
                                      << " generated studies:" << all.str();
   EXPECT_GT(cases, 1000u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
+const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit"};
+
+// The examples of a kind in studies/examples/, sorted.
+std::vector<fs::path> ExamplesOf(const std::string& kind) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(fs::path(CAMOPT_SOURCE_DIR) / "studies" / "examples"))
+    if (e.path().extension() == ".json") {
+      std::ifstream in(e.path());
+      const json j = json::parse(in);
+      if (j.is_object() && j.value("study", "") == kind) out.push_back(e.path());
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Every property of a schema (and of its nested objects and array items), by JSON path.
+void Properties(const json& schema, const std::string& path, std::vector<std::pair<std::string, json>>& out) {
+  if (schema.contains("properties"))
+    for (auto it = schema["properties"].begin(); it != schema["properties"].end(); ++it) {
+      out.push_back({path + "/" + it.key(), it.value()});
+      Properties(it.value(), path + "/" + it.key(), out);
+    }
+  if (schema.contains("items")) Properties(schema["items"], path + "/items", out);
+}
+
+TEST(SchemaParserAgreement, DeclaredKindsHaveOneSchemaEmittedFromTheDeclaration) {
+  for (const std::string& kind : kDeclaredKinds) {
+    SCOPED_TRACE(kind);
+    const std::string* emitted = studies::DeclaredSchema(kind);
+    ASSERT_NE(emitted, nullptr) << "not declared (CAMOPT_REGISTER_DECLARED_KIND)";
+    EXPECT_EQ(studies::StudySchema(kind), *emitted);
+    EXPECT_FALSE(fs::exists(fs::path(CAMOPT_SOURCE_DIR) / "studies" / "schema" / (kind + ".schema.json")))
+        << "a hand-kept schema beside the declaration";
+    const auto dir = TempDir("schema-" + kind);
+    const auto cli = RunCamopt("schema " + kind + " > " + (dir / "s.json").string());
+    EXPECT_EQ(cli.exit_code, 0);
+    EXPECT_EQ(ReadFile(dir / "s.json"), *emitted);
+    // A description for every field (its unit in it where the field has one).
+    std::vector<std::pair<std::string, json>> props;
+    Properties(json::parse(*emitted), "", props);
+    EXPECT_GT(props.size(), 10u);
+    for (const auto& [path, p] : props)
+      EXPECT_TRUE(p.contains("description") || p.contains("const")) << path << ": no description";
+  }
+}
+
+// docs/studies.md shows each declared kind's fields as `camopt schema KIND --table` prints them.
+TEST(SchemaParserAgreement, DeclaredKindsFieldTablesInTheDocsAreTheEmittedOnes) {
+  const std::string docs = ReadFile(fs::path(CAMOPT_SOURCE_DIR) / "docs" / "studies.md");
+  for (const std::string& kind : kDeclaredKinds) {
+    const std::string table = studies::SchemaFieldTable(nlohmann::ordered_json::parse(studies::StudySchema(kind)));
+    EXPECT_NE(docs.find("## " + kind + "\n"), std::string::npos) << kind;
+    EXPECT_NE(docs.find(table), std::string::npos)
+        << kind << ": docs/studies.md does not have the table of `camopt schema " << kind << " --table`:\n" << table;
+  }
+}
+
+// Every property with a schema `default`, added where the study does not give it (inside objects
+// the study gives, and in optional objects it leaves out, which are added whole).
+int FillDefaults(const Validator& v, const json& schema, json& value) {
+  const json& s = v.Resolve(schema);
+  if (!value.is_object() || !s.contains("properties")) return 0;
+  int filled = 0;
+  for (auto it = s["properties"].begin(); it != s["properties"].end(); ++it) {
+    const json& p = v.Resolve(it.value());
+    if (!value.contains(it.key())) {
+      if (p.contains("default")) {
+        value[it.key()] = p["default"];
+        ++filled;
+      } else if (p.value("type", json()) == "object") {
+        json o = json::object();
+        if (FillDefaults(v, p, o) > 0) {
+          filled += FillDefaults(v, p, o);
+          value[it.key()] = o;
+        }
+      }
+    } else {
+      filled += FillDefaults(v, p, value[it.key()]);
+    }
+  }
+  return filled;
+}
+
+// Every property with a schema `default` removed (recursively).
+void StripDefaults(const Validator& v, const json& schema, json& value) {
+  const json& s = v.Resolve(schema);
+  if (!value.is_object() || !s.contains("properties")) return;
+  for (auto it = s["properties"].begin(); it != s["properties"].end(); ++it) {
+    if (!value.contains(it.key())) continue;
+    if (v.Resolve(it.value()).contains("default")) value.erase(it.key());
+    else StripDefaults(v, it.value(), value[it.key()]);
+  }
+}
+
+// `a` with only the members of objects that `b` has (recursively).
+json Restrict(const json& a, const json& b) {
+  if (!a.is_object() || !b.is_object()) return a;
+  json out = json::object();
+  for (auto it = b.begin(); it != b.end(); ++it)
+    if (a.contains(it.key())) out[it.key()] = Restrict(a[it.key()], it.value());
+  return out;
+}
+
+// The defaults the schema states are the values the parser uses: each example without the fields
+// that have a default, and the same with every default written out, are accepted and read (the
+// declaration's echo: every field as the kind uses it) to the same values.
+TEST(SchemaParserAgreement, DeclaredDefaultsAreTheParsersDefaults) {
+  for (const std::string& kind : kDeclaredKinds) {
+    const json schema = json::parse(studies::StudySchema(kind));
+    const Validator validator(schema);
+    const studies::DeclaredEcho echo = studies::FindDeclaredEcho(kind);
+    ASSERT_NE(echo, nullptr) << kind;
+    const auto examples = ExamplesOf(kind);
+    ASSERT_FALSE(examples.empty()) << kind;
+    for (const auto& file : examples) {
+      SCOPED_TRACE(file.filename().string());
+      std::ifstream in(file);
+      const json example = json::parse(in);
+      json bare = example;
+      StripDefaults(validator, schema, bare);
+      json filled = bare;
+      const int n = FillDefaults(validator, schema, filled);
+      EXPECT_GT(n, 0);
+      EXPECT_EQ(validator.Check(filled), "");
+      EXPECT_NO_THROW(studies::CheckStudy(bare, file.string()));
+      EXPECT_NO_THROW(studies::CheckStudy(filled, file.string()));
+      bare = json::parse(echo(bare, file.string()).dump());
+      const json full = json::parse(echo(filled, file.string()).dump());
+      // Fields left optional (absent: a meaning of their own) appear in the full echo only.
+      EXPECT_EQ(Restrict(full, bare), bare);
+    }
+  }
+}
+
+// Through the command line: every generated study the schema refuses is refused with exit code 2
+// and one line naming the file and the JSON path (the parser's checks run before any work).
+TEST(SchemaParserAgreement, DeclaredKindsRefuseWhatTheSchemaRefusesWithExit2) {
+  int refused = 0;
+  for (const std::string& kind : kDeclaredKinds) {
+    const json schema = json::parse(studies::StudySchema(kind));
+    const Validator validator(schema);
+    const fs::path example_file = ExamplesOf(kind).front();
+    std::ifstream in(example_file);
+    const json example = json::parse(in);
+    std::vector<Case> generated;
+    Generator(validator, kind, generated).Walk(example, "", schema);
+    const auto dir = TempDir("declared-cli-" + kind);
+    for (const Case& c : generated) {
+      if (validator.Check(c.study).empty()) continue;
+      const fs::path file = dir / "study.json";
+      WriteFile(file, c.study.dump());
+      const auto r = RunCamopt("run " + file.string() + " --quiet --out " + (dir / "out").string());
+      EXPECT_EQ(r.exit_code, 2) << c.what << "\n" << r.stderr_text;
+      EXPECT_EQ(r.stderr_text.rfind("camopt: error: " + file.string() + ": /", 0), 0u) << c.what << "\n" << r.stderr_text;
+      EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << c.what << "\n" << r.stderr_text;
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 50);
 }
 
 }  // namespace

@@ -96,7 +96,9 @@ class Catalogue(unittest.TestCase):
         for k in kinds:
             s = camopt.schema(k)
             self.assertEqual(s["properties"]["study"]["const"], k)
-            self.assertEqual(s, json.loads((helpers.SCHEMAS / f"{k}.schema.json").read_text()))
+            hand_kept = helpers.SCHEMAS / f"{k}.schema.json"  # the others are emitted from their declaration
+            if hand_kept.exists():
+                self.assertEqual(s, json.loads(hand_kept.read_text()))
         with self.assertRaises(camopt.StudyError):
             camopt.schema("no_such_kind")
         self.assertRegex(camopt.__version__, r"^\d+\.\d+\.\d+$")

@@ -1,0 +1,195 @@
+#include "studies/archive.h"
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+
+namespace camopt::studies {
+
+namespace archive_detail {
+
+std::string NumberText(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+std::string BoundText(const Field::Bound& b, bool integer) {
+  if (!b.expected.empty()) return b.expected;
+  const std::string a = integer ? "a whole number " : "a number ";
+  const auto num = [&](double x) {
+    return integer ? std::to_string(static_cast<long long>(x)) : NumberText(x);
+  };
+  if (b.lo && b.hi) return a + "in [" + num(*b.lo) + ", " + num(*b.hi) + "]";
+  if (b.lo) return a + (b.lo_open ? "> " : ">= ") + num(*b.lo);
+  if (b.hi) return a + (b.hi_open ? "< " : "<= ") + num(*b.hi);
+  return integer ? "a whole number" : "a number";
+}
+
+std::string OneOfText(const std::vector<std::string>& values) {
+  if (values.size() == 1) return "\"" + values[0] + "\"";
+  if (values.size() == 2) return "\"" + values[0] + "\" or \"" + values[1] + "\"";
+  std::string text = "one of ";
+  for (size_t i = 0; i < values.size(); ++i) text += (i ? ", \"" : "\"") + values[i] + "\"";
+  return text;
+}
+
+}  // namespace archive_detail
+
+namespace {
+
+bool Passes(const Field::Bound& b, double v) {
+  if (b.lo && !(b.lo_open ? v > *b.lo : v >= *b.lo)) return false;
+  if (b.hi && !(b.hi_open ? v < *b.hi : v <= *b.hi)) return false;
+  return true;
+}
+
+// Node::Integer's largest whole number.
+constexpr double kLargestInteger = 1e9;
+
+}  // namespace
+
+double JsonReader::ReadNumber(const Node& n, const Field& f, bool integer) {
+  using archive_detail::BoundText;
+  const nlohmann::json& j = n.json();
+  const std::string first = f.bounds.empty() ? BoundText({}, integer) : BoundText(f.bounds[0], integer);
+  if (!j.is_number()) n.Fail(first);
+  const double v = j.get<double>();
+  if (integer && (!(std::floor(v) == v) || v > kLargestInteger)) n.Fail(first);
+  for (const Field::Bound& b : f.bounds)
+    if (!Passes(b, v)) n.Fail(BoundText(b, integer));
+  if (!std::isfinite(v)) n.Fail("a finite number");
+  return v;
+}
+
+std::string JsonReader::ReadString(const Node& n, const Field& f) {
+  const std::string s = n.String();
+  if (f.constant && s != *f.constant) n.Fail("\"" + *f.constant + "\"");
+  if (!f.one_of.empty() && std::find(f.one_of.begin(), f.one_of.end(), s) == f.one_of.end())
+    n.Fail(f.one_of_expected.empty() ? archive_detail::OneOfText(f.one_of) : f.one_of_expected);
+  return s;
+}
+
+void SchemaEmitter::NumberKeywords(const Field& f, bool integer, nlohmann::ordered_json& s) {
+  // The tightest of the bounds on each side (an open bound wins a tie).
+  std::optional<double> lo, hi;
+  bool lo_open = false, hi_open = false;
+  for (const Field::Bound& b : f.bounds) {
+    if (b.lo && (!lo || *b.lo > *lo || (*b.lo == *lo && b.lo_open))) lo = b.lo, lo_open = b.lo_open;
+    if (b.hi && (!hi || *b.hi < *hi || (*b.hi == *hi && b.hi_open))) hi = b.hi, hi_open = b.hi_open;
+  }
+  if (integer && (!hi || *hi > kLargestInteger)) hi = kLargestInteger, hi_open = false;
+  const auto value = [&](double x) {
+    // Whole bounds as whole numbers ("minimum": 0, not 0.0), which JSON Schema reads alike.
+    return std::floor(x) == x && std::abs(x) < 1e15 ? nlohmann::ordered_json(static_cast<long long>(x))
+                                         : nlohmann::ordered_json(x);
+  };
+  if (lo) s[lo_open ? "exclusiveMinimum" : "minimum"] = value(*lo);
+  if (hi) s[hi_open ? "exclusiveMaximum" : "maximum"] = value(*hi);
+}
+
+namespace {
+
+std::string Code(const nlohmann::ordered_json& v) { return "`" + v.dump() + "`"; }
+
+// What a field's schema accepts, in words: "number > 0", "whole number in [36, 200000]", …
+std::string Accepts(const nlohmann::ordered_json& s) {
+  using archive_detail::NumberText;
+  if (s.contains("const")) return Code(s["const"]);
+  if (s.contains("enum")) {
+    std::string text;
+    for (size_t i = 0; i < s["enum"].size(); ++i)
+      text += (i == 0 ? "" : i + 1 == s["enum"].size() ? " or " : ", ") + Code(s["enum"][i]);
+    return text;
+  }
+  std::string type;
+  const nlohmann::ordered_json t = s.value("type", nlohmann::ordered_json());
+  const auto word = [](const std::string& name) {
+    return name == "integer" ? std::string("whole number") : name == "boolean" ? std::string("true or false") : name;
+  };
+  if (t.is_string()) type = word(t.get<std::string>());
+  for (size_t i = 0; t.is_array() && i < t.size(); ++i) type += (i ? " or " : "") + word(t[i].get<std::string>());
+  if (t == "array" && s.contains("items")) {
+    const std::string item = Accepts(s["items"]);
+    type = "array of " + (s["items"].contains("properties") ? std::string("objects") : item);
+    if (s.contains("minItems") && s.contains("maxItems") && s["minItems"] == s["maxItems"])
+      type = "array of " + s["minItems"].dump() + " × " + item;
+    else if (s.contains("minItems"))
+      type += ", at least " + s["minItems"].dump();
+  }
+  const bool lo = s.contains("minimum") || s.contains("exclusiveMinimum");
+  // A whole number's cap of 1e9 (every one has it) is left out of the words.
+  const bool hi = (s.contains("maximum") && !(t == "integer" && s["maximum"] == kLargestInteger)) ||
+                  s.contains("exclusiveMaximum");
+  const auto num = [&](const char* k) { return NumberText(s[k].get<double>()); };
+  if (lo && hi) {
+    type += " in " + std::string(s.contains("minimum") ? "[" + num("minimum") : "(" + num("exclusiveMinimum")) +
+            ", " + (s.contains("maximum") ? num("maximum") + "]" : num("exclusiveMaximum") + ")");
+  } else if (lo) {
+    type += s.contains("minimum") ? " >= " + num("minimum") : " > " + num("exclusiveMinimum");
+  } else if (hi) {
+    type += s.contains("maximum") ? " <= " + num("maximum") : " < " + num("exclusiveMaximum");
+  }
+  return type;
+}
+
+void TableRows(const nlohmann::ordered_json& schema, const std::string& prefix, std::string& out) {
+  if (!schema.contains("properties")) return;
+  const nlohmann::ordered_json required = schema.value("required", nlohmann::ordered_json::array());
+  for (auto it = schema["properties"].begin(); it != schema["properties"].end(); ++it) {
+    const nlohmann::ordered_json& p = it.value();
+    const std::string path = prefix + it.key();
+    std::string accepts = Accepts(p);
+    if (std::find(required.begin(), required.end(), it.key()) != required.end()) accepts += ", required";
+    else if (p.contains("default")) accepts += ", optional (" + p["default"].dump() + ")";
+    else if (!p.contains("const")) accepts += ", optional";
+    std::string meaning = p.value("description", "");
+    for (char& c : meaning)
+      if (c == '|') c = '/';
+    out += "| `" + path + "` | " + accepts + " | " + meaning + " |\n";
+    TableRows(p, path + ".", out);
+    if (p.contains("items")) TableRows(p["items"], path + "[i].", out);
+  }
+}
+
+}  // namespace
+
+std::string SchemaFieldTable(const nlohmann::ordered_json& schema) {
+  std::string out = "| field | accepts | meaning |\n|---|---|---|\n";
+  TableRows(schema, "", out);
+  return out;
+}
+
+namespace {
+struct DeclaredKind {
+  std::string (*emit_schema)();
+  DeclaredEcho echo;
+};
+std::map<std::string, DeclaredKind>& DeclaredRegistry() {
+  static std::map<std::string, DeclaredKind> registry;
+  return registry;
+}
+}  // namespace
+
+bool RegisterDeclaredKind(const std::string& kind, std::string (*emit_schema)(), DeclaredEcho echo) {
+  DeclaredRegistry()[kind] = {emit_schema, echo};
+  return true;
+}
+
+DeclaredEcho FindDeclaredEcho(const std::string& kind) {
+  const auto it = DeclaredRegistry().find(kind);
+  return it == DeclaredRegistry().end() ? nullptr : it->second.echo;
+}
+
+const std::string* DeclaredSchema(const std::string& kind) {
+  static std::map<std::string, std::string> texts;  // emitted once per kind
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto it = DeclaredRegistry().find(kind);
+  if (it == DeclaredRegistry().end()) return nullptr;
+  auto [text, fresh] = texts.try_emplace(kind);
+  if (fresh) text->second = it->second.emit_schema();
+  return &text->second;
+}
+
+}  // namespace camopt::studies

@@ -1,0 +1,433 @@
+// One declaration per study kind: a struct names each of its fields once, with its unit, default,
+// bounds and description, in a `Serialize` member that archives walk (the pattern of Drake's
+// `common/yaml/yaml_io.h` and `common/name_value.h`; OpenMDAO's `options.declare(default, types,
+// lower, upper, desc)` for what a field carries):
+//
+//   struct Load {
+//     double turret_torque_Nm = 0.0;
+//     double turret_inertia_kgm2 = 0.01;
+//     template <typename Archive>
+//     void Serialize(Archive* a) {
+//       a->Visit("turret_torque_Nm", &turret_torque_Nm, Field().Desc("load on the turret").Unit("N·m"));
+//       a->Visit("turret_inertia_kgm2", &turret_inertia_kgm2, Field().Positive().Unit("kg·m²"));
+//     }
+//   };
+//
+// Three archives walk a declaration:
+//   - Read (JsonReader): the study file into the struct, with the messages of `Node` (file, JSON
+//     path, expected, found) and its refusal of unknown fields (Node::CheckKnownFields), checked
+//     before any field of the object is read;
+//   - EmitSchema (SchemaEmitter): the JSON Schema (draft 2020-12) of the struct, a `description`
+//     and a `default` for every field that has one, the bounds, enums, `required`,
+//     `"additionalProperties": false`;
+//   - WriteJson (JsonWriter): the struct back to JSON (an echo of the study as read, defaults
+//     filled in).
+// Defaults are the struct's initialisers; a field marked Required() has none. A std::optional
+// member is absent when the file does not give it (Field::Default documents what absence means).
+// Checks that span fields stay code, one function per kind, run after Read.
+//
+// Supported member types: double, int, bool, std::string (with OneOf: an enum; with Const: a
+// constant), a struct with its own Serialize, std::optional of any of these, std::vector of any of
+// these, std::array of numbers, and nlohmann::json for a value read by shared code (its schema given
+// with Field::Schema).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studies/input.h"
+
+namespace camopt::studies {
+
+/// What a declared field accepts and how it is documented, besides its C++ type. Built with
+/// chained calls: `Field().Required().Positive().Unit("mm").Desc("…")`.
+///
+/// Numbers are checked in the order their bounds were added; the first bound's `expected` text is
+/// also the message for a value of the wrong type. Without a text of its own a bound says what
+/// Node says: "a number > 0", "a number >= 0", "a number in [lo, hi]", "a whole number >= n",
+/// "a whole number <= n". An integer field needs a lower bound (AtLeast) first, as Node::Integer,
+/// and is at most 1e9.
+class Field {
+ public:
+  /// One check of a number: lo < x (lo_open) or lo <= x, and x < hi (hi_open) or x <= hi.
+  struct Bound {
+    std::optional<double> lo, hi;
+    bool lo_open = false, hi_open = false;
+    std::string expected;  ///< the message; empty: the standard text for the bound
+  };
+
+  /// What the field is, for the schema's `description` (a sentence fragment; the unit is added).
+  Field& Desc(std::string text) { desc = std::move(text); return *this; }
+  /// The unit of the number (also in the field's name): "[UNIT]" ends the description.
+  Field& Unit(std::string u) { unit = std::move(u); return *this; }
+  /// The file must give the field (no default; "missing required field").
+  Field& Required() { required = true; return *this; }
+  /// x > 0 ("a number > 0").
+  Field& Positive(std::string expected = "") { return Above(0.0, std::move(expected)); }
+  /// x >= 0 ("a number >= 0").
+  Field& NonNegative(std::string expected = "") { return AtLeast(0.0, std::move(expected)); }
+  /// x > lo.
+  Field& Above(double lo, std::string expected = "") {
+    bounds.push_back({lo, std::nullopt, true, false, std::move(expected)});
+    return *this;
+  }
+  /// x >= lo (for an integer: "a whole number >= lo", and whole).
+  Field& AtLeast(double lo, std::string expected = "") {
+    bounds.push_back({lo, std::nullopt, false, false, std::move(expected)});
+    return *this;
+  }
+  /// x < hi.
+  Field& Below(double hi, std::string expected = "") {
+    bounds.push_back({std::nullopt, hi, false, true, std::move(expected)});
+    return *this;
+  }
+  /// x <= hi.
+  Field& AtMost(double hi, std::string expected = "") {
+    bounds.push_back({std::nullopt, hi, false, false, std::move(expected)});
+    return *this;
+  }
+  /// lo <= x <= hi, one check ("a number in [lo, hi]").
+  Field& In(double lo, double hi, std::string expected = "") {
+    bounds.push_back({lo, hi, false, false, std::move(expected)});
+    return *this;
+  }
+  /// A string from a list (the schema's `enum`); the message names them, or is `expected`.
+  Field& OneOf(std::vector<std::string> values, std::string expected = "") {
+    one_of = std::move(values);
+    one_of_expected = std::move(expected);
+    return *this;
+  }
+  /// A string that must be `value` (the schema's `const`; the root's "study").
+  Field& Const(std::string value) { constant = std::move(value); return *this; }
+  /// An array of at least n items.
+  Field& MinItems(size_t n, std::string expected = "") {
+    min_items = n;
+    min_items_expected = std::move(expected);
+    return *this;
+  }
+  /// The message for a value of the wrong shape (a fixed-size array: "an array of N numbers").
+  Field& Expect(std::string text) { shape_expected = std::move(text); return *this; }
+  /// What an absent std::optional field means, for the schema's `default`.
+  Field& Default(nlohmann::json value) { documented_default = std::move(value); return *this; }
+  /// The schema of a field kept as raw JSON (nlohmann::json) and read by shared code.
+  Field& Schema(nlohmann::ordered_json fragment) { schema = std::move(fragment); return *this; }
+
+  std::string desc, unit;
+  bool required = false;
+  std::vector<Bound> bounds;
+  std::vector<std::string> one_of;
+  std::string one_of_expected;
+  std::optional<std::string> constant;
+  std::optional<size_t> min_items;
+  std::string min_items_expected;
+  std::string shape_expected;
+  nlohmann::json documented_default;  ///< null: none
+  nlohmann::ordered_json schema;      ///< null: none
+};
+
+namespace archive_detail {
+
+template <typename T> struct IsOptional : std::false_type {};
+template <typename T> struct IsOptional<std::optional<T>> : std::true_type {};
+template <typename T> struct IsVector : std::false_type {};
+template <typename T> struct IsVector<std::vector<T>> : std::true_type {};
+template <typename T> struct IsArray : std::false_type {};
+template <typename T, size_t N> struct IsArray<std::array<T, N>> : std::true_type {};
+
+/// Collects the names a declaration visits (the known fields of its object).
+class NameCollector {
+ public:
+  template <typename T>
+  void Visit(const char* name, T*, const Field&) { names.insert(name); }
+  void Retired(const char* name, const char*) { names.insert(name); }
+  void Alias(const char*, const char*) {}
+  std::set<std::string> names;
+};
+
+template <typename T>
+concept Declared = requires(T& t, NameCollector* a) { t.Serialize(a); };
+
+/// A number as Node's messages print it (ostream's default: 100000, 1e-13, 0.499).
+std::string NumberText(double x);
+/// The standard message of a bound ("a number > 0", "a whole number >= 36", …).
+std::string BoundText(const Field::Bound& b, bool integer);
+/// `"a" or "b"`, `one of "a", "b", "c"`.
+std::string OneOfText(const std::vector<std::string>& values);
+
+}  // namespace archive_detail
+
+/// Reads a study file into a declared struct (see the top of this header).
+class JsonReader {
+ public:
+  explicit JsonReader(const Node& node) : node_(node) {}
+
+  /// Reads the member `name` of this object into *value (absent: kept, or fails when required).
+  template <typename T>
+  void Visit(const char* name, T* value, const Field& f) {
+    if constexpr (archive_detail::IsOptional<T>::value) {
+      if (!node_.Has(name)) return;
+      typename T::value_type v{};
+      ReadValue(node_[name], &v, f);
+      *value = std::move(v);
+    } else {
+      if (!node_.Has(name)) {
+        if (f.required) (void)node_[name];  // "missing required field"
+        return;
+      }
+      ReadValue(node_[name], value, f);
+    }
+  }
+  /// A field no longer read: refused with `message` when given (it stays a known field).
+  void Retired(const char* name, const char* message) {
+    if (node_.Has(name)) node_[name].FailWith(message);
+  }
+  /// `old_name` is an earlier name of `name` (both visited as fields): one of the two at most.
+  void Alias(const char* name, const char* old_name) {
+    if (node_.Has(name) && node_.Has(old_name))
+      node_[old_name].FailWith(std::string("give either ") + name + " or its old name " + old_name + ", not both");
+  }
+
+  /// Reads the value at `n` (a whole struct, an array, a scalar).
+  template <typename T>
+  static void ReadValue(const Node& n, T* value, const Field& f) {
+    using archive_detail::IsArray;
+    using archive_detail::IsVector;
+    if constexpr (archive_detail::Declared<T>) {
+      archive_detail::NameCollector names;
+      value->Serialize(&names);
+      n.CheckKnownFields(names.names);
+      JsonReader inner(n);
+      value->Serialize(&inner);
+    } else if constexpr (std::is_same_v<T, double>) {
+      *value = ReadNumber(n, f, false);
+    } else if constexpr (std::is_same_v<T, int>) {
+      *value = static_cast<int>(ReadNumber(n, f, true));
+    } else if constexpr (std::is_same_v<T, bool>) {
+      *value = n.Bool();
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      *value = ReadString(n, f);
+    } else if constexpr (std::is_same_v<T, nlohmann::json>) {
+      *value = n.json();
+    } else if constexpr (IsVector<T>::value) {
+      const std::vector<Node> items = n.Elements();
+      if (f.min_items && items.size() < *f.min_items)
+        n.Fail(!f.min_items_expected.empty() ? f.min_items_expected
+                                             : "an array of at least " + std::to_string(*f.min_items) + " items");
+      value->clear();
+      for (const Node& item : items) {
+        typename T::value_type v{};
+        ReadValue(item, &v, f);
+        value->push_back(std::move(v));
+      }
+    } else if constexpr (IsArray<T>::value) {
+      const std::string expected =
+          !f.shape_expected.empty() ? f.shape_expected : "an array of " + std::to_string(value->size()) + " numbers";
+      const nlohmann::json& j = n.json();
+      if (!j.is_array() || j.size() != value->size()) n.Fail(expected);
+      for (const auto& item : j)
+        if (!item.is_number()) n.Fail(expected);
+      for (size_t i = 0; i < value->size(); ++i) ReadValue(n[i], &(*value)[i], f);
+    } else {
+      static_assert(sizeof(T) == 0, "a field type the archives do not know");
+    }
+  }
+
+ private:
+  static double ReadNumber(const Node& n, const Field& f, bool integer);
+  static std::string ReadString(const Node& n, const Field& f);
+  Node node_;
+};
+
+/// Emits the JSON Schema of a declared struct, member by member, into an object schema.
+class SchemaEmitter {
+ public:
+  explicit SchemaEmitter(nlohmann::ordered_json* object) : object_(object) {}
+
+  template <typename T>
+  void Visit(const char* name, T* value, const Field& f) {
+    nlohmann::ordered_json s = nlohmann::ordered_json::object();
+    const std::string d = f.desc + (f.unit.empty() ? "" : (f.desc.empty() ? "[" : " [") + f.unit + "]");
+    if (!d.empty()) s["description"] = d;
+    if constexpr (archive_detail::IsOptional<T>::value) {
+      typename T::value_type v{};
+      Describe(&v, f, s);
+      if (!f.documented_default.is_null()) s["default"] = f.documented_default;
+    } else {
+      Describe(value, f, s);
+      if (!f.required && !f.constant && !archive_detail::Declared<T> &&
+          !std::is_same_v<T, nlohmann::json>)
+        s["default"] = WriteValue(*value);
+    }
+    (*object_)["properties"][name] = std::move(s);
+    if (f.required) (*object_)["required"].push_back(name);
+  }
+  void Retired(const char*, const char*) {}
+  /// Not both names: `"not": {"anyOf": [{"required": [name, old_name]}, …]}`.
+  void Alias(const char* name, const char* old_name) {
+    (*object_)["not"]["anyOf"].push_back({{"required", {name, old_name}}});
+  }
+
+  /// The schema keywords of a value of type T (its type, bounds, items, properties) into `s`.
+  template <typename T>
+  static void Describe(T* value, const Field& f, nlohmann::ordered_json& s) {
+    using archive_detail::IsArray;
+    using archive_detail::IsVector;
+    if constexpr (archive_detail::Declared<T>) {
+      s["type"] = "object";
+      s["properties"] = nlohmann::ordered_json::object();
+      SchemaEmitter inner(&s);
+      value->Serialize(&inner);
+      s["additionalProperties"] = false;
+      if (s.contains("not")) {  // after the properties, for the reader of the schema
+        nlohmann::ordered_json n = std::move(s["not"]);
+        s.erase("not");
+        s["not"] = std::move(n);
+      }
+    } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
+      s["type"] = std::is_same_v<T, int> ? "integer" : "number";
+      NumberKeywords(f, std::is_same_v<T, int>, s);
+    } else if constexpr (std::is_same_v<T, bool>) {
+      s["type"] = "boolean";
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      if (f.constant) s["const"] = *f.constant;
+      else if (!f.one_of.empty()) s["enum"] = f.one_of;
+      else s["type"] = "string";
+    } else if constexpr (std::is_same_v<T, nlohmann::json>) {
+      for (auto it = f.schema.begin(); it != f.schema.end(); ++it)
+        if (!s.contains(it.key())) s[it.key()] = it.value();
+    } else if constexpr (IsVector<T>::value) {
+      s["type"] = "array";
+      if (f.min_items) s["minItems"] = *f.min_items;
+      typename T::value_type item{};
+      nlohmann::ordered_json is = nlohmann::ordered_json::object();
+      Describe(&item, f, is);
+      s["items"] = std::move(is);
+    } else if constexpr (IsArray<T>::value) {
+      s["type"] = "array";
+      s["minItems"] = value->size();
+      s["maxItems"] = value->size();
+      typename T::value_type item{};
+      nlohmann::ordered_json is = nlohmann::ordered_json::object();
+      Describe(&item, f, is);
+      s["items"] = std::move(is);
+    } else {
+      static_assert(sizeof(T) == 0, "a field type the archives do not know");
+    }
+  }
+
+  /// A value as JSON (the defaults of the schema; JsonWriter).
+  template <typename T>
+  static nlohmann::ordered_json WriteValue(const T& value);
+
+ private:
+  static void NumberKeywords(const Field& f, bool integer, nlohmann::ordered_json& s);
+  nlohmann::ordered_json* object_;
+};
+
+/// Writes a declared struct as JSON: every field, optional ones (and raw JSON ones) only when set.
+class JsonWriter {
+ public:
+  explicit JsonWriter(nlohmann::ordered_json* object) : object_(object) {}
+  template <typename T>
+  void Visit(const char* name, T* value, const Field&) {
+    if constexpr (archive_detail::IsOptional<T>::value) {
+      if (*value) (*object_)[name] = SchemaEmitter::WriteValue(**value);
+    } else if constexpr (std::is_same_v<T, nlohmann::json>) {
+      if (!value->is_null()) (*object_)[name] = SchemaEmitter::WriteValue(*value);  // null: absent
+    } else {
+      (*object_)[name] = SchemaEmitter::WriteValue(*value);
+    }
+  }
+  void Retired(const char*, const char*) {}
+  void Alias(const char*, const char*) {}
+
+ private:
+  nlohmann::ordered_json* object_;
+};
+
+template <typename T>
+nlohmann::ordered_json SchemaEmitter::WriteValue(const T& value) {
+  if constexpr (archive_detail::Declared<T>) {
+    nlohmann::ordered_json o = nlohmann::ordered_json::object();
+    JsonWriter w(&o);
+    const_cast<T&>(value).Serialize(&w);  // Serialize is not const; the writer only reads
+    return o;
+  } else if constexpr (archive_detail::IsVector<T>::value || archive_detail::IsArray<T>::value) {
+    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    for (const auto& x : value) a.push_back(WriteValue(x));
+    return a;
+  } else if constexpr (std::is_same_v<T, nlohmann::json>) {
+    return nlohmann::ordered_json::parse(value.dump());
+  } else {
+    return nlohmann::ordered_json(value);
+  }
+}
+
+/// Reads the declared struct T from `node`: unknown fields refused, each field checked, defaults
+/// for the absent ones. @throws StudyError (exit 2) with the file and JSON path.
+template <typename T>
+T Read(const Node& node) {
+  T value{};
+  JsonReader::ReadValue(node, &value, Field());
+  return value;
+}
+
+/// The JSON Schema (draft 2020-12) of a study kind declared by T, as `camopt schema KIND` prints it.
+template <typename T>
+nlohmann::ordered_json EmitSchema(const std::string& kind, const std::string& title) {
+  nlohmann::ordered_json s = nlohmann::ordered_json::object();
+  s["$schema"] = "https://json-schema.org/draft/2020-12/schema";
+  s["$id"] = "https://camopt.invalid/schema/" + kind + ".schema.json";
+  s["title"] = title;
+  T value{};
+  SchemaEmitter::Describe(&value, Field(), s);
+  return s;
+}
+
+/// A declared struct as JSON (every field with its value, optional ones when set).
+template <typename T>
+nlohmann::ordered_json WriteJson(const T& value) {
+  return SchemaEmitter::WriteValue(value);
+}
+
+/// The fields of a schema as a Markdown table (`| field | accepts | meaning |`, one row a field, nested
+/// objects as `a.b`, array items as `a[i].b`), for the reference in docs/studies.md: `camopt schema
+/// KIND --table` prints it.
+std::string SchemaFieldTable(const nlohmann::ordered_json& schema);
+
+/// The study as its declaration reads it, written back (WriteJson(Read(study))): every field with
+/// the value the kind uses, defaults filled in. @throws StudyError as Read.
+using DeclaredEcho = nlohmann::ordered_json (*)(const nlohmann::json& study, const std::string& file);
+
+/// Registers a declared kind: its schema, which `camopt schema KIND` (StudySchema) then prints
+/// instead of a file of studies/schema/, and its echo; returns true (for a static).
+bool RegisterDeclaredKind(const std::string& kind, std::string (*emit_schema)(), DeclaredEcho echo);
+/// The schema text of a kind registered with RegisterDeclaredKind, or nullptr.
+const std::string* DeclaredSchema(const std::string& kind);
+/// The echo of a declared kind, or nullptr.
+DeclaredEcho FindDeclaredEcho(const std::string& kind);
+
+}  // namespace camopt::studies
+
+#define CAMOPT_ARCHIVE_CONCAT_INNER(a, b) a##b
+#define CAMOPT_ARCHIVE_CONCAT(a, b) CAMOPT_ARCHIVE_CONCAT_INNER(a, b)
+/// Registers the study kind `kind` declared by the struct `Type` (in the kind's .cc): its schema
+/// is emitted from the declaration (`camopt schema KIND`).
+#define CAMOPT_REGISTER_DECLARED_KIND(kind, Type, title)                                          \
+  static const bool CAMOPT_ARCHIVE_CONCAT(camopt_declared_kind_, __LINE__) =                     \
+      ::camopt::studies::RegisterDeclaredKind(                                                   \
+          kind, [] { return ::camopt::studies::EmitSchema<Type>(kind, title).dump(2) + "\n"; },   \
+          [](const nlohmann::json& study, const std::string& file) {                             \
+            return ::camopt::studies::WriteJson(                                                 \
+                ::camopt::studies::Read<Type>(::camopt::studies::Node(&study, file, "")));       \
+          })
