@@ -125,7 +125,7 @@ TEST(Archive, ReaderMessagesForTheRest) {
   EXPECT_EQ(ReadError(s), "t.json: /time_step_s: no longer used: give a tolerance");
   s = kGood;
   s["roller"] = {{"radius_mm", 1}, {"radius", 1}};
-  EXPECT_EQ(ReadError(s), "t.json: /roller/radius: unknown field (known: radius_mm)");
+  EXPECT_EQ(ReadError(s), "t.json: /roller/radius: unknown field (known: radius_mm); did you mean \"radius_mm\"?");
   s = kGood;
   s["rollers"] = json::array();
   EXPECT_EQ(ReadError(s), "t.json: /rollers: expected an array of at least 1 items, found an array []");
@@ -138,7 +138,11 @@ TEST(Archive, ReaderMessagesForTheRest) {
   s = {{"length_mm", -1}, {"lenght_mm", 1}};
   EXPECT_EQ(ReadError(s),
             "t.json: /lenght_mm: unknown field (known: angle_deg, arm_mm, flag, length_mm, mode, poisson_ratio, "
-            "range, roller, rollers, speeds_rpm, steps, time_step_s)");
+            "range, roller, rollers, speeds_rpm, steps, time_step_s); did you mean \"length_mm\"?");
+  // A misspelt choice gets the nearest one (Node::Fail, studies/suggest.h).
+  s = kGood;
+  s["mode"] = "slwo";
+  EXPECT_EQ(ReadError(s), "t.json: /mode: expected \"fast\" or \"slow\", found a string \"slwo\" (did you mean \"slow\"?)");
 }
 
 TEST(Archive, ReaderFillsDefaultsAndKeepsGivenValues) {
