@@ -185,6 +185,8 @@ Study Parse(const Node& root) {
     }
     if (!s.dynamics_stage) s.speeds_rpm.clear();
   }
+  s.limits = in.limits;
+  s.pressure_angle_limit_default = !(root.Has("limits") && root["limits"].Has("pressure_angle_deg"));
   s.angle_steps = in.analysis.angle_steps;
   s.axis_steps = in.analysis.axis_steps;
   s.export_stl = in.export_.stl;
@@ -331,6 +333,10 @@ Result Run(const Study& s, const RunContext& ctx) {
       sr.peak_turret_acceleration_dynamic_rad_s2 = pk.swing_acc_rad_s2;
       sr.max_force_roller_1_N = pk.force_N[0];
       sr.max_force_roller_2_N = pk.force_N[1];
+      const int js = pk.contact_stress_MPa[1] > pk.contact_stress_MPa[0] ? 1 : 0;
+      sr.max_contact_stress_MPa = pk.contact_stress_MPa[js];
+      sr.max_contact_stress_cam_angle_deg =
+          std::fmod((in.start_cam_angle_rad + in.cam_speed_rad_s * pk.contact_stress_time_s[js]) / kDeg, 360.0);
       sr.max_quasi_static_force_N =
           *std::max_element(sr.quasi_static_force_N.begin(), sr.quasi_static_force_N.end());
       sr.max_swing_deviation_deg = pk.swing_deviation_rad / kDeg;
@@ -449,15 +455,46 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          x.peak_turret_acceleration_dynamic_rad_s2},
                         {"max_force_roller_1_N", x.max_force_roller_1_N},
                         {"max_force_roller_2_N", x.max_force_roller_2_N},
+                        {"max_contact_stress_MPa", x.max_contact_stress_MPa},
+                        {"max_contact_stress_at_cam_angle_deg", x.max_contact_stress_cam_angle_deg},
                         {"max_quasi_static_force_N", x.max_quasi_static_force_N},
                         {"max_swing_deviation_deg", x.max_swing_deviation_deg},
                         {"max_penetration_mm", x.max_penetration_mm}});
+    }
+    // The largest contact stress over the speeds run, for the verdict.
+    const SpeedResult* worst = nullptr;
+    for (const SpeedResult& x : r.speeds)
+      if (x.failed.empty() && (!worst || x.max_contact_stress_MPa > worst->max_contact_stress_MPa)) worst = &x;
+    if (worst) {
+      j["max_contact_stress_MPa"] = worst->max_contact_stress_MPa;
+      j["max_contact_stress_at"] = {{"cam_speed_rpm", worst->cam_speed_rpm},
+                                    {"cam_angle_deg", worst->max_contact_stress_cam_angle_deg}};
+      j["contact_stress_model"] =
+          "Hertz line contact along the roller length: p0 = sqrt(F E* / (pi m R)), R the eq. (12) radius "
+          "at that instant (docs/globoidal.md \"Limits and verdict\")";
     }
     j["dynamics"] = {{"contact_model", "F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ (eqs. 10–14)"},
                      {"integrator", "CVODE (BDF, variable step and order), contact onset "
                                     "and loss located as events; peaks over every step"},
                      {"speeds", speeds}};
   }
+  // The verdict (docs/globoidal.md "Limits and verdict"): each limit beside its value.
+  nlohmann::json defaults = nlohmann::json::array();
+  if (s.pressure_angle_limit_default) defaults.push_back("pressure_angle_deg");
+  j["limits"] = {{"pressure_angle_deg", s.limits.pressure_angle_deg}, {"defaults", defaults}};
+  j["pressure_angle_ok"] = alpha.value / kDeg <= s.limits.pressure_angle_deg;
+  bool ok = j["pressure_angle_ok"].get<bool>() && !r.undercut && r.rib_thickness_at_l2_mm >= 0.0;
+  if (s.limits.contact_stress_MPa) {
+    j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
+    if (j.contains("max_contact_stress_MPa")) {
+      j["contact_stress_ok"] = j["max_contact_stress_MPa"].get<double>() <= *s.limits.contact_stress_MPa;
+      ok = ok && j["contact_stress_ok"].get<bool>();
+    } else {
+      j["notes"].push_back("limits.contact_stress_MPa is not checked: the contact stress comes from the dynamics, "
+                           "which did not run (no cam speed, not asked for, or skipped)");
+    }
+  }
+  j["limits_ok"] = ok;
   if (s.export_point_cloud || s.export_stl)
     j["surface_export"] = {{"frame", "cam frame oxyz, oz the cam axis, mm; θ = 0 at the start of the "
                                      "first motion"},
@@ -689,7 +726,8 @@ const bool kEstimateRegistered = RegisterWorkEstimate("globoidal_cam", EstimateW
 namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("globoidal_cam", {
-    {"largest pressure angle", "/max_pressure_angle_deg", "deg"},
+    {"largest pressure angle", "/max_pressure_angle_deg", "deg", "/limits/pressure_angle_deg"},
+    {"largest contact stress (dynamics, line contact)", "/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa"},
     {"smallest contact radius", "/min_contact_radius_mm", "mm"},
     {"smallest undercut margin", "/min_undercut_margin", "", "", 0.0, false},
     {"undercut", "/undercut", ""},

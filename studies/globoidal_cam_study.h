@@ -161,6 +161,22 @@ struct Input {
     }
   };
 
+  /// The limits of the verdict (docs/globoidal.md "Limits and verdict").
+  struct Limits {
+    double pressure_angle_deg = 45.0;
+    std::optional<double> contact_stress_MPa;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pressure_angle_deg", &pressure_angle_deg,
+               Field().Positive().Below(89, "a pressure angle > 0 and < 89 deg (the jam limit)").Unit("deg")
+                   .Desc("largest |α| allowed over the cycle (Rothbart's 45° for a follower on a pivot, the turret)"));
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Positive().Unit("MPa").Desc(
+                   "largest Hertz contact stress allowed in the dynamics (absent: not checked; it depends on the "
+                   "material)"));
+    }
+  };
+
   std::string study = "globoidal_cam", name = "globoidal cam";
   std::optional<std::string> description;
   Cam cam;
@@ -170,6 +186,7 @@ struct Input {
   Dynamics dynamics;
   Analysis analysis;
   Export export_;
+  Limits limits;
   nlohmann::json geometry_files;
 
   template <typename Archive>
@@ -185,6 +202,7 @@ struct Input {
     a->Visit("dynamics", &dynamics, Field().Desc("the contact dynamics at the given cam speeds"));
     a->Visit("analysis", &analysis, Field().Desc("the geometry survey's grid and the stages to run"));
     a->Visit("export", &export_, Field().Desc("the working surfaces as a point cloud and a mesh"));
+    a->Visit("limits", &limits, Field().Desc("the limits of the verdict; each has a default or is not checked"));
     a->Visit("geometry_files", &geometry_files,
              Field().Schema(GeometryFilesSchema(
                  "geometry files (docs/studies.md 'Geometry files'); false: no STL/STEP of the working "
@@ -214,6 +232,8 @@ struct Study {
   /// none are simulated; without "export" no surfaces are built.
   bool dynamics_stage = true, export_stage = true;
   bool evaluate_given = false;
+  Input::Limits limits;  ///< the verdict's limits as the study gives them (defaults filled in)
+  bool pressure_angle_limit_default = true;  ///< limits.pressure_angle_deg not in the study
 };
 
 /// The dynamics at one cam speed, in the units of result.json.
@@ -228,6 +248,9 @@ struct SpeedResult {
   double peak_turret_acceleration_kinematic_rad_s2 = 0.0;
   double peak_turret_acceleration_dynamic_rad_s2 = 0.0;
   double max_force_roller_1_N = 0.0, max_force_roller_2_N = 0.0;
+  /// The largest Hertz line-contact stress of either roller over every solver step
+  /// (globoidal::DynamicsPeaks::contact_stress_MPa) and the cam angle where it is [deg, 0–360).
+  double max_contact_stress_MPa = 0.0, max_contact_stress_cam_angle_deg = 0.0;
   double max_quasi_static_force_N = 0.0, max_swing_deviation_deg = 0.0, max_penetration_mm = 0.0;
   std::vector<double> quasi_static_force_N;         ///< on the analysis grid
   /// The thinned samples for the CSV and the plots (the peaks above do not come from them).

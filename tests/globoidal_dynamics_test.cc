@@ -164,6 +164,39 @@ TEST(GloboidalDynamics, SlowRunFollowsKinematicsAndQuasiStaticForce) {
   EXPECT_LT(worst_force, 0.05);
 }
 
+// The contact stress of the verdict: Hertz line contact along the roller, p0 = √(F E*/(π m R)).
+// On the dwells φ' = φ'' = 0, so α = 0 and the loaded roller 1 carries F = T/l_c exactly; R is the
+// eq. (12) radius of the geometry (tested in globoidal_geometry_test.cc). By hand with
+// E* = 206000/(2 · 0.91) MPa, m = 5 mm, l_c = 22 mm, T = 500 N·m. A flat working surface would
+// give R = 4 mm and 6398.55 MPa; the dwells here are cones (roller angles φ₀ʲ ≠ 0), R < 4 mm.
+// In a slow run the dynamic peak over the solver steps is the quasi-static peak over the cycle
+// (sampled at 0.05°) within the 5 % the forces follow it (SlowRunFollowsKinematicsAndQuasiStaticForce).
+TEST(GloboidalDynamics, ContactStressIsHertzLineContactAndSlowRunPeakIsQuasiStatic) {
+  DynamicsInput in;
+  in.cam = PaperExampleCam<double>();
+  in.cam_speed_rad_s = 2 * kPi * 120 / 60;
+  in.load_torque_Nmm = 500e3;
+  in.contact.max_damping_Ns_per_mm = 120.0;
+  in.contact.penetration_depth_mm = 1e-3;
+  in.end_time_s = 0.5;
+  in.output_interval_s = 1e-3;
+  const double e_star = 206000.0 / (2 * (1 - 0.3 * 0.3));
+  for (const double dwell_deg : {70.0, 100.0, 270.0, 300.0, 350.0}) {
+    const double radius = EvaluateSurface(in.cam, 1, 22.0, dwell_deg * kDeg).contact_radius;
+    EXPECT_GT(radius, 0.5) << dwell_deg;
+    EXPECT_LE(radius, 4.0 + 1e-12) << dwell_deg;
+    const double by_hand = std::sqrt(500e3 / 22.0 * e_star / (kPi * 5.0 * radius));
+    EXPECT_NEAR(QuasiStaticForce(in, dwell_deg * kDeg), 500e3 / 22.0, 1e-9 * 500e3 / 22.0) << dwell_deg;
+    EXPECT_NEAR(QuasiStaticContactStress(in, dwell_deg * kDeg), by_hand, 1e-9 * by_hand) << dwell_deg;
+  }
+  double quasi_static_peak = 0;
+  for (int i = 0; i < 7200; ++i)
+    quasi_static_peak = std::max(quasi_static_peak, QuasiStaticContactStress(in, 2 * kPi * i / 7200));
+  const DynamicsResult r = SimulateDynamics(in);
+  const double dynamic_peak = std::max(r.peaks.contact_stress_MPa[0], r.peaks.contact_stress_MPa[1]);
+  EXPECT_NEAR(dynamic_peak / quasi_static_peak, 1.0, 0.05);
+}
+
 // AD gradients of the contact law: K(R₁, R₂, E₁, μ₁, E₂, μ₂) and F(δ, δ̇) in the damping ramp
 // (δ < d) and beyond it.
 TEST(GloboidalDynamics, ContactLawGradients) {

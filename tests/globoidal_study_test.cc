@@ -245,6 +245,42 @@ TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
   EXPECT_TRUE(globoidal_study::ToJson(ran.study, r)["dynamics"].contains("skipped"));
 }
 
+// The verdict's limits: the pressure angle against its default 45° (Rothbart, for a follower on a
+// pivot) or a given one, the contact stress when a limit is given (the paper example's 500 N·m on
+// 4 mm rollers: about 7.7 GPa, so 2000 MPa fails), limits_ok, and --strict's exit 3.
+TEST(GloboidalStudy, LimitsGiveTheVerdict) {
+  const Ran ran = ParseAndRun(Example());
+  json j = globoidal_study::ToJson(ran.study, ran.result);
+  EXPECT_EQ(j["limits"]["pressure_angle_deg"], 45.0);
+  EXPECT_EQ(j["limits"]["defaults"], json({"pressure_angle_deg"}));
+  EXPECT_TRUE(j["pressure_angle_ok"].get<bool>());  // 34.97°
+  EXPECT_TRUE(j["limits_ok"].get<bool>());
+  EXPECT_FALSE(j.contains("contact_stress_ok"));
+  // The largest stress is the larger speed's peak, each ≥ the quasi-static stress on the dwell.
+  const double peak = j["max_contact_stress_MPa"].get<double>();
+  for (const auto& sp : j["dynamics"]["speeds"]) EXPECT_LE(sp["max_contact_stress_MPa"].get<double>(), peak);
+  EXPECT_GT(peak, 6000.0);
+  EXPECT_LT(peak, 9000.0);
+
+  json study = Example();
+  study["limits"] = {{"pressure_angle_deg", 30}, {"contact_stress_MPa", 2000}};
+  const Ran strict = ParseAndRun(study);
+  j = globoidal_study::ToJson(strict.study, strict.result);
+  EXPECT_EQ(j["limits"]["defaults"], json::array());
+  EXPECT_FALSE(j["pressure_angle_ok"].get<bool>());
+  EXPECT_FALSE(j["contact_stress_ok"].get<bool>());
+  EXPECT_FALSE(j["limits_ok"].get<bool>());
+
+  const auto dir = TempDir("globoidal-limits");
+  study["analysis"]["evaluate"] = {"geometry", "dynamics"};
+  study["dynamics"]["cam_speeds_rpm"] = {120};
+  WriteFile(dir / "study.json", study.dump());
+  const auto res =
+      RunCamopt("run " + (dir / "study.json").string() + " --strict --quiet --out " + (dir / "out").string());
+  EXPECT_EQ(res.exit_code, 3) << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find("2 of 4 limits exceeded"), std::string::npos) << res.stderr_text;
+}
+
 struct BadCase {
   const char* name;
   const char* patch;  // a JSON merge patch applied to the example
@@ -275,6 +311,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"length", R"({"cam": {"roller_length_mm": 50}})", "/cam/roller_length_mm",
                 "turret axis"},
         BadCase{"direction", R"({"cam": {"first_motion": "up"}})", "/cam/first_motion", "clockwise"},
+        BadCase{"jam_limit", R"({"limits": {"pressure_angle_deg": 89}})", "/limits/pressure_angle_deg",
+                "the jam limit"},
+        BadCase{"stress_limit", R"({"limits": {"contact_stress_MPa": 0}})", "/limits/contact_stress_MPa", "> 0"},
         BadCase{"law", R"({"motion": [{"law": "parabolic", "rise_deg": 20, "cam_angle_deg": 360}]})",
                 "/motion/0/law", "modified_sine"},
         BadCase{"sum", R"({"motion": [{"law": "modified_sine", "rise_deg": 20, "cam_angle_deg": 60},

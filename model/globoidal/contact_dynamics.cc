@@ -16,9 +16,10 @@
 namespace camopt::globoidal {
 namespace {
 
-// Per-roller contact data at one cam angle: stiffness and the projection e_φ · n_j.
+// Per-roller contact data at one cam angle: stiffness, the projection e_φ · n_j, the pressure
+// angle and the equivalent radius of eq. (12) [mm].
 struct RollerContact {
-  double stiffness, swing_dot_normal, pressure_angle;
+  double stiffness, swing_dot_normal, pressure_angle, radius;
 };
 
 RollerContact Contact(const DynamicsInput& in, int j, double theta) {
@@ -30,7 +31,15 @@ RollerContact Contact(const DynamicsInput& in, int j, double theta) {
                             " deg");
   const ContactMaterial& c = in.contact;
   const double k = contact::PointContactStiffness(1.0 / inv_r, c.composite_modulus_MPa());  // eqs. (11)–(12)
-  return {k, p.swing_dir.dot(p.normal), p.pressure_angle};
+  return {k, p.swing_dir.dot(p.normal), p.pressure_angle, 1.0 / inv_r};
+}
+
+// Hertz line contact of the roller's generator along its whole length m (Johnson §4.2:
+// p0 = √(F E* / (π m R))): the working surface is the roller's envelope, so they touch along a line.
+double LineStress(const DynamicsInput& in, double force, double radius) {
+  return force > 0.0 ? contact::LineContactPeakPressure(force, in.cam.roller_length, radius,
+                                                        in.contact.composite_modulus_MPa())
+                     : 0.0;
 }
 
 // The state integrated: the deviation from the kinematic motion, u = ψ − φ_i(θ) and
@@ -40,6 +49,7 @@ struct Eval {
   double delta[2], delta_rate[2];
   double law[2];                  // ContactLaw: > 0 exactly where roller j carries a force
   double force[2], elastic;
+  double radius[2];               // eq. (12) equivalent radius of roller j [mm]
   motion::Svaj<double> kin;
 };
 
@@ -59,6 +69,7 @@ Eval Evaluate(const DynamicsInput& in, double t, double u, double w, const bool 
     const double delta_rate = l * p * w * rc.swing_dot_normal;
     e.delta[j] = delta;
     e.delta_rate[j] = delta_rate;
+    e.radius[j] = rc.radius;
     e.law[j] = ContactLaw(delta, delta_rate, rc.stiffness, c.exponent, c.max_damping_Ns_per_mm,
                           c.penetration_depth_mm);
     const double f = active[j] ? e.law[j] : 0.0;
@@ -175,6 +186,13 @@ double QuasiStaticForce(const DynamicsInput& in, double theta) {
   return std::abs(q) / (ContactArm(in) * std::abs(rc.swing_dot_normal));
 }
 
+double QuasiStaticContactStress(const DynamicsInput& in, double theta) {
+  const motion::Svaj<double> kin = in.cam.motion.Evaluate(theta);
+  const double q = in.inertia_Nmms2 * kin.a * in.cam_speed_rad_s * in.cam_speed_rad_s + in.load_torque_Nmm;
+  const int j = in.cam.direction * q >= 0.0 ? 1 : 2;
+  return LineStress(in, QuasiStaticForce(in, theta), Contact(in, j, theta).radius);
+}
+
 DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   Check(in);
   DynamicsResult out;
@@ -228,8 +246,11 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
       k.swing_acc_rad_s2 = std::abs(d.swing_acc_rad_s2), k.swing_acc_time_s = t;
     k.kin_rate_rad_s = std::max(k.kin_rate_rad_s, std::abs(d.kin_rate_rad_s));
     k.kin_acc_rad_s2 = std::max(k.kin_acc_rad_s2, std::abs(d.kin_acc_rad_s2));
-    for (int j = 0; j < 2; ++j)
+    for (int j = 0; j < 2; ++j) {
       if (d.force_N[j] > k.force_N[j]) k.force_N[j] = d.force_N[j], k.force_time_s[j] = t;
+      const double stress = LineStress(in, d.force_N[j], e.radius[j]);
+      if (stress > k.contact_stress_MPa[j]) k.contact_stress_MPa[j] = stress, k.contact_stress_time_s[j] = t;
+    }
     k.swing_deviation_rad = std::max(k.swing_deviation_rad, std::abs(u));
     k.penetration_mm = std::max({k.penetration_mm, d.penetration_mm[0], d.penetration_mm[1]});
     if (into) into->push_back(d);

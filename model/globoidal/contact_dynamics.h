@@ -116,6 +116,9 @@ struct DynamicsPeaks {
   double swing_rate_rad_s = 0, swing_acc_rad_s2 = 0;  ///< max |ψ̇|, max |ψ̈|
   double kin_rate_rad_s = 0, kin_acc_rad_s2 = 0;      ///< max |φ_i'ω|, max |φ_i''ω²|
   double force_N[2] = {0, 0};                          ///< max F per roller
+  /// max Hertz line-contact pressure per roller [MPa]: p0 = √(F E*/(π m R)) with R the eq. (12)
+  /// radius at that instant and m the roller length (QuasiStaticContactStress), and where it is
+  double contact_stress_MPa[2] = {0, 0}, contact_stress_time_s[2] = {0, 0};
   double swing_deviation_rad = 0;                      ///< max |ψ − φ_i|
   double penetration_mm = 0;                           ///< max δ over both rollers
   double swing_acc_time_s = 0, force_time_s[2] = {0, 0};  ///< where those maxima are
@@ -170,5 +173,12 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in);
 /// Quasi-static force on the loaded roller: |J φ̈_i ω² + T_load| /(l_c cos α) [N], where α is
 /// the pressure angle of the roller that carries the torque.
 double QuasiStaticForce(const DynamicsInput& in, double theta);
+
+/// Hertz peak pressure of the loaded roller under QuasiStaticForce [MPa], as a line contact along
+/// the roller's length m: p0 = √(F E*/(π m R)) (Johnson, Contact Mechanics §4.2), R the eq. (12)
+/// radius across the roller at the contact arm. The dynamics' own force law is the paper's point
+/// contact (eq. 11); for the stress the roller is taken as touching along its generator, as the
+/// working surface is its envelope (no edge stress concentration: a straight roller's ends).
+double QuasiStaticContactStress(const DynamicsInput& in, double theta);
 
 }  // namespace camopt::globoidal
