@@ -670,15 +670,15 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   out.Add("series.csv", ToCsv(table));
 
   const auto& th = t.cam_angle_deg;
-  AddSvajPlots(out, s.name + ": follower", th,
-               {table.names[1], table.names[2], table.names[3], table.names[4]},
-               {&t.follower, &t.velocity_per_rad, &t.acceleration_per_rad2, &t.jerk_per_rad3});
+  AddSvajPlots(out, s.name + ": follower", r.follower_unit, th,
+               {&t.follower, &t.velocity_per_rad, &t.acceleration_per_rad2, &t.jerk_per_rad3},
+               s.dynamics ? s.dynamics->speed_rpm : 0.0);
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
   {
     PlotOptions o;
-    o.title = s.name + ": pressure angle and shift angle (paper Fig. 12a)";
+    o.title = s.name + ": pressure angle and shift angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "angle [deg]";
     out.Add("angles.svg", SvgLinePlot({series("pressure angle φ", t.pressure_angle_deg),
@@ -687,7 +687,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   }
   if (r.error_evaluated) {
     PlotOptions o;
-    o.title = s.name + ": follower error (paper Fig. 12b)";
+    o.title = s.name + ": follower error";
     o.x_label = "cam angle [deg]";
     o.y_label = r.oscillating ? "error at the roller centre, l·Δξ [µm]" : "follower error ΔS [µm]";
     std::vector<Series> ss = {series("ΔS_r (radial)", t.error_radial_um),

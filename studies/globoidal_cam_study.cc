@@ -632,10 +632,11 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     }
   }
 
-  AddSvajPlots(out, s.name + ": turret swing", th,
-               {table.names[1], table.names[2], table.names[3], table.names[4]},
+  // Over time at the first cam speed simulated (the others scale as ω, ω², ω³).
+  AddSvajPlots(out, s.name + ": turret swing", "deg", th,
                {&t.swing_deg, &t.swing_velocity_deg_per_rad, &t.swing_acceleration_deg_per_rad2,
-                &t.swing_jerk_deg_per_rad3});
+                &t.swing_jerk_deg_per_rad3},
+               s.speeds_rpm.empty() ? 0.0 : s.speeds_rpm.front());
   {
     auto series = [&](const std::string& label, const std::vector<double>& y) {
       return Series{label, th, y};

@@ -169,37 +169,38 @@ nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints) {
   return out;
 }
 
-namespace {
-
-// "acceleration_deg_per_rad2" → "acceleration [deg/rad²]": a CSV column name as an axis label.
-std::string AxisLabel(const std::string& column) {
-  size_t cut = std::string::npos;
-  for (const char* unit : {"_deg", "_mm", "_rad"}) cut = std::min(cut, column.find(unit));
-  if (cut == std::string::npos) return column;
-  std::string quantity = column.substr(0, cut), unit = column.substr(cut + 1);
-  for (char& c : quantity)
-    if (c == '_') c = ' ';
-  for (auto [from, to] : {std::pair<std::string, std::string>{"_per_", "/"}, {"rad2", "rad²"}, {"rad3", "rad³"}})
-    for (size_t at = unit.find(from); at != std::string::npos; at = unit.find(from, at + to.size()))
-      unit.replace(at, from.size(), to);
-  if (quantity == "follower" || quantity == "swing") quantity += " displacement";
-  return quantity + " [" + unit + "]";
-}
-
-}  // namespace
-
-void AddSvajPlots(Outputs& out, const std::string& title_prefix,
+void AddSvajPlots(Outputs& out, const std::string& title, const std::string& unit,
                   const std::vector<double>& cam_angle_deg,
-                  const std::array<std::string, 4>& y_labels,
-                  const std::array<const std::vector<double>*, 4>& columns) {
+                  const std::array<const std::vector<double>*, 4>& per_rad, double speed_rpm) {
   const char* names[4] = {"displacement", "velocity", "acceleration", "jerk"};
-  for (int k = 0; k < 4; ++k) {
-    PlotOptions o;
-    o.title = title_prefix + " " + names[k];
-    o.x_label = "cam angle [deg]";
-    o.y_label = AxisLabel(y_labels[k]);
-    out.Add(std::string("svaj_") + names[k] + ".svg",
-            SvgLinePlot({Series{names[k], cam_angle_deg, *columns[k]}}, o));
+  const char* powers[4] = {"", "", "²", "³"};
+  // d/dθ per degree = d/dθ per radian × (π/180)^k; d/dt = d/dθ × ω^k (ω in rad/s).
+  auto stacked = [&](const std::string& plot_title, const std::vector<double>& x, const std::string& x_label,
+                     double factor, const std::string& per) {
+    std::vector<Panel> panels;
+    double scale = 1.0;
+    for (int k = 0; k < 4; ++k) {
+      Panel p;
+      p.options.title = k == 0 ? plot_title : names[k];
+      p.options.height = 260;
+      p.options.x_label = x_label;
+      p.options.y_label = std::string(names[k]) + " [" + unit + (k ? "/" + per + powers[k] : "") + "]";
+      std::vector<double> y(per_rad[k]->size());
+      for (size_t i = 0; i < y.size(); ++i) y[i] = (*per_rad[k])[i] * scale;
+      p.series.push_back(Series{names[k], x, y});
+      panels.push_back(std::move(p));
+      scale *= factor;
+    }
+    return SvgStackedPlots(panels);
+  };
+  out.Add("svaj.svg", stacked(title + " displacement, velocity, acceleration, jerk per degree of cam", cam_angle_deg,
+                              "cam angle [deg]", kDeg, "deg"));
+  if (speed_rpm > 0.0) {
+    const double omega = speed_rpm * 2 * kPi / 60.0;
+    std::vector<double> t_ms(cam_angle_deg.size());
+    for (size_t i = 0; i < t_ms.size(); ++i) t_ms[i] = cam_angle_deg[i] * kDeg / omega * 1e3;
+    out.Add("svaj_time.svg", stacked(title + " over time at " + Format(speed_rpm) + " rpm", t_ms, "time [ms]",
+                                     omega, "s"));
   }
 }
 

@@ -50,12 +50,12 @@ MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples);
 /// ("C0".."C3" or "discontinuous").
 nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints);
 
-/// svaj_{displacement,velocity,acceleration,jerk}.svg against cam angle [deg]; titles
-/// "TITLE_PREFIX displacement" …; y_labels are the series.csv column names, shown as
-/// "quantity [unit]" ("acceleration_deg_per_rad2" → "acceleration [deg/rad²]").
-void AddSvajPlots(Outputs& out, const std::string& title_prefix,
+/// svaj.svg: displacement S, velocity, acceleration and jerk stacked over the cam angle [deg],
+/// the derivatives per degree of cam (columns are per radian, as series.csv has them); with a cam
+/// speed (speed_rpm > 0) also svaj_time.svg, the same over the time of one revolution [ms] with
+/// the derivatives per second. `unit` is S's unit ("mm", "deg"); titles start with `title`.
+void AddSvajPlots(Outputs& out, const std::string& title, const std::string& unit,
                   const std::vector<double>& cam_angle_deg,
-                  const std::array<std::string, 4>& y_labels,
-                  const std::array<const std::vector<double>*, 4>& columns);
+                  const std::array<const std::vector<double>*, 4>& per_rad, double speed_rpm);
 
 }  // namespace camopt::studies

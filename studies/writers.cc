@@ -320,6 +320,27 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
   return os.str();
 }
 
+std::string SvgStackedPlots(const std::vector<Panel>& panels) {
+  std::ostringstream body;
+  int y = 0, width = 0;
+  for (const Panel& p : panels) {
+    std::string svg = SvgLinePlot(p.series, p.options);
+    // SvgLinePlot's root is <svg xmlns=… width="W" height="H" …>: nested here at (0, y).
+    const size_t h_at = svg.find("height=\"") + 8;
+    const int h = std::stoi(svg.substr(h_at, svg.find('"', h_at) - h_at));
+    svg.replace(0, std::string("<svg xmlns=\"http://www.w3.org/2000/svg\"").size(),
+                "<svg x=\"0\" y=\"" + std::to_string(y) + "\"");
+    body << svg;
+    y += h;
+    width = std::max(width, p.options.width);
+  }
+  std::ostringstream os;
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << y
+     << "\" viewBox=\"0 0 " << width << " " << y << "\">\n"
+     << body.str() << "</svg>\n";
+  return os.str();
+}
+
 std::string SvgDrawing(const Drawing& d, int size) {
   double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
   auto grow = [&](double x, double y, double r) {

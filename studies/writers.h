@@ -66,6 +66,15 @@ struct PlotOptions {
 /// are inside the axis range. Non-finite points are skipped.
 std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& options);
 
+/// One panel of SvgStackedPlots: SvgLinePlot's series and options.
+struct Panel {
+  std::vector<Series> series;
+  PlotOptions options;
+};
+/// Panels drawn one below the other in one SVG (e.g. S-V-A-J over the same axis), each as
+/// SvgLinePlot draws it; the width is the widest panel's.
+std::string SvgStackedPlots(const std::vector<Panel>& panels);
+
 using Polyline = std::vector<std::pair<double, double>>;
 
 struct Circle {

@@ -109,10 +109,15 @@ TEST(DiscCamStudy, PaperExampleThroughTheCli) {
   // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
   const Ran ran = ParseAndRun(study);
   EXPECT_EQ(camopt::testing::WithoutRunStamp(r), disc_study::ToJson(ran.study, ran.result));
-  for (const char* f : {"series.csv", "error.svg", "angles.svg", "svaj_displacement.svg",
-                        "svaj_velocity.svg", "svaj_acceleration.svg", "svaj_jerk.svg",
-                        "profile.svg", "profile.dxf"})
+  for (const char* f : {"series.csv", "error.svg", "angles.svg", "svaj.svg", "profile.svg", "profile.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  // S-V-A-J stacked in one plot, per degree of cam; no speed given, so nothing over time.
+  const std::string svaj = ReadFile(dir / "out" / "svaj.svg");
+  for (const char* label : {"displacement [mm]", "velocity [mm/deg]", "acceleration [mm/deg²]", "jerk [mm/deg³]"})
+    EXPECT_NE(svaj.find(label), std::string::npos) << label;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "svaj_time.svg"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "svaj_velocity.svg"));
+  EXPECT_EQ(ReadFile(dir / "out" / "angles.svg").find("Fig."), std::string::npos);
   EXPECT_NE(ReadFile(dir / "out" / "profile.dxf").find("POLYLINE"), std::string::npos);
   // series.csv against the motion's closed form: the cycloidal rise of 24 mm over 120° ends at
   // 120°, where the upper dwell starts, and the largest velocity is Cv h/β = 2·24/(2π/3).

@@ -152,12 +152,16 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
   const Ran ran = ParseAndRun(file);
   EXPECT_EQ(camopt::testing::WithoutRunStamp(r), globoidal_study::ToJson(ran.study, ran.result));
   for (const char* f : {"series.csv", "dynamics_600rpm.csv", "dynamics_120rpm.csv",
-                        "svaj_displacement.svg", "svaj_velocity.svg", "svaj_acceleration.svg",
-                        "svaj_jerk.svg", "pressure_angle.svg", "contact_forces_600rpm.svg",
+                        "svaj.svg", "svaj_time.svg", "pressure_angle.svg", "contact_forces_600rpm.svg",
                         "contact_forces_120rpm.svg", "turret_velocity_600rpm.svg",
                         "turret_acceleration_120rpm.svg", "working_surfaces.csv",
                         "working_surfaces.stl"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  // S-V-A-J stacked, per degree of cam and over time at the first speed (600 rpm: 100 ms a turn).
+  const std::string svaj_time = ReadFile(dir / "svaj_time.svg");
+  for (const char* label : {"at 600 rpm", "time [ms]", "velocity [deg/s]", "jerk [deg/s³]"})
+    EXPECT_NE(svaj_time.find(label), std::string::npos) << label;
+  EXPECT_NE(ReadFile(dir / "svaj.svg").find("acceleration [deg/deg²]"), std::string::npos);
 
   // The exported point cloud: one row per surface point.
   const auto cloud = ReadCsv(ReadFile(dir / "working_surfaces.csv"));
