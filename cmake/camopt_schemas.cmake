@@ -11,6 +11,23 @@ add_custom_command(
   COMMENT "Embedding the study schemas")
 target_sources(camopt_core PRIVATE ${CAMOPT_SCHEMA_CC})
 
+# The example each study kind's `camopt init KIND` starts from (one per kind: a light, typical
+# design that needs no other file), compiled in so that an installed binary writes them.
+set(CAMOPT_INIT_TEMPLATES cycloid_crowning_tuning_nnm cycloid_ltca_nnm_lcm cycloid_min_size_ratio29
+    disc_cam_min_size disc_cam_translating globoidal_cam_paper lcr_crowning_tuning lcr_friction_fit
+    lcr_ii lcr_min_size rigidity_gearbox)
+set(CAMOPT_TEMPLATES_CC ${PROJECT_BINARY_DIR}/generated/init_templates.cc)
+list(TRANSFORM CAMOPT_INIT_TEMPLATES PREPEND ${PROJECT_SOURCE_DIR}/studies/examples/ OUTPUT_VARIABLE _templates)
+list(TRANSFORM _templates APPEND .json)
+add_custom_command(
+  OUTPUT ${CAMOPT_TEMPLATES_CC}
+  COMMAND ${CMAKE_COMMAND} -DEXAMPLES_DIR=${PROJECT_SOURCE_DIR}/studies/examples "-DNAMES=${CAMOPT_INIT_TEMPLATES}"
+          -DOUT=${CAMOPT_TEMPLATES_CC} -P ${PROJECT_SOURCE_DIR}/cmake/embed_templates.cmake
+  DEPENDS ${_templates} ${PROJECT_SOURCE_DIR}/cmake/embed_templates.cmake
+  COMMENT "Embedding the templates of camopt init"
+  VERBATIM)
+target_sources(camopt_core PRIVATE ${CAMOPT_TEMPLATES_CC})
+
 # The version recorded in every result.json and printed by `camopt --version`.
 set_source_files_properties(${PROJECT_SOURCE_DIR}/studies/provenance.cc PROPERTIES
   COMPILE_DEFINITIONS CAMOPT_VERSION_STRING="${PROJECT_VERSION}")

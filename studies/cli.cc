@@ -2,6 +2,7 @@
 // fuzz/mutation_fuzzer.cc calls it in a forked child, so that it exercises exactly the CLI). The
 // command line: `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
 // [--convergence] [--strict]`, `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
+// `camopt init KIND [--out FILE]` (a complete study to start from, studies/init.h),
 // `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
 // (studies/sweep.h). A successful run prints a short summary of the headline numbers of
 // result.json on stdout.
@@ -38,6 +39,7 @@
 #include "studies/provenance.h"
 #include "studies/report.h"
 #include "studies/archive.h"
+#include "studies/init.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
 #include "studies/suggest.h"
@@ -193,13 +195,18 @@ int CliMain(int argc, char** argv) {
   schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
   bool schema_table = false;
   schema->add_flag("--table", schema_table, "Print the fields as a Markdown table (docs/studies.md)");
+  std::string init_kind, init_out;
+  CLI::App* init = app.add_subcommand(
+      "init", "Write a complete study of a kind to start from, every default spelled out (docs/studies.md)");
+  init->add_option("kind", init_kind, "Study kind (see `camopt kinds`)")->required();
+  init->add_option("--out,-o", init_out, "Study file to write (default: standard output); never overwritten");
   app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
   app.require_subcommand(0, 1);
 
   // A first word that is no command: say so, and which command was meant.
   if (argc >= 2 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema"};
+    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema", "init"};
     if (std::find(commands.begin(), commands.end(), word) == commands.end()) {
       if (word.size() > 5 && word.compare(word.size() - 5, 5, ".json") == 0) {
         std::cerr << "camopt: error: a command comes before the file: `camopt run " << word
@@ -209,7 +216,7 @@ int CliMain(int argc, char** argv) {
       const std::string near = camopt::studies::NearestName(word, commands);
       std::cerr << "camopt: error: unknown command \"" << word << "\""
                 << (near.empty() ? "" : " (did you mean \"" + near + "\"?)")
-                << "; the commands are run, sweep, kinds and schema (camopt --help)\n";
+                << "; the commands are run, sweep, init, kinds and schema (camopt --help)\n";
       return 2;
     }
   }
@@ -244,6 +251,36 @@ int CliMain(int argc, char** argv) {
         std::cout << camopt::studies::SchemaFieldTable(nlohmann::ordered_json::parse(text));
       else
         std::cout << text;
+      return 0;
+    } catch (const camopt::studies::StudyError& e) {
+      std::cerr << "camopt: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (init->parsed()) {
+    try {
+      const camopt::studies::InitStudy study = camopt::studies::InitTemplate(init_kind);
+      if (init_out.empty()) {
+        std::cout << study.text;
+        return 0;
+      }
+      if (std::filesystem::exists(init_out)) {
+        std::cerr << "camopt: error: --out: " << init_out
+                  << " exists; expected a new file name (init never overwrites a study)\n";
+        return 2;
+      }
+      std::ofstream file(init_out, std::ios::binary);
+      file << study.text;
+      file.close();
+      if (!file) {
+        std::cerr << "camopt: error: --out: cannot write " << init_out << "\n";
+        std::filesystem::remove(init_out);
+        return 2;
+      }
+      std::cerr << "camopt: wrote " << init_out << ", the " << init_kind << " example " << study.example
+                << (study.every_default ? " with every field and default spelled out"
+                                        : " (fields it leaves out take the defaults of docs/studies.md)")
+                << "; change the design, then: camopt run " << init_out << "\n";
       return 0;
     } catch (const camopt::studies::StudyError& e) {
       std::cerr << "camopt: error: " << e.what() << "\n";
