@@ -14,6 +14,7 @@
 #include "model/rigidity/lost_motion.h"
 #include "studies/lcr_input.h"
 #include "studies/report.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::transmission_rigidity {
@@ -232,25 +233,18 @@ std::string KindAdvice(const std::string& kind) {
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "material", "chain", "load_torque_Nm", "report_radius_mm"});
-  // The chain's material serves every element, so it may hold the fields of any of them.
-  if (root.Has("material")) {
-    const Node m = root["material"];
-    m.CheckKnownFields({"shear_modulus_GPa", "youngs_modulus_GPa", "poisson_ratio"});
-    // Each field is read by the elements that need it; a given one is checked here either way.
-    if (m.Has("shear_modulus_GPa")) m["shear_modulus_GPa"].Positive();
-    if (m.Has("youngs_modulus_GPa")) m["youngs_modulus_GPa"].Positive();
-    if (m.Has("poisson_ratio")) m["poisson_ratio"].NumberIn(0.0, 0.4999);
-  }
+  // The declaration's checks: every field's type, bounds and choices, unknown fields refused. The
+  // elements' values are read below per kind, with the rules between fields.
+  const Input in = Read<Input>(root);
   Study s;
-  s.name = root.StringOr("name", "transmission");
+  s.name = in.name;
   const Node chain = root["chain"];
   s.chain_where = chain.file() + ": " + chain.path();
   const std::vector<Node> nodes = chain.Elements();
   if (nodes.empty()) chain.Fail("a non-empty array of elements");
   for (size_t i = 0; i < nodes.size(); ++i) s.elements.push_back(ParseElement(nodes[i], root, i));
-  if (root.Has("report_radius_mm")) s.report_radius_mm = root["report_radius_mm"].Positive();
-  if (root.Has("load_torque_Nm")) s.load_torque_Nm = root["load_torque_Nm"].Positive();
+  s.report_radius_mm = in.report_radius_mm;
+  s.load_torque_Nm = in.load_torque_Nm;
   return s;
 }
 
@@ -491,6 +485,34 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
+
+CAMOPT_REGISTER_DECLARED_KIND("transmission_rigidity", Input, "camopt study: transmission rigidity");
+
+// The work limit (studies/work_limits.h): one unit per closed-form element; a lobe cam reducer
+// solves its rollers' load sharing at every angle step in both load directions. The chain's length
+// is capped before the elements are read.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const auto chain = study.find("chain");
+  const double elements = chain != study.end() && chain->is_array() ? double(chain->size()) : 0.0;
+  if (elements > 1000 * factor)
+    throw StudyError(file + ": /chain: the chain has " + WorkNumber(elements) + " elements, more than the cap of " +
+                     WorkNumber(1000 * factor) + "; raise the caps with --max-work-factor");
+  const Input in = Read<Input>(Node(&study, file, ""));
+  std::vector<WorkTerm> terms;
+  for (size_t i = 0; i < in.chain.size(); ++i) {
+    const Input::Element& e = in.chain[i];
+    if (e.element != "lobe_cam_reducer" || !e.reducer) {
+      terms.push_back({1.0, "/chain/" + std::to_string(i), "one element"});
+      continue;
+    }
+    const double rollers = e.reducer->input.rollers + e.reducer->output.rollers;
+    const double steps = e.angle_steps.value_or(720);
+    terms.push_back({2 * steps * rollers, "/chain/" + std::to_string(i) + "/angle_steps",
+                     "2 load directions × " + WorkNumber(steps) + " angle steps × " + WorkNumber(rollers) + " rollers"});
+  }
+  return LargestTerm(terms, 2e6 * factor, "roller load-sharing solves", 200);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("transmission_rigidity", EstimateWork);
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of every lobe
 // cam reducer in the chain (together); the other elements are closed forms.

@@ -138,33 +138,6 @@ WorkEstimate LcrAnalysis(const json& s, double factor) {
   return Largest(terms, 2e7 * factor, "roller contact evaluations", 64);
 }
 
-WorkEstimate Rigidity(const json& s, double factor, const std::string& file) {
-  const json& chain = Sub(s, "chain");
-  const double elements = double(Count(chain));
-  if (elements > 1000 * factor)
-    throw StudyError(file + ": /chain: the chain has " + Num(elements) +
-                     " elements, more than the cap of " + Num(1000 * factor) +
-                     "; raise the caps with --max-work-factor");
-  std::vector<Term> terms;
-  if (chain.is_array()) {
-    for (size_t i = 0; i < chain.size(); ++i) {
-      const json& e = chain[i];
-      const json& kind = Sub(e, "element");
-      if (!kind.is_string() || kind.get<std::string>() != "lobe_cam_reducer") {
-        terms.push_back({1.0, "/chain/" + std::to_string(i), "one element"});
-        continue;
-      }
-      double rollers, lobes;
-      LcrCounts(Sub(e, "reducer"), rollers, lobes);
-      const double steps = Size(e, "angle_steps", 720);
-      terms.push_back({2 * steps * rollers, "/chain/" + std::to_string(i) + "/angle_steps",
-                       "2 load directions × " + Num(steps) + " angle steps × " + Num(rollers) +
-                           " rollers"});
-    }
-  }
-  return Largest(terms, 2e6 * factor, "roller load-sharing solves", 200);
-}
-
 double GridCells(const json& analysis) {
   const json& g = Sub(analysis, "grid");
   double p = 40, q = 40;
@@ -421,7 +394,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
     return it->second(study, file, factor);
   if (kind == "lcr_analysis") return LcrAnalysis(study, factor);
-  if (kind == "transmission_rigidity") return Rigidity(study, factor, file);
   if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);
