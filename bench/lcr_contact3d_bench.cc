@@ -1,4 +1,4 @@
-// Speed of the LCR finite-length contact (issue 12): one slices contact (value; value + gradient
+// Speed of the LCR finite-length contact: one slices contact (value; value + gradient
 // by the implicit step with a Jet of 4), one half_space contact, and an LCR II cycle with the
 // slices model. Run: build/camopt_bench --benchmark_filter=Contact3D
 #include <benchmark/benchmark.h>

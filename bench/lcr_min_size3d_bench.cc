@@ -1,4 +1,4 @@
-// Speed of lcr_min_size with crowned rollers and the 3D contact (issue 12, target <= 5 s): the
+// Speed of lcr_min_size with crowned rollers and the 3D contact (target <= 5 s): the
 // example studies/examples/lcr_min_size_crowned.json (ratio −90, 80 N·m, crowning coefficients as
 // variables, 1 mrad, overload 120 N·m; 4 lobe combinations, then the half_space re-check), and
 // one combination of it (max_lobes 14). Run: build/camopt_bench --benchmark_filter=MinSize3D

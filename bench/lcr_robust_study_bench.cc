@@ -1,4 +1,4 @@
-// Speed of the sizing across tolerances as a user runs it (issue 18): the example
+// Speed of the sizing across tolerances as a user runs it: the example
 // studies/examples/lcr_min_size_robust.json (ratio −90, 80 N·m, mean + 3σ of a sub-micrometre
 // grade; the nominal sizing, the robust re-solve, the linearised grid check and the Monte-Carlo
 // checks of the robust and the nominal best). Its own file: the other robust benchmarks use the

@@ -1,4 +1,4 @@
-// Benchmarks of the LCR transmission-error model (issue 18): one Monte-Carlo sample of the exact
+// Benchmarks of the LCR transmission-error model: one Monte-Carlo sample of the exact
 // model (LCR II, the precision grade of studies/examples/lcr_ii_tolerances.json, 72 input angles:
 // per angle the exact gaps of 28 rollers and two compliant turret solves), and its linearisation.
 #include <benchmark/benchmark.h>

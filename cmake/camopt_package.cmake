@@ -1,4 +1,4 @@
-# camopt as a CMake package (issue 17): the library camopt::camopt, the executable, the headers and
+# camopt as a CMake package: the library camopt::camopt, the executable, the headers and
 # the exported targets, so that an installed camopt is used with
 #   find_package(camopt 0.1 REQUIRED)
 #   target_link_libraries(app PRIVATE camopt::camopt)

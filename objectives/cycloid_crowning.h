@@ -95,7 +95,7 @@ namespace camopt::objectives {
 
 // ---------------------------------------------------------------------------------------------
 // Joint tuning of the profile modifications and any crowning's parameters with exact gradients
-// (issue 13). Variables are named by the field they set: the crowning's coefficient_mm,
+//. Variables are named by the field they set: the crowning's coefficient_mm,
 // effective_length_mm, radius_mm, flat_length_mm, end_drop_mm [mm] and the modifications
 // delta_position_um, delta_radius_um [µm]; what is not a variable keeps its start value.
 //

@@ -46,7 +46,7 @@
 // edge-margin or backlash value is beyond its limit, that fast limit is tightened (stress: by the
 // accurate/fast ratio; edge margin and backlash: by the miss plus 2% of the limit) and the problem
 // solved again from the last design, at most `verify_rounds` times. A peak that grows with
-// refinement (a straight tooth's edge: design-notes §1) has a large estimated error, which would
+// refinement (a straight tooth's edge) has a large estimated error, which would
 // otherwise pass a design the accurate model puts above its limit.
 #pragma once
 

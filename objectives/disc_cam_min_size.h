@@ -10,8 +10,8 @@
 //   kDiscCamPressureRise    −α_rise ≤ φ(θᵢ) ≤ α_rise at every sample where the follower rises or
 //                           dwells (S' ≥ 0), φ from Rzine et al. eq. (3) [deg];
 //   kDiscCamPressureReturn  −α_return ≤ φ(θᵢ) ≤ α_return where it returns (S' < 0). The two blocks
-//                           are the disc_cam verdict's two limits, one row per sample (design-notes
-//                           §2: epigraph rows, not a soft max). Which sample is rise or return
+//                           are the disc_cam verdict's two limits, one row per sample
+//                           (epigraph rows, not a soft max). Which sample is rise or return
 //                           depends on the motion program only, not on the design.
 //   kDiscCamCurvature       κ(θᵢ)·(r_f + m) ≤ 1: the pitch curve's convex radius 1/κ at least
 //                           r_f + m, i.e. the profile's convex radius ρ_pitch − r_f at least the
@@ -28,7 +28,7 @@
 // A design outside the geometry (|e| ≥ r_b + r_f, the follower cannot touch the base circle) gives
 // finite rows far beyond their limits with zero derivatives (SLSQP's line search backs off).
 //
-// Verification (objectives/verification.h, design-notes §1 and §3): the fast rows sample N angles;
+// Verification (objectives/verification.h, docs/optimization.md): the fast rows sample N angles;
 // the accurate model re-evaluates the design on accurate_factor·N angles and refines every local
 // peak there within 1% of the largest by golden-section search on the continuous functions (to
 // 1e-12 rad), so the accurate value is the cycle maximum itself; its estimated error is the

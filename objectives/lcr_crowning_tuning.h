@@ -1,4 +1,4 @@
-// Tuning the logarithmic roller crowning of a given LCR (issue 12, "lcr_crowning_tuning"): per cam,
+// Tuning the logarithmic roller crowning of a given LCR ("lcr_crowning_tuning"): per cam,
 // the coefficient f (effective length Le fixed) that minimises the largest contact pressure over a
 // revolution at the design torque, worst over a set of misalignments, subject to the pressure
 // staying off the contact's ends at an overload torque (at every misalignment). The two cams are

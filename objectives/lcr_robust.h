@@ -1,4 +1,4 @@
-// LCR sizing that holds across manufacturing tolerances (issue 18): the robust rows of the sizing
+// LCR sizing that holds across manufacturing tolerances: the robust rows of the sizing
 // problem (objectives/lcr_sizing.h, LcrSizingSpec::robust), the robust solve of one combination,
 // and the Monte-Carlo check of a design against the exact model.
 //

@@ -1,5 +1,5 @@
 // The minimum-size search of one LCR lobe/roller combination under the finite-length contact
-// model (issue 12; docs/lcr.md "Sizing with crowned rollers"): the stress limit holds for the
+// model (docs/lcr.md "Sizing with crowned rollers"): the stress limit holds for the
 // slices model (model/lcr/contact3d.h) at the study's misalignment, the roller crowning
 // coefficient of each cam may be a variable, and at an overload torque the pressure must stay off
 // the contact's ends.

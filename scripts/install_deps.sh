@@ -4,7 +4,7 @@ set -euo pipefail
 PACKAGES=(build-essential cmake pkg-config
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev libceres-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfftw3-dev libsundials-dev ccache
-  # Geometry files (issue 15): OpenCASCADE for STEP solids and their STL meshes (libtbb-dev: OCCT's
+  # Geometry files: OpenCASCADE for STEP solids and their STL meshes (libtbb-dev: OCCT's
   # CMake targets link it), and the independent readers the tests check the files with.
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev python3-ezdxf python3-numpy admesh

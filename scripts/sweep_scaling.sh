@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sweep scaling (issue 19, docs/performance.md "Sweeps"): cases per second of one sweep on 1 and
+# Sweep scaling (docs/performance.md "Sweeps"): cases per second of one sweep on 1 and
 # 2 threads and on 1 and 2 MPI ranks, and the sweep's own overhead per case.
 #   scripts/sweep_scaling.sh [CAMOPT_BINARY] [WORK_DIR]
 # Work sweep: 40 cycloid_ltca cases (logarithmic crowning coefficient × torque, 16 crank angles,

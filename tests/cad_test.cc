@@ -1,4 +1,4 @@
-// Geometry files (issue 15): bi-arc fitting against closed forms, and the STEP solids of the
+// Geometry files: bi-arc fitting against closed forms, and the STEP solids of the
 // cam kinds read back with OpenCASCADE and compared with closed-form areas and volumes. The DXF
 // and STL files are checked by independent readers in tests/geometry_files_test.py.
 #include <array>
@@ -35,7 +35,7 @@ using camopt::testing::ReadFile;
 using camopt::testing::SourcePath;
 using nlohmann::json;
 
-// A STEP solid from a closed-form area and perimeter: 0.1 % (issue 15's bound for the volume).
+// A STEP solid from a closed-form area and perimeter: 0.1 % (the bound for the volume).
 constexpr double kSolidRelTol = 1e-3;
 
 json Example(const std::string& name) { return json::parse(ReadFile(SourcePath("studies/examples/" + name))); }
@@ -187,7 +187,7 @@ TEST(Dxf, HeaderDeclaresMillimetresAndHandlesAreUnique) {
   EXPECT_GT(count, 20);
 }
 
-// Must show (issue 15): the LCR II input cam's STEP solid read back by OpenCASCADE has the volume
+// The LCR II input cam's STEP solid read back by OpenCASCADE has the volume
 // (profile area − bore area) × thickness within 0.1 %, the profile area in closed form.
 TEST(GeometryFiles, LcrIIStepSolidsReadBack) {
   json study = Example("lcr_ii.json");

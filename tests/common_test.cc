@@ -119,7 +119,7 @@ TEST(Writers, CsvHasHeaderAndRows) {
 }
 
 TEST(Writers, DxfHasPolylineAndEof) {
-  // The DXF writer is cad::DxfDocument since issue 15 (dxflib's output had invalid owner handles).
+  // The DXF writer is cad::DxfDocument now (dxflib's output had invalid owner handles).
   cad::DxfDocument d;
   d.AddLayer("PROFILE", 7);
   d.AddChain("PROFILE", {{Vec2<double>(0, 0), Vec2<double>(1, 0), 0.0}, {Vec2<double>(1, 0), Vec2<double>(1, 1), 0.0}},

@@ -1,4 +1,4 @@
-// Closed-form limits of the finite-length roller contact (issue 12 "Must show", docs/validation.md
+// Closed-form limits of the finite-length roller contact (docs/validation.md
 // "Crowned rollers and 3D contact"): the straight roller's mid-length pressure against Hertz line
 // contact as the roller lengthens (extrapolated in 1/ln(l/b)), the circular crown against the Hertz
 // ellipse with the resolution refined in both fidelities, the logarithmic crown's design formula

@@ -1,4 +1,4 @@
-// Cycle-level implicit derivatives of the cycloid LTCA (issue 13) against central differences of
+// Cycle-level implicit derivatives of the cycloid LTCA against central differences of
 // converged cycles: the smooth peak stress, the exact peak, LTE peak-to-peak, the largest pair
 // load, every pair load and the end distance at the maximum torque, for every parameter.
 #include <cmath>

@@ -37,7 +37,7 @@ constexpr double kGradAtSwitchRelTol = 1e-4;
 // The two branches' Jet slopes a hair either side of the switch (1e-9 in λ apart): C¹ means equal.
 constexpr double kSlopeJoinRelTol = 1e-7;
 
-// The published rigid-body case of design-notes §4: 18 pins, 17 lobes, R 42.5, e 1.3, r 2.5 mm.
+// The published rigid-body case (docs/cycloid.md): 18 pins, 17 lobes, R 42.5, e 1.3, r 2.5 mm.
 Drive PublishedDrive() {
   Drive d;
   d.teeth = 17;
@@ -81,7 +81,7 @@ SampledExtreme SampledMinConvexRadius(const Drive& d, const Curve& curve) {
   return {1.0 / best, std::abs(psi) / d.teeth};
 }
 
-// The generating curve written out from design-notes §4 with a' = a + Δa: no shared code.
+// The generating curve written out from its definition (docs/cycloid.md) with a' = a + Δa: no shared code.
 Vec2<double> CentreCurvePoint(const Drive& d, double phi) {
   const double a = d.roller_position_radius_mm + d.delta_position_mm, e = d.eccentricity_mm;
   const int n = d.rollers;

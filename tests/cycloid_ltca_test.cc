@@ -304,7 +304,7 @@ TEST(CycloidLtca, ContactEndDistanceIsLocatedWithinACell) {
 }
 
 TEST(CycloidLtca, ImplicitDerivativesMatchCentralDifferences) {
-  // Frozen contact sets (design-notes §1) against central differences of converged solves, for the
+  // Frozen contact sets (implicit-function theorem) against central differences of converged solves, for the
   // torque, each field of a finite-drop logarithmic crowning and the modifications Δa, Δρ.
   LoadedOptions o = Coarse(16, 16);
   o.tolerance = 1e-11;
@@ -542,7 +542,7 @@ TEST(CycloidStudies, LtcaSamplesOneMeshPeriodAndEstimatesItsErrors) {
 
 TEST(CycloidStudies, PaperDriveRippleWithTheExampleSettingsIsNearTheConvergedValues) {
   // The paper's drive (NNM, 350 N·m, no crowning) with the example's settings against an
-  // independent model converged in crank angle and grid (issue 13; docs/validation.md): LTE
+  // independent model converged in crank angle and grid (docs/validation.md): LTE
   // peak-to-peak 1.37 arcsec and GR peak-to-peak 0.027, within 5 % or within the estimated error.
   namespace ltca = studies::cycloid_ltca;
   const nlohmann::json study = nlohmann::json::parse(

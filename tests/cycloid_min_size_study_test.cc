@@ -1,6 +1,6 @@
 // Study kind cycloid_min_size (studies/cycloid_min_size_study.h): the refusals of bad input with
 // their JSON paths and the bound that would fit (computed here from the closed forms of the
-// epitrochoid, docs/cycloid.md "Geometric limits for sizing", not by the code under test), the
+// epitrochoid, docs/cycloid.md, not by the code under test), the
 // examples' work and the best design as a cycloid_ltca study, and an end-to-end run of a small
 // study through the command line.
 #include <cmath>
@@ -72,7 +72,7 @@ void ExpectRefused(const json& study, const std::string& path, const std::string
   EXPECT_NE(what.find(words), std::string::npos) << what;
 }
 
-// Smallest convex radius of the generating curve (design-notes §4, (C3)/(C4)), written out here.
+// Smallest convex radius of the generating curve (docs/cycloid.md), written out here.
 double CentreRadius(double e, double a_mod, int rollers) {
   const double n = rollers, lambda = e * n / a_mod, lambda_s = (n - 2) / (2 * n - 1);
   if (lambda <= lambda_s) return a_mod * (1 + lambda) * (1 + lambda) / (1 + n * lambda);

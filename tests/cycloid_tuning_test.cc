@@ -1,4 +1,4 @@
-// The joint tuning of the cycloid modifications and crowning (issue 13): the problem's exact
+// The joint tuning of the cycloid modifications and crowning: the problem's exact
 // Jacobian against central differences of its own values, the general study form (variables named
 // by their field, optimizer backends), its determinism and its input errors.
 #include <cmath>

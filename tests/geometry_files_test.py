@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Geometry files checked by independent readers (issue 15).
+"""Geometry files checked by independent readers.
 
 Runs camopt on every example of the kinds that write cam geometry (lcr_analysis, cycloid_ltca,
 disc_cam) and checks each file with tools that share no code with camopt:

@@ -139,7 +139,7 @@ TEST(GloboidalStudy, PaperExample) {
 
 TEST(GloboidalStudy, PaperExampleThroughTheCli) {
   const auto dir = TempDir("globoidal-paper");
-  // The STL asked for as ASCII (binary is the default since issue 15; GeometryFiles tests check it).
+  // The STL asked for as ASCII (binary is the default now; GeometryFiles tests check it).
   json file = Example();
   file["geometry_files"] = {{"stl_format", "ascii"}};
   WriteFile(dir.parent_path() / (dir.filename().string() + ".json"), file.dump());

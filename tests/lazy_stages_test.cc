@@ -1,4 +1,4 @@
-// Lazy stages of lcr_analysis and cycloid_ltca (issue 16): a stage not asked for is not computed,
+// Lazy stages of lcr_analysis and cycloid_ltca: a stage not asked for is not computed,
 // and only the inputs of the asked stages are required (disc_cam and globoidal_cam: their own
 // study tests).
 #include <filesystem>

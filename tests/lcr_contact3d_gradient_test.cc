@@ -1,4 +1,4 @@
-// AD of the per-contact quantities behind lcr_analysis's 3D contact outputs (issue 12 "AD gradients
+// AD of the per-contact quantities behind lcr_analysis's 3D contact outputs ("AD gradients
 // of every new output"): the R' that `stress_radius_mm` reports, the slices peak
 // (`max_contact_stress_MPa`), and the pressure along the roller (`worst_pressure_MPa`, one entry per
 // slice), through the LCR geometry, for a logarithmic and a partial crown with misalignment, against

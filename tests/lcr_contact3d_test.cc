@@ -1,4 +1,4 @@
-// The LCR finite-length contact (issue 12): the contact/crowning input of lcr_analysis (exit 2 for
+// The LCR finite-length contact: the contact/crowning input of lcr_analysis (exit 2 for
 // what the line model ignores), the slices/half_space cycle numbers on LCR II, and AD derivatives
 // of the LCR roller contact's slices peak through the reducer geometry against central differences.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Crowning tuning of LCR II at 80 N·m (issue 12 "Must show"): uncrowned versus tuned logarithmic
+// Crowning tuning of LCR II at 80 N·m : uncrowned versus tuned logarithmic
 // crowning at 0 and 1 mrad, off the ends at 120 N·m, each with the half_space check. The numbers
 // behind docs/validation.md "Crowned rollers and 3D contact"; printed, asserted with margins.
 #include <cmath>

@@ -1,4 +1,4 @@
-// lcr_min_size with the finite-length contact (issue 12): AD gradients of the new constraint rows
+// lcr_min_size with the finite-length contact: AD gradients of the new constraint rows
 // (3D stress margin, overload edge margin) against central differences, the crowned sizing of one
 // combination held to an independent 3D check and the half_space re-check, the fast path of a
 // crowning-free study, and bad input (exit 2 with the JSON path).
@@ -30,7 +30,7 @@ using objectives::LcrContactSample;
 // difference quotient carries ~1e-10/h ≈ 2e-5 relative noise.
 constexpr double kGradientRelTol = 2e-4;
 constexpr double kGradientAbsTol = 1e-6;
-constexpr double kHalfSpaceAgreementPercent = 3.0;  // issue 12: slices within 3% for crowned rollers
+constexpr double kHalfSpaceAgreementPercent = 3.0;  // slices within 3% for crowned rollers
 
 // One combination of the ratio −90 study (20/21 + 26/27) near the crowned optimum.
 objectives::LcrSizingSpec Spec() {

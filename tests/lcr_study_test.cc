@@ -48,7 +48,7 @@ TEST(LcrStudy, ExampleWritesEveryOutputWithTheRequiredFields) {
   const fs::path dir = TempDir("lcr-study");
   nlohmann::json study = LcrIIStudy();
   study["analysis"]["angle_steps"] = 720;
-  // A cutter other than the roller: the DXF has a CUTTER_PATH layer only then (issue 15).
+  // A cutter other than the roller: the DXF has a CUTTER_PATH layer only then.
   study["reducer"]["input"]["cutter_diameter_mm"] = 10;
   WriteFile(dir / "s.json", study.dump());
   const auto r = RunCamopt("run " + (dir / "s.json").string() + " --out " + (dir / "out").string() + " --quiet");

@@ -1,4 +1,4 @@
-// lcr_analysis with "analysis.load_model" and "tolerances" (issue 18): numbers through Parse/Run,
+// lcr_analysis with "analysis.load_model" and "tolerances": numbers through Parse/Run,
 // bad input through the CLI.
 #include <gtest/gtest.h>
 

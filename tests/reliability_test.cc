@@ -1,4 +1,4 @@
-// Reliability (issue 14, docs/reliability.md): every case of the table has its test here — bad
+// Reliability (docs/reliability.md): every case of the table has its test here — bad
 // input refused with exit 2 and a path, absurd sizes refused up front within a second with the
 // cap and the estimate, results that are not converged exit 3, the output folder replaced all at
 // once, interrupts, and byte-identical output for the same study.

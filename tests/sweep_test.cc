@@ -1,4 +1,4 @@
-// Sweeps (issue 19, docs/studies.md "Sweeps"): the designs give the cases they promise, the
+// Sweeps (docs/studies.md "Sweeps"): the designs give the cases they promise, the
 // Pareto front is the set of non-dominated cases, and through the CLI the merged table is the
 // same bytes with 1 or 2 threads and with 2 MPI ranks, failing cases are reported without
 // stopping the sweep, and --resume after SIGINT ends with the table of an uninterrupted run.

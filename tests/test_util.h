@@ -261,7 +261,7 @@ inline void ExpectStudyRejected(const nlohmann::json& study, const std::string& 
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing is written for a bad study";
 }
 
-/// A result.json without what every run adds to the kind's ToJson (studies/study.cc, issue 17):
+/// A result.json without what every run adds to the kind's ToJson (studies/study.cc):
 /// "camopt_version", "study_sha256", and "warnings" when it is empty. Tests that check that the
 /// CLI writes what Parse → Run → ToJson gives compare through it; the added fields have their own
 /// tests (tests/provenance_test.cc).

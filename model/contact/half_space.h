@@ -98,7 +98,7 @@ class HalfSpaceSolver {
   std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
                                    double e_star_MPa);
 
-  /// Forward sensitivity at a converged load-controlled solution (design-notes §1): with the
+  /// Forward sensitivity at a converged load-controlled solution (implicit-function theorem): with the
   /// contact set C = {p > 0} of `pressure_MPa` frozen, solves K_CC dp_C − dδ·1 = −dh_C and
   /// cA·Σ dp_C = dW for one parameter s (dgap_mm = ∂h/∂s per cell, dload_N = dW/ds) by conjugate
   /// gradients on the zero-sum subspace of C (the same convolution). Exact away from set changes.

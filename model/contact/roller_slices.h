@@ -20,7 +20,7 @@
 // so that C stays finite for an unloaded slice (its effect on the pressures is below 1e-6).
 //
 // Derivatives (T = ceres::Jet): one Newton step of the compatibility equations at the solution
-// with the contact set frozen (implicit-function theorem, design-notes §1): x = x₀ − J⁻¹ R(x₀, p),
+// with the contact set frozen (implicit-function theorem): x = x₀ − J⁻¹ R(x₀, p),
 // J the exact Jacobian in (q_C, δ) including the half-widths' dependence on q. Exact away from a
 // change of the contact set (a kink, like any max).
 #pragma once

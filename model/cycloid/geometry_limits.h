@@ -1,5 +1,5 @@
 // Geometric limits of a one-tooth-difference cycloid stage, as margins (>= 0 feasible) for sizing.
-// Closed forms of the epitrochoid in docs/design-notes §4 and the cycloid load-distribution paper,
+// Closed forms of the epitrochoid in docs/cycloid.md and the cycloid load-distribution paper,
 // eqs. (1)–(4); derivations in docs/cycloid.md, "Geometric limits for sizing".
 //
 // Notation (as in tooth_profile.h): N = n1 = z + 1 rollers (pins) on the radius a, roller radius ρ,
@@ -74,7 +74,7 @@ T GeneratingRatio(const DriveTpl<T>& d) {
 }
 
 /// Curtate margin 1 − e N / a' (dimensionless, >= 0 feasible): the generating curve X has no loop
-/// when λ = e N / a' < 1 (design-notes §4). With Δa = 0 this is 1 − e (z + 1) / a; with Δa it is
+/// when λ = e N / a' < 1 (docs/cycloid.md). With Δa = 0 this is 1 − e (z + 1) / a; with Δa it is
 /// the condition on the curve that generates the tooth, as in CheckDrive.
 /// @tparam T double or ceres::Jet. @throws std::invalid_argument see CheckLimitInputs.
 template <typename T>
@@ -154,7 +154,7 @@ T MinConvexCentreRadius(const DriveTpl<T>& d) {
 }
 
 /// Smallest convex radius of the tooth profile itself [mm]: the profile is the inner offset of X
-/// by ρ', so its radius is ρ_min − ρ' (design-notes §4). Published case (18 pins, 17 lobes,
+/// by ρ', so its radius is ρ_min − ρ' (docs/cycloid.md). Published case (18 pins, 17 lobes,
 /// a = 42.5 mm, e = 1.3 mm, ρ = 2.5 mm): 6.678 mm.
 /// @tparam T double or ceres::Jet. @throws std::invalid_argument see CheckLimitInputs.
 template <typename T>
@@ -163,7 +163,7 @@ T MinConvexProfileRadius(const DriveTpl<T>& d) {
 }
 
 /// Undercut margin ρ_min − ρ' − min_profile_radius_mm [mm], >= 0 feasible: the tooth is not
-/// undercut while every convex radius of X exceeds the generating radius ρ' (design-notes §4);
+/// undercut while every convex radius of X exceeds the generating radius ρ' (docs/cycloid.md);
 /// min_profile_radius_mm > 0 asks for a blunter tooth than that. Meaningful with CurtateMargin > 0.
 /// @tparam T double or ceres::Jet. @throws std::invalid_argument see CheckLimitInputs.
 template <typename T>
@@ -173,7 +173,7 @@ T UndercutMargin(const DriveTpl<T>& d, double min_profile_radius_mm = 0.0) {
 
 /// Pin gap margin 2 a sin(π/N) − 2ρ − min_gap_mm [mm], >= 0 feasible: neighbouring rollers, on
 /// the pin circle a at the pitch angle 2π/N, clear each other by at least min_gap_mm
-/// (design-notes §4). The rollers are the unmodified ones (a, ρ): Δa, Δρ only shape the tooth.
+/// (docs/cycloid.md). The rollers are the unmodified ones (a, ρ): Δa, Δρ only shape the tooth.
 /// @tparam T double or ceres::Jet. @throws std::invalid_argument see CheckLimitInputs.
 template <typename T>
 T PinGapMargin(const DriveTpl<T>& d, double min_gap_mm = 0.0) {

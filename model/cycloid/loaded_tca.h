@@ -143,7 +143,7 @@ class LoadedTca {
 
   /// Derivatives of a converged solve's outputs with respect to one parameter, by implicit
   /// differentiation with every pair's contact set and the set of loaded pairs frozen
-  /// (design-notes §1): per pair one forward sensitivity for its load (its compliance dδ/dF) and
+  /// (implicit-function theorem): per pair one forward sensitivity for its load (its compliance dδ/dF) and
   /// one for the parameter at fixed load (dδ/ds), then the outer equations δ_i = l_i (Δφc − φ_bl,i),
   /// Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] ("torque_Nmm"); the geometry
   /// "eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm" and the profile

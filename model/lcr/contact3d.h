@@ -1,4 +1,4 @@
-// Finite-length roller–cam contact of the LCR (issue 12; docs/lcr.md "Crowned rollers and 3D
+// Finite-length roller–cam contact of the LCR (docs/lcr.md "Crowned rollers and 3D
 // contact"): roller crowning, misalignment, and the contact models behind one interface.
 //
 // Each loaded contact: roller radius r_r, contact length l = min(roller length, cam thickness) (the

@@ -1,4 +1,4 @@
-// The finite-length contact model over an LCR revolution (issue 12; docs/lcr.md "Crowned rollers
+// The finite-length contact model over an LCR revolution (docs/lcr.md "Crowned rollers
 // and 3D contact"), double only: per angle, the largest contact pressure of one cam by the chosen
 // model (model/lcr/contact3d.h), with the force and effective radius of the contact that sets it.
 //

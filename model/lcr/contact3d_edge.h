@@ -1,4 +1,4 @@
-// How far the pressure of a sliced roller contact stays from the contact's ends (issue 12: at an
+// How far the pressure of a sliced roller contact stays from the contact's ends (at an
 // overload torque the pressure must stay off the ends), as one smooth, signed number for the
 // sizing problem (objectives/lcr_sizing3d.h):
 //     m_i = (h_i + u_i − δ)/f_L − q_i/(F/l)   at slice i,

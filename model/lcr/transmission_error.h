@@ -1,5 +1,5 @@
 // LCR transmission error and lost motion from manufacturing tolerances, and the compliant
-// load-sharing model (issue 18).
+// load-sharing model.
 //
 // The exact model at one input angle θ: the deviations (model/lcr/tolerance.h) give each roller's
 // normal gap c_k from the exact geometry; the rollers are the compliant contacts of the stiffness
