@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -582,6 +583,17 @@ void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
     drawing.labels.push_back({c.x(), c.y(), std::to_string(i + 1), "blue"});
   }
   drawing.layers = {disc, rollers};
+  // The main dimensions a shop reads (the disc's radii from its sampled profile).
+  const cycloid::Drive& dr = s.drive;
+  double r_min = INFINITY, r_max = 0;
+  for (const auto& [x, y] : pl) r_min = std::min(r_min, std::hypot(x, y)), r_max = std::max(r_max, std::hypot(x, y));
+  char line[240];
+  std::snprintf(line, sizeof line, "%d teeth, %d rollers; pin circle diameter %g mm; roller diameter %g mm; eccentricity %g mm",
+                dr.teeth, dr.rollers, 2 * dr.roller_position_radius_mm, 2 * dr.roller_radius_mm, dr.eccentricity_mm);
+  drawing.dimensions.push_back(line);
+  std::snprintf(line, sizeof line, "modifications Δa %g mm, Δρ %g mm; face width %g mm; disc radius %.3f to %.3f mm (sampled)",
+                dr.delta_position_mm, dr.delta_radius_mm, dr.face_width_mm, r_min, r_max);
+  drawing.dimensions.push_back(line);
   out.Add("tooth.svg", SvgDrawing(drawing));
   WritePlanarCamFiles(r.tooth_files, s.geometry, out);
 }

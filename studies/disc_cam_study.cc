@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "model/disc_cam/check.h"
 #include "studies/format.h"
@@ -735,6 +736,16 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     follower.polylines.push_back({{c0.x(), c0.y()}, {a.x(), a.y()}});
   }
   d.layers = {profile, pitch, base, follower};
+  // The main dimensions a shop reads (the profile's radii from its sampled points).
+  double r_min = INFINITY, r_max = 0;
+  for (const auto& [x, y] : pp) r_min = std::min(r_min, std::hypot(x, y)), r_max = std::max(r_max, std::hypot(x, y));
+  char line[200];
+  std::snprintf(line, sizeof line, "base circle diameter %g mm; roller diameter %g mm; %s", 2 * cam.base_radius,
+                2 * cam.roller_radius,
+                r.oscillating ? "oscillating follower" : ("offset " + Format(cam.offset) + " mm").c_str());
+  d.dimensions.push_back(line);
+  std::snprintf(line, sizeof line, "profile radius from the cam centre %.3f to %.3f mm (sampled)", r_min, r_max);
+  d.dimensions.push_back(line);
   out.Add("profile.svg", SvgDrawing(d));
 }
 

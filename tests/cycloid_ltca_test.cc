@@ -565,6 +565,12 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   for (const char* f : {"result.json", "per_angle.csv", "backlash.csv", "pressure_map.svg", "lte.svg", "tooth.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  // The drawing's main dimensions: the NNM drive (a 90, ρ 7.2, e 4.5 mm, Δa −16, Δρ −8 µm), whose
+  // disc spans (a + Δa) − (ρ + Δρ) ∓ e = 78.292 to 87.292 mm from its centre.
+  const std::string tooth = camopt::testing::ReadFile(dir / "out" / "tooth.svg");
+  for (const char* text : {"15 teeth, 16 rollers; pin circle diameter 180 mm; roller diameter 14.4 mm; eccentricity 4.5 mm",
+                           "Δa -0.016 mm, Δρ -0.008 mm; face width 17 mm; disc radius 78.292 to 87.292 mm"})
+    EXPECT_NE(tooth.find(text), std::string::npos) << text;
   // The registered runner writes what the C++ entry points return.
   namespace ltca = studies::cycloid_ltca;
   const nlohmann::json study = nlohmann::json::parse(camopt::testing::ReadFile(dir / "s.json"));

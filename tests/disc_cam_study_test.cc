@@ -118,6 +118,10 @@ TEST(DiscCamStudy, PaperExampleThroughTheCli) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "svaj_time.svg"));
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "svaj_velocity.svg"));
   EXPECT_EQ(ReadFile(dir / "out" / "angles.svg").find("Fig."), std::string::npos);
+  // The drawing's main dimensions (the study's base circle, roller and offset).
+  const std::string profile = ReadFile(dir / "out" / "profile.svg");
+  EXPECT_NE(profile.find("base circle diameter 80 mm; roller diameter 20 mm; offset 12 mm"), std::string::npos);
+  EXPECT_NE(profile.find("profile radius from the cam centre"), std::string::npos);
   EXPECT_NE(ReadFile(dir / "out" / "profile.dxf").find("POLYLINE"), std::string::npos);
   // series.csv against the motion's closed form: the cycloidal rise of 24 mm over 120° ends at
   // 120°, where the upper dwell starts, and the largest velocity is Cv h/β = 2·24/(2π/3).
