@@ -245,6 +245,9 @@ Study Parse(const Node& root) {
   for (size_t i = 0; i < nodes.size(); ++i) s.elements.push_back(ParseElement(nodes[i], root, i));
   s.report_radius_mm = in.report_radius_mm;
   s.load_torque_Nm = in.load_torque_Nm;
+  s.limits = in.limits;
+  if (s.limits.deflection_deg && !s.load_torque_Nm)
+    root["limits"]["deflection_deg"].FailWith("a deflection limit needs the torque it is under: give load_torque_Nm");
   return s;
 }
 
@@ -346,6 +349,29 @@ nlohmann::json ToJson(const Study& study, const Result& res) {
     const double t = *study.load_torque_Nm;
     result["load_torque_Nm"] = t;
     result["deflection_at_end_b_deg"] = *res.deflection_at_end_b_rad * 180.0 / kPi;
+  }
+
+  // The verdict: each limit given beside its value (report.html and the summary read them).
+  if (const Input::Limits& l = study.limits; l.rigidity_Nm_per_rad || l.backlash_arcmin || l.deflection_deg) {
+    nlohmann::json lim = nlohmann::json::object();
+    bool ok = true;
+    if (l.rigidity_Nm_per_rad) {
+      lim["rigidity_Nm_per_rad"] = *l.rigidity_Nm_per_rad;
+      result["rigidity_ok"] = result["rigidity_at_end_b_Nm_per_rad"].get<double>() >= *l.rigidity_Nm_per_rad;
+      ok = ok && result["rigidity_ok"].get<bool>();
+    }
+    if (l.backlash_arcmin) {
+      lim["backlash_arcmin"] = *l.backlash_arcmin;
+      result["backlash_ok"] = result["backlash_at_end_b_arcmin"].get<double>() <= *l.backlash_arcmin;
+      ok = ok && result["backlash_ok"].get<bool>();
+    }
+    if (l.deflection_deg) {
+      lim["deflection_deg"] = *l.deflection_deg;
+      result["deflection_ok"] = result["deflection_at_end_b_deg"].get<double>() <= *l.deflection_deg;
+      ok = ok && result["deflection_ok"].get<bool>();
+    }
+    result["limits"] = lim;
+    result["limits_ok"] = ok;
   }
 
   nlohmann::json elements = nlohmann::json::array();
@@ -539,11 +565,12 @@ CAMOPT_REGISTER_FIDELITY("transmission_rigidity", Knobs);
 namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("transmission_rigidity", {
-    {"torsional rigidity at end b", "/rigidity_at_end_b_Nm_per_rad", "N·m/rad"},
+    {"torsional rigidity at end b", "/rigidity_at_end_b_Nm_per_rad", "N·m/rad", "/limits/rigidity_Nm_per_rad", NAN,
+     false},
     {"torsional rigidity at end a", "/rigidity_at_end_a_Nm_per_rad", "N·m/rad"},
-    {"backlash at end b", "/backlash_at_end_b_arcmin", "arcmin"},
+    {"backlash at end b", "/backlash_at_end_b_arcmin", "arcmin", "/limits/backlash_arcmin"},
     {"backlash at end a", "/backlash_at_end_a_arcmin", "arcmin"},
-    {"deflection at end b", "/deflection_at_end_b_deg", "deg"},
+    {"deflection at end b", "/deflection_at_end_b_deg", "deg", "/limits/deflection_deg"},
     {"total ratio", "/total_ratio", ""},
     {"most compliant element", "/dominant/name", ""},
     {"its share of the compliance", "/dominant/compliance_share", ""},

@@ -143,11 +143,26 @@ struct Input {
     }
   };
 
+  /// The verdict's limits at end b (none has a default: each is a requirement of the machine).
+  struct Limits {
+    std::optional<double> rigidity_Nm_per_rad, backlash_arcmin, deflection_deg;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("rigidity_Nm_per_rad", &rigidity_Nm_per_rad,
+               Field().Positive().Unit("N·m/rad").Desc("the least torsional rigidity at end b"));
+      a->Visit("backlash_arcmin", &backlash_arcmin,
+               Field().NonNegative().Unit("arcmin").Desc("the most backlash at end b"));
+      a->Visit("deflection_deg", &deflection_deg,
+               Field().Positive().Unit("deg").Desc("the most deflection at end b under load_torque_Nm (needs it)"));
+    }
+  };
+
   std::string study = "transmission_rigidity", name = "transmission";
   std::optional<std::string> description;
   std::optional<Material> material;
   std::vector<Element> chain;
   std::optional<double> load_torque_Nm, report_radius_mm;
+  Limits limits;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("study", &study, Field().Required().Const("transmission_rigidity").Desc("the study kind"));
@@ -161,6 +176,7 @@ struct Input {
              Field().Positive().Unit("N·m").Desc("a torque at end b for the deflection (absent: none reported)"));
     a->Visit("report_radius_mm", &report_radius_mm,
              Field().Positive().Unit("mm").Desc("a radius at end b to report the deflection at as a length"));
+    a->Visit("limits", &limits, Field().Desc("requirements at end b for the verdict (each optional)"));
   }
 };
 
@@ -188,6 +204,7 @@ struct Study {
   std::optional<double> report_radius_mm;
   std::optional<double> load_torque_Nm;
   std::string chain_where;  ///< "FILE: PATH" of the chain, for an all-rigid chain
+  Input::Limits limits;     ///< the verdict's limits at end b
 };
 
 /// What a reducer element reports besides its chain numbers.

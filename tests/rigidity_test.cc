@@ -403,6 +403,36 @@ TEST(RigidityStudy, ExamplesRunThroughTheCli) {
   }
 }
 
+// The verdict's limits at end b: the gearbox example asks for 30 000 N·m/rad, 3 arcmin and 0.1°
+// under 50 N·m; its backlash at end b is the coupling's 6′ and the stage's 3′ seen through the
+// 5:1 stage, 6/5 + 3 = 4.2′ (by hand), so that limit alone fails.
+TEST(RigidityStudy, LimitsAtEndBGiveTheVerdict) {
+  namespace tr = studies::transmission_rigidity;
+  nlohmann::json study = camopt::testing::Example("rigidity_gearbox.json");
+  tr::Study s = tr::Parse(studies::Node(&study, "gearbox.json", ""));
+  nlohmann::json j = tr::ToJson(s, tr::Run(s, studies::RunContext{"", true}));
+  EXPECT_NEAR(j["backlash_at_end_b_arcmin"].get<double>(), 6.0 / 5.0 + 3.0, 1e-9);
+  EXPECT_TRUE(j["rigidity_ok"].get<bool>());
+  EXPECT_FALSE(j["backlash_ok"].get<bool>());
+  EXPECT_TRUE(j["deflection_ok"].get<bool>());
+  EXPECT_FALSE(j["limits_ok"].get<bool>());
+  const auto dir = camopt::testing::TempDir("rigidity-limits");
+  camopt::testing::WriteFile(dir / "s.json", study.dump());
+  const auto res = camopt::testing::RunCamopt("run -q --strict " + (dir / "s.json").string() + " -o " + (dir / "o").string());
+  EXPECT_EQ(res.exit_code, 3);
+  EXPECT_NE(res.stderr_text.find("1 of 3 limits exceeded: backlash at end b"), std::string::npos) << res.stderr_text;
+  // Without limits: no verdict keys; a deflection limit without the torque is refused.
+  study.erase("limits");
+  s = tr::Parse(studies::Node(&study, "gearbox.json", ""));
+  EXPECT_FALSE(tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})).contains("limits_ok"));
+  study.erase("load_torque_Nm");
+  study["limits"] = {{"deflection_deg", 0.1}};
+  camopt::testing::WriteFile(dir / "bad.json", study.dump());
+  const auto bad = camopt::testing::RunCamopt("run -q " + (dir / "bad.json").string() + " -o " + (dir / "b").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.stderr_text.find("/limits/deflection_deg"), std::string::npos) << bad.stderr_text;
+}
+
 TEST(RigidityStudy, BadInputIsAClearErrorWithExitCode2) {
   const auto dir = camopt::testing::TempDir("rigidity-bad");
   const std::string shaft =

@@ -450,6 +450,10 @@ const std::vector<CrossField> kCrossField = {
     {"cycloid_ltca", "/discs", "the disc stack", "the output pins' span against the discs' stack (discs, spacing, face width)"},
     {"cycloid_ltca", "/output_mechanism/roller_radius_mm", "a roller radius > pin_radius_mm",
      "a roller on the pin is larger than the pin"},
+    {"transmission_rigidity", "/limits/deflection_deg", "needs the torque it is under",
+     "a deflection limit needs load_torque_Nm"},
+    {"transmission_rigidity", "/load_torque_Nm", "needs the torque it is under",
+     "a deflection limit needs load_torque_Nm"},
 };
 
 // Disagreements found by this test and not yet resolved: conditions JSON Schema could state
