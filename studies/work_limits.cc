@@ -281,22 +281,6 @@ WorkEstimate DiscCamMinSize(const json& s, double factor) {
                  1e8 * factor, "cam angle evaluations", 16);
 }
 
-WorkEstimate DiscCam(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const double steps = Size(a, "angle_steps", 3600);
-  std::vector<Term> terms = {{steps, "/analysis/angle_steps", Num(steps) + " angle steps"}};
-  const json& mc = Sub(a, "monte_carlo");
-  if (!mc.is_boolean() || mc.get<bool>()) {
-    const double samples = Size(mc, "samples", 200), mc_steps = Size(mc, "angle_steps", 360);
-    const json& scales = Sub(mc, "scales");
-    const double n_scales = scales.is_array() ? double(scales.size()) : 3;
-    terms.push_back({samples * mc_steps * n_scales, "/analysis/monte_carlo",
-                     Num(samples) + " samples × " + Num(mc_steps) + " angle steps × " +
-                         Num(n_scales) + " scales"});
-  }
-  return Largest(terms, 2e6 * factor, "cam angle evaluations", 200);
-}
-
 WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   const json& search = Sub(s, "search");
   const double lobes = Size(search, "max_lobes", 40);
@@ -425,7 +409,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);
-  if (kind == "disc_cam") return DiscCam(study, factor);
   if (kind == "disc_cam_min_size") return DiscCamMinSize(study, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
   if (kind == "lcr_crowning_tuning") return LcrCrowningTuning(study, factor);
