@@ -437,6 +437,9 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam", "/analysis/evaluate/", "missing required field", "analysis.evaluate's error stages need the tolerances"},
     {"disc_cam", "/analysis/monte_carlo/", "samples × angle_steps × scales must stay below 1e8",
      "the Monte-Carlo work: samples × angle_steps × scales below 1e8"},
+    {"disc_cam_min_size", "/follower/", "unknown field", "the follower's fields by follower.type"},
+    {"disc_cam_min_size", "/limits/contact_stress_MPa", "cannot be checked without",
+     "the contact-stress limit needs face_width_mm, material and dynamics"},
     {"globoidal_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"globoidal_cam", "/contact/contact_arm_mm", "expected a length in [l₂, l₁]",
      "the contact arm lies on the roller, [l₂, l₁] from the cam geometry"},
@@ -619,7 +622,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 
 // ---------------------------------------------------------------------------------------------
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
-const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "disc_cam"};
+const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "disc_cam", "disc_cam_min_size"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
