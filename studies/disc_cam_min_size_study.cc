@@ -9,6 +9,7 @@
 #include "studies/format.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::disc_cam_min_size {
@@ -94,10 +95,10 @@ nlohmann::json CycleJson(const objectives::DiscCamCycleValues& v) {
 
 }  // namespace
 
+// The checks that span fields (the design by disc_cam::Parse, the follower's type, the ranges'
+// order) and the sizing problem.
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion", "tolerances",
-                         "analysis", "cam_thickness_mm", "bore_diameter_mm", "cutter_radius_mm", "geometry_files",
-                         "limits", "dynamics", "face_width_mm", "material", "variables", "optimizer"});
+  const Input in = Read<Input>(root);
   Study s;
   // The disc_cam part, read by the disc_cam parser (same paths: only the sizing's own fields are
   // taken out, and its analysis block, which is the sizing's).
@@ -109,7 +110,7 @@ Study Parse(const Node& root) {
     checked["analysis"] = {{"monte_carlo", false}};
     s.base = disc_cam::Parse(Node(&checked, root.file(), root.path()));
   }
-  s.name = root.StringOr("name", "disc cam");
+  s.name = in.design.name;
   const dc::DiscCam& cam = s.base.cam;
   if (cam.follower != dc::FollowerType::kTranslatingRoller)
     root["follower"]["type"].FailWith(
@@ -120,25 +121,19 @@ Study Parse(const Node& root) {
   objectives::DiscCamSizingSpec& spec = s.spec;
   spec.cam = cam;
   const Node vars = root["variables"];
-  vars.CheckKnownFields({"base_circle_radius_mm", "offset_mm", "roller_radius_mm"});
   struct Entry {
     const char* key;
     DiscCamSizingVariable which;
     double start;
-    bool positive;
+    bool given;
   };
   const Entry entries[] = {{"base_circle_radius_mm", DiscCamSizingVariable::kBaseCircle, cam.base_radius, true},
-                           {"offset_mm", DiscCamSizingVariable::kOffset, cam.offset, false},
-                           {"roller_radius_mm", DiscCamSizingVariable::kRollerRadius, cam.roller_radius, true}};
+                           {"offset_mm", DiscCamSizingVariable::kOffset, cam.offset, bool(in.variables.offset_mm)},
+                           {"roller_radius_mm", DiscCamSizingVariable::kRollerRadius, cam.roller_radius,
+                            bool(in.variables.roller_radius_mm)}};
   for (const Entry& e : entries) {
-    if (e.which == DiscCamSizingVariable::kBaseCircle) (void)vars[e.key];  // required: "missing field"
-    if (!vars.Has(e.key)) continue;
-    const Node n = vars[e.key];
-    if (e.positive && n.json().is_array() && n.json().size() == 2) {
-      (void)n[0].Positive();
-      (void)n[1].Positive();
-    }
-    const auto [lo, hi] = n.Range();
+    if (!e.given) continue;
+    const auto [lo, hi] = vars[e.key].Range();  // lower <= upper
     objectives::Variable v;
     v.name = e.key;
     v.lower = lo;
@@ -162,30 +157,12 @@ Study Parse(const Node& root) {
     spec.stress = m;
   }
 
-  spec.angle_steps = kDefaultAngleSteps;
-  spec.accurate_factor = kDefaultAccurateFactor;
-  if (root.Has("analysis")) {
-    const Node a = root["analysis"];
-    a.CheckKnownFields({"angle_steps", "accurate_factor"});
-    spec.angle_steps = a.IntegerOr("angle_steps", 36, kDefaultAngleSteps);
-    if (spec.angle_steps > 100000) a["angle_steps"].Fail("a whole number <= 100000");
-    spec.accurate_factor = a.IntegerOr("accurate_factor", 2, kDefaultAccurateFactor);
-    if (spec.accurate_factor > 64) a["accurate_factor"].Fail("a whole number <= 64");
-  }
-
+  spec.angle_steps = in.analysis.angle_steps;
+  spec.accurate_factor = in.analysis.accurate_factor;
   optimizers::SolverOptions& so = s.options.solver;
-  so.max_evaluations = kDefaultMaxEvaluations;
-  s.options.verify_rounds = kDefaultVerifyRounds;
-  if (root.Has("optimizer")) {
-    const Node o = root["optimizer"];
-    o.CheckKnownFields({"backend", "max_evaluations", "verify_rounds"});
-    s.backend = o.StringOr("backend", "ipopt");
-    if (s.backend != "ipopt" && s.backend != "slsqp") o["backend"].Fail("one of \"ipopt\", \"slsqp\"");
-    so.max_evaluations = o.IntegerOr("max_evaluations", 1, kDefaultMaxEvaluations);
-    if (so.max_evaluations > 10000) o["max_evaluations"].Fail("a whole number <= 10000");
-    s.options.verify_rounds = o.IntegerOr("verify_rounds", 0, kDefaultVerifyRounds);
-    if (s.options.verify_rounds > 10) o["verify_rounds"].Fail("a whole number <= 10");
-  }
+  s.backend = in.optimizer.backend;
+  so.max_evaluations = in.optimizer.max_evaluations;
+  s.options.verify_rounds = in.optimizer.verify_rounds;
   so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
   // The rows are smooth (closed forms over the angle samples): tight tolerances, and the budget,
   // never the clock, bounds a run (the same study gives the same design).
@@ -386,16 +363,39 @@ CAMOPT_REGISTER_STUDY_PARSER("disc_cam_min_size", [](const Node& root) { (void)P
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the fast rows' angles (the
 // accurate grid follows them) and the optimizer's budget. The verified answer should not move.
+CAMOPT_REGISTER_DECLARED_KIND("disc_cam_min_size", Input,
+                              "camopt study: the smallest base circle of a disc cam with a translating roller "
+                              "follower");
+
 Fidelity Knobs(const nlohmann::json&) {
+  const Input defaults;
   Fidelity f;
-  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, kDefaultAngleSteps, 2, true, 0,
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, defaults.analysis.angle_steps, 2, true, 0,
                      "cam angles of the fast rows (the accurate grid is accurate_factor times as fine)"});
-  f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, kDefaultMaxEvaluations, 2, true, 0,
+  f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, defaults.optimizer.max_evaluations, 2, true, 0,
                      "optimizer budget per solve (Ipopt: iterations; SLSQP: evaluations)"});
   f.headlines = {"/best/base_circle_radius_mm", "/best/accurate/pressure_angle_deg/max_rise"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("disc_cam_min_size", Knobs);
+
+// The work limit (studies/work_limits.h): every solve (two starts, the tightening rounds, two
+// re-solves per limit for its cost) may use its whole budget of iterations, each a few evaluations
+// of every fast row (one cam point each); each accurate check evaluates the dense grid three times
+// (fast, dense, refined).
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = Read<Input>(Node(&study, file, ""));
+  const double steps = in.analysis.angle_steps, dense = steps * in.analysis.accurate_factor;
+  const double budget = std::max(1, in.optimizer.max_evaluations), rounds = in.optimizer.verify_rounds;
+  const double solves = 2 + rounds + 6;
+  return LargestTerm({{budget * solves * 3 * steps, "/optimizer/max_evaluations",
+                       WorkNumber(budget) + " iterations × " + WorkNumber(solves) + " solves × 3 evaluations × " +
+                           WorkNumber(steps) + " angle steps"},
+                      {(1 + rounds) * 3 * dense, "/analysis/accurate_factor",
+                       WorkNumber(1 + rounds) + " accurate checks × 3 × " + WorkNumber(dense) + " cam angles"}},
+                     1e8 * factor, "cam angle evaluations", 16);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam_min_size", EstimateWork);
 
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("disc_cam_min_size", {

@@ -13,11 +13,14 @@
 // best design on the accurate grid).
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "objectives/disc_cam_min_size.h"
+#include "studies/archive.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/study.h"
@@ -28,6 +31,72 @@ inline constexpr int kDefaultAngleSteps = 360;
 inline constexpr int kDefaultAccurateFactor = 8;
 inline constexpr int kDefaultMaxEvaluations = 500;
 inline constexpr int kDefaultVerifyRounds = 4;
+
+/// The study file as declared (studies/archive.h): the disc_cam design (its parts declared by
+/// disc_cam::Input; the start design) with the sizing's own analysis, variables and optimizer.
+/// Parse reads it and hands the design to disc_cam::Parse; `camopt schema disc_cam_min_size` is
+/// emitted from it.
+struct Input {
+  struct Analysis {
+    int angle_steps = kDefaultAngleSteps, accurate_factor = kDefaultAccurateFactor;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_steps", &angle_steps,
+               Field().AtLeast(36).AtMost(100000).Desc("cam angles of the fast rows (the optimizer's constraints)"));
+      a->Visit("accurate_factor", &accurate_factor,
+               Field().AtLeast(2).AtMost(64).Desc("the accurate model's grid is this many times finer"));
+    }
+  };
+  /// The sized quantities: [lower, upper] each, lower <= upper (equal: a fixed value).
+  struct Variables {
+    std::array<double, 2> base_circle_radius_mm{};
+    std::optional<std::array<double, 2>> offset_mm, roller_radius_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const char* range = "[lower, upper], two numbers";
+      a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
+               Field().Required().Positive().Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the base circle radius, lower <= upper (equal: a fixed value)"));
+      a->Visit("offset_mm", &offset_mm,
+               Field().Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the follower's offset, lower <= upper (absent: the start's, fixed)"));
+      a->Visit("roller_radius_mm", &roller_radius_mm,
+               Field().Positive().Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the roller radius, lower <= upper (absent: the start's, fixed)"));
+    }
+  };
+  struct Optimizer {
+    std::string backend = "ipopt";
+    int max_evaluations = kDefaultMaxEvaluations, verify_rounds = kDefaultVerifyRounds;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend,
+               Field().OneOf({"ipopt", "slsqp"}, "one of \"ipopt\", \"slsqp\"").Desc("the NLP solver (slsqp: NLopt's)"));
+      a->Visit("max_evaluations", &max_evaluations,
+               Field().AtLeast(1).AtMost(10000).Desc("per solve (Ipopt: iterations; SLSQP: evaluations)"));
+      a->Visit("verify_rounds", &verify_rounds,
+               Field().AtLeast(0).AtMost(10).Desc("tightening rounds of the verification loop"));
+    }
+  };
+
+  disc_cam::Input design;  ///< its study and analysis are not visited: the sizing's own
+  Analysis analysis;
+  Variables variables;
+  Optimizer optimizer;
+  std::string study = "disc_cam_min_size";
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("disc_cam_min_size").Desc("the study kind"));
+    design.SerializeDesign(a, /*sizing=*/true);
+    a->Visit("analysis", &analysis, Field().Desc("the sizing's angle grids"));
+    design.SerializeGeometry(a);
+    a->Visit("variables", &variables,
+             Field().Required().Desc("the sized quantities (docs/disc_cam.md 'Smallest base circle'); the base "
+                                     "circle is the objective and always a variable"));
+    a->Visit("optimizer", &optimizer, Field().Desc("the optimizer and the verification loop"));
+  }
+};
 
 struct Study {
   std::string name;

@@ -9,6 +9,7 @@
 #include "studies/material_input.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::disc_cam {
@@ -75,36 +76,9 @@ nlohmann::json AtAngleOrNull(const std::optional<AtAngle>& x, bool angle) {
   return angle ? nlohmann::json(x->cam_angle_deg) : nlohmann::json(x->value);
 }
 
-}  // namespace
-
-Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "follower", "base_circle_radius_mm", "motion",
-                         "tolerances", "analysis", "cam_thickness_mm", "bore_diameter_mm", "cutter_radius_mm",
-                         "geometry_files", "limits", "dynamics", "face_width_mm", "material"});
-  Study s;
-  s.name = root.StringOr("name", "disc cam");
-  DiscCam& cam = s.cam;
-
-  const Node follower = root["follower"];
-  const std::string type = follower["type"].String();
-  if (type == "translating_roller") {
-    follower.CheckKnownFields({"type", "offset_mm", "roller_radius_mm"});
-    cam.follower = FollowerType::kTranslatingRoller;
-    cam.offset = follower.NumberOr("offset_mm", 0.0);
-  } else if (type == "oscillating_roller") {
-    follower.CheckKnownFields({"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
-    cam.follower = FollowerType::kOscillatingRoller;
-    cam.pivot_distance = follower["pivot_distance_mm"].Positive();
-    cam.arm_length = follower["arm_length_mm"].Positive();
-  } else {
-    follower["type"].Fail("\"translating_roller\" or \"oscillating_roller\"");
-  }
-  cam.base_radius = root["base_circle_radius_mm"].Positive();
-  cam.roller_radius = PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius");
-  for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
-
-  // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
-  const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
+// How the motion's rise is written for a follower (ParseMotionProgram): a length for a
+// translating, an angle for an oscillating one; durations in degrees; polynomial segments.
+MotionInputSpec FollowerMotionSpec(bool oscillating) {
   MotionInputSpec spec;
   spec.subject = "follower";
   spec.allow_polynomial = true;
@@ -117,81 +91,109 @@ Study Parse(const Node& root) {
     spec.misplaced_key = "rise_deg";
     spec.misplaced_hint = "a translating follower's rise is a length: use rise_mm";
   }
-  cam.motion = ParseMotionProgram(root["motion"], spec);
+  return spec;
+}
+
+}  // namespace
+
+nlohmann::ordered_json Input::MotionSchema(bool sizing) {
+  if (sizing) return studies::MotionSchema({FollowerMotionSpec(false)}, {"a length"}, true);
+  return studies::MotionSchema({FollowerMotionSpec(false), FollowerMotionSpec(true)},
+                               {"translating follower", "oscillating follower"}, false);
+}
+
+nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
+  nlohmann::ordered_json s = {
+      {"description", "the Monte-Carlo check of the linearised error against the exact motion: true (its defaults), "
+                      "false (off) or its settings; off when every tolerance is zero"}};
+  MonteCarlo defaults;
+  SchemaEmitter::Describe(&defaults, Field(), s);
+  s["type"] = {"boolean", "object"};
+  s["default"] = true;
+  return s;
+}
+
+// The checks that span fields (the follower's fields by its type, lengths against the base
+// circle, the motion, the stages and the contact-stress limit against their inputs, the design
+// over the cycle) and the conversion of the declared input to model units.
+Study Parse(const Node& root) {
+  const Input in = Read<Input>(root);
+  Study s;
+  s.name = in.name;
+  DiscCam& cam = s.cam;
+
+  const Node follower = root["follower"];
+  const bool oscillating = in.follower.type == "oscillating_roller";
+  if (!oscillating) {
+    follower.CheckKnownFields({"type", "offset_mm", "roller_radius_mm"});
+    cam.follower = FollowerType::kTranslatingRoller;
+    cam.offset = in.follower.offset_mm.value_or(0.0);
+  } else {
+    follower.CheckKnownFields({"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
+    cam.follower = FollowerType::kOscillatingRoller;
+    cam.pivot_distance = follower["pivot_distance_mm"].Positive();  // required: "missing required field"
+    cam.arm_length = follower["arm_length_mm"].Positive();
+  }
+  cam.base_radius = in.base_circle_radius_mm;
+  cam.roller_radius = PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius");
+  for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
+
+  // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
+  cam.motion = ParseMotionProgram(root["motion"], FollowerMotionSpec(oscillating));
 
   s.geometry = ParseGeometryFiles(root);
-  if (root.Has("cam_thickness_mm"))
+  if (in.cam_thickness_mm)
     s.cam_thickness_mm = PlausibleLength(root["cam_thickness_mm"], cam.base_radius, "the base circle radius");
-  if (root.Has("cutter_radius_mm")) {
-    s.cutter_radius_mm = root["cutter_radius_mm"].Positive();
+  if (in.cutter_radius_mm) {
+    s.cutter_radius_mm = *in.cutter_radius_mm;
     if (s.cutter_radius_mm > cam.roller_radius)
       root["cutter_radius_mm"].Fail("a cutter radius <= the roller radius (" + Format(cam.roller_radius, 6) + " mm)");
   }
-  if (root.Has("bore_diameter_mm")) {
+  if (in.bore_diameter_mm)
     s.bore_diameter_mm = ParseBoreDiameter(root["bore_diameter_mm"], 2 * cam.base_radius, "the base circle diameter");
-  }
-  if (root.Has("tolerances")) {
-    const Node t = root["tolerances"];
-    t.CheckKnownFields({"profile_radial_um", "roller_radius_um", "profile_normal_um"});
-    s.tolerances.radial = t.NonNegativeOr("profile_radial_um", 0.0) * 1e-3;
-    s.tolerances.roller = t.NonNegativeOr("roller_radius_um", 0.0) * 1e-3;
-    s.tolerances.normal = t.NonNegativeOr("profile_normal_um", 0.0) * 1e-3;
+  if (in.tolerances) {
+    s.tolerances.radial = in.tolerances->profile_radial_um * 1e-3;
+    s.tolerances.roller = in.tolerances->roller_radius_um * 1e-3;
+    s.tolerances.normal = in.tolerances->profile_normal_um * 1e-3;
   }
   // Limits of the verdict; defaults are the textbook rules (docs/disc_cam.md "Limits and verdict").
   s.limits.pressure_angle_deg = oscillating ? kDefaultPressureAngleOscillatingDeg : kDefaultPressureAngleTranslatingDeg;
   s.limits.radius_margin_mm = cam.roller_radius;
-  if (root.Has("limits")) {
-    const Node l = root["limits"];
-    l.CheckKnownFields({"pressure_angle_deg", "radius_margin_mm", "contact_stress_MPa"});
-    if (l.Has("pressure_angle_deg")) {
-      const double a = l["pressure_angle_deg"].Positive();
-      if (!(a < dc::kJamPressureAngle / kDeg))
-        l["pressure_angle_deg"].Fail("a pressure angle > 0 and < " + Format(dc::kJamPressureAngle / kDeg) +
-                                     " deg (the jam limit)");
-      s.limits.pressure_angle_deg = a;
-      s.limits.pressure_angle_default = false;
-    }
-    if (l.Has("radius_margin_mm")) {
-      s.limits.radius_margin_mm = l["radius_margin_mm"].NonNegative();
-      s.limits.radius_margin_default = false;
-    }
+  const Input::Limits limits = in.limits.value_or(Input::Limits{});
+  if (limits.pressure_angle_deg) {
+    s.limits.pressure_angle_deg = *limits.pressure_angle_deg;
+    s.limits.pressure_angle_default = false;
   }
-  if (root.Has("face_width_mm"))
+  if (limits.radius_margin_mm) {
+    s.limits.radius_margin_mm = *limits.radius_margin_mm;
+    s.limits.radius_margin_default = false;
+  }
+  if (in.face_width_mm)
     s.face_width_mm = PlausibleLength(root["face_width_mm"], cam.base_radius, "the base circle radius");
-  if (root.Has("material")) {
-    root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-    s.material = ParseMaterial(root["material"]);
-  }
-  if (root.Has("dynamics")) {
-    const Node d = root["dynamics"];
+  if (in.material) s.material = in.material->ToMaterial();
+  if (in.dynamics) {
     if (oscillating)
-      d.FailWith("the kinetostatic loads are implemented for a translating roller follower only (an oscillating "
-                 "arm needs its moment of inertia and the moments about its pivot): remove \"dynamics\" or use "
-                 "follower.type \"translating_roller\"");
-    d.CheckKnownFields({"speed_rpm", "follower_mass_kg", "spring_rate_N_per_mm", "spring_preload_N",
-                        "external_load_N", "follower_axis"});
+      root["dynamics"].FailWith(
+          "the kinetostatic loads are implemented for a translating roller follower only (an oscillating "
+          "arm needs its moment of inertia and the moments about its pivot): remove \"dynamics\" or use "
+          "follower.type \"translating_roller\"");
+    const Input::Dynamics& d = *in.dynamics;
     Study::Dynamics dyn;
-    dyn.speed_rpm = d["speed_rpm"].Positive();
-    dyn.loads.mass_kg = d["follower_mass_kg"].Positive();
-    dyn.loads.spring_rate_N_per_mm = d.NonNegativeOr("spring_rate_N_per_mm", 0.0);
-    dyn.loads.spring_preload_N = d.NonNegativeOr("spring_preload_N", 0.0);
-    dyn.loads.external_load_N = d.NumberOr("external_load_N", 0.0);
-    dyn.follower_axis = d.StringOr("follower_axis", dyn.follower_axis);
+    dyn.speed_rpm = d.speed_rpm;
+    dyn.loads.mass_kg = d.follower_mass_kg;
+    dyn.loads.spring_rate_N_per_mm = d.spring_rate_N_per_mm;
+    dyn.loads.spring_preload_N = d.spring_preload_N;
+    dyn.loads.external_load_N = d.external_load_N;
+    dyn.follower_axis = d.follower_axis;
     // The weight along the follower axis, toward the cam: a follower above the cam presses on it.
-    if (dyn.follower_axis == "vertical_above_cam") {
-      dyn.loads.weight_N = dyn.loads.mass_kg * dc::kStandardGravity;
-    } else if (dyn.follower_axis == "vertical_below_cam") {
-      dyn.loads.weight_N = -dyn.loads.mass_kg * dc::kStandardGravity;
-    } else if (dyn.follower_axis == "horizontal") {
-      dyn.loads.weight_N = 0.0;
-    } else {
-      d["follower_axis"].Fail("\"vertical_above_cam\", \"vertical_below_cam\" or \"horizontal\"");
-    }
+    if (dyn.follower_axis == "vertical_above_cam") dyn.loads.weight_N = dyn.loads.mass_kg * dc::kStandardGravity;
+    else if (dyn.follower_axis == "vertical_below_cam") dyn.loads.weight_N = -dyn.loads.mass_kg * dc::kStandardGravity;
+    else dyn.loads.weight_N = 0.0;  // horizontal
     s.dynamics = dyn;
   }
-  if (root.Has("limits") && root["limits"].Has("contact_stress_MPa")) {
+  if (limits.contact_stress_MPa) {
     const Node l = root["limits"]["contact_stress_MPa"];
-    s.limits.contact_stress_MPa = l.Positive();
+    s.limits.contact_stress_MPa = *limits.contact_stress_MPa;
     std::string missing;
     for (const auto& [absent, what] : {std::pair{!s.face_width_mm, "face_width_mm (the contact length of roller and cam)"},
                                        std::pair{!s.material, "material (youngs_modulus_GPa, poisson_ratio)"},
@@ -199,45 +201,30 @@ Study Parse(const Node& root) {
       if (absent) missing += (missing.empty() ? "" : ", ") + std::string(what);
     if (!missing.empty()) l.FailWith("the contact stress cannot be checked without " + missing + ": add them or remove the limit");
   }
+  s.angle_steps = in.analysis.angle_steps;
   dc::MonteCarloOptions& mc = s.monte_carlo_options;
-  if (root.Has("analysis")) {
-    const Node a = root["analysis"];
-    a.CheckKnownFields({"angle_steps", "monte_carlo", "evaluate"});
-    s.angle_steps = a.IntegerOr("angle_steps", 36, 3600);
-    if (s.angle_steps > 1000000) a["angle_steps"].Fail("a whole number <= 1000000");
-    if (a.Has("monte_carlo")) {
-      const Node m = a["monte_carlo"];
-      if (m.json().is_boolean()) {
-        s.monte_carlo = m.Bool();
-      } else {
-        m.CheckKnownFields({"samples", "angle_steps", "seed", "scales"});
-        mc.samples = m.IntegerOr("samples", 1, mc.samples);
-        mc.angle_steps = m.IntegerOr("angle_steps", 36, mc.angle_steps);
-        mc.seed = static_cast<uint64_t>(m.IntegerOr("seed", 0, 1));
-        if (m.Has("scales")) {
-          mc.scales.clear();
-          for (const Node& k : m["scales"].Elements()) mc.scales.push_back(k.Positive());
-          if (mc.scales.empty()) m["scales"].Fail("a non-empty array of numbers > 0");
-        }
-        if (double(mc.samples) * mc.angle_steps * mc.scales.size() > 1e8)
-          m.FailWith("samples × angle_steps × scales must stay below 1e8");
-      }
+  if (!in.analysis.monte_carlo.is_null()) {
+    const Node m = root["analysis"]["monte_carlo"];
+    if (m.json().is_boolean()) {
+      s.monte_carlo = m.Bool();
+    } else {
+      const Input::MonteCarlo o = Read<Input::MonteCarlo>(m);
+      mc.samples = o.samples;
+      mc.angle_steps = o.angle_steps;
+      mc.seed = static_cast<uint64_t>(o.seed);
+      mc.scales = o.scales;
+      if (double(mc.samples) * mc.angle_steps * mc.scales.size() > 1e8)
+        m.FailWith("samples × angle_steps × scales must stay below 1e8");
     }
   }
-  if (root.Has("analysis") && root["analysis"].Has("evaluate")) {
+  if (in.analysis.evaluate) {
     // Lazy stages: the profile always runs; "error" adds the mechanical error, "monte_carlo"
     // the error and its Monte-Carlo check. A stage asked for needs its inputs (the tolerances).
     s.evaluate_given = true;
     bool error = false, mc_asked = false;
-    for (const Node& n : root["analysis"]["evaluate"].Elements()) {
-      const std::string stage = n.String();
-      if (stage == "error") {
-        error = true;
-      } else if (stage == "monte_carlo") {
-        error = mc_asked = true;
-      } else if (stage != "profile") {
-        n.Fail("one of \"profile\", \"error\", \"monte_carlo\"");
-      }
+    for (const std::string& stage : *in.analysis.evaluate) {
+      if (stage == "error") error = true;
+      else if (stage == "monte_carlo") error = mc_asked = true;
     }
     if (error) (void)root["tolerances"];  // "missing required field" when absent
     s.error_stage = error;
@@ -752,24 +739,31 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("disc_cam");
 
+CAMOPT_REGISTER_DECLARED_KIND("disc_cam", Input, "camopt study: disc cam with a roller follower");
+
+// The declared input of a study, for the estimates below that run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
+
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid and, when the
 // Monte-Carlo check runs, its sample count and grid.
 Fidelity Knobs(const nlohmann::json& study) {
+  const Input in = ReadInput(study, "");
+  const Input defaults;
+  const Input::MonteCarlo mc_defaults;
   Fidelity f;
-  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 3600, 2, true, 0,
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, defaults.analysis.angle_steps, 2, true, 0,
                      "samples of the revolution (extrema are sampled)"});
-  const auto mc = nlohmann::json::json_pointer("/analysis/monte_carlo");
-  const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
-  bool mc_on = !study.contains(mc) || study[mc].is_object();  // `true` has no fields to set
-  if (study.contains(ev)) {
-    bool asked = false;
-    for (const auto& e : study[ev]) asked = asked || e == "monte_carlo";
-    mc_on = mc_on && asked;
+  const nlohmann::json& mc = in.analysis.monte_carlo;
+  bool mc_on = mc.is_null() || mc.is_object();  // `true` has no fields to set
+  if (in.analysis.evaluate) {
+    const auto& ev = *in.analysis.evaluate;
+    mc_on = mc_on && std::find(ev.begin(), ev.end(), "monte_carlo") != ev.end();
   }
   if (mc_on) {
-    f.knobs.push_back({"monte_carlo_samples", {"/analysis/monte_carlo/samples"}, 200, 2, true, 0,
+    f.knobs.push_back({"monte_carlo_samples", {"/analysis/monte_carlo/samples"}, mc_defaults.samples, 2, true, 0,
                        "Monte-Carlo samples per scale"});
-    f.knobs.push_back({"monte_carlo_angle_steps", {"/analysis/monte_carlo/angle_steps"}, 360, 2, true, 0,
+    f.knobs.push_back({"monte_carlo_angle_steps", {"/analysis/monte_carlo/angle_steps"}, mc_defaults.angle_steps, 2,
+                       true, 0,
                        "angle grid of each Monte-Carlo sample"});
   }
   f.headlines = {"/pressure_angle_deg/max", "/min_radius_of_curvature_mm", "/max_radial_dimension_mm",
@@ -778,6 +772,26 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("disc_cam", Knobs);
+
+// The work limit (studies/work_limits.h): the analysis grid and, unless switched off, the
+// Monte-Carlo samples × their grid × the tolerance scales (cam angle evaluations).
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const Input::Analysis& a = in.analysis;
+  std::vector<WorkTerm> terms = {
+      {double(a.angle_steps), "/analysis/angle_steps", WorkNumber(a.angle_steps) + " angle steps"}};
+  if (!a.monte_carlo.is_boolean() || a.monte_carlo.get<bool>()) {
+    const Input::MonteCarlo mc =
+        a.monte_carlo.is_object() ? Read<Input::MonteCarlo>(Node(&study, file, "")["analysis"]["monte_carlo"])
+                                  : Input::MonteCarlo{};
+    const double n_scales = double(mc.scales.size());
+    terms.push_back({double(mc.samples) * mc.angle_steps * n_scales, "/analysis/monte_carlo",
+                     WorkNumber(mc.samples) + " samples × " + WorkNumber(mc.angle_steps) + " angle steps × " +
+                         WorkNumber(n_scales) + " scales"});
+  }
+  return LargestTerm(terms, 2e6 * factor, "cam angle evaluations", 200);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam", EstimateWork);
 }  // namespace
 
 namespace {

@@ -18,11 +18,206 @@
 #include "model/disc_cam/kinetostatics.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/motion/motion_program.h"
+#include "studies/archive.h"
 #include "studies/geometry_files.h"
+#include "studies/material_input.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::disc_cam {
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds
+/// and description (studies/archive.h). Parse reads it, checks what spans fields (the follower's
+/// fields by its type, the plausible lengths against the base circle, the stages against their
+/// inputs) and converts it to the model's units (Study); `camopt schema disc_cam` is emitted from
+/// it. disc_cam_min_size declares its file with the same parts.
+struct Input {
+  /// The follower: the fields of its type only (translating: offset_mm; oscillating:
+  /// pivot_distance_mm and arm_length_mm, required), checked by Parse.
+  struct Follower {
+    std::string type;
+    double roller_radius_mm = 0.0;
+    /// Optional without a schema default: an oscillating follower has no offset (a default would
+    /// be written into its studies by the schema's users).
+    std::optional<double> offset_mm, pivot_distance_mm, arm_length_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("type", &type,
+               Field().Required().OneOf({"translating_roller", "oscillating_roller"}).Desc("the follower's kind"));
+      a->Visit("offset_mm", &offset_mm,
+               Field().Unit("mm").Desc("translating only: e, the follower axis's offset from the cam centre, positive as in "
+                                        "the paper's Fig. 1; |e| < r_b + r_f (absent: 0)"));
+      a->Visit("roller_radius_mm", &roller_radius_mm,
+               Field().Required().Positive().Unit("mm").Desc("r_f, of the roller (1e-6 to 1e6 times the base circle)"));
+      a->Visit("pivot_distance_mm", &pivot_distance_mm,
+               Field().Positive().Unit("mm").Desc("oscillating only, required: f = O₂O₃, cam centre to the arm's pivot"));
+      a->Visit("arm_length_mm", &arm_length_mm,
+               Field().Positive().Unit("mm").Desc("oscillating only, required: l, pivot to the roller centre; |f − l| < r_b + r_f < f + l"));
+    }
+  };
+  /// Manufacturing tolerances (Rzine et al., eqs. 31–32).
+  struct Tolerances {
+    double profile_radial_um = 0.0, roller_radius_um = 0.0, profile_normal_um = 0.0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("profile_radial_um", &profile_radial_um,
+               Field().NonNegative().Unit("µm").Desc("Δr, of the profile's radial dimension (eqs. 26–30)"));
+      a->Visit("roller_radius_um", &roller_radius_um, Field().NonNegative().Unit("µm").Desc("Δr_f, of the roller radius (eqs. 18–19, 25)"));
+      a->Visit("profile_normal_um", &profile_normal_um,
+               Field().NonNegative().Unit("µm").Desc("Δn, the profile's error along its normal (eqs. 16–17, 22)"));
+    }
+  };
+  /// The limits of the verdict; a limit not given takes its default.
+  struct Limits {
+    std::optional<double> pressure_angle_deg, radius_margin_mm, contact_stress_MPa;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      // Below the jam limit camopt::disc_cam::kJamPressureAngle (89°).
+      a->Visit("pressure_angle_deg", &pressure_angle_deg,
+               Field().Positive().Below(89.0, "a pressure angle > 0 and < 89 deg (the jam limit)").Unit("deg")
+                   .Desc("largest |φ| allowed, checked on the rise (S' ≥ 0, dwells included) and on the return (S' < 0) "
+                         "separately (absent: 30 translating, 45 oscillating)"));
+      a->Visit("radius_margin_mm", &radius_margin_mm,
+               Field().NonNegative().Unit("mm").Desc(
+                   "smallest convex pitch-curve radius minus the roller radius, i.e. the profile's smallest convex "
+                   "radius of curvature, at least this (absent: the roller radius)"));
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Positive().Unit("MPa").Desc(
+                   "peak Hertz stress between roller and cam; needs face_width_mm, material and dynamics (absent: "
+                   "not checked)"));
+    }
+  };
+  /// Kinetostatic follower loads at one cam speed (translating roller follower only).
+  struct Dynamics {
+    double speed_rpm = 0.0, follower_mass_kg = 0.0, spring_rate_N_per_mm = 0.0, spring_preload_N = 0.0,
+           external_load_N = 0.0;
+    std::string follower_axis = "vertical_above_cam";
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("speed_rpm", &speed_rpm, Field().Required().Positive().Unit("rpm").Desc("n, the cam speed"));
+      a->Visit("follower_mass_kg", &follower_mass_kg,
+               Field().Required().Positive().Unit("kg").Desc("m: follower, roller and a third of the spring"));
+      a->Visit("spring_rate_N_per_mm", &spring_rate_N_per_mm,
+               Field().NonNegative().Unit("N/mm").Desc("k, the return spring's rate"));
+      a->Visit("spring_preload_N", &spring_preload_N,
+               Field().NonNegative().Unit("N").Desc("F₀, the spring force on the base circle"));
+      a->Visit("external_load_N", &external_load_N,
+               Field().Unit("N").Desc("P, a constant load pressing the follower onto the cam (negative: pulling it off)"));
+      a->Visit("follower_axis", &follower_axis,
+               Field().OneOf({"vertical_above_cam", "vertical_below_cam", "horizontal"},
+                             "\"vertical_above_cam\", \"vertical_below_cam\" or \"horizontal\"")
+                   .Desc("where the weight m g acts: above the cam it presses the follower onto the cam, below it pulls it "
+                         "off, horizontal: across the axis"));
+    }
+  };
+  /// The Monte-Carlo check of the linearised error (the object form of analysis.monte_carlo).
+  struct MonteCarlo {
+    int samples = camopt::disc_cam::MonteCarloOptions{}.samples;
+    int angle_steps = camopt::disc_cam::MonteCarloOptions{}.angle_steps;
+    int seed = 1;
+    std::vector<double> scales = camopt::disc_cam::MonteCarloOptions{}.scales;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("samples", &samples, Field().AtLeast(1).Desc("random deviations drawn per tolerance scale"));
+      a->Visit("angle_steps", &angle_steps, Field().AtLeast(36).Desc("cam angles per sample"));
+      a->Visit("seed", &seed, Field().AtLeast(0).Desc("the random generator's seed"));
+      a->Visit("scales", &scales,
+               Field().Positive().MinItems(1, "a non-empty array of numbers > 0")
+                   .Desc("tolerance multipliers, one run each (samples × angle_steps × scales below 1e8)"));
+    }
+  };
+  struct Analysis {
+    int angle_steps = 3600;
+    nlohmann::json monte_carlo;  ///< true, false or a MonteCarlo object; null: absent (on)
+    std::optional<std::vector<std::string>> evaluate;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_steps", &angle_steps,
+               Field().AtLeast(36).AtMost(1000000, "a whole number <= 1000000")
+                   .Desc("cam angles over a revolution (the analysis grid)"));
+      a->Visit("monte_carlo", &monte_carlo, Field().Schema(MonteCarloSchema()));
+      a->Visit("evaluate", &evaluate,
+               Field().OneOf({"profile", "error", "monte_carlo"})
+                   .Desc("the stages to run (absent: all): the profile always runs; error adds the mechanical error, "
+                         "monte_carlo the error and its Monte-Carlo check; either needs the tolerances"));
+    }
+    /// true/false, or the MonteCarlo object (absent or true: its defaults).
+    static nlohmann::ordered_json MonteCarloSchema();
+  };
+
+  std::string study = "disc_cam", name = "disc cam";
+  std::optional<std::string> description;
+  Follower follower;
+  double base_circle_radius_mm = 0.0;
+  nlohmann::json motion;
+  std::optional<Tolerances> tolerances;
+  std::optional<Limits> limits;
+  std::optional<double> face_width_mm;
+  std::optional<MaterialInput> material;
+  std::optional<Dynamics> dynamics;
+  Analysis analysis;
+  std::optional<double> cam_thickness_mm, bore_diameter_mm, cutter_radius_mm;
+  nlohmann::json geometry_files;
+
+  /// The fields disc_cam and disc_cam_min_size share, in the file's order (all but study,
+  /// analysis): Serialize visits them between "study" and "analysis". `sizing`: as the start
+  /// design of disc_cam_min_size (a translating roller follower only).
+  template <typename Archive>
+  void SerializeDesign(Archive* a, bool sizing = false) {
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("follower", &follower,
+             Field().Required().Desc(sizing ? "the start design's follower; a translating roller follower only (an "
+                                              "oscillating one is refused)"
+                                            : "the roller follower"));
+    a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
+             Field().Required().Positive().Unit("mm").Desc(
+                 sizing ? "r_b, the start (clamped into variables.base_circle_radius_mm)"
+                        : "r_b, the base circle of the cam profile"));
+    a->Visit("motion", &motion, Field().Required().Schema(MotionSchema(sizing)).Desc(
+        "the follower's motion over one cam revolution: segments whose cam angles sum to 360, rising and "
+        "returning to the base circle"));
+    a->Visit("tolerances", &tolerances,
+             Field().Desc("manufacturing tolerances for the mechanical error (absent: none; needed by the error "
+                          "stages)"));
+    a->Visit("limits", &limits,
+             Field().Desc("limits of the verdict (docs/disc_cam.md 'Limits and verdict'); a limit not given takes "
+                          "its default"));
+    a->Visit("face_width_mm", &face_width_mm,
+             Field().Positive().Unit("mm").Desc("contact length of roller and cam, for the Hertz stress"));
+    a->Visit("material", &material, Field().Desc("roller and cam (both), for the Hertz stress"));
+    a->Visit("dynamics", &dynamics,
+             Field().Desc("kinetostatic follower loads at one cam speed (docs/disc_cam.md 'Kinetostatic loads'); "
+                          "translating roller follower only"));
+  }
+  /// The geometry files' fields (after "analysis" in the file).
+  template <typename Archive>
+  void SerializeGeometry(Archive* a) {
+    a->Visit("cam_thickness_mm", &cam_thickness_mm,
+             Field().Positive().Unit("mm").Desc("the cam's thickness: profile.step/.stl are written only with it"));
+    a->Visit("bore_diameter_mm", &bore_diameter_mm,
+             Field().Positive().Unit("mm").Desc("the bore of the STEP/STL solid, inside the base circle (absent: none)"));
+    a->Visit("cutter_radius_mm", &cutter_radius_mm,
+             Field().Positive().Unit("mm").Desc(
+                 "r_t ≤ r_f, a cutter for a CUTTER_PATH layer in the DXF (absent or r_t = r_f: the pitch curve is "
+                 "its path)"));
+    a->Visit("geometry_files", &geometry_files,
+             Field().Schema(GeometryFilesSchema(
+                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no "
+                 "DXF/STEP/STL)")));
+  }
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("disc_cam").Desc("the study kind"));
+    SerializeDesign(a);
+    a->Visit("analysis", &analysis, Field().Desc("the analysis grid, the Monte-Carlo check and the stages to run"));
+    SerializeGeometry(a);
+  }
+  /// The schema of "motion" (read by ParseMotionProgram): rise_mm for a translating, rise_deg for an
+  /// oscillating follower (`sizing`: rise_mm only, the rise by law in the schema); polynomial
+  /// segments.
+  static nlohmann::ordered_json MotionSchema(bool sizing);
+};
 
 /// The study file, parsed and validated (CheckDesign passed), in model units.
 struct Study {

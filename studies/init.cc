@@ -10,6 +10,27 @@
 #include "studies/suggest.h"
 
 namespace camopt::studies {
+namespace {
+
+// Every property with a schema "default" that `value` leaves out, added, at every level the study
+// has (objects, array items); for the fields a declaration keeps as JSON with a schema of their
+// own (a motion segment, analysis.monte_carlo's object form), whose defaults the echo cannot fill.
+void FillDefaults(const nlohmann::ordered_json& schema, nlohmann::ordered_json& value) {
+  if (value.is_array() && schema.contains("items")) {
+    for (auto& item : value) FillDefaults(schema["items"], item);
+    return;
+  }
+  if (!value.is_object() || !schema.contains("properties")) return;
+  for (auto it = schema["properties"].begin(); it != schema["properties"].end(); ++it) {
+    if (!value.contains(it.key())) {
+      if (it.value().contains("default")) value[it.key()] = it.value()["default"];
+      continue;
+    }
+    FillDefaults(it.value(), value[it.key()]);
+  }
+}
+
+}  // namespace
 
 InitStudy InitTemplate(const std::string& kind) {
   for (const auto& [name, text] : EmbeddedTemplates()) {
@@ -18,7 +39,9 @@ InitStudy InitTemplate(const std::string& kind) {
     InitStudy out;
     out.example = name;
     if (const DeclaredEcho echo = FindDeclaredEcho(kind)) {
-      out.text = echo(example, "studies/examples/" + name + ".json").dump(2) + "\n";
+      nlohmann::ordered_json study = echo(example, "studies/examples/" + name + ".json");
+      if (const std::string* schema = DeclaredSchema(kind)) FillDefaults(nlohmann::ordered_json::parse(*schema), study);
+      out.text = study.dump(2) + "\n";
       out.every_default = true;
     } else {
       out.text = text;

@@ -142,6 +142,78 @@ motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
   return program;
 }
 
+nlohmann::ordered_json MotionSchema(const std::vector<MotionInputSpec>& specs,
+                                    const std::vector<std::string>& rise_notes, bool rise_rules) {
+  using oj = nlohmann::ordered_json;
+  const bool polynomial = specs.front().allow_polynomial;
+  oj laws = oj::array(), moving = oj::array();
+  for (const std::string& law : motion::LawNames()) {
+    if (!polynomial && law == motion::LawName(motion::MotionLaw::kPolynomial)) continue;
+    laws.push_back(law);
+    if (law != motion::LawName(motion::MotionLaw::kPolynomial) && law != motion::LawName(motion::MotionLaw::kDwell))
+      moving.push_back(law);
+  }
+  oj props = oj::object();
+  props["law"] = {{"description", "the motion law of the segment"}, {"enum", laws}};
+  for (size_t i = 0; i < specs.size(); ++i)
+    props[specs[i].rise_key] = {{"description", "the " + specs[i].subject + "'s rise over the segment, " +
+                                                    rise_notes[i] + " (none or 0 for a dwell) [" + specs[i].unit + "]"},
+                                {"type", "number"}};
+  props["cam_angle_deg"] = {{"description", "the cam angle the segment spans [deg]"}, {"type", "number"}, {"exclusiveMinimum", 0}};
+  oj items = {{"type", "object"}};
+  if (polynomial) {
+    // A polynomial segment's boundary state (docs/disc_cam.md "Polynomial segments"): the keys of
+    // BoundaryKeys for each unit, position and velocity required, a jerk with the acceleration.
+    oj state = {{"type", "object"}}, sprops = oj::object(), any = oj::array(), dependent = oj::object();
+    for (const MotionInputSpec& spec : specs) {
+      const std::array<std::string, 4> k = BoundaryKeys(spec.unit);
+      sprops[k[0]] = {{"type", "number"},
+                      {"description", spec.subject + " displacement S [" + spec.unit + "] (absolute: 0 on the base circle)"}};
+      sprops[k[1]] = {{"type", "number"}, {"description", "dS/dθ [" + spec.unit + " per degree of cam angle]"}};
+      sprops[k[2]] = {{"type", "number"}, {"description", "d²S/dθ² (optional: with it the degree is 5)"}};
+      sprops[k[3]] = {{"type", "number"}, {"description", "d³S/dθ³ (optional, needs the acceleration: degree 7)"}};
+      any.push_back({{"required", {k[0], k[1]}}});
+      dependent[k[3]] = {k[2]};
+    }
+    state["properties"] = sprops;
+    if (any.size() == 1) state["required"] = any[0]["required"];
+    else state["anyOf"] = any;
+    state["dependentRequired"] = dependent;
+    state["additionalProperties"] = false;
+    props["boundary"] = {{"type", "object"},
+                         {"description", "law polynomial only: the " + specs.front().subject +
+                                             " at the segment's start and end (docs/disc_cam.md 'Polynomial segments')"},
+                         {"properties", {{"start", state}, {"end", state}}},
+                         {"required", {"start", "end"}},
+                         {"additionalProperties", false}};
+    props["boundary"]["properties"]["start"]["description"] = "the segment's start";
+    props["boundary"]["properties"]["end"]["description"] = "the segment's end";
+  }
+  items["properties"] = props;
+  items["required"] = {"law", "cam_angle_deg"};
+  items["additionalProperties"] = false;
+  if (polynomial) {
+    oj rise_given = oj::array();
+    for (const MotionInputSpec& spec : specs) rise_given.push_back({{"required", {spec.rise_key}}});
+    items["if"] = {{"properties", {{"law", {{"const", motion::LawName(motion::MotionLaw::kPolynomial)}}}}},
+                   {"required", {"law"}}};
+    items["then"] = {{"required", {"boundary"}},
+                     {"not", rise_given.size() == 1 ? rise_given[0] : oj{{"anyOf", rise_given}}}};
+    items["else"] = {{"not", {{"required", {"boundary"}}}}};
+  }
+  if (rise_rules) {
+    const std::string& key = specs.front().rise_key;
+    items["allOf"] = {
+        {{"$comment", "a moving law has a non-zero rise"},
+         {"if", {{"properties", {{"law", {{"enum", moving}}}}}, {"required", {"law"}}}},
+         {"then", {{"required", {key}}, {"properties", {{key, {{"not", {{"const", 0}}}}}}}}}},
+        {{"$comment", "a dwell has no rise (0 when given)"},
+         {"if", {{"properties", {{"law", {{"const", motion::LawName(motion::MotionLaw::kDwell)}}}}}, {"required", {"law"}}}},
+         {"then", {{"properties", {{key, {{"const", 0}}}}}}}}};
+  }
+  return {{"type", "array"}, {"minItems", 1}, {"items", items}};
+}
+
 std::vector<motion::Svaj<double>> SampleMotion(const motion::MotionProgram<double>& program,
                                                int n) {
   std::vector<motion::Svaj<double>> out(n);

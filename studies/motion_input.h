@@ -37,6 +37,14 @@ struct MotionInputSpec {
 /// Throws StudyError naming the segment and field, and for a discontinuity the two values.
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion, const MotionInputSpec& spec);
 
+/// The JSON Schema of a "motion" array as ParseMotionProgram reads it, for a kind whose follower
+/// may be any of `specs` (one per follower type; their rise keys side by side, the polynomial
+/// segments' boundary keys in either unit): the laws (polynomial when specs[0].allow_polynomial),
+/// each rise key described with `rise_notes` (same order), and with `rise_rules` the rise by law in
+/// the schema (a moving law has a non-zero rise, a dwell none or 0; one rise key only).
+nlohmann::ordered_json MotionSchema(const std::vector<MotionInputSpec>& specs,
+                                    const std::vector<std::string>& rise_notes, bool rise_rules);
+
 /// The program at n equally spaced cam angles θᵢ = 2π i/n (model units).
 std::vector<motion::Svaj<double>> SampleMotion(const motion::MotionProgram<double>& program, int n);
 

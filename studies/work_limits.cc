@@ -237,39 +237,6 @@ WorkEstimate CycloidMinSize(const json& s, double factor) {
                  5e8 * factor, "contact cell solves", 1);
 }
 
-// disc_cam_min_size: every solve (two starts, the tightening rounds, two re-solves per limit for
-// its cost) may use its whole budget of iterations, each a few evaluations of every fast row (one
-// cam point each); each accurate check evaluates the dense grid three times (fast, dense, refined).
-WorkEstimate DiscCamMinSize(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const json& o = Sub(s, "optimizer");
-  const double steps = Size(a, "angle_steps", 360), dense = steps * Size(a, "accurate_factor", 8);
-  const double budget = std::max(1.0, Size(o, "max_evaluations", 500)), rounds = Size(o, "verify_rounds", 4);
-  const double solves = 2 + rounds + 6;
-  return Largest({{budget * solves * 3 * steps, "/optimizer/max_evaluations",
-                   Num(budget) + " iterations × " + Num(solves) + " solves × 3 evaluations × " + Num(steps) +
-                       " angle steps"},
-                  {(1 + rounds) * 3 * dense, "/analysis/accurate_factor",
-                   Num(1 + rounds) + " accurate checks × 3 × " + Num(dense) + " cam angles"}},
-                 1e8 * factor, "cam angle evaluations", 16);
-}
-
-WorkEstimate DiscCam(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const double steps = Size(a, "angle_steps", 3600);
-  std::vector<Term> terms = {{steps, "/analysis/angle_steps", Num(steps) + " angle steps"}};
-  const json& mc = Sub(a, "monte_carlo");
-  if (!mc.is_boolean() || mc.get<bool>()) {
-    const double samples = Size(mc, "samples", 200), mc_steps = Size(mc, "angle_steps", 360);
-    const json& scales = Sub(mc, "scales");
-    const double n_scales = scales.is_array() ? double(scales.size()) : 3;
-    terms.push_back({samples * mc_steps * n_scales, "/analysis/monte_carlo",
-                     Num(samples) + " samples × " + Num(mc_steps) + " angle steps × " +
-                         Num(n_scales) + " scales"});
-  }
-  return Largest(terms, 2e6 * factor, "cam angle evaluations", 200);
-}
-
 WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   const json& search = Sub(s, "search");
   const double lobes = Size(search, "max_lobes", 40);
@@ -397,8 +364,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);
-  if (kind == "disc_cam") return DiscCam(study, factor);
-  if (kind == "disc_cam_min_size") return DiscCamMinSize(study, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
   if (kind == "lcr_crowning_tuning") return LcrCrowningTuning(study, factor);
   WorkEstimate none;

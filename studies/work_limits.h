@@ -14,8 +14,8 @@
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
 //   cycloid_min_size                max_evaluations × (starts + verify_rounds) × (2 + 0.65 variables) ×
 //                                   torques × angles × rollers × cells + the accurate checks ≤ 5e8
-//   disc_cam                        angle_steps + MC samples × angle_steps × scales ≤ 2e6
-//   disc_cam_min_size               max_evaluations × (8 + verify_rounds) × 3 × angle_steps, and the
+//   disc_cam (in the kind's file)   angle_steps + MC samples × angle_steps × scales ≤ 2e6
+//   disc_cam_min_size (kind's file) max_evaluations × (8 + verify_rounds) × 3 × angle_steps, and the
 //                                   accurate checks (1 + verify_rounds) × 3 × dense angles ≤ 1e8
 //   lcr_min_size                    lobe counts × differences × catalogue rollers × starts × (0.5 +
 //                                   samples_per_period/48) + with a 3D contact 30·(slices/20)³ per

@@ -425,6 +425,21 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam_min_size", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"disc_cam", "/motion", "the motion is not continuous",
      "a polynomial segment's boundary values continue the program (position so far, the neighbours' derivatives)"},
+    {"disc_cam", "/follower/", "unknown field", "the follower's fields by follower.type (offset_mm translating; "
+     "pivot_distance_mm, arm_length_mm oscillating)"},
+    {"disc_cam", "/follower/", "missing required field", "an oscillating follower needs pivot_distance_mm and arm_length_mm"},
+    {"disc_cam", "/dynamics", "translating roller follower only", "the kinetostatic loads need a translating follower"},
+    {"disc_cam", "/limits/contact_stress_MPa", "cannot be checked without",
+     "the contact-stress limit needs face_width_mm, material and dynamics"},
+    {"disc_cam", "/dynamics", "cannot be checked without", "the contact-stress limit needs the dynamics"},
+    {"disc_cam", "/face_width_mm", "cannot be checked without", "the contact-stress limit needs face_width_mm"},
+    {"disc_cam", "/material", "cannot be checked without", "the contact-stress limit needs the material"},
+    {"disc_cam", "/analysis/evaluate/", "missing required field", "analysis.evaluate's error stages need the tolerances"},
+    {"disc_cam", "/analysis/monte_carlo/", "samples × angle_steps × scales must stay below 1e8",
+     "the Monte-Carlo work: samples × angle_steps × scales below 1e8"},
+    {"disc_cam_min_size", "/follower/", "unknown field", "the follower's fields by follower.type"},
+    {"disc_cam_min_size", "/limits/contact_stress_MPa", "cannot be checked without",
+     "the contact-stress limit needs face_width_mm, material and dynamics"},
     {"globoidal_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"globoidal_cam", "/contact/contact_arm_mm", "expected a length in [l₂, l₁]",
      "the contact arm lies on the roller, [l₂, l₁] from the cam geometry"},
@@ -611,7 +626,8 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 
 // ---------------------------------------------------------------------------------------------
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
-const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity"};
+const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
+                                                 "disc_cam", "disc_cam_min_size"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
@@ -680,7 +696,8 @@ int FillDefaults(const Validator& v, const json& schema, json& value) {
       if (p.contains("default")) {
         value[it.key()] = p["default"];
         ++filled;
-      } else if (p.value("type", json()) == "object") {
+      } else if (p.value("type", json()) == "object" && !p.contains("required")) {
+        // (an object with required fields cannot be made of defaults alone)
         json o = json::object();
         if (FillDefaults(v, p, o) > 0) {
           filled += FillDefaults(v, p, o);
