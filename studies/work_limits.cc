@@ -175,33 +175,6 @@ double GridCells(const json& analysis) {
   return p * q;
 }
 
-WorkEstimate CycloidLtca(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const double rollers = Size(Sub(s, "drive"), "rollers", 16);
-  const double cells = GridCells(a);
-  const json& list = Sub(a, "crank_angles_deg");
-  // Every way of giving the angles counts: a list, uniform steps, or samples per mesh period.
-  const bool steps_given = Sub(a, "crank_angle_steps").is_number();
-  const double angles = list.is_array() ? double(list.size())
-                        : steps_given   ? Size(a, "crank_angle_steps", 60)
-                                        : Size(a, "crank_angles_per_mesh_period", 60);
-  // The path named is the factor furthest above its default (60 angles, 40×40 cells).
-  const std::string angles_path = list.is_array() ? "/analysis/crank_angles_deg"
-                                  : steps_given   ? "/analysis/crank_angle_steps"
-                                  : Sub(a, "crank_angles_per_mesh_period").is_null()
-                                      ? "/analysis"
-                                      : "/analysis/crank_angles_per_mesh_period";
-  const std::string path = !Sub(a, "grid").is_null() && cells / 1600.0 >= angles / 60.0 ? "/analysis/grid" : angles_path;
-  // The error estimate (on unless estimate_error is false) runs the angles once more (a shifted
-  // set) and a grid with a quarter of the cells.
-  const json& est = Sub(a, "estimate_error");
-  const double runs = est.is_boolean() && !est.get<bool>() ? 1.0 : 2.25;
-  return Largest({{runs * angles * rollers * cells, path,
-                   Num(runs) + " runs × " + Num(angles) + " crank angles × " + Num(rollers) + " rollers × " +
-                       Num(cells) + " grid cells"}},
-                 5e7 * factor, "contact cell solves", 24);
-}
-
 WorkEstimate CrowningTuning(const json& s, double factor) {
   const json& a = Sub(s, "analysis");
   const json& t = Sub(s, "tuning");
@@ -422,7 +395,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
     return it->second(study, file, factor);
   if (kind == "lcr_analysis") return LcrAnalysis(study, factor);
   if (kind == "transmission_rigidity") return Rigidity(study, factor, file);
-  if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);
   if (kind == "disc_cam") return DiscCam(study, factor);

@@ -9,7 +9,7 @@
 //   lcr_friction_fit                angle_steps × rollers + measurements  ≤ 2e7 (in the kind's file)
 //   transmission_rigidity           elements ≤ 1000; Σ reducer angle_steps × rollers × 2 ≤ 2e6
 //   globoidal_cam (in the kind's file) Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7
-//   cycloid_ltca                    runs (2.25 with the error estimate) × crank angles (a list,
+//   cycloid_ltca (in the kind's file) runs (2.25 with the error estimate) × crank angles (a list,
 //                                   crank_angle_steps or crank_angles_per_mesh_period) × rollers × cells ≤ 5e7
 //   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
 //   cycloid_min_size                max_evaluations × (starts + verify_rounds) × (2 + 0.65 variables) ×
