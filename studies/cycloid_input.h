@@ -42,13 +42,14 @@ struct DriveInput {
 
 /// "modification": the profile's equidistant and offset corrections [µm] (docs/cycloid.md).
 struct ModificationInput {
-  double delta_position_um = 0, delta_radius_um = 0;
+  /// Absent: 0 (no schema default: cycloid_min_size may size the field in "variables" instead).
+  std::optional<double> delta_position_um, delta_radius_um;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("delta_position_um", &delta_position_um,
-             Field().Unit("µm").Desc("Δa, modification of the pins' circle radius (negative: backlash)"));
+             Field().Unit("µm").Desc("Δa, modification of the pins' circle radius (negative: backlash; absent: 0)"));
     a->Visit("delta_radius_um", &delta_radius_um,
-             Field().Unit("µm").Desc("Δr, modification of the pin radius (positive: backlash)"));
+             Field().Unit("µm").Desc("Δr, modification of the pin radius (positive: backlash; absent: 0)"));
   }
 };
 

@@ -78,7 +78,7 @@ struct Input {
       a->Visit("estimate_error", &estimate_error,
                Field().Desc("estimate the discretisation error of the headlines (a refined run; loaded stage only)"));
       a->Visit("evaluate", &evaluate,
-               Field().OneOf({"unloaded", "loaded"})
+               Field().OneOf({"unloaded", "loaded"}, "one of \"unloaded\", \"loaded\"")
                    .Desc("the stages to run: [\"unloaded\"] the unloaded TCA only (no material or load needed); "
                          "absent: the loaded stage, which includes the unloaded one"));
     }
@@ -107,7 +107,7 @@ struct Input {
       a->Visit("roller_radius_mm", &roller_radius_mm,
                Field().Positive().Unit("mm").Desc("a roller on each pin, > pin_radius_mm: it touches the hole (absent: none)"));
       a->Visit("pin_support", &pin_support,
-               Field().OneOf({"cantilever", "both_ends"})
+               Field().OneOf({"cantilever", "both_ends"}, "one of \"cantilever\", \"both_ends\"")
                    .Desc("the pin fixed at the flange (cantilever, when absent) or supported at both ends"));
       a->Visit("pin_span_mm", &pin_span_mm,
                Field().Positive().Unit("mm").Desc(

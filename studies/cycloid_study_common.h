@@ -77,8 +77,8 @@ inline cycloid::Drive MakeDrive(const Node& root, const DriveInput& in, const st
   drive.eccentricity_mm = in.eccentricity_mm;
   drive.face_width_mm = in.face_width_mm;
   if (mod) {
-    drive.delta_position_mm = mod->delta_position_um * 1e-3;
-    drive.delta_radius_mm = mod->delta_radius_um * 1e-3;
+    drive.delta_position_mm = mod->delta_position_um.value_or(0.0) * 1e-3;
+    drive.delta_radius_mm = mod->delta_radius_um.value_or(0.0) * 1e-3;
   }
   CheckPlausible(root, drive);  // first: a unit mistake explains whatever else fails
   if (const std::string why = cycloid::CheckDrive(drive); !why.empty())

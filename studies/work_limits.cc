@@ -201,42 +201,6 @@ WorkEstimate CrowningTuning(const json& s, double factor) {
                  5e7 * factor, "contact cell solves", 1);
 }
 
-WorkEstimate CycloidMinSize(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const json& t = Sub(s, "target");
-  const json& o = Sub(s, "optimizer");
-  const double teeth = Sub(t, "teeth").is_number() ? Size(t, "teeth", 15)
-                       : Sub(t, "speed_ratio").is_number() ? std::abs(Sub(t, "speed_ratio").get<double>())
-                                                           : 15;
-  const double rollers = std::isfinite(teeth) ? teeth + 1 : 16;
-  const double cells = GridCells(a);
-  const double angles = Size(a, "crank_angles_per_mesh_period", 6);
-  const double torques = Sub(t, "overload_torque_Nm").is_number() ? 2 : 1;
-  // The variables that vary (a range or {"range": ...}); a fixed number costs nothing.
-  double variables = 0;
-  if (Sub(s, "variables").is_object())
-    for (const auto& v : s["variables"]) variables += v.is_array() || v.is_object() ? 1 : 0;
-  // Every solve (the starts, then one per tightening round of the verified-optimum loop) may use its
-  // whole budget, each iteration about two value runs of both cycles (the line search) and a
-  // gradient (about 0.65 value runs per variable, as in cycloid_crowning_tuning); each round's
-  // accurate check runs both cycles on twice the angles and four times the cells, and the fast ones
-  // beside them; the stress plot one more accurate design cycle. Measured on the examples (16 × 16
-  // cells, 4 angles): 4.5e6 (16 pins) to 9e6 (30 pins) of these units a second, and the solves use
-  // a fifth of their budget or less; the cap is about a minute of the full budget.
-  const double starts = std::max(1.0, Size(o, "starts", 2)), rounds = Size(o, "verify_rounds", 3);
-  const double budget = std::max(1.0, Size(o, "max_evaluations", 200));
-  const double cycle = angles * rollers * cells;
-  const double solves = budget * (starts + rounds) * (2 + 0.65 * variables) * torques * cycle;
-  const double checks = (1 + rounds) * (1 + 2 * 4) * torques * cycle + 2 * 4 * cycle;
-  return Largest({{solves, "/optimizer/max_evaluations",
-                   Num(budget) + " iterations × " + Num(starts + rounds) + " solves × (2 + 0.65 × " + Num(variables) +
-                       " variables) × " + Num(torques) + " torques × " + Num(angles) + " crank angles × " +
-                       Num(rollers) + " rollers × " + Num(cells) + " grid cells"},
-                  {checks, "/analysis/grid",
-                   "verification: " + Num(1 + rounds) + " accurate checks on twice the angles and four times the cells"}},
-                 5e8 * factor, "contact cell solves", 1);
-}
-
 // disc_cam_min_size: every solve (two starts, the tightening rounds, two re-solves per limit for
 // its cost) may use its whole budget of iterations, each a few evaluations of every fast row (one
 // cam point each); each accurate check evaluates the dense grid three times (fast, dense, refined).
@@ -396,7 +360,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   if (kind == "lcr_analysis") return LcrAnalysis(study, factor);
   if (kind == "transmission_rigidity") return Rigidity(study, factor, file);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
-  if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);
   if (kind == "disc_cam") return DiscCam(study, factor);
   if (kind == "disc_cam_min_size") return DiscCamMinSize(study, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);

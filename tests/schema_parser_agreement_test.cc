@@ -419,6 +419,8 @@ const std::vector<CrossField> kCrossField = {
      "the logarithmic crowning's effective length against the face width (its range)"},
     {"cycloid_min_size", "/variables/effective_length_mm", "below the face width",
      "the logarithmic crowning's effective length against the face width (its range)"},
+    {"cycloid_min_size", "/target/teeth", "too curtate",
+     "the pin count against the eccentricity and pin circle ranges (the curtate margin at the integer bound 1e9)"},
     {"cycloid_min_size", "/target/", "shortening coefficient",
      "the pin count against the eccentricity and pin circle ranges (a plausible drive everywhere in the box)"},
     {"disc_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
@@ -609,7 +611,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 
 // ---------------------------------------------------------------------------------------------
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
-const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "cycloid_ltca"};
+const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "cycloid_ltca", "cycloid_min_size"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
