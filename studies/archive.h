@@ -24,7 +24,9 @@
 //     filled in).
 // Defaults are the struct's initialisers; a field marked Required() has none. A std::optional
 // member is absent when the file does not give it (Field::Default documents what absence means).
-// Checks that span fields stay code, one function per kind, run after Read.
+// Checks that span fields stay code, one function per kind, run after Read; those JSON Schema can
+// state (if/then, oneOf, dependentRequired) a struct may also give its schema with a static
+// `nlohmann::ordered_json SchemaRules()`, whose keywords the emitter adds to the object's schema.
 //
 // Supported member types: double, int, bool, std::string (with OneOf: an enum; with Const: a
 // constant), a struct with its own Serialize, std::optional of any of these, std::vector of any of
@@ -292,6 +294,12 @@ class SchemaEmitter {
         nlohmann::ordered_json n = std::move(s["not"]);
         s.erase("not");
         s["not"] = std::move(n);
+      }
+      // Rules between the object's fields that JSON Schema can state (if/then, oneOf,
+      // dependentRequired, not), when the struct has them: its parse checks the same in code.
+      if constexpr (requires { T::SchemaRules(); }) {
+        const nlohmann::ordered_json rules = T::SchemaRules();
+        for (auto it = rules.begin(); it != rules.end(); ++it) s[it.key()] = it.value();
       }
     } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
       s["type"] = std::is_same_v<T, int> ? "integer" : "number";

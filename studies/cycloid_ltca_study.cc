@@ -14,6 +14,7 @@
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
 #include "studies/report.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::cycloid_ltca {
@@ -26,20 +27,19 @@ namespace {
 // mechanism"). The output mechanism needs the loaded stage and crank angles that sample whole mesh
 // periods uniformly, with the discs' phase 360°/N a whole number of crank steps (each disc's
 // ring-pin state is the first disc's at its own crank angle).
-void ParseDiscsAndOutput(const Node& root, Study& s) {
-  s.discs = root.IntegerOr("discs", 1, 1);
-  if (s.discs > 8) root["discs"].Fail("at most 8 discs");
+void ParseDiscsAndOutput(const Node& root, const Input& in, Study& s) {
+  s.discs = in.discs;
   s.disc_spacing_mm = s.drive.face_width_mm;
-  if (root.Has("disc_spacing_mm")) {
-    s.disc_spacing_mm = root["disc_spacing_mm"].Positive();
+  if (in.disc_spacing_mm) {
+    s.disc_spacing_mm = *in.disc_spacing_mm;
     if (s.disc_spacing_mm < s.drive.face_width_mm)
       root["disc_spacing_mm"].Fail("a spacing of the discs' mid-planes >= the face width " +
                                    Format(s.drive.face_width_mm, 6) + " mm (the discs would overlap)");
   }
-  const bool compliant = root.Has("output_mechanism") &&
-                         (root["output_mechanism"].Has("pin_radius_mm") || root["output_mechanism"].Has("hole_radius_mm"));
+  const std::optional<Input::OutputMechanism>& om = in.output_mechanism;
+  const bool compliant = om && (om->pin_radius_mm || om->hole_radius_mm);
   if (!compliant) {
-    if (root.Has("output_mechanism")) {
+    if (om) {
       const Node n = root["output_mechanism"];
       for (const char* f : {"roller_radius_mm", "pin_support", "pin_span_mm"})
         if (n.Has(f)) n[f].FailWith(std::string(f) + " needs the pins' and holes' radii (pin_radius_mm, hole_radius_mm)");
@@ -52,13 +52,15 @@ void ParseDiscsAndOutput(const Node& root, Study& s) {
   OutputSpec o;
   o.pins.pins = rigid.pin_count;
   o.pins.pin_circle_radius_mm = rigid.pin_circle_radius_mm;
-  o.pins.pin_radius_mm = n["pin_radius_mm"].Positive();
-  o.pins.hole_radius_mm = n["hole_radius_mm"].Positive();
-  o.pins.roller_radius_mm = n.PositiveOr("roller_radius_mm", 0.0);
-  if (n.Has("roller_radius_mm") && !(o.pins.roller_radius_mm > o.pins.pin_radius_mm))
+  if (!om->pin_radius_mm) (void)n["pin_radius_mm"];  // "missing required field"
+  if (!om->hole_radius_mm) (void)n["hole_radius_mm"];
+  o.pins.pin_radius_mm = *om->pin_radius_mm;
+  o.pins.hole_radius_mm = *om->hole_radius_mm;
+  o.pins.roller_radius_mm = om->roller_radius_mm.value_or(0.0);
+  if (om->roller_radius_mm && !(o.pins.roller_radius_mm > o.pins.pin_radius_mm))
     n["roller_radius_mm"].Fail("a roller radius > pin_radius_mm " + Format(o.pins.pin_radius_mm, 6) + " mm");
   const double e = s.drive.eccentricity_mm, rc = o.pins.contact_radius_mm();
-  const std::string what = n.Has("roller_radius_mm") ? "roller_radius_mm" : "pin_radius_mm";
+  const std::string what = om->roller_radius_mm ? "roller_radius_mm" : "pin_radius_mm";
   if (!(o.pins.hole_radius_mm >= rc + e))
     n["hole_radius_mm"].Fail("a hole radius >= " + what + " + e = " + Format(rc, 6) + " + " + Format(e, 6) + " = " +
                              Format(rc + e, 6) + " mm (the pin must follow the disc's orbit of radius e); a " +
@@ -74,12 +76,10 @@ void ParseDiscsAndOutput(const Node& root, Study& s) {
   if (!(2.0 * o.pins.hole_radius_mm < chord))
     n["hole_radius_mm"].Fail("holes that do not overlap: 2 hole_radius_mm < " + Format(chord, 6) +
                              " mm (the holes' pitch); a hole radius below " + Format(0.5 * chord, 6) + " mm would fit");
-  const std::string support = n.StringOr("pin_support", "cantilever");
-  if (support == "cantilever") o.support = cycloid::PinSupport::kCantilever;
-  else if (support == "both_ends") o.support = cycloid::PinSupport::kBothEnds;
-  else n["pin_support"].Fail("one of \"cantilever\", \"both_ends\"");
+  o.support = om->pin_support.value_or("cantilever") == "both_ends" ? cycloid::PinSupport::kBothEnds
+                                                                      : cycloid::PinSupport::kCantilever;
   const double stack = (s.discs - 1) * s.disc_spacing_mm + s.drive.face_width_mm;
-  o.span_mm = n.PositiveOr("pin_span_mm", stack);
+  o.span_mm = om->pin_span_mm.value_or(stack);
   if (o.span_mm < stack)
     n["pin_span_mm"].Fail("a span >= the disc stack (discs - 1) * disc_spacing_mm + face_width_mm = " +
                           Format(stack, 6) + " mm");
@@ -103,85 +103,63 @@ void ParseDiscsAndOutput(const Node& root, Study& s) {
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "crowning", "material", "load", "analysis",
-                         "geometry_files", "duty_cycle", "crank_bearing", "pins", "output_mechanism", "discs",
-                         "disc_spacing_mm", "stiffness", "limits"});
-  // The verdict's limits (report.html, the summary, --strict): read by the headlines from the
-  // study ("study:/limits/…"), checked here.
-  if (root.Has("limits")) {
-    const Node limits = root["limits"];
-    limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "output_pin_stress_MPa",
-                             "output_pin_contact_pressure_MPa", "eccentric_bearing_load_N"});
-    for (const char* key : {"contact_stress_MPa", "roller_load_N", "output_pin_stress_MPa",
-                            "output_pin_contact_pressure_MPa", "eccentric_bearing_load_N"})
-      if (limits.Has(key)) limits[key].Positive();
-  }
+  // Every field's type and bounds (the limits are read by the headlines from the study,
+  // "study:/limits/…"); what spans fields follows.
+  const Input in = Read<Input>(root);
   Study s;
-  s.name = root.StringOr("name", "");
-  s.drive = cycloid_common::ParseDrive(root);
-  s.crowning = cycloid_common::ParseCrowning(root, s.drive.face_width_mm);
+  s.name = in.name;
+  s.drive = cycloid_common::MakeDrive(root, in.drive, in.modification);
+  s.crowning = cycloid_common::MakeCrowning(root, in.crowning, s.drive.face_width_mm);
   s.geometry = ParseGeometryFiles(root);
-  if (root["drive"].Has("bore_diameter_mm")) {
+  if (in.drive.bore_diameter_mm) {
     const double root_diameter = 2 * (s.drive.roller_position_radius_mm - s.drive.eccentricity_mm -
                                       s.drive.roller_radius_mm);
     s.bore_diameter_mm = ParseBoreDiameter(root["drive"]["bore_diameter_mm"], root_diameter, "the disc's root diameter");
   }
   // Lazy stages: ["unloaded"] asks for the unloaded TCA only, which needs no material or load.
-  if (root.Has("analysis") && root["analysis"].Has("evaluate")) {
-    s.loaded = false;
-    for (const Node& n : root["analysis"]["evaluate"].Elements()) {
-      const std::string stage = n.String();
-      if (stage == "loaded") s.loaded = true;
-      else if (stage != "unloaded") n.Fail("one of \"unloaded\", \"loaded\"");
-    }
+  if (in.analysis && in.analysis->evaluate) {
+    const std::vector<std::string>& stages = *in.analysis->evaluate;
+    s.loaded = std::find(stages.begin(), stages.end(), "loaded") != stages.end();
   }
-  if (s.loaded || root.Has("material")) s.material = cycloid_common::ParseMaterial(root);
-  if (s.loaded || root.Has("load")) {
-    root["load"].CheckKnownFields({"torque_Nm", "input_speed_rpm"});
-    s.torque_Nm = root["load"]["torque_Nm"].NonNegative();
-  }
+  if (s.loaded && !in.material) (void)root["material"];  // "missing required field"
+  if (in.material) s.material = in.material->ToMaterial();
+  if (s.loaded && !in.load) (void)root["load"];
+  if (in.load) s.torque_Nm = in.load->torque_Nm;
   s.crank_angles_per_mesh_period = kDefaultCrankAnglesPerMeshPeriod;
   const double period = 2.0 * kPi / s.drive.rollers;
-  if (root.Has("analysis")) {
+  if (in.analysis) {
+    const Input::Analysis& ia = *in.analysis;
     const Node a = root["analysis"];
-    a.CheckKnownFields({"grid", "tolerance", "crank_angles_deg", "crank_angle_steps", "crank_span_deg",
-                        "crank_angles_per_mesh_period", "estimate_error", "evaluate"});
-    cycloid_common::ParseGrid(a, s.options);
-    s.options.tolerance = a.PositiveOr("tolerance", s.options.tolerance);
-    s.estimate_error = a.BoolOr("estimate_error", true);
-    const int given = int(a.Has("crank_angles_deg")) + int(a.Has("crank_angle_steps")) +
-                      int(a.Has("crank_angles_per_mesh_period"));
+    if (ia.grid) s.options.profile_cells = (*ia.grid)[0], s.options.axial_cells = (*ia.grid)[1];
+    s.options.tolerance = ia.tolerance;
+    s.estimate_error = ia.estimate_error;
+    const int given = int(bool(ia.crank_angles_deg)) + int(bool(ia.crank_angle_steps)) +
+                      int(bool(ia.crank_angles_per_mesh_period));
     if (given > 1)
       a.FailWith("give one of crank_angles_per_mesh_period, crank_angle_steps and crank_angles_deg");
-    if (a.Has("crank_span_deg") && !a.Has("crank_angle_steps"))
+    if (ia.crank_span_deg && !ia.crank_angle_steps)
       a["crank_span_deg"].Fail("crank_span_deg only with crank_angle_steps");
-    if (a.Has("crank_angles_deg")) {
+    if (ia.crank_angles_deg) {
       s.crank_angles_per_mesh_period = 0;
-      for (const Node& e : a["crank_angles_deg"].Elements()) s.crank_angles_rad.push_back(e.Number() * kPi / 180.0);
-      if (s.crank_angles_rad.empty()) a["crank_angles_deg"].Fail("a non-empty array of angles");
-    } else if (a.Has("crank_angle_steps")) {
+      for (const double deg : *ia.crank_angles_deg) s.crank_angles_rad.push_back(deg * kPi / 180.0);
+    } else if (ia.crank_angle_steps) {
       s.crank_angles_per_mesh_period = 0;
-      const int steps = a["crank_angle_steps"].Integer(1);
-      if (steps > 100000) a["crank_angle_steps"].Fail("at most 100000 steps");
-      s.crank_angles_rad = UniformCrankAngles(steps, a.PositiveOr("crank_span_deg", 360.0) * kPi / 180.0);
+      s.crank_angles_rad = UniformCrankAngles(*ia.crank_angle_steps, ia.crank_span_deg.value_or(360.0) * kPi / 180.0);
     } else {
-      s.crank_angles_per_mesh_period =
-          a.IntegerOr("crank_angles_per_mesh_period", 1, kDefaultCrankAnglesPerMeshPeriod);
-      if (s.crank_angles_per_mesh_period > 10000) a["crank_angles_per_mesh_period"].Fail("at most 10000");
+      s.crank_angles_per_mesh_period = ia.crank_angles_per_mesh_period.value_or(kDefaultCrankAnglesPerMeshPeriod);
     }
   }
   if (s.crank_angles_per_mesh_period > 0)
     s.crank_angles_rad = UniformCrankAngles(s.crank_angles_per_mesh_period, period);
   if (!s.loaded) s.estimate_error = false;
-  ParseDiscsAndOutput(root, s);
-  if (root.Has("stiffness")) {
-    const Node n = root["stiffness"];
-    n.CheckKnownFields({"rated_torque_Nm", "crank_angle_deg"});
+  ParseDiscsAndOutput(root, in, s);
+  if (in.stiffness) {
     Study::StiffnessSpec st;
-    st.rated_torque_Nm = n["rated_torque_Nm"].Positive();
-    st.crank_angle_deg = n.NumberOr("crank_angle_deg", 0.0);
+    st.rated_torque_Nm = in.stiffness->rated_torque_Nm;
+    st.crank_angle_deg = in.stiffness->crank_angle_deg.value_or(0.0);
     if (!s.loaded)
-      n.FailWith("the torsional curve needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
+      root["stiffness"].FailWith(
+          "the torsional curve needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
     s.stiffness = st;
   }
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
@@ -199,6 +177,32 @@ Study Parse(const Node& root) {
                   "analysis.crank_angles_per_mesh_period");
   }
   return s;
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  // The loaded stage (analysis.evaluate absent or with "loaded") needs the material and the load;
+  // a life (a duty cycle or load.input_speed_rpm) the crank bearing, the output mechanism, one disc
+  // and the loaded stage, and not both forms of the speed; the compliant output mechanism and the
+  // torsional curve the loaded stage.
+  return nlohmann::ordered_json::parse(R"({"allOf": [
+    {"if": {"required": ["analysis"],
+            "properties": {"analysis": {"required": ["evaluate"],
+                                        "properties": {"evaluate": {"not": {"contains": {"enum": ["loaded"]}}}}}}},
+     "else": {"required": ["material", "load"]}},
+    {"if": {"anyOf": [{"required": ["duty_cycle"]},
+                      {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]},
+     "then": {"required": ["crank_bearing", "output_mechanism"],
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}},
+                             "discs": {"maximum": 1}}}},
+    {"if": {"required": ["duty_cycle"]},
+     "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}},
+    {"if": {"required": ["output_mechanism"], "properties": {"output_mechanism": {"required": ["pin_radius_mm"]}}},
+     "then": {"required": ["material", "load"],
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
+    {"if": {"required": ["stiffness"]},
+     "then": {"required": ["material", "load"],
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}}
+  ]})");
 }
 
 namespace {
@@ -927,29 +931,63 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
+CAMOPT_REGISTER_DECLARED_KIND("cycloid_ltca", Input, "camopt study: loaded tooth contact analysis of a cycloid drive");
+
+// The declared input of a study, for the knobs and the estimate below, which run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): crank-angle sampling (the one
 // the file uses; explicit angles have none), contact grid and compatibility tolerance. The
 // variants run as the study does (with analysis.estimate_error on, the reported headlines are those
 // of the refined, doubled crank-angle set, so a variant without it would not compare like with like).
 Fidelity Knobs(const nlohmann::json& study) {
+  const Input in = ReadInput(study, "");
+  const Input::Analysis a = in.analysis.value_or(Input::Analysis{});
   Fidelity f;
-  const nlohmann::json a = study.value("analysis", nlohmann::json::object());
-  if (a.contains("crank_angle_steps"))
+  if (a.crank_angle_steps)
     f.knobs.push_back({"crank_angle_steps", {"/analysis/crank_angle_steps"}, 0, 2, true, 0,
                        "uniform crank angles over crank_span_deg"});
-  else if (!a.contains("crank_angles_deg"))
+  else if (!a.crank_angles_deg)
     f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"},
                        kDefaultCrankAnglesPerMeshPeriod, 2, true, 0, "uniform crank angles per mesh period"});
-  f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
+  const cycloid::LoadedOptions defaults;
+  f.knobs.push_back({"grid", {"/analysis/grid"}, {defaults.profile_cells, defaults.axial_cells}, 2, true, 0,
                      "contact cells across the profile and along the face"});
-  f.knobs.push_back({"tolerance", {"/analysis/tolerance"}, 1e-3, 0.1, false, 0,
+  f.knobs.push_back({"tolerance", {"/analysis/tolerance"}, defaults.tolerance, 0.1, false, 0,
                      "relative compatibility residual of the contact solver"});
   f.headlines = {"/max_contact_stress_MPa", "/lte_peak_to_peak_arcsec", "/lte_mean_abs_arcsec",
                  "/gear_ratio_peak_to_peak", "/max_pair_load_N"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("cycloid_ltca", Knobs);
+
+// The work limit (studies/work_limits.h): runs (2.25 with the error estimate: the shifted angles
+// once more and a grid of a quarter of the cells) × crank angles (a list, crank_angle_steps or
+// crank_angles_per_mesh_period) × rollers × contact cells ≤ 5e7.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const Input::Analysis a = in.analysis.value_or(Input::Analysis{});
+  const double rollers = in.drive.rollers;
+  const std::array<int, 2> grid = a.grid.value_or(std::array<int, 2>{40, 40});
+  const double cells = double(grid[0]) * grid[1];
+  // Every way of giving the angles counts: a list, uniform steps, or samples per mesh period (60
+  // when absent: the estimate's reference, above the default 32).
+  const double angles = a.crank_angles_deg ? double(a.crank_angles_deg->size())
+                        : a.crank_angle_steps ? double(*a.crank_angle_steps)
+                                              : double(a.crank_angles_per_mesh_period.value_or(60));
+  // The path named is the factor furthest above its reference (60 angles, 40×40 cells).
+  const std::string angles_path = a.crank_angles_deg                ? "/analysis/crank_angles_deg"
+                                  : a.crank_angle_steps             ? "/analysis/crank_angle_steps"
+                                  : !a.crank_angles_per_mesh_period ? "/analysis"
+                                                                    : "/analysis/crank_angles_per_mesh_period";
+  const std::string path = a.grid && cells / 1600.0 >= angles / 60.0 ? "/analysis/grid" : angles_path;
+  const double runs = a.estimate_error ? 2.25 : 1.0;
+  return LargestTerm({{runs * angles * rollers * cells, path,
+                       WorkNumber(runs) + " runs × " + WorkNumber(angles) + " crank angles × " + WorkNumber(rollers) +
+                           " rollers × " + WorkNumber(cells) + " grid cells"}},
+                     5e7 * factor, "contact cell solves", 24);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_ltca", EstimateWork);
 }  // namespace
 
 namespace {

@@ -17,13 +17,204 @@
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/output_mechanism.h"
 #include "model/cycloid/stiffness.h"
+#include "studies/archive.h"
+#include "studies/cycloid_input.h"
 #include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
-#include "studies/input.h"
 #include "studies/geometry_files.h"
+#include "studies/input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_ltca {
+
+/// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
+inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 32;
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds and
+/// description (studies/archive.h); the blocks shared with the other cycloid kinds are those of
+/// studies/cycloid_input.h. Parse reads it, checks what spans fields and converts it (Study);
+/// `camopt schema cycloid_ltca` is emitted from it.
+struct Input {
+  struct Load {
+    double torque_Nm = 0;
+    std::optional<double> input_speed_rpm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("torque_Nm", &torque_Nm,
+               Field().Required().NonNegative().Unit("N·m").Desc("the output torque; each of the discs carries torque_Nm / discs"));
+      a->Visit("input_speed_rpm", &input_speed_rpm,
+               Field().Positive().Unit("rpm").Desc(
+                   "input (crank) speed: the bearing lives at load.torque_Nm (a one-line duty cycle; docs/life.md, "
+                   "Cycloid); absent: no life unless a duty_cycle is given"));
+    }
+  };
+  struct Analysis {
+    std::optional<std::array<int, 2>> grid;
+    double tolerance = cycloid::LoadedOptions{}.tolerance;
+    std::optional<std::vector<double>> crank_angles_deg;
+    std::optional<int> crank_angle_steps;
+    std::optional<double> crank_span_deg;
+    std::optional<int> crank_angles_per_mesh_period;
+    bool estimate_error = true;
+    std::optional<std::vector<std::string>> evaluate;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("grid", &grid, cycloid_common::GridField());
+      a->Visit("tolerance", &tolerance,
+               Field().Positive().Desc("relative compatibility residual of the contact pairs (loose above 0.1)"));
+      a->Visit("crank_angles_deg", &crank_angles_deg,
+               Field().MinItems(1, "a non-empty array of angles").Unit("deg")
+                   .Desc("the crank angles to solve, a list (instead of crank_angles_per_mesh_period)"));
+      a->Visit("crank_angle_steps", &crank_angle_steps,
+               Field().AtLeast(1).AtMost(100000, "at most 100000 steps")
+                   .Desc("uniform crank angles over crank_span_deg (instead of crank_angles_per_mesh_period)"));
+      a->Visit("crank_span_deg", &crank_span_deg,
+               Field().Positive().Unit("deg").Desc("the span of crank_angle_steps (only with it; absent: 360)"));
+      a->Visit("crank_angles_per_mesh_period", &crank_angles_per_mesh_period,
+               Field().AtLeast(1).AtMost(10000, "at most 10000")
+                   .Desc("uniform crank angles over one mesh period 360/rollers deg (absent, and no other sampling "
+                         "given: " + std::to_string(kDefaultCrankAnglesPerMeshPeriod) + ")"));
+      a->Visit("estimate_error", &estimate_error,
+               Field().Desc("estimate the discretisation error of the headlines (a refined run; loaded stage only)"));
+      a->Visit("evaluate", &evaluate,
+               Field().OneOf({"unloaded", "loaded"}, "one of \"unloaded\", \"loaded\"")
+                   .Desc("the stages to run: [\"unloaded\"] the unloaded TCA only (no material or load needed); "
+                         "absent: the loaded stage, which includes the unloaded one"));
+    }
+    static nlohmann::ordered_json SchemaRules() {
+      return {{"dependentRequired", {{"crank_span_deg", {"crank_angle_steps"}}}}};
+    }
+  };
+  /// "output_mechanism": rigid pins for the life, or, with pin_radius_mm and hole_radius_mm, the
+  /// mechanism with clearance and compliance (docs/cycloid.md, "Output mechanism").
+  struct OutputMechanism {
+    std::optional<int> pins, pin_count;
+    double pin_circle_radius_mm = 0;
+    std::optional<double> pin_radius_mm, hole_radius_mm, roller_radius_mm;
+    std::optional<std::string> pin_support;
+    std::optional<double> pin_span_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pins", &pins, Field().AtLeast(3).Desc("output pin count Z_w (absent: the continuous limit, rigid pins only)"));
+      a->Visit("pin_count", &pin_count, Field().AtLeast(3).Desc("older name of pins"));
+      a->Visit("pin_circle_radius_mm", &pin_circle_radius_mm,
+               Field().Required().Positive().Unit("mm").Desc("R_w, the pins' circle, inside the disc's root radius"));
+      a->Visit("pin_radius_mm", &pin_radius_mm, Field().Positive().Unit("mm").Desc("r_w, the pin (the beam)"));
+      a->Visit("hole_radius_mm", &hole_radius_mm,
+               Field().Positive().Unit("mm").Desc(
+                   "r_h >= contact radius + e; R_w + r_h below the root radius; 2 r_h below the holes' pitch"));
+      a->Visit("roller_radius_mm", &roller_radius_mm,
+               Field().Positive().Unit("mm").Desc("a roller on each pin, > pin_radius_mm: it touches the hole (absent: none)"));
+      a->Visit("pin_support", &pin_support,
+               Field().OneOf({"cantilever", "both_ends"}, "one of \"cantilever\", \"both_ends\"")
+                   .Desc("the pin fixed at the flange (cantilever, when absent) or supported at both ends"));
+      a->Visit("pin_span_mm", &pin_span_mm,
+               Field().Positive().Unit("mm").Desc(
+                   "the pin's free length or span, >= the disc stack (discs - 1) * disc_spacing_mm + face width "
+                   "(absent: the stack)"));
+    }
+    static nlohmann::ordered_json SchemaRules() {
+      return {{"not", {{"required", {"pins", "pin_count"}}}},
+              {"dependentRequired",
+               {{"pin_radius_mm", {"hole_radius_mm", "pins"}},
+                {"hole_radius_mm", {"pin_radius_mm", "pins"}},
+                {"roller_radius_mm", {"pin_radius_mm"}},
+                {"pin_support", {"pin_radius_mm"}},
+                {"pin_span_mm", {"pin_radius_mm"}}}}};
+    }
+  };
+  struct Stiffness {
+    double rated_torque_Nm = 0;
+    std::optional<double> crank_angle_deg;  ///< absent: 0 (no schema default: the block is optional)
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Required().Positive().Unit("N·m").Desc("T_r at the output"));
+      a->Visit("crank_angle_deg", &crank_angle_deg, Field().Unit("deg").Desc("the crank angle held (absent: 0)"));
+    }
+  };
+  struct Limits {
+    std::optional<double> contact_stress_MPa, roller_load_N, output_pin_stress_MPa, output_pin_contact_pressure_MPa,
+        eccentric_bearing_load_N;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Positive().Unit("MPa").Desc("largest Hertz pressure of the disc on a ring pin"));
+      a->Visit("roller_load_N", &roller_load_N, Field().Positive().Unit("N").Desc("largest load of one pin-tooth pair"));
+      a->Visit("output_pin_stress_MPa", &output_pin_stress_MPa,
+               Field().Positive().Unit("MPa").Desc("output-pin bending stress (needs output_mechanism)"));
+      a->Visit("output_pin_contact_pressure_MPa", &output_pin_contact_pressure_MPa,
+               Field().Positive().Unit("MPa").Desc("hole-pin Hertz pressure (needs output_mechanism)"));
+      a->Visit("eccentric_bearing_load_N", &eccentric_bearing_load_N,
+               Field().Positive().Unit("N").Desc("largest eccentric (crank) bearing load"));
+    }
+  };
+
+  std::string study = "cycloid_ltca", name;
+  std::optional<std::string> description;
+  cycloid_common::DriveInput drive;
+  std::optional<cycloid_common::ModificationInput> modification;
+  std::optional<cycloid_common::CrowningInput> crowning;
+  std::optional<MaterialInput> material;
+  std::optional<Load> load;
+  std::optional<Analysis> analysis;
+  nlohmann::json geometry_files, duty_cycle, crank_bearing, pins;
+  std::optional<OutputMechanism> output_mechanism;
+  int discs = 1;
+  std::optional<double> disc_spacing_mm;
+  std::optional<Limits> limits;
+  std::optional<Stiffness> stiffness;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("cycloid_ltca").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("drive", &drive, Field().Required().Desc("the pin ring and the disc"));
+    a->Visit("modification", &modification,
+             Field().Desc("the tooth profile's modifications (absent: none; micrometres, below the pin radius)"));
+    a->Visit("crowning", &crowning, Field().Desc("the axial crowning of the teeth (absent: none)"));
+    a->Visit("material", &material,
+             Field().Desc("the disc's and pins' elastic material (required by the loaded stage)"));
+    a->Visit("load", &load, Field().Desc("the torque and speed (required by the loaded stage)"));
+    a->Visit("analysis", &analysis, Field().Desc("the crank angles, the contact grid and the stages to run"));
+    a->Visit("geometry_files", &geometry_files,
+             Field().Schema(GeometryFilesSchema(
+                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
+    a->Visit("duty_cycle", &duty_cycle,
+             Field().Schema(cycloid_common::DutyCycleSchema()).Desc(
+                 "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
+                 "disc's torque (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0; each "
+                 "line one LTCA cycle at its torque"));
+    a->Visit("crank_bearing", &crank_bearing,
+             Field().Schema(cycloid_common::CrankBearingSchema()).Desc(
+                 "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
+    a->Visit("pins", &pins,
+             Field().Schema(cycloid_common::PinRatingSchema()).Desc(
+                 "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
+                 "p = 10/3 (docs/life.md, Cycloid)"));
+    a->Visit("output_mechanism", &output_mechanism,
+             Field().Desc(
+                 "output pins in the disc's holes: pin circle radius (inside the disc's root radius) and pin count "
+                 "(absent: the continuous limit); with pin_radius_mm and hole_radius_mm the mechanism with clearance "
+                 "and compliance (docs/cycloid.md, Output mechanism), else rigid pins for the life (docs/life.md, "
+                 "Cycloid)"));
+    a->Visit("discs", &discs,
+             Field().AtLeast(1).AtMost(8, "at most 8 discs").Desc(
+                 "identical discs phased by 360/N deg about the crank, equal torque split (docs/cycloid.md, Output "
+                 "mechanism); the crank angles per revolution a multiple of N"));
+    a->Visit("disc_spacing_mm", &disc_spacing_mm,
+             Field().Positive().Unit("mm").Desc(
+                 "distance between neighbouring discs' mid-planes, >= the face width (absent: the face width)"));
+    a->Visit("limits", &limits, Field().Desc("the verdict's limits (report.html, the summary, --strict); none by default"));
+    a->Visit("stiffness", &stiffness,
+             Field().Desc("the torsional curve, input held (docs/cycloid.md, Stiffness, lost motion and backlash): "
+                          "torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin, hysteresis.csv"));
+  }
+  /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
+  /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
+  static nlohmann::ordered_json SchemaRules();
+};
 
 /// The output mechanism with clearance and compliance (model/cycloid/output_mechanism.h): the
 /// "output_mechanism" object with pin_radius_mm and hole_radius_mm.
@@ -72,8 +263,6 @@ struct Study {
 using cycloid_common::ElementLife;
 using cycloid_common::LifeResult;
 
-/// Default samples per mesh period: peak-to-peak LTE and GR need >= 20 (docs/cycloid.md).
-inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 32;
 /// Largest factor on |v(N) − v(2N)| in the crank-angle error (no shrinking of the differences
 /// observed); the smallest is 1 (docs/cycloid.md, "Estimated error").
 inline constexpr double kMaxTailFactor = 4.0;

@@ -22,6 +22,7 @@
 #include "studies/format.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::cycloid_min_size {
@@ -158,21 +159,15 @@ double CrowningFieldOf(const cycloid::Crowning& c, const std::string& name) {
   return c.radius_mm;
 }
 
-void ParseTarget(const Node& root, Study& s) {
+void ParseTarget(const Node& root, const Input::Target& in, Study& s) {
   const Node t = root["target"];
-  t.CheckKnownFields({"teeth", "speed_ratio", "design_torque_Nm", "overload_torque_Nm", "misalignment_mrad"});
-  if (t.Has("misalignment_mrad"))
-    t["misalignment_mrad"].FailWith(
-        "the cycloid contact model has no misalignment (model/cycloid/loaded_tca.h: disc and pins are "
-        "parallel; only the crowning shapes the load along the face); remove the field, and keep the "
-        "contact off the face ends at a higher overload_torque_Nm instead");
-  const bool teeth = t.Has("teeth"), ratio = t.Has("speed_ratio");
+  const bool teeth = bool(in.teeth), ratio = !in.speed_ratio.is_null();
   if (teeth == ratio)
     t.FailWith(teeth ? "give one of \"teeth\" and \"speed_ratio\", not both (for this drive they are the same number z)"
                      : "missing required field: \"teeth\" (z, the disc's teeth) or \"speed_ratio\" (z)");
   int z = 0;
   if (teeth) {
-    z = t["teeth"].Integer(2);
+    z = *in.teeth;
   } else {
     // A one-tooth-difference drive with the ring (z + 1 pins) fixed and the output taken from the
     // disc turns the output 1/z of the input, in the opposite sense: the reduction is z.
@@ -189,82 +184,58 @@ void ParseTarget(const Node& root, Study& s) {
   }
   s.spec.drive.teeth = z;
   s.spec.drive.rollers = z + 1;
-  s.design_torque_Nm = t["design_torque_Nm"].Positive();
+  s.design_torque_Nm = in.design_torque_Nm;
   s.spec.design_torque_Nmm = s.design_torque_Nm * 1000.0;
-  if (t.Has("overload_torque_Nm")) {
-    s.overload_torque_Nm = t["overload_torque_Nm"].Positive();
+  if (in.overload_torque_Nm) {
+    s.overload_torque_Nm = *in.overload_torque_Nm;
     if (s.overload_torque_Nm < s.design_torque_Nm)
       t["overload_torque_Nm"].Fail("a torque >= design_torque_Nm (" + Format(s.design_torque_Nm) + " N·m)");
     s.spec.overload_torque_Nmm = s.overload_torque_Nm * 1000.0;
   }
 }
 
-void ParseLimits(const Node& root, Study& s) {
+void ParseLimits(const Node& root, const Input::Limits& in, Study& s) {
   const Node l = root["limits"];
-  l.CheckKnownFields({"contact_stress_MPa", "min_edge_margin_um", "min_curtate_margin", "min_profile_radius_mm",
-                      "min_pin_gap_mm", "min_backlash_arcsec", "max_backlash_arcsec", "max_lte_peak_to_peak_arcsec",
-                      "bore_diameter_mm", "min_web_mm", "life_h"});
   CycloidSizingLimits& lim = s.spec.limits;
-  lim.life_h = l.PositiveOr("life_h", 0.0);  // needs the speed: checked in ParseLife
-  lim.contact_stress_MPa = l["contact_stress_MPa"].Positive();
-  if (l.Has("min_edge_margin_um")) {
+  lim.life_h = in.life_h.value_or(0.0);  // needs the speed: checked in ParseLife
+  lim.contact_stress_MPa = in.contact_stress_MPa;
+  if (in.min_edge_margin_um) {
     if (s.overload_torque_Nm == 0)
       l["min_edge_margin_um"].FailWith("needs target.overload_torque_Nm: the edge margin is checked on the overload "
                                        "cycle (give the torque at which the contact must stay off the face ends)");
-    lim.min_edge_margin_um = l["min_edge_margin_um"].Number();
+    lim.min_edge_margin_um = *in.min_edge_margin_um;
   }
-  if (l.Has("min_curtate_margin")) {
-    const Node m = l["min_curtate_margin"];
-    const double v = m.Number();
-    if (!(v >= 0 && v < 1)) m.Fail("a number in [0, 1) (1 - e (z + 1) / a')");
-    lim.min_curtate_margin = v;
-  }
-  lim.min_profile_radius_mm = l.NonNegativeOr("min_profile_radius_mm", 0.0);
-  lim.min_pin_gap_mm = l.NonNegativeOr("min_pin_gap_mm", 0.0);
-  lim.min_backlash_arcsec = l.NonNegativeOr("min_backlash_arcsec", 0.0);
-  lim.max_backlash_arcsec = l.PositiveOr("max_backlash_arcsec", kInf);
+  if (in.min_curtate_margin) lim.min_curtate_margin = *in.min_curtate_margin;
+  lim.min_profile_radius_mm = in.min_profile_radius_mm;
+  lim.min_pin_gap_mm = in.min_pin_gap_mm;
+  lim.min_backlash_arcsec = in.min_backlash_arcsec;
+  lim.max_backlash_arcsec = in.max_backlash_arcsec.value_or(kInf);
   if (!(lim.max_backlash_arcsec > lim.min_backlash_arcsec))
     l["max_backlash_arcsec"].Fail("a backlash > min_backlash_arcsec (" + Format(lim.min_backlash_arcsec) + " arcsec)");
-  lim.max_lte_peak_to_peak_arcsec = l.PositiveOr("max_lte_peak_to_peak_arcsec", kInf);
-  if (l.Has("bore_diameter_mm")) {
-    s.bore_diameter_mm = l["bore_diameter_mm"].Positive();
+  lim.max_lte_peak_to_peak_arcsec = in.max_lte_peak_to_peak_arcsec.value_or(kInf);
+  if (in.bore_diameter_mm) {
+    s.bore_diameter_mm = *in.bore_diameter_mm;
     lim.bore_radius_mm = 0.5 * s.bore_diameter_mm;
   }
-  if (l.Has("min_web_mm")) {
-    if (!l.Has("bore_diameter_mm"))
+  if (in.min_web_mm) {
+    if (!in.bore_diameter_mm)
       l["min_web_mm"].FailWith("needs bore_diameter_mm: the web is the ring between the bore and the tooth roots");
-    lim.min_web_mm = l["min_web_mm"].NonNegative();
+    lim.min_web_mm = *in.min_web_mm;
   }
 }
 
-void ParseAnalysis(const Node& root, Study& s) {
-  s.spec.angles_per_period = kDefaultCrankAnglesPerMeshPeriod;
-  if (!root.Has("analysis")) return;
-  const Node a = root["analysis"];
-  a.CheckKnownFields({"grid", "crank_angles_per_mesh_period", "tolerance"});
-  cycloid_common::ParseGrid(a, s.spec.options);
-  s.spec.angles_per_period = a.IntegerOr("crank_angles_per_mesh_period", 1, kDefaultCrankAnglesPerMeshPeriod);
-  if (s.spec.angles_per_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
-  s.spec.options.tolerance = a.PositiveOr("tolerance", s.spec.options.tolerance);
+void ParseAnalysis(const Input::Analysis& in, Study& s) {
+  if (in.grid) s.spec.options.profile_cells = (*in.grid)[0], s.spec.options.axial_cells = (*in.grid)[1];
+  s.spec.angles_per_period = in.crank_angles_per_mesh_period;
+  s.spec.options.tolerance = in.tolerance;
 }
 
-void ParseOptimizer(const Node& root, Study& s) {
+void ParseOptimizer(const Input::Optimizer& in, Study& s) {
   optimizers::SolverOptions& so = s.options.solver;
-  s.options.starts = kDefaultStarts;
-  s.options.verify_rounds = kDefaultVerifyRounds;
-  so.max_evaluations = kDefaultMaxEvaluations;
-  if (root.Has("optimizer")) {
-    const Node o = root["optimizer"];
-    o.CheckKnownFields({"backend", "starts", "max_evaluations", "verify_rounds"});
-    s.backend = o.StringOr("backend", "ipopt");
-    if (s.backend != "ipopt" && s.backend != "slsqp") o["backend"].Fail("one of \"ipopt\", \"slsqp\"");
-    s.options.starts = o.IntegerOr("starts", 1, kDefaultStarts);
-    if (s.options.starts > 10) o["starts"].Fail("at most 10 starts");
-    so.max_evaluations = o.IntegerOr("max_evaluations", 1, kDefaultMaxEvaluations);
-    if (so.max_evaluations > 10000) o["max_evaluations"].Fail("at most 10000");
-    s.options.verify_rounds = o.IntegerOr("verify_rounds", 0, kDefaultVerifyRounds);
-    if (s.options.verify_rounds > 10) o["verify_rounds"].Fail("at most 10 rounds");
-  }
+  s.backend = in.backend;
+  s.options.starts = in.starts;
+  so.max_evaluations = in.max_evaluations;
+  s.options.verify_rounds = in.verify_rounds;
   so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
   // The evaluation budget bounds the run, never the clock: the same study gives the same design.
   so.max_seconds = 1e9;
@@ -281,22 +252,15 @@ void ParseOptimizer(const Node& root, Study& s) {
 
 // The sizing fields: "variables" and the sections. Fills s.spec.drive, s.spec.crowning and
 // s.spec.variables; returns every field by name (for the checks that follow).
-std::map<std::string, Field> ParseDesign(const Node& root, Study& s) {
+std::map<std::string, Field> ParseDesign(const Node& root, const Input& in, Study& s) {
   const std::vector<std::string> names = objectives::CycloidSizingVariableNames();
   const Node v = root["variables"];
-  if (!v.json().is_object() || v.json().empty())
-    v.Fail("an object of sized fields {\"field\": [lo, hi] or a number, ...}");
-  v.CheckKnownFields(std::set<std::string>(names.begin(), names.end()));
+  if (v.json().empty()) v.Fail("an object of sized fields {\"field\": [lo, hi] or a number, ...}");
   std::set<std::string> in_variables;
   for (const auto& [key, _] : v.json().items()) in_variables.insert(key);
 
   // The sections: "drive" and "modification" hold fixed fields; "crowning" its type and fixed fields.
-  if (root.Has("drive")) {
-    const Node d = root["drive"];
-    d.CheckKnownFields({"eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm", "face_width_mm"});
-  }
-  if (root.Has("modification")) root["modification"].CheckKnownFields({"delta_position_um", "delta_radius_um"});
-  s.spec.crowning = cycloid_common::ParseCrowningStart(root, in_variables);
+  s.spec.crowning = cycloid_common::MakeCrowningStart(root, in.crowning, in_variables);
   const cycloid::Crowning section_crowning = s.spec.crowning;
 
   std::map<std::string, Field> fields;
@@ -580,7 +544,6 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
 // needs them. The output pins' circle is checked against the start's root radius (it is fixed:
 // the report says when the sized disc's root falls inside it).
 void ParseSizingLife(const Node& root, Study& s) {
-  if (root.Has("load")) root["load"].CheckKnownFields({"input_speed_rpm"});
   const std::optional<cycloid_common::LifeSpec> life =
       cycloid_common::ParseLife(root, s.spec.drive, s.spec.design_torque_Nmm);
   if (s.spec.limits.life_h > 0 && !life)
@@ -602,25 +565,825 @@ void ParseSizingLife(const Node& root, Study& s) {
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "target", "variables", "drive", "modification", "crowning",
-                         "limits", "objective", "material", "analysis", "optimizer", "load", "duty_cycle",
-                         "crank_bearing", "pins", "output_mechanism"});
+  const Input in = Read<Input>(root);
   Study s;
-  s.name = root.StringOr("name", "");
-  ParseTarget(root, s);
-  ParseLimits(root, s);
-  s.spec.material = cycloid_common::ParseMaterial(root);
-  ParseAnalysis(root, s);
-  ParseOptimizer(root, s);
-  const std::string objective = root.StringOr("objective", "outer_diameter");
-  if (objective == "volume") s.spec.objective = objectives::CycloidSizeObjective::kVolume;
-  else if (objective != "outer_diameter") root["objective"].Fail("one of \"outer_diameter\", \"volume\"");
-  const std::map<std::string, Field> fields = ParseDesign(root, s);
+  s.name = in.name;
+  ParseTarget(root, in.target, s);
+  ParseLimits(root, in.limits, s);
+  s.spec.material = in.material.ToMaterial();
+  ParseAnalysis(in.analysis, s);
+  ParseOptimizer(in.optimizer, s);
+  if (in.objective == "volume") s.spec.objective = objectives::CycloidSizeObjective::kVolume;
+  const std::map<std::string, Field> fields = ParseDesign(root, in, s);
   CheckPlausibleBox(fields, s.spec.drive.rollers);
   CheckCrowningBox(root, fields, s);
   CheckClosedFormCorner(root, fields, s);
   ParseSizingLife(root, s);
   return s;
+}
+
+nlohmann::ordered_json Input::Variables::VariableSchema(const std::string& name) {
+  using ojson = nlohmann::ordered_json;
+  // The bound of the field's values, of a range's items and of the start; a range's own bound on
+  // one end (prefixItems), and the description's tail.
+  ojson bound = ojson::object(), prefix;
+  std::string tail;
+  if (name == "delta_position_um" || name == "delta_radius_um") {
+    prefix = ojson::array({ojson::object(),
+                           {{"maximum", 0}, {"description", "upper bound <= 0 (a positive modification interferes)"}}});
+    tail = "[um]; a range's upper bound <= 0";
+  } else if (name == "coefficient_mm" || name == "flat_length_mm") {
+    bound = {{"minimum", 0}};
+    tail = ">= 0 [mm]";
+  } else if (name == "effective_length_mm") {
+    bound = {{"minimum", 0}};
+    prefix = ojson::array(
+        {{{"exclusiveMinimum", 0}, {"description", "lower bound > 0 (0, L = the face width, is a fixed value only)"}}});
+    tail = ">= the face width [mm], or 0 (L = the face width; a fixed value only)";
+  } else if (name == "end_drop_mm") {
+    bound = {{"minimum", 0}};
+    prefix = ojson::array({{{"exclusiveMinimum", 0}, {"description", "lower bound > 0 (0 means an unbounded drop)"}}});
+    tail = ">= 0 [mm]; a range's lower bound > 0";
+  } else {  // the drive's lengths and the crowning radius
+    bound = {{"exclusiveMinimum", 0}};
+    tail = name == "radius_mm" ? "> 0 [mm], more than half the crowned length" : "> 0 [mm]";
+  }
+  ojson item = {{"type", "number"}};
+  item.update(bound);
+  ojson range = {{"type", "array"}, {"items", item}, {"minItems", 2}, {"maxItems", 2}};
+  if (!prefix.is_null()) range["prefixItems"] = prefix;
+  range["description"] = "[lower, upper] with lower <= upper (equal: a fixed value)";
+  ojson start = {{"type", "number"}};
+  start.update(bound);
+  start["description"] = "the start, within the range";
+  ojson v = {{"type", {"number", "array", "object"}}};
+  v.update(bound);
+  v["items"] = item;
+  if (!prefix.is_null()) v["prefixItems"] = prefix;
+  v["minItems"] = 2;
+  v["maxItems"] = 2;
+  v["properties"] = {{"range", range}, {"start", start}};
+  v["required"] = {"range"};
+  v["additionalProperties"] = false;
+  v["description"] = "a number (fixed), [lower, upper] (a range, starting at its middle) or {\"range\": [lower, upper], "
+                     "\"start\": value}; " + tail;
+  return v;
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  // Each sized field once: in variables or in its block (drive, modification, crowning); the
+  // drive's fields in one of the two; a crowning variable needs the crowning type that has it, and
+  // each type's fields are given or variables; a life (a speed or a duty cycle) needs the crank
+  // bearing and the output mechanism, one speed form, and limits.life_h a speed; min_edge_margin_um
+  // needs the overload torque.
+  return nlohmann::ordered_json::parse(R"({
+ "allOf": [
+  {
+   "if": {
+    "required": [
+     "limits"
+    ],
+    "properties": {
+     "limits": {
+      "required": [
+       "min_edge_margin_um"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "target": {
+      "required": [
+       "overload_torque_Nm"
+      ]
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "eccentricity_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "drive": {
+      "not": {
+       "required": [
+        "eccentricity_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "roller_position_radius_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "drive": {
+      "not": {
+       "required": [
+        "roller_position_radius_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "roller_radius_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "drive": {
+      "not": {
+       "required": [
+        "roller_radius_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "face_width_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "drive": {
+      "not": {
+       "required": [
+        "face_width_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "delta_position_um"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "modification": {
+      "not": {
+       "required": [
+        "delta_position_um"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "delta_radius_um"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "modification": {
+      "not": {
+       "required": [
+        "delta_radius_um"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "coefficient_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "crowning": {
+      "not": {
+       "required": [
+        "coefficient_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "effective_length_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "crowning": {
+      "not": {
+       "required": [
+        "effective_length_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "end_drop_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "crowning": {
+      "not": {
+       "required": [
+        "end_drop_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "flat_length_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "crowning": {
+      "not": {
+       "required": [
+        "flat_length_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "radius_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "properties": {
+     "crowning": {
+      "not": {
+       "required": [
+        "radius_mm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "anyOf": [
+    {
+     "properties": {
+      "variables": {
+       "required": [
+        "eccentricity_mm"
+       ]
+      }
+     }
+    },
+    {
+     "required": [
+      "drive"
+     ],
+     "properties": {
+      "drive": {
+       "required": [
+        "eccentricity_mm"
+       ]
+      }
+     }
+    }
+   ]
+  },
+  {
+   "anyOf": [
+    {
+     "properties": {
+      "variables": {
+       "required": [
+        "roller_position_radius_mm"
+       ]
+      }
+     }
+    },
+    {
+     "required": [
+      "drive"
+     ],
+     "properties": {
+      "drive": {
+       "required": [
+        "roller_position_radius_mm"
+       ]
+      }
+     }
+    }
+   ]
+  },
+  {
+   "anyOf": [
+    {
+     "properties": {
+      "variables": {
+       "required": [
+        "roller_radius_mm"
+       ]
+      }
+     }
+    },
+    {
+     "required": [
+      "drive"
+     ],
+     "properties": {
+      "drive": {
+       "required": [
+        "roller_radius_mm"
+       ]
+      }
+     }
+    }
+   ]
+  },
+  {
+   "anyOf": [
+    {
+     "properties": {
+      "variables": {
+       "required": [
+        "face_width_mm"
+       ]
+      }
+     }
+    },
+    {
+     "required": [
+      "drive"
+     ],
+     "properties": {
+      "drive": {
+       "required": [
+        "face_width_mm"
+       ]
+      }
+     }
+    }
+   ]
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "coefficient_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "logarithmic"
+        ]
+       }
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "effective_length_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "logarithmic"
+        ]
+       }
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "end_drop_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "logarithmic"
+        ]
+       }
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "flat_length_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "logarithmic",
+         "partial"
+        ]
+       }
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "properties": {
+     "variables": {
+      "required": [
+       "radius_mm"
+      ]
+     }
+    }
+   },
+   "then": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "full",
+         "partial"
+        ]
+       }
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "full"
+        ]
+       }
+      }
+     }
+    }
+   },
+   "then": {
+    "anyOf": [
+     {
+      "properties": {
+       "crowning": {
+        "required": [
+         "radius_mm"
+        ]
+       }
+      }
+     },
+     {
+      "properties": {
+       "variables": {
+        "required": [
+         "radius_mm"
+        ]
+       }
+      }
+     }
+    ]
+   }
+  },
+  {
+   "if": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "partial"
+        ]
+       }
+      }
+     }
+    }
+   },
+   "then": {
+    "anyOf": [
+     {
+      "properties": {
+       "crowning": {
+        "required": [
+         "radius_mm"
+        ]
+       }
+      }
+     },
+     {
+      "properties": {
+       "variables": {
+        "required": [
+         "radius_mm"
+        ]
+       }
+      }
+     }
+    ]
+   }
+  },
+  {
+   "if": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "partial"
+        ]
+       }
+      }
+     }
+    }
+   },
+   "then": {
+    "anyOf": [
+     {
+      "properties": {
+       "crowning": {
+        "required": [
+         "flat_length_mm"
+        ]
+       }
+      }
+     },
+     {
+      "properties": {
+       "variables": {
+        "required": [
+         "flat_length_mm"
+        ]
+       }
+      }
+     }
+    ]
+   }
+  },
+  {
+   "if": {
+    "required": [
+     "crowning"
+    ],
+    "properties": {
+     "crowning": {
+      "properties": {
+       "type": {
+        "enum": [
+         "logarithmic"
+        ]
+       }
+      }
+     }
+    }
+   },
+   "then": {
+    "anyOf": [
+     {
+      "properties": {
+       "crowning": {
+        "required": [
+         "coefficient_mm"
+        ]
+       }
+      }
+     },
+     {
+      "properties": {
+       "variables": {
+        "required": [
+         "coefficient_mm"
+        ]
+       }
+      }
+     }
+    ]
+   }
+  },
+  {
+   "if": {
+    "anyOf": [
+     {
+      "required": [
+       "duty_cycle"
+      ]
+     },
+     {
+      "required": [
+       "load"
+      ],
+      "properties": {
+       "load": {
+        "required": [
+         "input_speed_rpm"
+        ]
+       }
+      }
+     }
+    ]
+   },
+   "then": {
+    "required": [
+     "crank_bearing",
+     "output_mechanism"
+    ]
+   }
+  },
+  {
+   "if": {
+    "required": [
+     "duty_cycle"
+    ]
+   },
+   "then": {
+    "properties": {
+     "load": {
+      "not": {
+       "required": [
+        "input_speed_rpm"
+       ]
+      }
+     }
+    }
+   }
+  },
+  {
+   "if": {
+    "required": [
+     "limits"
+    ],
+    "properties": {
+     "limits": {
+      "required": [
+       "life_h"
+      ]
+     }
+    }
+   },
+   "then": {
+    "anyOf": [
+     {
+      "required": [
+       "duty_cycle"
+      ]
+     },
+     {
+      "required": [
+       "load"
+      ],
+      "properties": {
+       "load": {
+        "required": [
+         "input_speed_rpm"
+        ]
+       }
+      }
+     }
+    ]
+   }
+  }
+ ]
+})");
 }
 
 Result Run(const Study& s, const RunContext& ctx) {
@@ -995,21 +1758,66 @@ void RunCycloidMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 
 CAMOPT_REGISTER_STUDY("cycloid_min_size", RunCycloidMinSize);
 CAMOPT_REGISTER_STUDY_PARSER("cycloid_min_size", [](const Node& root) { (void)Parse(root); });
+CAMOPT_REGISTER_DECLARED_KIND("cycloid_min_size", Input,
+                              "camopt study: the smallest cycloid drive for a ratio and a torque");
+
+// The declared input of a study, for the knobs and the estimate below, which run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the fast model's crank angles
 // and contact grid (the accurate check follows them at twice each) and the optimizer's budget.
 Fidelity Knobs(const nlohmann::json&) {
+  const Input defaults;
+  const cycloid::LoadedOptions grid;
   Fidelity f;
   f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"},
-                     kDefaultCrankAnglesPerMeshPeriod, 2, true, 0, "uniform crank angles per mesh period (fast model)"});
-  f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
+                     defaults.analysis.crank_angles_per_mesh_period, 2, true, 0,
+                     "uniform crank angles per mesh period (fast model)"});
+  f.knobs.push_back({"grid", {"/analysis/grid"}, {grid.profile_cells, grid.axial_cells}, 2, true, 0,
                      "contact cells across the profile and along the face (fast model)"});
-  f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, kDefaultMaxEvaluations, 2, true, 0,
+  f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, defaults.optimizer.max_evaluations, 2, true, 0,
                      "optimizer budget per solve (Ipopt: iterations; SLSQP: evaluations)"});
   f.headlines = {"/best/outer_diameter_mm", "/best/accurate/max_contact_stress_MPa"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("cycloid_min_size", Knobs);
+
+// The work limit (studies/work_limits.h). Every solve (the starts, then one per tightening round
+// of the verified-optimum loop) may use its whole budget, each iteration about two value runs of
+// both cycles (the line search) and a gradient (about 0.65 value runs per variable, as in
+// cycloid_crowning_tuning); each round's accurate check runs both cycles on twice the angles and
+// four times the cells, and the fast ones beside them; the stress plot one more accurate design
+// cycle. Measured on the examples (16 × 16 cells, 4 angles): 4.5e6 (16 pins) to 9e6 (30 pins) of
+// these units a second, and the solves use a fifth of their budget or less; the cap is about a
+// minute of the full budget.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const Input::Target& t = in.target;
+  const double teeth = t.teeth ? double(*t.teeth) : t.speed_ratio.is_number() ? std::abs(t.speed_ratio.get<double>()) : 15;
+  const double rollers = std::isfinite(teeth) ? teeth + 1 : 16;
+  const std::array<int, 2> grid = in.analysis.grid.value_or(std::array<int, 2>{40, 40});
+  const double cells = double(grid[0]) * grid[1];
+  const double angles = in.analysis.crank_angles_per_mesh_period;
+  const double torques = t.overload_torque_Nm ? 2 : 1;
+  // The variables that vary (a range or {"range": ...}); a fixed number costs nothing.
+  double variables = 0;
+  for (const auto& v : study.at("variables")) variables += v.is_array() || v.is_object() ? 1 : 0;
+  const double starts = in.optimizer.starts, rounds = in.optimizer.verify_rounds;
+  const double budget = in.optimizer.max_evaluations;
+  const double cycle = angles * rollers * cells;
+  const double solves = budget * (starts + rounds) * (2 + 0.65 * variables) * torques * cycle;
+  const double checks = (1 + rounds) * (1 + 2 * 4) * torques * cycle + 2 * 4 * cycle;
+  return LargestTerm({{solves, "/optimizer/max_evaluations",
+                       WorkNumber(budget) + " iterations × " + WorkNumber(starts + rounds) + " solves × (2 + 0.65 × " +
+                           WorkNumber(variables) + " variables) × " + WorkNumber(torques) + " torques × " +
+                           WorkNumber(angles) + " crank angles × " + WorkNumber(rollers) + " rollers × " +
+                           WorkNumber(cells) + " grid cells"},
+                      {checks, "/analysis/grid",
+                       "verification: " + WorkNumber(1 + rounds) +
+                           " accurate checks on twice the angles and four times the cells"}},
+                     5e8 * factor, "contact cell solves", 1);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_min_size", EstimateWork);
 
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("cycloid_min_size", {

@@ -14,6 +14,8 @@
 // best design at the accurate settings.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,10 @@
 
 #include "model/cycloid/loaded_tca.h"
 #include "objectives/cycloid_min_size.h"
+#include "studies/archive.h"
+#include "studies/cycloid_input.h"
 #include "studies/input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_min_size {
@@ -32,6 +37,208 @@ inline constexpr int kDefaultMaxEvaluations = 200;
 inline constexpr int kDefaultVerifyRounds = 3;
 /// Defaults of the "analysis" block (as cycloid_crowning_tuning).
 inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 6;
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds and
+/// description (studies/archive.h); the blocks shared with the other cycloid kinds are those of
+/// studies/cycloid_input.h. Parse reads it, checks what spans fields (the box of the ranges against
+/// the closed-form limits among them) and converts it (Study); `camopt schema cycloid_min_size` is
+/// emitted from it.
+struct Input {
+  struct Target {
+    std::optional<int> teeth;
+    nlohmann::json speed_ratio;  ///< null: absent (read by Parse, whose message says what would fit)
+    double design_torque_Nm = 0;
+    std::optional<double> overload_torque_Nm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Retired("misalignment_mrad",
+                 "the cycloid contact model has no misalignment (model/cycloid/loaded_tca.h: disc and pins are "
+                 "parallel; only the crowning shapes the load along the face); remove the field, and keep the "
+                 "contact off the face ends at a higher overload_torque_Nm instead");
+      a->Visit("teeth", &teeth, Field().AtLeast(2).Desc("z, the disc's teeth (z + 1 pins); or speed_ratio"));
+      a->Visit("speed_ratio", &speed_ratio,
+               Field().Schema({{"type", "integer"}, {"minimum", 2}}).Desc(
+                   "the reduction z of the drive with the ring fixed and the output from the disc (the output "
+                   "turns the other way); the same number as teeth, instead of it"));
+      a->Visit("design_torque_Nm", &design_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc("on the disc (the output torque)"));
+      a->Visit("overload_torque_Nm", &overload_torque_Nm,
+               Field().Positive().Unit("N·m").Desc(
+                   ">= design_torque_Nm; the contact stays off the face ends up to it (absent: no overload cycle)"));
+    }
+    static nlohmann::ordered_json SchemaRules() {
+      return {{"oneOf", {{{"required", {"teeth"}}}, {{"required", {"speed_ratio"}}}}}};
+    }
+  };
+  /// "variables": each sized field a number (fixed), [lo, hi] (a range, starting at its middle) or
+  /// {"range": [lo, hi], "start": value}, read by Parse (the schema of each: VariableSchema).
+  struct Variables {
+    nlohmann::json eccentricity_mm, roller_position_radius_mm, roller_radius_mm, face_width_mm, delta_position_um,
+        delta_radius_um, coefficient_mm, effective_length_mm, end_drop_mm, flat_length_mm, radius_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      for (auto& [name, member] : std::array<std::pair<const char*, nlohmann::json*>, 11>{{
+               {"eccentricity_mm", &eccentricity_mm},
+               {"roller_position_radius_mm", &roller_position_radius_mm},
+               {"roller_radius_mm", &roller_radius_mm},
+               {"face_width_mm", &face_width_mm},
+               {"delta_position_um", &delta_position_um},
+               {"delta_radius_um", &delta_radius_um},
+               {"coefficient_mm", &coefficient_mm},
+               {"effective_length_mm", &effective_length_mm},
+               {"end_drop_mm", &end_drop_mm},
+               {"flat_length_mm", &flat_length_mm},
+               {"radius_mm", &radius_mm}}})
+        a->Visit(name, member, Field().Schema(VariableSchema(name)));
+    }
+    static nlohmann::ordered_json SchemaRules() { return {{"minProperties", 1}}; }
+    /// The schema of one sized field (with its description).
+    static nlohmann::ordered_json VariableSchema(const std::string& name);
+  };
+  /// "drive": the fixed drive fields (those not in variables).
+  struct Drive {
+    std::optional<double> eccentricity_mm, roller_position_radius_mm, roller_radius_mm, face_width_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("eccentricity_mm", &eccentricity_mm, Field().Positive().Unit("mm").Desc("e, the crank's eccentricity"));
+      a->Visit("roller_position_radius_mm", &roller_position_radius_mm,
+               Field().Positive().Unit("mm").Desc("a, the radius of the pins' circle"));
+      a->Visit("roller_radius_mm", &roller_radius_mm, Field().Positive().Unit("mm").Desc("ρ, of each pin"));
+      a->Visit("face_width_mm", &face_width_mm, Field().Positive().Unit("mm").Desc("b, the disc's width"));
+    }
+  };
+  struct Limits {
+    double contact_stress_MPa = 0;
+    std::optional<double> min_edge_margin_um, min_curtate_margin;
+    double min_profile_radius_mm = 0, min_pin_gap_mm = 0, min_backlash_arcsec = 0;
+    std::optional<double> max_backlash_arcsec, max_lte_peak_to_peak_arcsec, bore_diameter_mm, min_web_mm, life_h;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Required().Positive().Unit("MPa").Desc("peak pressure over the design-torque cycle"));
+      a->Visit("min_edge_margin_um", &min_edge_margin_um,
+               Field().Unit("µm").Desc(
+                   "end distance of the contact from the face ends over the overload cycle (needs "
+                   "target.overload_torque_Nm); absent: 0"));
+      a->Visit("min_curtate_margin", &min_curtate_margin,
+               Field().AtLeast(0, "a number in [0, 1) (1 - e (z + 1) / a')").Below(1, "a number in [0, 1) (1 - e (z + 1) / a')")
+                   .Desc("1 - e (z + 1) / a' (absent: 0.05)"));
+      a->Visit("min_profile_radius_mm", &min_profile_radius_mm,
+               Field().NonNegative().Unit("mm").Desc("smallest convex radius of the tooth (0: no undercut)"));
+      a->Visit("min_pin_gap_mm", &min_pin_gap_mm, Field().NonNegative().Unit("mm").Desc("clearance between neighbouring pins"));
+      a->Visit("min_backlash_arcsec", &min_backlash_arcsec,
+               Field().NonNegative().Unit("arcsec").Desc("unloaded TE at every angle"));
+      a->Visit("max_backlash_arcsec", &max_backlash_arcsec,
+               Field().Positive().Unit("arcsec").Desc("> min_backlash_arcsec (absent: none)"));
+      a->Visit("max_lte_peak_to_peak_arcsec", &max_lte_peak_to_peak_arcsec,
+               Field().Positive().Unit("arcsec").Desc("the loaded transmission error's peak to peak (absent: none)"));
+      a->Visit("bore_diameter_mm", &bore_diameter_mm,
+               Field().Positive().Unit("mm").Desc("the disc's central bore (absent: none)"));
+      a->Visit("min_web_mm", &min_web_mm,
+               Field().NonNegative().Unit("mm").Desc(
+                   "web between the tooth roots and the bore (needs bore_diameter_mm; absent: 0)"));
+      a->Visit("life_h", &life_h,
+               Field().Positive().Unit("h").Desc(
+                   "shortest ISO 281 L10h of any rated bearing over the duty cycle (needs load.input_speed_rpm or "
+                   "duty_cycle; docs/life.md, Cycloid; absent: none)"));
+    }
+    static nlohmann::ordered_json SchemaRules() {
+      return {{"dependentRequired", {{"min_web_mm", {"bore_diameter_mm"}}}}};
+    }
+  };
+  struct Analysis {
+    std::optional<std::array<int, 2>> grid;
+    int crank_angles_per_mesh_period = kDefaultCrankAnglesPerMeshPeriod;
+    double tolerance = cycloid::LoadedOptions{}.tolerance;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("grid", &grid, cycloid_common::GridField().Desc(
+          "[profile_cells, axial_cells] of the fast model, 4 to 512 each; the accurate check has twice each"));
+      a->Visit("crank_angles_per_mesh_period", &crank_angles_per_mesh_period,
+               Field().AtLeast(1).AtMost(1000, "at most 1000").Desc("of the fast model; the accurate check has twice"));
+      a->Visit("tolerance", &tolerance, Field().Positive().Desc("relative compatibility residual of the LTCA"));
+    }
+  };
+  struct Optimizer {
+    std::string backend = "ipopt";
+    int starts = kDefaultStarts, max_evaluations = kDefaultMaxEvaluations, verify_rounds = kDefaultVerifyRounds;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}, "one of \"ipopt\", \"slsqp\"").Desc("the solver: Ipopt or NLopt's SLSQP"));
+      a->Visit("starts", &starts, Field().AtLeast(1).AtMost(10, "at most 10 starts").Desc("starts of the solver"));
+      a->Visit("max_evaluations", &max_evaluations,
+               Field().AtLeast(1).AtMost(10000, "at most 10000").Desc("per solve: Ipopt iterations, SLSQP evaluations"));
+      a->Visit("verify_rounds", &verify_rounds,
+               Field().AtLeast(0).AtMost(10, "at most 10 rounds").Desc("rounds of the accurate model's verification"));
+    }
+  };
+  struct Load {
+    std::optional<double> input_speed_rpm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("input_speed_rpm", &input_speed_rpm,
+               Field().Positive().Unit("rpm").Desc(
+                   "input (crank) speed: the bearing lives at target.design_torque_Nm (a one-line duty cycle; "
+                   "docs/life.md, Cycloid)"));
+    }
+  };
+
+  std::string study = "cycloid_min_size", name;
+  std::optional<std::string> description;
+  Target target;
+  Variables variables;
+  std::optional<Drive> drive;
+  std::optional<cycloid_common::ModificationInput> modification;
+  std::optional<cycloid_common::CrowningStartInput> crowning;
+  Limits limits;
+  std::string objective = "outer_diameter";
+  MaterialInput material;
+  Analysis analysis;
+  Optimizer optimizer;
+  std::optional<Load> load;
+  nlohmann::json duty_cycle, crank_bearing, pins;
+  std::optional<cycloid_common::OutputMechanismInput> output_mechanism;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("cycloid_min_size").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("target", &target, Field().Required().Desc("the ratio and the torques"));
+    a->Visit("variables", &variables,
+             Field().Required().Desc("the sized fields, named as in cycloid_ltca; at least one a range"));
+    a->Visit("drive", &drive, Field().Desc("fixed drive fields (not in variables)"));
+    a->Visit("modification", &modification, Field().Desc("fixed modifications (not in variables; absent: 0)"));
+    a->Visit("crowning", &crowning,
+             Field().Desc("the crowning type and its fixed fields (a field in variables is left out here); none "
+                          "when absent"));
+    a->Visit("limits", &limits, Field().Required().Desc("what the sized drive must meet"));
+    a->Visit("objective", &objective,
+             Field().OneOf({"outer_diameter", "volume"}, "one of \"outer_diameter\", \"volume\"").Desc("what is minimised: 2 (a + ρ) or π (a + ρ)² b"));
+    a->Visit("material", &material, Field().Required().Desc("the disc's and pins' elastic material"));
+    a->Visit("analysis", &analysis, Field().Desc("the fast model's contact grid, crank angles and tolerance"));
+    a->Visit("optimizer", &optimizer, Field().Desc("the solver, its starts and budget, the verification"));
+    a->Visit("load", &load, Field().Desc("the input speed, for the bearing lives"));
+    a->Visit("duty_cycle", &duty_cycle,
+             Field().Schema(cycloid_common::DutyCycleSchema()).Desc(
+                 "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
+                 "disc's torque; the time shares sum to 1 within 1e-6, at least one speed > 0; each line one cycle "
+                 "of the sizing at its torque"));
+    a->Visit("crank_bearing", &crank_bearing,
+             Field().Schema(cycloid_common::CrankBearingSchema()).Desc(
+                 "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
+    a->Visit("pins", &pins,
+             Field().Schema(cycloid_common::PinRatingSchema()).Desc(
+                 "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
+                 "p = 10/3 (docs/life.md, Cycloid)"));
+    a->Visit("output_mechanism", &output_mechanism,
+             Field().Desc("rigid output pins in the disc's holes (docs/life.md, Cycloid): pin circle radius (inside "
+                          "the disc's root radius) and pin count (absent: the continuous limit)"));
+  }
+  /// The rules between blocks: each sized field once (in variables or its block), the drive's
+  /// fields somewhere, the crowning's fields by its type, a life's blocks.
+  static nlohmann::ordered_json SchemaRules();
+};
 
 struct Study {
   std::string name;

@@ -16,7 +16,9 @@
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/tooth_profile.h"
+#include "studies/archive.h"
 #include "studies/bearing_life_io.h"
+#include "studies/cycloid_input.h"
 #include "studies/format.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
@@ -62,31 +64,33 @@ inline void CheckPlausible(const Node& root, const cycloid::Drive& drive) {
                                    Format(kMinPinToHalfPitch * half_pitch, 4) + " mm would fit");
 }
 
-/// "drive" and the optional "modification" (µm) of a study.
-inline cycloid::Drive ParseDrive(const Node& root) {
+/// The drive of the declared "drive" and "modification" (µm) of a study at `root`, checked: a
+/// one-tooth difference, a plausible drive (CheckPlausible), a feasible one (cycloid::CheckDrive).
+inline cycloid::Drive MakeDrive(const Node& root, const DriveInput& in, const std::optional<ModificationInput>& mod) {
   const Node d = root["drive"];
-  d.CheckKnownFields({"teeth", "rollers", "roller_position_radius_mm", "roller_radius_mm", "eccentricity_mm",
-                      "face_width_mm", "bore_diameter_mm"});
   cycloid::Drive drive;
-  drive.teeth = d["teeth"].Integer(2);
-  drive.rollers = d["rollers"].Integer(3);
+  drive.teeth = in.teeth;
+  drive.rollers = in.rollers;
   if (drive.rollers != drive.teeth + 1) d["rollers"].Fail("teeth + 1 (a one-tooth-difference drive)");
-  drive.roller_position_radius_mm = d["roller_position_radius_mm"].Positive();
-  drive.roller_radius_mm = d["roller_radius_mm"].Positive();
-  drive.eccentricity_mm = d["eccentricity_mm"].Positive();
-  drive.face_width_mm = d["face_width_mm"].Positive();
-  // The cam's bore: read by cycloid_ltca (geometry files); a number > 0 wherever it is given.
-  if (d.Has("bore_diameter_mm")) d["bore_diameter_mm"].Positive();
-  if (root.Has("modification")) {
-    const Node m = root["modification"];
-    m.CheckKnownFields({"delta_position_um", "delta_radius_um"});
-    drive.delta_position_mm = m.NumberOr("delta_position_um", 0.0) * 1e-3;
-    drive.delta_radius_mm = m.NumberOr("delta_radius_um", 0.0) * 1e-3;
+  drive.roller_position_radius_mm = in.roller_position_radius_mm;
+  drive.roller_radius_mm = in.roller_radius_mm;
+  drive.eccentricity_mm = in.eccentricity_mm;
+  drive.face_width_mm = in.face_width_mm;
+  if (mod) {
+    drive.delta_position_mm = mod->delta_position_um.value_or(0.0) * 1e-3;
+    drive.delta_radius_mm = mod->delta_radius_um.value_or(0.0) * 1e-3;
   }
   CheckPlausible(root, drive);  // first: a unit mistake explains whatever else fails
   if (const std::string why = cycloid::CheckDrive(drive); !why.empty())
     d.FailWith("infeasible drive: " + why);
   return drive;
+}
+
+/// "drive" and the optional "modification" (µm) of a study (read with their declarations).
+inline cycloid::Drive ParseDrive(const Node& root) {
+  std::optional<ModificationInput> mod;
+  if (root.Has("modification")) mod = Read<ModificationInput>(root["modification"]);
+  return MakeDrive(root, Read<DriveInput>(root["drive"]), mod);
 }
 
 inline cycloid::Material ParseMaterial(const Node& root) {
@@ -95,77 +99,84 @@ inline cycloid::Material ParseMaterial(const Node& root) {
   return studies::ParseMaterial(n);
 }
 
-/// "crowning": {"type": none | full | partial | logarithmic, ...}.
-inline cycloid::Crowning ParseCrowning(const Node& root, double face_width_mm) {
+/// The crowning of the declared "crowning" at root (absent: none): the fields of its type, each
+/// required one given (a missing one fails as missing), the others refused as unknown; checked
+/// against the face width (cycloid::CheckCrowning).
+inline cycloid::Crowning MakeCrowning(const Node& root, const std::optional<CrowningInput>& in, double face_width_mm) {
   cycloid::Crowning c;
-  if (!root.Has("crowning")) return c;
+  if (!in) return c;
   const Node n = root["crowning"];
-  const std::string type = n["type"].String();
-  // Each type reads its own fields; any other field (e.g. a coefficient on a full crowning) is an error.
-  if (type == "none") {
+  const auto required = [&](const std::optional<double>& v, const char* field) {
+    if (!v) (void)n[field];  // "missing required field"
+    return *v;
+  };
+  if (in->type == "none") {
     n.CheckKnownFields({"type"});
     c.type = cycloid::CrowningType::kNone;
-  } else if (type == "full") {
+  } else if (in->type == "full") {
     n.CheckKnownFields({"type", "radius_mm"});
     c.type = cycloid::CrowningType::kFull;
-    c.radius_mm = n["radius_mm"].Positive();
-  } else if (type == "partial") {
+    c.radius_mm = required(in->radius_mm, "radius_mm");
+  } else if (in->type == "partial") {
     n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
     c.type = cycloid::CrowningType::kPartial;
-    c.radius_mm = n["radius_mm"].Positive();
-    c.flat_length_mm = n["flat_length_mm"].NonNegative();
-  } else if (type == "logarithmic") {
+    c.radius_mm = required(in->radius_mm, "radius_mm");
+    c.flat_length_mm = required(in->flat_length_mm, "flat_length_mm");
+  } else {  // "logarithmic" (the declaration allows no other)
     n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
     c.type = cycloid::CrowningType::kLogarithmic;
-    c.coefficient_mm = n["coefficient_mm"].NonNegative();
-    c.effective_length_mm = n.NonNegativeOr("effective_length_mm", 0.0);
-    c.end_drop_mm = n.NonNegativeOr("end_drop_mm", 0.0);
-    c.flat_length_mm = n.NonNegativeOr("flat_length_mm", 0.0);
-  } else {
-    n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
+    c.coefficient_mm = required(in->coefficient_mm, "coefficient_mm");
+    c.effective_length_mm = in->effective_length_mm.value_or(0.0);
+    c.end_drop_mm = in->end_drop_mm.value_or(0.0);
+    c.flat_length_mm = in->flat_length_mm.value_or(0.0);
   }
   if (const std::string why = cycloid::CheckCrowning(c, face_width_mm); !why.empty())
     n.FailWith(why);
   return c;
 }
 
-/// "crowning" of a study that tunes or sizes some of its fields: its type and the start (or fixed)
-/// values of its fields. A field named in `variables` may be left out (it is 0 here; the variable
-/// sets it); a required field of the type (cycloid_ltca's) that is neither given nor a variable is
-/// "missing". No "crowning": none. CheckCrowning is left to the caller, which knows the values the
-/// variables take.
-inline cycloid::Crowning ParseCrowningStart(const Node& root, const std::set<std::string>& variables) {
+/// "crowning" of a study that tunes or sizes some of its fields (declared by CrowningStartInput):
+/// its type and the start (or fixed) values of its fields. A field named in `variables` may be
+/// left out (it is 0 here; the variable sets it); a required field of the type (cycloid_ltca's)
+/// that is neither given nor a variable is "missing". No "crowning": none. CheckCrowning is left to
+/// the caller, which knows the values the variables take.
+inline cycloid::Crowning MakeCrowningStart(const Node& root, const std::optional<CrowningStartInput>& in,
+                                           const std::set<std::string>& variables) {
   cycloid::Crowning c;
-  if (!root.Has("crowning")) return c;
+  if (!in) return c;
   const Node n = root["crowning"];
-  const std::string type = n["type"].String();
-  auto value = [&](const char* field, bool required, double fallback) {
-    if (n.Has(field)) return n[field].NonNegative();
+  auto value = [&](const std::optional<double>& v, const char* field, bool required) {
+    if (v) return *v;
     if (required && !variables.count(field)) n[field].NonNegative();  // "missing field"
-    return fallback;
+    return 0.0;
   };
-  if (type == "none") {
+  if (in->type == "none") {
     n.CheckKnownFields({"type"});
-  } else if (type == "full") {
+  } else if (in->type == "full") {
     n.CheckKnownFields({"type", "radius_mm"});
     c.type = cycloid::CrowningType::kFull;
-    c.radius_mm = value("radius_mm", true, 0.0);
-  } else if (type == "partial") {
+    c.radius_mm = value(in->radius_mm, "radius_mm", true);
+  } else if (in->type == "partial") {
     n.CheckKnownFields({"type", "radius_mm", "flat_length_mm"});
     c.type = cycloid::CrowningType::kPartial;
-    c.radius_mm = value("radius_mm", true, 0.0);
-    c.flat_length_mm = value("flat_length_mm", true, 0.0);
-  } else if (type == "logarithmic") {
+    c.radius_mm = value(in->radius_mm, "radius_mm", true);
+    c.flat_length_mm = value(in->flat_length_mm, "flat_length_mm", true);
+  } else {  // "logarithmic" (the declaration allows no other)
     n.CheckKnownFields({"type", "coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
     c.type = cycloid::CrowningType::kLogarithmic;
-    c.coefficient_mm = value("coefficient_mm", true, 0.0);
-    c.effective_length_mm = value("effective_length_mm", false, 0.0);
-    c.end_drop_mm = value("end_drop_mm", false, 0.0);
-    c.flat_length_mm = value("flat_length_mm", false, 0.0);
-  } else {
-    n["type"].Fail("one of \"none\", \"full\", \"partial\", \"logarithmic\"");
+    c.coefficient_mm = value(in->coefficient_mm, "coefficient_mm", true);
+    c.effective_length_mm = value(in->effective_length_mm, "effective_length_mm", false);
+    c.end_drop_mm = value(in->end_drop_mm, "end_drop_mm", false);
+    c.flat_length_mm = value(in->flat_length_mm, "flat_length_mm", false);
   }
   return c;
+}
+
+/// MakeCrowningStart of the study's "crowning", read with its declaration.
+inline cycloid::Crowning ParseCrowningStart(const Node& root, const std::set<std::string>& variables) {
+  std::optional<CrowningStartInput> in;
+  if (root.Has("crowning")) in = Read<CrowningStartInput>(root["crowning"]);
+  return MakeCrowningStart(root, in, variables);
 }
 
 /// The file's word for a crowning type ("none", "full", "partial", "logarithmic").

@@ -148,33 +148,6 @@ double GridCells(const json& analysis) {
   return p * q;
 }
 
-WorkEstimate CycloidLtca(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const double rollers = Size(Sub(s, "drive"), "rollers", 16);
-  const double cells = GridCells(a);
-  const json& list = Sub(a, "crank_angles_deg");
-  // Every way of giving the angles counts: a list, uniform steps, or samples per mesh period.
-  const bool steps_given = Sub(a, "crank_angle_steps").is_number();
-  const double angles = list.is_array() ? double(list.size())
-                        : steps_given   ? Size(a, "crank_angle_steps", 60)
-                                        : Size(a, "crank_angles_per_mesh_period", 60);
-  // The path named is the factor furthest above its default (60 angles, 40×40 cells).
-  const std::string angles_path = list.is_array() ? "/analysis/crank_angles_deg"
-                                  : steps_given   ? "/analysis/crank_angle_steps"
-                                  : Sub(a, "crank_angles_per_mesh_period").is_null()
-                                      ? "/analysis"
-                                      : "/analysis/crank_angles_per_mesh_period";
-  const std::string path = !Sub(a, "grid").is_null() && cells / 1600.0 >= angles / 60.0 ? "/analysis/grid" : angles_path;
-  // The error estimate (on unless estimate_error is false) runs the angles once more (a shifted
-  // set) and a grid with a quarter of the cells.
-  const json& est = Sub(a, "estimate_error");
-  const double runs = est.is_boolean() && !est.get<bool>() ? 1.0 : 2.25;
-  return Largest({{runs * angles * rollers * cells, path,
-                   Num(runs) + " runs × " + Num(angles) + " crank angles × " + Num(rollers) + " rollers × " +
-                       Num(cells) + " grid cells"}},
-                 5e7 * factor, "contact cell solves", 24);
-}
-
 WorkEstimate CrowningTuning(const json& s, double factor) {
   const json& a = Sub(s, "analysis");
   const json& t = Sub(s, "tuning");
@@ -199,42 +172,6 @@ WorkEstimate CrowningTuning(const json& s, double factor) {
                   {verification, "/analysis/grid",
                    "verification: up to 3 rounds × 2 torques on twice the angles and cells"}},
                  5e7 * factor, "contact cell solves", 1);
-}
-
-WorkEstimate CycloidMinSize(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const json& t = Sub(s, "target");
-  const json& o = Sub(s, "optimizer");
-  const double teeth = Sub(t, "teeth").is_number() ? Size(t, "teeth", 15)
-                       : Sub(t, "speed_ratio").is_number() ? std::abs(Sub(t, "speed_ratio").get<double>())
-                                                           : 15;
-  const double rollers = std::isfinite(teeth) ? teeth + 1 : 16;
-  const double cells = GridCells(a);
-  const double angles = Size(a, "crank_angles_per_mesh_period", 6);
-  const double torques = Sub(t, "overload_torque_Nm").is_number() ? 2 : 1;
-  // The variables that vary (a range or {"range": ...}); a fixed number costs nothing.
-  double variables = 0;
-  if (Sub(s, "variables").is_object())
-    for (const auto& v : s["variables"]) variables += v.is_array() || v.is_object() ? 1 : 0;
-  // Every solve (the starts, then one per tightening round of the verified-optimum loop) may use its
-  // whole budget, each iteration about two value runs of both cycles (the line search) and a
-  // gradient (about 0.65 value runs per variable, as in cycloid_crowning_tuning); each round's
-  // accurate check runs both cycles on twice the angles and four times the cells, and the fast ones
-  // beside them; the stress plot one more accurate design cycle. Measured on the examples (16 × 16
-  // cells, 4 angles): 4.5e6 (16 pins) to 9e6 (30 pins) of these units a second, and the solves use
-  // a fifth of their budget or less; the cap is about a minute of the full budget.
-  const double starts = std::max(1.0, Size(o, "starts", 2)), rounds = Size(o, "verify_rounds", 3);
-  const double budget = std::max(1.0, Size(o, "max_evaluations", 200));
-  const double cycle = angles * rollers * cells;
-  const double solves = budget * (starts + rounds) * (2 + 0.65 * variables) * torques * cycle;
-  const double checks = (1 + rounds) * (1 + 2 * 4) * torques * cycle + 2 * 4 * cycle;
-  return Largest({{solves, "/optimizer/max_evaluations",
-                   Num(budget) + " iterations × " + Num(starts + rounds) + " solves × (2 + 0.65 × " + Num(variables) +
-                       " variables) × " + Num(torques) + " torques × " + Num(angles) + " crank angles × " +
-                       Num(rollers) + " rollers × " + Num(cells) + " grid cells"},
-                  {checks, "/analysis/grid",
-                   "verification: " + Num(1 + rounds) + " accurate checks on twice the angles and four times the cells"}},
-                 5e8 * factor, "contact cell solves", 1);
 }
 
 WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
@@ -361,9 +298,7 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
     return it->second(study, file, factor);
   if (kind == "lcr_analysis") return LcrAnalysis(study, factor);
-  if (kind == "cycloid_ltca") return CycloidLtca(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
-  if (kind == "cycloid_min_size") return CycloidMinSize(study, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
   if (kind == "lcr_crowning_tuning") return LcrCrowningTuning(study, factor);
   WorkEstimate none;

@@ -419,6 +419,8 @@ const std::vector<CrossField> kCrossField = {
      "the logarithmic crowning's effective length against the face width (its range)"},
     {"cycloid_min_size", "/variables/effective_length_mm", "below the face width",
      "the logarithmic crowning's effective length against the face width (its range)"},
+    {"cycloid_min_size", "/target/teeth", "too curtate",
+     "the pin count against the eccentricity and pin circle ranges (the curtate margin at the integer bound 1e9)"},
     {"cycloid_min_size", "/target/", "shortening coefficient",
      "the pin count against the eccentricity and pin circle ranges (a plausible drive everywhere in the box)"},
     {"disc_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
@@ -469,6 +471,8 @@ const std::vector<CrossField> kCrossField = {
      "a deflection limit needs load_torque_Nm"},
     {"transmission_rigidity", "/load_torque_Nm", "needs the torque it is under",
      "a deflection limit needs load_torque_Nm"},
+    {"cycloid_ltca", "/output_mechanism/pins", "holes that do not overlap",
+     "the holes' pitch 2 R_w sin(π/Z_w) against hole_radius_mm (the pin count's bound 1e9 of a whole number)"},
 };
 
 // Disagreements found by this test and not yet resolved: conditions JSON Schema could state
@@ -627,7 +631,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 // ---------------------------------------------------------------------------------------------
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
 const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
-                                                 "disc_cam", "disc_cam_min_size"};
+                                                 "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {

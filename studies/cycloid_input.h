@@ -1,0 +1,119 @@
+// The blocks of a cycloid study file that several cycloid kinds share (cycloid_ltca,
+// cycloid_crowning_tuning, cycloid_min_size), each declared once (studies/archive.h): the drive,
+// the profile modification, the crowning, the contact grid, the output mechanism and the schemas
+// of the bearing-life blocks (read by studies/bearing_life_io.h). The checks across fields (a
+// one-tooth difference, a plausible drive, a crowning that fits the face) are in
+// studies/cycloid_study_common.h.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studies/archive.h"
+
+namespace camopt::studies::cycloid_common {
+
+/// "drive": the pin ring and the disc (docs/cycloid.md, "Geometry").
+struct DriveInput {
+  int teeth = 0, rollers = 0;
+  double roller_position_radius_mm = 0, roller_radius_mm = 0, eccentricity_mm = 0, face_width_mm = 0;
+  std::optional<double> bore_diameter_mm;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("teeth", &teeth, Field().Required().AtLeast(2).Desc("z₁, the disc's teeth"));
+    a->Visit("rollers", &rollers,
+             Field().Required().AtLeast(3).Desc("z₂, the ring's pins (rollers): teeth + 1 (a one-tooth difference)"));
+    a->Visit("roller_position_radius_mm", &roller_position_radius_mm,
+             Field().Required().Positive().Unit("mm").Desc("R_p, the radius of the pins' circle"));
+    a->Visit("roller_radius_mm", &roller_radius_mm, Field().Required().Positive().Unit("mm").Desc("r_p, of each pin"));
+    a->Visit("eccentricity_mm", &eccentricity_mm,
+             Field().Required().Positive().Unit("mm").Desc("e, of the crank (shortening coefficient e z₂ / R_p in 0.05 to 1)"));
+    a->Visit("face_width_mm", &face_width_mm, Field().Required().Positive().Unit("mm").Desc("b, the disc's width"));
+    a->Visit("bore_diameter_mm", &bore_diameter_mm,
+             Field().Positive().Unit("mm").Desc(
+                 "the disc's central bore in its solid model (cycloid_ltca's geometry files; accepted by the other "
+                 "cycloid kinds so that a drive block can be shared); absent: none"));
+  }
+};
+
+/// "modification": the profile's equidistant and offset corrections [µm] (docs/cycloid.md).
+struct ModificationInput {
+  /// Absent: 0 (no schema default: cycloid_min_size may size the field in "variables" instead).
+  std::optional<double> delta_position_um, delta_radius_um;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("delta_position_um", &delta_position_um,
+             Field().Unit("µm").Desc("Δa, modification of the pins' circle radius (negative: backlash; absent: 0)"));
+    a->Visit("delta_radius_um", &delta_radius_um,
+             Field().Unit("µm").Desc("Δr, modification of the pin radius (positive: backlash; absent: 0)"));
+  }
+};
+
+/// "crowning": the axial modification of the teeth, by type (docs/cycloid.md, "Crowning"). The
+/// fields of a type are required (cycloid_ltca); those of other types are refused.
+struct CrowningInput {
+  std::string type;
+  std::optional<double> radius_mm, flat_length_mm, coefficient_mm, effective_length_mm, end_drop_mm;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("type", &type,
+             Field().Required().OneOf({"none", "full", "partial", "logarithmic"})
+                 .Desc("none; full (a circular arc over the face); partial (a flat middle and circular ends); "
+                       "logarithmic (Lundberg's profile)"));
+    a->Visit("radius_mm", &radius_mm,
+             Field().Positive().Unit("mm").Desc("full, partial: the crowning radius (more than half the crowned length)"));
+    a->Visit("flat_length_mm", &flat_length_mm,
+             Field().NonNegative().Unit("mm").Desc("partial, logarithmic (absent: 0): the uncrowned middle's length"));
+    a->Visit("coefficient_mm", &coefficient_mm,
+             Field().NonNegative().Unit("mm").Desc("logarithmic: the coefficient of the logarithmic drop"));
+    a->Visit("effective_length_mm", &effective_length_mm,
+             Field().NonNegative().Unit("mm")
+                 .Desc("logarithmic: the crowned length L, >= the face width (absent or 0: the face width)"));
+    a->Visit("end_drop_mm", &end_drop_mm,
+             Field().NonNegative().Unit("mm")
+                 .Desc("logarithmic: the largest drop at the face ends (absent or 0: unbounded)"));
+  }
+  /// Each type's fields: required ones, the others of other types refused.
+  static nlohmann::ordered_json SchemaRules();
+};
+
+/// "crowning" of a study that tunes or sizes some of its fields (cycloid_min_size,
+/// cycloid_crowning_tuning): the same fields, none required here (a field the study varies is left
+/// out; the kind's rules say which it needs).
+struct CrowningStartInput : CrowningInput {
+  /// The fields of other types refused.
+  static nlohmann::ordered_json SchemaRules();
+};
+
+/// "analysis.grid": [profile_cells, axial_cells] of the contact (default 40 × 40).
+inline Field GridField() {
+  return Field().Expect("an array [profile_cells, axial_cells]").AtLeast(4).AtMost(512, "at most 512 cells each way")
+      .Default(nlohmann::json::array({40, 40}))
+      .Desc("[profile_cells, axial_cells]: contact cells across the profile and along the face, 4 to 512 each");
+}
+
+/// "output_mechanism" of the bearing life: rigid output pins in the disc's holes (docs/life.md,
+/// "Cycloid").
+struct OutputMechanismInput {
+  std::optional<int> pin_count;
+  double pin_circle_radius_mm = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("pin_count", &pin_count, Field().AtLeast(3).Desc("output pin count Z_w (absent: the continuous limit)"));
+    a->Visit("pin_circle_radius_mm", &pin_circle_radius_mm,
+             Field().Required().Positive().Unit("mm").Desc("R_w, the output pins' circle, inside the disc's root radius"));
+  }
+};
+
+/// The schema of "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h).
+nlohmann::ordered_json DutyCycleSchema();
+/// The schema of "crank_bearing" (ParseBearingRating with its kind).
+nlohmann::ordered_json CrankBearingSchema();
+/// The schema of "pins" (the ring pins' ratings, ParseBearingRating).
+nlohmann::ordered_json PinRatingSchema();
+
+}  // namespace camopt::studies::cycloid_common
