@@ -1,10 +1,5 @@
 #include "model/disc_cam/follower_dynamics.h"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
-
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -12,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/common/cvode.h"
 namespace camopt::disc_cam {
 namespace {
 
@@ -78,32 +74,7 @@ int Switching(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   }
 }
 
-void QuietErrors(int, const char*, const char*, char*, void*) {}
-
-struct Solver {
-  SUNContext ctx = nullptr;
-  N_Vector y = nullptr, dense = nullptr;
-  SUNMatrix a = nullptr;
-  SUNLinearSolver ls = nullptr;
-  void* mem = nullptr;
-  Solver() {
-    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
-  }
-  ~Solver() {
-    if (mem) CVodeFree(&mem);
-    if (ls) SUNLinSolFree(ls);
-    if (a) SUNMatDestroy(a);
-    if (dense) N_VDestroy(dense);
-    if (y) N_VDestroy(y);
-    SUNContext_Free(&ctx);
-  }
-  Solver(const Solver&) = delete;
-  Solver& operator=(const Solver&) = delete;
-};
-
-void Require(int flag, const char* what) {
-  if (flag < 0) throw std::runtime_error(std::string("follower dynamics: CVODE setup failed in ") + what);
-}
+void Require(int flag, const char* what) { RequireCvode(flag, "follower dynamics", what); }
 
 }  // namespace
 
@@ -168,7 +139,7 @@ FollowerDynamicsResult SimulateFollower(const FollowerDynamicsInput& in) {
     }
   };
 
-  Solver sv;
+  CvodeSolver sv;
   sv.y = N_VNew_Serial(2, sv.ctx);
   sv.dense = N_VNew_Serial(2, sv.ctx);
   if (!sv.y || !sv.dense) throw std::bad_alloc();
@@ -177,7 +148,7 @@ FollowerDynamicsResult SimulateFollower(const FollowerDynamicsInput& in) {
   sv.mem = CVodeCreate(CV_BDF, sv.ctx);
   if (!sv.mem) throw std::runtime_error("follower dynamics: CVodeCreate failed");
   Require(CVodeInit(sv.mem, RightHandSide, 0.0, sv.y), "CVodeInit");
-  Require(CVodeSetErrHandlerFn(sv.mem, QuietErrors, nullptr), "CVodeSetErrHandlerFn");
+  Require(CVodeSetErrHandlerFn(sv.mem, QuietCvodeErrors, nullptr), "CVodeSetErrHandlerFn");
   Require(CVodeSetUserData(sv.mem, &md), "CVodeSetUserData");
   Require(CVodeSStolerances(sv.mem, in.relative_tolerance, in.absolute_tolerance), "tolerances");
   sv.a = SUNDenseMatrix(2, 2, sv.ctx);

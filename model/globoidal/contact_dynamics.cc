@@ -1,10 +1,5 @@
 #include "model/globoidal/contact_dynamics.h"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/common/cvode.h"
 namespace camopt::globoidal {
 namespace {
 
@@ -136,34 +132,7 @@ int SwitchingFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   }
 }
 
-// CVODE's own messages go nowhere: a failure is reported by its return flag, translated below.
-void QuietErrors(int, const char*, const char*, char*, void*) {}
-
-// RAII owners of the SUNDIALS objects.
-struct Solver {
-  SUNContext ctx = nullptr;
-  N_Vector y = nullptr, dense = nullptr;
-  SUNMatrix a = nullptr;
-  SUNLinearSolver ls = nullptr;
-  void* mem = nullptr;
-  Solver() {
-    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
-  }
-  ~Solver() {
-    if (mem) CVodeFree(&mem);
-    if (ls) SUNLinSolFree(ls);
-    if (a) SUNMatDestroy(a);
-    if (dense) N_VDestroy(dense);
-    if (y) N_VDestroy(y);
-    SUNContext_Free(&ctx);
-  }
-  Solver(const Solver&) = delete;
-  Solver& operator=(const Solver&) = delete;
-};
-
-void Require(int flag, const char* what) {
-  if (flag < 0) throw std::runtime_error(std::string("globoidal dynamics: CVODE setup failed in ") + what);
-}
+void Require(int flag, const char* what) { RequireCvode(flag, "globoidal dynamics", what); }
 
 std::string Num(double x) {
   char buf[32];
@@ -261,7 +230,7 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   DynamicsSample last = record(0.0, u0, w0, &out.samples);
   if (t_end == 0.0) return out;
 
-  Solver sv;
+  CvodeSolver sv;
   sv.y = N_VNew_Serial(2, sv.ctx);
   sv.dense = N_VNew_Serial(2, sv.ctx);
   if (!sv.y || !sv.dense) throw std::bad_alloc();
@@ -274,7 +243,7 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   sv.mem = CVodeCreate(CV_BDF, sv.ctx);
   if (!sv.mem) throw std::runtime_error("globoidal dynamics: CVodeCreate failed");
   Require(CVodeInit(sv.mem, RightHandSide, 0.0, sv.y), "CVodeInit");
-  Require(CVodeSetErrHandlerFn(sv.mem, QuietErrors, nullptr), "CVodeSetErrHandlerFn");
+  Require(CVodeSetErrHandlerFn(sv.mem, QuietCvodeErrors, nullptr), "CVodeSetErrHandlerFn");
   Require(CVodeSetUserData(sv.mem, &pb), "CVodeSetUserData");
   Require(CVodeSStolerances(sv.mem, in.relative_tolerance, in.absolute_tolerance), "tolerances");
   sv.a = SUNDenseMatrix(2, 2, sv.ctx);
