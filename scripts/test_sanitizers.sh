@@ -74,6 +74,9 @@ long_tests=(
   # camopt init's template of every kind run whole (the templates are examples that run above;
   # Init.UnknownKind* stays)
   '^Init\.EveryKindsStudyRuns'
+  # every declared kind's refused studies through the command line, one process each (234 s in
+  # Release, past 600 s here; SchemaParserAgreement.EveryKinds* runs the same parser in-process)
+  '^SchemaParserAgreement\.DeclaredKindsRefuseWhatTheSchemaRefusesWithExit2'
 )
 # (The builds that run no camopt code, InstalledHeaders, ConsumerProject and ApiReference, are not
 # registered in this build at all: cmake/camopt_package.cmake, cmake/camopt_docs.cmake.)
@@ -87,8 +90,11 @@ if [[ "${1:-}" == "--all" ]]; then
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
   exit
 fi
+# (A here-string, not a pipe: `grep -q` stops reading at its first match, and under pipefail the
+# writer's SIGPIPE would count as "no match".)
+names=$(echo "$listing" | cut -d' ' -f2-)
 for p in "${long_tests[@]}"; do
-  if ! echo "$listing" | cut -d' ' -f2- | grep -Eq -- "$p"; then
+  if ! grep -Eq -- "$p" <<< "$names"; then
     echo "test_sanitizers.sh: the pattern '$p' matches no test" >&2
     exit 1
   fi
