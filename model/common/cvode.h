@@ -7,6 +7,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -42,5 +43,28 @@ inline void RequireCvode(int flag, const char* who, const char* what) {
 
 /// An error handler that prints nothing: failures are reported by the flags, translated by the caller.
 inline void QuietCvodeErrors(int, const char*, const char*, char*, void*) {}
+
+/// Sets sv up for y' = rhs(t, y) from y(0) = y0 (n states): BDF with Newton iterations on a dense
+/// n × n system, scalar tolerances, quiet errors, `user` handed to rhs and to the nroots root
+/// functions. sv.y holds the state, sv.dense is the dense-output buffer. `who` names the caller
+/// in setup errors.
+inline void StartBdfDense(CvodeSolver& sv, const double* y0, int n, CVRhsFn rhs, void* user, double rtol,
+                          double atol, CVRootFn roots, int nroots, const char* who) {
+  sv.y = N_VNew_Serial(n, sv.ctx);
+  sv.dense = N_VNew_Serial(n, sv.ctx);
+  if (!sv.y || !sv.dense) throw std::bad_alloc();
+  double* y = N_VGetArrayPointer(sv.y);
+  for (int i = 0; i < n; ++i) y[i] = y0[i];
+  sv.mem = CVodeCreate(CV_BDF, sv.ctx);
+  if (!sv.mem) throw std::runtime_error(std::string(who) + ": CVodeCreate failed");
+  RequireCvode(CVodeInit(sv.mem, rhs, 0.0, sv.y), who, "CVodeInit");
+  RequireCvode(CVodeSetErrHandlerFn(sv.mem, QuietCvodeErrors, nullptr), who, "CVodeSetErrHandlerFn");
+  RequireCvode(CVodeSetUserData(sv.mem, user), who, "CVodeSetUserData");
+  RequireCvode(CVodeSStolerances(sv.mem, rtol, atol), who, "tolerances");
+  sv.a = SUNDenseMatrix(n, n, sv.ctx);
+  sv.ls = SUNLinSol_Dense(sv.y, sv.a, sv.ctx);
+  RequireCvode(CVodeSetLinearSolver(sv.mem, sv.ls, sv.a), who, "CVodeSetLinearSolver");
+  if (nroots > 0) RequireCvode(CVodeRootInit(sv.mem, nroots, roots), who, "CVodeRootInit");
+}
 
 }  // namespace camopt

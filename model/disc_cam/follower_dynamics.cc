@@ -140,21 +140,10 @@ FollowerDynamicsResult SimulateFollower(const FollowerDynamicsInput& in) {
   };
 
   CvodeSolver sv;
-  sv.y = N_VNew_Serial(2, sv.ctx);
-  sv.dense = N_VNew_Serial(2, sv.ctx);
-  if (!sv.y || !sv.dense) throw std::bad_alloc();
+  const double start[2] = {u0, w0};
+  StartBdfDense(sv, start, 2, RightHandSide, &md, in.relative_tolerance, in.absolute_tolerance, Switching, 2,
+                "follower dynamics");
   double* y = N_VGetArrayPointer(sv.y);
-  y[0] = u0, y[1] = w0;
-  sv.mem = CVodeCreate(CV_BDF, sv.ctx);
-  if (!sv.mem) throw std::runtime_error("follower dynamics: CVodeCreate failed");
-  Require(CVodeInit(sv.mem, RightHandSide, 0.0, sv.y), "CVodeInit");
-  Require(CVodeSetErrHandlerFn(sv.mem, QuietCvodeErrors, nullptr), "CVodeSetErrHandlerFn");
-  Require(CVodeSetUserData(sv.mem, &md), "CVodeSetUserData");
-  Require(CVodeSStolerances(sv.mem, in.relative_tolerance, in.absolute_tolerance), "tolerances");
-  sv.a = SUNDenseMatrix(2, 2, sv.ctx);
-  sv.ls = SUNLinSol_Dense(sv.y, sv.a, sv.ctx);
-  Require(CVodeSetLinearSolver(sv.mem, sv.ls, sv.a), "CVodeSetLinearSolver");
-  Require(CVodeRootInit(sv.mem, 2, Switching), "CVodeRootInit");
   // At most 0.5° of cam and a 40th of the natural period per step, so that no contact opens and
   // closes unseen within a step and the dense output resolves the vibration.
   const double h_max = std::min(0.5 * kDeg / w, 2 * kPi / omega_n / 40.0);

@@ -230,26 +230,15 @@ DynamicsResult SimulateDynamics(const DynamicsInput& in) {
   DynamicsSample last = record(0.0, u0, w0, &out.samples);
   if (t_end == 0.0) return out;
 
-  CvodeSolver sv;
-  sv.y = N_VNew_Serial(2, sv.ctx);
-  sv.dense = N_VNew_Serial(2, sv.ctx);
-  if (!sv.y || !sv.dense) throw std::bad_alloc();
-  double* y = N_VGetArrayPointer(sv.y);
-  y[0] = u0, y[1] = w0;
   // BDF (orders 1–5) with Newton iterations on a dense 2×2 system. The contact damping makes the
   // problem stiff once the start transient has decayed (the turret then follows the slow forced
   // motion): on the example at 120 rpm, rtol 1e-8, BDF takes 4.9k steps, Adams–Moulton 36k
   // (bench/globoidal_bench.cc, docs/performance.md).
-  sv.mem = CVodeCreate(CV_BDF, sv.ctx);
-  if (!sv.mem) throw std::runtime_error("globoidal dynamics: CVodeCreate failed");
-  Require(CVodeInit(sv.mem, RightHandSide, 0.0, sv.y), "CVodeInit");
-  Require(CVodeSetErrHandlerFn(sv.mem, QuietCvodeErrors, nullptr), "CVodeSetErrHandlerFn");
-  Require(CVodeSetUserData(sv.mem, &pb), "CVodeSetUserData");
-  Require(CVodeSStolerances(sv.mem, in.relative_tolerance, in.absolute_tolerance), "tolerances");
-  sv.a = SUNDenseMatrix(2, 2, sv.ctx);
-  sv.ls = SUNLinSol_Dense(sv.y, sv.a, sv.ctx);
-  Require(CVodeSetLinearSolver(sv.mem, sv.ls, sv.a), "CVodeSetLinearSolver");
-  Require(CVodeRootInit(sv.mem, 2, SwitchingFunctions), "CVodeRootInit");
+  CvodeSolver sv;
+  const double start[2] = {u0, w0};
+  StartBdfDense(sv, start, 2, RightHandSide, &pb, in.relative_tolerance, in.absolute_tolerance, SwitchingFunctions,
+                2, "globoidal dynamics");
+  double* y = N_VGetArrayPointer(sv.y);
   const double h_max = MaxStep(in);
   auto configure = [&]() {
     Require(CVodeSetMaxStep(sv.mem, h_max), "CVodeSetMaxStep");
