@@ -4,7 +4,7 @@ file(GLOB_RECURSE CAMOPT_LAYERED_FILES CONFIGURE_DEPENDS
      ${PROJECT_SOURCE_DIR}/model/*.h ${PROJECT_SOURCE_DIR}/model/*.cc ${PROJECT_SOURCE_DIR}/cad/*.h
      ${PROJECT_SOURCE_DIR}/cad/*.cc ${PROJECT_SOURCE_DIR}/objectives/*.h ${PROJECT_SOURCE_DIR}/objectives/*.cc
      ${PROJECT_SOURCE_DIR}/optimizers/*.h ${PROJECT_SOURCE_DIR}/optimizers/*.cc)
-set(CAMOPT_LAYERS_STAMP ${PROJECT_BINARY_DIR}/generated/layers.stamp)
+set(CAMOPT_LAYERS_STAMP ${PROJECT_BINARY_DIR}/layers.stamp)
 add_custom_command(
   OUTPUT ${CAMOPT_LAYERS_STAMP}
   COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -P ${PROJECT_SOURCE_DIR}/cmake/check_layers.cmake
