@@ -6,7 +6,7 @@
 // re-check (verification) is reported as counters [s], with the model runs.
 #include <benchmark/benchmark.h>
 
-#include "objectives/cycloid_min_size.h"
+#include "sizing/cycloid_min_size.h"
 #include "bench/example_study.h"
 #include "tests/reference_designs.h"
 

@@ -31,7 +31,7 @@ install(TARGETS camopt_lib EXPORT camoptTargets
 # Every header of the rooms, each at its path under include/camopt (cad/ too: studies/ headers
 # include it). Listed file by file, not by directory, so that no empty folder is installed.
 # Each installed header compiles on its own against the install tree (scripts/test_consumer.sh).
-foreach(room model objectives optimizers studies cad)
+foreach(room model objectives optimizers sizing studies cad)
   file(GLOB_RECURSE room_headers RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${room}/*.h)
   foreach(header ${room_headers})
     get_filename_component(header_dir ${header} DIRECTORY)

@@ -1,6 +1,7 @@
 // LCR sizing that holds across manufacturing tolerances: the robust rows of the sizing
-// problem (objectives/lcr_sizing.h, LcrSizingSpec::robust), the robust solve of one combination,
-// and the Monte-Carlo check of a design against the exact model.
+// problem (objectives/lcr_sizing.h, LcrSizingSpec::robust), their linearised grid check, and the
+// Monte-Carlo check of a design against the exact model. The robust solve of one combination is
+// sizing/lcr_robust_solve.h.
 //
 // Model. The tolerances act through the compliant load sharing of model/lcr/transmission_error.h
 // (per-roller normal gaps from the exact geometry, Palmgren contacts; the only model in which they
@@ -32,7 +33,7 @@
 #include "model/lcr/forces.h"
 #include "model/lcr/tolerance_sensitivity.h"
 #include "model/lcr/transmission_error.h"
-#include "objectives/lcr_min_size.h"
+#include "objectives/lcr_dense_check.h"
 #include "objectives/lcr_sizing.h"
 
 namespace camopt::objectives {
@@ -93,23 +94,5 @@ struct LcrMonteCarloCheck {
 };
 LcrMonteCarloCheck MonteCarloCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int samples,
                                    std::uint64_t seed, int angle_steps);
-
-/// The robust optimum of one combination (spec.robust set), started from x0 (the nominal optimum):
-/// the aggregate form, then the samples form (one row per sample), then the robust grid check at
-/// four times the problem's samples per period; a limit the grid finds broken is tightened by 1.5
-/// times the excess and the samples form solved again (at most 4 rounds). Converged when the
-/// optimizer's test passes, the grid check holds and the nominal dense check holds.
-struct LcrRobustOutcome {
-  optimizers::SolverResult result;  ///< last solve; evaluation counts summed over every solve
-  std::vector<double> x;
-  std::optional<lcr::Reducer<double>> design;
-  std::optional<LcrDenseCheck> dense;   ///< nominal dense check (the study's limits, no tolerance)
-  std::optional<LcrRobustCheck> grid;   ///< linearised robust check
-  bool converged = false;
-  int rounds = 0;
-  std::string note;
-};
-LcrRobustOutcome SolveLcrRobust(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
-                                const std::vector<double>& x0);
 
 }  // namespace camopt::objectives

@@ -172,7 +172,7 @@ void ActiveSamples(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side s
 
 // Samples of the eccentric bearing's load over its load period (lcr::LoadPeriodRad, no cam weight:
 // m_A/gcd(m_A, m_B) input cam periods): samples_per_period per input cam period, at most 8 periods'
-// worth (the dense check holds the result to the limit; objectives/lcr_min_size.h).
+// worth (the dense check, objectives/lcr_dense_check.h, holds the result to the limit).
 int EccentricSamples(const LcrSizingSpec& s) {
   const int periods = s.lobes_a / std::gcd(s.lobes_a, s.lobes_b);
   return s.samples_per_period * std::min(periods, 8);

@@ -21,7 +21,7 @@
 //   maximiser θ* found on values (a 9-point scan refined by golden section) and the row then
 //   evaluated at θ* for the scalar T. Its derivative is exact by the envelope theorem (∂q/∂θ = 0
 //   at an interior maximum), as for lcr::MaxPitchCurvature. The minimum-size search seeds these
-//   peaks from the dense check (objectives/lcr_min_size.h).
+//   peaks from the dense check (objectives/lcr_dense_check.h, driven by sizing/lcr_min_size.h).
 // One load period suffices: the input side repeats every 2π/n_A of input angle (the fixed turret
 // maps onto itself), the output side every 2π m_A/(n_A m_B) (the output turret turns relative to
 // the eccentric by 2π/n_B in that time); and the input cam's roller forces depend only on the input

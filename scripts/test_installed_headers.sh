@@ -13,7 +13,7 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 empty=$(find "$prefix" -type d -empty)
 if [ -n "$empty" ]; then echo "empty folders installed:"; echo "$empty"; exit 1; fi
 missing=0
-for room in model objectives optimizers studies cad; do
+for room in model objectives optimizers sizing studies cad; do
   while IFS= read -r h; do
     if [ ! -f "$prefix/include/camopt/$h" ]; then echo "not installed: $h"; missing=1; fi
   done < <(cd "$source" && find "$room" -name '*.h')

@@ -1,5 +1,5 @@
 // Study kind "cycloid_min_size" (studies/cycloid_min_size_study.h): parse, check the ranges against
-// the closed-form limits, size through objectives/cycloid_min_size.h, write.
+// the closed-form limits, size through sizing/cycloid_min_size.h, write.
 #include "studies/cycloid_min_size_study.h"
 
 #include <algorithm>
@@ -1400,7 +1400,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   }
   if (!r.outcome.x.empty()) {
     // The stress over the cycle and the pressure maps of the reported design at the accurate
-    // settings (twice the cells each way, twice the crank angles: objectives/cycloid_min_size.h).
+    // settings (twice the cells each way, twice the crank angles: sizing/cycloid_min_size.h).
     cycloid::LoadedOptions accurate = s.spec.options;
     accurate.profile_cells *= 2;
     accurate.axial_cells *= 2;
@@ -1552,7 +1552,7 @@ nlohmann::json StartJson(const optimizers::SolverResult& r) {
   return j;
 }
 
-// The accurate settings of the verification and the plots (objectives/cycloid_min_size.h: twice
+// The accurate settings of the verification and the plots (sizing/cycloid_min_size.h: twice
 // the cells each way, twice the crank angles), as cycloid_ltca's "analysis" block.
 nlohmann::json AccurateAnalysisJson(const Study& s) {
   return {{"grid", {std::min(512, 2 * s.spec.options.profile_cells), std::min(512, 2 * s.spec.options.axial_cells)}},

@@ -1,6 +1,6 @@
 // Study kind "cycloid_min_size": the smallest one-tooth-difference cycloid drive for a ratio and a
 // torque, its pin circle, pins, eccentricity, face width, profile modifications and crowning sized
-// together on the 3D loaded contact (objectives/cycloid_min_size.h; the loaded tooth contact
+// together on the 3D loaded contact (sizing/cycloid_min_size.h; the loaded tooth contact
 // analysis of model/cycloid/loaded_tca.h, the closed-form limits of model/cycloid/geometry_limits.h).
 //
 // The file names each sized quantity by the cycloid_ltca field it sets; "variables" gives each a
@@ -22,7 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/cycloid/loaded_tca.h"
-#include "objectives/cycloid_min_size.h"
+#include "sizing/cycloid_min_size.h"
 #include "studies/archive.h"
 #include "studies/cycloid_input.h"
 #include "studies/input.h"

@@ -1,7 +1,7 @@
 // Study kind "disc_cam_min_size": the smallest base circle of a disc cam with a translating roller
 // follower for its motion program, under the disc_cam limits (pressure angle on the rise and on
 // the return, radius margin against undercut, contact stress), with the base circle radius, the
-// offset and the roller radius as variables (objectives/disc_cam_min_size.h).
+// offset and the roller radius as variables (sizing/disc_cam_min_size.h).
 //
 // The file is a disc_cam study (docs/studies.md "disc_cam"; its design is the start and gives every
 // value that is not a variable) plus "variables" ({"base_circle_radius_mm": [lo, hi], "offset_mm":
@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "objectives/disc_cam_min_size.h"
+#include "sizing/disc_cam_min_size.h"
 #include "studies/archive.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"

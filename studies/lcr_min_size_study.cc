@@ -1,4 +1,4 @@
-// Study kind "lcr_min_size" (see lcr_min_size_study.h): parse, call objectives/lcr_min_size.h for
+// Study kind "lcr_min_size" (see lcr_min_size_study.h): parse, call sizing/lcr_min_size.h for
 // every combination (and catalogue roller), write.
 #include "studies/lcr_min_size_study.h"
 

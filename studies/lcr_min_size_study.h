@@ -1,6 +1,6 @@
 // Study kind "lcr_min_size": the smallest lobe cam reducer for a target speed ratio and output
 // torque. Enumerates every lobe/roller combination giving the ratio exactly, solves each to the
-// optimum of the exact constraints (objectives/lcr_min_size.h), and reports the best design, what
+// optimum of the exact constraints (sizing/lcr_min_size.h), and reports the best design, what
 // each binding limit costs (limit_sensitivity), and one candidate per combination (and catalogue
 // roller) with its multistart spread and, when nothing fits, the limits it breaks at its closest
 // point. Nothing fitting is an incomplete result (exit code 3, outputs still written).
@@ -15,10 +15,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "objectives/lcr_min_size.h"
+#include "sizing/lcr_min_size.h"
 #include "objectives/lcr_robust.h"
+#include "sizing/lcr_robust_solve.h"
 #include "objectives/lcr_sizing.h"
-#include "objectives/lcr_sizing3d.h"
+#include "sizing/lcr_sizing3d.h"
 #include "studies/input.h"
 #include "studies/study.h"
 

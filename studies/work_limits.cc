@@ -7,7 +7,7 @@
 #include <map>
 #include <numeric>
 
-#include "objectives/lcr_min_size.h"
+#include "sizing/lcr_min_size.h"
 #include "studies/input.h"
 
 namespace camopt::studies {

@@ -1,4 +1,4 @@
-// The cycloid sizing problem (objectives/cycloid_min_size.h): every constraint row's exact
+// The cycloid sizing problem (sizing/cycloid_min_size.h): every constraint row's exact
 // derivative against central differences of converged evaluations, and the verified solve.
 #include <cmath>
 #include <string>
@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "model/cycloid/geometry_limits.h"
-#include "objectives/cycloid_min_size.h"
+#include "sizing/cycloid_min_size.h"
 #include "tests/reference_designs.h"
 
 namespace camopt::objectives {

@@ -1,5 +1,5 @@
 // disc_cam_min_size: the smallest base circle of a translating roller follower cam
-// (objectives/disc_cam_min_size.h, studies/disc_cam_min_size_study.h). Expected values are
+// (sizing/disc_cam_min_size.h, studies/disc_cam_min_size_study.h). Expected values are
 // computed here from the motion law's own closed form and the in-line pressure angle relation
 // tan φ = S' / (R_p + S) (Norton, Design of Machinery §8.8; Rothbart, Cam Design Handbook ch. 6),
 // not by camopt's model code.
@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/disc_cam/disc_cam.h"
-#include "objectives/disc_cam_min_size.h"
+#include "sizing/disc_cam_min_size.h"
 #include "studies/disc_cam_min_size_study.h"
 #include "studies/input.h"
 #include "tests/test_util.h"

@@ -1,6 +1,8 @@
 // The rooms' layering (cmake/check_layers.cmake, run by every build before camopt_core compiles):
 // the real tree passes, and a tree with a model/ header that includes an objectives/ or an
-// optimizers/ header, or a cad/ file that includes a studies/ header, fails with the file named.
+// optimizers/ header, a cad/ file that includes a studies/ header, an objectives/ or optimizers/
+// file that includes a sizing driver, or a sizing driver that includes studies/, fails with the file
+// named; a sizing driver may include optimizers/ and objectives/.
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -48,7 +50,7 @@ TEST(Layers, AModelHeaderIncludingObjectivesOrOptimizersFailsTheBuild) {
     EXPECT_NE(c.output.find(std::string("model/lcr/wrong.h includes ") + wrong), std::string::npos) << c.output;
     EXPECT_EQ(c.output.find("fine.h"), std::string::npos) << c.output;
   }
-  // cad/ may use model/ but not studies/; objectives/ not optimizers/ outside the listed drivers.
+  // cad/ may use model/ but not studies/; objectives/ not optimizers/.
   const auto dir = TempDir("layers-planted-2");
   fs::create_directories(dir / "cad");
   fs::create_directories(dir / "objectives");
@@ -59,6 +61,22 @@ TEST(Layers, AModelHeaderIncludingObjectivesOrOptimizersFailsTheBuild) {
   EXPECT_NE(c.output.find("cad/x.cc includes studies/writers.h"), std::string::npos) << c.output;
   EXPECT_EQ(c.output.find("cad/x.cc includes model/"), std::string::npos) << c.output;
   EXPECT_NE(c.output.find("objectives/y.h includes optimizers/solver.h"), std::string::npos) << c.output;
+}
+
+TEST(Layers, SizingDriversSitAboveObjectivesAndOptimizers) {
+  const auto dir = TempDir("layers-sizing");
+  for (const char* room : {"sizing", "objectives", "optimizers"}) fs::create_directories(dir / room);
+  WriteFile(dir / "sizing" / "fine.h",
+            "#include \"optimizers/solver.h\"\n#include \"objectives/problem.h\"\n#include \"model/common/scalar.h\"\n");
+  WriteFile(dir / "sizing" / "up.cc", "#include \"studies/study.h\"\n");
+  WriteFile(dir / "objectives" / "down.cc", "#include \"sizing/lcr_min_size.h\"\n");
+  WriteFile(dir / "optimizers" / "down.cc", "#include \"sizing/cycloid_min_size.h\"\n");
+  const Checked c = CheckLayers(dir, dir / "log");
+  EXPECT_NE(c.exit_code, 0);
+  EXPECT_EQ(c.output.find("fine.h"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("sizing/up.cc includes studies/study.h"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("objectives/down.cc includes sizing/lcr_min_size.h"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("optimizers/down.cc includes sizing/cycloid_min_size.h"), std::string::npos) << c.output;
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 
 #include "model/common/bearing_life.h"
 #include "model/lcr/life.h"
-#include "objectives/lcr_min_size.h"
+#include "sizing/lcr_min_size.h"
 #include "objectives/lcr_sizing.h"
 #include "tests/test_util.h"
 

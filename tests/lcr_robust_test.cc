@@ -11,6 +11,7 @@
 #include "model/lcr/forces.h"
 #include "model/lcr/transmission_error.h"
 #include "objectives/lcr_robust.h"
+#include "sizing/lcr_robust_solve.h"
 #include "objectives/lcr_sizing.h"
 #include "studies/lcr_min_size_study.h"
 #include "tests/test_util.h"

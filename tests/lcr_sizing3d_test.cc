@@ -15,7 +15,7 @@
 #include "model/lcr/contact3d_edge.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
-#include "objectives/lcr_sizing3d.h"
+#include "sizing/lcr_sizing3d.h"
 #include "studies/input.h"
 #include "studies/lcr_min_size_study.h"
 #include "tests/test_util.h"

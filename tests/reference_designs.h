@@ -8,7 +8,7 @@
 #include "model/lcr/contact.h"
 #include "model/lcr/reducer.h"
 #include "model/motion/motion_program.h"
-#include "objectives/cycloid_min_size.h"
+#include "sizing/cycloid_min_size.h"
 #include "objectives/lcr_sizing.h"
 
 namespace camopt::testing {

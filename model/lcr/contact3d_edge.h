@@ -1,6 +1,6 @@
 // How far the pressure of a sliced roller contact stays from the contact's ends (at an
 // overload torque the pressure must stay off the ends), as one smooth, signed number for the
-// sizing problem (objectives/lcr_sizing3d.h):
+// sizing problem (sizing/lcr_sizing3d.h):
 //     m_i = (h_i + u_i − δ)/f_L − q_i/(F/l)   at slice i,
 // with h the gap along the roller, u_i = Σ_j C_ij(b_j) q_j the elastic approach on slice i (the
 // slices model's influence coefficients, model/contact/roller_slices.h), δ the approach,

@@ -81,7 +81,7 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
 ///   | ln(N)/k            | 0.0159 | 0.0225 | 0.0294 | 0.0322                | 0.0409 |
 ///
 /// (for a 1000 MPa scale, up to 16–41 MPa; the minimum-size search therefore uses the aggregate
-/// only to find the region of the optimum, see objectives/lcr_min_size.h). The scale is a fixed
+/// only to find the region of the optimum, see sizing/lcr_min_size.h). The scale is a fixed
 /// number (not the current maximum), so the aggregate is one smooth function of the design and its
 /// AD gradient is exact.
 /// A sample of +∞ (the Hertz stress of a contact on an undercut part of the pitch curve, see

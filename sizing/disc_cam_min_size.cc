@@ -1,4 +1,4 @@
-#include "objectives/disc_cam_min_size.h"
+#include "sizing/disc_cam_min_size.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // coefficient of each cam may be a variable, and at an overload torque the pressure must stay off
 // the contact's ends.
 //
-// Method (on top of objectives/lcr_min_size.h):
+// Method (on top of sizing/lcr_min_size.h):
 // 1. The line-model search (SolveLcrMinSize) gives the starting design; the crowning starts at
 //    Lundberg's coefficient of the largest roller force (clamped to its range).
 // 2. Rounds of a polish problem: the line problem in its active-set form without stress rows
@@ -35,7 +35,7 @@
 
 #include "model/lcr/contact3d.h"
 #include "model/lcr/contact3d_cycle.h"
-#include "objectives/lcr_min_size.h"
+#include "sizing/lcr_min_size.h"
 #include "objectives/lcr_sizing.h"
 #include "objectives/verification.h"
 

@@ -1,5 +1,5 @@
 // See lcr_sizing3d.h. The LCR pipeline and the slices model instantiated for ceres::Jet<double, 8>.
-#include "objectives/lcr_sizing3d.h"
+#include "sizing/lcr_sizing3d.h"
 
 #include <algorithm>
 #include <cmath>

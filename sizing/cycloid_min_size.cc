@@ -1,4 +1,4 @@
-#include "objectives/cycloid_min_size.h"
+#include "sizing/cycloid_min_size.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,0 +1,209 @@
+#include "objectives/lcr_dense_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "model/contact/hertz.h"
+#include "model/lcr/forces.h"
+#include "model/lcr/profile.h"
+
+namespace camopt::objectives {
+namespace {
+
+// The solvers meet constraints to about their tolerance (1e-6 scaled), so they are given limits
+// tightened by more than that; the dense check holds the design to the study's own limits.
+constexpr double kLimitMargin = 1e-5;      // relative, on stress, load and efficiency limits
+constexpr double kLengthMargin_mm = 1e-4;  // on gap and undercut limits (0.1 µm)
+// Active-set selection: samples whose local maximum in angle lies within this fraction of the
+// limit (or of the current maximum when that is lower), the largest kActivePeaks per cam.
+constexpr double kNearFraction = 0.03;
+constexpr int kActivePeaks = 4;
+
+LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
+  LcrSizingSpec t = spec;
+  t.limits.contact_stress_MPa *= 1 - kLimitMargin;
+  t.limits.roller_load_N *= 1 - kLimitMargin;
+  t.limits.roller_gap_mm += kLengthMargin_mm;
+  t.limits.undercut_margin_mm += kLengthMargin_mm;
+  if (t.limits.min_efficiency > 0) t.limits.min_efficiency *= 1 + kLimitMargin;
+  if (t.limits.life_h > 0) t.limits.life_h *= 1 + kLimitMargin;
+  return t;
+}
+
+// Circular distance of two input angles modulo a load period.
+double PhaseDistance(double a, double b, double period) {
+  const double d = std::fmod(std::abs(a - b), period);
+  return std::min(d, period - d);
+}
+
+}  // namespace
+
+double LcrViolation::excess() const {
+  const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N";  // lower: the rest, life_h too
+  return upper ? value - limit_value : limit_value - value;
+}
+
+LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps,
+                         LcrActiveSet* near) {
+  LcrDenseCheck c;
+  c.outer_diameter_mm = lcr::OuterDiameter(r);
+  for (int k = 0; k < 2; ++k) {
+    const lcr::CamSide<double>& side = k == 0 ? r.input : r.output;
+    c.undercut_margin_mm[k] = lcr::UndercutMargin(side, r.eccentricity);
+    c.roller_gap_mm[k] = lcr::RollerGap(side);
+    c.pitch_clearance_mm[k] = side.turret_radius - r.eccentricity * side.pitch_factor();
+  }
+  const LcrLimits& lim = spec.limits;
+  const lcr::LoadCase load{spec.output_torque_Nmm, spec.friction_coefficient, 0.0};
+  const int n[2] = {r.input.rollers, r.output.rollers};
+  // Per (angle, roller) force and stress, for the choice of peaks.
+  std::array<std::vector<double>, 2> fq, sq;
+  if (near)
+    for (int k = 0; k < 2; ++k) fq[k].assign(size_t(steps) * n[k], 0.0), sq[k] = fq[k];
+  double eta = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, 2 * kPi * i / steps);
+    eta += a.efficiency;
+    for (int k = 0; k < 2; ++k) {
+      const lcr::SideLoads<double>& sl = k == 0 ? a.input : a.output;
+      if (sl.max_stress > c.max_stress_MPa[k]) {
+        c.max_stress_MPa[k] = sl.max_stress;
+        c.peak_half_width_mm[k] = 0.0;
+        const lcr::CamSide<double>& cam = k == 0 ? r.input : r.output;
+        for (size_t j = 0; j < sl.stress.size(); ++j)
+          if (sl.stress[j] == sl.max_stress && std::isfinite(sl.max_stress)) {
+            const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * sl.contacts[j].curvature);
+            c.peak_half_width_mm[k] = contact::LineContactHalfWidth(sl.force[j], cam.contact_length(), r_eff,
+                                                                    spec.material.composite_modulus_MPa());
+            break;
+          }
+      }
+      c.max_force_N[k] = std::max(c.max_force_N[k], sl.max_force);
+      if (!near) continue;
+      std::copy(sl.force.begin(), sl.force.end(), fq[k].begin() + size_t(i) * n[k]);
+      std::copy(sl.stress.begin(), sl.stress.end(), sq[k].begin() + size_t(i) * n[k]);
+    }
+  }
+  c.mean_efficiency = eta / steps;
+
+  auto upper = [&](const char* key, double value, double limit) {
+    if (!(value <= limit)) c.violations.push_back({key, value, limit});
+  };
+  auto lower = [&](const char* key, double value, double limit) {
+    if (!(value >= limit)) c.violations.push_back({key, value, limit});
+  };
+  upper("contact_stress_MPa", std::max(c.max_stress_MPa[0], c.max_stress_MPa[1]), lim.contact_stress_MPa);
+  upper("roller_load_N", std::max(c.max_force_N[0], c.max_force_N[1]), lim.roller_load_N);
+  lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
+  lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
+  if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
+  if (spec.life) {
+    // Every rated bearing (docs/life.md, "Life as a sizing limit"): the lcr_analysis computation of
+    // the same design at `steps` samples per input revolution (rigid law, no cam weight).
+    const LcrLifeSpec& life = *spec.life;
+    struct Member {
+      const char* name;
+      lcr::LcrBearing bearing;
+    };
+    std::vector<Member> members = {{"input_roller", lcr::LcrBearing::kInputRoller},
+                                   {"output_roller", lcr::LcrBearing::kOutputRoller}};
+    if (life.eccentric) members.push_back({"eccentric_bearing", lcr::LcrBearing::kEccentric});
+    for (const Member& m : members) {
+      LcrBearingLifeCheck b;
+      b.name = m.name;
+      if (m.bearing == lcr::LcrBearing::kEccentric) {
+        b.ball = life.eccentric->ball;
+        b.dynamic_rating_N = life.eccentric->dynamic_N;
+        b.static_rating_N = life.eccentric->static_N;
+      } else {
+        const lcr::CamSide<double>& cam = m.bearing == lcr::LcrBearing::kInputRoller ? r.input : r.output;
+        b.dynamic_rating_N = LcrRollerRatingAt(life.roller, 2 * cam.roller_radius, cam.roller_length, false);
+        if (life.roller.static_N > 0)
+          b.static_rating_N = LcrRollerRatingAt(life.roller, 2 * cam.roller_radius, cam.roller_length, true);
+      }
+      const BearingKind kind = b.ball ? BearingKind::kBall : BearingKind::kRoller;
+      b.life = lcr::BearingLifeOverDutyCycle(r, spec.material, load, lcr::LoadModel::kRigid, m.bearing,
+                                             b.dynamic_rating_N, kind, life.lines, steps);
+      if (b.static_rating_N > 0 && b.life.max_load_N > 0) b.s0 = b.static_rating_N / b.life.max_load_N;
+      c.shortest_L10h = std::min(c.shortest_L10h, b.life.L10h);
+      c.life.push_back(std::move(b));
+    }
+    if (lim.life_h > 0) lower("life_h", c.shortest_L10h, lim.life_h);
+  }
+  for (const lcr::DesignProblem& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
+
+  if (near) {
+    // Per cam and quantity: the rollers' local maxima in angle within kNearFraction of the limit
+    // (or of the largest value, when that is lower; the largest alone without a limit), one per
+    // phase of the load period (equal phases are the same peak on another roller), at most
+    // kActivePeaks, each tracked over an eighth of the period either side.
+    for (int k = 0; k < 2; ++k) {
+      const double period = LcrLoadPeriod(spec, k == 0 ? lcr::Side::kInput : lcr::Side::kOutput);
+      for (int quantity = 0; quantity < 2; ++quantity) {
+        const std::vector<double>& v = quantity == 0 ? fq[k] : sq[k];
+        const double limit = quantity == 0 ? lim.roller_load_N : lim.contact_stress_MPa;
+        const double vmax = *std::max_element(v.begin(), v.end());
+        const double threshold = std::isfinite(limit) ? (1 - kNearFraction) * std::min(limit, vmax) : vmax;
+        auto at = [&](int i, int j) { return v[size_t((i + steps) % steps) * n[k] + j]; };
+        std::vector<std::pair<double, std::pair<int, int>>> peaks;
+        for (int i = 0; i < steps; ++i)
+          for (int j = 0; j < n[k]; ++j) {
+            const double q = at(i, j);
+            if (q > 0 && q >= threshold && q >= at(i - 1, j) && q >= at(i + 1, j)) peaks.push_back({q, {i, j}});
+          }
+        std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+        std::vector<LcrSample> chosen;
+        for (const auto& [q, ij] : peaks) {
+          const double theta = 2 * kPi * ij.first / steps;
+          const bool seen = std::any_of(chosen.begin(), chosen.end(), [&](const LcrSample& o) {
+            return PhaseDistance(o.theta_rad, theta, period) < period / 8;
+          });
+          if (!seen) chosen.push_back({theta, ij.second, period / 8});
+          if (int(chosen.size()) == kActivePeaks) break;
+        }
+        (quantity == 0 ? near->force : near->stress)[k] = std::move(chosen);
+      }
+    }
+  }
+  return c;
+}
+
+LcrSizingSpec LcrTightened(const LcrSizingSpec& spec) { return Tightened(spec); }
+
+Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps) {
+  Verification v;
+  v.ran = true;
+  v.accurate_model = "line contact, exact cycle on " + std::to_string(2 * steps) + " input angles (error: the change from " +
+                     std::to_string(steps) + ")";
+  const LcrDenseCheck a = DenseCheck(spec, r, steps), b = DenseCheck(spec, r, 2 * steps);
+  const LcrLimits& lim = spec.limits;
+  const char* cams[2] = {"input cam", "output cam"};
+  auto add = [&](const char* key, const char* where, double coarse, double fine, double limit, bool upper) {
+    VerifiedLimit c;
+    c.limit = key;
+    c.where = where;
+    c.limit_value = limit;
+    c.accurate_value = fine;
+    c.estimated_error = std::abs(fine - coarse);
+    c.fast_value = coarse;
+    c.upper = upper;
+    v.checks.push_back(c);
+  };
+  for (int k = 0; k < 2; ++k) {
+    if (std::isfinite(lim.contact_stress_MPa))
+      add("contact_stress_MPa", cams[k], a.max_stress_MPa[k], b.max_stress_MPa[k], lim.contact_stress_MPa, true);
+    if (std::isfinite(lim.roller_load_N))
+      add("roller_load_N", cams[k], a.max_force_N[k], b.max_force_N[k], lim.roller_load_N, true);
+    add("undercut_margin_mm", cams[k], a.undercut_margin_mm[k], b.undercut_margin_mm[k], lim.undercut_margin_mm, false);
+    add("roller_gap_mm", cams[k], a.roller_gap_mm[k], b.roller_gap_mm[k], lim.roller_gap_mm, false);
+  }
+  if (lim.min_efficiency > 0) add("min_efficiency", "mean over the cycle", a.mean_efficiency, b.mean_efficiency, lim.min_efficiency, false);
+  if (lim.life_h > 0)
+    for (size_t i = 0; i < a.life.size(); ++i)
+      if (std::isfinite(b.life[i].life.L10h))  // a bearing without load (+∞) has nothing to check
+        add("life_h", a.life[i].name.c_str(), a.life[i].life.L10h, b.life[i].life.L10h, lim.life_h, false);
+  return v;
+}
+
+}  // namespace camopt::objectives
