@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "model/cycloid/geometry_limits.h"
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_life.h"
@@ -554,6 +555,13 @@ Result Run(const Study& s, const RunContext& ctx) {
 namespace {
 
 // The unloaded TCA only (analysis.evaluate ["unloaded"]).
+// The tooth's and the pins' closed-form geometric limits (model/cycloid/geometry_limits.h, eqs.
+// C3/C4 and the pin pitch): exact, no grid; the verdict's defaults (no undercut, no overlap).
+void AddGeometryLimits(const Study& s, nlohmann::json& j) {
+  j["min_profile_radius_mm"] = Finite(cycloid::MinConvexProfileRadius(s.drive), "profile radius");
+  j["pin_gap_mm"] = Finite(cycloid::PinGapMargin(s.drive), "pin gap");
+}
+
 nlohmann::json UnloadedJson(const Study& s, const Result& r) {
   nlohmann::json per_angle = nlohmann::json::array();
   double lo = 0, hi = 0;
@@ -569,6 +577,7 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
                       {"unloaded_te_peak_to_peak_arcsec", hi - lo},
                       {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
                       {"per_angle", per_angle}};
+  AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   return j;
 }
@@ -705,6 +714,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"estimated_error_sources", sources},
           {"warnings", r.warnings},
           {"per_angle", per_angle}};
+  AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
   if (s.discs > 1) {
@@ -1005,6 +1015,8 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", {
     {"most rollers in contact", "/max_pairs_in_contact", ""},
     {"largest ring-pin force", "/max_ring_pin_force_N", "N"},
     {"largest output-pin force", "/max_output_pin_force_N", "N"},
+    {"smallest tooth radius", "/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
+    {"gap between pins", "/pin_gap_mm", "mm", "study:/limits/min_pin_gap_mm", 0.0, false},
     {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N", "study:/limits/eccentric_bearing_load_N"},
     {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa", "study:/limits/output_pin_stress_MPa"},
     {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa", "study:/limits/output_pin_contact_pressure_MPa"},

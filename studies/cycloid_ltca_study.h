@@ -136,6 +136,7 @@ struct Input {
   struct Limits {
     std::optional<double> contact_stress_MPa, roller_load_N, output_pin_stress_MPa, output_pin_contact_pressure_MPa,
         eccentric_bearing_load_N;
+    double min_profile_radius_mm = 0, min_pin_gap_mm = 0;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("contact_stress_MPa", &contact_stress_MPa,
@@ -147,6 +148,13 @@ struct Input {
                Field().Positive().Unit("MPa").Desc("hole-pin Hertz pressure (needs output_mechanism)"));
       a->Visit("eccentric_bearing_load_N", &eccentric_bearing_load_N,
                Field().Positive().Unit("N").Desc("largest eccentric (crank) bearing load"));
+      a->Visit("min_profile_radius_mm", &min_profile_radius_mm,
+               Field().NonNegative().Unit("mm").Desc(
+                   "smallest convex radius of the tooth, rho_min - rho' (docs/cycloid.md, geometric limits; 0: not "
+                   "undercut)"));
+      a->Visit("min_pin_gap_mm", &min_pin_gap_mm,
+               Field().NonNegative().Unit("mm").Desc(
+                   "clearance between neighbouring pins, 2 a sin(pi/(z + 1)) - 2 rho (0: they do not overlap)"));
     }
   };
 

@@ -13,6 +13,7 @@
 #include "studies/cycloid_crowning_tuning_study.h"
 #include "studies/cycloid_ltca_study.h"
 #include "studies/input.h"
+#include "studies/report.h"
 #include "studies/study.h"
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
@@ -473,6 +474,41 @@ TEST(CycloidStudies, LtcaStudyReportsEveryAngle) {
   // 120° and 300° are 8 mesh periods apart: the same state.
   EXPECT_NEAR(r.cycle.meshes[1].max_pressure_MPa, r.cycle.meshes[2].max_pressure_MPa,
               1e-3 * r.cycle.max_pressure_MPa);
+}
+
+TEST(CycloidStudies, LtcaChecksTheToothAndPinGeometryByDefault) {
+  // The NNM drive (N = 16 pins on a = 90 mm, rho = 7.2 mm, e = 4.5 mm, a' = 89.984 mm,
+  // rho' = 7.192 mm) by hand: the pin gap 2 a sin(pi/N) - 2 rho, and the smallest convex radius of
+  // the tooth from the curvature of the generating curve, on the flank since
+  // lambda = e N / a' = 0.8001 > (N - 2)/(2N - 1): a' sqrt(27 (N - 1)(1 - lambda^2) / (N + 1)^3) - rho'.
+  const double pi = std::acos(-1.0), n = 16, a = 90, rho = 7.2, e = 4.5, ap = 89.984, rhop = 7.192;
+  const double gap = 2 * a * std::sin(pi / n) - 2 * rho;  // 20.716 mm
+  const double lambda = e * n / ap;
+  ASSERT_GT(lambda, (n - 2) / (2 * n - 1));
+  const double radius = ap * std::sqrt(27 * (n - 1) * (1 - lambda * lambda) / std::pow(n + 1, 3)) - rhop;  // 8.304 mm
+  namespace ltca = studies::cycloid_ltca;
+  for (const char* limits : {"", R"(, "limits": {"min_pin_gap_mm": 21})", R"(, "limits": {"min_profile_radius_mm": 8.31})"}) {
+    SCOPED_TRACE(limits);
+    const nlohmann::json study = nlohmann::json::parse(R"({"study": "cycloid_ltca", "name": "geometry",)" +
+                                                       kNnmDriveJson + R"( "analysis": {"evaluate": ["unloaded"],
+                                                       "crank_angles_deg": [0]})" + limits + "}");
+    const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
+    studies::RunContext ctx;
+    ctx.quiet = true;
+    const nlohmann::json j = ltca::ToJson(s, ltca::Run(s, ctx));
+    EXPECT_NEAR(j["pin_gap_mm"].get<double>(), gap, 1e-9);
+    EXPECT_NEAR(j["min_profile_radius_mm"].get<double>(), radius, 1e-9);
+    const studies::HeadlineTable t = studies::EvaluateHeadlines("cycloid_ltca", study, j);
+    EXPECT_EQ(t.limits, 2);
+    if (std::string(limits).empty()) {
+      EXPECT_TRUE(t.exceeded.empty());
+      EXPECT_EQ(studies::VerdictLine(t).rfind("All 2 limits met", 0), 0u) << studies::VerdictLine(t);
+    } else {
+      ASSERT_EQ(t.exceeded.size(), 1u);
+      EXPECT_EQ(t.exceeded[0], std::string(limits).find("gap") != std::string::npos ? "gap between pins"
+                                                                                      : "smallest tooth radius");
+    }
+  }
 }
 
 TEST(CycloidStudies, LtcaSamplesOneMeshPeriodAndEstimatesItsErrors) {
