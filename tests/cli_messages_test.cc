@@ -139,21 +139,22 @@ TEST(CliMessages, CycloidLtcaLimitsGiveAVerdict) {
   study["analysis"] = {{"crank_angle_steps", 4}, {"grid", {10, 10}}};
   study["geometry_files"] = false;
   // 1 MPa cannot be met by a loaded drive; 1e7 N cannot be missed. Without an output mechanism
-  // the eccentric bearing load is not computed: its limit has no value to check (2 limits, not 3).
+  // the eccentric bearing load is not computed: its limit has no value to check (4 limits, not 5:
+  // the two given and the tooth radius and pin gap, checked by default).
   study["limits"] = {{"contact_stress_MPa", 1}, {"roller_load_N", 1e7}, {"eccentric_bearing_load_N", 1e7}};
   WriteFile(dir / "tight.json", study.dump());
   auto r = RunCamopt("run " + (dir / "tight.json").string() + " --quiet --strict --out " + (dir / "t").string() +
                      " > " + (dir / "t.txt").string());
   EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("camopt: --strict: 1 of 2 limits exceeded: largest contact stress\n"), std::string::npos)
+  EXPECT_NE(r.stderr_text.find("camopt: --strict: 1 of 4 limits exceeded: largest contact stress\n"), std::string::npos)
       << r.stderr_text;
-  EXPECT_NE(ReadFile(dir / "t.txt").find("  verdict: 1 of 2 limits exceeded: largest contact stress\n"), std::string::npos);
+  EXPECT_NE(ReadFile(dir / "t.txt").find("  verdict: 1 of 4 limits exceeded: largest contact stress\n"), std::string::npos);
   study["limits"] = {{"contact_stress_MPa", 1e5}};
   WriteFile(dir / "loose.json", study.dump());
   r = RunCamopt("run " + (dir / "loose.json").string() + " --quiet --strict --out " + (dir / "l").string() + " > " +
                 (dir / "l.txt").string());
   EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
-  EXPECT_NE(ReadFile(dir / "l.txt").find("  verdict: All 1 limits met\n"), std::string::npos) << ReadFile(dir / "l.txt");
+  EXPECT_NE(ReadFile(dir / "l.txt").find("  verdict: All 3 limits met\n"), std::string::npos) << ReadFile(dir / "l.txt");
   study["limits"] = {{"contact_stress_MPa", -5}};
   camopt::testing::ExpectStudyRejected(study, "cycloid-limit", "/limits/contact_stress_MPa", "expected a number > 0");
   study["limits"] = {{"contact_stres_MPa", 1500}};
