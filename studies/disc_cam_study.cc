@@ -185,6 +185,9 @@ Study Parse(const Node& root) {
     dyn.loads.spring_preload_N = d.spring_preload_N;
     dyn.loads.external_load_N = d.external_load_N;
     dyn.follower_axis = d.follower_axis;
+    dyn.follower_stiffness_N_per_mm = d.follower_stiffness_N_per_mm;
+    dyn.damping_ratio = d.damping_ratio;
+    dyn.revolutions = d.revolutions;
     // The weight along the follower axis, toward the cam: a follower above the cam presses on it.
     if (dyn.follower_axis == "vertical_above_cam") dyn.loads.weight_N = dyn.loads.mass_kg * dc::kStandardGravity;
     else if (dyn.follower_axis == "vertical_below_cam") dyn.loads.weight_N = -dyn.loads.mass_kg * dc::kStandardGravity;
@@ -396,6 +399,30 @@ Result Run(const Study& s, const RunContext& ctx) {
       const int i_p = arg_max([&](int i) { return L.contact_stress_MPa[i]; });
       L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], angle_deg(i_p)};
     }
+    // The follower on its own stiffness (model/disc_cam/follower_dynamics.h): the response at the
+    // speed, and the lowest speed at which it leaves the cam, searched up to 1.5 times the larger
+    // of the speed and the kinetostatic jump speed.
+    if (s.dynamics->follower_stiffness_N_per_mm) {
+      dc::FollowerDynamicsInput fin;
+      fin.motion = cam.motion;
+      fin.loads = s.dynamics->loads;
+      fin.follower_stiffness_N_per_mm = *s.dynamics->follower_stiffness_N_per_mm;
+      fin.damping_ratio = s.dynamics->damping_ratio;
+      fin.revolutions = s.dynamics->revolutions;
+      fin.speed_rad_s = omega;
+      L.response = dc::SimulateFollower(fin);
+      const double reach = std::max(s.dynamics->speed_rpm, std::isfinite(L.jump_speed_rpm) ? L.jump_speed_rpm : 0.0);
+      L.dynamic_jump_upper_rpm = 1.5 * reach;
+      L.dynamic_jump = dc::FindDynamicJumpSpeed(fin, dc::RadPerSecond(L.dynamic_jump_upper_rpm));
+      // A separation at the speed itself that the scan stepped over (a resonance band narrower than
+      // its step): search below the speed, so that the two answers agree.
+      if (L.response->separates && (!L.dynamic_jump->found || L.dynamic_jump->speed_rad_s > omega)) {
+        const int runs = L.dynamic_jump->runs;
+        L.dynamic_jump_upper_rpm = s.dynamics->speed_rpm;
+        L.dynamic_jump = dc::FindDynamicJumpSpeed(fin, omega);
+        L.dynamic_jump->runs += runs;
+      }
+    }
     r.loads = std::move(L);
   }
 
@@ -555,6 +582,35 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       j["notes"].push_back("jump_speed_rpm is null: the follower never decelerates, so no speed lifts it off the cam");
     }
     loads_ok = L.min_contact_force_N.value > 0.0;
+    if (L.response) {
+      const dc::FollowerDynamicsResult& fr = *L.response;
+      nlohmann::json rj = {{"follower_stiffness_N_per_mm", *d.follower_stiffness_N_per_mm},
+                           {"damping_ratio", d.damping_ratio},
+                           {"revolutions", d.revolutions},
+                           {"natural_frequency_Hz", fr.natural_frequency_Hz},
+                           {"min_axial_force_N", fr.min_axial_force_N},
+                           {"at_min_axial_force_cam_angle_deg", fr.min_axial_force_cam_angle_deg},
+                           {"max_axial_force_N", fr.max_axial_force_N},
+                           {"at_max_axial_force_cam_angle_deg", fr.max_axial_force_cam_angle_deg},
+                           {"separates", fr.separates},
+                           {"first_separation_cam_angle_deg", nullptr},
+                           {"residual_vibration_mm", fr.residual_vibration_mm},
+                           {"at_residual_vibration_cam_angle_deg", fr.residual_vibration_cam_angle_deg},
+                           {"solver_steps", fr.steps},
+                           {"contact_events", fr.events}};
+      if (fr.separates) rj["first_separation_cam_angle_deg"] = fr.first_separation_cam_angle_deg;
+      dj["response"] = rj;
+      const dc::DynamicJumpSpeed& js = *L.dynamic_jump;
+      dj["dynamic_jump_speed_rpm"] = js.found ? nlohmann::json(dc::Rpm(js.speed_rad_s)) : nlohmann::json(nullptr);
+      dj["dynamic_jump_search"] = {{"upper_rpm", L.dynamic_jump_upper_rpm},
+                                   {"scan_step_rpm", dc::Rpm(js.scan_step_rad_s)},
+                                   {"bracket_rpm", {dc::Rpm(js.lower_rad_s), js.found ? dc::Rpm(js.speed_rad_s) : L.dynamic_jump_upper_rpm}},
+                                   {"simulations", js.runs}};
+      if (!js.found)
+        j["notes"].push_back("dynamic_jump_speed_rpm is null: the follower holds the cam at every speed scanned up to " +
+                             Format(L.dynamic_jump_upper_rpm) + " rpm");
+      loads_ok = loads_ok && !fr.separates;
+    }
     if (L.stress_evaluated) {
       dj["face_width_mm"] = *s.face_width_mm;
       dj["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
@@ -695,6 +751,33 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                                       series("camshaft torque T [N·m]", r.loads->camshaft_torque_Nm)},
                                      o));
   }
+  if (r.loads && r.loads->response) {
+    const auto& smp = r.loads->response->samples;
+    Table rt;
+    std::vector<double> angle, cam_mm, follower_mm, axial, kinetostatic;
+    for (const dc::FollowerDynamicsSample& q : smp) {
+      angle.push_back(q.cam_angle_deg);
+      cam_mm.push_back(q.cam_follower_mm);
+      follower_mm.push_back(q.follower_mm);
+      axial.push_back(q.axial_force_N);
+      kinetostatic.push_back(q.kinetostatic_force_N);
+    }
+    rt.Add("cam_angle_deg", angle);
+    rt.Add("cam_follower_mm", cam_mm);
+    rt.Add("follower_mass_mm", follower_mm);
+    rt.Add("axial_force_N", axial);
+    rt.Add("kinetostatic_axial_force_N", kinetostatic);
+    out.Add("follower_response.csv", ToCsv(rt));
+    PlotOptions o;
+    o.title = s.name + ": follower axial force at " + Format(s.dynamics->speed_rpm) + " rpm, last of " +
+              std::to_string(s.dynamics->revolutions) + " revolutions";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "axial force at the roller [N]";
+    out.Add("follower_response.svg", SvgLinePlot({Series{"dynamic (k_f = " + Format(*s.dynamics->follower_stiffness_N_per_mm) +
+                                                             " N/mm)", angle, axial},
+                                                  Series{"kinetostatic (rigid follower)", angle, kinetostatic}},
+                                                 o));
+  }
 
   // Profile drawing: cam profile, pitch curve, base circle, and the follower at θ = 0.
   Drawing d;
@@ -808,6 +891,9 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"largest contact force", "/dynamics/max_contact_force_N", "N"},
     {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},
     {"jump speed (kinetostatic)", "/dynamics/jump_speed_rpm", "rpm"},
+    {"jump speed (dynamic, flexible follower)", "/dynamics/dynamic_jump_speed_rpm", "rpm", "/dynamics/speed_rpm", NAN, false},
+    {"smallest axial force (dynamic)", "/dynamics/response/min_axial_force_N", "N"},
+    {"residual vibration", "/dynamics/response/residual_vibration_mm", "mm"},
     {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
     {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
     {"worst-case follower error", "/worst_case_error_um/max", "µm"},

@@ -15,6 +15,7 @@
 #include "model/disc_cam/disc_cam.h"
 #include "model/common/material.h"
 #include "model/disc_cam/exact_motion.h"
+#include "model/disc_cam/follower_dynamics.h"
 #include "model/disc_cam/kinetostatics.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/motion/motion_program.h"
@@ -92,6 +93,9 @@ struct Input {
     double speed_rpm = 0.0, follower_mass_kg = 0.0, spring_rate_N_per_mm = 0.0, spring_preload_N = 0.0,
            external_load_N = 0.0;
     std::string follower_axis = "vertical_above_cam";
+    std::optional<double> follower_stiffness_N_per_mm;
+    double damping_ratio = 0.05;
+    int revolutions = 3;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("speed_rpm", &speed_rpm, Field().Required().Positive().Unit("rpm").Desc("n, the cam speed"));
@@ -108,6 +112,18 @@ struct Input {
                              "\"vertical_above_cam\", \"vertical_below_cam\" or \"horizontal\"")
                    .Desc("where the weight m g acts: above the cam it presses the follower onto the cam, below it pulls it "
                          "off, horizontal: across the axis"));
+      a->Visit("follower_stiffness_N_per_mm", &follower_stiffness_N_per_mm,
+               Field().Positive().Unit("N/mm").Desc(
+                   "k_f, the follower train's stiffness between the roller and its mass: with it the one-degree-of-"
+                   "freedom dynamic response, its separation and residual vibration, and the dynamic jump speed "
+                   "(docs/disc_cam.md, 'Follower dynamics'; absent: the kinetostatic loads only)"));
+      a->Visit("damping_ratio", &damping_ratio,
+               Field().AtLeast(0.0, "a number in [0, 1]").AtMost(1.0, "a number in [0, 1]").Desc(
+                   "zeta of the follower's mode in contact, c = 2 zeta sqrt(m (k_f + k)) (with follower_stiffness_N_per_mm)"));
+      a->Visit("revolutions", &revolutions,
+               Field().AtLeast(1, "an integer in [1, 50]").AtMost(50, "an integer in [1, 50]").Desc(
+                   "revolutions simulated from rest on the cam; the response reported is the last one's (with "
+                   "follower_stiffness_N_per_mm)"));
     }
   };
   /// The Monte-Carlo check of the linearised error (the object form of analysis.monte_carlo).
@@ -255,6 +271,10 @@ struct Study {
     double speed_rpm = 0.0;
     std::string follower_axis = "vertical_above_cam";
     camopt::disc_cam::FollowerLoads loads;
+    /// The dynamic response (model/disc_cam/follower_dynamics.h): k_f [N/mm] (absent: none), ζ, turns.
+    std::optional<double> follower_stiffness_N_per_mm;
+    double damping_ratio = 0.05;
+    int revolutions = 3;
   };
   std::optional<Dynamics> dynamics;
 };
@@ -325,6 +345,11 @@ struct Result {
     bool stress_evaluated = false, stress_finite = true;
     AtAngle max_contact_stress_MPa;
     std::vector<double> contact_force_N, camshaft_torque_Nm, contact_stress_MPa;  ///< series
+    /// With a follower stiffness: the response at the speed and the dynamic jump speed searched up
+    /// to 1.5 times the kinetostatic one (none when that is infinite).
+    std::optional<camopt::disc_cam::FollowerDynamicsResult> response;
+    std::optional<camopt::disc_cam::DynamicJumpSpeed> dynamic_jump;
+    double dynamic_jump_upper_rpm = 0.0;
   };
   std::optional<Loads> loads;
 

@@ -137,6 +137,31 @@ TEST(FollowerDynamics, JumpSpeedStiffAtTheKinetostaticValueFlexibleEarlier) {
   EXPECT_EQ(r.min_axial_force_N, 0.0);
 }
 
+TEST(FollowerDynamics, DynamicJumpSpeedSearch) {
+  // A stiff follower first leaves the cam at the kinetostatic jump speed (the test's own closed
+  // form over the rise), a flexible one below 80 % of it (where the test above sees it separate).
+  FollowerDynamicsInput stiff = Input(1e5, 0.2, 0.0);
+  const double wj = KinetostaticJumpSpeed(stiff);
+  const DynamicJumpSpeed js = FindDynamicJumpSpeed(stiff, 1.5 * wj);
+  ASSERT_TRUE(js.found);
+  EXPECT_NEAR(js.speed_rad_s / wj, 1.0, 0.03);
+  EXPECT_LE(js.speed_rad_s - js.lower_rad_s, 1e-3 * js.speed_rad_s);
+  EXPECT_NEAR(js.scan_step_rad_s, 0.05 * wj, 1e-12 * wj);
+  const DynamicJumpSpeed jf = FindDynamicJumpSpeed(Input(100.0, 0.05, 0.0), 1.5 * wj);
+  ASSERT_TRUE(jf.found);
+  EXPECT_LE(jf.speed_rad_s, 0.8 * wj);
+  FollowerDynamicsInput flexible = Input(100.0, 0.05, 0.0);
+  flexible.speed_rad_s = jf.lower_rad_s;
+  EXPECT_FALSE(SimulateFollower(flexible).separates);
+  flexible.speed_rad_s = jf.speed_rad_s;
+  EXPECT_TRUE(SimulateFollower(flexible).separates);
+  // Nothing separates below a tenth of the jump speed.
+  const DynamicJumpSpeed none = FindDynamicJumpSpeed(stiff, 0.1 * wj, 4);
+  EXPECT_FALSE(none.found);
+  EXPECT_EQ(none.runs, 4);
+  EXPECT_THROW(FindDynamicJumpSpeed(stiff, 0.0), std::invalid_argument);
+}
+
 TEST(FollowerDynamics, BadInputThrows) {
   FollowerDynamicsInput in = Input(1000.0, 0.0, 300.0);
   in.loads.mass_kg = 0;

@@ -260,4 +260,34 @@ FollowerDynamicsResult SimulateFollower(const FollowerDynamicsInput& in) {
   return out;
 }
 
+DynamicJumpSpeed FindDynamicJumpSpeed(FollowerDynamicsInput in, double upper_rad_s, int scan_steps,
+                                      double relative_width) {
+  if (!(upper_rad_s > 0) || !std::isfinite(upper_rad_s) || scan_steps < 1 || !(relative_width > 0))
+    throw std::invalid_argument("dynamic jump speed: needs an upper speed > 0, scan steps >= 1 and a width > 0");
+  DynamicJumpSpeed out;
+  out.scan_step_rad_s = upper_rad_s / scan_steps;
+  auto separates = [&](double w) {
+    in.speed_rad_s = w;
+    ++out.runs;
+    return SimulateFollower(in).separates;
+  };
+  double lo = 0.0, hi = 0.0;
+  for (int k = 1; k <= scan_steps && !out.found; ++k) {
+    const double w = k * out.scan_step_rad_s;
+    if (separates(w)) out.found = true, hi = w;
+    else lo = w;
+  }
+  if (!out.found) {
+    out.lower_rad_s = lo;
+    return out;
+  }
+  while (hi - lo > relative_width * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (separates(mid) ? hi : lo) = mid;
+  }
+  out.speed_rad_s = hi;
+  out.lower_rad_s = lo;
+  return out;
+}
+
 }  // namespace camopt::disc_cam

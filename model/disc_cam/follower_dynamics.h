@@ -65,4 +65,22 @@ struct FollowerDynamicsResult {
 /// more than max_steps steps or the tolerances cannot be met.
 FollowerDynamicsResult SimulateFollower(const FollowerDynamicsInput& in);
 
+/// The lowest speed at which the dynamic follower leaves the cam in its last simulated revolution.
+struct DynamicJumpSpeed {
+  bool found = false;          ///< separation seen at a scanned speed ≤ upper_rad_s
+  double speed_rad_s = 0.0;    ///< the bracket's upper end: separates there (found)
+  double lower_rad_s = 0.0;    ///< the bracket's lower end: holds there (and at every scanned speed below)
+  double scan_step_rad_s = 0.0;
+  int runs = 0;                ///< simulations
+};
+
+/// Scans speeds k·upper/scan_steps (k = 1 … scan_steps) upward with in's follower (in.speed_rad_s
+/// ignored), stops at the first that separates and bisects between it and the speed below until
+/// the bracket is within relative_width of its upper end. The answer bounds the first separation
+/// from above, to relative_width, when separation sets in at one speed and stays above it; a band
+/// of separation narrower than the scan step (a resonance between two scanned speeds) can be missed.
+/// @throws as SimulateFollower.
+DynamicJumpSpeed FindDynamicJumpSpeed(FollowerDynamicsInput in, double upper_rad_s, int scan_steps = 30,
+                                      double relative_width = 1e-3);
+
 }  // namespace camopt::disc_cam
