@@ -9,14 +9,7 @@ namespace camopt::studies {
 
 std::optional<ContactFatigueSpec> ParseContactFatigue(const Node& material) {
   if (!material.Has("contact_fatigue")) return std::nullopt;
-  const Node n = material["contact_fatigue"];
-  n.CheckKnownFields({"reference_pressure_MPa", "reference_cycles", "exponent"});
-  ContactFatigueSpec c;
-  c.reference_pressure_MPa = n["reference_pressure_MPa"].Positive();
-  c.reference_cycles = n["reference_cycles"].Positive();
-  c.exponent_given = n.Has("exponent");
-  c.exponent = n.PositiveOr("exponent", 8.0);
-  return c;
+  return Read<ContactFatigueInput>(material["contact_fatigue"]).ToSpec();
 }
 
 nlohmann::json SubsurfaceJson(double p0_MPa, double b_mm, double nu, const std::string& basis) {

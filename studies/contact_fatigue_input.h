@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "studies/archive.h"
 #include "studies/input.h"
 
 namespace camopt::studies {
@@ -19,6 +20,29 @@ struct ContactFatigueSpec {
   double reference_cycles = 0;        ///< N_ref > 0, over-rollings of a point at p_ref to 10% failure
   double exponent = 8;                ///< n > 0; default 8: Lundberg–Palmgren's line contact
   bool exponent_given = false;
+};
+
+/// "material.contact_fatigue" as the study file gives it, declared once (studies/archive.h).
+struct ContactFatigueInput {
+  double reference_pressure_MPa = 0, reference_cycles = 0;
+  std::optional<double> exponent;  ///< absent: 8 (the result says whether it was given)
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("reference_pressure_MPa", &reference_pressure_MPa,
+             Field().Required().Positive().Unit("MPa").Desc("p_ref, the peak Hertz pressure of the S-N point"));
+    a->Visit("reference_cycles", &reference_cycles,
+             Field().Required().Positive().Desc("N_ref, over-rollings of a point to 10% failure at p_ref"));
+    a->Visit("exponent", &exponent,
+             Field().Positive().Desc("n of N ∝ p0^-n (absent: 8, Lundberg-Palmgren's line contact)"));
+  }
+  ContactFatigueSpec ToSpec() const {
+    ContactFatigueSpec c;
+    c.reference_pressure_MPa = reference_pressure_MPa;
+    c.reference_cycles = reference_cycles;
+    c.exponent_given = exponent.has_value();
+    c.exponent = exponent.value_or(8.0);
+    return c;
+  }
 };
 
 /// "contact_fatigue" of a material node, nullopt when absent.

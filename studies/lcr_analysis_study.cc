@@ -24,6 +24,7 @@
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/report.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -38,23 +39,6 @@ template <typename I>
 int MaxI(const std::vector<I>& v) { return *std::max_element(v.begin(), v.end()); }
 template <typename I>
 int MinI(const std::vector<I>& v) { return *std::min_element(v.begin(), v.end()); }
-
-Evaluate ParseEvaluate(const Node& analysis) {
-  Evaluate q;
-  if (!analysis.Has("evaluate")) return q;
-  q = {false, false, false, false, false};
-  const std::set<std::string> known = {"profile", "undercut", "forces", "stress", "efficiency"};
-  for (const Node& n : analysis["evaluate"].Elements()) {
-    const std::string s = n.String();
-    if (!known.count(s)) n.Fail("one of profile, undercut, forces, stress, efficiency");
-    if (s == "profile") q.profile = true;
-    if (s == "undercut") q.undercut = true;
-    if (s == "forces") q.forces = true;
-    if (s == "stress") q.stress = q.forces = true;
-    if (s == "efficiency") q.efficiency = q.forces = true;
-  }
-  return q;
-}
 
 Polyline ToPolyline(const std::vector<Vec2<double>>& pts, const Vec2<double>& shift = {0, 0},
                     double rotation = 0) {
@@ -209,37 +193,47 @@ BearingRating ParseRating(const Node& node, BearingKind kind, const std::string&
 }
 
 // "load.input_speed_rpm" or "duty_cycle" (docs/life.md); nullopt when neither is given.
-std::optional<LifeSpec> ParseLife(const Node& root, const lcr::LoadCase& load) {
+std::optional<LifeSpec> ParseLife(const Input& in, const Node& root, const lcr::LoadCase& load) {
   std::string why;
   std::optional<std::vector<lcr::LcrDutyLine>> lines = ParseDutyCycle(root, load.output_torque_Nmm, &why);
   if (!lines) return std::nullopt;
   LifeSpec life;
   life.lines = std::move(*lines);
-  life.from_duty_cycle = root.Has("duty_cycle");
+  life.from_duty_cycle = !in.duty_cycle.is_null();
   const Node reducer = root["reducer"];
   life.input_roller = ParseRating(reducer["input"], BearingKind::kRoller, why);
   life.output_roller = ParseRating(reducer["output"], BearingKind::kRoller, why);
-  if (reducer.Has("eccentric_bearing")) {
-    const Node eb = reducer["eccentric_bearing"];
-    eb.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
-    const std::string kind = eb["kind"].String();
-    if (kind != "ball" && kind != "roller") eb["kind"].Fail("one of ball, roller");
-    life.eccentric = ParseRating(eb, kind == "ball" ? BearingKind::kBall : BearingKind::kRoller, why);
+  if (in.reducer.eccentric_bearing) {
+    const EccentricBearingInput& eb = *in.reducer.eccentric_bearing;
+    life.eccentric = ParseRating(reducer["eccentric_bearing"], eb.kind == "ball" ? BearingKind::kBall : BearingKind::kRoller,
+                                 why);
   }
   return life;
 }
 
-// Checks "reducer.eccentric_bearing" of a study that asks no life (its fields are still checked).
-void CheckEccentricBearing(const Node& reducer) {
-  if (!reducer.Has("eccentric_bearing")) return;
-  const Node eb = reducer["eccentric_bearing"];
-  eb.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
-  eb["dynamic_rating_N"].Positive();
-  if (eb.Has("static_rating_N")) eb["static_rating_N"].Positive();
-  const std::string kind = eb["kind"].String();
-  if (kind != "ball" && kind != "roller") eb["kind"].Fail("one of ball, roller");
+// The finite-length contact (studies/lcr_contact_input.h): the rollers' crowning, checked against
+// their length, and the "contact" object; crowned rollers need a model other than line.
+LcrContactInput ContactOf(const Input& in, const Node& root, const lcr::Reducer<double>& reducer) {
+  LcrContactInput out;
+  bool crowned = false;
+  for (Side s : {Side::kInput, Side::kOutput}) {
+    const LcrRatedSideInput& side = s == Side::kInput ? in.reducer.input : in.reducer.output;
+    if (!side.crowning) continue;
+    const char* name = s == Side::kInput ? "input" : "output";
+    auto& c = s == Side::kInput ? out.input_crowning : out.output_crowning;
+    c = ParseRollerCrowning(root["reducer"][name]["crowning"], Value(reducer.side(s).roller_length));
+    crowned = crowned || c.type != contact::CrowningType::kNone;
+  }
+  if (in.contact) {
+    out.given = true;
+    out.options = ToContactOptions(*in.contact, root["contact"]);
+  }
+  if (crowned && out.options.model == lcr::ContactModel::kLine) {
+    if (in.contact && in.contact->model) root["contact"]["model"].Fail("slices or half_space with crowned rollers (the line model ignores crowning)");
+    root.FailWith("crowned rollers need \"contact\": {\"model\": \"slices\" or \"half_space\"} (the line model ignores crowning)");
+  }
+  return out;
 }
-
 
 // The peak contact pressure of each cam at a duty line's torque, by the study's load model and,
 // when the study has a "contact" object, its contact model (as the stress stage computes it).
@@ -388,35 +382,43 @@ LifeResult RunLife(const Study& st, const std::string& file) {
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "limits", "analysis",
-                         "tolerances", "monte_carlo", "geometry_files", "contact", "duty_cycle"});
+  // Every field's type and bounds (the limits' margins are read by the report's headlines from the
+  // study, "study:/limits/…"); what spans fields follows.
+  const Input in = Read<Input>(root);
   Study st;
-  st.name = root.StringOr("name", "");
-  st.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/true, /*allow_bearing_ratings=*/true);
-  if (root.Has("analysis")) {
-    const Node analysis = root["analysis"];
-    analysis.CheckKnownFields({"angle_steps", "profile_points", "evaluate", "load_model"});
-    st.angle_steps = analysis.IntegerOr("angle_steps", 12, 3600);
-    st.profile_points = analysis.IntegerOr("profile_points", 100, 3600);
-    st.evaluate = ParseEvaluate(analysis);
-    st.load_model = ParseLoadModel(analysis);
+  st.name = in.name;
+  st.reducer = ToReducer(in.reducer.Design(), root["reducer"]);
+  const Input::Analysis analysis = in.analysis.value_or(Input::Analysis{});
+  st.angle_steps = analysis.angle_steps;
+  st.profile_points = analysis.profile_points;
+  if (analysis.evaluate) {
+    Evaluate& q = st.evaluate;
+    q = {false, false, false, false, false};
+    for (const std::string& stage : *analysis.evaluate) {
+      if (stage == "profile") q.profile = true;
+      if (stage == "undercut") q.undercut = true;
+      if (stage == "forces") q.forces = true;
+      if (stage == "stress") q.stress = q.forces = true;
+      if (stage == "efficiency") q.efficiency = q.forces = true;
+    }
   }
+  st.load_model = analysis.load_model == "compliant" ? lcr::LoadModel::kCompliant : lcr::LoadModel::kRigid;
   // Lazy stages: the material is needed by the stress stage only, the load by the force stages
   // (forces, stress, efficiency); a profile/undercut study needs neither (checked when given).
   // The compliant load model and the transmission error (Palmgren contacts) need both.
-  st.tolerances = ParseLcrTolerances(root);
+  st.tolerances = ToToleranceSpec(in.tolerances, in.monte_carlo, root);
   const bool compliant = st.load_model == lcr::LoadModel::kCompliant || st.tolerances.has_value();
-  if (st.evaluate.stress || compliant || root.Has("material")) {
-    root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio", "contact_fatigue"});
-    st.material = ParseMaterial(root["material"]);
-    st.contact_fatigue = ParseContactFatigue(root["material"]);
+  if ((st.evaluate.stress || compliant) && !in.material) (void)root["material"];  // "missing required field"
+  if (in.material) {
+    st.material = in.material->ToMaterial();
+    if (in.material->contact_fatigue) st.contact_fatigue = in.material->contact_fatigue->ToSpec();
   }
-  if (st.evaluate.forces || compliant || root.Has("load")) {
+  if ((st.evaluate.forces || compliant) && !in.load) (void)root["load"];
+  if (in.load) {
     const Node load_node = root["load"];
-    load_node.CheckKnownFields({"output_torque_Nm", "friction_coefficient", "cam_weight_N", "input_speed_rpm"});
-    st.load.output_torque_Nmm = load_node["output_torque_Nm"].NonNegative() * 1000.0;
-    st.load.friction_coefficient = load_node.Has("friction_coefficient") ? load_node["friction_coefficient"].NumberIn(0, 1) : 0.0;
-    st.load.cam_weight_N = load_node.NonNegativeOr("cam_weight_N", 0.0);
+    st.load.output_torque_Nmm = in.load->output_torque_Nm * 1000.0;
+    st.load.friction_coefficient = in.load->friction_coefficient;
+    st.load.cam_weight_N = in.load->cam_weight_N;
     // A torque no contact can carry: the output rollers' forces balance it on arms no longer than
     // the turret radius, so the largest carries at least T / (n R); a contact is no wider than
     // the roller, so its mean pressure is at least that force over the roller's projected area
@@ -435,15 +437,10 @@ Study Parse(const Node& root) {
     if (st.tolerances && !(st.load.output_torque_Nmm > 0))
       load_node["output_torque_Nm"].Fail("a torque > 0 for the transmission error under \"tolerances\"");
   }
-  if (root.Has("limits")) {
-    root["limits"].CheckKnownFields({"contact_stress_MPa", "roller_load_N", "life_h", "undercut_margin_mm",
-                                     "roller_gap_mm"});
-    // The margins are read by the report's headlines ("study:/limits/…"); checked here.
-    root["limits"].NonNegativeOr("undercut_margin_mm", 0.0);
-    root["limits"].NonNegativeOr("roller_gap_mm", 0.0);
-    st.life_limit_h = root["limits"].PositiveOr("life_h", 0.0);
-    st.contact_stress_limit_MPa = root["limits"].PositiveOr("contact_stress_MPa", kInf);
-    st.roller_load_limit_N = root["limits"].PositiveOr("roller_load_N", kInf);
+  if (in.limits) {
+    st.life_limit_h = in.limits->life_h.value_or(0.0);
+    st.contact_stress_limit_MPa = in.limits->contact_stress_MPa.value_or(kInf);
+    st.roller_load_limit_N = in.limits->roller_load_N.value_or(kInf);
   }
   const Node reducer_node = root["reducer"];
   st.cutter_radius_input_mm = ParseCutterDiameter(reducer_node["input"], 2 * st.reducer.input.roller_radius) / 2;
@@ -453,15 +450,63 @@ Study Parse(const Node& root) {
   st.bore_diameter_input_mm = ParseBoreDiameter(reducer_node["input"], st.reducer, Side::kInput);
   st.bore_diameter_output_mm = ParseBoreDiameter(reducer_node["output"], st.reducer, Side::kOutput);
   st.geometry = ParseGeometryFiles(root);
-  st.contact = ParseLcrContact(root, st.reducer);
-  CheckEccentricBearing(reducer_node);
-  st.life = ParseLife(root, st.load);
+  st.contact = ContactOf(in, root, st.reducer);
+  st.life = ParseLife(in, root, st.load);
   if (st.contact_fatigue && !st.life)
     root["material"]["contact_fatigue"].Fail(
         "a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a contact life in hours needs one");
   if (st.life_limit_h > 0 && !st.life)
     root["limits"]["life_h"].Fail("a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a life in hours needs one");
   return st;
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  // The stress stage needs the material, the force stages (forces, stress, efficiency) the load,
+  // the tolerances and the compliant load model both; a life (a duty cycle or load.input_speed_rpm)
+  // the rollers' dynamic ratings, and not both forms of the speed; the cams' contact life and the
+  // life limit a speed.
+  return nlohmann::ordered_json::parse(R"({"dependentRequired": {"monte_carlo": ["tolerances"]}, "allOf": [
+    {"if": {"required": ["analysis"],
+            "properties": {"analysis": {"required": ["evaluate"],
+                                        "properties": {"evaluate": {"not": {"contains": {"enum": ["stress"]}}}}}}},
+     "else": {"required": ["material"]}},
+    {"if": {"required": ["analysis"],
+            "properties": {"analysis": {"required": ["evaluate"],
+                                        "properties": {"evaluate": {"not": {"contains": {"enum": ["forces", "stress", "efficiency"]}}}}}}},
+     "else": {"required": ["load"]}},
+    {"if": {"required": ["tolerances"]}, "then": {"required": ["material", "load"]}},
+    {"if": {"required": ["analysis"],
+            "properties": {"analysis": {"required": ["load_model"], "properties": {"load_model": {"const": "compliant"}}}}},
+     "then": {"required": ["material", "load"]}},
+    {"if": {"anyOf": [{"required": ["duty_cycle"]},
+                      {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]},
+     "then": {"properties": {"reducer": {"properties": {"input": {"required": ["dynamic_rating_N"]},
+                                                         "output": {"required": ["dynamic_rating_N"]}}}}}},
+    {"if": {"required": ["duty_cycle"]},
+     "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}},
+    {"if": {"anyOf": [{"required": ["material"], "properties": {"material": {"required": ["contact_fatigue"]}}},
+                      {"required": ["limits"], "properties": {"limits": {"required": ["life_h"]}}}]},
+     "then": {"anyOf": [{"required": ["duty_cycle"]},
+                        {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]}}
+  ]})");
+}
+
+nlohmann::ordered_json Input::DutyCycleSchema() {
+  return nlohmann::ordered_json::parse(R"json({
+    "type": "array",
+    "minItems": 1,
+    "items": {
+      "type": "object",
+      "properties": {
+        "output_torque_Nm": {"description": "the output torque T_o in this line [N·m]", "type": "number", "minimum": 0},
+        "input_speed_rpm": {"description": "the input speed in this line [rpm]", "type": "number", "minimum": 0},
+        "time_share": {"description": "the share of the time in this line (the shares sum to 1 within 1e-6)",
+                       "type": "number", "exclusiveMinimum": 0, "maximum": 1}
+      },
+      "required": ["output_torque_Nm", "input_speed_rpm", "time_share"],
+      "additionalProperties": false
+    }
+  })json");
 }
 
 Result Run(const Study& st, const RunContext& ctx) {
@@ -917,38 +962,46 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_analysis");
+CAMOPT_REGISTER_DECLARED_KIND("lcr_analysis", Input, "camopt study: lobe cam reducer analysis");
+
+// The declared input of a study, for the knobs and the estimate below, which run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the force
 // stages (the maxima are sampled: no order assumed). The profile and undercut stages have none.
 Fidelity Knobs(const nlohmann::json& study) {
+  const Input in = ReadInput(study, "");
+  const Input::Analysis a = in.analysis.value_or(Input::Analysis{});
+  const Input::Analysis defaults;
   Fidelity f;
   bool forces = true;
-  const auto ev = nlohmann::json::json_pointer("/analysis/evaluate");
-  if (study.contains(ev)) {
+  if (a.evaluate) {
     forces = false;
-    for (const auto& e : study[ev]) forces = forces || e == "forces" || e == "stress" || e == "efficiency";
+    for (const std::string& e : *a.evaluate) forces = forces || e == "forces" || e == "stress" || e == "efficiency";
   }
   if (forces)
-    f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, 3600, 2, true, 0,
+    f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, defaults.angle_steps, 2, true, 0,
                        "samples of the input revolution (cycle maxima and means)"});
   else
     f.no_knob = "profile and undercut only: closed forms and root finding, no setting to refine";
-  // The finite-length contact (issue 12): slice count, and the half_space grid.
-  const auto model = nlohmann::json::json_pointer("/contact/model");
-  if (forces && study.contains(model) && study[model] != "line") {
-    f.knobs.push_back({"contact_slices", {"/contact/slices"}, 40, 2, true, 0,
+  // The finite-length contact (docs/lcr.md, "Crowned rollers and 3D contact"): slice count, and
+  // the half_space grid.
+  const std::string model = in.contact ? in.contact->model.value_or("line") : "line";
+  if (forces && in.contact && in.contact->model && model != "line") {
+    const lcr::ContactModelOptions contact_defaults;
+    f.knobs.push_back({"contact_slices", {"/contact/slices"}, contact_defaults.slices, 2, true, 0,
                        "slices along the roller (the slices model; an edge peak grows with it)"});
-    if (study[model] == "half_space")
-      f.knobs.push_back({"contact_grid", {"/contact/grid"}, {64, 256}, 2, true, 0,
-                         "half_space cells across rolling and along the roller"});
+    if (model == "half_space")
+      f.knobs.push_back({"contact_grid", {"/contact/grid"}, {contact_defaults.grid_nx, contact_defaults.grid_ny}, 2,
+                         true, 0, "half_space cells across rolling and along the roller"});
   }
   f.headlines = {"/input_cam/max_roller_force_N", "/output_cam/max_roller_force_N",
                  "/input_cam/max_contact_stress_MPa", "/output_cam/max_contact_stress_MPa",
                  "/efficiency/mean", "/input_torque_Nm/max", "/input_cam/undercut_margin_mm",
                  "/output_cam/undercut_margin_mm"};
-  if (study.contains("tolerances")) {  // issue 18: the transmission error's own angle grid
-    f.knobs.push_back({"monte_carlo_angle_steps", {"/monte_carlo/angle_steps"}, 72, 2, true, 0,
-                       "input angles of the transmission error (peak-to-peak and lost-motion maxima are sampled)"});
+  if (in.tolerances) {  // the transmission error's own angle grid
+    f.knobs.push_back({"monte_carlo_angle_steps", {"/monte_carlo/angle_steps"}, LcrToleranceSpec{}.angle_steps, 2, true,
+                       0, "input angles of the transmission error (peak-to-peak and lost-motion maxima are sampled)"});
     for (const char* h : {"/transmission_error/linear_worst_case_arcsec", "/transmission_error/monte_carlo_max_arcsec",
                           "/transmission_error/lost_motion_arcmin"})
       f.headlines.push_back(h);
@@ -956,6 +1009,71 @@ Fidelity Knobs(const nlohmann::json& study) {
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_analysis", Knobs);
+
+// The work limit (studies/work_limits.h): angle_steps × rollers + profile_points × lobes, the
+// finite-length contact's slices and half_space solves, the transmission error's Monte-Carlo and the
+// bearing lives' load periods ≤ 2e7 roller contact evaluations.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const Input::Analysis a = in.analysis.value_or(Input::Analysis{});
+  const LcrRatedReducerInput& red = in.reducer;
+  const double rollers = double(red.input.rollers) + red.output.rollers;
+  const double lobes = double(red.input.lobes) + red.output.lobes;
+  const double steps = a.angle_steps;
+  std::vector<WorkTerm> terms = {{steps * rollers, "/analysis/angle_steps",
+                                  WorkNumber(steps) + " angle steps × " + WorkNumber(rollers) + " rollers"}};
+  const double points = a.profile_points;
+  terms.push_back({points * lobes, "/analysis/profile_points",
+                   WorkNumber(points) + " profile points × " + WorkNumber(lobes) + " lobes"});
+  if (in.contact && in.contact->model && *in.contact->model != "line") {
+    // The finite-length contact: per cam, a table of 65 slices solves (13 forces × 5 radii) and 4
+    // exact ones, a solve of N slices costing about (N/40)³ of a 40-slice one (≈0.6 ms, about
+    // 1e4 roller contact evaluations); the half_space model adds 4 DC-FFT solves per cam of about
+    // nx·ny·20 units (a 64×256 grid ≈ 0.1 s).
+    const double slices = in.contact->slices;
+    terms.push_back({2 * 69 * 1e4 * std::pow(slices / 40.0, 3), "/contact/slices",
+                     "2 cams × 69 slices solves of " + WorkNumber(slices) + " slices"});
+    if (*in.contact->model == "half_space") {
+      const nlohmann::json& g = in.contact->grid;
+      const double cells = g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number()
+                               ? std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>())
+                               : 64.0 * 256.0;
+      terms.push_back({2 * 4 * cells * 20, "/contact/grid",
+                       "2 cams × 4 half_space solves on " + WorkNumber(cells) + " cells"});
+    }
+  }
+  if (in.tolerances) {
+    // Transmission error: per Monte-Carlo sample, angle and roller about two contact evaluations'
+    // time (gap foot point + compliant solves, measured 6 µs per roller and angle).
+    const LcrMonteCarloInput mc = in.monte_carlo.value_or(LcrMonteCarloInput{});
+    const double samples = mc.samples.value_or(0), mc_steps = mc.angle_steps.value_or(72);
+    terms.push_back({2.0 * (samples + 8.0) * mc_steps * rollers, "/monte_carlo/samples",
+                     WorkNumber(samples) + " Monte-Carlo samples × " + WorkNumber(mc_steps) + " angles × " +
+                         WorkNumber(rollers) + " rollers × 2"});
+  }
+  const bool duty = !in.duty_cycle.is_null();
+  if (duty || (in.load && in.load->input_speed_rpm)) {
+    // Bearing life (docs/life.md): per duty-cycle line, one force analysis per sample over each
+    // bearing's load period (model/lcr/life.h): an input revolution (input roller), 2π m_A n_B/(n_A m_B)
+    // (output roller) and the eccentric's 2π lcm(m_A, m_B)/(n_A m_B), a whole number of revolutions
+    // when the cam has a weight — at angle_steps samples per revolution.
+    const auto count = [](int n) { return (long long)std::clamp(double(n), 1.0, 1e6); };
+    const long long ma = count(red.input.lobes), na = count(red.input.rollers);
+    const long long mb = count(red.output.lobes), nb = count(red.output.rollers);
+    const long long l = std::lcm(ma, mb), d = na * mb, g = std::gcd(l, d);
+    const bool weight = in.load && in.load->cam_weight_N > 0;
+    const double ecc_revs = weight ? double(l / g) : double(l) / double(d);
+    const double revs = 1.0 + double(ma * nb) / double(d) + ecc_revs;
+    const double lines =
+        duty ? std::max<double>(1, in.duty_cycle.is_array() ? double(in.duty_cycle.size()) : 0.0) : 1.0;
+    terms.push_back({lines * revs * steps * rollers, duty ? "/duty_cycle" : "/load/input_speed_rpm",
+                     WorkNumber(lines) + " duty-cycle lines × " + WorkNumber(revs) +
+                         " revolutions of bearing load periods × " + WorkNumber(steps) + " angle steps × " +
+                         WorkNumber(rollers) + " rollers"});
+  }
+  return LargestTerm(terms, 2e7 * factor, "roller contact evaluations", 64);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("lcr_analysis", EstimateWork);
 }  // namespace
 
 namespace {

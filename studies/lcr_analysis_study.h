@@ -14,14 +14,127 @@
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/life.h"
+#include "studies/archive.h"
 #include "studies/contact_fatigue_input.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
+#include "studies/lcr_input.h"
 #include "studies/lcr_tolerance_input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_analysis {
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds and
+/// description (studies/archive.h); the blocks shared with the other LCR kinds are those of
+/// studies/lcr_input.h, lcr_contact_input.h, lcr_tolerance_input.h and material_input.h. Parse
+/// reads it, checks what spans fields and converts it (Study); `camopt schema lcr_analysis` is
+/// emitted from it.
+struct Input {
+  struct Load {
+    double output_torque_Nm = 0, friction_coefficient = 0, cam_weight_N = 0;
+    std::optional<double> input_speed_rpm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("output_torque_Nm", &output_torque_Nm,
+               Field().Required().NonNegative().Unit("N·m").Desc("T_o, the output torque"));
+      a->Visit("friction_coefficient", &friction_coefficient,
+               Field().In(0.0, 1.0).Desc("μ of the eccentric, T_in = (F_t + μ F_r) e (the paper's eq. 32)"));
+      a->Visit("cam_weight_N", &cam_weight_N, Field().NonNegative().Unit("N").Desc("W_c, the cam's weight along −y"));
+      a->Visit("input_speed_rpm", &input_speed_rpm,
+               Field().Positive().Unit("rpm").Desc(
+                   "input speed: the bearing lives at the load's torque (a one-line duty cycle; docs/life.md); not "
+                   "with duty_cycle"));
+    }
+  };
+  struct Limits {
+    std::optional<double> contact_stress_MPa, roller_load_N;
+    double undercut_margin_mm = 0, roller_gap_mm = 0;
+    std::optional<double> life_h;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Positive().Unit("MPa").Desc("allowable contact stress: adds the cams' contact_stress_ok"));
+      a->Visit("roller_load_N", &roller_load_N,
+               Field().Positive().Unit("N").Desc("the rollers' bearing limit: adds the cams' roller_load_ok"));
+      a->Visit("undercut_margin_mm", &undercut_margin_mm,
+               Field().NonNegative().Unit("mm").Desc(
+                   "smallest margin of the cam's convex radius of curvature over the roller radius (the report's "
+                   "verdict)"));
+      a->Visit("roller_gap_mm", &roller_gap_mm,
+               Field().NonNegative().Unit("mm").Desc("smallest gap between neighbouring rollers (the report's verdict)"));
+      a->Visit("life_h", &life_h,
+               Field().Positive().Unit("h").Desc(
+                   "required life: pass/fail of each life of life.table (bearings, sliced rollers, cam contacts); "
+                   "needs a speed"));
+    }
+  };
+  struct Analysis {
+    int angle_steps = 3600, profile_points = 3600;
+    std::optional<std::vector<std::string>> evaluate;
+    std::string load_model = "rigid";
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_steps", &angle_steps, Field().AtLeast(12).Desc("samples of the input revolution"));
+      a->Visit("profile_points", &profile_points, Field().AtLeast(100).Desc("points of the drawn and DXF profiles"));
+      a->Visit("evaluate", &evaluate,
+               Field().OneOf({"profile", "undercut", "forces", "stress", "efficiency"},
+                             "one of profile, undercut, forces, stress, efficiency")
+                   .Default(nlohmann::json::array({"profile", "undercut", "forces", "stress", "efficiency"}))
+                   .Desc("the stages to run (stress and efficiency include forces; profile and undercut need no "
+                         "material or load)"));
+      a->Visit("load_model", &load_model,
+               Field().OneOf({"rigid", "compliant"}).Desc(
+                   "load sharing among the rollers: rigid (the paper's law F ∝ arm) or compliant (Palmgren contacts "
+                   "of the stiffness model; needs a torque > 0)"));
+    }
+  };
+
+  std::string study = "lcr_analysis", name;
+  std::optional<std::string> description;
+  LcrRatedReducerInput reducer;
+  std::optional<MaterialWithFatigueInput> material;
+  std::optional<Load> load;
+  std::optional<Limits> limits;
+  std::optional<Analysis> analysis;
+  std::optional<LcrTolerancesInput> tolerances;
+  std::optional<LcrMonteCarloInput> monte_carlo;
+  nlohmann::json geometry_files;
+  std::optional<LcrContactOptionsInput> contact;
+  nlohmann::json duty_cycle;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("lcr_analysis").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("reducer", &reducer, Field().Required().Desc("the lobe cam reducer's design"));
+    a->Visit("material", &material,
+             Field().Desc("the cams' and rollers' elastic material (required by the stress stage, the compliant load "
+                          "model and the tolerances)"));
+    a->Visit("load", &load,
+             Field().Desc("the load (required by the force stages forces, stress, efficiency, the compliant load "
+                          "model and the tolerances)"));
+    a->Visit("limits", &limits, Field().Desc("the verdict's limits (report.html, the summary, --strict)"));
+    a->Visit("analysis", &analysis, Field().Desc("the angle grid, the stages and the load model"));
+    a->Visit("tolerances", &tolerances,
+             Field().Desc("± tolerance bands: the transmission error and lost motion (docs/lcr.md)"));
+    a->Visit("monte_carlo", &monte_carlo, Field().Desc("the Monte-Carlo of the transmission error (with tolerances)"));
+    a->Visit("geometry_files", &geometry_files,
+             Field().Schema(GeometryFilesSchema(
+                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
+    a->Visit("contact", &contact, Field().Desc("finite-length roller contact model (docs/lcr.md)"));
+    a->Visit("duty_cycle", &duty_cycle,
+             Field().Schema(DutyCycleSchema()).Desc(
+                 "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
+                 "1e-6, at least one speed > 0"));
+  }
+  /// The stages' needs (material, load), the life's ratings, one form of the speed.
+  static nlohmann::ordered_json SchemaRules();
+  /// The schema of "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h).
+  static nlohmann::ordered_json DutyCycleSchema();
+};
 
 /// The stages a study asks for ("analysis.evaluate"); stress and efficiency imply forces.
 struct Evaluate {

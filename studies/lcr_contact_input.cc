@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace camopt::studies {
 
@@ -68,39 +70,67 @@ LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& re
   return in;
 }
 
-lcr::ContactModelOptions ParseContactOptions(const Node& c) {
-  LcrContactInput in;
-  {
-    c.CheckKnownFields({"model", "slices", "grid", "misalignment_mrad"});
-    const std::string model = c.StringOr("model", "line");
-    if (model == "line") {
-      in.options.model = lcr::ContactModel::kLine;
-    } else if (model == "slices") {
-      in.options.model = lcr::ContactModel::kSlices;
-    } else if (model == "half_space") {
-      in.options.model = lcr::ContactModel::kHalfSpace;
-    } else {
-      c["model"].Fail("one of line, slices, half_space");
-    }
-    in.options.slices = c.IntegerOr("slices", 4, 40);
-    if (in.options.slices > 200) c["slices"].Fail("at most 200 slices");
-    if (c.Has("grid")) {
-      const auto e = c["grid"].Elements();
-      if (e.size() != 2) c["grid"].Fail("[nx, ny]");
-      in.options.grid_nx = e[0].Integer(8);
-      in.options.grid_ny = e[1].Integer(8);
-      if (in.options.grid_nx > 256) e[0].Fail("at most 256");
-      if (in.options.grid_ny > 1024) e[1].Fail("at most 1024");
-    }
-    in.options.misalignment_rad = c.NumberOr("misalignment_mrad", 0.0) * 1e-3;
-    if (std::abs(in.options.misalignment_rad) > 0.05) c["misalignment_mrad"].Fail("a misalignment within ±50 mrad");
-    if (in.options.model == lcr::ContactModel::kLine && in.options.misalignment_rad != 0) {
-      const std::string want = "slices or half_space with misalignment_mrad (the line model ignores it)";
-      if (c.Has("model")) c["model"].Fail(want);
-      c.FailWith("model must be " + want);
-    }
+nlohmann::ordered_json LcrCrowningInput::SchemaRules() {
+  // type → (the fields it requires, the fields it refuses)
+  const std::vector<std::tuple<const char*, std::vector<const char*>, std::vector<const char*>>> types = {
+      {"circular", {"radius_mm"}, {}},
+      {"partial", {"radius_mm", "flat_length_mm"}, {}},
+      {"logarithmic", {"coefficient_mm", "effective_length_mm"}, {}},
+      {"none", {}, {"radius_mm", "flat_length_mm", "coefficient_mm", "effective_length_mm"}},
+      {"circular", {}, {"flat_length_mm", "coefficient_mm", "effective_length_mm"}},
+      {"partial", {}, {"coefficient_mm", "effective_length_mm"}},
+      {"logarithmic", {}, {"radius_mm", "flat_length_mm"}},
+  };
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  for (const auto& [type, required, refused] : types) {
+    nlohmann::ordered_json then = nlohmann::ordered_json::object();
+    if (!required.empty()) then["required"] = required;
+    for (const char* f : refused) then["properties"][f] = false;
+    all.push_back({{"if", {{"properties", {{"type", {{"const", type}}}}}}}, {"then", then}});
   }
-  return in.options;
+  return {{"allOf", all}};
+}
+
+nlohmann::ordered_json LcrContactOptionsInput::GridSchema() {
+  const lcr::ContactModelOptions defaults;
+  nlohmann::ordered_json s = nlohmann::ordered_json::parse(R"({
+    "description": "[nx, ny] cells of the half-space grid (across rolling, along the roller), at least 8 each way, at most [256, 1024]",
+    "type": "array",
+    "items": {"type": "integer", "minimum": 8},
+    "prefixItems": [{"maximum": 256}, {"maximum": 1024}],
+    "minItems": 2,
+    "maxItems": 2
+  })");
+  s["default"] = {defaults.grid_nx, defaults.grid_ny};
+  return s;
+}
+
+lcr::ContactModelOptions ToContactOptions(const LcrContactOptionsInput& in, const Node& c) {
+  lcr::ContactModelOptions o;
+  const std::string model = in.model.value_or("line");
+  o.model = model == "slices"       ? lcr::ContactModel::kSlices
+            : model == "half_space" ? lcr::ContactModel::kHalfSpace
+                                    : lcr::ContactModel::kLine;
+  o.slices = in.slices;
+  if (c.Has("grid")) {
+    const auto e = c["grid"].Elements();
+    if (e.size() != 2) c["grid"].Fail("[nx, ny]");
+    o.grid_nx = e[0].Integer(8);
+    o.grid_ny = e[1].Integer(8);
+    if (o.grid_nx > 256) e[0].Fail("at most 256");
+    if (o.grid_ny > 1024) e[1].Fail("at most 1024");
+  }
+  o.misalignment_rad = in.misalignment_mrad * 1e-3;
+  if (o.model == lcr::ContactModel::kLine && o.misalignment_rad != 0) {
+    const std::string want = "slices or half_space with misalignment_mrad (the line model ignores it)";
+    if (c.Has("model")) c["model"].Fail(want);
+    c.FailWith("model must be " + want);
+  }
+  return o;
+}
+
+lcr::ContactModelOptions ParseContactOptions(const Node& c) {
+  return ToContactOptions(Read<LcrContactOptionsInput>(c), c);
 }
 
 }  // namespace camopt::studies

@@ -11,6 +11,7 @@
 #include "studies/archive.h"
 #include "studies/bearing_life_io.h"
 #include "studies/input.h"
+#include "studies/lcr_contact_input.h"
 #include "studies/material_input.h"
 
 namespace camopt::studies {
@@ -46,6 +47,68 @@ struct LcrReducerInput {
     a->Visit("eccentricity_mm", &eccentricity_mm, Field().Required().Positive().Unit("mm").Desc("eccentricity e"));
     a->Visit("input", &input, Field().Required().Desc("the input cam and its rollers"));
     a->Visit("output", &output, Field().Required().Desc("the output cam and its rollers"));
+  }
+};
+
+/// A cam side of the kinds with the finite-length contact and the bearing lives (lcr_analysis): the
+/// design, the rollers' crowning and their bearing's ratings.
+struct LcrRatedSideInput : LcrSideInput {
+  std::optional<LcrCrowningInput> crowning;
+  std::optional<double> dynamic_rating_N, static_rating_N;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    LcrSideInput::Serialize(a);
+    a->Visit("crowning", &crowning,
+             Field().Desc("the rollers' crowning (docs/lcr.md); each form takes its own fields only (absent: "
+                          "straight rollers); a crowning other than none needs a contact model other than line"));
+    a->Visit("dynamic_rating_N", &dynamic_rating_N,
+             Field().Positive().Unit("N").Desc(
+                 "the roller bearing's basic dynamic load rating C (ISO 281); required when a life is asked "
+                 "(docs/life.md)"));
+    a->Visit("static_rating_N", &static_rating_N,
+             Field().Positive().Unit("N").Desc(
+                 "the roller bearing's basic static load rating C0 (ISO 76); s0 is reported when given"));
+  }
+};
+
+/// "eccentric_bearing": the bearing carrying the cam on the input shaft's eccentric (docs/life.md).
+struct EccentricBearingInput {
+  double dynamic_rating_N = 0;
+  std::optional<double> static_rating_N;
+  std::string kind;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("dynamic_rating_N", &dynamic_rating_N,
+             Field().Required().Positive().Unit("N").Desc("basic dynamic load rating C (ISO 281)"));
+    a->Visit("static_rating_N", &static_rating_N,
+             Field().Positive().Unit("N").Desc("basic static load rating C0 (ISO 76); s0 is reported when given"));
+    a->Visit("kind", &kind,
+             Field().Required().OneOf({"ball", "roller"}, "one of ball, roller")
+                 .Desc("ball or roller bearing (the life exponent p = 3 or 10/3)"));
+  }
+};
+
+/// The reducer of lcr_analysis: the design, per side the crowning and the roller bearings' ratings,
+/// and the eccentric's bearing.
+struct LcrRatedReducerInput {
+  double eccentricity_mm = 0;
+  LcrRatedSideInput input, output;
+  std::optional<EccentricBearingInput> eccentric_bearing;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("eccentricity_mm", &eccentricity_mm, Field().Required().Positive().Unit("mm").Desc("eccentricity e"));
+    a->Visit("input", &input, Field().Required().Desc("the input cam (fixed turret) and its rollers"));
+    a->Visit("output", &output, Field().Required().Desc("the output cam (output turret) and its rollers"));
+    a->Visit("eccentric_bearing", &eccentric_bearing,
+             Field().Desc("the bearing carrying the cam on the input shaft's eccentric (docs/life.md)"));
+  }
+  /// The design alone.
+  LcrReducerInput Design() const {
+    LcrReducerInput d;
+    d.eccentricity_mm = eccentricity_mm;
+    d.input = input;
+    d.output = output;
+    return d;
   }
 };
 

@@ -10,48 +10,37 @@
 
 namespace camopt::studies {
 
-std::optional<LcrToleranceSpec> ParseLcrTolerances(const Node& root) {
-  if (!root.Has("tolerances")) {
-    if (root.Has("monte_carlo")) root["monte_carlo"].Fail("no \"monte_carlo\" without \"tolerances\"");
+std::optional<LcrToleranceSpec> ToToleranceSpec(const std::optional<LcrTolerancesInput>& tolerances,
+                                                const std::optional<LcrMonteCarloInput>& monte_carlo,
+                                                const Node& root) {
+  if (!tolerances) {
+    if (monte_carlo || root.Has("monte_carlo")) root["monte_carlo"].Fail("no \"monte_carlo\" without \"tolerances\"");
     return std::nullopt;
   }
-  const Node t = root["tolerances"];
-  // One row per band, in lcr::ToleranceKeys() order: the field it sets, the conversion of the
-  // file's unit to the model's (value · scale / divisor), and the largest band accepted. A
-  // tolerance of a micrometre's size against parts of tens of millimetres: above 1 mm the
-  // small-deviation geometry (foot points found from the nominal ones) is not meant to hold.
-  struct Band {
-    double lcr::ToleranceBands::*field;
-    double scale, divisor, max;
-    const char* max_text;
-  };
-  constexpr const char* kMaxUm = "a band of at most 1000 µm";
-  const Band bands[] = {{&lcr::ToleranceBands::eccentricity_mm, 1e-3, 1.0, 1000.0, kMaxUm},
-                        {&lcr::ToleranceBands::turret_radius_mm, 1e-3, 1.0, 1000.0, kMaxUm},
-                        {&lcr::ToleranceBands::roller_diameter_mm, 1e-3, 1.0, 1000.0, kMaxUm},
-                        {&lcr::ToleranceBands::roller_pitch_rad, kPi, 180.0 * 3600.0, 3600.0,
-                         "a band of at most 3600 arcsec"},
-                        {&lcr::ToleranceBands::profile_mm, 1e-3, 1.0, 1000.0, kMaxUm},
-                        {&lcr::ToleranceBands::bearing_clearance_mm, 1e-3, 1.0, 1000.0, kMaxUm}};
-  const std::vector<std::string>& keys = lcr::ToleranceKeys();
-  t.CheckKnownFields({keys.begin(), keys.end()});
+  // The file's units to the model's: µm to mm, arcsec to rad.
+  const LcrTolerancesInput& t = *tolerances;
   LcrToleranceSpec s;
-  for (size_t i = 0; i < std::size(bands); ++i)
-    s.bands.*bands[i].field = t.NonNegativeOr(keys[i], 0.0) * bands[i].scale / bands[i].divisor;
-  for (size_t i = 0; i < std::size(bands); ++i)
-    if (t.Has(keys[i]) && t[keys[i]].Number() > bands[i].max) t[keys[i]].Fail(bands[i].max_text);
-  if (root.Has("monte_carlo")) {
-    const Node m = root["monte_carlo"];
-    m.CheckKnownFields({"samples", "seed", "angle_steps", "lost_motion_torque_fraction"});
-    s.samples = m.IntegerOr("samples", 0, 0);
-    if (s.samples > 100000) m["samples"].Fail("at most 100000 samples");
-    s.seed = std::uint64_t(m.IntegerOr("seed", 0, 1));
-    s.angle_steps = m.IntegerOr("angle_steps", 4, 72);
-    if (s.angle_steps > 3600) m["angle_steps"].Fail("at most 3600 angle steps");
-    if (m.Has("lost_motion_torque_fraction"))
-      s.lost_motion_torque_fraction = m["lost_motion_torque_fraction"].NumberIn(0.0, 1.0);
+  s.bands.eccentricity_mm = t.eccentricity_um.value_or(0.0) * 1e-3;
+  s.bands.turret_radius_mm = t.turret_radius_um.value_or(0.0) * 1e-3;
+  s.bands.roller_diameter_mm = t.roller_diameter_um.value_or(0.0) * 1e-3;
+  s.bands.roller_pitch_rad = t.roller_pitch_arcsec.value_or(0.0) * kPi / (180.0 * 3600.0);
+  s.bands.profile_mm = t.profile_um.value_or(0.0) * 1e-3;
+  s.bands.bearing_clearance_mm = t.bearing_clearance_um.value_or(0.0) * 1e-3;
+  if (monte_carlo) {
+    s.samples = monte_carlo->samples.value_or(0);
+    s.seed = std::uint64_t(monte_carlo->seed.value_or(1));
+    s.angle_steps = monte_carlo->angle_steps.value_or(72);
+    s.lost_motion_torque_fraction = monte_carlo->lost_motion_torque_fraction.value_or(0.03);
   }
   return s;
+}
+
+std::optional<LcrToleranceSpec> ParseLcrTolerances(const Node& root) {
+  if (!root.Has("tolerances")) return ToToleranceSpec(std::nullopt, std::nullopt, root);
+  const LcrTolerancesInput tolerances = Read<LcrTolerancesInput>(root["tolerances"]);
+  std::optional<LcrMonteCarloInput> monte_carlo;
+  if (root.Has("monte_carlo")) monte_carlo = Read<LcrMonteCarloInput>(root["monte_carlo"]);
+  return ToToleranceSpec(tolerances, monte_carlo, root);
 }
 
 lcr::LoadModel ParseLoadModel(const Node& analysis) {
@@ -71,9 +60,9 @@ nlohmann::json TransmissionErrorJson(const LcrToleranceSpec& spec, const lcr::Tr
                "nominal reducer's at the same input angle and torque";
   j["angle_steps"] = spec.angle_steps;
   // Fields of the result under their own names.
-  using Field = std::pair<const char*, double lcr::TransmissionErrorResult::*>;
+  using Member = std::pair<const char*, double lcr::TransmissionErrorResult::*>;
   using R = lcr::TransmissionErrorResult;
-  auto copy = [&](std::initializer_list<Field> fields) {
+  auto copy = [&](std::initializer_list<Member> fields) {
     for (const auto& [key, field] : fields) j[key] = te.*field;
   };
   copy({{"linear_worst_case_arcsec", &R::linear_worst_case_arcsec},

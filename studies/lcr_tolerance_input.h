@@ -1,4 +1,4 @@
-// The tolerance parts of the LCR study kinds (issue 18): "tolerances", "monte_carlo" and
+// The tolerance parts of the LCR study kinds (docs/lcr.md, transmission error): "tolerances", "monte_carlo" and
 // "analysis.load_model" parsed once, and the "transmission_error" block of result.json; shared by
 // lcr_analysis and lcr_min_size.
 #pragma once
@@ -10,9 +10,54 @@
 #include <nlohmann/json.hpp>
 
 #include "model/lcr/transmission_error.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 
 namespace camopt::studies {
+
+/// "tolerances": ± bands of the manufacturing errors, declared once (studies/archive.h). Each band is
+/// optional (absent: 0, no schema default: an absent block means no transmission error at all).
+/// Above 1 mm (1 degree of pitch) the small-deviation geometry is not meant to hold.
+struct LcrTolerancesInput {
+  std::optional<double> eccentricity_um, turret_radius_um, roller_diameter_um, roller_pitch_arcsec, profile_um,
+      bearing_clearance_um;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const auto band = [](const char* what) {
+      return Field().NonNegative().AtMost(1000.0, "a band of at most 1000 µm").Unit("µm").Desc(
+          std::string(what) + " (absent: 0)");
+    };
+    a->Visit("eccentricity_um", &eccentricity_um, band("± band of the eccentricity e"));
+    a->Visit("turret_radius_um", &turret_radius_um, band("± band of each roller's turret radius r_d"));
+    a->Visit("roller_diameter_um", &roller_diameter_um, band("± band of each roller's diameter d_r"));
+    a->Visit("roller_pitch_arcsec", &roller_pitch_arcsec,
+             Field().NonNegative().AtMost(3600.0, "a band of at most 3600 arcsec").Unit("arcsec")
+                 .Desc("± band of each roller's angular position on the turret (absent: 0)"));
+    a->Visit("profile_um", &profile_um, band("± band of the cam profile's normal deviation"));
+    a->Visit("bearing_clearance_um", &bearing_clearance_um,
+             band("radial clearance of the bearings, 0 … c"));
+  }
+};
+
+/// "monte_carlo" (with "tolerances" only): the exact model's Monte-Carlo over the bands. Each field
+/// optional with the default in its description (no schema default: the block needs "tolerances").
+struct LcrMonteCarloInput {
+  std::optional<int> samples, seed, angle_steps;
+  std::optional<double> lost_motion_torque_fraction;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("samples", &samples,
+             Field().AtLeast(0).AtMost(100000, "at most 100000 samples")
+                 .Desc("Monte-Carlo samples of the exact model (absent: 0, the linear estimate only)"));
+    a->Visit("seed", &seed, Field().AtLeast(0).Desc("seed of the samples (absent: 1)"));
+    a->Visit("angle_steps", &angle_steps,
+             Field().AtLeast(4).AtMost(3600, "at most 3600 angle steps")
+                 .Desc("input angles of the transmission error over a revolution (absent: 72)"));
+    a->Visit("lost_motion_torque_fraction", &lost_motion_torque_fraction,
+             Field().In(0.0, 1.0).Desc("the torque ± f T_o of the lost motion, a fraction of the output torque "
+                                       "(absent: 0.03)"));
+  }
+};
 
 struct LcrToleranceSpec {
   lcr::ToleranceBands bands;
@@ -27,6 +72,9 @@ struct LcrToleranceSpec {
 /// root["monte_carlo"] ({"samples", "seed", "angle_steps", "lost_motion_torque_fraction"}).
 /// Empty when the study has no "tolerances". @throws StudyError naming the JSON path.
 std::optional<LcrToleranceSpec> ParseLcrTolerances(const Node& root);
+/// The same from the declared blocks (tolerances absent: none).
+std::optional<LcrToleranceSpec> ToToleranceSpec(const std::optional<LcrTolerancesInput>& tolerances,
+                                                const std::optional<LcrMonteCarloInput>& monte_carlo, const Node& root);
 
 /// "analysis.load_model": "rigid" (default) or "compliant".
 lcr::LoadModel ParseLoadModel(const Node& analysis);

@@ -2,7 +2,10 @@
 #pragma once
 
 #include "model/common/material.h"
+#include <optional>
+
 #include "studies/archive.h"
+#include "studies/contact_fatigue_input.h"
 #include "studies/input.h"
 
 namespace camopt::studies {
@@ -22,6 +25,20 @@ struct MaterialInput {
     m.youngs_modulus_MPa = youngs_modulus_GPa * 1000.0;
     m.poisson_ratio = poisson_ratio;
     return m;
+  }
+};
+
+/// A cam's material with its optional S-N point of rolling-contact fatigue (docs/life.md, "Contact
+/// life of the cam surfaces"): the LCR kinds' "material".
+struct MaterialWithFatigueInput : MaterialInput {
+  std::optional<ContactFatigueInput> contact_fatigue;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    MaterialInput::Serialize(a);
+    a->Visit("contact_fatigue", &contact_fatigue,
+             Field().Desc("the material's S-N point of rolling-contact fatigue: N = reference_cycles "
+                          "(reference_pressure_MPa/p0)^exponent over-rollings of a point at peak Hertz pressure p0 "
+                          "to 10% failure (docs/life.md, 'Contact life of the cam surfaces'); needs a speed"));
   }
 };
 

@@ -69,74 +69,12 @@ WorkEstimate Largest(std::vector<Term> terms, double cap, std::string unit, doub
   return LargestTerm(std::move(terms), cap, std::move(unit), bytes_per_unit);
 }
 
-// Rollers and lobes of both cams of an LCR "reducer" object (defaults: a typical reducer).
-void LcrCounts(const json& reducer, double& rollers, double& lobes) {
-  rollers = Size(Sub(reducer, "input"), "rollers", 13) + Size(Sub(reducer, "output"), "rollers", 15);
-  lobes = Size(Sub(reducer, "input"), "lobes", 12) + Size(Sub(reducer, "output"), "lobes", 14);
-}
-
 // Cells of a "grid": [nx, ny] (fallback when absent or not two numbers).
 double GridCellsOr(const json& g, double fallback) {
   if (!(g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number())) return fallback;
   return std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>());
 }
 
-WorkEstimate LcrAnalysis(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  double rollers, lobes;
-  LcrCounts(Sub(s, "reducer"), rollers, lobes);
-  const double steps = Size(a, "angle_steps", 3600);
-  std::vector<Term> terms = {{steps * rollers, "/analysis/angle_steps",
-                              Num(steps) + " angle steps × " + Num(rollers) + " rollers"}};
-  const double points = Size(a, "profile_points", 3600);
-  terms.push_back({points * lobes, "/analysis/profile_points",
-                   Num(points) + " profile points × " + Num(lobes) + " lobes"});
-  const json& contact = Sub(s, "contact");
-  const json& model = Sub(contact, "model");
-  if (model.is_string() && model.get<std::string>() != "line") {
-    // The finite-length contact: per cam, a table of 65 slices solves (13 forces × 5 radii) and 4
-    // exact ones, a solve of N slices costing about (N/40)³ of a 40-slice one (≈0.6 ms, about
-    // 1e4 roller contact evaluations); the half_space model adds 4 DC-FFT solves per cam of about
-    // nx·ny·20 units (a 64×256 grid ≈ 0.1 s).
-    const double slices = std::max(Size(contact, "slices", 40), 4.0);
-    terms.push_back({2 * 69 * 1e4 * std::pow(slices / 40.0, 3), "/contact/slices",
-                     "2 cams × 69 slices solves of " + Num(slices) + " slices"});
-    if (model.get<std::string>() == "half_space") {
-      const double cells = GridCellsOr(Sub(contact, "grid"), 64.0 * 256.0);
-      terms.push_back({2 * 4 * cells * 20, "/contact/grid", "2 cams × 4 half_space solves on " + Num(cells) + " cells"});
-    }
-  }
-  if (s.contains("tolerances")) {
-    // Transmission error (issue 18): per Monte-Carlo sample, angle and roller about two contact
-    // evaluations' time (gap foot point + compliant solves, measured 6 µs per roller and angle).
-    const json& mc = Sub(s, "monte_carlo");
-    const double samples = Size(mc, "samples", 0), mc_steps = Size(mc, "angle_steps", 72);
-    terms.push_back({2.0 * (samples + 8.0) * mc_steps * rollers, "/monte_carlo/samples",
-                     Num(samples) + " Monte-Carlo samples × " + Num(mc_steps) + " angles × " + Num(rollers) +
-                         " rollers × 2"});
-  }
-  if ((s.contains("duty_cycle") || Sub(Sub(s, "load"), "input_speed_rpm").is_number())) {
-    // Bearing life (docs/life.md): per duty-cycle line, one force analysis per sample over each
-    // bearing's load period (model/lcr/life.h): an input revolution (input roller), 2π m_A n_B/(n_A m_B)
-    // (output roller) and the eccentric's 2π lcm(m_A, m_B)/(n_A m_B), a whole number of revolutions
-    // when the cam has a weight — at angle_steps samples per revolution.
-    const json& red = Sub(s, "reducer");
-    auto count = [&](const char* side, const char* key, double fallback) {
-      return (long long)std::clamp(Size(Sub(red, side), key, fallback), 1.0, 1e6);
-    };
-    const long long ma = count("input", "lobes", 12), na = count("input", "rollers", 13);
-    const long long mb = count("output", "lobes", 14), nb = count("output", "rollers", 15);
-    const long long l = std::lcm(ma, mb), d = na * mb, g = std::gcd(l, d);
-    const bool weight = Size(Sub(s, "load"), "cam_weight_N", 0) > 0;
-    const double ecc_revs = weight ? double(l / g) : double(l) / double(d);
-    const double revs = 1.0 + double(ma * nb) / double(d) + ecc_revs;
-    const double lines = s.contains("duty_cycle") ? std::max<double>(1, double(Count(Sub(s, "duty_cycle")))) : 1.0;
-    terms.push_back({lines * revs * steps * rollers, s.contains("duty_cycle") ? "/duty_cycle" : "/load/input_speed_rpm",
-                     Num(lines) + " duty-cycle lines × " + Num(revs) + " revolutions of bearing load periods × " +
-                         Num(steps) + " angle steps × " + Num(rollers) + " rollers"});
-  }
-  return Largest(terms, 2e7 * factor, "roller contact evaluations", 64);
-}
 
 double GridCells(const json& analysis) {
   const json& g = Sub(analysis, "grid");
@@ -297,7 +235,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   const std::string kind = kind_json.is_string() ? kind_json.get<std::string>() : "";
   if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
     return it->second(study, file, factor);
-  if (kind == "lcr_analysis") return LcrAnalysis(study, factor);
   if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
   if (kind == "lcr_crowning_tuning") return LcrCrowningTuning(study, factor);

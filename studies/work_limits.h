@@ -5,7 +5,7 @@
 // work and well under 2 GB); --max-work-factor F multiplies every cap for a bigger machine.
 //
 // Caps per study kind (work units, with F = 1):
-//   lcr_analysis                    angle_steps × rollers + profile_points × lobes  ≤ 2e7
+//   lcr_analysis (in the kind's file) angle_steps × rollers + profile_points × lobes  ≤ 2e7
 //   lcr_friction_fit                angle_steps × rollers + measurements  ≤ 2e7 (in the kind's file)
 //   transmission_rigidity           elements ≤ 1000; Σ reducer angle_steps × rollers × 2 ≤ 2e6
 //   globoidal_cam (in the kind's file) Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7

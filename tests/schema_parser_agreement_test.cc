@@ -451,6 +451,8 @@ const std::vector<CrossField> kCrossField = {
      "max_steps against the speeds and end_time_s (0.5° of cam a step)"},
     {"lcr_analysis", "/reducer/", "rollers − lobes", "rollers = lobes + 1 (a difference above 1 self-crosses)"},
     {"lcr_analysis", "/reducer/", "more rollers than lobes", "rollers > lobes"},
+    {"lcr_analysis", "/reducer/", "no common divisor",
+     "lobes and rollers without a common divisor (the rollers' bound 1e9 of a whole number)"},
     {"lcr_crowning_tuning", "/reducer/", "rollers − lobes", "rollers = lobes + 1"},
     {"lcr_crowning_tuning", "/reducer/", "more rollers than lobes", "rollers > lobes"},
     {"lcr_crowning_tuning", "/tuning/coefficient_range_mm", "0 < lo < hi", "a range [lo, hi] needs lo < hi"},
@@ -631,7 +633,8 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 // ---------------------------------------------------------------------------------------------
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
 const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
-                                                 "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size"};
+                                                 "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size",
+                                                 "lcr_analysis"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
