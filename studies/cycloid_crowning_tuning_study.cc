@@ -3,6 +3,7 @@
 #include "studies/cycloid_crowning_tuning_study.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <string>
@@ -13,6 +14,7 @@
 #include "studies/cycloid_study_common.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::cycloid_crowning_tuning {
@@ -21,32 +23,98 @@ using objectives::CrowningEvaluation;
 
 namespace {
 
-// "analysis": the contact grid and the crank-angle sampling, the same for both study forms.
-void ParseAnalysis(const Node& root, Study& s) {
-  if (!root.Has("analysis")) return;
-  const Node a = root["analysis"];
-  a.CheckKnownFields({"grid", "crank_angles_per_mesh_period"});
-  cycloid_common::ParseGrid(a, s.options);
-  s.crank_angles_per_mesh_period = a.IntegerOr("crank_angles_per_mesh_period", 1, 6);
-  if (s.crank_angles_per_mesh_period > 1000) a["crank_angles_per_mesh_period"].Fail("at most 1000");
+using ojson = nlohmann::ordered_json;
+
+// The fields of "tuning", "optimizer" and "crowning" each form takes.
+const std::set<std::string> kShorthandTuning = {"coefficient_mm",  "effective_length_mm", "reference_coefficient_mm",
+                                                "curve_points",    "max_evaluations",     "edge_margin_um"};
+const std::set<std::string> kGeneralTuning = {"reference_coefficient_mm", "curve_points",
+                                              "max_evaluations",          "edge_margin_um",
+                                              "softmax_temperature_MPa",  "max_lte_peak_to_peak_arcsec",
+                                              "min_unloaded_te_arcsec"};
+const std::set<std::string> kShorthandCrowning = {"type", "effective_length_mm", "end_drop_mm", "flat_length_mm"};
+
+// What the form (the shorthand, or "variables" given) allows in the blocks both forms share, with
+// the form's own messages; runs before the declaration reads the blocks (its bounds hold for both
+// forms: the shorthand's are tighter).
+void CheckForm(const Node& root) {
+  if (root.Has("variables")) {
+    const Node v = root["variables"];
+    if (!v.json().is_object() || v.json().empty()) v.Fail("an object of variables {\"field\": [lo, hi], ...}");
+    const std::vector<std::string> known = objectives::TuningVariableNames();
+    v.CheckKnownFields(std::set<std::string>(known.begin(), known.end()));
+    if (root.Has("tuning")) root["tuning"].CheckKnownFields(kGeneralTuning);
+    return;
+  }
+  if (root.Has("optimizer")) {
+    const Node o = root["optimizer"];
+    o.CheckKnownFields({"backend", "max_evaluations"});
+    if (o["backend"].String() != "cobyla")
+      o["backend"].Fail("\"cobyla\" (the tuning.coefficient_mm shorthand is value-only; use \"variables\" for gradients)");
+  }
+  if (root.Has("tuning")) {
+    const Node t = root["tuning"];
+    t.CheckKnownFields(kShorthandTuning);
+    if (t.Has("curve_points")) t["curve_points"].Integer(2);
+  }
+  if (root.Has("crowning")) {
+    const Node c = root["crowning"];
+    c.CheckKnownFields(kShorthandCrowning);
+    if (c["type"].String() != "logarithmic") c["type"].Fail("\"logarithmic\"");
+    if (c.Has("effective_length_mm")) c["effective_length_mm"].Positive();
+  }
 }
 
-void ParseJoint(const Node& root, Study& s) {
+// A declared range [lo, hi] as Node::Range reads it (lo <= hi).
+std::pair<double, double> RangeOf(const Node& n, const std::array<double, 2>& r) {
+  if (!(r[0] <= r[1])) n.Fail("[lower, upper] with lower <= upper");
+  return {r[0], r[1]};
+}
+
+const std::optional<std::array<double, 2>>& VariableRange(const Input::Variables& v, const std::string& name) {
+  if (name == "coefficient_mm") return v.coefficient_mm;
+  if (name == "effective_length_mm") return v.effective_length_mm;
+  if (name == "end_drop_mm") return v.end_drop_mm;
+  if (name == "flat_length_mm") return v.flat_length_mm;
+  if (name == "radius_mm") return v.radius_mm;
+  if (name == "delta_position_um") return v.delta_position_um;
+  return v.delta_radius_um;
+}
+
+std::optional<double> CrowningStart(const std::optional<cycloid_common::CrowningStartInput>& c,
+                                    const std::string& name) {
+  if (!c) return std::nullopt;
+  if (name == "coefficient_mm") return c->coefficient_mm;
+  if (name == "effective_length_mm") return c->effective_length_mm;
+  if (name == "end_drop_mm") return c->end_drop_mm;
+  if (name == "flat_length_mm") return c->flat_length_mm;
+  if (name == "radius_mm") return c->radius_mm;
+  return std::nullopt;
+}
+
+// "analysis": the contact grid and the crank-angle sampling, the same for both study forms.
+void ParseAnalysis(const Input::Analysis& a, Study& s) {
+  if (a.grid) s.options.profile_cells = (*a.grid)[0], s.options.axial_cells = (*a.grid)[1];
+  s.crank_angles_per_mesh_period = a.crank_angles_per_mesh_period;
+}
+
+// The general form: the variables (their ranges against the crowning type, the face width and the
+// modifications' sign; every corner of the box a valid crowning and a feasible drive), the start
+// crowning, the optimizer and the general form's tuning settings.
+void ParseJoint(const Node& root, const Input& in, Study& s) {
   s.joint = true;
   const Node v = root["variables"];
-  if (!v.json().is_object() || v.json().empty()) v.Fail("an object of variables {\"field\": [lo, hi], ...}");
   std::set<std::string> names;
   for (const auto& [key, _] : v.json().items()) names.insert(key);
-  const std::vector<std::string> known = objectives::TuningVariableNames();
-  v.CheckKnownFields(std::set<std::string>(known.begin(), known.end()));
-  s.crowning = cycloid_common::ParseCrowningStart(root, names);
+  s.crowning = cycloid_common::MakeCrowningStart(root, in.crowning, names);
   // The variables in a fixed order (TuningVariableNames), whatever the file's order.
-  for (const std::string& name : known) {
-    if (!names.count(name)) continue;
+  for (const std::string& name : objectives::TuningVariableNames()) {
+    const std::optional<std::array<double, 2>>& range = VariableRange(*in.variables, name);
+    if (!range) continue;
     const Node r = v[name];
     if (const std::string why = objectives::TuningVariableAllowed(name, s.crowning.type); !why.empty())
       r.FailWith("cannot be tuned with this crowning: " + why);
-    const auto [lo, hi] = r.Range();
+    const auto [lo, hi] = RangeOf(r, *range);
     if (!(hi > lo)) r.Fail("a range [lo, hi] with lo < hi");
     objectives::Variable var;
     var.name = name;
@@ -58,8 +126,8 @@ void ParseJoint(const Node& root, Study& s) {
     const bool modification = name == "delta_position_um" || name == "delta_radius_um";
     if (modification) {
       start = 1e3 * (name == "delta_position_um" ? s.drive.delta_position_mm : s.drive.delta_radius_mm);
-    } else if (root.Has("crowning") && root["crowning"].Has(name)) {
-      start = root["crowning"][name].Number();
+    } else if (const std::optional<double> given = CrowningStart(in.crowning, name)) {
+      start = *given;
     }
     var.initial = std::clamp(start, lo, hi);
     if (name == "coefficient_mm" && lo < 0) r.Fail("a range with lo >= 0");
@@ -103,106 +171,174 @@ void ParseJoint(const Node& root, Study& s) {
       root["crowning"].FailWith(why);
     s.crowning = c;
   }
-  if (root.Has("optimizer")) {
-    const Node o = root["optimizer"];
-    o.CheckKnownFields({"backend", "max_evaluations"});
-    s.backend = o.StringOr("backend", "ipopt");
-    if (s.backend != "ipopt" && s.backend != "slsqp" && s.backend != "cobyla")
-      o["backend"].Fail("one of \"ipopt\", \"slsqp\", \"cobyla\"");
-    s.max_evaluations = o.IntegerOr("max_evaluations", 1, s.max_evaluations);
-  } else {
-    s.backend = "ipopt";
-  }
+  const Input::Tuning t = in.tuning.value_or(Input::Tuning{});
+  s.backend = in.optimizer && in.optimizer->backend ? *in.optimizer->backend : "ipopt";
+  // optimizer.max_evaluations wins over tuning.max_evaluations when both are given.
+  s.max_evaluations = in.optimizer && in.optimizer->max_evaluations ? *in.optimizer->max_evaluations
+                                                                     : t.max_evaluations;
   s.length_lo_mm = s.length_hi_mm = s.drive.face_width_mm;
-  if (root.Has("tuning")) {
-    const Node t = root["tuning"];
-    t.CheckKnownFields({"reference_coefficient_mm", "curve_points", "max_evaluations", "edge_margin_um",
-                        "softmax_temperature_MPa", "max_lte_peak_to_peak_arcsec", "min_unloaded_te_arcsec"});
-    s.reference_coefficient_mm = t.NonNegativeOr("reference_coefficient_mm", 0.005);
-    s.curve_points = t.IntegerOr("curve_points", 0, 11);
-    if (s.curve_points == 1) t["curve_points"].Fail("0 or at least 2 points");
-    if (s.curve_points > 200) t["curve_points"].Fail("at most 200 points");
-    // optimizer.max_evaluations wins over tuning.max_evaluations when both are given.
-    if (!(root.Has("optimizer") && root["optimizer"].Has("max_evaluations")))
-      s.max_evaluations = t.IntegerOr("max_evaluations", 1, s.max_evaluations);
-    s.required_edge_margin_um = t.NumberOr("edge_margin_um", 0.0);
-    s.temperature_MPa = t.PositiveOr("softmax_temperature_MPa", 2.0);
-    s.max_lte_peak_to_peak_arcsec = t.PositiveOr("max_lte_peak_to_peak_arcsec", kInf);
-    s.min_unloaded_te_arcsec = t.NumberOr("min_unloaded_te_arcsec", 0.0);
-  }
+  s.reference_coefficient_mm = t.reference_coefficient_mm;
+  s.curve_points = t.curve_points;
+  if (s.curve_points == 1) root["tuning"]["curve_points"].Fail("0 or at least 2 points");
+  s.required_edge_margin_um = t.edge_margin_um;
+  s.temperature_MPa = t.softmax_temperature_MPa.value_or(kDefaultSoftmaxTemperatureMPa);
+  s.max_lte_peak_to_peak_arcsec = t.max_lte_peak_to_peak_arcsec.value_or(kInf);
+  s.min_unloaded_te_arcsec = t.min_unloaded_te_arcsec.value_or(0.0);
 }
 
-}  // namespace
-
-Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "drive", "modification", "material", "load", "analysis",
-                         "tuning", "crowning", "variables", "optimizer", "duty_cycle", "crank_bearing", "pins",
-                         "output_mechanism"});
-  Study s;
-  s.name = root.StringOr("name", "");
-  s.drive = cycloid_common::ParseDrive(root);
-  s.material = cycloid_common::ParseMaterial(root);
-  const Node load = root["load"];
-  load.CheckKnownFields({"design_torque_Nm", "max_torque_Nm", "input_speed_rpm"});
-  s.design_torque_Nm = load["design_torque_Nm"].Positive();
-  s.max_torque_Nm = load["max_torque_Nm"].Positive();
-  if (s.max_torque_Nm < s.design_torque_Nm) load["max_torque_Nm"].Fail("a torque >= design_torque_Nm");
-  // The tuned design's bearing lives (docs/life.md, "Cycloid"); the one-line form runs at the
-  // design torque.
-  s.life = cycloid_common::ParseLife(root, s.drive, s.design_torque_Nm * 1000.0);
-  if (root.Has("variables")) {
-    ParseJoint(root, s);
-    ParseAnalysis(root, s);
-    return s;
-  }
-  // The shorthand: "tuning.coefficient_mm" (and optionally effective_length_mm) with COBYLA.
-  if (root.Has("optimizer")) {
-    const Node o = root["optimizer"];
-    o.CheckKnownFields({"backend", "max_evaluations"});
-    if (o["backend"].String() != "cobyla")
-      o["backend"].Fail("\"cobyla\" (the tuning.coefficient_mm shorthand is value-only; use \"variables\" for gradients)");
-  }
+// The shorthand: "tuning.coefficient_mm" (and optionally effective_length_mm) with COBYLA; the
+// optional "crowning" holds the tuned logarithmic crowning's fixed fields.
+void ParseShorthand(const Node& root, const Input& in, Study& s) {
+  if (!in.tuning) (void)root["tuning"];  // "missing required field"
+  const Input::Tuning& t = *in.tuning;
   const Node tuning = root["tuning"];
-  tuning.CheckKnownFields({"coefficient_mm", "effective_length_mm", "reference_coefficient_mm", "curve_points",
-                           "max_evaluations", "edge_margin_um"});
-  std::tie(s.coefficient_lo_mm, s.coefficient_hi_mm) = tuning["coefficient_mm"].Range();
+  if (!t.coefficient_mm) (void)tuning["coefficient_mm"];
+  std::tie(s.coefficient_lo_mm, s.coefficient_hi_mm) = RangeOf(tuning["coefficient_mm"], *t.coefficient_mm);
   if (s.coefficient_lo_mm < 0 || !(s.coefficient_hi_mm > s.coefficient_lo_mm))
     tuning["coefficient_mm"].Fail("a range [lo, hi] with 0 <= lo < hi");
-  s.tune_length = tuning.Has("effective_length_mm");
+  s.tune_length = bool(t.effective_length_mm);
   s.length_lo_mm = s.length_hi_mm = s.drive.face_width_mm;
   if (s.tune_length) {
-    std::tie(s.length_lo_mm, s.length_hi_mm) = tuning["effective_length_mm"].Range();
+    std::tie(s.length_lo_mm, s.length_hi_mm) = RangeOf(tuning["effective_length_mm"], *t.effective_length_mm);
     if (s.length_lo_mm < s.drive.face_width_mm)
       tuning["effective_length_mm"].Fail("a range with lo >= the face width");
     s.tune_length = s.length_hi_mm > s.length_lo_mm;
   }
   // "crowning": the logarithmic form whose coefficient is tuned; its other fields stay fixed.
-  if (root.Has("crowning")) {
+  if (in.crowning) {
     const Node c = root["crowning"];
-    c.CheckKnownFields({"type", "effective_length_mm", "end_drop_mm", "flat_length_mm"});
-    if (c["type"].String() != "logarithmic") c["type"].Fail("\"logarithmic\"");
     s.shape.type = cycloid::CrowningType::kLogarithmic;
-    s.shape.end_drop_mm = c.NonNegativeOr("end_drop_mm", 0.0);
-    s.shape.flat_length_mm = c.NonNegativeOr("flat_length_mm", 0.0);
-    if (c.Has("effective_length_mm")) {
-      if (tuning.Has("effective_length_mm"))
+    s.shape.end_drop_mm = in.crowning->end_drop_mm.value_or(0.0);
+    s.shape.flat_length_mm = in.crowning->flat_length_mm.value_or(0.0);
+    if (in.crowning->effective_length_mm) {
+      if (t.effective_length_mm)
         c["effective_length_mm"].Fail("no value here when tuning.effective_length_mm is given");
-      s.length_lo_mm = s.length_hi_mm = c["effective_length_mm"].Positive();
+      s.length_lo_mm = s.length_hi_mm = *in.crowning->effective_length_mm;
       if (s.length_lo_mm < s.drive.face_width_mm) c["effective_length_mm"].Fail("a length >= the face width");
     }
     s.shape.effective_length_mm = s.length_lo_mm;
     if (const std::string why = cycloid::CheckCrowning(s.shape, s.drive.face_width_mm); !why.empty())
       c.FailWith(why);
   }
-  s.reference_coefficient_mm = tuning.NonNegativeOr("reference_coefficient_mm", 0.005);
-  s.curve_points = tuning.IntegerOr("curve_points", 2, 11);
-  s.max_evaluations = tuning.IntegerOr("max_evaluations", 1, 30);
+  s.reference_coefficient_mm = t.reference_coefficient_mm;
+  s.curve_points = t.curve_points;
   // optimizer.max_evaluations wins over tuning.max_evaluations, as in the general form.
-  if (root.Has("optimizer")) s.max_evaluations = root["optimizer"].IntegerOr("max_evaluations", 1, s.max_evaluations);
-  s.required_edge_margin_um = tuning.NumberOr("edge_margin_um", 0.0);
-  if (s.curve_points > 200) tuning["curve_points"].Fail("at most 200 points");
-  ParseAnalysis(root, s);
+  s.max_evaluations = in.optimizer && in.optimizer->max_evaluations ? *in.optimizer->max_evaluations
+                                                                     : t.max_evaluations;
+  s.required_edge_margin_um = t.edge_margin_um;
+}
+
+}  // namespace
+
+Input ReadInput(const Node& root) {
+  archive_detail::NameCollector names;
+  Input{}.Serialize(&names);
+  root.CheckKnownFields(names.names);
+  CheckForm(root);
+  return Read<Input>(root);
+}
+
+Study Parse(const Node& root) {
+  const Input in = ReadInput(root);
+  Study s;
+  s.name = in.name;
+  s.drive = cycloid_common::MakeDrive(root, in.drive, in.modification);
+  s.material = in.material.ToMaterial();
+  if (in.load.max_torque_Nm < in.load.design_torque_Nm) root["load"]["max_torque_Nm"].Fail("a torque >= design_torque_Nm");
+  s.design_torque_Nm = in.load.design_torque_Nm;
+  s.max_torque_Nm = in.load.max_torque_Nm;
+  // The tuned design's bearing lives (docs/life.md, "Cycloid"); the one-line form runs at the
+  // design torque.
+  s.life = cycloid_common::ParseLife(root, s.drive, s.design_torque_Nm * 1000.0);
+  if (in.variables) ParseJoint(root, in, s);
+  else ParseShorthand(root, in, s);
+  ParseAnalysis(in.analysis, s);
   return s;
+}
+
+ojson Input::Variables::SchemaRules() {
+  // The bound of one end of a range (prefixItems): lower >= 0 for f, the flat and the radius,
+  // lower > 0 for the end drop, upper <= 0 for the modifications.
+  const ojson lower_non_negative = ojson::array({{{"minimum", 0}}});
+  const ojson upper_non_positive =
+      ojson::array({ojson::object(), {{"maximum", 0}, {"description", "hi <= 0 (a positive modification interferes)"}}});
+  ojson p = ojson::object();
+  p["coefficient_mm"]["prefixItems"] = lower_non_negative;
+  p["end_drop_mm"]["prefixItems"] =
+      ojson::array({{{"exclusiveMinimum", 0}, {"description", "lo > 0 (0 means an unbounded drop)"}}});
+  p["flat_length_mm"]["prefixItems"] = lower_non_negative;
+  p["radius_mm"]["prefixItems"] = lower_non_negative;
+  p["delta_position_um"]["prefixItems"] = upper_non_positive;
+  p["delta_radius_um"]["prefixItems"] = upper_non_positive;
+  return {{"minProperties", 1}, {"allOf", ojson::array({{{"properties", p}}})}};
+}
+
+ojson Input::SchemaRules() {
+  // The general form ("variables" given): no shorthand range in tuning, curve_points 0 or >= 2; a
+  // crowning variable needs the crowning type that has it, and each type's fields are given in
+  // "crowning" or are variables.
+  ojson general_rules = ojson::array();
+  const std::vector<std::pair<const char*, std::vector<const char*>>> variable_types = {
+      {"coefficient_mm", {"logarithmic"}},
+      {"effective_length_mm", {"logarithmic"}},
+      {"end_drop_mm", {"logarithmic"}},
+      {"flat_length_mm", {"logarithmic", "partial"}},
+      {"radius_mm", {"full", "partial"}}};
+  for (const auto& [name, types] : variable_types)
+    general_rules.push_back(
+        {{"if", {{"properties", {{"variables", {{"required", {name}}}}}}}},
+         {"then", {{"required", {"crowning"}}, {"properties", {{"crowning", {{"properties", {{"type", {{"enum", types}}}}}}}}}}}});
+  const std::vector<std::pair<const char*, const char*>> type_fields = {
+      {"full", "radius_mm"}, {"partial", "radius_mm"}, {"partial", "flat_length_mm"}, {"logarithmic", "coefficient_mm"}};
+  for (const auto& [type, field] : type_fields)
+    general_rules.push_back(
+        {{"if", {{"required", {"crowning"}}, {"properties", {{"crowning", {{"properties", {{"type", {{"enum", {type}}}}}}}}}}}},
+         {"then", {{"anyOf", {{{"properties", {{"crowning", {{"required", {field}}}}}}},
+                              {{"properties", {{"variables", {{"required", {field}}}}}}}}}}}});
+  const ojson general = {
+      {"required", {"variables"}},
+      {"properties",
+       {{"tuning",
+         {{"properties",
+           {{"coefficient_mm", false},
+            {"effective_length_mm", false},
+            {"curve_points", {{"not", {{"const", 1}}}, {"description", "0 (no curve) or at least 2"}}}}}}}}},
+      {"allOf", general_rules}};
+  // The shorthand: tuning with coefficient_mm (lower >= 0) and the shorthand's settings only,
+  // curve_points >= 2; optimizer.backend "cobyla" given; the crowning logarithmic with its fixed
+  // fields only (effective_length_mm > 0, not with tuning.effective_length_mm).
+  const ojson shorthand = {
+      {"required", {"tuning"}},
+      {"not", {{"required", {"variables"}}}},
+      {"properties",
+       {{"tuning",
+         {{"required", {"coefficient_mm"}},
+          {"properties",
+           {{"coefficient_mm", {{"items", {{"minimum", 0}}}}},
+            {"effective_length_mm", {{"items", {{"exclusiveMinimum", 0}}}}},
+            {"curve_points", {{"minimum", 2}}},
+            {"softmax_temperature_MPa", false},
+            {"max_lte_peak_to_peak_arcsec", false},
+            {"min_unloaded_te_arcsec", false}}}}},
+        {"optimizer", {{"required", {"backend"}}, {"properties", {{"backend", {{"const", "cobyla"}}}}}}},
+        {"crowning",
+         {{"properties",
+           {{"type", {{"const", "logarithmic"}}},
+            {"effective_length_mm",
+             {{"exclusiveMinimum", 0}, {"description", ">= the face width; not with tuning.effective_length_mm"}}},
+            {"coefficient_mm", false},
+            {"radius_mm", false}}}}}}},
+      {"allOf",
+       {{{"if", {{"properties", {{"crowning", {{"required", {"effective_length_mm"}}}}}}, {"required", {"crowning"}}}},
+         {"then", {{"properties", {{"tuning", {{"not", {{"required", {"effective_length_mm"}}}}}}}}}}}}}};
+  // A life (a speed or a duty cycle) needs the crank bearing and the output mechanism; one speed form.
+  const ojson life = ojson::parse(R"([
+    {"if": {"anyOf": [{"required": ["duty_cycle"]},
+                      {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]},
+     "then": {"required": ["crank_bearing", "output_mechanism"]}},
+    {"if": {"required": ["duty_cycle"]},
+     "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}}])");
+  return {{"oneOf", {general, shorthand}}, {"allOf", life}};
 }
 
 namespace {
@@ -675,28 +811,64 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
+CAMOPT_REGISTER_DECLARED_KIND("cycloid_crowning_tuning", Input,
+                              "camopt study: crowning (and modification) tuning of a cycloid drive");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): crank angles, contact grid and
-// the optimizer's evaluation budget (its tolerances are fixed).
+// the optimizer's evaluation budget (its tolerances are fixed); the defaults are the declaration's.
 Fidelity Knobs(const nlohmann::json& study) {
+  const Input defaults;
+  const cycloid::LoadedOptions grid;
   Fidelity f;
-  // The general form (issue 13) reads its budget from optimizer.max_evaluations.
+  // The general form reads its budget from optimizer.max_evaluations.
   const bool joint = study.is_object() && study.contains("variables");
-  f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"}, 6, 2,
-                     true, 0, "uniform crank angles per mesh period"});
-  f.knobs.push_back({"grid", {"/analysis/grid"}, {40, 40}, 2, true, 0,
+  f.knobs.push_back({"crank_angles_per_mesh_period", {"/analysis/crank_angles_per_mesh_period"},
+                     defaults.analysis.crank_angles_per_mesh_period, 2, true, 0, "uniform crank angles per mesh period"});
+  f.knobs.push_back({"grid", {"/analysis/grid"}, {grid.profile_cells, grid.axial_cells}, 2, true, 0,
                      "contact cells across the profile and along the face"});
+  const int budget = Input::Tuning{}.max_evaluations;
   if (joint)
-    f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, 30, 2, true, 0,
+    f.knobs.push_back({"max_evaluations", {"/optimizer/max_evaluations"}, budget, 2, true, 0,
                        "optimizer budget (NLopt: evaluations; Ipopt: iterations)"});
   else
-    f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, 30, 2, true, 0,
+    f.knobs.push_back({"max_evaluations", {"/tuning/max_evaluations"}, budget, 2, true, 0,
                        "COBYLA evaluations after the scan"});
   f.headlines = {"/tuned_coefficient_mm", "/tuned_max_contact_stress_MPa",
                  "/reference_max_contact_stress_MPa"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("cycloid_crowning_tuning", Knobs);
+
+// The work limit (studies/work_limits.h): 2 torques × (the scan's points + the optimizer's
+// evaluations) × crank angles × rollers × grid cells. In the general form each evaluation is a
+// value run and its gradient, which costs about 0.65 value runs per variable (measured: 1.9× for 3
+// variables, since then 1.67×, docs/performance.md, "Cycloid drive"; the estimate keeps the
+// margin). The verification of the tuned design: both torques on twice the angles and four times
+// the cells, and the study's own settings beside them, up to kVerificationRounds rounds.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(Node(&study, file, ""));
+  const Input::Tuning t = in.tuning.value_or(Input::Tuning{});
+  const double rollers = in.drive.rollers;
+  const std::array<int, 2> grid = in.analysis.grid.value_or(std::array<int, 2>{40, 40});
+  const double cells = double(grid[0]) * grid[1];
+  const double angles = in.analysis.crank_angles_per_mesh_period;
+  // optimizer.max_evaluations wins over tuning.max_evaluations (Parse) in both forms.
+  const double budget =
+      in.optimizer && in.optimizer->max_evaluations ? *in.optimizer->max_evaluations : t.max_evaluations;
+  double variables = 0;
+  if (in.variables)
+    for (const auto& v : study.at("variables")) variables += v.is_array() ? 1 : 0;
+  const double evaluations = t.curve_points + budget * (in.variables ? 1.0 + 0.65 * variables : 1.0);
+  const double verification = kVerificationRounds * 2 * (1 + 2 * 4) * angles * rollers * cells;
+  return LargestTerm({{2 * evaluations * angles * rollers * cells, "/analysis/grid",
+                       "2 torques × " + WorkNumber(evaluations) + " evaluations × " + WorkNumber(angles) +
+                           " crank angles × " + WorkNumber(rollers) + " rollers × " + WorkNumber(cells) +
+                           " grid cells"},
+                      {verification, "/analysis/grid",
+                       "verification: up to 3 rounds × 2 torques on twice the angles and cells"}},
+                     5e7 * factor, "contact cell solves", 1);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_crowning_tuning", EstimateWork);
 }  // namespace
 
 namespace {

@@ -15,6 +15,7 @@
 // reported stress and margin are the accurate values.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,11 +25,204 @@
 #include "model/cycloid/loaded_tca.h"
 #include "objectives/cycloid_crowning.h"
 #include "objectives/verification.h"
+#include "studies/archive.h"
+#include "studies/cycloid_input.h"
 #include "studies/cycloid_life.h"
 #include "studies/input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_crowning_tuning {
+
+/// Defaults of the "tuning" and "analysis" blocks.
+inline constexpr double kDefaultReferenceCoefficientMm = 0.005;  ///< the paper's f (eq. 7, L = B)
+inline constexpr int kDefaultCurvePoints = 11;
+inline constexpr int kDefaultMaxEvaluations = 30;
+inline constexpr double kDefaultSoftmaxTemperatureMPa = 2.0;
+inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 6;
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds and
+/// description (studies/archive.h); the blocks shared with the other cycloid kinds are those of
+/// studies/cycloid_input.h. The file has two forms: the shorthand (tuning.coefficient_mm, COBYLA
+/// after a scan) and the general form ("variables" given). "tuning", "optimizer" and "crowning"
+/// hold the fields of both forms; which of them a form takes is stated by SchemaRules (one branch
+/// per form) and checked in code by Parse with the form's own messages. `camopt schema
+/// cycloid_crowning_tuning` is emitted from it.
+struct Input {
+  struct Load {
+    double design_torque_Nm = 0, max_torque_Nm = 0;
+    std::optional<double> input_speed_rpm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("design_torque_Nm", &design_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc(
+                   "T, the disc's torque at which the peak contact stress over the mesh period is minimised"));
+      a->Visit("max_torque_Nm", &max_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc(
+                   ">= design_torque_Nm; the contact stays off the face ends (tuning.edge_margin_um) up to it"));
+      a->Visit("input_speed_rpm", &input_speed_rpm,
+               Field().Positive().Unit("rpm").Desc(
+                   "input (crank) speed: the tuned design's bearing lives at load.design_torque_Nm (a one-line duty "
+                   "cycle; docs/life.md, Cycloid)"));
+    }
+  };
+  /// "tuning": the shorthand's ranges of f and L and the settings of both forms.
+  struct Tuning {
+    std::optional<std::array<double, 2>> coefficient_mm, effective_length_mm;
+    double reference_coefficient_mm = kDefaultReferenceCoefficientMm;
+    int curve_points = kDefaultCurvePoints;
+    int max_evaluations = kDefaultMaxEvaluations;
+    double edge_margin_um = 0;
+    /// The general form's (no schema default: the shorthand refuses them).
+    std::optional<double> softmax_temperature_MPa, max_lte_peak_to_peak_arcsec, min_unloaded_te_arcsec;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("coefficient_mm", &coefficient_mm,
+               Field().Expect("[lower, upper], two numbers").Unit("mm").Desc(
+                   "shorthand form (required there): [lower, upper] of the LCM coefficient f (eq. 7, Δ = f ln(1/(1 − "
+                   "(2u/L)²))), 0 <= lower < upper"));
+      a->Visit("effective_length_mm", &effective_length_mm,
+               Field().Expect("[lower, upper], two numbers").Unit("mm").Desc(
+                   "shorthand form: [lower, upper] of the effective length L, the face width B <= lower <= upper "
+                   "(absent: L = B, or crowning.effective_length_mm)"));
+      a->Visit("reference_coefficient_mm", &reference_coefficient_mm,
+               Field().NonNegative().Unit("mm").Desc("f to compare with (the paper's, eq. 7 with L = B)"));
+      a->Visit("curve_points", &curve_points,
+               Field().AtLeast(0).AtMost(200, "at most 200 points").Desc(
+                   "points of the uniform scan of f over its range (shorthand: at least 2; general form: 0, no scan, "
+                   "or at least 2)"));
+      a->Visit("max_evaluations", &max_evaluations,
+               Field().AtLeast(1).Desc(
+                   "optimizer budget (COBYLA evaluations after the scan; optimizer.max_evaluations wins when given)"));
+      a->Visit("edge_margin_um", &edge_margin_um,
+               Field().Unit("µm").Desc(
+                   "required axial distance of the contact end from the face end at every angle of the "
+                   "max_torque_Nm cycle (located within a cell)"));
+      a->Visit("softmax_temperature_MPa", &softmax_temperature_MPa,
+               Field().Positive().Unit("MPa").Desc(
+                   "general form: τ of the smooth peak S = m + τ ln Σ exp((p_k − m)/τ) (0 <= S − max <= τ ln N; "
+                   "absent: 2)"));
+      a->Visit("max_lte_peak_to_peak_arcsec", &max_lte_peak_to_peak_arcsec,
+               Field().Positive().Unit("arcsec").Desc(
+                   "general form: upper bound of the loaded TE's peak to peak at the design torque (absent: none)"));
+      a->Visit("min_unloaded_te_arcsec", &min_unloaded_te_arcsec,
+               Field().Unit("arcsec").Desc(
+                   "general form: lower bound of the unloaded TE β0 (eq. 14) at every angle: no roller interferes "
+                   "with the tooth at the kinematic position (absent: 0)"));
+    }
+  };
+  /// "variables" (the general form): each tuned field's [lo, hi].
+  struct Variables {
+    std::optional<std::array<double, 2>> coefficient_mm, effective_length_mm, end_drop_mm, flat_length_mm, radius_mm,
+        delta_position_um, delta_radius_um;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const auto range = [](const char* what, const char* unit) {
+        return Field().Expect("[lower, upper], two numbers").Unit(unit).Desc(
+            std::string("[lower, upper] with lower < upper: ") + what);
+      };
+      a->Visit("coefficient_mm", &coefficient_mm,
+               range("the LCM coefficient f (logarithmic; lower >= 0)", "mm"));
+      a->Visit("effective_length_mm", &effective_length_mm,
+               range("the effective length L (logarithmic; lower >= the face width)", "mm"));
+      a->Visit("end_drop_mm", &end_drop_mm,
+               range("the largest drop at the face ends (logarithmic; lower > 0, 0 means an unbounded drop)", "mm"));
+      a->Visit("flat_length_mm", &flat_length_mm,
+               range("the uncrowned middle's length (logarithmic, partial; lower >= 0)", "mm"));
+      a->Visit("radius_mm", &radius_mm, range("the crowning radius (full, partial; lower >= 0)", "mm"));
+      a->Visit("delta_position_um", &delta_position_um,
+               range("Δa, the pins' circle radius modification (upper <= 0: a positive one interferes)", "µm"));
+      a->Visit("delta_radius_um", &delta_radius_um,
+               range("Δr, the pin radius modification (upper <= 0: a positive one interferes)", "µm"));
+    }
+    /// At least one variable; each range's bound on one end.
+    static nlohmann::ordered_json SchemaRules();
+  };
+  struct Optimizer {
+    /// No schema default: the general form's is "ipopt", the shorthand's must be given ("cobyla").
+    std::optional<std::string> backend;
+    std::optional<int> max_evaluations;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend,
+               Field().OneOf({"ipopt", "slsqp", "cobyla"}).Desc(
+                   "the solver: Ipopt or NLopt's SLSQP with exact gradients, NLopt's COBYLA on values only "
+                   "(general form; absent: ipopt); the shorthand takes \"cobyla\" only, and needs it given"));
+      a->Visit("max_evaluations", &max_evaluations,
+               Field().AtLeast(1).Desc(
+                   "Ipopt: iterations; NLopt: evaluations (absent: tuning.max_evaluations)"));
+    }
+  };
+  struct Analysis {
+    std::optional<std::array<int, 2>> grid;
+    int crank_angles_per_mesh_period = kDefaultCrankAnglesPerMeshPeriod;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("grid", &grid, cycloid_common::GridField().Desc(
+          "[profile_cells, axial_cells] of the fast model, 4 to 512 each; the accurate check has twice each"));
+      a->Visit("crank_angles_per_mesh_period", &crank_angles_per_mesh_period,
+               Field().AtLeast(1).AtMost(1000, "at most 1000").Desc(
+                   "uniform crank angles over the mesh period 2π/z₂ (fast model; the accurate check has twice)"));
+    }
+  };
+
+  std::string study = "cycloid_crowning_tuning", name;
+  std::optional<std::string> description;
+  cycloid_common::DriveInput drive;
+  std::optional<cycloid_common::ModificationInput> modification;
+  MaterialInput material;
+  Load load;
+  std::optional<Tuning> tuning;
+  std::optional<Variables> variables;
+  std::optional<Optimizer> optimizer;
+  std::optional<cycloid_common::CrowningStartInput> crowning;
+  Analysis analysis;
+  nlohmann::json duty_cycle, crank_bearing, pins;
+  std::optional<cycloid_common::OutputMechanismInput> output_mechanism;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("cycloid_crowning_tuning").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("drive", &drive, Field().Required().Desc("the pin ring and the disc (docs/cycloid.md, \"Geometry\")"));
+    a->Visit("modification", &modification,
+             Field().Desc("the profile's modifications (general form: the start of those in variables; absent: 0)"));
+    a->Visit("material", &material, Field().Required().Desc("the disc's and pins' elastic material"));
+    a->Visit("load", &load, Field().Required().Desc("the design and maximum torques (and the speed for the lives)"));
+    a->Visit("tuning", &tuning,
+             Field().Desc("shorthand form (required there): the ranges of f (and L) and the scan's and COBYLA's "
+                          "settings; general form: the settings"));
+    a->Visit("variables", &variables,
+             Field().Desc("general form (given: this form): the tuned fields, each [lo, hi]; every corner of the "
+                          "box must give a valid crowning and a feasible drive"));
+    a->Visit("optimizer", &optimizer,
+             Field().Desc("general form: any backend; shorthand form: {\"backend\": \"cobyla\"} only"));
+    a->Visit("crowning", &crowning,
+             Field().Desc("general form: the start crowning (a field that is a variable may be left out; absent: "
+                          "none); shorthand form: the logarithmic crowning whose coefficient is tuned (its fixed "
+                          "fields; eq. 7's L = B and no end drop when absent)"));
+    a->Visit("analysis", &analysis, Field().Desc("the fast model's contact grid and crank angles"));
+    a->Visit("duty_cycle", &duty_cycle,
+             Field().Schema(cycloid_common::DutyCycleSchema()).Desc(
+                 "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
+                 "disc's torque (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0; each line "
+                 "one LTCA cycle at its torque"));
+    a->Visit("crank_bearing", &crank_bearing,
+             Field().Schema(cycloid_common::CrankBearingSchema()).Desc(
+                 "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
+    a->Visit("pins", &pins,
+             Field().Schema(cycloid_common::PinRatingSchema()).Desc(
+                 "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
+                 "p = 10/3 (docs/life.md, Cycloid)"));
+    a->Visit("output_mechanism", &output_mechanism,
+             Field().Desc("rigid output pins in the disc's holes (docs/life.md, Cycloid): pin circle radius (inside "
+                          "the disc's root radius) and pin count (absent: the continuous limit)"));
+  }
+  /// The rules of the two forms (one branch each: which fields of tuning, optimizer and crowning a
+  /// form takes, a crowning variable only with the crowning type that has it) and of the lives.
+  static nlohmann::ordered_json SchemaRules();
+};
 
 struct Study {
   std::string name;
@@ -41,20 +235,20 @@ struct Study {
   /// The tuned logarithmic crowning's fixed fields ("crowning": end_drop_mm, flat_length_mm;
   /// effective_length_mm fixes L); the defaults are the paper's eq. 7.
   cycloid::Crowning shape{cycloid::CrowningType::kLogarithmic};
-  double reference_coefficient_mm = 0.005;
-  int curve_points = 11;
-  int max_evaluations = 30;
+  double reference_coefficient_mm = kDefaultReferenceCoefficientMm;
+  int curve_points = kDefaultCurvePoints;
+  int max_evaluations = kDefaultMaxEvaluations;
   double required_edge_margin_um = 0;
   cycloid::LoadedOptions options;
-  int crank_angles_per_mesh_period = 6;
+  int crank_angles_per_mesh_period = kDefaultCrankAnglesPerMeshPeriod;
 
   /// The general form ("variables" given): any crowning's parameters and the modifications, each
-  /// variable named by the field it sets, with exact gradients for Ipopt/SLSQP (issue 13).
+  /// variable named by the field it sets, with exact gradients for Ipopt/SLSQP (docs/cycloid.md).
   bool joint = false;
   cycloid::Crowning crowning;                   ///< start values and fixed fields
   std::vector<objectives::Variable> variables;  ///< in their own units (mm, µm for delta_*_um)
   std::string backend = "cobyla";               ///< "ipopt", "slsqp" or "cobyla"
-  double temperature_MPa = 2.0;                 ///< soft-max temperature of the smooth peak
+  double temperature_MPa = kDefaultSoftmaxTemperatureMPa;  ///< soft-max temperature of the smooth peak
   double max_lte_peak_to_peak_arcsec = kInf;    ///< optional bound
   /// The unloaded TE β0 >= this at every angle (no roller interferes with the tooth at the
   /// kinematic position: the assembly/backlash condition); "tuning.min_unloaded_te_arcsec".
@@ -104,6 +298,10 @@ struct Result {
   std::optional<cycloid_common::LifeResult> life;
 };
 
+/// The declared input of the study at `root` (its known fields, then each form's fields of tuning,
+/// optimizer and crowning with the form's messages, then the declaration): what Parse, the work
+/// estimate and the fidelity knobs read. @throws StudyError for bad input (exit 2).
+Input ReadInput(const Node& root);
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
 Result Run(const Study& study, const RunContext& ctx);

@@ -76,42 +76,6 @@ double GridCellsOr(const json& g, double fallback) {
 }
 
 
-double GridCells(const json& analysis) {
-  const json& g = Sub(analysis, "grid");
-  double p = 40, q = 40;
-  if (g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number()) {
-    p = std::max(0.0, g[0].get<double>());
-    q = std::max(0.0, g[1].get<double>());
-  }
-  return p * q;
-}
-
-WorkEstimate CrowningTuning(const json& s, double factor) {
-  const json& a = Sub(s, "analysis");
-  const json& t = Sub(s, "tuning");
-  const double rollers = Size(Sub(s, "drive"), "rollers", 16);
-  const double cells = GridCells(a);
-  const double angles = Size(a, "crank_angles_per_mesh_period", 6);
-  double evaluations = Size(t, "curve_points", 11) + Size(t, "max_evaluations", 30);
-  // The general form (issue 13): optimizer.max_evaluations, each a value run and its gradient,
-  // which costs about 0.65 value runs per variable (measured: 1.9× for 3 variables, since then
-  // 1.67×, docs/performance.md, "Cycloid drive"; the estimate keeps the margin).
-  if (s.contains("variables") && s["variables"].is_object())
-    evaluations = Size(t, "curve_points", 11) +
-                  Size(Sub(s, "optimizer"), "max_evaluations", Size(t, "max_evaluations", 30)) *
-                      (1.0 + 0.65 * double(s["variables"].size()));
-  // The verification of the tuned design: both torques on twice the angles and four times the
-  // cells, and the study's own settings beside them, up to 3 rounds.
-  const double verification = 3 * 2 * (1 + 2 * 4) * angles * rollers * cells;
-  return Largest({{2 * evaluations * angles * rollers * cells, "/analysis/grid",
-                   "2 torques × " + Num(evaluations) + " evaluations × " + Num(angles) +
-                       " crank angles × " + Num(rollers) + " rollers × " + Num(cells) +
-                       " grid cells"},
-                  {verification, "/analysis/grid",
-                   "verification: up to 3 rounds × 2 torques on twice the angles and cells"}},
-                 5e7 * factor, "contact cell solves", 1);
-}
-
 WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   const json& search = Sub(s, "search");
   const double lobes = Size(search, "max_lobes", 40);
@@ -235,7 +199,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   const std::string kind = kind_json.is_string() ? kind_json.get<std::string>() : "";
   if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
     return it->second(study, file, factor);
-  if (kind == "cycloid_crowning_tuning") return CrowningTuning(study, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
   if (kind == "lcr_crowning_tuning") return LcrCrowningTuning(study, factor);
   WorkEstimate none;

@@ -11,7 +11,7 @@
 //   globoidal_cam (in the kind's file) Σ over speeds of solver steps (≈5000 per revolution) ≤ 1e7; surface points ≤ 1e7
 //   cycloid_ltca (in the kind's file) runs (2.25 with the error estimate) × crank angles (a list,
 //                                   crank_angle_steps or crank_angles_per_mesh_period) × rollers × cells ≤ 5e7
-//   cycloid_crowning_tuning         (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
+//   cycloid_crowning_tuning (kind's file) (curve_points + max_evaluations) × 2 × angles × rollers × cells ≤ 5e7
 //   cycloid_min_size (kind's file) max_evaluations × (starts + verify_rounds) × (2 + 0.65 variables) ×
 //                                   torques × angles × rollers × cells + the accurate checks ≤ 5e8
 //   disc_cam (in the kind's file)   angle_steps + MC samples × angle_steps × scales ≤ 2e6

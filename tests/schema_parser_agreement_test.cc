@@ -410,6 +410,10 @@ const std::vector<CrossField> kCrossField = {
     {"cycloid_crowning_tuning", "/drive/", "teeth + 1", "rollers = teeth + 1 (one-tooth difference)"},
     {"cycloid_ltca", "/drive/", "teeth + 1", "rollers = teeth + 1 (one-tooth difference)"},
     {"cycloid_crowning_tuning", "/variables/", "with lo < hi", "a range [lo, hi] needs lo < hi"},
+    {"cycloid_crowning_tuning", "/tuning/coefficient_mm", "with 0 <= lo < hi",
+     "the shorthand's range of f needs lo < hi"},
+    {"cycloid_crowning_tuning", "/tuning/effective_length_mm", "lo >= the face width",
+     "the shorthand's range of L against drive.face_width_mm"},
     {"cycloid_ltca", "/crowning/effective_length_mm", "effective length must be >= the face width",
      "the crowning's effective length against drive.face_width_mm"},
     {"cycloid_min_size", "/variables/", "a start within the range", "a variable's start lies in its range"},
@@ -634,7 +638,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
 const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
                                                  "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size",
-                                                 "lcr_analysis"};
+                                                 "lcr_analysis", "cycloid_crowning_tuning"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
