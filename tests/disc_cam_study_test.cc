@@ -457,5 +457,39 @@ TEST(DiscCamStudy, PolynomialDiscontinuitiesAreRejectedWithBothValues) {
   camopt::testing::ExpectStudyRejected(g, "globoidal-polynomial", "/motion/0/law", "a motion law (dwell");
 }
 
+// The jump study (studies/examples/disc_cam_jump.json): the cam of disc_cam_dynamics.json with a
+// 50 N/mm follower train and 5 % damping at 250 rpm. Reference values from an independent fixed-step
+// RK4 integration of the same one-DOF model (dt = 5 µs, S and S' interpolated from series.csv,
+// written apart from model/disc_cam/follower_dynamics.cc): smallest axial force 5.673 N, residual
+// vibration over the 200–240° dwell 0.7752 mm, contact held at 293.9 rpm and lost at 294.5 rpm. The
+// kinetostatic jump speed by hand over the 0.1° grid: min (k S + F₀ + W)/(−m S'') → 356.43 rpm.
+TEST(DiscCamStudy, JumpStudyAgainstAnIndependentIntegration) {
+  const Ran ran = ParseAndRun(Example("disc_cam_jump.json"));
+  const json d = disc_study::ToJson(ran.study, ran.result)["dynamics"];
+  EXPECT_NEAR(d["jump_speed_rpm"].get<double>(), 356.43, 0.01);
+  const double jump = d["dynamic_jump_speed_rpm"].get<double>();
+  EXPECT_GT(jump, 293.9);
+  EXPECT_LT(jump, 294.5);
+  EXPECT_LT(jump, d["jump_speed_rpm"].get<double>());  // the flexible follower leaves the cam earlier
+  const json b = d["dynamic_jump_search"]["bracket_rpm"];
+  EXPECT_LE(b[1].get<double>() - b[0].get<double>(), 1e-3 * jump);
+  EXPECT_EQ(b[1].get<double>(), jump);
+  const json r = d["response"];
+  EXPECT_NEAR(r["min_axial_force_N"].get<double>(), 5.673, 0.005);
+  EXPECT_NEAR(r["residual_vibration_mm"].get<double>(), 0.7752, 0.001);
+  EXPECT_EQ(r["separates"], false);
+  EXPECT_NEAR(r["natural_frequency_Hz"].get<double>(), std::sqrt(51.5e3 / 1.2) / (2 * kPi), 1e-9);
+  // At 300 rpm the response itself separates (RK4: smallest force −0.94 N before contact is lost),
+  // the loads' verdict fails, and the jump speed found is still the first separation below it.
+  json fast = Example("disc_cam_jump.json");
+  fast["dynamics"]["speed_rpm"] = 300;
+  const Ran f = ParseAndRun(fast);
+  const json fd = disc_study::ToJson(f.study, f.result);
+  EXPECT_EQ(fd["dynamics"]["response"]["separates"], true);
+  EXPECT_EQ(fd["dynamics"]["response"]["min_axial_force_N"], 0.0);
+  EXPECT_NEAR(fd["dynamics"]["dynamic_jump_speed_rpm"].get<double>(), jump, 1e-9);
+  EXPECT_EQ(fd["limits_ok"], false);
+}
+
 }  // namespace
 }  // namespace camopt
