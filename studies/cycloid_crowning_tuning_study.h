@@ -203,18 +203,9 @@ struct Input {
                           "none); shorthand form: the logarithmic crowning whose coefficient is tuned (its fixed "
                           "fields; eq. 7's L = B and no end drop when absent)"));
     a->Visit("analysis", &analysis, Field().Desc("the fast model's contact grid and crank angles"));
-    a->Visit("duty_cycle", &duty_cycle,
-             Field().Schema(cycloid_common::DutyCycleSchema()).Desc(
-                 "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
-                 "disc's torque (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0; each line "
-                 "one LTCA cycle at its torque"));
-    a->Visit("crank_bearing", &crank_bearing,
-             Field().Schema(cycloid_common::CrankBearingSchema()).Desc(
-                 "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
-    a->Visit("pins", &pins,
-             Field().Schema(cycloid_common::PinRatingSchema()).Desc(
-                 "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
-                 "p = 10/3 (docs/life.md, Cycloid)"));
+    cycloid_common::VisitLifeRatings(a, &duty_cycle, &crank_bearing, &pins,
+                                     " (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0"
+                                     "; each line one LTCA cycle at its torque");
     a->Visit("output_mechanism", &output_mechanism,
              Field().Desc("rigid output pins in the disc's holes (docs/life.md, Cycloid): pin circle radius (inside "
                           "the disc's root radius) and pin count (absent: the continuous limit)"));

@@ -2,23 +2,24 @@
 // type and the schemas of the bearing-life blocks.
 #include "studies/cycloid_input.h"
 
-#include <tuple>
-
 namespace camopt::studies::cycloid_common {
 
 using ojson = nlohmann::ordered_json;
 
-namespace {
-ojson CrowningRules(bool with_required) {
-  // type → (the fields it requires, the fields it refuses)
-  const std::vector<std::tuple<const char*, std::vector<const char*>, std::vector<const char*>>> types = {
+const std::vector<CrowningTypeFields>& CrowningTypes() {
+  static const std::vector<CrowningTypeFields> types = {
       {"none", {}, {"radius_mm", "flat_length_mm", "coefficient_mm", "effective_length_mm", "end_drop_mm"}},
       {"full", {"radius_mm"}, {"flat_length_mm", "coefficient_mm", "effective_length_mm", "end_drop_mm"}},
       {"partial", {"radius_mm", "flat_length_mm"}, {"coefficient_mm", "effective_length_mm", "end_drop_mm"}},
       {"logarithmic", {"coefficient_mm"}, {"radius_mm"}},
   };
+  return types;
+}
+
+namespace {
+ojson CrowningRules(bool with_required) {
   ojson all = ojson::array();
-  for (const auto& [type, required, refused] : types) {
+  for (const auto& [type, required, refused] : CrowningTypes()) {
     ojson then = ojson::object();
     if (with_required && !required.empty()) then["required"] = required;
     for (const char* f : refused) then["properties"][f] = false;

@@ -81,6 +81,14 @@ struct CrowningInput {
   static nlohmann::ordered_json SchemaRules();
 };
 
+/// Each crowning type with the fields it requires and the fields it refuses (the one table behind
+/// the crowning blocks' rules and the sizing kinds' rules on crowning variables).
+struct CrowningTypeFields {
+  const char* type;
+  std::vector<const char*> required, refused;
+};
+const std::vector<CrowningTypeFields>& CrowningTypes();
+
 /// "crowning" of a study that tunes or sizes some of its fields (cycloid_min_size,
 /// cycloid_crowning_tuning): the same fields, none required here (a field the study varies is left
 /// out; the kind's rules say which it needs).
@@ -115,5 +123,24 @@ nlohmann::ordered_json DutyCycleSchema();
 nlohmann::ordered_json CrankBearingSchema();
 /// The schema of "pins" (the ring pins' ratings, ParseBearingRating).
 nlohmann::ordered_json PinRatingSchema();
+
+/// The bearing-life blocks every cycloid kind takes (docs/life.md, Cycloid): "duty_cycle" (its
+/// description ends with `each_line`, what one line runs), "crank_bearing" and "pins" (kept as JSON,
+/// read by ParseLife against their schemas).
+template <typename Archive>
+void VisitLifeRatings(Archive* a, nlohmann::json* duty_cycle, nlohmann::json* crank_bearing, nlohmann::json* pins,
+                      const std::string& each_line) {
+  a->Visit("duty_cycle", duty_cycle,
+           Field().Schema(DutyCycleSchema()).Desc(
+               "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
+               "disc's torque" + each_line));
+  a->Visit("crank_bearing", crank_bearing,
+           Field().Schema(CrankBearingSchema()).Desc(
+               "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
+  a->Visit("pins", pins,
+           Field().Schema(PinRatingSchema()).Desc(
+               "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
+               "p = 10/3 (docs/life.md, Cycloid)"));
+}
 
 }  // namespace camopt::studies::cycloid_common

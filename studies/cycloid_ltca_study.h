@@ -189,18 +189,9 @@ struct Input {
     a->Visit("geometry_files", &geometry_files,
              Field().Schema(GeometryFilesSchema(
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
-    a->Visit("duty_cycle", &duty_cycle,
-             Field().Schema(cycloid_common::DutyCycleSchema()).Desc(
-                 "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
-                 "disc's torque (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0; each "
-                 "line one LTCA cycle at its torque"));
-    a->Visit("crank_bearing", &crank_bearing,
-             Field().Schema(cycloid_common::CrankBearingSchema()).Desc(
-                 "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
-    a->Visit("pins", &pins,
-             Field().Schema(cycloid_common::PinRatingSchema()).Desc(
-                 "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
-                 "p = 10/3 (docs/life.md, Cycloid)"));
+    cycloid_common::VisitLifeRatings(a, &duty_cycle, &crank_bearing, &pins,
+                                     " (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0"
+                                     "; each line one LTCA cycle at its torque");
     a->Visit("output_mechanism", &output_mechanism,
              Field().Desc(
                  "output pins in the disc's holes: pin circle radius (inside the disc's root radius) and pin count "

@@ -75,21 +75,28 @@ struct Input {
   struct Variables {
     nlohmann::json eccentricity_mm, roller_position_radius_mm, roller_radius_mm, face_width_mm, delta_position_um,
         delta_radius_um, coefficient_mm, effective_length_mm, end_drop_mm, flat_length_mm, radius_mm;
+    /// Each sized field with the block that holds it when fixed ("drive", "modification",
+    /// "crowning"), in the order of the members above.
+    static constexpr std::array<std::pair<const char*, const char*>, 11> kSized = {{
+        {"drive", "eccentricity_mm"},
+        {"drive", "roller_position_radius_mm"},
+        {"drive", "roller_radius_mm"},
+        {"drive", "face_width_mm"},
+        {"modification", "delta_position_um"},
+        {"modification", "delta_radius_um"},
+        {"crowning", "coefficient_mm"},
+        {"crowning", "effective_length_mm"},
+        {"crowning", "end_drop_mm"},
+        {"crowning", "flat_length_mm"},
+        {"crowning", "radius_mm"}}};
     template <typename Archive>
     void Serialize(Archive* a) {
-      for (auto& [name, member] : std::array<std::pair<const char*, nlohmann::json*>, 11>{{
-               {"eccentricity_mm", &eccentricity_mm},
-               {"roller_position_radius_mm", &roller_position_radius_mm},
-               {"roller_radius_mm", &roller_radius_mm},
-               {"face_width_mm", &face_width_mm},
-               {"delta_position_um", &delta_position_um},
-               {"delta_radius_um", &delta_radius_um},
-               {"coefficient_mm", &coefficient_mm},
-               {"effective_length_mm", &effective_length_mm},
-               {"end_drop_mm", &end_drop_mm},
-               {"flat_length_mm", &flat_length_mm},
-               {"radius_mm", &radius_mm}}})
-        a->Visit(name, member, Field().Schema(VariableSchema(name)));
+      nlohmann::json* members[kSized.size()] = {&eccentricity_mm,  &roller_position_radius_mm, &roller_radius_mm,
+                                                &face_width_mm,    &delta_position_um,         &delta_radius_um,
+                                                &coefficient_mm,   &effective_length_mm,       &end_drop_mm,
+                                                &flat_length_mm,   &radius_mm};
+      for (size_t i = 0; i < kSized.size(); ++i)
+        a->Visit(kSized[i].second, members[i], Field().Schema(VariableSchema(kSized[i].second)));
     }
     static nlohmann::ordered_json SchemaRules() { return {{"minProperties", 1}}; }
     /// The schema of one sized field (with its description).
@@ -219,18 +226,9 @@ struct Input {
     a->Visit("analysis", &analysis, Field().Desc("the fast model's contact grid, crank angles and tolerance"));
     a->Visit("optimizer", &optimizer, Field().Desc("the solver, its starts and budget, the verification"));
     a->Visit("load", &load, Field().Desc("the input speed, for the bearing lives"));
-    a->Visit("duty_cycle", &duty_cycle,
-             Field().Schema(cycloid_common::DutyCycleSchema()).Desc(
-                 "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
-                 "disc's torque; the time shares sum to 1 within 1e-6, at least one speed > 0; each line one cycle "
-                 "of the sizing at its torque"));
-    a->Visit("crank_bearing", &crank_bearing,
-             Field().Schema(cycloid_common::CrankBearingSchema()).Desc(
-                 "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
-    a->Visit("pins", &pins,
-             Field().Schema(cycloid_common::PinRatingSchema()).Desc(
-                 "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
-                 "p = 10/3 (docs/life.md, Cycloid)"));
+    cycloid_common::VisitLifeRatings(a, &duty_cycle, &crank_bearing, &pins,
+                                     "; the time shares sum to 1 within 1e-6, at least one speed > 0"
+                                     "; each line one cycle of the sizing at its torque");
     a->Visit("output_mechanism", &output_mechanism,
              Field().Desc("rigid output pins in the disc's holes (docs/life.md, Cycloid): pin circle radius (inside "
                           "the disc's root radius) and pin count (absent: the continuous limit)"));
