@@ -637,24 +637,52 @@ nlohmann::ordered_json Input::SchemaRules() {
   // bearing and the output mechanism, one speed form, and limits.life_h a speed; min_edge_margin_um
   // needs the overload torque.
   using oj = nlohmann::ordered_json;
-  auto requires_in = [](const std::string& block, const std::string& field) {
-    return oj{{"properties", {{block, {{"required", oj::array({field})}}}}}};
+  auto required = [](std::vector<std::string> keys) {
+    oj r = oj::object();
+    r["required"] = keys;
+    return r;
   };
-  auto has_type = [](const oj& types) {
-    return oj{{"required", oj::array({"crowning"})}, {"properties", {{"crowning", {{"properties", {{"type", {{"enum", types}}}}}}}}}}};
+  auto in = [](const std::string& block, oj rule) {  // {"properties": {block: rule}}
+    oj r = oj::object();
+    r["properties"][block] = std::move(rule);
+    return r;
   };
-  const oj speed = oj::array({{{"required", oj::array({"duty_cycle"})}},
-                              {{"required", oj::array({"load"})}, {"properties", {{"load", {{"required", oj::array({"input_speed_rpm"})}}}}}}}});
+  auto given = [&](const std::string& block, const std::string& field) {  // block present with field
+    oj r = required({block});
+    r["properties"][block] = required({field});
+    return r;
+  };
+  auto when = [](oj condition, oj then) {
+    oj r = oj::object();
+    r["if"] = std::move(condition);
+    r["then"] = std::move(then);
+    return r;
+  };
+  auto any_of = [](oj alternatives) {
+    oj r = oj::object();
+    r["anyOf"] = std::move(alternatives);
+    return r;
+  };
+  auto negated = [](oj rule) {
+    oj r = oj::object();
+    r["not"] = std::move(rule);
+    return r;
+  };
+  auto crowning_type = [&](const std::vector<std::string>& types) {
+    oj type = oj::object();
+    type["properties"]["type"]["enum"] = types;
+    oj r = required({"crowning"});
+    r["properties"]["crowning"] = type;
+    return r;
+  };
+  const oj speed = oj::array({required({"duty_cycle"}), given("load", "input_speed_rpm")});
   oj all = oj::array();
-  all.push_back({{"if", {{"required", oj::array({"limits"})}, {"properties", {{"limits", {{"required", oj::array({"min_edge_margin_um"})}}}}}}},
-                 {"then", {{"properties", {{"target", {{"required", oj::array({"overload_torque_Nm"})}}}}}}}});
+  all.push_back(when(given("limits", "min_edge_margin_um"), in("target", required({"overload_torque_Nm"}))));
   for (const auto& [block, field] : Variables::kSized)
-    all.push_back({{"if", requires_in("variables", field)},
-                   {"then", {{"properties", {{block, {{"not", {{"required", oj::array({field})}}}}}}}}}}});
+    all.push_back(when(in("variables", required({field})), in(block, negated(required({field})))));
   for (const auto& [block, field] : Variables::kSized)
     if (std::string(block) == "drive")
-      all.push_back({{"anyOf", oj::array({requires_in("variables", field),
-                                          {{"required", oj::array({"drive"})}, {"properties", {{"drive", {{"required", oj::array({field})}}}}}}})}});
+      all.push_back(any_of(oj::array({in("variables", required({field})), given("drive", field)})));
   for (const auto& [block, field] : Variables::kSized) {
     if (std::string(block) != "crowning") continue;
     std::vector<std::string> types;  // the crowning types that have the field, sorted
@@ -663,18 +691,18 @@ nlohmann::ordered_json Input::SchemaRules() {
           std::none_of(t.refused.begin(), t.refused.end(), [&](const char* r) { return std::string(r) == field; }))
         types.push_back(t.type);
     std::sort(types.begin(), types.end());
-    all.push_back({{"if", requires_in("variables", field)}, {"then", has_type(oj(types))}});
+    all.push_back(when(in("variables", required({field})), crowning_type(types)));
   }
   for (const auto& t : cycloid_common::CrowningTypes())
     for (const char* field : t.required)
-      all.push_back({{"if", has_type(oj::array({t.type}))},
-                     {"then", {{"anyOf", oj::array({requires_in("crowning", field), requires_in("variables", field)})}}}});
-  all.push_back({{"if", {{"anyOf", speed}}}, {"then", {{"required", oj::array({"crank_bearing", "output_mechanism"})}}}});
-  all.push_back({{"if", {{"required", oj::array({"duty_cycle"})}}},
-                 {"then", {{"properties", {{"load", {{"not", {{"required", oj::array({"input_speed_rpm"})}}}}}}}}}});
-  all.push_back({{"if", {{"required", oj::array({"limits"})}, {"properties", {{"limits", {{"required", oj::array({"life_h"})}}}}}}},
-                 {"then", {{"anyOf", speed}}}});
-  return {{"allOf", all}};
+      all.push_back(when(crowning_type({t.type}),
+                         any_of(oj::array({in("crowning", required({field})), in("variables", required({field}))}))));
+  all.push_back(when(any_of(speed), required({"crank_bearing", "output_mechanism"})));
+  all.push_back(when(required({"duty_cycle"}), in("load", negated(required({"input_speed_rpm"})))));
+  all.push_back(when(given("limits", "life_h"), any_of(speed)));
+  oj rules = oj::object();
+  rules["allOf"] = all;
+  return rules;
 }
 
 Result Run(const Study& s, const RunContext& ctx) {
