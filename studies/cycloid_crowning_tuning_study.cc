@@ -881,6 +881,8 @@ CAMOPT_REGISTER_REPORT("cycloid_crowning_tuning", {
      "study:/tuning/edge_margin_um", 0.0, false},
     {"edge margin at the maximum torque, paper's coefficient", "/reference_edge_margin_at_max_torque_um", "um",
      "study:/tuning/edge_margin_um", 0.0, false},
+    {"smallest unloaded transmission error (backlash), tuned", "/tuned_min_unloaded_te_arcsec", "arcsec",
+     "/min_unloaded_te_arcsec", NAN, false},
     {"shortest bearing life L10h, tuned design", "/life/shortest_L10h", "h"},
     {"status", "/status", ""},
 });
