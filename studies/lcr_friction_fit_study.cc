@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/math/special_functions/gamma.hpp>
+
 #include "model/lcr/cycle.h"
 #include "model/lcr/kinematics.h"
 #include "objectives/problem.h"
@@ -53,6 +55,7 @@ Study Parse(const Node& root) {
   for (const Input::Measurement& m : in.measurements)
     st.measurements.push_back({m.output_torque_Nm, m.input_torque_Nm, m.input_torque_sd_Nm});
   st.angle_steps = in.analysis.angle_steps;
+  st.min_p_value = in.limits.chi_square_p_value;
   st.friction_coefficient = ToParameter(in.parameters.friction_coefficient, lcr::kPaperFrictionCoefficient, root,
                                         "friction_coefficient");
   st.drag_torque_Nm = ToParameter(in.parameters.drag_torque_Nm, 0.0, root, "drag_torque_Nm");
@@ -173,6 +176,10 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   j["chi_square"] = res.chi_square;
   j["degrees_of_freedom"] = dof;
   j["reduced_chi_square"] = dof > 0 ? nlohmann::json(res.chi_square / dof) : nlohmann::json(nullptr);
+  // The chi-square test: P(χ²(dof) ≥ χ²) = Q(dof/2, χ²/2), the regularized upper incomplete gamma.
+  j["chi_square_p_value"] =
+      dof > 0 ? nlohmann::json(boost::math::gamma_q(0.5 * dof, 0.5 * res.chi_square)) : nlohmann::json(nullptr);
+  j["chi_square_p_value_limit"] = st.min_p_value;
   nlohmann::json rows = nlohmann::json::array();
   for (size_t i = 0; i < res.rows.size(); ++i) {
     const Row& row = res.rows[i];
@@ -255,6 +262,8 @@ CAMOPT_REGISTER_REPORT("lcr_friction_fit", {
      "/parameters/friction_coefficient/standard_error"},
     {"no-load drag torque", "/parameters/drag_torque_Nm/value", "N·m", "", NAN, true,
      "/parameters/drag_torque_Nm/standard_error"},
+    {"chi-square test p-value (the model within the measurements' standard deviations)", "/chi_square_p_value", "",
+     "/chi_square_p_value_limit", NAN, false},
     {"reduced chi-square", "/reduced_chi_square", ""},
     {"degrees of freedom", "/degrees_of_freedom", ""},
     {"solver status", "/status", ""},

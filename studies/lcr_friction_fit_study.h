@@ -73,6 +73,19 @@ struct Input {
     }
   };
 
+  /// The fit's verdict: the χ² goodness-of-fit test (the measurements' standard deviations as the
+  /// weights; χ² ~ χ²(m − 2) when the model is right).
+  struct Limits {
+    double chi_square_p_value = 0.05;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("chi_square_p_value", &chi_square_p_value,
+               Field().Above(0.0, "a number in (0, 1)").Below(1.0, "a number in (0, 1)").Desc(
+                   "the smallest p-value of the chi-square test that passes: the probability, were the model right, "
+                   "of a chi-square at least the fit's (docs/optimization.md, friction fit)"));
+    }
+  };
+
   std::string study = "lcr_friction_fit", name;
   std::optional<std::string> description;
   LcrReducerInput reducer;
@@ -80,6 +93,7 @@ struct Input {
   std::vector<Measurement> measurements;
   Parameters parameters;
   Analysis analysis;
+  Limits limits;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -93,6 +107,7 @@ struct Input {
                  .Desc("measured input torques under load"));
     a->Visit("parameters", &parameters, Field().Desc("the fitted parameters' starts and bounds"));
     a->Visit("analysis", &analysis, Field().Desc("the torque model's grid"));
+    a->Visit("limits", &limits, Field().Desc("the fit's verdict"));
   }
 };
 
@@ -104,6 +119,7 @@ struct Study {
   std::vector<Measurement> measurements;  ///< at least 3
   int angle_steps = 3600;
   Parameter friction_coefficient, drag_torque_Nm;  ///< Input::Parameters' defaults
+  double min_p_value = 0.05;                       ///< limits.chi_square_p_value
 };
 
 /// The fitted model at one measurement.

@@ -10,6 +10,7 @@
 #include "model/lcr/friction.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_friction_fit_study.h"
+#include "studies/report.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -114,6 +115,31 @@ TEST(LcrFrictionFit, Table4FitAndItsCovariance) {
     ASSERT_TRUE(res.rows[i].fitted_input_torque_sd_Nm.has_value());
     EXPECT_NEAR(*res.rows[i].fitted_input_torque_sd_Nm, std::sqrt(var), 1e-6 * std::sqrt(var));
   }
+}
+
+// The fit's verdict, the chi-square test: with 3 measurements and 2 parameters (one degree of
+// freedom) the p-value is P(χ²(1) ≥ χ²) = erfc(√(χ²/2)) in closed form; the example passes the
+// default 0.05, and a study asking for a p-value above the fit's fails.
+TEST(LcrFrictionFit, ChiSquareTestIsTheVerdict) {
+  json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
+  ASSERT_EQ(study["measurements"].size(), 3u);
+  const studies::Node root(&study, "fit.json", "");
+  const fit::Study st = fit::Parse(root);
+  const json j = fit::ToJson(st, fit::Run(st, {"fit.json", true}));
+  ASSERT_EQ(j["degrees_of_freedom"], 1);
+  const double chi2 = j["chi_square"].get<double>(), p = j["chi_square_p_value"].get<double>();
+  EXPECT_NEAR(p, std::erfc(std::sqrt(chi2 / 2)), 1e-12);
+  EXPECT_EQ(j["chi_square_p_value_limit"], 0.05);
+  studies::HeadlineTable t = studies::EvaluateHeadlines("lcr_friction_fit", study, j);
+  EXPECT_EQ(t.limits, 1);
+  EXPECT_EQ(t.exceeded.empty(), p >= 0.05) << "p = " << p;
+  study["limits"] = {{"chi_square_p_value", std::min(0.999, 2 * p)}};
+  const fit::Study strict = fit::Parse(studies::Node(&study, "fit.json", ""));
+  const json js = fit::ToJson(strict, fit::Run(strict, {"fit.json", true}));
+  t = studies::EvaluateHeadlines("lcr_friction_fit", study, js);
+  ASSERT_EQ(t.exceeded.size(), 1u);
+  study["limits"] = {{"chi_square_p_value", 1.0}};
+  camopt::testing::ExpectStudyRejected(study, "friction-p", "/limits/chi_square_p_value", "a number in (0, 1)");
 }
 
 // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run); fit.csv has a
