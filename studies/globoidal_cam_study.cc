@@ -93,7 +93,8 @@ std::string SpeedTag(double rpm) { return Format(rpm) + "rpm"; }
 nlohmann::ordered_json Input::MotionSchema() {
   nlohmann::ordered_json laws = nlohmann::ordered_json::array();
   for (const std::string& law : motion::LawNames())
-    if (law != motion::LawName(motion::MotionLaw::kPolynomial)) laws.push_back(law);
+    if (law != motion::LawName(motion::MotionLaw::kPolynomial) && law != motion::LawName(motion::MotionLaw::kBSpline))
+      laws.push_back(law);
   return {{"type", "array"},
           {"minItems", 1},
           {"items",

@@ -20,6 +20,15 @@ std::array<std::string, 4> BoundaryKeys(const std::string& unit) {
           "jerk_" + unit + "_per_deg3"};
 }
 
+// Laws whose shape the segment carries (polynomial boundary values, B-spline control points): only
+// where a kind allows them (MotionInputSpec::allow_polynomial).
+bool Shaped(const std::string& law) {
+  return law == motion::LawName(motion::MotionLaw::kPolynomial) || law == motion::LawName(motion::MotionLaw::kBSpline);
+}
+
+// The highest B-spline degree a study may ask for, and the default (lower when fewer points).
+constexpr int kMaxSplineDegree = 7, kDefaultSplineDegree = 5;
+
 // A polynomial segment's boundary as given in the file (file units), with its nodes for messages.
 struct GivenEnd {
   std::vector<double> values;  // position, velocity, … as given
@@ -33,20 +42,47 @@ motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
   if (!spec.misplaced_key.empty()) known.insert(spec.misplaced_key);
   std::string laws;
   for (const auto& n : motion::LawNames())
-    if (spec.allow_polynomial || n != motion::LawName(motion::MotionLaw::kPolynomial))
-      laws += (laws.empty() ? "" : ", ") + n;
+    if (spec.allow_polynomial || !Shaped(n)) laws += (laws.empty() ? "" : ", ") + n;
   const std::array<std::string, 4> keys = BoundaryKeys(spec.unit);
   // Model units per file unit of position, velocity, acceleration, jerk (per degree → per rad).
   const double scale[4] = {spec.rise_scale, spec.rise_scale / kDeg, spec.rise_scale / (kDeg * kDeg),
                            spec.rise_scale / (kDeg * kDeg * kDeg)};
   std::vector<motion::MotionSegment<double>> segments;
   std::vector<std::optional<std::pair<GivenEnd, GivenEnd>>> given;  // polynomial segments
+  std::vector<std::optional<std::pair<Node, double>>> spline_start;  // B-splines: first point (file unit)
   const std::vector<Node> elements = motion_node.Elements();
   for (const Node& seg : elements) {
-    const auto law = motion::LawFromName(seg["law"].String());
-    if (!law || (*law == motion::MotionLaw::kPolynomial && !spec.allow_polynomial))
-      seg["law"].Fail("a motion law (" + laws + ")");
+    const std::string law_name = seg["law"].String();
+    const auto law = motion::LawFromName(law_name);
+    if (!law || (Shaped(law_name) && !spec.allow_polynomial)) seg["law"].Fail("a motion law (" + laws + ")");
     const double duration = seg["cam_angle_deg"].Positive() * kDeg;
+    spline_start.push_back(std::nullopt);
+    if (*law == motion::MotionLaw::kBSpline) {
+      const std::string points_key = "control_points_" + spec.unit;
+      for (const std::string& k : {spec.rise_key, spec.misplaced_key})
+        if (!k.empty() && seg.Has(k))
+          seg[k].FailWith("a B-spline segment's rise is its last control point minus its first: remove " + k);
+      seg.CheckKnownFields({"law", "cam_angle_deg", points_key, "degree"});
+      const Node points = seg[points_key];
+      std::vector<double> control;
+      for (const Node& point : points.Elements()) control.push_back(point.Number() * scale[0]);
+      if (control.size() < 2) points.Fail("an array of at least 2 control points");
+      const int most = std::min(kMaxSplineDegree, int(control.size()) - 1);
+      int degree = std::min(kDefaultSplineDegree, most);
+      if (seg.Has("degree")) {
+        degree = seg["degree"].Integer(1);
+        if (degree > kMaxSplineDegree) seg["degree"].Fail("an integer in [1, " + std::to_string(kMaxSplineDegree) + "]");
+        if (degree > most)
+          seg["degree"].FailWith("a B-spline of degree " + std::to_string(degree) + " needs at least " +
+                                 std::to_string(degree + 1) + " control points, found " +
+                                 std::to_string(control.size()) + ": add points or use a degree of at most " +
+                                 std::to_string(most));
+      }
+      spline_start.back() = std::pair{points[0], control.front() / scale[0]};
+      segments.push_back(motion::BSplineThrough(control, degree, duration));
+      given.push_back(std::nullopt);
+      continue;
+    }
     if (*law == motion::MotionLaw::kPolynomial) {
       std::set<std::string> poly_known = {"law", "cam_angle_deg", "boundary"};
       for (const std::string& k : {spec.rise_key, spec.misplaced_key})
@@ -105,6 +141,12 @@ motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
   auto agree = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); };
   double s_start = 0.0;  // model units
   for (size_t i = 0; i < n; ++i) {
+    if (spline_start[i] && !agree(s_start / scale[0], spline_start[i]->second))
+      spline_start[i]->first.FailWith(
+          "the motion is not continuous: " +
+          (i == 0 ? std::string("the cycle starts on the base circle") : "segment " + std::to_string(i - 1) + " ends") +
+          " with position " + Format(s_start / scale[0], 12) + " " + spec.unit + ", this control point gives " +
+          Format(spline_start[i]->second, 12) + " " + spec.unit);
     if (given[i]) {
       for (int e = 0; e < 2; ++e) {
         const GivenEnd& g = e == 0 ? given[i]->first : given[i]->second;
@@ -148,10 +190,9 @@ nlohmann::ordered_json MotionSchema(const std::vector<MotionInputSpec>& specs,
   const bool polynomial = specs.front().allow_polynomial;
   oj laws = oj::array(), moving = oj::array();
   for (const std::string& law : motion::LawNames()) {
-    if (!polynomial && law == motion::LawName(motion::MotionLaw::kPolynomial)) continue;
+    if (!polynomial && Shaped(law)) continue;
     laws.push_back(law);
-    if (law != motion::LawName(motion::MotionLaw::kPolynomial) && law != motion::LawName(motion::MotionLaw::kDwell))
-      moving.push_back(law);
+    if (!Shaped(law) && law != motion::LawName(motion::MotionLaw::kDwell)) moving.push_back(law);
   }
   oj props = oj::object();
   props["law"] = {{"description", "the motion law of the segment"}, {"enum", laws}};
@@ -188,6 +229,20 @@ nlohmann::ordered_json MotionSchema(const std::vector<MotionInputSpec>& specs,
                          {"additionalProperties", false}};
     props["boundary"]["properties"]["start"]["description"] = "the segment's start";
     props["boundary"]["properties"]["end"]["description"] = "the segment's end";
+    for (const MotionInputSpec& spec : specs)
+      props["control_points_" + spec.unit] = {
+          {"type", "array"},
+          {"items", {{"type", "number"}}},
+          {"minItems", 2},
+          {"description", "law bspline only: the " + spec.subject + "'s B-spline control points [" + spec.unit +
+                              "] (absolute; the first is where the segment starts, the last where it ends; "
+                              "repeat the first or last k + 1 for k zero derivatives there; docs/disc_cam.md "
+                              "'B-spline segments')"}};
+    props["degree"] = {{"type", "integer"},
+                       {"minimum", 1},
+                       {"maximum", kMaxSplineDegree},
+                       {"description", "law bspline only: the B-spline's degree, at most the control points less 1 "
+                                       "(absent: 5, or that when fewer points)"}};
   }
   items["properties"] = props;
   items["required"] = {"law", "cam_angle_deg"};
@@ -200,16 +255,28 @@ nlohmann::ordered_json MotionSchema(const std::vector<MotionInputSpec>& specs,
     items["then"] = {{"required", {"boundary"}},
                      {"not", rise_given.size() == 1 ? rise_given[0] : oj{{"anyOf", rise_given}}}};
     items["else"] = {{"not", {{"required", {"boundary"}}}}};
+    // A B-spline segment: its control points, no rise; other laws take neither points nor degree.
+    oj points_given = oj::array();
+    for (const MotionInputSpec& spec : specs) points_given.push_back({{"required", {"control_points_" + spec.unit}}});
+    const oj any_points = points_given.size() == 1 ? points_given[0] : oj{{"anyOf", points_given}};
+    oj spline = {{"if", {{"properties", {{"law", {{"const", motion::LawName(motion::MotionLaw::kBSpline)}}}}},
+                         {"required", {"law"}}}},
+                 {"then", {{"allOf", oj::array({any_points, {{"not", rise_given.size() == 1 ? rise_given[0]
+                                                                                            : oj{{"anyOf", rise_given}}}}})}}},
+                 {"else", {{"not", {{"anyOf", oj::array({any_points, {{"required", {"degree"}}}})}}}}}};
+    items["allOf"] = oj::array({spline});
   }
   if (rise_rules) {
     const std::string& key = specs.front().rise_key;
-    items["allOf"] = {
+    if (!items.contains("allOf")) items["allOf"] = oj::array();
+    for (oj rule : oj::array({
         {{"$comment", "a moving law has a non-zero rise"},
          {"if", {{"properties", {{"law", {{"enum", moving}}}}}, {"required", {"law"}}}},
          {"then", {{"required", {key}}, {"properties", {{key, {{"not", {{"const", 0}}}}}}}}}},
         {{"$comment", "a dwell has no rise (0 when given)"},
          {"if", {{"properties", {{"law", {{"const", motion::LawName(motion::MotionLaw::kDwell)}}}}}, {"required", {"law"}}}},
-         {"then", {{"properties", {{key, {{"const", 0}}}}}}}}};
+         {"then", {{"properties", {{key, {{"const", 0}}}}}}}}}))
+      items["allOf"].push_back(rule);
   }
   return {{"type", "array"}, {"minItems", 1}, {"items", items}};
 }

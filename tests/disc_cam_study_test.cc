@@ -416,6 +416,37 @@ TEST(DiscCamStudy, PolynomialSegmentsWriteDwellConstantVelocityDwell) {
   for (const auto& j : ran.result.joints) EXPECT_GE(j.order, 2) << "joint after segment " << j.segment;
 }
 
+// A B-spline segment in a study file (studies/examples/disc_cam_bspline.json): the rise starts
+// and ends at its first and last control points with zero velocity and acceleration (three repeated
+// at each end), so the joints with the dwells are C² at least; halfway it is at 10 mm exactly, since
+// the control values 0,0,0,5,15,20,20,20 are antisymmetric about 10 and the knots symmetric about
+// u = 1/2.
+TEST(DiscCamStudy, BSplineSegmentsInAStudy) {
+  const Ran ran = ParseAndRun(Example("disc_cam_bspline.json"));
+  const auto& t = ran.result.series;
+  EXPECT_NEAR(t.follower[IndexAt(t.cam_angle_deg, 0.0)], 0.0, 1e-12);
+  EXPECT_NEAR(t.follower[IndexAt(t.cam_angle_deg, 120.0)], 20.0, 1e-12);
+  EXPECT_NEAR(t.velocity_per_rad[IndexAt(t.cam_angle_deg, 120.0)], 0.0, 1e-9);
+  for (const auto& j : ran.result.joints) EXPECT_GE(j.order, 2) << "joint after segment " << j.segment;
+  EXPECT_NEAR(t.follower[IndexAt(t.cam_angle_deg, 60.0)], 10.0, 1e-12);
+  // A first point that does not continue the program, a degree above the points, a rise given.
+  json s = Example("disc_cam_bspline.json");
+  s["motion"][0]["control_points_mm"][0] = 1;
+  camopt::testing::ExpectStudyRejected(s, "bspline-start", "/motion/0/control_points_mm/0",
+                                       "the cycle starts on the base circle with position 0 mm, this control point gives 1 mm");
+  s = Example("disc_cam_bspline.json");
+  s["motion"][0]["control_points_mm"] = {0, 0, 0, 10, 20, 20};
+  s["motion"][0]["degree"] = 6;
+  camopt::testing::ExpectStudyRejected(s, "bspline-degree", "/motion/0/degree", "needs at least 7 control points, found 6");
+  s = Example("disc_cam_bspline.json");
+  s["motion"][0]["rise_mm"] = 20;
+  camopt::testing::ExpectStudyRejected(s, "bspline-rise", "/motion/0/rise_mm", "last control point minus its first");
+  // Another kind with a motion program (globoidal_cam) does not take B-spline segments.
+  json g = Example("globoidal_cam_paper.json");
+  g["motion"][0]["law"] = "bspline";
+  camopt::testing::ExpectStudyRejected(g, "globoidal-bspline", "/motion/0/law", "a motion law (dwell");
+}
+
 // A polynomial boundary value that does not continue the program is refused with its JSON path
 // and both values; so are a rise on a polynomial, a jerk without acceleration, a missing velocity.
 TEST(DiscCamStudy, PolynomialDiscontinuitiesAreRejectedWithBothValues) {

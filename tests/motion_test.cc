@@ -320,5 +320,74 @@ TEST(MotionPolynomial, EveryDegreeReproducesItsBoundaryValues) {
   EXPECT_FALSE(CheckProgram(MotionProgram<double>({back, rest}), 2 * kPi, true).has_value());
 }
 
+// B-spline segments (de Boor, A Practical Guide to Splines): with as many control values as the
+// degree + 1 (no interior knot) the clamped B-spline is the Bézier curve, Σ C(p,i) uᶦ(1−u)ᵖ⁻ⁱ cᵢ,
+// written out here with its derivatives from the Bernstein form's difference rule.
+TEST(MotionBSpline, WithoutInteriorKnotsItIsTheBezierCurve) {
+  const std::vector<double> c = {0.0, 1.0, 4.0, -2.0, 7.0, 10.0};  // degree 5
+  const int p = 5;
+  const MotionSegment<double> seg = BSplineThrough(c, p, 2.0);
+  EXPECT_EQ(seg.rise, 10.0);
+  auto binom = [](int n, int k) {
+    double r = 1;
+    for (int j = 1; j <= k; ++j) r = r * (n - k + j) / j;
+    return r;
+  };
+  // The r-th derivative of a Bézier curve of degree p: p!/(p−r)! Σ Δʳcᵢ B_{i,p−r}(u).
+  auto bezier = [&](std::vector<double> d, int r, double u) {
+    double scale = 1;
+    for (int k = 0; k < r; ++k) {
+      for (size_t i = 0; i + 1 < d.size(); ++i) d[i] = d[i + 1] - d[i];
+      d.pop_back();
+      scale *= p - k;
+    }
+    const int q = p - r;
+    double sum = 0;
+    for (int i = 0; i <= q; ++i) sum += binom(q, i) * std::pow(u, i) * std::pow(1 - u, q - i) * d[size_t(i)];
+    return scale * sum;
+  };
+  for (double u : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+    const Svaj<double> q = MotionSegmentShape(seg, u);
+    EXPECT_NEAR(q.s, bezier(c, 0, u), 1e-12) << u;
+    EXPECT_NEAR(q.v, bezier(c, 1, u), 1e-11) << u;
+    EXPECT_NEAR(q.a, bezier(c, 2, u), 1e-10) << u;
+    EXPECT_NEAR(q.j, bezier(c, 3, u), 1e-9) << u;
+  }
+}
+
+// Degree 1 on uniform knots interpolates its control values at the knots i/n; a general one
+// (8 values, degree 5: two interior knots) starts and ends at its first and last values, tangent to
+// the control polygon (S'(0) = p (c₁ − c₀)/t_{p+1}, t_{p+1} = 1/(n − p + 1)), its derivatives
+// agree with central differences of the one below across the interior knots, and three repeated
+// values at each end make S' and S'' zero there (the dwell-to-dwell rise a designer draws).
+TEST(MotionBSpline, InterpolationTangencyAndDerivatives) {
+  const std::vector<double> lin = {0.0, 2.0, 3.0, 7.0, 5.0};
+  const MotionSegment<double> l = BSplineThrough(lin, 1, 1.0);
+  for (size_t i = 0; i < lin.size(); ++i)
+    EXPECT_NEAR(MotionSegmentShape(l, double(i) / 4.0).s, lin[i], 1e-12) << i;
+  const std::vector<double> c = {0.0, 0.0, 0.0, 5.0, 15.0, 20.0, 20.0, 20.0};
+  const int p = 5, n = 7;
+  const MotionSegment<double> seg = BSplineThrough(c, p, 1.0);
+  const Svaj<double> start = MotionSegmentShape(seg, 0.0), end = MotionSegmentShape(seg, 1.0);
+  EXPECT_NEAR(start.s, 0.0, 1e-12);
+  EXPECT_NEAR(end.s, 20.0, 1e-12);
+  for (const Svaj<double>& q : {start, end}) {
+    EXPECT_NEAR(q.v, 0.0, 1e-10);
+    EXPECT_NEAR(q.a, 0.0, 1e-9);
+  }
+  const std::vector<double> tilted = {0.0, 1.0, 0.0, 5.0, 15.0, 20.0, 20.0, 20.0};
+  EXPECT_NEAR(MotionSegmentShape(BSplineThrough(tilted, p, 1.0), 0.0).v, p * 1.0 * (n - p + 1), 1e-10);
+  const double h = 1e-5;
+  for (double u : {0.05, 1.0 / 3.0, 0.4, 2.0 / 3.0, 0.9}) {  // 1/3 and 2/3 are the interior knots
+    const Svaj<double> q = MotionSegmentShape(seg, u), lo = MotionSegmentShape(seg, u - h),
+                       hi = MotionSegmentShape(seg, u + h);
+    EXPECT_NEAR(q.v, (hi.s - lo.s) / (2 * h), 1e-6 * std::max(1.0, std::abs(q.v))) << u;
+    EXPECT_NEAR(q.a, (hi.v - lo.v) / (2 * h), 1e-5 * std::max(1.0, std::abs(q.a))) << u;
+    EXPECT_NEAR(q.j, (hi.a - lo.a) / (2 * h), 1e-4 * std::max(1.0, std::abs(q.j))) << u;
+  }
+  // A degree-5 spline is C⁴ across its simple interior knots: the jerk is continuous there.
+  EXPECT_NEAR(MotionSegmentShape(seg, 1.0 / 3.0 - 1e-9).j, MotionSegmentShape(seg, 1.0 / 3.0 + 1e-9).j, 1e-4);
+}
+
 }  // namespace
 }  // namespace camopt::motion

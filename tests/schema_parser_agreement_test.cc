@@ -405,6 +405,7 @@ struct CrossField {
   std::string kind, path, message, why;
 };
 const std::vector<CrossField> kCrossField = {
+    {"disc_cam", "/motion/0/control_points_mm", "needs at least", "a B-spline's degree below its number of control points"},
     {"globoidal_cam", "/contact/exponent", "static contact penetration",
      "the turret torque against the contact law's static penetration (exponent, stiffness, roller radius)"},
     {"cycloid_crowning_tuning", "/drive/", "teeth + 1", "rollers = teeth + 1 (one-tooth difference)"},
@@ -487,6 +488,7 @@ const std::vector<CrossField> kCrossField = {
 const std::vector<CrossField> kOpen = {
     {"disc_cam", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
     {"disc_cam", "/motion/0/boundary/", "unknown field", "polynomial boundary keys in mm or deg by follower type"},
+    {"disc_cam", "/motion/0/control_points_", "unknown field", "B-spline control points in mm or deg by follower type"},
     {"globoidal_cam", "/motion/0/", "rise", "rise_deg by law (dwell: none)"},
     {"cycloid_ltca", "/analysis/", "give one of", "one of crank_angles_per_mesh_period, crank_angle_steps, "
      "crank_angles_deg (studies/cycloid_ltca_study.cc is another engineer's)"},

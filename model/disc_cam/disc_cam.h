@@ -54,6 +54,7 @@ DiscCamTpl<To> CastCam(const DiscCamTpl<double>& cam) {
   for (const motion::MotionSegment<double>& s : cam.motion.segments()) {
     motion::MotionSegment<To> c(s.law, To(s.rise), To(s.duration));
     for (double k : s.coefficients) c.coefficients.push_back(To(k));
+    c.spline_degree = s.spline_degree;
     segments.push_back(std::move(c));
   }
   out.motion = motion::MotionProgram<To>(std::move(segments));

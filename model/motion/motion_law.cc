@@ -16,6 +16,7 @@ constexpr LawEntry kLaws[] = {
     {MotionLaw::kPolynomial345, "poly_345"},
     {MotionLaw::kPolynomial4567, "poly_4567"},
     {MotionLaw::kPolynomial, "polynomial"},
+    {MotionLaw::kBSpline, "bspline"},
 };
 }  // namespace
 

@@ -26,6 +26,9 @@ enum class MotionLaw {
   /// A polynomial through given boundary values (PolynomialThrough, motion_program.h); its shape
   /// is carried by the segment's coefficients, not by NormalizedLaw.
   kPolynomial,
+  /// A B-spline through control values (BSplineThrough, motion_program.h); its shape is carried
+  /// by the segment's coefficients and degree, not by NormalizedLaw.
+  kBSpline,
 };
 
 /// Displacement and its first three derivatives.
@@ -54,6 +57,7 @@ Svaj<T> NormalizedLaw(MotionLaw law, const T& u) {
   switch (law) {
     case MotionLaw::kDwell:
     case MotionLaw::kPolynomial:  // its shape is the segment's (MotionSegmentShape)
+    case MotionLaw::kBSpline:
       return {T(0.0), T(0.0), T(0.0), T(0.0)};
     case MotionLaw::kCycloidal: {
       // s = u − sin(2πu)/(2π): Cv = 2, Ca = 2π, Cj = 4π².

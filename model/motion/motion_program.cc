@@ -65,7 +65,8 @@ std::optional<ProgramIssue> CheckProgram(const MotionProgram<double>& program, d
     if (!std::isfinite(s.rise)) return ProgramIssue{idx, "rise", "expected a finite rise"};
     if (s.law == MotionLaw::kDwell && s.rise != 0.0)
       return ProgramIssue{idx, "rise", "a dwell has no rise"};
-    if (s.law != MotionLaw::kDwell && s.law != MotionLaw::kPolynomial && s.rise == 0.0)
+    if (s.law != MotionLaw::kDwell && s.law != MotionLaw::kPolynomial && s.law != MotionLaw::kBSpline &&
+        s.rise == 0.0)
       return ProgramIssue{idx, "rise", "a moving segment needs a non-zero rise (use a dwell)"};
     max_rise = std::max(max_rise, std::abs(s.rise));
   }

@@ -6,10 +6,19 @@
 //   (PolynomialThrough: position and velocity → degree 3, with acceleration → 5, with jerk → 7;
 //   Norton, Cam Design and Manufacturing Handbook §3.9–3.10, polynomial functions fitted to
 //   boundary conditions). Its rise is P(1).
+// A B-spline segment (law kBSpline) carries control values instead:
+//   S(θ) = S₀ + Σ_{i=0..n} N_{i,p}(u) c_i, c_0 = 0, rise c_n,
+// N_{i,p} the B-spline basis of degree p on the clamped knot vector with p + 1 zeros, p + 1 ones and
+// n − p uniform interior knots (de Boor, A Practical Guide to Splines, ch. IX–X): the curve starts
+// and ends at its first and last control values, tangent to the control polygon there, so that
+// repeating the first k + 1 values makes its first k derivatives zero at the start (likewise at the
+// end). A derivative is a B-spline of one degree less on the inner knots with the control values
+// p (c_{i+1} − c_i)/(t_{i+p+1} − t_{i+1}); each is evaluated by de Boor's algorithm.
 // The rise is in the follower's own unit (mm for a translating follower, rad for an oscillating
 // one or a globoidal turret); angles are in rad. Independent of any cam type.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -33,12 +42,80 @@ struct MotionSegment {
   /// kPolynomial only: c_1 … c_n of P(u) = Σ c_k u^k (follower unit); rise = P(1). (No default
   /// member initialiser: with one, g++ 12 fails on MotionSegment<ceres::Jet> in nothrow_spec_p.)
   std::vector<T> coefficients;
+  /// kBSpline only: the degree p (1 … 7); the coefficients are then the control values c_0 … c_n.
+  int spline_degree = 0;
 };
+
+namespace internal {
+/// de Boor's algorithm: the B-spline of degree q with control values c (m + 1 of them) on the knots
+/// t (m + q + 2 of them, clamped) at u ∈ [0, 1]; 0 for q < 0 (a derivative beyond the degree).
+template <typename T>
+T DeBoor(const std::vector<T>& c, const std::vector<double>& t, int q, const T& u) {
+  if (q < 0 || c.empty()) return T(0.0);
+  const int m = int(c.size()) - 1;
+  const double uv = std::clamp(Value(u), 0.0, 1.0);
+  int k = q;  // the knot span: t_k <= u < t_{k+1}, q <= k <= m
+  while (k < m && t[size_t(k + 1)] <= uv) ++k;
+  std::vector<T> d(size_t(q) + 1);
+  for (int j = 0; j <= q; ++j) d[size_t(j)] = c[size_t(j + k - q)];
+  for (int r = 1; r <= q; ++r)
+    for (int j = q; j >= r; --j) {
+      const double lo = t[size_t(j + k - q)], hi = t[size_t(j + 1 + k - r)];
+      const T alpha = (u - T(lo)) / T(hi - lo);
+      d[size_t(j)] = (T(1.0) - alpha) * d[size_t(j - 1)] + alpha * d[size_t(j)];
+    }
+  return d[size_t(q)];
+}
+
+/// The clamped knot vector of n + 1 control values and degree p on [0, 1] (uniform inside).
+inline std::vector<double> ClampedKnots(int n, int p) {
+  std::vector<double> t(size_t(n + p + 2));
+  for (int i = 0; i <= n + p + 1; ++i)
+    t[size_t(i)] = i <= p ? 0.0 : i > n ? 1.0 : double(i - p) / double(n - p + 1);
+  return t;
+}
+
+/// The value and the first three u-derivatives of a B-spline segment's shape.
+template <typename T>
+Svaj<T> BSplineShape(const std::vector<T>& control, int degree, const T& u) {
+  std::vector<T> c = control;
+  std::vector<double> t = ClampedKnots(int(control.size()) - 1, degree);
+  T out[4] = {T(0.0), T(0.0), T(0.0), T(0.0)};
+  for (int order = 0; order < 4; ++order) {
+    const int q = degree - order;
+    out[order] = DeBoor(c, t, q, u);
+    if (q <= 0) break;  // the higher derivatives are 0
+    // The derivative's control values, on the inner knots t_1 … t_{m+q}.
+    std::vector<T> dc(c.size() - 1);
+    for (size_t i = 0; i + 1 < c.size(); ++i)
+      dc[i] = T(double(q)) * (c[i + 1] - c[i]) / T(t[i + size_t(q) + 1] - t[i + 1]);
+    c = std::move(dc);
+    t = std::vector<double>(t.begin() + 1, t.end() - 1);
+  }
+  return {out[0], out[1], out[2], out[3]};
+}
+}  // namespace internal
+
+/// The B-spline segment of duration β [rad] through the control values `control` (follower unit,
+/// absolute: the first is where the segment starts), of degree `degree`.
+/// @pre 1 <= degree <= 7, control.size() >= degree + 1, duration > 0.
+template <typename T>
+MotionSegment<T> BSplineThrough(const std::vector<T>& control, int degree, const T& duration) {
+  MotionSegment<T> seg;
+  seg.law = MotionLaw::kBSpline;
+  seg.duration = duration;
+  seg.spline_degree = degree;
+  for (const T& c : control) seg.coefficients.push_back(c - control.front());
+  seg.rise = control.back() - control.front();
+  return seg;
+}
+
 
 /// The segment's displacement above its start and its derivatives with respect to u (not θ):
 /// h N(u), h N'(u), h N''(u), h N'''(u) for a law; P(u) and its derivatives for a polynomial.
 template <typename T>
 Svaj<T> MotionSegmentShape(const MotionSegment<T>& seg, const T& u) {
+  if (seg.law == MotionLaw::kBSpline) return internal::BSplineShape(seg.coefficients, seg.spline_degree, u);
   if (seg.law != MotionLaw::kPolynomial) {
     const Svaj<T> n = NormalizedLaw(seg.law, u);
     return {seg.rise * n.s, seg.rise * n.v, seg.rise * n.a, seg.rise * n.j};
