@@ -465,7 +465,7 @@ nlohmann::ordered_json Input::SchemaRules() {
   // the tolerances and the compliant load model both; a life (a duty cycle or load.input_speed_rpm)
   // the rollers' dynamic ratings, and not both forms of the speed; the cams' contact life and the
   // life limit a speed.
-  return nlohmann::ordered_json::parse(R"({"dependentRequired": {"monte_carlo": ["tolerances"]}, "allOf": [
+  nlohmann::ordered_json rules = nlohmann::ordered_json::parse(R"({"dependentRequired": {"monte_carlo": ["tolerances"]}, "allOf": [
     {"if": {"required": ["analysis"],
             "properties": {"analysis": {"required": ["evaluate"],
                                         "properties": {"evaluate": {"not": {"contains": {"enum": ["stress"]}}}}}}},
@@ -478,36 +478,18 @@ nlohmann::ordered_json Input::SchemaRules() {
     {"if": {"required": ["analysis"],
             "properties": {"analysis": {"required": ["load_model"], "properties": {"load_model": {"const": "compliant"}}}}},
      "then": {"required": ["material", "load"]}},
-    {"if": {"anyOf": [{"required": ["duty_cycle"]},
-                      {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]},
-     "then": {"properties": {"reducer": {"properties": {"input": {"required": ["dynamic_rating_N"]},
-                                                         "output": {"required": ["dynamic_rating_N"]}}}}}},
-    {"if": {"required": ["duty_cycle"]},
-     "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}},
     {"if": {"anyOf": [{"required": ["material"], "properties": {"material": {"required": ["contact_fatigue"]}}},
                       {"required": ["limits"], "properties": {"limits": {"required": ["life_h"]}}}]},
      "then": {"anyOf": [{"required": ["duty_cycle"]},
                         {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]}}
   ]})");
+  // The life's ratings and one form of the speed (shared with lcr_crowning_tuning), before the last.
+  nlohmann::ordered_json& all = rules["allOf"];
+  for (const auto& rule : LcrLifeSchemaRules()) all.insert(all.end() - 1, rule);
+  return rules;
 }
 
-nlohmann::ordered_json Input::DutyCycleSchema() {
-  return nlohmann::ordered_json::parse(R"json({
-    "type": "array",
-    "minItems": 1,
-    "items": {
-      "type": "object",
-      "properties": {
-        "output_torque_Nm": {"description": "the output torque T_o in this line [N·m]", "type": "number", "minimum": 0},
-        "input_speed_rpm": {"description": "the input speed in this line [rpm]", "type": "number", "minimum": 0},
-        "time_share": {"description": "the share of the time in this line (the shares sum to 1 within 1e-6)",
-                       "type": "number", "exclusiveMinimum": 0, "maximum": 1}
-      },
-      "required": ["output_torque_Nm", "input_speed_rpm", "time_share"],
-      "additionalProperties": false
-    }
-  })json");
-}
+nlohmann::ordered_json Input::DutyCycleSchema() { return LcrDutyCycleSchema(); }
 
 Result Run(const Study& st, const RunContext& ctx) {
   const lcr::Reducer<double>& r = st.reducer;

@@ -1,12 +1,14 @@
 #include "studies/lcr_crowning_tuning_study.h"
 #include "studies/verification_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/lcr/sliced_life.h"
 #include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_crowning_tuning {
@@ -18,54 +20,41 @@ constexpr double kEdgeShareLimit = 0.01;
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "reducer", "material", "load", "tuning", "duty_cycle"});
+  // Every field's type and bounds; what spans fields follows.
+  const Input in = Read<Input>(root);
   Study st;
   auto& sp = st.spec;
-  st.name = root.StringOr("name", "");
-  sp.reducer = ParseReducer(root["reducer"], /*allow_crowning=*/false, /*allow_bearing_ratings=*/true);
-  root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  sp.material = ParseMaterial(root["material"]);
+  st.name = in.name;
+  const Node reducer = root["reducer"];
+  sp.reducer = ToReducer(in.reducer.Design(), reducer);
+  sp.material = in.material.ToMaterial();
   const Node load = root["load"];
-  load.CheckKnownFields({"output_torque_Nm", "overload_torque_Nm", "friction_coefficient", "input_speed_rpm"});
-  sp.design_load.output_torque_Nmm = load["output_torque_Nm"].Positive() * 1000.0;
-  sp.design_load.friction_coefficient = load.Has("friction_coefficient") ? load["friction_coefficient"].NumberIn(0, 1) : 0.0;
-  sp.overload_torque_Nmm = load["overload_torque_Nm"].Positive() * 1000.0;
+  sp.design_load.output_torque_Nmm = in.load.output_torque_Nm * 1000.0;
+  sp.design_load.friction_coefficient = in.load.friction_coefficient;
+  sp.overload_torque_Nmm = in.load.overload_torque_Nm * 1000.0;
   if (sp.overload_torque_Nmm < sp.design_load.output_torque_Nmm)
     load["overload_torque_Nm"].Fail("an overload torque >= output_torque_Nm");
+  const Input::Tuning& tuning = in.tuning;
   const Node t = root["tuning"];
-  t.CheckKnownFields({"effective_length_mm", "coefficient_range_mm", "misalignment_mrad", "curve_points",
-                      "refine_iterations", "angle_steps", "slices", "half_space_check", "grid"});
-  const Node le = t["effective_length_mm"];
   for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
     const int k = s == lcr::Side::kInput ? 0 : 1;
-    sp.effective_length_mm[k] = le.Positive();
+    sp.effective_length_mm[k] = tuning.effective_length_mm;
     if (!(sp.effective_length_mm[k] > sp.reducer.side(s).roller_length))
-      le.Fail("an effective length above the roller length (" + std::to_string(sp.reducer.side(s).roller_length) +
-              " mm; Le <= l_r gives an unbounded drop at the roller's ends)");
+      t["effective_length_mm"].Fail("an effective length above the roller length (" +
+                                    std::to_string(sp.reducer.side(s).roller_length) +
+                                    " mm; Le <= l_r gives an unbounded drop at the roller's ends)");
   }
-  if (t.Has("coefficient_range_mm")) {
-    const auto [lo, hi] = t["coefficient_range_mm"].Range();
-    if (!(lo > 0 && hi > lo)) t["coefficient_range_mm"].Fail("[lo, hi] with 0 < lo < hi");
-    sp.coefficient_range_mm = {lo, hi};
-  } else {
-    sp.coefficient_range_mm = {1e-3, 0.05};
-  }
+  const auto [lo, hi] = tuning.coefficient_range_mm;
+  if (!(lo <= hi)) t["coefficient_range_mm"].Fail("[lower, upper] with lower <= upper");
+  if (!(hi > lo)) t["coefficient_range_mm"].Fail("[lo, hi] with 0 < lo < hi");
+  sp.coefficient_range_mm = {lo, hi};
   sp.misalignments_rad.clear();
-  if (t.Has("misalignment_mrad")) {
-    for (const Node& m : t["misalignment_mrad"].Elements()) sp.misalignments_rad.push_back(m.NumberIn(-50, 50) * 1e-3);
-    if (sp.misalignments_rad.empty()) t["misalignment_mrad"].Fail("a non-empty list of misalignments [mrad]");
-  } else {
-    sp.misalignments_rad = {0.0};
-  }
-  sp.curve_points = t.IntegerOr("curve_points", 3, 12);
-  if (sp.curve_points > 60) t["curve_points"].Fail("at most 60 points");
-  sp.refine_iterations = t.IntegerOr("refine_iterations", 0, 8);
-  if (sp.refine_iterations > 40) t["refine_iterations"].Fail("at most 40 iterations");
-  sp.angle_steps = t.IntegerOr("angle_steps", 12, 360);
-  if (sp.angle_steps > 3600) t["angle_steps"].Fail("at most 3600 angle steps");
-  sp.slices = t.IntegerOr("slices", 4, 40);
-  if (sp.slices > 200) t["slices"].Fail("at most 200 slices");
-  st.half_space_check = t.BoolOr("half_space_check", true);
+  for (double m : tuning.misalignment_mrad) sp.misalignments_rad.push_back(m * 1e-3);
+  sp.curve_points = tuning.curve_points;
+  sp.refine_iterations = tuning.refine_iterations;
+  sp.angle_steps = tuning.angle_steps;
+  sp.slices = tuning.slices;
+  st.half_space_check = tuning.half_space_check;
   if (t.Has("grid")) {
     const auto e = t["grid"].Elements();
     if (e.size() != 2) t["grid"].Fail("[nx, ny]");
@@ -78,24 +67,39 @@ Study Parse(const Node& root) {
   if (auto lines = ParseDutyCycle(root, sp.design_load.output_torque_Nmm, &why)) {
     LifeSpec life;
     life.lines = std::move(*lines);
-    const Node reducer = root["reducer"];
     for (int k = 0; k < 2; ++k) {
-      const Node side = reducer[k == 0 ? "input" : "output"];
-      if (!side.Has("dynamic_rating_N")) {
-        const std::string path = side.path() + "/dynamic_rating_N";
+      const LcrSideWithRatingsInput& side = k == 0 ? in.reducer.input : in.reducer.output;
+      if (!side.dynamic_rating_N) {
+        const Node n = reducer[k == 0 ? "input" : "output"];
+        const std::string path = n.path() + "/dynamic_rating_N";
         const std::string expected = "the bearing's dynamic load rating C [N] > 0 (" + why + ")";
-        throw StudyError(side.file() + ": " + path + ": expected " + expected + ", found nothing", side.file(), path,
+        throw StudyError(n.file() + ": " + path + ": expected " + expected + ", found nothing", n.file(), path,
                          expected, "nothing");
       }
-      life.dynamic_rating_N[size_t(k)] = side["dynamic_rating_N"].Positive();
-      life.static_rating_N[size_t(k)] = side.PositiveOr("static_rating_N", 0.0);
+      life.dynamic_rating_N[size_t(k)] = *side.dynamic_rating_N;
+      life.static_rating_N[size_t(k)] = side.static_rating_N.value_or(0.0);
     }
-    if (reducer.Has("eccentric_bearing")) life.eccentric = ParseEccentricBearing(reducer["eccentric_bearing"]);
+    if (in.reducer.eccentric_bearing) {
+      const EccentricBearingInput& eb = *in.reducer.eccentric_bearing;
+      life.eccentric = EccentricBearingRating{eb.dynamic_rating_N, eb.static_rating_N.value_or(0.0), eb.kind == "ball"};
+    }
     st.life = std::move(life);
-  } else if (root["reducer"].Has("eccentric_bearing")) {
-    ParseEccentricBearing(root["reducer"]["eccentric_bearing"]);  // checked, unused without a speed
   }
   return st;
+}
+
+nlohmann::ordered_json Input::Tuning::GridSchema() {
+  nlohmann::ordered_json s = nlohmann::ordered_json::parse(R"({
+    "description": "[nx, ny] cells of the half-space check (across rolling, along the roller), at least 8 each way, at most [256, 1024]",
+    "type": "array",
+    "items": {"type": "integer", "minimum": 8},
+    "prefixItems": [{"maximum": 256}, {"maximum": 1024}],
+    "minItems": 2,
+    "maxItems": 2
+  })");
+  const Study defaults;
+  s["default"] = {defaults.grid_nx, defaults.grid_ny};
+  return s;
 }
 
 namespace {
@@ -357,22 +361,60 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_crowning_tuning");
+CAMOPT_REGISTER_DECLARED_KIND("lcr_crowning_tuning", Input,
+                              "camopt study: logarithmic roller crowning of a lobe cam reducer, tuned per cam");
+
+// The declared input of a study, for the knobs and the estimate below, which run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): slices, angle grid, the
-// golden-section steps and the half_space check's grid.
+// golden-section steps and the half_space check's grid, from the declaration's defaults.
 Fidelity Knobs(const nlohmann::json&) {
+  const Input::Tuning defaults;
+  const Study study_defaults;
   Fidelity f;
-  f.knobs.push_back({"slices", {"/tuning/slices"}, 40, 2, true, 0, "slices along the roller"});
-  f.knobs.push_back({"angle_steps", {"/tuning/angle_steps"}, 360, 2, true, 0, "samples of the input revolution"});
-  f.knobs.push_back({"refine_iterations", {"/tuning/refine_iterations"}, 8, 2, true, 0,
+  f.knobs.push_back({"slices", {"/tuning/slices"}, defaults.slices, 2, true, 0, "slices along the roller"});
+  f.knobs.push_back({"angle_steps", {"/tuning/angle_steps"}, defaults.angle_steps, 2, true, 0,
+                     "samples of the input revolution"});
+  f.knobs.push_back({"refine_iterations", {"/tuning/refine_iterations"}, defaults.refine_iterations, 2, true, 0,
                      "golden-section steps in ln f after the scan"});
-  f.knobs.push_back({"grid", {"/tuning/grid"}, {48, 256}, 2, true, 0, "half_space check cells"});
+  f.knobs.push_back({"grid", {"/tuning/grid"}, {study_defaults.grid_nx, study_defaults.grid_ny}, 2, true, 0,
+                     "half_space check cells"});
   f.headlines = {"/input/crowning/coefficient_mm", "/output/crowning/coefficient_mm",
                  "/input/tuned/slices/0/design_max_contact_stress_MPa",
                  "/output/tuned/slices/0/design_max_contact_stress_MPa"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_crowning_tuning", Knobs);
+
+// The work limit (studies/work_limits.h): slices solves of 40 slices as the unit (≈0.6 ms; N slices
+// cost (N/40)³), 69 per cam and cycle (13 × 5 table + 4 exact), 2 cycles (design, overload) per
+// misalignment and evaluation; the half_space checks as 100 units per 48×256 grid; ≤ 1e5 units.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const Input::Tuning& t = in.tuning;
+  const double evaluations = double(t.curve_points) + t.refine_iterations + 2;
+  const double misalignments = std::max<double>(1, double(t.misalignment_mrad.size()));
+  const double slices = t.slices;
+  const double per_solve = std::pow(std::max(slices, 4.0) / 40.0, 3);
+  const nlohmann::json& grid = t.grid;
+  const double cells = grid.is_array() && grid.size() == 2 && grid[0].is_number() && grid[1].is_number()
+                           ? grid[0].get<double>() * grid[1].get<double>()
+                           : 48.0 * 256.0;
+  // The check: tuned and uncrowned on the grid, and the tuned crowning verified on twice the cells
+  // each way (four times the cells, about five times the time).
+  const double check = !t.half_space_check ? 0.0 : (2 + 5) * 2 * misalignments * 4 * 100 * cells / (48.0 * 256.0);
+  // The load stage over the angle grid: about 1/4000 of a slices solve per angle and cam.
+  const double angle_steps = t.angle_steps;
+  const double angles = evaluations * 2 * 2 * misalignments * angle_steps / 4000.0;
+  return LargestTerm({{evaluations * 2 * 2 * misalignments * 69 * per_solve, "/tuning/curve_points",
+                       WorkNumber(evaluations) + " evaluations × 2 cams × 2 torques × " + WorkNumber(misalignments) +
+                           " misalignments × 69 contact solves × " + WorkNumber(per_solve) + " (slices)"},
+                      {check, "/tuning/grid", "half_space checks on " + WorkNumber(cells) + " cells"},
+                      {angles, "/tuning/angle_steps", WorkNumber(angle_steps) + " input angles per cycle"}},
+                     1e5 * factor, "slice-solve units", 1000);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("lcr_crowning_tuning", EstimateWork);
 }  // namespace
 
 }  // namespace camopt::studies::lcr_crowning_tuning

@@ -16,11 +16,100 @@
 #include "model/lcr/life.h"
 #include "objectives/lcr_crowning_tuning.h"
 #include "objectives/verification.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/lcr_input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_crowning_tuning {
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds and
+/// description (studies/archive.h); the reducer (sides with their bearing ratings, no crowning: it is
+/// the answer), the material and the duty cycle are the LCR blocks of studies/lcr_input.h and
+/// material_input.h. Parse reads it and checks what spans fields; `camopt schema lcr_crowning_tuning`
+/// is emitted from it.
+struct Input {
+  struct Load {
+    double output_torque_Nm = 0, overload_torque_Nm = 0, friction_coefficient = 0;
+    std::optional<double> input_speed_rpm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("output_torque_Nm", &output_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc("T_o, the design torque: the pressure it minimises"));
+      a->Visit("overload_torque_Nm", &overload_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc(
+                   "the overload torque, >= output_torque_Nm: the pressure must stay off the contact's ends at it"));
+      a->Visit("friction_coefficient", &friction_coefficient,
+               Field().In(0.0, 1.0).Desc("μ of the eccentric, T_in = (F_t + μ F_r) e (the paper's eq. 32)"));
+      a->Visit("input_speed_rpm", &input_speed_rpm,
+               Field().Positive().Unit("rpm").Desc(
+                   "input speed: the bearing lives at the load's torque (a one-line duty cycle; docs/life.md); not "
+                   "with duty_cycle"));
+    }
+  };
+  struct Tuning {
+    double effective_length_mm = 0;
+    std::array<double, 2> coefficient_range_mm{1e-3, 0.05};
+    std::vector<double> misalignment_mrad{0.0};
+    int curve_points = 12, refine_iterations = 8, angle_steps = 360, slices = 40;
+    bool half_space_check = true;
+    nlohmann::json grid;  ///< [nx, ny]; null: [48, 256]
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("effective_length_mm", &effective_length_mm,
+               Field().Required().Positive().Unit("mm").Desc(
+                   "L_e of Lundberg's logarithmic profile, both cams; above each cam's roller length (L_e <= l_r "
+                   "gives an unbounded drop at the roller's ends)"));
+      a->Visit("coefficient_range_mm", &coefficient_range_mm,
+               Field().Positive("[lo, hi] with 0 < lo < hi").Expect("[lower, upper], two numbers").Unit("mm")
+                   .Desc("[lo, hi] of the crowning coefficient f scanned, 0 < lo < hi"));
+      a->Visit("misalignment_mrad", &misalignment_mrad,
+               Field().In(-50.0, 50.0).MinItems(1, "a non-empty list of misalignments [mrad]").Unit("mrad")
+                   .Desc("the tilts γ of the roller axis: the worst pressure over them is minimised, off the ends at "
+                         "every one"));
+      a->Visit("curve_points", &curve_points,
+               Field().AtLeast(3).AtMost(60, "at most 60 points").Desc("coefficients of the scan (log-spaced)"));
+      a->Visit("refine_iterations", &refine_iterations,
+               Field().AtLeast(0).AtMost(40, "at most 40 iterations").Desc("golden-section steps in ln f after the scan"));
+      a->Visit("angle_steps", &angle_steps,
+               Field().AtLeast(12).AtMost(3600, "at most 3600 angle steps").Desc("samples of the input revolution"));
+      a->Visit("slices", &slices,
+               Field().AtLeast(4).AtMost(200, "at most 200 slices").Desc("slices along the roller (the slices model)"));
+      a->Visit("half_space_check", &half_space_check,
+               Field().Desc("check the tuned and the uncrowned rollers with the half_space model (false: not verified)"));
+      a->Visit("grid", &grid, Field().Schema(GridSchema()));
+    }
+    /// The schema of "grid" ([nx, ny], at most [256, 1024]).
+    static nlohmann::ordered_json GridSchema();
+  };
+
+  std::string study = "lcr_crowning_tuning", name;
+  std::optional<std::string> description;
+  LcrReducerWithRatingsInput<LcrSideWithRatingsInput> reducer;
+  MaterialInput material;
+  Load load;
+  Tuning tuning;
+  nlohmann::json duty_cycle;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("lcr_crowning_tuning").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, in titles"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("reducer", &reducer,
+             Field().Required().Desc("the lobe cam reducer's design (no crowning: it is the answer)"));
+    a->Visit("material", &material, Field().Required().Desc("the cams' and rollers' elastic material"));
+    a->Visit("load", &load, Field().Required().Desc("the design and overload torques"));
+    a->Visit("tuning", &tuning, Field().Required().Desc("the crowning's scan, the models' resolution and the check"));
+    a->Visit("duty_cycle", &duty_cycle,
+             Field().Schema(LcrDutyCycleSchema()).Desc(
+                 "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
+                 "1e-6, at least one speed > 0"));
+  }
+  /// The life's ratings and one form of the speed.
+  static nlohmann::ordered_json SchemaRules() { return {{"allOf", LcrLifeSchemaRules()}}; }
+};
 
 /// The lives of the tuned design, asked by "load.input_speed_rpm" or "duty_cycle" (docs/life.md,
 /// "Sliced roller life under tilt"): the rollers' ratings, the eccentric bearing's when given.

@@ -50,17 +50,11 @@ struct LcrReducerInput {
   }
 };
 
-/// A cam side of the kinds with the finite-length contact and the bearing lives (lcr_analysis): the
-/// design, the rollers' crowning and their bearing's ratings.
-struct LcrRatedSideInput : LcrSideInput {
-  std::optional<LcrCrowningInput> crowning;
+/// The ratings of a cam side's roller bearings (C, C0), visited after the side's own fields.
+struct LcrRollerRatingsInput {
   std::optional<double> dynamic_rating_N, static_rating_N;
   template <typename Archive>
-  void Serialize(Archive* a) {
-    LcrSideInput::Serialize(a);
-    a->Visit("crowning", &crowning,
-             Field().Desc("the rollers' crowning (docs/lcr.md); each form takes its own fields only (absent: "
-                          "straight rollers); a crowning other than none needs a contact model other than line"));
+  void VisitRatings(Archive* a) {
     a->Visit("dynamic_rating_N", &dynamic_rating_N,
              Field().Positive().Unit("N").Desc(
                  "the roller bearing's basic dynamic load rating C (ISO 281); required when a life is asked "
@@ -68,6 +62,30 @@ struct LcrRatedSideInput : LcrSideInput {
     a->Visit("static_rating_N", &static_rating_N,
              Field().Positive().Unit("N").Desc(
                  "the roller bearing's basic static load rating C0 (ISO 76); s0 is reported when given"));
+  }
+};
+
+/// A cam side of the kinds with the bearing lives but no crowning (lcr_crowning_tuning, whose answer
+/// is the crowning): the design and the roller bearings' ratings.
+struct LcrSideWithRatingsInput : LcrSideInput, LcrRollerRatingsInput {
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    LcrSideInput::Serialize(a);
+    VisitRatings(a);
+  }
+};
+
+/// A cam side of the kinds with the finite-length contact and the bearing lives (lcr_analysis): the
+/// design, the rollers' crowning and their bearing's ratings.
+struct LcrRatedSideInput : LcrSideInput, LcrRollerRatingsInput {
+  std::optional<LcrCrowningInput> crowning;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    LcrSideInput::Serialize(a);
+    a->Visit("crowning", &crowning,
+             Field().Desc("the rollers' crowning (docs/lcr.md); each form takes its own fields only (absent: "
+                          "straight rollers); a crowning other than none needs a contact model other than line"));
+    VisitRatings(a);
   }
 };
 
@@ -89,10 +107,12 @@ struct EccentricBearingInput {
 };
 
 /// The reducer of lcr_analysis: the design, per side the crowning and the roller bearings' ratings,
-/// and the eccentric's bearing.
-struct LcrRatedReducerInput {
+/// and the eccentric's bearing. lcr_crowning_tuning's is the same with sides without crowning
+/// (Side = LcrSideWithRatingsInput).
+template <typename Side>
+struct LcrReducerWithRatingsInput {
   double eccentricity_mm = 0;
-  LcrRatedSideInput input, output;
+  Side input, output;
   std::optional<EccentricBearingInput> eccentric_bearing;
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -106,11 +126,12 @@ struct LcrRatedReducerInput {
   LcrReducerInput Design() const {
     LcrReducerInput d;
     d.eccentricity_mm = eccentricity_mm;
-    d.input = input;
-    d.output = output;
+    d.input = static_cast<const LcrSideInput&>(input);
+    d.output = static_cast<const LcrSideInput&>(output);
     return d;
   }
 };
+using LcrRatedReducerInput = LcrReducerWithRatingsInput<LcrRatedSideInput>;
 
 /// The design of a reducer read from `node` as LcrReducerInput: the checks between fields (more
 /// rollers than lobes, lengths on the turret's scale, lcr::CheckDesign) with ParseReducer's
@@ -137,5 +158,14 @@ struct EccentricBearingRating {
   bool ball = false;
 };
 EccentricBearingRating ParseEccentricBearing(const Node& node);
+
+/// The schema of an LCR kind's "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h):
+/// lines of output torque T_o [N·m], input speed [rpm] and time share.
+nlohmann::ordered_json LcrDutyCycleSchema();
+
+/// The rules of JSON Schema between an LCR kind's life fields (two entries of the root's "allOf"): a
+/// life (a duty cycle or load.input_speed_rpm) needs both cams' reducer.*.dynamic_rating_N, and the
+/// speed is given one way (a duty cycle without load.input_speed_rpm).
+nlohmann::ordered_json LcrLifeSchemaRules();
 
 }  // namespace camopt::studies

@@ -151,35 +151,6 @@ WorkEstimate LcrMinSize(const json& s, double factor, const std::string& file) {
   return Largest(terms, 2e4 * factor, "local optimizations", 1000);
 }
 
-// lcr_crowning_tuning (issue 12): slices solves of 40 slices as the unit (≈0.6 ms; N slices cost
-// (N/40)³), 69 per cam and cycle (13 × 5 table + 4 exact), 2 cycles (design, overload) per
-// misalignment and evaluation; the half_space checks as 100 units per 48×256 grid.
-WorkEstimate LcrCrowningTuning(const json& s, double factor) {
-  const json& t = Sub(s, "tuning");
-  const double evaluations = Size(t, "curve_points", 12) + Size(t, "refine_iterations", 8) + 2;
-  const double misalignments = std::max<double>(1, Count(Sub(t, "misalignment_mrad")));
-  const double slices = Size(t, "slices", 40);
-  const double per_solve = std::pow(std::max(slices, 4.0) / 40.0, 3);
-  const json& grid = Sub(t, "grid");
-  const double cells = grid.is_array() && grid.size() == 2 && grid[0].is_number() && grid[1].is_number()
-                           ? grid[0].get<double>() * grid[1].get<double>()
-                           : 48.0 * 256.0;
-  // The check: tuned and uncrowned on the grid, and the tuned crowning verified on twice the cells
-  // each way (four times the cells, about five times the time).
-  const double check = Sub(t, "half_space_check").is_boolean() && !Sub(t, "half_space_check").get<bool>()
-                           ? 0.0
-                           : (2 + 5) * 2 * misalignments * 4 * 100 * cells / (48.0 * 256.0);
-  // The load stage over the angle grid: about 1/4000 of a slices solve per angle and cam.
-  const double angle_steps = Size(t, "angle_steps", 360);
-  const double angles = evaluations * 2 * 2 * misalignments * angle_steps / 4000.0;
-  return Largest({{evaluations * 2 * 2 * misalignments * 69 * per_solve, "/tuning/curve_points",
-                   Num(evaluations) + " evaluations × 2 cams × 2 torques × " + Num(misalignments) +
-                       " misalignments × 69 contact solves × " + Num(per_solve) + " (slices)"},
-                  {check, "/tuning/grid", "half_space checks on " + Num(cells) + " cells"},
-                  {angles, "/tuning/angle_steps", Num(angle_steps) + " input angles per cycle"}},
-                 1e5 * factor, "slice-solve units", 1000);
-}
-
 }  // namespace
 
 namespace {
@@ -200,7 +171,6 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
     return it->second(study, file, factor);
   if (kind == "lcr_min_size") return LcrMinSize(study, factor, file);
-  if (kind == "lcr_crowning_tuning") return LcrCrowningTuning(study, factor);
   WorkEstimate none;
   none.cap = 1;
   return none;

@@ -20,7 +20,7 @@
 //   lcr_min_size                    lobe counts × differences × catalogue rollers × starts × (0.5 +
 //                                   samples_per_period/48) + with a 3D contact 30·(slices/20)³ per
 //                                   candidate and the half_space verification + robust Monte-Carlo ≤ 2e4
-//   lcr_crowning_tuning             evaluations × 2 cams × 2 torques × misalignments × 69 × (slices/40)³
+//   lcr_crowning_tuning (kind's file) evaluations × 2 cams × 2 torques × misalignments × 69 × (slices/40)³
 //                                   + half_space checks and verification (100 per 48×256 grid)
 //                                   + the load stage's angle_steps ≤ 1e5
 //   lcr_analysis's 3D contact adds its slices and half_space solves; every fidelity knob of every

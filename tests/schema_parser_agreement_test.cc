@@ -461,6 +461,8 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_crowning_tuning", "/reducer/", "rollers − lobes", "rollers = lobes + 1"},
     {"lcr_crowning_tuning", "/reducer/", "more rollers than lobes", "rollers > lobes"},
     {"lcr_crowning_tuning", "/tuning/coefficient_range_mm", "0 < lo < hi", "a range [lo, hi] needs lo < hi"},
+    {"lcr_crowning_tuning", "/reducer/", "no common divisor",
+     "lobes and rollers without a common divisor (the rollers' bound 1e9 of a whole number)"},
     {"lcr_friction_fit", "/reducer/", "rollers − lobes", "rollers = lobes + 1"},
     {"lcr_friction_fit", "/reducer/", "more rollers than lobes", "rollers > lobes"},
     {"lcr_friction_fit", "/parameters/", "with lower < upper", "bounds [lower, upper] need lower < upper"},
@@ -640,7 +642,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
 const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
                                                  "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size",
-                                                 "lcr_analysis", "cycloid_crowning_tuning"};
+                                                 "lcr_analysis", "cycloid_crowning_tuning", "lcr_crowning_tuning"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
