@@ -8,6 +8,7 @@
 #include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
+#include "studies/report.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
 
@@ -15,7 +16,7 @@ namespace camopt::studies::lcr_crowning_tuning {
 
 namespace {
 // A contact's end pressure up to this share of its peak counts as off the ends (as in
-// objectives/lcr_sizing3d.cc's verification).
+// sizing/lcr_sizing3d.cc's verification).
 constexpr double kEdgeShareLimit = 0.01;
 }  // namespace
 
@@ -264,6 +265,17 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   }
   if (st.half_space_check) {
     AddVerificationJson(res.verification, j);
+    // The verdict's one number: the largest edge-pressure share the accurate model finds on either
+    // cam, misalignment and torque, against its limit (with that check's error estimate).
+    const objectives::VerifiedLimit* worst = nullptr;
+    for (const objectives::VerifiedLimit& c : res.verification.checks)
+      if (!worst || c.accurate_value - c.limit_value > worst->accurate_value - worst->limit_value) worst = &c;
+    if (worst) {
+      j["max_edge_pressure_share"] = worst->accurate_value;
+      j["max_edge_pressure_share_error"] = worst->estimated_error;
+      j["max_edge_pressure_share_where"] = worst->limit + ", " + worst->where;
+      j["edge_pressure_share_limit"] = worst->limit_value;
+    }
   } else {
     j["verified"] = false;
     j["verification"] = {{"accurate_model", nullptr}, {"note", "tuning.half_space_check is false: not verified"}};
@@ -415,6 +427,26 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                      1e5 * factor, "slice-solve units", 1000);
 }
 const bool kEstimateRegistered = RegisterWorkEstimate("lcr_crowning_tuning", EstimateWork);
+}  // namespace
+
+namespace {
+// report.html and the summary: the tuned coefficients, the tuned and uncrowned peak pressures of
+// the aligned rollers at the design torque (the accurate model's), and the verdict on the edge
+// loading the tuning is for.
+const bool kReportRegistered = RegisterReport(
+    "lcr_crowning_tuning",
+    {{"tuned LCM coefficient, input rollers", "/input/crowning/coefficient_mm", "mm"},
+     {"tuned LCM coefficient, output rollers", "/output/crowning/coefficient_mm", "mm"},
+     {"largest edge-pressure share, tuned (accurate model)", "/max_edge_pressure_share", "",
+      "/edge_pressure_share_limit", NAN, true, "/max_edge_pressure_share_error"},
+     {"where", "/max_edge_pressure_share_where", ""},
+     {"peak pressure, input cam, tuned (0 mrad, design torque)", "/input/tuned/half_space/0/design_max_contact_stress_MPa",
+      "MPa"},
+     {"peak pressure, input cam, uncrowned", "/input/uncrowned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+     {"peak pressure, output cam, tuned (0 mrad, design torque)",
+      "/output/tuned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+     {"peak pressure, output cam, uncrowned", "/output/uncrowned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+     {"verified", "/verified", ""}});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_crowning_tuning
