@@ -115,8 +115,9 @@ Study Parse(const Node& root) {
   if (cam.follower != dc::FollowerType::kTranslatingRoller)
     root["follower"]["type"].FailWith(
         "disc_cam_min_size sizes a translating roller follower (variables base_circle_radius_mm, offset_mm, "
-        "roller_radius_mm); an oscillating follower's pivot and arm are not sizing variables yet: use follower.type "
-        "\"translating_roller\", or study \"disc_cam\" to analyse an oscillating design");
+        "roller_radius_mm); an oscillating follower's pivot and arm are not sizing variables yet, nor are knife-edge "
+        "and flat-faced followers sized: use follower.type \"translating_roller\", or study \"disc_cam\" to analyse "
+        "the design");
 
   objectives::DiscCamSizingSpec& spec = s.spec;
   spec.cam = cam;

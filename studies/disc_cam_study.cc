@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "model/disc_cam/check.h"
+#include "model/disc_cam/flat_faced.h"
 #include "studies/format.h"
 #include "studies/material_input.h"
 #include "studies/motion_input.h"
@@ -102,6 +103,37 @@ nlohmann::ordered_json Input::MotionSchema(bool sizing) {
                                {"translating follower", "oscillating follower"}, false);
 }
 
+nlohmann::ordered_json Input::Follower::SchemaRules() {
+  using oj = nlohmann::ordered_json;
+  const oj is_roller = {{"properties", {{"type", {{"enum", RollerTypes()}}}}}};
+  const oj is_flat = {{"properties", {{"type", {{"const", "translating_flat_faced"}}}}}};
+  auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
+  const oj radius = {{"if", is_roller}, {"then", {{"required", oj::array({"roller_radius_mm"})}}},
+                     {"else", refuse("roller_radius_mm")}};
+  const oj face = {{"if", is_flat}, {"else", refuse("face_width_mm")}};
+  return {{"allOf", oj::array({radius, face})}};
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  using oj = nlohmann::ordered_json;
+  auto follower_is = [](const std::vector<std::string>& types) {
+    return oj{{"required", oj::array({"follower"})},
+              {"properties", {{"follower", {{"properties", {{"type", {{"enum", types}}}}}}}}}};
+  };
+  auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
+  // Without a roller: no cutter path, the profile stage only (tolerances are read and not used: a
+  // note says so).
+  const oj profile_only = {{"items", {{"const", "profile"}}}};
+  const oj evaluate_profile_only = {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}}};
+  const oj no_roller = {
+      {"if", follower_is({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced"})},
+      {"then", {{"allOf", oj::array({refuse("cutter_radius_mm"), evaluate_profile_only})}}}};
+  // A knife edge: a point contact, no contact-stress limit.
+  const oj knife = {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
+                    {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}};
+  return {{"allOf", oj::array({no_roller, knife})}};
+}
+
 nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
   nlohmann::ordered_json s = {
       {"description", "the Monte-Carlo check of the linearised error against the exact motion: true (its defaults), "
@@ -123,20 +155,51 @@ Study Parse(const Node& root) {
   DiscCam& cam = s.cam;
 
   const Node follower = root["follower"];
-  const bool oscillating = in.follower.type == "oscillating_roller";
-  if (!oscillating) {
-    follower.CheckKnownFields({"type", "offset_mm", "roller_radius_mm"});
+  const std::string& type = in.follower.type;
+  s.follower_type = type;
+  const bool oscillating = type.rfind("oscillating_", 0) == 0;
+  s.contact = type.ends_with("_roller")       ? Study::Contact::kRoller
+              : type.ends_with("_knife_edge") ? Study::Contact::kKnifeEdge
+                                              : Study::Contact::kFlatFaced;
+  const bool roller = s.contact == Study::Contact::kRoller;
+  const bool flat = s.contact == Study::Contact::kFlatFaced;
+  if (flat) {
+    follower.CheckKnownFields({"type", "face_width_mm"});
+    cam.follower = FollowerType::kTranslatingRoller;  // its base circle and motion only
+  } else if (!oscillating) {
+    if (roller) follower.CheckKnownFields({"type", "offset_mm", "roller_radius_mm"});
+    else follower.CheckKnownFields({"type", "offset_mm"});
     cam.follower = FollowerType::kTranslatingRoller;
     cam.offset = in.follower.offset_mm.value_or(0.0);
   } else {
-    follower.CheckKnownFields({"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
+    if (roller) follower.CheckKnownFields({"type", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm"});
+    else follower.CheckKnownFields({"type", "pivot_distance_mm", "arm_length_mm"});
     cam.follower = FollowerType::kOscillatingRoller;
     cam.pivot_distance = follower["pivot_distance_mm"].Positive();  // required: "missing required field"
     cam.arm_length = follower["arm_length_mm"].Positive();
   }
   cam.base_radius = in.base_circle_radius_mm;
-  cam.roller_radius = PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius");
-  for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
+  // A knife edge is the roller model with r_f = 0 (its profile is the pitch curve); a flat face has
+  // no roller.
+  cam.roller_radius =
+      roller ? PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius") : 0.0;
+  if (in.follower.face_width_mm)
+    s.follower_face_width_mm = PlausibleLength(follower["face_width_mm"], cam.base_radius, "the base circle radius");
+  if (!flat)
+    for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
+  // Without a roller: no mechanical error (Rzine et al.'s eqs. 16–32 and the exact-motion check
+  // roll a roller of radius r_f + Δr_f on the profile: the stages are refused, tolerances noted as
+  // unused in result.json) and no cutter path of a roller's size.
+  const std::string no_roller = flat ? "a flat-faced follower" : "a knife-edge follower";
+  if (!roller && in.cutter_radius_mm)
+    root["cutter_radius_mm"].FailWith("a cutter path is written for a roller follower only (its radius r_t <= r_f), "
+                                      "not for " + no_roller + ": remove \"cutter_radius_mm\"");
+  if (!roller && in.analysis.evaluate)
+    for (size_t i = 0; i < in.analysis.evaluate->size(); ++i)
+      if ((*in.analysis.evaluate)[i] != "profile")
+        root["analysis"]["evaluate"][i].FailWith(
+            "the stage \"" + (*in.analysis.evaluate)[i] + "\" (the mechanical error of Rzine et al.) is computed for "
+            "roller followers only, not for " + no_roller + ": evaluate [\"profile\"] only (docs/disc_cam.md)");
 
   // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
   cam.motion = ParseMotionProgram(root["motion"], FollowerMotionSpec(oscillating));
@@ -151,6 +214,7 @@ Study Parse(const Node& root) {
   }
   if (in.bore_diameter_mm)
     s.bore_diameter_mm = ParseBoreDiameter(root["bore_diameter_mm"], 2 * cam.base_radius, "the base circle diameter");
+  s.tolerances_given = in.tolerances.has_value();
   if (in.tolerances) {
     s.tolerances.radial = in.tolerances->profile_radial_um * 1e-3;
     s.tolerances.roller = in.tolerances->roller_radius_um * 1e-3;
@@ -158,7 +222,7 @@ Study Parse(const Node& root) {
   }
   // Limits of the verdict; defaults are the textbook rules (docs/disc_cam.md "Limits and verdict").
   s.limits.pressure_angle_deg = oscillating ? kDefaultPressureAngleOscillatingDeg : kDefaultPressureAngleTranslatingDeg;
-  s.limits.radius_margin_mm = cam.roller_radius;
+  s.limits.radius_margin_mm = cam.roller_radius;  // 0 without a roller: a convex flat-faced cam
   const Input::Limits limits = in.limits.value_or(Input::Limits{});
   if (limits.pressure_angle_deg) {
     s.limits.pressure_angle_deg = *limits.pressure_angle_deg;
@@ -174,9 +238,9 @@ Study Parse(const Node& root) {
   if (in.dynamics) {
     if (oscillating)
       root["dynamics"].FailWith(
-          "the kinetostatic loads are implemented for a translating roller follower only (an oscillating "
+          "the kinetostatic loads are implemented for translating followers only (an oscillating "
           "arm needs its moment of inertia and the moments about its pivot): remove \"dynamics\" or use "
-          "follower.type \"translating_roller\"");
+          "follower.type \"translating_" + type.substr(std::string("oscillating_").size()) + "\"");
     const Input::Dynamics& d = *in.dynamics;
     Study::Dynamics dyn;
     dyn.speed_rpm = d.speed_rpm;
@@ -196,6 +260,9 @@ Study Parse(const Node& root) {
   }
   if (limits.contact_stress_MPa) {
     const Node l = root["limits"]["contact_stress_MPa"];
+    if (s.contact == Study::Contact::kKnifeEdge)
+      l.FailWith("a knife-edge follower touches the cam at a point (no Hertz line contact to check): remove the "
+                 "contact-stress limit, or use a roller or flat-faced follower");
     s.limits.contact_stress_MPa = *limits.contact_stress_MPa;
     std::string missing;
     for (const auto& [absent, what] : {std::pair{!s.face_width_mm, "face_width_mm (the contact length of roller and cam)"},
@@ -235,9 +302,11 @@ Study Parse(const Node& root) {
   }
   if (s.tolerances.radial == 0 && s.tolerances.roller == 0 && s.tolerances.normal == 0)
     s.monte_carlo = false;
+  if (!roller) s.error_stage = s.monte_carlo = false;  // the profile only (refused above when asked)
   // Feasibility over the cycle, on the analysis grid.
-  if (const auto issues = dc::CheckDesign(cam, s.angle_steps); !issues.empty())
-    FailOn(issues.front(), cam, root);
+  const auto issues = flat ? dc::CheckFlatFaced(cam.motion, cam.base_radius, s.angle_steps)
+                           : dc::CheckDesign(cam, s.angle_steps);
+  if (!issues.empty()) FailOn(issues.front(), cam, root);
   return s;
 }
 
@@ -248,9 +317,20 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   g.file_stem = "profile";
   g.design_name = s.name;
   g.cam_name = "disc cam";
-  g.profile = [cam](double th) { return dc::EvaluateCam(cam, th).contact; };
-  g.pitch = [cam](double th) { return dc::EvaluateCam(cam, th).pitch; };
-  if (s.cutter_radius_mm > 0 && s.cutter_radius_mm != cam.roller_radius) {
+  if (s.contact == Study::Contact::kFlatFaced) {
+    // The exact profile, the envelope of the face lines; no roller, so no pitch curve or cutter path.
+    g.profile = [cam](double th) { return dc::EvaluateFlatFaced(cam.motion, cam.base_radius, th).contact; };
+    g.cutter_note = "omitted: a flat-faced follower has no roller, so no pitch curve or roller-sized cutter path";
+  } else if (s.contact == Study::Contact::kKnifeEdge) {
+    // The profile is the pitch curve (r_f = 0): one curve, on the profile layer.
+    g.profile = [cam](double th) { return dc::EvaluateCam(cam, th).contact; };
+    g.cutter_note = "omitted: a knife-edge follower's profile is its pitch curve; no cutter path is written";
+  } else {
+    g.profile = [cam](double th) { return dc::EvaluateCam(cam, th).contact; };
+    g.pitch = [cam](double th) { return dc::EvaluateCam(cam, th).pitch; };
+  }
+  if (s.contact != Study::Contact::kRoller) {
+  } else if (s.cutter_radius_mm > 0 && s.cutter_radius_mm != cam.roller_radius) {
     g.cutter = [cam, rt = s.cutter_radius_mm](double th) {
       const CamPoint<double> p = dc::EvaluateCam(cam, th);
       return Vec2<double>(p.pitch + (cam.roller_radius - rt) * (p.contact - p.pitch) / cam.roller_radius);
@@ -268,7 +348,65 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   return FitPlanarCam(g, s.geometry);
 }
 
+// The loads' extremes over the grid (contact force, camshaft torque and stress series filled) and,
+// with a follower stiffness, the dynamic response and jump speed (the follower's motion only: the
+// same for every contact type).
+void FinishLoads(const Study& s, Result::Loads& L) {
+  const int n = static_cast<int>(L.contact_force_N.size());
+  const dc::DiscCam& cam = s.cam;
+  const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
+  auto arg_max = [&](auto f) {
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (f(i) > f(best)) best = i;
+    return best;
+  };
+  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
+  auto angle_deg = [&](int i) { return 360.0 * i / n; };
+  const bool stress = L.stress_evaluated;
+  const auto& f = L.contact_force_N;
+  const auto& tq = L.camshaft_torque_Nm;
+  const int i_fmin = arg_min([&](int i) { return f[i]; }), i_fmax = arg_max([&](int i) { return f[i]; });
+  L.min_contact_force_N = {f[i_fmin], angle_deg(i_fmin)};
+  L.max_contact_force_N = {f[i_fmax], angle_deg(i_fmax)};
+  const int i_tabs = arg_max([&](int i) { return std::abs(tq[i]); });
+  L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), angle_deg(i_tabs)};
+  L.min_camshaft_torque_Nm = tq[arg_min([&](int i) { return tq[i]; })];
+  L.max_camshaft_torque_Nm = tq[arg_max([&](int i) { return tq[i]; })];
+  if (stress) {
+    const int i_p = arg_max([&](int i) { return L.contact_stress_MPa[i]; });
+    L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], angle_deg(i_p)};
+  }
+  // The follower on its own stiffness (model/disc_cam/follower_dynamics.h): the response at the
+  // speed, and the lowest speed at which it leaves the cam, searched up to 1.5 times the larger
+  // of the speed and the kinetostatic jump speed.
+  if (s.dynamics->follower_stiffness_N_per_mm) {
+    dc::FollowerDynamicsInput fin;
+    fin.motion = cam.motion;
+    fin.loads = s.dynamics->loads;
+    fin.follower_stiffness_N_per_mm = *s.dynamics->follower_stiffness_N_per_mm;
+    fin.damping_ratio = s.dynamics->damping_ratio;
+    fin.revolutions = s.dynamics->revolutions;
+    fin.speed_rad_s = omega;
+    L.response = dc::SimulateFollower(fin);
+    const double reach = std::max(s.dynamics->speed_rpm, std::isfinite(L.jump_speed_rpm) ? L.jump_speed_rpm : 0.0);
+    L.dynamic_jump_upper_rpm = 1.5 * reach;
+    L.dynamic_jump = dc::FindDynamicJumpSpeed(fin, dc::RadPerSecond(L.dynamic_jump_upper_rpm));
+    // A separation at the speed itself that the scan stepped over (a resonance band narrower than
+    // its step): search below the speed, so that the two answers agree.
+    if (L.response->separates && (!L.dynamic_jump->found || L.dynamic_jump->speed_rad_s > omega)) {
+      const int runs = L.dynamic_jump->runs;
+      L.dynamic_jump_upper_rpm = s.dynamics->speed_rpm;
+      L.dynamic_jump = dc::FindDynamicJumpSpeed(fin, omega);
+      L.dynamic_jump->runs += runs;
+    }
+  }
+}
+
+Result RunFlatFaced(const Study& s);
+
 Result Run(const Study& s, const RunContext& ctx) {
+  if (s.contact == Study::Contact::kFlatFaced) return RunFlatFaced(s);
   const DiscCam& cam = s.cam;
   const bool osc = cam.follower == FollowerType::kOscillatingRoller;
   // Follower errors in µm at the roller centre: ΔS [mm] for a translating follower, l·Δξ for an
@@ -372,7 +510,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     Result::Loads L;
     const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
     L.weight_N = s.dynamics->loads.weight_N;
-    const bool stress = s.face_width_mm && s.material;
+    const bool stress = s.face_width_mm && s.material && s.contact == Study::Contact::kRoller;  // knife: a point
     const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
     L.stress_evaluated = stress;
     for (int i = 0; i < n; ++i) {
@@ -385,44 +523,8 @@ Result Run(const Study& s, const RunContext& ctx) {
         L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
       }
     }
-    const auto& f = L.contact_force_N;
-    const auto& tq = L.camshaft_torque_Nm;
-    const int i_fmin = arg_min([&](int i) { return f[i]; }), i_fmax = arg_max([&](int i) { return f[i]; });
-    L.min_contact_force_N = {f[i_fmin], angle_deg(i_fmin)};
-    L.max_contact_force_N = {f[i_fmax], angle_deg(i_fmax)};
-    const int i_tabs = arg_max([&](int i) { return std::abs(tq[i]); });
-    L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), angle_deg(i_tabs)};
-    L.min_camshaft_torque_Nm = tq[arg_min([&](int i) { return tq[i]; })];
-    L.max_camshaft_torque_Nm = tq[arg_max([&](int i) { return tq[i]; })];
     L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
-    if (stress) {
-      const int i_p = arg_max([&](int i) { return L.contact_stress_MPa[i]; });
-      L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], angle_deg(i_p)};
-    }
-    // The follower on its own stiffness (model/disc_cam/follower_dynamics.h): the response at the
-    // speed, and the lowest speed at which it leaves the cam, searched up to 1.5 times the larger
-    // of the speed and the kinetostatic jump speed.
-    if (s.dynamics->follower_stiffness_N_per_mm) {
-      dc::FollowerDynamicsInput fin;
-      fin.motion = cam.motion;
-      fin.loads = s.dynamics->loads;
-      fin.follower_stiffness_N_per_mm = *s.dynamics->follower_stiffness_N_per_mm;
-      fin.damping_ratio = s.dynamics->damping_ratio;
-      fin.revolutions = s.dynamics->revolutions;
-      fin.speed_rad_s = omega;
-      L.response = dc::SimulateFollower(fin);
-      const double reach = std::max(s.dynamics->speed_rpm, std::isfinite(L.jump_speed_rpm) ? L.jump_speed_rpm : 0.0);
-      L.dynamic_jump_upper_rpm = 1.5 * reach;
-      L.dynamic_jump = dc::FindDynamicJumpSpeed(fin, dc::RadPerSecond(L.dynamic_jump_upper_rpm));
-      // A separation at the speed itself that the scan stepped over (a resonance band narrower than
-      // its step): search below the speed, so that the two answers agree.
-      if (L.response->separates && (!L.dynamic_jump->found || L.dynamic_jump->speed_rad_s > omega)) {
-        const int runs = L.dynamic_jump->runs;
-        L.dynamic_jump_upper_rpm = s.dynamics->speed_rpm;
-        L.dynamic_jump = dc::FindDynamicJumpSpeed(fin, omega);
-        L.dynamic_jump->runs += runs;
-      }
-    }
+    FinishLoads(s, L);
     r.loads = std::move(L);
   }
 
@@ -480,11 +582,98 @@ Result Run(const Study& s, const RunContext& ctx) {
   return r;
 }
 
+// A translating flat-faced follower (model/disc_cam/flat_faced.h): the contact A(θ) on the envelope
+// of the face lines, where it runs on the face (S'), the radius of curvature ρ = r_b + S + S'', the
+// pressure angle 0, the loads with F_c = F_y and T = F_y S', the Hertz stress of the face on ρ.
+Result RunFlatFaced(const Study& s) {
+  const DiscCam& cam = s.cam;
+  const int n = s.angle_steps;
+  std::vector<dc::FlatFacePoint<double>> pts(n);
+  const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
+  for (int i = 0; i < n; ++i) pts[i] = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, 2 * kPi * i / n);
+  auto arg_max = [&](auto f) {
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (f(i) > f(best)) best = i;
+    return best;
+  };
+  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
+  auto angle_deg = [&](int i) { return 360.0 * i / n; };
+  auto col = [&](auto f) {
+    std::vector<double> c(n);
+    for (int i = 0; i < n; ++i) c[i] = f(i);
+    return c;
+  };
+
+  Result r;
+  r.follower_unit = "mm";
+  auto& t = r.series;
+  t.cam_angle_deg = col(angle_deg);
+  t.follower = col([&](int i) { return pts[i].s; });
+  t.velocity_per_rad = col([&](int i) { return pts[i].ds; });
+  t.acceleration_per_rad2 = col([&](int i) { return pts[i].d2s; });
+  t.jerk_per_rad3 = col([&](int i) { return svaj[i].j; });
+  t.pressure_angle_deg = std::vector<double>(n, 0.0);
+  t.radial_dimension_mm = col([&](int i) { return pts[i].contact.norm(); });
+  t.contact_x_mm = col([&](int i) { return pts[i].contact.x(); });
+  t.contact_y_mm = col([&](int i) { return pts[i].contact.y(); });
+
+  const int i_rmax = arg_max([&](int i) { return t.radial_dimension_mm[i]; });
+  r.max_radial_dimension_mm = {t.radial_dimension_mm[i_rmax], angle_deg(i_rmax)};
+  r.min_radial_dimension_mm = t.radial_dimension_mm[arg_min([&](int i) { return t.radial_dimension_mm[i]; })];
+  r.min_pressure_angle_deg = r.max_pressure_angle_deg = r.max_pressure_angle_rise_deg = {0.0, 0.0};
+
+  Result::FlatFace F;
+  F.contact_offset_mm = col([&](int i) { return pts[i].contact_offset; });
+  F.radius_of_curvature_mm = col([&](int i) { return pts[i].radius_of_curvature; });
+  const int i_omax = arg_max([&](int i) { return F.contact_offset_mm[i]; });
+  const int i_omin = arg_min([&](int i) { return F.contact_offset_mm[i]; });
+  F.max_contact_offset_mm = {F.contact_offset_mm[i_omax], angle_deg(i_omax)};
+  F.min_contact_offset_mm = {F.contact_offset_mm[i_omin], angle_deg(i_omin)};
+  const int i_rho = arg_min([&](int i) { return F.radius_of_curvature_mm[i]; });
+  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[i_rho], angle_deg(i_rho)};
+  std::vector<bool> cusp(n);
+  for (int i = 0; i < n; ++i) cusp[i] = !(F.radius_of_curvature_mm[i] > 0.0);
+  F.cusp_cam_angle_deg = Intervals(cusp);
+  r.min_radius_of_curvature_mm = F.min_radius_of_curvature_mm;
+
+  if (s.dynamics) {
+    Result::Loads L;
+    const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
+    L.weight_N = s.dynamics->loads.weight_N;
+    const bool stress = s.face_width_mm && s.material;
+    const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
+    L.stress_evaluated = stress;
+    for (int i = 0; i < n; ++i) {
+      const dc::CamLoad<double> c = dc::FlatFaceLoadAt(pts[i], s.dynamics->loads, omega);
+      L.contact_force_N.push_back(c.contact_force);
+      L.camshaft_torque_Nm.push_back(c.camshaft_torque * 1e-3);
+      if (stress) {
+        const double p = dc::FlatFaceContactStress(pts[i], c.contact_force, *s.face_width_mm, e_star);
+        if (!std::isfinite(p)) L.stress_finite = false;
+        L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
+      }
+    }
+    L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
+    FinishLoads(s, L);
+    r.loads = std::move(L);
+  }
+  r.flat_face = std::move(F);
+  r.joints = motion::CheckContinuity(cam.motion, 1e-7);
+  const MotionPeaks peaks = PeakDerivatives(svaj);
+  r.peak_velocity = peaks.velocity;
+  r.peak_acceleration = peaks.acceleration;
+  r.peak_jerk = peaks.jerk;
+  r.profile_files = FitGeometryFiles(s);
+  return r;
+}
+
 nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json j;
   j["study"] = "disc_cam";
   j["name"] = s.name;
-  j["follower"] = r.oscillating ? "oscillating_roller" : "translating_roller";
+  j["follower"] = s.follower_type;
+  const bool flat = s.contact == Study::Contact::kFlatFaced;
   j["angle_steps"] = s.angle_steps;
   j["max_radial_dimension_mm"] = r.max_radial_dimension_mm.value;
   j["max_radial_dimension_at_cam_angle_deg"] = r.max_radial_dimension_mm.cam_angle_deg;
@@ -503,33 +692,72 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   // (docs/disc_cam.md "Limits and verdict").
   nlohmann::json& pa = j["pressure_angle_deg"];
   const double pa_limit = s.limits.pressure_angle_deg;
-  pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
-  pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
-  if (r.max_pressure_angle_return_deg) {
-    pa["max_return"] = r.max_pressure_angle_return_deg->value;
-    pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+  bool geometry_ok = true;  // the pressure angle and radius limits (and a flat face's width)
+  if (flat) {
+    // The flat face: no pressure-angle limit (φ = 0), the radius ρ = r_b + S + S'' above the margin
+    // (a convex cam: the face cannot follow ρ ≤ 0), the face wide enough for the contact's travel.
+    const Result::FlatFace& F = *r.flat_face;
+    pa["note"] = "0 everywhere: the common normal of a flat face perpendicular to the line of motion is the line "
+                 "of motion";
+    const double rise_side = std::max(0.0, F.max_contact_offset_mm.value);
+    const double return_side = std::max(0.0, -F.min_contact_offset_mm.value);
+    nlohmann::json ff = {{"contact_offset_mm", {{"max", F.max_contact_offset_mm.value},
+                                                {"at_max_cam_angle_deg", F.max_contact_offset_mm.cam_angle_deg},
+                                                {"min", F.min_contact_offset_mm.value},
+                                                {"at_min_cam_angle_deg", F.min_contact_offset_mm.cam_angle_deg}}},
+                         {"face_needed_rise_side_mm", rise_side},
+                         {"face_needed_return_side_mm", return_side},
+                         {"face_width_needed_mm", rise_side + return_side},
+                         {"face_width_needed_centred_mm", 2 * std::max(rise_side, return_side)},
+                         {"min_radius_of_curvature_mm", F.min_radius_of_curvature_mm.value},
+                         {"min_radius_of_curvature_at_cam_angle_deg", F.min_radius_of_curvature_mm.cam_angle_deg},
+                         {"radius_margin_limit_mm", s.limits.radius_margin_mm},
+                         {"radius_margin_ok", F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm},
+                         {"cusp", !F.cusp_cam_angle_deg.empty()},
+                         {"cusp_cam_angle_deg", nlohmann::json::array()}};
+    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+    if (s.follower_face_width_mm) {
+      ff["face_width_mm"] = *s.follower_face_width_mm;
+      ff["face_width_ok"] = *s.follower_face_width_mm >= 2 * std::max(rise_side, return_side);
+      geometry_ok = ff["face_width_ok"].get<bool>();
+    }
+    geometry_ok = geometry_ok && ff["radius_margin_ok"].get<bool>();
+    j["flat_face"] = ff;
+    if (s.limits.pressure_angle_default == false)
+      j["notes"].push_back("limits.pressure_angle_deg is not checked: a flat face's pressure angle is 0");
+  } else {
+    pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
+    pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
+    if (r.max_pressure_angle_return_deg) {
+      pa["max_return"] = r.max_pressure_angle_return_deg->value;
+      pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+    }
+    pa["limit"] = pa_limit;
+    pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
+    pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
+    j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
+    j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
+                                        {"max", r.cos_shift_over_cos_pressure.max}};
+    j["min_radius_of_curvature_mm"] = AtAngleOrNull(r.min_radius_of_curvature_mm, false);
+    j["min_radius_of_curvature_at_cam_angle_deg"] =
+        AtAngleOrNull(r.min_radius_of_curvature_mm, true);
+    j["min_concave_radius_of_curvature_mm"] =
+        AtAngleOrNull(r.min_concave_radius_of_curvature_mm, false);
+    j["min_concave_radius_at_cam_angle_deg"] =
+        AtAngleOrNull(r.min_concave_radius_of_curvature_mm, true);
+    // ρ_pitch − r_f (the profile's smallest convex radius) against the margin; no convex part: met.
+    j["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
+    j["radius_margin_ok"] = !r.min_radius_of_curvature_mm || r.min_radius_of_curvature_mm->value >= s.limits.radius_margin_mm;
+    j["undercut"] = r.undercut;
+    j["undercut_cam_angle_deg"] = nlohmann::json::array();
+    for (const auto& [from, to] : r.undercut_cam_angle_deg)
+      j["undercut_cam_angle_deg"].push_back({from, to});
+    geometry_ok = pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>() && j["radius_margin_ok"].get<bool>();
   }
-  pa["limit"] = pa_limit;
-  pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
-  pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
-  j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
-  j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
-                                      {"max", r.cos_shift_over_cos_pressure.max}};
-  j["min_radius_of_curvature_mm"] = AtAngleOrNull(r.min_radius_of_curvature_mm, false);
-  j["min_radius_of_curvature_at_cam_angle_deg"] =
-      AtAngleOrNull(r.min_radius_of_curvature_mm, true);
-  j["min_concave_radius_of_curvature_mm"] =
-      AtAngleOrNull(r.min_concave_radius_of_curvature_mm, false);
-  j["min_concave_radius_at_cam_angle_deg"] =
-      AtAngleOrNull(r.min_concave_radius_of_curvature_mm, true);
-  // ρ_pitch − r_f (the profile's smallest convex radius) against the margin; no convex part: met.
-  j["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
-  j["radius_margin_ok"] = !r.min_radius_of_curvature_mm || r.min_radius_of_curvature_mm->value >= s.limits.radius_margin_mm;
-  j["undercut"] = r.undercut;
-  j["undercut_cam_angle_deg"] = nlohmann::json::array();
-  for (const auto& [from, to] : r.undercut_cam_angle_deg)
-    j["undercut_cam_angle_deg"].push_back({from, to});
 
+  if (s.contact != Study::Contact::kRoller && s.tolerances_given)
+    j["notes"].push_back("tolerances are not used: the mechanical error (Rzine et al.) is computed for roller "
+                         "followers only");
   if (s.evaluate_given) {
     j["evaluated"] = {"profile"};
     if (s.error_stage) j["evaluated"].push_back("error");
@@ -618,18 +846,23 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
         dj["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
         dj["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
       } else {
-        dj["max_contact_stress_MPa"] = nullptr;  // a loaded point of the profile is undercut
-        j["notes"].push_back("max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile");
+        dj["max_contact_stress_MPa"] = nullptr;  // a loaded point of the profile is undercut (a cusp)
+        j["notes"].push_back(flat ? "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)"
+                                  : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile");
       }
       if (s.limits.contact_stress_MPa) {
         dj["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
         dj["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
         loads_ok = loads_ok && dj["contact_stress_ok"].get<bool>();
       }
+    } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
+      j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
     } else if (s.face_width_mm || s.material) {
       j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
     }
     j["dynamics"] = dj;
+  } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
+    j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
   } else if (s.face_width_mm || s.material) {
     j["notes"].push_back("no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
   }
@@ -638,12 +871,17 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json defaults = nlohmann::json::array();
   if (s.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
   if (s.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
-  j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
-                 {"defaults", defaults}};
+  if (flat) {
+    if (s.limits.pressure_angle_default) defaults.erase(defaults.begin());
+    j["limits"] = {{"radius_margin_mm", s.limits.radius_margin_mm}, {"defaults", defaults}};
+    if (s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
+  } else {
+    j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
+                   {"defaults", defaults}};
+  }
   if (r.loads) j["limits"]["min_contact_force_N"] = 0.0;
   if (s.limits.contact_stress_MPa) j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
-  j["limits_ok"] = pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>() && j["radius_margin_ok"].get<bool>() &&
-                   loads_ok;
+  j["limits_ok"] = geometry_ok && loads_ok;
 
   const std::string& fu = r.follower_unit;
   j["motion"] = {{"joints", JointsJson(r.joints)},
@@ -690,15 +928,25 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("velocity_" + fu + "_per_rad", t.velocity_per_rad);
   table.Add("acceleration_" + fu + "_per_rad2", t.acceleration_per_rad2);
   table.Add("jerk_" + fu + "_per_rad3", t.jerk_per_rad3);
-  table.Add("pressure_angle_deg", t.pressure_angle_deg);
-  table.Add("shift_angle_deg", t.shift_angle_deg);
-  table.Add("radial_dimension_mm", t.radial_dimension_mm);
-  table.Add("contact_x_mm", t.contact_x_mm);
-  table.Add("contact_y_mm", t.contact_y_mm);
-  table.Add("pitch_x_mm", t.pitch_x_mm);
-  table.Add("pitch_y_mm", t.pitch_y_mm);
-  table.Add("q_mm", t.q_mm);
-  table.Add("pitch_curvature_per_mm", t.pitch_curvature_per_mm);
+  const bool flat = r.flat_face.has_value();
+  if (flat) {
+    // A flat face: no pitch curve, instant centre or shift angle; the pressure angle is 0.
+    table.Add("radial_dimension_mm", t.radial_dimension_mm);
+    table.Add("contact_x_mm", t.contact_x_mm);
+    table.Add("contact_y_mm", t.contact_y_mm);
+    table.Add("contact_offset_on_face_mm", r.flat_face->contact_offset_mm);
+    table.Add("radius_of_curvature_mm", r.flat_face->radius_of_curvature_mm);
+  } else {
+    table.Add("pressure_angle_deg", t.pressure_angle_deg);
+    table.Add("shift_angle_deg", t.shift_angle_deg);
+    table.Add("radial_dimension_mm", t.radial_dimension_mm);
+    table.Add("contact_x_mm", t.contact_x_mm);
+    table.Add("contact_y_mm", t.contact_y_mm);
+    table.Add("pitch_x_mm", t.pitch_x_mm);
+    table.Add("pitch_y_mm", t.pitch_y_mm);
+    table.Add("q_mm", t.q_mm);
+    table.Add("pitch_curvature_per_mm", t.pitch_curvature_per_mm);
+  }
   if (r.error_evaluated) {
     table.Add("error_radial_um", t.error_radial_um);
     table.Add("error_roller_um", t.error_roller_um);
@@ -720,7 +968,15 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
-  {
+  if (flat) {
+    PlotOptions o;
+    o.title = s.name + ": flat face: contact offset S' and radius of curvature r_b + S + S''";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "[mm]";
+    out.Add("flat_face.svg", SvgLinePlot({series("contact offset on the face S' [mm]", r.flat_face->contact_offset_mm),
+                                          series("radius of curvature ρ [mm]", r.flat_face->radius_of_curvature_mm)},
+                                         o));
+  } else {
     PlotOptions o;
     o.title = s.name + ": pressure angle and shift angle";
     o.x_label = "cam angle [deg]";
@@ -789,14 +1045,36 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   Polyline pp, pc;
   for (size_t i = 0; i < th.size(); ++i) {
     pp.emplace_back(t.contact_x_mm[i], t.contact_y_mm[i]);
-    pc.emplace_back(t.pitch_x_mm[i], t.pitch_y_mm[i]);
+    if (!flat) pc.emplace_back(t.pitch_x_mm[i], t.pitch_y_mm[i]);
   }
   profile.polylines.push_back(pp);
-  pitch.polylines.push_back(pc);
   base.circles.push_back({0.0, 0.0, cam.base_radius});
   base.circles.push_back({0.0, 0.0, 0.5});
+  const bool knife = s.contact == Study::Contact::kKnifeEdge;
+  if (flat) {
+    // The face at θ = 0: the line x = r_b + S(0) over the width needed (or the face given), and the stem.
+    const Result::FlatFace& F = *r.flat_face;
+    const double half = s.follower_face_width_mm ? *s.follower_face_width_mm / 2
+                                                  : std::max({F.max_contact_offset_mm.value, -F.min_contact_offset_mm.value,
+                                                              0.1 * cam.base_radius});
+    const double x0 = cam.base_radius + t.follower[0];
+    follower.polylines.push_back({{x0, -half}, {x0, half}});
+    follower.polylines.push_back({{x0, 0.0}, {x0 + 0.5 * cam.base_radius, 0.0}});
+    d.layers = {profile, base, follower};
+    char line[200];
+    std::snprintf(line, sizeof line, "base circle diameter %g mm; flat-faced follower, face width needed %.3f mm",
+                  2 * cam.base_radius, F.max_contact_offset_mm.value - F.min_contact_offset_mm.value);
+    d.dimensions.push_back(line);
+    double r_min = INFINITY, r_max = 0;
+    for (const auto& [x, y] : pp) r_min = std::min(r_min, std::hypot(x, y)), r_max = std::max(r_max, std::hypot(x, y));
+    std::snprintf(line, sizeof line, "profile radius from the cam centre %.3f to %.3f mm (sampled)", r_min, r_max);
+    d.dimensions.push_back(line);
+    out.Add("profile.svg", SvgDrawing(d));
+    return;
+  }
+  if (!knife) pitch.polylines.push_back(pc);  // a knife edge's pitch curve is its profile
   const Vec2<double> c0(t.pitch_x_mm[0], t.pitch_y_mm[0]);  // roller centre at θ = 0
-  follower.circles.push_back({c0.x(), c0.y(), cam.roller_radius});
+  if (!knife) follower.circles.push_back({c0.x(), c0.y(), cam.roller_radius});
   if (r.oscillating) {
     const Vec2<double> o3 = dc::FollowerPivot(cam, 0.0);
     follower.polylines.push_back({{o3.x(), o3.y()}, {c0.x(), c0.y()}});
@@ -805,14 +1083,19 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     const Vec2<double> a = c0 + 0.5 * cam.base_radius * U(0.0);
     follower.polylines.push_back({{c0.x(), c0.y()}, {a.x(), a.y()}});
   }
-  d.layers = {profile, pitch, base, follower};
+  if (knife) d.layers = {profile, base, follower};
+  else d.layers = {profile, pitch, base, follower};
   // The main dimensions a shop reads (the profile's radii from its sampled points).
   double r_min = INFINITY, r_max = 0;
   for (const auto& [x, y] : pp) r_min = std::min(r_min, std::hypot(x, y)), r_max = std::max(r_max, std::hypot(x, y));
   char line[200];
-  std::snprintf(line, sizeof line, "base circle diameter %g mm; roller diameter %g mm; %s", 2 * cam.base_radius,
-                2 * cam.roller_radius,
-                r.oscillating ? "oscillating follower" : ("offset " + Format(cam.offset) + " mm").c_str());
+  if (knife)
+    std::snprintf(line, sizeof line, "base circle diameter %g mm; knife-edge follower; %s", 2 * cam.base_radius,
+                  r.oscillating ? "oscillating follower" : ("offset " + Format(cam.offset) + " mm").c_str());
+  else
+    std::snprintf(line, sizeof line, "base circle diameter %g mm; roller diameter %g mm; %s", 2 * cam.base_radius,
+                  2 * cam.roller_radius,
+                  r.oscillating ? "oscillating follower" : ("offset " + Format(cam.offset) + " mm").c_str());
   d.dimensions.push_back(line);
   std::snprintf(line, sizeof line, "profile radius from the cam centre %.3f to %.3f mm (sampled)", r_min, r_max);
   d.dimensions.push_back(line);
@@ -822,7 +1105,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("disc_cam");
 
-CAMOPT_REGISTER_DECLARED_KIND("disc_cam", Input, "camopt study: disc cam with a roller follower");
+CAMOPT_REGISTER_DECLARED_KIND("disc_cam", Input, "camopt study: disc cam with a roller, knife-edge or flat-faced follower");
 
 // The declared input of a study, for the estimates below that run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
@@ -887,6 +1170,10 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
      NAN, false},
     {"undercut", "/undercut", ""},
+    {"smallest radius of curvature r_b + S + S'' (flat face)", "/flat_face/min_radius_of_curvature_mm", "mm",
+     "/flat_face/radius_margin_limit_mm", NAN, false},
+    {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
+     "/flat_face/face_width_mm"},
     {"smallest contact force (separation)", "/dynamics/min_contact_force_N", "N", "", 0.0, false},
     {"largest contact force", "/dynamics/max_contact_force_N", "N"},
     {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},

@@ -1,7 +1,9 @@
 // Study kind "disc_cam": a disc cam with an offset translating or an oscillating roller follower
-// (Rzine et al., docs/disc_cam.md). Profile, pressure and shift angles, curvature and undercut over
-// a cam revolution; the mechanical error from the tolerances (worst case and RMS, eqs. 31–32); a
-// Monte-Carlo check of the linearised error against the exact follower motion.
+// (Rzine et al., docs/disc_cam.md), a knife edge (the roller model with r_f = 0) or a translating
+// flat-faced follower (model/disc_cam/flat_faced.h). Profile, pressure and shift angles, curvature
+// and undercut over a cam revolution; for a roller the mechanical error from the tolerances (worst
+// case and RMS, eqs. 31–32) and a Monte-Carlo check of the linearised error against the exact
+// follower motion.
 // Outputs: result.json, series.csv, SVAJ / angle / error plots (SVG), profile.svg, profile.dxf.
 #pragma once
 
@@ -34,27 +36,43 @@ namespace camopt::studies::disc_cam {
 /// it. disc_cam_min_size declares its file with the same parts.
 struct Input {
   /// The follower: the fields of its type only (translating: offset_mm; oscillating:
-  /// pivot_distance_mm and arm_length_mm, required), checked by Parse.
+  /// pivot_distance_mm and arm_length_mm, required; a roller: roller_radius_mm, required; a flat
+  /// face: face_width_mm), checked by Parse; SchemaRules states the roller's and the face's fields.
   struct Follower {
     std::string type;
-    double roller_radius_mm = 0.0;
-    /// Optional without a schema default: an oscillating follower has no offset (a default would
-    /// be written into its studies by the schema's users).
-    std::optional<double> offset_mm, pivot_distance_mm, arm_length_mm;
+    /// Optional without a schema default: an oscillating follower has no offset, a knife edge or a
+    /// flat face no roller (a default would be written into its studies by the schema's users).
+    std::optional<double> roller_radius_mm, offset_mm, pivot_distance_mm, arm_length_mm, face_width_mm;
+    /// The follower types with a roller (the others: knife-edge, flat-faced).
+    static const std::vector<std::string>& RollerTypes() {
+      static const std::vector<std::string> t = {"translating_roller", "oscillating_roller"};
+      return t;
+    }
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("type", &type,
-               Field().Required().OneOf({"translating_roller", "oscillating_roller"}).Desc("the follower's kind"));
+               Field().Required()
+                   .OneOf({"translating_roller", "oscillating_roller", "translating_knife_edge", "oscillating_knife_edge",
+                           "translating_flat_faced"})
+                   .Desc("the follower's kind: a roller, a knife edge (a roller of radius 0: the profile is the pitch "
+                         "curve) or a flat face perpendicular to the line of motion (docs/disc_cam.md)"));
       a->Visit("offset_mm", &offset_mm,
-               Field().Unit("mm").Desc("translating only: e, the follower axis's offset from the cam centre, positive as in "
-                                        "the paper's Fig. 1; |e| < r_b + r_f (absent: 0)"));
+               Field().Unit("mm").Desc("translating roller or knife edge only: e, the follower axis's offset from the "
+                                        "cam centre, positive as in the paper's Fig. 1; |e| < r_b + r_f (absent: 0)"));
       a->Visit("roller_radius_mm", &roller_radius_mm,
-               Field().Required().Positive().Unit("mm").Desc("r_f, of the roller (1e-6 to 1e6 times the base circle)"));
+               Field().Positive().Unit("mm").Desc("roller followers only, required: r_f, of the roller (1e-6 to 1e6 "
+                                                  "times the base circle)"));
       a->Visit("pivot_distance_mm", &pivot_distance_mm,
                Field().Positive().Unit("mm").Desc("oscillating only, required: f = O₂O₃, cam centre to the arm's pivot"));
       a->Visit("arm_length_mm", &arm_length_mm,
                Field().Positive().Unit("mm").Desc("oscillating only, required: l, pivot to the roller centre; |f − l| < r_b + r_f < f + l"));
+      a->Visit("face_width_mm", &face_width_mm,
+               Field().Positive().Unit("mm").Desc(
+                   "flat-faced only: the face's width in the cam plane, centred on the follower's axis; checked "
+                   "against the width the contact runs over, 2 max|S'| (absent: not checked)"));
     }
+    /// A roller follower needs its radius, the others have none; the face width is a flat face's.
+    static nlohmann::ordered_json SchemaRules();
   };
   /// Manufacturing tolerances (Rzine et al., eqs. 31–32).
   struct Tolerances {
@@ -80,15 +98,17 @@ struct Input {
                          "separately (absent: 30 translating, 45 oscillating)"));
       a->Visit("radius_margin_mm", &radius_margin_mm,
                Field().NonNegative().Unit("mm").Desc(
-                   "smallest convex pitch-curve radius minus the roller radius, i.e. the profile's smallest convex "
-                   "radius of curvature, at least this (absent: the roller radius)"));
+                   "roller: the smallest convex pitch-curve radius minus the roller radius, i.e. the profile's "
+                   "smallest convex radius of curvature, at least this (absent: the roller radius); knife edge: the "
+                   "profile's smallest convex radius at least this (absent: 0); flat face: the profile's smallest "
+                   "radius of curvature r_b + S + S'' above this (absent: 0, a convex cam)"));
       a->Visit("contact_stress_MPa", &contact_stress_MPa,
                Field().Positive().Unit("MPa").Desc(
-                   "peak Hertz stress between roller and cam; needs face_width_mm, material and dynamics (absent: "
-                   "not checked)"));
+                   "peak Hertz stress between roller (or flat face) and cam; needs face_width_mm, material and "
+                   "dynamics; not for a knife edge, a point contact (absent: not checked)"));
     }
   };
-  /// Kinetostatic follower loads at one cam speed (translating roller follower only).
+  /// Kinetostatic follower loads at one cam speed (translating followers only).
   struct Dynamics {
     double speed_rpm = 0.0, follower_mass_kg = 0.0, spring_rate_N_per_mm = 0.0, spring_preload_N = 0.0,
            external_load_N = 0.0;
@@ -183,9 +203,9 @@ struct Input {
     a->Visit("name", &name, Field().Desc("the design's name, in titles"));
     a->Visit("description", &description, Field().Desc("free text"));
     a->Visit("follower", &follower,
-             Field().Required().Desc(sizing ? "the start design's follower; a translating roller follower only (an "
-                                              "oscillating one is refused)"
-                                            : "the roller follower"));
+             Field().Required().Desc(sizing ? "the start design's follower; a translating roller follower only (the "
+                                              "other types are refused)"
+                                            : "the follower"));
     a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
              Field().Required().Positive().Unit("mm").Desc(
                  sizing ? "r_b, the start (clamped into variables.base_circle_radius_mm)"
@@ -200,11 +220,13 @@ struct Input {
              Field().Desc("limits of the verdict (docs/disc_cam.md 'Limits and verdict'); a limit not given takes "
                           "its default"));
     a->Visit("face_width_mm", &face_width_mm,
-             Field().Positive().Unit("mm").Desc("contact length of roller and cam, for the Hertz stress"));
-    a->Visit("material", &material, Field().Desc("roller and cam (both), for the Hertz stress"));
+             Field().Positive().Unit("mm").Desc(
+                 "contact length along the camshaft axis of the roller (or flat face) on the cam, for the Hertz "
+                 "stress"));
+    a->Visit("material", &material, Field().Desc("follower and cam (both), for the Hertz stress"));
     a->Visit("dynamics", &dynamics,
              Field().Desc("kinetostatic follower loads at one cam speed (docs/disc_cam.md 'Kinetostatic loads'); "
-                          "translating roller follower only"));
+                          "translating followers only"));
   }
   /// The geometry files' fields (after "analysis" in the file).
   template <typename Archive>
@@ -222,6 +244,9 @@ struct Input {
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no "
                  "DXF/STEP/STL)")));
   }
+  /// What a follower without a roller does not take (the mechanical-error stages, a cutter path; a
+  /// knife edge no contact-stress limit): Parse refuses the same with its reasons.
+  static nlohmann::ordered_json SchemaRules();
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("study", &study, Field().Required().Const("disc_cam").Desc("the study kind"));
@@ -238,6 +263,12 @@ struct Input {
 /// The study file, parsed and validated (CheckDesign passed), in model units.
 struct Study {
   std::string name;
+  /// The follower's contact: a roller, a knife edge (the roller model with r_f = 0) or a flat face
+  /// (model/disc_cam/flat_faced.h; cam holds its base circle and motion, translating, r_f = 0).
+  enum class Contact { kRoller, kKnifeEdge, kFlatFaced } contact = Contact::kRoller;
+  std::string follower_type = "translating_roller";  ///< as in the file
+  /// Flat face: its width in the cam plane, centred on the axis [mm] (follower.face_width_mm).
+  std::optional<double> follower_face_width_mm;
   camopt::disc_cam::DiscCam cam;
   camopt::disc_cam::Deviations<double> tolerances;  ///< [mm]
   int angle_steps = 3600;
@@ -248,6 +279,7 @@ struct Study {
   /// computed.
   bool error_stage = true;
   bool evaluate_given = false;
+  bool tolerances_given = false;  ///< "tolerances" in the file (unused without a roller: a note)
   /// Geometry files: cam thickness and bore of the solid [mm] (no STEP/STL without a thickness),
   /// a cutter radius for a cutter-path layer (0: none given), "geometry_files" options.
   double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
@@ -266,7 +298,7 @@ struct Study {
   /// Contact length of roller and cam [mm] and their material (both bodies), for the Hertz stress.
   std::optional<double> face_width_mm;
   std::optional<Material> material;
-  /// Kinetostatic follower loads ("dynamics"; translating roller follower only).
+  /// Kinetostatic follower loads ("dynamics"; translating followers only).
   struct Dynamics {
     double speed_rpm = 0.0;
     std::string follower_axis = "vertical_above_cam";
@@ -352,6 +384,16 @@ struct Result {
     double dynamic_jump_upper_rpm = 0.0;
   };
   std::optional<Loads> loads;
+
+  /// Flat-faced follower (model/disc_cam/flat_faced.h): where the contact runs on the face, and the
+  /// profile's radius of curvature ρ = r_b + S + S'' (min_radius_of_curvature_mm holds ρ_min).
+  struct FlatFace {
+    AtAngle max_contact_offset_mm, min_contact_offset_mm;  ///< S' [mm]
+    AtAngle min_radius_of_curvature_mm;                    ///< ρ_min, where it is (≤ 0: a cusp)
+    std::vector<std::pair<double, double>> cusp_cam_angle_deg;  ///< [from, to] where ρ ≤ 0
+    std::vector<double> contact_offset_mm, radius_of_curvature_mm;  ///< series
+  };
+  std::optional<FlatFace> flat_face;
 
   std::vector<motion::JointContinuity> joints;
   double peak_velocity = 0.0, peak_acceleration = 0.0, peak_jerk = 0.0;  ///< follower unit/rad^k

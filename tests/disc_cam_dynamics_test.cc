@@ -215,7 +215,7 @@ TEST(DiscCamStudyDynamics, RefusalsNameWhatToAdd) {
   camopt::testing::ExpectStudyRejected(s, "disc-cam-no-material", "/limits/contact_stress_MPa", "material");
   json o = camopt::testing::Example("disc_cam_oscillating.json");
   o["dynamics"] = {{"speed_rpm", 300}, {"follower_mass_kg", 0.8}};
-  camopt::testing::ExpectStudyRejected(o, "disc-cam-osc-dynamics", "/dynamics", "translating roller follower only");
+  camopt::testing::ExpectStudyRejected(o, "disc-cam-osc-dynamics", "/dynamics", "translating followers only");
   s = DynamicsStudy();
   s["dynamics"]["follower_axis"] = "sideways";
   camopt::testing::ExpectStudyRejected(s, "disc-cam-axis", "/dynamics/follower_axis", "horizontal");

@@ -435,7 +435,7 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam", "/follower/", "unknown field", "the follower's fields by follower.type (offset_mm translating; "
      "pivot_distance_mm, arm_length_mm oscillating)"},
     {"disc_cam", "/follower/", "missing required field", "an oscillating follower needs pivot_distance_mm and arm_length_mm"},
-    {"disc_cam", "/dynamics", "translating roller follower only", "the kinetostatic loads need a translating follower"},
+    {"disc_cam", "/dynamics", "translating followers only", "the kinetostatic loads need a translating follower"},
     {"disc_cam", "/limits/contact_stress_MPa", "cannot be checked without",
      "the contact-stress limit needs face_width_mm, material and dynamics"},
     {"disc_cam", "/dynamics", "cannot be checked without", "the contact-stress limit needs the dynamics"},

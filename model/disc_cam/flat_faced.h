@@ -13,13 +13,26 @@
 // cannot follow a concave profile; ρ ≤ 0 is a cusp, the follower skips part of the motion). The
 // pressure angle is 0: the common normal u(θ) is the line of motion. An offset of the line of motion
 // moves the contact along the face only (S' + e off the axis), not the profile.
+//
+// Loads (kinetostatic, frictionless; Norton, Cam Design and Manufacturing Handbook ch. 8; Rothbart,
+// Cam Design Handbook ch. 8): the contact force is the axial force F_y (the normal is the line of
+// motion, φ = 0). The cam feels −F_y u(θ) at A, whose moment about the cam axis is
+//   A × (−F_y u) = −F_y ((r_b + S) u + S' J u) × u = F_y S',
+// the camshaft torque (the power balance T ω = F_y Ṡ with Ṡ = S' ω holds exactly). Hertz stress:
+// a plane on the profile's osculating cylinder of radius ρ (Johnson, Contact Mechanics eq. 4.45 with
+// 1/R' = 1/ρ + 1/∞): p₀ = sqrt(F E*/(π w ρ)), w the contact length along the camshaft axis.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "model/common/geometry.h"
 #include "model/common/scalar.h"
+#include "model/contact/hertz.h"
+#include "model/disc_cam/check.h"
+#include "model/disc_cam/kinetostatics.h"
 #include "model/motion/motion_program.h"
 
 namespace camopt::disc_cam {
@@ -70,6 +83,46 @@ inline FlatFaceCycle SummarizeFlatFaced(const motion::MotionProgram<double>& pro
     c.min_offset_mm = i == 0 ? p.contact_offset : std::min(c.min_offset_mm, p.contact_offset);
   }
   return c;
+}
+
+/// Loads at one point of a flat-faced translating follower at speed omega [rad/s]: the contact force
+/// is F_y (φ = 0), the camshaft torque F_y S' [N·mm] (derivation above).
+template <typename T>
+CamLoad<T> FlatFaceLoadAt(const FlatFacePoint<T>& p, const FollowerLoads& f, const T& omega) {
+  CamLoad<T> out;
+  out.axial_force = FollowerAxialForce(f, p.s, p.d2s, omega);
+  out.contact_force = out.axial_force;
+  out.camshaft_torque = out.axial_force * p.contact_offset;
+  return out;
+}
+
+/// The speed [rad/s] at which the flat face first leaves the cam (as JumpSpeed: φ = 0 does not
+/// change where F_y = 0).
+inline double JumpSpeed(const std::vector<FlatFacePoint<double>>& points, const FollowerLoads& f) {
+  return JumpSpeedOver(points, f);
+}
+
+/// Peak Hertz pressure between the flat face and the cam [MPa] (a plane on a cylinder of radius ρ,
+/// line contact over face_width_mm along the camshaft axis): 0 for a force ≤ 0 (no contact); NaN
+/// where ρ ≤ 0 (a cusp: no smooth contact).
+inline double FlatFaceContactStress(const FlatFacePoint<double>& p, double force_N, double face_width_mm,
+                                    double composite_modulus_MPa) {
+  if (!(force_N > 0.0)) return 0.0;
+  if (!(p.radius_of_curvature > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return contact::LineContactPeakPressure(force_N, face_width_mm, p.radius_of_curvature, composite_modulus_MPa);
+}
+
+/// Feasibility of a flat-faced follower's program over angle_steps cam angles: the first angle where
+/// the follower goes inside the base circle (S < −1e-9 r_b), as CheckDesign's kInsideBaseCircle.
+/// The flat face cannot jam (φ = 0); a cusp (ρ ≤ 0) is a result, not an input error.
+inline std::vector<DesignIssue> CheckFlatFaced(const motion::MotionProgram<double>& program, double base_radius,
+                                               int angle_steps) {
+  for (int i = 0; i < angle_steps; ++i) {
+    const double theta = 2 * kPi * i / angle_steps;
+    const double s = program.Evaluate(theta).s;
+    if (s < -1e-9 * base_radius) return {{IssueKind::kInsideBaseCircle, s, 0.0, 0.0, theta}};
+  }
+  return {};
 }
 
 }  // namespace camopt::disc_cam

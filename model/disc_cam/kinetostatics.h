@@ -87,15 +87,20 @@ CamLoad<T> CamLoadAt(const CamPoint<T>& p, const FollowerLoads& f, const T& omeg
 /// is not positive somewhere (the follower leaves the cam at rest), +infinity when no point
 /// decelerates the follower (S'' ≥ 0 everywhere) or the mass is zero.
 /// @param points the cam over the analysis grid (S, S'' used).
-inline double JumpSpeed(const std::vector<CamPoint<double>>& points, const FollowerLoads& f) {
+/// Any point with the follower's S and S'' (a roller's CamPoint, a flat face's FlatFacePoint).
+template <typename Point>
+double JumpSpeedOver(const std::vector<Point>& points, const FollowerLoads& f) {
   double best = std::numeric_limits<double>::infinity();
-  for (const CamPoint<double>& p : points) {
+  for (const Point& p : points) {
     const double stat = FollowerStaticForce(f, p.s);
     if (!(stat > 0.0)) return 0.0;
     const double inertia_per_omega2 = f.mass_kg * p.d2s * 1e-3;  // N per (rad/s)²
     if (inertia_per_omega2 < 0.0) best = std::min(best, stat / -inertia_per_omega2);
   }
   return std::sqrt(best);
+}
+inline double JumpSpeed(const std::vector<CamPoint<double>>& points, const FollowerLoads& f) {
+  return JumpSpeedOver(points, f);
 }
 
 /// Effective radius R' = r_f (1 − r_f κ) of the roller on the cam profile [mm] (1/R' = 1/r_f + 1/ρ,

@@ -1,0 +1,220 @@
+// The disc_cam study with a flat-faced and a knife-edge follower (docs/disc_cam.md): expected values
+// written out here from the cycloidal law S = h (u − sin(2πu)/(2π)), S' = (h/β)(1 − cos 2πu),
+// S'' = (2πh/β²) sin 2πu (Norton, Design of Machinery §8.5), never taken from the code under test;
+// the knife edge against the roller's pitch curve of the same cam; bad combinations refused with
+// exit 2 and the JSON path.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/disc_cam_study.h"
+#include "studies/study.h"
+#include "tests/test_util.h"
+
+namespace camopt {
+namespace {
+
+using camopt::testing::Example;
+using nlohmann::json;
+using studies::Node;
+namespace disc_study = studies::disc_cam;
+
+constexpr double kPiHere = 3.14159265358979323846;
+constexpr double kH = 24.0, kBeta = 120 * kPiHere / 180;  // the examples' rise and its cam angle
+
+struct Ran {
+  disc_study::Study study;
+  disc_study::Result result;
+  json out;
+};
+Ran ParseAndRun(const json& file) {
+  const Node root(&file, "study.json", "");
+  Ran r{disc_study::Parse(root), {}, {}};
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  r.result = disc_study::Run(r.study, ctx);
+  r.out = disc_study::ToJson(r.study, r.result);
+  return r;
+}
+
+// S, S', S'' of the examples' program (cycloidal rise over 120°, dwell to 170°, cycloidal return
+// to 290°, dwell), written out from the law.
+struct Svaj3 {
+  double s, v, a;
+};
+Svaj3 Program(double th) {
+  const double k = 2 * kPiHere;
+  auto rise = [&](double u) {
+    return Svaj3{kH * (u - std::sin(k * u) / k), kH / kBeta * (1 - std::cos(k * u)), k * kH / (kBeta * kBeta) * std::sin(k * u)};
+  };
+  if (th < kBeta) return rise(th / kBeta);
+  if (th < 170 * kPiHere / 180) return {kH, 0, 0};
+  if (th < 290 * kPiHere / 180) {
+    const Svaj3 r = rise((th - 170 * kPiHere / 180) / kBeta);
+    return {kH - r.s, -r.v, -r.a};
+  }
+  return {0, 0, 0};
+}
+
+// ρ_min = min (r_b + S + S'') by a dense scan of the closed form (10× the study's grid).
+double HandMinRho(double rb) {
+  double best = 1e300;
+  for (int i = 0; i < 36000; ++i) {
+    const Svaj3 p = Program(2 * kPiHere * i / 36000);
+    best = std::min(best, rb + p.s + p.a);
+  }
+  return best;
+}
+
+TEST(DiscCamFlatFacedStudy, FaceWidthRadiusLoadsAndStressByHand) {
+  const Ran ran = ParseAndRun(Example("disc_cam_flat_faced.json"));
+  const json& j = ran.out;
+  EXPECT_EQ(j["follower"], "translating_flat_faced");
+  // The contact runs S' off the axis: the cycloid's peak velocity 2h/β on each side.
+  const double vmax = 2 * kH / kBeta;  // 22.918 mm
+  EXPECT_NEAR(j["flat_face"]["contact_offset_mm"]["max"].get<double>(), vmax, 1e-9);
+  EXPECT_NEAR(j["flat_face"]["contact_offset_mm"]["min"].get<double>(), -vmax, 1e-9);
+  EXPECT_NEAR(j["flat_face"]["face_width_needed_mm"].get<double>(), 2 * vmax, 1e-9);  // max S' − min S'
+  EXPECT_NEAR(j["flat_face"]["face_width_needed_centred_mm"].get<double>(), 2 * vmax, 1e-9);
+  EXPECT_TRUE(j["flat_face"]["face_width_ok"].get<bool>());  // 50 mm ≥ 45.84 mm
+  // ρ_min = 27.2032 mm (on the grid within the scan's resolution: ρ is flat at its minimum).
+  const double rho = HandMinRho(40.0);
+  EXPECT_NEAR(rho, 27.2032, 1e-4);
+  EXPECT_NEAR(j["flat_face"]["min_radius_of_curvature_mm"].get<double>(), rho, 1e-5);
+  EXPECT_TRUE(j["flat_face"]["radius_margin_ok"].get<bool>());
+  EXPECT_FALSE(j["flat_face"]["cusp"].get<bool>());
+  EXPECT_EQ(j["pressure_angle_deg"]["max"].get<double>(), 0.0);
+  EXPECT_TRUE(j["limits_ok"].get<bool>());
+  // At 60° (mid-rise, S'' = 0): F_y = k S + F₀ + m g = 2·12 + 60 + 0.8·9.80665 N, the camshaft
+  // torque F_y S' = F_y · 2h/β (the moment of −F_y u at A about the cam axis).
+  const auto& L = *ran.result.loads;
+  const int i60 = 600;
+  const double fy = 2.0 * 12.0 + 60.0 + 0.8 * 9.80665;
+  EXPECT_NEAR(L.contact_force_N[i60], fy, 1e-9);
+  EXPECT_NEAR(L.camshaft_torque_Nm[i60], fy * vmax * 1e-3, 1e-9);
+  // Hertz at 60°: a plane on a cylinder of radius ρ = r_b + h/2 (S'' = 0), p₀ = sqrt(F E*/(π w ρ)),
+  // E* = E/(2(1 − ν²)), w = 12 mm.
+  const double e_star = 206000.0 / (2 * (1 - 0.09));
+  EXPECT_NEAR(L.contact_stress_MPa[i60], std::sqrt(fy * e_star / (kPiHere * 12.0 * (40.0 + 12.0))), 1e-9);
+  // Kinetostatic jump speed: the follower leaves where m S'' ω² + k S + F₀ + m g = 0, S'' < 0, i.e.
+  // ω² = min (k S + F₀ + m g)/(−m S''·1e-3); by the same dense scan.
+  double w2 = 1e300;
+  for (int i = 0; i < 36000; ++i) {
+    const Svaj3 p = Program(2 * kPiHere * i / 36000);
+    if (p.a < 0) w2 = std::min(w2, (2.0 * p.s + 60.0 + 0.8 * 9.80665) / (-0.8 * p.a * 1e-3));
+  }
+  EXPECT_NEAR(j["dynamics"]["jump_speed_rpm"].get<double>(), std::sqrt(w2) * 60 / (2 * kPiHere), 0.05);
+}
+
+TEST(DiscCamFlatFacedStudy, TooSmallABaseCircleFailsTheVerdictWithTheNumbers) {
+  // r_b = 5 mm: ρ = 5 + S + S'' < 0 on the rise (at 90°: 5 + h (3/4 + 1/(2π)) − 2πh/β² = −7.56 mm).
+  json study = Example("disc_cam_flat_faced.json");
+  study["base_circle_radius_mm"] = 5;
+  study.erase("dynamics");
+  study.erase("material");
+  study["limits"].erase("contact_stress_MPa");
+  study.erase("limits");
+  const Ran ran = ParseAndRun(study);
+  const json& ff = ran.out["flat_face"];
+  const double rho90 = 5.0 + kH * (0.75 + 1 / (2 * kPiHere)) - 2 * kPiHere * kH / (kBeta * kBeta);
+  EXPECT_LT(rho90, 0.0);
+  EXPECT_NEAR(ff["min_radius_of_curvature_mm"].get<double>(), HandMinRho(5.0), 1e-5);
+  EXPECT_LE(ff["min_radius_of_curvature_mm"].get<double>(), rho90);
+  EXPECT_EQ(ff["radius_margin_limit_mm"].get<double>(), 0.0);  // the default: a convex cam
+  EXPECT_FALSE(ff["radius_margin_ok"].get<bool>());
+  EXPECT_TRUE(ff["cusp"].get<bool>());
+  EXPECT_FALSE(ff["cusp_cam_angle_deg"].empty());
+  EXPECT_FALSE(ran.out["limits_ok"].get<bool>());
+  // Tolerances are read but not used without a roller: a note says so, no error is computed.
+  json tol = Example("disc_cam_flat_faced.json");
+  tol["tolerances"] = {{"profile_radial_um", 19}};
+  const Ran t = ParseAndRun(tol);
+  EXPECT_FALSE(t.result.error_evaluated);
+  EXPECT_FALSE(t.out.contains("worst_case_error_um"));
+  EXPECT_NE(t.out["notes"].dump().find("tolerances are not used"), std::string::npos);
+  // A face narrower than the contact's travel (40 < 2·2h/β = 45.84 mm) fails too.
+  json narrow = Example("disc_cam_flat_faced.json");
+  narrow["follower"]["face_width_mm"] = 40;
+  const Ran n = ParseAndRun(narrow);
+  EXPECT_FALSE(n.out["flat_face"]["face_width_ok"].get<bool>());
+  EXPECT_FALSE(n.out["limits_ok"].get<bool>());
+}
+
+TEST(DiscCamKnifeEdgeStudy, ProfileIsTheRollerPitchCurve) {
+  // The roller example (r_b 40, r_f 10, e 12) and a knife edge on a 50 mm base circle: the knife's
+  // profile is the roller's pitch curve, point by point; its smallest radius the pitch curve's.
+  json roller = Example("disc_cam_translating.json");
+  roller["analysis"] = {{"angle_steps", 3600}, {"evaluate", {"profile"}}};
+  json knife = Example("disc_cam_knife_edge.json");
+  knife["base_circle_radius_mm"] = 50;
+  const Ran r = ParseAndRun(roller), k = ParseAndRun(knife);
+  const auto &rs = r.result.series, &ks = k.result.series;
+  ASSERT_EQ(rs.pitch_x_mm.size(), ks.contact_x_mm.size());
+  for (size_t i = 0; i < rs.pitch_x_mm.size(); ++i) {
+    EXPECT_NEAR(ks.contact_x_mm[i], rs.pitch_x_mm[i], 1e-9) << i;
+    EXPECT_NEAR(ks.contact_y_mm[i], rs.pitch_y_mm[i], 1e-9) << i;
+    EXPECT_NEAR(ks.pressure_angle_deg[i], rs.pressure_angle_deg[i], 1e-9) << i;
+  }
+  // The roller's profile radius is ρ_pitch − r_f: the knife's is ρ_pitch.
+  EXPECT_NEAR(k.result.min_radius_of_curvature_mm->value, r.result.min_radius_of_curvature_mm->value + 10.0, 1e-9);
+  EXPECT_FALSE(k.result.undercut);
+  EXPECT_EQ(k.out["limits"]["radius_margin_mm"].get<double>(), 0.0);  // default: no roller
+  // On the base circle the knife sits at sqrt(r_b² − e²) on its axis (eq. 5 with r_f = 0), so
+  // φ = −atan(e/L₀) there.
+  EXPECT_NEAR(ks.pressure_angle_deg[3000], -std::atan(12.0 / std::sqrt(2500.0 - 144.0)) * 180 / kPiHere, 1e-9);
+  EXPECT_FALSE(k.out.contains("dynamics"));
+  EXPECT_FALSE(k.out.contains("worst_case_error_um"));
+}
+
+struct BadCase {
+  const char* name;
+  const char* example;
+  const char* patch;  // a JSON merge patch applied to the example
+  const char* path;   // the JSON path the message must name
+  const char* words;  // and a phrase it must contain
+};
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+class DiscCamFollowerTypesBadInput : public ::testing::TestWithParam<BadCase> {};
+TEST_P(DiscCamFollowerTypesBadInput, ExitCode2AndTheJsonPath) {
+  const BadCase& c = GetParam();
+  json study = Example(c.example);
+  study.merge_patch(json::parse(c.patch));
+  camopt::testing::ExpectStudyRejected(study, std::string("disc-cam-types-") + c.name, c.path, c.words);
+}
+const char* kF = "disc_cam_flat_faced.json";
+const char* kK = "disc_cam_knife_edge.json";
+INSTANTIATE_TEST_SUITE_P(
+    Cases, DiscCamFollowerTypesBadInput,
+    ::testing::Values(
+        BadCase{"flat_roller", kF, R"({"follower": {"roller_radius_mm": 10}})", "/follower/roller_radius_mm",
+                "unknown field"},
+        BadCase{"flat_offset", kF, R"({"follower": {"offset_mm": 5}})", "/follower/offset_mm", "unknown field"},
+        BadCase{"flat_error_stage", kF, R"({"analysis": {"evaluate": ["profile", "error"]}})", "/analysis/evaluate/1",
+                "roller followers only"},
+        BadCase{"flat_cutter", kF, R"({"cutter_radius_mm": 5})", "/cutter_radius_mm", "roller follower only"},
+        BadCase{"flat_inside", kF, R"({"motion": [{"law": "cycloidal", "rise_mm": -10, "cam_angle_deg": 180},
+            {"law": "cycloidal", "rise_mm": 10, "cam_angle_deg": 180}]})", "/motion", "inside the base circle"},
+        BadCase{"knife_roller", kK, R"({"follower": {"roller_radius_mm": 10}})", "/follower/roller_radius_mm",
+                "unknown field"},
+        BadCase{"knife_face", kK, R"({"follower": {"face_width_mm": 10}})", "/follower/face_width_mm",
+                "unknown field"},
+        BadCase{"knife_stress", kK,
+                R"({"limits": {"contact_stress_MPa": 1000}, "face_width_mm": 10,
+                    "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
+                    "dynamics": {"speed_rpm": 100, "follower_mass_kg": 1}})",
+                "/limits/contact_stress_MPa", "at a point"},
+        BadCase{"knife_cutter", kK, R"({"cutter_radius_mm": 5})", "/cutter_radius_mm", "roller follower only"},
+        BadCase{"knife_oscillating_dynamics", kK,
+                R"({"follower": {"type": "oscillating_knife_edge", "offset_mm": null, "pivot_distance_mm": 100,
+                    "arm_length_mm": 80}, "motion": [{"law": "cycloidal", "rise_deg": 20, "cam_angle_deg": 120},
+                    {"law": "dwell", "cam_angle_deg": 50}, {"law": "cycloidal", "rise_deg": -20, "cam_angle_deg": 120},
+                    {"law": "dwell", "cam_angle_deg": 70}], "dynamics": {"speed_rpm": 100, "follower_mass_kg": 1}})",
+                "/dynamics", "translating followers only"},
+        BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",
+                "/follower/roller_radius_mm", "missing required field"}));
+
+}  // namespace
+}  // namespace camopt
