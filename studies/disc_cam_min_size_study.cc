@@ -112,7 +112,7 @@ Study Parse(const Node& root) {
   }
   s.name = in.design.name;
   const dc::DiscCam& cam = s.base.cam;
-  if (cam.follower != dc::FollowerType::kTranslatingRoller)
+  if (cam.follower != dc::FollowerType::kTranslatingRoller || s.base.contact != disc_cam::Study::Contact::kRoller)
     root["follower"]["type"].FailWith(
         "disc_cam_min_size sizes a translating roller follower (variables base_circle_radius_mm, offset_mm, "
         "roller_radius_mm); an oscillating follower's pivot and arm are not sizing variables yet, nor are knife-edge "

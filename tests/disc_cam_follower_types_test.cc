@@ -213,6 +213,12 @@ INSTANTIATE_TEST_SUITE_P(
                     {"law": "dwell", "cam_angle_deg": 50}, {"law": "cycloidal", "rise_deg": -20, "cam_angle_deg": 120},
                     {"law": "dwell", "cam_angle_deg": 70}], "dynamics": {"speed_rpm": 100, "follower_mass_kg": 1}})",
                 "/dynamics", "translating followers only"},
+        BadCase{"min_size_knife", "disc_cam_min_size.json",
+                R"({"follower": {"type": "translating_knife_edge", "roller_radius_mm": null}})", "/follower/type",
+                "knife-edge"},
+        BadCase{"min_size_flat", "disc_cam_min_size.json",
+                R"({"follower": {"type": "translating_flat_faced", "roller_radius_mm": null, "offset_mm": null}})",
+                "/follower/type", "flat-faced"},
         BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",
                 "/follower/roller_radius_mm", "missing required field"}));
 
