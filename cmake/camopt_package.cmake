@@ -38,10 +38,9 @@ foreach(room model objectives optimizers sizing studies cad)
     install(FILES ${PROJECT_SOURCE_DIR}/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/camopt/${header_dir})
   endforeach()
 endforeach()
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/schema DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt
-        FILES_MATCHING PATTERN "*.json")
-# The schemas of the kinds declared once (studies/archive.h) exist only as `camopt schema KIND`:
-# every kind's schema is written from the built binary (the hand-kept ones come out the same).
+# Every kind is declared once (studies/archive.h): its schema exists only as `camopt schema KIND`,
+# written here from the built binary into share/camopt/schema/ (created first).
+install(DIRECTORY DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt/schema)
 install(CODE "
   execute_process(COMMAND $<TARGET_FILE:camopt> kinds OUTPUT_VARIABLE camopt_kinds COMMAND_ERROR_IS_FATAL ANY)
   string(REPLACE \"\\n\" \";\" camopt_kinds \"\${camopt_kinds}\")

@@ -46,36 +46,17 @@ const char* ContactModelName(lcr::ContactModel m) {
   return "line";
 }
 
-LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& reducer) {
-  LcrContactInput in;
-  bool crowned = false;
-  const Node red = root["reducer"];
-  for (const char* side : {"input", "output"}) {
-    const Node s = red[side];
-    if (!s.Has("crowning")) continue;
-    auto& c = std::string(side) == "input" ? in.input_crowning : in.output_crowning;
-    c = ParseRollerCrowning(s["crowning"], Value(reducer.side(std::string(side) == "input" ? lcr::Side::kInput
-                                                                                      : lcr::Side::kOutput)
-                                                    .roller_length));
-    crowned = crowned || c.type != contact::CrowningType::kNone;
-  }
-  if (root.Has("contact")) {
-    in.given = true;
-    in.options = ParseContactOptions(root["contact"]);
-  }
-  if (crowned && in.options.model == lcr::ContactModel::kLine) {
-    if (in.given && root["contact"].Has("model")) root["contact"]["model"].Fail("slices or half_space with crowned rollers (the line model ignores crowning)");
-    root.FailWith("crowned rollers need \"contact\": {\"model\": \"slices\" or \"half_space\"} (the line model ignores crowning)");
-  }
-  return in;
-}
-
-nlohmann::ordered_json LcrCrowningInput::SchemaRules() {
+namespace {
+// The crowning's rules by type; coefficient_required: a logarithmic crown needs its coefficient.
+nlohmann::ordered_json CrowningRules(bool coefficient_required) {
+  const std::vector<const char*> logarithmic =
+      coefficient_required ? std::vector<const char*>{"coefficient_mm", "effective_length_mm"}
+                           : std::vector<const char*>{"effective_length_mm"};
   // type → (the fields it requires, the fields it refuses)
   const std::vector<std::tuple<const char*, std::vector<const char*>, std::vector<const char*>>> types = {
       {"circular", {"radius_mm"}, {}},
       {"partial", {"radius_mm", "flat_length_mm"}, {}},
-      {"logarithmic", {"coefficient_mm", "effective_length_mm"}, {}},
+      {"logarithmic", logarithmic, {}},
       {"none", {}, {"radius_mm", "flat_length_mm", "coefficient_mm", "effective_length_mm"}},
       {"circular", {}, {"flat_length_mm", "coefficient_mm", "effective_length_mm"}},
       {"partial", {}, {"coefficient_mm", "effective_length_mm"}},
@@ -90,6 +71,11 @@ nlohmann::ordered_json LcrCrowningInput::SchemaRules() {
   }
   return {{"allOf", all}};
 }
+}  // namespace
+
+nlohmann::ordered_json LcrCrowningInput::SchemaRules() { return CrowningRules(true); }
+
+nlohmann::ordered_json LcrSizedCrowningInput::SchemaRules() { return CrowningRules(false); }
 
 nlohmann::ordered_json LcrContactOptionsInput::GridSchema() {
   const lcr::ContactModelOptions defaults;
@@ -127,10 +113,6 @@ lcr::ContactModelOptions ToContactOptions(const LcrContactOptionsInput& in, cons
     c.FailWith("model must be " + want);
   }
   return o;
-}
-
-lcr::ContactModelOptions ParseContactOptions(const Node& c) {
-  return ToContactOptions(Read<LcrContactOptionsInput>(c), c);
 }
 
 }  // namespace camopt::studies

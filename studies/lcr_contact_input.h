@@ -41,8 +41,16 @@ struct LcrCrowningInput {
   static nlohmann::ordered_json SchemaRules();
 };
 
+/// The crowning of rollers that are sized (lcr_min_size's fixed.crowning): as LcrCrowningInput, but a
+/// logarithmic crown's coefficient_mm may be left out (a sizing variable then).
+struct LcrSizedCrowningInput : LcrCrowningInput {
+  /// Each type's fields required (a logarithmic crown's effective length only), the fields of the
+  /// other types refused.
+  static nlohmann::ordered_json SchemaRules();
+};
+
 /// The "contact" object: the finite-length roller contact model (docs/lcr.md, "Crowned rollers and
-/// 3D contact"), declared once. ParseContactOptions reads it (misalignment needs a model other than
+/// 3D contact"), declared once. ToContactOptions converts it (misalignment needs a model other than
 /// line).
 struct LcrContactOptionsInput {
   /// Absent: line, unless the study's crowning or misalignment asks for another (no schema default).
@@ -74,15 +82,6 @@ struct LcrContactInput {
   lcr::ContactModelOptions options;
   lcr::RollerCrowning<double> input_crowning, output_crowning;
 };
-
-/// Reads root["contact"] and root["reducer"][side]["crowning"]; checks each crowning against its
-/// roller length. Crowning or misalignment with model "line" (the default) is a StudyError (exit
-/// 2: the line model ignores them).
-LcrContactInput ParseLcrContact(const Node& root, const lcr::Reducer<double>& reducer);
-
-/// The "contact" object itself (model, slices, grid, misalignment_mrad; misalignment with model
-/// "line" is a StudyError).
-lcr::ContactModelOptions ParseContactOptions(const Node& contact);
 
 /// One roller "crowning" object, checked against the roller length. coefficient_given = false:
 /// a logarithmic crown's coefficient_mm may be absent (a sizing variable), 0 then.

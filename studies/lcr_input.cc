@@ -23,23 +23,6 @@ lcr::CamSide<double> SideOf(const LcrSideInput& in, const Node& s) {
   return c;
 }
 
-// A side of a kind that adds the crowning or the bearing ratings to the declared fields.
-lcr::CamSide<double> ParseSide(const Node& s, bool allow_crowning, bool allow_ratings) {
-  archive_detail::NameCollector names;
-  LcrSideInput in;
-  in.Serialize(&names);
-  std::set<std::string> known = names.names;
-  if (allow_crowning) known.insert("crowning");  // read by studies/lcr_contact_input.h
-  if (allow_ratings) known.insert({"dynamic_rating_N", "static_rating_N"});  // the roller bearing's C, C0
-  s.CheckKnownFields(known);
-  JsonReader reader(s);
-  in.Serialize(&reader);
-  // Read by the kinds with the bearing life: a number > 0 wherever given.
-  for (const char* optional : {"dynamic_rating_N", "static_rating_N"})
-    if (s.Has(optional)) s[optional].Positive();
-  return SideOf(in, s);
-}
-
 lcr::Reducer<double> Checked(const lcr::Reducer<double>& r, const Node& node) {
   const auto problems = lcr::CheckDesign(r);
   if (!problems.empty()) {
@@ -62,18 +45,7 @@ lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node) {
   return Checked(r, node);
 }
 
-lcr::Reducer<double> ParseReducer(const Node& node, bool allow_crowning, bool allow_bearing_ratings) {
-  if (!allow_crowning && !allow_bearing_ratings) return ToReducer(Read<LcrReducerInput>(node), node);
-  if (allow_bearing_ratings)
-    node.CheckKnownFields({"eccentricity_mm", "input", "output", "eccentric_bearing"});
-  else
-    node.CheckKnownFields({"eccentricity_mm", "input", "output"});
-  lcr::Reducer<double> r;
-  r.eccentricity = node["eccentricity_mm"].Positive();
-  r.input = ParseSide(node["input"], allow_crowning, allow_bearing_ratings);
-  r.output = ParseSide(node["output"], allow_crowning, allow_bearing_ratings);
-  return Checked(r, node);
-}
+lcr::Reducer<double> ParseReducer(const Node& node) { return ToReducer(Read<LcrReducerInput>(node), node); }
 
 double ParseCutterDiameter(const Node& side, double roller_diameter) {
   if (!side.Has("cutter_diameter_mm")) return roller_diameter;
@@ -82,17 +54,6 @@ double ParseCutterDiameter(const Node& side, double roller_diameter) {
   if (d > roller_diameter)
     n.Fail("a cutter diameter <= the roller diameter (" + std::to_string(roller_diameter) + " mm)");
   return d;
-}
-
-EccentricBearingRating ParseEccentricBearing(const Node& eb) {
-  eb.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
-  EccentricBearingRating b;
-  const std::string kind = eb["kind"].String();
-  if (kind != "ball" && kind != "roller") eb["kind"].Fail("one of ball, roller");
-  b.ball = kind == "ball";
-  b.dynamic_N = eb["dynamic_rating_N"].Positive();
-  b.static_N = eb.PositiveOr("static_rating_N", 0.0);
-  return b;
 }
 
 nlohmann::ordered_json LcrDutyCycleSchema() {

@@ -138,26 +138,20 @@ using LcrRatedReducerInput = LcrReducerWithRatingsInput<LcrRatedSideInput>;
 /// messages. @throws StudyError naming the JSON path.
 lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node);
 
-/// Reads {"eccentricity_mm", "input": {...}, "output": {...}}; each side has lobes, rollers,
-/// turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm. Checks the design
-/// (lobes < rollers, rollers that overlap, …) and throws StudyError naming the JSON path.
-/// allow_crowning: the sides may carry a "crowning" object (kinds with the finite-length contact).
-/// allow_bearing_ratings: the sides may carry the rollers' "dynamic_rating_N" / "static_rating_N"
-/// and the reducer an "eccentric_bearing" (kinds with the bearing life; read by the kind, checked
-/// here to be > 0 wherever given).
-lcr::Reducer<double> ParseReducer(const Node& reducer, bool allow_crowning = false, bool allow_bearing_ratings = false);
+/// Reads {"eccentricity_mm", "input": {...}, "output": {...}} (LcrReducerInput) and checks the
+/// design (lobes < rollers, rollers that overlap, …); throws StudyError naming the JSON path.
+lcr::Reducer<double> ParseReducer(const Node& reducer);
 
 /// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
 /// must be > 0 and <= the roller diameter.
 double ParseCutterDiameter(const Node& side, double roller_diameter);
 
-/// The ratings of an eccentric bearing {"dynamic_rating_N" > 0, "static_rating_N" > 0 (optional),
-/// "kind": "ball" | "roller"}: C, C0 (0 when not given) and whether it is a ball bearing.
+/// The ratings of an eccentric bearing (EccentricBearingInput): C, C0 (0 when not given) and
+/// whether it is a ball bearing.
 struct EccentricBearingRating {
   double dynamic_N = 0.0, static_N = 0.0;
   bool ball = false;
 };
-EccentricBearingRating ParseEccentricBearing(const Node& node);
 
 /// The schema of an LCR kind's "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h):
 /// lines of output torque T_o [N·m], input speed [rpm] and time share.

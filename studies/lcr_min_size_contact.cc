@@ -42,55 +42,46 @@ nlohmann::json MaybeFinite(double v) { return std::isfinite(v) ? nlohmann::json(
 
 }  // namespace
 
-std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm, bool catalogue) {
+std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
+                                                          bool catalogue) {
+  const Input::Variables& v = in.variables;
   const Node vars = root["variables"], fixed = root["fixed"];
-  const char* crown_vars[] = {"crowning_coefficient_mm", "crowning_radius_mm", "crowning_flat_length_mm"};
-  const char* length_vars[] = {"roller_length_mm", "cam_thickness_mm"};
-  bool has_var = false, has_length_var = false;
-  for (const char* v : crown_vars) has_var = has_var || vars.Has(v);
-  for (const char* v : length_vars) has_length_var = has_length_var || vars.Has(v);
-  const bool has_contact = root.Has("contact"), has_crown = fixed.Has("crowning"),
-             has_over = root.Has("load") && root["load"].Has("overload_torque_Nm");
+  const bool has_var = v.crowning_coefficient_mm || v.crowning_radius_mm || v.crowning_flat_length_mm;
+  const bool has_length_var = v.roller_length_mm || v.cam_thickness_mm;
+  const bool has_contact = in.contact.has_value(), has_crown = in.fixed.crowning.has_value(),
+             has_over = in.load.overload_torque_Nm.has_value();
   if (!has_contact && !has_crown && !has_var && !has_length_var && !has_over) return std::nullopt;
   objectives::LcrSizing3DSpec s;
-  if (has_contact) s.contact = ParseContactOptions(root["contact"]);
+  if (has_contact) s.contact = ToContactOptions(*in.contact, root["contact"]);
   // The roller length variable's upper end is the longest roller the crowning must fit.
   double longest = roller_length_mm;
-  if (vars.Has("roller_length_mm")) {
-    const Node v = vars["roller_length_mm"];
-    if (catalogue) v.Fail("no roller length variable with a roller catalogue (the catalogue gives the lengths)");
-    const auto [lo, hi] = v.Range();
-    if (!(lo > 0)) v.Fail("a [lo, hi] range with 0 < lo < hi mm");
-    s.roller_length_range_mm = std::array<double, 2>{lo, hi};
-    longest = std::max(longest, hi);
+  if (v.roller_length_mm) {
+    const Node n = vars["roller_length_mm"];
+    if (catalogue) n.Fail("no roller length variable with a roller catalogue (the catalogue gives the lengths)");
+    s.roller_length_range_mm = OrderedRange(*v.roller_length_mm, n);
+    longest = std::max(longest, (*s.roller_length_range_mm)[1]);
   }
-  if (vars.Has("cam_thickness_mm")) {
-    const Node v = vars["cam_thickness_mm"];
-    const auto [lo, hi] = v.Range();
-    if (!(lo > 0)) v.Fail("a [lo, hi] range with 0 < lo < hi mm");
-    s.cam_thickness_range_mm = std::array<double, 2>{lo, hi};
-  }
+  if (v.cam_thickness_mm) s.cam_thickness_range_mm = OrderedRange(*v.cam_thickness_mm, vars["cam_thickness_mm"]);
   if (has_crown)
-    s.crowning = ParseRollerCrowning(fixed["crowning"], longest, !vars.Has("crowning_coefficient_mm"));
+    s.crowning = ParseRollerCrowning(fixed["crowning"], longest, !v.crowning_coefficient_mm);
   using contact::CrowningType;
-  const auto range = [&](const char* name, std::initializer_list<CrowningType> types, const char* want,
-                         double lo_min, double hi_max) -> std::optional<std::array<double, 2>> {
-    if (!vars.Has(name)) return std::nullopt;
-    const Node v = vars[name];
+  // A crowning variable of the fixed crowning's type (its bounds are the declaration's).
+  const auto range = [&](const std::optional<std::array<double, 2>>& value, const char* name,
+                         std::initializer_list<CrowningType> types,
+                         const char* want) -> std::optional<std::array<double, 2>> {
+    if (!value) return std::nullopt;
+    const Node n = vars[name];
     if (!has_crown || std::find(types.begin(), types.end(), s.crowning.type) == types.end())
-      v.Fail(std::string("a range only with fixed.crowning ") + want + " (its fixed value is the start)");
-    const auto [lo, hi] = v.Range();
-    if (!(lo >= lo_min) || !(hi <= hi_max))
-      v.Fail("a [lo, hi] range with " + Format(lo_min) + " <= lo < hi <= " + Format(hi_max) + " mm");
-    return std::array<double, 2>{lo, hi};
+      n.Fail(std::string("a range only with fixed.crowning ") + want + " (its fixed value is the start)");
+    return OrderedRange(*value, n);
   };
   // A coefficient of 0 is a straight roller: a design a user may want inside the range.
-  s.coefficient_range_mm = range("crowning_coefficient_mm", {CrowningType::kLogarithmic},
-                                 "{\"type\": \"logarithmic\", \"effective_length_mm\": Le}", 0.0, 1.0);
-  s.radius_range_mm = range("crowning_radius_mm", {CrowningType::kCircular, CrowningType::kPartial},
-                            "{\"type\": \"circular\" or \"partial\", \"radius_mm\": R, ...}", 1e-9, 1e6);
-  s.flat_length_range_mm = range("crowning_flat_length_mm", {CrowningType::kPartial},
-                                 "{\"type\": \"partial\", \"radius_mm\": R, \"flat_length_mm\": L0}", 0.0, 1e6);
+  s.coefficient_range_mm = range(v.crowning_coefficient_mm, "crowning_coefficient_mm", {CrowningType::kLogarithmic},
+                                 "{\"type\": \"logarithmic\", \"effective_length_mm\": Le}");
+  s.radius_range_mm = range(v.crowning_radius_mm, "crowning_radius_mm", {CrowningType::kCircular, CrowningType::kPartial},
+                            "{\"type\": \"circular\" or \"partial\", \"radius_mm\": R, ...}");
+  s.flat_length_range_mm = range(v.crowning_flat_length_mm, "crowning_flat_length_mm", {CrowningType::kPartial},
+                                 "{\"type\": \"partial\", \"radius_mm\": R, \"flat_length_mm\": L0}");
   // Every point of the ranges must fit the longest roller: the smallest radius over the longest
   // crowned length (the shortest flat), the longest flat.
   if (s.radius_range_mm || s.flat_length_range_mm) {
@@ -107,10 +98,9 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, doub
           "a range the crowning fits at both ends: " + problem);
   }
   if (has_over) {
-    const Node over = root["load"]["overload_torque_Nm"];
-    s.overload_torque_Nmm = over.Positive() * 1000.0;
-    if (!(s.overload_torque_Nmm >= root["target"]["output_torque_Nm"].Number() * 1000.0))
-      over.Fail("an overload torque >= the target's output_torque_Nm");
+    s.overload_torque_Nmm = *in.load.overload_torque_Nm * 1000.0;
+    if (!(s.overload_torque_Nmm >= in.target.output_torque_Nm * 1000.0))
+      root["load"]["overload_torque_Nm"].Fail("an overload torque >= the target's output_torque_Nm");
   }
   if (s.contact.model == lcr::ContactModel::kLine) {
     // Under the line model the stress only falls as a roller or cam gets longer and nothing else
@@ -121,7 +111,7 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, doub
                                                  : "";
     if (!why.empty()) {
       const std::string want = "slices or half_space with " + why + " (the line model ignores them)";
-      if (has_contact && root["contact"].Has("model")) root["contact"]["model"].Fail(want);
+      if (has_contact && in.contact->model) root["contact"]["model"].Fail(want);
       root.FailWith(std::string("\"contact\": {\"model\": ...} must be ") + want);
     }
     return std::nullopt;  // "contact": {"model": "line"}: the fast path

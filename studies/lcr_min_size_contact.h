@@ -13,6 +13,7 @@
 
 namespace camopt::studies::lcr_min_size {
 
+struct Input;
 struct Study;
 struct Candidate;
 struct Result;
@@ -22,7 +23,8 @@ struct Result;
 /// length variable). @throws StudyError: crowning, misalignment, an overload torque or a crowning
 /// or length variable with the line model; a crowning variable the crowning type does not have;
 /// ranges whose ends the crowning does not fit.
-std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Node& root, double roller_length_mm, bool catalogue);
+std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
+                                                          bool catalogue);
 
 /// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d).
 void SolveCandidate3D(const Study& s, Candidate& c);

@@ -38,38 +38,33 @@ nlohmann::json MonteCarloJson(const objectives::LcrMonteCarloCheck& c) {
 
 }  // namespace
 
-void ParseRobust(const Node& root, Study& s) {
-  const std::optional<LcrToleranceSpec> tol = ParseLcrTolerances(root);
-  if (!root.Has("robust")) {
+void ParseRobust(const Input& in, const Node& root, Study& s) {
+  // "monte_carlo" without "tolerances" is refused here (ToToleranceSpec).
+  const std::optional<LcrToleranceSpec> tol = ToToleranceSpec(in.tolerances, std::nullopt, root);
+  if (!in.robust) {
     if (tol) root["tolerances"].Fail("no \"tolerances\" without \"robust\" in lcr_min_size");
     return;
   }
   const Node r = root["robust"];
   if (!tol) r.Fail("\"robust\" with \"tolerances\" beside it");
-  r.CheckKnownFields({"method", "k"});
   auto rule = std::make_shared<objectives::LcrRobustRule>();
   rule->bands = tol->bands;
   if (!rule->bands.any()) root["tolerances"].Fail("at least one tolerance band > 0");
-  const std::string method = r["method"].String();
-  if (method == "worst_case") {
+  if (in.robust->method == "worst_case") {
     rule->method = objectives::LcrRobustMethod::kWorstCase;
-    if (r.Has("k")) r["k"].Fail("no \"k\" with \"worst_case\" (k belongs to \"sigma\")");
-  } else if (method == "sigma") {
-    rule->method = objectives::LcrRobustMethod::kSigma;
-    rule->k = r.Has("k") ? r["k"].NumberIn(0.1, 10.0) : 3.0;
+    if (in.robust->k) r["k"].Fail("no \"k\" with \"worst_case\" (k belongs to \"sigma\")");
   } else {
-    r["method"].Fail("\"worst_case\" or \"sigma\"");
+    rule->method = objectives::LcrRobustMethod::kSigma;
+    rule->k = in.robust->k.value_or(3.0);
   }
   if (s.form != objectives::LcrConstraintForm::kAggregate)
     root["optimizer"]["constraints"].Fail("\"aggregate\" with \"robust\" (the robust solve picks its own forms)");
   s.robust = rule;
   s.base.robust = nullptr;  // the nominal search stays nominal; RunRobust sets it per candidate
-  if (root.Has("monte_carlo")) {
-    const Node m = root["monte_carlo"];
-    s.mc_samples = m.Has("samples") ? tol->samples : s.mc_samples;
-    s.mc_seed = tol->seed;
-    s.mc_angle_steps = m.Has("angle_steps") ? tol->angle_steps : s.mc_angle_steps;
-    if (m.Has("lost_motion_torque_fraction")) m["lost_motion_torque_fraction"].Fail("no lost motion in lcr_min_size");
+  if (in.monte_carlo) {
+    s.mc_samples = in.monte_carlo->samples.value_or(s.mc_samples);
+    s.mc_seed = std::uint64_t(in.monte_carlo->seed.value_or(1));
+    s.mc_angle_steps = in.monte_carlo->angle_steps.value_or(s.mc_angle_steps);
   }
 }
 

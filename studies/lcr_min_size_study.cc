@@ -20,6 +20,7 @@
 #include "studies/lcr_min_size_contact.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_min_size {
@@ -29,33 +30,27 @@ using objectives::LcrConstraintForm;
 using objectives::LcrSizingSpec;
 using objectives::LcrLimits;
 
-std::array<double, 2> PositiveRange(const Node& n) {
-  const auto [lo, hi] = n.Range();
-  if (!(lo > 0)) n.Fail("a [lo, hi] range with lo > 0");
-  return {lo, hi};
-}
-
 // `life_why`: non-empty when a life is asked (then every entry needs its C).
 std::vector<CatalogueRoller> ParseCatalogue(const Node& n, const std::string& life_why) {
   std::vector<CatalogueRoller> out;
   const std::vector<Node> items = n.Elements();
   if (items.empty()) n.Fail("a non-empty list of rollers");
   for (const Node& item : items) {
-    item.CheckKnownFields({"name", "diameter_mm", "length_mm", "load_limit_N", "dynamic_rating_N", "static_rating_N"});
+    const CatalogueRollerInput in = Read<CatalogueRollerInput>(item);
     CatalogueRoller r;
-    r.name = item.StringOr("name", "roller " + std::to_string(out.size() + 1));
-    r.diameter_mm = item["diameter_mm"].Positive();
-    r.length_mm = item["length_mm"].Positive();
-    r.load_limit_N = item["load_limit_N"].Positive();
-    if (!life_why.empty() && !item.Has("dynamic_rating_N")) {
+    r.name = in.name.value_or("roller " + std::to_string(out.size() + 1));
+    r.diameter_mm = in.diameter_mm;
+    r.length_mm = in.length_mm;
+    r.load_limit_N = in.load_limit_N;
+    if (!life_why.empty() && !in.dynamic_rating_N) {
       const std::string path = item.path() + "/dynamic_rating_N";
       const std::string expected = "the roller's dynamic load rating C [N] > 0, as its catalogue gives it (" + life_why + ")";
       throw StudyError(item.file() + ": " + path + ": expected " + expected + ", found nothing; would fit: \"dynamic_rating_N\" "
                            "(and \"static_rating_N\" for s0) on every catalogue entry, or no speed and no life limit",
                        item.file(), path, expected, "nothing");
     }
-    r.dynamic_rating_N = item.PositiveOr("dynamic_rating_N", 0.0);
-    r.static_rating_N = item.PositiveOr("static_rating_N", 0.0);
+    r.dynamic_rating_N = in.dynamic_rating_N.value_or(0.0);
+    r.static_rating_N = in.static_rating_N.value_or(0.0);
     out.push_back(r);
   }
   return out;
@@ -65,21 +60,20 @@ std::vector<CatalogueRoller> ParseCatalogue(const Node& n, const std::string& li
 // ratings ("rollers" without a catalogue: a reference roller whose rating scales with the sized
 // diameter; a catalogue: each entry's own) and the optional "eccentric_bearing". nullopt when no
 // speed and no duty cycle is given.
-std::optional<objectives::LcrLifeSpec> ParseLife(const Node& root, const objectives::LcrSizingSpec& b,
+std::optional<objectives::LcrLifeSpec> ParseLife(const Input& in, const Node& root, const objectives::LcrSizingSpec& b,
                                                  bool catalogue, const std::vector<lcr::LcrDutyLine>* lines,
                                                  const std::string& why) {
   // The ratings' fields are checked whenever given; they are used with a speed or a duty cycle.
-  if (catalogue && root.Has("rollers"))
+  if (catalogue && in.rollers)
     root["rollers"].FailWith("no \"rollers\" ratings with a roller catalogue (each catalogue entry gives its "
                              "dynamic_rating_N and static_rating_N)");
   objectives::LcrLifeSpec life;
-  if (root.Has("rollers")) {
-    const Node r = root["rollers"];
-    r.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "reference_diameter_mm", "reference_length_mm"});
-    life.roller.dynamic_N = r["dynamic_rating_N"].Positive();
-    life.roller.static_N = r.PositiveOr("static_rating_N", 0.0);
-    life.roller.reference_diameter_mm = r["reference_diameter_mm"].Positive();
-    life.roller.reference_length_mm = r.PositiveOr("reference_length_mm", b.roller_length_mm);
+  if (in.rollers) {
+    const Input::Rollers& r = *in.rollers;
+    life.roller.dynamic_N = r.dynamic_rating_N;
+    life.roller.static_N = r.static_rating_N.value_or(0.0);
+    life.roller.reference_diameter_mm = r.reference_diameter_mm;
+    life.roller.reference_length_mm = r.reference_length_mm.value_or(b.roller_length_mm);
   } else if (lines && !catalogue) {
     const std::string path = "/rollers";
     const std::string expected = "{\"dynamic_rating_N\", \"reference_diameter_mm\"} (the rating of a reference roller, "
@@ -89,9 +83,9 @@ std::optional<objectives::LcrLifeSpec> ParseLife(const Node& root, const objecti
                          "\"reference_diameter_mm\": 10} (the catalogue C of a 10 mm roller of the study's length)",
                      root.file(), path, expected, "nothing");
   }
-  if (root.Has("eccentric_bearing")) {
-    const EccentricBearingRating e = ParseEccentricBearing(root["eccentric_bearing"]);
-    life.eccentric = objectives::LcrEccentricRating{e.ball, e.dynamic_N, e.static_N};
+  if (in.eccentric_bearing) {
+    const EccentricBearingInput& e = *in.eccentric_bearing;
+    life.eccentric = objectives::LcrEccentricRating{e.kind == "ball", e.dynamic_rating_N, e.static_rating_N.value_or(0.0)};
   }
   if (!lines) return std::nullopt;
   life.lines = *lines;
@@ -311,56 +305,30 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 }  // namespace
 
 Study Parse(const Node& root) {
-  root.CheckKnownFields({"study", "name", "description", "target", "search", "variables", "fixed", "limits",
-                         "material", "load", "optimizer", "roller_catalogue", "contact", "tolerances", "monte_carlo", "robust",
-                         "duty_cycle", "rollers", "eccentric_bearing"});
+  // Every field's type and bounds; what spans fields follows.
+  const Input in = Read<Input>(root);
   Study s;
-  s.name = root.StringOr("name", "");
-  const Node target = root["target"];
-  target.CheckKnownFields({"speed_ratio", "output_torque_Nm"});
-  const Node ratio = target["speed_ratio"];
-  const double rv = ratio.Number();
-  if (rv != std::round(rv) || std::abs(rv) < 2 || std::abs(rv) > 1e6)
-    ratio.Fail("a whole-number speed ratio with 2 <= |ratio| <= 1e6");
-  s.ratio = static_cast<long>(rv);
-  s.output_torque_Nmm = target["output_torque_Nm"].Positive() * 1000.0;
-  if (root.Has("load")) root["load"].CheckKnownFields({"friction_coefficient", "overload_torque_Nm", "input_speed_rpm"});
+  s.name = in.name;
+  if (std::abs(in.target.speed_ratio) < 2) root["target"]["speed_ratio"].Fail(Input::Target::kRatioText);
+  s.ratio = in.target.speed_ratio;
+  s.output_torque_Nmm = in.target.output_torque_Nm * 1000.0;
   // A life (docs/life.md): a speed or a duty cycle; its ratings are read below.
   std::string life_why;
   const std::optional<std::vector<lcr::LcrDutyLine>> duty = ParseDutyCycle(root, s.output_torque_Nmm, &life_why);
-
-  if (root.Has("search")) {
-    const Node search = root["search"];
-    search.CheckKnownFields({"max_lobes", "roller_lobe_difference"});
-    s.max_lobes = search.IntegerOr("max_lobes", 1, 40);
-    if (s.max_lobes > 200) search["max_lobes"].Fail("a number of lobes <= 200");
-    if (search.Has("roller_lobe_difference")) {
-      s.differences.clear();
-      for (const Node& d : search["roller_lobe_difference"].Elements()) {
-        const int v = d.Integer(1);
-        if (v != 1)
-          d.Fail("1 (a roller-lobe difference above 1 makes the pitch curve wind several times: a "
-                 "self-crossing cam, see lcr::CheckDesign)");
-        s.differences.push_back(v);
-      }
-      if (s.differences.empty()) search["roller_lobe_difference"].Fail("a non-empty list");
-    }
-  }
+  s.max_lobes = in.search.max_lobes;
+  s.differences = in.search.roller_lobe_difference;
 
   LcrSizingSpec& b = s.base;
+  const Input::Variables& v = in.variables;
   const Node vars = root["variables"];
-  vars.CheckKnownFields({"eccentricity_mm", "turret_radius_mm", "roller_diameter_mm", "same_roller_on_both_cams",
-                         "crowning_coefficient_mm", "crowning_radius_mm", "crowning_flat_length_mm",
-                         "roller_length_mm", "cam_thickness_mm"});
-  b.eccentricity_mm = PositiveRange(vars["eccentricity_mm"]);
-  b.turret_radius_mm = PositiveRange(vars["turret_radius_mm"]);
-  if (vars.Has("roller_diameter_mm")) b.roller_diameter_mm = PositiveRange(vars["roller_diameter_mm"]);
-  b.same_roller = vars.BoolOr("same_roller_on_both_cams", true);
+  b.eccentricity_mm = OrderedRange(v.eccentricity_mm, vars["eccentricity_mm"]);
+  b.turret_radius_mm = OrderedRange(v.turret_radius_mm, vars["turret_radius_mm"]);
+  if (v.roller_diameter_mm) b.roller_diameter_mm = OrderedRange(*v.roller_diameter_mm, vars["roller_diameter_mm"]);
+  b.same_roller = v.same_roller_on_both_cams;
 
   const Node fixed = root["fixed"];
-  fixed.CheckKnownFields({"cam_thickness_mm", "roller_length_mm", "crowning"});
-  b.cam_thickness_mm = fixed["cam_thickness_mm"].Positive();
-  if (root.Has("roller_catalogue")) {
+  b.cam_thickness_mm = in.fixed.cam_thickness_mm;
+  if (!in.roller_catalogue.is_null()) {
     Node cat = root["roller_catalogue"];
     if (cat.json().is_object()) {
       // {"file": "rollers.json"}, relative to the study file.
@@ -374,77 +342,63 @@ Study Parse(const Node& root) {
       s.catalogue = ParseCatalogue(cat, life_why);
     }
   } else {
-    b.roller_length_mm = fixed["roller_length_mm"].Positive();
-    if (!vars.Has("roller_diameter_mm")) vars["roller_diameter_mm"];  // throws "missing field"
+    if (!in.fixed.roller_length_mm) (void)fixed["roller_length_mm"];  // "missing required field"
+    b.roller_length_mm = *in.fixed.roller_length_mm;
+    if (!v.roller_diameter_mm) (void)vars["roller_diameter_mm"];  // "missing required field"
   }
 
   if (!b.same_roller && !s.catalogue.empty())
     vars["same_roller_on_both_cams"].Fail("true with a roller catalogue (each catalogue roller is used on both cams)");
-  if (!s.catalogue.empty() && fixed.Has("roller_length_mm"))
+  if (!s.catalogue.empty() && in.fixed.roller_length_mm)
     fixed["roller_length_mm"].FailWith("no fixed roller length with a roller catalogue (the catalogue gives the lengths)");
 
-  const Node limits = root["limits"];
-  limits.CheckKnownFields({"contact_stress_MPa", "roller_load_N", "undercut_margin_mm", "roller_gap_mm", "min_efficiency",
-                           "life_h"});
-  b.limits.contact_stress_MPa = limits.PositiveOr("contact_stress_MPa", kInf);
-  b.limits.roller_load_N = limits.PositiveOr("roller_load_N", kInf);
-  b.limits.undercut_margin_mm = limits.NonNegativeOr("undercut_margin_mm", 0.0);
-  b.limits.roller_gap_mm = limits.NonNegativeOr("roller_gap_mm", 0.0);
-  if (limits.Has("min_efficiency")) b.limits.min_efficiency = limits["min_efficiency"].NumberIn(0.0, 0.999);
-  b.limits.life_h = limits.PositiveOr("life_h", 0.0);
+  const Input::Limits& limits = in.limits;
+  b.limits.contact_stress_MPa = limits.contact_stress_MPa.value_or(kInf);
+  b.limits.roller_load_N = limits.roller_load_N.value_or(kInf);
+  b.limits.undercut_margin_mm = limits.undercut_margin_mm;
+  b.limits.roller_gap_mm = limits.roller_gap_mm;
+  if (limits.min_efficiency) b.limits.min_efficiency = *limits.min_efficiency;
+  b.limits.life_h = limits.life_h.value_or(0.0);
   if (b.limits.life_h > 0 && !duty)
-    limits["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a duty_cycle "
-                              "beside limits.life_h, found neither");
-  if (root.Has("material")) root["material"].CheckKnownFields({"youngs_modulus_GPa", "poisson_ratio"});
-  b.material = root.Has("material") ? ParseMaterial(root["material"]) : lcr::Material{};
+    root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a duty_cycle "
+                                      "beside limits.life_h, found neither");
+  b.material = in.material ? in.material->ToMaterial() : lcr::Material{};
   b.output_torque_Nmm = s.output_torque_Nmm;
-  b.friction_coefficient = root.Has("load") && root["load"].Has("friction_coefficient")
-                               ? root["load"]["friction_coefficient"].NumberIn(0, 1)
-                               : 0.0;
+  b.friction_coefficient = in.load.friction_coefficient;
 
+  const Input::Optimizer& o = in.optimizer;
   optimizers::SolverOptions& solver = s.options.solver;
-  solver.max_evaluations = 200;  // ipopt, see below
-  if (root.Has("optimizer")) {
-    const Node o = root["optimizer"];
-    o.CheckKnownFields({"backend", "constraints", "polish", "samples_per_period", "sharpness", "tolerance",
-                        "max_evaluations", "starts"});
-    solver.backend = o.StringOr("backend", "ipopt");
-    const auto backends = optimizers::Backends();
-    if (std::find(backends.begin(), backends.end(), solver.backend) == backends.end())
-      o["backend"].Fail("one of ipopt, nlopt_slsqp, nlopt_mma, nlopt_cobyla");
-    const std::string form = o.StringOr("constraints", "aggregate");
-    if (form != "aggregate" && form != "samples") o["constraints"].Fail("\"aggregate\" or \"samples\"");
-    s.form = form == "samples" ? LcrConstraintForm::kSamples : LcrConstraintForm::kAggregate;
-    s.options.polish = o.BoolOr("polish", true);
-    b.samples_per_period = o.IntegerOr("samples_per_period", 4, b.samples_per_period);
-    if (b.samples_per_period > 720) o["samples_per_period"].Fail("a whole number between 4 and 720");
-    if (o.Has("sharpness")) b.sharpness = o["sharpness"].Positive();
-    if (o.Has("tolerance")) solver.tolerance = o["tolerance"].NumberIn(1e-14, 1e-2);
-    // Ipopt counts iterations (one gradient each), NLopt evaluations: Ipopt converges in 10–50
-    // iterations here, and a start that needs hundreds is a degenerate one that other starts cover.
-    solver.max_evaluations = o.IntegerOr("max_evaluations", 10, solver.backend == "ipopt" ? 200 : 3000);
-    if (solver.max_evaluations > 100000) o["max_evaluations"].Fail("a whole number between 10 and 100000");
-    s.options.starts = o.IntegerOr("starts", 1, s.options.starts);
-    if (s.options.starts > 5) o["starts"].Fail("a number of starts between 1 and 5");
-  }
+  solver.backend = o.backend;
+  const auto backends = optimizers::Backends();
+  if (std::find(backends.begin(), backends.end(), solver.backend) == backends.end())
+    root["optimizer"]["backend"].Fail("one of ipopt, nlopt_slsqp, nlopt_mma, nlopt_cobyla");
+  s.form = o.constraints == "samples" ? LcrConstraintForm::kSamples : LcrConstraintForm::kAggregate;
+  s.options.polish = o.polish;
+  b.samples_per_period = o.samples_per_period;
+  b.sharpness = o.sharpness;
+  solver.tolerance = o.tolerance;
+  // Ipopt counts iterations (one gradient each), NLopt evaluations: Ipopt converges in 10–50
+  // iterations here, and a start that needs hundreds is a degenerate one that other starts cover.
+  solver.max_evaluations = o.max_evaluations.value_or(solver.backend == "ipopt" ? 200 : 3000);
+  s.options.starts = o.starts;
   solver.max_seconds = 10.0;  // per local solve
   // A local solve that Ipopt ends at its iteration limit is polished by SLSQP from Ipopt's last
   // point (Ipopt may cycle on the kinks of tracked maxima; SLSQP's active set settles them).
   if (solver.backend == "ipopt") solver.fallback_backend = "nlopt_slsqp";
   double longest = b.roller_length_mm;
   for (const CatalogueRoller& r : s.catalogue) longest = std::max(longest, r.length_mm);
-  s.contact3d = ParseContact3D(root, s.catalogue.empty() ? b.roller_length_mm : longest, !s.catalogue.empty());
+  s.contact3d = ParseContact3D(in, root, s.catalogue.empty() ? b.roller_length_mm : longest, !s.catalogue.empty());
   s.options.smooth_form = s.form;
 
   if (objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences).empty())
     throw StudyError(root.file() + ": /target/speed_ratio: no lobe/roller combination with at most " +
                      std::to_string(s.max_lobes) + " lobes gives the ratio " + std::to_string(s.ratio) +
                      " exactly");
-  b.life = ParseLife(root, b, !s.catalogue.empty(), duty ? &*duty : nullptr, life_why);
-  ParseRobust(root, s);
+  b.life = ParseLife(in, root, b, !s.catalogue.empty(), duty ? &*duty : nullptr, life_why);
+  ParseRobust(in, root, s);
   // The life rows and checks are those of the line model's nominal design (objectives/lcr_sizing.h).
   if (b.life && (s.contact3d || s.robust))
-    (duty->size() == 1 && !root.Has("duty_cycle") ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
+    (duty->size() == 1 && in.duty_cycle.is_null() ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
         .FailWith(std::string("bearing lives are sized on the line contact model without tolerances: no speed or duty "
                               "cycle together with ") + (s.contact3d ? "a 3D \"contact\"" : "\"robust\"") +
                   " (remove one of the two)");
@@ -454,6 +408,64 @@ Study Parse(const Node& root) {
     root["robust"].Fail("no \"robust\" block together with a 3D \"contact\" (robust sizing uses the line "
                         "contact model; remove one of the two)");
   return s;
+}
+
+std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n) {
+  if (!(range[0] <= range[1])) n.Fail("[lower, upper] with lower <= upper");
+  return range;
+}
+
+nlohmann::ordered_json Input::CatalogueSchema() {
+  nlohmann::ordered_json item = nlohmann::ordered_json::object();
+  CatalogueRollerInput roller;
+  SchemaEmitter::Describe(&roller, Field(), item);
+  nlohmann::ordered_json file = {
+      {"type", "object"},
+      {"properties", {{"file", {{"description", "the catalogue's file (a list of rollers), relative to the study file"},
+                                {"type", "string"}}}}},
+      {"required", {"file"}},
+      {"additionalProperties", false}};
+  nlohmann::ordered_json list = {{"type", "array"}, {"items", item}};
+  return {{"description", "rollers tried on each combination instead of a continuous d_r: a list of {name, "
+                          "diameter_mm, length_mm, load_limit_N, dynamic_rating_N, static_rating_N} (the roller load "
+                          "limit is the smaller of load_limit_N and limits.roller_load_N; C is required on every "
+                          "entry when a life is asked, C0 gives s0), or {\"file\": \"…\"} of such a list relative to "
+                          "the study file"},
+          {"type", nlohmann::ordered_json::array({"object", "array"})},
+          {"oneOf", {file, list}}};
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  // Robust sizing needs its tolerances (and the tolerances are only for it), the Monte-Carlo the
+  // tolerances; a catalogue gives the rollers' lengths and diameters (else fixed.roller_length_mm
+  // and variables.roller_diameter_mm), and with a life their ratings (else "rollers"); a life limit
+  // needs a speed, given one way; a life is sized on the line model without tolerances.
+  return nlohmann::ordered_json::parse(R"({
+    "dependentRequired": {"robust": ["tolerances"], "tolerances": ["robust"], "monte_carlo": ["tolerances"]},
+    "allOf": [
+      {"if": {"required": ["roller_catalogue"]},
+       "then": {"properties": {"fixed": {"not": {"required": ["roller_length_mm"]}},
+                               "variables": {"not": {"required": ["roller_length_mm"]}}}},
+       "else": {"properties": {"fixed": {"required": ["roller_length_mm"]},
+                               "variables": {"required": ["roller_diameter_mm"]}}}},
+      {"if": {"required": ["limits"], "properties": {"limits": {"required": ["life_h"]}}},
+       "then": {"anyOf": [{"required": ["duty_cycle"]},
+                          {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]}},
+      {"if": {"required": ["duty_cycle"]},
+       "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}},
+      {"if": {"anyOf": [{"required": ["duty_cycle"]},
+                        {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]},
+       "then": {"allOf": [
+         {"not": {"required": ["contact"],
+                  "properties": {"contact": {"required": ["model"],
+                                             "properties": {"model": {"enum": ["slices", "half_space"]}}}}}},
+         {"not": {"required": ["robust"]}},
+         {"if": {"required": ["roller_catalogue"]},
+          "then": {"properties": {"roller_catalogue": {"oneOf": [
+            {"type": "object"}, {"type": "array", "items": {"required": ["dynamic_rating_N"]}}]}}},
+          "else": {"required": ["rollers"]}}]}},
+      {"if": {"required": ["roller_catalogue"]}, "then": {"not": {"required": ["rollers"]}}}
+    ]})");
 }
 
 Result Run(const Study& s, const RunContext& ctx) {
@@ -759,26 +771,110 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
 CAMOPT_REGISTER_STUDY_PARSER("lcr_min_size", [](const Node& root) { (void)Parse(root); });
+CAMOPT_REGISTER_DECLARED_KIND("lcr_min_size", Input, "camopt study: smallest lobe cam reducer for a ratio and torque");
+
+// The declared input of a study, for the knobs and the estimate below, which run before Parse.
+Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the optimizer's tolerance and
 // the angle samples of the smooth phase (the reported numbers come from the 3600-angle check);
-// with the finite-length contact (issue 12) also the slice count of the slices model, which sets
-// the 3D stress rows and the check (an edge peak of straight rollers grows with it).
+// with the finite-length contact also the slice count of the slices model, which sets the 3D
+// stress rows and the check (an edge peak of straight rollers grows with it).
 Fidelity Knobs(const nlohmann::json& study) {
+  const Input in = ReadInput(study, "");
+  const Input::Optimizer defaults;
   Fidelity f;
-  f.knobs.push_back({"optimizer_tolerance", {"/optimizer/tolerance"}, 1e-8, 0.1, false, 0,
+  f.knobs.push_back({"optimizer_tolerance", {"/optimizer/tolerance"}, defaults.tolerance, 0.1, false, 0,
                      "relative optimality / step tolerance of each start"});
-  f.knobs.push_back({"samples_per_period", {"/optimizer/samples_per_period"}, 24, 2, true, 0,
+  f.knobs.push_back({"samples_per_period", {"/optimizer/samples_per_period"}, defaults.samples_per_period, 2, true, 0,
                      "angle samples per load period in the optimizer's problem"});
-  const auto model = nlohmann::json::json_pointer("/contact/model");
-  if (study.contains(model) && study[model] != "line")
-    f.knobs.push_back({"contact_slices", {"/contact/slices"}, 40, 2, true, 0,
+  if (in.contact && in.contact->model && *in.contact->model != "line")
+    f.knobs.push_back({"contact_slices", {"/contact/slices"}, LcrContactOptionsInput{}.slices, 2, true, 0,
                        "slices along the roller (the slices model of the stress rows and the check)"});
   f.headlines = {"/best/outer_diameter_mm", "/best/eccentricity_mm", "/best/max_contact_stress_MPa",
                  "/best/max_roller_force_N", "/best/mean_efficiency"};
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_min_size", Knobs);
+
+// The work limit (studies/work_limits.h), in local optimizations of the line model (24 samples per
+// load period, ~30 ms) ≤ 2e4: lobe counts × differences × catalogue rollers × starts, the 3D polish
+// and verification, the duty cycle's lines, the search for the limit that would fit, the robust
+// Monte-Carlo.
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = ReadInput(study, file);
+  const double lobes = in.search.max_lobes;
+  const double n_diffs = double(in.search.roller_lobe_difference.size());
+  const double starts = in.optimizer.starts;
+  double rollers = 1;
+  const nlohmann::json& cat = in.roller_catalogue;
+  if (cat.is_array()) rollers = std::max<double>(1, double(cat.size()));
+  if (cat.is_object() && cat.contains("file") && cat["file"].is_string()) {
+    // The catalogue file is checked here (regular file, size cap) so that /dev/zero or a huge
+    // file is refused with the JSON path that names it, before any work.
+    std::filesystem::path p(cat["file"].get<std::string>());
+    if (p.is_relative()) p = std::filesystem::path(file).parent_path() / p;
+    std::error_code ec;
+    // A missing file is the kind's to report (after its own checks of the study).
+    if (std::filesystem::exists(p, ec)) {
+      try {
+        const nlohmann::json loaded = LoadStudyFile(p.string());
+        rollers = std::max<double>(1, loaded.is_array() || loaded.is_object() ? double(loaded.size()) : 0.0);
+      } catch (const StudyError& e) {
+        throw StudyError(file + ": /roller_catalogue/file: " + e.what());
+      }
+    }
+  }
+  // A local optimization of the line model (24 samples per load period) is the unit (~30 ms); its
+  // cost grows with the samples. Under the finite-length contact each candidate adds the 3D polish
+  // (about 30 units at 20 slices, a slices solve costing ∝ N³) and the best design's verification
+  // (half_space solves on the grid and on twice it each way: ≈ 40 units at 48×128).
+  const double samples = in.optimizer.samples_per_period;
+  const double per_start = 0.5 + 0.5 * samples / 24.0;
+  const double combos = lobes * n_diffs * rollers;
+  std::vector<WorkTerm> terms = {{combos * starts * per_start, "/search/max_lobes",
+                                  WorkNumber(lobes) + " lobe counts × " + WorkNumber(n_diffs) +
+                                      " roller-lobe differences × " + WorkNumber(rollers) + " catalogue rollers × " +
+                                      WorkNumber(starts) + " starts × " + WorkNumber(per_start) +
+                                      " (samples per period)"}};
+  const bool three_d = (in.contact && in.contact->model && *in.contact->model != "line") || in.fixed.crowning;
+  if (three_d) {
+    const double slices = in.contact ? in.contact->slices : LcrContactOptionsInput{}.slices;
+    terms.push_back({combos * 30 * std::pow(slices / 20.0, 3), "/contact/slices",
+                     WorkNumber(combos) + " candidates × 3D polish with " + WorkNumber(slices) + " slices"});
+    const nlohmann::json g = in.contact ? in.contact->grid : nlohmann::json();
+    const double cells = g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number()
+                             ? std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>())
+                             : 64.0 * 256.0;
+    terms.push_back({40 * 5 * cells / (48.0 * 128.0), "/contact/grid",
+                     "half_space verification on " + WorkNumber(cells) + " cells and four times as many"});
+  }
+  // Bearing lives (docs/life.md): every dense check computes each rated bearing's life per duty
+  // line, one force analysis per angle of its load period (about a third of a unit per line and
+  // polish round of a start; a study's lines multiply it).
+  const nlohmann::json& duty = in.duty_cycle;
+  if (duty.is_array() && duty.size() > 1)
+    terms.push_back({combos * starts * per_start * double(duty.size()), "/duty_cycle",
+                     WorkNumber(combos) + " candidates × " + WorkNumber(starts) + " starts × " +
+                         WorkNumber(double(duty.size())) +
+                         " duty-cycle lines (each line's bearing lives in every dense check)"});
+  // When nothing fits, the message names the limit that would fit (objectives::LimitToFit: up to 13
+  // solves of the closest combination, each up to 8 polish rounds of an infeasible problem, measured
+  // at about 4 units a round and start); a converged result prices its binding limits with fewer
+  // re-solves than that. Counted always: whether anything fits is not known before the search.
+  terms.push_back({13 * 8 * 4 * starts * per_start, "/limits",
+                   "if nothing fits: up to 13 solves × 8 polish rounds × " + WorkNumber(starts) +
+                       " starts to find the limit that would fit"});
+  if (in.robust) {
+    // Two Monte-Carlo checks (robust and nominal best): a sample of 720 angles ≈ 36 ms ≈ 1 unit.
+    const Input::MonteCarlo mc = in.monte_carlo.value_or(Input::MonteCarlo{});
+    const double mc_samples = mc.samples.value_or(200), mc_steps = mc.angle_steps.value_or(720);
+    terms.push_back({2 * mc_samples * mc_steps / 720.0, "/monte_carlo/samples",
+                     "2 × " + WorkNumber(mc_samples) + " Monte-Carlo samples × " + WorkNumber(mc_steps) + " angles"});
+  }
+  return LargestTerm(terms, 2e4 * factor, "local optimizations", 1000);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("lcr_min_size", EstimateWork);
 
 }  // namespace
 

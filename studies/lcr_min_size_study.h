@@ -20,10 +20,316 @@
 #include "sizing/lcr_robust_solve.h"
 #include "objectives/lcr_sizing.h"
 #include "sizing/lcr_sizing3d.h"
+#include "studies/archive.h"
 #include "studies/input.h"
+#include "studies/lcr_contact_input.h"
+#include "studies/lcr_input.h"
+#include "studies/lcr_tolerance_input.h"
+#include "studies/material_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_min_size {
+
+/// A roller of "roller_catalogue" as the study or its catalogue file gives it, declared once.
+struct CatalogueRollerInput {
+  std::optional<std::string> name;
+  double diameter_mm = 0, length_mm = 0, load_limit_N = 0;
+  std::optional<double> dynamic_rating_N, static_rating_N;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("name", &name, Field().Desc("the roller's name in the results (absent: roller N, its place in the list)"));
+    a->Visit("diameter_mm", &diameter_mm, Field().Required().Positive().Unit("mm").Desc("roller diameter d_r"));
+    a->Visit("length_mm", &length_mm, Field().Required().Positive().Unit("mm").Desc("roller length"));
+    a->Visit("load_limit_N", &load_limit_N,
+             Field().Required().Positive().Unit("N").Desc(
+                 "the roller's load limit (the smaller of it and limits.roller_load_N holds)"));
+    a->Visit("dynamic_rating_N", &dynamic_rating_N,
+             Field().Positive().Unit("N").Desc("C, the basic dynamic load rating (ISO 281); required with a speed or "
+                                               "duty cycle"));
+    a->Visit("static_rating_N", &static_rating_N,
+             Field().Positive().Unit("N").Desc("C0, the basic static load rating (ISO 76): s0 is reported when given"));
+  }
+};
+
+/// The study file as declared: each field once, in the file's units, with its default, bounds and
+/// description (studies/archive.h); the blocks shared with the other LCR kinds are those of
+/// studies/lcr_input.h, lcr_contact_input.h, lcr_tolerance_input.h and material_input.h. Parse reads
+/// it and checks what spans fields; `camopt schema lcr_min_size` is emitted from it.
+struct Input {
+  struct Target {
+    int speed_ratio = 0;
+    double output_torque_Nm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("speed_ratio", &speed_ratio,
+               Field().Required().In(-1e6, 1e6, kRatioText)
+                   .Desc("r_i = m_A n_B/(m_A n_B − m_B n_A), matched exactly: a whole number, 2 <= abs(r_i) <= 1e6"));
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Required().Positive().Unit("N·m").Desc("T_o, the output torque"));
+    }
+    static constexpr const char* kRatioText = "a whole-number speed ratio with 2 <= |ratio| <= 1e6";
+    /// |ratio| >= 2.
+    static nlohmann::ordered_json SchemaRules() {
+      return nlohmann::ordered_json::parse(
+          R"({"allOf": [{"properties": {"speed_ratio": {"not": {"minimum": -1, "maximum": 1}}}}]})");
+    }
+  };
+  struct Search {
+    int max_lobes = 40;
+    std::vector<int> roller_lobe_difference{1};
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_lobes", &max_lobes,
+               Field().AtLeast(1).AtMost(200, "a number of lobes <= 200").Desc("the largest lobe count on either cam"));
+      a->Visit("roller_lobe_difference", &roller_lobe_difference,
+               Field().AtLeast(1).AtMost(1, "1 (a roller-lobe difference above 1 makes the pitch curve wind several "
+                                            "times: a self-crossing cam, see lcr::CheckDesign)")
+                   .MinItems(1, "a non-empty list")
+                   .Desc("n − m on each cam: only 1 (above 1 the cam self-crosses)"));
+    }
+  };
+  struct Variables {
+    std::array<double, 2> eccentricity_mm{}, turret_radius_mm{};
+    std::optional<std::array<double, 2>> roller_diameter_mm;
+    bool same_roller_on_both_cams = true;
+    std::optional<std::array<double, 2>> crowning_coefficient_mm, crowning_radius_mm, crowning_flat_length_mm,
+        roller_length_mm, cam_thickness_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const char* range = "[lower, upper], two numbers";
+      const char* positive = "a [lo, hi] range with lo > 0";
+      a->Visit("eccentricity_mm", &eccentricity_mm,
+               Field().Required().Positive(positive).Expect(range).Unit("mm").Desc("[lower, upper] of the eccentricity e"));
+      a->Visit("turret_radius_mm", &turret_radius_mm,
+               Field().Required().Positive(positive).Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of both turret radii r_d"));
+      a->Visit("roller_diameter_mm", &roller_diameter_mm,
+               Field().Positive(positive).Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the roller diameter d_r (one size for both cams unless same_roller_on_both_cams "
+                   "is false); required without a roller catalogue"));
+      a->Visit("same_roller_on_both_cams", &same_roller_on_both_cams,
+               Field().Desc("false: a roller diameter per cam (not with a catalogue)"));
+      a->Visit("crowning_coefficient_mm", &crowning_coefficient_mm,
+               Field().In(0.0, 1.0, "a [lo, hi] range with 0 <= lo < hi <= 1 mm").Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the logarithmic crowning coefficient f of each cam; needs fixed.crowning of type "
+                   "logarithmic (0: a straight roller)"));
+      a->Visit("crowning_radius_mm", &crowning_radius_mm,
+               Field().In(1e-9, 1e6, "a [lo, hi] range with 1e-09 <= lo < hi <= 1e+06 mm").Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the crowning radius R of each cam; needs fixed.crowning of type circular or "
+                   "partial (its radius_mm is the start) and a 3D contact"));
+      a->Visit("crowning_flat_length_mm", &crowning_flat_length_mm,
+               Field().In(0.0, 1e6, "a [lo, hi] range with 0 <= lo < hi <= 1e+06 mm").Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the flat length L0 of each cam's partial crown; needs fixed.crowning of type "
+                   "partial (its flat_length_mm is the start) and a 3D contact"));
+      a->Visit("roller_length_mm", &roller_length_mm,
+               Field().Positive("a [lo, hi] range with 0 < lo < hi mm").Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the roller length of both cams (fixed.roller_length_mm is the start); only with "
+                   "a 3D contact (slices or half_space) and without a roller catalogue"));
+      a->Visit("cam_thickness_mm", &cam_thickness_mm,
+               Field().Positive("a [lo, hi] range with 0 < lo < hi mm").Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of the thickness of both cams (fixed.cam_thickness_mm is the start); only with a 3D "
+                   "contact (slices or half_space)"));
+    }
+  };
+  struct Fixed {
+    double cam_thickness_mm = 0;
+    std::optional<double> roller_length_mm;
+    std::optional<LcrSizedCrowningInput> crowning;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("cam_thickness_mm", &cam_thickness_mm, Field().Required().Positive().Unit("mm").Desc("both cams' thickness"));
+      a->Visit("roller_length_mm", &roller_length_mm,
+               Field().Positive().Unit("mm").Desc("both cams' roller length; required without a roller catalogue"));
+      a->Visit("crowning", &crowning,
+               Field().Desc("roller crowning of both cams (docs/lcr.md); with variables.crowning_coefficient_mm a "
+                            "logarithmic crown without coefficient_mm (the coefficient is a variable per cam); each "
+                            "form takes its own fields only; needs a 3D contact"));
+    }
+  };
+  struct Limits {
+    std::optional<double> contact_stress_MPa, roller_load_N;
+    double undercut_margin_mm = 0, roller_gap_mm = 0;
+    std::optional<double> min_efficiency, life_h;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Positive().Unit("MPa").Desc("the largest Hertz pressure p_max (absent: none)"));
+      a->Visit("roller_load_N", &roller_load_N, Field().Positive().Unit("N").Desc("the largest roller force (absent: none)"));
+      a->Visit("undercut_margin_mm", &undercut_margin_mm,
+               Field().NonNegative().Unit("mm").Desc("smallest 1/κ_max − r_r, the cam's convex radius over the roller's"));
+      a->Visit("roller_gap_mm", &roller_gap_mm,
+               Field().NonNegative().Unit("mm").Desc("smallest gap between neighbouring rollers, 2 r_d sin(π/n) − d_r"));
+      a->Visit("min_efficiency", &min_efficiency,
+               Field().In(0.0, 0.999).Desc("the mean efficiency over the revolution with load.friction_coefficient "
+                                           "(absent: none)"));
+      a->Visit("life_h", &life_h,
+               Field().Positive().Unit("h").Desc(
+                   "the shortest ISO 281 basic rating life L10h of any rated bearing over load.input_speed_rpm or the "
+                   "duty_cycle (docs/life.md); needs a speed"));
+    }
+  };
+  struct Load {
+    double friction_coefficient = 0;
+    std::optional<double> overload_torque_Nm, input_speed_rpm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("friction_coefficient", &friction_coefficient,
+               Field().In(0.0, 1.0).Desc("μ of the eccentric, T_in = (F_t + μ F_r) e (the paper's eq. 32): the "
+                                         "efficiency"));
+      a->Visit("overload_torque_Nm", &overload_torque_Nm,
+               Field().Positive().Unit("N·m").Desc(
+                   ">= target.output_torque_Nm: the pressure must stay off the contact ends at this torque (needs a "
+                   "slices or half_space contact)"));
+      a->Visit("input_speed_rpm", &input_speed_rpm,
+               Field().Positive().Unit("rpm").Desc(
+                   "input speed: the bearing lives at the target torque (a one-line duty cycle; docs/life.md); not "
+                   "with duty_cycle"));
+    }
+  };
+  struct Optimizer {
+    std::string backend = "ipopt", constraints = "aggregate";
+    bool polish = true;
+    int samples_per_period = objectives::LcrSizingSpec{}.samples_per_period;
+    double sharpness = objectives::LcrSizingSpec{}.sharpness;
+    double tolerance = optimizers::SolverOptions{}.tolerance;
+    std::optional<int> max_evaluations;
+    int starts = objectives::LcrMinSizeOptions{}.starts;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend,
+               Field().OneOf({"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"},
+                             "one of ipopt, nlopt_slsqp, nlopt_mma, nlopt_cobyla")
+                   .Desc("the NLP solver (a local solve Ipopt ends at its iteration limit is polished by SLSQP)"));
+      a->Visit("constraints", &constraints,
+               Field().OneOf({"aggregate", "samples"}).Desc(
+                   "form of the smooth phase: the cycle maxima as soft aggregates or one row per angle sample"));
+      a->Visit("polish", &polish,
+               Field().Desc("polish every smooth optimum to the exact cycle maxima (tracked peaks, "
+                            "docs/optimization.md); false only for comparisons"));
+      a->Visit("samples_per_period", &samples_per_period,
+               Field().AtLeast(4).AtMost(720, "a whole number between 4 and 720").Desc(
+                   "angle samples per load period of each cam in the optimizer's problem"));
+      a->Visit("sharpness", &sharpness, Field().Positive().Desc("log-sum-exp sharpness of the aggregates"));
+      a->Visit("tolerance", &tolerance, Field().In(1e-14, 1e-2).Desc("relative optimality / step tolerance of each start"));
+      a->Visit("max_evaluations", &max_evaluations,
+               Field().AtLeast(10).AtMost(100000, "a whole number between 10 and 100000").Desc(
+                   "per start: Ipopt's iterations, NLopt's evaluations (absent: 200 with ipopt, 3000 with NLopt)"));
+      a->Visit("starts", &starts,
+               Field().AtLeast(1).AtMost(5, "a number of starts between 1 and 5").Desc("starting points per combination"));
+    }
+  };
+  /// "monte_carlo" of lcr_min_size: the check of the robust and the nominal best designs against the
+  /// exact compliant model (the fields of lcr_analysis's, other defaults, no lost motion).
+  struct MonteCarlo {
+    /// Absent: 200 samples, seed 1, 720 angle steps (no schema default: the block needs tolerances).
+    std::optional<int> samples, seed, angle_steps;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("samples", &samples,
+               Field().AtLeast(0).AtMost(100000, "at most 100000 samples")
+                   .Desc("Monte-Carlo samples of the exact model (absent: 200)"));
+      a->Visit("seed", &seed, Field().AtLeast(0).Desc("seed of the samples (absent: 1)"));
+      a->Visit("angle_steps", &angle_steps,
+               Field().AtLeast(4).AtMost(3600, "at most 3600 angle steps")
+                   .Desc("input angles over a revolution (absent: 720)"));
+      a->Retired("lost_motion_torque_fraction", "no lost motion in lcr_min_size (lcr_analysis computes it)");
+    }
+  };
+  struct Robust {
+    std::string method;
+    std::optional<double> k;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("method", &method,
+               Field().Required().OneOf({"worst_case", "sigma"}).Desc(
+                   "worst_case over the band box, or mean + k sigma with uniform deviations, of the linearised "
+                   "constraints"));
+      a->Visit("k", &k, Field().In(0.1, 10.0).Desc("sigma only: k of mean + k sigma (absent: 3)"));
+    }
+  };
+  /// "rollers": the ratings of a reference roller, scaled with the sized one (without a catalogue).
+  struct Rollers {
+    double dynamic_rating_N = 0;
+    std::optional<double> static_rating_N;
+    double reference_diameter_mm = 0;
+    std::optional<double> reference_length_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("dynamic_rating_N", &dynamic_rating_N,
+               Field().Required().Positive().Unit("N").Desc("C_ref, the reference roller's basic dynamic load rating (ISO 281)"));
+      a->Visit("static_rating_N", &static_rating_N,
+               Field().Positive().Unit("N").Desc("C0_ref, its basic static load rating (ISO 76): s0 is reported when given"));
+      a->Visit("reference_diameter_mm", &reference_diameter_mm,
+               Field().Required().Positive().Unit("mm").Desc("d_ref, the reference roller's diameter"));
+      a->Visit("reference_length_mm", &reference_length_mm,
+               Field().Positive().Unit("mm").Desc("L_ref, its length (absent: fixed.roller_length_mm)"));
+    }
+  };
+
+  std::string study = "lcr_min_size", name;
+  std::optional<std::string> description;
+  Target target;
+  Search search;
+  Variables variables;
+  Fixed fixed;
+  Limits limits;
+  std::optional<MaterialInput> material;
+  Load load;
+  Optimizer optimizer;
+  nlohmann::json roller_catalogue;
+  std::optional<LcrContactOptionsInput> contact;
+  std::optional<LcrTolerancesInput> tolerances;
+  std::optional<MonteCarlo> monte_carlo;
+  std::optional<Robust> robust;
+  nlohmann::json duty_cycle;
+  std::optional<Rollers> rollers;
+  std::optional<EccentricBearingInput> eccentric_bearing;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Required().Const("lcr_min_size").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the design's name, copied to the result"));
+    a->Visit("description", &description, Field().Desc("free text"));
+    a->Visit("target", &target, Field().Required().Desc("the speed ratio and the output torque to size for"));
+    a->Visit("search", &search, Field().Desc("the lobe/roller combinations tried"));
+    a->Visit("variables", &variables, Field().Required().Desc("the sized quantities' bounds [lower, upper]"));
+    a->Visit("fixed", &fixed, Field().Required().Desc("the sizes that are not variables"));
+    a->Visit("limits", &limits, Field().Required().Desc("the limits every design must meet"));
+    a->Visit("material", &material,
+             Field().Desc("the cams' and rollers' elastic material (absent: steel, E = 206 GPa, ν = 0.3)"));
+    a->Visit("load", &load, Field().Desc("the friction, the overload torque and the speed"));
+    a->Visit("optimizer", &optimizer, Field().Desc("the local solves of each combination"));
+    a->Visit("roller_catalogue", &roller_catalogue, Field().Schema(CatalogueSchema()));
+    a->Visit("contact", &contact,
+             Field().Desc("finite-length roller contact model (docs/lcr.md); slices or half_space: the stress limit "
+                          "holds for the slices model, the best design is re-checked with half_space"));
+    a->Visit("tolerances", &tolerances,
+             Field().Desc("± tolerance bands: the limits held across them (with robust; docs/lcr.md)"));
+    a->Visit("monte_carlo", &monte_carlo,
+             Field().Desc("Monte-Carlo check of the robust and the nominal best designs against the exact compliant "
+                          "model"));
+    a->Visit("robust", &robust,
+             Field().Desc("the stress, force and undercut limits hold across the tolerances (objectives/lcr_robust.h); "
+                          "requires tolerances"));
+    a->Visit("duty_cycle", &duty_cycle,
+             Field().Schema(LcrDutyCycleSchema()).Desc(
+                 "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
+                 "1e-6, at least one speed > 0"));
+    a->Visit("rollers", &rollers,
+             Field().Desc("the rollers' ratings without a catalogue: those of a reference roller, scaled with the "
+                          "sized diameter and the roller length by ISO 281 (C ∝ D^(29/27) L^(7/9)) and ISO 76 (C0 ∝ "
+                          "D L); docs/life.md"));
+    a->Visit("eccentric_bearing", &eccentric_bearing,
+             Field().Desc("the bearing carrying the cam on the input shaft's eccentric (docs/life.md)"));
+  }
+  /// The schema of "roller_catalogue": {"file"} or a list of CatalogueRollerInput.
+  static nlohmann::ordered_json CatalogueSchema();
+  /// The rules between blocks: the catalogue against the roller length and diameter, the life's
+  /// speed and ratings, robust with its tolerances.
+  static nlohmann::ordered_json SchemaRules();
+};
+
+/// A [lower, upper] range of the study with lower <= upper ("[lower, upper] with lower <= upper" at `n`).
+std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n);
 
 struct CatalogueRoller {
   std::string name;
@@ -89,7 +395,7 @@ struct Result {
 Study Parse(const Node& root);
 /// The robust parts (studies/lcr_min_size_robust.cc): "tolerances", "robust", "monte_carlo" into s;
 /// the robust solves and checks into r; "best" (robust), "nominal_best" and "robust" into res.
-void ParseRobust(const Node& root, Study& s);
+void ParseRobust(const Input& in, const Node& root, Study& s);
 void RunRobust(const Study& s, Result& r, const RunContext& ctx);
 void RobustJson(const Study& s, const Result& r, nlohmann::json& res);
 Result Run(const Study& study, const RunContext& ctx);

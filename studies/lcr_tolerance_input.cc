@@ -35,23 +35,6 @@ std::optional<LcrToleranceSpec> ToToleranceSpec(const std::optional<LcrTolerance
   return s;
 }
 
-std::optional<LcrToleranceSpec> ParseLcrTolerances(const Node& root) {
-  if (!root.Has("tolerances")) return ToToleranceSpec(std::nullopt, std::nullopt, root);
-  const LcrTolerancesInput tolerances = Read<LcrTolerancesInput>(root["tolerances"]);
-  std::optional<LcrMonteCarloInput> monte_carlo;
-  if (root.Has("monte_carlo")) monte_carlo = Read<LcrMonteCarloInput>(root["monte_carlo"]);
-  return ToToleranceSpec(tolerances, monte_carlo, root);
-}
-
-lcr::LoadModel ParseLoadModel(const Node& analysis) {
-  if (!analysis.Has("load_model")) return lcr::LoadModel::kRigid;
-  const std::string m = analysis["load_model"].String();
-  if (m == "rigid") return lcr::LoadModel::kRigid;
-  if (m == "compliant") return lcr::LoadModel::kCompliant;
-  analysis["load_model"].Fail("\"rigid\" or \"compliant\"");
-  return lcr::LoadModel::kRigid;
-}
-
 std::string LoadModelName(lcr::LoadModel m) { return m == lcr::LoadModel::kRigid ? "rigid" : "compliant"; }
 
 nlohmann::json TransmissionErrorJson(const LcrToleranceSpec& spec, const lcr::TransmissionErrorResult& te) {

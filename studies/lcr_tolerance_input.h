@@ -1,5 +1,5 @@
-// The tolerance parts of the LCR study kinds (docs/lcr.md, transmission error): "tolerances", "monte_carlo" and
-// "analysis.load_model" parsed once, and the "transmission_error" block of result.json; shared by
+// The tolerance parts of the LCR study kinds (docs/lcr.md, transmission error): "tolerances" and
+// "monte_carlo" declared once, and the "transmission_error" block of result.json; shared by
 // lcr_analysis and lcr_min_size.
 #pragma once
 
@@ -67,17 +67,11 @@ struct LcrToleranceSpec {
   double lost_motion_torque_fraction = 0.03;  ///< "monte_carlo.lost_motion_torque_fraction" of T_o
 };
 
-/// Reads root["tolerances"] ({"eccentricity_um", "turret_radius_um", "roller_diameter_um",
-/// "roller_pitch_arcsec", "profile_um", "bearing_clearance_um"}, ± bands, each optional, ≥ 0) and
-/// root["monte_carlo"] ({"samples", "seed", "angle_steps", "lost_motion_torque_fraction"}).
-/// Empty when the study has no "tolerances". @throws StudyError naming the JSON path.
-std::optional<LcrToleranceSpec> ParseLcrTolerances(const Node& root);
-/// The same from the declared blocks (tolerances absent: none).
+/// The tolerance spec from the declared blocks (tolerances absent: none; "monte_carlo" without
+/// "tolerances" is a StudyError naming the path).
 std::optional<LcrToleranceSpec> ToToleranceSpec(const std::optional<LcrTolerancesInput>& tolerances,
                                                 const std::optional<LcrMonteCarloInput>& monte_carlo, const Node& root);
 
-/// "analysis.load_model": "rigid" (default) or "compliant".
-lcr::LoadModel ParseLoadModel(const Node& analysis);
 std::string LoadModelName(lcr::LoadModel m);
 
 /// The "transmission_error" object of result.json.

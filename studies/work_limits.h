@@ -17,7 +17,7 @@
 //   disc_cam (in the kind's file)   angle_steps + MC samples × angle_steps × scales ≤ 2e6
 //   disc_cam_min_size (kind's file) max_evaluations × (8 + verify_rounds) × 3 × angle_steps, and the
 //                                   accurate checks (1 + verify_rounds) × 3 × dense angles ≤ 1e8
-//   lcr_min_size                    lobe counts × differences × catalogue rollers × starts × (0.5 +
+//   lcr_min_size (kind's file)      lobe counts × differences × catalogue rollers × starts × (0.5 +
 //                                   samples_per_period/48) + with a 3D contact 30·(slices/20)³ per
 //                                   candidate and the half_space verification + robust Monte-Carlo ≤ 2e4
 //   lcr_crowning_tuning (kind's file) evaluations × 2 cams × 2 torques × misalignments × 69 × (slices/40)³

@@ -642,7 +642,8 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
 const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
                                                  "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size",
-                                                 "lcr_analysis", "cycloid_crowning_tuning", "lcr_crowning_tuning"};
+                                                 "lcr_analysis", "cycloid_crowning_tuning", "lcr_crowning_tuning",
+                                                 "lcr_min_size"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
