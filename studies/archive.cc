@@ -49,9 +49,8 @@ constexpr double kLargestInteger = 1e9;
 
 }  // namespace
 
-double JsonReader::ReadNumber(const Node& n, const Field& f, bool integer) {
+double JsonReader::ReadNumber(const Node& n, const nlohmann::json& j, const Field& f, bool integer) {
   using archive_detail::BoundText;
-  const nlohmann::json& j = n.json();
   const std::string first = f.bounds.empty() ? BoundText({}, integer) : BoundText(f.bounds[0], integer);
   if (!j.is_number()) n.Fail(first);
   const double v = j.get<double>();

@@ -119,6 +119,9 @@ class Field {
   }
   /// The message for a value of the wrong shape (a fixed-size array: "an array of N numbers").
   Field& Expect(std::string text) { shape_expected = std::move(text); return *this; }
+  /// A fixed-size array whose items' bounds, when broken, name the array and not the item (as
+  /// Node::Range's checks of a [lo, hi] range do: "/variables/e_mm: expected …, found an array …").
+  Field& NamesTheArray() { names_array = true; return *this; }
   /// What an absent std::optional field means, for the schema's `default`.
   Field& Default(nlohmann::json value) { documented_default = std::move(value); return *this; }
   /// The schema of a field kept as raw JSON (nlohmann::json) and read by shared code.
@@ -133,6 +136,7 @@ class Field {
   std::optional<size_t> min_items;
   std::string min_items_expected;
   std::string shape_expected;
+  bool names_array = false;
   nlohmann::json documented_default;  ///< null: none
   nlohmann::ordered_json schema;      ///< null: none
 };
@@ -238,14 +242,25 @@ class JsonReader {
       if (!j.is_array() || j.size() != value->size()) n.Fail(expected);
       for (const auto& item : j)
         if (!item.is_number()) n.Fail(expected);
-      for (size_t i = 0; i < value->size(); ++i) ReadValue(n[i], &(*value)[i], f);
+      for (size_t i = 0; i < value->size(); ++i) {
+        if constexpr (std::is_arithmetic_v<typename T::value_type>) {
+          if (f.names_array) {
+            (*value)[i] = static_cast<typename T::value_type>(
+                ReadNumber(n, j[i], f, std::is_same_v<typename T::value_type, int>));
+            continue;
+          }
+        }
+        ReadValue(n[i], &(*value)[i], f);
+      }
     } else {
       static_assert(sizeof(T) == 0, "a field type the archives do not know");
     }
   }
 
  private:
-  static double ReadNumber(const Node& n, const Field& f, bool integer);
+  static double ReadNumber(const Node& n, const Field& f, bool integer) { return ReadNumber(n, n.json(), f, integer); }
+  /// The number `j`, its failures named at `n` (j itself, or an item of the array n).
+  static double ReadNumber(const Node& n, const nlohmann::json& j, const Field& f, bool integer);
   static std::string ReadString(const Node& n, const Field& f);
   Node node_;
 };

@@ -62,7 +62,7 @@ struct Input {
                    "L_e of Lundberg's logarithmic profile, both cams; above each cam's roller length (L_e <= l_r "
                    "gives an unbounded drop at the roller's ends)"));
       a->Visit("coefficient_range_mm", &coefficient_range_mm,
-               Field().Positive("[lo, hi] with 0 < lo < hi").Expect("[lower, upper], two numbers").Unit("mm")
+               Field().Positive("[lo, hi] with 0 < lo < hi").Expect("[lower, upper], two numbers").NamesTheArray().Unit("mm")
                    .Desc("[lo, hi] of the crowning coefficient f scanned, 0 < lo < hi"));
       a->Visit("misalignment_mrad", &misalignment_mrad,
                Field().In(-50.0, 50.0).MinItems(1, "a non-empty list of misalignments [mrad]").Unit("mrad")

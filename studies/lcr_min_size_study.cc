@@ -336,7 +336,14 @@ Study Parse(const Node& root) {
       const Node file = cat["file"];
       std::filesystem::path p(file.String());
       if (p.is_relative()) p = std::filesystem::path(root.file()).parent_path() / p;
-      const nlohmann::json loaded = LoadStudyFile(p.string());
+      // A file that cannot be read is named by the study's JSON path; the entries' own errors by the
+      // catalogue file's.
+      nlohmann::json loaded;
+      try {
+        loaded = LoadStudyFile(p.string());
+      } catch (const StudyError& e) {
+        file.FailWith(e.what());
+      }
       s.catalogue = ParseCatalogue(Node(&loaded, p.string(), ""), life_why);
     } else {
       s.catalogue = ParseCatalogue(cat, life_why);

@@ -98,34 +98,34 @@ struct Input {
       const char* range = "[lower, upper], two numbers";
       const char* positive = "a [lo, hi] range with lo > 0";
       a->Visit("eccentricity_mm", &eccentricity_mm,
-               Field().Required().Positive(positive).Expect(range).Unit("mm").Desc("[lower, upper] of the eccentricity e"));
+               Field().Required().Positive(positive).Expect(range).NamesTheArray().Unit("mm").Desc("[lower, upper] of the eccentricity e"));
       a->Visit("turret_radius_mm", &turret_radius_mm,
-               Field().Required().Positive(positive).Expect(range).Unit("mm").Desc(
+               Field().Required().Positive(positive).Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of both turret radii r_d"));
       a->Visit("roller_diameter_mm", &roller_diameter_mm,
-               Field().Positive(positive).Expect(range).Unit("mm").Desc(
+               Field().Positive(positive).Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of the roller diameter d_r (one size for both cams unless same_roller_on_both_cams "
                    "is false); required without a roller catalogue"));
       a->Visit("same_roller_on_both_cams", &same_roller_on_both_cams,
                Field().Desc("false: a roller diameter per cam (not with a catalogue)"));
       a->Visit("crowning_coefficient_mm", &crowning_coefficient_mm,
-               Field().In(0.0, 1.0, "a [lo, hi] range with 0 <= lo < hi <= 1 mm").Expect(range).Unit("mm").Desc(
+               Field().In(0.0, 1.0, "a [lo, hi] range with 0 <= lo < hi <= 1 mm").Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of the logarithmic crowning coefficient f of each cam; needs fixed.crowning of type "
                    "logarithmic (0: a straight roller)"));
       a->Visit("crowning_radius_mm", &crowning_radius_mm,
-               Field().In(1e-9, 1e6, "a [lo, hi] range with 1e-09 <= lo < hi <= 1e+06 mm").Expect(range).Unit("mm").Desc(
+               Field().In(1e-9, 1e6, "a [lo, hi] range with 1e-09 <= lo < hi <= 1e+06 mm").Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of the crowning radius R of each cam; needs fixed.crowning of type circular or "
                    "partial (its radius_mm is the start) and a 3D contact"));
       a->Visit("crowning_flat_length_mm", &crowning_flat_length_mm,
-               Field().In(0.0, 1e6, "a [lo, hi] range with 0 <= lo < hi <= 1e+06 mm").Expect(range).Unit("mm").Desc(
+               Field().In(0.0, 1e6, "a [lo, hi] range with 0 <= lo < hi <= 1e+06 mm").Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of the flat length L0 of each cam's partial crown; needs fixed.crowning of type "
                    "partial (its flat_length_mm is the start) and a 3D contact"));
       a->Visit("roller_length_mm", &roller_length_mm,
-               Field().Positive("a [lo, hi] range with 0 < lo < hi mm").Expect(range).Unit("mm").Desc(
+               Field().Positive("a [lo, hi] range with 0 < lo < hi mm").Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of the roller length of both cams (fixed.roller_length_mm is the start); only with "
                    "a 3D contact (slices or half_space) and without a roller catalogue"));
       a->Visit("cam_thickness_mm", &cam_thickness_mm,
-               Field().Positive("a [lo, hi] range with 0 < lo < hi mm").Expect(range).Unit("mm").Desc(
+               Field().Positive("a [lo, hi] range with 0 < lo < hi mm").Expect(range).NamesTheArray().Unit("mm").Desc(
                    "[lower, upper] of the thickness of both cams (fixed.cam_thickness_mm is the start); only with a 3D "
                    "contact (slices or half_space)"));
     }
