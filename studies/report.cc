@@ -253,6 +253,12 @@ bool RegisterReport(const std::string& kind, std::vector<Headline> headlines) {
 
 HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result) {
   HeadlineTable table;
+  if (result.is_object() && result.contains("best") && result["best"].is_null()) {
+    table.no_design = true;
+    if (result.contains("notes") && result["notes"].is_array() && !result["notes"].empty() &&
+        result["notes"][0].is_string())
+      table.no_design_reason = result["notes"][0].get<std::string>();
+  }
   const auto reg = Reports().find(kind);
   if (reg == Reports().end()) {
     for (const auto& [k, v] : result.items())
@@ -293,6 +299,9 @@ HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& s
 }
 
 std::string VerdictLine(const HeadlineTable& table) {
+  if (table.no_design)
+    return "No design meets the limits" +
+           (table.no_design_reason.empty() ? std::string(" (result.json: best is null)") : ": " + table.no_design_reason);
   if (table.limits == 0) return "No limits to check in this study";
   if (table.exceeded.empty()) return "All " + std::to_string(table.limits) + " limits met";
   std::string s = std::to_string(table.exceeded.size()) + " of " + std::to_string(table.limits) + " limits exceeded: ";
@@ -343,7 +352,7 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
   if (limits > 0)
     os << "<div class=\"verdict " << (exceeded ? "bad" : "ok") << "\">" << Html(VerdictLine(table)) << "</div>\n";
   else if (outputs.incomplete().empty())
-    os << "<div class=\"verdict info\">" << Html(VerdictLine(table)) << "</div>\n";
+    os << "<div class=\"verdict " << (table.no_design ? "bad" : "info") << "\">" << Html(VerdictLine(table)) << "</div>\n";
 
   os << "<h2>Headline numbers</h2>\n";
   if (rows.empty()) {

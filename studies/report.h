@@ -56,10 +56,15 @@ struct HeadlineTable {
   int limits = 0;                      ///< rows with a limit
   std::vector<std::string> exceeded;   ///< labels of the rows that fail
   bool registered = false;
+  /// A sizing result without a design ("best": null): why, from result.json's first note ("" when
+  /// it has none); no_design true. Its limits cannot be checked: there is nothing to check them on.
+  bool no_design = false;
+  std::string no_design_reason;
 };
 HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result);
 
-/// "All 7 limits met", "2 of 7 limits exceeded: a, b", or "No limits to check in this study".
+/// "All 7 limits met", "2 of 7 limits exceeded: a, b", "No design meets the limits: <why>" (a sizing
+/// result whose "best" is null), or "No limits to check in this study".
 std::string VerdictLine(const HeadlineTable& table);
 
 /// The page for a run of `kind` on `study` whose files are `outputs` (result.json, *.svg, …).

@@ -190,6 +190,24 @@ TEST(HtmlReport, UnregisteredKindShowsTopLevelNumbers) {
   EXPECT_NE(html.find("No limits to check"), std::string::npos);
 }
 
+// A sizing result that found no design ("best": null) has limits, but nothing to check them on:
+// the verdict says so with the result's reason, not "No limits to check".
+TEST(HtmlReport, ASizingResultWithoutADesignSaysSoInsteadOfNoLimits) {
+  Outputs out;
+  out.AddJson("result.json", {{"best", nullptr}, {"notes", {"edge-loaded: crown the rollers"}}});
+  const HeadlineTable table = EvaluateHeadlines("report_test_kind", {{"name", "n"}},
+                                                nlohmann::json::parse(out.files().at("result.json")));
+  EXPECT_TRUE(table.no_design);
+  EXPECT_EQ(VerdictLine(table), "No design meets the limits: edge-loaded: crown the rollers");
+  const std::string html = HtmlReport("report_test_kind", {{"name", "n"}}, out);
+  EXPECT_NE(html.find("<div class=\"verdict bad\">No design meets the limits: edge-loaded"), std::string::npos);
+  EXPECT_EQ(html.find("No limits to check"), std::string::npos);
+  Outputs bare;
+  bare.AddJson("result.json", {{"best", nullptr}});
+  EXPECT_EQ(VerdictLine(EvaluateHeadlines("report_test_kind", {}, nlohmann::json::parse(bare.files().at("result.json")))),
+            "No design meets the limits (result.json: best is null)");
+}
+
 TEST(HtmlReport, EveryRunWritesOne) {
   const nlohmann::json study = nlohmann::json::parse(R"({"study": "transmission_rigidity", "name": "shaft",
     "material": {"shear_modulus_GPa": 80, "youngs_modulus_GPa": 206},
