@@ -14,9 +14,9 @@
 namespace camopt::bench {
 
 inline void RunExampleStudy(benchmark::State& state, const char* name) {
-  // The source tree from this file's path (CMake passes absolute paths to the compiler).
+  // The source tree (CAMOPT_SOURCE_DIR, set by CMake: __FILE__ is relative under ccache).
   const std::string file =
-      (std::filesystem::path(__FILE__).parent_path().parent_path() / "studies/examples" / name).string();
+      (std::filesystem::path(CAMOPT_SOURCE_DIR) / "studies/examples" / name).string();
   const nlohmann::json j = studies::LoadStudyFile(file);
   studies::RunContext ctx;
   ctx.study_file = file;

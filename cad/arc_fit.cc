@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace camopt::cad {
 
@@ -92,18 +93,46 @@ Vec2<double> TangentOnArc(const ArcSegment& a, double s) {
   return g.sweep > 0 ? t : Vec2<double>(-t);
 }
 
-double DistanceToArc(const ArcSegment& a, const Vec2<double>& p) {
-  if (std::abs(a.bulge) < kStraightBulge) return DistanceToSegment(a.start, a.end, p);
+namespace {
+
+// An arc prepared for many distance queries: its circle, and the side of its chord its midpoint is
+// on. The arc is the part of its circle on that side of the chord line (for any sweep in (0, 2π)),
+// so a point's radial projection onto the circle lies on the arc exactly when it is on that side:
+// no angle is computed per query.
+struct ArcProbe {
+  Vec2<double> start, end, centre, chord;
+  double radius = 0.0, mid_side = 0.0;
+  bool straight = true;
+};
+
+ArcProbe ProbeOf(const ArcSegment& a) {
+  ArcProbe pr;
+  pr.start = a.start;
+  pr.end = a.end;
+  pr.chord = a.end - a.start;
+  pr.straight = std::abs(a.bulge) < kStraightBulge;
+  if (pr.straight) return pr;
   const ArcGeometry g = ArcGeometryOf(a);
-  const Vec2<double> r = p - g.centre;
-  // Angle of p from the start, measured in the sense of the sweep, in [0, 2π).
-  double phi = std::atan2(r.y(), r.x()) - g.start_angle;
-  if (g.sweep < 0) phi = -phi;
-  phi = std::fmod(phi, 2 * kPi);
-  if (phi < 0) phi += 2 * kPi;
-  if (phi <= std::abs(g.sweep)) return std::abs(r.norm() - g.radius);
+  pr.centre = g.centre;
+  pr.radius = g.radius;
+  pr.mid_side = Cross(pr.chord, Vec2<double>(PointOnArc(a, 0.5) - a.start));
+  return pr;
+}
+
+double Distance(const ArcProbe& a, const Vec2<double>& p) {
+  if (a.straight) return DistanceToSegment(a.start, a.end, p);
+  const Vec2<double> r = p - a.centre;
+  const double rn = r.norm();
+  if (!(rn > 0)) return a.radius;  // the centre: every point of the arc is one radius away
+  const Vec2<double> q = a.centre + r * (a.radius / rn);
+  const double side = Cross(a.chord, Vec2<double>(q - a.start));
+  if (side == 0.0 || (side > 0) == (a.mid_side > 0)) return std::abs(rn - a.radius);
   return std::min((p - a.start).norm(), (p - a.end).norm());
 }
+
+}  // namespace
+
+double DistanceToArc(const ArcSegment& a, const Vec2<double>& p) { return Distance(ProbeOf(a), p); }
 
 double EnclosedArea(const std::vector<ArcSegment>& chain) {
   double area = 0.0;
@@ -161,9 +190,10 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
     double worst = std::numeric_limits<double>::infinity();
     if (b.ok) {
       worst = 0.0;
+      const ArcProbe first = ProbeOf(b.first), second = ProbeOf(b.second);
       for (int k = 1; k < o.check_points; ++k) {
         const Vec2<double> q = curve(p.ta + (p.tb - p.ta) * k / o.check_points);
-        worst = std::max(worst, std::min(DistanceToArc(b.first, q), DistanceToArc(b.second, q)));
+        worst = std::max(worst, std::min(Distance(first, q), Distance(second, q)));
       }
     }
     const size_t planned = fit.arcs.size() + 2 * (stack.size() + 1);
@@ -197,18 +227,21 @@ double MaxDistanceToChain(const CurveFunction& curve, double t0, double t1, int 
   double worst = 0.0;
   size_t hint = 0;
   const size_t n = chain.size();
+  std::vector<ArcProbe> probes;
+  probes.reserve(n);
+  for (const ArcSegment& a : chain) probes.push_back(ProbeOf(a));
   for (int i = 0; i <= samples; ++i) {
     const Vec2<double> q = curve(t0 + (t1 - t0) * i / samples);
     double best = std::numeric_limits<double>::infinity();
     size_t best_k = hint;
     for (size_t w = 0; w < std::min<size_t>(n, 32); ++w) {
       const size_t k = (hint + n - 8 + w) % n;
-      const double dist = DistanceToArc(chain[k], q);
+      const double dist = Distance(probes[k], q);
       if (dist < best) best = dist, best_k = k;
     }
     if (best > 1e-2 && n <= 4096) {  // far from the window: every arc (bounded work)
       for (size_t k = 0; k < n; ++k) {
-        const double dist = DistanceToArc(chain[k], q);
+        const double dist = Distance(probes[k], q);
         if (dist < best) best = dist, best_k = k;
       }
     }

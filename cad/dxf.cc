@@ -1,5 +1,6 @@
 #include "cad/dxf.h"
 
+#include <charconv>
 #include <cstdio>
 #include <sstream>
 
@@ -13,15 +14,19 @@ class Out {
   // A value is one line of the file: a line break or another control byte in a user's text (a
   // study name) would end it and shift every following group, so they become spaces.
   void Pair(int code, const std::string& value) {
-    os_ << code << "\n";
-    for (char c : value) os_ << (static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c);
-    os_ << "\n";
+    Code(code);
+    for (char c : value) out_ += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
+    out_ += '\n';
   }
   void Pair(int code, int value) { Pair(code, std::to_string(value)); }
   void Num(int code, double value) {
+    // As printf's "%.12g" (std::to_chars with a precision is specified so), without "-0".
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%.12g", value == 0.0 ? 0.0 : value);  // no "-0"
-    Pair(code, std::string(buf));
+    const std::to_chars_result r =
+        std::to_chars(buf, buf + sizeof buf, value == 0.0 ? 0.0 : value, std::chars_format::general, 12);
+    Code(code);
+    out_.append(buf, r.ptr);
+    out_ += '\n';
   }
   /// A point in the xy plane: group codes `code` (x), code + 10 (y), code + 20 (z = 0).
   void Point(int code, const Vec2<double>& p) {
@@ -39,10 +44,16 @@ class Out {
     std::snprintf(buf, sizeof buf, "%X", next_);
     return buf;
   }
-  std::string str() const { return os_.str(); }
+  std::string str() const { return out_; }
 
  private:
-  std::ostringstream os_;
+  void Code(int code) {
+    char buf[16];
+    const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, code);
+    out_.append(buf, r.ptr);
+    out_ += '\n';
+  }
+  std::string out_;
   unsigned next_ = 0x20;
 };
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -78,50 +79,6 @@ TopoDS_Wire WireOf(const std::vector<ArcSegment>& chain) {
   return wire.Wire();
 }
 
-// The text of a STEP string (ISO 10303-21 §6.4.3, between its apostrophes): an apostrophe and
-// a backslash doubled, control bytes as spaces, and every other non-ASCII character of the UTF-8
-// text as \X2\hhhh\X0\ (UCS-2; a character beyond it, or an invalid byte, as '?').
-std::string StepString(const std::string& text) {
-  std::string out;
-  char buf[8];
-  bool in_x2 = false;
-  auto close_x2 = [&] {
-    if (in_x2) out += "\\X0\\";
-    in_x2 = false;
-  };
-  for (size_t i = 0; i < text.size();) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c < 0x80) {
-      close_x2();
-      if (c == '\'') out += "''";
-      else if (c == '\\') out += "\\\\";
-      else out += (c < 0x20 || c == 0x7f) ? ' ' : char(c);
-      ++i;
-      continue;
-    }
-    const int n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
-    unsigned code = n == 2 ? c & 0x1F : n == 3 ? c & 0x0F : c & 0x07;
-    bool valid = n > 1 && i + n <= text.size();
-    for (int k = 1; valid && k < n; ++k) {
-      const unsigned char d = static_cast<unsigned char>(text[i + k]);
-      valid = (d & 0xC0) == 0x80;
-      code = (code << 6) | (d & 0x3F);
-    }
-    if (!valid || code > 0xFFFF) {
-      close_x2();
-      out += '?';
-      i += valid ? n : 1;
-      continue;
-    }
-    if (!in_x2) out += "\\X2\\", in_x2 = true;
-    std::snprintf(buf, sizeof buf, "%04X", code);
-    out += buf;
-    i += n;
-  }
-  close_x2();
-  return out;
-}
-
 // Writes a shape to STEP AP214 in memory with a fixed time stamp.
 std::string StepOf(const TopoDS_Shape& shape, const std::string& raw_name) {
   SilenceOcct();
@@ -170,28 +127,6 @@ std::string StepOf(const TopoDS_Shape& shape, const std::string& raw_name) {
   return s;
 }
 
-// The mesh's chord deviation grows with the part above this share of its size (the diagonal of
-// the profile's bounding box): the triangle count then stays that of a part of about half a metre,
-// whatever the size (a 5 m cam at a fixed 2 µm took 85 s and 4.8 GB to mesh). Parts below about
-// 500 mm keep Extrusion::mesh_deflection_mm.
-constexpr double kMeshRelativeDeflection = 4e-6;
-
-double MeshDeflection(const Extrusion& e) {
-  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
-  bool first = true;
-  for (const ArcSegment& a : e.profile)
-    for (const Vec2<double>& p : {a.start, a.end}) {
-      lo_x = first ? p.x() : std::min(lo_x, p.x());
-      hi_x = first ? p.x() : std::max(hi_x, p.x());
-      lo_y = first ? p.y() : std::min(lo_y, p.y());
-      hi_y = first ? p.y() : std::max(hi_y, p.y());
-      first = false;
-    }
-  // Arc bulges reach beyond their end points by at most the chord's half-length: a margin of the
-  // longest chord would not change the size's order, so the end points suffice.
-  return std::max(e.mesh_deflection_mm, kMeshRelativeDeflection * std::hypot(hi_x - lo_x, hi_y - lo_y));
-}
-
 // Triangles of every face, vertices merged where their coordinates are equal, oriented outward.
 TriangleMesh MeshOf(const TopoDS_Shape& shape, double deflection) {
   BRepMesh_IncrementalMesh mesher(shape, deflection, Standard_False, 0.1, Standard_False);
@@ -222,7 +157,9 @@ TriangleMesh MeshOf(const TopoDS_Shape& shape, double deflection) {
   return mesh;
 }
 
-SolidOutput ExtrudeCamUnguarded(const Extrusion& e) {
+// The OCCT mesh of the extruded solid: for a profile that MeshExtrusion cannot triangulate (not
+// star-shaped about the cam's centre).
+TriangleMesh OcctMeshUnguarded(const Extrusion& e) {
   SilenceOcct();
   BRepBuilderAPI_MakeFace face_maker(WireOf(e.profile), Standard_True);
   if (!face_maker.IsDone()) throw std::runtime_error("OCCT: no planar face on the cam profile");
@@ -240,11 +177,7 @@ SolidOutput ExtrudeCamUnguarded(const Extrusion& e) {
   if (!prism.IsDone()) throw std::runtime_error("OCCT: extrusion failed");
   const TopoDS_Shape solid = prism.Shape();
   if (!BRepCheck_Analyzer(solid).IsValid()) throw std::runtime_error("OCCT: the extruded cam is not a valid solid");
-  SolidOutput out;
-  for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next()) ++out.faces;
-  if (e.step) out.step = StepOf(solid, e.name);
-  out.mesh = MeshOf(solid, MeshDeflection(e));
-  return out;
+  return MeshOf(solid, MeshDeflection(e));
 }
 
 SurfaceOutput BSplineSurfacesUnguarded(const std::vector<PointGrid>& grids, const std::string& name) {
@@ -318,7 +251,21 @@ auto Guarded(const char* what, F f) {
 }  // namespace
 
 SolidOutput ExtrudeCam(const Extrusion& e) {
-  return Guarded("extruded cam", [&] { return ExtrudeCamUnguarded(e); });
+  SolidOutput out;
+  // The B-rep and, for a profile star-shaped about the centre, the mesh are written directly
+  // (cad/extrusion.h): no kernel, no process-wide lock.
+  try {
+    if (e.step) out.step = StepOfExtrusion(e);
+    out.faces = static_cast<int>(e.profile.size()) + 2 + (e.bore_diameter_mm > 0 ? 2 : 0);
+    if (std::optional<TriangleMesh> mesh = MeshExtrusion(e, MeshDeflection(e))) {
+      out.mesh = std::move(*mesh);
+      return out;
+    }
+  } catch (const std::invalid_argument& bad) {
+    throw std::runtime_error(std::string("extruded cam: ") + bad.what());
+  }
+  out.mesh = Guarded("extruded cam", [&] { return OcctMeshUnguarded(e); });
+  return out;
 }
 
 SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name) {

@@ -7,21 +7,10 @@
 #include <vector>
 
 #include "cad/arc_fit.h"
+#include "cad/extrusion.h"
 #include "cad/stl.h"
 
 namespace camopt::cad {
-
-/// A planar cam extruded along +z: outer profile (a closed, counter-clockwise chain of arcs in the
-/// xy plane) minus an optional circular bore.
-struct Extrusion {
-  std::vector<ArcSegment> profile;     ///< closed chain [mm]
-  Vec2<double> bore_centre = Vec2<double>::Zero();
-  double bore_diameter_mm = 0.0;       ///< 0: no bore
-  double thickness_mm = 10.0;
-  std::string name = "cam";            ///< product name in the STEP file
-  double mesh_deflection_mm = 0.002;   ///< STL chord deviation from the solid's faces
-  bool step = true;                    ///< false: no STEP file (SolidOutput::step stays empty)
-};
 
 /// The solid's files. (Its volume and area are not measured here: BRepGProp at 1e-9 cost more than
 /// the rest of the solid; the study gives the volume in closed form from the exact profile's area,
@@ -32,8 +21,9 @@ struct SolidOutput {
   int faces = 0;
 };
 
-/// Builds the extruded solid (arc edges exactly as in the chain) and its STEP file and mesh.
-/// @throws std::runtime_error if OCCT cannot build a valid solid.
+/// The extruded solid's STEP file (cad/extrusion.h: arc and line faces exactly as in the chain) and
+/// mesh (cad/extrusion.h; OCCT's mesher when the profile is not star-shaped about its centre).
+/// @throws std::runtime_error when the bore does not fit or no valid solid can be built.
 SolidOutput ExtrudeCam(const Extrusion& e);
 
 /// A grid of points on a surface: points[i][j], i along one direction, j along the other [mm].

@@ -1,0 +1,470 @@
+#include "cad/extrusion.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace camopt::cad {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The mesh's chord deviation grows with the part above this share of its size (see MeshDeflection).
+constexpr double kMeshRelativeDeflection = 4e-6;
+// Largest turn of one chord [rad] (the OCCT mesher's angular deflection the files had before).
+constexpr double kMaxChordTurn = 0.1;
+
+double Cross(const Vec2<double>& a, const Vec2<double>& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Chords of one arc (or line): its start point and the interior points (the end is the next arc's
+// start). Each chord's sagitta is at most `deflection` and its turn at most kMaxChordTurn; seen
+// from `centre` each spans at most kMaxChordTurn too, so that the end faces' triangles between the
+// profile and the bore stay short (a square's side was one chord, and its fan to the bore crossed
+// the bore).
+void AppendChords(const ArcSegment& a, double deflection, const Vec2<double>& centre, std::vector<Vec2<double>>& points) {
+  points.push_back(a.start);
+  const Vec2<double> u = a.start - centre, v = a.end - centre;
+  const double seen = std::abs(std::atan2(Cross(u, v), u.dot(v)));
+  int n = static_cast<int>(std::ceil(seen / kMaxChordTurn - 1e-9));
+  if (std::abs(a.bulge) >= 1e-12) {
+    const ArcGeometry g = ArcGeometryOf(a);
+    const double ratio = std::min(1.0, deflection / g.radius);  // sagitta r(1 − cos(Δ/2)) <= deflection
+    const double step = std::min(kMaxChordTurn, 2.0 * std::acos(1.0 - ratio));
+    n = std::max(n, static_cast<int>(std::ceil(std::abs(g.sweep) / step - 1e-9)));
+  }
+  for (int k = 1; k < n; ++k) points.push_back(PointOnArc(a, double(k) / n));
+}
+
+// The size of the part: the diagonal of its end points' bounding box.
+double Diagonal(const std::vector<ArcSegment>& chain) {
+  if (chain.empty()) return 0.0;
+  Vec2<double> lo = chain.front().start, hi = lo;
+  for (const ArcSegment& a : chain)
+    for (const Vec2<double>& p : {a.start, a.end}) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
+void CheckChain(const Extrusion& e) {
+  if (e.profile.size() < 2) throw std::invalid_argument("the profile needs at least two arcs");
+  const double size = Diagonal(e.profile);
+  for (size_t i = 0; i < e.profile.size(); ++i) {
+    const ArcSegment& a = e.profile[i];
+    const ArcSegment& b = e.profile[(i + 1) % e.profile.size()];
+    if (!((a.end - b.start).norm() <= 1e-9 * std::max(1.0, size)))
+      throw std::invalid_argument("the profile's arcs do not form a closed chain");
+    if (!std::isfinite(a.bulge) || !a.start.allFinite()) throw std::invalid_argument("the profile is not finite");
+  }
+  if (!(e.thickness_mm > 0) || !std::isfinite(e.thickness_mm)) throw std::invalid_argument("the thickness must be > 0");
+  if (e.bore_diameter_mm > 0) {
+    const double rb = 0.5 * e.bore_diameter_mm;
+    double nearest = INFINITY;
+    for (const ArcSegment& a : e.profile) nearest = std::min(nearest, DistanceToArc(a, e.bore_centre));
+    // Inside: the winding number about the centre of a chord polygon within a quarter of the
+    // centre's distance of the arcs (it cannot pass the centre, so it winds as the arcs do).
+    std::vector<Vec2<double>> poly;
+    if (nearest > rb * (1 + 1e-9) && std::isfinite(nearest))
+      for (const ArcSegment& a : e.profile) AppendChords(a, 0.25 * nearest, e.bore_centre, poly);
+    double turn = 0.0;  // left 0 (refused below) when the centre is not clear of the profile
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const Vec2<double> u = poly[i] - e.bore_centre, v = poly[(i + 1) % poly.size()] - e.bore_centre;
+      turn += std::atan2(Cross(u, v), u.dot(v));
+    }
+    if (!(nearest > rb * (1 + 1e-9)) || std::abs(turn - 2 * kPi) > 1e-6) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "the bore (diameter %.6g mm) does not lie inside the profile (nearest profile point %.6g mm from its centre)",
+                    e.bore_diameter_mm, nearest);
+      throw std::invalid_argument(buf);
+    }
+  }
+}
+
+// ---- STEP (ISO 10303-21 exchange structure, AP214 entities) ---------------------------------
+
+// A REAL of ISO 10303-21 §6.3.2: always with a decimal point and an upper-case exponent ("1.",
+// "2.5", "1.E-07"); the shortest digits that read back as the same double (std::to_chars).
+std::string Real(double v) {
+  if (!std::isfinite(v)) throw std::invalid_argument("a STEP coordinate is not finite");
+  if (v == 0.0) return "0.";  // also −0
+  char buf[40];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
+  std::string s(buf, r.ptr);
+  const size_t e = s.find('e');
+  if (e != std::string::npos) s[e] = 'E';
+  if (s.find('.') == std::string::npos) s.insert(e == std::string::npos ? s.size() : e, ".");
+  return s;
+}
+
+// The DATA section being written: entities numbered in the order added, each appended to one
+// text as it is made (17 000 entities for a cam of 700 arcs: no temporaries per entity).
+class StepData {
+ public:
+  StepData() { text_.reserve(1 << 20); }
+  int Add(const std::string& body) {
+    const int id = Open();
+    text_ += body;
+    Close();
+    return id;
+  }
+  static std::string Ref(int id) { return "#" + std::to_string(id); }
+  int Point(double x, double y, double z) { return Triple("CARTESIAN_POINT('',(", x, y, z); }
+  int Direction(double x, double y, double z) { return Triple("DIRECTION('',(", x, y, z); }
+  int Axis(int point, int axis, int ref) {
+    const int id = Open();
+    text_ += "AXIS2_PLACEMENT_3D('',";
+    Refs({point, axis, ref});
+    text_ += ')';
+    Close();
+    return id;
+  }
+  int Edge(int from, int to, int curve, bool same_sense) {
+    const int id = Open();
+    text_ += "EDGE_CURVE('',";
+    Refs({from, to, curve});
+    text_ += same_sense ? ",.T.)" : ",.F.)";
+    Close();
+    return id;
+  }
+  // An edge loop of (edge, orientation) pairs, as a FACE_OUTER_BOUND or FACE_BOUND.
+  int Bound(const std::vector<std::pair<int, bool>>& edges, bool outer) {
+    std::vector<int> oriented;
+    for (const auto& [edge, forward] : edges) {
+      oriented.push_back(Open());
+      text_ += "ORIENTED_EDGE('',*,*,";
+      AppendRef(edge);
+      text_ += forward ? ",.T.)" : ",.F.)";
+      Close();
+    }
+    const int loop = Open();
+    text_ += "EDGE_LOOP('',(";
+    Refs(oriented);
+    text_ += "))";
+    Close();
+    const int id = Open();
+    text_ += outer ? "FACE_OUTER_BOUND(''," : "FACE_BOUND(''," ;
+    AppendRef(loop);
+    text_ += ",.T.)";
+    Close();
+    return id;
+  }
+  int Face(const std::vector<int>& bounds, int surface, bool same_sense) {
+    const int id = Open();
+    text_ += "ADVANCED_FACE('',(";
+    Refs(bounds);
+    text_ += "),";
+    AppendRef(surface);
+    text_ += same_sense ? ",.T.)" : ",.F.)";
+    Close();
+    return id;
+  }
+  const std::string& text() const { return text_; }
+
+ private:
+  int Open() {
+    const int id = next_++;
+    AppendRef(id);
+    text_ += " = ";
+    return id;
+  }
+  void Close() { text_ += ";\n"; }
+  void AppendRef(int id) {
+    char buf[16];
+    buf[0] = '#';
+    const std::to_chars_result r = std::to_chars(buf + 1, buf + sizeof buf, id);
+    text_.append(buf, r.ptr);
+  }
+  void Refs(const std::vector<int>& ids) {
+    for (size_t i = 0; i < ids.size(); ++i) {
+      if (i) text_ += ',';
+      AppendRef(ids[i]);
+    }
+  }
+  int Triple(const char* head, double x, double y, double z) {
+    const int id = Open();
+    text_ += head;
+    text_ += Real(x);
+    text_ += ',';
+    text_ += Real(y);
+    text_ += ',';
+    text_ += Real(z);
+    text_ += "))";
+    Close();
+    return id;
+  }
+  std::string text_;
+  int next_ = 1;
+};
+
+}  // namespace
+
+double MeshDeflection(const Extrusion& e) {
+  return std::max(e.mesh_deflection_mm, kMeshRelativeDeflection * Diagonal(e.profile));
+}
+
+std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection) {
+  CheckChain(e);
+  if (!(deflection > 0) || !std::isfinite(deflection)) throw std::invalid_argument("the mesh deflection must be > 0");
+  std::vector<Vec2<double>> outer;
+  for (const ArcSegment& a : e.profile) AppendChords(a, deflection, e.bore_centre, outer);
+  const Vec2<double> c = e.bore_centre;
+  const int n = static_cast<int>(outer.size());
+  const bool bore = e.bore_diameter_mm > 0;
+  std::vector<Vec2<double>> inner;
+  if (bore) {
+    const double rb = 0.5 * e.bore_diameter_mm;
+    const double step = std::min(kMaxChordTurn, 2.0 * std::acos(1.0 - std::min(1.0, deflection / rb)));
+    const int m = std::max(8, static_cast<int>(std::ceil(2 * kPi / step - 1e-9)));
+    for (int j = 0; j < m; ++j) {
+      const double t = 2 * kPi * j / m;
+      inner.push_back(c + rb * Vec2<double>(std::cos(t), std::sin(t)));
+    }
+  }
+  const int m = static_cast<int>(inner.size());
+  // End-face triangles as indices into [outer..., inner... or the centre].
+  std::vector<std::array<int, 3>> cap;
+  const auto pt = [&](int k) -> Vec2<double> { return k < n ? outer[k] : bore ? inner[k - n] : c; };
+  const auto ccw = [&](int a, int b, int d) { return Cross(pt(b) - pt(a), pt(d) - pt(a)) > 0; };
+  if (!bore) {
+    for (int i = 0; i < n; ++i) {
+      cap.push_back({n, i, (i + 1) % n});
+      if (!ccw(n, i, (i + 1) % n)) return std::nullopt;
+    }
+  } else {
+    // The profile's points in polar angle about the centre, from the one nearest above angle 0.
+    std::vector<double> theta(n);
+    int i0 = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec2<double> d = outer[i] - c;
+      theta[i] = std::atan2(d.y(), d.x());
+      if (theta[i] < 0) theta[i] += 2 * kPi;
+      if (theta[i] < theta[i0]) i0 = i;
+    }
+    std::vector<double> alpha(n + 1);
+    alpha[0] = theta[i0];
+    for (int k = 1; k <= n; ++k) {
+      const Vec2<double> u = outer[(i0 + k - 1) % n] - c, v = outer[(i0 + k) % n] - c;
+      const double turn = std::atan2(Cross(u, v), u.dot(v));
+      if (!(turn > 0)) return std::nullopt;  // not star-shaped about the centre
+      alpha[k] = alpha[k - 1] + turn;
+    }
+    if (std::abs(alpha[n] - alpha[0] - 2 * kPi) > 1e-9) return std::nullopt;
+    int i = 0, j = 0;
+    while (i < n || j < m) {
+      const int oi = (i0 + i) % n, ij = n + j % m;
+      if (j == m || (i < n && alpha[i + 1] <= 2 * kPi * (j + 1) / m)) {
+        const int on = (i0 + i + 1) % n;
+        cap.push_back({ij, oi, on});
+        if (!ccw(ij, oi, on)) return std::nullopt;
+        ++i;
+      } else {
+        const int in = n + (j + 1) % m;
+        cap.push_back({ij, oi, in});
+        if (!ccw(ij, oi, in)) return std::nullopt;
+        ++j;
+      }
+    }
+  }
+  TriangleMesh mesh;
+  const int ring = n + (bore ? m : 1);
+  for (double z : {0.0, e.thickness_mm})
+    for (int k = 0; k < ring; ++k) mesh.vertices.emplace_back(pt(k).x(), pt(k).y(), z);
+  for (const auto& t : cap) {
+    mesh.triangles.push_back({t[0], t[2], t[1]});                       // z = 0, facing −z
+    mesh.triangles.push_back({t[0] + ring, t[1] + ring, t[2] + ring});  // z = thickness, facing +z
+  }
+  // Walls: the profile counter-clockwise faces out; the bore, counter-clockwise, faces its axis.
+  for (int i = 0; i < n; ++i) {
+    const int a = i, b = (i + 1) % n;
+    mesh.triangles.push_back({a, b, b + ring});
+    mesh.triangles.push_back({a, b + ring, a + ring});
+  }
+  for (int j = 0; j < m; ++j) {
+    const int a = n + j, b = n + (j + 1) % m;
+    mesh.triangles.push_back({b, a, a + ring});
+    mesh.triangles.push_back({b, a + ring, b + ring});
+  }
+  return mesh;
+}
+
+std::string StepString(const std::string& text) {
+  // An apostrophe and a backslash doubled, control bytes as spaces, and every other non-ASCII
+  // character of the UTF-8 text as \X2\hhhh\X0\ (UCS-2; a character beyond it, or an invalid
+  // byte, as '?').
+  std::string out;
+  char buf[8];
+  bool in_x2 = false;
+  auto close_x2 = [&] {
+    if (in_x2) out += "\\X0\\";
+    in_x2 = false;
+  };
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      close_x2();
+      if (c == '\'') out += "''";
+      else if (c == '\\') out += "\\\\";
+      else out += (c < 0x20 || c == 0x7f) ? ' ' : char(c);
+      ++i;
+      continue;
+    }
+    const int n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+    unsigned code = n == 2 ? c & 0x1F : n == 3 ? c & 0x0F : c & 0x07;
+    bool valid = n > 1 && i + n <= text.size();
+    for (int k = 1; valid && k < n; ++k) {
+      const unsigned char d = static_cast<unsigned char>(text[i + k]);
+      valid = (d & 0xC0) == 0x80;
+      code = (code << 6) | (d & 0x3F);
+    }
+    if (!valid || code > 0xFFFF) {
+      close_x2();
+      out += '?';
+      i += valid ? n : 1;
+      continue;
+    }
+    if (!in_x2) out += "\\X2\\", in_x2 = true;
+    std::snprintf(buf, sizeof buf, "%04X", code);
+    out += buf;
+    i += n;
+  }
+  close_x2();
+  return out;
+}
+
+std::string StepOfExtrusion(const Extrusion& e) {
+  CheckChain(e);
+  const std::string name = StepString(e.name);
+  const double t = e.thickness_mm;
+  StepData d;
+  // Product structure and units (AP214, automotive_design; lengths in millimetres).
+  const int app = d.Add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')");
+  d.Add("APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000," + StepData::Ref(app) + ")");
+  const int pctx = d.Add("PRODUCT_CONTEXT(''," + StepData::Ref(app) + ",'mechanical')");
+  const int product = d.Add("PRODUCT('" + name + "','" + name + "','',(" + StepData::Ref(pctx) + "))");
+  const int formation = d.Add("PRODUCT_DEFINITION_FORMATION('',''," + StepData::Ref(product) + ")");
+  const int dctx = d.Add("PRODUCT_DEFINITION_CONTEXT('part definition'," + StepData::Ref(app) + ",'design')");
+  const int definition = d.Add("PRODUCT_DEFINITION('design',''," + StepData::Ref(formation) + "," + StepData::Ref(dctx) + ")");
+  const int shape = d.Add("PRODUCT_DEFINITION_SHAPE(''," + std::string("''") + "," + StepData::Ref(definition) + ")");
+  d.Add("PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,(" + StepData::Ref(product) + "))");
+  const int mm = d.Add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )");
+  const int rad = d.Add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )");
+  const int sr = d.Add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )");
+  const int unc = d.Add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07)," + StepData::Ref(mm) +
+                        ",'distance_accuracy_value','confusion accuracy')");
+  const int ctx = d.Add("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((" + StepData::Ref(unc) +
+                        ")) GLOBAL_UNIT_ASSIGNED_CONTEXT((" + StepData::Ref(mm) + "," + StepData::Ref(rad) + "," +
+                        StepData::Ref(sr) + ")) REPRESENTATION_CONTEXT('','3D') )");
+
+  const int dz = d.Direction(0, 0, 1), dx = d.Direction(1, 0, 0);
+  const int up = d.Add("VECTOR(''," + StepData::Ref(dz) + ",1.)");
+  const size_t n = e.profile.size();
+  // Vertices at the arcs' start points, at z = 0 and z = t; the vertical edge through each.
+  std::vector<int> v0(n), vt(n), vertical(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2<double>& p = e.profile[i].start;
+    const int p0 = d.Point(p.x(), p.y(), 0.0), pt = d.Point(p.x(), p.y(), t);
+    v0[i] = d.Add("VERTEX_POINT(''," + StepData::Ref(p0) + ")");
+    vt[i] = d.Add("VERTEX_POINT(''," + StepData::Ref(pt) + ")");
+    const int line = d.Add("LINE(''," + StepData::Ref(p0) + "," + StepData::Ref(up) + ")");
+    vertical[i] = d.Edge(v0[i], vt[i], line, true);
+  }
+  // Each arc (or line): its edge at both ends and its wall, facing out of the solid.
+  std::vector<int> bottom(n), top(n), faces;
+  std::vector<int> walls;
+  for (size_t i = 0; i < n; ++i) {
+    const ArcSegment& a = e.profile[i];
+    const size_t k = (i + 1) % n;
+    int surface = 0;
+    bool outward = true;
+    if (std::abs(a.bulge) < 1e-12) {
+      const Vec2<double> u = (a.end - a.start).normalized();
+      const int dir = d.Direction(u.x(), u.y(), 0.0);
+      const int normal = d.Direction(u.y(), -u.x(), 0.0);  // right of travel: out of a CCW chain
+      const int vec = d.Add("VECTOR(''," + StepData::Ref(dir) + ",1.)");
+      const int p0 = d.Point(a.start.x(), a.start.y(), 0.0), pt = d.Point(a.start.x(), a.start.y(), t);
+      bottom[i] = d.Edge(v0[i], v0[k], d.Add("LINE(''," + StepData::Ref(p0) + "," + StepData::Ref(vec) + ")"), true);
+      top[i] = d.Edge(vt[i], vt[k], d.Add("LINE(''," + StepData::Ref(pt) + "," + StepData::Ref(vec) + ")"), true);
+      surface = d.Add("PLANE(''," + StepData::Ref(d.Axis(p0, normal, dir)) + ")");
+    } else {
+      const ArcGeometry g = ArcGeometryOf(a);
+      const bool ccw = g.sweep > 0;  // the circle runs counter-clockwise about +z
+      const int c0 = d.Axis(d.Point(g.centre.x(), g.centre.y(), 0.0), dz, dx);
+      const int ct = d.Axis(d.Point(g.centre.x(), g.centre.y(), t), dz, dx);
+      const std::string r = Real(g.radius);
+      bottom[i] = d.Edge(v0[i], v0[k], d.Add("CIRCLE(''," + StepData::Ref(c0) + "," + r + ")"), ccw);
+      top[i] = d.Edge(vt[i], vt[k], d.Add("CIRCLE(''," + StepData::Ref(ct) + "," + r + ")"), ccw);
+      surface = d.Add("CYLINDRICAL_SURFACE(''," + StepData::Ref(c0) + "," + r + ")");
+      outward = ccw;  // a counter-clockwise arc of a counter-clockwise chain has the solid inside it
+    }
+    // Seen from outside: along the bottom edge, up at its end, back along the top, down.
+    const int bound = d.Bound({{bottom[i], true}, {vertical[k], true}, {top[i], false}, {vertical[i], false}}, true);
+    walls.push_back(d.Face({bound}, surface, outward));
+  }
+  // The bore: two half-cylinders between the vertices at angles 0 and π about its centre.
+  std::vector<std::pair<int, bool>> bore_bottom, bore_top;
+  if (e.bore_diameter_mm > 0) {
+    const double rb = 0.5 * e.bore_diameter_mm;
+    const Vec2<double> c = e.bore_centre;
+    const int c0 = d.Axis(d.Point(c.x(), c.y(), 0.0), dz, dx), ct = d.Axis(d.Point(c.x(), c.y(), t), dz, dx);
+    const int circle0 = d.Add("CIRCLE(''," + StepData::Ref(c0) + "," + Real(rb) + ")");
+    const int circlet = d.Add("CIRCLE(''," + StepData::Ref(ct) + "," + Real(rb) + ")");
+    int bv0[2], bvt[2], side[2];
+    for (int h = 0; h < 2; ++h) {
+      const double x = c.x() + (h == 0 ? rb : -rb);
+      const int p0 = d.Point(x, c.y(), 0.0), pt = d.Point(x, c.y(), t);
+      bv0[h] = d.Add("VERTEX_POINT(''," + StepData::Ref(p0) + ")");
+      bvt[h] = d.Add("VERTEX_POINT(''," + StepData::Ref(pt) + ")");
+      side[h] = d.Edge(bv0[h], bvt[h], d.Add("LINE(''," + StepData::Ref(p0) + "," + StepData::Ref(up) + ")"), true);
+    }
+    // Half h runs counter-clockwise from vertex h to vertex 1 − h.
+    int arc0[2], arct[2];
+    for (int h = 0; h < 2; ++h) {
+      arc0[h] = d.Edge(bv0[h], bv0[1 - h], circle0, true);
+      arct[h] = d.Edge(bvt[h], bvt[1 - h], circlet, true);
+    }
+    const int cylinder = d.Add("CYLINDRICAL_SURFACE(''," + StepData::Ref(c0) + "," + Real(rb) + ")");
+    for (int h = 0; h < 2; ++h) {
+      // Seen from the axis (the solid's outside): back along the bottom half, up at vertex h,
+      // along the top half, down at vertex 1 − h.
+      const int bound = d.Bound({{arc0[h], false}, {side[h], true}, {arct[h], true}, {side[1 - h], false}}, true);
+      walls.push_back(d.Face({bound}, cylinder, false));
+    }
+    // The end faces' inner loops: clockwise seen from their outside (below for z = 0).
+    bore_bottom = {{arc0[0], true}, {arc0[1], true}};
+    bore_top = {{arct[1], false}, {arct[0], false}};
+  }
+  // The end faces: z = 0 faces −z (its profile loop reversed), z = t faces +z.
+  std::vector<std::pair<int, bool>> loop0, loopt;
+  for (size_t i = n; i-- > 0;) loop0.push_back({bottom[i], false});
+  for (size_t i = 0; i < n; ++i) loopt.push_back({top[i], true});
+  const int plane0 = d.Add("PLANE(''," + StepData::Ref(d.Axis(d.Point(0, 0, 0), dz, dx)) + ")");
+  const int planet = d.Add("PLANE(''," + StepData::Ref(d.Axis(d.Point(0, 0, t), dz, dx)) + ")");
+  std::vector<int> b0 = {d.Bound(loop0, true)}, bt = {d.Bound(loopt, true)};
+  if (!bore_bottom.empty()) {
+    b0.push_back(d.Bound(bore_bottom, false));
+    bt.push_back(d.Bound(bore_top, false));
+  }
+  faces.push_back(d.Face(b0, plane0, false));
+  faces.push_back(d.Face(bt, planet, true));
+  faces.insert(faces.end(), walls.begin(), walls.end());
+  std::string list;
+  for (int f : faces) list += (list.empty() ? "" : ",") + StepData::Ref(f);
+  const int shell = d.Add("CLOSED_SHELL('',(" + list + "))");
+  const int brep = d.Add("MANIFOLD_SOLID_BREP(''," + StepData::Ref(shell) + ")");
+  const int origin = d.Axis(d.Point(0, 0, 0), dz, dx);
+  const int rep = d.Add("ADVANCED_BREP_SHAPE_REPRESENTATION('',(" + StepData::Ref(origin) + "," + StepData::Ref(brep) +
+                        ")," + StepData::Ref(ctx) + ")");
+  d.Add("SHAPE_DEFINITION_REPRESENTATION(" + StepData::Ref(shape) + "," + StepData::Ref(rep) + ")");
+
+  std::string out;
+  out.reserve(d.text().size() + 600);
+  out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n";
+  out += "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n";
+  out += "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n";
+  out += d.text();
+  out += "ENDSEC;\nEND-ISO-10303-21;\n";
+  return out;
+}
+
+}  // namespace camopt::cad

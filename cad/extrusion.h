@@ -1,0 +1,52 @@
+// An extruded planar cam written without a CAD kernel: its STEP AP214 B-rep (one face per arc or
+// line of the chain, the planes at both ends and the bore's two half-cylinders; ISO 10303-42 entities
+// in an ISO 10303-21 file) and its closed triangle mesh for STL. The faces are the chain's arcs and
+// lines exactly, as the OCCT extrusion gave them (cad/solid.cc), so the files' checks against the
+// exact profile are unchanged; the kernel is left for what needs it (reading files back in the
+// tests, B-spline surfaces, and the mesh of a profile the fast triangulation below cannot take).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cad/arc_fit.h"
+#include "cad/stl.h"
+
+namespace camopt::cad {
+
+/// A planar cam extruded along +z: outer profile (a closed, counter-clockwise chain of arcs in the
+/// xy plane) minus an optional circular bore.
+struct Extrusion {
+  std::vector<ArcSegment> profile;     ///< closed chain [mm]
+  Vec2<double> bore_centre = Vec2<double>::Zero();  ///< also the cam's centre without a bore
+  double bore_diameter_mm = 0.0;       ///< 0: no bore
+  double thickness_mm = 10.0;
+  std::string name = "cam";            ///< product name in the STEP file
+  double mesh_deflection_mm = 0.002;   ///< STL chord deviation from the solid's faces
+  bool step = true;                    ///< false: no STEP file (SolidOutput::step stays empty)
+};
+
+/// The mesh's chord deviation: Extrusion::mesh_deflection_mm, raised above 4e-6 of the profile's
+/// bounding-box diagonal (the triangle count then stays that of a part of about half a metre,
+/// whatever its size: a 5 m cam at a fixed 2 µm took 85 s and 4.8 GB to mesh).
+double MeshDeflection(const Extrusion& e);
+
+/// The closed mesh of the extrusion: each arc cut into chords whose sagitta is at most `deflection`
+/// (whose turn, and the angle it spans seen from the centre, are at most 0.1 rad), the walls two triangles per chord, the end faces triangulated
+/// by merging the profile and the bore (or a fan from the centre without a bore) in polar angle
+/// about the bore's centre. nullopt when that triangulation is not valid — a triangle not
+/// counter-clockwise, i.e. the profile is not star-shaped about the centre: with every triangle
+/// counter-clockwise the triangles cover the face exactly once (their indicator functions sum to
+/// the boundary's winding number, 1 inside, 0 outside), which is the check.
+std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection);
+
+/// The STEP AP214 file of the extrusion (a MANIFOLD_SOLID_BREP in millimetres), with a fixed time
+/// stamp: the same extrusion gives the same bytes. Throws std::invalid_argument when the bore does
+/// not lie inside the profile with room to spare or the chain is not closed.
+std::string StepOfExtrusion(const Extrusion& e);
+
+/// A text as the contents of a STEP string (ISO 10303-21 §6.4.3, between its apostrophes).
+std::string StepString(const std::string& text);
+
+}  // namespace camopt::cad
