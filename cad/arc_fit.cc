@@ -103,6 +103,10 @@ struct ArcProbe {
   Vec2<double> start, end, centre, chord;
   double radius = 0.0, mid_side = 0.0;
   bool straight = true;
+  // Every point of the arc lies within `reach` of the chord's midpoint: half the chord (a minor
+  // arc's farthest points are its ends) or the sagitta |bulge| c/2 (a major arc's is its midpoint).
+  Vec2<double> chord_mid;
+  double reach = 0.0;
 };
 
 ArcProbe ProbeOf(const ArcSegment& a) {
@@ -111,6 +115,8 @@ ArcProbe ProbeOf(const ArcSegment& a) {
   pr.end = a.end;
   pr.chord = a.end - a.start;
   pr.straight = std::abs(a.bulge) < kStraightBulge;
+  pr.chord_mid = 0.5 * (a.start + a.end);
+  pr.reach = 0.5 * pr.chord.norm() * std::max(1.0, std::abs(a.bulge)) * (1 + 1e-12);
   if (pr.straight) return pr;
   const ArcGeometry g = ArcGeometryOf(a);
   pr.centre = g.centre;
@@ -236,6 +242,10 @@ double MaxDistanceToChain(const CurveFunction& curve, double t0, double t1, int 
     size_t best_k = hint;
     for (size_t w = 0; w < std::min<size_t>(n, 32); ++w) {
       const size_t k = (hint + n - 8 + w) % n;
+      // An arc whose every point is farther than the best so far cannot be nearer: skipped
+      // (same order, so the same nearest arc as computing every distance).
+      const double far = best + probes[k].reach;
+      if (std::isfinite(best) && (q - probes[k].chord_mid).squaredNorm() > far * far * (1 + 1e-12)) continue;
       const double dist = Distance(probes[k], q);
       if (dist < best) best = dist, best_k = k;
     }
