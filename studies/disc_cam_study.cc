@@ -6,6 +6,7 @@
 
 #include "model/disc_cam/check.h"
 #include "model/disc_cam/flat_faced.h"
+#include "model/disc_cam/oscillating_flat_faced.h"
 #include "studies/format.h"
 #include "studies/material_input.h"
 #include "studies/motion_input.h"
@@ -95,6 +96,54 @@ MotionInputSpec FollowerMotionSpec(bool oscillating) {
   return spec;
 }
 
+// The model of an oscillating flat-faced follower (model/disc_cam/oscillating_flat_faced.h) of a study.
+dc::OscillatingFlatFaced OscillatingFlatFace(const Study& s) {
+  dc::OscillatingFlatFaced c;
+  c.base_radius = s.cam.base_radius;
+  c.pivot_distance = s.cam.pivot_distance;
+  c.face_offset = s.face_offset_mm;
+  c.motion = s.cam.motion;
+  return c;
+}
+
+// An oscillating flat face's feasibility over the analysis grid (CheckOscillatingFlatFaced): the face
+// must reach the base circle (named at the pivot distance), the arm stay in (0, 180) deg and turn
+// slower than the cam (named at the motion).
+void CheckOscillatingFlatFace(const Study& s, const Node& root) {
+  const dc::OscillatingFlatFaced c = OscillatingFlatFace(s);
+  const std::string issue = dc::CheckOscillatingFlatFaced(c, s.angle_steps);
+  if (issue.empty()) return;
+  if (!(c.base_radius + c.face_offset < c.pivot_distance))
+    root["follower"]["pivot_distance_mm"].FailWith(issue + " (" + Format(c.base_radius) + " + " + Format(c.face_offset) +
+                                                   " = " + Format(c.base_radius + c.face_offset) + " mm, pivot distance " +
+                                                   Format(c.pivot_distance) + " mm)");
+  root["motion"].FailWith(issue + " (docs/disc_cam.md, 'Oscillating flat-faced follower')");
+}
+
+// Arg max / arg min over a uniform grid of n cam angles over 360°, the angle of a grid index, and a
+// column of the grid (the series of result.json and series.csv).
+struct Grid {
+  int n;
+  template <typename F>
+  int ArgMax(F f) const {
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (f(i) > f(best)) best = i;
+    return best;
+  }
+  template <typename F>
+  int ArgMin(F f) const {
+    return ArgMax([&](int i) { return -f(i); });
+  }
+  double AngleDeg(int i) const { return 360.0 * i / n; }
+  template <typename F>
+  std::vector<double> Col(F f) const {
+    std::vector<double> c(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) c[size_t(i)] = f(i);
+    return c;
+  }
+};
+
 }  // namespace
 
 nlohmann::ordered_json Input::MotionSchema(bool sizing) {
@@ -106,12 +155,14 @@ nlohmann::ordered_json Input::MotionSchema(bool sizing) {
 nlohmann::ordered_json Input::Follower::SchemaRules() {
   using oj = nlohmann::ordered_json;
   const oj is_roller = {{"properties", {{"type", {{"enum", RollerTypes()}}}}}};
-  const oj is_flat = {{"properties", {{"type", {{"const", "translating_flat_faced"}}}}}};
+  const oj is_flat = {{"properties", {{"type", {{"enum", {"translating_flat_faced", "oscillating_flat_faced"}}}}}}};
+  const oj is_flat_arm = {{"properties", {{"type", {{"const", "oscillating_flat_faced"}}}}}};
   auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
   const oj radius = {{"if", is_roller}, {"then", {{"required", oj::array({"roller_radius_mm"})}}},
                      {"else", refuse("roller_radius_mm")}};
   const oj face = {{"if", is_flat}, {"else", refuse("face_width_mm")}};
-  return {{"allOf", oj::array({radius, face})}};
+  const oj face_offset = {{"if", is_flat_arm}, {"else", refuse("face_offset_mm")}};
+  return {{"allOf", oj::array({radius, face, face_offset})}};
 }
 
 nlohmann::ordered_json Input::SchemaRules() {
@@ -126,7 +177,8 @@ nlohmann::ordered_json Input::SchemaRules() {
   const oj profile_only = {{"items", {{"const", "profile"}}}};
   const oj evaluate_profile_only = {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}}};
   const oj no_roller = {
-      {"if", follower_is({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced"})},
+      {"if", follower_is({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced",
+                          "oscillating_flat_faced"})},
       {"then", {{"allOf", oj::array({refuse("cutter_radius_mm"), evaluate_profile_only})}}}};
   // A knife edge: a point contact, no contact-stress limit.
   const oj knife = {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
@@ -163,7 +215,14 @@ Study Parse(const Node& root) {
                                               : Study::Contact::kFlatFaced;
   const bool roller = s.contact == Study::Contact::kRoller;
   const bool flat = s.contact == Study::Contact::kFlatFaced;
-  if (flat) {
+  if (flat && oscillating) {
+    // Its base circle, motion and pivot distance (model/disc_cam/oscillating_flat_faced.h), no arm length:
+    // the face, not a roller, touches the cam.
+    follower.CheckKnownFields({"type", "pivot_distance_mm", "face_offset_mm", "face_width_mm"});
+    cam.follower = FollowerType::kOscillatingRoller;
+    cam.pivot_distance = follower["pivot_distance_mm"].Positive();  // required: "missing required field"
+    s.face_offset_mm = in.follower.face_offset_mm.value_or(0.0);
+  } else if (flat) {
     follower.CheckKnownFields({"type", "face_width_mm"});
     cam.follower = FollowerType::kTranslatingRoller;  // its base circle and motion only
   } else if (!oscillating) {
@@ -185,6 +244,8 @@ Study Parse(const Node& root) {
       roller ? PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius") : 0.0;
   if (in.follower.face_width_mm)
     s.follower_face_width_mm = PlausibleLength(follower["face_width_mm"], cam.base_radius, "the base circle radius");
+  if (in.follower.face_offset_mm && !std::isfinite(*in.follower.face_offset_mm))
+    follower["face_offset_mm"].Fail("a finite length");
   if (!flat)
     for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
   // Without a roller: no mechanical error (Rzine et al.'s eqs. 16–32 and the exact-motion check
@@ -304,6 +365,10 @@ Study Parse(const Node& root) {
     s.monte_carlo = false;
   if (!roller) s.error_stage = s.monte_carlo = false;  // the profile only (refused above when asked)
   // Feasibility over the cycle, on the analysis grid.
+  if (flat && oscillating) {
+    CheckOscillatingFlatFace(s, root);
+    return s;
+  }
   const auto issues = flat ? dc::CheckFlatFaced(cam.motion, cam.base_radius, s.angle_steps)
                            : dc::CheckDesign(cam, s.angle_steps);
   if (!issues.empty()) FailOn(issues.front(), cam, root);
@@ -317,7 +382,11 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   g.file_stem = "profile";
   g.design_name = s.name;
   g.cam_name = "disc cam";
-  if (s.contact == Study::Contact::kFlatFaced) {
+  if (s.contact == Study::Contact::kFlatFaced && cam.follower == FollowerType::kOscillatingRoller) {
+    // The envelope of the face lines on the arm; no roller, so no pitch curve or cutter path.
+    g.profile = [c = OscillatingFlatFace(s)](double th) { return dc::EvaluateOscillatingFlatFaced(c, th).contact; };
+    g.cutter_note = "omitted: a flat-faced follower has no roller, so no pitch curve or roller-sized cutter path";
+  } else if (s.contact == Study::Contact::kFlatFaced) {
     // The exact profile, the envelope of the face lines; no roller, so no pitch curve or cutter path.
     g.profile = [cam](double th) { return dc::EvaluateFlatFaced(cam.motion, cam.base_radius, th).contact; };
     g.cutter_note = "omitted: a flat-faced follower has no roller, so no pitch curve or roller-sized cutter path";
@@ -404,8 +473,11 @@ void FinishLoads(const Study& s, Result::Loads& L) {
 }
 
 Result RunFlatFaced(const Study& s);
+Result RunOscillatingFlatFaced(const Study& s);
 
 Result Run(const Study& s, const RunContext& ctx) {
+  if (s.contact == Study::Contact::kFlatFaced && s.cam.follower == FollowerType::kOscillatingRoller)
+    return RunOscillatingFlatFaced(s);
   if (s.contact == Study::Contact::kFlatFaced) return RunFlatFaced(s);
   const DiscCam& cam = s.cam;
   const bool osc = cam.follower == FollowerType::kOscillatingRoller;
@@ -668,6 +740,75 @@ Result RunFlatFaced(const Study& s) {
   return r;
 }
 
+// An oscillating flat-faced follower (model/disc_cam/oscillating_flat_faced.h): the contact on the
+// envelope of the face lines, where it runs along the face (ℓ = f cos ξ/(1 − ξ')), the pressure angle
+// atan(d/ℓ), the radius of curvature ρ = h + h_φφ (a flat face needs ρ > 0). No loads: "dynamics" is
+// refused for an oscillating follower.
+Result RunOscillatingFlatFaced(const Study& s) {
+  const dc::OscillatingFlatFaced c = OscillatingFlatFace(s);
+  const Grid g{s.angle_steps};
+  const int n = g.n;
+  std::vector<dc::OscillatingFlatFacePoint> pts(static_cast<size_t>(n));
+  const std::vector<motion::Svaj<double>> svaj = SampleMotion(c.motion, n);
+  for (int i = 0; i < n; ++i) pts[size_t(i)] = dc::EvaluateOscillatingFlatFaced(c, 2 * kPi * i / n);
+  auto at = [&](int i) -> const dc::OscillatingFlatFacePoint& { return pts[size_t(i)]; };
+  const double unit = 1.0 / kDeg;  // the follower unit: deg
+
+  Result r;
+  r.oscillating = true;
+  r.follower_unit = "deg";
+  auto& t = r.series;
+  t.cam_angle_deg = g.Col([&](int i) { return g.AngleDeg(i); });
+  t.follower = g.Col([&](int i) { return svaj[size_t(i)].s * unit; });
+  t.velocity_per_rad = g.Col([&](int i) { return svaj[size_t(i)].v * unit; });
+  t.acceleration_per_rad2 = g.Col([&](int i) { return svaj[size_t(i)].a * unit; });
+  t.jerk_per_rad3 = g.Col([&](int i) { return svaj[size_t(i)].j * unit; });
+  t.pressure_angle_deg = g.Col([&](int i) { return at(i).pressure_angle / kDeg; });
+  t.radial_dimension_mm = g.Col([&](int i) { return at(i).contact.norm(); });
+  t.contact_x_mm = g.Col([&](int i) { return at(i).contact.x(); });
+  t.contact_y_mm = g.Col([&](int i) { return at(i).contact.y(); });
+
+  const int i_rmax = g.ArgMax([&](int i) { return t.radial_dimension_mm[size_t(i)]; });
+  r.max_radial_dimension_mm = {t.radial_dimension_mm[size_t(i_rmax)], g.AngleDeg(i_rmax)};
+  r.min_radial_dimension_mm = t.radial_dimension_mm[size_t(g.ArgMin([&](int i) { return t.radial_dimension_mm[size_t(i)]; }))];
+  const int i_pmax = g.ArgMax([&](int i) { return at(i).pressure_angle; });
+  const int i_pmin = g.ArgMin([&](int i) { return at(i).pressure_angle; });
+  r.min_pressure_angle_deg = {at(i_pmin).pressure_angle / kDeg, g.AngleDeg(i_pmin)};
+  r.max_pressure_angle_deg = {at(i_pmax).pressure_angle / kDeg, g.AngleDeg(i_pmax)};
+  // |φ| on the rise (and dwells, ξ' >= 0) and on the return, as for a roller.
+  for (int i = 0; i < n; ++i) {
+    const AtAngle a{std::abs(at(i).pressure_angle) / kDeg, g.AngleDeg(i)};
+    if (at(i).dxi >= 0.0) {
+      if (a.value > r.max_pressure_angle_rise_deg.value) r.max_pressure_angle_rise_deg = a;
+    } else if (!r.max_pressure_angle_return_deg || a.value > r.max_pressure_angle_return_deg->value) {
+      r.max_pressure_angle_return_deg = a;
+    }
+  }
+
+  Result::FlatFace F;
+  F.contact_offset_mm = g.Col([&](int i) { return at(i).contact_on_face; });
+  F.radius_of_curvature_mm = g.Col([&](int i) { return at(i).radius_of_curvature; });
+  const int i_omax = g.ArgMax([&](int i) { return F.contact_offset_mm[size_t(i)]; });
+  const int i_omin = g.ArgMin([&](int i) { return F.contact_offset_mm[size_t(i)]; });
+  F.max_contact_offset_mm = {F.contact_offset_mm[size_t(i_omax)], g.AngleDeg(i_omax)};
+  F.min_contact_offset_mm = {F.contact_offset_mm[size_t(i_omin)], g.AngleDeg(i_omin)};
+  const int i_rho = g.ArgMin([&](int i) { return F.radius_of_curvature_mm[size_t(i)]; });
+  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[size_t(i_rho)], g.AngleDeg(i_rho)};
+  std::vector<bool> cusp(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) cusp[size_t(i)] = !(F.radius_of_curvature_mm[size_t(i)] > 0.0);
+  F.cusp_cam_angle_deg = Intervals(cusp);
+  r.min_radius_of_curvature_mm = F.min_radius_of_curvature_mm;
+  r.flat_face = std::move(F);
+
+  r.joints = motion::CheckContinuity(c.motion, 1e-7);
+  const MotionPeaks peaks = PeakDerivatives(svaj);
+  r.peak_velocity = peaks.velocity * unit;
+  r.peak_acceleration = peaks.acceleration * unit;
+  r.peak_jerk = peaks.jerk * unit;
+  r.profile_files = FitGeometryFiles(s);
+  return r;
+}
+
 nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json j;
   j["study"] = "disc_cam";
@@ -693,7 +834,50 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json& pa = j["pressure_angle_deg"];
   const double pa_limit = s.limits.pressure_angle_deg;
   bool geometry_ok = true;  // the pressure angle and radius limits (and a flat face's width)
-  if (flat) {
+  // The pressure angle on the rise and on the return against its limit (a roller, a knife edge, a
+  // flat face on an arm).
+  auto pressure_angle_limits = [&] {
+    pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
+    pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
+    if (r.max_pressure_angle_return_deg) {
+      pa["max_return"] = r.max_pressure_angle_return_deg->value;
+      pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+    }
+    pa["limit"] = pa_limit;
+    pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
+    pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
+    return pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>();
+  };
+  const bool flat_arm = flat && s.cam.follower == FollowerType::kOscillatingRoller;
+  if (flat_arm) {
+    // The flat face on an arm: the pressure angle atan(d/ℓ) against its limit, ρ = h + h_φφ above the
+    // margin (a convex cam), the face long enough for the contact's travel min ℓ … max ℓ.
+    const Result::FlatFace& F = *r.flat_face;
+    const bool pa_ok = pressure_angle_limits();
+    const double needed = F.max_contact_offset_mm.value - F.min_contact_offset_mm.value;
+    nlohmann::json ff = {{"pivot_distance_mm", s.cam.pivot_distance},
+                         {"face_offset_mm", s.face_offset_mm},
+                         {"arm_angle_on_base_circle_deg", dc::InitialArmAngle(OscillatingFlatFace(s)) / kDeg},
+                         {"contact_on_face_mm", {{"max", F.max_contact_offset_mm.value},
+                                                 {"at_max_cam_angle_deg", F.max_contact_offset_mm.cam_angle_deg},
+                                                 {"min", F.min_contact_offset_mm.value},
+                                                 {"at_min_cam_angle_deg", F.min_contact_offset_mm.cam_angle_deg}}},
+                         {"face_length_needed_mm", needed},
+                         {"min_radius_of_curvature_mm", F.min_radius_of_curvature_mm.value},
+                         {"min_radius_of_curvature_at_cam_angle_deg", F.min_radius_of_curvature_mm.cam_angle_deg},
+                         {"radius_margin_limit_mm", s.limits.radius_margin_mm},
+                         {"radius_margin_ok", F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm},
+                         {"cusp", !F.cusp_cam_angle_deg.empty()},
+                         {"cusp_cam_angle_deg", nlohmann::json::array()}};
+    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+    if (s.follower_face_width_mm) {
+      ff["face_width_mm"] = *s.follower_face_width_mm;
+      ff["face_width_ok"] = *s.follower_face_width_mm >= needed;
+      geometry_ok = ff["face_width_ok"].get<bool>();
+    }
+    geometry_ok = geometry_ok && pa_ok && ff["radius_margin_ok"].get<bool>();
+    j["flat_face"] = ff;
+  } else if (flat) {
     // The flat face: no pressure-angle limit (φ = 0), the radius ρ = r_b + S + S'' above the margin
     // (a convex cam: the face cannot follow ρ ≤ 0), the face wide enough for the contact's travel.
     const Result::FlatFace& F = *r.flat_face;
@@ -726,15 +910,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (s.limits.pressure_angle_default == false)
       j["notes"].push_back("limits.pressure_angle_deg is not checked: a flat face's pressure angle is 0");
   } else {
-    pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
-    pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
-    if (r.max_pressure_angle_return_deg) {
-      pa["max_return"] = r.max_pressure_angle_return_deg->value;
-      pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
-    }
-    pa["limit"] = pa_limit;
-    pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
-    pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
+    pressure_angle_limits();
     j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
     j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
                                         {"max", r.cos_shift_over_cos_pressure.max}};
@@ -871,13 +1047,14 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json defaults = nlohmann::json::array();
   if (s.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
   if (s.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
-  if (flat) {
+  if (flat && !flat_arm) {
     if (s.limits.pressure_angle_default) defaults.erase(defaults.begin());
     j["limits"] = {{"radius_margin_mm", s.limits.radius_margin_mm}, {"defaults", defaults}};
     if (s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
   } else {
     j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
                    {"defaults", defaults}};
+    if (flat_arm && s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
   }
   if (r.loads) j["limits"]["min_contact_force_N"] = 0.0;
   if (s.limits.contact_stress_MPa) j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
@@ -929,8 +1106,11 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("acceleration_" + fu + "_per_rad2", t.acceleration_per_rad2);
   table.Add("jerk_" + fu + "_per_rad3", t.jerk_per_rad3);
   const bool flat = r.flat_face.has_value();
+  const bool flat_arm = flat && r.oscillating;
   if (flat) {
-    // A flat face: no pitch curve, instant centre or shift angle; the pressure angle is 0.
+    // A flat face: no pitch curve, instant centre or shift angle; the pressure angle is 0 (on an arm
+    // atan(d/ℓ)).
+    if (flat_arm) table.Add("pressure_angle_deg", t.pressure_angle_deg);
     table.Add("radial_dimension_mm", t.radial_dimension_mm);
     table.Add("contact_x_mm", t.contact_x_mm);
     table.Add("contact_y_mm", t.contact_y_mm);
@@ -968,7 +1148,16 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
-  if (flat) {
+  if (flat_arm) {
+    PlotOptions o;
+    o.title = s.name + ": flat face on an arm: contact along the face ℓ, radius of curvature, pressure angle";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "[mm], [deg]";
+    out.Add("flat_face.svg", SvgLinePlot({series("contact along the face ℓ [mm]", r.flat_face->contact_offset_mm),
+                                          series("radius of curvature ρ [mm]", r.flat_face->radius_of_curvature_mm),
+                                          series("pressure angle atan(d/ℓ) [deg]", t.pressure_angle_deg)},
+                                         o));
+  } else if (flat) {
     PlotOptions o;
     o.title = s.name + ": flat face: contact offset S' and radius of curvature r_b + S + S''";
     o.x_label = "cam angle [deg]";
@@ -1051,6 +1240,33 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   base.circles.push_back({0.0, 0.0, cam.base_radius});
   base.circles.push_back({0.0, 0.0, 0.5});
   const bool knife = s.contact == Study::Contact::kKnifeEdge;
+  if (flat_arm) {
+    // The arm and its face at θ = 0: the pivot O₃, the perpendicular d to the face, the face over the
+    // contact's travel min ℓ … max ℓ (or the length given, from min ℓ).
+    const Result::FlatFace& F = *r.flat_face;
+    const dc::OscillatingFlatFacePoint p0 = dc::EvaluateOscillatingFlatFaced(OscillatingFlatFace(s), 0.0);
+    const Vec2<double> along = -U(p0.theta - p0.xi), foot = p0.pivot - s.face_offset_mm * p0.normal;
+    const double lo = F.min_contact_offset_mm.value,
+                 hi = s.follower_face_width_mm ? lo + *s.follower_face_width_mm : F.max_contact_offset_mm.value;
+    const Vec2<double> a = foot + lo * along, b = foot + hi * along;
+    follower.polylines.push_back({{a.x(), a.y()}, {b.x(), b.y()}});
+    follower.polylines.push_back({{p0.pivot.x(), p0.pivot.y()}, {foot.x(), foot.y()}});
+    follower.circles.push_back({p0.pivot.x(), p0.pivot.y(), 1.5});
+    d.layers = {profile, base, follower};
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "base circle diameter %g mm; oscillating flat-faced follower, pivot distance %g mm, face offset %g mm, "
+                  "face length needed %.3f mm",
+                  2 * cam.base_radius, cam.pivot_distance, s.face_offset_mm,
+                  F.max_contact_offset_mm.value - F.min_contact_offset_mm.value);
+    d.dimensions.push_back(line);
+    double r_min = INFINITY, r_max = 0;
+    for (const auto& [x, y] : pp) r_min = std::min(r_min, std::hypot(x, y)), r_max = std::max(r_max, std::hypot(x, y));
+    std::snprintf(line, sizeof line, "profile radius from the cam centre %.3f to %.3f mm (sampled)", r_min, r_max);
+    d.dimensions.push_back(line);
+    out.Add("profile.svg", SvgDrawing(d));
+    return;
+  }
   if (flat) {
     // The face at θ = 0: the line x = r_b + S(0) over the width needed (or the face given), and the stem.
     const Result::FlatFace& F = *r.flat_face;
@@ -1174,6 +1390,7 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
      "/flat_face/radius_margin_limit_mm", NAN, false},
     {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
      "/flat_face/face_width_mm"},
+    {"face length needed (flat face on an arm)", "/flat_face/face_length_needed_mm", "mm", "/flat_face/face_width_mm"},
     {"smallest contact force (separation)", "/dynamics/min_contact_force_N", "N", "", 0.0, false},
     {"largest contact force", "/dynamics/max_contact_force_N", "N"},
     {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},

@@ -42,7 +42,7 @@ struct Input {
     std::string type;
     /// Optional without a schema default: an oscillating follower has no offset, a knife edge or a
     /// flat face no roller (a default would be written into its studies by the schema's users).
-    std::optional<double> roller_radius_mm, offset_mm, pivot_distance_mm, arm_length_mm, face_width_mm;
+    std::optional<double> roller_radius_mm, offset_mm, pivot_distance_mm, arm_length_mm, face_width_mm, face_offset_mm;
     /// The follower types with a roller (the others: knife-edge, flat-faced).
     static const std::vector<std::string>& RollerTypes() {
       static const std::vector<std::string> t = {"translating_roller", "oscillating_roller"};
@@ -53,9 +53,10 @@ struct Input {
       a->Visit("type", &type,
                Field().Required()
                    .OneOf({"translating_roller", "oscillating_roller", "translating_knife_edge", "oscillating_knife_edge",
-                           "translating_flat_faced"})
+                           "translating_flat_faced", "oscillating_flat_faced"})
                    .Desc("the follower's kind: a roller, a knife edge (a roller of radius 0: the profile is the pitch "
-                         "curve) or a flat face perpendicular to the line of motion (docs/disc_cam.md)"));
+                         "curve), a flat face perpendicular to the line of motion or a flat face on a pivoted arm "
+                         "(docs/disc_cam.md)"));
       a->Visit("offset_mm", &offset_mm,
                Field().Unit("mm").Desc("translating roller or knife edge only: e, the follower axis's offset from the "
                                         "cam centre, positive as in the paper's Fig. 1; |e| < r_b + r_f (absent: 0)"));
@@ -63,15 +64,22 @@ struct Input {
                Field().Positive().Unit("mm").Desc("roller followers only, required: r_f, of the roller (1e-6 to 1e6 "
                                                   "times the base circle)"));
       a->Visit("pivot_distance_mm", &pivot_distance_mm,
-               Field().Positive().Unit("mm").Desc("oscillating only, required: f = O₂O₃, cam centre to the arm's pivot"));
+               Field().Positive().Unit("mm").Desc("oscillating only, required: f = O₂O₃, cam centre to the arm's pivot "
+                                                  "(a flat face: r_b + face_offset_mm < f)"));
       a->Visit("arm_length_mm", &arm_length_mm,
-               Field().Positive().Unit("mm").Desc("oscillating only, required: l, pivot to the roller centre; |f − l| < r_b + r_f < f + l"));
+               Field().Positive().Unit("mm").Desc("oscillating roller or knife edge only, required: l, pivot to the roller "
+                                                  "centre; |f − l| < r_b + r_f < f + l"));
       a->Visit("face_width_mm", &face_width_mm,
                Field().Positive().Unit("mm").Desc(
                    "flat-faced only: the face's width in the cam plane, centred on the follower's axis; checked "
-                   "against the width the contact runs over, 2 max|S'| (absent: not checked)"));
+                   "against the width the contact runs over, 2 max|S'| (absent: not checked); oscillating: the "
+                   "face's length along the arm, checked against the length the contact runs over, max ℓ − min ℓ"));
+      a->Visit("face_offset_mm", &face_offset_mm,
+               Field().Unit("mm").Desc("oscillating flat-faced only: d, the face's distance from the pivot, toward the "
+                                       "cam (absent: 0, a face through the pivot); r_b + d < f"));
     }
-    /// A roller follower needs its radius, the others have none; the face width is a flat face's.
+    /// A roller follower needs its radius, the others have none; the face width is a flat face's,
+    /// the face offset an oscillating flat face's.
     static nlohmann::ordered_json SchemaRules();
   };
   /// Manufacturing tolerances (Rzine et al., eqs. 31–32).
@@ -264,11 +272,15 @@ struct Input {
 struct Study {
   std::string name;
   /// The follower's contact: a roller, a knife edge (the roller model with r_f = 0) or a flat face
-  /// (model/disc_cam/flat_faced.h; cam holds its base circle and motion, translating, r_f = 0).
+  /// (model/disc_cam/flat_faced.h; cam holds its base circle and motion, translating, r_f = 0), or a
+  /// flat face on an arm (model/disc_cam/oscillating_flat_faced.h; cam holds its base circle, motion and
+  /// pivot distance, oscillating, r_f = 0; the face offset d below).
   enum class Contact { kRoller, kKnifeEdge, kFlatFaced } contact = Contact::kRoller;
   std::string follower_type = "translating_roller";  ///< as in the file
   /// Flat face: its width in the cam plane, centred on the axis [mm] (follower.face_width_mm).
   std::optional<double> follower_face_width_mm;
+  /// Oscillating flat face: d, the face's distance from the pivot toward the cam [mm].
+  double face_offset_mm = 0.0;
   camopt::disc_cam::DiscCam cam;
   camopt::disc_cam::Deviations<double> tolerances;  ///< [mm]
   int angle_steps = 3600;
@@ -386,9 +398,11 @@ struct Result {
   std::optional<Loads> loads;
 
   /// Flat-faced follower (model/disc_cam/flat_faced.h): where the contact runs on the face, and the
-  /// profile's radius of curvature ρ = r_b + S + S'' (min_radius_of_curvature_mm holds ρ_min).
+  /// profile's radius of curvature ρ = r_b + S + S'' (min_radius_of_curvature_mm holds ρ_min). On an
+  /// arm (model/disc_cam/oscillating_flat_faced.h) the contact offset is ℓ, along the face from the
+  /// foot of the pivot's perpendicular, and ρ = h + h_φφ.
   struct FlatFace {
-    AtAngle max_contact_offset_mm, min_contact_offset_mm;  ///< S' [mm]
+    AtAngle max_contact_offset_mm, min_contact_offset_mm;  ///< S' (translating) or ℓ (on an arm) [mm]
     AtAngle min_radius_of_curvature_mm;                    ///< ρ_min, where it is (≤ 0: a cusp)
     std::vector<std::pair<double, double>> cusp_cam_angle_deg;  ///< [from, to] where ρ ≤ 0
     std::vector<double> contact_offset_mm, radius_of_curvature_mm;  ///< series
