@@ -146,8 +146,8 @@ struct Grid {
 
 }  // namespace
 
-nlohmann::ordered_json Input::MotionSchema(bool sizing) {
-  if (sizing) return studies::MotionSchema({FollowerMotionSpec(false)}, {"a length"}, true);
+nlohmann::ordered_json Input::MotionSchema(bool /*sizing*/) {
+  // disc_cam_min_size sizes translating and oscillating followers alike: the same schema.
   return studies::MotionSchema({FollowerMotionSpec(false), FollowerMotionSpec(true)},
                                {"translating follower", "oscillating follower"}, false);
 }

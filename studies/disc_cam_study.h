@@ -211,8 +211,8 @@ struct Input {
     a->Visit("name", &name, Field().Desc("the design's name, in titles"));
     a->Visit("description", &description, Field().Desc("free text"));
     a->Visit("follower", &follower,
-             Field().Required().Desc(sizing ? "the start design's follower; a translating roller follower only (the "
-                                              "other types are refused)"
+             Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller follower "
+                                              "only (the other types are refused)"
                                             : "the follower"));
     a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
              Field().Required().Positive().Unit("mm").Desc(
@@ -263,8 +263,7 @@ struct Input {
     SerializeGeometry(a);
   }
   /// The schema of "motion" (read by ParseMotionProgram): rise_mm for a translating, rise_deg for an
-  /// oscillating follower (`sizing`: rise_mm only, the rise by law in the schema); polynomial
-  /// segments.
+  /// oscillating follower; polynomial segments (`sizing`: the same, disc_cam_min_size sizes both).
   static nlohmann::ordered_json MotionSchema(bool sizing);
 };
 
