@@ -424,27 +424,20 @@ void FinishLoads(const Study& s, Result::Loads& L) {
   const int n = static_cast<int>(L.contact_force_N.size());
   const dc::DiscCam& cam = s.cam;
   const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
-  auto arg_max = [&](auto f) {
-    int best = 0;
-    for (int i = 1; i < n; ++i)
-      if (f(i) > f(best)) best = i;
-    return best;
-  };
-  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
-  auto angle_deg = [&](int i) { return 360.0 * i / n; };
+  const Grid g{n};  // arg max/min and angles over the grid
   const bool stress = L.stress_evaluated;
   const auto& f = L.contact_force_N;
   const auto& tq = L.camshaft_torque_Nm;
-  const int i_fmin = arg_min([&](int i) { return f[i]; }), i_fmax = arg_max([&](int i) { return f[i]; });
-  L.min_contact_force_N = {f[i_fmin], angle_deg(i_fmin)};
-  L.max_contact_force_N = {f[i_fmax], angle_deg(i_fmax)};
-  const int i_tabs = arg_max([&](int i) { return std::abs(tq[i]); });
-  L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), angle_deg(i_tabs)};
-  L.min_camshaft_torque_Nm = tq[arg_min([&](int i) { return tq[i]; })];
-  L.max_camshaft_torque_Nm = tq[arg_max([&](int i) { return tq[i]; })];
+  const int i_fmin = g.ArgMin([&](int i) { return f[i]; }), i_fmax = g.ArgMax([&](int i) { return f[i]; });
+  L.min_contact_force_N = {f[i_fmin], g.AngleDeg(i_fmin)};
+  L.max_contact_force_N = {f[i_fmax], g.AngleDeg(i_fmax)};
+  const int i_tabs = g.ArgMax([&](int i) { return std::abs(tq[i]); });
+  L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), g.AngleDeg(i_tabs)};
+  L.min_camshaft_torque_Nm = tq[g.ArgMin([&](int i) { return tq[i]; })];
+  L.max_camshaft_torque_Nm = tq[g.ArgMax([&](int i) { return tq[i]; })];
   if (stress) {
-    const int i_p = arg_max([&](int i) { return L.contact_stress_MPa[i]; });
-    L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], angle_deg(i_p)};
+    const int i_p = g.ArgMax([&](int i) { return L.contact_stress_MPa[i]; });
+    L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], g.AngleDeg(i_p)};
   }
   // The follower on its own stiffness (model/disc_cam/follower_dynamics.h): the response at the
   // speed, and the lowest speed at which it leaves the cam, searched up to 1.5 times the larger
@@ -496,68 +489,56 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.error_stage) err[i] = dc::FollowerError(cam, pts[i], s.tolerances);
   }
 
-  auto arg_max = [&](auto f) {
-    int best = 0;
-    for (int i = 1; i < n; ++i)
-      if (f(i) > f(best)) best = i;
-    return best;
-  };
-  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
-  auto angle_deg = [&](int i) { return 360.0 * i / n; };
-  auto col = [&](auto f) {
-    std::vector<double> c(n);
-    for (int i = 0; i < n; ++i) c[i] = f(i);
-    return c;
-  };
+  const Grid g{n};  // arg max/min, angles and columns over the grid
 
   Result r;
   r.oscillating = osc;
   r.follower_unit = osc ? "deg" : "mm";
   auto& t = r.series;
-  t.cam_angle_deg = col(angle_deg);
-  t.follower = col([&](int i) { return pts[i].s * unit; });
-  t.velocity_per_rad = col([&](int i) { return pts[i].ds * unit; });
-  t.acceleration_per_rad2 = col([&](int i) { return pts[i].d2s * unit; });
-  t.jerk_per_rad3 = col([&](int i) { return svaj[i].j * unit; });
-  t.pressure_angle_deg = col([&](int i) { return pts[i].pressure_angle / kDeg; });
-  t.shift_angle_deg = col([&](int i) { return pts[i].shift_angle / kDeg; });
-  t.radial_dimension_mm = col([&](int i) { return pts[i].radial_dimension; });
-  t.contact_x_mm = col([&](int i) { return pts[i].contact.x(); });
-  t.contact_y_mm = col([&](int i) { return pts[i].contact.y(); });
-  t.pitch_x_mm = col([&](int i) { return pts[i].pitch.x(); });
-  t.pitch_y_mm = col([&](int i) { return pts[i].pitch.y(); });
-  t.q_mm = col([&](int i) { return pts[i].q; });
-  t.pitch_curvature_per_mm = col([&](int i) { return pts[i].pitch_curvature; });
+  t.cam_angle_deg = g.Col([&](int i) { return g.AngleDeg(i); });
+  t.follower = g.Col([&](int i) { return pts[i].s * unit; });
+  t.velocity_per_rad = g.Col([&](int i) { return pts[i].ds * unit; });
+  t.acceleration_per_rad2 = g.Col([&](int i) { return pts[i].d2s * unit; });
+  t.jerk_per_rad3 = g.Col([&](int i) { return svaj[i].j * unit; });
+  t.pressure_angle_deg = g.Col([&](int i) { return pts[i].pressure_angle / kDeg; });
+  t.shift_angle_deg = g.Col([&](int i) { return pts[i].shift_angle / kDeg; });
+  t.radial_dimension_mm = g.Col([&](int i) { return pts[i].radial_dimension; });
+  t.contact_x_mm = g.Col([&](int i) { return pts[i].contact.x(); });
+  t.contact_y_mm = g.Col([&](int i) { return pts[i].contact.y(); });
+  t.pitch_x_mm = g.Col([&](int i) { return pts[i].pitch.x(); });
+  t.pitch_y_mm = g.Col([&](int i) { return pts[i].pitch.y(); });
+  t.q_mm = g.Col([&](int i) { return pts[i].q; });
+  t.pitch_curvature_per_mm = g.Col([&](int i) { return pts[i].pitch_curvature; });
   if (s.error_stage) {
-    t.error_radial_um = col([&](int i) { return err[i].radial * to_um; });
-    t.error_roller_um = col([&](int i) { return err[i].roller * to_um; });
-    t.error_normal_um = col([&](int i) { return err[i].normal * to_um; });
-    t.error_worst_case_um = col([&](int i) { return err[i].worst_case * to_um; });
-    t.error_rms_um = col([&](int i) { return err[i].rms * to_um; });
+    t.error_radial_um = g.Col([&](int i) { return err[i].radial * to_um; });
+    t.error_roller_um = g.Col([&](int i) { return err[i].roller * to_um; });
+    t.error_normal_um = g.Col([&](int i) { return err[i].normal * to_um; });
+    t.error_worst_case_um = g.Col([&](int i) { return err[i].worst_case * to_um; });
+    t.error_rms_um = g.Col([&](int i) { return err[i].rms * to_um; });
   }
 
-  const int i_rmax = arg_max([&](int i) { return pts[i].radial_dimension; });
-  const int i_rmin = arg_min([&](int i) { return pts[i].radial_dimension; });
-  r.max_radial_dimension_mm = {pts[i_rmax].radial_dimension, angle_deg(i_rmax)};
+  const int i_rmax = g.ArgMax([&](int i) { return pts[i].radial_dimension; });
+  const int i_rmin = g.ArgMin([&](int i) { return pts[i].radial_dimension; });
+  r.max_radial_dimension_mm = {pts[i_rmax].radial_dimension, g.AngleDeg(i_rmax)};
   r.min_radial_dimension_mm = pts[i_rmin].radial_dimension;
-  const int i_pmax = arg_max([&](int i) { return pts[i].pressure_angle; });
-  const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
-  r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, angle_deg(i_pmin)};
-  r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, angle_deg(i_pmax)};
+  const int i_pmax = g.ArgMax([&](int i) { return pts[i].pressure_angle; });
+  const int i_pmin = g.ArgMin([&](int i) { return pts[i].pressure_angle; });
+  r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, g.AngleDeg(i_pmin)};
+  r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, g.AngleDeg(i_pmax)};
   // Pressure angle on the rise (and dwells, S' >= 0) and on the return (S' < 0), as |φ|.
   for (int i = 0; i < n; ++i) {
-    const AtAngle a{std::abs(pts[i].pressure_angle) / kDeg, angle_deg(i)};
+    const AtAngle a{std::abs(pts[i].pressure_angle) / kDeg, g.AngleDeg(i)};
     if (pts[i].ds >= 0.0) {
       if (a.value > r.max_pressure_angle_rise_deg.value) r.max_pressure_angle_rise_deg = a;
     } else if (!r.max_pressure_angle_return_deg || a.value > r.max_pressure_angle_return_deg->value) {
       r.max_pressure_angle_return_deg = a;
     }
   }
-  const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
-  const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
+  const int i_lmax = g.ArgMax([&](int i) { return pts[i].shift_angle; });
+  const int i_lmin = g.ArgMin([&](int i) { return pts[i].shift_angle; });
   r.shift_angle_deg = {pts[i_lmin].shift_angle / kDeg, pts[i_lmax].shift_angle / kDeg};
   auto ratio = [&](int i) { return dc::RadialErrorRatio(pts[i]); };
-  r.cos_shift_over_cos_pressure = {ratio(arg_min(ratio)), ratio(arg_max(ratio))};
+  r.cos_shift_over_cos_pressure = {ratio(g.ArgMin(ratio)), ratio(g.ArgMax(ratio))};
 
   // Curvature: the profile's radius where the pitch curve is convex, its magnitude where concave;
   // undercut where κ r_f > 1 (model/disc_cam/disc_cam.h).
@@ -569,9 +550,9 @@ Result Run(const Study& s, const RunContext& ctx) {
     auto& convex = r.min_radius_of_curvature_mm;
     auto& concave = r.min_concave_radius_of_curvature_mm;
     if (k > 0) {
-      if (!convex || rho < convex->value) convex = AtAngle{rho, angle_deg(i)};
+      if (!convex || rho < convex->value) convex = AtAngle{rho, g.AngleDeg(i)};
     } else if (k < 0) {
-      if (!concave || -rho < concave->value) concave = AtAngle{-rho, angle_deg(i)};
+      if (!concave || -rho < concave->value) concave = AtAngle{-rho, g.AngleDeg(i)};
     }
   }
   r.undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
@@ -603,21 +584,21 @@ Result Run(const Study& s, const RunContext& ctx) {
   // Mechanical error (eqs. 16–32), when asked for.
   r.error_evaluated = s.error_stage;
   if (s.error_stage) {
-    const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
-    const int i_rms = arg_max([&](int i) { return err[i].rms; });
-    r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, angle_deg(i_wor)};
+    const int i_wor = g.ArgMax([&](int i) { return err[i].worst_case; });
+    const int i_rms = g.ArgMax([&](int i) { return err[i].rms; });
+    r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, g.AngleDeg(i_wor)};
     r.min_worst_case_error_um =
-        err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um;
-    r.max_rms_error_um = {err[i_rms].rms * to_um, angle_deg(i_rms)};
+        err[g.ArgMin([&](int i) { return err[i].worst_case; })].worst_case * to_um;
+    r.max_rms_error_um = {err[i_rms].rms * to_um, g.AngleDeg(i_rms)};
     auto component = [&](auto get) {
-      const int a = arg_max(get), b = arg_min(get);
+      const int a = g.ArgMax(get), b = g.ArgMin(get);
       return MinMax{get(b) * to_um, get(a) * to_um};
     };
     r.radial_error_um = component([&](int i) { return err[i].radial; });
     r.roller_error_um = component([&](int i) { return err[i].roller; });
     r.normal_error_um = component([&](int i) { return err[i].normal; });
     if (osc) {
-      r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, angle_deg(i_wor)};
+      r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, g.AngleDeg(i_wor)};
       r.max_rms_error_arcsec = err[i_rms].rms * to_arcsec;
     }
   }
@@ -663,47 +644,35 @@ Result RunFlatFaced(const Study& s) {
   std::vector<dc::FlatFacePoint<double>> pts(n);
   const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
   for (int i = 0; i < n; ++i) pts[i] = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, 2 * kPi * i / n);
-  auto arg_max = [&](auto f) {
-    int best = 0;
-    for (int i = 1; i < n; ++i)
-      if (f(i) > f(best)) best = i;
-    return best;
-  };
-  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
-  auto angle_deg = [&](int i) { return 360.0 * i / n; };
-  auto col = [&](auto f) {
-    std::vector<double> c(n);
-    for (int i = 0; i < n; ++i) c[i] = f(i);
-    return c;
-  };
+  const Grid g{n};  // arg max/min, angles and columns over the grid
 
   Result r;
   r.follower_unit = "mm";
   auto& t = r.series;
-  t.cam_angle_deg = col(angle_deg);
-  t.follower = col([&](int i) { return pts[i].s; });
-  t.velocity_per_rad = col([&](int i) { return pts[i].ds; });
-  t.acceleration_per_rad2 = col([&](int i) { return pts[i].d2s; });
-  t.jerk_per_rad3 = col([&](int i) { return svaj[i].j; });
+  t.cam_angle_deg = g.Col([&](int i) { return g.AngleDeg(i); });
+  t.follower = g.Col([&](int i) { return pts[i].s; });
+  t.velocity_per_rad = g.Col([&](int i) { return pts[i].ds; });
+  t.acceleration_per_rad2 = g.Col([&](int i) { return pts[i].d2s; });
+  t.jerk_per_rad3 = g.Col([&](int i) { return svaj[i].j; });
   t.pressure_angle_deg = std::vector<double>(n, 0.0);
-  t.radial_dimension_mm = col([&](int i) { return pts[i].contact.norm(); });
-  t.contact_x_mm = col([&](int i) { return pts[i].contact.x(); });
-  t.contact_y_mm = col([&](int i) { return pts[i].contact.y(); });
+  t.radial_dimension_mm = g.Col([&](int i) { return pts[i].contact.norm(); });
+  t.contact_x_mm = g.Col([&](int i) { return pts[i].contact.x(); });
+  t.contact_y_mm = g.Col([&](int i) { return pts[i].contact.y(); });
 
-  const int i_rmax = arg_max([&](int i) { return t.radial_dimension_mm[i]; });
-  r.max_radial_dimension_mm = {t.radial_dimension_mm[i_rmax], angle_deg(i_rmax)};
-  r.min_radial_dimension_mm = t.radial_dimension_mm[arg_min([&](int i) { return t.radial_dimension_mm[i]; })];
+  const int i_rmax = g.ArgMax([&](int i) { return t.radial_dimension_mm[i]; });
+  r.max_radial_dimension_mm = {t.radial_dimension_mm[i_rmax], g.AngleDeg(i_rmax)};
+  r.min_radial_dimension_mm = t.radial_dimension_mm[g.ArgMin([&](int i) { return t.radial_dimension_mm[i]; })];
   r.min_pressure_angle_deg = r.max_pressure_angle_deg = r.max_pressure_angle_rise_deg = {0.0, 0.0};
 
   Result::FlatFace F;
-  F.contact_offset_mm = col([&](int i) { return pts[i].contact_offset; });
-  F.radius_of_curvature_mm = col([&](int i) { return pts[i].radius_of_curvature; });
-  const int i_omax = arg_max([&](int i) { return F.contact_offset_mm[i]; });
-  const int i_omin = arg_min([&](int i) { return F.contact_offset_mm[i]; });
-  F.max_contact_offset_mm = {F.contact_offset_mm[i_omax], angle_deg(i_omax)};
-  F.min_contact_offset_mm = {F.contact_offset_mm[i_omin], angle_deg(i_omin)};
-  const int i_rho = arg_min([&](int i) { return F.radius_of_curvature_mm[i]; });
-  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[i_rho], angle_deg(i_rho)};
+  F.contact_offset_mm = g.Col([&](int i) { return pts[i].contact_offset; });
+  F.radius_of_curvature_mm = g.Col([&](int i) { return pts[i].radius_of_curvature; });
+  const int i_omax = g.ArgMax([&](int i) { return F.contact_offset_mm[i]; });
+  const int i_omin = g.ArgMin([&](int i) { return F.contact_offset_mm[i]; });
+  F.max_contact_offset_mm = {F.contact_offset_mm[i_omax], g.AngleDeg(i_omax)};
+  F.min_contact_offset_mm = {F.contact_offset_mm[i_omin], g.AngleDeg(i_omin)};
+  const int i_rho = g.ArgMin([&](int i) { return F.radius_of_curvature_mm[i]; });
+  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[i_rho], g.AngleDeg(i_rho)};
   std::vector<bool> cusp(n);
   for (int i = 0; i < n; ++i) cusp[i] = !(F.radius_of_curvature_mm[i] > 0.0);
   F.cusp_cam_angle_deg = Intervals(cusp);
