@@ -183,7 +183,11 @@ nlohmann::ordered_json Input::SchemaRules() {
   // A knife edge: a point contact, no contact-stress limit.
   const oj knife = {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
                     {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}};
-  return {{"allOf", oj::array({no_roller, knife})}};
+  // The arm's loads: an oscillating flat face only.
+  const oj arm = {{"if", follower_is({"translating_roller", "oscillating_roller", "translating_knife_edge",
+                                      "oscillating_knife_edge", "translating_flat_faced"})},
+                  {"then", refuse("arm_dynamics")}};
+  return {{"allOf", oj::array({no_roller, knife, arm})}};
 }
 
 nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
@@ -297,6 +301,10 @@ Study Parse(const Node& root) {
     s.face_width_mm = PlausibleLength(root["face_width_mm"], cam.base_radius, "the base circle radius");
   if (in.material) s.material = in.material->ToMaterial();
   if (in.dynamics) {
+    if (oscillating && flat)
+      root["dynamics"].FailWith(
+          "the kinetostatic loads of \"dynamics\" are implemented for translating followers only: an oscillating "
+          "flat-faced follower's arm takes \"arm_dynamics\" (its moment of inertia and the moments about its pivot)");
     if (oscillating)
       root["dynamics"].FailWith(
           "the kinetostatic loads are implemented for translating followers only (an oscillating "
@@ -319,6 +327,19 @@ Study Parse(const Node& root) {
     else dyn.loads.weight_N = 0.0;  // horizontal
     s.dynamics = dyn;
   }
+  if (in.arm_dynamics) {
+    if (!(flat && oscillating))
+      root["arm_dynamics"].FailWith("the arm's loads are implemented for an oscillating flat-faced follower only: "
+                                    "remove \"arm_dynamics\"" +
+                                    std::string(oscillating ? "" : " (a translating follower takes \"dynamics\")"));
+    Study::ArmDynamics a;
+    a.speed_rpm = in.arm_dynamics->speed_rpm;
+    a.loads.inertia_kg_m2 = in.arm_dynamics->arm_inertia_kg_m2;
+    a.loads.spring_rate_N_m_per_rad = in.arm_dynamics->spring_rate_N_m_per_rad;
+    a.loads.spring_preload_N_m = in.arm_dynamics->spring_preload_N_m;
+    a.loads.external_moment_N_m = in.arm_dynamics->external_moment_N_m;
+    s.arm_dynamics = a;
+  }
   if (limits.contact_stress_MPa) {
     const Node l = root["limits"]["contact_stress_MPa"];
     if (s.contact == Study::Contact::kKnifeEdge)
@@ -328,7 +349,11 @@ Study Parse(const Node& root) {
     std::string missing;
     for (const auto& [absent, what] : {std::pair{!s.face_width_mm, "face_width_mm (the contact length of roller and cam)"},
                                        std::pair{!s.material, "material (youngs_modulus_GPa, poisson_ratio)"},
-                                       std::pair{!s.dynamics, "dynamics (the contact force: speed_rpm, follower_mass_kg, spring)"}})
+                                       flat && oscillating
+                                           ? std::pair{!s.arm_dynamics, "arm_dynamics (the contact force: speed_rpm, "
+                                                                        "arm_inertia_kg_m2, spring)"}
+                                           : std::pair{!s.dynamics, "dynamics (the contact force: speed_rpm, "
+                                                                    "follower_mass_kg, spring)"}})
       if (absent) missing += (missing.empty() ? "" : ", ") + std::string(what);
     if (!missing.empty()) l.FailWith("the contact stress cannot be checked without " + missing + ": add them or remove the limit");
   }
@@ -769,6 +794,40 @@ Result RunOscillatingFlatFaced(const Study& s) {
   r.min_radius_of_curvature_mm = F.min_radius_of_curvature_mm;
   r.flat_face = std::move(F);
 
+  // The arm's loads at the speed (model/disc_cam/oscillating_flat_faced.h): F = M/ℓ, T = M S'.
+  if (s.arm_dynamics) {
+    Result::Loads L;
+    const double omega = dc::RadPerSecond(s.arm_dynamics->speed_rpm);
+    const bool stress = s.face_width_mm && s.material;
+    const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
+    L.stress_evaluated = stress;
+    for (int i = 0; i < n; ++i) {
+      const dc::ArmLoad a = dc::OscillatingFlatFaceLoadAt(c, at(i), s.arm_dynamics->loads, omega);
+      L.contact_force_N.push_back(a.contact_force_N);
+      L.camshaft_torque_Nm.push_back(a.camshaft_torque_N_m);
+      if (stress) {
+        const double p = dc::OscillatingFlatFaceContactStress(at(i), a.contact_force_N, *s.face_width_mm, e_star);
+        if (!std::isfinite(p)) L.stress_finite = false;
+        L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
+      }
+    }
+    L.jump_speed_rpm = dc::Rpm(dc::OscillatingFlatFaceJumpSpeed(c, pts, s.arm_dynamics->loads));
+    const auto& f = L.contact_force_N;
+    const auto& tq = L.camshaft_torque_Nm;
+    const int i_fmin = g.ArgMin([&](int i) { return f[size_t(i)]; }), i_fmax = g.ArgMax([&](int i) { return f[size_t(i)]; });
+    L.min_contact_force_N = {f[size_t(i_fmin)], g.AngleDeg(i_fmin)};
+    L.max_contact_force_N = {f[size_t(i_fmax)], g.AngleDeg(i_fmax)};
+    const int i_tabs = g.ArgMax([&](int i) { return std::abs(tq[size_t(i)]); });
+    L.max_abs_camshaft_torque_Nm = {std::abs(tq[size_t(i_tabs)]), g.AngleDeg(i_tabs)};
+    L.min_camshaft_torque_Nm = tq[size_t(g.ArgMin([&](int i) { return tq[size_t(i)]; }))];
+    L.max_camshaft_torque_Nm = tq[size_t(g.ArgMax([&](int i) { return tq[size_t(i)]; }))];
+    if (stress) {
+      const int i_p = g.ArgMax([&](int i) { return L.contact_stress_MPa[size_t(i)]; });
+      L.max_contact_stress_MPa = {L.contact_stress_MPa[size_t(i_p)], g.AngleDeg(i_p)};
+    }
+    r.loads = std::move(L);
+  }
+
   r.joints = motion::CheckContinuity(c.motion, 1e-7);
   const MotionPeaks peaks = PeakDerivatives(svaj);
   r.peak_velocity = peaks.velocity * unit;
@@ -929,7 +988,50 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   }
 
   bool loads_ok = true;
-  if (r.loads) {
+  if (r.loads && s.arm_dynamics) {
+    // The arm of an oscillating flat face: contact force M/ℓ, camshaft torque M S', jump speed, stress.
+    const Result::Loads& L = *r.loads;
+    const dc::ArmLoads& a = s.arm_dynamics->loads;
+    nlohmann::json aj = {{"speed_rpm", s.arm_dynamics->speed_rpm},
+                         {"arm_inertia_kg_m2", a.inertia_kg_m2},
+                         {"spring_rate_N_m_per_rad", a.spring_rate_N_m_per_rad},
+                         {"spring_preload_N_m", a.spring_preload_N_m},
+                         {"external_moment_N_m", a.external_moment_N_m},
+                         {"min_contact_force_N", L.min_contact_force_N.value},
+                         {"at_min_contact_force_cam_angle_deg", L.min_contact_force_N.cam_angle_deg},
+                         {"max_contact_force_N", L.max_contact_force_N.value},
+                         {"at_max_contact_force_cam_angle_deg", L.max_contact_force_N.cam_angle_deg},
+                         {"separation_ok", L.min_contact_force_N.value > 0.0},
+                         {"max_camshaft_torque_Nm", L.max_abs_camshaft_torque_Nm.value},
+                         {"at_max_camshaft_torque_cam_angle_deg", L.max_abs_camshaft_torque_Nm.cam_angle_deg},
+                         {"camshaft_torque_range_Nm", {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm}}};
+    if (std::isfinite(L.jump_speed_rpm)) {
+      aj["jump_speed_rpm"] = L.jump_speed_rpm;
+    } else {
+      aj["jump_speed_rpm"] = nullptr;
+      j["notes"].push_back("jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam");
+    }
+    loads_ok = L.min_contact_force_N.value > 0.0;
+    if (L.stress_evaluated) {
+      aj["face_width_mm"] = *s.face_width_mm;
+      aj["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
+      if (L.stress_finite) {
+        aj["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
+        aj["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
+      } else {
+        aj["max_contact_stress_MPa"] = nullptr;
+        j["notes"].push_back("max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)");
+      }
+      if (s.limits.contact_stress_MPa) {
+        aj["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
+        aj["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
+        loads_ok = loads_ok && aj["contact_stress_ok"].get<bool>();
+      }
+    } else if (s.face_width_mm || s.material) {
+      j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
+    }
+    j["arm_dynamics"] = aj;
+  } else if (r.loads) {
     const Result::Loads& L = *r.loads;
     const auto& d = *s.dynamics;
     nlohmann::json dj = {{"speed_rpm", d.speed_rpm},
@@ -1009,7 +1111,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
     j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
   } else if (s.face_width_mm || s.material) {
-    j["notes"].push_back("no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
+    j["notes"].push_back(flat_arm ? "no contact force and no contact stress: they need \"arm_dynamics\" (speed, arm "
+                                    "inertia, spring)"
+                                  : "no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
   }
 
   // The verdict: every limit met, and which limits are the defaults.
@@ -1158,7 +1262,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
   if (r.loads) {
     PlotOptions o;
-    o.title = s.name + ": contact force and camshaft torque at " + Format(s.dynamics->speed_rpm) + " rpm";
+    o.title = s.name + ": contact force and camshaft torque at " +
+              Format(s.dynamics ? s.dynamics->speed_rpm : s.arm_dynamics->speed_rpm) + " rpm";
     o.x_label = "cam angle [deg]";
     o.y_label = "force [N], torque [N·m]";
     out.Add("loads.svg", SvgLinePlot({series("contact force F_c [N]", r.loads->contact_force_N),
@@ -1368,6 +1473,11 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"smallest axial force (dynamic)", "/dynamics/response/min_axial_force_N", "N"},
     {"residual vibration", "/dynamics/response/residual_vibration_mm", "mm"},
     {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
+    {"smallest contact force on the arm's face (separation)", "/arm_dynamics/min_contact_force_N", "N", "", 0.0, false},
+    {"largest contact stress (arm's face)", "/arm_dynamics/max_contact_stress_MPa", "MPa",
+     "/arm_dynamics/contact_stress_limit_MPa"},
+    {"jump speed (arm, kinetostatic)", "/arm_dynamics/jump_speed_rpm", "rpm"},
+    {"largest camshaft torque (arm)", "/arm_dynamics/max_camshaft_torque_Nm", "N·m"},
     {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
     {"worst-case follower error", "/worst_case_error_um/max", "µm"},
     {"largest rms follower error", "/rms_error_um/max", "µm"},

@@ -1,6 +1,7 @@
 // Study kind "disc_cam": a disc cam with an offset translating or an oscillating roller follower
-// (Rzine et al., docs/disc_cam.md), a knife edge (the roller model with r_f = 0) or a translating
-// flat-faced follower (model/disc_cam/flat_faced.h). Profile, pressure and shift angles, curvature
+// (Rzine et al., docs/disc_cam.md), a knife edge (the roller model with r_f = 0), a translating
+// flat-faced follower (model/disc_cam/flat_faced.h) or a flat face on an arm
+// (model/disc_cam/oscillating_flat_faced.h). Profile, pressure and shift angles, curvature
 // and undercut over a cam revolution; for a roller the mechanical error from the tolerances (worst
 // case and RMS, eqs. 31–32) and a Monte-Carlo check of the linearised error against the exact
 // follower motion.
@@ -20,6 +21,7 @@
 #include "model/disc_cam/follower_dynamics.h"
 #include "model/disc_cam/kinetostatics.h"
 #include "model/disc_cam/mechanical_error.h"
+#include "model/disc_cam/oscillating_flat_faced.h"
 #include "model/motion/motion_program.h"
 #include "studies/archive.h"
 #include "studies/geometry_files.h"
@@ -154,6 +156,24 @@ struct Input {
                    "follower_stiffness_N_per_mm)"));
     }
   };
+  /// Kinetostatic loads on an oscillating flat-faced follower's arm at one cam speed
+  /// (model/disc_cam/oscillating_flat_faced.h).
+  struct ArmDynamics {
+    double speed_rpm = 0.0, arm_inertia_kg_m2 = 0.0, spring_rate_N_m_per_rad = 0.0, spring_preload_N_m = 0.0,
+           external_moment_N_m = 0.0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("speed_rpm", &speed_rpm, Field().Required().Positive().Unit("rpm").Desc("n, the cam speed"));
+      a->Visit("arm_inertia_kg_m2", &arm_inertia_kg_m2,
+               Field().Required().Positive().Unit("kg·m²").Desc("J, the arm's (and face's) moment of inertia about the pivot"));
+      a->Visit("spring_rate_N_m_per_rad", &spring_rate_N_m_per_rad,
+               Field().NonNegative().Unit("N·m/rad").Desc("k, the return spring's rate about the pivot"));
+      a->Visit("spring_preload_N_m", &spring_preload_N_m,
+               Field().NonNegative().Unit("N·m").Desc("M₀, the spring's moment on the base circle, pressing the face on the cam"));
+      a->Visit("external_moment_N_m", &external_moment_N_m,
+               Field().Unit("N·m").Desc("M_e, a constant moment pressing the arm onto the cam (negative: lifting it off)"));
+    }
+  };
   /// The Monte-Carlo check of the linearised error (the object form of analysis.monte_carlo).
   struct MonteCarlo {
     int samples = camopt::disc_cam::MonteCarloOptions{}.samples;
@@ -199,6 +219,7 @@ struct Input {
   std::optional<double> face_width_mm;
   std::optional<MaterialInput> material;
   std::optional<Dynamics> dynamics;
+  std::optional<ArmDynamics> arm_dynamics;
   Analysis analysis;
   std::optional<double> cam_thickness_mm, bore_diameter_mm, cutter_radius_mm;
   nlohmann::json geometry_files;
@@ -235,6 +256,10 @@ struct Input {
     a->Visit("dynamics", &dynamics,
              Field().Desc("kinetostatic follower loads at one cam speed (docs/disc_cam.md 'Kinetostatic loads'); "
                           "translating followers only"));
+    a->Visit("arm_dynamics", &arm_dynamics,
+             Field().Desc("kinetostatic loads on the arm of an oscillating flat-faced follower at one cam speed: "
+                          "contact force M/ℓ, camshaft torque M S', jump speed, contact stress (docs/disc_cam.md "
+                          "'Oscillating flat-faced follower')"));
   }
   /// The geometry files' fields (after "analysis" in the file).
   template <typename Archive>
@@ -320,6 +345,12 @@ struct Study {
     int revolutions = 3;
   };
   std::optional<Dynamics> dynamics;
+  /// The arm's loads of an oscillating flat-faced follower ("arm_dynamics").
+  struct ArmDynamics {
+    double speed_rpm = 0.0;
+    camopt::disc_cam::ArmLoads loads;
+  };
+  std::optional<ArmDynamics> arm_dynamics;
 };
 
 /// A value and the cam angle where it is reached.

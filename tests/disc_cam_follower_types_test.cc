@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -259,6 +260,68 @@ TEST(DiscCamOscillatingFlatFacedStudy, ProfileFaceLengthPressureAngleAndRadiusAg
   EXPECT_FALSE(short_face.out["limits_ok"].get<bool>());
 }
 
+// The arm's loads at 300 rpm (J = 0.002 kg·m², k = 20 N·m/rad, M₀ = 3 N·m): the contact force from the
+// moment about the pivot written out here, M = J S'' ω² + k S + M₀ over the arm ℓ of the envelope built
+// above; the camshaft torque as the moment of that force about the cam centre, A × (F m) (not the power
+// balance the code uses); the jump speed by bisection on min F; the Hertz stress of a plane on ρ.
+TEST(DiscCamOscillatingFlatFacedStudy, ArmLoadsAgainstTheMomentAboutThePivot) {
+  const Ran ran = ParseAndRun(Example("disc_cam_oscillating_flat_faced.json"));
+  ASSERT_TRUE(ran.result.loads.has_value());
+  const auto& L = *ran.result.loads;
+  const auto& F = *ran.result.flat_face;
+  const double f = 100, d = 10, rb = 40, deg = kPiHere / 180, scale = 10 * deg / kH;
+  const double J = 0.002, k = 20, m0 = 3, omega = 300 * 2 * kPiHere / 60;
+  auto face = [&](double th) {
+    const double xi = std::asin((rb + d) / f) + scale * Program(th).s;
+    const double ox = f * std::cos(th), oy = f * std::sin(th);
+    const double ax = std::cos(th + kPiHere - xi), ay = std::sin(th + kPiHere - xi);
+    double mx = -ay, my = ax;
+    if (mx * -ox + my * -oy < 0) mx = -mx, my = -my;
+    return std::pair<Line, std::pair<double, double>>{Line{ox + d * mx, oy + d * my, ax, ay}, {mx, my}};
+  };
+  auto force = [&](double th, double w) {  // [N], and the contact point
+    const auto [x, y] = Intersect(face(th - 1e-5).first, face(th + 1e-5).first);
+    const Line line = face(th).first;
+    const double ell = (x - line.px) * line.dx + (y - line.py) * line.dy;
+    const Svaj3 p = Program(th);
+    const double moment = J * scale * p.a * w * w + k * scale * p.s + m0;
+    return std::tuple<double, double, double>{moment / (ell * 1e-3), x, y};
+  };
+  double worst_f = 0, worst_t = 0;
+  for (int i = 0; i < 3600; i += 9) {
+    const double th = 2 * kPiHere * i / 3600;
+    const auto [fc, x, y] = force(th, omega);
+    worst_f = std::max(worst_f, std::abs(fc - L.contact_force_N[i]) / std::abs(fc));
+    const auto m = face(th).second;
+    const double torque = (x * fc * m.second - y * fc * m.first) * 1e-3;  // A × (F m) [N·m]
+    worst_t = std::max(worst_t, std::abs(torque - L.camshaft_torque_Nm[i]));
+  }
+  EXPECT_LT(worst_f, 1e-6);
+  EXPECT_LT(worst_t, 1e-6);  // N·m (the torque reaches 0.80 N·m)
+  // On the base circle: F = M₀/(f cos ξ₀) = 3/(0.1 cos 30°) = 34.641 N.
+  EXPECT_NEAR(L.contact_force_N[3500], m0 / (0.1 * std::cos(30 * deg)), 1e-9);
+  // The jump speed: bisection on the speed where min F over 36 000 angles reaches 0.
+  auto min_force = [&](double w) {
+    double lo = 1e300;
+    for (int i = 0; i < 36000; ++i) lo = std::min(lo, std::get<0>(force(2 * kPiHere * i / 36000, w)));
+    return lo;
+  };
+  double a = omega, b = 10 * omega;
+  ASSERT_GT(min_force(a), 0.0);
+  ASSERT_LT(min_force(b), 0.0);
+  for (int it = 0; it < 40; ++it) (min_force(0.5 * (a + b)) > 0 ? a : b) = 0.5 * (a + b);
+  const json& aj = ran.out["arm_dynamics"];
+  EXPECT_NEAR(aj["jump_speed_rpm"].get<double>(), 0.5 * (a + b) * 60 / (2 * kPiHere), 1e-3 * aj["jump_speed_rpm"].get<double>());
+  // Hertz, plane on ρ: p₀ = sqrt(F E*/(π w ρ)) at the reported peak, E* = E/(2(1 − ν²)).
+  const int ip = int(std::lround(aj["at_max_contact_stress_cam_angle_deg"].get<double>() * 10));
+  const double e_star = 206000 / (2 * (1 - 0.09));
+  EXPECT_NEAR(aj["max_contact_stress_MPa"].get<double>(),
+              std::sqrt(L.contact_force_N[ip] * e_star / (kPiHere * 12 * F.radius_of_curvature_mm[ip])), 1e-9);
+  EXPECT_TRUE(aj["separation_ok"].get<bool>());
+  EXPECT_TRUE(aj["contact_stress_ok"].get<bool>());
+  EXPECT_TRUE(ran.out["limits_ok"].get<bool>());
+}
+
 // A 20° swing over 120° makes the profile concave on the rise: ρ_min < 0, a cusp, the verdict fails.
 TEST(DiscCamOscillatingFlatFacedStudy, AConcaveProfileIsACuspAndFailsTheVerdict) {
   json study = Example("disc_cam_oscillating_flat_faced.json");
@@ -333,9 +396,13 @@ INSTANTIATE_TEST_SUITE_P(
             {"law": "dwell", "cam_angle_deg": 150}, {"law": "cycloidal", "rise_deg": -60, "cam_angle_deg": 30},
             {"law": "dwell", "cam_angle_deg": 150}]})", "/motion", "as fast as the cam"},
         BadCase{"arm_face_dynamics", kO, R"({"dynamics": {"speed_rpm": 100, "follower_mass_kg": 1}})", "/dynamics",
-                "translating followers only"},
+                "takes \"arm_dynamics\""},
         BadCase{"arm_face_stage", kO, R"({"analysis": {"evaluate": ["error"]}})", "/analysis/evaluate/0",
                 "roller followers only"},
+        BadCase{"arm_face_stress_without_loads", kO, R"({"arm_dynamics": null})", "/limits/contact_stress_MPa",
+                "arm_dynamics"},
+        BadCase{"translating_arm_dynamics", kF, R"({"arm_dynamics": {"speed_rpm": 100, "arm_inertia_kg_m2": 0.01}})",
+                "/arm_dynamics", "oscillating flat-faced follower only"},
         BadCase{"translating_face_offset", kF, R"({"follower": {"face_offset_mm": 3}})", "/follower/face_offset_mm",
                 "unknown field"},
         BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",
