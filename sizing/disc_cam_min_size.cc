@@ -35,6 +35,7 @@ constexpr double kRefineShare = 0.01;
 struct Grid {
   std::vector<double> theta;
   std::vector<int> rise, ret;
+  double s_min = 0.0, s_max = 0.0;  ///< the follower's range over the samples (oscillating: ξ − ξ₀)
 };
 
 Grid MakeGrid(const DiscCamSizingSpec& spec) {
@@ -43,7 +44,10 @@ Grid MakeGrid(const DiscCamSizingSpec& spec) {
   for (int i = 0; i < n; ++i) {
     const double th = 2 * kPi * i / n;
     g.theta.push_back(th);
-    (spec.cam.motion.Evaluate(th).v >= 0.0 ? g.rise : g.ret).push_back(i);
+    const motion::Svaj<double> m = spec.cam.motion.Evaluate(th);
+    (m.v >= 0.0 ? g.rise : g.ret).push_back(i);
+    g.s_min = std::min(g.s_min, m.s);
+    g.s_max = std::max(g.s_max, m.s);
   }
   return g;
 }
@@ -55,8 +59,23 @@ void SetVariables(const DiscCamSizingSpec& spec, std::span<const T> x, dc::DiscC
       case DiscCamSizingVariable::kBaseCircle: cam.base_radius = x[k]; break;
       case DiscCamSizingVariable::kOffset: cam.offset = x[k]; break;
       case DiscCamSizingVariable::kRollerRadius: cam.roller_radius = x[k]; break;
+      case DiscCamSizingVariable::kPivotDistance: cam.pivot_distance = x[k]; break;
+      case DiscCamSizingVariable::kArmLength: cam.arm_length = x[k]; break;
     }
   }
+}
+
+// Whether the follower touches the base circle and stays where the model holds: translating
+// |e| < r_b + r_f; oscillating |f − l| < r_b + r_f < f + l (eq. 11's ξ₀ defined) and the arm within
+// (0, π) from O₃O₂ over the cycle (ξ₀ + S on the samples' range [s_min, s_max]), as CheckDesign.
+bool InsideGeometry(const dc::DiscCam& cam, const Grid& g) {
+  const double r0 = cam.base_radius + cam.roller_radius;
+  if (!(r0 > 0.0 && cam.roller_radius > 0.0)) return false;
+  if (cam.follower == dc::FollowerType::kTranslatingRoller) return std::abs(cam.offset) < r0 * (1 - 1e-9);
+  const double f = cam.pivot_distance, l = cam.arm_length;
+  if (!(f > 0.0 && l > 0.0 && std::abs(f - l) < r0 * (1 - 1e-9) && r0 < (f + l) * (1 - 1e-9))) return false;
+  const double xi0 = dc::InitialFollowerCoordinate(cam);
+  return xi0 + g.s_min > 0.0 && xi0 + g.s_max < kPi;
 }
 
 struct Context {
@@ -75,9 +94,13 @@ void EvalRows(const Context& c, std::span<const T> x, std::span<T> y) {
   SetVariables(spec, x, cam);
   y[0] = cam.base_radius;
   const int n = int(c.grid.theta.size());
-  const double r0 = Value(cam.base_radius) + Value(cam.roller_radius);
-  const bool inside = r0 > 0.0 && Value(cam.roller_radius) > 0.0 && std::abs(Value(cam.offset)) < r0 * (1 - 1e-9);
-  if (!inside) {
+  dc::DiscCam values = spec.cam;
+  {
+    std::vector<double> xv(x.size());
+    for (size_t k = 0; k < x.size(); ++k) xv[k] = Value(x[k]);
+    SetVariables(spec, std::span<const double>(xv), values);
+  }
+  if (!InsideGeometry(values, c.grid)) {
     // Outside the geometry: finite rows far beyond their limits, zero derivatives.
     for (size_t k = 0; k < c.grid.rise.size(); ++k) y[size_t(c.rise_offset) + k] = T(90.0);
     for (size_t k = 0; k < c.grid.ret.size(); ++k) y[size_t(c.return_offset) + k] = T(90.0);
@@ -136,6 +159,8 @@ std::string DiscCamSizingVariableName(DiscCamSizingVariable v) {
     case DiscCamSizingVariable::kBaseCircle: return "base_circle_radius_mm";
     case DiscCamSizingVariable::kOffset: return "offset_mm";
     case DiscCamSizingVariable::kRollerRadius: return "roller_radius_mm";
+    case DiscCamSizingVariable::kPivotDistance: return "pivot_distance_mm";
+    case DiscCamSizingVariable::kArmLength: return "arm_length_mm";
   }
   return "";
 }
@@ -160,13 +185,19 @@ double RadiusMarginOf(const DiscCamSizingSpec& spec, const dc::DiscCam& cam) {
 }
 
 Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLimits& fast) {
-  if (spec.cam.follower != dc::FollowerType::kTranslatingRoller)
-    throw std::invalid_argument("disc cam sizing: a translating roller follower only");
+  const bool oscillating = spec.cam.follower == dc::FollowerType::kOscillatingRoller;
+  for (DiscCamSizingVariable v : spec.which)
+    if (oscillating ? v == DiscCamSizingVariable::kOffset
+                    : v == DiscCamSizingVariable::kPivotDistance || v == DiscCamSizingVariable::kArmLength)
+      throw std::invalid_argument("disc cam sizing: " + DiscCamSizingVariableName(v) + " is not a variable of " +
+                                  (oscillating ? "an oscillating" : "a translating") + " follower");
   if (spec.which.size() != spec.variables.size() || spec.which.empty() ||
       spec.which.front() != DiscCamSizingVariable::kBaseCircle)
     throw std::invalid_argument("disc cam sizing: the base circle must be the first variable");
   const bool stress = std::isfinite(fast.contact_stress_MPa);
   if (stress && !spec.stress) throw std::invalid_argument("disc cam sizing: a stress limit needs the loads");
+  if (stress && oscillating)
+    throw std::invalid_argument("disc cam sizing: the contact stress needs translating loads (kinetostatics.h)");
   auto c = std::make_shared<Context>();
   c->spec = spec;
   c->fast = fast;
@@ -189,7 +220,7 @@ Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLim
   }
   Problem p;
   p.variables = spec.variables;
-  p.evaluator = MakeEvaluator<3>(int(spec.variables.size()), blocks, [c](auto x, auto y) { EvalRows(*c, x, y); });
+  p.evaluator = MakeEvaluator<4>(int(spec.variables.size()), blocks, [c](auto x, auto y) { EvalRows(*c, x, y); });
   p.objective = kDiscCamBaseCircle;
   p.objective_scale = std::max(1.0, spec.variables.front().scale);
   p.constraints.push_back({kDiscCamPressureRise, -fast.rise_deg, fast.rise_deg, spec.limits.pressure_angle_deg});

@@ -1,14 +1,17 @@
-// The smallest base circle of a disc cam with an offset translating roller follower, for a given
-// motion program, under the limits of the disc_cam verdict (docs/disc_cam.md "Limits and verdict").
+// The smallest base circle of a disc cam with an offset translating or an oscillating roller
+// follower, for a given motion program, under the limits of the disc_cam verdict (docs/disc_cam.md
+// "Limits and verdict").
 //
 // Variables (any subset; the others keep the study's values): base_circle_radius_mm r_b (always a
-// variable: it is the objective), offset_mm e, roller_radius_mm r_f.
+// variable: it is the objective), roller_radius_mm r_f, and offset_mm e (translating) or
+// pivot_distance_mm f = O₂O₃ and arm_length_mm l = O₃C (oscillating; Rzine et al. eq. 11).
 // Objective: minimise r_b.
 //
 // Constraint rows over N uniformly sampled cam angles θᵢ = 2π i/N (model/disc_cam/disc_cam.h over
 // ceres::Jet, so every row has its exact first derivative):
 //   kDiscCamPressureRise    −α_rise ≤ φ(θᵢ) ≤ α_rise at every sample where the follower rises or
-//                           dwells (S' ≥ 0), φ from Rzine et al. eq. (3) [deg];
+//                           dwells (S' ≥ 0), φ from Rzine et al. eq. (3), or eq. (12) for an
+//                           oscillating follower [deg];
 //   kDiscCamPressureReturn  −α_return ≤ φ(θᵢ) ≤ α_return where it returns (S' < 0). The two blocks
 //                           are the disc_cam verdict's two limits, one row per sample
 //                           (epigraph rows, not a soft max). Which sample is rise or return
@@ -25,8 +28,10 @@
 //                           (Johnson, Contact Mechanics eq. 4.45), without the division by R'
 //                           (R' ≤ 0 under load, an undercut profile, breaks the row). Only with a
 //                           contact-stress limit.
-// A design outside the geometry (|e| ≥ r_b + r_f, the follower cannot touch the base circle) gives
-// finite rows far beyond their limits with zero derivatives (SLSQP's line search backs off).
+// A design outside the geometry (|e| ≥ r_b + r_f, or for an oscillating follower an arm that cannot
+// reach the base circle, |f − l| < r_b + r_f < f + l failing, or that leaves (0, π) from O₃O₂ over the
+// cycle) gives finite rows far beyond their limits with zero derivatives (SLSQP's line search backs
+// off). The contact-stress rows need translating loads (model/disc_cam/kinetostatics.h).
 //
 // Verification (objectives/verification.h, docs/optimization.md): the fast rows sample N angles;
 // the accurate model re-evaluates the design on accurate_factor·N angles and refines every local
@@ -58,8 +63,8 @@ inline constexpr const char* kDiscCamPressureReturn = "pressure_angle_return_deg
 inline constexpr const char* kDiscCamCurvature = "pitch_curvature_ratio";
 inline constexpr const char* kDiscCamStress = "contact_stress_row_mm";
 
-enum class DiscCamSizingVariable { kBaseCircle, kOffset, kRollerRadius };
-/// "base_circle_radius_mm", "offset_mm", "roller_radius_mm".
+enum class DiscCamSizingVariable { kBaseCircle, kOffset, kRollerRadius, kPivotDistance, kArmLength };
+/// "base_circle_radius_mm", "offset_mm", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm".
 std::string DiscCamSizingVariableName(DiscCamSizingVariable v);
 
 /// The study's limits (the disc_cam "limits" with their defaults applied).
@@ -80,8 +85,9 @@ struct DiscCamStressModel {
 };
 
 struct DiscCamSizingSpec {
-  disc_cam::DiscCam cam;  ///< translating roller follower: the fixed values and the starts
-  /// The variables (base circle first, then any of offset and roller radius), with bounds, start
+  disc_cam::DiscCam cam;  ///< a roller follower: the fixed values and the starts
+  /// The variables (base circle first, then any of offset or pivot distance and arm length, and
+  /// roller radius), with bounds, start
   /// (within the bounds) and scale in their own units [mm].
   std::vector<DiscCamSizingVariable> which;
   std::vector<Variable> variables;
@@ -106,7 +112,8 @@ disc_cam::DiscCam DiscCamDesign(const DiscCamSizingSpec& spec, const std::vector
 double RadiusMarginOf(const DiscCamSizingSpec& spec, const disc_cam::DiscCam& cam);
 
 /// The sizing problem with the fast limits. @throws std::invalid_argument for a spec it cannot
-/// build (no base-circle variable, an oscillating follower, a stress limit without its loads).
+/// build (no base-circle variable, a stress limit without its loads or on an oscillating follower, an
+/// offset variable of an oscillating or a pivot or arm variable of a translating follower).
 Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLimits& fast);
 
 /// The cycle maxima of one design over `steps` uniform angles, optionally with each peak refined.

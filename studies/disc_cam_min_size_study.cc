@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 #include "studies/format.h"
 #include "studies/report.h"
@@ -112,12 +113,24 @@ Study Parse(const Node& root) {
   }
   s.name = in.design.name;
   const dc::DiscCam& cam = s.base.cam;
-  if (cam.follower != dc::FollowerType::kTranslatingRoller || s.base.contact != disc_cam::Study::Contact::kRoller)
+  if (s.base.contact != disc_cam::Study::Contact::kRoller)
     root["follower"]["type"].FailWith(
-        "disc_cam_min_size sizes a translating roller follower (variables base_circle_radius_mm, offset_mm, "
-        "roller_radius_mm); an oscillating follower's pivot and arm are not sizing variables yet, nor are knife-edge "
-        "and flat-faced followers sized: use follower.type \"translating_roller\", or study \"disc_cam\" to analyse "
-        "the design");
+        "disc_cam_min_size sizes a roller follower (translating: variables base_circle_radius_mm, offset_mm, "
+        "roller_radius_mm; oscillating: base_circle_radius_mm, pivot_distance_mm, arm_length_mm, roller_radius_mm); "
+        "knife-edge and flat-faced followers are not sized: use follower.type \"translating_roller\" or "
+        "\"oscillating_roller\", or study \"disc_cam\" to analyse the design");
+  const bool oscillating = cam.follower == dc::FollowerType::kOscillatingRoller;
+  // The follower's own variables only: an offset for a translating, pivot and arm for an oscillating one.
+  for (const auto& [key, given, other] :
+       {std::tuple{"offset_mm", bool(in.variables.offset_mm), "pivot_distance_mm and arm_length_mm"},
+        std::tuple{"pivot_distance_mm", bool(in.variables.pivot_distance_mm), "offset_mm"},
+        std::tuple{"arm_length_mm", bool(in.variables.arm_length_mm), "offset_mm"}}) {
+    const bool own = oscillating == (std::string(key) != "offset_mm");
+    if (given && !own)
+      root["variables"][key].FailWith(std::string("not a variable of ") +
+                                      (oscillating ? "an oscillating" : "a translating") +
+                                      " follower: its geometry is sized by " + other);
+  }
 
   objectives::DiscCamSizingSpec& spec = s.spec;
   spec.cam = cam;
@@ -130,6 +143,10 @@ Study Parse(const Node& root) {
   };
   const Entry entries[] = {{"base_circle_radius_mm", DiscCamSizingVariable::kBaseCircle, cam.base_radius, true},
                            {"offset_mm", DiscCamSizingVariable::kOffset, cam.offset, bool(in.variables.offset_mm)},
+                           {"pivot_distance_mm", DiscCamSizingVariable::kPivotDistance, cam.pivot_distance,
+                            bool(in.variables.pivot_distance_mm)},
+                           {"arm_length_mm", DiscCamSizingVariable::kArmLength, cam.arm_length,
+                            bool(in.variables.arm_length_mm)},
                            {"roller_radius_mm", DiscCamSizingVariable::kRollerRadius, cam.roller_radius,
                             bool(in.variables.roller_radius_mm)}};
   for (const Entry& e : entries) {
@@ -189,7 +206,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json j;
   j["study"] = "disc_cam_min_size";
   j["name"] = s.name;
-  j["follower"] = "translating_roller";
+  j["follower"] = s.base.follower_type;
   j["objective"] = "base_circle_radius_mm";
   nlohmann::json vars = nlohmann::json::array();
   for (const objectives::Variable& v : s.spec.variables)
@@ -215,7 +232,12 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else {
     nlohmann::json b;
     b["base_circle_radius_mm"] = Finite(o.cam.base_radius, "base circle");
-    b["offset_mm"] = Finite(o.cam.offset, "offset");
+    if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
+      b["pivot_distance_mm"] = Finite(o.cam.pivot_distance, "pivot distance");
+      b["arm_length_mm"] = Finite(o.cam.arm_length, "arm length");
+    } else {
+      b["offset_mm"] = Finite(o.cam.offset, "offset");
+    }
     b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
     b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
     nlohmann::json at_bounds = nlohmann::json::array();
@@ -287,7 +309,12 @@ nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
   nlohmann::json a = s.base_json;
   a["name"] = (o.verified && o.converged ? "best of " : "closest design (not verified) of ") + s.name;
   a["base_circle_radius_mm"] = o.cam.base_radius;
-  a["follower"]["offset_mm"] = o.cam.offset;
+  if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
+    a["follower"]["pivot_distance_mm"] = o.cam.pivot_distance;
+    a["follower"]["arm_length_mm"] = o.cam.arm_length;
+  } else {
+    a["follower"]["offset_mm"] = o.cam.offset;
+  }
   a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
   // Fields the sized design may no longer take (the cutter no larger than the roller, the bore
   // inside the base circle) are left out.
@@ -310,17 +337,18 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   // The best design over the accurate grid: pressure angle and the profile's radius of curvature.
   const int n = s.spec.angle_steps * s.spec.accurate_factor;
   const size_t m = static_cast<size_t>(n);
+  const bool oscillating = s.spec.cam.follower == dc::FollowerType::kOscillatingRoller;
   std::vector<double> th(m), phi(m), kappa(m), s_mm(m);
   for (int i = 0; i < n; ++i) {
     const dc::CamPoint<double> p = dc::EvaluateCam(o.cam, 2 * kPi * i / n);
     th[size_t(i)] = 360.0 * i / n;
     phi[size_t(i)] = p.pressure_angle / kDeg;
     kappa[size_t(i)] = p.pitch_curvature;
-    s_mm[size_t(i)] = p.s;
+    s_mm[size_t(i)] = oscillating ? p.s / kDeg : p.s;
   }
   Table t;
   t.Add("cam_angle_deg", th);
-  t.Add("follower_mm", s_mm);
+  t.Add(oscillating ? "follower_deg" : "follower_mm", s_mm);
   t.Add("pressure_angle_deg", phi);
   t.Add("pitch_curvature_per_mm", kappa);
   out.Add("series.csv", ToCsv(t));
@@ -334,11 +362,17 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 
-std::string Summary(const Result& r) {
+std::string Summary(const Study& s, const Result& r) {
   const objectives::DiscCamMinSizeOutcome& o = r.outcome;
   std::ostringstream m;
   char buf[300];
-  if (!o.x.empty()) {
+  if (!o.x.empty() && s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
+    std::snprintf(buf, sizeof buf,
+                  "disc_cam_min_size: %s base circle %.6g mm (pivot distance %.6g mm, arm %.6g mm, roller %.6g mm)\n",
+                  o.verified && o.converged ? "smallest" : "closest (not verified)", o.cam.base_radius,
+                  o.cam.pivot_distance, o.cam.arm_length, o.cam.roller_radius);
+    m << buf;
+  } else if (!o.x.empty()) {
     std::snprintf(buf, sizeof buf, "disc_cam_min_size: %s base circle %.6g mm (offset %.6g mm, roller %.6g mm)\n",
                   o.verified && o.converged ? "smallest" : "closest (not verified)", o.cam.base_radius, o.cam.offset,
                   o.cam.roller_radius);
@@ -356,7 +390,7 @@ void RunDiscCamMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
   const Study s = Parse(root);
   const Result r = Run(s, ctx);
   Write(s, r, out);
-  if (!ctx.quiet) std::cerr << Summary(r);
+  if (!ctx.quiet) std::cerr << Summary(s, r);
 }
 
 CAMOPT_REGISTER_STUDY("disc_cam_min_size", RunDiscCamMinSize);
@@ -365,8 +399,8 @@ CAMOPT_REGISTER_STUDY_PARSER("disc_cam_min_size", [](const Node& root) { (void)P
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the fast rows' angles (the
 // accurate grid follows them) and the optimizer's budget. The verified answer should not move.
 CAMOPT_REGISTER_DECLARED_KIND("disc_cam_min_size", Input,
-                              "camopt study: the smallest base circle of a disc cam with a translating roller "
-                              "follower");
+                              "camopt study: the smallest base circle of a disc cam with a translating or "
+                              "oscillating roller follower");
 
 Fidelity Knobs(const nlohmann::json&) {
   const Input defaults;
@@ -402,6 +436,8 @@ const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam_min_size", Estim
 CAMOPT_REGISTER_REPORT("disc_cam_min_size", {
     {"smallest base circle radius", "/best/base_circle_radius_mm", "mm"},
     {"offset", "/best/offset_mm", "mm"},
+    {"pivot distance", "/best/pivot_distance_mm", "mm"},
+    {"arm length", "/best/arm_length_mm", "mm"},
     {"roller radius", "/best/roller_radius_mm", "mm"},
     {"largest pressure angle, rise (accurate)", "/best/accurate/pressure_angle_deg/max_rise", "deg",
      "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_rise_deg"},

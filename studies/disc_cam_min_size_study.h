@@ -1,7 +1,8 @@
-// Study kind "disc_cam_min_size": the smallest base circle of a disc cam with a translating roller
-// follower for its motion program, under the disc_cam limits (pressure angle on the rise and on
-// the return, radius margin against undercut, contact stress), with the base circle radius, the
-// offset and the roller radius as variables (sizing/disc_cam_min_size.h).
+// Study kind "disc_cam_min_size": the smallest base circle of a disc cam with a translating or an
+// oscillating roller follower for its motion program, under the disc_cam limits (pressure angle on
+// the rise and on the return, radius margin against undercut, contact stress), with the base circle
+// radius, the offset (translating) or the pivot distance and arm length (oscillating), and the roller
+// radius as variables (sizing/disc_cam_min_size.h).
 //
 // The file is a disc_cam study (docs/studies.md "disc_cam"; its design is the start and gives every
 // value that is not a variable) plus "variables" ({"base_circle_radius_mm": [lo, hi], "offset_mm":
@@ -50,7 +51,7 @@ struct Input {
   /// The sized quantities: [lower, upper] each, lower <= upper (equal: a fixed value).
   struct Variables {
     std::array<double, 2> base_circle_radius_mm{};
-    std::optional<std::array<double, 2>> offset_mm, roller_radius_mm;
+    std::optional<std::array<double, 2>> offset_mm, roller_radius_mm, pivot_distance_mm, arm_length_mm;
     template <typename Archive>
     void Serialize(Archive* a) {
       const char* range = "[lower, upper], two numbers";
@@ -59,10 +60,19 @@ struct Input {
                    "[lower, upper] of the base circle radius, lower <= upper (equal: a fixed value)"));
       a->Visit("offset_mm", &offset_mm,
                Field().Expect(range).Unit("mm").Desc(
-                   "[lower, upper] of the follower's offset, lower <= upper (absent: the start's, fixed)"));
+                   "[lower, upper] of the follower's offset, lower <= upper (absent: the start's, fixed); a "
+                   "translating follower only"));
       a->Visit("roller_radius_mm", &roller_radius_mm,
                Field().Positive().Expect(range).Unit("mm").Desc(
                    "[lower, upper] of the roller radius, lower <= upper (absent: the start's, fixed)"));
+      a->Visit("pivot_distance_mm", &pivot_distance_mm,
+               Field().Positive().Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of f, cam centre to the arm's pivot, lower <= upper (absent: the start's, fixed); an "
+                   "oscillating follower only"));
+      a->Visit("arm_length_mm", &arm_length_mm,
+               Field().Positive().Expect(range).Unit("mm").Desc(
+                   "[lower, upper] of l, pivot to the roller centre, lower <= upper (absent: the start's, fixed); an "
+                   "oscillating follower only"));
     }
   };
   struct Optimizer {

@@ -6,6 +6,7 @@
 
 #include "model/disc_cam/check.h"
 #include "model/disc_cam/flat_faced.h"
+#include "model/disc_cam/oscillating_flat_faced.h"
 #include "studies/format.h"
 #include "studies/material_input.h"
 #include "studies/motion_input.h"
@@ -95,10 +96,58 @@ MotionInputSpec FollowerMotionSpec(bool oscillating) {
   return spec;
 }
 
+// The model of an oscillating flat-faced follower (model/disc_cam/oscillating_flat_faced.h) of a study.
+dc::OscillatingFlatFaced OscillatingFlatFace(const Study& s) {
+  dc::OscillatingFlatFaced c;
+  c.base_radius = s.cam.base_radius;
+  c.pivot_distance = s.cam.pivot_distance;
+  c.face_offset = s.face_offset_mm;
+  c.motion = s.cam.motion;
+  return c;
+}
+
+// An oscillating flat face's feasibility over the analysis grid (CheckOscillatingFlatFaced): the face
+// must reach the base circle (named at the pivot distance), the arm stay in (0, 180) deg and turn
+// slower than the cam (named at the motion).
+void CheckOscillatingFlatFace(const Study& s, const Node& root) {
+  const dc::OscillatingFlatFaced c = OscillatingFlatFace(s);
+  const std::string issue = dc::CheckOscillatingFlatFaced(c, s.angle_steps);
+  if (issue.empty()) return;
+  if (!(c.base_radius + c.face_offset < c.pivot_distance))
+    root["follower"]["pivot_distance_mm"].FailWith(issue + " (" + Format(c.base_radius) + " + " + Format(c.face_offset) +
+                                                   " = " + Format(c.base_radius + c.face_offset) + " mm, pivot distance " +
+                                                   Format(c.pivot_distance) + " mm)");
+  root["motion"].FailWith(issue + " (docs/disc_cam.md, 'Oscillating flat-faced follower')");
+}
+
+// Arg max / arg min over a uniform grid of n cam angles over 360°, the angle of a grid index, and a
+// column of the grid (the series of result.json and series.csv).
+struct Grid {
+  int n;
+  template <typename F>
+  int ArgMax(F f) const {
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (f(i) > f(best)) best = i;
+    return best;
+  }
+  template <typename F>
+  int ArgMin(F f) const {
+    return ArgMax([&](int i) { return -f(i); });
+  }
+  double AngleDeg(int i) const { return 360.0 * i / n; }
+  template <typename F>
+  std::vector<double> Col(F f) const {
+    std::vector<double> c(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) c[size_t(i)] = f(i);
+    return c;
+  }
+};
+
 }  // namespace
 
-nlohmann::ordered_json Input::MotionSchema(bool sizing) {
-  if (sizing) return studies::MotionSchema({FollowerMotionSpec(false)}, {"a length"}, true);
+nlohmann::ordered_json Input::MotionSchema(bool /*sizing*/) {
+  // disc_cam_min_size sizes translating and oscillating followers alike: the same schema.
   return studies::MotionSchema({FollowerMotionSpec(false), FollowerMotionSpec(true)},
                                {"translating follower", "oscillating follower"}, false);
 }
@@ -106,12 +155,14 @@ nlohmann::ordered_json Input::MotionSchema(bool sizing) {
 nlohmann::ordered_json Input::Follower::SchemaRules() {
   using oj = nlohmann::ordered_json;
   const oj is_roller = {{"properties", {{"type", {{"enum", RollerTypes()}}}}}};
-  const oj is_flat = {{"properties", {{"type", {{"const", "translating_flat_faced"}}}}}};
+  const oj is_flat = {{"properties", {{"type", {{"enum", {"translating_flat_faced", "oscillating_flat_faced"}}}}}}};
+  const oj is_flat_arm = {{"properties", {{"type", {{"const", "oscillating_flat_faced"}}}}}};
   auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
   const oj radius = {{"if", is_roller}, {"then", {{"required", oj::array({"roller_radius_mm"})}}},
                      {"else", refuse("roller_radius_mm")}};
   const oj face = {{"if", is_flat}, {"else", refuse("face_width_mm")}};
-  return {{"allOf", oj::array({radius, face})}};
+  const oj face_offset = {{"if", is_flat_arm}, {"else", refuse("face_offset_mm")}};
+  return {{"allOf", oj::array({radius, face, face_offset})}};
 }
 
 nlohmann::ordered_json Input::SchemaRules() {
@@ -126,12 +177,17 @@ nlohmann::ordered_json Input::SchemaRules() {
   const oj profile_only = {{"items", {{"const", "profile"}}}};
   const oj evaluate_profile_only = {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}}};
   const oj no_roller = {
-      {"if", follower_is({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced"})},
+      {"if", follower_is({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced",
+                          "oscillating_flat_faced"})},
       {"then", {{"allOf", oj::array({refuse("cutter_radius_mm"), evaluate_profile_only})}}}};
   // A knife edge: a point contact, no contact-stress limit.
   const oj knife = {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
                     {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}};
-  return {{"allOf", oj::array({no_roller, knife})}};
+  // The arm's loads: an oscillating flat face only.
+  const oj arm = {{"if", follower_is({"translating_roller", "oscillating_roller", "translating_knife_edge",
+                                      "oscillating_knife_edge", "translating_flat_faced"})},
+                  {"then", refuse("arm_dynamics")}};
+  return {{"allOf", oj::array({no_roller, knife, arm})}};
 }
 
 nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
@@ -163,7 +219,14 @@ Study Parse(const Node& root) {
                                               : Study::Contact::kFlatFaced;
   const bool roller = s.contact == Study::Contact::kRoller;
   const bool flat = s.contact == Study::Contact::kFlatFaced;
-  if (flat) {
+  if (flat && oscillating) {
+    // Its base circle, motion and pivot distance (model/disc_cam/oscillating_flat_faced.h), no arm length:
+    // the face, not a roller, touches the cam.
+    follower.CheckKnownFields({"type", "pivot_distance_mm", "face_offset_mm", "face_width_mm"});
+    cam.follower = FollowerType::kOscillatingRoller;
+    cam.pivot_distance = follower["pivot_distance_mm"].Positive();  // required: "missing required field"
+    s.face_offset_mm = in.follower.face_offset_mm.value_or(0.0);
+  } else if (flat) {
     follower.CheckKnownFields({"type", "face_width_mm"});
     cam.follower = FollowerType::kTranslatingRoller;  // its base circle and motion only
   } else if (!oscillating) {
@@ -185,6 +248,8 @@ Study Parse(const Node& root) {
       roller ? PlausibleLength(follower["roller_radius_mm"], cam.base_radius, "the base circle radius") : 0.0;
   if (in.follower.face_width_mm)
     s.follower_face_width_mm = PlausibleLength(follower["face_width_mm"], cam.base_radius, "the base circle radius");
+  if (in.follower.face_offset_mm && !std::isfinite(*in.follower.face_offset_mm))
+    follower["face_offset_mm"].Fail("a finite length");
   if (!flat)
     for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
   // Without a roller: no mechanical error (Rzine et al.'s eqs. 16–32 and the exact-motion check
@@ -236,6 +301,10 @@ Study Parse(const Node& root) {
     s.face_width_mm = PlausibleLength(root["face_width_mm"], cam.base_radius, "the base circle radius");
   if (in.material) s.material = in.material->ToMaterial();
   if (in.dynamics) {
+    if (oscillating && flat)
+      root["dynamics"].FailWith(
+          "the kinetostatic loads of \"dynamics\" are implemented for translating followers only: an oscillating "
+          "flat-faced follower's arm takes \"arm_dynamics\" (its moment of inertia and the moments about its pivot)");
     if (oscillating)
       root["dynamics"].FailWith(
           "the kinetostatic loads are implemented for translating followers only (an oscillating "
@@ -258,6 +327,19 @@ Study Parse(const Node& root) {
     else dyn.loads.weight_N = 0.0;  // horizontal
     s.dynamics = dyn;
   }
+  if (in.arm_dynamics) {
+    if (!(flat && oscillating))
+      root["arm_dynamics"].FailWith("the arm's loads are implemented for an oscillating flat-faced follower only: "
+                                    "remove \"arm_dynamics\"" +
+                                    std::string(oscillating ? "" : " (a translating follower takes \"dynamics\")"));
+    Study::ArmDynamics a;
+    a.speed_rpm = in.arm_dynamics->speed_rpm;
+    a.loads.inertia_kg_m2 = in.arm_dynamics->arm_inertia_kg_m2;
+    a.loads.spring_rate_N_m_per_rad = in.arm_dynamics->spring_rate_N_m_per_rad;
+    a.loads.spring_preload_N_m = in.arm_dynamics->spring_preload_N_m;
+    a.loads.external_moment_N_m = in.arm_dynamics->external_moment_N_m;
+    s.arm_dynamics = a;
+  }
   if (limits.contact_stress_MPa) {
     const Node l = root["limits"]["contact_stress_MPa"];
     if (s.contact == Study::Contact::kKnifeEdge)
@@ -267,7 +349,11 @@ Study Parse(const Node& root) {
     std::string missing;
     for (const auto& [absent, what] : {std::pair{!s.face_width_mm, "face_width_mm (the contact length of roller and cam)"},
                                        std::pair{!s.material, "material (youngs_modulus_GPa, poisson_ratio)"},
-                                       std::pair{!s.dynamics, "dynamics (the contact force: speed_rpm, follower_mass_kg, spring)"}})
+                                       flat && oscillating
+                                           ? std::pair{!s.arm_dynamics, "arm_dynamics (the contact force: speed_rpm, "
+                                                                        "arm_inertia_kg_m2, spring)"}
+                                           : std::pair{!s.dynamics, "dynamics (the contact force: speed_rpm, "
+                                                                    "follower_mass_kg, spring)"}})
       if (absent) missing += (missing.empty() ? "" : ", ") + std::string(what);
     if (!missing.empty()) l.FailWith("the contact stress cannot be checked without " + missing + ": add them or remove the limit");
   }
@@ -304,6 +390,10 @@ Study Parse(const Node& root) {
     s.monte_carlo = false;
   if (!roller) s.error_stage = s.monte_carlo = false;  // the profile only (refused above when asked)
   // Feasibility over the cycle, on the analysis grid.
+  if (flat && oscillating) {
+    CheckOscillatingFlatFace(s, root);
+    return s;
+  }
   const auto issues = flat ? dc::CheckFlatFaced(cam.motion, cam.base_radius, s.angle_steps)
                            : dc::CheckDesign(cam, s.angle_steps);
   if (!issues.empty()) FailOn(issues.front(), cam, root);
@@ -317,7 +407,11 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   g.file_stem = "profile";
   g.design_name = s.name;
   g.cam_name = "disc cam";
-  if (s.contact == Study::Contact::kFlatFaced) {
+  if (s.contact == Study::Contact::kFlatFaced && cam.follower == FollowerType::kOscillatingRoller) {
+    // The envelope of the face lines on the arm; no roller, so no pitch curve or cutter path.
+    g.profile = [c = OscillatingFlatFace(s)](double th) { return dc::EvaluateOscillatingFlatFaced(c, th).contact; };
+    g.cutter_note = "omitted: a flat-faced follower has no roller, so no pitch curve or roller-sized cutter path";
+  } else if (s.contact == Study::Contact::kFlatFaced) {
     // The exact profile, the envelope of the face lines; no roller, so no pitch curve or cutter path.
     g.profile = [cam](double th) { return dc::EvaluateFlatFaced(cam.motion, cam.base_radius, th).contact; };
     g.cutter_note = "omitted: a flat-faced follower has no roller, so no pitch curve or roller-sized cutter path";
@@ -355,27 +449,20 @@ void FinishLoads(const Study& s, Result::Loads& L) {
   const int n = static_cast<int>(L.contact_force_N.size());
   const dc::DiscCam& cam = s.cam;
   const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
-  auto arg_max = [&](auto f) {
-    int best = 0;
-    for (int i = 1; i < n; ++i)
-      if (f(i) > f(best)) best = i;
-    return best;
-  };
-  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
-  auto angle_deg = [&](int i) { return 360.0 * i / n; };
+  const Grid g{n};  // arg max/min and angles over the grid
   const bool stress = L.stress_evaluated;
   const auto& f = L.contact_force_N;
   const auto& tq = L.camshaft_torque_Nm;
-  const int i_fmin = arg_min([&](int i) { return f[i]; }), i_fmax = arg_max([&](int i) { return f[i]; });
-  L.min_contact_force_N = {f[i_fmin], angle_deg(i_fmin)};
-  L.max_contact_force_N = {f[i_fmax], angle_deg(i_fmax)};
-  const int i_tabs = arg_max([&](int i) { return std::abs(tq[i]); });
-  L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), angle_deg(i_tabs)};
-  L.min_camshaft_torque_Nm = tq[arg_min([&](int i) { return tq[i]; })];
-  L.max_camshaft_torque_Nm = tq[arg_max([&](int i) { return tq[i]; })];
+  const int i_fmin = g.ArgMin([&](int i) { return f[i]; }), i_fmax = g.ArgMax([&](int i) { return f[i]; });
+  L.min_contact_force_N = {f[i_fmin], g.AngleDeg(i_fmin)};
+  L.max_contact_force_N = {f[i_fmax], g.AngleDeg(i_fmax)};
+  const int i_tabs = g.ArgMax([&](int i) { return std::abs(tq[i]); });
+  L.max_abs_camshaft_torque_Nm = {std::abs(tq[i_tabs]), g.AngleDeg(i_tabs)};
+  L.min_camshaft_torque_Nm = tq[g.ArgMin([&](int i) { return tq[i]; })];
+  L.max_camshaft_torque_Nm = tq[g.ArgMax([&](int i) { return tq[i]; })];
   if (stress) {
-    const int i_p = arg_max([&](int i) { return L.contact_stress_MPa[i]; });
-    L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], angle_deg(i_p)};
+    const int i_p = g.ArgMax([&](int i) { return L.contact_stress_MPa[i]; });
+    L.max_contact_stress_MPa = {L.contact_stress_MPa[i_p], g.AngleDeg(i_p)};
   }
   // The follower on its own stiffness (model/disc_cam/follower_dynamics.h): the response at the
   // speed, and the lowest speed at which it leaves the cam, searched up to 1.5 times the larger
@@ -404,8 +491,11 @@ void FinishLoads(const Study& s, Result::Loads& L) {
 }
 
 Result RunFlatFaced(const Study& s);
+Result RunOscillatingFlatFaced(const Study& s);
 
 Result Run(const Study& s, const RunContext& ctx) {
+  if (s.contact == Study::Contact::kFlatFaced && s.cam.follower == FollowerType::kOscillatingRoller)
+    return RunOscillatingFlatFaced(s);
   if (s.contact == Study::Contact::kFlatFaced) return RunFlatFaced(s);
   const DiscCam& cam = s.cam;
   const bool osc = cam.follower == FollowerType::kOscillatingRoller;
@@ -424,68 +514,56 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.error_stage) err[i] = dc::FollowerError(cam, pts[i], s.tolerances);
   }
 
-  auto arg_max = [&](auto f) {
-    int best = 0;
-    for (int i = 1; i < n; ++i)
-      if (f(i) > f(best)) best = i;
-    return best;
-  };
-  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
-  auto angle_deg = [&](int i) { return 360.0 * i / n; };
-  auto col = [&](auto f) {
-    std::vector<double> c(n);
-    for (int i = 0; i < n; ++i) c[i] = f(i);
-    return c;
-  };
+  const Grid g{n};  // arg max/min, angles and columns over the grid
 
   Result r;
   r.oscillating = osc;
   r.follower_unit = osc ? "deg" : "mm";
   auto& t = r.series;
-  t.cam_angle_deg = col(angle_deg);
-  t.follower = col([&](int i) { return pts[i].s * unit; });
-  t.velocity_per_rad = col([&](int i) { return pts[i].ds * unit; });
-  t.acceleration_per_rad2 = col([&](int i) { return pts[i].d2s * unit; });
-  t.jerk_per_rad3 = col([&](int i) { return svaj[i].j * unit; });
-  t.pressure_angle_deg = col([&](int i) { return pts[i].pressure_angle / kDeg; });
-  t.shift_angle_deg = col([&](int i) { return pts[i].shift_angle / kDeg; });
-  t.radial_dimension_mm = col([&](int i) { return pts[i].radial_dimension; });
-  t.contact_x_mm = col([&](int i) { return pts[i].contact.x(); });
-  t.contact_y_mm = col([&](int i) { return pts[i].contact.y(); });
-  t.pitch_x_mm = col([&](int i) { return pts[i].pitch.x(); });
-  t.pitch_y_mm = col([&](int i) { return pts[i].pitch.y(); });
-  t.q_mm = col([&](int i) { return pts[i].q; });
-  t.pitch_curvature_per_mm = col([&](int i) { return pts[i].pitch_curvature; });
+  t.cam_angle_deg = g.Col([&](int i) { return g.AngleDeg(i); });
+  t.follower = g.Col([&](int i) { return pts[i].s * unit; });
+  t.velocity_per_rad = g.Col([&](int i) { return pts[i].ds * unit; });
+  t.acceleration_per_rad2 = g.Col([&](int i) { return pts[i].d2s * unit; });
+  t.jerk_per_rad3 = g.Col([&](int i) { return svaj[i].j * unit; });
+  t.pressure_angle_deg = g.Col([&](int i) { return pts[i].pressure_angle / kDeg; });
+  t.shift_angle_deg = g.Col([&](int i) { return pts[i].shift_angle / kDeg; });
+  t.radial_dimension_mm = g.Col([&](int i) { return pts[i].radial_dimension; });
+  t.contact_x_mm = g.Col([&](int i) { return pts[i].contact.x(); });
+  t.contact_y_mm = g.Col([&](int i) { return pts[i].contact.y(); });
+  t.pitch_x_mm = g.Col([&](int i) { return pts[i].pitch.x(); });
+  t.pitch_y_mm = g.Col([&](int i) { return pts[i].pitch.y(); });
+  t.q_mm = g.Col([&](int i) { return pts[i].q; });
+  t.pitch_curvature_per_mm = g.Col([&](int i) { return pts[i].pitch_curvature; });
   if (s.error_stage) {
-    t.error_radial_um = col([&](int i) { return err[i].radial * to_um; });
-    t.error_roller_um = col([&](int i) { return err[i].roller * to_um; });
-    t.error_normal_um = col([&](int i) { return err[i].normal * to_um; });
-    t.error_worst_case_um = col([&](int i) { return err[i].worst_case * to_um; });
-    t.error_rms_um = col([&](int i) { return err[i].rms * to_um; });
+    t.error_radial_um = g.Col([&](int i) { return err[i].radial * to_um; });
+    t.error_roller_um = g.Col([&](int i) { return err[i].roller * to_um; });
+    t.error_normal_um = g.Col([&](int i) { return err[i].normal * to_um; });
+    t.error_worst_case_um = g.Col([&](int i) { return err[i].worst_case * to_um; });
+    t.error_rms_um = g.Col([&](int i) { return err[i].rms * to_um; });
   }
 
-  const int i_rmax = arg_max([&](int i) { return pts[i].radial_dimension; });
-  const int i_rmin = arg_min([&](int i) { return pts[i].radial_dimension; });
-  r.max_radial_dimension_mm = {pts[i_rmax].radial_dimension, angle_deg(i_rmax)};
+  const int i_rmax = g.ArgMax([&](int i) { return pts[i].radial_dimension; });
+  const int i_rmin = g.ArgMin([&](int i) { return pts[i].radial_dimension; });
+  r.max_radial_dimension_mm = {pts[i_rmax].radial_dimension, g.AngleDeg(i_rmax)};
   r.min_radial_dimension_mm = pts[i_rmin].radial_dimension;
-  const int i_pmax = arg_max([&](int i) { return pts[i].pressure_angle; });
-  const int i_pmin = arg_min([&](int i) { return pts[i].pressure_angle; });
-  r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, angle_deg(i_pmin)};
-  r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, angle_deg(i_pmax)};
+  const int i_pmax = g.ArgMax([&](int i) { return pts[i].pressure_angle; });
+  const int i_pmin = g.ArgMin([&](int i) { return pts[i].pressure_angle; });
+  r.min_pressure_angle_deg = {pts[i_pmin].pressure_angle / kDeg, g.AngleDeg(i_pmin)};
+  r.max_pressure_angle_deg = {pts[i_pmax].pressure_angle / kDeg, g.AngleDeg(i_pmax)};
   // Pressure angle on the rise (and dwells, S' >= 0) and on the return (S' < 0), as |φ|.
   for (int i = 0; i < n; ++i) {
-    const AtAngle a{std::abs(pts[i].pressure_angle) / kDeg, angle_deg(i)};
+    const AtAngle a{std::abs(pts[i].pressure_angle) / kDeg, g.AngleDeg(i)};
     if (pts[i].ds >= 0.0) {
       if (a.value > r.max_pressure_angle_rise_deg.value) r.max_pressure_angle_rise_deg = a;
     } else if (!r.max_pressure_angle_return_deg || a.value > r.max_pressure_angle_return_deg->value) {
       r.max_pressure_angle_return_deg = a;
     }
   }
-  const int i_lmax = arg_max([&](int i) { return pts[i].shift_angle; });
-  const int i_lmin = arg_min([&](int i) { return pts[i].shift_angle; });
+  const int i_lmax = g.ArgMax([&](int i) { return pts[i].shift_angle; });
+  const int i_lmin = g.ArgMin([&](int i) { return pts[i].shift_angle; });
   r.shift_angle_deg = {pts[i_lmin].shift_angle / kDeg, pts[i_lmax].shift_angle / kDeg};
   auto ratio = [&](int i) { return dc::RadialErrorRatio(pts[i]); };
-  r.cos_shift_over_cos_pressure = {ratio(arg_min(ratio)), ratio(arg_max(ratio))};
+  r.cos_shift_over_cos_pressure = {ratio(g.ArgMin(ratio)), ratio(g.ArgMax(ratio))};
 
   // Curvature: the profile's radius where the pitch curve is convex, its magnitude where concave;
   // undercut where κ r_f > 1 (model/disc_cam/disc_cam.h).
@@ -497,9 +575,9 @@ Result Run(const Study& s, const RunContext& ctx) {
     auto& convex = r.min_radius_of_curvature_mm;
     auto& concave = r.min_concave_radius_of_curvature_mm;
     if (k > 0) {
-      if (!convex || rho < convex->value) convex = AtAngle{rho, angle_deg(i)};
+      if (!convex || rho < convex->value) convex = AtAngle{rho, g.AngleDeg(i)};
     } else if (k < 0) {
-      if (!concave || -rho < concave->value) concave = AtAngle{-rho, angle_deg(i)};
+      if (!concave || -rho < concave->value) concave = AtAngle{-rho, g.AngleDeg(i)};
     }
   }
   r.undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
@@ -531,21 +609,21 @@ Result Run(const Study& s, const RunContext& ctx) {
   // Mechanical error (eqs. 16–32), when asked for.
   r.error_evaluated = s.error_stage;
   if (s.error_stage) {
-    const int i_wor = arg_max([&](int i) { return err[i].worst_case; });
-    const int i_rms = arg_max([&](int i) { return err[i].rms; });
-    r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, angle_deg(i_wor)};
+    const int i_wor = g.ArgMax([&](int i) { return err[i].worst_case; });
+    const int i_rms = g.ArgMax([&](int i) { return err[i].rms; });
+    r.max_worst_case_error_um = {err[i_wor].worst_case * to_um, g.AngleDeg(i_wor)};
     r.min_worst_case_error_um =
-        err[arg_min([&](int i) { return err[i].worst_case; })].worst_case * to_um;
-    r.max_rms_error_um = {err[i_rms].rms * to_um, angle_deg(i_rms)};
+        err[g.ArgMin([&](int i) { return err[i].worst_case; })].worst_case * to_um;
+    r.max_rms_error_um = {err[i_rms].rms * to_um, g.AngleDeg(i_rms)};
     auto component = [&](auto get) {
-      const int a = arg_max(get), b = arg_min(get);
+      const int a = g.ArgMax(get), b = g.ArgMin(get);
       return MinMax{get(b) * to_um, get(a) * to_um};
     };
     r.radial_error_um = component([&](int i) { return err[i].radial; });
     r.roller_error_um = component([&](int i) { return err[i].roller; });
     r.normal_error_um = component([&](int i) { return err[i].normal; });
     if (osc) {
-      r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, angle_deg(i_wor)};
+      r.max_worst_case_error_arcsec = AtAngle{err[i_wor].worst_case * to_arcsec, g.AngleDeg(i_wor)};
       r.max_rms_error_arcsec = err[i_rms].rms * to_arcsec;
     }
   }
@@ -591,47 +669,35 @@ Result RunFlatFaced(const Study& s) {
   std::vector<dc::FlatFacePoint<double>> pts(n);
   const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
   for (int i = 0; i < n; ++i) pts[i] = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, 2 * kPi * i / n);
-  auto arg_max = [&](auto f) {
-    int best = 0;
-    for (int i = 1; i < n; ++i)
-      if (f(i) > f(best)) best = i;
-    return best;
-  };
-  auto arg_min = [&](auto f) { return arg_max([&](int i) { return -f(i); }); };
-  auto angle_deg = [&](int i) { return 360.0 * i / n; };
-  auto col = [&](auto f) {
-    std::vector<double> c(n);
-    for (int i = 0; i < n; ++i) c[i] = f(i);
-    return c;
-  };
+  const Grid g{n};  // arg max/min, angles and columns over the grid
 
   Result r;
   r.follower_unit = "mm";
   auto& t = r.series;
-  t.cam_angle_deg = col(angle_deg);
-  t.follower = col([&](int i) { return pts[i].s; });
-  t.velocity_per_rad = col([&](int i) { return pts[i].ds; });
-  t.acceleration_per_rad2 = col([&](int i) { return pts[i].d2s; });
-  t.jerk_per_rad3 = col([&](int i) { return svaj[i].j; });
+  t.cam_angle_deg = g.Col([&](int i) { return g.AngleDeg(i); });
+  t.follower = g.Col([&](int i) { return pts[i].s; });
+  t.velocity_per_rad = g.Col([&](int i) { return pts[i].ds; });
+  t.acceleration_per_rad2 = g.Col([&](int i) { return pts[i].d2s; });
+  t.jerk_per_rad3 = g.Col([&](int i) { return svaj[i].j; });
   t.pressure_angle_deg = std::vector<double>(n, 0.0);
-  t.radial_dimension_mm = col([&](int i) { return pts[i].contact.norm(); });
-  t.contact_x_mm = col([&](int i) { return pts[i].contact.x(); });
-  t.contact_y_mm = col([&](int i) { return pts[i].contact.y(); });
+  t.radial_dimension_mm = g.Col([&](int i) { return pts[i].contact.norm(); });
+  t.contact_x_mm = g.Col([&](int i) { return pts[i].contact.x(); });
+  t.contact_y_mm = g.Col([&](int i) { return pts[i].contact.y(); });
 
-  const int i_rmax = arg_max([&](int i) { return t.radial_dimension_mm[i]; });
-  r.max_radial_dimension_mm = {t.radial_dimension_mm[i_rmax], angle_deg(i_rmax)};
-  r.min_radial_dimension_mm = t.radial_dimension_mm[arg_min([&](int i) { return t.radial_dimension_mm[i]; })];
+  const int i_rmax = g.ArgMax([&](int i) { return t.radial_dimension_mm[i]; });
+  r.max_radial_dimension_mm = {t.radial_dimension_mm[i_rmax], g.AngleDeg(i_rmax)};
+  r.min_radial_dimension_mm = t.radial_dimension_mm[g.ArgMin([&](int i) { return t.radial_dimension_mm[i]; })];
   r.min_pressure_angle_deg = r.max_pressure_angle_deg = r.max_pressure_angle_rise_deg = {0.0, 0.0};
 
   Result::FlatFace F;
-  F.contact_offset_mm = col([&](int i) { return pts[i].contact_offset; });
-  F.radius_of_curvature_mm = col([&](int i) { return pts[i].radius_of_curvature; });
-  const int i_omax = arg_max([&](int i) { return F.contact_offset_mm[i]; });
-  const int i_omin = arg_min([&](int i) { return F.contact_offset_mm[i]; });
-  F.max_contact_offset_mm = {F.contact_offset_mm[i_omax], angle_deg(i_omax)};
-  F.min_contact_offset_mm = {F.contact_offset_mm[i_omin], angle_deg(i_omin)};
-  const int i_rho = arg_min([&](int i) { return F.radius_of_curvature_mm[i]; });
-  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[i_rho], angle_deg(i_rho)};
+  F.contact_offset_mm = g.Col([&](int i) { return pts[i].contact_offset; });
+  F.radius_of_curvature_mm = g.Col([&](int i) { return pts[i].radius_of_curvature; });
+  const int i_omax = g.ArgMax([&](int i) { return F.contact_offset_mm[i]; });
+  const int i_omin = g.ArgMin([&](int i) { return F.contact_offset_mm[i]; });
+  F.max_contact_offset_mm = {F.contact_offset_mm[i_omax], g.AngleDeg(i_omax)};
+  F.min_contact_offset_mm = {F.contact_offset_mm[i_omin], g.AngleDeg(i_omin)};
+  const int i_rho = g.ArgMin([&](int i) { return F.radius_of_curvature_mm[i]; });
+  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[i_rho], g.AngleDeg(i_rho)};
   std::vector<bool> cusp(n);
   for (int i = 0; i < n; ++i) cusp[i] = !(F.radius_of_curvature_mm[i] > 0.0);
   F.cusp_cam_angle_deg = Intervals(cusp);
@@ -668,6 +734,109 @@ Result RunFlatFaced(const Study& s) {
   return r;
 }
 
+// An oscillating flat-faced follower (model/disc_cam/oscillating_flat_faced.h): the contact on the
+// envelope of the face lines, where it runs along the face (ℓ = f cos ξ/(1 − ξ')), the pressure angle
+// atan(d/ℓ), the radius of curvature ρ = h + h_φφ (a flat face needs ρ > 0). No loads: "dynamics" is
+// refused for an oscillating follower.
+Result RunOscillatingFlatFaced(const Study& s) {
+  const dc::OscillatingFlatFaced c = OscillatingFlatFace(s);
+  const Grid g{s.angle_steps};
+  const int n = g.n;
+  std::vector<dc::OscillatingFlatFacePoint> pts(static_cast<size_t>(n));
+  const std::vector<motion::Svaj<double>> svaj = SampleMotion(c.motion, n);
+  for (int i = 0; i < n; ++i) pts[size_t(i)] = dc::EvaluateOscillatingFlatFaced(c, 2 * kPi * i / n);
+  auto at = [&](int i) -> const dc::OscillatingFlatFacePoint& { return pts[size_t(i)]; };
+  const double unit = 1.0 / kDeg;  // the follower unit: deg
+
+  Result r;
+  r.oscillating = true;
+  r.follower_unit = "deg";
+  auto& t = r.series;
+  t.cam_angle_deg = g.Col([&](int i) { return g.AngleDeg(i); });
+  t.follower = g.Col([&](int i) { return svaj[size_t(i)].s * unit; });
+  t.velocity_per_rad = g.Col([&](int i) { return svaj[size_t(i)].v * unit; });
+  t.acceleration_per_rad2 = g.Col([&](int i) { return svaj[size_t(i)].a * unit; });
+  t.jerk_per_rad3 = g.Col([&](int i) { return svaj[size_t(i)].j * unit; });
+  t.pressure_angle_deg = g.Col([&](int i) { return at(i).pressure_angle / kDeg; });
+  t.radial_dimension_mm = g.Col([&](int i) { return at(i).contact.norm(); });
+  t.contact_x_mm = g.Col([&](int i) { return at(i).contact.x(); });
+  t.contact_y_mm = g.Col([&](int i) { return at(i).contact.y(); });
+
+  const int i_rmax = g.ArgMax([&](int i) { return t.radial_dimension_mm[size_t(i)]; });
+  r.max_radial_dimension_mm = {t.radial_dimension_mm[size_t(i_rmax)], g.AngleDeg(i_rmax)};
+  r.min_radial_dimension_mm = t.radial_dimension_mm[size_t(g.ArgMin([&](int i) { return t.radial_dimension_mm[size_t(i)]; }))];
+  const int i_pmax = g.ArgMax([&](int i) { return at(i).pressure_angle; });
+  const int i_pmin = g.ArgMin([&](int i) { return at(i).pressure_angle; });
+  r.min_pressure_angle_deg = {at(i_pmin).pressure_angle / kDeg, g.AngleDeg(i_pmin)};
+  r.max_pressure_angle_deg = {at(i_pmax).pressure_angle / kDeg, g.AngleDeg(i_pmax)};
+  // |φ| on the rise (and dwells, ξ' >= 0) and on the return, as for a roller.
+  for (int i = 0; i < n; ++i) {
+    const AtAngle a{std::abs(at(i).pressure_angle) / kDeg, g.AngleDeg(i)};
+    if (at(i).dxi >= 0.0) {
+      if (a.value > r.max_pressure_angle_rise_deg.value) r.max_pressure_angle_rise_deg = a;
+    } else if (!r.max_pressure_angle_return_deg || a.value > r.max_pressure_angle_return_deg->value) {
+      r.max_pressure_angle_return_deg = a;
+    }
+  }
+
+  Result::FlatFace F;
+  F.contact_offset_mm = g.Col([&](int i) { return at(i).contact_on_face; });
+  F.radius_of_curvature_mm = g.Col([&](int i) { return at(i).radius_of_curvature; });
+  const int i_omax = g.ArgMax([&](int i) { return F.contact_offset_mm[size_t(i)]; });
+  const int i_omin = g.ArgMin([&](int i) { return F.contact_offset_mm[size_t(i)]; });
+  F.max_contact_offset_mm = {F.contact_offset_mm[size_t(i_omax)], g.AngleDeg(i_omax)};
+  F.min_contact_offset_mm = {F.contact_offset_mm[size_t(i_omin)], g.AngleDeg(i_omin)};
+  const int i_rho = g.ArgMin([&](int i) { return F.radius_of_curvature_mm[size_t(i)]; });
+  F.min_radius_of_curvature_mm = {F.radius_of_curvature_mm[size_t(i_rho)], g.AngleDeg(i_rho)};
+  std::vector<bool> cusp(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) cusp[size_t(i)] = !(F.radius_of_curvature_mm[size_t(i)] > 0.0);
+  F.cusp_cam_angle_deg = Intervals(cusp);
+  r.min_radius_of_curvature_mm = F.min_radius_of_curvature_mm;
+  r.flat_face = std::move(F);
+
+  // The arm's loads at the speed (model/disc_cam/oscillating_flat_faced.h): F = M/ℓ, T = M S'.
+  if (s.arm_dynamics) {
+    Result::Loads L;
+    const double omega = dc::RadPerSecond(s.arm_dynamics->speed_rpm);
+    const bool stress = s.face_width_mm && s.material;
+    const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
+    L.stress_evaluated = stress;
+    for (int i = 0; i < n; ++i) {
+      const dc::ArmLoad a = dc::OscillatingFlatFaceLoadAt(c, at(i), s.arm_dynamics->loads, omega);
+      L.contact_force_N.push_back(a.contact_force_N);
+      L.camshaft_torque_Nm.push_back(a.camshaft_torque_N_m);
+      if (stress) {
+        const double p = dc::OscillatingFlatFaceContactStress(at(i), a.contact_force_N, *s.face_width_mm, e_star);
+        if (!std::isfinite(p)) L.stress_finite = false;
+        L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
+      }
+    }
+    L.jump_speed_rpm = dc::Rpm(dc::OscillatingFlatFaceJumpSpeed(c, pts, s.arm_dynamics->loads));
+    const auto& f = L.contact_force_N;
+    const auto& tq = L.camshaft_torque_Nm;
+    const int i_fmin = g.ArgMin([&](int i) { return f[size_t(i)]; }), i_fmax = g.ArgMax([&](int i) { return f[size_t(i)]; });
+    L.min_contact_force_N = {f[size_t(i_fmin)], g.AngleDeg(i_fmin)};
+    L.max_contact_force_N = {f[size_t(i_fmax)], g.AngleDeg(i_fmax)};
+    const int i_tabs = g.ArgMax([&](int i) { return std::abs(tq[size_t(i)]); });
+    L.max_abs_camshaft_torque_Nm = {std::abs(tq[size_t(i_tabs)]), g.AngleDeg(i_tabs)};
+    L.min_camshaft_torque_Nm = tq[size_t(g.ArgMin([&](int i) { return tq[size_t(i)]; }))];
+    L.max_camshaft_torque_Nm = tq[size_t(g.ArgMax([&](int i) { return tq[size_t(i)]; }))];
+    if (stress) {
+      const int i_p = g.ArgMax([&](int i) { return L.contact_stress_MPa[size_t(i)]; });
+      L.max_contact_stress_MPa = {L.contact_stress_MPa[size_t(i_p)], g.AngleDeg(i_p)};
+    }
+    r.loads = std::move(L);
+  }
+
+  r.joints = motion::CheckContinuity(c.motion, 1e-7);
+  const MotionPeaks peaks = PeakDerivatives(svaj);
+  r.peak_velocity = peaks.velocity * unit;
+  r.peak_acceleration = peaks.acceleration * unit;
+  r.peak_jerk = peaks.jerk * unit;
+  r.profile_files = FitGeometryFiles(s);
+  return r;
+}
+
 nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json j;
   j["study"] = "disc_cam";
@@ -693,7 +862,50 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json& pa = j["pressure_angle_deg"];
   const double pa_limit = s.limits.pressure_angle_deg;
   bool geometry_ok = true;  // the pressure angle and radius limits (and a flat face's width)
-  if (flat) {
+  // The pressure angle on the rise and on the return against its limit (a roller, a knife edge, a
+  // flat face on an arm).
+  auto pressure_angle_limits = [&] {
+    pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
+    pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
+    if (r.max_pressure_angle_return_deg) {
+      pa["max_return"] = r.max_pressure_angle_return_deg->value;
+      pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+    }
+    pa["limit"] = pa_limit;
+    pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
+    pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
+    return pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>();
+  };
+  const bool flat_arm = flat && s.cam.follower == FollowerType::kOscillatingRoller;
+  if (flat_arm) {
+    // The flat face on an arm: the pressure angle atan(d/ℓ) against its limit, ρ = h + h_φφ above the
+    // margin (a convex cam), the face long enough for the contact's travel min ℓ … max ℓ.
+    const Result::FlatFace& F = *r.flat_face;
+    const bool pa_ok = pressure_angle_limits();
+    const double needed = F.max_contact_offset_mm.value - F.min_contact_offset_mm.value;
+    nlohmann::json ff = {{"pivot_distance_mm", s.cam.pivot_distance},
+                         {"face_offset_mm", s.face_offset_mm},
+                         {"arm_angle_on_base_circle_deg", dc::InitialArmAngle(OscillatingFlatFace(s)) / kDeg},
+                         {"contact_on_face_mm", {{"max", F.max_contact_offset_mm.value},
+                                                 {"at_max_cam_angle_deg", F.max_contact_offset_mm.cam_angle_deg},
+                                                 {"min", F.min_contact_offset_mm.value},
+                                                 {"at_min_cam_angle_deg", F.min_contact_offset_mm.cam_angle_deg}}},
+                         {"face_length_needed_mm", needed},
+                         {"min_radius_of_curvature_mm", F.min_radius_of_curvature_mm.value},
+                         {"min_radius_of_curvature_at_cam_angle_deg", F.min_radius_of_curvature_mm.cam_angle_deg},
+                         {"radius_margin_limit_mm", s.limits.radius_margin_mm},
+                         {"radius_margin_ok", F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm},
+                         {"cusp", !F.cusp_cam_angle_deg.empty()},
+                         {"cusp_cam_angle_deg", nlohmann::json::array()}};
+    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+    if (s.follower_face_width_mm) {
+      ff["face_width_mm"] = *s.follower_face_width_mm;
+      ff["face_width_ok"] = *s.follower_face_width_mm >= needed;
+      geometry_ok = ff["face_width_ok"].get<bool>();
+    }
+    geometry_ok = geometry_ok && pa_ok && ff["radius_margin_ok"].get<bool>();
+    j["flat_face"] = ff;
+  } else if (flat) {
     // The flat face: no pressure-angle limit (φ = 0), the radius ρ = r_b + S + S'' above the margin
     // (a convex cam: the face cannot follow ρ ≤ 0), the face wide enough for the contact's travel.
     const Result::FlatFace& F = *r.flat_face;
@@ -726,15 +938,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (s.limits.pressure_angle_default == false)
       j["notes"].push_back("limits.pressure_angle_deg is not checked: a flat face's pressure angle is 0");
   } else {
-    pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
-    pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
-    if (r.max_pressure_angle_return_deg) {
-      pa["max_return"] = r.max_pressure_angle_return_deg->value;
-      pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
-    }
-    pa["limit"] = pa_limit;
-    pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
-    pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
+    pressure_angle_limits();
     j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
     j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
                                         {"max", r.cos_shift_over_cos_pressure.max}};
@@ -784,7 +988,50 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   }
 
   bool loads_ok = true;
-  if (r.loads) {
+  if (r.loads && s.arm_dynamics) {
+    // The arm of an oscillating flat face: contact force M/ℓ, camshaft torque M S', jump speed, stress.
+    const Result::Loads& L = *r.loads;
+    const dc::ArmLoads& a = s.arm_dynamics->loads;
+    nlohmann::json aj = {{"speed_rpm", s.arm_dynamics->speed_rpm},
+                         {"arm_inertia_kg_m2", a.inertia_kg_m2},
+                         {"spring_rate_N_m_per_rad", a.spring_rate_N_m_per_rad},
+                         {"spring_preload_N_m", a.spring_preload_N_m},
+                         {"external_moment_N_m", a.external_moment_N_m},
+                         {"min_contact_force_N", L.min_contact_force_N.value},
+                         {"at_min_contact_force_cam_angle_deg", L.min_contact_force_N.cam_angle_deg},
+                         {"max_contact_force_N", L.max_contact_force_N.value},
+                         {"at_max_contact_force_cam_angle_deg", L.max_contact_force_N.cam_angle_deg},
+                         {"separation_ok", L.min_contact_force_N.value > 0.0},
+                         {"max_camshaft_torque_Nm", L.max_abs_camshaft_torque_Nm.value},
+                         {"at_max_camshaft_torque_cam_angle_deg", L.max_abs_camshaft_torque_Nm.cam_angle_deg},
+                         {"camshaft_torque_range_Nm", {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm}}};
+    if (std::isfinite(L.jump_speed_rpm)) {
+      aj["jump_speed_rpm"] = L.jump_speed_rpm;
+    } else {
+      aj["jump_speed_rpm"] = nullptr;
+      j["notes"].push_back("jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam");
+    }
+    loads_ok = L.min_contact_force_N.value > 0.0;
+    if (L.stress_evaluated) {
+      aj["face_width_mm"] = *s.face_width_mm;
+      aj["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
+      if (L.stress_finite) {
+        aj["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
+        aj["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
+      } else {
+        aj["max_contact_stress_MPa"] = nullptr;
+        j["notes"].push_back("max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)");
+      }
+      if (s.limits.contact_stress_MPa) {
+        aj["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
+        aj["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
+        loads_ok = loads_ok && aj["contact_stress_ok"].get<bool>();
+      }
+    } else if (s.face_width_mm || s.material) {
+      j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
+    }
+    j["arm_dynamics"] = aj;
+  } else if (r.loads) {
     const Result::Loads& L = *r.loads;
     const auto& d = *s.dynamics;
     nlohmann::json dj = {{"speed_rpm", d.speed_rpm},
@@ -864,20 +1111,23 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
     j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
   } else if (s.face_width_mm || s.material) {
-    j["notes"].push_back("no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
+    j["notes"].push_back(flat_arm ? "no contact force and no contact stress: they need \"arm_dynamics\" (speed, arm "
+                                    "inertia, spring)"
+                                  : "no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
   }
 
   // The verdict: every limit met, and which limits are the defaults.
   nlohmann::json defaults = nlohmann::json::array();
   if (s.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
   if (s.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
-  if (flat) {
+  if (flat && !flat_arm) {
     if (s.limits.pressure_angle_default) defaults.erase(defaults.begin());
     j["limits"] = {{"radius_margin_mm", s.limits.radius_margin_mm}, {"defaults", defaults}};
     if (s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
   } else {
     j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
                    {"defaults", defaults}};
+    if (flat_arm && s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
   }
   if (r.loads) j["limits"]["min_contact_force_N"] = 0.0;
   if (s.limits.contact_stress_MPa) j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
@@ -929,8 +1179,11 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("acceleration_" + fu + "_per_rad2", t.acceleration_per_rad2);
   table.Add("jerk_" + fu + "_per_rad3", t.jerk_per_rad3);
   const bool flat = r.flat_face.has_value();
+  const bool flat_arm = flat && r.oscillating;
   if (flat) {
-    // A flat face: no pitch curve, instant centre or shift angle; the pressure angle is 0.
+    // A flat face: no pitch curve, instant centre or shift angle; the pressure angle is 0 (on an arm
+    // atan(d/ℓ)).
+    if (flat_arm) table.Add("pressure_angle_deg", t.pressure_angle_deg);
     table.Add("radial_dimension_mm", t.radial_dimension_mm);
     table.Add("contact_x_mm", t.contact_x_mm);
     table.Add("contact_y_mm", t.contact_y_mm);
@@ -968,7 +1221,16 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   auto series = [&](const std::string& label, const std::vector<double>& y) {
     return Series{label, th, y};
   };
-  if (flat) {
+  if (flat_arm) {
+    PlotOptions o;
+    o.title = s.name + ": flat face on an arm: contact along the face ℓ, radius of curvature, pressure angle";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "[mm], [deg]";
+    out.Add("flat_face.svg", SvgLinePlot({series("contact along the face ℓ [mm]", r.flat_face->contact_offset_mm),
+                                          series("radius of curvature ρ [mm]", r.flat_face->radius_of_curvature_mm),
+                                          series("pressure angle atan(d/ℓ) [deg]", t.pressure_angle_deg)},
+                                         o));
+  } else if (flat) {
     PlotOptions o;
     o.title = s.name + ": flat face: contact offset S' and radius of curvature r_b + S + S''";
     o.x_label = "cam angle [deg]";
@@ -1000,7 +1262,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
   if (r.loads) {
     PlotOptions o;
-    o.title = s.name + ": contact force and camshaft torque at " + Format(s.dynamics->speed_rpm) + " rpm";
+    o.title = s.name + ": contact force and camshaft torque at " +
+              Format(s.dynamics ? s.dynamics->speed_rpm : s.arm_dynamics->speed_rpm) + " rpm";
     o.x_label = "cam angle [deg]";
     o.y_label = "force [N], torque [N·m]";
     out.Add("loads.svg", SvgLinePlot({series("contact force F_c [N]", r.loads->contact_force_N),
@@ -1051,6 +1314,33 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   base.circles.push_back({0.0, 0.0, cam.base_radius});
   base.circles.push_back({0.0, 0.0, 0.5});
   const bool knife = s.contact == Study::Contact::kKnifeEdge;
+  if (flat_arm) {
+    // The arm and its face at θ = 0: the pivot O₃, the perpendicular d to the face, the face over the
+    // contact's travel min ℓ … max ℓ (or the length given, from min ℓ).
+    const Result::FlatFace& F = *r.flat_face;
+    const dc::OscillatingFlatFacePoint p0 = dc::EvaluateOscillatingFlatFaced(OscillatingFlatFace(s), 0.0);
+    const Vec2<double> along = -U(p0.theta - p0.xi), foot = p0.pivot - s.face_offset_mm * p0.normal;
+    const double lo = F.min_contact_offset_mm.value,
+                 hi = s.follower_face_width_mm ? lo + *s.follower_face_width_mm : F.max_contact_offset_mm.value;
+    const Vec2<double> a = foot + lo * along, b = foot + hi * along;
+    follower.polylines.push_back({{a.x(), a.y()}, {b.x(), b.y()}});
+    follower.polylines.push_back({{p0.pivot.x(), p0.pivot.y()}, {foot.x(), foot.y()}});
+    follower.circles.push_back({p0.pivot.x(), p0.pivot.y(), 1.5});
+    d.layers = {profile, base, follower};
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "base circle diameter %g mm; oscillating flat-faced follower, pivot distance %g mm, face offset %g mm, "
+                  "face length needed %.3f mm",
+                  2 * cam.base_radius, cam.pivot_distance, s.face_offset_mm,
+                  F.max_contact_offset_mm.value - F.min_contact_offset_mm.value);
+    d.dimensions.push_back(line);
+    double r_min = INFINITY, r_max = 0;
+    for (const auto& [x, y] : pp) r_min = std::min(r_min, std::hypot(x, y)), r_max = std::max(r_max, std::hypot(x, y));
+    std::snprintf(line, sizeof line, "profile radius from the cam centre %.3f to %.3f mm (sampled)", r_min, r_max);
+    d.dimensions.push_back(line);
+    out.Add("profile.svg", SvgDrawing(d));
+    return;
+  }
   if (flat) {
     // The face at θ = 0: the line x = r_b + S(0) over the width needed (or the face given), and the stem.
     const Result::FlatFace& F = *r.flat_face;
@@ -1174,6 +1464,7 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
      "/flat_face/radius_margin_limit_mm", NAN, false},
     {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
      "/flat_face/face_width_mm"},
+    {"face length needed (flat face on an arm)", "/flat_face/face_length_needed_mm", "mm", "/flat_face/face_width_mm"},
     {"smallest contact force (separation)", "/dynamics/min_contact_force_N", "N", "", 0.0, false},
     {"largest contact force", "/dynamics/max_contact_force_N", "N"},
     {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},
@@ -1182,6 +1473,11 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"smallest axial force (dynamic)", "/dynamics/response/min_axial_force_N", "N"},
     {"residual vibration", "/dynamics/response/residual_vibration_mm", "mm"},
     {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
+    {"smallest contact force on the arm's face (separation)", "/arm_dynamics/min_contact_force_N", "N", "", 0.0, false},
+    {"largest contact stress (arm's face)", "/arm_dynamics/max_contact_stress_MPa", "MPa",
+     "/arm_dynamics/contact_stress_limit_MPa"},
+    {"jump speed (arm, kinetostatic)", "/arm_dynamics/jump_speed_rpm", "rpm"},
+    {"largest camshaft torque (arm)", "/arm_dynamics/max_camshaft_torque_Nm", "N·m"},
     {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
     {"worst-case follower error", "/worst_case_error_um/max", "µm"},
     {"largest rms follower error", "/rms_error_um/max", "µm"},

@@ -1,6 +1,7 @@
 // Study kind "disc_cam": a disc cam with an offset translating or an oscillating roller follower
-// (Rzine et al., docs/disc_cam.md), a knife edge (the roller model with r_f = 0) or a translating
-// flat-faced follower (model/disc_cam/flat_faced.h). Profile, pressure and shift angles, curvature
+// (Rzine et al., docs/disc_cam.md), a knife edge (the roller model with r_f = 0), a translating
+// flat-faced follower (model/disc_cam/flat_faced.h) or a flat face on an arm
+// (model/disc_cam/oscillating_flat_faced.h). Profile, pressure and shift angles, curvature
 // and undercut over a cam revolution; for a roller the mechanical error from the tolerances (worst
 // case and RMS, eqs. 31–32) and a Monte-Carlo check of the linearised error against the exact
 // follower motion.
@@ -20,6 +21,7 @@
 #include "model/disc_cam/follower_dynamics.h"
 #include "model/disc_cam/kinetostatics.h"
 #include "model/disc_cam/mechanical_error.h"
+#include "model/disc_cam/oscillating_flat_faced.h"
 #include "model/motion/motion_program.h"
 #include "studies/archive.h"
 #include "studies/geometry_files.h"
@@ -42,7 +44,7 @@ struct Input {
     std::string type;
     /// Optional without a schema default: an oscillating follower has no offset, a knife edge or a
     /// flat face no roller (a default would be written into its studies by the schema's users).
-    std::optional<double> roller_radius_mm, offset_mm, pivot_distance_mm, arm_length_mm, face_width_mm;
+    std::optional<double> roller_radius_mm, offset_mm, pivot_distance_mm, arm_length_mm, face_width_mm, face_offset_mm;
     /// The follower types with a roller (the others: knife-edge, flat-faced).
     static const std::vector<std::string>& RollerTypes() {
       static const std::vector<std::string> t = {"translating_roller", "oscillating_roller"};
@@ -53,9 +55,10 @@ struct Input {
       a->Visit("type", &type,
                Field().Required()
                    .OneOf({"translating_roller", "oscillating_roller", "translating_knife_edge", "oscillating_knife_edge",
-                           "translating_flat_faced"})
+                           "translating_flat_faced", "oscillating_flat_faced"})
                    .Desc("the follower's kind: a roller, a knife edge (a roller of radius 0: the profile is the pitch "
-                         "curve) or a flat face perpendicular to the line of motion (docs/disc_cam.md)"));
+                         "curve), a flat face perpendicular to the line of motion or a flat face on a pivoted arm "
+                         "(docs/disc_cam.md)"));
       a->Visit("offset_mm", &offset_mm,
                Field().Unit("mm").Desc("translating roller or knife edge only: e, the follower axis's offset from the "
                                         "cam centre, positive as in the paper's Fig. 1; |e| < r_b + r_f (absent: 0)"));
@@ -63,15 +66,22 @@ struct Input {
                Field().Positive().Unit("mm").Desc("roller followers only, required: r_f, of the roller (1e-6 to 1e6 "
                                                   "times the base circle)"));
       a->Visit("pivot_distance_mm", &pivot_distance_mm,
-               Field().Positive().Unit("mm").Desc("oscillating only, required: f = O₂O₃, cam centre to the arm's pivot"));
+               Field().Positive().Unit("mm").Desc("oscillating only, required: f = O₂O₃, cam centre to the arm's pivot "
+                                                  "(a flat face: r_b + face_offset_mm < f)"));
       a->Visit("arm_length_mm", &arm_length_mm,
-               Field().Positive().Unit("mm").Desc("oscillating only, required: l, pivot to the roller centre; |f − l| < r_b + r_f < f + l"));
+               Field().Positive().Unit("mm").Desc("oscillating roller or knife edge only, required: l, pivot to the roller "
+                                                  "centre; |f − l| < r_b + r_f < f + l"));
       a->Visit("face_width_mm", &face_width_mm,
                Field().Positive().Unit("mm").Desc(
                    "flat-faced only: the face's width in the cam plane, centred on the follower's axis; checked "
-                   "against the width the contact runs over, 2 max|S'| (absent: not checked)"));
+                   "against the width the contact runs over, 2 max|S'| (absent: not checked); oscillating: the "
+                   "face's length along the arm, checked against the length the contact runs over, max ℓ − min ℓ"));
+      a->Visit("face_offset_mm", &face_offset_mm,
+               Field().Unit("mm").Desc("oscillating flat-faced only: d, the face's distance from the pivot, toward the "
+                                       "cam (absent: 0, a face through the pivot); r_b + d < f"));
     }
-    /// A roller follower needs its radius, the others have none; the face width is a flat face's.
+    /// A roller follower needs its radius, the others have none; the face width is a flat face's,
+    /// the face offset an oscillating flat face's.
     static nlohmann::ordered_json SchemaRules();
   };
   /// Manufacturing tolerances (Rzine et al., eqs. 31–32).
@@ -146,6 +156,24 @@ struct Input {
                    "follower_stiffness_N_per_mm)"));
     }
   };
+  /// Kinetostatic loads on an oscillating flat-faced follower's arm at one cam speed
+  /// (model/disc_cam/oscillating_flat_faced.h).
+  struct ArmDynamics {
+    double speed_rpm = 0.0, arm_inertia_kg_m2 = 0.0, spring_rate_N_m_per_rad = 0.0, spring_preload_N_m = 0.0,
+           external_moment_N_m = 0.0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("speed_rpm", &speed_rpm, Field().Required().Positive().Unit("rpm").Desc("n, the cam speed"));
+      a->Visit("arm_inertia_kg_m2", &arm_inertia_kg_m2,
+               Field().Required().Positive().Unit("kg·m²").Desc("J, the arm's (and face's) moment of inertia about the pivot"));
+      a->Visit("spring_rate_N_m_per_rad", &spring_rate_N_m_per_rad,
+               Field().NonNegative().Unit("N·m/rad").Desc("k, the return spring's rate about the pivot"));
+      a->Visit("spring_preload_N_m", &spring_preload_N_m,
+               Field().NonNegative().Unit("N·m").Desc("M₀, the spring's moment on the base circle, pressing the face on the cam"));
+      a->Visit("external_moment_N_m", &external_moment_N_m,
+               Field().Unit("N·m").Desc("M_e, a constant moment pressing the arm onto the cam (negative: lifting it off)"));
+    }
+  };
   /// The Monte-Carlo check of the linearised error (the object form of analysis.monte_carlo).
   struct MonteCarlo {
     int samples = camopt::disc_cam::MonteCarloOptions{}.samples;
@@ -191,6 +219,7 @@ struct Input {
   std::optional<double> face_width_mm;
   std::optional<MaterialInput> material;
   std::optional<Dynamics> dynamics;
+  std::optional<ArmDynamics> arm_dynamics;
   Analysis analysis;
   std::optional<double> cam_thickness_mm, bore_diameter_mm, cutter_radius_mm;
   nlohmann::json geometry_files;
@@ -203,8 +232,8 @@ struct Input {
     a->Visit("name", &name, Field().Desc("the design's name, in titles"));
     a->Visit("description", &description, Field().Desc("free text"));
     a->Visit("follower", &follower,
-             Field().Required().Desc(sizing ? "the start design's follower; a translating roller follower only (the "
-                                              "other types are refused)"
+             Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller follower "
+                                              "only (the other types are refused)"
                                             : "the follower"));
     a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
              Field().Required().Positive().Unit("mm").Desc(
@@ -227,6 +256,10 @@ struct Input {
     a->Visit("dynamics", &dynamics,
              Field().Desc("kinetostatic follower loads at one cam speed (docs/disc_cam.md 'Kinetostatic loads'); "
                           "translating followers only"));
+    a->Visit("arm_dynamics", &arm_dynamics,
+             Field().Desc("kinetostatic loads on the arm of an oscillating flat-faced follower at one cam speed: "
+                          "contact force M/ℓ, camshaft torque M S', jump speed, contact stress (docs/disc_cam.md "
+                          "'Oscillating flat-faced follower')"));
   }
   /// The geometry files' fields (after "analysis" in the file).
   template <typename Archive>
@@ -255,8 +288,7 @@ struct Input {
     SerializeGeometry(a);
   }
   /// The schema of "motion" (read by ParseMotionProgram): rise_mm for a translating, rise_deg for an
-  /// oscillating follower (`sizing`: rise_mm only, the rise by law in the schema); polynomial
-  /// segments.
+  /// oscillating follower; polynomial segments (`sizing`: the same, disc_cam_min_size sizes both).
   static nlohmann::ordered_json MotionSchema(bool sizing);
 };
 
@@ -264,11 +296,15 @@ struct Input {
 struct Study {
   std::string name;
   /// The follower's contact: a roller, a knife edge (the roller model with r_f = 0) or a flat face
-  /// (model/disc_cam/flat_faced.h; cam holds its base circle and motion, translating, r_f = 0).
+  /// (model/disc_cam/flat_faced.h; cam holds its base circle and motion, translating, r_f = 0), or a
+  /// flat face on an arm (model/disc_cam/oscillating_flat_faced.h; cam holds its base circle, motion and
+  /// pivot distance, oscillating, r_f = 0; the face offset d below).
   enum class Contact { kRoller, kKnifeEdge, kFlatFaced } contact = Contact::kRoller;
   std::string follower_type = "translating_roller";  ///< as in the file
   /// Flat face: its width in the cam plane, centred on the axis [mm] (follower.face_width_mm).
   std::optional<double> follower_face_width_mm;
+  /// Oscillating flat face: d, the face's distance from the pivot toward the cam [mm].
+  double face_offset_mm = 0.0;
   camopt::disc_cam::DiscCam cam;
   camopt::disc_cam::Deviations<double> tolerances;  ///< [mm]
   int angle_steps = 3600;
@@ -309,6 +345,12 @@ struct Study {
     int revolutions = 3;
   };
   std::optional<Dynamics> dynamics;
+  /// The arm's loads of an oscillating flat-faced follower ("arm_dynamics").
+  struct ArmDynamics {
+    double speed_rpm = 0.0;
+    camopt::disc_cam::ArmLoads loads;
+  };
+  std::optional<ArmDynamics> arm_dynamics;
 };
 
 /// A value and the cam angle where it is reached.
@@ -386,9 +428,11 @@ struct Result {
   std::optional<Loads> loads;
 
   /// Flat-faced follower (model/disc_cam/flat_faced.h): where the contact runs on the face, and the
-  /// profile's radius of curvature ρ = r_b + S + S'' (min_radius_of_curvature_mm holds ρ_min).
+  /// profile's radius of curvature ρ = r_b + S + S'' (min_radius_of_curvature_mm holds ρ_min). On an
+  /// arm (model/disc_cam/oscillating_flat_faced.h) the contact offset is ℓ, along the face from the
+  /// foot of the pivot's perpendicular, and ρ = h + h_φφ.
   struct FlatFace {
-    AtAngle max_contact_offset_mm, min_contact_offset_mm;  ///< S' [mm]
+    AtAngle max_contact_offset_mm, min_contact_offset_mm;  ///< S' (translating) or ℓ (on an arm) [mm]
     AtAngle min_radius_of_curvature_mm;                    ///< ρ_min, where it is (≤ 0: a cusp)
     std::vector<std::pair<double, double>> cusp_cam_angle_deg;  ///< [from, to] where ρ ≤ 0
     std::vector<double> contact_offset_mm, radius_of_curvature_mm;  ///< series

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -169,6 +170,171 @@ TEST(DiscCamKnifeEdgeStudy, ProfileIsTheRollerPitchCurve) {
   EXPECT_FALSE(k.out.contains("worst_case_error_um"));
 }
 
+// The oscillating flat-faced example (f = 100, d = 10, r_b = 40 mm; a cycloidal 10° swing over 120°,
+// dwell 50°, return 120°, dwell 70°) against an envelope built here from the arm alone: at cam angle θ
+// (coordinates fixed on the cam, the pivot at f u(θ)) the arm leaves the pivot at angle ξ = ξ₀ + S
+// from the line to the cam centre, sin ξ₀ = (r_b + d)/f, and the face is the line parallel to the arm
+// d from the pivot on the cam's side. The contact is the intersection of the face lines at θ ± δ; the
+// radius of curvature the circumradius of three neighbouring contacts; the pressure angle the angle
+// between the face's normal and the velocity of the arm's point at the contact.
+struct Line {
+  double px, py, dx, dy;  // a point and a unit direction
+};
+std::pair<double, double> Intersect(const Line& a, const Line& b) {
+  const double den = a.dx * b.dy - a.dy * b.dx;
+  const double t = ((b.px - a.px) * b.dy - (b.py - a.py) * b.dx) / den;
+  return {a.px + t * a.dx, a.py + t * a.dy};
+}
+
+TEST(DiscCamOscillatingFlatFacedStudy, ProfileFaceLengthPressureAngleAndRadiusAgainstTheEnvelope) {
+  json study = Example("disc_cam_oscillating_flat_faced.json");
+  const Ran ran = ParseAndRun(study);
+  const auto& t = ran.result.series;
+  ASSERT_TRUE(ran.result.flat_face.has_value());
+  const auto& F = *ran.result.flat_face;
+  const double f = 100, d = 10, rb = 40, deg = kPiHere / 180;
+  // Program() is written for the 24 mm examples; the swing here is 10°: scale its S by (10° in rad)/24.
+  const double scale = 10 * deg / kH;
+  auto face = [&](double th) {
+    const double xi = std::asin((rb + d) / f) + scale * Program(th).s;
+    const double ox = f * std::cos(th), oy = f * std::sin(th);
+    const double ax = std::cos(th + kPiHere - xi), ay = std::sin(th + kPiHere - xi);
+    double mx = -ay, my = ax;
+    if (mx * -ox + my * -oy < 0) mx = -mx, my = -my;
+    return std::pair<Line, std::pair<double, double>>{Line{ox + d * mx, oy + d * my, ax, ay}, {mx, my}};
+  };
+  const int n = int(t.cam_angle_deg.size());
+  ASSERT_EQ(n, 3600);
+  double worst_point = 0, worst_rho = 0, worst_phi = 0, worst_ell = 0, ell_max = -1e300, ell_min = 1e300;
+  for (int i = 0; i < n; i += 7) {
+    const double th = 2 * kPiHere * i / n, delta = 1e-5;
+    const auto [x, y] = Intersect(face(th - delta).first, face(th + delta).first);
+    worst_point = std::max(worst_point, std::hypot(x - t.contact_x_mm[i], y - t.contact_y_mm[i]));
+    const auto [line, m] = face(th);
+    // ℓ: from the foot of the pivot's perpendicular along the arm.
+    const double ell = (x - line.px) * line.dx + (y - line.py) * line.dy;
+    worst_ell = std::max(worst_ell, std::abs(ell - F.contact_offset_mm[i]));
+    // The pressure angle: the arm's point at the contact moves perpendicular to O₃A.
+    const double ox = f * std::cos(th), oy = f * std::sin(th);
+    const double rx = x - ox, ry = y - oy, rn = std::hypot(rx, ry);
+    const double phi = std::acos(std::abs(m.first * -ry / rn + m.second * rx / rn)) / deg;
+    worst_phi = std::max(worst_phi, std::abs(phi - t.pressure_angle_deg[i]));
+    // ρ: the circumradius of the contacts at θ − ε, θ, θ + ε (ε = 0.2°), on the convex profile.
+    const double eps = 0.2 * deg;
+    const auto p0 = Intersect(face(th - eps - delta).first, face(th - eps + delta).first);
+    const auto p2 = Intersect(face(th + eps - delta).first, face(th + eps + delta).first);
+    const double a = std::hypot(p0.first - x, p0.second - y), b = std::hypot(p2.first - x, p2.second - y),
+                 c = std::hypot(p2.first - p0.first, p2.second - p0.second);
+    const double area2 = std::abs((x - p0.first) * (p2.second - p0.second) - (y - p0.second) * (p2.first - p0.first));
+    worst_rho = std::max(worst_rho, std::abs(a * b * c / (2 * area2) - F.radius_of_curvature_mm[i]) /
+                                        F.radius_of_curvature_mm[i]);
+  }
+  for (int i = 0; i < 36000; ++i) {  // the face's travel on a grid 10× the study's
+    const double th = 2 * kPiHere * i / 36000;
+    const auto [x, y] = Intersect(face(th - 1e-5).first, face(th + 1e-5).first);
+    const Line line = face(th).first;
+    const double ell = (x - line.px) * line.dx + (y - line.py) * line.dy;
+    ell_max = std::max(ell_max, ell), ell_min = std::min(ell_min, ell);
+  }
+  EXPECT_LT(worst_point, 1e-5);  // mm
+  EXPECT_LT(worst_ell, 1e-5);
+  EXPECT_LT(worst_phi, 1e-6);    // deg
+  EXPECT_LT(worst_rho, 1e-4);    // relative
+  const json& ff = ran.out["flat_face"];
+  EXPECT_NEAR(ff["arm_angle_on_base_circle_deg"].get<double>(), 30.0, 1e-12);  // asin(50/100)
+  // The study's grid (3600) finds the travel to the scan's resolution (ℓ is flat at its extremes).
+  EXPECT_NEAR(ff["contact_on_face_mm"]["max"].get<double>(), ell_max, 1e-4);
+  EXPECT_NEAR(ff["contact_on_face_mm"]["min"].get<double>(), ell_min, 1e-4);
+  EXPECT_NEAR(ff["face_length_needed_mm"].get<double>(), ell_max - ell_min, 2e-4);
+  EXPECT_TRUE(ff["face_width_ok"].get<bool>());  // 60 mm ≥ 29.56 mm
+  // On the base circle (θ in the last dwell) ℓ = f cos ξ₀ and φ = atan(d/ℓ).
+  EXPECT_NEAR(F.contact_offset_mm[3500], f * std::cos(30 * deg), 1e-9);
+  EXPECT_NEAR(t.pressure_angle_deg[3500], std::atan(d / (f * std::cos(30 * deg))) / deg, 1e-9);
+  EXPECT_NEAR(t.radial_dimension_mm[3500], rb, 1e-9);
+  EXPECT_FALSE(ff["cusp"].get<bool>());
+  EXPECT_TRUE(ran.out["limits_ok"].get<bool>());
+  // A 25 mm face is shorter than the 29.56 mm the contact runs over.
+  study["follower"]["face_width_mm"] = 25;
+  const Ran short_face = ParseAndRun(study);
+  EXPECT_FALSE(short_face.out["flat_face"]["face_width_ok"].get<bool>());
+  EXPECT_FALSE(short_face.out["limits_ok"].get<bool>());
+}
+
+// The arm's loads at 300 rpm (J = 0.002 kg·m², k = 20 N·m/rad, M₀ = 3 N·m): the contact force from the
+// moment about the pivot written out here, M = J S'' ω² + k S + M₀ over the arm ℓ of the envelope built
+// above; the camshaft torque as the moment of that force about the cam centre, A × (F m) (not the power
+// balance the code uses); the jump speed by bisection on min F; the Hertz stress of a plane on ρ.
+TEST(DiscCamOscillatingFlatFacedStudy, ArmLoadsAgainstTheMomentAboutThePivot) {
+  const Ran ran = ParseAndRun(Example("disc_cam_oscillating_flat_faced.json"));
+  ASSERT_TRUE(ran.result.loads.has_value());
+  const auto& L = *ran.result.loads;
+  const auto& F = *ran.result.flat_face;
+  const double f = 100, d = 10, rb = 40, deg = kPiHere / 180, scale = 10 * deg / kH;
+  const double J = 0.002, k = 20, m0 = 3, omega = 300 * 2 * kPiHere / 60;
+  auto face = [&](double th) {
+    const double xi = std::asin((rb + d) / f) + scale * Program(th).s;
+    const double ox = f * std::cos(th), oy = f * std::sin(th);
+    const double ax = std::cos(th + kPiHere - xi), ay = std::sin(th + kPiHere - xi);
+    double mx = -ay, my = ax;
+    if (mx * -ox + my * -oy < 0) mx = -mx, my = -my;
+    return std::pair<Line, std::pair<double, double>>{Line{ox + d * mx, oy + d * my, ax, ay}, {mx, my}};
+  };
+  auto force = [&](double th, double w) {  // [N], and the contact point
+    const auto [x, y] = Intersect(face(th - 1e-5).first, face(th + 1e-5).first);
+    const Line line = face(th).first;
+    const double ell = (x - line.px) * line.dx + (y - line.py) * line.dy;
+    const Svaj3 p = Program(th);
+    const double moment = J * scale * p.a * w * w + k * scale * p.s + m0;
+    return std::tuple<double, double, double>{moment / (ell * 1e-3), x, y};
+  };
+  double worst_f = 0, worst_t = 0;
+  for (int i = 0; i < 3600; i += 9) {
+    const double th = 2 * kPiHere * i / 3600;
+    const auto [fc, x, y] = force(th, omega);
+    worst_f = std::max(worst_f, std::abs(fc - L.contact_force_N[i]) / std::abs(fc));
+    const auto m = face(th).second;
+    const double torque = (x * fc * m.second - y * fc * m.first) * 1e-3;  // A × (F m) [N·m]
+    worst_t = std::max(worst_t, std::abs(torque - L.camshaft_torque_Nm[i]));
+  }
+  EXPECT_LT(worst_f, 1e-6);
+  EXPECT_LT(worst_t, 1e-6);  // N·m (the torque reaches 0.80 N·m)
+  // On the base circle: F = M₀/(f cos ξ₀) = 3/(0.1 cos 30°) = 34.641 N.
+  EXPECT_NEAR(L.contact_force_N[3500], m0 / (0.1 * std::cos(30 * deg)), 1e-9);
+  // The jump speed: bisection on the speed where min F over 36 000 angles reaches 0.
+  auto min_force = [&](double w) {
+    double lo = 1e300;
+    for (int i = 0; i < 36000; ++i) lo = std::min(lo, std::get<0>(force(2 * kPiHere * i / 36000, w)));
+    return lo;
+  };
+  double a = omega, b = 10 * omega;
+  ASSERT_GT(min_force(a), 0.0);
+  ASSERT_LT(min_force(b), 0.0);
+  for (int it = 0; it < 40; ++it) (min_force(0.5 * (a + b)) > 0 ? a : b) = 0.5 * (a + b);
+  const json& aj = ran.out["arm_dynamics"];
+  EXPECT_NEAR(aj["jump_speed_rpm"].get<double>(), 0.5 * (a + b) * 60 / (2 * kPiHere), 1e-3 * aj["jump_speed_rpm"].get<double>());
+  // Hertz, plane on ρ: p₀ = sqrt(F E*/(π w ρ)) at the reported peak, E* = E/(2(1 − ν²)).
+  const int ip = int(std::lround(aj["at_max_contact_stress_cam_angle_deg"].get<double>() * 10));
+  const double e_star = 206000 / (2 * (1 - 0.09));
+  EXPECT_NEAR(aj["max_contact_stress_MPa"].get<double>(),
+              std::sqrt(L.contact_force_N[ip] * e_star / (kPiHere * 12 * F.radius_of_curvature_mm[ip])), 1e-9);
+  EXPECT_TRUE(aj["separation_ok"].get<bool>());
+  EXPECT_TRUE(aj["contact_stress_ok"].get<bool>());
+  EXPECT_TRUE(ran.out["limits_ok"].get<bool>());
+}
+
+// A 20° swing over 120° makes the profile concave on the rise: ρ_min < 0, a cusp, the verdict fails.
+TEST(DiscCamOscillatingFlatFacedStudy, AConcaveProfileIsACuspAndFailsTheVerdict) {
+  json study = Example("disc_cam_oscillating_flat_faced.json");
+  study["motion"][0]["rise_deg"] = 20;
+  study["motion"][2]["rise_deg"] = -20;
+  const Ran ran = ParseAndRun(study);
+  const json& ff = ran.out["flat_face"];
+  EXPECT_LT(ff["min_radius_of_curvature_mm"].get<double>(), 0.0);
+  EXPECT_TRUE(ff["cusp"].get<bool>());
+  EXPECT_FALSE(ff["radius_margin_ok"].get<bool>());
+  EXPECT_FALSE(ran.out["limits_ok"].get<bool>());
+}
+
 struct BadCase {
   const char* name;
   const char* example;
@@ -186,6 +352,7 @@ TEST_P(DiscCamFollowerTypesBadInput, ExitCode2AndTheJsonPath) {
 }
 const char* kF = "disc_cam_flat_faced.json";
 const char* kK = "disc_cam_knife_edge.json";
+const char* kO = "disc_cam_oscillating_flat_faced.json";
 INSTANTIATE_TEST_SUITE_P(
     Cases, DiscCamFollowerTypesBadInput,
     ::testing::Values(
@@ -219,6 +386,25 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"min_size_flat", "disc_cam_min_size.json",
                 R"({"follower": {"type": "translating_flat_faced", "roller_radius_mm": null, "offset_mm": null}})",
                 "/follower/type", "flat-faced"},
+        BadCase{"arm_face_arm_length", kO, R"({"follower": {"arm_length_mm": 80}})", "/follower/arm_length_mm",
+                "unknown field"},
+        BadCase{"arm_face_without_pivot", kO, R"({"follower": {"pivot_distance_mm": null}})",
+                "/follower/pivot_distance_mm", "missing required field"},
+        BadCase{"arm_face_short_pivot", kO, R"({"follower": {"pivot_distance_mm": 45}})",
+                "/follower/pivot_distance_mm", "cannot touch the base circle"},
+        BadCase{"arm_face_fast_arm", kO, R"({"motion": [{"law": "cycloidal", "rise_deg": 60, "cam_angle_deg": 30},
+            {"law": "dwell", "cam_angle_deg": 150}, {"law": "cycloidal", "rise_deg": -60, "cam_angle_deg": 30},
+            {"law": "dwell", "cam_angle_deg": 150}]})", "/motion", "as fast as the cam"},
+        BadCase{"arm_face_dynamics", kO, R"({"dynamics": {"speed_rpm": 100, "follower_mass_kg": 1}})", "/dynamics",
+                "takes \"arm_dynamics\""},
+        BadCase{"arm_face_stage", kO, R"({"analysis": {"evaluate": ["error"]}})", "/analysis/evaluate/0",
+                "roller followers only"},
+        BadCase{"arm_face_stress_without_loads", kO, R"({"arm_dynamics": null})", "/limits/contact_stress_MPa",
+                "arm_dynamics"},
+        BadCase{"translating_arm_dynamics", kF, R"({"arm_dynamics": {"speed_rpm": 100, "arm_inertia_kg_m2": 0.01}})",
+                "/arm_dynamics", "oscillating flat-faced follower only"},
+        BadCase{"translating_face_offset", kF, R"({"follower": {"face_offset_mm": 3}})", "/follower/face_offset_mm",
+                "unknown field"},
         BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",
                 "/follower/roller_radius_mm", "missing required field"}));
 

@@ -2,6 +2,7 @@
 // coefficients, continuity at segment joints, and program checks.
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -15,7 +16,8 @@ namespace {
 
 const MotionLaw kRiseLaws[] = {MotionLaw::kCycloidal,         MotionLaw::kSimpleHarmonic,
                                MotionLaw::kModifiedSine,      MotionLaw::kModifiedTrapezoid,
-                               MotionLaw::kPolynomial345,     MotionLaw::kPolynomial4567};
+                               MotionLaw::kPolynomial345,     MotionLaw::kPolynomial4567,
+                               MotionLaw::kQuadraticParabola};
 
 struct Peaks {
   double cv, ca, cj;
@@ -91,6 +93,56 @@ TEST(MotionLaw, PeakCoefficientsAreTheTextbookValues) {
   }
   EXPECT_NEAR(SampledPeaks(MotionLaw::kModifiedSine).ca, 4 * pi * pi / (4 + pi), 1e-9);
   EXPECT_NEAR(SampledPeaks(MotionLaw::kModifiedTrapezoid).ca, 8 * pi / (2 + pi), 1e-9);
+}
+
+// The quadratic parabola written out here: s = 2u² up to the middle, 1 − 2(1 − u)² after.
+TEST(MotionLaw, QuadraticParabolaIsTheConstantAccelerationLaw) {
+  for (double u = 0.0; u <= 1.0; u += 1.0 / 64) {
+    const Svaj<double> n = NormalizedLaw(MotionLaw::kQuadraticParabola, u);
+    const double s = u <= 0.5 ? 2 * u * u : 1 - 2 * (1 - u) * (1 - u);
+    EXPECT_NEAR(n.s, s, 1e-15) << u;
+    EXPECT_NEAR(n.a, u <= 0.5 ? 4.0 : -4.0, 0.0) << u;
+  }
+  // v continuous at the middle (2 from both sides), a jumps by 8 there: C¹ inside the law.
+  const double eps = 1e-12;
+  EXPECT_NEAR(NormalizedLaw(MotionLaw::kQuadraticParabola, 0.5 - eps).v, 2.0, 1e-11);
+  EXPECT_NEAR(NormalizedLaw(MotionLaw::kQuadraticParabola, 0.5 + eps).v, 2.0, 1e-11);
+}
+
+// The characteristic values the library states (Characteristics) against the sampled maxima of
+// the law itself and against the values VDI 2143 Blatt 1 and Norton's Table 3-2 print (3-4
+// significant digits there: compared to 5e-4).
+TEST(MotionLaw, StatedCharacteristicValuesAreTheSampledAndPublishedOnes) {
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Row {
+    MotionLaw law;
+    double cv, ca, cj;  // published; inf: the acceleration jumps
+  };
+  const Row rows[] = {
+      {MotionLaw::kQuadraticParabola, 2.0, 4.0, inf},     {MotionLaw::kSimpleHarmonic, 1.571, 4.935, inf},
+      {MotionLaw::kPolynomial345, 1.875, 5.774, 60.0},    {MotionLaw::kCycloidal, 2.0, 6.283, 39.48},
+      {MotionLaw::kModifiedTrapezoid, 2.0, 4.888, 61.43}, {MotionLaw::kModifiedSine, 1.760, 5.528, 69.47},
+      {MotionLaw::kPolynomial4567, 2.1875, 7.513, 52.5},
+  };
+  for (const Row& r : rows) {
+    const auto c = Characteristics(r.law);
+    ASSERT_TRUE(c.has_value()) << LawName(r.law);
+    const Peaks p = SampledPeaks(r.law);
+    EXPECT_NEAR(c->cv, p.cv, 1e-8) << LawName(r.law);
+    EXPECT_NEAR(c->ca, p.ca, 1e-8) << LawName(r.law);
+    EXPECT_NEAR(c->cv, r.cv, 5e-4) << LawName(r.law);
+    EXPECT_NEAR(c->ca, r.ca, 5e-4) << LawName(r.law);
+    if (std::isinf(r.cj)) {
+      EXPECT_TRUE(std::isinf(c->cj)) << LawName(r.law);
+      // Infinite: the acceleration jumps at the start (against a dwell: a(0) ≠ 0).
+      EXPECT_GT(std::abs(NormalizedLaw(r.law, 0.0).a), 1.0) << LawName(r.law);
+    } else {
+      EXPECT_NEAR(c->cj, p.cj, 1e-6 * r.cj) << LawName(r.law);
+      EXPECT_NEAR(c->cj, r.cj, 5e-3) << LawName(r.law);
+    }
+  }
+  for (MotionLaw law : {MotionLaw::kDwell, MotionLaw::kPolynomial, MotionLaw::kBSpline})
+    EXPECT_FALSE(Characteristics(law).has_value()) << LawName(law);
 }
 
 TEST(MotionLaw, PiecewiseLawsAreC2InsideTheSegment) {

@@ -30,15 +30,29 @@
 // so the face must reach from min ℓ to max ℓ. The pressure angle (between the common normal m and the
 // velocity of the follower's contact point, perpendicular to O₃A = d m + ℓ(−u(α))) is atan(d/ℓ): 0 for
 // a face through the pivot.
+//
+// Loads (kinetostatic, frictionless, constant cam speed ω; Norton, Cam Design and Manufacturing
+// Handbook ch. 8, written here for the arm): the arm's angle ξ = ξ₀ + S turns with ξ̇ = S' ω,
+// ξ̈ = S'' ω². About the pivot, the cam must supply the moment that accelerates the arm (inertia J)
+// against the return spring (rate k, moment M₀ on the base circle) and a constant moment M_e pressing
+// the arm onto the cam:
+//   M = J S'' ω² + k S + M₀ + M_e.
+// The contact force acts along the face's normal at A; its arm about the pivot is ℓ (A − O₃ = d m +
+// ℓ(−u(α)) with m ∥ the force, so only ℓ has a moment), hence F = M/ℓ; F ≤ 0 is a separation. The
+// camshaft torque from the power balance T ω = M ξ̇ is T = M S'. The arm first leaves the cam where
+// F = 0 first, at ω² = (k S + M₀ + M_e)/(−J S'') over the decelerating angles (S'' < 0). Hertz: the
+// plane face on the profile's osculating cylinder of radius ρ (Johnson, Contact Mechanics eq. 4.45).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "model/common/geometry.h"
 #include "model/common/scalar.h"
+#include "model/contact/hertz.h"
 #include "model/motion/motion_program.h"
 
 namespace camopt::disc_cam {
@@ -108,6 +122,57 @@ inline std::string CheckOscillatingFlatFaced(const OscillatingFlatFaced& c, int 
     if (!(m.v < 1.0)) return "the arm turns as fast as the cam (dξ/dθ >= 1): the face's envelope is no cam profile";
   }
   return "";
+}
+
+/// The arm's loads: moment of inertia about the pivot J [kg·m²], return spring rate k [N·m/rad] and
+/// its moment on the base circle M₀ [N·m], a constant moment M_e pressing the arm onto the cam [N·m].
+struct ArmLoads {
+  double inertia_kg_m2 = 0.0;
+  double spring_rate_N_m_per_rad = 0.0;
+  double spring_preload_N_m = 0.0;
+  double external_moment_N_m = 0.0;
+};
+
+/// The loads at one point at cam speed omega [rad/s] (derivation above).
+struct ArmLoad {
+  double moment_N_m = 0.0;        ///< M, the cam's moment on the arm about the pivot
+  double contact_force_N = 0.0;   ///< F = M/ℓ (ℓ in m)
+  double camshaft_torque_N_m = 0.0;  ///< T = M S'
+};
+inline ArmLoad OscillatingFlatFaceLoadAt(const OscillatingFlatFaced& c, const OscillatingFlatFacePoint& p,
+                                         const ArmLoads& a, double omega) {
+  const double lift = p.xi - InitialArmAngle(c);  // S [rad]
+  ArmLoad out;
+  out.moment_N_m = a.inertia_kg_m2 * p.d2xi * omega * omega + a.spring_rate_N_m_per_rad * lift +
+                   a.spring_preload_N_m + a.external_moment_N_m;
+  out.contact_force_N = out.moment_N_m / (p.contact_on_face * 1e-3);
+  out.camshaft_torque_N_m = out.moment_N_m * p.dxi;
+  return out;
+}
+
+/// The lowest cam speed [rad/s] at which the face leaves the cam (F = 0) over the points: +∞ when the
+/// arm never decelerates (or J = 0), 0 when the spring and the moments do not hold it on the base
+/// circle.
+inline double OscillatingFlatFaceJumpSpeed(const OscillatingFlatFaced& c,
+                                           const std::vector<OscillatingFlatFacePoint>& points, const ArmLoads& a) {
+  double best = std::numeric_limits<double>::infinity();
+  const double xi0 = InitialArmAngle(c);
+  for (const OscillatingFlatFacePoint& p : points) {
+    const double hold = a.spring_rate_N_m_per_rad * (p.xi - xi0) + a.spring_preload_N_m + a.external_moment_N_m;
+    if (hold <= 0.0) return 0.0;
+    const double pull = -a.inertia_kg_m2 * p.d2xi;  // the inertia's moment per ω², away from the cam
+    if (pull > 0.0) best = std::min(best, std::sqrt(hold / pull));
+  }
+  return best;
+}
+
+/// Peak Hertz pressure of the face on the profile [MPa] (line contact over face_width_mm along the
+/// camshaft axis on a cylinder of radius ρ): 0 for F ≤ 0; NaN where ρ ≤ 0 (a cusp).
+inline double OscillatingFlatFaceContactStress(const OscillatingFlatFacePoint& p, double force_N, double face_width_mm,
+                                               double composite_modulus_MPa) {
+  if (!(force_N > 0.0)) return 0.0;
+  if (!(p.radius_of_curvature > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return contact::LineContactPeakPressure(force_N, face_width_mm, p.radius_of_curvature, composite_modulus_MPa);
 }
 
 }  // namespace camopt::disc_cam

@@ -23,6 +23,10 @@ enum class MotionLaw {
   kModifiedTrapezoid,
   kPolynomial345,
   kPolynomial4567,
+  /// Constant acceleration +4 over the first half, −4 over the second (VDI 2143 "quadratische
+  /// Parabel"): the lowest peak acceleration of any rest-in-rest law, with acceleration jumps at
+  /// the ends and in the middle.
+  kQuadraticParabola,
   /// A polynomial through given boundary values (PolynomialThrough, motion_program.h); its shape
   /// is carried by the segment's coefficients, not by NormalizedLaw.
   kPolynomial,
@@ -30,6 +34,18 @@ enum class MotionLaw {
   /// by the segment's coefficients and degree, not by NormalizedLaw.
   kBSpline,
 };
+
+/// A rest-in-rest law's characteristic values (VDI 2143 Blatt 1, "Kennwerte"; Norton, Cam Design
+/// and Manufacturing Handbook, Table 3-2): the maxima of |N'|, |N''|, |N'''| over u ∈ [0, 1], in closed
+/// form where one exists. cj is +∞ where the acceleration jumps (inside the law or against a
+/// dwell at its ends).
+struct LawCharacteristics {
+  double cv = 0.0, ca = 0.0, cj = 0.0;
+};
+
+/// The characteristic values of a normalised rest-in-rest law; nothing for a dwell, a polynomial
+/// through boundary values or a B-spline (their shape is the segment's).
+std::optional<LawCharacteristics> Characteristics(MotionLaw law);
 
 /// Displacement and its first three derivatives.
 template <typename T>
@@ -126,6 +142,13 @@ Svaj<T> NormalizedLaw(MotionLaw law, const T& u) {
               u3 * (T(140.0) - T(420.0) * u + T(420.0) * u2 - T(140.0) * u3),
               u2 * (T(420.0) - T(1680.0) * u + T(2100.0) * u2 - T(840.0) * u3),
               u * (T(840.0) - T(5040.0) * u + T(8400.0) * u2 - T(4200.0) * u3)};
+    }
+    case MotionLaw::kQuadraticParabola: {
+      // s = 2u² for u <= 1/2, 1 − 2(1 − u)² after: Cv = 2, Ca = 4; the jerk is 0 between the
+      // acceleration jumps at u = 0, 1/2 and 1 (infinite there).
+      if (Value(u) <= 0.5) return {T(2.0) * u * u, T(4.0) * u, T(4.0), T(0.0)};
+      const T w = T(1.0) - u;
+      return {T(1.0) - T(2.0) * w * w, T(4.0) * w, T(-4.0), T(0.0)};
     }
   }
   return {T(0.0), T(0.0), T(0.0), T(0.0)};
