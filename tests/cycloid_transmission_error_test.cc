@@ -288,5 +288,53 @@ TEST(CycloidTransmissionError, MonteCarloTendsToTheLinearEstimateAsTheBandsShrin
   }
 }
 
+// The study: the example's ring-pin tolerances on the unloaded stage (no output mechanism), a short
+// Monte-Carlo; result.json's "transmission_error" has the LCR's keys and the cycloid's, and
+// transmission_error.csv its columns; the refusals name their paths (exit 2).
+TEST(CycloidTransmissionErrorStudy, RunsAndRefusesWhatItCannotModel) {
+  using camopt::testing::Example;
+  using camopt::testing::ExpectStudyRejected;
+  nlohmann::json study = Example("cycloid_ltca_nnm_tolerances.json");
+  study.erase("output_mechanism");
+  for (const char* k : {"output_pin_position_um", "output_hole_position_um", "output_hole_diameter_um"})
+    study["tolerances"].erase(k);
+  study["analysis"] = {{"evaluate", {"unloaded"}}};
+  study["monte_carlo"] = {{"samples", 20}, {"seed", 3}, {"angle_steps", 480}};
+  const auto dir = camopt::testing::TempDir("cycloid-te-study");
+  camopt::testing::WriteFile(dir / "study.json", study.dump());
+  const auto res = camopt::testing::RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                                              (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const nlohmann::json te =
+      nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"))["transmission_error"];
+  for (const char* k : {"linear_worst_case_arcsec", "linear_worst_case_abs_arcsec", "linear_rms_arcsec",
+                        "monte_carlo_max_arcsec", "monte_carlo_p99_arcsec", "monte_carlo_rms_arcsec",
+                        "linear_vs_exact_max_error", "backlash_arcmin", "backlash_nominal_arcmin", "jammed_samples"})
+    EXPECT_TRUE(te.contains(k)) << k;
+  EXPECT_EQ(te["monte_carlo_samples"], 20);
+  EXPECT_EQ(te["monte_carlo_seed"], 3);
+  EXPECT_EQ(te["angle_steps"], 480);
+  EXPECT_EQ(te["parameters"], 1 + 16 + 16 + 1 + 1);
+  EXPECT_EQ(te["contributions"].size(), 5u);
+  double share = 0;
+  for (const auto& [k, c] : te["contributions"].items()) share += c["variance_share"].get<double>();
+  EXPECT_NEAR(share, 1.0, 1e-12);
+  const auto csv = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out" / "transmission_error.csv"));
+  for (const char* c : {"crank_angle_deg", "nominal_lag_arcsec", "nominal_backlash_arcsec", "linear_te_sigma_arcsec",
+                        "worst_sample_te_arcsec"})
+    EXPECT_EQ(csv.count(c), 1u) << c;
+  EXPECT_EQ(csv.at("crank_angle_deg").size(), 480u);
+
+  nlohmann::json bad = study;
+  bad.erase("tolerances");
+  ExpectStudyRejected(bad, "te-mc-alone", "/monte_carlo", "without");
+  bad = study;
+  bad["tolerances"]["output_hole_diameter_um"] = 4;
+  ExpectStudyRejected(bad, "te-no-holes", "/tolerances/output_hole_diameter_um", "needs the output mechanism");
+  bad = Example("cycloid_ltca_two_discs.json");
+  bad["tolerances"] = {{"pin_diameter_um", 4}};
+  ExpectStudyRejected(bad, "te-two-discs", "/discs", "one disc");
+}
+
 }  // namespace
 }  // namespace camopt::cycloid
