@@ -270,9 +270,7 @@ TEST(CycloidTransmissionError, MonteCarloTendsToTheLinearEstimateAsTheBandsShrin
     o.samples = 60;
     const TransmissionErrorResult r = AnalyzeTransmissionError(d, &m, b, o);
     const double ratio = r.monte_carlo_rms_arcsec / r.linear_rms_arcsec;
-    std::printf("scale %g: linear rms %.4f mc rms %.4f ratio %.4f; wc %.4f mc max %.4f; lin err %.4f\n", scale,
-                r.linear_rms_arcsec, r.monte_carlo_rms_arcsec, ratio, r.linear_worst_case_arcsec,
-                r.monte_carlo_max_arcsec, r.linear_vs_exact_max_error);
+    // Measured (docs/validation.md): ratio 1.455, 0.986, 1.013; largest error 1.02, 0.54, < 0.05.
     // At the full grade (bands of 4 µm against the NNM's 1.6–8 µm of play and the holes' 5 µm)
     // pins interfere and the contact changes hands: the samples' peak-to-peak exceeds the linear
     // worst case (measured 281″ against 128″); below, the linear worst case bounds them.
@@ -286,6 +284,22 @@ TEST(CycloidTransmissionError, MonteCarloTendsToTheLinearEstimateAsTheBandsShrin
     EXPECT_LT(r.linear_vs_exact_max_error, previous_error * 1.01);
     previous_error = r.linear_vs_exact_max_error;
   }
+}
+
+// Samples jam when a pin interferes beyond the play: pin diameters ±40 µm (±20 µm on the radius,
+// against the NNM's 1.6–8 µm) jam every sample; ±0.2 µm none (the play is never used up).
+TEST(CycloidTransmissionError, InterferenceBeyondThePlayJams) {
+  const Drive d = CycloidNnm();
+  TransmissionErrorOptions o;
+  o.angle_steps = 240;
+  o.samples = 5;
+  ToleranceBands b;
+  b.pin_diameter_mm = 40e-3;
+  EXPECT_EQ(AnalyzeTransmissionError(d, nullptr, b, o).jammed_samples, 5);
+  b.pin_diameter_mm = 0.2e-3;
+  const TransmissionErrorResult r = AnalyzeTransmissionError(d, nullptr, b, o);
+  EXPECT_EQ(r.jammed_samples, 0);
+  EXPECT_GT(r.backlash_arcmin, 0.0);
 }
 
 // The study: the example's ring-pin tolerances on the unloaded stage (no output mechanism), a short
