@@ -101,6 +101,42 @@ void ParseDiscsAndOutput(const Node& root, const Input& in, Study& s) {
   s.output = o;
 }
 
+// "tolerances" and "monte_carlo" (docs/cycloid.md, "Transmission error from tolerances"), in the
+// model's units: one disc, and the output pins' and holes' bands only with the output mechanism's
+// radii (the pins and holes they move).
+void ParseTolerances(const Node& root, const Input& in, Study& s) {
+  if (!in.tolerances) {
+    if (in.monte_carlo) root["monte_carlo"].Fail("no \"monte_carlo\" without \"tolerances\"");
+    return;
+  }
+  if (s.discs > 1)
+    root["discs"].Fail("1 with \"tolerances\" (the transmission error from tolerances is modelled for one disc; "
+                       "found " + std::to_string(s.discs) + " discs)");
+  const Input::Tolerances& t = *in.tolerances;
+  const Node n = root["tolerances"];
+  if (!s.output)
+    for (const char* f : {"output_pin_position_um", "output_hole_position_um", "output_hole_diameter_um"})
+      if (n.Has(f))
+        n[f].FailWith(std::string(f) + " needs the output mechanism's pins and holes: output_mechanism with "
+                      "pin_radius_mm and hole_radius_mm");
+  Study::ToleranceSpec spec;
+  cycloid::ToleranceBands& b = spec.bands;
+  b.pin_circle_radius_mm = t.pin_circle_radius_um.value_or(0.0) * 1e-3;
+  b.pin_diameter_mm = t.pin_diameter_um.value_or(0.0) * 1e-3;
+  b.pin_pitch_rad = t.pin_pitch_arcsec.value_or(0.0) * kPi / (180.0 * 3600.0);
+  b.eccentricity_mm = t.eccentricity_um.value_or(0.0) * 1e-3;
+  b.profile_mm = t.profile_um.value_or(0.0) * 1e-3;
+  b.output_pin_position_mm = t.output_pin_position_um.value_or(0.0) * 1e-3;
+  b.output_hole_position_mm = t.output_hole_position_um.value_or(0.0) * 1e-3;
+  b.output_hole_diameter_mm = t.output_hole_diameter_um.value_or(0.0) * 1e-3;
+  if (in.monte_carlo) {
+    spec.samples = in.monte_carlo->samples.value_or(0);
+    spec.seed = std::uint64_t(in.monte_carlo->seed.value_or(1));
+    spec.angle_steps = in.monte_carlo->angle_steps.value_or(0);
+  }
+  s.tolerances = spec;
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
@@ -163,6 +199,7 @@ Study Parse(const Node& root) {
           "the torsional curve needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
     s.stiffness = st;
   }
+  ParseTolerances(root, in, s);
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
   s.life = cycloid_common::ParseLife(root, s.drive, s.disc_torque_Nmm(), true);
   if (s.life && s.discs > 1)
@@ -185,7 +222,14 @@ nlohmann::ordered_json Input::SchemaRules() {
   // a life (a duty cycle or load.input_speed_rpm) the crank bearing, the output mechanism, one disc
   // and the loaded stage, and not both forms of the speed; the compliant output mechanism and the
   // torsional curve the loaded stage.
-  return nlohmann::ordered_json::parse(R"({"allOf": [
+  // Tolerances: one disc; the output pins' and holes' bands need the output mechanism's radii.
+  return nlohmann::ordered_json::parse(R"({"dependentRequired": {"monte_carlo": ["tolerances"]}, "allOf": [
+    {"if": {"required": ["tolerances"]}, "then": {"properties": {"discs": {"maximum": 1}}}},
+    {"if": {"required": ["tolerances"],
+            "properties": {"tolerances": {"anyOf": [{"required": ["output_pin_position_um"]},
+                                                    {"required": ["output_hole_position_um"]},
+                                                    {"required": ["output_hole_diameter_um"]}]}}},
+     "then": {"required": ["output_mechanism"], "properties": {"output_mechanism": {"required": ["pin_radius_mm"]}}}},
     {"if": {"required": ["analysis"],
             "properties": {"analysis": {"required": ["evaluate"],
                                         "properties": {"evaluate": {"not": {"contains": {"enum": ["loaded"]}}}}}}},
@@ -549,6 +593,34 @@ Result Run(const Study& s, const RunContext& ctx) {
     const LoadedTca tca(s.drive, s.crowning, s.material, options);
     r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.disc_torque_Nmm(), &r.cycle.meshes);
   }
+  if (s.tolerances) {
+    // The kinematic transmission error from the tolerances (model/cycloid/transmission_error.h).
+    const Study::ToleranceSpec& t = *s.tolerances;
+    Progress progress("cycloid_ltca transmission error", ctx.quiet);
+    cycloid::TransmissionErrorOptions o;
+    o.angle_steps = t.angle_steps;
+    o.samples = t.samples;
+    o.seed = t.seed;
+    o.progress = [&](double f) { progress.Update(f, std::to_string(t.samples) + " Monte-Carlo samples"); };
+    try {
+      r.transmission_error =
+          cycloid::AnalyzeTransmissionError(s.drive, s.output ? &s.output->pins : nullptr, t.bands, o);
+    } catch (const std::domain_error& e) {
+      throw StudyError(ctx.study_file + ": /tolerances: the toleranced drive has no contact: " + e.what());
+    }
+    progress.Done();
+    const cycloid::TransmissionErrorResult& te = *r.transmission_error;
+    if (te.jammed_samples > 0)
+      r.warnings.push_back("transmission error: " + std::to_string(te.jammed_samples) + " of " +
+                           std::to_string(te.samples) + " Monte-Carlo samples jam at some crank angle (a pin "
+                           "interferes with the disc or its hole beyond the play: the rigid model turns the output "
+                           "to the first contact; a preloaded, elastic drive turns less)");
+    if (te.samples > 0 && te.linear_vs_exact_max_error > 0.1)
+      r.warnings.push_back("transmission error: the linear estimate's largest error is " +
+                           Format(100 * te.linear_vs_exact_max_error, 3) +
+                           "% of the largest Monte-Carlo peak-to-peak (the contact passes to other pins within "
+                           "the bands): use the Monte-Carlo numbers");
+  }
   return r;
 }
 
@@ -560,6 +632,33 @@ namespace {
 void AddGeometryLimits(const Study& s, nlohmann::json& j) {
   j["min_profile_radius_mm"] = Finite(cycloid::MinConvexProfileRadius(s.drive), "profile radius");
   j["pin_gap_mm"] = Finite(cycloid::PinGapMargin(s.drive), "pin gap");
+}
+
+// "transmission_error" (with "tolerances"): the shared statistics (studies/tolerance_input.h) and
+// the cycloid's own keys.
+void AddTransmissionError(const Study& s, const Result& r, nlohmann::json& out) {
+  if (!r.transmission_error) return;
+  const cycloid::TransmissionErrorResult& te = *r.transmission_error;
+  nlohmann::json j = ToleranceStatisticsJson(te, s.tolerances->seed);
+  j["model"] = "kinematic (unloaded, rigid): the first ring pin to touch the disc on the loaded flank and the first "
+               "output pin to touch its hole set the output angle; TE = output angle minus the nominal drive's at the "
+               "same crank angle";
+  j["output_mechanism"] = s.output ? "pins in holes with clearance (first contact)"
+                                   : "rigid (no pin and hole radii given: no play, no output tolerances)";
+  j["distribution"] = "each deviation uniform in its ± band (a diameter's band is half on the radius); position "
+                      "bands apply to the radial and the tangential component each; linear: exact derivatives "
+                      "(ceres::Jet) of the pair and pin in contact";
+  j["angle_steps"] = te.crank_angle_rad.size();
+  j["crank_span_deg"] = 360.0 * s.drive.teeth;
+  j["parameters"] = te.parameters;
+  j["jammed_samples"] = te.jammed_samples;
+  j["backlash_arcmin"] = te.backlash_arcmin;
+  j["backlash_p99_arcmin"] = te.backlash_p99_arcmin;
+  j["backlash_nominal_arcmin"] = te.backlash_nominal_arcmin;
+  j["peak_to_peak"] = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are peak-to-peak "
+                      "over one output revolution; backlash: output angle forward minus reverse (both flanks, rigid), "
+                      "the largest over the revolution";
+  out["transmission_error"] = j;
 }
 
 nlohmann::json UnloadedJson(const Study& s, const Result& r) {
@@ -579,6 +678,7 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
                       {"per_angle", per_angle}};
   AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
+  AddTransmissionError(s, r, j);
   return j;
 }
 
@@ -634,6 +734,33 @@ PlotOptions WriteTransmissionErrorFiles(const Study& s, const Result& r, const T
   return po;
 }
 
+// transmission_error.csv and .svg (with "tolerances"): per crank angle over one output revolution,
+// the nominal drive's lag and backlash, the linear σ and the worst Monte-Carlo sample's TE.
+void WriteToleranceFiles(const Result& r, Outputs& out) {
+  if (!r.transmission_error) return;
+  const cycloid::TransmissionErrorResult& te = *r.transmission_error;
+  std::vector<double> deg, lag, backlash;
+  for (size_t i = 0; i < te.crank_angle_rad.size(); ++i) {
+    deg.push_back(te.crank_angle_rad[i] * 180.0 / kPi);
+    lag.push_back(te.nominal_lag_rad[i] * kArcsecPerRad);
+    backlash.push_back(te.nominal_backlash_rad[i] * kArcsecPerRad);
+  }
+  Table t;
+  t.Add("crank_angle_deg", deg);
+  t.Add("nominal_lag_arcsec", lag);
+  t.Add("nominal_backlash_arcsec", backlash);
+  t.Add("linear_te_sigma_arcsec", te.linear_sigma_arcsec);
+  if (!te.worst_sample_te_arcsec.empty()) t.Add("worst_sample_te_arcsec", te.worst_sample_te_arcsec);
+  out.Add("transmission_error.csv", ToCsv(t));
+  std::vector<Series> lines = {{"linear σ", deg, te.linear_sigma_arcsec}};
+  if (!te.worst_sample_te_arcsec.empty()) lines.push_back({"worst Monte-Carlo sample", deg, te.worst_sample_te_arcsec});
+  PlotOptions po;
+  po.title = "Transmission error from the tolerances (one output revolution)";
+  po.x_label = "crank angle [deg]";
+  po.y_label = "output angle error [arcsec]";
+  out.Add("transmission_error.svg", SvgLinePlot(lines, po));
+}
+
 void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", UnloadedJson(s, r));
   std::vector<double> col_angle;
@@ -644,6 +771,7 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
   WriteTransmissionErrorFiles(s, r, table, col_angle, "Unloaded transmission error",
                               {{"unloaded", col_angle, r.unloaded_te_arcsec}}, out);
   AddToothDrawing(s, r, out);
+  WriteToleranceFiles(r, out);
 }
 
 
@@ -716,6 +844,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"per_angle", per_angle}};
   AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
+  AddTransmissionError(s, r, j);
   if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
   if (s.discs > 1) {
     j["discs"] = s.discs;
@@ -937,6 +1066,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   if (s.output && r.output_failed.empty()) WriteOutputMechanism(s, r, out);
   if (r.torsion) WriteTorsion(r, out);
   AddToothDrawing(s, r, out);
+  WriteToleranceFiles(r, out);
 }
 
 namespace {
@@ -967,6 +1097,13 @@ Fidelity Knobs(const nlohmann::json& study) {
                      "relative compatibility residual of the contact solver"});
   f.headlines = {"/max_contact_stress_MPa", "/lte_peak_to_peak_arcsec", "/lte_mean_abs_arcsec",
                  "/gear_ratio_peak_to_peak", "/max_pair_load_N"};
+  if (in.tolerances) {  // the transmission error's own crank angles (over one output revolution)
+    f.knobs.push_back({"monte_carlo_angle_steps", {"/monte_carlo/angle_steps"}, 8 * in.drive.rollers * in.drive.teeth, 2,
+                       true, 0, "crank angles of the transmission error (peak-to-peak and backlash maxima are sampled)"});
+    for (const char* h : {"/transmission_error/linear_worst_case_arcsec", "/transmission_error/monte_carlo_max_arcsec",
+                          "/transmission_error/backlash_arcmin"})
+      f.headlines.push_back(h);
+  }
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("cycloid_ltca", Knobs);
@@ -992,10 +1129,22 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                                                                     : "/analysis/crank_angles_per_mesh_period";
   const std::string path = a.grid && cells / 1600.0 >= angles / 60.0 ? "/analysis/grid" : angles_path;
   const double runs = a.estimate_error ? 2.25 : 1.0;
-  return LargestTerm({{runs * angles * rollers * cells, path,
-                       WorkNumber(runs) + " runs × " + WorkNumber(angles) + " crank angles × " + WorkNumber(rollers) +
-                           " rollers × " + WorkNumber(cells) + " grid cells"}},
-                     5e7 * factor, "contact cell solves", 24);
+  std::vector<WorkTerm> terms = {{runs * angles * rollers * cells, path,
+                                  WorkNumber(runs) + " runs × " + WorkNumber(angles) + " crank angles × " +
+                                      WorkNumber(rollers) + " rollers × " + WorkNumber(cells) + " grid cells"}};
+  if (in.tolerances) {
+    // The transmission error from tolerances: per sample (and the nominal and linear passes) and
+    // crank angle, both flanks' contact solves of the ring pins and output pins, each about one
+    // contact cell solve's time.
+    const Input::MonteCarlo mc = in.monte_carlo.value_or(Input::MonteCarlo{});
+    const double samples = mc.samples.value_or(0);
+    const double steps = mc.angle_steps ? double(*mc.angle_steps) : 8.0 * rollers * std::max(1, in.drive.teeth);
+    const double pins = in.output_mechanism ? double(in.output_mechanism->pins.value_or(0)) : 0.0;
+    terms.push_back({(samples + 3.0) * steps * 2.0 * (rollers + pins), "/monte_carlo/samples",
+                     WorkNumber(samples) + " Monte-Carlo samples × " + WorkNumber(steps) + " crank angles × 2 flanks × " +
+                         WorkNumber(rollers + pins) + " pins"});
+  }
+  return LargestTerm(terms, 5e7 * factor, "contact cell solves", 24);
 }
 const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_ltca", EstimateWork);
 }  // namespace

@@ -1,10 +1,12 @@
 // Study kind "cycloid_ltca": loaded tooth contact analysis of a cycloid stage over the crank
 // angles (model/cycloid/, docs/cycloid.md). Outputs result.json, per_angle.csv, backlash.csv,
 // lte.svg, gear_ratio.svg, contact_stress.svg, pressure_map.svg (every contacting pair at the
-// angle of the maximum stress), pressure_max.csv and a tooth drawing (tooth.svg, tooth.dxf).
+// angle of the maximum stress), pressure_max.csv and a tooth drawing (tooth.svg, tooth.dxf); with
+// "tolerances", transmission_error.csv and .svg (model/cycloid/transmission_error.h).
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -17,6 +19,7 @@
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/output_mechanism.h"
 #include "model/cycloid/stiffness.h"
+#include "model/cycloid/transmission_error.h"
 #include "studies/archive.h"
 #include "studies/cycloid_input.h"
 #include "studies/cycloid_life.h"
@@ -25,6 +28,7 @@
 #include "studies/input.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
+#include "studies/tolerance_input.h"
 
 namespace camopt::studies::cycloid_ltca {
 
@@ -158,6 +162,43 @@ struct Input {
     }
   };
 
+  /// "tolerances": ± bands of the manufacturing errors (docs/cycloid.md, Transmission error from
+  /// tolerances), each optional (absent: 0), as the LCR's (studies/lcr_tolerance_input.h).
+  struct Tolerances {
+    std::optional<double> pin_circle_radius_um, pin_diameter_um, pin_pitch_arcsec, eccentricity_um, profile_um,
+        output_pin_position_um, output_hole_position_um, output_hole_diameter_um;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pin_circle_radius_um", &pin_circle_radius_um, ToleranceBandField("± band of the pins' circle radius a"));
+      a->Visit("pin_diameter_um", &pin_diameter_um, ToleranceBandField("± band of each ring pin's diameter 2 rho"));
+      a->Visit("pin_pitch_arcsec", &pin_pitch_arcsec,
+               ToleranceArcsecBandField("± band of each ring pin's angular position on the pins' circle"));
+      a->Visit("eccentricity_um", &eccentricity_um, ToleranceBandField("± band of the crank's eccentricity e"));
+      a->Visit("profile_um", &profile_um,
+               ToleranceBandField("± band of the disc profile's normal deviation (equidistant, > 0 adds material)"));
+      a->Visit("output_pin_position_um", &output_pin_position_um,
+               ToleranceBandField("± band of each output pin's position on the flange, radial and tangential "
+                                  "(needs output_mechanism with pin_radius_mm and hole_radius_mm)"));
+      a->Visit("output_hole_position_um", &output_hole_position_um,
+               ToleranceBandField("± band of each output hole's position in the disc, radial and tangential "
+                                  "(needs the output mechanism's radii)"));
+      a->Visit("output_hole_diameter_um", &output_hole_diameter_um,
+               ToleranceBandField("± band of each output hole's diameter (needs the output mechanism's radii)"));
+    }
+  };
+  /// "monte_carlo" (with "tolerances" only): the exact model's samples over the bands.
+  struct MonteCarlo {
+    std::optional<int> samples, seed, angle_steps;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      VisitMonteCarloSamples(a, &samples, &seed);
+      a->Visit("angle_steps", &angle_steps,
+               Field().AtLeast(4).AtMost(100000, "at most 100000 angle steps")
+                   .Desc("crank angles of the transmission error over one output revolution (teeth crank turns; "
+                         "absent: 8 per mesh period, 8 rollers × teeth)"));
+    }
+  };
+
   std::string study = "cycloid_ltca", name;
   std::optional<std::string> description;
   cycloid_common::DriveInput drive;
@@ -172,6 +213,8 @@ struct Input {
   std::optional<double> disc_spacing_mm;
   std::optional<Limits> limits;
   std::optional<Stiffness> stiffness;
+  std::optional<Tolerances> tolerances;
+  std::optional<MonteCarlo> monte_carlo;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -209,6 +252,10 @@ struct Input {
     a->Visit("stiffness", &stiffness,
              Field().Desc("the torsional curve, input held (docs/cycloid.md, Stiffness, lost motion and backlash): "
                           "torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin, hysteresis.csv"));
+    a->Visit("tolerances", &tolerances,
+             Field().Desc("± tolerance bands: the kinematic transmission error and backlash, linear and Monte-Carlo "
+                          "(docs/cycloid.md, Transmission error from tolerances); one disc"));
+    a->Visit("monte_carlo", &monte_carlo, Field().Desc("the Monte-Carlo of the transmission error (with tolerances)"));
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
@@ -252,6 +299,15 @@ struct Study {
     double rated_torque_Nm = 0, crank_angle_deg = 0;
   };
   std::optional<StiffnessSpec> stiffness;
+  /// "tolerances" and "monte_carlo": the transmission error from tolerances
+  /// (model/cycloid/transmission_error.h); nullopt: none.
+  struct ToleranceSpec {
+    cycloid::ToleranceBands bands;
+    int samples = 0;          ///< "monte_carlo.samples" (0: linear only)
+    std::uint64_t seed = 1;   ///< "monte_carlo.seed"
+    int angle_steps = 0;      ///< "monte_carlo.angle_steps" over one output revolution (0: 8 per mesh period)
+  };
+  std::optional<ToleranceSpec> tolerances;
   int discs = 1;                 ///< "discs": N, phased by 360°/N about the crank, each carrying T/N
   double disc_spacing_mm = 0;    ///< "disc_spacing_mm": mid-plane to mid-plane (default the face width)
   /// The torque on each disc [N·mm]: load.torque_Nm (the output torque) over the discs (equal split
@@ -314,6 +370,7 @@ struct Result {
   /// cannot carry); empty when solved. Their result keys are then null, and `warnings` says why.
   std::string output_failed, torsion_failed;
   std::vector<double> bearing_load_at_ltca_angles_N;  ///< |B| of disc 1 at crank_angles_rad (per_angle.csv)
+  std::optional<cycloid::TransmissionErrorResult> transmission_error;  ///< with "tolerances"
 };
 
 /// @throws StudyError for bad input (exit 2).

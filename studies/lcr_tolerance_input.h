@@ -12,6 +12,7 @@
 #include "model/lcr/transmission_error.h"
 #include "studies/archive.h"
 #include "studies/input.h"
+#include "studies/tolerance_input.h"
 
 namespace camopt::studies {
 
@@ -23,16 +24,12 @@ struct LcrTolerancesInput {
       bearing_clearance_um;
   template <typename Archive>
   void Serialize(Archive* a) {
-    const auto band = [](const char* what) {
-      return Field().NonNegative().AtMost(1000.0, "a band of at most 1000 µm").Unit("µm").Desc(
-          std::string(what) + " (absent: 0)");
-    };
+    const auto band = [](const char* what) { return ToleranceBandField(what); };
     a->Visit("eccentricity_um", &eccentricity_um, band("± band of the eccentricity e"));
     a->Visit("turret_radius_um", &turret_radius_um, band("± band of each roller's turret radius r_d"));
     a->Visit("roller_diameter_um", &roller_diameter_um, band("± band of each roller's diameter d_r"));
     a->Visit("roller_pitch_arcsec", &roller_pitch_arcsec,
-             Field().NonNegative().AtMost(3600.0, "a band of at most 3600 arcsec").Unit("arcsec")
-                 .Desc("± band of each roller's angular position on the turret (absent: 0)"));
+             ToleranceArcsecBandField("± band of each roller's angular position on the turret"));
     a->Visit("profile_um", &profile_um, band("± band of the cam profile's normal deviation"));
     a->Visit("bearing_clearance_um", &bearing_clearance_um,
              band("radial clearance of the bearings, 0 … c"));
@@ -46,10 +43,7 @@ struct LcrMonteCarloInput {
   std::optional<double> lost_motion_torque_fraction;
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit("samples", &samples,
-             Field().AtLeast(0).AtMost(100000, "at most 100000 samples")
-                 .Desc("Monte-Carlo samples of the exact model (absent: 0, the linear estimate only)"));
-    a->Visit("seed", &seed, Field().AtLeast(0).Desc("seed of the samples (absent: 1)"));
+    VisitMonteCarloSamples(a, &samples, &seed);
     a->Visit("angle_steps", &angle_steps,
              Field().AtLeast(4).AtMost(3600, "at most 3600 angle steps")
                  .Desc("input angles of the transmission error over a revolution (absent: 72)"));

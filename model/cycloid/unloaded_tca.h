@@ -25,6 +25,7 @@ template <typename T>
 struct PairGeometry {
   int roller = 0;
   bool loaded_flank = false;  ///< arm above the threshold and the contact equations solved
+  bool converged = false;     ///< the contact equations solved near the unmodified contact
   T parameter;                ///< t at the contact point [rad]
   T contact_rotation;         ///< β_i [rad]: disc rotation (from kinematic) closing this pair
   T backlash;                 ///< β_i − β0 [rad], eq. (13)
@@ -48,13 +49,15 @@ struct UnloadedMesh {
 /// system of eq. 12 is singular there, its determinant is proportional to the arm).
 constexpr double kMinArmFraction = 0.02;
 
-/// Solves eq. (12) for roller i at crank angle φ [rad].
+/// Solves eq. (12) for roller i at crank angle φ [rad] with the tooth of `d` and a roller whose
+/// centre, from the disc centre in the fixed frame, is `rel` (a u(ψ_i) − e u(φ) for the nominal
+/// drive) and whose radius exceeds the generating circle's ρ' by `drho` (ρ − ρ' nominally): the
+/// form a drive with deviations needs (model/cycloid/transmission_error.h).
 template <typename T>
-PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
+PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho) {
   using std::abs;
   PairGeometry<T> g;
   g.roller = i;
-  const T drho = d.roller_radius_mm - (d.roller_radius_mm + d.delta_radius_mm);  // ρ − ρ'
   T t = NominalParameter(d, i, crank);
   T beta(0.0);
   bool converged = false;
@@ -62,7 +65,7 @@ PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
   // carries the implicit-function derivatives (the last step is taken at the solution).
   for (int it = 0; it < 30; ++it) {
     const ProfilePoint<T> p = ToothProfile(d, t);
-    const Vec2<T> c = RollerCentreInDisc(d, i, crank, beta);
+    const Vec2<T> c = Rotate(rel, T(crank / double(d.teeth) - beta));  // as RollerCentreInDisc
     const Vec2<T> f = c - p.centre - drho * p.normal;
     // dF/dβ = −J C;  dF/dt = −|X'_t| T̂ (1 + (ρ − ρ') κ)  (dN/dt = κ |X'_t| T̂).
     const Vec2<T> fb = -Perp(c);
@@ -98,9 +101,19 @@ PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
   g.profile_curvature = p.curvature;
   g.roller_curvature = T(1.0) / d.roller_radius_mm;
   const double min_arm = kMinArmFraction * Value(d.eccentricity_mm) * d.teeth;
+  g.converged = converged;
   g.loaded_flank = converged && Value(g.arm_mm) > min_arm;
   g.backlash = T(0.0);
   return g;
+}
+
+/// Solves eq. (12) for roller i of the drive at crank angle φ [rad].
+template <typename T>
+PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
+  const T psi = T(2.0 * kPi * i / d.rollers);
+  const Vec2<T> rel = d.roller_position_radius_mm * U(psi) - d.eccentricity_mm * U(crank);
+  const T drho = d.roller_radius_mm - (d.roller_radius_mm + d.delta_radius_mm);  // ρ − ρ'
+  return SolvePairAt(d, i, crank, rel, drho);
 }
 
 /// Unloaded TCA at crank angle φ [rad] (eqs. 8–14).

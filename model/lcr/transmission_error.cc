@@ -11,27 +11,12 @@
 namespace camopt::lcr {
 namespace {
 
-constexpr double kArcsecPerRad = 180.0 / kPi * 3600.0;
-
-std::uint64_t SplitMix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-/// Uniform in [0, 1) with 53 random bits.
-double Uniform01(std::uint64_t& state) { return double(SplitMix64(state) >> 11) * 0x1.0p-53; }
+using tolerance::kArcsecPerRad;
+using tolerance::Percentile;
+using tolerance::Uniform01;
 
 Vec2<double> LoadDirection(const Reducer<double>& r, const Material& material, double torque_Nmm, double theta) {
   return EccentricLoadDirection(r, material, torque_Nmm, theta);
-}
-
-double Percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t i = size_t(std::ceil(q * double(v.size()))) - 1;
-  return v[std::min(i, v.size() - 1)];
 }
 
 }  // namespace
@@ -164,81 +149,36 @@ TransmissionErrorResult AnalyzeTransmissionError(const Reducer<double>& r, const
   }
   res.lost_motion_nominal_arcmin = *std::max_element(lm_nominal.begin(), lm_nominal.end()) * kArcsecPerRad / 60;
 
-  // Linear model. Each deviation is uniform: E[t²] = band²/3 (the clearance, uniform on 0 … c,
-  // has E[c²] = c²/3 too). Worst case of the peak-to-peak: the linear TE is separable in the
-  // deviations, so max over the box of TE(θ_i) − TE(θ_j) = Σ_p |S_p(θ_i) − S_p(θ_j)| band_p.
-  const size_t nk = ToleranceKeys().size();
-  std::vector<double> var_key(nk, 0.0);
-  double var = 0;
-  for (int i = 0; i < na; ++i) {
-    double v = 0, worst_abs = 0;
-    for (size_t p = 0; p < np; ++p) {
-      const double x = s[i][p] * params[p].band;
-      v += x * x / 3.0;
-      var_key[params[p].key] += x * x / 3.0 / na;
-      worst_abs += std::abs(x);
-    }
-    var += v / na;
-    res.linear_sigma_arcsec.push_back(std::sqrt(v) * kArcsecPerRad);
-    res.linear_worst_case_abs_arcsec = std::max(res.linear_worst_case_abs_arcsec, worst_abs * kArcsecPerRad);
-  }
-  res.linear_rms_arcsec = std::sqrt(var) * kArcsecPerRad;
-  int bi = 0, bj = 0;
-  double best = -1;
-  for (int i = 0; i < na; ++i)
-    for (int j = i + 1; j < na; ++j) {
-      double w = 0;
-      for (size_t p = 0; p < np; ++p) w += std::abs(s[i][p] - s[j][p]) * params[p].band;
-      if (w > best) best = w, bi = i, bj = j;
-    }
-  res.linear_worst_case_arcsec = std::max(best, 0.0) * kArcsecPerRad;
-  std::vector<double> wc_key(nk, 0.0);
-  for (size_t p = 0; p < np; ++p) wc_key[params[p].key] += std::abs(s[bi][p] - s[bj][p]) * params[p].band;
-  for (size_t k = 0; k < nk; ++k) {
-    bool present = false;
-    for (const auto& p : params) present = present || p.key == int(k);
-    if (!present) continue;
-    res.contributions.push_back({ToleranceKeys()[k], wc_key[k] * kArcsecPerRad, std::sqrt(var_key[k]) * kArcsecPerRad,
-                                 var > 0 ? var_key[k] / var : 0.0});
-  }
+  // Linear model (model/common/tolerance_stats.h): uniform deviations, E[t²] = band²/3 (the
+  // clearance, uniform on 0 … c, too); the worst case of the separable linear peak-to-peak.
+  std::vector<double> band;
+  std::vector<int> key;
+  for (const ToleranceParameter& p : params) band.push_back(p.band), key.push_back(p.key);
+  tolerance::LinearStatistics(s, band, key, ToleranceKeys(), res);
 
   // Monte-Carlo with the exact model.
-  res.samples = o.samples;
-  std::vector<double> p2p, lm;
-  double sum_sq = 0, worst_err = 0;
+  tolerance::MonteCarloStatistics mc;
+  std::vector<double> lm;
   std::uint64_t state = o.seed;
   std::vector<double> values;
   for (int m = 0; m < o.samples; ++m) {
     const Deviations<double> dev = SampleDeviations(r, params, state, &values);
-    std::vector<double> te(na);
+    std::vector<double> te(na), lin(na);
     double lm_max = -kInf;
     for (int i = 0; i < na; ++i) {
       const double th = res.theta_rad[i];
       te[i] = CompliantAtAngle<double>(r, material, th, torque, &dev, dir[i]).output_rotation - res.nominal_rotation_rad[i];
-      sum_sq += te[i] * te[i];
-      double lin = 0;
-      for (size_t p = 0; p < np; ++p) lin += s[i][p] * values[p];
-      worst_err = std::max(worst_err, std::abs(te[i] - lin));
+      for (size_t p = 0; p < np; ++p) lin[i] += s[i][p] * values[p];
       if (torque_lm != 0.0)
         lm_max = std::max(lm_max, sense * (CompliantAtAngle<double>(r, material, th, torque_lm, &dev, dir[i]).output_rotation -
                                            CompliantAtAngle<double>(r, material, th, -torque_lm, &dev, dir[i]).output_rotation));
     }
-    const double pp = *std::max_element(te.begin(), te.end()) - *std::min_element(te.begin(), te.end());
-    if (p2p.empty() || pp > *std::max_element(p2p.begin(), p2p.end())) {
-      res.worst_sample_te_arcsec.clear();
-      for (double x : te) res.worst_sample_te_arcsec.push_back(x * kArcsecPerRad);
-    }
-    for (double x : te) res.monte_carlo_max_abs_arcsec = std::max(res.monte_carlo_max_abs_arcsec, std::abs(x) * kArcsecPerRad);
-    p2p.push_back(pp);
+    mc.Add(te, lin);
     lm.push_back(lm_max);
     if (o.progress) o.progress(double(m + 1) / o.samples);
   }
+  mc.Finish(res);
   if (o.samples > 0) {
-    res.monte_carlo_max_arcsec = *std::max_element(p2p.begin(), p2p.end()) * kArcsecPerRad;
-    res.monte_carlo_p99_arcsec = Percentile(p2p, 0.99) * kArcsecPerRad;
-    res.monte_carlo_rms_arcsec = std::sqrt(sum_sq / (double(o.samples) * na)) * kArcsecPerRad;
-    const double pp_max = *std::max_element(p2p.begin(), p2p.end());
-    res.linear_vs_exact_max_error = pp_max > 0 ? worst_err / pp_max : 0.0;
     if (torque_lm != 0.0) {
       res.lost_motion_arcmin = *std::max_element(lm.begin(), lm.end()) * kArcsecPerRad / 60;
       res.lost_motion_p99_arcmin = Percentile(lm, 0.99) * kArcsecPerRad / 60;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "model/common/tolerance_stats.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/tolerance.h"
@@ -140,31 +141,16 @@ struct TransmissionErrorOptions {
   std::function<void(double)> progress;  ///< fraction done of the Monte-Carlo run
 };
 
-struct ToleranceContribution {
-  std::string key;
-  double worst_case_arcsec = 0;  ///< its part of the linear worst-case peak-to-peak
-  double rms_arcsec = 0;         ///< its part of the linear RMS (root of its variance)
-  double variance_share = 0;     ///< fraction of the linear variance
-};
+using ToleranceContribution = tolerance::Contribution;
 
-struct TransmissionErrorResult {
+/// The shared statistics (model/common/tolerance_stats.h) over one input revolution, and the LCR's
+/// own: the angles, the nominal wind-up and the lost motion.
+struct TransmissionErrorResult : tolerance::Statistics {
   std::vector<double> theta_rad;
   std::vector<double> nominal_rotation_rad;   ///< δθ_o of the nominal reducer (elastic windup)
-  std::vector<double> linear_sigma_arcsec;    ///< per angle, RMS of the linear TE
-  double linear_worst_case_arcsec = 0;  ///< peak-to-peak over the revolution, worst over the box
-  double linear_worst_case_abs_arcsec = 0;  ///< max |TE|, worst over the box
-  double linear_rms_arcsec = 0;             ///< RMS over angles and the tolerance distribution
-  int samples = 0;
-  double monte_carlo_max_arcsec = 0, monte_carlo_p99_arcsec = 0;  ///< sample peak-to-peak
-  double monte_carlo_rms_arcsec = 0;
-  double monte_carlo_max_abs_arcsec = 0;
-  /// Largest |exact − linear| TE over samples and angles, over the largest sample peak-to-peak.
-  double linear_vs_exact_max_error = 0;
   double lost_motion_nominal_arcmin = 0;  ///< max over θ, nominal reducer
   double lost_motion_arcmin = 0;          ///< max over θ, worst Monte-Carlo sample (nominal if none)
   double lost_motion_p99_arcmin = 0;
-  std::vector<ToleranceContribution> contributions;
-  std::vector<double> worst_sample_te_arcsec;  ///< TE(θ) of the sample with the largest peak-to-peak
 };
 
 /// Linear (Jet) and Monte-Carlo transmission error over one input revolution.
