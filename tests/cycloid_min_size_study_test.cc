@@ -250,6 +250,24 @@ TEST(CycloidMinSizeStudy, FieldsAndCombinationsTheModelDoesNotHaveAreRefused) {
   s = SmallStudy();
   s["optimizer"]["backend"] = "cobyla";
   ExpectRefused(s, "/optimizer/backend", "one of \"ipopt\", \"slsqp\"");
+  // The datasheet limits need the compliant output mechanism; its holes must take the pins' orbit
+  // at the start's eccentricity and its span the largest face width.
+  const json datasheet = Example("cycloid_min_size_datasheet.json");
+  s = datasheet;
+  s.erase("output_mechanism");
+  ExpectRefused(s, "/limits/min_torsional_stiffness_Nm_per_arcmin", "output_mechanism with pins");
+  s = datasheet;
+  s["output_mechanism"].erase("pin_radius_mm");
+  s["output_mechanism"].erase("hole_radius_mm");
+  s["output_mechanism"].erase("pin_support");
+  s["output_mechanism"].erase("pin_span_mm");
+  ExpectRefused(s, "/limits/min_torsional_stiffness_Nm_per_arcmin", "clearance and compliance");
+  s = datasheet;
+  s["output_mechanism"]["hole_radius_mm"] = 10.9;  // < 7 + 4 (the start's e)
+  ExpectRefused(s, "/output_mechanism/hole_radius_mm", "a hole radius >= pin_radius_mm + e");
+  s = datasheet;
+  s["output_mechanism"]["pin_span_mm"] = 20;  // < the largest face width 25
+  ExpectRefused(s, "/output_mechanism/pin_span_mm", "the largest face width = 25 mm");
 }
 
 // Through the command line: exit 2, one line naming the file and the path, nothing written.
