@@ -1189,7 +1189,9 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const std::array<int, 2> grid = in.analysis.grid.value_or(std::array<int, 2>{40, 40});
   const double cells = double(grid[0]) * grid[1];
   const double angles = in.analysis.crank_angles_per_mesh_period;
-  const double torques = t.overload_torque_Nm ? 2 : 1;
+  // The compliant output mechanism adds the torsional curve: two one-angle cycles (T_r/2, 0.03 T_r).
+  const bool torsion = in.output_mechanism && in.output_mechanism->pin_radius_mm;
+  const double torques = (t.overload_torque_Nm ? 2 : 1) + (torsion ? 2.0 / angles : 0.0);
   // The variables that vary (a range or {"range": ...}); a fixed number costs nothing.
   double variables = 0;
   for (const auto& v : study.at("variables")) variables += v.is_array() || v.is_object() ? 1 : 0;
@@ -1200,7 +1202,8 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const double checks = (1 + rounds) * (1 + 2 * 4) * torques * cycle + 2 * 4 * cycle;
   return LargestTerm({{solves, "/optimizer/max_evaluations",
                        WorkNumber(budget) + " iterations × " + WorkNumber(starts + rounds) + " solves × (2 + 0.65 × " +
-                           WorkNumber(variables) + " variables) × " + WorkNumber(torques) + " torques × " +
+                           WorkNumber(variables) + " variables) × " + WorkNumber(torques) +
+                           (torsion ? " torques (with the torsional curve's two one-angle cycles) × " : " torques × ") +
                            WorkNumber(angles) + " crank angles × " + WorkNumber(rollers) + " rollers × " +
                            WorkNumber(cells) + " grid cells"},
                       {checks, "/analysis/grid",
