@@ -85,4 +85,14 @@ inline double TightenedUpperLimit(double fast_limit, double study_limit, double 
   return std::min(next, fast_limit * (1 - margin));
 }
 
+/// The same for a lower limit of a positive value (a stiffness): scaled so that, with the same
+/// ratio, the accurate value lands on the study's limit plus `margin` of it; never loosened.
+inline double TightenedLowerLimit(double fast_limit, double study_limit, double fast_value, double accurate_value,
+                                  double margin = 1e-3) {
+  if (!(accurate_value > 0) || !(fast_value > 0)) return fast_limit * (1 + 0.05);
+  const double ratio = accurate_value / fast_value;
+  const double next = study_limit * (1 + margin) / ratio;
+  return std::max(next, fast_limit * (1 + margin));
+}
+
 }  // namespace camopt::objectives

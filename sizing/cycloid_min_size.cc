@@ -179,6 +179,83 @@ std::vector<CycloidBearingLife> LivesOf(const CycloidSizingLife& life, const cyc
   return out;
 }
 
+// The samples of the output rows: the cycle's angles over the output pins' load period.
+size_t OutputSamples(const CycloidSizingSpec& s) {
+  if (!s.output) return 0;
+  const cycloid::OutputMechanism m{s.output->pins.pins, s.output->pins.pin_circle_radius_mm};
+  return size_t(s.angles_per_period) * size_t(cycloid::OutputPinPeriodInMeshPeriods(m, s.drive.teeth));
+}
+
+// The hole of the sized eccentricity: r_h = r_c + e + c.
+template <typename T>
+T OutputHoleRadius(const CycloidSizingOutput& o, const cycloid::DriveTpl<T>& d) {
+  return T(o.pins.contact_radius_mm() + o.clearance_mm) + d.eccentricity_mm;
+}
+
+// The holes inside the disc's root circle: a' − e − ρ' − (R_w + r_h) (kSizingOutputHoles).
+template <typename T>
+T OutputHolesMargin(const CycloidSizingOutput& o, const cycloid::DriveTpl<T>& d) {
+  return d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm - d.roller_radius_mm -
+         d.delta_radius_mm - T(o.pins.pin_circle_radius_mm) - OutputHoleRadius(o, d);
+}
+
+// The output rows of a design (spec.output; CycloidSizingOutput) over T = double or a Jet along one
+// variable: the torsional stiffness [N·m/arcmin] and lost motion [arcmin] at crank 0 from the ring
+// lags β(T_r), β(T_r/2), β(0.03 T_r) and the output pins' rotations; per sample (shift r of whole
+// mesh periods, angle k of the cycle) the pins' bending stress (the most loaded pin, one disc) and
+// the crank bearing's |B| from the ring-pin resultant ring[k] (crank frame); the holes' margin.
+template <typename T>
+struct OutputRowValues {
+  T stiffness, lost_motion;
+  std::vector<T> stress, bearing;
+};
+
+template <typename T>
+OutputRowValues<T> OutputRowsOf(const CycloidSizingOutput& o, const cycloid::DriveTpl<T>& d, double e_star_MPa,
+                                double torque_Nmm, const std::vector<double>& angles,
+                                const std::vector<Vec2<T>>& ring, const std::array<T, 3>& beta) {
+  using std::sqrt;
+  cycloid::OutputPinsTpl<T> m;
+  m.pins = o.pins.pins;
+  m.pin_circle_radius_mm = T(o.pins.pin_circle_radius_mm);
+  m.pin_radius_mm = T(o.pins.pin_radius_mm);
+  m.hole_radius_mm = OutputHoleRadius(o, d);
+  m.roller_radius_mm = T(o.pins.roller_radius_mm);
+  m.face_width_mm = d.face_width_mm;
+  m.e_star_MPa = T(e_star_MPa);
+  OutputRowValues<T> v;
+  const double arcmin = 180.0 / kPi * 60.0;
+  // Crank 0: pin 0 on the eccentricity (its crank-frame angle −φ n1/n2 = 0), the curve odd.
+  std::array<T, 3> theta;
+  const double fractions[3] = {1.0, 0.5, 0.03};
+  for (int i = 0; i < 3; ++i)
+    theta[size_t(i)] = beta[size_t(i)] +
+                       cycloid::SolveOutputPins(m, d.eccentricity_mm, T(fractions[i] * torque_Nmm), T(0.0)).rotation_rad;
+  v.stiffness = T(0.5e-3 * torque_Nmm / arcmin) / (theta[0] - theta[1]);
+  v.lost_motion = T(2.0 * arcmin) * theta[2];
+  const int period =
+      cycloid::OutputPinPeriodInMeshPeriods(cycloid::OutputMechanism{o.pins.pins, o.pins.pin_circle_radius_mm}, d.teeth);
+  const double tau = 2.0 * kPi / d.rollers, n1_over_n2 = double(d.rollers) / double(d.teeth);
+  const T span = o.span_mm > 0 ? T(o.span_mm) : d.face_width_mm;
+  // One disc at the mid-plane: cantilever M = Q (L − b/2) at the flange, both ends Q L/4 under the
+  // disc (Roark, Table 8.1; PinBendingMoment with one load).
+  const T arm = o.support == cycloid::PinSupport::kCantilever ? span - T(0.5) * d.face_width_mm : T(0.25) * span;
+  for (int r = 0; r < period; ++r)
+    for (size_t k = 0; k < angles.size(); ++k) {
+      const double phi = angles[k] + r * tau;
+      const cycloid::OutputPinLoads<T> p =
+          cycloid::SolveOutputPins(m, d.eccentricity_mm, T(torque_Nmm), T(-phi * n1_over_n2));
+      size_t top = 0;
+      for (size_t j = 1; j < p.force_N.size(); ++j)
+        if (Value(p.force_N[j]) > Value(p.force_N[top])) top = j;
+      v.stress.push_back(cycloid::PinBendingStress(T(p.force_N[top] * arm), m.pin_radius_mm));
+      const Vec2<T> b = cycloid::CrankBearingForce(ring[k], p);
+      const T b2 = b.squaredNorm();
+      v.bearing.push_back(Value(b2) > 0.0 ? sqrt(b2) : T(0.0));
+    }
+  return v;
+}
+
 }  // namespace
 
 std::vector<std::string> CycloidSizingVariableNames() {
@@ -253,8 +330,13 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
       e.d_undercut.push_back(cj.undercut.v[0]);
       e.d_pin_gap.push_back(cj.pin_gap.v[0]);
       e.d_web.push_back(cj.web.v[0]);
+      if (spec_.output) e.d_output_holes.push_back(OutputHolesMargin(*spec_.output, dj).v[0]);
     }
   }
+  if (spec_.output) e.output_holes_margin_mm = OutputHolesMargin(*spec_.output, d);
+  const size_t ns = OutputSamples(spec_);
+  e.output_pin_stress_MPa.assign(ns, NAN);
+  e.crank_bearing_load_N.assign(ns, NAN);
   // The loaded cycles: only for a drive inside the model's domain (no loop, no pin overlap, no
   // undercut: cycloid::CheckDrive); elsewhere their rows are NaN, which the solvers answer by a
   // shorter step.
@@ -273,6 +355,12 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
     e.d_end_distance.assign((over ? na : 0) * nv, NAN);
     e.d_unloaded_te.assign(na * nv, NAN);
     e.d_lte.assign(nv, NAN);
+    if (spec_.output) {
+      e.d_stiffness.assign(nv, NAN);
+      e.d_lost_motion.assign(nv, NAN);
+      e.d_output_pin_stress.assign(ns * nv, NAN);
+      e.d_crank_bearing_load.assign(ns * nv, NAN);
+    }
   };
   if (!cycloid::CheckDrive(d).empty() || !cycloid::CheckCrowning(c, d.face_width_mm).empty()) {
     e.converged = false;
@@ -299,6 +387,12 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         if (l.output_torque_Nmm > 0 && l.output_torque_Nmm != spec_.design_torque_Nmm)
           last_lines_.back() = cycloid::RunCycle(des, l.output_torque_Nmm, angles_);
       }
+    last_half_.reset();
+    last_small_.reset();
+    if (spec_.output) {  // the torsional curve at crank 0 (its T_r point is the design cycle's angle 0)
+      last_half_ = cycloid::RunCycle(des, 0.5 * spec_.design_torque_Nmm, {0.0});
+      last_small_ = cycloid::RunCycle(des, 0.03 * spec_.design_torque_Nmm, {0.0});
+    }
     ++evaluations_;
     value_seconds_ += Seconds(t0);
   }
@@ -377,6 +471,25 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         pin_load, pin_weight);
     e.life_margin = LifeMarginsOf<double>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
   }
+  // The output rows (values): the design cycle's ring-pin resultants, the torsional curve's lags.
+  std::vector<Vec2<double>> ring_design;
+  if (spec_.output) {
+    for (const cycloid::MeshLoad& m : dc.meshes) ring_design.push_back(cycloid::RingPinResultantCrankFrame(d, m));
+    e.converged = e.converged && last_half_->converged && last_small_->converged;
+    try {
+      const OutputRowValues<double> v = OutputRowsOf<double>(
+          *spec_.output, d, spec_.material.composite_modulus_MPa(), spec_.design_torque_Nmm, angles_, ring_design,
+          {dc.meshes[0].rotation_rad, last_half_->meshes[0].rotation_rad, last_small_->meshes[0].rotation_rad});
+      e.stiffness_Nm_per_arcmin = v.stiffness;
+      e.lost_motion_arcmin = v.lost_motion;
+      e.output_pin_stress_MPa = v.stress;
+      e.crank_bearing_load_N = v.bearing;
+      e.max_output_pin_stress_MPa = *std::max_element(v.stress.begin(), v.stress.end());
+      e.max_crank_bearing_load_N = *std::max_element(v.bearing.begin(), v.bearing.end());
+    } catch (const std::invalid_argument&) {  // a torque the pins cannot carry: NaN rows
+      e.converged = false;
+    }
+  }
   if (!with_gradient) return e;
   const auto t0 = Clock::now();
   ++gradient_evaluations_;
@@ -392,8 +505,50 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   e.d_lte.assign(nv, 0.0);
   e.d_end_distance.assign((over ? na : 0) * nv, 0.0);
   e.d_life_margin.assign(nl * nv, 0.0);
+  if (spec_.output) {
+    e.d_stiffness.assign(nv, NAN);
+    e.d_lost_motion.assign(nv, NAN);
+    e.d_output_pin_stress.assign(e.output_pin_stress_MPa.size() * nv, NAN);
+    e.d_crank_bearing_load.assign(e.crank_bearing_load_N.size() * nv, NAN);
+  }
   if (nv > 0) {
     const std::vector<cycloid::CycleDerivative> dd = cycloid::DifferentiateCycle(des, dc, params, 0.0);
+    if (spec_.output && std::isfinite(e.stiffness_Nm_per_arcmin)) {
+      // The lags' derivatives (implicit, LoadedTca::Differentiate) and the resultants' through the
+      // pair loads and the unloaded TCA's normals with a Jet, as the life rows.
+      const std::vector<cycloid::CycleDerivative> dh = cycloid::DifferentiateCycle(des, *last_half_, params, 0.0);
+      const std::vector<cycloid::CycleDerivative> ds = cycloid::DifferentiateCycle(des, *last_small_, params, 0.0);
+      auto jet = [](double value, double slope) {
+        J1 t(value);
+        t.v[0] = slope;
+        return t;
+      };
+      for (size_t j = 0; j < nv; ++j) {
+        const cycloid::DriveTpl<J1> dj = JetDrive(d, spec_.variables[j].name);
+        std::vector<Vec2<J1>> ring;
+        for (size_t k = 0; k < na; ++k) {
+          const cycloid::UnloadedMesh<J1> u = cycloid::UnloadedTca<J1>(dj, J1(angles_[k]));
+          std::vector<std::pair<int, J1>> loads;
+          for (size_t p = 0; p < dc.meshes[k].pairs.size(); ++p)
+            loads.push_back({dc.meshes[k].pairs[p].roller,
+                             jet(dc.meshes[k].pairs[p].load_N, dd[j].pair_load_N[k][p] * factor[j])});
+          ring.push_back(cycloid::RingPinResultantCrankFrame(
+              dj, u, loads, J1(angles_[k]), jet(dc.meshes[k].rotation_rad, dd[j].rotation_rad[k] * factor[j])));
+        }
+        const OutputRowValues<J1> v = OutputRowsOf<J1>(
+            *spec_.output, dj, spec_.material.composite_modulus_MPa(), spec_.design_torque_Nmm, angles_, ring,
+            {jet(dc.meshes[0].rotation_rad, dd[j].rotation_rad[0] * factor[j]),
+             jet(last_half_->meshes[0].rotation_rad, dh[j].rotation_rad[0] * factor[j]),
+             jet(last_small_->meshes[0].rotation_rad, ds[j].rotation_rad[0] * factor[j])});
+        e.d_stiffness[j] = v.stiffness.v[0];
+        e.d_lost_motion[j] = v.lost_motion.v[0];
+        for (size_t r = 0; r < v.stress.size(); ++r) {
+          e.d_output_pin_stress[r * nv + j] = v.stress[r].v[0];
+          e.d_crank_bearing_load[r * nv + j] = v.bearing[r].v[0];
+        }
+        e.converged = e.converged && dh[j].converged && ds[j].converged;
+      }
+    }
     if (life_rows) {
       // dF_i/ds and the lag's derivative of every duty line's cycle (the design cycle's own: dd).
       std::vector<std::vector<cycloid::CycleDerivative>> line_dd(line_meshes.size());
@@ -480,8 +635,16 @@ struct Layout {
   size_t web_row() const { return pin_gap() + 1; }
   size_t fit() const { return web_row() + (web ? 1 : 0); }
   size_t life() const { return fit() + 2; }
-  size_t size() const { return life() + lives; }
+  size_t stiffness() const { return life() + lives; }
+  size_t lost_motion() const { return stiffness() + (stiffness_row ? 1 : 0); }
+  size_t pin_stress() const { return lost_motion() + (lost_motion_row ? 1 : 0); }
+  size_t bearing() const { return pin_stress() + (pin_stress_rows ? samples : 0); }
+  size_t holes() const { return bearing() + (bearing_rows ? samples : 0); }
+  size_t size() const { return holes() + (output ? 1 : 0); }
   size_t lives = 0;  // life rows (limits.life_h): crank bearing, pins
+  // The output rows (spec.output, each with its limit), samples over the pins' load period.
+  bool output = false, stiffness_row = false, lost_motion_row = false, pin_stress_rows = false, bearing_rows = false;
+  size_t samples = 0;
 };
 
 Layout LayoutOf(const CycloidSizingModel& m) {
@@ -491,6 +654,13 @@ Layout LayoutOf(const CycloidSizingModel& m) {
   l.over = m.spec().overload_torque_Nmm > 0;
   l.web = m.spec().limits.bore_radius_mm > 0;
   if (m.spec().life && m.spec().limits.life_h > 0) l.lives = m.spec().life->pins_rated ? 2 : 1;
+  const CycloidSizingLimits& lim = m.spec().limits;
+  l.output = bool(m.spec().output);
+  l.stiffness_row = l.output && lim.min_torsional_stiffness_Nm_per_arcmin > 0;
+  l.lost_motion_row = l.output && std::isfinite(lim.max_lost_motion_arcmin);
+  l.pin_stress_rows = l.output && std::isfinite(lim.output_pin_stress_MPa);
+  l.bearing_rows = l.output && std::isfinite(lim.eccentric_bearing_load_N);
+  l.samples = OutputSamples(m.spec());
   return l;
 }
 
@@ -524,6 +694,13 @@ class SizingEvaluator final : public Evaluator {
       if (l.web) jac[l.web_row() * nv + j] = e.d_web[j];
       for (size_t r = 0; r < 2; ++r) jac[(l.fit() + r) * nv + j] = e.d_crowning_fit[r * nv + j];
       for (size_t r = 0; r < l.lives; ++r) jac[(l.life() + r) * nv + j] = e.d_life_margin[r * nv + j];
+      if (l.stiffness_row) jac[l.stiffness() * nv + j] = e.d_stiffness[j];
+      if (l.lost_motion_row) jac[l.lost_motion() * nv + j] = e.d_lost_motion[j];
+      for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r)
+        jac[(l.pin_stress() + r) * nv + j] = e.d_output_pin_stress[r * nv + j];
+      for (size_t r = 0; l.bearing_rows && r < l.samples; ++r)
+        jac[(l.bearing() + r) * nv + j] = e.d_crank_bearing_load[r * nv + j];
+      if (l.output) jac[l.holes() * nv + j] = e.d_output_holes[j];
     }
     if (outside_ == OutsideDomain::kPenalty)
       for (double& v : jac)
@@ -545,6 +722,11 @@ class SizingEvaluator final : public Evaluator {
     if (l.web) b.push_back({kSizingWeb, int(l.web_row()), 1});
     b.push_back({kSizingCrowningFit, int(l.fit()), 2});
     if (l.lives > 0) b.push_back({kSizingLife, int(l.life()), int(l.lives)});
+    if (l.stiffness_row) b.push_back({kSizingStiffness, int(l.stiffness()), 1});
+    if (l.lost_motion_row) b.push_back({kSizingLostMotion, int(l.lost_motion()), 1});
+    if (l.pin_stress_rows) b.push_back({kSizingOutputPinStress, int(l.pin_stress()), int(l.samples)});
+    if (l.bearing_rows) b.push_back({kSizingCrankBearing, int(l.bearing()), int(l.samples)});
+    if (l.output) b.push_back({kSizingOutputHoles, int(l.holes()), 1});
     return b;
   }
   void Fill(const CycloidSizingEvaluation& e, std::span<double> y) const {
@@ -561,7 +743,16 @@ class SizingEvaluator final : public Evaluator {
     if (l.web) y[l.web_row()] = e.web_margin_mm;
     for (size_t r = 0; r < 2; ++r) y[l.fit() + r] = e.crowning_fit_mm[r];
     for (size_t r = 0; r < l.lives; ++r) y[l.life() + r] = e.life_margin[r];
+    if (l.stiffness_row) y[l.stiffness()] = e.stiffness_Nm_per_arcmin;
+    if (l.lost_motion_row) y[l.lost_motion()] = e.lost_motion_arcmin;
+    for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r) y[l.pin_stress() + r] = e.output_pin_stress_MPa[r];
+    for (size_t r = 0; l.bearing_rows && r < l.samples; ++r) y[l.bearing() + r] = e.crank_bearing_load_N[r];
+    if (l.output) y[l.holes()] = e.output_holes_margin_mm;
     if (outside_ == OutsideDomain::kPenalty && !std::isfinite(e.stress_MPa)) {
+      if (l.stiffness_row) y[l.stiffness()] = -1e6;
+      if (l.lost_motion_row) y[l.lost_motion()] = 1e6;
+      for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r) y[l.pin_stress() + r] = 1e9;
+      for (size_t r = 0; l.bearing_rows && r < l.samples; ++r) y[l.bearing() + r] = 1e9;
       for (size_t r = 0; r < l.lives; ++r) y[l.life() + r] = -100.0;  // e^-100 of the required life
       for (size_t s = 0; s < l.na * l.n1; ++s) y[l.peaks() + s] = 1e6;
       if (l.over)
@@ -613,6 +804,19 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
   p.constraints.push_back({kSizingCrowningFit, 0.0, kInf, 1.0});
   if (s.life && s.limits.life_h > 0)  // ln(L10h / life_h) >= ln(fast life / life_h): O(1) over decades
     p.constraints.push_back({kSizingLife, std::log(std::max(fast.life_h, s.limits.life_h) / s.limits.life_h), kInf, 1.0});
+  if (s.output) {
+    const CycloidSizingLimits& l = s.limits;
+    if (l.min_torsional_stiffness_Nm_per_arcmin > 0)
+      p.constraints.push_back({kSizingStiffness, fast.min_torsional_stiffness_Nm_per_arcmin, kInf,
+                               l.min_torsional_stiffness_Nm_per_arcmin});
+    if (std::isfinite(l.max_lost_motion_arcmin))
+      p.constraints.push_back({kSizingLostMotion, -kInf, fast.max_lost_motion_arcmin, l.max_lost_motion_arcmin});
+    if (std::isfinite(l.output_pin_stress_MPa))
+      p.constraints.push_back({kSizingOutputPinStress, -kInf, fast.output_pin_stress_MPa, l.output_pin_stress_MPa});
+    if (std::isfinite(l.eccentric_bearing_load_N))
+      p.constraints.push_back({kSizingCrankBearing, -kInf, fast.eccentric_bearing_load_N, l.eccentric_bearing_load_N});
+    p.constraints.push_back({kSizingOutputHoles, 0.0, kInf, 1.0});
+  }
   return p;
 }
 
@@ -644,6 +848,12 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
                                         kUnloadedTeResolutionArcsec});
   out.lte_error_arcsec = std::abs(a.lte_peak_to_peak_arcsec - f.lte_peak_to_peak_arcsec);
   if (spec.life) out.life_error_h = std::abs(a.shortest_life_h - f.shortest_life_h);
+  if (spec.output) {
+    out.stiffness_error = std::abs(a.stiffness_Nm_per_arcmin - f.stiffness_Nm_per_arcmin);
+    out.lost_motion_error_arcmin = std::abs(a.lost_motion_arcmin - f.lost_motion_arcmin);
+    out.output_pin_stress_error_MPa = std::abs(a.max_output_pin_stress_MPa - f.max_output_pin_stress_MPa);
+    out.crank_bearing_error_N = std::abs(a.max_crank_bearing_load_N - f.max_crank_bearing_load_N);
+  }
   std::ostringstream m;
   m << "3D half-space LTCA on " << fine.options.profile_cells << " x " << fine.options.axial_cells
     << " cells per pair at " << fine.angles_per_period << " crank angles per mesh period; each value's error "
@@ -680,6 +890,23 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
   if (spec.life && l.life_h > 0)
     add("life_h", "shortest L10h over the duty cycle", l.life_h, a.shortest_life_h, out.life_error_h, f.shortest_life_h,
         false);
+  if (spec.output) {
+    if (l.min_torsional_stiffness_Nm_per_arcmin > 0)
+      add("min_torsional_stiffness_Nm_per_arcmin", "crank 0, 50-100% of the design torque",
+          l.min_torsional_stiffness_Nm_per_arcmin, a.stiffness_Nm_per_arcmin, out.stiffness_error,
+          f.stiffness_Nm_per_arcmin, false);
+    if (std::isfinite(l.max_lost_motion_arcmin))
+      add("max_lost_motion_arcmin", "crank 0, +-3% of the design torque", l.max_lost_motion_arcmin,
+          a.lost_motion_arcmin, out.lost_motion_error_arcmin, f.lost_motion_arcmin, true);
+    if (std::isfinite(l.output_pin_stress_MPa))
+      add("output_pin_stress_MPa", "design torque, the output pins' load period", l.output_pin_stress_MPa,
+          a.max_output_pin_stress_MPa, out.output_pin_stress_error_MPa, f.max_output_pin_stress_MPa, true);
+    if (std::isfinite(l.eccentric_bearing_load_N))
+      add("eccentric_bearing_load_N", "design torque, the output pins' load period", l.eccentric_bearing_load_N,
+          a.max_crank_bearing_load_N, out.crank_bearing_error_N, f.max_crank_bearing_load_N, true);
+    add("output_holes_fit_mm", "holes inside the root circle", 0.0, a.output_holes_margin_mm, 0.0,
+        f.output_holes_margin_mm, false);
+  }
   // Closed forms: exact, no discretisation.
   add("min_curtate_margin", "generating curve", l.min_curtate_margin, a.curtate_margin, 0.0, f.curtate_margin, false);
   add("min_profile_radius_mm", "tooth profile", l.min_profile_radius_mm, a.min_profile_radius_mm, 0.0,
@@ -732,6 +959,11 @@ std::string LimitKeyOf(const std::string& block, bool at_lower) {
   if (block == kSizingWeb) return "min_web_mm";
   if (block == kSizingCrowningFit) return "crowning_on_the_face";
   if (block == kSizingLife) return "life_h";
+  if (block == kSizingStiffness) return "min_torsional_stiffness_Nm_per_arcmin";
+  if (block == kSizingLostMotion) return "max_lost_motion_arcmin";
+  if (block == kSizingOutputPinStress) return "output_pin_stress_MPa";
+  if (block == kSizingCrankBearing) return "eccentric_bearing_load_N";
+  if (block == kSizingOutputHoles) return "output_holes_fit_mm";
   return block;
 }
 
@@ -838,6 +1070,10 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   fast.min_backlash_arcsec = spec.limits.min_backlash_arcsec;
   fast.max_backlash_arcsec = spec.limits.max_backlash_arcsec;
   fast.life_h = spec.limits.life_h;
+  fast.min_torsional_stiffness_Nm_per_arcmin = spec.limits.min_torsional_stiffness_Nm_per_arcmin;
+  fast.max_lost_motion_arcmin = spec.limits.max_lost_motion_arcmin;
+  fast.output_pin_stress_MPa = spec.limits.output_pin_stress_MPa;
+  fast.eccentric_bearing_load_N = spec.limits.eccentric_bearing_load_N;
   out.verification.max_rounds = options.verify_rounds;
   const int starts = std::max(1, options.starts);
   const double steps = double(starts + options.verify_rounds + 1);
@@ -898,6 +1134,12 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   auto beyond = [](const VerifiedLimit& c) {
     const double slack = 1e-3 * std::max(std::abs(c.limit_value), 1.0);
     if (c.limit == "life_h" && !c.holds()) return true;
+    // The output rows: the pins' stress is exact on both models at a sample they share (error 0),
+    // so a row the solver leaves a constraint tolerance beyond its limit is tightened too.
+    if ((c.limit == "output_pin_stress_MPa" || c.limit == "eccentric_bearing_load_N" ||
+         c.limit == "max_lost_motion_arcmin" || c.limit == "min_torsional_stiffness_Nm_per_arcmin") &&
+        !c.holds())
+      return true;
     return !std::isfinite(c.accurate_value) ||
            (c.upper ? c.accurate_value > c.limit_value + slack : c.accurate_value < c.limit_value - slack);
   };
@@ -907,6 +1149,10 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
            : c.limit == "min_backlash_arcsec" ? &fast.min_backlash_arcsec
            : c.limit == "max_backlash_arcsec" ? &fast.max_backlash_arcsec
            : c.limit == "life_h"              ? &fast.life_h
+           : c.limit == "min_torsional_stiffness_Nm_per_arcmin" ? &fast.min_torsional_stiffness_Nm_per_arcmin
+           : c.limit == "max_lost_motion_arcmin"                ? &fast.max_lost_motion_arcmin
+           : c.limit == "output_pin_stress_MPa"                 ? &fast.output_pin_stress_MPa
+           : c.limit == "eccentric_bearing_load_N"              ? &fast.eccentric_bearing_load_N
                                               : nullptr;  // closed forms and the LTE: exact or report-only
   };
   // The verification of the solved design: check; while a tightenable limit is beyond, tighten
@@ -929,8 +1175,11 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         step.limit_value = c.limit_value;
         step.fast_limit_before = *fl;
         const double miss = c.upper ? c.accurate_value - c.limit_value : c.limit_value - c.accurate_value;
-        if (c.limit == "contact_stress_MPa")
+        if (c.limit == "contact_stress_MPa" || c.limit == "output_pin_stress_MPa" ||
+            c.limit == "eccentric_bearing_load_N" || c.limit == "max_lost_motion_arcmin")
           *fl = TightenedUpperLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
+        else if (c.limit == "min_torsional_stiffness_Nm_per_arcmin")
+          *fl = TightenedLowerLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
         else if (c.limit == "life_h")  // by the accurate shortfall, 1.5 times, and 0.1% more (as lcr_min_size)
           *fl *= std::pow(c.limit_value / std::max(c.accurate_value, 1e-9 * c.limit_value), 1.5) * 1.001;
         else if (c.upper)

@@ -35,6 +35,26 @@
 //                         Exact derivatives: the pair loads by implicit differentiation, the
 //                         contact normals, the disc lag and the pins' spin through the unloaded
 //                         TCA with a Jet.
+//   kSizingStiffness      (with limits.min_torsional_stiffness_Nm_per_arcmin and the compliant output
+//                         mechanism) the torsional stiffness, input held at crank 0, between 50% and
+//                         100% of the design torque T_r (model/cycloid/stiffness.h's definition; at
+//                         crank 0 both directions are equal): (T_r/2)/(θ(T_r) − θ(T_r/2)), θ = β + w,
+//                         β the LTCA's disc lag (its derivative by implicit differentiation), w the
+//                         output pins' rotation (its Jet derivative through SolveOutputPins);
+//   kSizingLostMotion     (limits.max_lost_motion_arcmin) θ(0.03 T_r) − θ(−0.03 T_r) = 2 θ(0.03 T_r) at
+//                         crank 0 (the curve is odd there);
+//   kSizingOutputPinStress (limits.output_pin_stress_MPa) the output pins' bending stress at every
+//                         crank angle of the pins' load period (the mesh period's angles shifted by
+//                         whole mesh periods, OutputPinPeriodInMeshPeriods), the largest over the pins
+//                         (that pin frozen), one disc: M = Q (L − b/2) (cantilever) or Q L/4 (both
+//                         ends), L the span (absent: the face width b);
+//   kSizingCrankBearing   (limits.eccentric_bearing_load_N) |B| = |−G − Σ Q_j n_j| at the same angles,
+//                         G the ring-pin resultant of the design cycle (crank frame, derivatives as the
+//                         life rows'), the output pins solved with clearance and compliance;
+//   kSizingOutputHoles    (with the compliant output mechanism) the holes inside the root circle:
+//                         a' − e − ρ' − (R_w + r_h) >= 0.
+// The holes follow the sized eccentricity with a fixed radial clearance c: r_h = r_c + e + c
+// (CycloidSizingOutput).
 // The crank angles sample one mesh period 2π/N uniformly: a peak between two samples is missed by
 // the fast model, which is what the verified-optimum loop (objectives/verification.h) catches.
 //
@@ -51,6 +71,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <optional>
@@ -61,6 +82,7 @@
 #include "model/common/bearing_life.h"
 #include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/output_mechanism.h"
 #include "objectives/problem.h"
 #include "objectives/verification.h"
 #include "optimizers/solver.h"
@@ -79,6 +101,11 @@ inline constexpr const char* kSizingPinGap = "pin_gap_margin_mm";
 inline constexpr const char* kSizingWeb = "web_margin_mm";
 inline constexpr const char* kSizingCrowningFit = "crowning_fit_mm";
 inline constexpr const char* kSizingLife = "life_margin";
+inline constexpr const char* kSizingStiffness = "torsional_stiffness_Nm_per_arcmin";
+inline constexpr const char* kSizingLostMotion = "lost_motion_arcmin";
+inline constexpr const char* kSizingOutputPinStress = "output_pin_stress_MPa";
+inline constexpr const char* kSizingCrankBearing = "eccentric_bearing_load_N";
+inline constexpr const char* kSizingOutputHoles = "output_holes_margin_mm";
 
 /// Field names a sizing variable may have.
 std::vector<std::string> CycloidSizingVariableNames();
@@ -100,6 +127,21 @@ struct CycloidSizingLimits {
   double bore_radius_mm = 0;             ///< the disc's central bore; 0: no web row
   double min_web_mm = 0;                 ///< web between the tooth root and the bore
   double life_h = 0;                     ///< shortest L10h of any rated bearing; 0: no life row
+  /// With the compliant output mechanism (CycloidSizingSpec::output); 0 / kInf: no row.
+  double min_torsional_stiffness_Nm_per_arcmin = 0;
+  double max_lost_motion_arcmin = kInf;
+  double output_pin_stress_MPa = kInf;
+  double eccentric_bearing_load_N = kInf;
+};
+
+/// The output mechanism with clearance and compliance of a sizing (model/cycloid/output_mechanism.h):
+/// the pins fixed, the holes made for the sized eccentricity with a fixed radial clearance,
+/// r_h = r_c + e + c (pins.hole_radius_mm is not used). The pins' face width and E* follow the design.
+struct CycloidSizingOutput {
+  cycloid::OutputPins pins;
+  double clearance_mm = 0;  ///< c = r_h − r_c − e
+  cycloid::PinSupport support = cycloid::PinSupport::kCantilever;
+  double span_mm = 0;  ///< the pin's span; 0: the face width (it follows a sized face width)
 };
 
 /// The bearing life of a sizing (docs/life.md, "Cycloid"): the duty cycle (output torque = the
@@ -137,6 +179,9 @@ struct CycloidSizingSpec {
   CycloidSizeObjective objective = CycloidSizeObjective::kOuterDiameter;
   /// The speed or duty cycle and the ratings: lives reported; with limits.life_h, one row each.
   std::optional<CycloidSizingLife> life;
+  /// The output pins with clearance and compliance: the stiffness, lost motion, output-pin stress
+  /// and crank-bearing load (reported; with their limits, rows).
+  std::optional<CycloidSizingOutput> output;
 };
 
 /// One design as the fast (or, in CycloidAccurateCheck, the accurate) model sees it.
@@ -162,6 +207,14 @@ struct CycloidSizingEvaluation {
   double shortest_life_h = kInf;          ///< shortest L10h of lives
   std::vector<double> life_margin;        ///< ln(L10h / life_h) per bearing (with limits.life_h)
   std::vector<double> d_life_margin;      ///< [row][variable]
+  /// With spec.output (kNaN when the cycles are not solved): the torsional curve at crank 0 and the
+  /// output mechanism over the pins' load period (angle-major: shift r, then the cycle's angle k).
+  double stiffness_Nm_per_arcmin = NAN, lost_motion_arcmin = NAN;
+  std::vector<double> output_pin_stress_MPa, crank_bearing_load_N;
+  double max_output_pin_stress_MPa = NAN, max_crank_bearing_load_N = NAN;
+  double output_holes_margin_mm = 0;
+  std::vector<double> d_stiffness, d_lost_motion, d_output_holes;         ///< [variable]
+  std::vector<double> d_output_pin_stress, d_crank_bearing_load;          ///< [row][variable]
 };
 
 /// The two cycles (design and overload torque) and the closed-form limits of a design x. Pure:
@@ -188,6 +241,7 @@ class CycloidSizingModel {
   std::vector<double> last_x_;
   std::optional<cycloid::CycleResult> last_design_, last_over_;
   std::vector<std::optional<cycloid::CycleResult>> last_lines_;  // duty lines at other torques
+  std::optional<cycloid::CycleResult> last_half_, last_small_;   // crank 0 at T_r/2, 0.03 T_r (spec.output)
   // The first design's models: every later one is WithDesign of these (shared solver caches).
   std::optional<cycloid::LoadedTca> base_design_, base_over_;
 };
@@ -199,6 +253,8 @@ struct CycloidFastLimits {
   double min_backlash_arcsec = 0;
   double max_backlash_arcsec = kInf;
   double life_h = 0;  ///< the life rows' required L10h (>= limits.life_h)
+  double min_torsional_stiffness_Nm_per_arcmin = 0, max_lost_motion_arcmin = kInf, output_pin_stress_MPa = kInf,
+         eccentric_bearing_load_N = kInf;
 };
 
 /// What the LTCA rows say at a design outside the model's domain (a looped or undercut tooth,
@@ -220,6 +276,9 @@ struct CycloidAccurateCheck {
   CycloidSizingEvaluation fast, accurate;
   double stress_error_MPa = 0, edge_margin_error_um = 0, backlash_error_arcsec = 0, lte_error_arcsec = 0;
   double life_error_h = 0;  ///< |accurate − fast| of the shortest L10h
+  /// |accurate − fast| of the output rows (with spec.output)
+  double stiffness_error = 0, lost_motion_error_arcmin = 0, output_pin_stress_error_MPa = 0,
+         crank_bearing_error_N = 0;
   std::string model;   ///< in words, with its settings
   std::vector<VerifiedLimit> checks;
 };

@@ -117,6 +117,46 @@ struct OutputMechanismInput {
   }
 };
 
+/// "output_mechanism" of cycloid_ltca and cycloid_min_size: rigid pins for the life, or, with
+/// pin_radius_mm and hole_radius_mm, the mechanism with clearance and compliance (docs/cycloid.md,
+/// "Output mechanism"; read by cycloid_common::ParseCompliantOutputPins).
+struct CompliantOutputMechanismInput {
+  std::optional<int> pins, pin_count;
+  double pin_circle_radius_mm = 0;
+  std::optional<double> pin_radius_mm, hole_radius_mm, roller_radius_mm;
+  std::optional<std::string> pin_support;
+  std::optional<double> pin_span_mm;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("pins", &pins, Field().AtLeast(3).Desc("output pin count Z_w (absent: the continuous limit, rigid pins only)"));
+    a->Visit("pin_count", &pin_count, Field().AtLeast(3).Desc("older name of pins"));
+    a->Visit("pin_circle_radius_mm", &pin_circle_radius_mm,
+             Field().Required().Positive().Unit("mm").Desc("R_w, the pins' circle, inside the disc's root radius"));
+    a->Visit("pin_radius_mm", &pin_radius_mm, Field().Positive().Unit("mm").Desc("r_w, the pin (the beam)"));
+    a->Visit("hole_radius_mm", &hole_radius_mm,
+             Field().Positive().Unit("mm").Desc(
+                 "r_h >= contact radius + e; R_w + r_h below the root radius; 2 r_h below the holes' pitch"));
+    a->Visit("roller_radius_mm", &roller_radius_mm,
+             Field().Positive().Unit("mm").Desc("a roller on each pin, > pin_radius_mm: it touches the hole (absent: none)"));
+    a->Visit("pin_support", &pin_support,
+             Field().OneOf({"cantilever", "both_ends"}, "one of \"cantilever\", \"both_ends\"")
+                 .Desc("the pin fixed at the flange (cantilever, when absent) or supported at both ends"));
+    a->Visit("pin_span_mm", &pin_span_mm,
+             Field().Positive().Unit("mm").Desc(
+                 "the pin's free length or span, >= the disc stack (discs - 1) * disc_spacing_mm + face width "
+                 "(absent: the stack)"));
+  }
+  static nlohmann::ordered_json SchemaRules() {
+    return {{"not", {{"required", {"pins", "pin_count"}}}},
+            {"dependentRequired",
+             {{"pin_radius_mm", {"hole_radius_mm", "pins"}},
+              {"hole_radius_mm", {"pin_radius_mm", "pins"}},
+              {"roller_radius_mm", {"pin_radius_mm"}},
+              {"pin_support", {"pin_radius_mm"}},
+              {"pin_span_mm", {"pin_radius_mm"}}}}};
+  }
+};
+
 /// The schema of "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h).
 nlohmann::ordered_json DutyCycleSchema();
 /// The schema of "crank_bearing" (ParseBearingRating with its kind).

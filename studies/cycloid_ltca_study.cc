@@ -37,53 +37,13 @@ void ParseDiscsAndOutput(const Node& root, const Input& in, Study& s) {
       root["disc_spacing_mm"].Fail("a spacing of the discs' mid-planes >= the face width " +
                                    Format(s.drive.face_width_mm, 6) + " mm (the discs would overlap)");
   }
-  const std::optional<Input::OutputMechanism>& om = in.output_mechanism;
-  const bool compliant = om && (om->pin_radius_mm || om->hole_radius_mm);
-  if (!compliant) {
-    if (om) {
-      const Node n = root["output_mechanism"];
-      for (const char* f : {"roller_radius_mm", "pin_support", "pin_span_mm"})
-        if (n.Has(f)) n[f].FailWith(std::string(f) + " needs the pins' and holes' radii (pin_radius_mm, hole_radius_mm)");
-    }
-    return;
-  }
-  const Node n = root["output_mechanism"];
-  const cycloid::OutputMechanism rigid = cycloid_common::ParseOutputMechanism(n, s.drive, true);
-  if (rigid.pin_count == 0) n["pins"].Integer(3);  // "missing field": the compliant model counts its pins
-  OutputSpec o;
-  o.pins.pins = rigid.pin_count;
-  o.pins.pin_circle_radius_mm = rigid.pin_circle_radius_mm;
-  if (!om->pin_radius_mm) (void)n["pin_radius_mm"];  // "missing required field"
-  if (!om->hole_radius_mm) (void)n["hole_radius_mm"];
-  o.pins.pin_radius_mm = *om->pin_radius_mm;
-  o.pins.hole_radius_mm = *om->hole_radius_mm;
-  o.pins.roller_radius_mm = om->roller_radius_mm.value_or(0.0);
-  if (om->roller_radius_mm && !(o.pins.roller_radius_mm > o.pins.pin_radius_mm))
-    n["roller_radius_mm"].Fail("a roller radius > pin_radius_mm " + Format(o.pins.pin_radius_mm, 6) + " mm");
-  const double e = s.drive.eccentricity_mm, rc = o.pins.contact_radius_mm();
-  const std::string what = om->roller_radius_mm ? "roller_radius_mm" : "pin_radius_mm";
-  if (!(o.pins.hole_radius_mm >= rc + e))
-    n["hole_radius_mm"].Fail("a hole radius >= " + what + " + e = " + Format(rc, 6) + " + " + Format(e, 6) + " = " +
-                             Format(rc + e, 6) + " mm (the pin must follow the disc's orbit of radius e); a " +
-                             what + " of at most " + Format(o.pins.hole_radius_mm - e, 6) + " mm would fit this hole");
-  // Neighbouring holes must not overlap, and the holes must stay inside the disc's root circle.
-  const double root_radius = s.drive.roller_position_radius_mm + s.drive.delta_position_mm - e -
-                             s.drive.roller_radius_mm - s.drive.delta_radius_mm;
-  if (!(o.pins.pin_circle_radius_mm + o.pins.hole_radius_mm < root_radius))
-    n["hole_radius_mm"].Fail("holes inside the disc's root circle: pin_circle_radius_mm + hole_radius_mm < " +
-                             Format(root_radius, 6) + " mm; a hole radius below " +
-                             Format(root_radius - o.pins.pin_circle_radius_mm, 6) + " mm would fit");
-  const double chord = 2.0 * o.pins.pin_circle_radius_mm * std::sin(kPi / o.pins.pins);
-  if (!(2.0 * o.pins.hole_radius_mm < chord))
-    n["hole_radius_mm"].Fail("holes that do not overlap: 2 hole_radius_mm < " + Format(chord, 6) +
-                             " mm (the holes' pitch); a hole radius below " + Format(0.5 * chord, 6) + " mm would fit");
-  o.support = om->pin_support.value_or("cantilever") == "both_ends" ? cycloid::PinSupport::kBothEnds
-                                                                      : cycloid::PinSupport::kCantilever;
   const double stack = (s.discs - 1) * s.disc_spacing_mm + s.drive.face_width_mm;
-  o.span_mm = om->pin_span_mm.value_or(stack);
-  if (o.span_mm < stack)
-    n["pin_span_mm"].Fail("a span >= the disc stack (discs - 1) * disc_spacing_mm + face_width_mm = " +
-                          Format(stack, 6) + " mm");
+  const std::optional<OutputSpec> compliant = cycloid_common::ParseCompliantOutput(
+      root, in.output_mechanism, s.drive, s.drive.eccentricity_mm, stack,
+      "the disc stack (discs - 1) * disc_spacing_mm + face_width_mm");
+  if (!compliant) return;
+  const OutputSpec& o = *compliant;
+  const Node n = root["output_mechanism"];
   if (!s.loaded)
     n.FailWith("the output mechanism needs the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
   int periods = 0;

@@ -545,7 +545,7 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
 // the report says when the sized disc's root falls inside it).
 void ParseSizingLife(const Node& root, Study& s) {
   const std::optional<cycloid_common::LifeSpec> life =
-      cycloid_common::ParseLife(root, s.spec.drive, s.spec.design_torque_Nmm);
+      cycloid_common::ParseLife(root, s.spec.drive, s.spec.design_torque_Nmm, true);
   if (s.spec.limits.life_h > 0 && !life)
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a "
                                       "duty_cycle beside limits.life_h, found neither");
@@ -560,6 +560,40 @@ void ParseSizingLife(const Node& root, Study& s) {
   l.pins_static_N = life->pins.static_N;
   l.output = life->output;
   s.spec.life = l;
+}
+
+// The output mechanism with clearance and compliance (cycloid_ltca's, studies/cycloid_study_common.h)
+// and the limits that need it. The pins are fixed; the holes are made for the sized eccentricity
+// with the radial clearance the file gives at the start, c = hole_radius_mm − r_c − e (>= 0),
+// r_h = r_c + e + c; the span covers the largest face width; the holes' place in the root circle is
+// a row of the sizing (kSizingOutputHoles), checked here at the start.
+void ParseSizingOutput(const Node& root, const Input& in, const std::map<std::string, Field>& fields, Study& s) {
+  const Field& b = fields.at("face_width_mm");
+  const std::optional<cycloid_common::CompliantOutputSpec> o = cycloid_common::ParseCompliantOutput(
+      root, in.output_mechanism, s.spec.drive, s.spec.drive.eccentricity_mm, b.variable ? b.hi : s.spec.drive.face_width_mm,
+      "the largest face width");
+  const Input::Limits& l = in.limits;
+  const std::pair<const char*, bool> needs[] = {
+      {"min_torsional_stiffness_Nm_per_arcmin", bool(l.min_torsional_stiffness_Nm_per_arcmin)},
+      {"max_lost_motion_arcmin", bool(l.max_lost_motion_arcmin)},
+      {"output_pin_stress_MPa", bool(l.output_pin_stress_MPa)},
+      {"eccentric_bearing_load_N", bool(l.eccentric_bearing_load_N)}};
+  for (const auto& [key, given] : needs)
+    if (given && !o)
+      root["limits"][key].FailWith(std::string(key) + " needs the output mechanism with clearance and compliance: "
+                                   "output_mechanism with pins, pin_circle_radius_mm, pin_radius_mm and hole_radius_mm");
+  if (!o) return;
+  objectives::CycloidSizingOutput out;
+  out.pins = o->pins;
+  out.support = o->support;
+  out.span_mm = in.output_mechanism->pin_span_mm ? o->span_mm : 0.0;  // absent: the face width, sized or not
+  out.clearance_mm = o->pins.clearance_mm(s.spec.drive.eccentricity_mm);
+  s.spec.output = out;
+  CycloidSizingLimits& lim = s.spec.limits;
+  lim.min_torsional_stiffness_Nm_per_arcmin = l.min_torsional_stiffness_Nm_per_arcmin.value_or(0.0);
+  lim.max_lost_motion_arcmin = l.max_lost_motion_arcmin.value_or(kInf);
+  lim.output_pin_stress_MPa = l.output_pin_stress_MPa.value_or(kInf);
+  lim.eccentric_bearing_load_N = l.eccentric_bearing_load_N.value_or(kInf);
 }
 
 }  // namespace
@@ -579,6 +613,7 @@ Study Parse(const Node& root) {
   CheckCrowningBox(root, fields, s);
   CheckClosedFormCorner(root, fields, s);
   ParseSizingLife(root, s);
+  ParseSizingOutput(root, in, fields, s);
   return s;
 }
 
@@ -700,6 +735,9 @@ nlohmann::ordered_json Input::SchemaRules() {
   all.push_back(when(any_of(speed), required({"crank_bearing", "output_mechanism"})));
   all.push_back(when(required({"duty_cycle"}), in("load", negated(required({"input_speed_rpm"})))));
   all.push_back(when(given("limits", "life_h"), any_of(speed)));
+  for (const char* key : {"min_torsional_stiffness_Nm_per_arcmin", "max_lost_motion_arcmin", "output_pin_stress_MPa",
+                          "eccentric_bearing_load_N"})
+    all.push_back(when(given("limits", key), given("output_mechanism", "pin_radius_mm")));
   oj rules = oj::object();
   rules["allOf"] = all;
   return rules;
@@ -775,6 +813,12 @@ nlohmann::json ModelJson(const Study& s, const objectives::CycloidSizingEvaluati
     j["backlash_max_arcsec"] = Finite(*hi, "backlash");
   }
   j["lte_peak_to_peak_arcsec"] = Finite(e.lte_peak_to_peak_arcsec, "LTE");
+  if (s.spec.output) {  // cycloid_ltca's names (its "stiffness" at the design torque, crank 0)
+    j["torsional_stiffness_Nm_per_arcmin"] = NumberOrNull(e.stiffness_Nm_per_arcmin);
+    j["lost_motion_arcmin"] = NumberOrNull(e.lost_motion_arcmin);
+    j["output_pin_bending_stress_MPa"] = NumberOrNull(e.max_output_pin_stress_MPa);
+    j["eccentric_bearing_load_N"] = NumberOrNull(e.max_crank_bearing_load_N);
+  }
   j["converged"] = e.converged;
   return j;
 }
@@ -799,6 +843,10 @@ std::string ObjectiveUnit(const Study& s) {
 // The unit of a limit, from its key (the suffix of the study's field name).
 std::string LimitUnit(const std::string& key) {
   if (key == "crowning_on_the_face") return "mm";  // the crowning rows (objectives::kSizingCrowningFit)
+  if (key == "min_torsional_stiffness_Nm_per_arcmin") return "N·m/arcmin";
+  if (key == "max_lost_motion_arcmin") return "arcmin";
+  if (key == "eccentric_bearing_load_N") return "N";
+  if (key == "output_holes_fit_mm") return "mm";
   for (const char* u : {"MPa", "um", "mm", "arcsec", "h"}) {
     const std::string suffix = std::string("_") + u;
     if (key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) return u;
@@ -820,6 +868,11 @@ double LimitValue(const Study& s, const std::string& key) {
   if (key == "min_web_mm") return l.min_web_mm;
   if (key == "bore_diameter_mm") return 2 * l.bore_radius_mm;
   if (key == "life_h") return l.life_h;
+  if (key == "min_torsional_stiffness_Nm_per_arcmin") return l.min_torsional_stiffness_Nm_per_arcmin;
+  if (key == "max_lost_motion_arcmin") return l.max_lost_motion_arcmin;
+  if (key == "output_pin_stress_MPa") return l.output_pin_stress_MPa;
+  if (key == "eccentric_bearing_load_N") return l.eccentric_bearing_load_N;
+  if (key == "output_holes_fit_mm") return 0.0;
   return NAN;
 }
 
@@ -937,6 +990,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                           {"backlash_arcsec", Finite(o.check.backlash_error_arcsec, "error")},
                           {"lte_peak_to_peak_arcsec", Finite(o.check.lte_error_arcsec, "error")}};
     if (s.spec.overload_torque_Nmm > 0) err["edge_margin_at_overload_um"] = Finite(o.check.edge_margin_error_um, "error");
+    if (s.spec.output) {
+      b["output_holes_margin_mm"] = Finite(acc.output_holes_margin_mm, "holes margin");
+      err["torsional_stiffness_Nm_per_arcmin"] = NumberOrNull(o.check.stiffness_error);
+      err["lost_motion_arcmin"] = NumberOrNull(o.check.lost_motion_error_arcmin);
+      err["output_pin_bending_stress_MPa"] = NumberOrNull(o.check.output_pin_stress_error_MPa);
+      err["eccentric_bearing_load_N"] = NumberOrNull(o.check.crank_bearing_error_N);
+    }
     b["estimated_error"] = err;
     b["accurate_model"] = o.check.model;
     if (s.spec.life) {
@@ -1008,6 +1068,18 @@ nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
     nlohmann::json om = {{"pin_circle_radius_mm", life.output.pin_circle_radius_mm}};
     if (life.output.pin_count > 0) om["pin_count"] = life.output.pin_count;
     a["output_mechanism"] = om;
+  }
+  if (s.spec.output) {  // the compliant output mechanism and the datasheet at the design torque
+    const objectives::CycloidSizingOutput& out = *s.spec.output;
+    nlohmann::json om = {{"pins", out.pins.pins},
+                         {"pin_circle_radius_mm", out.pins.pin_circle_radius_mm},
+                         {"pin_radius_mm", out.pins.pin_radius_mm},
+                         {"hole_radius_mm", out.pins.contact_radius_mm() + o.drive.eccentricity_mm + out.clearance_mm}};
+    if (out.pins.roller_radius_mm > 0) om["roller_radius_mm"] = out.pins.roller_radius_mm;
+    om["pin_support"] = out.support == cycloid::PinSupport::kBothEnds ? "both_ends" : "cantilever";
+    if (out.span_mm > 0) om["pin_span_mm"] = out.span_mm;
+    a["output_mechanism"] = om;
+    a["stiffness"] = {{"rated_torque_Nm", s.design_torque_Nm}};
   }
   return a;
 }
@@ -1117,7 +1189,9 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const std::array<int, 2> grid = in.analysis.grid.value_or(std::array<int, 2>{40, 40});
   const double cells = double(grid[0]) * grid[1];
   const double angles = in.analysis.crank_angles_per_mesh_period;
-  const double torques = t.overload_torque_Nm ? 2 : 1;
+  // The compliant output mechanism adds the torsional curve: two one-angle cycles (T_r/2, 0.03 T_r).
+  const bool torsion = in.output_mechanism && in.output_mechanism->pin_radius_mm;
+  const double torques = (t.overload_torque_Nm ? 2 : 1) + (torsion ? 2.0 / angles : 0.0);
   // The variables that vary (a range or {"range": ...}); a fixed number costs nothing.
   double variables = 0;
   for (const auto& v : study.at("variables")) variables += v.is_array() || v.is_object() ? 1 : 0;
@@ -1128,7 +1202,8 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const double checks = (1 + rounds) * (1 + 2 * 4) * torques * cycle + 2 * 4 * cycle;
   return LargestTerm({{solves, "/optimizer/max_evaluations",
                        WorkNumber(budget) + " iterations × " + WorkNumber(starts + rounds) + " solves × (2 + 0.65 × " +
-                           WorkNumber(variables) + " variables) × " + WorkNumber(torques) + " torques × " +
+                           WorkNumber(variables) + " variables) × " + WorkNumber(torques) +
+                           (torsion ? " torques (with the torsional curve's two one-angle cycles) × " : " torques × ") +
                            WorkNumber(angles) + " crank angles × " + WorkNumber(rollers) + " rollers × " +
                            WorkNumber(cells) + " grid cells"},
                       {checks, "/analysis/grid",
@@ -1156,6 +1231,15 @@ CAMOPT_REGISTER_REPORT("cycloid_min_size", {
      true, "/best/estimated_error/backlash_arcsec"},
     {"loaded transmission error, peak to peak", "/best/accurate/lte_peak_to_peak_arcsec", "arcsec",
      "study:/limits/max_lte_peak_to_peak_arcsec", NAN, true, "/best/estimated_error/lte_peak_to_peak_arcsec"},
+    {"torsional stiffness (50-100% of the design torque, crank 0)", "/best/accurate/torsional_stiffness_Nm_per_arcmin",
+     "N m/arcmin", "study:/limits/min_torsional_stiffness_Nm_per_arcmin", NAN, false,
+     "/best/estimated_error/torsional_stiffness_Nm_per_arcmin"},
+    {"lost motion (±3% of the design torque)", "/best/accurate/lost_motion_arcmin", "arcmin",
+     "study:/limits/max_lost_motion_arcmin", NAN, true, "/best/estimated_error/lost_motion_arcmin"},
+    {"output-pin bending stress", "/best/accurate/output_pin_bending_stress_MPa", "MPa",
+     "study:/limits/output_pin_stress_MPa", NAN, true, "/best/estimated_error/output_pin_bending_stress_MPa"},
+    {"eccentric bearing load, largest", "/best/accurate/eccentric_bearing_load_N", "N",
+     "study:/limits/eccentric_bearing_load_N", NAN, true, "/best/estimated_error/eccentric_bearing_load_N"},
     {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
     {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
     {"verified", "/verified", ""},

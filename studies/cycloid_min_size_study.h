@@ -119,6 +119,8 @@ struct Input {
     std::optional<double> min_edge_margin_um, min_curtate_margin;
     double min_profile_radius_mm = 0, min_pin_gap_mm = 0, min_backlash_arcsec = 0;
     std::optional<double> max_backlash_arcsec, max_lte_peak_to_peak_arcsec, bore_diameter_mm, min_web_mm, life_h;
+    std::optional<double> min_torsional_stiffness_Nm_per_arcmin, max_lost_motion_arcmin, output_pin_stress_MPa,
+        eccentric_bearing_load_N;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("contact_stress_MPa", &contact_stress_MPa,
@@ -148,6 +150,21 @@ struct Input {
                Field().Positive().Unit("h").Desc(
                    "shortest ISO 281 L10h of any rated bearing over the duty cycle (needs load.input_speed_rpm or "
                    "duty_cycle; docs/life.md, Cycloid; absent: none)"));
+      const std::string needs = " (needs output_mechanism with pin_radius_mm and hole_radius_mm; absent: none)";
+      a->Visit("min_torsional_stiffness_Nm_per_arcmin", &min_torsional_stiffness_Nm_per_arcmin,
+               Field().Positive().Unit("N·m/arcmin").Desc(
+                   "torsional stiffness at the output, input held at crank 0, between 50% and 100% of "
+                   "design_torque_Nm (cycloid_ltca's torsional_stiffness_Nm_per_arcmin)" + needs));
+      a->Visit("max_lost_motion_arcmin", &max_lost_motion_arcmin,
+               Field().Positive().Unit("arcmin").Desc(
+                   "lost motion between +-3% of design_torque_Nm at crank 0 (cycloid_ltca's lost_motion_arcmin)" +
+                   needs));
+      a->Visit("output_pin_stress_MPa", &output_pin_stress_MPa,
+               Field().Positive().Unit("MPa").Desc("output-pin bending stress over the pins' load period" + needs));
+      a->Visit("eccentric_bearing_load_N", &eccentric_bearing_load_N,
+               Field().Positive().Unit("N").Desc(
+                   "largest eccentric (crank) bearing load over the pins' load period, the output pins with "
+                   "clearance and compliance" + needs));
     }
     static nlohmann::ordered_json SchemaRules() {
       return {{"dependentRequired", {{"min_web_mm", {"bore_diameter_mm"}}}}};
@@ -204,7 +221,7 @@ struct Input {
   Optimizer optimizer;
   std::optional<Load> load;
   nlohmann::json duty_cycle, crank_bearing, pins;
-  std::optional<cycloid_common::OutputMechanismInput> output_mechanism;
+  std::optional<cycloid_common::CompliantOutputMechanismInput> output_mechanism;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -230,8 +247,12 @@ struct Input {
                                      "; the time shares sum to 1 within 1e-6, at least one speed > 0"
                                      "; each line one cycle of the sizing at its torque");
     a->Visit("output_mechanism", &output_mechanism,
-             Field().Desc("rigid output pins in the disc's holes (docs/life.md, Cycloid): pin circle radius (inside "
-                          "the disc's root radius) and pin count (absent: the continuous limit)"));
+             Field().Desc("output pins in the disc's holes, as cycloid_ltca's: pin circle radius (inside the disc's "
+                          "root radius) and pin count (absent: the continuous limit), rigid for the life (docs/life.md, "
+                          "Cycloid); with pin_radius_mm and hole_radius_mm the mechanism with clearance and compliance "
+                          "for the stiffness, lost motion, output-pin stress and crank-bearing load: the pins fixed, the holes "
+                          "made for the sized eccentricity with the start's radial clearance hole_radius_mm - "
+                          "pin_radius_mm (or roller_radius_mm) - e (docs/cycloid.md, Output mechanism)"));
   }
   /// The rules between blocks: each sized field once (in variables or its block), the drive's
   /// fields somewhere, the crowning's fields by its type, a life's blocks.

@@ -15,6 +15,7 @@
 #include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/output_mechanism.h"
 #include "model/cycloid/tooth_profile.h"
 #include "studies/archive.h"
 #include "studies/bearing_life_io.h"
@@ -331,6 +332,80 @@ inline cycloid::OutputMechanism ParseOutputMechanism(const Node& n, const cycloi
   if (!(m.pin_circle_radius_mm < root_radius))
     n["pin_circle_radius_mm"].Fail("a pin circle inside the disc's root radius " + Format(root_radius, 6) + " mm");
   return m;
+}
+
+/// The output mechanism with clearance and compliance (model/cycloid/output_mechanism.h): the
+/// "output_mechanism" object with pin_radius_mm and hole_radius_mm; the face width and E* of
+/// `pins` are filled from the drive and the material by the model that uses it.
+struct CompliantOutputSpec {
+  cycloid::OutputPins pins;
+  cycloid::PinSupport support = cycloid::PinSupport::kCantilever;
+  double span_mm = 0;  ///< the pin's span (cantilever: flange to free end)
+};
+
+/// Reads the compliant fields of "output_mechanism" `n` (declared by CompliantOutputMechanismInput,
+/// read as `om`; `rigid` its pin count and circle from ParseOutputMechanism): the pin and hole
+/// radii, a roller, the support and the span. Checked: the hole takes the pin's orbit at the
+/// eccentricity `e_mm` (the largest the study may have), the holes inside the root circle of `d`
+/// and apart, the span >= `stack_mm` (`stack_words` says what it is; the span's default).
+/// @throws StudyError naming the field and what would fit.
+inline CompliantOutputSpec ParseCompliantOutputPins(const Node& n, const CompliantOutputMechanismInput& om,
+                                                    const cycloid::OutputMechanism& rigid, const cycloid::Drive& d,
+                                                    double e_mm, double stack_mm, const std::string& stack_words) {
+  CompliantOutputSpec o;
+  o.pins.pins = rigid.pin_count;
+  o.pins.pin_circle_radius_mm = rigid.pin_circle_radius_mm;
+  if (!om.pin_radius_mm) (void)n["pin_radius_mm"];  // "missing required field"
+  if (!om.hole_radius_mm) (void)n["hole_radius_mm"];
+  o.pins.pin_radius_mm = *om.pin_radius_mm;
+  o.pins.hole_radius_mm = *om.hole_radius_mm;
+  o.pins.roller_radius_mm = om.roller_radius_mm.value_or(0.0);
+  if (om.roller_radius_mm && !(o.pins.roller_radius_mm > o.pins.pin_radius_mm))
+    n["roller_radius_mm"].Fail("a roller radius > pin_radius_mm " + Format(o.pins.pin_radius_mm, 6) + " mm");
+  const double e = e_mm, rc = o.pins.contact_radius_mm();
+  const std::string what = om.roller_radius_mm ? "roller_radius_mm" : "pin_radius_mm";
+  if (!(o.pins.hole_radius_mm >= rc + e))
+    n["hole_radius_mm"].Fail("a hole radius >= " + what + " + e = " + Format(rc, 6) + " + " + Format(e, 6) + " = " +
+                             Format(rc + e, 6) + " mm (the pin must follow the disc's orbit of radius e); a " +
+                             what + " of at most " + Format(o.pins.hole_radius_mm - e, 6) + " mm would fit this hole");
+  // Neighbouring holes must not overlap, and the holes must stay inside the disc's root circle.
+  const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
+                             d.roller_radius_mm - d.delta_radius_mm;
+  if (!(o.pins.pin_circle_radius_mm + o.pins.hole_radius_mm < root_radius))
+    n["hole_radius_mm"].Fail("holes inside the disc's root circle: pin_circle_radius_mm + hole_radius_mm < " +
+                             Format(root_radius, 6) + " mm; a hole radius below " +
+                             Format(root_radius - o.pins.pin_circle_radius_mm, 6) + " mm would fit");
+  const double chord = 2.0 * o.pins.pin_circle_radius_mm * std::sin(kPi / o.pins.pins);
+  if (!(2.0 * o.pins.hole_radius_mm < chord))
+    n["hole_radius_mm"].Fail("holes that do not overlap: 2 hole_radius_mm < " + Format(chord, 6) +
+                             " mm (the holes' pitch); a hole radius below " + Format(0.5 * chord, 6) + " mm would fit");
+  o.support = om.pin_support.value_or("cantilever") == "both_ends" ? cycloid::PinSupport::kBothEnds
+                                                                     : cycloid::PinSupport::kCantilever;
+  o.span_mm = om.pin_span_mm.value_or(stack_mm);
+  if (o.span_mm < stack_mm) n["pin_span_mm"].Fail("a span >= " + stack_words + " = " + Format(stack_mm, 6) + " mm");
+  return o;
+}
+
+/// "output_mechanism" with clearance and compliance when it gives the pins' or the holes' radius
+/// (then ParseCompliantOutputPins, the pin count required), else nullopt (and the compliant-only
+/// fields refused). `root` the study's root.
+inline std::optional<CompliantOutputSpec> ParseCompliantOutput(const Node& root,
+                                                               const std::optional<CompliantOutputMechanismInput>& om,
+                                                               const cycloid::Drive& d, double e_mm, double stack_mm,
+                                                               const std::string& stack_words) {
+  const bool compliant = om && (om->pin_radius_mm || om->hole_radius_mm);
+  if (!compliant) {
+    if (om) {
+      const Node n = root["output_mechanism"];
+      for (const char* f : {"roller_radius_mm", "pin_support", "pin_span_mm"})
+        if (n.Has(f)) n[f].FailWith(std::string(f) + " needs the pins' and holes' radii (pin_radius_mm, hole_radius_mm)");
+    }
+    return std::nullopt;
+  }
+  const Node n = root["output_mechanism"];
+  const cycloid::OutputMechanism rigid = ParseOutputMechanism(n, d, true);
+  if (rigid.pin_count == 0) n["pins"].Integer(3);  // "missing field": the compliant model counts its pins
+  return ParseCompliantOutputPins(n, *om, rigid, d, e_mm, stack_mm, stack_words);
 }
 
 /// The life fields of a cycloid study: "load.input_speed_rpm" or "duty_cycle" (ParseDutyCycle, the

@@ -250,6 +250,24 @@ TEST(CycloidMinSizeStudy, FieldsAndCombinationsTheModelDoesNotHaveAreRefused) {
   s = SmallStudy();
   s["optimizer"]["backend"] = "cobyla";
   ExpectRefused(s, "/optimizer/backend", "one of \"ipopt\", \"slsqp\"");
+  // The datasheet limits need the compliant output mechanism; its holes must take the pins' orbit
+  // at the start's eccentricity and its span the largest face width.
+  const json datasheet = Example("cycloid_min_size_datasheet.json");
+  s = datasheet;
+  s.erase("output_mechanism");
+  ExpectRefused(s, "/limits/min_torsional_stiffness_Nm_per_arcmin", "output_mechanism with pins");
+  s = datasheet;
+  s["output_mechanism"].erase("pin_radius_mm");
+  s["output_mechanism"].erase("hole_radius_mm");
+  s["output_mechanism"].erase("pin_support");
+  s["output_mechanism"].erase("pin_span_mm");
+  ExpectRefused(s, "/limits/min_torsional_stiffness_Nm_per_arcmin", "clearance and compliance");
+  s = datasheet;
+  s["output_mechanism"]["hole_radius_mm"] = 10.9;  // < 7 + 4 (the start's e)
+  ExpectRefused(s, "/output_mechanism/hole_radius_mm", "a hole radius >= pin_radius_mm + e");
+  s = datasheet;
+  s["output_mechanism"]["pin_span_mm"] = 20;  // < the largest face width 25
+  ExpectRefused(s, "/output_mechanism/pin_span_mm", "the largest face width = 25 mm");
 }
 
 // Through the command line: exit 2, one line naming the file and the path, nothing written.
@@ -277,6 +295,59 @@ TEST(CycloidMinSizeStudy, WorkEstimateCountsTheBudgetAndTheVariables) {
 // End to end through the command line on the small study: exit 0, verified, the accurate stress
 // within its limit plus its error, the outer diameter 2 (a + rho) of the reported drive, and
 // best_cycloid_ltca.json a cycloid_ltca study of that drive that runs (exit 0) and parses to it.
+TEST(CycloidMinSizeStudy, EachDatasheetLimitBindsIsVerifiedAndIsWhatCycloidLtcaReports) {
+  // The datasheet example with one of its four output limits at a time (and the contact stress):
+  // the limit binds (the result names it, the accurate value lands on it within 1%), the accurate
+  // model meets it, and best_cycloid_ltca.json run through cycloid_ltca (its own torsional curve,
+  // output mechanism and crank-bearing force balance, model/cycloid/stiffness.h and
+  // output_mechanism.h) reports the same four numbers as the sizing's accurate model.
+  const json base = Example("cycloid_min_size_datasheet.json");
+  const struct {
+    const char* limit;
+    double value;
+    const char* result_key;
+  } cases[] = {{"min_torsional_stiffness_Nm_per_arcmin", 420.0, "torsional_stiffness_Nm_per_arcmin"},
+               {"max_lost_motion_arcmin", 2.3, "lost_motion_arcmin"},
+               {"output_pin_stress_MPa", 440.0, "output_pin_bending_stress_MPa"},
+               {"eccentric_bearing_load_N", 11500.0, "eccentric_bearing_load_N"}};
+  const auto dir = TempDir("cms-datasheet");
+  for (const auto& c : cases) {
+    json study = base;
+    study["limits"] = {{"contact_stress_MPa", 1500}, {c.limit, c.value}};
+    const std::string tag = c.limit;
+    WriteFile(dir / (tag + ".json"), study.dump());
+    const auto res = RunCamopt("run " + (dir / (tag + ".json")).string() + " --quiet --out " + (dir / tag).string() +
+                               " > /dev/null");
+    ASSERT_EQ(res.exit_code, 0) << tag << ": " << res.stderr_text;
+    const json r = json::parse(ReadFile(dir / tag / "result.json"));
+    EXPECT_EQ(r["verified"], true) << tag;
+    bool binds = false;
+    for (const json& b : r["binding_limits"]) binds = binds || b["limit"] == c.limit;
+    EXPECT_TRUE(binds) << tag << " is not among " << r["binding_limits"].dump();
+    bool checked = false;
+    for (const json& k : r["verification"]["checks"])
+      if (k["limit"] == c.limit) {
+        checked = true;
+        EXPECT_TRUE(k["holds"].get<bool>()) << tag;
+      }
+    EXPECT_TRUE(checked) << tag;
+    const double accurate = r["best"]["accurate"][c.result_key];
+    const bool upper = std::string(c.limit) != "min_torsional_stiffness_Nm_per_arcmin";
+    EXPECT_LE(upper ? accurate : c.value, upper ? c.value : accurate) << tag;  // met
+    EXPECT_NEAR(accurate, c.value, 0.01 * c.value) << tag;                    // binding
+    // cycloid_ltca on the best design (the accurate settings) reports the same values.
+    const auto ltca = RunCamopt("run " + (dir / tag / "best_cycloid_ltca.json").string() + " --quiet --out " +
+                                (dir / (tag + "-ltca")).string() + " > /dev/null");
+    ASSERT_EQ(ltca.exit_code, 0) << tag << ": " << ltca.stderr_text;
+    const json l = json::parse(ReadFile(dir / (tag + "-ltca") / "result.json"));
+    for (const char* key : {"torsional_stiffness_Nm_per_arcmin", "lost_motion_arcmin", "output_pin_bending_stress_MPa",
+                            "eccentric_bearing_load_N"}) {
+      const double sized = r["best"]["accurate"][key];
+      EXPECT_NEAR(l[key].get<double>(), sized, 1e-6 * sized) << tag << ": " << key;
+    }
+  }
+}
+
 TEST(CycloidMinSizeStudy, SmallStudyEndToEnd) {
   const auto dir = TempDir("cms-e2e");
   const json study = SmallStudy();

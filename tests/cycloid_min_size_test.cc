@@ -9,6 +9,7 @@
 #include "model/cycloid/geometry_limits.h"
 #include "sizing/cycloid_min_size.h"
 #include "tests/reference_designs.h"
+#include "tests/test_util.h"
 
 namespace camopt::objectives {
 namespace {
@@ -151,6 +152,82 @@ TEST(CycloidMinSize, LifeRowsDerivativesMatchCentralDifferences) {
   }
   // Not flat: a larger eccentricity lowers the crank bearing's load (T/(n2 e) across the crank).
   EXPECT_GT(jac[size_t(life.offset) * n + 0], 0.1);
+}
+
+// The output mechanism's rows (stiffness, lost motion, output-pin stress, crank-bearing load, the
+// holes' fit): the paper's drive with 8 pins r_w 7 mm on R_w 50 mm in holes with 10 µm radial
+// clearance (r_h = 7 + e + 0.01 mm, following the sized e), cantilever over 25 mm.
+CycloidSizingOutput PaperOutput() {
+  CycloidSizingOutput o;
+  o.pins.pins = 8;
+  o.pins.pin_circle_radius_mm = 50.0;
+  o.pins.pin_radius_mm = 7.0;
+  o.pins.hole_radius_mm = 11.51;  // not used: r_h = r_c + e + c
+  o.clearance_mm = 0.01;
+  o.support = cycloid::PinSupport::kCantilever;
+  o.span_mm = 25.0;
+  return o;
+}
+
+TEST(CycloidMinSize, OutputMechanismRowsDerivativesMatchCentralDifferences) {
+  CycloidSizingSpec spec = PaperSpec();
+  spec.output = PaperOutput();
+  spec.limits.min_torsional_stiffness_Nm_per_arcmin = 300;
+  spec.limits.max_lost_motion_arcmin = 2;
+  spec.limits.output_pin_stress_MPa = 400;
+  spec.limits.eccentric_bearing_load_N = 20000;
+  for (bool both_ends : {false, true}) {
+    spec.output->support = both_ends ? cycloid::PinSupport::kBothEnds : cycloid::PinSupport::kCantilever;
+    spec.output->span_mm = both_ends ? 0.0 : 25.0;  // both ends: the span follows the face width
+    CycloidSizingModel model(spec);
+    CycloidFastLimits fast;
+    fast.contact_stress_MPa = 1500;
+    fast.min_torsional_stiffness_Nm_per_arcmin = 300;
+    fast.max_lost_motion_arcmin = 2;
+    fast.output_pin_stress_MPa = 400;
+    fast.eccentric_bearing_load_N = 20000;
+    Problem p = CycloidSizingProblem(model, fast);
+    const int n = p.num_vars();
+    std::vector<double> x;
+    for (const Variable& v : spec.variables) x.push_back(v.initial);
+    // The LTCA's rows (stiffness, lost motion, crank bearing) with steps of 1e-5 of each variable's
+    // scale, as the other rows; the output pins' stress and the holes' fit (closed forms of the pins'
+    // solve) with 1e-4: the solve's rotation is closed to 1e-15 rad, ~1e-12 of the pin force, which
+    // a step of 1e-5 mm of e amplifies to 1e-4 of the derivative (measured on the probe of one
+    // solve: the differences approach the Jet from 1e-3 to 1e-4 mm and leave it below 1e-5).
+    int rows = 0;
+    for (const auto& [step, names] :
+         {std::pair<double, std::vector<const char*>>{1e-5, {kSizingStiffness, kSizingLostMotion, kSizingCrankBearing}},
+          std::pair<double, std::vector<const char*>>{1e-4, {kSizingOutputPinStress, kSizingOutputHoles}}}) {
+      camopt::testing::JacobianCheck check;
+      check.rel_tol = kRowRelTol;
+      check.abs_tol = 1e-7;
+      check.scale = camopt::testing::JacobianCheck::Scale::kRow;
+      for (const Variable& v : spec.variables) {
+        check.steps.push_back(step * v.scale);
+        check.variable_names.push_back(v.name);
+      }
+      for (const char* name : names) {
+        const OutputBlock& b = p.evaluator->block(name);
+        for (int r = b.offset; r < b.offset + b.size; ++r) check.rows.push_back(r);
+      }
+      EXPECT_EQ(camopt::testing::ExpectEvaluatorJacobianMatchesCentralDifferences(*p.evaluator, x, check),
+                int(check.rows.size()) * n);
+      rows += int(check.rows.size());
+    }
+    // 15 mesh periods (15 teeth, 8 pins) of 3 angles: 45 samples of the stress and bearing rows.
+    EXPECT_EQ(p.evaluator->block(kSizingOutputPinStress).size, 45);
+    EXPECT_EQ(rows, 1 + 1 + 45 + 45 + 1);
+    // The rows are the values the model reports, and they move: a larger pin circle is stiffer (longer
+    // arms of the ring pins).
+    std::vector<double> y(size_t(p.evaluator->num_outputs())), jac(y.size() * size_t(n));
+    p.evaluator->EvalWithJacobian(x, y, jac);
+    const CycloidSizingEvaluation e = model.Evaluate(x, false);
+    EXPECT_EQ(y[size_t(p.evaluator->block(kSizingStiffness).offset)], e.stiffness_Nm_per_arcmin);
+    EXPECT_GT(jac[size_t(p.evaluator->block(kSizingStiffness).offset) * n + 1], 0.0);
+    EXPECT_GT(e.stiffness_Nm_per_arcmin, 100.0);
+    EXPECT_GT(e.max_output_pin_stress_MPa, 50.0);
+  }
 }
 
 }  // namespace

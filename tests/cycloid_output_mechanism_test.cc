@@ -374,6 +374,89 @@ TEST(CycloidOutputMechanismStudy, TwoDiscExampleBalancesAndIsDeterministic) {
   EXPECT_EQ(per_angle.at("eccentric_bearing_load_N").size(), per_angle.at("crank_angle_deg").size());
 }
 
+TEST(CycloidOutputMechanismStudy, PaperDriveDatasheetAt350NmFromItsCurveAndFirstOrderForms) {
+  // The paper's drive (NNM, no crowning, one disc) with the illustrative output mechanism, rated
+  // 350 N·m, coarse: the datasheet numbers from hysteresis.csv, and two first-order closed forms.
+  nlohmann::json study = Example("cycloid_datasheet_nnm.json");
+  study["analysis"]["grid"] = {16, 16};
+  study["analysis"]["crank_angles_per_mesh_period"] = 4;
+  study["analysis"]["estimate_error"] = false;
+  study["geometry_files"] = false;
+  const auto dir = camopt::testing::TempDir("cycloid-datasheet");
+  camopt::testing::WriteFile(dir / "study.json", study.dump());
+  const auto res = camopt::testing::RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                                              (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const nlohmann::json r = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
+  const auto h = camopt::testing::ReadCsv(camopt::testing::ReadFile(dir / "out" / "hysteresis.csv"));
+  const auto& branch = h.at("branch_loading_0_unloading_1");
+  const auto& torque = h.at("output_torque_Nm");
+  const auto& angle = h.at("output_angle_arcmin");
+  const auto& pins_part = h.at("output_pins_arcmin");
+  const size_t n = torque.size();
+  ASSERT_EQ(n % 2, 0u);
+  // Loading −T_r → T_r, then unloading back over the same torques: frictionless, no loop width.
+  for (size_t k = 0; k < n / 2; ++k) {
+    EXPECT_EQ(branch[k], 0.0);
+    EXPECT_EQ(branch[n - 1 - k], 1.0);
+    EXPECT_EQ(torque[k], torque[n - 1 - k]);
+    EXPECT_NEAR(angle[k], angle[n - 1 - k], 1e-12);
+  }
+  EXPECT_EQ(r["stiffness"]["hysteresis_width_arcmin"].get<double>(), 0.0);
+  auto index = [&](double t, bool positive_zero) {
+    for (size_t k = 0; k < n / 2; ++k)
+      if (torque[k] == t && (t != 0.0 || std::signbit(torque[k]) != positive_zero)) return k;
+    ADD_FAILURE() << "torque " << t << " not sampled";
+    return size_t{0};
+  };
+  auto at = [&](double t, bool positive_zero = true) { return angle[index(t, positive_zero)]; };
+  const double k_pos = 175.0 / (at(350) - at(175)), k_neg = 175.0 / (at(-175) - at(-350));
+  const double stiffness = r["torsional_stiffness_Nm_per_arcmin"].get<double>();
+  EXPECT_NEAR(stiffness, 0.5 * (k_pos + k_neg), 1e-6 * stiffness);
+  EXPECT_NEAR(r["lost_motion_arcmin"].get<double>(), at(10.5) - at(-10.5), 1e-8);
+  const double backlash = r["backlash_arcmin"].get<double>();
+  EXPECT_NEAR(backlash, at(0.0, true) - at(0.0, false), 1e-8);
+  EXPECT_GT(r["lost_motion_arcmin"].get<double>(), backlash);
+  const double arcmin = 180.0 / kPi * 60.0;
+  // Backlash to first order in the modification: 2 β0 + 2 c/R_w, β0 = min_i g_i/l_i over the
+  // loaded flank at crank 0 (tooth clearance g_i = −Δa (u·N) + Δρ, docs/cycloid.md "Frames"; arm
+  // l_i = X × N of the normal about the disc centre; X(t) = a u(t) − e u(n1 t)).
+  const double a = 90.0, e = 4.5, da = -0.016, dr = -0.008, c = 11.505 - 7.0 - 4.5, rw = 50.0;
+  double beta0 = 1e9;
+  for (int i = 0; i < 16; ++i) {
+    const double t = 2.0 * kPi * i / 16.0;
+    const double x = a * std::cos(t) - e * std::cos(16 * t), y = a * std::sin(t) - e * std::sin(16 * t);
+    const double xp = -a * std::sin(t) + 16 * e * std::sin(16 * t), yp = a * std::cos(t) - 16 * e * std::cos(16 * t);
+    const double nx = yp / std::hypot(xp, yp), ny = -xp / std::hypot(xp, yp);
+    const double arm = x * ny - y * nx;
+    if (arm > 0.02 * 15 * e) beta0 = std::min(beta0, (-da * (std::cos(t) * nx + std::sin(t) * ny) + dr) / arm);
+  }
+  EXPECT_NEAR(backlash, 2.0 * (beta0 + c / rw) * arcmin, 1e-3 * backlash);
+  // The output pins' part of the 50–100% slope against a first-order model: Palmgren's law on the
+  // linearised geometry δ_j = R_w w sin φ_j − c (φ_j = 2πj/8 at crank 0), Σ Q_j R_w sin φ_j = T.
+  const double e_star = 206e3 / (2.0 * (1.0 - 0.09)), e_ref = 207e3 / (2.0 * (1.0 - 0.09));
+  const double kp = 3.84e-5 * std::pow(e_ref, 0.9), length = 17.0;
+  auto moment = [&](double w) {
+    double m = 0.0;
+    for (int j = 0; j < 8; ++j) {
+      const double sj = std::sin(2.0 * kPi * j / 8.0), delta = rw * w * sj - c;
+      if (sj > 0.0 && delta > 0.0) m += e_star * std::pow(delta * std::pow(length, 0.8) / kp, 10.0 / 9.0) * rw * sj;
+    }
+    return m;
+  };
+  auto rotation = [&](double torque_Nm) {
+    double lo = 0.0, hi = 0.01;
+    for (int it = 0; it < 200; ++it) (moment(0.5 * (lo + hi)) < torque_Nm * 1e3 ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+  };
+  const double k_pins_first_order = 175.0 / ((rotation(350.0) - rotation(175.0)) * arcmin);
+  const double k_pins = 175.0 / (pins_part[index(350, true)] - pins_part[index(175, true)]);
+  EXPECT_NEAR(k_pins, k_pins_first_order, 0.01 * k_pins_first_order);
+  // Contact compliance in series: each element alone is stiffer than the drive.
+  EXPECT_LT(stiffness, k_pins);
+  EXPECT_NEAR(r["stiffness"]["output_pins_share"].get<double>(), stiffness / k_pins, 1e-6);
+}
+
 TEST(CycloidOutputMechanismStudy, BadOutputMechanismIsRejectedWithThePathAndWhatWouldFit) {
   nlohmann::json study = Example("cycloid_ltca_two_discs.json");
   study["output_mechanism"]["hole_radius_mm"] = 11.0;  // < 7 + 4.5

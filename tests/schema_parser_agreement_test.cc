@@ -491,6 +491,11 @@ const std::vector<CrossField> kCrossField = {
      "a deflection limit needs load_torque_Nm"},
     {"cycloid_ltca", "/output_mechanism/pins", "holes that do not overlap",
      "the holes' pitch 2 R_w sin(π/Z_w) against hole_radius_mm (the pin count's bound 1e9 of a whole number)"},
+    {"cycloid_min_size", "/target/overload_torque_Nm", "a torque >= design_torque_Nm", "overload >= design torque"},
+    {"cycloid_min_size", "/output_mechanism/roller_radius_mm", "a roller radius > pin_radius_mm",
+     "a roller on the pin is larger than the pin"},
+    {"cycloid_min_size", "/output_mechanism/pins", "holes that do not overlap",
+     "the holes' pitch 2 R_w sin(π/Z_w) against hole_radius_mm (the pin count's bound 1e9 of a whole number)"},
 };
 
 // Disagreements found by this test and not yet resolved: conditions JSON Schema could state
