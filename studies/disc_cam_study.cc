@@ -602,6 +602,7 @@ Result Run(const Study& s, const RunContext& ctx) {
       }
     }
     L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
+    L.spring = dc::RequiredSpringOver(pts, s.dynamics->loads, dc::RadPerSecond(s.dynamics->speed_rpm));
     FinishLoads(s, L);
     r.loads = std::move(L);
   }
@@ -721,6 +722,7 @@ Result RunFlatFaced(const Study& s) {
       }
     }
     L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
+    L.spring = dc::RequiredSpringOver(pts, s.dynamics->loads, dc::RadPerSecond(s.dynamics->speed_rpm));
     FinishLoads(s, L);
     r.loads = std::move(L);
   }
@@ -1049,6 +1051,11 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"max_camshaft_torque_Nm", L.max_abs_camshaft_torque_Nm.value},
                          {"at_max_camshaft_torque_cam_angle_deg", L.max_abs_camshaft_torque_Nm.cam_angle_deg},
                          {"camshaft_torque_range_Nm", {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm}}};
+    // What keeps contact up to the speed: the smallest preload with this rate, the smallest rate
+    // with this preload (null: no rate does, the deficit is on the base circle).
+    dj["min_spring_preload_N"] = L.spring.min_preload_N;
+    dj["min_spring_rate_N_per_mm"] =
+        std::isfinite(L.spring.min_rate_N_per_mm) ? nlohmann::json(L.spring.min_rate_N_per_mm) : nlohmann::json(nullptr);
     // The jump speed is infinite when the follower never decelerates: null, and a note says why.
     if (std::isfinite(L.jump_speed_rpm)) {
       dj["jump_speed_rpm"] = L.jump_speed_rpm;
@@ -1473,6 +1480,7 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"smallest axial force (dynamic)", "/dynamics/response/min_axial_force_N", "N"},
     {"residual vibration", "/dynamics/response/residual_vibration_mm", "mm"},
     {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
+    {"smallest spring preload keeping contact up to the speed", "/dynamics/min_spring_preload_N", "N"},
     {"smallest contact force on the arm's face (separation)", "/arm_dynamics/min_contact_force_N", "N", "", 0.0, false},
     {"largest contact stress (arm's face)", "/arm_dynamics/max_contact_stress_MPa", "MPa",
      "/arm_dynamics/contact_stress_limit_MPa"},

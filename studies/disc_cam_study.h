@@ -413,6 +413,9 @@ struct Result {
     AtAngle max_abs_camshaft_torque_Nm;     ///< largest |T|
     double min_camshaft_torque_Nm = 0.0, max_camshaft_torque_Nm = 0.0;  ///< signed range
     double jump_speed_rpm = 0.0;  ///< +infinity when the follower never decelerates
+    /// The spring that keeps contact at every speed up to the study's (kinetostatics.h): the
+    /// smallest preload with the study's rate, the smallest rate with its preload (+infinity: none).
+    camopt::disc_cam::SpringRequirement spring;
     double weight_N = 0.0;
     /// Peak Hertz stress (face width and material given); stress_finite false when a loaded
     /// point of the profile is undercut.

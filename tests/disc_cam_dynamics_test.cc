@@ -126,6 +126,61 @@ TEST(DiscCamLoads, JumpSpeedClosedFormAndBisection) {
   EXPECT_EQ(JumpSpeed(pts, pulled), 0.0);
 }
 
+// The spring that keeps contact up to a speed, against the closed form written here from the
+// paper's cycloidal rise and return (S, S'' by hand, as above): F₀,min = max −(min(0, m S'' ω²) +
+// k S + P + W) and k_min = max over S > 0 of −(min(0, m S'' ω²) + F₀ + P + W)/S; then the claim
+// checked: with that preload (or rate) the smallest contact force over the cam at ω is zero, and
+// positive at every lower speed tried.
+TEST(DiscCamLoads, SpringThatKeepsContactUpToASpeed) {
+  const DiscCam cam = DiscCamPaperExample();
+  const FollowerLoads f = SpringLoaded();
+  const int n = 3600;
+  const std::vector<CamPoint<double>> pts = Grid(cam, n);
+  const double omega = 2.0 * JumpSpeed(pts, f), beta = 120 * kDeg;
+  double f0 = 0, k = 0;
+  for (int i = 0; i < n; ++i) {
+    const double th = 2 * kPi * i / n;
+    double s = 0, a = 0;
+    if (th < beta) {
+      const double u = th / beta;
+      s = 24 * (u - std::sin(2 * kPi * u) / (2 * kPi));
+      a = 24 * 2 * kPi / (beta * beta) * std::sin(2 * kPi * u);
+    } else if (th < 170 * kDeg) {
+      s = 24;
+    } else if (th < 290 * kDeg) {
+      const double u = (th - 170 * kDeg) / beta;
+      s = 24 - 24 * (u - std::sin(2 * kPi * u) / (2 * kPi));
+      a = -24 * 2 * kPi / (beta * beta) * std::sin(2 * kPi * u);
+    }
+    const double rest = std::min(0.0, 0.8 * a * 1e-3 * omega * omega) + 15.0 + 0.8 * kStandardGravity;
+    f0 = std::max(f0, -(rest + 2.0 * s));
+    if (s > 1e-12) k = std::max(k, -(rest + 40.0) / s);
+  }
+  const SpringRequirement r = RequiredSpringOver(pts, f, omega);
+  EXPECT_NEAR(r.min_preload_N, f0, 1e-9 * f0);
+  EXPECT_NEAR(r.min_rate_N_per_mm, k, 1e-9 * k);
+  ASSERT_GT(f0, f.spring_preload_N);  // at twice the jump speed the study's spring is too weak
+  auto min_force = [&](const FollowerLoads& g, double w) {
+    double m = std::numeric_limits<double>::infinity();
+    for (const auto& p : pts) m = std::min(m, CamLoadAt(p, g, w).contact_force);
+    return m;
+  };
+  FollowerLoads preloaded = f;
+  preloaded.spring_preload_N = r.min_preload_N;
+  FollowerLoads stiffer = f;
+  stiffer.spring_rate_N_per_mm = r.min_rate_N_per_mm;
+  for (const FollowerLoads& g : {preloaded, stiffer}) {
+    EXPECT_NEAR(min_force(g, omega), 0.0, 1e-9 * f0);
+    for (double w : {0.0, 0.3 * omega, 0.7 * omega, 0.99 * omega}) EXPECT_GT(min_force(g, w), -1e-9 * f0) << w;
+  }
+  // A deficit on the base circle (pulled off at rest): no rate helps, only a preload.
+  FollowerLoads pulled = f;
+  pulled.external_load_N = -200.0;
+  const SpringRequirement rp = RequiredSpringOver(pts, pulled, 0.0);
+  EXPECT_TRUE(std::isinf(rp.min_rate_N_per_mm));
+  EXPECT_NEAR(rp.min_preload_N, 200.0 - 0.8 * kStandardGravity, 1e-9);
+}
+
 // On the base circle the roller is a cylinder of r_f on a cylinder of r_b (both convex):
 // R' = r_f r_b/(r_f + r_b) = 8 mm for the paper's cam, and the Hertz line-contact pressure
 // p₀ = sqrt(F E*/(π w R')) with F = (F₀ + P + W)/cos φ (no acceleration, S = 0 in the dwell).
@@ -201,6 +256,17 @@ TEST(DiscCamStudyDynamics, ReportsForcesTorqueJumpSpeedAndStress) {
   // And just below it, it holds.
   fast["dynamics"]["speed_rpm"] = 0.95 * L.jump_speed_rpm;
   EXPECT_GT(RunFile(fast).loads->min_contact_force_N.value, 0.0);
+  // Above the jump speed result.json says which preload (with this rate) would keep contact: with
+  // it the study holds the cam, its smallest force is zero and its jump speed is the speed.
+  fast["dynamics"]["speed_rpm"] = 1.2 * L.jump_speed_rpm;
+  ds::Study st3;
+  const ds::Result r3 = RunFile(fast, &st3);
+  const double preload = ds::ToJson(st3, r3)["dynamics"]["min_spring_preload_N"].get<double>();
+  EXPECT_GT(preload, 40.0);
+  fast["dynamics"]["spring_preload_N"] = preload;
+  const ds::Result r4 = RunFile(fast);
+  EXPECT_NEAR(r4.loads->min_contact_force_N.value, 0.0, 1e-9 * preload);
+  EXPECT_NEAR(r4.loads->jump_speed_rpm, 1.2 * L.jump_speed_rpm, 1e-9 * L.jump_speed_rpm);
 }
 
 TEST(DiscCamStudyDynamics, RefusalsNameWhatToAdd) {

@@ -103,6 +103,33 @@ inline double JumpSpeed(const std::vector<CamPoint<double>>& points, const Follo
   return JumpSpeedOver(points, f);
 }
 
+/// The spring that keeps the follower on the cam at every speed from rest up to omega [rad/s]:
+/// F_y = m S'' ω² + k S + F₀ + P + W ≥ 0 at every point and speed; the worst speed of a point is
+/// omega where it decelerates the follower (S'' < 0) and rest where it does not, so with
+/// I(θ) = min(0, m S'' ω²):
+///   the smallest preload with the given rate    F₀,min = max(0, max_θ −(I + k S + P + W)),
+///   the smallest rate with the given preload    k_min = max(0, max_{θ: S > 0} −(I + F₀ + P + W)/S),
+/// k_min infinite when a point with S = 0 has a deficit (on the base circle only a preload helps).
+/// (Rothbart, Cam Design Handbook, ch. 8: the spring force must exceed the negative inertia load.)
+struct SpringRequirement {
+  double min_preload_N = 0.0;                                        ///< with the given rate
+  double min_rate_N_per_mm = 0.0;                                    ///< with the given preload
+};
+template <typename Point>
+SpringRequirement RequiredSpringOver(const std::vector<Point>& points, const FollowerLoads& f, double omega) {
+  SpringRequirement r;
+  for (const Point& p : points) {
+    const double inertia = std::min(0.0, f.mass_kg * p.d2s * 1e-3 * omega * omega);
+    const double fixed = inertia + f.external_load_N + f.weight_N;
+    r.min_preload_N = std::max(r.min_preload_N, -(fixed + f.spring_rate_N_per_mm * p.s));
+    const double deficit = -(fixed + f.spring_preload_N);
+    if (deficit > 0.0)
+      r.min_rate_N_per_mm = p.s > 0.0 ? std::max(r.min_rate_N_per_mm, deficit / p.s)
+                                      : std::numeric_limits<double>::infinity();
+  }
+  return r;
+}
+
 /// Effective radius R' = r_f (1 − r_f κ) of the roller on the cam profile [mm] (1/R' = 1/r_f + 1/ρ,
 /// ρ the profile radius, concave negative); ≤ 0 where the profile is undercut.
 template <typename T>
