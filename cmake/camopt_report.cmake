@@ -1,4 +1,4 @@
-# Issue 17: report.html opens in headless Chromium (tests/report_render_test.py): it renders (the
+# report.html opens in headless Chromium (tests/report_render_test.py): it renders (the
 # screenshot is not blank) and logs nothing on the console. Needs Debian's chromium and
 # python3-pil (scripts/install_deps.sh); skipped (exit 77) only when no chromium is installed.
 # Debian's /usr/bin/python3, not one that may come first on PATH (pyenv's has no PIL); change with

@@ -131,7 +131,7 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     }
     if (lim.life_h > 0) lower("life_h", c.shortest_L10h, lim.life_h);
   }
-  for (const lcr::DesignProblem& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
+  for (const DesignIssue& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
 
   if (near) {
     // Per cam and quantity: the rollers' local maxima in angle within kNearFraction of the limit

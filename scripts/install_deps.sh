@@ -8,12 +8,12 @@ PACKAGES=(build-essential cmake pkg-config
   # CMake targets link it), and the independent readers the tests check the files with.
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libtbb-dev python3-ezdxf python3-numpy admesh
-  # Issue 17: the Python module (pybind11), its tests and example (NumPy, matplotlib) and the
+  # The Python module (pybind11), its tests and example (NumPy, matplotlib) and the
   # schema tests (jsonschema), all for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-matplotlib python3-jsonschema
-  # Issue 19 (sweeps): Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
+  # Sweeps: Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
   libboost-dev libopenmpi-dev openmpi-bin
-  # Issue 17 (report.html): the test that opens it in headless Chromium and checks its screenshot.
+  # report.html: the test that opens it in headless Chromium and checks its screenshot.
   chromium python3-pil
   # The SHA-256 of provenance (studies/provenance.cc) from a maintained library; the API
   # reference from the headers' comments (cmake/camopt_docs.cmake).

@@ -432,8 +432,8 @@ std::string SchemaFieldTable(const nlohmann::ordered_json& schema);
 /// the value the kind uses, defaults filled in. @throws StudyError as Read.
 using DeclaredEcho = nlohmann::ordered_json (*)(const nlohmann::json& study, const std::string& file);
 
-/// Registers a declared kind: its schema, which `camopt schema KIND` (StudySchema) then prints
-/// instead of a file of studies/schema/, and its echo; returns true (for a static).
+/// Registers a declared kind: its schema, which `camopt schema KIND` (StudySchema) prints, and its
+/// echo; returns true (for a static).
 bool RegisterDeclaredKind(const std::string& kind, std::string (*emit_schema)(), DeclaredEcho echo);
 /// The schema text of a kind registered with RegisterDeclaredKind, or nullptr.
 const std::string* DeclaredSchema(const std::string& kind);

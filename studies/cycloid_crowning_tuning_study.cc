@@ -153,8 +153,8 @@ void ParseJoint(const Node& root, const Input& in, Study& s) {
       if (var.name == "flat_length_mm") c.flat_length_mm = x;
       if (var.name == "radius_mm") c.radius_mm = x;
     }
-    if (const std::string why = cycloid::CheckDrive(d); !why.empty())
-      v.FailWith("a corner of the variables' ranges gives an infeasible drive: " + why);
+    if (const auto issues = cycloid::CheckDrive(d); !issues.empty())
+      v.FailWith("a corner of the variables' ranges gives an infeasible drive: " + issues.front().message);
     if (const std::string why = cycloid::CheckCrowning(c, s.drive.face_width_mm); !why.empty())
       v.FailWith("a corner of the variables' ranges gives an invalid crowning: " + why);
   }

@@ -236,8 +236,9 @@ bool WholePeriods(const std::vector<double>& a, int rollers) {
 
 // The remaining sampling bias of a periodic series' largest (sign +1) or smallest (sign −1)
 // sample y₀: the larger of two estimates of how far the true extreme lies beyond it.
-// - A smooth extreme (design-notes §3: missed by up to |f''| h²/8): the parabola through y₀ and
-//   its neighbours peaks (y₊ − y₋)² / (8 |y₋ − 2y₀ + y₊|) beyond y₀.
+// - A smooth extreme (missed by up to |f''| h²/8: some sample lies within h/2 of it, and f falls
+//   by |f''| (h/2)²/2 over that distance): the parabola through y₀ and its neighbours peaks
+//   (y₊ − y₋)² / (8 |y₋ − 2y₀ + y₊|) beyond y₀.
 // - A kink (a pair entering or leaving contact; missed by O(h)): the rising secant through the two
 //   samples before the extreme and the falling secant through the two after, extended, meet
 //   above y₀ when the kink lies between y₀ and a neighbour.

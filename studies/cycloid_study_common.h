@@ -20,6 +20,7 @@
 #include "studies/archive.h"
 #include "studies/bearing_life_io.h"
 #include "studies/cycloid_input.h"
+#include "studies/design_issue_paths.h"
 #include "studies/format.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
@@ -82,8 +83,7 @@ inline cycloid::Drive MakeDrive(const Node& root, const DriveInput& in, const st
     drive.delta_radius_mm = mod->delta_radius_um.value_or(0.0) * 1e-3;
   }
   CheckPlausible(root, drive);  // first: a unit mistake explains whatever else fails
-  if (const std::string why = cycloid::CheckDrive(drive); !why.empty())
-    d.FailWith("infeasible drive: " + why);
+  FailOnFirst(cycloid::CheckDrive(drive), root, CycloidIssuePaths());
   return drive;
 }
 

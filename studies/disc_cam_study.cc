@@ -7,6 +7,7 @@
 #include "model/disc_cam/check.h"
 #include "model/disc_cam/flat_faced.h"
 #include "model/disc_cam/oscillating_flat_faced.h"
+#include "studies/design_issue_paths.h"
 #include "studies/format.h"
 #include "studies/material_input.h"
 #include "studies/motion_input.h"
@@ -28,37 +29,6 @@ constexpr double kDeg = kPi / 180.0;
 // §8.8: "keep the pressure angle between about ±30° for a translating roller follower").
 constexpr double kDefaultPressureAngleTranslatingDeg = 30.0;
 constexpr double kDefaultPressureAngleOscillatingDeg = 45.0;
-
-// The JSON path and message of a design issue (model units → the file's units).
-[[noreturn]] void FailOn(const dc::DesignIssue& issue, const DiscCam& cam, const Node& root) {
-  using dc::IssueKind;
-  const bool osc = cam.follower == FollowerType::kOscillatingRoller;
-  const double deg = issue.cam_angle_rad / kDeg;
-  switch (issue.kind) {
-    case IssueKind::kOffsetTooLarge:
-      root["follower"]["offset_mm"].FailWith(
-          "the offset " + Format(issue.value) +
-          " mm must be smaller than base circle + roller radius (" + Format(issue.upper) + " mm)");
-    case IssueKind::kArmCannotReach:
-      root["follower"]["arm_length_mm"].FailWith(
-          "the arm cannot reach the base circle: need |pivot distance − arm length| < base circle "
-          "+ roller radius < pivot distance + arm length (" + Format(issue.lower) + " < " +
-          Format(issue.value) + " < " + Format(issue.upper) + ")");
-    case IssueKind::kInsideBaseCircle:
-      root["motion"].FailWith("the follower goes inside the base circle at cam angle " +
-                              Format(deg) + " deg (S = " +
-                              Format(osc ? issue.value / kDeg : issue.value) +
-                              (osc ? " deg)" : " mm)"));
-    case IssueKind::kArmOutOfRange:
-      root["motion"].FailWith("the follower arm leaves (0, 180) deg from the cam centre line at "
-                              "cam angle " + Format(deg) + " deg");
-    case IssueKind::kJams:
-      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
-                              Format(issue.value / kDeg) + " deg at cam angle " + Format(deg) +
-                              " deg (the follower would jam)");
-  }
-  root.FailWith("unknown design issue");
-}
 
 // Cam-angle intervals [deg] where flag is set, on a uniform grid of n points over 360°.
 std::vector<std::pair<double, double>> Intervals(const std::vector<bool>& flag) {
@@ -251,7 +221,7 @@ Study Parse(const Node& root) {
   if (in.follower.face_offset_mm && !std::isfinite(*in.follower.face_offset_mm))
     follower["face_offset_mm"].Fail("a finite length");
   if (!flat)
-    for (const auto& issue : dc::CheckGeometry(cam)) FailOn(issue, cam, root);
+    FailOnFirst(dc::CheckGeometry(cam), root, DiscCamIssuePaths());
   // Without a roller: no mechanical error (Rzine et al.'s eqs. 16–32 and the exact-motion check
   // roll a roller of radius r_f + Δr_f on the profile: the stages are refused, tolerances noted as
   // unused in result.json) and no cutter path of a roller's size.
@@ -396,7 +366,7 @@ Study Parse(const Node& root) {
   }
   const auto issues = flat ? dc::CheckFlatFaced(cam.motion, cam.base_radius, s.angle_steps)
                            : dc::CheckDesign(cam, s.angle_steps);
-  if (!issues.empty()) FailOn(issues.front(), cam, root);
+  FailOnFirst(issues, root, DiscCamIssuePaths());
   return s;
 }
 

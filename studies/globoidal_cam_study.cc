@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cad/solid.h"
+#include "studies/design_issue_paths.h"
 #include "studies/format.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
@@ -22,42 +23,6 @@ using globoidal::SurfacePoint;
 using globoidal::Vec3;
 
 constexpr double kDeg = kPi / 180.0;
-
-// The JSON path and message of a design issue (model units → the file's units).
-[[noreturn]] void FailOn(const globoidal::DesignIssue& issue, const Node& root) {
-  using globoidal::IssueKind;
-  switch (issue.kind) {
-    case IssueKind::kRollerPastTurretAxis:
-      root["cam"]["roller_length_mm"].FailWith("the roller (length " + Format(issue.value) +
-                                               " mm) reaches past the turret axis: need m/2 < R_e");
-    case IssueKind::kRollersReachCamAxis:
-      root["cam"]["center_distance_mm"].FailWith(
-          "the rollers reach the cam axis: need C > l₁ + R = " + Format(issue.lower) +
-          " mm (l₁ = R_e + m/2 + e, eq. 8)");
-    case IssueKind::kRollersOverlap:
-      root["cam"]["roller_angle_deg"].FailWith("the two rollers overlap (no rib between them): need "
-                                               "2 l₂ sin(β/2) > 2R, found " + Format(issue.value) +
-                                               " mm ≤ " + Format(issue.lower) + " mm");
-    case IssueKind::kSwingRange:
-      root["motion"].FailWith("the swing must run from 0 to swing_deg = " +
-                              Format(issue.value / kDeg) +
-                              " deg (rise first, in the first motion's direction); it runs from " +
-                              Format(issue.lower / kDeg) + " to " + Format(issue.upper / kDeg) +
-                              " deg");
-    case IssueKind::kContactArmOutside:
-      root["contact"]["contact_arm_mm"].Fail("a length in [l₂, l₁] = [" + Format(issue.lower) +
-                                             ", " + Format(issue.upper) + "] mm");
-    case IssueKind::kJams:
-      root["motion"].FailWith("infeasible design: the pressure angle reaches " +
-                              Format(issue.value / kDeg) + " deg at cam angle " +
-                              Format(issue.cam_angle_rad / kDeg) + " deg (the turret would jam)");
-  }
-  root.FailWith("unknown design issue");
-}
-
-void FailOnFirst(const std::vector<globoidal::DesignIssue>& issues, const Node& root) {
-  if (!issues.empty()) FailOn(issues.front(), root);
-}
 
 // The mesh of one grid surface per roller (open surfaces, not a closed solid): each grid cell as
 // two triangles, oriented so that the facet normal is the working-surface normal (out of the rib,
@@ -125,14 +90,14 @@ Study Parse(const Node& root) {
   cam.roller_angle = in.cam.roller_angle_deg * kDeg;
   cam.swing = in.cam.swing_deg * kDeg;
   cam.direction = in.cam.first_motion == "clockwise" ? 1 : -1;
-  FailOnFirst(globoidal::CheckGeometry(cam), root);
+  FailOnFirst(globoidal::CheckGeometry(cam), root, GloboidalIssuePaths());
 
   // Motion: the turret swing φ_i, rising by +φ_f in the first motion's direction, between the
   // dead points 0 and φ_f (eq. 7 places them).
   MotionInputSpec spec;
   spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg", spec.subject = "turret";
   cam.motion = ParseMotionProgram(root["motion"], spec);
-  FailOnFirst(globoidal::CheckSwing(cam), root);
+  FailOnFirst(globoidal::CheckSwing(cam), root, GloboidalIssuePaths());
 
   s.dyn.load_torque_Nmm = in.load.turret_torque_Nm * 1e3;
   s.dyn.inertia_Nmms2 = in.load.turret_inertia_kgm2 * 1e3;
@@ -152,7 +117,7 @@ Study Parse(const Node& root) {
   m.penetration_depth_mm = kc.penetration_depth_mm;
   if (kc.contact_arm_mm) {
     s.dyn.contact_arm_mm = *kc.contact_arm_mm;
-    FailOnFirst(globoidal::CheckContactArm(s.dyn), root);
+    FailOnFirst(globoidal::CheckContactArm(s.dyn), root, GloboidalIssuePaths());
   }
 
   const Input::Dynamics& d = in.dynamics;
@@ -202,7 +167,7 @@ Study Parse(const Node& root) {
   // switch them off in any base study); the point cloud is data and stays.
   if (!s.geometry.write) s.export_stl = false;
   // Every check, with the jam limit over the analysis grid.
-  FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root);
+  FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root, GloboidalIssuePaths());
   // A torque no contact can carry: the Hertz law (eq. 11) holds for penetrations small against
   // the radii; under the turret torque alone the static penetration δ = (F/K)^(1/n) at the start
   // angle must stay below a tenth of the roller radius (the paper example: see docs/globoidal.md).

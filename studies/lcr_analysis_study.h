@@ -174,7 +174,7 @@ struct Study {
   bool cutter_input_given = false, cutter_output_given = false;      ///< a cutter other than the roller
   double bore_diameter_input_mm = 0, bore_diameter_output_mm = 0;    ///< 0: no bore in the solids
   GeometryFileOptions geometry;                                      ///< "geometry_files"
-  LcrContactInput contact;  ///< "contact" and the rollers' "crowning" (issue 12)
+  LcrContactInput contact;  ///< "contact" and the rollers' "crowning"
   lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"
   std::optional<LcrToleranceSpec> tolerances;          ///< "tolerances" + "monte_carlo"
   std::optional<LifeSpec> life;                        ///< a speed or a duty cycle given

@@ -1,4 +1,4 @@
-// Study kind "lcr_crowning_tuning" (issue 12): for a given lobe cam reducer, the logarithmic
+// Study kind "lcr_crowning_tuning": for a given lobe cam reducer, the logarithmic
 // roller crowning per cam that minimises the largest contact pressure over a revolution at the
 // design torque (worst over a misalignment range), with the pressure off the contact's ends at an
 // overload torque; against uncrowned rollers, each checked with the half_space model.

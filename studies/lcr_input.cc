@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "studies/design_issue_paths.h"
 #include "studies/format.h"
 
 namespace camopt::studies {
@@ -14,8 +15,6 @@ lcr::CamSide<double> SideOf(const LcrSideInput& in, const Node& s) {
   lcr::CamSide<double> c;
   c.lobes = in.lobes;
   c.rollers = in.rollers;
-  if (c.rollers <= c.lobes)
-    s["rollers"].Fail("more rollers than lobes (" + std::to_string(c.lobes) + ")");
   c.turret_radius = in.turret_radius_mm;
   c.roller_radius = in.roller_diameter_mm / 2;
   c.roller_length = PlausibleLength(s["roller_length_mm"], c.turret_radius, "the turret radius");
@@ -24,14 +23,7 @@ lcr::CamSide<double> SideOf(const LcrSideInput& in, const Node& s) {
 }
 
 lcr::Reducer<double> Checked(const lcr::Reducer<double>& r, const Node& node) {
-  const auto problems = lcr::CheckDesign(r);
-  if (!problems.empty()) {
-    // "input.rollers" -> /reducer/input/rollers
-    std::string path = problems.front().field;
-    for (char& ch : path)
-      if (ch == '.') ch = '/';
-    throw StudyError(node.file() + ": " + node.path() + "/" + path + ": " + problems.front().message);
-  }
+  FailOnFirst(lcr::CheckDesign(r), node, LcrIssuePaths());  // "input.rollers" -> /reducer/input/rollers
   return r;
 }
 

@@ -1,6 +1,7 @@
-// The finite-length contact in lcr_min_size (issue 12): parsing of the top-level "contact" object,
-// fixed.crowning, variables.crowning_coefficient_mm and load.overload_torque_Nm, the 3D solve of a
-// candidate (sizing/lcr_sizing3d.h) and its part of result.json. Kept apart from
+// The finite-length contact in lcr_min_size (docs/lcr.md, "Crowned rollers and 3D contact"):
+// parsing of the top-level "contact" object, fixed.crowning, variables.crowning_coefficient_mm
+// and load.overload_torque_Nm, the 3D solve of a candidate (sizing/lcr_sizing3d.h) and its part
+// of result.json. Kept apart from
 // lcr_min_size_study.cc, which calls these hooks only when the study has a 3D contact.
 #pragma once
 

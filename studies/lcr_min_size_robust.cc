@@ -1,5 +1,6 @@
-// The robust parts of study kind "lcr_min_size" (issue 18): "tolerances" (as lcr_analysis reads
-// them, studies/lcr_tolerance_input.h), "robust": {"method": "worst_case" | "sigma", "k"} and
+// The robust parts of study kind "lcr_min_size" (docs/lcr.md, "Sizing across tolerances"):
+// "tolerances" (as lcr_analysis reads them, studies/lcr_tolerance_input.h), "robust":
+// {"method": "worst_case" | "sigma", "k"} and
 // "monte_carlo": {"samples", "seed", "angle_steps"}. Every candidate is solved again with the
 // robust rows (objectives/lcr_robust.h) from its nominal optimum; result.json's "best" is the
 // smallest robust design, "nominal_best" the study without tolerances, and both carry the

@@ -1,5 +1,5 @@
 // Where a result comes from: the camopt version and the SHA-256 of the study that made it, both
-// recorded in every result.json (issue 17), and the plausibility warnings on a study's values.
+// recorded in every result.json, and the plausibility warnings on a study's values.
 #pragma once
 
 #include <string>

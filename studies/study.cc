@@ -388,7 +388,7 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
         outputs.MarkIncomplete(kind + ": not converged" + (why.empty() ? "" : ": " + why));
       if (r.contains("feasible") && r["feasible"] == false)
         outputs.MarkIncomplete(kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
-      // Provenance and the warnings, the same three fields for every kind (issue 17).
+      // Provenance and the warnings, the same three fields for every kind (studies/provenance.h).
       nlohmann::json stamped = r;
       stamped["camopt_version"] = CamoptVersion();
       stamped["study_sha256"] = ctx.study_sha256.empty() ? Sha256Hex(study.dump()) : ctx.study_sha256;
@@ -416,13 +416,9 @@ void RunStudyFile(const std::string& file, const std::string& out_dir, const Run
 }
 
 const std::string& StudySchema(const std::string& kind) {
-  // A kind declared once (studies/archive.h) has its schema emitted from the declaration.
+  // Every kind is declared once (studies/archive.h): its schema is emitted from the declaration.
   if (const std::string* declared = DeclaredSchema(kind)) return *declared;
-  const auto& schemas = EmbeddedSchemas();
-  const auto it = schemas.find(kind);
-  if (it != schemas.end()) return it->second;
   std::set<std::string> kinds;
-  for (const auto& [k, text] : schemas) kinds.insert(k);
   for (const auto& k : StudyKinds())
     if (DeclaredSchema(k)) kinds.insert(k);
   std::string known;

@@ -2,28 +2,21 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <condition_variable>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <mutex>
 #include <new>
-#include <random>
 #include <set>
 #include <sstream>
 #include <thread>
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <boost/random/sobol.hpp>
-
+#include "studies/sweep_checkpoint.h"
+#include "studies/sweep_design.h"
+#include "studies/sweep_pareto.h"
 #include "studies/sweep_report.h"
 #include "studies/sweep_world.h"
 #include "studies/writers.h"
@@ -73,39 +66,6 @@ void CheckSettable(const json& study, const Pointer& p, const Node& n) {
   }
   n.FailWith("the base study's " + parent.to_string() + " is " + Describe(holder) +
              ", not an object to set \"" + p.back() + "\" in");
-}
-
-// The value of a level: rounded to a whole number on request.
-json Level(double x, const Variation& v) {
-  if (v.integer) return json(static_cast<int64_t>(std::llround(x)));
-  return json(x);
-}
-
-// A point u in [0, 1) mapped onto a variation: across its range, or onto one of its values.
-json AtFraction(const Variation& v, double u) {
-  if (v.has_range) {
-    const double x = v.log ? std::exp(std::log(v.lo) + u * (std::log(v.hi) - std::log(v.lo)))
-                           : v.lo + u * (v.hi - v.lo);
-    return Level(x, v);
-  }
-  const size_t n = v.values.size();
-  return v.values[std::min(n - 1, static_cast<size_t>(u * static_cast<double>(n)))];
-}
-
-// A double in [0, 1) from 53 bits of the generator (the standard's distributions are not the same
-// on every library; this is).
-double Uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-// 64-bit FNV-1a of a text: the fingerprint of a sweep in its checkpoint.
-std::string Fingerprint(const std::string& text) {
-  uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
 }
 
 std::string CsvText(const std::string& s) {
@@ -219,12 +179,7 @@ Sweep Parse(const std::string& file, double max_cases) {
       } else {
         const int count = e["count"].Integer(1);
         if (count > max_cases) e["count"].FailWith("more than the cap of " + Fmt(max_cases, "%.3g") + " cases");
-        for (int k = 0; k < count; ++k) {
-          const double u = count == 1 ? 0.0 : static_cast<double>(k) / (count - 1);
-          const double x = v.log ? std::exp(std::log(v.lo) + u * (std::log(v.hi) - std::log(v.lo)))
-                                 : v.lo + u * (v.hi - v.lo);
-          v.values.push_back(Level(k == count - 1 && count > 1 ? v.hi : x, v));
-        }
+        v.values = RangeLevels(v, count);
       }
     }
     if (s.design == "factorial") cases *= static_cast<double>(v.values.size());
@@ -272,63 +227,6 @@ Sweep Parse(const std::string& file, double max_cases) {
   }
   s.case_outputs = root.BoolOr("case_outputs", false);
   return s;
-}
-
-std::vector<std::vector<json>> Cases(const Sweep& s) {
-  std::vector<std::vector<json>> cases;
-  const size_t dims = s.vary.size();
-  if (s.design == "factorial") {
-    // The first field varies slowest: the cases read like nested loops in the order written.
-    std::vector<size_t> at(dims, 0);
-    while (true) {
-      std::vector<json> c;
-      for (size_t d = 0; d < dims; ++d) c.push_back(s.vary[d].values[at[d]]);
-      cases.push_back(std::move(c));
-      size_t d = dims;
-      while (d > 0) {
-        --d;
-        if (++at[d] < s.vary[d].values.size()) break;
-        at[d] = 0;
-        if (d == 0) return cases;
-      }
-      if (dims == 0) return cases;
-    }
-  }
-  if (s.design == "zip") {
-    for (size_t i = 0; i < s.vary.front().values.size(); ++i) {
-      std::vector<json> c;
-      for (const Variation& v : s.vary) c.push_back(v.values[i]);
-      cases.push_back(std::move(c));
-    }
-    return cases;
-  }
-  const size_t n = static_cast<size_t>(s.samples);
-  std::vector<std::vector<double>> u(n, std::vector<double>(dims));
-  if (s.design == "latin_hypercube") {
-    // One sample in each of n equal strata of every field; the strata are paired at random
-    // (a permutation per field) and each sample is placed at random within its stratum.
-    std::mt19937_64 rng(s.seed);
-    for (size_t d = 0; d < dims; ++d) {
-      std::vector<size_t> strata(n);
-      for (size_t i = 0; i < n; ++i) strata[i] = i;
-      for (size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[rng() % i]);  // Fisher-Yates
-      for (size_t i = 0; i < n; ++i)
-        u[i][d] = (static_cast<double>(strata[i]) + Uniform(rng)) / static_cast<double>(n);
-    }
-  } else {
-    // Boost.Random's Sobol sequence (its own table of direction numbers); the first point (the
-    // origin, a corner of the box) is skipped.
-    boost::random::sobol gen(dims);
-    gen.discard(dims);
-    for (size_t i = 0; i < n; ++i)
-      for (size_t d = 0; d < dims; ++d) u[i][d] = std::ldexp(static_cast<double>(gen()), -64);
-  }
-  for (size_t i = 0; i < n; ++i) {
-    std::vector<json> c;
-    for (size_t d = 0; d < dims; ++d) c.push_back(AtFraction(s.vary[d], std::min(u[i][d], 1.0 - 0x1.0p-53)));
-    cases.push_back(std::move(c));
-  }
-  return cases;
 }
 
 json CaseStudy(const Sweep& s, const std::vector<json>& inputs) {
@@ -420,107 +318,6 @@ void SetInterruptHint(std::string hint) {
   Hint() = std::move(hint);
 }
 
-// ---- The output folder, the partial folder and its checkpoints ------------------------------
-
-fs::path NormalOut(const std::string& dir) {
-  fs::path out = fs::path(dir).lexically_normal();
-  if (out.has_parent_path() && !out.has_filename()) out = out.parent_path();  // "out/"
-  if (out.empty() || out == "." || out == ".." || out == "/" || out.filename() == "..")
-    throw StudyError("--out " + dir + ": expected a folder name for the results, found " +
-                     (dir.empty() ? std::string("nothing") : dir));
-  return out;
-}
-
-// An existing --out is replaced only when it is empty or holds a previous sweep (cases.csv, and
-// no sub-folder other than cases/): camopt never deletes the user's other folders.
-void CheckReplaceable(const fs::path& out, const std::string& dir) {
-  std::error_code ec;
-  if (!fs::exists(fs::symlink_status(out, ec))) return;
-  if (!fs::is_directory(fs::symlink_status(out, ec)))
-    throw StudyError("--out " + dir + ": exists and is not a folder");
-  bool empty = true, sweep = false, other = false;
-  for (const auto& e : fs::directory_iterator(out, ec)) {
-    empty = false;
-    const std::string name = e.path().filename().string();
-    if (name == "cases.csv") sweep = true;
-    if (e.is_directory(ec) && name != "cases") other = true;
-  }
-  if (ec) throw StudyError("--out " + dir + ": cannot read the folder: " + ec.message());
-  if (!empty && (!sweep || other))
-    throw StudyError("--out " + dir + ": the folder holds files that are not a camopt sweep " +
-                     "(no cases.csv, or other sub-folders); choose a new or empty folder");
-}
-
-std::string CheckpointName(int rank) { return "checkpoint-" + std::to_string(rank) + ".jsonl"; }
-
-// The checkpoint of one rank: a header line with the sweep's fingerprint, then one line per
-// finished case, each written with one write() as soon as the case ends (an interrupt loses
-// only the cases under way; a line cut short is ignored on resume).
-class Checkpoint {
- public:
-  Checkpoint(const fs::path& file, const std::string& header) {
-    fd_ = open(file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-    if (fd_ < 0)
-      throw StudyError("--out: cannot create the checkpoint " + file.string() + ": " + std::strerror(errno));
-    if (lseek(fd_, 0, SEEK_END) == 0) Write(header + "\n");
-    else Write("\n");  // ends a line cut short by an interrupt (an empty line is skipped)
-  }
-  ~Checkpoint() {
-    if (fd_ >= 0) close(fd_);
-  }
-  void Append(const CaseRecord& r) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    Write(r.ToJson().dump() + "\n");
-  }
-
- private:
-  void Write(const std::string& line) {
-    size_t done = 0;
-    while (done < line.size()) {
-      const ssize_t n = write(fd_, line.data() + done, line.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) throw StudyError(std::string("cannot write the checkpoint: ") + std::strerror(errno));
-      done += static_cast<size_t>(n);
-    }
-  }
-  int fd_ = -1;
-  std::mutex mutex_;
-};
-
-// The finished cases of every checkpoint in the partial folder.
-std::map<size_t, CaseRecord> ReadCheckpoints(const fs::path& partial, const std::string& header,
-                                             size_t n_cases, size_t n_outputs) {
-  std::map<size_t, CaseRecord> done;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(partial, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("checkpoint-", 0) != 0) continue;
-    std::istringstream in(ReadFileCapped(e.path().string(), size_t{1} << 34, "checkpoint"));
-    std::string line;
-    if (!std::getline(in, line) || line != header)
-      throw StudyError("--resume: " + e.path().string() +
-                       " is the checkpoint of another sweep (the sweep file or its base study "
-                       "changed); run without --resume to start again");
-    while (std::getline(in, line)) {
-      if (line.empty()) continue;
-      try {
-        CaseRecord r = CaseRecord::FromJson(json::parse(line));
-        if (r.index < n_cases && r.outputs.size() == n_outputs) done.emplace(r.index, std::move(r));
-      } catch (const std::exception&) {
-        // a line cut short by an interrupt: that case runs again
-      }
-    }
-  }
-  return done;
-}
-
-std::string CaseFolderName(size_t index, size_t n_cases) {
-  const int width = std::max<int>(4, static_cast<int>(std::to_string(n_cases - 1).size()));
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%0*zu", width, index);
-  return buf;
-}
-
 // Runs `pending` cases on `jobs` threads; each finished record goes to the checkpoint (and its
 // files to cases/NNNN) before it counts as done.
 std::vector<CaseRecord> RunPool(const Sweep& s, const std::vector<std::vector<json>>& cases,
@@ -584,35 +381,6 @@ int DefaultJobs(int local_ranks) {
   return std::max(1, static_cast<int>(cores) / std::max(1, local_ranks));
 }
 
-// An advisory lock (flock) on `<out>.camopt-sweep-lock`, held while a sweep runs into out; the
-// file goes when the sweep ends. A killed sweep's lock is released by the kernel.
-class SweepLock {
- public:
-  SweepLock() = default;
-  SweepLock(const SweepLock&) = delete;
-  SweepLock& operator=(const SweepLock&) = delete;
-  ~SweepLock() {
-    if (fd_ < 0) return;
-    ::unlink(path_.c_str());
-    ::close(fd_);
-  }
-  void Take(const fs::path& out, const std::string& given) {
-    path_ = out.string() + ".camopt-sweep-lock";
-    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw StudyError("--out " + given + ": cannot create the lock " + path_ + ": " + std::strerror(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(fd_);
-      fd_ = -1;
-      throw StudyError("--out " + given + ": another sweep is running into this folder (it holds " + path_ +
-                       "); wait for it to end or choose another folder");
-    }
-  }
-
- private:
-  std::string path_;
-  int fd_ = -1;
-};
-
 // The merged folder: written into the partial folder, which then replaces --out in one rename.
 void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
                  std::vector<CaseRecord> records, const fs::path& partial, const fs::path& out,
@@ -657,9 +425,7 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
   // The merged files first: when they cannot be written (a full disk) the checkpoints stay and
   // --resume finds every case done. Removing the checkpoints and the rename need no space.
   WriteFilesInto(partial.string(), outputs);
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(partial, ec))
-    if (e.path().filename().string().rfind("checkpoint-", 0) == 0) fs::remove(e.path(), ec);
+  RemoveCheckpoints(partial);
   MoveFolderIn(partial.string(), out.string());
 }
 
@@ -679,7 +445,7 @@ int Run(const Options& o, World& world) {
       return 0;
     }
     out = NormalOut(o.out);
-    partial = out.string() + ".camopt-sweep";
+    partial = PartialFolder(out);
     CheckReplaceable(out, o.out);
   } catch (const StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";
@@ -691,10 +457,7 @@ int Run(const Options& o, World& world) {
     std::cerr << "camopt: error: " << why << "\n";
     return 2;
   }
-  json header_json = {{"base", s.base}, {"cases", cases}, {"outputs", json::array()},
-                      {"case_outputs", s.case_outputs}};
-  for (const OutputColumn& c : s.outputs) header_json["outputs"].push_back(c.path);
-  const std::string header = json({{"sweep_fingerprint", Fingerprint(header_json.dump())}}).dump();
+  const std::string header = CheckpointHeader(s, cases);
   const std::string label =
       "sweep " + s.name + (world.size() > 1 ? " (rank " + std::to_string(world.rank()) + " of " +
                                                   std::to_string(world.size()) + ")"
@@ -710,26 +473,7 @@ int Run(const Options& o, World& world) {
   if (world.rank() == 0) {
     try {
       lock.Take(out, o.out);
-      std::error_code ec;
-      const bool had_partial = fs::exists(partial, ec);
-      if (had_partial && !o.resume) {
-        if (!o.quiet)
-          std::cerr << "camopt: " << partial.string()
-                    << " holds an interrupted sweep; starting again (--resume continues it)\n";
-        fs::remove_all(partial, ec);
-      }
-      if (o.resume && !had_partial && !o.quiet)
-        std::cerr << "camopt: nothing to resume in " << partial.string() << "; starting\n";
-      fs::create_directories(partial / (s.case_outputs ? "cases" : ""), ec);
-      if (ec) throw StudyError("--out " + o.out + ": cannot create " + partial.string() + ": " + ec.message());
-      if (o.resume) {
-        done = ReadCheckpoints(partial, header, cases.size(), s.outputs.size());
-        // Case folders being written when the sweep was interrupted (OutputFolder's temporary
-        // siblings): their cases were not checkpointed and run again.
-        for (const auto& e : fs::directory_iterator(partial / "cases", ec))
-          if (e.path().filename().string().find(".camopt-tmp-") != std::string::npos)
-            fs::remove_all(e.path(), ec);
-      }
+      done = OpenPartialFolder(partial, o.out, s, header, cases.size(), o.resume, o.quiet);
       if (o.resume && !done.empty() && !o.quiet)
         std::cerr << "camopt: resuming: " << done.size() << " of " << cases.size()
                   << " cases already done\n";

@@ -6,7 +6,11 @@
 // whatever the number of threads or ranks. Every finished case is appended to a checkpoint at
 // once; `--resume` continues an interrupted sweep from it. The merged folder (cases.csv,
 // pareto.csv, pareto*.svg, report.html, result.json, cases/NNNN/ on request) is moved in whole at
-// the end; studies/sweep_report.h makes the front's plots, the page and the stdout summary.
+// the end. This file parses the sweep and runs its cases; the parts are apart, as OpenMDAO keeps
+// its case generators, drivers and recorders apart: studies/sweep_design.h generates the cases
+// (the designs of experiments), studies/sweep_checkpoint.h keeps the partial folder and its
+// checkpoints, studies/sweep_pareto.h finds the non-dominated front and studies/sweep_report.h
+// makes the front's plots, the page and the stdout summary.
 #pragma once
 
 #include <cstdint>
@@ -51,9 +55,6 @@ struct Sweep {
 /// Reads and checks a sweep file. Throws StudyError "FILE: PATH: expected X, found Y".
 /// `max_cases` caps the number of cases (a sweep file is refused at once when over it).
 Sweep Parse(const std::string& file, double max_cases = 1e6);
-
-/// The cases of the design, in order: for each case, one value per variation.
-std::vector<std::vector<nlohmann::json>> Cases(const Sweep& sweep);
 
 /// The study of one case: the base with the case's values written in.
 nlohmann::json CaseStudy(const Sweep& sweep, const std::vector<nlohmann::json>& inputs);

@@ -1,6 +1,6 @@
-// The Pareto front of a sweep and what shows it: the front's plots (pareto.svg and, with more than
-// two objectives, one panel per pair), the sweep's report.html and its stdout summary. The cases'
-// running and checkpointing stay in studies/sweep.cc.
+// What shows a sweep's Pareto front (studies/sweep_pareto.h): the front's plots (pareto.svg and,
+// with more than two objectives, one panel per pair), the sweep's report.html and its stdout
+// summary. The cases are run in studies/sweep.cc.
 #pragma once
 
 #include <string>
@@ -12,10 +12,6 @@
 #include "studies/sweep.h"
 
 namespace camopt::studies::sweep {
-
-/// The indices (into records) of the non-dominated "ok" records for the sweep's Pareto
-/// objectives, in record order. Records with a non-numeric objective take no part.
-std::vector<size_t> ParetoFront(const Sweep& sweep, const std::vector<CaseRecord>& records);
 
 /// The front's plots as {file name, SVG}: one objective, the objective over the case number; two,
 /// pareto.svg; k > 2, pareto.svg for objectives 1 and 2 and pareto_I_J.svg for each other pair

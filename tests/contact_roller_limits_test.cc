@@ -204,7 +204,7 @@ TEST(RollerContact, LogarithmicCrownDesignFormula) {
 }
 
 TEST(RollerContact, LogarithmicCrownDesignedForItsLoadIsFlat) {
-  // Issue 12: "a logarithmic crown designed for its load gives a nearly flat pressure along the
+  // The requirement: "a logarithmic crown designed for its load gives a nearly flat pressure along the
   // length (p_max / p_mid <= 1.1 with half_space on a converged grid)". The design rule, stated
   // before any number is seen: Fujiwara & Kawase's criterion (the crown that minimises the peak
   // pressure at the design load) on Lundberg's form with the Johns–Gohar effective length, over

@@ -207,15 +207,20 @@ TEST(CycloidGeometryLimits, UndercutMarginAgreesWithCheckDrive) {
     d.roller_radius_mm = rho_max - 0.01;
     d.face_width_mm = 10.0;
     if (PinGapMargin(d) > 0.0) {
-      EXPECT_EQ(CheckDrive(d), "");
+      EXPECT_TRUE(CheckDrive(d).empty());
     }
     EXPECT_NEAR(UndercutMargin(d), 0.01, 1e-12);
     d.roller_radius_mm = rho_max + 0.01;
     EXPECT_NEAR(UndercutMargin(d), -0.01, 1e-12);
-    const std::string why = CheckDrive(d);
+    const auto issues = CheckDrive(d);
+    ASSERT_FALSE(issues.empty());
+    const std::string& why = issues.front().message;
     EXPECT_TRUE(why.find("undercut") != std::string::npos ||
                 why.find("overlap") != std::string::npos)
         << why;
+    // The sampled sharpest radius (the issue's limit on ρ') agrees with the closed form (C3)/(C4).
+    if (why.find("undercut") != std::string::npos)
+      EXPECT_NEAR(issues.front().limit, MinConvexCentreRadius(d), 1e-3);
   }
 }
 

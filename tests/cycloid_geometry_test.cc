@@ -65,7 +65,7 @@ double BruteForceGap(const Drive& d, int i, double crank, double beta) {
 
 TEST(CycloidGeometry, UnmodifiedProfileHasZeroBacklash) {
   const Drive d = PaperDrive(false);
-  EXPECT_EQ(CheckDrive(d), "");
+  EXPECT_TRUE(CheckDrive(d).empty());
   for (double deg : {0.0, 7.0, 120.0, 300.0, 333.3}) {
     const auto m = UnloadedTca<double>(d, deg * kPi / 180.0);
     int loaded = 0;
@@ -208,13 +208,25 @@ TEST(CycloidGeometry, LogarithmicCrowningWithAnEndDropIsFinite) {
 TEST(CycloidGeometry, InfeasibleDrivesAreReported) {
   Drive d = PaperDrive(false);
   d.eccentricity_mm = 6.0;  // e n1 = 96 > a
-  EXPECT_NE(CheckDrive(d), "");
+  auto issues = CheckDrive(d);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "eccentricity_mm");
+  EXPECT_EQ(issues[0].value, 6.0);
+  EXPECT_NEAR(issues[0].limit, d.roller_position_radius_mm / 16.0, 1e-12);  // e < a'/N
+  EXPECT_NE(issues[0].message.find("16 rollers"), std::string::npos) << issues[0].message;
   d = PaperDrive(false);
   d.rollers = 17;
-  EXPECT_NE(CheckDrive(d), "");
+  issues = CheckDrive(d);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "rollers");
+  EXPECT_EQ(issues[0].limit, 16.0);
   d = PaperDrive(false);
   d.roller_radius_mm = 20.0;  // rollers overlap
-  EXPECT_NE(CheckDrive(d), "");
+  issues = CheckDrive(d);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "roller_radius_mm");
+  EXPECT_EQ(issues[0].value, 20.0);
+  EXPECT_NEAR(issues[0].limit, d.roller_position_radius_mm * std::sin(kPi / 16), 1e-12);  // ρ < a sin(π/N)
 }
 
 TEST(CycloidGeometry, UnloadedTcaGradientsMatchCentralDifferences) {

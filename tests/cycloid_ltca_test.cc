@@ -697,7 +697,9 @@ TEST(CycloidStudies, LtcaBadInputExitsWithCode2) {
   camopt::testing::WriteFile(dir / "b.json", s);
   r = camopt::testing::RunCamopt("run " + (dir / "b.json").string() + " --out " + (dir / "o").string() + " --quiet");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("infeasible"), std::string::npos) << r.stderr_text;
+  // e·N = 7.5 × 16 = 120 mm > a' = 90 − 0.016 mm: e must be below a'/N = 5.624 mm.
+  EXPECT_NE(r.stderr_text.find("/drive/eccentricity_mm: eccentricity too large"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("e must be below 5.624 mm"), std::string::npos) << r.stderr_text;
 }
 
 const std::string kTuningStudy = R"({"study": "cycloid_crowning_tuning", "name": "t",)" + kNnmDriveJson + R"(

@@ -397,12 +397,21 @@ TEST(LcrDesignChecks, RejectsImpossibleDesigns) {
   r.input.roller_radius = 9.0;  // 2·37·sin(π/13) = 17.7 < 18
   ASSERT_FALSE(CheckDesign(r).empty());
   EXPECT_EQ(CheckDesign(r)[0].field, "input.roller_diameter_mm");
+  EXPECT_EQ(CheckDesign(r)[0].value, 18.0);
+  EXPECT_NEAR(CheckDesign(r)[0].limit, 2 * 37 * std::sin(kPi / 13), 1e-12);  // d_r < 2 r_d sin(π/n)
   r = LcrII();
   r.output.lobes = 15;
-  EXPECT_FALSE(CheckDesign(r).empty());
+  ASSERT_FALSE(CheckDesign(r).empty());
+  EXPECT_EQ(CheckDesign(r)[0].field, "output.rollers");
+  EXPECT_EQ(CheckDesign(r)[0].limit, 16.0);  // lobes + 1
   r = LcrII();
   r.eccentricity = 3.0;  // pitch point 3·13 = 39 > 37
-  EXPECT_FALSE(CheckDesign(r).empty());
+  const auto loop = CheckDesign(r);
+  ASSERT_FALSE(loop.empty());
+  EXPECT_EQ(loop[0].field, "input.turret_radius_mm");
+  EXPECT_EQ(loop[0].limit, 39.0);
+  // e·13/1 < 37: the eccentricity must be below 37/13 = 2.84615 mm.
+  EXPECT_NE(loop[0].message.find("below 2.84615 mm"), std::string::npos) << loop[0].message;
 }
 
 }  // namespace

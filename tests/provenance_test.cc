@@ -1,4 +1,4 @@
-// Issue 17: provenance (camopt_version, the study's SHA-256, --version), plausibility warnings,
+// Provenance (camopt_version, the study's SHA-256, --version), plausibility warnings,
 // the stdout summary, a clean output folder and a bad --out found before the work.
 #include <array>
 #include <chrono>

@@ -1,8 +1,8 @@
 // The JSON Schemas `camopt schema KIND` prints and the C++ parsers of studies/ accept the same
 // studies (docs/studies.md "Keeping the schemas in step with the parsers", docs/reliability.md
-// item 13). A kind declared once (studies/archive.h, listed in kDeclaredKinds below) has its schema
-// emitted from the declaration; the others have a hand-kept file in studies/schema/. For every study
-// kind, studies are generated from the kind's schema, starting from each
+// item 13). Every kind is declared once (studies/archive.h, listed in kDeclaredKinds below) and has
+// its schema emitted from the declaration. For every study kind, studies are generated from the
+// kind's schema, starting from each
 // example of that kind in studies/examples/: every optional property the schema declares added
 // with a valid value, every enum value, every numeric and item-count bound (at the bound and just
 // outside it), wrong types, a removed property and an unknown one, and the fields the parser

@@ -20,6 +20,8 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/sweep.h"
+#include "studies/sweep_design.h"
+#include "studies/sweep_pareto.h"
 #include "studies/sweep_report.h"
 #include "studies/report.h"
 #include "tests/test_util.h"

@@ -174,7 +174,7 @@ LoadedTca::LoadedTca(const Drive& drive, const Crowning& crowning, const Materia
           contact::SolverOptions{options.solver_tolerance, 2000})),
       rough_solver_(std::make_shared<contact::HalfSpaceSolver>(contact::SolverOptions{
           std::max(options.solver_tolerance, options.rough_solver_tolerance), 2000})) {
-  if (const std::string why = CheckDrive(drive); !why.empty()) throw std::invalid_argument(why);
+  if (const auto issues = CheckDrive(drive); !issues.empty()) throw std::invalid_argument(issues.front().message);
   if (const std::string why = CheckCrowning(crowning, drive.face_width_mm); !why.empty())
     throw std::invalid_argument(why);
   if (!(material.youngs_modulus_MPa > 0 && material.poisson_ratio > -1 && material.poisson_ratio < 0.5))
@@ -500,14 +500,16 @@ LoadedTca LoadedTca::WithModification(double delta_position_mm, double delta_rad
   LoadedTca copy = *this;
   copy.drive_.delta_position_mm = delta_position_mm;
   copy.drive_.delta_radius_mm = delta_radius_mm;
-  if (const std::string why = CheckDrive(copy.drive_); !why.empty()) throw std::invalid_argument(why);
+  if (const auto issues = CheckDrive(copy.drive_); !issues.empty())
+    throw std::invalid_argument(issues.front().message);
   return copy;
 }
 
 LoadedTca LoadedTca::WithDesign(const Drive& drive, const Crowning& crowning) const {
   LoadedTca copy = *this;
   copy.drive_ = drive;
-  if (const std::string why = CheckDrive(copy.drive_); !why.empty()) throw std::invalid_argument(why);
+  if (const auto issues = CheckDrive(copy.drive_); !issues.empty())
+    throw std::invalid_argument(issues.front().message);
   copy.SetCrowning(crowning);
   return copy;
 }

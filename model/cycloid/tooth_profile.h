@@ -12,9 +12,13 @@
 // wheel at a' = a + Δa and of radius ρ' = ρ + Δρ; the mating rollers keep a and ρ.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "model/common/design_issue.h"
 #include "model/common/geometry.h"
 #include "model/common/scalar.h"
 
@@ -86,30 +90,63 @@ T NominalParameter(const DriveTpl<T>& d, int i, const T& crank) {
   return T(2.0 * kPi * i / d.rollers) + crank / double(d.teeth);
 }
 
-/// Checks that a design is a drive: returns "" or why it is not (infeasible geometry).
+/// Checks that a design is a drive: empty, or why it is not (infeasible geometry), each issue on
+/// a field of Drive ("teeth", "rollers", "roller_position_radius_mm", "roller_radius_mm",
+/// "eccentricity_mm", "face_width_mm", "delta_radius_mm"); value and limit in mm or counts.
 /// n1 = n2 + 1; lengths positive; K1 = e n1 / a' < 1 (the roller-centre curve has no loops);
-/// rollers do not overlap; the tooth is not undercut (every convex radius of X' exceeds ρ').
-inline std::string CheckDrive(const Drive& d) {
-  if (d.teeth < 2) return "the cycloid gear needs at least 2 teeth";
-  if (d.rollers != d.teeth + 1) return "rollers must be teeth + 1 (one-tooth-difference drive)";
+/// rollers do not overlap; the tooth is not undercut (every convex radius of X' exceeds ρ'). The
+/// first failed rule ends the check.
+inline std::vector<DesignIssue> CheckDrive(const Drive& d) {
+  auto n = [](double v, int digits = 6) { return IssueNumber(v, digits); };
+  const std::string teeth = std::to_string(d.teeth), rollers = std::to_string(d.rollers);
+  if (d.teeth < 2)
+    return {{"teeth", "the cycloid gear needs at least 2 teeth, found " + teeth, double(d.teeth), 2.0}};
+  if (d.rollers != d.teeth + 1)
+    return {{"rollers",
+             "rollers must be teeth + 1 (one-tooth-difference drive): found " + rollers + " rollers for " + teeth +
+                 " teeth; " + std::to_string(d.teeth + 1) + " rollers would fit",
+             double(d.rollers), double(d.teeth + 1)}};
+  for (const auto& [field, v] : {std::pair<const char*, double>{"roller_position_radius_mm", d.roller_position_radius_mm},
+                                 {"roller_radius_mm", d.roller_radius_mm},
+                                 {"eccentricity_mm", d.eccentricity_mm},
+                                 {"face_width_mm", d.face_width_mm}})
+    if (!(v > 0)) return {{field, std::string(field) + " must be > 0, found " + n(v), v, 0.0}};
   const double a = d.roller_position_radius_mm + d.delta_position_mm;
   const double rho = d.roller_radius_mm + d.delta_radius_mm;
-  if (!(d.roller_position_radius_mm > 0 && d.roller_radius_mm > 0 && d.eccentricity_mm > 0 &&
-        d.face_width_mm > 0))
-    return "roller position, roller radius, eccentricity and face width must be > 0";
-  if (!(rho > 0)) return "the modified roller radius rho + delta_rho must be > 0";
+  if (!(rho > 0))
+    return {{"delta_radius_mm",
+             "the modified roller radius rho + delta_rho = " + n(rho) + " mm must be > 0: a delta_rho above " +
+                 n(-d.roller_radius_mm) + " mm would fit",
+             rho, 0.0}};
   if (!(d.eccentricity_mm * d.rollers < a))
-    return "eccentricity too large: e * rollers must be < roller position radius (K1 < 1)";
-  if (!(2.0 * d.roller_position_radius_mm * std::sin(kPi / d.rollers) > 2.0 * d.roller_radius_mm))
-    return "rollers overlap: 2 a sin(pi / rollers) must exceed 2 rho";
+    return {{"eccentricity_mm",
+             "eccentricity too large: e * rollers = " + n(d.eccentricity_mm * d.rollers) +
+                 " mm must be < the roller position radius a + delta_a = " + n(a) + " mm (K1 = " +
+                 n(d.eccentricity_mm * d.rollers / a, 4) + " < 1): e must be below " + n(a / d.rollers) + " mm for " +
+                 rollers + " rollers on a " + n(a) + " mm pin circle",
+             d.eccentricity_mm, a / d.rollers}};
+  const double half_chord = d.roller_position_radius_mm * std::sin(kPi / d.rollers);
+  if (!(2.0 * half_chord > 2.0 * d.roller_radius_mm))
+    return {{"roller_radius_mm",
+             "rollers overlap: 2 a sin(pi / rollers) = " + n(2.0 * half_chord) + " mm must exceed 2 rho = " +
+                 n(2.0 * d.roller_radius_mm) + " mm: a roller radius below " + n(half_chord) + " mm for " + rollers +
+                 " rollers on a " + n(d.roller_position_radius_mm) + " mm pin circle would fit",
+             d.roller_radius_mm, half_chord}};
   // Undercut: sample one tooth finely for the largest convex curvature of X'.
-  const int n = 2000;
-  for (int k = 0; k <= n; ++k) {
-    const double t = 2.0 * kPi / d.teeth * k / n;
-    const double kappa = ToothProfile(d, t).centre_curvature;
-    if (kappa * rho >= 1.0) return "the tooth profile is undercut (a convex radius < rho)";
+  const int samples = 2000;
+  double kappa_max = 0.0;
+  for (int k = 0; k <= samples; ++k) {
+    const double t = 2.0 * kPi / d.teeth * k / samples;
+    kappa_max = std::max(kappa_max, ToothProfile(d, t).centre_curvature);
   }
-  return "";
+  if (kappa_max * rho >= 1.0)
+    return {{"roller_radius_mm",
+             "the tooth profile is undercut (a convex radius < rho): the roller-centre curve's sharpest convex "
+             "radius is " + n(1.0 / kappa_max) + " mm, below rho + delta_rho = " + n(rho) +
+                 " mm; a roller radius below " + n(1.0 / kappa_max - d.delta_radius_mm) +
+                 " mm (or a smaller eccentricity) would fit",
+             rho, 1.0 / kappa_max}};
+  return {};
 }
 
 }  // namespace camopt::cycloid

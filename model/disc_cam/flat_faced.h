@@ -113,14 +113,14 @@ inline double FlatFaceContactStress(const FlatFacePoint<double>& p, double force
 }
 
 /// Feasibility of a flat-faced follower's program over angle_steps cam angles: the first angle where
-/// the follower goes inside the base circle (S < −1e-9 r_b), as CheckDesign's kInsideBaseCircle.
+/// the follower goes inside the base circle (S < −1e-9 r_b), as CheckDesign's (InsideBaseCircleIssue).
 /// The flat face cannot jam (φ = 0); a cusp (ρ ≤ 0) is a result, not an input error.
 inline std::vector<DesignIssue> CheckFlatFaced(const motion::MotionProgram<double>& program, double base_radius,
                                                int angle_steps) {
   for (int i = 0; i < angle_steps; ++i) {
     const double theta = 2 * kPi * i / angle_steps;
     const double s = program.Evaluate(theta).s;
-    if (s < -1e-9 * base_radius) return {{IssueKind::kInsideBaseCircle, s, 0.0, 0.0, theta}};
+    if (s < -1e-9 * base_radius) return {InsideBaseCircleIssue(s, theta, false)};
   }
   return {};
 }

@@ -1,23 +1,44 @@
 #include "model/globoidal/check.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace camopt::globoidal {
+
+namespace {
+constexpr double kDeg = kPi / 180.0;
+}  // namespace
 
 std::vector<DesignIssue> CheckGeometry(const GloboidalCam<double>& cam) {
   std::vector<DesignIssue> issues;
   const auto lim = RollerAxisLimits(cam);
   if (!(lim.l2 > 0.0))
-    issues.push_back({IssueKind::kRollerPastTurretAxis, cam.roller_length, 0.0,
-                      2.0 * cam.pitch_radius});
+    issues.push_back({"roller_length",
+                      "the roller (length " + IssueNumber(cam.roller_length) +
+                          " mm) reaches past the turret axis: need m/2 < R_e = " + IssueNumber(cam.pitch_radius) +
+                          " mm; a roller length below " + IssueNumber(2.0 * cam.pitch_radius) + " mm would fit",
+                      cam.roller_length, 2.0 * cam.pitch_radius});
   // The trajectory stays on the turret's side of the cam axis, C − l₁ cos φ > 0 for every φ, when
   // C > l₁; the roller's radius is added so that the roller itself stays clear.
   if (!(cam.center_distance > lim.l1 + cam.roller_radius))
-    issues.push_back({IssueKind::kRollersReachCamAxis, cam.center_distance,
-                      lim.l1 + cam.roller_radius, 0.0});
-  if (!(RibThickness(cam) > 0.0))
-    issues.push_back({IssueKind::kRollersOverlap, 2.0 * lim.l2 * std::sin(cam.roller_angle / 2),
-                      2 * cam.roller_radius, 0.0});
+    issues.push_back({"center_distance",
+                      "the rollers reach the cam axis: need C > l₁ + R = " + IssueNumber(lim.l1 + cam.roller_radius) +
+                          " mm (l₁ = R_e + m/2 + e, eq. 8), found C = " + IssueNumber(cam.center_distance) +
+                          " mm; a center distance above " + IssueNumber(lim.l1 + cam.roller_radius) +
+                          " mm would fit",
+                      cam.center_distance, lim.l1 + cam.roller_radius});
+  if (!(RibThickness(cam) > 0.0)) {
+    const double chord = 2.0 * lim.l2 * std::sin(cam.roller_angle / 2);
+    std::string fix = "a roller radius below l₂ sin(β/2) = " + IssueNumber(chord / 2) + " mm";
+    if (lim.l2 > 0.0 && cam.roller_radius < lim.l2)
+      fix = "a roller angle above " + IssueNumber(2.0 * std::asin(cam.roller_radius / lim.l2) / kDeg) + " deg, or " + fix;
+    issues.push_back({"roller_angle",
+                      "the two rollers overlap (no rib between them): need 2 l₂ sin(β/2) > 2R, found " +
+                          IssueNumber(chord) + " mm ≤ " + IssueNumber(2 * cam.roller_radius) + " mm; " + fix +
+                          " would fit",
+                      chord, 2 * cam.roller_radius});
+  }
   return issues;
 }
 
@@ -27,8 +48,17 @@ std::vector<DesignIssue> CheckSwing(const GloboidalCam<double>& cam) {
     const double v = cam.motion.Evaluate(2 * kPi * i / 3600).s;
     lo = std::min(lo, v), hi = std::max(hi, v);
   }
-  if (lo < -1e-9 || std::abs(hi - cam.swing) > 1e-6)
-    return {{IssueKind::kSwingRange, cam.swing, lo, hi}};
+  if (lo < -1e-9 || std::abs(hi - cam.swing) > 1e-6) {
+    const bool below = lo < -1e-9;
+    return {{"motion",
+             "the swing must run from 0 to swing_deg = " + IssueNumber(cam.swing / kDeg) +
+                 " deg (rise first, in the first motion's direction); it runs from " + IssueNumber(lo / kDeg) +
+                 " to " + IssueNumber(hi / kDeg) + " deg: " +
+                 (below ? std::string("start with the rise, so that the turret never swings below its start")
+                        : "rises that sum to " + IssueNumber(cam.swing / kDeg) + " deg (or swing_deg = " +
+                              IssueNumber(hi / kDeg) + ") would fit"),
+             below ? lo : hi, below ? 0.0 : cam.swing}};
+  }
   return {};
 }
 
@@ -36,7 +66,10 @@ std::vector<DesignIssue> CheckContactArm(const DynamicsInput& in) {
   if (!(in.contact_arm_mm > 0.0)) return {};
   const auto lim = RollerAxisLimits(in.cam);
   if (in.contact_arm_mm < lim.l2 || in.contact_arm_mm > lim.l1)
-    return {{IssueKind::kContactArmOutside, in.contact_arm_mm, lim.l2, lim.l1}};
+    return {{"contact_arm_mm",
+             "expected a length in [l₂, l₁] = [" + IssueNumber(lim.l2) + ", " + IssueNumber(lim.l1) +
+                 "] mm (the contact arm lies on the roller), found " + IssueNumber(in.contact_arm_mm) + " mm",
+             in.contact_arm_mm, in.contact_arm_mm < lim.l2 ? lim.l2 : lim.l1}};
   return {};
 }
 
@@ -99,7 +132,13 @@ std::vector<DesignIssue> CheckDesign(const DynamicsInput& in, int angle_steps, i
   issues.insert(issues.end(), arm.begin(), arm.end());
   const CycleSurvey survey = SurveyCycle(in.cam, ContactArm(in), angle_steps, axis_steps);
   if (!(survey.max_abs_pressure_angle.value < kJamPressureAngle))
-    issues.push_back({IssueKind::kJams, survey.max_abs_pressure_angle.value, 0.0, 0.0,
+    issues.push_back({"motion",
+                      "infeasible design: the pressure angle reaches " +
+                          IssueNumber(survey.max_abs_pressure_angle.value / kDeg) + " deg at cam angle " +
+                          IssueNumber(survey.max_abs_pressure_angle.cam_angle_rad / kDeg) +
+                          " deg (the turret would jam; the limit is " + IssueNumber(kJamPressureAngle / kDeg) +
+                          " deg): a longer cam angle for that motion segment lowers it",
+                      survey.max_abs_pressure_angle.value, kJamPressureAngle,
                       survey.max_abs_pressure_angle.cam_angle_rad});
   return issues;
 }

@@ -1,7 +1,8 @@
 // Feasibility and cycle extremes of a globoidal cam design: the rollers fit (they end before the
 // turret axis, stay off the cam axis, leave a rib between them), the swing program runs between
 // the dead points, the contact arm lies on the roller, and the pressure angle stays below the jam
-// limit. Returns named issues; a study maps each kind to the JSON path of its input.
+// limit. Returns DesignIssues (model/common/design_issue.h) on the cam's fields; a study maps them
+// to the JSON paths of its inputs (studies/design_issue_paths.h).
 //
 // The cycle survey samples the surfaces on a uniform cam-angle grid plus 64 points inside every
 // motion segment (so that a short segment is never stepped over), over roller 1 and 2 and
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <vector>
 
+#include "model/common/design_issue.h"
 #include "model/common/scalar.h"
 #include "model/globoidal/contact_dynamics.h"
 #include "model/globoidal/globoidal.h"
@@ -34,34 +36,18 @@ T RibThickness(const GloboidalCam<T>& cam) {
          T(2.0) * cam.roller_radius;
 }
 
-enum class IssueKind {
-  /// l₂ = R_e − m/2 ≤ 0: the roller reaches past the turret axis. value = m, upper = 2 R_e [mm].
-  kRollerPastTurretAxis,
-  /// C ≤ l₁ + R: the rollers reach the cam axis. value = C, lower = l₁ + R [mm].
-  kRollersReachCamAxis,
-  /// RibThickness ≤ 0: the rollers overlap. value = 2 l₂ sin(β/2), lower = 2R [mm].
-  kRollersOverlap,
-  /// The swing does not run from 0 to φ_f (eq. 7 places the dead points there).
-  /// value = φ_f, lower/upper = the sampled minimum/maximum of φ_i [rad].
-  kSwingRange,
-  /// The contact arm lies outside [l₂, l₁]. value = l_c, lower = l₂, upper = l₁ [mm].
-  kContactArmOutside,
-  /// max |α| ≥ kJamPressureAngle: the turret jams. value = max |α| [rad] (see CycleSurvey).
-  kJams,
-};
-
-struct DesignIssue {
-  IssueKind kind;
-  double value = 0.0;
-  double lower = 0.0, upper = 0.0;
-  double cam_angle_rad = 0.0;  ///< kJams: where the largest pressure angle is met
-};
-
-/// The fit of the rollers (does not look at the motion program).
+/// The fit of the rollers (does not look at the motion program):
+///   - "roller_length": l₂ = R_e − m/2 ≤ 0, the roller reaches past the turret axis; value m,
+///     limit 2 R_e [mm];
+///   - "center_distance": C ≤ l₁ + R, the rollers reach the cam axis; value C, limit l₁ + R [mm];
+///   - "roller_angle": RibThickness ≤ 0, the rollers overlap; value 2 l₂ sin(β/2), limit 2R [mm].
 std::vector<DesignIssue> CheckGeometry(const GloboidalCam<double>& cam);
-/// The swing program runs from 0 to φ_f (3600 samples; 1e-9 rad below 0, 1e-6 rad at the top).
+/// "motion": the swing program runs from 0 to φ_f (eq. 7 places the dead points there; 3600
+/// samples, 1e-9 rad below 0, 1e-6 rad at the top); value the sampled minimum (when below 0) or
+/// maximum of φ_i, limit 0 or φ_f [rad].
 std::vector<DesignIssue> CheckSwing(const GloboidalCam<double>& cam);
-/// A given contact arm (contact_arm_mm > 0) lies in [l₂, l₁].
+/// "contact_arm_mm": a given contact arm (contact_arm_mm > 0) lies in [l₂, l₁]; value l_c, limit
+/// the bound it passes [mm].
 std::vector<DesignIssue> CheckContactArm(const DynamicsInput& in);
 
 /// An extreme over the survey samples: the first sample that reaches it.
@@ -101,7 +87,9 @@ CycleSurvey SurveyCycle(const GloboidalCam<double>& cam, double contact_arm_mm, 
                         int axis_steps);
 
 /// Every check in order: geometry (when it fails, nothing else is checked), swing, contact arm,
-/// and the jam limit over the cycle survey of ContactArm(in).
+/// and the jam limit over the cycle survey of ContactArm(in) ("motion": max |α| ≥
+/// kJamPressureAngle, the turret jams; value max |α|, limit kJamPressureAngle [rad], at the cam
+/// angle where it is met).
 std::vector<DesignIssue> CheckDesign(const DynamicsInput& in, int angle_steps, int axis_steps);
 
 }  // namespace camopt::globoidal

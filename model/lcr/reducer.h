@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "model/common/design_issue.h"
 #include "model/common/material.h"
 #include "model/common/scalar.h"
 
@@ -64,58 +65,80 @@ struct LoadCase {
   double cam_weight_N = 0.0;          // W_c, acting in −y of the fixed frame
 };
 
-/// A design problem that makes the reducer impossible (not a numerical condition).
-struct DesignProblem {
-  std::string field;    // e.g. "input.rollers", relative to the reducer object
-  std::string message;  // what is wrong
-};
-
 /// Structural checks of a design: counts, positive sizes, rollers that overlap, a pitch point
 /// outside the turret circle (the pitch curve would loop). Empty when the design is buildable.
-/// Undercut is not a structural problem: it is reported by the undercut stage.
+/// Undercut is not a structural problem: it is reported by the undercut stage. Each issue's field
+/// is relative to the reducer's study object ("eccentricity_mm", "input.rollers",
+/// "output.roller_diameter_mm", ...); value and limit in its units [mm or a count].
 template <typename T>
-std::vector<DesignProblem> CheckDesign(const Reducer<T>& r) {
-  std::vector<DesignProblem> problems;
-  if (!(Value(r.eccentricity) > 0)) problems.push_back({"eccentricity_mm", "must be > 0"});
+std::vector<DesignIssue> CheckDesign(const Reducer<T>& r) {
+  std::vector<DesignIssue> problems;
+  auto n = [](double v) { return IssueNumber(v); };
+  auto positive = [&](const std::string& field, const char* what, double v) {
+    if (!(v > 0)) problems.push_back({field, "the " + std::string(what) + " " + n(v) + " mm must be > 0", v, 0.0});
+  };
+  positive("eccentricity_mm", "eccentricity", Value(r.eccentricity));
   for (Side s : {Side::kInput, Side::kOutput}) {
     const CamSide<T>& c = r.side(s);
     const std::string name = s == Side::kInput ? "input" : "output";
-    if (c.lobes < 1) problems.push_back({name + ".lobes", "must be >= 1"});
+    const std::string lobes = std::to_string(c.lobes), rollers = std::to_string(c.rollers);
+    const std::string one_more = std::to_string(c.lobes + 1);
+    if (c.lobes < 1) problems.push_back({name + ".lobes", lobes + " lobes: the cam needs at least 1", double(c.lobes), 1.0});
     if (c.rollers <= c.lobes) {
-      problems.push_back({name + ".rollers", "must be greater than the number of lobes (" +
-                                                 std::to_string(c.lobes) + ")"});
+      problems.push_back({name + ".rollers",
+                          "expected more rollers than lobes (" + lobes + "), found " + rollers + ": " + one_more +
+                              " rollers (lobes + 1) would fit",
+                          double(c.rollers), double(c.lobes + 1)});
       continue;
     }
-    if (std::gcd(c.lobes, c.rollers) != 1)
-      problems.push_back({name + ".rollers", "lobes and rollers must have no common divisor, " +
-                                                 std::to_string(c.lobes) + " and " +
-                                                 std::to_string(c.rollers) + " share one"});
+    if (const int g = std::gcd(c.lobes, c.rollers); g != 1)
+      problems.push_back({name + ".rollers",
+                          "lobes and rollers must have no common divisor, " + lobes + " and " + rollers +
+                              " share " + std::to_string(g) + ": " + one_more + " rollers (lobes + 1) would fit",
+                          double(c.rollers), double(c.lobes + 1)});
     if (c.difference() != 1)
       problems.push_back({name + ".rollers",
                           "rollers − lobes = " + std::to_string(c.difference()) +
                               ": a difference above 1 makes the pitch curve wind " +
-                              std::to_string(c.difference()) + " times (a self-crossing cam)"});
-    if (!(Value(c.turret_radius) > 0)) problems.push_back({name + ".turret_radius_mm", "must be > 0"});
-    if (!(Value(c.roller_radius) > 0)) problems.push_back({name + ".roller_diameter_mm", "must be > 0"});
-    if (!(Value(c.roller_length) > 0)) problems.push_back({name + ".roller_length_mm", "must be > 0"});
-    if (!(Value(c.cam_thickness) > 0)) problems.push_back({name + ".cam_thickness_mm", "must be > 0"});
+                              std::to_string(c.difference()) + " times (a self-crossing cam); " + one_more +
+                              " rollers (lobes + 1) would fit",
+                          double(c.rollers), double(c.lobes + 1)});
+    positive(name + ".turret_radius_mm", "turret radius", Value(c.turret_radius));
+    positive(name + ".roller_diameter_mm", "roller diameter", 2 * Value(c.roller_radius));
+    positive(name + ".roller_length_mm", "roller length", Value(c.roller_length));
+    positive(name + ".cam_thickness_mm", "cam thickness", Value(c.cam_thickness));
     if (!problems.empty()) continue;
-    const double gap = 2 * Value(c.turret_radius) * std::sin(kPi / c.rollers) - 2 * Value(c.roller_radius);
+    const double chord = 2 * Value(c.turret_radius) * std::sin(kPi / c.rollers);
+    const double gap = chord - 2 * Value(c.roller_radius);
     if (gap <= 0)
       problems.push_back({name + ".roller_diameter_mm",
-                          "rollers overlap on the turret: gap 2 r_d sin(π/n) − d_r = " +
-                              std::to_string(gap) + " mm"});
+                          "rollers overlap on the turret: gap 2 r_d sin(π/n) − d_r = " + n(gap) + " mm for " +
+                              rollers + " rollers of " + n(2 * Value(c.roller_radius)) + " mm on a turret radius of " +
+                              n(Value(c.turret_radius)) + " mm: a roller diameter below " + n(chord) +
+                              " mm, or a turret radius above " +
+                              n(Value(c.roller_radius) / std::sin(kPi / c.rollers)) + " mm, would fit",
+                          2 * Value(c.roller_radius), chord});
     const double pitch = Value(r.eccentricity) * c.pitch_factor();
     if (pitch >= Value(c.turret_radius))
       problems.push_back({name + ".turret_radius_mm",
-                          "the pitch point e·n/(n−m) = " + std::to_string(pitch) +
-                              " mm lies outside the turret radius: the pitch curve loops"});
+                          "the pitch point e·n/(n−m) = " + n(pitch) +
+                              " mm lies outside the turret radius: the pitch curve loops; the eccentricity must be "
+                              "below " + n(Value(c.turret_radius) / c.pitch_factor()) + " mm for " + rollers +
+                              " rollers and " + lobes + " lobes on a " + n(Value(c.turret_radius)) +
+                              " mm turret radius (or the turret radius above " + n(pitch) + " mm)",
+                          Value(c.turret_radius), pitch});
     if (Value(c.roller_radius) >= Value(c.turret_radius))
-      problems.push_back({name + ".roller_diameter_mm", "roller radius must be below the turret radius"});
+      problems.push_back({name + ".roller_diameter_mm",
+                          "the roller radius " + n(Value(c.roller_radius)) + " mm must be below the turret radius " +
+                              n(Value(c.turret_radius)) + " mm",
+                          Value(c.roller_radius), Value(c.turret_radius)});
   }
   if (problems.empty() && long(r.input.lobes) * r.output.rollers == long(r.output.lobes) * r.input.rollers)
-    problems.push_back({"output.lobes", "m_A·n_B = m_B·n_A = " + std::to_string(long(r.input.lobes) * r.output.rollers) +
-                                            ": the output turret stands still (infinite speed ratio)"});
+    problems.push_back({"output.lobes",
+                        "m_A·n_B = m_B·n_A = " + std::to_string(long(r.input.lobes) * r.output.rollers) +
+                            ": the output turret stands still (infinite speed ratio); output lobes other than the "
+                            "input's (" + std::to_string(r.input.lobes) + ") would turn it",
+                        double(r.output.lobes), double(r.input.lobes)});
   return problems;
 }
 

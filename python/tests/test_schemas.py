@@ -1,5 +1,5 @@
 """The JSON Schemas of the study kinds (`camopt schema KIND`: emitted from the kind's declaration,
-studies/archive.h, or a hand-kept file of studies/schema/): every example validates against its
+studies/archive.h): every example validates against its
 kind's schema, the files are what `camopt schema KIND` prints, and a set of bad studies is rejected
 both by the schema and by camopt's own checks (the C++ parser, through the Python module)."""
 import json
