@@ -960,6 +960,42 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   }
 
   bool loads_ok = true;
+  // The loads' extremes over the cycle and the kinetostatic jump speed (null, with a note, when
+  // nothing decelerates the follower); returns whether contact holds.
+  const auto add_extremes = [&](const Result::Loads& L, nlohmann::json& o, const char* never_jumps) {
+    o["min_contact_force_N"] = L.min_contact_force_N.value;
+    o["at_min_contact_force_cam_angle_deg"] = L.min_contact_force_N.cam_angle_deg;
+    o["max_contact_force_N"] = L.max_contact_force_N.value;
+    o["at_max_contact_force_cam_angle_deg"] = L.max_contact_force_N.cam_angle_deg;
+    o["separation_ok"] = L.min_contact_force_N.value > 0.0;
+    o["max_camshaft_torque_Nm"] = L.max_abs_camshaft_torque_Nm.value;
+    o["at_max_camshaft_torque_cam_angle_deg"] = L.max_abs_camshaft_torque_Nm.cam_angle_deg;
+    o["camshaft_torque_range_Nm"] = {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm};
+    if (std::isfinite(L.jump_speed_rpm)) {
+      o["jump_speed_rpm"] = L.jump_speed_rpm;
+    } else {
+      o["jump_speed_rpm"] = nullptr;
+      j["notes"].push_back(never_jumps);
+    }
+    return L.min_contact_force_N.value > 0.0;
+  };
+  // The peak Hertz stress and its limit; returns whether the limit holds (true without one).
+  const auto add_stress = [&](const Result::Loads& L, nlohmann::json& o, const char* cusp_note) {
+    o["face_width_mm"] = *s.face_width_mm;
+    o["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
+    if (L.stress_finite) {
+      o["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
+      o["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
+    } else {
+      o["max_contact_stress_MPa"] = nullptr;  // a loaded point of the profile is undercut (a cusp)
+      j["notes"].push_back(cusp_note);
+    }
+    if (!s.limits.contact_stress_MPa) return true;
+    o["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
+    o["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
+    return o["contact_stress_ok"].get<bool>();
+  };
+  constexpr const char* kFaceCusp = "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)";
   if (r.loads && s.arm_dynamics) {
     // The arm of an oscillating flat face: contact force M/ℓ, camshaft torque M S', jump speed, stress.
     const Result::Loads& L = *r.loads;
@@ -968,37 +1004,10 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"arm_inertia_kg_m2", a.inertia_kg_m2},
                          {"spring_rate_N_m_per_rad", a.spring_rate_N_m_per_rad},
                          {"spring_preload_N_m", a.spring_preload_N_m},
-                         {"external_moment_N_m", a.external_moment_N_m},
-                         {"min_contact_force_N", L.min_contact_force_N.value},
-                         {"at_min_contact_force_cam_angle_deg", L.min_contact_force_N.cam_angle_deg},
-                         {"max_contact_force_N", L.max_contact_force_N.value},
-                         {"at_max_contact_force_cam_angle_deg", L.max_contact_force_N.cam_angle_deg},
-                         {"separation_ok", L.min_contact_force_N.value > 0.0},
-                         {"max_camshaft_torque_Nm", L.max_abs_camshaft_torque_Nm.value},
-                         {"at_max_camshaft_torque_cam_angle_deg", L.max_abs_camshaft_torque_Nm.cam_angle_deg},
-                         {"camshaft_torque_range_Nm", {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm}}};
-    if (std::isfinite(L.jump_speed_rpm)) {
-      aj["jump_speed_rpm"] = L.jump_speed_rpm;
-    } else {
-      aj["jump_speed_rpm"] = nullptr;
-      j["notes"].push_back("jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam");
-    }
-    loads_ok = L.min_contact_force_N.value > 0.0;
+                         {"external_moment_N_m", a.external_moment_N_m}};
+    loads_ok = add_extremes(L, aj, "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam");
     if (L.stress_evaluated) {
-      aj["face_width_mm"] = *s.face_width_mm;
-      aj["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
-      if (L.stress_finite) {
-        aj["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
-        aj["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
-      } else {
-        aj["max_contact_stress_MPa"] = nullptr;
-        j["notes"].push_back("max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)");
-      }
-      if (s.limits.contact_stress_MPa) {
-        aj["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
-        aj["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
-        loads_ok = loads_ok && aj["contact_stress_ok"].get<bool>();
-      }
+      loads_ok = add_stress(L, aj, kFaceCusp) && loads_ok;
     } else if (s.face_width_mm || s.material) {
       j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
     }
@@ -1012,28 +1021,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"spring_preload_N", d.loads.spring_preload_N},
                          {"external_load_N", d.loads.external_load_N},
                          {"follower_axis", d.follower_axis},
-                         {"weight_toward_cam_N", L.weight_N},
-                         {"min_contact_force_N", L.min_contact_force_N.value},
-                         {"at_min_contact_force_cam_angle_deg", L.min_contact_force_N.cam_angle_deg},
-                         {"max_contact_force_N", L.max_contact_force_N.value},
-                         {"at_max_contact_force_cam_angle_deg", L.max_contact_force_N.cam_angle_deg},
-                         {"separation_ok", L.min_contact_force_N.value > 0.0},
-                         {"max_camshaft_torque_Nm", L.max_abs_camshaft_torque_Nm.value},
-                         {"at_max_camshaft_torque_cam_angle_deg", L.max_abs_camshaft_torque_Nm.cam_angle_deg},
-                         {"camshaft_torque_range_Nm", {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm}}};
+                         {"weight_toward_cam_N", L.weight_N}};
     // What keeps contact up to the speed: the smallest preload with this rate, the smallest rate
     // with this preload (null: no rate does, the deficit is on the base circle).
     dj["min_spring_preload_N"] = L.spring.min_preload_N;
     dj["min_spring_rate_N_per_mm"] =
         std::isfinite(L.spring.min_rate_N_per_mm) ? nlohmann::json(L.spring.min_rate_N_per_mm) : nlohmann::json(nullptr);
-    // The jump speed is infinite when the follower never decelerates: null, and a note says why.
-    if (std::isfinite(L.jump_speed_rpm)) {
-      dj["jump_speed_rpm"] = L.jump_speed_rpm;
-    } else {
-      dj["jump_speed_rpm"] = nullptr;
-      j["notes"].push_back("jump_speed_rpm is null: the follower never decelerates, so no speed lifts it off the cam");
-    }
-    loads_ok = L.min_contact_force_N.value > 0.0;
+    loads_ok = add_extremes(L, dj, "jump_speed_rpm is null: the follower never decelerates, so no speed lifts it off the cam");
     if (L.response) {
       const dc::FollowerDynamicsResult& fr = *L.response;
       nlohmann::json rj = {{"follower_stiffness_N_per_mm", *d.follower_stiffness_N_per_mm},
@@ -1064,21 +1058,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       loads_ok = loads_ok && !fr.separates;
     }
     if (L.stress_evaluated) {
-      dj["face_width_mm"] = *s.face_width_mm;
-      dj["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
-      if (L.stress_finite) {
-        dj["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
-        dj["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
-      } else {
-        dj["max_contact_stress_MPa"] = nullptr;  // a loaded point of the profile is undercut (a cusp)
-        j["notes"].push_back(flat ? "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)"
-                                  : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile");
-      }
-      if (s.limits.contact_stress_MPa) {
-        dj["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
-        dj["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
-        loads_ok = loads_ok && dj["contact_stress_ok"].get<bool>();
-      }
+      loads_ok = add_stress(L, dj, flat ? kFaceCusp
+                                        : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
+                 loads_ok;
     } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
       j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
     } else if (s.face_width_mm || s.material) {

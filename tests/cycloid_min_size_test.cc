@@ -56,25 +56,32 @@ CycloidSizingSpec PaperSpec() {
 }
 
 // Every output row's derivative by every variable against central differences with the step
-// rel_step × the variable's scale, within tol × the largest difference quotient of the row's block.
+// rel_step × the variable's scale, within tol × the largest difference quotient of the row's block
+// (the shared check, tests/test_util.h, Scale::kBlockColumn) + 1e-9.
 void ExpectRowsMatchCentralDifferences(const Problem& p, const CycloidSizingSpec& spec, const std::vector<double>& x,
                                        const std::vector<double>& jac, double rel_step, double tol) {
-  const int n = p.num_vars(), m = p.evaluator->num_outputs();
-  for (int j = 0; j < n; ++j) {
-    const double h = rel_step * spec.variables[size_t(j)].scale;
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[size_t(j)] += h;
-    xm[size_t(j)] -= h;
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    for (const OutputBlock& b : p.evaluator->blocks()) {
-      double scale = 0;
-      for (int r = b.offset; r < b.offset + b.size; ++r) scale = std::max(scale, std::abs(yp[r] - ym[r]) / (2 * h));
-      for (int r = b.offset; r < b.offset + b.size; ++r)
-        EXPECT_NEAR(jac[size_t(r) * n + j], (yp[r] - ym[r]) / (2 * h), tol * scale + 1e-9)
-            << b.name << "[" << r - b.offset << "] by " << spec.variables[size_t(j)].name;
+  camopt::testing::JacobianCheck check;
+  check.rel_tol = tol;
+  check.abs_tol = 1e-9;
+  check.scale = camopt::testing::JacobianCheck::Scale::kBlockColumn;
+  for (int j = 0; j < p.num_vars(); ++j) {
+    check.steps.push_back(rel_step * spec.variables[size_t(j)].scale);
+    check.variable_names.push_back(spec.variables[size_t(j)].name);
+  }
+  check.output_names.resize(size_t(p.evaluator->num_outputs()));
+  for (const OutputBlock& b : p.evaluator->blocks()) {
+    check.row_blocks.push_back({b.offset, b.size});
+    for (int r = b.offset; r < b.offset + b.size; ++r) {
+      check.output_names[size_t(r)] = b.name + "[" + std::to_string(r - b.offset) + "]";
+      check.rows.push_back(r);
     }
   }
+  const auto f = [&](const std::vector<double>& z) {
+    std::vector<double> y(size_t(p.evaluator->num_outputs()));
+    p.evaluator->Eval(z, y);
+    return y;
+  };
+  camopt::testing::ExpectGivenJacobianMatchesCentralDifferences(f, x, f(x), jac, check);
 }
 
 TEST(CycloidMinSize, EveryRowsDerivativeMatchesCentralDifferences) {

@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ceres/jet.h>
@@ -43,9 +44,11 @@ inline double CentralDifferenceStep(double x) {
 /// How an AD Jacobian entry ad = ∂y_k/∂x_i is compared with its central difference fd. It passes when
 ///   |ad − fd| <= abs_tol · (abs_tol_scales_with_value ? max(1, |y_k|) : 1) + rel_tol · scale,
 /// where scale is max(|ad|, |fd|) (Scale::kEntry), the largest |fd| of the checked entries of row k
-/// (Scale::kRow) or of column i (Scale::kColumn); a row or column scale must be positive.
+/// (Scale::kRow) or of column i (Scale::kColumn), a row or column scale that must be positive, or
+/// the largest |fd| of column i over the rows of k's block (Scale::kBlockColumn, blocks in
+/// row_blocks: an optimization problem's output blocks, whose rows share a scale).
 struct JacobianCheck {
-  enum class Scale { kEntry, kRow, kColumn };
+  enum class Scale { kEntry, kRow, kColumn, kBlockColumn };
   double rel_tol = kJacobianRelTol;
   double abs_tol = kJacobianAbsTol;
   Scale scale = Scale::kEntry;
@@ -55,6 +58,7 @@ struct JacobianCheck {
   std::vector<int> variables;               ///< the variables checked (and differenced); empty: all
   std::vector<std::string> output_names;    ///< for messages; empty: "output k"
   std::vector<std::string> variable_names;  ///< for messages; empty: "xi"
+  std::vector<std::pair<int, int>> row_blocks;  ///< Scale::kBlockColumn: (first row, rows) per block
 };
 
 /// Checks a given Jacobian jac (row-major, jac[k n + i] = ∂y_k/∂x_i, n = x.size(), with the
@@ -107,14 +111,32 @@ int ExpectGivenJacobianMatchesCentralDifferences(const F& f, const std::vector<d
   if (check.scale == JacobianCheck::Scale::kColumn) {
     for (int i : vars) EXPECT_GT(column_scale[size_t(i)], 0.0) << variable_name(i) << " has no central difference";
   }
+  // Scale::kBlockColumn: the block of each row, and per block and column the largest |fd|.
+  std::vector<int> block_of(m, -1);
+  for (size_t b = 0; b < check.row_blocks.size(); ++b)
+    for (int k = check.row_blocks[b].first; k < check.row_blocks[b].first + check.row_blocks[b].second; ++k)
+      if (k >= 0 && size_t(k) < m) block_of[size_t(k)] = int(b);
+  std::vector<double> block_scale(check.row_blocks.size() * n, 0.0);
+  for (int k : rows)
+    if (block_of[size_t(k)] >= 0)
+      for (int i : vars) {
+        double& b = block_scale[size_t(block_of[size_t(k)]) * n + size_t(i)];
+        b = std::max(b, std::abs(fd[size_t(k) * n + size_t(i)]));
+      }
+  if (check.scale == JacobianCheck::Scale::kBlockColumn) {
+    for (int k : rows) EXPECT_GE(block_of[size_t(k)], 0) << output_name(k) << " is in no block";
+  }
   int checked = 0;
   for (int k : rows)
     for (int i : vars) {
       const double ad = jac[size_t(k) * n + size_t(i)], d = fd[size_t(k) * n + size_t(i)];
       EXPECT_TRUE(std::isfinite(ad)) << output_name(k) << " d/d" << variable_name(i);
-      const double scale = check.scale == JacobianCheck::Scale::kRow      ? row_scale[size_t(k)]
-                           : check.scale == JacobianCheck::Scale::kColumn ? column_scale[size_t(i)]
-                                                                          : std::max(std::abs(ad), std::abs(d));
+      const double scale =
+          check.scale == JacobianCheck::Scale::kRow      ? row_scale[size_t(k)]
+          : check.scale == JacobianCheck::Scale::kColumn ? column_scale[size_t(i)]
+          : check.scale == JacobianCheck::Scale::kBlockColumn
+              ? (block_of[size_t(k)] >= 0 ? block_scale[size_t(block_of[size_t(k)]) * n + size_t(i)] : 0.0)
+              : std::max(std::abs(ad), std::abs(d));
       const double abs_tol =
           check.abs_tol * (check.abs_tol_scales_with_value ? std::max(1.0, std::abs(y[size_t(k)])) : 1.0);
       EXPECT_LE(std::abs(ad - d), abs_tol + check.rel_tol * scale)
