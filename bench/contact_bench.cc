@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <fftw3.h>
 
 #include "model/contact/half_space.h"
 #include "model/contact/hertz.h"
@@ -176,6 +177,29 @@ BENCHMARK(BM_ContactRollerCg)
     ->Args({16, 64})->Args({32, 64})->Args({64, 64})
     ->Args({32, 32})->Args({32, 128})->Args({32, 256})->Args({32, 512})->Args({32, 1024})
     ->Unit(benchmark::kMillisecond);
+
+// The physical floor of a CG iteration: one forward and one backward 2D real FFT of the padded
+// grid (arg: its side, 2 × the cells per side), FFTW_ESTIMATE as the solver plans them. A solve's
+// iterations times this is the least its convolutions can cost (docs/performance.md, "Cycloid").
+void BM_FftwPair(benchmark::State& state) {
+  const int n = int(state.range(0));
+  double* real = fftw_alloc_real(size_t(n) * size_t(n));
+  fftw_complex* spec = fftw_alloc_complex(size_t(n) * size_t(n / 2 + 1));
+  const fftw_plan forward = fftw_plan_dft_r2c_2d(n, n, real, spec, FFTW_ESTIMATE);
+  const fftw_plan backward = fftw_plan_dft_c2r_2d(n, n, spec, real, FFTW_ESTIMATE);
+  for (int i = 0; i < n * n; ++i) real[i] = std::sin(0.001 * i);
+  for (auto _ : state) {
+    fftw_execute(forward);
+    fftw_execute(backward);
+    benchmark::DoNotOptimize(real[0]);
+    for (int i = 0; i < n * n; ++i) real[i] *= 1.0 / (double(n) * n);  // keep the values bounded
+  }
+  fftw_destroy_plan(forward);
+  fftw_destroy_plan(backward);
+  fftw_free(real);
+  fftw_free(spec);
+}
+BENCHMARK(BM_FftwPair)->Arg(48)->Arg(80)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace camopt::contact
