@@ -848,6 +848,16 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
     return pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>();
   };
+  // A flat face's convexity: ρ_min against the margin and where the profile has cusps.
+  const auto add_radius_and_cusps = [&](const Result::FlatFace& F, nlohmann::json& ff) {
+    ff["min_radius_of_curvature_mm"] = F.min_radius_of_curvature_mm.value;
+    ff["min_radius_of_curvature_at_cam_angle_deg"] = F.min_radius_of_curvature_mm.cam_angle_deg;
+    ff["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
+    ff["radius_margin_ok"] = F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm;
+    ff["cusp"] = !F.cusp_cam_angle_deg.empty();
+    ff["cusp_cam_angle_deg"] = nlohmann::json::array();
+    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+  };
   const bool flat_arm = flat && s.cam.follower == FollowerType::kOscillatingRoller;
   if (flat_arm) {
     // The flat face on an arm: the pressure angle atan(d/ℓ) against its limit, ρ = h + h_φφ above the
@@ -862,14 +872,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                                                  {"at_max_cam_angle_deg", F.max_contact_offset_mm.cam_angle_deg},
                                                  {"min", F.min_contact_offset_mm.value},
                                                  {"at_min_cam_angle_deg", F.min_contact_offset_mm.cam_angle_deg}}},
-                         {"face_length_needed_mm", needed},
-                         {"min_radius_of_curvature_mm", F.min_radius_of_curvature_mm.value},
-                         {"min_radius_of_curvature_at_cam_angle_deg", F.min_radius_of_curvature_mm.cam_angle_deg},
-                         {"radius_margin_limit_mm", s.limits.radius_margin_mm},
-                         {"radius_margin_ok", F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm},
-                         {"cusp", !F.cusp_cam_angle_deg.empty()},
-                         {"cusp_cam_angle_deg", nlohmann::json::array()}};
-    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+                         {"face_length_needed_mm", needed}};
+    add_radius_and_cusps(F, ff);
     if (s.follower_face_width_mm) {
       ff["face_width_mm"] = *s.follower_face_width_mm;
       ff["face_width_ok"] = *s.follower_face_width_mm >= needed;
@@ -892,14 +896,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"face_needed_rise_side_mm", rise_side},
                          {"face_needed_return_side_mm", return_side},
                          {"face_width_needed_mm", rise_side + return_side},
-                         {"face_width_needed_centred_mm", 2 * std::max(rise_side, return_side)},
-                         {"min_radius_of_curvature_mm", F.min_radius_of_curvature_mm.value},
-                         {"min_radius_of_curvature_at_cam_angle_deg", F.min_radius_of_curvature_mm.cam_angle_deg},
-                         {"radius_margin_limit_mm", s.limits.radius_margin_mm},
-                         {"radius_margin_ok", F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm},
-                         {"cusp", !F.cusp_cam_angle_deg.empty()},
-                         {"cusp_cam_angle_deg", nlohmann::json::array()}};
-    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+                         {"face_width_needed_centred_mm", 2 * std::max(rise_side, return_side)}};
+    add_radius_and_cusps(F, ff);
     if (s.follower_face_width_mm) {
       ff["face_width_mm"] = *s.follower_face_width_mm;
       ff["face_width_ok"] = *s.follower_face_width_mm >= 2 * std::max(rise_side, return_side);
