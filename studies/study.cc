@@ -28,7 +28,49 @@ namespace camopt::studies {
 
 namespace fs = std::filesystem;
 
+namespace {
+std::mutex& ObserverMutex() {
+  static std::mutex m;
+  return m;
+}
+std::function<void(const ProgressEvent&)>& Observer() {
+  static std::function<void(const ProgressEvent&)> observer;
+  return observer;
+}
+}  // namespace
+
+std::function<void(const ProgressEvent&)> SetProgressObserver(std::function<void(const ProgressEvent&)> observer) {
+  std::lock_guard<std::mutex> lock(ObserverMutex());
+  std::swap(Observer(), observer);
+  return observer;
+}
+
+void Progress::Observe(double fraction, const std::string& detail, bool done) {
+  std::function<void(const ProgressEvent&)> observer;
+  {
+    std::lock_guard<std::mutex> lock(ObserverMutex());
+    observer = Observer();
+  }
+  if (!observer) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!done && observed_ && now - last_observed_ < std::chrono::milliseconds(100)) return;
+  if (done && !observed_) return;  // nothing was reported: no closing report either
+  last_observed_ = now;
+  observed_ = true;
+  ProgressEvent e;
+  e.label = label_;
+  e.fraction = std::clamp(fraction, 0.0, 1.0);
+  e.elapsed_s = std::chrono::duration<double>(now - start_).count();
+  if (e.fraction >= 0.01 && e.fraction < 1.0 && e.elapsed_s >= 1.0)
+    e.eta_s = e.elapsed_s * (1.0 - e.fraction) / e.fraction;
+  e.detail = detail;
+  e.done = done;
+  observer(e);
+}
+
 void Progress::Update(double fraction, const std::string& detail) {
+  fraction_ = fraction;
+  Observe(fraction, detail, false);
   if (quiet_) return;
   // On a terminal one line is rewritten in place (10 times a second at most); into a file or a
   // pipe, a plain line every 2 seconds and at the end.
@@ -58,6 +100,10 @@ std::string ClockText(double seconds) {
 }
 
 void Progress::Done() {
+  if (observed_) {
+    Observe(fraction_, "", true);
+    observed_ = false;
+  }
   if (quiet_ || !shown_) return;
   static const bool tty = isatty(2);
   if (tty) std::cerr << "\n" << std::flush;

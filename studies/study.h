@@ -38,7 +38,29 @@ class Progress {
   bool shown_ = false;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_{};
+  std::chrono::steady_clock::time_point last_observed_{};
+  bool observed_ = false;
+  double fraction_ = 0.0;
+  void Observe(double fraction, const std::string& detail, bool done);
 };
+
+/// One progress report as an observer sees it: the line's label, the fraction done in [0, 1], the
+/// elapsed time and the ETA in seconds (negative while there is none) and the detail text; `done`
+/// on the last report of a Progress (Done or destruction after at least one Update).
+struct ProgressEvent {
+  std::string label;
+  double fraction = 0.0;
+  double elapsed_s = 0.0;
+  double eta_s = -1.0;
+  std::string detail;
+  bool done = false;
+};
+
+/// A process-wide observer of every Progress, whatever `quiet` says (for an embedding program: the
+/// Python module's callback, a server's run log). It is called from the thread that calls
+/// Update, at most every 100 ms per Progress apart from the first and the last report, and must not
+/// throw. An empty function removes it. Returns the previous observer.
+std::function<void(const ProgressEvent&)> SetProgressObserver(std::function<void(const ProgressEvent&)> observer);
 
 /// A duration as a person reads it on a progress line: "0:07", "12:34", "1:02:03".
 std::string ClockText(double seconds);

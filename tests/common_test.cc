@@ -104,6 +104,29 @@ TEST(Progress, LineShowsElapsedTimeAndClockTextReads) {
   EXPECT_EQ(line.find("ETA"), std::string::npos) << line;
 }
 
+TEST(Progress, ObserverSeesEveryProgressEvenQuietAndIsThrottled) {
+  std::vector<camopt::studies::ProgressEvent> seen;
+  auto previous = camopt::studies::SetProgressObserver(
+      [&seen](const camopt::studies::ProgressEvent& e) { seen.push_back(e); });
+  {
+    camopt::studies::Progress p("quiet work", true);
+    p.Update(0.1, "first");
+    for (int i = 0; i < 1000; ++i) p.Update(0.2, "at once");  // within 100 ms of the first
+  }
+  camopt::studies::SetProgressObserver(previous);
+  ASSERT_EQ(seen.size(), 2u);  // the first report and the closing one
+  EXPECT_EQ(seen[0].label, "quiet work");
+  EXPECT_DOUBLE_EQ(seen[0].fraction, 0.1);
+  EXPECT_EQ(seen[0].detail, "first");
+  EXPECT_FALSE(seen[0].done);
+  EXPECT_LT(seen[0].eta_s, 0.0);  // no ETA before a second has passed
+  EXPECT_TRUE(seen[1].done);
+  EXPECT_DOUBLE_EQ(seen[1].fraction, 0.2);
+  // Removed: nothing more is seen.
+  { camopt::studies::Progress p("after", true); p.Update(0.5); }
+  EXPECT_EQ(seen.size(), 2u);
+}
+
 TEST(Outputs, RejectsNonFiniteNumbers) {
   studies::Outputs out;
   nlohmann::json j;
