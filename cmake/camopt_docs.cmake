@@ -2,6 +2,10 @@
 #   cmake --build build --target api_docs   →   build/api/html/index.html
 # Installed under share/doc/camopt/api when it has been built (the .deb builds it first). The
 # test ApiReference.BuildsWithoutWarnings builds it with warnings as errors.
+option(CAMOPT_BUILD_DOCS "The API reference target api_docs (needs doxygen)" ON)
+if(NOT CAMOPT_BUILD_DOCS)
+  return()
+endif()
 find_package(Doxygen REQUIRED)
 set(DOXYGEN_PROJECT_NAME camopt)
 set(DOXYGEN_PROJECT_NUMBER ${PROJECT_VERSION})

@@ -1,9 +1,22 @@
 #!/usr/bin/env bash
-# Configures and builds camopt in build/ (Release). With target names, builds only those
-# (scripts/setup.sh builds `camopt`, the program the example needs; scripts/test.sh builds all).
+# Configures and builds camopt in build/ (Release).
+#   scripts/build.sh --program   the `camopt` program alone, configured without the tests,
+#                                benchmarks, Python module and API docs (scripts/setup.sh)
+#   scripts/build.sh [TARGET...] everything (scripts/test.sh), or only the named targets
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+if [ "${1:-}" = "--program" ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCAMOPT_BUILD_TESTS=OFF -DCAMOPT_BUILD_BENCH=OFF \
+    -DCAMOPT_BUILD_PYTHON=OFF -DCAMOPT_BUILD_DOCS=OFF >/dev/null
+  cmake --build build -j"$(nproc)" --target camopt
+  exit 0
+fi
+# After a --program configure: everything back on, and MPI looked for again (its option's default
+# is whether MPI was found, which the program-only configure may have cached as OFF).
+mpi=()
+if grep -q '^CAMOPT_BUILD_TESTS:BOOL=OFF' build/CMakeCache.txt 2>/dev/null; then mpi=(-UCAMOPT_MPI); fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCAMOPT_BUILD_TESTS=ON -DCAMOPT_BUILD_BENCH=ON \
+  -DCAMOPT_BUILD_PYTHON=ON -DCAMOPT_BUILD_DOCS=ON "${mpi[@]}" >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 cmake --build build -j"$(nproc)" "${targets[@]}"

@@ -1,23 +1,38 @@
 #!/usr/bin/env bash
 # Installs camopt's build and test dependencies from Debian's packages (needs root or sudo).
 set -euo pipefail
-PACKAGES=(build-essential cmake pkg-config
+# Usage: scripts/install_deps.sh            every package: the program, its tests, benchmarks,
+#                                           Python module, API docs (.ci/run, scripts/test.sh)
+#        scripts/install_deps.sh --program  only what building and running `camopt` needs
+#                                           (scripts/setup.sh: fewer packages, a faster first run)
+PROGRAM_PACKAGES=(build-essential cmake pkg-config ccache
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev libceres-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfftw3-dev libsundials-dev ccache
-  # Geometry files: OpenCASCADE for STEP solids and their STL meshes (libtbb-dev: OCCT's
-  # CMake targets link it), and the independent readers the tests check the files with.
+  libcli11-dev libfftw3-dev libsundials-dev
+  # Geometry files: OpenCASCADE for STEP solids and their STL meshes where a profile is not
+  # star-shaped (libtbb-dev: OCCT's CMake targets link it).
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
-  libocct-data-exchange-dev libtbb-dev python3-ezdxf python3-numpy admesh
+  libocct-data-exchange-dev libtbb-dev
+  # Sweeps: Boost.Random's Sobol sequence. The SHA-256 of provenance (studies/provenance.cc)
+  # from a maintained library.
+  libboost-dev nettle-dev)
+TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev
+  # The independent readers the tests check the geometry files with.
+  python3-ezdxf python3-numpy admesh
   # The Python module (pybind11), its tests and example (NumPy, matplotlib) and the
   # schema tests (jsonschema), all for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-matplotlib python3-jsonschema
-  # Sweeps: Boost.Random's Sobol sequence; MPI for `mpirun -n N camopt sweep` (optional).
-  libboost-dev libopenmpi-dev openmpi-bin
+  # MPI for `mpirun -n N camopt sweep` (optional for the program; its test runs two ranks).
+  libopenmpi-dev openmpi-bin
   # report.html: the test that opens it in headless Chromium and checks its screenshot.
   chromium python3-pil
-  # The SHA-256 of provenance (studies/provenance.cc) from a maintained library; the API
-  # reference from the headers' comments (cmake/camopt_docs.cmake).
-  nettle-dev doxygen)
+  # The API reference from the headers' comments (cmake/camopt_docs.cmake).
+  doxygen)
+PACKAGES=("${PROGRAM_PACKAGES[@]}")
+case "${1:-}" in
+  --program) ;;
+  "") PACKAGES+=("${TEST_PACKAGES[@]}") ;;
+  *) echo "usage: $0 [--program]" >&2; exit 2 ;;
+esac
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()
