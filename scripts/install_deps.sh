@@ -14,7 +14,9 @@ PROGRAM_PACKAGES=(build-essential cmake pkg-config ccache
   libocct-data-exchange-dev libtbb-dev
   # Sweeps: Boost.Random's Sobol sequence. The SHA-256 of provenance (studies/provenance.cc)
   # from a maintained library.
-  libboost-dev nettle-dev)
+  libboost-dev nettle-dev
+  # `camopt serve`, the studio (studies/serve.cc): cpp-httplib, a maintained C++ HTTP library.
+  libcpp-httplib-dev)
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev
   # The independent readers the tests check the geometry files with.
   python3-ezdxf python3-numpy admesh
@@ -33,6 +35,12 @@ case "${1:-}" in
   "") PACKAGES+=("${TEST_PACKAGES[@]}") ;;
   *) echo "usage: $0 [--program]" >&2; exit 2 ;;
 esac
+# The studio's front end takes uPlot (charts) from npm, and its browser test puppeteer-core
+# (web/package.json, versions fixed by web/package-lock.json): Node.js and npm from Debian when the
+# machine has none (puppeteer-core 24 needs Node >= 18: Debian 12's nodejs is 18).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  PACKAGES+=(nodejs npm)
+fi
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()
@@ -44,3 +52,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
 fi
+# The front end's npm packages, exactly as locked, into web/node_modules (the build copies uPlot's
+# files into build/web; nothing is fetched when the studio runs). --program: without the browser
+# test's puppeteer-core (a devDependency).
+NPM_OMIT=()
+if [ "${1:-}" = "--program" ]; then NPM_OMIT=(--omit=dev); fi
+(cd "$(dirname "$0")/../web" && npm ci --no-audit --no-fund --loglevel=error "${NPM_OMIT[@]}")

@@ -1,7 +1,8 @@
 // camopt's command line, as a function (studies/main.cc calls it; the mutation fuzzer
 // fuzz/mutation_fuzzer.cc calls it in a forked child, so that it exercises exactly the CLI). The
 // command line: `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
-// [--convergence] [--strict]`, `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
+// [--convergence] [--strict] [--progress json]`, `camopt serve [--port P] [--host H] [FOLDER]`
+// (the studio, studies/serve.h), `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
 // `camopt init KIND [--out FILE]` (a complete study to start from, studies/init.h),
 // `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
 // (studies/sweep.h). A successful run prints a short summary of the headline numbers of
@@ -24,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <new>
 #include <thread>
 
@@ -41,6 +43,7 @@
 #include "studies/archive.h"
 #include "studies/init.h"
 #include "studies/schemas.h"
+#include "studies/serve.h"
 #include "studies/study.h"
 #include "studies/suggest.h"
 #include "studies/sweep.h"
@@ -66,6 +69,22 @@ void StartSignalThread() {
     if (write(2, message.data(), message.size()) < 0) {}
     _exit(130);
   }).detach();
+}
+
+// --progress json: every progress report as one JSON line on stderr (label, fraction, elapsed_s,
+// eta_s, detail, done), whatever --quiet says, for a program that runs camopt as a child and shows
+// its progress (`camopt serve` reads them). One write per line, under a lock: lines of reports
+// from different threads never interleave.
+void InstallJsonProgress() {
+  static std::mutex mutex;
+  camopt::studies::SetProgressObserver([](const camopt::studies::ProgressEvent& e) {
+    nlohmann::json j = {{"label", e.label}, {"fraction", std::isfinite(e.fraction) ? e.fraction : 0.0},
+                        {"elapsed_s", e.elapsed_s}, {"eta_s", std::isfinite(e.eta_s) ? e.eta_s : -1.0},
+                        {"detail", e.detail}, {"done", e.done}};
+    const std::string line = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    std::lock_guard<std::mutex> lock(mutex);
+    if (write(2, line.data(), line.size()) < 0) {}
+  });
 }
 
 // The answer first: the verdict over the kind's limits and its headline numbers with units and
@@ -179,6 +198,21 @@ int CliMain(int argc, char** argv) {
                   "Multiply every work, memory and file-size cap by this factor (default 1; "
                   "see docs/reliability.md)")
       ->check(factor_range);
+  std::string progress_format;
+  run->add_option("--progress", progress_format,
+                  "json: every progress report as one JSON line on stderr, also with --quiet (for "
+                  "programs that run camopt, such as `camopt serve`)")
+      ->check(CLI::IsMember({"json"}));
+  camopt::studies::ServeOptions serve_options;
+  CLI::App* serve = app.add_subcommand(
+      "serve", "Start the studio: a local web app to edit, run and see the studies of a folder (docs/studio.md)");
+  serve->add_option("folder", serve_options.folder, "Folder of study files (default: the current folder)");
+  serve->add_option("--port,-p", serve_options.port, "TCP port (default 8765; 0: a free port)")
+      ->check(CLI::Range(0, 65535));
+  serve->add_option("--host", serve_options.host,
+                    "Address to listen on (default 127.0.0.1: this machine only)");
+  serve->add_option("--web", serve_options.web_dir,
+                    "Folder of the front end's files (default: next to the program, or share/camopt/web)");
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
   camopt::studies::sweep::Options sweep;
   CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a study over many cases (docs/studies.md)");
@@ -206,7 +240,7 @@ int CliMain(int argc, char** argv) {
   // A first word that is no command: say so, and which command was meant.
   if (argc >= 2 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema", "init"};
+    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema", "init", "serve"};
     if (std::find(commands.begin(), commands.end(), word) == commands.end()) {
       if (word.size() > 5 && word.compare(word.size() - 5, 5, ".json") == 0) {
         std::cerr << "camopt: error: a command comes before the file: `camopt run " << word
@@ -216,7 +250,7 @@ int CliMain(int argc, char** argv) {
       const std::string near = camopt::studies::NearestName(word, commands);
       std::cerr << "camopt: error: unknown command \"" << word << "\""
                 << (near.empty() ? "" : " (did you mean \"" + near + "\"?)")
-                << "; the commands are run, sweep, init, kinds and schema (camopt --help)\n";
+                << "; the commands are run, sweep, init, kinds, schema and serve (camopt --help)\n";
       return 2;
     }
   }
@@ -240,6 +274,7 @@ int CliMain(int argc, char** argv) {
     FLAGS_minloglevel = FLAGS_stderrthreshold = google::GLOG_FATAL;  // cases run quietly
     return camopt::studies::sweep::RunCommand(sweep);
   }
+  if (serve->parsed()) return camopt::studies::ServeMain(serve_options);
   if (kinds->parsed()) {
     for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
     return 0;
@@ -297,6 +332,7 @@ int CliMain(int argc, char** argv) {
   }
   if (out_dir.empty())
     out_dir = (std::filesystem::path("results") / std::filesystem::path(study_file).stem()).string();
+  if (progress_format == "json") InstallJsonProgress();
   try {
     camopt::studies::RunContext ctx;
     ctx.quiet = quiet;

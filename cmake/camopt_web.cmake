@@ -1,0 +1,23 @@
+# The studio's front end (`camopt serve`, docs/studio.md): web/*.html, *.js, *.css and uPlot's
+# files from web/node_modules (npm ci in web/, scripts/install_deps.sh) copied into build/web and
+# installed as share/camopt/web. Nothing is fetched at run time. Without web/node_modules the
+# studio works without its charts (a warning here says so).
+file(GLOB CAMOPT_WEB_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/web/*.html ${PROJECT_SOURCE_DIR}/web/*.js
+     ${PROJECT_SOURCE_DIR}/web/*.css)
+set(CAMOPT_UPLOT_DIR ${PROJECT_SOURCE_DIR}/web/node_modules/uplot/dist)
+if(EXISTS ${CAMOPT_UPLOT_DIR}/uPlot.iife.min.js)
+  list(APPEND CAMOPT_WEB_SOURCES ${CAMOPT_UPLOT_DIR}/uPlot.iife.min.js ${CAMOPT_UPLOT_DIR}/uPlot.min.css)
+else()
+  message(WARNING "web/node_modules/uplot is missing (run `npm ci` in web/): the studio's charts are left out")
+endif()
+set(CAMOPT_WEB_OUTPUTS "")
+foreach(src ${CAMOPT_WEB_SOURCES})
+  get_filename_component(name ${src} NAME)
+  set(dest ${PROJECT_BINARY_DIR}/web/${name})
+  add_custom_command(OUTPUT ${dest} COMMAND ${CMAKE_COMMAND} -E copy_if_different ${src} ${dest}
+                     DEPENDS ${src} COMMENT "studio: ${name}" VERBATIM)
+  list(APPEND CAMOPT_WEB_OUTPUTS ${dest})
+endforeach()
+add_custom_target(camopt_web ALL DEPENDS ${CAMOPT_WEB_OUTPUTS})
+add_dependencies(camopt camopt_web)
+install(FILES ${CAMOPT_WEB_OUTPUTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt/web)

@@ -1,0 +1,660 @@
+// `camopt serve` (studies/serve.h): the studio's HTTP server, its API and its runs.
+#include "studies/serve.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/input.h"
+#include "studies/report.h"
+#include "studies/schemas.h"
+#include "studies/study.h"
+#include "studies/studio_mechanism.h"
+
+namespace camopt::studies {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// ---- paths inside the folder -------------------------------------------------------------------
+
+// True when `p` (canonical) is `root` (canonical) or below it, compared component by component
+// ("/a/bc" is not below "/a/b").
+bool IsWithin(const fs::path& root, const fs::path& p) {
+  auto r = root.begin(), q = p.begin();
+  for (; r != root.end(); ++r, ++q) {
+    if (q == p.end() || *q != *r) return false;
+  }
+  return true;
+}
+
+struct Resolved {
+  int status = 200;  // 200, 400 (malformed), 403 (outside the folder), 404 (absent)
+  fs::path path;     // canonical (weakly canonical when it need not exist)
+  std::string message;
+};
+
+// A path given by the client, relative to the folder: resolved with every symbolic link followed,
+// refused unless it stays inside the folder. must_exist: the file itself must exist (open), else
+// only its parent folder (save).
+Resolved Resolve(const fs::path& root, const std::string& rel, bool must_exist) {
+  Resolved out;
+  if (rel.empty() || rel.size() > 4096 || rel.find('\0') != std::string::npos) {
+    out.status = 400;
+    out.message = "path: expected a file name relative to the studio's folder, found \"" + rel + "\"";
+    return out;
+  }
+  const fs::path given(rel);
+  if (given.is_absolute()) {
+    out.status = 403;
+    out.message = "path: " + rel + " is outside the studio's folder (expected a path relative to it)";
+    return out;
+  }
+  std::error_code ec;
+  const fs::path joined = root / given;
+  if (!IsWithin(root, joined.lexically_normal())) {
+    out.status = 403;
+    out.message = "path: " + rel + " is outside the studio's folder";
+    return out;
+  }
+  fs::path resolved = must_exist ? fs::canonical(joined, ec) : fs::weakly_canonical(joined, ec);
+  if (ec) {
+    out.status = 404;
+    out.message = "path: " + rel + ": " + ec.message();
+    return out;
+  }
+  if (!IsWithin(root, resolved)) {
+    out.status = 403;
+    out.message = "path: " + rel + " is outside the studio's folder";
+    return out;
+  }
+  if (!must_exist) {
+    // The parent must exist and be inside too (weakly_canonical resolved what exists of it).
+    fs::path parent = fs::canonical(resolved.parent_path(), ec);
+    if (ec || !IsWithin(root, parent)) {
+      out.status = ec ? 404 : 403;
+      out.message = "path: " + rel + ": " + (ec ? ec.message() : std::string("outside the studio's folder"));
+      return out;
+    }
+    // An existing symbolic link as the target itself: where it points must be inside as well.
+    if (fs::is_symlink(joined, ec)) {
+      const fs::path target = fs::weakly_canonical(joined, ec);
+      if (ec || !IsWithin(root, target)) {
+        out.status = 403;
+        out.message = "path: " + rel + " links outside the studio's folder";
+        return out;
+      }
+    }
+  }
+  out.path = resolved;
+  return out;
+}
+
+std::string Relative(const fs::path& root, const fs::path& p) { return p.lexically_relative(root).generic_string(); }
+
+bool EndsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+void SendJson(httplib::Response& res, const json& j, int status = 200) {
+  res.status = status;
+  res.set_content(j.dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
+}
+
+void SendError(httplib::Response& res, int status, const std::string& message) {
+  SendJson(res, {{"error", message}}, status);
+}
+
+std::string ContentType(const fs::path& p) {
+  const std::string ext = p.extension().string();
+  if (ext == ".json") return "application/json";
+  if (ext == ".csv") return "text/csv; charset=utf-8";
+  if (ext == ".svg") return "image/svg+xml";
+  if (ext == ".html") return "text/html; charset=utf-8";
+  if (ext == ".txt" || ext == ".md") return "text/plain; charset=utf-8";
+  return "application/octet-stream";
+}
+
+// ---- runs ----------------------------------------------------------------------------------------
+
+// One `camopt run` child. Its stderr carries one JSON object per progress report (--progress json)
+// and the CLI's messages; a reader thread turns them into events and waits for the child's end.
+struct Run {
+  int id = 0;
+  pid_t pid = -1;
+  std::string study;  // relative to the folder
+  std::string out;    // relative to the folder
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<std::string> events;  // server-sent events, whole ("event: …\ndata: …\n\n")
+  std::vector<std::string> messages;
+  json last_progress = json::object();
+  std::string state = "running";  // running, done, incomplete, error, cancelled, failed
+  int exit_code = -1;
+  bool cancel_requested = false;
+  bool finished = false;
+  std::thread reader;
+};
+
+std::string Event(const std::string& name, const json& data) {
+  return "event: " + name + "\ndata: " + data.dump(-1, ' ', false, json::error_handler_t::replace) + "\n\n";
+}
+
+json RunStatus(Run& run) {
+  std::lock_guard<std::mutex> lock(run.mutex);
+  return {{"id", run.id},         {"pid", run.pid},           {"study", run.study},
+          {"out", run.out},       {"state", run.state},       {"exit_code", run.exit_code},
+          {"messages", run.messages}, {"progress", run.last_progress}, {"finished", run.finished}};
+}
+
+std::string StateOf(int exit_code, bool cancel_requested) {
+  switch (exit_code) {
+    case 0: return "done";
+    case 3: return "incomplete";
+    case 2: return "error";
+    case 130: return "cancelled";
+    default: return cancel_requested ? "cancelled" : "failed";
+  }
+}
+
+void ReadChild(const std::shared_ptr<Run>& run, int fd) {
+  std::string buffer;
+  char chunk[4096];
+  const auto line_done = [&](const std::string& line) {
+    if (line.empty()) return;
+    std::lock_guard<std::mutex> lock(run->mutex);
+    if (line[0] == '{') {
+      json j = json::parse(line, nullptr, false);
+      if (j.is_object()) {
+        run->last_progress = j;
+        run->events.push_back(Event("progress", j));
+        run->changed.notify_all();
+        return;
+      }
+    }
+    if (run->messages.size() < 200) {
+      run->messages.push_back(line.substr(0, 2000));
+      run->events.push_back(Event("message", {{"text", line.substr(0, 2000)}}));
+      run->changed.notify_all();
+    }
+  };
+  for (;;) {
+    const ssize_t n = read(fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    buffer.append(chunk, static_cast<size_t>(n));
+    size_t start = 0, nl;
+    while ((nl = buffer.find('\n', start)) != std::string::npos) {
+      line_done(buffer.substr(start, nl - start));
+      start = nl + 1;
+    }
+    buffer.erase(0, start);
+    if (buffer.size() > (1u << 20)) buffer.clear();  // no line is that long; never grow without bound
+  }
+  line_done(buffer);
+  close(fd);
+  int status = 0;
+  while (waitpid(run->pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  std::lock_guard<std::mutex> lock(run->mutex);
+  run->exit_code = code;
+  run->state = StateOf(code, run->cancel_requested);
+  run->finished = true;
+  run->events.push_back(Event("end", {{"state", run->state}, {"exit_code", code}, {"out", run->out},
+                                      {"messages", run->messages}}));
+  run->changed.notify_all();
+}
+
+void Cancel(Run& run) {
+  std::lock_guard<std::mutex> lock(run.mutex);
+  if (run.finished || run.pid <= 0) return;
+  run.cancel_requested = true;
+  kill(run.pid, SIGINT);  // the CLI removes its temporary folder and exits 130
+}
+
+class Studio {
+ public:
+  Studio(fs::path root, std::string exe) : root_(std::move(root)), exe_(std::move(exe)) {}
+  ~Studio() {
+    std::map<int, std::shared_ptr<Run>> runs;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      runs.swap(runs_);
+    }
+    for (auto& [id, run] : runs) {
+      Cancel(*run);
+      if (run->reader.joinable()) run->reader.join();
+    }
+  }
+
+  void SetAddress(const std::string& host, int port) {
+    const std::string p = std::to_string(port);
+    hosts_ = {host + ":" + p, "127.0.0.1:" + p, "localhost:" + p};
+    if (host == "::1") hosts_.insert("[::1]:" + p);
+    for (const auto& h : hosts_) origins_.insert("http://" + h);
+  }
+
+  // 403 for another site's page (Origin) or a name that is not this server's (Host: DNS rebinding).
+  bool Allowed(const httplib::Request& req, std::string& why) const {
+    const std::string host = req.get_header_value("Host");
+    if (hosts_.count(host) == 0) {
+      why = "Host \"" + host + "\" is not this studio's address";
+      return false;
+    }
+    if (req.has_header("Origin")) {
+      const std::string origin = req.get_header_value("Origin");
+      if (origins_.count(origin) == 0) {
+        why = "requests from " + origin + " are refused (only the studio's own pages may call it)";
+        return false;
+      }
+    }
+    if (req.get_header_value("Sec-Fetch-Site") == "cross-site") {
+      why = "cross-site requests are refused";
+      return false;
+    }
+    return true;
+  }
+
+  json ListFiles() const {
+    json files = json::array();
+    std::error_code ec;
+    fs::recursive_directory_iterator it(root_, fs::directory_options::skip_permission_denied, ec), end;
+    int count = 0;
+    for (; !ec && it != end && count < 2000; it.increment(ec)) {
+      const fs::path& p = it->path();
+      const std::string name = p.filename().string();
+      if (it->is_directory(ec)) {
+        // Run output folders, hidden folders and the front end's packages are not studies.
+        if (name.empty() || name[0] == '.' || name == "node_modules" || name == "results" ||
+            fs::exists(p / "result.json") || fs::exists(p / ".camopt_manifest") || it.depth() >= 3)
+          it.disable_recursion_pending();
+        continue;
+      }
+      if (!EndsWith(name, ".json") || !it->is_regular_file(ec)) continue;
+      ++count;
+      json entry = {{"path", Relative(root_, p)}};
+      if (it->file_size(ec) < (1u << 20)) {
+        std::ifstream in(p);
+        const json j = json::parse(in, nullptr, false);
+        if (j.is_object() && j.contains("study") && j["study"].is_string()) entry["kind"] = j["study"];
+        else if (j.is_object() && j.contains("base")) entry["kind"] = "sweep";
+        if (j.is_object() && j.contains("name") && j["name"].is_string()) entry["name"] = j["name"];
+      }
+      files.push_back(entry);
+    }
+    std::sort(files.begin(), files.end(),
+              [](const json& a, const json& b) { return a["path"].get<std::string>() < b["path"].get<std::string>(); });
+    return files;
+  }
+
+  std::shared_ptr<Run> Start(const fs::path& study, std::string& error) {
+    const std::string rel = Relative(root_, study);
+    const fs::path out = root_ / "results" / study.stem();
+    std::error_code ec;
+    fs::create_directories(root_ / "results", ec);
+    std::vector<std::string> args = {exe_, "run", study.string(), "--out", out.string(),
+                                     "--quiet", "--progress", "json"};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) {
+      error = std::string("cannot start the run: ") + std::strerror(errno);
+      return nullptr;
+    }
+    const std::string folder = root_.string();
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid < 0) {
+      error = std::string("cannot start the run: ") + std::strerror(errno);
+      close(fds[0]);
+      close(fds[1]);
+      return nullptr;
+    }
+    if (pid == 0) {
+      // The child: only async-signal-safe calls until exec. It gets SIGINT when the server ends.
+      prctl(PR_SET_PDEATHSIG, SIGINT);
+      if (getppid() != parent) _exit(130);
+      dup2(fds[1], 2);
+      const int null_fd = open("/dev/null", O_RDWR);
+      if (null_fd >= 0) {
+        dup2(null_fd, 0);
+        dup2(null_fd, 1);
+      }
+      if (chdir(folder.c_str()) != 0) _exit(1);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    close(fds[1]);
+    auto run = std::make_shared<Run>();
+    run->pid = pid;
+    run->study = rel;
+    run->out = Relative(root_, out);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      run->id = next_id_++;
+      runs_[run->id] = run;
+    }
+    run->reader = std::thread(ReadChild, run, fds[0]);
+    return run;
+  }
+
+  std::shared_ptr<Run> Find(int id) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = runs_.find(id);
+    return it == runs_.end() ? nullptr : it->second;
+  }
+
+  json ListRuns() {
+    std::vector<std::shared_ptr<Run>> runs;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (auto& [id, run] : runs_) runs.push_back(run);
+    }
+    json out = json::array();
+    for (auto& run : runs) out.push_back(RunStatus(*run));
+    return out;
+  }
+
+  const fs::path& root() const { return root_; }
+
+ private:
+  fs::path root_;
+  std::string exe_;
+  std::set<std::string> hosts_, origins_;
+  std::mutex mutex_;
+  std::map<int, std::shared_ptr<Run>> runs_;
+  int next_id_ = 1;
+};
+
+// A study's JSON text from a request: parsed with the CLI's limits and messages.
+json ParseBodyStudy(const std::string& text, const std::string& file) {
+  return ParseStudyText(text, file, CurrentInputLimits().max_depth);
+}
+
+json ErrorJson(const StudyError& e) {
+  return {{"message", e.what()}, {"file", e.file()}, {"path", e.path()}, {"expected", e.expected()},
+          {"found", e.found()}};
+}
+
+int IdOf(const httplib::Request& req) {
+  try {
+    return std::stoi(req.matches[1].str());
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
+void Routes(httplib::Server& server, Studio& studio) {
+  const fs::path root = studio.root();
+
+  server.Get("/api/kinds", [](const httplib::Request&, httplib::Response& res) {
+    SendJson(res, StudyKinds());
+  });
+  server.Get(R"(/api/schema/([a-z0-9_]+))", [](const httplib::Request& req, httplib::Response& res) {
+    try {
+      res.set_content(StudySchema(req.matches[1].str()), "application/json");
+    } catch (const StudyError& e) {
+      SendError(res, 404, e.what());
+    }
+  });
+  server.Get("/api/files", [&studio](const httplib::Request&, httplib::Response& res) {
+    SendJson(res, {{"folder", studio.root().string()}, {"files", studio.ListFiles()}});
+  });
+  server.Get("/api/file", [root](const httplib::Request& req, httplib::Response& res) {
+    const Resolved r = Resolve(root, req.get_param_value("path"), true);
+    if (r.status != 200) return SendError(res, r.status, r.message);
+    std::error_code ec;
+    if (!fs::is_regular_file(r.path, ec)) return SendError(res, 404, "path: not a file");
+    try {
+      res.set_content(ReadFileCapped(r.path.string(), size_t{64} << 20, "file"), ContentType(r.path));
+    } catch (const StudyError& e) {
+      SendError(res, 404, e.what());
+    }
+  });
+  server.Put("/api/file", [root](const httplib::Request& req, httplib::Response& res) {
+    const std::string rel = req.get_param_value("path");
+    if (!EndsWith(rel, ".json")) return SendError(res, 400, "path: expected a study file name ending in .json");
+    const Resolved r = Resolve(root, rel, false);
+    if (r.status != 200) return SendError(res, r.status, r.message);
+    if (json::parse(req.body, nullptr, false).is_discarded())
+      return SendError(res, 400, "body: expected the study's JSON text");
+    const fs::path tmp = r.path.parent_path() / ("." + r.path.filename().string() + ".camopt-save");
+    {
+      std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
+      file << req.body;
+      if (!file.flush()) return SendError(res, 500, "cannot write " + rel);
+    }
+    std::error_code ec;
+    fs::rename(tmp, r.path, ec);
+    if (ec) {
+      fs::remove(tmp, ec);
+      return SendError(res, 500, "cannot write " + rel + ": " + ec.message());
+    }
+    SendJson(res, {{"saved", Relative(root, r.path)}});
+  });
+  server.Post("/api/duplicate", [root](const httplib::Request& req, httplib::Response& res) {
+    const json body = json::parse(req.body, nullptr, false);
+    if (!body.is_object() || !body.contains("from") || !body.contains("to") || !body["from"].is_string() ||
+        !body["to"].is_string())
+      return SendError(res, 400, "body: expected {\"from\": PATH, \"to\": PATH}");
+    const std::string to = body["to"];
+    if (!EndsWith(to, ".json")) return SendError(res, 400, "to: expected a file name ending in .json");
+    const Resolved from = Resolve(root, body["from"], true);
+    if (from.status != 200) return SendError(res, from.status, from.message);
+    const Resolved dest = Resolve(root, to, false);
+    if (dest.status != 200) return SendError(res, dest.status, dest.message);
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(dest.path, ec)))
+      return SendError(res, 409, "to: " + to + " exists (duplicate never overwrites)");
+    fs::copy_file(from.path, dest.path, fs::copy_options::none, ec);
+    if (ec) return SendError(res, 500, "cannot copy to " + to + ": " + ec.message());
+    SendJson(res, {{"saved", Relative(root, dest.path)}});
+  });
+  server.Post("/api/validate", [](const httplib::Request& req, httplib::Response& res) {
+    const std::string file = req.has_param("path") ? req.get_param_value("path") : "study";
+    try {
+      CheckStudy(ParseBodyStudy(req.body, file), file);
+      SendJson(res, {{"ok", true}});
+    } catch (const StudyError& e) {
+      SendJson(res, {{"ok", false}, {"error", ErrorJson(e)}});
+    }
+  });
+  server.Post("/api/mechanism", [](const httplib::Request& req, httplib::Response& res) {
+    const double angle = req.has_param("angle") ? std::atof(req.get_param_value("angle").c_str()) : 0.0;
+    const int points = req.has_param("points") ? std::atoi(req.get_param_value("points").c_str()) : 360;
+    try {
+      SendJson(res, MechanismAt(ParseBodyStudy(req.body, "study"), angle, points));
+    } catch (const StudyError& e) {
+      SendJson(res, {{"error", ErrorJson(e)}}, 422);
+    }
+  });
+  server.Post("/api/runs", [&studio, root](const httplib::Request& req, httplib::Response& res) {
+    const json body = json::parse(req.body, nullptr, false);
+    if (!body.is_object() || !body.contains("path") || !body["path"].is_string())
+      return SendError(res, 400, "body: expected {\"path\": STUDY_FILE}");
+    const Resolved r = Resolve(root, body["path"], true);
+    if (r.status != 200) return SendError(res, r.status, r.message);
+    std::string error;
+    const auto run = studio.Start(r.path, error);
+    if (!run) return SendError(res, 500, error);
+    SendJson(res, RunStatus(*run), 201);
+  });
+  server.Get("/api/runs", [&studio](const httplib::Request&, httplib::Response& res) {
+    SendJson(res, studio.ListRuns());
+  });
+  server.Get(R"(/api/runs/(\d+))", [&studio](const httplib::Request& req, httplib::Response& res) {
+    const auto run = studio.Find(IdOf(req));
+    if (!run) return SendError(res, 404, "no such run");
+    SendJson(res, RunStatus(*run));
+  });
+  server.Post(R"(/api/runs/(\d+)/cancel)", [&studio](const httplib::Request& req, httplib::Response& res) {
+    const auto run = studio.Find(IdOf(req));
+    if (!run) return SendError(res, 404, "no such run");
+    Cancel(*run);
+    SendJson(res, RunStatus(*run));
+  });
+  server.Get(R"(/api/runs/(\d+)/result)", [&studio, root](const httplib::Request& req, httplib::Response& res) {
+    const auto run = studio.Find(IdOf(req));
+    if (!run) return SendError(res, 404, "no such run");
+    json status = RunStatus(*run);
+    if (!status["finished"].get<bool>()) return SendJson(res, status, 409);
+    const fs::path out = root / status["out"].get<std::string>();
+    std::ifstream in(out / "result.json");
+    const json result = json::parse(in, nullptr, false);
+    if (!result.is_object()) return SendJson(res, status);
+    status["result"] = result;
+    json files = json::array();
+    std::error_code ec;
+    for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+      if (it->is_regular_file(ec)) files.push_back(it->path().filename().string());
+    std::sort(files.begin(), files.end());
+    status["files"] = files;
+    std::ifstream study_in(root / status["study"].get<std::string>());
+    json study = json::parse(study_in, nullptr, false);
+    if (!study.is_object()) study = json::object();
+    const HeadlineTable table = EvaluateHeadlines(result.value("study", std::string()), study, result);
+    json rows = json::array();
+    for (const HeadlineRow& row : table.rows)
+      rows.push_back({{"label", row.label}, {"value", row.value}, {"limit", row.limit}, {"margin", row.margin},
+                      {"status", row.status}});
+    status["headlines"] = {{"verdict", VerdictLine(table)}, {"rows", rows}, {"registered", table.registered}};
+    SendJson(res, status);
+  });
+  // Live progress: server-sent events "progress" (the CLI's JSON progress reports), "message"
+  // (its other lines) and "end". A stream closed before "end" cancels the run (a comment line every
+  // 0.3 s finds a closed connection even while the run reports nothing).
+  server.Get(R"(/api/runs/(\d+)/events)", [&studio](const httplib::Request& req, httplib::Response& res) {
+    const auto run = studio.Find(IdOf(req));
+    if (!run) return SendError(res, 404, "no such run");
+    auto next = std::make_shared<size_t>(0);
+    auto ended = std::make_shared<bool>(false);
+    res.set_header("Cache-Control", "no-cache");
+    res.set_chunked_content_provider(
+        "text/event-stream",
+        [run, next, ended](size_t, httplib::DataSink& sink) {
+          std::vector<std::string> pending;
+          bool finished = false;
+          {
+            std::unique_lock<std::mutex> lock(run->mutex);
+            run->changed.wait_for(lock, std::chrono::milliseconds(300),
+                                  [&] { return run->events.size() > *next || run->finished; });
+            pending.assign(run->events.begin() + static_cast<long>(*next), run->events.end());
+            *next = run->events.size();
+            finished = run->finished;
+          }
+          if (pending.empty() && !finished) pending.push_back(": waiting\n\n");
+          for (const std::string& e : pending)
+            if (!sink.write(e.data(), e.size())) return false;
+          if (finished) {
+            *ended = true;
+            sink.done();
+          }
+          return true;
+        },
+        [run, ended](bool success) {
+          if (!success || !*ended) Cancel(*run);  // the browser went away mid-run
+        });
+  });
+}
+
+std::string FindWebDir(const std::string& given) {
+  if (!given.empty()) return given;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  for (const fs::path& candidate :
+       {exe.parent_path() / "web", exe.parent_path().parent_path() / "share" / "camopt" / "web"})
+    if (fs::is_regular_file(candidate / "index.html", ec)) return candidate.string();
+  return "";
+}
+
+}  // namespace
+
+int ServeMain(const ServeOptions& options) {
+  std::error_code ec;
+  const fs::path root = fs::canonical(options.folder, ec);
+  if (ec || !fs::is_directory(root, ec)) {
+    std::cerr << "camopt: error: serve: " << options.folder << ": expected a folder of study files, found "
+              << (ec ? ec.message() : std::string("not a folder")) << "\n";
+    return 2;
+  }
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) {
+    std::cerr << "camopt: error: serve: cannot find the program's own file (/proc/self/exe): " << ec.message()
+              << "\n";
+    return 1;
+  }
+  const std::string web = FindWebDir(options.web_dir);
+  Studio studio(root, exe.string());
+  httplib::Server server;
+  server.set_payload_max_length(kMaxBodyBytes);
+  server.set_pre_routing_handler([&studio](const httplib::Request& req, httplib::Response& res) {
+    std::string why;
+    if (studio.Allowed(req, why)) return httplib::Server::HandlerResponse::Unhandled;
+    SendError(res, 403, why);
+    return httplib::Server::HandlerResponse::Handled;
+  });
+  if (!web.empty()) {
+    server.set_mount_point("/", web);
+    server.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
+  } else {
+    server.Get("/", [](const httplib::Request&, httplib::Response& res) {
+      res.set_content("camopt studio: the front end's files were not found (build or install camopt, or give "
+                      "--web DIR); the API answers under /api/.",
+                      "text/plain");
+    });
+  }
+  Routes(server, studio);
+  int port = options.port;
+  if (port == 0) {
+    port = server.bind_to_any_port(options.host);
+    if (port <= 0) {
+      std::cerr << "camopt: error: serve: cannot listen on " << options.host << ": no free port\n";
+      return 2;
+    }
+  } else if (!server.bind_to_port(options.host, port)) {
+    std::cerr << "camopt: error: serve: cannot listen on " << options.host << ":" << port
+              << " (in use, or not an address of this machine); try --port 0 for a free port\n";
+    return 2;
+  }
+  studio.SetAddress(options.host, port);
+  const std::string host = options.host.find(':') != std::string::npos ? "[" + options.host + "]" : options.host;
+  std::cout << "camopt studio: http://" << host << ":" << port << "/" << std::endl;
+  if (web.empty()) std::cerr << "camopt: warning: serve: the front end's files were not found; API only\n";
+  std::cerr << "camopt: serving the study files of " << root.string() << " (Ctrl-C stops)" << std::endl;
+  server.listen_after_bind();
+  return 0;
+}
+
+}  // namespace camopt::studies

@@ -1,0 +1,36 @@
+// `camopt serve`: the studio, a local web app over the study files of one folder (docs/studio.md).
+//
+// An HTTP server (cpp-httplib) bound to 127.0.0.1 by default serves the front end (web/, installed
+// as share/camopt/web) and a JSON API: the kinds and their JSON Schemas, the study files of the
+// folder (list, open, save, duplicate), validation with the CLI's messages and JSON paths, runs,
+// their live progress as server-sent events, and the mechanism at an input angle
+// (studies/studio_mechanism.h). Each run is a child process `camopt run STUDY --out DIR --quiet
+// --progress json`, so it writes exactly the CLI's output folder and a crash cannot take the server
+// down; cancelling sends it SIGINT (the CLI removes its temporary folder and exits 130).
+//
+// Refused: a request whose Host or Origin is not the server's own address (403: another web site,
+// DNS rebinding), a path outside the folder after resolving symbolic links (403), a body above
+// kMaxBodyBytes (413). When the event stream of a run is closed before the run ends, the run is
+// cancelled.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace camopt::studies {
+
+struct ServeOptions {
+  std::string folder = ".";
+  std::string host = "127.0.0.1";
+  int port = 8765;      ///< 0: a free port chosen by the system
+  std::string web_dir;  ///< empty: <program folder>/web, else <program folder>/../share/camopt/web
+};
+
+/// Largest request body the studio reads (a study file is a few kB).
+inline constexpr size_t kMaxBodyBytes = size_t{1} << 20;
+
+/// Runs the studio until the process is interrupted; prints "camopt studio: http://HOST:PORT/" on
+/// stdout once it listens. Returns 2 when the folder or the address cannot be used.
+int ServeMain(const ServeOptions& options);
+
+}  // namespace camopt::studies

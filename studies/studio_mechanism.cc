@@ -1,0 +1,100 @@
+#include "studies/studio_mechanism.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "model/common/geometry.h"
+#include "model/lcr/contact.h"
+#include "model/lcr/forces.h"
+#include "model/lcr/kinematics.h"
+#include "model/lcr/profile.h"
+#include "studies/input.h"
+#include "studies/lcr_analysis_study.h"
+#include "studies/study.h"
+
+namespace camopt::studies {
+
+namespace {
+
+double Round6(double v) { return std::round(v * 1e6) / 1e6; }
+
+// The LCR at input angle θ. The conjugate cam turns about its centre C = e u(θ) by
+// φ = (1 − n_A/m_A) θ (paper eq. 1), so a point X of the cam frame of model/lcr/profile.h is at
+// C + R(φ) X in the fixed frame (the inverse of model/lcr/tolerance.h's x = R(−φ)(O − C)). The
+// roller centres and their loads are model/lcr/forces.h's AnalyzeAngle (paper eqs. 20–33).
+nlohmann::json LcrAt(const nlohmann::json& study, double theta_deg, int points) {
+  const Node root(&study, "study", "");
+  const lcr_analysis::Study s = lcr_analysis::Parse(root);
+  const lcr::Reducer<double>& r = s.reducer;
+  const double theta = theta_deg * kPi / 180.0;
+  const double phi = lcr::CamSpeedRatio(r) * theta;
+  const Vec2<double> centre = r.eccentricity * U(theta);
+  lcr::AngleLoads<double> loads;
+  bool have_loads = true;
+  try {
+    loads = lcr::AnalyzeAngle(r, s.material, s.load, theta, lcr::Stages{true, true, false});
+  } catch (const std::domain_error&) {
+    have_loads = false;  // no roller can carry load at this angle: geometry only
+    loads.input.contacts = lcr::RollerContacts(r, lcr::Side::kInput, theta);
+    loads.output.contacts = lcr::RollerContacts(r, lcr::Side::kOutput, theta);
+  }
+  nlohmann::json out = {{"kind", "lcr"},
+                        {"supported", true},
+                        {"input_angle_deg", theta_deg},
+                        {"eccentricity_mm", r.eccentricity},
+                        {"cam_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
+                        {"cam_rotation_deg", phi * 180.0 / kPi},
+                        {"output_turret_rotation_deg", lcr::OutputSpeedRatio(r) * theta_deg},
+                        {"loads", have_loads}};
+  double max_stress = 0;
+  nlohmann::json sides = nlohmann::json::array();
+  for (const lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const lcr::CamSide<double>& c = r.side(side);
+    const lcr::SideLoads<double>& l = side == lcr::Side::kInput ? loads.input : loads.output;
+    nlohmann::json profile = nlohmann::json::array();
+    for (const Vec2<double>& x : lcr::SampleCurve(c, r.eccentricity, c.roller_radius, points)) {
+      const Vec2<double> p = centre + Rotate(x, phi);
+      profile.push_back({Round6(p.x()), Round6(p.y())});
+    }
+    nlohmann::json rollers = nlohmann::json::array();
+    for (size_t k = 0; k < l.contacts.size(); ++k) {
+      const double force = have_loads && k < l.force.size() ? l.force[k] : 0.0;
+      double stress = have_loads && k < l.stress.size() ? l.stress[k] : 0.0;
+      if (!std::isfinite(stress)) stress = -1;  // an undercut contact: no finite Hertz stress
+      max_stress = std::max(max_stress, stress);
+      rollers.push_back({{"x", l.contacts[k].centre.x()},
+                         {"y", l.contacts[k].centre.y()},
+                         {"force_N", force},
+                         {"stress_MPa", stress},
+                         {"loaded", force > 0}});
+    }
+    sides.push_back({{"name", side == lcr::Side::kInput ? "input" : "output"},
+                     {"lobes", c.lobes},
+                     {"rollers", c.rollers},
+                     {"turret_radius_mm", c.turret_radius},
+                     {"roller_radius_mm", c.roller_radius},
+                     {"profile_mm", profile},
+                     {"rollers_at", rollers}});
+  }
+  out["sides"] = sides;
+  out["max_stress_MPa"] = max_stress;
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points) {
+  points = std::clamp(points, 36, 4000);
+  if (!std::isfinite(input_angle_deg) || std::abs(input_angle_deg) > 1e6)
+    throw StudyError("angle: expected a finite input angle in degrees within ±1e6, found " +
+                     std::to_string(input_angle_deg));
+  const std::string kind = study.is_object() && study.contains("study") && study["study"].is_string()
+                               ? study["study"].get<std::string>()
+                               : std::string();
+  if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
+  return {{"kind", kind}, {"supported", false}};
+}
+
+}  // namespace camopt::studies

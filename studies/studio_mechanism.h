@@ -1,0 +1,22 @@
+// The mechanism of a study at one input angle, for the studio's animation (`camopt serve`,
+// docs/studio.md): the parts' outlines and positions in the fixed frame, with the loads where they
+// are cheap, all from model/ functions (nothing here computes physics of its own).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+namespace camopt::studies {
+
+/// The mechanism of `study` (a study file's JSON) at input angle `input_angle_deg`, `points`
+/// points per outline (clamped to [36, 4000]). Supported kinds: lcr_analysis. Its JSON:
+///   {"kind": "lcr", "supported": true, "input_angle_deg", "eccentricity_mm",
+///    "cam_centre_mm": [x, y], "cam_rotation_deg", "output_turret_rotation_deg",
+///    "max_stress_MPa", "sides": [{"name": "input"|"output", "lobes", "rollers",
+///    "turret_radius_mm", "roller_radius_mm", "profile_mm": [[x, y], …],
+///    "rollers_at": [{"x", "y", "force_N", "stress_MPa", "loaded"}, …]}, …]}
+/// in the fixed frame [mm], the input turret standing, roller 0 of each turret on +x at 0°.
+/// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
+/// would refuse (the kind's Parse).
+nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points);
+
+}  // namespace camopt::studies
