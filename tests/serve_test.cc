@@ -1,0 +1,374 @@
+// `camopt serve` (studies/serve.h): the studio's server as a child process on a free port, driven
+// with cpp-httplib's client: what it refuses (other origins and hosts, paths outside its folder,
+// large bodies), validation with the CLI's message and JSON path, a run that writes the CLI's
+// output folder, and a client that disconnects mid-run (the run is cancelled, nothing left).
+// The mechanism endpoint's numbers (studies/studio_mechanism.h) against closed forms.
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "studies/serve.h"
+#include "studies/studio_mechanism.h"
+#include "tests/test_util.h"
+// After Eigen (through test_util.h): httplib.h brings <resolv.h>, whose macro _res is a parameter
+// name in Eigen's headers.
+#include <httplib.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using camopt::testing::ReadFile;
+using camopt::testing::TempDir;
+using camopt::testing::WriteFile;
+using nlohmann::json;
+
+fs::path Example(const std::string& name) { return fs::path(CAMOPT_SOURCE_DIR) / "studies" / "examples" / name; }
+
+// `camopt serve --port 0 FOLDER` as a child; the port read from its first line on stdout.
+class Studio {
+ public:
+  explicit Studio(const fs::path& folder) {
+    int out[2];
+    if (pipe(out) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      dup2(out[1], 1);
+      const int null_fd = open("/dev/null", O_WRONLY);
+      dup2(null_fd, 2);
+      close(out[0]);
+      execl(CAMOPT_BINARY, "camopt", "serve", "--port", "0", folder.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(out[1]);
+    std::string line;
+    pollfd p{out[0], POLLIN, 0};
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (line.find('\n') == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+      if (poll(&p, 1, 200) <= 0) continue;
+      char c[256];
+      const ssize_t n = read(out[0], c, sizeof c);
+      if (n <= 0) break;
+      line.append(c, static_cast<size_t>(n));
+    }
+    close(out[0]);
+    first_line_ = line;
+    const std::string prefix = "camopt studio: http://127.0.0.1:";
+    if (line.rfind(prefix, 0) == 0) port_ = std::atoi(line.c_str() + prefix.size());
+  }
+  ~Studio() {
+    if (pid_ > 0) {
+      kill(pid_, SIGINT);
+      int status = 0;
+      waitpid(pid_, &status, 0);
+    }
+  }
+  int port() const { return port_; }
+  pid_t pid() const { return pid_; }
+  const std::string& first_line() const { return first_line_; }
+  httplib::Client Client() const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(60, 0);
+    return c;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int port_ = 0;
+  std::string first_line_;
+};
+
+// Follows a run's events to its end; returns the "end" event's data.
+json FollowToEnd(const Studio& studio, int id) {
+  auto c = studio.Client();
+  std::string text;
+  auto res = c.Get(("/api/runs/" + std::to_string(id) + "/events").c_str(), [&](const char* d, size_t n) {
+    text.append(d, n);
+    return true;
+  });
+  EXPECT_TRUE(res) << "events stream";
+  const size_t at = text.find("event: end\ndata: ");
+  if (at == std::string::npos) return json();
+  const size_t start = at + std::string("event: end\ndata: ").size();
+  return json::parse(text.substr(start, text.find('\n', start) - start), nullptr, false);
+}
+
+TEST(Serve, PrintsItsAddressAndServesTheFrontEndAndTheKinds) {
+  const fs::path dir = TempDir("serve-address");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto kinds = c.Get("/api/kinds");
+  ASSERT_TRUE(kinds);
+  EXPECT_EQ(kinds->status, 200);
+  const json k = json::parse(kinds->body);
+  EXPECT_NE(std::find(k.begin(), k.end(), "lcr_analysis"), k.end());
+  auto schema = c.Get("/api/schema/lcr_analysis");
+  ASSERT_TRUE(schema);
+  EXPECT_EQ(schema->status, 200);
+  EXPECT_TRUE(json::parse(schema->body).contains("properties"));
+  auto page = c.Get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  EXPECT_NE(page->body.find("camopt studio"), std::string::npos);
+}
+
+TEST(Serve, RefusesOtherOriginsAndHosts) {
+  const fs::path dir = TempDir("serve-origin");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const std::string self = "http://127.0.0.1:" + std::to_string(studio.port());
+  auto own = c.Get("/api/kinds", {{"Origin", self}});
+  ASSERT_TRUE(own);
+  EXPECT_EQ(own->status, 200);
+  auto other = c.Get("/api/kinds", {{"Origin", "http://evil.example"}});
+  ASSERT_TRUE(other);
+  EXPECT_EQ(other->status, 403);
+  // Another port of this machine is another origin.
+  auto other_port = c.Post("/api/validate", {{"Origin", "http://127.0.0.1:1"}}, "{}", "application/json");
+  ASSERT_TRUE(other_port);
+  EXPECT_EQ(other_port->status, 403);
+  // DNS rebinding: a page of evil.example whose name now points at 127.0.0.1 sends Host evil.example.
+  auto rebound = c.Get("/api/files", {{"Host", "evil.example:" + std::to_string(studio.port())}});
+  ASSERT_TRUE(rebound);
+  EXPECT_EQ(rebound->status, 403);
+  auto page = c.Get("/", {{"Host", "evil.example"}});
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 403);
+}
+
+TEST(Serve, RefusesPathsOutsideItsFolderAlsoThroughSymlinks) {
+  const fs::path base = TempDir("serve-paths");
+  const fs::path dir = base / "folder";
+  fs::create_directories(dir / "sub");
+  WriteFile(base / "secret.json", "{\"secret\": 1}");
+  WriteFile(dir / "inside.json", "{\"study\": \"lcr_analysis\"}");
+  fs::create_symlink(base / "secret.json", dir / "link.json");
+  fs::create_symlink(base, dir / "up");
+  fs::create_symlink(dir / "inside.json", dir / "sub" / "alias.json");  // inside: allowed
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const auto get = [&](const std::string& p) {
+    auto r = c.Get("/api/file", httplib::Params{{"path", p}}, httplib::Headers{});
+    return r ? r->status : -1;
+  };
+  EXPECT_EQ(get("inside.json"), 200);
+  EXPECT_EQ(get("sub/alias.json"), 200);
+  EXPECT_EQ(get("../secret.json"), 403);
+  EXPECT_EQ(get("sub/../../secret.json"), 403);
+  EXPECT_EQ(get((base / "secret.json").string()), 403);
+  EXPECT_EQ(get("link.json"), 403);
+  EXPECT_EQ(get("up/secret.json"), 403);
+  EXPECT_EQ(get("absent.json"), 404);
+  const auto put = [&](const std::string& p) {
+    auto r = c.Put(("/api/file?path=" + p).c_str(), "{\"study\": \"x\"}", "application/json");
+    return r ? r->status : -1;
+  };
+  EXPECT_EQ(put("../written.json"), 403);
+  EXPECT_EQ(put("up/written.json"), 403);
+  EXPECT_EQ(put("link.json"), 403);
+  EXPECT_FALSE(fs::exists(base / "written.json"));
+  EXPECT_EQ(ReadFile(base / "secret.json"), "{\"secret\": 1}");
+  EXPECT_EQ(put("saved.json"), 200);
+  EXPECT_TRUE(fs::exists(dir / "saved.json"));
+  auto dup = c.Post("/api/duplicate", "{\"from\": \"inside.json\", \"to\": \"../copy.json\"}", "application/json");
+  ASSERT_TRUE(dup);
+  EXPECT_EQ(dup->status, 403);
+  dup = c.Post("/api/duplicate", "{\"from\": \"inside.json\", \"to\": \"copy.json\"}", "application/json");
+  ASSERT_TRUE(dup);
+  EXPECT_EQ(dup->status, 200);
+  EXPECT_EQ(ReadFile(dir / "copy.json"), ReadFile(dir / "inside.json"));
+  dup = c.Post("/api/duplicate", "{\"from\": \"inside.json\", \"to\": \"copy.json\"}", "application/json");
+  ASSERT_TRUE(dup);
+  EXPECT_EQ(dup->status, 409);  // never overwrites
+  auto run = c.Post("/api/runs", "{\"path\": \"link.json\"}", "application/json");
+  ASSERT_TRUE(run);
+  EXPECT_EQ(run->status, 403);
+}
+
+TEST(Serve, RefusesBodiesAboveTheLimit) {
+  const fs::path dir = TempDir("serve-body");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const std::string big(camopt::studies::kMaxBodyBytes + 1, ' ');
+  auto res = c.Post("/api/validate", big, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 413);
+  res = c.Put("/api/file?path=big.json", big, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 413);
+  EXPECT_FALSE(fs::exists(dir / "big.json"));
+  res = c.Post("/api/validate", std::string(1000, ' ') + "{}", "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);  // under the limit: answered
+}
+
+TEST(Serve, ValidateGivesTheCliMessageWithItsJsonPath) {
+  const fs::path dir = TempDir("serve-validate");
+  json study = json::parse(ReadFile(Example("lcr_ii.json")));
+  study["reducer"]["input"]["roller_diameter_mm"] = -12;
+  WriteFile(dir / "bad.json", study.dump(2));
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY + " run bad.json --quiet --out out 2> err.txt";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::string cli = ReadFile(dir / "err.txt");
+  ASSERT_EQ(cli.rfind("camopt: error: ", 0), 0u) << cli;
+  cli = cli.substr(std::string("camopt: error: ").size());
+  cli = cli.substr(0, cli.find('\n'));
+
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/validate?path=bad.json", study.dump(), "application/json");
+  ASSERT_TRUE(res);
+  const json v = json::parse(res->body);
+  EXPECT_FALSE(v["ok"].get<bool>());
+  EXPECT_EQ(v["error"]["message"], cli);
+  EXPECT_EQ(v["error"]["path"], "/reducer/input/roller_diameter_mm");
+  res = c.Post("/api/validate?path=lcr_ii.json", ReadFile(Example("lcr_ii.json")), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_TRUE(json::parse(res->body)["ok"].get<bool>());
+  res = c.Post("/api/validate?path=x.json", "{\"study\": ", "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_FALSE(json::parse(res->body)["ok"].get<bool>());  // a syntax error, with line and column
+  EXPECT_NE(json::parse(res->body)["error"]["message"].get<std::string>().find("x.json"), std::string::npos);
+}
+
+TEST(Serve, ARunWritesTheSameOutputFolderAsTheCli) {
+  const fs::path dir = TempDir("serve-run");
+  fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY +
+                          " run lcr_ii.json --quiet --out cli_out > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/runs", "{\"path\": \"lcr_ii.json\"}", "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 201) << res->body;
+  const json run = json::parse(res->body);
+  EXPECT_EQ(run["out"], "results/lcr_ii");
+  const json end = FollowToEnd(studio, run["id"].get<int>());
+  EXPECT_EQ(end["state"], "done") << end.dump();
+  EXPECT_EQ(end["exit_code"], 0);
+  std::vector<std::string> ours, cli;
+  for (const auto& e : fs::directory_iterator(dir / "results" / "lcr_ii")) ours.push_back(e.path().filename());
+  for (const auto& e : fs::directory_iterator(dir / "cli_out")) cli.push_back(e.path().filename());
+  std::sort(ours.begin(), ours.end());
+  std::sort(cli.begin(), cli.end());
+  EXPECT_EQ(ours, cli);
+  for (const std::string f : {"result.json", "series.csv"})
+    EXPECT_EQ(ReadFile(dir / "results" / "lcr_ii" / f), ReadFile(dir / "cli_out" / f)) << f;
+  auto result = c.Get(("/api/runs/" + std::to_string(run["id"].get<int>()) + "/result").c_str());
+  ASSERT_TRUE(result);
+  const json r = json::parse(result->body);
+  EXPECT_EQ(r["result"]["study"], "lcr_analysis");
+  EXPECT_FALSE(r["headlines"]["rows"].empty());
+}
+
+TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
+  const fs::path dir = TempDir("serve-disconnect");
+  // About 8 s on one core (its tolerance Monte Carlo reports progress all along).
+  fs::copy_file(Example("cycloid_ltca_nnm_tolerances.json"), dir / "slow.json");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/runs", "{\"path\": \"slow.json\"}", "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 201) << res->body;
+  const json run = json::parse(res->body);
+  const int id = run["id"];
+  const pid_t child = run["pid"];
+  ASSERT_GT(child, 0);
+  std::string text;
+  {
+    auto events = studio.Client();
+    auto r = events.Get(("/api/runs/" + std::to_string(id) + "/events").c_str(), [&](const char* d, size_t n) {
+      text.append(d, n);
+      return text.find("event: progress") == std::string::npos;  // the first report, then hang up
+    });
+    EXPECT_FALSE(r);  // cancelled by us
+  }
+  EXPECT_NE(text.find("event: progress"), std::string::npos);
+  const auto hung_up = std::chrono::steady_clock::now();
+  json status;
+  for (int i = 0; i < 200; ++i) {
+    auto s = c.Get(("/api/runs/" + std::to_string(id)).c_str());
+    ASSERT_TRUE(s);
+    status = json::parse(s->body);
+    if (status["finished"].get<bool>()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - hung_up).count();
+  EXPECT_TRUE(status["finished"].get<bool>());
+  EXPECT_EQ(status["state"], "cancelled");
+  EXPECT_EQ(status["exit_code"], 130);
+  EXPECT_LT(seconds, 5.0);
+  EXPECT_EQ(kill(child, 0), -1);  // the child is gone (and reaped by the server)
+  EXPECT_FALSE(fs::exists(dir / "results" / "slow"));
+  for (const auto& e : fs::directory_iterator(dir / "results"))
+    ADD_FAILURE() << "left behind: " << e.path();
+  // The server lives on.
+  auto kinds = c.Get("/api/kinds");
+  ASSERT_TRUE(kinds);
+  EXPECT_EQ(kinds->status, 200);
+}
+
+// The mechanism at an input angle against closed forms: the input turret stands, the output turret
+// turns by θ_o = (1 − n_A m_B/(m_A n_B)) θ (paper eq. 2); the cam's centre is e u(θ); every roller
+// centre lies on the pitch curve, so the nearest profile point is a roller radius from it and none
+// is nearer (conjugate profiles, paper eqs. 4–9); the output rollers' forces balance the output
+// torque about the axis, each along the line to the pitch point I = e n/(n − m) u(θ) (eq. 25).
+TEST(Serve, MechanismMatchesTheClosedForms) {
+  const json study = json::parse(ReadFile(Example("lcr_ii.json")));
+  const double e = 2, theta_deg = 37.5, theta = theta_deg * M_PI / 180;
+  const json m = camopt::studies::MechanismAt(study, theta_deg, 4000);
+  ASSERT_TRUE(m["supported"].get<bool>());
+  EXPECT_NEAR(m["cam_centre_mm"][0].get<double>(), e * std::cos(theta), 1e-6);
+  EXPECT_NEAR(m["cam_centre_mm"][1].get<double>(), e * std::sin(theta), 1e-6);
+  struct Side {
+    int m, n;
+    double rd, turn;
+  };
+  const double turn_out = (1.0 - 13.0 * 14.0 / (12.0 * 15.0)) * theta;
+  const Side sides[2] = {{12, 13, 37, 0.0}, {14, 15, 42, turn_out}};
+  for (int s = 0; s < 2; ++s) {
+    const json& side = m["sides"][s];
+    const json& rollers = side["rollers_at"];
+    ASSERT_EQ(rollers.size(), size_t(sides[s].n));
+    double torque = 0;
+    const double k = double(sides[s].n) / (sides[s].n - sides[s].m);
+    const double ix = e * k * std::cos(theta), iy = e * k * std::sin(theta);
+    for (int i = 0; i < sides[s].n; ++i) {
+      const double a = 2 * M_PI * i / sides[s].n + sides[s].turn;
+      const double x = rollers[i]["x"], y = rollers[i]["y"];
+      EXPECT_NEAR(x, sides[s].rd * std::cos(a), 1e-9) << s << " " << i;
+      EXPECT_NEAR(y, sides[s].rd * std::sin(a), 1e-9) << s << " " << i;
+      double nearest = 1e9;
+      for (const json& p : side["profile_mm"])
+        nearest = std::min(nearest, std::hypot(p[0].get<double>() - x, p[1].get<double>() - y));
+      EXPECT_NEAR(nearest, 6.0, 2e-3) << "roller " << i << " of side " << s;
+      const double dx = ix - x, dy = iy - y, len = std::hypot(dx, dy);
+      torque += rollers[i]["force_N"].get<double>() * std::abs(x * dy / len - y * dx / len);
+    }
+    if (s == 1) EXPECT_NEAR(torque, 80000.0, 1e-6 * 80000.0);  // T_o = 80 N·m in N·mm
+  }
+  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("disc_cam_translating.json"))), 0, 100);
+  EXPECT_FALSE(other["supported"].get<bool>());
+}
+
+}  // namespace
