@@ -66,6 +66,8 @@ nlohmann::json LcrAt(const nlohmann::json& study, double theta_deg, int points) 
       max_stress = std::max(max_stress, stress);
       rollers.push_back({{"x", l.contacts[k].centre.x()},
                          {"y", l.contacts[k].centre.y()},
+                         {"dx", l.contacts[k].direction.x()},
+                         {"dy", l.contacts[k].direction.y()},
                          {"force_N", force},
                          {"stress_MPa", stress},
                          {"loaded", force > 0}});

@@ -13,8 +13,9 @@ namespace camopt::studies {
 ///    "cam_centre_mm": [x, y], "cam_rotation_deg", "output_turret_rotation_deg",
 ///    "max_stress_MPa", "sides": [{"name": "input"|"output", "lobes", "rollers",
 ///    "turret_radius_mm", "roller_radius_mm", "profile_mm": [[x, y], …],
-///    "rollers_at": [{"x", "y", "force_N", "stress_MPa", "loaded"}, …]}, …]}
-/// in the fixed frame [mm], the input turret standing, roller 0 of each turret on +x at 0°.
+///    "rollers_at": [{"x", "y", "dx", "dy", "force_N", "stress_MPa", "loaded"}, …]}, …]}
+/// in the fixed frame [mm], the input turret standing, roller 0 of each turret on +x at 0°; (dx, dy)
+/// the unit direction of the force of the roller on the cam; stress_MPa −1 at an undercut contact.
 /// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
 /// would refuse (the kind's Parse).
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points);

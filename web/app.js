@@ -1,0 +1,546 @@
+// camopt studio, the front end of `camopt serve` (docs/studio.md): plain ES module, no framework.
+// Edit: a form generated from the kind's JSON Schema, checked by the server with the CLI's
+// messages. Run: save, start, live progress (server-sent events), cancel. See: the headline table,
+// the CSV outputs as uPlot charts, the mechanism at a crank angle (SVG, model units).
+
+const $ = (sel) => document.querySelector(sel);
+const state = {
+  folder: '', files: [], path: null, doc: null, schema: null,
+  run: null, source: null, runs: [], shown: null, mechanismStudy: null, playing: null,
+};
+
+async function api(method, url, body) {
+  const init = { method, headers: {} };
+  if (body !== undefined) {
+    init.body = typeof body === 'string' ? body : JSON.stringify(body);
+    init.headers['Content-Type'] = 'application/json';
+  }
+  const res = await fetch(url, init);
+  const text = await res.text();
+  let data = text;
+  try { data = JSON.parse(text); } catch (e) { /* CSV or text */ }
+  if (!res.ok && !(data && data.error !== undefined)) throw new Error(`${method} ${url}: ${res.status}`);
+  return { status: res.status, data, text };
+}
+
+// ---- JSON pointers ----------------------------------------------------------------------------
+const esc = (k) => String(k).replace(/~/g, '~0').replace(/\//g, '~1');
+const unesc = (k) => k.replace(/~1/g, '/').replace(/~0/g, '~');
+const parts = (ptr) => (ptr === '' || ptr === '/' ? [] : ptr.slice(1).split('/').map(unesc));
+function getAt(doc, ptr) {
+  let v = doc;
+  for (const k of parts(ptr)) { if (v == null || typeof v !== 'object') return undefined; v = v[k]; }
+  return v;
+}
+function setAt(doc, ptr, value) {
+  const ks = parts(ptr);
+  let v = doc;
+  for (let i = 0; i < ks.length - 1; i++) {
+    if (v[ks[i]] == null || typeof v[ks[i]] !== 'object') v[ks[i]] = {};
+    v = v[ks[i]];
+  }
+  const last = ks[ks.length - 1];
+  if (value === undefined) {
+    delete v[last];
+    // Drop objects left empty, so an untouched optional block stays absent.
+    for (let n = ks.length - 1; n > 0; n--) {
+      const parent = getAt(doc, '/' + ks.slice(0, n - 1).map(esc).join('/'));
+      const child = parent && parent[ks[n - 1]];
+      if (child && typeof child === 'object' && !Array.isArray(child) && Object.keys(child).length === 0)
+        delete parent[ks[n - 1]];
+      else break;
+    }
+  } else {
+    v[last] = value;
+  }
+}
+
+// ---- the form from the schema -------------------------------------------------------------------
+function boundsText(s) {
+  const b = [];
+  if (s.exclusiveMinimum !== undefined) b.push(`> ${s.exclusiveMinimum}`);
+  if (s.minimum !== undefined) b.push(`≥ ${s.minimum}`);
+  if (s.exclusiveMaximum !== undefined) b.push(`< ${s.exclusiveMaximum}`);
+  if (s.maximum !== undefined && s.maximum < 1e9) b.push(`≤ ${s.maximum}`);
+  if (s.default !== undefined) b.push(`default ${JSON.stringify(s.default)}`);
+  return b.join(', ');
+}
+
+function unitOf(s) {
+  const m = /\[([^\]]+)\]\s*$/.exec(s.description || '');
+  return m ? m[1] : '';
+}
+
+function fieldFor(key, s, ptr, required) {
+  const row = document.createElement('div');
+  row.className = 'field';
+  row.dataset.path = ptr;
+  const label = document.createElement('label');
+  label.textContent = key + (required ? ' *' : '');
+  const id = 'f' + ptr.replace(/[^A-Za-z0-9]/g, '_');
+  label.htmlFor = id;
+  const value = getAt(state.doc, ptr);
+  let input;
+  const kind = s.enum ? 'enum' : s.type;
+  if (kind === 'enum' || kind === 'boolean') {
+    input = document.createElement('select');
+    const options = kind === 'enum' ? s.enum : [true, false];
+    input.append(new Option(s.default !== undefined ? `(default ${s.default})` : '(absent)', ''));
+    for (const o of options) input.append(new Option(String(o), JSON.stringify(o)));
+    input.value = value === undefined ? '' : JSON.stringify(value);
+    input.addEventListener('change', () =>
+      edit(ptr, input.value === '' ? undefined : JSON.parse(input.value)));
+  } else if (kind === 'number' || kind === 'integer' || kind === 'string') {
+    input = document.createElement('input');
+    input.type = 'text';
+    if (kind !== 'string') input.inputMode = 'decimal';
+    input.value = value === undefined ? '' : (typeof value === 'string' ? value : JSON.stringify(value));
+    if (s.default !== undefined) input.placeholder = String(s.default);
+    input.addEventListener('change', () => {
+      const t = input.value.trim();
+      if (t === '') return edit(ptr, undefined);
+      if (kind === 'string') return edit(ptr, t);
+      // A number when it reads as one; else the text, so that the server says what it expected.
+      const n = Number(t);
+      edit(ptr, t !== '' && Number.isFinite(n) ? n : t);
+    });
+  } else {
+    input = document.createElement('textarea');
+    input.rows = value !== undefined && JSON.stringify(value).length > 60 ? 3 : 1;
+    input.value = value === undefined ? '' : JSON.stringify(value);
+    input.placeholder = s.default !== undefined ? JSON.stringify(s.default) : 'JSON';
+    input.addEventListener('change', () => {
+      const t = input.value.trim();
+      if (t === '') return edit(ptr, undefined);
+      try { edit(ptr, JSON.parse(t)); } catch (e) { edit(ptr, t); }
+    });
+  }
+  input.id = id;
+  input.dataset.path = ptr;
+  input.title = s.description || '';
+  const desc = document.createElement('div');
+  desc.className = 'desc';
+  desc.textContent = s.description || '';
+  const bounds = document.createElement('span');
+  bounds.className = 'bounds';
+  const unit = unitOf(s);
+  bounds.textContent = [unit && `unit ${unit}`, boundsText(s)].filter(Boolean).join('; ');
+  if (bounds.textContent) { desc.append(document.createElement('br'), bounds); }
+  row.append(label, input, desc);
+  return row;
+}
+
+function objectFor(key, s, ptr, required) {
+  const fs = document.createElement('fieldset');
+  fs.dataset.path = ptr;
+  const legend = document.createElement('legend');
+  legend.textContent = key + (required ? ' *' : '');
+  const d = document.createElement('span');
+  d.className = 'desc';
+  d.textContent = s.description || '';
+  legend.append(d);
+  fs.append(legend);
+  const req = new Set(s.required || []);
+  for (const [k, sub] of Object.entries(s.properties || {})) {
+    const p = `${ptr}/${esc(k)}`;
+    if (sub.type === 'object' && sub.properties) fs.append(objectFor(k, sub, p, req.has(k)));
+    else fs.append(fieldFor(k, sub, p, req.has(k)));
+  }
+  return fs;
+}
+
+function renderForm() {
+  const form = $('#form');
+  form.replaceChildren();
+  $('#edit-hint').textContent = state.schema
+    ? `${state.doc.study}: ${state.schema.title || ''} (* required; an empty field takes its default)`
+    : 'This file is not a study of a known kind: edit it as JSON.';
+  if (!state.schema) {
+    const ta = document.createElement('textarea');
+    ta.rows = 30; ta.cols = 100; ta.id = 'raw';
+    ta.value = JSON.stringify(state.doc, null, 2);
+    ta.addEventListener('change', () => {
+      try { state.doc = JSON.parse(ta.value); validate(); } catch (e) { showValidation({ message: String(e) }); }
+    });
+    form.append(ta);
+    return;
+  }
+  const req = new Set(state.schema.required || []);
+  for (const [k, sub] of Object.entries(state.schema.properties || {})) {
+    if (k === 'study') continue;
+    const p = '/' + esc(k);
+    if (sub.type === 'object' && sub.properties) form.append(objectFor(k, sub, p, req.has(k)));
+    else form.append(fieldFor(k, sub, p, req.has(k)));
+  }
+}
+
+let validateTimer = null;
+function edit(ptr, value) {
+  setAt(state.doc, ptr, value);
+  $('#save').disabled = false;
+  clearTimeout(validateTimer);
+  validateTimer = setTimeout(validate, 150);
+}
+
+function showValidation(error) {
+  document.querySelectorAll('.field-error').forEach((e) => e.remove());
+  document.querySelectorAll('.field.invalid').forEach((e) => e.classList.remove('invalid'));
+  const box = $('#validation');
+  if (!error) {
+    box.className = 'validation ok';
+    box.textContent = 'The study is valid.';
+    return;
+  }
+  box.className = 'validation bad';
+  box.textContent = error.message;
+  // Next to the field the JSON path names, else its nearest drawn parent.
+  let ptr = error.path || '';
+  let el = null;
+  while (ptr && !(el = document.querySelector(`#form [data-path="${CSS.escape(ptr)}"]:not(input):not(select):not(textarea)`)))
+    ptr = ptr.slice(0, ptr.lastIndexOf('/'));
+  if (!el) return;
+  const msg = document.createElement('div');
+  msg.className = 'field-error';
+  msg.dataset.for = error.path;
+  msg.textContent = error.message;
+  if (el.classList.contains('field')) { el.classList.add('invalid'); el.append(msg); }
+  else el.insertBefore(msg, el.children[1] || null);
+}
+
+async function validate() {
+  if (!state.doc) return false;
+  const { data } = await api('POST', `/api/validate?path=${encodeURIComponent(state.path)}`, state.doc);
+  showValidation(data.ok ? null : data.error);
+  return !!data.ok;
+}
+
+// ---- files ------------------------------------------------------------------------------------
+async function loadFiles() {
+  const { data } = await api('GET', '/api/files');
+  state.folder = data.folder;
+  state.files = data.files;
+  $('#folder').textContent = data.folder;
+  const ul = $('#files');
+  ul.replaceChildren();
+  for (const f of data.files) {
+    const li = document.createElement('li');
+    li.dataset.path = f.path;
+    li.textContent = f.path;
+    const k = document.createElement('span');
+    k.className = 'kind';
+    k.textContent = [f.kind, f.name].filter(Boolean).join(' · ');
+    li.append(k);
+    li.classList.toggle('active', f.path === state.path);
+    li.addEventListener('click', () => openFile(f.path));
+    ul.append(li);
+  }
+}
+
+async function openFile(path) {
+  const { data } = await api('GET', `/api/file?path=${encodeURIComponent(path)}`);
+  if (typeof data !== 'object' || data === null || data.error) {
+    showValidation({ message: (data && data.error) || `${path}: not JSON` });
+    return;
+  }
+  state.path = path;
+  state.doc = data;
+  state.schema = null;
+  if (typeof data.study === 'string') {
+    const r = await api('GET', `/api/schema/${encodeURIComponent(data.study)}`);
+    if (r.status === 200) state.schema = r.data;
+  }
+  $('#current').textContent = path;
+  document.querySelectorAll('#files li').forEach((li) => li.classList.toggle('active', li.dataset.path === path));
+  $('#save').disabled = true;
+  $('#duplicate').disabled = false;
+  $('#run').disabled = false;
+  renderForm();
+  document.body.dataset.loaded = path;
+  await validate();
+}
+
+async function save() {
+  const r = await api('PUT', `/api/file?path=${encodeURIComponent(state.path)}`, JSON.stringify(state.doc, null, 2) + '\n');
+  if (r.status !== 200) throw new Error(r.data.error);
+  $('#save').disabled = true;
+}
+
+async function duplicate() {
+  const to = prompt('Copy to (a new .json file in the folder):', state.path.replace(/\.json$/, '_copy.json'));
+  if (!to) return;
+  await save();
+  const r = await api('POST', '/api/duplicate', { from: state.path, to });
+  if (r.status !== 200) return alert(r.data.error);
+  await loadFiles();
+  await openFile(r.data.saved);
+}
+
+// ---- runs -------------------------------------------------------------------------------------
+function setRunState(s) {
+  $('#run-state').textContent = s;
+  $('#run-state').dataset.state = s;
+}
+
+async function startRun() {
+  if (!(await validate())) { showTab('edit'); return; }
+  await save();
+  $('#run-log').textContent = '';
+  $('#progress').value = 0;
+  const r = await api('POST', '/api/runs', { path: state.path });
+  if (r.status !== 201) { setRunState('error'); $('#run-log').textContent = r.data.error; return; }
+  state.run = r.data;
+  setRunState('running');
+  $('#cancel').disabled = false;
+  $('#run').disabled = true;
+  const source = new EventSource(`/api/runs/${r.data.id}/events`);
+  state.source = source;
+  source.addEventListener('progress', (ev) => {
+    const p = JSON.parse(ev.data);
+    $('#progress').value = p.fraction;
+    const eta = p.eta_s >= 0 ? `, ETA ${p.eta_s.toFixed(1)} s` : '';
+    $('#progress-text').textContent =
+      `${p.label}: ${(100 * p.fraction).toFixed(1)} %  ${p.elapsed_s.toFixed(1)} s${eta}  ${p.detail || ''}`;
+  });
+  source.addEventListener('message', (ev) => { $('#run-log').textContent += JSON.parse(ev.data).text + '\n'; });
+  source.addEventListener('end', async (ev) => {
+    source.close();
+    const end = JSON.parse(ev.data);
+    $('#cancel').disabled = true;
+    $('#run').disabled = false;
+    if (end.state === 'done' || end.state === 'incomplete') $('#progress').value = 1;
+    setRunState(end.state);
+    if (end.messages.length) $('#run-log').textContent = end.messages.join('\n');
+    await loadRuns();
+    if (end.state === 'done' || end.state === 'incomplete') { await showResult(state.run.id); showTab('see'); }
+  });
+}
+
+async function cancelRun() {
+  if (state.run) await api('POST', `/api/runs/${state.run.id}/cancel`);
+}
+
+async function loadRuns() {
+  const { data } = await api('GET', '/api/runs');
+  state.runs = data;
+  const ul = $('#runs');
+  ul.replaceChildren();
+  for (const r of [...data].reverse()) {
+    const li = document.createElement('li');
+    li.textContent = `#${r.id} ${r.study}`;
+    const k = document.createElement('span');
+    k.className = 'kind';
+    k.textContent = r.state;
+    li.append(k);
+    if (r.finished) li.addEventListener('click', () => { showResult(r.id); showTab('see'); });
+    ul.append(li);
+  }
+  for (const sel of [$('#compare-a'), $('#compare-b')]) {
+    const keep = sel.value;
+    sel.replaceChildren(new Option('—', ''));
+    for (const r of data.filter((x) => x.state === 'done' || x.state === 'incomplete'))
+      sel.append(new Option(`#${r.id} ${r.study}`, r.id));
+    sel.value = keep;
+  }
+}
+
+// ---- see: headlines, charts, mechanism ---------------------------------------------------------
+function headlineTable(table, rows) {
+  table.replaceChildren();
+  const head = table.insertRow();
+  for (const h of ['', 'value', 'limit', 'margin', '']) head.append(Object.assign(document.createElement('th'), { textContent: h }));
+  for (const row of rows) {
+    const tr = table.insertRow();
+    for (const key of ['label', 'value', 'limit', 'margin', 'status']) {
+      const td = tr.insertCell();
+      td.textContent = row[key];
+      if (key === 'status') td.className = row.status;
+    }
+  }
+}
+
+async function showResult(id) {
+  const { data } = await api('GET', `/api/runs/${id}/result`);
+  state.shown = data;
+  $('#verdict').textContent = data.headlines ? `${data.study}: ${data.headlines.verdict}` : `${data.study}: ${data.state}`;
+  headlineTable($('#headlines'), data.headlines ? data.headlines.rows : []);
+  const study = await api('GET', `/api/file?path=${encodeURIComponent(data.study)}`);
+  state.mechanismStudy = typeof study.data === 'object' ? study.data : null;
+  await drawCharts(data);
+  await drawMechanism(Number($('#crank').value));
+  document.body.dataset.result = String(id);
+}
+
+const UNITS = ['deg', 'N', 'MPa', 'Nm', 'mm', 'GPa', 'W', 'h', 'rpm', 'um', 'rad', 's'];
+function unitGroup(name) {
+  const m = /_([A-Za-z]+)$/.exec(name);
+  return m && UNITS.includes(m[1]) ? m[1] : '';
+}
+
+function parseCsv(text) {
+  const lines = text.trim().split(/\r?\n/);
+  const header = lines[0].split(',');
+  const cols = header.map(() => []);
+  for (const line of lines.slice(1)) {
+    const cells = line.split(',');
+    cells.forEach((c, i) => { if (i < cols.length) cols[i].push(c === '' ? null : Number(c)); });
+  }
+  return { header, cols };
+}
+
+async function drawCharts(result) {
+  const host = $('#charts');
+  host.replaceChildren();
+  if (typeof uPlot === 'undefined') { host.textContent = 'uPlot is not installed (npm ci in web/): no charts.'; return; }
+  const limits = (state.mechanismStudy && state.mechanismStudy.limits) || {};
+  for (const name of (result.files || []).filter((f) => f.endsWith('.csv'))) {
+    const { text } = await api('GET', `/api/file?path=${encodeURIComponent(result.out + '/' + name)}`);
+    const { header, cols } = parseCsv(text);
+    if (cols.length < 2 || cols[0].length < 2 || cols[0].some((v) => v === null || Number.isNaN(v))) continue;
+    const groups = new Map();
+    header.slice(1).forEach((h, i) => {
+      if (cols[i + 1].some((v) => Number.isNaN(v))) return;  // a text column
+      const g = unitGroup(h) || 'other';
+      if (!groups.has(g)) groups.set(g, []);
+      groups.get(g).push(i + 1);
+    });
+    for (const [unit, idx] of groups) {
+      const div = document.createElement('div');
+      div.className = 'chart';
+      div.append(Object.assign(document.createElement('h4'), { textContent: `${name}: ${unit === 'other' ? '' : '[' + unit + ']'}` }));
+      host.append(div);
+      const palette = ['#1f77b4', '#ff7f0e', '#2ca02c', '#d62728', '#9467bd', '#8c564b', '#e377c2', '#7f7f7f'];
+      const series = [{ label: header[0] }];
+      const data = [cols[0]];
+      idx.slice(0, 8).forEach((i, n) => { series.push({ label: header[i], stroke: palette[n % 8], width: 1.2 }); data.push(cols[i]); });
+      // The study's limits drawn as dashed lines on the charts of their unit.
+      const limit = unit === 'MPa' ? limits.contact_stress_MPa : unit === 'N' ? limits.roller_load_N : undefined;
+      if (typeof limit === 'number') {
+        series.push({ label: 'limit', stroke: '#c62828', dash: [6, 4], width: 1.5 });
+        data.push(cols[0].map(() => limit));
+      }
+      new uPlot({ width: Math.min(900, host.clientWidth || 900), height: 240, series, scales: { x: { time: false } },
+                  axes: [{ label: header[0] }, { label: unit === 'other' ? '' : unit }] }, data, div);
+    }
+  }
+}
+
+const SVG = 'http://www.w3.org/2000/svg';
+function svgEl(tag, attrs) {
+  const e = document.createElementNS(SVG, tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  return e;
+}
+
+function stressColour(s, top) {
+  if (s < 0) return '#000';
+  const t = Math.max(0, Math.min(1, s / top));
+  // yellow (low) → red (at the limit)
+  return `rgb(255, ${Math.round(230 * (1 - t))}, ${Math.round(120 * (1 - t))})`;
+}
+
+let mechanismSeq = 0;
+async function drawMechanism(angle) {
+  const svg = $('#mechanism');
+  const study = state.mechanismStudy;
+  if (!study) return;
+  const seq = ++mechanismSeq;
+  const { status, data } = await api('POST', `/api/mechanism?angle=${angle}&points=720`, study);
+  if (seq !== mechanismSeq) return;  // a newer angle is on its way
+  if (status !== 200 || !data.supported) {
+    $('#mechanism-note').textContent = status !== 200 ? data.error.message
+      : `the animation of ${data.kind || 'this kind'} is not there yet (LCR only)`;
+    svg.replaceChildren();
+    return;
+  }
+  const R = Math.max(...data.sides.map((s) => s.turret_radius_mm + s.roller_radius_mm)) * 1.08;
+  svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
+  const g = svgEl('g', { transform: 'scale(1,-1)' });
+  const limit = (study.limits && study.limits.contact_stress_MPa) || data.max_stress_MPa || 1;
+  let maxForce = 1;
+  for (const side of data.sides) for (const r of side.rollers_at) maxForce = Math.max(maxForce, r.force_N);
+  for (const side of data.sides) {
+    g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: side.turret_radius_mm }));
+    const d = 'M' + side.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z';
+    g.append(svgEl('path', { class: `cam-${side.name}`, d }));
+  }
+  for (const side of data.sides) {
+    side.rollers_at.forEach((r, i) => {
+      const c = svgEl('circle', {
+        class: 'roller', cx: r.x, cy: r.y, r: side.roller_radius_mm,
+        fill: r.loaded ? stressColour(r.stress_MPa, limit) : '#e0e0e0',
+        'data-side': side.name, 'data-index': i, 'data-x': r.x, 'data-y': r.y,
+        'data-force': r.force_N, 'data-stress': r.stress_MPa,
+      });
+      const t = svgEl('title', {});
+      t.textContent = `${side.name} roller ${i}: F = ${r.force_N.toFixed(1)} N, p = ${r.stress_MPa.toFixed(0)} MPa`;
+      c.append(t);
+      g.append(c);
+      if (r.loaded) {
+        // The force on the roller (opposite to the cam's), its length in proportion.
+        const len = 0.6 * side.roller_radius_mm + 8 * r.force_N / maxForce;
+        g.append(svgEl('line', { class: 'force', x1: r.x, y1: r.y, x2: r.x - len * r.dx, y2: r.y - len * r.dy }));
+      }
+    });
+  }
+  g.append(svgEl('circle', { cx: data.cam_centre_mm[0], cy: data.cam_centre_mm[1], r: 0.8, fill: '#23395d' }));
+  svg.replaceChildren(g);
+  svg.dataset.angle = String(angle);
+  $('#mechanism-note').textContent =
+    `cam centre (${data.cam_centre_mm.map((v) => v.toFixed(3)).join(', ')}) mm, cam turned ${data.cam_rotation_deg.toFixed(2)}°, ` +
+    `output turret ${data.output_turret_rotation_deg.toFixed(3)}°; largest contact stress ${data.max_stress_MPa.toFixed(0)} MPa`;
+  $('#stress-legend').innerHTML = '';
+  $('#stress-legend').append(
+    `rollers coloured by Hertz contact stress: yellow 0 → red ${limit.toFixed(0)} MPa` +
+    `${study.limits && study.limits.contact_stress_MPa ? ' (the limit)' : ''}; grey unloaded; red lines: roller forces`);
+}
+
+// ---- compare ----------------------------------------------------------------------------------
+async function compare() {
+  const a = $('#compare-a').value, b = $('#compare-b').value;
+  const table = $('#compare-table');
+  table.replaceChildren();
+  if (!a || !b) return;
+  const [ra, rb] = await Promise.all([api('GET', `/api/runs/${a}/result`), api('GET', `/api/runs/${b}/result`)]);
+  const rowsA = (ra.data.headlines && ra.data.headlines.rows) || [];
+  const rowsB = new Map(((rb.data.headlines && rb.data.headlines.rows) || []).map((r) => [r.label, r]));
+  const head = table.insertRow();
+  for (const h of ['', `#${a} ${ra.data.study}`, `#${b} ${rb.data.study}`, 'limit'])
+    head.append(Object.assign(document.createElement('th'), { textContent: h }));
+  for (const r of rowsA) {
+    const tr = table.insertRow();
+    const other = rowsB.get(r.label);
+    tr.insertCell().textContent = r.label;
+    Object.assign(tr.insertCell(), { textContent: r.value, className: r.status });
+    Object.assign(tr.insertCell(), { textContent: other ? other.value : '—', className: other ? other.status : '' });
+    tr.insertCell().textContent = r.limit;
+  }
+}
+
+// ---- wiring -----------------------------------------------------------------------------------
+function showTab(name) {
+  document.querySelectorAll('#tabs button').forEach((b) => b.classList.toggle('active', b.dataset.tab === name));
+  document.querySelectorAll('.tab').forEach((t) => t.classList.toggle('active', t.id === `tab-${name}`));
+}
+
+document.querySelectorAll('#tabs button').forEach((b) => b.addEventListener('click', () => showTab(b.dataset.tab)));
+$('#save').addEventListener('click', save);
+$('#duplicate').addEventListener('click', duplicate);
+$('#run').addEventListener('click', startRun);
+$('#cancel').addEventListener('click', cancelRun);
+$('#crank').addEventListener('input', () => {
+  $('#crank-value').textContent = `${$('#crank').value}°`;
+  drawMechanism(Number($('#crank').value));
+});
+$('#play').addEventListener('click', () => {
+  if (state.playing) { clearInterval(state.playing); state.playing = null; $('#play').textContent = '▶ Play'; return; }
+  $('#play').textContent = '❚❚ Pause';
+  state.playing = setInterval(() => {
+    const s = $('#crank');
+    s.value = String((Number(s.value) + 2) % 360);
+    s.dispatchEvent(new Event('input'));
+  }, 60);
+});
+$('#compare-a').addEventListener('change', compare);
+$('#compare-b').addEventListener('change', compare);
+
+loadFiles().then(loadRuns).then(() => { document.body.dataset.ready = '1'; });

@@ -1,0 +1,146 @@
+// The studio end to end in Debian's Chromium, headless (puppeteer-core): `camopt serve` on a free
+// port in a temporary copy of an example folder; load the LCR II example, change a field, see the
+// field error of a bad value, run it, wait for the result, move the crank slider and check the drawn
+// roller centres against the closed form (the centres on the turret circles, the output turret
+// turned by (1 − n_A m_B/(m_A n_B)) θ, paper eq. 2) and against the study's own series.csv (the
+// number of loaded rollers at that angle); a screenshot to docs/images/studio.png.
+//   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
+// Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import readline from 'node:readline';
+
+const [camopt, sourceDir, screenshot] = process.argv.slice(2);
+const chromium = process.env.CAMOPT_CHROMIUM || '/usr/bin/chromium';
+if (!fs.existsSync(chromium)) { console.log(`SKIP: no Chromium at ${chromium}`); process.exit(77); }
+let puppeteer;
+try {
+  puppeteer = (await import('puppeteer-core')).default;
+} catch (e) {
+  console.log('SKIP: puppeteer-core is not installed (run `npm ci` in web/)');
+  process.exit(77);
+}
+
+const failures = [];
+const check = (ok, what) => { if (!ok) { failures.push(what); console.log(`FAIL: ${what}`); } else console.log(`ok: ${what}`); };
+
+const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'camopt-studio-'));
+fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_ii.json'), path.join(dir, 'lcr_ii.json'));
+fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_i.json'), path.join(dir, 'lcr_i.json'));
+const study = JSON.parse(fs.readFileSync(path.join(dir, 'lcr_ii.json'), 'utf8'));
+
+const server = spawn(camopt, ['serve', '--port', '0', dir], { stdio: ['ignore', 'pipe', 'inherit'] });
+const url = await new Promise((resolve, reject) => {
+  const rl = readline.createInterface({ input: server.stdout });
+  rl.once('line', (line) => {
+    const m = /^camopt studio: (http:\/\/\S+)$/.exec(line);
+    m ? resolve(m[1]) : reject(new Error(`unexpected first line: ${line}`));
+  });
+  server.once('exit', (code) => reject(new Error(`camopt serve exited with ${code}`)));
+  setTimeout(() => reject(new Error('camopt serve printed no address in 20 s')), 20000);
+});
+console.log(`studio at ${url} on ${dir}`);
+
+const browser = await puppeteer.launch({
+  executablePath: chromium, headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-dev-shm-usage', '--window-size=1400,1500'],
+});
+let status = 0;
+try {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1400, height: 1500 });
+  const consoleErrors = [];
+  page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(m.text()); });
+  page.on('pageerror', (e) => consoleErrors.push(String(e)));
+  await page.goto(url, { waitUntil: 'networkidle0' });
+  await page.waitForSelector('body[data-ready="1"]');
+
+  // Load the example.
+  await page.click('#files li[data-path="lcr_ii.json"]');
+  await page.waitForSelector('body[data-loaded="lcr_ii.json"]');
+  await page.waitForSelector('.validation.ok');
+  check(true, 'lcr_ii.json loaded and valid');
+
+  // Change a field: fewer angle steps (the run is faster; the form writes it into the study).
+  const setField = async (ptr, text) => {
+    const sel = `input[data-path="${ptr}"]`;
+    await page.$eval(sel, (el, t) => { el.value = t; el.dispatchEvent(new Event('change')); }, text);
+  };
+  await setField('/analysis/angle_steps', '720');
+  await page.waitForSelector('.validation.ok');
+
+  // A bad value: the CLI's message next to the field.
+  await setField('/reducer/eccentricity_mm', '-2');
+  await page.waitForSelector('.field-error[data-for="/reducer/eccentricity_mm"]', { timeout: 10000 });
+  const fieldError = await page.$eval('.field.invalid', (el) => ({ path: el.dataset.path, text: el.querySelector('.field-error').textContent }));
+  check(fieldError.path === '/reducer/eccentricity_mm', `the error is shown at the field ${fieldError.path}`);
+  check(fieldError.text.includes('/reducer/eccentricity_mm: expected a number > 0, found -2'),
+        `the CLI's message: ${fieldError.text}`);
+  await setField('/reducer/eccentricity_mm', '2');
+  await page.waitForSelector('.validation.ok');
+  check((await page.$$('.field-error')).length === 0, 'the error goes when the value is fixed');
+
+  // Run it and wait for the result.
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('#run-state[data-state="done"]', { timeout: 120000 });
+  await page.waitForSelector('body[data-result]');
+  const saved = JSON.parse(fs.readFileSync(path.join(dir, 'lcr_ii.json'), 'utf8'));
+  check(saved.analysis.angle_steps === 720, 'the changed field was saved before the run');
+  const out = path.join(dir, 'results', 'lcr_ii');
+  check(fs.existsSync(path.join(out, 'result.json')), 'the run wrote results/lcr_ii/result.json');
+  const headlineRows = await page.$$eval('#headlines tr', (rows) => rows.length);
+  check(headlineRows > 3, `headline table with ${headlineRows - 1} rows`);
+  const charts = await page.$$eval('#charts .uplot', (c) => c.length);
+  check(charts >= 2, `${charts} uPlot charts of series.csv`);
+
+  // Move the crank slider; the drawn rollers against the closed form.
+  const angle = 90;
+  await page.$eval('#crank', (el, a) => { el.value = String(a); el.dispatchEvent(new Event('input')); }, angle);
+  await page.waitForSelector(`#mechanism[data-angle="${angle}"]`, { timeout: 10000 });
+  const drawn = await page.$$eval('#mechanism circle.roller', (cs) => cs.map((c) => ({
+    side: c.dataset.side, i: Number(c.dataset.index), x: Number(c.dataset.x), y: Number(c.dataset.y),
+    cx: Number(c.getAttribute('cx')), cy: Number(c.getAttribute('cy')), loaded: c.getAttribute('fill') !== '#e0e0e0',
+  })));
+  const r = study.reducer;
+  const theta = angle * Math.PI / 180;
+  const turnOut = (1 - (r.input.rollers * r.output.lobes) / (r.input.lobes * r.output.rollers)) * theta;
+  let worst = 0;
+  for (const [name, side, turn] of [['input', r.input, 0], ['output', r.output, turnOut]]) {
+    const rollers = drawn.filter((d) => d.side === name);
+    check(rollers.length === side.rollers, `${rollers.length} ${name} rollers drawn (expected ${side.rollers})`);
+    for (const d of rollers) {
+      const a = 2 * Math.PI * d.i / side.rollers + turn;
+      worst = Math.max(worst, Math.hypot(d.x - side.turret_radius_mm * Math.cos(a), d.y - side.turret_radius_mm * Math.sin(a)),
+                       Math.hypot(d.cx - d.x, d.cy - d.y));
+    }
+  }
+  check(worst < 1e-6, `roller centres at ${angle}° within ${worst.toExponential(2)} mm of the closed form`);
+  // The loaded rollers drawn at that angle: as many as series.csv of the run counts there.
+  const csv = fs.readFileSync(path.join(out, 'series.csv'), 'utf8').trim().split('\n');
+  const header = csv[0].split(',');
+  const row = csv.slice(1).map((l) => l.split(',').map(Number)).find((v) => Math.abs(v[0] - angle) < 1e-9);
+  for (const name of ['input', 'output']) {
+    const want = row[header.indexOf(`${name}_actuating_rollers`)];
+    const got = drawn.filter((d) => d.side === name && d.loaded).length;
+    check(got === want, `${got} loaded ${name} rollers drawn at ${angle}°, series.csv says ${want}`);
+  }
+  check(consoleErrors.length === 0, `no console errors ${consoleErrors.join(' | ')}`);
+  if (screenshot) {
+    fs.mkdirSync(path.dirname(screenshot), { recursive: true });
+    await page.screenshot({ path: screenshot, fullPage: false });
+    console.log(`screenshot: ${screenshot}`);
+  }
+} catch (e) {
+  failures.push(String(e));
+  console.log(`FAIL: ${e.stack || e}`);
+} finally {
+  await browser.close();
+  server.kill('SIGINT');
+  fs.rmSync(dir, { recursive: true, force: true });
+}
+status = failures.length ? 1 : 0;
+console.log(failures.length ? `${failures.length} failure(s)` : 'studio end to end: all checks pass');
+process.exit(status);
