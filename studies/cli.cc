@@ -224,6 +224,8 @@ int CliMain(int argc, char** argv) {
   sweep_cmd->add_flag("--case-outputs", sweep.case_outputs, "Keep every case's result folder");
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress lines on stderr");
   sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(factor_range);
+  std::string sweep_progress;
+  sweep_cmd->add_option("--progress", sweep_progress, "As for run")->check(CLI::IsMember({"json"}));
   std::string schema_kind;
   CLI::App* schema = app.add_subcommand("schema", "Print the JSON Schema of a study kind");
   schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
@@ -272,6 +274,7 @@ int CliMain(int argc, char** argv) {
 
   if (sweep_cmd->parsed()) {
     FLAGS_minloglevel = FLAGS_stderrthreshold = google::GLOG_FATAL;  // cases run quietly
+    if (sweep_progress == "json") InstallJsonProgress();
     return camopt::studies::sweep::RunCommand(sweep);
   }
   if (serve->parsed()) return camopt::studies::ServeMain(serve_options);

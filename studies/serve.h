@@ -5,8 +5,9 @@
 // folder (list, open, save, duplicate), validation with the CLI's messages and JSON paths, runs,
 // their live progress as server-sent events, and the mechanism at an input angle
 // (studies/studio_mechanism.h). Each run is a child process `camopt run STUDY --out DIR --quiet
-// --progress json`, so it writes exactly the CLI's output folder and a crash cannot take the server
-// down; cancelling sends it SIGINT (the CLI removes its temporary folder and exits 130).
+// --progress json` (a sweep file: `camopt sweep …`), so it writes exactly the CLI's output folder
+// and a crash cannot take the server down; cancelling sends it SIGINT (the CLI removes its
+// temporary folder and exits 130).
 //
 // Refused: a request whose Host or Origin is not the server's own address (403: another web site,
 // DNS rebinding), a path outside the folder after resolving symbolic links (403), a body above

@@ -6,10 +6,12 @@
 #include <string>
 
 #include "model/common/geometry.h"
+#include "model/disc_cam/disc_cam.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
+#include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/study.h"
@@ -85,6 +87,46 @@ nlohmann::json LcrAt(const nlohmann::json& study, double theta_deg, int points) 
   return out;
 }
 
+// A disc cam with a roller (or knife-edge) follower at cam angle θ, model/disc_cam/disc_cam.h's
+// EvaluateCam (Rzine et al. eqs. 1–12). Its frame is fixed on the cam, the follower turning with θ
+// against the cam's rotation; drawn with the follower standing, every point is turned by −θ.
+nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int points) {
+  const Node root(&study, "study", "");
+  const disc_cam::Study s = disc_cam::Parse(root);
+  if (s.contact == disc_cam::Study::Contact::kFlatFaced)
+    return {{"kind", "disc_cam"}, {"supported", false}, {"why", "flat-faced followers are not drawn yet"}};
+  const camopt::disc_cam::DiscCam& cam = s.cam;
+  const double theta = theta_deg * kPi / 180.0;
+  const auto fixed = [&](const Vec2<double>& x) {
+    const Vec2<double> p = Rotate(x, -theta);
+    return nlohmann::json::array({Round6(p.x()), Round6(p.y())});
+  };
+  nlohmann::json profile = nlohmann::json::array();
+  for (int i = 0; i < points; ++i)
+    profile.push_back(fixed(camopt::disc_cam::EvaluateCam(cam, 2.0 * kPi * i / points).contact));
+  const camopt::disc_cam::CamPoint<double> p = camopt::disc_cam::EvaluateCam(cam, theta);
+  const bool oscillating = cam.follower == camopt::disc_cam::FollowerType::kOscillatingRoller;
+  const Vec2<double> dir = Rotate(Vec2<double>(p.follower_dir / p.follower_dir.norm()), -theta);
+  nlohmann::json out = {{"kind", "disc_cam"},
+                        {"supported", true},
+                        {"input_angle_deg", theta_deg},
+                        {"follower", s.follower_type},
+                        {"oscillating", oscillating},
+                        {"base_radius_mm", cam.base_radius},
+                        {"roller_radius_mm", cam.roller_radius},
+                        {"profile_mm", profile},
+                        {"roller_centre_mm", fixed(p.pitch)},
+                        {"contact_mm", fixed(p.contact)},
+                        {"follower_direction", {dir.x(), dir.y()}},
+                        {"lift", p.s},
+                        {"pressure_angle_deg", p.pressure_angle * 180.0 / kPi}};
+  if (oscillating) {
+    out["pivot_mm"] = fixed(camopt::disc_cam::FollowerPivot(cam, theta));
+    out["arm_length_mm"] = cam.arm_length;
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points) {
@@ -96,6 +138,7 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
                                ? study["study"].get<std::string>()
                                : std::string();
   if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
+  if (kind == "disc_cam") return DiscCamAt(study, input_angle_deg, points);
   return {{"kind", kind}, {"supported", false}};
 }
 

@@ -8,7 +8,8 @@
 namespace camopt::studies {
 
 /// The mechanism of `study` (a study file's JSON) at input angle `input_angle_deg`, `points`
-/// points per outline (clamped to [36, 4000]). Supported kinds: lcr_analysis. Its JSON:
+/// points per outline (clamped to [36, 4000]). Supported kinds: lcr_analysis, disc_cam (roller and
+/// knife-edge followers). An LCR:
 ///   {"kind": "lcr", "supported": true, "input_angle_deg", "eccentricity_mm",
 ///    "cam_centre_mm": [x, y], "cam_rotation_deg", "output_turret_rotation_deg",
 ///    "max_stress_MPa", "sides": [{"name": "input"|"output", "lobes", "rollers",
@@ -16,6 +17,11 @@ namespace camopt::studies {
 ///    "rollers_at": [{"x", "y", "dx", "dy", "force_N", "stress_MPa", "loaded"}, …]}, …]}
 /// in the fixed frame [mm], the input turret standing, roller 0 of each turret on +x at 0°; (dx, dy)
 /// the unit direction of the force of the roller on the cam; stress_MPa −1 at an undercut contact.
+/// A disc cam, the follower standing and the cam turned by −θ (θ against the cam's rotation):
+///   {"kind": "disc_cam", "supported": true, "follower", "oscillating", "base_radius_mm",
+///    "roller_radius_mm", "profile_mm", "roller_centre_mm", "contact_mm", "follower_direction"
+///    (unit, of increasing lift), "lift" (mm or rad), "pressure_angle_deg"[, "pivot_mm",
+///    "arm_length_mm"]}.
 /// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
 /// would refuse (the kind's Parse).
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points);

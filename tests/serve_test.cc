@@ -367,8 +367,28 @@ TEST(Serve, MechanismMatchesTheClosedForms) {
     }
     if (s == 1) EXPECT_NEAR(torque, 80000.0, 1e-6 * 80000.0);  // T_o = 80 N·m in N·mm
   }
-  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("disc_cam_translating.json"))), 0, 100);
+  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json"))), 0, 100);
   EXPECT_FALSE(other["supported"].get<bool>());
+}
+
+// The disc cam with its translating roller follower drawn standing: at 145° (the dwell after the
+// 24 mm rise of disc_cam_translating.json) the roller centre is at (√((r_b + r_f)² − e²) + 24, e)
+// (Rzine et al. eq. 5 turned by −θ), the pressure angle atan(−e/L) (eq. 3 with dS/dθ = 0), and the
+// profile passes a roller radius from the roller centre and nowhere nearer.
+TEST(Serve, DiscCamMechanismMatchesTheClosedForms) {
+  const json study = json::parse(ReadFile(Example("disc_cam_translating.json")));
+  const json m = camopt::studies::MechanismAt(study, 145.0, 4000);
+  ASSERT_TRUE(m["supported"].get<bool>());
+  const double rb = 40, rf = 10, e = 12, L = std::sqrt((rb + rf) * (rb + rf) - e * e) + 24;
+  const double x = m["roller_centre_mm"][0], y = m["roller_centre_mm"][1];
+  EXPECT_NEAR(x, L, 1e-5);
+  EXPECT_NEAR(y, e, 1e-5);
+  EXPECT_NEAR(m["pressure_angle_deg"].get<double>(), std::atan(-e / L) * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(m["follower_direction"][0].get<double>(), 1.0, 1e-12);
+  double nearest = 1e9;
+  for (const json& p : m["profile_mm"])
+    nearest = std::min(nearest, std::hypot(p[0].get<double>() - x, p[1].get<double>() - y));
+  EXPECT_NEAR(nearest, rf, 2e-3);
 }
 
 }  // namespace

@@ -452,6 +452,7 @@ async function drawMechanism(angle) {
     svg.replaceChildren();
     return;
   }
+  if (data.kind === 'disc_cam') return drawDiscCam(svg, data, study, angle);
   const R = Math.max(...data.sides.map((s) => s.turret_radius_mm + s.roller_radius_mm)) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });
@@ -492,6 +493,43 @@ async function drawMechanism(angle) {
   $('#stress-legend').append(
     `rollers coloured by Hertz contact stress: yellow 0 → red ${limit.toFixed(0)} MPa` +
     `${study.limits && study.limits.contact_stress_MPa ? ' (the limit)' : ''}; grey unloaded; red lines: roller forces`);
+}
+
+// The disc cam with its follower standing (the cam turned by −θ); the roller coloured by the
+// pressure angle against its limit.
+function drawDiscCam(svg, data, study, angle) {
+  let R = 0;
+  for (const p of data.profile_mm) R = Math.max(R, Math.hypot(p[0], p[1]));
+  const c = data.roller_centre_mm;
+  R = Math.max(R, Math.hypot(c[0], c[1]) + data.roller_radius_mm);
+  if (data.pivot_mm) R = Math.max(R, Math.hypot(data.pivot_mm[0], data.pivot_mm[1]));
+  const left = -R * 1.1, width = R * 2.9;
+  svg.setAttribute('viewBox', `${left} ${-R * 1.45} ${width} ${R * 2.9}`);
+  const g = svgEl('g', { transform: 'scale(1,-1)' });
+  const d = 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z';
+  g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.base_radius_mm }));
+  g.append(svgEl('path', { class: 'cam-input', d }));
+  g.append(svgEl('circle', { cx: 0, cy: 0, r: R * 0.02, fill: '#23395d' }));
+  const limits = study.limits || {};
+  const limit = limits.pressure_angle_deg || (data.oscillating ? 45 : 30);
+  const fill = stressColour(Math.abs(data.pressure_angle_deg), limit);
+  if (data.oscillating) {
+    g.append(svgEl('line', { class: 'force', x1: data.pivot_mm[0], y1: data.pivot_mm[1], x2: c[0], y2: c[1], style: 'stroke:#333;stroke-width:' + R * 0.025 }));
+    g.append(svgEl('circle', { cx: data.pivot_mm[0], cy: data.pivot_mm[1], r: R * 0.03, fill: '#333' }));
+  } else {
+    const len = R * 1.2, u = data.follower_direction;
+    g.append(svgEl('line', { x1: c[0], y1: c[1], x2: c[0] + len * u[0], y2: c[1] + len * u[1], style: 'stroke:#333;stroke-width:' + R * 0.04 }));
+  }
+  const rr = Math.max(data.roller_radius_mm, R * 0.01);
+  const roller = svgEl('circle', { class: 'roller', cx: c[0], cy: c[1], r: rr, fill,
+                                   'data-side': 'follower', 'data-index': 0, 'data-x': c[0], 'data-y': c[1] });
+  g.append(roller);
+  g.append(svgEl('circle', { cx: data.contact_mm[0], cy: data.contact_mm[1], r: R * 0.012, fill: '#c62828' }));
+  svg.replaceChildren(g);
+  svg.dataset.angle = String(angle);
+  $('#mechanism-note').textContent =
+    `${data.follower}: lift ${data.lift.toFixed(4)} ${data.oscillating ? 'rad' : 'mm'}, pressure angle ${data.pressure_angle_deg.toFixed(2)}°`;
+  $('#stress-legend').textContent = `roller coloured by |pressure angle|: yellow 0 → red ${limit}° (the limit); red dot: the contact point`;
 }
 
 // ---- compare ----------------------------------------------------------------------------------
