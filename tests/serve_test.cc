@@ -331,8 +331,9 @@ TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
 // The mechanism at an input angle against closed forms: the input turret stands, the output turret
 // turns by θ_o = (1 − n_A m_B/(m_A n_B)) θ (paper eq. 2); the cam's centre is e u(θ); every roller
 // centre lies on the pitch curve, so the nearest profile point is a roller radius from it and none
-// is nearer (conjugate profiles, paper eqs. 4–9); the output rollers' forces balance the output
-// torque about the axis, each along the line to the pitch point I = e n/(n − m) u(θ) (eq. 25).
+// is nearer (conjugate profiles, paper eqs. 4–9); the rollers' forces, each along the line to the
+// pitch point I = e n/(n − m) u(θ), have the moments T_o (output turret, eq. 25) and
+// T_o m_B n_A/(n_B m_A) (fixed turret, eq. 24) about the axis.
 TEST(Serve, MechanismMatchesTheClosedForms) {
   const json study = json::parse(ReadFile(Example("lcr_ii.json")));
   const double e = 2, theta_deg = 37.5, theta = theta_deg * M_PI / 180;
@@ -366,6 +367,8 @@ TEST(Serve, MechanismMatchesTheClosedForms) {
       torque += rollers[i]["force_N"].get<double>() * std::abs(x * dy / len - y * dx / len);
     }
     if (s == 1) EXPECT_NEAR(torque, 80000.0, 1e-6 * 80000.0);  // T_o = 80 N·m in N·mm
+    // The fixed turret's reaction T_A = T_o m_B n_A/(n_B m_A) (eq. 24).
+    if (s == 0) EXPECT_NEAR(torque, 80000.0 * 14 * 13 / (15.0 * 12), 1e-6 * 80000.0);
   }
   const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json"))), 0, 100);
   EXPECT_FALSE(other["supported"].get<bool>());
