@@ -6,11 +6,13 @@
 #include <string>
 
 #include "model/common/geometry.h"
+#include "model/cycloid/tooth_profile.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
+#include "studies/cycloid_ltca_study.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/lcr_analysis_study.h"
@@ -127,6 +129,42 @@ nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int poin
   return out;
 }
 
+// A cycloid drive at crank angle φ: the disc's tooth profile (model/cycloid/tooth_profile.h's
+// ToothProfile, the load-distribution paper's eqs. 1–4, with the profile modification) in the disc
+// frame, placed at its centre e u(φ) and turned by −φ/n2 (the inverse of RollerCentreInDisc), and
+// the pins standing at a u(2πi/n1). Geometry only: the pairs' pressures need the loaded contact
+// analysis of a run.
+nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points) {
+  const Node root(&study, "study", "");
+  const cycloid_ltca::Study s = cycloid_ltca::Parse(root);
+  const cycloid::Drive& d = s.drive;
+  const double crank = crank_deg * kPi / 180.0;
+  const Vec2<double> centre = d.eccentricity_mm * U(crank);
+  const double turn = -crank / d.teeth;
+  const int n = std::min(4000, std::max(points, 48 * d.rollers));
+  nlohmann::json profile = nlohmann::json::array();
+  for (int j = 0; j < n; ++j) {
+    const Vec2<double> p = centre + Rotate(cycloid::ToothProfile(d, 2.0 * kPi * j / n).point, turn);
+    profile.push_back({Round6(p.x()), Round6(p.y())});
+  }
+  nlohmann::json pins = nlohmann::json::array();
+  for (int i = 0; i < d.rollers; ++i) {
+    const Vec2<double> o = d.roller_position_radius_mm * U(2.0 * kPi * i / d.rollers);
+    pins.push_back({{"x", o.x()}, {"y", o.y()}});
+  }
+  return {{"kind", "cycloid"},
+          {"supported", true},
+          {"input_angle_deg", crank_deg},
+          {"teeth", d.teeth},
+          {"rollers", d.rollers},
+          {"roller_position_radius_mm", d.roller_position_radius_mm},
+          {"roller_radius_mm", d.roller_radius_mm},
+          {"disc_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
+          {"disc_rotation_deg", turn * 180.0 / kPi},
+          {"profile_mm", profile},
+          {"pins", pins}};
+}
+
 }  // namespace
 
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points) {
@@ -139,6 +177,7 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
                                : std::string();
   if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
   if (kind == "disc_cam") return DiscCamAt(study, input_angle_deg, points);
+  if (kind == "cycloid_ltca") return CycloidAt(study, input_angle_deg, points);
   return {{"kind", kind}, {"supported", false}};
 }
 

@@ -9,7 +9,7 @@ namespace camopt::studies {
 
 /// The mechanism of `study` (a study file's JSON) at input angle `input_angle_deg`, `points`
 /// points per outline (clamped to [36, 4000]). Supported kinds: lcr_analysis, disc_cam (roller and
-/// knife-edge followers). An LCR:
+/// knife-edge followers), cycloid_ltca (geometry). An LCR:
 ///   {"kind": "lcr", "supported": true, "input_angle_deg", "eccentricity_mm",
 ///    "cam_centre_mm": [x, y], "cam_rotation_deg", "output_turret_rotation_deg",
 ///    "max_stress_MPa", "sides": [{"name": "input"|"output", "lobes", "rollers",
@@ -22,6 +22,9 @@ namespace camopt::studies {
 ///    "roller_radius_mm", "profile_mm", "roller_centre_mm", "contact_mm", "follower_direction"
 ///    (unit, of increasing lift), "lift" (mm or rad), "pressure_angle_deg"[, "pivot_mm",
 ///    "arm_length_mm"]}.
+/// A cycloid drive at crank angle θ: {"kind": "cycloid", "supported": true, "teeth", "rollers",
+///   "roller_position_radius_mm", "roller_radius_mm", "disc_centre_mm", "disc_rotation_deg",
+///   "profile_mm" (the disc, at least 48 points per pin), "pins": [{"x", "y"}, …]}.
 /// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
 /// would refuse (the kind's Parse).
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points);

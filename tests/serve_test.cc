@@ -370,8 +370,32 @@ TEST(Serve, MechanismMatchesTheClosedForms) {
     // The fixed turret's reaction T_A = T_o m_B n_A/(n_B m_A) (eq. 24).
     if (s == 0) EXPECT_NEAR(torque, 80000.0 * 14 * 13 / (15.0 * 12), 1e-6 * 80000.0);
   }
-  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json"))), 0, 100);
+  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("lcr_min_size.json"))), 0, 100);
   EXPECT_FALSE(other["supported"].get<bool>());
+}
+
+// The cycloid disc on its pins at crank 50°: pins at a u(2πi/n1), the disc's centre at e u(φ),
+// turned by −φ/n2; without profile modification every pin touches the disc (the tooth is the
+// envelope of the pin circle, the paper's eqs. 1–2): the nearest profile point is ρ from each pin.
+TEST(Serve, CycloidMechanismMatchesTheClosedForms) {
+  json study = json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json")));
+  study.erase("modification");
+  const double phi = 50 * M_PI / 180, a = 90, rho = 7.2, e = 4.5;
+  const json m = camopt::studies::MechanismAt(study, 50.0, 4000);
+  ASSERT_TRUE(m["supported"].get<bool>());
+  EXPECT_NEAR(m["disc_centre_mm"][0].get<double>(), e * std::cos(phi), 1e-6);
+  EXPECT_NEAR(m["disc_centre_mm"][1].get<double>(), e * std::sin(phi), 1e-6);
+  EXPECT_NEAR(m["disc_rotation_deg"].get<double>(), -50.0 / 15, 1e-12);
+  ASSERT_EQ(m["pins"].size(), 16u);
+  for (int i = 0; i < 16; ++i) {
+    const double x = m["pins"][i]["x"], y = m["pins"][i]["y"];
+    EXPECT_NEAR(x, a * std::cos(2 * M_PI * i / 16), 1e-12);
+    EXPECT_NEAR(y, a * std::sin(2 * M_PI * i / 16), 1e-12);
+    double nearest = 1e9;
+    for (const json& p : m["profile_mm"])
+      nearest = std::min(nearest, std::hypot(p[0].get<double>() - x, p[1].get<double>() - y));
+    EXPECT_NEAR(nearest, rho, 2e-3) << "pin " << i;
+  }
 }
 
 // The disc cam with its translating roller follower drawn standing: at 145° (the dwell after the

@@ -453,6 +453,7 @@ async function drawMechanism(angle) {
     return;
   }
   if (data.kind === 'disc_cam') return drawDiscCam(svg, data, study, angle);
+  if (data.kind === 'cycloid') return drawCycloid(svg, data, angle);
   const R = Math.max(...data.sides.map((s) => s.turret_radius_mm + s.roller_radius_mm)) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });
@@ -530,6 +531,29 @@ function drawDiscCam(svg, data, study, angle) {
   $('#mechanism-note').textContent =
     `${data.follower}: lift ${data.lift.toFixed(4)} ${data.oscillating ? 'rad' : 'mm'}, pressure angle ${data.pressure_angle_deg.toFixed(2)}°`;
   $('#stress-legend').textContent = `roller coloured by |pressure angle|: yellow 0 → red ${limit}° (the limit); red dot: the contact point`;
+}
+
+// The cycloid disc on its pins (geometry: the pairs' pressures need a loaded run).
+function drawCycloid(svg, data, angle) {
+  const R = (data.roller_position_radius_mm + data.roller_radius_mm) * 1.08;
+  svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
+  const g = svgEl('g', { transform: 'scale(1,-1)' });
+  g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.roller_position_radius_mm }));
+  g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
+  data.pins.forEach((p, i) => g.append(svgEl('circle', {
+    class: 'roller', cx: p.x, cy: p.y, r: data.roller_radius_mm, fill: '#e0e0e0',
+    'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y })));
+  const c = data.disc_centre_mm;
+  g.append(svgEl('circle', { cx: c[0], cy: c[1], r: R * 0.012, fill: '#23395d' }));
+  g.append(svgEl('circle', { cx: 0, cy: 0, r: R * 0.008, fill: '#888' }));
+  // A mark on the disc shows its slow turn (−φ/n2).
+  const t = data.disc_rotation_deg * Math.PI / 180, m = data.roller_position_radius_mm * 0.6;
+  g.append(svgEl('line', { x1: c[0], y1: c[1], x2: c[0] + m * Math.cos(t), y2: c[1] + m * Math.sin(t), class: 'force' }));
+  svg.replaceChildren(g);
+  svg.dataset.angle = String(angle);
+  $('#mechanism-note').textContent =
+    `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°`;
+  $('#stress-legend').textContent = 'geometry only: the pairs\' pressures are in the run\'s pressure maps';
 }
 
 // ---- compare ----------------------------------------------------------------------------------
