@@ -576,6 +576,39 @@ async function compare() {
     Object.assign(tr.insertCell(), { textContent: other ? other.value : '—', className: other ? other.status : '' });
     tr.insertCell().textContent = r.limit;
   }
+  await compareCurves(ra.data, rb.data, a, b);
+}
+
+// One column of a CSV output both runs wrote, the two curves overlaid (uPlot.join aligns the x).
+async function compareCurves(ra, rb, a, b) {
+  const host = $('#compare-charts');
+  host.replaceChildren();
+  const common = (ra.files || []).filter((f) => f.endsWith('.csv') && (rb.files || []).includes(f));
+  if (!common.length || typeof uPlot === 'undefined') return;
+  const name = common.includes('series.csv') ? 'series.csv' : common[0];
+  const [ta, tb] = await Promise.all([
+    api('GET', `/api/file?path=${encodeURIComponent(ra.out + '/' + name)}`),
+    api('GET', `/api/file?path=${encodeURIComponent(rb.out + '/' + name)}`)]);
+  const A = parseCsv(ta.text), B = parseCsv(tb.text);
+  const columns = A.header.slice(1).filter((h) => B.header.includes(h));
+  if (!columns.length) return;
+  const select = document.createElement('select');
+  select.id = 'compare-column';
+  for (const c of columns) select.append(new Option(c, c));
+  const chart = document.createElement('div');
+  chart.className = 'chart';
+  host.append(Object.assign(document.createElement('label'), { textContent: `${name}: ` }), select, chart);
+  const draw = () => {
+    chart.replaceChildren();
+    const col = select.value;
+    const data = uPlot.join([[A.cols[0], A.cols[A.header.indexOf(col)]], [B.cols[0], B.cols[B.header.indexOf(col)]]]);
+    new uPlot({ width: Math.min(900, host.clientWidth || 900), height: 280, scales: { x: { time: false } },
+                series: [{ label: A.header[0] },
+                         { label: `#${a} ${col}`, stroke: '#1f77b4', width: 1.2, spanGaps: true },
+                         { label: `#${b} ${col}`, stroke: '#d62728', width: 1.2, spanGaps: true }] }, data, chart);
+  };
+  select.addEventListener('change', draw);
+  draw();
 }
 
 // ---- wiring -----------------------------------------------------------------------------------

@@ -3,7 +3,8 @@
 // field error of a bad value, run it, wait for the result, move the crank slider and check the drawn
 // roller centres against the closed form (the centres on the turret circles, the output turret
 // turned by (1 − n_A m_B/(m_A n_B)) θ, paper eq. 2) and against the study's own series.csv (the
-// number of loaded rollers at that angle); a screenshot to docs/images/studio.png.
+// number of loaded rollers at that angle); a screenshot (SCREENSHOT; with SCREENSHOT_DIR set, also
+// copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png).
 //   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
 // Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
 import { spawn } from 'node:child_process';
@@ -132,7 +133,28 @@ try {
     fs.mkdirSync(path.dirname(screenshot), { recursive: true });
     await page.screenshot({ path: screenshot, fullPage: false });
     console.log(`screenshot: ${screenshot}`);
+    // As tests/report_render_test.py: SCREENSHOT_DIR=docs/images refreshes the documented one.
+    if (process.env.SCREENSHOT_DIR) {
+      fs.copyFileSync(screenshot, path.join(process.env.SCREENSHOT_DIR, 'studio.png'));
+      console.log(`copied to ${path.join(process.env.SCREENSHOT_DIR, 'studio.png')}`);
+    }
   }
+  // Compare: a second run (LCR I), the two headline tables side by side and a curve overlaid.
+  await page.click('#files li[data-path="lcr_i.json"]');
+  await page.waitForSelector('body[data-loaded="lcr_i.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="2"]', { timeout: 120000 });
+  await page.click('#tabs button[data-tab="compare"]');
+  await page.select('#compare-a', '1');
+  await page.select('#compare-b', '2');
+  await page.waitForSelector('#compare-charts .uplot', { timeout: 10000 });
+  const compared = await page.$$eval('#compare-table tr', (rows) => rows.map((r) => [...r.cells].map((c) => c.textContent)));
+  check(compared.length > 3 && compared[0][1].includes('lcr_ii') && compared[0][2].includes('lcr_i.json'),
+        `compare table of ${compared.length - 1} rows, ${compared[0].slice(1, 3).join(' | ')}`);
+  const stressRow = compared.find((r) => r[0] === 'largest contact stress, input cam');
+  check(stressRow && stressRow[1] !== stressRow[2], `the two runs differ: ${stressRow && stressRow.slice(1, 3).join(' vs ')}`);
+  check(consoleErrors.length === 0, `still no console errors ${consoleErrors.join(' | ')}`);
 } catch (e) {
   failures.push(String(e));
   console.log(`FAIL: ${e.stack || e}`);
