@@ -622,7 +622,15 @@ int ServeMain(const ServeOptions& options) {
               << "\n";
     return 1;
   }
-  const std::string web = FindWebDir(options.web_dir);
+  std::string web = FindWebDir(options.web_dir);
+  if (!web.empty()) web = fs::absolute(web, ec).string();
+  // The server works in the folder, as its runs do: a study's relative paths (a roller catalogue,
+  // a sweep's base) and its messages' file names are then those of `camopt run` in the folder.
+  fs::current_path(root, ec);
+  if (ec) {
+    std::cerr << "camopt: error: serve: " << options.folder << ": cannot work in it: " << ec.message() << "\n";
+    return 2;
+  }
   Studio studio(root, exe.string());
   httplib::Server server;
   server.set_payload_max_length(kMaxBodyBytes);

@@ -248,6 +248,24 @@ TEST(Serve, ValidateGivesTheCliMessageWithItsJsonPath) {
   EXPECT_NE(json::parse(res->body)["error"]["message"].get<std::string>().find("x.json"), std::string::npos);
 }
 
+// The server works in its folder: a study's relative file (a roller catalogue) is found as
+// `camopt run` in the folder finds it.
+TEST(Serve, ValidateFindsAStudysRelativeFilesInTheFolder) {
+  const fs::path dir = TempDir("serve-relative");
+  fs::copy_file(Example("lcr_min_size_catalogue.json"), dir / "study.json");
+  fs::copy_file(Example("needle_rollers.json"), dir / "needle_rollers.json");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/validate?path=study.json", ReadFile(dir / "study.json"), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_TRUE(json::parse(res->body)["ok"].get<bool>()) << res->body;
+  fs::remove(dir / "needle_rollers.json");
+  res = c.Post("/api/validate?path=study.json", ReadFile(dir / "study.json"), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_FALSE(json::parse(res->body)["ok"].get<bool>()) << res->body;
+}
+
 TEST(Serve, ARunWritesTheSameOutputFolderAsTheCli) {
   const fs::path dir = TempDir("serve-run");
   fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
