@@ -319,6 +319,18 @@ class Studio {
 
   std::shared_ptr<Run> Start(const fs::path& study, std::string& error) {
     const std::string rel = Relative(root_, study);
+    {
+      // One run per output folder at a time: a second would replace the first one's results.
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (auto& [id, other] : runs_) {
+        std::lock_guard<std::mutex> run_lock(other->mutex);
+        if (!other->finished && other->out == Relative(root_, root_ / "results" / study.stem())) {
+          error = "run " + std::to_string(id) + " of " + other->study + " is still writing " + other->out +
+                  " (cancel it or wait for it)";
+          return nullptr;
+        }
+      }
+    }
     const fs::path out = root_ / "results" / study.stem();
     std::error_code ec;
     fs::create_directories(root_ / "results", ec);
@@ -514,7 +526,7 @@ void Routes(httplib::Server& server, Studio& studio) {
     if (r.status != 200) return SendError(res, r.status, r.message);
     std::string error;
     const auto run = studio.Start(r.path, error);
-    if (!run) return SendError(res, 500, error);
+    if (!run) return SendError(res, error.rfind("run ", 0) == 0 ? 409 : 500, error);
     SendJson(res, RunStatus(*run), 201);
   });
   server.Get("/api/runs", [&studio](const httplib::Request&, httplib::Response& res) {

@@ -312,6 +312,10 @@ TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
   const int id = run["id"];
   const pid_t child = run["pid"];
   ASSERT_GT(child, 0);
+  // A second run into the same output folder while the first one writes it: refused.
+  auto second = c.Post("/api/runs", "{\"path\": \"slow.json\"}", "application/json");
+  ASSERT_TRUE(second);
+  EXPECT_EQ(second->status, 409) << second->body;
   std::string text;
   {
     auto events = studio.Client();
