@@ -646,6 +646,9 @@ int ServeMain(const ServeOptions& options) {
   Studio studio(root, exe.string());
   httplib::Server server;
   server.set_payload_max_length(kMaxBodyBytes);
+  // Threads for the connections: a browser keeps several open (keep-alive) and each run's event
+  // stream holds one for as long as the run lasts.
+  server.new_task_queue = [] { return new httplib::ThreadPool(32); };
   server.set_pre_routing_handler([&studio](const httplib::Request& req, httplib::Response& res) {
     std::string why;
     if (studio.Allowed(req, why)) return httplib::Server::HandlerResponse::Unhandled;
