@@ -1,7 +1,7 @@
 """Type stub of the camopt extension module (python/camopt_module.cc, python/camopt_models.cc).
 
-The API is described in docs/python.md. python/tests/test_objects.py checks that every public
-name of the module is declared here.
+The API is described in docs/studies.md, "camopt as a library and from Python".
+python/tests/test_objects.py checks that every public name of the module is declared here.
 """
 import os
 from typing import Any, Callable, Optional, Union

@@ -12,7 +12,8 @@
 // A missing file raises FileNotFoundError, a bad study camopt.StudyError (a ValueError) with .file,
 // .path (JSON path), .expected, .found. Everything the module computes goes through the same
 // functions as the command line (studies/study.h's RunStudy, studies/sweep.h's RunCommand, the
-// model/ functions the kinds call). docs/python.md describes the API; camopt.pyi is its stub.
+// model/ functions the kinds call). docs/studies.md ("camopt as a library and from Python")
+// describes the API; python/camopt.pyi is its stub.
 #include <cerrno>
 #include <chrono>
 #include <condition_variable>
