@@ -149,6 +149,10 @@ std::mutex& RunMutex() {
   return m;
 }
 
+// True on a run's worker thread (where the progress callback runs): a run started there would
+// wait for the run that calls it.
+thread_local bool t_in_run = false;
+
 // The progress observer of one run: calls the Python callback with the GIL taken; the first
 // exception it raises is kept (and cancels the run), later reports are dropped.
 class ProgressBridge {
@@ -178,6 +182,7 @@ class ProgressBridge {
 namespace camopt::python {
 
 void RunInterruptibly(const std::function<void()>& work, const py::object& progress) {
+  if (t_in_run) throw std::runtime_error("camopt: a run cannot be started from a progress callback");
   std::unique_lock<std::mutex> run_lock(RunMutex(), std::defer_lock);
   {
     py::gil_scoped_release release;
@@ -195,6 +200,7 @@ void RunInterruptibly(const std::function<void()>& work, const py::object& progr
   bool done = false;
   std::exception_ptr error;
   std::thread worker([&] {
+    t_in_run = true;
     try {
       work();
     } catch (...) {

@@ -92,6 +92,16 @@ class StudyObjects(unittest.TestCase):
             s.run(progress=callback)
         self.assertGreater(s.run().result["outer_diameter_mm"], 0)  # the next run is not cancelled
 
+    def test_a_run_from_the_callback_is_refused(self):
+        s = camopt.Study("lcr_analysis", helpers.small_lcr_ii())
+
+        def callback(e):
+            s.run()
+
+        with self.assertRaises(RuntimeError) as cm:
+            s.run(progress=callback)
+        self.assertIn("progress callback", str(cm.exception))
+
     def test_missing_files(self):
         for load in (camopt.Study.load, camopt.Sweep.load, camopt.Lcr.from_study):
             with self.assertRaises(FileNotFoundError) as cm:
