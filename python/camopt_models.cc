@@ -1,8 +1,10 @@
-// The models of the kinds' designs as Python objects: camopt.Lcr (an lcr_analysis study's reducer)
-// and camopt.CycloidDrive (a cycloid_ltca study's drive), evaluated at given angles as NumPy arrays
+// The models of the kinds' designs as Python objects: camopt.Lcr (an lcr_analysis study's reducer),
+// camopt.CycloidDrive (a cycloid_ltca study's drive) and camopt.DiscCam (a disc_cam study's cam with
+// a roller or knife-edge follower), evaluated at given angles as NumPy arrays
 // without running the whole study. They parse the study with the kind's own Parse and call the
 // model/ functions its Run calls (model/lcr/forces.h AnalyzeAngle, model/lcr/profile.h,
-// model/cycloid/loaded_tca.h RunCycle, model/cycloid/unloaded_tca.h, tooth_profile.h), so their
+// model/cycloid/loaded_tca.h RunCycle, model/cycloid/unloaded_tca.h, tooth_profile.h,
+// model/disc_cam/disc_cam.h EvaluateCam), so their
 // numbers are the study's: the same at the study's own angles, bit for bit.
 #include <cmath>
 #include <stdexcept>
@@ -16,11 +18,13 @@
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
+#include "model/disc_cam/disc_cam.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
 #include "python/camopt_module.h"
 #include "studies/cycloid_ltca_study.h"
+#include "studies/disc_cam_study.h"
 #include "studies/lcr_analysis_study.h"
 
 namespace camopt::python {
@@ -233,6 +237,79 @@ struct CycloidDrive {
   }
 };
 
+// ---- Disc cam ----------------------------------------------------------------------------------
+
+struct DiscCam {
+  st::disc_cam::Study study;
+
+  void RequireRoller() const {
+    if (study.contact == st::disc_cam::Study::Contact::kFlatFaced)
+      throw py::value_error("the study's follower is flat-faced; DiscCam evaluates roller and knife-edge "
+                            "followers (model/disc_cam/disc_cam.h)");
+  }
+  bool Oscillating() const { return study.cam.follower == disc_cam::FollowerType::kOscillatingRoller; }
+
+  // The columns of series.csv of a roller or knife-edge follower (jerk and errors left out) at the
+  // cam angles [rad], computed as the study does (EvaluateCam; a follower in deg when oscillating).
+  py::dict Evaluate(const py::object& angles_rad) const {
+    RequireRoller();
+    const std::vector<double> theta = Angles(angles_rad);
+    constexpr double kDeg = kPi / 180.0;
+    const double unit = Oscillating() ? 1.0 / kDeg : 1.0;
+    const std::string fu = Oscillating() ? "deg" : "mm";
+    std::vector<double> deg, sv, v, a, pa, sa, rd, cx, cy, px, py_, q, k;
+    for (double t : theta) {
+      const disc_cam::CamPoint<double> p = disc_cam::EvaluateCam(study.cam, t);
+      deg.push_back(t / kDeg);
+      sv.push_back(p.s * unit);
+      v.push_back(p.ds * unit);
+      a.push_back(p.d2s * unit);
+      pa.push_back(p.pressure_angle / kDeg);
+      sa.push_back(p.shift_angle / kDeg);
+      rd.push_back(p.radial_dimension);
+      cx.push_back(p.contact.x());
+      cy.push_back(p.contact.y());
+      px.push_back(p.pitch.x());
+      py_.push_back(p.pitch.y());
+      q.push_back(p.q);
+      k.push_back(p.pitch_curvature);
+    }
+    py::dict d;
+    d["cam_angle_deg"] = Vector(deg);
+    d[py::str("follower_" + fu)] = Vector(sv);
+    d[py::str("velocity_" + fu + "_per_rad")] = Vector(v);
+    d[py::str("acceleration_" + fu + "_per_rad2")] = Vector(a);
+    d["pressure_angle_deg"] = Vector(pa);
+    d["shift_angle_deg"] = Vector(sa);
+    d["radial_dimension_mm"] = Vector(rd);
+    d["contact_x_mm"] = Vector(cx);
+    d["contact_y_mm"] = Vector(cy);
+    d["pitch_x_mm"] = Vector(px);
+    d["pitch_y_mm"] = Vector(py_);
+    d["q_mm"] = Vector(q);
+    d["pitch_curvature_per_mm"] = Vector(k);
+    return d;
+  }
+
+  py::tuple Profile(int points) const {
+    RequireRoller();
+    if (points < 3) throw py::value_error("points: expected at least 3");
+    std::vector<double> x, y;
+    for (int i = 0; i < points; ++i) {
+      const auto p = disc_cam::EvaluateCam(study.cam, 2 * kPi * i / points).contact;
+      x.push_back(p.x());
+      y.push_back(p.y());
+    }
+    return py::make_tuple(Vector(x), Vector(y));
+  }
+
+  py::array_t<double> StudyAngles() const {
+    std::vector<double> t;
+    for (int i = 0; i < study.angle_steps; ++i) t.push_back(2 * kPi * i / study.angle_steps);
+    return Vector(t);
+  }
+};
+
 }  // namespace
 
 void AddModels(py::module_& m) {
@@ -290,6 +367,26 @@ void AddModels(py::module_& m) {
            "Loaded TCA under the study's torque per disc at the crank angles [rad] (in order): crank_angle_deg,\n"
            "lte_arcsec, unloaded_te_arcsec, gear_ratio, max_contact_stress_MPa, pairs_in_contact,\n"
            "roller_load_N (angles x rollers), converged. Ctrl-C raises KeyboardInterrupt.");
+
+  py::class_<DiscCam>(m, "DiscCam",
+                      "The cam of a disc_cam study with a roller or knife-edge follower (model/disc_cam): its profile "
+                      "and follower motion, pressure angle and curvature at given cam angles.")
+      .def_static(
+          "from_study",
+          [](const py::object& s) {
+            const StudyData d = ToStudy(s);
+            return DiscCam{ParseKind<st::disc_cam::Study>(d, "disc_cam",
+                                                          [](const st::Node& n) { return st::disc_cam::Parse(n); })};
+          },
+          py::arg("study"), "From a camopt.Study, a dict or a path of kind disc_cam.")
+      .def_property_readonly("angles_rad", &DiscCam::StudyAngles,
+                             "The study's cam angles 2*pi*i/angle_steps (those of series.csv).")
+      .def_property_readonly("oscillating", &DiscCam::Oscillating)
+      .def("evaluate", &DiscCam::Evaluate, py::arg("angles_rad"),
+           "At the cam angles [rad]: the columns of series.csv by name (follower in mm, or deg when\n"
+           "oscillating; pressure and shift angles; contact and pitch points; q; pitch curvature).")
+      .def("profile", &DiscCam::Profile, py::arg("points") = 3600,
+           "(x, y) [mm] of the cam profile (the contact points) at theta = 2*pi*i/points.");
 }
 
 }  // namespace camopt::python

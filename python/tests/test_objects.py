@@ -239,6 +239,33 @@ class CycloidModel(unittest.TestCase):
         self.assertLess(dist.min(), rho + 0.05)
 
 
+class DiscCamModel(unittest.TestCase):
+    def test_evaluate_at_the_study_angles_is_series_csv(self):
+        for example in ("disc_cam_translating.json", "disc_cam_oscillating.json"):
+            with self.subTest(example=example):
+                s = helpers.example(example)
+                s["analysis"] = {"angle_steps": 720, "evaluate": ["profile"]}
+                s.pop("tolerances", None)
+                study = camopt.Study("disc_cam", s)
+                csv = study.run().tables["series"]
+                cam = camopt.DiscCam.from_study(study)
+                self.assertEqual(cam.oscillating, example == "disc_cam_oscillating.json")
+                values = cam.evaluate(cam.angles_rad)
+                compared = 0
+                for name, column in values.items():
+                    self.assertIn(name, csv)
+                    np.testing.assert_allclose(column, csv[name], rtol=1e-9,
+                                               atol=1e-9 * max(1.0, float(np.abs(csv[name]).max())), err_msg=name)
+                    compared += 1
+                self.assertGreaterEqual(compared, 12)
+                x, y = cam.profile(720)
+                np.testing.assert_array_equal(x, values["contact_x_mm"])
+                np.testing.assert_array_equal(y, values["contact_y_mm"])
+        flat = camopt.DiscCam.from_study(helpers.example("disc_cam_flat_faced.json"))
+        with self.assertRaises(ValueError):
+            flat.evaluate([0.0])
+
+
 class Stub(unittest.TestCase):
     def test_every_public_name_is_in_the_stub(self):
         stub = ast.parse((helpers.SOURCE / "python" / "camopt.pyi").read_text())
