@@ -1,4 +1,5 @@
-# The Python module `camopt` (pybind11, python/camopt_module.cc), built for Debian's Python
+# The Python module `camopt` (pybind11, python/camopt_module.cc and camopt_models.cc; its stub
+# python/camopt.pyi is copied next to it and installed with it), built for Debian's Python
 # /usr/bin/python3 (which has python3-numpy, -matplotlib and -jsonschema from Debian) — not for a
 # python that may come first on PATH (e.g. pyenv's). Change with -DCAMOPT_PYTHON=/path/to/python3.
 # The module lands in build/python/ (PYTHONPATH=build/python); its tests and the example script
@@ -21,19 +22,25 @@ if(NOT pybind11_FOUND)
                       " or configure with -DCAMOPT_BUILD_PYTHON=OFF")
 endif()
 
-pybind11_add_module(camopt_python MODULE ${PROJECT_SOURCE_DIR}/python/camopt_module.cc)
+pybind11_add_module(camopt_python MODULE ${PROJECT_SOURCE_DIR}/python/camopt_module.cc
+                    ${PROJECT_SOURCE_DIR}/python/camopt_models.cc)
 set_target_properties(camopt_python PROPERTIES OUTPUT_NAME camopt
                       LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/python)
 target_compile_options(camopt_python PRIVATE ${CAMOPT_WARNINGS})
 target_link_libraries(camopt_python PRIVATE camopt_lib)
 set_target_properties(camopt_python PROPERTIES INSTALL_RPATH "$ORIGIN/../..")
 install(TARGETS camopt_python LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/python3/dist-packages)
+# The type stub beside the module (PEP 561 stub for an extension module: same name, .pyi).
+add_custom_command(TARGET camopt_python POST_BUILD
+                   COMMAND ${CMAKE_COMMAND} -E copy_if_different ${PROJECT_SOURCE_DIR}/python/camopt.pyi
+                           ${PROJECT_BINARY_DIR}/python/camopt.pyi)
+install(FILES ${PROJECT_SOURCE_DIR}/python/camopt.pyi DESTINATION ${CMAKE_INSTALL_LIBDIR}/python3/dist-packages)
 
 if(CAMOPT_BUILD_TESTS)
   set(CAMOPT_PY_ENV "PYTHONPATH=${PROJECT_BINARY_DIR}/python" "MPLBACKEND=Agg"
       "CAMOPT_SOURCE_DIR=${PROJECT_SOURCE_DIR}" "CAMOPT_BINARY=$<TARGET_FILE:camopt>"
       "CAMOPT_TEST_TMP=${PROJECT_BINARY_DIR}/python-test-tmp")
-  foreach(t module schemas example)
+  foreach(t module schemas example objects interrupt)
     add_test(NAME Python.${t}
              COMMAND ${CAMOPT_PYTHON} -m unittest -v test_${t}
              WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)

@@ -2,6 +2,7 @@
 // bounds (finite sides only), covariance by ceres::Covariance (dense SVD, so a rank-deficient
 // Jacobian is detected instead of producing garbage).
 #include "optimizers/ceres_fit.h"
+#include "optimizers/cancel.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -88,6 +89,7 @@ FitResult SolveLeastSquares(const LeastSquaresProblem& problem, int max_iteratio
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &cp, &summary);
+  ThrowIfCancelled();
   result.message = summary.message;
   result.iterations = static_cast<int>(summary.iterations.size());
 

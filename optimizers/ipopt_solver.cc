@@ -14,6 +14,7 @@
 #include <coin/IpIpoptData.hpp>
 #include <coin/IpTNLP.hpp>
 
+#include "optimizers/cancel.h"
 #include "optimizers/solver.h"
 
 namespace camopt::optimizers {
@@ -118,6 +119,14 @@ class ProblemTnlp : public Ipopt::TNLP {
     return true;
   }
 
+  // Called once per iteration: false stops Ipopt (User_Requested_Stop) when a cancellation was
+  // asked for; SolveIpopt then throws Cancelled.
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index, Number, Number, Number, Number, Number,
+                             Number, Number, Number, Index, const Ipopt::IpoptData*,
+                             Ipopt::IpoptCalculatedQuantities*) override {
+    return !CancelRequested();
+  }
+
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
                          const Number*, Index, const Number*, const Number*, Number,
                          const Ipopt::IpoptData* ip_data,
@@ -190,6 +199,7 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
     return result;
   }
   const Ipopt::ApplicationReturnStatus code = app->OptimizeTNLP(tnlp);
+  ThrowIfCancelled();
   result.message = "ipopt application status " + std::to_string(static_cast<int>(code));
   result.value_evaluations = tnlp->cache().value_evaluations();
   result.gradient_evaluations = tnlp->cache().jacobian_evaluations();

@@ -14,6 +14,7 @@
 
 #include <nlopt.hpp>
 
+#include "optimizers/cancel.h"
 #include "optimizers/solver.h"
 
 namespace camopt::optimizers {
@@ -50,6 +51,7 @@ void CheckFinite(const std::vector<double>& v) {
 }
 
 double Objective(unsigned n, const double* z, double* grad, void* data) {
+  if (CancelRequested()) throw nlopt::forced_stop();  // SolveNlopt throws Cancelled after optimize
   auto& c = *static_cast<Context*>(data);
   const auto x = c.Unscale(z);
   const int k = c.cache->objective_index();
@@ -67,6 +69,7 @@ double Objective(unsigned n, const double* z, double* grad, void* data) {
 
 void Constraints(unsigned m, double* result, unsigned n, const double* z, double* grad,
                  void* data) {
+  if (CancelRequested()) throw nlopt::forced_stop();
   auto& c = *static_cast<Context*>(data);
   const auto x = c.Unscale(z);
   const std::vector<double>* jac = nullptr;
@@ -166,6 +169,7 @@ SolverResult SolveNlopt(const objectives::Problem& problem, const SolverOptions&
     result.message = std::string("nlopt: ") + e.what();
     code = nlopt::FAILURE;
   }
+  ThrowIfCancelled();  // a cancelled solve has no result: the caller unwinds
   result.value_evaluations = cache.value_evaluations();
   result.gradient_evaluations = cache.jacobian_evaluations();
   result.iterations = opt.get_numevals();

@@ -1,30 +1,51 @@
-// The Python module `camopt` (pybind11): run a study from a dict or a file and get its result as
-// a dict, with series as NumPy arrays; list the kinds and their JSON Schemas.
+// The Python module `camopt` (pybind11): studies, their results and sweeps as objects, the models
+// of the kinds' designs evaluated at given angles, and the earlier one-call `camopt.run`.
 //
 //   import camopt
-//   r = camopt.run("studies/examples/lcr_ii.json")       # or camopt.run({...}), out="folder"
-//   r["input_cam"]["max_contact_stress_MPa"]; r["series"]["series"]["efficiency"]  # numpy array
-//   camopt.kinds(); camopt.schema("lcr_analysis"); camopt.__version__
+//   s = camopt.Study.load("studies/examples/lcr_ii.json")      # or camopt.Study("lcr_analysis", {...})
+//   r = s.run(progress=lambda e: print(e.label, e.fraction))  # Ctrl-C stops it within a second
+//   r.verdict; r.headlines; r.result["input_cam"]; r.tables["series"]["efficiency"]  # numpy
+//   camopt.Lcr.from_study(s).loads(angles_rad)["input_max_roller_force_N"]
+//   camopt.Sweep.load("studies/examples/sweeps/x.json").run().tables["cases"]
+//   camopt.run("studies/examples/lcr_ii.json")                # result.json as a dict (as before)
 //
-// A bad study raises camopt.StudyError (a ValueError) with .file, .path (JSON path), .expected,
-// .found; a study over its work limits too. Everything the module computes goes through
-// studies/study.h's RunStudy, exactly as the command line does.
+// A missing file raises FileNotFoundError, a bad study camopt.StudyError (a ValueError) with .file,
+// .path (JSON path), .expected, .found. Everything the module computes goes through the same
+// functions as the command line (studies/study.h's RunStudy, studies/sweep.h's RunCommand, the
+// model/ functions the kinds call). docs/studies.md ("camopt as a library and from Python")
+// describes the API; python/camopt.pyi is its stub.
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "python/camopt_module.h"
 #include "studies/input.h"
 #include "studies/provenance.h"
+#include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
+#include "studies/sweep.h"
+#include "studies/sweep_design.h"
 
 namespace py = pybind11;
+namespace fs = std::filesystem;
+namespace st = camopt::studies;
 using nlohmann::json;
 
 namespace {
@@ -110,9 +131,117 @@ py::dict CsvColumns(const std::string& text) {
 
 py::handle g_study_error;  // camopt.StudyError (a reference kept for the life of the process)
 
+std::string FsPath(const py::object& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
+}
+
+[[noreturn]] void RaiseFileNotFound(const std::string& path) {
+  PyErr_SetObject(PyExc_FileNotFoundError, py::make_tuple(ENOENT, "No such file or directory", path).ptr());
+  throw py::error_already_set();
+}
+
+py::dict ResultDict(const st::Outputs& outputs);
+
+// ---- The interruptible run ---------------------------------------------------------------------
+
+std::mutex& RunMutex() {
+  static std::mutex m;
+  return m;
+}
+
+// True on a run's worker thread (where the progress callback runs): a run started there would
+// wait for the run that calls it.
+thread_local bool t_in_run = false;
+
+// The progress observer of one run: calls the Python callback with the GIL taken; the first
+// exception it raises is kept (and cancels the run), later reports are dropped.
+class ProgressBridge {
+ public:
+  explicit ProgressBridge(py::object callback) : callback_(std::move(callback)) {}
+  void operator()(const st::ProgressEvent& e) {
+    if (failed_.load()) return;
+    py::gil_scoped_acquire gil;
+    try {
+      callback_(e);
+    } catch (py::error_already_set& err) {
+      error_.emplace(std::move(err));
+      failed_ = true;
+      st::RequestCancel();
+    }
+  }
+  std::optional<py::error_already_set>& error() { return error_; }
+
+ private:
+  py::object callback_;
+  std::atomic<bool> failed_{false};
+  std::optional<py::error_already_set> error_;
+};
+
+}  // namespace
+
+namespace camopt::python {
+
+void RunInterruptibly(const std::function<void()>& work, const py::object& progress) {
+  if (t_in_run) throw std::runtime_error("camopt: a run cannot be started from a progress callback");
+  std::unique_lock<std::mutex> run_lock(RunMutex(), std::defer_lock);
+  {
+    py::gil_scoped_release release;
+    run_lock.lock();
+  }
+  st::ClearCancel();
+  std::shared_ptr<ProgressBridge> bridge;
+  std::function<void(const st::ProgressEvent&)> previous;
+  if (!progress.is_none()) {
+    bridge = std::make_shared<ProgressBridge>(progress);
+    previous = st::SetProgressObserver([bridge](const st::ProgressEvent& e) { (*bridge)(e); });
+  }
+  std::mutex m;
+  std::condition_variable cv;
+  bool done = false;
+  std::exception_ptr error;
+  std::thread worker([&] {
+    t_in_run = true;
+    try {
+      work();
+    } catch (...) {
+      error = std::current_exception();
+    }
+    const std::lock_guard<std::mutex> lock(m);
+    done = true;
+    cv.notify_all();
+  });
+  std::optional<py::error_already_set> interrupt;
+  for (;;) {
+    bool finished = false;
+    {
+      py::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock(m);
+      finished = cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; });
+    }
+    if (finished) break;
+    // Python's handlers run here (only in the main thread): Ctrl-C raises KeyboardInterrupt.
+    if (!interrupt && PyErr_CheckSignals() != 0) {
+      interrupt.emplace();  // takes the exception out of the error indicator
+      st::RequestCancel();
+    }
+  }
+  {
+    py::gil_scoped_release release;
+    worker.join();
+  }
+  if (bridge) {
+    // The run's observer comes back here and is destroyed with the GIL held.
+    std::function<void(const st::ProgressEvent&)> ours = st::SetProgressObserver(std::move(previous));
+  }
+  st::ClearCancel();
+  if (interrupt) throw std::move(*interrupt);
+  if (bridge && bridge->error()) throw std::move(*bridge->error());
+  if (error) std::rethrow_exception(error);
+}
+
 // The parts of a StudyError; for a message built without a Node ("FILE: /PATH: rest"), taken from
 // the message.
-[[noreturn]] void RaiseStudyError(const camopt::studies::StudyError& e, const std::string& study_file) {
+[[noreturn]] void RaiseStudyError(const st::StudyError& e, const std::string& study_file) {
   std::string file = e.file().empty() ? study_file : e.file(), path = e.path(), expected = e.expected(), found = e.found();
   const std::string msg = e.what();
   if (path.empty()) {
@@ -140,61 +269,355 @@ py::handle g_study_error;  // camopt.StudyError (a reference kept for the life o
   throw py::error_already_set();
 }
 
-py::dict Run(const py::object& study, const py::object& out, bool quiet, double max_work_factor) {
-  namespace st = camopt::studies;
-  st::RunContext ctx;
-  ctx.quiet = quiet;
-  ctx.max_work_factor = max_work_factor;
-  json parsed;
-  std::string text;
+StudyData ToStudy(const py::object& study) {
+  if (py::isinstance<StudyData>(study)) return study.cast<StudyData>();
+  StudyData s;
   try {
     if (py::isinstance<py::dict>(study)) {
-      ctx.study_file = "<dict>";
-      text = py::module_::import("json").attr("dumps")(study).cast<std::string>();
-      parsed = st::ParseStudyText(text, ctx.study_file, st::CurrentInputLimits().max_depth);
+      s.file = "<dict>";
+      const std::string text = py::module_::import("json").attr("dumps")(study).cast<std::string>();
+      s.study = st::ParseStudyText(text, s.file, st::CurrentInputLimits().max_depth);
     } else {
-      ctx.study_file = py::str(py::module_::import("os").attr("fspath")(study)).cast<std::string>();
-      text = st::ReadFileCapped(ctx.study_file, st::CurrentInputLimits().max_file_bytes, "file");
-      parsed = st::ParseStudyText(text, ctx.study_file, st::CurrentInputLimits().max_depth);
-      ctx.study_sha256 = st::Sha256Hex(text);
+      s.file = FsPath(study);
+      std::error_code ec;
+      if (!fs::exists(s.file, ec)) RaiseFileNotFound(s.file);
+      const std::string text = st::ReadFileCapped(s.file, st::CurrentInputLimits().max_file_bytes, "file");
+      s.study = st::ParseStudyText(text, s.file, st::CurrentInputLimits().max_depth);
+      s.sha256 = st::Sha256Hex(text);
     }
-    st::Outputs outputs;
-    {
-      std::unique_ptr<st::OutputFolder> folder;
-      if (!out.is_none())
-        folder = std::make_unique<st::OutputFolder>(py::str(py::module_::import("os").attr("fspath")(out)));
-      py::gil_scoped_release release;
-      outputs = st::RunStudy(parsed, ctx);
-      if (folder) folder->Commit(outputs);
-    }
-    const auto& files = outputs.files();
-    py::dict result;
-    const auto r = files.find("result.json");
-    if (r != files.end()) result = ToPython(json::parse(r->second)).cast<py::dict>();
-    py::dict series;
-    for (const auto& [name, content] : files)
-      if (name.size() > 4 && name.compare(name.size() - 4, 4, ".csv") == 0)
-        series[py::str(name.substr(0, name.size() - 4))] = CsvColumns(content);
-    result["series"] = series;
-    py::list names;
-    for (const auto& [name, content] : files) names.append(name);
-    result["files"] = names;
-    if (!outputs.incomplete().empty()) result["incomplete"] = outputs.incomplete();
-    return result;
+    st::CheckStudy(s.study, s.file);
   } catch (const st::StudyError& e) {
-    RaiseStudyError(e, ctx.study_file);
+    RaiseStudyError(e, s.file);
   }
+  return s;
+}
+
+}  // namespace camopt::python
+
+namespace {
+
+using camopt::python::RaiseStudyError;
+using camopt::python::RunInterruptibly;
+using camopt::python::StudyData;
+
+// ---- Results -----------------------------------------------------------------------------------
+
+py::dict Tables(const std::map<std::string, std::string>& files) {
+  py::dict tables;
+  for (const auto& [name, content] : files)
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, ".csv") == 0)
+      tables[py::str(name.substr(0, name.size() - 4))] = CsvColumns(content);
+  return tables;
+}
+
+// The result of a run (a study's or a sweep's): result.json, the tables, the verdict and the
+// headline numbers, the output files in memory and the folder they were written to.
+struct Result {
+  std::string kind;
+  py::object verdict = py::none();
+  bool limits_met = true;
+  py::list headlines;
+  py::dict result, tables;
+  py::list files, warnings;
+  py::object out = py::none(), incomplete = py::none();
+  std::map<std::string, std::string> contents;
+};
+
+Result MakeResult(const json& study, std::map<std::string, std::string> files, const std::string& incomplete,
+                  const std::string& out) {
+  Result r;
+  r.kind = study.value("study", std::string());
+  json rj = json::object();
+  const auto it = files.find("result.json");
+  if (it != files.end()) rj = json::parse(it->second, nullptr, false);
+  if (rj.is_object()) {
+    r.result = ToPython(rj).cast<py::dict>();
+    if (rj.contains("warnings") && rj["warnings"].is_array())
+      for (const auto& w : rj["warnings"]) r.warnings.append(w.is_string() ? w.get<std::string>() : w.dump());
+    if (!r.kind.empty()) {
+      const st::HeadlineTable table = st::EvaluateHeadlines(r.kind, study, rj);
+      r.verdict = py::str(st::VerdictLine(table));
+      r.limits_met = table.exceeded.empty() && !table.no_design;
+      const std::vector<st::Headline>* declared = st::FindHeadlines(r.kind);
+      for (const st::HeadlineRow& row : table.rows) {
+        py::dict h;
+        h["label"] = row.label;
+        h["value"] = py::none();
+        h["unit"] = "";
+        if (declared)
+          for (const st::Headline& d : *declared)
+            if (d.label == row.label) {
+              const json::json_pointer p(d.pointer);
+              if (rj.contains(p) && rj.at(p).is_number()) h["value"] = rj.at(p).get<double>();
+              h["unit"] = d.unit;
+              h["pointer"] = d.pointer;
+            }
+        h["text"] = row.value;
+        h["limit"] = row.limit;
+        h["status"] = row.status;
+        r.headlines.append(h);
+      }
+    }
+  }
+  r.tables = Tables(files);
+  for (const auto& [name, content] : files) r.files.append(name);
+  if (!incomplete.empty()) r.incomplete = py::str(incomplete);
+  if (!out.empty()) r.out = py::str(out);
+  r.contents = std::move(files);
+  return r;
+}
+
+// Runs a study (interruptibly); with `out`, writes the folder as `camopt run --out` does.
+st::Outputs RunOutputs(const StudyData& s, const std::string& out, bool quiet, double max_work_factor,
+                       const py::object& progress) {
+  st::RunContext ctx;
+  ctx.study_file = s.file;
+  ctx.quiet = quiet;
+  ctx.max_work_factor = max_work_factor;
+  ctx.study_sha256 = s.sha256;
+  st::Outputs outputs;
+  try {
+    // Checked before any work; an uncommitted folder's temporary sibling is removed by its
+    // destructor (a cancelled run leaves `out` as it was).
+    std::unique_ptr<st::OutputFolder> folder;
+    if (!out.empty()) folder = std::make_unique<st::OutputFolder>(out);
+    RunInterruptibly(
+        [&] {
+          outputs = st::RunStudy(s.study, ctx);
+          if (folder) folder->Commit(outputs);
+        },
+        progress);
+  } catch (const st::StudyError& e) {
+    RaiseStudyError(e, s.file);
+  }
+  return outputs;
+}
+
+py::dict ResultDict(const st::Outputs& outputs) {
+  const auto& files = outputs.files();
+  py::dict result;
+  const auto r = files.find("result.json");
+  if (r != files.end()) result = ToPython(json::parse(r->second)).cast<py::dict>();
+  result["series"] = Tables(files);
+  py::list names;
+  for (const auto& [name, content] : files) names.append(name);
+  result["files"] = names;
+  if (!outputs.incomplete().empty()) result["incomplete"] = outputs.incomplete();
+  return result;
+}
+
+// camopt.run (the first API, kept): result.json as a dict plus "series", "files", "incomplete".
+py::dict Run(const py::object& study, const py::object& out, bool quiet, double max_work_factor) {
+  namespace st = camopt::studies;
+  StudyData s;
+  try {
+    if (py::isinstance<py::dict>(study)) {
+      s.file = "<dict>";
+      const std::string text = py::module_::import("json").attr("dumps")(study).cast<std::string>();
+      s.study = st::ParseStudyText(text, s.file, st::CurrentInputLimits().max_depth);
+    } else {
+      s.file = FsPath(study);
+      const std::string text = st::ReadFileCapped(s.file, st::CurrentInputLimits().max_file_bytes, "file");
+      s.study = st::ParseStudyText(text, s.file, st::CurrentInputLimits().max_depth);
+      s.sha256 = st::Sha256Hex(text);
+    }
+  } catch (const st::StudyError& e) {
+    RaiseStudyError(e, s.file);
+  }
+  return ResultDict(RunOutputs(s, out.is_none() ? "" : FsPath(out), quiet, max_work_factor, py::none()));
+}
+
+// ---- Sweeps ------------------------------------------------------------------------------------
+
+struct SweepData {
+  std::string file;
+  st::sweep::Sweep sweep;
+  size_t cases = 0;
+};
+
+SweepData LoadSweep(const py::object& path) {
+  SweepData s;
+  s.file = FsPath(path);
+  std::error_code ec;
+  if (!fs::exists(s.file, ec)) RaiseFileNotFound(s.file);
+  try {
+    s.sweep = st::sweep::Parse(s.file);
+    s.cases = st::sweep::Cases(s.sweep).size();
+  } catch (const st::StudyError& e) {
+    RaiseStudyError(e, s.file);
+  }
+  return s;
+}
+
+std::string ReadWhole(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+Result RunSweep(const SweepData& s, const py::object& out, int jobs, bool quiet, double max_work_factor,
+                const py::object& progress) {
+  // Without `out`, the sweep runs into a temporary folder that is read and removed.
+  py::object tmp = py::none();
+  std::string folder;
+  if (out.is_none()) {
+    tmp = py::module_::import("tempfile").attr("mkdtemp")(py::arg("prefix") = "camopt-sweep-");
+    folder = (fs::path(tmp.cast<std::string>()) / "sweep").string();
+  } else {
+    folder = FsPath(out);
+  }
+  st::sweep::Options o;
+  o.file = s.file;
+  o.out = folder;
+  o.jobs = jobs;
+  o.quiet = quiet;
+  o.max_work_factor = max_work_factor;
+  o.summary = false;
+  int code = 1;
+  const auto cleanup = [&] {
+    if (!tmp.is_none()) py::module_::import("shutil").attr("rmtree")(tmp, py::arg("ignore_errors") = true);
+  };
+  try {
+    RunInterruptibly([&] { code = st::sweep::RunCommand(o); }, progress);
+  } catch (...) {
+    cleanup();
+    throw;
+  }
+  if (code == 2 || code == 1) {
+    cleanup();
+    if (code == 2)
+      RaiseStudyError(st::StudyError(s.file + ": the sweep did not run (camopt's message is on stderr)"), s.file);
+    throw std::runtime_error(s.file + ": internal error while running the sweep (camopt's message is on stderr)");
+  }
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::directory_iterator(folder))
+    if (e.is_regular_file() && e.path().filename().string()[0] != '.')
+      files[e.path().filename().string()] = ReadWhole(e.path());
+  cleanup();
+  Result r = MakeResult(json::object(), std::move(files), code == 3 ? "some cases are not ok (see tables['cases'])" : "",
+                        out.is_none() ? "" : folder);
+  r.kind = "sweep";
+  r.verdict = py::none();
+  return r;
 }
 
 }  // namespace
 
 PYBIND11_MODULE(camopt, m) {
-  m.doc() = "camopt: design optimisation of cam reducers and cam mechanisms (run studies from Python)";
+  using camopt::python::ToStudy;
+  m.doc() = "camopt: design optimisation of cam reducers and cam mechanisms (studies, results, sweeps "
+            "and the kinds' models from Python)";
   m.attr("__version__") = camopt::studies::CamoptVersion();
   g_study_error = py::handle(PyErr_NewExceptionWithDoc("camopt.StudyError",
                                 "A bad study: .file, .path (JSON path), .expected, .found name the fault.",
                                 PyExc_ValueError, nullptr));
   m.attr("StudyError") = py::reinterpret_borrow<py::object>(g_study_error);
+  // A cancellation nobody in this process asked for from Python (it cannot happen through the
+  // module's own runs, which raise the KeyboardInterrupt that caused it).
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const st::StudyCancelled&) {
+      PyErr_SetString(PyExc_KeyboardInterrupt, "camopt: the run was cancelled");
+    }
+  });
+
+  py::class_<st::ProgressEvent>(m, "ProgressEvent",
+                                "One progress report of a run: label, fraction in [0, 1], elapsed_s, eta_s "
+                                "(None while unknown), detail, done (the last report of that label).")
+      .def_readonly("label", &st::ProgressEvent::label)
+      .def_readonly("fraction", &st::ProgressEvent::fraction)
+      .def_readonly("elapsed_s", &st::ProgressEvent::elapsed_s)
+      .def_property_readonly("eta_s",
+                             [](const st::ProgressEvent& e) -> py::object {
+                               return e.eta_s < 0 ? py::object(py::none()) : py::object(py::float_(e.eta_s));
+                             })
+      .def_readonly("detail", &st::ProgressEvent::detail)
+      .def_readonly("done", &st::ProgressEvent::done)
+      .def("__repr__", [](const st::ProgressEvent& e) {
+        return "ProgressEvent(" + e.label + ", " + std::to_string(e.fraction) + (e.done ? ", done)" : ")");
+      });
+
+  py::class_<Result>(m, "Result",
+                     "What a run gave: result.json as a dict, the CSV outputs as {table: {column: array}}, "
+                     "the verdict over the kind's limits and its headline numbers, the output files.")
+      .def_readonly("kind", &Result::kind)
+      .def_readonly("verdict", &Result::verdict)
+      .def_readonly("limits_met", &Result::limits_met)
+      .def_readonly("headlines", &Result::headlines)
+      .def_readonly("result", &Result::result)
+      .def_readonly("tables", &Result::tables)
+      .def_readonly("files", &Result::files)
+      .def_readonly("warnings", &Result::warnings)
+      .def_readonly("out", &Result::out)
+      .def_readonly("incomplete", &Result::incomplete)
+      .def(
+          "text",
+          [](const Result& r, const std::string& name) {
+            const auto it = r.contents.find(name);
+            if (it == r.contents.end()) throw py::key_error(name);
+            return py::bytes(it->second);
+          },
+          py::arg("name"), "The bytes of one output file (e.g. 'report.html').")
+      .def("__getitem__", [](const Result& r, const py::object& key) { return r.result[key]; })
+      .def("__repr__", [](const Result& r) {
+        return "<camopt.Result " + r.kind + ": " + (r.verdict.is_none() ? std::string("-") : r.verdict.cast<std::string>()) +
+               ">";
+      });
+
+  py::class_<StudyData>(m, "Study", "A checked study of one kind, from a file or a dict.")
+      .def(py::init([](const std::string& kind, const py::dict& fields) {
+             py::dict d = fields.attr("copy")();  // the caller's dict is left alone
+             if (d.contains("study") && d["study"].cast<std::string>() != kind) {
+               RaiseStudyError(st::StudyError("<dict>: /study: expected \"" + kind + "\" (the kind given), found \"" +
+                                              d["study"].cast<std::string>() + "\""),
+                               "<dict>");
+             }
+             d["study"] = kind;
+             return ToStudy(d);
+           }),
+           py::arg("kind"), py::arg("fields"),
+           "A study of `kind` from a dict of its fields (\"study\" may be left out). Raises camopt.StudyError.")
+      .def_static(
+          "load", [](const py::object& path) { return ToStudy(path); }, py::arg("path"),
+          "Reads and checks a study file. Raises FileNotFoundError, camopt.StudyError.")
+      .def_property_readonly("kind", &StudyData::kind)
+      .def_property_readonly("name", [](const StudyData& s) { return s.study.value("name", std::string()); })
+      .def_readonly("file", &StudyData::file)
+      .def("to_dict", [](const StudyData& s) { return ToPython(s.study); }, "The study as a dict (a copy).")
+      .def(
+          "run",
+          [](const StudyData& s, const py::object& out, const py::object& progress, bool quiet, double max_work_factor) {
+            const std::string folder = out.is_none() ? "" : FsPath(out);
+            st::Outputs o = RunOutputs(s, folder, quiet, max_work_factor, progress);
+            const std::string incomplete = o.incomplete();
+            return MakeResult(s.study, o.files(), incomplete, folder);
+          },
+          py::arg("out") = py::none(), py::arg("progress") = py::none(), py::arg("quiet") = true,
+          py::arg("max_work_factor") = 1.0,
+          "Runs the study and returns a camopt.Result. out=FOLDER also writes the files there, as\n"
+          "`camopt run --out FOLDER` would (all at once at the end: a cancelled run leaves FOLDER as it\n"
+          "was). progress(event) is called with camopt.ProgressEvent reports (at most every 100 ms per\n"
+          "stage); an exception it raises stops the run and is raised here. Ctrl-C stops the run within\n"
+          "a second and raises KeyboardInterrupt. Raises camopt.StudyError for a study over its work\n"
+          "limits.")
+      .def("__repr__", [](const StudyData& s) { return "<camopt.Study " + s.kind() + " from " + s.file + ">"; });
+
+  py::class_<SweepData>(m, "Sweep", "A checked sweep file (`camopt sweep`): a base study run over many cases.")
+      .def_static("load", &LoadSweep, py::arg("path"),
+                  "Reads and checks a sweep file. Raises FileNotFoundError, camopt.StudyError.")
+      .def_readonly("file", &SweepData::file)
+      .def_property_readonly("name", [](const SweepData& s) { return s.sweep.name; })
+      .def_readonly("cases", &SweepData::cases, "The number of cases.")
+      .def("run", &RunSweep, py::arg("out") = py::none(), py::arg("jobs") = 0, py::arg("quiet") = true,
+           py::arg("max_work_factor") = 1.0, py::arg("progress") = py::none(),
+           "Runs every case (jobs threads; 0: the machine's cores) and returns a camopt.Result: result.json\n"
+           "of the sweep, tables['cases'] (and tables['pareto']). out=FOLDER keeps the folder as `camopt\n"
+           "sweep --out FOLDER` does (a Ctrl-C keeps its finished cases for `camopt sweep --resume`);\n"
+           "without it, a temporary folder is used and removed. Ctrl-C raises KeyboardInterrupt.")
+      .def("__repr__", [](const SweepData& s) { return "<camopt.Sweep " + s.sweep.name + " from " + s.file + ">"; });
+
   m.def("run", &Run, py::arg("study"), py::arg("out") = py::none(), py::arg("quiet") = true,
         py::arg("max_work_factor") = 1.0,
         "Runs a study (a dict, or the path of a study file) and returns result.json as a dict:\n"
@@ -202,7 +625,8 @@ PYBIND11_MODULE(camopt, m) {
         "'files' (the names of the outputs) and, when the result is not what was asked (not\n"
         "converged, nothing feasible), 'incomplete' with the reason. With out=FOLDER the files are\n"
         "also written there, as `camopt run --out FOLDER` would. Raises camopt.StudyError for a bad\n"
-        "study.");
+        "study (also for a missing file). Ctrl-C raises KeyboardInterrupt. camopt.Study is the\n"
+        "object form.");
   m.def("kinds", &camopt::studies::StudyKinds, "The study kinds this build knows.");
   m.def(
       "schema",
@@ -214,4 +638,5 @@ PYBIND11_MODULE(camopt, m) {
         }
       },
       py::arg("kind"), "The JSON Schema (draft 2020-12) of a study kind, as a dict.");
+  camopt::python::AddModels(m);
 }

@@ -17,6 +17,8 @@
 //   1   a defect of camopt ("internal error")
 //   130 interrupted by SIGINT or SIGTERM (the temporary output folder is removed)
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -50,9 +52,15 @@
 
 namespace {
 
-// SIGINT and SIGTERM are blocked in every thread and taken by one thread with sigwait: it can
-// safely remove the temporary output folder (not possible in a signal handler) and end the
-// process, whatever the solvers are doing at that moment.
+// Set by CliMain once a cancelled run has unwound (its temporary folders removed, a sweep's
+// threads joined).
+std::atomic<bool> g_unwound{false};
+
+// SIGINT and SIGTERM are blocked in every thread and taken by one thread with sigwait: it asks
+// the run to stop (the cooperative cancellation of studies/study.h, as the Python module's
+// Ctrl-C does), gives it up to a second to unwind, then removes the temporary output folder
+// (not possible in a signal handler) and ends the process, whatever the solvers are doing at
+// that moment.
 void StartSignalThread() {
   sigset_t set;
   sigemptyset(&set);
@@ -62,6 +70,8 @@ void StartSignalThread() {
   std::thread([set] {
     int sig = 0;
     sigwait(&set, &sig);
+    camopt::studies::RequestCancel();
+    for (int i = 0; i < 100 && !g_unwound.load(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     camopt::studies::RemoveTemporaryOutputForInterrupt();
     std::string message = "\ncamopt: interrupted\n";
     const std::string hint = camopt::studies::sweep::InterruptHint();
@@ -168,8 +178,24 @@ std::string ExceededLimits(const std::string& out_dir, const std::string& study_
 
 namespace camopt::studies {
 
+namespace {
+int RunCommandLine(int argc, char** argv);
+}  // namespace
+
 int CliMain(int argc, char** argv) {
   StartSignalThread();
+  try {
+    return RunCommandLine(argc, argv);
+  } catch (const StudyCancelled&) {
+    // Only the signal thread asks for a cancellation here: it ends the process with exit code 130.
+    g_unwound = true;
+    for (;;) pause();
+  }
+}
+
+namespace {
+
+int RunCommandLine(int argc, char** argv) {
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
   std::string study_file, out_dir;
   bool quiet = false, convergence = false, strict = false;
@@ -377,5 +403,7 @@ int CliMain(int argc, char** argv) {
     return 1;
   }
 }
+
+}  // namespace
 
 }  // namespace camopt::studies

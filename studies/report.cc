@@ -246,6 +246,11 @@ std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::
   return os.str();
 }
 
+const std::vector<Headline>* FindHeadlines(const std::string& kind) {
+  const auto it = Reports().find(kind);
+  return it == Reports().end() ? nullptr : &it->second;
+}
+
 bool RegisterReport(const std::string& kind, std::vector<Headline> headlines) {
   Reports()[kind] = std::move(headlines);
   return true;

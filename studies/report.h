@@ -39,6 +39,10 @@ struct Headline {
 /// A kind without registered headlines gets every top-level number of result.json instead.
 bool RegisterReport(const std::string& kind, std::vector<Headline> headlines);
 
+/// The headlines registered for a kind, or nullptr (the Python module's Result.headlines reads
+/// their numbers from result.json by their pointers).
+const std::vector<Headline>* FindHeadlines(const std::string& kind);
+
 /// One headline evaluated on a run, as report.html and the stdout summary show it.
 struct HeadlineRow {
   std::string label;

@@ -69,6 +69,7 @@ void Progress::Observe(double fraction, const std::string& detail, bool done) {
 }
 
 void Progress::Update(double fraction, const std::string& detail) {
+  optimizers::ThrowIfCancelled();
   fraction_ = fraction;
   Observe(fraction, detail, false);
   if (quiet_) return;

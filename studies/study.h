@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "optimizers/cancel.h"
 #include "studies/input.h"
 
 namespace camopt::studies {
@@ -28,7 +29,8 @@ class Progress {
   Progress(std::string label, bool quiet)
       : label_(std::move(label)), quiet_(quiet), start_(std::chrono::steady_clock::now()) {}
   ~Progress() { Done(); }
-  /// fraction in [0, 1].
+  /// fraction in [0, 1]. Throws StudyCancelled when a cancellation was asked for (RequestCancel):
+  /// every long stage reports progress, so this is where a run stops.
   void Update(double fraction, const std::string& detail = "");
   void Done();
 
@@ -61,6 +63,15 @@ struct ProgressEvent {
 /// Update, at most every 100 ms per Progress apart from the first and the last report, and must not
 /// throw. An empty function removes it. Returns the previous observer.
 std::function<void(const ProgressEvent&)> SetProgressObserver(std::function<void(const ProgressEvent&)> observer);
+
+/// Cooperative cancellation (optimizers/cancel.h): RequestCancel() makes the next
+/// Progress::Update and the solvers' next iteration throw StudyCancelled, which every handler of a
+/// run lets through (it is not a std::exception): RunStudy, a sweep's cases and its thread pool
+/// unwind without writing anything. The Python module asks for it on Ctrl-C.
+using StudyCancelled = optimizers::Cancelled;
+using optimizers::CancelRequested;
+using optimizers::ClearCancel;
+using optimizers::RequestCancel;
 
 /// A duration as a person reads it on a progress line: "0:07", "12:34", "1:02:03".
 std::string ClockText(double seconds);

@@ -347,7 +347,8 @@ std::vector<CaseRecord> RunPool(const Sweep& s, const std::vector<std::vector<js
         not_ok += r.status != "ok";
         records[k] = std::move(r);
         ++finished;
-      } catch (...) {  // the checkpoint or a case folder cannot be written: stop the sweep
+      } catch (...) {  // the checkpoint or a case folder cannot be written, or a cancellation
+                       // (StudyCancelled passes RunCase's handlers): stop the sweep
         const std::lock_guard<std::mutex> lock(m);
         if (!fatal) fatal = std::current_exception();
         next = pending.size();
@@ -358,7 +359,7 @@ std::vector<CaseRecord> RunPool(const Sweep& s, const std::vector<std::vector<js
   std::vector<std::thread> threads;
   const int n = std::max(1, std::min<int>(jobs, static_cast<int>(pending.size())));
   for (int t = 0; t < n && !pending.empty(); ++t) threads.emplace_back(worker);
-  {
+  try {
     Progress progress(label, quiet);
     std::unique_lock<std::mutex> lock(m);
     while (finished < pending.size() && !fatal) {
@@ -370,8 +371,12 @@ std::vector<CaseRecord> RunPool(const Sweep& s, const std::vector<std::vector<js
                           (bad ? ", " + std::to_string(bad) + " not ok" : ""));
       lock.lock();
     }
+  } catch (...) {  // a cancellation (Progress::Update): no new case starts, the running ones stop
+    const std::lock_guard<std::mutex> lock(m);
+    if (!fatal) fatal = std::current_exception();
+    next = pending.size();
   }
-  for (auto& t : threads) t.join();
+  for (auto& t : threads) t.join();  // never left joinable: the pool's threads end before it does
   if (fatal) std::rethrow_exception(fatal);
   return records;
 }
@@ -554,11 +559,12 @@ int Run(const Options& o, World& world) {
         throw std::runtime_error("the ranks returned " + std::to_string(records.size()) + " of " +
                                  std::to_string(cases.size()) + " cases");
       WriteMerged(s, cases, std::move(records), partial, out, not_ok, not_ok_text, summary_text);
-      std::cout << summary_text << std::flush;
+      if (o.summary) std::cout << summary_text << std::flush;
       if (not_ok > 0) {
-        std::cerr << "camopt: sweep finished; " << not_ok << " of " << cases.size()
-                  << " cases are not ok (see cases.csv):\n"
-                  << not_ok_text << (not_ok > 10 ? "  ...\n" : "");
+        if (o.summary)
+          std::cerr << "camopt: sweep finished; " << not_ok << " of " << cases.size()
+                    << " cases are not ok (see cases.csv):\n"
+                    << not_ok_text << (not_ok > 10 ? "  ...\n" : "");
         code = 3;
       }
       if (!o.quiet) std::cerr << "camopt: results written to " << out.string() << "\n";

@@ -92,6 +92,8 @@ struct Options {
   int jobs = 0;  ///< threads per rank; 0: the cores of this machine shared among its ranks
   bool dry_run = false, resume = false, quiet = false, case_outputs = false;
   double max_work_factor = 1.0;
+  /// Print the summary table and the not-ok cases (stdout, stderr); the Python module does not.
+  bool summary = true;
 };
 
 /// Runs the command; returns the process exit code (0 every case ok, 3 some case not ok, 2 bad

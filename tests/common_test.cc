@@ -1,5 +1,9 @@
 // Tests of the foundation: scalar helpers, study input errors, writers, the CLI contract.
 #include <array>
+#include <chrono>
+#include <filesystem>
+#include <thread>
+#include <type_traits>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -13,6 +17,7 @@
 #include "model/common/scalar.h"
 #include "studies/input.h"
 #include "studies/study.h"
+#include "studies/sweep.h"
 #include "studies/writers.h"
 #include "tests/test_util.h"
 
@@ -125,6 +130,56 @@ TEST(Progress, ObserverSeesEveryProgressEvenQuietAndIsThrottled) {
   // Removed: nothing more is seen.
   { camopt::studies::Progress p("after", true); p.Update(0.5); }
   EXPECT_EQ(seen.size(), 2u);
+}
+
+// The cooperative cancellation (studies/study.h): Progress::Update throws StudyCancelled, which
+// is no std::exception (handlers of errors let it through); a study run and a sweep's thread pool
+// unwind with it (no std::terminate from a joinable thread), and nothing is written.
+TEST(Cancel, ProgressUpdateThrowsStudyCancelledWhichIsNoStdException) {
+  static_assert(!std::is_base_of_v<std::exception, camopt::studies::StudyCancelled>);
+  camopt::studies::Progress p("cancelled", true);
+  p.Update(0.1);
+  camopt::studies::RequestCancel();
+  EXPECT_THROW(p.Update(0.2), camopt::studies::StudyCancelled);
+  camopt::studies::ClearCancel();
+  EXPECT_NO_THROW(p.Update(0.3));
+}
+
+TEST(Cancel, AStudyAndASweepUnwindAndWriteNothing) {
+  const auto dir = camopt::testing::TempDir("cancel");
+  nlohmann::json s = camopt::testing::Example("lcr_ii.json");
+  s["analysis"] = {{"angle_steps", 360}};
+  camopt::studies::RequestCancel();
+  EXPECT_THROW(camopt::studies::RunStudy(s, camopt::studies::RunContext("lcr_ii.json", true)),
+               camopt::studies::StudyCancelled);
+  camopt::studies::ClearCancel();
+  EXPECT_NO_THROW(camopt::studies::RunStudy(s, camopt::studies::RunContext("lcr_ii.json", true)));
+  // A sweep of eight cases on two threads, cancelled from another thread while it runs.
+  nlohmann::json base = camopt::testing::Example("cycloid_ltca_nnm_none.json");
+  base["analysis"] = {{"crank_angle_steps", 100}};  // about a second a case: running when cancelled
+  camopt::testing::WriteFile(dir / "base.json", base.dump());
+  nlohmann::json sweep = {{"sweep", "cancelled"},
+                          {"base", "base.json"},
+                          {"vary", {{{"path", "/load/torque_Nm"}, {"values", {100, 200, 300, 400, 500, 600, 700, 800}}}}},
+                          {"outputs", {"/max_contact_stress_MPa"}}};
+  camopt::testing::WriteFile(dir / "sweep.json", sweep.dump());
+  camopt::studies::sweep::Options o;
+  o.file = (dir / "sweep.json").string();
+  o.out = (dir / "out").string();
+  o.jobs = 2;
+  o.quiet = true;
+  o.summary = false;
+  std::thread canceller([] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    camopt::studies::RequestCancel();
+  });
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_THROW(camopt::studies::sweep::RunCommand(o), camopt::studies::StudyCancelled);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  canceller.join();
+  camopt::studies::ClearCancel();
+  EXPECT_LT(seconds, 5.0);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(Outputs, RejectsNonFiniteNumbers) {

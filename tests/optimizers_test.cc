@@ -9,6 +9,7 @@
 
 #include "model/lcr/cycle.h"
 #include "model/lcr/profile.h"
+#include "optimizers/cancel.h"
 #include "optimizers/ceres_fit.h"
 #include "optimizers/solver.h"
 #include "tests/optim_reference_problems.h"
@@ -90,6 +91,20 @@ TEST_P(EveryBackend, IterationLimitIsReported) {
   opt.max_evaluations = 2;
   const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
   EXPECT_EQ(r.status, SolverStatus::kIterationLimit) << r.message;
+}
+
+// A cancellation (optimizers/cancel.h) stops the backend at its next evaluation or iteration and
+// is thrown as Cancelled, not reported as a failed solve; cleared, the same solve runs again.
+TEST_P(EveryBackend, ACancellationIsThrownNotReportedAsAFailure) {
+  SolverOptions opt;
+  opt.backend = GetParam();
+  optimizers::RequestCancel();
+  EXPECT_THROW(optimizers::Solve(testing::RosenbrockOnDisk(), opt), optimizers::Cancelled);
+  optimizers::ClearCancel();
+  EXPECT_FALSE(optimizers::CancelRequested());
+  const auto [t, f] = testing::RosenbrockOnDiskOptimum();
+  const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
+  EXPECT_TRUE(r.ok()) << r.message;
 }
 
 TEST_P(EveryBackend, NonFiniteModelGivesNoDesign) {
