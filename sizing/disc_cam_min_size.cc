@@ -78,6 +78,13 @@ bool InsideGeometry(const dc::DiscCam& cam, const Grid& g) {
   return xi0 + g.s_min > 0.0 && xi0 + g.s_max < kPi;
 }
 
+// The kinetostatic contact force at a point: the translating follower's, or the oscillating arm's.
+template <typename T>
+T ContactForce(const DiscCamStressModel& m, const dc::CamPoint<T>& p) {
+  if (m.arm) return dc::OscillatingRollerLoadAt(p, *m.arm, T(m.omega_rad_per_s)).contact_force;
+  return dc::CamLoadAt(p, m.loads, T(m.omega_rad_per_s)).contact_force;
+}
+
 struct Context {
   DiscCamSizingSpec spec;
   DiscCamFastLimits fast;
@@ -118,9 +125,8 @@ void EvalRows(const Context& c, std::span<const T> x, std::span<T> y) {
     y[size_t(c.curvature_offset + i)] = p.pitch_curvature * (cam.roller_radius + margin);
     if (c.stress_offset > 0) {
       const DiscCamStressModel& m = *spec.stress;
-      const dc::CamLoad<T> load = dc::CamLoadAt(p, m.loads, T(m.omega_rad_per_s));
       const double s = c.fast.contact_stress_MPa;
-      y[size_t(c.stress_offset + i)] = load.contact_force * T(m.composite_modulus_MPa / (kPi * m.face_width_mm * s * s)) -
+      y[size_t(c.stress_offset + i)] = ContactForce(m, p) * T(m.composite_modulus_MPa / (kPi * m.face_width_mm * s * s)) -
                                        dc::RollerCamEffectiveRadius(p, cam.roller_radius);
     }
   }
@@ -196,8 +202,9 @@ Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLim
     throw std::invalid_argument("disc cam sizing: the base circle must be the first variable");
   const bool stress = std::isfinite(fast.contact_stress_MPa);
   if (stress && !spec.stress) throw std::invalid_argument("disc cam sizing: a stress limit needs the loads");
-  if (stress && oscillating)
-    throw std::invalid_argument("disc cam sizing: the contact stress needs translating loads (kinetostatics.h)");
+  if (stress && oscillating != spec.stress->arm.has_value())
+    throw std::invalid_argument(oscillating ? "disc cam sizing: the contact stress of an oscillating follower needs its arm loads"
+                                            : "disc cam sizing: the contact stress of a translating follower needs its loads");
   auto c = std::make_shared<Context>();
   c->spec = spec;
   c->fast = fast;
@@ -246,7 +253,7 @@ DiscCamCycleValues DiscCamCycle(const DiscCamSizingSpec& spec, const dc::DiscCam
   auto p0 = [&](double th) {
     const dc::CamPoint<double> p = dc::EvaluateCam(cam, th);
     const DiscCamStressModel& m = *spec.stress;
-    const double f = dc::CamLoadAt(p, m.loads, m.omega_rad_per_s).contact_force;
+    const double f = ContactForce(m, p);
     return dc::RollerCamContactStress(p, cam.roller_radius, f, m.face_width_mm, m.composite_modulus_MPa);
   };
   const size_t m = static_cast<size_t>(steps);

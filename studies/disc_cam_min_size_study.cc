@@ -166,10 +166,17 @@ Study Parse(const Node& root) {
   spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default;
   spec.limits.radius_margin_mm = s.base.limits.radius_margin_mm;
   if (s.base.limits.contact_stress_MPa) spec.limits.contact_stress_MPa = *s.base.limits.contact_stress_MPa;
-  if (s.base.dynamics && s.base.face_width_mm && s.base.material) {
+  if ((s.base.dynamics || s.base.arm_dynamics) && s.base.face_width_mm && s.base.material) {
+    // The translating follower's loads, or an oscillating follower's arm loads (disc_cam::Parse
+    // takes each for its follower only).
     objectives::DiscCamStressModel m;
-    m.loads = s.base.dynamics->loads;
-    m.omega_rad_per_s = dc::RadPerSecond(s.base.dynamics->speed_rpm);
+    if (s.base.dynamics) {
+      m.loads = s.base.dynamics->loads;
+      m.omega_rad_per_s = dc::RadPerSecond(s.base.dynamics->speed_rpm);
+    } else {
+      m.arm = s.base.arm_dynamics->loads;
+      m.omega_rad_per_s = dc::RadPerSecond(s.base.arm_dynamics->speed_rpm);
+    }
     m.face_width_mm = *s.base.face_width_mm;
     m.composite_modulus_MPa = s.base.material->composite_modulus_MPa();
     spec.stress = m;

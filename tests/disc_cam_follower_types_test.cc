@@ -402,7 +402,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"arm_face_stress_without_loads", kO, R"({"arm_dynamics": null})", "/limits/contact_stress_MPa",
                 "arm_dynamics"},
         BadCase{"translating_arm_dynamics", kF, R"({"arm_dynamics": {"speed_rpm": 100, "arm_inertia_kg_m2": 0.01}})",
-                "/arm_dynamics", "oscillating flat-faced follower only"},
+                "/arm_dynamics", "for oscillating followers (a pivoted arm) only"},
         BadCase{"translating_face_offset", kF, R"({"follower": {"face_offset_mm": 3}})", "/follower/face_offset_mm",
                 "unknown field"},
         BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",
