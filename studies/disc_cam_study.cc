@@ -1455,8 +1455,12 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
      NAN, false},
     {"undercut", "/undercut", ""},
+    // ρ's formula by the face's follower: translating ρ = r_b + S + S'', on an arm ρ = h + h_φφ
+    // (model/disc_cam/flat_faced.h, oscillating_flat_faced.h); each row shown for its own follower.
     {"smallest radius of curvature r_b + S + S'' (flat face)", "/flat_face/min_radius_of_curvature_mm", "mm",
-     "/flat_face/radius_margin_limit_mm", NAN, false},
+     "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_width_needed_centred_mm"},
+    {"smallest radius of curvature h + h_φφ (flat face on an arm)", "/flat_face/min_radius_of_curvature_mm", "mm",
+     "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_length_needed_mm"},
     {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
      "/flat_face/face_width_mm"},
     {"face length needed (flat face on an arm)", "/flat_face/face_length_needed_mm", "mm", "/flat_face/face_width_mm"},

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/disc_cam_study.h"
+#include "studies/report.h"
 #include "studies/study.h"
 #include "tests/test_util.h"
 
@@ -258,6 +259,24 @@ TEST(DiscCamOscillatingFlatFacedStudy, ProfileFaceLengthPressureAngleAndRadiusAg
   const Ran short_face = ParseAndRun(study);
   EXPECT_FALSE(short_face.out["flat_face"]["face_width_ok"].get<bool>());
   EXPECT_FALSE(short_face.out["limits_ok"].get<bool>());
+}
+
+// The report's headline of the smallest radius of curvature names the face's own formula: ρ = h + h_φφ
+// for the face on an arm, r_b + S + S'' for the translating face (each row only for its follower).
+TEST(DiscCamOscillatingFlatFacedStudy, ReportNamesTheRadiusFormulaOfTheFollower) {
+  auto labels = [](const std::string& example) {
+    const json file = Example(example);
+    const Ran ran = ParseAndRun(file);
+    std::string all;
+    for (const auto& row : studies::EvaluateHeadlines("disc_cam", file, ran.out).rows) all += row.label + "\n";
+    return all;
+  };
+  const std::string arm = labels("disc_cam_oscillating_flat_faced.json");
+  EXPECT_NE(arm.find("h + h_φφ (flat face on an arm)"), std::string::npos) << arm;
+  EXPECT_EQ(arm.find("r_b + S + S''"), std::string::npos) << arm;
+  const std::string translating = labels("disc_cam_flat_faced.json");
+  EXPECT_NE(translating.find("r_b + S + S'' (flat face)"), std::string::npos) << translating;
+  EXPECT_EQ(translating.find("h + h_φφ"), std::string::npos) << translating;
 }
 
 // The arm's loads at 300 rpm (J = 0.002 kg·m², k = 20 N·m/rad, M₀ = 3 N·m): the contact force from the
