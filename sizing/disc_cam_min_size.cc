@@ -70,7 +70,7 @@ void SetVariables(const DiscCamSizingSpec& spec, std::span<const T> x, dc::DiscC
 // (0, π) from O₃O₂ over the cycle (ξ₀ + S on the samples' range [s_min, s_max]), as CheckDesign.
 bool InsideGeometry(const dc::DiscCam& cam, const Grid& g) {
   const double r0 = cam.base_radius + cam.roller_radius;
-  if (!(r0 > 0.0 && cam.roller_radius > 0.0)) return false;
+  if (!(r0 > 0.0 && cam.roller_radius >= 0.0)) return false;  // r_f = 0: a knife edge
   if (cam.follower == dc::FollowerType::kTranslatingRoller) return std::abs(cam.offset) < r0 * (1 - 1e-9);
   const double f = cam.pivot_distance, l = cam.arm_length;
   if (!(f > 0.0 && l > 0.0 && std::abs(f - l) < r0 * (1 - 1e-9) && r0 < (f + l) * (1 - 1e-9))) return false;

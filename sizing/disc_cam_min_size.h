@@ -1,5 +1,5 @@
 // The smallest base circle of a disc cam with an offset translating or an oscillating roller
-// follower, for a given motion program, under the limits of the disc_cam verdict (docs/disc_cam.md
+// (or knife-edge: the roller model with r_f = 0, its profile the pitch curve) follower, for a given motion program, under the limits of the disc_cam verdict (docs/disc_cam.md
 // "Limits and verdict").
 //
 // Variables (any subset; the others keep the study's values): base_circle_radius_mm r_b (always a

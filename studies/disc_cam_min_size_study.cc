@@ -113,12 +113,18 @@ Study Parse(const Node& root) {
   }
   s.name = in.design.name;
   const dc::DiscCam& cam = s.base.cam;
-  if (s.base.contact != disc_cam::Study::Contact::kRoller)
+  if (s.base.contact == disc_cam::Study::Contact::kFlatFaced)
     root["follower"]["type"].FailWith(
-        "disc_cam_min_size sizes a roller follower (translating: variables base_circle_radius_mm, offset_mm, "
-        "roller_radius_mm; oscillating: base_circle_radius_mm, pivot_distance_mm, arm_length_mm, roller_radius_mm); "
-        "knife-edge and flat-faced followers are not sized: use follower.type \"translating_roller\" or "
-        "\"oscillating_roller\", or study \"disc_cam\" to analyse the design");
+        "disc_cam_min_size sizes a roller or knife-edge follower (translating: variables base_circle_radius_mm, "
+        "offset_mm, roller_radius_mm; oscillating: base_circle_radius_mm, pivot_distance_mm, arm_length_mm, "
+        "roller_radius_mm; a knife edge without roller_radius_mm); flat-faced followers are not sized: use "
+        "follower.type \"translating_roller\", \"oscillating_roller\" or a knife edge, or study \"disc_cam\" to "
+        "analyse the design");
+  // A knife edge is the roller model with r_f = 0 (its profile is the pitch curve): no roller to size.
+  const bool knife = s.base.contact == disc_cam::Study::Contact::kKnifeEdge;
+  if (knife && in.variables.roller_radius_mm)
+    root["variables"]["roller_radius_mm"].FailWith(
+        "not a variable of a knife-edge follower (it has no roller): remove it, or use a roller follower");
   const bool oscillating = cam.follower == dc::FollowerType::kOscillatingRoller;
   // The follower's own variables only: an offset for a translating, pivot and arm for an oscillating one.
   for (const auto& [key, given, other] :
@@ -163,7 +169,7 @@ Study Parse(const Node& root) {
   }
 
   spec.limits.pressure_angle_deg = s.base.limits.pressure_angle_deg;
-  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default;
+  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default && !knife;
   spec.limits.radius_margin_mm = s.base.limits.radius_margin_mm;
   if (s.base.limits.contact_stress_MPa) spec.limits.contact_stress_MPa = *s.base.limits.contact_stress_MPa;
   if ((s.base.dynamics || s.base.arm_dynamics) && s.base.face_width_mm && s.base.material) {
@@ -322,7 +328,7 @@ nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
   } else {
     a["follower"]["offset_mm"] = o.cam.offset;
   }
-  a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
+  if (s.base.contact == disc_cam::Study::Contact::kRoller) a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
   // Fields the sized design may no longer take (the cutter no larger than the roller, the bore
   // inside the base circle) are left out.
   if (a.contains("cutter_radius_mm") && a["cutter_radius_mm"].is_number() &&

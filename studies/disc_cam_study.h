@@ -233,8 +233,8 @@ struct Input {
     a->Visit("name", &name, Field().Desc("the design's name, in titles"));
     a->Visit("description", &description, Field().Desc("free text"));
     a->Visit("follower", &follower,
-             Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller follower "
-                                              "only (the other types are refused)"
+             Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller or knife-edge "
+                                              "follower (flat-faced followers are refused)"
                                             : "the follower"));
     a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
              Field().Required().Positive().Unit("mm").Desc(

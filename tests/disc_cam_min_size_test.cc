@@ -116,6 +116,41 @@ TEST(DiscCamMinSize, InLineBaseCircleMatchesTheClosedForm) {
   }
 }
 
+// A translating in-line knife edge is sized as the roller model with r_f = 0: its smallest base circle is
+// the closed form's prime circle (above), through both backends, and the pressure angle of the answer,
+// written here from the in-line relation tan φ = S'/(r_b + S) with the law's S, S' on 36 000 angles, meets
+// the limit and binds.
+TEST(DiscCamMinSize, InLineKnifeEdgeBaseCircleMatchesTheClosedForm) {
+  double rb[2] = {0, 0};
+  for (int b = 0; b < 2; ++b) {
+    json j = InLineStudy(b == 0 ? "ipopt" : "slsqp", 30);
+    j["follower"] = {{"type", "translating_knife_edge"}, {"offset_mm", 0}};
+    j["limits"] = {{"pressure_angle_deg", 30}};
+    const dcs::Result r = dcs::Run(ParseStudy(j), {"s.json", true});
+    const auto& o = r.outcome;
+    ASSERT_TRUE(o.converged) << o.result.message;
+    ASSERT_TRUE(o.verified) << r.blocking_message;
+    EXPECT_EQ(o.cam.roller_radius, 0.0);
+    rb[b] = o.cam.base_radius;
+    EXPECT_NEAR(o.cam.base_radius, ClosedFormPrimeRadius(24, 120 * kDegHere, 30 * kDegHere), 1e-4);
+    double worst = 0;
+    const double beta = 120 * kDegHere;
+    for (int i = 0; i < 36000; ++i) {
+      const double deg = i / 100.0;  // the rise 0–120°, the return 170–290°
+      if (!((deg < 120) || (deg >= 170 && deg < 290))) continue;
+      const bool ret = deg >= 170;
+      const double uu = ret ? (deg - 170) / 120 : deg / 120;
+      const double s = 24 * (uu - std::sin(2 * kPiHere * uu) / (2 * kPiHere));
+      const double v = 24 / beta * (1 - std::cos(2 * kPiHere * uu));
+      worst = std::max(worst, std::atan(v / (o.cam.base_radius + (ret ? 24 - s : s))) / kDegHere);
+    }
+    EXPECT_LE(worst, 30.0 + 1e-6);
+    EXPECT_GT(worst, 30.0 - 1e-4) << "the limit binds";
+    EXPECT_EQ(o.binding, std::vector<std::string>{"pressure_angle_deg"});
+  }
+  EXPECT_LE(std::abs(rb[0] - rb[1]), 1e-3 * rb[0]);
+}
+
 // Every row's exact derivative (ceres::Jet through model/disc_cam) against central differences,
 // with all three variables and the contact-stress rows.
 TEST(DiscCamMinSize, RowsHaveExactDerivatives) {
@@ -303,7 +338,13 @@ TEST(DiscCamMinSize, BadVariablesExitTwoWithThePath) {
   {
     json j = testing::Example("disc_cam_min_size_oscillating.json");
     j["follower"] = {{"type", "oscillating_knife_edge"}, {"pivot_distance_mm", 100}, {"arm_length_mm", 80}};
-    testing::ExpectStudyRejected(j, "dcms-osc-knife", "/follower/type", "knife-edge");
+    j["variables"]["roller_radius_mm"] = {4, 16};
+    testing::ExpectStudyRejected(j, "dcms-osc-knife", "/variables/roller_radius_mm", "not a variable of a knife-edge");
+  }
+  {
+    json j = Example();
+    j["follower"] = {{"type", "translating_flat_faced"}};
+    testing::ExpectStudyRejected(j, "dcms-flat", "/follower/type", "flat-faced followers are not sized");
   }
 }
 
