@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "model/disc_cam/disc_cam.h"
+#include "model/disc_cam/flat_faced.h"
 #include "model/disc_cam/kinetostatics.h"
 #include "objectives/problem.h"
 #include "objectives/verification.h"
@@ -90,6 +91,11 @@ struct DiscCamStressModel {
 
 struct DiscCamSizingSpec {
   disc_cam::DiscCam cam;  ///< a roller follower: the fixed values and the starts
+  /// A translating flat-faced follower (model/disc_cam/flat_faced.h; cam holds its base circle and
+  /// motion): the base circle is the only variable, the pressure angle is 0 (its rows are 0), the
+  /// curvature rows are 1 + (m − ρ)/max(1, |m|) ≤ 1 with ρ = r_b + S + S'' (ρ ≥ the margin m, linear in
+  /// r_b), and the stress rows F_y E*/(π w s²) − ρ ≤ 0 (a plane on the profile's osculating cylinder).
+  bool flat_face = false;
   /// The variables (base circle first, then any of offset or pivot distance and arm length, and
   /// roller radius), with bounds, start
   /// (within the bounds) and scale in their own units [mm].

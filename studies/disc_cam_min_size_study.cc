@@ -113,13 +113,22 @@ Study Parse(const Node& root) {
   }
   s.name = in.design.name;
   const dc::DiscCam& cam = s.base.cam;
-  if (s.base.contact == disc_cam::Study::Contact::kFlatFaced)
+  const bool flat = s.base.contact == disc_cam::Study::Contact::kFlatFaced;
+  if (flat && s.base.cam.follower == dc::FollowerType::kOscillatingRoller)
     root["follower"]["type"].FailWith(
         "disc_cam_min_size sizes a roller or knife-edge follower (translating: variables base_circle_radius_mm, "
         "offset_mm, roller_radius_mm; oscillating: base_circle_radius_mm, pivot_distance_mm, arm_length_mm, "
-        "roller_radius_mm; a knife edge without roller_radius_mm); flat-faced followers are not sized: use "
-        "follower.type \"translating_roller\", \"oscillating_roller\" or a knife edge, or study \"disc_cam\" to "
-        "analyse the design");
+        "roller_radius_mm; a knife edge without roller_radius_mm) or a translating flat face (base_circle_radius_mm "
+        "only); oscillating flat-faced followers are not sized: use \"translating_flat_faced\", a roller or a knife "
+        "edge, or study \"disc_cam\" to analyse the design");
+  // A translating flat face: its profile depends on the base circle alone (model/disc_cam/flat_faced.h).
+  if (flat)
+    for (const auto& [key, given] : {std::pair{"offset_mm", bool(in.variables.offset_mm)},
+                                     std::pair{"roller_radius_mm", bool(in.variables.roller_radius_mm)}})
+      if (given)
+        root["variables"][key].FailWith(
+            "not a variable of a translating flat-faced follower (its profile depends on the base circle alone): "
+            "size base_circle_radius_mm only");
   // A knife edge is the roller model with r_f = 0 (its profile is the pitch curve): no roller to size.
   const bool knife = s.base.contact == disc_cam::Study::Contact::kKnifeEdge;
   if (knife && in.variables.roller_radius_mm)
@@ -169,7 +178,8 @@ Study Parse(const Node& root) {
   }
 
   spec.limits.pressure_angle_deg = s.base.limits.pressure_angle_deg;
-  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default && !knife;
+  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default && !knife && !flat;
+  spec.flat_face = flat;
   spec.limits.radius_margin_mm = s.base.limits.radius_margin_mm;
   if (s.base.limits.contact_stress_MPa) spec.limits.contact_stress_MPa = *s.base.limits.contact_stress_MPa;
   if ((s.base.dynamics || s.base.arm_dynamics) && s.base.face_width_mm && s.base.material) {
@@ -248,11 +258,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
       b["pivot_distance_mm"] = Finite(o.cam.pivot_distance, "pivot distance");
       b["arm_length_mm"] = Finite(o.cam.arm_length, "arm length");
-    } else {
+    } else if (!s.spec.flat_face) {
       b["offset_mm"] = Finite(o.cam.offset, "offset");
     }
-    b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
-    b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
+    if (!s.spec.flat_face) {
+      b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
+      b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
+    }
     nlohmann::json at_bounds = nlohmann::json::array();
     for (size_t k = 0; k < s.spec.variables.size(); ++k) {
       const objectives::Variable& v = s.spec.variables[k];
@@ -325,7 +337,7 @@ nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
   if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
     a["follower"]["pivot_distance_mm"] = o.cam.pivot_distance;
     a["follower"]["arm_length_mm"] = o.cam.arm_length;
-  } else {
+  } else if (!s.spec.flat_face) {
     a["follower"]["offset_mm"] = o.cam.offset;
   }
   if (s.base.contact == disc_cam::Study::Contact::kRoller) a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
@@ -350,6 +362,29 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   // The best design over the accurate grid: pressure angle and the profile's radius of curvature.
   const int n = s.spec.angle_steps * s.spec.accurate_factor;
   const size_t m = static_cast<size_t>(n);
+  if (s.spec.flat_face) {
+    // The translating flat face: its profile's radius of curvature ρ = r_b + S + S'' against the margin.
+    std::vector<double> th(m), rho(m), s_mm(m);
+    for (int i = 0; i < n; ++i) {
+      const dc::FlatFacePoint<double> p = dc::EvaluateFlatFaced(o.cam.motion, o.cam.base_radius, 2 * kPi * i / n);
+      th[size_t(i)] = 360.0 * i / n;
+      rho[size_t(i)] = p.radius_of_curvature;
+      s_mm[size_t(i)] = p.s;
+    }
+    Table t;
+    t.Add("cam_angle_deg", th);
+    t.Add("follower_mm", s_mm);
+    t.Add("radius_of_curvature_mm", rho);
+    out.Add("series.csv", ToCsv(t));
+    PlotOptions po;
+    po.title = s.name + ": radius of curvature r_b + S + S'' of the smallest cam (base circle " +
+               Format(o.cam.base_radius, 5) + " mm)";
+    po.x_label = "cam angle [deg]";
+    po.y_label = "radius of curvature [mm]";
+    po.guides = {{"margin", objectives::RadiusMarginOf(s.spec, o.cam)}};
+    out.Add("radius_of_curvature.svg", SvgLinePlot({{"ρ", th, rho}}, po));
+    return;
+  }
   const bool oscillating = s.spec.cam.follower == dc::FollowerType::kOscillatingRoller;
   std::vector<double> th(m), phi(m), kappa(m), s_mm(m);
   for (int i = 0; i < n; ++i) {

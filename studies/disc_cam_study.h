@@ -234,7 +234,7 @@ struct Input {
     a->Visit("description", &description, Field().Desc("free text"));
     a->Visit("follower", &follower,
              Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller or knife-edge "
-                                              "follower (flat-faced followers are refused)"
+                                              "follower, or a translating flat face (an oscillating flat face is refused)"
                                             : "the follower"));
     a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
              Field().Required().Positive().Unit("mm").Desc(

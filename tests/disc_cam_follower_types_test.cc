@@ -405,7 +405,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "not a variable of a knife-edge"},
         BadCase{"min_size_flat", "disc_cam_min_size.json",
                 R"({"follower": {"type": "translating_flat_faced", "roller_radius_mm": null, "offset_mm": null}})",
-                "/follower/type", "flat-faced"},
+                "/variables/offset_mm", "base circle alone"},
         BadCase{"arm_face_arm_length", kO, R"({"follower": {"arm_length_mm": 80}})", "/follower/arm_length_mm",
                 "unknown field"},
         BadCase{"arm_face_without_pivot", kO, R"({"follower": {"pivot_distance_mm": null}})",
