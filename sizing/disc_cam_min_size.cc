@@ -68,14 +68,22 @@ void SetVariables(const DiscCamSizingSpec& spec, std::span<const T> x, dc::DiscC
 // Whether the follower touches the base circle and stays where the model holds: translating
 // |e| < r_b + r_f; oscillating |f − l| < r_b + r_f < f + l (eq. 11's ξ₀ defined) and the arm within
 // (0, π) from O₃O₂ over the cycle (ξ₀ + S on the samples' range [s_min, s_max]), as CheckDesign.
-bool InsideGeometry(const dc::DiscCam& cam, const Grid& g) {
+bool InsideGeometry(const dc::DiscCam& cam, const Grid& g, bool flat_face) {
+  if (flat_face) return cam.base_radius > 0.0;  // ρ is defined for any r_b; the rows say the rest
   const double r0 = cam.base_radius + cam.roller_radius;
-  if (!(r0 > 0.0 && cam.roller_radius > 0.0)) return false;
+  if (!(r0 > 0.0 && cam.roller_radius >= 0.0)) return false;  // r_f = 0: a knife edge
   if (cam.follower == dc::FollowerType::kTranslatingRoller) return std::abs(cam.offset) < r0 * (1 - 1e-9);
   const double f = cam.pivot_distance, l = cam.arm_length;
   if (!(f > 0.0 && l > 0.0 && std::abs(f - l) < r0 * (1 - 1e-9) && r0 < (f + l) * (1 - 1e-9))) return false;
   const double xi0 = dc::InitialFollowerCoordinate(cam);
   return xi0 + g.s_min > 0.0 && xi0 + g.s_max < kPi;
+}
+
+// The kinetostatic contact force at a point: the translating follower's, or the oscillating arm's.
+template <typename T>
+T ContactForce(const DiscCamStressModel& m, const dc::CamPoint<T>& p) {
+  if (m.arm) return dc::OscillatingRollerLoadAt(p, *m.arm, T(m.omega_rad_per_s)).contact_force;
+  return dc::CamLoadAt(p, m.loads, T(m.omega_rad_per_s)).contact_force;
 }
 
 struct Context {
@@ -100,7 +108,7 @@ void EvalRows(const Context& c, std::span<const T> x, std::span<T> y) {
     for (size_t k = 0; k < x.size(); ++k) xv[k] = Value(x[k]);
     SetVariables(spec, std::span<const double>(xv), values);
   }
-  if (!InsideGeometry(values, c.grid)) {
+  if (!InsideGeometry(values, c.grid, spec.flat_face)) {
     // Outside the geometry: finite rows far beyond their limits, zero derivatives.
     for (size_t k = 0; k < c.grid.rise.size(); ++k) y[size_t(c.rise_offset) + k] = T(90.0);
     for (size_t k = 0; k < c.grid.ret.size(); ++k) y[size_t(c.return_offset) + k] = T(90.0);
@@ -112,15 +120,31 @@ void EvalRows(const Context& c, std::span<const T> x, std::span<T> y) {
   const T margin = (spec.limits.radius_margin_is_roller ? cam.roller_radius : T(spec.limits.radius_margin_mm)) +
                    T(spec.limits.radius_margin_shift_mm + c.fast.radius_margin_extra_mm);
   std::vector<T> phi(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
+  if (spec.flat_face) {
+    // The translating flat face (model/disc_cam/flat_faced.h): φ = 0, ρ = r_b + S + S'' ≥ margin.
+    const double scale = std::max(1.0, std::abs(Value(margin)));
+    for (int i = 0; i < n; ++i) {
+      const dc::FlatFacePoint<T> p = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, T(c.grid.theta[size_t(i)]));
+      phi[size_t(i)] = T(0.0);
+      y[size_t(c.curvature_offset + i)] = T(1.0) + (margin - p.radius_of_curvature) / T(scale);
+      if (c.stress_offset > 0) {
+        const DiscCamStressModel& m = *spec.stress;
+        const double s = c.fast.contact_stress_MPa;
+        y[size_t(c.stress_offset + i)] =
+            dc::FlatFaceLoadAt(p, m.loads, T(m.omega_rad_per_s)).contact_force *
+                T(m.composite_modulus_MPa / (kPi * m.face_width_mm * s * s)) -
+            p.radius_of_curvature;
+      }
+    }
+  }
+  for (int i = 0; i < n && !spec.flat_face; ++i) {
     const dc::CamPoint<T> p = dc::EvaluateCam(cam, T(c.grid.theta[size_t(i)]));
     phi[size_t(i)] = p.pressure_angle / T(kDeg);
     y[size_t(c.curvature_offset + i)] = p.pitch_curvature * (cam.roller_radius + margin);
     if (c.stress_offset > 0) {
       const DiscCamStressModel& m = *spec.stress;
-      const dc::CamLoad<T> load = dc::CamLoadAt(p, m.loads, T(m.omega_rad_per_s));
       const double s = c.fast.contact_stress_MPa;
-      y[size_t(c.stress_offset + i)] = load.contact_force * T(m.composite_modulus_MPa / (kPi * m.face_width_mm * s * s)) -
+      y[size_t(c.stress_offset + i)] = ContactForce(m, p) * T(m.composite_modulus_MPa / (kPi * m.face_width_mm * s * s)) -
                                        dc::RollerCamEffectiveRadius(p, cam.roller_radius);
     }
   }
@@ -194,10 +218,13 @@ Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLim
   if (spec.which.size() != spec.variables.size() || spec.which.empty() ||
       spec.which.front() != DiscCamSizingVariable::kBaseCircle)
     throw std::invalid_argument("disc cam sizing: the base circle must be the first variable");
+  if (spec.flat_face && (oscillating || spec.which.size() != 1))
+    throw std::invalid_argument("disc cam sizing: a translating flat face has the base circle as its only variable");
   const bool stress = std::isfinite(fast.contact_stress_MPa);
   if (stress && !spec.stress) throw std::invalid_argument("disc cam sizing: a stress limit needs the loads");
-  if (stress && oscillating)
-    throw std::invalid_argument("disc cam sizing: the contact stress needs translating loads (kinetostatics.h)");
+  if (stress && oscillating != spec.stress->arm.has_value())
+    throw std::invalid_argument(oscillating ? "disc cam sizing: the contact stress of an oscillating follower needs its arm loads"
+                                            : "disc cam sizing: the contact stress of a translating follower needs its loads");
   auto c = std::make_shared<Context>();
   c->spec = spec;
   c->fast = fast;
@@ -231,7 +258,52 @@ Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLim
   return p;
 }
 
+// The translating flat face's cycle (model/disc_cam/flat_faced.h): φ = 0, ρ_min = min (r_b + S + S'')
+// refined as the roller's peaks are, the peak stress of the plane on ρ.
+DiscCamCycleValues FlatFaceCycle(const DiscCamSizingSpec& spec, const dc::DiscCam& cam, int steps, bool refine) {
+  DiscCamCycleValues out;
+  const double h = 2 * kPi / steps;
+  const bool stress = spec.stress && spec.stress->face_width_mm > 0 && spec.stress->composite_modulus_MPa > 0;
+  auto point = [&](double th) { return dc::EvaluateFlatFaced(cam.motion, cam.base_radius, th); };
+  auto neg_rho = [&](double th) { return -point(th).radius_of_curvature; };
+  auto p0 = [&](double th) {
+    const dc::FlatFacePoint<double> p = point(th);
+    const DiscCamStressModel& m = *spec.stress;
+    const double f = dc::FlatFaceLoadAt(p, m.loads, m.omega_rad_per_s).contact_force;
+    return dc::FlatFaceContactStress(p, f, m.face_width_mm, m.composite_modulus_MPa);
+  };
+  const size_t m = static_cast<size_t>(steps);
+  std::vector<double> r(m), s(m);
+  bool stress_nan = false;
+  for (int i = 0; i < steps; ++i) {
+    const dc::FlatFacePoint<double> p = point(i * h);
+    out.has_return = out.has_return || p.ds < 0.0;
+    r[size_t(i)] = -p.radius_of_curvature;
+    out.max_radial_dimension_mm = std::max(out.max_radial_dimension_mm, p.contact.norm());
+    if (stress) {
+      s[size_t(i)] = p0(i * h);
+      stress_nan = stress_nan || !std::isfinite(s[size_t(i)]);
+    }
+  }
+  double at = 0.0;
+  std::tie(out.min_radius_of_curvature_mm, at) = CycleMax(r, h, refine, neg_rho);
+  out.min_radius_of_curvature_mm = -out.min_radius_of_curvature_mm;
+  out.at_curvature_deg = at / kDeg;
+  out.max_pitch_curvature_per_mm = out.min_radius_of_curvature_mm > 0 ? 1.0 / out.min_radius_of_curvature_mm : kInf;
+  if (stress) {
+    out.stress_evaluated = true;
+    if (stress_nan) {
+      out.max_contact_stress_MPa = std::numeric_limits<double>::quiet_NaN();
+    } else {
+      std::tie(out.max_contact_stress_MPa, out.at_stress_deg) = CycleMax(s, h, refine, p0);
+      out.at_stress_deg /= kDeg;
+    }
+  }
+  return out;
+}
+
 DiscCamCycleValues DiscCamCycle(const DiscCamSizingSpec& spec, const dc::DiscCam& cam, int steps, bool refine) {
+  if (spec.flat_face) return FlatFaceCycle(spec, cam, steps, refine);
   DiscCamCycleValues out;
   const double h = 2 * kPi / steps;
   const bool stress = spec.stress && spec.stress->face_width_mm > 0 && spec.stress->composite_modulus_MPa > 0;
@@ -246,7 +318,7 @@ DiscCamCycleValues DiscCamCycle(const DiscCamSizingSpec& spec, const dc::DiscCam
   auto p0 = [&](double th) {
     const dc::CamPoint<double> p = dc::EvaluateCam(cam, th);
     const DiscCamStressModel& m = *spec.stress;
-    const double f = dc::CamLoadAt(p, m.loads, m.omega_rad_per_s).contact_force;
+    const double f = ContactForce(m, p);
     return dc::RollerCamContactStress(p, cam.roller_radius, f, m.face_width_mm, m.composite_modulus_MPa);
   };
   const size_t m = static_cast<size_t>(steps);
@@ -319,7 +391,7 @@ DiscCamAccurateCheck CheckDiscCamDesign(const DiscCamSizingSpec& spec, const dc:
   add("radius_margin_mm", "smallest convex radius of curvature of the profile", c.fast.min_radius_of_curvature_mm,
       c.dense.min_radius_of_curvature_mm, c.accurate.min_radius_of_curvature_mm, RadiusMarginOf(spec, cam), false);
   if (std::isfinite(spec.limits.contact_stress_MPa))
-    add("contact_stress_MPa", "roller on cam", c.fast.max_contact_stress_MPa, c.dense.max_contact_stress_MPa,
+    add("contact_stress_MPa", spec.flat_face ? "flat face on cam" : "roller on cam", c.fast.max_contact_stress_MPa, c.dense.max_contact_stress_MPa,
         c.accurate.max_contact_stress_MPa, spec.limits.contact_stress_MPa, true);
   return c;
 }

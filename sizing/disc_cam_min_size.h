@@ -1,5 +1,5 @@
 // The smallest base circle of a disc cam with an offset translating or an oscillating roller
-// follower, for a given motion program, under the limits of the disc_cam verdict (docs/disc_cam.md
+// (or knife-edge: the roller model with r_f = 0, its profile the pitch curve) follower, for a given motion program, under the limits of the disc_cam verdict (docs/disc_cam.md
 // "Limits and verdict").
 //
 // Variables (any subset; the others keep the study's values): base_circle_radius_mm r_b (always a
@@ -23,7 +23,8 @@
 //                           verdict says. Smooth through inflections, where 1/κ is not.
 //                           With the default margin (the roller radius) m = r_f moves with r_f.
 //   kDiscCamStress          F_c E*/(π w s²) − R' ≤ 0 [mm], with F_c the kinetostatic contact force
-//                           (model/disc_cam/kinetostatics.h) and R' = r_f (1 − r_f κ): for R' > 0
+//                           (model/disc_cam/kinetostatics.h: CamLoadAt translating,
+//                           OscillatingRollerLoadAt oscillating) and R' = r_f (1 − r_f κ): for R' > 0
 //                           and F_c > 0 the same as the Hertz peak p₀ = sqrt(F_c E*/(π w R')) ≤ s
 //                           (Johnson, Contact Mechanics eq. 4.45), without the division by R'
 //                           (R' ≤ 0 under load, an undercut profile, breaks the row). Only with a
@@ -31,7 +32,8 @@
 // A design outside the geometry (|e| ≥ r_b + r_f, or for an oscillating follower an arm that cannot
 // reach the base circle, |f − l| < r_b + r_f < f + l failing, or that leaves (0, π) from O₃O₂ over the
 // cycle) gives finite rows far beyond their limits with zero derivatives (SLSQP's line search backs
-// off). The contact-stress rows need translating loads (model/disc_cam/kinetostatics.h).
+// off). The contact-stress rows need the follower's loads: a translating follower's, or an
+// oscillating follower's arm loads (model/disc_cam/kinetostatics.h).
 //
 // Verification (objectives/verification.h, docs/optimization.md): the fast rows sample N angles;
 // the accurate model re-evaluates the design on accurate_factor·N angles and refines every local
@@ -50,6 +52,7 @@
 #include <vector>
 
 #include "model/disc_cam/disc_cam.h"
+#include "model/disc_cam/flat_faced.h"
 #include "model/disc_cam/kinetostatics.h"
 #include "objectives/problem.h"
 #include "objectives/verification.h"
@@ -76,9 +79,11 @@ struct DiscCamSizingLimits {
   double contact_stress_MPa = kInf;     ///< peak Hertz stress; needs DiscCamSizingSpec::stress
 };
 
-/// What the contact stress needs: the kinetostatic loads at one speed, the face width, E*.
+/// What the contact stress needs: the kinetostatic loads at one speed (a translating follower's
+/// loads, or an oscillating follower's arm loads), the face width, E*.
 struct DiscCamStressModel {
-  disc_cam::FollowerLoads loads;
+  disc_cam::FollowerLoads loads;           ///< translating
+  std::optional<disc_cam::ArmLoads> arm;   ///< oscillating: the arm's (OscillatingRollerLoadAt)
   double omega_rad_per_s = 0.0;
   double face_width_mm = 0.0;
   double composite_modulus_MPa = 0.0;
@@ -86,6 +91,11 @@ struct DiscCamStressModel {
 
 struct DiscCamSizingSpec {
   disc_cam::DiscCam cam;  ///< a roller follower: the fixed values and the starts
+  /// A translating flat-faced follower (model/disc_cam/flat_faced.h; cam holds its base circle and
+  /// motion): the base circle is the only variable, the pressure angle is 0 (its rows are 0), the
+  /// curvature rows are 1 + (m − ρ)/max(1, |m|) ≤ 1 with ρ = r_b + S + S'' (ρ ≥ the margin m, linear in
+  /// r_b), and the stress rows F_y E*/(π w s²) − ρ ≤ 0 (a plane on the profile's osculating cylinder).
+  bool flat_face = false;
   /// The variables (base circle first, then any of offset or pivot distance and arm length, and
   /// roller radius), with bounds, start
   /// (within the bounds) and scale in their own units [mm].
@@ -112,7 +122,7 @@ disc_cam::DiscCam DiscCamDesign(const DiscCamSizingSpec& spec, const std::vector
 double RadiusMarginOf(const DiscCamSizingSpec& spec, const disc_cam::DiscCam& cam);
 
 /// The sizing problem with the fast limits. @throws std::invalid_argument for a spec it cannot
-/// build (no base-circle variable, a stress limit without its loads or on an oscillating follower, an
+/// build (no base-circle variable, a stress limit without the follower's loads, an
 /// offset variable of an oscillating or a pivot or arm variable of a translating follower).
 Problem DiscCamSizingProblem(const DiscCamSizingSpec& spec, const DiscCamFastLimits& fast);
 

@@ -113,12 +113,27 @@ Study Parse(const Node& root) {
   }
   s.name = in.design.name;
   const dc::DiscCam& cam = s.base.cam;
-  if (s.base.contact != disc_cam::Study::Contact::kRoller)
+  const bool flat = s.base.contact == disc_cam::Study::Contact::kFlatFaced;
+  if (flat && s.base.cam.follower == dc::FollowerType::kOscillatingRoller)
     root["follower"]["type"].FailWith(
-        "disc_cam_min_size sizes a roller follower (translating: variables base_circle_radius_mm, offset_mm, "
-        "roller_radius_mm; oscillating: base_circle_radius_mm, pivot_distance_mm, arm_length_mm, roller_radius_mm); "
-        "knife-edge and flat-faced followers are not sized: use follower.type \"translating_roller\" or "
-        "\"oscillating_roller\", or study \"disc_cam\" to analyse the design");
+        "disc_cam_min_size sizes a roller or knife-edge follower (translating: variables base_circle_radius_mm, "
+        "offset_mm, roller_radius_mm; oscillating: base_circle_radius_mm, pivot_distance_mm, arm_length_mm, "
+        "roller_radius_mm; a knife edge without roller_radius_mm) or a translating flat face (base_circle_radius_mm "
+        "only); oscillating flat-faced followers are not sized: use \"translating_flat_faced\", a roller or a knife "
+        "edge, or study \"disc_cam\" to analyse the design");
+  // A translating flat face: its profile depends on the base circle alone (model/disc_cam/flat_faced.h).
+  if (flat)
+    for (const auto& [key, given] : {std::pair{"offset_mm", bool(in.variables.offset_mm)},
+                                     std::pair{"roller_radius_mm", bool(in.variables.roller_radius_mm)}})
+      if (given)
+        root["variables"][key].FailWith(
+            "not a variable of a translating flat-faced follower (its profile depends on the base circle alone): "
+            "size base_circle_radius_mm only");
+  // A knife edge is the roller model with r_f = 0 (its profile is the pitch curve): no roller to size.
+  const bool knife = s.base.contact == disc_cam::Study::Contact::kKnifeEdge;
+  if (knife && in.variables.roller_radius_mm)
+    root["variables"]["roller_radius_mm"].FailWith(
+        "not a variable of a knife-edge follower (it has no roller): remove it, or use a roller follower");
   const bool oscillating = cam.follower == dc::FollowerType::kOscillatingRoller;
   // The follower's own variables only: an offset for a translating, pivot and arm for an oscillating one.
   for (const auto& [key, given, other] :
@@ -163,13 +178,21 @@ Study Parse(const Node& root) {
   }
 
   spec.limits.pressure_angle_deg = s.base.limits.pressure_angle_deg;
-  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default;
+  spec.limits.radius_margin_is_roller = s.base.limits.radius_margin_default && !knife && !flat;
+  spec.flat_face = flat;
   spec.limits.radius_margin_mm = s.base.limits.radius_margin_mm;
   if (s.base.limits.contact_stress_MPa) spec.limits.contact_stress_MPa = *s.base.limits.contact_stress_MPa;
-  if (s.base.dynamics && s.base.face_width_mm && s.base.material) {
+  if ((s.base.dynamics || s.base.arm_dynamics) && s.base.face_width_mm && s.base.material) {
+    // The translating follower's loads, or an oscillating follower's arm loads (disc_cam::Parse
+    // takes each for its follower only).
     objectives::DiscCamStressModel m;
-    m.loads = s.base.dynamics->loads;
-    m.omega_rad_per_s = dc::RadPerSecond(s.base.dynamics->speed_rpm);
+    if (s.base.dynamics) {
+      m.loads = s.base.dynamics->loads;
+      m.omega_rad_per_s = dc::RadPerSecond(s.base.dynamics->speed_rpm);
+    } else {
+      m.arm = s.base.arm_dynamics->loads;
+      m.omega_rad_per_s = dc::RadPerSecond(s.base.arm_dynamics->speed_rpm);
+    }
     m.face_width_mm = *s.base.face_width_mm;
     m.composite_modulus_MPa = s.base.material->composite_modulus_MPa();
     spec.stress = m;
@@ -235,11 +258,13 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
       b["pivot_distance_mm"] = Finite(o.cam.pivot_distance, "pivot distance");
       b["arm_length_mm"] = Finite(o.cam.arm_length, "arm length");
-    } else {
+    } else if (!s.spec.flat_face) {
       b["offset_mm"] = Finite(o.cam.offset, "offset");
     }
-    b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
-    b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
+    if (!s.spec.flat_face) {
+      b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
+      b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
+    }
     nlohmann::json at_bounds = nlohmann::json::array();
     for (size_t k = 0; k < s.spec.variables.size(); ++k) {
       const objectives::Variable& v = s.spec.variables[k];
@@ -312,10 +337,10 @@ nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
   if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
     a["follower"]["pivot_distance_mm"] = o.cam.pivot_distance;
     a["follower"]["arm_length_mm"] = o.cam.arm_length;
-  } else {
+  } else if (!s.spec.flat_face) {
     a["follower"]["offset_mm"] = o.cam.offset;
   }
-  a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
+  if (s.base.contact == disc_cam::Study::Contact::kRoller) a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
   // Fields the sized design may no longer take (the cutter no larger than the roller, the bore
   // inside the base circle) are left out.
   if (a.contains("cutter_radius_mm") && a["cutter_radius_mm"].is_number() &&
@@ -337,6 +362,29 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   // The best design over the accurate grid: pressure angle and the profile's radius of curvature.
   const int n = s.spec.angle_steps * s.spec.accurate_factor;
   const size_t m = static_cast<size_t>(n);
+  if (s.spec.flat_face) {
+    // The translating flat face: its profile's radius of curvature ρ = r_b + S + S'' against the margin.
+    std::vector<double> th(m), rho(m), s_mm(m);
+    for (int i = 0; i < n; ++i) {
+      const dc::FlatFacePoint<double> p = dc::EvaluateFlatFaced(o.cam.motion, o.cam.base_radius, 2 * kPi * i / n);
+      th[size_t(i)] = 360.0 * i / n;
+      rho[size_t(i)] = p.radius_of_curvature;
+      s_mm[size_t(i)] = p.s;
+    }
+    Table t;
+    t.Add("cam_angle_deg", th);
+    t.Add("follower_mm", s_mm);
+    t.Add("radius_of_curvature_mm", rho);
+    out.Add("series.csv", ToCsv(t));
+    PlotOptions po;
+    po.title = s.name + ": radius of curvature r_b + S + S'' of the smallest cam (base circle " +
+               Format(o.cam.base_radius, 5) + " mm)";
+    po.x_label = "cam angle [deg]";
+    po.y_label = "radius of curvature [mm]";
+    po.guides = {{"margin", objectives::RadiusMarginOf(s.spec, o.cam)}};
+    out.Add("radius_of_curvature.svg", SvgLinePlot({{"ρ", th, rho}}, po));
+    return;
+  }
   const bool oscillating = s.spec.cam.follower == dc::FollowerType::kOscillatingRoller;
   std::vector<double> th(m), phi(m), kappa(m), s_mm(m);
   for (int i = 0; i < n; ++i) {

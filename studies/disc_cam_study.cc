@@ -153,11 +153,13 @@ nlohmann::ordered_json Input::SchemaRules() {
   // A knife edge: a point contact, no contact-stress limit.
   const oj knife = {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
                     {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}};
-  // The arm's loads: an oscillating flat face only.
-  const oj arm = {{"if", follower_is({"translating_roller", "oscillating_roller", "translating_knife_edge",
-                                      "oscillating_knife_edge", "translating_flat_faced"})},
+  // The arm's loads: oscillating followers only; their follower loads: translating followers only.
+  const oj arm = {{"if", follower_is({"translating_roller", "translating_knife_edge", "translating_flat_faced"})},
                   {"then", refuse("arm_dynamics")}};
-  return {{"allOf", oj::array({no_roller, knife, arm})}};
+  const oj translating_loads = {
+      {"if", follower_is({"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})},
+      {"then", refuse("dynamics")}};
+  return {{"allOf", oj::array({no_roller, knife, arm, translating_loads})}};
 }
 
 nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
@@ -277,9 +279,10 @@ Study Parse(const Node& root) {
           "flat-faced follower's arm takes \"arm_dynamics\" (its moment of inertia and the moments about its pivot)");
     if (oscillating)
       root["dynamics"].FailWith(
-          "the kinetostatic loads are implemented for translating followers only (an oscillating "
-          "arm needs its moment of inertia and the moments about its pivot): remove \"dynamics\" or use "
-          "follower.type \"translating_" + type.substr(std::string("oscillating_").size()) + "\"");
+          "the follower loads of \"dynamics\" (mass, spring force, load along a line) are for translating "
+          "followers only: an oscillating follower's arm takes \"arm_dynamics\" (its moment of inertia about the "
+          "pivot, spring rate and moments), or use follower.type \"translating_" +
+          type.substr(std::string("oscillating_").size()) + "\"");
     const Input::Dynamics& d = *in.dynamics;
     Study::Dynamics dyn;
     dyn.speed_rpm = d.speed_rpm;
@@ -298,10 +301,9 @@ Study Parse(const Node& root) {
     s.dynamics = dyn;
   }
   if (in.arm_dynamics) {
-    if (!(flat && oscillating))
-      root["arm_dynamics"].FailWith("the arm's loads are implemented for an oscillating flat-faced follower only: "
-                                    "remove \"arm_dynamics\"" +
-                                    std::string(oscillating ? "" : " (a translating follower takes \"dynamics\")"));
+    if (!oscillating)
+      root["arm_dynamics"].FailWith("the arm's loads are for oscillating followers (a pivoted arm) only: a translating "
+                                    "follower takes \"dynamics\" (mass, spring, load); remove \"arm_dynamics\"");
     Study::ArmDynamics a;
     a.speed_rpm = in.arm_dynamics->speed_rpm;
     a.loads.inertia_kg_m2 = in.arm_dynamics->arm_inertia_kg_m2;
@@ -319,7 +321,7 @@ Study Parse(const Node& root) {
     std::string missing;
     for (const auto& [absent, what] : {std::pair{!s.face_width_mm, "face_width_mm (the contact length of roller and cam)"},
                                        std::pair{!s.material, "material (youngs_modulus_GPa, poisson_ratio)"},
-                                       flat && oscillating
+                                       oscillating
                                            ? std::pair{!s.arm_dynamics, "arm_dynamics (the contact force: speed_rpm, "
                                                                         "arm_inertia_kg_m2, spring)"}
                                            : std::pair{!s.dynamics, "dynamics (the contact force: speed_rpm, "
@@ -418,7 +420,6 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
 void FinishLoads(const Study& s, Result::Loads& L) {
   const int n = static_cast<int>(L.contact_force_N.size());
   const dc::DiscCam& cam = s.cam;
-  const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
   const Grid g{n};  // arg max/min and angles over the grid
   const bool stress = L.stress_evaluated;
   const auto& f = L.contact_force_N;
@@ -437,7 +438,8 @@ void FinishLoads(const Study& s, Result::Loads& L) {
   // The follower on its own stiffness (model/disc_cam/follower_dynamics.h): the response at the
   // speed, and the lowest speed at which it leaves the cam, searched up to 1.5 times the larger
   // of the speed and the kinetostatic jump speed.
-  if (s.dynamics->follower_stiffness_N_per_mm) {
+  if (s.dynamics && s.dynamics->follower_stiffness_N_per_mm) {
+    const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
     dc::FollowerDynamicsInput fin;
     fin.motion = cam.motion;
     fin.loads = s.dynamics->loads;
@@ -573,6 +575,29 @@ Result Run(const Study& s, const RunContext& ctx) {
     }
     L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
     L.spring = dc::RequiredSpringOver(pts, s.dynamics->loads, dc::RadPerSecond(s.dynamics->speed_rpm));
+    FinishLoads(s, L);
+    r.loads = std::move(L);
+  }
+  // The arm's loads of an oscillating roller or knife edge (model/disc_cam/kinetostatics.h,
+  // OscillatingRollerLoadAt): the moment balance about the pivot, F_c = M/(n · dC/dξ).
+  if (s.arm_dynamics) {
+    Result::Loads L;
+    const double omega = dc::RadPerSecond(s.arm_dynamics->speed_rpm);
+    const bool stress = s.face_width_mm && s.material && s.contact == Study::Contact::kRoller;  // knife: a point
+    const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
+    L.stress_evaluated = stress;
+    for (int i = 0; i < n; ++i) {
+      const dc::ArmCamLoad<double> c = dc::OscillatingRollerLoadAt(pts[i], s.arm_dynamics->loads, omega);
+      L.contact_force_N.push_back(c.contact_force);
+      L.camshaft_torque_Nm.push_back(c.camshaft_torque * 1e-3);
+      if (stress) {
+        const double p = dc::RollerCamContactStress(pts[i], cam.roller_radius, c.contact_force, *s.face_width_mm, e_star);
+        if (!std::isfinite(p)) L.stress_finite = false;
+        L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
+      }
+    }
+    L.jump_speed_rpm = dc::Rpm(dc::ArmJumpSpeedOver(pts, s.arm_dynamics->loads));
+    L.spring = dc::ArmRequiredSpringOver(pts, s.arm_dynamics->loads, omega);
     FinishLoads(s, L);
     r.loads = std::move(L);
   }
@@ -995,7 +1020,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   };
   constexpr const char* kFaceCusp = "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)";
   if (r.loads && s.arm_dynamics) {
-    // The arm of an oscillating flat face: contact force M/ℓ, camshaft torque M S', jump speed, stress.
+    // The arm of an oscillating follower: contact force (M/ℓ on a flat face, M/(n · dC/dξ) on a roller),
+    // camshaft torque, jump speed, stress.
     const Result::Loads& L = *r.loads;
     const dc::ArmLoads& a = s.arm_dynamics->loads;
     nlohmann::json aj = {{"speed_rpm", s.arm_dynamics->speed_rpm},
@@ -1003,9 +1029,21 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                          {"spring_rate_N_m_per_rad", a.spring_rate_N_m_per_rad},
                          {"spring_preload_N_m", a.spring_preload_N_m},
                          {"external_moment_N_m", a.external_moment_N_m}};
-    loads_ok = add_extremes(L, aj, "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam");
+    if (!flat_arm) {
+      // What keeps the arm on the cam up to the speed: the smallest M₀ with this rate, the smallest
+      // rate with this M₀ (null: no rate does, the deficit is on the base circle).
+      aj["min_spring_preload_N_m"] = L.spring.min_preload_N;
+      aj["min_spring_rate_N_m_per_rad"] =
+          std::isfinite(L.spring.min_rate_N_per_mm) ? nlohmann::json(L.spring.min_rate_N_per_mm) : nlohmann::json(nullptr);
+    }
+    loads_ok = add_extremes(L, aj, flat_arm ? "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam"
+                                            : "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the roller off the cam");
     if (L.stress_evaluated) {
-      loads_ok = add_stress(L, aj, kFaceCusp) && loads_ok;
+      loads_ok = add_stress(L, aj, flat_arm ? kFaceCusp
+                                            : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
+                 loads_ok;
+    } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
+      j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
     } else if (s.face_width_mm || s.material) {
       j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
     }
@@ -1068,7 +1106,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
     j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
   } else if (s.face_width_mm || s.material) {
-    j["notes"].push_back(flat_arm ? "no contact force and no contact stress: they need \"arm_dynamics\" (speed, arm "
+    j["notes"].push_back(r.oscillating ? "no contact force and no contact stress: they need \"arm_dynamics\" (speed, arm "
                                     "inertia, spring)"
                                   : "no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
   }
@@ -1417,8 +1455,12 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
      NAN, false},
     {"undercut", "/undercut", ""},
+    // ρ's formula by the face's follower: translating ρ = r_b + S + S'', on an arm ρ = h + h_φφ
+    // (model/disc_cam/flat_faced.h, oscillating_flat_faced.h); each row shown for its own follower.
     {"smallest radius of curvature r_b + S + S'' (flat face)", "/flat_face/min_radius_of_curvature_mm", "mm",
-     "/flat_face/radius_margin_limit_mm", NAN, false},
+     "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_width_needed_centred_mm"},
+    {"smallest radius of curvature h + h_φφ (flat face on an arm)", "/flat_face/min_radius_of_curvature_mm", "mm",
+     "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_length_needed_mm"},
     {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
      "/flat_face/face_width_mm"},
     {"face length needed (flat face on an arm)", "/flat_face/face_length_needed_mm", "mm", "/flat_face/face_width_mm"},

@@ -156,8 +156,9 @@ struct Input {
                    "follower_stiffness_N_per_mm)"));
     }
   };
-  /// Kinetostatic loads on an oscillating flat-faced follower's arm at one cam speed
-  /// (model/disc_cam/oscillating_flat_faced.h).
+  /// Kinetostatic loads on an oscillating follower's arm at one cam speed (a flat face:
+  /// model/disc_cam/oscillating_flat_faced.h; a roller or knife edge: OscillatingRollerLoadAt in
+  /// model/disc_cam/kinetostatics.h).
   struct ArmDynamics {
     double speed_rpm = 0.0, arm_inertia_kg_m2 = 0.0, spring_rate_N_m_per_rad = 0.0, spring_preload_N_m = 0.0,
            external_moment_N_m = 0.0;
@@ -165,11 +166,11 @@ struct Input {
     void Serialize(Archive* a) {
       a->Visit("speed_rpm", &speed_rpm, Field().Required().Positive().Unit("rpm").Desc("n, the cam speed"));
       a->Visit("arm_inertia_kg_m2", &arm_inertia_kg_m2,
-               Field().Required().Positive().Unit("kg·m²").Desc("J, the arm's (and face's) moment of inertia about the pivot"));
+               Field().Required().Positive().Unit("kg·m²").Desc("J, the arm's (with its face or roller) moment of inertia about the pivot"));
       a->Visit("spring_rate_N_m_per_rad", &spring_rate_N_m_per_rad,
                Field().NonNegative().Unit("N·m/rad").Desc("k, the return spring's rate about the pivot"));
       a->Visit("spring_preload_N_m", &spring_preload_N_m,
-               Field().NonNegative().Unit("N·m").Desc("M₀, the spring's moment on the base circle, pressing the face on the cam"));
+               Field().NonNegative().Unit("N·m").Desc("M₀, the spring's moment on the base circle, pressing the arm onto the cam"));
       a->Visit("external_moment_N_m", &external_moment_N_m,
                Field().Unit("N·m").Desc("M_e, a constant moment pressing the arm onto the cam (negative: lifting it off)"));
     }
@@ -232,8 +233,8 @@ struct Input {
     a->Visit("name", &name, Field().Desc("the design's name, in titles"));
     a->Visit("description", &description, Field().Desc("free text"));
     a->Visit("follower", &follower,
-             Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller follower "
-                                              "only (the other types are refused)"
+             Field().Required().Desc(sizing ? "the start design's follower; a translating or oscillating roller or knife-edge "
+                                              "follower, or a translating flat face (an oscillating flat face is refused)"
                                             : "the follower"));
     a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
              Field().Required().Positive().Unit("mm").Desc(
@@ -255,11 +256,12 @@ struct Input {
     a->Visit("material", &material, Field().Desc("follower and cam (both), for the Hertz stress"));
     a->Visit("dynamics", &dynamics,
              Field().Desc("kinetostatic follower loads at one cam speed (docs/disc_cam.md 'Kinetostatic loads'); "
-                          "translating followers only"));
+                          "translating followers only (an oscillating one takes arm_dynamics)"));
     a->Visit("arm_dynamics", &arm_dynamics,
-             Field().Desc("kinetostatic loads on the arm of an oscillating flat-faced follower at one cam speed: "
-                          "contact force M/ℓ, camshaft torque M S', jump speed, contact stress (docs/disc_cam.md "
-                          "'Oscillating flat-faced follower')"));
+             Field().Desc("kinetostatic loads on the arm of an oscillating follower at one cam speed, from the moment "
+                          "balance about the pivot: contact force (M/ℓ on a flat face, M/(n · dC/dξ) on a roller or "
+                          "knife edge), camshaft torque, jump speed, contact stress (docs/disc_cam.md 'Oscillating "
+                          "flat-faced follower', 'Loads of an oscillating roller follower'); oscillating followers only"));
   }
   /// The geometry files' fields (after "analysis" in the file).
   template <typename Archive>
@@ -345,7 +347,7 @@ struct Study {
     int revolutions = 3;
   };
   std::optional<Dynamics> dynamics;
-  /// The arm's loads of an oscillating flat-faced follower ("arm_dynamics").
+  /// The arm's loads of an oscillating follower ("arm_dynamics").
   struct ArmDynamics {
     double speed_rpm = 0.0;
     camopt::disc_cam::ArmLoads loads;

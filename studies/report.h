@@ -33,6 +33,9 @@ struct Headline {
   bool upper_limit = true;
   /// The value's error estimate (a JSON pointer into result.json), shown as "± error".
   std::string error_pointer = "";
+  /// Shown only when this JSON pointer is in result.json ("": always): a label that holds for one
+  /// variant of a kind only (a formula of one follower type).
+  std::string only_with = "";
 };
 
 /// Registers the headlines of a kind's report; returns true so that it can initialise a static.

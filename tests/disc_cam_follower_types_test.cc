@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/disc_cam_study.h"
+#include "studies/report.h"
 #include "studies/study.h"
 #include "tests/test_util.h"
 
@@ -260,6 +261,24 @@ TEST(DiscCamOscillatingFlatFacedStudy, ProfileFaceLengthPressureAngleAndRadiusAg
   EXPECT_FALSE(short_face.out["limits_ok"].get<bool>());
 }
 
+// The report's headline of the smallest radius of curvature names the face's own formula: ρ = h + h_φφ
+// for the face on an arm, r_b + S + S'' for the translating face (each row only for its follower).
+TEST(DiscCamOscillatingFlatFacedStudy, ReportNamesTheRadiusFormulaOfTheFollower) {
+  auto labels = [](const std::string& example) {
+    const json file = Example(example);
+    const Ran ran = ParseAndRun(file);
+    std::string all;
+    for (const auto& row : studies::EvaluateHeadlines("disc_cam", file, ran.out).rows) all += row.label + "\n";
+    return all;
+  };
+  const std::string arm = labels("disc_cam_oscillating_flat_faced.json");
+  EXPECT_NE(arm.find("h + h_φφ (flat face on an arm)"), std::string::npos) << arm;
+  EXPECT_EQ(arm.find("r_b + S + S''"), std::string::npos) << arm;
+  const std::string translating = labels("disc_cam_flat_faced.json");
+  EXPECT_NE(translating.find("r_b + S + S'' (flat face)"), std::string::npos) << translating;
+  EXPECT_EQ(translating.find("h + h_φφ"), std::string::npos) << translating;
+}
+
 // The arm's loads at 300 rpm (J = 0.002 kg·m², k = 20 N·m/rad, M₀ = 3 N·m): the contact force from the
 // moment about the pivot written out here, M = J S'' ω² + k S + M₀ over the arm ℓ of the envelope built
 // above; the camshaft torque as the moment of that force about the cam centre, A × (F m) (not the power
@@ -381,11 +400,12 @@ INSTANTIATE_TEST_SUITE_P(
                     {"law": "dwell", "cam_angle_deg": 70}], "dynamics": {"speed_rpm": 100, "follower_mass_kg": 1}})",
                 "/dynamics", "translating followers only"},
         BadCase{"min_size_knife", "disc_cam_min_size.json",
-                R"({"follower": {"type": "translating_knife_edge", "roller_radius_mm": null}})", "/follower/type",
-                "knife-edge"},
+                R"({"follower": {"type": "translating_knife_edge", "roller_radius_mm": null},
+                    "variables": {"roller_radius_mm": [4, 16]}})", "/variables/roller_radius_mm",
+                "not a variable of a knife-edge"},
         BadCase{"min_size_flat", "disc_cam_min_size.json",
                 R"({"follower": {"type": "translating_flat_faced", "roller_radius_mm": null, "offset_mm": null}})",
-                "/follower/type", "flat-faced"},
+                "/variables/offset_mm", "base circle alone"},
         BadCase{"arm_face_arm_length", kO, R"({"follower": {"arm_length_mm": 80}})", "/follower/arm_length_mm",
                 "unknown field"},
         BadCase{"arm_face_without_pivot", kO, R"({"follower": {"pivot_distance_mm": null}})",
@@ -402,7 +422,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"arm_face_stress_without_loads", kO, R"({"arm_dynamics": null})", "/limits/contact_stress_MPa",
                 "arm_dynamics"},
         BadCase{"translating_arm_dynamics", kF, R"({"arm_dynamics": {"speed_rpm": 100, "arm_inertia_kg_m2": 0.01}})",
-                "/arm_dynamics", "oscillating flat-faced follower only"},
+                "/arm_dynamics", "for oscillating followers (a pivoted arm) only"},
         BadCase{"translating_face_offset", kF, R"({"follower": {"face_offset_mm": 3}})", "/follower/face_offset_mm",
                 "unknown field"},
         BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",

@@ -116,6 +116,105 @@ TEST(DiscCamMinSize, InLineBaseCircleMatchesTheClosedForm) {
   }
 }
 
+// A translating in-line knife edge is sized as the roller model with r_f = 0: its smallest base circle is
+// the closed form's prime circle (above), through both backends, and the pressure angle of the answer,
+// written here from the in-line relation tan φ = S'/(r_b + S) with the law's S, S' on 36 000 angles, meets
+// the limit and binds.
+TEST(DiscCamMinSize, InLineKnifeEdgeBaseCircleMatchesTheClosedForm) {
+  double rb[2] = {0, 0};
+  for (int b = 0; b < 2; ++b) {
+    json j = InLineStudy(b == 0 ? "ipopt" : "slsqp", 30);
+    j["follower"] = {{"type", "translating_knife_edge"}, {"offset_mm", 0}};
+    j["limits"] = {{"pressure_angle_deg", 30}};
+    const dcs::Result r = dcs::Run(ParseStudy(j), {"s.json", true});
+    const auto& o = r.outcome;
+    ASSERT_TRUE(o.converged) << o.result.message;
+    ASSERT_TRUE(o.verified) << r.blocking_message;
+    EXPECT_EQ(o.cam.roller_radius, 0.0);
+    rb[b] = o.cam.base_radius;
+    EXPECT_NEAR(o.cam.base_radius, ClosedFormPrimeRadius(24, 120 * kDegHere, 30 * kDegHere), 1e-4);
+    double worst = 0;
+    const double beta = 120 * kDegHere;
+    for (int i = 0; i < 36000; ++i) {
+      const double deg = i / 100.0;  // the rise 0–120°, the return 170–290°
+      if (!((deg < 120) || (deg >= 170 && deg < 290))) continue;
+      const bool ret = deg >= 170;
+      const double uu = ret ? (deg - 170) / 120 : deg / 120;
+      const double s = 24 * (uu - std::sin(2 * kPiHere * uu) / (2 * kPiHere));
+      const double v = 24 / beta * (1 - std::cos(2 * kPiHere * uu));
+      worst = std::max(worst, std::atan(v / (o.cam.base_radius + (ret ? 24 - s : s))) / kDegHere);
+    }
+    EXPECT_LE(worst, 30.0 + 1e-6);
+    EXPECT_GT(worst, 30.0 - 1e-4) << "the limit binds";
+    EXPECT_EQ(o.binding, std::vector<std::string>{"pressure_angle_deg"});
+  }
+  EXPECT_LE(std::abs(rb[0] - rb[1]), 1e-3 * rb[0]);
+}
+
+// A translating flat face's smallest base circle for convexity is r_b = max(−(S + S'')) + m (ρ = r_b + S + S''
+// ≥ m; Rothbart, Cam Design Handbook ch. 5), written here from the cycloidal law with 2e5 points per segment
+// and golden-section search: Ipopt and SLSQP reach it, and ρ of the answer on 36 000 angles (from the law)
+// is at least the margin and touches it. Its Jacobian (the base circle only) against central differences.
+TEST(DiscCamMinSize, FlatFaceBaseCircleMatchesTheConvexityClosedForm) {
+  const double h = 24, beta = 120 * kDegHere, margin = 5;
+  auto s_plus_a = [&](double th) {  // S + S'' of the program, from the law
+    auto rise = [&](double u) {
+      return h * (u - std::sin(2 * kPiHere * u) / (2 * kPiHere)) + 2 * kPiHere * h / (beta * beta) * std::sin(2 * kPiHere * u);
+    };
+    const double deg = th / kDegHere;
+    if (deg < 120) return rise(th / beta);
+    if (deg < 170) return h;
+    if (deg < 290) return h - rise((th - 170 * kDegHere) / beta);
+    return 0.0;
+  };
+  double worst = -1e300, arg = 0;
+  const int n = 400000;
+  for (int i = 0; i < n; ++i) {
+    const double th = 2 * kPiHere * i / n;
+    if (-s_plus_a(th) > worst) worst = -s_plus_a(th), arg = th;
+  }
+  double a = arg - 2 * kPiHere / n, b = arg + 2 * kPiHere / n;
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  for (int k = 0; k < 100; ++k) {
+    const double c = b - g * (b - a), d = a + g * (b - a);
+    if (-s_plus_a(c) >= -s_plus_a(d)) b = d; else a = c;
+  }
+  const double expected = -s_plus_a(0.5 * (a + b)) + margin;
+  EXPECT_GT(expected, margin) << "the law's S + S'' is negative on the return";
+  double rb[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    json j = InLineStudy(k == 0 ? "ipopt" : "slsqp", 30);
+    j["follower"] = {{"type", "translating_flat_faced"}};
+    j["limits"] = {{"radius_margin_mm", margin}};
+    const dcs::Study s = ParseStudy(j);
+    ASSERT_TRUE(s.spec.flat_face);
+    const dcs::Result r = dcs::Run(s, {"s.json", true});
+    const auto& o = r.outcome;
+    ASSERT_TRUE(o.converged) << o.result.message;
+    ASSERT_TRUE(o.verified) << r.blocking_message;
+    rb[k] = o.cam.base_radius;
+    EXPECT_NEAR(o.cam.base_radius, expected, 1e-5);
+    double rho_min = 1e300;
+    for (int i = 0; i < 36000; ++i) rho_min = std::min(rho_min, o.cam.base_radius + s_plus_a(2 * kPiHere * i / 36000));
+    EXPECT_GE(rho_min, margin - 1e-9);
+    EXPECT_LT(rho_min, margin + 1e-4) << "the margin binds";
+    EXPECT_EQ(o.binding, std::vector<std::string>{"radius_margin_mm"});
+    if (k == 0) {
+      const objectives::Problem p = objectives::DiscCamSizingProblem(s.spec, objectives::StudyFastLimits(s.spec));
+      for (double x : {20.0, 35.0}) {
+        testing::JacobianCheck check;
+        check.abs_tol_scales_with_value = true;
+        EXPECT_GT(testing::ExpectEvaluatorJacobianMatchesCentralDifferences(*p.evaluator, {x}, check), 0);
+      }
+    }
+  }
+  EXPECT_LE(std::abs(rb[0] - rb[1]), 1e-3 * rb[0]);
+  json bad = InLineStudy("ipopt", 30);
+  bad["follower"] = {{"type", "translating_flat_faced"}};
+  bad["variables"]["offset_mm"] = {-5, 5};
+  testing::ExpectStudyRejected(bad, "dcms-flat-offset", "/variables/offset_mm", "base circle alone");
+}
+
 // Every row's exact derivative (ceres::Jet through model/disc_cam) against central differences,
 // with all three variables and the contact-stress rows.
 TEST(DiscCamMinSize, RowsHaveExactDerivatives) {
@@ -303,7 +402,15 @@ TEST(DiscCamMinSize, BadVariablesExitTwoWithThePath) {
   {
     json j = testing::Example("disc_cam_min_size_oscillating.json");
     j["follower"] = {{"type", "oscillating_knife_edge"}, {"pivot_distance_mm", 100}, {"arm_length_mm", 80}};
-    testing::ExpectStudyRejected(j, "dcms-osc-knife", "/follower/type", "knife-edge");
+    j["variables"]["roller_radius_mm"] = {4, 16};
+    testing::ExpectStudyRejected(j, "dcms-osc-knife", "/variables/roller_radius_mm", "not a variable of a knife-edge");
+  }
+  {
+    json j = Example();
+    j["follower"] = {{"type", "oscillating_flat_faced"}, {"pivot_distance_mm", 100}};
+    j["motion"] = testing::Example("disc_cam_min_size_oscillating.json")["motion"];
+    j["variables"].erase("offset_mm");
+    testing::ExpectStudyRejected(j, "dcms-flat", "/follower/type", "oscillating flat-faced followers are not sized");
   }
 }
 

@@ -435,7 +435,6 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam", "/follower/", "unknown field", "the follower's fields by follower.type (offset_mm translating; "
      "pivot_distance_mm, arm_length_mm oscillating)"},
     {"disc_cam", "/follower/", "missing required field", "an oscillating follower needs pivot_distance_mm and arm_length_mm"},
-    {"disc_cam", "/dynamics", "translating followers only", "the kinetostatic loads need a translating follower"},
     {"disc_cam", "/limits/contact_stress_MPa", "cannot be checked without",
      "the contact-stress limit needs face_width_mm, material and dynamics"},
     {"disc_cam", "/dynamics", "cannot be checked without", "the contact-stress limit needs the dynamics"},
@@ -450,8 +449,8 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam_min_size", "/follower/", "missing required field",
      "an oscillating follower needs pivot_distance_mm and arm_length_mm"},
     {"disc_cam_min_size", "/dynamics", "translating followers only", "the kinetostatic loads need a translating follower"},
-    {"disc_cam_min_size", "/arm_dynamics", "oscillating flat-faced follower only",
-     "the arm's loads need an oscillating flat-faced follower (the sizing takes roller followers)"},
+    {"disc_cam_min_size", "/arm_dynamics", "for oscillating followers (a pivoted arm) only",
+     "the arm's loads need an oscillating follower (the generated cases add them to the translating start)"},
     {"disc_cam_min_size", "/variables/", "not a variable of",
      "the variables by follower.type (offset_mm translating; pivot_distance_mm, arm_length_mm oscillating)"},
     {"disc_cam_min_size", "/limits/contact_stress_MPa", "cannot be checked without",

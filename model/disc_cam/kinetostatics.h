@@ -130,6 +130,87 @@ SpringRequirement RequiredSpringOver(const std::vector<Point>& points, const Fol
   return r;
 }
 
+/// The loads on a follower arm about its pivot: moment of inertia about the pivot J [kg·m²], return
+/// spring rate k [N·m/rad] and its moment on the base circle M₀ [N·m], a constant moment M_e pressing
+/// the arm onto the cam [N·m] (oscillating followers; model/disc_cam/oscillating_flat_faced.h for a
+/// flat face, OscillatingRollerLoadAt below for a roller or knife edge).
+struct ArmLoads {
+  double inertia_kg_m2 = 0.0;
+  double spring_rate_N_m_per_rad = 0.0;
+  double spring_preload_N_m = 0.0;
+  double external_moment_N_m = 0.0;
+};
+
+/// The moment the cam must supply to the arm about its pivot [N·m]:
+///   M = J S'' ω² + k S + M₀ + M_e,
+/// S [rad] the arm's swing from the base circle (ξ − ξ₀ of Rzine et al. eq. 11), S'' [rad/rad²], ω
+/// [rad/s]: the arm's angular acceleration is ξ̈ = S'' ω² (ξ is measured from the frame line O₂O₃).
+template <typename T>
+T ArmMoment(const ArmLoads& a, const T& s, const T& d2s, const T& omega) {
+  return T(a.inertia_kg_m2) * d2s * omega * omega + T(a.spring_rate_N_m_per_rad) * s + T(a.spring_preload_N_m) +
+         T(a.external_moment_N_m);
+}
+
+/// The loads at one point of an oscillating roller (or knife-edge) follower cam.
+template <typename T>
+struct ArmCamLoad {
+  T moment;           ///< M [N·m], the cam's moment on the arm about the pivot
+  T contact_force;    ///< F_c [N] along the common normal (negative: the roller has left the cam)
+  T camshaft_torque;  ///< T = F_c (n × A) [N·mm], > 0 where the camshaft drives the arm
+};
+
+/// Kinetostatic loads of an oscillating roller follower at speed omega [rad/s] (rigid arm, no
+/// friction; Norton, Cam Design and Manufacturing Handbook ch. 8, the moment balance written about
+/// the arm's pivot O₃). The cam pushes the roller with F_c along the profile's normal n, whose line
+/// passes through the roller centre C, so by virtual work about the arm's angle ξ its moment about
+/// O₃ is F_c n · dC/dξ (dC/dξ = follower_dir, of length l, perpendicular to O₃C; n · dC/dξ =
+/// l cos φ with φ the pressure angle of eq. 12). The arm's moment balance J ξ̈ = F_c n · dC/dξ − (k S
+/// + M₀ + M_e) gives
+///   F_c = M / (n · dC/dξ),   M = J S'' ω² + k S + M₀ + M_e   (lengths in m).
+/// The camshaft torque is the contact force's moment about O₂, as for the translating follower;
+/// frictionless, it equals the power balance M S' (a test checks the two).
+template <typename T>
+ArmCamLoad<T> OscillatingRollerLoadAt(const CamPoint<T>& p, const ArmLoads& a, const T& omega) {
+  ArmCamLoad<T> out;
+  out.moment = ArmMoment(a, p.s, p.d2s, omega);
+  out.contact_force = out.moment / (p.normal.dot(p.follower_dir) * T(1e-3));
+  out.camshaft_torque = out.contact_force * Cross(p.normal, p.contact);
+  return out;
+}
+
+/// The lowest cam speed [rad/s] at which an arm's moment M (hence its contact force) first reaches
+/// zero: ω² = min over the points with S'' < 0 of (k S + M₀ + M_e)/(−J S''); 0 when the static
+/// moment is not positive somewhere, +infinity when the arm never decelerates. Any point with S, S''
+/// [rad] (a CamPoint of an oscillating roller).
+template <typename Point>
+double ArmJumpSpeedOver(const std::vector<Point>& points, const ArmLoads& a) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Point& p : points) {
+    const double hold = ArmMoment(a, p.s, 0.0, 0.0);
+    if (!(hold > 0.0)) return 0.0;
+    const double pull = -a.inertia_kg_m2 * p.d2s;  // per (rad/s)², away from the cam
+    if (pull > 0.0) best = std::min(best, hold / pull);
+  }
+  return std::sqrt(best);
+}
+
+/// The arm's spring that keeps contact at every speed up to omega [rad/s], as RequiredSpringOver
+/// with moments: the smallest M₀ [N·m] with the given rate, the smallest rate [N·m/rad] with the
+/// given M₀ (+infinity when the deficit is on the base circle).
+template <typename Point>
+SpringRequirement ArmRequiredSpringOver(const std::vector<Point>& points, const ArmLoads& a, double omega) {
+  SpringRequirement r;
+  for (const Point& p : points) {
+    const double fixed = std::min(0.0, a.inertia_kg_m2 * p.d2s * omega * omega) + a.external_moment_N_m;
+    r.min_preload_N = std::max(r.min_preload_N, -(fixed + a.spring_rate_N_m_per_rad * p.s));
+    const double deficit = -(fixed + a.spring_preload_N_m);
+    if (deficit > 0.0)
+      r.min_rate_N_per_mm = p.s > 0.0 ? std::max(r.min_rate_N_per_mm, deficit / p.s)
+                                      : std::numeric_limits<double>::infinity();
+  }
+  return r;
+}
+
 /// Effective radius R' = r_f (1 − r_f κ) of the roller on the cam profile [mm] (1/R' = 1/r_f + 1/ρ,
 /// ρ the profile radius, concave negative); ≤ 0 where the profile is undercut.
 template <typename T>

@@ -53,6 +53,7 @@
 #include "model/common/geometry.h"
 #include "model/common/scalar.h"
 #include "model/contact/hertz.h"
+#include "model/disc_cam/kinetostatics.h"
 #include "model/motion/motion_program.h"
 
 namespace camopt::disc_cam {
@@ -123,15 +124,6 @@ inline std::string CheckOscillatingFlatFaced(const OscillatingFlatFaced& c, int 
   }
   return "";
 }
-
-/// The arm's loads: moment of inertia about the pivot J [kg·m²], return spring rate k [N·m/rad] and
-/// its moment on the base circle M₀ [N·m], a constant moment M_e pressing the arm onto the cam [N·m].
-struct ArmLoads {
-  double inertia_kg_m2 = 0.0;
-  double spring_rate_N_m_per_rad = 0.0;
-  double spring_preload_N_m = 0.0;
-  double external_moment_N_m = 0.0;
-};
 
 /// The loads at one point at cam speed omega [rad/s] (derivation above).
 struct ArmLoad {
