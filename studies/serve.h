@@ -24,7 +24,7 @@ struct ServeOptions {
   std::string folder = ".";
   std::string host = "127.0.0.1";
   int port = 8765;      ///< 0: a free port chosen by the system
-  std::string web_dir;  ///< empty: <program folder>/web, else <program folder>/../share/camopt/web
+  std::string web_dir;  ///< empty: the folder "web" beside the program, else "../share/camopt/web" from it
 };
 
 /// Largest request body the studio reads (a study file is a few kB).
