@@ -491,7 +491,7 @@ CAMOPT_REGISTER_REPORT("disc_cam_min_size", {
      "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_rise_deg"},
     {"largest pressure angle, return (accurate)", "/best/accurate/pressure_angle_deg/max_return", "deg",
      "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_return_deg"},
-    {"smallest convex radius of curvature (ρ_pitch − r_roller)", "/best/accurate/min_radius_of_curvature_mm", "mm",
+    {"smallest convex radius of curvature (roller: ρ_pitch − r_roller; flat face: r_b + S + S'')", "/best/accurate/min_radius_of_curvature_mm", "mm",
      "/limits/radius_margin_mm", NAN, false, "/best/estimated_error/min_radius_of_curvature_mm"},
     {"largest contact stress (accurate)", "/best/accurate/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa",
      NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
