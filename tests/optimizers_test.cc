@@ -102,9 +102,12 @@ TEST_P(EveryBackend, ACancellationIsThrownNotReportedAsAFailure) {
   EXPECT_THROW(optimizers::Solve(testing::RosenbrockOnDisk(), opt), optimizers::Cancelled);
   optimizers::ClearCancel();
   EXPECT_FALSE(optimizers::CancelRequested());
+  // Cleared, the same solve runs to the optimum again.
   const auto [t, f] = testing::RosenbrockOnDiskOptimum();
   const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
   EXPECT_TRUE(r.ok()) << r.message;
+  EXPECT_NEAR(r.objective, f, 1e-4);
+  EXPECT_NEAR(r.x[0], std::cos(t), 1e-2);
 }
 
 TEST_P(EveryBackend, NonFiniteModelGivesNoDesign) {
