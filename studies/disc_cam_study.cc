@@ -555,16 +555,16 @@ Result Run(const Study& s, const RunContext& ctx) {
   r.undercut = std::find(undercut.begin(), undercut.end(), true) != undercut.end();
   r.undercut_cam_angle_deg = Intervals(undercut);
 
-  // Kinetostatic loads at the given speed (model/disc_cam/kinetostatics.h).
-  if (s.dynamics) {
+  // The loads over the cycle: contact force and camshaft torque at each point from `load_at`, the
+  // roller's Hertz stress where a roller, a face width and a material are given (a knife edge is a
+  // point); jump speed and spring from the kind of follower.
+  const auto loads_over = [&](auto load_at) {
     Result::Loads L;
-    const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
-    L.weight_N = s.dynamics->loads.weight_N;
-    const bool stress = s.face_width_mm && s.material && s.contact == Study::Contact::kRoller;  // knife: a point
+    const bool stress = s.face_width_mm && s.material && s.contact == Study::Contact::kRoller;
     const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
     L.stress_evaluated = stress;
     for (int i = 0; i < n; ++i) {
-      const dc::CamLoad<double> c = dc::CamLoadAt(pts[i], s.dynamics->loads, omega);
+      const auto c = load_at(pts[i]);
       L.contact_force_N.push_back(c.contact_force);
       L.camshaft_torque_Nm.push_back(c.camshaft_torque * 1e-3);
       if (stress) {
@@ -573,29 +573,24 @@ Result Run(const Study& s, const RunContext& ctx) {
         L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
       }
     }
+    return L;
+  };
+  // Kinetostatic loads at the given speed (model/disc_cam/kinetostatics.h).
+  if (s.dynamics) {
+    const double omega = dc::RadPerSecond(s.dynamics->speed_rpm);
+    Result::Loads L = loads_over([&](const CamPoint<double>& p) { return dc::CamLoadAt(p, s.dynamics->loads, omega); });
+    L.weight_N = s.dynamics->loads.weight_N;
     L.jump_speed_rpm = dc::Rpm(dc::JumpSpeed(pts, s.dynamics->loads));
-    L.spring = dc::RequiredSpringOver(pts, s.dynamics->loads, dc::RadPerSecond(s.dynamics->speed_rpm));
+    L.spring = dc::RequiredSpringOver(pts, s.dynamics->loads, omega);
     FinishLoads(s, L);
     r.loads = std::move(L);
   }
   // The arm's loads of an oscillating roller or knife edge (model/disc_cam/kinetostatics.h,
   // OscillatingRollerLoadAt): the moment balance about the pivot, F_c = M/(n · dC/dξ).
   if (s.arm_dynamics) {
-    Result::Loads L;
     const double omega = dc::RadPerSecond(s.arm_dynamics->speed_rpm);
-    const bool stress = s.face_width_mm && s.material && s.contact == Study::Contact::kRoller;  // knife: a point
-    const double e_star = stress ? s.material->composite_modulus_MPa() : 0.0;
-    L.stress_evaluated = stress;
-    for (int i = 0; i < n; ++i) {
-      const dc::ArmCamLoad<double> c = dc::OscillatingRollerLoadAt(pts[i], s.arm_dynamics->loads, omega);
-      L.contact_force_N.push_back(c.contact_force);
-      L.camshaft_torque_Nm.push_back(c.camshaft_torque * 1e-3);
-      if (stress) {
-        const double p = dc::RollerCamContactStress(pts[i], cam.roller_radius, c.contact_force, *s.face_width_mm, e_star);
-        if (!std::isfinite(p)) L.stress_finite = false;
-        L.contact_stress_MPa.push_back(std::isfinite(p) ? p : 0.0);
-      }
-    }
+    Result::Loads L = loads_over(
+        [&](const CamPoint<double>& p) { return dc::OscillatingRollerLoadAt(p, s.arm_dynamics->loads, omega); });
     L.jump_speed_rpm = dc::Rpm(dc::ArmJumpSpeedOver(pts, s.arm_dynamics->loads));
     L.spring = dc::ArmRequiredSpringOver(pts, s.arm_dynamics->loads, omega);
     FinishLoads(s, L);
