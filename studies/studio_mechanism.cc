@@ -4,8 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "model/common/geometry.h"
+#include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/tooth_profile.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/lcr/contact.h"
@@ -132,8 +134,10 @@ nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int poin
 // A cycloid drive at crank angle φ: the disc's tooth profile (model/cycloid/tooth_profile.h's
 // ToothProfile, the load-distribution paper's eqs. 1–4, with the profile modification) in the disc
 // frame, placed at its centre e u(φ) and turned by −φ/n2 (the inverse of RollerCentreInDisc), and
-// the pins standing at a u(2πi/n1). Geometry only: the pairs' pressures need the loaded contact
-// analysis of a run.
+// the pins standing at a u(2πi/n1). Each pin's force is the rigid-disc load sharing of
+// model/cycloid/bearing_loads.h's RigidRingPinLoads (F_i = T l_i / Σ l_k², Σ F_i l_i = T; Blanche &
+// Yang 1989) at the disc's torque: the nominal (unmodified) tooth's, since the modification's
+// clearance needs the loaded contact analysis of a run (its pressure maps).
 nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points) {
   const Node root(&study, "study", "");
   const cycloid_ltca::Study s = cycloid_ltca::Parse(root);
@@ -147,10 +151,18 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
     const Vec2<double> p = centre + Rotate(cycloid::ToothProfile(d, 2.0 * kPi * j / n).point, turn);
     profile.push_back({Round6(p.x()), Round6(p.y())});
   }
+  cycloid::Drive nominal = d;
+  nominal.delta_position_mm = 0.0;
+  nominal.delta_radius_mm = 0.0;
+  const double torque = s.disc_torque_Nmm();
+  std::vector<double> force(size_t(d.rollers), 0.0);
+  for (const auto& [i, f] : cycloid::RigidRingPinLoads(nominal, torque, crank)) force[size_t(i)] = f;
+  double max_force = 0;
   nlohmann::json pins = nlohmann::json::array();
   for (int i = 0; i < d.rollers; ++i) {
     const Vec2<double> o = d.roller_position_radius_mm * U(2.0 * kPi * i / d.rollers);
-    pins.push_back({{"x", o.x()}, {"y", o.y()}});
+    max_force = std::max(max_force, force[size_t(i)]);
+    pins.push_back({{"x", o.x()}, {"y", o.y()}, {"force_N", force[size_t(i)]}, {"loaded", force[size_t(i)] > 0}});
   }
   return {{"kind", "cycloid"},
           {"supported", true},
@@ -162,7 +174,11 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
           {"disc_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
           {"disc_rotation_deg", turn * 180.0 / kPi},
           {"profile_mm", profile},
-          {"pins", pins}};
+          {"pins", pins},
+          {"disc_torque_Nmm", torque},
+          {"max_pin_force_N", max_force},
+          {"pin_forces",
+           "rigid disc, nominal (unmodified) tooth: F_i = T l_i / sum of l_k^2 over the loaded flank"}};
 }
 
 }  // namespace

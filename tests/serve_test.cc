@@ -420,6 +420,37 @@ TEST(Serve, CycloidMechanismMatchesTheClosedForms) {
   }
 }
 
+// The pins' forces at crank 50° are the rigid disc's load sharing: every contact normal passes
+// through the pitch point I = n1 e u(φ) (Aronhold–Kennedy), pin i's arm about the disc centre is
+// l_i = (O_i − D) × unit(O_i − I); the loaded pins are those with l_i > 0, and their moment
+// Σ F_i l_i balances the disc's torque T (load.torque_Nm / discs) — computed here from the geometry.
+// The file's profile modification does not change them (nominal tooth, docs/studio.md).
+TEST(Serve, CycloidMechanismPinForcesBalanceTheTorque) {
+  const json study = json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json")));
+  const double phi = 50 * M_PI / 180, a = 90, e = 4.5;
+  const int n1 = 16;
+  const double torque = study["load"]["torque_Nm"].get<double>() * 1e3 / study.value("discs", 1);
+  const json m = camopt::studies::MechanismAt(study, 50.0, 400);
+  ASSERT_EQ(m["pins"].size(), size_t(n1));
+  EXPECT_NEAR(m["disc_torque_Nmm"].get<double>(), torque, 1e-9 * torque);
+  double moment = 0, largest = 0;
+  int loaded = 0;
+  for (int i = 0; i < n1; ++i) {
+    const double ox = a * std::cos(2 * M_PI * i / n1), oy = a * std::sin(2 * M_PI * i / n1);
+    const double nx = ox - n1 * e * std::cos(phi), ny = oy - n1 * e * std::sin(phi), nn = std::hypot(nx, ny);
+    const double arm = ((ox - e * std::cos(phi)) * ny - (oy - e * std::sin(phi)) * nx) / nn;
+    const double f = m["pins"][i]["force_N"].get<double>();
+    EXPECT_GE(f, 0.0) << "pin " << i;
+    if (arm <= 0) EXPECT_EQ(f, 0.0) << "pin " << i << " on the unloaded flank";
+    if (f > 0) ++loaded;
+    moment += f * arm;
+    largest = std::max(largest, f);
+  }
+  EXPECT_GT(loaded, 2);
+  EXPECT_NEAR(moment, torque, 1e-9 * torque);
+  EXPECT_EQ(m["max_pin_force_N"].get<double>(), largest);
+}
+
 // The disc cam with its translating roller follower drawn standing: at 145° (the dwell after the
 // 24 mm rise of disc_cam_translating.json) the roller centre is at (√((r_b + r_f)² − e²) + 24, e)
 // (Rzine et al. eq. 5 turned by −θ), the pressure angle atan(−e/L) (eq. 3 with dS/dθ = 0), and the

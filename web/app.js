@@ -533,16 +533,24 @@ function drawDiscCam(svg, data, study, angle) {
   $('#stress-legend').textContent = `roller coloured by |pressure angle|: yellow 0 → red ${limit}° (the limit); red dot: the contact point`;
 }
 
-// The cycloid disc on its pins (geometry: the pairs' pressures need a loaded run).
+// The cycloid disc on its pins, each pin coloured by its rigid-disc contact force.
 function drawCycloid(svg, data, angle) {
   const R = (data.roller_position_radius_mm + data.roller_radius_mm) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });
   g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.roller_position_radius_mm }));
   g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
-  data.pins.forEach((p, i) => g.append(svgEl('circle', {
-    class: 'roller', cx: p.x, cy: p.y, r: data.roller_radius_mm, fill: '#e0e0e0',
-    'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y })));
+  const maxForce = data.max_pin_force_N || 1;
+  data.pins.forEach((p, i) => {
+    const c = svgEl('circle', {
+      class: 'roller', cx: p.x, cy: p.y, r: data.roller_radius_mm,
+      fill: p.loaded ? stressColour(p.force_N, maxForce) : '#e0e0e0',
+      'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y, 'data-force': p.force_N });
+    const t = svgEl('title', {});
+    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N`;
+    c.append(t);
+    g.append(c);
+  });
   const c = data.disc_centre_mm;
   g.append(svgEl('circle', { cx: c[0], cy: c[1], r: R * 0.012, fill: '#23395d' }));
   g.append(svgEl('circle', { cx: 0, cy: 0, r: R * 0.008, fill: '#888' }));
@@ -553,7 +561,9 @@ function drawCycloid(svg, data, angle) {
   svg.dataset.angle = String(angle);
   $('#mechanism-note').textContent =
     `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°`;
-  $('#stress-legend').textContent = 'geometry only: the pairs\' pressures are in the run\'s pressure maps';
+  $('#stress-legend').textContent =
+    `pins coloured by contact force (rigid disc, nominal tooth, T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc): ` +
+    `yellow 0 → red ${maxForce.toFixed(0)} N; grey unloaded. The modified tooth's pressures are in the run's pressure maps`;
 }
 
 // ---- compare ----------------------------------------------------------------------------------
