@@ -263,6 +263,35 @@ class FftConvolver {
   FftConvolver(const FftConvolver&) = delete;
   FftConvolver& operator=(const FftConvolver&) = delete;
 
+  // The unscaled r2c spectrum (mxc × my) of the 2nx × 2ny real field value(jx, jy).
+  template <class Value>
+  std::vector<Complex> RealSpectrum(const Value& value) const {
+    double* wrapped = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
+    fftw_complex* spec = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
+    if (wrapped == nullptr || spec == nullptr) {
+      fftw_free(wrapped);
+      fftw_free(spec);
+      throw std::bad_alloc();
+    }
+    fftw_plan plan;
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      plan = fftw_plan_dft_r2c_2d(my_, mx_, wrapped, spec, FFTW_ESTIMATE);
+    }
+    for (int jy = 0; jy < my_; ++jy)
+      for (int jx = 0; jx < mx_; ++jx) wrapped[static_cast<size_t>(jy) * mx_ + jx] = value(jx, jy);
+    fftw_execute(plan);
+    const Complex* s = reinterpret_cast<const Complex*>(spec);
+    std::vector<Complex> out(s, s + static_cast<size_t>(mxc_) * my_);
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      fftw_destroy_plan(plan);
+    }
+    fftw_free(wrapped);
+    fftw_free(spec);
+    return out;
+  }
+
   Kernel MakeKernel(double dx, double dy) const {
     Kernel k;
     const double xi = 0.5 * dx, eta = 0.5 * dy;
@@ -279,40 +308,15 @@ class FftConvolver {
     k.self = k.table[static_cast<size_t>(ny_ - 1) * wx + (nx_ - 1)];
     // Wrapped kernel: offsets 0 … n−1 in the first half, −(n−1) … −1 in the second; the
     // middle index n is never reached by a product and holds 0.
-    double* wrapped = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
-    fftw_complex* spec = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
-    if (wrapped == nullptr || spec == nullptr) {
-      fftw_free(wrapped);
-      fftw_free(spec);
-      throw std::bad_alloc();
-    }
-    fftw_plan plan;
-    {
-      std::lock_guard<std::mutex> lock(PlannerMutex());
-      plan = fftw_plan_dft_r2c_2d(my_, mx_, wrapped, spec, FFTW_ESTIMATE);
-    }
-    for (int jy = 0; jy < my_; ++jy) {
+    const std::vector<Complex> spec = RealSpectrum([&](int jx, int jy) {
       const int oy = jy < ny_ ? jy : jy - my_;
-      for (int jx = 0; jx < mx_; ++jx) {
-        const int ox = jx < nx_ ? jx : jx - mx_;
-        const bool unused = jy == ny_ || jx == nx_;
-        wrapped[static_cast<size_t>(jy) * mx_ + jx] =
-            unused ? 0.0
-                   : k.table[static_cast<size_t>(oy + ny_ - 1) * wx + (ox + nx_ - 1)];
-      }
-    }
-    fftw_execute(plan);
-    const size_t n = static_cast<size_t>(mxc_) * my_;
-    k.spectrum.resize(n);
+      const int ox = jx < nx_ ? jx : jx - mx_;
+      const bool unused = jy == ny_ || jx == nx_;
+      return unused ? 0.0 : k.table[static_cast<size_t>(oy + ny_ - 1) * wx + (ox + nx_ - 1)];
+    });
     const double scale = 1.0 / (static_cast<double>(mx_) * my_);
-    const Complex* s = reinterpret_cast<const Complex*>(spec);
-    for (size_t i = 0; i < n; ++i) k.spectrum[i] = s[i] * scale;
-    {
-      std::lock_guard<std::mutex> lock(PlannerMutex());
-      fftw_destroy_plan(plan);
-    }
-    fftw_free(wrapped);
-    fftw_free(spec);
+    k.spectrum.resize(spec.size());
+    for (size_t i = 0; i < spec.size(); ++i) k.spectrum[i] = spec[i] * scale;
     return k;
   }
 
@@ -325,43 +329,21 @@ class FftConvolver {
   Kernel MakePeriodicInverse(double dx, double dy) const {
     Kernel k;
     const double xi = 0.5 * dx, eta = 0.5 * dy;
-    double* wrapped = fftw_alloc_real(static_cast<size_t>(mx_) * my_);
-    fftw_complex* spec = fftw_alloc_complex(static_cast<size_t>(mxc_) * my_);
-    if (wrapped == nullptr || spec == nullptr) {
-      fftw_free(wrapped);
-      fftw_free(spec);
-      throw std::bad_alloc();
-    }
-    fftw_plan plan;
-    {
-      std::lock_guard<std::mutex> lock(PlannerMutex());
-      plan = fftw_plan_dft_r2c_2d(my_, mx_, wrapped, spec, FFTW_ESTIMATE);
-    }
     // Even in both offsets: one quadrant evaluated, mirrored.
     std::vector<double> quadrant(static_cast<size_t>(nx_ + 1) * (ny_ + 1));
     for (int oy = 0; oy <= ny_; ++oy)
       for (int ox = 0; ox <= nx_; ++ox)
         quadrant[static_cast<size_t>(oy) * (nx_ + 1) + ox] = LoveInfluence(ox * dx, oy * dy, xi, eta);
-    for (int jy = 0; jy < my_; ++jy)
-      for (int jx = 0; jx < mx_; ++jx)
-        wrapped[static_cast<size_t>(jy) * mx_ + jx] =
-            quadrant[static_cast<size_t>(std::min(jy, my_ - jy)) * (nx_ + 1) + std::min(jx, mx_ - jx)];
-    fftw_execute(plan);
-    const size_t n = static_cast<size_t>(mxc_) * my_;
+    const std::vector<Complex> s = RealSpectrum([&](int jx, int jy) {
+      return quadrant[static_cast<size_t>(std::min(jy, my_ - jy)) * (nx_ + 1) + std::min(jx, mx_ - jx)];
+    });
     const double big_n = static_cast<double>(mx_) * my_;
-    const Complex* s = reinterpret_cast<const Complex*>(spec);
     bool positive = true;
-    for (size_t i = 0; i < n; ++i) positive = positive && s[i].real() > 0 && std::isfinite(s[i].real());
+    for (const Complex& c : s) positive = positive && c.real() > 0 && std::isfinite(c.real());
     if (positive) {
-      k.spectrum.resize(n);
-      for (size_t i = 0; i < n; ++i) k.spectrum[i] = Complex(1.0 / (s[i].real() * big_n), 0.0);
+      k.spectrum.resize(s.size());
+      for (size_t i = 0; i < s.size(); ++i) k.spectrum[i] = Complex(1.0 / (s[i].real() * big_n), 0.0);
     }
-    {
-      std::lock_guard<std::mutex> lock(PlannerMutex());
-      fftw_destroy_plan(plan);
-    }
-    fftw_free(wrapped);
-    fftw_free(spec);
     return k;
   }
 
