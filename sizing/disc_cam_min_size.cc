@@ -176,6 +176,20 @@ std::pair<double, double> CycleMax(const std::vector<double>& v, double h, bool 
   return {value, std::fmod(at + 2 * kPi, 2 * kPi)};
 }
 
+// The cycle's largest contact stress from the samples s (NaN when one sample is not finite), refined
+// on the continuous stress p0 as CycleMax does.
+template <typename F>
+void SetStressMax(DiscCamCycleValues& out, const std::vector<double>& s, bool stress_nan, double h, bool refine,
+                  const F& p0) {
+  out.stress_evaluated = true;
+  if (stress_nan) {
+    out.max_contact_stress_MPa = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  std::tie(out.max_contact_stress_MPa, out.at_stress_deg) = CycleMax(s, h, refine, p0);
+  out.at_stress_deg /= kDeg;
+}
+
 }  // namespace
 
 std::string DiscCamSizingVariableName(DiscCamSizingVariable v) {
@@ -290,15 +304,7 @@ DiscCamCycleValues FlatFaceCycle(const DiscCamSizingSpec& spec, const dc::DiscCa
   out.min_radius_of_curvature_mm = -out.min_radius_of_curvature_mm;
   out.at_curvature_deg = at / kDeg;
   out.max_pitch_curvature_per_mm = out.min_radius_of_curvature_mm > 0 ? 1.0 / out.min_radius_of_curvature_mm : kInf;
-  if (stress) {
-    out.stress_evaluated = true;
-    if (stress_nan) {
-      out.max_contact_stress_MPa = std::numeric_limits<double>::quiet_NaN();
-    } else {
-      std::tie(out.max_contact_stress_MPa, out.at_stress_deg) = CycleMax(s, h, refine, p0);
-      out.at_stress_deg /= kDeg;
-    }
-  }
+  if (stress) SetStressMax(out, s, stress_nan, h, refine, p0);
   return out;
 }
 
@@ -348,15 +354,7 @@ DiscCamCycleValues DiscCamCycle(const DiscCamSizingSpec& spec, const dc::DiscCam
   out.at_curvature_deg /= kDeg;
   out.min_radius_of_curvature_mm =
       out.max_pitch_curvature_per_mm > 0 ? 1.0 / out.max_pitch_curvature_per_mm - cam.roller_radius : kInf;
-  if (stress) {
-    out.stress_evaluated = true;
-    if (stress_nan) {
-      out.max_contact_stress_MPa = std::numeric_limits<double>::quiet_NaN();
-    } else {
-      std::tie(out.max_contact_stress_MPa, out.at_stress_deg) = CycleMax(s, h, refine, p0);
-      out.at_stress_deg /= kDeg;
-    }
-  }
+  if (stress) SetStressMax(out, s, stress_nan, h, refine, p0);
   return out;
 }
 
