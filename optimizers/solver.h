@@ -3,6 +3,7 @@
 // infinities, scaling, constraint splitting, gradients from the evaluator's Jacobian.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ enum class SolverStatus {
                     ///< about that end point only; a study reporting the best feasible point it saw
                     ///< may still have one — its own `feasible` says so)
   kIterationLimit,  ///< evaluation/iteration/time limit reached (design feasible or not: see violation)
+  kNotStationary,   ///< "not_stationary": the backend reported success at a feasible design where the
+                    ///< objective still falls inside the feasible set (optimizers/first_order.h), also
+                    ///< after one resumption from there
   kFailed,          ///< numerical failure or a non-finite model output; no design is reported
 };
 const char* ToString(SolverStatus status);
@@ -67,6 +71,9 @@ struct SolverResult {
   int value_evaluations = 0;    ///< model runs for values only (double)
   int gradient_evaluations = 0; ///< model runs with exact first derivatives (ceres::Jet)
   int iterations = 0;           ///< backend iterations where it reports them (Ipopt), else evaluations
+  /// First-order optimality residual at x (optimizers/first_order.h), computed for a converged
+  /// result; NaN otherwise.
+  double first_order_residual = std::numeric_limits<double>::quiet_NaN();
   bool ok() const { return status == SolverStatus::kConverged; }
 };
 

@@ -7,12 +7,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <Eigen/Dense>
 #include <ceres/jet.h>
 
 #include "model/cycloid/geometry_limits.h"
 #include "objectives/cycloid_fields.h"
 #include "objectives/sizing_driver.h"
+#include "optimizers/first_order.h"
 
 namespace camopt::objectives {
 
@@ -967,45 +967,6 @@ std::string LimitKeyOf(const std::string& block, bool at_lower) {
   return block;
 }
 
-// Lawson–Hanson non-negative least squares: min |A c − g| subject to c >= 0.
-Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& g) {
-  const int k = int(A.cols());
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(k);
-  std::vector<bool> passive(size_t(k), false);
-  const double tol = 1e-12 * std::max(1.0, A.norm() * g.norm());
-  for (int outer = 0; outer < 3 * k + 3; ++outer) {
-    const Eigen::VectorXd w = A.transpose() * (g - A * c);
-    int j = -1;
-    for (int i = 0; i < k; ++i)
-      if (!passive[size_t(i)] && w(i) > tol && (j < 0 || w(i) > w(j))) j = i;
-    if (j < 0) break;
-    passive[size_t(j)] = true;
-    for (int inner = 0; inner < 3 * k + 3; ++inner) {
-      std::vector<int> p;
-      for (int i = 0; i < k; ++i)
-        if (passive[size_t(i)]) p.push_back(i);
-      Eigen::MatrixXd Ap(A.rows(), Eigen::Index(p.size()));
-      for (size_t i = 0; i < p.size(); ++i) Ap.col(Eigen::Index(i)) = A.col(p[i]);
-      const Eigen::VectorXd sp = Ap.colPivHouseholderQr().solve(g);
-      Eigen::VectorXd s = Eigen::VectorXd::Zero(k);
-      for (size_t i = 0; i < p.size(); ++i) s(p[i]) = sp(Eigen::Index(i));
-      bool positive = true;
-      for (int i : p) positive = positive && s(i) > 0;
-      if (positive) {
-        c = s;
-        break;
-      }
-      double alpha = 1;
-      for (int i : p)
-        if (s(i) <= 0) alpha = std::min(alpha, c(i) / (c(i) - s(i)));
-      c += alpha * (s - c);
-      for (int i : p)
-        if (c(i) <= tol) passive[size_t(i)] = false, c(i) = 0;
-    }
-  }
-  return c;
-}
-
 // d(objective)/d(limit) at x from the KKT conditions of min f subject to the rows: with the
 // multipliers λ >= 0 of the active rows and bounds, ∇f = Σ −λ_i ∇g_i over rows at their upper
 // bound (and variables at theirs) + Σ λ_i ∇g_i over rows at their lower bound, solved for λ >= 0
@@ -1013,49 +974,12 @@ Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::V
 // of an upper bound and by +λ_i per unit of a lower one; the rows of one limit add up.
 std::map<std::string, double> LimitCosts(const Problem& p, const std::vector<double>& x) {
   std::map<std::string, double> out;
-  const int n = p.num_vars();
-  if (n == 0) return out;
-  const int m = p.evaluator->num_outputs();
-  std::vector<double> y(m), jac(size_t(m) * n);
-  p.evaluator->EvalWithJacobian(x, y, jac);
-  for (double v : jac)
-    if (!std::isfinite(v)) return out;
-  const int obj = p.evaluator->block(p.objective).offset;
-  struct Column {
-    int row;  // output index, or −1 − variable for a bound
-    double sign;
-    std::string key;
-  };
-  std::vector<Column> cols;
-  for (const ConstraintRow& r : ConstraintRows(p)) {
-    const double v = y[r.output_index];
-    const double tol = 1e-3 * r.scale;
-    const std::string block = r.name.substr(0, r.name.find('['));
-    if (std::isfinite(r.upper) && std::abs(v - r.upper) <= tol)
-      cols.push_back({r.output_index, -1.0, LimitKeyOf(block, false)});
-    else if (std::isfinite(r.lower) && std::abs(v - r.lower) <= tol)
-      cols.push_back({r.output_index, 1.0, LimitKeyOf(block, true)});
-  }
-  bool any_row = !cols.empty();
-  for (int j = 0; j < n; ++j) {
-    const Variable& v = p.variables[size_t(j)];
-    const double tol = 1e-6 * std::max(1.0, std::abs(v.scale));
-    if (std::abs(x[size_t(j)] - v.upper) <= tol) cols.push_back({-1 - j, -1.0, ""});
-    else if (std::abs(x[size_t(j)] - v.lower) <= tol) cols.push_back({-1 - j, 1.0, ""});
-  }
-  if (!any_row) return out;
-  Eigen::MatrixXd A(n, Eigen::Index(cols.size()));
-  Eigen::VectorXd g(n);
-  for (int j = 0; j < n; ++j) {
-    const double s = p.variables[size_t(j)].scale;  // d/d(x/s) = s d/dx
-    g(j) = s * jac[size_t(obj) * n + j];
-    for (size_t i = 0; i < cols.size(); ++i)
-      A(j, Eigen::Index(i)) = cols[i].row >= 0 ? cols[i].sign * s * jac[size_t(cols[i].row) * n + j]
-                                               : (cols[i].row == -1 - j ? cols[i].sign * s : 0.0);
-  }
-  const Eigen::VectorXd lambda = NonNegativeLeastSquares(A, g);
-  for (size_t i = 0; i < cols.size(); ++i)
-    if (cols[i].row >= 0) out[cols[i].key] += cols[i].sign * lambda(Eigen::Index(i));
+  if (p.num_vars() == 0) return out;
+  const optimizers::FirstOrderCheck kkt = optimizers::CheckFirstOrder(p, x);
+  if (!kkt.finite || !kkt.any_row) return out;
+  for (const optimizers::FirstOrderCheck::Active& a : kkt.active)
+    if (a.output_index >= 0)
+      out[LimitKeyOf(a.name.substr(0, a.name.find('[')), a.at_lower)] += (a.at_lower ? 1.0 : -1.0) * a.multiplier;
   return out;
 }
 

@@ -402,6 +402,8 @@ std::string RunStatus(const optimizers::SolverResult& solved) {
     case optimizers::SolverStatus::kIterationLimit: return "max_evaluations reached";
     case optimizers::SolverStatus::kFailed: return "optimizer stopped: " + solved.message;
     case optimizers::SolverStatus::kInfeasible: return "optimizer stopped at an infeasible point";
+    case optimizers::SolverStatus::kNotStationary:
+      return "optimizer stopped where the stress still falls inside the limits (not a first-order optimum)";
     case optimizers::SolverStatus::kConverged: break;
   }
   return "converged";

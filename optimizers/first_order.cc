@@ -1,0 +1,104 @@
+#include "optimizers/first_order.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+namespace camopt::optimizers {
+
+Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& g) {
+  const int k = int(A.cols());
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(k);
+  std::vector<bool> passive(size_t(k), false);
+  const double tol = 1e-12 * std::max(1.0, A.norm() * g.norm());
+  for (int outer = 0; outer < 3 * k + 3; ++outer) {
+    const Eigen::VectorXd w = A.transpose() * (g - A * c);
+    int j = -1;
+    for (int i = 0; i < k; ++i)
+      if (!passive[size_t(i)] && w(i) > tol && (j < 0 || w(i) > w(j))) j = i;
+    if (j < 0) break;
+    passive[size_t(j)] = true;
+    for (int inner = 0; inner < 3 * k + 3; ++inner) {
+      std::vector<int> p;
+      for (int i = 0; i < k; ++i)
+        if (passive[size_t(i)]) p.push_back(i);
+      Eigen::MatrixXd Ap(A.rows(), Eigen::Index(p.size()));
+      for (size_t i = 0; i < p.size(); ++i) Ap.col(Eigen::Index(i)) = A.col(p[i]);
+      const Eigen::VectorXd sp = Ap.colPivHouseholderQr().solve(g);
+      Eigen::VectorXd s = Eigen::VectorXd::Zero(k);
+      for (size_t i = 0; i < p.size(); ++i) s(p[i]) = sp(Eigen::Index(i));
+      bool positive = true;
+      for (int i : p) positive = positive && s(i) > 0;
+      if (positive) {
+        c = s;
+        break;
+      }
+      double alpha = 1;
+      for (int i : p)
+        if (s(i) <= 0) alpha = std::min(alpha, c(i) / (c(i) - s(i)));
+      c += alpha * (s - c);
+      for (int i : p)
+        if (c(i) <= tol) passive[size_t(i)] = false, c(i) = 0;
+    }
+  }
+  return c;
+}
+
+FirstOrderCheck CheckFirstOrder(const objectives::Problem& p, std::span<const double> x, double row_tolerance,
+                                double bound_tolerance) {
+  FirstOrderCheck out;
+  const int n = p.num_vars();
+  const int m = p.evaluator->num_outputs();
+  std::vector<double> y(static_cast<size_t>(m)), jac(static_cast<size_t>(m) * static_cast<size_t>(n));
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  for (double v : jac)
+    if (!std::isfinite(v)) {
+      out.residual = std::numeric_limits<double>::quiet_NaN();
+      return out;
+    }
+  out.finite = true;
+  const int obj = p.evaluator->block(p.objective).offset;
+  for (const objectives::ConstraintRow& r : objectives::ConstraintRows(p)) {
+    const double v = y[size_t(r.output_index)];
+    const double tol = row_tolerance * r.scale;
+    const bool at_upper = std::isfinite(r.upper) && std::abs(v - r.upper) <= tol;
+    const bool at_lower = std::isfinite(r.lower) && std::abs(v - r.lower) <= tol;
+    if (at_upper) out.active.push_back({r.output_index, false, r.name, 0.0});
+    // An equality (or a row whose two bounds are both near) takes a multiplier of either sign.
+    if (at_lower && (!at_upper || r.lower == r.upper)) out.active.push_back({r.output_index, true, r.name, 0.0});
+  }
+  out.any_row = !out.active.empty();
+  for (int j = 0; j < n; ++j) {
+    const objectives::Variable& v = p.variables[size_t(j)];
+    const double tol = bound_tolerance * std::max(1.0, std::abs(v.scale));
+    const bool at_upper = std::abs(x[size_t(j)] - v.upper) <= tol;
+    const bool at_lower = std::abs(x[size_t(j)] - v.lower) <= tol;
+    if (at_upper) out.active.push_back({-1 - j, false, v.name + " bound", 0.0});
+    if (at_lower && (!at_upper || v.lower == v.upper)) out.active.push_back({-1 - j, true, v.name + " bound", 0.0});
+  }
+  // In the scaled variables z = x / s (d/dz = s d/dx): ∇f = Σ_lower λ ∇g − Σ_upper λ ∇g, λ >= 0.
+  const double sense = p.maximize ? -1.0 : 1.0;
+  Eigen::MatrixXd A(n, Eigen::Index(out.active.size()));
+  Eigen::VectorXd g(n);
+  for (int j = 0; j < n; ++j) {
+    const double s = p.variables[size_t(j)].scale;
+    g(j) = sense * s * jac[size_t(obj) * size_t(n) + size_t(j)];
+    for (size_t i = 0; i < out.active.size(); ++i) {
+      const FirstOrderCheck::Active& a = out.active[i];
+      const double sign = a.at_lower ? 1.0 : -1.0;
+      A(j, Eigen::Index(i)) = a.output_index >= 0 ? sign * s * jac[size_t(a.output_index) * size_t(n) + size_t(j)]
+                                                  : (a.output_index == -1 - j ? sign * s : 0.0);
+    }
+  }
+  out.gradient_norm = g.norm();
+  if (out.gradient_norm == 0.0) return out;
+  const Eigen::VectorXd lambda =
+      out.active.empty() ? Eigen::VectorXd() : NonNegativeLeastSquares(A, g);
+  for (size_t i = 0; i < out.active.size(); ++i) out.active[i].multiplier = lambda(Eigen::Index(i));
+  out.residual = (out.active.empty() ? g : Eigen::VectorXd(g - A * lambda)).norm() / out.gradient_norm;
+  return out;
+}
+
+}  // namespace camopt::optimizers
