@@ -509,11 +509,27 @@ void Routes(httplib::Server& server, Studio& studio) {
       SendJson(res, {{"ok", false}, {"error", ErrorJson(e)}});
     }
   });
-  server.Post("/api/mechanism", [](const httplib::Request& req, httplib::Response& res) {
+  server.Post("/api/mechanism", [root](const httplib::Request& req, httplib::Response& res) {
     const double angle = req.has_param("angle") ? std::atof(req.get_param_value("angle").c_str()) : 0.0;
     const int points = req.has_param("points") ? std::atoi(req.get_param_value("points").c_str()) : 360;
     try {
-      SendJson(res, MechanismAt(ParseBodyStudy(req.body, "study"), angle, points));
+      const json study = ParseBodyStudy(req.body, "study");
+      // A sizing study with result=FOLDER (its run's output folder): the optimum that run wrote.
+      json optimum;
+      const std::string kind = study.is_object() && study.contains("study") && study["study"].is_string()
+                                   ? study["study"].get<std::string>()
+                                   : std::string();
+      if (req.has_param("result") && !SizingOptimumFile(kind).empty()) {
+        // The file itself resolved (its links followed) inside the folder; absent: not run yet.
+        const std::string rel = req.get_param_value("result") + "/" + SizingOptimumFile(kind);
+        const Resolved r = Resolve(root, rel, true);
+        std::error_code ec;
+        if (r.status != 200 && r.status != 404) return SendError(res, r.status, r.message);
+        if (r.status == 200 && fs::is_regular_file(r.path, ec))
+          optimum = ParseStudyText(ReadFileCapped(r.path.string(), size_t{64} << 20, "file"), rel,
+                                   CurrentInputLimits().max_depth);
+      }
+      SendJson(res, MechanismAt(study, angle, points, optimum));
     } catch (const StudyError& e) {
       SendJson(res, {{"error", ErrorJson(e)}}, 422);
     }

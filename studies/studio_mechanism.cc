@@ -15,6 +15,9 @@
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
 #include "studies/cycloid_ltca_study.h"
+#include "studies/cycloid_min_size_study.h"
+#include "studies/disc_cam_min_size_study.h"
+#include "studies/lcr_min_size_study.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/lcr_analysis_study.h"
@@ -181,9 +184,68 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
            "rigid disc, nominal (unmodified) tooth: F_i = T l_i / sum of l_k^2 over the loaded flank"}};
 }
 
+// One design of a sizing (an analysis study) drawn, or why it is not: a start outside the
+// analysis kind's checks (an LCR start with too little roller room) is said, not an error.
+nlohmann::json DrawnDesign(const nlohmann::json& analysis, double angle_deg, int points) {
+  try {
+    nlohmann::json d = MechanismAt(analysis, angle_deg, points);
+    d["study"] = analysis;
+    return d;
+  } catch (const StudyError& e) {
+    return {{"supported", false}, {"why", e.what()}, {"study", analysis}};
+  }
+}
+
+// A sizing study: its start design and the optimum of its run, each as the analysis study of the
+// same mechanism (the sizing kind's own Start…Study and its run's best_….json) drawn at one angle.
+nlohmann::json SizingAt(const std::string& kind, const nlohmann::json& study, const nlohmann::json& optimum,
+                        double angle_deg, int points) {
+  const Node root(&study, "study", "");
+  nlohmann::json start;
+  std::string why;
+  if (kind == "disc_cam_min_size") {
+    start = disc_cam_min_size::StartDiscCamStudy(disc_cam_min_size::Parse(root));
+  } else if (kind == "cycloid_min_size") {
+    start = cycloid_min_size::StartCycloidLtcaStudy(cycloid_min_size::Parse(root));
+  } else {
+    const lcr_min_size::Study s = lcr_min_size::Parse(root);
+    if (optimum.is_object()) {
+      try {
+        start = lcr_min_size::StartLcrAnalysisStudy(s, optimum);
+      } catch (const nlohmann::json::exception&) {
+        why = "the optimum's study has no reducer counts";
+      }
+    } else {
+      why = "the start depends on the lobe combination the run chooses: run the study";
+    }
+  }
+  nlohmann::json out = {{"kind", "sizing"},
+                        {"sizing_kind", kind},
+                        {"supported", true},
+                        {"input_angle_deg", angle_deg},
+                        {"analysis_kind", SizingAnalysisKind(kind)}};
+  out["start"] = start.is_object() ? DrawnDesign(start, angle_deg, points)
+                                   : nlohmann::json{{"supported", false}, {"why", why}};
+  out["optimum"] = optimum.is_object() ? DrawnDesign(optimum, angle_deg, points) : nlohmann::json(nullptr);
+  return out;
+}
+
 }  // namespace
 
-nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points) {
+std::string SizingAnalysisKind(const std::string& kind) {
+  if (kind == "lcr_min_size") return "lcr_analysis";
+  if (kind == "cycloid_min_size") return "cycloid_ltca";
+  if (kind == "disc_cam_min_size") return "disc_cam";
+  return "";
+}
+
+std::string SizingOptimumFile(const std::string& kind) {
+  const std::string a = SizingAnalysisKind(kind);
+  return a.empty() ? a : "best_" + a + ".json";
+}
+
+nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
+                           const nlohmann::json& optimum) {
   points = std::clamp(points, 36, 4000);
   if (!std::isfinite(input_angle_deg) || std::abs(input_angle_deg) > 1e6)
     throw StudyError("angle: expected a finite input angle in degrees within ±1e6, found " +
@@ -194,6 +256,7 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
   if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
   if (kind == "disc_cam") return DiscCamAt(study, input_angle_deg, points);
   if (kind == "cycloid_ltca") return CycloidAt(study, input_angle_deg, points);
+  if (!SizingAnalysisKind(kind).empty()) return SizingAt(kind, study, optimum, input_angle_deg, points);
   return {{"kind", kind}, {"supported", false}};
 }
 

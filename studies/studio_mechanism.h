@@ -3,6 +3,8 @@
 // are cheap, all from model/ functions (nothing here computes physics of its own).
 #pragma once
 
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 namespace camopt::studies {
@@ -25,8 +27,25 @@ namespace camopt::studies {
 /// A cycloid drive at crank angle θ: {"kind": "cycloid", "supported": true, "teeth", "rollers",
 ///   "roller_position_radius_mm", "roller_radius_mm", "disc_centre_mm", "disc_rotation_deg",
 ///   "profile_mm" (the disc, at least 48 points per pin), "pins": [{"x", "y"}, …]}.
+/// A sizing kind (lcr_min_size, cycloid_min_size, disc_cam_min_size), its start design against the
+/// optimum of its run, each drawn as its analysis kind (SizingAnalysisKind) is:
+///   {"kind": "sizing", "sizing_kind", "supported": true, "analysis_kind",
+///    "start": {…as the analysis kind…, "study": the start's analysis study},
+///    "optimum": {…, "study": `optimum`} or null without `optimum`}
+/// with `optimum` the run's best_….json (SizingOptimumFile); the start is the sizing kind's own
+/// (disc_cam_min_size::StartDiscCamStudy, cycloid_min_size::StartCycloidLtcaStudy,
+/// lcr_min_size::StartLcrAnalysisStudy: an LCR's start needs the optimum's lobe combination). A
+/// design the analysis kind refuses is {"supported": false, "why", "study"}.
 /// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
 /// would refuse (the kind's Parse).
-nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points);
+nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
+                           const nlohmann::json& optimum = nullptr);
+
+/// The analysis kind a sizing kind's designs are studies of ("disc_cam" for "disc_cam_min_size");
+/// empty for a kind that is not a sizing.
+std::string SizingAnalysisKind(const std::string& kind);
+/// The file a run of sizing kind `kind` writes its optimum to ("best_disc_cam.json"); empty
+/// for another kind.
+std::string SizingOptimumFile(const std::string& kind);
 
 }  // namespace camopt::studies

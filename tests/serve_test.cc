@@ -2,7 +2,9 @@
 // with cpp-httplib's client: what it refuses (other origins and hosts, paths outside its folder,
 // large bodies), validation with the CLI's message and JSON path, a run that writes the CLI's
 // output folder, and a client that disconnects mid-run (the run is cancelled, nothing left).
-// The mechanism endpoint's numbers (studies/studio_mechanism.h) against closed forms.
+// The mechanism endpoint's numbers (studies/studio_mechanism.h) against closed forms, the sizings'
+// start and optimum among them.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -392,8 +394,13 @@ TEST(Serve, MechanismMatchesTheClosedForms) {
     // The fixed turret's reaction T_A = T_o m_B n_A/(n_B m_A) (eq. 24).
     if (s == 0) EXPECT_NEAR(torque, 80000.0 * 14 * 13 / (15.0 * 12), 1e-6 * 80000.0);
   }
-  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("lcr_min_size.json"))), 0, 100);
+  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("globoidal_cam_paper.json"))), 0, 100);
   EXPECT_FALSE(other["supported"].get<bool>());
+  // A sizing without its run: an LCR's start needs the lobe combination the run chooses.
+  const json sizing = camopt::studies::MechanismAt(json::parse(ReadFile(Example("lcr_min_size.json"))), 0, 100);
+  EXPECT_EQ(sizing["kind"], "sizing");
+  EXPECT_FALSE(sizing["start"]["supported"].get<bool>());
+  EXPECT_TRUE(sizing["optimum"].is_null());
 }
 
 // The cycloid disc on its pins at crank 50°: pins at a u(2πi/n1), the disc's centre at e u(φ),
@@ -469,6 +476,124 @@ TEST(Serve, DiscCamMechanismMatchesTheClosedForms) {
   for (const json& p : m["profile_mm"])
     nearest = std::min(nearest, std::hypot(p[0].get<double>() - x, p[1].get<double>() - y));
   EXPECT_NEAR(nearest, rf, 2e-3);
+}
+
+// The smallest-base-circle sizing drawn through the server: disc_cam_min_size.json run by the CLI
+// into results/, then /api/mechanism?result=results/… draws its start (the file's design: r_b = 40,
+// e = 12, r_f = 10) under the run's optimum (r_b and e of result.json "best"). At 145° (the dwell
+// after the 24 mm rise) each roller centre is at (√((r_b + r_f)² − e²) + 24, e) (Rzine et al. eq. 5
+// turned by −θ), and each profile's smallest radius is its r_b (the low dwell is the base circle).
+TEST(Serve, SizingMechanismDrawsTheDiscCamOptimumAgainstItsStart) {
+  const fs::path dir = TempDir("serve-sizing");
+  fs::copy_file(Example("disc_cam_min_size.json"), dir / "disc_cam_min_size.json");
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY +
+                          " run disc_cam_min_size.json --quiet --out results/disc_cam_min_size > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const json best = json::parse(ReadFile(dir / "results" / "disc_cam_min_size" / "result.json"))["best"];
+  const double rb_opt = best["base_circle_radius_mm"], e_opt = best["offset_mm"], rf = 10;
+  ASSERT_LT(rb_opt, 39.0);  // the optimum is well below the start: the two drawings differ
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/mechanism?angle=145&points=4000&result=results/disc_cam_min_size",
+                    ReadFile(dir / "disc_cam_min_size.json"), "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  const json m = json::parse(res->body);
+  EXPECT_EQ(m["kind"], "sizing");
+  EXPECT_EQ(m["analysis_kind"], "disc_cam");
+  struct Want {
+    const char* which;
+    double rb, e;
+  };
+  for (const Want& w : {Want{"start", 40.0, 12.0}, Want{"optimum", rb_opt, e_opt}}) {
+    const json& d = m[w.which];
+    ASSERT_TRUE(d["supported"].get<bool>()) << w.which << " " << d.dump().substr(0, 300);
+    EXPECT_EQ(d["base_radius_mm"].get<double>(), w.rb) << w.which;
+    EXPECT_EQ(d["study"]["study"], "disc_cam");
+    const double L = std::sqrt((w.rb + rf) * (w.rb + rf) - w.e * w.e) + 24;
+    EXPECT_NEAR(d["roller_centre_mm"][0].get<double>(), L, 1e-5) << w.which;
+    EXPECT_NEAR(d["roller_centre_mm"][1].get<double>(), w.e, 1e-5) << w.which;
+    double smallest = 1e9;
+    for (const json& p : d["profile_mm"]) smallest = std::min(smallest, std::hypot(p[0].get<double>(), p[1].get<double>()));
+    EXPECT_NEAR(smallest, w.rb, 1e-5) << w.which;
+  }
+  // Without a run folder: the start alone; a folder outside the studio's is refused.
+  res = c.Post("/api/mechanism?angle=0&result=results/none", ReadFile(dir / "disc_cam_min_size.json"), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_TRUE(json::parse(res->body)["optimum"].is_null());
+  res = c.Post("/api/mechanism?angle=0&result=../..", ReadFile(dir / "disc_cam_min_size.json"), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 403) << res->body;
+}
+
+// The LCR sizing's optimum against its start: lcr_min_size.json run by the CLI, its
+// best_lcr_analysis.json given as the optimum. The optimum's rollers stand at r_d of result.json
+// "best" (input and output turrets, the output one turned by (1 − n_A m_B/(m_A n_B)) θ, paper
+// eq. 2); the start is the best combination's first smooth-phase start (objectives/lcr_sizing.h,
+// LcrStartingPoints: d_r the middle of its range, each turret 1.3 (d_r + gap)/(2 sin(π/n)) within
+// its range, e = 0.5 min(r_dA, r_dB)/max(n/(n − m)) within its range), computed here from that rule.
+TEST(Serve, SizingMechanismDrawsTheLcrOptimumAgainstItsStart) {
+  const fs::path dir = TempDir("serve-sizing-lcr");
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY + " run " +
+                          Example("lcr_min_size.json").string() + " --quiet --out out > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const json best = json::parse(ReadFile(dir / "out" / "result.json"))["best"];
+  const json optimum = json::parse(ReadFile(dir / "out" / "best_lcr_analysis.json"));
+  const json sizing = json::parse(ReadFile(Example("lcr_min_size.json")));
+  const double theta_deg = 30, theta = theta_deg * M_PI / 180;
+  const json m = camopt::studies::MechanismAt(sizing, theta_deg, 720, optimum);
+  ASSERT_EQ(m["kind"], "sizing");
+  const int ma = best["input"]["lobes"], na = best["input"]["rollers"], mb = best["output"]["lobes"],
+            nb = best["output"]["rollers"];
+  const double turn_out = (1.0 - double(na) * mb / (double(ma) * nb)) * theta;
+  // The start from the rule: d_r = (3 + 20)/2, gap 1 mm, turrets within [15, 80], e within [0.5, 5].
+  const double d0 = 11.5, gap = 1.0;
+  const auto turret = [&](int n) { return std::clamp(1.3 * (d0 + gap) / (2 * std::sin(M_PI / n)), 15.0, 80.0); };
+  const double k = std::max(double(na) / (na - ma), double(nb) / (nb - mb));
+  const double e0 = std::clamp(0.5 * std::min(turret(na), turret(nb)) / k, 0.5, 5.0);
+  struct Want {
+    const char* which;
+    double e, rd[2], d;
+  };
+  const Want wants[2] = {{"optimum", best["eccentricity_mm"], {best["input"]["turret_radius_mm"], best["output"]["turret_radius_mm"]},
+                          best["input"]["roller_diameter_mm"]},
+                         {"start", e0, {turret(na), turret(nb)}, d0}};
+  for (const Want& w : wants) {
+    const json& d = m[w.which];
+    ASSERT_TRUE(d["supported"].get<bool>()) << w.which << " " << d.dump().substr(0, 400);
+    EXPECT_NEAR(d["eccentricity_mm"].get<double>(), w.e, 1e-12 * w.e) << w.which;
+    for (int s = 0; s < 2; ++s) {
+      const json& side = d["sides"][s];
+      const int n = s == 0 ? na : nb;
+      ASSERT_EQ(side["rollers_at"].size(), size_t(n)) << w.which;
+      EXPECT_NEAR(side["roller_radius_mm"].get<double>(), w.d / 2, 1e-12 * w.d) << w.which;
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n + (s == 0 ? 0.0 : turn_out);
+        EXPECT_NEAR(side["rollers_at"][i]["x"].get<double>(), w.rd[s] * std::cos(a), 1e-9) << w.which << s << i;
+        EXPECT_NEAR(side["rollers_at"][i]["y"].get<double>(), w.rd[s] * std::sin(a), 1e-9) << w.which << s << i;
+      }
+    }
+  }
+}
+
+// The cycloid sizing's start (no run): the pins of cycloid_min_size_paper.json's start, 16 at
+// a = 90 mm of radius 7.2 mm, the disc at e u(φ) with e = 4.5 mm.
+TEST(Serve, SizingMechanismDrawsTheCycloidStart) {
+  const json m = camopt::studies::MechanismAt(json::parse(ReadFile(Example("cycloid_min_size_paper.json"))), 20.0, 400);
+  ASSERT_EQ(m["kind"], "sizing");
+  EXPECT_TRUE(m["optimum"].is_null());
+  const json& d = m["start"];
+  ASSERT_TRUE(d["supported"].get<bool>()) << d.dump().substr(0, 300);
+  ASSERT_EQ(d["pins"].size(), size_t(16));
+  EXPECT_EQ(d["roller_radius_mm"].get<double>(), 7.2);
+  for (int i = 0; i < 16; ++i) {
+    EXPECT_NEAR(d["pins"][i]["x"].get<double>(), 90 * std::cos(2 * M_PI * i / 16), 1e-9);
+    EXPECT_NEAR(d["pins"][i]["y"].get<double>(), 90 * std::sin(2 * M_PI * i / 16), 1e-9);
+  }
+  EXPECT_NEAR(d["disc_centre_mm"][0].get<double>(), 4.5 * std::cos(20 * M_PI / 180), 1e-6);
+  EXPECT_NEAR(d["disc_centre_mm"][1].get<double>(), 4.5 * std::sin(20 * M_PI / 180), 1e-6);
 }
 
 }  // namespace

@@ -444,16 +444,77 @@ async function drawMechanism(angle) {
   const study = state.mechanismStudy;
   if (!study) return;
   const seq = ++mechanismSeq;
-  const { status, data } = await api('POST', `/api/mechanism?angle=${angle}&points=720`, study);
+  // A sizing's optimum is the one its shown run wrote (result=its output folder).
+  const result = state.shown && state.shown.out ? `&result=${encodeURIComponent(state.shown.out)}` : '';
+  const { status, data } = await api('POST', `/api/mechanism?angle=${angle}&points=720${result}`, study);
   if (seq !== mechanismSeq) return;  // a newer angle is on its way
   if (status !== 200 || !data.supported) {
     $('#mechanism-note').textContent = status !== 200 ? data.error.message
-      : `the animation of ${data.kind || 'this kind'} is not there yet (LCR only)`;
+      : `the animation of ${data.kind || 'this kind'} is not there yet (${data.why || 'LCR, disc cam, cycloid and their sizings only'})`;
     svg.replaceChildren();
     return;
   }
+  if (data.kind === 'sizing') return drawSizing(svg, data, angle);
+  drawDesign(svg, data, study, angle);
+}
+
+function drawDesign(svg, data, study, angle) {
   if (data.kind === 'disc_cam') return drawDiscCam(svg, data, study, angle);
   if (data.kind === 'cycloid') return drawCycloid(svg, data, angle);
+  return drawLcr(svg, data, study, angle);
+}
+
+// The size a sizing changes, for the legend: the base circle, the turret radii or the pin circle.
+function sizeText(d) {
+  if (d.kind === 'disc_cam') return `base circle ${d.base_radius_mm.toFixed(3)} mm`;
+  if (d.kind === 'cycloid') return `pin circle ${d.roller_position_radius_mm.toFixed(3)} mm, pins ${d.roller_radius_mm.toFixed(3)} mm`;
+  return `turrets ${d.sides.map((s) => s.turret_radius_mm.toFixed(3)).join(' / ')} mm, e ${d.eccentricity_mm.toFixed(3)} mm`;
+}
+
+// A sizing: its start design grey and dashed under the optimum of its run, each drawn as its
+// analysis kind (the server's start and the run's best_*.json), in one frame holding both.
+function drawSizing(svg, data, angle) {
+  const drawn = [];
+  const why = [];
+  for (const which of ['start', 'optimum']) {
+    const d = data[which];
+    if (!d) { why.push('no optimum yet: run the study'); continue; }
+    if (!d.supported) { why.push(`${which}: ${d.why}`); continue; }
+    const tmp = document.createElementNS(SVG, 'svg');
+    drawDesign(tmp, d, d.study, angle);
+    const g = tmp.firstChild;
+    g.classList.add(`design-${which}`);
+    g.dataset.design = which;
+    drawn.push({ which, g, d, vb: tmp.getAttribute('viewBox').split(' ').map(Number),
+                 note: $('#mechanism-note').textContent, legend: $('#stress-legend').textContent });
+  }
+  if (!drawn.length) {
+    svg.replaceChildren();
+    $('#mechanism-note').textContent = why.join('; ');
+    return;
+  }
+  const x0 = Math.min(...drawn.map((v) => v.vb[0])), y0 = Math.min(...drawn.map((v) => v.vb[1]));
+  const x1 = Math.max(...drawn.map((v) => v.vb[0] + v.vb[2])), y1 = Math.max(...drawn.map((v) => v.vb[1] + v.vb[3]));
+  svg.setAttribute('viewBox', `${x0} ${y0} ${x1 - x0} ${y1 - y0}`);
+  svg.replaceChildren(...drawn.map((v) => v.g));  // the start first: under the optimum
+  svg.dataset.angle = String(angle);
+  const top = drawn[drawn.length - 1];
+  $('#mechanism-note').textContent = `${data.sizing_kind}, ${top.which}: ${top.note}${why.length ? ' (' + why.join('; ') + ')' : ''}`;
+  const legend = $('#stress-legend');
+  legend.replaceChildren();
+  for (const v of drawn) {
+    const row = document.createElement('div');
+    row.className = `legend-${v.which}`;
+    const key = svgEl('svg', { width: 28, height: 8 });
+    key.append(svgEl('line', { x1: 0, y1: 4, x2: 28, y2: 4, class: v.which === 'start' ? 'key-start' : 'key-optimum' }));
+    row.append(key, ` ${v.which === 'start' ? 'start design (grey, dashed)' : 'optimum of the run'}: ${sizeText(v.d)}`);
+    legend.append(row);
+  }
+  legend.append(Object.assign(document.createElement('div'), { textContent: top.legend }));
+}
+
+// The LCR: both cams, both turrets, the rollers coloured by their Hertz stress, the forces.
+function drawLcr(svg, data, study, angle) {
   const R = Math.max(...data.sides.map((s) => s.turret_radius_mm + s.roller_radius_mm)) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });

@@ -4,7 +4,9 @@
 // roller centres against the closed form (the centres on the turret circles, the output turret
 // turned by (1 − n_A m_B/(m_A n_B)) θ, paper eq. 2) and against the study's own series.csv (the
 // number of loaded rollers at that angle); a screenshot (SCREENSHOT; with SCREENSHOT_DIR set, also
-// copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png).
+// copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png);
+// then runs disc_cam_min_size.json and checks its optimum drawn over its start design (the two base
+// circles against the file's and result.json's, the outlines' smallest radii differing by the change).
 //   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
 // Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
 import { spawn } from 'node:child_process';
@@ -30,6 +32,7 @@ const check = (ok, what) => { if (!ok) { failures.push(what); console.log(`FAIL:
 const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'camopt-studio-'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_ii.json'), path.join(dir, 'lcr_ii.json'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_i.json'), path.join(dir, 'lcr_i.json'));
+fs.copyFileSync(path.join(sourceDir, 'studies/examples/disc_cam_min_size.json'), path.join(dir, 'disc_cam_min_size.json'));
 const study = JSON.parse(fs.readFileSync(path.join(dir, 'lcr_ii.json'), 'utf8'));
 
 const server = spawn(camopt, ['serve', '--port', '0', dir], { stdio: ['ignore', 'pipe', 'inherit'] });
@@ -155,6 +158,43 @@ try {
   const stressRow = compared.find((r) => r[0] === 'largest contact stress, input cam');
   check(stressRow && stressRow[1] !== stressRow[2], `the two runs differ: ${stressRow && stressRow.slice(1, 3).join(' vs ')}`);
   check(consoleErrors.length === 0, `still no console errors ${consoleErrors.join(' | ')}`);
+
+  // A sizing: disc_cam_min_size run, its optimum drawn over its start. The start's base circle is
+  // the file's (40 mm), the optimum's result.json's best; each profile's smallest radius is its
+  // base circle (the low dwell), so the two outlines differ there by the change of r_b.
+  await page.click('#files li[data-path="disc_cam_min_size.json"]');
+  await page.waitForSelector('body[data-loaded="disc_cam_min_size.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="3"]', { timeout: 120000 });
+  await page.click('#tabs button[data-tab="see"]').catch(() => {});
+  const sizingAngle = 200;
+  await page.$eval('#crank', (el, a) => { el.value = String(a); el.dispatchEvent(new Event('input')); }, sizingAngle);
+  await page.waitForSelector(`#mechanism[data-angle="${sizingAngle}"] g.design-optimum`, { timeout: 10000 });
+  const best = JSON.parse(fs.readFileSync(path.join(dir, 'results', 'disc_cam_min_size', 'result.json'), 'utf8')).best;
+  const outlines = await page.$$eval('#mechanism g[data-design]', (gs) => gs.map((g) => {
+    const base = g.querySelector('circle.turret');
+    const pts = g.querySelector('path.cam-input').getAttribute('d').slice(1).replace('Z', '').split('L')
+      .map((p) => p.split(',').map(Number));
+    return { which: g.dataset.design, base: Number(base.getAttribute('r')), smallest: Math.min(...pts.map((p) => Math.hypot(p[0], p[1]))) };
+  }));
+  const start = outlines.find((o) => o.which === 'start'), opt = outlines.find((o) => o.which === 'optimum');
+  check(start && opt, `two outlines drawn: ${outlines.map((o) => o.which).join(', ')}`);
+  if (start && opt) {
+    check(Math.abs(start.base - 40) < 1e-9 && Math.abs(opt.base - best.base_circle_radius_mm) < 1e-9,
+          `base circles ${start.base} (start, the file's 40) and ${opt.base} (optimum, result.json ${best.base_circle_radius_mm})`);
+    const drop = start.smallest - opt.smallest, want = 40 - best.base_circle_radius_mm;
+    check(Math.abs(drop - want) < 1e-4,
+          `the outlines' smallest radii differ by ${drop.toFixed(6)} mm, 40 − r_b,best = ${want.toFixed(6)} mm`);
+  }
+  const legend = await page.$eval('#stress-legend', (el) => el.textContent);
+  check(legend.includes('start design') && legend.includes('optimum of the run'), `legend: ${legend.slice(0, 160)}`);
+  check(consoleErrors.length === 0, `no console errors after the sizing ${consoleErrors.join(' | ')}`);
+  if (screenshot) {  // beside the first: the sizing's two designs (not copied to docs/images)
+    const sizingShot = path.join(path.dirname(screenshot), 'studio-sizing.png');
+    await page.screenshot({ path: sizingShot, fullPage: false });
+    console.log(`screenshot: ${sizingShot}`);
+  }
 } catch (e) {
   failures.push(String(e));
   console.log(`FAIL: ${e.stack || e}`);
