@@ -8,7 +8,9 @@
 
 #include "model/common/geometry.h"
 #include "model/cycloid/bearing_loads.h"
+#include "model/contact/hertz.h"
 #include "model/cycloid/tooth_profile.h"
+#include "model/cycloid/unloaded_tca.h"
 #include "model/disc_cam/disc_cam.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/forces.h"
@@ -139,8 +141,9 @@ nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int poin
 // frame, placed at its centre e u(φ) and turned by −φ/n2 (the inverse of RollerCentreInDisc), and
 // the pins standing at a u(2πi/n1). Each pin's force is the rigid-disc load sharing of
 // model/cycloid/bearing_loads.h's RigidRingPinLoads (F_i = T l_i / Σ l_k², Σ F_i l_i = T; Blanche &
-// Yang 1989) at the disc's torque: the nominal (unmodified) tooth's, since the modification's
-// clearance needs the loaded contact analysis of a run (its pressure maps).
+// Yang 1989) at the disc's torque, and the Hertz pressure of that force on each pair: the nominal
+// (unmodified) tooth's, since the modification's clearance needs the loaded contact analysis of a
+// run (its pressure maps).
 nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points) {
   const Node root(&study, "study", "");
   const cycloid_ltca::Study s = cycloid_ltca::Parse(root);
@@ -160,28 +163,54 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
   const double torque = s.disc_torque_Nmm();
   std::vector<double> force(size_t(d.rollers), 0.0);
   for (const auto& [i, f] : cycloid::RigidRingPinLoads(nominal, torque, crank)) force[size_t(i)] = f;
-  double max_force = 0;
+  // Each loaded pair's Hertz line-contact peak pressure p0 = sqrt(F E* / (π B R')) (Johnson eq.
+  // 4.45; model/contact/hertz.h), 1/R' = κ_tooth + 1/ρ at the nominal contact (the unloaded TCA's
+  // pair, model/cycloid/unloaded_tca.h: the tooth's signed curvature there), over the face width B;
+  // −1 where the pair is conformal (no Hertz contact). Needs the material: not for an unloaded-only study.
+  const double e_star = s.loaded ? s.material.composite_modulus_MPa() : 0.0;
+  double max_force = 0, max_pressure = 0;
   nlohmann::json pins = nlohmann::json::array();
   for (int i = 0; i < d.rollers; ++i) {
     const Vec2<double> o = d.roller_position_radius_mm * U(2.0 * kPi * i / d.rollers);
-    max_force = std::max(max_force, force[size_t(i)]);
-    pins.push_back({{"x", o.x()}, {"y", o.y()}, {"force_N", force[size_t(i)]}, {"loaded", force[size_t(i)] > 0}});
+    const double f = force[size_t(i)];
+    max_force = std::max(max_force, f);
+    nlohmann::json pin = {{"x", o.x()}, {"y", o.y()}, {"force_N", f}, {"loaded", f > 0}};
+    if (s.loaded) {
+      double pressure = 0.0;
+      if (f > 0) {
+        const cycloid::PairGeometry<double> g = cycloid::SolvePair<double>(nominal, i, crank);
+        const double curvature = g.profile_curvature + g.roller_curvature;  // 1/R'
+        pressure = curvature > 0 ? contact::LineContactPeakPressure(f, nominal.face_width_mm, 1.0 / curvature, e_star) : -1.0;
+        pin["effective_radius_mm"] = curvature > 0 ? nlohmann::json(1.0 / curvature) : nlohmann::json(nullptr);
+      }
+      pin["pressure_MPa"] = pressure;
+      max_pressure = std::max(max_pressure, pressure);
+    }
+    pins.push_back(pin);
   }
-  return {{"kind", "cycloid"},
-          {"supported", true},
-          {"input_angle_deg", crank_deg},
-          {"teeth", d.teeth},
-          {"rollers", d.rollers},
-          {"roller_position_radius_mm", d.roller_position_radius_mm},
-          {"roller_radius_mm", d.roller_radius_mm},
-          {"disc_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
-          {"disc_rotation_deg", turn * 180.0 / kPi},
-          {"profile_mm", profile},
-          {"pins", pins},
-          {"disc_torque_Nmm", torque},
-          {"max_pin_force_N", max_force},
-          {"pin_forces",
-           "rigid disc, nominal (unmodified) tooth: F_i = T l_i / sum of l_k^2 over the loaded flank"}};
+  nlohmann::json out = {{"kind", "cycloid"},
+                        {"supported", true},
+                        {"input_angle_deg", crank_deg},
+                        {"teeth", d.teeth},
+                        {"rollers", d.rollers},
+                        {"roller_position_radius_mm", d.roller_position_radius_mm},
+                        {"roller_radius_mm", d.roller_radius_mm},
+                        {"disc_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
+                        {"disc_rotation_deg", turn * 180.0 / kPi},
+                        {"profile_mm", profile},
+                        {"pins", pins},
+                        {"disc_torque_Nmm", torque},
+                        {"max_pin_force_N", max_force},
+                        {"pin_forces",
+                         "rigid disc, nominal (unmodified) tooth: F_i = T l_i / sum of l_k^2 over the loaded flank"}};
+  if (s.loaded) {
+    out["max_pressure_MPa"] = max_pressure;
+    out["composite_modulus_MPa"] = e_star;
+    out["pin_pressures"] =
+        "Hertz line contact of each pin's force over the face width, 1/R' = tooth curvature + 1/pin radius at "
+        "the nominal contact";
+  }
+  return out;
 }
 
 // One design of a sizing (an analysis study) drawn, or why it is not: a start outside the

@@ -26,7 +26,11 @@ namespace camopt::studies {
 ///    "arm_length_mm"]}.
 /// A cycloid drive at crank angle θ: {"kind": "cycloid", "supported": true, "teeth", "rollers",
 ///   "roller_position_radius_mm", "roller_radius_mm", "disc_centre_mm", "disc_rotation_deg",
-///   "profile_mm" (the disc, at least 48 points per pin), "pins": [{"x", "y"}, …]}.
+///   "profile_mm" (the disc, at least 48 points per pin), "pins": [{"x", "y", "force_N", "loaded"[,
+///   "pressure_MPa", "effective_radius_mm"]}, …], "disc_torque_Nmm", "max_pin_force_N"[,
+///   "max_pressure_MPa", "composite_modulus_MPa"]}: each pin's rigid-disc force on the nominal tooth
+///   and, with the study's material (a loaded study), its Hertz line-contact peak pressure over the
+///   face width (−1: a conformal pair).
 /// A sizing kind (lcr_min_size, cycloid_min_size, disc_cam_min_size), its start design against the
 /// optimum of its run, each drawn as its analysis kind (SizingAnalysisKind) is:
 ///   {"kind": "sizing", "sizing_kind", "supported": true, "analysis_kind",

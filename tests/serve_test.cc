@@ -458,6 +458,42 @@ TEST(Serve, CycloidMechanismPinForcesBalanceTheTorque) {
   EXPECT_EQ(m["max_pin_force_N"].get<double>(), largest);
 }
 
+// Each loaded pin's Hertz pressure at crank 50°, by hand: the tooth's curvature at the nominal
+// contact t_i = 2πi/n1 + φ/n2 from the closed form (C1) of docs/cycloid.md (λ = e n1/a, ψ = (n1 − 1) t,
+// κ_X = (1 + n1 λ² − (n1 + 1) λ cos ψ) / (a (1 + λ² − 2 λ cos ψ)^{3/2}), the tooth the inner offset by ρ:
+// κ = κ_X/(1 − ρ κ_X)), 1/R' = κ + 1/ρ, p0 = sqrt(F E*/(π B R')) with E* = E/(2(1 − ν²)) and the
+// pin's force as drawn (checked above).
+TEST(Serve, CycloidMechanismPinPressuresMatchHertzByHand) {
+  const json study = json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json")));
+  const double phi = 50 * M_PI / 180, a = 90, e = 4.5, rho = 7.2, B = 17, E = 206000, nu = 0.3;
+  const int n1 = 16, n2 = 15;
+  const double e_star = E / (2 * (1 - nu * nu)), lambda = e * n1 / a;
+  const json m = camopt::studies::MechanismAt(study, 50.0, 400);
+  ASSERT_EQ(m["pins"].size(), size_t(n1));
+  EXPECT_NEAR(m["composite_modulus_MPa"].get<double>(), e_star, 1e-9 * e_star);
+  double largest = 0;
+  int loaded = 0;
+  for (int i = 0; i < n1; ++i) {
+    const json& pin = m["pins"][i];
+    const double f = pin["force_N"];
+    if (!(f > 0)) {
+      EXPECT_EQ(pin["pressure_MPa"].get<double>(), 0.0) << "pin " << i;
+      continue;
+    }
+    ++loaded;
+    const double t = 2 * M_PI * i / n1 + phi / n2, c = std::cos((n1 - 1) * t);
+    const double kx = (1 + n1 * lambda * lambda - (n1 + 1) * lambda * c) /
+                      (a * std::pow(1 + lambda * lambda - 2 * lambda * c, 1.5));
+    const double r_eff = 1 / (kx / (1 - rho * kx) + 1 / rho);
+    const double p0 = std::sqrt(f * e_star / (M_PI * B * r_eff));
+    EXPECT_NEAR(pin["effective_radius_mm"].get<double>(), r_eff, 1e-9 * r_eff) << "pin " << i;
+    EXPECT_NEAR(pin["pressure_MPa"].get<double>(), p0, 1e-9 * p0) << "pin " << i;
+    largest = std::max(largest, p0);
+  }
+  EXPECT_EQ(loaded, 8);
+  EXPECT_NEAR(m["max_pressure_MPa"].get<double>(), largest, 1e-9 * largest);
+}
+
 // The disc cam with its translating roller follower drawn standing: at 145° (the dwell after the
 // 24 mm rise of disc_cam_translating.json) the roller centre is at (√((r_b + r_f)² − e²) + 24, e)
 // (Rzine et al. eq. 5 turned by −θ), the pressure angle atan(−e/L) (eq. 3 with dS/dθ = 0), and the

@@ -460,7 +460,7 @@ async function drawMechanism(angle) {
 
 function drawDesign(svg, data, study, angle) {
   if (data.kind === 'disc_cam') return drawDiscCam(svg, data, study, angle);
-  if (data.kind === 'cycloid') return drawCycloid(svg, data, angle);
+  if (data.kind === 'cycloid') return drawCycloid(svg, data, study, angle);
   return drawLcr(svg, data, study, angle);
 }
 
@@ -594,21 +594,26 @@ function drawDiscCam(svg, data, study, angle) {
   $('#stress-legend').textContent = `roller coloured by |pressure angle|: yellow 0 → red ${limit}° (the limit); red dot: the contact point`;
 }
 
-// The cycloid disc on its pins, each pin coloured by its rigid-disc contact force.
-function drawCycloid(svg, data, angle) {
+// The cycloid disc on its pins, each pin coloured by its pair's Hertz pressure (by its rigid-disc
+// contact force when the study has no material: an unloaded-only study).
+function drawCycloid(svg, data, study, angle) {
   const R = (data.roller_position_radius_mm + data.roller_radius_mm) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });
   g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.roller_position_radius_mm }));
   g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
-  const maxForce = data.max_pin_force_N || 1;
+  const pressures = typeof data.max_pressure_MPa === 'number';
+  const limit = study && study.limits && study.limits.contact_stress_MPa;
+  const top = pressures ? (limit || data.max_pressure_MPa || 1) : (data.max_pin_force_N || 1);
   data.pins.forEach((p, i) => {
+    const value = pressures ? p.pressure_MPa : p.force_N;
     const c = svgEl('circle', {
       class: 'roller', cx: p.x, cy: p.y, r: data.roller_radius_mm,
-      fill: p.loaded ? stressColour(p.force_N, maxForce) : '#e0e0e0',
-      'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y, 'data-force': p.force_N });
+      fill: p.loaded ? stressColour(value, top) : '#e0e0e0',
+      'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y, 'data-force': p.force_N,
+      'data-pressure': pressures ? p.pressure_MPa : '' });
     const t = svgEl('title', {});
-    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N`;
+    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N` + (pressures && p.loaded ? `, p0 = ${p.pressure_MPa.toFixed(0)} MPa` : '');
     c.append(t);
     g.append(c);
   });
@@ -621,10 +626,13 @@ function drawCycloid(svg, data, angle) {
   svg.replaceChildren(g);
   svg.dataset.angle = String(angle);
   $('#mechanism-note').textContent =
-    `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°`;
-  $('#stress-legend').textContent =
-    `pins coloured by contact force (rigid disc, nominal tooth, T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc): ` +
-    `yellow 0 → red ${maxForce.toFixed(0)} N; grey unloaded. The modified tooth's pressures are in the run's pressure maps`;
+    `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°` +
+    (pressures ? `; largest pair pressure ${data.max_pressure_MPa.toFixed(0)} MPa, largest pin force ${data.max_pin_force_N.toFixed(0)} N` : '');
+  const loads = `rigid disc, nominal tooth, T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc`;
+  $('#stress-legend').textContent = pressures
+    ? `pins coloured by their pair's Hertz pressure p0 = √(F E*/(π B R')) (${loads}): yellow 0 → red ${top.toFixed(0)} MPa` +
+      `${limit ? ' (the limit)' : ' (the largest)'}; grey unloaded. The modified tooth's pressures are in the run's pressure maps`
+    : `pins coloured by contact force (${loads}): yellow 0 → red ${top.toFixed(0)} N; grey unloaded`;
 }
 
 // ---- compare ----------------------------------------------------------------------------------

@@ -6,7 +6,8 @@
 // number of loaded rollers at that angle); a screenshot (SCREENSHOT; with SCREENSHOT_DIR set, also
 // copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png);
 // then runs disc_cam_min_size.json and checks its optimum drawn over its start design (the two base
-// circles against the file's and result.json's, the outlines' smallest radii differing by the change).
+// circles against the file's and result.json's, the outlines' smallest radii differing by the change),
+// and runs the cycloid NNM drive (coarse) and checks each pin's drawn pressure against Hertz by hand.
 //   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
 // Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
 import { spawn } from 'node:child_process';
@@ -33,6 +34,11 @@ const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'camopt-studio-'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_ii.json'), path.join(dir, 'lcr_ii.json'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_i.json'), path.join(dir, 'lcr_i.json'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/disc_cam_min_size.json'), path.join(dir, 'disc_cam_min_size.json'));
+// The cycloid NNM drive on a coarse grid (the run takes well under a second; the drawing does not
+// depend on it).
+const cycloid = JSON.parse(fs.readFileSync(path.join(sourceDir, 'studies/examples/cycloid_ltca_nnm_none.json'), 'utf8'));
+cycloid.analysis = { crank_angles_per_mesh_period: 2, grid: [8, 8], estimate_error: false };
+fs.writeFileSync(path.join(dir, 'cycloid.json'), JSON.stringify(cycloid, null, 2));
 const study = JSON.parse(fs.readFileSync(path.join(dir, 'lcr_ii.json'), 'utf8'));
 
 const server = spawn(camopt, ['serve', '--port', '0', dir], { stdio: ['ignore', 'pipe', 'inherit'] });
@@ -195,6 +201,37 @@ try {
     await page.screenshot({ path: sizingShot, fullPage: false });
     console.log(`screenshot: ${sizingShot}`);
   }
+
+  // The cycloid drive: each loaded pin's pressure against p0 = sqrt(F E*/(π B R')) by hand, the
+  // tooth's curvature at the nominal contact from docs/cycloid.md (C1).
+  await page.click('#files li[data-path="cycloid.json"]');
+  await page.waitForSelector('body[data-loaded="cycloid.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="4"]', { timeout: 120000 });
+  const crank = 50;
+  await page.$eval('#crank', (el, a) => { el.value = String(a); el.dispatchEvent(new Event('input')); }, crank);
+  await page.waitForSelector(`#mechanism[data-angle="${crank}"] circle[data-side="pins"]`, { timeout: 10000 });
+  const pins = await page.$$eval('#mechanism circle[data-side="pins"]', (cs) => cs.map((c) => ({
+    i: Number(c.dataset.index), f: Number(c.dataset.force), p: Number(c.dataset.pressure), fill: c.getAttribute('fill') })));
+  const dr = cycloid.drive, n1 = dr.rollers, n2 = dr.teeth, a = dr.roller_position_radius_mm, ecc = dr.eccentricity_mm;
+  const rho = dr.roller_radius_mm, B = dr.face_width_mm, nu = cycloid.material.poisson_ratio;
+  const eStar = cycloid.material.youngs_modulus_GPa * 1000 / (2 * (1 - nu * nu)), lam = ecc * n1 / a;
+  let worstP = 0, loadedPins = 0;
+  for (const pin of pins.filter((q) => q.f > 0)) {
+    ++loadedPins;
+    const t = 2 * Math.PI * pin.i / n1 + crank * Math.PI / 180 / n2, c = Math.cos((n1 - 1) * t);
+    const kx = (1 + n1 * lam * lam - (n1 + 1) * lam * c) / (a * Math.pow(1 + lam * lam - 2 * lam * c, 1.5));
+    const rEff = 1 / (kx / (1 - rho * kx) + 1 / rho);
+    worstP = Math.max(worstP, Math.abs(pin.p / Math.sqrt(pin.f * eStar / (Math.PI * B * rEff)) - 1));
+  }
+  check(pins.length === n1 && loadedPins === 8, `${pins.length} pins drawn, ${loadedPins} loaded at ${crank}°`);
+  check(worstP < 1e-9, `the pins' pressures within ${worstP.toExponential(2)} (relative) of Hertz by hand`);
+  const hottest = pins.reduce((x, y) => (y.p > x.p ? y : x));
+  check(hottest.fill === 'rgb(255, 0, 0)', `the largest pressure (pin ${hottest.i}, ${hottest.p.toFixed(1)} MPa) drawn red: ${hottest.fill}`);
+  const cycloidLegend = await page.$eval('#stress-legend', (el) => el.textContent);
+  check(cycloidLegend.includes('Hertz pressure'), `legend: ${cycloidLegend.slice(0, 120)}`);
+  check(consoleErrors.length === 0, `no console errors after the cycloid ${consoleErrors.join(' | ')}`);
 } catch (e) {
   failures.push(String(e));
   console.log(`FAIL: ${e.stack || e}`);
