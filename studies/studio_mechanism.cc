@@ -12,6 +12,8 @@
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "model/disc_cam/disc_cam.h"
+#include "model/disc_cam/flat_faced.h"
+#include "model/disc_cam/oscillating_flat_faced.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/kinematics.h"
@@ -99,11 +101,92 @@ nlohmann::json LcrAt(const nlohmann::json& study, double theta_deg, int points) 
 // A disc cam with a roller (or knife-edge) follower at cam angle θ, model/disc_cam/disc_cam.h's
 // EvaluateCam (Rzine et al. eqs. 1–12). Its frame is fixed on the cam, the follower turning with θ
 // against the cam's rotation; drawn with the follower standing, every point is turned by −θ.
+// A disc cam with a flat-faced follower at cam angle θ, drawn as the roller one (the follower
+// standing, every point of the cam frame turned by −θ). Translating (model/disc_cam/flat_faced.h):
+// the face is the line P · u(θ) = r_b + S, the contact A = (r_b + S) u + S' J u. On an arm
+// (model/disc_cam/oscillating_flat_faced.h): the pivot O₃ = f u(θ), the face the line
+// (P − O₃) · m = d with m = −n the unit normal from the arm toward the cam, the contact A at ℓ along
+// the arm −u(α) from the foot O₃ + d m. The face is drawn over the contact's travel in the cycle
+// (the profile's samples), or centred on the axis over face_width_mm for a translating face.
+nlohmann::json FlatFaceAt(const disc_cam::Study& s, double theta_deg, int points) {
+  namespace dc = camopt::disc_cam;
+  const dc::DiscCam& cam = s.cam;
+  const double theta = theta_deg * kPi / 180.0;
+  const auto fixed = [&](const Vec2<double>& x) {
+    const Vec2<double> p = Rotate(x, -theta);
+    return nlohmann::json::array({Round6(p.x()), Round6(p.y())});
+  };
+  const bool oscillating = cam.follower == dc::FollowerType::kOscillatingRoller;
+  dc::OscillatingFlatFaced arm;
+  arm.base_radius = cam.base_radius;
+  arm.pivot_distance = cam.pivot_distance;
+  arm.face_offset = s.face_offset_mm;
+  arm.motion = cam.motion;
+  // The profile, and how far along the face the contact runs over the cycle.
+  nlohmann::json profile = nlohmann::json::array();
+  double lo = 0, hi = 0;
+  for (int i = 0; i < points; ++i) {
+    const double t = 2.0 * kPi * i / points;
+    Vec2<double> a;
+    double along;
+    if (oscillating) {
+      const dc::OscillatingFlatFacePoint q = dc::EvaluateOscillatingFlatFaced(arm, t);
+      a = q.contact, along = q.contact_on_face;
+    } else {
+      const dc::FlatFacePoint<double> q = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, t);
+      a = q.contact, along = q.contact_offset;
+    }
+    profile.push_back(fixed(a));
+    lo = i == 0 ? along : std::min(lo, along);
+    hi = i == 0 ? along : std::max(hi, along);
+  }
+  nlohmann::json out = {{"kind", "disc_cam"},
+                        {"supported", true},
+                        {"input_angle_deg", theta_deg},
+                        {"follower", s.follower_type},
+                        {"oscillating", oscillating},
+                        {"flat_face", true},
+                        {"base_radius_mm", cam.base_radius},
+                        {"roller_radius_mm", 0.0},
+                        {"profile_mm", profile}};
+  const double pad = 0.08 * std::max(hi - lo, 0.1 * cam.base_radius);
+  if (oscillating) {
+    const dc::OscillatingFlatFacePoint q = dc::EvaluateOscillatingFlatFaced(arm, theta);
+    const Vec2<double> m = -q.normal, along = -U(q.theta - q.xi);  // toward the cam; along the arm
+    const Vec2<double> foot = q.pivot + s.face_offset_mm * m;
+    out["pivot_mm"] = fixed(q.pivot);
+    out["face_foot_mm"] = fixed(foot);
+    out["face_mm"] = {fixed(foot + (lo - pad) * along), fixed(foot + (hi + pad) * along)};
+    out["contact_mm"] = fixed(q.contact);
+    out["face_normal"] = {Rotate(m, -theta).x(), Rotate(m, -theta).y()};
+    out["contact_on_face_mm"] = q.contact_on_face;
+    out["lift"] = q.xi - dc::InitialArmAngle(arm);
+    out["arm_angle_deg"] = q.xi * 180.0 / kPi;
+    out["pressure_angle_deg"] = q.pressure_angle * 180.0 / kPi;
+    out["radius_of_curvature_mm"] = q.radius_of_curvature;
+    out["face_offset_mm"] = s.face_offset_mm;
+  } else {
+    const dc::FlatFacePoint<double> q = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, theta);
+    const Vec2<double> u = U(theta), centre = (cam.base_radius + q.s) * u;  // the face's foot on the axis
+    const double w = s.follower_face_width_mm ? 0.5 * *s.follower_face_width_mm : 0.0;
+    const double a0 = s.follower_face_width_mm ? -w : lo - pad, a1 = s.follower_face_width_mm ? w : hi + pad;
+    out["face_mm"] = {fixed(centre + a0 * Perp(u)), fixed(centre + a1 * Perp(u))};
+    out["face_foot_mm"] = fixed(centre);
+    out["contact_mm"] = fixed(q.contact);
+    out["face_normal"] = {1.0, 0.0};  // u(θ) turned by −θ: toward the follower
+    out["follower_direction"] = {1.0, 0.0};
+    out["contact_on_face_mm"] = q.contact_offset;
+    out["lift"] = q.s;
+    out["pressure_angle_deg"] = 0.0;
+    out["radius_of_curvature_mm"] = q.radius_of_curvature;
+  }
+  return out;
+}
+
 nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int points) {
   const Node root(&study, "study", "");
   const disc_cam::Study s = disc_cam::Parse(root);
-  if (s.contact == disc_cam::Study::Contact::kFlatFaced)
-    return {{"kind", "disc_cam"}, {"supported", false}, {"why", "flat-faced followers are not drawn yet"}};
+  if (s.contact == disc_cam::Study::Contact::kFlatFaced) return FlatFaceAt(s, theta_deg, points);
   const camopt::disc_cam::DiscCam& cam = s.cam;
   const double theta = theta_deg * kPi / 180.0;
   const auto fixed = [&](const Vec2<double>& x) {

@@ -10,8 +10,8 @@
 namespace camopt::studies {
 
 /// The mechanism of `study` (a study file's JSON) at input angle `input_angle_deg`, `points`
-/// points per outline (clamped to [36, 4000]). Supported kinds: lcr_analysis, disc_cam (roller and
-/// knife-edge followers), cycloid_ltca (geometry). An LCR:
+/// points per outline (clamped to [36, 4000]). Supported kinds: lcr_analysis, disc_cam (every
+/// follower), cycloid_ltca, and the sizings of the three. An LCR:
 ///   {"kind": "lcr", "supported": true, "input_angle_deg", "eccentricity_mm",
 ///    "cam_centre_mm": [x, y], "cam_rotation_deg", "output_turret_rotation_deg",
 ///    "max_stress_MPa", "sides": [{"name": "input"|"output", "lobes", "rollers",
@@ -24,6 +24,12 @@ namespace camopt::studies {
 ///    "roller_radius_mm", "profile_mm", "roller_centre_mm", "contact_mm", "follower_direction"
 ///    (unit, of increasing lift), "lift" (mm or rad), "pressure_angle_deg"[, "pivot_mm",
 ///    "arm_length_mm"]}.
+/// A flat-faced follower (translating or on an arm), the same frame: {"kind": "disc_cam",
+///   "flat_face": true, "follower", "oscillating", "base_radius_mm", "profile_mm", "contact_mm",
+///   "face_mm" (the face's two ends: the contact's travel over the cycle, or a translating face's
+///   face_width_mm centred on its axis), "face_foot_mm", "face_normal" (unit, toward the cam on an
+///   arm, toward the follower translating), "contact_on_face_mm" (S' or ℓ), "lift" (mm or rad),
+///   "pressure_angle_deg", "radius_of_curvature_mm"[, "pivot_mm", "arm_angle_deg", "face_offset_mm"]}.
 /// A cycloid drive at crank angle θ: {"kind": "cycloid", "supported": true, "teeth", "rollers",
 ///   "roller_position_radius_mm", "roller_radius_mm", "disc_centre_mm", "disc_rotation_deg",
 ///   "profile_mm" (the disc, at least 48 points per pin), "pins": [{"x", "y", "force_N", "loaded"[,

@@ -514,6 +514,71 @@ TEST(Serve, DiscCamMechanismMatchesTheClosedForms) {
   EXPECT_NEAR(nearest, rf, 2e-3);
 }
 
+// The nearest point of a closed polyline (the drawn profile) to q.
+double DistanceToPolyline(const json& pts, double qx, double qy) {
+  double best = 1e18;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const json &a = pts[i], &b = pts[(i + 1) % pts.size()];
+    const double ax = a[0], ay = a[1], bx = double(b[0]) - ax, by = double(b[1]) - ay;
+    const double len2 = bx * bx + by * by;
+    const double t = len2 > 0 ? std::clamp(((qx - ax) * bx + (qy - ay) * by) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(qx - ax - t * bx, qy - ay - t * by));
+  }
+  return best;
+}
+
+// The translating flat face of disc_cam_flat_faced.json at 60° (half way up the cycloidal 24 mm rise
+// over 120°, by hand S = 12 mm, S' = 2h/β = 22.918 mm): the face is the line x = r_b + S = 52 mm
+// (the follower standing), its ends at y = ±25 (the 50 mm face centred on the axis), the contact
+// (52, S') on it and on the drawn profile, and the face a supporting line of the convex profile: no
+// profile point beyond it (tangent at the contact).
+TEST(Serve, FlatFacedFollowerIsTangentToTheProfileAtTheContact) {
+  const json m = camopt::studies::MechanismAt(json::parse(ReadFile(Example("disc_cam_flat_faced.json"))), 60.0, 3600);
+  ASSERT_TRUE(m["supported"].get<bool>()) << m.dump().substr(0, 300);
+  EXPECT_TRUE(m["flat_face"].get<bool>());
+  const double rb = 40, h = 24, beta = 120 * M_PI / 180, x = 0.5;
+  const double S = h * (x - std::sin(2 * M_PI * x) / (2 * M_PI)), dS = h / beta * (1 - std::cos(2 * M_PI * x));
+  EXPECT_NEAR(m["lift"].get<double>(), S, 1e-9);
+  for (const json& end : m["face_mm"]) EXPECT_NEAR(end[0].get<double>(), rb + S, 1e-6);
+  EXPECT_NEAR(m["face_mm"][0][1].get<double>(), -25.0, 1e-6);
+  EXPECT_NEAR(m["face_mm"][1][1].get<double>(), 25.0, 1e-6);
+  const double cx = m["contact_mm"][0], cy = m["contact_mm"][1];
+  EXPECT_NEAR(cx, rb + S, 1e-6);
+  EXPECT_NEAR(cy, dS, 1e-6);
+  EXPECT_LT(DistanceToPolyline(m["profile_mm"], cx, cy), 1e-6);
+  double beyond = -1e9;
+  for (const json& p : m["profile_mm"]) beyond = std::max(beyond, p[0].get<double>() - (rb + S));
+  EXPECT_LE(beyond, 1e-6);
+  EXPECT_GT(beyond, -1e-6);  // the contact is a profile sample (60° is on the 3600-point grid)
+}
+
+// The flat face on an arm of disc_cam_oscillating_flat_faced.json at 60° (f = 100 mm, d = 10 mm,
+// r_b = 40 mm; by hand ξ₀ = asin((r_b + d)/f) = 30°, half way up the 10° cycloidal swing ξ = 35°):
+// drawn with the pivot standing at (f, 0), the face's unit normal toward the cam m = (−sin ξ, −cos ξ),
+// the face the line (P − O₃) · m = d through both drawn ends and the contact, the contact on the
+// profile, and every profile point on the cam's side of it ((P − O₃) · m ≥ d: tangent at the contact).
+TEST(Serve, OscillatingFlatFaceIsTangentToTheProfileAtTheContact) {
+  const json m =
+      camopt::studies::MechanismAt(json::parse(ReadFile(Example("disc_cam_oscillating_flat_faced.json"))), 60.0, 3600);
+  ASSERT_TRUE(m["supported"].get<bool>()) << m.dump().substr(0, 300);
+  const double f = 100, d = 10, xi = (30.0 + 5.0) * M_PI / 180;
+  EXPECT_NEAR(std::asin((40 + d) / f), 30 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(m["arm_angle_deg"].get<double>(), 35.0, 1e-9);
+  EXPECT_NEAR(m["pivot_mm"][0].get<double>(), f, 1e-6);
+  EXPECT_NEAR(m["pivot_mm"][1].get<double>(), 0.0, 1e-6);
+  const double mx = -std::sin(xi), my = -std::cos(xi);
+  EXPECT_NEAR(m["face_normal"][0].get<double>(), mx, 1e-12);
+  EXPECT_NEAR(m["face_normal"][1].get<double>(), my, 1e-12);
+  const auto side = [&](const json& p) { return (p[0].get<double>() - f) * mx + p[1].get<double>() * my; };
+  for (const json& end : m["face_mm"]) EXPECT_NEAR(side(end), d, 2e-6);
+  EXPECT_NEAR(side(m["contact_mm"]), d, 2e-6);
+  EXPECT_LT(DistanceToPolyline(m["profile_mm"], m["contact_mm"][0], m["contact_mm"][1]), 1e-6);
+  double nearest = 1e9;
+  for (const json& p : m["profile_mm"]) nearest = std::min(nearest, side(p));
+  EXPECT_GE(nearest, d - 2e-6);
+  EXPECT_LE(nearest, d + 2e-6);
+}
+
 // The smallest-base-circle sizing drawn through the server: disc_cam_min_size.json run by the CLI
 // into results/, then /api/mechanism?result=results/… draws its start (the file's design: r_b = 40,
 // e = 12, r_f = 10) under the run's optimum (r_b and e of result.json "best"). At 145° (the dwell

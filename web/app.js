@@ -560,6 +560,7 @@ function drawLcr(svg, data, study, angle) {
 // The disc cam with its follower standing (the cam turned by −θ); the roller coloured by the
 // pressure angle against its limit.
 function drawDiscCam(svg, data, study, angle) {
+  if (data.flat_face) return drawFlatFace(svg, data, study, angle);
   let R = 0;
   for (const p of data.profile_mm) R = Math.max(R, Math.hypot(p[0], p[1]));
   const c = data.roller_centre_mm;
@@ -592,6 +593,44 @@ function drawDiscCam(svg, data, study, angle) {
   $('#mechanism-note').textContent =
     `${data.follower}: lift ${data.lift.toFixed(4)} ${data.oscillating ? 'rad' : 'mm'}, pressure angle ${data.pressure_angle_deg.toFixed(2)}°`;
   $('#stress-legend').textContent = `roller coloured by |pressure angle|: yellow 0 → red ${limit}° (the limit); red dot: the contact point`;
+}
+
+// The disc cam with a flat-faced follower standing: the face (coloured by |pressure angle| against
+// its limit: 0 for a translating face, atan(d/ℓ) on an arm), its stem or arm, the contact point.
+function drawFlatFace(svg, data, study, angle) {
+  let R = 0;
+  for (const p of [...data.profile_mm, ...data.face_mm]) R = Math.max(R, Math.hypot(p[0], p[1]));
+  if (data.pivot_mm) R = Math.max(R, Math.hypot(data.pivot_mm[0], data.pivot_mm[1]));
+  svg.setAttribute('viewBox', `${-R * 1.1} ${-R * 1.45} ${R * 2.9} ${R * 2.9}`);
+  const g = svgEl('g', { transform: 'scale(1,-1)' });
+  g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.base_radius_mm }));
+  g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
+  g.append(svgEl('circle', { cx: 0, cy: 0, r: R * 0.02, fill: '#23395d' }));
+  const limit = (study.limits && study.limits.pressure_angle_deg) || (data.oscillating ? 45 : 30);
+  const foot = data.face_foot_mm, w = R * 0.025;
+  const [a, b] = data.face_mm;
+  if (data.oscillating) {
+    // The arm: from the pivot along its line, the face on its cam side at the offset d.
+    const o = data.pivot_mm, back = [b[0] - (foot[0] - o[0]), b[1] - (foot[1] - o[1])];
+    const body = [o, foot, a, b, back];
+    g.append(svgEl('path', { class: 'arm', d: 'M' + body.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z',
+                             style: `fill:rgba(60,60,60,0.15);stroke:#333;stroke-width:${w * 0.3}` }));
+    g.append(svgEl('circle', { cx: o[0], cy: o[1], r: R * 0.03, fill: '#333' }));
+  } else {
+    const n = data.face_normal, len = R * 1.2;
+    g.append(svgEl('line', { x1: foot[0], y1: foot[1], x2: foot[0] + len * n[0], y2: foot[1] + len * n[1], style: `stroke:#333;stroke-width:${w * 1.6}` }));
+  }
+  g.append(svgEl('line', { class: 'face', x1: a[0], y1: a[1], x2: b[0], y2: b[1],
+                           style: `stroke:${stressColour(Math.abs(data.pressure_angle_deg), limit)};stroke-width:${w * 1.4}`,
+                           'data-x1': a[0], 'data-y1': a[1], 'data-x2': b[0], 'data-y2': b[1] }));
+  g.append(svgEl('circle', { class: 'contact', cx: data.contact_mm[0], cy: data.contact_mm[1], r: R * 0.012, fill: '#c62828' }));
+  svg.replaceChildren(g);
+  svg.dataset.angle = String(angle);
+  $('#mechanism-note').textContent =
+    `${data.follower}: lift ${data.lift.toFixed(4)} ${data.oscillating ? 'rad' : 'mm'}, contact ${data.contact_on_face_mm.toFixed(3)} mm along the face, ` +
+    `pressure angle ${data.pressure_angle_deg.toFixed(2)}°, profile radius of curvature ${data.radius_of_curvature_mm.toFixed(2)} mm`;
+  $('#stress-legend').textContent = `face coloured by |pressure angle|: yellow 0 → red ${limit}°` +
+    `${data.oscillating ? ' (atan(d/ℓ))' : ' (0 for a face across the line of motion)'}; red dot: the contact point`;
 }
 
 // The cycloid disc on its pins, each pin coloured by its pair's Hertz pressure (by its rigid-disc

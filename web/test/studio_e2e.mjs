@@ -7,7 +7,8 @@
 // copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png);
 // then runs disc_cam_min_size.json and checks its optimum drawn over its start design (the two base
 // circles against the file's and result.json's, the outlines' smallest radii differing by the change),
-// and runs the cycloid NNM drive (coarse) and checks each pin's drawn pressure against Hertz by hand.
+// runs the cycloid NNM drive (coarse) and checks each pin's drawn pressure against Hertz by hand, and
+// runs the oscillating flat face and checks the drawn face tangent to the drawn profile at the contact.
 //   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
 // Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
 import { spawn } from 'node:child_process';
@@ -39,6 +40,7 @@ fs.copyFileSync(path.join(sourceDir, 'studies/examples/disc_cam_min_size.json'),
 const cycloid = JSON.parse(fs.readFileSync(path.join(sourceDir, 'studies/examples/cycloid_ltca_nnm_none.json'), 'utf8'));
 cycloid.analysis = { crank_angles_per_mesh_period: 2, grid: [8, 8], estimate_error: false };
 fs.writeFileSync(path.join(dir, 'cycloid.json'), JSON.stringify(cycloid, null, 2));
+fs.copyFileSync(path.join(sourceDir, 'studies/examples/disc_cam_oscillating_flat_faced.json'), path.join(dir, 'flat_arm.json'));
 const study = JSON.parse(fs.readFileSync(path.join(dir, 'lcr_ii.json'), 'utf8'));
 
 const server = spawn(camopt, ['serve', '--port', '0', dir], { stdio: ['ignore', 'pipe', 'inherit'] });
@@ -232,6 +234,34 @@ try {
   const cycloidLegend = await page.$eval('#stress-legend', (el) => el.textContent);
   check(cycloidLegend.includes('Hertz pressure'), `legend: ${cycloidLegend.slice(0, 120)}`);
   check(consoleErrors.length === 0, `no console errors after the cycloid ${consoleErrors.join(' | ')}`);
+
+  // The flat face on an arm at 60°: by hand ξ = asin((r_b + d)/f) + 5° = 35°, the pivot drawn at
+  // (f, 0), the face the line (P − O₃)·m = d with m = (−sin ξ, −cos ξ) through both drawn ends and
+  // the contact, and no profile point on the arm's side of it.
+  await page.click('#files li[data-path="flat_arm.json"]');
+  await page.waitForSelector('body[data-loaded="flat_arm.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="5"]', { timeout: 120000 });
+  await page.$eval('#crank', (el) => { el.value = '60'; el.dispatchEvent(new Event('input')); });
+  await page.waitForSelector('#mechanism[data-angle="60"] line.face', { timeout: 10000 });
+  const flat = await page.$eval('#mechanism', (svg) => {
+    const f = svg.querySelector('line.face'), c = svg.querySelector('circle.contact');
+    const pts = svg.querySelector('path.cam-input').getAttribute('d').slice(1).replace('Z', '').split('L').map((p) => p.split(',').map(Number));
+    return { ends: [[f.dataset.x1, f.dataset.y1], [f.dataset.x2, f.dataset.y2]].map((e) => e.map(Number)),
+             contact: [Number(c.getAttribute('cx')), Number(c.getAttribute('cy'))], pts };
+  });
+  const xi = Math.asin((40 + 10) / 100) + 5 * Math.PI / 180, mx = -Math.sin(xi), my = -Math.cos(xi);
+  const sideOf = (p) => (p[0] - 100) * mx + p[1] * my - 10;
+  const onLine = Math.max(...[...flat.ends, flat.contact].map((p) => Math.abs(sideOf(p))));
+  const armSide = Math.min(...flat.pts.map(sideOf));
+  check(onLine < 1e-5, `the face's ends and the contact on the line (P − O₃)·m = d within ${onLine.toExponential(2)} mm`);
+  check(armSide > -1e-5, `no profile point on the arm's side of the face (closest ${armSide.toExponential(2)} mm)`);
+  check(consoleErrors.length === 0, `no console errors after the flat face ${consoleErrors.join(' | ')}`);
+  if (screenshot) {
+    const flatShot = path.join(path.dirname(screenshot), 'studio-flat-face.png');
+    await page.screenshot({ path: flatShot, fullPage: false });
+  }
 } catch (e) {
   failures.push(String(e));
   console.log(`FAIL: ${e.stack || e}`);
