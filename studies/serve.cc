@@ -37,6 +37,7 @@
 #include "studies/schemas.h"
 #include "studies/study.h"
 #include "studies/studio_mechanism.h"
+#include "studies/sweep.h"
 
 namespace camopt::studies {
 
@@ -501,8 +502,11 @@ void Routes(httplib::Server& server, Studio& studio) {
     const std::string file = req.has_param("path") ? req.get_param_value("path") : "study";
     try {
       const json study = ParseBodyStudy(req.body, file);
-      if (study.is_object() && study.contains("sweep") && study["sweep"].is_string() && !study.contains("study"))
-        return SendJson(res, {{"ok", true}, {"note", "a sweep: its cases are checked when it runs"}});
+      // A sweep: what `camopt sweep` checks before its first case (each case's study when it runs).
+      if (study.is_object() && study.contains("sweep") && !study.contains("study"))
+        return SendJson(res, {{"ok", true},
+                              {"cases", sweep::CheckSweep(study, file)},
+                              {"note", "a sweep: each case's study is checked when it runs"}});
       CheckStudy(study, file);
       SendJson(res, {{"ok", true}});
     } catch (const StudyError& e) {

@@ -268,6 +268,52 @@ TEST(Serve, ValidateFindsAStudysRelativeFilesInTheFolder) {
   EXPECT_FALSE(json::parse(res->body)["ok"].get<bool>()) << res->body;
 }
 
+// A sweep is checked when opened as `camopt sweep` checks it before its first case: a good one is
+// ok with its number of cases (3 × 3 factorial), a bad one gives the CLI's own message (the text
+// after "camopt: error: " of `camopt sweep --dry-run` in the folder), its file and JSON path.
+TEST(Serve, ValidateChecksASweepAsCamoptSweepDoes) {
+  const fs::path dir = TempDir("serve-sweep");
+  fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
+  const std::string good =
+      R"({"sweep": "e", "base": "lcr_ii.json", "vary": [{"path": "/reducer/eccentricity_mm", "values": [1.8, 2, 2.2]},
+          {"path": "/load/output_torque_Nm", "range": [40, 80], "count": 3}], "design": "factorial",
+          "outputs": ["/max_contact_stress_MPa"]})";
+  const std::string bad =
+      R"({"sweep": "e", "base": "lcr_ii.json", "vary": [{"path": "/reducer/eccentricity_mm", "values": [1.8], "range": [1, 2]}]})";
+  const std::string no_base = R"({"sweep": "e", "base": "missing.json", "vary": [{"path": "/x", "values": [1]}]})";
+  WriteFile(dir / "good.json", good);
+  WriteFile(dir / "bad.json", bad);
+  WriteFile(dir / "no_base.json", no_base);
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/validate?path=good.json", good, "application/json");
+  ASSERT_TRUE(res);
+  json v = json::parse(res->body);
+  EXPECT_TRUE(v["ok"].get<bool>()) << res->body;
+  EXPECT_EQ(v["cases"], 9);
+  for (const std::string name : {"bad", "no_base"}) {
+    const std::string text = ReadFile(dir / (name + ".json"));
+    res = c.Post(("/api/validate?path=" + name + ".json").c_str(), text, "application/json");
+    ASSERT_TRUE(res);
+    v = json::parse(res->body);
+    ASSERT_FALSE(v["ok"].get<bool>()) << res->body;
+    const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY + " sweep " + name +
+                            ".json --out o --dry-run > /dev/null 2> " + name + ".err";
+    EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 2) << name;
+    std::string cli = ReadFile(dir / (name + ".err"));
+    ASSERT_EQ(cli.rfind("camopt: error: ", 0), 0u) << cli;
+    cli = cli.substr(std::string("camopt: error: ").size());
+    while (!cli.empty() && cli.back() == '\n') cli.pop_back();
+    EXPECT_EQ(v["error"]["message"].get<std::string>(), cli) << name;
+  }
+  EXPECT_EQ(v["error"]["message"].get<std::string>().rfind("no_base.json: /base: ", 0), 0u) << v.dump();
+  res = c.Post("/api/validate?path=bad.json", bad, "application/json");
+  v = json::parse(res->body);
+  EXPECT_EQ(v["error"]["file"], "bad.json") << res->body;
+  EXPECT_EQ(v["error"]["path"], "/vary/0") << res->body;
+}
+
 TEST(Serve, ARunWritesTheSameOutputFolderAsTheCli) {
   const fs::path dir = TempDir("serve-run");
   fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");

@@ -211,6 +211,7 @@ async function validate() {
   if (!state.doc) return false;
   const { data } = await api('POST', `/api/validate?path=${encodeURIComponent(state.path)}`, state.doc);
   showValidation(data.ok ? null : data.error);
+  if (data.ok && typeof data.cases === 'number') $('#validation').textContent = `The sweep is valid: ${data.cases} cases (${data.note}).`;
   return !!data.ok;
 }
 
