@@ -1037,18 +1037,20 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   return j;
 }
 
-nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
-  const objectives::CycloidMinSizeOutcome& o = r.outcome;
-  if (o.x.empty()) return nullptr;
+namespace {
+
+// A design (drive and crowning) of this sizing as a complete cycloid_ltca study: the accurate
+// settings, the design torque, the life's and the output mechanism's blocks of the study.
+nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, const cycloid::Crowning& crowning,
+                                  const std::string& prefix) {
   nlohmann::json a;
   a["study"] = "cycloid_ltca";
-  a["name"] = (o.verified && o.converged ? "best of " : "closest design (not verified) of ") +
-              (s.name.empty() ? std::string("cycloid_min_size") : s.name);
-  nlohmann::json drive = DriveJson(o.drive);
+  a["name"] = prefix + (s.name.empty() ? std::string("cycloid_min_size") : s.name);
+  nlohmann::json drive = DriveJson(design);
   if (s.bore_diameter_mm > 0) drive["bore_diameter_mm"] = s.bore_diameter_mm;
   a["drive"] = drive;
-  a["modification"] = ModificationJson(o.drive);
-  a["crowning"] = cycloid_common::CrowningJson(o.crowning);
+  a["modification"] = ModificationJson(design);
+  a["crowning"] = cycloid_common::CrowningJson(crowning);
   a["material"] = {{"youngs_modulus_GPa", s.spec.material.youngs_modulus_MPa / 1000.0},
                    {"poisson_ratio", s.spec.material.poisson_ratio}};
   a["load"] = {{"torque_Nm", s.design_torque_Nm}};
@@ -1074,7 +1076,7 @@ nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
     nlohmann::json om = {{"pins", out.pins.pins},
                          {"pin_circle_radius_mm", out.pins.pin_circle_radius_mm},
                          {"pin_radius_mm", out.pins.pin_radius_mm},
-                         {"hole_radius_mm", out.pins.contact_radius_mm() + o.drive.eccentricity_mm + out.clearance_mm}};
+                         {"hole_radius_mm", out.pins.contact_radius_mm() + design.eccentricity_mm + out.clearance_mm}};
     if (out.pins.roller_radius_mm > 0) om["roller_radius_mm"] = out.pins.roller_radius_mm;
     om["pin_support"] = out.support == cycloid::PinSupport::kBothEnds ? "both_ends" : "cantilever";
     if (out.span_mm > 0) om["pin_span_mm"] = out.span_mm;
@@ -1082,6 +1084,19 @@ nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
     a["stiffness"] = {{"rated_torque_Nm", s.design_torque_Nm}};
   }
   return a;
+}
+
+}  // namespace
+
+nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
+  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  if (o.x.empty()) return nullptr;
+  return CycloidLtcaStudyOf(s, o.drive, o.crowning,
+                            o.verified && o.converged ? "best of " : "closest design (not verified) of ");
+}
+
+nlohmann::json StartCycloidLtcaStudy(const Study& s) {
+  return CycloidLtcaStudyOf(s, s.spec.drive, s.spec.crowning, "start of ");
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {

@@ -292,6 +292,9 @@ nlohmann::json ToJson(const Study& study, const Result& result);
 /// The best design as a complete cycloid_ltca study (the accurate settings, the design torque);
 /// null when there is no design.
 nlohmann::json BestCycloidLtcaStudy(const Study& study, const Result& result);
+/// The start design (every field's start or fixed value, spec.drive and spec.crowning) as a
+/// complete cycloid_ltca study, made as BestCycloidLtcaStudy makes the best one.
+nlohmann::json StartCycloidLtcaStudy(const Study& study);
 /// result.json, best_cycloid_ltca.json, stress_over_cycle.csv/.svg, pressure_map.svg; marks the
 /// outputs incomplete (exit 3) when the answer is not verified or there is none.
 void Write(const Study& study, const Result& result, Outputs& out);

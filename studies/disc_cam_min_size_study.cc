@@ -328,29 +328,45 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   return j;
 }
 
-nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
-  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
-  if (o.x.empty()) return nullptr;
+namespace {
+
+// A design of this sizing as a complete disc_cam study: the study's own fields, the sized ones
+// (base circle, offset or pivot and arm, roller radius) the design's, on the accurate grid.
+nlohmann::json DiscCamStudyOf(const Study& s, const dc::DiscCam& cam, const std::string& name) {
   nlohmann::json a = s.base_json;
-  a["name"] = (o.verified && o.converged ? "best of " : "closest design (not verified) of ") + s.name;
-  a["base_circle_radius_mm"] = o.cam.base_radius;
+  a["name"] = name;
+  a["base_circle_radius_mm"] = cam.base_radius;
   if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
-    a["follower"]["pivot_distance_mm"] = o.cam.pivot_distance;
-    a["follower"]["arm_length_mm"] = o.cam.arm_length;
+    a["follower"]["pivot_distance_mm"] = cam.pivot_distance;
+    a["follower"]["arm_length_mm"] = cam.arm_length;
   } else if (!s.spec.flat_face) {
-    a["follower"]["offset_mm"] = o.cam.offset;
+    a["follower"]["offset_mm"] = cam.offset;
   }
-  if (s.base.contact == disc_cam::Study::Contact::kRoller) a["follower"]["roller_radius_mm"] = o.cam.roller_radius;
+  if (s.base.contact == disc_cam::Study::Contact::kRoller) a["follower"]["roller_radius_mm"] = cam.roller_radius;
   // Fields the sized design may no longer take (the cutter no larger than the roller, the bore
   // inside the base circle) are left out.
   if (a.contains("cutter_radius_mm") && a["cutter_radius_mm"].is_number() &&
-      a["cutter_radius_mm"].get<double>() > o.cam.roller_radius)
+      a["cutter_radius_mm"].get<double>() > cam.roller_radius)
     a.erase("cutter_radius_mm");
   if (a.contains("bore_diameter_mm") && a["bore_diameter_mm"].is_number() &&
-      a["bore_diameter_mm"].get<double>() >= 2 * o.cam.base_radius)
+      a["bore_diameter_mm"].get<double>() >= 2 * cam.base_radius)
     a.erase("bore_diameter_mm");
   a["analysis"] = {{"angle_steps", std::min(1000000, s.spec.angle_steps * s.spec.accurate_factor)}, {"monte_carlo", false}};
   return a;
+}
+
+}  // namespace
+
+nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
+  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  if (o.x.empty()) return nullptr;
+  return DiscCamStudyOf(s, o.cam, (o.verified && o.converged ? "best of " : "closest design (not verified) of ") + s.name);
+}
+
+nlohmann::json StartDiscCamStudy(const Study& s) {
+  std::vector<double> x;
+  for (const objectives::Variable& v : s.spec.variables) x.push_back(v.initial);
+  return DiscCamStudyOf(s, objectives::DiscCamDesign(s.spec, x), "start of " + s.name);
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {

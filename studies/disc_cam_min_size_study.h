@@ -129,6 +129,9 @@ Result Run(const Study& study, const RunContext& ctx);
 nlohmann::json ToJson(const Study& study, const Result& result);
 /// The best design as a complete disc_cam study; null when there is no design.
 nlohmann::json BestDiscCamStudy(const Study& study, const Result& result);
+/// The start design (each variable's start, the study's values clamped to their ranges) as a
+/// complete disc_cam study, made as BestDiscCamStudy makes the best one (the studio draws the two).
+nlohmann::json StartDiscCamStudy(const Study& study);
 /// result.json, best_disc_cam.json, series.csv, pressure_angle.svg; marks the outputs incomplete
 /// (exit 3) when the answer is not verified or there is none.
 void Write(const Study& study, const Result& result, Outputs& out);

@@ -671,26 +671,58 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   return res;
 }
 
+namespace {
+
+// A design of one candidate (its spec: counts, roller, limits) as an lcr_analysis study: the
+// reducer, the study's material, load and limits, on the dense check's grid.
+nlohmann::json LcrAnalysisStudyOf(const Study& s, const LcrSizingSpec& spec, const lcr::Reducer<double>& r,
+                                  const std::string& prefix) {
+  nlohmann::json a;
+  a["study"] = "lcr_analysis";
+  a["name"] = prefix + (s.name.empty() ? std::string("lcr_min_size") : s.name);
+  a["reducer"] = {{"eccentricity_mm", r.eccentricity}, {"input", SideJson(r.input)}, {"output", SideJson(r.output)}};
+  a["material"] = {{"youngs_modulus_GPa", s.base.material.youngs_modulus_MPa / 1000},
+                   {"poisson_ratio", s.base.material.poisson_ratio}};
+  a["load"] = {{"output_torque_Nm", s.output_torque_Nmm / 1000}, {"friction_coefficient", s.base.friction_coefficient}};
+  nlohmann::json lim = nlohmann::json::object();
+  if (std::isfinite(spec.limits.contact_stress_MPa)) lim["contact_stress_MPa"] = spec.limits.contact_stress_MPa;
+  if (std::isfinite(spec.limits.roller_load_N)) lim["roller_load_N"] = spec.limits.roller_load_N;
+  lim["undercut_margin_mm"] = spec.limits.undercut_margin_mm;
+  lim["roller_gap_mm"] = spec.limits.roller_gap_mm;
+  a["limits"] = lim;
+  a["analysis"] = {{"angle_steps", s.options.dense_steps}};
+  return a;
+}
+
+}  // namespace
+
+nlohmann::json StartLcrAnalysisStudy(const Study& s, const nlohmann::json& optimum) {
+  const nlohmann::json& red = optimum.at("reducer");
+  const nlohmann::json &in = red.at("input"), &out = red.at("output");
+  LcrSizingSpec spec = s.base;
+  spec.lobes_a = in.at("lobes").get<int>();
+  spec.rollers_a = in.at("rollers").get<int>();
+  spec.lobes_b = out.at("lobes").get<int>();
+  spec.rollers_b = out.at("rollers").get<int>();
+  // With a catalogue, the roller the optimum has (as the candidate's spec was made in Run).
+  for (const CatalogueRoller& c : s.catalogue)
+    if (std::abs(c.diameter_mm - in.at("roller_diameter_mm").get<double>()) <= 1e-9 * c.diameter_mm &&
+        std::abs(c.length_mm - in.at("roller_length_mm").get<double>()) <= 1e-9 * c.length_mm) {
+      spec.fixed_roller_diameter_mm = c.diameter_mm;
+      spec.roller_length_mm = c.length_mm;
+      spec.limits.roller_load_N = std::min(spec.limits.roller_load_N, c.load_limit_N);
+      break;
+    }
+  const std::vector<double> x0 = objectives::LcrStartingPoints(spec, 1).front();
+  return LcrAnalysisStudyOf(s, spec, objectives::LcrDesign(spec, x0), "start of ");
+}
+
 void Write(const Study& s, const Result& result, Outputs& out) {
   out.AddJson("result.json", ToJson(s, result));
   if (result.best >= 0) {
     // The best design as an lcr_analysis study, ready for `camopt run`.
     const Candidate& best = result.candidates[result.best];
-    const lcr::Reducer<double>& r = *best.outcome.design;
-    nlohmann::json a;
-    a["study"] = "lcr_analysis";
-    a["name"] = "best of " + (s.name.empty() ? std::string("lcr_min_size") : s.name);
-    a["reducer"] = {{"eccentricity_mm", r.eccentricity}, {"input", SideJson(r.input)}, {"output", SideJson(r.output)}};
-    a["material"] = {{"youngs_modulus_GPa", s.base.material.youngs_modulus_MPa / 1000},
-                     {"poisson_ratio", s.base.material.poisson_ratio}};
-    a["load"] = {{"output_torque_Nm", s.output_torque_Nmm / 1000}, {"friction_coefficient", s.base.friction_coefficient}};
-    nlohmann::json lim = nlohmann::json::object();
-    if (std::isfinite(best.spec.limits.contact_stress_MPa)) lim["contact_stress_MPa"] = best.spec.limits.contact_stress_MPa;
-    if (std::isfinite(best.spec.limits.roller_load_N)) lim["roller_load_N"] = best.spec.limits.roller_load_N;
-    lim["undercut_margin_mm"] = best.spec.limits.undercut_margin_mm;
-    lim["roller_gap_mm"] = best.spec.limits.roller_gap_mm;
-    a["limits"] = lim;
-    a["analysis"] = {{"angle_steps", s.options.dense_steps}};
+    nlohmann::json a = LcrAnalysisStudyOf(s, best.spec, *best.outcome.design, "best of ");
     if (best.spec.life && best.outcome.check) {
       // The speed or duty cycle and the ratings at the design's roller size: lcr_analysis then
       // computes the same lives (docs/life.md).

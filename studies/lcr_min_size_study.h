@@ -403,6 +403,11 @@ nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, candidates.csv, outer_diameter.svg, best_lcr_analysis.json (when something fits);
 /// marks the outputs incomplete (exit code 3) when nothing fits.
 void Write(const Study& study, const Result& result, Outputs& out);
+/// The start of the best combination's solve (the first smooth-phase start, LcrStartingPoints)
+/// as an lcr_analysis study, made as best_lcr_analysis.json is: the combination (and catalogue
+/// roller) read from `optimum`, the run's best_lcr_analysis.json. @throws nlohmann::json::exception
+/// when `optimum` lacks its reducer's counts or roller.
+nlohmann::json StartLcrAnalysisStudy(const Study& study, const nlohmann::json& optimum);
 /// Lines for the terminal: best outer diameter, time, and what each binding limit costs
 /// ("contact stress limit +10 MPa → −0.13 mm").
 std::string Summary(const Study& study, const Result& result);

@@ -37,6 +37,7 @@
 #include "studies/schemas.h"
 #include "studies/study.h"
 #include "studies/studio_mechanism.h"
+#include "studies/sweep.h"
 
 namespace camopt::studies {
 
@@ -501,19 +502,38 @@ void Routes(httplib::Server& server, Studio& studio) {
     const std::string file = req.has_param("path") ? req.get_param_value("path") : "study";
     try {
       const json study = ParseBodyStudy(req.body, file);
-      if (study.is_object() && study.contains("sweep") && study["sweep"].is_string() && !study.contains("study"))
-        return SendJson(res, {{"ok", true}, {"note", "a sweep: its cases are checked when it runs"}});
+      // A sweep: what `camopt sweep` checks before its first case (each case's study when it runs).
+      if (study.is_object() && study.contains("sweep") && !study.contains("study"))
+        return SendJson(res, {{"ok", true},
+                              {"cases", sweep::CheckSweep(study, file)},
+                              {"note", "a sweep: each case's study is checked when it runs"}});
       CheckStudy(study, file);
       SendJson(res, {{"ok", true}});
     } catch (const StudyError& e) {
       SendJson(res, {{"ok", false}, {"error", ErrorJson(e)}});
     }
   });
-  server.Post("/api/mechanism", [](const httplib::Request& req, httplib::Response& res) {
+  server.Post("/api/mechanism", [root](const httplib::Request& req, httplib::Response& res) {
     const double angle = req.has_param("angle") ? std::atof(req.get_param_value("angle").c_str()) : 0.0;
     const int points = req.has_param("points") ? std::atoi(req.get_param_value("points").c_str()) : 360;
     try {
-      SendJson(res, MechanismAt(ParseBodyStudy(req.body, "study"), angle, points));
+      const json study = ParseBodyStudy(req.body, "study");
+      // A sizing study with result=FOLDER (its run's output folder): the optimum that run wrote.
+      json optimum;
+      const std::string kind = study.is_object() && study.contains("study") && study["study"].is_string()
+                                   ? study["study"].get<std::string>()
+                                   : std::string();
+      if (req.has_param("result") && !SizingOptimumFile(kind).empty()) {
+        // The file itself resolved (its links followed) inside the folder; absent: not run yet.
+        const std::string rel = req.get_param_value("result") + "/" + SizingOptimumFile(kind);
+        const Resolved r = Resolve(root, rel, true);
+        std::error_code ec;
+        if (r.status != 200 && r.status != 404) return SendError(res, r.status, r.message);
+        if (r.status == 200 && fs::is_regular_file(r.path, ec))
+          optimum = ParseStudyText(ReadFileCapped(r.path.string(), size_t{64} << 20, "file"), rel,
+                                   CurrentInputLimits().max_depth);
+      }
+      SendJson(res, MechanismAt(study, angle, points, optimum));
     } catch (const StudyError& e) {
       SendJson(res, {{"error", ErrorJson(e)}}, 422);
     }

@@ -8,13 +8,20 @@
 
 #include "model/common/geometry.h"
 #include "model/cycloid/bearing_loads.h"
+#include "model/contact/hertz.h"
 #include "model/cycloid/tooth_profile.h"
+#include "model/cycloid/unloaded_tca.h"
 #include "model/disc_cam/disc_cam.h"
+#include "model/disc_cam/flat_faced.h"
+#include "model/disc_cam/oscillating_flat_faced.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
 #include "studies/cycloid_ltca_study.h"
+#include "studies/cycloid_min_size_study.h"
+#include "studies/disc_cam_min_size_study.h"
+#include "studies/lcr_min_size_study.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/lcr_analysis_study.h"
@@ -94,11 +101,92 @@ nlohmann::json LcrAt(const nlohmann::json& study, double theta_deg, int points) 
 // A disc cam with a roller (or knife-edge) follower at cam angle θ, model/disc_cam/disc_cam.h's
 // EvaluateCam (Rzine et al. eqs. 1–12). Its frame is fixed on the cam, the follower turning with θ
 // against the cam's rotation; drawn with the follower standing, every point is turned by −θ.
+// A disc cam with a flat-faced follower at cam angle θ, drawn as the roller one (the follower
+// standing, every point of the cam frame turned by −θ). Translating (model/disc_cam/flat_faced.h):
+// the face is the line P · u(θ) = r_b + S, the contact A = (r_b + S) u + S' J u. On an arm
+// (model/disc_cam/oscillating_flat_faced.h): the pivot O₃ = f u(θ), the face the line
+// (P − O₃) · m = d with m = −n the unit normal from the arm toward the cam, the contact A at ℓ along
+// the arm −u(α) from the foot O₃ + d m. The face is drawn over the contact's travel in the cycle
+// (the profile's samples), or centred on the axis over face_width_mm for a translating face.
+nlohmann::json FlatFaceAt(const disc_cam::Study& s, double theta_deg, int points) {
+  namespace dc = camopt::disc_cam;
+  const dc::DiscCam& cam = s.cam;
+  const double theta = theta_deg * kPi / 180.0;
+  const auto fixed = [&](const Vec2<double>& x) {
+    const Vec2<double> p = Rotate(x, -theta);
+    return nlohmann::json::array({Round6(p.x()), Round6(p.y())});
+  };
+  const bool oscillating = cam.follower == dc::FollowerType::kOscillatingRoller;
+  dc::OscillatingFlatFaced arm;
+  arm.base_radius = cam.base_radius;
+  arm.pivot_distance = cam.pivot_distance;
+  arm.face_offset = s.face_offset_mm;
+  arm.motion = cam.motion;
+  // The profile, and how far along the face the contact runs over the cycle.
+  nlohmann::json profile = nlohmann::json::array();
+  double lo = 0, hi = 0;
+  for (int i = 0; i < points; ++i) {
+    const double t = 2.0 * kPi * i / points;
+    Vec2<double> a;
+    double along;
+    if (oscillating) {
+      const dc::OscillatingFlatFacePoint q = dc::EvaluateOscillatingFlatFaced(arm, t);
+      a = q.contact, along = q.contact_on_face;
+    } else {
+      const dc::FlatFacePoint<double> q = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, t);
+      a = q.contact, along = q.contact_offset;
+    }
+    profile.push_back(fixed(a));
+    lo = i == 0 ? along : std::min(lo, along);
+    hi = i == 0 ? along : std::max(hi, along);
+  }
+  nlohmann::json out = {{"kind", "disc_cam"},
+                        {"supported", true},
+                        {"input_angle_deg", theta_deg},
+                        {"follower", s.follower_type},
+                        {"oscillating", oscillating},
+                        {"flat_face", true},
+                        {"base_radius_mm", cam.base_radius},
+                        {"roller_radius_mm", 0.0},
+                        {"profile_mm", profile}};
+  const double pad = 0.08 * std::max(hi - lo, 0.1 * cam.base_radius);
+  if (oscillating) {
+    const dc::OscillatingFlatFacePoint q = dc::EvaluateOscillatingFlatFaced(arm, theta);
+    const Vec2<double> m = -q.normal, along = -U(q.theta - q.xi);  // toward the cam; along the arm
+    const Vec2<double> foot = q.pivot + s.face_offset_mm * m;
+    out["pivot_mm"] = fixed(q.pivot);
+    out["face_foot_mm"] = fixed(foot);
+    out["face_mm"] = {fixed(foot + (lo - pad) * along), fixed(foot + (hi + pad) * along)};
+    out["contact_mm"] = fixed(q.contact);
+    out["face_normal"] = {Rotate(m, -theta).x(), Rotate(m, -theta).y()};
+    out["contact_on_face_mm"] = q.contact_on_face;
+    out["lift"] = q.xi - dc::InitialArmAngle(arm);
+    out["arm_angle_deg"] = q.xi * 180.0 / kPi;
+    out["pressure_angle_deg"] = q.pressure_angle * 180.0 / kPi;
+    out["radius_of_curvature_mm"] = q.radius_of_curvature;
+    out["face_offset_mm"] = s.face_offset_mm;
+  } else {
+    const dc::FlatFacePoint<double> q = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, theta);
+    const Vec2<double> u = U(theta), centre = (cam.base_radius + q.s) * u;  // the face's foot on the axis
+    const double w = s.follower_face_width_mm ? 0.5 * *s.follower_face_width_mm : 0.0;
+    const double a0 = s.follower_face_width_mm ? -w : lo - pad, a1 = s.follower_face_width_mm ? w : hi + pad;
+    out["face_mm"] = {fixed(centre + a0 * Perp(u)), fixed(centre + a1 * Perp(u))};
+    out["face_foot_mm"] = fixed(centre);
+    out["contact_mm"] = fixed(q.contact);
+    out["face_normal"] = {1.0, 0.0};  // u(θ) turned by −θ: toward the follower
+    out["follower_direction"] = {1.0, 0.0};
+    out["contact_on_face_mm"] = q.contact_offset;
+    out["lift"] = q.s;
+    out["pressure_angle_deg"] = 0.0;
+    out["radius_of_curvature_mm"] = q.radius_of_curvature;
+  }
+  return out;
+}
+
 nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int points) {
   const Node root(&study, "study", "");
   const disc_cam::Study s = disc_cam::Parse(root);
-  if (s.contact == disc_cam::Study::Contact::kFlatFaced)
-    return {{"kind", "disc_cam"}, {"supported", false}, {"why", "flat-faced followers are not drawn yet"}};
+  if (s.contact == disc_cam::Study::Contact::kFlatFaced) return FlatFaceAt(s, theta_deg, points);
   const camopt::disc_cam::DiscCam& cam = s.cam;
   const double theta = theta_deg * kPi / 180.0;
   const auto fixed = [&](const Vec2<double>& x) {
@@ -136,8 +224,9 @@ nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int poin
 // frame, placed at its centre e u(φ) and turned by −φ/n2 (the inverse of RollerCentreInDisc), and
 // the pins standing at a u(2πi/n1). Each pin's force is the rigid-disc load sharing of
 // model/cycloid/bearing_loads.h's RigidRingPinLoads (F_i = T l_i / Σ l_k², Σ F_i l_i = T; Blanche &
-// Yang 1989) at the disc's torque: the nominal (unmodified) tooth's, since the modification's
-// clearance needs the loaded contact analysis of a run (its pressure maps).
+// Yang 1989) at the disc's torque, and the Hertz pressure of that force on each pair: the nominal
+// (unmodified) tooth's, since the modification's clearance needs the loaded contact analysis of a
+// run (its pressure maps).
 nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points) {
   const Node root(&study, "study", "");
   const cycloid_ltca::Study s = cycloid_ltca::Parse(root);
@@ -157,33 +246,118 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
   const double torque = s.disc_torque_Nmm();
   std::vector<double> force(size_t(d.rollers), 0.0);
   for (const auto& [i, f] : cycloid::RigidRingPinLoads(nominal, torque, crank)) force[size_t(i)] = f;
-  double max_force = 0;
+  // Each loaded pair's Hertz line-contact peak pressure p0 = sqrt(F E* / (π B R')) (Johnson eq.
+  // 4.45; model/contact/hertz.h), 1/R' = κ_tooth + 1/ρ at the nominal contact (the unloaded TCA's
+  // pair, model/cycloid/unloaded_tca.h: the tooth's signed curvature there), over the face width B;
+  // −1 where the pair is conformal (no Hertz contact). Needs the material: not for an unloaded-only study.
+  const double e_star = s.loaded ? s.material.composite_modulus_MPa() : 0.0;
+  double max_force = 0, max_pressure = 0;
   nlohmann::json pins = nlohmann::json::array();
   for (int i = 0; i < d.rollers; ++i) {
     const Vec2<double> o = d.roller_position_radius_mm * U(2.0 * kPi * i / d.rollers);
-    max_force = std::max(max_force, force[size_t(i)]);
-    pins.push_back({{"x", o.x()}, {"y", o.y()}, {"force_N", force[size_t(i)]}, {"loaded", force[size_t(i)] > 0}});
+    const double f = force[size_t(i)];
+    max_force = std::max(max_force, f);
+    nlohmann::json pin = {{"x", o.x()}, {"y", o.y()}, {"force_N", f}, {"loaded", f > 0}};
+    if (s.loaded) {
+      double pressure = 0.0;
+      if (f > 0) {
+        const cycloid::PairGeometry<double> g = cycloid::SolvePair<double>(nominal, i, crank);
+        const double curvature = g.profile_curvature + g.roller_curvature;  // 1/R'
+        pressure = curvature > 0 ? contact::LineContactPeakPressure(f, nominal.face_width_mm, 1.0 / curvature, e_star) : -1.0;
+        pin["effective_radius_mm"] = curvature > 0 ? nlohmann::json(1.0 / curvature) : nlohmann::json(nullptr);
+      }
+      pin["pressure_MPa"] = pressure;
+      max_pressure = std::max(max_pressure, pressure);
+    }
+    pins.push_back(pin);
   }
-  return {{"kind", "cycloid"},
-          {"supported", true},
-          {"input_angle_deg", crank_deg},
-          {"teeth", d.teeth},
-          {"rollers", d.rollers},
-          {"roller_position_radius_mm", d.roller_position_radius_mm},
-          {"roller_radius_mm", d.roller_radius_mm},
-          {"disc_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
-          {"disc_rotation_deg", turn * 180.0 / kPi},
-          {"profile_mm", profile},
-          {"pins", pins},
-          {"disc_torque_Nmm", torque},
-          {"max_pin_force_N", max_force},
-          {"pin_forces",
-           "rigid disc, nominal (unmodified) tooth: F_i = T l_i / sum of l_k^2 over the loaded flank"}};
+  nlohmann::json out = {{"kind", "cycloid"},
+                        {"supported", true},
+                        {"input_angle_deg", crank_deg},
+                        {"teeth", d.teeth},
+                        {"rollers", d.rollers},
+                        {"roller_position_radius_mm", d.roller_position_radius_mm},
+                        {"roller_radius_mm", d.roller_radius_mm},
+                        {"disc_centre_mm", {Round6(centre.x()), Round6(centre.y())}},
+                        {"disc_rotation_deg", turn * 180.0 / kPi},
+                        {"profile_mm", profile},
+                        {"pins", pins},
+                        {"disc_torque_Nmm", torque},
+                        {"max_pin_force_N", max_force},
+                        {"pin_forces",
+                         "rigid disc, nominal (unmodified) tooth: F_i = T l_i / sum of l_k^2 over the loaded flank"}};
+  if (s.loaded) {
+    out["max_pressure_MPa"] = max_pressure;
+    out["composite_modulus_MPa"] = e_star;
+    out["pin_pressures"] =
+        "Hertz line contact of each pin's force over the face width, 1/R' = tooth curvature + 1/pin radius at "
+        "the nominal contact";
+  }
+  return out;
+}
+
+// One design of a sizing (an analysis study) drawn, or why it is not: a start outside the
+// analysis kind's checks (an LCR start with too little roller room) is said, not an error.
+nlohmann::json DrawnDesign(const nlohmann::json& analysis, double angle_deg, int points) {
+  try {
+    nlohmann::json d = MechanismAt(analysis, angle_deg, points);
+    d["study"] = analysis;
+    return d;
+  } catch (const StudyError& e) {
+    return {{"supported", false}, {"why", e.what()}, {"study", analysis}};
+  }
+}
+
+// A sizing study: its start design and the optimum of its run, each as the analysis study of the
+// same mechanism (the sizing kind's own Start…Study and its run's best_….json) drawn at one angle.
+nlohmann::json SizingAt(const std::string& kind, const nlohmann::json& study, const nlohmann::json& optimum,
+                        double angle_deg, int points) {
+  const Node root(&study, "study", "");
+  nlohmann::json start;
+  std::string why;
+  if (kind == "disc_cam_min_size") {
+    start = disc_cam_min_size::StartDiscCamStudy(disc_cam_min_size::Parse(root));
+  } else if (kind == "cycloid_min_size") {
+    start = cycloid_min_size::StartCycloidLtcaStudy(cycloid_min_size::Parse(root));
+  } else {
+    const lcr_min_size::Study s = lcr_min_size::Parse(root);
+    if (optimum.is_object()) {
+      try {
+        start = lcr_min_size::StartLcrAnalysisStudy(s, optimum);
+      } catch (const nlohmann::json::exception&) {
+        why = "the optimum's study has no reducer counts";
+      }
+    } else {
+      why = "the start depends on the lobe combination the run chooses: run the study";
+    }
+  }
+  nlohmann::json out = {{"kind", "sizing"},
+                        {"sizing_kind", kind},
+                        {"supported", true},
+                        {"input_angle_deg", angle_deg},
+                        {"analysis_kind", SizingAnalysisKind(kind)}};
+  out["start"] = start.is_object() ? DrawnDesign(start, angle_deg, points)
+                                   : nlohmann::json{{"supported", false}, {"why", why}};
+  out["optimum"] = optimum.is_object() ? DrawnDesign(optimum, angle_deg, points) : nlohmann::json(nullptr);
+  return out;
 }
 
 }  // namespace
 
-nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points) {
+std::string SizingAnalysisKind(const std::string& kind) {
+  if (kind == "lcr_min_size") return "lcr_analysis";
+  if (kind == "cycloid_min_size") return "cycloid_ltca";
+  if (kind == "disc_cam_min_size") return "disc_cam";
+  return "";
+}
+
+std::string SizingOptimumFile(const std::string& kind) {
+  const std::string a = SizingAnalysisKind(kind);
+  return a.empty() ? a : "best_" + a + ".json";
+}
+
+nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
+                           const nlohmann::json& optimum) {
   points = std::clamp(points, 36, 4000);
   if (!std::isfinite(input_angle_deg) || std::abs(input_angle_deg) > 1e6)
     throw StudyError("angle: expected a finite input angle in degrees within ±1e6, found " +
@@ -194,6 +368,7 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
   if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
   if (kind == "disc_cam") return DiscCamAt(study, input_angle_deg, points);
   if (kind == "cycloid_ltca") return CycloidAt(study, input_angle_deg, points);
+  if (!SizingAnalysisKind(kind).empty()) return SizingAt(kind, study, optimum, input_angle_deg, points);
   return {{"kind", kind}, {"supported", false}};
 }
 

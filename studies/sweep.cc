@@ -86,8 +86,11 @@ std::string CsvCell(const json& v) {
 
 }  // namespace
 
-Sweep Parse(const std::string& file, double max_cases) {
-  const json doc = LoadStudyFile(file);
+Sweep Parse(const std::string& file, double max_cases) { return ParseJson(LoadStudyFile(file), file, max_cases); }
+
+size_t CheckSweep(const json& doc, const std::string& file) { return Cases(ParseJson(doc, file)).size(); }
+
+Sweep ParseJson(const json& doc, const std::string& file, double max_cases) {
   const Node root(&doc, file, "");
   if (!doc.is_object()) root.Fail("a sweep object");
   root.CheckKnownFields({"sweep", "description", "base", "set", "vary", "design", "samples", "seed",

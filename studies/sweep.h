@@ -55,6 +55,13 @@ struct Sweep {
 /// Reads and checks a sweep file. Throws StudyError "FILE: PATH: expected X, found Y".
 /// `max_cases` caps the number of cases (a sweep file is refused at once when over it).
 Sweep Parse(const std::string& file, double max_cases = 1e6);
+/// The same for a sweep file's JSON already read (the studio's editor text), named `file`: a
+/// relative base study is found beside that name, the messages name it.
+Sweep ParseJson(const nlohmann::json& doc, const std::string& file, double max_cases = 1e6);
+/// The checks `camopt sweep` makes before its first case, with its messages: the file (ParseJson)
+/// and the expansion of its design into cases. Returns the number of cases.
+/// @throws StudyError as `camopt sweep` reports it (exit 2).
+size_t CheckSweep(const nlohmann::json& doc, const std::string& file);
 
 /// The study of one case: the base with the case's values written in.
 nlohmann::json CaseStudy(const Sweep& sweep, const std::vector<nlohmann::json>& inputs);

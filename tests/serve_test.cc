@@ -2,7 +2,9 @@
 // with cpp-httplib's client: what it refuses (other origins and hosts, paths outside its folder,
 // large bodies), validation with the CLI's message and JSON path, a run that writes the CLI's
 // output folder, and a client that disconnects mid-run (the run is cancelled, nothing left).
-// The mechanism endpoint's numbers (studies/studio_mechanism.h) against closed forms.
+// The mechanism endpoint's numbers (studies/studio_mechanism.h) against closed forms, the sizings'
+// start and optimum among them.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -266,6 +268,52 @@ TEST(Serve, ValidateFindsAStudysRelativeFilesInTheFolder) {
   EXPECT_FALSE(json::parse(res->body)["ok"].get<bool>()) << res->body;
 }
 
+// A sweep is checked when opened as `camopt sweep` checks it before its first case: a good one is
+// ok with its number of cases (3 × 3 factorial), a bad one gives the CLI's own message (the text
+// after "camopt: error: " of `camopt sweep --dry-run` in the folder), its file and JSON path.
+TEST(Serve, ValidateChecksASweepAsCamoptSweepDoes) {
+  const fs::path dir = TempDir("serve-sweep");
+  fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
+  const std::string good =
+      R"({"sweep": "e", "base": "lcr_ii.json", "vary": [{"path": "/reducer/eccentricity_mm", "values": [1.8, 2, 2.2]},
+          {"path": "/load/output_torque_Nm", "range": [40, 80], "count": 3}], "design": "factorial",
+          "outputs": ["/max_contact_stress_MPa"]})";
+  const std::string bad =
+      R"({"sweep": "e", "base": "lcr_ii.json", "vary": [{"path": "/reducer/eccentricity_mm", "values": [1.8], "range": [1, 2]}]})";
+  const std::string no_base = R"({"sweep": "e", "base": "missing.json", "vary": [{"path": "/x", "values": [1]}]})";
+  WriteFile(dir / "good.json", good);
+  WriteFile(dir / "bad.json", bad);
+  WriteFile(dir / "no_base.json", no_base);
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/validate?path=good.json", good, "application/json");
+  ASSERT_TRUE(res);
+  json v = json::parse(res->body);
+  EXPECT_TRUE(v["ok"].get<bool>()) << res->body;
+  EXPECT_EQ(v["cases"], 9);
+  for (const std::string name : {"bad", "no_base"}) {
+    const std::string text = ReadFile(dir / (name + ".json"));
+    res = c.Post(("/api/validate?path=" + name + ".json").c_str(), text, "application/json");
+    ASSERT_TRUE(res);
+    v = json::parse(res->body);
+    ASSERT_FALSE(v["ok"].get<bool>()) << res->body;
+    const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY + " sweep " + name +
+                            ".json --out o --dry-run > /dev/null 2> " + name + ".err";
+    EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 2) << name;
+    std::string cli = ReadFile(dir / (name + ".err"));
+    ASSERT_EQ(cli.rfind("camopt: error: ", 0), 0u) << cli;
+    cli = cli.substr(std::string("camopt: error: ").size());
+    while (!cli.empty() && cli.back() == '\n') cli.pop_back();
+    EXPECT_EQ(v["error"]["message"].get<std::string>(), cli) << name;
+  }
+  EXPECT_EQ(v["error"]["message"].get<std::string>().rfind("no_base.json: /base: ", 0), 0u) << v.dump();
+  res = c.Post("/api/validate?path=bad.json", bad, "application/json");
+  v = json::parse(res->body);
+  EXPECT_EQ(v["error"]["file"], "bad.json") << res->body;
+  EXPECT_EQ(v["error"]["path"], "/vary/0") << res->body;
+}
+
 TEST(Serve, ARunWritesTheSameOutputFolderAsTheCli) {
   const fs::path dir = TempDir("serve-run");
   fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
@@ -392,8 +440,13 @@ TEST(Serve, MechanismMatchesTheClosedForms) {
     // The fixed turret's reaction T_A = T_o m_B n_A/(n_B m_A) (eq. 24).
     if (s == 0) EXPECT_NEAR(torque, 80000.0 * 14 * 13 / (15.0 * 12), 1e-6 * 80000.0);
   }
-  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("lcr_min_size.json"))), 0, 100);
+  const json other = camopt::studies::MechanismAt(json::parse(ReadFile(Example("globoidal_cam_paper.json"))), 0, 100);
   EXPECT_FALSE(other["supported"].get<bool>());
+  // A sizing without its run: an LCR's start needs the lobe combination the run chooses.
+  const json sizing = camopt::studies::MechanismAt(json::parse(ReadFile(Example("lcr_min_size.json"))), 0, 100);
+  EXPECT_EQ(sizing["kind"], "sizing");
+  EXPECT_FALSE(sizing["start"]["supported"].get<bool>());
+  EXPECT_TRUE(sizing["optimum"].is_null());
 }
 
 // The cycloid disc on its pins at crank 50°: pins at a u(2πi/n1), the disc's centre at e u(φ),
@@ -451,6 +504,42 @@ TEST(Serve, CycloidMechanismPinForcesBalanceTheTorque) {
   EXPECT_EQ(m["max_pin_force_N"].get<double>(), largest);
 }
 
+// Each loaded pin's Hertz pressure at crank 50°, by hand: the tooth's curvature at the nominal
+// contact t_i = 2πi/n1 + φ/n2 from the closed form (C1) of docs/cycloid.md (λ = e n1/a, ψ = (n1 − 1) t,
+// κ_X = (1 + n1 λ² − (n1 + 1) λ cos ψ) / (a (1 + λ² − 2 λ cos ψ)^{3/2}), the tooth the inner offset by ρ:
+// κ = κ_X/(1 − ρ κ_X)), 1/R' = κ + 1/ρ, p0 = sqrt(F E*/(π B R')) with E* = E/(2(1 − ν²)) and the
+// pin's force as drawn (checked above).
+TEST(Serve, CycloidMechanismPinPressuresMatchHertzByHand) {
+  const json study = json::parse(ReadFile(Example("cycloid_ltca_nnm_none.json")));
+  const double phi = 50 * M_PI / 180, a = 90, e = 4.5, rho = 7.2, B = 17, E = 206000, nu = 0.3;
+  const int n1 = 16, n2 = 15;
+  const double e_star = E / (2 * (1 - nu * nu)), lambda = e * n1 / a;
+  const json m = camopt::studies::MechanismAt(study, 50.0, 400);
+  ASSERT_EQ(m["pins"].size(), size_t(n1));
+  EXPECT_NEAR(m["composite_modulus_MPa"].get<double>(), e_star, 1e-9 * e_star);
+  double largest = 0;
+  int loaded = 0;
+  for (int i = 0; i < n1; ++i) {
+    const json& pin = m["pins"][i];
+    const double f = pin["force_N"];
+    if (!(f > 0)) {
+      EXPECT_EQ(pin["pressure_MPa"].get<double>(), 0.0) << "pin " << i;
+      continue;
+    }
+    ++loaded;
+    const double t = 2 * M_PI * i / n1 + phi / n2, c = std::cos((n1 - 1) * t);
+    const double kx = (1 + n1 * lambda * lambda - (n1 + 1) * lambda * c) /
+                      (a * std::pow(1 + lambda * lambda - 2 * lambda * c, 1.5));
+    const double r_eff = 1 / (kx / (1 - rho * kx) + 1 / rho);
+    const double p0 = std::sqrt(f * e_star / (M_PI * B * r_eff));
+    EXPECT_NEAR(pin["effective_radius_mm"].get<double>(), r_eff, 1e-9 * r_eff) << "pin " << i;
+    EXPECT_NEAR(pin["pressure_MPa"].get<double>(), p0, 1e-9 * p0) << "pin " << i;
+    largest = std::max(largest, p0);
+  }
+  EXPECT_EQ(loaded, 8);
+  EXPECT_NEAR(m["max_pressure_MPa"].get<double>(), largest, 1e-9 * largest);
+}
+
 // The disc cam with its translating roller follower drawn standing: at 145° (the dwell after the
 // 24 mm rise of disc_cam_translating.json) the roller centre is at (√((r_b + r_f)² − e²) + 24, e)
 // (Rzine et al. eq. 5 turned by −θ), the pressure angle atan(−e/L) (eq. 3 with dS/dθ = 0), and the
@@ -469,6 +558,189 @@ TEST(Serve, DiscCamMechanismMatchesTheClosedForms) {
   for (const json& p : m["profile_mm"])
     nearest = std::min(nearest, std::hypot(p[0].get<double>() - x, p[1].get<double>() - y));
   EXPECT_NEAR(nearest, rf, 2e-3);
+}
+
+// The nearest point of a closed polyline (the drawn profile) to q.
+double DistanceToPolyline(const json& pts, double qx, double qy) {
+  double best = 1e18;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const json &a = pts[i], &b = pts[(i + 1) % pts.size()];
+    const double ax = a[0], ay = a[1], bx = double(b[0]) - ax, by = double(b[1]) - ay;
+    const double len2 = bx * bx + by * by;
+    const double t = len2 > 0 ? std::clamp(((qx - ax) * bx + (qy - ay) * by) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(qx - ax - t * bx, qy - ay - t * by));
+  }
+  return best;
+}
+
+// The translating flat face of disc_cam_flat_faced.json at 60° (half way up the cycloidal 24 mm rise
+// over 120°, by hand S = 12 mm, S' = 2h/β = 22.918 mm): the face is the line x = r_b + S = 52 mm
+// (the follower standing), its ends at y = ±25 (the 50 mm face centred on the axis), the contact
+// (52, S') on it and on the drawn profile, and the face a supporting line of the convex profile: no
+// profile point beyond it (tangent at the contact).
+TEST(Serve, FlatFacedFollowerIsTangentToTheProfileAtTheContact) {
+  const json m = camopt::studies::MechanismAt(json::parse(ReadFile(Example("disc_cam_flat_faced.json"))), 60.0, 3600);
+  ASSERT_TRUE(m["supported"].get<bool>()) << m.dump().substr(0, 300);
+  EXPECT_TRUE(m["flat_face"].get<bool>());
+  const double rb = 40, h = 24, beta = 120 * M_PI / 180, x = 0.5;
+  const double S = h * (x - std::sin(2 * M_PI * x) / (2 * M_PI)), dS = h / beta * (1 - std::cos(2 * M_PI * x));
+  EXPECT_NEAR(m["lift"].get<double>(), S, 1e-9);
+  for (const json& end : m["face_mm"]) EXPECT_NEAR(end[0].get<double>(), rb + S, 1e-6);
+  EXPECT_NEAR(m["face_mm"][0][1].get<double>(), -25.0, 1e-6);
+  EXPECT_NEAR(m["face_mm"][1][1].get<double>(), 25.0, 1e-6);
+  const double cx = m["contact_mm"][0], cy = m["contact_mm"][1];
+  EXPECT_NEAR(cx, rb + S, 1e-6);
+  EXPECT_NEAR(cy, dS, 1e-6);
+  EXPECT_LT(DistanceToPolyline(m["profile_mm"], cx, cy), 1e-6);
+  double beyond = -1e9;
+  for (const json& p : m["profile_mm"]) beyond = std::max(beyond, p[0].get<double>() - (rb + S));
+  EXPECT_LE(beyond, 1e-6);
+  EXPECT_GT(beyond, -1e-6);  // the contact is a profile sample (60° is on the 3600-point grid)
+}
+
+// The flat face on an arm of disc_cam_oscillating_flat_faced.json at 60° (f = 100 mm, d = 10 mm,
+// r_b = 40 mm; by hand ξ₀ = asin((r_b + d)/f) = 30°, half way up the 10° cycloidal swing ξ = 35°):
+// drawn with the pivot standing at (f, 0), the face's unit normal toward the cam m = (−sin ξ, −cos ξ),
+// the face the line (P − O₃) · m = d through both drawn ends and the contact, the contact on the
+// profile, and every profile point on the cam's side of it ((P − O₃) · m ≥ d: tangent at the contact).
+TEST(Serve, OscillatingFlatFaceIsTangentToTheProfileAtTheContact) {
+  const json m =
+      camopt::studies::MechanismAt(json::parse(ReadFile(Example("disc_cam_oscillating_flat_faced.json"))), 60.0, 3600);
+  ASSERT_TRUE(m["supported"].get<bool>()) << m.dump().substr(0, 300);
+  const double f = 100, d = 10, xi = (30.0 + 5.0) * M_PI / 180;
+  EXPECT_NEAR(std::asin((40 + d) / f), 30 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(m["arm_angle_deg"].get<double>(), 35.0, 1e-9);
+  EXPECT_NEAR(m["pivot_mm"][0].get<double>(), f, 1e-6);
+  EXPECT_NEAR(m["pivot_mm"][1].get<double>(), 0.0, 1e-6);
+  const double mx = -std::sin(xi), my = -std::cos(xi);
+  EXPECT_NEAR(m["face_normal"][0].get<double>(), mx, 1e-12);
+  EXPECT_NEAR(m["face_normal"][1].get<double>(), my, 1e-12);
+  const auto side = [&](const json& p) { return (p[0].get<double>() - f) * mx + p[1].get<double>() * my; };
+  for (const json& end : m["face_mm"]) EXPECT_NEAR(side(end), d, 2e-6);
+  EXPECT_NEAR(side(m["contact_mm"]), d, 2e-6);
+  EXPECT_LT(DistanceToPolyline(m["profile_mm"], m["contact_mm"][0], m["contact_mm"][1]), 1e-6);
+  double nearest = 1e9;
+  for (const json& p : m["profile_mm"]) nearest = std::min(nearest, side(p));
+  EXPECT_GE(nearest, d - 2e-6);
+  EXPECT_LE(nearest, d + 2e-6);
+}
+
+// The smallest-base-circle sizing drawn through the server: disc_cam_min_size.json run by the CLI
+// into results/, then /api/mechanism?result=results/… draws its start (the file's design: r_b = 40,
+// e = 12, r_f = 10) under the run's optimum (r_b and e of result.json "best"). At 145° (the dwell
+// after the 24 mm rise) each roller centre is at (√((r_b + r_f)² − e²) + 24, e) (Rzine et al. eq. 5
+// turned by −θ), and each profile's smallest radius is its r_b (the low dwell is the base circle).
+TEST(Serve, SizingMechanismDrawsTheDiscCamOptimumAgainstItsStart) {
+  const fs::path dir = TempDir("serve-sizing");
+  fs::copy_file(Example("disc_cam_min_size.json"), dir / "disc_cam_min_size.json");
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY +
+                          " run disc_cam_min_size.json --quiet --out results/disc_cam_min_size > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const json best = json::parse(ReadFile(dir / "results" / "disc_cam_min_size" / "result.json"))["best"];
+  const double rb_opt = best["base_circle_radius_mm"], e_opt = best["offset_mm"], rf = 10;
+  ASSERT_LT(rb_opt, 39.0);  // the optimum is well below the start: the two drawings differ
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/mechanism?angle=145&points=4000&result=results/disc_cam_min_size",
+                    ReadFile(dir / "disc_cam_min_size.json"), "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  const json m = json::parse(res->body);
+  EXPECT_EQ(m["kind"], "sizing");
+  EXPECT_EQ(m["analysis_kind"], "disc_cam");
+  struct Want {
+    const char* which;
+    double rb, e;
+  };
+  for (const Want& w : {Want{"start", 40.0, 12.0}, Want{"optimum", rb_opt, e_opt}}) {
+    const json& d = m[w.which];
+    ASSERT_TRUE(d["supported"].get<bool>()) << w.which << " " << d.dump().substr(0, 300);
+    EXPECT_EQ(d["base_radius_mm"].get<double>(), w.rb) << w.which;
+    EXPECT_EQ(d["study"]["study"], "disc_cam");
+    const double L = std::sqrt((w.rb + rf) * (w.rb + rf) - w.e * w.e) + 24;
+    EXPECT_NEAR(d["roller_centre_mm"][0].get<double>(), L, 1e-5) << w.which;
+    EXPECT_NEAR(d["roller_centre_mm"][1].get<double>(), w.e, 1e-5) << w.which;
+    double smallest = 1e9;
+    for (const json& p : d["profile_mm"]) smallest = std::min(smallest, std::hypot(p[0].get<double>(), p[1].get<double>()));
+    EXPECT_NEAR(smallest, w.rb, 1e-5) << w.which;
+  }
+  // Without a run folder: the start alone; a folder outside the studio's is refused.
+  res = c.Post("/api/mechanism?angle=0&result=results/none", ReadFile(dir / "disc_cam_min_size.json"), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_TRUE(json::parse(res->body)["optimum"].is_null());
+  res = c.Post("/api/mechanism?angle=0&result=../..", ReadFile(dir / "disc_cam_min_size.json"), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 403) << res->body;
+}
+
+// The LCR sizing's optimum against its start: lcr_min_size.json run by the CLI, its
+// best_lcr_analysis.json given as the optimum. The optimum's rollers stand at r_d of result.json
+// "best" (input and output turrets, the output one turned by (1 − n_A m_B/(m_A n_B)) θ, paper
+// eq. 2); the start is the best combination's first smooth-phase start (objectives/lcr_sizing.h,
+// LcrStartingPoints: d_r the middle of its range, each turret 1.3 (d_r + gap)/(2 sin(π/n)) within
+// its range, e = 0.5 min(r_dA, r_dB)/max(n/(n − m)) within its range), computed here from that rule.
+TEST(Serve, SizingMechanismDrawsTheLcrOptimumAgainstItsStart) {
+  const fs::path dir = TempDir("serve-sizing-lcr");
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY + " run " +
+                          Example("lcr_min_size.json").string() + " --quiet --out out > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const json best = json::parse(ReadFile(dir / "out" / "result.json"))["best"];
+  const json optimum = json::parse(ReadFile(dir / "out" / "best_lcr_analysis.json"));
+  const json sizing = json::parse(ReadFile(Example("lcr_min_size.json")));
+  const double theta_deg = 30, theta = theta_deg * M_PI / 180;
+  const json m = camopt::studies::MechanismAt(sizing, theta_deg, 720, optimum);
+  ASSERT_EQ(m["kind"], "sizing");
+  const int ma = best["input"]["lobes"], na = best["input"]["rollers"], mb = best["output"]["lobes"],
+            nb = best["output"]["rollers"];
+  const double turn_out = (1.0 - double(na) * mb / (double(ma) * nb)) * theta;
+  // The start from the rule: d_r = (3 + 20)/2, gap 1 mm, turrets within [15, 80], e within [0.5, 5].
+  const double d0 = 11.5, gap = 1.0;
+  const auto turret = [&](int n) { return std::clamp(1.3 * (d0 + gap) / (2 * std::sin(M_PI / n)), 15.0, 80.0); };
+  const double k = std::max(double(na) / (na - ma), double(nb) / (nb - mb));
+  const double e0 = std::clamp(0.5 * std::min(turret(na), turret(nb)) / k, 0.5, 5.0);
+  struct Want {
+    const char* which;
+    double e, rd[2], d;
+  };
+  const Want wants[2] = {{"optimum", best["eccentricity_mm"], {best["input"]["turret_radius_mm"], best["output"]["turret_radius_mm"]},
+                          best["input"]["roller_diameter_mm"]},
+                         {"start", e0, {turret(na), turret(nb)}, d0}};
+  for (const Want& w : wants) {
+    const json& d = m[w.which];
+    ASSERT_TRUE(d["supported"].get<bool>()) << w.which << " " << d.dump().substr(0, 400);
+    EXPECT_NEAR(d["eccentricity_mm"].get<double>(), w.e, 1e-12 * w.e) << w.which;
+    for (int s = 0; s < 2; ++s) {
+      const json& side = d["sides"][s];
+      const int n = s == 0 ? na : nb;
+      ASSERT_EQ(side["rollers_at"].size(), size_t(n)) << w.which;
+      EXPECT_NEAR(side["roller_radius_mm"].get<double>(), w.d / 2, 1e-12 * w.d) << w.which;
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n + (s == 0 ? 0.0 : turn_out);
+        EXPECT_NEAR(side["rollers_at"][i]["x"].get<double>(), w.rd[s] * std::cos(a), 1e-9) << w.which << s << i;
+        EXPECT_NEAR(side["rollers_at"][i]["y"].get<double>(), w.rd[s] * std::sin(a), 1e-9) << w.which << s << i;
+      }
+    }
+  }
+}
+
+// The cycloid sizing's start (no run): the pins of cycloid_min_size_paper.json's start, 16 at
+// a = 90 mm of radius 7.2 mm, the disc at e u(φ) with e = 4.5 mm.
+TEST(Serve, SizingMechanismDrawsTheCycloidStart) {
+  const json m = camopt::studies::MechanismAt(json::parse(ReadFile(Example("cycloid_min_size_paper.json"))), 20.0, 400);
+  ASSERT_EQ(m["kind"], "sizing");
+  EXPECT_TRUE(m["optimum"].is_null());
+  const json& d = m["start"];
+  ASSERT_TRUE(d["supported"].get<bool>()) << d.dump().substr(0, 300);
+  ASSERT_EQ(d["pins"].size(), size_t(16));
+  EXPECT_EQ(d["roller_radius_mm"].get<double>(), 7.2);
+  for (int i = 0; i < 16; ++i) {
+    EXPECT_NEAR(d["pins"][i]["x"].get<double>(), 90 * std::cos(2 * M_PI * i / 16), 1e-9);
+    EXPECT_NEAR(d["pins"][i]["y"].get<double>(), 90 * std::sin(2 * M_PI * i / 16), 1e-9);
+  }
+  EXPECT_NEAR(d["disc_centre_mm"][0].get<double>(), 4.5 * std::cos(20 * M_PI / 180), 1e-6);
+  EXPECT_NEAR(d["disc_centre_mm"][1].get<double>(), 4.5 * std::sin(20 * M_PI / 180), 1e-6);
 }
 
 }  // namespace

@@ -211,6 +211,7 @@ async function validate() {
   if (!state.doc) return false;
   const { data } = await api('POST', `/api/validate?path=${encodeURIComponent(state.path)}`, state.doc);
   showValidation(data.ok ? null : data.error);
+  if (data.ok && typeof data.cases === 'number') $('#validation').textContent = `The sweep is valid: ${data.cases} cases (${data.note}).`;
   return !!data.ok;
 }
 
@@ -444,16 +445,77 @@ async function drawMechanism(angle) {
   const study = state.mechanismStudy;
   if (!study) return;
   const seq = ++mechanismSeq;
-  const { status, data } = await api('POST', `/api/mechanism?angle=${angle}&points=720`, study);
+  // A sizing's optimum is the one its shown run wrote (result=its output folder).
+  const result = state.shown && state.shown.out ? `&result=${encodeURIComponent(state.shown.out)}` : '';
+  const { status, data } = await api('POST', `/api/mechanism?angle=${angle}&points=720${result}`, study);
   if (seq !== mechanismSeq) return;  // a newer angle is on its way
   if (status !== 200 || !data.supported) {
     $('#mechanism-note').textContent = status !== 200 ? data.error.message
-      : `the animation of ${data.kind || 'this kind'} is not there yet (LCR only)`;
+      : `the animation of ${data.kind || 'this kind'} is not there yet (${data.why || 'LCR, disc cam, cycloid and their sizings only'})`;
     svg.replaceChildren();
     return;
   }
+  if (data.kind === 'sizing') return drawSizing(svg, data, angle);
+  drawDesign(svg, data, study, angle);
+}
+
+function drawDesign(svg, data, study, angle) {
   if (data.kind === 'disc_cam') return drawDiscCam(svg, data, study, angle);
-  if (data.kind === 'cycloid') return drawCycloid(svg, data, angle);
+  if (data.kind === 'cycloid') return drawCycloid(svg, data, study, angle);
+  return drawLcr(svg, data, study, angle);
+}
+
+// The size a sizing changes, for the legend: the base circle, the turret radii or the pin circle.
+function sizeText(d) {
+  if (d.kind === 'disc_cam') return `base circle ${d.base_radius_mm.toFixed(3)} mm`;
+  if (d.kind === 'cycloid') return `pin circle ${d.roller_position_radius_mm.toFixed(3)} mm, pins ${d.roller_radius_mm.toFixed(3)} mm`;
+  return `turrets ${d.sides.map((s) => s.turret_radius_mm.toFixed(3)).join(' / ')} mm, e ${d.eccentricity_mm.toFixed(3)} mm`;
+}
+
+// A sizing: its start design grey and dashed under the optimum of its run, each drawn as its
+// analysis kind (the server's start and the run's best_*.json), in one frame holding both.
+function drawSizing(svg, data, angle) {
+  const drawn = [];
+  const why = [];
+  for (const which of ['start', 'optimum']) {
+    const d = data[which];
+    if (!d) { why.push('no optimum yet: run the study'); continue; }
+    if (!d.supported) { why.push(`${which}: ${d.why}`); continue; }
+    const tmp = document.createElementNS(SVG, 'svg');
+    drawDesign(tmp, d, d.study, angle);
+    const g = tmp.firstChild;
+    g.classList.add(`design-${which}`);
+    g.dataset.design = which;
+    drawn.push({ which, g, d, vb: tmp.getAttribute('viewBox').split(' ').map(Number),
+                 note: $('#mechanism-note').textContent, legend: $('#stress-legend').textContent });
+  }
+  if (!drawn.length) {
+    svg.replaceChildren();
+    $('#mechanism-note').textContent = why.join('; ');
+    return;
+  }
+  const x0 = Math.min(...drawn.map((v) => v.vb[0])), y0 = Math.min(...drawn.map((v) => v.vb[1]));
+  const x1 = Math.max(...drawn.map((v) => v.vb[0] + v.vb[2])), y1 = Math.max(...drawn.map((v) => v.vb[1] + v.vb[3]));
+  svg.setAttribute('viewBox', `${x0} ${y0} ${x1 - x0} ${y1 - y0}`);
+  svg.replaceChildren(...drawn.map((v) => v.g));  // the start first: under the optimum
+  svg.dataset.angle = String(angle);
+  const top = drawn[drawn.length - 1];
+  $('#mechanism-note').textContent = `${data.sizing_kind}, ${top.which}: ${top.note}${why.length ? ' (' + why.join('; ') + ')' : ''}`;
+  const legend = $('#stress-legend');
+  legend.replaceChildren();
+  for (const v of drawn) {
+    const row = document.createElement('div');
+    row.className = `legend-${v.which}`;
+    const key = svgEl('svg', { width: 28, height: 8 });
+    key.append(svgEl('line', { x1: 0, y1: 4, x2: 28, y2: 4, class: v.which === 'start' ? 'key-start' : 'key-optimum' }));
+    row.append(key, ` ${v.which === 'start' ? 'start design (grey, dashed)' : 'optimum of the run'}: ${sizeText(v.d)}`);
+    legend.append(row);
+  }
+  legend.append(Object.assign(document.createElement('div'), { textContent: top.legend }));
+}
+
+// The LCR: both cams, both turrets, the rollers coloured by their Hertz stress, the forces.
+function drawLcr(svg, data, study, angle) {
   const R = Math.max(...data.sides.map((s) => s.turret_radius_mm + s.roller_radius_mm)) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });
@@ -499,6 +561,7 @@ async function drawMechanism(angle) {
 // The disc cam with its follower standing (the cam turned by −θ); the roller coloured by the
 // pressure angle against its limit.
 function drawDiscCam(svg, data, study, angle) {
+  if (data.flat_face) return drawFlatFace(svg, data, study, angle);
   let R = 0;
   for (const p of data.profile_mm) R = Math.max(R, Math.hypot(p[0], p[1]));
   const c = data.roller_centre_mm;
@@ -533,21 +596,64 @@ function drawDiscCam(svg, data, study, angle) {
   $('#stress-legend').textContent = `roller coloured by |pressure angle|: yellow 0 → red ${limit}° (the limit); red dot: the contact point`;
 }
 
-// The cycloid disc on its pins, each pin coloured by its rigid-disc contact force.
-function drawCycloid(svg, data, angle) {
+// The disc cam with a flat-faced follower standing: the face (coloured by |pressure angle| against
+// its limit: 0 for a translating face, atan(d/ℓ) on an arm), its stem or arm, the contact point.
+function drawFlatFace(svg, data, study, angle) {
+  let R = 0;
+  for (const p of [...data.profile_mm, ...data.face_mm]) R = Math.max(R, Math.hypot(p[0], p[1]));
+  if (data.pivot_mm) R = Math.max(R, Math.hypot(data.pivot_mm[0], data.pivot_mm[1]));
+  svg.setAttribute('viewBox', `${-R * 1.1} ${-R * 1.45} ${R * 2.9} ${R * 2.9}`);
+  const g = svgEl('g', { transform: 'scale(1,-1)' });
+  g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.base_radius_mm }));
+  g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
+  g.append(svgEl('circle', { cx: 0, cy: 0, r: R * 0.02, fill: '#23395d' }));
+  const limit = (study.limits && study.limits.pressure_angle_deg) || (data.oscillating ? 45 : 30);
+  const foot = data.face_foot_mm, w = R * 0.025;
+  const [a, b] = data.face_mm;
+  if (data.oscillating) {
+    // The arm: from the pivot along its line, the face on its cam side at the offset d.
+    const o = data.pivot_mm, back = [b[0] - (foot[0] - o[0]), b[1] - (foot[1] - o[1])];
+    const body = [o, foot, a, b, back];
+    g.append(svgEl('path', { class: 'arm', d: 'M' + body.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z',
+                             style: `fill:rgba(60,60,60,0.15);stroke:#333;stroke-width:${w * 0.3}` }));
+    g.append(svgEl('circle', { cx: o[0], cy: o[1], r: R * 0.03, fill: '#333' }));
+  } else {
+    const n = data.face_normal, len = R * 1.2;
+    g.append(svgEl('line', { x1: foot[0], y1: foot[1], x2: foot[0] + len * n[0], y2: foot[1] + len * n[1], style: `stroke:#333;stroke-width:${w * 1.6}` }));
+  }
+  g.append(svgEl('line', { class: 'face', x1: a[0], y1: a[1], x2: b[0], y2: b[1],
+                           style: `stroke:${stressColour(Math.abs(data.pressure_angle_deg), limit)};stroke-width:${w * 1.4}`,
+                           'data-x1': a[0], 'data-y1': a[1], 'data-x2': b[0], 'data-y2': b[1] }));
+  g.append(svgEl('circle', { class: 'contact', cx: data.contact_mm[0], cy: data.contact_mm[1], r: R * 0.012, fill: '#c62828' }));
+  svg.replaceChildren(g);
+  svg.dataset.angle = String(angle);
+  $('#mechanism-note').textContent =
+    `${data.follower}: lift ${data.lift.toFixed(4)} ${data.oscillating ? 'rad' : 'mm'}, contact ${data.contact_on_face_mm.toFixed(3)} mm along the face, ` +
+    `pressure angle ${data.pressure_angle_deg.toFixed(2)}°, profile radius of curvature ${data.radius_of_curvature_mm.toFixed(2)} mm`;
+  $('#stress-legend').textContent = `face coloured by |pressure angle|: yellow 0 → red ${limit}°` +
+    `${data.oscillating ? ' (atan(d/ℓ))' : ' (0 for a face across the line of motion)'}; red dot: the contact point`;
+}
+
+// The cycloid disc on its pins, each pin coloured by its pair's Hertz pressure (by its rigid-disc
+// contact force when the study has no material: an unloaded-only study).
+function drawCycloid(svg, data, study, angle) {
   const R = (data.roller_position_radius_mm + data.roller_radius_mm) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
   const g = svgEl('g', { transform: 'scale(1,-1)' });
   g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.roller_position_radius_mm }));
   g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
-  const maxForce = data.max_pin_force_N || 1;
+  const pressures = typeof data.max_pressure_MPa === 'number';
+  const limit = study && study.limits && study.limits.contact_stress_MPa;
+  const top = pressures ? (limit || data.max_pressure_MPa || 1) : (data.max_pin_force_N || 1);
   data.pins.forEach((p, i) => {
+    const value = pressures ? p.pressure_MPa : p.force_N;
     const c = svgEl('circle', {
       class: 'roller', cx: p.x, cy: p.y, r: data.roller_radius_mm,
-      fill: p.loaded ? stressColour(p.force_N, maxForce) : '#e0e0e0',
-      'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y, 'data-force': p.force_N });
+      fill: p.loaded ? stressColour(value, top) : '#e0e0e0',
+      'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y, 'data-force': p.force_N,
+      'data-pressure': pressures ? p.pressure_MPa : '' });
     const t = svgEl('title', {});
-    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N`;
+    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N` + (pressures && p.loaded ? `, p0 = ${p.pressure_MPa.toFixed(0)} MPa` : '');
     c.append(t);
     g.append(c);
   });
@@ -560,10 +666,13 @@ function drawCycloid(svg, data, angle) {
   svg.replaceChildren(g);
   svg.dataset.angle = String(angle);
   $('#mechanism-note').textContent =
-    `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°`;
-  $('#stress-legend').textContent =
-    `pins coloured by contact force (rigid disc, nominal tooth, T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc): ` +
-    `yellow 0 → red ${maxForce.toFixed(0)} N; grey unloaded. The modified tooth's pressures are in the run's pressure maps`;
+    `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°` +
+    (pressures ? `; largest pair pressure ${data.max_pressure_MPa.toFixed(0)} MPa, largest pin force ${data.max_pin_force_N.toFixed(0)} N` : '');
+  const loads = `rigid disc, nominal tooth, T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc`;
+  $('#stress-legend').textContent = pressures
+    ? `pins coloured by their pair's Hertz pressure p0 = √(F E*/(π B R')) (${loads}): yellow 0 → red ${top.toFixed(0)} MPa` +
+      `${limit ? ' (the limit)' : ' (the largest)'}; grey unloaded. The modified tooth's pressures are in the run's pressure maps`
+    : `pins coloured by contact force (${loads}): yellow 0 → red ${top.toFixed(0)} N; grey unloaded`;
 }
 
 // ---- compare ----------------------------------------------------------------------------------

@@ -4,7 +4,11 @@
 // roller centres against the closed form (the centres on the turret circles, the output turret
 // turned by (1 − n_A m_B/(m_A n_B)) θ, paper eq. 2) and against the study's own series.csv (the
 // number of loaded rollers at that angle); a screenshot (SCREENSHOT; with SCREENSHOT_DIR set, also
-// copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png).
+// copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png);
+// then runs disc_cam_min_size.json and checks its optimum drawn over its start design (the two base
+// circles against the file's and result.json's, the outlines' smallest radii differing by the change),
+// runs the cycloid NNM drive (coarse) and checks each pin's drawn pressure against Hertz by hand, and
+// runs the oscillating flat face and checks the drawn face tangent to the drawn profile at the contact.
 //   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
 // Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
 import { spawn } from 'node:child_process';
@@ -30,6 +34,13 @@ const check = (ok, what) => { if (!ok) { failures.push(what); console.log(`FAIL:
 const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'camopt-studio-'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_ii.json'), path.join(dir, 'lcr_ii.json'));
 fs.copyFileSync(path.join(sourceDir, 'studies/examples/lcr_i.json'), path.join(dir, 'lcr_i.json'));
+fs.copyFileSync(path.join(sourceDir, 'studies/examples/disc_cam_min_size.json'), path.join(dir, 'disc_cam_min_size.json'));
+// The cycloid NNM drive on a coarse grid (the run takes well under a second; the drawing does not
+// depend on it).
+const cycloid = JSON.parse(fs.readFileSync(path.join(sourceDir, 'studies/examples/cycloid_ltca_nnm_none.json'), 'utf8'));
+cycloid.analysis = { crank_angles_per_mesh_period: 2, grid: [8, 8], estimate_error: false };
+fs.writeFileSync(path.join(dir, 'cycloid.json'), JSON.stringify(cycloid, null, 2));
+fs.copyFileSync(path.join(sourceDir, 'studies/examples/disc_cam_oscillating_flat_faced.json'), path.join(dir, 'flat_arm.json'));
 const study = JSON.parse(fs.readFileSync(path.join(dir, 'lcr_ii.json'), 'utf8'));
 
 const server = spawn(camopt, ['serve', '--port', '0', dir], { stdio: ['ignore', 'pipe', 'inherit'] });
@@ -155,6 +166,102 @@ try {
   const stressRow = compared.find((r) => r[0] === 'largest contact stress, input cam');
   check(stressRow && stressRow[1] !== stressRow[2], `the two runs differ: ${stressRow && stressRow.slice(1, 3).join(' vs ')}`);
   check(consoleErrors.length === 0, `still no console errors ${consoleErrors.join(' | ')}`);
+
+  // A sizing: disc_cam_min_size run, its optimum drawn over its start. The start's base circle is
+  // the file's (40 mm), the optimum's result.json's best; each profile's smallest radius is its
+  // base circle (the low dwell), so the two outlines differ there by the change of r_b.
+  await page.click('#files li[data-path="disc_cam_min_size.json"]');
+  await page.waitForSelector('body[data-loaded="disc_cam_min_size.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="3"]', { timeout: 120000 });
+  await page.click('#tabs button[data-tab="see"]').catch(() => {});
+  const sizingAngle = 200;
+  await page.$eval('#crank', (el, a) => { el.value = String(a); el.dispatchEvent(new Event('input')); }, sizingAngle);
+  await page.waitForSelector(`#mechanism[data-angle="${sizingAngle}"] g.design-optimum`, { timeout: 10000 });
+  const best = JSON.parse(fs.readFileSync(path.join(dir, 'results', 'disc_cam_min_size', 'result.json'), 'utf8')).best;
+  const outlines = await page.$$eval('#mechanism g[data-design]', (gs) => gs.map((g) => {
+    const base = g.querySelector('circle.turret');
+    const pts = g.querySelector('path.cam-input').getAttribute('d').slice(1).replace('Z', '').split('L')
+      .map((p) => p.split(',').map(Number));
+    return { which: g.dataset.design, base: Number(base.getAttribute('r')), smallest: Math.min(...pts.map((p) => Math.hypot(p[0], p[1]))) };
+  }));
+  const start = outlines.find((o) => o.which === 'start'), opt = outlines.find((o) => o.which === 'optimum');
+  check(start && opt, `two outlines drawn: ${outlines.map((o) => o.which).join(', ')}`);
+  if (start && opt) {
+    check(Math.abs(start.base - 40) < 1e-9 && Math.abs(opt.base - best.base_circle_radius_mm) < 1e-9,
+          `base circles ${start.base} (start, the file's 40) and ${opt.base} (optimum, result.json ${best.base_circle_radius_mm})`);
+    const drop = start.smallest - opt.smallest, want = 40 - best.base_circle_radius_mm;
+    check(Math.abs(drop - want) < 1e-4,
+          `the outlines' smallest radii differ by ${drop.toFixed(6)} mm, 40 − r_b,best = ${want.toFixed(6)} mm`);
+  }
+  const legend = await page.$eval('#stress-legend', (el) => el.textContent);
+  check(legend.includes('start design') && legend.includes('optimum of the run'), `legend: ${legend.slice(0, 160)}`);
+  check(consoleErrors.length === 0, `no console errors after the sizing ${consoleErrors.join(' | ')}`);
+  if (screenshot) {  // beside the first: the sizing's two designs (not copied to docs/images)
+    const sizingShot = path.join(path.dirname(screenshot), 'studio-sizing.png');
+    await page.screenshot({ path: sizingShot, fullPage: false });
+    console.log(`screenshot: ${sizingShot}`);
+  }
+
+  // The cycloid drive: each loaded pin's pressure against p0 = sqrt(F E*/(π B R')) by hand, the
+  // tooth's curvature at the nominal contact from docs/cycloid.md (C1).
+  await page.click('#files li[data-path="cycloid.json"]');
+  await page.waitForSelector('body[data-loaded="cycloid.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="4"]', { timeout: 120000 });
+  const crank = 50;
+  await page.$eval('#crank', (el, a) => { el.value = String(a); el.dispatchEvent(new Event('input')); }, crank);
+  await page.waitForSelector(`#mechanism[data-angle="${crank}"] circle[data-side="pins"]`, { timeout: 10000 });
+  const pins = await page.$$eval('#mechanism circle[data-side="pins"]', (cs) => cs.map((c) => ({
+    i: Number(c.dataset.index), f: Number(c.dataset.force), p: Number(c.dataset.pressure), fill: c.getAttribute('fill') })));
+  const dr = cycloid.drive, n1 = dr.rollers, n2 = dr.teeth, a = dr.roller_position_radius_mm, ecc = dr.eccentricity_mm;
+  const rho = dr.roller_radius_mm, B = dr.face_width_mm, nu = cycloid.material.poisson_ratio;
+  const eStar = cycloid.material.youngs_modulus_GPa * 1000 / (2 * (1 - nu * nu)), lam = ecc * n1 / a;
+  let worstP = 0, loadedPins = 0;
+  for (const pin of pins.filter((q) => q.f > 0)) {
+    ++loadedPins;
+    const t = 2 * Math.PI * pin.i / n1 + crank * Math.PI / 180 / n2, c = Math.cos((n1 - 1) * t);
+    const kx = (1 + n1 * lam * lam - (n1 + 1) * lam * c) / (a * Math.pow(1 + lam * lam - 2 * lam * c, 1.5));
+    const rEff = 1 / (kx / (1 - rho * kx) + 1 / rho);
+    worstP = Math.max(worstP, Math.abs(pin.p / Math.sqrt(pin.f * eStar / (Math.PI * B * rEff)) - 1));
+  }
+  check(pins.length === n1 && loadedPins === 8, `${pins.length} pins drawn, ${loadedPins} loaded at ${crank}°`);
+  check(worstP < 1e-9, `the pins' pressures within ${worstP.toExponential(2)} (relative) of Hertz by hand`);
+  const hottest = pins.reduce((x, y) => (y.p > x.p ? y : x));
+  check(hottest.fill === 'rgb(255, 0, 0)', `the largest pressure (pin ${hottest.i}, ${hottest.p.toFixed(1)} MPa) drawn red: ${hottest.fill}`);
+  const cycloidLegend = await page.$eval('#stress-legend', (el) => el.textContent);
+  check(cycloidLegend.includes('Hertz pressure'), `legend: ${cycloidLegend.slice(0, 120)}`);
+  check(consoleErrors.length === 0, `no console errors after the cycloid ${consoleErrors.join(' | ')}`);
+
+  // The flat face on an arm at 60°: by hand ξ = asin((r_b + d)/f) + 5° = 35°, the pivot drawn at
+  // (f, 0), the face the line (P − O₃)·m = d with m = (−sin ξ, −cos ξ) through both drawn ends and
+  // the contact, and no profile point on the arm's side of it.
+  await page.click('#files li[data-path="flat_arm.json"]');
+  await page.waitForSelector('body[data-loaded="flat_arm.json"]');
+  await page.click('#tabs button[data-tab="run"]');
+  await page.click('#run');
+  await page.waitForSelector('body[data-result="5"]', { timeout: 120000 });
+  await page.$eval('#crank', (el) => { el.value = '60'; el.dispatchEvent(new Event('input')); });
+  await page.waitForSelector('#mechanism[data-angle="60"] line.face', { timeout: 10000 });
+  const flat = await page.$eval('#mechanism', (svg) => {
+    const f = svg.querySelector('line.face'), c = svg.querySelector('circle.contact');
+    const pts = svg.querySelector('path.cam-input').getAttribute('d').slice(1).replace('Z', '').split('L').map((p) => p.split(',').map(Number));
+    return { ends: [[f.dataset.x1, f.dataset.y1], [f.dataset.x2, f.dataset.y2]].map((e) => e.map(Number)),
+             contact: [Number(c.getAttribute('cx')), Number(c.getAttribute('cy'))], pts };
+  });
+  const xi = Math.asin((40 + 10) / 100) + 5 * Math.PI / 180, mx = -Math.sin(xi), my = -Math.cos(xi);
+  const sideOf = (p) => (p[0] - 100) * mx + p[1] * my - 10;
+  const onLine = Math.max(...[...flat.ends, flat.contact].map((p) => Math.abs(sideOf(p))));
+  const armSide = Math.min(...flat.pts.map(sideOf));
+  check(onLine < 1e-5, `the face's ends and the contact on the line (P − O₃)·m = d within ${onLine.toExponential(2)} mm`);
+  check(armSide > -1e-5, `no profile point on the arm's side of the face (closest ${armSide.toExponential(2)} mm)`);
+  check(consoleErrors.length === 0, `no console errors after the flat face ${consoleErrors.join(' | ')}`);
+  if (screenshot) {
+    const flatShot = path.join(path.dirname(screenshot), 'studio-flat-face.png');
+    await page.screenshot({ path: flatShot, fullPage: false });
+  }
 } catch (e) {
   failures.push(String(e));
   console.log(`FAIL: ${e.stack || e}`);
