@@ -1,6 +1,7 @@
 #include "studies/writers.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,17 +15,19 @@ namespace camopt::studies {
 
 namespace {
 
-std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
+// printf's "%.10g" and "%.2f" (std::to_chars with a precision is specified as printf in the "C"
+// locale: the same characters, several times faster than snprintf, which formatted half of an
+// LCR analysis's instructions), cut to 31 characters as the 32-byte snprintf buffers did.
+std::string Formatted(double v, std::chars_format format, int precision) {
+  char buf[400];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, format, precision);
+  const size_t n = r.ec == std::errc() ? size_t(r.ptr - buf) : 0;
+  return std::string(buf, std::min<size_t>(n, 31));
 }
 
-std::string Px(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
+std::string Num(double v) { return Formatted(v, std::chars_format::general, 10); }
+
+std::string Px(double v) { return Formatted(v, std::chars_format::fixed, 2); }
 
 std::string Escape(const std::string& s) {
   std::string out;
