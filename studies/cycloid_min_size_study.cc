@@ -916,6 +916,7 @@ nlohmann::json StartJson(const optimizers::SolverResult& r) {
                       {"message", r.message},
                       {"objective", NumberOrNull(r.objective)},
                       {"max_violation", NumberOrNull(r.max_violation)},
+                      {"first_order_residual", NumberOrNull(r.first_order_residual)},
                       {"evaluations", r.value_evaluations},
                       {"gradient_evaluations", r.gradient_evaluations},
                       {"iterations", r.iterations}};

@@ -308,7 +308,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   for (const optimizers::SolverResult& st : o.starts)
     starts.push_back({{"status", optimizers::ToString(st.status)},
                       {"base_circle_radius_mm", st.x.empty() ? nlohmann::json(nullptr) : nlohmann::json(st.objective)},
-                      {"max_violation", st.max_violation}});
+                      {"max_violation", st.max_violation},
+                      {"first_order_residual", NumberOrNull(st.first_order_residual)}});
   j["optimizer"] = {{"backend", s.backend},
                     {"converged", o.converged},
                     {"status", optimizers::ToString(o.result.status)},
