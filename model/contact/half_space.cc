@@ -1,4 +1,5 @@
-// Half-space contact by Polonsky–Keer conjugate gradients (Polonsky & Keer 1999) with the
+// Half-space contact by Polonsky–Keer conjugate gradients (Polonsky & Keer 1999), preconditioned
+// by the inverse of the periodically continued kernel's circulant, with the
 // influence-coefficient convolution done by zero-padded FFT (DC-FFT, Liu, Wang & Liu 2000).
 // Influence coefficients: Love's rectangle solution, cycloid paper eq. (21) (love.h).
 #include "model/contact/half_space.h"
@@ -482,7 +483,7 @@ struct HalfSpaceSolver::Impl {
   std::map<std::pair<int, int>, std::unique_ptr<FftConvolver>> convolvers;
   std::map<std::tuple<int, int, double, double>, Kernel> kernels;
   std::map<std::tuple<int, int, double, double>, Kernel> inverse_kernels;  // preconditioners
-  std::vector<double> h, p, p_old, u, g, t, r;  // work arrays (h: the gap above its minimum)
+  std::vector<double> h, p, p_old, u, g, t, r, gm, z;  // work arrays (h: the gap above its minimum)
   std::vector<double> sorted;
   std::vector<std::pair<int, double>> corrections;
 
@@ -554,6 +555,10 @@ const SolverOptions& HalfSpaceSolver::options() const { return impl_->options; }
 // Each iteration: conjugate direction t on I_c, step τ by exact line search (one convolution
 // r = K t), projection onto p ≥ 0, cells with p = 0 and g < 0 (overlap) re-enter with p = −τ g
 // (and the conjugacy is reset), and, under load control, p is rescaled to the load.
+// Preconditioned (SolverOptions::precondition): the direction is built from z = P M g instead of
+// g, M the periodic kernel's inverse (MakePeriodicInverse) on I_c, P the zero-sum projection on
+// I_c under load control, β = gᵀz / (gᵀz)_previous: a preconditioned CG on the free set as in
+// Vollebregt's BCCG (J. Comput. Phys. 257 (2014) 333–351), one more FFT pair per iteration.
 // The displacement of the new pressure is not convolved afresh: u ← f (u − τ r + K c), where c is
 // the (usually few-cell) change made by the projection and the re-entry, added by a direct sum;
 // only when many cells change, and every kRefresh iterations against drift, is u = K p redone by
@@ -647,6 +652,12 @@ ContactSolution HalfSpaceSolver::Impl::SolveBody(const Grid& grid, const std::ve
   // Fallback step when the line search is degenerate (a single cell in contact gives G = 0):
   // the pressure that moves a cell's own surface by a unit gap.
   const double tau_self = e_star / kernel.self;
+  const Kernel& inverse = InverseKernelFor(grid, conv);
+  const bool precondition = options.precondition && !inverse.spectrum.empty();
+  if (precondition) {
+    gm.assign(n, 0.0);
+    z.assign(n, 0.0);
+  }
   // A direct sparse update costs n per changed cell; an FFT convolution about 10 n log2(4n).
   const size_t max_sparse = static_cast<size_t>(10.0 * std::log2(4.0 * static_cast<double>(n)));
   constexpr int kRefresh = 20;
@@ -718,8 +729,29 @@ ContactSolution HalfSpaceSolver::Impl::SolveBody(const Grid& grid, const std::ve
         if (!load_control) ++nc;
       }
     }
+    if (precondition) {
+      // z = M g on the contact set: the periodic kernel's inverse applied to g masked to I_c,
+      // taken on I_c and (load control) shifted to zero sum, so that the direction keeps the load.
+      double* const gmm = gm.data();
+      for (size_t i = 0; i < n; ++i) gmm[i] = pp[i] > 0 ? gg[i] : 0.0;
+      conv.Apply(inverse, gmm, z.data(), e_star);
+      double* const zz = z.data();
+      double z_bar = 0;
+      if (load_control && nc > 0) {
+        for (size_t i = 0; i < n; ++i)
+          if (pp[i] > 0) z_bar += zz[i];
+        z_bar /= static_cast<double>(nc);
+      }
+      big_g = 0;
+      for (size_t i = 0; i < n; ++i)
+        if (pp[i] > 0) {
+          zz[i] -= z_bar;
+          big_g += gg[i] * zz[i];
+        }
+    }
+    const double* const dir = precondition ? z.data() : gg;
     const double beta = (conjugate && g_old > 0) ? big_g / g_old : 0.0;
-    for (size_t i = 0; i < n; ++i) tt[i] = pp[i] > 0 ? gg[i] + beta * tt[i] : 0.0;
+    for (size_t i = 0; i < n; ++i) tt[i] = pp[i] > 0 ? dir[i] + beta * tt[i] : 0.0;
     g_old = big_g;
 
     convolve(t, r);

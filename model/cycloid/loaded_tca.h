@@ -66,6 +66,11 @@ struct LoadedOptions {
   double crank_slope_tolerance = 1e-4;
   /// Relative residual of the conjugate gradients of the implicit derivatives (Differentiate).
   double sensitivity_tolerance = 1e-10;
+  /// Precondition the final-tolerance contact solves (contact::SolverOptions::precondition): 7
+  /// instead of 19 CG iterations per final solve on the NNM cycle, each two FFT pairs
+  /// (docs/performance.md). The steering solves run the plain iteration either way. Off in the
+  /// cycloid sizing (CycloidSizingSpec::options).
+  bool precondition_solves = true;
 };
 
 /// One loaded roller-tooth pair at one crank angle.
