@@ -268,8 +268,8 @@ std::string Degrees(double v) {
 // the pins standing at a u(2πi/n1). Each pin's force is the rigid-disc load sharing of
 // model/cycloid/bearing_loads.h's RigidRingPinLoads (F_i = T l_i / Σ l_k², Σ F_i l_i = T; Blanche &
 // Yang 1989) at the disc's torque, and the Hertz pressure of that force on each pair: the nominal
-// (unmodified) tooth's, since the modification's clearance needs the loaded contact analysis of a
-// run (its pressure maps).
+// (unmodified) tooth's. With a run (LoadedRun), the pins' loads and pressures are instead the run's
+// loaded contact analysis at φ (CycloidRunAt), the nominal ones kept beside them.
 nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points, const LoadedRun* run) {
   const Node root(&study, "study", "");
   const cycloid_ltca::Study s = cycloid_ltca::Parse(root);
