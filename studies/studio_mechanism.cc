@@ -351,8 +351,19 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
   if (run->torque_Nm >= 0 && std::abs(run->torque_Nm - s.torque_Nm) > 1e-9 * std::max(1.0, std::abs(s.torque_Nm)))
     return note("the run's torque " + Degrees(run->torque_Nm) + " N m is not the study's " + Degrees(s.torque_Nm) +
                 " N m: run the study again");
-  const nlohmann::json at = CycloidRunAt(run->per_angle_csv, d.rollers, crank_deg);
+  nlohmann::json at = CycloidRunAt(run->per_angle_csv, d.rollers, crank_deg);
   if (at.contains("why")) return note(at["why"].get<std::string>());
+  // The drive the run solved, against the study's: the unloaded transmission error β0 at the
+  // first row used (model/cycloid/unloaded_tca.h, eq. 14) moves with every dimension and the
+  // profile modification.
+  if (at["unloaded_te_arcsec"].is_number()) {
+    const double row_deg = at["angles_deg"][0], run_te = at["unloaded_te_arcsec"];
+    const double te = cycloid::UnloadedTca<double>(d, row_deg * kPi / 180.0).rotation * 180.0 * 3600.0 / kPi;
+    if (std::abs(te - run_te) > 1e-6 * std::max(1.0, std::abs(te)))
+      return note("the run's unloaded transmission error at " + Degrees(row_deg) + "° (" + Degrees(run_te) +
+                  " arcsec) is not the study's drive's (" + Degrees(te) + " arcsec): run the study again");
+  }
+  at.erase("unloaded_te_arcsec");
   const bool pressures = !at["pressure_MPa"].empty();
   double run_force = 0, run_pressure = 0;
   for (int i = 0; i < d.rollers; ++i) {
@@ -529,7 +540,9 @@ nlohmann::json CycloidRunAt(const std::string& per_angle_csv, int rollers, doubl
     }
   }
   const double a1 = a[j1] + (j1 < j0 || (j1 == j0 && s1 != s0) ? double(periods) * tau : 0.0);
+  const std::vector<double>* te = Column(names, columns, "unloaded_te_arcsec");
   return {{"force_N", force},
+          {"unloaded_te_arcsec", te ? nlohmann::json((*te)[j0]) : nlohmann::json(nullptr)},
           {"pressure_MPa", press},
           {"rows", {j0, t == 0 ? j0 : j1}},
           {"angles_deg", {a[j0], t == 0 ? a[j0] : a1}},

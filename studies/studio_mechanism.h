@@ -38,7 +38,8 @@ namespace camopt::studies {
 ///   "run_note", "run"]}: without a run, each pin's rigid-disc force on the nominal tooth and, with
 ///   the study's material (a loaded study), its Hertz line-contact peak pressure over the face width
 ///   (−1: a conformal pair). With `run` (its per_angle.csv, see LoadedRun), each pin's force_N and
-///   pressure_MPa are the run's LTCA pair load and the pair's own peak pressure at θ (CycloidRunAt),
+///   pressure_MPa are the run's LTCA pair load and the pair's own peak pressure at θ (CycloidRunAt;
+///   a run whose torque or unloaded transmission error at that row is not the study's is not used),
 ///   the nominal ones kept as nominal_force_N, nominal_pressure_MPa, and "run": {"file",
 ///   "rows" (the two data rows, from 0), "angles_deg" (theirs), "weight" (of the second),
 ///   "pin_shift" (θ's pin i is the rows' pin i − pin_shift), "pressures" (false: a run without the
@@ -75,7 +76,8 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
 /// interpolated with weight t = ψ/h − j. Other angle sets are interpolated between their
 /// neighbouring rows within [φ_0, φ_last] (θ taken modulo 360°) only. Loads and pressures are each
 /// interpolated linearly (exact at the run's angles). Returns {"force_N": [n1], "pressure_MPa":
-/// [n1] (empty without the pressure columns), "rows", "angles_deg", "weight", "pin_shift"} or
+/// [n1] (empty without the pressure columns), "rows", "angles_deg", "weight", "pin_shift",
+/// "unloaded_te_arcsec" (of the first row; null without the column)} or
 /// {"why": text} when the run cannot give θ.
 nlohmann::json CycloidRunAt(const std::string& per_angle_csv, int rollers, double crank_deg);
 

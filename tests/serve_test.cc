@@ -861,6 +861,14 @@ TEST(Serve, CycloidMechanismTakesThePinsFromTheLoadedRun) {
   const json m = json::parse(res->body);
   EXPECT_EQ(m["pin_source"], "nominal");
   EXPECT_NE(m.value("run_note", "").find("torque"), std::string::npos) << res->body.substr(0, 300);
+  // A drive edited since its run (the profile modification Δa): its unloaded TE differs, not used.
+  edited = json::parse(body);
+  edited["modification"]["delta_position_um"] = -20;
+  res = c.Post("/api/mechanism?angle=10&result=results/nnm", edited.dump(), "application/json");
+  ASSERT_TRUE(res);
+  const json moved = json::parse(res->body);
+  EXPECT_EQ(moved["pin_source"], "nominal");
+  EXPECT_NE(moved.value("run_note", "").find("unloaded transmission error"), std::string::npos) << res->body.substr(0, 300);
   // A folder outside the studio's is refused.
   res = c.Post("/api/mechanism?angle=0&result=../..", body, "application/json");
   ASSERT_TRUE(res);
