@@ -215,14 +215,17 @@ struct CycloidDrive {
         },
         progress);
     const size_t n1 = size_t(study.drive.rollers);
-    std::vector<double> deg, ute, p, pairs, load(phi.size() * n1, 0.0);
+    std::vector<double> deg, ute, p, pairs, load(phi.size() * n1, 0.0), peak(phi.size() * n1, 0.0);
     for (size_t k = 0; k < c.meshes.size(); ++k) {
       const cycloid::MeshLoad& m = c.meshes[k];
       deg.push_back(phi[k] * 180.0 / kPi);
       ute.push_back(m.unloaded_rotation_rad * cycloid::kArcsecPerRad);
       p.push_back(m.max_pressure_MPa);
       pairs.push_back(m.pairs_in_contact);
-      for (const cycloid::PairLoad& q : m.pairs) load[k * n1 + size_t(q.roller)] = q.load_N;
+      for (const cycloid::PairLoad& q : m.pairs) {
+        load[k * n1 + size_t(q.roller)] = q.load_N;
+        peak[k * n1 + size_t(q.roller)] = q.max_pressure_MPa;
+      }
     }
     py::dict d;
     d["crank_angle_deg"] = Vector(deg);
@@ -232,6 +235,7 @@ struct CycloidDrive {
     d["max_contact_stress_MPa"] = Vector(p);
     d["pairs_in_contact"] = Vector(pairs);
     d["roller_load_N"] = Matrix(load, phi.size(), n1);
+    d["roller_max_pressure_MPa"] = Matrix(peak, phi.size(), n1);
     d["converged"] = c.converged;
     return d;
   }
@@ -366,7 +370,8 @@ void AddModels(py::module_& m) {
       .def("loads", &CycloidDrive::Loads, py::arg("angles_rad"), py::arg("progress") = py::none(),
            "Loaded TCA under the study's torque per disc at the crank angles [rad] (in order): crank_angle_deg,\n"
            "lte_arcsec, unloaded_te_arcsec, gear_ratio, max_contact_stress_MPa, pairs_in_contact,\n"
-           "roller_load_N (angles x rollers), converged. Ctrl-C raises KeyboardInterrupt.");
+           "roller_load_N and roller_max_pressure_MPa (each pair's own peak; angles x rollers), converged.\n"
+           "Ctrl-C raises KeyboardInterrupt.");
 
   py::class_<DiscCam>(m, "DiscCam",
                       "The cam of a disc_cam study with a roller or knife-edge follower (model/disc_cam): its profile "

@@ -974,10 +974,13 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
   Table table;
   std::vector<double> col_angle, col_lte, col_ute, col_gr, col_p, col_pairs;
-  std::vector<std::vector<double>> col_load(n1, std::vector<double>(n, 0.0));
+  std::vector<std::vector<double>> col_load(n1, std::vector<double>(n, 0.0)), col_pmax = col_load;
   for (size_t k = 0; k < cycle.meshes.size(); ++k) {
     const MeshLoad& m = cycle.meshes[k];
-    for (const PairLoad& p : m.pairs) col_load[p.roller][k] = p.load_N;
+    for (const PairLoad& p : m.pairs) {
+      col_load[p.roller][k] = p.load_N;
+      col_pmax[p.roller][k] = p.max_pressure_MPa;  // the peak of the pair's half-space pressure field
+    }
     col_angle.push_back(r.crank_angles_rad[k] * 180.0 / kPi);
     col_lte.push_back(cycle.lte_arcsec[k]);
     col_ute.push_back(m.unloaded_rotation_rad * kArcsecPerRad);
@@ -993,6 +996,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   table.Add("pairs_in_contact", col_pairs);
   for (int i = 0; i < n1; ++i) table.Add("load_roller_" + std::to_string(i + 1) + "_N", col_load[i]);
   if (s.output && r.output_failed.empty()) table.Add("eccentric_bearing_load_N", r.bearing_load_at_ltca_angles_N);
+  // Each pair's own peak pressure (0 off contact), after every other column: the row's largest is
+  // max_contact_stress_MPa.
+  for (int i = 0; i < n1; ++i) table.Add("max_pressure_roller_" + std::to_string(i + 1) + "_MPa", col_pmax[i]);
   PlotOptions po = WriteTransmissionErrorFiles(s, r, table, col_angle, "Loaded transmission error",
                                                {{"loaded", col_angle, col_lte}, {"unloaded", col_angle, col_ute}}, out);
   po.title = "Instantaneous gear ratio";

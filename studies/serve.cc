@@ -533,7 +533,25 @@ void Routes(httplib::Server& server, Studio& studio) {
           optimum = ParseStudyText(ReadFileCapped(r.path.string(), size_t{64} << 20, "file"), rel,
                                    CurrentInputLimits().max_depth);
       }
-      SendJson(res, MechanismAt(study, angle, points, optimum));
+      // A cycloid_ltca study with result=FOLDER: the pins' loads and pressures of that run's LTCA
+      // (its per_angle.csv; result.json's torque checked against the study's).
+      std::optional<LoadedRun> run;
+      if (req.has_param("result") && kind == "cycloid_ltca") {
+        const std::string folder = req.get_param_value("result");
+        const Resolved r = Resolve(root, folder + "/per_angle.csv", true);
+        std::error_code ec;
+        if (r.status != 200 && r.status != 404) return SendError(res, r.status, r.message);
+        if (r.status == 200 && fs::is_regular_file(r.path, ec)) {
+          run = LoadedRun{folder, ReadFileCapped(r.path.string(), size_t{64} << 20, "file")};
+          const Resolved rj = Resolve(root, folder + "/result.json", true);
+          if (rj.status == 200 && fs::is_regular_file(rj.path, ec)) {
+            const json result = json::parse(ReadFileCapped(rj.path.string(), size_t{64} << 20, "file"), nullptr, false);
+            if (result.is_object() && result.contains("torque_Nm") && result["torque_Nm"].is_number())
+              run->torque_Nm = result["torque_Nm"].get<double>();
+          }
+        }
+      }
+      SendJson(res, MechanismAt(study, angle, points, optimum, run ? &*run : nullptr));
     } catch (const StudyError& e) {
       SendJson(res, {{"error", ErrorJson(e)}}, 422);
     }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -219,15 +222,55 @@ nlohmann::json DiscCamAt(const nlohmann::json& study, double theta_deg, int poin
   return out;
 }
 
+// A CSV's numeric columns by name (the writers' ToCsv: a header line, then one row per line).
+// False (with why) for a text that is not such a table.
+bool ReadCsvColumns(const std::string& text, std::vector<std::string>& names,
+                    std::vector<std::vector<double>>& columns, std::string& why) {
+  std::istringstream in(text);
+  std::string line;
+  if (!std::getline(in, line)) return why = "an empty file", false;
+  names.clear();
+  std::string cell;
+  for (std::istringstream h(line); std::getline(h, cell, ',');) names.push_back(cell);
+  columns.assign(names.size(), {});
+  for (size_t row = 1; std::getline(in, line); ++row) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    size_t c = 0;
+    for (std::istringstream r(line); std::getline(r, cell, ','); ++c) {
+      char* end = nullptr;
+      const double v = std::strtod(cell.c_str(), &end);
+      if (c >= names.size() || cell.empty() || *end != '\0' || !std::isfinite(v))
+        return why = "row " + std::to_string(row) + ", column " + std::to_string(c + 1) + ": not a number", false;
+      columns[c].push_back(v);
+    }
+    if (c != names.size()) return why = "row " + std::to_string(row) + " has " + std::to_string(c) + " cells", false;
+  }
+  return true;
+}
+
+// A column by name, or null.
+const std::vector<double>* Column(const std::vector<std::string>& names, const std::vector<std::vector<double>>& columns,
+                                  const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? nullptr : &columns[size_t(it - names.begin())];
+}
+
+std::string Degrees(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
 // A cycloid drive at crank angle φ: the disc's tooth profile (model/cycloid/tooth_profile.h's
 // ToothProfile, the load-distribution paper's eqs. 1–4, with the profile modification) in the disc
 // frame, placed at its centre e u(φ) and turned by −φ/n2 (the inverse of RollerCentreInDisc), and
 // the pins standing at a u(2πi/n1). Each pin's force is the rigid-disc load sharing of
 // model/cycloid/bearing_loads.h's RigidRingPinLoads (F_i = T l_i / Σ l_k², Σ F_i l_i = T; Blanche &
 // Yang 1989) at the disc's torque, and the Hertz pressure of that force on each pair: the nominal
-// (unmodified) tooth's, since the modification's clearance needs the loaded contact analysis of a
-// run (its pressure maps).
-nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points) {
+// (unmodified) tooth's. With a run (LoadedRun), the pins' loads and pressures are instead the run's
+// loaded contact analysis at φ (CycloidRunAt), the nominal ones kept beside them.
+nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int points, const LoadedRun* run) {
   const Node root(&study, "study", "");
   const cycloid_ltca::Study s = cycloid_ltca::Parse(root);
   const cycloid::Drive& d = s.drive;
@@ -293,6 +336,73 @@ nlohmann::json CycloidAt(const nlohmann::json& study, double crank_deg, int poin
         "Hertz line contact of each pin's force over the face width, 1/R' = tooth curvature + 1/pin radius at "
         "the nominal contact";
   }
+  out["pin_source"] = "nominal";
+  out["pin_source_label"] = "nominal rigid disc, no run";
+  if (!run) return out;
+  // The run's loaded tooth contact analysis (its per_angle.csv): the modified, crowned tooth's pair
+  // loads and each pair's own peak pressure (cycloid load-distribution paper eqs. 15–26).
+  const std::string file = run->folder + "/per_angle.csv";
+  const auto note = [&](const std::string& why) {
+    out["run_note"] = file + ": " + why + "; the pins show the nominal rigid disc";
+    out["pin_source_label"] = "nominal rigid disc (" + why + ")";
+    return out;
+  };
+  if (!s.loaded) return note("the study asks for the unloaded evaluation only");
+  if (run->torque_Nm >= 0 && std::abs(run->torque_Nm - s.torque_Nm) > 1e-9 * std::max(1.0, std::abs(s.torque_Nm)))
+    return note("the run's torque " + Degrees(run->torque_Nm) + " N m is not the study's " + Degrees(s.torque_Nm) +
+                " N m: run the study again");
+  nlohmann::json at = CycloidRunAt(run->per_angle_csv, d.rollers, crank_deg);
+  if (at.contains("why")) return note(at["why"].get<std::string>());
+  // The drive the run solved, against the study's: the unloaded transmission error β0 at the
+  // first row used (model/cycloid/unloaded_tca.h, eq. 14) moves with every dimension and the
+  // profile modification.
+  if (at["unloaded_te_arcsec"].is_number()) {
+    const double row_deg = at["angles_deg"][0], run_te = at["unloaded_te_arcsec"];
+    const double te = cycloid::UnloadedTca<double>(d, row_deg * kPi / 180.0).rotation * 180.0 * 3600.0 / kPi;
+    if (std::abs(te - run_te) > 1e-6 * std::max(1.0, std::abs(te)))
+      return note("the run's unloaded transmission error at " + Degrees(row_deg) + "° (" + Degrees(run_te) +
+                  " arcsec) is not the study's drive's (" + Degrees(te) + " arcsec): run the study again");
+  }
+  at.erase("unloaded_te_arcsec");
+  const bool pressures = !at["pressure_MPa"].empty();
+  double run_force = 0, run_pressure = 0;
+  for (int i = 0; i < d.rollers; ++i) {
+    nlohmann::json& pin = out["pins"][size_t(i)];
+    pin["nominal_force_N"] = pin["force_N"];
+    const double f = at["force_N"][size_t(i)];
+    pin["force_N"] = f;
+    pin["loaded"] = f > 0;
+    pin.erase("effective_radius_mm");  // the nominal contact's
+    if (pin.contains("pressure_MPa")) pin["nominal_pressure_MPa"] = pin["pressure_MPa"];
+    pin.erase("pressure_MPa");
+    if (pressures) {
+      const double p = at["pressure_MPa"][size_t(i)];
+      pin["pressure_MPa"] = p;
+      run_pressure = std::max(run_pressure, p);
+    }
+    run_force = std::max(run_force, f);
+  }
+  out["max_pin_force_N"] = run_force;
+  if (pressures) {
+    out["max_pressure_MPa"] = run_pressure;
+  } else {
+    out.erase("max_pressure_MPa");
+    out["run_note"] = file + ": no max_pressure_roller_i_MPa columns (a run of an earlier camopt): pins coloured by "
+                             "the run's loads; run the study again for its pressures";
+  }
+  const double w = at["weight"];
+  out["run"] = at;
+  out["run"].erase("force_N");
+  out["run"].erase("pressure_MPa");
+  out["run"]["file"] = file;
+  out["run"]["pressures"] = pressures;
+  out["pin_source"] = "run";
+  out["pin_forces"] = "the run's loaded tooth contact analysis (modified, crowned tooth): its pair loads";
+  out["pin_pressures"] = "the run's own peak pressure of each pair's half-space contact solution";
+  const std::string a0 = Degrees(at["angles_deg"][0].get<double>()), a1 = Degrees(at["angles_deg"][1].get<double>());
+  out["pin_source_label"] = "loaded run " + file + ", crank angle " + Degrees(crank_deg) + "°" +
+                            (w == 0 ? " (its row at " + a0 + "°)"
+                                    : " (linear between its rows at " + a0 + "° and " + a1 + "°)");
   return out;
 }
 
@@ -356,8 +466,94 @@ std::string SizingOptimumFile(const std::string& kind) {
   return a.empty() ? a : "best_" + a + ".json";
 }
 
+nlohmann::json CycloidRunAt(const std::string& per_angle_csv, int rollers, double crank_deg) {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+  std::string why;
+  if (!ReadCsvColumns(per_angle_csv, names, columns, why)) return {{"why", why}};
+  const std::vector<double>* angles = Column(names, columns, "crank_angle_deg");
+  if (!angles || angles->empty()) return {{"why", "no crank_angle_deg rows"}};
+  if (Column(names, columns, "load_roller_" + std::to_string(rollers + 1) + "_N"))
+    return {{"why", "the run has more than the study's " + std::to_string(rollers) + " pins"}};
+  std::vector<const std::vector<double>*> load, pressure;
+  for (int i = 1; i <= rollers; ++i) {
+    load.push_back(Column(names, columns, "load_roller_" + std::to_string(i) + "_N"));
+    if (!load.back()) return {{"why", "no load_roller_" + std::to_string(i) + "_N column (not a loaded run of this drive)"}};
+    pressure.push_back(Column(names, columns, "max_pressure_roller_" + std::to_string(i) + "_MPa"));
+  }
+  const bool pressures = std::all_of(pressure.begin(), pressure.end(), [](const auto* c) { return c != nullptr; });
+  const std::vector<double>& a = *angles;
+  const size_t n = a.size();
+  for (size_t k = 1; k < n; ++k)
+    if (!(a[k] > a[k - 1])) return {{"why", "its crank angles are not increasing"}};
+  // Two rows j0, j1 with pin shifts s0, s1 and the weight t of j1.
+  const double tau = 360.0 / rollers, tol = 1e-6 + 1e-9 * std::abs(a.back());
+  size_t j0 = 0, j1 = 0;
+  long s0 = 0, s1 = 0;
+  double t = 0;
+  bool uniform = n >= 2;
+  long periods = 0;
+  if (uniform) {
+    const double span = (a.back() - a.front()) * double(n) / double(n - 1);  // N h
+    periods = std::lround(span / tau);
+    uniform = periods >= 1 && std::abs(span - double(periods) * tau) <= 1e-6 * tau;
+    for (size_t k = 0; uniform && k < n; ++k)
+      uniform = std::abs(a[k] - a.front() - double(k) * periods * tau / double(n)) <= tol;
+  }
+  if (uniform) {
+    const double span = double(periods) * tau, h = span / double(n);
+    const double x = crank_deg - a.front();
+    const double m = std::floor(x / span);
+    double psi = (x - m * span) / h;  // in rows
+    if (psi >= double(n)) psi = 0, s0 += periods;  // rounding at the top of the span
+    j0 = size_t(std::floor(psi));
+    t = psi - double(j0);
+    if (t > 1 - 1e-9) t = 0, ++j0;  // a run's own angle: its row
+    if (t < 1e-9) t = 0;
+    s0 += long(m) * periods;
+    if (j0 >= n) j0 -= n, s0 += periods;
+    j1 = j0 + 1, s1 = s0;
+    if (j1 == n) j1 = 0, s1 += periods;
+  } else {
+    double x = crank_deg - 360.0 * std::floor((crank_deg - a.front()) / 360.0);  // in [φ_0, φ_0 + 360)
+    if (x > a.back() + tol && std::abs(x - 360.0 - a.front()) <= tol) x -= 360.0;
+    if (x < a.front() - tol || x > a.back() + tol)
+      return {{"why", "its crank angles " + Degrees(a.front()) + "° to " + Degrees(a.back()) + "° (" + std::to_string(n) +
+                          ", not whole mesh periods of " + Degrees(tau) + "° uniformly) do not reach " +
+                          Degrees(crank_deg) + "°"}};
+    j0 = size_t(std::upper_bound(a.begin(), a.end(), x) - a.begin());
+    j0 = j0 == 0 ? 0 : j0 - 1;
+    if (j0 + 1 >= n) j0 = n >= 2 ? n - 2 : 0;
+    j1 = std::min(j0 + 1, n - 1);
+    t = j1 == j0 ? 0.0 : std::clamp((x - a[j0]) / (a[j1] - a[j0]), 0.0, 1.0);
+    if (t < 1e-9) t = 0;
+    if (t > 1 - 1e-9) t = 0, j0 = j1;
+  }
+  const auto pin = [&](int i, long shift) { return size_t(((i - shift) % rollers + rollers) % rollers); };
+  nlohmann::json force = nlohmann::json::array(), press = nlohmann::json::array();
+  for (int i = 0; i < rollers; ++i) {
+    const double f0 = (*load[pin(i, s0)])[j0], f1 = (*load[pin(i, s1)])[j1];
+    force.push_back(t == 0 ? f0 : (1 - t) * f0 + t * f1);
+    if (pressures) {
+      const double p0 = (*pressure[pin(i, s0)])[j0], p1 = (*pressure[pin(i, s1)])[j1];
+      press.push_back(t == 0 ? p0 : (1 - t) * p0 + t * p1);
+    }
+  }
+  const double a1 = a[j1] + (j1 < j0 || (j1 == j0 && s1 != s0) ? double(periods) * tau : 0.0);
+  const std::vector<double>* te = Column(names, columns, "unloaded_te_arcsec");
+  return {{"force_N", force},
+          {"unloaded_te_arcsec", te ? nlohmann::json((*te)[j0]) : nlohmann::json(nullptr)},
+          {"pressure_MPa", press},
+          {"rows", {j0, t == 0 ? j0 : j1}},
+          {"angles_deg", {a[j0], t == 0 ? a[j0] : a1}},
+          {"weight", t},
+          {"pin_shift", ((s0 % rollers) + rollers) % rollers},
+          {"interpolation", t == 0 ? "the run's row" : "linear between the two rows"},
+          {"uniform_mesh_periods", uniform ? periods : 0}};
+}
+
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
-                           const nlohmann::json& optimum) {
+                           const nlohmann::json& optimum, const LoadedRun* run) {
   points = std::clamp(points, 36, 4000);
   if (!std::isfinite(input_angle_deg) || std::abs(input_angle_deg) > 1e6)
     throw StudyError("angle: expected a finite input angle in degrees within ±1e6, found " +
@@ -367,7 +563,7 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
                                : std::string();
   if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
   if (kind == "disc_cam") return DiscCamAt(study, input_angle_deg, points);
-  if (kind == "cycloid_ltca") return CycloidAt(study, input_angle_deg, points);
+  if (kind == "cycloid_ltca") return CycloidAt(study, input_angle_deg, points, run);
   if (!SizingAnalysisKind(kind).empty()) return SizingAt(kind, study, optimum, input_angle_deg, points);
   return {{"kind", kind}, {"supported", false}};
 }

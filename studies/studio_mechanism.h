@@ -34,9 +34,17 @@ namespace camopt::studies {
 ///   "roller_position_radius_mm", "roller_radius_mm", "disc_centre_mm", "disc_rotation_deg",
 ///   "profile_mm" (the disc, at least 48 points per pin), "pins": [{"x", "y", "force_N", "loaded"[,
 ///   "pressure_MPa", "effective_radius_mm"]}, …], "disc_torque_Nmm", "max_pin_force_N"[,
-///   "max_pressure_MPa", "composite_modulus_MPa"]}: each pin's rigid-disc force on the nominal tooth
-///   and, with the study's material (a loaded study), its Hertz line-contact peak pressure over the
-///   face width (−1: a conformal pair).
+///   "max_pressure_MPa", "composite_modulus_MPa"], "pin_source": "nominal"|"run", "pin_source_label"[,
+///   "run_note", "run"]}: without a run, each pin's rigid-disc force on the nominal tooth and, with
+///   the study's material (a loaded study), its Hertz line-contact peak pressure over the face width
+///   (−1: a conformal pair). With `run` (its per_angle.csv, see LoadedRun), each pin's force_N and
+///   pressure_MPa are the run's LTCA pair load and the pair's own peak pressure at θ (CycloidRunAt;
+///   a run whose torque or unloaded transmission error at that row is not the study's is not used),
+///   the nominal ones kept as nominal_force_N, nominal_pressure_MPa, and "run": {"file",
+///   "rows" (the two data rows, from 0), "angles_deg" (theirs), "weight" (of the second),
+///   "pin_shift" (θ's pin i is the rows' pin i − pin_shift), "pressures" (false: a run without the
+///   per-pair pressure columns, the pins coloured by force)}; a run it cannot use is said in
+///   "run_note" and the nominal view drawn.
 /// A sizing kind (lcr_min_size, cycloid_min_size, disc_cam_min_size), its start design against the
 /// optimum of its run, each drawn as its analysis kind (SizingAnalysisKind) is:
 ///   {"kind": "sizing", "sizing_kind", "supported": true, "analysis_kind",
@@ -48,8 +56,30 @@ namespace camopt::studies {
 /// design the analysis kind refuses is {"supported": false, "why", "study"}.
 /// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
 /// would refuse (the kind's Parse).
+/// A finished run of a cycloid_ltca study: its output folder (as shown) and the text of its
+/// per_angle.csv (crank_angle_deg, load_roller_i_N and max_pressure_roller_i_MPa of i = 1 … n1).
+struct LoadedRun {
+  std::string folder;
+  std::string per_angle_csv;
+  double torque_Nm = -1;  ///< result.json's torque_Nm (< 0: not known), checked against the study's
+};
+
 nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
-                           const nlohmann::json& optimum = nullptr);
+                           const nlohmann::json& optimum = nullptr, const LoadedRun* run = nullptr);
+
+/// The run's pair loads at crank angle θ [deg] from its per-angle rows φ_k (in increasing order).
+/// The drive repeats every mesh period τ = 360°/n1 turned by one pin (pin i at φ + τ carries what
+/// pin i − 1 carries at φ: the pins and the disc's n2 teeth both turn into themselves), so a run
+/// whose angles sample P whole mesh periods uniformly (φ_k = φ_0 + k h, N h = P τ, the default
+/// crank_angles_per_mesh_period and its refined set) gives every θ: θ − φ_0 = m N h + ψ, ψ in
+/// [0, N h), pin shift m P; rows j = ⌊ψ/h⌋ and j + 1 (row N: row 0 with P pins more) linearly
+/// interpolated with weight t = ψ/h − j. Other angle sets are interpolated between their
+/// neighbouring rows within [φ_0, φ_last] (θ taken modulo 360°) only. Loads and pressures are each
+/// interpolated linearly (exact at the run's angles). Returns {"force_N": [n1], "pressure_MPa":
+/// [n1] (empty without the pressure columns), "rows", "angles_deg", "weight", "pin_shift",
+/// "unloaded_te_arcsec" (of the first row; null without the column)} or
+/// {"why": text} when the run cannot give θ.
+nlohmann::json CycloidRunAt(const std::string& per_angle_csv, int rollers, double crank_deg);
 
 /// The analysis kind a sizing kind's designs are studies of ("disc_cam" for "disc_cam_min_size");
 /// empty for a kind that is not a sizing.

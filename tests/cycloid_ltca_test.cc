@@ -623,6 +623,8 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
   ASSERT_EQ(j["per_angle"].size(), angles.size());
   EXPECT_TRUE(per_angle.count("load_roller_16_N"));
   EXPECT_FALSE(per_angle.count("load_roller_17_N"));
+  EXPECT_TRUE(per_angle.count("max_pressure_roller_16_MPa"));
+  EXPECT_FALSE(per_angle.count("max_pressure_roller_17_MPa"));
   double max_stress = 0, lte_min = kInf, lte_max = -kInf;
   for (size_t k = 0; k < angles.size(); ++k) {
     const nlohmann::json& row = j["per_angle"][k];
@@ -634,6 +636,9 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
     for (const nlohmann::json& pair : row["loads"]) {
       const std::string column = "load_roller_" + std::to_string(pair["roller"].get<int>()) + "_N";
       EXPECT_TRUE(near(per_angle.at(column)[k], pair["load_N"])) << column << " at row " << k;
+      // Each pair's own peak pressure: the pair's max_contact_stress_MPa of result.json.
+      const std::string pressure = "max_pressure_roller_" + std::to_string(pair["roller"].get<int>()) + "_MPa";
+      EXPECT_TRUE(near(per_angle.at(pressure)[k], pair["max_contact_stress_MPa"])) << pressure << " at row " << k;
       loaded += pair["load_N"].get<double>() > 0;
     }
     EXPECT_GE(loaded, 1) << k;

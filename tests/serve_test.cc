@@ -9,6 +9,8 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -723,6 +725,176 @@ TEST(Serve, SizingMechanismDrawsTheLcrOptimumAgainstItsStart) {
       }
     }
   }
+}
+
+// per_angle.csv as text cells and numbers by column name (the test's own reading of the file).
+struct CsvTable {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> text;  // rows of cells
+  double At(size_t row, const std::string& name) const {
+    const size_t c = size_t(std::find(names.begin(), names.end(), name) - names.begin());
+    EXPECT_LT(c, names.size()) << name;
+    return c < names.size() ? std::stod(text[row][c]) : NAN;
+  }
+};
+CsvTable ReadCsv(const fs::path& file) {
+  std::istringstream in(ReadFile(file));
+  CsvTable t;
+  std::string line, cell;
+  for (bool header = true; std::getline(in, line); header = false) {
+    std::vector<std::string> cells;
+    for (std::istringstream r(line); std::getline(r, cell, ',');) cells.push_back(cell);
+    if (header) t.names = cells;
+    else t.text.push_back(cells);
+  }
+  return t;
+}
+
+// The cycloid view from a run: cycloid_ltca_nnm_none.json run by the CLI, then drawn through the
+// server with result=its folder. At one of the run's crank angles every pin's force and pressure
+// are per_angle.csv's row (load_roller_i_N, max_pressure_roller_i_MPa); between two rows the linear
+// interpolation of docs/studio.md, computed here; past the run's mesh period τ = 22.5° the drive's
+// symmetry: pin i at φ + mτ carries what pin i − m carries at φ (the wrap from the last row to
+// φ_0 + τ too). The new pressure columns' largest in each row is the row's max_contact_stress_MPa.
+TEST(Serve, CycloidMechanismTakesThePinsFromTheLoadedRun) {
+  const fs::path dir = TempDir("serve-cycloid-run");
+  fs::copy_file(Example("cycloid_ltca_nnm_none.json"), dir / "nnm.json");
+  const std::string cmd = "cd " + dir.string() + " && " + CAMOPT_BINARY +
+                          " run nnm.json --quiet --out results/nnm > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const CsvTable csv = ReadCsv(dir / "results" / "nnm" / "per_angle.csv");
+  const int n1 = 16;
+  const size_t rows = csv.text.size();
+  ASSERT_EQ(rows, 64u);  // 32 angles per mesh period, refined to 64 by the error estimate
+  const auto load = [&](size_t k, int i) { return csv.At(k, "load_roller_" + std::to_string(i + 1) + "_N"); };
+  const auto press = [&](size_t k, int i) { return csv.At(k, "max_pressure_roller_" + std::to_string(i + 1) + "_MPa"); };
+  // The new columns against the row's overall peak (and zero off contact).
+  for (size_t k = 0; k < rows; ++k) {
+    double largest = 0;
+    int loaded = 0;
+    for (int i = 0; i < n1; ++i) {
+      largest = std::max(largest, press(k, i));
+      EXPECT_EQ(press(k, i) > 0, load(k, i) > 0) << "row " << k << " pin " << i;
+      loaded += load(k, i) > 0;
+    }
+    const double peak = csv.At(k, "max_contact_stress_MPa");
+    EXPECT_NEAR(largest, peak, 1e-9 * peak) << "row " << k;
+    EXPECT_EQ(loaded, int(csv.At(k, "pairs_in_contact"))) << "row " << k;
+  }
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const std::string body = ReadFile(dir / "nnm.json");
+  const auto at = [&](const std::string& angle, const std::string& result = "&result=results/nnm") {
+    auto res = c.Post(("/api/mechanism?angle=" + angle + "&points=400" + result).c_str(), body, "application/json");
+    EXPECT_TRUE(res);
+    EXPECT_EQ(res->status, 200) << res->body;
+    return json::parse(res->body);
+  };
+  const auto expect_pins = [&](const json& m, const std::function<double(int, bool)>& want, const std::string& what) {
+    ASSERT_EQ(m["pin_source"], "run") << what << " " << m.value("run_note", "");
+    ASSERT_EQ(m["pins"].size(), size_t(n1));
+    double largest = 0;
+    for (int i = 0; i < n1; ++i) {
+      const double f = m["pins"][i]["force_N"], p = m["pins"][i]["pressure_MPa"];
+      const double wf = want(i, false), wp = want(i, true);
+      EXPECT_NEAR(f, wf, 1e-9 * std::max(1.0, wf)) << what << " pin " << i;
+      EXPECT_NEAR(p, wp, 1e-9 * std::max(1.0, wp)) << what << " pin " << i;
+      EXPECT_EQ(m["pins"][i]["loaded"].get<bool>(), wf > 0) << what << " pin " << i;
+      largest = std::max(largest, wp);
+    }
+    EXPECT_NEAR(m["max_pressure_MPa"].get<double>(), largest, 1e-9 * largest) << what;
+  };
+  // The run's own angles: its rows.
+  for (const size_t k : {size_t(0), size_t(17), size_t(63)}) {
+    const json m = at(csv.text[k][0]);
+    expect_pins(m, [&](int i, bool p) { return p ? press(k, i) : load(k, i); }, "row " + std::to_string(k));
+    EXPECT_EQ(m["run"]["weight"].get<double>(), 0.0);
+    EXPECT_NE(m["pin_source_label"].get<std::string>().find("loaded run"), std::string::npos);
+  }
+  // Between rows 17 and 18, 30% of the way: (1 − t) row 17 + t row 18.
+  const double a17 = csv.At(17, "crank_angle_deg"), a18 = csv.At(18, "crank_angle_deg"), t = 0.3;
+  const auto lerp = [&](size_t k0, int s0, size_t k1, int s1, int i, bool p) {
+    const int i0 = ((i - s0) % n1 + n1) % n1, i1 = ((i - s1) % n1 + n1) % n1;
+    return p ? (1 - t) * press(k0, i0) + t * press(k1, i1) : (1 - t) * load(k0, i0) + t * load(k1, i1);
+  };
+  char angle[64];
+  std::snprintf(angle, sizeof angle, "%.17g", a17 + t * (a18 - a17));
+  expect_pins(at(angle), [&](int i, bool p) { return lerp(17, 0, 18, 0, i, p); }, "between rows 17 and 18");
+  // Three mesh periods later (and a revolution before): the same rows, the pins turned by three.
+  std::snprintf(angle, sizeof angle, "%.17g", a17 + t * (a18 - a17) + 3 * 22.5);
+  expect_pins(at(angle), [&](int i, bool p) { return lerp(17, 3, 18, 3, i, p); }, "three periods on");
+  std::snprintf(angle, sizeof angle, "%.17g", a17 + t * (a18 - a17) - 360 + 3 * 22.5);
+  expect_pins(at(angle), [&](int i, bool p) { return lerp(17, 3, 18, 3, i, p); }, "a revolution before");
+  // Past the last row (22.1484375°) toward 22.5°: the last row and row 0 with the pins turned by one.
+  const double a63 = csv.At(63, "crank_angle_deg");
+  std::snprintf(angle, sizeof angle, "%.17g", a63 + t * (22.5 - a63));
+  expect_pins(at(angle), [&](int i, bool p) { return lerp(63, 0, 0, 1, i, p); }, "the wrap");
+  // The symmetry against the model itself: a second run over two mesh periods (0° to 39.375° by
+  // 5.625°, no error estimate) at 28.125° = 22.5° + 5.625° equals the first run's row at 5.625°
+  // (row 16) with the pins turned by one, as drawn, to the LTCA's compatibility tolerance (1e-3).
+  json two = json::parse(body);
+  two["analysis"] = {{"crank_angle_steps", 8}, {"crank_span_deg", 45}, {"grid", {40, 40}}, {"estimate_error", false}};
+  WriteFile(dir / "two.json", two.dump());
+  ASSERT_EQ(std::system(("cd " + dir.string() + " && " + CAMOPT_BINARY +
+                         " run two.json --quiet --out results/two > /dev/null 2>&1").c_str()), 0);
+  const CsvTable second = ReadCsv(dir / "results" / "two" / "per_angle.csv");
+  ASSERT_EQ(second.At(5, "crank_angle_deg"), 28.125);
+  const json sym = at("28.125");
+  EXPECT_EQ(sym["run"]["pin_shift"], 1);
+  for (int i = 0; i < n1; ++i) {
+    const double want = second.At(5, "load_roller_" + std::to_string(i + 1) + "_N");
+    EXPECT_NEAR(sym["pins"][i]["force_N"].get<double>(), want, 1e-3 * 2600) << "pin " << i;
+    const double wp = second.At(5, "max_pressure_roller_" + std::to_string(i + 1) + "_MPa");
+    EXPECT_NEAR(sym["pins"][i]["pressure_MPa"].get<double>(), wp, 2e-3 * 1300) << "pin " << i;
+  }
+  // Without a run folder (or with one not written yet): the nominal rigid disc.
+  EXPECT_EQ(at("10", "")["pin_source"], "nominal");
+  const json none = at("10", "&result=results/none");
+  EXPECT_EQ(none["pin_source"], "nominal");
+  EXPECT_EQ(none["pin_source_label"], "nominal rigid disc, no run");
+  // A study edited since its run (another torque): the run is not used, and the view says why.
+  json edited = json::parse(body);
+  edited["load"]["torque_Nm"] = 300;
+  auto res = c.Post("/api/mechanism?angle=10&result=results/nnm", edited.dump(), "application/json");
+  ASSERT_TRUE(res);
+  const json m = json::parse(res->body);
+  EXPECT_EQ(m["pin_source"], "nominal");
+  EXPECT_NE(m.value("run_note", "").find("torque"), std::string::npos) << res->body.substr(0, 300);
+  // A drive edited since its run (the profile modification Δa): its unloaded TE differs, not used.
+  edited = json::parse(body);
+  edited["modification"]["delta_position_um"] = -20;
+  res = c.Post("/api/mechanism?angle=10&result=results/nnm", edited.dump(), "application/json");
+  ASSERT_TRUE(res);
+  const json moved = json::parse(res->body);
+  EXPECT_EQ(moved["pin_source"], "nominal");
+  EXPECT_NE(moved.value("run_note", "").find("unloaded transmission error"), std::string::npos) << res->body.substr(0, 300);
+  // A folder outside the studio's is refused.
+  res = c.Post("/api/mechanism?angle=0&result=../..", body, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 403) << res->body;
+}
+
+// A run whose crank angles are not whole mesh periods uniformly (explicit angles 0°, 10°, 30° of a
+// 4-pin drive, τ = 90°): interpolated between its neighbouring rows only, 360° periodic, refused
+// outside them with the reason.
+TEST(Serve, CycloidRunAnglesOutsideWholePeriodsInterpolateWithinTheirRange) {
+  const std::string csv =
+      "crank_angle_deg,load_roller_1_N,load_roller_2_N,load_roller_3_N,load_roller_4_N,"
+      "max_pressure_roller_1_MPa,max_pressure_roller_2_MPa,max_pressure_roller_3_MPa,max_pressure_roller_4_MPa\n"
+      "0,10,20,0,0,100,200,0,0\n10,30,40,0,0,300,400,0,0\n30,50,0,60,0,500,0,600,0\n";
+  const json at20 = camopt::studies::CycloidRunAt(csv, 4, 20.0 + 720.0);
+  ASSERT_FALSE(at20.contains("why")) << at20.dump();
+  EXPECT_DOUBLE_EQ(at20["weight"].get<double>(), 0.5);
+  const double f[4] = {40, 20, 30, 0}, p[4] = {400, 200, 300, 0};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_DOUBLE_EQ(at20["force_N"][i].get<double>(), f[i]) << i;
+    EXPECT_DOUBLE_EQ(at20["pressure_MPa"][i].get<double>(), p[i]) << i;
+  }
+  EXPECT_EQ(camopt::studies::CycloidRunAt(csv, 4, 30.0)["force_N"][2].get<double>(), 60.0);
+  EXPECT_NE(camopt::studies::CycloidRunAt(csv, 4, 45.0).value("why", "").find("do not reach 45"), std::string::npos);
+  EXPECT_TRUE(camopt::studies::CycloidRunAt(csv, 5, 0.0).contains("why"));  // a fifth pin's column missing
+  EXPECT_TRUE(camopt::studies::CycloidRunAt(csv, 3, 0.0).contains("why"));  // more pins than the study's
 }
 
 // The cycloid sizing's start (no run): the pins of cycloid_min_size_paper.json's start, 16 at

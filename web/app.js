@@ -634,8 +634,10 @@ function drawFlatFace(svg, data, study, angle) {
     `${data.oscillating ? ' (atan(d/ℓ))' : ' (0 for a face across the line of motion)'}; red dot: the contact point`;
 }
 
-// The cycloid disc on its pins, each pin coloured by its pair's Hertz pressure (by its rigid-disc
-// contact force when the study has no material: an unloaded-only study).
+// The cycloid disc on its pins, each pin coloured by its pair's pressure: with the shown run, the
+// run's loaded tooth contact analysis at this crank angle (its per_angle.csv: each pair's load and
+// own peak pressure); without one, the rigid disc's Hertz pressure on the nominal tooth (by force
+// when the study has no material: an unloaded-only study).
 function drawCycloid(svg, data, study, angle) {
   const R = (data.roller_position_radius_mm + data.roller_radius_mm) * 1.08;
   svg.setAttribute('viewBox', `${-R} ${-R} ${2 * R} ${2 * R}`);
@@ -643,6 +645,7 @@ function drawCycloid(svg, data, study, angle) {
   g.append(svgEl('circle', { class: 'turret', cx: 0, cy: 0, r: data.roller_position_radius_mm }));
   g.append(svgEl('path', { class: 'cam-input', d: 'M' + data.profile_mm.map((p) => `${p[0]},${p[1]}`).join('L') + 'Z' }));
   const pressures = typeof data.max_pressure_MPa === 'number';
+  const run = data.pin_source === 'run';
   const limit = study && study.limits && study.limits.contact_stress_MPa;
   const top = pressures ? (limit || data.max_pressure_MPa || 1) : (data.max_pin_force_N || 1);
   data.pins.forEach((p, i) => {
@@ -651,9 +654,11 @@ function drawCycloid(svg, data, study, angle) {
       class: 'roller', cx: p.x, cy: p.y, r: data.roller_radius_mm,
       fill: p.loaded ? stressColour(value, top) : '#e0e0e0',
       'data-side': 'pins', 'data-index': i, 'data-x': p.x, 'data-y': p.y, 'data-force': p.force_N,
-      'data-pressure': pressures ? p.pressure_MPa : '' });
+      'data-pressure': pressures ? p.pressure_MPa : '', 'data-source': data.pin_source });
     const t = svgEl('title', {});
-    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N` + (pressures && p.loaded ? `, p0 = ${p.pressure_MPa.toFixed(0)} MPa` : '');
+    t.textContent = `pin ${i}: F = ${p.force_N.toFixed(1)} N` +
+      (pressures && p.loaded ? `, ${run ? 'peak pressure' : 'p0'} = ${p.pressure_MPa.toFixed(0)} MPa` : '') +
+      (run && typeof p.nominal_force_N === 'number' ? ` (nominal rigid disc: ${p.nominal_force_N.toFixed(1)} N)` : '');
     c.append(t);
     g.append(c);
   });
@@ -665,14 +670,19 @@ function drawCycloid(svg, data, study, angle) {
   g.append(svgEl('line', { x1: c[0], y1: c[1], x2: c[0] + m * Math.cos(t), y2: c[1] + m * Math.sin(t), class: 'force' }));
   svg.replaceChildren(g);
   svg.dataset.angle = String(angle);
+  svg.dataset.source = data.pin_source;
   $('#mechanism-note').textContent =
     `${data.teeth} teeth on ${data.rollers} pins: disc centre (${c.map((v) => v.toFixed(3)).join(', ')}) mm, disc turned ${data.disc_rotation_deg.toFixed(3)}°` +
-    (pressures ? `; largest pair pressure ${data.max_pressure_MPa.toFixed(0)} MPa, largest pin force ${data.max_pin_force_N.toFixed(0)} N` : '');
-  const loads = `rigid disc, nominal tooth, T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc`;
-  $('#stress-legend').textContent = pressures
-    ? `pins coloured by their pair's Hertz pressure p0 = √(F E*/(π B R')) (${loads}): yellow 0 → red ${top.toFixed(0)} MPa` +
-      `${limit ? ' (the limit)' : ' (the largest)'}; grey unloaded. The modified tooth's pressures are in the run's pressure maps`
-    : `pins coloured by contact force (${loads}): yellow 0 → red ${top.toFixed(0)} N; grey unloaded`;
+    (pressures ? `; largest pair pressure ${data.max_pressure_MPa.toFixed(0)} MPa` : '') +
+    `, largest pin force ${data.max_pin_force_N.toFixed(0)} N` + (data.run_note ? `. ${data.run_note}` : '');
+  const T = `T = ${(data.disc_torque_Nmm / 1000).toFixed(1)} N·m per disc`;
+  const source = `pins from: ${data.pin_source_label}`;
+  const scale = `yellow 0 → red ${top.toFixed(0)} ${pressures ? 'MPa' : 'N'}${pressures ? (limit ? ' (the limit)' : ' (the largest)') : ''}; grey unloaded`;
+  $('#stress-legend').textContent = `${source}. ` + (run
+    ? (pressures ? `Pins coloured by each pair's own peak pressure of the run's loaded tooth contact analysis (modified, crowned tooth; ${T}): ${scale}`
+      : `Pins coloured by the run's pair loads (${T}): ${scale}`)
+    : (pressures ? `Pins coloured by their pair's Hertz pressure p0 = √(F E*/(π B R')) (rigid disc, nominal tooth, ${T}): ${scale}. Run the study for the modified tooth's loaded pressures`
+      : `Pins coloured by contact force (rigid disc, nominal tooth, ${T}): ${scale}`));
 }
 
 // ---- compare ----------------------------------------------------------------------------------

@@ -227,6 +227,10 @@ class CycloidModel(unittest.TestCase):
             col = csv[f"load_roller_{i + 1}_N"]
             np.testing.assert_allclose(loads["roller_load_N"][:, i], col, rtol=1e-9,
                                        atol=1e-9 * float(np.abs(col).max() or 1), err_msg=str(i))
+            peak = csv[f"max_pressure_roller_{i + 1}_MPa"]
+            np.testing.assert_allclose(loads["roller_max_pressure_MPa"][:, i], peak, rtol=1e-9,
+                                       atol=1e-9 * float(np.abs(peak).max() or 1), err_msg=str(i))
+        np.testing.assert_allclose(loads["roller_max_pressure_MPa"].max(axis=1), csv["max_contact_stress_MPa"], rtol=1e-9)
         unloaded = drive.unloaded(phi)
         np.testing.assert_allclose(unloaded["unloaded_te_arcsec"], csv["unloaded_te_arcsec"], rtol=1e-9, atol=1e-12)
         # The tooth profile: the roller circles at crank angle 0 touch it (the unmodified drive's

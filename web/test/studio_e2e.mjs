@@ -7,7 +7,9 @@
 // copied there: SCREENSHOT_DIR=$PWD/docs/images ctest -R Studio refreshes docs/images/studio.png);
 // then runs disc_cam_min_size.json and checks its optimum drawn over its start design (the two base
 // circles against the file's and result.json's, the outlines' smallest radii differing by the change),
-// runs the cycloid NNM drive (coarse) and checks each pin's drawn pressure against Hertz by hand, and
+// runs the cycloid NNM drive (coarse) and checks each pin's drawn load and pressure against the run's
+// per_angle.csv (at a run angle turned by two mesh periods, and between two), then, the file moved
+// away, the nominal view's pressures against Hertz by hand, and
 // runs the oscillating flat face and checks the drawn face tangent to the drawn profile at the contact.
 //   node web/test/studio_e2e.mjs CAMOPT_BINARY SOURCE_DIR [SCREENSHOT]
 // Exit 0 pass, 1 fail, 77 skipped (no Chromium or no web/node_modules: run `npm ci` in web/).
@@ -198,25 +200,69 @@ try {
   const legend = await page.$eval('#stress-legend', (el) => el.textContent);
   check(legend.includes('start design') && legend.includes('optimum of the run'), `legend: ${legend.slice(0, 160)}`);
   check(consoleErrors.length === 0, `no console errors after the sizing ${consoleErrors.join(' | ')}`);
-  if (screenshot) {  // beside the first: the sizing's two designs (not copied to docs/images)
+  if (screenshot) {  // beside the first: the sizing's two designs
     const sizingShot = path.join(path.dirname(screenshot), 'studio-sizing.png');
     await page.screenshot({ path: sizingShot, fullPage: false });
     console.log(`screenshot: ${sizingShot}`);
+    if (process.env.SCREENSHOT_DIR) fs.copyFileSync(sizingShot, path.join(process.env.SCREENSHOT_DIR, 'studio-sizing.png'));
   }
 
-  // The cycloid drive: each loaded pin's pressure against p0 = sqrt(F E*/(π B R')) by hand, the
-  // tooth's curvature at the nominal contact from docs/cycloid.md (C1).
+  // The cycloid drive, run: the pins follow the run's loaded tooth contact analysis (its
+  // per_angle.csv, read here). Its angles are 0° and 11.25° (two per mesh period τ = 22.5°); pin i
+  // at φ + mτ carries what pin i − m carries at φ (docs/studio.md), so at 45° every pin i is row 0's
+  // pin i − 2, and at 50° the rows 0 and 1 (pins i − 2) interpolated with weight 5/11.25.
   await page.click('#files li[data-path="cycloid.json"]');
   await page.waitForSelector('body[data-loaded="cycloid.json"]');
   await page.click('#tabs button[data-tab="run"]');
   await page.click('#run');
   await page.waitForSelector('body[data-result="4"]', { timeout: 120000 });
-  const crank = 50;
-  await page.$eval('#crank', (el, a) => { el.value = String(a); el.dispatchEvent(new Event('input')); }, crank);
-  await page.waitForSelector(`#mechanism[data-angle="${crank}"] circle[data-side="pins"]`, { timeout: 10000 });
-  const pins = await page.$$eval('#mechanism circle[data-side="pins"]', (cs) => cs.map((c) => ({
-    i: Number(c.dataset.index), f: Number(c.dataset.force), p: Number(c.dataset.pressure), fill: c.getAttribute('fill') })));
   const dr = cycloid.drive, n1 = dr.rollers, n2 = dr.teeth, a = dr.roller_position_radius_mm, ecc = dr.eccentricity_mm;
+  const perAngle = path.join(dir, 'results', 'cycloid', 'per_angle.csv');
+  const lines = fs.readFileSync(perAngle, 'utf8').trim().split('\n').map((l) => l.split(','));
+  const col = (name) => lines[0].indexOf(name);
+  const cell = (row, name) => Number(lines[row + 1][col(name)]);
+  check(lines.length === 3 && cell(0, 'crank_angle_deg') === 0 && cell(1, 'crank_angle_deg') === 11.25,
+        `the run's per_angle.csv has the rows 0° and 11.25° (${lines.length - 1} rows)`);
+  const readPins = () => page.$$eval('#mechanism circle[data-side="pins"]', (cs) => cs.map((c) => ({
+    i: Number(c.dataset.index), f: Number(c.dataset.force), p: Number(c.dataset.pressure), fill: c.getAttribute('fill'),
+    source: c.dataset.source })));
+  const setCrank = async (deg, source) => {
+    await page.$eval('#crank', (el, v) => { el.value = String(v); el.dispatchEvent(new Event('input')); }, deg);
+    await page.waitForSelector(`#mechanism[data-angle="${deg}"][data-source="${source}"] circle[data-side="pins"]`, { timeout: 10000 });
+    return readPins();
+  };
+  for (const [deg, t] of [[45, 0], [50, 5 / 11.25]]) {
+    const drawn = await setCrank(deg, 'run');
+    let worst = 0, want = [];
+    for (const pin of drawn) {
+      const j = (pin.i - 2 + n1) % n1 + 1;
+      const wf = (1 - t) * cell(0, `load_roller_${j}_N`) + t * cell(1, `load_roller_${j}_N`);
+      const wp = (1 - t) * cell(0, `max_pressure_roller_${j}_MPa`) + t * cell(1, `max_pressure_roller_${j}_MPa`);
+      want.push({ i: pin.i, p: wp });
+      worst = Math.max(worst, Math.abs(pin.f - wf) / Math.max(1, wf), Math.abs(pin.p - wp) / Math.max(1, wp));
+    }
+    check(drawn.length === n1 && drawn.every((q) => q.source === 'run'), `${drawn.length} pins drawn from the run at ${deg}°`);
+    check(worst < 1e-9, `at ${deg}° every pin's load and pressure within ${worst.toExponential(2)} (relative) of per_angle.csv (weight ${t.toFixed(4)})`);
+    const hottest = drawn.reduce((x, y) => (y.p > x.p ? y : x)), top = want.reduce((x, y) => (y.p > x.p ? y : x));
+    check(hottest.i === top.i && hottest.fill === 'rgb(255, 0, 0)',
+          `at ${deg}° the largest drawn pressure is pin ${hottest.i} (${hottest.p.toFixed(1)} MPa, ${hottest.fill}), per_angle.csv's pin ${top.i}`);
+    const legend = await page.$eval('#stress-legend', (el) => el.textContent);
+    check(legend.includes(`loaded run results/cycloid/per_angle.csv, crank angle ${deg}°`), `legend: ${legend.slice(0, 160)}`);
+  }
+  if (screenshot) {  // the cycloid drawn from its run at 50°
+    const cycloidShot = path.join(path.dirname(screenshot), 'studio-cycloid.png');
+    await page.screenshot({ path: cycloidShot, fullPage: false });
+    console.log(`screenshot: ${cycloidShot}`);
+    if (process.env.SCREENSHOT_DIR) fs.copyFileSync(cycloidShot, path.join(process.env.SCREENSHOT_DIR, 'studio-cycloid.png'));
+  }
+  // Without the run's per_angle.csv: the nominal rigid disc, each loaded pin's pressure against
+  // p0 = sqrt(F E*/(π B R')) by hand, the tooth's curvature at the nominal contact from docs/cycloid.md (C1).
+  fs.renameSync(perAngle, perAngle + '.away');
+  const crank = 50;
+  await page.$eval('#crank', (el) => { el.value = '0'; el.dispatchEvent(new Event('input')); });
+  await page.waitForSelector('#mechanism[data-angle="0"][data-source="nominal"]', { timeout: 10000 });
+  const pins = await setCrank(crank, 'nominal');
+  fs.renameSync(perAngle + '.away', perAngle);
   const rho = dr.roller_radius_mm, B = dr.face_width_mm, nu = cycloid.material.poisson_ratio;
   const eStar = cycloid.material.youngs_modulus_GPa * 1000 / (2 * (1 - nu * nu)), lam = ecc * n1 / a;
   let worstP = 0, loadedPins = 0;
@@ -227,12 +273,12 @@ try {
     const rEff = 1 / (kx / (1 - rho * kx) + 1 / rho);
     worstP = Math.max(worstP, Math.abs(pin.p / Math.sqrt(pin.f * eStar / (Math.PI * B * rEff)) - 1));
   }
-  check(pins.length === n1 && loadedPins === 8, `${pins.length} pins drawn, ${loadedPins} loaded at ${crank}°`);
-  check(worstP < 1e-9, `the pins' pressures within ${worstP.toExponential(2)} (relative) of Hertz by hand`);
+  check(pins.length === n1 && loadedPins === 8, `${pins.length} pins drawn, ${loadedPins} loaded at ${crank}° (nominal)`);
+  check(worstP < 1e-9, `the nominal pins' pressures within ${worstP.toExponential(2)} (relative) of Hertz by hand`);
   const hottest = pins.reduce((x, y) => (y.p > x.p ? y : x));
   check(hottest.fill === 'rgb(255, 0, 0)', `the largest pressure (pin ${hottest.i}, ${hottest.p.toFixed(1)} MPa) drawn red: ${hottest.fill}`);
   const cycloidLegend = await page.$eval('#stress-legend', (el) => el.textContent);
-  check(cycloidLegend.includes('Hertz pressure'), `legend: ${cycloidLegend.slice(0, 120)}`);
+  check(cycloidLegend.includes('Hertz pressure') && cycloidLegend.includes('nominal rigid disc, no run'), `legend: ${cycloidLegend.slice(0, 160)}`);
   check(consoleErrors.length === 0, `no console errors after the cycloid ${consoleErrors.join(' | ')}`);
 
   // The flat face on an arm at 60°: by hand ξ = asin((r_b + d)/f) + 5° = 35°, the pivot drawn at
