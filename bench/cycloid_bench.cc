@@ -59,6 +59,7 @@ void BM_CycloidMeshCycle60(benchmark::State& state) {
   state.counters["solves"] = r.contact_solves;
   state.counters["solves_per_angle"] = r.contact_solves / 60.0;
   state.counters["cg_iters"] = double(r.solver_iterations);
+  state.counters["slope_cg_iters"] = double(r.slope_iterations);
 }
 BENCHMARK(BM_CycloidMeshCycle60)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
 

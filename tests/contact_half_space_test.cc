@@ -631,5 +631,50 @@ TEST(HalfSpaceSensitivity, MatchesCentralDifferencesOfTheLoadControlledSolve) {
   }
 }
 
+TEST(HalfSpaceSensitivity, AStartChangesTheCostNotTheAnswer) {
+  // The load sensitivity (dW = 1, dh = 0) of a crowned roller at 1500 N, started from itself, from
+  // the one at 1000 N (a smaller contact set) and from a field of NaN: the same answer to the
+  // CG's tolerance, the exact start converged at once, the unusable one ignored (same bits).
+  const Grid g = CenteredGrid(24, 24, 0.3, 6.0);
+  std::vector<double> gap(size_t(g.cells()));
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
+      gap[size_t(iy) * g.nx + ix] = x * x / (2 * 5.0) + 2e-4 * y * y;
+    }
+  HalfSpaceSolver solver(SolverOptions{1e-12, 5000});
+  const double e_star = 113000.0;
+  const ContactSolution heavy = solver.SolveForLoad(g, gap, 1500.0, e_star);
+  const ContactSolution light = solver.SolveForLoad(g, gap, 1000.0, e_star);
+  ASSERT_TRUE(heavy.converged && light.converged);
+  ASSERT_GT(heavy.cells_in_contact, light.cells_in_contact);
+  const std::vector<double> zero(gap.size(), 0.0);
+  const double tol = 1e-8;
+  const auto plain = solver.SensitivityForLoad(g, heavy.pressure_MPa, zero, 1.0, e_star, tol);
+  const auto from_light = solver.SensitivityForLoad(g, light.pressure_MPa, zero, 1.0, e_star, tol);
+  ASSERT_TRUE(plain.converged && from_light.converged);
+  const auto same = solver.SensitivityForLoad(g, heavy.pressure_MPa, zero, 1.0, e_star, tol, &plain.pressure_MPa);
+  const auto near = solver.SensitivityForLoad(g, heavy.pressure_MPa, zero, 1.0, e_star, tol, &from_light.pressure_MPa);
+  const std::vector<double> nan(gap.size(), std::nan(""));
+  const auto bad = solver.SensitivityForLoad(g, heavy.pressure_MPa, zero, 1.0, e_star, tol, &nan);
+  EXPECT_TRUE(same.converged && near.converged && bad.converged);
+  EXPECT_EQ(same.iterations, 0);
+  EXPECT_LE(near.iterations, plain.iterations);
+  EXPECT_EQ(bad.iterations, plain.iterations);
+  EXPECT_EQ(bad.approach_mm, plain.approach_mm);
+  // The CG's residual tolerance 1e-8 bounds the answers' difference far below 1e-6.
+  for (const auto* s : {&same, &near}) {
+    EXPECT_NEAR(s->approach_mm, plain.approach_mm, 1e-6 * std::abs(plain.approach_mm));
+    double total = 0, diff = 0, norm = 0;
+    for (size_t k = 0; k < gap.size(); ++k) {
+      total += s->pressure_MPa[k] * g.cell_area_mm2();
+      diff = std::max(diff, std::abs(s->pressure_MPa[k] - plain.pressure_MPa[k]));
+      norm = std::max(norm, std::abs(plain.pressure_MPa[k]));
+    }
+    EXPECT_NEAR(total, 1.0, 1e-10);
+    EXPECT_LE(diff, 1e-6 * norm);
+  }
+}
+
 }  // namespace
 }  // namespace camopt::contact

@@ -893,7 +893,7 @@ ContactSolution HalfSpaceSolver::SolveForApproach(const Grid& grid,
 
 HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
     const Grid& grid, const std::vector<double>& pressure, const std::vector<double>& dgap,
-    double dload, double e_star, double tolerance) {
+    double dload, double e_star, double tolerance, const std::vector<double>* initial) {
   const size_t n = size_t(grid.nx) * grid.ny;
   if (pressure.size() != n || dgap.size() != n)
     throw std::invalid_argument("SensitivityForLoad: pressure and gap derivative need one value per cell");
@@ -939,6 +939,32 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
   double rr = 0, bb = 0;
   for (size_t i = 0; i < set.size(); ++i) rr += r[i] * r[i];
   bb = rr;
+  if (initial && initial->size() == n && bb > 0) {
+    // The guess on C, brought to the load condition cA·Σ dp = dW: scaled when its sum has the
+    // sign of dW, else shifted by a constant; z = dp − uniform then sums to zero (up to rounding,
+    // removed). Kept only when its residual b − A z is below |b| (that of z = 0).
+    std::vector<double> z0(set.size());
+    double sum = 0;
+    for (size_t i = 0; i < set.size(); ++i) sum += (z0[i] = (*initial)[set[i]]);
+    const double target = uniform * m;
+    const double scale = target != 0 && sum * target > 0 ? target / sum : 1.0;
+    double mean = 0;
+    for (double& v : z0) mean += (v = v * scale - uniform);
+    mean /= m;
+    for (double& v : z0) v -= mean;
+    const std::vector<double>& az = apply(z0);
+    std::vector<double> r0(set.size());
+    double rr0 = 0;
+    for (size_t i = 0; i < set.size(); ++i) {
+      r0[i] = b[i] - az[i];
+      rr0 += r0[i] * r0[i];
+    }
+    if (rr0 < rr) {  // false for a NaN
+      z = std::move(z0);
+      r = std::move(r0);
+      rr = rr0;
+    }
+  }
   int it = 0;
   const int max_it = std::max(50, 4 * int(set.size()));
   // Preconditioned CG (M = the block of the periodic kernel's inverse, InverseKernelFor, then

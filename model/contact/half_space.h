@@ -109,7 +109,11 @@ class HalfSpaceSolver {
   /// cA·Σ dp_C = dW for one parameter s (dgap_mm = ∂h/∂s per cell, dload_N = dW/ds) by conjugate
   /// gradients on the zero-sum subspace of C (the same convolution), preconditioned by the inverse
   /// of the periodically continued kernel; stops at |residual| <= tolerance · |right-hand side|.
-  /// Exact away from set changes.
+  /// Exact away from set changes. `initial_MPa` (optional, one value per cell, off-C values
+  /// ignored): a starting guess of dp/ds, e.g. the same pair's sensitivity at a neighbouring state;
+  /// brought to the load condition (scaled on C to cA·Σ dp_C = dW, or shifted when it cannot be)
+  /// and used when its residual is below that of zero. The stopping test stays |b − A z| <=
+  /// tolerance · |b|, so a start changes the cost, not the accuracy.
   struct Sensitivity {
     std::vector<double> pressure_MPa;  ///< dp/ds per cell (0 off C)
     double approach_mm = 0;            ///< dδ/ds
@@ -118,7 +122,8 @@ class HalfSpaceSolver {
   };
   Sensitivity SensitivityForLoad(const Grid& grid, const std::vector<double>& pressure_MPa,
                                  const std::vector<double>& dgap_mm, double dload_N,
-                                 double e_star_MPa, double tolerance = 1e-10);
+                                 double e_star_MPa, double tolerance = 1e-10,
+                                 const std::vector<double>* initial_MPa = nullptr);
 
   const SolverOptions& options() const;
 

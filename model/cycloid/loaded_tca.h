@@ -112,6 +112,7 @@ struct MeshLoad {
   int iterations = 0;                ///< outer (compatibility) iterations
   int contact_solves = 0;            ///< half-space solves
   long solver_iterations = 0;        ///< their conjugate-gradient iterations, summed
+  long slope_iterations = 0;         ///< CG iterations of the crank slope's load sensitivities
   bool converged = true;
   std::string message;
 };
@@ -127,6 +128,10 @@ struct LtcaWarmStart {
     std::vector<double> pressure;
     double f1 = 0, d1 = 0;  // the last solved (F, δ) of the pair
     double gamma = 0.9;     // its measured exponent of δ ∝ F^γ
+    // The pair's load sensitivity dp/dW of its last crank slope, on the grid it was solved on:
+    // the start of the next slope's CG (LoadedOptions::crank_slope).
+    contact::Grid sensitivity_grid;
+    std::vector<double> load_sensitivity;
   };
   std::map<int, Pair> pairs;  // by roller
 };
@@ -199,11 +204,22 @@ class LoadedTca {
   double e_star_MPa() const { return e_star_; }
 
  private:
+  /// Per pair of a solve (in the order of its pairs), the load sensitivity dp/dW on the pair's
+  /// grid: in, a starting guess of its CG (empty: none); out, the solved one; with the CG
+  /// iterations of the load sensitivities.
+  struct LoadSensitivities {
+    std::vector<std::vector<double>> by_pair;
+    long iterations = 0;
+  };
   /// rotation_only: the deflection and rotation alone (no pressure derivatives), the approach's
   /// rate at fixed load by reciprocity from the load sensitivity: one solve per pair, not 1 + k.
+  /// load_sensitivities (optional): the starts and results of the load sensitivities.
   std::vector<Derivative> Differentiate(const MeshLoad& solved, const std::vector<std::string>& parameters,
-                                        double sensitivity_tolerance, bool rotation_only) const;
-  double CrankSlope(const MeshLoad& solved) const;  // dLTE/dφ at crank_slope_tolerance
+                                        double sensitivity_tolerance, bool rotation_only,
+                                        LoadSensitivities* load_sensitivities = nullptr) const;
+  /// dLTE/dφ at crank_slope_tolerance; the load sensitivities start from the warm start's (when
+  /// given) and are left in it; sets solved.slope_iterations.
+  double CrankSlope(MeshLoad& solved, LtcaWarmStart* warm) const;
   contact::Grid MakeGrid(double half_x_mm) const;
   std::vector<double> Gap(const contact::Grid& grid, double effective_curvature_roller,
                           double profile_curvature) const;
@@ -237,6 +253,7 @@ struct CycleResult {
   double end_distance_mm = 0;        ///< min over angles
   int contact_solves = 0;
   long solver_iterations = 0;
+  long slope_iterations = 0;         ///< of the crank slopes' load sensitivities, summed
   bool converged = true;
 };
 
