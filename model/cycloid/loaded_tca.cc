@@ -261,10 +261,11 @@ std::vector<double> ResampleAcross(const contact::Grid& from, const std::vector<
 // A pair's load sensitivity dp/dW (non-zero on its contact set) at the previous crank angle as a
 // start of the next one on the contact set of `to_pressure`: each axial row's contact interval
 // across the profile is stretched onto the new row's interval (edge to edge, linear between the
-// old cell centres), and the rows in contact likewise (the nearest old row). A frozen set's load
-// sensitivity is edge-singular, like a punch's: it moves with the set's edges, and a stretch of
-// the strip maps its shape onto itself (the scale is set by the load condition in
-// SensitivityForLoad). Empty when the old field has no contact.
+// old cell centres, scaled by the ratio of the widths), and the rows in contact likewise (linear
+// between two old rows). A frozen set's load sensitivity is edge-singular, like a punch's: it
+// moves with the set's edges, and a stretch of the strip maps its shape onto itself (the overall
+// scale is set by the load condition in SensitivityForLoad). Empty when the old field has no
+// contact.
 std::vector<double> StretchToSet(const contact::Grid& from, const std::vector<double>& w,
                                  const contact::Grid& to, const std::vector<double>& to_pressure) {
   auto rows = [](const contact::Grid& g, const std::vector<double>& f, int& lo, int& hi) {
@@ -281,32 +282,44 @@ std::vector<double> StretchToSet(const contact::Grid& from, const std::vector<do
   rows(to, to_pressure, lo1, hi1);
   if (hi0 < 0 || hi1 < 0) return {};
   std::vector<double> out(size_t(to.cells()), 0.0);
-  for (int iy = lo1; iy <= hi1; ++iy) {
-    const double t = (iy + 0.5 - lo1) / (hi1 + 1 - lo1);
-    const int oy = std::clamp(int(lo0 + t * (hi0 + 1 - lo0)), lo0, hi0);
+  // Old row oy stretched onto new row iy's interval [l1, r1] (cells), added with the weight v;
+  // its values scaled by the ratio of the widths (a strip's sensitivity per unit row load is
+  // inversely proportional to its width).
+  auto stretch_row = [&](int oy, int iy, int l1, int r1, double v) {
     const double* old_row = w.data() + size_t(oy) * from.nx;
-    int l0 = -1, r0 = -1, l1 = -1, r1 = -1;
+    int l0 = -1, r0 = -1;
     for (int ix = 0; ix < from.nx; ++ix)
       if (old_row[ix] != 0) {
         if (l0 < 0) l0 = ix;
         r0 = ix;
       }
-    for (int ix = 0; ix < to.nx; ++ix)
-      if (to_pressure[size_t(iy) * to.nx + ix] > 0) {
-        if (l1 < 0) l1 = ix;
-        r1 = ix;
-      }
-    if (l0 < 0 || l1 < 0) continue;
-    // Edges in mm: the old and new intervals [x_l, x_r].
-    const double a0 = from.x0 + l0 * from.dx, b0 = from.x0 + (r0 + 1) * from.dx;
+    if (l0 < 0) return;
+    const double a0 = from.x0 + l0 * from.dx, b0 = from.x0 + (r0 + 1) * from.dx;  // edges [mm]
     const double a1 = to.x0 + l1 * to.dx, b1 = to.x0 + (r1 + 1) * to.dx;
+    const double scale = v * (b0 - a0) / (b1 - a1);
     for (int ix = l1; ix <= r1; ++ix) {
       const double x = a0 + (to.x_centre_mm(ix) - a1) / (b1 - a1) * (b0 - a0);
       const double f = std::clamp((x - from.x0) / from.dx - 0.5, double(l0), double(r0));
       const int i0 = std::min(int(std::floor(f)), std::max(l0, r0 - 1));
       const double u = r0 > l0 ? std::clamp(f - i0, 0.0, 1.0) : 0.0;
-      out[size_t(iy) * to.nx + ix] = (1.0 - u) * old_row[i0] + u * old_row[std::min(i0 + 1, r0)];
+      out[size_t(iy) * to.nx + ix] += scale * ((1.0 - u) * old_row[i0] + u * old_row[std::min(i0 + 1, r0)]);
     }
+  };
+  for (int iy = lo1; iy <= hi1; ++iy) {
+    int l1 = -1, r1 = -1;
+    for (int ix = 0; ix < to.nx; ++ix)
+      if (to_pressure[size_t(iy) * to.nx + ix] > 0) {
+        if (l1 < 0) l1 = ix;
+        r1 = ix;
+      }
+    if (l1 < 0) continue;
+    // The row's place in the old rows in contact (centres, linear between two rows).
+    const double t = (iy + 0.5 - lo1) / (hi1 + 1 - lo1);
+    const double fy = std::clamp(lo0 + t * (hi0 + 1 - lo0) - 0.5, double(lo0), double(hi0));
+    const int oy = std::min(int(std::floor(fy)), std::max(lo0, hi0 - 1));
+    const double v = hi0 > lo0 ? std::clamp(fy - oy, 0.0, 1.0) : 0.0;
+    stretch_row(oy, iy, l1, r1, 1.0 - v);
+    if (v > 0) stretch_row(std::min(oy + 1, hi0), iy, l1, r1, v);
   }
   return out;
 }
