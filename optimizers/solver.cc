@@ -34,7 +34,9 @@ SolverResult SolveWith(const objectives::Problem& problem, const SolverOptions& 
 }
 }  // namespace
 
+namespace {
 SolverResult SolveAndPolish(const objectives::Problem& problem, const SolverOptions& options);
+}  // namespace
 
 // A converged result is held to first-order optimality (optimizers/first_order.h). When no
 // constraint within 1% of its scale from its bound opposes more than half of the objective's
@@ -74,6 +76,8 @@ SolverResult Solve(const objectives::Problem& problem, const SolverOptions& opti
   return r;
 }
 
+namespace {
+// The backend, and the fallback backend from its last point when it stopped stuck.
 SolverResult SolveAndPolish(const objectives::Problem& problem, const SolverOptions& options) {
   problem.Validate();
   SolverResult first = SolveWith(problem, options);
@@ -96,6 +100,7 @@ SolverResult SolveAndPolish(const objectives::Problem& problem, const SolverOpti
                                   second.message + ")";
   return out;
 }
+}  // namespace
 
 SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOptions& options,
                              const std::vector<std::vector<double>>& starts) {
