@@ -100,7 +100,9 @@ BENCHMARK(BM_CycloidSolveAndDerivative)->Arg(0)->Arg(1)->Unit(benchmark::kMillis
 
 // The 60-angle cycle of the LCM example (L = 18.7 mm) from a warm model, Arg 0: its value;
 // Arg 1: the value and the cycle's implicit derivatives w.r.t. f, Δa and Δρ (DifferentiateCycle,
-// CG tolerance: second Arg × 1e-6; the tuning uses 1e-6). The gradient's share is the difference.
+// CG tolerance: second Arg × 1e-6; the tuning and sizing use the solver tolerance, 1e-4 by
+// default); third Arg: the crank slope on (the analysis) or off (the tuning and sizing loops).
+// The gradient's share is the difference.
 void BM_CycloidCycle60Gradient(benchmark::State& state) {
   Crowning c;
   c.type = CrowningType::kLogarithmic;
@@ -108,20 +110,34 @@ void BM_CycloidCycle60Gradient(benchmark::State& state) {
   c.effective_length_mm = 18.7;
   LoadedOptions o;
   o.sensitivity_tolerance = state.range(1) * 1e-6;
+  o.crank_slope = state.range(2) != 0;
   const LoadedTca tca(CycloidNnm(), c, Material{}, o);
   const auto angles = UniformCrankAngles(60, 2 * kPi);
   RunCycle(tca, 350.0e3, angles);  // kernels and plans cached (cost only)
   for (auto _ : state) {
     const CycleResult r = RunCycle(tca, 350.0e3, angles);
-    if (state.range(0) == 1)
-      benchmark::DoNotOptimize(
-          DifferentiateCycle(tca, r, {"coefficient_mm", "delta_position_mm", "delta_radius_mm"}, 2.0)
-              .front()
-              .smooth_peak_MPa);
+    if (state.range(0) == 1) {
+      const std::vector<CycleDerivative> d =
+          DifferentiateCycle(tca, r, {"coefficient_mm", "delta_position_mm", "delta_radius_mm"}, 2.0);
+      benchmark::DoNotOptimize(d.front().smooth_peak_MPa);
+      state.counters["gradient_cg_iters"] = double(d.front().cg_iterations);
+    }
+    state.counters["solver_iters"] = double(r.solver_iterations);
+    state.counters["slope_iters"] = double(r.slope_iterations);
     benchmark::DoNotOptimize(r.max_pressure_MPa);
   }
 }
-BENCHMARK(BM_CycloidCycle60Gradient)->Args({0, 1})->Args({1, 1})->Args({1, 100})->Unit(benchmark::kMillisecond)->Repetitions(3)->Iterations(1);
+// {value only / value + gradient, sensitivity tolerance [1e-6], crank slope off / on}: the
+// tuning and sizing loops run with the slope off.
+BENCHMARK(BM_CycloidCycle60Gradient)
+    ->Args({0, 1, 1})
+    ->Args({1, 1, 1})
+    ->Args({1, 100, 1})
+    ->Args({0, 100, 0})
+    ->Args({1, 100, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->Iterations(1);
 
 // The joint tuning example (Ipopt, f with Δa and Δρ).
 void BM_CycloidJointTuningStudy(benchmark::State& state) {

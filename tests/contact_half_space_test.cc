@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -674,6 +675,68 @@ TEST(HalfSpaceSensitivity, AStartChangesTheCostNotTheAnswer) {
     EXPECT_NEAR(total, 1.0, 1e-10);
     EXPECT_LE(diff, 1e-6 * norm);
   }
+}
+
+TEST(HalfSpaceSensitivity, AdjointGivesEachFunctionalOfTheFixedLoadSensitivity) {
+  // A crowned roller at 1500 N: for a peak-cell functional and a two-cell functional g, the adjoint
+  // u = M g gives gᵀdp = −uᵀdh for every gap change dh at fixed load; checked against the forward
+  // sensitivities of three unrelated gap changes (crown scale, tilt, a bump) and, for the peak,
+  // against central differences of full solves at fixed load.
+  const Grid g = CenteredGrid(24, 24, 0.3, 6.0);
+  auto gap = [&](double crown, double tilt, double bump) {
+    std::vector<double> h(size_t(g.cells()));
+    for (int iy = 0; iy < g.ny; ++iy)
+      for (int ix = 0; ix < g.nx; ++ix) {
+        const double x = g.x_centre_mm(ix), y = g.y_centre_mm(iy);
+        h[size_t(iy) * g.nx + ix] = x * x / (2 * 5.0) * (1.0 + crown) + 2e-4 * y * y + tilt * 1e-4 * y +
+                                    bump * 1e-3 * std::exp(-(x - 0.05) * (x - 0.05) / 0.01 - y * y / 2.0);
+      }
+    return h;
+  };
+  HalfSpaceSolver solver(SolverOptions{1e-13, 5000});
+  const double e_star = 113000.0, load = 1500.0;
+  const ContactSolution base = solver.SolveForLoad(g, gap(0, 0, 0), load, e_star);
+  ASSERT_TRUE(base.converged);
+  const size_t peak = size_t(base.max_pressure_cell);
+  std::vector<double> g_peak(size_t(g.cells()), 0.0), g_two(size_t(g.cells()), 0.0);
+  g_peak[peak] = 1.0;
+  g_two[peak] = 0.7;
+  g_two[peak + 3 * g.nx] = -1.3;  // three rows off the peak, inside the contact
+  ASSERT_GT(base.pressure_MPa[peak + 3 * g.nx], 0.0);
+  const double tol = 1e-12;
+  const std::vector<double> h0 = gap(0, 0, 0);
+  for (const std::vector<double>* functional : {&g_peak, &g_two}) {
+    const HalfSpaceSolver::Sensitivity u = solver.AdjointOfFunctional(g, base.pressure_MPa, *functional, e_star, tol);
+    ASSERT_TRUE(u.converged);
+    double sum_u = 0;
+    for (double v : u.pressure_MPa) sum_u += v;
+    EXPECT_NEAR(sum_u, 0.0, 1e-9 * std::abs(u.pressure_MPa[peak]));
+    for (const auto& [crown, tilt, bump] : {std::tuple{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}) {
+      const std::vector<double> h1 = gap(crown, tilt, bump);
+      std::vector<double> dh(h0.size());
+      for (size_t k = 0; k < dh.size(); ++k) dh[k] = h1[k] - h0[k];  // linear in each
+      const auto dp = solver.SensitivityForLoad(g, base.pressure_MPa, dh, 0.0, e_star, tol);
+      ASSERT_TRUE(dp.converged);
+      double forward = 0, adjoint = 0, scale = 0;
+      for (size_t k = 0; k < dh.size(); ++k) {
+        forward += (*functional)[k] * dp.pressure_MPa[k];
+        adjoint -= u.pressure_MPa[k] * dh[k];
+        scale = std::max(scale, std::abs(dp.pressure_MPa[k]));
+      }
+      EXPECT_NEAR(adjoint, forward, 1e-9 * scale) << crown << " " << tilt << " " << bump;
+      if (functional == &g_peak && bump == 1.0) {
+        // the bump's effect on the peak cell at fixed load by central differences of full solves
+        const double s = 1e-5;
+        const ContactSolution plus = solver.SolveForLoad(g, gap(0, 0, s), load, e_star);
+        const ContactSolution minus = solver.SolveForLoad(g, gap(0, 0, -s), load, e_star);
+        ASSERT_EQ(plus.cells_in_contact, base.cells_in_contact);
+        ASSERT_EQ(minus.cells_in_contact, base.cells_in_contact);
+        const double fd = (plus.pressure_MPa[peak] - minus.pressure_MPa[peak]) / (2 * s);
+        EXPECT_NEAR(adjoint, fd, 1e-4 * std::abs(fd) + 1e-3);
+      }
+    }
+  }
+  EXPECT_THROW(solver.AdjointOfFunctional(g, base.pressure_MPa, {1.0}, e_star), std::invalid_argument);
 }
 
 }  // namespace

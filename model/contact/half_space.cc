@@ -894,9 +894,27 @@ ContactSolution HalfSpaceSolver::SolveForApproach(const Grid& grid,
 HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
     const Grid& grid, const std::vector<double>& pressure, const std::vector<double>& dgap,
     double dload, double e_star, double tolerance, const std::vector<double>* initial) {
-  const size_t n = size_t(grid.nx) * grid.ny;
-  if (pressure.size() != n || dgap.size() != n)
+  if (pressure.size() != size_t(grid.cells()) || dgap.size() != size_t(grid.cells()))
     throw std::invalid_argument("SensitivityForLoad: pressure and gap derivative need one value per cell");
+  return FrozenSetSolve(grid, pressure, dgap, dload, e_star, tolerance, initial, true);
+}
+
+HalfSpaceSolver::Sensitivity HalfSpaceSolver::AdjointOfFunctional(const Grid& grid,
+                                                                  const std::vector<double>& pressure,
+                                                                  const std::vector<double>& functional,
+                                                                  double e_star, double tolerance) {
+  if (pressure.size() != size_t(grid.cells()) || functional.size() != size_t(grid.cells()))
+    throw std::invalid_argument("AdjointOfFunctional: pressure and functional need one value per cell");
+  // K u − μ·1 = g is SensitivityForLoad's system with dh = −g and dW = 0.
+  std::vector<double> minus_g(functional.size());
+  for (size_t k = 0; k < functional.size(); ++k) minus_g[k] = -functional[k];
+  return FrozenSetSolve(grid, pressure, minus_g, 0.0, e_star, tolerance, nullptr, false);
+}
+
+HalfSpaceSolver::Sensitivity HalfSpaceSolver::FrozenSetSolve(
+    const Grid& grid, const std::vector<double>& pressure, const std::vector<double>& dgap,
+    double dload, double e_star, double tolerance, const std::vector<double>* initial, bool approach) {
+  const size_t n = size_t(grid.nx) * grid.ny;
   Sensitivity out;
   out.pressure_MPa.assign(n, 0.0);
   std::vector<size_t> set;
@@ -928,8 +946,9 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
     for (double& v : product) v -= mean;
     return product;
   };
-  std::vector<double> base(set.size(), uniform);
-  const std::vector<double> kb = apply(base);  // P K dp0 (a copy: the work array is reused)
+  // P K dp0 (a copy: the work array is reused); exactly zero at fixed load.
+  const std::vector<double> kb =
+      uniform != 0 ? apply(std::vector<double>(set.size(), uniform)) : std::vector<double>(set.size(), 0.0);
   std::vector<double> b(set.size());
   double mean_dh = 0;
   for (size_t i = 0; i < set.size(); ++i) mean_dh += dgap[set[i]];
@@ -1014,9 +1033,11 @@ HalfSpaceSolver::Sensitivity HalfSpaceSolver::SensitivityForLoad(
   }
   out.iterations = it;
   out.converged = bb == 0 || rr <= tolerance * tolerance * bb;
+  for (size_t i = 0; i < set.size(); ++i) out.pressure_MPa[set[i]] = uniform + z[i];
+  if (!approach) return out;
   // dδ = mean over C of (K dp + dh).
   std::fill(full.begin(), full.end(), 0.0);
-  for (size_t i = 0; i < set.size(); ++i) full[set[i]] = out.pressure_MPa[set[i]] = uniform + z[i];
+  for (size_t i = 0; i < set.size(); ++i) full[set[i]] = out.pressure_MPa[set[i]];
   displacement();
   double da = 0;
   for (size_t i = 0; i < set.size(); ++i) da += u[set[i]] + dgap[set[i]];

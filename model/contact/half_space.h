@@ -124,10 +124,21 @@ class HalfSpaceSolver {
                                  const std::vector<double>& dgap_mm, double dload_N,
                                  double e_star_MPa, double tolerance = 1e-10,
                                  const std::vector<double>* initial_MPa = nullptr);
+  /// The adjoint of SensitivityForLoad at fixed load: with C frozen, solves K_CC u − μ·1 = g_C,
+  /// Σ u_C = 0 (u = M g, M the symmetric solution operator of that bordered system). For every
+  /// gap change dh the fixed-load pressure change dp of SensitivityForLoad(dh, dW = 0) has
+  /// gᵀdp = −uᵀdh: one solve per linear functional of dp (a peak cell, an end distance) instead
+  /// of one per parameter. Returns u in pressure_MPa; approach_mm is not computed (0).
+  Sensitivity AdjointOfFunctional(const Grid& grid, const std::vector<double>& pressure_MPa,
+                                  const std::vector<double>& functional, double e_star_MPa,
+                                  double tolerance = 1e-10);
 
   const SolverOptions& options() const;
 
  private:
+  Sensitivity FrozenSetSolve(const Grid& grid, const std::vector<double>& pressure_MPa,
+                             const std::vector<double>& dgap_mm, double dload_N, double e_star_MPa,
+                             double tolerance, const std::vector<double>* initial_MPa, bool approach);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

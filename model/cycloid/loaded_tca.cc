@@ -148,6 +148,30 @@ T EndDistanceFromRows(const contact::Grid& g, const std::vector<T>& rows) {
   return any ? result : T(0.0);
 }
 
+// The end distance's derivative as a linear functional of a pressure change dp with each row's
+// peak cell frozen: (cell, ∂E/∂p_cell) for the cells it depends on (at most the two outermost
+// loaded rows' peaks of one side).
+std::vector<std::pair<size_t, double>> EndDistanceWeights(const contact::Grid& g, const std::vector<double>& p) {
+  std::vector<J1> rows = RowMaxima(g, p, nullptr);
+  std::vector<size_t> cell(g.ny, 0);
+  for (int iy = 0; iy < g.ny; ++iy) {
+    double m = 0;
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const size_t k = size_t(iy) * g.nx + ix;
+      if (p[k] > m) m = p[k], cell[iy] = k;
+    }
+  }
+  std::vector<std::pair<size_t, double>> w;
+  for (int iy = 0; iy < g.ny; ++iy) {
+    if (!(rows[iy].a > 0)) continue;
+    for (J1& r : rows) r.v[0] = 0.0;
+    rows[iy].v[0] = 1.0;
+    const double c = EndDistanceFromRows<J1>(g, rows).v[0];
+    if (c != 0) w.emplace_back(cell[iy], c);
+  }
+  return w;
+}
+
 // Distance from the contact's axial end to the face end [mm], the smaller of the two sides, with
 // the end located within a cell: along each side the row maxima P (over x) fall like sqrt(distance
 // to the end) near an elliptical end, so P² is linear there and the end lies t/(1 − t) cells beyond
@@ -721,13 +745,14 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
   for (size_t j = 0; j < np; ++j) out[j].parameter = parameters[j];
   std::vector<double> compliance(n);
   std::vector<contact::HalfSpaceSolver::Sensitivity> by_load(n);
-  // by_gap[j][i], gap_rate, d_arm, d_backlash per parameter and pair.
-  std::vector<std::vector<contact::HalfSpaceSolver::Sensitivity>> by_gap(
-      np, std::vector<contact::HalfSpaceSolver::Sensitivity>(n));
+  // gap_rate, d_arm, d_backlash, dload per parameter and pair.
   std::vector<std::vector<double>> gap_rate(np, std::vector<double>(n, 0.0)),
       d_arm(np, std::vector<double>(n, 0.0)), d_backlash(np, std::vector<double>(n, 0.0)),
       dload(np, std::vector<double>(n, 0.0));
+  // The gap's rate dh/ds per parameter and pair on the pair's grid (kept for the adjoint products).
+  std::vector<std::vector<std::vector<double>>> dgaps(np, std::vector<std::vector<double>>(n));
   bool converged = true;
+  long iterations = 0;
   for (size_t i = 0; i < n; ++i) {
     const PairLoad& p = solved.pairs[i];
     if (p.pressure_MPa.size() != size_t(p.grid.cells()))
@@ -737,6 +762,7 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
     if (load_sensitivities && i < load_sensitivities->by_pair.size() && !load_sensitivities->by_pair[i].empty())
       start = &load_sensitivities->by_pair[i];
     by_load[i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, zero, 1.0, e_star_, tol, start);
+    iterations += by_load[i].iterations;
     if (load_sensitivities) {
       load_sensitivities->iterations += by_load[i].iterations;
       if (i < load_sensitivities->by_pair.size()) load_sensitivities->by_pair[i] = by_load[i].pressure_MPa;
@@ -777,27 +803,23 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
           dload[j][i] = -p.load_N / drive_.face_width_mm;
         }
       }
-      if (rotation_only) {
-        // Reciprocity: with K w = c·1 on the frozen set (w = dp/dW, the load sensitivity) and
-        // K dp = dδ·1 − dh there with Σ dp = 0 at fixed load, wᵀK dp = c Σ dp = 0 gives
-        // dδ = Σ w dh / Σ w: the approach's rate without a second solve (K symmetric).
-        double wh = 0, ws = 0;
-        for (size_t k = 0; k < dgap.size(); ++k) {
-          wh += by_load[i].pressure_MPa[k] * dgap[k];
-          ws += by_load[i].pressure_MPa[k];
-        }
-        // With cA Σ dp = dW (face width) the same product adds c·dW: dδ = c dW + Σ w dh / Σ w.
-        gap_rate[j][i] = (ws != 0 ? wh / ws : 0.0) + compliance[i] * dload[j][i];
-        continue;
+      // Reciprocity: with K w = c·1 on the frozen set (w = dp/dW, the load sensitivity) and
+      // K dp = dδ·1 − dh there with Σ dp = 0 at fixed load, wᵀK dp = c Σ dp = 0 gives
+      // dδ = Σ w dh / Σ w: the approach's rate without a second solve (K symmetric).
+      double wh = 0, ws = 0;
+      for (size_t k = 0; k < dgap.size(); ++k) {
+        wh += by_load[i].pressure_MPa[k] * dgap[k];
+        ws += by_load[i].pressure_MPa[k];
       }
-      by_gap[j][i] = solver_->SensitivityForLoad(p.grid, p.pressure_MPa, dgap, dload[j][i], e_star_, tol);
-      gap_rate[j][i] = by_gap[j][i].approach_mm;
-      converged = converged && by_gap[j][i].converged;
+      // With cA Σ dp = dW (face width) the same product adds c·dW: dδ = c dW + Σ w dh / Σ w.
+      gap_rate[j][i] = (ws != 0 ? wh / ws : 0.0) + compliance[i] * dload[j][i];
+      if (!rotation_only) dgaps[j][i] = std::move(dgap);
     }
   }
   // δ_i = l_i (Δφc − φ_bl,i) and Σ l_i F_i = T differentiated, with dδ_i = c_i dF_i + a_i:
   // dF_i = (l_i dΔφc + r_i) / c_i, r_i = dl_i (Δφc − φ_bl,i) − l_i dφ_bl,i − a_i.
   const double deflection = solved.deflection_rad;
+  std::vector<std::vector<double>> df(np, std::vector<double>(n, 0.0));
   for (size_t j = 0; j < np; ++j) {
     Derivative& d = out[j];
     d.converged = converged;
@@ -814,37 +836,82 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
     d.deflection_rad = den > 0 ? num / den : 0.0;
     d.rotation_rad = d_beta0[j] + d.deflection_rad;
     d.unloaded_rotation_rad = d_beta0[j];
-    if (rotation_only) continue;
-    double best = -1, nearest_end = kInf;
-    for (size_t i = 0; i < n; ++i) {
-      const PairLoad& p = solved.pairs[i];
-      const double df = (p.arm_mm * d.deflection_rad + r[i]) / compliance[i];
-      d.pair_load_N.push_back(df);
-      const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
-                                 p.pressure_MPa.begin());
-      double dp = df * by_load[i].pressure_MPa[peak];
-      if (!torque) dp += by_gap[j][i].pressure_MPa[peak];
+    for (size_t i = 0; i < n; ++i) df[j][i] = (solved.pairs[i].arm_mm * d.deflection_rad + r[i]) / compliance[i];
+  }
+  if (rotation_only) {
+    for (Derivative& d : out) d.cg_iterations = iterations;
+    return out;
+  }
+  // The pressures' derivatives by the adjoint: at fixed load the frozen set's pressure change is
+  // dp = −M dh + dW·w, M the symmetric solution operator of K u − μ·1 = g, Σ u = 0 on the set
+  // (the (1,1) block of the inverse of the symmetric bordered matrix), so a linear functional
+  // gᵀdp = −(M g)ᵀ dh + dW·gᵀw: one solve per functional (the pair's peak cell; the end
+  // distance through its row maxima), shared by every parameter, instead of one per parameter.
+  bool any_gap = false;
+  for (size_t j = 0; j < np; ++j) any_gap = any_gap || kind[j] != Kind::kTorque;
+  auto adjoint = [&](const PairLoad& p, const std::vector<std::pair<size_t, double>>& g) {
+    std::vector<double> functional(p.pressure_MPa.size(), 0.0);
+    for (const auto& [k, c] : g) functional[k] += c;
+    contact::HalfSpaceSolver::Sensitivity z =
+        solver_->AdjointOfFunctional(p.grid, p.pressure_MPa, functional, e_star_, tol);
+    converged = converged && z.converged;
+    iterations += z.iterations;
+    return std::move(z.pressure_MPa);
+  };
+  // gᵀ dp_j for each parameter j of pair i, z = M g (empty: no gap parameter).
+  auto functional = [&](size_t i, const std::vector<std::pair<size_t, double>>& g,
+                        const std::vector<double>& z, size_t j) {
+    double gw = 0;
+    for (const auto& [k, c] : g) gw += c * by_load[i].pressure_MPa[k];
+    double v = df[j][i] * gw;
+    if (kind[j] == Kind::kTorque) return v;
+    const std::vector<double>& h = dgaps[j][i];
+    double zh = 0;
+    for (size_t k = 0; k < h.size(); ++k) zh += z[k] * h[k];
+    return v - zh + dload[j][i] * gw;
+  };
+  std::vector<double> best(np, -1.0);
+  int nearest = -1;
+  double nearest_end = kInf;
+  for (size_t i = 0; i < n; ++i) {
+    const PairLoad& p = solved.pairs[i];
+    const size_t peak = size_t(std::max_element(p.pressure_MPa.begin(), p.pressure_MPa.end()) -
+                               p.pressure_MPa.begin());
+    const std::vector<std::pair<size_t, double>> g_peak = {{peak, 1.0}};
+    std::vector<double> z;
+    if (any_gap) z = adjoint(p, g_peak);
+    for (size_t j = 0; j < np; ++j) {
+      Derivative& d = out[j];
+      d.pair_load_N.push_back(df[j][i]);
+      const double dp = functional(i, g_peak, z, j);
       d.pair_max_pressure_MPa.push_back(dp);
-      if (p.max_pressure_MPa > best) {
-        best = p.max_pressure_MPa;
+      if (p.max_pressure_MPa > best[j]) {
+        best[j] = p.max_pressure_MPa;
         d.max_pressure_MPa = dp;
       }
-      if (options_.edge_margin) {
-        // The end distance through the row maxima (their cells frozen): dp over the field.
-        std::vector<double> field(p.pressure_MPa.size());
-        for (size_t k = 0; k < field.size(); ++k)
-          field[k] = df * by_load[i].pressure_MPa[k] + (torque ? 0.0 : by_gap[j][i].pressure_MPa[k]);
-        const J1 e = EndDistanceFromRows<J1>(p.grid, RowMaxima(p.grid, p.pressure_MPa, &field));
-        // Every length of the end distance (half face, row positions, dy) is proportional to b at
-        // fixed row maxima: its partial derivative in b is its value over b.
-        const double stretch = kind[j] == Kind::kFaceWidth ? e.a / drive_.face_width_mm : 0.0;
-        d.pair_end_distance_mm.push_back(e.v[0] + stretch);
-        if (p.end_distance_mm < nearest_end) {
-          nearest_end = p.end_distance_mm;
-          d.end_distance_mm = e.v[0] + stretch;
-        }
-      }
     }
+    if (options_.edge_margin && p.end_distance_mm < nearest_end) {
+      nearest_end = p.end_distance_mm;
+      nearest = int(i);
+    }
+  }
+  if (nearest >= 0) {
+    // The end distance of the pair nearest its face end (the solve's minimum), through the row
+    // maxima with their cells frozen: a linear functional of dp with at most a few cells.
+    const PairLoad& p = solved.pairs[size_t(nearest)];
+    const std::vector<std::pair<size_t, double>> g = EndDistanceWeights(p.grid, p.pressure_MPa);
+    std::vector<double> z;
+    if (any_gap && !g.empty()) z = adjoint(p, g);
+    for (size_t j = 0; j < np; ++j) {
+      // Every length of the end distance (half face, row positions, dy) is proportional to b at
+      // fixed row maxima: its partial derivative in b is its value over b.
+      const double stretch = kind[j] == Kind::kFaceWidth ? p.end_distance_mm / drive_.face_width_mm : 0.0;
+      out[j].end_distance_mm = (g.empty() ? 0.0 : functional(size_t(nearest), g, z, j)) + stretch;
+    }
+  }
+  for (Derivative& d : out) {
+    d.converged = converged;
+    d.cg_iterations = iterations;
   }
   return out;
 }
@@ -892,9 +959,11 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
     if (!cycle.meshes[k].pairs.empty() && cycle.meshes[k].end_distance_mm < end)
       end = cycle.meshes[k].end_distance_mm, end_angle = k;
   }
+  long iterations = 0;
   for (size_t k = 0; k < na; ++k) {
     const MeshLoad& m = cycle.meshes[k];
     const std::vector<LoadedTca::Derivative> d = tca.Differentiate(m, parameters);
+    if (!d.empty()) iterations += d.front().cg_iterations;
     for (size_t j = 0; j < np; ++j) {
       CycleDerivative& c = out[j];
       c.converged = c.converged && d[j].converged;
@@ -915,6 +984,7 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
       if (k == end_angle) c.end_distance_mm = d[j].end_distance_mm;
     }
   }
+  for (CycleDerivative& c : out) c.cg_iterations = iterations;
   for (CycleDerivative& c : out)
     if (na > 0) c.lte_peak_to_peak_arcsec = (c.rotation_rad[lte_hi] - c.rotation_rad[lte_lo]) * kArcsecPerRad;
   return out;

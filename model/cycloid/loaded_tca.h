@@ -153,9 +153,9 @@ class LoadedTca {
 
   /// Derivatives of a converged solve's outputs with respect to one parameter, by implicit
   /// differentiation with every pair's contact set and the set of loaded pairs frozen
-  /// (implicit-function theorem): per pair one forward sensitivity for its load (its compliance dδ/dF) and
-  /// one for the parameter at fixed load (dδ/ds), then the outer equations δ_i = l_i (Δφc − φ_bl,i),
-  /// Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] ("torque_Nmm"); the geometry
+  /// (implicit-function theorem): per pair one forward sensitivity for its load (its compliance
+  /// dδ/dF), the approach's rate at fixed load dδ/ds from it by reciprocity, then the outer
+  /// equations δ_i = l_i (Δφc − φ_bl,i), Σ l_i F_i = T differentiated. Parameters: the torque [N·mm] ("torque_Nmm"); the geometry
   /// "eccentricity_mm", "roller_position_radius_mm", "roller_radius_mm" and the profile
   /// modifications "delta_position_mm", "delta_radius_mm" (arms, backlash, the tooth's and the
   /// roller's curvature through the unloaded TCA with a Jet, the first-contact pair frozen); the
@@ -174,15 +174,19 @@ class LoadedTca {
     std::vector<double> pair_load_N;      ///< dF_i/ds, in the order of solved.pairs
     std::vector<double> pair_max_pressure_MPa;  ///< d p_i(peak cell)/ds, peak cell frozen
     double max_pressure_MPa = 0;          ///< of the pair carrying the maximum
-    /// d(end distance)/ds of each pair and of the solve's minimum (the active pair), row maxima's
+    /// d(end distance)/ds of the solve's minimum (the pair nearest its face end), row maxima's
     /// cells frozen; filled when LoadedOptions::edge_margin.
-    std::vector<double> pair_end_distance_mm;
     double end_distance_mm = 0;
+    /// CG iterations of the sensitivities and adjoints behind this solve's derivatives (shared by
+    /// every parameter of one call)
+    long cg_iterations = 0;
     bool converged = true;
   };
   Derivative Differentiate(const MeshLoad& solved, const std::string& parameter) const;
-  /// The same for several parameters at once: each pair's load sensitivity is solved once and
-  /// shared (one forward sensitivity per pair plus one per pair and parameter).
+  /// The same for several parameters at once, at the cost of one: per pair one forward
+  /// sensitivity (its load) and one adjoint (its peak cell), plus one adjoint for the end distance
+  /// (edge_margin) per solve, whatever the number of parameters; the approaches' rates by
+  /// reciprocity.
   std::vector<Derivative> Differentiate(const MeshLoad& solved,
                                         const std::vector<std::string>& parameters) const;
 
@@ -295,6 +299,7 @@ struct CycleDerivative {
   std::vector<std::vector<double>> pair_load_N;    ///< per angle, per loaded pair (in its order)
   /// per angle, per loaded pair (in its order): d(the pair's peak pressure)/ds, peak cell frozen
   std::vector<std::vector<double>> pair_max_pressure_MPa;
+  long cg_iterations = 0;  ///< the CG iterations of every sensitivity and adjoint (all parameters)
   bool converged = true;
 };
 
