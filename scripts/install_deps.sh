@@ -30,8 +30,14 @@ TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev
   # The API reference from the headers' comments (cmake/camopt_docs.cmake).
   doxygen)
 PACKAGES=("${PROGRAM_PACKAGES[@]}")
+# --program: without the packages' recommendations (Debian 12, the program's list: 389 packages,
+# 340 MB instead of 469 packages, 468 MB; git, gdb, valgrind, X11 and Perl libraries among those
+# left out), none of which building or running camopt uses (the setup's build and example run in a
+# fresh minbase chroot, docs/performance.md "Setup"). The full list keeps them: the tests' readers,
+# Chromium and Matplotlib are installed as Debian intends.
+APT_OPTIONS=()
 case "${1:-}" in
-  --program) ;;
+  --program) APT_OPTIONS=(--no-install-recommends) ;;
   "") PACKAGES+=("${TEST_PACKAGES[@]}") ;;
   *) echo "usage: $0 [--program]" >&2; exit 2 ;;
 esac
@@ -50,7 +56,7 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${APT_OPTIONS[@]}" "${missing[@]}"
 fi
 # The front end's npm packages, exactly as locked, into web/node_modules (the build copies uPlot's
 # files into build/web; nothing is fetched when the studio runs). --program: without the browser
