@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 
 #include "model/contact/hertz.h"
@@ -147,7 +148,13 @@ int Count(const std::vector<LcrContactSample>& v, int side) {
   return int(std::count_if(v.begin(), v.end(), [&](const LcrContactSample& c) { return c.side == side; }));
 }
 
-// The polish problem's evaluator: the base problem's outputs (crowning columns zero) then the 3D rows.
+// The polish problem's evaluator: the base problem's outputs (crowning columns zero) then the 3D
+// rows. Values are computed together with the Jacobian and both kept for the last x: an
+// interior-point or SQP iteration asks for the values at a trial point and, when it accepts the
+// point (most iterations), for the Jacobian at the same point. The Jet evaluation costs little
+// more than the double one here (the slices solves run in double either way and add one implicit
+// step for the derivatives, roller_slices.h), and its value parts are the double evaluation's
+// numbers (the same operations on the values), so the values do not change.
 class Composite final : public Evaluator {
  public:
   Composite(std::unique_ptr<Evaluator> base, std::unique_ptr<Evaluator> rows, int num_vars,
@@ -156,22 +163,36 @@ class Composite final : public Evaluator {
 
  protected:
   void DoEval(std::span<const double> x, std::span<double> y) const override {
-    const int nb = base_->num_vars(), mb = base_->num_outputs();
-    base_->Eval(x.first(nb), y.first(mb));
-    rows_->Eval(x, y.subspan(mb));
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Fill(x);
+    std::copy(y_.begin(), y_.end(), y.begin());
   }
   void DoEvalWithJacobian(std::span<const double> x, std::span<double> y, std::span<double> jac) const override {
-    const int n = num_vars(), nb = base_->num_vars(), mb = base_->num_outputs(), mr = rows_->num_outputs();
-    std::vector<double> jb(size_t(mb) * nb);
-    base_->EvalWithJacobian(x.first(nb), y.first(mb), jb);
-    std::fill(jac.begin(), jac.end(), 0.0);
-    for (int i = 0; i < mb; ++i)
-      for (int j = 0; j < nb; ++j) jac[size_t(i) * n + j] = jb[size_t(i) * nb + j];
-    rows_->EvalWithJacobian(x, y.subspan(mb), jac.subspan(size_t(mb) * n, size_t(mr) * n));
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Fill(x);
+    std::copy(y_.begin(), y_.end(), y.begin());
+    std::copy(jac_.begin(), jac_.end(), jac.begin());
   }
 
  private:
+  // Values and Jacobian at x into y_, jac_ (unless x is the last point).
+  void Fill(std::span<const double> x) const {
+    if (!x_.empty() && std::equal(x.begin(), x.end(), x_.begin(), x_.end())) return;
+    const int n = num_vars(), nb = base_->num_vars(), mb = base_->num_outputs(), mr = rows_->num_outputs();
+    y_.assign(size_t(num_outputs()), 0.0);
+    jac_.assign(size_t(num_outputs()) * n, 0.0);
+    std::vector<double> jb(size_t(mb) * nb);
+    x_.clear();  // (a throw below leaves no cached point)
+    base_->EvalWithJacobian(x.first(nb), std::span<double>(y_).first(mb), jb);
+    for (int i = 0; i < mb; ++i)
+      for (int j = 0; j < nb; ++j) jac_[size_t(i) * n + j] = jb[size_t(i) * nb + j];
+    rows_->EvalWithJacobian(x, std::span<double>(y_).subspan(mb), std::span<double>(jac_).subspan(size_t(mb) * n, size_t(mr) * n));
+    x_.assign(x.begin(), x.end());
+  }
+
   std::unique_ptr<Evaluator> base_, rows_;
+  mutable std::mutex mutex_;
+  mutable std::vector<double> x_, y_, jac_;
 };
 
 LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
