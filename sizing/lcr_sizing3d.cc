@@ -542,27 +542,38 @@ struct AccurateSide {
   double cell_dx_mm = 0, cell_dy_mm = 0;
 };
 
-std::array<AccurateSide, 2> AccurateAt(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, const lcr::Reducer<double>& r,
-                                       const std::array<lcr::RollerCrowning<double>, 2>& crowning, double torque_Nmm,
-                                       int nx, int ny) {
-  std::array<AccurateSide, 2> out;
+// The accurate model's numbers of both cams at one torque on the grid nx × ny ([0]) and on its
+// refinement 2nx × 2ny ([1]): one slices cycle, the same worst contacts solved on both grids.
+std::array<std::array<AccurateSide, 2>, 2> AccurateAt(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
+                                                      const lcr::Reducer<double>& r,
+                                                      const std::array<lcr::RollerCrowning<double>, 2>& crowning,
+                                                      double torque_Nmm, int nx, int ny) {
+  std::array<std::array<AccurateSide, 2>, 2> out;
   const double e_star = spec.material.composite_modulus_MPa();
   const lcr::LoadCase load{torque_Nmm, 0.0, 0.0};
   const lcr::CycleSeries series = lcr::AnalyzeCycle(r, spec.material, load, 3600, lcr::Stages{true, false, false});
   lcr::ContactModelOptions o = s3.contact;
   o.model = lcr::ContactModel::kHalfSpace;
-  o.grid_nx = nx, o.grid_ny = ny;
+  // Each solve from the previous contact's pressure on the same grid, a grid's first from the
+  // coarser grid's (contact3d_cycle.h): 1136 → 459 CG iterations in the example's verification.
+  lcr::HalfSpaceStarts starts;
+  starts.from_coarser_grid = true;
+  starts.from_previous_contact = true;
   for (int k = 0; k < 2; ++k) {
     const lcr::Side side = k == 0 ? lcr::Side::kInput : lcr::Side::kOutput;
-    const lcr::Contact3DCycleSide c = lcr::AnalyzeCycleContact3D(r, side, series, e_star, crowning[k], o);
-    AccurateSide& a = out[k];
-    a.peak_MPa = c.max_contact_stress_MPa;
-    a.slices_MPa = c.slices_peak_at_worst_MPa;
-    a.edge_loaded = c.edge_loaded;
-    a.converged = c.converged;
-    a.cell_dx_mm = c.cell_dx_mm, a.cell_dy_mm = c.cell_dy_mm;
-    const auto& p = c.worst_pressure_MPa;
-    if (!p.empty() && a.peak_MPa > 0) a.end_share = std::max(p.front(), p.back()) / a.peak_MPa;
+    const std::vector<lcr::Contact3DCycleSide> cs = lcr::AnalyzeCycleContact3DOnGrids(
+        r, side, series, e_star, crowning[k], o, {{nx, ny}, {2 * nx, 2 * ny}}, starts);
+    for (int g = 0; g < 2; ++g) {
+      const lcr::Contact3DCycleSide& c = cs[g];
+      AccurateSide& a = out[g][k];
+      a.peak_MPa = c.max_contact_stress_MPa;
+      a.slices_MPa = c.slices_peak_at_worst_MPa;
+      a.edge_loaded = c.edge_loaded;
+      a.converged = c.converged;
+      a.cell_dx_mm = c.cell_dx_mm, a.cell_dy_mm = c.cell_dy_mm;
+      const auto& p = c.worst_pressure_MPa;
+      if (!p.empty() && a.peak_MPa > 0) a.end_share = std::max(p.front(), p.back()) / a.peak_MPa;
+    }
   }
   return out;
 }
@@ -601,8 +612,7 @@ Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec
     v.ran = true;
     v.checks.clear();
     const lcr::Reducer<double>& r = *out.outcome.design;
-    const auto a0 = AccurateAt(spec, s3, r, out.crowning, torque, nx, ny);
-    const auto a1 = AccurateAt(spec, s3, r, out.crowning, torque, 2 * nx, 2 * ny);
+    const auto [a0, a1] = AccurateAt(spec, s3, r, out.crowning, torque, nx, ny);
     if (first_grid)
       *first_grid = HalfSpaceCheckOf({a0[0].peak_MPa, a0[1].peak_MPa}, {a0[0].slices_MPa, a0[1].slices_MPa},
                                      {a0[0].edge_loaded, a0[1].edge_loaded}, a0[1].cell_dx_mm, a0[1].cell_dy_mm,
@@ -615,8 +625,8 @@ Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec
     const bool last = round >= kVerifyRounds;
     std::array<AccurateSide, 2> o0 = a0, o1 = a1;
     if (over && (!stress_fails || last)) {
-      o0 = AccurateAt(spec, s3, r, out.crowning, s3.overload_torque_Nmm, nx, ny);
-      o1 = AccurateAt(spec, s3, r, out.crowning, s3.overload_torque_Nmm, 2 * nx, 2 * ny);
+      const auto [v0, v1] = AccurateAt(spec, s3, r, out.crowning, s3.overload_torque_Nmm, nx, ny);
+      o0 = v0, o1 = v1;
     }
     for (int k = 0; k < 2; ++k) {
       if (std::isfinite(p_lim)) {
