@@ -118,10 +118,9 @@ std::vector<Contact3DCycleSide> AnalyzeCycleContact3DOnGrids(const Reducer<doubl
   }
   if (contacts.empty()) return std::vector<Contact3DCycleSide>(grids.size(), out);
 
-  // The worst contacts (distinct angles), solved exactly by the slices model.
-  std::vector<size_t> order(contacts.size());
-  for (size_t c = 0; c < order.size(); ++c) order[c] = c;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return estimate[a] > estimate[b]; });
+  // The worst contacts (distinct angles), solved exactly by the slices model: in the order of a
+  // stable sort by falling estimate, each the largest estimate at an angle not yet taken (the
+  // first such contact on a tie), found by a pass over the contacts per pick instead of a sort.
   struct Worst {
     size_t c;
     double value;
@@ -130,10 +129,15 @@ std::vector<Contact3DCycleSide> AnalyzeCycleContact3DOnGrids(const Reducer<doubl
   };
   std::vector<Worst> worst;
   std::vector<int> used;
-  for (size_t c : order) {
-    if (used.size() >= (model3d ? 4u : 1u)) break;
+  const size_t wanted = model3d ? 4u : 1u;
+  while (used.size() < wanted) {
+    size_t c = contacts.size();
+    for (size_t i = 0; i < contacts.size(); ++i)
+      if ((c == contacts.size() || estimate[i] > estimate[c]) &&
+          std::find(used.begin(), used.end(), contacts[i].angle) == used.end())
+        c = i;
+    if (c == contacts.size()) break;
     const Contact& k = contacts[c];
-    if (std::find(used.begin(), used.end(), k.angle) != used.end()) continue;
     used.push_back(k.angle);
     Worst w{c, estimate[c], {}, {}};
     if (model3d) {
