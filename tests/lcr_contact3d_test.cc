@@ -18,6 +18,7 @@
 #include "model/lcr/contact3d.h"
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
+#include "model/lcr/cycle_curvature.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_crowning_tuning_study.h"
 #include "studies/work_limits.h"
@@ -176,6 +177,23 @@ TEST(LcrContact3D, LcrIIStraightVersusCrownedRollers) {
     EXPECT_NEAR(*std::max_element((*cr)->max_stress_MPa.begin(), (*cr)->max_stress_MPa.end()),
                 (*cr)->max_contact_stress_MPa, (*cr)->interpolation_error_MPa + 1e-9);
   }
+}
+
+// The cycle's curvatures (AnalyzeCycle's array kernel) are RollerContacts' bit for bit.
+TEST(LcrContact3D, CycleCurvaturesAreRollerContactsBitForBit) {
+  for (const lcr::Reducer<double>& r : {testing::LcrI(), testing::LcrII(), testing::LcrIII()})
+    for (const lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
+      std::vector<double> theta;
+      for (int i = 0; i < 720; ++i) theta.push_back(2 * kPi * i / 720);
+      const std::vector<double> kappa = lcr::CycleCurvatures(r, side, theta);
+      const size_t n = size_t(r.side(side).rollers);
+      ASSERT_EQ(kappa.size(), theta.size() * n);
+      for (size_t i = 0; i < theta.size(); ++i) {
+        const auto rc = lcr::RollerContacts(r, side, theta[i]);
+        ASSERT_EQ(rc.size(), n);
+        for (size_t k = 0; k < n; ++k) ASSERT_EQ(kappa[i * n + k], rc[k].curvature) << i << " " << k;
+      }
+    }
 }
 
 // The half_space cycle on two grids at once: started cold it gives bit for bit what two separate

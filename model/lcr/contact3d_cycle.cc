@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "model/contact/roller_half_space.h"
+#include "model/lcr/cycle_curvature.h"
 
 namespace camopt::lcr {
 
@@ -55,12 +56,14 @@ std::vector<Contact3DCycleSide> AnalyzeCycleContact3DOnGrids(const Reducer<doubl
   std::vector<Contact> contacts;
   bool undercut = false;
   double f_max = 0, r_min = kInf, r_max = 0;
+  const std::vector<double> kappa = CycleCurvatures(r, s, series.theta_rad);
+  const size_t rollers = size_t(cam.rollers);
   for (int i = 0; i < steps; ++i) {
-    const auto rc = RollerContacts(r, s, series.theta_rad[i]);
-    for (size_t k = 0; k < rc.size(); ++k) {
-      const double f = ss.roller_force_N[i][k];
+    const double* const forces = ss.roller_force_N.row(size_t(i));
+    for (size_t k = 0; k < rollers; ++k) {
+      const double f = forces[k];
       if (!(f > 0)) continue;
-      const double r_eff = rr * (1.0 - rr * rc[k].curvature);
+      const double r_eff = rr * (1.0 - rr * kappa[size_t(i) * rollers + k]);
       if (!(r_eff > 0)) {
         undercut = true;
         out.max_stress_MPa[i] = kInf;
