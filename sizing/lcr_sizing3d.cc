@@ -295,9 +295,10 @@ DenseResult Dense(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3, std::spa
     {
       std::vector<double> fm(steps);
       std::vector<int> jm(steps);
+      const int rollers = ss.roller_force_N.rollers();
       for (int i = 0; i < steps; ++i) {
-        const auto& f = ss.roller_force_N[i];
-        jm[i] = int(std::max_element(f.begin(), f.end()) - f.begin());
+        const double* const f = ss.roller_force_N.row(size_t(i));
+        jm[i] = int(std::max_element(f, f + rollers) - f);
         fm[i] = f[jm[i]];
       }
       std::vector<std::pair<double, std::pair<int, int>>> forces;
