@@ -23,7 +23,8 @@
 //    Tracked contacts are fixed (angle, roller) pairs; after each solve the dense check (3600
 //    angles: the line check for geometry and forces, lcr::AnalyzeCycleContact3D for the 3D
 //    stress, exact slices solves at the largest overload forces for the ends) adds the contacts
-//    that come near a limit, until it holds (at most 8 rounds).
+//    that come near a limit, each stress peak with the contacts 2 dense angles either side of it
+//    (they bracket the peak as it moves with the design), until it holds (at most 8 rounds).
 // 3. The best design is verified by the half_space model on a refined grid, with the slices
 //    stress limit tightened and the polish re-run where it breaks the limit (VerifyLcrMinSize3D).
 #pragma once

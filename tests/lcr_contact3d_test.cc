@@ -16,6 +16,9 @@
 
 #include "model/lcr/contact.h"
 #include "model/lcr/contact3d.h"
+#include "model/lcr/contact3d_cycle.h"
+#include "model/lcr/cycle.h"
+#include "model/lcr/cycle_curvature.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_crowning_tuning_study.h"
 #include "studies/work_limits.h"
@@ -173,6 +176,75 @@ TEST(LcrContact3D, LcrIIStraightVersusCrownedRollers) {
     // the interpolation error.
     EXPECT_NEAR(*std::max_element((*cr)->max_stress_MPa.begin(), (*cr)->max_stress_MPa.end()),
                 (*cr)->max_contact_stress_MPa, (*cr)->interpolation_error_MPa + 1e-9);
+  }
+}
+
+// The cycle's curvatures (AnalyzeCycle's array kernel) are RollerContacts' bit for bit.
+TEST(LcrContact3D, CycleCurvaturesAreRollerContactsBitForBit) {
+  for (const lcr::Reducer<double>& r : {testing::LcrI(), testing::LcrII(), testing::LcrIII()})
+    for (const lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
+      std::vector<double> theta;
+      for (int i = 0; i < 720; ++i) theta.push_back(2 * kPi * i / 720);
+      const std::vector<double> kappa = lcr::CycleCurvatures(r, side, theta);
+      const size_t n = size_t(r.side(side).rollers);
+      ASSERT_EQ(kappa.size(), theta.size() * n);
+      for (size_t i = 0; i < theta.size(); ++i) {
+        const auto rc = lcr::RollerContacts(r, side, theta[i]);
+        ASSERT_EQ(rc.size(), n);
+        for (size_t k = 0; k < n; ++k) ASSERT_EQ(kappa[i * n + k], rc[k].curvature) << i << " " << k;
+      }
+    }
+}
+
+// The half_space cycle on two grids at once: started cold it gives bit for bit what two separate
+// AnalyzeCycleContact3D calls give; with the starts (the previous contact's pressure on the same
+// grid, the coarser grid's for a grid's first contact) the same contacts and peaks to within the
+// solver's tolerance (relative pressure change 1e-8 per iteration; 1e-6 allows for the distance
+// to the exact solution that a small last step leaves).
+TEST(LcrContact3D, HalfSpaceCycleStartsChangeTheIterationsNotTheAnswer) {
+  constexpr double kStartRelTol = 1e-6;
+  const lcr::Reducer<double> r = testing::LcrII();
+  const lcr::Material m = testing::Steel();
+  const double e_star = m.composite_modulus_MPa();
+  const auto series = lcr::AnalyzeCycle(r, m, lcr::LoadCase{80e3, 0, 0}, 360, lcr::Stages{true, false, false});
+  lcr::RollerCrowning<double> crown;
+  crown.type = contact::CrowningType::kLogarithmic;
+  crown.coefficient = 0.01, crown.effective_length = 10.5;
+  lcr::ContactModelOptions o;
+  o.model = lcr::ContactModel::kHalfSpace;
+  o.slices = 20;
+  o.misalignment_rad = 1e-3;
+  const std::vector<std::array<int, 2>> grids = {{24, 64}, {48, 128}};
+  for (const lcr::Side side : {lcr::Side::kInput, lcr::Side::kOutput}) {
+    const auto cold = lcr::AnalyzeCycleContact3DOnGrids(r, side, series, e_star, crown, o, grids, {});
+    lcr::HalfSpaceStarts starts;
+    starts.from_coarser_grid = starts.from_previous_contact = true;
+    const auto warm = lcr::AnalyzeCycleContact3DOnGrids(r, side, series, e_star, crown, o, grids, starts);
+    ASSERT_EQ(cold.size(), 2u);
+    ASSERT_EQ(warm.size(), 2u);
+    for (int g = 0; g < 2; ++g) {
+      lcr::ContactModelOptions one = o;
+      one.grid_nx = grids[g][0], one.grid_ny = grids[g][1];
+      const auto single = lcr::AnalyzeCycleContact3D(r, side, series, e_star, crown, one);
+      EXPECT_EQ(cold[g].max_contact_stress_MPa, single.max_contact_stress_MPa) << g;
+      EXPECT_EQ(cold[g].worst_angle, single.worst_angle) << g;
+      EXPECT_EQ(cold[g].worst_pressure_MPa, single.worst_pressure_MPa) << g;
+      EXPECT_EQ(cold[g].max_stress_MPa, single.max_stress_MPa) << g;
+      EXPECT_EQ(cold[g].half_space_iterations, single.half_space_iterations) << g;
+      EXPECT_TRUE(warm[g].converged) << g;
+      EXPECT_EQ(warm[g].worst_angle, cold[g].worst_angle) << g;
+      EXPECT_EQ(warm[g].worst_roller, cold[g].worst_roller) << g;
+      EXPECT_EQ(warm[g].edge_loaded, cold[g].edge_loaded) << g;
+      EXPECT_NEAR(warm[g].max_contact_stress_MPa, cold[g].max_contact_stress_MPa,
+                  kStartRelTol * cold[g].max_contact_stress_MPa) << g;
+      ASSERT_EQ(warm[g].worst_pressure_MPa.size(), cold[g].worst_pressure_MPa.size());
+      for (size_t i = 0; i < cold[g].worst_pressure_MPa.size(); ++i)
+        EXPECT_NEAR(warm[g].worst_pressure_MPa[i], cold[g].worst_pressure_MPa[i],
+                    kStartRelTol * cold[g].max_contact_stress_MPa) << g << " " << i;
+      std::printf("%s cam, %dx%d: peak %.6f MPa, CG iterations cold %d, with starts %d\n",
+                  side == lcr::Side::kInput ? "input" : "output", grids[g][0], grids[g][1],
+                  warm[g].max_contact_stress_MPa, cold[g].half_space_iterations, warm[g].half_space_iterations);
+    }
   }
 }
 

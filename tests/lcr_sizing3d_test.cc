@@ -108,6 +108,47 @@ TEST(LcrSizing3D, StressAndEdgeRowsMatchCentralDifferencesOnTheEnds) {
   ExpectRowsMatchCentralDifferences<7>(x, Spec3D());
 }
 
+// The polish problem's evaluator computes the values with the Jacobian and keeps both for the
+// last point: values and Jacobian asked at points in any order are those of a fresh evaluation at
+// that point, and the values of Eval and EvalWithJacobian agree (Jet arithmetic may round the last
+// bit differently, e.g. a division done as a product with the reciprocal).
+TEST(LcrSizing3D, ThePolishEvaluatorsLastPointCacheGivesEachPointsOwnNumbers) {
+  objectives::LcrSizingSpec s = Spec();
+  s.limits.contact_stress_MPa = kInf;
+  const std::vector<double> x1 = {1.2266, 48.889, 48.889, 7.722, 52.75, 0.03, 0.025};
+  std::vector<double> x2 = x1;
+  x2[0] *= 1.01, x2[5] *= 0.9;
+  objectives::LcrTracked3D tr;
+  for (int side = 0; side < 2; ++side) {
+    tr.stress.push_back({side, 0.05, TopRoller(s, x1, side, 0.05)});
+    tr.edge.push_back({side, 0.11, TopRoller(s, x1, side, 0.11)});
+    s.active.force[side] = {{0.05, TopRoller(s, x1, side, 0.05), 0.0}};
+  }
+  const auto make = [&] { return objectives::MakeLcrSizing3DProblem(s, Spec3D(), 1500, tr); };
+  const objectives::Problem p = make();
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  // Fresh problems (no cached point) give the reference numbers of each point.
+  std::vector<double> y1(m), j1(size_t(m) * n), y2(m), j2(size_t(m) * n), v1(m);
+  make().evaluator->EvalWithJacobian(x1, y1, j1);
+  make().evaluator->EvalWithJacobian(x2, y2, j2);
+  make().evaluator->Eval(x1, v1);
+  for (int k = 0; k < m; ++k) EXPECT_NEAR(v1[k], y1[k], 1e-12 * std::max(1.0, std::abs(y1[k]))) << k;
+  // One problem asked in a mixed order.
+  std::vector<double> y(m), j(size_t(m) * n);
+  p.evaluator->Eval(x1, y);
+  EXPECT_EQ(y, y1);
+  p.evaluator->Eval(x2, y);
+  EXPECT_EQ(y, y2);
+  p.evaluator->EvalWithJacobian(x1, y, j);
+  EXPECT_EQ(y, y1);
+  EXPECT_EQ(j, j1);
+  p.evaluator->EvalWithJacobian(x2, y, j);
+  EXPECT_EQ(y, y2);
+  EXPECT_EQ(j, j2);
+  p.evaluator->EvalWithJacobian(x2, y, j);
+  EXPECT_EQ(j, j2);
+}
+
 TEST(LcrSizing3D, RowsMatchCentralDifferencesInTheCrownRadiusFlatLengthAndLengths) {
   // A partial crown (R, L0 per cam as variables) and the roller length and cam thickness as
   // variables: 5 + 2 + 2 + 1 + 1 = 11. The contact length is min(l_r, b_c): with l_r < b_c the

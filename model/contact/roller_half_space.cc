@@ -14,7 +14,7 @@ namespace camopt::contact {
 RollerHalfSpaceResult SolveRollerHalfSpace(double force_N, double r_eff_mm, double length_mm,
                                            double e_star_MPa, const std::function<double(double)>& gap_y,
                                            int nx, int ny, double half_width_hint_mm,
-                                           HalfSpaceSolver& solver) {
+                                           HalfSpaceSolver& solver, const std::vector<double>* start) {
   if (nx < 2 || ny < 1 || !(r_eff_mm > 0) || !(length_mm > 0) || !(e_star_MPa > 0))
     throw std::invalid_argument("roller half-space: need nx >= 2, ny >= 1, R' > 0, length > 0, E* > 0");
   RollerHalfSpaceResult out;
@@ -33,7 +33,8 @@ RollerHalfSpaceResult SolveRollerHalfSpace(double force_N, double r_eff_mm, doub
         gap[iy * nx + ix] = x * x / (2 * r_eff_mm) + hy[iy];
       }
     }
-    const ContactSolution s = solver.SolveForLoad(grid, gap, force_N, e_star_MPa);
+    const ContactSolution s = k == 0 && start ? solver.SolveForLoad(grid, gap, force_N, e_star_MPa, *start)
+                                              : solver.SolveForLoad(grid, gap, force_N, e_star_MPa);
     out.iterations += s.iterations;
     if (s.contact_at_x_edge && k < 5) {
       half_x *= 2;
@@ -44,6 +45,8 @@ RollerHalfSpaceResult SolveRollerHalfSpace(double force_N, double r_eff_mm, doub
     out.dx_mm = grid.dx;
     out.dy_mm = grid.dy;
     out.converged = s.converged && !s.contact_at_x_edge;
+    out.half_x_mm = half_x;
+    out.pressure_MPa = s.pressure_MPa;
     out.message = s.contact_at_x_edge ? "contact reaches the grid's x edge" : s.message;
     out.y_mm.resize(ny);
     out.pressure_along_y.assign(ny, 0.0);

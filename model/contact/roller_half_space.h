@@ -26,13 +26,18 @@ struct RollerHalfSpaceResult {
   bool converged = false;
   int iterations = 0;
   std::string message;
+  double half_x_mm = 0;                   // the grid's extent across rolling, [−X, X]
+  std::vector<double> pressure_MPa;       // per cell (row-major, iy * nx + ix)
 };
 
 /// @param half_width_hint_mm  X/1.3 (e.g. the largest slice half-width); <= 0: the line value.
+/// @param start  optional: a pressure field (nx × ny cells) on the first grid tried (X = 1.3 ×
+///        the hint) to start the iteration from (HalfSpaceSolver::SolveForLoad with a start: the
+///        same equations and stopping test, usually fewer iterations); ignored once X is doubled.
 RollerHalfSpaceResult SolveRollerHalfSpace(double force_N, double r_eff_mm, double length_mm,
                                            double e_star_MPa, const std::function<double(double)>& gap_y,
                                            int nx, int ny, double half_width_hint_mm,
-                                           HalfSpaceSolver& solver);
+                                           HalfSpaceSolver& solver, const std::vector<double>* start = nullptr);
 
 /// A logarithmic crown designed for its load by Fujiwara & Kawase's criterion (NTN Technical
 /// Review 75, 2007: the crown's parameters minimise the peak contact pressure at the design load):

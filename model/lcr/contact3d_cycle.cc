@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "model/contact/roller_half_space.h"
+#include "model/lcr/cycle_curvature.h"
 
 namespace camopt::lcr {
 
@@ -15,11 +16,33 @@ struct Contact {
   double force, r_eff;
 };
 
+// A field of nx × ny cells on the grid of 2nx × 2ny cells over the same extent: each cell's value
+// on its four children.
+std::vector<double> Refined(const std::vector<double>& coarse, int nx, int ny) {
+  std::vector<double> fine(size_t(4) * nx * ny);
+  for (int iy = 0; iy < 2 * ny; ++iy)
+    for (int ix = 0; ix < 2 * nx; ++ix) fine[size_t(iy) * 2 * nx + ix] = coarse[size_t(iy / 2) * nx + ix / 2];
+  return fine;
+}
+
 }  // namespace
 
 Contact3DCycleSide AnalyzeCycleContact3D(const Reducer<double>& r, Side s, const CycleSeries& series,
                                          double e_star, const RollerCrowning<double>& crowning,
                                          const ContactModelOptions& options) {
+  if (options.model != ContactModel::kHalfSpace)
+    return AnalyzeCycleContact3DOnGrids(r, s, series, e_star, crowning, options, {{0, 0}}, {}).front();
+  return AnalyzeCycleContact3DOnGrids(r, s, series, e_star, crowning, options, {{options.grid_nx, options.grid_ny}},
+                                      {})
+      .front();
+}
+
+std::vector<Contact3DCycleSide> AnalyzeCycleContact3DOnGrids(const Reducer<double>& r, Side s,
+                                                             const CycleSeries& series, double e_star,
+                                                             const RollerCrowning<double>& crowning,
+                                                             const ContactModelOptions& options,
+                                                             const std::vector<std::array<int, 2>>& grids,
+                                                             const HalfSpaceStarts& starts) {
   const CamSide<double>& cam = r.side(s);
   const SideSeries& ss = s == Side::kInput ? series.input : series.output;
   const double length = cam.contact_length(), rr = cam.roller_radius;
@@ -33,12 +56,14 @@ Contact3DCycleSide AnalyzeCycleContact3D(const Reducer<double>& r, Side s, const
   std::vector<Contact> contacts;
   bool undercut = false;
   double f_max = 0, r_min = kInf, r_max = 0;
+  const std::vector<double> kappa = CycleCurvatures(r, s, series.theta_rad);
+  const size_t rollers = size_t(cam.rollers);
   for (int i = 0; i < steps; ++i) {
-    const auto rc = RollerContacts(r, s, series.theta_rad[i]);
-    for (size_t k = 0; k < rc.size(); ++k) {
-      const double f = ss.roller_force_N[i][k];
+    const double* const forces = ss.roller_force_N.row(size_t(i));
+    for (size_t k = 0; k < rollers; ++k) {
+      const double f = forces[k];
       if (!(f > 0)) continue;
-      const double r_eff = rr * (1.0 - rr * rc[k].curvature);
+      const double r_eff = rr * (1.0 - rr * kappa[size_t(i) * rollers + k]);
       if (!(r_eff > 0)) {
         undercut = true;
         out.max_stress_MPa[i] = kInf;
@@ -92,60 +117,99 @@ Contact3DCycleSide AnalyzeCycleContact3D(const Reducer<double>& r, Side s, const
   }
   if (undercut) {
     out.max_contact_stress_MPa = kInf;
-    return out;
+    return std::vector<Contact3DCycleSide>(grids.size(), out);
   }
-  if (contacts.empty()) return out;
+  if (contacts.empty()) return std::vector<Contact3DCycleSide>(grids.size(), out);
 
-  // The worst contacts (distinct angles), solved exactly.
-  std::vector<size_t> order(contacts.size());
-  for (size_t c = 0; c < order.size(); ++c) order[c] = c;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return estimate[a] > estimate[b]; });
-  std::vector<int> used;
-  contact::HalfSpaceSolver solver;
-  double best = -1;
-  for (size_t c : order) {
-    if (used.size() >= (model3d ? 4u : 1u)) break;
-    const Contact& k = contacts[c];
-    if (std::find(used.begin(), used.end(), k.angle) != used.end()) continue;
-    used.push_back(k.angle);
-    double value = estimate[c];
+  // The worst contacts (distinct angles), solved exactly by the slices model: in the order of a
+  // stable sort by falling estimate, each the largest estimate at an angle not yet taken (the
+  // first such contact on a tie), found by a pass over the contacts per pick instead of a sort.
+  struct Worst {
+    size_t c;
+    double value;
     std::vector<double> y, p;
+    double peak_slices = 0, hint = 0;
+  };
+  std::vector<Worst> worst;
+  std::vector<int> used;
+  const size_t wanted = model3d ? 4u : 1u;
+  while (used.size() < wanted) {
+    size_t c = contacts.size();
+    for (size_t i = 0; i < contacts.size(); ++i)
+      if ((c == contacts.size() || estimate[i] > estimate[c]) &&
+          std::find(used.begin(), used.end(), contacts[i].angle) == used.end())
+        c = i;
+    if (c == contacts.size()) break;
+    const Contact& k = contacts[c];
+    used.push_back(k.angle);
+    Worst w{c, estimate[c], {}, {}};
     if (model3d) {
       const auto sol = slices(k.force, k.r_eff);
       out.interpolation_error_MPa = std::max(out.interpolation_error_MPa, std::abs(sol.peak_pressure - estimate[c]));
       out.edge_loaded = out.edge_loaded || sol.edge_loaded;
-      value = sol.peak_pressure;
-      out.max_stress_MPa[k.angle] = value;  // the exact solve replaces its estimate
-      y = sol.y_mm;
-      p = sol.pressure_MPa;
-      if (options.model == ContactModel::kHalfSpace) {
-        double hint = 0;
-        for (double b : sol.half_width_mm) hint = std::max(hint, b);
-        const auto h = contact::SolveRollerHalfSpace(
-            k.force, k.r_eff, length, e_star,
-            [&](double yy) { return GapAlongRoller(crowning, options.misalignment_rad, yy); }, options.grid_nx,
-            options.grid_ny, hint, solver);
-        out.converged = out.converged && h.converged;
-        out.edge_loaded = out.edge_loaded || h.edge_loaded;
-        out.cell_dx_mm = h.dx_mm, out.cell_dy_mm = h.dy_mm;
-        if (h.peak_pressure_MPa > best) out.slices_peak_at_worst_MPa = sol.peak_pressure;
-        value = h.peak_pressure_MPa;
-        y = h.y_mm;
-        p = h.pressure_along_y;
-      }
+      w.value = w.peak_slices = sol.peak_pressure;
+      out.max_stress_MPa[k.angle] = w.value;  // the exact solve replaces its estimate
+      w.y = sol.y_mm;
+      w.p = sol.pressure_MPa;
+      for (double b : sol.half_width_mm) w.hint = std::max(w.hint, b);
     } else {
-      const int n = 2;
-      y = {-0.5 * length, 0.5 * length};
-      p.assign(n, value);
+      w.y = {-0.5 * length, 0.5 * length};
+      w.p.assign(2, w.value);
     }
-    if (value > best) {
-      best = value;
-      out.worst_angle = k.angle, out.worst_roller = k.roller;
-      out.worst_y_mm = y, out.worst_pressure_MPa = p;
-    }
+    worst.push_back(std::move(w));
   }
-  out.max_contact_stress_MPa = best;
-  return out;
+
+  // Per grid: the half_space solves of the same contacts (half_space only), and the largest.
+  std::vector<Contact3DCycleSide> outs(grids.size(), out);
+  contact::HalfSpaceSolver solver;
+  // The previous grid's pressure per worst contact (a start for the next grid's solve).
+  std::vector<contact::RollerHalfSpaceResult> previous(worst.size());
+  for (size_t gi = 0; gi < grids.size(); ++gi) {
+    Contact3DCycleSide& o = outs[gi];
+    const int nx = grids[gi][0], ny = grids[gi][1];
+    double best = -1;
+    const contact::RollerHalfSpaceResult* last = nullptr;  // this grid's previous contact
+    for (size_t w = 0; w < worst.size(); ++w) {
+      const Contact& k = contacts[worst[w].c];
+      double value = worst[w].value;
+      const std::vector<double>* y = &worst[w].y;
+      const std::vector<double>* p = &worst[w].p;
+      if (model3d && options.model == ContactModel::kHalfSpace) {
+        // The start (HalfSpaceStarts): the same contact on the previous grid when this grid
+        // halves its cells over the same extent, else this grid's previous contact.
+        std::vector<double> start;
+        const contact::RollerHalfSpaceResult& coarse = previous[w];
+        const double half_x = 1.3 * worst[w].hint;
+        if (starts.from_previous_contact && last && !last->pressure_MPa.empty() &&
+                 int(last->pressure_MPa.size()) == nx * ny)
+          start = last->pressure_MPa;
+        else if (starts.from_coarser_grid && gi > 0 && nx == 2 * grids[gi - 1][0] && ny == 2 * grids[gi - 1][1] &&
+            coarse.half_x_mm == half_x && !coarse.pressure_MPa.empty())
+          start = Refined(coarse.pressure_MPa, grids[gi - 1][0], grids[gi - 1][1]);
+        auto h = contact::SolveRollerHalfSpace(
+            k.force, k.r_eff, length, e_star,
+            [&](double yy) { return GapAlongRoller(crowning, options.misalignment_rad, yy); }, nx, ny,
+            worst[w].hint, solver, start.empty() ? nullptr : &start);
+        o.converged = o.converged && h.converged;
+        o.edge_loaded = o.edge_loaded || h.edge_loaded;
+        o.cell_dx_mm = h.dx_mm, o.cell_dy_mm = h.dy_mm;
+        o.half_space_iterations += h.iterations;
+        if (h.peak_pressure_MPa > best) o.slices_peak_at_worst_MPa = worst[w].peak_slices;
+        value = h.peak_pressure_MPa;
+        previous[w] = std::move(h);
+        last = &previous[w];
+        y = &previous[w].y_mm;
+        p = &previous[w].pressure_along_y;
+      }
+      if (value > best) {
+        best = value;
+        o.worst_angle = k.angle, o.worst_roller = k.roller;
+        o.worst_y_mm = *y, o.worst_pressure_MPa = *p;
+      }
+    }
+    o.max_contact_stress_MPa = best;
+  }
+  return outs;
 }
 
 }  // namespace camopt::lcr

@@ -14,6 +14,7 @@
 // series stay the slices model's.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "model/lcr/contact3d.h"
@@ -34,11 +35,38 @@ struct Contact3DCycleSide {
   double interpolation_error_MPa = 0;    // see the header comment (0 for line)
   double slices_peak_at_worst_MPa = 0;   // half_space: the slices model at the same contact
   bool converged = true;
+  int half_space_iterations = 0;         // half_space: the solver's iterations, summed over the solves
 };
 
 /// series: the forces of AnalyzeCycle (roller_force_N per angle). @pre series.theta_rad not empty.
+/// Every half_space solve starts cold (the solver's own Hertz-like start).
 Contact3DCycleSide AnalyzeCycleContact3D(const Reducer<double>& r, Side s, const CycleSeries& series,
                                          double e_star, const RollerCrowning<double>& crowning,
                                          const ContactModelOptions& options);
+
+/// Where a half_space solve of AnalyzeCycleContact3DOnGrids starts from. A start changes the
+/// iterations, not the equations or the stopping test (the relative pressure change of
+/// contact::SolverOptions::tolerance): the results agree with cold starts to about that tolerance.
+struct HalfSpaceStarts {
+  /// A grid of twice the cells of the grid before it in both directions (over the same extent:
+  /// the same contact, the same X) starts each contact from that grid's pressure, each coarse
+  /// cell's value on its four fine cells.
+  bool from_coarser_grid = false;
+  /// Otherwise each solve after a grid's first starts from the previous contact's pressure on
+  /// the same grid, cell by cell (the grid is scaled to each contact's slice half-width, so the
+  /// fields of neighbouring worst contacts are alike cell by cell).
+  bool from_previous_contact = false;
+};
+
+/// AnalyzeCycleContact3D with the half_space model on several grids (nx, ny) at once: the slices
+/// part (tables, per-angle series, the worst contacts and their exact slices solves) is computed
+/// once, and the same worst contacts are solved on each grid; one result per grid (the series are
+/// the same in all). Other models: grids only sets the number of (identical) results.
+std::vector<Contact3DCycleSide> AnalyzeCycleContact3DOnGrids(const Reducer<double>& r, Side s,
+                                                             const CycleSeries& series, double e_star,
+                                                             const RollerCrowning<double>& crowning,
+                                                             const ContactModelOptions& options,
+                                                             const std::vector<std::array<int, 2>>& grids,
+                                                             const HalfSpaceStarts& starts);
 
 }  // namespace camopt::lcr

@@ -2,7 +2,9 @@
 // the angles, so that the per-roller square roots and divisions run two at a time; the same
 // operations in the same order as AnalyzeAngle (contact.h, forces.h), hence the same bits.
 #include "model/lcr/cycle.h"
+#include "model/lcr/cycle_curvature.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
@@ -215,6 +217,23 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
     if (progress && (i % 256 == 0 || i + 1 == steps)) progress(double(i + 1) / steps);
   }
   return s;
+}
+
+std::vector<double> CycleCurvatures(const Reducer<double>& r, Side s, const std::vector<double>& theta_rad) {
+  const CamSide<double>& c = r.side(s);
+  const size_t n = size_t(c.rollers);
+  std::vector<double> kappa(theta_rad.size() * n);
+  internal::TurretBuffers b;
+  internal::Resize(b, c.rollers);
+  const std::vector<Vec2<double>> slots = internal::Slots(c);
+  if (s == Side::kInput) internal::FillCentres(b, r, s, slots, 0.0);  // the fixed turret stands
+  const double sign = LoadedArmSign(r, s);
+  for (size_t i = 0; i < theta_rad.size(); ++i) {
+    if (s == Side::kOutput) internal::FillCentres(b, r, s, slots, theta_rad[i]);
+    internal::FillContacts(b, r, s, U(theta_rad[i]), sign);
+    std::copy(b.kappa.begin(), b.kappa.end(), kappa.begin() + i * n);
+  }
+  return kappa;
 }
 
 }  // namespace camopt::lcr
