@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "cad/dxf.h"
 #include "cad/solid.h"
@@ -53,18 +55,29 @@ Fit FitCurve(const cad::CurveFunction& f, const PlanarCamGeometry& cam, double t
   return fit;
 }
 
-// Area enclosed by the exact closed curve [mm²]: the polygons through 2^13, 2^12 and 2^11 points
-// of it (each every other point of the one before) extrapolated twice (Romberg: the area the chords
-// cut off is a series in h², h⁴, ... on a smooth curve). On the LCR II cams it is within 5e-8 mm² of
-// the closed form (the one polygon of 2^17 points it replaces was 1e-4 mm² off, at 16 times the
-// curve evaluations, most of the geometry files' time); a jump of the curvature (a motion-law
-// junction of a disc cam) leaves an error of order h³ Δκ per junction, about 1e-6 mm².
-double ExactArea(const cad::CurveFunction& f, double t0, double t1) {
-  const int n = 1 << 13;
+// The exact closed curve at 2^13 + 1 uniform parameter values t0 + (t1 − t0) i / 2^13, i = 0 ... 2^13,
+// evaluated once for the area and the size below (the size's 4096 points are every other one:
+// (t1 − t0)(2i)/2^13 is (t1 − t0) i / 2^12 to the last bit, a product scaled by a power of two).
+constexpr int kAreaPoints = 1 << 13;
+std::vector<Vec2<double>> ClosedCurvePoints(const cad::CurveFunction& f, double t0, double t1) {
+  std::vector<Vec2<double>> p(kAreaPoints + 1);
+  for (int i = 0; i <= kAreaPoints; ++i) p[i] = f(t0 + (t1 - t0) * i / kAreaPoints);
+  return p;
+}
+
+// Area enclosed by the exact closed curve [mm²], from ClosedCurvePoints: the polygons through
+// 2^13, 2^12 and 2^11 points of it (each every other point of the one before) extrapolated twice
+// (Romberg: the area the chords cut off is a series in h², h⁴, ... on a smooth curve). On the LCR
+// II cams it is within 5e-8 mm² of the closed form (the one polygon of 2^17 points it replaces was
+// 1e-4 mm² off, at 16 times the curve evaluations, most of the geometry files' time); a jump of the
+// curvature (a motion-law junction of a disc cam) leaves an error of order h³ Δκ per junction,
+// about 1e-6 mm².
+double ExactArea(const std::vector<Vec2<double>>& points) {
+  const int n = kAreaPoints;
   double a[3] = {0.0, 0.0, 0.0};  // 2^13, 2^12, 2^11 points
-  Vec2<double> prev[3] = {f(t0), f(t0), f(t0)};
+  Vec2<double> prev[3] = {points[0], points[0], points[0]};
   for (int i = 1; i <= n; ++i) {
-    const Vec2<double> p = f(t0 + (t1 - t0) * i / n);
+    const Vec2<double>& p = points[i];
     for (int level = 0; level < 3; ++level) {
       if (i % (1 << level) != 0) continue;
       a[level] += 0.5 * Cross(prev[level], p);
@@ -79,12 +92,12 @@ double ExactArea(const cad::CurveFunction& f, double t0, double t1) {
 // 1e-6 of their travel).
 constexpr double kMinRelativeTolerance = 1e-7;
 
-// Diagonal of the bounding box of the exact closed curve, from 4096 points [mm].
-double ProfileSize(const cad::CurveFunction& f, double t0, double t1) {
-  const int n = 4096;
+// Diagonal of the bounding box of the exact closed curve, from 4096 of ClosedCurvePoints (every
+// other one, the last excluded) [mm].
+double ProfileSize(const std::vector<Vec2<double>>& points) {
   double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
-  for (int i = 0; i < n; ++i) {
-    const Vec2<double> p = f(t0 + (t1 - t0) * i / n);
+  for (int i = 0; i < kAreaPoints; i += 2) {
+    const Vec2<double>& p = points[i];
     lo_x = std::min(lo_x, p.x());
     hi_x = std::max(hi_x, p.x());
     lo_y = std::min(lo_y, p.y());
@@ -149,7 +162,8 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   // profile's bounding box): the arcs, hence the solid's and the mesh's work, then stay those of a
   // part of ten metres at 1 µm, whatever the size.
   double tol_mm = options.dxf_tolerance_um * 1e-3;
-  const double size = ProfileSize(cam.profile, cam.t0, cam.t1);
+  const std::vector<Vec2<double>> profile_points = ClosedCurvePoints(cam.profile, cam.t0, cam.t1);
+  const double size = ProfileSize(profile_points);
   const bool raised = std::isfinite(size) && kMinRelativeTolerance * size > tol_mm;
   if (raised) tol_mm = kMinRelativeTolerance * size;
   const double tol_um = tol_mm * 1e3;
@@ -181,7 +195,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   if (cam.bore_diameter_mm > 0) layers.push_back("BORE");
   layers.push_back("CENTRE_MARKS");
   layers.push_back("TEXT");
-  f.profile_area_mm2 = ExactArea(cam.profile, cam.t0, cam.t1);
+  f.profile_area_mm2 = ExactArea(profile_points);
   // A curve the fit cannot follow within the tolerance (absurd sizes, non-finite points): no files.
   f.files = std::isfinite(f.max_deviation_mm) && f.max_deviation_mm <= tol_mm && f.profile.within_tolerance;
   if (!f.files) {
@@ -279,8 +293,8 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   e.thickness_mm = cam.thickness_mm;
   e.name = cam.design_name + " " + cam.cam_name;
   e.step = options.step;
-  const cad::SolidOutput solid = cad::ExtrudeCam(e);
-  if (options.step) out.Add(cam.file_stem + ".step", solid.step);
+  cad::SolidOutput solid = cad::ExtrudeCam(e);
+  if (options.step) out.Add(cam.file_stem + ".step", std::move(solid.step));
   out.Add(cam.file_stem + ".stl", StlFile(solid.mesh, e.name, options));
 }
 
