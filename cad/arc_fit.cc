@@ -80,7 +80,11 @@ ArcGeometry ArcGeometryOf(const ArcSegment& a) {
 
 Vec2<double> PointOnArc(const ArcSegment& a, double s) {
   if (std::abs(a.bulge) < kStraightBulge) return a.start + s * (a.end - a.start);
-  const ArcGeometry g = ArcGeometryOf(a);
+  return PointOnArc(a, ArcGeometryOf(a), s);
+}
+
+Vec2<double> PointOnArc(const ArcSegment& a, const ArcGeometry& g, double s) {
+  if (std::abs(a.bulge) < kStraightBulge) return a.start + s * (a.end - a.start);
   if (s <= 0) return a.start;
   if (s >= 1) return a.end;
   return g.centre + g.radius * U(g.start_angle + s * g.sweep);
@@ -121,7 +125,10 @@ ArcProbe ProbeOf(const ArcSegment& a) {
   const ArcGeometry g = ArcGeometryOf(a);
   pr.centre = g.centre;
   pr.radius = g.radius;
-  pr.mid_side = Cross(pr.chord, Vec2<double>(PointOnArc(a, 0.5) - a.start));
+  // The arc's midpoint is right of the chord for a counter-clockwise arc (bulge > 0), left for a
+  // clockwise one; only the side is used. From the bulge's sign when the sagitta, |bulge| c/2, is
+  // far above the rounding of the midpoint computed from the centre (about 1e-16 c/|bulge|).
+  pr.mid_side = std::abs(a.bulge) > 1e-5 ? -a.bulge : Cross(pr.chord, Vec2<double>(PointOnArc(a, 0.5) - a.start));
   return pr;
 }
 
@@ -209,6 +216,13 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
       if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
   for (int k = 1; k < o.check_points; ++k)
     if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
+  // The kept bi-arcs: parameter interval, largest check-point deviation and where, first arc.
+  struct Kept {
+    double ta, tb, worst;
+    int worst_k;
+    size_t arc;
+  };
+  std::vector<Kept> kept;
   while (!stack.empty()) {
     const Piece p = stack.back();
     stack.pop_back();
@@ -219,12 +233,22 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
     const size_t planned = fit.arcs.size() + 2 * (stack.size() + 1);
     const bool can_halve = p.depth < o.max_depth && planned + 2 <= size_t(o.max_arcs);
     double worst = std::numeric_limits<double>::infinity();
+    int worst_k = 0;  // the check point of the largest deviation
     if (b.ok) {
       worst = 0.0;
       const ArcProbe first = ProbeOf(b.first), second = ProbeOf(b.second);
       for (const int k : order) {
         const Vec2<double> q = curve(ta + (tb - ta) * k / o.check_points);
-        worst = std::max(worst, std::min(Distance(first, q), Distance(second, q)));
+        // The distance to the nearer arc; the other arc's is not computed when every point of it
+        // is farther than the one found (then it is not the smaller: the same minimum).
+        const bool first_half = 2 * k < o.check_points;
+        const ArcProbe &near = first_half ? first : second, &other = first_half ? second : first;
+        const double d_near = Distance(near, q);
+        const double far = d_near + other.reach;
+        const bool other_farther =
+            std::isfinite(d_near) && (q - other.chord_mid).squaredNorm() > far * far * (1 + 1e-9);
+        const double d = other_farther ? d_near : std::min(Distance(first, q), Distance(second, q));
+        if (d > worst) worst = d, worst_k = k;
         if (can_halve && !(worst <= o.tolerance_mm)) break;  // halved whatever the other points give
       }
     }
@@ -241,12 +265,43 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
         w = std::max(w, DistanceToSegment(pa, pb, curve(ta + (tb - ta) * k / o.check_points)));
       worst = w;
     } else {
+      kept.push_back({ta, tb, worst, worst_k, fit.arcs.size()});
       fit.arcs.push_back(b.first);
       fit.arcs.push_back(b.second);
     }
     fit.checked_points += o.check_points - 1;
     if (!(worst <= fit.max_deviation_mm)) fit.max_deviation_mm = worst;  // NaN and ∞ stay visible
     if (!(worst <= o.tolerance_mm)) fit.within_tolerance = false;
+  }
+  if (o.refine_share > 0 && std::isfinite(fit.max_deviation_mm)) {
+    // Golden-section search (Kiefer 1953) for the largest distance between the check points either
+    // side of a piece's largest one (the distance is smooth and has one maximum there); every
+    // point's distance counts, the search only chooses where to look.
+    const double largest = fit.max_deviation_mm;
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (const Kept& piece : kept) {
+      if (!(piece.worst > 0 && piece.worst >= o.refine_share * largest)) continue;
+      const ArcProbe first = ProbeOf(fit.arcs[piece.arc]), second = ProbeOf(fit.arcs[piece.arc + 1]);
+      auto distance = [&](double s) {
+        const Vec2<double> q = curve(piece.ta + (piece.tb - piece.ta) * s);
+        return std::min(Distance(first, q), Distance(second, q));
+      };
+      double lo = double(piece.worst_k - 1) / o.check_points, hi = double(piece.worst_k + 1) / o.check_points;
+      double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+      double f1 = distance(x1), f2 = distance(x2), found = std::max(f1, f2);
+      for (int i = 2; i < o.refine_points; ++i) {
+        if (f1 >= f2) {
+          hi = x2, x2 = x1, f2 = f1;
+          x1 = hi - g * (hi - lo), f1 = distance(x1);
+        } else {
+          lo = x1, x1 = x2, f1 = f2;
+          x2 = lo + g * (hi - lo), f2 = distance(x2);
+        }
+        found = std::max(found, std::max(f1, f2));
+      }
+      fit.checked_points += o.refine_points;
+      if (!(found <= fit.max_deviation_mm)) fit.max_deviation_mm = found;
+    }
   }
   return fit;
 }

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 #include <initializer_list>
-#include <memory>
 #include <stdexcept>
 #include <string_view>
 
@@ -33,13 +32,14 @@ void AppendChords(const ArcSegment& a, double deflection, const Vec2<double>& ce
   const Vec2<double> u = a.start - centre, v = a.end - centre;
   const double seen = std::abs(std::atan2(Cross(u, v), u.dot(v)));
   int n = static_cast<int>(std::ceil(seen / kMaxChordTurn - 1e-9));
-  if (std::abs(a.bulge) >= 1e-12) {
-    const ArcGeometry g = ArcGeometryOf(a);
+  const bool arc = std::abs(a.bulge) >= 1e-12;
+  const ArcGeometry g = arc ? ArcGeometryOf(a) : ArcGeometry{};
+  if (arc) {
     const double ratio = std::min(1.0, deflection / g.radius);  // sagitta r(1 − cos(Δ/2)) <= deflection
     const double step = std::min(kMaxChordTurn, 2.0 * std::acos(1.0 - ratio));
     n = std::max(n, static_cast<int>(std::ceil(std::abs(g.sweep) / step - 1e-9)));
   }
-  for (int k = 1; k < n; ++k) points.push_back(PointOnArc(a, double(k) / n));
+  for (int k = 1; k < n; ++k) points.push_back(arc ? PointOnArc(a, g, double(k) / n) : PointOnArc(a, double(k) / n));
 }
 
 // The size of the part: the diagonal of its end points' bounding box.
@@ -114,11 +114,15 @@ struct Real {
   int n = 0;
 };
 
-// The DATA section being written: entities numbered in the order added, each written into one
-// buffer as it is made (17 000 entities for a cam of 700 arcs: no temporaries per entity).
+// The file being written: its head, then the DATA section's entities numbered in the order added,
+// each written into the file's text as it is made (17 000 entities for a cam of 700 arcs: no
+// temporaries per entity, no copy of the text).
 class StepData {
  public:
-  StepData() : buf_(new char[1 << 20]), size_(1 << 20) {}
+  // `expected_size`: room made up front [characters], the text grows past it if need be.
+  StepData(std::string_view head, size_t expected_size) : buf_(std::max(expected_size, head.size()), '\0') {
+    Put(head);
+  }
   int Add(const std::string& body) {
     const int id = Open(body.size());
     Put(body);
@@ -219,8 +223,13 @@ class StepData {
   }
   // A face of one bound.
   int Face(int bound, int surface, bool same_sense) { return Face(&bound, 1, surface, same_sense); }
-  // All of the DATA section.
-  std::string_view text() const { return std::string_view(buf_.get(), len_); }
+  // The text, ended with `tail`.
+  std::string Finish(std::string_view tail) {
+    Reserve(tail.size());
+    Put(tail);
+    buf_.resize(len_);
+    return std::move(buf_);
+  }
 
  private:
   // Room for the entity's number, " = ", references and the ";\n" on top of `extra` characters.
@@ -240,29 +249,26 @@ class StepData {
   }
   // Starts entity #id with room for `extra` more characters than 4 references and 2 REALs.
   int Open(size_t extra) {
-    const size_t need = len_ + extra + 4 * kRefChars + 2 * sizeof(Real::c) + 16;
-    if (need > size_) {
-      size_ = std::max(need, 2 * size_);
-      std::unique_ptr<char[]> bigger(new char[size_]);
-      std::memcpy(bigger.get(), buf_.get(), len_);
-      buf_ = std::move(bigger);
-    }
+    Reserve(extra + 4 * kRefChars + 2 * sizeof(Real::c) + 16);
     const int id = next_++;
     PutRef(id);
     Put(" = ");
     return id;
   }
   void Close() { Put(";\n"); }
+  void Reserve(size_t extra) {
+    if (len_ + extra > buf_.size()) buf_.resize(std::max(len_ + extra, 2 * buf_.size()));
+  }
   void Put(char c) { buf_[len_++] = c; }
   void Put(std::string_view s) {
-    std::memcpy(buf_.get() + len_, s.data(), s.size());
+    std::memcpy(buf_.data() + len_, s.data(), s.size());
     len_ += s.size();
   }
   void Put(const Real& r) { Put(std::string_view(r.c, r.n)); }
   void PutRef(int id) {
-    char* p = buf_.get() + len_;
+    char* p = buf_.data() + len_;
     *p = '#';
-    len_ = std::to_chars(p + 1, p + kRefChars, id).ptr - buf_.get();
+    len_ = std::to_chars(p + 1, p + kRefChars, id).ptr - buf_.data();
   }
   int Triple(std::string_view head, const Real& x, const Real& y, const Real& z) {
     const int id = Open(head.size() + sizeof(Real::c) + 8);
@@ -276,8 +282,8 @@ class StepData {
     Close();
     return id;
   }
-  std::unique_ptr<char[]> buf_;  // the text is buf_[0, len_); the rest, to size_, is room
-  size_t size_ = 0, len_ = 0;
+  std::string buf_;  // the text is buf_[0, len_); the rest is room
+  size_t len_ = 0;
   int next_ = 1;
 };
 
@@ -420,7 +426,11 @@ std::string StepOfExtrusion(const Extrusion& e) {
   CheckChain(e);
   const std::string name = StepString(e.name);
   const double t = e.thickness_mm;
-  StepData d;
+  // About 1200 characters per arc (its wall, edges, vertices and their geometry).
+  StepData d("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n"
+             "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n"
+             "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n",
+             1300 * e.profile.size() + 8192);
   // Product structure and units (AP214, automotive_design; lengths in millimetres).
   const int app = d.Add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')");
   d.Add("APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000," + StepData::Ref(app) + ")");
@@ -549,14 +559,7 @@ std::string StepOfExtrusion(const Extrusion& e) {
                         ")," + StepData::Ref(ctx) + ")");
   d.Add("SHAPE_DEFINITION_REPRESENTATION(" + StepData::Ref(shape) + "," + StepData::Ref(rep) + ")");
 
-  std::string out;
-  out.reserve(d.text().size() + 600);
-  out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n";
-  out += "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n";
-  out += "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n";
-  out += d.text();
-  out += "ENDSEC;\nEND-ISO-10303-21;\n";
-  return out;
+  return d.Finish("ENDSEC;\nEND-ISO-10303-21;\n");
 }
 
 }  // namespace camopt::cad
