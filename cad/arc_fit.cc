@@ -80,7 +80,11 @@ ArcGeometry ArcGeometryOf(const ArcSegment& a) {
 
 Vec2<double> PointOnArc(const ArcSegment& a, double s) {
   if (std::abs(a.bulge) < kStraightBulge) return a.start + s * (a.end - a.start);
-  const ArcGeometry g = ArcGeometryOf(a);
+  return PointOnArc(a, ArcGeometryOf(a), s);
+}
+
+Vec2<double> PointOnArc(const ArcSegment& a, const ArcGeometry& g, double s) {
+  if (std::abs(a.bulge) < kStraightBulge) return a.start + s * (a.end - a.start);
   if (s <= 0) return a.start;
   if (s >= 1) return a.end;
   return g.centre + g.radius * U(g.start_angle + s * g.sweep);
@@ -121,7 +125,10 @@ ArcProbe ProbeOf(const ArcSegment& a) {
   const ArcGeometry g = ArcGeometryOf(a);
   pr.centre = g.centre;
   pr.radius = g.radius;
-  pr.mid_side = Cross(pr.chord, Vec2<double>(PointOnArc(a, 0.5) - a.start));
+  // The arc's midpoint is right of the chord for a counter-clockwise arc (bulge > 0), left for a
+  // clockwise one; only the side is used. From the bulge's sign when the sagitta, |bulge| c/2, is
+  // far above the rounding of the midpoint computed from the centre (about 1e-16 c/|bulge|).
+  pr.mid_side = std::abs(a.bulge) > 1e-5 ? -a.bulge : Cross(pr.chord, Vec2<double>(PointOnArc(a, 0.5) - a.start));
   return pr;
 }
 
@@ -174,54 +181,127 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
   FittedCurve fit;
   const double span = t1 - t0;
   const double h = 1e-6 * std::max(1.0, std::abs(span));
-  auto tangent = [&](double t) {
+  // A piece's end: its parameter, the curve point and unit tangent there. Each end is evaluated
+  // once and shared by the two pieces that meet at it (and by a piece and its halves); the values
+  // are those of evaluating at the same parameter again.
+  struct End {
+    double t;
+    Vec2<double> point, tangent;
+  };
+  const Vec2<double> first_point = curve(t0);
+  const Vec2<double> last_point = curve(t1);
+  const bool closed = (first_point - last_point).norm() < 1e-9 * std::max(1.0, first_point.norm());
+  auto end_at = [&](double t) {
     const Vec2<double> d = curve(t + h) - curve(t - h);
-    return Vec2<double>(d / d.norm());
+    return End{t, curve(t), Vec2<double>(d / d.norm())};
   };
   struct Piece {
-    double ta, tb;
+    End a, b;
     int depth;
   };
   std::vector<Piece> stack;
   const int n0 = std::max(2, o.initial_segments);
-  for (int i = n0 - 1; i >= 0; --i) stack.push_back({t0 + span * i / n0, t0 + span * (i + 1) / n0, 0});
-  const Vec2<double> first_point = curve(t0);
-  const Vec2<double> last_point = curve(t1);
-  const bool closed = (first_point - last_point).norm() < 1e-9 * std::max(1.0, first_point.norm());
+  {
+    std::vector<End> ends(n0 + 1);
+    for (int i = 0; i <= n0; ++i) ends[i] = end_at(t0 + span * i / n0);
+    for (int i = n0 - 1; i >= 0; --i) stack.push_back({ends[i], ends[i + 1], 0});
+  }
+  // Check points in bit-reversed order (the middle first, then the quarters, ...): a piece that
+  // will be halved is given up at its first point outside the tolerance, which is usually found
+  // among the first few; the largest deviation of a kept piece does not depend on the order.
+  std::vector<int> order;
+  order.reserve(o.check_points);
+  for (int step = o.check_points; step >= 1; step /= 2)
+    for (int k = step; k < o.check_points; k += step)
+      if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
+  for (int k = 1; k < o.check_points; ++k)
+    if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
+  // The kept bi-arcs: parameter interval, largest check-point deviation and where, first arc.
+  struct Kept {
+    double ta, tb, worst;
+    int worst_k;
+    size_t arc;
+  };
+  std::vector<Kept> kept;
   while (!stack.empty()) {
     const Piece p = stack.back();
     stack.pop_back();
-    const Vec2<double> pa = curve(p.ta), pb = p.tb == t1 && closed ? first_point : curve(p.tb);
-    const Biarc b = MakeBiarc(pa, tangent(p.ta), pb, tangent(p.tb));
+    const double ta = p.a.t, tb = p.b.t;
+    // A closed curve's last end is its first point (the chain closes exactly).
+    const Vec2<double>&pa = p.a.point, &pb = tb == t1 && closed ? first_point : p.b.point;
+    const Biarc b = MakeBiarc(pa, p.a.tangent, pb, p.b.tangent);
+    const size_t planned = fit.arcs.size() + 2 * (stack.size() + 1);
+    const bool can_halve = p.depth < o.max_depth && planned + 2 <= size_t(o.max_arcs);
     double worst = std::numeric_limits<double>::infinity();
+    int worst_k = 0;  // the check point of the largest deviation
     if (b.ok) {
       worst = 0.0;
       const ArcProbe first = ProbeOf(b.first), second = ProbeOf(b.second);
-      for (int k = 1; k < o.check_points; ++k) {
-        const Vec2<double> q = curve(p.ta + (p.tb - p.ta) * k / o.check_points);
-        worst = std::max(worst, std::min(Distance(first, q), Distance(second, q)));
+      for (const int k : order) {
+        const Vec2<double> q = curve(ta + (tb - ta) * k / o.check_points);
+        // The distance to the nearer arc; the other arc's is not computed when every point of it
+        // is farther than the one found (then it is not the smaller: the same minimum).
+        const bool first_half = 2 * k < o.check_points;
+        const ArcProbe &near = first_half ? first : second, &other = first_half ? second : first;
+        const double d_near = Distance(near, q);
+        const double far = d_near + other.reach;
+        const bool other_farther =
+            std::isfinite(d_near) && (q - other.chord_mid).squaredNorm() > far * far * (1 + 1e-9);
+        const double d = other_farther ? d_near : std::min(Distance(first, q), Distance(second, q));
+        if (d > worst) worst = d, worst_k = k;
+        if (can_halve && !(worst <= o.tolerance_mm)) break;  // halved whatever the other points give
       }
     }
-    const size_t planned = fit.arcs.size() + 2 * (stack.size() + 1);
-    if (!(worst <= o.tolerance_mm) && p.depth < o.max_depth && planned + 2 <= size_t(o.max_arcs)) {
-      const double tm = 0.5 * (p.ta + p.tb);
-      stack.push_back({tm, p.tb, p.depth + 1});
-      stack.push_back({p.ta, tm, p.depth + 1});
+    if (!(worst <= o.tolerance_mm) && can_halve) {
+      const End m = end_at(0.5 * (ta + tb));
+      stack.push_back({m, p.b, p.depth + 1});
+      stack.push_back({p.a, m, p.depth + 1});
       continue;
     }
     if (!b.ok) {  // degenerate at the depth limit: a straight segment
       fit.arcs.push_back({pa, pb, 0.0});
       double w = 0.0;
       for (int k = 1; k < o.check_points; ++k)
-        w = std::max(w, DistanceToSegment(pa, pb, curve(p.ta + (p.tb - p.ta) * k / o.check_points)));
+        w = std::max(w, DistanceToSegment(pa, pb, curve(ta + (tb - ta) * k / o.check_points)));
       worst = w;
     } else {
+      kept.push_back({ta, tb, worst, worst_k, fit.arcs.size()});
       fit.arcs.push_back(b.first);
       fit.arcs.push_back(b.second);
     }
     fit.checked_points += o.check_points - 1;
     if (!(worst <= fit.max_deviation_mm)) fit.max_deviation_mm = worst;  // NaN and ∞ stay visible
     if (!(worst <= o.tolerance_mm)) fit.within_tolerance = false;
+  }
+  if (o.refine_share > 0 && std::isfinite(fit.max_deviation_mm)) {
+    // Golden-section search (Kiefer 1953) for the largest distance between the check points either
+    // side of a piece's largest one (the distance is smooth and has one maximum there); every
+    // point's distance counts, the search only chooses where to look.
+    const double largest = fit.max_deviation_mm;
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (const Kept& piece : kept) {
+      if (!(piece.worst > 0 && piece.worst >= o.refine_share * largest)) continue;
+      const ArcProbe first = ProbeOf(fit.arcs[piece.arc]), second = ProbeOf(fit.arcs[piece.arc + 1]);
+      auto distance = [&](double s) {
+        const Vec2<double> q = curve(piece.ta + (piece.tb - piece.ta) * s);
+        return std::min(Distance(first, q), Distance(second, q));
+      };
+      double lo = double(piece.worst_k - 1) / o.check_points, hi = double(piece.worst_k + 1) / o.check_points;
+      double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+      double f1 = distance(x1), f2 = distance(x2), found = std::max(f1, f2);
+      for (int i = 2; i < o.refine_points; ++i) {
+        if (f1 >= f2) {
+          hi = x2, x2 = x1, f2 = f1;
+          x1 = hi - g * (hi - lo), f1 = distance(x1);
+        } else {
+          lo = x1, x1 = x2, f1 = f2;
+          x2 = lo + g * (hi - lo), f2 = distance(x2);
+        }
+        found = std::max(found, std::max(f1, f2));
+      }
+      fit.checked_points += o.refine_points;
+      if (!(found <= fit.max_deviation_mm)) fit.max_deviation_mm = found;
+    }
   }
   return fit;
 }
@@ -236,18 +316,62 @@ double MaxDistanceToChain(const CurveFunction& curve, double t0, double t1, int 
   std::vector<ArcProbe> probes;
   probes.reserve(n);
   for (const ArcSegment& a : chain) probes.push_back(ProbeOf(a));
+  // Blocks of 8 consecutive arcs, each in a disc: every point of arc j of block b lies within
+  // |mid_j − c_b| + reach_j ≤ R_b of its centre c_b (the mean of the chord midpoints), so
+  // dist(q, arc j) ≥ |q − c_b| − R_b. A block farther than the best so far (by a margin far above
+  // the rounding of these distances) holds no arc the test of each arc would not skip, and is
+  // skipped as a whole: the same arcs' distances are compared, the same nearest arc found.
+  constexpr size_t kBlock = 8;
+  const size_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<Vec2<double>> block_centre(blocks, Vec2<double>::Zero());
+  std::vector<double> block_radius(blocks, 0.0);
+  for (size_t b = 0; b < blocks; ++b) {
+    const size_t lo = b * kBlock, hi = std::min(n, lo + kBlock);
+    for (size_t k = lo; k < hi; ++k) block_centre[b] += probes[k].chord_mid;
+    block_centre[b] /= double(hi - lo);
+    for (size_t k = lo; k < hi; ++k)
+      block_radius[b] = std::max(block_radius[b], (probes[k].chord_mid - block_centre[b]).norm() + probes[k].reach);
+    block_radius[b] = block_radius[b] * (1 + 1e-9) + 1e-12 * block_centre[b].norm();
+  }
+  const size_t m = std::min<size_t>(n, 32);  // window: arcs hint − 8 ... hint + 23 (cyclic)
   for (int i = 0; i <= samples; ++i) {
     const Vec2<double> q = curve(t0 + (t1 - t0) * i / samples);
     double best = std::numeric_limits<double>::infinity();
-    size_t best_k = hint;
-    for (size_t w = 0; w < std::min<size_t>(n, 32); ++w) {
-      const size_t k = (hint + n - 8 + w) % n;
-      // An arc whose every point is farther than the best so far cannot be nearer: skipped
-      // (same order, so the same nearest arc as computing every distance).
-      const double far = best + probes[k].reach;
-      if (std::isfinite(best) && (q - probes[k].chord_mid).squaredNorm() > far * far * (1 + 1e-12)) continue;
-      const double dist = Distance(probes[k], q);
-      if (dist < best) best = dist, best_k = k;
+    size_t best_k = hint, best_w = m;
+    // An arc whose every point is farther than the best so far cannot be nearer: skipped. The
+    // nearest arc is the one of least distance, the first in window order among equal ones,
+    // whatever the order the window is searched in; the last nearest arc (window position 8) is
+    // searched first, so that the others are mostly skipped.
+    auto visit = [&](size_t w, size_t k) {
+      const ArcProbe& pr = probes[k];
+      if (std::isfinite(best)) {
+        const double far = best + pr.reach;
+        if ((q - pr.chord_mid).squaredNorm() > far * far * (1 + 1e-12)) return;
+      }
+      const double dist = Distance(pr, q);
+      if (dist < best || (dist == best && w < best_w)) best = dist, best_k = k, best_w = w;
+    };
+    auto block_far = [&](size_t b) {
+      if (!std::isfinite(best)) return false;
+      const double far = best + block_radius[b];
+      return (q - block_centre[b]).squaredNorm() > far * far * (1 + 1e-9);
+    };
+    if (n >= 8) {
+      const size_t start = hint >= 8 ? hint - 8 : hint + n - 8;  // (hint + n − 8) mod n, hint < n
+      const size_t first = m > 8 ? 8 : 0;
+      visit(first, (start + first) % n);
+      // The window block by block: the arcs k ... of block k / kBlock in it, unless it is far.
+      for (size_t w = 0, k = start; w < m;) {
+        const size_t block = k / kBlock;
+        const size_t run = std::min(m - w, std::min(n, (block + 1) * kBlock) - k);
+        if (!block_far(block))
+          for (size_t j = 0; j < run; ++j)
+            if (w + j != first) visit(w + j, k + j);
+        w += run, k += run;
+        if (k == n) k = 0;
+      }
+    } else {
+      for (size_t w = 0; w < m; ++w) visit(w, (hint + n - 8 + w) % n);
     }
     if (best > 1e-2 && n <= 4096) {  // far from the window: every arc (bounded work)
       for (size_t k = 0; k < n; ++k) {

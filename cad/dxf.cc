@@ -1,10 +1,90 @@
 #include "cad/dxf.h"
 
 #include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 
 namespace camopt::cad {
+
+namespace {
+
+__extension__ typedef unsigned __int128 U128;  // GCC and Clang on 64-bit targets
+
+// 10^k as 128-bit integers, k = 0 ... 22.
+struct Powers10 {
+  U128 p[23];
+  constexpr Powers10() : p() {
+    p[0] = 1;
+    for (int k = 1; k < 23; ++k) p[k] = p[k - 1] * 10;
+  }
+};
+constexpr Powers10 kPow10;
+
+}  // namespace
+
+char* FormatG12(char* first, double value) {
+  // %.12g (C11 §7.21.6.1): the value rounded to 12 significant digits (to nearest, ties to even,
+  // on its exact binary value), d.ddddddddddd × 10^X; fixed notation with 11 − X decimals when
+  // −4 ≤ X < 12, else d.ddddddddddde±XX; trailing zeros, and a trailing point, removed.
+  const double a = std::abs(value);
+  if (!(a >= 1e-9 && a < 1e11))
+    return std::to_chars(first, first + 32, value, std::chars_format::general, 12).ptr;
+  // a = m 2^q exactly (m < 2^53; q < 0 in this range, −q ≤ 83).
+  int binary_exponent;
+  const double fraction = std::frexp(a, &binary_exponent);
+  const std::uint64_t m = static_cast<std::uint64_t>(std::ldexp(fraction, 53));
+  const int shift = 53 - binary_exponent;
+  // X = floor(log10 a), from 2^(e − 1) ≤ a < 2^e: floor((e − 1) log10 2) or one more.
+  int x = static_cast<int>(std::floor((binary_exponent - 1) * 0.30102999566398120));
+  const U128 kHigh = kPow10.p[12];
+  U128 scaled, whole;
+  for (;;) {
+    scaled = static_cast<U128>(m) * kPow10.p[11 - x];  // a 10^(11 − X) 2^shift, < 2^127
+    whole = scaled >> shift;
+    if (whole < kHigh) break;
+    ++x;
+  }
+  // Rounded to nearest, ties to even.
+  const U128 rest = scaled - (whole << shift), half = static_cast<U128>(1) << (shift - 1);
+  std::uint64_t digits = static_cast<std::uint64_t>(whole);
+  if (rest > half || (rest == half && (digits & 1))) ++digits;
+  if (digits == static_cast<std::uint64_t>(kHigh)) digits /= 10, ++x;
+  char d[12];
+  for (int i = 11; i >= 0; --i) d[i] = static_cast<char>('0' + digits % 10), digits /= 10;
+  int n = 12;
+  while (n > 1 && d[n - 1] == '0') --n;
+  char* out = first;
+  if (value < 0) *out++ = '-';
+  if (x >= -4 && x < 12) {
+    if (x >= 0) {
+      for (int i = 0; i <= x; ++i) *out++ = d[i];
+      if (n > x + 1) {
+        *out++ = '.';
+        for (int i = x + 1; i < n; ++i) *out++ = d[i];
+      }
+    } else {
+      *out++ = '0';
+      *out++ = '.';
+      for (int i = 0; i < -x - 1; ++i) *out++ = '0';
+      for (int i = 0; i < n; ++i) *out++ = d[i];
+    }
+  } else {
+    *out++ = d[0];
+    if (n > 1) {
+      *out++ = '.';
+      for (int i = 1; i < n; ++i) *out++ = d[i];
+    }
+    *out++ = 'e';
+    *out++ = x < 0 ? '-' : '+';
+    const int ax = std::abs(x);
+    if (ax >= 100) *out++ = static_cast<char>('0' + ax / 100);
+    *out++ = static_cast<char>('0' + ax / 10 % 10);
+    *out++ = static_cast<char>('0' + ax % 10);
+  }
+  return out;
+}
 
 namespace {
 
@@ -22,10 +102,9 @@ class Out {
   void Num(int code, double value) {
     // As printf's "%.12g" (std::to_chars with a precision is specified so), without "-0".
     char buf[40];
-    const std::to_chars_result r =
-        std::to_chars(buf, buf + sizeof buf, value == 0.0 ? 0.0 : value, std::chars_format::general, 12);
+    char* const end = FormatG12(buf, value == 0.0 ? 0.0 : value);
     Code(code);
-    out_.append(buf, r.ptr);
+    out_.append(buf, end);
     out_ += '\n';
   }
   /// A point in the xy plane: group codes `code` (x), code + 10 (y), code + 20 (z = 0).
@@ -44,7 +123,7 @@ class Out {
     std::snprintf(buf, sizeof buf, "%X", next_);
     return buf;
   }
-  std::string str() const { return out_; }
+  const std::string& str() const { return out_; }
 
  private:
   void Code(int code) {
@@ -354,7 +433,9 @@ std::string DxfDocument::ToString() const {
   h.Pair(9, "$HANDSEED");
   h.Pair(5, o.Peek());
   h.Pair(0, "ENDSEC");
-  return h.str() + o.str();
+  std::string file;
+  file.reserve(h.str().size() + o.str().size());
+  return file.append(h.str()).append(o.str());
 }
 
 }  // namespace camopt::cad

@@ -12,6 +12,12 @@
 
 namespace camopt::cad {
 
+/// `value` as printf's "%.12g" writes it (and std::to_chars(first, last, value,
+/// std::chars_format::general, 12)), into [first, first + 32): the end of the text. Every DXF number
+/// is written so; the ones between 1e-9 and 1e11 in magnitude from their exact binary value in
+/// integer arithmetic, the others by std::to_chars.
+char* FormatG12(char* first, double value);
+
 class DxfDocument {
  public:
   /// A layer with an AutoCAD colour index (1 red, 2 yellow, 3 green, 4 cyan, 5 blue, 7 white/black).

@@ -4,7 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <initializer_list>
 #include <stdexcept>
+#include <string_view>
 
 namespace camopt::cad {
 
@@ -29,13 +32,14 @@ void AppendChords(const ArcSegment& a, double deflection, const Vec2<double>& ce
   const Vec2<double> u = a.start - centre, v = a.end - centre;
   const double seen = std::abs(std::atan2(Cross(u, v), u.dot(v)));
   int n = static_cast<int>(std::ceil(seen / kMaxChordTurn - 1e-9));
-  if (std::abs(a.bulge) >= 1e-12) {
-    const ArcGeometry g = ArcGeometryOf(a);
+  const bool arc = std::abs(a.bulge) >= 1e-12;
+  const ArcGeometry g = arc ? ArcGeometryOf(a) : ArcGeometry{};
+  if (arc) {
     const double ratio = std::min(1.0, deflection / g.radius);  // sagitta r(1 − cos(Δ/2)) <= deflection
     const double step = std::min(kMaxChordTurn, 2.0 * std::acos(1.0 - ratio));
     n = std::max(n, static_cast<int>(std::ceil(std::abs(g.sweep) / step - 1e-9)));
   }
-  for (int k = 1; k < n; ++k) points.push_back(PointOnArc(a, double(k) / n));
+  for (int k = 1; k < n; ++k) points.push_back(arc ? PointOnArc(a, g, double(k) / n) : PointOnArc(a, double(k) / n));
 }
 
 // The size of the part: the diagonal of its end points' bounding box.
@@ -84,116 +88,202 @@ void CheckChain(const Extrusion& e) {
 // ---- STEP (ISO 10303-21 exchange structure, AP214 entities) ---------------------------------
 
 // A REAL of ISO 10303-21 §6.3.2: always with a decimal point and an upper-case exponent ("1.",
-// "2.5", "1.E-07"); the shortest digits that read back as the same double (std::to_chars).
-std::string Real(double v) {
-  if (!std::isfinite(v)) throw std::invalid_argument("a STEP coordinate is not finite");
-  if (v == 0.0) return "0.";  // also −0
-  char buf[40];
-  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
-  std::string s(buf, r.ptr);
-  const size_t e = s.find('e');
-  if (e != std::string::npos) s[e] = 'E';
-  if (s.find('.') == std::string::npos) s.insert(e == std::string::npos ? s.size() : e, ".");
-  return s;
-}
+// "2.5", "1.E-07"); the shortest digits that read back as the same double (std::to_chars). Kept as
+// text for the entities that repeat it (a vertex's x and y at both ends of the extrusion).
+struct Real {
+  explicit Real(double v) {
+    if (!std::isfinite(v)) throw std::invalid_argument("a STEP coordinate is not finite");
+    if (v == 0.0) {  // also −0
+      c[0] = '0', c[1] = '.', n = 2;
+      return;
+    }
+    const std::to_chars_result r = std::to_chars(c, c + sizeof c - 1, v);
+    n = static_cast<int>(r.ptr - c);
+    // The exponent, if any, is among the last 5 characters ("e-308"); a '.' only before it.
+    int e = n;
+    for (int i = n - 1; i >= std::max(0, n - 5); --i)
+      if (c[i] == 'e') e = i;
+    if (e < n) c[e] = 'E';
+    if (!std::memchr(c, '.', e)) {  // "1e-07" → "1.E-07", "25" → "25."
+      std::memmove(c + e + 1, c + e, n - e);
+      c[e] = '.';
+      ++n;
+    }
+  }
+  char c[40];
+  int n = 0;
+};
 
-// The DATA section being written: entities numbered in the order added, each appended to one
-// text as it is made (17 000 entities for a cam of 700 arcs: no temporaries per entity).
+// The file being written: its head, then the DATA section's entities numbered in the order added,
+// each written into the file's text as it is made (17 000 entities for a cam of 700 arcs: no
+// temporaries per entity, no copy of the text).
 class StepData {
  public:
-  StepData() { text_.reserve(1 << 20); }
+  // `expected_size`: room made up front [characters], the text grows past it if need be.
+  StepData(std::string_view head, size_t expected_size) : buf_(std::max(expected_size, head.size()), '\0') {
+    Put(head);
+  }
   int Add(const std::string& body) {
-    const int id = Open();
-    text_ += body;
+    const int id = Open(body.size());
+    Put(body);
     Close();
     return id;
   }
-  static std::string Ref(int id) { return "#" + std::to_string(id); }
-  int Point(double x, double y, double z) { return Triple("CARTESIAN_POINT('',(", x, y, z); }
-  int Direction(double x, double y, double z) { return Triple("DIRECTION('',(", x, y, z); }
+  static std::string Ref(int id) {
+    std::string s(1, '#');
+    s += std::to_string(id);
+    return s;
+  }
+  // head #ref tail, e.g. VERTEX_POINT('',#12)
+  int Wrap(std::string_view head, int ref, std::string_view tail) {
+    const int id = Open(head.size() + tail.size());
+    Put(head);
+    PutRef(ref);
+    Put(tail);
+    Close();
+    return id;
+  }
+  // head #ref1,#ref2 tail, e.g. LINE('',#12,#3)
+  int Wrap(std::string_view head, int ref1, int ref2, std::string_view tail) {
+    const int id = Open(head.size() + tail.size());
+    Put(head);
+    PutRef(ref1);
+    Put(',');
+    PutRef(ref2);
+    Put(tail);
+    Close();
+    return id;
+  }
+  // head #ref,real tail, e.g. CIRCLE('',#12,2.5)
+  int Wrap(std::string_view head, int ref, const Real& r, std::string_view tail) {
+    const int id = Open(head.size() + tail.size());
+    Put(head);
+    PutRef(ref);
+    Put(',');
+    Put(r);
+    Put(tail);
+    Close();
+    return id;
+  }
+  int Point(const Real& x, const Real& y, const Real& z) { return Triple("CARTESIAN_POINT('',(", x, y, z); }
+  int Point(double x, double y, double z) { return Point(Real(x), Real(y), Real(z)); }
+  int Direction(double x, double y, double z) { return Triple("DIRECTION('',(", Real(x), Real(y), Real(z)); }
   int Axis(int point, int axis, int ref) {
-    const int id = Open();
-    text_ += "AXIS2_PLACEMENT_3D('',";
-    Refs({point, axis, ref});
-    text_ += ')';
+    const int id = Open(32);
+    Put("AXIS2_PLACEMENT_3D('',");
+    PutRef(point);
+    Put(',');
+    PutRef(axis);
+    Put(',');
+    PutRef(ref);
+    Put(')');
     Close();
     return id;
   }
   int Edge(int from, int to, int curve, bool same_sense) {
-    const int id = Open();
-    text_ += "EDGE_CURVE('',";
-    Refs({from, to, curve});
-    text_ += same_sense ? ",.T.)" : ",.F.)";
+    const int id = Open(32);
+    Put("EDGE_CURVE('',");
+    PutRef(from);
+    Put(',');
+    PutRef(to);
+    Put(',');
+    PutRef(curve);
+    Put(same_sense ? std::string_view(",.T.)") : std::string_view(",.F.)"));
     Close();
     return id;
   }
   // An edge loop of (edge, orientation) pairs, as a FACE_OUTER_BOUND or FACE_BOUND.
   int Bound(const std::vector<std::pair<int, bool>>& edges, bool outer) {
-    std::vector<int> oriented;
-    for (const auto& [edge, forward] : edges) {
-      oriented.push_back(Open());
-      text_ += "ORIENTED_EDGE('',*,*,";
-      AppendRef(edge);
-      text_ += forward ? ",.T.)" : ",.F.)";
+    return Bound(edges.data(), edges.size(), outer);
+  }
+  int Bound(std::initializer_list<std::pair<int, bool>> edges, bool outer) {
+    return Bound(edges.begin(), edges.size(), outer);
+  }
+  int Bound(const std::pair<int, bool>* edges, size_t count, bool outer) {
+    const int first = next_;
+    for (size_t i = 0; i < count; ++i) {
+      Open(32);
+      Put("ORIENTED_EDGE('',*,*,");
+      PutRef(edges[i].first);
+      Put(edges[i].second ? std::string_view(",.T.)") : std::string_view(",.F.)"));
       Close();
     }
-    const int loop = Open();
-    text_ += "EDGE_LOOP('',(";
-    Refs(oriented);
-    text_ += "))";
+    const int loop = Open(16 + kRefChars * count);
+    Put("EDGE_LOOP('',(");
+    for (int id = first; id < loop; ++id) {
+      if (id > first) Put(',');
+      PutRef(id);
+    }
+    Put("))");
     Close();
-    const int id = Open();
-    text_ += outer ? "FACE_OUTER_BOUND(''," : "FACE_BOUND(''," ;
-    AppendRef(loop);
-    text_ += ",.T.)";
-    Close();
-    return id;
+    return Wrap(outer ? "FACE_OUTER_BOUND(''," : "FACE_BOUND(''," , loop, ",.T.)");
   }
   int Face(const std::vector<int>& bounds, int surface, bool same_sense) {
-    const int id = Open();
-    text_ += "ADVANCED_FACE('',(";
-    Refs(bounds);
-    text_ += "),";
-    AppendRef(surface);
-    text_ += same_sense ? ",.T.)" : ",.F.)";
-    Close();
-    return id;
+    return Face(bounds.data(), bounds.size(), surface, same_sense);
   }
-  const std::string& text() const { return text_; }
+  // A face of one bound.
+  int Face(int bound, int surface, bool same_sense) { return Face(&bound, 1, surface, same_sense); }
+  // The text, ended with `tail`.
+  std::string Finish(std::string_view tail) {
+    Reserve(tail.size());
+    Put(tail);
+    buf_.resize(len_);
+    return std::move(buf_);
+  }
 
  private:
-  int Open() {
-    const int id = next_++;
-    AppendRef(id);
-    text_ += " = ";
-    return id;
-  }
-  void Close() { text_ += ";\n"; }
-  void AppendRef(int id) {
-    char buf[16];
-    buf[0] = '#';
-    const std::to_chars_result r = std::to_chars(buf + 1, buf + sizeof buf, id);
-    text_.append(buf, r.ptr);
-  }
-  void Refs(const std::vector<int>& ids) {
-    for (size_t i = 0; i < ids.size(); ++i) {
-      if (i) text_ += ',';
-      AppendRef(ids[i]);
+  // Room for the entity's number, " = ", references and the ";\n" on top of `extra` characters.
+  static constexpr size_t kRefChars = 12;  // ",#" and up to 10 digits
+  int Face(const int* bounds, size_t count, int surface, bool same_sense) {
+    const int id = Open(32 + kRefChars * count);
+    Put("ADVANCED_FACE('',(");
+    for (size_t i = 0; i < count; ++i) {
+      if (i) Put(',');
+      PutRef(bounds[i]);
     }
-  }
-  int Triple(const char* head, double x, double y, double z) {
-    const int id = Open();
-    text_ += head;
-    text_ += Real(x);
-    text_ += ',';
-    text_ += Real(y);
-    text_ += ',';
-    text_ += Real(z);
-    text_ += "))";
+    Put("),");
+    PutRef(surface);
+    Put(same_sense ? std::string_view(",.T.)") : std::string_view(",.F.)"));
     Close();
     return id;
   }
-  std::string text_;
+  // Starts entity #id with room for `extra` more characters than 4 references and 2 REALs.
+  int Open(size_t extra) {
+    Reserve(extra + 4 * kRefChars + 2 * sizeof(Real::c) + 16);
+    const int id = next_++;
+    PutRef(id);
+    Put(" = ");
+    return id;
+  }
+  void Close() { Put(";\n"); }
+  void Reserve(size_t extra) {
+    if (len_ + extra > buf_.size()) buf_.resize(std::max(len_ + extra, 2 * buf_.size()));
+  }
+  void Put(char c) { buf_[len_++] = c; }
+  void Put(std::string_view s) {
+    std::memcpy(buf_.data() + len_, s.data(), s.size());
+    len_ += s.size();
+  }
+  void Put(const Real& r) { Put(std::string_view(r.c, r.n)); }
+  void PutRef(int id) {
+    char* p = buf_.data() + len_;
+    *p = '#';
+    len_ = std::to_chars(p + 1, p + kRefChars, id).ptr - buf_.data();
+  }
+  int Triple(std::string_view head, const Real& x, const Real& y, const Real& z) {
+    const int id = Open(head.size() + sizeof(Real::c) + 8);
+    Put(head);
+    Put(x);
+    Put(',');
+    Put(y);
+    Put(',');
+    Put(z);
+    Put("))");
+    Close();
+    return id;
+  }
+  std::string buf_;  // the text is buf_[0, len_); the rest is room
+  size_t len_ = 0;
   int next_ = 1;
 };
 
@@ -203,8 +293,8 @@ double MeshDeflection(const Extrusion& e) {
   return std::max(e.mesh_deflection_mm, kMeshRelativeDeflection * Diagonal(e.profile));
 }
 
-std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection) {
-  CheckChain(e);
+std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection, bool chain_checked) {
+  if (!chain_checked) CheckChain(e);
   if (!(deflection > 0) || !std::isfinite(deflection)) throw std::invalid_argument("the mesh deflection must be > 0");
   std::vector<Vec2<double>> outer;
   for (const ArcSegment& a : e.profile) AppendChords(a, deflection, e.bore_centre, outer);
@@ -336,7 +426,11 @@ std::string StepOfExtrusion(const Extrusion& e) {
   CheckChain(e);
   const std::string name = StepString(e.name);
   const double t = e.thickness_mm;
-  StepData d;
+  // About 1200 characters per arc (its wall, edges, vertices and their geometry).
+  StepData d("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n"
+             "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n"
+             "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n",
+             1300 * e.profile.size() + 8192);
   // Product structure and units (AP214, automotive_design; lengths in millimetres).
   const int app = d.Add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')");
   d.Add("APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000," + StepData::Ref(app) + ")");
@@ -357,16 +451,20 @@ std::string StepOfExtrusion(const Extrusion& e) {
                         StepData::Ref(sr) + ")) REPRESENTATION_CONTEXT('','3D') )");
 
   const int dz = d.Direction(0, 0, 1), dx = d.Direction(1, 0, 0);
-  const int up = d.Add("VECTOR(''," + StepData::Ref(dz) + ",1.)");
+  const int up = d.Wrap("VECTOR('',", dz, ",1.)");
   const size_t n = e.profile.size();
+  const Real zero(0.0), top_z(t);
   // Vertices at the arcs' start points, at z = 0 and z = t; the vertical edge through each.
   std::vector<int> v0(n), vt(n), vertical(n);
+  std::vector<Real> start_x, start_y;
+  start_x.reserve(n), start_y.reserve(n);
   for (size_t i = 0; i < n; ++i) {
     const Vec2<double>& p = e.profile[i].start;
-    const int p0 = d.Point(p.x(), p.y(), 0.0), pt = d.Point(p.x(), p.y(), t);
-    v0[i] = d.Add("VERTEX_POINT(''," + StepData::Ref(p0) + ")");
-    vt[i] = d.Add("VERTEX_POINT(''," + StepData::Ref(pt) + ")");
-    const int line = d.Add("LINE(''," + StepData::Ref(p0) + "," + StepData::Ref(up) + ")");
+    start_x.emplace_back(p.x()), start_y.emplace_back(p.y());
+    const int p0 = d.Point(start_x[i], start_y[i], zero), pt = d.Point(start_x[i], start_y[i], top_z);
+    v0[i] = d.Wrap("VERTEX_POINT('',", p0, ")");
+    vt[i] = d.Wrap("VERTEX_POINT('',", pt, ")");
+    const int line = d.Wrap("LINE('',", p0, up, ")");
     vertical[i] = d.Edge(v0[i], vt[i], line, true);
   }
   // Each arc (or line): its edge at both ends and its wall, facing out of the solid.
@@ -381,25 +479,26 @@ std::string StepOfExtrusion(const Extrusion& e) {
       const Vec2<double> u = (a.end - a.start).normalized();
       const int dir = d.Direction(u.x(), u.y(), 0.0);
       const int normal = d.Direction(u.y(), -u.x(), 0.0);  // right of travel: out of a CCW chain
-      const int vec = d.Add("VECTOR(''," + StepData::Ref(dir) + ",1.)");
-      const int p0 = d.Point(a.start.x(), a.start.y(), 0.0), pt = d.Point(a.start.x(), a.start.y(), t);
-      bottom[i] = d.Edge(v0[i], v0[k], d.Add("LINE(''," + StepData::Ref(p0) + "," + StepData::Ref(vec) + ")"), true);
-      top[i] = d.Edge(vt[i], vt[k], d.Add("LINE(''," + StepData::Ref(pt) + "," + StepData::Ref(vec) + ")"), true);
-      surface = d.Add("PLANE(''," + StepData::Ref(d.Axis(p0, normal, dir)) + ")");
+      const int vec = d.Wrap("VECTOR('',", dir, ",1.)");
+      const int p0 = d.Point(start_x[i], start_y[i], zero), pt = d.Point(start_x[i], start_y[i], top_z);
+      bottom[i] = d.Edge(v0[i], v0[k], d.Wrap("LINE('',", p0, vec, ")"), true);
+      top[i] = d.Edge(vt[i], vt[k], d.Wrap("LINE('',", pt, vec, ")"), true);
+      surface = d.Wrap("PLANE('',", d.Axis(p0, normal, dir), ")");
     } else {
       const ArcGeometry g = ArcGeometryOf(a);
       const bool ccw = g.sweep > 0;  // the circle runs counter-clockwise about +z
-      const int c0 = d.Axis(d.Point(g.centre.x(), g.centre.y(), 0.0), dz, dx);
-      const int ct = d.Axis(d.Point(g.centre.x(), g.centre.y(), t), dz, dx);
-      const std::string r = Real(g.radius);
-      bottom[i] = d.Edge(v0[i], v0[k], d.Add("CIRCLE(''," + StepData::Ref(c0) + "," + r + ")"), ccw);
-      top[i] = d.Edge(vt[i], vt[k], d.Add("CIRCLE(''," + StepData::Ref(ct) + "," + r + ")"), ccw);
-      surface = d.Add("CYLINDRICAL_SURFACE(''," + StepData::Ref(c0) + "," + r + ")");
+      const Real cx(g.centre.x()), cy(g.centre.y());
+      const int c0 = d.Axis(d.Point(cx, cy, zero), dz, dx);
+      const int ct = d.Axis(d.Point(cx, cy, top_z), dz, dx);
+      const Real r(g.radius);
+      bottom[i] = d.Edge(v0[i], v0[k], d.Wrap("CIRCLE('',", c0, r, ")"), ccw);
+      top[i] = d.Edge(vt[i], vt[k], d.Wrap("CIRCLE('',", ct, r, ")"), ccw);
+      surface = d.Wrap("CYLINDRICAL_SURFACE('',", c0, r, ")");
       outward = ccw;  // a counter-clockwise arc of a counter-clockwise chain has the solid inside it
     }
     // Seen from outside: along the bottom edge, up at its end, back along the top, down.
     const int bound = d.Bound({{bottom[i], true}, {vertical[k], true}, {top[i], false}, {vertical[i], false}}, true);
-    walls.push_back(d.Face({bound}, surface, outward));
+    walls.push_back(d.Face(bound, surface, outward));
   }
   // The bore: two half-cylinders between the vertices at angles 0 and π about its centre.
   std::vector<std::pair<int, bool>> bore_bottom, bore_top;
@@ -407,8 +506,8 @@ std::string StepOfExtrusion(const Extrusion& e) {
     const double rb = 0.5 * e.bore_diameter_mm;
     const Vec2<double> c = e.bore_centre;
     const int c0 = d.Axis(d.Point(c.x(), c.y(), 0.0), dz, dx), ct = d.Axis(d.Point(c.x(), c.y(), t), dz, dx);
-    const int circle0 = d.Add("CIRCLE(''," + StepData::Ref(c0) + "," + Real(rb) + ")");
-    const int circlet = d.Add("CIRCLE(''," + StepData::Ref(ct) + "," + Real(rb) + ")");
+    const int circle0 = d.Wrap("CIRCLE('',", c0, Real(rb), ")");
+    const int circlet = d.Wrap("CIRCLE('',", ct, Real(rb), ")");
     int bv0[2], bvt[2], side[2];
     for (int h = 0; h < 2; ++h) {
       const double x = c.x() + (h == 0 ? rb : -rb);
@@ -423,12 +522,12 @@ std::string StepOfExtrusion(const Extrusion& e) {
       arc0[h] = d.Edge(bv0[h], bv0[1 - h], circle0, true);
       arct[h] = d.Edge(bvt[h], bvt[1 - h], circlet, true);
     }
-    const int cylinder = d.Add("CYLINDRICAL_SURFACE(''," + StepData::Ref(c0) + "," + Real(rb) + ")");
+    const int cylinder = d.Wrap("CYLINDRICAL_SURFACE('',", c0, Real(rb), ")");
     for (int h = 0; h < 2; ++h) {
       // Seen from the axis (the solid's outside): back along the bottom half, up at vertex h,
       // along the top half, down at vertex 1 − h.
       const int bound = d.Bound({{arc0[h], false}, {side[h], true}, {arct[h], true}, {side[1 - h], false}}, true);
-      walls.push_back(d.Face({bound}, cylinder, false));
+      walls.push_back(d.Face(bound, cylinder, false));
     }
     // The end faces' inner loops: clockwise seen from their outside (below for z = 0).
     bore_bottom = {{arc0[0], true}, {arc0[1], true}};
@@ -449,7 +548,10 @@ std::string StepOfExtrusion(const Extrusion& e) {
   faces.push_back(d.Face(bt, planet, true));
   faces.insert(faces.end(), walls.begin(), walls.end());
   std::string list;
-  for (int f : faces) list += (list.empty() ? "" : ",") + StepData::Ref(f);
+  for (int f : faces) {
+    if (!list.empty()) list += ',';
+    list += StepData::Ref(f);
+  }
   const int shell = d.Add("CLOSED_SHELL('',(" + list + "))");
   const int brep = d.Add("MANIFOLD_SOLID_BREP(''," + StepData::Ref(shell) + ")");
   const int origin = d.Axis(d.Point(0, 0, 0), dz, dx);
@@ -457,14 +559,7 @@ std::string StepOfExtrusion(const Extrusion& e) {
                         ")," + StepData::Ref(ctx) + ")");
   d.Add("SHAPE_DEFINITION_REPRESENTATION(" + StepData::Ref(shape) + "," + StepData::Ref(rep) + ")");
 
-  std::string out;
-  out.reserve(d.text().size() + 600);
-  out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n";
-  out += "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n";
-  out += "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n";
-  out += d.text();
-  out += "ENDSEC;\nEND-ISO-10303-21;\n";
-  return out;
+  return d.Finish("ENDSEC;\nEND-ISO-10303-21;\n");
 }
 
 }  // namespace camopt::cad

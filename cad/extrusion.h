@@ -39,7 +39,9 @@ double MeshDeflection(const Extrusion& e);
 /// counter-clockwise, i.e. the profile is not star-shaped about the centre: with every triangle
 /// counter-clockwise the triangles cover the face exactly once (their indicator functions sum to
 /// the boundary's winding number, 1 inside, 0 outside), which is the check.
-std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection);
+/// `chain_checked`: StepOfExtrusion has accepted `e` already (its checks of the chain and the bore
+/// are not repeated).
+std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection, bool chain_checked = false);
 
 /// The STEP AP214 file of the extrusion (a MANIFOLD_SOLID_BREP in millimetres), with a fixed time
 /// stamp: the same extrusion gives the same bytes. Throws std::invalid_argument when the bore does

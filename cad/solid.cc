@@ -257,7 +257,7 @@ SolidOutput ExtrudeCam(const Extrusion& e) {
   try {
     if (e.step) out.step = StepOfExtrusion(e);
     out.faces = static_cast<int>(e.profile.size()) + 2 + (e.bore_diameter_mm > 0 ? 2 : 0);
-    if (std::optional<TriangleMesh> mesh = MeshExtrusion(e, MeshDeflection(e))) {
+    if (std::optional<TriangleMesh> mesh = MeshExtrusion(e, MeshDeflection(e), e.step)) {
       out.mesh = std::move(*mesh);
       return out;
     }

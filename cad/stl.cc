@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <bit>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -20,31 +21,37 @@ Eigen::Vector3d Normal(const TriangleMesh& m, const std::array<int, 3>& t) {
   return len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
 }
 
-void PutFloat(std::string& s, double v) {
+// A float in little-endian byte order (the STL's, on any host) at out[0..3].
+char* PutFloat(char* out, double v) {
   const float f = static_cast<float>(v);
   std::uint32_t bits;
   std::memcpy(&bits, &f, 4);
-  for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((bits >> (8 * i)) & 0xff));
+  if constexpr (std::endian::native == std::endian::little) {
+    std::memcpy(out, &bits, 4);
+  } else {
+    for (int i = 0; i < 4; ++i) out[i] = static_cast<char>((bits >> (8 * i)) & 0xff);
+  }
+  return out + 4;
 }
 
 }  // namespace
 
 std::string BinaryStl(const TriangleMesh& mesh, const std::string& solid_name) {
-  std::string s;
   std::string header = "camopt binary STL, mm: " + solid_name;
   header.resize(80, ' ');
   if (header.compare(0, 5, "solid") == 0) header[0] = 'S';  // never mistaken for ASCII
-  s += header;
   const std::uint32_t n = static_cast<std::uint32_t>(mesh.triangles.size());
-  for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((n >> (8 * i)) & 0xff));
-  s.reserve(s.size() + 50 * size_t(n));
+  // 80-byte header, the count, and 50 bytes per triangle (normal, 3 vertices, attribute 0).
+  std::string s(84 + 50 * size_t(n), '\0');
+  std::memcpy(s.data(), header.data(), 80);
+  for (int i = 0; i < 4; ++i) s[80 + i] = static_cast<char>((n >> (8 * i)) & 0xff);
+  char* out = s.data() + 84;
   for (const auto& t : mesh.triangles) {
     const Eigen::Vector3d nn = Normal(mesh, t);
-    for (int k = 0; k < 3; ++k) PutFloat(s, nn[k]);
+    for (int k = 0; k < 3; ++k) out = PutFloat(out, nn[k]);
     for (int v = 0; v < 3; ++v)
-      for (int k = 0; k < 3; ++k) PutFloat(s, mesh.vertices[t[v]][k]);
-    s.push_back(0);
-    s.push_back(0);
+      for (int k = 0; k < 3; ++k) out = PutFloat(out, mesh.vertices[t[v]][k]);
+    out += 2;  // attribute byte count 0
   }
   return s;
 }
