@@ -18,7 +18,6 @@
 #include "model/lcr/contact3d.h"
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
-#include "model/lcr/cycle_curvature.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_crowning_tuning_study.h"
 #include "studies/work_limits.h"

@@ -84,6 +84,8 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
   return BisectIncreasing(total, moment, 0.0, hi, 200, 1e-15, 1e-6).mid();
 }
 
+using J1 = ceres::Jet<double, 1>;
+
 // Distance from the contact's axial end to the face end [mm], the smaller of the two sides, with
 // the end located within a cell: along each side the row maxima P (over x) fall like sqrt(distance
 // to the end) near an elliptical end, so P² is linear there and the end lies t/(1 − t) cells beyond
@@ -91,23 +93,6 @@ double SolveDeflection(const std::vector<PairModel>& models, const std::vector<d
 // is dy/2 − dy·t/(1 − t) down to t = 1/3 (end exactly at the face end), continued linearly (C¹)
 // beyond: −(9/4)·dy·(t − 1/3), bounded for a pressure that rises towards the edge (a straight
 // tooth). Continuous in the crowning up to the P² model's error when a row enters contact.
-// The row maxima (over x) of a pressure field and, when dp is given, their derivatives with
-// each row's peak cell frozen: Jets (value, derivative).
-using J1 = ceres::Jet<double, 1>;
-std::vector<J1> RowMaxima(const contact::Grid& g, const std::vector<double>& p,
-                          const std::vector<double>* dp) {
-  std::vector<J1> rows(g.ny, J1(0.0));
-  for (int iy = 0; iy < g.ny; ++iy)
-    for (int ix = 0; ix < g.nx; ++ix) {
-      const size_t k = size_t(iy) * g.nx + ix;
-      if (p[k] > rows[iy].a) {
-        rows[iy].a = p[k];
-        rows[iy].v[0] = dp ? (*dp)[k] : 0.0;
-      }
-    }
-  return rows;
-}
-
 template <typename T>
 T EndDistanceFromRows(const contact::Grid& g, const std::vector<T>& rows) {
   using std::abs;
@@ -152,15 +137,14 @@ T EndDistanceFromRows(const contact::Grid& g, const std::vector<T>& rows) {
 // peak cell frozen: (cell, ∂E/∂p_cell) for the cells it depends on (at most the two outermost
 // loaded rows' peaks of one side).
 std::vector<std::pair<size_t, double>> EndDistanceWeights(const contact::Grid& g, const std::vector<double>& p) {
-  std::vector<J1> rows = RowMaxima(g, p, nullptr);
+  // Each row's maximum over x (its first largest cell) and that cell.
+  std::vector<J1> rows(g.ny, J1(0.0));
   std::vector<size_t> cell(g.ny, 0);
-  for (int iy = 0; iy < g.ny; ++iy) {
-    double m = 0;
+  for (int iy = 0; iy < g.ny; ++iy)
     for (int ix = 0; ix < g.nx; ++ix) {
       const size_t k = size_t(iy) * g.nx + ix;
-      if (p[k] > m) m = p[k], cell[iy] = k;
+      if (p[k] > rows[iy].a) rows[iy].a = p[k], cell[iy] = k;
     }
-  }
   std::vector<std::pair<size_t, double>> w;
   for (int iy = 0; iy < g.ny; ++iy) {
     if (!(rows[iy].a > 0)) continue;

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "model/contact/roller_half_space.h"
-#include "model/lcr/cycle_curvature.h"
 
 namespace camopt::lcr {
 
@@ -30,8 +29,7 @@ std::vector<double> Refined(const std::vector<double>& coarse, int nx, int ny) {
 Contact3DCycleSide AnalyzeCycleContact3D(const Reducer<double>& r, Side s, const CycleSeries& series,
                                          double e_star, const RollerCrowning<double>& crowning,
                                          const ContactModelOptions& options) {
-  if (options.model != ContactModel::kHalfSpace)
-    return AnalyzeCycleContact3DOnGrids(r, s, series, e_star, crowning, options, {{0, 0}}, {}).front();
+  // One grid, the options' (unused by the slices model), no starts.
   return AnalyzeCycleContact3DOnGrids(r, s, series, e_star, crowning, options, {{options.grid_nx, options.grid_ny}},
                                       {})
       .front();
@@ -181,10 +179,10 @@ std::vector<Contact3DCycleSide> AnalyzeCycleContact3DOnGrids(const Reducer<doubl
         const contact::RollerHalfSpaceResult& coarse = previous[w];
         const double half_x = 1.3 * worst[w].hint;
         if (starts.from_previous_contact && last && !last->pressure_MPa.empty() &&
-                 int(last->pressure_MPa.size()) == nx * ny)
+            int(last->pressure_MPa.size()) == nx * ny)
           start = last->pressure_MPa;
-        else if (starts.from_coarser_grid && gi > 0 && nx == 2 * grids[gi - 1][0] && ny == 2 * grids[gi - 1][1] &&
-            coarse.half_x_mm == half_x && !coarse.pressure_MPa.empty())
+        else if (starts.from_coarser_grid && gi > 0 && nx == 2 * grids[gi - 1][0] &&
+                 ny == 2 * grids[gi - 1][1] && coarse.half_x_mm == half_x && !coarse.pressure_MPa.empty())
           start = Refined(coarse.pressure_MPa, grids[gi - 1][0], grids[gi - 1][1]);
         auto h = contact::SolveRollerHalfSpace(
             k.force, k.r_eff, length, e_star,

@@ -2,7 +2,6 @@
 // the angles, so that the per-roller square roots and divisions run two at a time; the same
 // operations in the same order as AnalyzeAngle (contact.h, forces.h), hence the same bits.
 #include "model/lcr/cycle.h"
-#include "model/lcr/cycle_curvature.h"
 
 #include <algorithm>
 #include <cmath>

@@ -69,6 +69,12 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
                          int steps, const Stages& stages,
                          const std::function<void(double)>& progress = {});
 
+/// The pitch-curve curvature κ [1/mm] of roller k of one cam at theta_rad[i], in
+/// [i · rollers + k] (rollers = r.side(s).rollers), by AnalyzeCycle's structure-of-arrays contact
+/// kernel: bit for bit RollerContacts(r, s, θ)[k].curvature (contact.h), without its per-angle
+/// vectors. Defined in cycle.cc.
+std::vector<double> CycleCurvatures(const Reducer<double>& r, Side s, const std::vector<double>& theta_rad);
+
 /// The one cycle aggregate of the LCR (used by AggregateCycle and by the sizing problem of
 /// objectives/lcr_sizing.h): a log-sum-exp soft maximum taken on x/scale with dimensionless
 /// sharpness k,
