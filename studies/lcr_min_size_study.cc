@@ -808,7 +808,17 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     po.points = {{"smallest: " + ComboName(best.combo), double(best.combo.lobes_a),
                   lcr::OuterDiameter(*best.outcome.design)}};
   }
-  out.Add("outer_diameter.svg", SvgLinePlot({{"feasible candidates", ma, od, {}, SeriesStyle::kMarkers}}, po));
+  // Candidates pruned by the branch and bound (3D): their lower bounds, a second series.
+  std::vector<double> pruned_lobes, pruned_bound;
+  for (const auto& c : result.candidates)
+    if (c.pruned()) {
+      pruned_lobes.push_back(c.combo.lobes_a);
+      pruned_bound.push_back(c.outcome3d->paused->lower_bound_mm);
+    }
+  std::vector<Series> series = {{"feasible candidates", ma, od, {}, SeriesStyle::kMarkers}};
+  if (!pruned_lobes.empty())
+    series.push_back({"pruned candidates: lower bound", pruned_lobes, pruned_bound, {}, SeriesStyle::kMarkers});
+  out.Add("outer_diameter.svg", SvgLinePlot(series, po));
 }
 
 std::string Summary(const Study& s, const Result& result) {
