@@ -492,8 +492,10 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}, {}, {}});
     for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}, {}, {}});
   }
-  // The sizing driver (objectives/sizing_driver.h): every candidate solved, then the smallest
-  // feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
+  // The sizing driver (objectives/sizing_driver.h): every candidate solved (with a 3D contact by
+  // branch and bound: a candidate whose polish round already exceeds the best's size stops there,
+  // "pruned", and is continued if the best's verification raises it past that round), then the
+  // smallest feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
   // re-solving where it breaks a limit; line: the exact cycle on twice the angles); one that fails
   // is dropped and the next smallest checked, until one holds or none is left.
   objectives::SizingCandidates loop;
