@@ -397,14 +397,43 @@ Problem MakeLcrSizing3DProblem(const LcrSizingSpec& base, const LcrSizing3DSpec&
 
 namespace {
 
+// Sets the outcome's design, crowning, start and evaluation counts from the polish's state.
+void StorePolish(const LcrSizingSpec& spec, const LcrSizing3DSpec& s, const std::vector<double>& x,
+                 const LcrActiveSet& active, const LcrTracked3D& tracked, int values, int gradients, int iterations,
+                 LcrMinSize3DOutcome& out) {
+  const int nb = BaseVariables(spec);
+  LcrMinSizeOutcome& o = out.outcome;
+  o.x = x;
+  o.design = LcrDesign(spec, std::span<const double>(x).first(nb));
+  SetLengths<double>(s, x, nb, *o.design);
+  o.active = active;
+  o.result.value_evaluations = values;
+  o.result.gradient_evaluations = gradients;
+  o.result.iterations = iterations;
+  // One start: the line optimum (the multistart of the line search chose it).
+  o.starts = {LcrStartOutcome{o.result.status, o.converged, o.converged ? o.check->outer_diameter_mm : 0.0}};
+  for (int k = 0; k < 2; ++k) out.crowning[k] = CrowningOf<double>(s, x, nb, k);
+  out.tracked = tracked;
+}
+
 // Header step 2 from out.outcome.x (its tracked sets and active set) with the 3D stress rows at
 // p_fast (the study's limit, or the limit tightened by the verification): rounds of polish and
 // dense check until the check holds at p_fast. Fills out (design, check, crowning, tracked) and adds
-// the evaluation counts to those already there.
+// the evaluation counts to those already there. Each round's problem has the rows of the round
+// before and more (the tracked contacts and the force rows only grow), so its optimum is a lower
+// bound of the final outer diameter as far as the local optima are global: once a converged
+// round's optimum exceeds `bound`, the polish stops there (out.paused: the lower bound and the round
+// to continue from); called again on a paused outcome it continues that round as if it had not
+// stopped (the same state, the same counts).
 void Polish3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s, const LcrMinSizeOptions& options, double p_fast,
-              LcrMinSize3DOutcome& out) {
-  const int nb = BaseVariables(spec);
+              LcrMinSize3DOutcome& out, double bound = kInf) {
   LcrMinSizeOutcome& o = out.outcome;
+  int first_round = 1;
+  if (out.paused) {
+    first_round = out.paused->next_round;
+    p_fast = out.paused->p_fast_MPa;
+    out.paused.reset();
+  }
   std::vector<double> x = o.x;
   LcrSizingSpec at = spec;  // the dense check's limits: the study's with the 3D stress limit at p_fast
   at.limits.contact_stress_MPa = p_fast;
@@ -414,7 +443,7 @@ void Polish3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s, const LcrMinS
   int values = o.result.value_evaluations, gradients = o.result.gradient_evaluations,
       iterations = o.result.iterations;
   o.converged = false;
-  for (int round = 1; round <= kMaxRounds; ++round) {
+  for (int round = first_round; round <= kMaxRounds; ++round) {
     DenseResult d;
     try {
       d = Dense(at, s, x, options.dense_steps);
@@ -452,6 +481,14 @@ void Polish3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s, const LcrMinS
     o.polish_rounds += 1;
     if (o.result.x.empty()) break;
     x = o.result.x;
+    // The round's optimum less the solver's relative tolerance: a lower bound also where the last
+    // round's optimum and the dense check's diameter differ in their last digits.
+    const double lower = o.result.objective * (1 - options.solver.tolerance);
+    if (round < kMaxRounds && o.result.ok() && lower > bound) {
+      out.paused = LcrPolishPause{round + 1, lower, p_fast, s};
+      StorePolish(spec, s, x, active, tracked, values, gradients, iterations, out);
+      return;
+    }
     if (round == kMaxRounds) {
       try {
         const DenseResult last = Dense(at, s, x, options.dense_steps);
@@ -463,23 +500,13 @@ void Polish3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s, const LcrMinS
       }
     }
   }
-  o.x = x;
-  o.design = LcrDesign(spec, std::span<const double>(x).first(nb));
-  SetLengths<double>(s, x, nb, *o.design);
-  o.active = active;
-  o.result.value_evaluations = values;
-  o.result.gradient_evaluations = gradients;
-  o.result.iterations = iterations;
-  // One start: the line optimum (the multistart of the line search chose it).
-  o.starts = {LcrStartOutcome{o.result.status, o.converged, o.converged ? o.check->outer_diameter_mm : 0.0}};
-  for (int k = 0; k < 2; ++k) out.crowning[k] = CrowningOf<double>(s, x, nb, k);
-  out.tracked = tracked;
+  StorePolish(spec, s, x, active, tracked, values, gradients, iterations, out);
 }
 
 }  // namespace
 
 LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& s3,
-                                      const LcrMinSizeOptions& options) {
+                                      const LcrMinSizeOptions& options, double bound) {
   LcrMinSize3DOutcome out;
   // Step 1: the line-model optimum (the fast path) as the start.
   LcrMinSizeOutcome line = SolveLcrMinSize(spec, options);
@@ -539,8 +566,15 @@ LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing
     for (int k = 0; k < 2; ++k) out.crowning[k] = s.crowning;
     return out;
   }
-  Polish3D(spec, s, options, spec.limits.contact_stress_MPa, out);
+  Polish3D(spec, s, options, spec.limits.contact_stress_MPa, out, bound);
   return out;
+}
+
+void ContinueLcrMinSize3D(const LcrSizingSpec& spec, const LcrMinSizeOptions& options, LcrMinSize3DOutcome& out,
+                          double bound) {
+  if (!out.paused) throw std::invalid_argument("ContinueLcrMinSize3D: the outcome is not paused");
+  const LcrSizing3DSpec s = out.paused->spec3d;  // with the start values the first call set
+  Polish3D(spec, s, options, out.paused->p_fast_MPa, out, bound);
 }
 
 namespace {

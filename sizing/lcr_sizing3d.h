@@ -103,6 +103,14 @@ struct LcrHalfSpaceCheck {
   bool converged = true;
 };
 
+/// Where a polish stopped at a bound (SolveLcrMinSize3D's `bound`), to continue from.
+struct LcrPolishPause {
+  int next_round = 0;         ///< the polish round to continue with
+  double lower_bound_mm = 0;  ///< the last round's optimum (less the solver tolerance): ≤ the final outer diameter
+  double p_fast_MPa = 0;      ///< the 3D stress limit of the rows
+  LcrSizing3DSpec spec3d;     ///< the 3D spec the polish runs with (the start values of its variables)
+};
+
 struct LcrMinSize3DOutcome {
   /// check->max_stress_MPa holds the 3D (slices) peaks; design carries the chosen roller length
   /// and cam thickness when they are variables.
@@ -111,11 +119,24 @@ struct LcrMinSize3DOutcome {
   std::optional<LcrContact3DCheck> contact;
   LcrTracked3D tracked;
   double line_outer_diameter_mm = 0;  ///< the line-model optimum it started from (0: none)
+  /// Set while the polish is stopped at a bound (not converged; design, x and the counts are
+  /// those of its last round); ContinueLcrMinSize3D goes on from it.
+  std::optional<LcrPolishPause> paused;
 };
 
-/// Solves one combination under the 3D contact model (header).
+/// Solves one combination under the 3D contact model (header). Branch and bound over candidates
+/// (objectives/sizing_driver.h): each polish round's problem has the rows of the round before and
+/// more, so its optimum bounds the final outer diameter from below (as far as the local optima are
+/// global ones); once a converged round's optimum (less the solver's relative tolerance) exceeds
+/// `bound` [mm] the polish stops there and the outcome is `paused` with that lower bound.
 LcrMinSize3DOutcome SolveLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec& spec3d,
-                                      const LcrMinSizeOptions& options);
+                                      const LcrMinSizeOptions& options, double bound = kInf);
+
+/// Continues a paused outcome (same spec and options as its SolveLcrMinSize3D) where it stopped,
+/// to the end or to the next round whose optimum exceeds `bound`: the rounds and numbers are those
+/// of the polish that never stopped. @throws std::invalid_argument when out is not paused.
+void ContinueLcrMinSize3D(const LcrSizingSpec& spec, const LcrMinSizeOptions& options, LcrMinSize3DOutcome& out,
+                          double bound = kInf);
 
 /// The verified-optimum contract (objectives/verification.h) of a converged outcome: the accurate
 /// model is the half_space solver at the slices cycle's worst contacts (3600 input angles) on the

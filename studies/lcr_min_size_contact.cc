@@ -119,10 +119,14 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const
   return s;
 }
 
-void SolveCandidate3D(const Study& s, Candidate& c) {
-  objectives::LcrMinSize3DOutcome o = objectives::SolveLcrMinSize3D(c.spec, *s.contact3d, s.options);
-  c.outcome = o.outcome;
-  c.outcome3d = std::move(o);
+std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound) {
+  if (c.outcome3d && c.outcome3d->paused)
+    objectives::ContinueLcrMinSize3D(c.spec, s.options, *c.outcome3d, bound);
+  else
+    c.outcome3d = objectives::SolveLcrMinSize3D(c.spec, *s.contact3d, s.options, bound);
+  c.outcome = c.outcome3d->outcome;
+  if (c.outcome3d->paused) return c.outcome3d->paused->lower_bound_mm;
+  return std::nullopt;
 }
 
 void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
@@ -138,6 +142,7 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
   if (c3.overload_torque_Nmm > 0) res["contact"]["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
   for (size_t i = 0; i < r.candidates.size(); ++i) {
     const auto& o3 = r.candidates[i].outcome3d;
+    if (o3 && r.candidates[i].pruned()) res["candidates"][i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
     if (!o3 || !r.candidates[i].feasible()) continue;
     res["candidates"][i]["input"]["crowning"] = CrowningJson(o3->crowning[0]);
     res["candidates"][i]["output"]["crowning"] = CrowningJson(o3->crowning[1]);

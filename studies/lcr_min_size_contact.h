@@ -27,8 +27,10 @@ struct Result;
 std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
                                                           bool catalogue);
 
-/// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d).
-void SolveCandidate3D(const Study& s, Candidate& c);
+/// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d), or continues it
+/// when its polish was stopped at a bound; stops where a polish round's outer diameter exceeds
+/// `bound` (objectives::SolveLcrMinSize3D) and then returns that lower bound.
+std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound);
 
 /// Adds the 3D parts to result.json (res: ToJson's object): "contact", best.input/output.crowning,
 /// best.contact (3D peaks, edge margins, the line-model outer diameter), best.half_space_check,

@@ -194,7 +194,7 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
   j["input"] = {{"lobes", c.combo.lobes_a}, {"rollers", c.combo.rollers_a}};
   j["output"] = {{"lobes", c.combo.lobes_b}, {"rollers", c.combo.rollers_b}};
   if (c.roller >= 0) j["catalogue_roller"] = s.catalogue[c.roller].name;
-  j["status"] = StatusOf(c);
+  j["status"] = c.pruned() ? "pruned" : StatusOf(c);
   j["feasible"] = c.feasible();
   j["solver_message"] = o.result.message;
   if (!o.note.empty()) j["note"] = o.note;
@@ -202,6 +202,16 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
                       {"gradients", o.result.gradient_evaluations},
                       {"iterations", o.result.iterations},
                       {"polish_rounds", o.polish_rounds}};
+  if (c.pruned()) {
+    // Branch and bound (objectives/sizing_driver.h): not solved to the end, no design to report.
+    j["outer_diameter_lower_bound_mm"] = c.outcome3d->paused->lower_bound_mm;
+    j["note"] = "pruned: a polish round's outer diameter (outer_diameter_lower_bound_mm) already exceeds the best "
+                "design's; each round adds constraints, so the candidate's optimum can only be larger";
+    j["starts"] = nlohmann::json::array();
+    j["binding"] = nlohmann::json::array();
+    j["violated"] = nlohmann::json::array();
+    return j;
+  }
   // Multistart: every start's outcome; the spread of the converged outer diameters.
   nlohmann::json starts = nlohmann::json::array();
   double lo = kInf, hi = -kInf;
@@ -482,8 +492,10 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}, {}, {}});
     for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}, {}, {}});
   }
-  // The sizing driver (objectives/sizing_driver.h): every candidate solved, then the smallest
-  // feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
+  // The sizing driver (objectives/sizing_driver.h): every candidate solved (with a 3D contact by
+  // branch and bound: a candidate whose polish round already exceeds the best's size stops there,
+  // "pruned", and is continued if the best's verification raises it past that round), then the
+  // smallest feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
   // re-solving where it breaks a limit; line: the exact cycle on twice the angles); one that fails
   // is dropped and the next smallest checked, until one holds or none is left.
   objectives::SizingCandidates loop;
@@ -492,8 +504,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     const Candidate& c = res.candidates[size_t(i)];
     return ComboName(c.combo) + (c.roller >= 0 ? " " + s.catalogue[c.roller].name : "");
   };
-  loop.solve = [&](int i) {
-    Candidate& c = res.candidates[size_t(i)];
+  const auto make_spec = [&](Candidate& c) {
     c.spec = s.base;
     c.spec.lobes_a = c.combo.lobes_a;
     c.spec.rollers_a = c.combo.rollers_a;
@@ -506,13 +517,30 @@ Result Run(const Study& s, const RunContext& ctx) {
       c.spec.limits.roller_load_N = std::min(c.spec.limits.roller_load_N, r.load_limit_N);
       if (c.spec.life) c.spec.life->roller = {r.dynamic_rating_N, r.static_rating_N, 0.0, 0.0};  // the catalogue's own
     }
-    if (s.contact3d)
-      SolveCandidate3D(s, c);
-    else
-      c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
-    res.value_evaluations += c.outcome.result.value_evaluations;
-    res.gradient_evaluations += c.outcome.result.gradient_evaluations;
   };
+  if (s.contact3d) {
+    // Branch and bound: a candidate's 3D polish stops once a round's outer diameter exceeds the
+    // bound the driver gives, and goes on when the driver needs it (sizing/lcr_sizing3d.h).
+    loop.solve_within = [&](int i, double bound) {
+      Candidate& c = res.candidates[size_t(i)];
+      const bool first = !c.outcome3d;
+      if (first) make_spec(c);
+      const int values = first ? 0 : c.outcome.result.value_evaluations,
+                gradients = first ? 0 : c.outcome.result.gradient_evaluations;
+      const std::optional<double> lower = SolveCandidate3D(s, c, bound);
+      res.value_evaluations += c.outcome.result.value_evaluations - values;
+      res.gradient_evaluations += c.outcome.result.gradient_evaluations - gradients;
+      return lower;
+    };
+  } else {
+    loop.solve = [&](int i) {
+      Candidate& c = res.candidates[size_t(i)];
+      make_spec(c);
+      c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
+      res.value_evaluations += c.outcome.result.value_evaluations;
+      res.gradient_evaluations += c.outcome.result.gradient_evaluations;
+    };
+  }
   loop.feasible_size = [&](int i) -> std::optional<double> {
     const Candidate& c = res.candidates[size_t(i)];
     if (!c.feasible()) return std::nullopt;
@@ -782,7 +810,17 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     po.points = {{"smallest: " + ComboName(best.combo), double(best.combo.lobes_a),
                   lcr::OuterDiameter(*best.outcome.design)}};
   }
-  out.Add("outer_diameter.svg", SvgLinePlot({{"feasible candidates", ma, od, {}, SeriesStyle::kMarkers}}, po));
+  // Candidates pruned by the branch and bound (3D): their lower bounds, a second series.
+  std::vector<double> pruned_lobes, pruned_bound;
+  for (const auto& c : result.candidates)
+    if (c.pruned()) {
+      pruned_lobes.push_back(c.combo.lobes_a);
+      pruned_bound.push_back(c.outcome3d->paused->lower_bound_mm);
+    }
+  std::vector<Series> series = {{"feasible candidates", ma, od, {}, SeriesStyle::kMarkers}};
+  if (!pruned_lobes.empty())
+    series.push_back({"pruned candidates: lower bound", pruned_lobes, pruned_bound, {}, SeriesStyle::kMarkers});
+  out.Add("outer_diameter.svg", SvgLinePlot(series, po));
 }
 
 std::string Summary(const Study& s, const Result& result) {

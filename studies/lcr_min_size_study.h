@@ -369,6 +369,9 @@ struct Candidate {
   std::optional<objectives::Verification> verification;
   std::optional<objectives::LcrHalfSpaceCheck> half_space;  ///< 3D: the verification's study-grid numbers
   bool feasible() const { return outcome.converged && (!verification || verification->verified()); }
+  /// 3D: its polish stopped at the best's size (branch and bound; outcome3d->paused has the lower
+  /// bound): not solved to the end, not feasible.
+  bool pruned() const { return outcome3d && outcome3d->paused; }
 };
 
 struct Result {

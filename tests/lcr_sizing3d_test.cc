@@ -241,6 +241,74 @@ TEST(LcrSizing3D, CrownedSizingHoldsTheLimitsUnderAnIndependentCheck) {
   EXPECT_TRUE(out["best"].contains("half_space_check"));
 }
 
+// Branch and bound over candidates (objectives/sizing_driver.h): a polish stopped at a bound goes on
+// from where it stopped to the design, numbers and counts of the polish that never stopped, and each
+// stop's lower bound is at most the final outer diameter.
+TEST(LcrSizing3D, APolishStoppedAtABoundContinuesToTheSameDesign) {
+  const json j = CrownedStudy();
+  const auto study = studies::lcr_min_size::Parse(studies::Node(&j, "crowned.json", ""));
+  objectives::LcrSizingSpec spec = study.base;
+  const auto combos = objectives::LobeCombinations(study.ratio, study.max_lobes, study.differences);
+  ASSERT_EQ(combos.size(), 1u);
+  spec.lobes_a = combos[0].lobes_a, spec.rollers_a = combos[0].rollers_a;
+  spec.lobes_b = combos[0].lobes_b, spec.rollers_b = combos[0].rollers_b;
+  const auto full = objectives::SolveLcrMinSize3D(spec, *study.contact3d, study.options);
+  ASSERT_TRUE(full.outcome.converged);
+  ASSERT_FALSE(full.paused);
+  const double od = full.outcome.check->outer_diameter_mm;
+  ASSERT_GE(full.outcome.polish_rounds, 3);
+  // Bound 0: every converged round exceeds it, the polish stops after its first round.
+  auto o = objectives::SolveLcrMinSize3D(spec, *study.contact3d, study.options, 0.0);
+  ASSERT_TRUE(o.paused);
+  EXPECT_FALSE(o.outcome.converged);
+  EXPECT_EQ(o.outcome.polish_rounds, 1);
+  double lower = o.paused->lower_bound_mm;
+  EXPECT_LE(lower, od);
+  // A bound just above the first round's optimum: it stops again, later and higher.
+  objectives::ContinueLcrMinSize3D(spec, study.options, o, lower + 1e-9);
+  ASSERT_TRUE(o.paused);
+  EXPECT_EQ(o.outcome.polish_rounds, 2);
+  EXPECT_GT(o.paused->lower_bound_mm, lower);
+  EXPECT_LE(o.paused->lower_bound_mm, od);
+  lower = o.paused->lower_bound_mm;
+  objectives::ContinueLcrMinSize3D(spec, study.options, o);
+  ASSERT_FALSE(o.paused);
+  ASSERT_TRUE(o.outcome.converged);
+  EXPECT_EQ(o.outcome.x, full.outcome.x);  // bit for bit
+  EXPECT_EQ(o.outcome.check->outer_diameter_mm, od);
+  EXPECT_EQ(o.outcome.polish_rounds, full.outcome.polish_rounds);
+  EXPECT_EQ(o.outcome.result.value_evaluations, full.outcome.result.value_evaluations);
+  EXPECT_EQ(o.outcome.result.gradient_evaluations, full.outcome.result.gradient_evaluations);
+  EXPECT_EQ(o.outcome.result.iterations, full.outcome.result.iterations);
+  EXPECT_EQ(o.crowning[0].coefficient, full.crowning[0].coefficient);
+  EXPECT_EQ(o.crowning[1].coefficient, full.crowning[1].coefficient);
+  EXPECT_EQ(o.tracked.stress, full.tracked.stress);
+  EXPECT_THROW(objectives::ContinueLcrMinSize3D(spec, study.options, o), std::invalid_argument);
+}
+
+// The crowned example's 4 combinations: the best (20/21 + 26/27) is the design of the search that
+// solves every combination (scripts/compare_examples.sh against a build without pruning gives the
+// same bits, 103.64474369403028 mm); the others stop at a polish round above it and say so.
+TEST(LcrSizing3D, CrownedExamplePrunesTheCombinationsAboveTheBest) {
+  const json j = camopt::testing::Example("lcr_min_size_crowned.json");
+  const auto study = studies::lcr_min_size::Parse(studies::Node(&j, "crowned.json", ""));
+  const auto res = studies::lcr_min_size::Run(study, studies::RunContext("", true));
+  ASSERT_GE(res.best, 0);
+  const json out = studies::lcr_min_size::ToJson(study, res);
+  const double best = out["best"]["outer_diameter_mm"].get<double>();
+  EXPECT_NEAR(best, 103.64474369403028, 1e-6);
+  EXPECT_EQ(out["best"]["input"]["lobes"], 20);
+  int pruned = 0;
+  for (const json& c : out["candidates"]) {
+    if (c["status"] != "pruned") continue;
+    ++pruned;
+    EXPECT_FALSE(c["feasible"].get<bool>());
+    EXPECT_GT(c["outer_diameter_lower_bound_mm"].get<double>(), best) << c.dump();
+    EXPECT_FALSE(c.contains("outer_diameter_mm"));
+  }
+  EXPECT_EQ(pruned, 3);
+}
+
 // One combination (12/13 + 14/15) with a circular crown's radius per cam as the variable, or the
 // cam thickness as a variable (log crown), sized by Ipopt and by NLopt SLSQP.
 json OneCombination(const std::string& variant, const std::string& backend) {
