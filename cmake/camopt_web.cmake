@@ -7,6 +7,8 @@ file(GLOB CAMOPT_WEB_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/web/*.html 
 set(CAMOPT_UPLOT_DIR ${PROJECT_SOURCE_DIR}/web/node_modules/uplot/dist)
 if(EXISTS ${CAMOPT_UPLOT_DIR}/uPlot.iife.min.js)
   list(APPEND CAMOPT_WEB_SOURCES ${CAMOPT_UPLOT_DIR}/uPlot.iife.min.js ${CAMOPT_UPLOT_DIR}/uPlot.min.css)
+elseif(CAMOPT_WEB_PENDING)
+  message(STATUS "web/node_modules/uplot: being installed (scripts/setup.sh configures again when it is)")
 else()
   message(WARNING "web/node_modules/uplot is missing (run `npm ci` in web/): the studio's charts are left out")
 endif()

@@ -3,8 +3,12 @@
 set -euo pipefail
 # Usage: scripts/install_deps.sh            every package: the program, its tests, benchmarks,
 #                                           Python module, API docs (.ci/run, scripts/test.sh)
-#        scripts/install_deps.sh --program  only what building and running `camopt` needs
-#                                           (scripts/setup.sh: fewer packages, a faster first run)
+#        scripts/install_deps.sh --program  only what building and running `camopt` needs: the
+#                                           two parts below, one after the other
+#        scripts/install_deps.sh --program-native  the Debian packages the compiler needs
+#        scripts/install_deps.sh --web      Node.js, npm and the studio's npm packages (uPlot), which
+#                                           the build only copies: scripts/setup.sh installs them
+#                                           while the program compiles
 PROGRAM_PACKAGES=(build-essential cmake pkg-config ccache
   libeigen3-dev libnlopt-cxx-dev coinor-libipopt-dev libceres-dev nlohmann-json3-dev
   libcli11-dev libfftw3-dev libsundials-dev
@@ -36,15 +40,18 @@ PACKAGES=("${PROGRAM_PACKAGES[@]}")
 # fresh minbase chroot, docs/performance.md "Setup"). The full list keeps them: the tests' readers,
 # Chromium and Matplotlib are installed as Debian intends.
 APT_OPTIONS=()
+web=1
 case "${1:-}" in
   --program) APT_OPTIONS=(--no-install-recommends) ;;
+  --program-native) APT_OPTIONS=(--no-install-recommends) web=0 ;;
+  --web) APT_OPTIONS=(--no-install-recommends) PACKAGES=() ;;
   "") PACKAGES+=("${TEST_PACKAGES[@]}") ;;
-  *) echo "usage: $0 [--program]" >&2; exit 2 ;;
+  *) echo "usage: $0 [--program | --program-native | --web]" >&2; exit 2 ;;
 esac
 # The studio's front end takes uPlot (charts) from npm, and its browser test puppeteer-core
 # (web/package.json, versions fixed by web/package-lock.json): Node.js and npm from Debian when the
 # machine has none (puppeteer-core 24 needs Node >= 18: Debian 12's nodejs is 18).
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+if [ $web = 1 ] && { ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; }; then
   PACKAGES+=(nodejs npm)
 fi
 SUDO=""
@@ -59,8 +66,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${APT_OPTIONS[@]}" "${missing[@]}"
 fi
 # The front end's npm packages, exactly as locked, into web/node_modules (the build copies uPlot's
-# files into build/web; nothing is fetched when the studio runs). --program: without the browser
-# test's puppeteer-core (a devDependency).
-NPM_OMIT=()
-if [ "${1:-}" = "--program" ]; then NPM_OMIT=(--omit=dev); fi
-(cd "$(dirname "$0")/../web" && npm ci --no-audit --no-fund --loglevel=error "${NPM_OMIT[@]}")
+# files into build/web; nothing is fetched when the studio runs). --program and --web: without the
+# browser test's puppeteer-core (a devDependency).
+if [ $web = 1 ]; then
+  NPM_OMIT=()
+  if [ -n "${1:-}" ]; then NPM_OMIT=(--omit=dev); fi
+  (cd "$(dirname "$0")/../web" && npm ci --no-audit --no-fund --loglevel=error "${NPM_OMIT[@]}")
+fi
