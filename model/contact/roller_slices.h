@@ -148,10 +148,22 @@ S SmoothIntegral(const S& k) {
   return segment(S(0.0), split) + segment(split, S(kPi / 2));
 }
 
-/// C_ij [mm per N/mm]: approach on the centre line of a slice at offset d = y_i − y_j from a unit
-/// line load on a slice of width w with half-width b. `self` for i = j.
+/// (π/4) ln((d + w/2)/(d − w/2)), d = |offset|: the term of Influence for another slice that does
+/// not depend on the half-width b (the slice geometry's alone), 0 for the slice itself.
 template <typename S>
-S Influence(const S& offset, const S& width, const S& b, double e_star) {
+S FarLog(const S& offset, const S& width) {
+  using std::abs;
+  using std::log;
+  const S d = abs(offset);
+  if (Value(d) < 0.5 * Value(width)) return S(0.0);
+  const S near = d - S(0.5) * width, far = d + S(0.5) * width;
+  return S(kPi / 4) * log(far / near);
+}
+
+/// Influence with its FarLog term given (FarLog of the same offset and width): the same
+/// arithmetic, so the same number; the solver's fills of one solve share the term.
+template <typename S>
+S InfluenceWithFarLog(const S& offset, const S& width, const S& b, double e_star, const S& far_log) {
   using std::abs;
   using std::log;
   const double scale = 4.0 / (kPi * kPi * e_star);
@@ -162,7 +174,14 @@ S Influence(const S& offset, const S& width, const S& b, double e_star) {
                              SmoothIntegral(S(b / half)));
   }
   const S near = d - S(0.5) * width, far = d + S(0.5) * width;
-  return S(scale) * (S(kPi / 4) * log(far / near) + SmoothIntegral(S(b / far)) - SmoothIntegral(S(b / near)));
+  return S(scale) * (far_log + SmoothIntegral(S(b / far)) - SmoothIntegral(S(b / near)));
+}
+
+/// C_ij [mm per N/mm]: approach on the centre line of a slice at offset d = y_i − y_j from a unit
+/// line load on a slice of width w with half-width b. `self` for i = j.
+template <typename S>
+S Influence(const S& offset, const S& width, const S& b, double e_star) {
+  return InfluenceWithFarLog(offset, width, b, e_star, FarLog(offset, width));
 }
 
 /// b(q) with the floor q_floor (see the header comment).
@@ -216,7 +235,6 @@ template <typename T, typename Gap>
 SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& length, double e_star,
                                    const Gap& gap, const SliceOptions& options = {}) {
   using slices_detail::HalfWidth;
-  using slices_detail::Influence;
   const int n = options.slices;
   if (n < 1 || !(Value(r_eff) > 0) || !(Value(length) > 0) || !(e_star > 0))
     throw std::invalid_argument("roller slices: need slices >= 1, R' > 0, length > 0, E* > 0");
@@ -250,10 +268,18 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
   std::vector<char> active(n, 1);
   double delta = 0;
   Eigen::MatrixXd c(n, n);
+  // The influence coefficients' b-free terms (slice geometry only), computed once for the solve's
+  // fills and Newton Jacobians (in each scalar type's own arithmetic, so the same numbers).
+  using J1 = ceres::Jet<double, 1>;
+  Eigen::MatrixXd far_log(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) far_log(i, j) = slices_detail::FarLog(y[i] - y[j], w);
+  std::vector<J1> far_log1;  // on the first Jacobian
   const auto fill = [&] {
     for (int j = 0; j < n; ++j) b[j] = HalfWidth(q[j], q_floor, rp, e_star);
     for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) c(i, j) = Influence(y[i] - y[j], w, b[j], e_star);
+      for (int j = 0; j < n; ++j)
+        c(i, j) = slices_detail::InfluenceWithFarLog(y[i] - y[j], w, b[j], e_star, far_log(i, j));
   };
   const auto solve_active_set = [&] {
     for (int pass = 0; pass < 4 * n + 10; ++pass) {
@@ -308,12 +334,17 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
   const auto jacobian = [&](const std::vector<int>& a) {
     const int m = int(a.size());
     Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(m + 1, m + 1);
-    using J1 = ceres::Jet<double, 1>;
+    if (far_log1.empty()) {
+      far_log1.resize(size_t(n) * n);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) far_log1[size_t(i) * n + j] = slices_detail::FarLog(J1(y[i] - y[j]), J1(w));
+    }
     for (int s = 0; s < m; ++s) {
       const int j = a[s];
       const double dbdq = 2.0 * rp / (kPi * e_star * b[j]);
       for (int r = 0; r < m; ++r) {
-        const J1 cj = Influence(J1(y[a[r]] - y[j]), J1(w), J1(b[j], 0), e_star);
+        const J1 cj = slices_detail::InfluenceWithFarLog(J1(y[a[r]] - y[j]), J1(w), J1(b[j], 0), e_star,
+                                                         far_log1[size_t(a[r]) * n + j]);
         jac(r, s) = cj.a + q[j] * cj.v[0] * dbdq;
       }
       jac(m, s) = w;
