@@ -165,15 +165,33 @@ bool ChainCrossesItself(const std::vector<ArcSegment>& chain) {
   auto orient = [](const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c) {
     return Cross(Vec2<double>(b - a), Vec2<double>(c - a));
   };
-  for (size_t i = 0; i < n; ++i)
-    for (size_t k = i + 2; k < n; ++k) {
-      if (i == 0 && k == n - 1) continue;  // neighbours through the closing point
-      const ArcSegment &a = chain[i], &b = chain[k];
-      const double d1 = orient(a.start, a.end, b.start), d2 = orient(a.start, a.end, b.end);
-      const double d3 = orient(b.start, b.end, a.start), d4 = orient(b.start, b.end, a.end);
-      if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0)
-        return true;
+  auto cross = [&](size_t i, size_t k) {
+    const ArcSegment &a = chain[i], &b = chain[k];
+    const double d1 = orient(a.start, a.end, b.start), d2 = orient(a.start, a.end, b.end);
+    const double d3 = orient(b.start, b.end, a.start), d4 = orient(b.start, b.end, a.end);
+    return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+  };
+  // Two chords cross (each pair's end points strictly on either side of the other's line) only at a
+  // point inside both x-ranges: a sweep over x compares each chord with the chords whose x-range
+  // reaches its left end, not with all (a profile's vertical lines meet a few chords each).
+  std::vector<size_t> by_left(n);
+  std::vector<double> left(n), right(n);
+  for (size_t i = 0; i < n; ++i) {
+    by_left[i] = i;
+    left[i] = std::min(chain[i].start.x(), chain[i].end.x());
+    right[i] = std::max(chain[i].start.x(), chain[i].end.x());
+  }
+  std::sort(by_left.begin(), by_left.end(), [&](size_t a, size_t b) { return left[a] < left[b]; });
+  std::vector<size_t> open;  // chords whose x-range may still reach the next left end
+  for (const size_t k : by_left) {
+    std::erase_if(open, [&](size_t i) { return right[i] < left[k]; });
+    for (const size_t i : open) {
+      const size_t lo = std::min(i, k), hi = std::max(i, k);
+      if (hi - lo < 2 || (lo == 0 && hi == n - 1)) continue;  // neighbours, also through the closing point
+      if (cross(lo, hi)) return true;
     }
+    open.push_back(k);
+  }
   return false;
 }
 

@@ -55,7 +55,7 @@ double DistanceToArc(const ArcSegment& a, const Vec2<double>& p);
 double EnclosedArea(const std::vector<ArcSegment>& chain);
 
 /// Whether the chords of a closed chain cross each other (an undercut profile loops over itself;
-/// such a profile bounds no solid). O(n²) over the chords.
+/// such a profile bounds no solid). A sweep over x: about O(n log n) for a profile.
 bool ChainCrossesItself(const std::vector<ArcSegment>& chain);
 
 using CurveFunction = std::function<Vec2<double>(double)>;

@@ -93,10 +93,10 @@ PlanarCamGeometry CamGeometry(const Study& st, Side s) {
   g.file_stem = input ? "input_cam" : "output_cam";
   g.design_name = st.name;
   g.cam_name = input ? "input cam" : "output cam";
-  g.profile = [c, e, rr](double psi) { return lcr::OffsetPoint(c, e, psi, rr); };
-  g.pitch = [c, e](double psi) { return lcr::PitchPoint(c, e, psi); };
+  g.profile = lcr::OffsetCurve(c, e, rr);
+  g.pitch = lcr::PitchCurve(c, e);
   if (input ? st.cutter_input_given : st.cutter_output_given) {
-    g.cutter = [c, e, off = rr - cutter](double psi) { return lcr::OffsetPoint(c, e, psi, off); };
+    g.cutter = lcr::OffsetCurve(c, e, rr - cutter);
     g.cutter_diameter_mm = 2 * cutter;
   } else {
     g.cutter_note = "omitted: the cutter equals the roller, so its path is the pitch curve (layer PITCH_CURVE)";

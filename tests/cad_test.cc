@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -139,6 +140,78 @@ TEST(ArcFit, EllipseWithinToleranceEverywhere) {
   EXPECT_NEAR(cad::EnclosedArea(fit.arcs), kPi * ax * by, 159 * o.tolerance_mm);
   // Arcs, not chords: far fewer than a 1 µm polyline would need (~2000 chords).
   EXPECT_LT(fit.arcs.size(), 400u);
+}
+
+namespace {
+// A closed chain of chords through the points (bulge 0: ChainCrossesItself looks at the chords).
+std::vector<cad::ArcSegment> Polygon(const std::vector<Vec2<double>>& p) {
+  std::vector<cad::ArcSegment> chain;
+  for (size_t i = 0; i < p.size(); ++i) chain.push_back({p[i], p[(i + 1) % p.size()], 0.0});
+  return chain;
+}
+std::vector<Vec2<double>> Polar(int n, const std::function<double(double)>& r) {
+  std::vector<Vec2<double>> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * kPi * (i + 0.5) / n;
+    p.emplace_back(r(t) * std::cos(t), r(t) * std::sin(t));
+  }
+  return p;
+}
+// Every pair of non-neighbouring chords: the end points of each strictly on either side of the
+// other's line (the reference for the sweep).
+bool CrossesByEveryPair(const std::vector<Vec2<double>>& p) {
+  const size_t n = p.size();
+  auto side = [](const Vec2<double>& a, const Vec2<double>& b, const Vec2<double>& c) {
+    const double v = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    return v > 0 ? 1 : (v < 0 ? -1 : 0);
+  };
+  for (size_t i = 0; i < n; ++i)
+    for (size_t k = i + 2; k < n; ++k) {
+      if (i == 0 && k == n - 1) continue;
+      const Vec2<double>&a = p[i], &b = p[(i + 1) % n], &c = p[k], &d = p[(k + 1) % n];
+      if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) return true;
+    }
+  return false;
+}
+}  // namespace
+
+// Limaçons r = b + a cos t: an inner loop (the chain crosses itself where the loop closes) exactly
+// when a > b; a regular polygon and the star polygon {7/3} (whose edges cross by construction).
+TEST(ArcFit, ChainCrossesItselfOnKnownShapes) {
+  EXPECT_FALSE(cad::ChainCrossesItself(Polygon(Polar(2000, [](double t) { return 2 + std::cos(t); }))));
+  EXPECT_TRUE(cad::ChainCrossesItself(Polygon(Polar(2000, [](double t) { return 1 + 2 * std::cos(t); }))));
+  EXPECT_FALSE(cad::ChainCrossesItself(Polygon(Polar(7, [](double) { return 1.0; }))));
+  std::vector<Vec2<double>> star;
+  for (int i = 0; i < 7; ++i) star.emplace_back(std::cos(2 * kPi * 3 * i / 7), std::sin(2 * kPi * 3 * i / 7));
+  EXPECT_TRUE(cad::ChainCrossesItself(Polygon(star)));
+}
+
+// Random closed polygons (3 to 40 vertices, some on a coarse lattice for touching and collinear
+// chords) against every pair checked.
+TEST(ArcFit, ChainCrossesItselfAgreesWithEveryPair) {
+  std::srand(7);
+  int crossing = 0, simple = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int n = 3 + std::rand() % 38;
+    const bool lattice = trial % 3 == 0;
+    std::vector<Vec2<double>> p;
+    // Star-shaped with a random radius per vertex (often simple) or random points (often not).
+    const bool star_shaped = trial % 2 == 0;
+    for (int i = 0; i < n; ++i) {
+      const double u = double(std::rand()) / RAND_MAX, v = double(std::rand()) / RAND_MAX;
+      if (lattice) p.emplace_back(std::floor(5 * u), std::floor(5 * v));
+      else if (star_shaped) {
+        const double t = 2 * kPi * (i + 0.5 * u) / n;
+        p.emplace_back((1 + v) * std::cos(t), (1 + v) * std::sin(t));
+      } else p.emplace_back(u, v);
+    }
+    const bool expected = CrossesByEveryPair(p);
+    (expected ? crossing : simple) += 1;
+    EXPECT_EQ(cad::ChainCrossesItself(Polygon(p)), expected) << "trial " << trial;
+  }
+  // Both answers occur often enough for the comparison to mean something.
+  EXPECT_GT(crossing, 300);
+  EXPECT_GT(simple, 300);
 }
 
 // A sweep writes STEP files from several threads at once; OCCT's STEP translator keeps process-wide

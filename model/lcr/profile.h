@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "model/common/geometry.h"
@@ -73,13 +74,17 @@ Vec2<T> OffsetPoint(const CamSide<T>& side, const T& eccentricity, const T& psi,
   return PitchPoint(side, eccentricity, psi) + offset * InwardNormal(side, eccentricity, psi);
 }
 
+// The double curves' evaluations (drawings, geometry files' fits), compiled in profile.cc at the
+// build's optimisation: the study files that call them are compiled lighter (CMakeLists.txt).
+
 /// Sampled closed curve (n points, ψ = 2πi/n) at the given inward offset [mm].
-inline std::vector<Vec2<double>> SampleCurve(const CamSide<double>& side, double eccentricity,
-                                             double offset, int n) {
-  std::vector<Vec2<double>> pts(n);
-  for (int i = 0; i < n; ++i) pts[i] = OffsetPoint(side, eccentricity, 2 * kPi * i / n, offset);
-  return pts;
-}
+std::vector<Vec2<double>> SampleCurve(const CamSide<double>& side, double eccentricity, double offset, int n);
+
+/// ψ ↦ OffsetPoint(side, eccentricity, ψ, offset).
+std::function<Vec2<double>(double)> OffsetCurve(const CamSide<double>& side, double eccentricity, double offset);
+
+/// ψ ↦ PitchPoint(side, eccentricity, ψ).
+std::function<Vec2<double>(double)> PitchCurve(const CamSide<double>& side, double eccentricity);
 
 /// The c ∈ [−1, 1] where κ(c) is largest (the sharpest convex point), found on values only:
 /// a 201-point scan refined by golden section. Used with the envelope theorem below.
