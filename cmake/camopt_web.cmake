@@ -5,6 +5,8 @@
 file(GLOB CAMOPT_WEB_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/web/*.html ${PROJECT_SOURCE_DIR}/web/*.js
      ${PROJECT_SOURCE_DIR}/web/*.css)
 set(CAMOPT_UPLOT_DIR ${PROJECT_SOURCE_DIR}/web/node_modules/uplot/dist)
+# ON while scripts/setup.sh installs the npm packages beside the build (it configures again after).
+option(CAMOPT_WEB_PENDING "web/node_modules is being installed: no warning for its absence" OFF)
 if(EXISTS ${CAMOPT_UPLOT_DIR}/uPlot.iife.min.js)
   list(APPEND CAMOPT_WEB_SOURCES ${CAMOPT_UPLOT_DIR}/uPlot.iife.min.js ${CAMOPT_UPLOT_DIR}/uPlot.min.css)
 elseif(CAMOPT_WEB_PENDING)
