@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "model/common/roots.h"
@@ -900,6 +901,68 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
   return out;
 }
 
+namespace {
+
+// Crank angles on the same phase modulo one roller pitch within this [rad] share their state (see
+// RunCycle in the header for the bound on what the match's error moves).
+constexpr double kSymmetricPhaseTolerance = 1e-9;
+
+// The roller shift m mod n1 (in [0, n1)) with φ_b = φ_a + m·2π/n1 within the tolerance, or -1.
+int SymmetricShift(double phi_a, double phi_b, int rollers) {
+  const double pitch = 2.0 * kPi / rollers;
+  const double q = (phi_b - phi_a) / pitch;
+  if (!(std::abs(q) < 1e9)) return -1;  // also NaN and infinite angles
+  const double m = std::round(q);
+  if (!(std::abs(phi_b - phi_a - m * pitch) <= kSymmetricPhaseTolerance)) return -1;
+  const long r = long(m) % rollers;
+  return int(r < 0 ? r + rollers : r);
+}
+
+// The state of `source` at the crank angle φ + m·2π/n1: roller i there is roller i + m here
+// (turning the crank by one pitch moves each roller centre, in the disc frame, to where its
+// predecessor was, one tooth pitch further round). Pairs in roller order, as a solve gives them.
+MeshLoad SymmetricCopy(const MeshLoad& source, double crank_angle_rad, int source_index, int shift, int rollers) {
+  MeshLoad m = source;
+  m.crank_angle_rad = crank_angle_rad;
+  m.symmetric_source = source_index;
+  m.roller_shift = shift;
+  for (PairLoad& p : m.pairs) p.roller = (p.roller + shift) % rollers;
+  std::stable_sort(m.pairs.begin(), m.pairs.end(),
+                   [](const PairLoad& a, const PairLoad& b) { return a.roller < b.roller; });
+  m.iterations = 0;
+  m.contact_solves = 0;
+  m.solver_iterations = 0;
+  m.slope_iterations = 0;
+  return m;
+}
+
+// For a copy made by RunCycle, the position in `source.pairs` of each of its pairs, when `source`
+// is its source (on its phase and its pairs, relabelled, the copy's bit for bit); else nullopt.
+std::optional<std::vector<size_t>> SymmetricPairMap(const MeshLoad& copy, const MeshLoad& source, int rollers) {
+  if (source.symmetric_source >= 0 || copy.pairs.size() != source.pairs.size()) return std::nullopt;
+  const int shift = SymmetricShift(source.crank_angle_rad, copy.crank_angle_rad, rollers);
+  const bool same_slope = copy.rotation_slope == source.rotation_slope ||
+                          (std::isnan(copy.rotation_slope) && std::isnan(source.rotation_slope));
+  if (shift < 0 || shift != copy.roller_shift || copy.rotation_rad != source.rotation_rad || !same_slope)
+    return std::nullopt;
+  std::vector<size_t> map(copy.pairs.size());
+  for (size_t i = 0; i < copy.pairs.size(); ++i) {
+    const PairLoad& c = copy.pairs[i];
+    const int from = (c.roller - shift + rollers) % rollers;
+    size_t j = 0;
+    while (j < source.pairs.size() && source.pairs[j].roller != from) ++j;
+    if (j == source.pairs.size()) return std::nullopt;
+    const PairLoad& s = source.pairs[j];
+    if (s.load_N != c.load_N || s.max_pressure_MPa != c.max_pressure_MPa || s.arm_mm != c.arm_mm ||
+        s.pressure_MPa != c.pressure_MPa)
+      return std::nullopt;
+    map[i] = j;
+  }
+  return map;
+}
+
+}  // namespace
+
 double SmoothPeakPressure(const CycleResult& cycle, double temperature_MPa) {
   double m = 0;
   for (const MeshLoad& mesh : cycle.meshes)
@@ -944,10 +1007,33 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
       end = cycle.meshes[k].end_distance_mm, end_angle = k;
   }
   long iterations = 0;
+  // The derivatives of every differentiated mesh, for the copies of it (RunCycle's symmetry).
+  std::vector<std::vector<LoadedTca::Derivative>> by_angle(na);
+  const int rollers = tca.drive().rollers;
   for (size_t k = 0; k < na; ++k) {
     const MeshLoad& m = cycle.meshes[k];
-    const std::vector<LoadedTca::Derivative> d = tca.Differentiate(m, parameters);
-    if (!d.empty()) iterations += d.front().cg_iterations;
+    const int src = m.symmetric_source;
+    const std::optional<std::vector<size_t>> map =
+        src >= 0 && size_t(src) < k && !by_angle[src].empty()
+            ? SymmetricPairMap(m, cycle.meshes[src], rollers)
+            : std::nullopt;
+    std::vector<LoadedTca::Derivative> d;
+    if (map) {
+      d = by_angle[src];  // the same state relabelled: the same derivatives, pairs in this order
+      for (LoadedTca::Derivative& x : d) {
+        std::vector<double> load(map->size()), peak(map->size());
+        for (size_t i = 0; i < map->size(); ++i) {
+          load[i] = x.pair_load_N.at((*map)[i]);
+          peak[i] = x.pair_max_pressure_MPa.at((*map)[i]);
+        }
+        x.pair_load_N = std::move(load);
+        x.pair_max_pressure_MPa = std::move(peak);
+      }
+    } else {
+      d = tca.Differentiate(m, parameters);
+      if (!d.empty()) iterations += d.front().cg_iterations;
+      by_angle[k] = d;
+    }
     for (size_t j = 0; j < np; ++j) {
       CycleDerivative& c = out[j];
       c.converged = c.converged && d[j].converged;
@@ -984,12 +1070,27 @@ CycleResult RunCycle(const LoadedTca& tca, double torque_Nmm, const std::vector<
                      const std::function<void(double)>& progress) {
   CycleResult r;
   const size_t n = angles.size();
+  const Drive& drive = tca.drive();
+  const bool reuse = tca.options().reuse_symmetric_angles && drive.rollers == drive.teeth + 1;
   LtcaWarmStart warm;  // local: the cycle depends on its arguments only
+  std::vector<size_t> solved;  // the angles solved, in order (each on its own phase when reusing)
   for (size_t k = 0; k < n; ++k) {
-    r.meshes.push_back(tca.Solve(torque_Nmm, angles[k], &warm));
+    int source = -1, shift = 0;
+    if (reuse)
+      for (size_t j : solved)
+        if ((shift = SymmetricShift(angles[j], angles[k], drive.rollers)) >= 0) {
+          source = int(j);
+          break;
+        }
+    if (source >= 0) {
+      r.meshes.push_back(SymmetricCopy(r.meshes[source], angles[k], source, shift, drive.rollers));
+    } else {
+      r.meshes.push_back(tca.Solve(torque_Nmm, angles[k], &warm));
+      solved.push_back(k);
+    }
     if (progress) progress(double(k + 1) / n);
   }
-  return SummariseCycle(tca.drive(), std::move(r.meshes), angles);
+  return SummariseCycle(drive, std::move(r.meshes), angles);
 }
 
 CycleResult SummariseCycle(const Drive& drive, std::vector<MeshLoad> meshes,

@@ -71,6 +71,10 @@ struct LoadedOptions {
   /// (docs/performance.md). The steering solves run the plain iteration either way. Off in the
   /// cycloid sizing (CycloidSizingSpec::options).
   bool precondition_solves = true;
+  /// RunCycle: solve each distinct phase of the crank angles modulo one roller pitch 2π/n1 once
+  /// and copy its state, rollers relabelled, to the other angles of that phase (the drive's
+  /// z_p-fold symmetry, see RunCycle). Off: every angle is solved.
+  bool reuse_symmetric_angles = true;
 };
 
 /// One loaded roller-tooth pair at one crank angle.
@@ -115,6 +119,12 @@ struct MeshLoad {
   long slope_iterations = 0;         ///< CG iterations of the crank slope's load sensitivities
   bool converged = true;
   std::string message;
+  /// RunCycle's reuse by symmetry (LoadedOptions::reuse_symmetric_angles): -1 when this angle was
+  /// solved; else the index, in that call's angles, of the solved angle whose state this is, with
+  /// its roller r here roller (r + roller_shift) mod n1. A copy's counts (iterations,
+  /// contact_solves, solver_iterations, slope_iterations) are 0: a cycle's sums count work done.
+  int symmetric_source = -1;
+  int roller_shift = 0;
 };
 
 /// What one LTCA solve leaves for the next one as a starting point: per roller, the last solved
@@ -262,8 +272,29 @@ struct CycleResult {
 };
 
 /// Runs the LTCA under the disc torque torque_Nmm [N·mm] over the crank angles [rad] (in order),
-/// each angle warm-started from the previous one with a warm start local to the call: the result
-/// is a function of the arguments only. The gear ratio uses each solve's exact derivative of the
+/// each solved angle warm-started from the previous solved one with a warm start local to the
+/// call: the result is a function of the arguments only.
+///
+/// Symmetry (LoadedOptions::reuse_symmetric_angles, on by default). The model's drive is ideal:
+/// n1 = n2 + 1 alike rollers on one circle (a, ρ), n2 alike teeth (one profile with the shared
+/// modifications Δa, Δρ), one crowning, material and grid for every pair, and no output
+/// mechanism or per-roller/per-tooth deviation in the LTCA (the deviations of
+/// model/cycloid/transmission_error.h are not part of it). Turning the crank by one roller pitch
+/// 2π/n1 then turns the eccentric by 2π/n1 and the disc by −2π/(n1 n2): in the disc frame every
+/// roller centre moves to where its predecessor was, rotated by 2π/n1 + 2π/(n1 n2) = 2π/n2, one
+/// tooth pitch, under which the tooth profile is invariant (eqs. 3–4, 12). So the state at
+/// φ + m·2π/n1 is the state at φ with roller i renamed i + m (mod n1): the same LTE, loads,
+/// arms, backlash, pressure maps (in each pair's own coordinates) and crank slope. An angle whose
+/// phase φ mod 2π/n1 equals an earlier solved angle's within 1e-9 rad gets that state, relabelled
+/// (MeshLoad::symmetric_source); the error of the match moves the state by the state's change over
+/// 1e-9 rad of crank (the LTE by |dLTE/dφ|·1e-9 < 1e-11 rad, the loads by ~1e-8 of themselves), far
+/// below the solver and compatibility tolerances, while the angles' own rounding is ~1e-15 rad.
+/// Sixty uniform angles over 2π with n1 = 16 fall on 15 phases: 15 solves. Angle sets on distinct
+/// phases (one mesh period, a half-step-shifted set of a period) solve every angle, as does the
+/// option off. Every LoadedTca drive qualifies (CheckDrive asks n1 = n2 + 1); a model with
+/// per-roller errors or an output mechanism in the LTCA would have to turn the reuse off.
+/// Copies differ from solving their angle only within the tolerances (a different warm start).
+/// The gear ratio uses each solve's exact derivative of the
 /// LTE over the crank angle (LoadedOptions::crank_slope): a difference quotient of the LTE over a
 /// small step divides the jumps of the discretised contact (a cell entering or leaving it) by the
 /// step and has no crank-converged value.
@@ -304,7 +335,11 @@ struct CycleDerivative {
 };
 
 /// The cycle's derivatives for each parameter (names as LoadedTca::Differentiate). The cycle must
-/// come from RunCycle(tca, …) with LoadedOptions::keep_pressure; τ as SmoothPeakPressure.
+/// come from RunCycle(tca, …) with LoadedOptions::keep_pressure; τ as SmoothPeakPressure. Every
+/// parameter is shared by all rollers and teeth (and the crank angle), so at a mesh copied by
+/// symmetry (MeshLoad::symmetric_source) the derivatives are its source's, pairs relabelled; they
+/// are reused when the source is found in the cycle (an earlier solved mesh on the same phase
+/// whose pairs, relabelled, are the copy's bit for bit), else differentiated.
 std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const CycleResult& cycle,
                                                 const std::vector<std::string>& parameters,
                                                 double temperature_MPa);
