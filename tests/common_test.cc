@@ -156,7 +156,8 @@ TEST(Cancel, AStudyAndASweepUnwindAndWriteNothing) {
   EXPECT_NO_THROW(camopt::studies::RunStudy(s, camopt::studies::RunContext("lcr_ii.json", true)));
   // A sweep of eight cases on two threads, cancelled from another thread while it runs.
   nlohmann::json base = camopt::testing::Example("cycloid_ltca_nnm_none.json");
-  base["analysis"] = {{"crank_angle_steps", 100}};  // about a second a case: running when cancelled
+  // 100 distinct phases (no angle repeats a phase): about a second a case, running when cancelled.
+  base["analysis"] = {{"crank_angles_per_mesh_period", 100}};
   camopt::testing::WriteFile(dir / "base.json", base.dump());
   nlohmann::json sweep = {{"sweep", "cancelled"},
                           {"base", "base.json"},

@@ -691,8 +691,9 @@ std::pair<int, std::string> RunAndSignal(const std::vector<std::string>& args, i
 TEST(Output, SigintAndSigtermStopTheRunRemoveTheTemporaryFolderAndExit130) {
   const auto dir = TempDir("interrupt");
   json s = Example("cycloid_ltca_nnm_none.json");
-  s["analysis"].erase("crank_angles_per_mesh_period");  // the example samples a mesh period
-  s["analysis"]["crank_angle_steps"] = 600;  // several seconds: certainly running after 1 s
+  // 600 distinct phases of one mesh period (a full turn's angles would repeat phases, which the
+  // LTCA solves once): several seconds, certainly running after 1 s.
+  s["analysis"]["crank_angles_per_mesh_period"] = 600;
   WriteFile(dir / "slow.json", s.dump());
   for (int sig : {SIGINT, SIGTERM}) {
     SCOPED_TRACE(sig);

@@ -61,8 +61,9 @@ class Interrupt(unittest.TestCase):
     def test_sigint_stops_study_run_within_a_second(self):
         d = helpers.temp_dir("py-int")
         s = helpers.example("cycloid_ltca_nnm_none.json")
-        s["analysis"].pop("crank_angles_per_mesh_period", None)
-        s["analysis"]["crank_angle_steps"] = 600  # tens of seconds: certainly running after 1 s
+        # 600 distinct phases of one mesh period (a full turn's angles would repeat phases, which
+        # the LTCA solves once): seconds, certainly running after 1 s
+        s["analysis"]["crank_angles_per_mesh_period"] = 600
         (d / "slow.json").write_text(json.dumps(s))
         out = d / "out"
         latency = run_and_interrupt(self, "study", d / "slow.json", out)
@@ -75,8 +76,7 @@ class Interrupt(unittest.TestCase):
     def test_an_existing_folder_is_left_as_it_was(self):
         d = helpers.temp_dir("py-int-old")
         s = helpers.example("cycloid_ltca_nnm_none.json")
-        s["analysis"].pop("crank_angles_per_mesh_period", None)
-        s["analysis"]["crank_angle_steps"] = 600
+        s["analysis"]["crank_angles_per_mesh_period"] = 600
         (d / "slow.json").write_text(json.dumps(s))
         out = d / "out"
         camopt.run(helpers.small_lcr_ii(), out=out)  # a previous result in the folder
@@ -91,7 +91,7 @@ class Interrupt(unittest.TestCase):
         sweep = {
             "sweep": "slow",
             "base": str(helpers.EXAMPLES / "cycloid_ltca_nnm_none.json"),
-            "set": {"/analysis": {"crank_angle_steps": 100}},
+            "set": {"/analysis": {"crank_angles_per_mesh_period": 100}},
             "vary": [{"path": "/load/torque_Nm", "values": [100, 200, 300, 400, 500, 600, 700, 800]}],
             "outputs": ["/max_contact_stress_MPa"],
         }
