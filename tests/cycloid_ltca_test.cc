@@ -30,12 +30,7 @@ LoadedOptions Coarse(int p = 16, int q = 16) {
   return o;
 }
 
-Crowning Log(double f) {
-  Crowning c;
-  c.type = CrowningType::kLogarithmic;
-  c.coefficient_mm = f;
-  return c;
-}
+Crowning Log(double f) { return testing::LogCrowning(f); }
 
 void ExpectFinite(const MeshLoad& m) {
   EXPECT_TRUE(std::isfinite(m.rotation_rad));

@@ -31,12 +31,7 @@ LoadedOptions Options(bool reuse) {
   return o;
 }
 
-Crowning Log(double f) {
-  Crowning c;
-  c.type = CrowningType::kLogarithmic;
-  c.coefficient_mm = f;
-  return c;
-}
+Crowning Log(double f) { return testing::LogCrowning(f); }
 
 std::map<int, const PairLoad*> ByRoller(const MeshLoad& m) {
   std::map<int, const PairLoad*> r;

@@ -45,6 +45,15 @@ inline objectives::LcrSizingSpec LcrIISizingSpec(
   return s;
 }
 
+/// Logarithmic (Lundberg) crowning of the cycloid's rollers with coefficient f [mm], the rest as
+/// the type's defaults.
+inline cycloid::Crowning LogCrowning(double coefficient_mm) {
+  cycloid::Crowning c;
+  c.type = cycloid::CrowningType::kLogarithmic;
+  c.coefficient_mm = coefficient_mm;
+  return c;
+}
+
 /// The cycloid load-distribution paper's example drive (Table 2: n2 = 15, n1 = 16, a = 90 mm,
 /// ρ = 7.2 mm, e = 4.5 mm, B = 17 mm) with its NNM profile modification (Table 3: Δa = −16 µm,
 /// Δρ = −8 µm), as cycloid_ltca_nnm_*.json.
