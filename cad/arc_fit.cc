@@ -324,6 +324,59 @@ FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const Fi
   return fit;
 }
 
+FittedCurve FitBiarcsSymmetric(const CurveFunction& curve, double t0, double t1, int symmetry,
+                               const Vec2<double>& centre, const FitOptions& o) {
+  const int s_order = symmetry;
+  if (s_order < 2) return FitBiarcs(curve, t0, t1, o);
+  const double period = (t1 - t0) / s_order;
+  // The turn of one period, from the first point: ±2π/S (which sign is the curve's).
+  const Vec2<double> a0 = curve(t0) - centre, a1 = curve(t0 + period) - centre;
+  const double turn = std::atan2(Cross(a0, a1), a0.dot(a1));
+  const double expected = 2 * kPi / s_order;
+  if (!(std::abs(std::abs(turn) - expected) < 1e-6 * expected)) return FitBiarcs(curve, t0, t1, o);
+  const double sign = turn > 0 ? 1.0 : -1.0;
+  std::vector<Vec2<double>> rotation(s_order);  // (cos, sin) of the turn of period j
+  for (int j = 0; j < s_order; ++j) {
+    const double angle = sign * expected * j;
+    rotation[j] = Vec2<double>(std::cos(angle), std::sin(angle));
+  }
+  auto turned = [&](const Vec2<double>& p, int j) {
+    const Vec2<double> d = p - centre, r = rotation[size_t(j)];
+    return Vec2<double>(centre.x() + r.x() * d.x() - r.y() * d.y(), centre.y() + r.y() * d.x() + r.x() * d.y());
+  };
+  // The symmetry checked at 16 points of every period (not at the period's ends, which the fit's
+  // ends are checked by: a copy's end is the next copy's start).
+  constexpr int kChecks = 16;
+  double mismatch = 0.0;
+  for (int k = 0; k < kChecks; ++k) {
+    const double s = period * (k + 0.5) / kChecks;
+    const Vec2<double> p = curve(t0 + s);
+    for (int j = 1; j < s_order; ++j) {
+      const double d = (curve(t0 + j * period + s) - turned(p, j)).norm();
+      if (!(d <= mismatch)) mismatch = d;  // NaN stays visible
+    }
+  }
+  if (!(mismatch <= 1e-3 * o.tolerance_mm)) return FitBiarcs(curve, t0, t1, o);
+  FitOptions one = o;
+  one.initial_segments = std::max(2, (o.initial_segments + s_order - 1) / s_order);
+  one.max_arcs = std::max(2, o.max_arcs / s_order);
+  FittedCurve fit = FitBiarcs(curve, t0, t0 + period, one);
+  const std::vector<ArcSegment> lobe = std::move(fit.arcs);
+  fit.arcs.clear();
+  fit.arcs.reserve(lobe.size() * size_t(s_order));
+  for (int j = 0; j < s_order; ++j)
+    for (const ArcSegment& a : lobe) fit.arcs.push_back({turned(a.start, j), turned(a.end, j), a.bulge});
+  // Connected to the bit: each period's last end point is the next period's first start point
+  // (they differ by the rounding of the turns), the last period's the chain's first.
+  for (int j = 1; j < s_order; ++j) fit.arcs[size_t(j) * lobe.size() - 1].end = fit.arcs[size_t(j) * lobe.size()].start;
+  fit.arcs.back().end = fit.arcs.front().start;
+  fit.symmetry = s_order;
+  fit.symmetry_error_mm = mismatch;
+  fit.checked_points += long(kChecks) * (s_order - 1);
+  fit.max_deviation_mm += mismatch;
+  return fit;
+}
+
 double MaxDistanceToChain(const CurveFunction& curve, double t0, double t1, int samples,
                           const std::vector<ArcSegment>& chain) {
   // Chain arcs are in parameter order: search a window around the last nearest arc, then

@@ -80,12 +80,29 @@ struct FittedCurve {
   double max_deviation_mm = 0.0;  ///< largest distance of a checked (or refined) exact point from the arcs
   long checked_points = 0;        ///< exact-curve points the deviation was measured on
   bool within_tolerance = true;   ///< false where max_depth or max_arcs stopped the halving
+  /// FitBiarcsSymmetric: the number of turned copies of one fitted period that make the chain (1:
+  /// the whole curve fitted), and the largest mismatch of the curve's symmetry found at its check
+  /// points [mm] (included in max_deviation_mm).
+  int symmetry = 1;
+  double symmetry_error_mm = 0.0;
 };
 
 /// Fits bi-arcs to curve(t), t ∈ [t0, t1]; a closed curve (curve(t1) = curve(t0)) gives a closed
 /// chain whose last end point is exactly its first start point. Tangents by central differences
 /// of the curve function.
 FittedCurve FitBiarcs(const CurveFunction& curve, double t0, double t1, const FitOptions& options);
+
+/// Fits a closed curve with S-fold rotational symmetry about `centre` (S = `symmetry`): advancing
+/// the parameter by T = (t1 − t0)/S turns the curve by ±2π/S about it. One period [t0, t0 + T] is
+/// fitted (FitBiarcs, options.initial_segments over the whole curve, divided among the periods)
+/// and the chain closed with S − 1 turned copies of its arcs, each period's last end point the
+/// next period's first start point. The symmetry is checked before: at 16 points of each other
+/// period against the first period's points turned; the largest mismatch is added to the reported
+/// deviation, and where it exceeds 1e-3 of the tolerance (or S < 2, or the turn is not ±2π/S) the
+/// whole curve is fitted instead (symmetry = 1 in the result). An LCR cam's profile, pitch curve
+/// and cutter path with rollers = lobes + 1 are `lobes`-fold symmetric (lcr/profile.h).
+FittedCurve FitBiarcsSymmetric(const CurveFunction& curve, double t0, double t1, int symmetry,
+                               const Vec2<double>& centre, const FitOptions& options);
 
 /// Largest distance from the exact curve, evaluated at `samples` uniform parameter values over
 /// [t0, t1], to the nearest arc of the chain (an independent, brute-force check of a fit).

@@ -515,6 +515,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     g.cam_name = "cycloid disc (modified profile)";
     g.profile = [d = s.drive](double t) { return ToothProfile<double>(d, t).point; };
     g.initial_segments = 8 * n1;
+    g.symmetry = s.drive.teeth;  // one tooth turned (eqs. 3–4 with z_c = z_d + 1: checked by the fit)
     g.thickness_mm = s.drive.face_width_mm;
     g.bore_diameter_mm = s.bore_diameter_mm;
     for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});

@@ -51,7 +51,7 @@ Fit FitCurve(const cad::CurveFunction& f, const PlanarCamGeometry& cam, double t
   o.initial_segments = cam.initial_segments;
   o.refine_share = kRefineShare;
   o.refine_points = kRefinePoints;
-  Fit fit{cad::FitBiarcs(f, cam.t0, cam.t1, o), 0.0};
+  Fit fit{cad::FitBiarcsSymmetric(f, cam.t0, cam.t1, cam.symmetry, cam.centre, o), 0.0};
   fit.deviation_mm = fit.curve.max_deviation_mm;
   return fit;
 }
@@ -73,7 +73,44 @@ struct SizeAndArea {
 // II cams it is within 5e-8 mm² of the closed form (the one polygon of 2^17 points it replaces was
 // 1e-4 mm² off, at 16 times the curve evaluations); a jump of the curvature (a motion-law junction
 // of a disc cam) leaves an error of order h³ Δκ per junction, about 1e-6 mm².
-SizeAndArea ClosedCurveSizeAndArea(const cad::CurveFunction& f, double t0, double t1) {
+//
+// With S-fold rotational symmetry about c (symmetry S > 1, PlanarCamGeometry::symmetry) the pass
+// covers one period with n = 4⌈2^13/(4S)⌉ points: its polygons' sectors about c (S times) are
+// the whole curve's polygons of S·n points, its points turned S times give the bounding box.
+SizeAndArea ClosedCurveSizeAndArea(const cad::CurveFunction& f, double t0, double t1, int symmetry,
+                                   const Vec2<double>& c) {
+  if (symmetry > 1) {
+    const int n = 4 * (((1 << 13) + 4 * symmetry - 1) / (4 * symmetry));
+    const double period = (t1 - t0) / symmetry;
+    std::vector<Vec2<double>> even;
+    even.reserve(size_t(n / 2));
+    double a[3] = {0.0, 0.0, 0.0};
+    const Vec2<double> first = f(t0) - c;
+    Vec2<double> prev[3] = {first, first, first};
+    for (int i = 0; i <= n; ++i) {
+      const Vec2<double> p = i == 0 ? first : Vec2<double>(f(t0 + period * i / n) - c);
+      if (i % 2 == 0 && i < n) even.push_back(p);
+      if (i == 0) continue;
+      for (int level = 0; level < 3; ++level) {
+        if (i % (1 << level) != 0) continue;
+        a[level] += 0.5 * Cross(prev[level], p);
+        prev[level] = p;
+      }
+    }
+    // The turn's sign does not matter for the box: all S turns of the period are taken.
+    double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+    for (int j = 0; j < symmetry; ++j) {
+      const double cs = std::cos(2 * kPi * j / symmetry), sn = std::sin(2 * kPi * j / symmetry);
+      for (const Vec2<double>& p : even) {
+        const double x = cs * p.x() - sn * p.y(), y = sn * p.x() + cs * p.y();
+        lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
+        lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+      }
+    }
+    for (double& v : a) v *= symmetry;
+    const double r1 = a[0] + (a[0] - a[1]) / 3.0, r1_half = a[1] + (a[1] - a[2]) / 3.0;
+    return {std::hypot(hi_x - lo_x, hi_y - lo_y), std::abs(r1 + (r1 - r1_half) / 15.0)};
+  }
   const int n = 1 << 13;
   double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
   double a[3] = {0.0, 0.0, 0.0};  // 2^13, 2^12, 2^11 points
@@ -154,7 +191,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   // profile's bounding box): the arcs, hence the solid's and the mesh's work, then stay those of a
   // part of ten metres at 1 µm, whatever the size.
   double tol_mm = options.dxf_tolerance_um * 1e-3;
-  const SizeAndArea exact = ClosedCurveSizeAndArea(cam.profile, cam.t0, cam.t1);
+  const SizeAndArea exact = ClosedCurveSizeAndArea(cam.profile, cam.t0, cam.t1, cam.symmetry, cam.centre);
   const double size = exact.size_mm;
   const bool raised = std::isfinite(size) && kMinRelativeTolerance * size > tol_mm;
   if (raised) tol_mm = kMinRelativeTolerance * size;
@@ -211,6 +248,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   j["dxf_deviation_check_points"] = f.checked_points;
   j["dxf_within_tolerance"] = f.max_deviation_mm <= tol_mm;
   j["profile_arcs"] = f.profile.arcs.size();
+  if (f.profile.symmetry > 1) j["profile_symmetry"] = f.profile.symmetry;
   j["profile_area_mm2"] = f.profile_area_mm2;
   f.solid = cam.thickness_mm > 0;
   if (f.solid && cad::ChainCrossesItself(f.profile.arcs)) {

@@ -75,6 +75,10 @@ struct PlanarCamGeometry {
   std::string cutter_note;    ///< why there is no cutter path layer
   double t0 = 0.0, t1 = 2 * kPi;
   int initial_segments = 64;
+  /// Rotational symmetry of the curves about `centre`: advancing t by (t1 − t0)/symmetry turns
+  /// every curve by ±2π/symmetry. Fits and size/area then evaluate one period (checked:
+  /// cad::FitBiarcsSymmetric); 1: none.
+  int symmetry = 1;
   Vec2<double> centre = Vec2<double>::Zero();  ///< cam axis
   std::vector<std::pair<Vec2<double>, double>> rollers;  ///< circles drawn on a ROLLERS layer
   double thickness_mm = 10.0;

@@ -102,6 +102,9 @@ PlanarCamGeometry CamGeometry(const Study& st, Side s) {
     g.cutter_note = "omitted: the cutter equals the roller, so its path is the pitch curve (layer PITCH_CURVE)";
   }
   g.initial_segments = 8 * c.rollers;
+  // With rollers = lobes + 1 the pitch factor k = rollers is whole and X(ψ + 2π/lobes) turns X(ψ)
+  // by 2π/lobes (profile.h: u(kψ + 2πk/lobes) = u(kψ + 2π + 2π/lobes)); so do its offsets.
+  if (c.rollers == c.lobes + 1) g.symmetry = c.lobes;
   g.thickness_mm = c.cam_thickness;
   g.bore_diameter_mm = input ? st.bore_diameter_input_mm : st.bore_diameter_output_mm;
   return g;

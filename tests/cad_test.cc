@@ -217,6 +217,63 @@ TEST(ArcFit, ChainCrossesItselfAgreesWithEveryPair) {
 // A sweep writes STEP files from several threads at once; OCCT's STEP translator keeps process-wide
 // state, and unguarded this failed in CI ("STEP transfer failed"). Every thread must get the same
 // file as a lone call and the closed-form volume of a 20 mm disc with a 6 mm bore, 5 mm thick.
+// An LCR pitch curve X(t) = A u(t) − B u(13t) (rollers 13, lobes 12) is 12-fold symmetric: one
+// period fitted and turned must be as close to the whole exact curve as the fit says, and a curve
+// that is not symmetric, or a wrong order, must be fitted whole.
+TEST(ArcFit, SymmetricFitTurnsOnePeriodAndChecksTheSymmetry) {
+  const double A = 37, B = 1.5, k = 13;
+  const cad::CurveFunction lcr = [&](double t) {
+    return Vec2<double>(A * std::cos(t) - B * std::cos(k * t), A * std::sin(t) - B * std::sin(k * t));
+  };
+  const cad::CurveFunction clockwise = [&](double t) { return lcr(-t); };
+  cad::FitOptions o;
+  o.tolerance_mm = 0.9e-3;
+  o.initial_segments = 104;
+  o.refine_share = 0.8;
+  o.refine_points = 16;
+  const cad::FittedCurve whole = cad::FitBiarcs(lcr, 0.0, 2 * kPi, o);
+  for (const cad::CurveFunction& curve : {lcr, clockwise}) {
+    const cad::FittedCurve fit = cad::FitBiarcsSymmetric(curve, 0.0, 2 * kPi, 12, Vec2<double>::Zero(), o);
+    EXPECT_EQ(fit.symmetry, 12);
+    ASSERT_EQ(fit.arcs.size() % 12, 0u);
+    EXPECT_TRUE(fit.within_tolerance);
+    EXPECT_LE(fit.max_deviation_mm, o.tolerance_mm);
+    EXPECT_LT(fit.symmetry_error_mm, 1e-12);
+    // Connected and closed to the bit, tangent-continuous across the periods' joints too.
+    for (size_t i = 0; i < fit.arcs.size(); ++i) {
+      const cad::ArcSegment &p = fit.arcs[i], &q = fit.arcs[(i + 1) % fit.arcs.size()];
+      EXPECT_EQ(p.end, q.start) << i;
+      EXPECT_NEAR(cad::TangentOnArc(p, 1.0).dot(cad::TangentOnArc(q, 0.0)), 1.0, 1e-9) << i;
+    }
+    // The reported deviation (measured on one period) is the largest over the whole curve: an
+    // independent check on 400 000 points of all twelve periods.
+    const double dense = cad::MaxDistanceToChain(curve, 0.0, 2 * kPi, 400000, fit.arcs);
+    EXPECT_LE(dense, fit.max_deviation_mm * (1 + 1e-6));
+    EXPECT_GE(dense, fit.max_deviation_mm * (1 - 1e-3));
+    std::printf("12-fold fit: %zu arcs, reported %.8f um, 400 000 points %.8f um; whole-curve fit %zu arcs, %.8f um; "
+                "check points %ld / %ld\n",
+                fit.arcs.size(), fit.max_deviation_mm * 1e3, dense * 1e3, whole.arcs.size(), whole.max_deviation_mm * 1e3,
+                fit.checked_points, whole.checked_points);
+    EXPECT_NEAR(cad::EnclosedArea(fit.arcs), cad::EnclosedArea(whole.arcs) * (curve(1e-3).y() > 0 ? 1 : -1),
+                2 * kPi * A * o.tolerance_mm);
+    // A twelfth of the curve evaluations, about.
+    EXPECT_LT(fit.checked_points, whole.checked_points / 6);
+  }
+  // 10 nm of asymmetry (above 1e-3 of the tolerance): the whole curve is fitted.
+  const cad::CurveFunction bumped = [&](double t) { return Vec2<double>(lcr(t) * (1 + 1e-5 / A * std::cos(t))); };
+  const cad::FittedCurve bumped_fit = cad::FitBiarcsSymmetric(bumped, 0.0, 2 * kPi, 12, Vec2<double>::Zero(), o);
+  EXPECT_EQ(bumped_fit.symmetry, 1);
+  EXPECT_EQ(bumped_fit.arcs.size(), cad::FitBiarcs(bumped, 0.0, 2 * kPi, o).arcs.size());
+  // A wrong order (a period's turn is not 2π/5), or a wrong centre: fitted whole, as FitBiarcs.
+  for (const auto& [order, centre] : {std::pair{5, Vec2<double>::Zero().eval()}, std::pair{12, Vec2<double>(0.5, 0.0)}}) {
+    const cad::FittedCurve f = cad::FitBiarcsSymmetric(lcr, 0.0, 2 * kPi, order, centre, o);
+    EXPECT_EQ(f.symmetry, 1) << order;
+    ASSERT_EQ(f.arcs.size(), whole.arcs.size()) << order;
+    EXPECT_EQ(f.arcs.front().start, whole.arcs.front().start);
+    EXPECT_EQ(f.max_deviation_mm, whole.max_deviation_mm);
+  }
+}
+
 TEST(StepSolid, ConcurrentWritersGiveTheSameFileAsOneWriter) {
   const double q = std::tan(kPi / 8);
   cad::Extrusion e;

@@ -222,12 +222,39 @@ inline CliResult RunCamopt(const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
 }
 
-/// A fresh temporary folder for one test.
+/// The folders TempDir made in this process, removed when it exits unless a test failed (kept to
+/// be looked at) or CAMOPT_KEEP_TEST_DIRS is set. Removal is best effort: it never throws.
+class TempDirRegistry {
+ public:
+  static TempDirRegistry& Get() {
+    static TempDirRegistry registry;
+    return registry;
+  }
+  void Add(const std::filesystem::path& dir) { dirs_.push_back(dir); }
+  ~TempDirRegistry() {
+    if (::getpid() != owner_ || std::getenv("CAMOPT_KEEP_TEST_DIRS") != nullptr) return;
+    if (::testing::UnitTest::GetInstance()->Failed()) return;
+    for (const auto& dir : dirs_) {
+      std::error_code ec;
+      std::filesystem::permissions(dir, std::filesystem::perms::owner_all,
+                                   std::filesystem::perm_options::add, ec);
+      std::filesystem::remove_all(dir, ec);
+    }
+  }
+
+ private:
+  TempDirRegistry() = default;
+  pid_t owner_ = ::getpid();
+  std::vector<std::filesystem::path> dirs_;
+};
+
+/// A fresh temporary folder for one test, removed when the test process ends (TempDirRegistry).
 inline std::filesystem::path TempDir(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() /
              ("camopt-test-" + std::to_string(::getpid()) + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  TempDirRegistry::Get().Add(dir);
   return dir;
 }
 
