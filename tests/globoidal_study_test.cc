@@ -138,12 +138,12 @@ TEST(GloboidalStudy, PaperExample) {
 }
 
 TEST(GloboidalStudy, PaperExampleThroughTheCli) {
-  const auto dir = TempDir("globoidal-paper");
+  const auto dir = TempDir("globoidal-paper") / "out";
   // The STL asked for as ASCII (binary is the default now; GeometryFiles tests check it).
   json file = Example();
   file["geometry_files"] = {{"stl_format", "ascii"}};
-  WriteFile(dir.parent_path() / (dir.filename().string() + ".json"), file.dump());
-  const auto res = RunCamopt("run " + (dir.parent_path() / (dir.filename().string() + ".json")).string() +
+  WriteFile(dir.parent_path() / "globoidal-paper.json", file.dump());
+  const auto res = RunCamopt("run " + (dir.parent_path() / "globoidal-paper.json").string() +
                              " --quiet --out " + dir.string());
   ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
   const json r = json::parse(ReadFile(dir / "result.json"));
