@@ -47,50 +47,56 @@ struct MotionSegment {
 };
 
 namespace internal {
-/// de Boor's algorithm: the B-spline of degree q with control values c (m + 1 of them) on the knots
-/// t (m + q + 2 of them, clamped) at u ∈ [0, 1]; 0 for q < 0 (a derivative beyond the degree).
+/// de Boor's algorithm: the B-spline of degree q with control values c[0 … m] on the knots
+/// t[0 … m + q + 1] (clamped) at u ∈ [0, 1]; 0 for q < 0 (a derivative beyond the degree).
 template <typename T>
-T DeBoor(const std::vector<T>& c, const std::vector<double>& t, int q, const T& u) {
-  if (q < 0 || c.empty()) return T(0.0);
-  const int m = int(c.size()) - 1;
+T DeBoor(const T* c, int count, const double* t, int q, const T& u) {
+  if (q < 0 || count == 0) return T(0.0);
+  const int m = count - 1;
   const double uv = std::clamp(Value(u), 0.0, 1.0);
   int k = q;  // the knot span: t_k <= u < t_{k+1}, q <= k <= m
-  while (k < m && t[size_t(k + 1)] <= uv) ++k;
-  std::vector<T> d(size_t(q) + 1);
-  for (int j = 0; j <= q; ++j) d[size_t(j)] = c[size_t(j + k - q)];
+  while (k < m && t[k + 1] <= uv) ++k;
+  T d_small[8];
+  std::vector<T> d_heap;
+  T* d = q < 8 ? d_small : (d_heap.resize(size_t(q) + 1), d_heap.data());
+  for (int j = 0; j <= q; ++j) d[j] = c[j + k - q];
   for (int r = 1; r <= q; ++r)
     for (int j = q; j >= r; --j) {
-      const double lo = t[size_t(j + k - q)], hi = t[size_t(j + 1 + k - r)];
+      const double lo = t[j + k - q], hi = t[j + 1 + k - r];
       const T alpha = (u - T(lo)) / T(hi - lo);
-      d[size_t(j)] = (T(1.0) - alpha) * d[size_t(j - 1)] + alpha * d[size_t(j)];
+      d[j] = (T(1.0) - alpha) * d[j - 1] + alpha * d[j];
     }
-  return d[size_t(q)];
+  return d[q];
 }
 
-/// The clamped knot vector of n + 1 control values and degree p on [0, 1] (uniform inside).
-inline std::vector<double> ClampedKnots(int n, int p) {
-  std::vector<double> t(size_t(n + p + 2));
-  for (int i = 0; i <= n + p + 1; ++i)
-    t[size_t(i)] = i <= p ? 0.0 : i > n ? 1.0 : double(i - p) / double(n - p + 1);
-  return t;
-}
-
-/// The value and the first three u-derivatives of a B-spline segment's shape.
+/// The value and the first three u-derivatives of a B-spline segment's shape. The derivative's
+/// control values (Piegl & Tiller eq. 3.8) overwrite the segment's in place, on the inner knots
+/// t_1 … t_{m+q}; no allocation (a cam profile evaluates this at every point).
 template <typename T>
 Svaj<T> BSplineShape(const std::vector<T>& control, int degree, const T& u) {
-  std::vector<T> c = control;
-  std::vector<double> t = ClampedKnots(int(control.size()) - 1, degree);
+  const int n = int(control.size());
+  // Up to 32 control values on the stack, more on the heap (the same arithmetic either way).
+  constexpr int kSmall = 32;
+  T c_small[kSmall];
+  double t_small[kSmall + 8];
+  std::vector<T> c_heap;
+  std::vector<double> t_heap;
+  const bool small = n <= kSmall && degree <= 7;
+  if (!small) c_heap.resize(size_t(n)), t_heap.resize(size_t(n + degree + 1));
+  T* c = small ? c_small : c_heap.data();
+  double* t = small ? t_small : t_heap.data();
+  for (int i = 0; i < n; ++i) c[i] = control[size_t(i)];
+  for (int i = 0; i <= n + degree; ++i)  // clamped, uniform inside
+    t[i] = i <= degree ? 0.0 : i > n - 1 ? 1.0 : double(i - degree) / double(n - 1 - degree + 1);
+  int count = n;
   T out[4] = {T(0.0), T(0.0), T(0.0), T(0.0)};
   for (int order = 0; order < 4; ++order) {
     const int q = degree - order;
-    out[order] = DeBoor(c, t, q, u);
+    out[order] = DeBoor(c, count, t, q, u);
     if (q <= 0) break;  // the higher derivatives are 0
-    // The derivative's control values, on the inner knots t_1 … t_{m+q}.
-    std::vector<T> dc(c.size() - 1);
-    for (size_t i = 0; i + 1 < c.size(); ++i)
-      dc[i] = T(double(q)) * (c[i + 1] - c[i]) / T(t[i + size_t(q) + 1] - t[i + 1]);
-    c = std::move(dc);
-    t = std::vector<double>(t.begin() + 1, t.end() - 1);
+    for (int i = 0; i + 1 < count; ++i) c[i] = T(double(q)) * (c[i + 1] - c[i]) / T(t[i + q + 1] - t[i + 1]);
+    --count;
+    ++t;
   }
   return {out[0], out[1], out[2], out[3]};
 }
