@@ -14,6 +14,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -213,20 +214,27 @@ std::string NotReplaceable(const fs::path& dir) {
 void RemoveStaleTemporaries(const fs::path& dir) {
   const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
   const std::string stem = dir.filename().string();
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(parent, ec)) {
-    const std::string name = entry.path().filename().string();
+  // readdir and a compare of the raw names: a results folder beside thousands of others (a
+  // sweep's, a shared /tmp) is listed at a few instructions per entry, not a path object each.
+  DIR* d = opendir(parent.c_str());
+  if (d == nullptr) return;
+  std::vector<std::string> stale;
+  while (const dirent* e = readdir(d)) {
+    const char* name = e->d_name;
+    if (std::strncmp(name, stem.data(), stem.size()) != 0) continue;
     for (const char* tag : {".camopt-tmp-", ".camopt-old-"}) {
-      const std::string prefix = stem + tag;
-      if (name.rfind(prefix, 0) != 0) continue;
-      const std::string digits = name.substr(prefix.size());
+      const size_t tag_size = std::strlen(tag);
+      if (std::strncmp(name + stem.size(), tag, tag_size) != 0) continue;
+      const std::string digits = name + stem.size() + tag_size;
       if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
       const pid_t pid = static_cast<pid_t>(std::stol(digits));
-      if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) {
-        std::error_code rm;
-        fs::remove_all(entry.path(), rm);
-      }
+      if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) stale.emplace_back(name);
     }
+  }
+  closedir(d);
+  for (const std::string& name : stale) {
+    std::error_code rm;
+    fs::remove_all(parent / name, rm);
   }
 }
 
