@@ -78,52 +78,20 @@ struct SizeAndArea {
 // covers one period with n = 4⌈2^13/(4S)⌉ points: its polygons' sectors about c (S times) are
 // the whole curve's polygons of S·n points, its points turned S times give the bounding box.
 SizeAndArea ClosedCurveSizeAndArea(const cad::CurveFunction& f, double t0, double t1, int symmetry,
-                                   const Vec2<double>& c) {
-  if (symmetry > 1) {
-    const int n = 4 * (((1 << 13) + 4 * symmetry - 1) / (4 * symmetry));
-    const double period = (t1 - t0) / symmetry;
-    std::vector<Vec2<double>> even;
-    even.reserve(size_t(n / 2));
-    double a[3] = {0.0, 0.0, 0.0};
-    const Vec2<double> first = f(t0) - c;
-    Vec2<double> prev[3] = {first, first, first};
-    for (int i = 0; i <= n; ++i) {
-      const Vec2<double> p = i == 0 ? first : Vec2<double>(f(t0 + period * i / n) - c);
-      if (i % 2 == 0 && i < n) even.push_back(p);
-      if (i == 0) continue;
-      for (int level = 0; level < 3; ++level) {
-        if (i % (1 << level) != 0) continue;
-        a[level] += 0.5 * Cross(prev[level], p);
-        prev[level] = p;
-      }
-    }
-    // The turn's sign does not matter for the box: all S turns of the period are taken.
-    double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
-    for (int j = 0; j < symmetry; ++j) {
-      const double cs = std::cos(2 * kPi * j / symmetry), sn = std::sin(2 * kPi * j / symmetry);
-      for (const Vec2<double>& p : even) {
-        const double x = cs * p.x() - sn * p.y(), y = sn * p.x() + cs * p.y();
-        lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
-        lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
-      }
-    }
-    for (double& v : a) v *= symmetry;
-    const double r1 = a[0] + (a[0] - a[1]) / 3.0, r1_half = a[1] + (a[1] - a[2]) / 3.0;
-    return {std::hypot(hi_x - lo_x, hi_y - lo_y), std::abs(r1 + (r1 - r1_half) / 15.0)};
-  }
-  const int n = 1 << 13;
-  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
-  double a[3] = {0.0, 0.0, 0.0};  // 2^13, 2^12, 2^11 points
-  const Vec2<double> first = f(t0);
+                                   const Vec2<double>& centre) {
+  const int s = std::max(1, symmetry);
+  // Without symmetry about the origin: the points as evaluated (c = 0, n = 2^13, no turn).
+  const Vec2<double> c = s > 1 ? centre : Vec2<double>::Zero().eval();
+  const int n = 4 * (((1 << 13) + 4 * s - 1) / (4 * s));
+  const double period = (t1 - t0) / s;
+  std::vector<Vec2<double>> even;
+  even.reserve(size_t(n / 2));
+  double a[3] = {0.0, 0.0, 0.0};  // n, n/2, n/4 points
+  const Vec2<double> first = f(t0) - c;
   Vec2<double> prev[3] = {first, first, first};
   for (int i = 0; i <= n; ++i) {
-    const Vec2<double> p = i == 0 ? first : f(t0 + (t1 - t0) * i / n);
-    if (i % 2 == 0 && i < n) {
-      lo_x = std::min(lo_x, p.x());
-      hi_x = std::max(hi_x, p.x());
-      lo_y = std::min(lo_y, p.y());
-      hi_y = std::max(hi_y, p.y());
-    }
+    const Vec2<double> p = i == 0 ? first : Vec2<double>(f(t0 + period * i / n) - c);
+    if (i % 2 == 0 && i < n) even.push_back(p);
     if (i == 0) continue;
     for (int level = 0; level < 3; ++level) {
       if (i % (1 << level) != 0) continue;
@@ -131,6 +99,19 @@ SizeAndArea ClosedCurveSizeAndArea(const cad::CurveFunction& f, double t0, doubl
       prev[level] = p;
     }
   }
+  // The box of the period's points turned S times (the turn's sign does not matter: all S are
+  // taken); S = 1: the points themselves (cos 0 = 1, sin 0 = 0 leave them exact).
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (int j = 0; j < s; ++j) {
+    const double cs = std::cos(2 * kPi * j / s), sn = std::sin(2 * kPi * j / s);
+    for (const Vec2<double>& p : even) {
+      const double x = j == 0 ? p.x() : cs * p.x() - sn * p.y(), y = j == 0 ? p.y() : sn * p.x() + cs * p.y();
+      lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
+      lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+    }
+  }
+  if (s > 1)
+    for (double& v : a) v *= s;
   const double r1 = a[0] + (a[0] - a[1]) / 3.0, r1_half = a[1] + (a[1] - a[2]) / 3.0;
   return {std::hypot(hi_x - lo_x, hi_y - lo_y), std::abs(r1 + (r1 - r1_half) / 15.0)};
 }
