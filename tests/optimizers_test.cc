@@ -11,6 +11,7 @@
 #include "model/lcr/profile.h"
 #include "optimizers/cancel.h"
 #include "optimizers/ceres_fit.h"
+#include "optimizers/mumps_save_size.h"
 #include "optimizers/solver.h"
 #include "tests/optim_reference_problems.h"
 
@@ -208,6 +209,19 @@ TEST(Optimizers, GradientBackendsUseFarFewerEvaluationsThanCobyla) {
   EXPECT_GT(ipopt.gradient_evaluations, 0);
   EXPECT_EQ(cobyla.gradient_evaluations, 0);
   EXPECT_LT(ipopt.value_evaluations + ipopt.gradient_evaluations, cobyla.value_evaluations);
+}
+
+// MUMPS 5.3–5.x under Ipopt: its after-every-call size-of-a-save bookkeeping is replaced by the
+// program's no-op, bound for libdmumps too (optimizers/mumps_save_size.cc); Ipopt still solves.
+TEST(Optimizers, MumpsSaveSizeBookkeepingIsSkippedWhereConfigured) {
+#ifdef CAMOPT_EXPECT_MUMPS_SAVE_SIZE_OFF
+  EXPECT_TRUE(optimizers::MumpsSaveSizeSkipped());
+#else
+  EXPECT_FALSE(optimizers::MumpsSaveSizeSkipped());
+#endif
+  optimizers::SolverOptions opt;
+  opt.backend = "ipopt";
+  EXPECT_NEAR(optimizers::Solve(testing::Hs71(), opt).objective, testing::kHs71Optimum, 1e-6);
 }
 
 TEST(Optimizers, UnknownBackendIsAnError) {
