@@ -160,6 +160,28 @@ S FarLog(const S& offset, const S& width) {
   return S(kPi / 4) * log(far / near);
 }
 
+/// The SmoothIntegral terms of one loaded slice's column of influence coefficients on slices of
+/// equal width w: edge[m] = SmoothIntegral(b / ((m + ½) w)), m = 0 … count − 1. The slice m away
+/// has its near edge at (m − ½) w and its far edge at (m + ½) w, so its near term is the far term
+/// of the slice m − 1 away: one quadrature per distance instead of two per slice (the self term's
+/// is edge[0]).
+template <typename S>
+void EdgeIntegrals(const S& b, double w, int count, std::vector<S>& edge) {
+  edge.resize(size_t(count));
+  for (int m = 0; m < count; ++m) edge[size_t(m)] = SmoothIntegral(S(b / S((m + 0.5) * w)));
+}
+
+/// Influence of a slice of width w and half-width b on the slice m = |i − j| slices away, from
+/// its column's EdgeIntegrals and FarLog (Influence's formula with d = m w).
+template <typename S>
+S InfluenceFromEdges(int m, double w, const S& b, double e_star, const S& far_log, const std::vector<S>& edge) {
+  using std::log;
+  const double scale = 4.0 / (kPi * kPi * e_star);
+  if (m == 0)  // self: 2[(π/4) ln(w/(2b)) + (π/8)(1 + 2 ln 2) + J(w/2)]
+    return S(2.0 * scale) * (S(kPi / 4) * log(S(0.5 * w) / b) + S(kPi / 8 * (1 + 2 * std::log(2.0))) + edge[0]);
+  return S(scale) * (far_log + edge[size_t(m)] - edge[size_t(m - 1)]);
+}
+
 /// Influence with its FarLog term given (FarLog of the same offset and width): the same
 /// arithmetic, so the same number; the solver's fills of one solve share the term.
 template <typename S>
@@ -275,11 +297,15 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) far_log(i, j) = slices_detail::FarLog(y[i] - y[j], w);
   std::vector<J1> far_log1;  // on the first Jacobian
+  // Slice j's column from its edge terms (slices_detail::EdgeIntegrals): slice i is |i − j| away.
+  std::vector<double> edge;
   const auto fill = [&] {
     for (int j = 0; j < n; ++j) b[j] = HalfWidth(q[j], q_floor, rp, e_star);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        c(i, j) = slices_detail::InfluenceWithFarLog(y[i] - y[j], w, b[j], e_star, far_log(i, j));
+    for (int j = 0; j < n; ++j) {
+      slices_detail::EdgeIntegrals(b[j], w, std::max(j, n - 1 - j) + 1, edge);
+      for (int i = 0; i < n; ++i)
+        c(i, j) = slices_detail::InfluenceFromEdges(std::abs(i - j), w, b[j], e_star, far_log(i, j), edge);
+    }
   };
   const auto solve_active_set = [&] {
     for (int pass = 0; pass < 4 * n + 10; ++pass) {
@@ -339,12 +365,15 @@ SliceSolution<T> SolveRollerSlices(const T& force, const T& r_eff, const T& leng
       for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) far_log1[size_t(i) * n + j] = slices_detail::FarLog(J1(y[i] - y[j]), J1(w));
     }
+    std::vector<J1> edge1;
     for (int s = 0; s < m; ++s) {
       const int j = a[s];
       const double dbdq = 2.0 * rp / (kPi * e_star * b[j]);
+      const J1 bj(b[j], 0);
+      slices_detail::EdgeIntegrals(bj, w, std::max(j - a.front(), a.back() - j) + 1, edge1);
       for (int r = 0; r < m; ++r) {
-        const J1 cj = slices_detail::InfluenceWithFarLog(J1(y[a[r]] - y[j]), J1(w), J1(b[j], 0), e_star,
-                                                         far_log1[size_t(a[r]) * n + j]);
+        const J1 cj = slices_detail::InfluenceFromEdges(std::abs(a[r] - j), w, bj, e_star,
+                                                        far_log1[size_t(a[r]) * n + j], edge1);
         jac(r, s) = cj.a + q[j] * cj.v[0] * dbdq;
       }
       jac(m, s) = w;
