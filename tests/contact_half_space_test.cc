@@ -131,6 +131,10 @@ TEST(ContactDisplacement, RateByCellHeightMatchesCentralDifferencesOfTheDirectSu
 
 // ---- CG against the dense reference --------------------------------------------------------
 
+// The recorded FFT plans (model/contact/fft_wisdom.inc) are accepted by this FFTW; the test below
+// then solves through them (40 × 40 is one of the recorded shapes) against the dense reference.
+TEST(ContactSolver, RecordedFftPlansAreImported) { EXPECT_TRUE(FftWisdomImported()); }
+
 TEST(ContactSolver, DenseAndCgAgreeOn40x40) {
   const Grid g = HertzGrid(40);
   const auto h = SphereGap(g, 10.0);

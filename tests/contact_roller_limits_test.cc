@@ -140,6 +140,37 @@ TEST(RollerContact, CircularCrownIsHertzEllipticalInBothFidelitiesAsTheResolutio
   EXPECT_LT(std::abs(hs[2] / hs[1] - 1), 0.005);
 }
 
+// The solver's columns (one SmoothIntegral per distance, edges at (m ± 1/2) w) against Influence
+// per entry, whose edges are |y_i - y_j| ± w/2: the same coefficients up to the rounding of the
+// edge positions, over half-widths from the series branch (b/far < 0.15) to past the split (b/near
+// > 1), in double and in Jet<1> (the Newton Jacobian's derivative in b).
+TEST(RollerSlices, ColumnFromEdgeIntegralsEqualsInfluencePerEntry) {
+  constexpr double kRelTol = 1e-13;
+  using J1 = ceres::Jet<double, 1>;
+  const int n = 20;
+  const double w = 0.5;
+  for (double b : {0.01, 0.06, 0.2, 0.3, 0.9}) {
+    std::vector<double> edge;
+    std::vector<J1> edge1;
+    for (int j : {0, 7, n - 1}) {
+      const int count = std::max(j, n - 1 - j) + 1;
+      slices_detail::EdgeIntegrals(b, w, count, edge);
+      slices_detail::EdgeIntegrals(J1(b, 0), w, count, edge1);
+      for (int i = 0; i < n; ++i) {
+        const double offset = (i - j) * w;
+        const double ref = slices_detail::Influence(offset, w, b, kEStar);
+        const J1 ref1 = slices_detail::Influence(J1(offset), J1(w), J1(b, 0), kEStar);
+        const double far_log = slices_detail::FarLog(offset, w);
+        const double c = slices_detail::InfluenceFromEdges(std::abs(i - j), w, b, kEStar, far_log, edge);
+        const J1 c1 = slices_detail::InfluenceFromEdges(std::abs(i - j), w, J1(b, 0), kEStar, J1(far_log), edge1);
+        EXPECT_NEAR(c, ref, kRelTol * std::abs(ref)) << b << " " << i << " " << j;
+        EXPECT_NEAR(c1.a, ref1.a, kRelTol * std::abs(ref1.a)) << b << " " << i << " " << j;
+        EXPECT_NEAR(c1.v[0], ref1.v[0], kRelTol * std::abs(ref1.v[0]) + 1e-300) << b << " " << i << " " << j;
+      }
+    }
+  }
+}
+
 TEST(RollerContact, LogarithmicCrownDesignFormula) {
   // R' 5, l 20, F 10 kN (l/b = 120). (1) The coefficient: the gap that lets a uniform line load
   // q = F/l close the contact is u(0) − u(y), u from the model's own influence operator (400

@@ -10,6 +10,7 @@
 // model, the cost and the cell-size dependence of edge peaks.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -155,6 +156,20 @@ ContactSolution SolveDenseForApproach(const Grid& grid, const std::vector<double
 /// The lock every FFTW planner call in the process must hold (FFTW's planner is not thread-safe;
 /// executing a plan is). The solver takes it for its own planning; other FFTW users should too.
 std::mutex& FftwPlannerMutex();
+
+/// The contact convolutions' FFT plans: FFTW_PATIENT plans of the grid shapes a study uses most
+/// (model/contact/fft_wisdom.inc, recorded by `camopt_fft_wisdom` on the reference machine) are
+/// imported as FFTW wisdom before the first plan, and FFTW_ESTIMATE planning takes them where they
+/// apply: the same plans in every run (results byte-identical run to run), 13–20 % less time per
+/// cycloid LTCA cycle (docs/performance.md "FFT plans"). Where they do not apply (another CPU or
+/// FFTW, another shape) FFTW drops them and plans by its estimate, as without them.
+/// True when FFTW accepted the wisdom text.
+bool FftWisdomImported();
+
+/// FFTW_PATIENT plans of the convolutions of these grid shapes (cells nx, ny), from no wisdom, as
+/// FFTW wisdom text: what model/contact/fft_wisdom.inc holds (`camopt_fft_wisdom`). Minutes for
+/// large shapes; the process keeps the plans.
+std::string PlanFftWisdom(const std::vector<std::array<int, 2>>& shapes);
 
 /// Surface normal displacement at every cell centre from a pressure field (the convolution).
 std::vector<double> Displacement(const Grid& grid, const std::vector<double>& pressure_MPa,
