@@ -160,6 +160,17 @@ S FarLog(const S& offset, const S& width) {
   return S(kPi / 4) * log(far / near);
 }
 
+/// 4 / (π² E*): the factor of every influence coefficient.
+inline double InfluenceScale(double e_star) { return 4.0 / (kPi * kPi * e_star); }
+
+/// A slice's influence on itself, 2[(π/4) ln(w/(2b)) + (π/8)(1 + 2 ln 2) + J(w/2)] times the scale,
+/// from half = w/2 and smooth = SmoothIntegral(b / half).
+template <typename S>
+S SelfInfluence(const S& half, const S& b, double scale, const S& smooth) {
+  using std::log;
+  return S(2.0 * scale) * (S(kPi / 4) * log(half / b) + S(kPi / 8 * (1 + 2 * std::log(2.0))) + smooth);
+}
+
 /// The SmoothIntegral terms of one loaded slice's column of influence coefficients on slices of
 /// equal width w: edge[m] = SmoothIntegral(b / ((m + ½) w)), m = 0 … count − 1. The slice m away
 /// has its near edge at (m − ½) w and its far edge at (m + ½) w, so its near term is the far term
@@ -175,10 +186,8 @@ void EdgeIntegrals(const S& b, double w, int count, std::vector<S>& edge) {
 /// its column's EdgeIntegrals and FarLog (Influence's formula with d = m w).
 template <typename S>
 S InfluenceFromEdges(int m, double w, const S& b, double e_star, const S& far_log, const std::vector<S>& edge) {
-  using std::log;
-  const double scale = 4.0 / (kPi * kPi * e_star);
-  if (m == 0)  // self: 2[(π/4) ln(w/(2b)) + (π/8)(1 + 2 ln 2) + J(w/2)]
-    return S(2.0 * scale) * (S(kPi / 4) * log(S(0.5 * w) / b) + S(kPi / 8 * (1 + 2 * std::log(2.0))) + edge[0]);
+  const double scale = InfluenceScale(e_star);
+  if (m == 0) return SelfInfluence(S(0.5 * w), b, scale, edge[0]);
   return S(scale) * (far_log + edge[size_t(m)] - edge[size_t(m - 1)]);
 }
 
@@ -187,13 +196,11 @@ S InfluenceFromEdges(int m, double w, const S& b, double e_star, const S& far_lo
 template <typename S>
 S InfluenceWithFarLog(const S& offset, const S& width, const S& b, double e_star, const S& far_log) {
   using std::abs;
-  using std::log;
-  const double scale = 4.0 / (kPi * kPi * e_star);
+  const double scale = InfluenceScale(e_star);
   const S d = abs(offset);
-  if (Value(d) < 0.5 * Value(width)) {  // self: 2[(π/4) ln(w/(2b)) + (π/8)(1 + 2 ln 2) + J(w/2)]
+  if (Value(d) < 0.5 * Value(width)) {  // self
     const S half = S(0.5) * width;
-    return S(2.0 * scale) * (S(kPi / 4) * log(half / b) + S(kPi / 8 * (1 + 2 * std::log(2.0))) +
-                             SmoothIntegral(S(b / half)));
+    return SelfInfluence(half, b, scale, SmoothIntegral(S(b / half)));
   }
   const S near = d - S(0.5) * width, far = d + S(0.5) * width;
   return S(scale) * (far_log + SmoothIntegral(S(b / far)) - SmoothIntegral(S(b / near)));
