@@ -46,6 +46,7 @@ class CrowningEvaluator final : public Evaluator {
   void DoEvalWithJacobian(std::span<const double>, std::span<double>, std::span<double>) const override {
     throw std::logic_error("the cycloid crowning problem is value-only (use a derivative-free solver)");
   }
+  bool has_jacobian() const override { return false; }
 
  private:
   CycloidCrowningModel& model_;

@@ -59,6 +59,9 @@ class Evaluator {
   /// jacobian has num_outputs() * num_vars() entries, row-major.
   void EvalWithJacobian(std::span<const double> x, std::span<double> y,
                         std::span<double> jacobian) const;
+  /// false for a value-only evaluator (a derivative-free solver drives it; EvalWithJacobian
+  /// throws): first-order checks then difference its values (optimizers/first_order.h).
+  virtual bool has_jacobian() const { return true; }
 
  protected:
   virtual void DoEval(std::span<const double> x, std::span<double> y) const = 0;

@@ -52,7 +52,27 @@ FirstOrderCheck CheckFirstOrder(const objectives::Problem& p, std::span<const do
   const int n = p.num_vars();
   const int m = p.evaluator->num_outputs();
   std::vector<double> y(static_cast<size_t>(m)), jac(static_cast<size_t>(m) * static_cast<size_t>(n));
-  p.evaluator->EvalWithJacobian(x, y, jac);
+  if (p.evaluator->has_jacobian()) {
+    p.evaluator->EvalWithJacobian(x, y, jac);
+  } else {
+    // A value-only evaluator (its solver is derivative-free): central differences of its values,
+    // one-sided at a bound, step cbrt(eps) max(1, |x_j|) kept inside the box.
+    p.evaluator->Eval(x, y);
+    std::vector<double> xp(x.begin(), x.end()), yp(static_cast<size_t>(m)), ym(static_cast<size_t>(m));
+    for (int j = 0; j < n; ++j) {
+      const objectives::Variable& v = p.variables[size_t(j)];
+      const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[size_t(j)]));
+      const double up = std::min(x[size_t(j)] + h, v.upper), down = std::max(x[size_t(j)] - h, v.lower);
+      if (!(up > down)) continue;
+      xp[size_t(j)] = up;
+      p.evaluator->Eval(xp, yp);
+      xp[size_t(j)] = down;
+      p.evaluator->Eval(xp, ym);
+      xp[size_t(j)] = x[size_t(j)];
+      for (int i = 0; i < m; ++i)
+        jac[size_t(i) * size_t(n) + size_t(j)] = (yp[size_t(i)] - ym[size_t(i)]) / (up - down);
+    }
+  }
   for (double v : jac)
     if (!std::isfinite(v)) {
       out.residual = std::numeric_limits<double>::quiet_NaN();

@@ -316,6 +316,7 @@ struct Result {
   std::string kind;
   py::object verdict = py::none();
   bool limits_met = true;
+  std::string status;  ///< result.json's "status" (studies/status.h), "" for a sweep
   py::list headlines;
   py::dict result, tables;
   py::list files, warnings;
@@ -336,7 +337,8 @@ Result MakeResult(const json& study, std::map<std::string, std::string> files, c
       for (const auto& w : rj["warnings"]) r.warnings.append(w.is_string() ? w.get<std::string>() : w.dump());
     if (!r.kind.empty()) {
       const st::HeadlineTable table = st::EvaluateHeadlines(r.kind, study, rj);
-      r.verdict = py::str(st::VerdictLine(table));
+      r.verdict = py::str(st::VerdictOf(table, rj));
+      if (rj.contains("status") && rj["status"].is_string()) r.status = rj["status"].get<std::string>();
       r.limits_met = table.exceeded.empty() && !table.no_design;
       const std::vector<st::Headline>* declared = st::FindHeadlines(r.kind);
       for (const st::HeadlineRow& row : table.rows) {
@@ -545,6 +547,9 @@ PYBIND11_MODULE(camopt, m) {
       .def_readonly("kind", &Result::kind)
       .def_readonly("verdict", &Result::verdict)
       .def_readonly("limits_met", &Result::limits_met)
+      .def_readonly("status", &Result::status,
+                    "the answer's one status (result.json \"status\"): optimal_verified, feasible_verified, "
+                    "infeasible, not_verifiable, not_converged, limits_met or limits_exceeded")
       .def_readonly("headlines", &Result::headlines)
       .def_readonly("result", &Result::result)
       .def_readonly("tables", &Result::tables)

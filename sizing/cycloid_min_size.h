@@ -73,6 +73,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -86,6 +87,7 @@
 #include "objectives/problem.h"
 #include "objectives/verification.h"
 #include "optimizers/solver.h"
+#include "sizing/limit_slope.h"
 
 namespace camopt::objectives {
 
@@ -302,6 +304,11 @@ struct CycloidMinSizeOptions {
   int starts = 2;                     ///< starting points: the variables' own, then box points
   int verify_rounds = 3;              ///< tightening rounds of the verified-optimum loop
   std::function<void(double fraction, const std::string& stage)> progress;
+  /// Each binding limit's cost re-solved at the limit ± 1% (CycloidMinSizeOutcome::limit_slope).
+  bool re_solve_limit_costs = true;
+  /// The fast limits to start from (a re-solve starts from the answer's tightened ones); absent:
+  /// the study's.
+  std::optional<CycloidFastLimits> fast_start;
 };
 
 struct CycloidMinSizeOutcome {
@@ -316,6 +323,11 @@ struct CycloidMinSizeOutcome {
   /// Limits that bind at the optimum (study limit key → d(objective)/d(limit), in the objective's
   /// unit per unit of the limit), from the KKT multipliers of the active rows.
   std::map<std::string, double> limit_cost;
+  /// |∇f − Σ λ ∇g| / |∇f| of those multipliers (0 at an exact KKT point; NaN: none computed).
+  double limit_cost_residual = std::numeric_limits<double>::quiet_NaN();
+  /// The same limits' costs from verified re-solves at the limit ± 1% from the answer (sizing/
+  /// limit_slope.h): central where both sides solve, one-sided otherwise, kinks flagged.
+  std::map<std::string, LimitSlope> limit_slope;
   std::vector<optimizers::SolverResult> starts;   ///< each start's solve in the first round
   int evaluations = 0, gradient_evaluations = 0;
   double value_seconds = 0, gradient_seconds = 0, verification_seconds = 0;

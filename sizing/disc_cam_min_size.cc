@@ -584,9 +584,10 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
         if (key == "radius_margin_mm") moved.limits.radius_margin_shift_mm += d;
         rb[side] = verified_objective(moved, f);
       }
-      if (std::isfinite(rb[0]) && std::isfinite(rb[1])) out.limit_cost[key] = (rb[1] - rb[0]) / (2 * h);
-      else if (std::isfinite(rb[1])) out.limit_cost[key] = (rb[1] - out.result.objective) / h;
-      else if (std::isfinite(rb[0])) out.limit_cost[key] = (out.result.objective - rb[0]) / h;
+      const LimitSlope slope = SlopeFromReSolves(rb[0], out.result.objective, rb[1], h,
+                                                 10 * options.solver.tolerance * std::max(std::abs(out.result.objective), 1.0));
+      out.limit_slope[key] = slope;
+      if (!slope.sides.empty()) out.limit_cost[key] = slope.slope;
     }
   }
   out.result.value_evaluations = values;

@@ -57,6 +57,7 @@
 #include "objectives/problem.h"
 #include "objectives/verification.h"
 #include "optimizers/solver.h"
+#include "sizing/limit_slope.h"
 
 namespace camopt::objectives {
 
@@ -170,6 +171,8 @@ struct DiscCamMinSizeOutcome {
   /// re-solve verified and tightened as the answer was (the sampled rows' bias moves with the limit).
   std::vector<std::string> binding;
   std::map<std::string, double> limit_cost;
+  /// The same re-solves with both sides kept (sizing/limit_slope.h): limit_cost is their slope.
+  std::map<std::string, LimitSlope> limit_slope;
   std::vector<optimizers::SolverResult> starts;  ///< each start's first solve
   int rounds = 0;                                ///< solves after the first (tightening rounds)
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "model/lcr/forces.h"
@@ -233,6 +234,14 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
 std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                                const LcrMinSizeOutcome& outcome) {
   std::map<std::string, double> out;
+  for (const auto& [key, s] : LimitSlopes(spec, options, outcome))
+    if (!s.sides.empty()) out[key] = s.slope;
+  return out;
+}
+
+std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                              const LcrMinSizeOutcome& outcome) {
+  std::map<std::string, LimitSlope> out;
   if (!outcome.converged || !outcome.check) return out;
   const LcrDenseCheck& c = *outcome.check;
   const LcrLimits& l = spec.limits;
@@ -260,7 +269,7 @@ std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const 
     if (!e.binds) continue;
     const double base = l.*(e.field);
     const double h = std::max(std::abs(base), 1.0) * kSensitivityStep;
-    double od[2] = {kInf, kInf}, at[2] = {base - h, base + h};
+    double od[2] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}, at[2] = {base - h, base + h};
     for (int s = 0; s < 2; ++s) {
       if (at[s] <= 0 && e.field != &LcrLimits::undercut_margin_mm) continue;
       LcrSizingSpec moved = spec;
@@ -268,12 +277,8 @@ std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const 
       const Polished p = Polish(moved, options, outcome.x, outcome.active);
       if (p.converged) od[s] = p.check->outer_diameter_mm;
     }
-    if (std::isfinite(od[0]) && std::isfinite(od[1]))
-      out[e.key] = (od[1] - od[0]) / (at[1] - at[0]);
-    else if (std::isfinite(od[1]))
-      out[e.key] = (od[1] - c.outer_diameter_mm) / h;
-    else if (std::isfinite(od[0]))
-      out[e.key] = (c.outer_diameter_mm - od[0]) / h;
+    out[e.key] = SlopeFromReSolves(od[0], c.outer_diameter_mm, od[1], h,
+                                   10 * options.solver.tolerance * std::max(c.outer_diameter_mm, 1.0));
   }
   return out;
 }

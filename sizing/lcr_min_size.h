@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "model/lcr/reducer.h"
+#include "sizing/limit_slope.h"
 #include "objectives/lcr_dense_check.h"
 #include "objectives/lcr_sizing.h"
 #include "objectives/verification.h"
@@ -83,6 +84,10 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
 /// grows it (undercut margin, gap, efficiency, life_h in mm per hour). Local: the lobe combination is kept.
 std::map<std::string, double> LimitSensitivity(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                                const LcrMinSizeOutcome& outcome);
+/// The same re-solves with both sides kept (sizing/limit_slope.h): left, right, central, kink.
+/// LimitSensitivity is their `slope`.
+std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
+                                              const LcrMinSizeOutcome& outcome);
 
 /// The smallest value of an upper limit ("contact_stress_MPa" or "roller_load_N") at which spec
 /// has a converged design, the other limits held: doubled from the spec's value until a design fits

@@ -102,7 +102,7 @@ void InstallJsonProgress() {
 // registered headlines: the headline numbers of result.json, one "key: value" line each (at most
 // 24): first the top-level numbers, flags and short strings, then from the objects one level down
 // the extremes and verdicts (max…, min…, mean…, …_ok, feasible, converged).
-void PrintSummary(const std::string& out_dir, const std::string& study_file) {
+void PrintSummary(const std::string& out_dir, const std::string& study_file, const camopt::studies::RunAnswer& answer) {
   std::ifstream in(std::filesystem::path(out_dir) / "result.json");
   const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
   if (!r.is_object()) return;
@@ -115,7 +115,7 @@ void PrintSummary(const std::string& out_dir, const std::string& study_file) {
   const camopt::studies::HeadlineTable table =
       camopt::studies::EvaluateHeadlines(r.value("study", std::string()), study, r);
   if (table.registered) {
-    std::cout << "  verdict: " << camopt::studies::VerdictLine(table) << "\n";
+    std::cout << "  verdict: " << camopt::studies::VerdictLine(table, answer.status, answer.reason) << "\n";
     for (const camopt::studies::HeadlineRow& row : table.rows) {
       std::cout << "  " << row.label << ": " << row.value;
       if (!row.limit.empty()) std::cout << " (limit " << row.limit << ": " << row.status << ")";
@@ -159,19 +159,6 @@ void PrintSummary(const std::string& out_dir, const std::string& study_file) {
   if (cut) std::cout << "  ... (the rest in result.json)\n";
   if (r.contains("warnings") && r["warnings"].is_array() && !r["warnings"].empty())
     std::cout << "  warnings: " << r["warnings"].size() << " (see result.json)\n";
-}
-
-// For --strict: the verdict line when a limit of the kind's headlines is exceeded, "" otherwise.
-std::string ExceededLimits(const std::string& out_dir, const std::string& study_file) {
-  std::ifstream in(std::filesystem::path(out_dir) / "result.json");
-  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
-  if (!r.is_object()) return "";
-  std::ifstream study_in(study_file);
-  nlohmann::json study = nlohmann::json::parse(study_in, nullptr, false);
-  if (study.is_discarded()) study = nlohmann::json::object();
-  const camopt::studies::HeadlineTable table =
-      camopt::studies::EvaluateHeadlines(r.value("study", std::string()), study, r);
-  return table.exceeded.empty() ? "" : camopt::studies::VerdictLine(table);
 }
 
 }  // namespace
@@ -369,25 +356,24 @@ int RunCommandLine(int argc, char** argv) {
     auto& limits = camopt::studies::CurrentInputLimits();
     limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) *
                                                 std::min(work_factor, 1e3));
+    ctx.strict = strict;
+    camopt::studies::RunAnswer answer;
     if (convergence)
       camopt::studies::RunConvergenceFile(study_file, out_dir, ctx);
     else
-      camopt::studies::RunStudyFile(study_file, out_dir, ctx);
+      answer = camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
-    if (!convergence) PrintSummary(out_dir, study_file);  // --convergence prints its own table
-    if (strict) {
-      const std::string exceeded = ExceededLimits(out_dir, study_file);
-      if (!exceeded.empty()) {
-        std::cerr << "camopt: --strict: " << exceeded << "\n";
-        return 3;
-      }
-    }
+    if (!convergence) PrintSummary(out_dir, study_file, answer);  // --convergence prints its own table
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
-    std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what()
-              << "\n";
+    // One status gives the exit code, this line and the verdict (studies/status.h).
+    const camopt::studies::Status status = e.answer().status;
+    if (camopt::studies::ExitCode(status, false) == 0)
+      std::cerr << "camopt: --strict: " << e.answer().reason << "\n";  // exit 3 only because of --strict
+    else
+      std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what() << "\n";
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
-    if (!convergence) PrintSummary(out_dir, study_file);
+    if (!convergence) PrintSummary(out_dir, study_file, e.answer());
     return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";

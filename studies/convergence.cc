@@ -350,6 +350,7 @@ void RunConvergenceFile(const std::string& file, const std::string& out_dir, con
   RunContext c = ctx;
   c.study_file = file;
   const json study = LoadStudyFile(file);
+  CheckNotInside(file, out_dir, "study file");
   OutputFolder folder(out_dir);  // a bad --out is reported before the work
   ConvergenceRun run = RunConvergence(study, c);
   run.own.AddJson("convergence.json", run.report);
@@ -357,7 +358,8 @@ void RunConvergenceFile(const std::string& file, const std::string& out_dir, con
   if (study.contains("study") && study["study"].is_string()) AddReport(study["study"].get<std::string>(), study, run.own);
   folder.Commit(run.own);
   std::cout << run.table << std::flush;
-  if (!run.own.incomplete().empty()) throw StudyIncomplete(run.own.incomplete());
+  const RunAnswer answer{run.own.status().value_or(Status::kLimitsMet), run.own.status_reason()};
+  if (ExitCode(answer.status, ctx.strict) != 0) throw StudyIncomplete(answer);
 }
 
 }  // namespace camopt::studies

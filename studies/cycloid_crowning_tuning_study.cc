@@ -695,7 +695,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"tuned", tuned},
           {"estimated_error", error},
           {"warnings", r.warnings},
-          {"status", r.status},
+          {"search_status", r.status},  // "status" is the answer's one status (studies/status.h)
           {"feasible", r.feasible},
           {"tuned_coefficient_mm", Finite(r.best.coefficient_mm, "f")},
           {"tuned_effective_length_mm", Finite(r.best.length_mm, "L")},
@@ -742,11 +742,16 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", ToJson(s, r));
-  if (r.feasible && !r.verification.verified())
-    out.MarkIncomplete("cycloid_crowning_tuning: " +
-                       VerificationFailure(r.verification,
-                                           "raise tuning.edge_margin_um in the fast model, refine analysis.grid "
-                                           "or allow more crowning (a larger coefficient_mm range)"));
+  // Without a feasible coefficient, result.json's "feasible": false gives "infeasible" (RunStudy).
+  if (r.feasible) {
+    const bool converged = r.status == "converged";
+    out.SetStatus(SizingStatus(true, r.verification.ran, r.verification.verified(), converged),
+                  r.verification.verified()
+                      ? (converged ? "" : "the coefficient's search stopped: " + r.status)
+                      : VerificationFailure(r.verification,
+                                            "raise tuning.edge_margin_um in the fast model, refine analysis.grid "
+                                            "or allow more crowning (a larger coefficient_mm range)"));
+  }
   Table table;
   std::vector<double> cf, cs, cm;
   for (const auto& e : r.curve) {
@@ -886,7 +891,7 @@ CAMOPT_REGISTER_REPORT("cycloid_crowning_tuning", {
     {"smallest unloaded transmission error (backlash), tuned", "/tuned_min_unloaded_te_arcsec", "arcsec",
      "/min_unloaded_te_arcsec", NAN, false},
     {"shortest bearing life L10h, tuned design", "/life/shortest_L10h", "h"},
-    {"status", "/status", ""},
+    {"coefficient search", "/search_status", ""},
 });
 }  // namespace
 

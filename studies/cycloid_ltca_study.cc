@@ -1032,6 +1032,10 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   out.Add("pressure_max.csv", ToCsv(pmap));
 
   if (s.output && r.output_failed.empty()) WriteOutputMechanism(s, r, out);
+  // The output mechanism was asked for: without its outputs the answer is not what was asked.
+  if (s.output && !r.output_failed.empty())
+    out.SetStatus(Status::kNotConverged, "output mechanism not solved (its outputs are null in result.json): " +
+                                             r.output_failed);
   if (r.torsion) WriteTorsion(r, out);
   AddToothDrawing(s, r, out);
   WriteToleranceFiles(r, out);

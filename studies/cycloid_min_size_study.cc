@@ -1008,11 +1008,14 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   }
   // What each limit that binds at the optimum costs: d(objective)/d(limit) from the multipliers.
   nlohmann::json binding = nlohmann::json::array();
-  for (const auto& [key, cost] : o.limit_cost)
-    binding.push_back({{"limit", key},
-                       {"limit_value", NumberOrNull(LimitValue(s, key))},
-                       {"limit_cost", Finite(cost, "limit cost")},
-                       {"unit", ObjectiveUnit(s) + " per " + LimitUnit(key)}});
+  for (const auto& [key, cost] : o.limit_cost) {
+    nlohmann::json entry = {{"limit", key},
+                            {"limit_value", NumberOrNull(LimitValue(s, key))},
+                            {"limit_cost", Finite(cost, "limit cost")},
+                            {"unit", ObjectiveUnit(s) + " per " + LimitUnit(key)}};
+    AddLimitSlopeJson(o.limit_slope.count(key) ? &o.limit_slope.at(key) : nullptr, entry);
+    binding.push_back(entry);
+  }
   j["binding_limits"] = binding;
   nlohmann::json starts = nlohmann::json::array();
   for (const optimizers::SolverResult& st : o.starts) starts.push_back(StartJson(st));
@@ -1084,6 +1087,19 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     a["output_mechanism"] = om;
     a["stiffness"] = {{"rated_torque_Nm", s.design_torque_Nm}};
   }
+  // The limits the design was sized for that cycloid_ltca's verdict checks, so that a re-run checks
+  // them again (the others — stiffness, lost motion, backlash, edge margin, life — are in the
+  // sizing's result.json verification).
+  const CycloidSizingLimits& lim = s.spec.limits;
+  nlohmann::json limits = nlohmann::json::object();
+  if (std::isfinite(lim.contact_stress_MPa)) limits["contact_stress_MPa"] = lim.contact_stress_MPa;
+  if (lim.min_profile_radius_mm > 0) limits["min_profile_radius_mm"] = lim.min_profile_radius_mm;
+  if (lim.min_pin_gap_mm > 0) limits["min_pin_gap_mm"] = lim.min_pin_gap_mm;
+  if (s.spec.output && std::isfinite(lim.output_pin_stress_MPa))
+    limits["output_pin_stress_MPa"] = lim.output_pin_stress_MPa;
+  if (s.spec.output && std::isfinite(lim.eccentric_bearing_load_N))
+    limits["eccentric_bearing_load_N"] = lim.eccentric_bearing_load_N;
+  if (!limits.empty()) a["limits"] = limits;
   return a;
 }
 
@@ -1093,7 +1109,9 @@ nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
   const objectives::CycloidMinSizeOutcome& o = r.outcome;
   if (o.x.empty()) return nullptr;
   return CycloidLtcaStudyOf(s, o.drive, o.crowning,
-                            o.verified && o.converged ? "best of " : "closest design (not verified) of ");
+                            o.verified && o.converged ? "best of "
+                            : o.verified     ? "verified design (not proven the smallest) of "
+                                             : "closest design (not verified) of ");
 }
 
 nlohmann::json StartCycloidLtcaStudy(const Study& s) {
@@ -1102,7 +1120,18 @@ nlohmann::json StartCycloidLtcaStudy(const Study& s) {
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", ToJson(s, r));
-  if (!r.blocking_message.empty()) out.MarkIncomplete("cycloid_min_size: " + r.blocking_message);
+  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
+  // A stress limit on a tooth whose edge peak is singular is checked on a number that grows as the
+  // cells shrink: its "verified" would hold only at the grid it was checked on.
+  if (IsVerified(*out.status()) && std::isfinite(s.spec.limits.contact_stress_MPa) &&
+      cycloid::EdgePeakIsSingular(s.spec.crowning.type))
+    out.SetStatus(Status::kNotVerifiable,
+                  "the contact stress limit is checked on the edge peak of a " +
+                      std::string(s.spec.crowning.type == cycloid::CrowningType::kNone ? "straight" : "partially crowned") +
+                      " tooth, which does not converge as the cells shrink (it grows at the face ends); crown the "
+                      "teeth (crowning.type \"logarithmic\" or \"full\") and keep the contact off the face ends "
+                      "(limits.min_edge_margin_um with an overload torque)");
   if (r.outcome.x.empty()) return;
   out.AddJson("best_cycloid_ltca.json", BestCycloidLtcaStudy(s, r));
   const cycloid::CycleResult& c = r.best_cycle;
@@ -1138,7 +1167,7 @@ std::string Summary(const Study& s, const Result& r) {
   char buf[300];
   if (!o.x.empty()) {
     std::snprintf(buf, sizeof buf, "cycloid_min_size: %s outer diameter %.3f mm (%d teeth), %.2f s\n",
-                  o.verified && o.converged ? "best" : "closest (not verified)",
+                  o.verified && o.converged ? "best" : o.verified ? "verified (not proven the smallest)" : "closest (not verified)",
                   2 * (o.drive.roller_position_radius_mm + o.drive.roller_radius_mm), s.spec.drive.teeth, r.seconds);
     m << buf;
   }

@@ -248,8 +248,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   if (std::isfinite(s.spec.limits.contact_stress_MPa)) limits["contact_stress_MPa"] = s.spec.limits.contact_stress_MPa;
   j["limits"] = limits;
   AddVerificationJson(o.verification, j);
-  // Verified: the accurate values themselves within the limits at a converged optimum (exit 0).
-  j["verified"] = o.verified && o.converged;
+  // Verified: the accurate values themselves within the limits (RunStudy writes it again from the
+  // status, studies/status.h: feasible_verified when the optimizer did not converge).
+  j["verified"] = o.verified;
   if (o.x.empty()) {
     j["best"] = nullptr;
   } else {
@@ -298,11 +299,15 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   }
   j["binding"] = o.binding;
   nlohmann::json costs = nlohmann::json::array();
-  for (const auto& [key, cost] : o.limit_cost)
-    costs.push_back({{"limit", key},
-                     {"limit_value", NumberOrNull(LimitValue(s, o, key))},
-                     {"limit_cost", Finite(cost, "limit cost")},
-                     {"unit", "mm of base circle per " + LimitUnit(key)}});
+  for (const auto& [key, cost] : o.limit_cost) {
+    nlohmann::json entry = {{"limit", key},
+                            {"limit_value", NumberOrNull(LimitValue(s, o, key))},
+                            {"limit_cost", Finite(cost, "limit cost")},
+                            {"unit", "mm of base circle per " + LimitUnit(key)}};
+    // The cost is itself the re-solve slope here: the same number, with its sides.
+    AddLimitSlopeJson(o.limit_slope.count(key) ? &o.limit_slope.at(key) : nullptr, entry);
+    costs.push_back(entry);
+  }
   j["binding_limits"] = costs;
   nlohmann::json starts = nlohmann::json::array();
   for (const optimizers::SolverResult& st : o.starts)
@@ -361,7 +366,9 @@ nlohmann::json DiscCamStudyOf(const Study& s, const dc::DiscCam& cam, const std:
 nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
   const objectives::DiscCamMinSizeOutcome& o = r.outcome;
   if (o.x.empty()) return nullptr;
-  return DiscCamStudyOf(s, o.cam, (o.verified && o.converged ? "best of " : "closest design (not verified) of ") + s.name);
+  return DiscCamStudyOf(s, o.cam, (o.verified && o.converged ? "best of "
+                               : o.verified   ? "verified design (not proven the smallest) of "
+                                              : "closest design (not verified) of ") + s.name);
 }
 
 nlohmann::json StartDiscCamStudy(const Study& s) {
@@ -372,8 +379,8 @@ nlohmann::json StartDiscCamStudy(const Study& s) {
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", ToJson(s, r));
-  if (!r.blocking_message.empty()) out.MarkIncomplete("disc_cam_min_size: " + r.blocking_message);
   const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   if (o.x.empty()) return;
   out.AddJson("best_disc_cam.json", BestDiscCamStudy(s, r));
   // The best design over the accurate grid: pressure angle and the profile's radius of curvature.
@@ -434,12 +441,12 @@ std::string Summary(const Study& s, const Result& r) {
   if (!o.x.empty() && s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
     std::snprintf(buf, sizeof buf,
                   "disc_cam_min_size: %s base circle %.6g mm (pivot distance %.6g mm, arm %.6g mm, roller %.6g mm)\n",
-                  o.verified && o.converged ? "smallest" : "closest (not verified)", o.cam.base_radius,
+                  o.verified && o.converged ? "smallest" : o.verified ? "verified (not proven the smallest)" : "closest (not verified)", o.cam.base_radius,
                   o.cam.pivot_distance, o.cam.arm_length, o.cam.roller_radius);
     m << buf;
   } else if (!o.x.empty()) {
     std::snprintf(buf, sizeof buf, "disc_cam_min_size: %s base circle %.6g mm (offset %.6g mm, roller %.6g mm)\n",
-                  o.verified && o.converged ? "smallest" : "closest (not verified)", o.cam.base_radius, o.cam.offset,
+                  o.verified && o.converged ? "smallest" : o.verified ? "verified (not proven the smallest)" : "closest (not verified)", o.cam.base_radius, o.cam.offset,
                   o.cam.roller_radius);
     m << buf;
   }

@@ -101,9 +101,12 @@ struct Input {
     std::optional<double> pressure_angle_deg, radius_margin_mm, contact_stress_MPa;
     template <typename Archive>
     void Serialize(Archive* a) {
-      // Below the jam limit camopt::disc_cam::kJamPressureAngle (89°).
+      // Below the jam limit camopt::disc_cam::kJamPressureAngle (89°); from 1° up: the smallest base
+      // circle of a pressure angle φ grows as 1/tan φ, and a denormal limit (1e-320) sent the
+      // sizing's sparse solver non-finite numbers.
       a->Visit("pressure_angle_deg", &pressure_angle_deg,
-               Field().Positive().Below(89.0, "a pressure angle > 0 and < 89 deg (the jam limit)").Unit("deg")
+               Field().AtLeast(1.0, "a pressure angle >= 1 and < 89 deg (the jam limit)")
+                   .Below(89.0, "a pressure angle >= 1 and < 89 deg (the jam limit)").Unit("deg")
                    .Desc("largest |φ| allowed, checked on the rise (S' ≥ 0, dwells included) and on the return (S' < 0) "
                          "separately (absent: 30 translating, 45 oscillating)"));
       a->Visit("radius_margin_mm", &radius_margin_mm,

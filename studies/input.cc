@@ -356,6 +356,11 @@ class CheckingSax {
 }  // namespace
 
 nlohmann::json ParseStudyText(const std::string& text, const std::string& file, int max_depth) {
+  // nlohmann's lexer takes a NUL byte for the end of the input: whatever follows it would be
+  // ignored without a word.
+  if (const size_t at = text.find('\0'); at != std::string::npos)
+    throw StudyError(file + ": /: expected a JSON text, found a NUL byte at byte " + std::to_string(at) + " of " +
+                     std::to_string(text.size()) + " (remove it and what follows it, or save the file as text)");
   CheckingSax sax(text, file, max_depth);
   if (!nlohmann::json::sax_parse(text, &sax))
     throw StudyError(file + ": /: expected valid JSON, found a syntax error");

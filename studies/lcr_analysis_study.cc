@@ -422,19 +422,8 @@ Study Parse(const Node& root) {
     st.load.output_torque_Nmm = in.load->output_torque_Nm * 1000.0;
     st.load.friction_coefficient = in.load->friction_coefficient;
     st.load.cam_weight_N = in.load->cam_weight_N;
-    // A torque no contact can carry: the output rollers' forces balance it on arms no longer than
-    // the turret radius, so the largest carries at least T / (n R); a contact is no wider than
-    // the roller, so its mean pressure is at least that force over the roller's projected area
-    // d L. Above the Young's modulus (a strain of one) no contact model applies.
-    {
-      const lcr::CamSide<double>& out = st.reducer.output;
-      const double projected = 2 * out.roller_radius * out.roller_length;
-      const double t_max_Nmm = st.material.youngs_modulus_MPa * projected * out.rollers * out.turret_radius;
-      if (!(st.load.output_torque_Nmm <= t_max_Nmm))
-        load_node["output_torque_Nm"].Fail("a torque the output rollers can carry (at most " + Format(t_max_Nmm / 1000, 4) +
-                                           " N·m: their least force over the roller's projected area reaches the "
-                                           "Young's modulus there)");
-    }
+    CheckCarriedTorque(st.reducer, st.material.youngs_modulus_MPa, st.load.output_torque_Nmm,
+                       load_node["output_torque_Nm"]);
     if (st.load_model == lcr::LoadModel::kCompliant && !(st.load.output_torque_Nmm > 0))
       load_node["output_torque_Nm"].Fail("a torque > 0 for \"load_model\": \"compliant\"");
     if (st.tolerances && !(st.load.output_torque_Nmm > 0))

@@ -35,6 +35,7 @@ Study Parse(const Node& root) {
   sp.overload_torque_Nmm = in.load.overload_torque_Nm * 1000.0;
   if (sp.overload_torque_Nmm < sp.design_load.output_torque_Nmm)
     load["overload_torque_Nm"].Fail("an overload torque >= output_torque_Nm");
+  CheckCarriedTorque(sp.reducer, sp.material.youngs_modulus_MPa, sp.overload_torque_Nmm, load["overload_torque_Nm"]);
   const Input::Tuning& tuning = in.tuning;
   const Node t = root["tuning"];
   for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
@@ -366,9 +367,19 @@ void Write(const Study& st, const Result& res, Outputs& out) {
           SvgLinePlot(curves, {"Largest contact pressure at the design torque (worst misalignment), slices model",
                                "logarithmic crowning coefficient f [mm]", "contact pressure [MPa]"}));
   out.AddJson("result.json", ToJson(st, res));
-  if (st.half_space_check && !res.verification.verified())
-    out.MarkIncomplete(VerificationFailure(res.verification, "the pressure reaches a roller end: raise "
-                                                             "tuning.effective_length_mm or the coefficient range"));
+  std::string infeasible;
+  for (int k = 0; k < 2; ++k)
+    if (!res.tuned[k].feasible) infeasible += std::string(infeasible.empty() ? "" : "; ") + (k == 0 ? "input" : "output") +
+                                              " cam: no coefficient in the range meets the limits at the overload torque";
+  if (!infeasible.empty())
+    out.SetStatus(Status::kInfeasible, infeasible + " (widen tuning.coefficient_mm or raise the limits)");
+  else if (!st.half_space_check)
+    out.SetStatus(Status::kNotVerifiable, "tuning.half_space_check is false: the tuned crowning is not checked by the "
+                                          "accurate model (set it to true)");
+  else
+    out.SetStatus(SizingStatus(true, res.verification.ran, res.verification.verified(), true),
+                  VerificationFailure(res.verification, "the pressure reaches a roller end: raise "
+                                                        "tuning.effective_length_mm or the coefficient range"));
 }
 
 namespace {

@@ -151,7 +151,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   nlohmann::json j;
   j["study"] = "lcr_friction_fit";
   j["name"] = st.name;
-  j["status"] = optimizers::ToString(fit.status);
+  j["fit_status"] = optimizers::ToString(fit.status);  // "status" is the answer's one status (studies/status.h)
   j["model"] = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
   j["speed_ratio"] = res.speed_ratio;
   j["ideal_input_torque_per_output_torque"] = res.per_output_torque.ideal;
@@ -205,6 +205,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
 
 void Write(const Study& st, const Result& res, Outputs& out) {
   out.AddJson("result.json", ToJson(st, res));
+  if (res.fit.status != optimizers::SolverStatus::kConverged)
+    out.SetStatus(Status::kNotConverged, std::string("the fit stopped: ") + optimizers::ToString(res.fit.status));
   std::vector<double> to, tin, tsd, tfit, resid;
   for (size_t i = 0; i < res.rows.size(); ++i) {
     to.push_back(st.measurements[i].output_torque_Nm);

@@ -77,4 +77,14 @@ nlohmann::ordered_json LcrLifeSchemaRules() {
   ])");
 }
 
+void CheckCarriedTorque(const lcr::Reducer<double>& reducer, double youngs_modulus_MPa, double torque_Nmm,
+                        const Node& torque_node) {
+  const lcr::CamSide<double>& out = reducer.output;
+  const double projected = 2 * out.roller_radius * out.roller_length;
+  const double t_max_Nmm = youngs_modulus_MPa * projected * out.rollers * out.turret_radius;
+  if (!(torque_Nmm <= t_max_Nmm))
+    torque_node.Fail("a torque the output rollers can carry (at most " + Format(t_max_Nmm / 1000, 4) +
+                     " N·m: their least force over the roller's projected area reaches the Young's modulus there)");
+}
+
 }  // namespace camopt::studies

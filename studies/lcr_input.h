@@ -142,6 +142,14 @@ lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node);
 /// design (lobes < rollers, rollers that overlap, …); throws StudyError naming the JSON path.
 lcr::Reducer<double> ParseReducer(const Node& reducer);
 
+/// Fails `torque_node` (exit 2) when `torque_Nmm` is more than the output rollers can carry: their
+/// forces balance it on arms no longer than the turret radius, so the largest carries at least
+/// T / (n R); a contact is no wider than the roller, so its mean pressure is at least that force
+/// over the roller's projected area d L. Above the Young's modulus (a strain of one) no contact
+/// model applies (a torque of 1e308 reached the contact solvers as infinite forces).
+void CheckCarriedTorque(const lcr::Reducer<double>& reducer, double youngs_modulus_MPa, double torque_Nmm,
+                        const Node& torque_node);
+
 /// Optional cutter diameter per side ("cutter_diameter_mm", default the roller diameter);
 /// must be > 0 and <= the roller diameter.
 double ParseCutterDiameter(const Node& side, double roller_diameter);

@@ -570,7 +570,9 @@ Result Run(const Study& s, const RunContext& ctx) {
     res.half_space = res.candidates[res.best].half_space;
   } else if (res.best >= 0) {
     const Candidate& b = res.candidates[res.best];
-    res.limit_sensitivity = objectives::LimitSensitivity(b.spec, s.options, b.outcome);
+    res.limit_slope = objectives::LimitSlopes(b.spec, s.options, b.outcome);
+    for (const auto& [key, slope] : res.limit_slope)
+      if (!slope.sides.empty()) res.limit_sensitivity[key] = slope.slope;
   } else {
     res.blocking_message = BlockingMessage(s, res);
   }
@@ -683,10 +685,13 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
         {"undercut_margin_mm", {l.undercut_margin_mm, "mm"}},  {"roller_gap_mm", {l.roller_gap_mm, "mm"}},
         {"min_efficiency", {l.min_efficiency, "1"}},          {"life_h", {l.life_h, "h"}}};
     const auto it = values.find(key);
-    b["binding_limits"].push_back({{"limit", key},
-                                   {"limit_value", it != values.end() ? it->second.first : NAN},
-                                   {"limit_cost", cost},
-                                   {"unit", "mm per " + (it != values.end() ? it->second.second : std::string("unit"))}});
+    nlohmann::json entry = {{"limit", key},
+                            {"limit_value", it != values.end() ? it->second.first : NAN},
+                            {"limit_cost", cost},
+                            {"unit", "mm per " + (it != values.end() ? it->second.second : std::string("unit"))}};
+    // The cost is itself the re-solve slope here (LimitSlopes): the same number, with its sides.
+    AddLimitSlopeJson(result.limit_slope.count(key) ? &result.limit_slope.at(key) : nullptr, entry);
+    b["binding_limits"].push_back(entry);
   }
   if (s.contact3d)
     b["limit_sensitivity_note"] =
@@ -776,11 +781,19 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     }
     if (s.contact3d) AddContact3DAnalysis(s, best, a);
     out.AddJson("best_lcr_analysis.json", a);
-  } else {
-    out.MarkIncomplete(result.blocking_message);
   }
-  if (s.robust && result.best >= 0 && result.robust_best < 0)
-    out.MarkIncomplete("no design meets the limits across the tolerances (see result.json robust.candidates)");
+  // The best candidate is feasible: its solve converged and the accurate model verified it
+  // (Candidate::feasible); one without a check is not verifiable.
+  if (result.best < 0) {
+    out.SetStatus(Status::kInfeasible, result.blocking_message);
+  } else if (s.robust && result.robust_best < 0) {
+    out.SetStatus(Status::kInfeasible, "no design meets the limits across the tolerances (see result.json robust.candidates)");
+  } else {
+    const Candidate& best = result.candidates[result.best];
+    out.SetStatus(SizingStatus(true, best.verification && best.verification->ran,
+                               best.verification && best.verification->verified(), best.outcome.converged),
+                  best.verification ? "" : "the best design was not checked by the accurate model");
+  }
 
   // One row per feasible candidate (an infeasible one has no outer diameter to show).
   Table t;

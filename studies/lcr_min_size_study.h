@@ -379,6 +379,8 @@ struct Result {
   int best = -1;  ///< index of the smallest feasible candidate, −1 when nothing fits
   /// d(outer diameter)/d(limit) of the best design [mm per unit of the limit], by limit key.
   std::map<std::string, double> limit_sensitivity;
+  /// The same re-solves with both sides (sizing/limit_slope.h): the binding_limits' re_solve_* and kink.
+  std::map<std::string, objectives::LimitSlope> limit_slope;
   int value_evaluations = 0, gradient_evaluations = 0;
   std::optional<objectives::LcrHalfSpaceCheck> half_space;  ///< best design, with Study::contact3d
   double seconds = 0;  ///< wall time of the search (summary only, never in result.json)

@@ -1,6 +1,8 @@
 #include "studies/report.h"
+#include "studies/writers.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,17 +19,7 @@ std::map<std::string, std::vector<Headline>>& Reports() {
   return reports;
 }
 
-std::string Html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
+std::string Html(const std::string& s) { return XmlText(s); }
 
 // A number as a designer reads it: integers exactly, others to 6 significant digits.
 std::string Number(double v) {
@@ -298,21 +290,71 @@ HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& s
       row.status = holds ? "pass" : "fail";
       ++table.limits;
       if (!holds) table.exceeded.push_back(h.label);
+    } else if (v->is_number() && !h.limit_pointer.empty()) {
+      table.unset.push_back(h.label);  // a limit the kind considers, not set in this study
     }
     table.rows.push_back(row);
   }
   return table;
 }
 
-std::string VerdictLine(const HeadlineTable& table) {
-  if (table.no_design)
-    return "No design meets the limits" +
-           (table.no_design_reason.empty() ? std::string(" (result.json: best is null)") : ": " + table.no_design_reason);
-  if (table.limits == 0) return "No limits to check in this study";
-  if (table.exceeded.empty()) return "All " + std::to_string(table.limits) + " limits met";
+namespace {
+std::string VerdictCore(const HeadlineTable& table, Status status, const std::string& reason) {
+  if (IsVerified(status) && table.limits == 0)
+    return std::string("Every limit verified by the accurate model") +
+           (status == Status::kFeasibleVerified ? "; not proven optimal" + (reason.empty() ? "" : ": " + reason) : "");
+  const std::string met = table.limits == 0 ? std::string("No limits to check in this study")
+                          : table.limits == 1 ? std::string("The limit is met")
+                                              : "All " + std::to_string(table.limits) + " limits met";
+  switch (status) {
+    case Status::kOptimalVerified: return met + ", verified by the accurate model";
+    case Status::kFeasibleVerified:
+      return met + ", verified by the accurate model; not proven optimal" + (reason.empty() ? "" : ": " + reason);
+    case Status::kInfeasible: {
+      std::string why = !reason.empty() ? reason : table.no_design_reason;
+      // A reason that says it already ("no design meets the limits (...): ...") is not repeated.
+      const std::string head = "no design meets the limits";
+      if (why.size() >= head.size() && std::equal(head.begin(), head.end(), why.begin(),
+                                                  [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); })) {
+        why = why.substr(head.size());
+        return "No design meets the limits" + (why.rfind(": ", 0) == 0 || why.rfind(" (", 0) == 0 ? why : why.empty() ? "" : ": " + why);
+      }
+      return "No design meets the limits" + (why.empty() ? std::string(" (result.json: best is null)") : ": " + why);
+    }
+    case Status::kNotVerifiable: return "Not verifiable" + (reason.empty() ? "" : ": " + reason);
+    case Status::kNotConverged: return "Not converged" + (reason.empty() ? "" : ": " + reason);
+    case Status::kLimitsMet:
+    case Status::kLimitsExceeded: break;
+  }
+  if (table.exceeded.empty()) return met;
   std::string s = std::to_string(table.exceeded.size()) + " of " + std::to_string(table.limits) + " limits exceeded: ";
   for (size_t i = 0; i < table.exceeded.size(); ++i) s += (i ? "; " : "") + table.exceeded[i];
   return s;
+}
+}  // namespace
+
+std::string VerdictLine(const HeadlineTable& table, Status status, const std::string& reason) {
+  std::string line = VerdictCore(table, status, reason);
+  if (!table.unset.empty() && status != Status::kInfeasible && status != Status::kNotConverged &&
+      status != Status::kNotVerifiable) {
+    line += "; not checked, no limit set: ";
+    for (size_t i = 0; i < table.unset.size(); ++i) line += (i ? "; " : "") + table.unset[i];
+  }
+  return line;
+}
+
+Status StatusOfTable(const HeadlineTable& table) {
+  return table.no_design ? Status::kInfeasible : table.exceeded.empty() ? Status::kLimitsMet : Status::kLimitsExceeded;
+}
+
+std::string VerdictOf(const HeadlineTable& table, const nlohmann::json& result) {
+  std::optional<Status> status;
+  std::string reason;
+  if (result.is_object() && result.contains("status") && result["status"].is_string())
+    status = StatusFromName(result["status"].get<std::string>());
+  if (result.is_object() && result.contains("status_reason") && result["status_reason"].is_string())
+    reason = result["status_reason"].get<std::string>();
+  return VerdictLine(table, status.value_or(StatusOfTable(table)), reason);
 }
 
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs) {
@@ -352,13 +394,13 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
   if (study.is_object() && study.contains("description") && study["description"].is_string())
     os << "<p>" << Html(study["description"].get<std::string>()) << "</p>\n";
 
-  // The verdict first: incomplete, limits exceeded, or all met.
-  if (!outputs.incomplete().empty())
-    os << "<div class=\"verdict bad\">Incomplete: " << Html(outputs.incomplete()) << "</div>\n";
-  if (limits > 0)
-    os << "<div class=\"verdict " << (exceeded ? "bad" : "ok") << "\">" << Html(VerdictLine(table)) << "</div>\n";
-  else if (outputs.incomplete().empty())
-    os << "<div class=\"verdict " << (table.no_design ? "bad" : "info") << "\">" << Html(VerdictLine(table)) << "</div>\n";
+  // The verdict first, one line from the answer's status (studies/status.h).
+  const Status status = outputs.status().value_or(StatusOfTable(table));
+  const char* badge = ExitCode(status, false) != 0 || status == Status::kLimitsExceeded ? "bad"
+                      : limits == 0 && !IsVerified(status)                               ? "info"
+                                                                                         : "ok";
+  os << "<div class=\"verdict " << badge << "\">" << Html(VerdictLine(table, status, outputs.status_reason()))
+     << " <code>" << StatusName(status) << "</code></div>\n";
 
   os << "<h2>Headline numbers</h2>\n";
   if (rows.empty()) {

@@ -62,6 +62,9 @@ struct HeadlineTable {
   std::vector<HeadlineRow> rows;
   int limits = 0;                      ///< rows with a limit
   std::vector<std::string> exceeded;   ///< labels of the rows that fail
+  /// Labels of the rows whose limit the kind considers but the study did not set: a verdict over
+  /// the limits set says so, so that "met" is never read as "this design is fine".
+  std::vector<std::string> unset;
   bool registered = false;
   /// A sizing result without a design ("best": null): why, from result.json's first note ("" when
   /// it has none); no_design true. Its limits cannot be checked: there is nothing to check them on.
@@ -70,9 +73,20 @@ struct HeadlineTable {
 };
 HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result);
 
-/// "All 7 limits met", "2 of 7 limits exceeded: a, b", "No design meets the limits: <why>" (a sizing
-/// result whose "best" is null), or "No limits to check in this study".
-std::string VerdictLine(const HeadlineTable& table);
+/// The verdict line of an answer, a function of its status (studies/status.h) and the reason
+/// that goes with it: "All 7 limits met, verified by the accurate model", "All 7 limits met,
+/// verified; not proven optimal: <why>", "No design meets the limits: <why>", "Not verifiable:
+/// <why>", "Not converged: <why>", "All 7 limits met", "2 of 7 limits exceeded: a, b", or "No
+/// limits to check in this study".
+std::string VerdictLine(const HeadlineTable& table, Status status, const std::string& reason);
+
+/// The status a table alone gives (no run status known): infeasible without a design, else its
+/// limits met or exceeded.
+Status StatusOfTable(const HeadlineTable& table);
+
+/// The verdict line of a written result.json (its "status" and "status_reason"; for a result
+/// without them, the limits of `table`): for readers of a finished run (the studio, Python).
+std::string VerdictOf(const HeadlineTable& table, const nlohmann::json& result);
 
 /// The page for a run of `kind` on `study` whose files are `outputs` (result.json, *.svg, …).
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs);

@@ -320,18 +320,34 @@ class Studio {
 
   std::shared_ptr<Run> Start(const fs::path& study, std::string& error) {
     const std::string rel = Relative(root_, study);
+    const std::string out_rel = Relative(root_, root_ / "results" / study.stem());
     {
-      // One run per output folder at a time: a second would replace the first one's results.
+      // One run per output folder at a time: a second would replace the first one's results. The
+      // check and the claim are one step under the lock (a run being started holds its claim in
+      // starting_ until it is in runs_), so of concurrent requests exactly one is accepted.
       std::lock_guard<std::mutex> lock(mutex_);
+      if (starting_.count(out_rel)) {
+        error = "run of " + rel + " is starting and will write " + out_rel + " (cancel it or wait for it)";
+        return nullptr;
+      }
       for (auto& [id, other] : runs_) {
         std::lock_guard<std::mutex> run_lock(other->mutex);
-        if (!other->finished && other->out == Relative(root_, root_ / "results" / study.stem())) {
+        if (!other->finished && other->out == out_rel) {
           error = "run " + std::to_string(id) + " of " + other->study + " is still writing " + other->out +
                   " (cancel it or wait for it)";
           return nullptr;
         }
       }
+      starting_.insert(out_rel);
     }
+    struct Unclaim {
+      Studio* studio;
+      std::string out;
+      ~Unclaim() {
+        std::lock_guard<std::mutex> lock(studio->mutex_);
+        studio->starting_.erase(out);
+      }
+    } unclaim{this, out_rel};
     const fs::path out = root_ / "results" / study.stem();
     std::error_code ec;
     fs::create_directories(root_ / "results", ec);
@@ -411,6 +427,7 @@ class Studio {
   std::set<std::string> hosts_, origins_;
   std::mutex mutex_;
   std::map<int, std::shared_ptr<Run>> runs_;
+  std::set<std::string> starting_;  ///< output folders of runs being started (Start)
   int next_id_ = 1;
 };
 
@@ -430,6 +447,58 @@ int IdOf(const httplib::Request& req) {
   } catch (const std::exception&) {
     return -1;
   }
+}
+
+// One lock per saved file: concurrent saves of one study are written one after the other.
+std::mutex& SaveLockOf(const fs::path& file) {
+  static std::mutex guard;
+  static std::map<std::string, std::unique_ptr<std::mutex>> locks;
+  const std::lock_guard<std::mutex> lock(guard);
+  auto& m = locks[file.string()];
+  if (!m) m = std::make_unique<std::mutex>();
+  return *m;
+}
+
+// Writes `body` to `file` (inside the served folder, resolved) whole or not at all: a temporary
+// of a name no other save uses, created under a handle on the folder with O_CREAT | O_EXCL |
+// O_NOFOLLOW (a link placed at its name is never followed), then renamed over the file. A link
+// at the file's own name is replaced by the file, never written through.
+bool SaveFile(const fs::path& file, const std::string& body, std::string& why) {
+  static std::atomic<unsigned long> counter{0};
+  const std::lock_guard<std::mutex> lock(SaveLockOf(file));
+  const int dir = ::open(file.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (dir < 0) {
+    why = std::strerror(errno);
+    return false;
+  }
+  const std::string name = file.filename().string();
+  // A name taken (by a link or a file someone placed there): the next one; never through it.
+  std::string tmp;
+  int fd = -1;
+  for (int attempt = 0; attempt < 64 && fd < 0; ++attempt) {
+    tmp = "." + name + ".camopt-save-" + std::to_string(getpid()) + "-" + std::to_string(++counter);
+    fd = ::openat(dir, tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0 && errno != EEXIST) break;
+  }
+  if (fd < 0) {
+    why = std::strerror(errno);
+    ::close(dir);
+    return false;
+  }
+  size_t done = 0;
+  bool ok = true;
+  while (ok && done < body.size()) {
+    const ssize_t n = ::write(fd, body.data() + done, body.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) ok = false;
+    else done += static_cast<size_t>(n);
+  }
+  if (!ok) why = std::strerror(errno);
+  if (::close(fd) != 0 && ok) ok = false, why = std::strerror(errno);
+  if (ok && ::renameat(dir, tmp.c_str(), dir, name.c_str()) != 0) ok = false, why = std::strerror(errno);
+  if (!ok) ::unlinkat(dir, tmp.c_str(), 0);
+  ::close(dir);
+  return ok;
 }
 
 void Routes(httplib::Server& server, Studio& studio) {
@@ -466,18 +535,8 @@ void Routes(httplib::Server& server, Studio& studio) {
     if (r.status != 200) return SendError(res, r.status, r.message);
     if (json::parse(req.body, nullptr, false).is_discarded())
       return SendError(res, 400, "body: expected the study's JSON text");
-    const fs::path tmp = r.path.parent_path() / ("." + r.path.filename().string() + ".camopt-save");
-    {
-      std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
-      file << req.body;
-      if (!file.flush()) return SendError(res, 500, "cannot write " + rel);
-    }
-    std::error_code ec;
-    fs::rename(tmp, r.path, ec);
-    if (ec) {
-      fs::remove(tmp, ec);
-      return SendError(res, 500, "cannot write " + rel + ": " + ec.message());
-    }
+    std::string why;
+    if (!SaveFile(r.path, req.body, why)) return SendError(res, 500, "cannot write " + rel + ": " + why);
     SendJson(res, {{"saved", Relative(root, r.path)}});
   });
   server.Post("/api/duplicate", [root](const httplib::Request& req, httplib::Response& res) {
@@ -605,7 +664,7 @@ void Routes(httplib::Server& server, Studio& studio) {
     for (const HeadlineRow& row : table.rows)
       rows.push_back({{"label", row.label}, {"value", row.value}, {"limit", row.limit}, {"margin", row.margin},
                       {"status", row.status}});
-    status["headlines"] = {{"verdict", VerdictLine(table)}, {"rows", rows}, {"registered", table.registered}};
+    status["headlines"] = {{"verdict", VerdictOf(table, result)}, {"rows", rows}, {"registered", table.registered}};
     SendJson(res, status);
   });
   // Live progress: server-sent events "progress" (the CLI's JSON progress reports), "message"

@@ -175,22 +175,22 @@ void WriteWholeFile(const std::string& path, const std::string& content) {
   if (close(fd) != 0) OutputFail("cannot write " + fs::path(path).filename().string(), path, errno);
 }
 
-// The list of the files a run wrote, kept in its output folder: only those are ever replaced.
+// The list of the files a run wrote, kept in its output folder: only those are ever replaced. A
+// line "NAME/" lists a sub-folder, which follows the same rule (its own list).
 constexpr char kManifest[] = ".camopt_manifest";
 
-// What keeps an existing folder from being replaced, or "" when it may be: it is empty, or it
-// holds a previous result — the manifest and only the files it lists (no sub-folders). Anything
-// else is the user's and is never deleted (a study file copied into the folder, notes, a result
-// of a camopt that wrote no manifest).
-std::string NotReplaceable(const fs::path& dir) {
+std::string NotReplaceableAt(const fs::path& dir, int depth) {
   std::error_code ec;
   std::vector<std::string> names;
   bool has_manifest = false;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (entry.is_directory(ec) || !entry.is_regular_file(ec)) return "it holds " + name + ", not a file camopt wrote";
-    if (name == kManifest) has_manifest = true;
-    else names.push_back(name);
+    // Never a link: is_directory/is_regular_file follow it, the status of the entry itself does not.
+    const fs::file_status st = entry.symlink_status(ec);
+    if (fs::is_directory(st)) names.push_back(name + "/");
+    else if (fs::is_regular_file(st) && name == kManifest) has_manifest = true;
+    else if (fs::is_regular_file(st)) names.push_back(name);
+    else return "it holds " + name + ", not a file camopt wrote";
   }
   if (ec) return "it cannot be listed: " + ec.message();
   if (names.empty() && !has_manifest) return "";
@@ -206,8 +206,40 @@ std::string NotReplaceable(const fs::path& dir) {
   for (std::string line; std::getline(in, line);) listed.insert(line);
   for (const std::string& n : names)
     if (!listed.count(n)) return "it holds " + n + ", which camopt did not write";
+  // A listed sub-folder (a sweep's cases/, each case's folder) follows the same rule.
+  for (const std::string& n : names) {
+    if (n.back() != '/') continue;
+    if (depth >= 3) return "it holds " + n + ", deeper than camopt writes";
+    const std::string why = NotReplaceableAt(dir / n.substr(0, n.size() - 1), depth + 1);
+    if (!why.empty()) return "in " + n + ": " + why;
+  }
   return "";
 }
+
+}  // namespace
+
+std::string NotReplaceable(const fs::path& dir) { return NotReplaceableAt(dir, 0); }
+
+void WriteManifest(const std::string& dir, const std::vector<std::string>& entries) {
+  std::string manifest;
+  for (const std::string& e : entries) manifest += e + "\n";
+  WriteWholeFile((fs::path(dir) / kManifest).string(), manifest);
+}
+
+void CheckNotInside(const std::string& file, const std::string& out, const std::string& what) {
+  std::error_code fe, oe;
+  const fs::path f = fs::weakly_canonical(fs::absolute(file), fe);
+  const fs::path o = fs::weakly_canonical(fs::absolute(out), oe);
+  if (fe || oe || o.empty() || !fs::is_directory(o, oe)) return;
+  // f is inside o when o is a prefix of f, element by element.
+  auto fi = f.begin();
+  for (auto oi = o.begin(); oi != o.end(); ++oi, ++fi)
+    if (fi == f.end() || *fi != *oi) return;
+  throw StudyError("--out " + out + ": the " + what + " " + file + " is inside the folder this run replaces; " +
+                   "choose another --out (or copy the file out of it first)");
+}
+
+namespace {
 
 // Sibling folders `<dir>.camopt-tmp-<pid>` / `.camopt-old-<pid>` of runs that were killed
 // (SIGKILL leaves them: no handler runs) are removed when their process no longer exists.
@@ -316,11 +348,11 @@ void MoveFolderIn(const std::string& tmp, const std::string& dir) {
 
 void OutputFolder::Commit(const Outputs& outputs) {
   std::lock_guard<std::mutex> lock(OutputMutex());
-  std::string manifest;
-  for (const auto& [name, content] : outputs.files()) manifest += name + "\n";
+  std::vector<std::string> manifest;
+  for (const auto& [name, content] : outputs.files()) manifest.push_back(name);
   try {
     WriteFilesInto(tmp_, outputs);
-    WriteWholeFile((fs::path(tmp_) / kManifest).string(), manifest);
+    WriteManifest(tmp_, manifest);
   } catch (const StudyError& e) {
     // The message names the folder the user gave, not the temporary sibling (a full disk, a quota).
     std::string m = e.what();
@@ -431,20 +463,36 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
                      "study whose result " + e.what() + " is not a finite number (check for " +
                      "extreme sizes, such as 1e308 mm or 1e-6 mm)");
   }
-  // A headline that says it did not converge (or is infeasible) makes the run incomplete
-  // (exit 3), for every kind alike; the kind's own warning is the reason.
+  // The one status of the answer (studies/status.h): a sizing or tuning kind set its own; a kind
+  // whose result says it did not converge (or found nothing feasible) gets that, for every kind
+  // alike with the kind's own warning as the reason; an analysis gets its verdict's.
   const auto result = outputs.files().find("result.json");
   if (result != outputs.files().end()) {
     const nlohmann::json r = nlohmann::json::parse(result->second, nullptr, false);
     if (r.is_object()) {
       std::string why;
       if (r.contains("warning") && r["warning"].is_string()) why = r["warning"].get<std::string>();
-      if (r.contains("converged") && r["converged"] == false)
-        outputs.MarkIncomplete(kind + ": not converged" + (why.empty() ? "" : ": " + why));
-      if (r.contains("feasible") && r["feasible"] == false)
-        outputs.MarkIncomplete(kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
+      if (!outputs.status() && r.contains("converged") && r["converged"] == false)
+        outputs.SetStatus(Status::kNotConverged, kind + ": not converged" + (why.empty() ? "" : ": " + why));
+      if (!outputs.status() && r.contains("feasible") && r["feasible"] == false)
+        outputs.SetStatus(Status::kInfeasible, kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
+      const HeadlineTable table = EvaluateHeadlines(kind, study, r);
+      if (!outputs.status() && table.exceeded.empty()) outputs.SetStatus(Status::kLimitsMet);
+      if (!outputs.status())
+        outputs.SetStatus(Status::kLimitsExceeded, VerdictLine(table, Status::kLimitsExceeded, ""));
+      // A verified answer whose own headlines break a limit would say two things: the verdict's
+      // limits are the ones the verification must have checked.
+      if (IsVerified(*outputs.status()) && !table.exceeded.empty())
+        outputs.SetStatus(Status::kNotVerifiable,
+                          "the verification passed but " + VerdictLine(table, Status::kLimitsExceeded, "") +
+                              " (the accurate check and the headline limits disagree: a camopt defect, please report it)");
       // Provenance and the warnings, the same three fields for every kind (studies/provenance.h).
       nlohmann::json stamped = r;
+      stamped["status"] = StatusName(*outputs.status());
+      if (!outputs.status_reason().empty()) stamped["status_reason"] = outputs.status_reason();
+      else stamped.erase("status_reason");
+      // "verified" is a view of the status: a kind that verifies cannot say it beside exit 3.
+      if (stamped.contains("verified")) stamped["verified"] = IsVerified(*outputs.status());
       stamped["camopt_version"] = CamoptVersion();
       stamped["study_sha256"] = ctx.study_sha256.empty() ? Sha256Hex(study.dump()) : ctx.study_sha256;
       nlohmann::json& warnings = stamped["warnings"];
@@ -453,21 +501,25 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
       outputs.AddJson("result.json", stamped);
     }
   }
+  if (!outputs.status()) outputs.SetStatus(Status::kLimitsMet);
   AddReport(kind, study, outputs);  // last: it shows every other file of the run
   return outputs;
 }
 
-void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx) {
+RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx) {
   RunContext c = ctx;
   c.study_file = file;
   const InputLimits& limits = CurrentInputLimits();
   const std::string text = ReadFileCapped(file, limits.max_file_bytes, "file");
   const nlohmann::json study = ParseStudyText(text, file, limits.max_depth);
   c.study_sha256 = Sha256Hex(text);
+  CheckNotInside(file, out_dir, "study file");
   OutputFolder folder(out_dir);  // a bad --out is reported before the work
   const Outputs outputs = RunStudy(study, c);
   folder.Commit(outputs);
-  if (!outputs.incomplete().empty()) throw StudyIncomplete(outputs.incomplete());
+  const RunAnswer answer{*outputs.status(), outputs.status_reason()};
+  if (ExitCode(answer.status, ctx.strict) != 0) throw StudyIncomplete(answer);
+  return answer;
 }
 
 const std::string& StudySchema(const std::string& kind) {

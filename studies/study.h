@@ -8,15 +8,18 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <filesystem>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "optimizers/cancel.h"
 #include "studies/input.h"
+#include "studies/status.h"
 
 namespace camopt::studies {
 
@@ -88,6 +91,9 @@ struct RunContext {
   /// SHA-256 of the study as read (RunStudyFile: the file's bytes); empty: RunStudy takes that of
   /// the study's compact JSON text (nlohmann::json::dump()), e.g. for a study given as a dict.
   std::string study_sha256;
+  /// --strict: a verified design not proven optimal, or an analysis over a limit, ends with exit 3
+  /// (studies/status.h, ExitCode).
+  bool strict = false;
 };
 
 /// Files a study produces, kept in memory until the whole run succeeded, then written together:
@@ -100,32 +106,54 @@ class Outputs {
   /// Writes every file into dir at once (an OutputFolder: temporary sibling folder, one rename).
   void WriteAll(const std::string& dir) const;
 
-  /// The study ran to the end but its answer is not what was asked (no feasible design, not
-  /// converged): the outputs are still written, then RunStudyFile throws StudyIncomplete with
-  /// the reasons (exit code 3). Several reasons are joined with "; ".
-  void MarkIncomplete(std::string reason) {
-    incomplete_ += (incomplete_.empty() ? "" : "; ") + std::move(reason);
+  /// The status of the answer (studies/status.h), set by a sizing or tuning kind (SizingStatus)
+  /// or by an analysis whose solver did not converge; RunStudy sets an analysis' from the limits of
+  /// its verdict. `reason` says why when the answer is not what was asked (the blocking limit,
+  /// what would fix it), or what a verified answer did not prove.
+  void SetStatus(Status status, std::string reason = "") {
+    status_ = status;
+    status_reason_ = std::move(reason);
   }
-  const std::string& incomplete() const { return incomplete_; }
+  const std::optional<Status>& status() const { return status_; }
+  const std::string& status_reason() const { return status_reason_; }
+  /// Why the answer is not what was asked (a status of exit code 3 without --strict), "" when it is.
+  std::string incomplete() const {
+    if (!status_ || ExitCode(*status_, false) == 0) return "";
+    return std::string(StatusName(*status_)) + (status_reason_.empty() ? "" : ": " + status_reason_);
+  }
 
  private:
   std::map<std::string, std::string> files_;
-  std::string incomplete_;
+  std::optional<Status> status_;
+  std::string status_reason_;
 };
 
-/// Thrown by RunStudyFile after the outputs were written when Outputs::MarkIncomplete was called
-/// (exit code 3); what() is the reason.
+/// Thrown by RunStudyFile after the outputs were written when the run's status gives exit code 3
+/// (studies/status.h; with RunContext::strict, also a verified design not proven optimal or an
+/// analysis over a limit); what() is the status and its reason.
+/// The answer of a run as its status (studies/status.h) and the reason that goes with it.
+struct RunAnswer {
+  Status status = Status::kLimitsMet;
+  std::string reason;
+};
+
 class StudyIncomplete : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit StudyIncomplete(RunAnswer answer)
+      : std::runtime_error(std::string(StatusName(answer.status)) + (answer.reason.empty() ? "" : ": " + answer.reason)),
+        answer_(std::move(answer)) {}
+  const RunAnswer& answer() const { return answer_; }
+
+ private:
+  RunAnswer answer_;
 };
 
 /// The output folder of one run, filled all at once. The constructor checks that `dir` can take
 /// results and creates the sibling temporary folder `<dir>.camopt-tmp-<pid>` (so a bad --out is
 /// reported before any work, with the operating system's reason, as a StudyError: exit 2);
 /// Commit writes every file there and swaps the folder in with one rename, the previous run
-/// staying in place until that rename. An existing `dir` is replaced only when it is empty or
-/// holds a previous result (result.json and no sub-folders): camopt never deletes other folders.
+/// staying in place until that rename. An existing `dir` is replaced only when NotReplaceable
+/// allows it, checked here and again at the swap: camopt never deletes files it did not write.
 /// Destroying an uncommitted OutputFolder removes the temporary folder.
 class OutputFolder {
  public:
@@ -140,6 +168,21 @@ class OutputFolder {
   std::string dir_, tmp_;
   bool committed_ = false;
 };
+
+/// The one output-folder rule of every writer (`camopt run`, `camopt sweep`, the studio's runs,
+/// the Python API): why an existing folder must not be replaced, or "" when it may be. It may be
+/// when it is empty, or when it holds the list `.camopt_manifest` of a previous camopt run and
+/// nothing else than what that list names — files, and sub-folders (a line "NAME/") that follow
+/// the same rule. A user's file, a link, a file added after the run: the folder is theirs.
+std::string NotReplaceable(const std::filesystem::path& dir);
+
+/// Writes the list of what a run put into `dir` (file names; "NAME/" for a sub-folder with its
+/// own list), which makes `dir` replaceable by the next run (NotReplaceable).
+void WriteManifest(const std::string& dir, const std::vector<std::string>& entries);
+
+/// Throws StudyError (exit 2) when `file` (a study, a sweep, its base) lies inside the existing
+/// folder `out` that a run would replace: the run would delete its own input.
+void CheckNotInside(const std::string& file, const std::string& out, const std::string& what);
 
 /// Writes every file of `outputs` into the existing folder `dir` (StudyError with the operating
 /// system's reason otherwise). OutputFolder::Commit and the sweep's merged output use it.
@@ -206,9 +249,10 @@ bool RegisterFidelity(const std::string& kind, FidelityOf fidelity);
 const FidelityOf* FindFidelity(const std::string& kind);
 
 /// Runs the study in file: parses, checks the work limits, dispatches on "study", writes into
-/// out_dir (checked first). Throws StudyError for bad input (exit 2), StudyIncomplete after
-/// writing an incomplete result (exit 3), and std::exception for other failures.
-void RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
+/// out_dir (checked first); returns the answer's status. Throws StudyError for bad input (exit 2),
+/// StudyIncomplete after writing a result whose status gives exit 3 (ctx.strict included), and
+/// std::exception for other failures.
+RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
 
 /// Runs an already parsed study, returning its outputs without writing them. result.json gets
 /// "camopt_version", "study_sha256" and "warnings" (the kind's own and PlausibilityWarnings of

@@ -14,11 +14,14 @@
 #include <sstream>
 #include <thread>
 
+#include <sys/stat.h>
+
 #include "studies/sweep_checkpoint.h"
 #include "studies/sweep_design.h"
 #include "studies/sweep_pareto.h"
 #include "studies/sweep_report.h"
 #include "studies/sweep_world.h"
+#include "studies/work_limits.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::sweep {
@@ -200,6 +203,17 @@ Sweep ParseJson(const json& doc, const std::string& file, double max_cases) {
                   Fmt(max_cases, "%.3g") + "; raise it with --max-work-factor");
   if (s.design == "sobol" && s.vary.size() > 3667)  // Boost's table of direction numbers
     vary.FailWith("the sobol design takes at most 3667 fields");
+  // The expansion itself, before it is built: one JSON value per case and field (a Sobol design of
+  // 1e6 samples over 50 fields took 14 s and 1.5 GB in --dry-run, over 3 667 fields it asked for
+  // 29 GB). Ten values per case of the cap, at the same --max-work-factor.
+  {
+    const double n_cases = sampled ? static_cast<double>(s.samples) : cases;
+    const double values = n_cases * static_cast<double>(s.vary.size());
+    if (values > 10 * max_cases)
+      vary.FailWith("the design has " + Fmt(n_cases, "%.3g") + " cases of " + std::to_string(s.vary.size()) +
+                    " fields, " + Fmt(values, "%.3g") + " values, more than the cap of " + Fmt(10 * max_cases, "%.3g") +
+                    " (expanded before any case runs); fewer samples or fields, or raise it with --max-work-factor");
+  }
 
   const Node outputs = root["outputs"];
   auto add_output = [&](const Node& n) {
@@ -433,6 +447,28 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
   // The merged files first: when they cannot be written (a full disk) the checkpoints stay and
   // --resume finds every case done. Removing the checkpoints and the rename need no space.
   WriteFilesInto(partial.string(), outputs);
+  // The lists that make this folder the next sweep's to replace (studies/study.h, NotReplaceable):
+  // the merged files and cases/, whose list names the case folders (each with its run's own list).
+  std::vector<std::string> manifest;
+  for (const auto& [name, content] : outputs.files()) manifest.push_back(name);
+  std::error_code ec;
+  if (fs::is_directory(partial / "cases", ec)) {
+    std::vector<std::string> case_folders;
+    for (const auto& e : fs::directory_iterator(partial / "cases", ec))
+      if (e.is_directory(ec)) case_folders.push_back(e.path().filename().string() + "/");
+    std::sort(case_folders.begin(), case_folders.end());
+    WriteManifest((partial / "cases").string(), case_folders);
+    manifest.push_back("cases/");
+  }
+  WriteManifest(partial.string(), manifest);
+  // Checked again at the swap: a file added to --out while the sweep ran is the user's.
+  struct stat st {};
+  if (lstat(out.c_str(), &st) == 0) {
+    const std::string why = S_ISDIR(st.st_mode) ? NotReplaceable(out) : "it is no longer a folder";
+    if (!why.empty())
+      throw StudyError("--out " + out.string() + ": the folder changed while the sweep ran (" + why +
+                       "); nothing was replaced: the sweep's results are in " + partial.string());
+  }
   RemoveCheckpoints(partial);
   MoveFolderIn(partial.string(), out.string());
 }
@@ -445,6 +481,7 @@ int Run(const Options& o, World& world) {
   std::vector<std::vector<json>> cases;
   fs::path out, partial;
   try {
+    CheckWorkFactor(o.max_work_factor);
     s = Parse(o.file, 1e6 * factor);
     if (o.case_outputs) s.case_outputs = true;
     cases = Cases(s);
@@ -455,6 +492,8 @@ int Run(const Options& o, World& world) {
     out = NormalOut(o.out);
     partial = PartialFolder(out);
     CheckReplaceable(out, o.out);
+    CheckNotInside(o.file, out.string(), "sweep file");
+    if (s.study_file != o.file) CheckNotInside(s.study_file, out.string(), "base study");
   } catch (const StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";
     return 2;

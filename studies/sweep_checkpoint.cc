@@ -10,9 +10,11 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "studies/input.h"
+#include "studies/study.h"
 
 namespace camopt::studies::sweep {
 
@@ -29,21 +31,14 @@ fs::path NormalOut(const std::string& dir) {
 }
 
 void CheckReplaceable(const fs::path& out, const std::string& dir) {
-  std::error_code ec;
-  if (!fs::exists(fs::symlink_status(out, ec))) return;
-  if (!fs::is_directory(fs::symlink_status(out, ec)))
-    throw StudyError("--out " + dir + ": exists and is not a folder");
-  bool empty = true, sweep = false, other = false;
-  for (const auto& e : fs::directory_iterator(out, ec)) {
-    empty = false;
-    const std::string name = e.path().filename().string();
-    if (name == "cases.csv") sweep = true;
-    if (e.is_directory(ec) && name != "cases") other = true;
-  }
-  if (ec) throw StudyError("--out " + dir + ": cannot read the folder: " + ec.message());
-  if (!empty && (!sweep || other))
-    throw StudyError("--out " + dir + ": the folder holds files that are not a camopt sweep " +
-                     "(no cases.csv, or other sub-folders); choose a new or empty folder");
+  struct stat st {};
+  if (lstat(out.c_str(), &st) != 0) return;
+  if (!S_ISDIR(st.st_mode)) throw StudyError("--out " + dir + ": exists and is not a folder");
+  // The rule of every writer (studies/study.h): a previous camopt result, listed in its manifest.
+  const std::string why = NotReplaceable(out);
+  if (!why.empty())
+    throw StudyError("--out " + dir + ": the folder is not a camopt sweep result camopt may replace (" + why +
+                     "); choose a new or empty folder");
 }
 
 fs::path PartialFolder(const fs::path& out) { return out.string() + ".camopt-sweep"; }

@@ -21,9 +21,9 @@ namespace camopt::studies::sweep {
 /// --out as a folder path ("out/" is "out"); throws StudyError on ".", "..", "/" or nothing.
 std::filesystem::path NormalOut(const std::string& dir);
 
-/// An existing --out is replaced only when it is empty or holds a previous sweep (cases.csv, and
-/// no sub-folder other than cases/): camopt never deletes the user's other folders. Throws
-/// StudyError otherwise (`dir` as given on the command line).
+/// An existing --out is replaced only when it is empty or holds a previous camopt result and
+/// nothing else (studies/study.h, NotReplaceable: the rule of every writer). Throws StudyError
+/// otherwise (`dir` as given on the command line).
 void CheckReplaceable(const std::filesystem::path& out, const std::string& dir);
 
 /// The partial folder of a sweep into `out`: `<out>.camopt-sweep`.

@@ -38,6 +38,17 @@ void AddVerificationJson(const objectives::Verification& v, nlohmann::json& resu
                             {"tightening", steps}};
 }
 
+void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry) {
+  const bool has = slope && !slope->sides.empty();
+  entry["re_solve_slope"] = has ? NumberOrNull(slope->slope) : nlohmann::json(nullptr);
+  entry["re_solve_sides"] = has ? nlohmann::json(slope->sides) : nlohmann::json(nullptr);
+  entry["re_solve_step"] = slope ? NumberOrNull(slope->step) : nlohmann::json(nullptr);
+  entry["re_solve_left_slope"] = slope ? NumberOrNull(slope->left) : nlohmann::json(nullptr);
+  entry["re_solve_right_slope"] = slope ? NumberOrNull(slope->right) : nlohmann::json(nullptr);
+  entry["kink"] = slope && slope->kink;
+  entry["headline"] = has ? "re_solve_slope" : "limit_cost";
+}
+
 std::string VerificationFailure(const objectives::Verification& v, const std::string& advice) {
   if (v.verified()) return "";
   if (!v.ran) return "the design could not be verified by the accurate model" + (advice.empty() ? "" : ": " + advice);

@@ -13,11 +13,19 @@
 #include <nlohmann/json.hpp>
 
 #include "objectives/verification.h"
+#include "sizing/limit_slope.h"
 
 namespace camopt::studies {
 
 /// Adds "verified" and "verification" to result (an object).
 void AddVerificationJson(const objectives::Verification& v, nlohmann::json& result);
+
+/// A binding limit's verified re-solve slope (sizing/limit_slope.h) into its `binding_limits`
+/// entry: re_solve_slope (null when no side solved or it was not computed), re_solve_sides
+/// ("central", "left", "right"; null), re_solve_step, re_solve_left_slope / re_solve_right_slope,
+/// kink, and `headline`: which of limit_cost and re_solve_slope to quote ("re_solve_slope" whenever
+/// it exists: it is what moving the limit does).
+void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry);
 
 /// The exit-3 sentence of a verification that does not hold: the limit, where, the accurate
 /// value with its error, the limit, and `advice` (what to change). Empty when it holds.

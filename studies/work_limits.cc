@@ -73,7 +73,14 @@ WorkEstimate EstimateWork(const json& study, const std::string& file, double fac
   return none;
 }
 
+void CheckWorkFactor(double factor) {
+  // NaN passes every comparison a cap makes (each would be off), infinity lifts them all.
+  if (!(factor >= 1e-6 && factor <= 1e6))
+    throw StudyError("max_work_factor: expected a number between 1e-6 and 1e6, found " + Num(factor));
+}
+
 void CheckWorkLimits(const json& study, const std::string& file, double factor) {
+  CheckWorkFactor(factor);
   const WorkEstimate e = EstimateWork(study, file, factor);
   const std::string raise = "; raise the caps with --max-work-factor (see docs/reliability.md)";
   if (e.work > e.cap)

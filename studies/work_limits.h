@@ -76,4 +76,8 @@ std::string WorkNumber(double v);
 /// raise the caps with --max-work-factor" when the work or the memory is over its cap × factor.
 void CheckWorkLimits(const nlohmann::json& study, const std::string& file, double factor);
 
+/// Throws StudyError unless 1e-6 <= factor <= 1e6 (NaN and infinity would switch every cap off):
+/// the CLI's --max-work-factor range, for the Python API and the sweep as well.
+void CheckWorkFactor(double factor);
+
 }  // namespace camopt::studies

@@ -29,16 +29,32 @@ std::string Num(double v) { return Formatted(v, std::chars_format::general, 10);
 
 std::string Px(double v) { return Formatted(v, std::chars_format::fixed, 2); }
 
-std::string Escape(const std::string& s) {
+std::string Escape(const std::string& s) { return XmlText(s); }
+
+}  // namespace
+
+std::string XmlText(const std::string& s) {
   std::string out;
-  for (char c : s) {
+  out.reserve(s.size());
+  for (size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
     if (c == '<') out += "&lt;";
     else if (c == '>') out += "&gt;";
     else if (c == '&') out += "&amp;";
-    else out += c;
+    else if (c == '"') out += "&quot;";
+    else if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') out += "\xEF\xBF\xBD";
+    else if (c == 0xEF && i + 2 < s.size() && static_cast<unsigned char>(s[i + 1]) == 0xBF &&
+             (static_cast<unsigned char>(s[i + 2]) == 0xBE || static_cast<unsigned char>(s[i + 2]) == 0xBF)) {
+      out += "\xEF\xBF\xBD";  // U+FFFE, U+FFFF
+      i += 2;
+    } else {
+      out += static_cast<char>(c);
+    }
   }
   return out;
 }
+
+namespace {
 
 // "Nice" tick step for a range, 1-2-5 series.
 double NiceStep(double range, int target) {

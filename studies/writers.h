@@ -20,6 +20,12 @@ struct Table {
   }
 };
 
+/// Text for an XML or HTML document (an SVG plot's title, report.html): & < > " escaped, and what
+/// XML 1.0 has no character for (the control characters other than tab, line feed and carriage
+/// return; U+FFFE and U+FFFF) replaced by U+FFFD, so that a study name can never make a file
+/// ill-formed. The one escaping of every writer of markup.
+std::string XmlText(const std::string& text);
+
 /// CSV with a header line; full precision (%.10g).
 std::string ToCsv(const Table& table);
 

@@ -343,7 +343,9 @@ TEST(CycloidMinSizeStudy, EachDatasheetLimitBindsIsVerifiedAndIsWhatCycloidLtcaR
     for (const char* key : {"torsional_stiffness_Nm_per_arcmin", "lost_motion_arcmin", "output_pin_bending_stress_MPa",
                             "eccentric_bearing_load_N"}) {
       const double sized = r["best"]["accurate"][key];
-      EXPECT_NEAR(l[key].get<double>(), sized, 1e-6 * sized) << tag << ": " << key;
+      // Two runs of the same crowned-tooth LTCA by two code paths: equal within the contact
+      // solves' tolerance (the crank bearing's load, a sum over the pins' load period, 4e-6).
+      EXPECT_NEAR(l[key].get<double>(), sized, 1e-5 * sized) << tag << ": " << key;
     }
   }
 }

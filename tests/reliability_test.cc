@@ -270,6 +270,48 @@ TEST(StudyInput, InvalidUtf8IsASyntaxErrorAndTheMessageStaysPrintable) {
   }
 }
 
+// A NUL byte after the document (or anywhere): refused, not the text before it taken silently.
+TEST(StudyInput, ANulByteIsRefusedNotTheEndOfTheFile) {
+  const std::string text = std::string("{\"study\": \"lcr_analysis\"}") + '\0' + "{\"more\": 1}";
+  try {
+    camopt::studies::ParseStudyText(text, "n.json", 64);
+    ADD_FAILURE() << "accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("n.json: /: expected a JSON text, found a NUL byte at byte 25"),
+              std::string::npos)
+        << e.what();
+  }
+  const auto dir = TempDir("nul");
+  WriteFile(dir / "n.json", text);
+  const auto r = RunCamopt("run " + (dir / "n.json").string() + " --quiet --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// A study name with control characters and U+FFFE / U+FFFF: every SVG plot and report.html of the
+// run stays well-formed (checked by an XML parser: Python's expat).
+TEST(Output, ANameWithControlCharactersKeepsThePlotsWellFormed) {
+  const auto dir = TempDir("xml-name");
+  json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_ii.json")));
+  study["name"] = std::string("a\x01" "b\x1f<&>\"c\xef\xbf\xbe" "d\xef\xbf\xbf");
+  WriteFile(dir / "s.json", study.dump());
+  const auto r = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "out").string() +
+                           " > /dev/null");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  int svgs = 0;
+  for (const auto& e : fs::directory_iterator(dir / "out")) {
+    if (e.path().extension() != ".svg") continue;
+    ++svgs;
+    const std::string cmd = "python3 -c \"import sys, xml.dom.minidom as m; m.parse(sys.argv[1])\" " + e.path().string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << e.path();
+  }
+  EXPECT_GT(svgs, 0);
+  const std::string report = ReadFile(dir / "out" / "report.html");
+  EXPECT_EQ(report.find('\x01'), std::string::npos);
+  EXPECT_EQ(report.find("\xef\xbf\xbe"), std::string::npos);
+  EXPECT_NE(report.find("a\xef\xbf\xbd" "b\xef\xbf\xbd&lt;&amp;&gt;&quot;c\xef\xbf\xbd" "d\xef\xbf\xbd"), std::string::npos);
+}
+
 TEST(StudyInput, DescribeOfAHugeValueIsShort) {
   json big = json::array();
   for (int i = 0; i < 200000; ++i) big.push_back(i);
@@ -487,6 +529,14 @@ TEST(BadInput, BoresAndThicknessesOffThePartsScaleAreRefusedWithWhatFits) {
   s["load"]["output_torque_Nm"] = 1e308;  // 2.8 s of work to a NaN result before
   ExpectRefusedQuickly("lcr-torque", Write(dir, "k.json", s), "/load/output_torque_Nm: ",
                        "at most 1.557e+07 N·m");  // 206 GPa · 12 mm · 10 mm · 15 rollers · 42 mm
+  s = Example("lcr_crowning_tuning.json");
+  s["load"]["overload_torque_Nm"] = 1e308;  // a segmentation fault in the contact solvers before
+  ExpectRefusedQuickly("tuning-overload", Write(dir, "k2.json", s), "/load/overload_torque_Nm: ",
+                       "a torque the output rollers can carry");
+  s = Example("disc_cam_min_size.json");
+  s["limits"]["pressure_angle_deg"] = 1e-320;  // a segmentation fault in the sparse solver before
+  ExpectRefusedQuickly("disc-cam-angle", Write(dir, "k3.json", s), "/limits/pressure_angle_deg: ",
+                       "a pressure angle >= 1 and < 89 deg");
   s = Example("globoidal_cam_paper.json");
   s["cam"]["roller_radius_mm"] = 5e-324;  // "internal error: … conformal with or undercut" before
   ExpectRefusedQuickly("globoidal-roller", Write(dir, "l.json", s), "/cam/roller_radius_mm: ",
@@ -554,7 +604,12 @@ TEST(Output, UserFilesInAPreviousResultFolderAreNeverDeleted) {
   fs::copy_file(SourcePath("studies/examples/rigidity_gearbox.json"), out / "my_study.json");
   WriteFile(out / "notes.txt", "x");
   const std::string before = ReadFile(out / "result.json");
+  // The study inside the folder it would replace: refused as such (Output.AStudyInside...).
   r = RunCamopt("run " + (out / "my_study.json").string() + " --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("is inside the folder this run replaces"), std::string::npos) << r.stderr_text;
+  // Another study into it: the user's files keep the folder.
+  r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("camopt did not write"), std::string::npos) << r.stderr_text;
   EXPECT_TRUE(fs::exists(out / "my_study.json"));
@@ -567,6 +622,35 @@ TEST(Output, UserFilesInAPreviousResultFolderAreNeverDeleted) {
   r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out " + plain.string());
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
   EXPECT_EQ(ReadFile(plain / "result.json"), "{}");
+}
+
+// The re-run study a sizing writes into its own result folder (best_disc_cam.json), run with that
+// folder as --out: the folder is a camopt result, but the run would delete its own study and the
+// sizing's result. Refused with exit 2 before any work; nothing changes.
+TEST(Output, AStudyInsideTheFolderItWouldReplaceIsRefused) {
+  const auto dir = TempDir("study-inside");
+  const auto out = dir / "sized";
+  auto r = RunCamopt("run " + SourcePath("studies/examples/disc_cam_min_size.json") + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  ASSERT_TRUE(fs::exists(out / "best_disc_cam.json"));
+  const std::string before = ReadFile(out / "result.json");
+  const auto started = std::chrono::steady_clock::now();
+  r = RunCamopt("run " + (out / "best_disc_cam.json").string() + " --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 5.0);
+  EXPECT_NE(r.stderr_text.find("best_disc_cam.json is inside the folder this run replaces"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_TRUE(fs::exists(out / "best_disc_cam.json"));
+  EXPECT_EQ(ReadFile(out / "result.json"), before);
+  // Through another spelling of the same folder, and with --convergence.
+  r = RunCamopt("run " + (out / "best_disc_cam.json").string() + " --quiet --out " + (dir / "." / "sized" / "").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  r = RunCamopt("run " + (out / "best_disc_cam.json").string() + " --quiet --convergence --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_EQ(ReadFile(out / "result.json"), before);
+  // Beside it, into another folder: runs.
+  r = RunCamopt("run " + (out / "best_disc_cam.json").string() + " --quiet --out " + (dir / "again").string());
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
 }
 
 // SIGKILL leaves OUT.camopt-tmp-PID behind (no handler runs); the next run into OUT removes

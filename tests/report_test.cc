@@ -198,13 +198,14 @@ TEST(HtmlReport, ASizingResultWithoutADesignSaysSoInsteadOfNoLimits) {
   const HeadlineTable table = EvaluateHeadlines("report_test_kind", {{"name", "n"}},
                                                 nlohmann::json::parse(out.files().at("result.json")));
   EXPECT_TRUE(table.no_design);
-  EXPECT_EQ(VerdictLine(table), "No design meets the limits: edge-loaded: crown the rollers");
+  EXPECT_EQ(VerdictOf(table, nlohmann::json::object()), "No design meets the limits: edge-loaded: crown the rollers");
   const std::string html = HtmlReport("report_test_kind", {{"name", "n"}}, out);
   EXPECT_NE(html.find("<div class=\"verdict bad\">No design meets the limits: edge-loaded"), std::string::npos);
   EXPECT_EQ(html.find("No limits to check"), std::string::npos);
   Outputs bare;
   bare.AddJson("result.json", {{"best", nullptr}});
-  EXPECT_EQ(VerdictLine(EvaluateHeadlines("report_test_kind", {}, nlohmann::json::parse(bare.files().at("result.json")))),
+  EXPECT_EQ(VerdictOf(EvaluateHeadlines("report_test_kind", {}, nlohmann::json::parse(bare.files().at("result.json"))),
+                      nlohmann::json::object()),
             "No design meets the limits (result.json: best is null)");
 }
 

@@ -202,6 +202,85 @@ TEST(Serve, RefusesPathsOutsideItsFolderAlsoThroughSymlinks) {
   EXPECT_EQ(run->status, 403);
 }
 
+// A save writes a temporary of its own (O_CREAT | O_EXCL | O_NOFOLLOW under the folder's handle):
+// a link placed at the temporary's old name, or at the next names, is never written through, and
+// the study stays a regular file inside the folder.
+TEST(Serve, ASaveNeverWritesThroughALinkAtItsTemporaryName) {
+  const fs::path base = TempDir("serve-save-link");
+  const fs::path dir = base / "folder";
+  fs::create_directories(dir);
+  WriteFile(base / "outside.txt", "untouched");
+  WriteFile(dir / "s.json", "{\"study\": \"lcr_analysis\"}");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  fs::create_symlink(base / "outside.txt", dir / ".s.json.camopt-save");
+  for (int k = 1; k <= 8; ++k)
+    fs::create_symlink(base / "outside.txt",
+                       dir / (".s.json.camopt-save-" + std::to_string(studio.pid()) + "-" + std::to_string(k)));
+  auto c = studio.Client();
+  auto r = c.Put("/api/file?path=s.json", "{\"study\": \"disc_cam\"}", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(ReadFile(base / "outside.txt"), "untouched");
+  EXPECT_FALSE(fs::is_symlink(dir / "s.json"));
+  EXPECT_EQ(ReadFile(dir / "s.json"), "{\"study\": \"disc_cam\"}");
+}
+
+// Eight concurrent saves of one study, thirty times: the file is always one whole body, never a
+// mix of two.
+TEST(Serve, ConcurrentSavesOfOneStudyNeverMixTheirBodies) {
+  const fs::path dir = TempDir("serve-save-race");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  std::vector<std::string> bodies;
+  for (int k = 0; k < 8; ++k)
+    bodies.push_back("{\"study\": \"lcr_analysis\", \"description\": \"" + std::string(200000, char('a' + k)) + "\"}");
+  for (int trial = 0; trial < 30; ++trial) {
+    std::vector<std::thread> savers;
+    std::vector<int> codes(8, -1);
+    for (int k = 0; k < 8; ++k)
+      savers.emplace_back([&, k] {
+        auto c = studio.Client();
+        auto r = c.Put("/api/file?path=s.json", bodies[k], "application/json");
+        codes[k] = r ? r->status : -1;
+      });
+    for (auto& t : savers) t.join();
+    for (int k = 0; k < 8; ++k) EXPECT_EQ(codes[k], 200) << "trial " << trial << " save " << k;
+    const std::string saved = ReadFile(dir / "s.json");
+    EXPECT_NE(std::find(bodies.begin(), bodies.end(), saved), bodies.end()) << "trial " << trial;
+  }
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find(".camopt-save"), std::string::npos) << e.path();
+}
+
+// Six concurrent requests to run one study: exactly one is accepted, the others get 409.
+TEST(Serve, OfSixConcurrentRunsOfOneStudyOneIsAccepted) {
+  const fs::path dir = TempDir("serve-run-race");
+  fs::copy_file(Example("cycloid_min_size_paper.json"), dir / "s.json");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  std::vector<std::thread> starters;
+  std::vector<int> codes(6, -1);
+  std::vector<std::string> bodies(6);
+  for (int k = 0; k < 6; ++k)
+    starters.emplace_back([&, k] {
+      auto c = studio.Client();
+      auto r = c.Post("/api/runs", "{\"path\": \"s.json\"}", "application/json");
+      codes[k] = r ? r->status : -1;
+      if (r) bodies[k] = r->body;
+    });
+  for (auto& t : starters) t.join();
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), 201), 1);
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), 409), 5);
+  auto c = studio.Client();
+  for (int k = 0; k < 6; ++k)
+    if (codes[k] == 201) {
+      const int id = json::parse(bodies[k])["id"].get<int>();
+      c.Post(("/api/runs/" + std::to_string(id) + "/cancel").c_str(), "", "application/json");
+      FollowToEnd(studio, id);
+    }
+}
+
 TEST(Serve, RefusesBodiesAboveTheLimit) {
   const fs::path dir = TempDir("serve-body");
   Studio studio(dir);

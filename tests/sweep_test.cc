@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <thread>
@@ -312,6 +313,110 @@ TEST(SweepCli, AnOutputFolderHoldingOtherFilesIsRefusedBeforeAnyCase) {
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 7);
 }
 
+// A folder of the user's that happens to hold a cases.csv (and a cases/ folder) is not a sweep's:
+// only a folder with camopt's manifest of what it wrote, and nothing else, is replaced.
+TEST(SweepCli, AUsersCasesCsvIsNotTakenForAPreviousSweep) {
+  const auto dir = TempDir("sweep-users-cases");
+  WriteFile(dir / "s.json", CycloidSweep({100}).dump());
+  fs::create_directories(dir / "mine" / "cases");
+  WriteFile(dir / "mine" / "cases.csv", "my,own\n1,2\n");
+  WriteFile(dir / "mine" / "report.docx", "a document");
+  WriteFile(dir / "mine" / "cases" / "measured.csv", "x\n1\n");
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + (dir / "mine").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("no .camopt_manifest"), std::string::npos) << r.stderr_text;
+  EXPECT_EQ(ReadFile(dir / "mine" / "cases.csv"), "my,own\n1,2\n");
+  EXPECT_EQ(ReadFile(dir / "mine" / "report.docx"), "a document");
+  EXPECT_EQ(ReadFile(dir / "mine" / "cases" / "measured.csv"), "x\n1\n");
+  EXPECT_FALSE(fs::exists(dir / "mine.camopt-sweep"));
+}
+
+// A previous sweep's folder (with its manifest) that the user added files to is theirs: at the
+// top, under cases/ and inside a case's folder; the folder is replaced again once they are gone.
+TEST(SweepCli, AFolderWithAManifestButForeignFilesKeepsThem) {
+  const auto dir = TempDir("sweep-foreign");
+  WriteFile(dir / "s.json", CycloidSweep({100}).dump());
+  const std::string sweep = "sweep " + (dir / "s.json").string() + " --quiet --case-outputs --out " + (dir / "o").string();
+  ASSERT_EQ(RunCamopt(sweep).exit_code, 0);
+  ASSERT_TRUE(fs::exists(dir / "o" / ".camopt_manifest"));
+  ASSERT_TRUE(fs::exists(dir / "o" / "cases" / ".camopt_manifest"));
+  for (const fs::path& foreign : {dir / "o" / "notes.txt", dir / "o" / "cases" / "notes.txt",
+                                  dir / "o" / "cases" / "0000" / "notes.txt"}) {
+    SCOPED_TRACE(foreign.string());
+    WriteFile(foreign, "keep");
+    const auto r = RunCamopt(sweep);
+    EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find("notes.txt, which camopt did not write"), std::string::npos) << r.stderr_text;
+    EXPECT_EQ(ReadFile(foreign), "keep");
+    fs::remove(foreign);
+  }
+  EXPECT_EQ(RunCamopt(sweep).exit_code, 0);
+}
+
+// A file the user adds to the output folder while a sweep into it runs is kept: the swap refuses
+// (exit 2) and says where the sweep's results are.
+TEST(SweepCli, AFileAddedWhileTheSweepRunsIsKept) {
+  const auto dir = TempDir("sweep-added");
+  WriteFile(dir / "s.json", CycloidSweep({100}).dump());
+  ASSERT_EQ(RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string()).exit_code, 0);
+  // A slower sweep (finer grid, more cases) into the same folder, on one thread.
+  json slow = CycloidSweep({100, 150, 200, 250, 300, 350}, {0.002, 0.004, 0.006, 0.008, 0.01});
+  slow["base"]["analysis"] = {{"crank_angle_steps", 12}, {"grid", {16, 16}}};
+  WriteFile(dir / "slow.json", slow.dump());
+  const std::string err = (dir / "err.txt").string();
+  const std::string cmd = std::string(CAMOPT_BINARY) + " sweep " + (dir / "slow.json").string() +
+                          " --quiet --jobs 1 --out " + (dir / "o").string() + " 2> " + err + "; echo $? > " +
+                          (dir / "code.txt").string();
+  std::thread sweep([cmd] { EXPECT_EQ(std::system(cmd.c_str()), 0); });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!fs::exists(dir / "o.camopt-sweep" / "checkpoint-0.jsonl") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  WriteFile(dir / "o" / "measurements.csv", "mine");
+  sweep.join();
+  EXPECT_EQ(ReadFile(dir / "code.txt"), "2\n") << ReadFile(err);
+  EXPECT_NE(ReadFile(err).find("changed while the sweep ran"), std::string::npos) << ReadFile(err);
+  EXPECT_EQ(ReadFile(dir / "o" / "measurements.csv"), "mine");
+  EXPECT_TRUE(fs::exists(dir / "o.camopt-sweep" / "cases.csv")) << "the results are kept where the message says";
+}
+
+// A sweep file (or its base study) inside the folder it would replace: refused, the file kept.
+TEST(SweepCli, ASweepFileInsideItsOutputFolderIsRefused) {
+  const auto dir = TempDir("sweep-inside");
+  WriteFile(dir / "s.json", CycloidSweep({100}).dump());
+  ASSERT_EQ(RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string()).exit_code, 0);
+  // Listed in the manifest as if camopt had written it: the folder would be replaceable.
+  fs::copy_file(dir / "s.json", dir / "o" / "s.json");
+  std::ofstream(dir / "o" / ".camopt_manifest", std::ios::app) << "s.json\n";
+  const auto r = RunCamopt("sweep " + (dir / "o" / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("is inside the folder this run replaces"), std::string::npos) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(dir / "o" / "s.json"));
+}
+
+// A design is counted before it is expanded: 1e6 Sobol samples over 11 fields (1.1e7 values, above
+// the cap of 1e7) is refused within a second, --dry-run included, naming the cap.
+TEST(SweepCli, AHugeSampledDesignIsRefusedBeforeItIsExpanded) {
+  const auto dir = TempDir("sweep-huge");
+  json s = CycloidSweep({100});
+  s["design"] = "sobol";
+  s["samples"] = 1000000;
+  s["vary"] = json::array();
+  for (const char* p : {"/drive/roller_position_radius_mm", "/drive/roller_radius_mm", "/drive/eccentricity_mm",
+                        "/drive/face_width_mm", "/modification/delta_position_um", "/modification/delta_radius_um",
+                        "/material/youngs_modulus_GPa", "/material/poisson_ratio", "/load/torque_Nm",
+                        "/crowning/coefficient_mm", "/crowning/effective_length_mm"}) {
+    const json::json_pointer at(p);
+    const double v = s["base"].contains(at) ? s["base"][at].get<double>() : 18.0;  // effective length: absent
+    s["vary"].push_back({{"path", p}, {"range", {v - 0.01 * std::abs(v) - 1e-3, v + 0.01 * std::abs(v) + 1e-3}}});
+  }
+  WriteFile(dir / "s.json", s.dump());
+  const auto started = std::chrono::steady_clock::now();
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --dry-run");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1.0);
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("1.1e+07 values, more than the cap of 1e+07"), std::string::npos) << r.stderr_text;
+}
+
 TEST(SweepCli, DryRunPrintsTheNumberOfCases) {
   const auto dir = TempDir("sweep-dry");
   WriteFile(dir / "s.json", CycloidSweep({100, 200, 300, 400}).dump());
@@ -542,10 +647,14 @@ TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
   EXPECT_FALSE(fs::exists(partial));
   int folders = 0;
   for (const auto& e : fs::directory_iterator(out / "cases")) {
+    if (e.path().filename() == ".camopt_manifest") continue;  // the list of the case folders
     EXPECT_EQ(e.path().filename().string().size(), 4u) << e.path();
     ++folders;
   }
   EXPECT_EQ(folders, 12);
+  // The manifest lists exactly those folders: the next sweep may replace them.
+  const std::string listed = ReadFile(out / "cases" / ".camopt_manifest");
+  EXPECT_EQ(std::count(listed.begin(), listed.end(), '\n'), 12);
   // A resume of a different sweep is refused, naming the checkpoint.
   pid = StartSweepUntilCheckpointed(sweep, out, "2", 1, &status);
   ASSERT_GT(pid, 0) << "the sweep ended before it could be interrupted";

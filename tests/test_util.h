@@ -317,6 +317,8 @@ inline void ExpectStudyRejected(const nlohmann::json& study, const std::string& 
 inline nlohmann::json WithoutRunStamp(nlohmann::json result) {
   result.erase("camopt_version");
   result.erase("study_sha256");
+  result.erase("status");  // the runner's one status of the answer (studies/status.h)
+  result.erase("status_reason");
   if (result.contains("warnings") && result["warnings"].is_array() && result["warnings"].empty())
     result.erase("warnings");
   return result;

@@ -96,7 +96,10 @@ inline std::string CheckOutputPins(const OutputPins& m, double eccentricity_mm) 
   if (m.roller_radius_mm > 0.0 && !(m.roller_radius_mm > m.pin_radius_mm))
     return "roller_radius_mm must exceed pin_radius_mm (a roller on the pin)";
   if (!positive(m.face_width_mm) || !positive(m.e_star_MPa)) return "face width and E* must be > 0";
-  if (!(m.clearance_mm(eccentricity_mm) >= 0.0)) return "hole_radius_mm must be >= contact radius + e";
+  // Zero clearance (the rigid W-mechanism, every pin touching its hole) is a design: a hole given
+  // as r_w + e in decimals may come out a rounding below it (11.7 − 7.2 − 4.5 = −8.9e-16 mm).
+  if (!(m.clearance_mm(eccentricity_mm) >= -1e-12 * std::max(1.0, std::abs(m.hole_radius_mm))))
+    return "hole_radius_mm must be >= contact radius + e";
   return {};
 }
 

@@ -81,6 +81,15 @@ class BadStudy(unittest.TestCase):
         self.assertEqual(cm.exception.path, "/load/output_torque_Nm")
         self.assertEqual(cm.exception.found, "nothing")
 
+    def test_a_non_finite_work_factor_is_refused(self):
+        # NaN or infinity would switch every work cap off (a MemoryError instead of the estimate).
+        for factor in (float("nan"), float("inf"), 0.0, 1e7):
+            with self.assertRaises(camopt.StudyError) as cm:
+                camopt.run(helpers.small_lcr_ii(), max_work_factor=factor)
+            self.assertIn("max_work_factor", str(cm.exception))
+        r = camopt.run(helpers.small_lcr_ii(), max_work_factor=2.0)
+        self.assertEqual(r["status"], "limits_met")
+
     def test_an_unknown_kind(self):
         with self.assertRaises(camopt.StudyError) as cm:
             camopt.run({"study": "no_such_kind"})

@@ -1,0 +1,49 @@
+// What a binding limit costs, by re-solving: the sized objective at the study's limit moved by ±h,
+// each re-solve verified as the answer was. On a piecewise-smooth sizing (a peak over crank angles
+// changing its angle, a row becoming active) the KKT multiplier is the one-sided derivative of the
+// active piece only; the re-solve slope is what moving the limit does (design-notes §2).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace camopt::objectives {
+
+struct LimitSlope {
+  double step = 0;  ///< h, in the limit's unit
+  /// (f(L) − f(L − h))/h and (f(L + h) − f(L))/h; NaN where that side found no verified design
+  double left = std::numeric_limits<double>::quiet_NaN(), right = std::numeric_limits<double>::quiet_NaN();
+  /// Central (f(L + h) − f(L − h))/2h where both sides solved, else the side that did; NaN if none.
+  double slope = std::numeric_limits<double>::quiet_NaN();
+  std::string sides;  ///< "central", "left", "right", or "" when neither side solved
+  /// The two sides' slopes differ by more than their errors (the objective's solver tolerance over
+  /// h each) plus 10% of the larger (the curvature of a smooth problem over ±h changes a slope by
+  /// f''·h, a few percent at h = 1% of the limit): the cost is not one number there.
+  bool kink = false;
+};
+
+/// The slope from the verified objectives at L − h, L and L + h (NaN: no verified design there);
+/// `objective_tolerance` is the objective's absolute uncertainty from the solver's tolerances.
+inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, double h, double objective_tolerance) {
+  LimitSlope s;
+  s.step = h;
+  if (!(h > 0) || !std::isfinite(f0)) return s;
+  if (std::isfinite(f_minus)) s.left = (f0 - f_minus) / h;
+  if (std::isfinite(f_plus)) s.right = (f_plus - f0) / h;
+  if (std::isfinite(s.left) && std::isfinite(s.right)) {
+    s.slope = (f_plus - f_minus) / (2 * h);
+    s.sides = "central";
+    const double error = 2 * objective_tolerance / h;  // each side's
+    s.kink = std::abs(s.right - s.left) > 2 * error + 0.1 * std::max(std::abs(s.left), std::abs(s.right));
+  } else if (std::isfinite(s.left)) {
+    s.slope = s.left;
+    s.sides = "left";
+  } else if (std::isfinite(s.right)) {
+    s.slope = s.right;
+    s.sides = "right";
+  }
+  return s;
+}
+
+}  // namespace camopt::objectives

@@ -1,0 +1,56 @@
+// The one status of a run's answer. Every view of the answer — the exit code, the verdict line on
+// stdout and in report.html, result.json's "status" and "verified", a sweep's case status — is a
+// function of it, so they cannot disagree.
+//
+// Sizing and tuning kinds set their status from what the optimizer and the accurate model's
+// verification (objectives/verification.h) found; analyses get theirs from the limits of their
+// verdict (studies/report.h, EvaluateHeadlines), or "not_converged" when their own solver says so.
+//
+//   status                 meaning                                                   exit
+//   optimal_verified       the optimizer's local test met; every limit verified         0
+//   feasible_verified      every limit verified; the optimizer did not prove the       0 (3 with --strict)
+//                          design locally optimal (a smaller one may exist)
+//   infeasible             no design meets the limits (nothing to verify)               3
+//   not_verifiable         the answer's limits cannot be checked by the accurate        3
+//                          model (a quantity that does not converge, no check run)
+//   not_converged          the solve or the verification did not reach an answer         3
+//   limits_met             an analysis within every limit of its verdict                0
+//   limits_exceeded        an analysis over a limit of its verdict                      0 (3 with --strict)
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace camopt::studies {
+
+enum class Status {
+  kOptimalVerified,
+  kFeasibleVerified,
+  kInfeasible,
+  kNotVerifiable,
+  kNotConverged,
+  kLimitsMet,
+  kLimitsExceeded,
+};
+
+/// result.json's spelling: "optimal_verified", "feasible_verified", "infeasible", "not_verifiable",
+/// "not_converged", "limits_met", "limits_exceeded".
+const char* StatusName(Status status);
+
+/// The status of a spelling of StatusName, or nothing (a result.json of an older camopt).
+std::optional<Status> StatusFromName(const std::string& name);
+
+/// The `verified` flag of a sizing or tuning result: the status is one of the two verified ones.
+bool IsVerified(Status status);
+
+/// The exit code of a run that ended with `status`: 0 (the answer is what was asked) or 3 (it ran
+/// to the end but the answer is not what was asked); `strict` (--strict) also gives 3 for a
+/// verified design not proven optimal and for an analysis over a limit.
+int ExitCode(Status status, bool strict);
+
+/// The status of a sizing or tuning answer from what its search found: whether there is a design,
+/// whether the accurate model's check ran on it, whether it holds, and whether the optimizer's own
+/// test was met.
+Status SizingStatus(bool has_design, bool verification_ran, bool verified, bool converged);
+
+}  // namespace camopt::studies
