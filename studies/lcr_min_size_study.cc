@@ -722,6 +722,9 @@ nlohmann::json LcrAnalysisStudyOf(const Study& s, const LcrSizingSpec& spec, con
   if (std::isfinite(spec.limits.roller_load_N)) lim["roller_load_N"] = spec.limits.roller_load_N;
   lim["undercut_margin_mm"] = spec.limits.undercut_margin_mm;
   lim["roller_gap_mm"] = spec.limits.roller_gap_mm;
+  // The life the design was sized for, so that re-running it checks that limit too (with the speed
+  // and the ratings written below).
+  if (spec.limits.life_h > 0) lim["life_h"] = spec.limits.life_h;
   a["limits"] = lim;
   a["analysis"] = {{"angle_steps", s.options.dense_steps}};
   return a;

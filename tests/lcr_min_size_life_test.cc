@@ -192,6 +192,9 @@ TEST(LcrMinSizeLife, LifeLimitBindsAndCostsDiameter) {
   const json a = json::parse(ReadFile(dir / "analysis" / "result.json"));
   for (const char* key : {"input_roller_L10h", "output_roller_L10h", "eccentric_bearing_L10h", "shortest_L10h"})
     EXPECT_NEAR(a["life"][key].get<double>(), life[key].get<double>(), 1e-9 * life[key].get<double>()) << key;
+  // ... and checks the life limit the design was sized for (it was left out: "no limit set").
+  EXPECT_EQ(a["life"]["life_h"], Example("lcr_min_size_life.json")["limits"]["life_h"]);
+  EXPECT_EQ(a["status"], "limits_met");
 }
 
 // A catalogue that carries C and C0: with a life limit, the chosen roller meets it; an entry
