@@ -13,10 +13,26 @@
 
 namespace camopt::bench {
 
+/// The example's path in the source tree (CAMOPT_SOURCE_DIR, set by CMake: __FILE__ is relative
+/// under ccache).
+inline std::string ExamplePath(const char* name) {
+  return (std::filesystem::path(CAMOPT_SOURCE_DIR) / "studies/examples" / name).string();
+}
+
+/// The example with `edit` applied to its JSON (a variant that is not an example itself).
+template <typename Edit>
+inline void RunExampleVariant(benchmark::State& state, const char* name, Edit edit) {
+  const std::string file = ExamplePath(name);
+  nlohmann::json j = studies::LoadStudyFile(file);
+  edit(j);
+  studies::RunContext ctx;
+  ctx.study_file = file;
+  ctx.quiet = true;
+  for (auto _ : state) benchmark::DoNotOptimize(studies::RunStudy(j, ctx));
+}
+
 inline void RunExampleStudy(benchmark::State& state, const char* name) {
-  // The source tree (CAMOPT_SOURCE_DIR, set by CMake: __FILE__ is relative under ccache).
-  const std::string file =
-      (std::filesystem::path(CAMOPT_SOURCE_DIR) / "studies/examples" / name).string();
+  const std::string file = ExamplePath(name);
   const nlohmann::json j = studies::LoadStudyFile(file);
   studies::RunContext ctx;
   ctx.study_file = file;

@@ -383,6 +383,59 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   return p;
 }
 
+Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
+  if (!LifeRows(spec)) throw std::invalid_argument("LCR longest life: no life limit");
+  // The relaxation: the life rows and geometry only (a kAggregate spec without stress, load and
+  // efficiency limits has one force row per cam, computed and not constrained).
+  LcrSizingSpec s = spec;
+  s.limits.contact_stress_MPa = kInf;
+  s.limits.roller_load_N = kInf;
+  s.limits.min_efficiency = 0.0;
+  s.form = LcrConstraintForm::kAggregate;
+  s.robust = nullptr;
+  Problem sizing = MakeLcrSizingProblem(s);
+  const Layout l = LayoutOf(s);
+  const std::vector<OutputBlock> full = Blocks(s);
+  const int n_full = full.back().offset + full.back().size;
+  const char* geometric[] = {"input_roller_gap_mm",      "output_roller_gap_mm", "input_undercut_margin_mm",
+                             "output_undercut_margin_mm", "input_pitch_clearance_mm", "output_pitch_clearance_mm"};
+  std::vector<std::string> lives = {"input_roller_life", "output_roller_life"};
+  if (s.life->eccentric) lives.push_back("eccentric_bearing_life");
+  std::vector<int> picked;  // full-output index of each screen output after t
+  std::vector<OutputBlock> blocks = {{"shortest_life_margin", 0, 1}};
+  for (const char* g : geometric) {
+    picked.push_back(sizing.evaluator->block(g).offset);
+    blocks.push_back({g, int(blocks.size()), 1});
+  }
+  for (const std::string& b : lives) {
+    picked.push_back(sizing.evaluator->block(b).offset);
+    blocks.push_back({b + "_excess", int(blocks.size()), 1});
+  }
+  const int t_index = l.radius_index, first_life = 1 + 6;
+  Problem p;
+  p.variables = sizing.variables;
+  // t: a factor e^±50 of life spans any design the box holds.
+  p.variables[size_t(t_index)] = {"shortest_life_margin", -50.0, 50.0, 0.0, 1.0};
+  p.evaluator = MakeEvaluator<kJetSize>(
+      p.num_vars(), blocks, [s, picked, t_index, n_full, first_life](auto x, auto y) {
+        using T = typename decltype(y)::value_type;
+        std::vector<T> all(size_t(n_full), T(0.0));
+        Evaluate(s, x, std::span<T>(all));  // x[t_index] only enters the envelope rows, unused here
+        const T t = x[size_t(t_index)];
+        y[0] = t;
+        for (size_t i = 0; i < picked.size(); ++i)
+          y[i + 1] = int(i + 1) >= first_life ? all[size_t(picked[i])] - t : all[size_t(picked[i])];
+      });
+  p.objective = "shortest_life_margin";
+  p.objective_scale = 1.0;
+  p.maximize = true;
+  for (const Constraint& c : sizing.constraints)
+    for (const char* g : geometric)
+      if (c.output == g) p.constraints.push_back(c);
+  for (const std::string& b : lives) p.constraints.push_back({b + "_excess", 0.0, kInf, 1.0});
+  return p;
+}
+
 std::vector<std::vector<double>> LcrStartingPoints(const LcrSizingSpec& spec, int count) {
   const Layout l = LayoutOf(spec);
   const auto mid = [](const std::array<double, 2>& b) { return 0.5 * (b[0] + b[1]); };

@@ -173,6 +173,17 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   angles of a full revolution; present when limits.min_efficiency > 0).
 Problem MakeLcrSizingProblem(const LcrSizingSpec& spec);
 
+/// The longest-life problem of one combination, a bound solved before the size (sizing/lcr_min_size.h):
+/// maximise t, the smallest life margin ln(L10h / life_h) of the rated bearings, over the sizing's
+/// variables with t in the place of R, subject only to the geometric rows (roller gap, undercut margin,
+/// pitch-point clearance); the stress, load and efficiency limits and the outer diameter are left
+/// out, so the problem is a relaxation: no design of the combination that meets every limit lives
+/// longer than its maximum. Needs limits.life_h > 0 and spec.life. Outputs: shortest_life_margin
+/// (t, the objective), the six geometric rows of MakeLcrSizingProblem, and input_roller_life_excess,
+/// output_roller_life_excess, eccentric_bearing_life_excess (the margin minus t, >= 0). The
+/// variable vector is the sizing problem's layout (LcrDesign reads it; its last entry is t).
+Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec);
+
 /// count starting points for the sizing problem of spec (the first is the problem's own initial
 /// point): heuristics that put the rollers where they have room and the pitch point at a fraction
 /// of the turret radius, varied from one start to the next. Not feasible in general.

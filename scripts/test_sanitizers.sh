@@ -74,7 +74,7 @@ long_tests=(
   'EveryExample/ConvergenceOfExample\.CoarseSettings/(lcr_min_size_life|disc_cam_translating) '
   # more whole LCR sizings (DefaultReachesTheExactOptimum, LimitSensitivityMatchesResolving and the
   # 3D sizing's independent check stay)
-  '^LcrMinSizeLife\.LifeLimitBindsAndCostsDiameter'
+  '^LcrMinSizeLife\.(LifeLimitBindsAndCostsDiameter|AHardLifeLimitSkipsTheCombinationsOutOfReach)'
   '^LcrMinSize\.(RatioMinus90BestSatisfiesEveryLimitInLcrAnalysis|EfficiencyLimitIsHeld)'
   '^LcrSizing3D\.CrownRadiusAndCamThicknessVariablesIpoptAndSlsqpAgree'
   # camopt init's template of every kind run whole (the templates are examples that run above;

@@ -1,6 +1,7 @@
 #include "sizing/lcr_min_size.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -129,15 +130,72 @@ double WorstRelativeViolation(const LcrDenseCheck& c) {
   return worst;
 }
 
+// Step 0 of the header comment: the longest life of the combination, and whether it is out of
+// reach. Fills out.longest_life_h; when out of reach also out.x, design, check, result and note.
+void LongestLife(const LcrSizingSpec& spec, const LcrMinSizeOptions& options, LcrMinSizeOutcome& out) {
+  const Problem problem = MakeLcrLongestLifeProblem(spec);
+  const size_t t_index = problem.variables.size() - 1;
+  optimizers::SolverResult best;
+  int values = 0, gradients = 0, iterations = 0;
+  for (std::vector<double> x0 : LcrStartingPoints(spec, options.starts)) {
+    x0[t_index] = 0.0;
+    optimizers::SolverOptions so = options.solver;
+    so.initial = x0;
+    so.fallback_backend.clear();
+    optimizers::SolverResult r = optimizers::Solve(problem, so);
+    values += r.value_evaluations;
+    gradients += r.gradient_evaluations;
+    iterations += r.iterations;
+    if (r.ok() && (!best.ok() || r.objective > best.objective)) best = std::move(r);
+    // Reached on the rows: the combination cannot be out of reach (that needs both the rows' and
+    // the dense check's life below the limit), so the other starts and the check are not needed.
+    if (best.ok() && best.objective >= 0) break;
+  }
+  out.result.value_evaluations = values;  // counted into the size solve's when it follows
+  out.result.gradient_evaluations = gradients;
+  out.result.iterations = iterations;
+  if (!best.ok() || best.objective >= 0) return;
+  std::string note;
+  const std::optional<LcrDenseCheck> c = TryCheck(spec, best.x, options.dense_steps, nullptr, note);
+  if (!c || !std::isfinite(c->shortest_L10h)) return;
+  const double rows = spec.limits.life_h * std::exp(best.objective), dense = c->shortest_L10h;
+  const double longest = std::max(rows, dense);
+  out.longest_life_h = longest;
+  const double error = std::abs(rows - dense) / std::min(rows, dense) + 0.01;
+  if (!(longest * (1 + error) < spec.limits.life_h)) return;
+  out.life_out_of_reach = true;
+  out.x = best.x;
+  out.design = LcrDesign(spec, best.x);
+  out.check = c;
+  out.result = best;
+  out.result.status = SolverStatus::kInfeasible;
+  out.result.value_evaluations = values;
+  out.result.gradient_evaluations = gradients;
+  out.result.iterations = iterations;
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "the longest life any design of this combination reaches within the variable bounds is %.6g h "
+                "(the design with the longest life, ignoring the other limits; within %.2g%%) < the %.6g h limit: "
+                "not sized",
+                longest, 100 * error, spec.limits.life_h);
+  out.note = buf;
+  out.result.message = buf;
+}
+
 }  // namespace
 
 
 LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOptions& options) {
   LcrMinSizeOutcome out;
+  if (spec.limits.life_h > 0 && spec.life) {
+    LongestLife(spec, options, out);
+    if (out.life_out_of_reach) return out;
+  }
   LcrSizingSpec smooth = LcrTightened(spec);
   smooth.form = options.smooth_form;
   const Problem problem = MakeLcrSizingProblem(smooth);
-  int values = 0, gradients = 0, iterations = 0;
+  int values = out.result.value_evaluations, gradients = out.result.gradient_evaluations,
+      iterations = out.result.iterations;
   struct Trial {
     SolverResult result;
     std::optional<Polished> polished;

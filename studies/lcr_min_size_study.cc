@@ -182,6 +182,7 @@ nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives:
 
 std::string StatusOf(const Candidate& c) {
   if (c.feasible()) return "converged";
+  if (c.outcome.life_out_of_reach) return "life_out_of_reach";
   const auto& r = c.outcome.result;
   if (r.ok() && c.outcome.check && !c.outcome.check->ok()) return "fails_dense_check";
   if (r.ok()) return "failed";  // converged solve without a dense check (degenerate geometry)
@@ -198,6 +199,7 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
   j["feasible"] = c.feasible();
   j["solver_message"] = o.result.message;
   if (!o.note.empty()) j["note"] = o.note;
+  if (o.longest_life_h) j["longest_life_h"] = *o.longest_life_h;
   j["evaluations"] = {{"values", o.result.value_evaluations},
                       {"gradients", o.result.gradient_evaluations},
                       {"iterations", o.result.iterations},

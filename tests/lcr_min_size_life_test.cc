@@ -278,5 +278,124 @@ TEST(LcrMinSizeLife, BadInputIsAClearErrorWithExitCode2) {
                                        "expected {\"dynamic_rating_N\", \"reference_diameter_mm\"}");
 }
 
+
+// The ratio −90 study at 20 000 h and 3000 rpm (one duty line at 80 N·m; rollers scaled from a
+// 10 mm × 10 mm reference of C = 2700 N, an eccentric roller bearing of C = 12 000 N), for one
+// combination: the life limit that the full search found no design for on 20/21 + 26/27.
+LcrSizingSpec HardLifeSpec(int ma, int mb) {
+  LcrSizingSpec s;
+  s.lobes_a = ma, s.rollers_a = ma + 1, s.lobes_b = mb, s.rollers_b = mb + 1;
+  s.output_torque_Nmm = 80e3;
+  s.friction_coefficient = 0.05;
+  s.limits = {1500.0, 1050.0, 0.5, 1.0, 0.0, 20000.0};
+  objectives::LcrLifeSpec life;
+  life.lines = {{80e3, 3000.0, 1.0}};
+  life.roller = {2700.0, 2600.0, 10.0, 10.0};
+  life.eccentric = objectives::LcrEccentricRating{false, 12000.0, 14000.0};
+  s.life = life;
+  return s;
+}
+
+// A combination whose longest life falls short of the limit is not sized (sizing/lcr_min_size.h,
+// step 0): the longest life, other limits ignored, bounds the life of every design that meets the
+// geometric rows — held against a grid of such designs, each through the dense check (the lives as
+// lcr_analysis computes them, not the rows that were maximised) — and the longest-life problem's
+// rows have exact gradients.
+TEST(LcrMinSizeLife, ALifeOutOfReachIsBoundedAndNotSized) {
+  const LcrSizingSpec spec = HardLifeSpec(20, 26);
+  objectives::LcrMinSizeOptions o;
+  o.solver.tolerance = 1e-6;
+  o.solver.constraint_tolerance = 1e-6;
+  const objectives::LcrMinSizeOutcome out = objectives::SolveLcrMinSize(spec, o);
+  ASSERT_TRUE(out.longest_life_h.has_value());
+  EXPECT_TRUE(out.life_out_of_reach);
+  EXPECT_FALSE(out.converged);
+  EXPECT_LT(*out.longest_life_h, 20000.0);
+  ASSERT_TRUE(out.check.has_value());
+  ASSERT_EQ(out.check->violations.size(), 1u);
+  EXPECT_EQ(out.check->violations[0].limit, "life_h");
+
+  // Designs over the box (the study's bounds) that meet the geometric rows: undercut margin
+  // ≥ 0.5 mm and roller gap ≥ 1 mm on both cams, pitch point r_d − e n/(n − m) ≥ 2% r_d.
+  LcrSizingSpec grid_spec = spec;
+  grid_spec.limits = {kInf, kInf, 0.5, 1.0, 0.0, 20000.0};
+  double longest_on_grid = 0.0;
+  int designs = 0;
+  for (int i = 0; i < 10; ++i)
+    for (double rd : {50.0, 65.0, 80.0})
+      for (int j = 0; j < 7; ++j) {
+        const double e = 0.5 + 4.5 * i / 9, d = 3.0 + 17.0 * j / 6;
+        if (rd * 0.98 - e * spec.rollers_b < 0 || rd * 0.98 - e * spec.rollers_a < 0) continue;
+        const std::vector<double> x = {e, rd, rd, d, rd + d / 2};
+        objectives::LcrDenseCheck c;
+        try {
+          c = objectives::DenseCheck(grid_spec, objectives::LcrDesign(grid_spec, x), 720);
+        } catch (const std::domain_error&) {
+          continue;
+        }
+        if (!c.design_problems.empty() || std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]) < 0.5 ||
+            std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]) < 1.0)
+          continue;
+        ++designs;
+        longest_on_grid = std::max(longest_on_grid, c.shortest_L10h);
+      }
+  ::testing::Test::RecordProperty("longest_on_grid_h", std::to_string(longest_on_grid));
+  ::testing::Test::RecordProperty("designs", designs);
+  EXPECT_GE(designs, 20);
+  EXPECT_GT(longest_on_grid, 0.5 * *out.longest_life_h);  // the grid reaches near the bound...
+  EXPECT_LE(longest_on_grid, *out.longest_life_h * 1.01);  // ...and never past it (1%: its sampling)
+
+  // Gradients of the longest-life problem's outputs against central differences.
+  const objectives::Problem p = objectives::MakeLcrLongestLifeProblem(spec);
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  for (std::vector<double> x : objectives::LcrStartingPoints(spec, 2)) {
+    x.back() = 0.3;  // t
+    std::vector<double> y(m), jac(size_t(m) * n);
+    p.evaluator->EvalWithJacobian(x, y, jac);
+    for (int i = 0; i < n; ++i) {
+      const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[i]));
+      std::vector<double> xp = x, xm = x, yp(m), ym(m);
+      xp[i] += h, xm[i] -= h;
+      p.evaluator->Eval(xp, yp);
+      p.evaluator->Eval(xm, ym);
+      for (int row = 0; row < m; ++row) {
+        const double fd = (yp[row] - ym[row]) / (2 * h), g = jac[size_t(row) * n + i];
+        EXPECT_NEAR(g, fd, kLifeRowGradientTol * std::max(1.0, std::abs(fd)))
+            << "row " << row << ", variable " << p.variables[i].name;
+      }
+    }
+  }
+}
+
+// The hard life limit through the CLI (Ipopt, as the example): the same answer as the full search
+// of every combination gave before combinations out of reach were skipped (12/13 + 14/15 at
+// 167.675 mm, measured with Ipopt and with SLSQP: 224 s and 2.8 s of CPU), the other three
+// combinations out of reach with their longest lives below the limit.
+TEST(LcrMinSizeLife, AHardLifeLimitSkipsTheCombinationsOutOfReach) {
+  json study = Example("lcr_min_size_life.json");
+  study["limits"]["life_h"] = 20000;
+  study["load"]["input_speed_rpm"] = 3000;
+  int code = -1;
+  std::string err;
+  const json res = RunStudy(study, TempDir("lcr-min-size-life-hard"), &code, &err);
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_EQ(res["status"], "optimal_verified");
+  EXPECT_NEAR(res["best"]["outer_diameter_mm"].get<double>(), 167.675, 0.01);
+  EXPECT_EQ(res["best"]["input"]["lobes"], 12);
+  EXPECT_EQ(res["best"]["output"]["lobes"], 14);
+  int out_of_reach = 0;
+  for (const json& c : res["candidates"]) {
+    if (c["status"] == "life_out_of_reach") {
+      ++out_of_reach;
+      EXPECT_LT(c["longest_life_h"].get<double>(), 20000.0);
+      EXPECT_FALSE(c["feasible"].get<bool>());
+      EXPECT_EQ(c["violations"][0]["limit"], "life_h");
+    } else {
+      EXPECT_FALSE(c.contains("longest_life_h")) << c.dump();  // a start reached the limit
+    }
+  }
+  EXPECT_EQ(out_of_reach, 3);
+}
+
 }  // namespace
 }  // namespace camopt
