@@ -75,6 +75,8 @@ long_tests=(
   # more whole LCR sizings (DefaultReachesTheExactOptimum, LimitSensitivityMatchesResolving and the
   # 3D sizing's independent check stay)
   '^LcrMinSizeLife\.(LifeLimitBindsAndCostsDiameter|AHardLifeLimitSkipsTheCombinationsOutOfReach)'
+  # every sizing example run whole and its design re-analysed at twice the grid and angles
+  '^EveryExample/SizingExample\.'
   '^LcrMinSize\.(RatioMinus90BestSatisfiesEveryLimitInLcrAnalysis|EfficiencyLimitIsHeld)'
   '^LcrSizing3D\.CrownRadiusAndCamThicknessVariablesIpoptAndSlsqpAgree'
   # camopt init's template of every kind run whole (the templates are examples that run above;
