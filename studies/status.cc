@@ -1,5 +1,7 @@
 #include "studies/status.h"
 
+#include <map>
+
 namespace camopt::studies {
 
 const char* StatusName(Status status) {
@@ -47,6 +49,70 @@ Status SizingStatus(bool has_design, bool verification_ran, bool verified, bool 
   // the optimizer converged (the verification did not converge to a design that holds), or at an
   // infeasible stopping point of the optimizer.
   return converged ? Status::kNotConverged : Status::kInfeasible;
+}
+
+const std::vector<AskedBlock>& AskedBlocks(const std::string& kind) {
+  static const std::map<std::string, std::vector<AskedBlock>> table = {
+      {"cycloid_ltca",
+       {{{"/output_mechanism/hole_radius_mm"}, "/output_mechanism",
+         "the output mechanism with clearance (pin forces, eccentric-bearing load, lost motion)"},
+        {{"/stiffness"}, "/stiffness", "the torsional stiffness"},
+        {{"/tolerances"}, "/transmission_error", "the tolerance analysis"},
+        {{"/duty_cycle", "/load/input_speed_rpm"}, "/life", "the bearing lives"}}},
+      {"lcr_analysis",
+       {{{"/contact"}, "/contact", "the 3D roller contact"},
+        {{"/tolerances"}, "/transmission_error", "the tolerance analysis"},
+        {{"/duty_cycle", "/load/input_speed_rpm"}, "/life", "the bearing lives"}}},
+      {"disc_cam",
+       {{{"/dynamics"}, "/dynamics", "the follower dynamics"},
+        {{"/arm_dynamics"}, "/arm_dynamics", "the arm's loads"},
+        {{"/tolerances"}, "/worst_case_error_um", "the tolerance analysis", {"error", "monte_carlo"}}}},
+      {"globoidal_cam",
+       {{{"/dynamics"}, "/dynamics", "the dynamics", {"dynamics"}},
+        {{"/export/stl", "/export/point_cloud"}, "/surface_export", "the surface export", {"export"}}}},
+      {"transmission_rigidity",
+       {{{"/load_torque_Nm"}, "/deflection_at_end_b_deg", "the deflection under load"},
+        {{"/report_radius_mm"}, "/linear_stiffness_at_report_radius_N_per_mm", "the stiffness at the radius"}}},
+      {"lcr_min_size",
+       {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
+        {{"/robust"}, "/robust", "the robust sizing"},
+        {{"/contact"}, "/best/contact", "the sized design's 3D roller contact"}}},
+      {"cycloid_min_size",
+       {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"}}},
+  };
+  static const std::vector<AskedBlock> none;
+  const auto it = table.find(kind);
+  return it == table.end() ? none : it->second;
+}
+
+std::vector<std::string> MissingAnswers(const std::string& kind, const nlohmann::json& study,
+                                        const nlohmann::json& result) {
+  std::vector<std::string> missing;
+  for (const AskedBlock& b : AskedBlocks(kind)) {
+    bool asked = false;
+    for (const std::string& a : b.asked) {
+      const nlohmann::json::json_pointer p(a);
+      // Given, and not switched off (false or null: not asked).
+      asked = asked || (study.contains(p) && !study.at(p).is_null() && study.at(p) != false);
+    }
+    const nlohmann::json::json_pointer evaluate("/analysis/evaluate");
+    if (!b.stages.empty() && study.contains(evaluate) && study.at(evaluate).is_array()) {
+      bool staged = false;
+      for (const nlohmann::json& stage : study.at(evaluate))
+        for (const std::string& s : b.stages) staged = staged || stage == s;
+      asked = asked && staged;
+    }
+    const nlohmann::json::json_pointer answer(b.answer);
+    if (!asked) continue;
+    // Absent, null, or a block that says why it was not computed ({"skipped": why}, {"error": why}).
+    const nlohmann::json* a = result.contains(answer) ? &result.at(answer) : nullptr;
+    std::string why;
+    for (const char* k : {"skipped", "error"})
+      if (a && a->is_object() && a->contains(k) && (*a)[k].is_string()) why = (*a)[k].get<std::string>();
+    if (!a || a->is_null() || !why.empty())
+      missing.push_back(b.what + " (" + b.answer + (why.empty() ? "" : ": " + why) + ")");
+  }
+  return missing;
 }
 
 }  // namespace camopt::studies

@@ -20,6 +20,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace camopt::studies {
 
@@ -52,5 +55,27 @@ int ExitCode(Status status, bool strict);
 /// whether the accurate model's check ran on it, whether it holds, and whether the optimizer's own
 /// test was met.
 Status SizingStatus(bool has_design, bool verification_ran, bool verified, bool converged);
+
+/// Asked means answered: a block of result.json that a study asks for by giving a field (an
+/// output mechanism with clearance, a stiffness, tolerances, a speed for the lives, dynamics, an
+/// export). When the study has any of `asked` (JSON pointers into the study) and result.json has no
+/// `answer` (a JSON pointer into it), or has it null or as {"skipped": why} or {"error": why}, the
+/// answer is incomplete: RunStudy gives it not_converged (exit 3) naming the block and why, never
+/// exit 0 without it.
+struct AskedBlock {
+  std::vector<std::string> asked;
+  std::string answer;
+  std::string what;  ///< "the bearing lives"
+  /// The lazy stages that compute it: with `analysis.evaluate` given and none of these in it, the
+  /// block is not asked for (empty: not a stage of its own).
+  std::vector<std::string> stages = {};
+};
+
+/// The blocks `kind` computes on request (one table for every kind).
+const std::vector<AskedBlock>& AskedBlocks(const std::string& kind);
+
+/// The blocks that `study` asks for and `result` lacks, each as "what (answer pointer)".
+std::vector<std::string> MissingAnswers(const std::string& kind, const nlohmann::json& study,
+                                        const nlohmann::json& result);
 
 }  // namespace camopt::studies

@@ -480,6 +480,16 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
       if (!outputs.status() && table.exceeded.empty()) outputs.SetStatus(Status::kLimitsMet);
       if (!outputs.status())
         outputs.SetStatus(Status::kLimitsExceeded, VerdictLine(table, Status::kLimitsExceeded, ""));
+      // Asked means answered: a block the study asks for and result.json lacks is an incomplete
+      // answer, never exit 0 (a sizing without a design is already exit 3: its blocks have nothing
+      // to be computed on).
+      if (const std::vector<std::string> missing = MissingAnswers(kind, study, r);
+          !missing.empty() && ExitCode(*outputs.status(), false) == 0) {
+        std::string list;
+        for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+        outputs.SetStatus(Status::kNotConverged, kind + ": asked for but not computed: " + list +
+                                                     (why.empty() ? "" : " (" + why + ")"));
+      }
       // A verified answer whose own headlines break a limit would say two things: the verdict's
       // limits are the ones the verification must have checked.
       if (IsVerified(*outputs.status()) && !table.exceeded.empty())

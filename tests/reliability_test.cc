@@ -21,6 +21,7 @@
 #include "studies/input.h"
 #include "studies/study.h"
 #include "studies/work_limits.h"
+#include "studies/status.h"
 #include "tests/test_util.h"
 
 extern char** environ;
@@ -846,6 +847,12 @@ TEST_P(TwoRuns, GiveByteIdenticalFolders) {
     ASSERT_EQ(r.exit_code, expected) << r.stderr_text;
     runs[k] = Folder(out);
   }
+  // Asked means answered: every block the study asks for (studies/status.h, AskedBlocks) is in
+  // result.json, or the run said it is not (exit 3).
+  const json study = Coarse(name), result = json::parse(runs[0]["result.json"]);
+  if (expected == 0)
+    for (const std::string& m : camopt::studies::MissingAnswers(study["study"], study, result))
+      ADD_FAILURE() << "asked for, exit 0 without it: " << m;
   ASSERT_EQ(runs[0].size(), runs[1].size());
   for (const auto& [file, content] : runs[0]) {
     SCOPED_TRACE(file);

@@ -283,4 +283,53 @@ TEST(Status, AnAskedForOutputMechanismIsAnsweredOrTheRunSaysWhy) {
   }
 }
 
+// Asked means answered (studies/status.h, AskedBlocks): the blocks a study asks for and result.json
+// lacks, is null in, or says it skipped are named; a block not asked (absent, false or null) is not.
+TEST(Status, MissingAnswersNameWhatIsAskedAndNotThere) {
+  const json study = json::parse(R"({"study": "disc_cam", "dynamics": {"speed_rpm": 600},
+                                     "tolerances": {"profile_radial_um": 10}, "analysis": {"monte_carlo": false}})");
+  EXPECT_TRUE(st::MissingAnswers("disc_cam", study, json::parse(R"({"dynamics": {}, "worst_case_error_um": {}})")).empty());
+  const auto missing = st::MissingAnswers("disc_cam", study, json::parse(R"({"dynamics": null})"));
+  ASSERT_EQ(missing.size(), 2u);
+  EXPECT_EQ(missing[0], "the follower dynamics (/dynamics)");
+  EXPECT_EQ(missing[1], "the tolerance analysis (/worst_case_error_um)");
+  const auto skipped = st::MissingAnswers("globoidal_cam", json::parse(R"({"dynamics": {}})"),
+                                          json::parse(R"({"dynamics": {"skipped": "the working surface is undercut"}})"));
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_EQ(skipped[0], "the dynamics (/dynamics: the working surface is undercut)");
+  // A lazy stage left out of analysis.evaluate asks for nothing; named, it asks.
+  EXPECT_TRUE(st::MissingAnswers("globoidal_cam", json::parse(R"({"dynamics": {}, "analysis": {"evaluate": ["geometry"]}})"),
+                                 json::object()).empty());
+  EXPECT_EQ(st::MissingAnswers("globoidal_cam", json::parse(R"({"dynamics": {}, "analysis": {"evaluate": ["dynamics"]}})"),
+                               json::object()).size(), 1u);
+  // Either of two fields asks for the lives.
+  EXPECT_EQ(st::MissingAnswers("lcr_analysis", json::parse(R"({"duty_cycle": []})"), json::object()).size(), 1u);
+  EXPECT_EQ(st::MissingAnswers("lcr_analysis", json::parse(R"({"load": {"input_speed_rpm": 100}})"), json::object()).size(), 1u);
+  EXPECT_TRUE(st::MissingAnswers("lcr_analysis", json::parse(R"({"load": {"torque_Nm": 1}})"), json::object()).empty());
+  EXPECT_TRUE(st::MissingAnswers("no_such_kind", study, json::object()).empty());
+}
+
+// The globoidal cam of the paper moved to a 30 mm centre distance: its working surface is undercut
+// and its dynamics cannot be integrated. Asked for, the run is exit 3 naming the block and why
+// (before: exit 0 with "dynamics": {"skipped": …}); not asked, the same design is an analysis over
+// its undercut limit, exit 0.
+TEST(Status, AnAskedForBlockThatCannotBeComputedIsExit3WithTheReason) {
+  const auto dir = TempDir("status-asked");
+  json study = camopt::testing::Example("globoidal_cam_paper.json");
+  study["cam"]["center_distance_mm"] = 30;
+  WriteFile(dir / "asked.json", study.dump());
+  CliRun r = RunStudy(dir / "asked.json", dir / "asked");
+  ExpectOneStatus(r, "not_converged", 3);
+  EXPECT_NE(r.result["status_reason"].get<std::string>().find(
+                "asked for but not computed: the dynamics (/dynamics: the working surface is undercut)"),
+            std::string::npos)
+      << r.result["status_reason"];
+  EXPECT_TRUE(r.result["undercut"].get<bool>());
+  study.erase("dynamics");
+  WriteFile(dir / "plain.json", study.dump());
+  r = RunStudy(dir / "plain.json", dir / "plain");
+  ExpectOneStatus(r, "limits_exceeded", 0);
+  EXPECT_TRUE(r.result["dynamics"]["speeds"].empty()) << r.result["dynamics"];
+}
+
 }  // namespace
