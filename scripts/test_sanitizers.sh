@@ -82,9 +82,6 @@ long_tests=(
   # camopt init's template of every kind run whole (the templates are examples that run above;
   # Init.UnknownKind* stays)
   '^Init\.EveryKindsStudyRuns'
-  # every declared kind's refused studies through the command line, one process each (234 s in
-  # Release, past 600 s here; SchemaParserAgreement.EveryKinds* runs the same parser in-process)
-  '^SchemaParserAgreement\.DeclaredKindsRefuseWhatTheSchemaRefusesWithExit2'
   # each datasheet limit of the cycloid sizing made to bind (four sizings and their cycloid_ltca
   # runs; CycloidMinSize.OutputMechanismRowsDerivativesMatchCentralDifferences stays), the
   # tolerance example's Monte-Carlo run twice (the CycloidTransmissionError tests stay) and the
