@@ -748,9 +748,22 @@ int ServeMain(const ServeOptions& options) {
   server.new_task_queue = [] { return new httplib::ThreadPool(32); };
   server.set_pre_routing_handler([&studio](const httplib::Request& req, httplib::Response& res) {
     std::string why;
-    if (studio.Allowed(req, why)) return httplib::Server::HandlerResponse::Unhandled;
-    SendError(res, 403, why);
-    return httplib::Server::HandlerResponse::Handled;
+    if (!studio.Allowed(req, why)) {
+      SendError(res, 403, why);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    // A body must state its length: the library holds a Content-Length to the cap before it reads
+    // the body (413), but buffers a chunked body whole. The pre-routing handler runs before any of
+    // the body is read, so a chunked one is refused here, unread, and the connection closed.
+    if (req.has_header("Transfer-Encoding") && req.get_header_value("Transfer-Encoding") != "identity") {
+      SendError(res, 413,
+                "a request body must come with its Content-Length, at most " + std::to_string(kMaxBodyBytes) +
+                    " bytes (a body in chunks, Transfer-Encoding \"" + req.get_header_value("Transfer-Encoding") +
+                    "\", is not accepted)");
+      res.set_header("Connection", "close");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
   });
   if (!web.empty()) {
     server.set_mount_point("/", web);

@@ -19,6 +19,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -281,6 +284,34 @@ TEST(Serve, OfSixConcurrentRunsOfOneStudyOneIsAccepted) {
     }
 }
 
+// Sends `request` as it is on a new connection to the studio and returns the first response (its
+// head and a body of its Content-Length), or what came before the server closed the connection or
+// 5 s passed.
+std::string RawExchange(int port, const std::string& request) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return "";
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(uint16_t(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  timeval t{5, 0};
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &t, sizeof t);
+  std::string out;
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0 &&
+      ::send(fd, request.data(), request.size(), MSG_NOSIGNAL) == ssize_t(request.size())) {
+    char buf[4096];
+    for (ssize_t n; (n = ::recv(fd, buf, sizeof buf, 0)) > 0;) {
+      out.append(buf, size_t(n));
+      const size_t end = out.find("\r\n\r\n"), length = out.find("Content-Length: ");
+      if (end != std::string::npos && length != std::string::npos && length < end &&
+          out.size() >= end + 4 + std::stoul(out.substr(length + 16)))
+        break;
+    }
+  }
+  ::close(fd);
+  return out;
+}
+
 TEST(Serve, RefusesBodiesAboveTheLimit) {
   const fs::path dir = TempDir("serve-body");
   Studio studio(dir);
@@ -297,6 +328,26 @@ TEST(Serve, RefusesBodiesAboveTheLimit) {
   res = c.Post("/api/validate", std::string(1000, ' ') + "{}", "application/json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200);  // under the limit: answered
+  // A body in chunks (no Content-Length): refused before it is read. Sent by hand: a whole small
+  // one, and the first 64 KiB chunk of what would be 20 MiB, with the answer read before the rest.
+  const std::string head = "PUT /api/file?path=NAME HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(studio.port()) +
+                           "\r\nContent-Type: application/json\r\nTransfer-Encoding: chunked\r\n\r\n";
+  auto named = [&](const std::string& name) {
+    std::string h = head;
+    h.replace(h.find("NAME"), 4, name);
+    return h;
+  };
+  std::string answer = RawExchange(studio.port(), named("small.json") + "10\r\n" + std::string(16, ' ') + "\r\n0\r\n\r\n");
+  EXPECT_EQ(answer.rfind("HTTP/1.1 413", 0), 0u) << answer;
+  EXPECT_NE(answer.find("Content-Length, at most"), std::string::npos) << answer;
+  EXPECT_FALSE(fs::exists(dir / "small.json"));
+  answer = RawExchange(studio.port(), named("huge.json") + "10000\r\n" + std::string(65536, ' ') + "\r\n");
+  EXPECT_EQ(answer.rfind("HTTP/1.1 413", 0), 0u) << answer;
+  EXPECT_FALSE(fs::exists(dir / "huge.json"));
+  // The server still answers.
+  res = studio.Client().Post("/api/validate", "{}", "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_NE(res->status, 413);
 }
 
 TEST(Serve, ValidateGivesTheCliMessageWithItsJsonPath) {
