@@ -1,7 +1,7 @@
 // camopt's command line, as a function (studies/main.cc calls it; the mutation fuzzer
 // fuzz/mutation_fuzzer.cc calls it in a forked child, so that it exercises exactly the CLI). The
 // command line: `camopt run STUDY.json [--out DIR] [--quiet] [--max-work-factor F]
-// [--convergence] [--strict] [--progress json]`, `camopt serve [--port P] [--host H] [FOLDER]`
+// [--convergence] [--strict] [--progress json]`, `camopt serve [--port P] [--host H [--allow-remote]] [FOLDER]`
 // (the studio, studies/serve.h), `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
 // `camopt init KIND [--out FILE]` (a complete study to start from, studies/init.h),
 // `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
@@ -224,6 +224,8 @@ int RunCommandLine(int argc, char** argv) {
       ->check(CLI::Range(0, 65535));
   serve->add_option("--host", serve_options.host,
                     "Address to listen on (default 127.0.0.1: this machine only)");
+  serve->add_flag("--allow-remote", serve_options.allow_remote,
+                  "Allow a --host beyond this machine: every request then needs the token printed at start");
   serve->add_option("--web", serve_options.web_dir,
                     "Folder of the front end's files (default: next to the program, or share/camopt/web)");
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");

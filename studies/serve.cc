@@ -18,6 +18,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <random>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -265,9 +266,41 @@ class Studio {
     for (const auto& h : hosts_) origins_.insert("http://" + h);
   }
 
-  // 403 for another site's page (Origin) or a name that is not this server's (Host: DNS rebinding).
-  bool Allowed(const httplib::Request& req, std::string& why) const {
+  // Served beyond this machine (--allow-remote): every request needs this token.
+  void SetToken(const std::string& token) { token_ = token; }
+
+  // The request's token: the cookie the studio set, the X-Camopt-Token header, or ?token=.
+  bool HasToken(const httplib::Request& req) const {
+    const std::string cookie = "camopt_token=" + token_;
+    const std::string cookies = req.get_header_value("Cookie");
+    for (size_t at = 0; (at = cookies.find(cookie, at)) != std::string::npos; at += cookie.size()) {
+      const size_t end = at + cookie.size();
+      if ((at == 0 || cookies[at - 1] == ' ' || cookies[at - 1] == ';') && (end == cookies.size() || cookies[end] == ';'))
+        return true;
+    }
+    return req.get_header_value("X-Camopt-Token") == token_ || req.get_param_value("token") == token_;
+  }
+
+  // 403 for another site's page (Origin) or a name that is not this server's (Host: DNS rebinding);
+  // 401 without the token when served beyond this machine. `status` receives the code.
+  bool Allowed(const httplib::Request& req, std::string& why, int& status) const {
     const std::string host = req.get_header_value("Host");
+    status = 403;
+    if (!token_.empty()) {
+      // Beyond this machine the Host is whatever name reaches it; the token stands in for the Host
+      // check (a rebound name's page has no cookie of this address), and an Origin must be the
+      // page's own.
+      if (!HasToken(req)) {
+        status = 401;
+        why = "this studio is served beyond its machine: open the address with ?token=… that camopt serve printed";
+        return false;
+      }
+      if (req.has_header("Origin") && req.get_header_value("Origin") != "http://" + host) {
+        why = "requests from " + req.get_header_value("Origin") + " are refused (only the studio's own pages may call it)";
+        return false;
+      }
+      return true;
+    }
     if (hosts_.count(host) == 0) {
       why = "Host \"" + host + "\" is not this studio's address";
       return false;
@@ -425,6 +458,7 @@ class Studio {
   fs::path root_;
   std::string exe_;
   std::set<std::string> hosts_, origins_;
+  std::string token_;
   std::mutex mutex_;
   std::map<int, std::shared_ptr<Run>> runs_;
   std::set<std::string> starting_;  ///< output folders of runs being started (Start)
@@ -740,18 +774,41 @@ int ServeMain(const ServeOptions& options) {
     std::cerr << "camopt: error: serve: " << options.folder << ": cannot work in it: " << ec.message() << "\n";
     return 2;
   }
+  // Beyond this machine only when asked, and then with a token: the API writes and runs files.
+  std::string token;
+  if (!IsLoopbackHost(options.host)) {
+    if (!options.allow_remote) {
+      std::cerr << "camopt: error: serve: --host " << options.host
+                << " is not this machine's loopback address: anyone who reaches it could write and run the "
+                   "studies of "
+                << root.string()
+                << "; serve on 127.0.0.1 (the default), or add --allow-remote to serve it with a token\n";
+      return 2;
+    }
+    std::random_device random;
+    char hex[9];
+    for (int i = 0; i < 4; ++i) {
+      std::snprintf(hex, sizeof hex, "%08x", unsigned(random()));
+      token += hex;
+    }
+  }
   Studio studio(root, exe.string());
+  if (!token.empty()) studio.SetToken(token);
   httplib::Server server;
   server.set_payload_max_length(kMaxBodyBytes);
   // Threads for the connections: a browser keeps several open (keep-alive) and each run's event
   // stream holds one for as long as the run lasts.
   server.new_task_queue = [] { return new httplib::ThreadPool(32); };
-  server.set_pre_routing_handler([&studio](const httplib::Request& req, httplib::Response& res) {
+  server.set_pre_routing_handler([&studio, &token](const httplib::Request& req, httplib::Response& res) {
     std::string why;
-    if (!studio.Allowed(req, why)) {
-      SendError(res, 403, why);
+    int status = 403;
+    if (!studio.Allowed(req, why, status)) {
+      SendError(res, status, why);
       return httplib::Server::HandlerResponse::Handled;
     }
+    // The token given in the address becomes a cookie, so the page's own requests carry it.
+    if (!token.empty() && req.get_param_value("token") == token)
+      res.set_header("Set-Cookie", "camopt_token=" + token + "; Path=/; HttpOnly; SameSite=Strict");
     // A body must state its length: the library holds a Content-Length to the cap before it reads
     // the body (413), but buffers a chunked body whole. The pre-routing handler runs before any of
     // the body is read, so a chunked one is refused here, unread, and the connection closed.
@@ -791,6 +848,11 @@ int ServeMain(const ServeOptions& options) {
   studio.SetAddress(options.host, port);
   const std::string host = options.host.find(':') != std::string::npos ? "[" + options.host + "]" : options.host;
   std::cout << "camopt studio: http://" << host << ":" << port << "/" << std::endl;
+  if (!token.empty())
+    std::cerr << "camopt: warning: serve: listening on " << host << ":" << port
+              << " beyond this machine (--allow-remote): whoever has the token can write and run the studies "
+                 "of this folder; the traffic is not encrypted. Open http://<this machine's name>:"
+              << port << "/?token=" << token << "\n";
   if (web.empty()) std::cerr << "camopt: warning: serve: the front end's files were not found; API only\n";
   std::cerr << "camopt: serving the study files of " << root.string() << " (Ctrl-C stops)" << std::endl;
   server.listen_after_bind();

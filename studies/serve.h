@@ -25,7 +25,15 @@ struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8765;      ///< 0: a free port chosen by the system
   std::string web_dir;  ///< empty: the folder "web" beside the program, else "../share/camopt/web" from it
+  /// A host that is not a loopback address (127.x, ::1, localhost) is refused (exit 2) unless this
+  /// is set; then every request needs the token printed at start (docs/studio.md).
+  bool allow_remote = false;
 };
+
+/// Whether the studio's --host reaches only this machine: 127.0.0.0/8, ::1 or localhost.
+inline bool IsLoopbackHost(const std::string& host) {
+  return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+}
 
 /// Largest request body the studio reads (a study file is a few kB).
 inline constexpr size_t kMaxBodyBytes = size_t{1} << 20;

@@ -45,16 +45,24 @@ fs::path Example(const std::string& name) { return fs::path(CAMOPT_SOURCE_DIR) /
 // `camopt serve --port 0 FOLDER` as a child; the port read from its first line on stdout.
 class Studio {
  public:
-  explicit Studio(const fs::path& folder) {
+  /// `extra` options go before the folder; with `stderr_file`, the child's stderr goes there.
+  explicit Studio(const fs::path& folder, const std::vector<std::string>& extra = {},
+                  const std::string& stderr_file = "/dev/null") {
     int out[2];
     if (pipe(out) != 0) return;
+    std::vector<std::string> args = {"camopt", "serve", "--port", "0"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(folder.string());
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
     pid_ = fork();
     if (pid_ == 0) {
       dup2(out[1], 1);
-      const int null_fd = open("/dev/null", O_WRONLY);
-      dup2(null_fd, 2);
+      const int err_fd = open(stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      dup2(err_fd, 2);
       close(out[0]);
-      execl(CAMOPT_BINARY, "camopt", "serve", "--port", "0", folder.c_str(), static_cast<char*>(nullptr));
+      execv(CAMOPT_BINARY, argv.data());
       _exit(127);
     }
     close(out[1]);
@@ -70,8 +78,11 @@ class Studio {
     }
     close(out[0]);
     first_line_ = line;
-    const std::string prefix = "camopt studio: http://127.0.0.1:";
-    if (line.rfind(prefix, 0) == 0) port_ = std::atoi(line.c_str() + prefix.size());
+    // "camopt studio: http://HOST:PORT/"
+    const std::string prefix = "camopt studio: http://";
+    const size_t slash = line.find('/', prefix.size()), colon = line.rfind(':', slash);
+    if (line.rfind(prefix, 0) == 0 && slash != std::string::npos && colon != std::string::npos && colon > prefix.size())
+      port_ = std::atoi(line.c_str() + colon + 1);
   }
   ~Studio() {
     if (pid_ > 0) {
@@ -1043,6 +1054,57 @@ TEST(Serve, SizingMechanismDrawsTheCycloidStart) {
   }
   EXPECT_NEAR(d["disc_centre_mm"][0].get<double>(), 4.5 * std::cos(20 * M_PI / 180), 1e-6);
   EXPECT_NEAR(d["disc_centre_mm"][1].get<double>(), 4.5 * std::sin(20 * M_PI / 180), 1e-6);
+}
+
+// A host beyond this machine: refused without --allow-remote (exit 2, saying what to do); with it,
+// a warning with the token on start, and every request refused (401) without the token, answered
+// with it (header, address or the cookie the address sets), a foreign Origin still refused (403).
+TEST(Serve, AHostBeyondThisMachineNeedsAFlagAndATokenOnEveryRequest) {
+  const fs::path dir = TempDir("serve-remote");
+  const auto refused = camopt::testing::RunCamopt("serve --host 0.0.0.0 --port 0 " + dir.string());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.stderr_text.find("add --allow-remote"), std::string::npos) << refused.stderr_text;
+  EXPECT_TRUE(camopt::studies::IsLoopbackHost("127.0.0.1") && camopt::studies::IsLoopbackHost("::1") &&
+              camopt::studies::IsLoopbackHost("localhost") && !camopt::studies::IsLoopbackHost("0.0.0.0") &&
+              !camopt::studies::IsLoopbackHost("192.168.1.5"));
+
+  const std::string err_file = (dir.parent_path() / (dir.filename().string() + ".stderr")).string();
+  Studio studio(dir, {"--host", "0.0.0.0", "--allow-remote"}, err_file);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  std::string err;
+  for (int i = 0; i < 50 && err.find("?token=") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    err = ReadFile(err_file);
+  }
+  ASSERT_NE(err.find("warning: serve: listening on 0.0.0.0"), std::string::npos) << err;
+  const size_t at = err.find("?token=") + 7;
+  const std::string token = err.substr(at, err.find_first_of(" \n", at) - at);
+  ASSERT_EQ(token.size(), 32u) << err;
+
+  auto c = studio.Client();
+  auto res = c.Get("/api/kinds");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 401);
+  res = c.Get("/api/kinds", {{"X-Camopt-Token", "0" + token.substr(1)}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 401);  // a wrong token
+  res = c.Get("/api/kinds", {{"X-Camopt-Token", token}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  res = c.Get(("/api/kinds?token=" + token).c_str());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_NE(res->get_header_value("Set-Cookie").find("camopt_token=" + token + ";"), std::string::npos);
+  EXPECT_NE(res->get_header_value("Set-Cookie").find("HttpOnly"), std::string::npos);
+  res = c.Get("/api/files", {{"Cookie", "other=1; camopt_token=" + token}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  res = c.Get("/api/files", {{"Cookie", "camopt_token=" + token + "x"}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 401);
+  res = c.Post("/api/validate", {{"X-Camopt-Token", token}, {"Origin", "http://evil.example"}}, "{}", "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 403);
 }
 
 }  // namespace
