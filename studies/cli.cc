@@ -211,6 +211,10 @@ int RunCommandLine(int argc, char** argv) {
                   "Multiply every work, memory and file-size cap by this factor (default 1; "
                   "see docs/reliability.md)")
       ->check(factor_range);
+  std::string files_inside;
+  run->add_option("--files-inside", files_inside,
+                  "Refuse files the study names (a roller catalogue) outside this folder (camopt serve "
+                  "passes its folder)");
   std::string progress_format;
   run->add_option("--progress", progress_format,
                   "json: every progress report as one JSON line on stderr, also with --quiet (for "
@@ -239,6 +243,7 @@ int RunCommandLine(int argc, char** argv) {
   sweep_cmd->add_flag("--case-outputs", sweep.case_outputs, "Keep every case's result folder");
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress lines on stderr");
   sweep_cmd->add_option("--max-work-factor", sweep.max_work_factor, "As for run")->check(factor_range);
+  sweep_cmd->add_option("--files-inside", files_inside, "As for run (the sweep's base and the cases' files)");
   std::string sweep_progress;
   sweep_cmd->add_option("--progress", sweep_progress, "As for run")->check(CLI::IsMember({"json"}));
   std::string schema_kind;
@@ -290,6 +295,7 @@ int RunCommandLine(int argc, char** argv) {
   if (sweep_cmd->parsed()) {
     FLAGS_minloglevel = FLAGS_stderrthreshold = google::GLOG_FATAL;  // cases run quietly
     if (sweep_progress == "json") InstallJsonProgress();
+    camopt::studies::CurrentInputLimits().files_inside = files_inside;
     return camopt::studies::sweep::RunCommand(sweep);
   }
   if (serve->parsed()) return camopt::studies::ServeMain(serve_options);
@@ -351,6 +357,7 @@ int RunCommandLine(int argc, char** argv) {
   if (out_dir.empty())
     out_dir = (std::filesystem::path("results") / std::filesystem::path(study_file).stem()).string();
   if (progress_format == "json") InstallJsonProgress();
+  camopt::studies::CurrentInputLimits().files_inside = files_inside;
   try {
     camopt::studies::RunContext ctx;
     ctx.quiet = quiet;

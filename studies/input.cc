@@ -1,5 +1,7 @@
 #include "studies/input.h"
 
+#include <filesystem>
+
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -370,6 +372,16 @@ nlohmann::json ParseStudyText(const std::string& text, const std::string& file, 
 
 nlohmann::json LoadStudyFile(const std::string& file) {
   const InputLimits& limits = CurrentInputLimits();
+  if (!limits.files_inside.empty()) {
+    // Resolved before anything is opened, so the answer does not depend on whether it exists.
+    std::error_code ec;
+    const std::filesystem::path root = std::filesystem::weakly_canonical(limits.files_inside, ec);
+    const std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::absolute(file, ec), ec);
+    const auto rel = p.lexically_relative(root);
+    if (ec || root.empty() || rel.empty() || *rel.begin() == "..")
+      throw StudyError(file + ": expected a file inside the folder " + limits.files_inside +
+                       ", found a path that leads outside it (copy the file into the folder)");
+  }
   return ParseStudyText(ReadFileCapped(file, limits.max_file_bytes, "file"), file,
                         limits.max_depth);
 }

@@ -99,6 +99,11 @@ struct InputLimits {
   size_t max_file_bytes = size_t{16} << 20;
   /// Deepest nesting of arrays and objects (real studies nest 4 levels).
   int max_depth = 64;
+  /// Non-empty: every file LoadStudyFile reads (a roller catalogue, a sweep's base) must lie inside
+  /// this folder once links are resolved; a path outside is refused with the same words whether or
+  /// not it exists (the studio's boundary: `camopt serve` sets it to its folder, and passes it to
+  /// its runs as --files-inside).
+  std::string files_inside;
 };
 /// The limits LoadStudyFile uses (process-wide; the CLI raises them with --max-work-factor).
 InputLimits& CurrentInputLimits();

@@ -389,7 +389,7 @@ class Studio {
     const json file = json::parse(in, nullptr, false);
     const bool is_sweep = file.is_object() && file.contains("sweep") && file["sweep"].is_string();
     std::vector<std::string> args = {exe_, is_sweep ? "sweep" : "run", study.string(), "--out", out.string(),
-                                     "--quiet", "--progress", "json"};
+                                     "--quiet", "--progress", "json", "--files-inside", root_.string()};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -792,6 +792,8 @@ int ServeMain(const ServeOptions& options) {
       token += hex;
     }
   }
+  // The folder is the boundary of what a study may name, in the server's own checks as in its runs.
+  CurrentInputLimits().files_inside = root.string();
   Studio studio(root, exe.string());
   if (!token.empty()) studio.SetToken(token);
   httplib::Server server;

@@ -10,6 +10,7 @@
 #include <csignal>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -1105,6 +1106,60 @@ TEST(Serve, AHostBeyondThisMachineNeedsAFlagAndATokenOnEveryRequest) {
   res = c.Post("/api/validate", {{"X-Camopt-Token", token}, {"Origin", "http://evil.example"}}, "{}", "application/json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 403);
+}
+
+// The folder is the boundary: a roller catalogue or a sweep's base outside the served folder (by
+// path, by "..", or through a link inside the folder) is refused, with the same words whether the
+// outside file exists or not; inside, the same files are read (ValidateFindsAStudysRelativeFiles…).
+TEST(Serve, FilesAStudyNamesOutsideTheFolderAreRefusedWithoutRevealingThem) {
+  const fs::path dir = TempDir("serve-boundary"), outside = TempDir("serve-boundary-outside");
+  fs::copy_file(Example("needle_rollers.json"), outside / "needle_rollers.json");
+  fs::copy_file(Example("lcr_ii.json"), outside / "lcr_ii.json");
+  fs::create_symlink(outside / "needle_rollers.json", dir / "linked_rollers.json");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const auto message_for = [&](json study) {
+    WriteFile(dir / "study.json", study.dump());
+    auto res = c.Post("/api/validate?path=study.json", study.dump(), "application/json");
+    EXPECT_TRUE(res);
+    if (!res) return std::string();
+    const json body = json::parse(res->body);
+    EXPECT_FALSE(body["ok"].get<bool>()) << res->body;
+    return body["error"].value("message", std::string());
+  };
+  json study = json::parse(ReadFile(Example("lcr_min_size_catalogue.json")));
+  std::map<std::string, std::string> said;
+  for (const std::string path : {(outside / "needle_rollers.json").string(), (outside / "missing.json").string(),
+                                 "../" + outside.filename().string() + "/needle_rollers.json",
+                                 std::string("linked_rollers.json")}) {
+    study["roller_catalogue"]["file"] = path;
+    std::string m = message_for(study);
+    EXPECT_NE(m.find("found a path that leads outside it"), std::string::npos) << path << ": " << m;
+    EXPECT_EQ(m.find("line"), std::string::npos) << m;  // nothing of the file's content
+    m.replace(m.find(path), path.size(), "PATH");
+    said[path] = m;
+  }
+  EXPECT_EQ(said[(outside / "needle_rollers.json").string()], said[(outside / "missing.json").string()]);
+  // A sweep's base, checked as camopt sweep checks it, and run: the run refuses it too.
+  const json sweep = {{"sweep", "e"}, {"base", (outside / "lcr_ii.json").string()},
+                      {"vary", {{{"path", "/reducer/eccentricity_mm"}, {"values", {1.8, 2.0}}}}}};
+  WriteFile(dir / "sweep.json", sweep.dump());
+  auto res = c.Post("/api/validate?path=sweep.json", sweep.dump(), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_NE(res->body.find("found a path that leads outside it"), std::string::npos) << res->body;
+  study["roller_catalogue"]["file"] = (outside / "needle_rollers.json").string();
+  WriteFile(dir / "study.json", study.dump());
+  res = c.Post("/api/runs", "{\"path\": \"study.json\"}", "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 201) << res->body;
+  const json end = FollowToEnd(studio, json::parse(res->body)["id"].get<int>());
+  EXPECT_EQ(end["exit_code"], 2) << end.dump();
+  // The command line without --files-inside reads it (the boundary is the studio's).
+  EXPECT_EQ(camopt::testing::RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                                       (dir / "cli").string() + " --max-work-factor 1")
+                .stderr_text.find("leads outside"),
+            std::string::npos);
 }
 
 }  // namespace
