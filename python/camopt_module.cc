@@ -511,6 +511,11 @@ PYBIND11_MODULE(camopt, m) {
   m.doc() = "camopt: design optimisation of cam reducers and cam mechanisms (studies, results, sweeps "
             "and the kinds' models from Python)";
   m.attr("__version__") = camopt::studies::CamoptVersion();
+  // pybind11 loads NumPy's C API on the first array it makes, inside a function-local static whose
+  // guard is held while numpy is imported — and the import releases the GIL. Two threads whose
+  // first camopt call makes an array then deadlock: one holds the guard and waits for the GIL, the
+  // other holds the GIL and waits for the guard. Loaded here, once, under Python's import lock.
+  (void)py::detail::npy_api::get();
   g_study_error = py::handle(PyErr_NewExceptionWithDoc("camopt.StudyError",
                                 "A bad study: .file, .path (JSON path), .expected, .found name the fault.",
                                 PyExc_ValueError, nullptr));

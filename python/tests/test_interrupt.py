@@ -57,6 +57,30 @@ def run_and_interrupt(test, kind, path, out, delay_s=1.0):
     return latency
 
 
+# Two threads whose first camopt call is camopt.run, in a fresh interpreter: both finish.
+TWO_THREADS = textwrap.dedent("""
+    import sys, threading
+    import camopt, helpers
+    done = []
+    def go(i):
+        r = camopt.run(helpers.small_lcr_ii(), out=sys.argv[1] + "/o" + str(i))
+        done.append(r["study"])
+    threads = [threading.Thread(target=go, args=(i,)) for i in range(2)]
+    for t in threads: t.start()
+    for t in threads: t.join()
+    print(sorted(done))
+""")
+
+
+class FirstCalls(unittest.TestCase):
+    def test_two_threads_whose_first_call_is_run_both_finish(self):
+        d = helpers.temp_dir("two-threads")
+        p = subprocess.run([sys.executable, "-c", TWO_THREADS, str(d)], capture_output=True, text=True,
+                           timeout=120, cwd=os.path.dirname(os.path.abspath(__file__)))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(p.stdout.strip(), "['lcr_analysis', 'lcr_analysis']", p.stderr)
+
+
 class Interrupt(unittest.TestCase):
     def test_sigint_stops_study_run_within_a_second(self):
         d = helpers.temp_dir("py-int")
