@@ -3,6 +3,7 @@
 #include "objectives/lcr_sizing.h"
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -395,8 +396,7 @@ Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
   s.robust = nullptr;
   Problem sizing = MakeLcrSizingProblem(s);
   const Layout l = LayoutOf(s);
-  const std::vector<OutputBlock> full = Blocks(s);
-  const int n_full = full.back().offset + full.back().size;
+  const int n_full = sizing.evaluator->num_outputs();
   const char* geometric[] = {"input_roller_gap_mm",      "output_roller_gap_mm", "input_undercut_margin_mm",
                              "output_undercut_margin_mm", "input_pitch_clearance_mm", "output_pitch_clearance_mm"};
   std::vector<std::string> lives = {"input_roller_life", "output_roller_life"};
@@ -411,7 +411,7 @@ Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
     picked.push_back(sizing.evaluator->block(b).offset);
     blocks.push_back({b + "_excess", int(blocks.size()), 1});
   }
-  const int t_index = l.radius_index, first_life = 1 + 6;
+  const int t_index = l.radius_index, first_life = 1 + int(std::size(geometric));
   Problem p;
   p.variables = sizing.variables;
   // t: a factor e^±50 of life spans any design the box holds.

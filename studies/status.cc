@@ -102,8 +102,8 @@ std::vector<std::string> MissingAnswers(const std::string& kind, const nlohmann:
         for (const std::string& s : b.stages) staged = staged || stage == s;
       asked = asked && staged;
     }
-    const nlohmann::json::json_pointer answer(b.answer);
     if (!asked) continue;
+    const nlohmann::json::json_pointer answer(b.answer);
     // Absent, null, or a block that says why it was not computed ({"skipped": why}, {"error": why}).
     const nlohmann::json* a = result.contains(answer) ? &result.at(answer) : nullptr;
     std::string why;

@@ -67,33 +67,39 @@ TEST(LcrMinSizeLife, ScaledRatingsFollowIso281AndIso76) {
             3300.0);
 }
 
+// Each of `rows` of p's evaluator at x: its exact derivative (ceres::Jet) against central
+// differences with step ∛ε·max(1, |x_i|), within kLifeRowGradientTol of max(1, |fd|).
+void ExpectRowsMatchCentralDifferences(const objectives::Problem& p, const std::vector<double>& x,
+                                       const std::vector<int>& rows) {
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  std::vector<double> y(m), jac(size_t(m) * n);
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  for (int row : rows) ASSERT_TRUE(std::isfinite(y[row])) << "row " << row;
+  for (int i = 0; i < n; ++i) {
+    const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[i]));
+    std::vector<double> xp = x, xm = x, yp(m), ym(m);
+    xp[i] += h, xm[i] -= h;
+    p.evaluator->Eval(xp, yp);
+    p.evaluator->Eval(xm, ym);
+    for (int row : rows) {
+      const double fd = (yp[row] - ym[row]) / (2 * h), g = jac[size_t(row) * n + i];
+      EXPECT_NEAR(g, fd, kLifeRowGradientTol * std::max(1.0, std::abs(fd)))
+          << "row " << row << ", variable " << p.variables[i].name;
+    }
+  }
+}
+
 TEST(LcrMinSizeLife, LifeRowGradientsMatchCentralDifferences) {
   for (bool same_roller : {true, false}) {
     SCOPED_TRACE(same_roller ? "one roller diameter" : "a roller diameter per cam");
     const LcrSizingSpec spec = LifeSpec(same_roller);
     const objectives::Problem p = objectives::MakeLcrSizingProblem(spec);
-    const int n = p.num_vars(), m = p.evaluator->num_outputs();
     std::vector<int> rows;
     for (const auto& block : p.evaluator->blocks())
       if (block.name.size() > 5 && block.name.substr(block.name.size() - 5) == "_life") rows.push_back(block.offset);
     ASSERT_EQ(rows.size(), 3u);  // input roller, output roller, eccentric bearing
-    for (const std::vector<double>& x : objectives::LcrStartingPoints(spec, 3)) {
-      std::vector<double> y(m), jac(size_t(m) * n);
-      p.evaluator->EvalWithJacobian(x, y, jac);
-      for (int row : rows) ASSERT_TRUE(std::isfinite(y[row]));
-      for (int i = 0; i < n; ++i) {
-        const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[i]));
-        std::vector<double> xp = x, xm = x, yp(m), ym(m);
-        xp[i] += h, xm[i] -= h;
-        p.evaluator->Eval(xp, yp);
-        p.evaluator->Eval(xm, ym);
-        for (int row : rows) {
-          const double fd = (yp[row] - ym[row]) / (2 * h), g = jac[size_t(row) * n + i];
-          EXPECT_NEAR(g, fd, kLifeRowGradientTol * std::max(1.0, std::abs(fd)))
-              << "row " << row << ", variable " << p.variables[i].name;
-        }
-      }
-    }
+    for (const std::vector<double>& x : objectives::LcrStartingPoints(spec, 3))
+      ExpectRowsMatchCentralDifferences(p, x, rows);
   }
 }
 
@@ -347,23 +353,11 @@ TEST(LcrMinSizeLife, ALifeOutOfReachIsBoundedAndNotSized) {
 
   // Gradients of the longest-life problem's outputs against central differences.
   const objectives::Problem p = objectives::MakeLcrLongestLifeProblem(spec);
-  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  std::vector<int> every_row(size_t(p.evaluator->num_outputs()));
+  for (size_t k = 0; k < every_row.size(); ++k) every_row[k] = int(k);
   for (std::vector<double> x : objectives::LcrStartingPoints(spec, 2)) {
     x.back() = 0.3;  // t
-    std::vector<double> y(m), jac(size_t(m) * n);
-    p.evaluator->EvalWithJacobian(x, y, jac);
-    for (int i = 0; i < n; ++i) {
-      const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[i]));
-      std::vector<double> xp = x, xm = x, yp(m), ym(m);
-      xp[i] += h, xm[i] -= h;
-      p.evaluator->Eval(xp, yp);
-      p.evaluator->Eval(xm, ym);
-      for (int row = 0; row < m; ++row) {
-        const double fd = (yp[row] - ym[row]) / (2 * h), g = jac[size_t(row) * n + i];
-        EXPECT_NEAR(g, fd, kLifeRowGradientTol * std::max(1.0, std::abs(fd)))
-            << "row " << row << ", variable " << p.variables[i].name;
-      }
-    }
+    ExpectRowsMatchCentralDifferences(p, x, every_row);
   }
 }
 
