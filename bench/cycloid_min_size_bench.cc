@@ -20,6 +20,7 @@ void BM_CycloidMinSizeRatio29(benchmark::State& state) {
   o.solver.constraint_tolerance = 1e-3;
   o.solver.stall_iterations = 3;
   o.solver.stall_violation = 1.0;
+  o.solver.stall_change = 1e-4;
   o.solver.max_evaluations = 200;
   o.starts = 2;
   CycloidMinSizeOutcome r;

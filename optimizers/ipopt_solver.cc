@@ -190,7 +190,8 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
     app->Options()->SetNumericValue(
         "acceptable_constr_viol_tol",
         options.stall_violation > 0 ? options.stall_violation : options.constraint_tolerance);
-    app->Options()->SetNumericValue("acceptable_obj_change_tol", options.tolerance);
+    app->Options()->SetNumericValue("acceptable_obj_change_tol",
+                                     options.stall_change > 0 ? options.stall_change : options.tolerance);
   }
 
   SolverResult result;

@@ -33,7 +33,7 @@ struct SolverOptions {
   double max_seconds = 60.0;
   /// Ipopt only; 0 (the default) leaves Ipopt's own test alone. k > 0: Ipopt also stops, as
   /// converged, once k consecutive iterations meet every constraint within constraint_tolerance
-  /// (scaled) and change the objective by less than `tolerance` (relative) — Ipopt's acceptable
+  /// (scaled) and change the objective by less than `stall_change` (relative) — Ipopt's acceptable
   /// level with the optimality part left out. For problems whose constraints are only piecewise
   /// smooth (a discretised contact model), where the multipliers, and with them Ipopt's
   /// optimality error, jump from one iteration to the next at a kink although the design no longer
@@ -42,6 +42,11 @@ struct SolverOptions {
   /// The stall test's constraint violation (largest over the rows, in the rows' own units, as
   /// Ipopt measures it): the model's noise level on the constraints. <= 0: constraint_tolerance.
   double stall_violation = 0;
+  /// The stall test's objective change per iteration (relative, Ipopt's
+  /// acceptable_obj_change_tol); <= 0: `tolerance`. On a piecewise-smooth model the iterates
+  /// circle a kink at the level of its switching, so a change finer than the answer is judged to
+  /// (the verification's slack) is never reached although the design no longer moves.
+  double stall_change = 0;
   /// Ipopt's initial barrier parameter (mu_init, with the monotone barrier update); <= 0: Ipopt's
   /// defaults (adaptive update). A small value suits a start close to an active constraint or
   /// to many epigraph rows at once, which the default barrier pushes far away first. NLopt ignores it.

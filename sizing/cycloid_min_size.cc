@@ -1073,6 +1073,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
     optimizers::SolverResult best;
     bool have = false;
+    const bool ipopt_backend = options.solver.backend == "ipopt";
     const std::vector<std::vector<double>> points =
         round == 0 ? Starts(model, starts) : std::vector<std::vector<double>>{out.x};
     for (size_t s = 0; s < points.size(); ++s) {
@@ -1083,7 +1084,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
       so.initial = points[s];
       // Ipopt may cycle on the kinks of the rows (a peak cell or a loaded pair switching) until its
       // iteration limit: SLSQP polishes its last point then (as the LCR sizing does).
-      if (so.backend == "ipopt" && so.fallback_backend.empty()) so.fallback_backend = "nlopt_slsqp";
+      if (ipopt_backend && so.fallback_backend.empty()) so.fallback_backend = "nlopt_slsqp";
       optimizers::SolverResult r = optimizers::Solve(problem, so);
       out.evaluations += r.value_evaluations;
       out.gradient_evaluations += r.gradient_evaluations;
@@ -1093,6 +1094,27 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
       if (better || first) {
         best = r;
         have = true;
+      }
+    }
+    // Ipopt's answer is a stall point of its acceptable test (the size settled within
+    // stall_change, the rows within stall_violation): SLSQP from it settles the active set to the
+    // solver's tolerances, so the design and the multipliers of its limit costs are a KKT point's
+    // (SLSQP takes a start as it is; Ipopt's barrier would push it back inside first).
+    if (have && best.ok() && ipopt_backend) {
+      optimizers::SolverOptions polish = options.solver;
+      polish.backend = "nlopt_slsqp";
+      polish.fallback_backend.clear();
+      polish.initial = best.x;
+      optimizers::SolverResult p = optimizers::Solve(problem, polish);
+      out.evaluations += p.value_evaluations;
+      out.gradient_evaluations += p.gradient_evaluations;
+      const double settled = std::max(options.solver.stall_change, options.solver.tolerance) * std::max(std::abs(best.objective), 1.0);
+      if (p.ok() && p.objective <= best.objective + settled) {
+        p.message = best.message + "; nlopt_slsqp polished its stall point: " + p.message;
+        p.value_evaluations += best.value_evaluations;
+        p.gradient_evaluations += best.gradient_evaluations;
+        p.iterations += best.iterations;
+        best = p;
       }
     }
     out.result = best;
@@ -1225,7 +1247,11 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         CycloidMinSizeOptions again = options;
         again.starts = 1;
         // SLSQP from the answer: it takes a warm start as it is (Ipopt's barrier pushes a start on
-        // its bounds back inside and walks back), and both end at the same local optimum.
+        // its bounds back inside and walks back), and both end at the same local optimum -- except
+        // where SLSQP stops at once on the corner of piecewise rows the answer sits on, a
+        // first-order point of the moved problem too (the paper drive at 1322 MPa stayed at
+        // 147.78 mm; the full search finds 146.22 mm). A re-solve that stopped short, or did not
+        // move the size although its binding limit moved, is solved by Ipopt from the same start.
         again.solver.backend = "nlopt_slsqp";
         again.solver.fallback_backend.clear();
         again.re_solve_limit_costs = false;
@@ -1233,20 +1259,22 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         again.progress = nullptr;
         progress(steps, "limit cost of " + key + (side == 0 ? " (-)" : " (+)"));
         CycloidMinSizeOutcome r = SolveCycloidMinSize(moved, again);
-        if (!(r.verified && r.converged)) {
-          // SLSQP stopped short (an infeasible point on a kink): Ipopt from the same start then.
+        const bool stayed = std::abs(r.result.objective - f0) <= tolerance;
+        if (!(r.verified && r.converged) || stayed) {
           out.evaluations += r.evaluations;
           out.gradient_evaluations += r.gradient_evaluations;
           again.solver = options.solver;
           again.solver.backend = "ipopt";
           again.solver.fallback_backend.clear();
-          r = SolveCycloidMinSize(moved, again);
+          CycloidMinSizeOutcome ipopt = SolveCycloidMinSize(moved, again);
+          if ((ipopt.verified && ipopt.converged) || !(r.verified && r.converged)) r = std::move(ipopt);
         }
         out.evaluations += r.evaluations;
         out.gradient_evaluations += r.gradient_evaluations;
         if (r.verified && r.converged) f[side] = r.result.objective;
       }
-      out.limit_slope[key] = SlopeFromReSolves(f[0], f0, f[1], h, tolerance);
+      const bool lower = key.rfind("min_", 0) == 0 || key == "life_h";
+      out.limit_slope[key] = SlopeFromReSolves(f[0], f0, f[1], h, tolerance, lower ? LimitSense::kLower : LimitSense::kUpper);
     }
   }
   out.value_seconds = model.value_seconds();

@@ -23,9 +23,17 @@ struct LimitSlope {
   bool kink = false;
 };
 
+/// Which way raising a limit moves a minimised objective: a lower limit (≥ L) tightens, so the
+/// optimum can only rise; an upper limit (≤ L) loosens, so it can only fall.
+enum class LimitSense { kUnknown, kLower, kUpper };
+
 /// The slope from the verified objectives at L − h, L and L + h (NaN: no verified design there);
 /// `objective_tolerance` is the objective's absolute uncertainty from the solver's tolerances.
-inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, double h, double objective_tolerance) {
+/// With the limit's sense known, a side whose slope has the sign no optimum can have (a tightened
+/// limit that lowered the minimum) beyond its error is a kink too: the three solves ended on
+/// different local optima (a corner of piecewise rows), so their differences are no derivative.
+inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, double h, double objective_tolerance,
+                                    LimitSense sense = LimitSense::kUnknown) {
   LimitSlope s;
   s.step = h;
   if (!(h > 0) || !std::isfinite(f0)) return s;
@@ -36,6 +44,10 @@ inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, do
     s.sides = "central";
     const double error = 2 * objective_tolerance / h;  // each side's
     s.kink = std::abs(s.right - s.left) > 2 * error + 0.1 * std::max(std::abs(s.left), std::abs(s.right));
+    if (sense != LimitSense::kUnknown) {
+      const double sign = sense == LimitSense::kLower ? 1.0 : -1.0;
+      s.kink = s.kink || sign * s.left < -error || sign * s.right < -error;
+    }
   } else if (std::isfinite(s.left)) {
     s.slope = s.left;
     s.sides = "left";

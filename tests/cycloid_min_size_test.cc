@@ -260,6 +260,7 @@ CycloidMinSizeOptions Ipopt() {
   o.solver.constraint_tolerance = 1e-3;
   o.solver.stall_iterations = 3;
   o.solver.stall_violation = 1.0;
+  o.solver.stall_change = 1e-4;
   o.solver.max_evaluations = 200;
   o.starts = 2;
   return o;

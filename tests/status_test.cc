@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "sizing/limit_slope.h"
 #include "studies/status.h"
 #include "tests/test_util.h"
 
@@ -184,6 +185,25 @@ TEST(Status, ACycloidSizingWithItsLimitsMovedAgreesWithItselfInEveryRun) {
   EXPECT_GE(verified, 3);
 }
 
+// The slope of three re-solves by hand: smooth, a kink by differing sides, and a kink by a side
+// of the impossible sign (a tightened lower limit that lowered the minimum), which the sides'
+// agreement alone would pass.
+TEST(Status, ReSolveSlopesFlagDifferingSidesAndImpossibleSigns) {
+  using camopt::objectives::LimitSense;
+  using camopt::objectives::SlopeFromReSolves;
+  const auto smooth = SlopeFromReSolves(99.0, 100.0, 101.02, 1.0, 1e-4, LimitSense::kLower);
+  EXPECT_FALSE(smooth.kink);
+  EXPECT_NEAR(smooth.slope, 1.01, 1e-12);
+  EXPECT_EQ(smooth.sides, "central");
+  EXPECT_TRUE(SlopeFromReSolves(99.0, 100.0, 100.5, 1.0, 1e-4, LimitSense::kLower).kink);  // 1 against 0.5
+  // Both sides −0.07 per unit: they agree, but a stricter lower limit cannot shrink the optimum.
+  EXPECT_FALSE(SlopeFromReSolves(100.007, 100.0, 99.993, 0.1, 1e-5).kink);
+  EXPECT_TRUE(SlopeFromReSolves(100.007, 100.0, 99.993, 0.1, 1e-5, LimitSense::kLower).kink);
+  EXPECT_FALSE(SlopeFromReSolves(100.007, 100.0, 99.993, 0.1, 1e-5, LimitSense::kUpper).kink);
+  // Within the solves' error the sign says nothing: 1e-3 of objective error over h = 0.1 is 0.02.
+  EXPECT_FALSE(SlopeFromReSolves(100.0005, 100.0, 99.9995, 0.1, 1e-3, LimitSense::kLower).kink);
+}
+
 // Each binding limit's cost is the KKT multiplier and a verified re-solve slope at the limit ±1%;
 // where both sides solve and agree (no kink) the two agree within 5%. The paper drive: the stress
 // limit, smooth, −0.118 mm/MPa both ways (the multiplier was half that while the end-distance row,
@@ -201,7 +221,12 @@ TEST(Status, LimitCostsAgreeWithCentralReSolveSlopesWhereSmooth) {
     const double left = b["re_solve_left_slope"], right = b["re_solve_right_slope"], slope = b["re_solve_slope"];
     EXPECT_NEAR(slope, 0.5 * (left + right), 1e-12 * std::abs(slope) + 1e-15);
     if (b["kink"].get<bool>()) {
-      EXPECT_GT(std::abs(right - left), 0.1 * std::max(std::abs(left), std::abs(right)));
+      // A kink: the sides differ, or one has the sign no optimum has (raising a lower limit,
+      // min_* or life_h, cannot lower the smallest size; raising an upper one cannot raise it).
+      const std::string limit = b["limit"];
+      const double sense = limit.rfind("min_", 0) == 0 || limit == "life_h" ? 1.0 : -1.0;
+      EXPECT_TRUE(std::abs(right - left) > 0.1 * std::max(std::abs(left), std::abs(right)) || sense * left < 0 ||
+                  sense * right < 0);
       continue;
     }
     ++smooth;
