@@ -230,6 +230,10 @@ int RunCommandLine(int argc, char** argv) {
                     "Address to listen on (default 127.0.0.1: this machine only)");
   serve->add_flag("--allow-remote", serve_options.allow_remote,
                   "Allow a --host beyond this machine: every request then needs the token printed at start");
+  serve->add_option("--request-timeout", serve_options.request_timeout_s,
+                    "Seconds a connection has to send a whole request once begun (default 10); slower "
+                    "clients are disconnected")
+      ->check(CLI::Range(0.1, 3600.0));
   serve->add_option("--web", serve_options.web_dir,
                     "Folder of the front end's files (default: next to the program, or share/camopt/web)");
   CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");

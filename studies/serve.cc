@@ -25,6 +25,9 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <netdb.h>
+#include <poll.h>
+#include <sys/socket.h>
 #include <sys/prctl.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -751,6 +754,140 @@ std::string FindWebDir(const std::string& given) {
 
 }  // namespace
 
+// A connection's reads, each bounded by the read timeout and all of one request by a deadline:
+// a client that sends its request a byte at a time, or never finishes it, holds a worker for at
+// most the deadline (the library's own stream bounds each read only, so a byte every few seconds
+// held a worker for ever). Reads are buffered: the library reads a request's head a byte at a time.
+class DeadlineStream final : public httplib::Stream {
+ public:
+  using Clock = std::chrono::steady_clock;
+  DeadlineStream(int fd, Clock::time_point deadline, std::chrono::milliseconds read_timeout,
+                 std::chrono::milliseconds write_timeout)
+      : fd_(fd), deadline_(deadline), read_timeout_(read_timeout), write_timeout_(write_timeout) {}
+
+  bool is_readable() const override { return begin_ < end_ || Wait(POLLIN, ReadWait()); }
+  bool is_writable() const override { return Wait(POLLOUT, write_timeout_); }
+  ssize_t read(char* ptr, size_t size) override {
+    if (begin_ == end_) {
+      if (!Wait(POLLIN, ReadWait())) return -1;
+      ssize_t n;
+      do n = ::recv(fd_, buffer_, sizeof buffer_, 0);
+      while (n < 0 && errno == EINTR);
+      if (n <= 0) return n;
+      begin_ = 0;
+      end_ = size_t(n);
+    }
+    const size_t n = std::min(size, end_ - begin_);
+    std::memcpy(ptr, buffer_ + begin_, n);
+    begin_ += n;
+    return ssize_t(n);
+  }
+  ssize_t write(const char* ptr, size_t size) override {
+    if (!is_writable()) return -1;
+    ssize_t n;
+    do n = ::send(fd_, ptr, size, MSG_NOSIGNAL);
+    while (n < 0 && errno == EINTR);
+    return n;
+  }
+  void get_remote_ip_and_port(std::string& ip, int& port) const override { Address(true, ip, port); }
+  void get_local_ip_and_port(std::string& ip, int& port) const override { Address(false, ip, port); }
+  socket_t socket() const override { return fd_; }
+  void set_deadline(Clock::time_point deadline) { deadline_ = deadline; }
+
+ private:
+  std::chrono::milliseconds ReadWait() const {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now());
+    return std::max(std::chrono::milliseconds(0), std::min(left, read_timeout_));
+  }
+  bool Wait(short events, std::chrono::milliseconds timeout) const {
+    pollfd p{fd_, events, 0};
+    int r;
+    do r = ::poll(&p, 1, int(timeout.count()));
+    while (r < 0 && errno == EINTR);
+    return r > 0 && (p.revents & (events | POLLHUP | POLLERR));
+  }
+  void Address(bool remote, std::string& ip, int& port) const {
+    sockaddr_storage a{};
+    socklen_t n = sizeof a;
+    ip.clear();
+    port = 0;
+    if ((remote ? ::getpeername(fd_, reinterpret_cast<sockaddr*>(&a), &n)
+                : ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &n)) != 0)
+      return;
+    char host[NI_MAXHOST], service[NI_MAXSERV];
+    if (::getnameinfo(reinterpret_cast<sockaddr*>(&a), n, host, sizeof host, service, sizeof service,
+                      NI_NUMERICHOST | NI_NUMERICSERV) == 0) {
+      ip = host;
+      port = std::atoi(service);
+    }
+  }
+
+  int fd_;
+  Clock::time_point deadline_;
+  std::chrono::milliseconds read_timeout_, write_timeout_;
+  char buffer_[4096];
+  size_t begin_ = 0, end_ = 0;
+};
+
+// The studio's server: each connection waits at most the idle time for a request to begin, then
+// has `request_timeout` to deliver it (head and body); one client address holds at most
+// kConnectionsPerClient connections at once (more are answered 503 at once), fewer than the
+// workers, so one client's slow connections cannot hold every worker.
+class GuardedServer final : public httplib::Server {
+ public:
+  static constexpr int kConnectionsPerClient = 48;
+  static constexpr int kWorkers = kConnectionsPerClient + 16;
+  explicit GuardedServer(std::chrono::milliseconds request_timeout) : request_timeout_(request_timeout) {
+    new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
+  }
+
+ private:
+  bool process_and_close_socket(socket_t fd) override {
+    std::string client;
+    int port = 0;
+    DeadlineStream(fd, DeadlineStream::Clock::now(), kIdle, kIdle).get_remote_ip_and_port(client, port);
+    bool admitted;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      admitted = ++connections_[client] <= kConnectionsPerClient;
+    }
+    bool ok = true;
+    if (!admitted) {
+      const std::string body = "{\"error\": \"too many connections from " + client + " at once (at most " +
+                               std::to_string(kConnectionsPerClient) + ")\"}";
+      const std::string answer = "HTTP/1.1 503 Service Unavailable\r\nContent-Type: application/json\r\n"
+                                 "Connection: close\r\nContent-Length: " +
+                                 std::to_string(body.size()) + "\r\n\r\n" + body;
+      DeadlineStream(fd, DeadlineStream::Clock::now(), kIdle, kIdle).write(answer.data(), answer.size());
+    } else {
+      // One stream for the connection's requests, so bytes of the next request read with this one
+      // stay in its buffer.
+      DeadlineStream stream(fd, DeadlineStream::Clock::now() + kIdle, kIdle, kWrite);
+      for (size_t left = keep_alive_max_count_; left > 0 && is_running(); --left) {
+        // Idle: the next request must begin within the idle time (the first one too).
+        stream.set_deadline(DeadlineStream::Clock::now() + kIdle);
+        if (!stream.is_readable()) break;
+        stream.set_deadline(DeadlineStream::Clock::now() + request_timeout_);
+        bool closed = false;
+        ok = process_request(stream, left == 1 || !is_running(), closed, nullptr);
+        if (!ok || closed) break;
+      }
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (--connections_[client] == 0) connections_.erase(client);
+    }
+    ::shutdown(fd, SHUT_RDWR);
+    ::close(fd);
+    return ok;
+  }
+
+  static constexpr std::chrono::milliseconds kIdle{5000}, kWrite{5000};
+  std::chrono::milliseconds request_timeout_;
+  std::mutex mutex_;
+  std::map<std::string, int> connections_;
+};
+
 int ServeMain(const ServeOptions& options) {
   std::error_code ec;
   const fs::path root = fs::canonical(options.folder, ec);
@@ -796,11 +933,10 @@ int ServeMain(const ServeOptions& options) {
   CurrentInputLimits().files_inside = root.string();
   Studio studio(root, exe.string());
   if (!token.empty()) studio.SetToken(token);
-  httplib::Server server;
+  // Threads for the connections (GuardedServer::kWorkers): a browser keeps several open
+  // (keep-alive) and each run's event stream holds one for as long as the run lasts.
+  GuardedServer server(std::chrono::milliseconds(long(options.request_timeout_s * 1000)));
   server.set_payload_max_length(kMaxBodyBytes);
-  // Threads for the connections: a browser keeps several open (keep-alive) and each run's event
-  // stream holds one for as long as the run lasts.
-  server.new_task_queue = [] { return new httplib::ThreadPool(32); };
   server.set_pre_routing_handler([&studio, &token](const httplib::Request& req, httplib::Response& res) {
     std::string why;
     int status = 403;

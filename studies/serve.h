@@ -28,6 +28,9 @@ struct ServeOptions {
   /// A host that is not a loopback address (127.x, ::1, localhost) is refused (exit 2) unless this
   /// is set; then every request needs the token printed at start (docs/studio.md).
   bool allow_remote = false;
+  /// Seconds a connection has to deliver a request (its head and body) once it has begun; a
+  /// connection also waits at most 5 s idle for a request to begin (docs/studio.md).
+  double request_timeout_s = 10;
 };
 
 /// Whether the studio's --host reaches only this machine: 127.0.0.0/8, ::1 or localhost.

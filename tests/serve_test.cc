@@ -9,11 +9,13 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -360,6 +362,144 @@ TEST(Serve, RefusesBodiesAboveTheLimit) {
   res = studio.Client().Post("/api/validate", "{}", "application/json");
   ASSERT_TRUE(res);
   EXPECT_NE(res->status, 413);
+}
+
+// A connection to the studio that has sent `head` (an unfinished request) and stays open.
+int SlowClient(int port, const std::string& head) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return -1;
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(uint16_t(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
+      ::send(fd, head.data(), head.size(), MSG_NOSIGNAL) != ssize_t(head.size())) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// What the server has sent on `fd` so far ("" if nothing yet) and whether it closed the connection.
+std::pair<std::string, bool> Received(int fd) {
+  std::string out;
+  char buf[4096];
+  for (;;) {
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, 0) <= 0) return {out, false};
+    const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+    if (n <= 0) return {out, true};
+    out.append(buf, size_t(n));
+  }
+}
+
+// Slow clients (a request begun and sent a byte at a time, never finished) neither hold the
+// workers nor stay: with 40 of them connected a normal request is answered within 1 s, and each is
+// disconnected once the request timeout (2 s here) has passed although it keeps sending.
+TEST(Serve, SlowClientsNeitherHoldTheWorkersNorStayConnected) {
+  const fs::path dir = TempDir("serve-slow");
+  Studio studio(dir, {"--request-timeout", "2"});
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  const std::string head = "GET /api/files HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(studio.port()) + "\r\nX-Slow: ";
+  std::vector<int> slow;
+  for (int i = 0; i < 40; ++i) slow.push_back(SlowClient(studio.port(), head));
+  for (int fd : slow) ASSERT_GE(fd, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // each has a worker now
+  const auto t0 = std::chrono::steady_clock::now();
+  auto res = studio.Client().Get("/api/kinds");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_LT(seconds, 1.0);
+  // A byte every 0.2 s from each: all are closed by the server after 2 s, none answered.
+  std::vector<bool> closed(slow.size(), false);
+  const auto start = std::chrono::steady_clock::now();
+  size_t open = slow.size();
+  while (open > 0 && std::chrono::steady_clock::now() - start < std::chrono::seconds(6)) {
+    for (size_t i = 0; i < slow.size(); ++i) {
+      if (closed[i]) continue;
+      ::send(slow[i], "x", 1, MSG_NOSIGNAL);
+      const auto [got, eof] = Received(slow[i]);
+      EXPECT_EQ(got.find("200 OK"), std::string::npos);
+      if (eof) closed[i] = true, --open;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  const double held = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(open, 0u) << "still connected after " << held << " s";
+  EXPECT_GT(held, 1.5);  // not before the timeout
+  for (int fd : slow) ::close(fd);
+}
+
+// One client address holds at most 48 connections at once: the ones beyond are answered 503 at
+// once, and the studio answers again once they are gone.
+TEST(Serve, OneClientsConnectionsAreBounded) {
+  const fs::path dir = TempDir("serve-bound");
+  Studio studio(dir, {"--request-timeout", "3"});
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  const std::string head = "GET /api/files HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(studio.port()) + "\r\n";
+  std::vector<int> fds;
+  for (int i = 0; i < 52; ++i) fds.push_back(SlowClient(studio.port(), head));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+  int refused = 0;
+  for (int fd : fds) {
+    ASSERT_GE(fd, 0);
+    const auto [got, eof] = Received(fd);
+    if (got.rfind("HTTP/1.1 503", 0) == 0) {
+      ++refused;
+      EXPECT_NE(got.find("too many connections from 127.0.0.1"), std::string::npos) << got;
+      EXPECT_TRUE(eof);
+    } else {  // nothing, or (a connection made seconds ago: the listen queue is short) a 400 at the timeout
+      EXPECT_TRUE(got.empty() || got.rfind("HTTP/1.1 400", 0) == 0) << got;
+    }
+  }
+  EXPECT_EQ(refused, 4);
+  for (int fd : fds) ::close(fd);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  auto res = studio.Client().Get("/api/kinds");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+}
+
+// The studio's memory after 500 mixed requests (reads, writes, validations, refusals, 404s, bodies
+// above the cap) is within 16 MiB of what it was after the first 100: nothing grows per request.
+TEST(Serve, MemoryStaysBoundedOverFiveHundredMixedRequests) {
+  const fs::path dir = TempDir("serve-memory");
+  fs::copy_file(Example("lcr_ii.json"), dir / "a.json");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto rss_kib = [&] {
+    std::ifstream status("/proc/" + std::to_string(studio.pid()) + "/status");
+    std::string line;
+    while (std::getline(status, line))
+      if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
+    return -1L;
+  };
+  const std::string study = ReadFile(dir / "a.json");
+  const std::string big(camopt::studies::kMaxBodyBytes + 1, ' ');
+  auto c = studio.Client();
+  long after100 = 0;
+  for (int i = 0; i < 500; ++i) {
+    auto request = [&]() -> httplib::Result {
+      switch (i % 8) {
+        case 0: return c.Get("/api/files");
+        case 1: return c.Get("/api/file?path=a.json");
+        case 2: return c.Post("/api/validate", study, "application/json");
+        case 3: return c.Put("/api/file?path=b" + std::to_string(i % 5) + ".json", study, "application/json");
+        case 4: return c.Post("/api/validate", "{\"study\": ", "application/json");
+        case 5: return c.Get("/api/file?path=../outside.json");
+        case 6: return c.Get("/api/nothing-here");
+        default: return c.Post("/api/validate", big, "application/json");
+      }
+    };
+    const httplib::Result r = request();
+    ASSERT_TRUE(r) << i;
+    EXPECT_LT(r->status, 500) << i;
+    if (i == 99) after100 = rss_kib();
+  }
+  const long after500 = rss_kib();
+  ASSERT_GT(after100, 0);
+  EXPECT_LT(after500, after100 + 16 * 1024) << after100 << " KiB after 100, " << after500 << " after 500";
 }
 
 TEST(Serve, ValidateGivesTheCliMessageWithItsJsonPath) {
