@@ -18,6 +18,7 @@
 // exit 1); --budget-mb B makes any case whose peak resident memory exceeds B a failure.
 //
 //   camopt_mutate --cases N [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]
+//                 [--sweeps DIR: mutate the sweep files of DIR and run `camopt sweep` on them]
 //                 [--work-factor F] [--save DIR] [--record FILE] [--quiet]
 //   camopt_mutate --replay DIR      (every *.json in DIR as it is: the corpus of past failures)
 //   camopt_mutate --show I --seed S (print case I's study text: a failure is reproducible)
@@ -50,6 +51,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/cli.h"
+#include "studies/sweep.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
@@ -89,6 +91,9 @@ struct Options {
   double refusal_cpu_s = 1, refusal_rss_mb = 500;
   double budget_mb = 0;  // any case above this peak memory fails (0: only refusals are held to one)
   fs::path save, record, replay;
+  /// Sweep files to mutate instead of studies (`camopt sweep MUTANT --out DIR --jobs 1 ...`); their
+  /// bases ("../examples/NAME.json") resolve to the example studies.
+  fs::path sweeps;
   long show = -1;
   bool quiet = false;
 };
@@ -317,6 +322,17 @@ Finished Judge(int status, const rusage& ru, double wall_s, const fs::path& err_
   const std::string err = ReadFile(err_file);
   f.message = err.substr(0, std::min(err.find('\n'), size_t{300}));
   const bool has_result = fs::exists(out / "result.json");
+  // A sweep's case that failed (out of memory or a camopt defect) is a defect of the sweep's answer.
+  if (!o.sweeps.empty() && has_result && WIFEXITED(status) && (WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 3)) {
+    const json summary = json::parse(ReadFile(out / "result.json"), nullptr, false);
+    const json failed = summary.is_object() ? summary.value("/status_counts/failed"_json_pointer, json(0)) : json(0);
+    if (!failed.is_number() || failed.get<long>() != 0) {
+      f.code = WEXITSTATUS(status);
+      f.outcome = "defect (exit 1)";
+      f.message = "a case failed: " + summary.value("/cases_not_ok"_json_pointer, json()).dump().substr(0, 300);
+      return f;
+    }
+  }
   const double scale = kSanitized ? 5.0 : 1.0;
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
@@ -330,13 +346,14 @@ Finished Judge(int status, const rusage& ru, double wall_s, const fs::path& err_
     case 0: f.outcome = has_result ? "ran" : "no result.json"; break;
     case 2:
       if (err.find("camopt: error: ") == std::string::npos || err.size() < 30) f.outcome = "no message";
-      else if (fs::exists(out)) f.outcome = "refusal left files";
+      else if (fs::exists(out) || fs::exists(out.string() + ".camopt-sweep")) f.outcome = "refusal left files";
       else if (f.cpu_s > o.refusal_cpu_s * scale) f.outcome = "slow refusal";
       else if (f.rss_mb > o.refusal_rss_mb * scale) f.outcome = "big refusal";
       else f.outcome = "refused";
       break;
     case 3:
-      if (err.find("camopt: finished, but") == std::string::npos) f.outcome = "no message";
+      // (a sweep with --quiet says nothing more: its cases' statuses are in its result.json)
+      if (o.sweeps.empty() && err.find("camopt: finished, but") == std::string::npos) f.outcome = "no message";
       else f.outcome = has_result ? "incomplete" : "no result.json";
       break;
     case 1: f.outcome = "defect (exit 1)"; break;
@@ -353,7 +370,8 @@ struct Running {
   std::chrono::steady_clock::time_point start;
 };
 
-[[noreturn]] void RunChild(const fs::path& study, const fs::path& out, const fs::path& err, const Options& o) {
+[[noreturn]] void RunChild(const fs::path& study, const fs::path& out, const fs::path& err, const Options& o,
+                           double runs = 1) {
   const int efd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   const int nfd = ::open("/dev/null", O_RDWR);
   if (efd < 0 || nfd < 0) _exit(97);
@@ -369,7 +387,9 @@ struct Running {
   }
   // The time limit is on CPU time (SIGXCPU), so that a loaded machine does not turn a case into a
   // timeout; the wall-clock alarm at four times it catches a case that waits without computing.
-  const rlim_t cpu = static_cast<rlim_t>(std::ceil(o.timeout_s * (kSanitized ? 5 : 1)));
+  // A sweep of N cases is N runs, each within the caps: it has the time of N/10 runs (the example
+  // sweeps' cases take a tenth of a run's limit or less), at least one run's.
+  const rlim_t cpu = static_cast<rlim_t>(std::ceil(o.timeout_s * std::max(1.0, runs / 10) * (kSanitized ? 5 : 1)));
   rlimit cpu_limit{cpu, cpu + 2};
   setrlimit(RLIMIT_CPU, &cpu_limit);
   alarm(static_cast<unsigned>(4 * cpu));
@@ -377,6 +397,10 @@ struct Running {
   std::snprintf(factor, sizeof factor, "%.17g", o.work_factor);
   std::vector<std::string> args = {"camopt", "run", study.string(), "--out", out.string(), "--quiet",
                                    "--max-work-factor", factor};
+  if (!o.sweeps.empty()) {
+    args[1] = "sweep";
+    args.insert(args.end(), {"--jobs", "1"});
+  }
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -395,7 +419,7 @@ std::vector<Example> LoadExamples(const fs::path& dir) {
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     json j = json::parse(ReadFile(f), nullptr, false);
-    if (j.is_object() && j.contains("study") && j["study"].is_string())
+    if (j.is_object() && ((j.contains("study") && j["study"].is_string()) || (j.contains("sweep") && j["sweep"].is_string())))
       out.push_back({f.filename().string(), std::move(j)});
   }
   return out;
@@ -410,7 +434,7 @@ std::string Clock(double s) {
 int Usage(const std::string& why) {
   std::cerr << "camopt_mutate: " << why << "\n"
             << "usage: camopt_mutate [--cases N] [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]\n"
-               "                     [--work-factor F] [--examples DIR] [--save DIR] [--record FILE] [--quiet]\n"
+               "                     [--work-factor F] [--examples DIR] [--sweeps DIR] [--save DIR] [--record FILE] [--quiet]\n"
                "       camopt_mutate --replay DIR | --show I [--seed S]\n";
   return 2;
 }
@@ -434,6 +458,7 @@ int main(int argc, char** argv) {
       else if (a == "--budget-mb") o.budget_mb = std::stod(next());
       else if (a == "--work-factor") o.work_factor = std::stod(next());
       else if (a == "--examples") o.examples = next();
+      else if (a == "--sweeps") o.sweeps = next();
       else if (a == "--save") o.save = next();
       else if (a == "--record") o.record = next();
       else if (a == "--replay") o.replay = next();
@@ -444,8 +469,8 @@ int main(int argc, char** argv) {
       return Usage(a + ": " + e.what());
     }
   }
-  const std::vector<Example> examples = LoadExamples(o.examples);
-  if (examples.empty()) return Usage("no example studies in " + o.examples.string());
+  const std::vector<Example> examples = LoadExamples(o.sweeps.empty() ? o.examples : o.sweeps);
+  if (examples.empty()) return Usage("no example studies or sweeps in " + (o.sweeps.empty() ? o.examples : o.sweeps).string());
   const Mutator mutator(examples);
   if (o.show >= 0) {
     std::string from;
@@ -469,10 +494,11 @@ int main(int argc, char** argv) {
   // A scratch folder that looks like the examples folder (relative catalogue paths resolve).
   std::string pattern = (fs::temp_directory_path() / "camopt-mutate-XXXXXX").string();
   if (!mkdtemp(pattern.data())) return Usage("cannot create a scratch folder in " + fs::temp_directory_path().string());
-  const fs::path scratch = pattern, ex = scratch / "examples";
+  const fs::path scratch = pattern, ex = scratch / (o.sweeps.empty() ? "examples" : "sweeps");
   fs::create_directories(ex);
+  fs::create_directories(scratch / "examples");
   for (const auto& e : fs::directory_iterator(o.examples))
-    if (e.is_regular_file()) fs::create_symlink(fs::absolute(e.path()), ex / e.path().filename());
+    if (e.is_regular_file()) fs::create_symlink(fs::absolute(e.path()), scratch / "examples" / e.path().filename());
   if (!o.save.empty()) fs::create_directories(o.save);
 
   std::map<std::string, long> counts;
@@ -508,13 +534,21 @@ int main(int argc, char** argv) {
         std::ofstream f(study, std::ios::binary | std::ios::trunc);
         f << r.text;
       }
+      // A sweep's case count (1 when the sweep file is refused: the refusal is the case).
+      double runs = 1;
+      if (!o.sweeps.empty()) {
+        try {
+          runs = double(camopt::studies::sweep::CheckSweep(json::parse(r.text), study.string()));
+        } catch (const std::exception&) {
+        }
+      }
       r.start = std::chrono::steady_clock::now();
       const pid_t pid = fork();
       if (pid < 0) {
         std::perror("camopt_mutate: fork");
         return 2;
       }
-      if (pid == 0) RunChild(study, out, scratch / ("err_" + std::to_string(s)), o);
+      if (pid == 0) RunChild(study, out, scratch / ("err_" + std::to_string(s)), o, runs);
       r.pid = pid;
       ++running;
     }
@@ -561,6 +595,7 @@ int main(int argc, char** argv) {
       }
     }
     fs::remove_all(out);
+    fs::remove_all(out.string() + ".camopt-sweep");
     r.pid = 0;
     --running;
     ++done;
@@ -577,7 +612,7 @@ int main(int argc, char** argv) {
   fs::remove_all(scratch);
 
   json rec;
-  rec["mode"] = replay.empty() ? "mutate" : "replay " + o.replay.string();
+  rec["mode"] = std::string(replay.empty() ? "mutate" : "replay " + o.replay.string()) + (o.sweeps.empty() ? "" : " sweeps");
   rec["seed"] = o.seed;
   rec["cases"] = done;
   rec["jobs"] = o.jobs;

@@ -89,6 +89,9 @@ long_tests=(
   '^CycloidMinSizeStudy\.EachDatasheetLimitBindsIsVerifiedAndIsWhatCycloidLtcaReports'
   'EveryExample/TwoRuns\.GiveByteIdenticalFolders/cycloid_ltca_nnm_tolerances'
   'EveryExample/ConvergenceOfExample\.CoarseSettings/disc_cam_min_size_oscillating'
+  # the sweep files' fixed-seed mutation campaign (500 sweeps; the studies' campaign and the sweep
+  # corpus replay stay)
+  '^MutationFuzz\.SweepFilesFixedSeed'
 )
 # (The builds that run no camopt code, InstalledHeaders, ConsumerProject and ApiReference, are not
 # registered in this build at all: cmake/camopt_package.cmake, cmake/camopt_docs.cmake.)

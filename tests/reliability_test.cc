@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <tuple>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -749,6 +750,31 @@ TEST(BadInput, NanWorkFactorAndEmptyOutAreRefused) {
   const auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out ''");
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("--out"), std::string::npos) << r.stderr_text;
+}
+
+// A logarithmic crowning coefficient of 1e300 mm (the sweep mutation campaign: a swept value) made
+// the gaps infinite, "a camopt defect" in the contact solver: now refused at the field, as are an
+// end drop and an effective length beyond 1e6 face widths; 1e6 face widths still runs.
+TEST(BadInput, AnAbsurdLogarithmicCrowningIsRefusedAtTheField) {
+  const auto dir = TempDir("crowning-1e300");
+  for (const auto& [field, value, code] : std::vector<std::tuple<std::string, double, int>>{
+           {"coefficient_mm", 1e300, 2}, {"end_drop_mm", 1e300, 2}, {"effective_length_mm", 1e300, 2},
+           {"coefficient_mm", 17e6, 0}}) {
+    SCOPED_TRACE(field + " " + std::to_string(value));
+    json study = json::parse(ReadFile(SourcePath("studies/examples/cycloid_ltca_nnm_lcm.json")));
+    ASSERT_EQ(study["drive"]["face_width_mm"], 17);
+    study["crowning"][field] = value;
+    study["analysis"]["grid"] = {12, 12};
+    study["analysis"]["crank_angles_per_mesh_period"] = 2;
+    WriteFile(dir / "s.json", study.dump());
+    fs::remove_all(dir / "o");
+    const auto r = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+    EXPECT_EQ(r.exit_code, code) << r.stderr_text;
+    if (code == 2) {
+      EXPECT_NE(r.stderr_text.find("/crowning"), std::string::npos) << r.stderr_text;
+      EXPECT_NE(r.stderr_text.find("at most 1e6 times the face width"), std::string::npos) << r.stderr_text;
+    }
+  }
 }
 
 // Starts camopt, sends `sig` after `delay_s`, returns (exit code, stderr).

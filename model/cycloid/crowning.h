@@ -70,6 +70,13 @@ inline std::string CheckCrowning(const Crowning& c, double face_width_mm) {
       return "";
     case CrowningType::kLogarithmic:
       if (!(c.coefficient_mm >= 0)) return "logarithmic crowning coefficient must be >= 0";
+      // Far beyond any crowning (a few µm), and a bound the drop's logarithm keeps finite in: the
+      // same 1e6 × the part's size as every other length of a study (1e300 made the gaps infinite).
+      if (!(c.coefficient_mm <= 1e6 * face_width_mm))
+        return "logarithmic crowning coefficient must be at most 1e6 times the face width";
+      if (!(c.end_drop_mm <= 1e6 * face_width_mm)) return "end drop must be at most 1e6 times the face width";
+      if (!(c.effective_length_mm <= 1e6 * face_width_mm))
+        return "effective length must be at most 1e6 times the face width";
       if (!(c.effective_length_mm == 0 || c.effective_length_mm >= face_width_mm))
         return "effective length must be >= the face width";
       if (!(c.end_drop_mm >= 0)) return "end drop must be >= 0";
