@@ -896,7 +896,7 @@ int ServeMain(const ServeOptions& options) {
               << (ec ? ec.message() : std::string("not a folder")) << "\n";
     return 2;
   }
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path exe = options.program.empty() ? fs::read_symlink("/proc/self/exe", ec) : fs::path(options.program);
   if (ec) {
     std::cerr << "camopt: error: serve: cannot find the program's own file (/proc/self/exe): " << ec.message()
               << "\n";
@@ -993,6 +993,7 @@ int ServeMain(const ServeOptions& options) {
               << port << "/?token=" << token << "\n";
   if (web.empty()) std::cerr << "camopt: warning: serve: the front end's files were not found; API only\n";
   std::cerr << "camopt: serving the study files of " << root.string() << " (Ctrl-C stops)" << std::endl;
+  if (options.on_listening) options.on_listening(port, [&server] { server.stop(); });
   server.listen_after_bind();
   return 0;
 }

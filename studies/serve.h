@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 namespace camopt::studies {
@@ -31,6 +32,12 @@ struct ServeOptions {
   /// Seconds a connection has to deliver a request (its head and body) once it has begun; a
   /// connection also waits at most 5 s idle for a request to begin (docs/studio.md).
   double request_timeout_s = 10;
+  /// The camopt program the runs start; empty: this program (`camopt serve`'s own file). A program
+  /// that serves in-process (the request fuzzer) names the camopt binary here.
+  std::string program;
+  /// Called once the server listens, with its port and a function that stops it (ServeMain then
+  /// returns 0); for serving in-process.
+  std::function<void(int port, std::function<void()> stop)> on_listening;
 };
 
 /// Whether the studio's --host reaches only this machine: 127.0.0.0/8, ::1 or localhost.
