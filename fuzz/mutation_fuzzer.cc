@@ -19,6 +19,8 @@
 //
 //   camopt_mutate --cases N [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]
 //                 [--sweeps DIR: mutate the sweep files of DIR and run `camopt sweep` on them]
+//   camopt_mutate --fields [...]    (every numeric leaf of every kind's `camopt init` study set to
+//                                    0, -1, ±1e-300, 1e308, -0, 5e-324, a string, a deep array)
 //                 [--work-factor F] [--save DIR] [--record FILE] [--quiet]
 //   camopt_mutate --replay DIR      (every *.json in DIR as it is: the corpus of past failures)
 //   camopt_mutate --show I --seed S (print case I's study text: a failure is reproducible)
@@ -51,6 +53,8 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/cli.h"
+#include "studies/init.h"
+#include "studies/study.h"
 #include "studies/sweep.h"
 
 namespace fs = std::filesystem;
@@ -94,6 +98,9 @@ struct Options {
   /// Sweep files to mutate instead of studies (`camopt sweep MUTANT --out DIR --jobs 1 ...`); their
   /// bases ("../examples/NAME.json") resolve to the example studies.
   fs::path sweeps;
+  /// Every numeric leaf of every kind's `camopt init` study set to each of kFieldValues in turn
+  /// (one case each, in order; --cases is ignored).
+  bool fields = false;
   long show = -1;
   bool quiet = false;
 };
@@ -411,6 +418,30 @@ struct Running {
   _exit(code);
 }
 
+// --fields: (name, text) of every kind's init study with one numeric leaf set to one value; the
+// name is "KIND /pointer = value".
+std::vector<std::pair<std::string, std::string>> FieldCases() {
+  json deep = 1;
+  for (int i = 0; i < 64; ++i) deep = json::array({deep});
+  const std::vector<std::pair<std::string, json>> values = {
+      {"0", 0},          {"-1", -1},     {"1e-300", 1e-300},       {"-1e-300", -1e-300}, {"1e308", 1e308},
+      {"-0", -0.0},      {"5e-324", 5e-324}, {"\"x\"", "x"},     {"a 64-deep array", deep}};
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& kind : camopt::studies::StudyKinds()) {
+    const json doc = json::parse(camopt::studies::InitTemplate(kind).text);
+    const json flat = doc.flatten();
+    for (const auto& [pointer, leaf] : flat.items()) {
+      if (!leaf.is_number()) continue;
+      for (const auto& [label, value] : values) {
+        json m = doc;
+        m[json::json_pointer(pointer)] = value;
+        out.emplace_back(kind + " " + pointer + " = " + label, m.dump(2));
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<Example> LoadExamples(const fs::path& dir) {
   std::vector<Example> out;
   std::vector<fs::path> files;
@@ -435,7 +466,7 @@ int Usage(const std::string& why) {
   std::cerr << "camopt_mutate: " << why << "\n"
             << "usage: camopt_mutate [--cases N] [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]\n"
                "                     [--work-factor F] [--examples DIR] [--sweeps DIR] [--save DIR] [--record FILE] [--quiet]\n"
-               "       camopt_mutate --replay DIR | --show I [--seed S]\n";
+               "       camopt_mutate --replay DIR | --fields | --show I [--seed S]\n";
   return 2;
 }
 
@@ -459,6 +490,7 @@ int main(int argc, char** argv) {
       else if (a == "--work-factor") o.work_factor = std::stod(next());
       else if (a == "--examples") o.examples = next();
       else if (a == "--sweeps") o.sweeps = next();
+      else if (a == "--fields") o.fields = true;
       else if (a == "--save") o.save = next();
       else if (a == "--record") o.record = next();
       else if (a == "--replay") o.replay = next();
@@ -488,6 +520,9 @@ int main(int argc, char** argv) {
     std::sort(files.begin(), files.end());
     for (const auto& f : files) replay.emplace_back(f.filename().string(), ReadFile(f));
     if (replay.empty()) return Usage("no *.json in " + o.replay.string());
+    o.cases = static_cast<long>(replay.size());
+  } else if (o.fields) {
+    replay = FieldCases();
     o.cases = static_cast<long>(replay.size());
   }
 
@@ -567,7 +602,7 @@ int main(int argc, char** argv) {
     const fs::path out = scratch / ("out_" + std::to_string(s));
     const Finished f = Judge(status, ru, wall, scratch / ("err_" + std::to_string(s)), out, o);
     ++counts[f.outcome];
-    ++by_kind[r.from][f.outcome];
+    ++by_kind[o.fields ? r.from.substr(0, r.from.find(' ')) : r.from][f.outcome];
     if (f.outcome == "refused") {
       if (f.message.find("--max-work-factor") != std::string::npos) ++refused_by_caps;
       max_refusal_cpu = std::max(max_refusal_cpu, f.cpu_s);
@@ -612,7 +647,10 @@ int main(int argc, char** argv) {
   fs::remove_all(scratch);
 
   json rec;
-  rec["mode"] = std::string(replay.empty() ? "mutate" : "replay " + o.replay.string()) + (o.sweeps.empty() ? "" : " sweeps");
+  rec["mode"] = std::string(o.fields           ? "fields"
+                           : replay.empty()     ? "mutate"
+                                                : "replay " + o.replay.string()) +
+                (o.sweeps.empty() ? "" : " sweeps");
   rec["seed"] = o.seed;
   rec["cases"] = done;
   rec["jobs"] = o.jobs;

@@ -64,6 +64,10 @@ inline void CheckPlausible(const Node& root, const cycloid::Drive& drive) {
                                    Format(100 * kMinPinToHalfPitch, 3) + "% of the half pitch " +
                                    Format(half_pitch, 4) + " mm (real drives: 30-80%): at least " +
                                    Format(kMinPinToHalfPitch * half_pitch, 4) + " mm would fit");
+  // Last (a pin circle off by a unit explains a width that looks off against it): the disc's width
+  // against the pin circle, the 1e-6…1e6 of every length of a study (a width of 1e308 mm made the
+  // loads per unit width infinite, 5e-324 mm every crowning absurd).
+  PlausibleLength(d["face_width_mm"], R, "the pin circle radius");
 }
 
 /// The drive of the declared "drive" and "modification" (µm) of a study at `root`, checked: a

@@ -777,6 +777,25 @@ TEST(BadInput, AnAbsurdLogarithmicCrowningIsRefusedAtTheField) {
   }
 }
 
+// The field-by-field mutation of `camopt init cycloid_crowning_tuning`: a face width of 1e308 mm
+// ("load_N must be finite") or 5e-324 mm (its crowning check raised inside the model) exited 1;
+// now refused at the field, in every cycloid kind that reads a drive.
+TEST(BadInput, AnAbsurdCycloidFaceWidthIsRefusedAtTheField) {
+  const auto dir = TempDir("face-width");
+  for (const char* example : {"cycloid_crowning_tuning_nnm.json", "cycloid_ltca_nnm_lcm.json"})
+    for (const double width : {1e308, 5e-324, 1e-300}) {
+      SCOPED_TRACE(std::string(example) + " " + std::to_string(width));
+      json study = json::parse(ReadFile(SourcePath(std::string("studies/examples/") + example)));
+      study["drive"]["face_width_mm"] = width;
+      WriteFile(dir / "s.json", study.dump());
+      const auto r = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+      EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+      EXPECT_NE(r.stderr_text.find("/drive/face_width_mm"), std::string::npos) << r.stderr_text;
+      EXPECT_NE(r.stderr_text.find("the pin circle radius"), std::string::npos) << r.stderr_text;
+      EXPECT_FALSE(fs::exists(dir / "o"));
+    }
+}
+
 // Starts camopt, sends `sig` after `delay_s`, returns (exit code, stderr).
 std::pair<int, std::string> RunAndSignal(const std::vector<std::string>& args, int sig, double delay_s,
                                          const fs::path& err_file) {

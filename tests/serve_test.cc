@@ -464,6 +464,11 @@ TEST(Serve, OneClientsConnectionsAreBounded) {
 // The studio's memory after 500 mixed requests (reads, writes, validations, refusals, 404s, bodies
 // above the cap) is within 16 MiB of what it was after the first 100: nothing grows per request.
 TEST(Serve, MemoryStaysBoundedOverFiveHundredMixedRequests) {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer keeps freed memory in its quarantine (256 MB by default): the resident size
+  // then grows with every request by design, so it measures the sanitizer, not the server.
+  GTEST_SKIP() << "resident memory is measured without AddressSanitizer's quarantine";
+#endif
   const fs::path dir = TempDir("serve-memory");
   fs::copy_file(Example("lcr_ii.json"), dir / "a.json");
   Studio studio(dir);
@@ -1213,7 +1218,7 @@ TEST(Serve, AHostBeyondThisMachineNeedsAFlagAndATokenOnEveryRequest) {
   Studio studio(dir, {"--host", "0.0.0.0", "--allow-remote"}, err_file);
   ASSERT_GT(studio.port(), 0) << studio.first_line();
   std::string err;
-  for (int i = 0; i < 50 && err.find("?token=") == std::string::npos; ++i) {
+  for (int i = 0; i < 250 && err.find("?token=") == std::string::npos; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     err = ReadFile(err_file);
   }
