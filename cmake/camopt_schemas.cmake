@@ -3,7 +3,7 @@
 
 # The example each study kind's `camopt init KIND` starts from (one per kind: a light, typical
 # design that needs no other file), compiled in so that an installed binary writes them.
-set(CAMOPT_INIT_TEMPLATES cycloid_crowning_tuning_nnm cycloid_ltca_nnm_lcm cycloid_min_size_ratio29
+set(CAMOPT_INIT_TEMPLATES cycloid_crowning_tuning_nnm cycloid_ltca_nnm_lcm cycloid_min_size_quick
     disc_cam_min_size disc_cam_translating globoidal_cam_paper lcr_crowning_tuning lcr_friction_fit
     lcr_ii lcr_min_size rigidity_gearbox)
 set(CAMOPT_TEMPLATES_CC ${PROJECT_BINARY_DIR}/generated/init_templates.cc)

@@ -21,6 +21,8 @@
 //                 [--sweeps DIR: mutate the sweep files of DIR and run `camopt sweep` on them]
 //   camopt_mutate --fields [...]    (every numeric leaf of every kind's `camopt init` study set to
 //                                    0, -1, ±1e-300, 1e308, -0, 5e-324, a string, a deep array)
+//                 [--kind KIND] [--sample N] (one kind's cases; N of them, evenly spaced from seed)
+//                 [--shard I/N]  (of those, every N-th from the I-th: one test per shard)
 //                 [--work-factor F] [--save DIR] [--record FILE] [--quiet]
 //   camopt_mutate --replay DIR      (every *.json in DIR as it is: the corpus of past failures)
 //   camopt_mutate --show I --seed S (print case I's study text: a failure is reproducible)
@@ -101,6 +103,12 @@ struct Options {
   /// Every numeric leaf of every kind's `camopt init` study set to each of kFieldValues in turn
   /// (one case each, in order; --cases is ignored).
   bool fields = false;
+  /// With --fields: only this kind's cases (empty: every kind), and of them only `sample` evenly
+  /// spaced ones, the first at seed % spacing (0: all).
+  std::string kind;
+  long sample = 0;
+  /// Of the cases above, only those whose number is `shard` modulo `shards` (a test per shard).
+  long shard = 0, shards = 1;
   long show = -1;
   bool quiet = false;
 };
@@ -466,7 +474,7 @@ int Usage(const std::string& why) {
   std::cerr << "camopt_mutate: " << why << "\n"
             << "usage: camopt_mutate [--cases N] [--seed S] [--jobs J] [--timeout-s T] [--memory-mb M] [--budget-mb B]\n"
                "                     [--work-factor F] [--examples DIR] [--sweeps DIR] [--save DIR] [--record FILE] [--quiet]\n"
-               "       camopt_mutate --replay DIR | --fields | --show I [--seed S]\n";
+               "       camopt_mutate --replay DIR | --fields [--kind K] [--sample N] [--shard I/N] | --show I [--seed S]\n";
   return 2;
 }
 
@@ -491,6 +499,16 @@ int main(int argc, char** argv) {
       else if (a == "--examples") o.examples = next();
       else if (a == "--sweeps") o.sweeps = next();
       else if (a == "--fields") o.fields = true;
+      else if (a == "--kind") o.kind = next();
+      else if (a == "--sample") o.sample = std::max(0L, std::stol(next()));
+      else if (a == "--shard") {
+        const std::string v = next();
+        const size_t slash = v.find('/');
+        if (slash == std::string::npos) return Usage("--shard I/N");
+        o.shard = std::stol(v.substr(0, slash));
+        o.shards = std::stol(v.substr(slash + 1));
+        if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) return Usage("--shard I/N with 0 <= I < N");
+      }
       else if (a == "--save") o.save = next();
       else if (a == "--record") o.record = next();
       else if (a == "--replay") o.replay = next();
@@ -522,7 +540,23 @@ int main(int argc, char** argv) {
     if (replay.empty()) return Usage("no *.json in " + o.replay.string());
     o.cases = static_cast<long>(replay.size());
   } else if (o.fields) {
-    replay = FieldCases();
+    for (auto& c : FieldCases())
+      if (o.kind.empty() || c.first.rfind(o.kind + " ", 0) == 0) replay.push_back(std::move(c));
+    if (replay.empty()) return Usage("--kind " + o.kind + ": no such study kind");
+    if (o.sample > 0 && o.sample < static_cast<long>(replay.size())) {
+      // Evenly spaced over the kind's fields and values in order, so a sample meets every part.
+      const double spacing = double(replay.size()) / double(o.sample);
+      const double first = double(o.seed % static_cast<unsigned long long>(std::max(1.0, std::floor(spacing))));
+      std::vector<std::pair<std::string, std::string>> picked;
+      for (long k = 0; k < o.sample; ++k) picked.push_back(std::move(replay[static_cast<size_t>(first + spacing * double(k))]));
+      replay = std::move(picked);
+    }
+    if (o.shards > 1) {
+      std::vector<std::pair<std::string, std::string>> mine;
+      for (size_t k = 0; k < replay.size(); ++k)
+        if (static_cast<long>(k % static_cast<size_t>(o.shards)) == o.shard) mine.push_back(std::move(replay[k]));
+      replay = std::move(mine);
+    }
     o.cases = static_cast<long>(replay.size());
   }
 

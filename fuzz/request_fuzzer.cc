@@ -3,47 +3,34 @@
 // runs), sends mutated requests — from a template of every route, with the method, the path and
 // its query, the headers (Host, Origin, Content-Length, Transfer-Encoding, huge and many), the body
 // (a study cut, retyped, nested 10 000 deep, megabytes) and the bytes themselves (cut, line ends,
-// a stray byte) changed — each on its own connection, and judges the server:
-//   answered   a well-formed status line with a status below 500, or 503 (too many connections)
-//   closed     the connection closed without an answer (a request the HTTP library could not read)
-// Anything else is a failure: a 5xx answer other than 503 (a handler that failed), no answer and no
-// close within 3 s (the request timeout is 1 s), a malformed status line, the server no longer
-// answering /api/kinds within 1 s (checked every 20 cases), a file written outside the served folder
-// (checked at the end), the process dying (a crash ends the fuzzer itself: the test fails).
+// a stray byte) changed — each on its own connection, and judges each answer as
+// fuzz/studio_target.h does; also a failure: the server no longer answering /api/kinds within 1 s
+// (checked every 20 cases), a file written outside the served folder or a link in it (checked at
+// the end), the process dying (a crash ends the fuzzer itself: the test fails).
 //
 //   camopt_request_fuzz [--cases N] [--seed S] [--save DIR] [--record FILE] [--quiet]
 //   camopt_request_fuzz --show I [--seed S]   (print case I's bytes: a failure is reproducible)
 // Exit 0 when every case passed, 1 when any failed, 2 on bad arguments. docs/reliability.md has the
 // record of the long runs.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iostream>
 #include <map>
-#include <mutex>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "studies/serve.h"
+#include "fuzz/studio_target.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -57,9 +44,6 @@ struct Options {
   fs::path save, record;
   bool quiet = false;
 };
-
-// The studies the scratch folder serves (small, quick to run).
-const char* const kStudies[] = {"lcr_ii.json", "rigidity_gearbox.json", "disc_cam_translating.json"};
 
 std::string ReadFile(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -117,7 +101,7 @@ class Generator {
   Request Template(std::mt19937_64& rng) const {
     Request r;
     r.headers = {{"Host", "127.0.0.1:" + std::to_string(port_)}};
-    const std::string name = kStudies[Pick(rng, std::size(kStudies))];
+    const std::string name = camopt::fuzz::StudioStudies()[Pick(rng, camopt::fuzz::StudioStudies().size())];
     switch (Pick(rng, 13)) {
       case 0: r.method = "GET", r.path = "/api/kinds"; break;
       case 1: r.method = "GET", r.path = "/api/schema/lcr_analysis"; break;
@@ -201,71 +185,6 @@ class Generator {
   std::vector<std::string> studies_;
 };
 
-struct Reply {
-  std::string outcome;  // "answered", "closed", or a failure
-  int status = 0;
-  std::string first_line;
-};
-
-// Sends `text` on a new connection (then closes the sending side, so a cut request ends at once)
-// and reads the answer: its status line and the head; the body is read until the close or 3 s.
-Reply Exchange(int port, const std::string& text) {
-  Reply r;
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(uint16_t(port));
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (fd < 0 || ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
-    if (fd >= 0) ::close(fd);
-    r.outcome = "no connection";
-    return r;
-  }
-  // The server may answer (413, 400) and close before the whole request is sent: a failed send is
-  // not a failure of the server.
-  for (size_t sent = 0; sent < text.size();) {
-    pollfd p{fd, POLLOUT, 0};
-    if (::poll(&p, 1, 3000) <= 0) break;
-    const ssize_t n = ::send(fd, text.data() + sent, text.size() - sent, MSG_NOSIGNAL);
-    if (n <= 0) break;
-    sent += size_t(n);
-  }
-  ::shutdown(fd, SHUT_WR);
-  std::string in;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
-  bool closed = false;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) break;
-    pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, int(left.count())) <= 0) break;
-    char buf[65536];
-    const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
-    if (n <= 0) {
-      closed = true;
-      break;
-    }
-    if (in.size() < (1 << 20)) in.append(buf, size_t(n));
-  }
-  ::close(fd);
-  if (in.empty()) {
-    r.outcome = closed ? "closed" : "no answer in 3 s";
-    return r;
-  }
-  r.first_line = in.substr(0, std::min(in.find("\r\n"), size_t{200}));
-  if (in.rfind("HTTP/1.1 ", 0) != 0 || in.size() < 12 || !std::isdigit(static_cast<unsigned char>(in[9]))) {
-    r.outcome = "malformed answer";
-    return r;
-  }
-  r.status = std::atoi(in.c_str() + 9);
-  r.outcome = r.status < 100 ? "malformed answer"
-              : r.status >= 500 && r.status != 503 ? "server error"
-                                                   : "answered";
-  return r;
-}
-
-bool Failure(const std::string& outcome) { return outcome != "answered" && outcome != "closed"; }
-
 int Usage(const std::string& why) {
   std::cerr << "camopt_request_fuzz: " << why << "\n"
             << "usage: camopt_request_fuzz [--cases N] [--seed S] [--save DIR] [--record FILE] [--quiet]\n"
@@ -297,43 +216,21 @@ int main(int argc, char** argv) {
   }
   const fs::path examples = fs::path(CAMOPT_SOURCE_DIR) / "studies" / "examples";
   std::vector<std::string> studies;
-  for (const char* name : kStudies) studies.push_back(ReadFile(examples / name));
+  for (const std::string& name : camopt::fuzz::StudioStudies()) studies.push_back(ReadFile(examples / name));
   if (o.show >= 0) {
     std::cout << Generator(8765, studies).Case(o.seed, o.show);
     return 0;
   }
 
-  // The scratch: root/served is served; nothing may appear beside it.
-  std::string pattern = (fs::temp_directory_path() / "camopt-request-fuzz-XXXXXX").string();
-  if (!mkdtemp(pattern.data())) return Usage("cannot create a scratch folder");
-  const fs::path root = pattern, served = root / "served";
-  fs::create_directories(served);
-  for (const char* name : kStudies) fs::copy_file(examples / name, served / name);
   if (!o.save.empty()) fs::create_directories(o.save);
-
-  std::mutex m;
-  std::condition_variable listening;
-  int port = 0;
-  std::function<void()> stop;
-  camopt::studies::ServeOptions so;
-  so.folder = served.string();
-  so.port = 0;
-  so.request_timeout_s = 1;
-  so.program = CAMOPT_BINARY;
-  so.on_listening = [&](int p, std::function<void()> s) {
-    std::lock_guard<std::mutex> lock(m);
-    port = p;
-    stop = std::move(s);
-    listening.notify_all();
-  };
-  std::thread server([&] { camopt::studies::ServeMain(so); });
-  {
-    std::unique_lock<std::mutex> lock(m);
-    if (!listening.wait_for(lock, std::chrono::seconds(20), [&] { return port > 0; })) {
-      std::cerr << "camopt_request_fuzz: the studio did not start\n";
-      std::_Exit(2);
-    }
+  std::unique_ptr<camopt::fuzz::InProcessStudio> studio;
+  try {
+    studio = std::make_unique<camopt::fuzz::InProcessStudio>(examples, CAMOPT_BINARY);
+  } catch (const std::exception& e) {
+    std::cerr << "camopt_request_fuzz: " << e.what() << "\n";
+    return 2;
   }
+  const int port = studio->port();
   const Generator generator(port, studies);
 
   std::map<std::string, long> outcomes;
@@ -353,19 +250,14 @@ int main(int argc, char** argv) {
   for (long i = 0; i < o.cases; ++i) {
     const std::string text = generator.Case(o.seed, i);
     const auto t = std::chrono::steady_clock::now();
-    const Reply r = Exchange(port, text);
+    const camopt::fuzz::Reply r = camopt::fuzz::Exchange(port, text);
     slowest = std::max(slowest, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
     ++outcomes[r.outcome];
     if (r.status) ++statuses[r.status];
-    if (Failure(r.outcome)) fail("case " + std::to_string(i) + ": " + r.outcome + ": " + r.first_line, text, i);
+    if (camopt::fuzz::RequestFailure(r.outcome)) fail("case " + std::to_string(i) + ": " + r.outcome + ": " + r.first_line, text, i);
     if (i % 20 == 19) {  // the server still answers, promptly
-      const auto h0 = std::chrono::steady_clock::now();
-      const Reply h = Exchange(port, "GET /api/kinds HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n");
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - h0).count();
-      if (h.status != 200 || s > 1.0)
-        fail("after case " + std::to_string(i) + ": /api/kinds " + h.outcome + " " + std::to_string(h.status) +
-                 " in " + std::to_string(s) + " s",
-             text, i);
+      const std::string health = studio->Health();
+      if (!health.empty()) fail("after case " + std::to_string(i) + ": " + health, text, i);
     }
     const auto now = std::chrono::steady_clock::now();
     if (!o.quiet && std::chrono::duration<double>(now - last_progress).count() > 10) {
@@ -375,14 +267,9 @@ int main(int argc, char** argv) {
                    o.cases, failures.size(), e, e / double(i + 1) * double(o.cases - i - 1));
     }
   }
-  // Nothing beside the served folder.
-  for (const auto& e : fs::directory_iterator(root))
-    if (e.path() != served) fail("a file outside the served folder: " + e.path().string(), "", -1);
-  for (const auto& e : fs::recursive_directory_iterator(served))
-    if (fs::is_symlink(e.symlink_status())) fail("a link in the served folder: " + e.path().string(), "", -1);
-  stop();
-  server.join();
-  fs::remove_all(root);
+  // Nothing beside the served folder, no link in it.
+  for (const std::string& stray : studio->Stray()) fail(stray, "", -1);
+  studio.reset();
 
   json rec;
   rec["seed"] = o.seed;

@@ -285,6 +285,11 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     for (; o < y.size(); ++o) y[o] = T(std::numeric_limits<double>::quiet_NaN());
     return;
   }
+  // No sample carries load (a torque so small the forces underflow): the same evaluation error.
+  if (aggregate && (force[0].empty() || force[1].empty())) {
+    for (; o < y.size(); ++o) y[o] = T(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
   for (int side = 0; side < 2; ++side) {
     if (!aggregate) {
       for (const T& f : force[side]) y[o++] = f;

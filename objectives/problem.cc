@@ -37,24 +37,31 @@ void Evaluator::EvalWithJacobian(std::span<const double> x, std::span<double> y,
   DoEvalWithJacobian(x, y, jacobian);
 }
 
+namespace {
+// A scale the solvers divide by (Ipopt's user scaling is its reciprocal): within 1e-100..1e100, so
+// that neither it nor its reciprocal overflows in the linear algebra (a scale of 5e-324, a stress
+// limit given as a denormal, crashed the sparse solver under Ipopt).
+bool UsableScale(double s) { return s >= 1e-100 && s <= 1e100; }
+}  // namespace
+
 void Problem::Validate() const {
   if (!evaluator) throw std::invalid_argument("problem has no evaluator");
   if (evaluator->num_vars() != num_vars())
     throw std::invalid_argument("problem: evaluator and variables disagree in size");
   for (const auto& v : variables) {
     if (!(v.lower <= v.upper)) throw std::invalid_argument("variable " + v.name + ": lower > upper");
-    if (!(v.scale > 0) || !std::isfinite(v.scale))
-      throw std::invalid_argument("variable " + v.name + ": scale must be > 0");
+    if (!UsableScale(v.scale)) throw std::invalid_argument("variable " + v.name + ": scale must be in [1e-100, 1e100]");
     if (!std::isfinite(v.initial))
       throw std::invalid_argument("variable " + v.name + ": initial value must be finite");
   }
   if (evaluator->block(objective).size != 1)
     throw std::invalid_argument("objective '" + objective + "' is not a scalar output");
-  if (!(objective_scale > 0)) throw std::invalid_argument("objective scale must be > 0");
+  if (!UsableScale(objective_scale)) throw std::invalid_argument("objective scale must be in [1e-100, 1e100]");
   for (const auto& c : constraints) {
     evaluator->block(c.output);
     if (!(c.lower <= c.upper)) throw std::invalid_argument("constraint " + c.output + ": lower > upper");
-    if (!(c.scale > 0)) throw std::invalid_argument("constraint " + c.output + ": scale must be > 0");
+    if (!UsableScale(c.scale))
+      throw std::invalid_argument("constraint " + c.output + ": scale must be in [1e-100, 1e100]");
   }
 }
 

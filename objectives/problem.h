@@ -129,7 +129,8 @@ struct Problem {
   std::vector<Constraint> constraints;
 
   int num_vars() const { return static_cast<int>(variables.size()); }
-  /// Throws std::invalid_argument for inconsistent sizes, unknown outputs, lb > ub, scale <= 0.
+  /// Throws std::invalid_argument for inconsistent sizes, unknown outputs, lb > ub, a scale outside
+  /// [1e-100, 1e100].
   void Validate() const;
 };
 

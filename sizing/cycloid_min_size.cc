@@ -467,7 +467,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         0.0, [&](size_t i, size_t k, size_t p) { return (*line_meshes[i])[k].pairs[p].load_N; },
         [&](size_t i, size_t k) { return (*line_meshes[i])[k].rotation_rad; },
         [&](size_t k) -> const U& { return meshes_u[k]; },
-        [&](const U& u, size_t r, size_t k) { return cycloid::RollerSpinRate(d, u.mesh.pairs[r], angles_[k]); }, ring,
+        [&, &drive = d](const U& u, size_t r, size_t k) { return cycloid::RollerSpinRate(drive, u.mesh.pairs[r], angles_[k]); }, ring,
         pin_load, pin_weight);
     e.life_margin = LifeMarginsOf<double>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
   }

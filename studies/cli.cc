@@ -367,8 +367,7 @@ int RunCommandLine(int argc, char** argv) {
     ctx.quiet = quiet;
     ctx.max_work_factor = work_factor;
     auto& limits = camopt::studies::CurrentInputLimits();
-    limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) *
-                                                std::min(work_factor, 1e3));
+    limits.max_file_bytes = camopt::studies::FileBytesForWorkFactor(work_factor);
     ctx.strict = strict;
     camopt::studies::RunAnswer answer;
     if (convergence)

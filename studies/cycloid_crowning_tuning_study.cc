@@ -98,6 +98,15 @@ void ParseAnalysis(const Input::Analysis& a, Study& s) {
   s.crank_angles_per_mesh_period = a.crank_angles_per_mesh_period;
 }
 
+// The paper's coefficient the tuning is compared with (eq. 7, L = B) must be a valid crowning.
+void CheckReferenceCoefficient(const Node& root, double coefficient_mm, double face_width_mm) {
+  cycloid::Crowning c;
+  c.type = cycloid::CrowningType::kLogarithmic;
+  c.coefficient_mm = coefficient_mm;
+  if (const std::string why = cycloid::CheckCrowning(c, face_width_mm); !why.empty())
+    root["tuning"]["reference_coefficient_mm"].FailWith(why);
+}
+
 // The general form: the variables (their ranges against the crowning type, the face width and the
 // modifications' sign; every corner of the box a valid crowning and a feasible drive), the start
 // crowning, the optimizer and the general form's tuning settings.
@@ -172,6 +181,7 @@ void ParseJoint(const Node& root, const Input& in, Study& s) {
     s.crowning = c;
   }
   const Input::Tuning t = in.tuning.value_or(Input::Tuning{});
+  if (in.tuning) CheckReferenceCoefficient(root, t.reference_coefficient_mm, s.drive.face_width_mm);
   s.backend = in.optimizer && in.optimizer->backend ? *in.optimizer->backend : "ipopt";
   // optimizer.max_evaluations wins over tuning.max_evaluations when both are given.
   s.max_evaluations = in.optimizer && in.optimizer->max_evaluations ? *in.optimizer->max_evaluations
@@ -220,6 +230,26 @@ void ParseShorthand(const Node& root, const Input& in, Study& s) {
     if (const std::string why = cycloid::CheckCrowning(s.shape, s.drive.face_width_mm); !why.empty())
       c.FailWith(why);
   }
+  // Every corner of the ranges the tuning may try must be a valid crowning (else an evaluation
+  // inside them could fail), and so must the reference it is compared with.
+  {
+    cycloid::Crowning probe = s.shape;
+    probe.type = cycloid::CrowningType::kLogarithmic;
+    // (CheckCrowning's bounds are one per field: the corners of each range alone suffice.)
+    probe.effective_length_mm = s.length_lo_mm;
+    for (const double coefficient : {s.coefficient_lo_mm, s.coefficient_hi_mm}) {
+      probe.coefficient_mm = coefficient;
+      if (const std::string why = cycloid::CheckCrowning(probe, s.drive.face_width_mm); !why.empty())
+        tuning["coefficient_mm"].FailWith("an end of the range gives an invalid crowning: " + why);
+    }
+    probe.coefficient_mm = s.coefficient_lo_mm;
+    for (const double length : {s.length_lo_mm, s.length_hi_mm}) {
+      probe.effective_length_mm = length;
+      if (const std::string why = cycloid::CheckCrowning(probe, s.drive.face_width_mm); !why.empty() && s.tune_length)
+        tuning["effective_length_mm"].FailWith("an end of the range gives an invalid crowning: " + why);
+    }
+  }
+  CheckReferenceCoefficient(root, t.reference_coefficient_mm, s.drive.face_width_mm);
   s.reference_coefficient_mm = t.reference_coefficient_mm;
   s.curve_points = t.curve_points;
   // optimizer.max_evaluations wins over tuning.max_evaluations, as in the general form.

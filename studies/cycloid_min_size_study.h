@@ -115,6 +115,7 @@ struct Input {
     }
   };
   struct Limits {
+    static constexpr double kFullTurnArcsec = 360.0 * 3600.0;
     double contact_stress_MPa = 0;
     std::optional<double> min_edge_margin_um, min_curtate_margin;
     double min_profile_radius_mm = 0, min_pin_gap_mm = 0, min_backlash_arcsec = 0;
@@ -124,7 +125,8 @@ struct Input {
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("contact_stress_MPa", &contact_stress_MPa,
-               Field().Required().Positive().Unit("MPa").Desc("peak pressure over the design-torque cycle"));
+               Field().Required().In(1, 1e6, "a stress limit in [1, 1e6] MPa (hardened steel: 1000 to 4000)")
+                   .Unit("MPa").Desc("peak pressure over the design-torque cycle"));
       a->Visit("min_edge_margin_um", &min_edge_margin_um,
                Field().Unit("µm").Desc(
                    "end distance of the contact from the face ends over the overload cycle (needs "
@@ -135,10 +137,13 @@ struct Input {
       a->Visit("min_profile_radius_mm", &min_profile_radius_mm,
                Field().NonNegative().Unit("mm").Desc("smallest convex radius of the tooth (0: no undercut)"));
       a->Visit("min_pin_gap_mm", &min_pin_gap_mm, Field().NonNegative().Unit("mm").Desc("clearance between neighbouring pins"));
+      // A backlash is an angle of the output: at most a full turn (360° = 1 296 000 arcsec).
       a->Visit("min_backlash_arcsec", &min_backlash_arcsec,
-               Field().NonNegative().Unit("arcsec").Desc("unloaded TE at every angle"));
+               Field().NonNegative().AtMost(kFullTurnArcsec, "at most a full turn, 1296000 arcsec").Unit("arcsec")
+                   .Desc("unloaded TE at every angle"));
       a->Visit("max_backlash_arcsec", &max_backlash_arcsec,
-               Field().Positive().Unit("arcsec").Desc("> min_backlash_arcsec (absent: none)"));
+               Field().Positive().AtMost(kFullTurnArcsec, "at most a full turn, 1296000 arcsec").Unit("arcsec")
+                   .Desc("> min_backlash_arcsec (absent: none)"));
       a->Visit("max_lte_peak_to_peak_arcsec", &max_lte_peak_to_peak_arcsec,
                Field().Positive().Unit("arcsec").Desc("the loaded transmission error's peak to peak (absent: none)"));
       a->Visit("bore_diameter_mm", &bore_diameter_mm,

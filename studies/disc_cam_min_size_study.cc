@@ -167,6 +167,11 @@ Study Parse(const Node& root) {
   for (const Entry& e : entries) {
     if (!e.given) continue;
     const auto [lo, hi] = vars[e.key].Range();  // lower <= upper
+    // On the cam's own scale, as every length of a study (PlausibleLength): a range end of 1e308 mm
+    // ran for seconds before its non-finite result was refused.
+    if (!(std::max(std::abs(lo), std::abs(hi)) <= 1e6 * cam.base_radius))
+      vars[e.key].Fail("a range within ±" + Format(1e6 * cam.base_radius, 3) +
+                       " mm (1e6 times the study's base circle radius, " + Format(cam.base_radius, 4) + " mm)");
     objectives::Variable v;
     v.name = e.key;
     v.lower = lo;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -213,6 +214,11 @@ bool Node::BoolOr(const std::string& key, bool fallback) const {
 InputLimits& CurrentInputLimits() {
   static InputLimits limits;
   return limits;
+}
+
+size_t FileBytesForWorkFactor(double factor) {
+  const double bytes = static_cast<double>(InputLimits{}.max_file_bytes) * std::min(factor, 1e3);
+  return bytes > 0 ? static_cast<size_t>(bytes) : 0;
 }
 
 std::string ReadFileCapped(const std::string& file, size_t max_bytes, const std::string& what) {

@@ -107,6 +107,10 @@ struct InputLimits {
 };
 /// The limits LoadStudyFile uses (process-wide; the CLI raises them with --max-work-factor).
 InputLimits& CurrentInputLimits();
+/// The file-size cap for a work factor: the default max_file_bytes times the factor (at most
+/// 1e3). Always from the default, so that runs in one process (the Python module, a fuzzer) do
+/// not compound their factors.
+size_t FileBytesForWorkFactor(double factor);
 
 /// The whole content of a regular file of at most max_bytes: the type and size are checked
 /// before reading, so /dev/zero, a FIFO or a huge file is refused at once. `what` names the file

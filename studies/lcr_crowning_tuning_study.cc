@@ -49,6 +49,14 @@ Study Parse(const Node& root) {
   const auto [lo, hi] = tuning.coefficient_range_mm;
   if (!(lo <= hi)) t["coefficient_range_mm"].Fail("[lower, upper] with lower <= upper");
   if (!(hi > lo)) t["coefficient_range_mm"].Fail("[lo, hi] with 0 < lo < hi");
+  // Lundberg's f is micrometres to a few tenths of a millimetre: from 1e-9 to 1e6 times the
+  // shortest roller (as the cycloid's crowning, cycloid::CheckCrowning); a denormal or 1e308 made
+  // the slices' gaps infinite.
+  const double shortest = std::min(sp.reducer.side(lcr::Side::kInput).roller_length,
+                                   sp.reducer.side(lcr::Side::kOutput).roller_length);
+  if (!(lo >= 1e-9 * shortest && hi <= 1e6 * shortest))
+    t["coefficient_range_mm"].Fail("a range within [" + Format(1e-9 * shortest, 3) + ", " + Format(1e6 * shortest, 3) +
+                                   "] mm (1e-9 to 1e6 times the shortest roller, " + Format(shortest, 4) + " mm)");
   sp.coefficient_range_mm = {lo, hi};
   sp.misalignments_rad.clear();
   for (double m : tuning.misalignment_mrad) sp.misalignments_rad.push_back(m * 1e-3);

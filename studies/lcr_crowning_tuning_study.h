@@ -36,9 +36,10 @@ struct Input {
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("output_torque_Nm", &output_torque_Nm,
-               Field().Required().Positive().Unit("N·m").Desc("T_o, the design torque: the pressure it minimises"));
+               Field().Required().AtLeast(kMinLcrTorqueNm, kMinLcrTorqueExpected).Unit("N·m")
+                   .Desc("T_o, the design torque: the pressure it minimises"));
       a->Visit("overload_torque_Nm", &overload_torque_Nm,
-               Field().Required().Positive().Unit("N·m").Desc(
+               Field().Required().AtLeast(kMinLcrTorqueNm, kMinLcrTorqueExpected).Unit("N·m").Desc(
                    "the overload torque, >= output_torque_Nm: the pressure must stay off the contact's ends at it"));
       a->Visit("friction_coefficient", &friction_coefficient,
                Field().In(0.0, 1.0).Desc("μ of the eccentric, T_in = (F_t + μ F_r) e (the paper's eq. 32)"));

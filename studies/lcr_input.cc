@@ -16,7 +16,7 @@ lcr::CamSide<double> SideOf(const LcrSideInput& in, const Node& s) {
   c.lobes = in.lobes;
   c.rollers = in.rollers;
   c.turret_radius = in.turret_radius_mm;
-  c.roller_radius = in.roller_diameter_mm / 2;
+  c.roller_radius = PlausibleLength(s["roller_diameter_mm"], c.turret_radius, "the turret radius") / 2;
   c.roller_length = PlausibleLength(s["roller_length_mm"], c.turret_radius, "the turret radius");
   c.cam_thickness = PlausibleLength(s["cam_thickness_mm"], c.turret_radius, "the turret radius");
   return c;

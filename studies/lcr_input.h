@@ -142,6 +142,12 @@ lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node);
 /// design (lobes < rollers, rollers that overlap, …); throws StudyError naming the JSON path.
 lcr::Reducer<double> ParseReducer(const Node& reducer);
 
+/// The smallest torque an LCR study takes [N·m]: a micro-newton-metre, far below any reducer's
+/// load, and above what the models resolve (at 1e-300 N·m the contact forces underflow: the
+/// sizing's cycle had no loaded contact and the tuning's contact grids collapsed).
+inline constexpr double kMinLcrTorqueNm = 1e-6;
+inline constexpr const char* kMinLcrTorqueExpected = "a torque of at least 1e-6 N·m";
+
 /// Fails `torque_node` (exit 2) when `torque_Nmm` is more than the output rollers can carry: their
 /// forces balance it on arms no longer than the turret radius, so the largest carries at least
 /// T / (n R); a contact is no wider than the roller, so its mean pressure is at least that force

@@ -64,7 +64,8 @@ struct Input {
       a->Visit("speed_ratio", &speed_ratio,
                Field().Required().In(-1e6, 1e6, kRatioText)
                    .Desc("r_i = m_A n_B/(m_A n_B − m_B n_A), matched exactly: a whole number, 2 <= abs(r_i) <= 1e6"));
-      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Required().Positive().Unit("N·m").Desc("T_o, the output torque"));
+      a->Visit("output_torque_Nm", &output_torque_Nm,
+               Field().Required().AtLeast(kMinLcrTorqueNm, kMinLcrTorqueExpected).Unit("N·m").Desc("T_o, the output torque"));
     }
     static constexpr const char* kRatioText = "a whole-number speed ratio with 2 <= |ratio| <= 1e6";
     /// |ratio| >= 2.

@@ -16,7 +16,12 @@ struct MaterialInput {
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("youngs_modulus_GPa", &youngs_modulus_GPa,
-             Field().Required().Positive().Unit("GPa").Desc("Young's modulus E (steel: 206)"));
+             Field()
+                 .Required()
+                 .In(1e-3, 1e6, "a modulus in [0.001, 1e6] GPa (steel: 206; 0.001 GPa is a soft elastomer)")
+                 .Unit("GPa")
+                 .Desc("Young's modulus E (steel: 206); from a soft elastomer's 0.001 to 1e6 (beyond, the "
+                       "contact solvers cannot converge or overflow)"));
     a->Visit("poisson_ratio", &poisson_ratio, Field().Required().In(0.0, 0.4999).Desc("Poisson's ratio"));
   }
   /// E in MPa, as the models take it.
@@ -42,7 +47,7 @@ struct MaterialWithFatigueInput : MaterialInput {
   }
 };
 
-/// {"youngs_modulus_GPa": E > 0, "poisson_ratio": ν in [0, 0.4999]} → Material (E in MPa).
+/// {"youngs_modulus_GPa": E in [1e-3, 1e6], "poisson_ratio": ν in [0, 0.4999]} → Material (E in MPa).
 /// Other members are left to the caller (a material object may carry fields of other models,
 /// e.g. a shear modulus), so the caller checks the known fields.
 Material ParseMaterial(const Node& material);

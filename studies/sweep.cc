@@ -475,8 +475,12 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
 
 int Run(const Options& o, World& world) {
   const double factor = std::min(o.max_work_factor, 1e3);
-  auto& limits = CurrentInputLimits();
-  limits.max_file_bytes = static_cast<size_t>(static_cast<double>(limits.max_file_bytes) * factor);
+  // The file cap of this sweep's factor while it runs, the previous one after.
+  struct FileCap {
+    size_t saved = CurrentInputLimits().max_file_bytes;
+    explicit FileCap(double f) { CurrentInputLimits().max_file_bytes = FileBytesForWorkFactor(f); }
+    ~FileCap() { CurrentInputLimits().max_file_bytes = saved; }
+  } file_cap(factor);
   Sweep s;
   std::vector<std::vector<json>> cases;
   fs::path out, partial;

@@ -36,6 +36,17 @@ TEST(Scalar, SoftMaxBoundsTheMaximum) {
   }
 }
 
+// The maximum of no samples has no value: refused, not read past the end (a sizing cycle with no
+// loaded sample ended in a segmentation fault).
+TEST(Scalar, MaximaOfNoSamplesAreRefused) {
+  const std::vector<double> none;
+  EXPECT_THROW(SoftMax(none, 10.0), std::invalid_argument);
+  EXPECT_THROW(SoftMin(none, 10.0), std::invalid_argument);
+  EXPECT_THROW(HardMax(none), std::invalid_argument);
+  EXPECT_THROW(HardMin(none), std::invalid_argument);
+  EXPECT_EQ(HardMax(std::vector<double>{2.0}), 2.0);
+}
+
 TEST(Scalar, SoftMaxGradientMatchesCentralDifferences) {
   auto f = [](const auto& v) {
     using T = std::decay_t<decltype(v[0])>;

@@ -63,6 +63,19 @@ TEST(Problem, ValidateRejectsBadData) {
   auto r = testing::RosenbrockOnDisk();
   r.variables[1].initial = std::nan("");
   EXPECT_THROW(r.Validate(), std::invalid_argument);
+  // A scale whose reciprocal overflows (a limit given as a denormal was a constraint's scale and
+  // crashed the sparse solver under Ipopt), or a huge one, is refused before any solver sees it.
+  for (const double scale : {5e-324, 1e-300, 1e300}) {
+    auto c = testing::RosenbrockOnDisk();
+    c.constraints[0].scale = scale;
+    EXPECT_THROW(c.Validate(), std::invalid_argument) << scale;
+    auto o = testing::RosenbrockOnDisk();
+    o.objective_scale = scale;
+    EXPECT_THROW(o.Validate(), std::invalid_argument) << scale;
+  }
+  auto ok = testing::RosenbrockOnDisk();
+  ok.constraints[0].scale = 1e-100;
+  EXPECT_NO_THROW(ok.Validate());
 }
 
 TEST(Problem, CacheCountsModelRunsOnce) {

@@ -2,6 +2,7 @@
 // input refused with exit 2 and a path, absurd sizes refused up front within a second with the
 // cap and the estimate, results that are not converged exit 3, the output folder replaced all at
 // once, interrupts, and byte-identical output for the same study.
+#include <cctype>
 #include <chrono>
 #include <cstring>
 #include <csignal>
@@ -19,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "studies/init.h"
 #include "studies/input.h"
 #include "studies/study.h"
 #include "studies/work_limits.h"
@@ -415,7 +417,7 @@ void ExpectExit3(const std::string& tag, const json& study, const std::string& w
 
 TEST(Converged, CycloidSoftMaterialHugeTorqueOrTinyEccentricityExit3) {
   json s = SmallCycloid();
-  s["material"]["youngs_modulus_GPa"] = 1e-6;
+  s["material"]["youngs_modulus_GPa"] = 1e-3;  // the softest the parser takes (a soft elastomer)
   ExpectExit3("soft", s, "torque balance not met");
   s = SmallCycloid();
   s["load"]["torque_Nm"] = 1e308;
@@ -794,6 +796,65 @@ TEST(BadInput, AnAbsurdCycloidFaceWidthIsRefusedAtTheField) {
       EXPECT_NE(r.stderr_text.find("the pin circle radius"), std::string::npos) << r.stderr_text;
       EXPECT_FALSE(fs::exists(dir / "o"));
     }
+}
+
+// The field-by-field campaign at work factor 1 (docs/reliability.md, "Field by field"): each value
+// below reached a model that failed (exit 1: an infinite composite modulus, a crowning the model
+// refused, infinite slice gaps; a segmentation fault: a sizing cycle with no loaded sample), ran
+// past 10 s or was refused only after seconds of work. Each is now refused by the study's own
+// checks, at its field, with the range that would fit, before anything runs.
+TEST(BadInput, TheFieldCampaignsValuesAreRefusedAtTheirFields) {
+  struct Case {
+    const char* kind;
+    const char* pointer;
+    double value;
+    const char* expected;  // in the message
+  };
+  const Case cases[] = {
+      {"cycloid_ltca", "/material/youngs_modulus_GPa", 1e308, "[0.001, 1e6] GPa"},
+      {"cycloid_ltca", "/material/youngs_modulus_GPa", 1e-300, "[0.001, 1e6] GPa"},
+      {"cycloid_crowning_tuning", "/material/youngs_modulus_GPa", 1e-300, "[0.001, 1e6] GPa"},
+      {"lcr_crowning_tuning", "/material/youngs_modulus_GPa", 1e308, "[0.001, 1e6] GPa"},
+      {"lcr_min_size", "/material/youngs_modulus_GPa", 1e-300, "[0.001, 1e6] GPa"},
+      {"cycloid_crowning_tuning", "/tuning/coefficient_mm/1", 1e308, "1e6 times the face width"},
+      {"cycloid_crowning_tuning", "/tuning/reference_coefficient_mm", 1e308, "1e6 times the face width"},
+      {"lcr_crowning_tuning", "/tuning/coefficient_range_mm/0", 5e-324, "times the shortest roller"},
+      {"lcr_crowning_tuning", "/tuning/coefficient_range_mm/1", 1e308, "times the shortest roller"},
+      {"lcr_crowning_tuning", "/reducer/input/roller_diameter_mm", 1e-300, "the turret radius"},
+      {"lcr_crowning_tuning", "/load/output_torque_Nm", 1e-300, "at least 1e-6 N·m"},
+      {"lcr_min_size", "/target/output_torque_Nm", 5e-324, "at least 1e-6 N·m"},
+      {"lcr_min_size", "/target/output_torque_Nm", 1e-300, "at least 1e-6 N·m"},
+      {"disc_cam_min_size", "/variables/offset_mm/1", 1e308, "1e6 times the study's base circle radius"},
+      {"cycloid_min_size", "/limits/min_backlash_arcsec", 1e308, "a full turn"},
+      {"cycloid_min_size", "/limits/contact_stress_MPa", 5e-324, "[1, 1e6] MPa"},
+  };
+  for (const Case& c : cases) {
+    const std::string pointer = c.pointer;
+    SCOPED_TRACE(std::string(c.kind) + " " + pointer);
+    json study = json::parse(camopt::studies::InitTemplate(c.kind).text);
+    ASSERT_TRUE(study.contains(json::json_pointer(pointer)));
+    study[json::json_pointer(pointer)] = c.value;
+    std::string message;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      camopt::studies::CheckStudy(study, "s.json");
+    } catch (const camopt::studies::StudyError& e) {
+      message = e.what();
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
+    // The field, or the array that holds it (a range names the array).
+    const std::string field = pointer.substr(0, pointer.find_last_of('/'));
+    EXPECT_NE(message.find(std::isdigit(static_cast<unsigned char>(pointer.back())) ? field : pointer),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+  // The edges of the modulus still run their checks clean: a soft elastomer and 1e6 GPa.
+  for (const double e : {1e-3, 1e6}) {
+    json study = json::parse(camopt::studies::InitTemplate("cycloid_ltca").text);
+    study["material"]["youngs_modulus_GPa"] = e;
+    EXPECT_NO_THROW(camopt::studies::CheckStudy(study, "s.json")) << e;
+  }
 }
 
 // Starts camopt, sends `sig` after `delay_s`, returns (exit code, stderr).

@@ -635,6 +635,53 @@ TEST(Serve, ARunWritesTheSameOutputFolderAsTheCli) {
   EXPECT_FALSE(r["headlines"]["rows"].empty());
 }
 
+// The studio's runs follow the CLI's output-folder rule: a results folder that holds a user's file
+// is not replaced (the run ends with the CLI's exit 2 and its message), and the file stays.
+TEST(Serve, ARunNeverReplacesAResultsFolderHoldingAUsersFile) {
+  const fs::path dir = TempDir("serve-user-file");
+  fs::copy_file(Example("rigidity_gearbox.json"), dir / "rigidity_gearbox.json");
+  fs::create_directories(dir / "results" / "rigidity_gearbox");
+  WriteFile(dir / "results" / "rigidity_gearbox" / "notes.txt", "mine");
+  WriteFile(dir / "results" / "rigidity_gearbox" / "result.json", "{\"mine\": true}");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/runs", "{\"path\": \"rigidity_gearbox.json\"}", "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 201) << res->body;
+  const json end = FollowToEnd(studio, json::parse(res->body)["id"].get<int>());
+  EXPECT_EQ(end["exit_code"], 2) << end.dump();
+  EXPECT_NE(end.dump().find("files of yours"), std::string::npos) << end.dump();
+  EXPECT_EQ(ReadFile(dir / "results" / "rigidity_gearbox" / "notes.txt"), "mine");
+  EXPECT_EQ(ReadFile(dir / "results" / "rigidity_gearbox" / "result.json"), "{\"mine\": true}");
+}
+
+// A 2.5 kB sweep that asks for a million Sobol samples over eleven fields is refused by the
+// studio's check before it is expanded: within a second, naming the cap (as `camopt sweep`).
+TEST(Serve, AHugeSampledSweepIsRefusedBeforeItIsExpanded) {
+  const fs::path dir = TempDir("serve-huge-sweep");
+  fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
+  json s = {{"sweep", "huge"}, {"base", "lcr_ii.json"}, {"design", "sobol"}, {"samples", 1000000}};
+  s["vary"] = json::array();
+  for (const char* p : {"/reducer/eccentricity_mm", "/load/output_torque_Nm", "/load/friction_coefficient",
+                        "/material/youngs_modulus_GPa", "/material/poisson_ratio", "/reducer/input/turret_radius_mm",
+                        "/reducer/output/turret_radius_mm", "/reducer/input/roller_diameter_mm",
+                        "/reducer/output/roller_diameter_mm", "/reducer/input/roller_length_mm",
+                        "/reducer/output/roller_length_mm"})
+    s["vary"].push_back({{"path", p}, {"range", {1.0, 1.1}}});
+  WriteFile(dir / "huge.json", s.dump());
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const auto t0 = std::chrono::steady_clock::now();
+  auto res = c.Post("/api/validate?path=huge.json", s.dump(), "application/json");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
+  ASSERT_TRUE(res);
+  const json v = json::parse(res->body);
+  EXPECT_FALSE(v["ok"].get<bool>()) << res->body;
+  EXPECT_NE(v.dump().find("more than the cap of 1e+07"), std::string::npos) << res->body;
+}
+
 TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
   const fs::path dir = TempDir("serve-disconnect");
   // About 8 s on one core (its tolerance Monte Carlo reports progress all along).

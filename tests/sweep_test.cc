@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "studies/input.h"
 #include "studies/sweep.h"
 #include "studies/sweep_design.h"
 #include "studies/sweep_pareto.h"
@@ -431,6 +432,29 @@ TEST(SweepCli, DryRunPrintsTheNumberOfCases) {
     SCOPED_TRACE(name);
     EXPECT_EQ(sw::Cases(sw::Parse(SourcePath("studies/sweeps/" + name))).size(), n);
   }
+}
+
+// In one process (the Python module, a fuzzer) each sweep's --max-work-factor scales the default
+// file cap, not the previous sweep's: three dry runs at 0.01 all read the 848-byte example (at
+// 16 MiB × 0.01³ = 16 B the third would refuse it), and the cap is the default again after.
+TEST(SweepCli, WorkFactorsOfSweepsInOneProcessDoNotCompound) {
+  const size_t before = camopt::studies::CurrentInputLimits().max_file_bytes;
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    sw::Options o;
+    o.file = SourcePath("studies/sweeps/sweep_cycloid_crowning.json");
+    o.out = (TempDir("sweep-factor") / "out").string();
+    o.dry_run = true;
+    o.quiet = true;
+    o.max_work_factor = 0.01;
+    ::testing::internal::CaptureStdout();
+    const int code = sw::RunCommand(o);
+    EXPECT_EQ(::testing::internal::GetCapturedStdout(), "15 cases\n");
+    EXPECT_EQ(code, 0);
+  }
+  EXPECT_EQ(camopt::studies::CurrentInputLimits().max_file_bytes, before);
+  EXPECT_EQ(camopt::studies::FileBytesForWorkFactor(1), size_t{16} << 20);
+  EXPECT_EQ(camopt::studies::FileBytesForWorkFactor(0.5), size_t{8} << 20);
 }
 
 // ---- Running: the same table whatever the threads or ranks --------------------------------------

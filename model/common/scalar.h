@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -76,6 +77,7 @@ template <typename T>
 T SoftMax(const std::vector<T>& x, double k) {
   using std::exp;
   using std::log;
+  if (x.empty()) throw std::invalid_argument("SoftMax: no samples");
   size_t imax = 0;
   for (size_t i = 1; i < x.size(); ++i)
     if (Value(x[i]) > Value(x[imax])) imax = i;
@@ -96,6 +98,7 @@ T SoftMin(const std::vector<T>& x, double k) {
 /// Exact maximum; the derivative is that of the largest sample (a subgradient).
 template <typename T>
 T HardMax(const std::vector<T>& x) {
+  if (x.empty()) throw std::invalid_argument("HardMax: no samples");
   size_t imax = 0;
   for (size_t i = 1; i < x.size(); ++i)
     if (Value(x[i]) > Value(x[imax])) imax = i;
@@ -104,6 +107,7 @@ T HardMax(const std::vector<T>& x) {
 
 template <typename T>
 T HardMin(const std::vector<T>& x) {
+  if (x.empty()) throw std::invalid_argument("HardMin: no samples");
   size_t imin = 0;
   for (size_t i = 1; i < x.size(); ++i)
     if (Value(x[i]) < Value(x[imin])) imin = i;

@@ -162,6 +162,32 @@ class Sweeps(unittest.TestCase):
             camopt.Sweep.load(d / "bad.json")
         self.assertEqual(cm.exception.path, "/vary/0/path")
 
+    def test_a_users_files_in_the_output_folder_are_kept_by_run_and_sweep(self):
+        # The one output-folder rule of `camopt run` and `camopt sweep` holds for the module's
+        # writers too: a folder camopt did not write (no manifest, or files beyond it) is never
+        # replaced; the call raises StudyError and every file stays.
+        d = helpers.temp_dir("py-user-files")
+        (d / "s.json").write_text(json.dumps(helpers.small_lcr_ii()))
+        sweep = {"sweep": "t", "base": str(d / "s.json"),
+                 "vary": [{"path": "/load/output_torque_Nm", "values": [50, 60]}],
+                 "outputs": ["/input_cam/max_contact_stress_MPa"]}
+        (d / "sweep.json").write_text(json.dumps(sweep))
+        for tag, write in (("run", lambda out: camopt.run(str(d / "s.json"), out=str(out))),
+                           ("sweep", lambda out: camopt.Sweep.load(d / "sweep.json").run(out=out, jobs=1))):
+            with self.subTest(tag):
+                out = d / ("out_" + tag)
+                write(out)  # a first result: camopt's own folder, replaced by the same call
+                write(out)
+                (out / "notes.txt").write_text("mine")
+                if tag == "sweep":
+                    (out / "cases.csv").write_text("my own table")  # a user's file of a sweep's name
+                    (out / ".camopt_manifest").unlink(missing_ok=True)
+                with self.assertRaises(camopt.StudyError):
+                    write(out)
+                self.assertEqual((out / "notes.txt").read_text(), "mine")
+                if tag == "sweep":
+                    self.assertEqual((out / "cases.csv").read_text(), "my own table")
+
 
 class LcrModel(unittest.TestCase):
     def test_loads_at_the_study_angles_are_series_csv(self):

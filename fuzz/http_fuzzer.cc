@@ -1,0 +1,50 @@
+// libFuzzer entry point over the studio's HTTP requests (see fuzz/studio_target.h; run with
+// `bash scripts/fuzz.sh request SECONDS`). One input is the raw bytes of one request, each
+// "{{HOST}}" in it replaced by the in-process server's address; it is sent on its own connection.
+// A defect: a failed answer (studio_target.h), the server not answering /api/kinds within 1 s
+// (checked every 50 inputs), a file beside the served folder or a link in it (checked after every
+// input), or a crash or sanitizer report anywhere in the process (the server runs in it).
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "fuzz/studio_target.h"
+
+namespace {
+
+camopt::fuzz::InProcessStudio* studio = nullptr;
+
+// The server stops and its scratch folder goes when the process exits normally (the replay's end,
+// libFuzzer's -runs or -max_total_time); a defect aborts and leaves it for a look.
+void StopStudio() {
+  delete studio;
+  studio = nullptr;
+}
+
+void Defect(const std::string& why) {
+  std::fprintf(stderr, "camopt defect: %s\n", why.c_str());
+  std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (!studio) {
+    studio = new camopt::fuzz::InProcessStudio(CAMOPT_EXAMPLES_DIR, CAMOPT_BINARY);
+    std::atexit(StopStudio);
+  }
+  static long inputs = 0;
+  if (size > (size_t{2} << 20)) return 0;
+  const std::string text =
+      camopt::fuzz::WithHost(std::string(reinterpret_cast<const char*>(data), size), studio->port());
+  const camopt::fuzz::Reply r = camopt::fuzz::Exchange(studio->port(), text);
+  if (camopt::fuzz::RequestFailure(r.outcome)) Defect(r.outcome + ": " + r.first_line);
+  for (const std::string& stray : studio->Stray()) Defect(stray);
+  if (++inputs % 50 == 0) {
+    const std::string health = studio->Health();
+    if (!health.empty()) Defect("the server stopped answering: " + health);
+  }
+  return 0;
+}
