@@ -726,7 +726,7 @@ nlohmann::ordered_json Input::SchemaRules() {
     std::vector<std::string> types;  // the crowning types that have the field, sorted
     for (const auto& t : cycloid_common::CrowningTypes())
       if (std::string(t.type) != "none" &&
-          std::none_of(t.refused.begin(), t.refused.end(), [&](const char* r) { return std::string(r) == field; }))
+          std::none_of(t.refused.begin(), t.refused.end(), [f = field](const char* r) { return std::string(r) == f; }))
         types.push_back(t.type);
     std::sort(types.begin(), types.end());
     all.push_back(when(in("variables", required({field})), crowning_type(types)));

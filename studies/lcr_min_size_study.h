@@ -41,7 +41,7 @@ struct CatalogueRollerInput {
     a->Visit("diameter_mm", &diameter_mm, Field().Required().Positive().Unit("mm").Desc("roller diameter d_r"));
     a->Visit("length_mm", &length_mm, Field().Required().Positive().Unit("mm").Desc("roller length"));
     a->Visit("load_limit_N", &load_limit_N,
-             Field().Required().Positive().Unit("N").Desc(
+             Field().Required().In(1e-3, 1e9, "a load limit in [0.001, 1e9] N").Unit("N").Desc(
                  "the roller's load limit (the smaller of it and limits.roller_load_N holds)"));
     a->Visit("dynamic_rating_N", &dynamic_rating_N,
              Field().Positive().Unit("N").Desc("C, the basic dynamic load rating (ISO 281); required with a speed or "
@@ -152,9 +152,13 @@ struct Input {
     std::optional<double> min_efficiency, life_h;
     template <typename Archive>
     void Serialize(Archive* a) {
+      // A limit is also its constraint's scale in the solvers: bounded to values a scale can take.
       a->Visit("contact_stress_MPa", &contact_stress_MPa,
-               Field().Positive().Unit("MPa").Desc("the largest Hertz pressure p_max (absent: none)"));
-      a->Visit("roller_load_N", &roller_load_N, Field().Positive().Unit("N").Desc("the largest roller force (absent: none)"));
+               Field().In(1, 1e6, "a stress limit in [1, 1e6] MPa (hardened steel: 1000 to 4000)").Unit("MPa")
+                   .Desc("the largest Hertz pressure p_max (absent: none)"));
+      a->Visit("roller_load_N", &roller_load_N,
+               Field().In(1e-3, 1e9, "a load limit in [0.001, 1e9] N").Unit("N")
+                   .Desc("the largest roller force (absent: none)"));
       a->Visit("undercut_margin_mm", &undercut_margin_mm,
                Field().NonNegative().Unit("mm").Desc("smallest 1/κ_max − r_r, the cam's convex radius over the roller's"));
       a->Visit("roller_gap_mm", &roller_gap_mm,

@@ -827,6 +827,8 @@ TEST(BadInput, TheFieldCampaignsValuesAreRefusedAtTheirFields) {
       {"disc_cam_min_size", "/variables/offset_mm/1", 1e308, "1e6 times the study's base circle radius"},
       {"cycloid_min_size", "/limits/min_backlash_arcsec", 1e308, "a full turn"},
       {"cycloid_min_size", "/limits/contact_stress_MPa", 5e-324, "[1, 1e6] MPa"},
+      {"lcr_min_size", "/limits/roller_load_N", 5e-324, "[0.001, 1e9] N"},
+      {"lcr_min_size", "/limits/roller_load_N", 1e308, "[0.001, 1e9] N"},
   };
   for (const Case& c : cases) {
     const std::string pointer = c.pointer;
