@@ -26,7 +26,9 @@ if [ -z "$CXX_FUZZ" ]; then echo "scripts/fuzz.sh: clang++ is needed (apt-get in
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX_FUZZ" \
   -DCAMOPT_FUZZ=ON -DCAMOPT_BUILD_TESTS=OFF -DCAMOPT_BUILD_BENCH=OFF >/dev/null
 cmake --build build-fuzz --target "$BIN" -j"${JOBS:-2}"
-CORPUS=build-fuzz/corpus-$TARGET ARTIFACTS=build-fuzz/artifacts-$TARGET
+# Absolute paths: the request target's studio works in its served folder (it changes the
+# process's working folder, as `camopt serve` does), and libFuzzer reads and writes these after.
+CORPUS=$PWD/build-fuzz/corpus-$TARGET ARTIFACTS=$PWD/build-fuzz/artifacts-$TARGET DICT=$PWD/$DICT
 mkdir -p "$CORPUS" "$ARTIFACTS"
 cp -n "$SEEDS"/* "$CORPUS"/ 2>/dev/null || true
 # Leaks are not defects of a one-shot CLI run; the study runner's allocations are checked by ASan.

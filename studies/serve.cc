@@ -362,6 +362,18 @@ class Studio {
       // check and the claim are one step under the lock (a run being started holds its claim in
       // starting_ until it is in runs_), so of concurrent requests exactly one is accepted.
       std::lock_guard<std::mutex> lock(mutex_);
+      // At most kMaxRunningRuns at once: each is a process as heavy as `camopt run`, and a client
+      // that starts one per study file would otherwise starve the machine and the server with it.
+      size_t running = starting_.size();
+      for (auto& [id, other] : runs_) {
+        std::lock_guard<std::mutex> run_lock(other->mutex);
+        running += !other->finished;
+      }
+      if (running >= kMaxRunningRuns) {
+        error = "runs: " + std::to_string(running) + " runs are going on, at most " + std::to_string(kMaxRunningRuns) +
+                " at once (cancel one or wait for one to finish)";
+        return nullptr;
+      }
       if (starting_.count(out_rel)) {
         error = "run of " + rel + " is starting and will write " + out_rel + " (cancel it or wait for it)";
         return nullptr;
@@ -660,7 +672,7 @@ void Routes(httplib::Server& server, Studio& studio) {
     if (r.status != 200) return SendError(res, r.status, r.message);
     std::string error;
     const auto run = studio.Start(r.path, error);
-    if (!run) return SendError(res, error.rfind("run ", 0) == 0 ? 409 : 500, error);
+    if (!run) return SendError(res, error.rfind("run ", 0) == 0 ? 409 : error.rfind("runs: ", 0) == 0 ? 503 : 500, error);
     SendJson(res, RunStatus(*run), 201);
   });
   server.Get("/api/runs", [&studio](const httplib::Request&, httplib::Response& res) {

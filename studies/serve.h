@@ -48,6 +48,10 @@ inline bool IsLoopbackHost(const std::string& host) {
 /// Largest request body the studio reads (a study file is a few kB).
 inline constexpr size_t kMaxBodyBytes = size_t{1} << 20;
 
+/// Runs the studio keeps going at once; a run asked for beyond them is refused with 503 (each run
+/// is a `camopt run` process: unbounded, a client starting one per study starves the machine).
+inline constexpr size_t kMaxRunningRuns = 8;
+
 /// Runs the studio until the process is interrupted; prints "camopt studio: http://HOST:PORT/" on
 /// stdout once it listens. Returns 2 when the folder or the address cannot be used.
 int ServeMain(const ServeOptions& options);

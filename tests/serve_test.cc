@@ -682,6 +682,46 @@ TEST(Serve, AHugeSampledSweepIsRefusedBeforeItIsExpanded) {
   EXPECT_NE(v.dump().find("more than the cap of 1e+07"), std::string::npos) << res->body;
 }
 
+// Runs are processes as heavy as `camopt run`: at most kMaxRunningRuns go on at once, a further
+// one is refused with 503 (a client starting one per study file starved the machine and the
+// server with it under the request fuzzer), and one finished or cancelled frees its place.
+TEST(Serve, RunsBeyondTheCapAreRefusedWith503) {
+  const fs::path dir = TempDir("serve-run-cap");
+  const size_t n = camopt::studies::kMaxRunningRuns + 2;
+  for (size_t k = 0; k < n; ++k)  // about 8 s each on one core
+    fs::copy_file(Example("cycloid_ltca_nnm_tolerances.json"), dir / ("slow" + std::to_string(k) + ".json"));
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  std::vector<int> started;
+  std::vector<int> statuses;
+  for (size_t k = 0; k < n; ++k) {
+    auto res = c.Post("/api/runs", "{\"path\": \"slow" + std::to_string(k) + ".json\"}", "application/json");
+    ASSERT_TRUE(res);
+    statuses.push_back(res->status);
+    if (res->status == 201) started.push_back(json::parse(res->body)["id"].get<int>());
+    else EXPECT_NE(res->body.find("at most " + std::to_string(camopt::studies::kMaxRunningRuns) + " at once"),
+                   std::string::npos) << res->body;
+  }
+  EXPECT_EQ(started.size(), camopt::studies::kMaxRunningRuns);
+  EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 503), 2);
+  // The server answers meanwhile, and a cancelled run frees a place.
+  auto kinds = c.Get("/api/kinds");
+  ASSERT_TRUE(kinds);
+  EXPECT_EQ(kinds->status, 200);
+  ASSERT_FALSE(started.empty());
+  auto cancel = c.Post(("/api/runs/" + std::to_string(started[0]) + "/cancel").c_str(), "", "application/json");
+  ASSERT_TRUE(cancel);
+  FollowToEnd(studio, started[0]);
+  auto again = c.Post("/api/runs", "{\"path\": \"slow" + std::to_string(n - 1) + ".json\"}", "application/json");
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->status, 201) << again->body;
+  if (again->status == 201) started.push_back(json::parse(again->body)["id"].get<int>());
+  for (size_t k = 1; k < started.size(); ++k)
+    c.Post(("/api/runs/" + std::to_string(started[k]) + "/cancel").c_str(), "", "application/json");
+  for (size_t k = 1; k < started.size(); ++k) FollowToEnd(studio, started[k]);
+}
+
 TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
   const fs::path dir = TempDir("serve-disconnect");
   // About 8 s on one core (its tolerance Monte Carlo reports progress all along).
