@@ -10,6 +10,8 @@
 #include <memory>
 #include <string>
 
+#include <unistd.h>
+
 #include "fuzz/studio_target.h"
 
 namespace {
@@ -25,6 +27,18 @@ void StopStudio() {
 
 void Defect(const std::string& why) {
   std::fprintf(stderr, "camopt defect: %s\n", why.c_str());
+  // A server that stopped answering is seen in its threads: with CAMOPT_FUZZ_STACKS=1 each one's
+  // stack (gdb), the runs' processes and whether the server answers again within 10 s.
+  if (std::getenv("CAMOPT_FUZZ_STACKS") && studio) {
+    const std::string pid = std::to_string(getpid());
+    std::fflush(stderr);
+    std::system(("ps -o pid,ppid,stat,etime,wchan:20,args --ppid " + pid + " 1>&2").c_str());
+    std::system(("gdb -batch -p " + pid + " -ex 'thread apply all bt 25' 1>&2 2>/dev/null").c_str());
+    for (int k = 0; k < 5; ++k) {
+      const std::string health = studio->Health();
+      std::fprintf(stderr, "camopt defect: then /api/kinds: %s\n", health.empty() ? "answered" : health.c_str());
+    }
+  }
   std::abort();
 }
 

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <climits>
 #include <condition_variable>
 #include <csignal>
 #include <cstdio>
@@ -79,6 +80,14 @@ Resolved Resolve(const fs::path& root, const std::string& rel, bool must_exist) 
     return out;
   }
   const fs::path given(rel);
+  for (const fs::path& part : given) {
+    if (part.native().size() > NAME_MAX) {
+      out.status = 400;
+      out.message = "path: a file or folder name is at most " + std::to_string(NAME_MAX) + " bytes, found one of " +
+                    std::to_string(part.native().size()) + " in \"" + rel + "\"";
+      return out;
+    }
+  }
   if (given.is_absolute()) {
     out.status = 403;
     out.message = "path: " + rel + " is outside the studio's folder (expected a path relative to it)";
@@ -415,6 +424,9 @@ class Studio {
     }
     const std::string folder = root_.string();
     const pid_t parent = getpid();
+    // The fallback bound for closing inherited descriptors where close_range is missing (computed here:
+    // sysconf is not async-signal-safe).
+    const long open_max = std::max(1024L, sysconf(_SC_OPEN_MAX));
     const pid_t pid = fork();
     if (pid < 0) {
       error = std::string("cannot start the run: ") + std::strerror(errno);
@@ -433,6 +445,11 @@ class Studio {
         dup2(null_fd, 1);
       }
       if (chdir(folder.c_str()) != 0) _exit(1);
+      // Nothing but 0, 1 and 2 crosses into the run: the listening socket and every client's connection
+      // (cpp-httplib opens them without O_CLOEXEC) would otherwise live as long as the run, holding a
+      // client's connection open after the server closed it and the port after the server ended.
+      if (close_range(3, ~0U, 0) != 0)
+        for (long fd = 3; fd < open_max; ++fd) close(static_cast<int>(fd));
       execv(argv[0], argv.data());
       _exit(127);
     }
@@ -525,7 +542,8 @@ bool SaveFile(const fs::path& file, const std::string& body, std::string& why) {
   std::string tmp;
   int fd = -1;
   for (int attempt = 0; attempt < 64 && fd < 0; ++attempt) {
-    tmp = "." + name + ".camopt-save-" + std::to_string(getpid()) + "-" + std::to_string(++counter);
+    // The name's first 100 bytes: the temporary's name stays within NAME_MAX whatever the file's.
+    tmp = "." + name.substr(0, 100) + ".camopt-save-" + std::to_string(getpid()) + "-" + std::to_string(++counter);
     fd = ::openat(dir, tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd < 0 && errno != EEXIST) break;
   }

@@ -243,6 +243,42 @@ TEST(Serve, ASaveNeverWritesThroughALinkAtItsTemporaryName) {
   EXPECT_EQ(ReadFile(dir / "s.json"), "{\"study\": \"disc_cam\"}");
 }
 
+// A name as long as the file system allows is saved (its temporary's name stays within the limit);
+// a longer one, in a save or a duplicate, is the client's error (400 naming the limit), not the
+// server's (it was a 500 "File name too long").
+TEST(Serve, LongFileNamesAreSavedUpToTheLimitAndRefusedBeyondIt) {
+  const fs::path dir = TempDir("serve-long-names");
+  WriteFile(dir / "s.json", "{\"study\": \"lcr_analysis\"}");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const std::string longest = std::string(NAME_MAX - 5, 'a') + ".json", beyond = std::string(NAME_MAX, 'b') + ".json";
+  auto r = c.Put(("/api/file?path=" + longest).c_str(), "{\"study\": \"disc_cam\"}", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(ReadFile(dir / longest), "{\"study\": \"disc_cam\"}");
+  for (const std::string& rel : {beyond, "sub/" + beyond, beyond + "/s.json"}) {
+    r = c.Put(("/api/file?path=" + rel).c_str(), "{}", "application/json");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400) << rel << ": " << r->body;
+    EXPECT_NE(r->body.find("at most " + std::to_string(NAME_MAX) + " bytes"), std::string::npos) << r->body;
+  }
+  r = c.Post("/api/duplicate", json{{"from", "s.json"}, {"to", beyond}}.dump(), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400) << r->body;
+  r = c.Post("/api/duplicate", json{{"from", "s.json"}, {"to", "copy-" + longest.substr(5)}}.dump(),
+             "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body;
+  r = c.Get(("/api/file?path=" + beyond).c_str());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400) << r->body;
+  // Nothing else was left in the folder (no temporary).
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  EXPECT_EQ(names.size(), 3u) << ::testing::PrintToString(names);
+}
+
 // Eight concurrent saves of one study, thirty times: the file is always one whole body, never a
 // mix of two.
 TEST(Serve, ConcurrentSavesOfOneStudyNeverMixTheirBodies) {
@@ -772,6 +808,47 @@ TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
   auto kinds = c.Get("/api/kinds");
   ASSERT_TRUE(kinds);
   EXPECT_EQ(kinds->status, 200);
+}
+
+// A run is a process of its own: it inherits the server's standard streams (stderr a pipe to the server)
+// and nothing else, so no client's connection or the listening socket outlives the server's own use.
+TEST(Serve, ARunsProcessHoldsNoneOfTheServersSockets) {
+  const fs::path dir = TempDir("serve-run-fds");
+  fs::copy_file(Example("cycloid_ltca_nnm_tolerances.json"), dir / "slow.json");  // about 8 s
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  // Other clients hold connections while the run starts.
+  std::vector<int> held;
+  for (int k = 0; k < 3; ++k) held.push_back(SlowClient(studio.port(), "GET /api/kinds HTTP/1.1\r\n"));
+  auto res = c.Post("/api/runs", "{\"path\": \"slow.json\"}", "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 201) << res->body;
+  const json run = json::parse(res->body);
+  const pid_t child = run["pid"];
+  ASSERT_GT(child, 0);
+  const fs::path proc = "/proc/" + std::to_string(child);
+  // Wait until the child is the run (its command line names the output folder), not the forked server.
+  bool is_run = false;
+  for (int i = 0; i < 200 && !is_run; ++i) {
+    is_run = ReadFile(proc / "cmdline").find("--files-inside") != std::string::npos;
+    if (!is_run) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_TRUE(is_run);
+  std::vector<std::string> fds;
+  for (const auto& e : fs::directory_iterator(proc / "fd")) {
+    std::error_code ec;
+    const std::string target = fs::read_symlink(e.path(), ec).string();
+    if (!ec) fds.push_back(e.path().filename().string() + " -> " + target);
+  }
+  int sockets = 0;
+  for (const auto& f : fds) sockets += f.find("socket:") != std::string::npos;
+  EXPECT_EQ(sockets, 0) << ::testing::PrintToString(fds);
+  for (int fd : held) close(fd);
+  auto cancel = c.Post(("/api/runs/" + std::to_string(run["id"].get<int>()) + "/cancel").c_str(), "",
+                       "application/json");
+  ASSERT_TRUE(cancel);
+  FollowToEnd(studio, run["id"].get<int>());
 }
 
 // The mechanism at an input angle against closed forms: the input turret stands, the output turret
