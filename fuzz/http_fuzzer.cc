@@ -4,11 +4,15 @@
 // A defect: a failed answer (studio_target.h), the server not answering /api/kinds within 1 s
 // (checked every 50 inputs), a file beside the served folder or a link in it (checked after every
 // input), or a crash or sanitizer report anywhere in the process (the server runs in it).
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include <unistd.h>
 
@@ -42,6 +46,47 @@ void Defect(const std::string& why) {
   std::abort();
 }
 
+// With CAMOPT_FUZZ_STACKS=1, an exchange still open after 1.5 s is looked at while it hangs: the
+// sockets of the server's port (ss) and every thread's stack (gdb).
+class Watchdog {
+ public:
+  Watchdog() : thread_([this] { Loop(); }) {}
+  void Arm(int port) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    port_ = port;
+    deadline_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
+    armed_ = true;
+    changed_.notify_all();
+  }
+  void Disarm() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    armed_ = false;
+  }
+
+ private:
+  void Loop() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      changed_.wait(lock, [&] { return armed_; });
+      if (changed_.wait_until(lock, deadline_, [&] { return !armed_; })) continue;
+      if (!armed_ || std::chrono::steady_clock::now() < deadline_) continue;
+      armed_ = false;
+      const std::string port = std::to_string(port_), pid = std::to_string(getpid());
+      std::fprintf(stderr, "camopt watchdog: an exchange with port %s open for 1.5 s\n", port.c_str());
+      std::fflush(stderr);
+      std::system(("ss -tanoi '( sport = :" + port + " or dport = :" + port + " )' 1>&2").c_str());
+      std::system(("ss -ltn '( sport = :" + port + " )' 1>&2").c_str());
+      std::system(("gdb -batch -p " + pid + " -ex 'thread apply all bt 30' 1>&2 2>/dev/null").c_str());
+    }
+  }
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool armed_ = false;
+  int port_ = 0;
+  std::chrono::steady_clock::time_point deadline_;
+  std::thread thread_;
+};
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -53,7 +98,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > (size_t{2} << 20)) return 0;
   const std::string text =
       camopt::fuzz::WithHost(std::string(reinterpret_cast<const char*>(data), size), studio->port());
+  static Watchdog* watchdog = std::getenv("CAMOPT_FUZZ_STACKS") ? new Watchdog : nullptr;
+  if (watchdog) watchdog->Arm(studio->port());
   const camopt::fuzz::Reply r = camopt::fuzz::Exchange(studio->port(), text);
+  if (watchdog) watchdog->Disarm();
   if (camopt::fuzz::RequestFailure(r.outcome)) Defect(r.outcome + ": " + r.first_line);
   for (const std::string& stray : studio->Stray()) Defect(stray);
   if (++inputs % 50 == 0) {

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <filesystem>
@@ -57,17 +58,34 @@ inline Reply Exchange(int port, const std::string& text) {
   a.sin_family = AF_INET;
   a.sin_port = htons(uint16_t(port));
   a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (fd < 0 || ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+  // A connect interrupted by a signal goes on in the background: wait for it and read its result.
+  const auto connected = [&] {
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0) return true;
+    if (errno != EINTR) return false;
+    pollfd p{fd, POLLOUT, 0};
+    int ready;
+    do ready = ::poll(&p, 1, 3000);
+    while (ready < 0 && errno == EINTR);
+    int error = 0;
+    socklen_t length = sizeof error;
+    return ready > 0 && ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &length) == 0 && error == 0;
+  };
+  if (fd < 0 || !connected()) {
     if (fd >= 0) ::close(fd);
     r.outcome = "no connection";
     return r;
   }
   // The server may answer (413, 400) and close before the whole request is sent: a failed send is
   // not a failure of the server.
+  // A signal (libFuzzer's SIGALRM timer ticks every -timeout/2 s) interrupts poll, send and recv
+  // with EINTR: each is tried again, never taken for a silent or closed server.
   for (size_t sent = 0; sent < text.size();) {
     pollfd p{fd, POLLOUT, 0};
-    if (::poll(&p, 1, 3000) <= 0) break;
+    const int ready = ::poll(&p, 1, 3000);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) break;
     const ssize_t n = ::send(fd, text.data() + sent, text.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
     sent += size_t(n);
   }
@@ -79,9 +97,12 @@ inline Reply Exchange(int port, const std::string& text) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) break;
     pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, int(left.count())) <= 0) break;
+    const int ready = ::poll(&p, 1, int(left.count()));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) break;
     char buf[65536];
     const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+    if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       closed = true;
       break;

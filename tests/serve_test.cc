@@ -19,6 +19,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,6 +29,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "fuzz/studio_target.h"
 #include "studies/serve.h"
 #include "studies/studio_mechanism.h"
 #include "tests/test_util.h"
@@ -241,6 +243,31 @@ TEST(Serve, ASaveNeverWritesThroughALinkAtItsTemporaryName) {
   EXPECT_EQ(ReadFile(base / "outside.txt"), "untouched");
   EXPECT_FALSE(fs::is_symlink(dir / "s.json"));
   EXPECT_EQ(ReadFile(dir / "s.json"), "{\"study\": \"disc_cam\"}");
+}
+
+// The fuzzers' exchange (fuzz/studio_target.h) under a timer signal every 0.2 ms, as libFuzzer's
+// SIGALRM ticks interrupt it: an interrupted poll, send, recv or connect is tried again, so every
+// request is answered (taking EINTR for a silent server was the request target's "no answer in 3 s").
+TEST(Serve, TheFuzzersExchangeIsAnsweredUnderATimerSignal) {
+  const fs::path dir = TempDir("serve-exchange-signals");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  struct sigaction tick{}, before{};
+  tick.sa_handler = [](int) {};
+  sigemptyset(&tick.sa_mask);
+  tick.sa_flags = 0;  // no SA_RESTART, as libFuzzer's handler
+  ASSERT_EQ(sigaction(SIGALRM, &tick, &before), 0);
+  itimerval every{{0, 200}, {0, 200}}, off{};
+  ASSERT_EQ(setitimer(ITIMER_REAL, &every, nullptr), 0);
+  std::map<std::string, int> outcomes;
+  for (int k = 0; k < 300; ++k) {
+    const camopt::fuzz::Reply r = camopt::fuzz::Exchange(
+        studio.port(), camopt::fuzz::WithHost("GET /api/kinds HTTP/1.1\r\nHost: {{HOST}}\r\n\r\n", studio.port()));
+    ++outcomes[r.outcome + " " + std::to_string(r.status)];
+  }
+  setitimer(ITIMER_REAL, &off, nullptr);
+  sigaction(SIGALRM, &before, nullptr);
+  EXPECT_EQ(outcomes["answered 200"], 300) << ::testing::PrintToString(outcomes);
 }
 
 // A name as long as the file system allows is saved (its temporary's name stays within the limit);
