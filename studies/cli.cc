@@ -236,7 +236,9 @@ int RunCommandLine(int argc, char** argv) {
       ->check(CLI::Range(0.1, 3600.0));
   serve->add_option("--web", serve_options.web_dir,
                     "Folder of the front end's files (default: next to the program, or share/camopt/web)");
-  CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows");
+  CLI::App* kinds = app.add_subcommand("kinds", "List the study kinds this build knows, each with what it is for");
+  bool kinds_names_only = false;
+  kinds->add_flag("--names", kinds_names_only, "The names only, one per line (for scripts)");
   camopt::studies::sweep::Options sweep;
   CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a study over many cases (docs/studies.md)");
   sweep_cmd->add_option("sweep", sweep.file, "Sweep file (JSON)")->required();
@@ -304,7 +306,24 @@ int RunCommandLine(int argc, char** argv) {
   }
   if (serve->parsed()) return camopt::studies::ServeMain(serve_options);
   if (kinds->parsed()) {
-    for (const auto& k : camopt::studies::StudyKinds()) std::cout << k << "\n";
+    // One line per kind: its name, then what it is for (its schema's title, without the
+    // "camopt study: " every title starts with).
+    const std::vector<std::string> names = camopt::studies::StudyKinds();
+    size_t width = 0;
+    for (const auto& k : names) width = std::max(width, k.size());
+    for (const auto& k : names) {
+      if (kinds_names_only) {
+        std::cout << k << "\n";
+        continue;
+      }
+      const auto schema = nlohmann::json::parse(camopt::studies::StudySchema(k), nullptr, false);
+      std::string what = schema.is_object() && schema.contains("title") && schema["title"].is_string()
+                             ? schema["title"].get<std::string>()
+                             : "";
+      const std::string prefix = "camopt study: ";
+      if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+      std::cout << k << std::string(width - k.size() + 2, ' ') << what << "\n";
+    }
     return 0;
   }
   if (schema->parsed()) {

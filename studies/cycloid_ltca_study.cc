@@ -1043,7 +1043,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
-CAMOPT_REGISTER_DECLARED_KIND("cycloid_ltca", Input, "camopt study: loaded tooth contact analysis of a cycloid drive");
+CAMOPT_REGISTER_DECLARED_KIND("cycloid_ltca", Input, "camopt study: loaded tooth contact analysis of a cycloid drive: pin loads, contact pressure and transmission error");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

@@ -229,7 +229,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_friction_fit");
-CAMOPT_REGISTER_DECLARED_KIND("lcr_friction_fit", Input, "camopt study: friction fit of a lobe cam reducer");
+CAMOPT_REGISTER_DECLARED_KIND("lcr_friction_fit", Input, "camopt study: friction coefficient and drag of a lobe cam reducer fitted to measured input torques");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the model's
 // mean input torque (Ceres' tolerances are fixed).

@@ -512,7 +512,7 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
 
-CAMOPT_REGISTER_DECLARED_KIND("transmission_rigidity", Input, "camopt study: transmission rigidity");
+CAMOPT_REGISTER_DECLARED_KIND("transmission_rigidity", Input, "camopt study: torsional rigidity, backlash and deflection of a drive train from its elements");
 
 // The work limit (studies/work_limits.h): one unit per closed-form element; a lobe cam reducer
 // solves its rollers' load sharing at every angle step in both load directions. The chain's length

@@ -1,8 +1,10 @@
 // What a new user meets at the command line: a misspelt command, field or enum value gets the
 // nearest accepted name; a sweep file given to `camopt run` is named as one; --strict turns a
 // failed limit into exit 3.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,32 @@ TEST(CliMessages, MisspeltEnumValueAndFieldGetTheNearestName) {
   study["follower"].erase("roller_radius_mm");
   camopt::testing::ExpectStudyRejected(study, "field-typo", "/follower/roller_radus_mm",
                                        "; did you mean \"roller_radius_mm\"?");
+}
+
+// `camopt kinds`: one line per kind, its name then what it is for; `--names` the bare list.
+TEST(CliMessages, KindsSaysWhatEachKindIsFor) {
+  const auto out = std::filesystem::temp_directory_path() / ("camopt-kinds-" + std::to_string(::getpid()));
+  ASSERT_EQ(RunCamopt("kinds > " + out.string()).exit_code, 0);
+  std::ifstream in(out);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(RunCamopt("kinds --names > " + out.string()).exit_code, 0);
+  std::ifstream names_in(out);
+  std::vector<std::string> names;
+  for (std::string line; std::getline(names_in, line);) names.push_back(line);
+  std::filesystem::remove(out);
+  ASSERT_GE(names.size(), 11u);
+  ASSERT_EQ(lines.size(), names.size());
+  for (size_t i = 0; i < names.size(); ++i) {
+    EXPECT_EQ(names[i].find(' '), std::string::npos) << names[i];
+    ASSERT_EQ(lines[i].rfind(names[i] + "  ", 0), 0u) << lines[i];
+    const std::string what = lines[i].substr(lines[i].find_first_not_of(' ', names[i].size()));
+    EXPECT_GT(what.size(), 10u) << lines[i];
+    EXPECT_EQ(what.find("camopt study"), std::string::npos) << lines[i];
+  }
+  const auto at = std::find(names.begin(), names.end(), "transmission_rigidity");
+  ASSERT_NE(at, names.end());
+  EXPECT_NE(lines[size_t(at - names.begin())].find("torsional rigidity"), std::string::npos);
 }
 
 TEST(CliMessages, UnknownCommandAndAFileWithoutACommand) {
