@@ -180,6 +180,65 @@ class StepData {
     Close();
     return id;
   }
+  // A rational quadratic B-spline curve (ISO 10303-42 complex instance) of `segments` segments
+  // meeting at double knots, through the points `poles` with `weights`.
+  int RationalQuadraticCurve(const std::vector<int>& poles, const std::vector<double>& weights, int segments) {
+    std::string body = "( BOUNDED_CURVE() B_SPLINE_CURVE(2,(";
+    for (size_t i = 0; i < poles.size(); ++i) {
+      if (i) body += ',';
+      body += Ref(poles[i]);
+    }
+    body += "),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS((3";
+    for (int k = 1; k < segments; ++k) body += ",2";
+    body += ",3),(";
+    for (int k = 0; k <= segments; ++k) {
+      if (k) body += ',';
+      const Real r(k);
+      body.append(r.c, size_t(r.n));
+    }
+    body += "),.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE((";
+    for (size_t i = 0; i < weights.size(); ++i) {
+      if (i) body += ',';
+      const Real r(weights[i]);
+      body.append(r.c, size_t(r.n));
+    }
+    body += ")) REPRESENTATION_ITEM('') )";
+    return Add(body);
+  }
+  // The wall over a rational quadratic B-spline run: degree 2 along the run, 1 across the
+  // thickness, its poles those of the bottom and top curves (`poles0`, `polest`).
+  int RationalQuadraticWall(const std::vector<int>& poles0, const std::vector<int>& polest,
+                            const std::vector<double>& weights, int segments) {
+    std::string body = "( BOUNDED_SURFACE() B_SPLINE_SURFACE(2,1,(";
+    for (size_t i = 0; i < poles0.size(); ++i) {
+      if (i) body += ',';
+      body += '(';
+      body += Ref(poles0[i]);
+      body += ',';
+      body += Ref(polest[i]);
+      body += ')';
+    }
+    body += "),.UNSPECIFIED.,.F.,.F.,.F.) B_SPLINE_SURFACE_WITH_KNOTS((3";
+    for (int k = 1; k < segments; ++k) body += ",2";
+    body += ",3),(2,2),(";
+    for (int k = 0; k <= segments; ++k) {
+      if (k) body += ',';
+      const Real r(k);
+      body.append(r.c, size_t(r.n));
+    }
+    body += "),(0.,1.),.UNSPECIFIED.) GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE((";
+    for (size_t i = 0; i < weights.size(); ++i) {
+      if (i) body += ',';
+      const Real r(weights[i]);
+      body += '(';
+      body.append(r.c, size_t(r.n));
+      body += ',';
+      body.append(r.c, size_t(r.n));
+      body += ')';
+    }
+    body += ")) REPRESENTATION_ITEM('') SURFACE() )";
+    return Add(body);
+  }
   int Edge(int from, int to, int curve, bool same_sense) {
     const int id = Open(32);
     Put("EDGE_CURVE('',");
@@ -286,6 +345,53 @@ class StepData {
   size_t len_ = 0;
   int next_ = 1;
 };
+
+// A run of the chain's arcs and lines as one rational quadratic B-spline, exactly: each arc (cut
+// into pieces of at most 90° turn) is one segment with poles at its ends and at the crossing of its
+// end tangents, whose weight is cos(half the turn); a line is a segment with its midpoint as the
+// middle pole, weight 1 (Piegl & Tiller, The NURBS Book, 2nd ed., §7.3). The segments meet at
+// double knots, so the curve passes through every joint of the chain.
+struct RationalQuadratic {
+  std::vector<Vec2<double>> poles;  ///< 2 segments + 1
+  std::vector<double> weights;
+  int segments = 0;
+};
+
+RationalQuadratic ChainAsRationalQuadratic(const ArcSegment* arcs, size_t count) {
+  RationalQuadratic c;
+  c.poles.push_back(arcs[0].start);
+  c.weights.push_back(1.0);
+  for (size_t i = 0; i < count; ++i) {
+    const ArcSegment& a = arcs[i];
+    if (std::abs(a.bulge) < 1e-12) {
+      c.poles.push_back(0.5 * (a.start + a.end));
+      c.weights.push_back(1.0);
+      c.poles.push_back(a.end);
+      c.weights.push_back(1.0);
+      ++c.segments;
+      continue;
+    }
+    const ArcGeometry g = ArcGeometryOf(a);
+    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(g.sweep) / (0.5 * kPi) - 1e-9)));
+    const double half = 0.5 * g.sweep / pieces, cos_half = std::cos(half);
+    Vec2<double> from = a.start;
+    for (int k = 1; k <= pieces; ++k) {
+      const Vec2<double> to = k == pieces ? a.end : PointOnArc(a, g, double(k) / pieces);
+      // |mid − centre| = r cos(half), |pole − centre| = r / cos(half).
+      c.poles.push_back(g.centre + (0.5 * (from + to) - g.centre) / (cos_half * cos_half));
+      c.weights.push_back(cos_half);
+      c.poles.push_back(to);
+      c.weights.push_back(1.0);
+      ++c.segments;
+      from = to;
+    }
+  }
+  return c;
+}
+
+// The largest number of the chain's arcs in one wall face (the file then has a face per this many
+// arcs instead of a face per arc: a tenth of the text for a profile of hundreds of arcs).
+constexpr size_t kArcsPerWall = 64;
 
 }  // namespace
 
@@ -426,7 +532,8 @@ std::string StepOfExtrusion(const Extrusion& e) {
   CheckChain(e);
   const std::string name = StepString(e.name);
   const double t = e.thickness_mm;
-  // About 1200 characters per arc (its wall, edges, vertices and their geometry).
+  // About 1200 characters per arc of a short chain (its wall, edges, vertices and their geometry), 500
+  // in the B-spline walls of a long one; the text grows past this if need be.
   StepData d("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n"
              "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n"
              "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n",
@@ -454,35 +561,57 @@ std::string StepOfExtrusion(const Extrusion& e) {
   const int up = d.Wrap("VECTOR('',", dz, ",1.)");
   const size_t n = e.profile.size();
   const Real zero(0.0), top_z(t);
-  // Vertices at the arcs' start points, at z = 0 and z = t; the vertical edge through each.
-  std::vector<int> v0(n), vt(n), vertical(n);
+  // The walls: one face per arc or line (a cylinder or a plane), or, for a chain of more than
+  // kArcsPerWall of them, one face per run of kArcsPerWall (the extrusion of the run as a rational
+  // B-spline, exactly the same arcs). A wall starts at each `first[w]` of the chain.
+  const size_t per_wall = n > kArcsPerWall ? kArcsPerWall : 1;
+  std::vector<size_t> first;
+  for (size_t i = 0; i < n; i += per_wall) first.push_back(i);
+  const size_t walls_n = first.size();
+  // Vertices at the walls' start points, at z = 0 and z = t; the vertical edge through each.
+  std::vector<int> v0(walls_n), vt(walls_n), vertical(walls_n);
   std::vector<Real> start_x, start_y;
-  start_x.reserve(n), start_y.reserve(n);
-  for (size_t i = 0; i < n; ++i) {
-    const Vec2<double>& p = e.profile[i].start;
+  start_x.reserve(walls_n), start_y.reserve(walls_n);
+  for (size_t w = 0; w < walls_n; ++w) {
+    const Vec2<double>& p = e.profile[first[w]].start;
     start_x.emplace_back(p.x()), start_y.emplace_back(p.y());
-    const int p0 = d.Point(start_x[i], start_y[i], zero), pt = d.Point(start_x[i], start_y[i], top_z);
-    v0[i] = d.Wrap("VERTEX_POINT('',", p0, ")");
-    vt[i] = d.Wrap("VERTEX_POINT('',", pt, ")");
+    const int p0 = d.Point(start_x[w], start_y[w], zero), pt = d.Point(start_x[w], start_y[w], top_z);
+    v0[w] = d.Wrap("VERTEX_POINT('',", p0, ")");
+    vt[w] = d.Wrap("VERTEX_POINT('',", pt, ")");
     const int line = d.Wrap("LINE('',", p0, up, ")");
-    vertical[i] = d.Edge(v0[i], vt[i], line, true);
+    vertical[w] = d.Edge(v0[w], vt[w], line, true);
   }
-  // Each arc (or line): its edge at both ends and its wall, facing out of the solid.
-  std::vector<int> bottom(n), top(n), faces;
+  // Each wall: its edge at both ends and its face, facing out of the solid.
+  std::vector<int> bottom(walls_n), top(walls_n), faces;
   std::vector<int> walls;
-  for (size_t i = 0; i < n; ++i) {
-    const ArcSegment& a = e.profile[i];
-    const size_t k = (i + 1) % n;
+  for (size_t w = 0; w < walls_n; ++w) {
+    const ArcSegment& a = e.profile[first[w]];
+    const size_t k = (w + 1) % walls_n;
     int surface = 0;
     bool outward = true;
-    if (std::abs(a.bulge) < 1e-12) {
+    if (per_wall > 1) {
+      const size_t count = std::min(per_wall, n - first[w]);
+      const RationalQuadratic c = ChainAsRationalQuadratic(&e.profile[first[w]], count);
+      std::vector<int> poles0, polest;
+      poles0.reserve(c.poles.size()), polest.reserve(c.poles.size());
+      for (const Vec2<double>& p : c.poles) {
+        const Real x(p.x()), y(p.y());
+        poles0.push_back(d.Point(x, y, zero));
+        polest.push_back(d.Point(x, y, top_z));
+      }
+      const int curve0 = d.RationalQuadraticCurve(poles0, c.weights, c.segments);
+      bottom[w] = d.Edge(v0[w], v0[k], curve0, true);
+      top[w] = d.Edge(vt[w], vt[k], d.RationalQuadraticCurve(polest, c.weights, c.segments), true);
+      // S(u, v) = C(u) + v t ẑ: its normal C'(u) × ẑ is right of travel, out of a counter-clockwise chain.
+      surface = d.RationalQuadraticWall(poles0, polest, c.weights, c.segments);
+    } else if (std::abs(a.bulge) < 1e-12) {
       const Vec2<double> u = (a.end - a.start).normalized();
       const int dir = d.Direction(u.x(), u.y(), 0.0);
       const int normal = d.Direction(u.y(), -u.x(), 0.0);  // right of travel: out of a CCW chain
       const int vec = d.Wrap("VECTOR('',", dir, ",1.)");
-      const int p0 = d.Point(start_x[i], start_y[i], zero), pt = d.Point(start_x[i], start_y[i], top_z);
-      bottom[i] = d.Edge(v0[i], v0[k], d.Wrap("LINE('',", p0, vec, ")"), true);
-      top[i] = d.Edge(vt[i], vt[k], d.Wrap("LINE('',", pt, vec, ")"), true);
+      const int p0 = d.Point(start_x[w], start_y[w], zero), pt = d.Point(start_x[w], start_y[w], top_z);
+      bottom[w] = d.Edge(v0[w], v0[k], d.Wrap("LINE('',", p0, vec, ")"), true);
+      top[w] = d.Edge(vt[w], vt[k], d.Wrap("LINE('',", pt, vec, ")"), true);
       surface = d.Wrap("PLANE('',", d.Axis(p0, normal, dir), ")");
     } else {
       const ArcGeometry g = ArcGeometryOf(a);
@@ -491,13 +620,13 @@ std::string StepOfExtrusion(const Extrusion& e) {
       const int c0 = d.Axis(d.Point(cx, cy, zero), dz, dx);
       const int ct = d.Axis(d.Point(cx, cy, top_z), dz, dx);
       const Real r(g.radius);
-      bottom[i] = d.Edge(v0[i], v0[k], d.Wrap("CIRCLE('',", c0, r, ")"), ccw);
-      top[i] = d.Edge(vt[i], vt[k], d.Wrap("CIRCLE('',", ct, r, ")"), ccw);
+      bottom[w] = d.Edge(v0[w], v0[k], d.Wrap("CIRCLE('',", c0, r, ")"), ccw);
+      top[w] = d.Edge(vt[w], vt[k], d.Wrap("CIRCLE('',", ct, r, ")"), ccw);
       surface = d.Wrap("CYLINDRICAL_SURFACE('',", c0, r, ")");
       outward = ccw;  // a counter-clockwise arc of a counter-clockwise chain has the solid inside it
     }
     // Seen from outside: along the bottom edge, up at its end, back along the top, down.
-    const int bound = d.Bound({{bottom[i], true}, {vertical[k], true}, {top[i], false}, {vertical[i], false}}, true);
+    const int bound = d.Bound({{bottom[w], true}, {vertical[k], true}, {top[w], false}, {vertical[w], false}}, true);
     walls.push_back(d.Face(bound, surface, outward));
   }
   // The bore: two half-cylinders between the vertices at angles 0 and π about its centre.
@@ -535,8 +664,8 @@ std::string StepOfExtrusion(const Extrusion& e) {
   }
   // The end faces: z = 0 faces −z (its profile loop reversed), z = t faces +z.
   std::vector<std::pair<int, bool>> loop0, loopt;
-  for (size_t i = n; i-- > 0;) loop0.push_back({bottom[i], false});
-  for (size_t i = 0; i < n; ++i) loopt.push_back({top[i], true});
+  for (size_t w = walls_n; w-- > 0;) loop0.push_back({bottom[w], false});
+  for (size_t w = 0; w < walls_n; ++w) loopt.push_back({top[w], true});
   const int plane0 = d.Add("PLANE(''," + StepData::Ref(d.Axis(d.Point(0, 0, 0), dz, dx)) + ")");
   const int planet = d.Add("PLANE(''," + StepData::Ref(d.Axis(d.Point(0, 0, t), dz, dx)) + ")");
   std::vector<int> b0 = {d.Bound(loop0, true)}, bt = {d.Bound(loopt, true)};

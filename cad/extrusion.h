@@ -1,9 +1,13 @@
-// An extruded planar cam written without a CAD kernel: its STEP AP214 B-rep (one face per arc or
-// line of the chain, the planes at both ends and the bore's two half-cylinders; ISO 10303-42 entities
-// in an ISO 10303-21 file) and its closed triangle mesh for STL. The faces are the chain's arcs and
-// lines exactly, as the OCCT extrusion gave them (cad/solid.cc), so the files' checks against the
-// exact profile are unchanged; the kernel is left for what needs it (reading files back in the
-// tests, B-spline surfaces, and the mesh of a profile the fast triangulation below cannot take).
+// An extruded planar cam written without a CAD kernel: its STEP AP214 B-rep (the walls, the planes
+// at both ends and the bore's two half-cylinders; ISO 10303-42 entities in an ISO 10303-21 file) and
+// its closed triangle mesh for STL. A chain of up to 64 arcs and lines has a wall per arc (a
+// cylinder) or line (a plane), as the OCCT extrusion gave them (cad/solid.cc); a longer one a wall
+// per run of 64, each the run as a rational quadratic B-spline surface (every arc one or more
+// segments of it, exactly: Piegl & Tiller, The NURBS Book, §7.3), a third of the text for the
+// cycloid disc's 690 arcs. Either way the faces are the chain's arcs and lines exactly, so the
+// files' checks against the exact profile are unchanged; the kernel is left for what needs it
+// (reading files back in the tests, B-spline surfaces of other shapes, and the mesh of a profile
+// the fast triangulation below cannot take).
 #pragma once
 
 #include <optional>

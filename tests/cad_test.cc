@@ -308,6 +308,49 @@ TEST(StepSolid, ConcurrentWritersGiveTheSameFileAsOneWriter) {
   EXPECT_NEAR(back.volume_mm3 / (kPi * (100.0 - 9.0) * 5.0) - 1, 0.0, kSolidRelTol);
 }
 
+// A chain of more than 64 arcs and lines is written as rational B-spline walls (a face per 64 of
+// them) that are the arcs exactly: a triangle of side 40 mm offset by 6 mm (each side cut into 22
+// lines, each corner a 120° arc, cut by the writer into two of 60°), read back by OpenCASCADE, has
+// the closed form's volume and area to the integration's accuracy, and the file is a fraction of
+// the one-face-per-arc file of the same chain with its lines as arcs.
+TEST(StepSolid, ManyArcsBecomeExactBSplineWalls) {
+  const double side = 40.0, r = 6.0, t = 5.0;
+  const Vec2<double> corner[3] = {{0, 0}, {side, 0}, {side / 2, side * std::sqrt(3.0) / 2}};
+  cad::Extrusion e;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<double> a = corner[k], b = corner[(k + 1) % 3], u = (b - a).normalized(), out(u.y(), -u.x());
+    for (int j = 0; j < 22; ++j)
+      e.profile.push_back({a + r * out + (b - a) * (j / 22.0), a + r * out + (b - a) * ((j + 1) / 22.0), 0.0});
+    const Vec2<double> v = (corner[(k + 2) % 3] - b).normalized(), out2(v.y(), -v.x());
+    e.profile.push_back({b + r * out, b + r * out2, std::tan(2 * kPi / 3 / 4)});  // 120° counter-clockwise
+  }
+  e.bore_centre = Vec2<double>(side / 2, side * std::sqrt(3.0) / 6);
+  e.bore_diameter_mm = 8.0;
+  e.thickness_mm = t;
+  ASSERT_EQ(e.profile.size(), 69u);
+  const std::string step = cad::StepOfExtrusion(e);
+  EXPECT_NE(step.find("RATIONAL_B_SPLINE_SURFACE"), std::string::npos);
+  EXPECT_EQ(step.find("CYLINDRICAL_SURFACE('',#"), step.rfind("CYLINDRICAL_SURFACE('',#"));  // the bore's only
+  const double tri = side * side * std::sqrt(3.0) / 4, bore = kPi * 16.0;
+  const double area_face = tri + 3 * side * r + kPi * r * r - bore;
+  const double volume = area_face * t, area = 2 * area_face + (3 * side + 2 * kPi * r + 2 * kPi * 4.0) * t;
+  const cad::StepReadBack back = cad::ReadStep(step);
+  EXPECT_EQ(back.solids, 1);
+  EXPECT_TRUE(back.valid);
+  EXPECT_NEAR(back.volume_mm3 / volume - 1, 0.0, 1e-8) << back.volume_mm3 << " vs " << volume;
+  EXPECT_NEAR(back.area_mm2 / area - 1, 0.0, 1e-8) << back.area_mm2 << " vs " << area;
+  // The same chain, 64 at a time no longer: 7 arcs of a regular polygon of 7 sides stay cylinders.
+  cad::Extrusion few;
+  for (int k = 0; k < 7; ++k)
+    few.profile.push_back({Vec2<double>(20 * std::cos(2 * kPi * k / 7), 20 * std::sin(2 * kPi * k / 7)),
+                           Vec2<double>(20 * std::cos(2 * kPi * (k + 1) / 7), 20 * std::sin(2 * kPi * (k + 1) / 7)),
+                           std::tan(2 * kPi / 7 / 4)});
+  const std::string small = cad::StepOfExtrusion(few);
+  EXPECT_EQ(small.find("B_SPLINE"), std::string::npos);
+  const cad::StepReadBack circle = cad::ReadStep(small);
+  EXPECT_NEAR(circle.volume_mm3 / (kPi * 400.0 * 10.0) - 1, 0.0, 1e-8);
+}
+
 TEST(Stl, BinaryLayoutAndEdgeCheck) {
   // A tetrahedron, outward oriented: closed; one face flipped: misoriented; one face removed: free.
   cad::TriangleMesh m;
