@@ -10,7 +10,9 @@
 # one with  build-fuzz/camopt_fuzz[_sweep|_request] -minimize_crash=1 CRASH  (or -merge=1) before
 # adding it to the corpus in tests/ (replayed on every build by FuzzCorpus.*).
 # The final libFuzzer statistics (runs, coverage, exec/s) are printed at the end and saved in
-# build-fuzz/fuzz-TARGET.log.
+# build-fuzz/fuzz-TARGET.log. With CAMOPT_FUZZ_STACKS=1 the request target looks at a request still
+# open after 1.5 s (the port's sockets with ss, every thread's stack with gdb) and, at a defect,
+# prints the runs' processes, the stacks and whether the server answers again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 TARGET=study
