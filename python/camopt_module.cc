@@ -433,8 +433,9 @@ py::dict Run(const py::object& study, const py::object& out, bool quiet, double 
 
 struct SweepData {
   std::string file;
+  std::optional<json> doc;  ///< a sweep given as a dict (its relative base study from the current folder)
   st::sweep::Sweep sweep;
-  size_t cases = 0;
+  std::vector<std::vector<json>> cases;  ///< each case's values, in the order of sweep.vary
 };
 
 SweepData LoadSweep(const py::object& path) {
@@ -444,11 +445,45 @@ SweepData LoadSweep(const py::object& path) {
   if (!fs::exists(s.file, ec)) RaiseFileNotFound(s.file);
   try {
     s.sweep = st::sweep::Parse(s.file);
-    s.cases = st::sweep::Cases(s.sweep).size();
+    s.cases = st::sweep::Cases(s.sweep);
   } catch (const st::StudyError& e) {
     RaiseStudyError(e, s.file);
   }
   return s;
+}
+
+// A sweep from a dict (as a sweep file's JSON) or from the path of a sweep file. A dict is named
+// "<dict>" in messages as if it were a file in the current folder: a relative base study is found
+// from there.
+SweepData ToSweep(const py::object& spec) {
+  if (!py::isinstance<py::dict>(spec)) return LoadSweep(spec);
+  SweepData s;
+  s.file = (fs::current_path() / "<dict>").string();
+  try {
+    const std::string text = py::module_::import("json").attr("dumps")(spec).cast<std::string>();
+    s.doc = st::ParseStudyText(text, "<dict>", st::CurrentInputLimits().max_depth);
+    s.sweep = st::sweep::ParseJson(*s.doc, s.file);
+    s.cases = st::sweep::Cases(s.sweep);
+  } catch (const st::StudyError& e) {
+    RaiseStudyError(e, "<dict>");
+  }
+  return s;
+}
+
+// The case table: a list of {"case": index, varied input's JSON pointer: value} per case, the
+// columns of cases.csv before the results.
+py::list CaseTable(const SweepData& s) {
+  py::list rows;
+  const py::object loads = py::module_::import("json").attr("loads");
+  for (size_t c = 0; c < s.cases.size(); ++c) {
+    py::dict row;
+    row["case"] = c;
+    const auto& values = s.cases[c];
+    for (size_t i = 0; i < values.size() && i < s.sweep.vary.size(); ++i)
+      row[py::str(s.sweep.vary[i].path)] = loads(values[i].dump());
+    rows.append(row);
+  }
+  return rows;
 }
 
 std::string ReadWhole(const fs::path& p) {
@@ -471,6 +506,7 @@ Result RunSweep(const SweepData& s, const py::object& out, int jobs, bool quiet,
   }
   st::sweep::Options o;
   o.file = s.file;
+  o.doc = s.doc;
   o.out = folder;
   o.jobs = jobs;
   o.quiet = quiet;
@@ -500,7 +536,9 @@ Result RunSweep(const SweepData& s, const py::object& out, int jobs, bool quiet,
   Result r = MakeResult(json::object(), std::move(files), code == 3 ? "some cases are not ok (see tables['cases'])" : "",
                         out.is_none() ? "" : folder);
   r.kind = "sweep";
-  r.verdict = py::none();
+  // The verdict over the cases, as the sweep's report says it ("All 3 cases ok").
+  const py::dict result = r.result;
+  r.verdict = result.contains("verdict") ? py::object(result["verdict"]) : py::object(py::none());
   return r;
 }
 
@@ -614,12 +652,18 @@ PYBIND11_MODULE(camopt, m) {
           "limits.")
       .def("__repr__", [](const StudyData& s) { return "<camopt.Study " + s.kind() + " from " + s.file + ">"; });
 
-  py::class_<SweepData>(m, "Sweep", "A checked sweep file (`camopt sweep`): a base study run over many cases.")
+  py::class_<SweepData>(m, "Sweep", "A checked sweep (`camopt sweep`): a base study run over many cases.")
+      .def(py::init(&ToSweep), py::arg("sweep"),
+           "A sweep from a dict (a sweep file's JSON; a relative \"base\" is found from the current folder)\n"
+           "or from the path of a sweep file. Raises FileNotFoundError, camopt.StudyError.")
       .def_static("load", &LoadSweep, py::arg("path"),
                   "Reads and checks a sweep file. Raises FileNotFoundError, camopt.StudyError.")
       .def_readonly("file", &SweepData::file)
       .def_property_readonly("name", [](const SweepData& s) { return s.sweep.name; })
-      .def_readonly("cases", &SweepData::cases, "The number of cases.")
+      .def_property_readonly("cases", &CaseTable,
+                             "The cases: a list of {'case': index, input's JSON pointer: value}, one per case,\n"
+                             "as cases.csv numbers them (pandas.DataFrame(sweep.cases) makes a table of it).")
+      .def("__len__", [](const SweepData& s) { return s.cases.size(); }, "The number of cases.")
       .def("run", &RunSweep, py::arg("out") = py::none(), py::arg("jobs") = 0, py::arg("quiet") = true,
            py::arg("max_work_factor") = 1.0, py::arg("progress") = py::none(),
            "Runs every case (jobs threads; 0: the machine's cores) and returns a camopt.Result: result.json\n"

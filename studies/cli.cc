@@ -316,9 +316,9 @@ int RunCommandLine(int argc, char** argv) {
         std::cout << k << "\n";
         continue;
       }
-      const auto schema = nlohmann::json::parse(camopt::studies::StudySchema(k), nullptr, false);
-      std::string what = schema.is_object() && schema.contains("title") && schema["title"].is_string()
-                             ? schema["title"].get<std::string>()
+      const auto declared = nlohmann::json::parse(camopt::studies::StudySchema(k), nullptr, false);
+      std::string what = declared.is_object() && declared.contains("title") && declared["title"].is_string()
+                             ? declared["title"].get<std::string>()
                              : "";
       const std::string prefix = "camopt study: ";
       if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());

@@ -422,6 +422,7 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
     ++not_ok_count;
   }
   summary["status_counts"] = counts;
+  summary["verdict"] = SweepVerdict(records);
   summary["cases_not_ok"] = not_ok;
   json vary = json::array(), outs = json::array();
   for (const Variation& v : s.vary) vary.push_back(v.path);
@@ -486,7 +487,7 @@ int Run(const Options& o, World& world) {
   fs::path out, partial;
   try {
     CheckWorkFactor(o.max_work_factor);
-    s = Parse(o.file, 1e6 * factor);
+    s = o.doc ? ParseJson(*o.doc, o.file, 1e6 * factor) : Parse(o.file, 1e6 * factor);
     if (o.case_outputs) s.case_outputs = true;
     cases = Cases(s);
     if (o.dry_run) {
@@ -496,7 +497,7 @@ int Run(const Options& o, World& world) {
     out = NormalOut(o.out);
     partial = PartialFolder(out);
     CheckReplaceable(out, o.out);
-    CheckNotInside(o.file, out.string(), "sweep file");
+    if (!o.doc) CheckNotInside(o.file, out.string(), "sweep file");
     if (s.study_file != o.file) CheckNotInside(s.study_file, out.string(), "base study");
   } catch (const StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,9 @@ std::string InterruptHint();
 /// The command line of `camopt sweep`.
 struct Options {
   std::string file, out;
+  /// The sweep's JSON when it is not read from `file` (the Python module's camopt.Sweep(dict)):
+  /// `file` then only names it in messages, and a relative base study is found beside that name.
+  std::optional<nlohmann::json> doc;
   int jobs = 0;  ///< threads per rank; 0: the cores of this machine shared among its ranks
   bool dry_run = false, resume = false, quiet = false, case_outputs = false;
   double max_work_factor = 1.0;

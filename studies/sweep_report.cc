@@ -96,6 +96,18 @@ std::vector<std::pair<std::string, std::string>> ParetoPlots(const Sweep& s, con
   return plots;
 }
 
+std::string SweepVerdict(const std::vector<CaseRecord>& records) {
+  std::map<std::string, size_t> counts;
+  for (const CaseRecord& r : records) ++counts[r.status];
+  const size_t ok = counts["ok"];
+  std::string verdict = ok == records.size()
+                            ? "All " + std::to_string(records.size()) + " cases ok"
+                            : std::to_string(ok) + " of " + std::to_string(records.size()) + " cases ok";
+  for (const char* status : {"incomplete", "error", "failed"})
+    if (counts[status] > 0) verdict += ", " + std::to_string(counts[status]) + " " + status;
+  return verdict;
+}
+
 std::string SweepHtml(const Sweep& s, const std::vector<std::vector<json>>& cases,
                       const std::vector<CaseRecord>& records, const std::vector<size_t>& front,
                       const std::vector<std::pair<std::string, std::string>>& plots) {
@@ -111,11 +123,7 @@ std::string SweepHtml(const Sweep& s, const std::vector<std::vector<json>>& case
      << "\n</style>\n</head>\n<body>\n";
   os << "<h1>" << HtmlEscape(s.name) << "</h1>\n<p class=\"meta\">camopt sweep of <code>"
      << HtmlEscape(Kind(s)) << "</code> studies · camopt " << HtmlEscape(CamoptVersion()) << "</p>\n";
-  std::string verdict = ok == records.size()
-                            ? "All " + std::to_string(records.size()) + " cases ok"
-                            : std::to_string(ok) + " of " + std::to_string(records.size()) + " cases ok";
-  for (const char* status : {"incomplete", "error", "failed"})
-    if (counts[status] > 0) verdict += ", " + std::to_string(counts[status]) + " " + status;
+  const std::string verdict = SweepVerdict(records);
   os << "<div class=\"verdict " << (ok == records.size() ? "ok" : "bad") << "\">" << HtmlEscape(verdict)
      << "</div>\n";
 

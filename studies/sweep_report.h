@@ -22,6 +22,10 @@ std::vector<std::pair<std::string, std::string>> ParetoPlots(const Sweep& sweep,
                                                              const std::vector<CaseRecord>& records,
                                                              const std::vector<size_t>& front);
 
+/// The verdict over the cases, one line: "All N cases ok" or "K of N cases ok", then the count of
+/// each other status ("…, 2 incomplete"). The report's headline and result.json's "verdict".
+std::string SweepVerdict(const std::vector<CaseRecord>& records);
+
 /// The sweep's report.html: the verdict over the cases, the design, the Pareto front (its cases
 /// and plots), the cases not ok and why, and every case's row. `records` sorted by case number;
 /// `plots` the SVG files to show inline.

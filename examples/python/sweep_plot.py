@@ -5,10 +5,10 @@ limit drawn as a line. Writes the plot to the file given (default lcr_ii_sweep.p
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/sweep_plot.py sweep.png
 """
+import argparse
 import copy
 import json
 import pathlib
-import sys
 
 import matplotlib
 
@@ -51,4 +51,6 @@ def main(out):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "lcr_ii_sweep.png")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("plot", nargs="?", default="lcr_ii_sweep.png", help="the plot file to write (default: %(default)s)")
+    main(parser.parse_args().plot)

@@ -22,6 +22,14 @@ class Example(unittest.TestCase):
         self.assertGreater(image.shape[0], 100)
         self.assertGreater(float(image.std()), 0.01)  # not a blank page
 
+    def test_help_is_help_not_a_plot_named_help(self):
+        d = helpers.temp_dir("py-example-help")
+        r = subprocess.run([sys.executable, str(helpers.SOURCE / "examples" / "python" / "sweep_plot.py"), "--help"],
+                           capture_output=True, text=True, cwd=d, env=dict(os.environ, MPLBACKEND="Agg"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("usage:", r.stdout)
+        self.assertEqual(list(d.iterdir()), [])  # no --help.png
+
 
 if __name__ == "__main__":
     unittest.main()

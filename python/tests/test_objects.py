@@ -3,6 +3,7 @@ StudyError, the model objects (camopt.Lcr, camopt.CycloidDrive) against the stud
 the stub camopt.pyi against the module."""
 import ast
 import json
+import os
 import math
 import unittest
 
@@ -139,7 +140,9 @@ class Sweeps(unittest.TestCase):
         }
         (d / "sweep.json").write_text(json.dumps(sweep))
         sw = camopt.Sweep.load(d / "sweep.json")
-        self.assertEqual(sw.cases, 3)
+        self.assertEqual(len(sw), 3)
+        self.assertEqual(sw.cases, [{"case": 0, "/load/output_torque_Nm": 50}, {"case": 1, "/load/output_torque_Nm": 100},
+                                    {"case": 2, "/load/output_torque_Nm": 150}])
         events = []
         r = sw.run(jobs=1, progress=events.append)
         self.assertIsNone(r.out)
@@ -151,6 +154,7 @@ class Sweeps(unittest.TestCase):
         one = camopt.run(helpers.with_change(helpers.small_lcr_ii(), "/load/output_torque_Nm", 100))
         self.assertAlmostEqual(stress[1], one["input_cam"]["max_contact_stress_MPa"], delta=1e-6 * stress[1])
         self.assertEqual(r.result["cases"], 3)
+        self.assertEqual(r.verdict, "All 3 cases ok")
         self.assertTrue(any(e.done for e in events))
         # With out=FOLDER the folder is kept, as `camopt sweep --out` leaves it.
         r2 = sw.run(out=d / "out", jobs=1)
@@ -161,6 +165,45 @@ class Sweeps(unittest.TestCase):
         with self.assertRaises(camopt.StudyError) as cm:
             camopt.Sweep.load(d / "bad.json")
         self.assertEqual(cm.exception.path, "/vary/0/path")
+
+    def test_a_sweep_from_a_dict(self):
+        # camopt.Sweep({...}) as camopt.Sweep.load of the same JSON: a relative base is found from
+        # the current folder, messages name "<dict>", and the cases are the table cases.csv numbers.
+        d = helpers.temp_dir("py-sweep-dict")
+        sweep = {
+            "sweep": "eccentricity and torque",
+            "base": "lcr_ii.json",
+            "set": {"/analysis": {"angle_steps": 180}},
+            "vary": [{"path": "/reducer/eccentricity_mm", "values": [1.9, 2.1]},
+                     {"path": "/load/output_torque_Nm", "values": [60, 90]}],
+            "outputs": ["/input_cam/max_contact_stress_MPa"],
+        }
+        here = os.getcwd()
+        os.chdir(helpers.EXAMPLES)
+        try:
+            sw = camopt.Sweep(sweep)
+            self.assertEqual(len(sw), 4)
+            self.assertEqual([(c["/reducer/eccentricity_mm"], c["/load/output_torque_Nm"]) for c in sw.cases],
+                             [(1.9, 60), (1.9, 90), (2.1, 60), (2.1, 90)])
+            r = sw.run(jobs=1)
+        finally:
+            os.chdir(here)
+        self.assertEqual(r.verdict, "All 4 cases ok")
+        self.assertEqual(list(r.tables["cases"]["case"]), [0, 1, 2, 3])
+        (d / "sweep.json").write_text(json.dumps(dict(sweep, base=str(helpers.EXAMPLES / "lcr_ii.json"))))
+        from_file = camopt.Sweep.load(d / "sweep.json").run(jobs=1)
+        self.assertEqual(list(r.tables["cases"]["/input_cam/max_contact_stress_MPa"]),
+                         list(from_file.tables["cases"]["/input_cam/max_contact_stress_MPa"]))
+        self.assertEqual(camopt.Sweep(d / "sweep.json").cases, sw.cases)  # a path works too
+        with self.assertRaises(camopt.StudyError) as cm:
+            camopt.Sweep(dict(sweep, base=str(helpers.EXAMPLES / "lcr_ii.json"),
+                              vary=[{"path": "/load/output_torque_Nm", "values": "many"}]))
+        self.assertEqual(cm.exception.path, "/vary/0/values")
+        self.assertIn("<dict>", str(cm.exception))
+        # Here (not the examples' folder) the relative base is not found: said at /base.
+        with self.assertRaises(camopt.StudyError) as cm:
+            camopt.Sweep(sweep)
+        self.assertEqual(cm.exception.path, "/base")
 
     def test_a_users_files_in_the_output_folder_are_kept_by_run_and_sweep(self):
         # The one output-folder rule of `camopt run` and `camopt sweep` holds for the module's
