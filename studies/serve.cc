@@ -461,10 +461,30 @@ class Studio {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       run->id = next_id_++;
-      runs_[run->id] = run;
     }
+    // The reader before the run is listed: a listed run always has a reader to join.
     run->reader = std::thread(ReadChild, run, fds[0]);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      runs_[run->id] = run;
+      ForgetOldRuns();
+    }
     return run;
+  }
+
+  // Beyond kMaxKeptRuns finished runs, the oldest are forgotten: their reader threads (done, or
+  // about to return: `finished` is their last step) joined, their entries removed. mutex_ held.
+  void ForgetOldRuns() {
+    std::vector<int> finished;
+    for (auto& [id, run] : runs_) {
+      std::lock_guard<std::mutex> run_lock(run->mutex);
+      if (run->finished) finished.push_back(id);
+    }
+    for (size_t k = 0; finished.size() - k > kMaxKeptRuns; ++k) {
+      const auto it = runs_.find(finished[k]);
+      if (it->second->reader.joinable()) it->second->reader.join();
+      runs_.erase(it);
+    }
   }
 
   std::shared_ptr<Run> Find(int id) {

@@ -51,6 +51,10 @@ inline constexpr size_t kMaxBodyBytes = size_t{1} << 20;
 /// Runs the studio keeps going at once; a run asked for beyond them is refused with 503 (each run
 /// is a `camopt run` process: unbounded, a client starting one per study starves the machine).
 inline constexpr size_t kMaxRunningRuns = 8;
+/// The finished runs the studio remembers (GET /api/runs, their events and results): the oldest
+/// beyond this are forgotten (their reader threads joined), so a studio left running for days does
+/// not grow with every run it ever made. Their output folders stay.
+inline constexpr size_t kMaxKeptRuns = 100;
 
 /// Runs the studio until the process is interrupted; prints "camopt studio: http://HOST:PORT/" on
 /// stdout once it listens. Returns 2 when the folder or the address cannot be used.

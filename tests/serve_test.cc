@@ -785,6 +785,40 @@ TEST(Serve, RunsBeyondTheCapAreRefusedWith503) {
   for (size_t k = 1; k < started.size(); ++k) FollowToEnd(studio, started[k]);
 }
 
+// A studio remembers at most kMaxKeptRuns finished runs: 110 quick runs (a study camopt refuses,
+// exit 2) leave the newest 100 listed, the oldest forgotten (404), the newest one still readable.
+TEST(Serve, OnlyTheNewestFinishedRunsAreRemembered) {
+  const fs::path dir = TempDir("serve-kept-runs");
+  WriteFile(dir / "bad.json", "{\"study\": \"lcr_analysis\"}");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  const size_t n = camopt::studies::kMaxKeptRuns + 10;
+  int last = 0;
+  for (size_t k = 0; k < n; ++k) {
+    auto res = c.Post("/api/runs", "{\"path\": \"bad.json\"}", "application/json");
+    ASSERT_TRUE(res);
+    ASSERT_EQ(res->status, 201) << res->body;
+    last = json::parse(res->body)["id"].get<int>();
+    const json end = FollowToEnd(studio, last);  // one output folder: one run at a time
+    EXPECT_EQ(end["exit_code"], 2) << end.dump();
+  }
+  // Forgetting happens at a start: the last start kept 100 finished runs and itself.
+  auto list = c.Get("/api/runs");
+  ASSERT_TRUE(list);
+  const json runs = json::parse(list->body);
+  ASSERT_TRUE(runs.is_array()) << list->body;
+  EXPECT_LE(runs.size(), camopt::studies::kMaxKeptRuns + 1);
+  EXPECT_GE(runs.size(), camopt::studies::kMaxKeptRuns);
+  auto first = c.Get("/api/runs/1");
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->status, 404);
+  auto newest = c.Get(("/api/runs/" + std::to_string(last)).c_str());
+  ASSERT_TRUE(newest);
+  EXPECT_EQ(newest->status, 200);
+  EXPECT_EQ(json::parse(newest->body)["state"], "error");
+}
+
 TEST(Serve, AClientThatDisconnectsMidRunCancelsItAndNothingIsLeft) {
   const fs::path dir = TempDir("serve-disconnect");
   // About 8 s on one core (its tolerance Monte Carlo reports progress all along).
