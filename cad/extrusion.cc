@@ -180,6 +180,19 @@ class StepData {
     Close();
     return id;
   }
+  // The knots of `segments` quadratic segments meeting at double knots: the multiplicities
+  // 3,2,…,2,3, then `between`, then the knot values 0.,1.,…,segments.
+  static void AppendQuadraticKnots(std::string& body, int segments, std::string_view between) {
+    body += '3';
+    for (int k = 1; k < segments; ++k) body += ",2";
+    body += ",3";
+    body += between;
+    for (int k = 0; k <= segments; ++k) {
+      if (k) body += ',';
+      const Real r(k);
+      body.append(r.c, size_t(r.n));
+    }
+  }
   // A rational quadratic B-spline curve (ISO 10303-42 complex instance) of `segments` segments
   // meeting at double knots, through the points `poles` with `weights`.
   int RationalQuadraticCurve(const std::vector<int>& poles, const std::vector<double>& weights, int segments) {
@@ -188,14 +201,8 @@ class StepData {
       if (i) body += ',';
       body += Ref(poles[i]);
     }
-    body += "),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS((3";
-    for (int k = 1; k < segments; ++k) body += ",2";
-    body += ",3),(";
-    for (int k = 0; k <= segments; ++k) {
-      if (k) body += ',';
-      const Real r(k);
-      body.append(r.c, size_t(r.n));
-    }
+    body += "),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS((";
+    AppendQuadraticKnots(body, segments, "),(");
     body += "),.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE((";
     for (size_t i = 0; i < weights.size(); ++i) {
       if (i) body += ',';
@@ -218,14 +225,8 @@ class StepData {
       body += Ref(polest[i]);
       body += ')';
     }
-    body += "),.UNSPECIFIED.,.F.,.F.,.F.) B_SPLINE_SURFACE_WITH_KNOTS((3";
-    for (int k = 1; k < segments; ++k) body += ",2";
-    body += ",3),(2,2),(";
-    for (int k = 0; k <= segments; ++k) {
-      if (k) body += ',';
-      const Real r(k);
-      body.append(r.c, size_t(r.n));
-    }
+    body += "),.UNSPECIFIED.,.F.,.F.,.F.) B_SPLINE_SURFACE_WITH_KNOTS((";
+    AppendQuadraticKnots(body, segments, "),(2,2),(");
     body += "),(0.,1.),.UNSPECIFIED.) GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE((";
     for (size_t i = 0; i < weights.size(); ++i) {
       if (i) body += ',';
