@@ -1,6 +1,7 @@
 #include "studies/study.h"
 
 #include <cerrno>
+#include <climits>
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -239,13 +240,24 @@ void CheckNotInside(const std::string& file, const std::string& out, const std::
                    "choose another --out (or copy the file out of it first)");
 }
 
+std::string SiblingPrefix(const fs::path& dir) {
+  std::string name = dir.filename().string();
+  constexpr size_t kSuffixRoom = 32;  // ".camopt-sweep-lock", ".camopt-tmp-" and a pid
+  if (name.size() + kSuffixRoom > NAME_MAX) {
+    size_t keep = NAME_MAX - kSuffixRoom;
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;  // a UTF-8 start
+    name.resize(keep);
+  }
+  return dir.has_parent_path() ? (dir.parent_path() / name).string() : name;
+}
+
 namespace {
 
 // Sibling folders `<dir>.camopt-tmp-<pid>` / `.camopt-old-<pid>` of runs that were killed
 // (SIGKILL leaves them: no handler runs) are removed when their process no longer exists.
 void RemoveStaleTemporaries(const fs::path& dir) {
   const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
-  const std::string stem = dir.filename().string();
+  const std::string stem = fs::path(SiblingPrefix(dir)).filename().string();
   // readdir and a compare of the raw names: a results folder beside thousands of others (a
   // sweep's, a shared /tmp) is listed at a few instructions per entry, not a path object each.
   DIR* d = opendir(parent.c_str());
@@ -300,7 +312,7 @@ OutputFolder::OutputFolder(const std::string& dir) {
   fs::create_directories(parent, ec);
   if (ec) throw StudyError("--out " + dir + ": cannot create " + parent.string() + ": " + ec.message());
   RemoveStaleTemporaries(out);
-  const std::string tmp = dir_ + ".camopt-tmp-" + std::to_string(getpid());
+  const std::string tmp = SiblingPrefix(out) + ".camopt-tmp-" + std::to_string(getpid());
   fs::remove_all(tmp, ec);  // left by an earlier process with the same id
   if (mkdir(tmp.c_str(), 0755) != 0) OutputFail("cannot create a folder next to it", dir, errno);
   std::lock_guard<std::mutex> lock(OutputMutex());
@@ -329,7 +341,7 @@ void MoveFolderIn(const std::string& tmp, const std::string& dir) {
     if (errno != ENOTEMPTY && errno != EEXIST) OutputFail("cannot move the results in", dir, errno);
     if (renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, dir.c_str(), RENAME_EXCHANGE) != 0) {
       // No exchange on this file system: move the old folder aside, then the new one in.
-      const std::string old = dir + ".camopt-old-" + std::to_string(getpid());
+      const std::string old = SiblingPrefix(dir) + ".camopt-old-" + std::to_string(getpid());
       if (rename(dir.c_str(), old.c_str()) != 0)
         OutputFail("cannot move the previous results aside", dir, errno);
       if (rename(tmp.c_str(), dir.c_str()) != 0) {

@@ -148,6 +148,12 @@ class StudyIncomplete : public std::runtime_error {
   RunAnswer answer_;
 };
 
+/// The path the siblings camopt makes beside an output folder `dir` start with (the temporary
+/// `.camopt-tmp-<pid>`, the set-aside `.camopt-old-<pid>`, a sweep's `.camopt-sweep` and its
+/// `-lock`): `dir` itself, its name cut (at a UTF-8 character's start) to leave 32 bytes within
+/// NAME_MAX, so that a folder name of up to 255 bytes can still take results.
+std::string SiblingPrefix(const std::filesystem::path& dir);
+
 /// The output folder of one run, filled all at once. The constructor checks that `dir` can take
 /// results and creates the sibling temporary folder `<dir>.camopt-tmp-<pid>` (so a bad --out is
 /// reported before any work, with the operating system's reason, as a StudyError: exit 2);

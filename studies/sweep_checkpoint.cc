@@ -41,7 +41,7 @@ void CheckReplaceable(const fs::path& out, const std::string& dir) {
                      "); choose a new or empty folder");
 }
 
-fs::path PartialFolder(const fs::path& out) { return out.string() + ".camopt-sweep"; }
+fs::path PartialFolder(const fs::path& out) { return SiblingPrefix(out) + ".camopt-sweep"; }
 
 std::string Fingerprint(const std::string& text) {
   uint64_t h = 14695981039346656037ull;
@@ -163,7 +163,7 @@ SweepLock::~SweepLock() {
 }
 
 void SweepLock::Take(const fs::path& out, const std::string& given) {
-  path_ = out.string() + ".camopt-sweep-lock";
+  path_ = SiblingPrefix(out) + ".camopt-sweep-lock";
   fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) throw StudyError("--out " + given + ": cannot create the lock " + path_ + ": " + std::strerror(errno));
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {

@@ -3,6 +3,7 @@
 // cap and the estimate, results that are not converged exit 3, the output folder replaced all at
 // once, interrupts, and byte-identical output for the same study.
 #include <cctype>
+#include <climits>
 #include <chrono>
 #include <cstring>
 #include <csignal>
@@ -596,6 +597,43 @@ TEST(Output, APreviousResultStaysUntilTheNewOneIsComplete) {
 // A previous result folder that also holds the user's files (the study file being run, notes) is
 // not replaced: before, camopt deleted them with the old result and exited 0. The folder keeps a
 // list of what camopt wrote (.camopt_manifest); only a folder of exactly those files is replaced.
+// An output folder whose name is as long as a name may be (255 bytes, a two-byte letter where the
+// siblings' prefix is cut) takes results, twice, and a sweep's: the siblings camopt makes beside it (its
+// temporary, the sweep's partial folder and lock) cut the name to leave room for their suffixes
+// (they were the name plus a suffix: "File name too long", exit 2, for any name above about 230).
+TEST(Output, AFolderNameOfTheLongestLengthTakesResults) {
+  const auto dir = TempDir("long-out");
+  std::string name(222, 'r');
+  for (int k = 0; k < 16; ++k) name += "\xc3\xa9";  // "é": the cut at 223 bytes falls inside one
+  name += "x";
+  ASSERT_EQ(name.size(), 255u);
+  const auto out = dir / name;
+  for (int k = 0; k < 2; ++k) {
+    const auto r = RunCamopt("run " + SourcePath("studies/examples/rigidity_gearbox.json") + " --quiet --out '" +
+                             out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+    EXPECT_TRUE(fs::exists(out / "result.json"));
+  }
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  EXPECT_EQ(names, std::vector<std::string>{name});  // nothing left beside it
+  // A sweep into a folder of the same length.
+  const json sweep = {{"sweep", "long"},
+                      {"base", SourcePath("studies/examples/rigidity_gearbox.json")},
+                      {"vary", {{{"path", "/load_torque_Nm"}, {"values", {40, 60}}}}},
+                      {"outputs", {"/rigidity_Nm_per_rad"}}};
+  WriteFile(dir / "s.json", sweep.dump());
+  const auto swept = dir / (std::string(255, 's'));
+  const auto r = RunCamopt("sweep " + (dir / "s.json").string() + " --quiet --out " + swept.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(swept / "cases.csv"));
+  // The siblings' names stay within NAME_MAX and start with the folder's name, cut at a character.
+  const std::string prefix = fs::path(camopt::studies::SiblingPrefix(out)).filename().string();
+  EXPECT_LE(prefix.size() + 32, size_t{NAME_MAX});
+  EXPECT_EQ(name.rfind(prefix, 0), 0u);
+  EXPECT_NE(static_cast<unsigned char>(name[prefix.size()]) & 0xC0, 0x80);
+}
+
 TEST(Output, UserFilesInAPreviousResultFolderAreNeverDeleted) {
   const auto dir = TempDir("user-files");
   const auto out = dir / "res";
