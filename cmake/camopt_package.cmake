@@ -42,7 +42,7 @@ endforeach()
 # written here from the built binary into share/camopt/schema/ (created first).
 install(DIRECTORY DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt/schema)
 install(CODE "
-  execute_process(COMMAND $<TARGET_FILE:camopt> kinds OUTPUT_VARIABLE camopt_kinds COMMAND_ERROR_IS_FATAL ANY)
+  execute_process(COMMAND $<TARGET_FILE:camopt> kinds --names OUTPUT_VARIABLE camopt_kinds COMMAND_ERROR_IS_FATAL ANY)
   string(REPLACE \"\\n\" \";\" camopt_kinds \"\${camopt_kinds}\")
   foreach(k \${camopt_kinds})
     if(k)
