@@ -39,7 +39,8 @@ inline constexpr double kPalmgrenMinViscositySpeed = 2000.0;
 template <typename T>
 T PalmgrenLoadIndependentMoment(const PalmgrenBearing& b, const T& nu, const T& n_rpm) {
   using std::cbrt;
-  const T nu_n = Value(nu * n_rpm) < kPalmgrenMinViscositySpeed ? T(kPalmgrenMinViscositySpeed) : nu * n_rpm;
+  const T nu_n = IfThenElse(Compare::kLess, nu * n_rpm, kPalmgrenMinViscositySpeed, T(kPalmgrenMinViscositySpeed),
+                            T(nu * n_rpm));
   const T dm = T(b.mean_diameter_mm);
   return T(1e-7 * b.f0) * cbrt(nu_n * nu_n) * dm * dm * dm;
 }

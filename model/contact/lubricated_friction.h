@@ -42,9 +42,10 @@ struct RegimeFriction {
 /// The quintic smoothstep s(x) = 6x⁵ − 15x⁴ + 10x³ on [0, 1] (0 below, 1 above): C² at both ends.
 template <typename T>
 T QuinticSmoothstep(const T& x) {
-  if (Value(x) <= 0.0) return T(0.0);
-  if (Value(x) >= 1.0) return T(1.0);
-  return x * x * x * (x * (x * T(6.0) - T(15.0)) + T(10.0));
+  // The pieces join with value and two derivatives (s(0) = 0, s(1) = 1, s' = s'' = 0 at both ends).
+  return IfThenElse(Compare::kLessEqual, x, 0.0, T(0.0),
+                    IfThenElse(Compare::kGreaterEqual, x, 1.0, T(1.0),
+                               T(x * x * x * (x * (x * T(6.0) - T(15.0)) + T(10.0)))));
 }
 
 /// The share of the load carried by asperity contact in the blend, 1 − s((λ − 1)/2): 1 in the
