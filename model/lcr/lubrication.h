@@ -1,0 +1,202 @@
+// The lobe cam reducer's losses from the lubricant up: per roller–cam contact the sliding and
+// entraining speeds, the EHL film and λ, the friction by regime, and the rolling bearings' losses,
+// summed into the power lost and the efficiency at one input angle (docs/lubrication.md).
+//
+// Kinematics in the cam frame (the file comment of life.h): the turret turns relative to the cam at
+// ψ' ω_in about the pitch point I, so a roller centre O moves at v_O = ψ' ρ ω_in, ρ = |I − O|, normal
+// to I − O. The contact point P = O + r_r d (d = unit(I − O)) follows the normal of the pitch curve,
+// which turns at κ v_O (κ the pitch curve's signed curvature, contact.h), so P runs along the cam at
+//     v_c = v_O (1 − r_r κ)                         (1/κ − r_r the cam's own radius at P).
+// A roller turning on its pin (needle-mounted) rolls on the cam without sliding: both surfaces
+// move at v_c relative to P, so
+//     v_s = 0,  u_e = |v_c|,  the roller turning at ψ' |ρ − r_r| / r_r relative to its pin.
+// A roller fixed in the turret is a point of the turret: P moves at ψ' (ρ − r_r) ω_in relative to
+// the cam (|I − P| = ρ − r_r), which is the sliding speed; relative to P its surface moves at
+// v_O (1 − r_r/ρ) − v_c and the cam's at −v_c, so
+//     v_s = ψ' |ρ − r_r| ω_in,  u_e = |v_O (1 + r_r/ρ − 2 r_r κ)| / 2.
+//
+// Losses at one angle (first order in the friction: the loads are those of the frictionless law,
+// forces.h or the compliant contacts, as the rest of the analysis uses them):
+//   sliding        μ(λ) F v_s per contact (model/contact/lubricated_friction.h), fixed rollers only;
+//   roller bearings Palmgren M0 + M1 (model/common/bearing_friction.h) at the roller's speed, every
+//                   roller of a turret turning (M0), its contact load as P1 (M1); rotating rollers only;
+//   eccentric       Palmgren at the eccentric bearing's speed n_A/m_A ω_in with |G| as P1.
+// The film: Pan & Hamrock's line-contact minimum film (model/contact/ehl.h) on R' = r_r (1 − r_r κ)
+// (the radius of the Hertz stress, forces.h) and w' = F / L, η0 at the oil's temperature. Not
+// modelled: the EHL rolling (Poiseuille) loss of the contacts and seal drag (stated in the results).
+// P_in = P_out + Σ losses defines the input power; the tests check the sliding speeds against the
+// bodies' rigid velocities and the losses against the statics with friction forces.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "model/common/bearing_friction.h"
+#include "model/common/lubricant.h"
+#include "model/contact/ehl.h"
+#include "model/contact/lubricated_friction.h"
+#include "model/lcr/contact.h"
+#include "model/lcr/life.h"
+
+namespace camopt::lcr {
+
+/// How the lubricated losses of an LCR are computed (model units).
+struct LubricationSpec {
+  Lubricant oil;
+  contact::RegimeFriction friction;
+  double composite_roughness_mm = 0.2e-3 * std::sqrt(2.0);  ///< σ = √(Rq_roller² + Rq_cam²)
+  bool rollers_rotate = true;  ///< needle-mounted rollers (rolling) or fixed ones (sliding)
+  PalmgrenBearing roller_bearing;     ///< every roller's bearing (rotating rollers)
+  PalmgrenBearing eccentric_bearing;  ///< the cam's bearing on the eccentric
+};
+
+/// The speeds of one roller–cam contact per unit input speed [mm per rad of input angle]; × ω_in
+/// [rad/s] gives mm/s.
+template <typename T>
+struct ContactSpeeds {
+  T sliding{};      ///< |v_s|
+  T entraining{};   ///< u_e = |u_roller + u_cam| / 2 relative to the contact point
+  T roller_spin{};  ///< the roller's speed relative to its pin per unit input speed [-] (0 when fixed)
+};
+
+/// The speeds at `contact`, a contact of side `s` of r (RollerContacts at the same angle).
+template <typename T>
+ContactSpeeds<T> RollerContactSpeeds(const Reducer<T>& r, Side s, const RollerContact<T>& contact, const T& theta,
+                                     bool rollers_rotate) {
+  using std::abs;
+  const T rr = r.side(s).roller_radius;
+  const T rho = (PitchPointOfCam(r, s, theta) - contact.centre).norm();
+  const T psi(std::abs((s == Side::kInput ? 0.0 : OutputSpeedRatio(r)) - CamSpeedRatio(r)));  // ψ'
+  const T v_o = psi * rho;
+  ContactSpeeds<T> out;
+  if (rollers_rotate) {
+    out.sliding = T(0.0);
+    out.entraining = abs(v_o * (T(1.0) - rr * contact.curvature));
+    out.roller_spin = psi * abs(rho - rr) / rr;
+  } else {
+    out.sliding = psi * abs(rho - rr);
+    out.entraining = abs(v_o * (T(1.0) + rr / rho - T(2.0) * rr * contact.curvature)) * T(0.5);
+    out.roller_spin = T(0.0);
+  }
+  return out;
+}
+
+/// The power lost at one input angle, by element [W].
+template <typename T>
+struct AngleLosses {
+  T sliding_input{}, sliding_output{};                ///< the fixed rollers' sliding on each cam
+  T roller_bearings_input{}, roller_bearings_output{};  ///< the rotating rollers' bearings
+  T eccentric_bearing{};
+  T min_lambda{};        ///< λ of the loaded contact with the thinnest film
+  int min_lambda_side = 0, min_lambda_roller = -1;  ///< 0 input, 1 output; roller index
+  T min_film_mm{};       ///< h_min there
+  T total() const {
+    return sliding_input + sliding_output + roller_bearings_input + roller_bearings_output + eccentric_bearing;
+  }
+};
+
+/// The losses at input angle θ under the frictionless loads `loads` (AnalyzeAngle with forces, or
+/// the compliant loads) at input speed n_in [rpm] and oil temperature t_oil [°C]. `e_star` is the
+/// material's E* [MPa]. Unloaded contacts carry no film (λ taken over the loaded ones).
+template <typename T>
+AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, double e_star,
+                             const std::vector<RollerContact<T>>& input_contacts, const std::vector<T>& input_force_N,
+                             const std::vector<RollerContact<T>>& output_contacts,
+                             const std::vector<T>& output_force_N, const T& eccentric_load_N, const T& theta,
+                             const T& input_speed_rpm, const T& oil_C) {
+  using std::abs;
+  AngleLosses<T> out;
+  const T omega = input_speed_rpm * T(2.0 * kPi / 60.0);  // rad/s
+  const T nu = spec.oil.KinematicViscosityAt(oil_C);
+  const T eta0 = spec.oil.DynamicViscosityAt(oil_C);
+  const T alpha(spec.oil.pressure_viscosity_per_MPa);
+  bool any = false;
+  for (int side = 0; side < 2; ++side) {
+    const Side s = side == 0 ? Side::kInput : Side::kOutput;
+    const auto& contacts = side == 0 ? input_contacts : output_contacts;
+    const auto& forces = side == 0 ? input_force_N : output_force_N;
+    const CamSide<T>& cam = r.side(s);
+    const T length = cam.contact_length();
+    T& sliding = side == 0 ? out.sliding_input : out.sliding_output;
+    T& bearings = side == 0 ? out.roller_bearings_input : out.roller_bearings_output;
+    for (size_t k = 0; k < contacts.size(); ++k) {
+      const ContactSpeeds<T> v = RollerContactSpeeds(r, s, contacts[k], theta, spec.rollers_rotate);
+      const T f = forces[k];
+      if (spec.rollers_rotate)
+        bearings += PalmgrenPowerLoss(spec.roller_bearing, nu, T(v.roller_spin * input_speed_rpm),
+                                      IfThenElse(Compare::kGreater, f, 0.0, f, T(0.0))) * T(1e-3);
+      if (!(Value(f) > 0.0)) continue;
+      const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * contacts[k].curvature);
+      const T u = v.entraining * omega;  // mm/s
+      // No entraining motion (or an undercut contact, r_eff ≤ 0): no film, boundary friction.
+      const T h = (Value(u) > 1e-12 && Value(r_eff) > 0.0)
+                      ? contact::LineContactFilm(eta0, u, r_eff, T(f / length), T(e_star), alpha).minimum
+                      : T(0.0);
+      const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
+      if (!any || Value(lambda) < Value(out.min_lambda)) {
+        out.min_lambda = lambda;
+        out.min_film_mm = h;
+        out.min_lambda_side = side;
+        out.min_lambda_roller = int(k);
+        any = true;
+      }
+      if (!spec.rollers_rotate)
+        sliding += contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f,
+                                        T(v.sliding * omega)) * T(1e-3);
+    }
+  }
+  const T n_ecc = input_speed_rpm * T(double(r.input.rollers) / r.input.lobes);
+  out.eccentric_bearing = PalmgrenPowerLoss(spec.eccentric_bearing, nu, n_ecc, eccentric_load_N) * T(1e-3);
+  return out;
+}
+
+/// The losses over an input revolution at one operating point.
+struct CycleLubrication {
+  AngleLosses<double> mean;         ///< each element's mean over the angles [W]; λ the cycle's least
+  double min_lambda_theta_rad = 0;  ///< the input angle of the least λ
+  double output_power_W = 0;        ///< T_o ω_o
+  double efficiency = 0;            ///< P_out / (P_out + mean loss); 0 without output torque
+  double kinematic_viscosity_mm2_s = 0;
+};
+
+/// The losses of r over `steps` equally spaced input angles at output torque `load.output_torque_Nmm`
+/// (the eccentric's μ of `load` plays no part: the eccentric bearing's loss is Palmgren's), input
+/// speed n_in [rpm] and oil temperature [°C], under the load model `model` (life.h LoadsAtAngle).
+/// @throws std::domain_error when a turret cannot carry the torque.
+inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material& material, LoadCase load,
+                                        LoadModel model, const LubricationSpec& spec, double input_speed_rpm,
+                                        double oil_C, int steps) {
+  CycleLubrication out;
+  const double e_star = material.composite_modulus_MPa();
+  load.friction_coefficient = 0.0;
+  bool first = true;
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2.0 * kPi * i / steps;
+    const LcrAngleLoads a = LoadsAtAngle(r, material, load, model, theta);
+    const AngleLosses<double> l =
+        LossesAtAngle(r, spec, e_star, RollerContacts(r, Side::kInput, theta), a.input_force_N,
+                      RollerContacts(r, Side::kOutput, theta), a.output_force_N, a.eccentric_load_N.norm(), theta,
+                      input_speed_rpm, oil_C);
+    out.mean.sliding_input += l.sliding_input / steps;
+    out.mean.sliding_output += l.sliding_output / steps;
+    out.mean.roller_bearings_input += l.roller_bearings_input / steps;
+    out.mean.roller_bearings_output += l.roller_bearings_output / steps;
+    out.mean.eccentric_bearing += l.eccentric_bearing / steps;
+    if (l.min_lambda_roller >= 0 && (first || l.min_lambda < out.mean.min_lambda)) {
+      out.mean.min_lambda = l.min_lambda;
+      out.mean.min_film_mm = l.min_film_mm;
+      out.mean.min_lambda_side = l.min_lambda_side;
+      out.mean.min_lambda_roller = l.min_lambda_roller;
+      out.min_lambda_theta_rad = theta;
+      first = false;
+    }
+  }
+  const double omega_out = input_speed_rpm * 2.0 * kPi / 60.0 * std::abs(OutputSpeedRatio(r));
+  out.output_power_W = load.output_torque_Nmm * 1e-3 * omega_out;
+  const double loss = out.mean.total();
+  out.efficiency = out.output_power_W > 0.0 ? out.output_power_W / (out.output_power_W + loss) : 0.0;
+  out.kinematic_viscosity_mm2_s = spec.oil.KinematicViscosityAt(oil_C);
+  return out;
+}
+
+}  // namespace camopt::lcr

@@ -1,0 +1,217 @@
+// The LCR's lubricated losses (model/lcr/lubrication.h): the contact speeds against the bodies' rigid
+// velocities, the power balance against the statics with friction forces, metamorphic relations
+// and derivatives against central differences.
+#include "model/lcr/lubrication.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "model/lcr/forces.h"
+#include "tests/reference_designs.h"
+#include "tests/test_util.h"
+
+namespace camopt::lcr {
+namespace {
+
+using testing::LcrII;
+using testing::Steel;
+
+// The velocities of the bodies per unit input speed, written from the mechanism alone: the cam's
+// centre rides the eccentric at e u(θ) and the cam turns at ω_c (eq. 1); the output turret turns
+// about the origin at ω_o (eq. 2), the input turret stands.
+struct Bodies {
+  Vec2<double> cam_centre, cam_centre_velocity;
+  double cam_rate, turret_rate;
+  Vec2<double> Cam(const Vec2<double>& p) const { return cam_centre_velocity + cam_rate * Perp(Vec2<double>(p - cam_centre)); }
+  Vec2<double> Turret(const Vec2<double>& p) const { return turret_rate * Perp(p); }
+};
+
+Bodies BodiesAt(const Reducer<double>& r, Side s, double theta) {
+  const Vec2<double> u = U(theta);
+  return {r.eccentricity * u, r.eccentricity * Perp(u), CamSpeedRatio(r), s == Side::kInput ? 0.0 : OutputSpeedRatio(r)};
+}
+
+TEST(LcrLubrication, ContactSpeedsAreThoseOfTheRigidBodies) {
+  const Reducer<double> r = LcrII();
+  int checked = 0;
+  for (double theta : {0.1, 0.77, 1.9, 3.3, 5.2})
+    for (Side s : {Side::kInput, Side::kOutput}) {
+      const Bodies b = BodiesAt(r, s, theta);
+      const auto contacts = RollerContacts(r, s, theta);
+      const double h = 1e-6;
+      const auto before = RollerContacts(r, s, theta - h), after = RollerContacts(r, s, theta + h);
+      const double rr = r.side(s).roller_radius;
+      for (size_t k = 0; k < contacts.size(); ++k) {
+        const Vec2<double> p = contacts[k].point, d = contacts[k].direction;
+        const Vec2<double> relative = b.Turret(p) - b.Cam(p);  // the turret's point P against the cam's
+        // Conjugate profiles: no relative motion along the normal.
+        EXPECT_NEAR(relative.dot(d), 0.0, 1e-9 * (1.0 + relative.norm()));
+        const ContactSpeeds<double> fixed = RollerContactSpeeds(r, s, contacts[k], theta, false);
+        EXPECT_NEAR(fixed.sliding, relative.norm(), 1e-9 * (1.0 + relative.norm())) << k;
+        // The contact point's own velocity (a central difference of its position), and the surfaces'
+        // velocities relative to it.
+        const Vec2<double> travel = (after[k].point - before[k].point) / (2 * h);
+        const Vec2<double> cam_surface = b.Cam(p) - travel;
+        const double tol = 1e-6 * (1.0 + travel.norm());
+        EXPECT_NEAR(fixed.entraining, 0.5 * (b.Turret(p) - travel + cam_surface).norm(), tol) << k;
+        // A rotating roller rolls: its surface at P moves with the cam's; its rate about its centre
+        // in the fixed frame, less the turret's, is its speed relative to its pin.
+        const ContactSpeeds<double> rolling = RollerContactSpeeds(r, s, contacts[k], theta, true);
+        EXPECT_EQ(rolling.sliding, 0.0);
+        EXPECT_NEAR(rolling.entraining, cam_surface.norm(), tol) << k;
+        const Vec2<double> o = contacts[k].centre;
+        const double roller_rate = (b.Cam(p) - b.Turret(o)).dot(Perp(d)) / rr;
+        EXPECT_NEAR(rolling.roller_spin, std::abs(roller_rate - b.turret_rate), 1e-9) << k;
+        ++checked;
+      }
+    }
+  EXPECT_EQ(checked, 5 * (13 + 15));
+}
+
+// Power balance: with fixed rollers and friction forces μ F at the contacts, the statics of the
+// cam and the output turret re-solved (the rollers' normal loads follow the law F = C |a| with the
+// two constants unknown), the input torque from the shaft's balance gives P_in − P_out equal to
+// Σ μ F v_s with the sliding speeds of the model, to rounding, at every sampled angle.
+TEST(LcrLubrication, InputLessOutputPowerIsTheSumOfTheSlidingLosses) {
+  const Reducer<double> r = LcrII();
+  const double mu = 0.08, torque = 80e3;  // N·mm
+  for (int i = 0; i < 24; ++i) {
+    const double theta = 2 * kPi * i / 24 + 0.013;
+    const Bodies bin = BodiesAt(r, Side::kInput, theta), bout = BodiesAt(r, Side::kOutput, theta);
+    const auto ca = RollerContacts(r, Side::kInput, theta), cb = RollerContacts(r, Side::kOutput, theta);
+    const double sa = LoadedArmSign(r, Side::kInput), sb = LoadedArmSign(r, Side::kOutput);
+    // Per unit C on a side: the force on the cam from every loaded roller, and its moment about the
+    // cam's centre; for the output side also the moment about the origin of the force on the turret.
+    struct Unit {
+      Vec2<double> force{0, 0};
+      double cam_moment = 0, turret_moment = 0, sliding_loss = 0;
+    };
+    const auto unit = [&](const std::vector<RollerContact<double>>& c, double sign, const Bodies& b, Side s) {
+      Unit out;
+      for (const auto& k : c) {
+        const double f = std::max(sign * k.arm, 0.0);
+        if (f <= 0.0) continue;
+        const Vec2<double> rel = b.Turret(k.point) - b.Cam(k.point);
+        const Vec2<double> on_cam = f * (k.direction + mu * rel / rel.norm());
+        out.force += on_cam;
+        out.cam_moment += Cross(Vec2<double>(k.point - b.cam_centre), on_cam);
+        out.turret_moment += Cross(k.point, Vec2<double>(-on_cam));
+        out.sliding_loss += mu * f * RollerContactSpeeds(r, s, k, theta, false).sliding;
+      }
+      return out;
+    };
+    const Unit a = unit(ca, sa, bin, Side::kInput), b = unit(cb, sb, bout, Side::kOutput);
+    // Output turret: C_B · turret_moment drives it against T_o (the sign of its motion, which gives a
+    // positive output power); cam: C_A a.cam_moment + C_B b.cam_moment = 0.
+    const double w_o = OutputSpeedRatio(r);
+    const double c_b = torque * (w_o > 0 ? 1.0 : -1.0) / b.turret_moment;
+    ASSERT_GT(c_b, 0.0);
+    const double c_a = -c_b * b.cam_moment / a.cam_moment;
+    ASSERT_GT(c_a, 0.0);
+    const Vec2<double> g = c_a * a.force + c_b * b.force;          // the cam's push on the eccentric
+    const double t_in = -Cross(bin.cam_centre, g);                  // the shaft's balance
+    const double p_out = torque * std::abs(w_o);                    // per unit input speed
+    const double losses = c_a * a.sliding_loss + c_b * b.sliding_loss;
+    EXPECT_NEAR(t_in - p_out, losses, 1e-9 * t_in) << theta;
+    // And without friction the balance is the frictionless one.
+    EXPECT_GT(losses, 0.0);
+  }
+}
+
+LubricationSpec Spec(bool rotate) {
+  LubricationSpec s;
+  s.rollers_rotate = rotate;
+  s.roller_bearing = {2.0, 0.0005, 8.0};
+  s.eccentric_bearing = {2.0, 0.0005, 40.0};
+  return s;
+}
+
+TEST(LcrLubrication, NoFrictionGivesEfficiencyOne) {
+  const Reducer<double> r = LcrII();
+  LoadCase load;
+  load.output_torque_Nmm = 80e3;
+  for (bool rotate : {true, false}) {
+    LubricationSpec s = Spec(rotate);
+    s.friction = {0.0, 0.0};
+    s.roller_bearing.f0 = s.roller_bearing.f1 = s.eccentric_bearing.f0 = s.eccentric_bearing.f1 = 0.0;
+    const CycleLubrication c = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, s, 1500.0, 60.0, 90);
+    EXPECT_EQ(c.mean.total(), 0.0);
+    EXPECT_EQ(c.efficiency, 1.0);
+    // With friction the efficiency falls below one.
+    const CycleLubrication f = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, Spec(rotate), 1500.0, 60.0, 90);
+    EXPECT_LT(f.efficiency, 1.0);
+    EXPECT_GT(f.efficiency, 0.0);
+  }
+}
+
+TEST(LcrLubrication, AThickerOilRaisesLambdaAndLowersTheSlidingLoss) {
+  const Reducer<double> r = LcrII();
+  LoadCase load;
+  load.output_torque_Nmm = 80e3;
+  double lambda = 0, sliding = 1e300;
+  for (double nu40 : {32.0, 68.0, 150.0, 320.0}) {
+    LubricationSpec s = Spec(false);
+    s.oil.nu40_mm2_s = nu40;
+    s.oil.nu100_mm2_s = nu40 / 8.0;
+    s.composite_roughness_mm = 0.03e-3;  // finely finished: the band 1 < λ < 3 is crossed
+    const CycleLubrication c = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, s, 1500.0, 60.0, 60);
+    EXPECT_GT(c.mean.min_lambda, lambda) << nu40;
+    EXPECT_LE(c.mean.sliding_input + c.mean.sliding_output, sliding) << nu40;
+    lambda = c.mean.min_lambda;
+    sliding = c.mean.sliding_input + c.mean.sliding_output;
+  }
+}
+
+// At a fixed temperature, doubling the speed doubles a loss of speed-independent friction: the
+// sliding loss in the boundary regime (rough surfaces: μ = μ_b at every contact) and Palmgren's M1
+// part; M0's power grows as n^(5/3) (νn above 2000).
+TEST(LcrLubrication, DoublingTheSpeedScalesTheLossesAsTheLawsSay) {
+  const Reducer<double> r = LcrII();
+  LoadCase load;
+  load.output_torque_Nmm = 80e3;
+  LubricationSpec s = Spec(false);
+  s.composite_roughness_mm = 100e-3;  // λ ≪ 1 everywhere
+  s.eccentric_bearing.f0 = 0.0;
+  const auto at = [&](double n) { return LubricatedCycle(r, Steel(), load, LoadModel::kRigid, s, n, 60.0, 60); };
+  const CycleLubrication one = at(1000.0), two = at(2000.0);
+  EXPECT_LT(two.mean.min_lambda, 1.0);
+  EXPECT_NEAR(two.mean.sliding_input, 2 * one.mean.sliding_input, 1e-12 * two.mean.sliding_input);
+  EXPECT_NEAR(two.mean.sliding_output, 2 * one.mean.sliding_output, 1e-12 * two.mean.sliding_output);
+  EXPECT_NEAR(two.mean.eccentric_bearing, 2 * one.mean.eccentric_bearing, 1e-12 * two.mean.eccentric_bearing);
+  LubricationSpec m0 = Spec(true);
+  m0.roller_bearing.f1 = m0.eccentric_bearing.f1 = 0.0;
+  const auto rolling = [&](double n) { return LubricatedCycle(r, Steel(), load, LoadModel::kRigid, m0, n, 60.0, 30); };
+  // (The slowest roller turns at 0.069 of the input speed: at 28.5 mm²/s, νn ≥ 2000 from 1020 rpm.)
+  const double p1 = rolling(2000.0).mean.total(), p2 = rolling(4000.0).mean.total();
+  EXPECT_NEAR(p2 / p1, std::pow(2.0, 5.0 / 3.0), 1e-12);
+}
+
+// ∂(min λ, loss)/∂(e, oil temperature) at one angle against central differences.
+TEST(LcrLubrication, DerivativesMatchCentralDifferences) {
+  for (bool rotate : {true, false}) {
+    const LubricationSpec s = [&] {
+      LubricationSpec x = Spec(rotate);
+      x.composite_roughness_mm = 0.15e-3;  // the mixed band, where μ depends on λ
+      return x;
+    }();
+    const auto f = [&](const auto& x) {
+      using T = std::decay_t<decltype(x[0])>;
+      Reducer<T> r = LcrII().template cast<T>();
+      r.eccentricity = x[0];
+      LoadCase load;
+      load.output_torque_Nmm = 80e3;
+      const T theta(0.4);
+      const AngleLoads<T> a = AnalyzeAngle(r, Steel(), load, theta, {true, false, true});
+      const AngleLosses<T> l = LossesAtAngle(r, s, Steel().composite_modulus_MPa(), a.input.contacts, a.input.force,
+                                             a.output.contacts, a.output.force, T(a.eccentric_load.norm()), theta,
+                                             T(1500.0), x[1]);
+      return std::vector<T>{l.min_lambda, l.total()};
+    };
+    testing::ExpectJacobianMatchesCentralDifferences<2>(f, {2.0, 55.0});
+  }
+}
+
+}  // namespace
+}  // namespace camopt::lcr
