@@ -97,6 +97,43 @@ void ParseTolerances(const Node& root, const Input& in, Study& s) {
   s.tolerances = spec;
 }
 
+// "lubricant" and its blocks (docs/lubrication.md): the common part (studies/lubrication_input.h),
+// the output mechanism whose pins carry the torque out, and the cycloid's bearings.
+std::optional<Study::Lubrication> ParseLubrication(const Node& root, const Input& in, const Study& s) {
+  const std::optional<double> speed = in.load ? in.load->input_speed_rpm : std::nullopt;
+  const std::optional<LubricationCommon> common =
+      ParseLubricationCommon(root, in.lubricant, in.surfaces, in.efficiency_map, speed, root.Has("duty_cycle"));
+  if (!common) return std::nullopt;
+  const Node node = root["lubricant"];
+  if (!s.loaded) node.FailWith("the lubricated losses need the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
+  if (!root.Has("output_mechanism"))
+    node.FailWith("the lubricated losses need \"output_mechanism\" (its pins carry the torque out and load the crank "
+                  "bearing): give at least pin_circle_radius_mm");
+  if (!cycloid::UniformWholeMeshPeriods(s.crank_angles_rad, s.drive.rollers))
+    node.FailWith("the lubricated losses need crank angles that sample whole mesh periods (360/" +
+                  std::to_string(s.drive.rollers) + " deg) uniformly (the losses are averaged over the revolution): "
+                  "use analysis.crank_angles_per_mesh_period");
+  Study::Lubrication l;
+  l.common = *common;
+  l.spec.oil = common->oil;
+  l.spec.friction = common->friction;
+  l.spec.composite_roughness_mm = common->composite_roughness_mm;
+  l.spec.ring_pins_rotate = common->rollers_rotate;
+  l.mechanism = cycloid_common::ParseOutputMechanism(root["output_mechanism"], s.drive, true);
+  if (s.output) {
+    const cycloid::OutputPins& p = s.output->pins;
+    l.pins = cycloid::OutputPinContact{p.pin_radius_mm, p.hole_radius_mm, p.roller_radius_mm};
+  }
+  const CycloidBearingFrictionInput bearings = in.bearing_friction.value_or(CycloidBearingFrictionInput{});
+  l.ring_pins_given = bearings.ring_pins.has_value();
+  l.output_rollers_given = bearings.output_rollers.has_value();
+  l.crank_given = bearings.crank.has_value();
+  if (bearings.ring_pins) l.spec.ring_pin_bearing = bearings.ring_pins->ToBearing();
+  if (bearings.output_rollers) l.spec.output_roller_bearing = bearings.output_rollers->ToBearing();
+  if (bearings.crank) l.spec.crank_bearing = bearings.crank->ToBearing();
+  return l;
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
@@ -174,6 +211,7 @@ Study Parse(const Node& root) {
                   " deg) uniformly (the bearings' loads are averaged over their periods): use "
                   "analysis.crank_angles_per_mesh_period");
   }
+  s.lubrication = ParseLubrication(root, in, s);
   return s;
 }
 
@@ -183,7 +221,8 @@ nlohmann::ordered_json Input::SchemaRules() {
   // and the loaded stage, and not both forms of the speed; the compliant output mechanism and the
   // torsional curve the loaded stage.
   // Tolerances: one disc; the output pins' and holes' bands need the output mechanism's radii.
-  return nlohmann::ordered_json::parse(R"({"dependentRequired": {"monte_carlo": ["tolerances"]}, "allOf": [
+  // The lubricated losses (docs/lubrication.md): the output mechanism and the loaded stage.
+  nlohmann::ordered_json rules = nlohmann::ordered_json::parse(R"({"dependentRequired": {"monte_carlo": ["tolerances"]}, "allOf": [
     {"if": {"required": ["tolerances"]}, "then": {"properties": {"discs": {"maximum": 1}}}},
     {"if": {"required": ["tolerances"],
             "properties": {"tolerances": {"anyOf": [{"required": ["output_pin_position_um"]},
@@ -206,8 +245,13 @@ nlohmann::ordered_json Input::SchemaRules() {
               "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
     {"if": {"required": ["stiffness"]},
      "then": {"required": ["material", "load"],
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
+    {"if": {"required": ["lubricant"]},
+     "then": {"required": ["output_mechanism"],
               "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}}
   ]})");
+  AddLubricationSchemaRules(rules);
+  return rules;
 }
 
 namespace {
@@ -469,6 +513,127 @@ void RunOutputMechanism(const Study& s, Result& r) {
 
 }  // namespace
 
+namespace {
+
+// The losses of the drive (every disc alike: N times one disc's mean over whole mesh periods) over
+// the solved meshes `loads`, at an operating point: the oil temperature given or from the housing's
+// balance, then the losses at it.
+struct LubricatedPoint {
+  OilTemperature oil;
+  cycloid::CycloidAngleLosses mean;  ///< the drive's mean loss per element [W]; the thinnest film
+  double min_lambda_crank_rad = 0;
+  double sampling_error_W = 0;       ///< |mean − mean over every other angle|
+};
+LubricatedPoint LubricatedAt(const Study& s, const std::vector<cycloid::MeshLubricationLoads>& loads, double speed) {
+  const Study::Lubrication& l = *s.lubrication;
+  const double e_star = s.material.composite_modulus_MPa();
+  LubricatedPoint p;
+  const auto at = [&](double t, LubricatedPoint* fill) {
+    cycloid::CycloidAngleLosses mean;
+    double even = 0.0;
+    size_t evens = 0;
+    const double n = double(loads.size()), discs = double(s.discs);
+    for (size_t k = 0; k < loads.size(); ++k) {
+      const cycloid::CycloidAngleLosses x =
+          cycloid::LossesAtCrankAngle(s.drive, l.spec, e_star, loads[k], l.pins, speed, t);
+      mean.ring_pins_sliding += discs * x.ring_pins_sliding / n;
+      mean.ring_pin_bearings += discs * x.ring_pin_bearings / n;
+      mean.output_pins_sliding += discs * x.output_pins_sliding / n;
+      mean.output_roller_bearings += discs * x.output_roller_bearings / n;
+      mean.crank_bearing += discs * x.crank_bearing / n;
+      if (k % 2 == 0) even += discs * x.total(), ++evens;
+      if (fill && x.min_lambda_pin >= 0 && (mean.min_lambda_pin < 0 || x.min_lambda < mean.min_lambda)) {
+        mean.min_lambda = x.min_lambda;
+        mean.min_film_mm = x.min_film_mm;
+        mean.min_lambda_pin = x.min_lambda_pin;
+        mean.min_at_output_pin = x.min_at_output_pin;
+        fill->min_lambda_crank_rad = loads[k].crank_angle_rad;
+      }
+    }
+    if (fill) {
+      fill->mean = mean;
+      fill->sampling_error_W = evens > 0 ? std::abs(mean.total() - even / double(evens)) : 0.0;
+    }
+    return mean.total();
+  };
+  p.oil = SolveOilTemperature(l.common, [&](double t) { return at(t, nullptr); });
+  at(p.oil.celsius, &p);
+  return p;
+}
+
+std::vector<cycloid::MeshLubricationLoads> LubricationLoads(const Study& s, const std::vector<MeshLoad>& meshes,
+                                                           double disc_torque_Nmm) {
+  return cycloid::LubricationLoadsOverRevolution(s.drive, s.lubrication->mechanism, meshes, disc_torque_Nmm);
+}
+
+void RunLubrication(const Study& s, const RunContext& ctx, Result& r) {
+  const Study::Lubrication& l = *s.lubrication;
+  const double speed = l.common.input_speed_rpm;
+  const double output_power = s.torque_Nm * speed * 2 * kPi / 60 / s.drive.teeth;
+  const LubricatedPoint p = LubricatedAt(s, LubricationLoads(s, r.cycle.meshes, s.disc_torque_Nmm()), speed);
+  if (!p.oil.found()) {
+    r.lubrication_error = "no thermal equilibrium: " + p.oil.thermal->why;
+  } else {
+    LubricationResult out = CommonLubricationResult(l.common, p.oil, s.torque_Nm, output_power, p.mean.total());
+    out.power_loss_W.ring_pins_sliding = p.mean.ring_pins_sliding;
+    out.power_loss_W.ring_pin_bearings = p.mean.ring_pin_bearings;
+    out.power_loss_W.output_pins_sliding = p.mean.output_pins_sliding;
+    out.power_loss_W.output_roller_bearings = p.mean.output_roller_bearings;
+    out.power_loss_W.crank_bearing = p.mean.crank_bearing;
+    out.power_loss_sampling_error_W = p.sampling_error_W;
+    if (p.mean.min_lambda_pin >= 0)
+      out.min_film_lambda = {p.mean.min_lambda, p.mean.min_film_mm * 1e3, p.min_lambda_crank_rad * 180 / kPi,
+                             p.mean.min_at_output_pin ? "output pin" : "ring pin", RegimeName(p.mean.min_lambda),
+                             p.mean.min_lambda_pin};
+    // No load: the ring pins and output pins carry nothing; the bearings' M0 remains.
+    std::vector<MeshLoad> idle(r.cycle.meshes.size());
+    for (size_t k = 0; k < idle.size(); ++k) idle[k].crank_angle_rad = r.cycle.meshes[k].crank_angle_rad;
+    const LubricatedPoint none = [&] {
+      Study::Lubrication fixed = l;
+      fixed.common.temperature_C = p.oil.celsius;  // the same oil temperature
+      Study at = s;
+      at.lubrication = fixed;
+      return LubricatedAt(at, LubricationLoads(at, idle, 0.0), speed);
+    }();
+    out.no_load_running_torque_Nm = none.mean.total() / (speed * 2 * kPi / 60);
+    if (!l.pins) out.not_modelled.push_back("the output pins' contacts (no output_mechanism pin and hole radii)");
+    if (l.spec.ring_pins_rotate && !l.ring_pins_given)
+      out.not_modelled.push_back("the ring pins' bearings (no bearing_friction.ring_pins)");
+    if (l.pins && l.pins->roller_radius_mm > 0 && !l.output_rollers_given)
+      out.not_modelled.push_back("the output rollers' bearings (no bearing_friction.output_rollers)");
+    if (!l.crank_given) out.not_modelled.push_back("the crank bearing (no bearing_friction.crank)");
+    for (double v : {out.efficiency, out.oil_temperature_C, out.power_loss_W.total, out.no_load_running_torque_Nm})
+      Finite(v, "lubrication");
+    r.lubrication = out;
+  }
+  if (l.common.map) {
+    // One loaded cycle per torque (the study's crank angles, its grid), every speed on it.
+    Progress progress("cycloid_ltca efficiency map", ctx.quiet);
+    LoadedOptions options = s.options;
+    options.keep_pressure = false;
+    options.crank_slope = false;
+    const LoadedTca tca(s.drive, s.crowning, s.material, options);
+    size_t done = 0;
+    const size_t total = l.common.map->torque_Nm.size() * l.common.map->speed_rpm.size();
+    for (double torque : l.common.map->torque_Nm) {
+      const double disc_torque = torque * 1000.0 / s.discs;
+      const CycleResult cycle = RunCycle(tca, disc_torque, s.crank_angles_rad, {});
+      const std::vector<cycloid::MeshLubricationLoads> loads = LubricationLoads(s, cycle.meshes, disc_torque);
+      for (double n : l.common.map->speed_rpm) {
+        const LubricatedPoint m = LubricatedAt(s, loads, n);
+        const double power = torque * n * 2 * kPi / 60 / s.drive.teeth;
+        r.efficiency_map.push_back({torque, n, power > 0 ? power / (power + m.mean.total()) : 0.0, m.mean.total(),
+                                    m.oil.celsius, m.mean.min_lambda_pin >= 0 ? m.mean.min_lambda : 0.0,
+                                    m.oil.found() ? 1.0 : 0.0});
+        progress.Update(double(++done) / double(total), std::to_string(total) + " operating points");
+      }
+    }
+    progress.Done();
+  }
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   if (s.loaded) {
@@ -555,6 +720,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     const LoadedTca tca(s.drive, s.crowning, s.material, options);
     r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.disc_torque_Nmm(), &r.cycle.meshes);
   }
+  if (s.lubrication) RunLubrication(s, ctx, r);
   if (s.tolerances) {
     // The kinematic transmission error from the tolerances (model/cycloid/transmission_error.h).
     const Study::ToleranceSpec& t = *s.tolerances;
@@ -882,6 +1048,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (o.pins.roller_radius_mm > 0) om["roller_radius_mm"] = o.pins.roller_radius_mm;
     j["output_mechanism"] = om;
   }
+  if (r.lubrication) j["lubrication"] = WriteJson(*r.lubrication);
+  else if (s.lubrication) j["lubrication"] = {{"error", r.lubrication_error}};
   return j;
 }
 
@@ -972,6 +1140,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   const int n1 = s.drive.rollers;
   const size_t n = r.crank_angles_rad.size();
   out.AddJson("result.json", ToJson(s, r));
+  if (!r.efficiency_map.empty()) WriteEfficiencyMap(r.efficiency_map, s.lubrication->common.map->torque_Nm, out);
 
   Table table;
   std::vector<double> col_angle, col_lte, col_ute, col_gr, col_p, col_pairs;
@@ -1123,7 +1292,7 @@ const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_ltca", EstimateWo
 
 namespace {
 // report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("cycloid_ltca", {
+CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
     {"largest contact stress", "/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa", NAN, true,
      "/estimated_error/max_contact_stress_MPa"},
     {"at crank angle", "/max_contact_stress_crank_angle_deg", "deg"},
@@ -1148,7 +1317,7 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", {
     {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
     {"ring pin life L10h", "/life/pins_L10h", "h"},
     {"converged", "/converged", ""},
-});
+})));
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

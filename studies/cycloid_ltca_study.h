@@ -20,7 +20,9 @@
 #include "model/cycloid/output_mechanism.h"
 #include "model/cycloid/stiffness.h"
 #include "model/cycloid/transmission_error.h"
+#include "model/cycloid/lubrication.h"
 #include "studies/archive.h"
+#include "studies/lubrication_input.h"
 #include "studies/cycloid_input.h"
 #include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
@@ -101,7 +103,7 @@ struct Input {
       a->Visit("crank_angle_deg", &crank_angle_deg, Field().Unit("deg").Desc("the crank angle held (absent: 0)"));
     }
   };
-  struct Limits {
+  struct Limits : LubricationLimitsInput {
     std::optional<double> contact_stress_MPa, roller_load_N, output_pin_stress_MPa, output_pin_contact_pressure_MPa,
         eccentric_bearing_load_N;
     double min_profile_radius_mm = 0, min_pin_gap_mm = 0;
@@ -123,6 +125,7 @@ struct Input {
       a->Visit("min_pin_gap_mm", &min_pin_gap_mm,
                Field().NonNegative().Unit("mm").Desc(
                    "clearance between neighbouring pins, 2 a sin(pi/(z + 1)) - 2 rho (0: they do not overlap)"));
+      VisitLubricationLimits(a);
     }
   };
 
@@ -179,6 +182,10 @@ struct Input {
   std::optional<Stiffness> stiffness;
   std::optional<Tolerances> tolerances;
   std::optional<MonteCarlo> monte_carlo;
+  std::optional<LubricantInput> lubricant;
+  std::optional<SurfacesInput> surfaces;
+  std::optional<CycloidBearingFrictionInput> bearing_friction;
+  std::optional<EfficiencyMapInput> efficiency_map;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -220,6 +227,17 @@ struct Input {
              Field().Desc("± tolerance bands: the kinematic transmission error and backlash, linear and Monte-Carlo "
                           "(docs/cycloid.md, Transmission error from tolerances); one disc"));
     a->Visit("monte_carlo", &monte_carlo, Field().Desc("the Monte-Carlo of the transmission error (with tolerances)"));
+    a->Visit("lubricant", &lubricant,
+             Field().Desc("the oil: the lubricated losses, efficiency and oil temperature (docs/lubrication.md; needs "
+                          "load.input_speed_rpm and output_mechanism)"));
+    a->Visit("surfaces", &surfaces,
+             Field().Desc("roughness, friction by regime and the ring pins' mounting (with lubricant)"));
+    a->Visit("bearing_friction", &bearing_friction,
+             Field().Desc("Palmgren's factors of the ring pins', output rollers' and crank bearings (with lubricant; a "
+                          "bearing not given adds no loss and is listed as not modelled)"));
+    a->Visit("efficiency_map", &efficiency_map,
+             Field().Desc("efficiency_map.csv: efficiency, loss and oil temperature over torques × speeds (with "
+                          "lubricant; one loaded cycle per torque)"));
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
@@ -272,6 +290,15 @@ struct Study {
   /// The torque on each disc [N·mm]: load.torque_Nm (the output torque) over the discs (equal split
   /// of identical discs).
   double disc_torque_Nmm() const { return torque_Nm * 1000.0 / discs; }
+  /// "lubricant" (docs/lubrication.md): the lubricated losses at the load's torque and speed.
+  struct Lubrication {
+    LubricationCommon common;
+    cycloid::CycloidLubricationSpec spec;
+    cycloid::OutputMechanism mechanism;                  ///< the rigid pins' forces
+    std::optional<cycloid::OutputPinContact> pins;       ///< with the pins' and holes' radii
+    bool ring_pins_given = false, output_rollers_given = false, crank_given = false;
+  };
+  std::optional<Lubrication> lubrication;
 };
 
 using cycloid_common::ElementLife;
@@ -310,6 +337,11 @@ struct Result {
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
   PlanarCamFit tooth_files;  ///< the disc's geometry files (arcs of the modified profile)
   std::optional<LifeResult> life;
+  std::optional<LubricationResult> lubrication;  ///< with "lubricant"
+  std::string lubrication_error;                 ///< why it is absent (no thermal equilibrium)
+  /// efficiency_map.csv's rows (as lcr_analysis's): torque, speed, efficiency, loss, oil
+  /// temperature, λ, and 1 where the housing's balance has an equilibrium.
+  std::vector<std::array<double, 7>> efficiency_map;
   /// The output mechanism over the crank bearing's load period (output_angles_rad), per disc k:
   /// the disc's own solve at its crank angle φ + 2πk/N.
   struct DiscSample {

@@ -382,6 +382,104 @@ LifeResult RunLife(const Study& st, const std::string& file) {
   return out;
 }
 
+// "lubricant" and its blocks (docs/lubrication.md): the common part (studies/lubrication_input.h)
+// and the LCR's bearings.
+std::optional<Study::Lubrication> ParseLubrication(const Input& in, const Node& root) {
+  const std::optional<double> speed = in.load ? in.load->input_speed_rpm : std::nullopt;
+  std::optional<LubricationCommon> common = ParseLubricationCommon(root, in.lubricant, in.surfaces, in.efficiency_map,
+                                                                   speed, !in.duty_cycle.is_null());
+  if (!common) return std::nullopt;
+  Study::Lubrication l;
+  l.common = *common;
+  l.spec.oil = common->oil;
+  l.spec.friction = common->friction;
+  l.spec.composite_roughness_mm = common->composite_roughness_mm;
+  l.spec.rollers_rotate = common->rollers_rotate;
+  const LcrBearingFrictionInput bearings = in.bearing_friction.value_or(LcrBearingFrictionInput{});
+  l.rollers_bearing_given = bearings.rollers.has_value();
+  l.eccentric_bearing_given = bearings.eccentric.has_value();
+  l.spec.roller_bearing = bearings.rollers ? bearings.rollers->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
+  l.spec.eccentric_bearing = bearings.eccentric ? bearings.eccentric->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
+  return l;
+}
+
+// The lubricated losses at an operating point: the oil temperature given or from the housing's heat
+// balance, then the losses at it.
+struct OperatingPoint {
+  OilTemperature oil;
+  lcr::CycleLubrication cycle;
+};
+OperatingPoint LubricatedPoint(const Study& st, const lcr::CycleLoads& loads, double speed_rpm) {
+  const Study::Lubrication& l = *st.lubrication;
+  const auto at = [&](double t) { return lcr::LubricatedCycle(st.reducer, st.material, loads, l.spec, speed_rpm, t); };
+  OperatingPoint p;
+  p.oil = SolveOilTemperature(l.common, [&](double t) { return at(t).mean.total(); });
+  p.cycle = at(p.oil.celsius);
+  return p;
+}
+
+void RunLubrication(const Study& st, const RunContext& ctx, Result& res) {
+  const Study::Lubrication& l = *st.lubrication;
+  const lcr::Reducer<double>& r = st.reducer;
+  const double speed = l.common.input_speed_rpm;
+  Progress progress("lcr_analysis lubrication", ctx.quiet);
+  try {
+    const lcr::CycleLoads loads = lcr::SampleCycleLoads(r, st.material, st.load, st.load_model, st.angle_steps);
+    const OperatingPoint p = LubricatedPoint(st, loads, speed);
+    if (!p.oil.found()) {
+      res.lubrication_error = "no thermal equilibrium: " + p.oil.thermal->why;
+    } else {
+      const lcr::CycleLubrication& c = p.cycle;
+      LubricationResult out =
+          CommonLubricationResult(l.common, p.oil, st.load.output_torque_Nmm / 1000, c.output_power_W, c.mean.total());
+      out.power_loss_W.sliding_input_cam = c.mean.sliding_input;
+      out.power_loss_W.sliding_output_cam = c.mean.sliding_output;
+      out.power_loss_W.roller_bearings_input = c.mean.roller_bearings_input;
+      out.power_loss_W.roller_bearings_output = c.mean.roller_bearings_output;
+      out.power_loss_W.eccentric_bearing = c.mean.eccentric_bearing;
+      out.power_loss_sampling_error_W = c.sampling_error_W;
+      // The running torque without load, at the same speed and oil temperature.
+      lcr::LoadCase idle = st.load;
+      idle.output_torque_Nmm = 0.0;
+      const lcr::CycleLubrication no_load = lcr::LubricatedCycle(
+          r, st.material, lcr::SampleCycleLoads(r, st.material, idle, lcr::LoadModel::kRigid, st.angle_steps), l.spec,
+          speed, p.oil.celsius);
+      out.no_load_running_torque_Nm = no_load.mean.total() / (speed * 2 * kPi / 60);
+      if (c.mean.min_lambda_roller >= 0)
+        out.min_film_lambda = {c.mean.min_lambda, c.mean.min_film_mm * 1e3, c.min_lambda_theta_rad * 180 / kPi,
+                               c.mean.min_lambda_side == 0 ? "input cam" : "output cam", RegimeName(c.mean.min_lambda),
+                               c.mean.min_lambda_roller};
+      if (!l.rollers_bearing_given && l.spec.rollers_rotate)
+        out.not_modelled.push_back("the rollers' bearings (no bearing_friction.rollers)");
+      if (!l.eccentric_bearing_given) out.not_modelled.push_back("the eccentric bearing (no bearing_friction.eccentric)");
+      for (double v : {out.efficiency, out.oil_temperature_C, out.power_loss_W.total, out.no_load_running_torque_Nm})
+        Finite(v, "lubrication");
+      res.lubrication = out;
+    }
+    if (l.common.map) {
+      const int steps = std::min(st.angle_steps, 360);
+      size_t done = 0;
+      const size_t total = l.common.map->torque_Nm.size() * l.common.map->speed_rpm.size();
+      for (double torque : l.common.map->torque_Nm) {
+        lcr::LoadCase load = st.load;
+        load.output_torque_Nmm = torque * 1000;
+        const lcr::LoadModel model = torque > 0 ? st.load_model : lcr::LoadModel::kRigid;
+        const lcr::CycleLoads map_loads = lcr::SampleCycleLoads(r, st.material, load, model, steps);
+        for (double n : l.common.map->speed_rpm) {
+          const OperatingPoint m = LubricatedPoint(st, map_loads, n);
+          res.efficiency_map.push_back({torque, n, m.cycle.efficiency, m.cycle.mean.total(), m.oil.celsius,
+                                        m.cycle.mean.min_lambda_roller >= 0 ? m.cycle.mean.min_lambda : 0.0,
+                                        m.oil.found() ? 1.0 : 0.0});
+          progress.Update(double(++done) / double(total), std::to_string(total) + " operating points");
+        }
+      }
+    }
+  } catch (const std::domain_error& e) {
+    throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
+  }
+  progress.Done();
+}
+
 }  // namespace
 
 Study Parse(const Node& root) {
@@ -449,6 +547,7 @@ Study Parse(const Node& root) {
         "a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a contact life in hours needs one");
   if (st.life_limit_h > 0 && !st.life)
     root["limits"]["life_h"].Fail("a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a life in hours needs one");
+  st.lubrication = ParseLubrication(in, root);
   return st;
 }
 
@@ -478,6 +577,7 @@ nlohmann::ordered_json Input::SchemaRules() {
   // The life's ratings and one form of the speed (shared with lcr_crowning_tuning), before the last.
   nlohmann::ordered_json& all = rules["allOf"];
   for (const auto& rule : LcrLifeSchemaRules()) all.insert(all.end() - 1, rule);
+  AddLubricationSchemaRules(rules);  // the lubrication blocks (docs/lubrication.md)
   return rules;
 }
 
@@ -570,6 +670,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
   if (st.life) res.life = RunLife(st, ctx.study_file);
+  if (st.lubrication) RunLubrication(st, ctx, res);
   if (q.profile) {
     res.input_cam_files = FitPlanarCam(CamGeometry(st, Side::kInput), st.geometry);
     res.output_cam_files = FitPlanarCam(CamGeometry(st, Side::kOutput), st.geometry);
@@ -814,6 +915,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
     lj["table"] = table;
     j["life"] = lj;
   }
+  if (res.lubrication) j["lubrication"] = WriteJson(*res.lubrication);
+  else if (st.lubrication) j["lubrication"] = {{"error", res.lubrication_error}};
   j["notes"] = res.notes;
   if (res.input_cam_files && res.output_cam_files)
     j["geometry_files"] =
@@ -899,6 +1002,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
                                             {"Efficiency (paper's friction model)", "input angle [deg]",
                                              "efficiency [-]"}));
   }
+  if (!res.efficiency_map.empty()) WriteEfficiencyMap(res.efficiency_map, st.lubrication->common.map->torque_Nm, out);
   if (res.transmission_error) {
     const lcr::TransmissionErrorResult& te = *res.transmission_error;
     Table t;
@@ -1052,7 +1156,7 @@ const bool kEstimateRegistered = RegisterWorkEstimate("lcr_analysis", EstimateWo
 
 namespace {
 // report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("lcr_analysis", {
+CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
     {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},
     {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
     {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
@@ -1068,7 +1172,7 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", {
     {"shortest bearing life L10h", "/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
     {"input cam contact life L10h", "/life/input_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
     {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
-});
+})));
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

@@ -3,6 +3,7 @@
 // Write turn the typed Result into result.json, series.csv, SVG plots and DXF profiles.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,8 @@
 #include "studies/geometry_files.h"
 #include "studies/lcr_input.h"
 #include "studies/lcr_tolerance_input.h"
+#include "studies/lubrication_input.h"
+#include "model/lcr/lubrication.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
 
@@ -48,7 +51,7 @@ struct Input {
                    "with duty_cycle"));
     }
   };
-  struct Limits {
+  struct Limits : LubricationLimitsInput {
     std::optional<double> contact_stress_MPa, roller_load_N;
     double undercut_margin_mm = 0, roller_gap_mm = 0;
     std::optional<double> life_h;
@@ -68,6 +71,7 @@ struct Input {
                Field().Positive().Unit("h").Desc(
                    "required life: pass/fail of each life of life.table (bearings, sliced rollers, cam contacts); "
                    "needs a speed"));
+      VisitLubricationLimits(a);
     }
   };
   struct Analysis {
@@ -103,6 +107,10 @@ struct Input {
   nlohmann::json geometry_files;
   std::optional<LcrContactOptionsInput> contact;
   nlohmann::json duty_cycle;
+  std::optional<LubricantInput> lubricant;
+  std::optional<SurfacesInput> surfaces;
+  std::optional<LcrBearingFrictionInput> bearing_friction;
+  std::optional<EfficiencyMapInput> efficiency_map;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -129,6 +137,16 @@ struct Input {
              Field().Schema(DutyCycleSchema()).Desc(
                  "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
                  "1e-6, at least one speed > 0"));
+    a->Visit("lubricant", &lubricant,
+             Field().Desc("the oil: the lubricated losses, efficiency and oil temperature (docs/lubrication.md; "
+                          "needs load.input_speed_rpm)"));
+    a->Visit("surfaces", &surfaces, Field().Desc("roughness, friction by regime and the rollers' mounting (with lubricant)"));
+    a->Visit("bearing_friction", &bearing_friction,
+             Field().Desc("Palmgren's factors of the rollers' and the eccentric's bearings (with lubricant; a bearing "
+                          "not given adds no loss and is listed as not modelled)"));
+    a->Visit("efficiency_map", &efficiency_map,
+             Field().Desc("efficiency_map.csv: efficiency, loss and oil temperature over torques × speeds (with "
+                          "lubricant)"));
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();
@@ -181,6 +199,13 @@ struct Study {
   /// "material.contact_fatigue": the cams' contact lives (needs a speed or a duty cycle).
   std::optional<ContactFatigueSpec> contact_fatigue;
   double life_limit_h = 0;  ///< "limits.life_h" (0: none): pass/fail of each life in the table
+  /// "lubricant" (docs/lubrication.md): the lubricated losses at the load's torque and speed.
+  struct Lubrication {
+    LubricationCommon common;
+    lcr::LubricationSpec spec;
+    bool rollers_bearing_given = false, eccentric_bearing_given = false;
+  };
+  std::optional<Lubrication> lubrication;
 };
 
 /// The rating life of one bearing over the duty cycle (model/common/bearing_life.h, model/lcr/life.h).
@@ -267,6 +292,11 @@ struct Result {
   /// The finite-length contact per cam, when the study has a "contact" object and stress is evaluated.
   std::optional<lcr::Contact3DCycleSide> contact_input, contact_output;
   std::optional<LifeResult> life;  ///< when the study asks for a life
+  std::optional<LubricationResult> lubrication;  ///< with "lubricant"
+  std::string lubrication_error;                 ///< why it is absent (no thermal equilibrium)
+  /// efficiency_map.csv's rows: torque, speed, efficiency, loss, oil temperature, λ, and 1 where
+  /// the housing's balance has an equilibrium (0: the values at the oil's limit temperature).
+  std::vector<std::array<double, 7>> efficiency_map;
 };
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.

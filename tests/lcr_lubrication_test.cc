@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "model/lcr/forces.h"
+#include "studies/lcr_analysis_study.h"
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
@@ -215,3 +216,140 @@ TEST(LcrLubrication, DerivativesMatchCentralDifferences) {
 
 }  // namespace
 }  // namespace camopt::lcr
+
+namespace camopt {
+namespace {
+
+using testing::ExpectStudyRejected;
+using testing::ReadFile;
+using testing::SourcePath;
+
+nlohmann::json LubricatedStudy() {
+  nlohmann::json s = nlohmann::json::parse(ReadFile(SourcePath("studies/examples/lcr_ii_lubricated.json")));
+  s["analysis"]["angle_steps"] = 360;
+  s.erase("efficiency_map");
+  return s;
+}
+
+struct StudyRun {
+  studies::lcr_analysis::Study study;
+  studies::lcr_analysis::Result result;
+};
+StudyRun RunLubricated(const nlohmann::json& s) {
+  const studies::Node root(&s, "lubricated.json", "");
+  StudyRun out{studies::lcr_analysis::Parse(root), {}};
+  out.result = studies::lcr_analysis::Run(out.study, {"lubricated.json", true});
+  return out;
+}
+
+// The example's losses by hand from other parts of the engine: the eccentric bearing's Palmgren
+// moment on |G| of the frictionless force series (lcr::AnalyzeCycle, series.csv's columns), the
+// rollers' on their loads at the spin rate of the life model (life.h RollerSpinRate), the
+// viscosity from the Walther law written out here, and the housing's balance at the answer.
+TEST(LcrLubricationStudy, TheExamplesLossesByHand) {
+  const StudyRun run = RunLubricated(LubricatedStudy());
+  ASSERT_TRUE(run.result.lubrication.has_value()) << run.result.lubrication_error;
+  const studies::LubricationResult& l = *run.result.lubrication;
+  const double t = l.oil_temperature_C;
+  const auto z = [](double nu) { return std::log10(std::log10(nu + 0.7)); };
+  const double x40 = std::log10(313.15), x100 = std::log10(373.15);
+  const double b = (z(68.0) - z(8.7)) / (x100 - x40), a = z(68.0) + b * x40;
+  const double nu = std::pow(10.0, std::pow(10.0, a - b * std::log10(t + 273.15))) - 0.7;
+  EXPECT_NEAR(l.viscosity_cSt, nu, 1e-12 * nu);
+  const lcr::Reducer<double>& r = run.study.reducer;
+  const auto& series = run.result.series;
+  ASSERT_EQ(series.theta_rad.size(), 360u);
+  double g = 0.0;
+  for (size_t i = 0; i < 360; ++i) g += std::hypot(series.tangential_force_N[i], series.radial_force_N[i]) / 360;
+  const double n_ecc = 1500.0 * 13 / 12, w_ecc = n_ecc * 2 * kPi / 60;
+  const double eccentric = (1e-7 * 2 * std::cbrt(nu * n_ecc * nu * n_ecc) * 16 * 16 * 16 + 0.0003 * g * 16) * w_ecc * 1e-3;
+  EXPECT_NEAR(*l.power_loss_W.eccentric_bearing, eccentric, 1e-9 * eccentric);
+  double rollers = 0.0;
+  for (size_t i = 0; i < 360; ++i)
+    for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
+      const lcr::AngleLoads<double> al = lcr::AnalyzeAngle(r, run.study.material, run.study.load, series.theta_rad[i]);
+      const auto& forces = s == lcr::Side::kInput ? al.input.force : al.output.force;
+      for (size_t k = 0; k < forces.size(); ++k) {
+        const double n = 1500.0 * lcr::RollerSpinRate(r, s, series.theta_rad[i], int(k));
+        const double m0 = 1e-7 * 3 * std::cbrt(std::pow(std::max(nu * n, 2000.0), 2)) * 8 * 8 * 8;
+        rollers += (m0 + 0.0005 * forces[k] * 8) * n * 2 * kPi / 60 * 1e-3 / 360;
+      }
+    }
+  EXPECT_NEAR(*l.power_loss_W.roller_bearings_input + *l.power_loss_W.roller_bearings_output, rollers, 1e-9 * rollers);
+  EXPECT_EQ(*l.power_loss_W.sliding_input_cam + *l.power_loss_W.sliding_output_cam, 0.0);  // rotating rollers
+  EXPECT_FALSE(l.power_loss_W.ring_pins_sliding.has_value());  // a cycloid's element
+  // Power: input = output + losses; η their ratio; the output power T_o ω_in / |r_i|.
+  EXPECT_NEAR(l.output_power_W, 80.0 * 1500 * 2 * kPi / 60 / 90, 1e-12 * l.output_power_W);
+  EXPECT_NEAR(l.efficiency, l.output_power_W / (l.output_power_W + l.power_loss_W.total), 1e-15);
+  // The thermal fixed point: the housing gives off the loss, within 1e-6 of it.
+  ASSERT_TRUE(l.thermal_residual_W.has_value());
+  EXPECT_NEAR(l.power_loss_W.total, 0.045 * 15 * (t - 25.0), 1e-6 * l.power_loss_W.total);
+  EXPECT_LE(std::abs(*l.thermal_residual_W), 1e-6 * l.power_loss_W.total);
+  // The angle grid's error estimate bounds the change to a finer grid.
+  nlohmann::json fine = LubricatedStudy();
+  fine["analysis"]["angle_steps"] = 1440;
+  const StudyRun f = RunLubricated(fine);
+  EXPECT_LE(std::abs(f.result.lubrication->power_loss_W.total - l.power_loss_W.total), l.power_loss_sampling_error_W);
+}
+
+// A larger housing area runs cooler (and its oil, thicker, gives a larger λ); a given temperature is
+// used as given.
+TEST(LcrLubricationStudy, ALargerHousingRunsCoolerAndAGivenTemperatureIsUsed) {
+  nlohmann::json s = LubricatedStudy();
+  double previous = 1e300;
+  for (double area : {0.02, 0.045, 0.1, 0.3}) {
+    s["lubricant"]["thermal"]["housing_area_m2"] = area;
+    const StudyRun run = RunLubricated(s);
+    ASSERT_TRUE(run.result.lubrication) << area;
+    EXPECT_LT(run.result.lubrication->oil_temperature_C, previous) << area;
+    previous = run.result.lubrication->oil_temperature_C;
+  }
+  s["lubricant"].erase("thermal");
+  s["lubricant"]["temperature_C"] = 70.0;
+  const StudyRun given = RunLubricated(s);
+  EXPECT_EQ(given.result.lubrication->oil_temperature_C, 70.0);
+  EXPECT_EQ(given.result.lubrication->temperature_source, "given");
+  EXPECT_FALSE(given.result.lubrication->thermal_residual_W.has_value());
+}
+
+// No equilibrium below the oil's limit: exit 3, saying why, and the block carries the reason.
+TEST(LcrLubricationStudy, NoThermalEquilibriumExitsThreeSayingWhy) {
+  nlohmann::json s = LubricatedStudy();
+  s["lubricant"]["thermal"]["housing_area_m2"] = 1e-4;
+  s["lubricant"]["thermal"]["max_oil_temperature_C"] = 60;
+  const auto dir = testing::TempDir("lub-hot");
+  testing::WriteFile(dir / "hot.json", s.dump());
+  const testing::CliResult res = testing::RunCamopt("run " + (dir / "hot.json").string() + " --quiet --out " +
+                                                    (dir / "out").string());
+  EXPECT_EQ(res.exit_code, 3) << res.stderr_text;
+  EXPECT_NE(res.stderr_text.find("no thermal equilibrium"), std::string::npos) << res.stderr_text;
+  const nlohmann::json r = nlohmann::json::parse(ReadFile(dir / "out" / "result.json"));
+  EXPECT_EQ(r["status"], "not_converged");
+  EXPECT_NE(r["lubrication"]["error"].get<std::string>().find("no equilibrium below the oil's limit"), std::string::npos);
+}
+
+TEST(LcrLubricationStudy, BadInputExitsTwoNamingThePath) {
+  nlohmann::json s = LubricatedStudy();
+  s.erase("lubricant");
+  ExpectStudyRejected(s, "lub-surfaces", "/surfaces", "needs \"lubricant\"");
+  s = LubricatedStudy();
+  s["lubricant"]["nu100_cSt"] = 90;
+  ExpectStudyRejected(s, "lub-nu100", "/lubricant/nu100_cSt", "at most nu40_cSt");
+  s = LubricatedStudy();
+  s["lubricant"]["temperature_C"] = 60;
+  ExpectStudyRejected(s, "lub-both", "/lubricant", "not both");
+  s = LubricatedStudy();
+  s["load"].erase("input_speed_rpm");
+  ExpectStudyRejected(s, "lub-speed", "/load", "input_speed_rpm");
+  s = LubricatedStudy();
+  s["surfaces"]["rollers"] = "sliding";
+  ExpectStudyRejected(s, "lub-rollers", "/surfaces/rollers", "rotating");
+  s = LubricatedStudy();
+  s.erase("lubricant");
+  s.erase("surfaces");
+  s.erase("bearing_friction");
+  ExpectStudyRejected(s, "lub-limit", "/limits/min_efficiency", "needs \"lubricant\"");
+}
+
+}  // namespace
+}  // namespace camopt

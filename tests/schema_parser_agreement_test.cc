@@ -477,6 +477,8 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_crowning_tuning", "/load/overload_torque_Nm", "an overload torque >= output_torque_Nm", "overload >= design torque"},
     {"lcr_analysis", "/material/youngs_modulus_GPa", "a torque the output rollers can carry",
      "the torque against what the rollers carry at the Young's modulus (a soft material carries less)"},
+    {"lcr_analysis", "/lubricant/thermal/", "gives off no heat", "the oil's limit temperature above the ambient"},
+    {"cycloid_ltca", "/lubricant/thermal/", "gives off no heat", "the oil's limit temperature above the ambient"},
     {"lcr_crowning_tuning", "/material/youngs_modulus_GPa", "a torque the output rollers can carry",
      "the torque against what the rollers carry at the Young's modulus (a soft material carries less)"},
     {"lcr_min_size", "/search/max_lobes", "no lobe/roller combination", "the speed ratio must be reachable"},
@@ -485,6 +487,8 @@ const std::vector<CrossField> kCrossField = {
     {"cycloid_ltca", "/duty_cycle", "time shares summing to 1", "the duty cycle's time shares sum to 1 (docs/life.md)"},
     {"cycloid_ltca", "/disc_spacing_mm", "the discs would overlap", "the discs' spacing against drive.face_width_mm"},
     {"cycloid_ltca", "/discs", "the disc stack", "the output pins' span against the discs' stack (discs, spacing, face width)"},
+    {"cycloid_ltca", "/output_mechanism/pin_span_mm", "the disc stack",
+     "the output pins' span against the discs' stack (discs, spacing, face width)"},
     {"cycloid_ltca", "/output_mechanism/roller_radius_mm", "a roller radius > pin_radius_mm",
      "a roller on the pin is larger than the pin"},
     {"transmission_rigidity", "/limits/deflection_deg", "needs the torque it is under",
@@ -729,8 +733,10 @@ int FillDefaults(const Validator& v, const json& schema, json& value) {
       if (p.contains("default")) {
         value[it.key()] = p["default"];
         ++filled;
-      } else if (p.value("type", json()) == "object" && !p.contains("required")) {
-        // (an object with required fields cannot be made of defaults alone)
+      } else if (p.value("type", json()) == "object" && !p.contains("required") &&
+                 !(s.contains("dependentRequired") && s["dependentRequired"].contains(it.key()))) {
+        // (an object with required fields cannot be made of defaults alone, nor one that needs
+        // another field the study may not have: lcr_analysis's "surfaces" needs "lubricant")
         json o = json::object();
         if (FillDefaults(v, p, o) > 0) {
           filled += FillDefaults(v, p, o);

@@ -150,6 +150,35 @@ AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, d
   return out;
 }
 
+/// The frictionless loads over an input revolution, computed once for every speed and oil temperature.
+struct CycleLoads {
+  std::vector<double> theta_rad;
+  std::vector<std::vector<RollerContact<double>>> input_contacts, output_contacts;
+  std::vector<std::vector<double>> input_force_N, output_force_N;
+  std::vector<double> eccentric_load_N;  ///< |G|
+  double output_torque_Nmm = 0;
+};
+
+/// The loads of r at `steps` equally spaced input angles under the load model `model` (life.h
+/// LoadsAtAngle; the eccentric's μ of `load` plays no part in them).
+/// @throws std::domain_error when a turret cannot carry the torque.
+inline CycleLoads SampleCycleLoads(const Reducer<double>& r, const Material& material, const LoadCase& load,
+                                   LoadModel model, int steps) {
+  CycleLoads out;
+  out.output_torque_Nmm = load.output_torque_Nmm;
+  for (int i = 0; i < steps; ++i) {
+    const double theta = 2.0 * kPi * i / steps;
+    const LcrAngleLoads a = LoadsAtAngle(r, material, load, model, theta);
+    out.theta_rad.push_back(theta);
+    out.input_contacts.push_back(RollerContacts(r, Side::kInput, theta));
+    out.output_contacts.push_back(RollerContacts(r, Side::kOutput, theta));
+    out.input_force_N.push_back(a.input_force_N);
+    out.output_force_N.push_back(a.output_force_N);
+    out.eccentric_load_N.push_back(a.eccentric_load_N.norm());
+  }
+  return out;
+}
+
 /// The losses over an input revolution at one operating point.
 struct CycleLubrication {
   AngleLosses<double> mean;         ///< each element's mean over the angles [W]; λ the cycle's least
@@ -157,31 +186,32 @@ struct CycleLubrication {
   double output_power_W = 0;        ///< T_o ω_o
   double efficiency = 0;            ///< P_out / (P_out + mean loss); 0 without output torque
   double kinematic_viscosity_mm2_s = 0;
+  /// |mean loss over every angle − mean over every other angle|: the sampling's error estimate [W]
+  /// (the mean of a smooth periodic function converges faster than the halved grid's change).
+  double sampling_error_W = 0;
 };
 
-/// The losses of r over `steps` equally spaced input angles at output torque `load.output_torque_Nmm`
-/// (the eccentric's μ of `load` plays no part: the eccentric bearing's loss is Palmgren's), input
-/// speed n_in [rpm] and oil temperature [°C], under the load model `model` (life.h LoadsAtAngle).
-/// @throws std::domain_error when a turret cannot carry the torque.
-inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material& material, LoadCase load,
-                                        LoadModel model, const LubricationSpec& spec, double input_speed_rpm,
-                                        double oil_C, int steps) {
+/// The losses over the sampled revolution `loads` at input speed n_in [rpm] and oil temperature [°C].
+inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material& material, const CycleLoads& loads,
+                                        const LubricationSpec& spec, double input_speed_rpm, double oil_C) {
   CycleLubrication out;
   const double e_star = material.composite_modulus_MPa();
-  load.friction_coefficient = 0.0;
+  const size_t steps = loads.theta_rad.size();
   bool first = true;
-  for (int i = 0; i < steps; ++i) {
-    const double theta = 2.0 * kPi * i / steps;
-    const LcrAngleLoads a = LoadsAtAngle(r, material, load, model, theta);
+  double even_total = 0.0;
+  size_t evens = 0;
+  for (size_t i = 0; i < steps; ++i) {
+    const double theta = loads.theta_rad[i];
     const AngleLosses<double> l =
-        LossesAtAngle(r, spec, e_star, RollerContacts(r, Side::kInput, theta), a.input_force_N,
-                      RollerContacts(r, Side::kOutput, theta), a.output_force_N, a.eccentric_load_N.norm(), theta,
-                      input_speed_rpm, oil_C);
-    out.mean.sliding_input += l.sliding_input / steps;
-    out.mean.sliding_output += l.sliding_output / steps;
-    out.mean.roller_bearings_input += l.roller_bearings_input / steps;
-    out.mean.roller_bearings_output += l.roller_bearings_output / steps;
-    out.mean.eccentric_bearing += l.eccentric_bearing / steps;
+        LossesAtAngle(r, spec, e_star, loads.input_contacts[i], loads.input_force_N[i], loads.output_contacts[i],
+                      loads.output_force_N[i], loads.eccentric_load_N[i], theta, input_speed_rpm, oil_C);
+    const double n = double(steps);
+    out.mean.sliding_input += l.sliding_input / n;
+    out.mean.sliding_output += l.sliding_output / n;
+    out.mean.roller_bearings_input += l.roller_bearings_input / n;
+    out.mean.roller_bearings_output += l.roller_bearings_output / n;
+    out.mean.eccentric_bearing += l.eccentric_bearing / n;
+    if (i % 2 == 0) even_total += l.total(), ++evens;
     if (l.min_lambda_roller >= 0 && (first || l.min_lambda < out.mean.min_lambda)) {
       out.mean.min_lambda = l.min_lambda;
       out.mean.min_film_mm = l.min_film_mm;
@@ -191,12 +221,20 @@ inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material
       first = false;
     }
   }
-  const double omega_out = input_speed_rpm * 2.0 * kPi / 60.0 * std::abs(OutputSpeedRatio(r));
-  out.output_power_W = load.output_torque_Nmm * 1e-3 * omega_out;
   const double loss = out.mean.total();
+  out.sampling_error_W = evens > 0 ? std::abs(loss - even_total / double(evens)) : 0.0;
+  const double omega_out = input_speed_rpm * 2.0 * kPi / 60.0 * std::abs(OutputSpeedRatio(r));
+  out.output_power_W = loads.output_torque_Nmm * 1e-3 * omega_out;
   out.efficiency = out.output_power_W > 0.0 ? out.output_power_W / (out.output_power_W + loss) : 0.0;
   out.kinematic_viscosity_mm2_s = spec.oil.KinematicViscosityAt(oil_C);
   return out;
+}
+
+/// LubricatedCycle of the loads at `load`'s torque over `steps` angles.
+inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material& material, const LoadCase& load,
+                                        LoadModel model, const LubricationSpec& spec, double input_speed_rpm,
+                                        double oil_C, int steps) {
+  return LubricatedCycle(r, material, SampleCycleLoads(r, material, load, model, steps), spec, input_speed_rpm, oil_C);
 }
 
 }  // namespace camopt::lcr

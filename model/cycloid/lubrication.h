@@ -1,0 +1,225 @@
+// The cycloid stage's losses from the lubricant up, at one crank angle: per ring pin and output pin
+// the sliding and entraining speeds, the EHL film and λ, the friction by regime, and the rolling
+// bearings' losses (docs/lubrication.md). Frames as tooth_profile.h and bearing_loads.h.
+//
+// Ring pins. In the disc frame the ring turns at 1/n2 per crank radian about the pitch point I
+// (bearing_loads.h: I = D + n2 e u(φ), the disc's instant centre relative to the ring). At a
+// contact C with the tooth's outward normal N (tangent t = N⊥) a point of the ring moves along t at
+//     s = (C − I)·N / n2,
+// the roller's centre O = C + ρ N at (O − I)·N / n2 = s + ρ/n2, and the contact point runs along
+// the tooth at v_c = (s + ρ/n2) / (1 + ρ κ), κ the tooth's signed curvature there (the roller
+// centre's path is the tooth's offset by ρ). A roller turning on its pin (the ring pins as rollers
+// or needle-mounted pins) rolls on the tooth: v_s = 0, u_e = |v_c|, the roller turning at |s|/ρ
+// relative to its pin (bearing_loads.h RollerSpinRate). A fixed pin slides: v_s = |s|,
+// u_e = |s − 2 v_c| / 2.
+//
+// Output pins. Relative to the output flange the disc translates on a circle of radius e at
+// Ω = n1/n2 per crank radian (the disc and the flange turn alike), so a hole of radius r_h = r + e
+// around a pin (or a roller on it) of radius r: the contact point on the line of centres turns at Ω
+// about the pin, the hole's surface moves at e Ω along the tangent. A pin without roller slides:
+// v_s = e Ω, u_e = |e − 2 r| Ω / 2; a roller rolls in the hole: v_s = 0, u_e = |e − r| Ω, the roller
+// turning at e Ω / r relative to its pin. The pins' forces are those of the rigid mechanism
+// (bearing_loads.h OutputPinResultant); the film's radius the conformal R' = r r_h / (r_h − r).
+//
+// Crank bearing: Palmgren at n1/n2 of the input speed under |B| (bearing_loads.h CrankBearingForce).
+// Film: Pan & Hamrock's line contact (model/contact/ehl.h) on the pair's R' and w' = F/B (B the face
+// width). The loads are the LTCA's (frictionless); the losses are first order in the friction.
+#pragma once
+
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "model/common/bearing_friction.h"
+#include "model/common/lubricant.h"
+#include "model/contact/ehl.h"
+#include "model/contact/lubricated_friction.h"
+#include "model/cycloid/bearing_loads.h"
+#include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/unloaded_tca.h"
+
+namespace camopt::cycloid {
+
+/// The output pins' contact geometry (rigid mechanism with its hole radius).
+struct OutputPinContact {
+  double pin_radius_mm = 0;     ///< r_w, or the roller on it when roller_radius_mm > 0
+  double hole_radius_mm = 0;    ///< r_h
+  double roller_radius_mm = 0;  ///< 0: no roller (the pin slides in the hole)
+  double contact_radius_mm() const { return roller_radius_mm > 0 ? roller_radius_mm : pin_radius_mm; }
+};
+
+/// How the lubricated losses of a cycloid stage are computed (model units).
+struct CycloidLubricationSpec {
+  Lubricant oil;
+  contact::RegimeFriction friction;
+  double composite_roughness_mm = 0.2e-3 * std::sqrt(2.0);
+  bool ring_pins_rotate = true;
+  PalmgrenBearing ring_pin_bearing{0.0, 0.0, 1.0};       ///< f0 = f1 = 0: no loss
+  PalmgrenBearing output_roller_bearing{0.0, 0.0, 1.0};
+  PalmgrenBearing crank_bearing{0.0, 0.0, 1.0};
+};
+
+/// Speeds of a contact per crank radian [mm/rad] and the spin of its roller relative to its pin [-].
+template <typename T>
+struct PinSpeeds {
+  T sliding{}, entraining{}, spin{};
+};
+
+/// The ring pin's speeds at the unloaded TCA's contact `g` (disc frame) at crank angle φ.
+template <typename T>
+PinSpeeds<T> RingPinSpeeds(const DriveTpl<T>& d, const PairGeometry<T>& g, const T& crank, bool rotating) {
+  using std::abs;
+  const T n2(double(d.teeth));
+  const T rho = d.roller_radius_mm;
+  const T s = (g.point - PitchPointInDisc(d, crank, T(0.0))).dot(g.normal) / n2;
+  const T travel = (s + rho / n2) / (T(1.0) + rho * g.profile_curvature);
+  PinSpeeds<T> out;
+  if (rotating) {
+    out.entraining = abs(travel);
+    out.spin = abs(s) / rho;
+  } else {
+    out.sliding = abs(s);
+    out.entraining = abs(s - T(2.0) * travel) * T(0.5);
+  }
+  return out;
+}
+
+/// An output pin's speeds per crank radian (header comment).
+inline PinSpeeds<double> OutputPinSpeeds(const Drive& d, const OutputPinContact& p) {
+  const double omega = double(d.rollers) / d.teeth, e = d.eccentricity_mm;
+  PinSpeeds<double> out;
+  if (p.roller_radius_mm > 0) {
+    out.entraining = std::abs(e - p.roller_radius_mm) * omega;
+    out.spin = e * omega / p.roller_radius_mm;
+  } else {
+    out.sliding = e * omega;
+    out.entraining = std::abs(e - 2.0 * p.pin_radius_mm) * omega * 0.5;
+  }
+  return out;
+}
+
+/// The power lost at one crank angle by one disc, by element [W], and the thinnest film.
+struct CycloidAngleLosses {
+  double ring_pins_sliding = 0, ring_pin_bearings = 0, output_pins_sliding = 0, output_roller_bearings = 0,
+         crank_bearing = 0;
+  double min_lambda = 0, min_film_mm = 0;
+  int min_lambda_pin = -1;       ///< -1: no loaded contact
+  bool min_at_output_pin = false;  ///< the pin is an output pin (else a ring pin)
+  double total() const {
+    return ring_pins_sliding + ring_pin_bearings + output_pins_sliding + output_roller_bearings + crank_bearing;
+  }
+};
+
+/// What the losses at one crank angle need of a solved mesh, computed once for every speed and oil
+/// temperature: the unloaded TCA's contacts, the pairs' loads and radii per ring pin, the output
+/// pins' forces of the rigid mechanism and the crank bearing's load |B|.
+struct MeshLubricationLoads {
+  double crank_angle_rad = 0;
+  UnloadedMesh<double> unloaded;
+  std::vector<double> ring_pin_load_N, ring_pin_r_eff_mm;  ///< per roller (0: unloaded)
+  std::vector<double> output_pin_load_N;                   ///< per output pin (empty: continuous limit)
+  double crank_bearing_load_N = 0;
+};
+
+/// The loads of one disc at `mesh` under the disc torque [N·mm] with the output mechanism `m`, the
+/// output pins taken `output_shift_rad` of crank angle later: the ring pins' state repeats every
+/// mesh period (rollers relabelled), the output pins' pattern every OutputPinPeriodInMeshPeriods,
+/// so a whole revolution's mean takes every mesh at the shifts of LubricationLoadsOverRevolution
+/// (as CrankBearingLoadsOverPeriod, bearing_loads.h).
+inline MeshLubricationLoads LubricationLoadsAt(const Drive& d, const OutputMechanism& m, const MeshLoad& mesh,
+                                               double disc_torque_Nmm, double output_shift_rad = 0.0) {
+  MeshLubricationLoads out;
+  out.crank_angle_rad = mesh.crank_angle_rad;
+  out.unloaded = UnloadedTca<double>(d, mesh.crank_angle_rad);
+  out.ring_pin_load_N.assign(size_t(d.rollers), 0.0);
+  out.ring_pin_r_eff_mm.assign(size_t(d.rollers), 0.0);
+  for (const PairLoad& p : mesh.pairs) {
+    out.ring_pin_load_N.at(size_t(p.roller)) = p.load_N;
+    out.ring_pin_r_eff_mm.at(size_t(p.roller)) = p.effective_radius_mm;
+  }
+  const double q = OutputPinResultant<double>(m, d.teeth, disc_torque_Nmm, mesh.crank_angle_rad + output_shift_rad,
+                                             &out.output_pin_load_N);
+  out.crank_bearing_load_N = CrankBearingForce(RingPinResultantCrankFrame(d, mesh), q).norm();
+  return out;
+}
+
+/// The loads of one disc over a whole revolution's pattern from meshes that sample whole mesh
+/// periods uniformly (UniformWholeMeshPeriods): every mesh with the output pins at each shift of
+/// whole sampled spans until their pattern repeats. @throws std::invalid_argument otherwise.
+inline std::vector<MeshLubricationLoads> LubricationLoadsOverRevolution(const Drive& d, const OutputMechanism& m,
+                                                                        const std::vector<MeshLoad>& meshes,
+                                                                        double disc_torque_Nmm) {
+  std::vector<double> angles;
+  for (const MeshLoad& mesh : meshes) angles.push_back(mesh.crank_angle_rad);
+  int periods = 0;
+  if (!UniformWholeMeshPeriods(angles, d.rollers, &periods))
+    throw std::invalid_argument("lubrication: the crank angles must sample whole mesh periods uniformly");
+  const int pin_period = OutputPinPeriodInMeshPeriods(m, d.teeth);
+  const int repeats = pin_period / std::gcd(pin_period, periods);
+  std::vector<MeshLubricationLoads> out;
+  for (int r = 0; r < repeats; ++r)
+    for (const MeshLoad& mesh : meshes)
+      out.push_back(LubricationLoadsAt(d, m, mesh, disc_torque_Nmm, r * periods * 2.0 * kPi / d.rollers));
+  return out;
+}
+
+/// The losses of one disc at one crank angle (its loads `x`), at input speed n_in [rpm] and oil
+/// temperature [°C]. `pins` absent: the output pins' contacts are not modelled (no radii given).
+inline CycloidAngleLosses LossesAtCrankAngle(const Drive& d, const CycloidLubricationSpec& spec, double e_star,
+                                             const MeshLubricationLoads& x, const std::optional<OutputPinContact>& pins,
+                                             double input_speed_rpm, double oil_C) {
+  CycloidAngleLosses out;
+  const double crank = x.crank_angle_rad, omega = input_speed_rpm * 2.0 * kPi / 60.0;
+  const double nu = spec.oil.KinematicViscosityAt(oil_C), eta0 = spec.oil.DynamicViscosityAt(oil_C);
+  const double alpha = spec.oil.pressure_viscosity_per_MPa, width = d.face_width_mm;
+  const auto film = [&](double force, double r_eff, double entraining_per_rad, int pin, bool output) {
+    const double u_e = entraining_per_rad * omega;
+    const double h = u_e > 1e-12 && r_eff > 0.0
+                         ? contact::LineContactFilm(eta0, u_e, r_eff, force / width, e_star, alpha).minimum
+                         : 0.0;
+    const double lambda = contact::FilmParameter(h, spec.composite_roughness_mm);
+    if (out.min_lambda_pin < 0 || lambda < out.min_lambda) {
+      out.min_lambda = lambda;
+      out.min_film_mm = h;
+      out.min_lambda_pin = pin;
+      out.min_at_output_pin = output;
+    }
+    return lambda;
+  };
+  // Ring pins: every roller turns (M0), the loaded ones carry their pair's load.
+  for (int i = 0; i < d.rollers; ++i) {
+    const PinSpeeds<double> v = RingPinSpeeds(d, x.unloaded.pairs.at(size_t(i)), crank, spec.ring_pins_rotate);
+    const double f = x.ring_pin_load_N[size_t(i)];
+    if (spec.ring_pins_rotate)
+      out.ring_pin_bearings += PalmgrenPowerLoss(spec.ring_pin_bearing, nu, v.spin * input_speed_rpm, f) * 1e-3;
+    if (!(f > 0.0)) continue;
+    const double lambda = film(f, x.ring_pin_r_eff_mm[size_t(i)], v.entraining, i, false);
+    if (!spec.ring_pins_rotate)
+      out.ring_pins_sliding +=
+          contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * 1e-3;
+  }
+  // Output pins (the rigid mechanism's forces).
+  if (pins) {
+    const PinSpeeds<double> v = OutputPinSpeeds(d, *pins);
+    const double r = pins->contact_radius_mm(), rh = pins->hole_radius_mm;
+    const double conformal = rh > r ? r * rh / (rh - r) : 0.0;
+    for (size_t j = 0; j < x.output_pin_load_N.size(); ++j) {
+      const double f = x.output_pin_load_N[j];
+      if (pins->roller_radius_mm > 0)
+        out.output_roller_bearings +=
+            PalmgrenPowerLoss(spec.output_roller_bearing, nu, v.spin * input_speed_rpm, f) * 1e-3;
+      if (!(f > 0.0)) continue;
+      const double lambda = film(f, conformal, v.entraining, int(j), true);
+      if (pins->roller_radius_mm <= 0)
+        out.output_pins_sliding +=
+            contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * 1e-3;
+    }
+  }
+  out.crank_bearing = PalmgrenPowerLoss(spec.crank_bearing, nu, input_speed_rpm * double(d.rollers) / d.teeth,
+                                        x.crank_bearing_load_N) * 1e-3;
+  return out;
+}
+
+}  // namespace camopt::cycloid
