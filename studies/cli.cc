@@ -182,10 +182,25 @@ int CliMain(int argc, char** argv) {
 
 namespace {
 
+// `--timings`: one line on stderr, "camopt: timings (CPU s / wall s): read 0.001 / 0.001, …; total".
+void PrintTimings(const std::vector<camopt::studies::PhaseTime>& phases) {
+  double cpu = 0.0, wall = 0.0;
+  std::string line;
+  char buf[160];
+  for (const auto& p : phases) {
+    std::snprintf(buf, sizeof buf, "%s%s %.3f / %.3f", line.empty() ? "" : ", ", p.name.c_str(), p.cpu_s, p.wall_s);
+    line += buf;
+    cpu += p.cpu_s;
+    wall += p.wall_s;
+  }
+  std::snprintf(buf, sizeof buf, "; total %.3f / %.3f", cpu, wall);
+  std::cerr << "camopt: timings (CPU s / wall s): " << line << buf << "\n";
+}
+
 int RunCommandLine(int argc, char** argv) {
   CLI::App app{"camopt: design optimisation of cam reducers and cam mechanisms"};
   std::string study_file, out_dir;
-  bool quiet = false, convergence = false, strict = false;
+  bool quiet = false, convergence = false, strict = false, timings = false;
   double work_factor = 1.0;
   // A factor in [1e-6, 1e6]; NaN passes CLI::Range (its comparisons are false) and would switch
   // every cap off, so the check is written out.
@@ -204,6 +219,9 @@ int RunCommandLine(int argc, char** argv) {
   run->add_flag("--quiet,-q", quiet, "No progress lines on stderr");
   run->add_flag("--strict", strict,
                 "Exit 3 when a limit of the kind's verdict is exceeded (for scripts and CI pipelines)");
+  run->add_flag("--timings", timings,
+                "Print where the run's time went on stderr: read, checks, parse, solve, files, status, report, "
+                "write (CPU and wall seconds; scripts/time_examples.py)");
   run->add_flag("--convergence", convergence,
                 "Also run each fidelity knob refined and coarsened: convergence.json, "
                 "convergence_*.svg and a table on stdout (docs/performance.md)");
@@ -395,6 +413,7 @@ int RunCommandLine(int argc, char** argv) {
       answer = camopt::studies::RunStudyFile(study_file, out_dir, ctx);
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     if (!convergence) PrintSummary(out_dir, study_file, answer);  // --convergence prints its own table
+    if (timings && !convergence) PrintTimings(answer.phases);
     return 0;
   } catch (const camopt::studies::StudyIncomplete& e) {
     // One status gives the exit code, this line and the verdict (studies/status.h).
@@ -405,6 +424,7 @@ int RunCommandLine(int argc, char** argv) {
       std::cerr << "camopt: finished, but the results do not meet what was asked: " << e.what() << "\n";
     if (!quiet) std::cerr << "camopt: results written to " << out_dir << "\n";
     if (!convergence) PrintSummary(out_dir, study_file, e.answer());
+    if (timings && !convergence) PrintTimings(e.answer().phases);
     return 3;
   } catch (const camopt::studies::StudyError& e) {
     std::cerr << "camopt: error: " << e.what() << "\n";

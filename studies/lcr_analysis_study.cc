@@ -1167,7 +1167,7 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
     {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
     {"outer diameter", "/outer_diameter_mm", "mm"},
     {"speed ratio", "/speed_ratio", ""},
-    {"mean efficiency", "/efficiency/mean", ""},
+    {"mean efficiency (eq. 33, load.friction_coefficient)", "/efficiency/mean", ""},
     {"largest input torque", "/input_torque_Nm/max", "N·m"},
     {"shortest bearing life L10h", "/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
     {"input cam contact life L10h", "/life/input_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},

@@ -1,6 +1,8 @@
 #include "studies/study.h"
 
 #include <cerrno>
+#include <chrono>
+#include <ctime>
 #include <climits>
 #include <algorithm>
 #include <cmath>
@@ -463,13 +465,19 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   const Node root(&study, ctx.study_file, "");
   const std::string kind = CheckCommonFields(root);
   auto it = Registry().find(kind);
-  CheckWorkLimits(study, ctx.study_file, ctx.max_work_factor);
-  const std::vector<std::string> implausible = PlausibilityWarnings(study);
+  Outputs outputs;
+  const std::vector<std::string> implausible = Timed(outputs.phases(), "checks", [&] {
+    CheckWorkLimits(study, ctx.study_file, ctx.max_work_factor);
+    return PlausibilityWarnings(study);
+  });
   if (!ctx.quiet)
     for (const auto& w : implausible) std::cerr << "camopt: warning: " << ctx.study_file << ": " << w << "\n";
-  Outputs outputs;
   try {
-    it->second(root, ctx, outputs);
+    // A kind registered with CAMOPT_REGISTER_STUDY_KIND times its parse, solve and files itself.
+    const size_t before = outputs.phases().size();
+    std::vector<PhaseTime> whole;
+    Timed(whole, "parse+solve+files", [&] { it->second(root, ctx, outputs); });
+    if (outputs.phases().size() == before) outputs.phases().push_back(whole.front());
   } catch (const NonFiniteResult& e) {
     throw StudyError(ctx.study_file + ": /: expected values the models can compute, found a " +
                      "study whose result " + e.what() + " is not a finite number (check for " +
@@ -478,6 +486,8 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   // The one status of the answer (studies/status.h): a sizing or tuning kind set its own; a kind
   // whose result says it did not converge (or found nothing feasible) gets that, for every kind
   // alike with the kind's own warning as the reason; an analysis gets its verdict's.
+  std::vector<PhaseTime> status_phase;
+  const double status_cpu = ProcessCpuSeconds(), status_wall = WallSeconds();
   const auto result = outputs.files().find("result.json");
   if (result != outputs.files().end()) {
     const nlohmann::json r = nlohmann::json::parse(result->second, nullptr, false);
@@ -524,22 +534,38 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
     }
   }
   if (!outputs.status()) outputs.SetStatus(Status::kLimitsMet);
-  AddReport(kind, study, outputs);  // last: it shows every other file of the run
+  outputs.phases().push_back({"status", ProcessCpuSeconds() - status_cpu, WallSeconds() - status_wall});
+  Timed(outputs.phases(), "report", [&] { AddReport(kind, study, outputs); });  // last: it shows every other file
   return outputs;
+}
+
+double ProcessCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double WallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx) {
   RunContext c = ctx;
   c.study_file = file;
   const InputLimits& limits = CurrentInputLimits();
-  const std::string text = ReadFileCapped(file, limits.max_file_bytes, "file");
-  const nlohmann::json study = ParseStudyText(text, file, limits.max_depth);
+  std::vector<PhaseTime> read;
+  std::string text;
+  const nlohmann::json study = Timed(read, "read", [&] {
+    text = ReadFileCapped(file, limits.max_file_bytes, "file");
+    return ParseStudyText(text, file, limits.max_depth);
+  });
   c.study_sha256 = Sha256Hex(text);
   CheckNotInside(file, out_dir, "study file");
   OutputFolder folder(out_dir);  // a bad --out is reported before the work
-  const Outputs outputs = RunStudy(study, c);
-  folder.Commit(outputs);
-  const RunAnswer answer{*outputs.status(), outputs.status_reason()};
+  Outputs outputs = RunStudy(study, c);
+  outputs.phases().insert(outputs.phases().begin(), read.front());
+  Timed(outputs.phases(), "write", [&] { folder.Commit(outputs); });
+  const RunAnswer answer{*outputs.status(), outputs.status_reason(), outputs.phases()};
   if (ExitCode(answer.status, ctx.strict) != 0) throw StudyIncomplete(answer);
   return answer;
 }

@@ -98,6 +98,31 @@ struct RunContext {
 
 /// Files a study produces, kept in memory until the whole run succeeded, then written together:
 /// results are written whole or not at all.
+/// One phase of a run and what it took: the process's CPU time (user + system, every thread) and
+/// the wall time, in seconds (`camopt run --timings`, scripts/time_examples.py).
+struct PhaseTime {
+  std::string name;
+  double cpu_s = 0.0, wall_s = 0.0;
+};
+
+/// The process's CPU time so far [s] (user + system, every thread: CLOCK_PROCESS_CPUTIME_ID).
+double ProcessCpuSeconds();
+/// A monotonic wall clock [s].
+double WallSeconds();
+
+/// Runs f() and appends its time to `phases` as `name`; returns what f returns.
+template <typename F>
+auto Timed(std::vector<PhaseTime>& phases, const char* name, F&& f) {
+  const double cpu = ProcessCpuSeconds(), wall = WallSeconds();
+  struct Record {
+    std::vector<PhaseTime>& phases;
+    const char* name;
+    double cpu, wall;
+    ~Record() { phases.push_back({name, ProcessCpuSeconds() - cpu, WallSeconds() - wall}); }
+  } record{phases, name, cpu, wall};
+  return f();
+}
+
 class Outputs {
  public:
   void Add(const std::string& name, std::string content) { files_[name] = std::move(content); }
@@ -116,6 +141,9 @@ class Outputs {
   }
   const std::optional<Status>& status() const { return status_; }
   const std::string& status_reason() const { return status_reason_; }
+  /// The phases of the run so far (parse, solve, files, …), in order.
+  std::vector<PhaseTime>& phases() { return phases_; }
+  const std::vector<PhaseTime>& phases() const { return phases_; }
   /// Why the answer is not what was asked (a status of exit code 3 without --strict), "" when it is.
   std::string incomplete() const {
     if (!status_ || ExitCode(*status_, false) == 0) return "";
@@ -126,6 +154,7 @@ class Outputs {
   std::map<std::string, std::string> files_;
   std::optional<Status> status_;
   std::string status_reason_;
+  std::vector<PhaseTime> phases_;
 };
 
 /// Thrown by RunStudyFile after the outputs were written when the run's status gives exit code 3
@@ -135,6 +164,7 @@ class Outputs {
 struct RunAnswer {
   Status status = Status::kLimitsMet;
   std::string reason;
+  std::vector<PhaseTime> phases;  ///< read, checks, parse, solve, files, status, report, write
 };
 
 class StudyIncomplete : public std::runtime_error {
@@ -295,8 +325,10 @@ double Finite(double value, const std::string& what);
   CAMOPT_REGISTER_STUDY(kind, [](const ::camopt::studies::Node& root,                           \
                                  const ::camopt::studies::RunContext& ctx,                      \
                                  ::camopt::studies::Outputs& out) {                             \
-    const auto study = Parse(root);                                                             \
-    Write(study, Run(study, ctx), out);                                                         \
+    auto& phases = out.phases();                                                                \
+    const auto study = ::camopt::studies::Timed(phases, "parse", [&] { return Parse(root); });  \
+    const auto result = ::camopt::studies::Timed(phases, "solve", [&] { return Run(study, ctx); }); \
+    ::camopt::studies::Timed(phases, "files", [&] { Write(study, result, out); });              \
   });                                                                                           \
   CAMOPT_REGISTER_STUDY_PARSER(kind, [](const ::camopt::studies::Node& root) { (void)Parse(root); })
 

@@ -240,6 +240,48 @@ namespace camopt {
 namespace {
 
 // Every study kind rejects a misspelt top-level field instead of silently ignoring it.
+// `--timings`: one line with every phase of the run in order, each CPU and wall time >= 0, and the
+// total their sum; the solve of a real analysis takes time. Without the flag, no such line.
+TEST(Cli, TimingsSayWhereTheRunsTimeWent) {
+  const auto dir = camopt::testing::TempDir("timings");
+  nlohmann::json s = nlohmann::json::parse(camopt::testing::ReadFile(camopt::testing::SourcePath("studies/examples/lcr_ii.json")));
+  s["analysis"]["angle_steps"] = 720;
+  camopt::testing::WriteFile(dir / "s.json", s.dump());
+  const auto r = camopt::testing::RunCamopt("run " + (dir / "s.json").string() + " --quiet --timings --out " +
+                                            (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const std::string key = "camopt: timings (CPU s / wall s): ";
+  const size_t at = r.stderr_text.find(key);
+  ASSERT_NE(at, std::string::npos) << r.stderr_text;
+  const std::string line = r.stderr_text.substr(at + key.size(), r.stderr_text.find('\n', at) - at - key.size());
+  std::vector<std::string> names;
+  double cpu_sum = 0.0, solve = 0.0, total = -1.0;
+  std::istringstream parts(line);
+  std::string part;
+  while (std::getline(parts, part, ',')) {
+    if (const size_t semi = part.find("; total "); semi != std::string::npos) {
+      total = std::stod(part.substr(semi + 8));
+      part = part.substr(0, semi);
+    }
+    std::istringstream p(part);
+    std::string name, slash;
+    double cpu = -1, wall = -1;
+    p >> name >> cpu >> slash >> wall;
+    EXPECT_GE(cpu, 0.0) << part;
+    EXPECT_GE(wall, 0.0) << part;
+    names.push_back(name);
+    cpu_sum += cpu;
+    if (name == "solve") solve = cpu;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"read", "checks", "parse", "solve", "files", "status", "report", "write"}))
+      << line;
+  EXPECT_NEAR(total, cpu_sum, 0.0011 * names.size()) << line;  // each printed to 1 ms
+  EXPECT_GT(solve, 0.0) << line;
+  const auto quiet = camopt::testing::RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " +
+                                                (dir / "out2").string());
+  EXPECT_EQ(quiet.stderr_text.find(key), std::string::npos) << quiet.stderr_text;
+}
+
 TEST(Cli, EveryKindRejectsAnUnknownTopLevelField) {
   int kinds = 0;
   for (const auto& entry : std::filesystem::directory_iterator(camopt::testing::SourcePath("studies/examples"))) {
