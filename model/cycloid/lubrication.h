@@ -120,8 +120,17 @@ struct MeshLubricationLoads {
   UnloadedMesh<double> unloaded;
   std::vector<double> ring_pin_load_N, ring_pin_r_eff_mm;  ///< per roller (0: unloaded)
   std::vector<double> output_pin_load_N;                   ///< per output pin (empty: continuous limit)
+  Vec2<double> ring_resultant_crank_frame{0.0, 0.0};       ///< Σ −F_i N_i (bearing_loads.h)
   double crank_bearing_load_N = 0;
 };
+
+/// `x` with the output pins taken at crank angle `output_crank_rad` under the disc torque: their
+/// forces and the crank bearing's load (the ring pins' part of `x` kept).
+inline void SetOutputPins(const Drive& d, const OutputMechanism& m, double disc_torque_Nmm, double output_crank_rad,
+                          MeshLubricationLoads& x) {
+  const double q = OutputPinResultant<double>(m, d.teeth, disc_torque_Nmm, output_crank_rad, &x.output_pin_load_N);
+  x.crank_bearing_load_N = CrankBearingForce(x.ring_resultant_crank_frame, q).norm();
+}
 
 /// The loads of one disc at `mesh` under the disc torque [N·mm] with the output mechanism `m`, the
 /// output pins taken `output_shift_rad` of crank angle later: the ring pins' state repeats every
@@ -135,13 +144,16 @@ inline MeshLubricationLoads LubricationLoadsAt(const Drive& d, const OutputMecha
   out.unloaded = UnloadedTca<double>(d, mesh.crank_angle_rad);
   out.ring_pin_load_N.assign(size_t(d.rollers), 0.0);
   out.ring_pin_r_eff_mm.assign(size_t(d.rollers), 0.0);
+  std::vector<std::pair<int, double>> loads;
   for (const PairLoad& p : mesh.pairs) {
     out.ring_pin_load_N.at(size_t(p.roller)) = p.load_N;
     out.ring_pin_r_eff_mm.at(size_t(p.roller)) = p.effective_radius_mm;
+    loads.push_back({p.roller, p.load_N});
   }
-  const double q = OutputPinResultant<double>(m, d.teeth, disc_torque_Nmm, mesh.crank_angle_rad + output_shift_rad,
-                                             &out.output_pin_load_N);
-  out.crank_bearing_load_N = CrankBearingForce(RingPinResultantCrankFrame(d, mesh), q).norm();
+  // The unloaded TCA above serves the resultant too (RingPinResultantCrankFrame(d, mesh) would solve it again).
+  out.ring_resultant_crank_frame =
+      RingPinResultantCrankFrame(d, out.unloaded, loads, mesh.crank_angle_rad, mesh.rotation_rad);
+  SetOutputPins(d, m, disc_torque_Nmm, mesh.crank_angle_rad + output_shift_rad, out);
   return out;
 }
 
@@ -159,9 +171,14 @@ inline std::vector<MeshLubricationLoads> LubricationLoadsOverRevolution(const Dr
   const int pin_period = OutputPinPeriodInMeshPeriods(m, d.teeth);
   const int repeats = pin_period / std::gcd(pin_period, periods);
   std::vector<MeshLubricationLoads> out;
-  for (int r = 0; r < repeats; ++r)
-    for (const MeshLoad& mesh : meshes)
-      out.push_back(LubricationLoadsAt(d, m, mesh, disc_torque_Nmm, r * periods * 2.0 * kPi / d.rollers));
+  for (const MeshLoad& mesh : meshes) out.push_back(LubricationLoadsAt(d, m, mesh, disc_torque_Nmm));
+  // The ring pins' part of each mesh once; only the output pins move with the shift.
+  for (int r = 1; r < repeats; ++r)
+    for (size_t k = 0; k < meshes.size(); ++k) {
+      MeshLubricationLoads x = out[k];
+      SetOutputPins(d, m, disc_torque_Nmm, meshes[k].crank_angle_rad + r * periods * 2.0 * kPi / d.rollers, x);
+      out.push_back(std::move(x));
+    }
   return out;
 }
 
