@@ -1456,7 +1456,10 @@ TEST(Serve, AHostBeyondThisMachineNeedsAFlagAndATokenOnEveryRequest) {
   auto res = c.Get("/api/kinds");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 401);
-  res = c.Get("/api/kinds", {{"X-Camopt-Token", "0" + token.substr(1)}});
+  // A wrong token: the first character changed (a fixed "0" would be the token itself when its
+  // first hex digit is 0, one start in 16).
+  const std::string wrong = std::string(1, token[0] == '0' ? '1' : '0') + token.substr(1);
+  res = c.Get("/api/kinds", {{"X-Camopt-Token", wrong}});
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 401);  // a wrong token
   res = c.Get("/api/kinds", {{"X-Camopt-Token", token}});
