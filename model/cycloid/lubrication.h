@@ -34,6 +34,8 @@
 
 #include "model/common/bearing_friction.h"
 #include "model/common/lubricant.h"
+#include "model/common/scalar.h"
+#include "model/common/thermal.h"
 #include "model/contact/ehl.h"
 #include "model/contact/lubricated_friction.h"
 #include "model/cycloid/bearing_loads.h"
@@ -42,13 +44,16 @@
 
 namespace camopt::cycloid {
 
-/// The output pins' contact geometry (rigid mechanism with its hole radius).
-struct OutputPinContact {
+/// The output pins' contact geometry (rigid mechanism with its hole radius). @tparam T double or
+/// ceres::Jet (a sizing's holes follow its eccentricity: r_h = r + e + c).
+template <typename T>
+struct OutputPinContactTpl {
   double pin_radius_mm = 0;     ///< r_w, or the roller on it when roller_radius_mm > 0
-  double hole_radius_mm = 0;    ///< r_h
+  T hole_radius_mm{};           ///< r_h
   double roller_radius_mm = 0;  ///< 0: no roller (the pin slides in the hole)
   double contact_radius_mm() const { return roller_radius_mm > 0 ? roller_radius_mm : pin_radius_mm; }
 };
+using OutputPinContact = OutputPinContactTpl<double>;
 
 /// How the lubricated losses of a cycloid stage are computed (model units).
 struct CycloidLubricationSpec {
@@ -87,49 +92,82 @@ PinSpeeds<T> RingPinSpeeds(const DriveTpl<T>& d, const PairGeometry<T>& g, const
 }
 
 /// An output pin's speeds per crank radian (header comment).
-inline PinSpeeds<double> OutputPinSpeeds(const Drive& d, const OutputPinContact& p) {
-  const double omega = double(d.rollers) / d.teeth, e = d.eccentricity_mm;
-  PinSpeeds<double> out;
+template <typename T>
+PinSpeeds<T> OutputPinSpeeds(const DriveTpl<T>& d, const OutputPinContactTpl<T>& p) {
+  using std::abs;
+  const T omega(double(d.rollers) / d.teeth);
+  const T e = d.eccentricity_mm;
+  PinSpeeds<T> out;
   if (p.roller_radius_mm > 0) {
-    out.entraining = std::abs(e - p.roller_radius_mm) * omega;
-    out.spin = e * omega / p.roller_radius_mm;
+    out.entraining = abs(e - T(p.roller_radius_mm)) * omega;
+    out.spin = e * omega / T(p.roller_radius_mm);
   } else {
     out.sliding = e * omega;
-    out.entraining = std::abs(e - 2.0 * p.pin_radius_mm) * omega * 0.5;
+    out.entraining = abs(e - T(2.0 * p.pin_radius_mm)) * omega * T(0.5);
   }
   return out;
 }
+inline PinSpeeds<double> OutputPinSpeeds(const Drive& d, const OutputPinContact& p) {
+  return OutputPinSpeeds<double>(d, p);
+}
 
 /// The power lost at one crank angle by one disc, by element [W], and the thinnest film.
-struct CycloidAngleLosses {
-  double ring_pins_sliding = 0, ring_pin_bearings = 0, output_pins_sliding = 0, output_roller_bearings = 0,
-         crank_bearing = 0;
+template <typename T>
+struct CycloidAngleLossesTpl {
+  T ring_pins_sliding{}, ring_pin_bearings{}, output_pins_sliding{}, output_roller_bearings{}, crank_bearing{};
   double min_lambda = 0, min_film_mm = 0;
   int min_lambda_pin = -1;       ///< -1: no loaded contact
   bool min_at_output_pin = false;  ///< the pin is an output pin (else a ring pin)
-  double total() const {
+  T total() const {
     return ring_pins_sliding + ring_pin_bearings + output_pins_sliding + output_roller_bearings + crank_bearing;
   }
 };
+using CycloidAngleLosses = CycloidAngleLossesTpl<double>;
 
 /// What the losses at one crank angle need of a solved mesh, computed once for every speed and oil
-/// temperature: the unloaded TCA's contacts, the pairs' loads and radii per ring pin, the output
-/// pins' forces of the rigid mechanism and the crank bearing's load |B|.
-struct MeshLubricationLoads {
+/// temperature: the unloaded TCA's contacts, the pairs' loads and radii per ring pin (R' =
+/// 1/(1/ρ + κ) of the unloaded contact, as the LTCA's pairs), the output pins' forces of the rigid
+/// mechanism and the crank bearing's load |B|.
+template <typename T>
+struct MeshLubricationLoadsTpl {
   double crank_angle_rad = 0;
-  UnloadedMesh<double> unloaded;
-  std::vector<double> ring_pin_load_N, ring_pin_r_eff_mm;  ///< per roller (0: unloaded)
-  std::vector<double> output_pin_load_N;                   ///< per output pin (empty: continuous limit)
-  Vec2<double> ring_resultant_crank_frame{0.0, 0.0};       ///< Σ −F_i N_i (bearing_loads.h)
-  double crank_bearing_load_N = 0;
+  UnloadedMesh<T> unloaded;
+  std::vector<T> ring_pin_load_N, ring_pin_r_eff_mm;  ///< per roller (0: unloaded)
+  std::vector<T> output_pin_load_N;                   ///< per output pin (empty: continuous limit)
+  Vec2<T> ring_resultant_crank_frame{T(0.0), T(0.0)}; ///< Σ −F_i N_i (bearing_loads.h)
+  T crank_bearing_load_N{};
 };
+using MeshLubricationLoads = MeshLubricationLoadsTpl<double>;
 
 /// `x` with the output pins taken at crank angle `output_crank_rad` under the disc torque: their
 /// forces and the crank bearing's load (the ring pins' part of `x` kept).
-inline void SetOutputPins(const Drive& d, const OutputMechanism& m, double disc_torque_Nmm, double output_crank_rad,
-                          MeshLubricationLoads& x) {
-  const double q = OutputPinResultant<double>(m, d.teeth, disc_torque_Nmm, output_crank_rad, &x.output_pin_load_N);
+template <typename T>
+void SetOutputPins(const OutputMechanism& m, int teeth, double disc_torque_Nmm, double output_crank_rad,
+                   MeshLubricationLoadsTpl<T>& x) {
+  const T q = OutputPinResultant<T>(m, teeth, T(disc_torque_Nmm), T(output_crank_rad), &x.output_pin_load_N);
   x.crank_bearing_load_N = CrankBearingForce(x.ring_resultant_crank_frame, q).norm();
+}
+
+/// The loads of one disc at crank angle φ from its unloaded TCA `u`, the pairs' loads (roller,
+/// load) and the disc's lag, under the disc torque [N·mm] with the output mechanism `m`, the output
+/// pins taken `output_shift_rad` of crank angle later.
+template <typename T>
+MeshLubricationLoadsTpl<T> LubricationLoadsFrom(const DriveTpl<T>& d, const OutputMechanism& m, UnloadedMesh<T> u,
+                                                double crank, const std::vector<std::pair<int, T>>& loads,
+                                                const T& rotation, double disc_torque_Nmm, double output_shift_rad = 0.0) {
+  MeshLubricationLoadsTpl<T> out;
+  out.crank_angle_rad = crank;
+  out.ring_pin_load_N.assign(size_t(d.rollers), T(0.0));
+  out.ring_pin_r_eff_mm.assign(size_t(d.rollers), T(0.0));
+  for (const auto& [roller, load] : loads) {
+    const PairGeometry<T>& g = u.pairs.at(size_t(roller));
+    out.ring_pin_load_N.at(size_t(roller)) = load;
+    out.ring_pin_r_eff_mm.at(size_t(roller)) = T(1.0) / (g.roller_curvature + g.profile_curvature);
+  }
+  out.ring_resultant_crank_frame = RingPinResultantCrankFrame(d, u, loads, T(crank), rotation);
+  out.unloaded = std::move(u);
+  SetOutputPins(m, d.teeth, disc_torque_Nmm, crank + output_shift_rad, out);
+  return out;
 }
 
 /// The loads of one disc at `mesh` under the disc torque [N·mm] with the output mechanism `m`, the
@@ -139,67 +177,76 @@ inline void SetOutputPins(const Drive& d, const OutputMechanism& m, double disc_
 /// (as CrankBearingLoadsOverPeriod, bearing_loads.h).
 inline MeshLubricationLoads LubricationLoadsAt(const Drive& d, const OutputMechanism& m, const MeshLoad& mesh,
                                                double disc_torque_Nmm, double output_shift_rad = 0.0) {
-  MeshLubricationLoads out;
-  out.crank_angle_rad = mesh.crank_angle_rad;
-  out.unloaded = UnloadedTca<double>(d, mesh.crank_angle_rad);
-  out.ring_pin_load_N.assign(size_t(d.rollers), 0.0);
-  out.ring_pin_r_eff_mm.assign(size_t(d.rollers), 0.0);
   std::vector<std::pair<int, double>> loads;
-  for (const PairLoad& p : mesh.pairs) {
-    out.ring_pin_load_N.at(size_t(p.roller)) = p.load_N;
-    out.ring_pin_r_eff_mm.at(size_t(p.roller)) = p.effective_radius_mm;
-    loads.push_back({p.roller, p.load_N});
-  }
-  // The unloaded TCA above serves the resultant too (RingPinResultantCrankFrame(d, mesh) would solve it again).
-  out.ring_resultant_crank_frame =
-      RingPinResultantCrankFrame(d, out.unloaded, loads, mesh.crank_angle_rad, mesh.rotation_rad);
-  SetOutputPins(d, m, disc_torque_Nmm, mesh.crank_angle_rad + output_shift_rad, out);
-  return out;
+  for (const PairLoad& p : mesh.pairs) loads.push_back({p.roller, p.load_N});
+  return LubricationLoadsFrom<double>(d, m, UnloadedTca<double>(d, mesh.crank_angle_rad), mesh.crank_angle_rad,
+                                      loads, mesh.rotation_rad, disc_torque_Nmm, output_shift_rad);
+}
+
+/// How many times the meshes at `angles` (whole mesh periods sampled uniformly) repeat with the
+/// output pins shifted by the sampled span until their pattern repeats, and that span [rad].
+/// @throws std::invalid_argument for angles that do not sample whole mesh periods uniformly.
+inline std::pair<int, double> OutputPinShifts(const Drive& d, const OutputMechanism& m, const std::vector<double>& angles) {
+  int periods = 0;
+  if (!UniformWholeMeshPeriods(angles, d.rollers, &periods))
+    throw std::invalid_argument("lubrication: the crank angles must sample whole mesh periods uniformly");
+  const int pin_period = OutputPinPeriodInMeshPeriods(m, d.teeth);
+  return {pin_period / std::gcd(pin_period, periods), periods * 2.0 * kPi / d.rollers};
 }
 
 /// The loads of one disc over a whole revolution's pattern from meshes that sample whole mesh
 /// periods uniformly (UniformWholeMeshPeriods): every mesh with the output pins at each shift of
-/// whole sampled spans until their pattern repeats. @throws std::invalid_argument otherwise.
+/// whole sampled spans until their pattern repeats (OutputPinShifts). Over T, `at(k)` gives the
+/// k-th mesh's loads (output pins unshifted). @throws std::invalid_argument otherwise.
+template <typename T, typename MeshAt>
+std::vector<MeshLubricationLoadsTpl<T>> LubricationLoadsOverRevolution(const Drive& d, const OutputMechanism& m,
+                                                                       const std::vector<double>& angles,
+                                                                       double disc_torque_Nmm, const MeshAt& at) {
+  const auto [repeats, span] = OutputPinShifts(d, m, angles);
+  std::vector<MeshLubricationLoadsTpl<T>> out;
+  for (size_t k = 0; k < angles.size(); ++k) out.push_back(at(k));
+  // The ring pins' part of each mesh once; only the output pins move with the shift.
+  for (int r = 1; r < repeats; ++r)
+    for (size_t k = 0; k < angles.size(); ++k) {
+      MeshLubricationLoadsTpl<T> x = out[k];
+      SetOutputPins(m, d.teeth, disc_torque_Nmm, angles[k] + r * span, x);
+      out.push_back(std::move(x));
+    }
+  return out;
+}
 inline std::vector<MeshLubricationLoads> LubricationLoadsOverRevolution(const Drive& d, const OutputMechanism& m,
                                                                         const std::vector<MeshLoad>& meshes,
                                                                         double disc_torque_Nmm) {
   std::vector<double> angles;
   for (const MeshLoad& mesh : meshes) angles.push_back(mesh.crank_angle_rad);
-  int periods = 0;
-  if (!UniformWholeMeshPeriods(angles, d.rollers, &periods))
-    throw std::invalid_argument("lubrication: the crank angles must sample whole mesh periods uniformly");
-  const int pin_period = OutputPinPeriodInMeshPeriods(m, d.teeth);
-  const int repeats = pin_period / std::gcd(pin_period, periods);
-  std::vector<MeshLubricationLoads> out;
-  for (const MeshLoad& mesh : meshes) out.push_back(LubricationLoadsAt(d, m, mesh, disc_torque_Nmm));
-  // The ring pins' part of each mesh once; only the output pins move with the shift.
-  for (int r = 1; r < repeats; ++r)
-    for (size_t k = 0; k < meshes.size(); ++k) {
-      MeshLubricationLoads x = out[k];
-      SetOutputPins(d, m, disc_torque_Nmm, meshes[k].crank_angle_rad + r * periods * 2.0 * kPi / d.rollers, x);
-      out.push_back(std::move(x));
-    }
-  return out;
+  return LubricationLoadsOverRevolution<double>(d, m, angles, disc_torque_Nmm, [&](size_t k) {
+    return LubricationLoadsAt(d, m, meshes[k], disc_torque_Nmm);
+  });
 }
 
 /// The losses of one disc at one crank angle (its loads `x`), at input speed n_in [rpm] and oil
 /// temperature [°C]. `pins` absent: the output pins' contacts are not modelled (no radii given).
-inline CycloidAngleLosses LossesAtCrankAngle(const Drive& d, const CycloidLubricationSpec& spec, double e_star,
-                                             const MeshLubricationLoads& x, const std::optional<OutputPinContact>& pins,
-                                             double input_speed_rpm, double oil_C) {
-  CycloidAngleLosses out;
-  const double crank = x.crank_angle_rad, omega = input_speed_rpm * 2.0 * kPi / 60.0;
-  const double nu = spec.oil.KinematicViscosityAt(oil_C), eta0 = spec.oil.DynamicViscosityAt(oil_C);
-  const double alpha = spec.oil.pressure_viscosity_per_MPa, width = d.face_width_mm;
-  const auto film = [&](double force, double r_eff, double entraining_per_rad, int pin, bool output) {
-    const double u_e = entraining_per_rad * omega;
-    const double h = u_e > 1e-12 && r_eff > 0.0
-                         ? contact::LineContactFilm(eta0, u_e, r_eff, force / width, e_star, alpha).minimum
-                         : 0.0;
-    const double lambda = contact::FilmParameter(h, spec.composite_roughness_mm);
-    if (out.min_lambda_pin < 0 || lambda < out.min_lambda) {
-      out.min_lambda = lambda;
-      out.min_film_mm = h;
+/// @tparam T double or ceres::Jet (the design's and the temperature's derivatives).
+template <typename T>
+CycloidAngleLossesTpl<T> LossesAtCrankAngle(const DriveTpl<T>& d, const CycloidLubricationSpec& spec, double e_star,
+                                            const MeshLubricationLoadsTpl<T>& x,
+                                            const std::optional<OutputPinContactTpl<T>>& pins, double input_speed_rpm,
+                                            const T& oil_C) {
+  CycloidAngleLossesTpl<T> out;
+  const T crank(x.crank_angle_rad);
+  const T omega(input_speed_rpm * 2.0 * kPi / 60.0), n_in(input_speed_rpm);
+  const T nu = spec.oil.KinematicViscosityAt(oil_C), eta0 = spec.oil.DynamicViscosityAt(oil_C);
+  const T alpha(spec.oil.pressure_viscosity_per_MPa), e(e_star);
+  const T width = d.face_width_mm;
+  const auto film = [&](const T& force, const T& r_eff, const T& entraining_per_rad, int pin, bool output) {
+    const T u_e = entraining_per_rad * omega;
+    const T h = u_e > T(1e-12) && r_eff > T(0.0)
+                    ? contact::LineContactFilm<T>(eta0, u_e, r_eff, force / width, e, alpha).minimum
+                    : T(0.0);
+    const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
+    if (out.min_lambda_pin < 0 || Value(lambda) < out.min_lambda) {
+      out.min_lambda = Value(lambda);
+      out.min_film_mm = Value(h);
       out.min_lambda_pin = pin;
       out.min_at_output_pin = output;
     }
@@ -207,36 +254,53 @@ inline CycloidAngleLosses LossesAtCrankAngle(const Drive& d, const CycloidLubric
   };
   // Ring pins: every roller turns (M0), the loaded ones carry their pair's load.
   for (int i = 0; i < d.rollers; ++i) {
-    const PinSpeeds<double> v = RingPinSpeeds(d, x.unloaded.pairs.at(size_t(i)), crank, spec.ring_pins_rotate);
-    const double f = x.ring_pin_load_N[size_t(i)];
+    const PinSpeeds<T> v = RingPinSpeeds(d, x.unloaded.pairs.at(size_t(i)), crank, spec.ring_pins_rotate);
+    const T& f = x.ring_pin_load_N[size_t(i)];
     if (spec.ring_pins_rotate)
-      out.ring_pin_bearings += PalmgrenPowerLoss(spec.ring_pin_bearing, nu, v.spin * input_speed_rpm, f) * 1e-3;
-    if (!(f > 0.0)) continue;
-    const double lambda = film(f, x.ring_pin_r_eff_mm[size_t(i)], v.entraining, i, false);
+      out.ring_pin_bearings += PalmgrenPowerLoss(spec.ring_pin_bearing, nu, v.spin * n_in, f) * T(1e-3);
+    if (!(f > T(0.0))) continue;
+    const T lambda = film(f, x.ring_pin_r_eff_mm[size_t(i)], v.entraining, i, false);
     if (!spec.ring_pins_rotate)
       out.ring_pins_sliding +=
-          contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * 1e-3;
+          contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * T(1e-3);
   }
   // Output pins (the rigid mechanism's forces).
   if (pins) {
-    const PinSpeeds<double> v = OutputPinSpeeds(d, *pins);
-    const double r = pins->contact_radius_mm(), rh = pins->hole_radius_mm;
-    const double conformal = rh > r ? r * rh / (rh - r) : 0.0;
+    const PinSpeeds<T> v = OutputPinSpeeds(d, *pins);
+    const T r(pins->contact_radius_mm()), rh = pins->hole_radius_mm;
+    const T conformal = rh > r ? r * rh / (rh - r) : T(0.0);
     for (size_t j = 0; j < x.output_pin_load_N.size(); ++j) {
-      const double f = x.output_pin_load_N[j];
+      const T& f = x.output_pin_load_N[j];
       if (pins->roller_radius_mm > 0)
-        out.output_roller_bearings +=
-            PalmgrenPowerLoss(spec.output_roller_bearing, nu, v.spin * input_speed_rpm, f) * 1e-3;
-      if (!(f > 0.0)) continue;
-      const double lambda = film(f, conformal, v.entraining, int(j), true);
+        out.output_roller_bearings += PalmgrenPowerLoss(spec.output_roller_bearing, nu, v.spin * n_in, f) * T(1e-3);
+      if (!(f > T(0.0))) continue;
+      const T lambda = film(f, conformal, v.entraining, int(j), true);
       if (pins->roller_radius_mm <= 0)
         out.output_pins_sliding +=
-            contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * 1e-3;
+            contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * T(1e-3);
     }
   }
-  out.crank_bearing = PalmgrenPowerLoss(spec.crank_bearing, nu, input_speed_rpm * double(d.rollers) / d.teeth,
-                                        x.crank_bearing_load_N) * 1e-3;
+  out.crank_bearing =
+      PalmgrenPowerLoss(spec.crank_bearing, nu, T(input_speed_rpm * double(d.rollers) / d.teeth), x.crank_bearing_load_N) *
+      T(1e-3);
   return out;
+}
+
+inline CycloidAngleLosses LossesAtCrankAngle(const Drive& d, const CycloidLubricationSpec& spec, double e_star,
+                                             const MeshLubricationLoads& x, const std::optional<OutputPinContact>& pins,
+                                             double input_speed_rpm, double oil_C) {
+  return LossesAtCrankAngle<double>(d, spec, e_star, x, pins, input_speed_rpm, oil_C);
+}
+
+/// One disc's mean power loss [W] over `loads` (a whole revolution's pattern,
+/// LubricationLoadsOverRevolution) at input speed n_in [rpm] and oil temperature [°C].
+template <typename T>
+T MeanLoss(const DriveTpl<T>& d, const CycloidLubricationSpec& spec, double e_star,
+           const std::vector<MeshLubricationLoadsTpl<T>>& loads, const std::optional<OutputPinContactTpl<T>>& pins,
+           double input_speed_rpm, const T& oil_C) {
+  T sum(0.0);
+  for (const auto& x : loads) sum += LossesAtCrankAngle(d, spec, e_star, x, pins, input_speed_rpm, oil_C).total();
+  return loads.empty() ? sum : sum / T(double(loads.size()));
 }
 
 }  // namespace camopt::cycloid
