@@ -199,6 +199,61 @@ T OutputHolesMargin(const CycloidSizingOutput& o, const cycloid::DriveTpl<T>& d)
          d.delta_radius_mm - T(o.pins.pin_circle_radius_mm) - OutputHoleRadius(o, d);
 }
 
+// The lubricated losses of a design (spec.lubrication) over T = double or a Jet along one variable:
+// the loads of one disc over a revolution's pattern (the design cycle's meshes at the sizing's
+// angles, the output pins shifted as LubricationLoadsOverRevolution), `load_of(k, p)` the p-th
+// pair's load at angle k and `lag_of(k)` the disc's lag there.
+template <typename T, typename LoadOf, typename LagOf>
+std::vector<cycloid::MeshLubricationLoadsTpl<T>> LubricationLoadsOf(const CycloidSizingLubrication& l,
+                                                                    const cycloid::Drive& d,
+                                                                    const cycloid::DriveTpl<T>& dt,
+                                                                    const std::vector<double>& angles,
+                                                                    const cycloid::CycleResult& dc, double torque_Nmm,
+                                                                    const LoadOf& load_of, const LagOf& lag_of) {
+  return cycloid::LubricationLoadsOverRevolution<T>(d, l.mechanism, angles, torque_Nmm, [&](size_t k) {
+    std::vector<std::pair<int, T>> loads;
+    for (size_t p = 0; p < dc.meshes[k].pairs.size(); ++p) loads.push_back({dc.meshes[k].pairs[p].roller, load_of(k, p)});
+    return cycloid::LubricationLoadsFrom<T>(dt, l.mechanism, cycloid::UnloadedTca<T>(dt, T(angles[k])), angles[k], loads,
+                                            lag_of(k), torque_Nmm);
+  });
+}
+
+// η = P_out/(P_out + P_loss) of one disc at the design torque, P_loss its mean over `loads`, the
+// oil temperature given or the housing's balance (its derivative implicit, model/common/thermal.h).
+template <typename T>
+struct LubricatedValues {
+  T efficiency{}, loss_W{}, temperature_C{};
+  bool found = false;
+  std::string why;
+};
+template <typename T>
+LubricatedValues<T> LubricatedOf(const CycloidSizingLubrication& l, const cycloid::DriveTpl<T>& dt, double e_star,
+                                 const std::vector<cycloid::MeshLubricationLoadsTpl<T>>& loads, double torque_Nmm) {
+  std::optional<cycloid::OutputPinContactTpl<T>> pins;
+  if (l.pins)
+    pins = cycloid::OutputPinContactTpl<T>{l.pins->pin_radius_mm,
+                                          T(l.pins->contact_radius_mm() + l.hole_clearance_mm) + dt.eccentricity_mm,
+                                          l.pins->roller_radius_mm};
+  const auto loss = [&](const T& t) {
+    return cycloid::MeanLoss(dt, l.spec, e_star, loads, pins, l.input_speed_rpm, t);
+  };
+  LubricatedValues<T> out;
+  if (l.temperature_C) {
+    out.temperature_C = T(*l.temperature_C);
+    out.loss_W = loss(out.temperature_C);
+    out.found = true;
+  } else {
+    const ThermalPoint<T> p = SolveOperatingTemperature<T>(loss, l.cooling, l.balance_limit_C);
+    out.found = p.found;
+    out.why = p.why;
+    out.temperature_C = p.temperature_C;
+    out.loss_W = p.loss_W;
+  }
+  const T output_W(torque_Nmm * 1e-3 * l.input_speed_rpm * 2.0 * kPi / 60.0 / dt.teeth);
+  out.efficiency = output_W / (output_W + out.loss_W);
+  return out;
+}
+
 // The output rows of a design (spec.output; CycloidSizingOutput) over T = double or a Jet along one
 // variable: the torsional stiffness [N·m/arcmin] and lost motion [arcmin] at crank 0 from the ring
 // lags β(T_r), β(T_r/2), β(0.03 T_r) and the output pins' rotations; per sample (shift r of whole
@@ -361,6 +416,10 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
       e.d_output_pin_stress.assign(ns * nv, NAN);
       e.d_crank_bearing_load.assign(ns * nv, NAN);
     }
+    if (spec_.lubrication) {
+      e.d_efficiency.assign(nv, NAN);
+      e.d_oil_temperature.assign(nv, NAN);
+    }
   };
   if (!cycloid::CheckDrive(d).empty() || !cycloid::CheckCrowning(c, d.face_width_mm).empty()) {
     e.converged = false;
@@ -490,6 +549,25 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
       e.converged = false;
     }
   }
+  // The lubricated losses (values).
+  const double e_star = spec_.material.composite_modulus_MPa();
+  if (spec_.lubrication) {
+    const CycloidSizingLubrication& l = *spec_.lubrication;
+    const LubricatedValues<double> v = LubricatedOf<double>(
+        l, d, e_star,
+        LubricationLoadsOf<double>(
+            l, d, d, angles_, dc, spec_.design_torque_Nmm,
+            [&](size_t k, size_t p) { return dc.meshes[k].pairs[p].load_N; },
+            [&](size_t k) { return dc.meshes[k].rotation_rad; }),
+        spec_.design_torque_Nmm);
+    if (v.found) {
+      e.efficiency = v.efficiency;
+      e.power_loss_W = v.loss_W;
+      e.oil_temperature_C = v.temperature_C;
+    } else {
+      e.lubrication_why = v.why;
+    }
+  }
   if (!with_gradient) return e;
   const auto t0 = Clock::now();
   ++gradient_evaluations_;
@@ -505,6 +583,10 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   e.d_lte.assign(nv, 0.0);
   e.d_end_distance.assign((over ? na : 0) * nv, 0.0);
   e.d_life_margin.assign(nl * nv, 0.0);
+  if (spec_.lubrication) {
+    e.d_efficiency.assign(nv, NAN);
+    e.d_oil_temperature.assign(nv, NAN);
+  }
   if (spec_.output) {
     e.d_stiffness.assign(nv, NAN);
     e.d_lost_motion.assign(nv, NAN);
@@ -547,6 +629,29 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
           e.d_crank_bearing_load[r * nv + j] = v.bearing[r].v[0];
         }
         e.converged = e.converged && dh[j].converged && ds[j].converged;
+      }
+    }
+    if (spec_.lubrication && std::isfinite(e.efficiency)) {
+      // The pair loads' and the lag's derivatives (implicit) as Jets, the rest through the drive's Jet.
+      const CycloidSizingLubrication& l = *spec_.lubrication;
+      for (size_t j = 0; j < nv; ++j) {
+        const cycloid::DriveTpl<J1> dj = JetDrive(d, spec_.variables[j].name);
+        const auto jet = [](double value, double slope) {
+          J1 t(value);
+          t.v[0] = slope;
+          return t;
+        };
+        const LubricatedValues<J1> v = LubricatedOf<J1>(
+            l, dj, e_star,
+            LubricationLoadsOf<J1>(
+                l, d, dj, angles_, dc, spec_.design_torque_Nmm,
+                [&](size_t k, size_t p) {
+                  return jet(dc.meshes[k].pairs[p].load_N, dd[j].pair_load_N[k][p] * factor[j]);
+                },
+                [&](size_t k) { return jet(dc.meshes[k].rotation_rad, dd[j].rotation_rad[k] * factor[j]); }),
+            spec_.design_torque_Nmm);
+        e.d_efficiency[j] = v.efficiency.v[0];
+        e.d_oil_temperature[j] = v.temperature_C.v[0];
       }
     }
     if (life_rows) {
@@ -640,7 +745,10 @@ struct Layout {
   size_t pin_stress() const { return lost_motion() + (lost_motion_row ? 1 : 0); }
   size_t bearing() const { return pin_stress() + (pin_stress_rows ? samples : 0); }
   size_t holes() const { return bearing() + (bearing_rows ? samples : 0); }
-  size_t size() const { return holes() + (output ? 1 : 0); }
+  size_t efficiency() const { return holes() + (output ? 1 : 0); }
+  size_t temperature() const { return efficiency() + (efficiency_row ? 1 : 0); }
+  size_t size() const { return temperature() + (temperature_row ? 1 : 0); }
+  bool efficiency_row = false, temperature_row = false;  // spec.lubrication with its limits
   size_t lives = 0;  // life rows (limits.life_h): crank bearing, pins
   // The output rows (spec.output, each with its limit), samples over the pins' load period.
   bool output = false, stiffness_row = false, lost_motion_row = false, pin_stress_rows = false, bearing_rows = false;
@@ -661,6 +769,8 @@ Layout LayoutOf(const CycloidSizingModel& m) {
   l.pin_stress_rows = l.output && std::isfinite(lim.output_pin_stress_MPa);
   l.bearing_rows = l.output && std::isfinite(lim.eccentric_bearing_load_N);
   l.samples = OutputSamples(m.spec());
+  l.efficiency_row = m.spec().lubrication && lim.min_efficiency > 0;
+  l.temperature_row = m.spec().lubrication && !m.spec().lubrication->temperature_C && std::isfinite(lim.max_oil_temperature_C);
   return l;
 }
 
@@ -701,6 +811,8 @@ class SizingEvaluator final : public Evaluator {
       for (size_t r = 0; l.bearing_rows && r < l.samples; ++r)
         jac[(l.bearing() + r) * nv + j] = e.d_crank_bearing_load[r * nv + j];
       if (l.output) jac[l.holes() * nv + j] = e.d_output_holes[j];
+      if (l.efficiency_row) jac[l.efficiency() * nv + j] = e.d_efficiency[j];
+      if (l.temperature_row) jac[l.temperature() * nv + j] = e.d_oil_temperature[j];
     }
     if (outside_ == OutsideDomain::kPenalty)
       for (double& v : jac)
@@ -727,6 +839,8 @@ class SizingEvaluator final : public Evaluator {
     if (l.pin_stress_rows) b.push_back({kSizingOutputPinStress, int(l.pin_stress()), int(l.samples)});
     if (l.bearing_rows) b.push_back({kSizingCrankBearing, int(l.bearing()), int(l.samples)});
     if (l.output) b.push_back({kSizingOutputHoles, int(l.holes()), 1});
+    if (l.efficiency_row) b.push_back({kSizingEfficiency, int(l.efficiency()), 1});
+    if (l.temperature_row) b.push_back({kSizingOilTemperature, int(l.temperature()), 1});
     return b;
   }
   void Fill(const CycloidSizingEvaluation& e, std::span<double> y) const {
@@ -748,6 +862,13 @@ class SizingEvaluator final : public Evaluator {
     for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r) y[l.pin_stress() + r] = e.output_pin_stress_MPa[r];
     for (size_t r = 0; l.bearing_rows && r < l.samples; ++r) y[l.bearing() + r] = e.crank_bearing_load_N[r];
     if (l.output) y[l.holes()] = e.output_holes_margin_mm;
+    if (l.efficiency_row) y[l.efficiency()] = e.efficiency;
+    if (l.temperature_row) y[l.temperature()] = e.oil_temperature_C;
+    // No thermal equilibrium below the oil's limit: as hot as the limit and no efficiency.
+    if (outside_ == OutsideDomain::kPenalty && model_.spec().lubrication && !std::isfinite(e.efficiency)) {
+      if (l.efficiency_row) y[l.efficiency()] = 0.0;
+      if (l.temperature_row) y[l.temperature()] = model_.spec().lubrication->balance_limit_C + 100.0;
+    }
     if (outside_ == OutsideDomain::kPenalty && !std::isfinite(e.stress_MPa)) {
       if (l.stiffness_row) y[l.stiffness()] = -1e6;
       if (l.lost_motion_row) y[l.lost_motion()] = 1e6;
@@ -817,6 +938,10 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
       p.constraints.push_back({kSizingCrankBearing, -kInf, fast.eccentric_bearing_load_N, l.eccentric_bearing_load_N});
     p.constraints.push_back({kSizingOutputHoles, 0.0, kInf, 1.0});
   }
+  if (s.lubrication && s.limits.min_efficiency > 0)  // scaled by the loss's share 1 − η
+    p.constraints.push_back({kSizingEfficiency, fast.min_efficiency, kInf, std::max(1.0 - s.limits.min_efficiency, 1e-3)});
+  if (s.lubrication && !s.lubrication->temperature_C && std::isfinite(s.limits.max_oil_temperature_C))
+    p.constraints.push_back({kSizingOilTemperature, -kInf, fast.max_oil_temperature_C, 10.0});
   return p;
 }
 
@@ -853,6 +978,10 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
     out.lost_motion_error_arcmin = std::abs(a.lost_motion_arcmin - f.lost_motion_arcmin);
     out.output_pin_stress_error_MPa = std::abs(a.max_output_pin_stress_MPa - f.max_output_pin_stress_MPa);
     out.crank_bearing_error_N = std::abs(a.max_crank_bearing_load_N - f.max_crank_bearing_load_N);
+  }
+  if (spec.lubrication) {
+    out.efficiency_error = std::abs(a.efficiency - f.efficiency);
+    out.oil_temperature_error_C = std::abs(a.oil_temperature_C - f.oil_temperature_C);
   }
   std::ostringstream m;
   m << "3D half-space LTCA on " << fine.options.profile_cells << " x " << fine.options.axial_cells
@@ -907,6 +1036,12 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
     add("output_holes_fit_mm", "holes inside the root circle", 0.0, a.output_holes_margin_mm, 0.0,
         f.output_holes_margin_mm, false);
   }
+  if (spec.lubrication && l.min_efficiency > 0)
+    add("min_efficiency", "design torque at the input speed, a revolution's mean", l.min_efficiency, a.efficiency,
+        out.efficiency_error, f.efficiency, false);
+  if (spec.lubrication && !spec.lubrication->temperature_C && std::isfinite(l.max_oil_temperature_C))
+    add("max_oil_temperature_C", "the housing's balance at the design torque", l.max_oil_temperature_C,
+        a.oil_temperature_C, out.oil_temperature_error_C, f.oil_temperature_C, true);
   // Closed forms: exact, no discretisation.
   add("min_curtate_margin", "generating curve", l.min_curtate_margin, a.curtate_margin, 0.0, f.curtate_margin, false);
   add("min_profile_radius_mm", "tooth profile", l.min_profile_radius_mm, a.min_profile_radius_mm, 0.0,
@@ -964,6 +1099,8 @@ std::string LimitKeyOf(const std::string& block, bool at_lower) {
   if (block == kSizingOutputPinStress) return "output_pin_stress_MPa";
   if (block == kSizingCrankBearing) return "eccentric_bearing_load_N";
   if (block == kSizingOutputHoles) return "output_holes_fit_mm";
+  if (block == kSizingEfficiency) return "min_efficiency";
+  if (block == kSizingOilTemperature) return "max_oil_temperature_C";
   return block;
 }
 
@@ -1020,6 +1157,8 @@ constexpr LimitField kLimitFields[] = {
     {"output_pin_stress_MPa", &CycloidSizingLimits::output_pin_stress_MPa, &CycloidFastLimits::output_pin_stress_MPa},
     {"eccentric_bearing_load_N", &CycloidSizingLimits::eccentric_bearing_load_N,
      &CycloidFastLimits::eccentric_bearing_load_N},
+    {"min_efficiency", &CycloidSizingLimits::min_efficiency, &CycloidFastLimits::min_efficiency},
+    {"max_oil_temperature_C", &CycloidSizingLimits::max_oil_temperature_C, &CycloidFastLimits::max_oil_temperature_C},
 };
 const LimitField* FindLimitField(const std::string& key) {
   for (const LimitField& f : kLimitFields)
@@ -1037,6 +1176,7 @@ double* FastLimitOf(CycloidFastLimits& l, const std::string& key) {
 // The step of a limit's re-solves: 1% of its value, or for a limit of 0 (a margin, a gap) a small
 // amount in its own unit.
 double LimitStep(const std::string& key, double value) {
+  if (key == "min_efficiency") return 0.01 * (1.0 - value);  // 1% of the loss's share
   if (value != 0) return 0.01 * std::abs(value);
   if (key == "min_edge_margin_um" || key == "min_backlash_arcsec") return 0.1;
   if (key == "min_curtate_margin") return 1e-3;
@@ -1058,6 +1198,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   fast.max_lost_motion_arcmin = spec.limits.max_lost_motion_arcmin;
   fast.output_pin_stress_MPa = spec.limits.output_pin_stress_MPa;
   fast.eccentric_bearing_load_N = spec.limits.eccentric_bearing_load_N;
+  fast.min_efficiency = spec.limits.min_efficiency;
+  fast.max_oil_temperature_C = spec.limits.max_oil_temperature_C;
   if (options.fast_start) fast = *options.fast_start;
   out.verification.max_rounds = options.verify_rounds;
   const int starts = std::max(1, options.starts);
@@ -1140,7 +1282,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   // hold within its error, not only beyond the slack.
   auto beyond = [](const VerifiedLimit& c) {
     const double slack = 1e-3 * std::max(std::abs(c.limit_value), 1.0);
-    if (c.limit == "life_h" && !c.holds()) return true;
+    if ((c.limit == "life_h" || c.limit == "min_efficiency" || c.limit == "max_oil_temperature_C") && !c.holds())
+      return true;
     // The output rows: the pins' stress is exact on both models at a sample they share (error 0),
     // so a row the solver leaves a constraint tolerance beyond its limit is tightened too.
     if ((c.limit == "output_pin_stress_MPa" || c.limit == "eccentric_bearing_load_N" ||
@@ -1178,6 +1321,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
           *fl = TightenedLowerLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
         else if (c.limit == "life_h")  // by the accurate shortfall, 1.5 times, and 0.1% more (as lcr_min_size)
           *fl *= std::pow(c.limit_value / std::max(c.accurate_value, 1e-9 * c.limit_value), 1.5) * 1.001;
+        else if (c.limit == "min_efficiency" || c.limit == "max_oil_temperature_C")  // smooth: 1.5 times the miss
+          *fl += (c.upper ? -1.5 : 1.5) * (std::isfinite(miss) ? miss : 0.1 * std::abs(c.limit_value));
         else if (c.upper)
           *fl -= miss + 0.02 * std::max(std::abs(c.limit_value), 1.0);
         else

@@ -52,7 +52,17 @@
 //                         G the ring-pin resultant of the design cycle (crank frame, derivatives as the
 //                         life rows'), the output pins solved with clearance and compliance;
 //   kSizingOutputHoles    (with the compliant output mechanism) the holes inside the root circle:
-//                         a' − e − ρ' − (R_w + r_h) >= 0.
+//                         a' − e − ρ' − (R_w + r_h) >= 0;
+//   kSizingEfficiency     (with spec.lubrication and limits.min_efficiency) η = P_out/(P_out + P_loss)
+//                         at the design torque and the input speed, P_loss one disc's mean over a
+//                         revolution's pattern (model/cycloid/lubrication.h MeanLoss: the sizing's
+//                         angles with the output pins shifted as LubricationLoadsOverRevolution);
+//                         exact derivatives: the pair loads and the disc lag by implicit
+//                         differentiation, the unloaded contacts, speeds and film with a Jet;
+//   kSizingOilTemperature (limits.max_oil_temperature_C, the housing's balance) the oil
+//                         temperature of the balance P_loss(t) = k (t − t_amb) (model/common/
+//                         thermal.h), its derivative dt/dx = (∂P/∂x)/(k − ∂P/∂t) (implicit), and
+//                         with it the loss's and η's.
 // The holes follow the sized eccentricity with a fixed radial clearance c: r_h = r_c + e + c
 // (CycloidSizingOutput).
 // The crank angles sample one mesh period 2π/N uniformly: a peak between two samples is missed by
@@ -81,8 +91,10 @@
 #include <vector>
 
 #include "model/common/bearing_life.h"
+#include "model/common/thermal.h"
 #include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/lubrication.h"
 #include "model/cycloid/output_mechanism.h"
 #include "objectives/problem.h"
 #include "objectives/verification.h"
@@ -108,6 +120,8 @@ inline constexpr const char* kSizingLostMotion = "lost_motion_arcmin";
 inline constexpr const char* kSizingOutputPinStress = "output_pin_stress_MPa";
 inline constexpr const char* kSizingCrankBearing = "eccentric_bearing_load_N";
 inline constexpr const char* kSizingOutputHoles = "output_holes_margin_mm";
+inline constexpr const char* kSizingEfficiency = "efficiency";
+inline constexpr const char* kSizingOilTemperature = "oil_temperature_C";
 
 /// Field names a sizing variable may have.
 std::vector<std::string> CycloidSizingVariableNames();
@@ -134,6 +148,24 @@ struct CycloidSizingLimits {
   double max_lost_motion_arcmin = kInf;
   double output_pin_stress_MPa = kInf;
   double eccentric_bearing_load_N = kInf;
+  /// With the lubricated losses (CycloidSizingSpec::lubrication); 0 / kInf: no row.
+  double min_efficiency = 0;
+  double max_oil_temperature_C = kInf;  ///< the housing's balance only
+};
+
+/// The lubricated losses of a sizing (model/cycloid/lubrication.h) at the design torque and the
+/// input speed, the oil temperature given or from the housing's balance (model/common/thermal.h).
+struct CycloidSizingLubrication {
+  cycloid::CycloidLubricationSpec spec;
+  cycloid::OutputMechanism mechanism;  ///< the rigid output pins whose forces load the pins and the crank bearing
+  /// The output pins' contacts (absent: not modelled); the holes follow the sized eccentricity,
+  /// r_h = r + e + hole_clearance_mm (r the pin's or its roller's radius), as CycloidSizingOutput's.
+  std::optional<cycloid::OutputPinContact> pins;
+  double hole_clearance_mm = 0;
+  double input_speed_rpm = 0;
+  std::optional<double> temperature_C;  ///< given; absent: the housing's balance
+  HousingCooling cooling;
+  double balance_limit_C = 120;  ///< the balance is sought below it (the oil's limit)
 };
 
 /// The output mechanism with clearance and compliance of a sizing (model/cycloid/output_mechanism.h):
@@ -194,6 +226,8 @@ struct CycloidSizingSpec {
   /// The output pins with clearance and compliance: the stiffness, lost motion, output-pin stress
   /// and crank-bearing load (reported; with their limits, rows).
   std::optional<CycloidSizingOutput> output;
+  /// The lubricated losses: the efficiency and oil temperature reported; with their limits, rows.
+  std::optional<CycloidSizingLubrication> lubrication;
 };
 
 /// One design as the fast (or, in CycloidAccurateCheck, the accurate) model sees it.
@@ -227,6 +261,10 @@ struct CycloidSizingEvaluation {
   double output_holes_margin_mm = 0;
   std::vector<double> d_stiffness, d_lost_motion, d_output_holes;         ///< [variable]
   std::vector<double> d_output_pin_stress, d_crank_bearing_load;          ///< [row][variable]
+  /// With spec.lubrication (kNaN outside the model's domain or without a thermal equilibrium).
+  double efficiency = NAN, power_loss_W = NAN, oil_temperature_C = NAN;  ///< one disc's loss
+  std::string lubrication_why;  ///< why there is no efficiency (no equilibrium below the oil's limit)
+  std::vector<double> d_efficiency, d_oil_temperature;  ///< [variable]
 };
 
 /// The two cycles (design and overload torque) and the closed-form limits of a design x. Pure:
@@ -267,6 +305,7 @@ struct CycloidFastLimits {
   double life_h = 0;  ///< the life rows' required L10h (>= limits.life_h)
   double min_torsional_stiffness_Nm_per_arcmin = 0, max_lost_motion_arcmin = kInf, output_pin_stress_MPa = kInf,
          eccentric_bearing_load_N = kInf;
+  double min_efficiency = 0, max_oil_temperature_C = kInf;
 };
 
 /// What the LTCA rows say at a design outside the model's domain (a looped or undercut tooth,
@@ -291,6 +330,7 @@ struct CycloidAccurateCheck {
   /// |accurate − fast| of the output rows (with spec.output)
   double stiffness_error = 0, lost_motion_error_arcmin = 0, output_pin_stress_error_MPa = 0,
          crank_bearing_error_N = 0;
+  double efficiency_error = 0, oil_temperature_error_C = 0;  ///< with spec.lubrication
   std::string model;   ///< in words, with its settings
   std::vector<VerifiedLimit> checks;
 };

@@ -237,6 +237,72 @@ TEST(CycloidMinSize, OutputMechanismRowsDerivativesMatchCentralDifferences) {
   }
 }
 
+// The lubricated rows (model/cycloid/lubrication.h): η and the oil temperature of the housing's
+// balance at the design torque, the paper's drive with fixed (sliding) ring pins whose film sits in
+// the mixed regime (σ 0.1 µm each surface), the output pins sliding in their holes (8 pins r_w 7 mm
+// on R_w 50 mm, r_h = 7 + e + 0.01 mm following the sized e) and a Palmgren crank bearing, at
+// 1500 rpm with a housing of 1.8 W/K and 30 W/K of forced cooling (η 0.78, the oil at 57 °C).
+CycloidSizingLubrication PaperLubrication() {
+  CycloidSizingLubrication l;
+  l.spec.composite_roughness_mm = 0.1e-3 * std::sqrt(2.0);
+  l.spec.ring_pins_rotate = false;
+  l.spec.crank_bearing = {3.0, 0.0004, 60.0};
+  l.mechanism = {8, 50.0};
+  l.pins = cycloid::OutputPinContact{7.0, 0.0, 0.0};
+  l.hole_clearance_mm = 0.01;
+  l.input_speed_rpm = 1500;
+  l.cooling = {0.12, 15.0, 30.0, 25.0};
+  l.balance_limit_C = 150;
+  return l;
+}
+
+TEST(CycloidMinSize, LubricatedRowsDerivativesMatchCentralDifferences) {
+  CycloidSizingSpec spec = PaperSpec();
+  spec.lubrication = PaperLubrication();
+  spec.limits.min_efficiency = 0.9;
+  spec.limits.max_oil_temperature_C = 100;
+  for (bool given : {true, false}) {
+    spec.lubrication->temperature_C = given ? std::optional<double>(60.0) : std::nullopt;
+    CycloidSizingModel model(spec);
+    CycloidFastLimits fast;
+    fast.contact_stress_MPa = 1500;
+    fast.min_efficiency = 0.9;
+    fast.max_oil_temperature_C = 100;
+    Problem p = CycloidSizingProblem(model, fast);
+    const int n = p.num_vars();
+    std::vector<double> x;
+    for (const Variable& v : spec.variables) x.push_back(v.initial);
+    camopt::testing::JacobianCheck check;
+    check.rel_tol = kRowRelTol;
+    check.abs_tol = 1e-9;
+    check.scale = camopt::testing::JacobianCheck::Scale::kRow;
+    for (const Variable& v : spec.variables) {
+      check.steps.push_back(1e-5 * v.scale);
+      check.variable_names.push_back(v.name);
+    }
+    check.rows.push_back(p.evaluator->block(kSizingEfficiency).offset);
+    if (!given) check.rows.push_back(p.evaluator->block(kSizingOilTemperature).offset);
+    bool temperature_row = false;  // a given temperature is no row
+    for (const OutputBlock& b : p.evaluator->blocks()) temperature_row = temperature_row || b.name == kSizingOilTemperature;
+    EXPECT_EQ(given, !temperature_row);
+    EXPECT_EQ(camopt::testing::ExpectEvaluatorJacobianMatchesCentralDifferences(*p.evaluator, x, check),
+              int(check.rows.size()) * n);
+    // The rows are the values the model reports, in the mixed regime, and they move: a larger
+    // eccentricity lowers the crank bearing's load and the output pins' forces (T/(n2 e), 4T/(π R_w)
+    // spread over the pins) but slides the output pins faster (e Ω).
+    std::vector<double> y(size_t(p.evaluator->num_outputs())), jac(y.size() * size_t(n));
+    p.evaluator->EvalWithJacobian(x, y, jac);
+    const CycloidSizingEvaluation e = model.Evaluate(x, false);
+    EXPECT_EQ(y[size_t(p.evaluator->block(kSizingEfficiency).offset)], e.efficiency);
+    EXPECT_GT(e.efficiency, 0.7);
+    EXPECT_LT(e.efficiency, 0.999);
+    if (given) EXPECT_EQ(e.oil_temperature_C, 60.0);
+    else EXPECT_GT(e.oil_temperature_C, 30.0);
+    for (int j = 0; j < 4; ++j)
+      EXPECT_NE(jac[size_t(p.evaluator->block(kSizingEfficiency).offset) * n + j], 0.0) << spec.variables[size_t(j)].name;
+  }
+}
+
 }  // namespace
 }  // namespace camopt::objectives
 
