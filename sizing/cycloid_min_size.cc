@@ -939,7 +939,7 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
     p.constraints.push_back({kSizingOutputHoles, 0.0, kInf, 1.0});
   }
   if (s.lubrication && s.limits.min_efficiency > 0)  // scaled by the loss's share 1 − η
-    p.constraints.push_back({kSizingEfficiency, fast.min_efficiency, kInf, std::max(1.0 - s.limits.min_efficiency, 1e-3)});
+    p.constraints.push_back({kSizingEfficiency, fast.min_efficiency, kInf, std::max(0.01 * (1.0 - s.limits.min_efficiency), 1e-4)});
   if (s.lubrication && !s.lubrication->temperature_C && std::isfinite(s.limits.max_oil_temperature_C))
     p.constraints.push_back({kSizingOilTemperature, -kInf, fast.max_oil_temperature_C, 10.0});
   return p;

@@ -570,6 +570,50 @@ void ParseSizingLife(const Node& root, Study& s) {
 // with the radial clearance the file gives at the start, c = hole_radius_mm − r_c − e (>= 0),
 // r_h = r_c + e + c; the span covers the largest face width; the holes' place in the root circle is
 // a row of the sizing (kSizingOutputHoles), checked here at the start.
+// The lubricated losses (docs/lubrication.md): the blocks as cycloid_ltca reads them, at the design
+// torque and load.input_speed_rpm; the output pins' forces from the rigid mechanism, their contacts
+// (with pin and hole radii) with the holes following the sized eccentricity as the compliant
+// mechanism's; limits.max_oil_temperature_C needs the housing's balance.
+void ParseSizingLubrication(const Node& root, const Input& in, Study& s) {
+  const std::optional<double> speed = in.load ? in.load->input_speed_rpm : std::nullopt;
+  const std::optional<LubricationCommon> common =
+      ParseLubricationCommon(root, in.lubricant, in.surfaces, std::nullopt, speed, root.Has("duty_cycle"));
+  if (!common) return;
+  const Node node = root["lubricant"];
+  if (!root.Has("output_mechanism"))
+    node.FailWith("the lubricated losses need \"output_mechanism\" (its pins carry the torque out and load the crank "
+                  "bearing): give at least pin_circle_radius_mm");
+  if (in.limits.max_oil_temperature_C && common->temperature_C)
+    root["limits"]["max_oil_temperature_C"].FailWith(
+        "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
+        "lubricant.temperature_C (" + Format(*common->temperature_C) + " °C)");
+  objectives::CycloidSizingLubrication l;
+  l.spec.oil = common->oil;
+  l.spec.friction = common->friction;
+  l.spec.composite_roughness_mm = common->composite_roughness_mm;
+  l.spec.ring_pins_rotate = common->rollers_rotate;
+  const CycloidBearingFrictionInput bearings = in.bearing_friction.value_or(CycloidBearingFrictionInput{});
+  if (bearings.ring_pins) l.spec.ring_pin_bearing = bearings.ring_pins->ToBearing();
+  if (bearings.output_rollers) l.spec.output_roller_bearing = bearings.output_rollers->ToBearing();
+  if (bearings.crank) l.spec.crank_bearing = bearings.crank->ToBearing();
+  l.mechanism = cycloid_common::ParseOutputMechanism(root["output_mechanism"], s.spec.drive, true);
+  if (s.spec.output) {
+    const cycloid::OutputPins& p = s.spec.output->pins;
+    l.pins = cycloid::OutputPinContact{p.pin_radius_mm, 0.0, p.roller_radius_mm};
+    l.hole_clearance_mm = s.spec.output->clearance_mm;
+  }
+  l.input_speed_rpm = common->input_speed_rpm;
+  l.temperature_C = common->temperature_C;
+  l.cooling = common->cooling;
+  l.balance_limit_C = common->max_oil_temperature_C;
+  s.spec.lubrication = l;
+  s.spec.limits.min_efficiency = in.limits.min_efficiency.value_or(0.0);
+  s.spec.limits.max_oil_temperature_C = in.limits.max_oil_temperature_C.value_or(kInf);
+  s.lubrication_blocks = nlohmann::json::object();
+  for (const char* block : {"lubricant", "surfaces", "bearing_friction"})
+    if (root.Has(block)) s.lubrication_blocks[block] = root[block].json();
+}
+
 void ParseSizingOutput(const Node& root, const Input& in, const std::map<std::string, Field>& fields, Study& s) {
   const Field& b = fields.at("face_width_mm");
   const std::optional<cycloid_common::CompliantOutputSpec> o = cycloid_common::ParseCompliantOutput(
@@ -617,6 +661,7 @@ Study Parse(const Node& root) {
   CheckClosedFormCorner(root, fields, s);
   ParseSizingLife(root, s);
   ParseSizingOutput(root, in, fields, s);
+  ParseSizingLubrication(root, in, s);
   return s;
 }
 
@@ -741,8 +786,11 @@ nlohmann::ordered_json Input::SchemaRules() {
   for (const char* key : {"min_torsional_stiffness_Nm_per_arcmin", "max_lost_motion_arcmin", "output_pin_stress_MPa",
                           "eccentric_bearing_load_N"})
     all.push_back(when(given("limits", key), given("output_mechanism", "pin_radius_mm")));
+  all.push_back(when(required({"lubricant"}), required({"output_mechanism"})));
+  all.push_back(when(given("limits", "max_oil_temperature_C"), in("lubricant", required({"thermal"}))));
   oj rules = oj::object();
   rules["allOf"] = all;
+  AddLubricationSchemaRules(rules);
   return rules;
 }
 
@@ -822,6 +870,12 @@ nlohmann::json ModelJson(const Study& s, const objectives::CycloidSizingEvaluati
     j["output_pin_bending_stress_MPa"] = NumberOrNull(e.max_output_pin_stress_MPa);
     j["eccentric_bearing_load_N"] = NumberOrNull(e.max_crank_bearing_load_N);
   }
+  if (s.spec.lubrication) {  // one disc at the design torque and the input speed (docs/lubrication.md)
+    j["efficiency"] = NumberOrNull(e.efficiency);
+    j["power_loss_W"] = NumberOrNull(e.power_loss_W);
+    j["oil_temperature_C"] = NumberOrNull(e.oil_temperature_C);
+    if (!e.lubrication_why.empty()) j["lubrication_error"] = e.lubrication_why;
+  }
   j["converged"] = e.converged;
   return j;
 }
@@ -850,6 +904,7 @@ std::string LimitUnit(const std::string& key) {
   if (key == "max_lost_motion_arcmin") return "arcmin";
   if (key == "eccentric_bearing_load_N") return "N";
   if (key == "output_holes_fit_mm") return "mm";
+  if (key == "max_oil_temperature_C") return "°C";
   for (const char* u : {"MPa", "um", "mm", "arcsec", "h"}) {
     const std::string suffix = std::string("_") + u;
     if (key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) return u;
@@ -876,6 +931,8 @@ double LimitValue(const Study& s, const std::string& key) {
   if (key == "output_pin_stress_MPa") return l.output_pin_stress_MPa;
   if (key == "eccentric_bearing_load_N") return l.eccentric_bearing_load_N;
   if (key == "output_holes_fit_mm") return 0.0;
+  if (key == "min_efficiency") return l.min_efficiency;
+  if (key == "max_oil_temperature_C") return l.max_oil_temperature_C;
   return NAN;
 }
 
@@ -908,7 +965,8 @@ nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const obj
       {"pin_count", life.output.pin_count > 0 ? nlohmann::json(life.output.pin_count) : nlohmann::json("continuous")},
       {"pin_circle_radius_mm", life.output.pin_circle_radius_mm},
       {"inside_root_radius", life.output.pin_circle_radius_mm < root_radius}};
-  lj["efficiency"] = "not computed: the cycloid model is frictionless (docs/cycloid.md, Limits)";
+  lj["efficiency"] = s.spec.lubrication ? "best.accurate.efficiency (the lubricated losses, docs/lubrication.md)"
+                                        : "not computed without \"lubricant\" (docs/lubrication.md)";
   lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner) on the accurate model's "
                 "cycles, computed as cycloid_ltca does (docs/life.md, Cycloid)";
   return lj;
@@ -1001,6 +1059,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       err["output_pin_bending_stress_MPa"] = NumberOrNull(o.check.output_pin_stress_error_MPa);
       err["eccentric_bearing_load_N"] = NumberOrNull(o.check.crank_bearing_error_N);
     }
+    if (s.spec.lubrication) {
+      err["efficiency"] = NumberOrNull(o.check.efficiency_error);
+      err["oil_temperature_C"] = NumberOrNull(o.check.oil_temperature_error_C);
+      const objectives::CycloidSizingLubrication& l = *s.spec.lubrication;
+      b["lubrication"] = {
+          {"input_speed_rpm", l.input_speed_rpm},
+          {"output_torque_Nm", s.design_torque_Nm},
+          {"temperature_source", l.temperature_C ? "given" : "thermal balance"},
+          {"model", "one disc's mean loss over a revolution's pattern at the design torque (the LTCA's pair loads, "
+                    "the rigid output pins' forces), Pan-Hamrock line film, friction by regime, Palmgren bearings; "
+                    "best_cycloid_ltca.json gives the loss split, the film and the efficiency map "
+                    "(docs/lubrication.md)"}};
+    }
     b["estimated_error"] = err;
     b["accurate_model"] = o.check.model;
     if (s.spec.life) {
@@ -1090,6 +1161,16 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     a["output_mechanism"] = om;
     a["stiffness"] = {{"rated_torque_Nm", s.design_torque_Nm}};
   }
+  if (s.spec.lubrication) {  // the lubricated losses at the same speed (cycloid_ltca takes one speed, no duty cycle)
+    for (const auto& [key, block] : s.lubrication_blocks.items()) a[key] = block;
+    a["load"]["input_speed_rpm"] = s.spec.lubrication->input_speed_rpm;
+    a.erase("duty_cycle");
+    if (!a.contains("output_mechanism")) {
+      const cycloid::OutputMechanism& m = s.spec.lubrication->mechanism;
+      a["output_mechanism"] = {{"pin_circle_radius_mm", m.pin_circle_radius_mm}};
+      if (m.pin_count > 0) a["output_mechanism"]["pin_count"] = m.pin_count;
+    }
+  }
   // The limits the design was sized for that cycloid_ltca's verdict checks, so that a re-run checks
   // them again (the others — stiffness, lost motion, backlash, edge margin, life — are in the
   // sizing's result.json verification).
@@ -1102,6 +1183,9 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     limits["output_pin_stress_MPa"] = lim.output_pin_stress_MPa;
   if (s.spec.output && std::isfinite(lim.eccentric_bearing_load_N))
     limits["eccentric_bearing_load_N"] = lim.eccentric_bearing_load_N;
+  if (s.spec.lubrication && lim.min_efficiency > 0) limits["min_efficiency"] = lim.min_efficiency;
+  if (s.spec.lubrication && std::isfinite(lim.max_oil_temperature_C))
+    limits["max_oil_temperature_C"] = lim.max_oil_temperature_C;
   if (!limits.empty()) a["limits"] = limits;
   return a;
 }
@@ -1288,6 +1372,11 @@ CAMOPT_REGISTER_REPORT("cycloid_min_size", {
      "study:/limits/output_pin_stress_MPa", NAN, true, "/best/estimated_error/output_pin_bending_stress_MPa"},
     {"eccentric bearing load, largest", "/best/accurate/eccentric_bearing_load_N", "N",
      "study:/limits/eccentric_bearing_load_N", NAN, true, "/best/estimated_error/eccentric_bearing_load_N"},
+    {"efficiency (lubricated, design torque)", "/best/accurate/efficiency", "", "study:/limits/min_efficiency", NAN,
+     false, "/best/estimated_error/efficiency"},
+    {"oil temperature", "/best/accurate/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true,
+     "/best/estimated_error/oil_temperature_C"},
+    {"lubricated loss", "/best/accurate/power_loss_W", "W"},
     {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
     {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
     {"verified", "/verified", ""},

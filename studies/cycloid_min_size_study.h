@@ -26,6 +26,7 @@
 #include "studies/archive.h"
 #include "studies/cycloid_input.h"
 #include "studies/input.h"
+#include "studies/lubrication_input.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
 
@@ -122,6 +123,7 @@ struct Input {
     std::optional<double> max_backlash_arcsec, max_lte_peak_to_peak_arcsec, bore_diameter_mm, min_web_mm, life_h;
     std::optional<double> min_torsional_stiffness_Nm_per_arcmin, max_lost_motion_arcmin, output_pin_stress_MPa,
         eccentric_bearing_load_N;
+    std::optional<double> min_efficiency, max_oil_temperature_C;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("contact_stress_MPa", &contact_stress_MPa,
@@ -170,6 +172,13 @@ struct Input {
                Field().Positive().Unit("N").Desc(
                    "largest eccentric (crank) bearing load over the pins' load period, the output pins with "
                    "clearance and compliance" + needs));
+      a->Visit("min_efficiency", &min_efficiency,
+               Field().In(0.0, 1.0).Desc(
+                   "the lubricated efficiency at design_torque_Nm and load.input_speed_rpm, a revolution's mean "
+                   "(needs lubricant; docs/lubrication.md)"));
+      a->Visit("max_oil_temperature_C", &max_oil_temperature_C,
+               Field().In(-50.0, 300.0).Unit("°C").Desc(
+                   "the oil temperature of the housing's balance at design_torque_Nm (needs lubricant.thermal)"));
     }
     static nlohmann::ordered_json SchemaRules() {
       return {{"dependentRequired", {{"min_web_mm", {"bore_diameter_mm"}}}}};
@@ -227,6 +236,9 @@ struct Input {
   std::optional<Load> load;
   nlohmann::json duty_cycle, crank_bearing, pins;
   std::optional<cycloid_common::CompliantOutputMechanismInput> output_mechanism;
+  std::optional<LubricantInput> lubricant;
+  std::optional<SurfacesInput> surfaces;
+  std::optional<CycloidBearingFrictionInput> bearing_friction;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -258,6 +270,15 @@ struct Input {
                           "for the stiffness, lost motion, output-pin stress and crank-bearing load: the pins fixed, the holes "
                           "made for the sized eccentricity with the start's radial clearance hole_radius_mm - "
                           "pin_radius_mm (or roller_radius_mm) - e (docs/cycloid.md, Output mechanism)"));
+    a->Visit("lubricant", &lubricant,
+             Field().Desc("the oil: the lubricated efficiency and oil temperature of each design at design_torque_Nm "
+                          "and load.input_speed_rpm (needs output_mechanism; docs/lubrication.md), limited by "
+                          "limits.min_efficiency and limits.max_oil_temperature_C"));
+    a->Visit("surfaces", &surfaces,
+             Field().Desc("roughness, friction by regime and the ring pins' mounting (with lubricant)"));
+    a->Visit("bearing_friction", &bearing_friction,
+             Field().Desc("Palmgren's factors of the ring pins', output rollers' and crank bearings (with lubricant; a "
+                          "bearing not given is not modelled)"));
   }
   /// The rules between blocks: each sized field once (in variables or its block), the drive's
   /// fields somewhere, the crowning's fields by its type, a life's blocks.
@@ -275,6 +296,9 @@ struct Study {
   bool ratio_given = false;          ///< target.speed_ratio (else target.teeth)
   double bore_diameter_mm = 0;       ///< limits.bore_diameter_mm (0: none)
   std::string backend = "ipopt";     ///< as in the file: "ipopt" or "slsqp"
+  /// "lubricant", "surfaces", "bearing_friction" as in the file (the best design's cycloid_ltca study
+  /// takes them); null without lubricant.
+  nlohmann::json lubrication_blocks;
 };
 
 struct Result {

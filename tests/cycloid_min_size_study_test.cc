@@ -292,6 +292,73 @@ TEST(CycloidMinSizeStudy, WorkEstimateCountsTheBudgetAndTheVariables) {
   }
 }
 
+// The lubricated sizing (docs/lubrication.md, Sizing): cycloid_min_size_lubricated.json with and
+// without its limits.min_efficiency. With it the limit binds, the accurate model meets it, and the
+// drive is larger and more efficient than the same sizing without it (what the efficiency costs);
+// best_cycloid_ltca.json through cycloid_ltca (its own loads, per-element losses and thermal
+// balance) gives the efficiency and the oil temperature of the sizing's accurate model.
+TEST(CycloidMinSizeStudy, AMinEfficiencyThatBindsCostsSizeIsVerifiedAndIsWhatCycloidLtcaReports) {
+  const json base = Example("cycloid_min_size_lubricated.json");
+  ASSERT_EQ(base["limits"]["min_efficiency"], 0.75);
+  const auto dir = TempDir("cms-lubricated");
+  json free = base;
+  free["limits"].erase("min_efficiency");
+  WriteFile(dir / "limited.json", base.dump());
+  WriteFile(dir / "free.json", free.dump());
+  json result[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string tag = k == 0 ? "limited" : "free";
+    const auto res = RunCamopt("run " + (dir / (tag + ".json")).string() + " --quiet --out " + (dir / tag).string() +
+                               " > /dev/null");
+    ASSERT_EQ(res.exit_code, 0) << tag << ": " << res.stderr_text;
+    result[k] = json::parse(ReadFile(dir / tag / "result.json"));
+    EXPECT_EQ(result[k]["verified"], true) << tag;
+  }
+  const json& limited = result[0]["best"];
+  const json& unlimited = result[1]["best"];
+  bool binds = false;
+  for (const json& b : result[0]["binding_limits"]) binds = binds || b["limit"] == "min_efficiency";
+  EXPECT_TRUE(binds) << result[0]["binding_limits"].dump();
+  bool checked = false;
+  for (const json& c : result[0]["verification"]["checks"])
+    if (c["limit"] == "min_efficiency") checked = c["holds"].get<bool>();
+  EXPECT_TRUE(checked);
+  const double eta = limited["accurate"]["efficiency"], eta_error = limited["estimated_error"]["efficiency"];
+  EXPECT_GE(eta + eta_error, 0.75);
+  EXPECT_NEAR(eta, 0.75, 1e-3);  // binding
+  EXPECT_LT(eta_error, 1e-4);
+  // Without the limit: smaller, and below the limit it would have had to meet.
+  EXPECT_LT(unlimited["outer_diameter_mm"].get<double>(), limited["outer_diameter_mm"].get<double>());
+  EXPECT_LT(unlimited["accurate"]["efficiency"].get<double>(), 0.75);
+  // The oil runs warmer where more is lost (the same housing).
+  EXPECT_GT(unlimited["accurate"]["oil_temperature_C"].get<double>(), limited["accurate"]["oil_temperature_C"].get<double>());
+  // cycloid_ltca on the best design at the accurate settings.
+  const auto ltca = RunCamopt("run " + (dir / "limited" / "best_cycloid_ltca.json").string() + " --quiet --out " +
+                              (dir / "ltca").string() + " > /dev/null");
+  ASSERT_EQ(ltca.exit_code, 0) << ltca.stderr_text;
+  const json l = json::parse(ReadFile(dir / "ltca" / "result.json"))["lubrication"];
+  // Two code paths over the same drive: the LTCA's contact solves differ within their tolerance.
+  EXPECT_NEAR(l["efficiency"].get<double>(), eta, 5e-5);
+  EXPECT_NEAR(l["oil_temperature_C"].get<double>(), limited["accurate"]["oil_temperature_C"].get<double>(), 0.05);
+  EXPECT_NEAR(l["power_loss_W"]["total"].get<double>(), limited["accurate"]["power_loss_W"].get<double>(), 0.01);
+}
+
+// Lubrication blocks the sizing cannot use are refused before any work: an oil-temperature limit
+// with a given temperature, a limit on the losses without a lubricant.
+TEST(CycloidMinSizeStudy, LubricationWithoutWhatItNeedsIsRefused) {
+  const json base = Example("cycloid_min_size_lubricated.json");
+  json s = base;
+  s["lubricant"].erase("thermal");
+  s["lubricant"]["temperature_C"] = 60;
+  s["limits"]["max_oil_temperature_C"] = 80;
+  testing::ExpectStudyRejected(s, "cms-lub-t", "/limits/max_oil_temperature_C", "thermal");
+  s = base;
+  s.erase("lubricant");
+  s.erase("surfaces");
+  s.erase("bearing_friction");
+  testing::ExpectStudyRejected(s, "cms-lub-none", "/limits/min_efficiency", "lubricant");
+}
+
 // End to end through the command line on the small study: exit 0, verified, the accurate stress
 // within its limit plus its error, the outer diameter 2 (a + rho) of the reported drive, and
 // best_cycloid_ltca.json a cycloid_ltca study of that drive that runs (exit 0) and parses to it.
