@@ -27,6 +27,7 @@ LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
   t.limits.roller_gap_mm += kLengthMargin_mm;
   t.limits.undercut_margin_mm += kLengthMargin_mm;
   if (t.limits.min_efficiency > 0) t.limits.min_efficiency *= 1 + kLimitMargin;
+  if (std::isfinite(t.limits.max_oil_temperature_C)) t.limits.max_oil_temperature_C -= 1e-4;  // °C
   if (t.limits.life_h > 0) t.limits.life_h *= 1 + kLimitMargin;
   return t;
 }
@@ -40,7 +41,8 @@ double PhaseDistance(double a, double b, double period) {
 }  // namespace
 
 double LcrViolation::excess() const {
-  const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N";  // lower: the rest, life_h too
+  const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N" ||
+                     limit == "max_oil_temperature_C";  // lower: the rest, life_h too
   return upper ? value - limit_value : limit_value - value;
 }
 
@@ -86,6 +88,16 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     }
   }
   c.mean_efficiency = eta / steps;
+  if (spec.lubrication) {
+    const LcrSizingLubrication& l = *spec.lubrication;
+    const lcr::RigidLubricatedPoint<double> p =
+        lcr::LubricatedRigidCycle(r, spec.material, spec.output_torque_Nmm, l.spec, l.input_speed_rpm, l.temperature_C,
+                                  l.cooling, l.balance_limit_C, steps);
+    c.mean_efficiency = p.found ? p.efficiency : NAN;
+    c.oil_temperature_C = p.found ? p.oil_C : NAN;
+    c.lubricated_loss_W = p.found ? p.loss_W : NAN;
+    c.lubrication_why = p.why;
+  }
 
   auto upper = [&](const char* key, double value, double limit) {
     if (!(value <= limit)) c.violations.push_back({key, value, limit});
@@ -98,6 +110,8 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
   lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
   lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
   if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
+  if (spec.lubrication && std::isfinite(lim.max_oil_temperature_C))
+    upper("max_oil_temperature_C", c.oil_temperature_C, lim.max_oil_temperature_C);
   if (spec.life) {
     // Every rated bearing (docs/life.md, "Life as a sizing limit"): the lcr_analysis computation of
     // the same design at `steps` samples per input revolution (rigid law, no cam weight).
@@ -198,7 +212,12 @@ Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<d
     add("undercut_margin_mm", cams[k], a.undercut_margin_mm[k], b.undercut_margin_mm[k], lim.undercut_margin_mm, false);
     add("roller_gap_mm", cams[k], a.roller_gap_mm[k], b.roller_gap_mm[k], lim.roller_gap_mm, false);
   }
-  if (lim.min_efficiency > 0) add("min_efficiency", "mean over the cycle", a.mean_efficiency, b.mean_efficiency, lim.min_efficiency, false);
+  if (lim.min_efficiency > 0)
+    add("min_efficiency", spec.lubrication ? "lubricated, mean over the cycle" : "mean over the cycle", a.mean_efficiency,
+        b.mean_efficiency, lim.min_efficiency, false);
+  if (spec.lubrication && std::isfinite(lim.max_oil_temperature_C))
+    add("max_oil_temperature_C", "the housing's balance", a.oil_temperature_C, b.oil_temperature_C,
+        lim.max_oil_temperature_C, true);
   if (lim.life_h > 0)
     for (size_t i = 0; i < a.life.size(); ++i)
       if (std::isfinite(b.life[i].life.L10h))  // a bearing without load (+∞) has nothing to check

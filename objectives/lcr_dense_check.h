@@ -18,7 +18,7 @@ namespace camopt::objectives {
 /// A limit exceeded at a design, named by the study's limit key.
 struct LcrViolation {
   std::string limit;      ///< "contact_stress_MPa", "roller_load_N", "undercut_margin_mm",
-                          ///< "roller_gap_mm", "min_efficiency", "life_h"
+                          ///< "roller_gap_mm", "min_efficiency", "max_oil_temperature_C", "life_h"
   double value = 0.0;     ///< the design's worst value of that quantity (both cams)
   double limit_value = 0.0;
   /// By how much, in the limit's unit, positive: value − limit for upper limits, limit − value
@@ -44,7 +44,13 @@ struct LcrDenseCheck {
   /// Half-width b [mm] of the Hertz line contact that sets max_stress_MPa (its subsurface stresses,
   /// docs/life.md "Contact fatigue of the cam surfaces"); 0 without load or on an undercut contact.
   std::array<double, 2> peak_half_width_mm{};
+  /// The mean efficiency over the revolution: eq. 33's, or with spec.lubrication the lubricated one
+  /// (model/lcr/lubrication.h LubricatedRigidCycle over the same angles; NaN without a thermal
+  /// equilibrium below the oil's limit, lubrication_why saying so).
   double mean_efficiency = 0.0;
+  double oil_temperature_C = NAN;  ///< with spec.lubrication: given or the housing's balance
+  double lubricated_loss_W = NAN;  ///< with spec.lubrication: the mean loss
+  std::string lubrication_why;
   /// With spec.life: every rated bearing's life, `steps` samples per input revolution over its load
   /// period and each duty line at its torque (lcr::BearingLifeOverDutyCycle, the rigid law);
   /// shortest_L10h the least of them (+∞ without spec.life).

@@ -57,6 +57,11 @@ double ForceReference(const LcrSizingSpec& s) {
 // The life rows are present (header, LcrLimits::life_h).
 bool LifeRows(const LcrSizingSpec& s) { return s.limits.life_h > 0 && s.life.has_value(); }
 
+// The oil temperature's row: the housing's balance with a finite limit.
+bool TemperatureRow(const LcrSizingSpec& s) {
+  return s.lubrication && !s.lubrication->temperature_C && std::isfinite(s.limits.max_oil_temperature_C);
+}
+
 // Block sizes, in the order the evaluator writes them.
 std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   std::vector<std::pair<std::string, int>> sizes = {
@@ -75,6 +80,7 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
     sizes.push_back({"output_stress_margin", active ? int(s.active.stress[1].size()) : nb});
   }
   if (s.limits.min_efficiency > 0) sizes.push_back({"mean_efficiency", 1});
+  if (TemperatureRow(s)) sizes.push_back({"oil_temperature_C", 1});
   if (LifeRows(s)) {
     sizes.push_back({"input_roller_life", 1});
     sizes.push_back({"output_roller_life", 1});
@@ -258,7 +264,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   const bool stress = std::isfinite(s.limits.contact_stress_MPa);
   std::vector<T> force[2], margin[2];
   std::vector<bool> loaded[2];
-  T efficiency(0.0);
+  T efficiency(0.0), oil_C(0.0);
   std::vector<T> life;
   try {
     if (LifeRows(s)) LifeMargins(s, r, life);
@@ -269,7 +275,16 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
       SideSamples(s, r, lcr::Side::kInput, force[0], margin[0], loaded[0]);
       SideSamples(s, r, lcr::Side::kOutput, force[1], margin[1], loaded[1]);
     }
-    if (s.limits.min_efficiency > 0) {
+    if (s.lubrication && (s.limits.min_efficiency > 0 || TemperatureRow(s))) {
+      // The lubricated operating point over the same angles (model/lcr/lubrication.h); no thermal
+      // equilibrium below the oil's limit: not-a-number rows, which the solvers answer by a shorter step.
+      const LcrSizingLubrication& l = *s.lubrication;
+      const lcr::RigidLubricatedPoint<T> p =
+          lcr::LubricatedRigidCycle(r, s.material, s.output_torque_Nmm, l.spec, l.input_speed_rpm, l.temperature_C,
+                                    l.cooling, l.balance_limit_C, s.efficiency_samples);
+      efficiency = p.found ? p.efficiency : T(std::numeric_limits<double>::quiet_NaN());
+      oil_C = p.found ? p.oil_C : T(std::numeric_limits<double>::quiet_NaN());
+    } else if (s.limits.min_efficiency > 0) {
       // The efficiency mixes both cams' loads (and |F_r|), so it has no short period: a full
       // revolution. Mean of the per-angle efficiency, as lcr_analysis reports it.
       const lcr::LoadCase load{s.output_torque_Nmm, s.friction_coefficient, 0.0};
@@ -314,6 +329,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     }
   }
   if (s.limits.min_efficiency > 0) y[o++] = efficiency;
+  if (TemperatureRow(s)) y[o++] = oil_C;
   for (const T& m : life) y[o++] = m;
 }
 
@@ -378,8 +394,11 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
     p.constraints.push_back({"input_stress_margin", 0.0, kInf, 1.0});
     p.constraints.push_back({"output_stress_margin", 0.0, kInf, 1.0});
   }
-  if (spec.limits.min_efficiency > 0)
-    p.constraints.push_back({"mean_efficiency", spec.limits.min_efficiency, kInf, 0.1});
+  if (spec.limits.min_efficiency > 0)  // the lubricated one scaled by its loss share 1 − η
+    p.constraints.push_back({"mean_efficiency", spec.limits.min_efficiency, kInf,
+                             spec.lubrication ? std::max(1.0 - spec.limits.min_efficiency, 1e-3) : 0.1});
+  if (TemperatureRow(spec))
+    p.constraints.push_back({"oil_temperature_C", -kInf, spec.limits.max_oil_temperature_C, 10.0});
   if (LifeRows(spec)) {
     // ln(L10h / life_h) >= 0: order one (a factor e of life per unit), scale 1.
     p.constraints.push_back({"input_roller_life", 0.0, kInf, 1.0});
@@ -397,6 +416,7 @@ Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
   s.limits.contact_stress_MPa = kInf;
   s.limits.roller_load_N = kInf;
   s.limits.min_efficiency = 0.0;
+  s.limits.max_oil_temperature_C = kInf;
   s.form = LcrConstraintForm::kAggregate;
   s.robust = nullptr;
   Problem sizing = MakeLcrSizingProblem(s);

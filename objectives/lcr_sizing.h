@@ -44,6 +44,7 @@
 #include "model/common/bearing_life.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/life.h"
+#include "model/lcr/lubrication.h"
 #include "model/lcr/reducer.h"
 #include "objectives/problem.h"
 
@@ -71,10 +72,15 @@ struct LcrLimits {
   double roller_load_N = kInf;
   double undercut_margin_mm = 0.0;
   double roller_gap_mm = 0.0;
-  double min_efficiency = 0.0;  ///< mean efficiency over the cycle (fraction); 0: no constraint
+  /// Mean efficiency over the cycle (fraction); 0: no constraint. Without LcrSizingSpec::lubrication
+  /// the mean of the paper's eq. 33 with friction_coefficient; with it the lubricated efficiency
+  /// P_out/(P_out + P_loss) of model/lcr/lubrication.h.
+  double min_efficiency = 0.0;
   /// Shortest ISO 281 basic rating life L10h of any rated bearing [h] over LcrLifeSpec's duty cycle;
   /// 0: no constraint (docs/life.md, "Life as a sizing limit").
   double life_h = 0.0;
+  /// The oil temperature of the housing's balance [°C] (with lubrication and its cooling); kInf: none.
+  double max_oil_temperature_C = kInf;
 };
 
 /// The rollers' ratings. Fixed (a catalogue roller: reference_diameter_mm = 0) or scaled with the
@@ -98,6 +104,16 @@ struct LcrLifeSpec {
   std::vector<lcr::LcrDutyLine> lines;  ///< time shares summing to 1
   LcrRollerRating roller;
   std::optional<LcrEccentricRating> eccentric;
+};
+
+/// The lubricated losses of a sizing (model/lcr/lubrication.h LubricatedRigidCycle): at the output
+/// torque and the input speed, the oil temperature given or from the housing's balance.
+struct LcrSizingLubrication {
+  lcr::LubricationSpec spec;
+  double input_speed_rpm = 0;
+  std::optional<double> temperature_C;  ///< given; absent: the housing's balance
+  HousingCooling cooling;
+  double balance_limit_C = 120;         ///< the balance is sought below it (the oil's limit)
 };
 
 /// One continuous sizing problem.
@@ -129,6 +145,9 @@ struct LcrSizingSpec {
   std::shared_ptr<const LcrRobustRule> robust;
   /// The duty cycle and ratings of the bearing lives; with limits.life_h > 0 the life rows.
   std::optional<LcrLifeSpec> life;
+  /// The lubricated losses: limits.min_efficiency bounds their efficiency (not eq. 33's), and
+  /// limits.max_oil_temperature_C the balance's oil temperature.
+  std::optional<LcrSizingLubrication> lubrication;
 };
 
 /// The roller's dynamic (static = false) or static rating [N] at roller diameter d and length L
@@ -170,7 +189,9 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   input_roller_force_N / output_... (samples, soft max, or the active samples in their order), input_stress_margin / output_...
 ///   (the dimensionless Hertz capacity margin above, samples or soft min; present when the stress
 ///   limit is finite), mean_efficiency (mean of lcr::AnalyzeAngle's η over efficiency_samples
-///   angles of a full revolution; present when limits.min_efficiency > 0).
+///   angles of a full revolution, or with spec.lubrication the lubricated η over them; present when
+///   limits.min_efficiency > 0), oil_temperature_C (with spec.lubrication's balance and a finite
+///   limits.max_oil_temperature_C).
 Problem MakeLcrSizingProblem(const LcrSizingSpec& spec);
 
 /// The longest-life problem of one combination, a bound solved before the size (sizing/lcr_min_size.h):

@@ -199,6 +199,19 @@ T OutputHolesMargin(const CycloidSizingOutput& o, const cycloid::DriveTpl<T>& d)
          d.delta_radius_mm - T(o.pins.pin_circle_radius_mm) - OutputHoleRadius(o, d);
 }
 
+// The objective's block name.
+const char* ObjectiveName(CycloidSizeObjective o) {
+  return o == CycloidSizeObjective::kVolume ? kSizingVolume
+         : o == CycloidSizeObjective::kPowerLoss ? kSizingPowerLoss
+                                                 : kSizingOuterDiameter;
+}
+
+// One disc's output power at the design torque and the lubrication's input speed [W] (0 without).
+double OutputPowerW(const CycloidSizingSpec& s) {
+  return s.lubrication ? s.design_torque_Nmm * 1e-3 * s.lubrication->input_speed_rpm * 2.0 * kPi / 60.0 / s.drive.teeth
+                       : 0.0;
+}
+
 // The lubricated losses of a design (spec.lubrication) over T = double or a Jet along one variable:
 // the loads of one disc over a revolution's pattern (the design cycle's meshes at the sizing's
 // angles, the output pins shifted as LubricationLoadsOverRevolution), `load_of(k, p)` the p-th
@@ -339,6 +352,8 @@ CycloidSizingModel::CycloidSizingModel(CycloidSizingSpec spec) : spec_(std::move
       throw std::invalid_argument("sizing variable " + v.name + ": " + why);
   if (spec_.angles_per_period < 1) throw std::invalid_argument("CycloidSizingModel: angles_per_period < 1");
   if (!(spec_.design_torque_Nmm > 0)) throw std::invalid_argument("CycloidSizingModel: design torque must be > 0");
+  if (spec_.objective == CycloidSizeObjective::kPowerLoss && !spec_.lubrication)
+    throw std::invalid_argument("CycloidSizingModel: the power-loss objective needs the lubrication");
   angles_ = cycloid::UniformCrankAngles(spec_.angles_per_period, 2.0 * kPi / spec_.drive.rollers);
 }
 
@@ -380,6 +395,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
     for (size_t j = 0; j < nv; ++j) {
       const cycloid::DriveTpl<J> dj = JetDrive(d, spec_.variables[j].name);
       const ClosedForms<J> cj = ClosedFormsOf(dj, spec_.limits);
+      // The loss's derivative replaces this below (kPowerLoss).
       e.d_objective.push_back((volume ? cj.volume : cj.diameter).v[0]);
       e.d_curtate.push_back(cj.curtate.v[0]);
       e.d_undercut.push_back(cj.undercut.v[0]);
@@ -419,6 +435,8 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
     if (spec_.lubrication) {
       e.d_efficiency.assign(nv, NAN);
       e.d_oil_temperature.assign(nv, NAN);
+      e.d_power_loss.assign(nv, NAN);
+      if (spec_.objective == CycloidSizeObjective::kPowerLoss) e.d_objective.assign(nv, NAN);
     }
   };
   if (!cycloid::CheckDrive(d).empty() || !cycloid::CheckCrowning(c, d.face_width_mm).empty()) {
@@ -586,6 +604,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   if (spec_.lubrication) {
     e.d_efficiency.assign(nv, NAN);
     e.d_oil_temperature.assign(nv, NAN);
+    e.d_power_loss.assign(nv, NAN);
   }
   if (spec_.output) {
     e.d_stiffness.assign(nv, NAN);
@@ -652,8 +671,10 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
             spec_.design_torque_Nmm);
         e.d_efficiency[j] = v.efficiency.v[0];
         e.d_oil_temperature[j] = v.temperature_C.v[0];
+        e.d_power_loss[j] = v.loss_W.v[0];
       }
     }
+    if (spec_.objective == CycloidSizeObjective::kPowerLoss) e.d_objective = e.d_power_loss;
     if (life_rows) {
       // dF_i/ds and the lag's derivative of every duty line's cycle (the design cycle's own: dd).
       std::vector<std::vector<cycloid::CycleDerivative>> line_dd(line_meshes.size());
@@ -822,8 +843,7 @@ class SizingEvaluator final : public Evaluator {
  private:
   static std::vector<OutputBlock> Blocks(const CycloidSizingModel& m) {
     const Layout l = LayoutOf(m);
-    const bool volume = m.spec().objective == CycloidSizeObjective::kVolume;
-    std::vector<OutputBlock> b = {{volume ? kSizingVolume : kSizingOuterDiameter, 0, 1},
+    std::vector<OutputBlock> b = {{ObjectiveName(m.spec().objective), 0, 1},
                                   {kSizingPeakPressure, int(l.peaks()), int(l.na * l.n1)}};
     if (l.over) b.push_back({kSizingEndDistance, int(l.ends()), int(l.na)});
     b.push_back({kSizingBacklash, int(l.backlash()), int(l.na)});
@@ -845,7 +865,13 @@ class SizingEvaluator final : public Evaluator {
   }
   void Fill(const CycloidSizingEvaluation& e, std::span<double> y) const {
     const Layout& l = layout_;
-    y[0] = model_.spec().objective == CycloidSizeObjective::kVolume ? e.volume_mm3 : e.outer_diameter_mm;
+    const CycloidSizeObjective objective = model_.spec().objective;
+    y[0] = objective == CycloidSizeObjective::kVolume      ? e.volume_mm3
+           : objective == CycloidSizeObjective::kPowerLoss ? e.power_loss_W
+                                                           : e.outer_diameter_mm;
+    // No thermal equilibrium (or no contact): a loss far beyond any design's for SLSQP's line search.
+    if (outside_ == OutsideDomain::kPenalty && objective == CycloidSizeObjective::kPowerLoss && !std::isfinite(y[0]))
+      y[0] = 1e3 * OutputPowerW(model_.spec());
     for (size_t s = 0; s < l.na * l.n1; ++s) y[l.peaks() + s] = e.pair_peak_MPa[s];
     if (l.over)
       for (size_t k = 0; k < l.na; ++k) y[l.ends() + k] = e.end_distance_um[k];
@@ -909,9 +935,11 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
   p.variables = s.variables;
   p.evaluator = std::make_unique<SizingEvaluator>(model, std::move(on_evaluation), outside);
   const bool volume = s.objective == CycloidSizeObjective::kVolume;
-  p.objective = volume ? kSizingVolume : kSizingOuterDiameter;
+  p.objective = ObjectiveName(s.objective);
   const double outer = s.drive.roller_position_radius_mm + s.drive.roller_radius_mm;
-  p.objective_scale = volume ? kPi * outer * outer * s.drive.face_width_mm : 2.0 * outer;
+  p.objective_scale = s.objective == CycloidSizeObjective::kPowerLoss ? 0.05 * OutputPowerW(s)  // 5% of the power
+                      : volume ? kPi * outer * outer * s.drive.face_width_mm
+                               : 2.0 * outer;
   const double stress_scale = std::isfinite(fast.contact_stress_MPa) ? fast.contact_stress_MPa : 1000.0;
   p.constraints.push_back({kSizingPeakPressure, -kInf, fast.contact_stress_MPa, stress_scale});
   if (s.overload_torque_Nmm > 0) p.constraints.push_back({kSizingEndDistance, fast.min_edge_margin_um, kInf, 100.0});

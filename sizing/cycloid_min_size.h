@@ -6,8 +6,9 @@
 // face_width_mm, delta_position_um, delta_radius_um (Δa, Δρ) and the crowning's coefficient_mm,
 // effective_length_mm, end_drop_mm, flat_length_mm, radius_mm (per its type).
 //
-// Objective: the ring's outer diameter 2(a + ρ), or the volume of the ring-and-disc envelope
-// π (a + ρ)² b.
+// Objective: the ring's outer diameter 2(a + ρ), the volume of the ring-and-disc envelope
+// π (a + ρ)² b, or (with spec.lubrication) the lubricated loss of one disc at the design torque and
+// input speed, P_loss = P_out (1/η − 1): the most efficient drive within the variables' ranges.
 //
 // Constraint rows, each with its exact first derivative:
 //   kSizingPeakPressure   the peak pressure of every (crank angle, roller) of the design-torque
@@ -105,6 +106,7 @@ namespace camopt::objectives {
 
 inline constexpr const char* kSizingOuterDiameter = "outer_diameter_mm";
 inline constexpr const char* kSizingVolume = "envelope_volume_mm3";
+inline constexpr const char* kSizingPowerLoss = "power_loss_W";
 inline constexpr const char* kSizingPeakPressure = "pair_peak_pressure_MPa";
 inline constexpr const char* kSizingEndDistance = "end_distance_at_overload_um";
 inline constexpr const char* kSizingBacklash = "unloaded_te_arcsec";
@@ -128,7 +130,9 @@ std::vector<std::string> CycloidSizingVariableNames();
 /// "" when `name` may be a sizing variable with this crowning type, else why not.
 std::string CycloidSizingVariableAllowed(const std::string& name, cycloid::CrowningType type);
 
-enum class CycloidSizeObjective { kOuterDiameter, kVolume };
+/// kPowerLoss: the lubricated loss of one disc [W] at the design torque and the input speed
+/// (spec.lubrication), the least loss being the highest efficiency at that output power.
+enum class CycloidSizeObjective { kOuterDiameter, kVolume, kPowerLoss };
 
 /// The study's limits (the `limits` object of cycloid_min_size, same names).
 struct CycloidSizingLimits {
@@ -264,7 +268,7 @@ struct CycloidSizingEvaluation {
   /// With spec.lubrication (kNaN outside the model's domain or without a thermal equilibrium).
   double efficiency = NAN, power_loss_W = NAN, oil_temperature_C = NAN;  ///< one disc's loss
   std::string lubrication_why;  ///< why there is no efficiency (no equilibrium below the oil's limit)
-  std::vector<double> d_efficiency, d_oil_temperature;  ///< [variable]
+  std::vector<double> d_efficiency, d_oil_temperature, d_power_loss;  ///< [variable]
 };
 
 /// The two cycles (design and overload torque) and the closed-form limits of a design x. Pure:

@@ -108,6 +108,12 @@ Polished Polish(const LcrSizingSpec& exact, const LcrMinSizeOptions& o, std::vec
       tight.limits.min_efficiency += 1.5 * deficit;
       changed = true;
     }
+    // The oil temperature likewise (the balance over the same two grids).
+    const double excess = p.check->oil_temperature_C - exact.limits.max_oil_temperature_C;
+    if (exact.lubrication && std::isfinite(exact.limits.max_oil_temperature_C) && excess > 0) {
+      tight.limits.max_oil_temperature_C -= 1.5 * excess;
+      changed = true;
+    }
     // The life rows sample each cam period at samples_per_period angles (the eccentric bearing's
     // long period more coarsely) against the check's 3600 per revolution: raise the required life
     // by the shortfall (ratio), one and a half times over.
@@ -322,11 +328,17 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
       {"min_efficiency", &LcrLimits::min_efficiency,
        l.min_efficiency > 0 && c.mean_efficiency <= l.min_efficiency * (1 + kBindingFraction)},
       {"life_h", &LcrLimits::life_h, l.life_h > 0 && c.shortest_L10h <= l.life_h * (1 + kBindingFraction)},
+      {"max_oil_temperature_C", &LcrLimits::max_oil_temperature_C,
+       spec.lubrication && std::isfinite(l.max_oil_temperature_C) &&
+           c.oil_temperature_C >= l.max_oil_temperature_C - kBindingFraction * std::max(std::abs(l.max_oil_temperature_C), 1.0)},
   };
   for (const Entry& e : entries) {
     if (!e.binds) continue;
     const double base = l.*(e.field);
-    const double h = std::max(std::abs(base), 1.0) * kSensitivityStep;
+    // The lubricated efficiency's headroom is its loss share 1 − η: 2 × kSensitivityStep of it.
+    const double h = e.field == &LcrLimits::min_efficiency && spec.lubrication
+                         ? 2 * kSensitivityStep * (1 - base)
+                         : std::max(std::abs(base), 1.0) * kSensitivityStep;
     double od[2] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}, at[2] = {base - h, base + h};
     for (int s = 0; s < 2; ++s) {
       if (at[s] <= 0 && e.field != &LcrLimits::undercut_margin_mm) continue;

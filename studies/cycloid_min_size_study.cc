@@ -662,6 +662,12 @@ Study Parse(const Node& root) {
   ParseSizingLife(root, s);
   ParseSizingOutput(root, in, fields, s);
   ParseSizingLubrication(root, in, s);
+  if (in.objective == "efficiency") {
+    if (!s.spec.lubrication)
+      root["objective"].FailWith("the efficiency objective needs \"lubricant\" (the oil whose losses it minimises) and "
+                                 "load.input_speed_rpm");
+    s.spec.objective = objectives::CycloidSizeObjective::kPowerLoss;
+  }
   return s;
 }
 
@@ -787,6 +793,8 @@ nlohmann::ordered_json Input::SchemaRules() {
                           "eccentric_bearing_load_N"})
     all.push_back(when(given("limits", key), given("output_mechanism", "pin_radius_mm")));
   all.push_back(when(required({"lubricant"}), required({"output_mechanism"})));
+  all.push_back(when(oj::parse(R"({"required": ["objective"], "properties": {"objective": {"const": "efficiency"}}})"),
+                     required({"lubricant"})));
   all.push_back(when(given("limits", "max_oil_temperature_C"), in("lubricant", required({"thermal"}))));
   oj rules = oj::object();
   rules["allOf"] = all;
@@ -894,7 +902,9 @@ nlohmann::json ModificationJson(const cycloid::Drive& d) {
 }
 
 std::string ObjectiveUnit(const Study& s) {
-  return s.spec.objective == objectives::CycloidSizeObjective::kVolume ? "mm3" : "mm";
+  return s.spec.objective == objectives::CycloidSizeObjective::kVolume      ? "mm3"
+         : s.spec.objective == objectives::CycloidSizeObjective::kPowerLoss ? "W of loss"
+                                                                             : "mm";
 }
 
 // The unit of a limit, from its key (the suffix of the study's field name).
@@ -1007,7 +1017,9 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                            {"design_torque_Nm", s.design_torque_Nm}};
   if (s.overload_torque_Nm > 0) target["overload_torque_Nm"] = s.overload_torque_Nm;
   j["target"] = target;
-  j["objective"] = s.spec.objective == objectives::CycloidSizeObjective::kVolume ? "volume" : "outer_diameter";
+  j["objective"] = s.spec.objective == objectives::CycloidSizeObjective::kVolume      ? "volume"
+                   : s.spec.objective == objectives::CycloidSizeObjective::kPowerLoss ? "efficiency"
+                                                                                       : "outer_diameter";
   nlohmann::json vars = nlohmann::json::array();
   for (const objectives::Variable& v : s.spec.variables)
     vars.push_back({{"name", v.name}, {"lower", v.lower}, {"upper", v.upper}, {"start", v.initial}});

@@ -255,7 +255,9 @@ struct Input {
                           "when absent"));
     a->Visit("limits", &limits, Field().Required().Desc("what the sized drive must meet"));
     a->Visit("objective", &objective,
-             Field().OneOf({"outer_diameter", "volume"}, "one of \"outer_diameter\", \"volume\"").Desc("what is minimised: 2 (a + ρ) or π (a + ρ)² b"));
+             Field().OneOf({"outer_diameter", "volume", "efficiency"}, "one of \"outer_diameter\", \"volume\", \"efficiency\"")
+                 .Desc("what is minimised: 2 (a + ρ), π (a + ρ)² b, or (efficiency, with lubricant) the lubricated loss "
+                       "at design_torque_Nm and load.input_speed_rpm: the most efficient drive within the ranges"));
     a->Visit("material", &material, Field().Required().Desc("the disc's and pins' elastic material"));
     a->Visit("analysis", &analysis, Field().Desc("the fast model's contact grid, crank angles and tolerance"));
     a->Visit("optimizer", &optimizer, Field().Desc("the solver, its starts and budget, the verification"));

@@ -17,6 +17,7 @@
 #include "model/lcr/kinematics.h"
 #include "studies/contact_fatigue_input.h"
 #include "studies/lcr_input.h"
+#include "studies/format.h"
 #include "studies/lcr_min_size_contact.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
@@ -316,6 +317,8 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 
 }  // namespace
 
+void ParseSizingLubrication(const Input& in, const Node& root, Study& s);
+
 Study Parse(const Node& root) {
   // Every field's type and bounds; what spans fields follows.
   const Input in = Read<Input>(root);
@@ -426,7 +429,47 @@ Study Parse(const Node& root) {
   if (s.robust && s.contact3d)
     root["robust"].Fail("no \"robust\" block together with a 3D \"contact\" (robust sizing uses the line "
                         "contact model; remove one of the two)");
+  ParseSizingLubrication(in, root, s);
   return s;
+}
+
+// "lubricant" and its blocks (docs/lubrication.md) as lcr_analysis reads them, at the target torque
+// and load.input_speed_rpm (a speed also asks for the lives, so the line model without tolerances):
+// limits.min_efficiency then bounds the lubricated efficiency, limits.max_oil_temperature_C (with
+// lubricant.thermal) the housing's oil temperature. Without a lubricant min_efficiency is eq. 33's.
+void ParseSizingLubrication(const Input& in, const Node& root, Study& s) {
+  if (!in.lubricant) {
+    for (const char* block : {"surfaces", "bearing_friction"})
+      if (root.Has(block))
+        root[block].FailWith(std::string("\"") + block + "\" needs \"lubricant\" (the oil whose losses it sets)");
+    if (in.limits.max_oil_temperature_C)
+      root["limits"]["max_oil_temperature_C"].FailWith("a limit on the oil temperature needs \"lubricant\" with its "
+                                                       "\"thermal\" balance");
+    return;
+  }
+  const std::optional<LubricationCommon> common = ParseLubricationCommon(
+      root, in.lubricant, in.surfaces, std::nullopt, in.load.input_speed_rpm, !in.duty_cycle.is_null());
+  if (in.limits.max_oil_temperature_C && common->temperature_C)
+    root["limits"]["max_oil_temperature_C"].FailWith(
+        "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
+        "lubricant.temperature_C (" + Format(*common->temperature_C) + " °C)");
+  objectives::LcrSizingLubrication l;
+  l.spec.oil = common->oil;
+  l.spec.friction = common->friction;
+  l.spec.composite_roughness_mm = common->composite_roughness_mm;
+  l.spec.rollers_rotate = common->rollers_rotate;
+  const LcrBearingFrictionInput bearings = in.bearing_friction.value_or(LcrBearingFrictionInput{});
+  l.spec.roller_bearing = bearings.rollers ? bearings.rollers->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
+  l.spec.eccentric_bearing = bearings.eccentric ? bearings.eccentric->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
+  l.input_speed_rpm = common->input_speed_rpm;
+  l.temperature_C = common->temperature_C;
+  l.cooling = common->cooling;
+  l.balance_limit_C = common->max_oil_temperature_C;
+  s.base.lubrication = l;
+  s.base.limits.max_oil_temperature_C = in.limits.max_oil_temperature_C.value_or(kInf);
+  s.lubrication_blocks = nlohmann::json::object();
+  for (const char* block : {"lubricant", "surfaces", "bearing_friction"})
+    if (root.Has(block)) s.lubrication_blocks[block] = root[block].json();
 }
 
 std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n) {
@@ -460,8 +503,14 @@ nlohmann::ordered_json Input::SchemaRules() {
   // and variables.roller_diameter_mm), and with a life their ratings (else "rollers"); a life limit
   // needs a speed, given one way; a life is sized on the line model without tolerances.
   return nlohmann::ordered_json::parse(R"({
-    "dependentRequired": {"robust": ["tolerances"], "tolerances": ["robust"], "monte_carlo": ["tolerances"]},
+    "dependentRequired": {"robust": ["tolerances"], "tolerances": ["robust"], "monte_carlo": ["tolerances"],
+                          "surfaces": ["lubricant"], "bearing_friction": ["lubricant"],
+                          "lubricant": ["material", "load"]},
     "allOf": [
+      {"if": {"required": ["lubricant"]},
+       "then": {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}},
+      {"if": {"required": ["limits"], "properties": {"limits": {"required": ["max_oil_temperature_C"]}}},
+       "then": {"required": ["lubricant"], "properties": {"lubricant": {"required": ["thermal"]}}}},
       {"if": {"required": ["roller_catalogue"]},
        "then": {"properties": {"fixed": {"not": {"required": ["roller_length_mm"]}},
                                "variables": {"not": {"required": ["roller_length_mm"]}}}},
@@ -657,7 +706,15 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   b["max_roller_force_N"] = std::max(k.max_force_N[0], k.max_force_N[1]);
   b["undercut_margin_mm"] = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
   b["roller_gap_mm"] = std::min(k.roller_gap_mm[0], k.roller_gap_mm[1]);
-  b["mean_efficiency"] = k.mean_efficiency;
+  b["mean_efficiency"] = std::isfinite(k.mean_efficiency) ? nlohmann::json(k.mean_efficiency) : nlohmann::json(nullptr);
+  if (s.base.lubrication) {  // the lubricated operating point (docs/lubrication.md)
+    b["efficiency_model"] = "lubricated (docs/lubrication.md)";
+    b["oil_temperature_C"] = std::isfinite(k.oil_temperature_C) ? nlohmann::json(k.oil_temperature_C) : nlohmann::json(nullptr);
+    b["power_loss_W"] = std::isfinite(k.lubricated_loss_W) ? nlohmann::json(k.lubricated_loss_W) : nlohmann::json(nullptr);
+    if (!k.lubrication_why.empty()) b["lubrication_error"] = k.lubrication_why;
+  } else {
+    b["efficiency_model"] = "eq. 33 with load.friction_coefficient";
+  }
   b["input"] = SideJson(r.input);
   b["output"] = SideJson(r.output);
   const char* sides[2] = {"input", "output"};
@@ -685,7 +742,8 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
     const std::map<std::string, std::pair<double, std::string>> values = {
         {"contact_stress_MPa", {l.contact_stress_MPa, "MPa"}}, {"roller_load_N", {l.roller_load_N, "N"}},
         {"undercut_margin_mm", {l.undercut_margin_mm, "mm"}},  {"roller_gap_mm", {l.roller_gap_mm, "mm"}},
-        {"min_efficiency", {l.min_efficiency, "1"}},          {"life_h", {l.life_h, "h"}}};
+        {"min_efficiency", {l.min_efficiency, "1"}},          {"life_h", {l.life_h, "h"}},
+        {"max_oil_temperature_C", {l.max_oil_temperature_C, "°C"}}};
     const auto it = values.find(key);
     nlohmann::json entry = {{"limit", key},
                             {"limit_value", it != values.end() ? it->second.first : NAN},
@@ -727,6 +785,12 @@ nlohmann::json LcrAnalysisStudyOf(const Study& s, const LcrSizingSpec& spec, con
   // The life the design was sized for, so that re-running it checks that limit too (with the speed
   // and the ratings written below).
   if (spec.limits.life_h > 0) lim["life_h"] = spec.limits.life_h;
+  if (spec.lubrication) {  // the lubricated losses at the sizing's speed (written with the lives below)
+    for (const auto& [key, block] : s.lubrication_blocks.items()) a[key] = block;
+    a["load"]["input_speed_rpm"] = spec.lubrication->input_speed_rpm;
+    if (spec.limits.min_efficiency > 0) lim["min_efficiency"] = spec.limits.min_efficiency;
+    if (std::isfinite(spec.limits.max_oil_temperature_C)) lim["max_oil_temperature_C"] = spec.limits.max_oil_temperature_C;
+  }
   a["limits"] = lim;
   a["analysis"] = {{"angle_steps", s.options.dense_steps}};
   return a;
@@ -986,6 +1050,8 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"undercut margin", "/best/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
     {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
     {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
+    {"oil temperature (lubricated)", "/best/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true},
+    {"lubricated loss", "/best/power_loss_W", "W"},
     {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
     {"binding limits", "/best/binding_names", ""},
     {"what the binding limits cost", "/best/limit_costs", ""},

@@ -25,6 +25,7 @@
 #include "studies/lcr_contact_input.h"
 #include "studies/lcr_input.h"
 #include "studies/lcr_tolerance_input.h"
+#include "studies/lubrication_input.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
 
@@ -149,7 +150,7 @@ struct Input {
   struct Limits {
     std::optional<double> contact_stress_MPa, roller_load_N;
     double undercut_margin_mm = 0, roller_gap_mm = 0;
-    std::optional<double> min_efficiency, life_h;
+    std::optional<double> min_efficiency, life_h, max_oil_temperature_C;
     template <typename Archive>
     void Serialize(Archive* a) {
       // A limit is also its constraint's scale in the solvers: bounded to values a scale can take.
@@ -164,8 +165,13 @@ struct Input {
       a->Visit("roller_gap_mm", &roller_gap_mm,
                Field().NonNegative().Unit("mm").Desc("smallest gap between neighbouring rollers, 2 r_d sin(π/n) − d_r"));
       a->Visit("min_efficiency", &min_efficiency,
-               Field().In(0.0, 0.999).Desc("the mean efficiency over the revolution with load.friction_coefficient "
-                                           "(absent: none)"));
+               Field().In(0.0, 0.999).Desc("the mean efficiency over the revolution: with load.friction_coefficient "
+                                           "(the paper's eq. 33), or with a lubricant the lubricated efficiency "
+                                           "(docs/lubrication.md; absent: none)"));
+      a->Visit("max_oil_temperature_C", &max_oil_temperature_C,
+               Field().In(-50.0, 300.0).Unit("°C").Desc(
+                   "the oil temperature of the housing's balance at the target torque and load.input_speed_rpm "
+                   "(needs lubricant.thermal)"));
       a->Visit("life_h", &life_h,
                Field().Positive().Unit("h").Desc(
                    "the shortest ISO 281 basic rating life L10h of any rated bearing over load.input_speed_rpm or the "
@@ -288,6 +294,9 @@ struct Input {
   nlohmann::json duty_cycle;
   std::optional<Rollers> rollers;
   std::optional<EccentricBearingInput> eccentric_bearing;
+  std::optional<LubricantInput> lubricant;
+  std::optional<SurfacesInput> surfaces;
+  std::optional<LcrBearingFrictionInput> bearing_friction;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -325,6 +334,15 @@ struct Input {
                           "D L); docs/life.md"));
     a->Visit("eccentric_bearing", &eccentric_bearing,
              Field().Desc("the bearing carrying the cam on the input shaft's eccentric (docs/life.md)"));
+    a->Visit("lubricant", &lubricant,
+             Field().Desc("the oil: every design's lubricated losses at the target torque and load.input_speed_rpm "
+                          "(docs/lubrication.md); limits.min_efficiency then bounds the lubricated efficiency, "
+                          "limits.max_oil_temperature_C the housing's oil temperature"));
+    a->Visit("surfaces", &surfaces,
+             Field().Desc("roughness, friction by regime and the rollers' mounting (with lubricant)"));
+    a->Visit("bearing_friction", &bearing_friction,
+             Field().Desc("Palmgren's factors of the rollers' and the eccentric's bearings (with lubricant; a bearing "
+                          "not given is not modelled)"));
   }
   /// The schema of "roller_catalogue": {"file"} or a list of CatalogueRollerInput.
   static nlohmann::ordered_json CatalogueSchema();
@@ -361,6 +379,9 @@ struct Study {
   std::shared_ptr<const objectives::LcrRobustRule> robust;
   int mc_samples = 200, mc_angle_steps = 720;
   std::uint64_t mc_seed = 1;
+  /// "lubricant", "surfaces", "bearing_friction" as in the file (best_lcr_analysis.json takes them);
+  /// null without lubricant.
+  nlohmann::json lubrication_blocks;
 };
 
 struct Candidate {

@@ -341,6 +341,18 @@ TEST(CycloidMinSizeStudy, AMinEfficiencyThatBindsCostsSizeIsVerifiedAndIsWhatCyc
   EXPECT_NEAR(l["efficiency"].get<double>(), eta, 5e-5);
   EXPECT_NEAR(l["oil_temperature_C"].get<double>(), limited["accurate"]["oil_temperature_C"].get<double>(), 0.05);
   EXPECT_NEAR(l["power_loss_W"]["total"].get<double>(), limited["accurate"]["power_loss_W"].get<double>(), 0.01);
+  // The efficiency as the objective (no efficiency limit): the most efficient drive within the
+  // ranges, more efficient than the one sized for least diameter at η >= 0.75, verified.
+  json most = free;
+  most["objective"] = "efficiency";
+  WriteFile(dir / "most.json", most.dump());
+  const auto m = RunCamopt("run " + (dir / "most.json").string() + " --quiet --out " + (dir / "most").string() +
+                           " > /dev/null");
+  ASSERT_EQ(m.exit_code, 0) << m.stderr_text;
+  const json efficient = json::parse(ReadFile(dir / "most" / "result.json"));
+  EXPECT_EQ(efficient["verified"], true);
+  EXPECT_EQ(efficient["objective"], "efficiency");
+  EXPECT_GT(efficient["best"]["accurate"]["efficiency"].get<double>(), eta + 1e-3);
 }
 
 // Lubrication blocks the sizing cannot use are refused before any work: an oil-temperature limit

@@ -300,6 +300,18 @@ TEST(CycloidMinSize, LubricatedRowsDerivativesMatchCentralDifferences) {
     else EXPECT_GT(e.oil_temperature_C, 30.0);
     for (int j = 0; j < 4; ++j)
       EXPECT_NE(jac[size_t(p.evaluator->block(kSizingEfficiency).offset) * n + j], 0.0) << spec.variables[size_t(j)].name;
+    // The efficiency objective: one disc's loss, its derivative the same Jet's.
+    CycloidSizingSpec loss_spec = spec;
+    loss_spec.objective = CycloidSizeObjective::kPowerLoss;
+    CycloidSizingModel loss_model(loss_spec);
+    Problem q = CycloidSizingProblem(loss_model, fast);
+    EXPECT_EQ(q.objective, kSizingPowerLoss);
+    camopt::testing::JacobianCheck objective = check;
+    objective.rows = {0};
+    EXPECT_EQ(camopt::testing::ExpectEvaluatorJacobianMatchesCentralDifferences(*q.evaluator, x, objective), n);
+    std::vector<double> yq(size_t(q.evaluator->num_outputs()));
+    q.evaluator->Eval(x, yq);
+    EXPECT_EQ(yq[0], e.power_loss_W);
   }
 }
 

@@ -480,6 +480,7 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_analysis", "/lubricant/thermal/", "gives off no heat", "the oil's limit temperature above the ambient"},
     {"cycloid_ltca", "/lubricant/thermal/", "gives off no heat", "the oil's limit temperature above the ambient"},
     {"cycloid_min_size", "/lubricant/thermal/", "gives off no heat", "the oil's limit temperature above the ambient"},
+    {"lcr_min_size", "/lubricant/thermal/", "gives off no heat", "the oil's limit temperature above the ambient"},
     {"lcr_crowning_tuning", "/material/youngs_modulus_GPa", "a torque the output rollers can carry",
      "the torque against what the rollers carry at the Young's modulus (a soft material carries less)"},
     {"lcr_min_size", "/search/max_lobes", "no lobe/roller combination", "the speed ratio must be reachable"},

@@ -29,10 +29,13 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "model/common/bearing_friction.h"
 #include "model/common/lubricant.h"
+#include "model/common/thermal.h"
 #include "model/contact/ehl.h"
 #include "model/contact/lubricated_friction.h"
 #include "model/lcr/contact.h"
@@ -235,6 +238,56 @@ inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material
                                         LoadModel model, const LubricationSpec& spec, double input_speed_rpm,
                                         double oil_C, int steps) {
   return LubricatedCycle(r, material, SampleCycleLoads(r, material, load, model, steps), spec, input_speed_rpm, oil_C);
+}
+
+/// An LCR's lubricated operating point over T (double or ceres::Jet: the sizing's derivatives):
+/// the rigid, frictionless loads at `steps` equally spaced input angles (AnalyzeAngle), the mean of
+/// LossesAtAngle over them at the oil temperature given or of the housing's balance (model/common/
+/// thermal.h, its derivative implicit), and η = P_out/(P_out + P_loss).
+template <typename T>
+struct RigidLubricatedPoint {
+  T efficiency{}, loss_W{}, oil_C{};
+  bool found = false;  ///< false: no thermal equilibrium below the limit (`why`)
+  std::string why;
+};
+template <typename T>
+RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material& material, double output_torque_Nmm,
+                                             const LubricationSpec& spec, double input_speed_rpm,
+                                             std::optional<double> temperature_C, const HousingCooling& cooling,
+                                             double limit_C, int steps) {
+  const LoadCase load{output_torque_Nmm, 0.0, 0.0};
+  const double e_star = material.composite_modulus_MPa();
+  std::vector<AngleLoads<T>> loads;
+  std::vector<T> theta, eccentric;
+  for (int i = 0; i < steps; ++i) {
+    theta.push_back(T(2.0 * kPi * i / steps));
+    loads.push_back(AnalyzeAngle(r, material, load, theta.back(), {true, false, true}));  // G needs the last stage
+    eccentric.push_back(loads.back().eccentric_load.norm());
+  }
+  const auto loss = [&](const T& t) {
+    T sum(0.0);
+    for (size_t i = 0; i < loads.size(); ++i)
+      sum += LossesAtAngle(r, spec, e_star, loads[i].input.contacts, loads[i].input.force, loads[i].output.contacts,
+                           loads[i].output.force, eccentric[i], theta[i], T(input_speed_rpm), t)
+                 .total();
+    return sum / T(double(loads.size()));
+  };
+  RigidLubricatedPoint<T> out;
+  if (temperature_C) {
+    out.oil_C = T(*temperature_C);
+    out.loss_W = loss(out.oil_C);
+    out.found = true;
+  } else {
+    const ThermalPoint<T> p = SolveOperatingTemperature<T>(loss, cooling, limit_C);
+    out.found = p.found;
+    out.why = p.why;
+    out.oil_C = p.temperature_C;
+    out.loss_W = p.loss_W;
+  }
+  const double omega_out = input_speed_rpm * 2.0 * kPi / 60.0 * std::abs(OutputSpeedRatio(r));
+  const T output_W(output_torque_Nmm * 1e-3 * omega_out);
+  out.efficiency = output_W / (output_W + out.loss_W);
+  return out;
 }
 
 }  // namespace camopt::lcr
