@@ -78,9 +78,11 @@ const std::vector<AskedBlock>& AskedBlocks(const std::string& kind) {
       {"lcr_min_size",
        {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
         {{"/robust"}, "/robust", "the robust sizing"},
-        {{"/contact"}, "/best/contact", "the sized design's 3D roller contact"}}},
+        {{"/contact"}, "/best/contact", "the sized design's 3D roller contact"},
+        {{"/lubricant"}, "/best/oil_temperature_C", "the sized design's lubricated losses"}}},
       {"cycloid_min_size",
-       {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"}}},
+       {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
+        {{"/lubricant"}, "/best/accurate/efficiency", "the sized design's lubricated losses"}}},
   };
   static const std::vector<AskedBlock> none;
   const auto it = table.find(kind);

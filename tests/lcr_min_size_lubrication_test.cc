@@ -152,6 +152,22 @@ TEST(LcrMinSizeLubrication, AMinEfficiencyThatBindsCostsSizeAndIsWhatLcrAnalysis
   EXPECT_NEAR(l["oil_temperature_C"].get<double>(), limited["oil_temperature_C"].get<double>(), 1e-6);
 }
 
+// A housing that cannot give off the loss below the oil's limit: the sized design has no lubricated
+// operating point, and the run says so with exit 3 (never exit 0 without the asked-for losses).
+TEST(LcrMinSizeLubrication, NoThermalEquilibriumAtTheSizedDesignExitsThree) {
+  json s = Example("lcr_min_size_lubricated.json");
+  s["limits"].erase("min_efficiency");
+  s["lubricant"]["thermal"]["housing_area_m2"] = 0.001;
+  const auto dir = TempDir("lcr-lub-hot");
+  WriteFile(dir / "study.json", s.dump());
+  const auto r = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("lubricated losses"), std::string::npos) << r.stderr_text;
+  const json res = json::parse(ReadFile(dir / "out" / "result.json"));
+  EXPECT_TRUE(res["best"]["oil_temperature_C"].is_null());
+  EXPECT_NE(res["best"]["lubrication_error"].get<std::string>().find("no equilibrium"), std::string::npos);
+}
+
 // Without a lubricant min_efficiency stays eq. 33's; an oil-temperature limit needs the balance.
 TEST(LcrMinSizeLubrication, WhatTheLimitsNeedIsRefusedOrSaid) {
   json s = Example("lcr_min_size_lubricated.json");
