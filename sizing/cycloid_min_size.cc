@@ -6,6 +6,7 @@
 #include <deque>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include <ceres/jet.h>
 
@@ -233,15 +234,19 @@ std::vector<cycloid::MeshLubricationLoadsTpl<T>> LubricationLoadsOf(const Cycloi
 
 // η = P_out/(P_out + P_loss) of one disc at the design torque, P_loss its mean over `loads`, the
 // oil temperature given or the housing's balance (its derivative implicit, model/common/thermal.h).
+// `solved`: the balance already solved on values (the derivative pass after the values' pass), so
+// the loss is evaluated over T once, at its temperature.
 template <typename T>
 struct LubricatedValues {
   T efficiency{}, loss_W{}, temperature_C{};
   bool found = false;
   std::string why;
+  ThermalPoint<double> balance;  ///< the housing's balance on values (T = double, no given temperature)
 };
 template <typename T>
 LubricatedValues<T> LubricatedOf(const CycloidSizingLubrication& l, const cycloid::DriveTpl<T>& dt, double e_star,
-                                 const std::vector<cycloid::MeshLubricationLoadsTpl<T>>& loads, double torque_Nmm) {
+                                 const std::vector<cycloid::MeshLubricationLoadsTpl<T>>& loads, double torque_Nmm,
+                                 const ThermalPoint<double>* solved = nullptr) {
   std::optional<cycloid::OutputPinContactTpl<T>> pins;
   if (l.pins)
     pins = cycloid::OutputPinContactTpl<T>{l.pins->pin_radius_mm,
@@ -256,7 +261,9 @@ LubricatedValues<T> LubricatedOf(const CycloidSizingLubrication& l, const cycloi
     out.loss_W = loss(out.temperature_C);
     out.found = true;
   } else {
-    const ThermalPoint<T> p = SolveOperatingTemperature<T>(loss, l.cooling, l.balance_limit_C);
+    const ThermalPoint<T> p = solved ? OperatingPointOver<T>(loss, l.cooling, *solved)
+                                     : SolveOperatingTemperature<T>(loss, l.cooling, l.balance_limit_C);
+    if constexpr (std::is_same_v<T, double>) out.balance = p;
     out.found = p.found;
     out.why = p.why;
     out.temperature_C = p.temperature_C;
@@ -569,6 +576,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   }
   // The lubricated losses (values).
   const double e_star = spec_.material.composite_modulus_MPa();
+  ThermalPoint<double> balance;  // solved on values, differentiated below
   if (spec_.lubrication) {
     const CycloidSizingLubrication& l = *spec_.lubrication;
     const LubricatedValues<double> v = LubricatedOf<double>(
@@ -578,6 +586,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
             [&](size_t k, size_t p) { return dc.meshes[k].pairs[p].load_N; },
             [&](size_t k) { return dc.meshes[k].rotation_rad; }),
         spec_.design_torque_Nmm);
+    balance = v.balance;
     if (v.found) {
       e.efficiency = v.efficiency;
       e.power_loss_W = v.loss_W;
@@ -668,7 +677,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
                   return jet(dc.meshes[k].pairs[p].load_N, dd[j].pair_load_N[k][p] * factor[j]);
                 },
                 [&](size_t k) { return jet(dc.meshes[k].rotation_rad, dd[j].rotation_rad[k] * factor[j]); }),
-            spec_.design_torque_Nmm);
+            spec_.design_torque_Nmm, l.temperature_C ? nullptr : &balance);
         e.d_efficiency[j] = v.efficiency.v[0];
         e.d_oil_temperature[j] = v.temperature_C.v[0];
         e.d_power_loss[j] = v.loss_W.v[0];

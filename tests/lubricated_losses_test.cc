@@ -5,7 +5,9 @@
 #include "model/common/thermal.h"
 #include "model/contact/lubricated_friction.h"
 
+#include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -149,6 +151,39 @@ TEST(OperatingTemperature, DerivativesOfTheFixedPointMatchCentralDifferences) {
     return std::vector<T>{point.temperature_C, point.loss_W};
   };
   testing::ExpectJacobianMatchesCentralDifferences<2>(f, {80.0, 20.0}, 1e-5, 1e-7);
+}
+
+// The derivative pass of a sizing: the balance solved once on values, the loss evaluated over the
+// Jet once at its temperature (OperatingPointOver), against the same central differences.
+TEST(OperatingTemperature, OneJetEvaluationAtTheSolvedPointGivesTheSameDerivatives) {
+  const HousingCooling cooling{0.1, 15.0, 0.0, 25.0};
+  const auto loss_of = [](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    return [x](const T& t) {
+      const Lubricant oil;
+      using std::pow;
+      return x[0] * pow(oil.KinematicViscosityAt(t) / T(68.0), T(2.0 / 3.0)) + x[1];
+    };
+  };
+  int jet_evaluations = 0;
+  auto f = [&](const auto& x) {
+    using T = std::decay_t<decltype(x[0])>;
+    const std::array<double, 2> xv{Value(x[0]), Value(x[1])};
+    const ThermalPoint<double> solved = SolveOperatingTemperature<double>(loss_of(xv), cooling, 150.0, 1e-13);
+    EXPECT_TRUE(solved.found) << solved.why;
+    EXPECT_LT(solved.slope_W_per_K, 0.0);  // g' = P'(t) − kA < 0: a stable balance (the loss falls as the oil thins)
+    const auto loss = loss_of(x);
+    const auto counted = [&](const T& t) {
+      if constexpr (!std::is_same_v<T, double>) ++jet_evaluations;
+      return loss(t);
+    };
+    const ThermalPoint<T> point = OperatingPointOver<T>(counted, cooling, solved);
+    EXPECT_TRUE(point.found);
+    EXPECT_NEAR(Value(point.temperature_C), solved.temperature_C, 1e-9);
+    return std::vector<T>{point.temperature_C, point.loss_W};
+  };
+  testing::ExpectJacobianMatchesCentralDifferences<2>(f, {80.0, 20.0}, 1e-5, 1e-7);
+  EXPECT_EQ(jet_evaluations, 1);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "model/common/scalar.h"
 
@@ -37,9 +38,33 @@ struct ThermalPoint {
   T temperature_C{};    ///< the oil temperature
   T loss_W{};           ///< P_loss at it
   double residual_W = 0.0;  ///< g at the answer
+  double slope_W_per_K = 0.0;  ///< ∂g/∂t at the answer (central difference of values)
   int evaluations = 0;
   std::string why;      ///< when not found
 };
+
+/// The operating point over T from a solve on values (`solved`, found): t + dt with
+/// dt = −g_T(t)/g'(t), whose value part is −g_value/g' ≈ 0 and whose derivative part is
+/// −(∂g/∂p)/g'(t); the loss at the answer moves with it, dP/dp = ∂P/∂p + P'(t) dt/dp, P' = g' + k A.
+/// One evaluation of `loss_W` over T: what a sizing's derivative pass costs once the values' pass
+/// has solved the balance.
+template <typename T, typename Loss>
+ThermalPoint<T> OperatingPointOver(const Loss& loss_W, const HousingCooling& cooling,
+                                   const ThermalPoint<double>& solved) {
+  ThermalPoint<T> out;
+  out.found = solved.found;
+  out.why = solved.why;
+  out.residual_W = solved.residual_W;
+  out.slope_W_per_K = solved.slope_W_per_K;
+  out.evaluations = solved.evaluations + 1;
+  if (!solved.found) return out;
+  const double k = cooling.conductance_W_per_K(), t = solved.temperature_C;
+  const T loss_T = loss_W(T(t));
+  const T g_T = loss_T - T(k * (t - cooling.ambient_C));
+  out.temperature_C = T(t) - (g_T - T(Value(g_T))) / T(solved.slope_W_per_K);
+  out.loss_W = loss_T + T(solved.slope_W_per_K + k) * (out.temperature_C - T(t));
+  return out;
+}
 
 /// Solves g(t) = 0 for the oil temperature. `loss_W(t)`: the power lost at oil temperature t, a
 /// callable taking T and returning T (its parameters, captured, may be Jets). `limit_C`: the oil's
@@ -49,9 +74,12 @@ ThermalPoint<T> SolveOperatingTemperature(const Loss& loss_W, const HousingCooli
                                           double rel_tolerance = 1e-9, int max_evaluations = 100) {
   ThermalPoint<T> out;
   const double k = cooling.conductance_W_per_K(), t_amb = cooling.ambient_C;
+  double last_t = NAN, last_loss = NAN;  // the loss at the last t evaluated
   const auto g = [&](double t) {
     ++out.evaluations;
-    return Value(loss_W(T(t))) - k * (t - t_amb);
+    last_t = t;
+    last_loss = Value(loss_W(T(t)));
+    return last_loss - k * (t - t_amb);
   };
   if (!(k > 0.0) || !(limit_C > t_amb)) {
     out.why = "no heat path: expected a housing conductance > 0 W/K and an oil limit above the ambient";
@@ -88,22 +116,19 @@ ThermalPoint<T> SolveOperatingTemperature(const Loss& loss_W, const HousingCooli
       side = 1;
     }
   }
-  const double loss_value = g_t + k * (t - t_amb);
+  const double loss_value = last_t == t ? last_loss : g_t + k * (t - t_amb);
   out.residual_W = g_t;
   if (!(std::abs(g_t) <= rel_tolerance * std::max(loss_value, 1e-300)) && lo < hi) {
     out.why = "the temperature did not converge in " + std::to_string(max_evaluations) + " evaluations (residual " +
               std::to_string(g_t) + " W)";
     return out;
   }
-  // The answer over T: t + dt with dt = −g_T(t)/g'(t), whose value part is −g_value/g' ≈ 0 and whose
-  // derivative part is −(∂g/∂p)/g'(t).
+  out.temperature_C = T(t);
+  out.loss_W = T(loss_value);
   const double h = 1e-4 * std::max(1.0, std::abs(t));
-  const double slope = (g(t + h) - g(t - h)) / (2.0 * h);
-  const T loss_T = loss_W(T(t));
-  const T g_T = loss_T - T(k * (t - t_amb));
-  out.temperature_C = T(t) - (g_T - T(Value(g_T))) / T(slope);
-  // The loss at the answer moves with it too: dP/dp = ∂P/∂p + P'(t) dt/dp, P' = g' + k A.
-  out.loss_W = loss_T + T(slope + k) * (out.temperature_C - T(t));
+  out.slope_W_per_K = (g(t + h) - g(t - h)) / (2.0 * h);
+  if constexpr (!std::is_same_v<T, double>) return OperatingPointOver<T>(loss_W, cooling, ThermalPoint<double>{
+      true, t, loss_value, out.residual_W, out.slope_W_per_K, out.evaluations, {}});
   out.found = true;
   return out;
 }

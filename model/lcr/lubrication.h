@@ -31,6 +31,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "model/common/bearing_friction.h"
@@ -243,18 +244,22 @@ inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material
 /// An LCR's lubricated operating point over T (double or ceres::Jet: the sizing's derivatives):
 /// the rigid, frictionless loads at `steps` equally spaced input angles (AnalyzeAngle), the mean of
 /// LossesAtAngle over them at the oil temperature given or of the housing's balance (model/common/
-/// thermal.h, its derivative implicit), and η = P_out/(P_out + P_loss).
+/// thermal.h, its derivative implicit), and η = P_out/(P_out + P_loss). `solved`: the balance of the
+/// same design already solved on values, so that the losses over T are evaluated once, at its
+/// temperature (the derivatives' pass costs one loss evaluation instead of the solve's dozen).
 template <typename T>
 struct RigidLubricatedPoint {
   T efficiency{}, loss_W{}, oil_C{};
   bool found = false;  ///< false: no thermal equilibrium below the limit (`why`)
   std::string why;
+  ThermalPoint<double> balance;  ///< the housing's balance on values (T = double, no given temperature)
 };
 template <typename T>
 RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material& material, double output_torque_Nmm,
                                              const LubricationSpec& spec, double input_speed_rpm,
                                              std::optional<double> temperature_C, const HousingCooling& cooling,
-                                             double limit_C, int steps) {
+                                             double limit_C, int steps,
+                                             const ThermalPoint<double>* solved = nullptr) {
   const LoadCase load{output_torque_Nmm, 0.0, 0.0};
   const double e_star = material.composite_modulus_MPa();
   std::vector<AngleLoads<T>> loads;
@@ -278,7 +283,9 @@ RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material
     out.loss_W = loss(out.oil_C);
     out.found = true;
   } else {
-    const ThermalPoint<T> p = SolveOperatingTemperature<T>(loss, cooling, limit_C);
+    const ThermalPoint<T> p =
+        solved ? OperatingPointOver<T>(loss, cooling, *solved) : SolveOperatingTemperature<T>(loss, cooling, limit_C);
+    if constexpr (std::is_same_v<T, double>) out.balance = p;
     out.found = p.found;
     out.why = p.why;
     out.oil_C = p.temperature_C;
