@@ -1050,6 +1050,10 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   }
   if (r.lubrication) j["lubrication"] = WriteJson(*r.lubrication);
   else if (s.lubrication) j["lubrication"] = {{"error", r.lubrication_error}};
+  // With a lubricant the drive has an efficiency: the life block points to it instead of calling
+  // the model frictionless.
+  if (r.life && s.lubrication)
+    j["life"]["efficiency"] = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
   return j;
 }
 

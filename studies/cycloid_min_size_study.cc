@@ -1359,7 +1359,8 @@ const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_min_size", Estima
 
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("cycloid_min_size", {
-    {"smallest outer diameter", "/best/outer_diameter_mm", "mm"},
+    // "outer diameter", not "smallest": the objective may be the volume or the lubricated loss.
+    {"outer diameter", "/best/outer_diameter_mm", "mm"},
     {"teeth (disc) / pins", "/target/teeth", ""},
     {"pin circle radius", "/best/drive/roller_position_radius_mm", "mm"},
     {"pin radius", "/best/drive/roller_radius_mm", "mm"},

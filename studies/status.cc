@@ -79,10 +79,12 @@ const std::vector<AskedBlock>& AskedBlocks(const std::string& kind) {
        {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
         {{"/robust"}, "/robust", "the robust sizing"},
         {{"/contact"}, "/best/contact", "the sized design's 3D roller contact"},
-        {{"/lubricant"}, "/best/oil_temperature_C", "the sized design's lubricated losses"}}},
+        {{"/lubricant"}, "/best/oil_temperature_C", "the sized design's lubricated losses", {},
+         "/best/lubrication_error"}}},
       {"cycloid_min_size",
        {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
-        {{"/lubricant"}, "/best/accurate/efficiency", "the sized design's lubricated losses"}}},
+        {{"/lubricant"}, "/best/accurate/efficiency", "the sized design's lubricated losses", {},
+         "/best/accurate/lubrication_error"}}},
   };
   static const std::vector<AskedBlock> none;
   const auto it = table.find(kind);
@@ -113,6 +115,10 @@ std::vector<std::string> MissingAnswers(const std::string& kind, const nlohmann:
     std::string why;
     for (const char* k : {"skipped", "error"})
       if (a && a->is_object() && a->contains(k) && (*a)[k].is_string()) why = (*a)[k].get<std::string>();
+    if (why.empty() && !b.reason.empty()) {
+      const nlohmann::json::json_pointer reason(b.reason);
+      if (result.contains(reason) && result.at(reason).is_string()) why = result.at(reason).get<std::string>();
+    }
     if (!a || a->is_null() || !why.empty())
       missing.push_back(b.what + " (" + b.answer + (why.empty() ? "" : ": " + why) + ")");
   }

@@ -69,6 +69,9 @@ struct AskedBlock {
   /// The lazy stages that compute it: with `analysis.evaluate` given and none of these in it, the
   /// block is not asked for (empty: not a stage of its own).
   std::vector<std::string> stages = {};
+  /// Where the result says why the answer is null, when not inside the answer itself (a string;
+  /// empty: nowhere else).
+  std::string reason = {};
 };
 
 /// The blocks `kind` computes on request (one table for every kind).

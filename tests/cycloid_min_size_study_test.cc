@@ -336,7 +336,11 @@ TEST(CycloidMinSizeStudy, AMinEfficiencyThatBindsCostsSizeIsVerifiedAndIsWhatCyc
   const auto ltca = RunCamopt("run " + (dir / "limited" / "best_cycloid_ltca.json").string() + " --quiet --out " +
                               (dir / "ltca").string() + " > /dev/null");
   ASSERT_EQ(ltca.exit_code, 0) << ltca.stderr_text;
-  const json l = json::parse(ReadFile(dir / "ltca" / "result.json"))["lubrication"];
+  const json ltca_result = json::parse(ReadFile(dir / "ltca" / "result.json"));
+  const json l = ltca_result["lubrication"];
+  // With a lubricant the life block points to the efficiency instead of calling the drive frictionless.
+  EXPECT_EQ(ltca_result["life"]["efficiency"].get<std::string>().rfind("lubrication.efficiency", 0), 0u)
+      << ltca_result["life"]["efficiency"];
   // Two code paths over the same drive: the LTCA's contact solves differ within their tolerance.
   EXPECT_NEAR(l["efficiency"].get<double>(), eta, 5e-5);
   EXPECT_NEAR(l["oil_temperature_C"].get<double>(), limited["accurate"]["oil_temperature_C"].get<double>(), 0.05);
@@ -367,6 +371,8 @@ TEST(CycloidMinSizeStudy, NoThermalEquilibriumAtTheSizedDesignExitsThree) {
   const auto r = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("lubricated losses"), std::string::npos) << r.stderr_text;
+  // and why: the balance's own reason beside the null answer
+  EXPECT_NE(r.stderr_text.find("no equilibrium below the oil's limit"), std::string::npos) << r.stderr_text;
   const json res = json::parse(ReadFile(dir / "out" / "result.json"));
   EXPECT_TRUE(res["best"]["accurate"]["efficiency"].is_null());
   EXPECT_NE(res["best"]["accurate"]["lubrication_error"].get<std::string>().find("no equilibrium"), std::string::npos);

@@ -163,6 +163,8 @@ TEST(LcrMinSizeLubrication, NoThermalEquilibriumAtTheSizedDesignExitsThree) {
   const auto r = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("lubricated losses"), std::string::npos) << r.stderr_text;
+  // and why: the balance's own reason beside the null answer
+  EXPECT_NE(r.stderr_text.find("no equilibrium below the oil's limit"), std::string::npos) << r.stderr_text;
   const json res = json::parse(ReadFile(dir / "out" / "result.json"));
   EXPECT_TRUE(res["best"]["oil_temperature_C"].is_null());
   EXPECT_NE(res["best"]["lubrication_error"].get<std::string>().find("no equilibrium"), std::string::npos);
