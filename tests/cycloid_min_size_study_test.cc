@@ -363,17 +363,8 @@ TEST(CycloidMinSizeStudy, AMinEfficiencyThatBindsCostsSizeIsVerifiedAndIsWhatCyc
 // lubricated losses, the efficiency null with the reason beside it.
 TEST(CycloidMinSizeStudy, NoThermalEquilibriumAtTheSizedDesignExitsThree) {
   json s = Example("cycloid_min_size_lubricated.json");
-  s["limits"].erase("min_efficiency");
   s["optimizer"] = {{"backend", "slsqp"}, {"starts", 1}};
-  s["lubricant"]["thermal"]["housing_area_m2"] = 0.001;
-  const auto dir = TempDir("cms-lub-hot");
-  WriteFile(dir / "study.json", s.dump());
-  const auto r = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
-  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("lubricated losses"), std::string::npos) << r.stderr_text;
-  // and why: the balance's own reason beside the null answer
-  EXPECT_NE(r.stderr_text.find("no equilibrium below the oil's limit"), std::string::npos) << r.stderr_text;
-  const json res = json::parse(ReadFile(dir / "out" / "result.json"));
+  const json res = camopt::testing::RunSizingWithoutThermalEquilibrium(s, "cms-lub-hot");
   EXPECT_TRUE(res["best"]["accurate"]["efficiency"].is_null());
   EXPECT_NE(res["best"]["accurate"]["lubrication_error"].get<std::string>().find("no equilibrium"), std::string::npos);
 }

@@ -155,17 +155,7 @@ TEST(LcrMinSizeLubrication, AMinEfficiencyThatBindsCostsSizeAndIsWhatLcrAnalysis
 // A housing that cannot give off the loss below the oil's limit: the sized design has no lubricated
 // operating point, and the run says so with exit 3 (never exit 0 without the asked-for losses).
 TEST(LcrMinSizeLubrication, NoThermalEquilibriumAtTheSizedDesignExitsThree) {
-  json s = Example("lcr_min_size_lubricated.json");
-  s["limits"].erase("min_efficiency");
-  s["lubricant"]["thermal"]["housing_area_m2"] = 0.001;
-  const auto dir = TempDir("lcr-lub-hot");
-  WriteFile(dir / "study.json", s.dump());
-  const auto r = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
-  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("lubricated losses"), std::string::npos) << r.stderr_text;
-  // and why: the balance's own reason beside the null answer
-  EXPECT_NE(r.stderr_text.find("no equilibrium below the oil's limit"), std::string::npos) << r.stderr_text;
-  const json res = json::parse(ReadFile(dir / "out" / "result.json"));
+  const json res = camopt::testing::RunSizingWithoutThermalEquilibrium(Example("lcr_min_size_lubricated.json"), "lcr-lub-hot");
   EXPECT_TRUE(res["best"]["oil_temperature_C"].is_null());
   EXPECT_NE(res["best"]["lubrication_error"].get<std::string>().find("no equilibrium"), std::string::npos);
 }

@@ -329,4 +329,19 @@ inline nlohmann::json Example(const std::string& name) {
   return nlohmann::json::parse(ReadFile(SourcePath("studies/examples/" + name)));
 }
 
+/// A lubricated sizing `study` run without its efficiency limit in a housing too small to give off
+/// the sized design's loss (0.001 m²): expects exit 3 naming the lubricated losses and the balance's
+/// own reason, and returns result.json.
+inline nlohmann::json RunSizingWithoutThermalEquilibrium(nlohmann::json study, const std::string& tag) {
+  study["limits"].erase("min_efficiency");
+  study["lubricant"]["thermal"]["housing_area_m2"] = 0.001;
+  const auto dir = TempDir(tag);
+  WriteFile(dir / "study.json", study.dump());
+  const CliResult r = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("lubricated losses"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("no equilibrium below the oil's limit"), std::string::npos) << r.stderr_text;
+  return nlohmann::json::parse(ReadFile(dir / "out" / "result.json"));
+}
+
 }  // namespace camopt::testing
