@@ -541,6 +541,8 @@ LubricatedPoint LubricatedAt(const Study& s, const std::vector<cycloid::MeshLubr
       mean.output_pins_sliding += discs * x.output_pins_sliding / n;
       mean.output_roller_bearings += discs * x.output_roller_bearings / n;
       mean.crank_bearing += discs * x.crank_bearing / n;
+      mean.ring_pins_rolling += discs * x.ring_pins_rolling / n;
+      mean.output_pins_rolling += discs * x.output_pins_rolling / n;
       if (k % 2 == 0) even += discs * x.total(), ++evens;
       if (fill && x.min_lambda_pin >= 0 && (mean.min_lambda_pin < 0 || x.min_lambda < mean.min_lambda)) {
         mean.min_lambda = x.min_lambda;
@@ -580,6 +582,8 @@ void RunLubrication(const Study& s, const RunContext& ctx, Result& r) {
     out.power_loss_W.output_pins_sliding = p.mean.output_pins_sliding;
     out.power_loss_W.output_roller_bearings = p.mean.output_roller_bearings;
     out.power_loss_W.crank_bearing = p.mean.crank_bearing;
+    out.power_loss_W.ring_pins_rolling = p.mean.ring_pins_rolling;
+    if (l.pins) out.power_loss_W.output_pins_rolling = p.mean.output_pins_rolling;
     out.power_loss_sampling_error_W = p.sampling_error_W;
     if (p.mean.min_lambda_pin >= 0)
       out.min_film_lambda = {p.mean.min_lambda, p.mean.min_film_mm * 1e3, p.min_lambda_crank_rad * 180 / kPi,

@@ -437,6 +437,8 @@ void RunLubrication(const Study& st, const RunContext& ctx, Result& res) {
       out.power_loss_W.roller_bearings_input = c.mean.roller_bearings_input;
       out.power_loss_W.roller_bearings_output = c.mean.roller_bearings_output;
       out.power_loss_W.eccentric_bearing = c.mean.eccentric_bearing;
+      out.power_loss_W.rolling_input_cam = c.mean.rolling_input;
+      out.power_loss_W.rolling_output_cam = c.mean.rolling_output;
       out.power_loss_sampling_error_W = c.sampling_error_W;
       // The running torque without load, at the same speed and oil temperature.
       lcr::LoadCase idle = st.load;

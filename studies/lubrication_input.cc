@@ -7,10 +7,38 @@
 
 namespace camopt::studies {
 
-Lubricant ToLubricant(const LubricantInput& in, const Node& node) {
+Lubricant ToLubricant(const LubricantInput& in, const Node& node, std::string* source) {
+  Lubricant oil;
+  const TabulatedOil* table = nullptr;
+  if (in.iso_vg) {
+    for (const char* field : {"nu40_cSt", "nu100_cSt"})
+      if (node.Has(field))
+        node[field].FailWith(std::string("give the oil one way: \"iso_vg\" (the built-in oil of that grade) or "
+                                         "\"nu40_cSt\" and \"nu100_cSt\" (a data sheet's), not both"));
+    const std::string base = in.base_oil.value_or("mineral");
+    table = FindTabulatedOil(*in.iso_vg, base);
+    if (!table) {
+      std::string grades;
+      for (const TabulatedOil& o : kTabulatedOils)
+        if (base == o.base) grades += (grades.empty() ? "" : ", ") + std::to_string(o.iso_vg);
+      node["iso_vg"].Fail("an ISO VG grade of the built-in " + base + " oils: one of " + grades +
+                          " (or give nu40_cSt and nu100_cSt of the oil's data sheet)");
+    }
+    oil.nu40_mm2_s = table->nu40_mm2_s;
+    oil.nu100_mm2_s = table->nu100_mm2_s;
+  } else {
+    if (in.base_oil)
+      node["base_oil"].FailWith("\"base_oil\" picks a built-in oil with \"iso_vg\": give iso_vg, or remove base_oil");
+    if (!in.nu40_cSt || !in.nu100_cSt)
+      node.FailWith(std::string("expected the oil's viscosity: \"nu40_cSt\" and \"nu100_cSt\" (mm²/s, its data "
+                                "sheet's) or \"iso_vg\" (a grade of the built-in oils); found no ") +
+                    (in.nu40_cSt ? "nu100_cSt" : "nu40_cSt"));
+    oil.nu40_mm2_s = *in.nu40_cSt;
+    oil.nu100_mm2_s = *in.nu100_cSt;
+  }
   // Equal values are a viscosity that does not change with temperature (the Walther law's B = 0).
-  if (!(in.nu100_cSt <= in.nu40_cSt))
-    node["nu100_cSt"].Fail("a viscosity at 100 °C at most nu40_cSt (" + Format(in.nu40_cSt) +
+  if (!(oil.nu100_mm2_s <= oil.nu40_mm2_s))
+    node["nu100_cSt"].Fail("a viscosity at 100 °C at most nu40_cSt (" + Format(oil.nu40_mm2_s) +
                            " mm²/s): oils thin as they warm");
   if (in.temperature_C.has_value() == in.thermal.has_value())
     node.FailWith(in.thermal ? "give the oil's temperature one way: \"temperature_C\" or \"thermal\", not both"
@@ -25,11 +53,16 @@ Lubricant ToLubricant(const LubricantInput& in, const Node& node) {
     thermal["max_oil_temperature_C"].Fail("an oil limit above ambient_C (" + Format(in.thermal->ambient_C) + " °C)" +
                                           ": the housing gives off no heat below it");
   }
-  Lubricant oil;
-  oil.name = in.name.value_or("oil");
-  oil.nu40_mm2_s = in.nu40_cSt;
-  oil.nu100_mm2_s = in.nu100_cSt;
-  oil.density15_kg_m3 = in.density_kg_m3;
+  oil.name = in.name.value_or(table ? std::string(table->product) + " (built-in ISO VG " +
+                                          std::to_string(table->iso_vg) + " " + table->base + ")"
+                                    : std::string("oil"));
+  oil.density15_kg_m3 = in.density_kg_m3.value_or(table && table->density15_kg_m3 > 0 ? table->density15_kg_m3 : 880.0);
+  if (source)
+    *source = !table ? "given"
+                     : std::string(table->source) + " (typical values)" +
+                           (in.density_kg_m3 ? "; density given"
+                            : table->density15_kg_m3 > 0 ? ""
+                                                         : "; density not on the data sheet: 880 kg/m³ assumed");
   oil.pressure_viscosity_per_MPa = in.pressure_viscosity_1_per_GPa.value_or(20.0) * 1e-3;
   return oil;
 }
@@ -64,7 +97,7 @@ std::optional<LubricationCommon> ParseLubricationCommon(const Node& root, const 
   }
   const Node node = root["lubricant"];
   LubricationCommon l;
-  l.oil = ToLubricant(*lubricant, node);
+  l.oil = ToLubricant(*lubricant, node, &l.oil_source);
   l.alpha_given = lubricant->pressure_viscosity_1_per_GPa.has_value();
   if (!root.Has("material")) (void)root["material"];  // the film needs E*
   if (!root.Has("load")) (void)root["load"];
@@ -106,7 +139,7 @@ LubricationResult CommonLubricationResult(const LubricationCommon& l, const OilT
   LubricationResult out;
   out.oil = {l.oil.name, l.oil.nu40_mm2_s, l.oil.nu100_mm2_s, l.oil.density15_kg_m3,
              l.oil.pressure_viscosity_per_MPa * 1e3,
-             l.alpha_given ? "given" : "assumed: 20 1/GPa, typical of mineral oils"};
+             l.alpha_given ? "given" : "assumed: 20 1/GPa, typical of mineral oils", l.oil_source};
   out.temperature_source = t.thermal ? "thermal balance" : "given";
   out.oil_temperature_C = t.celsius;
   if (t.thermal) {
@@ -121,7 +154,7 @@ LubricationResult CommonLubricationResult(const LubricationCommon& l, const OilT
   out.input_power_W = output_power_W + total_loss_W;
   out.efficiency = output_power_W > 0.0 ? output_power_W / out.input_power_W : 0.0;
   out.rollers = l.rollers_rotate ? "rotating" : "fixed";
-  out.not_modelled = {"the EHL rolling (Poiseuille) loss of the contacts", "seals and churning"};
+  out.not_modelled = {"seals and churning"};
   if (l.map) out.efficiency_map_file = "efficiency_map.csv";
   return out;
 }

@@ -45,27 +45,40 @@ struct ThermalInput {
   }
 };
 
-/// "lubricant": the oil (ν40 and ν100 of its data sheet) and its temperature, given or from the
-/// housing's heat balance (exactly one of "temperature_C", "thermal").
+/// "lubricant": the oil (ν40 and ν100 of its data sheet, or an ISO VG grade and base of the built-in
+/// table, model/common/lubricant.h kTabulatedOils) and its temperature, given or from the housing's
+/// heat balance (exactly one of "temperature_C", "thermal").
 struct LubricantInput {
   std::optional<std::string> name;
-  double nu40_cSt = 0, nu100_cSt = 0;
+  std::optional<double> nu40_cSt, nu100_cSt;
+  std::optional<int> iso_vg;
+  std::optional<std::string> base_oil;
   std::optional<double> pressure_viscosity_1_per_GPa;
-  double density_kg_m3 = 880.0;
+  std::optional<double> density_kg_m3;
   std::optional<double> temperature_C;
   std::optional<ThermalInput> thermal;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("name", &name, Field().Desc("the oil's name, in the results"));
     a->Visit("nu40_cSt", &nu40_cSt,
-             Field().Required().Positive().Unit("mm²/s").Desc("kinematic viscosity at 40 °C (the data sheet's)"));
+             Field().Positive().Unit("mm²/s").Desc(
+                 "kinematic viscosity at 40 °C (the data sheet's; with nu100_cSt, or iso_vg instead)"));
     a->Visit("nu100_cSt", &nu100_cSt,
-             Field().Required().Positive().Unit("mm²/s").Desc(
+             Field().Positive().Unit("mm²/s").Desc(
                  "kinematic viscosity at 100 °C, at most nu40_cSt (with it, the ASTM D341 temperature law)"));
+    a->Visit("iso_vg", &iso_vg,
+             Field().AtLeast(1).Desc("an ISO 3448 viscosity grade (32, 46, 68, 100, 150, 220, 320, 460, 680): the "
+                                     "built-in oil of that grade and base_oil, its data sheet's ν40, ν100 and density "
+                                     "(not with nu40_cSt, nu100_cSt)"));
+    a->Visit("base_oil", &base_oil,
+             Field().OneOf({"mineral", "synthetic"}).Desc(
+                 "with iso_vg: a mineral gear oil or a synthesized-hydrocarbon (PAO-type) one (absent: mineral)"));
     a->Visit("pressure_viscosity_1_per_GPa", &pressure_viscosity_1_per_GPa,
              Field().In(0.0, 100.0).Unit("1/GPa").Default(20.0).Desc(
                  "Barus' α (absent: 20, typical of mineral oils; the results say it was assumed)"));
-    a->Visit("density_kg_m3", &density_kg_m3, Field().In(500.0, 2500.0).Unit("kg/m³").Desc("density at 15 °C"));
+    a->Visit("density_kg_m3", &density_kg_m3,
+             Field().In(500.0, 2500.0).Unit("kg/m³").Desc(
+                 "density at 15 °C (absent: the built-in oil's, else 880, typical of mineral oils)"));
     a->Visit("temperature_C", &temperature_C,
              Field().In(-50.0, 300.0).Unit("°C").Desc("the oil's temperature (not with thermal)"));
     a->Visit("thermal", &thermal,
@@ -73,7 +86,14 @@ struct LubricantInput {
                           "temperature_C)"));
   }
   static nlohmann::ordered_json SchemaRules() {
-    return {{"oneOf", {{{"required", {"temperature_C"}}}, {{"required", {"thermal"}}}}}};
+    return nlohmann::ordered_json::parse(R"({
+      "allOf": [
+        {"properties": {"iso_vg": {"enum": [32, 46, 68, 100, 150, 220, 320, 460, 680]}}},
+        {"oneOf": [{"required": ["temperature_C"]}, {"required": ["thermal"]}]},
+        {"oneOf": [{"required": ["nu40_cSt", "nu100_cSt"], "not": {"required": ["iso_vg"]}},
+                   {"required": ["iso_vg"], "not": {"anyOf": [{"required": ["nu40_cSt"]}, {"required": ["nu100_cSt"]}]}}]},
+        {"if": {"not": {"required": ["iso_vg"]}}, "then": {"not": {"required": ["base_oil"]}}}
+      ]})");
   }
 };
 
@@ -163,7 +183,9 @@ struct EfficiencyMapInput {
 };
 
 /// The lubricant of the model from the declaration (ν in mm²/s, α in 1/MPa).
-Lubricant ToLubricant(const LubricantInput& in, const Node& node);
+/// `source` (when given) receives where ν40, ν100 and the density come from: "given", or the built-in
+/// oil's data sheet.
+Lubricant ToLubricant(const LubricantInput& in, const Node& node, std::string* source = nullptr);
 /// The housing's heat path.
 HousingCooling ToCooling(const ThermalInput& in);
 /// σ = √(Rq_roller² + Rq_cam²) [mm].
@@ -172,6 +194,7 @@ double CompositeRoughnessMm(const SurfacesInput& in);
 /// What every kind's lubrication takes from the study, in model units.
 struct LubricationCommon {
   Lubricant oil;
+  std::string oil_source = "given";  ///< ToLubricant's `source`
   bool alpha_given = false;
   contact::RegimeFriction friction;
   double composite_roughness_mm = 0;
@@ -198,9 +221,12 @@ struct LubricationResult {
     std::string name;
     double nu40_cSt = 0, nu100_cSt = 0, density_kg_m3 = 0, pressure_viscosity_1_per_GPa = 0;
     std::string pressure_viscosity_source;
+    std::string source;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("name", &name, Field().Desc("the oil"));
+      a->Visit("source", &source,
+               Field().Desc("where ν40, ν100 and the density come from: given, or the built-in oil's data sheet"));
       a->Visit("nu40_cSt", &nu40_cSt, Field().Unit("mm²/s"));
       a->Visit("nu100_cSt", &nu100_cSt, Field().Unit("mm²/s"));
       a->Visit("density_kg_m3", &density_kg_m3, Field().Unit("kg/m³").Desc("at 15 °C"));
@@ -211,22 +237,29 @@ struct LubricationResult {
   /// The mean loss per element; the elements of the kind's mechanism only (an LCR has no ring pins).
   struct Losses {
     double total = 0;
-    std::optional<double> sliding_input_cam, sliding_output_cam, roller_bearings_input, roller_bearings_output,
-        eccentric_bearing;
-    std::optional<double> ring_pins_sliding, ring_pin_bearings, output_pins_sliding, output_roller_bearings,
-        crank_bearing;
+    std::optional<double> sliding_input_cam, sliding_output_cam, rolling_input_cam, rolling_output_cam,
+        roller_bearings_input, roller_bearings_output, eccentric_bearing;
+    std::optional<double> ring_pins_sliding, ring_pins_rolling, ring_pin_bearings, output_pins_sliding,
+        output_pins_rolling, output_roller_bearings, crank_bearing;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("total", &total, Field().Unit("W"));
       a->Visit("sliding_input_cam", &sliding_input_cam, Field().Unit("W").Desc("LCR: μ(λ) F v_s on the input cam"));
       a->Visit("sliding_output_cam", &sliding_output_cam, Field().Unit("W").Desc("LCR: on the output cam"));
+      a->Visit("rolling_input_cam", &rolling_input_cam,
+               Field().Unit("W").Desc("LCR: the EHL rolling (Poiseuille) loss 2 u F_R on the input cam"));
+      a->Visit("rolling_output_cam", &rolling_output_cam, Field().Unit("W").Desc("LCR: on the output cam"));
       a->Visit("roller_bearings_input", &roller_bearings_input,
                Field().Unit("W").Desc("LCR: Palmgren, every roller of the fixed turret"));
       a->Visit("roller_bearings_output", &roller_bearings_output, Field().Unit("W").Desc("LCR: of the output turret"));
       a->Visit("eccentric_bearing", &eccentric_bearing, Field().Unit("W").Desc("LCR: the cam's bearing on the eccentric"));
       a->Visit("ring_pins_sliding", &ring_pins_sliding, Field().Unit("W").Desc("cycloid: μ(λ) F v_s at the ring pins"));
+      a->Visit("ring_pins_rolling", &ring_pins_rolling,
+               Field().Unit("W").Desc("cycloid: the EHL rolling (Poiseuille) loss 2 u F_R at the ring pins"));
       a->Visit("ring_pin_bearings", &ring_pin_bearings, Field().Unit("W").Desc("cycloid: the rotating ring pins' bearings"));
       a->Visit("output_pins_sliding", &output_pins_sliding, Field().Unit("W").Desc("cycloid: pins sliding in the holes"));
+      a->Visit("output_pins_rolling", &output_pins_rolling,
+               Field().Unit("W").Desc("cycloid: the rolling loss at the output pins' contacts"));
       a->Visit("output_roller_bearings", &output_roller_bearings,
                Field().Unit("W").Desc("cycloid: the output pins' rollers' bearings"));
       a->Visit("crank_bearing", &crank_bearing, Field().Unit("W").Desc("cycloid: the discs' bearings on the crank"));

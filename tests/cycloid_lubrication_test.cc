@@ -144,7 +144,13 @@ TEST(CycloidLubrication, MetamorphicRelations) {
   CycloidLubricationSpec none = Spec(false);
   none.friction = {0.0, 0.0};
   none.crank_bearing.f0 = none.crank_bearing.f1 = 0.0;
+  none.rolling_loss = false;  // the viscous rolling loss is no friction coefficient
   EXPECT_EQ(LossesAtCrankAngle(d, none, e_star, x, pins, 1500, 60).total(), 0.0);
+  none.rolling_loss = true;
+  const CycloidAngleLosses rolling = LossesAtCrankAngle(d, none, e_star, x, pins, 1500, 60);
+  EXPECT_GT(rolling.ring_pins_rolling, 0.0);
+  EXPECT_GT(rolling.output_pins_rolling, 0.0);
+  EXPECT_EQ(rolling.total(), rolling.ring_pins_rolling + rolling.output_pins_rolling);
   double lambda = 0.0;
   for (double nu40 : {32.0, 68.0, 150.0}) {
     CycloidLubricationSpec s = Spec(true);
@@ -161,6 +167,9 @@ TEST(CycloidLubrication, MetamorphicRelations) {
   EXPECT_LT(two.min_lambda, 1.0);
   EXPECT_NEAR(two.ring_pins_sliding, 2 * one.ring_pins_sliding, 1e-12 * two.ring_pins_sliding);
   EXPECT_NEAR(two.output_pins_sliding, 2 * one.output_pins_sliding, 1e-12 * two.output_pins_sliding);
+  // The rolling loss 2 u F_R with F_R ∝ u^0.658 on the same loads: × 2^1.658.
+  EXPECT_NEAR(two.ring_pins_rolling, std::pow(2.0, 1.658) * one.ring_pins_rolling, 1e-12 * two.ring_pins_rolling);
+  EXPECT_NEAR(two.output_pins_rolling, std::pow(2.0, 1.658) * one.output_pins_rolling, 1e-12 * two.output_pins_rolling);
   EXPECT_GT(one.output_pins_sliding, 0.0);
 }
 

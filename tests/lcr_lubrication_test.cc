@@ -136,10 +136,20 @@ TEST(LcrLubrication, NoFrictionGivesEfficiencyOne) {
   for (bool rotate : {true, false}) {
     LubricationSpec s = Spec(rotate);
     s.friction = {0.0, 0.0};
+    s.rolling_loss = false;  // the viscous rolling loss is no friction coefficient
     s.roller_bearing.f0 = s.roller_bearing.f1 = s.eccentric_bearing.f0 = s.eccentric_bearing.f1 = 0.0;
     const CycleLubrication c = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, s, 1500.0, 60.0, 90);
     EXPECT_EQ(c.mean.total(), 0.0);
     EXPECT_EQ(c.efficiency, 1.0);
+    // The rolling (Poiseuille) loss alone: positive, and it vanishes with the oil's viscosity as
+    // F_R ∝ (η0 u)^0.658 (η0 = ρν: a thousandth of the density, a thousandth of η0).
+    s.rolling_loss = true;
+    const CycleLubrication rolling = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, s, 1500.0, 60.0, 90);
+    EXPECT_GT(rolling.mean.rolling_input + rolling.mean.rolling_output, 0.0);
+    EXPECT_EQ(rolling.mean.total(), rolling.mean.rolling_input + rolling.mean.rolling_output);
+    s.oil.density15_kg_m3 *= 1e-3;
+    const CycleLubrication thin = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, s, 1500.0, 60.0, 90);
+    EXPECT_NEAR(thin.mean.total() / rolling.mean.total(), std::pow(1e-3, 0.658), 1e-12);
     // With friction the efficiency falls below one.
     const CycleLubrication f = LubricatedCycle(r, Steel(), load, LoadModel::kRigid, Spec(rotate), 1500.0, 60.0, 90);
     EXPECT_LT(f.efficiency, 1.0);
@@ -181,8 +191,12 @@ TEST(LcrLubrication, DoublingTheSpeedScalesTheLossesAsTheLawsSay) {
   EXPECT_NEAR(two.mean.sliding_input, 2 * one.mean.sliding_input, 1e-12 * two.mean.sliding_input);
   EXPECT_NEAR(two.mean.sliding_output, 2 * one.mean.sliding_output, 1e-12 * two.mean.sliding_output);
   EXPECT_NEAR(two.mean.eccentric_bearing, 2 * one.mean.eccentric_bearing, 1e-12 * two.mean.eccentric_bearing);
+  // The rolling loss 2 u F_R with F_R ∝ u^0.658 on the same loads: × 2^1.658.
+  EXPECT_NEAR(two.mean.rolling_input, std::pow(2.0, 1.658) * one.mean.rolling_input, 1e-12 * two.mean.rolling_input);
+  EXPECT_NEAR(two.mean.rolling_output, std::pow(2.0, 1.658) * one.mean.rolling_output, 1e-12 * two.mean.rolling_output);
   LubricationSpec m0 = Spec(true);
   m0.roller_bearing.f1 = m0.eccentric_bearing.f1 = 0.0;
+  m0.rolling_loss = false;  // M0 alone
   const auto rolling = [&](double n) { return LubricatedCycle(r, Steel(), load, LoadModel::kRigid, m0, n, 60.0, 30); };
   // (The slowest roller turns at 0.069 of the input speed: at 28.5 mm²/s, νn ≥ 2000 from 1020 rpm.)
   const double p1 = rolling(2000.0).mean.total(), p2 = rolling(4000.0).mean.total();
@@ -264,20 +278,41 @@ TEST(LcrLubricationStudy, TheExamplesLossesByHand) {
   const double n_ecc = 1500.0 * 13 / 12, w_ecc = n_ecc * 2 * kPi / 60;
   const double eccentric = (1e-7 * 2 * std::cbrt(nu * n_ecc * nu * n_ecc) * 16 * 16 * 16 + 0.0003 * g * 16) * w_ecc * 1e-3;
   EXPECT_NEAR(*l.power_loss_W.eccentric_bearing, eccentric, 1e-9 * eccentric);
-  double rollers = 0.0;
+  double rollers = 0.0, rolling = 0.0;
+  // The rolling loss 2 u F_R in SI, Goksem & Hargreaves' F_R/L = 4.318 (G U)^0.658 W'^0.0126 R/α on the
+  // Hertz R' = r_r (1 − r_r κ) and w' = F/L; α 21 GPa⁻¹ (the example's), E' = 2 E*.
+  const double eta0 = run.study.lubrication->spec.oil.DynamicViscosityAt(t) * 1e6;  // Pa·s
+  const double e_prime = 2 * run.study.material.composite_modulus_MPa() * 1e6, alpha = 21e-9;
   for (size_t i = 0; i < 360; ++i)
     for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
       const lcr::AngleLoads<double> al = lcr::AnalyzeAngle(r, run.study.material, run.study.load, series.theta_rad[i]);
       const auto& forces = s == lcr::Side::kInput ? al.input.force : al.output.force;
+      const auto& contacts = s == lcr::Side::kInput ? al.input.contacts : al.output.contacts;
+      const lcr::CamSide<double>& cam = r.side(s);
       for (size_t k = 0; k < forces.size(); ++k) {
         const double n = 1500.0 * lcr::RollerSpinRate(r, s, series.theta_rad[i], int(k));
         const double m0 = 1e-7 * 3 * std::cbrt(std::pow(std::max(nu * n, 2000.0), 2)) * 8 * 8 * 8;
         rollers += (m0 + 0.0005 * forces[k] * 8) * n * 2 * kPi / 60 * 1e-3 / 360;
+        if (!(forces[k] > 0)) continue;
+        const double u = lcr::RollerContactSpeeds(r, s, contacts[k], series.theta_rad[i], true).entraining * 1500.0 *
+                         2 * kPi / 60 * 1e-3;  // m/s
+        const double rr = cam.roller_radius * 1e-3, big_r = rr * (1 - cam.roller_radius * contacts[k].curvature);
+        const double length = cam.contact_length() * 1e-3, w = forces[k] / length;
+        const double U = eta0 * u / (e_prime * big_r), G = alpha * e_prime, W = w / (e_prime * big_r);
+        const double force = 4.318 * std::pow(G * U, 0.658) * std::pow(W, 0.0126) * big_r / alpha * length;
+        rolling += 2 * u * force / 360;
       }
     }
+  EXPECT_NEAR(*l.power_loss_W.rolling_input_cam + *l.power_loss_W.rolling_output_cam, rolling, 1e-9 * rolling);
+  EXPECT_GT(rolling, 0.0);
   EXPECT_NEAR(*l.power_loss_W.roller_bearings_input + *l.power_loss_W.roller_bearings_output, rollers, 1e-9 * rollers);
   EXPECT_EQ(*l.power_loss_W.sliding_input_cam + *l.power_loss_W.sliding_output_cam, 0.0);  // rotating rollers
   EXPECT_FALSE(l.power_loss_W.ring_pins_sliding.has_value());  // a cycloid's element
+  EXPECT_NEAR(l.power_loss_W.total,
+              *l.power_loss_W.sliding_input_cam + *l.power_loss_W.sliding_output_cam + *l.power_loss_W.rolling_input_cam +
+                  *l.power_loss_W.rolling_output_cam + *l.power_loss_W.roller_bearings_input +
+                  *l.power_loss_W.roller_bearings_output + *l.power_loss_W.eccentric_bearing,
+              1e-12 * l.power_loss_W.total);
   // Power: input = output + losses; η their ratio; the output power T_o ω_in / |r_i|.
   EXPECT_NEAR(l.output_power_W, 80.0 * 1500 * 2 * kPi / 60 / 90, 1e-12 * l.output_power_W);
   EXPECT_NEAR(l.efficiency, l.output_power_W / (l.output_power_W + l.power_loss_W.total), 1e-15);
@@ -349,6 +384,58 @@ TEST(LcrLubricationStudy, BadInputExitsTwoNamingThePath) {
   s.erase("surfaces");
   s.erase("bearing_friction");
   ExpectStudyRejected(s, "lub-limit", "/limits/min_efficiency", "needs \"lubricant\"");
+  // The built-in oils: a grade the table has, one way, with its base.
+  s = LubricatedStudy();
+  s["lubricant"]["iso_vg"] = 68;
+  ExpectStudyRejected(s, "lub-vg-both", "/lubricant/nu40_cSt", "one way");
+  s["lubricant"].erase("nu40_cSt");
+  s["lubricant"].erase("nu100_cSt");
+  s["lubricant"]["iso_vg"] = 75;
+  ExpectStudyRejected(s, "lub-vg-grade", "/lubricant/iso_vg", "32, 46, 68, 100, 150, 220, 320, 460, 680");
+  s["lubricant"]["iso_vg"] = 68;
+  s["lubricant"]["base_oil"] = "ester";
+  ExpectStudyRejected(s, "lub-vg-base", "/lubricant/base_oil", "synthetic");
+  s = LubricatedStudy();
+  s["lubricant"]["base_oil"] = "mineral";
+  ExpectStudyRejected(s, "lub-base-alone", "/lubricant/base_oil", "iso_vg");
+  s = LubricatedStudy();
+  s["lubricant"].erase("nu100_cSt");
+  ExpectStudyRejected(s, "lub-no-nu100", "/lubricant", "found no nu100_cSt");
+}
+
+// "iso_vg": 68 (mineral) is the built-in Shell Omala S2 GX 68: the same operating point as its data
+// sheet's ν40 68, ν100 8.7 mm²/s and 885 kg/m³ given by hand.
+TEST(LcrLubricationStudy, ABuiltInOilIsItsDataSheet) {
+  nlohmann::json by_hand = LubricatedStudy();
+  by_hand["lubricant"]["density_kg_m3"] = 885;
+  by_hand["lubricant"]["name"] = "x";
+  nlohmann::json built_in = LubricatedStudy();
+  built_in["lubricant"].erase("nu40_cSt");
+  built_in["lubricant"].erase("nu100_cSt");
+  built_in["lubricant"]["iso_vg"] = 68;
+  built_in["lubricant"]["name"] = "x";
+  const StudyRun a = RunLubricated(by_hand), b = RunLubricated(built_in);
+  ASSERT_TRUE(a.result.lubrication && b.result.lubrication);
+  EXPECT_EQ(a.result.lubrication->efficiency, b.result.lubrication->efficiency);
+  EXPECT_EQ(a.result.lubrication->oil_temperature_C, b.result.lubrication->oil_temperature_C);
+  EXPECT_EQ(b.result.lubrication->oil.nu100_cSt, 8.7);
+  EXPECT_EQ(b.result.lubrication->oil.density_kg_m3, 885.0);
+  EXPECT_NE(b.result.lubrication->oil.source.find("Omala S2 GX 68"), std::string::npos);
+  EXPECT_EQ(a.result.lubrication->oil.source, "given");
+  // The synthetic VG 68 of the table (ν100 11.6 against 8.7): above 40 °C a thicker oil, so at the
+  // same given temperature of 60 °C a larger least λ.
+  nlohmann::json synthetic = built_in;
+  synthetic["lubricant"]["base_oil"] = "synthetic";
+  synthetic["lubricant"].erase("thermal");
+  synthetic["lubricant"]["temperature_C"] = 60;
+  nlohmann::json mineral = built_in;
+  mineral["lubricant"].erase("thermal");
+  mineral["lubricant"]["temperature_C"] = 60;
+  const StudyRun m = RunLubricated(mineral), y = RunLubricated(synthetic);
+  ASSERT_TRUE(m.result.lubrication && y.result.lubrication);
+  EXPECT_GT(y.result.lubrication->viscosity_cSt, m.result.lubrication->viscosity_cSt);
+  EXPECT_GT(y.result.lubrication->min_film_lambda.value, m.result.lubrication->min_film_lambda.value);
+  EXPECT_NE(y.result.lubrication->oil.source.find("880 kg/m³ assumed"), std::string::npos);
 }
 
 }  // namespace

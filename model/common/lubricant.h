@@ -92,6 +92,49 @@ struct Lubricant {
   }
 };
 
+/// A tabulated oil: an ISO VG grade (ISO 3448: ν40 within ±10 % of the grade) of one base, with the
+/// typical properties its maker's data sheet prints (the row's `source`).
+struct TabulatedOil {
+  int iso_vg;
+  const char* base;     ///< "mineral" or "synthetic" (synthesized hydrocarbon, PAO-type)
+  const char* product;  ///< the data sheet's product
+  double nu40_mm2_s, nu100_mm2_s;
+  double density15_kg_m3;  ///< 0: not on the data sheet
+  const char* source;
+};
+
+/// The built-in oils: one product line per base where it covers the grades (Shell Omala S2 GX /
+/// S2 G mineral gear oils, Tellus S2 MX for VG 32 and 46; Shell Omala S4 GXV synthesized-hydrocarbon
+/// gear oils, Mobil SHC 624–627 for VG 32–100). Typical values as printed on the makers' data
+/// sheets (docs/lubrication.md "Built-in oils" lists the documents); a batch differs by a few %.
+inline constexpr TabulatedOil kTabulatedOils[] = {
+    {32, "mineral", "Shell Tellus S2 MX 32", 32.0, 5.4, 854.0, "Shell Tellus S2 MX data sheet v4.1 (2016)"},
+    {46, "mineral", "Shell Tellus S2 MX 46", 46.0, 6.9, 856.0, "Shell Tellus S2 MX data sheet v4.1 (2016)"},
+    {68, "mineral", "Shell Omala S2 GX 68", 68.0, 8.7, 885.0, "Shell Omala S2 GX 68 data sheet v1.8 (2018)"},
+    {100, "mineral", "Shell Omala S2 G 100", 100.0, 11.4, 891.0, "Shell Omala S2 G data sheet v4.2 (2017)"},
+    {150, "mineral", "Shell Omala S2 GX 150", 150.0, 15.0, 897.0, "Shell Omala S2 GX 150 data sheet v2.8"},
+    {220, "mineral", "Shell Omala S2 GX 220", 220.0, 19.4, 899.0, "Shell Omala S2 GX 220 data sheet v2.8"},
+    {320, "mineral", "Shell Omala S2 GX 320", 320.0, 24.4, 897.0, "Shell Omala S2 GX 320 data sheet v1.4 (2016)"},
+    {460, "mineral", "Shell Omala S2 G 460", 460.0, 30.8, 904.0, "Shell Omala S2 G data sheet v4.2 (2017)"},
+    {680, "mineral", "Shell Omala S2 GX 680", 680.0, 42.1, 912.0, "Shell Omala S2 GX 680 data sheet v1.7 (2018)"},
+    {32, "synthetic", "Mobil SHC 624", 32.0, 6.3, 0.0, "Mobil SHC 600 Series typical properties (2014)"},
+    {46, "synthetic", "Mobil SHC 625", 46.0, 8.5, 0.0, "Mobil SHC 600 Series typical properties (2014)"},
+    {68, "synthetic", "Mobil SHC 626", 68.0, 11.6, 0.0, "Mobil SHC 600 Series typical properties (2014)"},
+    {100, "synthetic", "Mobil SHC 627", 100.0, 15.3, 0.0, "Mobil SHC 600 Series typical properties (2014)"},
+    {150, "synthetic", "Shell Omala S4 GXV 150", 150.0, 22.0, 862.0, "Shell Omala S4 GXV data sheet v1.4 (2017)"},
+    {220, "synthetic", "Shell Omala S4 GXV 220", 220.0, 30.0, 864.0, "Shell Omala S4 GXV 220 data sheet v1.4 (2017)"},
+    {320, "synthetic", "Shell Omala S4 GXV 320", 320.0, 37.0, 866.0, "Shell Omala S4 GXV data sheet v1.4 (2017)"},
+    {460, "synthetic", "Shell Omala S4 GXV 460", 460.0, 53.0, 868.0, "Shell Omala S4 GXV data sheet v1.4 (2017)"},
+    {680, "synthetic", "Shell Omala S4 GXV 680", 680.0, 74.0, 868.0, "Shell Omala S4 GXV 680 data sheet v1.9 (2022)"},
+};
+
+/// The built-in oil of ISO VG grade `iso_vg` and `base`, or nullptr when the table has none.
+inline const TabulatedOil* FindTabulatedOil(int iso_vg, const std::string& base) {
+  for (const TabulatedOil& o : kTabulatedOils)
+    if (o.iso_vg == iso_vg && base == o.base) return &o;
+  return nullptr;
+}
+
 /// Barus: η(p) = η0 exp(α p) (p in MPa, α in 1/MPa).
 template <typename T>
 T BarusViscosity(const T& eta0, const T& alpha_per_MPa, const T& pressure_MPa) {

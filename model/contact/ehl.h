@@ -16,6 +16,14 @@
 // Both were fitted to numerical solutions for steel-like materials (G of a few thousand) and
 // bearing-like loads and speeds; the film parameter λ = h_min / √(Rq₁² + Rq₂²) then places a contact
 // in boundary (λ < 1), mixed (1–3) or full-film (λ > 3) lubrication.
+// Rolling (Poiseuille) force of a line contact, the resistance of the pressure-driven flow in the
+// inlet that each surface feels against its motion (Goksem & Hargreaves 1978, J. Lubr. Technol.
+// 100, 346–352, isothermal form), per unit length:
+//   F_R / L = 4.318 (G U)^0.658 W'^0.0126 R / α.
+// The power it takes is F_R (u₁ + u₂) = 2 u F_R: the Poiseuille shear acts on both surfaces in the
+// same sense, against the entraining motion (model/contact/lubricated_friction.h RollingLoss). The
+// constants were cross-checked against independent public implementations of the formula (its
+// thermal form reduces to these at zero thermal loading); the 1978 paper itself was not at hand.
 #pragma once
 
 #include <cmath>
@@ -69,6 +77,20 @@ EhlFilm<T> EllipticalContactFilm(const T& eta0, const T& entraining_speed, const
   return {r_x * T(2.69) * pow(u, T(0.67)) * pow(g, T(0.53)) * pow(w, T(-0.067)) *
               (T(1.0) - T(0.61) * exp(T(-0.73) * k)),
           r_x * T(3.63) * pow(u, T(0.68)) * pow(g, T(0.49)) * pow(w, T(-0.073)) * (T(1.0) - exp(T(-0.68) * k))};
+}
+
+/// The rolling (Poiseuille) force per unit length of a line contact [N/mm] (Goksem & Hargreaves
+/// 1978, header): arguments as LineContactFilm; R/α [mm·MPa] gives N/mm.
+template <typename T>
+T LineContactRollingForcePerLength(const T& eta0, const T& entraining_speed, const T& r_eff, const T& load_per_length,
+                                   const T& e_star, const T& alpha) {
+  using std::pow;
+  if (!(Value(alpha) > 0.0)) return T(0.0);  // no pressure–viscosity rise: no film (G = 0), no force
+  const T e_prime = T(2.0) * e_star;
+  const T u = eta0 * entraining_speed / (e_prime * r_eff);
+  const T g = alpha * e_prime;
+  const T w = load_per_length / (e_prime * r_eff);
+  return T(4.318) * pow(g * u, T(0.658)) * pow(w, T(0.0126)) * r_eff / alpha;
 }
 
 /// Composite roughness √(Rq₁² + Rq₂²) [the unit of the Rq given].

@@ -12,7 +12,9 @@
 // inputs; between them the share of the load carried by asperities is taken to fall smoothly from
 // one to zero), not a law fitted to measurements; μ_b ≈ 0.08–0.12 for steel on steel with mineral
 // oil, μ_f ≈ 0.02–0.06 for EHL traction at moderate slide-to-roll ratios are typical values.
-// The sliding loss of a contact is P = μ F |v_s| (F the normal load, v_s the sliding speed).
+// The sliding loss of a contact is P = μ F |v_s| (F the normal load, v_s the sliding speed); the
+// rolling (Poiseuille) loss P = F_R (u₁ + u₂) = 2 u F_R (F_R of model/contact/ehl.h, u the mean
+// entraining speed).
 #pragma once
 
 #include <cmath>
@@ -66,6 +68,14 @@ template <typename T>
 T SlidingLoss(const T& mu, const T& normal_load, const T& sliding_speed) {
   using std::abs;
   return mu * normal_load * abs(sliding_speed);
+}
+
+/// The power the rolling (Poiseuille) force F_R takes from a contact whose surfaces move at the mean
+/// entraining speed u: F_R on each surface against its motion, 2 u F_R [N·mm/s for N and mm/s].
+template <typename T>
+T RollingLoss(const T& rolling_force, const T& entraining_speed) {
+  using std::abs;
+  return T(2.0) * rolling_force * abs(entraining_speed);
 }
 
 }  // namespace camopt::contact

@@ -23,7 +23,9 @@
 //
 // Crank bearing: Palmgren at n1/n2 of the input speed under |B| (bearing_loads.h CrankBearingForce).
 // Film: Pan & Hamrock's line contact (model/contact/ehl.h) on the pair's R' and w' = F/B (B the face
-// width). The loads are the LTCA's (frictionless); the losses are first order in the friction.
+// width); on the same R', w' and u_e every loaded contact with a film also loses 2 u_e F_R to the
+// rolling (Poiseuille) force of Goksem & Hargreaves (ehl.h), rolling and sliding contacts alike.
+// The loads are the LTCA's (frictionless); the losses are first order in the friction.
 #pragma once
 
 #include <cmath>
@@ -61,6 +63,7 @@ struct CycloidLubricationSpec {
   contact::RegimeFriction friction;
   double composite_roughness_mm = 0.2e-3 * std::sqrt(2.0);
   bool ring_pins_rotate = true;
+  bool rolling_loss = true;  ///< the contacts' EHL rolling (Poiseuille) loss (false: left out)
   PalmgrenBearing ring_pin_bearing{0.0, 0.0, 1.0};       ///< f0 = f1 = 0: no loss
   PalmgrenBearing output_roller_bearing{0.0, 0.0, 1.0};
   PalmgrenBearing crank_bearing{0.0, 0.0, 1.0};
@@ -115,11 +118,13 @@ inline PinSpeeds<double> OutputPinSpeeds(const Drive& d, const OutputPinContact&
 template <typename T>
 struct CycloidAngleLossesTpl {
   T ring_pins_sliding{}, ring_pin_bearings{}, output_pins_sliding{}, output_roller_bearings{}, crank_bearing{};
+  T ring_pins_rolling{}, output_pins_rolling{};  ///< the contacts' EHL rolling (Poiseuille) loss
   double min_lambda = 0, min_film_mm = 0;
   int min_lambda_pin = -1;       ///< -1: no loaded contact
   bool min_at_output_pin = false;  ///< the pin is an output pin (else a ring pin)
   T total() const {
-    return ring_pins_sliding + ring_pin_bearings + output_pins_sliding + output_roller_bearings + crank_bearing;
+    return ring_pins_sliding + ring_pin_bearings + output_pins_sliding + output_roller_bearings + crank_bearing +
+           ring_pins_rolling + output_pins_rolling;
   }
 };
 using CycloidAngleLosses = CycloidAngleLossesTpl<double>;
@@ -240,9 +245,13 @@ CycloidAngleLossesTpl<T> LossesAtCrankAngle(const DriveTpl<T>& d, const CycloidL
   const T width = d.face_width_mm;
   const auto film = [&](const T& force, const T& r_eff, const T& entraining_per_rad, int pin, bool output) {
     const T u_e = entraining_per_rad * omega;
-    const T h = u_e > T(1e-12) && r_eff > T(0.0)
-                    ? contact::LineContactFilm<T>(eta0, u_e, r_eff, force / width, e, alpha).minimum
-                    : T(0.0);
+    const bool has_film = u_e > T(1e-12) && r_eff > T(0.0);
+    const T h = has_film ? contact::LineContactFilm<T>(eta0, u_e, r_eff, force / width, e, alpha).minimum : T(0.0);
+    if (has_film && spec.rolling_loss)
+      (output ? out.output_pins_rolling : out.ring_pins_rolling) +=
+          contact::RollingLoss(
+              T(contact::LineContactRollingForcePerLength<T>(eta0, u_e, r_eff, force / width, e, alpha) * width), u_e) *
+          T(1e-3);
     const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
     if (out.min_lambda_pin < 0 || Value(lambda) < out.min_lambda) {
       out.min_lambda = Value(lambda);

@@ -18,12 +18,15 @@
 // Losses at one angle (first order in the friction: the loads are those of the frictionless law,
 // forces.h or the compliant contacts, as the rest of the analysis uses them):
 //   sliding        μ(λ) F v_s per contact (model/contact/lubricated_friction.h), fixed rollers only;
+//   rolling        2 u F_R per loaded contact with a film, F_R Goksem & Hargreaves' rolling
+//                  (Poiseuille) force on the same R' and w' (model/contact/ehl.h), fixed and rotating
+//                  rollers alike;
 //   roller bearings Palmgren M0 + M1 (model/common/bearing_friction.h) at the roller's speed, every
 //                   roller of a turret turning (M0), its contact load as P1 (M1); rotating rollers only;
 //   eccentric       Palmgren at the eccentric bearing's speed n_A/m_A ω_in with |G| as P1.
 // The film: Pan & Hamrock's line-contact minimum film (model/contact/ehl.h) on R' = r_r (1 − r_r κ)
 // (the radius of the Hertz stress, forces.h) and w' = F / L, η0 at the oil's temperature. Not
-// modelled: the EHL rolling (Poiseuille) loss of the contacts and seal drag (stated in the results).
+// modelled: seal drag and churning (stated in the results).
 // P_in = P_out + Σ losses defines the input power; the tests check the sliding speeds against the
 // bodies' rigid velocities and the losses against the statics with friction forces.
 #pragma once
@@ -50,6 +53,7 @@ struct LubricationSpec {
   contact::RegimeFriction friction;
   double composite_roughness_mm = 0.2e-3 * std::sqrt(2.0);  ///< σ = √(Rq_roller² + Rq_cam²)
   bool rollers_rotate = true;  ///< needle-mounted rollers (rolling) or fixed ones (sliding)
+  bool rolling_loss = true;    ///< the contacts' EHL rolling (Poiseuille) loss (false: left out)
   PalmgrenBearing roller_bearing;     ///< every roller's bearing (rotating rollers)
   PalmgrenBearing eccentric_bearing;  ///< the cam's bearing on the eccentric
 };
@@ -90,12 +94,14 @@ template <typename T>
 struct AngleLosses {
   T sliding_input{}, sliding_output{};                ///< the fixed rollers' sliding on each cam
   T roller_bearings_input{}, roller_bearings_output{};  ///< the rotating rollers' bearings
+  T rolling_input{}, rolling_output{};                  ///< the contacts' EHL rolling loss on each cam
   T eccentric_bearing{};
   T min_lambda{};        ///< λ of the loaded contact with the thinnest film
   int min_lambda_side = 0, min_lambda_roller = -1;  ///< 0 input, 1 output; roller index
   T min_film_mm{};       ///< h_min there
   T total() const {
-    return sliding_input + sliding_output + roller_bearings_input + roller_bearings_output + eccentric_bearing;
+    return sliding_input + sliding_output + roller_bearings_input + roller_bearings_output + rolling_input +
+           rolling_output + eccentric_bearing;
   }
 };
 
@@ -123,6 +129,7 @@ AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, d
     const T length = cam.contact_length();
     T& sliding = side == 0 ? out.sliding_input : out.sliding_output;
     T& bearings = side == 0 ? out.roller_bearings_input : out.roller_bearings_output;
+    T& rolling = side == 0 ? out.rolling_input : out.rolling_output;
     for (size_t k = 0; k < contacts.size(); ++k) {
       const ContactSpeeds<T> v = RollerContactSpeeds(r, s, contacts[k], theta, spec.rollers_rotate);
       const T f = forces[k];
@@ -133,9 +140,14 @@ AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, d
       const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * contacts[k].curvature);
       const T u = v.entraining * omega;  // mm/s
       // No entraining motion (or an undercut contact, r_eff ≤ 0): no film, boundary friction.
-      const T h = (Value(u) > 1e-12 && Value(r_eff) > 0.0)
-                      ? contact::LineContactFilm(eta0, u, r_eff, T(f / length), T(e_star), alpha).minimum
-                      : T(0.0);
+      const bool film = Value(u) > 1e-12 && Value(r_eff) > 0.0;
+      const T h = film ? contact::LineContactFilm(eta0, u, r_eff, T(f / length), T(e_star), alpha).minimum : T(0.0);
+      if (film && spec.rolling_loss)
+        rolling += contact::RollingLoss(
+                       T(contact::LineContactRollingForcePerLength(eta0, u, r_eff, T(f / length), T(e_star), alpha) *
+                         length),
+                       u) *
+                   T(1e-3);
       const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
       if (!any || Value(lambda) < Value(out.min_lambda)) {
         out.min_lambda = lambda;
@@ -214,6 +226,8 @@ inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material
     out.mean.sliding_output += l.sliding_output / n;
     out.mean.roller_bearings_input += l.roller_bearings_input / n;
     out.mean.roller_bearings_output += l.roller_bearings_output / n;
+    out.mean.rolling_input += l.rolling_input / n;
+    out.mean.rolling_output += l.rolling_output / n;
     out.mean.eccentric_bearing += l.eccentric_bearing / n;
     if (i % 2 == 0) even_total += l.total(), ++evens;
     if (l.min_lambda_roller >= 0 && (first || l.min_lambda < out.mean.min_lambda)) {
