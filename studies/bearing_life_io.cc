@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+
+#include "model/common/life_modification.h"
 
 #include "studies/format.h"
 
@@ -44,19 +47,31 @@ std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, doubl
   return lines;
 }
 
-RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, BearingKind kind, const std::string& why) {
+RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, BearingKind kind, const std::string& why,
+                                        bool modified_life) {
   RollingBearingRating b;
   b.kind = kind;
+  std::set<std::string> known = {"dynamic_rating_N", "static_rating_N"};
+  if (with_kind) known.insert("kind");
+  if (modified_life) known.insert({"fatigue_load_limit_N", "pitch_diameter_mm"});
+  node.CheckKnownFields(known);
   if (with_kind) {
-    node.CheckKnownFields({"dynamic_rating_N", "static_rating_N", "kind"});
     const std::string k = node["kind"].String();
     if (k != "ball" && k != "roller") node["kind"].Fail("one of ball, roller");
     b.kind = k == "ball" ? BearingKind::kBall : BearingKind::kRoller;
-  } else {
-    node.CheckKnownFields({"dynamic_rating_N", "static_rating_N"});
   }
   return ParseRatingValues(node, b.kind, why);
 }
+
+namespace {
+
+[[noreturn]] void FailMissing(const Node& node, const std::string& key, const std::string& expected) {
+  const std::string path = (node.path() == "/" ? std::string() : node.path()) + "/" + key;
+  throw StudyError(node.file() + ": " + path + ": expected " + expected + ", found nothing", node.file(), path,
+                   expected, "nothing");
+}
+
+}  // namespace
 
 RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const std::string& why) {
   RollingBearingRating b;
@@ -69,7 +84,97 @@ RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const
   }
   b.dynamic_N = node["dynamic_rating_N"].Positive();
   b.static_N = node.PositiveOr("static_rating_N", 0.0);
+  b.modified = ParseModifiedLifeRating(node);
   return b;
+}
+
+std::optional<ModifiedLifeRating> ParseModifiedLifeRating(const Node& node) {
+  const bool cu = node.Has("fatigue_load_limit_N"), dpw = node.Has("pitch_diameter_mm");
+  if (cu && !dpw)
+    FailMissing(node, "pitch_diameter_mm",
+                "the bearing's pitch diameter D_pw [mm] > 0 beside fatigue_load_limit_N (the modified life a_ISO needs "
+                "both: D_pw for the reference viscosity nu1, C_u for e_C C_u/P)");
+  if (dpw && !cu)
+    FailMissing(node, "fatigue_load_limit_N",
+                "the bearing's fatigue load limit C_u [N] > 0 beside pitch_diameter_mm (the modified life a_ISO needs "
+                "both: D_pw for the reference viscosity nu1, C_u for e_C C_u/P)");
+  if (!cu) return std::nullopt;
+  return ModifiedLifeRating{node["fatigue_load_limit_N"].Positive(), node["pitch_diameter_mm"].Positive()};
+}
+
+void CheckModifiedLifeInputs(const Node& root, const std::vector<Node>& rated) {
+  const bool lubricant = root.Has("lubricant");
+  const bool ec = lubricant && root["lubricant"].Has("contamination_factor");
+  if (!rated.empty() && !lubricant)
+    rated.front()["fatigue_load_limit_N"].FailWith(
+        "the modified life a_ISO of this bearing needs the oil: a \"lubricant\" block (its viscosity at the "
+        "operating temperature gives kappa = nu/nu1) with \"contamination_factor\" (e_C in [0, 1], ISO 281:2007 "
+        "Table 13); give them, or remove fatigue_load_limit_N and pitch_diameter_mm");
+  if (!rated.empty() && !ec)
+    FailMissing(root["lubricant"], "contamination_factor",
+                "the contamination factor e_C in [0, 1] (ISO 281:2007 Table 13; normal cleanliness 0.5-0.6 below "
+                "D_pw 100 mm): " + rated.front().path() + " gives fatigue_load_limit_N for the modified life a_ISO");
+  if (rated.empty() && ec)
+    root["lubricant"]["contamination_factor"].FailWith(
+        "contamination_factor is used by the modified life a_ISO of a bearing whose rating block gives "
+        "fatigue_load_limit_N and pitch_diameter_mm, and none does: give them, or remove contamination_factor");
+}
+
+nlohmann::ordered_json ModifiedLifeSchemaRules(const std::vector<std::vector<std::string>>& rated_blocks) {
+  using ojson = nlohmann::ordered_json;
+  ojson any = ojson::array();
+  for (const std::vector<std::string>& keys : rated_blocks) {
+    ojson has = {{"required", {"fatigue_load_limit_N"}}};
+    for (auto k = keys.rbegin(); k != keys.rend(); ++k) has = {{"required", {*k}}, {"properties", {{*k, has}}}};
+    any.push_back(has);
+  }
+  const ojson ec = {{"required", {"lubricant"}}, {"properties", {{"lubricant", {{"required", {"contamination_factor"}}}}}}};
+  return ojson::array({{{"if", {{"anyOf", any}}}, {"then", ec}}, {{"if", ec}, {"then", {{"anyOf", any}}}}});
+}
+
+double AddModifiedLife(nlohmann::json& row, BearingKind kind, const ModifiedLifeRating& rating,
+                       const ModifiedLifeOil& oil, double mean_speed_rpm, double equivalent_load_N, double L10h) {
+  auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  row["mean_speed_rpm"] = mean_speed_rpm;
+  row["pitch_diameter_mm"] = rating.pitch_diameter_mm;
+  row["fatigue_load_limit_N"] = rating.fatigue_load_limit_N;
+  row["contamination_factor"] = oil.contamination_factor;
+  row["oil_temperature_C"] = finite(oil.temperature_C);
+  row["viscosity_mm2_s"] = finite(oil.viscosity_mm2_s);
+  row["reference_viscosity_mm2_s"] = nullptr;
+  row["kappa"] = nullptr;
+  row["a_ISO"] = nullptr;
+  row["L_nm_h"] = nullptr;
+  if (!oil.missing.empty()) {
+    row["a_ISO_note"] = "not computed: no oil temperature (" + oil.missing + ")";
+    return NAN;
+  }
+  if (!(mean_speed_rpm > 0)) {
+    row["a_ISO_note"] = "not computed: the bearing does not turn (no reference viscosity nu1 at n = 0)";
+    return NAN;
+  }
+  const double nu1 = ReferenceViscosity(mean_speed_rpm, rating.pitch_diameter_mm);
+  const double kappa = oil.viscosity_mm2_s / nu1;
+  row["reference_viscosity_mm2_s"] = nu1;
+  row["kappa"] = kappa;
+  // An unloaded bearing (P = 0) has e_C C_u / P = +inf: a_ISO is its cap.
+  const double x = equivalent_load_N > 0 ? oil.contamination_factor * rating.fatigue_load_limit_N / equivalent_load_N
+                                         : kInf;
+  const LifeModification m = LifeModificationFactor(kind, kappa, x);
+  if (!m.note.empty()) row["a_ISO_note"] = m.note;
+  if (!m.computed) return NAN;
+  const double l_nm = m.a_iso * L10h;  // a1 = 1 (90 % reliability)
+  row["a_ISO"] = m.a_iso;
+  row["L_nm_h"] = finite(l_nm);
+  return l_nm;
+}
+
+std::string ModifiedLifeModelText(bool computed) {
+  if (!computed) return "the modified life (a1, a_ISO) is not modelled (docs/life.md)";
+  return "the modified life L_nm = a1 a_ISO L10 (ISO 281:2007 9.3; a1 = 1, 90 % reliability) of the bearings given "
+         "fatigue_load_limit_N and pitch_diameter_mm: a_ISO by eqs. 31-33 (ball) or 34-36 (roller) from kappa = nu/nu1 "
+         "(nu the oil's at the lubricated operating point's temperature, nu1 by eq. 28 at the bearing's mean speed, "
+         "kappa > 4 taken as 4, none below 0.1) and e_C C_u/P, at most 50 (docs/life.md)";
 }
 
 nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines) {

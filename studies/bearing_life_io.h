@@ -2,6 +2,7 @@
 // study kind that computes a rating life (lcr_analysis, lcr_min_size, cycloid_ltca).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,21 +23,76 @@ namespace camopt::studies {
 std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, double output_torque_Nmm,
                                                          std::string* why = nullptr);
 
-/// A rolling bearing's ratings: C [N] (> 0), C0 [N] (0 when not given), ball or roller.
+/// A bearing's own inputs of the modified rating life (ISO 281:2007 §9.3; docs/life.md, "Modified
+/// rating life a_ISO"): its fatigue load limit C_u [N] and pitch diameter D_pw [mm], both > 0.
+struct ModifiedLifeRating {
+  double fatigue_load_limit_N = 0.0, pitch_diameter_mm = 0.0;
+};
+
+/// A rolling bearing's ratings: C [N] (> 0), C0 [N] (0 when not given), ball or roller, and C_u
+/// and D_pw of the modified life when given.
 struct RollingBearingRating {
   BearingKind kind = BearingKind::kRoller;
   double dynamic_N = 0.0, static_N = 0.0;
+  std::optional<ModifiedLifeRating> modified;
 };
 
+/// The descriptions of a rating block's modified-life fields (one text for every kind's schema).
+inline constexpr const char* kFatigueLoadLimitDesc =
+    "the bearing's fatigue load limit C_u (ISO 281:2007; the catalogue's P_u), for the modified life a_ISO with "
+    "pitch_diameter_mm and lubricant.contamination_factor (docs/life.md)";
+inline constexpr const char* kPitchDiameterDesc =
+    "the bearing's pitch diameter D_pw ≈ (d + D)/2, for the reference viscosity ν1 of the modified life a_ISO "
+    "(ISO 281:2007 eq. 28; docs/life.md)";
+
 /// Reads "dynamic_rating_N" > 0 and "static_rating_N" > 0 (optional) from `node`, which may hold
-/// other fields (an LCR's reducer side); a missing C is an error that says why it is needed.
+/// other fields (an LCR's reducer side); a missing C is an error that says why it is needed. Reads
+/// "fatigue_load_limit_N" and "pitch_diameter_mm" (> 0, both or neither) when `node` has them.
 /// @throws StudyError naming the JSON path.
 RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const std::string& why);
 
 /// Reads {"dynamic_rating_N" > 0, "static_rating_N" > 0 (optional)} and, when `with_kind`, "kind":
-/// "ball" | "roller" (else `kind`). A missing C is an error that says why it is needed (`why`).
-/// @throws StudyError naming the JSON path.
-RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, BearingKind kind, const std::string& why);
+/// "ball" | "roller" (else `kind`), and, when `modified_life`, "fatigue_load_limit_N" and
+/// "pitch_diameter_mm" (else they are unknown fields). A missing C is an error that says why it is
+/// needed (`why`). @throws StudyError naming the JSON path.
+RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, BearingKind kind, const std::string& why,
+                                        bool modified_life = false);
+
+/// Reads "fatigue_load_limit_N" and "pitch_diameter_mm" (> 0, both or neither) of a rating block;
+/// nullopt when neither is given. @throws StudyError naming the missing one's JSON path.
+std::optional<ModifiedLifeRating> ParseModifiedLifeRating(const Node& node);
+
+/// The modified life's inputs across blocks: a rating block with fatigue_load_limit_N and
+/// pitch_diameter_mm (`rated`: those blocks) needs "lubricant" (the oil's viscosity at its
+/// temperature) with "contamination_factor"; a "lubricant.contamination_factor" needs such a block.
+/// @throws StudyError naming the JSON path and what is missing.
+void CheckModifiedLifeInputs(const Node& root, const std::vector<Node>& rated);
+
+/// The JSON Schema rules of CheckModifiedLifeInputs (two entries for the root's "allOf"): a rating
+/// block at one of `rated_blocks` (paths of keys from the root, {"reducer", "input"}, …) with
+/// fatigue_load_limit_N needs lubricant.contamination_factor, which needs such a block.
+nlohmann::ordered_json ModifiedLifeSchemaRules(const std::vector<std::vector<std::string>>& rated_blocks);
+
+/// The oil at the bearings for the modified life: its viscosity ν [mm²/s] at the operating point's
+/// temperature, or why there is none (the lubricated result's error).
+struct ModifiedLifeOil {
+  double contamination_factor = 0.0;
+  double temperature_C = NAN, viscosity_mm2_s = NAN;
+  std::string missing;  ///< non-empty: no oil temperature, a_ISO not computed
+};
+
+/// Adds the modified life L_nm = a1 a_ISO L10 (ISO 281:2007 §9.3, a1 = 1;
+/// model/common/life_modification.h) to a bearing's life-table row: mean_speed_rpm,
+/// pitch_diameter_mm, fatigue_load_limit_N, contamination_factor, oil_temperature_C,
+/// viscosity_mm2_s, reference_viscosity_mm2_s (ν1 at the bearing's mean speed), kappa = ν/ν1,
+/// a_ISO and L_nm_h (null when not computed, with a_ISO_note saying why; L_nm_h null when infinite).
+/// @return L_nm_h; NaN when a_ISO is not computed.
+double AddModifiedLife(nlohmann::json& row, BearingKind kind, const ModifiedLifeRating& rating,
+                       const ModifiedLifeOil& oil, double mean_speed_rpm, double equivalent_load_N, double L10h);
+
+/// What the life block's "model" string says of the modified life: that it is not modelled (no
+/// bearing gives C_u and D_pw) or how it is computed.
+std::string ModifiedLifeModelText(bool computed);
 
 /// The duty cycle's echo: [{output_torque_Nm, input_speed_rpm, time_share}, …].
 nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines);

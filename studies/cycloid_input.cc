@@ -2,6 +2,8 @@
 // type and the schemas of the bearing-life blocks.
 #include "studies/cycloid_input.h"
 
+#include "studies/bearing_life_io.h"
+
 namespace camopt::studies::cycloid_common {
 
 using ojson = nlohmann::ordered_json;
@@ -52,29 +54,44 @@ ojson DutyCycleSchema() {
 }
 
 namespace {
-ojson RatingProperties() {
-  return {{"dynamic_rating_N",
-           {{"description", "C, the basic dynamic load rating (ISO 281) [N]"}, {"type", "number"}, {"exclusiveMinimum", 0}}},
-          {"static_rating_N",
-           {{"description", "C₀, the basic static load rating, for the static safety s₀ = C₀ / P₀ (absent: none) [N]"},
-            {"type", "number"},
-            {"exclusiveMinimum", 0}}}};
+ojson RatingProperties(bool modified_life) {
+  ojson p = {{"dynamic_rating_N",
+              {{"description", "C, the basic dynamic load rating (ISO 281) [N]"}, {"type", "number"}, {"exclusiveMinimum", 0}}},
+             {"static_rating_N",
+              {{"description", "C₀, the basic static load rating, for the static safety s₀ = C₀ / P₀ (absent: none) [N]"},
+               {"type", "number"},
+               {"exclusiveMinimum", 0}}}};
+  if (modified_life) {
+    p["fatigue_load_limit_N"] = {{"description", std::string(kFatigueLoadLimitDesc) + " [N]"},
+                                 {"type", "number"},
+                                 {"exclusiveMinimum", 0}};
+    p["pitch_diameter_mm"] = {{"description", std::string(kPitchDiameterDesc) + " [mm]"},
+                              {"type", "number"},
+                              {"exclusiveMinimum", 0}};
+  }
+  return p;
+}
+
+// A rating block's schema around its properties; C_u and D_pw come together (ParseModifiedLifeRating).
+ojson RatingBlock(const ojson& properties, const ojson& required, bool modified_life) {
+  ojson s = {{"type", "object"}, {"properties", properties}, {"required", required}, {"additionalProperties", false}};
+  if (modified_life)
+    s["dependentRequired"] = {{"fatigue_load_limit_N", {"pitch_diameter_mm"}},
+                              {"pitch_diameter_mm", {"fatigue_load_limit_N"}}};
+  return s;
 }
 }  // namespace
 
-ojson CrankBearingSchema() {
+ojson CrankBearingSchema(bool modified_life) {
   ojson p = {{"kind", {{"description", "ball or roller bearing (the life exponent p = 3 or 10/3)"},
                        {"enum", {"ball", "roller"}}}}};
-  const ojson ratings = RatingProperties();
+  const ojson ratings = RatingProperties(modified_life);
   for (auto it = ratings.begin(); it != ratings.end(); ++it) p[it.key()] = it.value();
-  return {{"type", "object"}, {"properties", p}, {"required", {"kind", "dynamic_rating_N"}}, {"additionalProperties", false}};
+  return RatingBlock(p, {"kind", "dynamic_rating_N"}, modified_life);
 }
 
-ojson PinRatingSchema() {
-  return {{"type", "object"},
-          {"properties", RatingProperties()},
-          {"required", {"dynamic_rating_N"}},
-          {"additionalProperties", false}};
+ojson PinRatingSchema(bool modified_life) {
+  return RatingBlock(RatingProperties(modified_life), {"dynamic_rating_N"}, modified_life);
 }
 
 }  // namespace camopt::studies::cycloid_common

@@ -159,26 +159,27 @@ struct CompliantOutputMechanismInput {
 
 /// The schema of "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h).
 nlohmann::ordered_json DutyCycleSchema();
-/// The schema of "crank_bearing" (ParseBearingRating with its kind).
-nlohmann::ordered_json CrankBearingSchema();
-/// The schema of "pins" (the ring pins' ratings, ParseBearingRating).
-nlohmann::ordered_json PinRatingSchema();
+/// The schema of "crank_bearing" (ParseBearingRating with its kind); with `modified_life` (the kinds
+/// that report a_ISO, cycloid_ltca) also fatigue_load_limit_N and pitch_diameter_mm, together.
+nlohmann::ordered_json CrankBearingSchema(bool modified_life = false);
+/// The schema of "pins" (the ring pins' ratings, ParseBearingRating); `modified_life` as above.
+nlohmann::ordered_json PinRatingSchema(bool modified_life = false);
 
 /// The bearing-life blocks every cycloid kind takes (docs/life.md, Cycloid): "duty_cycle" (its
 /// description ends with `each_line`, what one line runs), "crank_bearing" and "pins" (kept as JSON,
-/// read by ParseLife against their schemas).
+/// read by ParseLife against their schemas; with `modified_life` their C_u and D_pw of a_ISO).
 template <typename Archive>
 void VisitLifeRatings(Archive* a, nlohmann::json* duty_cycle, nlohmann::json* crank_bearing, nlohmann::json* pins,
-                      const std::string& each_line) {
+                      const std::string& each_line, bool modified_life = false) {
   a->Visit("duty_cycle", duty_cycle,
            Field().Schema(DutyCycleSchema()).Desc(
                "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
                "disc's torque" + each_line));
   a->Visit("crank_bearing", crank_bearing,
-           Field().Schema(CrankBearingSchema()).Desc(
+           Field().Schema(CrankBearingSchema(modified_life)).Desc(
                "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
   a->Visit("pins", pins,
-           Field().Schema(PinRatingSchema()).Desc(
+           Field().Schema(PinRatingSchema(modified_life)).Desc(
                "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
                "p = 10/3 (docs/life.md, Cycloid)"));
 }

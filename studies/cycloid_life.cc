@@ -63,6 +63,8 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
   lj["shortest_L10h"] = finite(l.shortest_L10h);
   lj["shortest_bearing"] = l.shortest;
   nlohmann::json table = nlohmann::json::array();
+  double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
+  std::string shortest_nm;
   for (const ElementLife& e : l.elements) {
     lj[e.name + "_L10h"] = finite(e.life.L10h);
     table.push_back(LifeTableRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
@@ -71,8 +73,17 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
     table.back()["line_equivalent_load_N"] = e.life.line_equivalent_load_N;
     table.back()["mean_speed_rpm"] = e.life.mean_speed_rpm;
     table.back()["L10_Mrev"] = finite(e.life.L10_Mrev);
+    if (l.oil && e.rating.modified) {
+      const double l_nm = AddModifiedLife(table.back(), e.rating.kind, *e.rating.modified, *l.oil,
+                                          e.life.mean_speed_rpm, e.life.equivalent_load_N, e.life.L10h);
+      if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = e.name;
+    }
   }
   lj["table"] = table;
+  if (l.oil) {
+    lj["shortest_L_nm_h"] = shortest_nm.empty() ? nlohmann::json(nullptr) : finite(shortest_nm_h);
+    lj["shortest_L_nm_bearing"] = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+  }
   lj["duty_cycle"] = DutyCycleJson(spec.lines);
   lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
   lj["output_mechanism"] = {
@@ -87,7 +98,7 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
   lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner); each line one LTCA cycle "
                 "at its torque; crank bearing: |B| = |ring-pin forces + output-pin forces| over its load period, "
                 "n1/n2 revolutions per input revolution; pins: the pair loads, revolution-weighted by the rolling "
-                "spin (C - I).N / (n2 rho); the modified life (a1, a_ISO) is not modelled (docs/life.md)";
+                "spin (C - I).N / (n2 rho); " + ModifiedLifeModelText(l.oil.has_value());
   return lj;
 }
 

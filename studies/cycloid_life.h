@@ -2,6 +2,7 @@
 // (docs/life.md, "Cycloid"): cycloid_ltca for its drive, cycloid_crowning_tuning for the tuned one.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "model/common/bearing_life.h"
 #include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/loaded_tca.h"
+#include "studies/bearing_life_io.h"
 #include "studies/cycloid_study_common.h"
 
 namespace camopt::studies::cycloid_common {
@@ -28,6 +30,8 @@ struct LifeResult {
   std::string shortest;
   double mean_input_speed_rpm = 0.0;
   int crank_bearing_samples = 0;  ///< samples of the crank bearing's load period per line
+  /// The oil at the lubricated operating point, when some bearing's modified life a_ISO is asked.
+  std::optional<ModifiedLifeOil> oil;
 };
 
 /// The lives over spec's duty cycle: each line one LTCA cycle of `tca` at its torque on
@@ -40,7 +44,8 @@ LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const st
                    double solved_torque_Nmm = 0.0, const std::vector<cycloid::MeshLoad>* solved_meshes = nullptr);
 
 /// result.json "life": `ELEMENT_L10h`, shortest_L10h, shortest_bearing, the duty cycle, the output
-/// mechanism and the table (the rows of lcr_min_size's best.life.table).
+/// mechanism and the table (the rows of lcr_min_size's best.life.table); with `l.oil` the modified
+/// life of the bearings given C_u and D_pw in their rows and shortest_L_nm_h (AddModifiedLife).
 nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l);
 
 }  // namespace camopt::studies::cycloid_common

@@ -198,7 +198,7 @@ Study Parse(const Node& root) {
   }
   ParseTolerances(root, in, s);
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
-  s.life = cycloid_common::ParseLife(root, s.drive, s.disc_torque_Nmm(), true);
+  s.life = cycloid_common::ParseLife(root, s.drive, s.disc_torque_Nmm(), true, true);
   if (s.life && s.discs > 1)
     root["discs"].Fail("1 with a bearing life (the life is modelled for one disc; found " + std::to_string(s.discs) +
                        " discs)");
@@ -251,6 +251,8 @@ nlohmann::ordered_json Input::SchemaRules() {
               "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}}
   ]})");
   AddLubricationSchemaRules(rules);
+  // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
+  for (const auto& rule : ModifiedLifeSchemaRules({{"crank_bearing"}, {"pins"}})) rules["allOf"].push_back(rule);
   return rules;
 }
 
@@ -725,6 +727,18 @@ Result Run(const Study& s, const RunContext& ctx) {
     r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.disc_torque_Nmm(), &r.cycle.meshes);
   }
   if (s.lubrication) RunLubrication(s, ctx, r);
+  if (r.life && s.life->contamination_factor) {
+    // The oil at the bearings for their modified life a_ISO: the lubricated operating point's.
+    ModifiedLifeOil oil;
+    oil.contamination_factor = *s.life->contamination_factor;
+    if (r.lubrication) {
+      oil.temperature_C = r.lubrication->oil_temperature_C;
+      oil.viscosity_mm2_s = r.lubrication->viscosity_cSt;  // the oil's at that temperature (ASTM D341)
+    } else {
+      oil.missing = r.lubrication_error.empty() ? "the lubricated losses were not computed" : r.lubrication_error;
+    }
+    r.life->oil = oil;
+  }
   if (s.tolerances) {
     // The kinematic transmission error from the tolerances (model/cycloid/transmission_error.h).
     const Study::ToleranceSpec& t = *s.tolerances;

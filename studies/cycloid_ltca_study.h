@@ -182,7 +182,7 @@ struct Input {
   std::optional<Stiffness> stiffness;
   std::optional<Tolerances> tolerances;
   std::optional<MonteCarlo> monte_carlo;
-  std::optional<LubricantInput> lubricant;
+  std::optional<LubricantWithContaminationInput> lubricant;
   std::optional<SurfacesInput> surfaces;
   std::optional<CycloidBearingFrictionInput> bearing_friction;
   std::optional<EfficiencyMapInput> efficiency_map;
@@ -205,7 +205,8 @@ struct Input {
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
     cycloid_common::VisitLifeRatings(a, &duty_cycle, &crank_bearing, &pins,
                                      " (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0"
-                                     "; each line one LTCA cycle at its torque");
+                                     "; each line one LTCA cycle at its torque",
+                                     true);  // the modified life a_ISO (docs/life.md)
     a->Visit("output_mechanism", &output_mechanism,
              Field().Desc(
                  "output pins in the disc's holes: pin circle radius (inside the disc's root radius) and pin count "

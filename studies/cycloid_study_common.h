@@ -307,6 +307,8 @@ struct LifeSpec {
   bool pins_rated = false;
   RollingBearingRating pins;  ///< per ring pin (a roller on a needle or roller sleeve), p = 10/3
   cycloid::OutputMechanism output;
+  /// "lubricant.contamination_factor" e_C: given when a rated bearing has C_u and D_pw (a_ISO).
+  std::optional<double> contamination_factor;
 };
 
 /// The fields of cycloid_ltca's "output_mechanism" beyond the life's (the compliant pins and holes;
@@ -416,16 +418,27 @@ inline std::optional<CompliantOutputSpec> ParseCompliantOutput(const Node& root,
 /// one-line form at `torque_Nmm`), "crank_bearing": {kind, dynamic_rating_N, static_rating_N}
 /// (required with a life), "pins": {dynamic_rating_N, static_rating_N} (optional),
 /// "output_mechanism" (required with a life: the crank bearing's load needs R_w). Without a speed
-/// or a duty cycle the ratings are still checked and nullopt is returned.
+/// or a duty cycle the ratings are still checked and nullopt is returned. With `modified_life` (the
+/// kinds that report a_ISO) the rating blocks take fatigue_load_limit_N and pitch_diameter_mm, which
+/// need lubricant.contamination_factor (CheckModifiedLifeInputs).
 /// @throws StudyError naming the JSON path.
 inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive& d, double torque_Nmm,
-                                         bool extended_output = false) {
+                                         bool extended_output = false, bool modified_life = false) {
+  if (modified_life) {
+    std::vector<Node> rated;
+    for (const char* block : {"crank_bearing", "pins"})
+      if (root.Has(block) && (root[block].Has("fatigue_load_limit_N") || root[block].Has("pitch_diameter_mm")))
+        rated.push_back(root[block]);
+    for (const Node& node : rated) ParseModifiedLifeRating(node);
+    CheckModifiedLifeInputs(root, rated);
+  }
   std::string why;
   std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, torque_Nmm, &why);
   if (!lines) {
     const std::string unused = "checked: no speed or duty cycle is given, so no life is computed";
-    if (root.Has("crank_bearing")) ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, unused);
-    if (root.Has("pins")) ParseBearingRating(root["pins"], false, BearingKind::kRoller, unused);
+    if (root.Has("crank_bearing"))
+      ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, unused, modified_life);
+    if (root.Has("pins")) ParseBearingRating(root["pins"], false, BearingKind::kRoller, unused, modified_life);
     if (root.Has("output_mechanism")) ParseOutputMechanism(root["output_mechanism"], d, extended_output);
     return std::nullopt;
   }
@@ -439,11 +452,13 @@ inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive&
   if (!root.Has("crank_bearing"))
     missing("crank_bearing", "{\"kind\": \"ball\" | \"roller\", \"dynamic_rating_N\", \"static_rating_N\"} (" +
                                  why + ")");
-  life.crank_bearing = ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, why);
+  life.crank_bearing = ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, why, modified_life);
   if (root.Has("pins")) {
     life.pins_rated = true;
-    life.pins = ParseBearingRating(root["pins"], false, BearingKind::kRoller, why);
+    life.pins = ParseBearingRating(root["pins"], false, BearingKind::kRoller, why, modified_life);
   }
+  if (life.crank_bearing.modified || (life.pins_rated && life.pins.modified))
+    life.contamination_factor = root["lubricant"]["contamination_factor"].Number();  // CheckModifiedLifeInputs
   if (!root.Has("output_mechanism"))
     missing("output_mechanism", "{\"pin_circle_radius_mm\", \"pin_count\"} (" + why +
                                     ": the crank bearing's load depends on the output pins' circle)");

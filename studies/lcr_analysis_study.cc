@@ -192,6 +192,7 @@ BearingRating ParseRating(const Node& node, BearingKind kind, const std::string&
   b.kind = r.kind;
   b.dynamic_N = r.dynamic_N;
   b.static_N = r.static_N;
+  b.modified = r.modified;
   return b;
 }
 
@@ -211,7 +212,24 @@ std::optional<LifeSpec> ParseLife(const Input& in, const Node& root, const lcr::
     life.eccentric = ParseRating(reducer["eccentric_bearing"], eb.kind == "ball" ? BearingKind::kBall : BearingKind::kRoller,
                                  why);
   }
+  if (life.input_roller.modified || life.output_roller.modified || (life.eccentric && life.eccentric->modified))
+    life.contamination_factor = in.lubricant->contamination_factor;  // CheckModifiedLifeInputs: given
   return life;
+}
+
+// The modified life's inputs across blocks (CheckModifiedLifeInputs): the rating blocks that give
+// C_u and D_pw need the lubricant's contamination factor, and it needs one of them.
+void CheckModifiedLife(const Input& in, const Node& root) {
+  std::vector<Node> rated;
+  const Node reducer = root["reducer"];
+  if (in.reducer.input.fatigue_load_limit_N || in.reducer.input.pitch_diameter_mm) rated.push_back(reducer["input"]);
+  if (in.reducer.output.fatigue_load_limit_N || in.reducer.output.pitch_diameter_mm) rated.push_back(reducer["output"]);
+  if (in.reducer.eccentric_bearing &&
+      (in.reducer.eccentric_bearing->fatigue_load_limit_N || in.reducer.eccentric_bearing->pitch_diameter_mm))
+    rated.push_back(reducer["eccentric_bearing"]);
+  // Both or neither of C_u and D_pw per block first (ParseRatingValues' message names the missing one).
+  for (const Node& node : rated) ParseModifiedLifeRating(node);
+  CheckModifiedLifeInputs(root, rated);
 }
 
 // The finite-length contact (studies/lcr_contact_input.h): the rollers' crowning, checked against
@@ -418,6 +436,20 @@ OperatingPoint LubricatedPoint(const Study& st, const lcr::CycleLoads& loads, do
   return p;
 }
 
+// The oil at the bearings for their modified life a_ISO: e_C and the viscosity at the lubricated
+// operating point's temperature (the losses' housing balance or the given temperature).
+ModifiedLifeOil ModifiedLifeOilOf(const Study& st, const Result& res) {
+  ModifiedLifeOil oil;
+  oil.contamination_factor = *st.life->contamination_factor;
+  if (!res.lubrication) {
+    oil.missing = res.lubrication_error.empty() ? "the lubricated losses were not computed" : res.lubrication_error;
+    return oil;
+  }
+  oil.temperature_C = res.lubrication->oil_temperature_C;
+  oil.viscosity_mm2_s = res.lubrication->viscosity_cSt;  // the oil's at that temperature (ASTM D341)
+  return oil;
+}
+
 void RunLubrication(const Study& st, const RunContext& ctx, Result& res) {
   const Study::Lubrication& l = *st.lubrication;
   const lcr::Reducer<double>& r = st.reducer;
@@ -543,6 +575,7 @@ Study Parse(const Node& root) {
   st.bore_diameter_output_mm = ParseBoreDiameter(reducer_node["output"], st.reducer, Side::kOutput);
   st.geometry = ParseGeometryFiles(root);
   st.contact = ContactOf(in, root, st.reducer);
+  CheckModifiedLife(in, root);
   st.life = ParseLife(in, root, st.load);
   if (st.contact_fatigue && !st.life)
     root["material"]["contact_fatigue"].Fail(
@@ -580,6 +613,10 @@ nlohmann::ordered_json Input::SchemaRules() {
   nlohmann::ordered_json& all = rules["allOf"];
   for (const auto& rule : LcrLifeSchemaRules()) all.insert(all.end() - 1, rule);
   AddLubricationSchemaRules(rules);  // the lubrication blocks (docs/lubrication.md)
+  // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
+  for (const auto& rule : ModifiedLifeSchemaRules(
+           {{"reducer", "input"}, {"reducer", "output"}, {"reducer", "eccentric_bearing"}}))
+    rules["allOf"].push_back(rule);
   return rules;
 }
 
@@ -673,6 +710,7 @@ Result Run(const Study& st, const RunContext& ctx) {
   }
   if (st.life) res.life = RunLife(st, ctx.study_file);
   if (st.lubrication) RunLubrication(st, ctx, res);
+  if (res.life && st.life->contamination_factor) res.life->oil = ModifiedLifeOilOf(st, res);
   if (q.profile) {
     res.input_cam_files = FitPlanarCam(CamGeometry(st, Side::kInput), st.geometry);
     res.output_cam_files = FitPlanarCam(CamGeometry(st, Side::kOutput), st.geometry);
@@ -848,7 +886,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
     }
     lj["model"] = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
                   "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
-                  "the same load over its period; the modified life (a1, a_ISO) is not modelled (docs/life.md)";
+                  "the same load over its period; " + ModifiedLifeModelText(l.oil.has_value());
     // The cams' contact lives (docs/life.md, "Contact fatigue of the cam surfaces"): separate from
     // the bearings' shortest_L10h.
     for (const CamContactLifeResult& c : l.cam_contacts) lj[c.name + "_L10h"] = finite(c.L10h);
@@ -878,6 +916,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
     lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
     auto pass = [limit](double h) { return limit > 0 ? nlohmann::json(h >= limit) : nlohmann::json(nullptr); };
     nlohmann::json table = nlohmann::json::array();
+    double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
+    std::string shortest_nm;
     for (const BearingLifeResult& b : l.bearings) {
       nlohmann::json e;
       e["element"] = b.name;
@@ -892,6 +932,11 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
         e["s0"] = finite(b.s0);
       }
       e["pass"] = pass(b.L10h);
+      if (l.oil && b.rating.modified) {
+        const double l_nm = AddModifiedLife(e, b.rating.kind, *b.rating.modified, *l.oil, b.mean_speed_rpm,
+                                            b.equivalent_load_N, b.L10h);
+        if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = b.name;
+      }
       table.push_back(e);
       if (b.sliced) {
         nlohmann::json es = e;
@@ -915,6 +960,10 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
                        {"pass", pass(c.L10h)}});
     }
     lj["table"] = table;
+    if (l.oil) {
+      lj["shortest_L_nm_h"] = shortest_nm.empty() ? nlohmann::json(nullptr) : finite(shortest_nm_h);
+      lj["shortest_L_nm_bearing"] = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+    }
     j["life"] = lj;
   }
   if (res.lubrication) j["lubrication"] = WriteJson(*res.lubrication);

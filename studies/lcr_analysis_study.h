@@ -107,7 +107,7 @@ struct Input {
   nlohmann::json geometry_files;
   std::optional<LcrContactOptionsInput> contact;
   nlohmann::json duty_cycle;
-  std::optional<LubricantInput> lubricant;
+  std::optional<LubricantWithContaminationInput> lubricant;
   std::optional<SurfacesInput> surfaces;
   std::optional<LcrBearingFrictionInput> bearing_friction;
   std::optional<EfficiencyMapInput> efficiency_map;
@@ -163,6 +163,7 @@ struct Evaluate {
 struct BearingRating {
   double dynamic_N = 0.0, static_N = 0.0;
   BearingKind kind = BearingKind::kRoller;
+  std::optional<ModifiedLifeRating> modified;  ///< C_u and D_pw of the modified life a_ISO, when given
 };
 
 /// One line of the duty cycle, in model units (studies/lcr_input.h ParseDutyCycle).
@@ -175,6 +176,8 @@ struct LifeSpec {
   bool from_duty_cycle = false;
   BearingRating input_roller, output_roller;
   std::optional<BearingRating> eccentric;  ///< "reducer.eccentric_bearing"
+  /// "lubricant.contamination_factor" e_C: given when some bearing has C_u and D_pw (a_ISO).
+  std::optional<double> contamination_factor;
 };
 
 /// What the study file says, parsed and validated, in model units (mm, N, N·mm, MPa).
@@ -249,6 +252,8 @@ struct LifeResult {
   double mean_input_speed_rpm = 0;
   double efficiency_energy_mean = 0;  ///< output energy / input energy over the duty cycle
   std::vector<double> line_mean_input_torque_Nm;
+  /// The oil at the lubricated operating point, when some bearing's modified life a_ISO is asked.
+  std::optional<ModifiedLifeOil> oil;
 };
 
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).

@@ -75,9 +75,26 @@ struct LcrSideWithRatingsInput : LcrSideInput, LcrRollerRatingsInput {
   }
 };
 
+/// A bearing's inputs of the modified life a_ISO (ISO 281:2007 §9.3; docs/life.md): C_u and D_pw,
+/// both or neither (read by ParseRatingValues, studies/bearing_life_io.h), visited after the ratings.
+struct ModifiedLifeRatingInput {
+  std::optional<double> fatigue_load_limit_N, pitch_diameter_mm;
+  template <typename Archive>
+  void VisitModifiedLife(Archive* a) {
+    a->Visit("fatigue_load_limit_N", &fatigue_load_limit_N, Field().Positive().Unit("N").Desc(kFatigueLoadLimitDesc));
+    a->Visit("pitch_diameter_mm", &pitch_diameter_mm, Field().Positive().Unit("mm").Desc(kPitchDiameterDesc));
+  }
+  /// JSON Schema: the two fields come together.
+  static nlohmann::ordered_json SchemaRules() {
+    return {{"dependentRequired",
+             {{"fatigue_load_limit_N", {"pitch_diameter_mm"}}, {"pitch_diameter_mm", {"fatigue_load_limit_N"}}}}};
+  }
+};
+
 /// A cam side of the kinds with the finite-length contact and the bearing lives (lcr_analysis): the
-/// design, the rollers' crowning and their bearing's ratings.
-struct LcrRatedSideInput : LcrSideInput, LcrRollerRatingsInput {
+/// design, the rollers' crowning, their bearing's ratings and its modified-life inputs.
+struct LcrRatedSideInput : LcrSideInput, LcrRollerRatingsInput, ModifiedLifeRatingInput {
+  using ModifiedLifeRatingInput::SchemaRules;
   std::optional<LcrCrowningInput> crowning;
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -86,6 +103,7 @@ struct LcrRatedSideInput : LcrSideInput, LcrRollerRatingsInput {
              Field().Desc("the rollers' crowning (docs/lcr.md); each form takes its own fields only (absent: "
                           "straight rollers); a crowning other than none needs a contact model other than line"));
     VisitRatings(a);
+    VisitModifiedLife(a);
   }
 };
 
@@ -106,14 +124,24 @@ struct EccentricBearingInput {
   }
 };
 
+/// lcr_analysis's "eccentric_bearing": the ratings and the modified-life inputs.
+struct RatedEccentricBearingInput : EccentricBearingInput, ModifiedLifeRatingInput {
+  using ModifiedLifeRatingInput::SchemaRules;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    EccentricBearingInput::Serialize(a);
+    VisitModifiedLife(a);
+  }
+};
+
 /// The reducer of lcr_analysis: the design, per side the crowning and the roller bearings' ratings,
-/// and the eccentric's bearing. lcr_crowning_tuning's is the same with sides without crowning
-/// (Side = LcrSideWithRatingsInput).
-template <typename Side>
+/// and the eccentric's bearing (with the modified-life inputs). lcr_crowning_tuning's is the same
+/// with sides without crowning (Side = LcrSideWithRatingsInput) and the ratings only.
+template <typename Side, typename Eccentric = EccentricBearingInput>
 struct LcrReducerWithRatingsInput {
   double eccentricity_mm = 0;
   Side input, output;
-  std::optional<EccentricBearingInput> eccentric_bearing;
+  std::optional<Eccentric> eccentric_bearing;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("eccentricity_mm", &eccentricity_mm, Field().Required().Positive().Unit("mm").Desc("eccentricity e"));
@@ -131,7 +159,7 @@ struct LcrReducerWithRatingsInput {
     return d;
   }
 };
-using LcrRatedReducerInput = LcrReducerWithRatingsInput<LcrRatedSideInput>;
+using LcrRatedReducerInput = LcrReducerWithRatingsInput<LcrRatedSideInput, RatedEccentricBearingInput>;
 
 /// The design of a reducer read from `node` as LcrReducerInput: the checks between fields (more
 /// rollers than lobes, lengths on the turret's scale, lcr::CheckDesign) with ParseReducer's

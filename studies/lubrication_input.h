@@ -97,6 +97,23 @@ struct LubricantInput {
   }
 };
 
+/// "lubricant" of the kinds that report the bearings' modified life a_ISO (lcr_analysis,
+/// cycloid_ltca; docs/life.md): the oil and its cleanliness, the contamination factor e_C.
+struct LubricantWithContaminationInput : LubricantInput {
+  std::optional<double> contamination_factor;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    LubricantInput::Serialize(a);
+    a->Visit("contamination_factor", &contamination_factor,
+             Field().In(0.0, 1.0).Desc(
+                 "e_C of ISO 281:2007 (Table 13), for the modified life a_ISO of the bearings whose rating blocks give "
+                 "fatigue_load_limit_N and pitch_diameter_mm (docs/life.md). Guide values for D_pw < 100 mm / >= 100 "
+                 "mm: extreme cleanliness 1 / 1; high cleanliness 0.8-0.6 / 0.9-0.8; normal 0.6-0.5 / 0.8-0.6; "
+                 "slight contamination 0.5-0.3 / 0.6-0.4; typical contamination 0.3-0.1 / 0.4-0.2; severe 0.1-0 / "
+                 "0.1-0; very severe 0 / 0"));
+  }
+};
+
 /// "surfaces": the roughness of the contacting surfaces, the friction of the regimes and how the
 /// rollers are mounted.
 struct SurfacesInput {

@@ -5,7 +5,7 @@
 //
 // ISO 281:2007 §5.3 (radial ball) and §6.3 (radial roller bearings): the basic rating life
 // L10 = (C/P)^p [10⁶ rev], p = 3 for ball and 10/3 for roller bearings; at a constant speed n,
-// L10h = 10⁶ L10 / (60 n) [h]. (The modified life L_nm = a1 a_ISO L10 of §9 is not modelled.)
+// L10h = 10⁶ L10 / (60 n) [h]. (The modified life L_nm = a1 a_ISO L10 of §9.3: life_modification.h.)
 // A load F(θ) that varies over a revolution has the constant equivalent load of the same life,
 //   P = ( (1/2π) ∫₀^{2π} F(θ)^p dθ )^(1/p),
 // the revolution-weighted p-mean (the cubic mean for balls). For a duty cycle of lines i with
