@@ -29,6 +29,7 @@ LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
   if (t.limits.min_efficiency > 0) t.limits.min_efficiency *= 1 + kLimitMargin;
   if (std::isfinite(t.limits.max_oil_temperature_C)) t.limits.max_oil_temperature_C -= 1e-4;  // °C
   if (t.limits.life_h > 0) t.limits.life_h *= 1 + kLimitMargin;
+  t.limits.max_outer_diameter_mm *= 1 - kLimitMargin;
   return t;
 }
 
@@ -42,7 +43,7 @@ double PhaseDistance(double a, double b, double period) {
 
 double LcrViolation::excess() const {
   const bool upper = limit == "contact_stress_MPa" || limit == "roller_load_N" ||
-                     limit == "max_oil_temperature_C";  // lower: the rest, life_h too
+                     limit == "max_oil_temperature_C" || limit == "max_outer_diameter_mm";  // lower: the rest
   return upper ? value - limit_value : limit_value - value;
 }
 
@@ -109,6 +110,8 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
   upper("roller_load_N", std::max(c.max_force_N[0], c.max_force_N[1]), lim.roller_load_N);
   lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
   lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
+  if (std::isfinite(lim.max_outer_diameter_mm))
+    upper("max_outer_diameter_mm", c.outer_diameter_mm, lim.max_outer_diameter_mm);
   if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
   if (spec.lubrication && std::isfinite(lim.max_oil_temperature_C))
     upper("max_oil_temperature_C", c.oil_temperature_C, lim.max_oil_temperature_C);
@@ -185,6 +188,10 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
 
 LcrSizingSpec LcrTightened(const LcrSizingSpec& spec) { return Tightened(spec); }
 
+double LcrObjectiveValue(const LcrSizingSpec& spec, const LcrDenseCheck& check) {
+  return spec.objective == LcrSizeObjective::kPowerLoss ? check.lubricated_loss_W : check.outer_diameter_mm;
+}
+
 Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps) {
   Verification v;
   v.ran = true;
@@ -212,6 +219,9 @@ Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<d
     add("undercut_margin_mm", cams[k], a.undercut_margin_mm[k], b.undercut_margin_mm[k], lim.undercut_margin_mm, false);
     add("roller_gap_mm", cams[k], a.roller_gap_mm[k], b.roller_gap_mm[k], lim.roller_gap_mm, false);
   }
+  if (std::isfinite(lim.max_outer_diameter_mm))
+    add("max_outer_diameter_mm", "2 max(turret radius + roller radius)", a.outer_diameter_mm, b.outer_diameter_mm,
+        lim.max_outer_diameter_mm, true);
   if (lim.min_efficiency > 0)
     add("min_efficiency", spec.lubrication ? "lubricated, mean over the cycle" : "mean over the cycle", a.mean_efficiency,
         b.mean_efficiency, lim.min_efficiency, false);

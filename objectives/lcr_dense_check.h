@@ -18,7 +18,8 @@ namespace camopt::objectives {
 /// A limit exceeded at a design, named by the study's limit key.
 struct LcrViolation {
   std::string limit;      ///< "contact_stress_MPa", "roller_load_N", "undercut_margin_mm",
-                          ///< "roller_gap_mm", "min_efficiency", "max_oil_temperature_C", "life_h"
+                          ///< "roller_gap_mm", "min_efficiency", "max_oil_temperature_C", "life_h",
+                          ///< "max_outer_diameter_mm"
   double value = 0.0;     ///< the design's worst value of that quantity (both cams)
   double limit_value = 0.0;
   /// By how much, in the limit's unit, positive: value − limit for upper limits, limit − value
@@ -68,11 +69,17 @@ struct LcrDenseCheck {
 LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps = 3600,
                          LcrActiveSet* near = nullptr);
 
+/// The value of spec.objective at a checked design, on the dense grid: the outer diameter [mm]
+/// (kOuterDiameter) or the lubricated loss [W] (kPowerLoss; NaN without a thermal equilibrium).
+/// What the sizing compares its starts and candidates by.
+double LcrObjectiveValue(const LcrSizingSpec& spec, const LcrDenseCheck& check);
+
 /// The verified-optimum contract (objectives/verification.h) of a line-model design: the accurate
 /// model is the dense check on 2·steps input angles (the reported values), its error the change
 /// from `steps` angles (a refinement, not a subset: the finer set has every other angle new). Per
 /// cam: contact stress and roller force (upper limits, when finite), undercut margin and roller gap
-/// (lower limits, exact: no angle sampling); the mean efficiency when it is a limit; each rated
+/// (lower limits, exact: no angle sampling); the outer diameter when it is limited (exact); the
+/// mean efficiency when it is a limit; each rated
 /// bearing's L10h when life_h is a limit (lower, its error the change from `steps` samples per
 /// revolution to 2·steps). The line
 /// model's own tightening rounds are the polish rounds of SolveLcrMinSize (tracked peaks join until

@@ -13,6 +13,7 @@
 #include "model/contact/hertz.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
+#include "model/lcr/kinematics.h"
 #include "model/lcr/life.h"
 #include "model/lcr/profile.h"
 #include "objectives/lcr_robust.h"
@@ -63,6 +64,9 @@ bool TemperatureRow(const LcrSizingSpec& s) {
   return s.lubrication && !s.lubrication->temperature_C && std::isfinite(s.limits.max_oil_temperature_C);
 }
 
+// The power-loss objective's row.
+bool PowerLossObjective(const LcrSizingSpec& s) { return s.objective == LcrSizeObjective::kPowerLoss; }
+
 // Block sizes, in the order the evaluator writes them.
 std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
   std::vector<std::pair<std::string, int>> sizes = {
@@ -87,6 +91,7 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
     sizes.push_back({"output_roller_life", 1});
     if (s.life->eccentric) sizes.push_back({"eccentric_bearing_life", 1});
   }
+  if (PowerLossObjective(s)) sizes.push_back({"power_loss_W", 1});
   std::vector<OutputBlock> blocks;
   int offset = 0;
   for (const auto& [name, size] : sizes) {
@@ -265,7 +270,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   const bool stress = std::isfinite(s.limits.contact_stress_MPa);
   std::vector<T> force[2], margin[2];
   std::vector<bool> loaded[2];
-  T efficiency(0.0), oil_C(0.0);
+  T efficiency(0.0), oil_C(0.0), loss_W(0.0);
   std::vector<T> life;
   try {
     if (LifeRows(s)) LifeMargins(s, r, life);
@@ -276,7 +281,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
       SideSamples(s, r, lcr::Side::kInput, force[0], margin[0], loaded[0]);
       SideSamples(s, r, lcr::Side::kOutput, force[1], margin[1], loaded[1]);
     }
-    if (s.lubrication && (s.limits.min_efficiency > 0 || TemperatureRow(s))) {
+    if (s.lubrication && (s.limits.min_efficiency > 0 || TemperatureRow(s) || PowerLossObjective(s))) {
       // The lubricated operating point over the same angles (model/lcr/lubrication.h); no thermal
       // equilibrium below the oil's limit: not-a-number rows, which the solvers answer by a shorter step.
       const LcrSizingLubrication& l = *s.lubrication;
@@ -298,6 +303,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
                                     l.cooling, l.balance_limit_C, s.efficiency_samples, balance ? &*balance : nullptr);
       efficiency = p.found ? p.efficiency : T(std::numeric_limits<double>::quiet_NaN());
       oil_C = p.found ? p.oil_C : T(std::numeric_limits<double>::quiet_NaN());
+      loss_W = p.found ? p.loss_W : T(std::numeric_limits<double>::quiet_NaN());
     } else if (s.limits.min_efficiency > 0) {
       // The efficiency mixes both cams' loads (and |F_r|), so it has no short period: a full
       // revolution. Mean of the per-angle efficiency, as lcr_analysis reports it.
@@ -345,6 +351,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   if (s.limits.min_efficiency > 0) y[o++] = efficiency;
   if (TemperatureRow(s)) y[o++] = oil_C;
   for (const T& m : life) y[o++] = m;
+  if (PowerLossObjective(s)) y[o++] = loss_W;
 }
 
 }  // namespace
@@ -355,6 +362,13 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
   return Design<double>(spec, x);
 }
 
+double LcrOutputPowerW(const LcrSizingSpec& spec) {
+  if (!spec.lubrication) return 0.0;
+  const double ratio = lcr::OutputSpeedRatio(spec.lobes_a, spec.rollers_a, spec.lobes_b, spec.rollers_b);
+  const double omega_out = spec.lubrication->input_speed_rpm * 2.0 * kPi / 60.0 * std::abs(ratio);
+  return spec.output_torque_Nmm * 1e-3 * omega_out;
+}
+
 Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   if (spec.lobes_a < 1 || spec.rollers_a <= spec.lobes_a || spec.lobes_b < 1 ||
       spec.rollers_b <= spec.lobes_b)
@@ -362,6 +376,8 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   if (spec.samples_per_period < 2) throw std::invalid_argument("LCR sizing: samples_per_period < 2");
   if (spec.robust && spec.form == LcrConstraintForm::kActiveSet)
     throw std::invalid_argument("LCR sizing: robust rows need the samples or aggregate form");
+  if (PowerLossObjective(spec) && !spec.lubrication)
+    throw std::invalid_argument("LCR sizing: the power-loss objective needs the lubrication");
   if (spec.form == LcrConstraintForm::kActiveSet)
     for (int side = 0; side < 2; ++side) {
       const int n = side == 0 ? spec.rollers_a : spec.rollers_b;
@@ -385,13 +401,25 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
     if (l.rollers == 2)
       p.variables.push_back({std::string(side) + "_roller_diameter_mm", spec.roller_diameter_mm[0],
                              spec.roller_diameter_mm[1], d0, 5.0});
-  p.variables.push_back({"outer_radius_mm", 0.0, kInf, x0.back(), 10.0});
+  // R's upper bound: the outer-diameter limit's half; with the power-loss objective (which does not
+  // push R down) at most the largest outer radius of the variable box, so that R stays bounded.
+  double r_max = spec.limits.max_outer_diameter_mm / 2;
+  if (PowerLossObjective(spec))
+    r_max = std::min(r_max, spec.turret_radius_mm[1] +
+                                spec.fixed_roller_diameter_mm.value_or(spec.roller_diameter_mm[1]) / 2);
+  p.variables.push_back({"outer_radius_mm", 0.0, r_max, std::min(x0.back(), r_max), 10.0});
 
   const LcrSizingSpec s = spec;
   p.evaluator = MakeEvaluator<kJetSize>(p.num_vars(), Blocks(spec),
                                         [s](auto x, auto y) { Evaluate(s, x, y); });
-  p.objective = "outer_diameter_bound_mm";
-  p.objective_scale = 100.0;
+  if (PowerLossObjective(spec)) {
+    p.objective = "power_loss_W";
+    p.objective_scale = 0.05 * LcrOutputPowerW(spec);  // 5% of the power, as cycloid_min_size's
+    if (!(p.objective_scale > 0)) throw std::invalid_argument("LCR sizing: the power-loss objective needs power");
+  } else {
+    p.objective = "outer_diameter_bound_mm";
+    p.objective_scale = 100.0;
+  }
   p.constraints = {{"input_envelope_mm", -kInf, 0.0, 10.0},
                    {"output_envelope_mm", -kInf, 0.0, 10.0},
                    {"input_roller_gap_mm", spec.limits.roller_gap_mm, kInf, 1.0},
@@ -431,6 +459,8 @@ Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
   s.limits.roller_load_N = kInf;
   s.limits.min_efficiency = 0.0;
   s.limits.max_oil_temperature_C = kInf;
+  s.limits.max_outer_diameter_mm = kInf;
+  s.objective = LcrSizeObjective::kOuterDiameter;
   s.form = LcrConstraintForm::kAggregate;
   s.robust = nullptr;
   Problem sizing = MakeLcrSizingProblem(s);

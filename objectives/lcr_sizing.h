@@ -1,10 +1,15 @@
-// The LCR sizing problem of one lobe/roller combination: minimise the outer diameter over the
+// The LCR sizing problem of one lobe/roller combination: minimise the outer diameter (or, with the
+// lubricated losses, the power lost at the sizing's torque and speed: LcrSizeObjective) over the
 // eccentricity, both turret radii and the roller diameter, subject to contact stress, roller load,
-// undercut, roller gap and pitch-point limits. Built on the LCR pipeline in model/lcr/ (forces.h,
+// undercut, roller gap, pitch-point and (optionally) outer-diameter limits. Built on the LCR pipeline in model/lcr/ (forces.h,
 // profile.h, reducer.h); nothing here re-derives its physics.
 //
 // Variables (mm): e, r_dA, r_dB, d_r, R (R the outer radius, an epigraph variable: the objective
 // 2R is smooth, and r_dX + r_rX <= R for both cams replaces the kink of 2 max(r_dX + r_rX)).
+// With the power-loss objective R is no longer pushed down: its upper bound is the outer-diameter
+// limit's half (LcrLimits::max_outer_diameter_mm) or, without one, the largest outer radius the
+// variable box holds (turret radius + roller radius at their upper bounds), so that R stays a
+// bounded slack of the envelope rows and r_dX + r_rX <= R <= max/2 is the diameter limit.
 // With a catalogue roller the diameter is fixed and the variables are e, r_dA, r_dB, R; with a
 // roller per cam (same_roller = false) they are e, r_dA, r_dB, d_rA, d_rB, R.
 //
@@ -81,7 +86,17 @@ struct LcrLimits {
   double life_h = 0.0;
   /// The oil temperature of the housing's balance [°C] (with lubrication and its cooling); kInf: none.
   double max_oil_temperature_C = kInf;
+  /// The largest outer diameter 2 max(r_dX + r_rX) [mm]: the upper bound 2R of the outer-radius
+  /// variable (its envelope rows hold the design inside it); kInf: none. What a designer who
+  /// minimises the loss (LcrSizeObjective::kPowerLoss) bounds the reducer's size with.
+  double max_outer_diameter_mm = kInf;
 };
+
+/// What the sizing minimises: the outer diameter 2R, or the lubricated power lost P_loss [W] at the
+/// output torque and the input speed of LcrSizingSpec::lubrication (model/lcr/lubrication.h
+/// LubricatedRigidCycle, at the given oil temperature or the housing's balance): at a fixed output
+/// power P_out, minimising P_loss maximises η = P_out/(P_out + P_loss).
+enum class LcrSizeObjective { kOuterDiameter, kPowerLoss };
 
 /// The rollers' ratings. Fixed (a catalogue roller: reference_diameter_mm = 0) or scaled with the
 /// roller's diameter and length from a reference roller of the same design by ISO 281 / ISO 76
@@ -148,7 +163,13 @@ struct LcrSizingSpec {
   /// The lubricated losses: limits.min_efficiency bounds their efficiency (not eq. 33's), and
   /// limits.max_oil_temperature_C the balance's oil temperature.
   std::optional<LcrSizingLubrication> lubrication;
+  /// kPowerLoss needs lubrication.
+  LcrSizeObjective objective = LcrSizeObjective::kOuterDiameter;
 };
+
+/// The output power T_o ω_out [W] of spec's combination at its lubrication's input speed (0 without
+/// lubrication): the reference of the power-loss objective's scale.
+double LcrOutputPowerW(const LcrSizingSpec& spec);
 
 /// The roller's dynamic (static = false) or static rating [N] at roller diameter d and length L
 /// [mm]: LcrRollerRating's fixed value, or scaled from its reference roller.
@@ -180,8 +201,9 @@ double LcrLoadPeriod(const LcrSizingSpec& spec, lcr::Side side);
 lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double> x);
 
 /// Builds the problem: variables with bounds and scales, the evaluator, objective
-/// "outer_diameter_bound_mm" and constraints. The initial point is a heuristic, not feasible in
-/// general (both backends start from infeasible points).
+/// "outer_diameter_bound_mm" (kOuterDiameter, scale 100 mm) or "power_loss_W" (kPowerLoss, scale
+/// 5% of LcrOutputPowerW, as cycloid_min_size's) and constraints. The initial point is a
+/// heuristic, not feasible in general (both backends start from infeasible points).
 /// Output blocks (each also usable for reporting):
 ///   outer_diameter_bound_mm (2R), input_envelope_mm / output_envelope_mm (r_d + r_r − R <= 0),
 ///   input_roller_gap_mm / output_roller_gap_mm, input_undercut_margin_mm / output_...,
@@ -191,7 +213,11 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   limit is finite), mean_efficiency (mean of lcr::AnalyzeAngle's η over efficiency_samples
 ///   angles of a full revolution, or with spec.lubrication the lubricated η over them; present when
 ///   limits.min_efficiency > 0), oil_temperature_C (with spec.lubrication's balance and a finite
-///   limits.max_oil_temperature_C).
+///   limits.max_oil_temperature_C), input_roller_life / output_roller_life / eccentric_bearing_life
+///   (ln(L10h / life_h), with a life limit), power_loss_W (last; kPowerLoss only: the
+///   lubricated loss P_loss over the same efficiency_samples angles, not-a-number without a thermal
+///   equilibrium below the oil's limit).
+/// @throws std::invalid_argument for kPowerLoss without spec.lubrication.
 Problem MakeLcrSizingProblem(const LcrSizingSpec& spec);
 
 /// The longest-life problem of one combination, a bound solved before the size (sizing/lcr_min_size.h):

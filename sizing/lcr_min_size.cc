@@ -96,10 +96,14 @@ Polished Polish(const LcrSizingSpec& exact, const LcrMinSizeOptions& o, std::vec
     x = p.x = p.result.x;
     p.check = TryCheck(exact, x, o.dense_steps, &near, p.note);
     if (!p.check) return p;
-    if (p.result.ok() && p.check->ok()) {
+    // With the power-loss objective a design without its lubricated operating point (no thermal
+    // equilibrium below the oil's limit on the dense grid) has no objective value: not converged.
+    const bool valued = std::isfinite(LcrObjectiveValue(exact, *p.check));
+    if (p.result.ok() && p.check->ok() && valued) {
       p.converged = true;
       return p;
     }
+    if (!valued && p.note.empty()) p.note = "no lubricated operating point: " + p.check->lubrication_why;
     bool changed = Merge(exact, active, near);
     // The efficiency is a 48-angle mean in the problem against 3600 in the check: raise its limit
     // by the deficit.
@@ -223,10 +227,10 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
       p.result = t.result;
       p.x = t.result.x;
       p.check = TryCheck(spec, p.x, options.dense_steps, nullptr, p.note);
-      p.converged = p.result.ok() && p.check && p.check->ok();
+      p.converged = p.result.ok() && p.check && p.check->ok() && std::isfinite(LcrObjectiveValue(spec, *p.check));
       t.polished = p;
       s.converged = p.converged;
-      if (s.converged) s.outer_diameter_mm = p.check->outer_diameter_mm;
+      if (s.converged) s.outer_diameter_mm = p.check->outer_diameter_mm, s.objective = LcrObjectiveValue(spec, *p.check);
     } else if (!t.result.x.empty() && t.result.status != SolverStatus::kInfeasible) {
       // A start whose smooth optimum is one an earlier start already reached (to 1e-6 relative)
       // shares that start's polish.
@@ -248,17 +252,20 @@ LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOpt
       }
       s.status = t.polished->result.status;
       s.converged = t.polished->converged;
-      if (s.converged) s.outer_diameter_mm = t.polished->check->outer_diameter_mm;
+      if (s.converged)
+        s.outer_diameter_mm = t.polished->check->outer_diameter_mm,
+        s.objective = LcrObjectiveValue(spec, *t.polished->check);
     }
     out.starts.push_back(s);
     trials.push_back(std::move(t));
   }
 
-  // The chosen start: the smallest converged design; else the polished or smooth end point with the
-  // smallest violation of the study's limits (the closest point); else the first.
+  // The chosen start: the converged design with the least objective (the smallest, or the one
+  // that loses least); else the polished or smooth end point with the smallest violation of the
+  // study's limits (the closest point); else the first.
   int best = -1;
   for (size_t i = 0; i < trials.size(); ++i)
-    if (out.starts[i].converged && (best < 0 || out.starts[i].outer_diameter_mm < out.starts[best].outer_diameter_mm))
+    if (out.starts[i].converged && (best < 0 || out.starts[i].objective < out.starts[best].objective))
       best = int(i);
   if (best >= 0) {
     const Polished& p = *trials[best].polished;
@@ -331,7 +338,10 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
       {"max_oil_temperature_C", &LcrLimits::max_oil_temperature_C,
        spec.lubrication && std::isfinite(l.max_oil_temperature_C) &&
            c.oil_temperature_C >= l.max_oil_temperature_C - kBindingFraction * std::max(std::abs(l.max_oil_temperature_C), 1.0)},
+      {"max_outer_diameter_mm", &LcrLimits::max_outer_diameter_mm,
+       std::isfinite(l.max_outer_diameter_mm) && c.outer_diameter_mm >= l.max_outer_diameter_mm * (1 - kBindingFraction)},
   };
+  const double f0 = LcrObjectiveValue(spec, c);
   for (const Entry& e : entries) {
     if (!e.binds) continue;
     const double base = l.*(e.field);
@@ -339,16 +349,15 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
     const double h = e.field == &LcrLimits::min_efficiency && spec.lubrication
                          ? 2 * kSensitivityStep * (1 - base)
                          : std::max(std::abs(base), 1.0) * kSensitivityStep;
-    double od[2] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}, at[2] = {base - h, base + h};
+    double f[2] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}, at[2] = {base - h, base + h};
     for (int s = 0; s < 2; ++s) {
       if (at[s] <= 0 && e.field != &LcrLimits::undercut_margin_mm) continue;
       LcrSizingSpec moved = spec;
       moved.limits.*(e.field) = at[s];
       const Polished p = Polish(moved, options, outcome.x, outcome.active);
-      if (p.converged) od[s] = p.check->outer_diameter_mm;
+      if (p.converged) f[s] = LcrObjectiveValue(spec, *p.check);
     }
-    out[e.key] = SlopeFromReSolves(od[0], c.outer_diameter_mm, od[1], h,
-                                   10 * options.solver.tolerance * std::max(c.outer_diameter_mm, 1.0));
+    out[e.key] = SlopeFromReSolves(f[0], f0, f[1], h, 10 * options.solver.tolerance * std::max(std::abs(f0), 1.0));
   }
   return out;
 }

@@ -30,7 +30,10 @@
 //    full dense problem, so a KKT point of the small problem is one of the dense problem (Drake's
 //    MinimumValueConstraint makes the same argument with its influence distance).
 // 3. A combination is `converged` only when the optimizer's own test passes on the last polish
-//    and the dense check holds at its point.
+//    and the dense check holds at its point (with the power-loss objective, also when the dense
+//    check has the lubricated operating point). Its starts are compared by the objective's value
+//    on the dense check (LcrObjectiveValue: the outer diameter, or the lubricated loss over the
+//    check's 3600 angles, the accurate value of the problem's 48-angle mean).
 #pragma once
 
 #include <array>
@@ -65,6 +68,7 @@ struct LcrStartOutcome {
   optimizers::SolverStatus status = optimizers::SolverStatus::kFailed;
   bool converged = false;            ///< optimizer's test and dense check both hold
   double outer_diameter_mm = 0.0;    ///< meaningful when converged
+  double objective = 0.0;            ///< LcrObjectiveValue at its design; meaningful when converged
 };
 
 /// Result of one combination.
@@ -93,9 +97,11 @@ struct LcrMinSizeOutcome {
 /// spec.form is ignored) to the optimum of the exact constraints.
 LcrMinSizeOutcome SolveLcrMinSize(const LcrSizingSpec& spec, const LcrMinSizeOptions& options);
 
-/// d(outer diameter)/d(limit) [mm per unit of the limit] at a converged outcome, for every limit
-/// of spec that binds there (dense-check value within 0.1% of the limit; stress, load, undercut
-/// margin, roller gap, efficiency, life), named by the limit key. Computed by re-solving the polish from
+/// d(objective)/d(limit) at a converged outcome [the objective's unit — mm of outer diameter, or W
+/// of lubricated loss with kPowerLoss — per unit of the limit], for every limit of spec that binds
+/// there (dense-check value within 0.1% of the limit; stress, load, undercut margin, roller gap,
+/// efficiency, life, oil temperature, outer diameter), named by the limit key; the objective's
+/// values are the dense check's (LcrObjectiveValue). Computed by re-solving the polish from
 /// the optimum with the limit moved by ±0.5% (central difference; one-sided where the other side
 /// fails), for ±0.5% of max(|limit|, 1) in the limit's unit. Negative where raising the limit
 /// shrinks the reducer (stress, load: −0.046 mm/MPa on the ratio −90 example), positive where it

@@ -135,12 +135,15 @@ std::string PlainLimitName(const std::string& row) {
   return name + side;
 }
 
-std::vector<std::string> PlainLimitNames(const std::vector<std::string>& rows) {
+std::vector<std::string> PlainLimitNames(const std::vector<std::string>& rows, const LcrSizingSpec& spec) {
   std::vector<std::string> out;
   for (const std::string& row : rows) {
     // The rows that define the outer diameter (the objective) bind at every optimum: not limits.
     if (row == "outer_radius_mm" || row == "input_envelope_mm" || row == "output_envelope_mm") continue;
-    const std::string name = PlainLimitName(row);
+    // R at its upper bound: the outer-diameter limit when there is one (else, with the efficiency
+    // objective, the variable box's largest outer radius, which the envelope rows never reach).
+    if (row == "outer_radius_mm upper bound" && !std::isfinite(spec.limits.max_outer_diameter_mm)) continue;
+    const std::string name = row == "outer_radius_mm upper bound" ? "outer diameter limit" : PlainLimitName(row);
     if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
   }
   return out;
@@ -190,6 +193,9 @@ std::string StatusOf(const Candidate& c) {
   return optimizers::ToString(r.status);
 }
 
+// The efficiency objective (objectives::LcrSizeObjective::kPowerLoss).
+bool MinimisesLoss(const Study& s) { return s.base.objective == objectives::LcrSizeObjective::kPowerLoss; }
+
 nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
   const auto& o = c.outcome;
   nlohmann::json j;
@@ -215,20 +221,23 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
     j["violated"] = nlohmann::json::array();
     return j;
   }
-  // Multistart: every start's outcome; the spread of the converged outer diameters.
+  // Multistart: every start's outcome; the spread of the converged objective values (outer
+  // diameters, or with the efficiency objective the losses).
+  const bool loss = MinimisesLoss(s);
   nlohmann::json starts = nlohmann::json::array();
   double lo = kInf, hi = -kInf;
   for (const auto& st : o.starts) {
     nlohmann::json sj = {{"status", st.converged ? "converged" : optimizers::ToString(st.status)}};
     if (st.converged) {
       sj["outer_diameter_mm"] = st.outer_diameter_mm;
-      lo = std::min(lo, st.outer_diameter_mm);
-      hi = std::max(hi, st.outer_diameter_mm);
+      if (loss) sj["power_loss_W"] = st.objective;
+      lo = std::min(lo, st.objective);
+      hi = std::max(hi, st.objective);
     }
     starts.push_back(sj);
   }
   j["starts"] = starts;
-  if (hi >= lo) j["multistart_spread_mm"] = hi - lo;
+  if (hi >= lo) j[loss ? "multistart_spread_W" : "multistart_spread_mm"] = hi - lo;
   j["binding"] = Unique(o.result.active);
   j["violated"] = Unique(o.result.violated);
   if (o.design && c.feasible()) {
@@ -241,6 +250,10 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
     j["max_roller_force_N"] = std::max(k.max_force_N[0], k.max_force_N[1]);
     j["undercut_margin_mm"] = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
     if (!k.life.empty()) j["shortest_L10h"] = MaybeFinite(k.shortest_L10h);
+    if (loss) {
+      j["power_loss_W"] = MaybeFinite(k.lubricated_loss_W);
+      j["mean_efficiency"] = MaybeFinite(k.mean_efficiency);
+    }
   } else if (o.design) {
     // Not a result: the point where the search came closest, and what it breaks there.
     j["closest_point"] = {{"eccentricity_mm", o.design->eccentricity},
@@ -381,6 +394,7 @@ Study Parse(const Node& root) {
   b.limits.roller_gap_mm = limits.roller_gap_mm;
   if (limits.min_efficiency) b.limits.min_efficiency = *limits.min_efficiency;
   b.limits.life_h = limits.life_h.value_or(0.0);
+  b.limits.max_outer_diameter_mm = limits.max_outer_diameter_mm.value_or(kInf);
   if (b.limits.life_h > 0 && !duty)
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a duty_cycle "
                                       "beside limits.life_h, found neither");
@@ -418,6 +432,20 @@ Study Parse(const Node& root) {
                      " exactly");
   b.life = ParseLife(in, root, b, !s.catalogue.empty(), duty ? &*duty : nullptr, life_why);
   ParseRobust(in, root, s);
+  // The efficiency objective: the lubricated loss of the line model's nominal design
+  // (objectives/lcr_sizing.h LcrSizeObjective::kPowerLoss).
+  if (in.objective == "efficiency") {
+    if (!in.lubricant)
+      root["objective"].FailWith("the efficiency objective needs \"lubricant\" (the oil whose losses it minimises) "
+                                 "and load.input_speed_rpm; would fit: \"outer_diameter\", or a \"lubricant\" block");
+    if (s.contact3d || s.robust)
+      root["objective"].FailWith(std::string("the efficiency objective is sized on the line contact model without "
+                                             "tolerances: not with ") +
+                                 (s.contact3d ? "a 3D \"contact\" (or fixed.crowning, overload, crowning or length "
+                                                "variables)"
+                                              : "\"robust\"") +
+                                 "; would fit: \"outer_diameter\", or remove that block");
+  }
   // The life rows and checks are those of the line model's nominal design (objectives/lcr_sizing.h).
   if (b.life && (s.contact3d || s.robust))
     (duty->size() == 1 && in.duty_cycle.is_null() ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
@@ -430,6 +458,7 @@ Study Parse(const Node& root) {
     root["robust"].Fail("no \"robust\" block together with a 3D \"contact\" (robust sizing uses the line "
                         "contact model; remove one of the two)");
   ParseSizingLubrication(in, root, s);
+  if (in.objective == "efficiency") s.base.objective = objectives::LcrSizeObjective::kPowerLoss;
   return s;
 }
 
@@ -509,6 +538,8 @@ nlohmann::ordered_json Input::SchemaRules() {
     "allOf": [
       {"if": {"required": ["lubricant"]},
        "then": {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}},
+      {"if": {"required": ["objective"], "properties": {"objective": {"const": "efficiency"}}},
+       "then": {"required": ["lubricant"]}},
       {"if": {"required": ["limits"], "properties": {"limits": {"required": ["max_oil_temperature_C"]}}},
        "then": {"required": ["lubricant"], "properties": {"lubricant": {"required": ["thermal"]}}}},
       {"if": {"required": ["roller_catalogue"]},
@@ -592,10 +623,12 @@ Result Run(const Study& s, const RunContext& ctx) {
       res.gradient_evaluations += c.outcome.result.gradient_evaluations;
     };
   }
+  // The driver's "size" is the objective's value on the dense check: the outer diameter, or the
+  // lubricated loss with the efficiency objective (the 3D path sizes the outer diameter only).
   loop.feasible_size = [&](int i) -> std::optional<double> {
     const Candidate& c = res.candidates[size_t(i)];
     if (!c.feasible()) return std::nullopt;
-    return c.outcome.check->outer_diameter_mm;
+    return objectives::LcrObjectiveValue(c.spec, *c.outcome.check);
   };
   loop.verify = [&](int i) {
     Candidate& b = res.candidates[size_t(i)];
@@ -632,9 +665,10 @@ Result Run(const Study& s, const RunContext& ctx) {
   return res;
 }
 
-// What each binding limit costs in outer diameter, one line per limit ("stress limit +10 MPa →
-// -0.458 mm"), from the limit sensitivities (re-solves of the line problem).
-std::vector<std::string> LimitCosts(const Result& result) {
+// What each binding limit costs in the objective, one line per limit ("stress limit +10 MPa →
+// -0.458 mm" of outer diameter, or "→ -0.0123 W of loss" with the efficiency objective), from the
+// limit sensitivities (re-solves of the line problem).
+std::vector<std::string> LimitCosts(const Study& s, const Result& result) {
   struct Shown {
     const char* key;
     const char* label;
@@ -646,14 +680,20 @@ std::vector<std::string> LimitCosts(const Result& result) {
                          {"undercut_margin_mm", "undercut margin", 0.1, "mm"},
                          {"roller_gap_mm", "roller gap", 0.1, "mm"},
                          {"min_efficiency", "efficiency limit", 0.01, ""},
-                         {"life_h", "life limit", 1000, "h"}};
+                         {"life_h", "life limit", 1000, "h"},
+                         {"max_outer_diameter_mm", "outer diameter limit", 1, "mm"}};
+  const bool loss = MinimisesLoss(s);
   std::vector<std::string> lines;
   char buf[200];
   for (const Shown& sh : shown) {
     const auto it = result.limit_sensitivity.find(sh.key);
     if (it == result.limit_sensitivity.end()) continue;
-    std::snprintf(buf, sizeof buf, "%s +%g%s%s → %+.3f mm", sh.label, sh.step, *sh.unit ? " " : "", sh.unit,
-                  it->second * sh.step);
+    if (loss)
+      std::snprintf(buf, sizeof buf, "%s +%g%s%s → %+.4g W of loss", sh.label, sh.step, *sh.unit ? " " : "", sh.unit,
+                    it->second * sh.step);
+    else
+      std::snprintf(buf, sizeof buf, "%s +%g%s%s → %+.3f mm", sh.label, sh.step, *sh.unit ? " " : "", sh.unit,
+                    it->second * sh.step);
     lines.push_back(buf);
   }
   return lines;
@@ -664,6 +704,9 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   res["study"] = "lcr_min_size";
   res["name"] = s.name;
   res["target"] = {{"speed_ratio", s.ratio}, {"output_torque_Nm", s.output_torque_Nmm / 1000}};
+  // What was minimised: written for the efficiency objective only (absent: the outer diameter, so
+  // that a default study's result.json stays as it was).
+  if (MinimisesLoss(s)) res["objective"] = "efficiency";
   res["optimizer"] = {{"backend", s.options.solver.backend},
                       {"constraints", s.form == LcrConstraintForm::kSamples ? "samples" : "aggregate"},
                       {"polish", s.options.polish},
@@ -731,10 +774,10 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   }
   if (best.roller >= 0) b["catalogue_roller"] = s.catalogue[best.roller].name;
   b["binding"] = Unique(best.outcome.result.active);
-  b["binding_names"] = PlainLimitNames(Unique(best.outcome.result.active));
+  b["binding_names"] = PlainLimitNames(Unique(best.outcome.result.active), best.spec);
   b["limit_sensitivity"] = nlohmann::json::object();
   for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
-  if (!result.limit_sensitivity.empty()) b["limit_costs"] = LimitCosts(result);
+  if (!result.limit_sensitivity.empty()) b["limit_costs"] = LimitCosts(s, result);
   // The same as cycloid_min_size and disc_cam_min_size give it: limit, its value, its cost.
   b["binding_limits"] = nlohmann::json::array();
   for (const auto& [key, cost] : result.limit_sensitivity) {
@@ -743,12 +786,14 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
         {"contact_stress_MPa", {l.contact_stress_MPa, "MPa"}}, {"roller_load_N", {l.roller_load_N, "N"}},
         {"undercut_margin_mm", {l.undercut_margin_mm, "mm"}},  {"roller_gap_mm", {l.roller_gap_mm, "mm"}},
         {"min_efficiency", {l.min_efficiency, "1"}},          {"life_h", {l.life_h, "h"}},
-        {"max_oil_temperature_C", {l.max_oil_temperature_C, "°C"}}};
+        {"max_oil_temperature_C", {l.max_oil_temperature_C, "°C"}},
+        {"max_outer_diameter_mm", {l.max_outer_diameter_mm, "mm"}}};
     const auto it = values.find(key);
     nlohmann::json entry = {{"limit", key},
                             {"limit_value", it != values.end() ? it->second.first : NAN},
                             {"limit_cost", cost},
-                            {"unit", "mm per " + (it != values.end() ? it->second.second : std::string("unit"))}};
+                            {"unit", std::string(MinimisesLoss(s) ? "W of loss" : "mm") + " per " +
+                                         (it != values.end() ? it->second.second : std::string("unit"))}};
     // The cost is itself the re-solve slope here (LimitSlopes): the same number, with its sides.
     AddLimitSlopeJson(result.limit_slope.count(key) ? &result.limit_slope.at(key) : nullptr, entry);
     b["binding_limits"].push_back(entry);
@@ -865,8 +910,9 @@ void Write(const Study& s, const Result& result, Outputs& out) {
   }
 
   // One row per feasible candidate (an infeasible one has no outer diameter to show).
+  const bool loss = MinimisesLoss(s);
   Table t;
-  std::vector<double> ma, mb, dr, od, ecc, feas;
+  std::vector<double> ma, mb, dr, od, ecc, feas, pl;
   for (const auto& c : result.candidates) {
     if (!c.feasible()) continue;
     const lcr::Reducer<double>& d = *c.outcome.design;
@@ -876,20 +922,23 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     od.push_back(lcr::OuterDiameter(d));
     ecc.push_back(d.eccentricity);
     feas.push_back(1.0);
+    pl.push_back(c.outcome.check->lubricated_loss_W);
   }
   t.Add("input_lobes", ma);
   t.Add("output_lobes", mb);
   t.Add("roller_diameter_mm", dr);
   t.Add("eccentricity_mm", ecc);
   t.Add("outer_diameter_mm", od);
+  if (loss) t.Add("power_loss_W", pl);
   t.Add("feasible", feas);
   out.Add("candidates.csv", ToCsv(t));
   // The answer at a glance: outer diameter of each feasible lobe combination, the smallest marked.
-  PlotOptions po{"Smallest outer diameter of each feasible lobe combination", "input cam lobes [-]",
-                 "outer diameter [mm]"};
+  PlotOptions po{loss ? "Outer diameter of each feasible lobe combination's least-loss design"
+                      : "Smallest outer diameter of each feasible lobe combination",
+                 "input cam lobes [-]", "outer diameter [mm]"};
   if (result.best >= 0) {
     const Candidate& best = result.candidates[result.best];
-    po.points = {{"smallest: " + ComboName(best.combo), double(best.combo.lobes_a),
+    po.points = {{(loss ? "least loss: " : "smallest: ") + ComboName(best.combo), double(best.combo.lobes_a),
                   lcr::OuterDiameter(*best.outcome.design)}};
   }
   // Candidates pruned by the branch and bound (3D): their lower bounds, a second series.
@@ -910,12 +959,20 @@ std::string Summary(const Study& s, const Result& result) {
   char buf[200];
   if (result.best < 0) return "";
   const Candidate& b = result.candidates[result.best];
-  std::snprintf(buf, sizeof buf, "lcr_min_size: best %s, outer diameter %.3f mm (%zu candidates, %.2f s)\n",
-                ComboName(b.combo).c_str(), b.outcome.check->outer_diameter_mm, result.candidates.size(),
-                result.seconds);
+  const objectives::LcrDenseCheck& k = *b.outcome.check;
+  if (MinimisesLoss(s))
+    std::snprintf(buf, sizeof buf,
+                  "lcr_min_size: minimised the lubricated loss: best %s, loss %.4g W (efficiency %.5f), outer "
+                  "diameter %.3f mm (%zu candidates, %.2f s)\n",
+                  ComboName(b.combo).c_str(), k.lubricated_loss_W, k.mean_efficiency, k.outer_diameter_mm,
+                  result.candidates.size(), result.seconds);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "lcr_min_size: minimised the outer diameter: best %s, outer diameter %.3f mm (%zu candidates, "
+                  "%.2f s)\n",
+                  ComboName(b.combo).c_str(), k.outer_diameter_mm, result.candidates.size(), result.seconds);
   m << buf;
-  for (const std::string& line : LimitCosts(result)) m << "lcr_min_size: " << line << "\n";
-  (void)s;
+  for (const std::string& line : LimitCosts(s, result)) m << "lcr_min_size: " << line << "\n";
   return m.str();
 }
 
@@ -952,6 +1009,7 @@ Fidelity Knobs(const nlohmann::json& study) {
                        "slices along the roller (the slices model of the stress rows and the check)"});
   f.headlines = {"/best/outer_diameter_mm", "/best/eccentricity_mm", "/best/max_contact_stress_MPa",
                  "/best/max_roller_force_N", "/best/mean_efficiency"};
+  if (in.objective == "efficiency") f.headlines.push_back("/best/power_loss_W");
   return f;
 }
 CAMOPT_REGISTER_FIDELITY("lcr_min_size", Knobs);
@@ -1040,7 +1098,11 @@ const bool kEstimateRegistered = RegisterWorkEstimate("lcr_min_size", EstimateWo
 namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("lcr_min_size", {
-    {"smallest outer diameter", "/best/outer_diameter_mm", "mm"},
+    // What was minimised: result.json's "objective" is written for the efficiency objective only.
+    {"smallest outer diameter", "/best/outer_diameter_mm", "mm", "", NAN, true, "", "", "/objective"},
+    {"objective", "/objective", ""},
+    {"outer diameter", "/best/outer_diameter_mm", "mm", "study:/limits/max_outer_diameter_mm", NAN, true, "",
+     "/objective"},
     {"input cam lobes", "/best/input/lobes", ""},
     {"output cam lobes", "/best/output/lobes", ""},
     {"eccentricity", "/best/eccentricity_mm", "mm"},

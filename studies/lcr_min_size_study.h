@@ -1,7 +1,9 @@
 // Study kind "lcr_min_size": the smallest lobe cam reducer for a target speed ratio and output
-// torque. Enumerates every lobe/roller combination giving the ratio exactly, solves each to the
+// torque (or, with "objective": "efficiency" and a lubricant, the one that loses least power at
+// that torque and the lubricant's speed, within limits.max_outer_diameter_mm when given).
+// Enumerates every lobe/roller combination giving the ratio exactly, solves each to the
 // optimum of the exact constraints (sizing/lcr_min_size.h), and reports the best design, what
-// each binding limit costs (limit_sensitivity), and one candidate per combination (and catalogue
+// each binding limit costs in the objective (limit_sensitivity), and one candidate per combination (and catalogue
 // roller) with its multistart spread and, when nothing fits, the limits it breaks at its closest
 // point. Nothing fitting is an incomplete result (exit code 3, outputs still written).
 #pragma once
@@ -150,7 +152,7 @@ struct Input {
   struct Limits {
     std::optional<double> contact_stress_MPa, roller_load_N;
     double undercut_margin_mm = 0, roller_gap_mm = 0;
-    std::optional<double> min_efficiency, life_h, max_oil_temperature_C;
+    std::optional<double> min_efficiency, life_h, max_oil_temperature_C, max_outer_diameter_mm;
     template <typename Archive>
     void Serialize(Archive* a) {
       // A limit is also its constraint's scale in the solvers: bounded to values a scale can take.
@@ -176,6 +178,10 @@ struct Input {
                Field().Positive().Unit("h").Desc(
                    "the shortest ISO 281 basic rating life L10h of any rated bearing over load.input_speed_rpm or the "
                    "duty_cycle (docs/life.md); needs a speed"));
+      a->Visit("max_outer_diameter_mm", &max_outer_diameter_mm,
+               Field().In(1e-3, 1e6, "an outer diameter limit in [0.001, 1e6] mm").Unit("mm").Desc(
+                   "the largest outer diameter 2 max(r_d + r_r) (absent: none); what bounds the size when the "
+                   "objective is the efficiency"));
     }
   };
   struct Load {
@@ -278,6 +284,7 @@ struct Input {
 
   std::string study = "lcr_min_size", name;
   std::optional<std::string> description;
+  std::string objective = "outer_diameter";
   Target target;
   Search search;
   Variables variables;
@@ -308,6 +315,12 @@ struct Input {
     a->Visit("variables", &variables, Field().Required().Desc("the sized quantities' bounds [lower, upper]"));
     a->Visit("fixed", &fixed, Field().Required().Desc("the sizes that are not variables"));
     a->Visit("limits", &limits, Field().Required().Desc("the limits every design must meet"));
+    a->Visit("objective", &objective,
+             Field().OneOf({"outer_diameter", "efficiency"}, "one of \"outer_diameter\", \"efficiency\"")
+                 .Desc("what is minimised: the outer diameter, or (efficiency, with lubricant) the lubricated power "
+                       "loss at target.output_torque_Nm and load.input_speed_rpm, the most efficient reducer within "
+                       "the ranges and limits (limits.max_outer_diameter_mm bounds its size); the line contact "
+                       "model without tolerances (not with a 3D contact or robust)"));
     a->Visit("material", &material,
              Field().Desc("the cams' and rollers' elastic material (absent: steel, E = 206 GPa, ν = 0.3)"));
     a->Visit("load", &load, Field().Desc("the friction, the overload torque and the speed"));
@@ -402,8 +415,9 @@ struct Candidate {
 
 struct Result {
   std::vector<Candidate> candidates;
-  int best = -1;  ///< index of the smallest feasible candidate, −1 when nothing fits
-  /// d(outer diameter)/d(limit) of the best design [mm per unit of the limit], by limit key.
+  int best = -1;  ///< index of the feasible candidate with the least objective, −1 when nothing fits
+  /// d(objective)/d(limit) of the best design [mm of outer diameter, or W of loss with the efficiency
+  /// objective, per unit of the limit], by limit key.
   std::map<std::string, double> limit_sensitivity;
   /// The same re-solves with both sides (sizing/limit_slope.h): the binding_limits' re_solve_* and kink.
   std::map<std::string, objectives::LimitSlope> limit_slope;
@@ -439,8 +453,8 @@ void Write(const Study& study, const Result& result, Outputs& out);
 /// roller) read from `optimum`, the run's best_lcr_analysis.json. @throws nlohmann::json::exception
 /// when `optimum` lacks its reducer's counts or roller.
 nlohmann::json StartLcrAnalysisStudy(const Study& study, const nlohmann::json& optimum);
-/// Lines for the terminal: best outer diameter, time, and what each binding limit costs
-/// ("contact stress limit +10 MPa → −0.13 mm").
+/// Lines for the terminal: what was minimised, the best outer diameter (and loss), time, and what
+/// each binding limit costs ("stress limit +10 MPa → −0.13 mm", or in W of loss).
 std::string Summary(const Study& study, const Result& result);
 
 }  // namespace camopt::studies::lcr_min_size

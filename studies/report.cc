@@ -267,6 +267,7 @@ HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& s
     const nlohmann::json* v = At(result, h.pointer);
     if (!v) continue;
     if (!h.only_with.empty() && !At(result, h.only_with)) continue;
+    if (!h.not_with.empty() && At(result, h.not_with)) continue;
     const std::string unit = h.unit.empty() ? "" : " " + h.unit;
     std::string value = Value(*v);
     double error = 0;  // the value's error estimate, when the kind gives one

@@ -36,6 +36,8 @@ struct Headline {
   /// Shown only when this JSON pointer is in result.json ("": always): a label that holds for one
   /// variant of a kind only (a formula of one follower type).
   std::string only_with = "";
+  /// Left out when this JSON pointer is in result.json ("": never): the label of the other variant.
+  std::string not_with = "";
 };
 
 /// Registers the headlines of a kind's report; returns true so that it can initialise a static.
