@@ -284,23 +284,23 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
     if (s.lubrication && (s.limits.min_efficiency > 0 || TemperatureRow(s) || PowerLossObjective(s))) {
       // The lubricated operating point over the same angles (model/lcr/lubrication.h); no thermal
       // equilibrium below the oil's limit: not-a-number rows, which the solvers answer by a shorter step.
-      const LcrSizingLubrication& l = *s.lubrication;
+      const LcrSizingLubrication& lub = *s.lubrication;
       // Over a Jet the housing's balance is solved on values first (the same design in double),
       // and the Jets' losses are evaluated once, at its temperature.
       std::optional<ThermalPoint<double>> balance;
       if constexpr (!std::is_same_v<T, double>) {
-        if (!l.temperature_C) {
+        if (!lub.temperature_C) {
           std::vector<double> xv;
           for (const T& xi : x) xv.push_back(Value(xi));
           balance = lcr::LubricatedRigidCycle(Design(s, std::span<const double>(xv)), s.material, s.output_torque_Nmm,
-                                              l.spec, l.input_speed_rpm, l.temperature_C, l.cooling, l.balance_limit_C,
+                                              lub.spec, lub.input_speed_rpm, lub.temperature_C, lub.cooling, lub.balance_limit_C,
                                               s.efficiency_samples)
                         .balance;
         }
       }
       const lcr::RigidLubricatedPoint<T> p =
-          lcr::LubricatedRigidCycle(r, s.material, s.output_torque_Nmm, l.spec, l.input_speed_rpm, l.temperature_C,
-                                    l.cooling, l.balance_limit_C, s.efficiency_samples, balance ? &*balance : nullptr);
+          lcr::LubricatedRigidCycle(r, s.material, s.output_torque_Nmm, lub.spec, lub.input_speed_rpm, lub.temperature_C,
+                                    lub.cooling, lub.balance_limit_C, s.efficiency_samples, balance ? &*balance : nullptr);
       efficiency = p.found ? p.efficiency : T(std::numeric_limits<double>::quiet_NaN());
       oil_C = p.found ? p.oil_C : T(std::numeric_limits<double>::quiet_NaN());
       loss_W = p.found ? p.loss_W : T(std::numeric_limits<double>::quiet_NaN());

@@ -429,7 +429,9 @@ struct OperatingPoint {
 };
 OperatingPoint LubricatedPoint(const Study& st, const lcr::CycleLoads& loads, double speed_rpm) {
   const Study::Lubrication& l = *st.lubrication;
-  const auto at = [&](double t) { return lcr::LubricatedCycle(st.reducer, st.material, loads, l.spec, speed_rpm, t); };
+  const std::vector<lcr::AngleKinematics<double>> kinematics =
+      lcr::CycleKinematics(st.reducer, st.material, loads, l.spec, speed_rpm);
+  const auto at = [&](double t) { return lcr::LubricatedCycle(st.reducer, loads, kinematics, l.spec, speed_rpm, t); };
   OperatingPoint p;
   p.oil = SolveOilTemperature(l.common, [&](double t) { return at(t).mean.total(); });
   p.cycle = at(p.oil.celsius);

@@ -203,6 +203,93 @@ TEST(LcrLubrication, DoublingTheSpeedScalesTheLossesAsTheLawsSay) {
   EXPECT_NEAR(p2 / p1, std::pow(2.0, 5.0 / 3.0), 1e-12);
 }
 
+// The losses at one angle and two oil temperatures against the published formulas evaluated
+// directly at that temperature's viscosity (LossesAtAngle computes the temperature-free part once
+// and scales it by powers of η0 and ν): Pan & Hamrock's h_min, Goksem & Hargreaves' 2 u F_R,
+// Palmgren's M0 + M1 per roller and the eccentric, and μ(λ) F v_s for fixed rollers.
+TEST(LcrLubrication, OneAngleLossesAreTheFormulasAtEachTemperature) {
+  const Reducer<double> r = LcrII();
+  const Material m = Steel();
+  LoadCase load;
+  load.output_torque_Nmm = 80e3;
+  const double theta = 0.37, n_in = 1500.0, omega = n_in * 2 * kPi / 60;
+  const AngleLoads<double> a = AnalyzeAngle(r, m, load, theta, {true, false, true});
+  for (bool rotate : {true, false}) {
+    LubricationSpec s = Spec(rotate);
+    s.composite_roughness_mm = 0.5e-3;  // λ inside the mixed band for the fixed rollers' μ(λ)
+    for (double t : {40.0, 85.0}) {
+      const double nu = s.oil.KinematicViscosityAt(t), eta0 = s.oil.DynamicViscosityAt(t);
+      double rolling = 0, sliding = 0, bearings = 0, min_h = 1e300;
+      for (int side = 0; side < 2; ++side) {
+        const Side sd = side == 0 ? Side::kInput : Side::kOutput;
+        const auto& k = side == 0 ? a.input : a.output;
+        const CamSide<double>& cam = r.side(sd);
+        for (size_t i = 0; i < k.contacts.size(); ++i) {
+          const ContactSpeeds<double> v = RollerContactSpeeds(r, sd, k.contacts[i], theta, rotate);
+          const double f = k.force[i];
+          if (rotate) bearings += PalmgrenPowerLoss(s.roller_bearing, nu, v.roller_spin * n_in, std::max(f, 0.0)) * 1e-3;
+          if (!(f > 0)) continue;
+          const double r_eff = cam.roller_radius * (1 - cam.roller_radius * k.contacts[i].curvature);
+          const double u = v.entraining * omega, w = f / cam.contact_length();
+          const double alpha = s.oil.pressure_viscosity_per_MPa;
+          const double h = contact::LineContactFilm(eta0, u, r_eff, w, m.composite_modulus_MPa(), alpha).minimum;
+          min_h = std::min(min_h, h);
+          rolling += 2 * u *
+                     contact::LineContactRollingForcePerLength(eta0, u, r_eff, w, m.composite_modulus_MPa(), alpha) *
+                     cam.contact_length() * 1e-3;
+          if (!rotate)
+            sliding += contact::FrictionCoefficient(s.friction, h / s.composite_roughness_mm) * f * v.sliding * omega *
+                       1e-3;
+        }
+      }
+      const double n_ecc = n_in * r.input.rollers / r.input.lobes;
+      const double eccentric = PalmgrenPowerLoss(s.eccentric_bearing, nu, n_ecc, a.eccentric_load.norm()) * 1e-3;
+      const AngleLosses<double> l =
+          LossesAtAngle(r, s, m.composite_modulus_MPa(), a.input.contacts, a.input.force, a.output.contacts,
+                        a.output.force, a.eccentric_load.norm(), theta, n_in, t);
+      const double tol = 1e-12;
+      EXPECT_NEAR(l.rolling_input + l.rolling_output, rolling, tol * rolling) << rotate << " " << t;
+      EXPECT_NEAR(l.sliding_input + l.sliding_output, sliding, tol * std::max(sliding, 1.0)) << rotate << " " << t;
+      EXPECT_NEAR(l.roller_bearings_input + l.roller_bearings_output, bearings, tol * std::max(bearings, 1.0))
+          << rotate << " " << t;
+      EXPECT_NEAR(l.eccentric_bearing, eccentric, tol * eccentric) << rotate << " " << t;
+      EXPECT_NEAR(l.min_film_mm, min_h, tol * min_h) << rotate << " " << t;
+      if (!rotate) EXPECT_GT(sliding, 0.0);
+      if (rotate) EXPECT_GT(bearings, 0.0);
+    }
+  }
+}
+
+// A contact whose load is at the rounding level of the largest (a frictionless law's zero computed as
+// ±1e-13 N) has no film and no rolling loss, so the loss does not come and go with the rounding; a
+// small but real load (1e-6 of the largest) has both.
+TEST(LcrLubrication, ALoadAtTheRoundingLevelIsNoContact) {
+  const Reducer<double> r = LcrII();
+  const Material m = Steel();
+  LoadCase load;
+  load.output_torque_Nmm = 80e3;
+  const double theta = 0.37;
+  const AngleLoads<double> a = AnalyzeAngle(r, m, load, theta, {true, false, true});
+  size_t unloaded = a.input.force.size();
+  double largest = 0;
+  for (size_t k = 0; k < a.input.force.size(); ++k) {
+    largest = std::max(largest, a.input.force[k]);
+    if (!(a.input.force[k] > 0)) unloaded = k;
+  }
+  ASSERT_LT(unloaded, a.input.force.size());
+  const auto rolling = [&](double f) {
+    std::vector<double> forces = a.input.force;
+    forces[unloaded] = f;
+    const AngleLosses<double> l = LossesAtAngle(r, Spec(true), m.composite_modulus_MPa(), a.input.contacts, forces,
+                                                a.output.contacts, a.output.force, a.eccentric_load.norm(), theta,
+                                                1500.0, 60.0);
+    return l.rolling_input;
+  };
+  EXPECT_EQ(rolling(1e-13), rolling(0.0));
+  EXPECT_EQ(rolling(-1e-13), rolling(0.0));
+  EXPECT_GT(rolling(1e-6 * largest), rolling(0.0));
+}
+
 // ∂(min λ, loss)/∂(e, oil temperature) at one angle against central differences.
 TEST(LcrLubrication, DerivativesMatchCentralDifferences) {
   for (bool rotate : {true, false}) {

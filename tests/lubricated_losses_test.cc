@@ -97,6 +97,10 @@ TEST(PalmgrenBearing, MomentsAndLossByHand) {
     return std::vector<T>{PalmgrenPowerLoss(b, x[0], x[1], x[2]) * T(1e-3)};
   };
   testing::ExpectJacobianMatchesCentralDifferences<3>(f, {68.0, 1500.0, 3000.0});
+  // M0 from the powers ν^(2/3), n^(2/3) given: the same numbers as above on both sides of ν n = 2000.
+  const auto p23 = [](double x) { return std::pow(x, 2.0 / 3.0); };
+  EXPECT_NEAR(PalmgrenLoadIndependentMoment(b, 68.0, p23(68.0), 1500.0, p23(1500.0)), m0, 1e-12 * m0);
+  EXPECT_NEAR(PalmgrenLoadIndependentMoment(b, 10.0, p23(10.0), 50.0, p23(50.0)), held, 1e-12 * held);
 }
 
 TEST(OperatingTemperature, LinearLossMatchesTheClosedForm) {

@@ -45,6 +45,17 @@ T PalmgrenLoadIndependentMoment(const PalmgrenBearing& b, const T& nu, const T& 
   return T(1e-7 * b.f0) * cbrt(nu_n * nu_n) * dm * dm * dm;
 }
 
+/// M0 as above from ν, n and their powers ν^(2/3), n^(2/3) computed beforehand (n ≥ 0): the same
+/// value, for a sweep over the oil's temperature that takes ν^(2/3) once for many bearings' speeds.
+template <typename T>
+T PalmgrenLoadIndependentMoment(const PalmgrenBearing& b, const T& nu, const T& nu_2_3, const T& n_rpm,
+                                const T& n_2_3) {
+  const double floor_2_3 = std::cbrt(kPalmgrenMinViscositySpeed * kPalmgrenMinViscositySpeed);
+  const T nu_n_2_3 = IfThenElse(Compare::kLess, nu * n_rpm, kPalmgrenMinViscositySpeed, T(floor_2_3), T(nu_2_3 * n_2_3));
+  const T dm = T(b.mean_diameter_mm);
+  return T(1e-7 * b.f0) * nu_n_2_3 * dm * dm * dm;
+}
+
 /// M1 = f1 P1 dm [N·mm].
 template <typename T>
 T PalmgrenLoadDependentMoment(const PalmgrenBearing& b, const T& p1) {

@@ -39,6 +39,13 @@ struct EhlFilm {
   T minimum;
 };
 
+/// The powers of U (so of η0 alone) in the line contact's films and rolling force below: a change of
+/// viscosity alone scales each by (η0'/η0)^exponent, which lets a temperature sweep compute the
+/// other powers once per contact (model/lcr/lubrication.h).
+inline constexpr double kLineCentralFilmSpeedExponent = 0.692;
+inline constexpr double kLineMinimumFilmSpeedExponent = 0.694;
+inline constexpr double kLineRollingForceSpeedExponent = 0.658;
+
 /// Line contact (Pan & Hamrock 1989). `eta0` [MPa·s] at the inlet's temperature and ambient
 /// pressure, `entraining_speed` u [mm/s] > 0, `r_eff` R [mm] (1/R = 1/R₁ + 1/R₂), `load_per_length`
 /// w' [N/mm] > 0, `e_star` Hertz's E* [MPa], `alpha` [1/MPa].
@@ -50,8 +57,8 @@ EhlFilm<T> LineContactFilm(const T& eta0, const T& entraining_speed, const T& r_
   const T u = eta0 * entraining_speed / (e_prime * r_eff);
   const T g = alpha * e_prime;
   const T w = load_per_length / (e_prime * r_eff);
-  return {r_eff * T(2.922) * pow(w, T(-0.166)) * pow(u, T(0.692)) * pow(g, T(0.470)),
-          r_eff * T(1.714) * pow(w, T(-0.128)) * pow(u, T(0.694)) * pow(g, T(0.568))};
+  return {r_eff * T(2.922) * pow(w, T(-0.166)) * pow(u, T(kLineCentralFilmSpeedExponent)) * pow(g, T(0.470)),
+          r_eff * T(1.714) * pow(w, T(-0.128)) * pow(u, T(kLineMinimumFilmSpeedExponent)) * pow(g, T(0.568))};
 }
 
 /// Hamrock & Dowson's ellipticity k = a/b ≈ 1.0339 (R_y/R_x)^0.636 (R_y ≥ R_x: the contact is
@@ -90,7 +97,7 @@ T LineContactRollingForcePerLength(const T& eta0, const T& entraining_speed, con
   const T u = eta0 * entraining_speed / (e_prime * r_eff);
   const T g = alpha * e_prime;
   const T w = load_per_length / (e_prime * r_eff);
-  return T(4.318) * pow(g * u, T(0.658)) * pow(w, T(0.0126)) * r_eff / alpha;
+  return T(4.318) * pow(g * u, T(kLineRollingForceSpeedExponent)) * pow(w, T(0.0126)) * r_eff / alpha;
 }
 
 /// Composite roughness √(Rq₁² + Rq₂²) [the unit of the Rq given].

@@ -31,6 +31,7 @@
 // bodies' rigid velocities and the losses against the statics with friction forces.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -105,65 +106,163 @@ struct AngleLosses {
   }
 };
 
-/// The losses at input angle θ under the frictionless loads `loads` (AnalyzeAngle with forces, or
-/// the compliant loads) at input speed n_in [rpm] and oil temperature t_oil [°C]. `e_star` is the
+/// What the losses at one input angle take from the loads and the kinematics, apart from the oil's
+/// temperature (LossesAtAngle in two steps, so that a sweep over the temperature computes it once):
+/// each loaded contact's film and rolling loss at unit viscosity η0 = 1 MPa·s (both are a power of
+/// η0 alone, model/contact/ehl.h) and its sliding power per unit μ; each roller bearing's speed and
+/// load-dependent loss; the eccentric bearing's.
+template <typename T>
+struct AngleKinematics {
+  struct Contact {
+    int side = 0, roller = 0;
+    bool film = false;        ///< an entraining motion on a convex contact (else boundary friction)
+    T film_unit_mm{};         ///< h_min at η0 = 1 MPa·s (0 without a film)
+    T rolling_unit_W{};       ///< 2 u F_R at η0 = 1 MPa·s [W] (0 without a film or without the loss)
+    T sliding_per_mu_W{};     ///< F |v_s| [W per unit μ] (fixed rollers)
+  };
+  struct Bearing {
+    int side = 0;
+    T n_rpm{}, n_2_3{};   ///< |speed| and its power 2/3
+    T omega{};            ///< |speed| [rad/s]
+    T load_dependent_W{};  ///< M1 ω [W]
+  };
+  std::vector<Contact> contacts;  ///< the loaded contacts
+  std::vector<Bearing> bearings;  ///< every roller's bearing (rotating rollers)
+  Bearing eccentric;
+};
+
+/// The oil's state at one temperature, as LossesAt takes it.
+template <typename T>
+struct OilState {
+  T nu{}, nu_2_3{};          ///< ν [mm²/s] and ν^(2/3)
+  T film_scale{};            ///< η0^0.694 (h_min at η0 over h_min at 1 MPa·s)
+  T rolling_scale{};         ///< η0^0.658 (the rolling force's)
+};
+
+template <typename T>
+OilState<T> OilStateAt(const LubricationSpec& spec, const T& oil_C) {
+  using std::cbrt;
+  using std::pow;
+  OilState<T> o;
+  o.nu = spec.oil.KinematicViscosityAt(oil_C);
+  o.nu_2_3 = cbrt(o.nu * o.nu);
+  const T eta0 = spec.oil.DynamicViscosityAt(oil_C);
+  o.film_scale = pow(eta0, T(contact::kLineMinimumFilmSpeedExponent));
+  o.rolling_scale = pow(eta0, T(contact::kLineRollingForceSpeedExponent));
+  return o;
+}
+
+/// The temperature-free part of the losses at input angle θ under the frictionless loads `loads`
+/// (AnalyzeAngle with forces, or the compliant loads) at input speed n_in [rpm]. `e_star` is the
 /// material's E* [MPa]. Unloaded contacts carry no film (λ taken over the loaded ones).
 template <typename T>
-AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, double e_star,
-                             const std::vector<RollerContact<T>>& input_contacts, const std::vector<T>& input_force_N,
-                             const std::vector<RollerContact<T>>& output_contacts,
-                             const std::vector<T>& output_force_N, const T& eccentric_load_N, const T& theta,
-                             const T& input_speed_rpm, const T& oil_C) {
+AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec& spec, double e_star,
+                                     const std::vector<RollerContact<T>>& input_contacts,
+                                     const std::vector<T>& input_force_N,
+                                     const std::vector<RollerContact<T>>& output_contacts,
+                                     const std::vector<T>& output_force_N, const T& eccentric_load_N, const T& theta,
+                                     const T& input_speed_rpm) {
   using std::abs;
-  AngleLosses<T> out;
+  using std::cbrt;
+  AngleKinematics<T> out;
   const T omega = input_speed_rpm * T(2.0 * kPi / 60.0);  // rad/s
-  const T nu = spec.oil.KinematicViscosityAt(oil_C);
-  const T eta0 = spec.oil.DynamicViscosityAt(oil_C);
   const T alpha(spec.oil.pressure_viscosity_per_MPa);
-  bool any = false;
+  const auto bearing = [](const PalmgrenBearing& b, const T& n_rpm, const T& load_N, int side) {
+    typename AngleKinematics<T>::Bearing o;
+    o.side = side;
+    o.n_rpm = abs(n_rpm);
+    o.n_2_3 = cbrt(o.n_rpm * o.n_rpm);
+    o.omega = o.n_rpm * T(2.0 * kPi / 60.0);
+    o.load_dependent_W = PalmgrenLoadDependentMoment(b, load_N) * o.omega * T(1e-3);
+    return o;
+  };
+  // A contact whose load is at the rounding level of the largest (the frictionless law's zero, e.g.
+  // a roller on the line of symmetry, computed as ±1e-13 N) carries no film: its rolling loss, which
+  // hardly depends on the load (w'^0.0126), would otherwise come and go with the rounding.
+  double largest = 0.0;
+  for (const auto* forces : {&input_force_N, &output_force_N})
+    for (const T& f : *forces) largest = std::max(largest, Value(f));
+  const double no_load = 1e-9 * largest;
   for (int side = 0; side < 2; ++side) {
     const Side s = side == 0 ? Side::kInput : Side::kOutput;
     const auto& contacts = side == 0 ? input_contacts : output_contacts;
     const auto& forces = side == 0 ? input_force_N : output_force_N;
     const CamSide<T>& cam = r.side(s);
     const T length = cam.contact_length();
-    T& sliding = side == 0 ? out.sliding_input : out.sliding_output;
-    T& bearings = side == 0 ? out.roller_bearings_input : out.roller_bearings_output;
-    T& rolling = side == 0 ? out.rolling_input : out.rolling_output;
     for (size_t k = 0; k < contacts.size(); ++k) {
       const ContactSpeeds<T> v = RollerContactSpeeds(r, s, contacts[k], theta, spec.rollers_rotate);
       const T f = forces[k];
       if (spec.rollers_rotate)
-        bearings += PalmgrenPowerLoss(spec.roller_bearing, nu, T(v.roller_spin * input_speed_rpm),
-                                      IfThenElse(Compare::kGreater, f, 0.0, f, T(0.0))) * T(1e-3);
-      if (!(Value(f) > 0.0)) continue;
+        out.bearings.push_back(bearing(spec.roller_bearing, T(v.roller_spin * input_speed_rpm),
+                                       IfThenElse(Compare::kGreater, f, 0.0, f, T(0.0)), side));
+      if (!(Value(f) > no_load)) continue;
+      typename AngleKinematics<T>::Contact c;
+      c.side = side;
+      c.roller = int(k);
       const T r_eff = cam.roller_radius * (T(1.0) - cam.roller_radius * contacts[k].curvature);
       const T u = v.entraining * omega;  // mm/s
       // No entraining motion (or an undercut contact, r_eff ≤ 0): no film, boundary friction.
-      const bool film = Value(u) > 1e-12 && Value(r_eff) > 0.0;
-      const T h = film ? contact::LineContactFilm(eta0, u, r_eff, T(f / length), T(e_star), alpha).minimum : T(0.0);
-      if (film && spec.rolling_loss)
-        rolling += contact::RollingLoss(
-                       T(contact::LineContactRollingForcePerLength(eta0, u, r_eff, T(f / length), T(e_star), alpha) *
-                         length),
-                       u) *
-                   T(1e-3);
-      const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
-      if (!any || Value(lambda) < Value(out.min_lambda)) {
-        out.min_lambda = lambda;
-        out.min_film_mm = h;
-        out.min_lambda_side = side;
-        out.min_lambda_roller = int(k);
-        any = true;
-      }
-      if (!spec.rollers_rotate)
-        sliding += contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f,
-                                        T(v.sliding * omega)) * T(1e-3);
+      c.film = Value(u) > 1e-12 && Value(r_eff) > 0.0;
+      const T unit(1.0);  // η0 = 1 MPa·s
+      if (c.film) c.film_unit_mm = contact::LineContactFilm(unit, u, r_eff, T(f / length), T(e_star), alpha).minimum;
+      if (c.film && spec.rolling_loss)
+        c.rolling_unit_W =
+            contact::RollingLoss(
+                T(contact::LineContactRollingForcePerLength(unit, u, r_eff, T(f / length), T(e_star), alpha) * length),
+                u) *
+            T(1e-3);
+      if (!spec.rollers_rotate) c.sliding_per_mu_W = contact::SlidingLoss(T(1.0), f, T(v.sliding * omega)) * T(1e-3);
+      out.contacts.push_back(c);
     }
   }
   const T n_ecc = input_speed_rpm * T(double(r.input.rollers) / r.input.lobes);
-  out.eccentric_bearing = PalmgrenPowerLoss(spec.eccentric_bearing, nu, n_ecc, eccentric_load_N) * T(1e-3);
+  out.eccentric = bearing(spec.eccentric_bearing, n_ecc, eccentric_load_N, 0);
   return out;
+}
+
+/// The losses of `k` with the oil in state `oil` (OilStateAt).
+template <typename T>
+AngleLosses<T> LossesAt(const AngleKinematics<T>& k, const LubricationSpec& spec, const OilState<T>& oil) {
+  AngleLosses<T> out;
+  const auto bearing_W = [&](const PalmgrenBearing& b, const typename AngleKinematics<T>::Bearing& x) {
+    return PalmgrenLoadIndependentMoment(b, oil.nu, oil.nu_2_3, x.n_rpm, x.n_2_3) * x.omega * T(1e-3) +
+           x.load_dependent_W;
+  };
+  for (const auto& b : k.bearings)
+    (b.side == 0 ? out.roller_bearings_input : out.roller_bearings_output) += bearing_W(spec.roller_bearing, b);
+  bool any = false;
+  for (const auto& c : k.contacts) {
+    const T h = c.film ? T(c.film_unit_mm * oil.film_scale) : T(0.0);
+    if (c.film && spec.rolling_loss)
+      (c.side == 0 ? out.rolling_input : out.rolling_output) += c.rolling_unit_W * oil.rolling_scale;
+    const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
+    if (!any || Value(lambda) < Value(out.min_lambda)) {
+      out.min_lambda = lambda;
+      out.min_film_mm = h;
+      out.min_lambda_side = c.side;
+      out.min_lambda_roller = c.roller;
+      any = true;
+    }
+    if (!spec.rollers_rotate)
+      (c.side == 0 ? out.sliding_input : out.sliding_output) +=
+          contact::FrictionCoefficient(spec.friction, lambda) * c.sliding_per_mu_W;
+  }
+  out.eccentric_bearing = bearing_W(spec.eccentric_bearing, k.eccentric);
+  return out;
+}
+
+/// The losses at input angle θ under the frictionless loads `loads` (AnalyzeAngle with forces, or
+/// the compliant loads) at input speed n_in [rpm] and oil temperature t_oil [°C]: KinematicsAtAngle,
+/// then LossesAt. `e_star` is the material's E* [MPa].
+template <typename T>
+AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, double e_star,
+                             const std::vector<RollerContact<T>>& input_contacts, const std::vector<T>& input_force_N,
+                             const std::vector<RollerContact<T>>& output_contacts,
+                             const std::vector<T>& output_force_N, const T& eccentric_load_N, const T& theta,
+                             const T& input_speed_rpm, const T& oil_C) {
+  return LossesAt(KinematicsAtAngle(r, spec, e_star, input_contacts, input_force_N, output_contacts, output_force_N,
+                                    eccentric_load_N, theta, input_speed_rpm),
+                  spec, OilStateAt(spec, oil_C));
 }
 
 /// The frictionless loads over an input revolution, computed once for every speed and oil temperature.
@@ -207,20 +306,34 @@ struct CycleLubrication {
   double sampling_error_W = 0;
 };
 
-/// The losses over the sampled revolution `loads` at input speed n_in [rpm] and oil temperature [°C].
-inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material& material, const CycleLoads& loads,
+/// KinematicsAtAngle at every angle of `loads` at input speed n_in [rpm]: computed once for every
+/// oil temperature.
+inline std::vector<AngleKinematics<double>> CycleKinematics(const Reducer<double>& r, const Material& material,
+                                                            const CycleLoads& loads, const LubricationSpec& spec,
+                                                            double input_speed_rpm) {
+  std::vector<AngleKinematics<double>> out;
+  const double e_star = material.composite_modulus_MPa();
+  for (size_t i = 0; i < loads.theta_rad.size(); ++i)
+    out.push_back(KinematicsAtAngle(r, spec, e_star, loads.input_contacts[i], loads.input_force_N[i],
+                                    loads.output_contacts[i], loads.output_force_N[i], loads.eccentric_load_N[i],
+                                    loads.theta_rad[i], input_speed_rpm));
+  return out;
+}
+
+/// The losses over the sampled revolution `loads` (its kinematics `kinematics` at input speed n_in
+/// [rpm], CycleKinematics) at oil temperature [°C].
+inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const CycleLoads& loads,
+                                        const std::vector<AngleKinematics<double>>& kinematics,
                                         const LubricationSpec& spec, double input_speed_rpm, double oil_C) {
   CycleLubrication out;
-  const double e_star = material.composite_modulus_MPa();
   const size_t steps = loads.theta_rad.size();
+  const OilState<double> oil = OilStateAt(spec, oil_C);
   bool first = true;
   double even_total = 0.0;
   size_t evens = 0;
   for (size_t i = 0; i < steps; ++i) {
     const double theta = loads.theta_rad[i];
-    const AngleLosses<double> l =
-        LossesAtAngle(r, spec, e_star, loads.input_contacts[i], loads.input_force_N[i], loads.output_contacts[i],
-                      loads.output_force_N[i], loads.eccentric_load_N[i], theta, input_speed_rpm, oil_C);
+    const AngleLosses<double> l = LossesAt(kinematics[i], spec, oil);
     const double n = double(steps);
     out.mean.sliding_input += l.sliding_input / n;
     out.mean.sliding_output += l.sliding_output / n;
@@ -244,8 +357,15 @@ inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material
   const double omega_out = input_speed_rpm * 2.0 * kPi / 60.0 * std::abs(OutputSpeedRatio(r));
   out.output_power_W = loads.output_torque_Nmm * 1e-3 * omega_out;
   out.efficiency = out.output_power_W > 0.0 ? out.output_power_W / (out.output_power_W + loss) : 0.0;
-  out.kinematic_viscosity_mm2_s = spec.oil.KinematicViscosityAt(oil_C);
+  out.kinematic_viscosity_mm2_s = oil.nu;
   return out;
+}
+
+/// The losses over the sampled revolution `loads` at input speed n_in [rpm] and oil temperature [°C].
+inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const Material& material, const CycleLoads& loads,
+                                        const LubricationSpec& spec, double input_speed_rpm, double oil_C) {
+  return LubricatedCycle(r, loads, CycleKinematics(r, material, loads, spec, input_speed_rpm), spec, input_speed_rpm,
+                         oil_C);
 }
 
 /// LubricatedCycle of the loads at `load`'s torque over `steps` angles.
@@ -283,13 +403,16 @@ RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material
     loads.push_back(AnalyzeAngle(r, material, load, theta.back(), {true, false, true}));  // G needs the last stage
     eccentric.push_back(loads.back().eccentric_load.norm());
   }
+  std::vector<AngleKinematics<T>> kinematics;  // once for every temperature
+  for (size_t i = 0; i < loads.size(); ++i)
+    kinematics.push_back(KinematicsAtAngle(r, spec, e_star, loads[i].input.contacts, loads[i].input.force,
+                                           loads[i].output.contacts, loads[i].output.force, eccentric[i], theta[i],
+                                           T(input_speed_rpm)));
   const auto loss = [&](const T& t) {
+    const OilState<T> oil = OilStateAt(spec, t);
     T sum(0.0);
-    for (size_t i = 0; i < loads.size(); ++i)
-      sum += LossesAtAngle(r, spec, e_star, loads[i].input.contacts, loads[i].input.force, loads[i].output.contacts,
-                           loads[i].output.force, eccentric[i], theta[i], T(input_speed_rpm), t)
-                 .total();
-    return sum / T(double(loads.size()));
+    for (const AngleKinematics<T>& k : kinematics) sum += LossesAt(k, spec, oil).total();
+    return sum / T(double(kinematics.size()));
   };
   RigidLubricatedPoint<T> out;
   if (temperature_C) {
