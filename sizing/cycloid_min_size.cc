@@ -252,9 +252,9 @@ LubricatedValues<T> LubricatedOf(const CycloidSizingLubrication& l, const cycloi
     pins = cycloid::OutputPinContactTpl<T>{l.pins->pin_radius_mm,
                                           T(l.pins->contact_radius_mm() + l.hole_clearance_mm) + dt.eccentricity_mm,
                                           l.pins->roller_radius_mm};
-  const auto loss = [&](const T& t) {
-    return cycloid::MeanLoss(dt, l.spec, e_star, loads, pins, l.input_speed_rpm, t);
-  };
+  const std::vector<cycloid::CrankKinematics<T>> kinematics =
+      cycloid::RevolutionKinematics(dt, l.spec, e_star, loads, pins, l.input_speed_rpm);  // once for every t
+  const auto loss = [&](const T& t) { return cycloid::MeanLoss(kinematics, l.spec, t); };
   LubricatedValues<T> out;
   if (l.temperature_C) {
     out.temperature_C = T(*l.temperature_C);

@@ -530,14 +530,17 @@ LubricatedPoint LubricatedAt(const Study& s, const std::vector<cycloid::MeshLubr
   const Study::Lubrication& l = *s.lubrication;
   const double e_star = s.material.composite_modulus_MPa();
   LubricatedPoint p;
+  const std::vector<cycloid::CrankKinematics<double>> kinematics =
+      cycloid::RevolutionKinematics(s.drive, l.spec, e_star, loads, l.pins, speed);  // once for every t
   const auto at = [&](double t, LubricatedPoint* fill) {
+    const contact::OilState<double> oil = contact::OilStateAt(l.spec.oil, t);
     cycloid::CycloidAngleLosses mean;
     double even = 0.0;
     size_t evens = 0;
     const double n = double(loads.size()), discs = double(s.discs);
     for (size_t k = 0; k < loads.size(); ++k) {
       const cycloid::CycloidAngleLosses x =
-          cycloid::LossesAtCrankAngle(s.drive, l.spec, e_star, loads[k], l.pins, speed, t);
+          cycloid::LossesAt(kinematics[k], l.spec, oil);
       mean.ring_pins_sliding += discs * x.ring_pins_sliding / n;
       mean.ring_pin_bearings += discs * x.ring_pin_bearings / n;
       mean.output_pins_sliding += discs * x.output_pins_sliding / n;

@@ -70,4 +70,29 @@ T PalmgrenPowerLoss(const PalmgrenBearing& b, const T& nu, const T& n_rpm, const
   return (PalmgrenLoadIndependentMoment(b, nu, abs(n_rpm)) + PalmgrenLoadDependentMoment(b, p1)) * omega;
 }
 
+/// A bearing at a given speed and load, what of its loss does not depend on the oil: |n| [rpm],
+/// |n|^(2/3), ω [rad/s] and M1 ω [N·mm/s] (a sweep over the oil's temperature computes it once).
+template <typename T>
+struct PalmgrenAtSpeed {
+  T n_rpm{}, n_2_3{}, omega{}, load_dependent{};
+};
+
+template <typename T>
+PalmgrenAtSpeed<T> PalmgrenAt(const PalmgrenBearing& b, const T& n_rpm, const T& p1) {
+  using std::abs;
+  using std::cbrt;
+  PalmgrenAtSpeed<T> s;
+  s.n_rpm = abs(n_rpm);
+  s.n_2_3 = cbrt(s.n_rpm * s.n_rpm);
+  s.omega = s.n_rpm * T(2.0 * kPi / 60.0);
+  s.load_dependent = PalmgrenLoadDependentMoment(b, p1) * s.omega;
+  return s;
+}
+
+/// PalmgrenPowerLoss(b, ν, n, p1) [N·mm/s] from PalmgrenAt(b, n, p1) and ν, ν^(2/3).
+template <typename T>
+T PalmgrenPowerLoss(const PalmgrenBearing& b, const PalmgrenAtSpeed<T>& s, const T& nu, const T& nu_2_3) {
+  return PalmgrenLoadIndependentMoment(b, nu, nu_2_3, s.n_rpm, s.n_2_3) * s.omega + s.load_dependent;
+}
+
 }  // namespace camopt

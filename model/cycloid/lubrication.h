@@ -40,6 +40,7 @@
 #include "model/common/thermal.h"
 #include "model/contact/ehl.h"
 #include "model/contact/lubricated_friction.h"
+#include "model/contact/oil_state.h"
 #include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/unloaded_tca.h"
@@ -229,49 +230,61 @@ inline std::vector<MeshLubricationLoads> LubricationLoadsOverRevolution(const Dr
   });
 }
 
-/// The losses of one disc at one crank angle (its loads `x`), at input speed n_in [rpm] and oil
-/// temperature [°C]. `pins` absent: the output pins' contacts are not modelled (no radii given).
-/// @tparam T double or ceres::Jet (the design's and the temperature's derivatives).
+/// What the losses of one disc at one crank angle take from its loads and kinematics, apart from
+/// the oil's temperature (computed once for a sweep over it, model/contact/oil_state.h): each loaded
+/// contact's film and rolling loss at η0 = 1 MPa·s and its sliding power per unit μ; each bearing's
+/// speed and load-dependent part.
 template <typename T>
-CycloidAngleLossesTpl<T> LossesAtCrankAngle(const DriveTpl<T>& d, const CycloidLubricationSpec& spec, double e_star,
-                                            const MeshLubricationLoadsTpl<T>& x,
-                                            const std::optional<OutputPinContactTpl<T>>& pins, double input_speed_rpm,
-                                            const T& oil_C) {
-  CycloidAngleLossesTpl<T> out;
+struct CrankKinematics {
+  struct Contact {
+    bool output = false;  ///< an output pin (else a ring pin)
+    int pin = 0;
+    bool film = false;     ///< an entraining motion on a convex or conformal contact
+    T film_unit_mm{};      ///< h_min at η0 = 1 MPa·s (0 without a film)
+    T rolling_unit_W{};    ///< 2 u F_R at η0 = 1 MPa·s [W] (0 without a film or the loss)
+    bool slides = false;   ///< the pin slides on its contact (not on a rolling bearing)
+    T sliding_per_mu_W{};  ///< F |v_s| [W per unit μ] (0 where the pin rolls)
+  };
+  std::vector<Contact> contacts;  ///< the loaded contacts, ring pins first
+  std::vector<PalmgrenAtSpeed<T>> ring_pin_bearings, output_roller_bearings;
+  PalmgrenAtSpeed<T> crank;
+};
+
+/// The temperature-free part of the losses of one disc at one crank angle (its loads `x`) at input
+/// speed n_in [rpm]. `pins` absent: the output pins' contacts are not modelled (no radii given).
+template <typename T>
+CrankKinematics<T> KinematicsAtCrankAngle(const DriveTpl<T>& d, const CycloidLubricationSpec& spec, double e_star,
+                                          const MeshLubricationLoadsTpl<T>& x,
+                                          const std::optional<OutputPinContactTpl<T>>& pins, double input_speed_rpm) {
+  CrankKinematics<T> out;
   const T crank(x.crank_angle_rad);
   const T omega(input_speed_rpm * 2.0 * kPi / 60.0), n_in(input_speed_rpm);
-  const T nu = spec.oil.KinematicViscosityAt(oil_C), eta0 = spec.oil.DynamicViscosityAt(oil_C);
   const T alpha(spec.oil.pressure_viscosity_per_MPa), e(e_star);
   const T width = d.face_width_mm;
-  const auto film = [&](const T& force, const T& r_eff, const T& entraining_per_rad, int pin, bool output) {
-    const T u_e = entraining_per_rad * omega;
-    const bool has_film = u_e > T(1e-12) && r_eff > T(0.0);
-    const T h = has_film ? contact::LineContactFilm<T>(eta0, u_e, r_eff, force / width, e, alpha).minimum : T(0.0);
-    if (has_film && spec.rolling_loss)
-      (output ? out.output_pins_rolling : out.ring_pins_rolling) +=
+  const T unit(1.0);  // η0 = 1 MPa·s
+  const auto contact = [&](const T& force, const T& r_eff, const PinSpeeds<T>& v, int pin, bool output, bool slides) {
+    typename CrankKinematics<T>::Contact c;
+    c.output = output;
+    c.pin = pin;
+    c.slides = slides;
+    const T u_e = v.entraining * omega;
+    c.film = u_e > T(1e-12) && r_eff > T(0.0);
+    if (c.film) c.film_unit_mm = contact::LineContactFilm<T>(unit, u_e, r_eff, force / width, e, alpha).minimum;
+    if (c.film && spec.rolling_loss)
+      c.rolling_unit_W =
           contact::RollingLoss(
-              T(contact::LineContactRollingForcePerLength<T>(eta0, u_e, r_eff, force / width, e, alpha) * width), u_e) *
+              T(contact::LineContactRollingForcePerLength<T>(unit, u_e, r_eff, force / width, e, alpha) * width), u_e) *
           T(1e-3);
-    const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
-    if (out.min_lambda_pin < 0 || Value(lambda) < out.min_lambda) {
-      out.min_lambda = Value(lambda);
-      out.min_film_mm = Value(h);
-      out.min_lambda_pin = pin;
-      out.min_at_output_pin = output;
-    }
-    return lambda;
+    if (slides) c.sliding_per_mu_W = contact::SlidingLoss(T(1.0), force, T(v.sliding * omega)) * T(1e-3);
+    out.contacts.push_back(c);
   };
   // Ring pins: every roller turns (M0), the loaded ones carry their pair's load.
   for (int i = 0; i < d.rollers; ++i) {
     const PinSpeeds<T> v = RingPinSpeeds(d, x.unloaded.pairs.at(size_t(i)), crank, spec.ring_pins_rotate);
     const T& f = x.ring_pin_load_N[size_t(i)];
-    if (spec.ring_pins_rotate)
-      out.ring_pin_bearings += PalmgrenPowerLoss(spec.ring_pin_bearing, nu, v.spin * n_in, f) * T(1e-3);
+    if (spec.ring_pins_rotate) out.ring_pin_bearings.push_back(PalmgrenAt(spec.ring_pin_bearing, T(v.spin * n_in), f));
     if (!(f > T(0.0))) continue;
-    const T lambda = film(f, x.ring_pin_r_eff_mm[size_t(i)], v.entraining, i, false);
-    if (!spec.ring_pins_rotate)
-      out.ring_pins_sliding +=
-          contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * T(1e-3);
+    contact(f, x.ring_pin_r_eff_mm[size_t(i)], v, i, false, !spec.ring_pins_rotate);
   }
   // Output pins (the rigid mechanism's forces).
   if (pins) {
@@ -281,18 +294,54 @@ CycloidAngleLossesTpl<T> LossesAtCrankAngle(const DriveTpl<T>& d, const CycloidL
     for (size_t j = 0; j < x.output_pin_load_N.size(); ++j) {
       const T& f = x.output_pin_load_N[j];
       if (pins->roller_radius_mm > 0)
-        out.output_roller_bearings += PalmgrenPowerLoss(spec.output_roller_bearing, nu, v.spin * n_in, f) * T(1e-3);
+        out.output_roller_bearings.push_back(PalmgrenAt(spec.output_roller_bearing, T(v.spin * n_in), f));
       if (!(f > T(0.0))) continue;
-      const T lambda = film(f, conformal, v.entraining, int(j), true);
-      if (pins->roller_radius_mm <= 0)
-        out.output_pins_sliding +=
-            contact::SlidingLoss(contact::FrictionCoefficient(spec.friction, lambda), f, v.sliding * omega) * T(1e-3);
+      contact(f, conformal, v, int(j), true, pins->roller_radius_mm <= 0);
     }
   }
-  out.crank_bearing =
-      PalmgrenPowerLoss(spec.crank_bearing, nu, T(input_speed_rpm * double(d.rollers) / d.teeth), x.crank_bearing_load_N) *
-      T(1e-3);
+  out.crank = PalmgrenAt(spec.crank_bearing, T(input_speed_rpm * double(d.rollers) / d.teeth), x.crank_bearing_load_N);
   return out;
+}
+
+/// The losses of `k` with the oil in state `oil` (contact::OilStateAt).
+template <typename T>
+CycloidAngleLossesTpl<T> LossesAt(const CrankKinematics<T>& k, const CycloidLubricationSpec& spec,
+                                  const contact::OilState<T>& oil) {
+  CycloidAngleLossesTpl<T> out;
+  for (const auto& b : k.ring_pin_bearings)
+    out.ring_pin_bearings += PalmgrenPowerLoss(spec.ring_pin_bearing, b, oil.nu, oil.nu_2_3) * T(1e-3);
+  for (const auto& b : k.output_roller_bearings)
+    out.output_roller_bearings += PalmgrenPowerLoss(spec.output_roller_bearing, b, oil.nu, oil.nu_2_3) * T(1e-3);
+  for (const auto& c : k.contacts) {
+    const T h = c.film ? T(c.film_unit_mm * oil.film_scale) : T(0.0);
+    if (c.film && spec.rolling_loss)
+      (c.output ? out.output_pins_rolling : out.ring_pins_rolling) += c.rolling_unit_W * oil.rolling_scale;
+    const T lambda = contact::FilmParameter(h, T(spec.composite_roughness_mm));
+    if (out.min_lambda_pin < 0 || Value(lambda) < out.min_lambda) {
+      out.min_lambda = Value(lambda);
+      out.min_film_mm = Value(h);
+      out.min_lambda_pin = c.pin;
+      out.min_at_output_pin = c.output;
+    }
+    if (c.slides)
+      (c.output ? out.output_pins_sliding : out.ring_pins_sliding) +=
+          contact::FrictionCoefficient(spec.friction, lambda) * c.sliding_per_mu_W;
+  }
+  out.crank_bearing = PalmgrenPowerLoss(spec.crank_bearing, k.crank, oil.nu, oil.nu_2_3) * T(1e-3);
+  return out;
+}
+
+/// The losses of one disc at one crank angle (its loads `x`), at input speed n_in [rpm] and oil
+/// temperature [°C]: KinematicsAtCrankAngle, then LossesAt. `pins` absent: the output pins' contacts
+/// are not modelled (no radii given).
+/// @tparam T double or ceres::Jet (the design's and the temperature's derivatives).
+template <typename T>
+CycloidAngleLossesTpl<T> LossesAtCrankAngle(const DriveTpl<T>& d, const CycloidLubricationSpec& spec, double e_star,
+                                            const MeshLubricationLoadsTpl<T>& x,
+                                            const std::optional<OutputPinContactTpl<T>>& pins, double input_speed_rpm,
+                                            const T& oil_C) {
+  return LossesAt(KinematicsAtCrankAngle(d, spec, e_star, x, pins, input_speed_rpm), spec,
+                  contact::OilStateAt(spec.oil, oil_C));
 }
 
 inline CycloidAngleLosses LossesAtCrankAngle(const Drive& d, const CycloidLubricationSpec& spec, double e_star,
@@ -301,15 +350,26 @@ inline CycloidAngleLosses LossesAtCrankAngle(const Drive& d, const CycloidLubric
   return LossesAtCrankAngle<double>(d, spec, e_star, x, pins, input_speed_rpm, oil_C);
 }
 
-/// One disc's mean power loss [W] over `loads` (a whole revolution's pattern,
-/// LubricationLoadsOverRevolution) at input speed n_in [rpm] and oil temperature [°C].
+/// KinematicsAtCrankAngle at every crank angle of `loads` (a whole revolution's pattern,
+/// LubricationLoadsOverRevolution) at input speed n_in [rpm]: once for every oil temperature.
 template <typename T>
-T MeanLoss(const DriveTpl<T>& d, const CycloidLubricationSpec& spec, double e_star,
-           const std::vector<MeshLubricationLoadsTpl<T>>& loads, const std::optional<OutputPinContactTpl<T>>& pins,
-           double input_speed_rpm, const T& oil_C) {
+std::vector<CrankKinematics<T>> RevolutionKinematics(const DriveTpl<T>& d, const CycloidLubricationSpec& spec,
+                                                     double e_star, const std::vector<MeshLubricationLoadsTpl<T>>& loads,
+                                                     const std::optional<OutputPinContactTpl<T>>& pins,
+                                                     double input_speed_rpm) {
+  std::vector<CrankKinematics<T>> out;
+  for (const auto& x : loads) out.push_back(KinematicsAtCrankAngle(d, spec, e_star, x, pins, input_speed_rpm));
+  return out;
+}
+
+/// One disc's mean power loss [W] over a revolution's kinematics (RevolutionKinematics) at oil
+/// temperature [°C].
+template <typename T>
+T MeanLoss(const std::vector<CrankKinematics<T>>& kinematics, const CycloidLubricationSpec& spec, const T& oil_C) {
+  const contact::OilState<T> oil = contact::OilStateAt(spec.oil, oil_C);
   T sum(0.0);
-  for (const auto& x : loads) sum += LossesAtCrankAngle(d, spec, e_star, x, pins, input_speed_rpm, oil_C).total();
-  return loads.empty() ? sum : sum / T(double(loads.size()));
+  for (const auto& k : kinematics) sum += LossesAt(k, spec, oil).total();
+  return kinematics.empty() ? sum : sum / T(double(kinematics.size()));
 }
 
 }  // namespace camopt::cycloid

@@ -43,6 +43,7 @@
 #include "model/common/thermal.h"
 #include "model/contact/ehl.h"
 #include "model/contact/lubricated_friction.h"
+#include "model/contact/oil_state.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/life.h"
 
@@ -122,35 +123,14 @@ struct AngleKinematics {
   };
   struct Bearing {
     int side = 0;
-    T n_rpm{}, n_2_3{};   ///< |speed| and its power 2/3
-    T omega{};            ///< |speed| [rad/s]
-    T load_dependent_W{};  ///< M1 ω [W]
+    PalmgrenAtSpeed<T> at;
   };
   std::vector<Contact> contacts;  ///< the loaded contacts
   std::vector<Bearing> bearings;  ///< every roller's bearing (rotating rollers)
-  Bearing eccentric;
+  PalmgrenAtSpeed<T> eccentric;
 };
 
-/// The oil's state at one temperature, as LossesAt takes it.
-template <typename T>
-struct OilState {
-  T nu{}, nu_2_3{};          ///< ν [mm²/s] and ν^(2/3)
-  T film_scale{};            ///< η0^0.694 (h_min at η0 over h_min at 1 MPa·s)
-  T rolling_scale{};         ///< η0^0.658 (the rolling force's)
-};
-
-template <typename T>
-OilState<T> OilStateAt(const LubricationSpec& spec, const T& oil_C) {
-  using std::cbrt;
-  using std::pow;
-  OilState<T> o;
-  o.nu = spec.oil.KinematicViscosityAt(oil_C);
-  o.nu_2_3 = cbrt(o.nu * o.nu);
-  const T eta0 = spec.oil.DynamicViscosityAt(oil_C);
-  o.film_scale = pow(eta0, T(contact::kLineMinimumFilmSpeedExponent));
-  o.rolling_scale = pow(eta0, T(contact::kLineRollingForceSpeedExponent));
-  return o;
-}
+using contact::OilState;
 
 /// The temperature-free part of the losses at input angle θ under the frictionless loads `loads`
 /// (AnalyzeAngle with forces, or the compliant loads) at input speed n_in [rpm]. `e_star` is the
@@ -162,20 +142,9 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
                                      const std::vector<RollerContact<T>>& output_contacts,
                                      const std::vector<T>& output_force_N, const T& eccentric_load_N, const T& theta,
                                      const T& input_speed_rpm) {
-  using std::abs;
-  using std::cbrt;
   AngleKinematics<T> out;
   const T omega = input_speed_rpm * T(2.0 * kPi / 60.0);  // rad/s
   const T alpha(spec.oil.pressure_viscosity_per_MPa);
-  const auto bearing = [](const PalmgrenBearing& b, const T& n_rpm, const T& load_N, int side) {
-    typename AngleKinematics<T>::Bearing o;
-    o.side = side;
-    o.n_rpm = abs(n_rpm);
-    o.n_2_3 = cbrt(o.n_rpm * o.n_rpm);
-    o.omega = o.n_rpm * T(2.0 * kPi / 60.0);
-    o.load_dependent_W = PalmgrenLoadDependentMoment(b, load_N) * o.omega * T(1e-3);
-    return o;
-  };
   // A contact whose load is at the rounding level of the largest (the frictionless law's zero, e.g.
   // a roller on the line of symmetry, computed as ±1e-13 N) carries no film: its rolling loss, which
   // hardly depends on the load (w'^0.0126), would otherwise come and go with the rounding.
@@ -193,8 +162,8 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
       const ContactSpeeds<T> v = RollerContactSpeeds(r, s, contacts[k], theta, spec.rollers_rotate);
       const T f = forces[k];
       if (spec.rollers_rotate)
-        out.bearings.push_back(bearing(spec.roller_bearing, T(v.roller_spin * input_speed_rpm),
-                                       IfThenElse(Compare::kGreater, f, 0.0, f, T(0.0)), side));
+        out.bearings.push_back({side, PalmgrenAt(spec.roller_bearing, T(v.roller_spin * input_speed_rpm),
+                                                 IfThenElse(Compare::kGreater, f, 0.0, f, T(0.0)))});
       if (!(Value(f) > no_load)) continue;
       typename AngleKinematics<T>::Contact c;
       c.side = side;
@@ -216,20 +185,17 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
     }
   }
   const T n_ecc = input_speed_rpm * T(double(r.input.rollers) / r.input.lobes);
-  out.eccentric = bearing(spec.eccentric_bearing, n_ecc, eccentric_load_N, 0);
+  out.eccentric = PalmgrenAt(spec.eccentric_bearing, n_ecc, eccentric_load_N);
   return out;
 }
 
-/// The losses of `k` with the oil in state `oil` (OilStateAt).
+/// The losses of `k` with the oil in state `oil` (contact::OilStateAt).
 template <typename T>
 AngleLosses<T> LossesAt(const AngleKinematics<T>& k, const LubricationSpec& spec, const OilState<T>& oil) {
   AngleLosses<T> out;
-  const auto bearing_W = [&](const PalmgrenBearing& b, const typename AngleKinematics<T>::Bearing& x) {
-    return PalmgrenLoadIndependentMoment(b, oil.nu, oil.nu_2_3, x.n_rpm, x.n_2_3) * x.omega * T(1e-3) +
-           x.load_dependent_W;
-  };
   for (const auto& b : k.bearings)
-    (b.side == 0 ? out.roller_bearings_input : out.roller_bearings_output) += bearing_W(spec.roller_bearing, b);
+    (b.side == 0 ? out.roller_bearings_input : out.roller_bearings_output) +=
+        PalmgrenPowerLoss(spec.roller_bearing, b.at, oil.nu, oil.nu_2_3) * T(1e-3);
   bool any = false;
   for (const auto& c : k.contacts) {
     const T h = c.film ? T(c.film_unit_mm * oil.film_scale) : T(0.0);
@@ -247,7 +213,7 @@ AngleLosses<T> LossesAt(const AngleKinematics<T>& k, const LubricationSpec& spec
       (c.side == 0 ? out.sliding_input : out.sliding_output) +=
           contact::FrictionCoefficient(spec.friction, lambda) * c.sliding_per_mu_W;
   }
-  out.eccentric_bearing = bearing_W(spec.eccentric_bearing, k.eccentric);
+  out.eccentric_bearing = PalmgrenPowerLoss(spec.eccentric_bearing, k.eccentric, oil.nu, oil.nu_2_3) * T(1e-3);
   return out;
 }
 
@@ -262,7 +228,7 @@ AngleLosses<T> LossesAtAngle(const Reducer<T>& r, const LubricationSpec& spec, d
                              const T& input_speed_rpm, const T& oil_C) {
   return LossesAt(KinematicsAtAngle(r, spec, e_star, input_contacts, input_force_N, output_contacts, output_force_N,
                                     eccentric_load_N, theta, input_speed_rpm),
-                  spec, OilStateAt(spec, oil_C));
+                  spec, contact::OilStateAt(spec.oil, oil_C));
 }
 
 /// The frictionless loads over an input revolution, computed once for every speed and oil temperature.
@@ -327,7 +293,7 @@ inline CycleLubrication LubricatedCycle(const Reducer<double>& r, const CycleLoa
                                         const LubricationSpec& spec, double input_speed_rpm, double oil_C) {
   CycleLubrication out;
   const size_t steps = loads.theta_rad.size();
-  const OilState<double> oil = OilStateAt(spec, oil_C);
+  const OilState<double> oil = contact::OilStateAt(spec.oil, oil_C);
   bool first = true;
   double even_total = 0.0;
   size_t evens = 0;
@@ -409,7 +375,7 @@ RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material
                                            loads[i].output.contacts, loads[i].output.force, eccentric[i], theta[i],
                                            T(input_speed_rpm)));
   const auto loss = [&](const T& t) {
-    const OilState<T> oil = OilStateAt(spec, t);
+    const OilState<T> oil = contact::OilStateAt(spec.oil, t);
     T sum(0.0);
     for (const AngleKinematics<T>& k : kinematics) sum += LossesAt(k, spec, oil).total();
     return sum / T(double(kinematics.size()));
