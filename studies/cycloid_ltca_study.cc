@@ -142,6 +142,7 @@ Study Parse(const Node& root) {
   const Input in = Read<Input>(root);
   Study s;
   s.name = in.name;
+  if (in.limits) s.contact_stress_limit_MPa = in.limits->contact_stress_MPa;
   s.drive = cycloid_common::MakeDrive(root, in.drive, in.modification);
   s.crowning = cycloid_common::MakeCrowning(root, in.crowning, s.drive.face_width_mm);
   s.geometry = ParseGeometryFiles(root);
@@ -1203,6 +1204,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   po.guides.clear();
   po.title = "Maximum contact stress";
   po.y_label = "contact stress [MPa]";
+  if (s.contact_stress_limit_MPa) po.guides = {{"contact stress limit", *s.contact_stress_limit_MPa}};
   out.Add("contact_stress.svg", SvgLinePlot({{"largest over the rollers", col_angle, col_p}}, po));
   const MeshLoad& worst = cycle.meshes[cycle.max_pressure_index];
   out.Add("pressure_map.svg",

@@ -250,6 +250,8 @@ using OutputSpec = cycloid_common::CompliantOutputSpec;
 
 struct Study {
   std::string name;
+  /// limits.contact_stress_MPa, drawn on contact_stress.svg (the verdict reads it from the study).
+  std::optional<double> contact_stress_limit_MPa;
   cycloid::Drive drive;
   cycloid::Crowning crowning;
   cycloid::Material material;

@@ -11,7 +11,7 @@
 // The answer is verified by the accurate model (objectives/verification.h); a design that is not
 // verified, or none, ends with exit 3 and the limit that blocks. Beside result.json:
 // best_disc_cam.json (the best design as a disc_cam study), series.csv and pressure_angle.svg (the
-// best design on the accurate grid).
+// best design on the accurate grid), profile.svg (the sized cam over the start design).
 #pragma once
 
 #include <array>
@@ -132,7 +132,7 @@ nlohmann::json BestDiscCamStudy(const Study& study, const Result& result);
 /// The start design (each variable's start, the study's values clamped to their ranges) as a
 /// complete disc_cam study, made as BestDiscCamStudy makes the best one (the studio draws the two).
 nlohmann::json StartDiscCamStudy(const Study& study);
-/// result.json, best_disc_cam.json, series.csv, pressure_angle.svg; marks the outputs incomplete
+/// result.json, best_disc_cam.json, series.csv, pressure_angle.svg, profile.svg; marks the outputs incomplete
 /// (exit 3) when the answer is not verified or there is none.
 void Write(const Study& study, const Result& result, Outputs& out);
 

@@ -1216,6 +1216,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     o.title = s.name + ": flat face on an arm: contact along the face ℓ, radius of curvature, pressure angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "[mm], [deg]";
+    o.guides = PressureAngleLimitLines(s.limits.pressure_angle_deg, t.pressure_angle_deg);
+    o.guides.push_back({"radius margin [mm]", s.limits.radius_margin_mm});
     out.Add("flat_face.svg", SvgLinePlot({series("contact along the face ℓ [mm]", r.flat_face->contact_offset_mm),
                                           series("radius of curvature ρ [mm]", r.flat_face->radius_of_curvature_mm),
                                           series("pressure angle atan(d/ℓ) [deg]", t.pressure_angle_deg)},
@@ -1225,6 +1227,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     o.title = s.name + ": flat face: contact offset S' and radius of curvature r_b + S + S''";
     o.x_label = "cam angle [deg]";
     o.y_label = "[mm]";
+    o.guides = {{"radius margin", s.limits.radius_margin_mm}};
     out.Add("flat_face.svg", SvgLinePlot({series("contact offset on the face S' [mm]", r.flat_face->contact_offset_mm),
                                           series("radius of curvature ρ [mm]", r.flat_face->radius_of_curvature_mm)},
                                          o));
@@ -1233,6 +1236,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     o.title = s.name + ": pressure angle and shift angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "angle [deg]";
+    o.guides = PressureAngleLimitLines(s.limits.pressure_angle_deg, t.pressure_angle_deg);
     out.Add("angles.svg", SvgLinePlot({series("pressure angle φ", t.pressure_angle_deg),
                                        series("shift angle λ", t.shift_angle_deg)},
                                       o));
@@ -1443,8 +1447,9 @@ const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam", EstimateWork);
 namespace {
 // report.html: the headline numbers and their limits.
 CAMOPT_REGISTER_REPORT("disc_cam", {
-    {"largest pressure angle", "/pressure_angle_deg/max", "deg"},
-    {"smallest pressure angle", "/pressure_angle_deg/min", "deg"},
+    // The signed extremes of φ (the limit holds |φ| on the rise and on the return, the rows after).
+    {"pressure angle φ, most positive (signed)", "/pressure_angle_deg/max", "deg"},
+    {"pressure angle φ, most negative (signed)", "/pressure_angle_deg/min", "deg"},
     {"largest pressure angle, rise", "/pressure_angle_deg/max_rise", "deg", "/pressure_angle_deg/limit"},
     {"largest pressure angle, return", "/pressure_angle_deg/max_return", "deg", "/pressure_angle_deg/limit"},
     {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",

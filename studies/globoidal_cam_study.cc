@@ -611,6 +611,10 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     o.title = s.name + ": pressure angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "pressure angle [deg]";
+    std::vector<double> all;
+    for (const auto& roller : t.pressure_angle_deg)
+      for (const std::vector<double>& at : roller) all.insert(all.end(), at.begin(), at.end());
+    o.guides = PressureAngleLimitLines(s.limits.pressure_angle_deg, all);
     out.Add("pressure_angle.svg",
             SvgLinePlot({series("roller 1 at l1", t.pressure_angle_deg[0][0]),
                          series("roller 1 at l2", t.pressure_angle_deg[0][1]),

@@ -271,10 +271,10 @@ HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& s
     const std::string unit = h.unit.empty() ? "" : " " + h.unit;
     std::string value = Value(*v);
     double error = 0;  // the value's error estimate, when the kind gives one
-    if (const nlohmann::json* e = At(result, h.error_pointer); e && e->is_number() && v->is_number()) {
-      value += " ± " + Error(e->get<double>());
-      error = std::abs(e->get<double>());
-    }
+    const nlohmann::json* e = At(result, h.error_pointer);
+    if (e && e->is_number() && v->is_number()) error = std::abs(e->get<double>());
+    if (v->is_number() && std::abs(v->get<double>()) < std::max(h.resolution, error)) value = "0";
+    if (e && e->is_number() && v->is_number()) value += " ± " + Error(error);
     HeadlineRow row{h.label, value + (v->is_number() ? unit : ""), "", "", ""};
     double limit = h.limit_value;
     const bool in_study = h.limit_pointer.rfind("study:", 0) == 0;

@@ -38,6 +38,9 @@ struct Headline {
   std::string only_with = "";
   /// Left out when this JSON pointer is in result.json ("": never): the label of the other variant.
   std::string not_with = "";
+  /// The smallest magnitude the value resolves (a design variable at the optimizer's tolerance):
+  /// a value below it, or below its own error estimate, is shown as 0, not as the solver's noise.
+  double resolution = 0;
 };
 
 /// Registers the headlines of a kind's report; returns true so that it can initialise a static.

@@ -12,6 +12,7 @@
 
 #include "model/lcr/kinematics.h"
 #include "model/rigidity/lost_motion.h"
+#include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/report.h"
 #include "studies/work_limits.h"
@@ -440,6 +441,7 @@ nlohmann::json ToJson(const Study& study, const Result& res) {
   }
   dom["advice"] = res.advice;
   result["dominant"] = dom;
+  result["notes"].push_back("Advice: " + res.advice);  // report.html's notes
   return result;
 }
 
@@ -464,6 +466,36 @@ void Write(const Study& study, const Result& res, Outputs& out) {
   table.Add("rigidity_if_rigid_Nm_per_rad", col_without);
   table.Add("backlash_at_end_b_arcmin", col_backlash);
   out.Add("elements.csv", ToCsv(table));
+
+  // The chain as the paper's designer reads it: each element's share of the compliance at end b
+  // (the dominant one red) with the advice, and each element's backlash at end b against the limit.
+  std::vector<Bar> shares, backlash;
+  double backlash_sum = 0;
+  for (size_t i = 0; i < res.elements.size(); ++i) {
+    const std::string& name = res.elements[i].spec.name;
+    shares.push_back({name, 100.0 * r.share[i],
+                      std::isfinite(col_at_b[i]) ? Format(100.0 * r.share[i], 3) + " % (" + Format(col_at_b[i], 4) +
+                                                       " N·m/rad at end b)"
+                                                 : "rigid",
+                      static_cast<int>(i) == r.dominant});
+    backlash.push_back({name, col_backlash[i], Format(col_backlash[i], 3) + " arcmin"});
+    backlash_sum += col_backlash[i];
+  }
+  BarChartOptions so;
+  so.title = "Share of the compliance at end b: " + study.name;
+  so.x_label = "share of the chain's compliance [%]";
+  so.notes = {"Advice: " + res.advice};
+  out.Add("compliance_share.svg", SvgBarChart(shares, so));
+  if (backlash_sum > 0) {
+    const double limit = study.limits.backlash_arcmin.value_or(NAN);
+    backlash.push_back({"whole chain", backlash_sum, Format(backlash_sum, 3) + " arcmin",
+                        std::isfinite(limit) && backlash_sum > limit});
+    BarChartOptions bo;
+    bo.title = "Backlash at end b: " + study.name;
+    bo.x_label = "backlash seen at end b [arcmin]";
+    bo.guides = {{"backlash limit", limit}};
+    out.Add("backlash.svg", SvgBarChart(backlash, bo));
+  }
 
   for (size_t i = 0; i < res.elements.size(); ++i) {
     if (!res.elements[i].reducer) continue;

@@ -31,6 +31,19 @@ std::string Px(double v) { return Formatted(v, std::chars_format::fixed, 2); }
 
 std::string Escape(const std::string& s) { return XmlText(s); }
 
+// A title centred at x on a canvas `width` px wide: a title longer than the canvas at 15 px (about
+// 8.3 px a character in a sans-serif face) is drawn squeezed to the canvas less 20 px
+// (textLength), so that no title is ever clipped by the edge of its picture.
+std::string TitleText(double x, double y, double width, const std::string& title) {
+  size_t chars = 0;
+  for (unsigned char c : title) chars += (c & 0xC0) != 0x80;  // UTF-8 code points
+  std::string fit;
+  if (8.3 * static_cast<double>(chars) > width - 20)
+    fit = " textLength=\"" + Px(width - 20) + "\" lengthAdjust=\"spacingAndGlyphs\"";
+  return "<text x=\"" + Px(x) + "\" y=\"" + Px(y) + "\" text-anchor=\"middle\" font-size=\"15\"" + fit + ">" +
+         Escape(title) + "</text>\n";
+}
+
 }  // namespace
 
 std::string XmlText(const std::string& s) {
@@ -238,8 +251,7 @@ std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& o)
      << height << "\" viewBox=\"0 0 " << o.width << " " << height
      << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  os << "<text x=\"" << o.width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-     << Escape(o.title) << "</text>\n";
+  os << TitleText(o.width / 2.0, 22, o.width, o.title);
   for (double y = ymin; y <= ymax + 0.5 * ystep; y += ystep) {
     os << "<line x1=\"" << Px(L) << "\" x2=\"" << Px(L + W) << "\" y1=\"" << Px(Y(y))
        << "\" y2=\"" << Px(Y(y)) << "\" stroke=\"#ddd\"/>\n";
@@ -391,8 +403,7 @@ std::string SvgDrawing(const Drawing& d, int size) {
      << height << "\" viewBox=\"0 0 " << size << " " << height
      << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  os << "<text x=\"" << size / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"15\">"
-     << Escape(d.title) << "</text>\n";
+  os << TitleText(size / 2.0, 20, size, d.title);
   int row = 0;
   for (const auto& layer : d.layers) {
     for (const auto& pl : layer.polylines) {
@@ -440,6 +451,79 @@ std::string SvgDrawing(const Drawing& d, int size) {
   os << "<text x=\"10\" y=\"" << Px(y0 + 4) << "\">" << text << "</text>\n";
   for (size_t i = 0; i < d.dimensions.size(); ++i)
     os << "<text x=\"10\" y=\"" << Px(y0 + 20 + 16 * static_cast<double>(i)) << "\">" << Escape(d.dimensions[i])
+       << "</text>\n";
+  os << "</svg>\n";
+  return os.str();
+}
+
+std::vector<GuideLine> PressureAngleLimitLines(double limit_deg, const std::vector<double>& values) {
+  std::vector<GuideLine> lines = {{"pressure angle limit", limit_deg}};
+  if (std::any_of(values.begin(), values.end(), [](double v) { return v < 0; }))
+    lines.push_back({"−pressure angle limit", -limit_deg});
+  return lines;
+}
+
+std::string SvgBarChart(const std::vector<Bar>& bars, const BarChartOptions& o) {
+  double hi = 0;
+  for (const Bar& b : bars)
+    if (std::isfinite(b.value)) hi = std::max(hi, b.value);
+  for (const GuideLine& g : o.guides)
+    if (std::isfinite(g.value)) hi = std::max(hi, g.value);
+  if (!(hi > 0)) hi = 1;
+  const double step = NiceStep(hi, 5), top_value = std::ceil(hi / step) * step;
+  const double label_w = 210, right = 40, top = 40 + (o.guides.empty() ? 0 : 18), row_h = 26;
+  const double plot_w = o.width - label_w - right, bottom = top + row_h * static_cast<double>(bars.size());
+  // The notes wrapped at spaces to the canvas (about 6.8 px a character at 12 px).
+  std::vector<std::string> lines;
+  const size_t per_line = static_cast<size_t>(std::max(20.0, (o.width - 20) / 6.8));
+  for (const std::string& note : o.notes) {
+    std::string line, word;
+    std::istringstream words(note);
+    while (words >> word) {
+      if (!line.empty() && line.size() + 1 + word.size() > per_line) lines.push_back(line), line.clear();
+      line += (line.empty() ? "" : " ") + word;
+    }
+    lines.push_back(line);
+  }
+  const double height = bottom + 44 + 16 * static_cast<double>(lines.size());
+  auto X = [&](double v) { return label_w + plot_w * v / top_value; };
+  std::ostringstream os;
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << o.width << "\" height=\"" << Px(height)
+     << "\" viewBox=\"0 0 " << o.width << " " << Px(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  os << TitleText(o.width / 2.0, 22, o.width, o.title);
+  for (double v = 0; v <= top_value + 0.5 * step; v += step)
+    os << "<line x1=\"" << Px(X(v)) << "\" x2=\"" << Px(X(v)) << "\" y1=\"" << Px(top - 4) << "\" y2=\"" << Px(bottom)
+       << "\" stroke=\"#dddddd\"/>\n<text x=\"" << Px(X(v)) << "\" y=\"" << Px(bottom + 16)
+       << "\" text-anchor=\"middle\">" << Tick(v, step) << "</text>\n";
+  os << "<text x=\"" << Px(label_w + plot_w / 2) << "\" y=\"" << Px(bottom + 34) << "\" text-anchor=\"middle\">"
+     << Escape(o.x_label) << "</text>\n";
+  for (size_t i = 0; i < bars.size(); ++i) {
+    const Bar& b = bars[i];
+    const double y = top + row_h * static_cast<double>(i), baseline = y + row_h * 0.65;
+    os << "<text x=\"" << Px(label_w - 6) << "\" y=\"" << Px(baseline) << "\" text-anchor=\"end\">" << Escape(b.label)
+       << "</text>\n";
+    const double w = std::isfinite(b.value) ? std::max(X(b.value) - label_w, 0.5) : 0.0;
+    if (w > 0)
+      os << "<rect x=\"" << Px(label_w) << "\" y=\"" << Px(y + 4) << "\" width=\"" << Px(w) << "\" height=\""
+         << Px(row_h - 8) << "\" fill=\"" << (b.highlight ? "#d62728" : "#1f77b4") << "\"/>\n";
+    // The bar's text beside its end, or inside it when the end is near the right edge.
+    const bool inside = label_w + w + 6 + 6.8 * static_cast<double>(b.text.size()) > o.width - 4;
+    os << "<text x=\"" << Px(inside ? label_w + w - 4 : label_w + w + 4) << "\" y=\"" << Px(baseline) << "\""
+       << (inside ? " text-anchor=\"end\" fill=\"white\"" : "") << ">" << Escape(b.text) << "</text>\n";
+  }
+  double legend_x = label_w;
+  for (const GuideLine& g : o.guides) {
+    if (!std::isfinite(g.value)) continue;
+    os << "<line x1=\"" << Px(X(g.value)) << "\" x2=\"" << Px(X(g.value)) << "\" y1=\"" << Px(top - 4) << "\" y2=\""
+       << Px(bottom) << "\" stroke=\"black\" stroke-width=\"1.5\" stroke-dasharray=\"6,3\"/>\n";
+    os << "<line x1=\"" << Px(legend_x) << "\" x2=\"" << Px(legend_x + 30) << "\" y1=\"" << Px(top - 18) << "\" y2=\""
+       << Px(top - 18) << "\" stroke=\"black\" stroke-width=\"1.5\" stroke-dasharray=\"6,3\"/>\n<text x=\""
+       << Px(legend_x + 36) << "\" y=\"" << Px(top - 14) << "\">" << Escape(g.label) << "</text>\n";
+    legend_x += 56 + 6.8 * static_cast<double>(g.label.size());
+  }
+  for (size_t i = 0; i < lines.size(); ++i)
+    os << "<text x=\"10\" y=\"" << Px(bottom + 56 + 16 * static_cast<double>(i)) << "\">" << Escape(lines[i])
        << "</text>\n";
   os << "</svg>\n";
   return os.str();

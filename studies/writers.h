@@ -59,6 +59,10 @@ struct MarkedPoint {
   double x, y;
 };
 
+/// The limit lines of a pressure angle bound in magnitude, |φ| ≤ limit: at +limit, and at −limit
+/// too when `values` (the plotted angles, deg) go below zero.
+std::vector<GuideLine> PressureAngleLimitLines(double limit_deg, const std::vector<double>& values);
+
 struct PlotOptions {
   std::string title, x_label, y_label;  // axis labels as "quantity [unit]"
   int width = 800, height = 480;
@@ -71,6 +75,25 @@ struct PlotOptions {
 /// shape, so that a series lying on another stays visible. Guides, marked points and error bars
 /// are inside the axis range. Non-finite points are skipped.
 std::string SvgLinePlot(const std::vector<Series>& series, const PlotOptions& options);
+
+/// One bar of SvgBarChart: its label left of the axis, its length `value` (NaN: no bar), the text
+/// written at its end (the value with its unit, a second number); highlighted bars red.
+struct Bar {
+  std::string label;
+  double value;
+  std::string text = "";
+  bool highlight = false;
+};
+
+struct BarChartOptions {
+  std::string title, x_label;
+  int width = 800;
+  std::vector<GuideLine> guides = {};     ///< vertical dashed lines at a value (a limit), in a legend
+  std::vector<std::string> notes = {};    ///< text lines under the chart (advice, what the bars mean)
+};
+
+/// A horizontal bar chart on a linear axis from 0, one row a bar, in the order given.
+std::string SvgBarChart(const std::vector<Bar>& bars, const BarChartOptions& options);
 
 /// One panel of SvgStackedPlots: SvgLinePlot's series and options.
 struct Panel {

@@ -3,9 +3,9 @@
 
 Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR]
 
-For each of four examples (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives: its
-life table and life.svg) and a small sweep (its report.html and Pareto plot) it runs camopt, then
-checks report.html:
+For each of seven examples (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives: its
+life table and life.svg, a drive train's rigidity, a disc-cam sizing, a disc cam) and a small sweep
+(its report.html and Pareto plot) it runs camopt, then checks report.html:
   * statically: self-contained (no src/href/url() other than data: and in-page #anchors, no
     <script>), every inline <svg> is well-formed XML, one inline plot per .svg file of the run;
   * in Chromium, one start per report (--headless --screenshot, with --enable-logging=stderr
@@ -30,7 +30,20 @@ EXAMPLES = [  # (example, screenshot name); "sweep:" a sweep written by sweep_fi
     ("cycloid_ltca_nnm_lcm", "report_cycloid_ltca.png"),
     ("lcr_ii_life", "report_lcr_life.png"),
     ("sweep:crowning_vs_torque", "report_sweep.png"),
+    ("rigidity_gearbox", "report_rigidity.png"),
+    ("disc_cam_min_size", "report_disc_cam_min_size.png"),
+    ("disc_cam_translating", "report_disc_cam.png"),
 ]
+
+# What a kind's report is for, drawn (file of the run, text it must hold): the rigidity chain with
+# each element's share and the advice, the backlash against its limit; the sized cam over its
+# start; the pressure-angle limit lines on the disc cam's plot.
+DRAWN = {
+    "rigidity_gearbox": [("compliance_share.svg", "jaw coupling"), ("compliance_share.svg", "Advice: "),
+                         ("backlash.svg", "backlash limit"), ("report.html", "<li>Advice: jaw coupling")],
+    "disc_cam_min_size": [("profile.svg", "start design"), ("profile.svg", "sized cam")],
+    "disc_cam_translating": [("angles.svg", "pressure angle limit"), ("angles.svg", "−pressure angle limit")],
+}
 
 
 def sweep_file(source, work):
@@ -60,6 +73,21 @@ def find_chromium():
     return None
 
 
+def top_level_svgs(html):
+    """The outermost <svg>…</svg> elements of the page (a stacked plot nests one per panel)."""
+    svgs, depth, start = [], 0, 0
+    for m in re.finditer(r"<svg\b|</svg>", html):
+        if m.group(0) == "</svg>":
+            depth -= 1
+            if depth == 0:
+                svgs.append(html[start:m.end()])
+        else:
+            if depth == 0:
+                start = m.start()
+            depth += 1
+    return svgs
+
+
 def static_checks(html, out_dir):
     errors = []
     for m in re.finditer(r'\b(?:src|href)\s*=\s*"([^"]*)"', html):
@@ -70,7 +98,7 @@ def static_checks(html, out_dir):
             errors.append("external url(): " + m.group(0))
     if re.search(r"<script\b", html, re.I):
         errors.append("a <script> element")
-    svgs = re.findall(r"<svg\b.*?</svg>", html, re.S)
+    svgs = top_level_svgs(html)
     for k, svg in enumerate(svgs):
         try:
             ET.fromstring(svg)
@@ -147,6 +175,12 @@ def main():
         with open(html_path, encoding="utf-8") as f:
             html = f.read()
         errors = static_checks(html, out)
+        for name, text in DRAWN.get(example, []):
+            path = os.path.join(out, name)
+            if not os.path.exists(path):
+                errors.append("no %s in the run" % name)
+            elif text not in open(path, encoding="utf-8").read():
+                errors.append("%s does not show %r" % (name, text))
         png = os.path.join(work, shot)
         if os.path.exists(png):
             os.remove(png)

@@ -120,6 +120,42 @@ TEST(SvgDrawing, ScaleBarExtentAndMainDimensionsUnderTheDrawing) {
   EXPECT_NE(SvgDrawing(d).find(">0.5 mm</text>"), std::string::npos);
 }
 
+TEST(SvgLinePlot, ATitleLongerThanThePlotIsSqueezedToFitNotClipped) {
+  PlotOptions o{"short", "x", "y"};
+  const std::string short_title = SvgLinePlot({{"s", {0, 1}, {0, 1}}}, o);
+  EXPECT_EQ(short_title.find("textLength"), std::string::npos);
+  // 120 characters at ~8.3 px each is ~1000 px on an 800 px plot: squeezed to 780 px.
+  o.title = std::string(120, 'W');
+  const std::string long_title = SvgLinePlot({{"s", {0, 1}, {0, 1}}}, o);
+  EXPECT_NE(long_title.find("textLength=\"780.00\" lengthAdjust=\"spacingAndGlyphs\">" + o.title), std::string::npos);
+  // A drawing's title likewise, on its own canvas.
+  Drawing d;
+  d.title = o.title;
+  EXPECT_NE(SvgDrawing(d, 600).find("textLength=\"580.00\""), std::string::npos);
+}
+
+TEST(SvgBarChart, BarsFromZeroToTheirValueWithTheLimitAndNotesUnder) {
+  // Bars of 10 and 40 on an axis to 40 (ticks of 10): 550 px of plot from x = 210 on 800 px, so
+  // the 10 bar is 137.5 px and the 40 bar 550 px; the 25 limit is a dashed line at 210 + 343.75.
+  BarChartOptions o;
+  o.title = "shares";
+  o.x_label = "share [%]";
+  o.guides = {{"limit", 25.0}};
+  o.notes = {"first note", std::string(200, 'a') + " " + std::string(50, 'b')};
+  const std::string svg = SvgBarChart({{"one", 10.0, "10 %"}, {"two", 40.0, "40 % of the chain", true}}, o);
+  EXPECT_NE(svg.find("width=\"137.50\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("width=\"550.00\" height=\"18.00\" fill=\"#d62728\""), std::string::npos);  // highlighted
+  EXPECT_NE(svg.find("<line x1=\"553.75\" x2=\"553.75\""), std::string::npos);
+  EXPECT_NE(svg.find(">limit</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">40</text>"), std::string::npos);  // the axis ends at a round 40
+  // The 40 bar's text does not fit right of it: drawn inside, in white.
+  EXPECT_NE(svg.find("text-anchor=\"end\" fill=\"white\">40 % of the chain"), std::string::npos);
+  EXPECT_NE(svg.find(">first note</text>"), std::string::npos);
+  // A note longer than the canvas is wrapped at its space: the 200 a's and the 50 b's on two lines.
+  EXPECT_NE(svg.find(">" + std::string(200, 'a') + "</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">" + std::string(50, 'b') + "</text>"), std::string::npos);
+}
+
 Outputs SampleOutputs(double stress) {
   Outputs out;
   out.AddJson("result.json", {{"max_stress_MPa", stress},
@@ -155,6 +191,21 @@ TEST(HtmlReport, HeadlinesWithLimitsPassOrFail) {
   EXPECT_NE(html.find(">converged<"), std::string::npos);
   const std::string all_pass = HtmlReport("report_test_kind", {{"name", "sample"}}, SampleOutputs(1400));
   EXPECT_NE(all_pass.find("All 2 limits met"), std::string::npos);  // margin limit defaults to 0
+}
+
+TEST(HtmlReport, AValueBelowItsResolutionOrItsErrorIsShownAsZero) {
+  static const bool registered = RegisterReport(
+      "report_test_resolution", {{"offset", "/offset_mm", "mm", "", NAN, true, "", "", "", 1e-6},
+                                 {"tilt", "/tilt_deg", "deg", "", NAN, true, "/tilt_error_deg"},
+                                 {"length", "/length_mm", "mm", "", NAN, true, "", "", "", 1e-6}});
+  ASSERT_TRUE(registered);
+  const nlohmann::json result = {{"offset_mm", 1.31078e-10}, {"tilt_deg", 2e-7}, {"tilt_error_deg", 1e-5},
+                                 {"length_mm", 12.5}};
+  const HeadlineTable t = EvaluateHeadlines("report_test_resolution", nlohmann::json::object(), result);
+  ASSERT_EQ(t.rows.size(), 3u);
+  EXPECT_EQ(t.rows[0].value, "0 mm");
+  EXPECT_EQ(t.rows[1].value.rfind("0 ± ", 0), 0u) << t.rows[1].value;
+  EXPECT_EQ(t.rows[2].value, "12.5 mm");
 }
 
 TEST(HtmlReport, WarningsEscapedEveryPlotInlineNothingExternal) {
