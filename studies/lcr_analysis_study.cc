@@ -110,8 +110,8 @@ PlanarCamGeometry CamGeometry(const Study& st, Side s) {
   return g;
 }
 
-// Assembled view at input angle 0: the cam (centre at e u(0), not yet turned) with its rollers,
-// loaded rollers in red.
+}  // namespace
+
 Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleLoads<double>* loads,
                         int points, const std::string& title) {
   const auto& c = r.side(s);
@@ -136,6 +136,8 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
   d.layers = {cam, free_rollers, loaded, axes};
   return d;
 }
+
+namespace {
 
 // Optional "bore_diameter_mm" of a cam, inside the smallest profile diameter (ParseBoreDiameter).
 double ParseBoreDiameter(const Node& side, const lcr::Reducer<double>& r, Side s) {

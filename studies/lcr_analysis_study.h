@@ -26,6 +26,7 @@
 #include "model/lcr/lubrication.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
+#include "studies/writers.h"
 
 namespace camopt::studies::lcr_analysis {
 
@@ -312,5 +313,10 @@ Result Run(const Study& study, const RunContext& ctx);
 nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, series.csv and plots (forces), DXF/SVG drawings (profile).
 void Write(const Study& study, const Result& result, Outputs& out);
+
+/// Assembled view of side `s` at input angle 0: the cam (centre at e u(0), not yet turned) with
+/// its rollers, the rollers loaded in `loads` red (nullptr: none marked).
+Drawing AssemblyDrawing(const lcr::Reducer<double>& r, lcr::Side s, const lcr::AngleLoads<double>* loads, int points,
+                        const std::string& title);
 
 }  // namespace camopt::studies::lcr_analysis

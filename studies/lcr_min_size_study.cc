@@ -16,6 +16,7 @@
 
 #include "model/lcr/kinematics.h"
 #include "studies/contact_fatigue_input.h"
+#include "studies/lcr_analysis_study.h"
 #include "studies/lcr_input.h"
 #include "studies/format.h"
 #include "studies/lcr_min_size_contact.h"
@@ -864,6 +865,48 @@ nlohmann::json StartLcrAnalysisStudy(const Study& s, const nlohmann::json& optim
   return LcrAnalysisStudyOf(s, spec, objectives::LcrDesign(spec, x0), "start of ");
 }
 
+namespace {
+
+// sized_assembly.svg: the sized reducer's input cam and rollers at input angle 0 (as lcr_analysis
+// draws its assembly) over the start of the best combination's solve, dashed grey — the part the
+// sizing made beside the one it started from.
+void AddSizedAssembly(const Study& s, const nlohmann::json& best, Outputs& out) {
+  const nlohmann::json start = StartLcrAnalysisStudy(s, best);
+  const lcr::Reducer<double> sized = lcr_analysis::Parse(Node(&best, "best_lcr_analysis.json", "")).reducer;
+  const lcr::Reducer<double> first = lcr_analysis::Parse(Node(&start, "the start design", "")).reducer;
+  const int points = 720;
+  Drawing d = lcr_analysis::AssemblyDrawing(sized, lcr::Side::kInput, nullptr, points,
+                                            s.name + ": the sized input cam and rollers over the start design");
+  // The layers by their plain names (the DXF's CAM_PROFILE is "cam profile").
+  auto plain = [](std::string name) {
+    for (char& c : name) c = c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return name;
+  };
+  std::vector<Drawing::Layer> layers;
+  for (Drawing::Layer l : lcr_analysis::AssemblyDrawing(first, lcr::Side::kInput, nullptr, points, "").layers) {
+    if (l.polylines.empty() && l.circles.empty()) continue;
+    l.name = "start design: " + plain(l.name);
+    l.color = "#999999";
+    l.dash = "6,4";
+    l.stroke_width = 0.8;
+    layers.push_back(l);
+  }
+  for (Drawing::Layer l : d.layers)
+    if (!l.polylines.empty() || !l.circles.empty()) {
+      l.name = "sized: " + plain(l.name);
+      layers.push_back(l);
+    }
+  d.layers = layers;
+  d.labels.clear();
+  d.dimensions = {"eccentricity: start " + Format(first.eccentricity, 5) + " mm, sized " + Format(sized.eccentricity, 5) +
+                      " mm",
+                  "input roller diameter: start " + Format(2 * first.input.roller_radius, 5) + " mm, sized " +
+                      Format(2 * sized.input.roller_radius, 5) + " mm"};
+  out.Add("sized_assembly.svg", SvgDrawing(d));
+}
+
+}  // namespace
+
 void Write(const Study& s, const Result& result, Outputs& out) {
   out.AddJson("result.json", ToJson(s, result));
   if (result.best >= 0) {
@@ -895,6 +938,7 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     }
     if (s.contact3d) AddContact3DAnalysis(s, best, a);
     out.AddJson("best_lcr_analysis.json", a);
+    AddSizedAssembly(s, a, out);
   }
   // The best candidate is feasible: its solve converged and the accurate model verified it
   // (Candidate::feasible); one without a check is not verifiable.

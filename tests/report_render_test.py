@@ -36,12 +36,13 @@ EXAMPLES = [  # (example, screenshot name); "sweep:" a sweep written by sweep_fi
 ]
 
 # What a kind's report is for, drawn (file of the run, text it must hold): the rigidity chain with
-# each element's share and the advice, the backlash against its limit; the sized cam over its
-# start; the pressure-angle limit lines on the disc cam's plot.
+# each element's share and the advice, the backlash against its limit; the sized cam (the sized
+# reducer) over its start; the pressure-angle limit lines on the disc cam's plot.
 DRAWN = {
     "rigidity_gearbox": [("compliance_share.svg", "jaw coupling"), ("compliance_share.svg", "Advice: "),
                          ("backlash.svg", "backlash limit"), ("report.html", "<li>Advice: jaw coupling")],
     "disc_cam_min_size": [("profile.svg", "start design"), ("profile.svg", "sized cam")],
+    "lcr_min_size": [("sized_assembly.svg", "start design: cam profile"), ("sized_assembly.svg", "sized: rollers")],
     "disc_cam_translating": [("angles.svg", "pressure angle limit"), ("angles.svg", "−pressure angle limit")],
 }
 
