@@ -27,7 +27,8 @@ add_dependencies(camopt camopt_web)
 install(FILES ${CAMOPT_WEB_OUTPUTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/camopt/web)
 
 # The studio end to end in headless Chromium (web/test/studio_e2e.mjs, puppeteer-core): load an
-# example, a field error, a run, the crank slider against the closed form; its screenshot is
+# example, a field error (and a cross-field one), runs, the crank slider against the closed form,
+# the drawing a frame after each verdict, Play under 200 ms of latency, Compare; its screenshot is
 # docs/images/studio.png (written into the build tree here; copy it over when the page changes).
 # Skipped (exit 77, with the reason) only without Chromium or web/node_modules.
 if(CAMOPT_BUILD_TESTS)

@@ -56,6 +56,14 @@ inline constexpr size_t kMaxRunningRuns = 8;
 /// not grow with every run it ever made. Their output folders stay.
 inline constexpr size_t kMaxKeptRuns = 100;
 
+/// POST /api/mechanism?frames=N: at most this many frames in one answer (one per degree), and at
+/// most kMaxMechanismFramePoints outline points over all of them (N × points: 180 frames of 720
+/// points; an answer stays a few MB), else 400.
+inline constexpr long kMaxMechanismFrames = 360;
+inline constexpr long kMaxMechanismFramePoints = 180 * 720;
+/// POST /api/mechanism?id=ID: the longest ID echoed (letters, digits, '.', '_', '-', ':').
+inline constexpr size_t kMaxMechanismIdLength = 64;
+
 /// Runs the studio until the process is interrupted; prints "camopt studio: http://HOST:PORT/" on
 /// stdout once it listens. Returns 2 when the folder or the address cannot be used.
 int ServeMain(const ServeOptions& options);

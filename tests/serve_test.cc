@@ -963,6 +963,65 @@ TEST(Serve, MechanismMatchesTheClosedForms) {
   EXPECT_TRUE(sizing["optimum"].is_null());
 }
 
+// One revolution in one answer (frames=N, the studio's Play): frame k is the mechanism at
+// angle + 360 k/N — its cam centre at e u(θ_k) and its output turret turned by
+// (1 − n_A m_B/(m_A n_B)) θ_k (paper eq. 2), each frame the same as the single angle's answer —
+// and the id a client gives is echoed on answers and errors; too many frames or points, and an id
+// of other characters, are refused.
+TEST(Serve, MechanismFramesCoverOneRevolutionAndEchoTheRequestId) {
+  const fs::path dir = TempDir("serve-frames");
+  fs::copy_file(Example("lcr_ii.json"), dir / "lcr_ii.json");
+  const std::string body = ReadFile(dir / "lcr_ii.json");
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  auto res = c.Post("/api/mechanism?angle=5&points=100&frames=12&id=g2.s7", body, "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body.substr(0, 300);
+  const json m = json::parse(res->body);
+  EXPECT_EQ(m["request_id"], "g2.s7");
+  EXPECT_EQ(m["kind"], "lcr");
+  EXPECT_TRUE(m["supported"].get<bool>());
+  EXPECT_EQ(m["frame_step_deg"].get<double>(), 30.0);
+  ASSERT_EQ(m["frames"].size(), 12u);
+  ASSERT_EQ(m["angles_deg"].size(), 12u);
+  const double e = 2;
+  for (int k = 0; k < 12; ++k) {
+    const double deg = 5 + 30 * k, theta = deg * M_PI / 180;
+    const json& f = m["frames"][k];
+    EXPECT_EQ(m["angles_deg"][k].get<double>(), deg);
+    EXPECT_EQ(f["input_angle_deg"].get<double>(), deg);
+    EXPECT_NEAR(f["cam_centre_mm"][0].get<double>(), e * std::cos(theta), 1e-6) << k;
+    EXPECT_NEAR(f["cam_centre_mm"][1].get<double>(), e * std::sin(theta), 1e-6) << k;
+    EXPECT_NEAR(f["output_turret_rotation_deg"].get<double>(), (1.0 - 13.0 * 14.0 / (12.0 * 15.0)) * deg, 1e-9) << k;
+    const double turn = (1.0 - 13.0 * 14.0 / (12.0 * 15.0)) * theta;  // output roller 0 at 42 u(turn)
+    EXPECT_NEAR(f["sides"][1]["rollers_at"][0]["x"].get<double>(), 42 * std::cos(turn), 1e-9) << k;
+    EXPECT_NEAR(f["sides"][1]["rollers_at"][0]["y"].get<double>(), 42 * std::sin(turn), 1e-9) << k;
+    if (k % 4 == 1) {  // a few against the single angle's answer
+      auto one = c.Post(("/api/mechanism?points=100&angle=" + std::to_string(int(deg))).c_str(), body, "application/json");
+      ASSERT_TRUE(one);
+      EXPECT_EQ(json::parse(one->body), f) << k;
+    }
+  }
+  // A study the kind refuses: its error, with the id.
+  res = c.Post("/api/mechanism?id=abc&frames=3", R"({"study": "lcr_analysis"})", "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 422);
+  EXPECT_EQ(json::parse(res->body)["request_id"], "abc");
+  // Refused: no frames, too many, too many points in all, an id of other characters or too long.
+  for (const std::string& q : std::vector<std::string>{"frames=0", "frames=361", "frames=2x", "frames=180&points=1000", "id=a%22b", "id=a%20b",
+                              "id=" + std::string(65, 'x')}) {
+    res = c.Post(("/api/mechanism?" + q).c_str(), body, "application/json");
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << q << ": " << res->body;
+    EXPECT_FALSE(json::parse(res->body).contains("request_id")) << q;
+  }
+  res = c.Post(("/api/mechanism?points=720&frames=180&id=" + std::string(64, 'x')).c_str(), body, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(json::parse(res->body)["frames"].size(), 180u);
+}
+
 // The cycloid disc on its pins at crank 50°: pins at a u(2πi/n1), the disc's centre at e u(φ),
 // turned by −φ/n2; without profile modification every pin touches the disc (the tooth is the
 // envelope of the pin circle, the paper's eqs. 1–2): the nearest profile point is ρ from each pin.

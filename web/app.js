@@ -1,16 +1,18 @@
 // camopt studio, the front end of `camopt serve` (docs/studio.md): plain ES module, no framework.
 // Edit: a form generated from the kind's JSON Schema, checked by the server with the CLI's
 // messages. Run: save, start, live progress (server-sent events), cancel. See: the headline table,
-// the CSV outputs as uPlot charts, the mechanism at a crank angle (SVG, model units).
+// the CSV outputs as uPlot charts, the mechanism at a crank angle (SVG, model units); Play turns it
+// from one revolution fetched at once. Compare: two runs' headlines, values and limits.
 
 const $ = (sel) => document.querySelector(sel);
 const state = {
   folder: '', files: [], path: null, doc: null, schema: null,
-  run: null, source: null, runs: [], shown: null, mechanismStudy: null, playing: null,
+  run: null, source: null, runs: [], shown: null, mechanismStudy: null,
+  lastEdit: null, lastError: null, crossField: null,
 };
 
-async function api(method, url, body) {
-  const init = { method, headers: {} };
+async function api(method, url, body, signal) {
+  const init = { method, headers: {}, signal };
   if (body !== undefined) {
     init.body = typeof body === 'string' ? body : JSON.stringify(body);
     init.headers['Content-Type'] = 'application/json';
@@ -177,40 +179,68 @@ function renderForm() {
 let validateTimer = null;
 function edit(ptr, value) {
   setAt(state.doc, ptr, value);
+  state.lastEdit = ptr;
   $('#save').disabled = false;
   clearTimeout(validateTimer);
   validateTimer = setTimeout(validate, 150);
 }
 
-function showValidation(error) {
+// The drawn element of a JSON path: the field it names, else its nearest drawn parent.
+function formElementAt(path) {
+  let ptr = path || '';
+  let el = null;
+  while (ptr && !(el = document.querySelector(`#form [data-path="${CSS.escape(ptr)}"]:not(input):not(select):not(textarea)`)))
+    ptr = ptr.slice(0, ptr.lastIndexOf('/'));
+  return el;
+}
+
+function showErrorAt(el, forPath, text, cls) {
+  const msg = document.createElement('div');
+  msg.className = cls;
+  msg.dataset.for = forPath;
+  msg.textContent = text;
+  if (el.classList.contains('field')) { el.classList.add('invalid'); el.append(msg); }
+  else el.insertBefore(msg, el.children[1] || null);
+  return msg;
+}
+
+// error: the server's {message, path, …}. A cross-field rule's error names one field (its JSON
+// path) though the edit of another made it (editing the eccentricity breaks the turret radius's
+// rule): an error that appeared, or changed, right after the edit of a field it does not name is
+// shown at that edited field too, its own path kept in the text, for as long as it stays the same.
+function showValidation(error, edited = null) {
   document.querySelectorAll('.field-error').forEach((e) => e.remove());
   document.querySelectorAll('.field.invalid').forEach((e) => e.classList.remove('invalid'));
   const box = $('#validation');
+  const previous = state.lastError;
+  state.lastError = error ? error.message : null;
   if (!error) {
+    state.crossField = null;
     box.className = 'validation ok';
     box.textContent = 'The study is valid.';
     return;
   }
   box.className = 'validation bad';
   box.textContent = error.message;
-  // Next to the field the JSON path names, else its nearest drawn parent.
-  let ptr = error.path || '';
-  let el = null;
-  while (ptr && !(el = document.querySelector(`#form [data-path="${CSS.escape(ptr)}"]:not(input):not(select):not(textarea)`)))
-    ptr = ptr.slice(0, ptr.lastIndexOf('/'));
-  if (!el) return;
-  const msg = document.createElement('div');
-  msg.className = 'field-error';
-  msg.dataset.for = error.path;
-  msg.textContent = error.message;
-  if (el.classList.contains('field')) { el.classList.add('invalid'); el.append(msg); }
-  else el.insertBefore(msg, el.children[1] || null);
+  const el = formElementAt(error.path);
+  if (el) showErrorAt(el, error.path, error.message, 'field-error');
+  if (error.message !== previous)
+    state.crossField = edited && error.path && edited !== error.path && !edited.startsWith(error.path + '/') ? edited : null;
+  const at = state.crossField && formElementAt(state.crossField);
+  if (at && at !== el) {
+    const m = showErrorAt(at, state.crossField, `This change breaks the rule of ${error.path}: ${error.message}`, 'field-error cross-field');
+    m.dataset.errorPath = error.path;
+  }
 }
 
+let validateSeq = 0;
 async function validate() {
   if (!state.doc) return false;
+  const seq = ++validateSeq, edited = state.lastEdit;
   const { data } = await api('POST', `/api/validate?path=${encodeURIComponent(state.path)}`, state.doc);
-  showValidation(data.ok ? null : data.error);
+  if (seq !== validateSeq) return !!data.ok;  // a newer check of a newer edit is on its way
+  if (state.lastEdit === edited) state.lastEdit = null;
+  showValidation(data.ok ? null : data.error, edited);
   if (data.ok && typeof data.cases === 'number') $('#validation').textContent = `The sweep is valid: ${data.cases} cases (${data.note}).`;
   return !!data.ok;
 }
@@ -246,6 +276,9 @@ async function openFile(path) {
   state.path = path;
   state.doc = data;
   state.schema = null;
+  state.lastEdit = null;
+  state.lastError = null;
+  state.crossField = null;
   if (typeof data.study === 'string') {
     const r = await api('GET', `/api/schema/${encodeURIComponent(data.study)}`);
     if (r.status === 200) state.schema = r.data;
@@ -359,16 +392,39 @@ function headlineTable(table, rows) {
   }
 }
 
+// The See tab shows one run: its verdict, headlines, mechanism and charts change together. Each
+// shown run is a generation (view.gen); the run's result, its study and its mechanism at the
+// slider's angle are fetched first, then verdict, table and drawing are replaced in one go (one
+// frame: never the previous study's mechanism under this verdict); whatever still arrives for an
+// older generation is dropped. Then its charts, and its revolution for Play.
 async function showResult(id) {
+  const gen = newGeneration();
   const { data } = await api('GET', `/api/runs/${id}/result`);
+  if (gen !== view.gen) return;
+  const file = await api('GET', `/api/file?path=${encodeURIComponent(data.study)}`);
+  if (gen !== view.gen) return;
+  const study = file.status === 200 && typeof file.data === 'object' && file.data !== null ? file.data : null;
+  const angle = Number($('#crank').value);
+  const first = study ? await fetchMechanism(study, data.out, angle, '&points=720').catch(() => null) : null;
+  if (gen !== view.gen) return;
   state.shown = data;
-  $('#verdict').textContent = data.headlines ? `${data.study}: ${data.headlines.verdict}` : `${data.study}: ${data.state}`;
+  state.mechanismStudy = study;
+  Object.assign(view, { study, out: data.out, run: String(id), path: data.study, wanted: angle });
+  $('#see-hint').hidden = true;
+  $('#play').disabled = !study;
+  const verdict = $('#verdict');
+  verdict.textContent = data.headlines ? `${data.study}: ${data.headlines.verdict}` : `${data.study}: ${data.state}`;
+  verdict.dataset.run = String(id);
+  verdict.dataset.study = data.study;
   headlineTable($('#headlines'), data.headlines ? data.headlines.rows : []);
-  const study = await api('GET', `/api/file?path=${encodeURIComponent(data.study)}`);
-  state.mechanismStudy = typeof study.data === 'object' ? study.data : null;
-  await drawCharts(data);
-  await drawMechanism(Number($('#crank').value));
+  if (first) renderMechanism(first, angle, 'angle');
+  else renderNothing(study ? `${data.study}: its mechanism could not be drawn` : `${data.study}: not a study file`);
+  if (Number($('#crank').value) !== angle) askAngle(Number($('#crank').value));  // moved meanwhile
+  $('#charts').replaceChildren();
+  await drawCharts(data, gen);
+  if (gen !== view.gen) return;
   document.body.dataset.result = String(id);
+  if (first && first.status === 200 && first.data.supported) fetchRevolution(gen);
 }
 
 const UNITS = ['deg', 'N', 'MPa', 'Nm', 'mm', 'GPa', 'W', 'h', 'rpm', 'um', 'rad', 's'];
@@ -388,13 +444,14 @@ function parseCsv(text) {
   return { header, cols };
 }
 
-async function drawCharts(result) {
+async function drawCharts(result, gen) {
   const host = $('#charts');
   host.replaceChildren();
   if (typeof uPlot === 'undefined') { host.textContent = 'uPlot is not installed (npm ci in web/): no charts.'; return; }
   const limits = (state.mechanismStudy && state.mechanismStudy.limits) || {};
   for (const name of (result.files || []).filter((f) => f.endsWith('.csv'))) {
     const { text } = await api('GET', `/api/file?path=${encodeURIComponent(result.out + '/' + name)}`);
+    if (gen !== view.gen) return;  // another run is shown now
     const { header, cols } = parseCsv(text);
     if (cols.length < 2 || cols[0].length < 2 || cols[0].some((v) => v === null || Number.isNaN(v))) continue;
     const groups = new Map();
@@ -439,24 +496,157 @@ function stressColour(s, top) {
   return `rgb(255, ${Math.round(230 * (1 - t))}, ${Math.round(120 * (1 - t))})`;
 }
 
-let mechanismSeq = 0;
-async function drawMechanism(angle) {
+// ---- the mechanism's requests: generations, one angle in flight, one revolution per run ---------
+// view.gen: the shown run's generation (showResult). Angle requests (the slider) go one at a time:
+// while one is in flight the newest angle asked for waits in view.wanted and is asked when it
+// returns; each carries the id GEN.SEQ (the server echoes it as request_id) and an answer is drawn
+// only if it is the shown generation's newest request. A new generation aborts what is in flight.
+// The revolution (frames=180: every 2°, in one answer) is fetched once per shown run; Play and the
+// slider draw its frames at once, so the drawing follows the slider whatever the latency.
+const PLAY_STEP_DEG = 2, PLAY_TICK_MS = 60, REVOLUTION_FRAMES = 360 / PLAY_STEP_DEG;
+const view = {
+  gen: 0, study: null, out: null, run: null, path: null,
+  seq: 0, inflight: null, wanted: null, drawnAngle: null,
+  revolution: null, revolutionInflight: null, playing: null,
+};
+
+function newGeneration() {
+  view.gen += 1;
+  for (const r of [view.inflight, view.revolutionInflight]) if (r) r.controller.abort();
+  Object.assign(view, { inflight: null, revolutionInflight: null, revolution: null, study: null });
+  return view.gen;
+}
+
+// POST /api/mechanism for a study (a sizing's optimum and a cycloid's loads: its run's folder).
+function fetchMechanism(study, out, angle, extra, signal) {
+  const result = out ? `&result=${encodeURIComponent(out)}` : '';
+  return api('POST', `/api/mechanism?angle=${angle}${result}${extra}`, study, signal);
+}
+
+function frameAt(angle) {
+  const rev = view.revolution;
+  if (!rev || rev.gen !== view.gen) return null;
+  const k = (((angle - rev.start) / rev.step) % rev.frames.length + rev.frames.length) % rev.frames.length;
+  return Number.isInteger(k) ? { status: 200, data: rev.frames[k] } : null;
+}
+
+// The slider asks for an angle: a revolution frame drawn at once when there is one, and the angle
+// asked of the server (finer outlines; the only way before the revolution is there).
+function askAngle(angle) {
+  view.wanted = angle;
+  const frame = frameAt(angle);
+  if (frame) renderMechanism(frame, angle, 'revolution');
+  pumpAngle();
+}
+
+async function pumpAngle() {
+  if (view.inflight || view.wanted === null || !view.study) return;
+  if (view.playing && frameAt(view.wanted)) return;  // Play draws the revolution's frames: no requests
+  const angle = view.wanted, gen = view.gen, id = `${gen}.${++view.seq}`;
+  const controller = new AbortController();
+  view.inflight = { id, controller };
+  let r = null;
+  try {
+    r = await fetchMechanism(view.study, view.out, angle, `&points=720&id=${id}`, controller.signal);
+  } catch (e) {
+    // Aborted: a newer run is shown. Else said where the drawing was (Play does not wait for ever).
+    if (e.name !== 'AbortError') r = { status: 0, data: { request_id: id, error: { message: `the mechanism at ${angle}°: ${e.message}` } } };
+  }
+  if (view.inflight && view.inflight.id === id) view.inflight = null;
+  if (gen !== view.gen) return;  // an older run's: dropped (the new one pumps its own)
+  const newest = id === `${view.gen}.${view.seq}` && r && r.data && r.data.request_id === id;
+  // Drawn when it is the angle wanted, or when the drawing lags behind anyway (a slider dragged
+  // faster than the answers: the drawing moves with each answer instead of waiting).
+  if (newest && (angle === view.wanted || view.drawnAngle !== view.wanted)) renderMechanism(r, angle, 'angle');
+  if (view.wanted !== angle) pumpAngle();
+}
+
+async function fetchRevolution(gen) {
+  if (gen !== view.gen || view.revolutionInflight || (view.revolution && view.revolution.gen === gen) || !view.study) return;
+  const id = `${gen}.revolution`, controller = new AbortController();
+  view.revolutionInflight = { id, controller };
+  let r = null;
+  try {
+    r = await fetchMechanism(view.study, view.out, 0, `&points=360&frames=${REVOLUTION_FRAMES}&id=${id}`, controller.signal);
+  } catch (e) {
+    if (e.name !== 'AbortError') throw e;
+  }
+  if (view.revolutionInflight && view.revolutionInflight.id === id) view.revolutionInflight = null;
+  if (gen !== view.gen || !r || r.status !== 200 || r.data.request_id !== id || !r.data.supported) return;
+  view.revolution = { gen, start: r.data.angles_deg[0], step: r.data.frame_step_deg, frames: r.data.frames };
+  document.body.dataset.revolution = String(gen);
+}
+
+// One answer drawn: the svg says whose (data-run, data-study, data-kind: the study's kind), at which
+// angle (data-angle) and from what (data-frames: "revolution" or "angle").
+function renderMechanism(r, angle, from) {
   const svg = $('#mechanism');
-  const study = state.mechanismStudy;
-  if (!study) return;
-  const seq = ++mechanismSeq;
-  // A sizing's optimum is the one its shown run wrote (result=its output folder).
-  const result = state.shown && state.shown.out ? `&result=${encodeURIComponent(state.shown.out)}` : '';
-  const { status, data } = await api('POST', `/api/mechanism?angle=${angle}&points=720${result}`, study);
-  if (seq !== mechanismSeq) return;  // a newer angle is on its way
+  view.drawnAngle = angle;
+  Object.assign(svg.dataset, { run: view.run, study: view.path, kind: (view.study && view.study.study) || '', frames: from });
+  const { status, data } = r;
   if (status !== 200 || !data.supported) {
-    $('#mechanism-note').textContent = status !== 200 ? data.error.message
+    $('#mechanism-note').textContent = status !== 200 ? (data.error && data.error.message) || `error ${status}`
       : `the animation of ${data.kind || 'this kind'} is not there yet (${data.why || 'LCR, disc cam, cycloid and their sizings only'})`;
+    $('#stress-legend').textContent = '';
     svg.replaceChildren();
+    svg.dataset.angle = String(angle);
     return;
   }
   if (data.kind === 'sizing') return drawSizing(svg, data, angle);
-  drawDesign(svg, data, study, angle);
+  drawDesign(svg, data, view.study, angle);
+}
+
+function renderNothing(note) {
+  const svg = $('#mechanism');
+  svg.replaceChildren();
+  Object.assign(svg.dataset, { run: view.run || '', study: view.path || '', kind: '', frames: '', angle: '' });
+  view.drawnAngle = null;
+  $('#mechanism-note').textContent = note;
+  $('#stress-legend').textContent = '';
+}
+
+// Play: driven by requestAnimationFrame, a 2° step every 60 ms. With the revolution, each step's
+// frame is drawn at once (steps skipped by a slow frame are caught up, not waited for); before it
+// is there, the next step is taken only once this one is drawn (one request in flight), so the
+// slider never runs ahead of the drawing.
+function togglePlay() {
+  if (view.playing) {
+    cancelAnimationFrame(view.playing.raf);
+    view.playing = null;
+    $('#play').textContent = '▶ Play';
+    askAngle(Number($('#crank').value));  // where it stopped, at the finer outlines
+    return;
+  }
+  $('#play').textContent = '❚❚ Pause';
+  view.playing = { last: performance.now(), raf: requestAnimationFrame(playTick) };
+  fetchRevolution(view.gen);
+}
+
+function setCrank(angle) {
+  $('#crank').value = String(angle);
+  $('#crank-value').textContent = `${angle}°`;
+}
+
+function playTick(now) {
+  const p = view.playing;
+  if (!p) return;
+  p.raf = requestAnimationFrame(playTick);
+  if (now - p.last < PLAY_TICK_MS) return;
+  const here = Math.round(Number($('#crank').value) / PLAY_STEP_DEG) * PLAY_STEP_DEG;
+  if (view.revolution && view.revolution.gen === view.gen) {
+    const steps = Math.min(10, Math.floor((now - p.last) / PLAY_TICK_MS));
+    p.last = steps === 10 ? now : p.last + steps * PLAY_TICK_MS;
+    const next = (here + steps * PLAY_STEP_DEG) % 360;
+    setCrank(next);
+    view.wanted = next;
+    renderMechanism(frameAt(next), next, 'revolution');
+    return;
+  }
+  if (view.inflight || view.drawnAngle !== Number($('#crank').value)) return;  // this step not drawn yet
+  p.last = now;
+  const next = (here + PLAY_STEP_DEG) % 360;
+  setCrank(next);
+  askAngle(next);
 }
 
 function drawDesign(svg, data, study, angle) {
@@ -692,18 +882,21 @@ async function compare() {
   table.replaceChildren();
   if (!a || !b) return;
   const [ra, rb] = await Promise.all([api('GET', `/api/runs/${a}/result`), api('GET', `/api/runs/${b}/result`)]);
-  const rowsA = (ra.data.headlines && ra.data.headlines.rows) || [];
+  // Every row of either run (A's order, then B's own), each run's value and each run's own limit:
+  // two studies may have different limits, and a value passes or fails against its own.
+  const rowsA = new Map(((ra.data.headlines && ra.data.headlines.rows) || []).map((r) => [r.label, r]));
   const rowsB = new Map(((rb.data.headlines && rb.data.headlines.rows) || []).map((r) => [r.label, r]));
   const head = table.insertRow();
-  for (const h of ['', `#${a} ${ra.data.study}`, `#${b} ${rb.data.study}`, 'limit'])
+  for (const h of ['', `#${a} ${ra.data.study}`, `#${b} ${rb.data.study}`, `limit #${a}`, `limit #${b}`])
     head.append(Object.assign(document.createElement('th'), { textContent: h }));
-  for (const r of rowsA) {
+  for (const label of new Set([...rowsA.keys(), ...rowsB.keys()])) {
     const tr = table.insertRow();
-    const other = rowsB.get(r.label);
-    tr.insertCell().textContent = r.label;
-    Object.assign(tr.insertCell(), { textContent: r.value, className: r.status });
-    Object.assign(tr.insertCell(), { textContent: other ? other.value : '—', className: other ? other.status : '' });
-    tr.insertCell().textContent = r.limit;
+    const x = rowsA.get(label), y = rowsB.get(label);
+    tr.insertCell().textContent = label;
+    Object.assign(tr.insertCell(), { textContent: x ? x.value : '—', className: x ? x.status : '' });
+    Object.assign(tr.insertCell(), { textContent: y ? y.value : '—', className: y ? y.status : '' });
+    Object.assign(tr.insertCell(), { textContent: x ? x.limit : '—', className: 'limit-a' });
+    Object.assign(tr.insertCell(), { textContent: y ? y.limit : '—', className: 'limit-b' });
   }
   await compareCurves(ra.data, rb.data, a, b);
 }
@@ -753,17 +946,9 @@ $('#run').addEventListener('click', startRun);
 $('#cancel').addEventListener('click', cancelRun);
 $('#crank').addEventListener('input', () => {
   $('#crank-value').textContent = `${$('#crank').value}°`;
-  drawMechanism(Number($('#crank').value));
+  askAngle(Number($('#crank').value));
 });
-$('#play').addEventListener('click', () => {
-  if (state.playing) { clearInterval(state.playing); state.playing = null; $('#play').textContent = '▶ Play'; return; }
-  $('#play').textContent = '❚❚ Pause';
-  state.playing = setInterval(() => {
-    const s = $('#crank');
-    s.value = String((Number(s.value) + 2) % 360);
-    s.dispatchEvent(new Event('input'));
-  }, 60);
-});
+$('#play').addEventListener('click', togglePlay);
 $('#compare-a').addEventListener('change', compare);
 $('#compare-b').addEventListener('change', compare);
 
