@@ -69,4 +69,9 @@ if(CAMOPT_BUILD_TESTS)
              WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
     set_tests_properties(Python.${t} PROPERTIES ENVIRONMENT "${CAMOPT_PY_ENV}" TIMEOUT 600)
   endforeach()
+  # The wheel in a fresh venv, without PYTHONPATH (python/tests/test_wheel.py; about 10 s).
+  add_test(NAME Python.wheel COMMAND ${CAMOPT_PYTHON} -m unittest -v test_wheel
+           WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
+  set_tests_properties(Python.wheel PROPERTIES TIMEOUT 120 ENVIRONMENT
+    "CAMOPT_WHEEL=${CAMOPT_WHEEL};CAMOPT_VERSION=${PROJECT_VERSION};CAMOPT_SOURCE_DIR=${PROJECT_SOURCE_DIR};CAMOPT_BINARY=$<TARGET_FILE:camopt>;CAMOPT_TEST_TMP=${PROJECT_BINARY_DIR}/python-test-tmp")
 endif()
