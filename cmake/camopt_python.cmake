@@ -58,6 +58,8 @@ add_custom_command(OUTPUT ${CAMOPT_WHEEL}
           ${PROJECT_SOURCE_DIR}/python/make_wheel.py ${PROJECT_SOURCE_DIR}/cmake/camopt_wheel_stage.cmake
   COMMENT "Packing the Python module into ${CAMOPT_WHEEL}" VERBATIM)
 add_custom_target(wheel ALL DEPENDS ${CAMOPT_WHEEL})
+# For `pip install .` (python/camopt_build_backend.py): which file the wheel target writes.
+file(WRITE ${PROJECT_BINARY_DIR}/python/wheel-path.txt "${CAMOPT_WHEEL}\n")
 
 if(CAMOPT_BUILD_TESTS)
   set(CAMOPT_PY_ENV "PYTHONPATH=${PROJECT_BINARY_DIR}/python" "MPLBACKEND=Agg"
@@ -69,9 +71,9 @@ if(CAMOPT_BUILD_TESTS)
              WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
     set_tests_properties(Python.${t} PROPERTIES ENVIRONMENT "${CAMOPT_PY_ENV}" TIMEOUT 600)
   endforeach()
-  # The wheel in a fresh venv, without PYTHONPATH (python/tests/test_wheel.py; about 10 s).
+  # The wheel in a fresh venv, without PYTHONPATH, and `pip install .` (python/tests/test_wheel.py).
   add_test(NAME Python.wheel COMMAND ${CAMOPT_PYTHON} -m unittest -v test_wheel
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
   set_tests_properties(Python.wheel PROPERTIES TIMEOUT 120 ENVIRONMENT
-    "CAMOPT_WHEEL=${CAMOPT_WHEEL};CAMOPT_VERSION=${PROJECT_VERSION};CAMOPT_SOURCE_DIR=${PROJECT_SOURCE_DIR};CAMOPT_BINARY=$<TARGET_FILE:camopt>;CAMOPT_TEST_TMP=${PROJECT_BINARY_DIR}/python-test-tmp")
+    "CAMOPT_WHEEL=${CAMOPT_WHEEL};CAMOPT_VERSION=${PROJECT_VERSION};CAMOPT_SOURCE_DIR=${PROJECT_SOURCE_DIR};CAMOPT_BINARY=$<TARGET_FILE:camopt>;CAMOPT_TEST_TMP=${PROJECT_BINARY_DIR}/python-test-tmp;CAMOPT_BUILD_DIR=${PROJECT_BINARY_DIR}")
 endif()

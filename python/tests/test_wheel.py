@@ -11,6 +11,7 @@ import hashlib
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import unittest
@@ -59,6 +60,7 @@ class Wheel(unittest.TestCase):
         if not WHEEL.is_file():
             raise AssertionError(f"no wheel at {WHEEL!s}: build the `wheel` target (part of the default build)")
         cls.tmp = helpers.temp_dir("wheel")
+        cls.addClassCleanup(shutil.rmtree, cls.tmp, ignore_errors=True)  # the venv: 30 MB
         cls.venv = cls.tmp / "venv"
         # sys.executable is the python the module is built for (CAMOPT_PYTHON, ctest's interpreter).
         run([sys.executable, "-m", "venv", "--system-site-packages", cls.venv])
@@ -191,6 +193,36 @@ class Wheel(unittest.TestCase):
         import sysconfig
         v = f"cp{sys.version_info.major}{sys.version_info.minor}"
         return f"{v}-{v}-{sysconfig.get_platform().replace('-', '_').replace('.', '_')}"
+
+
+class PipInstallDot(unittest.TestCase):
+    """`pip install .` from the source tree: pyproject.toml's in-tree backend hands pip the wheel of
+    the existing build (CAMOPT_BUILD_DIR; its `wheel` target is up to date, nothing compiles)."""
+
+    def test_pip_install_dot_installs_the_same_module(self):
+        tmp = helpers.temp_dir("pip-dot")
+        self.addCleanup(shutil.rmtree, tmp, ignore_errors=True)
+        venv = tmp / "venv"
+        run([sys.executable, "-m", "venv", "--system-site-packages", venv])
+        run([venv / "bin" / "pip", "install", "--no-index", helpers.SOURCE], cwd=helpers.SOURCE)
+        got = json.loads(run([venv / "bin" / "python", "-c", REPORT], cwd=helpers.SOURCE).stdout)
+        self.assertTrue(pathlib.Path(got["file"]).is_relative_to(venv), got["file"])
+        self.assertEqual(got["version"], VERSION)
+        self.assertAlmostEqual(got["speed_ratio"], -90.0, delta=1e-9)
+        self.assertTrue(got["limits_met"])
+        # The very files of the wheel target's wheel.
+        with zipfile.ZipFile(WHEEL) as z:
+            want = z.read(f"camopt-{VERSION}.dist-info/RECORD").decode().splitlines()
+        site = pathlib.Path(got["file"]).parent
+        have = (site / f"camopt-{VERSION}.dist-info" / "RECORD").read_text().splitlines()
+        for line in want:
+            if line.startswith(("camopt.cpython-", "camopt.libs/", "camopt.pyi")):
+                self.assertIn(line, have)
+        # Nothing written into the source tree (no egg-info, no build folder of pip's).
+        status = subprocess.run(["git", "-C", str(helpers.SOURCE), "status", "--porcelain", "--ignored"],
+                                capture_output=True, text=True)
+        if status.returncode == 0:
+            self.assertNotIn("egg-info", status.stdout)
 
 
 if __name__ == "__main__":
