@@ -27,6 +27,9 @@ TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev
   # The Python module (pybind11), its tests and example (NumPy, matplotlib) and the
   # schema tests (jsonschema), all for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-matplotlib python3-jsonschema
+  # The wheel's test (Python.wheel): `python3 -m venv` with pip in the venv (python3-venv brings
+  # ensurepip's bundled pip wheel, python3-pip-whl); readelf is binutils, from build-essential.
+  python3-venv
   # MPI for `mpirun -n N camopt sweep` (optional for the program; its test runs two ranks).
   libopenmpi-dev openmpi-bin
   # report.html: the test that opens it in headless Chromium and checks its screenshot.
