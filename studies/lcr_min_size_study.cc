@@ -872,8 +872,13 @@ namespace {
 // sizing made beside the one it started from.
 void AddSizedAssembly(const Study& s, const nlohmann::json& best, Outputs& out) {
   const nlohmann::json start = StartLcrAnalysisStudy(s, best);
-  const lcr::Reducer<double> sized = lcr_analysis::Parse(Node(&best, "best_lcr_analysis.json", "")).reducer;
-  const lcr::Reducer<double> first = lcr_analysis::Parse(Node(&start, "the start design", "")).reducer;
+  // The geometry alone (the start study need not carry what a whole analysis reads, e.g. ratings).
+  auto reducer_of = [](const nlohmann::json& study, const std::string& file) {
+    const Node node = Node(&study, file, "")["reducer"];
+    return ToReducer(Read<LcrRatedReducerInput>(node).Design(), node);
+  };
+  const lcr::Reducer<double> sized = reducer_of(best, "best_lcr_analysis.json");
+  const lcr::Reducer<double> first = reducer_of(start, "the start design");
   const int points = 720;
   Drawing d = lcr_analysis::AssemblyDrawing(sized, lcr::Side::kInput, nullptr, points,
                                             s.name + ": the sized input cam and rollers over the start design");

@@ -1,4 +1,5 @@
-// `camopt init KIND`: for every kind the written study runs (exit 0), and for a kind declared once
+// `camopt init KIND`: for every kind the written study runs (exit 0) and its verdict names every
+// limit the kind considers that the template does not set; for a kind declared once
 // it spells out every field of the kind's schema that has a default (checked against the emitted
 // JSON Schema, a different archive of the declaration than the writer's), at every nesting level.
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "studies/init.h"
 #include "studies/study.h"
 #include "tests/test_util.h"
+#include "tests/verdict_check.h"
 
 namespace camopt {
 namespace {
@@ -61,6 +63,9 @@ TEST(Init, EveryKindsStudyRunsAndDeclaredKindsSpellOutEveryDefault) {
     const auto ran = RunCamopt("run " + file.string() + " --quiet --out " + (dir / (kind + "_out")).string());
     EXPECT_EQ(ran.exit_code, 0) << ran.stderr_text;
     EXPECT_TRUE(std::filesystem::exists(dir / (kind + "_out") / "result.json"));
+    // A verdict over the limits this template sets names every other limit the kind considers.
+    camopt::testing::ExpectVerdictNamesUnsetLimits(kind, study, json::parse(ReadFile(dir / (kind + "_out") / "result.json")),
+                                                   ReadFile(dir / (kind + "_out") / "report.html"));
   }
 }
 

@@ -27,6 +27,7 @@
 #include "studies/work_limits.h"
 #include "studies/status.h"
 #include "tests/test_util.h"
+#include "tests/verdict_check.h"
 
 extern char** environ;
 
@@ -999,6 +1000,8 @@ TEST_P(TwoRuns, GiveByteIdenticalFolders) {
   if (expected == 0)
     for (const std::string& m : camopt::studies::MissingAnswers(study["study"], study, result))
       ADD_FAILURE() << "asked for, exit 0 without it: " << m;
+  // The verdict names every limit the kind considers that the example does not set.
+  camopt::testing::ExpectVerdictNamesUnsetLimits(study["study"], study, result, runs[0]["report.html"]);
   ASSERT_EQ(runs[0].size(), runs[1].size());
   for (const auto& [file, content] : runs[0]) {
     SCOPED_TRACE(file);
