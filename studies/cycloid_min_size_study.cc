@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "model/cycloid/geometry_limits.h"
+#include "model/cycloid/tooth_profile.h"
 #include "optimizers/solver.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
@@ -1204,6 +1205,45 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
 
 }  // namespace
 
+namespace {
+
+// sized_disc.svg: the sized disc's modified profile (model/cycloid/tooth_profile.h, eqs. 3–4) and
+// its pins at crank angle 0 over the start design's, dashed grey, with the main dimensions of both.
+void AddSizedDiscDrawing(const Study& s, const cycloid::Drive& sized, Outputs& out) {
+  const cycloid::Drive& start = s.spec.drive;
+  auto layers = [](const cycloid::Drive& d, const std::string& prefix, const std::string& colour, double width,
+                   const std::string& dash) {
+    Drawing::Layer disc{prefix + "disc profile", colour, {}, {}, true, width, dash};
+    Drawing::Layer pins{prefix + "pins", colour == "black" ? "#1f77b4" : colour, {}, {}, true, width, dash};
+    Polyline pl;
+    const int samples = 40 * d.teeth;
+    for (int k = 0; k < samples; ++k) {
+      const auto p = cycloid::ToothProfile<double>(d, 2.0 * kPi * k / samples).point;
+      pl.emplace_back(p.x(), p.y());
+    }
+    disc.polylines.push_back(pl);
+    for (int i = 0; i < d.rollers; ++i) {
+      const auto c = cycloid::RollerCentreInDisc<double>(d, i, 0.0, 0.0);
+      pins.circles.push_back({c.x(), c.y(), d.roller_radius_mm});
+    }
+    return std::vector<Drawing::Layer>{disc, pins};
+  };
+  Drawing d;
+  d.title = s.name + ": the sized disc and pins over the start design";
+  for (const auto& l : layers(start, "start design: ", "#999999", 0.8, "6,4")) d.layers.push_back(l);
+  for (const auto& l : layers(sized, "sized: ", "black", 1.2, "")) d.layers.push_back(l);
+  auto line = [](const char* what, double a, double b) {
+    return std::string(what) + ": start " + Format(a, 5) + " mm, sized " + Format(b, 5) + " mm";
+  };
+  d.dimensions = {line("pin circle diameter", 2 * start.roller_position_radius_mm, 2 * sized.roller_position_radius_mm),
+                  line("pin diameter", 2 * start.roller_radius_mm, 2 * sized.roller_radius_mm),
+                  line("eccentricity", start.eccentricity_mm, sized.eccentricity_mm),
+                  line("face width", start.face_width_mm, sized.face_width_mm)};
+  out.Add("sized_disc.svg", SvgDrawing(d));
+}
+
+}  // namespace
+
 nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
   const objectives::CycloidMinSizeOutcome& o = r.outcome;
   if (o.x.empty()) return nullptr;
@@ -1233,6 +1273,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                       "(limits.min_edge_margin_um with an overload torque)");
   if (r.outcome.x.empty()) return;
   out.AddJson("best_cycloid_ltca.json", BestCycloidLtcaStudy(s, r));
+  AddSizedDiscDrawing(s, r.outcome.drive, out);
   const cycloid::CycleResult& c = r.best_cycle;
   if (c.meshes.empty()) return;
   Table t;

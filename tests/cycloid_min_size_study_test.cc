@@ -16,6 +16,7 @@
 #include "studies/input.h"
 #include "studies/study.h"
 #include "studies/work_limits.h"
+#include "studies/format.h"
 #include "tests/test_util.h"
 
 namespace camopt {
@@ -474,8 +475,16 @@ TEST(CycloidMinSizeStudy, SmallStudyEndToEnd) {
   EXPECT_GE(b["curtate_margin"].get<double>(), 0.05 - 1e-6);
   EXPECT_NEAR(b["min_profile_radius_mm"].get<double>(), CentreRadius(e, a_mod, 10) - rho, 1e-9);
   for (const char* file : {"best_cycloid_ltca.json", "stress_over_cycle.csv", "stress_over_cycle.svg",
-                           "pressure_map.svg", "report.html"})
+                           "pressure_map.svg", "sized_disc.svg", "report.html"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
+  // The sized disc drawn over the start: both designs' 10 pins (9 teeth + 1), the sized pin circle.
+  const std::string disc = ReadFile(dir / "out" / "sized_disc.svg");
+  size_t circles = 0;
+  for (size_t at = disc.find("<circle"); at != std::string::npos; at = disc.find("<circle", at + 1)) ++circles;
+  EXPECT_EQ(circles, 20u);
+  EXPECT_NE(disc.find("start design: disc profile"), std::string::npos);
+  EXPECT_NE(disc.find("sized: disc profile"), std::string::npos);
+  EXPECT_NE(disc.find("sized " + studies::Format(2 * a, 5) + " mm"), std::string::npos) << "pin circle diameter 2a";
   // The stress plot's series: one row per accurate crank angle (twice the study's per period).
   const auto csv = testing::ReadCsv(ReadFile(dir / "out" / "stress_over_cycle.csv"));
   ASSERT_EQ(csv.at("max_contact_stress_MPa").size(), 6u);
