@@ -96,7 +96,7 @@ void Flatten(const nlohmann::json& j, const std::string& path,
 const char* kStyle = R"(body{font-family:sans-serif;margin:24px auto;max-width:1200px;color:#222;padding:0 16px}
 h1{font-size:22px;margin-bottom:4px}h2{font-size:17px;border-bottom:1px solid #ccc;padding-bottom:3px;margin-top:28px}
 .meta{color:#555;font-size:13px}.verdict{padding:8px 12px;margin:12px 0;font-weight:bold;border-radius:4px}
-.ok{background:#e3f4e3;color:#185c18}.bad{background:#fbe3e3;color:#8c1a1a}.info{background:#eef2f8;color:#234}
+.ok{background:#e3f4e3;color:#185c18}.partial{background:#fdf1d6;color:#6b4a00}.bad{background:#fbe3e3;color:#8c1a1a}.info{background:#eef2f8;color:#234}
 table{border-collapse:collapse;font-size:14px}td,th{border:1px solid #ccc;padding:3px 8px;text-align:left}
 th{background:#f3f3f3}td.n{text-align:right;font-variant-numeric:tabular-nums}
 td.pass{color:#185c18;font-weight:bold}td.fail{color:#8c1a1a;font-weight:bold;background:#fbe3e3}
@@ -397,8 +397,12 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
 
   // The verdict first, one line from the answer's status (studies/status.h).
   const Status status = outputs.status().value_or(StatusOfTable(table));
+  // Green only when every limit the kind considers was checked: limits met with some not set is
+  // amber ("partial"), so that a verdict over the limits a study happened to set is not read as
+  // "this design is fine".
   const char* badge = ExitCode(status, false) != 0 || status == Status::kLimitsExceeded ? "bad"
-                      : limits == 0 && !IsVerified(status)                               ? "info"
+                      : limits == 0 && !IsVerified(status) && table.unset.empty()        ? "info"
+                      : !table.unset.empty()                                             ? "partial"
                                                                                          : "ok";
   os << "<div class=\"verdict " << badge << "\">" << Html(VerdictLine(table, status, outputs.status_reason()))
      << " <code>" << StatusName(status) << "</code></div>\n";

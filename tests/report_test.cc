@@ -208,6 +208,27 @@ TEST(HtmlReport, AValueBelowItsResolutionOrItsErrorIsShownAsZero) {
   EXPECT_EQ(t.rows[2].value, "12.5 mm");
 }
 
+TEST(HtmlReport, LimitsMetWithALimitNotSetIsNotGreen) {
+  static const bool registered = RegisterReport(
+      "report_test_unset", {{"largest stress", "/max_stress_MPa", "MPa", "study:/limits/contact_stress_MPa"},
+                            {"margin", "/margin_mm", "mm", "/limit_mm", NAN, false}});
+  ASSERT_TRUE(registered);
+  Outputs out;
+  out.AddJson("result.json", {{"max_stress_MPa", 7682.0}, {"margin_mm", 0.5}, {"limit_mm", 0.0}});
+  // The study sets no stress limit: the one limit set is met, the stress is named as not checked,
+  // and the banner is amber, not green.
+  const std::string unset = HtmlReport("report_test_unset", {{"name", "x"}}, out);
+  EXPECT_NE(unset.find("<div class=\"verdict partial\">The limit is met; not checked, no limit set: largest stress"),
+            std::string::npos)
+      << unset;
+  // With the stress limit set and met: green.
+  const std::string all = HtmlReport("report_test_unset", {{"name", "x"}, {"limits", {{"contact_stress_MPa", 8000}}}}, out);
+  EXPECT_NE(all.find("<div class=\"verdict ok\">All 2 limits met"), std::string::npos) << all;
+  // Set and exceeded: red.
+  const std::string bad = HtmlReport("report_test_unset", {{"name", "x"}, {"limits", {{"contact_stress_MPa", 1500}}}}, out);
+  EXPECT_NE(bad.find("<div class=\"verdict bad\">1 of 2 limits exceeded: largest stress"), std::string::npos) << bad;
+}
+
 TEST(HtmlReport, WarningsEscapedEveryPlotInlineNothingExternal) {
   const std::string html = HtmlReport("report_test_kind", {{"name", "a <name>"}}, SampleOutputs(1600));
   EXPECT_NE(html.find("roller &lt;b&gt; is small"), std::string::npos);
