@@ -442,7 +442,9 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
   }
   const auto plots = ParetoPlots(s, records, front);
   for (const auto& [file, svg] : plots) outputs.Add(file, svg);
-  outputs.Add("report.html", SweepHtml(s, cases, records, front, plots));
+  const auto output_plots = OutputPlots(s, cases, records);
+  for (const auto& [file, svg] : output_plots) outputs.Add(file, svg);
+  outputs.Add("report.html", SweepHtml(s, cases, records, front, plots, output_plots));
   summary_text = SweepSummary(s, records, front, out.string());
   outputs.AddJson("result.json", summary);
   // The merged files first: when they cannot be written (a full disk) the checkpoints stay and

@@ -96,6 +96,61 @@ std::vector<std::pair<std::string, std::string>> ParetoPlots(const Sweep& s, con
   return plots;
 }
 
+std::vector<std::pair<std::string, std::string>> OutputPlots(const Sweep& s, const std::vector<std::vector<json>>& cases,
+                                                             const std::vector<CaseRecord>& records) {
+  std::vector<std::pair<std::string, std::string>> plots;
+  const size_t n_in = std::min<size_t>(s.vary.size(), 4), n_out = std::min<size_t>(s.outputs.size(), 6);
+  auto number = [](const json& v, double& x) {
+    if (!v.is_number()) return false;
+    x = v.get<double>();
+    return std::isfinite(x);
+  };
+  for (size_t o = 0; o < n_out; ++o)
+    for (size_t i = 0; i < n_in; ++i) {
+      // The ok cases with a number for the input and the output; with two inputs, by the other's level.
+      const bool by_level = s.vary.size() == 2;
+      const size_t other = 1 - i;
+      std::map<double, Series> lines;  // the other input's level → its line
+      Series points{"ok cases", {}, {}};
+      points.markers = true;
+      for (const CaseRecord& r : records) {
+        double x = 0, y = 0, level = 0;
+        if (r.status != "ok" || r.index >= cases.size() || o >= r.outputs.size()) continue;
+        if (!number(cases[r.index][i], x) || !number(r.outputs[o], y)) continue;
+        if (by_level && number(cases[r.index][other], level)) {
+          Series& line = lines[level];
+          if (line.label.empty()) line.label = InputName(s, s.vary[other]) + " = " + ReportNumber(level);
+          line.style = SeriesStyle::kLineAndMarkers;
+          line.x.push_back(x);
+          line.y.push_back(y);
+        } else {
+          points.x.push_back(x);
+          points.y.push_back(y);
+        }
+      }
+      std::vector<Series> series;
+      for (auto& [level, line] : lines) {
+        // Along x, so that the line joins neighbouring levels of this input.
+        std::vector<size_t> order(line.x.size());
+        for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+        std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return line.x[a] < line.x[b]; });
+        Series sorted{line.label, {}, {}};
+        sorted.style = line.style;
+        for (size_t k : order) sorted.x.push_back(line.x[k]), sorted.y.push_back(line.y[k]);
+        series.push_back(sorted);
+      }
+      if (!points.x.empty()) series.push_back(points);
+      if (series.empty()) continue;
+      PlotOptions po;
+      po.title = s.name + ": " + ColumnName(s, o) + " against " + InputName(s, s.vary[i]);
+      po.x_label = InputName(s, s.vary[i]);
+      po.y_label = ColumnName(s, o);
+      plots.push_back({"outputs_" + std::to_string(o + 1) + "_vs_" + std::to_string(i + 1) + ".svg",
+                       SvgLinePlot(series, po)});
+    }
+  return plots;
+}
+
 std::string SweepVerdict(const std::vector<CaseRecord>& records) {
   std::map<std::string, size_t> counts;
   for (const CaseRecord& r : records) ++counts[r.status];
@@ -110,7 +165,8 @@ std::string SweepVerdict(const std::vector<CaseRecord>& records) {
 
 std::string SweepHtml(const Sweep& s, const std::vector<std::vector<json>>& cases,
                       const std::vector<CaseRecord>& records, const std::vector<size_t>& front,
-                      const std::vector<std::pair<std::string, std::string>>& plots) {
+                      const std::vector<std::pair<std::string, std::string>>& plots,
+                      const std::vector<std::pair<std::string, std::string>>& output_plots) {
   std::map<std::string, size_t> counts;
   for (const CaseRecord& r : records) ++counts[r.status];
   const size_t ok = counts["ok"];
@@ -178,6 +234,15 @@ std::string SweepHtml(const Sweep& s, const std::vector<std::vector<json>>& case
     os << "</div>\n";
   }
 
+  if (!output_plots.empty()) {
+    os << "<h2>Outputs against the inputs</h2>\n<p>Each output over the ok cases as each varied input "
+          "changes"
+       << (s.vary.size() == 2 ? ", one line per level of the other input" : "") << ".</p>\n<div class=\"plots\">\n";
+    for (const auto& [file, svg] : output_plots)
+      os << "<figure>\n" << svg << "<figcaption>" << HtmlEscape(file) << "</figcaption>\n</figure>\n";
+    os << "</div>\n";
+  }
+
   std::vector<const CaseRecord*> not_ok;
   for (const CaseRecord& r : records)
     if (r.status != "ok") not_ok.push_back(&r);
@@ -198,6 +263,7 @@ std::string SweepHtml(const Sweep& s, const std::vector<std::vector<json>>& case
     os << "<li><code>pareto.csv</code> (the front's cases)</li>\n";
     for (const auto& [file, svg] : plots) os << "<li><code>" << HtmlEscape(file) << "</code></li>\n";
   }
+  for (const auto& [file, svg] : output_plots) os << "<li><code>" << HtmlEscape(file) << "</code></li>\n";
   os << "<li><code>result.json</code> (counts, cases not ok, the front's case numbers)</li>\n"
      << "<li><code>report.html</code> (this page)</li>\n</ul>\n</body>\n</html>\n";
   return os.str();

@@ -238,6 +238,40 @@ TEST(SweepReport, ThreeObjectivesGetAPanelPerPairAndTheSummaryNamesEachBest) {
   EXPECT_EQ(html.find("<script"), std::string::npos);  // self-contained, nothing to run
 }
 
+TEST(SweepReport, EachOutputAgainstEachInputOneLinePerLevelOfTheOther) {
+  const auto dir = TempDir("sweep-output-plots");
+  const sw::Sweep sweep = ParseText(dir, CycloidSweep({100, 200}, {0.002, 0.005}));
+  // Cases (coefficient, torque): (0.002, 100), (0.002, 200), (0.005, 100), (0.005, 200); outputs
+  // made up by hand; case 3 is not ok and is left out of every plot.
+  const std::vector<std::vector<json>> cases = {{0.002, 100.0}, {0.002, 200.0}, {0.005, 100.0}, {0.005, 200.0}};
+  std::vector<sw::CaseRecord> records;
+  const std::vector<std::array<double, 2>> values = {{1111, 11}, {2222, 22}, {3333, 33}, {4444, 44}};
+  for (size_t i = 0; i < 4; ++i) {
+    sw::CaseRecord r;
+    r.index = i;
+    r.status = i == 3 ? "error" : "ok";
+    r.outputs = {values[i][0], values[i][1]};
+    records.push_back(r);
+  }
+  const auto plots = sw::OutputPlots(sweep, cases, records);
+  ASSERT_EQ(plots.size(), 4u);  // 2 outputs x 2 inputs
+  EXPECT_EQ(plots[0].first, "outputs_1_vs_1.svg");
+  EXPECT_EQ(plots[1].first, "outputs_1_vs_2.svg");
+  EXPECT_EQ(plots[3].first, "outputs_2_vs_2.svg");
+  // Stress against the coefficient: a line per torque, named by the other input's level.
+  const std::string& a = plots[0].second;
+  EXPECT_NE(a.find(">load, torque [N·m] = 100</text>"), std::string::npos) << a;
+  EXPECT_NE(a.find(">load, torque [N·m] = 200</text>"), std::string::npos);
+  EXPECT_NE(a.find(">crowning, coefficient [mm]</text>"), std::string::npos);  // x axis
+  // Case 3 is not ok: the y axis (ticks of 500 over 1111-3333) ends at 3500, not at the 4500 the
+  // left-out 4444 would need.
+  EXPECT_NE(a.find(">3500</text>"), std::string::npos);
+  EXPECT_EQ(a.find(">4500</text>"), std::string::npos);
+  const std::string html = sw::SweepHtml(sweep, cases, records, {}, {}, plots);
+  EXPECT_NE(html.find("<h2>Outputs against the inputs</h2>"), std::string::npos);
+  EXPECT_NE(html.find("<li><code>outputs_2_vs_2.svg</code></li>"), std::string::npos);
+}
+
 TEST(SweepCli, ASweepWritesItsReportAndPrintsTheAnswerFirst) {
   const auto dir = TempDir("sweep-summary");
   WriteFile(dir / "s.json", CycloidSweep({100}, {0.002, 0.005}).dump());
