@@ -146,6 +146,27 @@ TEST(Serve, PrintsItsAddressAndServesTheFrontEndAndTheKinds) {
   EXPECT_NE(page->body.find("camopt studio"), std::string::npos);
 }
 
+TEST(Serve, JsonAnswersAreSentUncompressedToABrowserThatAcceptsBrotli) {
+  // A browser sends "Accept-Encoding: gzip, deflate, br"; cpp-httplib would brotli-compress an
+  // "application/json" answer at its slowest setting (studies/serve.cc, kJsonType). Read raw.
+  const fs::path dir = TempDir("serve-uncompressed");
+  WriteFile(dir / "study.json", camopt::testing::Example("lcr_ii.json").dump(2));
+  Studio studio(dir);
+  ASSERT_GT(studio.port(), 0) << studio.first_line();
+  auto c = studio.Client();
+  c.set_decompress(false);
+  const httplib::Headers browser = {{"Accept-Encoding", "gzip, deflate, br"}};
+  for (const std::string url : {"/api/kinds", "/api/files", "/api/schema/lcr_analysis", "/api/file?path=study.json"}) {
+    SCOPED_TRACE(url);
+    auto r = c.Get(url, browser);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_FALSE(r->has_header("Content-Encoding")) << r->get_header_value("Content-Encoding");
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json; charset=utf-8");
+    EXPECT_NO_THROW((void)json::parse(r->body));
+  }
+}
+
 TEST(Serve, RefusesOtherOriginsAndHosts) {
   const fs::path dir = TempDir("serve-origin");
   Studio studio(dir);
