@@ -13,6 +13,7 @@
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_life.h"
 #include "studies/cycloid_study_common.h"
+#include "studies/datasheet.h"
 #include "studies/format.h"
 #include "studies/report.h"
 #include "studies/work_limits.h"
@@ -136,6 +137,70 @@ std::optional<Study::Lubrication> ParseLubrication(const Node& root, const Input
 
 }  // namespace
 
+namespace {
+
+// "stiffness.segments_Nm", "ratings", "output_bearing" and "external_loads" (docs/ratings.md).
+void ParseCatalogue(const Node& root, const Input& in, Study& s) {
+  if (in.stiffness) {
+    const double tr = in.stiffness->rated_torque_Nm;
+    s.segment_T1_Nm = 0.25 * tr, s.segment_T2_Nm = 0.75 * tr;
+    s.lost_motion_percent = in.stiffness->lost_motion_percent;
+    if (in.stiffness->segments_Nm) {
+      const std::vector<double>& t = *in.stiffness->segments_Nm;
+      const Node n = root["stiffness"]["segments_Nm"];
+      if (t.size() != 2 || !(t[0] > 0 && t[0] < t[1] && t[1] < tr))
+        n.Fail("[T1, T2] with 0 < T1 < T2 < rated_torque_Nm = " + Format(tr, 6));
+      s.segment_T1_Nm = t[0], s.segment_T2_Nm = t[1];
+    }
+  }
+  if (in.ratings) {
+    const Node n = root["ratings"];
+    s.density_kg_m3 = in.ratings->density_kg_m3;
+    if (!s.loaded) n.FailWith("ratings need the loaded stage: analysis.evaluate must include \"loaded\" (or be absent)");
+    if (s.discs > 1)
+      root["discs"].Fail("1 with ratings (the bearing lives are modelled for one disc; found " +
+                         std::to_string(s.discs) + " discs)");
+    if (!cycloid::UniformWholeMeshPeriods(s.crank_angles_rad, s.drive.rollers))
+      n.FailWith("ratings need crank angles that sample whole mesh periods (360/" + std::to_string(s.drive.rollers) +
+                 " deg) uniformly: use analysis.crank_angles_per_mesh_period");
+    Study::RatingsSpec r;
+    r.in = *in.ratings;
+    r.life = cycloid_common::ParseLifeRatings(root, s.drive, "ratings: the rated torque is a bearing life", true,
+                                              true);
+    if (r.life.crank_bearing.modified || (r.life.pins_rated && r.life.pins.modified))
+      r.life.contamination_factor = root["lubricant"]["contamination_factor"].Number();
+    if (in.limits) {
+      r.limits.contact_stress_MPa = in.limits->contact_stress_MPa;
+      r.limits.pair_load_N = in.limits->roller_load_N;
+    }
+    s.ratings = r;
+  }
+  if (in.external_loads && !in.output_bearing)
+    root["external_loads"].FailWith("external_loads need an output_bearing to act on");
+  if (in.output_bearing) {
+    if (!in.external_loads) (void)root["external_loads"];  // "missing required field"
+    s.output_bearing = in.output_bearing;
+    double shares = 0;
+    for (size_t k = 0; k < in.external_loads->size(); ++k) {
+      ExternalLoadInput line = (*in.external_loads)[k];
+      shares += line.time_share;
+      if (!line.output_speed_rpm) {
+        if (in.ratings) line.output_speed_rpm = in.ratings->rated_output_speed_rpm;
+        else if (in.load && in.load->input_speed_rpm)
+          line.output_speed_rpm = *in.load->input_speed_rpm * double(s.drive.rollers - s.drive.teeth) / s.drive.teeth;
+        else
+          root["external_loads"][k].FailWith(
+              "output_speed_rpm (no ratings.rated_output_speed_rpm or load.input_speed_rpm to take it from)");
+      }
+      s.external_loads.push_back(line);
+    }
+    if (std::abs(shares - 1.0) > 1e-6)
+      root["external_loads"].Fail("time shares that sum to 1 within 1e-6 (they sum to " + Format(shares, 9) + ")");
+  }
+}
+
+}  // namespace
+
 Study Parse(const Node& root) {
   // Every field's type and bounds (the limits are read by the headlines from the study,
   // "study:/limits/…"); what spans fields follows.
@@ -213,6 +278,7 @@ Study Parse(const Node& root) {
                   "analysis.crank_angles_per_mesh_period");
   }
   s.lubrication = ParseLubrication(root, in, s);
+  ParseCatalogue(root, in, s);
   return s;
 }
 
@@ -644,6 +710,61 @@ void RunLubrication(const Study& s, const RunContext& ctx, Result& r) {
 
 }  // namespace
 
+namespace {
+
+// The three-segment stiffness and the lost motion at the study's percentage, from the loading
+// branch of the torsional curve (docs/ratings.md).
+void RunSegments(const Study& s, Result& r) {
+  std::vector<camopt::TorsionPoint> curve;  // the loading branch, −T_r … 0−, 0+ … T_r
+  for (const cycloid::TorsionPoint& p : r.torsion->points)
+    curve.push_back({p.torque_Nmm / 1000.0, p.output_angle_rad * kArcminPerRad});
+  const double tr = s.stiffness->rated_torque_Nm;
+  r.segments = ThreeSegmentTorsionalStiffness(curve, s.segment_T1_Nm, s.segment_T2_Nm, tr);
+  r.lost_motion_user_rad = LostMotionArcmin(curve, tr, s.lost_motion_percent / 100.0) / kArcminPerRad;
+}
+
+// Ratings, the output bearing and the parts' masses (docs/ratings.md).
+void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
+  if (s.stiffness || s.ratings) {
+    const double stack = s.discs > 1 ? s.disc_spacing_mm * (s.discs - 1) + s.drive.face_width_mm : s.drive.face_width_mm;
+    std::vector<Vec2<double>> profile;
+    const int samples = 400 * s.drive.teeth;
+    for (int k = 0; k < samples; ++k)
+      profile.push_back(ToothProfile<double>(s.drive, 2.0 * kPi * k / samples).point);
+    r.masses = cycloid_common::CycloidMasses(s.drive, profile, s.discs, stack, s.bore_diameter_mm,
+                                             s.output ? &s.output->pins : nullptr,
+                                             s.output ? s.output->span_mm : 0.0, s.density_kg_m3);
+  }
+  if (s.ratings) {
+    LoadedOptions options = s.options;
+    options.keep_pressure = false;
+    options.crank_slope = false;
+    const LoadedTca tca(s.drive, s.crowning, s.material, options);
+    Progress progress("cycloid_ltca ratings", ctx.quiet);
+    int step = 0;
+    try {
+      r.ratings = cycloid_common::SolveRatings(
+          s.ratings->in, s.ratings->limits, s.ratings->life, tca, s.crank_angles_rad,
+          double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), std::max(s.torque_Nm, 1.0),
+          [&](const std::string& detail) { progress.Update(std::min(0.95, 0.03 * ++step), detail); });
+    } catch (const std::invalid_argument& e) {
+      r.ratings_failed = e.what();
+      r.warnings.push_back(std::string("ratings not solved: ") + e.what());
+    }
+    progress.Done();
+  }
+  if (s.output_bearing) {
+    try {
+      r.output_bearing = SolveOutputBearing(*s.output_bearing, s.external_loads);
+    } catch (const std::invalid_argument& e) {
+      r.output_bearing_failed = e.what();
+      r.warnings.push_back(std::string("output bearing not rated: ") + e.what());
+    }
+  }
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   if (s.loaded) {
@@ -716,8 +837,11 @@ Result Run(const Study& s, const RunContext& ctx) {
       pins->e_star_MPa = tca.e_star_MPa();
     }
     try {
+      const double tr = s.stiffness->rated_torque_Nm;
       r.torsion = TorsionalCurve(tca, pins ? &*pins : nullptr, s.stiffness->crank_angle_deg * kPi / 180.0,
-                                 s.stiffness->rated_torque_Nm * 1000.0, s.discs);
+                                 tr * 1000.0, s.discs,
+                                 {s.segment_T1_Nm / tr, s.segment_T2_Nm / tr, s.lost_motion_percent / 100.0});
+      RunSegments(s, r);
     } catch (const std::invalid_argument& e) {
       r.torsion_failed = e.what();
       r.warnings.push_back(std::string("torsional curve not solved: ") + e.what());
@@ -731,6 +855,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     r.life = cycloid_common::RunLife(*s.life, tca, r.crank_angles_rad, s.disc_torque_Nmm(), &r.cycle.meshes);
   }
   if (s.lubrication) RunLubrication(s, ctx, r);
+  RunCatalogue(s, ctx, r);
   if (r.life && s.life->contamination_factor) {
     // The oil at the bearings for their modified life a_ISO: the lubricated operating point's.
     ModifiedLifeOil oil;
@@ -928,6 +1053,132 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
 
 }  // namespace
 
+namespace {
+
+// result.json's catalogue numbers (docs/ratings.md): rated_torque_Nm, peak_torque_Nm,
+// momentary_torque_Nm and "ratings"; "output_bearing"; "stiffness_segments"; "masses"; and
+// "joint_model", the parameters `camopt export` turns into a simulator's joint.
+void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
+  auto optional = [](const std::optional<double>& x, const char* what) {
+    return x ? nlohmann::json(Finite(*x, what)) : nlohmann::json(nullptr);
+  };
+  if (s.ratings) {
+    const RatingsInput& in = s.ratings->in;
+    if (r.ratings) {
+      const cycloid_common::RatingsResult& g = *r.ratings;
+      j["rated_torque_Nm"] = Finite(g.rated_torque_Nm, "rated torque");
+      j["peak_torque_Nm"] = optional(g.peak_torque_Nm, "peak torque");
+      j["momentary_torque_Nm"] = optional(g.momentary_torque_Nm, "momentary torque");
+      nlohmann::json d = {{"rated_life_h", in.rated_life_h},
+                          {"rated_output_speed_rpm", in.rated_output_speed_rpm},
+                          {"rated_input_speed_rpm", in.rated_output_speed_rpm * s.drive.teeth /
+                                                        double(s.drive.rollers - s.drive.teeth)},
+                          {"rated_by", g.rated_by},
+                          {"L10h_at_rated_torque", Finite(g.rated_L10h, "rated life")},
+                          {"peak_limited_by", g.peak_torque_Nm ? nlohmann::json(g.peak_by) : nlohmann::json(g.peak_note)},
+                          {"momentary_static_safety", in.momentary_static_safety},
+                          {"momentary_limited_by", g.momentary_torque_Nm ? nlohmann::json(g.momentary_by)
+                                                                         : nlohmann::json(g.momentary_note)},
+                          {"momentary_peaks_allowed", optional(g.momentary_peaks_allowed, "momentary peaks")},
+                          {"allowable_output_speed_rpm", nullptr},
+                          {"allowable_output_speed",
+                           "not computed: the thermal operating point over speed is not solved for a rating (the "
+                           "lubricated losses at the load's speed are in lubrication)"},
+                          {"ltca_cycles", g.ltca_cycles},
+                          {"definitions",
+                           "rated torque: the output torque at which the shortest bearing L10 at the rated output "
+                           "speed equals the rated life (one LTCA cycle per trial torque, solved, not scaled); peak "
+                           "torque: the largest torque within limits.contact_stress_MPa and limits.roller_load_N; "
+                           "momentary torque: the largest torque at which every rated bearing keeps s0 = C0/P0max >= "
+                           "momentary_static_safety; momentary peaks allowed: 1e4 / (2 (n R / 60) t), n the output speed at the peak, R the "
+                           "ratio, t its duration: the strain-wave catalogues' count of input revolutions under "
+                           "peak torque, applied to the crank (docs/ratings.md)"}};
+      if (in.momentary_peaks)
+        d["momentary_peak"] = {{"output_speed_rpm", in.momentary_peaks->output_speed_rpm},
+                               {"duration_s", in.momentary_peaks->duration_s}};
+      j["ratings"] = d;
+    } else {
+      for (const char* key : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"}) j[key] = nullptr;
+      j["ratings"] = {{"error", r.ratings_failed}};
+    }
+  }
+  if (r.output_bearing) j["output_bearing"] = OutputBearingJson(*s.output_bearing, *r.output_bearing);
+  else if (s.output_bearing) j["output_bearing"] = {{"error", r.output_bearing_failed}};
+  const double arcmin = kArcminPerRad;
+  if (r.segments) {
+    const ThreeSegmentStiffness& g = *r.segments;
+    j["stiffness_segments"] = {
+        {"T1_Nm", s.segment_T1_Nm}, {"T2_Nm", s.segment_T2_Nm}, {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
+        {"K1_Nm_per_arcmin", Finite(g.k1_Nm_per_arcmin, "K1")},
+        {"K2_Nm_per_arcmin", Finite(g.k2_Nm_per_arcmin, "K2")},
+        {"K3_Nm_per_arcmin", Finite(g.k3_Nm_per_arcmin, "K3")},
+        {"definitions", "loading branch from 0+ (after the backlash): K1 = T1 / (angle(T1) - angle(0+)), K2 = (T2 - "
+                        "T1) / (angle(T2) - angle(T1)), K3 = (T_r - T2) / (angle(T_r) - angle(T2))"}};
+    j["stiffness"]["lost_motion_percent"] = s.lost_motion_percent;
+    j["stiffness"]["lost_motion_at_percent_arcmin"] = Finite(r.lost_motion_user_rad * arcmin, "lost motion");
+  }
+  if (s.stiffness || s.ratings) {
+    const cycloid_common::PartMasses& m = r.masses;
+    j["masses"] = {{"density_kg_m3", s.density_kg_m3},
+                   {"disc_kg", m.disc_kg},
+                   {"disc_inertia_kgm2", m.disc_inertia_kgm2},
+                   {"ring_pins_kg", m.ring_pins_kg},
+                   {"output_pins_kg", m.output_pins_kg},
+                   {"total_kg", m.total_kg},
+                   {"outer_diameter_mm", m.outer_diameter_mm},
+                   {"width_mm", m.width_mm},
+                   {"reflected_inertia_kgm2", m.reflected_inertia_kgm2},
+                   {"includes", m.includes}};
+  }
+  if (r.torsion && r.segments) {
+    const cycloid::TorsionCurve& c = *r.torsion;
+    const ThreeSegmentStiffness& g = *r.segments;
+    nlohmann::json curve = nlohmann::json::array();
+    for (const cycloid::TorsionPoint& p : c.points) curve.push_back({p.torque_Nmm / 1000.0, p.output_angle_rad});
+    nlohmann::json losses = nlohmann::json::array();
+    std::optional<double> efficiency;
+    double friction_Nm = 0.0;
+    if (r.lubrication) {
+      // The lubricated operating point: its efficiency and the no-load running torque (at the input,
+      // reflected to the output through the ratio for the joint's friction).
+      const LubricationResult& l = *r.lubrication;
+      efficiency = l.efficiency;
+      friction_Nm = l.no_load_running_torque_Nm * double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
+      losses.push_back({{"input_speed_rad_s", l.input_speed_rpm * 2.0 * kPi / 60.0},
+                        {"efficiency_forward", l.efficiency},
+                        {"efficiency_backward", l.efficiency},
+                        {"friction_torque_input_Nm", l.no_load_running_torque_Nm}});
+    }
+    j["joint_model"] = {
+        {"ratio", double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth)},
+        {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
+        {"stiffness_Nm_per_rad", Finite(c.stiffness_Nmm_per_rad / 1000.0, "stiffness")},
+        {"stiffness_segments",
+         {{"T1_Nm", s.segment_T1_Nm},
+          {"T2_Nm", s.segment_T2_Nm},
+          {"K1_Nm_per_rad", g.k1_Nm_per_arcmin * kArcminPerRad},
+          {"K2_Nm_per_rad", g.k2_Nm_per_arcmin * kArcminPerRad},
+          {"K3_Nm_per_rad", g.k3_Nm_per_arcmin * kArcminPerRad}}},
+        {"torsion_curve", curve},
+        {"backlash_rad", c.backlash_rad},
+        {"lost_motion_rad", c.lost_motion_rad},
+        {"lost_motion_percent", 3},
+        {"reflected_inertia_kgm2", r.masses.reflected_inertia_kgm2},
+        {"inertia_includes", r.masses.includes},
+        {"damping_Nms_per_rad", 0.0},
+        {"damping_note", "not modelled: the contact model is quasi-static and frictionless (no hysteresis width)"},
+        {"friction_torque_Nm", friction_Nm},
+        {"friction_note", r.lubrication ? "the lubricated no-load running torque at the load's speed and oil "
+                                          "temperature, reflected to the output; loss_table's backward efficiency "
+                                          "repeats the forward one (the model computes the input-driving direction)"
+                                        : "not modelled without a lubricant (frictionless)"},
+        {"efficiency", efficiency ? nlohmann::json(*efficiency) : nlohmann::json(nullptr)},
+        {"loss_table", losses}};
+  }
+}
+
+}  // namespace
+
 nlohmann::json ToJson(const Study& s, const Result& r) {
   if (!s.loaded) return UnloadedJson(s, r);
   const CycleResult& cycle = r.cycle;
@@ -1070,6 +1321,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     if (o.pins.roller_radius_mm > 0) om["roller_radius_mm"] = o.pins.roller_radius_mm;
     j["output_mechanism"] = om;
   }
+  AddCatalogue(s, r, j);
   if (r.lubrication) j["lubrication"] = WriteJson(*r.lubrication);
   else if (s.lubrication) j["lubrication"] = {{"error", r.lubrication_error}};
   // With a lubricant the drive has an efficiency: the life block points to it instead of calling
@@ -1233,6 +1485,8 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     out.SetStatus(Status::kNotConverged, "output mechanism not solved (its outputs are null in result.json): " +
                                              r.output_failed);
   if (r.torsion) WriteTorsion(r, out);
+  if (s.ratings && !r.ratings)
+    out.SetStatus(Status::kNotConverged, "ratings not solved (null in result.json): " + r.ratings_failed);
   AddToothDrawing(s, r, out);
   WriteToleranceFiles(r, out);
 }
@@ -1343,8 +1597,64 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
     {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
     {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
     {"ring pin life L10h", "/life/pins_L10h", "h"},
+    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m"},
+    {"peak torque (contact limits)", "/peak_torque_Nm", "N m"},
+    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m"},
+    {"output bearing life L10h", "/output_bearing/L10h", "h"},
+    {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
     {"converged", "/converged", ""},
 })));
+
+// datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
+const bool kDatasheet = RegisterDatasheet(
+    "cycloid_ltca",
+    {"/masses",
+     {{"Ratings",
+       {{"reduction ratio", "/gear_ratio_nominal", ""},
+        {"rated torque", "/rated_torque_Nm", "N·m", 1.0, "/ratings/error"},
+        {"rated output speed", "/ratings/rated_output_speed_rpm", "rpm"},
+        {"rated life L10", "/ratings/rated_life_h", "h"},
+        {"rated torque limited by", "/ratings/rated_by", ""},
+        {"peak (acceleration) torque", "/peak_torque_Nm", "N·m", 1.0, "/ratings/peak_limited_by"},
+        {"peak torque limited by", "/ratings/peak_limited_by", ""},
+        {"momentary (emergency-stop) torque", "/momentary_torque_Nm", "N·m", 1.0, "/ratings/momentary_limited_by"},
+        {"momentary torque limited by", "/ratings/momentary_limited_by", ""},
+        {"momentary peaks allowed", "/ratings/momentary_peaks_allowed", ""},
+        {"allowable output speed", "/ratings/allowable_output_speed_rpm", "rpm", 1.0, "/ratings/allowable_output_speed"}}},
+      {"Torsional stiffness and lost motion (input held)",
+       {{"T1", "/stiffness_segments/T1_Nm", "N·m"},
+        {"T2", "/stiffness_segments/T2_Nm", "N·m"},
+        {"K1 (0–T1)", "/stiffness_segments/K1_Nm_per_arcmin", "N·m/arcmin"},
+        {"K2 (T1–T2)", "/stiffness_segments/K2_Nm_per_arcmin", "N·m/arcmin"},
+        {"K3 (T2–rated)", "/stiffness_segments/K3_Nm_per_arcmin", "N·m/arcmin"},
+        {"torsional stiffness (50–100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N·m/arcmin"},
+        {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+        {"lost motion at ± stiffness.lost_motion_percent", "/stiffness/lost_motion_at_percent_arcmin", "arcmin"},
+        {"backlash", "/backlash_arcmin", "arcmin"},
+        {"hysteresis loss", "/stiffness/hysteresis_width_arcmin", "arcmin"}}},
+      {"Accuracy",
+       {{"loaded transmission error, peak to peak", "/lte_peak_to_peak_arcsec", "arcsec"},
+        {"angular transmission accuracy from the tolerances (linear worst case)",
+         "/transmission_error/linear_worst_case_arcsec", "arcsec"}}},
+      {"Efficiency",
+       {{"efficiency at the load's torque and speed", "/lubrication/efficiency", "", 1.0, "/life/efficiency"},
+        {"no-load running torque (input)", "/lubrication/no_load_running_torque_Nm", "N·m"}}},
+      {"Output bearing",
+       {{"type", "/output_bearing/type", ""},
+        {"equivalent dynamic load P_C", "/output_bearing/P_C_N", "N"},
+        {"L10", "/output_bearing/L10h", "h"},
+        {"oscillating-motion life", "/output_bearing/L_OC_h", "h"},
+        {"static equivalent load P_0", "/output_bearing/P0_N", "N"},
+        {"static safety f_s", "/output_bearing/static_safety", ""},
+        {"tilt under the largest moment", "/output_bearing/tilt_arcmin", "arcmin"}}},
+      {"Dimensions and mass",
+       {{"outer diameter (over the ring pins)", "/masses/outer_diameter_mm", "mm"},
+        {"width (discs' stack)", "/masses/width_mm", "mm"},
+        {"mass of one disc", "/masses/disc_kg", "kg"},
+        {"mass of the parts modelled", "/masses/total_kg", "kg"},
+        {"inertia at the output (reflected)", "/masses/reflected_inertia_kgm2", "kg·m²"},
+        {"what the masses include", "/masses/includes", ""}}}},
+     {"hysteresis.svg", "lte.svg"}});
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/geometry.h"
+#include "model/common/catalogue_ratings.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
 #include "model/cycloid/output_mechanism.h"
@@ -25,10 +26,12 @@
 #include "studies/lubrication_input.h"
 #include "studies/cycloid_input.h"
 #include "studies/cycloid_life.h"
+#include "studies/cycloid_ratings.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/geometry_files.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
+#include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/tolerance_input.h"
 
@@ -97,10 +100,19 @@ struct Input {
   struct Stiffness {
     double rated_torque_Nm = 0;
     std::optional<double> crank_angle_deg;  ///< absent: 0 (no schema default: the block is optional)
+    std::optional<std::vector<double>> segments_Nm;
+    double lost_motion_percent = 3.0;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Required().Positive().Unit("N·m").Desc("T_r at the output"));
       a->Visit("crank_angle_deg", &crank_angle_deg, Field().Unit("deg").Desc("the crank angle held (absent: 0)"));
+      a->Visit("segments_Nm", &segments_Nm,
+               Field().MinItems(2, "[T1, T2] with 0 < T1 < T2 < rated_torque_Nm").Unit("N·m").Desc(
+                   "T1 and T2 of the three-segment stiffness K1 (0–T1), K2 (T1–T2), K3 (T2–T_r) (absent: 25% and "
+                   "75% of rated_torque_Nm; docs/ratings.md)"));
+      a->Visit("lost_motion_percent", &lost_motion_percent,
+               Field().Above(0.0).AtMost(100.0, "a percentage in (0, 100]").Desc(
+                   "lost motion at ± this percentage of the rated torque (the catalogues' 3%)"));
     }
   };
   struct Limits : LubricationLimitsInput {
@@ -186,6 +198,9 @@ struct Input {
   std::optional<SurfacesInput> surfaces;
   std::optional<CycloidBearingFrictionInput> bearing_friction;
   std::optional<EfficiencyMapInput> efficiency_map;
+  std::optional<RatingsInput> ratings;
+  std::optional<OutputBearingInput> output_bearing;
+  std::optional<std::vector<ExternalLoadInput>> external_loads;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -239,6 +254,17 @@ struct Input {
     a->Visit("efficiency_map", &efficiency_map,
              Field().Desc("efficiency_map.csv: efficiency, loss and oil temperature over torques × speeds (with "
                           "lubricant; one loaded cycle per torque)"));
+    a->Visit("ratings", &ratings,
+             Field().Desc("the catalogue's ratings: rated torque for a rated life at a rated output speed, peak torque "
+                          "from the contact limits, momentary torque from the static ratings (docs/ratings.md; needs "
+                          "crank_bearing, output_mechanism, one disc)"));
+    a->Visit("output_bearing", &output_bearing,
+             Field().Desc("the output bearing (cross-roller or angular-contact pair) under external_loads: P_C, L10, "
+                          "static safety f_s, tilt (docs/ratings.md)"));
+    a->Visit("external_loads", &external_loads,
+             Field().MinItems(1, "a non-empty array of load lines").Desc(
+                 "the application's loads on the output bearing, lines of a duty cycle (the time shares sum to 1 "
+                 "within 1e-6)"));
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
@@ -279,6 +305,19 @@ struct Study {
     double rated_torque_Nm = 0, crank_angle_deg = 0;
   };
   std::optional<StiffnessSpec> stiffness;
+  /// "stiffness.segments_Nm" (T1, T2) and "stiffness.lost_motion_percent".
+  double segment_T1_Nm = 0, segment_T2_Nm = 0, lost_motion_percent = 3.0;
+  /// "ratings" with the rated elements (crank bearing, pins, output mechanism) and the peak limits.
+  struct RatingsSpec {
+    RatingsInput in;
+    cycloid_common::LifeSpec life;  ///< lines empty: set per trial torque
+    cycloid_common::PeakLimits limits;
+  };
+  std::optional<RatingsSpec> ratings;
+  double density_kg_m3 = 7850.0;  ///< "ratings.density_kg_m3" (steel when absent)
+  /// "output_bearing" and "external_loads" (each line's speed resolved).
+  std::optional<OutputBearingInput> output_bearing;
+  std::vector<ExternalLoadInput> external_loads;
   /// "tolerances" and "monte_carlo": the transmission error from tolerances
   /// (model/cycloid/transmission_error.h); nullopt: none.
   struct ToleranceSpec {
@@ -365,6 +404,13 @@ struct Result {
   std::string output_failed, torsion_failed;
   std::vector<double> bearing_load_at_ltca_angles_N;  ///< |B| of disc 1 at crank_angles_rad (per_angle.csv)
   std::optional<cycloid::TransmissionErrorResult> transmission_error;  ///< with "tolerances"
+  std::optional<cycloid_common::RatingsResult> ratings;  ///< with "ratings"
+  std::string ratings_failed;                            ///< why they are absent
+  std::optional<OutputBearingResult> output_bearing;     ///< with "output_bearing"
+  std::string output_bearing_failed;                     ///< why it is absent
+  std::optional<ThreeSegmentStiffness> segments;         ///< with "stiffness" (N·m/arcmin)
+  double lost_motion_user_rad = 0;                       ///< at stiffness.lost_motion_percent
+  cycloid_common::PartMasses masses;                     ///< with "stiffness" or "ratings"
 };
 
 /// @throws StudyError for bad input (exit 2).

@@ -414,6 +414,9 @@ inline std::optional<CompliantOutputSpec> ParseCompliantOutput(const Node& root,
   return ParseCompliantOutputPins(n, *om, rigid, d, e_mm, stack_mm, stack_words);
 }
 
+inline LifeSpec ParseLifeRatings(const Node& root, const cycloid::Drive& d, const std::string& why,
+                                 bool extended_output, bool modified_life);
+
 /// The life fields of a cycloid study: "load.input_speed_rpm" or "duty_cycle" (ParseDutyCycle, the
 /// one-line form at `torque_Nmm`), "crank_bearing": {kind, dynamic_rating_N, static_rating_N}
 /// (required with a life), "pins": {dynamic_rating_N, static_rating_N} (optional),
@@ -442,8 +445,16 @@ inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive&
     if (root.Has("output_mechanism")) ParseOutputMechanism(root["output_mechanism"], d, extended_output);
     return std::nullopt;
   }
-  LifeSpec life;
+  LifeSpec life = ParseLifeRatings(root, d, why, extended_output, modified_life);
   life.lines = std::move(*lines);
+  return life;
+}
+
+/// The rated elements of ParseLife without the duty cycle (lines empty): "crank_bearing" (required),
+/// "pins" (optional), "output_mechanism" (required); `why` says what needs them.
+inline LifeSpec ParseLifeRatings(const Node& root, const cycloid::Drive& d, const std::string& why,
+                                 bool extended_output, bool modified_life) {
+  LifeSpec life;
   auto missing = [&](const std::string& key, const std::string& expected) {
     const std::string path = (root.path() == "/" ? std::string() : root.path()) + "/" + key;
     throw StudyError(root.file() + ": " + path + ": expected " + expected + ", found nothing", root.file(), path,

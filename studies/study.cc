@@ -24,6 +24,7 @@
 
 #include "studies/archive.h"
 #include "studies/provenance.h"
+#include "studies/datasheet.h"
 #include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/work_limits.h"
@@ -535,7 +536,10 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   }
   if (!outputs.status()) outputs.SetStatus(Status::kLimitsMet);
   outputs.phases().push_back({"status", ProcessCpuSeconds() - status_cpu, WallSeconds() - status_wall});
-  Timed(outputs.phases(), "report", [&] { AddReport(kind, study, outputs); });  // last: it shows every other file
+  Timed(outputs.phases(), "report", [&] {
+    AddDatasheet(kind, outputs);
+    AddReport(kind, study, outputs);  // last: it shows every other file
+  });
   return outputs;
 }
 

@@ -18,6 +18,7 @@
 // follow the same curve, so its hysteresis loop has no width.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -46,17 +47,25 @@ struct TorsionCurve {
   int contact_solves = 0;
 };
 
-/// Torque fractions of T_r on each side (the curve's sampling; 0.03, 0.5 and 1 among them).
-inline std::vector<double> TorsionFractions() {
-  return {0.03, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+/// Torque fractions of T_r on each side (the curve's sampling; 0.03, 0.5 and 1 among them), with
+/// `extra` fractions in (0, 1) merged in (the three-segment stiffness's T1/T_r and T2/T_r, a lost
+/// motion's percentage), ascending and without repeats.
+inline std::vector<double> TorsionFractions(const std::vector<double>& extra = {}) {
+  std::vector<double> f = {0.03, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+  for (double x : extra)
+    if (x > 0.0 && x < 1.0) f.push_back(x);
+  std::sort(f.begin(), f.end());
+  f.erase(std::unique(f.begin(), f.end(), [](double a, double b) { return std::abs(a - b) <= 1e-12; }), f.end());
+  return f;
 }
 
 /// The output angle against the output torque from −T_r to T_r at crank angle φ [rad], each of
 /// `discs` discs carrying T/discs (equal split); `pins` the output mechanism (nullptr: rigid
-/// output). Header comment for the definitions.
+/// output); `extra_fractions` of T_r sampled besides TorsionFractions(). Header comment for the
+/// definitions.
 /// @throws std::invalid_argument for T_r <= 0 or discs < 1.
 inline TorsionCurve TorsionalCurve(const LoadedTca& tca, const OutputPins* pins, double crank,
-                                   double rated_torque_Nmm, int discs) {
+                                   double rated_torque_Nmm, int discs, const std::vector<double>& extra_fractions = {}) {
   if (!(rated_torque_Nmm > 0.0 && std::isfinite(rated_torque_Nmm)) || discs < 1)
     throw std::invalid_argument("torsional curve: the rated torque must be > 0 and discs >= 1");
   const Drive& d = tca.drive();
@@ -84,7 +93,7 @@ inline TorsionCurve TorsionalCurve(const LoadedTca& tca, const OutputPins* pins,
     return p;
   };
   TorsionCurve c;
-  const std::vector<double> f = TorsionFractions();
+  const std::vector<double> f = TorsionFractions(extra_fractions);
   for (auto it = f.rbegin(); it != f.rend(); ++it) c.points.push_back(side(-1.0, *it, c));
   c.points.push_back(side(-1.0, 0.0, c));
   c.points.push_back(side(1.0, 0.0, c));

@@ -1,0 +1,59 @@
+// The output bearing of "output_bearing" and "external_loads" (studies/ratings_input.h).
+#include "studies/ratings_input.h"
+
+#include <cmath>
+
+namespace camopt::studies {
+
+OutputBearingResult SolveOutputBearing(const OutputBearingInput& in, const std::vector<ExternalLoadInput>& loads) {
+  const OutputBearing b = ToOutputBearing(in);
+  std::vector<OutputBearingLine<double>> lines;
+  for (const ExternalLoadInput& l : loads)
+    lines.push_back({l.time_share, l.output_speed_rpm.value_or(0.0), l.radial_N, l.axial_N, l.moment_Nm});
+  OutputBearingResult r;
+  r.average = OutputBearingAverageLoads(lines, b.kind);
+  r.equivalent_load_N =
+      DynamicEquivalentRadialLoad(r.average.radial_N, r.average.axial_N, r.average.moment_Nm, b.pitch_diameter_mm);
+  r.L10h = OutputBearingLifeHours(b, r.equivalent_load_N, r.average.speed_rpm, in.load_factor);
+  r.largest = OutputBearingMaximumLoads(lines);
+  r.static_load_N = StaticEquivalentRadialLoad(r.largest.radial_N, r.largest.axial_N, r.largest.moment_Nm,
+                                               b.pitch_diameter_mm);
+  r.static_safety = OutputBearingStaticSafetyFactor(b, lines);
+  if (in.oscillation)
+    r.oscillating_L10h = OscillatingOutputBearingLifeHours(b, r.equivalent_load_N, in.load_factor,
+                                                           in.oscillation->per_min, in.oscillation->angle_deg / 2.0);
+  if (in.moment_stiffness_Nm_per_arcmin) r.tilt_arcmin = OutputBearingTiltArcmin(b, r.largest.moment_Nm);
+  return r;
+}
+
+nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r) {
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  nlohmann::json j = {
+      {"type", in.type},
+      {"dynamic_rating_N", in.dynamic_rating_N},
+      {"static_rating_N", in.static_rating_N},
+      {"pitch_diameter_mm", in.pitch_diameter_mm},
+      {"load_factor", in.load_factor},
+      {"average_radial_N", r.average.radial_N},
+      {"average_axial_N", r.average.axial_N},
+      {"average_moment_Nm", r.average.moment_Nm},
+      {"average_output_speed_rpm", r.average.speed_rpm},
+      {"P_C_N", r.equivalent_load_N},
+      {"L10h", finite(r.L10h)},
+      {"max_radial_N", r.largest.radial_N},
+      {"max_axial_N", r.largest.axial_N},
+      {"max_moment_Nm", r.largest.moment_Nm},
+      {"P0_N", r.static_load_N},
+      {"static_safety", finite(r.static_safety)},
+      {"L_OC_h", r.oscillating_L10h ? finite(*r.oscillating_L10h) : nlohmann::json(nullptr)},
+      {"tilt_arcmin", r.tilt_arcmin ? nlohmann::json(*r.tilt_arcmin) : nlohmann::json(nullptr)},
+      {"definitions",
+       "catalogue output-bearing rating (docs/ratings.md): revolution-weighted B-means of |F_r|, |F_a|, |M| over "
+       "external_loads (B = 10/3 cross-roller, 3 angular-contact pair), P_C = X (F_r + 2M/d_p) + Y F_a (X = 1, Y = "
+       "0.45 when F_a <= 1.5 (F_r + 2M/d_p), else 0.67, 0.67), L10 = 1e6/(60 N_av) (C/(f_w P_C))^B h; L_OC = 1e6/(60 "
+       "n_1) (90/theta) (C/(f_w P_C))^B with theta half the oscillating angle; P0 = F_rmax + 2 M_max/d_p + 0.44 "
+       "F_amax, f_s = C0/P0; tilt = M_max / moment stiffness"}};
+  return j;
+}
+
+}  // namespace camopt::studies

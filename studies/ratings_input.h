@@ -1,0 +1,136 @@
+// The catalogue blocks of a reducer analysis (docs/ratings.md): "ratings" (rated torque for a rated
+// life at a rated output speed, peak and momentary torque), "output_bearing" with the application's
+// "external_loads", and the parts' density for the datasheet's masses and the reflected inertia.
+// Declared once (studies/archive.h); cycloid_ltca reads them (studies/cycloid_ratings.h).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/common/output_bearing.h"
+#include "studies/archive.h"
+
+namespace camopt::studies {
+
+/// "ratings": what a catalogue's rating table states, solved from the model (docs/ratings.md).
+struct RatingsInput {
+  struct MomentaryPeaks {
+    double output_speed_rpm = 0, duration_s = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("output_speed_rpm", &output_speed_rpm,
+               Field().Required().Positive().Unit("rpm").Desc("output speed at the momentary (emergency-stop) peak"));
+      a->Visit("duration_s", &duration_s,
+               Field().Required().Positive().Unit("s").Desc("duration of one momentary peak"));
+    }
+  };
+  double rated_life_h = 0, rated_output_speed_rpm = 0;
+  double momentary_static_safety = 1.0;
+  std::optional<MomentaryPeaks> momentary_peaks;
+  double density_kg_m3 = 7850.0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("rated_life_h", &rated_life_h,
+             Field().Required().Positive().Unit("h").Desc(
+                 "L10 life at the rated torque and speed: rated_torque_Nm is the torque whose shortest bearing L10 "
+                 "equals it (solved, one LTCA cycle per trial torque)"));
+    a->Visit("rated_output_speed_rpm", &rated_output_speed_rpm,
+             Field().Required().Positive().Unit("rpm").Desc("the rated output speed"));
+    a->Visit("momentary_static_safety", &momentary_static_safety,
+             Field().Positive().Desc(
+                 "static safety s0 = C0/P0max every rated bearing keeps at the momentary torque (ISO 76; 1: the "
+                 "static rating itself)"));
+    a->Visit("momentary_peaks", &momentary_peaks,
+             Field().Desc("the momentary peak's output speed and duration: the number of peaks allowed, "
+                          "1e4 / (2 (n R / 60) t) with R the ratio (docs/ratings.md)"));
+    a->Visit("density_kg_m3", &density_kg_m3,
+             Field().Positive().Unit("kg/m³").Desc(
+                 "the parts' density: their masses on the datasheet and the reflected inertia of joint_model "
+                 "(steel: 7850)"));
+  }
+};
+
+/// "output_bearing": the reducer's output (cross-roller or angular-contact pair) bearing.
+struct OutputBearingInput {
+  std::string type = "cross_roller";
+  double dynamic_rating_N = 0, static_rating_N = 0, pitch_diameter_mm = 0;
+  double load_factor = 1.0;
+  struct Oscillation {
+    double angle_deg = 0, per_min = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_deg", &angle_deg,
+               Field().Required().Positive().AtMost(360.0, "an angle in (0, 360] deg").Unit("deg").Desc(
+                   "the whole oscillating angle, end to end (the catalogues' θ is half of it)"));
+      a->Visit("per_min", &per_min,
+               Field().Required().Positive().Unit("1/min").Desc("round-trip oscillations per minute, n_1"));
+    }
+  };
+  std::optional<double> moment_stiffness_Nm_per_arcmin;
+  std::optional<Oscillation> oscillation;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("type", &type,
+             Field().OneOf({"cross_roller", "angular_contact_pair"}).Desc(
+                 "cross_roller (life exponent 10/3) or angular_contact_pair of ball bearings (exponent 3)"));
+    a->Visit("dynamic_rating_N", &dynamic_rating_N, Field().Required().Positive().Unit("N").Desc("C, the catalogue's"));
+    a->Visit("static_rating_N", &static_rating_N, Field().Required().Positive().Unit("N").Desc("C0, the catalogue's"));
+    a->Visit("pitch_diameter_mm", &pitch_diameter_mm,
+             Field().Required().Positive().Unit("mm").Desc("d_p, the rolling elements' pitch circle diameter"));
+    a->Visit("load_factor", &load_factor,
+             Field().AtLeast(1.0).Desc("f_w: 1–1.2 smooth, 1.2–1.5 normal, 1.5–3 shock and vibration"));
+    a->Visit("moment_stiffness_Nm_per_arcmin", &moment_stiffness_Nm_per_arcmin,
+             Field().Positive().Unit("N·m/arcmin").Desc("the catalogue's tilting-moment stiffness: the tilt angle"));
+    a->Visit("oscillation", &oscillation,
+             Field().Desc("oscillating motion: the life L_OC for this swing (docs/ratings.md)"));
+  }
+};
+
+/// The model's bearing (model/common/output_bearing.h).
+inline OutputBearing ToOutputBearing(const OutputBearingInput& in) {
+  OutputBearing b;
+  b.dynamic_rating_N = in.dynamic_rating_N;
+  b.static_rating_N = in.static_rating_N;
+  b.pitch_diameter_mm = in.pitch_diameter_mm;
+  b.kind = in.type == "cross_roller" ? BearingKind::kRoller : BearingKind::kBall;
+  b.moment_stiffness_Nm_per_arcmin = in.moment_stiffness_Nm_per_arcmin.value_or(0.0);
+  return b;
+}
+
+/// One line of "external_loads": the application's loads on the output bearing.
+struct ExternalLoadInput {
+  double radial_N = 0, axial_N = 0, moment_Nm = 0, time_share = 1.0;
+  std::optional<double> output_speed_rpm;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("radial_N", &radial_N, Field().NonNegative().Unit("N").Desc("F_r"));
+    a->Visit("axial_N", &axial_N, Field().NonNegative().Unit("N").Desc("F_a"));
+    a->Visit("moment_Nm", &moment_Nm,
+             Field().NonNegative().Unit("N·m").Desc("the tilting moment about the bearing's centre"));
+    a->Visit("time_share", &time_share, Field().In(0.0, 1.0).Desc("share of the time (the shares sum to 1)"));
+    a->Visit("output_speed_rpm", &output_speed_rpm,
+             Field().NonNegative().Unit("rpm").Desc(
+                 "output speed on this line (absent: ratings.rated_output_speed_rpm, else the load's input speed "
+                 "over the ratio)"));
+  }
+};
+
+/// The output bearing's numbers under the external loads (docs/ratings.md).
+struct OutputBearingResult {
+  OutputBearingAverages<double> average;
+  double equivalent_load_N = 0, L10h = 0, static_load_N = 0, static_safety = 0;
+  OutputBearingLine<double> largest;      ///< F_rmax, F_amax, M_max of the lines
+  std::optional<double> oscillating_L10h, tilt_arcmin;
+};
+
+/// `loads` with every output speed given (the study fills the absent ones).
+/// @throws std::invalid_argument as model/common/output_bearing.h.
+OutputBearingResult SolveOutputBearing(const OutputBearingInput& in, const std::vector<ExternalLoadInput>& loads);
+
+/// result.json's "output_bearing".
+nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r);
+
+}  // namespace camopt::studies
