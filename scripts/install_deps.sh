@@ -34,6 +34,9 @@ TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
   # report.html: the test that opens it in headless Chromium and checks its screenshot.
   chromium python3-pil
+  # `camopt export --to mujoco`: tests/export_test.cc loads the MJCF model with the real MuJoCo
+  # (2.2.2 in Debian 12) and simulates its static deflection; the program itself does not link it.
+  libmujoco-dev
   # The API reference from the headers' comments (cmake/camopt_docs.cmake).
   doxygen)
 PACKAGES=("${PROGRAM_PACKAGES[@]}")

@@ -4,6 +4,8 @@
 // [--convergence] [--strict] [--progress json]`, `camopt serve [--port P] [--host H [--allow-remote]] [FOLDER]`
 // (the studio, studies/serve.h), `camopt kinds`, `camopt schema KIND` (the JSON Schema of a study kind),
 // `camopt init KIND [--out FILE]` (a complete study to start from, studies/init.h),
+// `camopt export RESULT_DIR --to mujoco|modelica|json [--out DIR] [--name NAME]` (the reducer of a
+// result as a simulator's joint, studies/export.h),
 // `camopt --version`, `camopt sweep SWEEP.json --out DIR [--jobs N] [--dry-run] [--resume]`
 // (studies/sweep.h). A successful run prints a short summary of the headline numbers of
 // result.json on stdout.
@@ -40,6 +42,7 @@
 
 #include "studies/cli.h"
 #include "studies/convergence.h"
+#include "studies/export.h"
 #include "studies/provenance.h"
 #include "studies/report.h"
 #include "studies/archive.h"
@@ -280,13 +283,24 @@ int RunCommandLine(int argc, char** argv) {
       "init", "Write a complete study of a kind to start from, every default spelled out (docs/studies.md)");
   init->add_option("kind", init_kind, "Study kind (see `camopt kinds`)")->required();
   init->add_option("--out,-o", init_out, "Study file to write (default: standard output); never overwritten");
+  camopt::studies::ExportRequest export_request;
+  CLI::App* export_cmd = app.add_subcommand(
+      "export", "Write the reducer of a result as a simulator's joint: MuJoCo MJCF, Modelica or JSON (docs/export.md)");
+  export_cmd->add_option("result", export_request.result,
+                         "Result folder of `camopt run` (a cycloid_ltca or lcr_analysis study), or its result.json")
+      ->required();
+  export_cmd->add_option("--to", export_request.to, "mujoco (MJCF .xml), modelica (.mo package) or json (joint.json)")
+      ->required();
+  export_cmd->add_option("--out,-o", export_request.out, "Output folder (default: RESULT_DIR/export)");
+  export_cmd->add_option("--name", export_request.name,
+                         "Name of the joint in the files (default: the result folder's name)");
   app.set_version_flag("--version", "camopt " + camopt::studies::CamoptVersion());
   app.require_subcommand(0, 1);
 
   // A first word that is no command: say so, and which command was meant.
   if (argc >= 2 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema", "init", "serve"};
+    const std::vector<std::string> commands = {"run", "sweep", "kinds", "schema", "init", "serve", "export"};
     if (std::find(commands.begin(), commands.end(), word) == commands.end()) {
       if (word.size() > 5 && word.compare(word.size() - 5, 5, ".json") == 0) {
         std::cerr << "camopt: error: a command comes before the file: `camopt run " << word
@@ -296,7 +310,7 @@ int RunCommandLine(int argc, char** argv) {
       const std::string near = camopt::studies::NearestName(word, commands);
       std::cerr << "camopt: error: unknown command \"" << word << "\""
                 << (near.empty() ? "" : " (did you mean \"" + near + "\"?)")
-                << "; the commands are run, sweep, init, kinds, schema and serve (camopt --help)\n";
+                << "; the commands are run, sweep, init, kinds, schema, serve and export (camopt --help)\n";
       return 2;
     }
   }
@@ -385,6 +399,24 @@ int RunCommandLine(int argc, char** argv) {
     } catch (const camopt::studies::StudyError& e) {
       std::cerr << "camopt: error: " << e.what() << "\n";
       return 2;
+    }
+  }
+  if (export_cmd->parsed()) {
+    if (export_cmd->count("--out") > 0 && export_request.out.empty()) {
+      std::cerr << "camopt: error: --out: expected a folder name for the export, found nothing\n";
+      return 2;
+    }
+    try {
+      const camopt::studies::ExportAnswer written = camopt::studies::RunExport(export_request);
+      std::cerr << "camopt: wrote " << written.file << "\n";
+      return 0;
+    } catch (const camopt::studies::StudyError& e) {
+      std::cerr << "camopt: error: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "camopt: internal error while exporting " << export_request.result << ": " << e.what()
+                << " (a camopt defect; please report it with the result folder)\n";
+      return 1;
     }
   }
   if (!run->parsed()) {

@@ -230,6 +230,29 @@ void WriteManifest(const std::string& dir, const std::vector<std::string>& entri
   WriteWholeFile((fs::path(dir) / kManifest).string(), manifest);
 }
 
+bool AddToManifest(const std::string& dir, const std::string& entry) {
+  const fs::path list = fs::path(dir) / kManifest;
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(list, ec))) return false;
+  std::ifstream in(list);
+  std::string manifest;
+  for (std::string line; std::getline(in, line);) {
+    if (line == entry) return true;
+    manifest += line + "\n";
+  }
+  const std::string tmp = list.string() + ".camopt-tmp-" + std::to_string(getpid());
+  try {
+    if (in.bad()) OutputFail("cannot read", list.string(), errno);
+    WriteWholeFile(tmp, manifest + entry + "\n");
+    if (rename(tmp.c_str(), list.c_str()) != 0) OutputFail("cannot replace", list.string(), errno);
+  } catch (const StudyError& e) {
+    fs::remove(tmp, ec);
+    // The folder's own list, not an --out the user gave: "DIR: cannot add NAME to its list (…)".
+    throw StudyError(dir + ": cannot add " + entry + " to its " + kManifest + " (" + e.what() + ")");
+  }
+  return true;
+}
+
 void CheckNotInside(const std::string& file, const std::string& out, const std::string& what) {
   std::error_code fe, oe;
   const fs::path f = fs::weakly_canonical(fs::absolute(file), fe);

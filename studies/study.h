@@ -216,6 +216,12 @@ std::string NotReplaceable(const std::filesystem::path& dir);
 /// own list), which makes `dir` replaceable by the next run (NotReplaceable).
 void WriteManifest(const std::string& dir, const std::vector<std::string>& entries);
 
+/// Adds `entry` (a file name, or "NAME/" for a sub-folder with its own list) to the list of what
+/// camopt wrote in `dir`, so that the next run into `dir` may replace it (`camopt export` adds its
+/// folder export/ to the result's list). The list is replaced whole (a temporary file, one
+/// rename). Returns false, writing nothing, when `dir` has no list (not a camopt result).
+bool AddToManifest(const std::string& dir, const std::string& entry);
+
 /// Throws StudyError (exit 2) when `file` (a study, a sweep, its base) lies inside the existing
 /// folder `out` that a run would replace: the run would delete its own input.
 void CheckNotInside(const std::string& file, const std::string& out, const std::string& what);

@@ -89,7 +89,7 @@ TEST(CliMessages, UnknownCommandAndAFileWithoutACommand) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.stderr_text,
             "camopt: error: unknown command \"runn\" (did you mean \"run\"?); the commands are run, sweep, "
-            "init, kinds, schema and serve (camopt --help)\n");
+            "init, kinds, schema, serve and export (camopt --help)\n");
   r = RunCamopt("frobnicate");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.stderr_text.find("did you mean"), std::string::npos) << r.stderr_text;
