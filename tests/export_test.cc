@@ -23,8 +23,10 @@
 namespace {
 
 namespace fs = std::filesystem;
+using camopt::testing::CliResult;
 using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
+using camopt::testing::SourcePath;
 using camopt::testing::TempDir;
 using camopt::testing::WriteFile;
 
@@ -169,22 +171,35 @@ struct Rest {
 // solver's tolerance by the mean inertia, and at 1e9 the solver stops early and the limit chatters.
 // The only other change is a damping on the elastic joint (the export has none), critical for the
 // output on the spring, so that the model comes to rest; the static answer does not depend on it.
-Rest SimulateToRest(double torque, double flywheel, double seconds = 0.3) {
+// The joint a model is exported from: the fixture's, or a run's (ExportMujoco.ARunOfTheCatalogue…).
+struct Joint {
+  std::string xml, name = "drive_350";
+  double stiffness = kK, ratio = kRatio, inertia = kInertia;
+};
+
+Rest SimulateToRest(double torque, double flywheel, double seconds = 0.3, const Joint* joint = nullptr) {
+  Joint fixture;
+  if (!joint) {
+    fixture.xml = camopt::studies::ExportMujocoXml(Source(), "drive_350");
+    joint = &fixture;
+  }
+  const std::string& name = joint->name;
+  const double stiffness = joint->stiffness, ratio = joint->ratio, inertia = joint->inertia;
   Mj mj;
-  Load(mj, camopt::studies::ExportMujocoXml(Source(), "drive_350"), "rest");
+  Load(mj, joint->xml, "rest");
   mjModel* m = mj.m;
   mjData* d = mj.d;
   if (!m) return {};
-  const int motor_dof = m->jnt_dofadr[Id(m, mjOBJ_JOINT, "drive_350_motor_side")];
-  const int play = Id(m, mjOBJ_JOINT, "drive_350_backlash");
-  const int spring_dof = m->jnt_dofadr[Id(m, mjOBJ_JOINT, "drive_350_elastic")];
-  const int motor_body = Id(m, mjOBJ_BODY, "drive_350_motor_side"), out = Id(m, mjOBJ_BODY, "drive_350_output");
+  const int motor_dof = m->jnt_dofadr[Id(m, mjOBJ_JOINT, name + "_motor_side")];
+  const int play = Id(m, mjOBJ_JOINT, name + "_backlash");
+  const int spring_dof = m->jnt_dofadr[Id(m, mjOBJ_JOINT, name + "_elastic")];
+  const int motor_body = Id(m, mjOBJ_BODY, name + "_motor_side"), out = Id(m, mjOBJ_BODY, name + "_output");
   m->dof_armature[motor_dof] *= flywheel;
-  const double i_out = 0.1 * kInertia;  // the export's stand-in inertia of the output body
-  m->dof_damping[spring_dof] = 2 * std::sqrt(kK * i_out);
+  const double i_out = 0.1 * inertia;  // the export's stand-in inertia of the output body
+  m->dof_damping[spring_dof] = 2 * std::sqrt(stiffness * i_out);
   mj_setConst(m, d);  // invweight0 with the flywheel
   d->xfrc_applied[6 * out + 5] = torque;  // a torque about z on the output body, world frame
-  d->ctrl[0] = -torque / kRatio;
+  d->ctrl[0] = -torque / ratio;
   const int steps = static_cast<int>(seconds / m->opt.timestep);
   Rest r;
   for (int s = 0; s < steps; ++s) {
@@ -255,6 +270,53 @@ TEST(ExportMujoco, TinyTorquesCrossTheDeadBandFreely) {
   EXPECT_NEAR(band, kBacklash, up.limit_yield + down.limit_yield + 1e-12);
   EXPECT_NEAR(up.rotation, kBacklash / 2 + tiny / kK, up.limit_yield + 1e-12);
   EXPECT_NEAR(down.rotation, -kBacklash / 2 - tiny / kK, down.limit_yield + 1e-12);
+}
+
+// A joint exported from a real run, not a fixture: the catalogue example (coarse) run by the CLI
+// and exported by the CLI; MuJoCo loads it with the run's stiffness, dead band and inertia, and a
+// step of the rated torque turns the output by backlash/2 + T/K (K the catalogue slope the joint
+// takes) within the limit's predicted yield.
+TEST(ExportMujoco, ARunOfTheCatalogueExampleLoadsAndDeflectsAsItsResultSays) {
+  nlohmann::json study = nlohmann::json::parse(ReadFile(SourcePath("studies/examples/cycloid_catalogue.json")));
+  study["analysis"]["grid"] = {16, 16};
+  study["analysis"]["crank_angles_per_mesh_period"] = 4;
+  study["analysis"]["estimate_error"] = false;
+  study["geometry_files"] = false;
+  study.erase("ratings");
+  study.erase("output_bearing");
+  study.erase("external_loads");
+  const fs::path dir = TempDir("export-real-run");
+  WriteFile(dir / "study.json", study.dump());
+  const CliResult run = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const CliResult exported = RunCamopt("export " + (dir / "out").string() + " --to mujoco --name drive");
+  ASSERT_EQ(exported.exit_code, 0) << exported.stderr_text;
+  const nlohmann::json r = nlohmann::json::parse(ReadFile(dir / "out" / "result.json"));
+  const nlohmann::json& j = r["joint_model"];
+  Joint joint;
+  joint.name = "drive";
+  joint.xml = ReadFile(dir / "out" / "export" / "drive.xml");
+  joint.stiffness = j["stiffness_Nm_per_rad"].get<double>();
+  joint.ratio = j["ratio"].get<double>();
+  joint.inertia = j["reflected_inertia_kgm2"].get<double>();
+  const double backlash = j["backlash_rad"].get<double>();
+  // The numbers the run's report gives, in the joint's units.
+  const double arcmin = 60.0 * 180.0 / M_PI;
+  EXPECT_NEAR(joint.stiffness, r["torsional_stiffness_Nm_per_arcmin"].get<double>() * arcmin, 1e-9 * joint.stiffness);
+  EXPECT_NEAR(backlash * arcmin, r["backlash_arcmin"].get<double>(), 1e-12);
+  Mj mj;
+  Load(mj, joint.xml, "real");
+  ASSERT_NE(mj.m, nullptr);
+  const int play = Id(mj.m, mjOBJ_JOINT, "drive_backlash"), spring = Id(mj.m, mjOBJ_JOINT, "drive_elastic");
+  EXPECT_DOUBLE_EQ(mj.m->jnt_stiffness[spring], joint.stiffness);
+  EXPECT_DOUBLE_EQ(mj.m->jnt_range[2 * play + 1] - mj.m->jnt_range[2 * play], backlash);
+  const double t = 350.0;
+  const Rest rest = SimulateToRest(t, 1e6, 0.3, &joint);
+  const double expected = backlash / 2 + t / joint.stiffness;
+  std::printf("[ export   ] cycloid_catalogue run: T = %.0f N m, rotation %.10e rad, b/2 + T/K %.10e rad, yield %.2e\n",
+              t, rest.rotation, expected, rest.limit_yield);
+  EXPECT_LT(rest.max_speed, 1e-9);
+  EXPECT_NEAR(rest.rotation, expected, rest.limit_yield + 1e-12);
 }
 
 TEST(ExportMujoco, NoBacklashNoDeadBandJoint) {
