@@ -315,7 +315,13 @@ nlohmann::ordered_json Input::SchemaRules() {
               "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
     {"if": {"required": ["lubricant"]},
      "then": {"required": ["output_mechanism"],
-              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}}
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
+    {"if": {"required": ["ratings"]},
+     "then": {"required": ["material", "load", "crank_bearing", "output_mechanism"],
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}},
+                             "discs": {"maximum": 1}}}},
+    {"if": {"required": ["external_loads"]}, "then": {"required": ["output_bearing"]}},
+    {"if": {"required": ["output_bearing"]}, "then": {"required": ["external_loads"]}}
   ]})");
   AddLubricationSchemaRules(rules);
   // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
