@@ -17,6 +17,8 @@ Exit 77 (ctest SKIP_RETURN_CODE) only when no Chromium is installed; scripts/ins
 installs Debian's chromium, so CI runs it. With SCREENSHOT_DIR, the screenshots are copied there
 (docs/images/ is made that way).
 """
+import html as html_lib
+import json
 import os
 import re
 import shutil
@@ -33,7 +35,14 @@ EXAMPLES = [  # (example, screenshot name); "sweep:" a sweep written by sweep_fi
     ("rigidity_gearbox", "report_rigidity.png"),
     ("disc_cam_min_size", "report_disc_cam_min_size.png"),
     ("disc_cam_translating", "report_disc_cam.png"),
+    ("cycloid_catalogue", "report_cycloid_catalogue.png"),
 ]
+
+# Other pages of a run rendered the same way (page, screenshot name): the datasheet, whose every
+# number is also read back from the rendered DOM against result.json (datasheet_checks).
+PAGES = {
+    "cycloid_catalogue": [("datasheet.html", "datasheet_cycloid.png")],
+}
 
 # What a kind's report is for, drawn (file of the run, text it must hold): the rigidity chain with
 # each element's share and the advice, the backlash against its limit; the sized cam (the sized
@@ -122,6 +131,41 @@ def render(chromium, html_path, png_path, profile_dir):
     return p.returncode, p.stdout + p.stderr
 
 
+def dump_dom(chromium, html_path, profile_dir):
+    cmd = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-extensions",
+           "--user-data-dir=" + profile_dir, "--dump-dom", "file://" + html_path]
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
+    return p.stdout
+
+
+def datasheet_checks(dom, result):
+    """Every cell with a data-source shows result.json's value at that pointer: a number to 6
+    significant digits (with its unit after it), a text as it is."""
+    errors, numbers = [], 0
+    for m in re.finditer(r'data-source="([^"]+)">([^<]*)<', dom):
+        pointer, shown = m.group(1), html_lib.unescape(m.group(2))
+        value = result
+        for part in pointer.strip("/").split("/"):
+            if isinstance(value, list):
+                value = value[int(part)] if part.isdigit() and int(part) < len(value) else None
+            elif isinstance(value, dict):
+                value = value.get(part)
+            else:
+                value = None
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            numbers += 1
+            read = float(shown.split(" ")[0])
+            if abs(read - value) > 5e-6 * abs(value) + 1e-12:
+                errors.append("%s shows %r, result.json has %r" % (pointer, shown, value))
+        elif isinstance(value, str):
+            if shown != value:
+                errors.append("%s shows %r, result.json has %r" % (pointer, shown, value))
+    if numbers < 20:
+        errors.append("only %d numbers on the datasheet" % numbers)
+    print("  datasheet: %d numbers checked against result.json" % numbers)
+    return errors
+
+
 def pixel_checks(png_path):
     from PIL import Image  # Debian python3-pil
     im = Image.open(png_path).convert("RGB")
@@ -197,6 +241,25 @@ def main():
             if shots:
                 os.makedirs(shots, exist_ok=True)
                 shutil.copyfile(png, os.path.join(shots, shot))
+        for page, page_shot in PAGES.get(example, []):
+            page_path = os.path.join(out, page)
+            if not os.path.exists(page_path):
+                errors.append("no %s in the run" % page)
+                continue
+            with open(os.path.join(out, "result.json"), encoding="utf-8") as f:
+                result = json.load(f)
+            shutil.rmtree(profile, ignore_errors=True)
+            errors += datasheet_checks(dump_dom(chromium, page_path, profile), result)
+            page_png = os.path.join(work, page_shot)
+            shutil.rmtree(profile, ignore_errors=True)
+            code, log = render(chromium, page_path, page_png, profile)
+            errors += ["%s console: %s" % (page, line) for line in log.splitlines() if ":CONSOLE" in line]
+            if not os.path.exists(page_png):
+                errors.append("chromium (exit %d) wrote no screenshot of %s" % (code, page))
+            else:
+                errors += pixel_checks(page_png)
+                if shots:
+                    shutil.copyfile(page_png, os.path.join(shots, page_shot))
         failures += ["%s: %s" % (example, e) for e in errors]
     for f in failures:
         print("FAILED: " + f)
