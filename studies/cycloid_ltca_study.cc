@@ -748,11 +748,43 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
     const LoadedTca tca(s.drive, s.crowning, s.material, options);
     Progress progress("cycloid_ltca ratings", ctx.quiet);
     int step = 0;
+    const double ratio = double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
+    auto solve = [&](const LoadedTca& t, const std::vector<double>& angles, const std::string& what) {
+      return cycloid_common::SolveRatings(
+          s.ratings->in, s.ratings->limits, s.ratings->life, t, angles, ratio, std::max(s.torque_Nm, 1.0),
+          [&](const std::string& detail) { progress.Update(std::min(0.95, 0.01 * ++step), what + detail); });
+    };
     try {
-      r.ratings = cycloid_common::SolveRatings(
-          s.ratings->in, s.ratings->limits, s.ratings->life, tca, s.crank_angles_rad,
-          double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), std::max(s.torque_Nm, 1.0),
-          [&](const std::string& detail) { progress.Update(std::min(0.95, 0.03 * ++step), detail); });
+      r.ratings = solve(tca, s.crank_angles_rad, "");
+      if (s.estimate_error) {
+        // The ratings' discretisation error as the headlines' (RefineAndEstimateErrors): the
+        // ratings again on half the cells each way, and on every other crank angle (still whole
+        // mesh periods when the angles per period are even), the two differences summed.
+        LoadedOptions coarse = options;
+        coarse.profile_cells = std::max(4, options.profile_cells / 2);
+        coarse.axial_cells = std::max(4, options.axial_cells / 2);
+        const LoadedTca coarse_tca(s.drive, s.crowning, s.material, coarse);
+        const cycloid_common::RatingsResult g = solve(coarse_tca, s.crank_angles_rad, "coarse grid: ");
+        std::optional<cycloid_common::RatingsResult> h;
+        std::vector<double> half;
+        for (size_t k = 0; k < s.crank_angles_rad.size(); k += 2) half.push_back(s.crank_angles_rad[k]);
+        if (s.crank_angles_rad.size() % 2 == 0 && half.size() >= 2 &&
+            cycloid::UniformWholeMeshPeriods(half, s.drive.rollers))
+          h = solve(tca, half, "half the crank angles: ");
+        auto error = [&](double fine, double grid, std::optional<double> crank) {
+          return std::abs(fine - grid) + (crank ? std::abs(fine - *crank) : 0.0);
+        };
+        cycloid_common::RatingsResult& f = *r.ratings;
+        f.rated_error_Nm = error(f.rated_torque_Nm, g.rated_torque_Nm,
+                                 h ? std::optional<double>(h->rated_torque_Nm) : std::nullopt);
+        if (f.peak_torque_Nm && g.peak_torque_Nm)
+          f.peak_error_Nm = error(*f.peak_torque_Nm, *g.peak_torque_Nm, h ? h->peak_torque_Nm : std::nullopt);
+        if (f.momentary_torque_Nm && g.momentary_torque_Nm)
+          f.momentary_error_Nm =
+              error(*f.momentary_torque_Nm, *g.momentary_torque_Nm, h ? h->momentary_torque_Nm : std::nullopt);
+        f.error_crank_estimated = h.has_value();
+        f.ltca_cycles += g.ltca_cycles + (h ? h->ltca_cycles : 0);
+      }
     } catch (const std::invalid_argument& e) {
       r.ratings_failed = e.what();
       r.warnings.push_back(std::string("ratings not solved: ") + e.what());
@@ -1091,6 +1123,18 @@ void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
                            "not computed: the thermal operating point over speed is not solved for a rating (the "
                            "lubricated losses at the load's speed are in lubrication)"},
                           {"ltca_cycles", g.ltca_cycles},
+                          {"estimated_error",
+                           s.estimate_error
+                               ? nlohmann::json{{"rated_torque_Nm", optional(g.rated_error_Nm, "error")},
+                                                {"peak_torque_Nm", optional(g.peak_error_Nm, "error")},
+                                                {"momentary_torque_Nm", optional(g.momentary_error_Nm, "error")},
+                                                {"method", g.error_crank_estimated
+                                                               ? "|fine - half the cells each way| + |fine - every "
+                                                                 "other crank angle|, each rating solved again"
+                                                               : "|fine - half the cells each way| (the crank "
+                                                                 "angles' part not estimated: an odd number per "
+                                                                 "period)"}}
+                               : nlohmann::json(nullptr)},
                           {"definitions",
                            "rated torque: the output torque at which the shortest bearing L10 at the rated output "
                            "speed equals the rated life (one LTCA cycle per trial torque, solved, not scaled); peak "
@@ -1603,9 +1647,11 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
     {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
     {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
     {"ring pin life L10h", "/life/pins_L10h", "h"},
-    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m"},
-    {"peak torque (contact limits)", "/peak_torque_Nm", "N m"},
-    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m"},
+    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m", "", NAN, true,
+     "/ratings/estimated_error/rated_torque_Nm"},
+    {"peak torque (contact limits)", "/peak_torque_Nm", "N m", "", NAN, true, "/ratings/estimated_error/peak_torque_Nm"},
+    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m", "", NAN, true,
+     "/ratings/estimated_error/momentary_torque_Nm"},
     {"output bearing life L10h", "/output_bearing/L10h", "h"},
     {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
     {"converged", "/converged", ""},
@@ -1618,12 +1664,15 @@ const bool kDatasheet = RegisterDatasheet(
      {{"Ratings",
        {{"reduction ratio", "/gear_ratio_nominal", ""},
         {"rated torque", "/rated_torque_Nm", "N·m", 1.0, "/ratings/error"},
+        {"rated torque, estimated discretisation error", "/ratings/estimated_error/rated_torque_Nm", "N·m"},
         {"rated output speed", "/ratings/rated_output_speed_rpm", "rpm"},
         {"rated life L10", "/ratings/rated_life_h", "h"},
         {"rated torque limited by", "/ratings/rated_by", ""},
         {"peak (acceleration) torque", "/peak_torque_Nm", "N·m", 1.0, "/ratings/peak_limited_by"},
+        {"peak torque, estimated discretisation error", "/ratings/estimated_error/peak_torque_Nm", "N·m"},
         {"peak torque limited by", "/ratings/peak_limited_by", ""},
         {"momentary (emergency-stop) torque", "/momentary_torque_Nm", "N·m", 1.0, "/ratings/momentary_limited_by"},
+        {"momentary torque, estimated discretisation error", "/ratings/estimated_error/momentary_torque_Nm", "N·m"},
         {"momentary torque limited by", "/ratings/momentary_limited_by", ""},
         {"momentary peaks allowed", "/ratings/momentary_peaks_allowed", ""},
         {"allowable output speed", "/ratings/allowable_output_speed_rpm", "rpm", 1.0, "/ratings/allowable_output_speed"}}},

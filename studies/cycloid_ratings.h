@@ -41,6 +41,9 @@ struct RatingsResult {
   std::string momentary_by, momentary_note;
   std::optional<double> momentary_peaks_allowed;
   int ltca_cycles = 0;
+  /// Discretisation errors of the three torques (set by the study when it estimates errors).
+  std::optional<double> rated_error_Nm, peak_error_Nm, momentary_error_Nm;
+  bool error_crank_estimated = false;
 };
 
 /// Solves the ratings of a one-disc drive: `life` the study's ratings of the crank bearing (and

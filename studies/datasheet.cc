@@ -48,7 +48,7 @@ std::string DatasheetHtml(const DatasheetSpec& spec, const nlohmann::json& resul
     std::string rows;
     for (const DatasheetRow& row : section.rows) {
       const nlohmann::json* v = At(result, row.pointer);
-      std::string value, cls = "n";
+      std::string value, cls = "n", source = row.pointer;
       if (v && v->is_number()) {
         value = ReportNumber(v->get<double>() * row.scale) + (row.unit.empty() ? "" : " " + row.unit);
       } else if (v && v->is_string()) {
@@ -58,11 +58,12 @@ std::string DatasheetHtml(const DatasheetSpec& spec, const nlohmann::json& resul
         const nlohmann::json* why = At(result, row.why_pointer);
         if (!v && !why) continue;  // neither asked nor explained: the study did not give the block
         value = why && why->is_string() ? why->get<std::string>() : "not computed";
+        if (why && why->is_string()) source = row.why_pointer;  // the text shown is the why's
         cls = "why";
       }
       rows += "<tr><td>" + HtmlEscape(row.label) + "</td><td class=\"" + cls + "\" data-source=\"" +
-              HtmlEscape(row.pointer) + "\">" + HtmlEscape(value) + "</td><td class=\"src\">" +
-              HtmlEscape(row.pointer) + "</td></tr>\n";
+              HtmlEscape(source) + "\">" + HtmlEscape(value) + "</td><td class=\"src\">" + HtmlEscape(source) +
+              "</td></tr>\n";
     }
     if (rows.empty()) continue;
     h += "<h2>" + HtmlEscape(section.title) + "</h2>\n<table class=\"sheet\"><tr><th>item</th><th>value</th>"

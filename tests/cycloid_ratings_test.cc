@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <regex>
 
 #include <nlohmann/json.hpp>
@@ -88,6 +89,29 @@ TEST(CycloidRatings, EachRatingHoldsWhenTheKindIsRunAtThatTorque) {
   // Ordering a designer expects: rated < peak and rated < momentary.
   EXPECT_LT(rated, peak);
   EXPECT_LT(rated, momentary);
+}
+
+TEST(CycloidRatings, EstimatedErrorsBoundTheRatingsOfAFinerModel) {
+  // Coarse (16 × 16 cells, 8 angles per mesh period) with its error estimate against a finer model
+  // (32 × 32, 16 angles): each coarse rating is within its estimated error (plus the finer one's) of
+  // the finer rating, and the finer model's estimate is the smaller.
+  nlohmann::json coarse = Quick();
+  coarse["analysis"]["estimate_error"] = true;
+  nlohmann::json fine = coarse;
+  fine["analysis"]["grid"] = {32, 32};
+  fine["analysis"]["crank_angles_per_mesh_period"] = 16;
+  const CliRun c = RunStudy(coarse, "error-coarse"), f = RunStudy(fine, "error-fine");
+  ASSERT_EQ(c.exit_code, 0) << c.stderr_text;
+  ASSERT_EQ(f.exit_code, 0) << f.stderr_text;
+  for (const char* key : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"}) {
+    const double tc = c.result[key].get<double>(), tf = f.result[key].get<double>();
+    const double ec = c.result["ratings"]["estimated_error"][key].get<double>();
+    const double ef = f.result["ratings"]["estimated_error"][key].get<double>();
+    std::printf("[ ratings  ] %s: coarse %.3f ± %.3f, fine %.3f ± %.3f N m\n", key, tc, ec, tf, ef);
+    EXPECT_LE(std::abs(tc - tf), ec + ef) << key;
+    EXPECT_LT(ef, ec) << key;
+    EXPECT_GT(ec, 0.0) << key;
+  }
 }
 
 TEST(CycloidRatings, ThreeSegmentsAreTheSlopesOfTheRunsOwnCurve) {
