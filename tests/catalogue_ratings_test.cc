@@ -12,6 +12,7 @@
 
 #include "model/common/catalogue_ratings.h"
 #include "model/common/scalar.h"
+#include "tests/test_util.h"
 
 namespace camopt {
 namespace {
@@ -21,19 +22,8 @@ constexpr double kExactRelTol = 1e-12;
 /// The rated-torque round trip: the solver stops at a bracket of 1e-12·T.
 constexpr double kRoundTripRelTol = 1e-9;
 
-void ExpectRel(double actual, double expected, double rel) {
-  EXPECT_NEAR(actual, expected, rel * std::abs(expected)) << "expected " << expected;
-}
-
-template <typename F>
-void ExpectRejects(const F& f, const std::string& quantity) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected one naming " << quantity;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(quantity), std::string::npos) << "message: " << e.what();
-  }
-}
+using camopt::testing::ExpectRejects;
+using camopt::testing::ExpectRel;
 
 // ---- The three-segment characteristic ------------------------------------------------------------
 

@@ -17,6 +17,7 @@
 
 #include "model/common/catalogue_ratings.h"
 #include "model/common/output_bearing.h"
+#include "tests/test_util.h"
 
 namespace camopt {
 namespace {
@@ -27,20 +28,8 @@ constexpr double kHandCalcRelTol = 1e-9;
 /// Two evaluations of the same closed form in double.
 constexpr double kClosedFormRelTol = 1e-12;
 
-void ExpectRel(double actual, double expected, double rel) {
-  EXPECT_NEAR(actual, expected, rel * std::abs(expected)) << "expected " << expected;
-}
-
-/// Runs f and checks it throws std::invalid_argument whose message contains `quantity`.
-template <typename F>
-void ExpectRejects(const F& f, const std::string& quantity) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected one naming " << quantity;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(quantity), std::string::npos) << "message: " << e.what();
-  }
-}
+using camopt::testing::ExpectRejects;
+using camopt::testing::ExpectRel;
 
 /// Harmonic Drive LLC, SHA series manual, table 1 "Specifications of the cross roller bearings",
 /// SHA32A-SG: d_p = 111 mm, offset R = 34.9 mm, C = 38.2 kN, C_0 = 65.4 kN, moment stiffness

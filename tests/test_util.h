@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -322,6 +323,22 @@ inline nlohmann::json WithoutRunStamp(nlohmann::json result) {
   if (result.contains("warnings") && result["warnings"].is_array() && result["warnings"].empty())
     result.erase("warnings");
   return result;
+}
+
+/// |actual − expected| <= rel·|expected|.
+inline void ExpectRel(double actual, double expected, double rel) {
+  EXPECT_NEAR(actual, expected, rel * std::abs(expected)) << "expected " << expected;
+}
+
+/// Runs f and checks it throws std::invalid_argument whose message contains `quantity`.
+template <typename F>
+void ExpectRejects(const F& f, const std::string& quantity) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception; expected one naming " << quantity;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(quantity), std::string::npos) << "message: " << e.what();
+  }
 }
 
 /// A study from studies/examples/, parsed.
