@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "model/cycloid/geometry_limits.h"
@@ -142,16 +143,8 @@ namespace {
 // "stiffness.segments_Nm", "ratings", "output_bearing" and "external_loads" (docs/ratings.md).
 void ParseCatalogue(const Node& root, const Input& in, Study& s) {
   if (in.stiffness) {
-    const double tr = in.stiffness->rated_torque_Nm;
-    s.segment_T1_Nm = 0.25 * tr, s.segment_T2_Nm = 0.75 * tr;
+    std::tie(s.segment_T1_Nm, s.segment_T2_Nm) = SegmentTorques(root["stiffness"], *in.stiffness);
     s.lost_motion_percent = in.stiffness->lost_motion_percent;
-    if (in.stiffness->segments_Nm) {
-      const std::vector<double>& t = *in.stiffness->segments_Nm;
-      const Node n = root["stiffness"]["segments_Nm"];
-      if (t.size() != 2 || !(t[0] > 0 && t[0] < t[1] && t[1] < tr))
-        n.Fail("[T1, T2] with 0 < T1 < T2 < rated_torque_Nm = " + Format(tr, 6));
-      s.segment_T1_Nm = t[0], s.segment_T2_Nm = t[1];
-    }
   }
   if (in.ratings) {
     const Node n = root["ratings"];
@@ -171,32 +164,16 @@ void ParseCatalogue(const Node& root, const Input& in, Study& s) {
       r.life.contamination_factor = root["lubricant"]["contamination_factor"].Number();
     if (in.limits) {
       r.limits.contact_stress_MPa = in.limits->contact_stress_MPa;
-      r.limits.pair_load_N = in.limits->roller_load_N;
+      r.limits.roller_load_N = in.limits->roller_load_N;
     }
     s.ratings = r;
   }
-  if (in.external_loads && !in.output_bearing)
-    root["external_loads"].FailWith("external_loads need an output_bearing to act on");
-  if (in.output_bearing) {
-    if (!in.external_loads) (void)root["external_loads"];  // "missing required field"
-    s.output_bearing = in.output_bearing;
-    double shares = 0;
-    for (size_t k = 0; k < in.external_loads->size(); ++k) {
-      ExternalLoadInput line = (*in.external_loads)[k];
-      shares += line.time_share;
-      if (!line.output_speed_rpm) {
-        if (in.ratings) line.output_speed_rpm = in.ratings->rated_output_speed_rpm;
-        else if (in.load && in.load->input_speed_rpm)
-          line.output_speed_rpm = *in.load->input_speed_rpm * double(s.drive.rollers - s.drive.teeth) / s.drive.teeth;
-        else
-          root["external_loads"][k].FailWith(
-              "output_speed_rpm (no ratings.rated_output_speed_rpm or load.input_speed_rpm to take it from)");
-      }
-      s.external_loads.push_back(line);
-    }
-    if (std::abs(shares - 1.0) > 1e-6)
-      root["external_loads"].Fail("time shares that sum to 1 within 1e-6 (they sum to " + Format(shares, 9) + ")");
-  }
+  std::optional<double> speed;
+  if (in.ratings) speed = in.ratings->rated_output_speed_rpm;
+  else if (in.load && in.load->input_speed_rpm)
+    speed = *in.load->input_speed_rpm * double(s.drive.rollers - s.drive.teeth) / s.drive.teeth;
+  s.output_bearing = in.output_bearing;
+  s.external_loads = ParseExternalLoads(root, in.output_bearing.has_value(), in.external_loads, speed);
 }
 
 }  // namespace
@@ -750,9 +727,13 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
     int step = 0;
     const double ratio = double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
     auto solve = [&](const LoadedTca& t, const std::vector<double>& angles, const std::string& what) {
-      return cycloid_common::SolveRatings(
-          s.ratings->in, s.ratings->limits, s.ratings->life, t, angles, ratio, std::max(s.torque_Nm, 1.0),
-          [&](const std::string& detail) { progress.Update(std::min(0.95, 0.01 * ++step), what + detail); });
+      return SolveRatings(
+          s.ratings->in, s.ratings->limits,
+          [&](double torque_Nm) {
+            progress.Update(std::min(0.95, 0.01 * ++step), what + std::to_string(step) + " LTCA cycles");
+            return cycloid_common::CycloidRatingPoint(s.ratings->in, s.ratings->life, t, angles, ratio, torque_Nm);
+          },
+          ratio, std::max(s.torque_Nm, 1.0));
     };
     try {
       r.ratings = solve(tca, s.crank_angles_rad, "");
@@ -764,8 +745,8 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
         coarse.profile_cells = std::max(4, options.profile_cells / 2);
         coarse.axial_cells = std::max(4, options.axial_cells / 2);
         const LoadedTca coarse_tca(s.drive, s.crowning, s.material, coarse);
-        const cycloid_common::RatingsResult g = solve(coarse_tca, s.crank_angles_rad, "coarse grid: ");
-        std::optional<cycloid_common::RatingsResult> h;
+        const RatingsResult g = solve(coarse_tca, s.crank_angles_rad, "coarse grid: ");
+        std::optional<RatingsResult> h;
         std::vector<double> half;
         for (size_t k = 0; k < s.crank_angles_rad.size(); k += 2) half.push_back(s.crank_angles_rad[k]);
         if (s.crank_angles_rad.size() % 2 == 0 && half.size() >= 2 &&
@@ -774,7 +755,7 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
         auto error = [&](double fine, double grid, std::optional<double> crank) {
           return std::abs(fine - grid) + (crank ? std::abs(fine - *crank) : 0.0);
         };
-        cycloid_common::RatingsResult& f = *r.ratings;
+        RatingsResult& f = *r.ratings;
         f.rated_error_Nm = error(f.rated_torque_Nm, g.rated_torque_Nm,
                                  h ? std::optional<double>(h->rated_torque_Nm) : std::nullopt);
         if (f.peak_torque_Nm && g.peak_torque_Nm)
@@ -783,7 +764,7 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
           f.momentary_error_Nm =
               error(*f.momentary_torque_Nm, *g.momentary_torque_Nm, h ? h->momentary_torque_Nm : std::nullopt);
         f.error_crank_estimated = h.has_value();
-        f.ltca_cycles += g.ltca_cycles + (h ? h->ltca_cycles : 0);
+        f.evaluations += g.evaluations + (h ? h->evaluations : 0);
       }
     } catch (const std::invalid_argument& e) {
       r.ratings_failed = e.what();
@@ -1097,61 +1078,9 @@ namespace {
 // momentary_torque_Nm and "ratings"; "output_bearing"; "stiffness_segments"; "masses"; and
 // "joint_model", the parameters `camopt export` turns into a simulator's joint.
 void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
-  auto optional = [](const std::optional<double>& x, const char* what) {
-    return x ? nlohmann::json(Finite(*x, what)) : nlohmann::json(nullptr);
-  };
-  if (s.ratings) {
-    const RatingsInput& in = s.ratings->in;
-    if (r.ratings) {
-      const cycloid_common::RatingsResult& g = *r.ratings;
-      j["rated_torque_Nm"] = Finite(g.rated_torque_Nm, "rated torque");
-      j["peak_torque_Nm"] = optional(g.peak_torque_Nm, "peak torque");
-      j["momentary_torque_Nm"] = optional(g.momentary_torque_Nm, "momentary torque");
-      nlohmann::json d = {{"rated_life_h", in.rated_life_h},
-                          {"rated_output_speed_rpm", in.rated_output_speed_rpm},
-                          {"rated_input_speed_rpm", in.rated_output_speed_rpm * s.drive.teeth /
-                                                        double(s.drive.rollers - s.drive.teeth)},
-                          {"rated_by", g.rated_by},
-                          {"L10h_at_rated_torque", Finite(g.rated_L10h, "rated life")},
-                          {"peak_limited_by", g.peak_torque_Nm ? nlohmann::json(g.peak_by) : nlohmann::json(g.peak_note)},
-                          {"momentary_static_safety", in.momentary_static_safety},
-                          {"momentary_limited_by", g.momentary_torque_Nm ? nlohmann::json(g.momentary_by)
-                                                                         : nlohmann::json(g.momentary_note)},
-                          {"momentary_peaks_allowed", optional(g.momentary_peaks_allowed, "momentary peaks")},
-                          {"allowable_output_speed_rpm", nullptr},
-                          {"allowable_output_speed",
-                           "not computed: the thermal operating point over speed is not solved for a rating (the "
-                           "lubricated losses at the load's speed are in lubrication)"},
-                          {"ltca_cycles", g.ltca_cycles},
-                          {"estimated_error",
-                           s.estimate_error
-                               ? nlohmann::json{{"rated_torque_Nm", optional(g.rated_error_Nm, "error")},
-                                                {"peak_torque_Nm", optional(g.peak_error_Nm, "error")},
-                                                {"momentary_torque_Nm", optional(g.momentary_error_Nm, "error")},
-                                                {"method", g.error_crank_estimated
-                                                               ? "|fine - half the cells each way| + |fine - every "
-                                                                 "other crank angle|, each rating solved again"
-                                                               : "|fine - half the cells each way| (the crank "
-                                                                 "angles' part not estimated: an odd number per "
-                                                                 "period)"}}
-                               : nlohmann::json(nullptr)},
-                          {"definitions",
-                           "rated torque: the output torque at which the shortest bearing L10 at the rated output "
-                           "speed equals the rated life (one LTCA cycle per trial torque, solved, not scaled); peak "
-                           "torque: the largest torque within limits.contact_stress_MPa and limits.roller_load_N; "
-                           "momentary torque: the largest torque at which every rated bearing keeps s0 = C0/P0max >= "
-                           "momentary_static_safety; momentary peaks allowed: 1e4 / (2 (n R / 60) t), n the output speed at the peak, R the "
-                           "ratio, t its duration: the strain-wave catalogues' count of input revolutions under "
-                           "peak torque, applied to the crank (docs/ratings.md)"}};
-      if (in.momentary_peaks)
-        d["momentary_peak"] = {{"output_speed_rpm", in.momentary_peaks->output_speed_rpm},
-                               {"duration_s", in.momentary_peaks->duration_s}};
-      j["ratings"] = d;
-    } else {
-      for (const char* key : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"}) j[key] = nullptr;
-      j["ratings"] = {{"error", r.ratings_failed}};
-    }
-  }
+  if (s.ratings)
+    AddRatingsJson(s.ratings->in, r.ratings, r.ratings_failed,
+                   double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), s.estimate_error, j);
   if (r.output_bearing) j["output_bearing"] = OutputBearingJson(*s.output_bearing, *r.output_bearing);
   else if (s.output_bearing) j["output_bearing"] = {{"error", r.output_bearing_failed}};
   const double arcmin = kArcminPerRad;
@@ -1658,24 +1587,11 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
 })));
 
 // datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
-const bool kDatasheet = RegisterDatasheet(
-    "cycloid_ltca",
-    {"/masses",
-     {{"Ratings",
-       {{"reduction ratio", "/gear_ratio_nominal", ""},
-        {"rated torque", "/rated_torque_Nm", "N·m", 1.0, "/ratings/error"},
-        {"rated torque, estimated discretisation error", "/ratings/estimated_error/rated_torque_Nm", "N·m"},
-        {"rated output speed", "/ratings/rated_output_speed_rpm", "rpm"},
-        {"rated life L10", "/ratings/rated_life_h", "h"},
-        {"rated torque limited by", "/ratings/rated_by", ""},
-        {"peak (acceleration) torque", "/peak_torque_Nm", "N·m", 1.0, "/ratings/peak_limited_by"},
-        {"peak torque, estimated discretisation error", "/ratings/estimated_error/peak_torque_Nm", "N·m"},
-        {"peak torque limited by", "/ratings/peak_limited_by", ""},
-        {"momentary (emergency-stop) torque", "/momentary_torque_Nm", "N·m", 1.0, "/ratings/momentary_limited_by"},
-        {"momentary torque, estimated discretisation error", "/ratings/estimated_error/momentary_torque_Nm", "N·m"},
-        {"momentary torque limited by", "/ratings/momentary_limited_by", ""},
-        {"momentary peaks allowed", "/ratings/momentary_peaks_allowed", ""},
-        {"allowable output speed", "/ratings/allowable_output_speed_rpm", "rpm", 1.0, "/ratings/allowable_output_speed"}}},
+DatasheetSpec CycloidDatasheet() {
+  const std::vector<DatasheetSection> ratings = RatingsDatasheetSections();  // ratings, output bearing
+  DatasheetSpec d{"/masses",
+     {{"Reducer", {{"reduction ratio", "/gear_ratio_nominal", ""}}},
+      ratings[0],
       {"Torsional stiffness and lost motion (input held)",
        {{"T1", "/stiffness_segments/T1_Nm", "N·m"},
         {"T2", "/stiffness_segments/T2_Nm", "N·m"},
@@ -1695,14 +1611,7 @@ const bool kDatasheet = RegisterDatasheet(
        {{"efficiency at the load's torque and speed", "/lubrication/efficiency", "", 1.0,
          "/joint_model/friction_note"},
         {"no-load running torque (input)", "/lubrication/no_load_running_torque_Nm", "N·m"}}},
-      {"Output bearing",
-       {{"type", "/output_bearing/type", ""},
-        {"equivalent dynamic load P_C", "/output_bearing/P_C_N", "N"},
-        {"L10", "/output_bearing/L10h", "h"},
-        {"oscillating-motion life", "/output_bearing/L_OC_h", "h"},
-        {"static equivalent load P_0", "/output_bearing/P0_N", "N"},
-        {"static safety f_s", "/output_bearing/static_safety", ""},
-        {"tilt under the largest moment", "/output_bearing/tilt_arcmin", "arcmin"}}},
+      ratings[1],
       {"Dimensions and mass",
        {{"outer diameter (over the ring pins)", "/masses/outer_diameter_mm", "mm"},
         {"width (discs' stack)", "/masses/width_mm", "mm"},
@@ -1710,7 +1619,10 @@ const bool kDatasheet = RegisterDatasheet(
         {"mass of the parts modelled", "/masses/total_kg", "kg"},
         {"inertia at the output (reflected)", "/masses/reflected_inertia_kgm2", "kg·m²"},
         {"what the masses include", "/masses/includes", ""}}}},
-     {"hysteresis.svg", "lte.svg"}});
+     {"hysteresis.svg", "lte.svg"}};
+  return d;
+}
+const bool kDatasheet = RegisterDatasheet("cycloid_ltca", CycloidDatasheet());
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

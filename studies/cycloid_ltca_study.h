@@ -97,22 +97,13 @@ struct Input {
   };
   /// "output_mechanism" (studies/cycloid_input.h, shared with cycloid_min_size).
   using OutputMechanism = cycloid_common::CompliantOutputMechanismInput;
-  struct Stiffness {
-    double rated_torque_Nm = 0;
+  struct Stiffness : StiffnessCatalogueInput {
     std::optional<double> crank_angle_deg;  ///< absent: 0 (no schema default: the block is optional)
-    std::optional<std::vector<double>> segments_Nm;
-    double lost_motion_percent = 3.0;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Required().Positive().Unit("N·m").Desc("T_r at the output"));
       a->Visit("crank_angle_deg", &crank_angle_deg, Field().Unit("deg").Desc("the crank angle held (absent: 0)"));
-      a->Visit("segments_Nm", &segments_Nm,
-               Field().MinItems(2, "[T1, T2] with 0 < T1 < T2 < rated_torque_Nm").Unit("N·m").Desc(
-                   "T1 and T2 of the three-segment stiffness K1 (0–T1), K2 (T1–T2), K3 (T2–T_r) (absent: 25% and "
-                   "75% of rated_torque_Nm; docs/ratings.md)"));
-      a->Visit("lost_motion_percent", &lost_motion_percent,
-               Field().Above(0.0).AtMost(100.0, "a percentage in (0, 100]").Desc(
-                   "lost motion at ± this percentage of the rated torque (the catalogues' 3%)"));
+      VisitCatalogue(a);
     }
   };
   struct Limits : LubricationLimitsInput {
@@ -311,7 +302,7 @@ struct Study {
   struct RatingsSpec {
     RatingsInput in;
     cycloid_common::LifeSpec life;  ///< lines empty: set per trial torque
-    cycloid_common::PeakLimits limits;
+    PeakLimits limits;
   };
   std::optional<RatingsSpec> ratings;
   double density_kg_m3 = 7850.0;  ///< "ratings.density_kg_m3" (steel when absent)
@@ -404,7 +395,7 @@ struct Result {
   std::string output_failed, torsion_failed;
   std::vector<double> bearing_load_at_ltca_angles_N;  ///< |B| of disc 1 at crank_angles_rad (per_angle.csv)
   std::optional<cycloid::TransmissionErrorResult> transmission_error;  ///< with "tolerances"
-  std::optional<cycloid_common::RatingsResult> ratings;  ///< with "ratings"
+  std::optional<RatingsResult> ratings;                  ///< with "ratings"
   std::string ratings_failed;                            ///< why they are absent
   std::optional<OutputBearingResult> output_bearing;     ///< with "output_bearing"
   std::string output_bearing_failed;                     ///< why it is absent

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 #include "model/common/sliced_bearing_life.h"
 #include "model/lcr/contact_fatigue.h"
@@ -19,7 +20,10 @@
 #include "model/lcr/life.h"
 #include "model/lcr/profile.h"
 #include "model/lcr/sliced_life.h"
+#include "model/common/polygon.h"
+#include "model/rigidity/lcr_stiffness.h"
 #include "studies/contact_fatigue_input.h"
+#include "studies/datasheet.h"
 #include "studies/format.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
@@ -520,6 +524,46 @@ void RunLubrication(const Study& st, const RunContext& ctx, Result& res) {
 
 }  // namespace
 
+// "stiffness", "ratings", "output_bearing" and "external_loads" (docs/ratings.md).
+void ParseCatalogue(const Input& in, const Node& root, Study& st) {
+  if (in.stiffness) {
+    if (!in.material) (void)root["material"];  // "missing required field": the contacts' compliance
+    Study::StiffnessSpec k;
+    k.rated_torque_Nm = in.stiffness->rated_torque_Nm;
+    std::tie(k.T1_Nm, k.T2_Nm) = SegmentTorques(root["stiffness"], *in.stiffness);
+    k.lost_motion_percent = in.stiffness->lost_motion_percent;
+    st.stiffness = k;
+  }
+  if (in.ratings) {
+    if (!in.material) (void)root["material"];
+    if (!in.load) (void)root["load"];
+    Study::RatingsSpec r;
+    r.in = *in.ratings;
+    st.density_kg_m3 = in.ratings->density_kg_m3;
+    const std::string why = "ratings: the rated torque is the rollers' bearing life";
+    const Node reducer = root["reducer"];
+    r.life.input_roller = ParseRating(reducer["input"], BearingKind::kRoller, why);
+    r.life.output_roller = ParseRating(reducer["output"], BearingKind::kRoller, why);
+    if (in.reducer.eccentric_bearing)
+      r.life.eccentric = ParseRating(reducer["eccentric_bearing"],
+                                     in.reducer.eccentric_bearing->kind == "ball" ? BearingKind::kBall : BearingKind::kRoller,
+                                     why);
+    if (r.life.input_roller.modified || r.life.output_roller.modified || (r.life.eccentric && r.life.eccentric->modified))
+      r.life.contamination_factor = in.lubricant->contamination_factor;  // CheckModifiedLifeInputs: given
+    if (in.limits) {
+      r.limits.contact_stress_MPa = in.limits->contact_stress_MPa;
+      r.limits.roller_load_N = in.limits->roller_load_N;
+    }
+    st.ratings = r;
+  }
+  std::optional<double> speed;
+  if (in.ratings) speed = in.ratings->rated_output_speed_rpm;
+  else if (in.load && in.load->input_speed_rpm)
+    speed = *in.load->input_speed_rpm / std::abs(lcr::SpeedReductionRatio(st.reducer));
+  st.output_bearing = in.output_bearing;
+  st.external_loads = ParseExternalLoads(root, in.output_bearing.has_value(), in.external_loads, speed);
+}
+
 Study Parse(const Node& root) {
   // Every field's type and bounds (the limits' margins are read by the report's headlines from the
   // study, "study:/limits/…"); what spans fields follows.
@@ -587,6 +631,7 @@ Study Parse(const Node& root) {
   if (st.life_limit_h > 0 && !st.life)
     root["limits"]["life_h"].Fail("a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a life in hours needs one");
   st.lubrication = ParseLubrication(in, root);
+  ParseCatalogue(in, root, st);
   return st;
 }
 
@@ -617,6 +662,18 @@ nlohmann::ordered_json Input::SchemaRules() {
   nlohmann::ordered_json& all = rules["allOf"];
   for (const auto& rule : LcrLifeSchemaRules()) all.insert(all.end() - 1, rule);
   AddLubricationSchemaRules(rules);  // the lubrication blocks (docs/lubrication.md)
+  // The catalogue blocks (docs/ratings.md): the ratings need the material, the load and the rollers'
+  // ratings; the torsional curve the material; the output bearing and its loads each other.
+  for (const auto& rule : nlohmann::ordered_json::parse(R"([
+    {"if": {"required": ["ratings"]},
+     "then": {"required": ["material", "load"],
+              "properties": {"reducer": {"properties": {"input": {"required": ["dynamic_rating_N"]},
+                                                        "output": {"required": ["dynamic_rating_N"]}}}}}},
+    {"if": {"required": ["stiffness"]}, "then": {"required": ["material"]}},
+    {"if": {"required": ["external_loads"]}, "then": {"required": ["output_bearing"]}},
+    {"if": {"required": ["output_bearing"]}, "then": {"required": ["external_loads"]}}
+  ])"))
+    rules["allOf"].push_back(rule);
   // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
   for (const auto& rule : ModifiedLifeSchemaRules(
            {{"reducer", "input"}, {"reducer", "output"}, {"reducer", "eccentric_bearing"}}))
@@ -625,6 +682,115 @@ nlohmann::ordered_json Input::SchemaRules() {
 }
 
 nlohmann::ordered_json Input::DutyCycleSchema() { return LcrDutyCycleSchema(); }
+
+namespace {
+
+// The torsional curve and its catalogue numbers (docs/ratings.md, docs/lcr_stiffness.md): the mean
+// output rotation over the input revolution at torques −T_r … T_r, input held, conjugate profiles
+// (no clearance: the curve is continuous at 0).
+void RunStiffness(const Study& st, Result& res) {
+  const Study::StiffnessSpec& k = *st.stiffness;
+  const double tr = k.rated_torque_Nm;
+  std::vector<double> f = {0.03, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0,
+                           k.T1_Nm / tr, k.T2_Nm / tr, k.lost_motion_percent / 100.0};
+  std::sort(f.begin(), f.end());
+  f.erase(std::unique(f.begin(), f.end(), [](double a, double b) { return std::abs(a - b) <= 1e-12; }), f.end());
+  std::vector<double> torques_Nm;
+  for (auto it = f.rbegin(); it != f.rend(); ++it) torques_Nm.push_back(-*it * tr);
+  torques_Nm.push_back(0.0);
+  for (double x : f) torques_Nm.push_back(x * tr);
+  std::vector<double> torques_Nmm;
+  for (double t : torques_Nm) torques_Nmm.push_back(t * 1000.0);
+  const std::vector<double> angle = rigidity::LostMotionCurve(st.reducer, st.material, torques_Nmm, 0.0, st.angle_steps);
+  std::vector<camopt::TorsionPoint> curve;
+  for (size_t i = 0; i < torques_Nm.size(); ++i) {
+    if (torques_Nm[i] == 0.0) res.torsion_curve.push_back({0.0, angle[i]});  // 0− and 0+: no clearance
+    res.torsion_curve.push_back({torques_Nm[i], angle[i]});
+  }
+  for (const auto& [t, a] : res.torsion_curve) curve.push_back({t, a * kArcminPerRad});
+  auto at = [&](double t) { return TorsionAngleAt(curve, t) / kArcminPerRad; };
+  res.stiffness_Nm_per_rad = 0.5 * (0.5 * tr / (at(tr) - at(0.5 * tr)) + 0.5 * tr / (at(-0.5 * tr) - at(-tr)));
+  res.lost_motion_rad = LostMotionArcmin(curve, tr, 0.03) / kArcminPerRad;
+  res.lost_motion_user_rad = LostMotionArcmin(curve, tr, k.lost_motion_percent / 100.0) / kArcminPerRad;
+  res.segments = ThreeSegmentTorsionalStiffness(curve, k.T1_Nm, k.T2_Nm, tr);
+}
+
+// The cam's mass and inertia: both cam profiles (the roller-offset curves, 400 points a lobe) less
+// their bores, each over its cam thickness; reflected to the output: the cam's centre orbits at the
+// input speed (m e² r_i²), the cam turns at ω_c (J_c (ω_c/ω_o)²).
+void RunMasses(const Study& st, Result& res) {
+  const lcr::Reducer<double>& r = st.reducer;
+  const double rho = st.density_kg_m3 * 1e-9;  // kg/mm³
+  double m = 0, j = 0;                          // kg, kg·mm²
+  for (Side s : {Side::kInput, Side::kOutput}) {
+    const lcr::CamSide<double>& c = r.side(s);
+    PolygonMoments pm = PolygonAreaAndPolarMoment(lcr::SampleCurve(c, r.eccentricity, c.roller_radius, 400 * c.lobes));
+    const double bore = (s == Side::kInput ? st.bore_diameter_input_mm : st.bore_diameter_output_mm) / 2.0;
+    pm.area -= kPi * bore * bore;
+    pm.polar -= kPi * std::pow(bore, 4) / 2.0;
+    m += rho * pm.area * c.cam_thickness;
+    j += rho * pm.polar * c.cam_thickness;
+  }
+  res.cam_kg = m;
+  res.cam_inertia_kgm2 = j * 1e-6;
+  const double ri = lcr::SpeedReductionRatio(r), wc = lcr::CamSpeedRatio(r) / lcr::OutputSpeedRatio(r);
+  const double e_m = r.eccentricity * 1e-3;
+  res.reflected_inertia_kgm2 = m * e_m * e_m * ri * ri + res.cam_inertia_kgm2 * wc * wc;
+}
+
+// The ratings (studies/ratings.h) on the rigid or compliant force analysis at each trial torque and
+// the rollers' lives at the rated speed, and the output bearing.
+void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
+  if (st.stiffness || st.ratings) RunMasses(st, res);
+  if (st.stiffness) RunStiffness(st, res);
+  if (st.ratings) {
+    const double ratio = std::abs(lcr::SpeedReductionRatio(st.reducer));
+    Progress progress("lcr_analysis ratings", ctx.quiet);
+    int step = 0;
+    auto at = [&](double torque_Nm) {
+      progress.Update(std::min(0.95, 0.02 * ++step), std::to_string(step) + " analyses");
+      Study c = st;
+      c.load.output_torque_Nmm = torque_Nm * 1000.0;
+      LifeSpec life = st.ratings->life;
+      life.lines = {lcr::LcrDutyLine{c.load.output_torque_Nmm, st.ratings->in.rated_output_speed_rpm * ratio, 1.0}};
+      c.life = life;
+      c.contact_fatigue.reset();
+      c.contact.given = false;  // the rollers' line contact: the sliced 3D life is not a rating
+      const lcr::CycleSeries series =
+          st.load_model == lcr::LoadModel::kCompliant
+              ? lcr::AnalyzeCycleCompliant(st.reducer, st.material, c.load, st.angle_steps, {true, true, false})
+              : lcr::AnalyzeCycle(st.reducer, st.material, c.load, st.angle_steps, {true, true, false});
+      RatingPoint p;
+      for (const lcr::SideSeries* ss : {&series.input, &series.output}) {
+        p.max_contact_stress_MPa = std::max(p.max_contact_stress_MPa, Max(ss->max_stress_MPa));
+        p.max_roller_load_N = std::max(p.max_roller_load_N, Max(ss->max_force_N));
+      }
+      const LifeResult l = RunLife(c, ctx.study_file);
+      p.shortest_L10h = l.shortest_L10h;
+      p.shortest = l.shortest;
+      for (const BearingLifeResult& b : l.bearings) p.statics.push_back({b.name, b.rating.static_N, b.max_load_N});
+      return p;
+    };
+    try {
+      res.ratings = SolveRatings(st.ratings->in, st.ratings->limits, at, ratio,
+                                 std::max(1.0, st.load.output_torque_Nmm / 1000.0));
+    } catch (const std::invalid_argument& e) {
+      res.ratings_failed = e.what();
+      res.notes.push_back(std::string("ratings not solved: ") + e.what());
+    }
+    progress.Done();
+  }
+  if (st.output_bearing) {
+    try {
+      res.output_bearing = SolveOutputBearing(*st.output_bearing, st.external_loads);
+    } catch (const std::invalid_argument& e) {
+      res.output_bearing_failed = e.what();
+      res.notes.push_back(std::string("output bearing not rated: ") + e.what());
+    }
+  }
+}
+
+}  // namespace
 
 Result Run(const Study& st, const RunContext& ctx) {
   const lcr::Reducer<double>& r = st.reducer;
@@ -713,6 +879,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     if (q.profile) res.loads_at_zero = lcr::AnalyzeAngle(r, st.material, st.load, 0.0, {true, false, false});
   }
   if (st.life) res.life = RunLife(st, ctx.study_file);
+  RunCatalogue(st, ctx, res);
   if (st.lubrication) RunLubrication(st, ctx, res);
   if (res.life && st.life->contamination_factor) res.life->oil = ModifiedLifeOilOf(st, res);
   if (q.profile) {
@@ -738,6 +905,74 @@ Result Run(const Study& st, const RunContext& ctx) {
   }
   return res;
 }
+
+namespace {
+
+// result.json's catalogue numbers (docs/ratings.md), as cycloid_ltca's: ratings, output_bearing,
+// stiffness and stiffness_segments, masses, joint_model.
+void AddCatalogue(const Study& st, const Result& res, nlohmann::json& j) {
+  const double ratio = std::abs(lcr::SpeedReductionRatio(st.reducer));
+  if (st.ratings) AddRatingsJson(st.ratings->in, res.ratings, res.ratings_failed, ratio, false, j);
+  if (res.output_bearing) j["output_bearing"] = OutputBearingJson(*st.output_bearing, *res.output_bearing);
+  else if (st.output_bearing) j["output_bearing"] = {{"error", res.output_bearing_failed}};
+  if (st.stiffness || st.ratings)
+    j["masses"] = {{"density_kg_m3", st.density_kg_m3},
+                   {"cam_kg", res.cam_kg},
+                   {"cam_inertia_kgm2", res.cam_inertia_kgm2},
+                   {"outer_diameter_mm", res.outer_diameter_mm},
+                   {"reflected_inertia_kgm2", res.reflected_inertia_kgm2},
+                   {"includes", "the cam (both profiles less their bores, each over its thickness); not the rollers, "
+                                "turrets, eccentric shaft, bearings or housing. Reflected inertia: the cam's orbit "
+                                "m e^2 r_i^2 and spin J_c (w_c/w_o)^2, at the output"}};
+  if (st.stiffness && res.segments) {
+    const Study::StiffnessSpec& k = *st.stiffness;
+    const ThreeSegmentStiffness& g = *res.segments;
+    j["torsional_stiffness_Nm_per_arcmin"] = res.stiffness_Nm_per_rad / kArcminPerRad;
+    j["lost_motion_arcmin"] = res.lost_motion_rad * kArcminPerRad;
+    j["backlash_arcmin"] = 0.0;
+    j["stiffness"] = {{"rated_torque_Nm", k.rated_torque_Nm},
+                      {"lost_motion_percent", k.lost_motion_percent},
+                      {"lost_motion_at_percent_arcmin", res.lost_motion_user_rad * kArcminPerRad},
+                      {"hysteresis_width_arcmin", 0.0},
+                      {"definitions",
+                       "input held; output angle: the mean over the input revolution of the output turret's rotation "
+                       "under the rollers' Palmgren line contacts (docs/lcr_stiffness.md); conjugate profiles: no "
+                       "clearance, so no backlash; stiffness: mean of the two senses' slopes between 50% and 100% of "
+                       "the rated torque; frictionless: no hysteresis width"}};
+    j["stiffness_segments"] = {
+        {"T1_Nm", k.T1_Nm}, {"T2_Nm", k.T2_Nm}, {"rated_torque_Nm", k.rated_torque_Nm},
+        {"K1_Nm_per_arcmin", g.k1_Nm_per_arcmin}, {"K2_Nm_per_arcmin", g.k2_Nm_per_arcmin},
+        {"K3_Nm_per_arcmin", g.k3_Nm_per_arcmin},
+        {"definitions", "loading branch from 0: K1 = T1 / (angle(T1) - angle(0)), K2 = (T2 - T1) / (angle(T2) - "
+                        "angle(T1)), K3 = (T_r - T2) / (angle(T_r) - angle(T2))"}};
+    nlohmann::json curve = nlohmann::json::array();
+    for (const auto& [t, a] : res.torsion_curve) curve.push_back({t, a});
+    j["joint_model"] = {
+        {"ratio", ratio},
+        {"rated_torque_Nm", k.rated_torque_Nm},
+        {"stiffness_Nm_per_rad", res.stiffness_Nm_per_rad},
+        {"stiffness_segments",
+         {{"T1_Nm", k.T1_Nm},
+          {"T2_Nm", k.T2_Nm},
+          {"K1_Nm_per_rad", g.k1_Nm_per_arcmin * kArcminPerRad},
+          {"K2_Nm_per_rad", g.k2_Nm_per_arcmin * kArcminPerRad},
+          {"K3_Nm_per_rad", g.k3_Nm_per_arcmin * kArcminPerRad}}},
+        {"torsion_curve", curve},
+        {"backlash_rad", 0.0},
+        {"lost_motion_rad", res.lost_motion_rad},
+        {"lost_motion_percent", 3},
+        {"reflected_inertia_kgm2", res.reflected_inertia_kgm2},
+        {"inertia_includes", "the cam's orbit and spin (masses.includes)"},
+        {"damping_Nms_per_rad", 0.0},
+        {"damping_note", "not modelled: the contact model is quasi-static and frictionless"},
+        {"friction_torque_Nm", 0.0},
+        {"friction_note", "not modelled in the joint (the LCR's losses are in the efficiency stage and lubrication)"},
+        {"efficiency", res.lubrication ? nlohmann::json(res.lubrication->efficiency) : nlohmann::json(nullptr)},
+        {"loss_table", nlohmann::json::array()}};
+  }
+}
+
+}  // namespace
 
 nlohmann::json ToJson(const Study& st, const Result& res) {
   const Evaluate& q = st.evaluate;
@@ -972,6 +1207,7 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   }
   if (res.lubrication) j["lubrication"] = WriteJson(*res.lubrication);
   else if (st.lubrication) j["lubrication"] = {{"error", res.lubrication_error}};
+  AddCatalogue(st, res, j);
   j["notes"] = res.notes;
   if (res.input_cam_files && res.output_cam_files)
     j["geometry_files"] =
@@ -1091,6 +1327,22 @@ void Write(const Study& st, const Result& res, Outputs& out) {
     }
   }
   out.AddJson("result.json", ToJson(st, res));
+  if (!res.torsion_curve.empty()) {
+    // The torsional curve (docs/ratings.md): hysteresis.csv and .svg, as cycloid_ltca's.
+    std::vector<double> torque, angle;
+    for (const auto& [t, a] : res.torsion_curve) torque.push_back(t), angle.push_back(a * kArcminPerRad);
+    Table t;
+    t.Add("output_torque_Nm", torque);
+    t.Add("output_angle_arcmin", angle);
+    out.Add("hysteresis.csv", ToCsv(t));
+    PlotOptions po;
+    po.x_label = "output torque [N m]";
+    po.y_label = "output angle [arcmin]";
+    po.title = "Output angle against output torque, input held (mean over the input revolution)";
+    out.Add("hysteresis.svg", SvgLinePlot({{"output angle", torque, angle}}, po));
+  }
+  if (st.ratings && !res.ratings)
+    out.SetStatus(Status::kNotConverged, "ratings not solved (null in result.json): " + res.ratings_failed);
 }
 
 namespace {
@@ -1227,7 +1479,44 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
     {"shortest bearing life L10h", "/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
     {"input cam contact life L10h", "/life/input_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
     {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
+    {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
+    {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m"},
+    {"peak torque (contact limits)", "/peak_torque_Nm", "N m"},
+    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m"},
+    {"output bearing life L10h", "/output_bearing/L10h", "h"},
+    {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
 })));
+
+// datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
+DatasheetSpec LcrDatasheet() {
+  const std::vector<DatasheetSection> ratings = RatingsDatasheetSections();  // ratings, output bearing
+  return {"/masses",
+          {{"Reducer", {{"speed reduction ratio r_i", "/speed_ratio", ""}}},
+           ratings[0],
+           {"Torsional stiffness and lost motion (input held)",
+            {{"T1", "/stiffness_segments/T1_Nm", "N·m"},
+             {"T2", "/stiffness_segments/T2_Nm", "N·m"},
+             {"K1 (0–T1)", "/stiffness_segments/K1_Nm_per_arcmin", "N·m/arcmin"},
+             {"K2 (T1–T2)", "/stiffness_segments/K2_Nm_per_arcmin", "N·m/arcmin"},
+             {"K3 (T2–rated)", "/stiffness_segments/K3_Nm_per_arcmin", "N·m/arcmin"},
+             {"torsional stiffness (50–100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N·m/arcmin"},
+             {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+             {"lost motion at ± stiffness.lost_motion_percent", "/stiffness/lost_motion_at_percent_arcmin", "arcmin"},
+             {"backlash", "/backlash_arcmin", "arcmin"},
+             {"hysteresis loss", "/stiffness/hysteresis_width_arcmin", "arcmin"}}},
+           {"Efficiency",
+            {{"mean efficiency (eq. 33)", "/efficiency/mean", ""},
+             {"lubricated efficiency", "/lubrication/efficiency", ""}}},
+           ratings[1],
+           {"Dimensions and mass",
+            {{"outer diameter", "/masses/outer_diameter_mm", "mm"},
+             {"mass of the cam", "/masses/cam_kg", "kg"},
+             {"inertia at the output (reflected)", "/masses/reflected_inertia_kgm2", "kg·m²"},
+             {"what the masses include", "/masses/includes", ""}}}},
+          {"hysteresis.svg", "forces.svg"}};
+}
+const bool kDatasheet = RegisterDatasheet("lcr_analysis", LcrDatasheet());
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/bearing_life.h"
+#include "model/common/catalogue_ratings.h"
 #include "model/common/material.h"
 #include "model/lcr/contact3d_cycle.h"
 #include "model/lcr/cycle.h"
@@ -25,6 +26,7 @@
 #include "studies/lubrication_input.h"
 #include "model/lcr/lubrication.h"
 #include "studies/material_input.h"
+#include "studies/ratings.h"
 #include "studies/study.h"
 #include "studies/writers.h"
 
@@ -112,6 +114,18 @@ struct Input {
   std::optional<SurfacesInput> surfaces;
   std::optional<LcrBearingFrictionInput> bearing_friction;
   std::optional<EfficiencyMapInput> efficiency_map;
+  struct Stiffness : StiffnessCatalogueInput {
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("rated_torque_Nm", &rated_torque_Nm,
+               Field().Required().Positive().Unit("N·m").Desc("T_r at the output (the input held)"));
+      VisitCatalogue(a);
+    }
+  };
+  std::optional<Stiffness> stiffness;
+  std::optional<RatingsInput> ratings;
+  std::optional<OutputBearingInput> output_bearing;
+  std::optional<std::vector<ExternalLoadInput>> external_loads;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -148,6 +162,20 @@ struct Input {
     a->Visit("efficiency_map", &efficiency_map,
              Field().Desc("efficiency_map.csv: efficiency, loss and oil temperature over torques × speeds (with "
                           "lubricant)"));
+    a->Visit("stiffness", &stiffness,
+             Field().Desc("the torsional curve, input held, mean over the input revolution (docs/lcr_stiffness.md): "
+                          "catalogue stiffness, three segments, lost motion (docs/ratings.md)"));
+    a->Visit("ratings", &ratings,
+             Field().Desc("the catalogue's ratings: rated torque for a rated life at a rated output speed, peak torque "
+                          "from the contact limits, momentary torque from the static ratings (docs/ratings.md; the "
+                          "rollers' ratings of reducer.input and reducer.output)"));
+    a->Visit("output_bearing", &output_bearing,
+             Field().Desc("the output bearing (cross-roller or angular-contact pair) under external_loads: P_C, L10, "
+                          "static safety f_s, tilt (docs/ratings.md)"));
+    a->Visit("external_loads", &external_loads,
+             Field().MinItems(1, "a non-empty array of load lines").Desc(
+                 "the application's loads on the output bearing, lines of a duty cycle (the time shares sum to 1 "
+                 "within 1e-6)"));
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();
@@ -210,6 +238,21 @@ struct Study {
     bool rollers_bearing_given = false, eccentric_bearing_given = false;
   };
   std::optional<Lubrication> lubrication;
+  /// "stiffness": the torsional curve's rated torque, T1, T2 and the lost motion's percentage.
+  struct StiffnessSpec {
+    double rated_torque_Nm = 0, T1_Nm = 0, T2_Nm = 0, lost_motion_percent = 3.0;
+  };
+  std::optional<StiffnessSpec> stiffness;
+  /// "ratings" with the rollers' (and the eccentric's) ratings and the peak limits.
+  struct RatingsSpec {
+    RatingsInput in;
+    LifeSpec life;  ///< lines set per trial torque
+    PeakLimits limits;
+  };
+  std::optional<RatingsSpec> ratings;
+  double density_kg_m3 = 7850.0;  ///< "ratings.density_kg_m3" (steel when absent)
+  std::optional<OutputBearingInput> output_bearing;
+  std::vector<ExternalLoadInput> external_loads;
 };
 
 /// The rating life of one bearing over the duty cycle (model/common/bearing_life.h, model/lcr/life.h).
@@ -303,6 +346,19 @@ struct Result {
   /// efficiency_map.csv's rows: torque, speed, efficiency, loss, oil temperature, λ, and 1 where
   /// the housing's balance has an equilibrium (0: the values at the oil's limit temperature).
   std::vector<std::array<double, 7>> efficiency_map;
+  /// With "stiffness": the mean output rotation [rad] at each torque [N·m] (−T_r … 0−, 0+ … T_r), the
+  /// catalogue stiffness (50–100 %, mean of both senses) [N·m/rad], lost motion at 3 % and at the
+  /// study's percentage [rad], the three segments [N·m/arcmin].
+  std::vector<std::pair<double, double>> torsion_curve;
+  double stiffness_Nm_per_rad = 0, lost_motion_rad = 0, lost_motion_user_rad = 0;
+  std::optional<ThreeSegmentStiffness> segments;
+  /// With "ratings" or "stiffness": the cam's mass, its polar moment about its centre and the
+  /// inertia reflected to the output (m e² r_i² + J_c (ω_c/ω_o)²).
+  double cam_kg = 0, cam_inertia_kgm2 = 0, reflected_inertia_kgm2 = 0;
+  std::optional<RatingsResult> ratings;
+  std::string ratings_failed;
+  std::optional<OutputBearingResult> output_bearing;
+  std::string output_bearing_failed;
 };
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.

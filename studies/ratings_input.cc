@@ -3,7 +3,42 @@
 
 #include <cmath>
 
+#include "studies/format.h"
+
 namespace camopt::studies {
+
+std::pair<double, double> SegmentTorques(const Node& stiffness, const StiffnessCatalogueInput& in) {
+  const double tr = in.rated_torque_Nm;
+  if (!in.segments_Nm) return {0.25 * tr, 0.75 * tr};
+  const std::vector<double>& t = *in.segments_Nm;
+  if (t.size() != 2 || !(t[0] > 0 && t[0] < t[1] && t[1] < tr))
+    stiffness["segments_Nm"].Fail("[T1, T2] with 0 < T1 < T2 < rated_torque_Nm = " + Format(tr, 6));
+  return {t[0], t[1]};
+}
+
+std::vector<ExternalLoadInput> ParseExternalLoads(const Node& root, bool output_bearing,
+                                                  const std::optional<std::vector<ExternalLoadInput>>& loads,
+                                                  std::optional<double> default_output_speed_rpm) {
+  if (loads && !output_bearing) root["external_loads"].FailWith("external_loads need an output_bearing to act on");
+  std::vector<ExternalLoadInput> out;
+  if (!output_bearing) return out;
+  if (!loads) (void)root["external_loads"];  // "missing required field"
+  double shares = 0;
+  for (size_t k = 0; k < loads->size(); ++k) {
+    ExternalLoadInput line = (*loads)[k];
+    shares += line.time_share;
+    if (!line.output_speed_rpm) {
+      if (!default_output_speed_rpm)
+        root["external_loads"][k].FailWith(
+            "output_speed_rpm (no ratings.rated_output_speed_rpm or load.input_speed_rpm to take it from)");
+      line.output_speed_rpm = default_output_speed_rpm;
+    }
+    out.push_back(line);
+  }
+  if (std::abs(shares - 1.0) > 1e-6)
+    root["external_loads"].Fail("time shares that sum to 1 within 1e-6 (they sum to " + Format(shares, 9) + ")");
+  return out;
+}
 
 OutputBearingResult SolveOutputBearing(const OutputBearingInput& in, const std::vector<ExternalLoadInput>& loads) {
   const OutputBearing b = ToOutputBearing(in);

@@ -6,12 +6,14 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "model/common/output_bearing.h"
 #include "studies/archive.h"
+#include "studies/input.h"
 
 namespace camopt::studies {
 
@@ -52,6 +54,28 @@ struct RatingsInput {
                  "(steel: 7850)"));
   }
 };
+
+/// The catalogue part of a "stiffness" block: the rated torque the torsional curve goes to, the
+/// three segments' T1 and T2, the lost motion's percentage (a kind adds where the input is held).
+struct StiffnessCatalogueInput {
+  double rated_torque_Nm = 0;
+  std::optional<std::vector<double>> segments_Nm;
+  double lost_motion_percent = 3.0;
+  template <typename Archive>
+  void VisitCatalogue(Archive* a) {
+    a->Visit("segments_Nm", &segments_Nm,
+             Field().MinItems(2, "[T1, T2] with 0 < T1 < T2 < rated_torque_Nm").Unit("N·m").Desc(
+                 "T1 and T2 of the three-segment stiffness K1 (0–T1), K2 (T1–T2), K3 (T2–T_r) (absent: 25% and "
+                 "75% of rated_torque_Nm; docs/ratings.md)"));
+    a->Visit("lost_motion_percent", &lost_motion_percent,
+             Field().Above(0.0).AtMost(100.0, "a percentage in (0, 100]").Desc(
+                 "lost motion at ± this percentage of the rated torque (the catalogues' 3%)"));
+  }
+};
+
+/// T1 and T2 of `in` (its segments_Nm, or 25% and 75% of the rated torque), checked: 0 < T1 < T2 <
+/// T_r. `stiffness` the block's node. @throws StudyError naming stiffness/segments_Nm.
+std::pair<double, double> SegmentTorques(const Node& stiffness, const StiffnessCatalogueInput& in);
 
 /// "output_bearing": the reducer's output (cross-roller or angular-contact pair) bearing.
 struct OutputBearingInput {
@@ -117,6 +141,13 @@ struct ExternalLoadInput {
                  "over the ratio)"));
   }
 };
+
+/// "external_loads" with every line's output speed: its own, else `default_output_speed_rpm`; the
+/// time shares summing to 1 within 1e-6; `root` the study. Empty without an output bearing.
+/// @throws StudyError (exit 2) naming the JSON path.
+std::vector<ExternalLoadInput> ParseExternalLoads(const Node& root, bool output_bearing,
+                                                  const std::optional<std::vector<ExternalLoadInput>>& loads,
+                                                  std::optional<double> default_output_speed_rpm);
 
 /// The output bearing's numbers under the external loads (docs/ratings.md).
 struct OutputBearingResult {

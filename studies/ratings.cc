@@ -1,0 +1,171 @@
+// The catalogue ratings of a reducer solved from its model (studies/ratings.h, docs/ratings.md).
+#include "studies/ratings.h"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "model/common/catalogue_ratings.h"
+#include "model/common/scalar.h"
+
+namespace camopt::studies {
+
+namespace {
+
+/// The torque at which a ratio falling with the torque (a life over the rated life, a capacity over
+/// its demand) is 1: RatedTorqueForLife (model/common/catalogue_ratings.h), its error named.
+template <typename F>
+double SolveTorqueForRatio(const F& ratio, double start_Nm, const std::string& what) {
+  try {
+    // A model's loads carry its solver's tolerance (the LTCA's contact: relative 1e-6 and below): a
+    // bracket of 1e-9 T is well inside it.
+    return RatedTorqueForLife(ratio, 1.0, start_Nm, 1e-9);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(what + ": " + e.what());
+  }
+}
+
+/// The smallest capacity / demand over the items given, and the item.
+struct Capacity {
+  double ratio = kInf;
+  std::string by;
+  void Add(double capacity, double demand, const std::string& name) {
+    if (capacity > 0 && demand > 0 && capacity / demand < ratio) ratio = capacity / demand, by = name;
+  }
+};
+
+nlohmann::json Optional(const std::optional<double>& x) {
+  return x && std::isfinite(*x) ? nlohmann::json(*x) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
+                           const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm) {
+  std::map<double, RatingPoint> memo;
+  RatingsResult r;
+  auto eval = [&](double t) -> const RatingPoint& {
+    auto it = memo.find(t);
+    if (it == memo.end()) {
+      it = memo.emplace(t, at(t)).first;
+      ++r.evaluations;
+    }
+    return it->second;
+  };
+  // Rated torque: the shortest L10 at the rated speed equals the rated life.
+  r.rated_torque_Nm = SolveTorqueForRatio([&](double t) { return eval(t).shortest_L10h / in.rated_life_h; },
+                                          start_torque_Nm, "the rated life");
+  r.rated_by = eval(r.rated_torque_Nm).shortest;
+  r.rated_L10h = eval(r.rated_torque_Nm).shortest_L10h;
+  // Peak (acceleration) torque: the contact limits.
+  auto peak = [&](double t) {
+    const RatingPoint& p = eval(t);
+    Capacity c;
+    if (limits.contact_stress_MPa) c.Add(*limits.contact_stress_MPa, p.max_contact_stress_MPa, "limits.contact_stress_MPa");
+    if (limits.roller_load_N) c.Add(*limits.roller_load_N, p.max_roller_load_N, "limits.roller_load_N");
+    return c;
+  };
+  if (limits.contact_stress_MPa || limits.roller_load_N) {
+    r.peak_torque_Nm = SolveTorqueForRatio([&](double t) { return peak(t).ratio; }, r.rated_torque_Nm,
+                                           "the peak torque's limits");
+    r.peak_by = peak(*r.peak_torque_Nm).by;
+  } else {
+    r.peak_note = "not computed: no limits.contact_stress_MPa or limits.roller_load_N";
+  }
+  // Momentary torque: every rated bearing keeps s0 = C0 / P0max >= momentary_static_safety.
+  auto momentary = [&](double t) {
+    Capacity c;
+    for (const RatedStatic& b : eval(t).statics)
+      c.Add(b.static_rating_N, in.momentary_static_safety * b.max_load_N, b.name + " (static rating)");
+    return c;
+  };
+  bool any_static = false;
+  for (const RatedStatic& b : eval(r.rated_torque_Nm).statics) any_static = any_static || b.static_rating_N > 0;
+  if (any_static) {
+    r.momentary_torque_Nm = SolveTorqueForRatio([&](double t) { return momentary(t).ratio; }, r.rated_torque_Nm,
+                                                "the bearings' static ratings");
+    r.momentary_by = momentary(*r.momentary_torque_Nm).by;
+    if (in.momentary_peaks)
+      r.momentary_peaks_allowed =
+          AllowedMomentaryPeakCount(in.momentary_peaks->output_speed_rpm, in.momentary_peaks->duration_s, ratio);
+  } else {
+    r.momentary_note = "not computed: no rated bearing has a static rating (static_rating_N)";
+  }
+  return r;
+}
+
+void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
+                    double ratio, bool estimate_error, nlohmann::json& j) {
+  if (!g) {
+    for (const char* key : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"}) j[key] = nullptr;
+    j["ratings"] = {{"error", failed}};
+    return;
+  }
+  j["rated_torque_Nm"] = g->rated_torque_Nm;
+  j["peak_torque_Nm"] = Optional(g->peak_torque_Nm);
+  j["momentary_torque_Nm"] = Optional(g->momentary_torque_Nm);
+  nlohmann::json d = {
+      {"rated_life_h", in.rated_life_h},
+      {"rated_output_speed_rpm", in.rated_output_speed_rpm},
+      {"rated_input_speed_rpm", in.rated_output_speed_rpm * ratio},
+      {"rated_by", g->rated_by},
+      {"L10h_at_rated_torque", Optional(g->rated_L10h)},
+      {"peak_limited_by", g->peak_torque_Nm ? nlohmann::json(g->peak_by) : nlohmann::json(g->peak_note)},
+      {"momentary_static_safety", in.momentary_static_safety},
+      {"momentary_limited_by", g->momentary_torque_Nm ? nlohmann::json(g->momentary_by) : nlohmann::json(g->momentary_note)},
+      {"momentary_peaks_allowed", Optional(g->momentary_peaks_allowed)},
+      {"allowable_output_speed_rpm", nullptr},
+      {"allowable_output_speed",
+       "not computed: the thermal operating point over speed is not solved for a rating (the lubricated losses "
+       "at the load's speed are in lubrication)"},
+      {"evaluations", g->evaluations},
+      {"estimated_error",
+       estimate_error
+           ? nlohmann::json{{"rated_torque_Nm", Optional(g->rated_error_Nm)},
+                            {"peak_torque_Nm", Optional(g->peak_error_Nm)},
+                            {"momentary_torque_Nm", Optional(g->momentary_error_Nm)},
+                            {"method", g->error_crank_estimated
+                                           ? "|fine - coarser grid| + |fine - half the angles|, each rating solved again"
+                                           : "|fine - coarser grid|, each rating solved again (the angles' part not "
+                                             "estimated)"}}
+           : nlohmann::json(nullptr)},
+      {"definitions",
+       "rated torque: the output torque at which the rated bearings' shortest L10 at the rated output speed equals "
+       "the rated life (one analysis per trial torque, solved, not scaled); peak torque: the largest torque within "
+       "limits.contact_stress_MPa and limits.roller_load_N; momentary torque: the largest torque at which every "
+       "rated bearing keeps s0 = C0/P0max >= momentary_static_safety; momentary peaks allowed: 1e4 / (2 (n R / 60) "
+       "t), n the output speed at the peak, R the ratio, t its duration: the strain-wave catalogues' count of input "
+       "revolutions under peak torque (docs/ratings.md)"}};
+  if (in.momentary_peaks)
+    d["momentary_peak"] = {{"output_speed_rpm", in.momentary_peaks->output_speed_rpm},
+                           {"duration_s", in.momentary_peaks->duration_s}};
+  j["ratings"] = d;
+}
+
+std::vector<DatasheetSection> RatingsDatasheetSections() {
+  return {{"Ratings",
+           {{"rated torque", "/rated_torque_Nm", "N·m", 1.0, "/ratings/error"},
+            {"rated torque, estimated discretisation error", "/ratings/estimated_error/rated_torque_Nm", "N·m"},
+            {"rated output speed", "/ratings/rated_output_speed_rpm", "rpm"},
+            {"rated life L10", "/ratings/rated_life_h", "h"},
+            {"rated torque limited by", "/ratings/rated_by", ""},
+            {"peak (acceleration) torque", "/peak_torque_Nm", "N·m", 1.0, "/ratings/peak_limited_by"},
+            {"peak torque, estimated discretisation error", "/ratings/estimated_error/peak_torque_Nm", "N·m"},
+            {"peak torque limited by", "/ratings/peak_limited_by", ""},
+            {"momentary (emergency-stop) torque", "/momentary_torque_Nm", "N·m", 1.0, "/ratings/momentary_limited_by"},
+            {"momentary torque, estimated discretisation error", "/ratings/estimated_error/momentary_torque_Nm", "N·m"},
+            {"momentary torque limited by", "/ratings/momentary_limited_by", ""},
+            {"momentary peaks allowed", "/ratings/momentary_peaks_allowed", ""},
+            {"allowable output speed", "/ratings/allowable_output_speed_rpm", "rpm", 1.0,
+             "/ratings/allowable_output_speed"}}},
+          {"Output bearing",
+           {{"type", "/output_bearing/type", ""},
+            {"equivalent dynamic load P_C", "/output_bearing/P_C_N", "N"},
+            {"L10", "/output_bearing/L10h", "h"},
+            {"oscillating-motion life", "/output_bearing/L_OC_h", "h"},
+            {"static equivalent load P_0", "/output_bearing/P0_N", "N"},
+            {"static safety f_s", "/output_bearing/static_safety", ""},
+            {"tilt under the largest moment", "/output_bearing/tilt_arcmin", "arcmin"}}}};
+}
+
+}  // namespace camopt::studies
