@@ -773,12 +773,8 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
     progress.Done();
   }
   if (s.output_bearing) {
-    try {
-      r.output_bearing = SolveOutputBearing(*s.output_bearing, s.external_loads);
-    } catch (const std::invalid_argument& e) {
-      r.output_bearing_failed = e.what();
-      r.warnings.push_back(std::string("output bearing not rated: ") + e.what());
-    }
+    r.output_bearing = TrySolveOutputBearing(*s.output_bearing, s.external_loads, &r.output_bearing_failed);
+    if (!r.output_bearing) r.warnings.push_back("output bearing not rated: " + r.output_bearing_failed);
   }
 }
 

@@ -249,13 +249,7 @@ struct Input {
              Field().Desc("the catalogue's ratings: rated torque for a rated life at a rated output speed, peak torque "
                           "from the contact limits, momentary torque from the static ratings (docs/ratings.md; needs "
                           "crank_bearing, output_mechanism, one disc)"));
-    a->Visit("output_bearing", &output_bearing,
-             Field().Desc("the output bearing (cross-roller or angular-contact pair) under external_loads: P_C, L10, "
-                          "static safety f_s, tilt (docs/ratings.md)"));
-    a->Visit("external_loads", &external_loads,
-             Field().MinItems(1, "a non-empty array of load lines").Desc(
-                 "the application's loads on the output bearing, lines of a duty cycle (the time shares sum to 1 "
-                 "within 1e-6)"));
+    VisitOutputBearing(a, &output_bearing, &external_loads);
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.

@@ -781,12 +781,8 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
     progress.Done();
   }
   if (st.output_bearing) {
-    try {
-      res.output_bearing = SolveOutputBearing(*st.output_bearing, st.external_loads);
-    } catch (const std::invalid_argument& e) {
-      res.output_bearing_failed = e.what();
-      res.notes.push_back(std::string("output bearing not rated: ") + e.what());
-    }
+    res.output_bearing = TrySolveOutputBearing(*st.output_bearing, st.external_loads, &res.output_bearing_failed);
+    if (!res.output_bearing) res.notes.push_back("output bearing not rated: " + res.output_bearing_failed);
   }
 }
 

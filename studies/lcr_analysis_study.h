@@ -169,13 +169,7 @@ struct Input {
              Field().Desc("the catalogue's ratings: rated torque for a rated life at a rated output speed, peak torque "
                           "from the contact limits, momentary torque from the static ratings (docs/ratings.md; the "
                           "rollers' ratings of reducer.input and reducer.output)"));
-    a->Visit("output_bearing", &output_bearing,
-             Field().Desc("the output bearing (cross-roller or angular-contact pair) under external_loads: P_C, L10, "
-                          "static safety f_s, tilt (docs/ratings.md)"));
-    a->Visit("external_loads", &external_loads,
-             Field().MinItems(1, "a non-empty array of load lines").Desc(
-                 "the application's loads on the output bearing, lines of a duty cycle (the time shares sum to 1 "
-                 "within 1e-6)"));
+    VisitOutputBearing(a, &output_bearing, &external_loads);
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();

@@ -61,6 +61,17 @@ OutputBearingResult SolveOutputBearing(const OutputBearingInput& in, const std::
   return r;
 }
 
+std::optional<OutputBearingResult> TrySolveOutputBearing(const OutputBearingInput& in,
+                                                         const std::vector<ExternalLoadInput>& loads,
+                                                         std::string* failed) {
+  try {
+    return SolveOutputBearing(in, loads);
+  } catch (const std::invalid_argument& e) {
+    *failed = e.what();
+    return std::nullopt;
+  }
+}
+
 nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r) {
   auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   nlohmann::json j = {

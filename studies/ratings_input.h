@@ -149,6 +149,19 @@ std::vector<ExternalLoadInput> ParseExternalLoads(const Node& root, bool output_
                                                   const std::optional<std::vector<ExternalLoadInput>>& loads,
                                                   std::optional<double> default_output_speed_rpm);
 
+/// "output_bearing" and "external_loads", as every kind that rates a reducer declares them.
+template <typename Archive>
+void VisitOutputBearing(Archive* a, std::optional<OutputBearingInput>* bearing,
+                        std::optional<std::vector<ExternalLoadInput>>* loads) {
+  a->Visit("output_bearing", bearing,
+           Field().Desc("the output bearing (cross-roller or angular-contact pair) under external_loads: P_C, L10, "
+                        "static safety f_s, tilt (docs/ratings.md)"));
+  a->Visit("external_loads", loads,
+           Field().MinItems(1, "a non-empty array of load lines").Desc(
+               "the application's loads on the output bearing, lines of a duty cycle (the time shares sum to 1 "
+               "within 1e-6)"));
+}
+
 /// The output bearing's numbers under the external loads (docs/ratings.md).
 struct OutputBearingResult {
   OutputBearingAverages<double> average;
@@ -160,6 +173,11 @@ struct OutputBearingResult {
 /// `loads` with every output speed given (the study fills the absent ones).
 /// @throws std::invalid_argument as model/common/output_bearing.h.
 OutputBearingResult SolveOutputBearing(const OutputBearingInput& in, const std::vector<ExternalLoadInput>& loads);
+
+/// SolveOutputBearing, or nullopt with `failed` saying why (a bad bearing or duty cycle).
+std::optional<OutputBearingResult> TrySolveOutputBearing(const OutputBearingInput& in,
+                                                         const std::vector<ExternalLoadInput>& loads,
+                                                         std::string* failed);
 
 /// result.json's "output_bearing".
 nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r);
