@@ -730,7 +730,8 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
       return SolveRatings(
           s.ratings->in, s.ratings->limits,
           [&](double torque_Nm) {
-            progress.Update(std::min(0.95, 0.01 * ++step), what + std::to_string(step) + " LTCA cycles");
+            ++step;
+            progress.Update(std::min(0.95, 0.01 * step), what + std::to_string(step) + " LTCA cycles");
             return cycloid_common::CycloidRatingPoint(s.ratings->in, s.ratings->life, t, angles, ratio, torque_Nm);
           },
           ratio, std::max(s.torque_Nm, 1.0));

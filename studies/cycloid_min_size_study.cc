@@ -21,6 +21,7 @@
 #include "optimizers/solver.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
+#include "studies/ratings.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -547,9 +548,25 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
 // "duty_cycle", the ratings and the output mechanism as cycloid_ltca reads them; "limits.life_h"
 // needs them. The output pins' circle is checked against the start's root radius (it is fixed:
 // the report says when the sized disc's root falls inside it).
-void ParseSizingLife(const Node& root, Study& s) {
-  const std::optional<cycloid_common::LifeSpec> life =
+void ParseSizingLife(const Node& root, const Input& in, Study& s) {
+  std::optional<cycloid_common::LifeSpec> life =
       cycloid_common::ParseLife(root, s.spec.drive, s.spec.design_torque_Nmm, true);
+  // "ratings" (docs/ratings.md, Ratings as sizing limits): the rated point as the life rows' one
+  // cycle (load.input_speed_rpm then only sets the lubricated losses' speed).
+  s.ratings = in.ratings;
+  if (in.ratings) {
+    if (in.limits.life_h)
+      root["ratings"].FailWith("the rated torque is a life limit of its own (the rated life at the rated torque and "
+                               "speed): not with limits.life_h; would fit: one of the two");
+    if (!in.duty_cycle.is_null())
+      root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
+                               "duty_cycle; would fit: one of the two");
+    if (!life) life = cycloid_common::ParseLifeRatings(root, s.spec.drive, "a rated torque is asked: ratings is given",
+                                                       true, false);
+    const double ratio = double(s.spec.drive.teeth) / double(s.spec.drive.rollers - s.spec.drive.teeth);
+    life->lines = {in.ratings->RatedLine(ratio)};
+    s.spec.limits.life_h = in.ratings->rated_life_h;
+  }
   if (s.spec.limits.life_h > 0 && !life)
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a "
                                       "duty_cycle beside limits.life_h, found neither");
@@ -660,7 +677,7 @@ Study Parse(const Node& root) {
   CheckPlausibleBox(fields, s.spec.drive.rollers);
   CheckCrowningBox(root, fields, s);
   CheckClosedFormCorner(root, fields, s);
-  ParseSizingLife(root, s);
+  ParseSizingLife(root, in, s);
   ParseSizingOutput(root, in, fields, s);
   ParseSizingLubrication(root, in, s);
   if (in.objective == "efficiency") {
@@ -788,6 +805,8 @@ nlohmann::ordered_json Input::SchemaRules() {
       all.push_back(when(crowning_type({t.type}),
                          any_of(oj::array({in("crowning", required({field})), in("variables", required({field}))}))));
   all.push_back(when(any_of(speed), required({"crank_bearing", "output_mechanism"})));
+  all.push_back(when(required({"ratings"}), required({"crank_bearing", "output_mechanism"})));
+  all.push_back(when(required({"ratings"}), negated(any_of(oj::array({required({"duty_cycle"}), given("limits", "life_h")})))));
   all.push_back(when(required({"duty_cycle"}), in("load", negated(required({"input_speed_rpm"})))));
   all.push_back(when(given("limits", "life_h"), any_of(speed)));
   for (const char* key : {"min_torsional_stiffness_Nm_per_arcmin", "max_lost_motion_arcmin", "output_pin_stress_MPa",
@@ -1089,6 +1108,12 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     b["accurate_model"] = o.check.model;
     if (s.spec.life) {
       b["life"] = SizingLifeJson(s, o.drive, acc);
+      if (s.ratings)
+        b["ratings"] = SizedRatingsJson(
+            *s.ratings, double(o.drive.teeth) / double(o.drive.rollers - o.drive.teeth), acc.shortest_life_h,
+            std::nullopt, "",
+            "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block), one LTCA cycle per trial torque: "
+            "the loaded contact's loads are not proportional to the torque");
       b["estimated_error"]["shortest_L10h"] = Finite(o.check.life_error_h, "error");
     }
     j["best"] = b;
@@ -1162,6 +1187,9 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     if (life.output.pin_count > 0) om["pin_count"] = life.output.pin_count;
     a["output_mechanism"] = om;
   }
+  if (s.ratings)  // cycloid_ltca solves the design's ratings (docs/ratings.md)
+    a["ratings"] = {{"rated_life_h", s.ratings->rated_life_h},
+                    {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm}};
   if (s.spec.output) {  // the compliant output mechanism and the datasheet at the design torque
     const objectives::CycloidSizingOutput& out = *s.spec.output;
     nlohmann::json om = {{"pins", out.pins.pins},
@@ -1431,6 +1459,10 @@ CAMOPT_REGISTER_REPORT("cycloid_min_size", {
     {"oil temperature", "/best/accurate/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true,
      "/best/estimated_error/oil_temperature_C"},
     {"lubricated loss", "/best/accurate/power_loss_W", "W"},
+    {"shortest bearing life L10h (accurate model)", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN,
+     false},
+    {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
+     "study:/ratings/rated_life_h", NAN, false},
     {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
     {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
     {"verified", "/verified", ""},

@@ -28,6 +28,7 @@
 #include "studies/input.h"
 #include "studies/lubrication_input.h"
 #include "studies/material_input.h"
+#include "studies/ratings_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::cycloid_min_size {
@@ -239,6 +240,7 @@ struct Input {
   std::optional<LubricantInput> lubricant;
   std::optional<SurfacesInput> surfaces;
   std::optional<CycloidBearingFrictionInput> bearing_friction;
+  std::optional<SizingRatingsInput> ratings;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -281,6 +283,10 @@ struct Input {
     a->Visit("bearing_friction", &bearing_friction,
              Field().Desc("Palmgren's factors of the ring pins', output rollers' and crank bearings (with lubricant; a "
                           "bearing not given is not modelled)"));
+    a->Visit("ratings", &ratings,
+             Field().Desc("the rated torque the sized drive must reach, as cycloid_ltca's ratings define it: the life "
+                          "rows over one cycle at that torque and the rated speed (docs/ratings.md, Ratings as sizing "
+                          "limits); needs crank_bearing and output_mechanism"));
   }
   /// The rules between blocks: each sized field once (in variables or its block), the drive's
   /// fields somewhere, the crowning's fields by its type, a life's blocks.
@@ -301,6 +307,8 @@ struct Study {
   /// "lubricant", "surfaces", "bearing_friction" as in the file (the best design's cycloid_ltca study
   /// takes them); null without lubricant.
   nlohmann::json lubrication_blocks;
+  /// "ratings": the rated point the life rows hold (spec.life's one line, spec.limits.life_h).
+  std::optional<SizingRatingsInput> ratings;
 };
 
 struct Result {

@@ -748,7 +748,8 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
     Progress progress("lcr_analysis ratings", ctx.quiet);
     int step = 0;
     auto at = [&](double torque_Nm) {
-      progress.Update(std::min(0.95, 0.02 * ++step), std::to_string(step) + " analyses");
+      ++step;
+      progress.Update(std::min(0.95, 0.02 * step), std::to_string(step) + " analyses");
       Study c = st;
       c.load.output_torque_Nmm = torque_Nm * 1000.0;
       LifeSpec life = st.ratings->life;

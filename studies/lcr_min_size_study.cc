@@ -20,6 +20,7 @@
 #include "studies/lcr_input.h"
 #include "studies/format.h"
 #include "studies/lcr_min_size_contact.h"
+#include "studies/ratings.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -343,7 +344,19 @@ Study Parse(const Node& root) {
   s.output_torque_Nmm = in.target.output_torque_Nm * 1000.0;
   // A life (docs/life.md): a speed or a duty cycle; its ratings are read below.
   std::string life_why;
-  const std::optional<std::vector<lcr::LcrDutyLine>> duty = ParseDutyCycle(root, s.output_torque_Nmm, &life_why);
+  std::optional<std::vector<lcr::LcrDutyLine>> duty = ParseDutyCycle(root, s.output_torque_Nmm, &life_why);
+  // "ratings" (docs/ratings.md, Ratings as sizing limits): the rated point as the life rows' one line.
+  s.ratings = in.ratings;
+  if (in.ratings) {
+    if (in.limits.life_h)
+      root["ratings"].FailWith("the rated torque is a life limit of its own (the rated life at the rated torque and "
+                               "speed): not with limits.life_h; would fit: one of the two");
+    if (!in.duty_cycle.is_null())
+      root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
+                               "duty_cycle; would fit: one of the two");
+    duty = std::vector<lcr::LcrDutyLine>{in.ratings->RatedLine(double(s.ratio))};
+    life_why = "a rated torque is asked: ratings is given";
+  }
   s.max_lobes = in.search.max_lobes;
   s.differences = in.search.roller_lobe_difference;
 
@@ -394,7 +407,7 @@ Study Parse(const Node& root) {
   b.limits.undercut_margin_mm = limits.undercut_margin_mm;
   b.limits.roller_gap_mm = limits.roller_gap_mm;
   if (limits.min_efficiency) b.limits.min_efficiency = *limits.min_efficiency;
-  b.limits.life_h = limits.life_h.value_or(0.0);
+  b.limits.life_h = in.ratings ? in.ratings->rated_life_h : limits.life_h.value_or(0.0);
   b.limits.max_outer_diameter_mm = limits.max_outer_diameter_mm.value_or(kInf);
   if (b.limits.life_h > 0 && !duty)
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a duty_cycle "
@@ -449,7 +462,8 @@ Study Parse(const Node& root) {
   }
   // The life rows and checks are those of the line model's nominal design (objectives/lcr_sizing.h).
   if (b.life && (s.contact3d || s.robust))
-    (duty->size() == 1 && in.duty_cycle.is_null() ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
+    (in.ratings ? root["ratings"]
+     : duty->size() == 1 && in.duty_cycle.is_null() ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
         .FailWith(std::string("bearing lives are sized on the line contact model without tolerances: no speed or duty "
                               "cycle together with ") + (s.contact3d ? "a 3D \"contact\"" : "\"robust\"") +
                   " (remove one of the two)");
@@ -553,7 +567,10 @@ nlohmann::ordered_json Input::SchemaRules() {
                           {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]}},
       {"if": {"required": ["duty_cycle"]},
        "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}},
-      {"if": {"anyOf": [{"required": ["duty_cycle"]},
+      {"if": {"required": ["ratings"]},
+       "then": {"not": {"anyOf": [{"required": ["duty_cycle"]},
+                                  {"required": ["limits"], "properties": {"limits": {"required": ["life_h"]}}}]}}},
+      {"if": {"anyOf": [{"required": ["duty_cycle"]}, {"required": ["ratings"]},
                         {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]},
        "then": {"allOf": [
          {"not": {"required": ["contact"],
@@ -804,6 +821,20 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
         "not computed for a sizing on the 3D contact: each limit's cost would take two more verified 3D "
         "sizings; move the limit in the study and run it again";
   if (!k.life.empty()) b["life"] = LifeJson(best.spec, k);
+  if (s.ratings && !k.life.empty()) {
+    // The rigid law's loads are proportional to the torque, so each bearing's
+    // L10(T) = L10(T_r) (T_r/T)^p (ISO 281 eq. 1, p = 3 ball, 10/3 roller) and its rated torque is
+    // T_r (L10(T_r)/L_r)^(1/p); the design's is the smallest.
+    std::optional<double> rated;
+    std::string by;
+    for (const auto& bl : k.life) {
+      const double t = s.ratings->rated_torque_Nm *
+                       std::pow(bl.life.L10h / s.ratings->rated_life_h, 1.0 / (bl.ball ? 3.0 : 10.0 / 3.0));
+      if (std::isfinite(t) && (!rated || t < *rated)) rated = t, by = bl.name;
+    }
+    b["ratings"] = SizedRatingsJson(*s.ratings, double(s.ratio), k.shortest_L10h, rated, by,
+                                    "no rated bearing is loaded");
+  }
   res["best"] = b;
   if (s.contact3d) AddContact3DJson(s, result, res);
   if (s.robust) RobustJson(s, result, res);
@@ -941,6 +972,9 @@ void Write(const Study& s, const Result& result, Outputs& out) {
         if (b.name == "eccentric_bearing") where["kind"] = b.ball ? "ball" : "roller";
       }
     }
+    if (s.ratings)  // lcr_analysis solves the design's ratings (docs/ratings.md)
+      a["ratings"] = {{"rated_life_h", s.ratings->rated_life_h},
+                      {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm}};
     if (s.contact3d) AddContact3DAnalysis(s, best, a);
     out.AddJson("best_lcr_analysis.json", a);
     AddSizedAssembly(s, a, out);
@@ -1164,6 +1198,10 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
     {"oil temperature (lubricated)", "/best/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true},
     {"lubricated loss", "/best/power_loss_W", "W"},
     {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
+    {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
+     "study:/ratings/rated_life_h", NAN, false},
+    {"rated torque (the rigid law's lives)", "/best/ratings/rated_torque_Nm", "N m", "study:/ratings/rated_torque_Nm",
+     NAN, false},
     {"binding limits", "/best/binding_names", ""},
     {"what the binding limits cost", "/best/limit_costs", ""},
     {"limit costs", "/best/limit_sensitivity_note", ""},

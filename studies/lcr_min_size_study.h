@@ -29,6 +29,7 @@
 #include "studies/lcr_tolerance_input.h"
 #include "studies/lubrication_input.h"
 #include "studies/material_input.h"
+#include "studies/ratings_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::lcr_min_size {
@@ -304,6 +305,7 @@ struct Input {
   std::optional<LubricantInput> lubricant;
   std::optional<SurfacesInput> surfaces;
   std::optional<LcrBearingFrictionInput> bearing_friction;
+  std::optional<SizingRatingsInput> ratings;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -356,6 +358,10 @@ struct Input {
     a->Visit("bearing_friction", &bearing_friction,
              Field().Desc("Palmgren's factors of the rollers' and the eccentric's bearings (with lubricant; a bearing "
                           "not given is not modelled)"));
+    a->Visit("ratings", &ratings,
+             Field().Desc("the rated torque the sized reducer must reach, as lcr_analysis's ratings define it: the "
+                          "life rows at that torque and the rated speed (docs/ratings.md, Ratings as sizing limits); "
+                          "needs the rollers' ratings, the line contact model without tolerances"));
   }
   /// The schema of "roller_catalogue": {"file"} or a list of CatalogueRollerInput.
   static nlohmann::ordered_json CatalogueSchema();
@@ -395,6 +401,8 @@ struct Study {
   /// "lubricant", "surfaces", "bearing_friction" as in the file (best_lcr_analysis.json takes them);
   /// null without lubricant.
   nlohmann::json lubrication_blocks;
+  /// "ratings": the rated point the life rows hold (base.life's one line, base.limits.life_h).
+  std::optional<SizingRatingsInput> ratings;
 };
 
 struct Candidate {

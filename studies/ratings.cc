@@ -94,6 +94,26 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
   return r;
 }
 
+nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h,
+                                const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
+                                const std::string& rated_torque_note) {
+  const bool met = shortest_L10h >= in.rated_life_h;
+  nlohmann::json j = {{"rated_torque_required_Nm", in.rated_torque_Nm},
+                      {"rated_life_h", in.rated_life_h},
+                      {"rated_output_speed_rpm", in.rated_output_speed_rpm},
+                      {"rated_input_speed_rpm", in.rated_output_speed_rpm * std::abs(ratio)},
+                      {"L10h_at_required_torque", std::isfinite(shortest_L10h) ? nlohmann::json(shortest_L10h)
+                                                                               : nlohmann::json(nullptr)},
+                      {"met", met},
+                      {"rated_torque_Nm", Optional(rated_torque_Nm)}};
+  if (rated_torque_Nm) j["rated_by"] = rated_by;
+  else j["rated_torque_note"] = rated_torque_note;
+  j["definition"] = "the sized design reaches the rated torque when every rated bearing's L10 at it and the rated "
+                    "output speed is at least rated_life_h (limits.life_h of the sizing, over that one line; "
+                    "docs/ratings.md, Ratings as sizing limits)";
+  return j;
+}
+
 void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
                     double ratio, bool estimate_error, nlohmann::json& j) {
   if (!g) {

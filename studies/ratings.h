@@ -63,6 +63,14 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
 void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
                     double ratio, bool estimate_error, nlohmann::json& j);
 
+/// best.ratings of a sizing kind (SizingRatingsInput): the rated point asked for, the sized design's
+/// shortest L10 there (the accurate model's check) and whether it reaches rated_life_h; with
+/// `rated_torque_Nm` (a kind whose lives follow a closed form in the torque) the design's own rated
+/// torque and its bearing, else `rated_torque_note` says where it is solved.
+nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h,
+                                const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
+                                const std::string& rated_torque_note);
+
 /// The datasheet's "Ratings" and "Output bearing" sections (studies/datasheet.h).
 std::vector<DatasheetSection> RatingsDatasheetSections();
 

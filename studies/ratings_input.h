@@ -4,6 +4,7 @@
 // Declared once (studies/archive.h); cycloid_ltca reads them (studies/cycloid_ratings.h).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/common/bearing_life.h"
 #include "model/common/output_bearing.h"
 #include "studies/archive.h"
 #include "studies/input.h"
@@ -52,6 +54,31 @@ struct RatingsInput {
              Field().Positive().Unit("kg/m³").Desc(
                  "the parts' density: their masses on the datasheet and the reflected inertia of joint_model "
                  "(steel: 7850)"));
+  }
+};
+
+/// "ratings" of a sizing kind (cycloid_min_size, lcr_min_size): the rated torque the sized drive must
+/// reach, as the analysis kinds' "ratings" define it (docs/ratings.md): every rated bearing's L10 at
+/// rated_torque_Nm and rated_output_speed_rpm at least rated_life_h. The sizing holds it as its life
+/// rows over the one-line duty cycle {rated_torque_Nm, rated_output_speed_rpm × ratio} with limit
+/// rated_life_h (docs/life.md, "Life as a sizing limit").
+struct SizingRatingsInput {
+  double rated_torque_Nm = 0, rated_life_h = 0, rated_output_speed_rpm = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("rated_torque_Nm", &rated_torque_Nm,
+             Field().Required().Positive().Unit("N·m").Desc(
+                 "the rated torque the sized drive must reach: every rated bearing's L10 at it and the rated speed at "
+                 "least rated_life_h (a life limit of its own: not with limits.life_h or duty_cycle)"));
+    a->Visit("rated_life_h", &rated_life_h,
+             Field().Required().Positive().Unit("h").Desc("L10 life at the rated torque and speed"));
+    a->Visit("rated_output_speed_rpm", &rated_output_speed_rpm,
+             Field().Required().Positive().Unit("rpm").Desc(
+                 "the rated output speed (the input turns ratio times faster)"));
+  }
+  /// The one-line duty cycle of the rated point: the output torque [N·mm] at input speed n_out |ratio|.
+  OperatingLine RatedLine(double ratio) const {
+    return {rated_torque_Nm * 1000.0, rated_output_speed_rpm * std::abs(ratio), 1.0};
   }
 };
 

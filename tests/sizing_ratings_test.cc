@@ -1,0 +1,128 @@
+// "ratings" in the sizing kinds (docs/ratings.md, Ratings as sizing limits): the sized design reaches
+// the rated torque asked for, checked by the analysis kind that solves ratings (lcr_analysis,
+// cycloid_ltca) run on the best design the sizing writes, not by the sizing's own numbers; and the
+// block's conflicts exit 2 naming it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/test_util.h"
+
+namespace {
+
+namespace t = camopt::testing;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string stderr_text;
+  nlohmann::json result;
+  std::filesystem::path out;
+};
+
+CliRun RunFile(const std::filesystem::path& file, const std::filesystem::path& out) {
+  const auto res = t::RunCamopt("run " + file.string() + " --quiet --out " + out.string());
+  CliRun r;
+  r.exit_code = res.exit_code;
+  r.stderr_text = res.stderr_text;
+  r.out = out;
+  if (std::filesystem::exists(out / "result.json")) r.result = nlohmann::json::parse(t::ReadFile(out / "result.json"));
+  return r;
+}
+
+CliRun RunStudy(const nlohmann::json& study, const std::string& tag) {
+  const auto dir = t::TempDir("sizing-ratings-" + tag);
+  t::WriteFile(dir / "study.json", study.dump());
+  return RunFile(dir / "study.json", dir / "out");
+}
+
+// lcr_min_size_life.json with the rated point instead of its life limit: 60 N·m for 6000 h at 15 rpm.
+nlohmann::json LcrRated() {
+  nlohmann::json s = t::Example("lcr_min_size_life.json");
+  s["limits"].erase("life_h");
+  s["load"].erase("input_speed_rpm");
+  s["load"]["friction_coefficient"] = 0.0;
+  s["ratings"] = {{"rated_torque_Nm", 60.0}, {"rated_life_h", 6000.0}, {"rated_output_speed_rpm", 15.0}};
+  return s;
+}
+
+// cycloid_min_size_quick.json with the ratio-29 life example's bearings: 15 N·m for 800 h at 30 rpm.
+nlohmann::json CycloidRated() {
+  nlohmann::json s = t::Example("cycloid_min_size_quick.json");
+  const nlohmann::json life = t::Example("cycloid_min_size_ratio29_life.json");
+  for (const char* k : {"crank_bearing", "pins", "output_mechanism"}) s[k] = life[k];
+  s["ratings"] = {{"rated_torque_Nm", 15.0}, {"rated_life_h", 800.0}, {"rated_output_speed_rpm", 30.0}};
+  return s;
+}
+
+TEST(SizingRatings, LcrSizedReducerReachesTheRatedTorqueAsLcrAnalysisSolvesIt) {
+  const CliRun run = RunStudy(LcrRated(), "lcr");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  ASSERT_TRUE(run.result["verified"].get<bool>());
+  const nlohmann::json& g = run.result["best"]["ratings"];
+  EXPECT_TRUE(g["met"].get<bool>());
+  EXPECT_GE(g["L10h_at_required_torque"].get<double>(), 6000.0);
+  // The lives' one line is the rated point: 15 rpm at the output, |r_i| = 90 times that at the input.
+  const nlohmann::json& line = run.result["best"]["life"]["duty_cycle"][0];
+  EXPECT_EQ(line["output_torque_Nm"].get<double>(), 60.0);
+  EXPECT_EQ(line["input_speed_rpm"].get<double>(), 1350.0);
+  // The life binds, so the design's rated torque is the one asked for within the sizing's tolerance.
+  const double sized = g["rated_torque_Nm"].get<double>();
+  EXPECT_GE(sized, 60.0 * (1 - 1e-9));
+  EXPECT_LT(sized, 60.0 * 1.001);
+  // lcr_analysis on the best design: its rated torque, a root search of analyses at trial torques,
+  // against the sizing's closed form of the rigid law.
+  const CliRun check = RunFile(run.out / "best_lcr_analysis.json", run.out / "analysis");
+  ASSERT_EQ(check.exit_code, 0) << check.stderr_text;
+  EXPECT_NEAR(check.result["rated_torque_Nm"].get<double>(), sized, 1e-9 * sized);
+  EXPECT_EQ(check.result["ratings"]["rated_by"], g["rated_by"]);
+}
+
+TEST(SizingRatings, CycloidSizedDriveReachesTheRatedTorqueAsCycloidLtcaSolvesIt) {
+  const CliRun run = RunStudy(CycloidRated(), "cycloid");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  ASSERT_TRUE(run.result["verified"].get<bool>());
+  const nlohmann::json& g = run.result["best"]["ratings"];
+  EXPECT_TRUE(g["met"].get<bool>());
+  EXPECT_GE(g["L10h_at_required_torque"].get<double>(), 800.0);
+  EXPECT_EQ(run.result["best"]["life"]["duty_cycle"][0]["input_speed_rpm"].get<double>(), 870.0);
+  EXPECT_TRUE(g["rated_torque_Nm"].is_null());
+  // cycloid_ltca on the best design solves the rated torque on LTCA cycles at trial torques: at
+  // least the one asked for (less its estimated error), and close to it where the life binds.
+  const CliRun check = RunFile(run.out / "best_cycloid_ltca.json", run.out / "analysis");
+  ASSERT_EQ(check.exit_code, 0) << check.stderr_text;
+  const double rated = check.result["rated_torque_Nm"].get<double>();
+  const double error = check.result["ratings"]["estimated_error"]["rated_torque_Nm"].get<double>();
+  EXPECT_GE(rated, 15.0 - error);
+  EXPECT_LT(rated, 15.0 * 1.01);
+}
+
+TEST(SizingRatings, ConflictsAndMissingBearingsExitTwoNamingTheBlock) {
+  nlohmann::json a = LcrRated();
+  a["limits"]["life_h"] = 1000;
+  CliRun r = RunStudy(a, "lcr-life");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("/ratings"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("limits.life_h"), std::string::npos) << r.stderr_text;
+
+  nlohmann::json b = CycloidRated();
+  b["duty_cycle"] = {{{"output_torque_Nm", 10}, {"input_speed_rpm", 1000}, {"time_share", 1}}};
+  r = RunStudy(b, "cycloid-duty");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("ratings"), std::string::npos) << r.stderr_text;
+
+  nlohmann::json c = CycloidRated();
+  c.erase("crank_bearing");
+  r = RunStudy(c, "cycloid-no-bearing");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("/crank_bearing"), std::string::npos) << r.stderr_text;
+
+  nlohmann::json d = LcrRated();
+  d.erase("rollers");
+  r = RunStudy(d, "lcr-no-rollers");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("/rollers"), std::string::npos) << r.stderr_text;
+}
+
+}  // namespace
