@@ -707,6 +707,33 @@ void RunSegments(const Study& s, Result& r) {
 }
 
 // Ratings, the output bearing and the parts' masses (docs/ratings.md).
+// The allowable output speed at the rated torque (docs/ratings.md): one LTCA cycle of `tca` at that
+// torque, its lubricated losses at a trial speed and the oil's limit (RatingsResult's note says
+// why when the study has no housing balance).
+void AllowableSpeed(const Study& s, const LoadedTca& tca, double ratio, RatingsResult& g) {
+  if (!s.lubrication) return;  // the default note: no lubricant
+  if (s.lubrication->common.temperature_C) {
+    g.allowable_speed_note = "not computed: the oil's temperature is given (lubricant.temperature_C); the allowable "
+                             "speed is the housing balance's thermal limit: give lubricant.thermal instead";
+    return;
+  }
+  const double torque_Nmm = g.rated_torque_Nm * 1000.0;  // one disc (ratings need discs = 1)
+  const CycleResult c = RunCycle(tca, torque_Nmm, s.crank_angles_rad);
+  if (!c.converged) {
+    g.allowable_speed_note = "not computed: the LTCA did not converge at the rated torque";
+    return;
+  }
+  const std::vector<cycloid::MeshLubricationLoads> loads = LubricationLoads(s, c.meshes, torque_Nmm);
+  Study at = s;
+  SolveAllowableSpeed(
+      [&](double n, double t) {
+        at.lubrication->common.temperature_C = t;
+        return LubricatedAt(at, loads, n).mean.total();
+      },
+      s.lubrication->common.cooling, s.lubrication->common.max_oil_temperature_C, ratio,
+      s.ratings->in.rated_output_speed_rpm * ratio, g);
+}
+
 void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
   if (s.stiffness || s.ratings) {
     const double stack = s.discs > 1 ? s.disc_spacing_mm * (s.discs - 1) + s.drive.face_width_mm : s.drive.face_width_mm;
@@ -738,6 +765,7 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
     };
     try {
       r.ratings = solve(tca, s.crank_angles_rad, "");
+      AllowableSpeed(s, tca, ratio, *r.ratings);
       if (s.estimate_error) {
         // The ratings' discretisation error as the headlines' (RefineAndEstimateErrors): the
         // ratings again on half the cells each way, and on every other crank angle (still whole
@@ -1150,6 +1178,7 @@ void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
                                         : "not modelled without a lubricant (frictionless)"},
         {"efficiency", efficiency ? nlohmann::json(*efficiency) : nlohmann::json(nullptr)},
         {"loss_table", losses}};
+    AddJointTilt(s.output_bearing, j["joint_model"]);
   }
 }
 
@@ -1578,6 +1607,7 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
     {"peak torque (contact limits)", "/peak_torque_Nm", "N m", "", NAN, true, "/ratings/estimated_error/peak_torque_Nm"},
     {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m", "", NAN, true,
      "/ratings/estimated_error/momentary_torque_Nm"},
+    {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
     {"output bearing life L10h", "/output_bearing/L10h", "h"},
     {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
     {"converged", "/converged", ""},

@@ -108,6 +108,10 @@ JointModel ParseJointModel(const Node& j) {
     m.has_efficiency = true;
     m.efficiency = Fraction(eff);
   }
+  // Results before the output bearing's tilt was part of the joint have no tilt_stiffness_Nm_per_rad.
+  if (j.Has("tilt_stiffness_Nm_per_rad") && !j["tilt_stiffness_Nm_per_rad"].json().is_null())
+    m.tilt_stiffness_Nm_per_rad = j["tilt_stiffness_Nm_per_rad"].Positive();
+  if (j.Has("tilt_note")) m.tilt_note = j["tilt_note"].String();
   for (const Node& row : j["loss_table"].Elements()) {
     JointLossRow r;
     r.input_speed_rad_s = row["input_speed_rad_s"].NonNegative();
@@ -234,7 +238,11 @@ std::string ExportMujocoXml(const ExportSource& s, const std::string& name) {
   // The stiffest mode: the flange and the output body on the spring, each against the other
   // (in the dead band; in contact the flange is held and the mode is slower). Semi-implicit Euler
   // is stable for omega dt < 2; a quarter of that keeps the ringing's frequency within ~1 %.
-  const double omega_max = std::sqrt(j.stiffness_Nm_per_rad * (2.0 / node_inertia));
+  // With the output bearing's tilt, the output body also swings about x and y on K_B against its
+  // 0.6 I (Inertial below): that mode is usually the stiffest.
+  const bool tilt = j.tilt_stiffness_Nm_per_rad > 0;
+  const double omega_max = std::max(std::sqrt(j.stiffness_Nm_per_rad * (2.0 / node_inertia)),
+                                    tilt ? std::sqrt(j.tilt_stiffness_Nm_per_rad / (0.6 * node_inertia)) : 0.0);
   const double timestep = std::min(0.002, RoundDown2(0.5 / omega_max));
   // The limit as stiff as the integrator allows: time constant 2 dt (MuJoCo's floor), critically
   // damped, impedance 0.9999 (mjMAXIMP) at any penetration: a residual compliance of
@@ -284,12 +292,20 @@ std::string ExportMujocoXml(const ExportSource& s, const std::string& name) {
     x << "       (no dead band: the backlash is 0)\n";
   x << "       " << name << "_elastic     the torsional spring, stiffness K, springref 0.\n";
   x << "     A torque T at the output, the motor side held, turns the output by backlash/2 + T/K.\n";
+  if (tilt)
+    x << "     " << name << "_tilt_x, " << name << "_tilt_y: the output bearing's moment stiffness K_B "
+      << Num(j.tilt_stiffness_Nm_per_rad) << " N m/rad\n     about x and y (a moment M tilts the output by M/K_B; "
+      << XmlCommentText(j.tilt_note) << ").\n";
+  else
+    x << "     No tilt: the result gives no output-bearing moment stiffness (the output is rigid in tilt).\n";
   x << "     The bodies " << name << "_flange and " << name << "_output carry " << Short(node_inertia)
     << " kg m2 each (" << Short(kNodeInertiaFraction * 100)
     << " % of the reflected inertia, a stand-in\n";
   x << "     for the output flange: camopt does not compute it; MuJoCo needs an inertia on a moving body).\n";
   x << "     The time step " << Short(timestep) << " s is a quarter of the stability bound of the stiffest mode,\n";
-  x << "     sqrt(K (1/I_flange + 1/I_output)) = " << Short(omega_max)
+  x << "     " << (tilt ? "max(sqrt(K (1/I_flange + 1/I_output)), sqrt(K_B / (0.6 I_output)))"
+                    : "sqrt(K (1/I_flange + 1/I_output))")
+    << " = " << Short(omega_max)
     << " rad/s; a link you attach only slows that mode.\n";
   x << "     The limit: solreflimit time constant 2 dt, critically damped, solimplimit 0.9999 (the most\n";
   x << "     MuJoCo allows): it yields 1e-4 (2 dt)^2 / I rad per N m, far below 1/K. -->\n";
@@ -322,6 +338,13 @@ std::string ExportMujocoXml(const ExportSource& s, const std::string& name) {
   x << "            <!-- catalogue stiffness " << Num(j.stiffness_Nm_per_rad) << " N m/rad -->\n";
   x << "            <joint name=\"" << name << "_elastic\" type=\"hinge\" axis=\"0 0 1\" stiffness=\""
     << Num(j.stiffness_Nm_per_rad) << "\" springref=\"0\"/>\n";
+  if (tilt) {
+    x << "            <!-- output bearing moment stiffness " << Num(j.tilt_stiffness_Nm_per_rad) << " N m/rad -->\n";
+    for (const char* axis : {"x", "y"})
+      x << "            <joint name=\"" << name << "_tilt_" << axis << "\" type=\"hinge\" axis=\""
+        << (axis[0] == 'x' ? "1 0 0" : "0 1 0") << "\" stiffness=\"" << Num(j.tilt_stiffness_Nm_per_rad)
+        << "\" springref=\"0\"/>\n";
+  }
   x << "            <geom name=\"" << name << "_output_disc\" type=\"cylinder\" size=\"" << Short(kDiscRadius_m)
     << " 0.005\" pos=\"0 0 0.005\" contype=\"0\" conaffinity=\"0\" rgba=\"0.3 0.5 0.8 1\"/>\n";
   x << "            <geom name=\"" << name << "_output_mark\" type=\"box\" size=\"0.01 0.004 0.004\" pos=\""
@@ -369,6 +392,11 @@ std::string ExportModelicaPackage(const ExportSource& s, const std::string& pack
     << " N.m/rad above.\n";
   m << "  // Lost motion " << Num(j.lost_motion_rad) << " rad (" << Num(j.lost_motion_percent)
     << " %); rated torque " << Num(j.rated_torque_Nm) << " N.m.\n";
+  if (j.tilt_stiffness_Nm_per_rad > 0)
+    m << "  // Output bearing moment (tilting) stiffness K_B about each axis across the reducer's, for a\n"
+         "  // multibody model (Modelica.Mechanics.MultiBody); the rotational Joint below has no tilt.\n"
+         "  constant Real tiltStiffness = "
+      << Num(j.tilt_stiffness_Nm_per_rad) << " \"Output bearing moment stiffness [N.m/rad]\";\n";
   m << "\n";
   m << "  model Joint \"" << ModelicaString("Reducer: input inertia, lossy gear, elasticity with backlash") << "\"\n";
   m << "    Modelica.Mechanics.Rotational.Interfaces.Flange_a flange_a \"Input (motor side)\";\n";
@@ -453,6 +481,9 @@ nlohmann::ordered_json ExportJointJson(const ExportSource& s, const std::string&
                      {"efficiency_backward_fraction", r.efficiency_backward},
                      {"friction_torque_input_Nm", r.friction_torque_input_Nm}});
   out["loss_table"] = table;
+  out["tilt_stiffness_Nm_per_rad"] =
+      j.tilt_stiffness_Nm_per_rad > 0 ? nlohmann::ordered_json(j.tilt_stiffness_Nm_per_rad) : nlohmann::ordered_json();
+  out["tilt_note"] = j.tilt_note;
   return out;
 }
 

@@ -42,6 +42,10 @@ struct JointModel {
   bool has_efficiency = false;
   double efficiency = 1.0;  ///< when has_efficiency
   std::vector<JointLossRow> loss_table;  ///< by ascending input speed; may be empty
+  /// The output bearing's moment (tilting) stiffness K_B about each axis across the reducer's; 0:
+  /// not given (the output does not tilt).
+  double tilt_stiffness_Nm_per_rad = 0.0;
+  std::string tilt_note;
 };
 
 /// What an export reads: the joint model and the provenance of the result it came from.

@@ -740,6 +740,29 @@ void RunMasses(const Study& st, Result& res) {
 
 // The ratings (studies/ratings.h) on the rigid or compliant force analysis at each trial torque and
 // the rollers' lives at the rated speed, and the output bearing.
+// The allowable output speed at the rated torque (docs/ratings.md): the lubricated losses of the
+// load model's forces at that torque, at a trial speed and the oil's limit (RatingsResult's note
+// says why when the study has no housing balance).
+void AllowableSpeed(const Study& st, double ratio, RatingsResult& g) {
+  if (!st.lubrication) return;  // the default note: no lubricant
+  const Study::Lubrication& l = *st.lubrication;
+  if (l.common.temperature_C) {
+    g.allowable_speed_note = "not computed: the oil's temperature is given (lubricant.temperature_C); the allowable "
+                             "speed is the housing balance's thermal limit: give lubricant.thermal instead";
+    return;
+  }
+  lcr::LoadCase load = st.load;
+  load.output_torque_Nmm = g.rated_torque_Nm * 1000.0;
+  const lcr::CycleLoads loads = lcr::SampleCycleLoads(st.reducer, st.material, load, st.load_model, st.angle_steps);
+  SolveAllowableSpeed(
+      [&](double n, double t) {
+        const std::vector<lcr::AngleKinematics<double>> kinematics =
+            lcr::CycleKinematics(st.reducer, st.material, loads, l.spec, n);
+        return lcr::LubricatedCycle(st.reducer, loads, kinematics, l.spec, n, t).mean.total();
+      },
+      l.common.cooling, l.common.max_oil_temperature_C, ratio, st.ratings->in.rated_output_speed_rpm * ratio, g);
+}
+
 void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
   if (st.stiffness || st.ratings) RunMasses(st, res);
   if (st.stiffness) RunStiffness(st, res);
@@ -747,10 +770,13 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
     const double ratio = std::abs(lcr::SpeedReductionRatio(st.reducer));
     Progress progress("lcr_analysis ratings", ctx.quiet);
     int step = 0;
-    auto at = [&](double torque_Nm) {
+    // The model at a torque on `steps` input angles (the study's, or half of them for the error).
+    auto at_steps = [&](int steps) {
+      return [&, steps](double torque_Nm) {
       ++step;
       progress.Update(std::min(0.95, 0.02 * step), std::to_string(step) + " analyses");
       Study c = st;
+      c.angle_steps = steps;
       c.load.output_torque_Nmm = torque_Nm * 1000.0;
       LifeSpec life = st.ratings->life;
       life.lines = {lcr::LcrDutyLine{c.load.output_torque_Nmm, st.ratings->in.rated_output_speed_rpm * ratio, 1.0}};
@@ -759,22 +785,41 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
       c.contact.given = false;  // the rollers' line contact: the sliced 3D life is not a rating
       const lcr::CycleSeries series =
           st.load_model == lcr::LoadModel::kCompliant
-              ? lcr::AnalyzeCycleCompliant(st.reducer, st.material, c.load, st.angle_steps, {true, true, false})
-              : lcr::AnalyzeCycle(st.reducer, st.material, c.load, st.angle_steps, {true, true, false});
+              ? lcr::AnalyzeCycleCompliant(st.reducer, st.material, c.load, steps, {true, true, false})
+              : lcr::AnalyzeCycle(st.reducer, st.material, c.load, steps, {true, true, false});
       RatingPoint p;
       for (const lcr::SideSeries* ss : {&series.input, &series.output}) {
         p.max_contact_stress_MPa = std::max(p.max_contact_stress_MPa, Max(ss->max_stress_MPa));
         p.max_roller_load_N = std::max(p.max_roller_load_N, Max(ss->max_force_N));
+        p.max_contact_stress_vertex_MPa = std::max(p.max_contact_stress_vertex_MPa, ParabolicPeak(ss->max_stress_MPa));
+        p.max_roller_load_vertex_N = std::max(p.max_roller_load_vertex_N, ParabolicPeak(ss->max_force_N));
       }
       const LifeResult l = RunLife(c, ctx.study_file);
       p.shortest_L10h = l.shortest_L10h;
       p.shortest = l.shortest;
       for (const BearingLifeResult& b : l.bearings) p.statics.push_back({b.name, b.rating.static_N, b.max_load_N});
       return p;
+      };
     };
     try {
-      res.ratings = SolveRatings(st.ratings->in, st.ratings->limits, at, ratio,
-                                 std::max(1.0, st.load.output_torque_Nmm / 1000.0));
+      const double start = std::max(1.0, st.load.output_torque_Nmm / 1000.0);
+      res.ratings = SolveRatings(st.ratings->in, st.ratings->limits, at_steps(st.angle_steps), ratio, start);
+      // The sampling error of the three torques: each solved again on every other input angle (the
+      // loads' peaks and the lives' equivalent loads are sampled over the revolution), |fine − half|.
+      const int half = st.angle_steps / 2;
+      if (half >= 12) {
+        const RatingsResult h = SolveRatings(st.ratings->in, st.ratings->limits, at_steps(half), ratio, start);
+        RatingsResult& f = *res.ratings;
+        f.rated_error_Nm = std::abs(f.rated_torque_Nm - h.rated_torque_Nm);
+        if (f.peak_torque_Nm && h.peak_torque_Nm)
+          f.peak_error_Nm = std::abs(*f.peak_torque_Nm - *h.peak_torque_Nm) + f.peak_sampling_error_Nm.value_or(0.0);
+        if (f.momentary_torque_Nm && h.momentary_torque_Nm)
+          f.momentary_error_Nm = std::abs(*f.momentary_torque_Nm - *h.momentary_torque_Nm);
+        f.error_method = "|fine - half the input angles (analysis.angle_steps / 2)|, each rating solved again; the "
+                         "peak torque's plus |on the sampled maxima - on their parabolic vertices|";
+        f.evaluations += h.evaluations;
+      }
+      AllowableSpeed(st, ratio, *res.ratings);
     } catch (const std::invalid_argument& e) {
       res.ratings_failed = e.what();
       res.notes.push_back(std::string("ratings not solved: ") + e.what());
@@ -909,7 +954,7 @@ namespace {
 // stiffness and stiffness_segments, masses, joint_model.
 void AddCatalogue(const Study& st, const Result& res, nlohmann::json& j) {
   const double ratio = std::abs(lcr::SpeedReductionRatio(st.reducer));
-  if (st.ratings) AddRatingsJson(st.ratings->in, res.ratings, res.ratings_failed, ratio, false, j);
+  if (st.ratings) AddRatingsJson(st.ratings->in, res.ratings, res.ratings_failed, ratio, true, j);
   if (res.output_bearing) j["output_bearing"] = OutputBearingJson(*st.output_bearing, *res.output_bearing);
   else if (st.output_bearing) j["output_bearing"] = {{"error", res.output_bearing_failed}};
   if (st.stiffness || st.ratings)
@@ -966,6 +1011,7 @@ void AddCatalogue(const Study& st, const Result& res, nlohmann::json& j) {
         {"friction_note", "not modelled in the joint (the LCR's losses are in the efficiency stage and lubrication)"},
         {"efficiency", res.lubrication ? nlohmann::json(res.lubrication->efficiency) : nlohmann::json(nullptr)},
         {"loss_table", nlohmann::json::array()}};
+    AddJointTilt(st.output_bearing, j["joint_model"]);
   }
 }
 
@@ -1478,9 +1524,12 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
     {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
     {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
     {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
-    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m"},
-    {"peak torque (contact limits)", "/peak_torque_Nm", "N m"},
-    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m"},
+    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m", "", NAN, true,
+     "/ratings/estimated_error/rated_torque_Nm"},
+    {"peak torque (contact limits)", "/peak_torque_Nm", "N m", "", NAN, true, "/ratings/estimated_error/peak_torque_Nm"},
+    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m", "", NAN, true,
+     "/ratings/estimated_error/momentary_torque_Nm"},
+    {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
     {"output bearing life L10h", "/output_bearing/L10h", "h"},
     {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
 })));

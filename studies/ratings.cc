@@ -1,12 +1,14 @@
 // The catalogue ratings of a reducer solved from its model (studies/ratings.h, docs/ratings.md).
 #include "studies/ratings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 
 #include "model/common/catalogue_ratings.h"
 #include "model/common/scalar.h"
+#include "studies/format.h"
 
 namespace camopt::studies {
 
@@ -40,6 +42,16 @@ nlohmann::json Optional(const std::optional<double>& x) {
 
 }  // namespace
 
+double ParabolicPeak(const std::vector<double>& f) {
+  const size_t n = f.size();
+  if (n < 3) return n ? *std::max_element(f.begin(), f.end()) : 0.0;
+  const size_t k = size_t(std::max_element(f.begin(), f.end()) - f.begin());
+  const double a = f[(k + n - 1) % n], b = f[k], c = f[(k + 1) % n];
+  const double curvature = a - 2 * b + c;  // < 0 at a strict maximum
+  if (!(curvature < 0)) return b;
+  return b - (c - a) * (c - a) / (8 * curvature);  // b + (c − a)² / (8 (2b − a − c))
+}
+
 RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
                            const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm) {
   std::map<double, RatingPoint> memo;
@@ -69,6 +81,21 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
     r.peak_torque_Nm = SolveTorqueForRatio([&](double t) { return peak(t).ratio; }, r.rated_torque_Nm,
                                            "the peak torque's limits");
     r.peak_by = peak(*r.peak_torque_Nm).by;
+    // The sampled maxima lie below the true ones by up to the parabola's rise between samples: the
+    // peak torque solved again on the vertex maxima gives the sampling's share of its error.
+    const RatingPoint& at_peak = eval(*r.peak_torque_Nm);
+    if (at_peak.max_contact_stress_vertex_MPa > 0 || at_peak.max_roller_load_vertex_N > 0) {
+      auto vertex = [&](double t) {
+        const RatingPoint& p = eval(t);
+        Capacity c;
+        if (limits.contact_stress_MPa) c.Add(*limits.contact_stress_MPa, p.max_contact_stress_vertex_MPa, "stress");
+        if (limits.roller_load_N) c.Add(*limits.roller_load_N, p.max_roller_load_vertex_N, "force");
+        return c;
+      };
+      r.peak_sampling_error_Nm = std::abs(
+          *r.peak_torque_Nm - SolveTorqueForRatio([&](double t) { return vertex(t).ratio; }, *r.peak_torque_Nm,
+                                                  "the peak torque's limits between samples"));
+    }
   } else {
     r.peak_note = "not computed: no limits.contact_stress_MPa or limits.roller_load_N";
   }
@@ -92,6 +119,34 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
     r.momentary_note = "not computed: no rated bearing has a static rating (static_rating_N)";
   }
   return r;
+}
+
+void SolveAllowableSpeed(const std::function<double(double, double)>& loss_W, const HousingCooling& cooling,
+                         double limit_C, double ratio, double guess_input_rpm, RatingsResult& g) {
+  const double heat_path_W = cooling.conductance_W_per_K() * (limit_C - cooling.ambient_C);
+  if (!(heat_path_W > 0)) {
+    g.allowable_speed_note = "not computed: the oil's limit is not above the ambient (no heat path)";
+    return;
+  }
+  int evaluations = 0;
+  try {
+    const double n_in = ThermalSpeedLimit(
+        [&](double n) {
+          ++evaluations;
+          const double w = loss_W(n, limit_C);
+          if (!std::isfinite(w) || w < 0)
+            throw std::invalid_argument("the loss at " + Format(n, 6) + " rpm is not a finite number >= 0");
+          return w;
+        },
+        heat_path_W, guess_input_rpm);
+    g.allowable_output_speed_rpm = n_in / ratio;
+    g.allowable_speed_note = "the output speed at which the housing's balance at the rated torque puts the oil at "
+                             "lubricant.thermal.max_oil_temperature_C (" + Format(limit_C, 6) + " °C; heat path " +
+                             Format(heat_path_W, 6) + " W); " + std::to_string(evaluations) +
+                             " loss evaluations (docs/ratings.md)";
+  } catch (const std::invalid_argument& e) {
+    g.allowable_speed_note = std::string("not computed: ") + e.what();
+  }
 }
 
 nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h,
@@ -134,17 +189,16 @@ void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& 
       {"momentary_static_safety", in.momentary_static_safety},
       {"momentary_limited_by", g->momentary_torque_Nm ? nlohmann::json(g->momentary_by) : nlohmann::json(g->momentary_note)},
       {"momentary_peaks_allowed", Optional(g->momentary_peaks_allowed)},
-      {"allowable_output_speed_rpm", nullptr},
-      {"allowable_output_speed",
-       "not computed: the thermal operating point over speed is not solved for a rating (the lubricated losses "
-       "at the load's speed are in lubrication)"},
+      {"allowable_output_speed_rpm", Optional(g->allowable_output_speed_rpm)},
+      {"allowable_output_speed", g->allowable_speed_note},
       {"evaluations", g->evaluations},
       {"estimated_error",
        estimate_error
            ? nlohmann::json{{"rated_torque_Nm", Optional(g->rated_error_Nm)},
                             {"peak_torque_Nm", Optional(g->peak_error_Nm)},
                             {"momentary_torque_Nm", Optional(g->momentary_error_Nm)},
-                            {"method", g->error_crank_estimated
+                            {"method", !g->error_method.empty() ? g->error_method
+                                       : g->error_crank_estimated
                                            ? "|fine - coarser grid| + |fine - half the angles|, each rating solved again"
                                            : "|fine - coarser grid|, each rating solved again (the angles' part not "
                                              "estimated)"}}

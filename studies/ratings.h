@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/common/thermal.h"
 #include "studies/datasheet.h"
 #include "studies/ratings_input.h"
 
@@ -27,8 +28,16 @@ struct RatingPoint {
   double shortest_L10h = 0;   ///< the rated bearings' shortest L10 at the rated output speed
   std::string shortest;       ///< which
   double max_contact_stress_MPa = 0, max_roller_load_N = 0;
+  /// The two maxima refined between samples (the vertex of the parabola through the largest sample
+  /// and its neighbours), for the peak torque's sampling error; 0: the kind gives none.
+  double max_contact_stress_vertex_MPa = 0, max_roller_load_vertex_N = 0;
   std::vector<RatedStatic> statics;
 };
+
+/// The vertex of the parabola through a periodic series' largest sample and its two neighbours:
+/// the maximum between samples to second order (the series itself when it has fewer than 3 samples
+/// or is not concave there).
+double ParabolicPeak(const std::vector<double>& periodic_series);
 
 /// The limits the peak torque is read from (the study's "limits"); absent: not a limit.
 struct PeakLimits {
@@ -47,8 +56,25 @@ struct RatingsResult {
   int evaluations = 0;             ///< analyses at a torque
   /// Discretisation errors of the three torques (set by the kind when it estimates errors).
   std::optional<double> rated_error_Nm, peak_error_Nm, momentary_error_Nm;
+  /// With the kind's vertex maxima: |peak torque on the sampled maxima − on the vertex maxima|, the
+  /// sampling's share of the peak torque's error (SolveRatings; the kind adds it to peak_error_Nm).
+  std::optional<double> peak_sampling_error_Nm;
   bool error_crank_estimated = false;
+  /// How the kind estimated them (result.json ratings.estimated_error.method); empty: the cycloid's.
+  std::string error_method;
+  /// The thermal allowable output speed at the rated torque (SolveAllowableSpeed); absent: `note` why.
+  std::optional<double> allowable_output_speed_rpm;
+  std::string allowable_speed_note =
+      "not computed: no lubricant (the allowable speed is the thermal limit of the lubricated losses; "
+      "docs/lubrication.md)";
 };
+
+/// RatingsResult's allowable output speed: the output speed at which the housing's balance at the
+/// rated torque puts the oil at `limit_C` (ThermalSpeedLimit, model/common/catalogue_ratings.h).
+/// `loss_W(input_rpm, oil_C)` the kind's lubricated loss at the rated torque; `ratio` input turns per
+/// output turn; `guess_input_rpm` where the search starts. A speed that cannot be solved leaves the speed absent and says why in the note.
+void SolveAllowableSpeed(const std::function<double(double, double)>& loss_W, const HousingCooling& cooling,
+                         double limit_C, double ratio, double guess_input_rpm, RatingsResult& g);
 
 /// Solves the ratings: `at(T)` the model at output torque T [N·m] (asked once per torque: the
 /// searches' repeats are remembered here), `ratio` input turns per output turn, `start_torque_Nm`

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "model/common/catalogue_ratings.h"
+
 #include "studies/format.h"
 
 namespace camopt::studies {
@@ -100,6 +102,16 @@ nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBeari
        "n_1) (90/theta) (C/(f_w P_C))^B with theta half the oscillating angle; P0 = F_rmax + 2 M_max/d_p + 0.44 "
        "F_amax, f_s = C0/P0; tilt = M_max / moment stiffness"}};
   return j;
+}
+
+void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& joint_model) {
+  if (in && in->moment_stiffness_Nm_per_arcmin) {
+    joint_model["tilt_stiffness_Nm_per_rad"] = *in->moment_stiffness_Nm_per_arcmin * kArcminPerRad;
+    joint_model["tilt_note"] = "output_bearing.moment_stiffness_Nm_per_arcmin (the catalogue's K_B, linear)";
+  } else {
+    joint_model["tilt_stiffness_Nm_per_rad"] = nullptr;
+    joint_model["tilt_note"] = "not given: no output_bearing.moment_stiffness_Nm_per_arcmin (rigid in tilt)";
+  }
 }
 
 }  // namespace camopt::studies

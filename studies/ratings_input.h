@@ -209,4 +209,8 @@ std::optional<OutputBearingResult> TrySolveOutputBearing(const OutputBearingInpu
 /// result.json's "output_bearing".
 nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r);
 
+/// joint_model's "tilt_stiffness_Nm_per_rad" (the output bearing's moment stiffness K_B, the output's
+/// tilt about each axis across the reducer's; null when not given) and "tilt_note".
+void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& joint_model);
+
 }  // namespace camopt::studies

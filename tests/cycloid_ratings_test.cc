@@ -231,4 +231,47 @@ TEST(CycloidRatings, BadCatalogueInputIsRejectedWithItsPath) {
   t::ExpectStudyRejected(s, "no-crank-bearing", "/crank_bearing", "ratings");
 }
 
+// The allowable output speed (docs/ratings.md): the output speed at which the housing's balance at
+// the rated torque puts the oil at its limit. Checked by the kind's own thermal balance
+// (SolveOperatingTemperature, a different root search): the drive run at the rated torque and just
+// below that speed has its oil at 120 °C, just above it has no equilibrium below 120 °C, at 80 % of
+// the speed it runs cooler. The lubricant, surfaces and
+// bearing friction of cycloid_ltca_lubricated.json (the same drive); the output rollers' friction
+// dropped (this drive's output pins have no rollers).
+TEST(CycloidRatings, AllowableOutputSpeedPutsTheOilAtItsLimit) {
+  nlohmann::json study = Quick();
+  const nlohmann::json lub = t::Example("cycloid_ltca_lubricated.json");
+  for (const char* k : {"lubricant", "surfaces", "bearing_friction"}) study[k] = lub[k];
+  study["bearing_friction"].erase("output_rollers");
+  study["load"]["input_speed_rpm"] = 300;
+  const CliRun run = RunStudy(study, "allowable");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const nlohmann::json& g = run.result["ratings"];
+  ASSERT_TRUE(g["allowable_output_speed_rpm"].is_number()) << g["allowable_output_speed"];
+  const double n = g["allowable_output_speed_rpm"].get<double>(), rated = run.result["rated_torque_Nm"].get<double>();
+  std::printf("[ ratings  ] allowable output speed %.6f rpm at the rated %.4f N m\n", n, rated);
+  nlohmann::json at = AtTorque(study, rated, n);
+  // Just below the speed the oil settles at the limit; just above there is no equilibrium below it.
+  at["load"]["input_speed_rpm"] = (1 - 1e-7) * n * 15.0;
+  const CliRun hot = RunStudy(at, "allowable-at");
+  ASSERT_EQ(hot.exit_code, 0) << hot.stderr_text;
+  EXPECT_NEAR(hot.result["lubrication"]["oil_temperature_C"].get<double>(), 120.0, 1e-4);
+  at["load"]["input_speed_rpm"] = (1 + 1e-6) * n * 15.0;
+  const CliRun over = RunStudy(at, "allowable-over");
+  EXPECT_EQ(over.exit_code, 3);
+  EXPECT_NE(over.stderr_text.find("no thermal equilibrium"), std::string::npos) << over.stderr_text;
+  at["load"]["input_speed_rpm"] = 0.8 * n * 15.0;
+  const CliRun cooler = RunStudy(at, "allowable-cooler");
+  ASSERT_EQ(cooler.exit_code, 0) << cooler.stderr_text;
+  EXPECT_LT(cooler.result["lubrication"]["oil_temperature_C"].get<double>(), 119.0);
+  // A given oil temperature has no balance: no speed, and the note says what would give one.
+  study["lubricant"].erase("thermal");
+  study["lubricant"]["temperature_C"] = 60;
+  const CliRun fixed = RunStudy(study, "allowable-fixed");
+  ASSERT_EQ(fixed.exit_code, 0) << fixed.stderr_text;
+  EXPECT_TRUE(fixed.result["ratings"]["allowable_output_speed_rpm"].is_null());
+  EXPECT_NE(fixed.result["ratings"]["allowable_output_speed"].get<std::string>().find("lubricant.thermal"),
+            std::string::npos);
+}
+
 }  // namespace

@@ -329,6 +329,56 @@ TEST(ExportMujoco, NoBacklashNoDeadBandJoint) {
   EXPECT_EQ(mj_name2id(mj.m, mjOBJ_JOINT, "drive_350_backlash"), -1);
 }
 
+// The output bearing's moment stiffness K_B (joint_model.tilt_stiffness_Nm_per_rad, SHA32A-SG's
+// 100e4 N m/rad): two hinges on the output body about x and y, each with stiffness K_B. A moment
+// M about x on the output body, at rest (critical damping added to the tilt hinges, as the elastic
+// one above), tilts it by M/K_B about x and not about y or z; the hinges add no torsional
+// compliance (a torque about z still turns it by b/2 + T/K). Without the field there is no tilt
+// hinge (NoBacklashNoDeadBandJoint's count).
+TEST(ExportMujoco, OutputBearingTiltStiffnessTiltsTheOutputByMomentOverKb) {
+  constexpr double kKb = 1.0e6, kMoment = 300.0;
+  nlohmann::json result = Fixture();
+  result["joint_model"]["tilt_stiffness_Nm_per_rad"] = kKb;
+  result["joint_model"]["tilt_note"] = "catalogue K_B";
+  const std::string xml = camopt::studies::ExportMujocoXml(Source(result), "drive_350");
+  Mj mj;
+  Load(mj, xml, "tilt");
+  ASSERT_NE(mj.m, nullptr);
+  mjModel* m = mj.m;
+  mjData* d = mj.d;
+  EXPECT_EQ(m->njnt, 5);
+  const int tx = Id(m, mjOBJ_JOINT, "drive_350_tilt_x"), ty = Id(m, mjOBJ_JOINT, "drive_350_tilt_y");
+  const int out = Id(m, mjOBJ_BODY, "drive_350_output");
+  EXPECT_EQ(m->jnt_stiffness[tx], kKb);
+  EXPECT_EQ(m->jnt_stiffness[ty], kKb);
+  const double i_tilt = 0.6 * 0.1 * kInertia;  // the output body's stand-in inertia about x and y
+  // The tilt mode on K_B is the stiffest: the time step is a quarter of its stability bound.
+  EXPECT_LE(m->opt.timestep, 0.5 / std::sqrt(kKb / i_tilt));
+  for (int j : {tx, ty}) m->dof_damping[m->jnt_dofadr[j]] = 2 * std::sqrt(kKb * i_tilt);
+  d->xfrc_applied[6 * out + 3] = kMoment;  // a moment about x on the output body, world frame
+  const int steps = static_cast<int>(0.05 / m->opt.timestep);
+  for (int k = 0; k < steps; ++k) mj_step(m, d);
+  mj_forward(m, d);
+  const double qx = d->qpos[m->jnt_qposadr[tx]], qy = d->qpos[m->jnt_qposadr[ty]];
+  std::printf("[ export   ] tilt under %.0f N m: %.10e rad, M/K_B %.10e rad, about y %.1e rad\n", kMoment, qx,
+              kMoment / kKb, qy);
+  EXPECT_NEAR(qx, kMoment / kKb, 1e-9 * kMoment / kKb);
+  EXPECT_NEAR(qy, 0.0, 1e-12);
+  const mjtNum* q = d->xquat + 4 * out;  // the body's world orientation: a rotation about x only
+  EXPECT_NEAR(2 * std::atan2(q[1], q[0]), kMoment / kKb, 1e-9 * kMoment / kKb);
+  for (int w = 0; w < mjNWARNING; ++w) EXPECT_EQ(d->warning[w].number, 0) << "MuJoCo warning " << w;
+  // The same model turns by b/2 + T/K under a torque about z.
+  Joint joint;
+  joint.xml = xml;
+  const Rest r = SimulateToRest(kRated, 1e6, 0.3, &joint);
+  EXPECT_NEAR(r.rotation, kBacklash / 2 + kRated / kK, r.limit_yield + 1e-12);
+  // joint.json and the Modelica package carry it too.
+  EXPECT_EQ(camopt::studies::ExportJointJson(Source(result), "drive_350")["tilt_stiffness_Nm_per_rad"], kKb);
+  EXPECT_TRUE(camopt::studies::ExportJointJson(Source(), "drive_350")["tilt_stiffness_Nm_per_rad"].is_null());
+  EXPECT_NE(camopt::studies::ExportModelicaPackage(Source(result), "Drive350").find("tiltStiffness = 1000000"),
+            std::string::npos);
+}
+
 // ---- Modelica --------------------------------------------------------------------------------
 
 struct Token {

@@ -136,4 +136,52 @@ TEST(LcrRatings, SegmentsInertiaAndDatasheet) {
   EXPECT_EQ(exported.exit_code, 0) << exported.stderr_text;
 }
 
+// The allowable output speed (docs/ratings.md): the output speed at which the housing's balance at
+// the rated torque puts the oil at its limit, checked by the kind's own thermal balance
+// (SolveOperatingTemperature): LCR II run at the rated torque and just below that speed has its oil
+// at 120 °C, just above it has no equilibrium below 120 °C, at 80 % of it runs cooler. The lubricant, surfaces and bearing friction of lcr_ii_lubricated.json.
+TEST(LcrRatings, AllowableOutputSpeedPutsTheOilAtItsLimit) {
+  nlohmann::json study = Quick();
+  const nlohmann::json lub = t::Example("lcr_ii_lubricated.json");
+  for (const char* k : {"lubricant", "surfaces", "bearing_friction"}) study[k] = lub[k];
+  study["load"]["input_speed_rpm"] = 1500;
+  const CliRun run = RunStudy(study, "allowable");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const nlohmann::json& g = run.result["ratings"];
+  ASSERT_TRUE(g["allowable_output_speed_rpm"].is_number()) << g["allowable_output_speed"];
+  const double n = g["allowable_output_speed_rpm"].get<double>(), rated = run.result["rated_torque_Nm"].get<double>();
+  const double ratio = std::abs(run.result["speed_ratio"].get<double>());
+  std::printf("[ ratings  ] allowable output speed %.6f rpm at the rated %.4f N m\n", n, rated);
+  // Just below the speed the oil settles at the limit; just above there is no equilibrium below it.
+  const CliRun hot = RunStudy(AtTorque(study, rated, (1 - 1e-7) * n * ratio), "allowable-at");
+  ASSERT_EQ(hot.exit_code, 0) << hot.stderr_text;
+  EXPECT_NEAR(hot.result["lubrication"]["oil_temperature_C"].get<double>(), 120.0, 1e-4);
+  const CliRun over = RunStudy(AtTorque(study, rated, (1 + 1e-6) * n * ratio), "allowable-over");
+  EXPECT_EQ(over.exit_code, 3);
+  EXPECT_NE(over.stderr_text.find("no thermal equilibrium"), std::string::npos) << over.stderr_text;
+  const CliRun cooler = RunStudy(AtTorque(study, rated, 0.8 * n * ratio), "allowable-cooler");
+  ASSERT_EQ(cooler.exit_code, 0) << cooler.stderr_text;
+  EXPECT_LT(cooler.result["lubrication"]["oil_temperature_C"].get<double>(), 119.0);
+}
+
+// The three torques' estimated sampling errors (|fine − half the input angles|) bound their
+// distance from the same ratings on eight times the angles (2880 against the test's 360).
+TEST(LcrRatings, EstimatedErrorsBoundTheConvergedRatings) {
+  const CliRun fine = RunStudy(Quick(), "error-fine");
+  ASSERT_EQ(fine.exit_code, 0) << fine.stderr_text;
+  nlohmann::json dense = Quick();
+  dense["analysis"]["angle_steps"] = 2880;
+  const CliRun converged = RunStudy(dense, "error-converged");
+  ASSERT_EQ(converged.exit_code, 0) << converged.stderr_text;
+  const nlohmann::json& e = fine.result["ratings"]["estimated_error"];
+  EXPECT_NE(e["method"].get<std::string>().find("half the input angles"), std::string::npos);
+  for (const char* key : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"}) {
+    const double f = fine.result[key].get<double>(), c = converged.result[key].get<double>();
+    const double estimate = e[key].get<double>();
+    std::printf("[ ratings  ] %s: 360 angles %.9f, 2880 angles %.9f, |difference| %.3e, estimate %.3e\n", key, f, c,
+                std::abs(f - c), estimate);
+    EXPECT_LE(std::abs(f - c), estimate + 1e-9 * c) << key;
+  }
+}
+
 }  // namespace

@@ -434,4 +434,37 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
   return std::exp(best);
 }
 
+/// The allowable (thermal) input speed of a lubricated drive at one torque: the speed n at which the
+/// housing's heat balance (model/common/thermal.h) puts the oil at its highest allowed temperature
+/// t_max, P_loss(n, t_max) = k A (t_max − t_amb) = `heat_path_W`. With the loss increasing in n at a
+/// fixed temperature and falling with the temperature (the viscosity falls), the balance
+/// g(t) = P_loss(n, t) − k A (t − t_amb) has its root below t_max exactly for n below this speed: the
+/// catalogues' "allowable speed" read as the thermal limit (Nabtesco's allowable output speed at
+/// the rated torque, Harmonic Drive's limit for the average input speed).
+/// Method: RatedTorqueForLife on the headroom k A (t_max − t_amb) / P_loss(n, t_max), decreasing in n,
+/// for the target 1 (bracket from the guess, then Illinois regula falsi on ln headroom against ln n).
+/// @param loss_at_limit_W callable double(double n_rpm): the loss [W] at input speed n and t_max; >= 0.
+/// @throws std::invalid_argument for heat_path_W <= 0 or a loss that never reaches the heat path
+/// within 2^100 of the guess (or exceeds it at every speed).
+template <typename LossFn>
+double ThermalSpeedLimit(const LossFn& loss_at_limit_W, double heat_path_W, double speed_guess_rpm,
+                         double rel_tolerance = kRatedTorqueRelTolerance) {
+  catalogue_ratings_internal::CheckPositive("heat_path_W", heat_path_W);
+  const auto headroom = [&](double n) {
+    const double loss = loss_at_limit_W(n);
+    return loss > 0.0 ? heat_path_W / loss : std::numeric_limits<double>::infinity();
+  };
+  try {
+    return RatedTorqueForLife(headroom, 1.0, speed_guess_rpm, rel_tolerance);
+  } catch (const std::invalid_argument&) {
+    const double at_guess = loss_at_limit_W(speed_guess_rpm);
+    std::ostringstream os;
+    os.precision(6);
+    os << "thermal speed limit: the loss at the oil's limit (" << at_guess << " W at " << speed_guess_rpm
+       << " rpm) " << (at_guess < heat_path_W ? "never reaches" : "stays above") << " the housing's heat path of "
+       << heat_path_W << " W over 2^100 of that speed";
+    throw std::invalid_argument(os.str());
+  }
+}
+
 }  // namespace camopt
