@@ -3,9 +3,10 @@
 
 Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR]
 
-For each of seven examples (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives: its
-life table and life.svg, a drive train's rigidity, a disc-cam sizing, a disc cam) and a small sweep
-(its report.html and Pareto plot) it runs camopt, then checks report.html:
+For each of the examples below (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives:
+its life table and life.svg, a drive train's rigidity, a disc-cam sizing, a disc cam, the cycloid's
+and the LCR's catalogue pages) and a small sweep (its report.html and Pareto plot) it runs camopt,
+then checks report.html:
   * statically: self-contained (no src/href/url() other than data: and in-page #anchors, no
     <script>), every inline <svg> is well-formed XML, one inline plot per .svg file of the run;
   * in Chromium, one start per report (--headless --screenshot, with --enable-logging=stderr
@@ -15,7 +16,8 @@ life table and life.svg, a drive train's rigidity, a disc-cam sizing, a disc cam
     "INFO:CONSOLE:<line>] ...".
 Exit 77 (ctest SKIP_RETURN_CODE) only when no Chromium is installed; scripts/install_deps.sh
 installs Debian's chromium, so CI runs it. With SCREENSHOT_DIR, the screenshots are copied there
-(docs/images/ is made that way).
+(docs/images/ is made that way). The catalogue examples' datasheet.html too: every number read back
+from the rendered DOM against result.json, and printed to a PDF by scripts/datasheet_pdf.sh.
 """
 import html as html_lib
 import json
@@ -36,12 +38,14 @@ EXAMPLES = [  # (example, screenshot name); "sweep:" a sweep written by sweep_fi
     ("disc_cam_min_size", "report_disc_cam_min_size.png"),
     ("disc_cam_translating", "report_disc_cam.png"),
     ("cycloid_catalogue", "report_cycloid_catalogue.png"),
+    ("lcr_catalogue", "report_lcr_catalogue.png"),
 ]
 
 # Other pages of a run rendered the same way (page, screenshot name): the datasheet, whose every
 # number is also read back from the rendered DOM against result.json (datasheet_checks).
 PAGES = {
     "cycloid_catalogue": [("datasheet.html", "datasheet_cycloid.png")],
+    "lcr_catalogue": [("datasheet.html", "datasheet_lcr.png")],
 }
 
 # What a kind's report is for, drawn (file of the run, text it must hold): the rigidity chain with
@@ -166,6 +170,31 @@ def datasheet_checks(dom, result):
     return errors
 
 
+def pdf_checks(source, out, result):
+    """scripts/datasheet_pdf.sh prints the datasheet to a PDF beside the result folder: a PDF whose
+    text (pdftotext, Debian's poppler-utils, when installed) holds the rated torque as the page
+    shows it and its JSON pointer."""
+    pdf = out + "_datasheet.pdf"
+    if os.path.exists(pdf):
+        os.remove(pdf)
+    run = subprocess.run([os.path.join(source, "scripts", "datasheet_pdf.sh"), out], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, timeout=120)
+    if run.returncode != 0 or run.stdout.strip() != pdf:
+        return ["datasheet_pdf.sh exit %d (%s): %s" % (run.returncode, run.stdout.strip(), run.stderr.strip())]
+    with open(pdf, "rb") as f:
+        if f.read(5) != b"%PDF-":
+            return ["%s is not a PDF" % pdf]
+    if not shutil.which("pdftotext"):
+        print("  pdf: %s written (%d bytes; no pdftotext to read it back)" % (pdf, os.path.getsize(pdf)))
+        return []
+    text = subprocess.run(["pdftotext", pdf, "-"], stdout=subprocess.PIPE, text=True, timeout=60).stdout
+    rated = "%.6g" % result["rated_torque_Nm"]
+    errors = [] if rated in text and "/rated_torque_Nm" in text else [
+        "the PDF's text lacks the rated torque %s or its pointer" % rated]
+    print("  pdf: %d bytes, rated torque %s N m read back" % (os.path.getsize(pdf), rated))
+    return errors
+
+
 def pixel_checks(png_path):
     from PIL import Image  # Debian python3-pil
     im = Image.open(png_path).convert("RGB")
@@ -250,6 +279,7 @@ def main():
                 result = json.load(f)
             shutil.rmtree(profile, ignore_errors=True)
             errors += datasheet_checks(dump_dom(chromium, page_path, profile), result)
+            errors += pdf_checks(source, out, result)
             page_png = os.path.join(work, page_shot)
             shutil.rmtree(profile, ignore_errors=True)
             code, log = render(chromium, page_path, page_png, profile)
