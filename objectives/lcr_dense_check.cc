@@ -147,6 +147,15 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
       c.life.push_back(std::move(b));
     }
     if (lim.life_h > 0) lower("life_h", c.shortest_L10h, lim.life_h);
+    if (lim.min_static_safety > 0 && lim.static_torque_Nmm > 0) {
+      double line_torque = 0.0;
+      for (const lcr::LcrDutyLine& l : life.lines) line_torque = std::max(line_torque, l.output_torque_Nmm);
+      for (const LcrBearingLifeCheck& b : c.life)
+        if (b.static_rating_N > 0 && b.life.max_load_N > 0 && line_torque > 0)
+          c.min_static_safety = std::min(
+              c.min_static_safety, b.static_rating_N / (b.life.max_load_N * lim.static_torque_Nmm / line_torque));
+      lower("min_static_safety", c.min_static_safety, lim.min_static_safety);
+    }
   }
   for (const DesignIssue& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
 

@@ -19,7 +19,7 @@ namespace camopt::objectives {
 struct LcrViolation {
   std::string limit;      ///< "contact_stress_MPa", "roller_load_N", "undercut_margin_mm",
                           ///< "roller_gap_mm", "min_efficiency", "max_oil_temperature_C", "life_h",
-                          ///< "max_outer_diameter_mm"
+                          ///< "max_outer_diameter_mm", "min_static_safety"
   double value = 0.0;     ///< the design's worst value of that quantity (both cams)
   double limit_value = 0.0;
   /// By how much, in the limit's unit, positive: value − limit for upper limits, limit − value
@@ -57,6 +57,10 @@ struct LcrDenseCheck {
   /// shortest_L10h the least of them (+∞ without spec.life).
   std::vector<LcrBearingLifeCheck> life;
   double shortest_L10h = kInf;
+  /// With limits.min_static_safety: the smallest s0 = C0/P0max of the bearings with a static rating at
+  /// limits.static_torque_Nmm (each max load scaled from its duty line of largest torque: the rigid
+  /// law's loads are proportional to the torque); +∞ without.
+  double min_static_safety = kInf;
   std::vector<LcrViolation> violations;
   std::vector<std::string> design_problems;  ///< lcr::CheckDesign, "field: message"
   bool ok() const { return violations.empty() && design_problems.empty(); }

@@ -59,6 +59,15 @@ double ForceReference(const LcrSizingSpec& s) {
 // The life rows are present (header, LcrLimits::life_h).
 bool LifeRows(const LcrSizingSpec& s) { return s.limits.life_h > 0 && s.life.has_value(); }
 
+// The static rows (header, LcrLimits::min_static_safety): which bearings have one.
+bool StaticRows(const LcrSizingSpec& s) {
+  return s.limits.min_static_safety > 0 && s.limits.static_torque_Nmm > 0 && s.life.has_value();
+}
+bool RollerStaticRows(const LcrSizingSpec& s) { return StaticRows(s) && s.life->roller.static_N > 0; }
+bool EccentricStaticRow(const LcrSizingSpec& s) {
+  return StaticRows(s) && s.life->eccentric && s.life->eccentric->static_N > 0;
+}
+
 // The oil temperature's row: the housing's balance with a finite limit.
 bool TemperatureRow(const LcrSizingSpec& s) {
   return s.lubrication && !s.lubrication->temperature_C && std::isfinite(s.limits.max_oil_temperature_C);
@@ -91,6 +100,11 @@ std::vector<OutputBlock> Blocks(const LcrSizingSpec& s) {
     sizes.push_back({"output_roller_life", 1});
     if (s.life->eccentric) sizes.push_back({"eccentric_bearing_life", 1});
   }
+  if (RollerStaticRows(s)) {
+    sizes.push_back({"input_roller_static", 1});
+    sizes.push_back({"output_roller_static", 1});
+  }
+  if (EccentricStaticRow(s)) sizes.push_back({"eccentric_bearing_static", 1});
   if (PowerLossObjective(s)) sizes.push_back({"power_loss_W", 1});
   std::vector<OutputBlock> blocks;
   int offset = 0;
@@ -201,8 +215,16 @@ int EccentricSamples(const LcrSizingSpec& s) {
 // input revolution. The rigid load law is linear in the output torque (forces.h: C_A, C_B ∝ T_o), so
 // duty line i has P_i = P·T_i/T_o at speed R n_i; Palmgren–Miner over the lines and C at the roller's
 // size give LifeMargin (model/common/bearing_life.h): one smooth row per bearing, in logarithms.
+// With the static rows (LcrLimits::min_static_safety) also ln(C0 / (s0_min P0max)) of each bearing
+// with a static rating, P0max the soft maximum of the same sampled loads (the aggregate force
+// rows' log-sum-exp: smooth, and above the largest sample, so the row errs on the safe side; the
+// dense check holds the true maximum on its own grid).
 template <typename T>
-void LifeMargins(const LcrSizingSpec& s, const lcr::Reducer<T>& r, std::vector<T>& out) {
+void LifeMargins(const LcrSizingSpec& s, const lcr::Reducer<T>& r, std::vector<T>& out, std::vector<T>& statics) {
+  const auto largest = [&](const std::vector<T>& v) { return lcr::ScaledSoftMax(v, ForceReference(s), s.sharpness); };
+  const auto static_row = [&](const T& c0, const T& p0) {
+    return log(c0) - log(T(s.limits.min_static_safety * s.limits.static_torque_Nmm / s.output_torque_Nmm) * p0);
+  };
   const LcrLifeSpec& life = *s.life;
   const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
   auto margin = [&](const T& p_design, const T& revolutions, const T& rating, BearingKind kind) {
@@ -231,7 +253,11 @@ void LifeMargins(const LcrSizingSpec& s, const lcr::Reducer<T>& r, std::vector<T
     revolutions /= T(double(spin.size()));
     const lcr::CamSide<T>& cam = r.side(side);
     const T rating = LcrRollerRatingAt(life.roller, T(2.0) * cam.roller_radius, cam.roller_length, false);
-    out.push_back(margin(EquivalentLoad(loads, spin, BearingKind::kRoller), revolutions, rating, BearingKind::kRoller));
+    if (LifeRows(s))
+      out.push_back(margin(EquivalentLoad(loads, spin, BearingKind::kRoller), revolutions, rating, BearingKind::kRoller));
+    if (RollerStaticRows(s))
+      statics.push_back(static_row(LcrRollerRatingAt(life.roller, T(2.0) * cam.roller_radius, cam.roller_length, true),
+                                   largest(loads)));
   }
   if (life.eccentric) {
     // |G| over its load period (model/lcr/life.h); the bearing turns n_A/m_A per input revolution.
@@ -242,8 +268,10 @@ void LifeMargins(const LcrSizingSpec& s, const lcr::Reducer<T>& r, std::vector<T
     for (int i = 0; i < n; ++i)
       loads.push_back(lcr::AnalyzeAngle(r, s.material, load, T(period * i / n), stages).eccentric_load.norm());
     const BearingKind kind = life.eccentric->ball ? BearingKind::kBall : BearingKind::kRoller;
-    out.push_back(margin(EquivalentLoad(loads, kind), T(double(s.rollers_a) / s.lobes_a), T(life.eccentric->dynamic_N),
-                         kind));
+    if (LifeRows(s))
+      out.push_back(margin(EquivalentLoad(loads, kind), T(double(s.rollers_a) / s.lobes_a),
+                           T(life.eccentric->dynamic_N), kind));
+    if (EccentricStaticRow(s)) statics.push_back(static_row(T(life.eccentric->static_N), largest(loads)));
   }
 }
 
@@ -271,9 +299,9 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   std::vector<T> force[2], margin[2];
   std::vector<bool> loaded[2];
   T efficiency(0.0), oil_C(0.0), loss_W(0.0);
-  std::vector<T> life;
+  std::vector<T> life, statics;
   try {
-    if (LifeRows(s)) LifeMargins(s, r, life);
+    if (LifeRows(s) || StaticRows(s)) LifeMargins(s, r, life, statics);
     if (s.form == LcrConstraintForm::kActiveSet) {
       ActiveSamples(s, r, lcr::Side::kInput, force[0], margin[0]);
       ActiveSamples(s, r, lcr::Side::kOutput, force[1], margin[1]);
@@ -351,6 +379,7 @@ void Evaluate(const LcrSizingSpec& s, std::span<const T> x, std::span<T> y) {
   if (s.limits.min_efficiency > 0) y[o++] = efficiency;
   if (TemperatureRow(s)) y[o++] = oil_C;
   for (const T& m : life) y[o++] = m;
+  for (const T& m : statics) y[o++] = m;
   if (PowerLossObjective(s)) y[o++] = loss_W;
 }
 
@@ -447,6 +476,12 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
     p.constraints.push_back({"output_roller_life", 0.0, kInf, 1.0});
     if (spec.life->eccentric) p.constraints.push_back({"eccentric_bearing_life", 0.0, kInf, 1.0});
   }
+  // ln(C0 / (s0_min P0max)) >= 0: order one, scale 1, as the life rows.
+  if (RollerStaticRows(spec)) {
+    p.constraints.push_back({"input_roller_static", 0.0, kInf, 1.0});
+    p.constraints.push_back({"output_roller_static", 0.0, kInf, 1.0});
+  }
+  if (EccentricStaticRow(spec)) p.constraints.push_back({"eccentric_bearing_static", 0.0, kInf, 1.0});
   return p;
 }
 
@@ -458,6 +493,7 @@ Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
   s.limits.contact_stress_MPa = kInf;
   s.limits.roller_load_N = kInf;
   s.limits.min_efficiency = 0.0;
+  s.limits.min_static_safety = 0.0;
   s.limits.max_oil_temperature_C = kInf;
   s.limits.max_outer_diameter_mm = kInf;
   s.objective = LcrSizeObjective::kOuterDiameter;

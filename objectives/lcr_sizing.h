@@ -84,6 +84,11 @@ struct LcrLimits {
   /// Shortest ISO 281 basic rating life L10h of any rated bearing [h] over LcrLifeSpec's duty cycle;
   /// 0: no constraint (docs/life.md, "Life as a sizing limit").
   double life_h = 0.0;
+  /// The smallest static safety s0 = C0/P0max (ISO 76) of every bearing of LcrLifeSpec with a static
+  /// rating at static_torque_Nmm (a momentary torque); 0: no constraint. The rigid law's loads are
+  /// proportional to the torque: P0max there is the output torque's times static_torque_Nmm / T_o.
+  double min_static_safety = 0.0;
+  double static_torque_Nmm = 0.0;
   /// The oil temperature of the housing's balance [°C] (with lubrication and its cooling); kInf: none.
   double max_oil_temperature_C = kInf;
   /// The largest outer diameter 2 max(r_dX + r_rX) [mm]: the upper bound 2R of the outer-radius
@@ -214,7 +219,10 @@ lcr::Reducer<double> LcrDesign(const LcrSizingSpec& spec, std::span<const double
 ///   angles of a full revolution, or with spec.lubrication the lubricated η over them; present when
 ///   limits.min_efficiency > 0), oil_temperature_C (with spec.lubrication's balance and a finite
 ///   limits.max_oil_temperature_C), input_roller_life / output_roller_life / eccentric_bearing_life
-///   (ln(L10h / life_h), with a life limit), power_loss_W (last; kPowerLoss only: the
+///   (ln(L10h / life_h), with a life limit), input_roller_static / output_roller_static /
+///   eccentric_bearing_static (ln(C0 / (min_static_safety P0max)), P0max the largest sampled load at
+///   the output torque times static_torque_Nmm / output_torque_Nmm; with
+///   limits.min_static_safety and spec.life, each bearing with a static rating), power_loss_W (last; kPowerLoss only: the
 ///   lubricated loss P_loss over the same efficiency_samples angles, not-a-number without a thermal
 ///   equilibrium below the oil's limit).
 /// @throws std::invalid_argument for kPowerLoss without spec.lubrication.

@@ -125,6 +125,12 @@ Polished Polish(const LcrSizingSpec& exact, const LcrMinSizeOptions& o, std::vec
       tight.limits.life_h *= std::pow(exact.limits.life_h / p.check->shortest_L10h, 1.5);
       changed = true;
     }
+    // The static rows likewise: their largest load is a sampled maximum against the check's finer
+    // grid: raise the required s0 by the shortfall (ratio), one and a half times over.
+    if (exact.limits.min_static_safety > 0 && p.check->min_static_safety < exact.limits.min_static_safety) {
+      tight.limits.min_static_safety *= std::pow(exact.limits.min_static_safety / p.check->min_static_safety, 1.5);
+      changed = true;
+    }
     if (!changed) return p;
   }
   p.rounds = o.max_polish_rounds;
@@ -335,6 +341,8 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
       {"min_efficiency", &LcrLimits::min_efficiency,
        l.min_efficiency > 0 && c.mean_efficiency <= l.min_efficiency * (1 + kBindingFraction)},
       {"life_h", &LcrLimits::life_h, l.life_h > 0 && c.shortest_L10h <= l.life_h * (1 + kBindingFraction)},
+      {"min_static_safety", &LcrLimits::min_static_safety,
+       l.min_static_safety > 0 && c.min_static_safety <= l.min_static_safety * (1 + kBindingFraction)},
       {"max_oil_temperature_C", &LcrLimits::max_oil_temperature_C,
        spec.lubrication && std::isfinite(l.max_oil_temperature_C) &&
            c.oil_temperature_C >= l.max_oil_temperature_C - kBindingFraction * std::max(std::abs(l.max_oil_temperature_C), 1.0)},

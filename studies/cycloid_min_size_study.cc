@@ -561,6 +561,10 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
     if (!in.duty_cycle.is_null())
       root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
                                "duty_cycle; would fit: one of the two");
+    if (in.ratings->momentary_torque_Nm)
+      root["ratings"]["momentary_torque_Nm"].FailWith(
+          "not in cycloid_min_size yet: its sizing has no static rows at a second torque (lcr_min_size has); size for "
+          "the rated torque, then run best_cycloid_ltca.json, whose ratings solve the momentary torque");
     if (!life) life = cycloid_common::ParseLifeRatings(root, s.spec.drive, "a rated torque is asked: ratings is given",
                                                        true, false);
     const double ratio = double(s.spec.drive.teeth) / double(s.spec.drive.rollers - s.spec.drive.teeth);
@@ -806,6 +810,7 @@ nlohmann::ordered_json Input::SchemaRules() {
                          any_of(oj::array({in("crowning", required({field})), in("variables", required({field}))}))));
   all.push_back(when(any_of(speed), required({"crank_bearing", "output_mechanism"})));
   all.push_back(when(required({"ratings"}), required({"crank_bearing", "output_mechanism"})));
+  all.push_back(when(required({"ratings"}), in("ratings", negated(required({"momentary_torque_Nm"})))));
   all.push_back(when(required({"ratings"}), negated(any_of(oj::array({required({"duty_cycle"}), given("limits", "life_h")})))));
   all.push_back(when(required({"duty_cycle"}), in("load", negated(required({"input_speed_rpm"})))));
   all.push_back(when(given("limits", "life_h"), any_of(speed)));

@@ -124,7 +124,9 @@ std::string PlainLimitName(const std::string& row) {
       {"stress_margin_3d", "contact stress (3D contact)"},
       {"mean_efficiency", "mean efficiency"},
       {"roller_life", "roller life"},
-      {"eccentric_bearing_life", "eccentric bearing life"}};
+      {"eccentric_bearing_life", "eccentric bearing life"},
+      {"roller_static", "roller static safety at the momentary torque"},
+      {"eccentric_bearing_static", "eccentric bearing static safety at the momentary torque"}};
   std::string side, rest = row;
   for (const char* s : {"input", "output"})
     if (row.rfind(std::string(s) + "_", 0) == 0) {
@@ -408,6 +410,12 @@ Study Parse(const Node& root) {
   b.limits.roller_gap_mm = limits.roller_gap_mm;
   if (limits.min_efficiency) b.limits.min_efficiency = *limits.min_efficiency;
   b.limits.life_h = in.ratings ? in.ratings->rated_life_h : limits.life_h.value_or(0.0);
+  if (in.ratings && in.ratings->momentary_torque_Nm) {
+    // The momentary torque (docs/ratings.md, Ratings as sizing limits): every bearing with a static
+    // rating keeps s0 >= momentary_static_safety there; the rollers' and the eccentric's C0 are needed.
+    b.limits.min_static_safety = in.ratings->momentary_static_safety;
+    b.limits.static_torque_Nmm = *in.ratings->momentary_torque_Nm * 1000.0;
+  }
   b.limits.max_outer_diameter_mm = limits.max_outer_diameter_mm.value_or(kInf);
   if (b.limits.life_h > 0 && !duty)
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a duty_cycle "
@@ -445,6 +453,20 @@ Study Parse(const Node& root) {
                      std::to_string(s.max_lobes) + " lobes gives the ratio " + std::to_string(s.ratio) +
                      " exactly");
   b.life = ParseLife(in, root, b, !s.catalogue.empty(), duty ? &*duty : nullptr, life_why);
+  if (b.limits.min_static_safety > 0) {
+    // The momentary torque's static rows need C0: the rollers' (every catalogue entry's) or the eccentric's.
+    if (!s.catalogue.empty()) {
+      for (const CatalogueRoller& r : s.catalogue)
+        if (!(r.static_rating_N > 0))
+          root["roller_catalogue"].FailWith("static_rating_N on every entry with ratings.momentary_torque_Nm (each "
+                                            "catalogue roller's s0 at the momentary torque)");
+    } else if (!(b.life && b.life->roller.static_N > 0) &&
+               !(b.life && b.life->eccentric && b.life->eccentric->static_N > 0)) {
+      root["ratings"]["momentary_torque_Nm"].FailWith(
+          "a momentary torque needs a static rating to hold: rollers.static_rating_N or "
+          "eccentric_bearing.static_rating_N, found neither");
+    }
+  }
   ParseRobust(in, root, s);
   // The efficiency objective: the lubricated loss of the line model's nominal design
   // (objectives/lcr_sizing.h LcrSizeObjective::kPowerLoss).
@@ -567,6 +589,15 @@ nlohmann::ordered_json Input::SchemaRules() {
                           {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}]}},
       {"if": {"required": ["duty_cycle"]},
        "then": {"properties": {"load": {"not": {"required": ["input_speed_rpm"]}}}}},
+      {"if": {"required": ["ratings", "roller_catalogue"],
+              "properties": {"ratings": {"required": ["momentary_torque_Nm"]}}},
+       "then": {"properties": {"roller_catalogue": {"oneOf": [
+         {"type": "object"}, {"type": "array", "items": {"required": ["static_rating_N"]}}]}}}},
+      {"if": {"required": ["ratings"], "properties": {"ratings": {"required": ["momentary_torque_Nm"]}},
+              "not": {"required": ["roller_catalogue"]}},
+       "then": {"anyOf": [{"required": ["rollers"], "properties": {"rollers": {"required": ["static_rating_N"]}}},
+                          {"required": ["eccentric_bearing"],
+                           "properties": {"eccentric_bearing": {"required": ["static_rating_N"]}}}]}},
       {"if": {"required": ["ratings"]},
        "then": {"not": {"anyOf": [{"required": ["duty_cycle"]},
                                   {"required": ["limits"], "properties": {"limits": {"required": ["life_h"]}}}]}}},
@@ -699,6 +730,7 @@ std::vector<std::string> LimitCosts(const Study& s, const Result& result) {
                          {"roller_gap_mm", "roller gap", 0.1, "mm"},
                          {"min_efficiency", "efficiency limit", 0.01, ""},
                          {"life_h", "life limit", 1000, "h"},
+                         {"min_static_safety", "static safety at the momentary torque", 0.1, ""},
                          {"max_outer_diameter_mm", "outer diameter limit", 1, "mm"}};
   const bool loss = MinimisesLoss(s);
   std::vector<std::string> lines;
@@ -804,6 +836,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
         {"contact_stress_MPa", {l.contact_stress_MPa, "MPa"}}, {"roller_load_N", {l.roller_load_N, "N"}},
         {"undercut_margin_mm", {l.undercut_margin_mm, "mm"}},  {"roller_gap_mm", {l.roller_gap_mm, "mm"}},
         {"min_efficiency", {l.min_efficiency, "1"}},          {"life_h", {l.life_h, "h"}},
+        {"min_static_safety", {l.min_static_safety, "1"}},
         {"max_oil_temperature_C", {l.max_oil_temperature_C, "°C"}},
         {"max_outer_diameter_mm", {l.max_outer_diameter_mm, "mm"}}};
     const auto it = values.find(key);
@@ -834,6 +867,26 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
     }
     b["ratings"] = SizedRatingsJson(*s.ratings, double(s.ratio), k.shortest_L10h, rated, by,
                                     "no rated bearing is loaded");
+    if (s.ratings->momentary_torque_Nm) {
+      // The momentary torque: P0max ∝ T (rigid law), so each bearing's s0 = s at
+      // T_line C0 / (s P0max(T_line)), T_line the rated line's torque; the design's is the smallest.
+      const double line = s.ratings->rated_torque_Nm, need = s.ratings->momentary_static_safety;
+      std::optional<double> momentary;
+      std::string mby;
+      for (const auto& bl : k.life)
+        if (bl.static_rating_N > 0 && bl.life.max_load_N > 0) {
+          const double t = line * bl.static_rating_N / (need * bl.life.max_load_N);
+          if (!momentary || t < *momentary) momentary = t, mby = bl.name;
+        }
+      nlohmann::json& g = b["ratings"];
+      g["momentary_torque_required_Nm"] = *s.ratings->momentary_torque_Nm;
+      g["momentary_static_safety"] = need;
+      g["s0_at_required_momentary_torque"] = MaybeFinite(k.min_static_safety);
+      g["momentary_torque_Nm"] = momentary ? nlohmann::json(*momentary) : nlohmann::json(nullptr);
+      g["momentary_by"] = mby;
+      g["momentary_met"] = k.min_static_safety >= need;
+      g["met"] = g["met"].get<bool>() && k.min_static_safety >= need;
+    }
   }
   res["best"] = b;
   if (s.contact3d) AddContact3DJson(s, result, res);
@@ -974,7 +1027,8 @@ void Write(const Study& s, const Result& result, Outputs& out) {
     }
     if (s.ratings)  // lcr_analysis solves the design's ratings (docs/ratings.md)
       a["ratings"] = {{"rated_life_h", s.ratings->rated_life_h},
-                      {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm}};
+                      {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm},
+                      {"momentary_static_safety", s.ratings->momentary_static_safety}};
     if (s.contact3d) AddContact3DAnalysis(s, best, a);
     out.AddJson("best_lcr_analysis.json", a);
     AddSizedAssembly(s, a, out);
@@ -1202,6 +1256,10 @@ CAMOPT_REGISTER_REPORT("lcr_min_size", {
      "study:/ratings/rated_life_h", NAN, false},
     {"rated torque (the rigid law's lives)", "/best/ratings/rated_torque_Nm", "N m", "study:/ratings/rated_torque_Nm",
      NAN, false},
+    {"static safety s0 at the momentary torque", "/best/ratings/s0_at_required_momentary_torque", "",
+     "/best/ratings/momentary_static_safety", NAN, false},
+    {"momentary torque (the rigid law's static loads)", "/best/ratings/momentary_torque_Nm", "N m",
+     "study:/ratings/momentary_torque_Nm", NAN, false},
     {"binding limits", "/best/binding_names", ""},
     {"what the binding limits cost", "/best/limit_costs", ""},
     {"limit costs", "/best/limit_sensitivity_note", ""},

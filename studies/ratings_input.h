@@ -64,6 +64,8 @@ struct RatingsInput {
 /// rated_life_h (docs/life.md, "Life as a sizing limit").
 struct SizingRatingsInput {
   double rated_torque_Nm = 0, rated_life_h = 0, rated_output_speed_rpm = 0;
+  std::optional<double> momentary_torque_Nm;
+  double momentary_static_safety = 1.0;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("rated_torque_Nm", &rated_torque_Nm,
@@ -75,6 +77,12 @@ struct SizingRatingsInput {
     a->Visit("rated_output_speed_rpm", &rated_output_speed_rpm,
              Field().Required().Positive().Unit("rpm").Desc(
                  "the rated output speed (the input turns ratio times faster)"));
+    a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
+             Field().Positive().Unit("N·m").Desc(
+                 "the momentary (emergency-stop) torque the sized drive must reach: every rated bearing with a "
+                 "static rating keeps s0 = C0/P0max >= momentary_static_safety at it (lcr_min_size; absent: none)"));
+    a->Visit("momentary_static_safety", &momentary_static_safety,
+             Field().Positive().Desc("s0 at the momentary torque (ISO 76; 1: the static rating itself)"));
   }
   /// The one-line duty cycle of the rated point: the output torque [N·mm] at input speed n_out |ratio|.
   OperatingLine RatedLine(double ratio) const {

@@ -125,6 +125,59 @@ TEST(LcrMinSizeLife, RowsAgreeWithTheDenseLifeOfLcrAnalysis) {
   EXPECT_NEAR(c.life[2].life.revolutions_per_input_revolution, 13.0 / 12.0, 1e-12);
 }
 
+// The static rows (a momentary torque, LcrLimits::min_static_safety): exact derivatives, and values
+// near the dense check's s0 at that torque. The rows' P0max is the log-sum-exp soft maximum of the
+// sampled loads (above the largest sample by at most scale ln N / k) on 24 angles of each period,
+// the check's the largest of 3600 per revolution.
+LcrSizingSpec StaticSpec(bool same_roller) {
+  LcrSizingSpec s = LifeSpec(same_roller);
+  s.limits.min_static_safety = 1.5;
+  s.limits.static_torque_Nmm = 200e3;
+  return s;
+}
+
+TEST(LcrMinSizeLife, StaticRowGradientsMatchCentralDifferences) {
+  for (bool same_roller : {true, false}) {
+    SCOPED_TRACE(same_roller ? "one roller diameter" : "a roller diameter per cam");
+    const LcrSizingSpec spec = StaticSpec(same_roller);
+    const objectives::Problem p = objectives::MakeLcrSizingProblem(spec);
+    std::vector<int> rows;
+    for (const auto& block : p.evaluator->blocks())
+      if (block.name.size() > 7 && block.name.substr(block.name.size() - 7) == "_static") rows.push_back(block.offset);
+    ASSERT_EQ(rows.size(), 3u);  // input roller, output roller, eccentric bearing
+    for (const std::vector<double>& x : objectives::LcrStartingPoints(spec, 3))
+      ExpectRowsMatchCentralDifferences(p, x, rows);
+  }
+}
+
+TEST(LcrMinSizeLife, StaticRowsAgreeWithTheDenseCheck) {
+  const LcrSizingSpec spec = StaticSpec(true);
+  const objectives::Problem p = objectives::MakeLcrSizingProblem(spec);
+  for (const std::vector<double>& x : objectives::LcrStartingPoints(spec, 3)) {
+    std::vector<double> y(p.evaluator->num_outputs());
+    p.evaluator->Eval(x, y);
+    const objectives::LcrDenseCheck c = objectives::DenseCheck(spec, objectives::LcrDesign(spec, x));
+    double least = 1e300;
+    for (const auto& b : c.life) {
+      int offset = -1;
+      for (const auto& block : p.evaluator->blocks())
+        if (block.name == b.name + "_static") offset = block.offset;
+      ASSERT_GE(offset, 0) << b.name;
+      // The check's s0 at 200 N·m: its loads at the largest duty line (80 N·m) scaled by 200/80.
+      const double s0 = b.static_rating_N / (b.life.max_load_N * 200.0 / 80.0);
+      least = std::min(least, s0);
+      const double dense_row = std::log(s0 / spec.limits.min_static_safety);
+      std::printf("[ static   ] %s: row %.6f, dense %.6f\n", b.name.c_str(), y[offset], dense_row);
+      EXPECT_LE(y[offset], dense_row + 2e-3) << b.name;  // the soft maximum errs on the safe side
+      EXPECT_GE(y[offset], dense_row - 0.05) << b.name;  // by at most 5 % of the load here
+    }
+    EXPECT_NEAR(c.min_static_safety, least, 1e-12 * least);
+    const bool named = std::any_of(c.violations.begin(), c.violations.end(),
+                                   [](const auto& v) { return v.limit == "min_static_safety"; });
+    EXPECT_EQ(named, c.min_static_safety < spec.limits.min_static_safety);  // the check's violation
+  }
+}
+
 // Runs a study given as json in dir; returns result.json (null json on a non-zero exit).
 json RunStudy(const json& study, const std::filesystem::path& dir, int* exit_code, std::string* stderr_text = nullptr) {
   const auto file = dir / "study.json";
