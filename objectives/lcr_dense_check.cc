@@ -241,6 +241,9 @@ Verification VerifyLcrLineDesign(const LcrSizingSpec& spec, const lcr::Reducer<d
     for (size_t i = 0; i < a.life.size(); ++i)
       if (std::isfinite(b.life[i].life.L10h))  // a bearing without load (+∞) has nothing to check
         add("life_h", a.life[i].name.c_str(), a.life[i].life.L10h, b.life[i].life.L10h, lim.life_h, false);
+  if (lim.min_static_safety > 0 && lim.static_torque_Nmm > 0 && std::isfinite(b.min_static_safety))
+    add("min_static_safety", "s0 at the momentary torque, every bearing with a static rating", a.min_static_safety,
+        b.min_static_safety, lim.min_static_safety, false);
   return v;
 }
 

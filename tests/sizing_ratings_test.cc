@@ -93,6 +93,11 @@ TEST(SizingRatings, LcrMomentaryTorqueLimitHoldsAsLcrAnalysisSolvesIt) {
   const nlohmann::json& g = run.result["best"]["ratings"];
   EXPECT_TRUE(g["met"].get<bool>());
   EXPECT_TRUE(g["momentary_met"].get<bool>());
+  // The accurate model's check holds the momentary torque's s0 like every other limit.
+  bool checked = false;
+  for (const auto& c : run.result["verification"]["checks"])
+    if (c["limit"] == "min_static_safety") checked = c["holds"].get<bool>();
+  EXPECT_TRUE(checked) << run.result["verification"].dump();
   const double s0 = g["s0_at_required_momentary_torque"].get<double>();
   EXPECT_GE(s0, 1.0);
   EXPECT_LT(s0, 1.05);  // the static row binds (within the soft maximum's bias)
