@@ -145,6 +145,38 @@ std::vector<T> LifeMarginsOf(const CycloidSizingLife& life, double required_h, c
   return out;
 }
 
+// The static rows are present (limits.min_static_safety at a static torque, with the life's ratings).
+bool StaticRows(const CycloidSizingSpec& s) {
+  return s.life && s.limits.min_static_safety > 0 && s.limits.static_torque_Nmm > 0;
+}
+
+// P/C0 of every static sample at the static torque (kSizingStatic): the crank bearing's |B| over its
+// load period from the ring-pin resultants `ring` (crank frame) at the sizing's angles, then every
+// (crank angle, pin) load; each bearing only with a static rating.
+template <typename T>
+std::vector<T> StaticUtilisationOf(const CycloidSizingLife& life, double static_torque_Nmm, const cycloid::Drive& d,
+                                   const std::vector<Vec2<T>>& ring, const std::vector<T>& pin_load,
+                                   const std::vector<double>& angles) {
+  std::vector<T> out;
+  if (life.crank_static_N > 0)
+    for (const T& b : cycloid::CrankBearingLoadsOverPeriod<T>(d, life.output, ring, angles, static_torque_Nmm))
+      out.push_back(b / life.crank_static_N);
+  if (life.pins_rated && life.pins_static_N > 0)
+    for (const T& q : pin_load) out.push_back(q / life.pins_static_N);
+  return out;
+}
+
+// The number of static rows (StaticUtilisationOf's samples).
+size_t StaticRowCount(const CycloidSizingSpec& s) {
+  if (!StaticRows(s)) return 0;
+  const CycloidSizingLife& life = *s.life;
+  size_t n = 0;
+  if (life.crank_static_N > 0)
+    n += size_t(s.angles_per_period) * size_t(cycloid::OutputPinPeriodInMeshPeriods(life.output, s.drive.teeth));
+  if (life.pins_rated && life.pins_static_N > 0) n += size_t(s.angles_per_period) * size_t(s.drive.rollers);
+  return n;
+}
+
 // The lives of a design as cycloid_ltca reports them (LifeOverDutyCycle of each rated bearing).
 std::vector<CycloidBearingLife> LivesOf(const CycloidSizingLife& life, const cycloid::Drive& d,
                                         const std::vector<const std::vector<cycloid::MeshLoad>*>& meshes) {
@@ -426,9 +458,14 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   const bool life_rows = spec_.life && spec_.limits.life_h > 0;
   const size_t nl = life_rows ? (spec_.life->pins_rated ? 2 : 1) : 0;
   e.life_margin.assign(nl, NAN);
+  const bool static_rows = StaticRows(spec_);
+  const size_t n_static = StaticRowCount(spec_);
+  e.static_utilisation.assign(n_static, NAN);
+  if (static_rows) e.min_static_safety = NAN;
   auto nan_gradients = [&] {
     if (!with_gradient) return;
     e.d_life_margin.assign(nl * nv, NAN);
+    e.d_static_utilisation.assign(n_static * nv, NAN);
     e.d_pair_peak.assign(na * n1 * nv, NAN);
     e.d_end_distance.assign((over ? na : 0) * nv, NAN);
     e.d_unloaded_te.assign(na * nv, NAN);
@@ -471,6 +508,9 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         if (l.output_torque_Nmm > 0 && l.output_torque_Nmm != spec_.design_torque_Nmm)
           last_lines_.back() = cycloid::RunCycle(des, l.output_torque_Nmm, angles_);
       }
+    last_static_.reset();
+    if (static_rows && spec_.limits.static_torque_Nmm != spec_.design_torque_Nmm)
+      last_static_ = cycloid::RunCycle(des, spec_.limits.static_torque_Nmm, angles_);
     last_half_.reset();
     last_small_.reset();
     if (spec_.output) {  // the torsional curve at crank 0 (its T_r point is the design cycle's angle 0)
@@ -516,6 +556,13 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
     e.shortest_life_h = kInf;
     for (const CycloidBearingLife& b : e.lives) e.shortest_life_h = std::min(e.shortest_life_h, b.life.L10h);
   }
+  // The static torque's meshes: one more "line" after the duty lines (the life rows read only
+  // theirs); the design cycle's when the torques are equal.
+  const size_t static_line = line_meshes.size();
+  if (static_rows) {
+    line_meshes.push_back(last_static_ ? &last_static_->meshes : &dc.meshes);
+    if (last_static_) e.converged = e.converged && last_static_->converged;
+  }
   // The life rows over double (their values; the same numbers as e.lives' L10h, in logarithms).
   auto life_inputs = [&](auto zero, const auto& load_of, const auto& lag_of, const auto& unloaded_at,
                          const auto& spin_of, auto& ring, auto& pin_load, auto& pin_weight) {
@@ -537,7 +584,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
       }
     }
   };
-  if (life_rows) {
+  if (life_rows || static_rows) {
     struct U {
       const cycloid::Drive& drive;
       cycloid::UnloadedMesh<double> mesh;
@@ -553,7 +600,15 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
         [&](size_t k) -> const U& { return meshes_u[k]; },
         [&, &drive = d](const U& u, size_t r, size_t k) { return cycloid::RollerSpinRate(drive, u.mesh.pairs[r], angles_[k]); }, ring,
         pin_load, pin_weight);
-    e.life_margin = LifeMarginsOf<double>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
+    if (life_rows)
+      e.life_margin = LifeMarginsOf<double>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
+    if (static_rows) {
+      e.static_utilisation = StaticUtilisationOf<double>(*spec_.life, spec_.limits.static_torque_Nmm, d,
+                                                         ring[static_line], pin_load[static_line], angles_);
+      double largest = 0.0;
+      for (double u : e.static_utilisation) largest = std::max(largest, u);
+      e.min_static_safety = largest > 0 ? 1.0 / largest : kInf;
+    }
   }
   // The output rows (values): the design cycle's ring-pin resultants, the torsional curve's lags.
   std::vector<Vec2<double>> ring_design;
@@ -610,6 +665,7 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
   e.d_lte.assign(nv, 0.0);
   e.d_end_distance.assign((over ? na : 0) * nv, 0.0);
   e.d_life_margin.assign(nl * nv, 0.0);
+  e.d_static_utilisation.assign(n_static * nv, 0.0);
   if (spec_.lubrication) {
     e.d_efficiency.assign(nv, NAN);
     e.d_oil_temperature.assign(nv, NAN);
@@ -684,12 +740,15 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
       }
     }
     if (spec_.objective == CycloidSizeObjective::kPowerLoss) e.d_objective = e.d_power_loss;
-    if (life_rows) {
-      // dF_i/ds and the lag's derivative of every duty line's cycle (the design cycle's own: dd).
+    if (life_rows || static_rows) {
+      // dF_i/ds and the lag's derivative of every duty line's cycle (the design cycle's own: dd),
+      // and of the static torque's.
       std::vector<std::vector<cycloid::CycleDerivative>> line_dd(line_meshes.size());
-      for (size_t i = 0; i < line_meshes.size(); ++i)
+      for (size_t i = 0; i < line_meshes.size() && i < last_lines_.size(); ++i)
         if (last_lines_[i] && line_meshes[i] == &last_lines_[i]->meshes)
           line_dd[i] = cycloid::DifferentiateCycle(des, *last_lines_[i], params, 0.0);
+      if (static_rows && last_static_)
+        line_dd[static_line] = cycloid::DifferentiateCycle(des, *last_static_, params, 0.0);
       auto derivative_of = [&](size_t i) -> const std::vector<cycloid::CycleDerivative>* {
         if (line_meshes[i] == &dc.meshes) return &dd;
         return line_dd[i].empty() ? nullptr : &line_dd[i];
@@ -723,9 +782,16 @@ CycloidSizingEvaluation CycloidSizingModel::Evaluate(const std::vector<double>& 
             [&](size_t k) -> const UJ& { return meshes_u[k]; },
             [&](const UJ& u, size_t r, size_t k) { return cycloid::RollerSpinRate(dj, u.mesh.pairs[r], J1(angles_[k])); },
             ring, pin_load, pin_weight);
-        const std::vector<J1> m =
-            LifeMarginsOf<J1>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
-        for (size_t r = 0; r < nl; ++r) e.d_life_margin[r * nv + j] = m[r].v[0];
+        if (life_rows) {
+          const std::vector<J1> m =
+              LifeMarginsOf<J1>(*spec_.life, spec_.limits.life_h, d, ring, pin_load, pin_weight, angles_);
+          for (size_t r = 0; r < nl; ++r) e.d_life_margin[r * nv + j] = m[r].v[0];
+        }
+        if (static_rows) {
+          const std::vector<J1> u = StaticUtilisationOf<J1>(*spec_.life, spec_.limits.static_torque_Nmm, d,
+                                                            ring[static_line], pin_load[static_line], angles_);
+          for (size_t r = 0; r < u.size() && r < n_static; ++r) e.d_static_utilisation[r * nv + j] = u[r].v[0];
+        }
       }
       for (const auto& di : line_dd)
         for (const auto& one : di) e.converged = e.converged && one.converged;
@@ -770,7 +836,8 @@ struct Layout {
   size_t web_row() const { return pin_gap() + 1; }
   size_t fit() const { return web_row() + (web ? 1 : 0); }
   size_t life() const { return fit() + 2; }
-  size_t stiffness() const { return life() + lives; }
+  size_t statics() const { return life() + lives; }
+  size_t stiffness() const { return statics() + static_rows; }
   size_t lost_motion() const { return stiffness() + (stiffness_row ? 1 : 0); }
   size_t pin_stress() const { return lost_motion() + (lost_motion_row ? 1 : 0); }
   size_t bearing() const { return pin_stress() + (pin_stress_rows ? samples : 0); }
@@ -780,6 +847,7 @@ struct Layout {
   size_t size() const { return temperature() + (temperature_row ? 1 : 0); }
   bool efficiency_row = false, temperature_row = false;  // spec.lubrication with its limits
   size_t lives = 0;  // life rows (limits.life_h): crank bearing, pins
+  size_t static_rows = 0;  // kSizingStatic rows (limits.min_static_safety)
   // The output rows (spec.output, each with its limit), samples over the pins' load period.
   bool output = false, stiffness_row = false, lost_motion_row = false, pin_stress_rows = false, bearing_rows = false;
   size_t samples = 0;
@@ -792,6 +860,7 @@ Layout LayoutOf(const CycloidSizingModel& m) {
   l.over = m.spec().overload_torque_Nmm > 0;
   l.web = m.spec().limits.bore_radius_mm > 0;
   if (m.spec().life && m.spec().limits.life_h > 0) l.lives = m.spec().life->pins_rated ? 2 : 1;
+  l.static_rows = StaticRowCount(m.spec());
   const CycloidSizingLimits& lim = m.spec().limits;
   l.output = bool(m.spec().output);
   l.stiffness_row = l.output && lim.min_torsional_stiffness_Nm_per_arcmin > 0;
@@ -834,6 +903,8 @@ class SizingEvaluator final : public Evaluator {
       if (l.web) jac[l.web_row() * nv + j] = e.d_web[j];
       for (size_t r = 0; r < 2; ++r) jac[(l.fit() + r) * nv + j] = e.d_crowning_fit[r * nv + j];
       for (size_t r = 0; r < l.lives; ++r) jac[(l.life() + r) * nv + j] = e.d_life_margin[r * nv + j];
+      for (size_t r = 0; r < l.static_rows; ++r)
+        jac[(l.statics() + r) * nv + j] = e.d_static_utilisation[r * nv + j];
       if (l.stiffness_row) jac[l.stiffness() * nv + j] = e.d_stiffness[j];
       if (l.lost_motion_row) jac[l.lost_motion() * nv + j] = e.d_lost_motion[j];
       for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r)
@@ -863,6 +934,7 @@ class SizingEvaluator final : public Evaluator {
     if (l.web) b.push_back({kSizingWeb, int(l.web_row()), 1});
     b.push_back({kSizingCrowningFit, int(l.fit()), 2});
     if (l.lives > 0) b.push_back({kSizingLife, int(l.life()), int(l.lives)});
+    if (l.static_rows > 0) b.push_back({kSizingStatic, int(l.statics()), int(l.static_rows)});
     if (l.stiffness_row) b.push_back({kSizingStiffness, int(l.stiffness()), 1});
     if (l.lost_motion_row) b.push_back({kSizingLostMotion, int(l.lost_motion()), 1});
     if (l.pin_stress_rows) b.push_back({kSizingOutputPinStress, int(l.pin_stress()), int(l.samples)});
@@ -892,6 +964,7 @@ class SizingEvaluator final : public Evaluator {
     if (l.web) y[l.web_row()] = e.web_margin_mm;
     for (size_t r = 0; r < 2; ++r) y[l.fit() + r] = e.crowning_fit_mm[r];
     for (size_t r = 0; r < l.lives; ++r) y[l.life() + r] = e.life_margin[r];
+    for (size_t r = 0; r < l.static_rows; ++r) y[l.statics() + r] = e.static_utilisation[r];
     if (l.stiffness_row) y[l.stiffness()] = e.stiffness_Nm_per_arcmin;
     if (l.lost_motion_row) y[l.lost_motion()] = e.lost_motion_arcmin;
     for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r) y[l.pin_stress() + r] = e.output_pin_stress_MPa[r];
@@ -910,6 +983,7 @@ class SizingEvaluator final : public Evaluator {
       for (size_t r = 0; l.pin_stress_rows && r < l.samples; ++r) y[l.pin_stress() + r] = 1e9;
       for (size_t r = 0; l.bearing_rows && r < l.samples; ++r) y[l.bearing() + r] = 1e9;
       for (size_t r = 0; r < l.lives; ++r) y[l.life() + r] = -100.0;  // e^-100 of the required life
+      for (size_t r = 0; r < l.static_rows; ++r) y[l.statics() + r] = 1e6;
       for (size_t s = 0; s < l.na * l.n1; ++s) y[l.peaks() + s] = 1e6;
       if (l.over)
         for (size_t k = 0; k < l.na; ++k) y[l.ends() + k] = -1e4;
@@ -962,6 +1036,9 @@ Problem CycloidSizingProblem(CycloidSizingModel& model, const CycloidFastLimits&
   p.constraints.push_back({kSizingCrowningFit, 0.0, kInf, 1.0});
   if (s.life && s.limits.life_h > 0)  // ln(L10h / life_h) >= ln(fast life / life_h): O(1) over decades
     p.constraints.push_back({kSizingLife, std::log(std::max(fast.life_h, s.limits.life_h) / s.limits.life_h), kInf, 1.0});
+  if (StaticRows(s))  // P/C0 <= 1/s0 at every sample: order one
+    p.constraints.push_back({kSizingStatic, -kInf, 1.0 / std::max(fast.min_static_safety, s.limits.min_static_safety),
+                             1.0 / s.limits.min_static_safety});
   if (s.output) {
     const CycloidSizingLimits& l = s.limits;
     if (l.min_torsional_stiffness_Nm_per_arcmin > 0)
@@ -1010,6 +1087,7 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
                                         kUnloadedTeResolutionArcsec});
   out.lte_error_arcsec = std::abs(a.lte_peak_to_peak_arcsec - f.lte_peak_to_peak_arcsec);
   if (spec.life) out.life_error_h = std::abs(a.shortest_life_h - f.shortest_life_h);
+  if (StaticRows(spec)) out.static_safety_error = std::abs(a.min_static_safety - f.min_static_safety);
   if (spec.output) {
     out.stiffness_error = std::abs(a.stiffness_Nm_per_arcmin - f.stiffness_Nm_per_arcmin);
     out.lost_motion_error_arcmin = std::abs(a.lost_motion_arcmin - f.lost_motion_arcmin);
@@ -1056,6 +1134,9 @@ CycloidAccurateCheck CheckCycloidDesign(const CycloidSizingSpec& spec, const cyc
   if (spec.life && l.life_h > 0)
     add("life_h", "shortest L10h over the duty cycle", l.life_h, a.shortest_life_h, out.life_error_h, f.shortest_life_h,
         false);
+  if (StaticRows(spec))
+    add("min_static_safety", "s0 at the momentary torque (crank bearing, pins with C0)", l.min_static_safety,
+        a.min_static_safety, out.static_safety_error, f.min_static_safety, false);
   if (spec.output) {
     if (l.min_torsional_stiffness_Nm_per_arcmin > 0)
       add("min_torsional_stiffness_Nm_per_arcmin", "crank 0, 50-100% of the design torque",
@@ -1131,6 +1212,7 @@ std::string LimitKeyOf(const std::string& block, bool at_lower) {
   if (block == kSizingWeb) return "min_web_mm";
   if (block == kSizingCrowningFit) return "crowning_on_the_face";
   if (block == kSizingLife) return "life_h";
+  if (block == kSizingStatic) return "min_static_safety";
   if (block == kSizingStiffness) return "min_torsional_stiffness_Nm_per_arcmin";
   if (block == kSizingLostMotion) return "max_lost_motion_arcmin";
   if (block == kSizingOutputPinStress) return "output_pin_stress_MPa";
@@ -1188,6 +1270,7 @@ constexpr LimitField kLimitFields[] = {
     {"min_pin_gap_mm", &CycloidSizingLimits::min_pin_gap_mm, nullptr},
     {"min_web_mm", &CycloidSizingLimits::min_web_mm, nullptr},
     {"life_h", &CycloidSizingLimits::life_h, &CycloidFastLimits::life_h},
+    {"min_static_safety", &CycloidSizingLimits::min_static_safety, &CycloidFastLimits::min_static_safety},
     {"min_torsional_stiffness_Nm_per_arcmin", &CycloidSizingLimits::min_torsional_stiffness_Nm_per_arcmin,
      &CycloidFastLimits::min_torsional_stiffness_Nm_per_arcmin},
     {"max_lost_motion_arcmin", &CycloidSizingLimits::max_lost_motion_arcmin, &CycloidFastLimits::max_lost_motion_arcmin},
@@ -1231,6 +1314,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   fast.min_backlash_arcsec = spec.limits.min_backlash_arcsec;
   fast.max_backlash_arcsec = spec.limits.max_backlash_arcsec;
   fast.life_h = spec.limits.life_h;
+  fast.min_static_safety = spec.limits.min_static_safety;
   fast.min_torsional_stiffness_Nm_per_arcmin = spec.limits.min_torsional_stiffness_Nm_per_arcmin;
   fast.max_lost_motion_arcmin = spec.limits.max_lost_motion_arcmin;
   fast.output_pin_stress_MPa = spec.limits.output_pin_stress_MPa;
@@ -1322,9 +1406,11 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     if ((c.limit == "life_h" || c.limit == "min_efficiency" || c.limit == "max_oil_temperature_C") && !c.holds())
       return true;
     // The output rows: the pins' stress is exact on both models at a sample they share (error 0),
-    // so a row the solver leaves a constraint tolerance beyond its limit is tightened too.
+    // so a row the solver leaves a constraint tolerance beyond its limit is tightened too; the
+    // static rows' s0 (its error small, as the crank bearing's load over the cycle) likewise.
     if ((c.limit == "output_pin_stress_MPa" || c.limit == "eccentric_bearing_load_N" ||
-         c.limit == "max_lost_motion_arcmin" || c.limit == "min_torsional_stiffness_Nm_per_arcmin") &&
+         c.limit == "max_lost_motion_arcmin" || c.limit == "min_torsional_stiffness_Nm_per_arcmin" ||
+         c.limit == "min_static_safety") &&
         !c.holds())
       return true;
     return !std::isfinite(c.accurate_value) ||
@@ -1354,7 +1440,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         if (c.limit == "contact_stress_MPa" || c.limit == "output_pin_stress_MPa" ||
             c.limit == "eccentric_bearing_load_N" || c.limit == "max_lost_motion_arcmin")
           *fl = TightenedUpperLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
-        else if (c.limit == "min_torsional_stiffness_Nm_per_arcmin")
+        else if (c.limit == "min_torsional_stiffness_Nm_per_arcmin" || c.limit == "min_static_safety")
           *fl = TightenedLowerLimit(*fl, c.limit_value, c.fast_value, c.accurate_value);
         else if (c.limit == "life_h")  // by the accurate shortfall, 1.5 times, and 0.1% more (as lcr_min_size)
           *fl *= std::pow(c.limit_value / std::max(c.accurate_value, 1e-9 * c.limit_value), 1.5) * 1.001;
@@ -1401,6 +1487,9 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     out.limit_cost = LimitCosts(problem, out.x, out.limit_cost_residual);
     // The life row's bound is ln(fast life / life_h): its multiplier is per unit of ln, d/dH = 1/H.
     if (auto it = out.limit_cost.find("life_h"); it != out.limit_cost.end()) it->second /= fast.life_h;
+    // The static rows' bound is 1/s0: d/ds0 = −1/s0² of the multiplier per unit of that bound.
+    if (auto it = out.limit_cost.find("min_static_safety"); it != out.limit_cost.end())
+      it->second *= -1.0 / (fast.min_static_safety * fast.min_static_safety);
   }
   // Each binding limit re-solved at L ± h from the answer, with the fast limits it ended with moved
   // alike (by the same ratio for a limit of a positive quantity, by h for a margin), verified and

@@ -36,6 +36,10 @@
 //                         Exact derivatives: the pair loads by implicit differentiation, the
 //                         contact normals, the disc lag and the pins' spin through the unloaded
 //                         TCA with a Jet.
+//   kSizingStatic         (limits.min_static_safety at limits.static_torque_Nmm, a momentary torque)
+//                         P/C0 of the crank bearing at every sample of its load period and of every
+//                         (crank angle, pin) <= 1/s0, on one more cycle at that torque (each bearing
+//                         with a static rating; derivatives as the life rows');
 //   kSizingStiffness      (with limits.min_torsional_stiffness_Nm_per_arcmin and the compliant output
 //                         mechanism) the torsional stiffness, input held at crank 0, between 50% and
 //                         100% of the design torque T_r (model/cycloid/stiffness.h's definition; at
@@ -124,6 +128,7 @@ inline constexpr const char* kSizingCrankBearing = "eccentric_bearing_load_N";
 inline constexpr const char* kSizingOutputHoles = "output_holes_margin_mm";
 inline constexpr const char* kSizingEfficiency = "efficiency";
 inline constexpr const char* kSizingOilTemperature = "oil_temperature_C";
+inline constexpr const char* kSizingStatic = "static_utilisation";
 
 /// Field names a sizing variable may have.
 std::vector<std::string> CycloidSizingVariableNames();
@@ -147,6 +152,10 @@ struct CycloidSizingLimits {
   double bore_radius_mm = 0;             ///< the disc's central bore; 0: no web row
   double min_web_mm = 0;                 ///< web between the tooth root and the bore
   double life_h = 0;                     ///< shortest L10h of any rated bearing; 0: no life row
+  /// s0 = C0/P0max of the crank bearing and the pins (those with a static rating) at
+  /// static_torque_Nmm, a momentary torque on the disc (one more cycle there); 0: no rows. Needs
+  /// spec.life (its ratings and output mechanism).
+  double min_static_safety = 0, static_torque_Nmm = 0;
   /// With the compliant output mechanism (CycloidSizingSpec::output); 0 / kInf: no row.
   double min_torsional_stiffness_Nm_per_arcmin = 0;
   double max_lost_motion_arcmin = kInf;
@@ -257,6 +266,10 @@ struct CycloidSizingEvaluation {
   double shortest_life_h = kInf;          ///< shortest L10h of lives
   std::vector<double> life_margin;        ///< ln(L10h / life_h) per bearing (with limits.life_h)
   std::vector<double> d_life_margin;      ///< [row][variable]
+  /// With limits.min_static_safety: P/C0 per sample (crank bearing's load period, then every
+  /// (crank angle, pin)) at the static torque, and the smallest s0 = 1/max of them.
+  std::vector<double> static_utilisation, d_static_utilisation;  ///< d: [row][variable]
+  double min_static_safety = kInf;
   /// With spec.output (kNaN when the cycles are not solved): the torsional curve at crank 0 and the
   /// output mechanism over the pins' load period (angle-major: shift r, then the cycle's angle k).
   double stiffness_Nm_per_arcmin = NAN, lost_motion_arcmin = NAN;
@@ -296,6 +309,7 @@ class CycloidSizingModel {
   std::optional<cycloid::CycleResult> last_design_, last_over_;
   std::vector<std::optional<cycloid::CycleResult>> last_lines_;  // duty lines at other torques
   std::optional<cycloid::CycleResult> last_half_, last_small_;   // crank 0 at T_r/2, 0.03 T_r (spec.output)
+  std::optional<cycloid::CycleResult> last_static_;              // the static torque's (limits.min_static_safety)
   // The first design's models: every later one is WithDesign of these (shared solver caches).
   std::optional<cycloid::LoadedTca> base_design_, base_over_;
 };
@@ -307,6 +321,7 @@ struct CycloidFastLimits {
   double min_backlash_arcsec = 0;
   double max_backlash_arcsec = kInf;
   double life_h = 0;  ///< the life rows' required L10h (>= limits.life_h)
+  double min_static_safety = 0;  ///< the static rows' required s0 (>= limits.min_static_safety)
   double min_torsional_stiffness_Nm_per_arcmin = 0, max_lost_motion_arcmin = kInf, output_pin_stress_MPa = kInf,
          eccentric_bearing_load_N = kInf;
   double min_efficiency = 0, max_oil_temperature_C = kInf;
@@ -331,6 +346,7 @@ struct CycloidAccurateCheck {
   CycloidSizingEvaluation fast, accurate;
   double stress_error_MPa = 0, edge_margin_error_um = 0, backlash_error_arcsec = 0, lte_error_arcsec = 0;
   double life_error_h = 0;  ///< |accurate − fast| of the shortest L10h
+  double static_safety_error = 0;  ///< |accurate − fast| of the smallest s0 at the static torque
   /// |accurate − fast| of the output rows (with spec.output)
   double stiffness_error = 0, lost_motion_error_arcmin = 0, output_pin_stress_error_MPa = 0,
          crank_bearing_error_N = 0;

@@ -478,6 +478,7 @@ std::string LimitKeyOfRow(const std::string& row) {
   if (base == objectives::kSizingWeb) return "min_web_mm";
   if (base == objectives::kSizingCrowningFit) return "crowning_on_the_face";
   if (base == objectives::kSizingLife) return "life_h";
+  if (base == objectives::kSizingStatic) return "min_static_safety";
   return base;
 }
 
@@ -561,15 +562,21 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
     if (!in.duty_cycle.is_null())
       root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
                                "duty_cycle; would fit: one of the two");
-    if (in.ratings->momentary_torque_Nm)
-      root["ratings"]["momentary_torque_Nm"].FailWith(
-          "not in cycloid_min_size yet: its sizing has no static rows at a second torque (lcr_min_size has); size for "
-          "the rated torque, then run best_cycloid_ltca.json, whose ratings solve the momentary torque");
     if (!life) life = cycloid_common::ParseLifeRatings(root, s.spec.drive, "a rated torque is asked: ratings is given",
                                                        true, false);
     const double ratio = double(s.spec.drive.teeth) / double(s.spec.drive.rollers - s.spec.drive.teeth);
     life->lines = {in.ratings->RatedLine(ratio)};
     s.spec.limits.life_h = in.ratings->rated_life_h;
+    if (in.ratings->momentary_torque_Nm) {
+      // The momentary torque (docs/ratings.md, Ratings as sizing limits): the crank bearing and the
+      // pins with a static rating keep s0 >= momentary_static_safety there (one more cycle).
+      if (!(life->crank_bearing.static_N > 0) && !(life->pins_rated && life->pins.static_N > 0))
+        root["ratings"]["momentary_torque_Nm"].FailWith(
+            "a momentary torque needs a static rating to hold: crank_bearing.static_rating_N or "
+            "pins.static_rating_N, found neither");
+      s.spec.limits.min_static_safety = in.ratings->momentary_static_safety;
+      s.spec.limits.static_torque_Nmm = *in.ratings->momentary_torque_Nm * 1000.0;
+    }
   }
   if (s.spec.limits.life_h > 0 && !life)
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a "
@@ -810,7 +817,8 @@ nlohmann::ordered_json Input::SchemaRules() {
                          any_of(oj::array({in("crowning", required({field})), in("variables", required({field}))}))));
   all.push_back(when(any_of(speed), required({"crank_bearing", "output_mechanism"})));
   all.push_back(when(required({"ratings"}), required({"crank_bearing", "output_mechanism"})));
-  all.push_back(when(required({"ratings"}), in("ratings", negated(required({"momentary_torque_Nm"})))));
+  all.push_back(when(given("ratings", "momentary_torque_Nm"),
+                     any_of(oj::array({given("crank_bearing", "static_rating_N"), given("pins", "static_rating_N")}))));
   all.push_back(when(required({"ratings"}), negated(any_of(oj::array({required({"duty_cycle"}), given("limits", "life_h")})))));
   all.push_back(when(required({"duty_cycle"}), in("load", negated(required({"input_speed_rpm"})))));
   all.push_back(when(given("limits", "life_h"), any_of(speed)));
@@ -961,6 +969,7 @@ double LimitValue(const Study& s, const std::string& key) {
   if (key == "min_web_mm") return l.min_web_mm;
   if (key == "bore_diameter_mm") return 2 * l.bore_radius_mm;
   if (key == "life_h") return l.life_h;
+  if (key == "min_static_safety") return l.min_static_safety;
   if (key == "min_torsional_stiffness_Nm_per_arcmin") return l.min_torsional_stiffness_Nm_per_arcmin;
   if (key == "max_lost_motion_arcmin") return l.max_lost_motion_arcmin;
   if (key == "output_pin_stress_MPa") return l.output_pin_stress_MPa;
@@ -1120,6 +1129,21 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
             "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block), one LTCA cycle per trial torque: "
             "the loaded contact's loads are not proportional to the torque");
       b["estimated_error"]["shortest_L10h"] = Finite(o.check.life_error_h, "error");
+      if (s.ratings && s.ratings->momentary_torque_Nm) {
+        // The momentary torque: s0 at it on the accurate model; the drive's own momentary torque is
+        // cycloid_ltca's root search (the loads are not proportional to the torque).
+        nlohmann::json& g = b["ratings"];
+        const double need = s.ratings->momentary_static_safety;
+        g["momentary_torque_required_Nm"] = *s.ratings->momentary_torque_Nm;
+        g["momentary_static_safety"] = need;
+        g["s0_at_required_momentary_torque"] =
+            std::isfinite(acc.min_static_safety) ? nlohmann::json(acc.min_static_safety) : nlohmann::json(nullptr);
+        g["momentary_torque_Nm"] = nullptr;
+        g["momentary_torque_note"] = "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block)";
+        g["momentary_met"] = acc.min_static_safety >= need;
+        g["met"] = g["met"].get<bool>() && acc.min_static_safety >= need;
+        b["estimated_error"]["min_static_safety"] = NumberOrNull(o.check.static_safety_error);
+      }
     }
     j["best"] = b;
   }
@@ -1194,7 +1218,8 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
   }
   if (s.ratings)  // cycloid_ltca solves the design's ratings (docs/ratings.md)
     a["ratings"] = {{"rated_life_h", s.ratings->rated_life_h},
-                    {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm}};
+                    {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm},
+                    {"momentary_static_safety", s.ratings->momentary_static_safety}};
   if (s.spec.output) {  // the compliant output mechanism and the datasheet at the design torque
     const objectives::CycloidSizingOutput& out = *s.spec.output;
     nlohmann::json om = {{"pins", out.pins.pins},
@@ -1468,6 +1493,8 @@ CAMOPT_REGISTER_REPORT("cycloid_min_size", {
      false, "/best/estimated_error/shortest_L10h"},
     {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
      "study:/ratings/rated_life_h", NAN, false, "/best/estimated_error/shortest_L10h"},
+    {"static safety s0 at the momentary torque (accurate model)", "/best/ratings/s0_at_required_momentary_torque", "",
+     "/best/ratings/momentary_static_safety", NAN, false, "/best/estimated_error/min_static_safety"},
     {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
     {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
     {"verified", "/verified", ""},

@@ -285,8 +285,9 @@ struct Input {
                           "bearing not given is not modelled)"));
     a->Visit("ratings", &ratings,
              Field().Desc("the rated torque the sized drive must reach, as cycloid_ltca's ratings define it: the life "
-                          "rows over one cycle at that torque and the rated speed (docs/ratings.md, Ratings as sizing "
-                          "limits); needs crank_bearing and output_mechanism"));
+                          "rows over one cycle at that torque and the rated speed, and the momentary torque's static "
+                          "rows over one more (docs/ratings.md, Ratings as sizing limits); needs crank_bearing and "
+                          "output_mechanism"));
   }
   /// The rules between blocks: each sized field once (in variables or its block), the drive's
   /// fields somewhere, the crowning's fields by its type, a life's blocks.

@@ -80,7 +80,7 @@ struct SizingRatingsInput {
     a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
              Field().Positive().Unit("N·m").Desc(
                  "the momentary (emergency-stop) torque the sized drive must reach: every rated bearing with a "
-                 "static rating keeps s0 = C0/P0max >= momentary_static_safety at it (lcr_min_size; absent: none)"));
+                 "static rating keeps s0 = C0/P0max >= momentary_static_safety at it (absent: none)"));
     a->Visit("momentary_static_safety", &momentary_static_safety,
              Field().Positive().Desc("s0 at the momentary torque (ISO 76; 1: the static rating itself)"));
   }

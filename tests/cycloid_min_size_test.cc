@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/cycloid/bearing_loads.h"
 #include "model/cycloid/geometry_limits.h"
 #include "sizing/cycloid_min_size.h"
 #include "tests/reference_designs.h"
@@ -159,6 +160,59 @@ TEST(CycloidMinSize, LifeRowsDerivativesMatchCentralDifferences) {
   }
   // Not flat: a larger eccentricity lowers the crank bearing's load (T/(n2 e) across the crank).
   EXPECT_GT(jac[size_t(life.offset) * n + 0], 0.1);
+}
+
+// The static rows (a momentary torque: P/C0 <= 1/s0 of the crank bearing over its load period and of
+// every (crank angle, pin)) at 800 N·m: their values are the model's own s0 and their derivatives
+// (through one more cycle, implicit in the pair loads) match central differences.
+TEST(CycloidMinSize, StaticRowsDerivativesMatchCentralDifferences) {
+  CycloidSizingSpec spec = PaperSpec();
+  spec.life = PaperLife();
+  spec.limits.life_h = 5000;
+  spec.limits.min_static_safety = 1.5;
+  spec.limits.static_torque_Nmm = 800e3;
+  CycloidSizingModel model(spec);
+  CycloidFastLimits fast;
+  fast.contact_stress_MPa = 1500;
+  fast.life_h = 5000;
+  fast.min_static_safety = 1.5;
+  Problem p = CycloidSizingProblem(model, fast);
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  std::vector<double> x;
+  for (const Variable& v : spec.variables) x.push_back(v.initial);
+  std::vector<double> y(m), jac(size_t(m) * n);
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  const OutputBlock& rows = p.evaluator->block(kSizingStatic);
+  // The crank bearing over its load period (the sizing's angles × the output pins' period), then
+  // every (crank angle, pin).
+  const size_t crank = size_t(spec.angles_per_period) *
+                       size_t(cycloid::OutputPinPeriodInMeshPeriods(spec.life->output, spec.drive.teeth));
+  ASSERT_EQ(size_t(rows.size), crank + size_t(spec.angles_per_period) * size_t(spec.drive.rollers));
+  const CycloidSizingEvaluation e = model.Evaluate(x, false);
+  double largest = 0.0;
+  for (int r = 0; r < rows.size; ++r) largest = std::max(largest, y[size_t(rows.offset + r)]);
+  EXPECT_NEAR(e.min_static_safety, 1.0 / largest, 1e-12 / largest);
+  // The crank bearing's rows against its loads from an independent cycle at 800 N·m.
+  const auto [d, c] = model.Design(x);
+  const cycloid::LoadedTca tca(d, c, spec.material, spec.options);
+  const cycloid::CycleResult at = cycloid::RunCycle(tca, 800e3, model.crank_angles());
+  const std::vector<double> b = cycloid::CrankBearingLoads(d, spec.life->output, at.meshes, 800e3);
+  ASSERT_EQ(b.size(), crank);
+  for (size_t k = 0; k < crank; ++k)
+    EXPECT_NEAR(y[size_t(rows.offset) + k] * spec.life->crank_static_N, b[k], 1e-4 * std::max(1.0, b[k])) << k;
+  for (int j = 0; j < n; ++j) {
+    const double h = 1e-5 * spec.variables[size_t(j)].scale;
+    std::vector<double> xp = x, xm = x, yp(m), ym(m);
+    xp[size_t(j)] += h;
+    xm[size_t(j)] -= h;
+    p.evaluator->Eval(xp, yp);
+    p.evaluator->Eval(xm, ym);
+    for (int r = rows.offset; r < rows.offset + rows.size; ++r) {
+      const double fd = (yp[size_t(r)] - ym[size_t(r)]) / (2 * h);
+      EXPECT_NEAR(jac[size_t(r) * n + j], fd, kLifeRowRelTol * std::max(1.0, std::abs(fd)))
+          << "static row " << r - rows.offset << " by " << spec.variables[size_t(j)].name;
+    }
+  }
 }
 
 // The output mechanism's rows (stiffness, lost motion, output-pin stress, crank-bearing load, the

@@ -135,6 +135,37 @@ TEST(SizingRatings, CycloidSizedDriveReachesTheRatedTorqueAsCycloidLtcaSolvesIt)
   EXPECT_LT(rated, 15.0 * 1.01);
 }
 
+// The momentary torque as a limit of cycloid_min_size: 52 N·m with the output pins on a 16 mm circle
+// (on 12 mm their resultant dominates the crank bearing's load, which then hardly falls with the
+// drive's size), above what the rated-only design holds, so the static rows bind (the crank
+// bearing's C0); cycloid_ltca on the best design root-solves its momentary torque on LTCA cycles:
+// 52 N·m within their two estimated errors, and the accurate model's s0 at 52 N·m is 1 within its.
+TEST(SizingRatings, CycloidMomentaryTorqueLimitHoldsAsCycloidLtcaSolvesIt) {
+  nlohmann::json study = CycloidRated();
+  study["output_mechanism"]["pin_circle_radius_mm"] = 16;
+  study["ratings"]["momentary_torque_Nm"] = 52.0;
+  const CliRun run = RunStudy(study, "cycloid-momentary");
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  ASSERT_TRUE(run.result["verified"].get<bool>());
+  const nlohmann::json& g = run.result["best"]["ratings"];
+  const double s0 = g["s0_at_required_momentary_torque"].get<double>();
+  const double s0_error = run.result["best"]["estimated_error"]["min_static_safety"].get<double>();
+  EXPECT_GE(s0, 1.0 - s0_error);
+  EXPECT_LT(s0, 1.01);  // it binds
+  bool checked = false;
+  for (const auto& c : run.result["verification"]["checks"])
+    if (c["limit"] == "min_static_safety") checked = c["holds"].get<bool>();
+  EXPECT_TRUE(checked) << run.result["verification"].dump();
+  const CliRun check = RunFile(run.out / "best_cycloid_ltca.json", run.out / "analysis");
+  ASSERT_EQ(check.exit_code, 0) << check.stderr_text;
+  const double momentary = check.result["momentary_torque_Nm"].get<double>();
+  const double error = check.result["ratings"]["estimated_error"]["momentary_torque_Nm"].get<double>();
+  std::printf("[ sizing   ] momentary torque of the sized drive %.4f +- %.4f N m (52 asked), s0 %.6f +- %.1e\n",
+              momentary, error, s0, s0_error);
+  EXPECT_EQ(check.result["ratings"]["momentary_limited_by"], "crank_bearing (static rating)");
+  EXPECT_NEAR(momentary, 52.0, error + 52.0 * s0_error);
+}
+
 TEST(SizingRatings, ConflictsAndMissingBearingsExitTwoNamingTheBlock) {
   nlohmann::json a = LcrRated();
   a["limits"]["life_h"] = 1000;
@@ -151,8 +182,10 @@ TEST(SizingRatings, ConflictsAndMissingBearingsExitTwoNamingTheBlock) {
 
   nlohmann::json m = CycloidRated();
   m["ratings"]["momentary_torque_Nm"] = 40;
-  r = RunStudy(m, "cycloid-momentary");
-  EXPECT_EQ(r.exit_code, 2);  // not a limit of cycloid_min_size (yet): said, not ignored
+  m["crank_bearing"].erase("static_rating_N");
+  m["pins"].erase("static_rating_N");
+  r = RunStudy(m, "cycloid-momentary-no-c0");
+  EXPECT_EQ(r.exit_code, 2);  // nothing to hold the momentary torque with
   EXPECT_NE(r.stderr_text.find("/ratings/momentary_torque_Nm"), std::string::npos) << r.stderr_text;
 
   nlohmann::json c = CycloidRated();
