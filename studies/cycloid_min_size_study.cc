@@ -556,12 +556,7 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
   // cycle (load.input_speed_rpm then only sets the lubricated losses' speed).
   s.ratings = in.ratings;
   if (in.ratings) {
-    if (in.limits.life_h)
-      root["ratings"].FailWith("the rated torque is a life limit of its own (the rated life at the rated torque and "
-                               "speed): not with limits.life_h; would fit: one of the two");
-    if (!in.duty_cycle.is_null())
-      root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
-                               "duty_cycle; would fit: one of the two");
+    CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), !in.duty_cycle.is_null());
     if (!life) life = cycloid_common::ParseLifeRatings(root, s.spec.drive, "a rated torque is asked: ratings is given",
                                                        true, false);
     const double ratio = double(s.spec.drive.teeth) / double(s.spec.drive.rollers - s.spec.drive.teeth);

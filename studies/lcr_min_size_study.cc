@@ -350,12 +350,7 @@ Study Parse(const Node& root) {
   // "ratings" (docs/ratings.md, Ratings as sizing limits): the rated point as the life rows' one line.
   s.ratings = in.ratings;
   if (in.ratings) {
-    if (in.limits.life_h)
-      root["ratings"].FailWith("the rated torque is a life limit of its own (the rated life at the rated torque and "
-                               "speed): not with limits.life_h; would fit: one of the two");
-    if (!in.duty_cycle.is_null())
-      root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
-                               "duty_cycle; would fit: one of the two");
+    CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), !in.duty_cycle.is_null());
     duty = std::vector<lcr::LcrDutyLine>{in.ratings->RatedLine(double(s.ratio))};
     life_why = "a rated torque is asked: ratings is given";
   }

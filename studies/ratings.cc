@@ -69,12 +69,16 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
                                           start_torque_Nm, "the rated life");
   r.rated_by = eval(r.rated_torque_Nm).shortest;
   r.rated_L10h = eval(r.rated_torque_Nm).shortest_L10h;
-  // Peak (acceleration) torque: the contact limits.
-  auto peak = [&](double t) {
+  // Peak (acceleration) torque: the contact limits, on the sampled maxima or (`vertex`) on their
+  // parabolic vertices.
+  auto peak = [&](double t, bool vertex = false) {
     const RatingPoint& p = eval(t);
     Capacity c;
-    if (limits.contact_stress_MPa) c.Add(*limits.contact_stress_MPa, p.max_contact_stress_MPa, "limits.contact_stress_MPa");
-    if (limits.roller_load_N) c.Add(*limits.roller_load_N, p.max_roller_load_N, "limits.roller_load_N");
+    if (limits.contact_stress_MPa)
+      c.Add(*limits.contact_stress_MPa, vertex ? p.max_contact_stress_vertex_MPa : p.max_contact_stress_MPa,
+            "limits.contact_stress_MPa");
+    if (limits.roller_load_N)
+      c.Add(*limits.roller_load_N, vertex ? p.max_roller_load_vertex_N : p.max_roller_load_N, "limits.roller_load_N");
     return c;
   };
   if (limits.contact_stress_MPa || limits.roller_load_N) {
@@ -85,15 +89,8 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
     // peak torque solved again on the vertex maxima gives the sampling's share of its error.
     const RatingPoint& at_peak = eval(*r.peak_torque_Nm);
     if (at_peak.max_contact_stress_vertex_MPa > 0 || at_peak.max_roller_load_vertex_N > 0) {
-      auto vertex = [&](double t) {
-        const RatingPoint& p = eval(t);
-        Capacity c;
-        if (limits.contact_stress_MPa) c.Add(*limits.contact_stress_MPa, p.max_contact_stress_vertex_MPa, "stress");
-        if (limits.roller_load_N) c.Add(*limits.roller_load_N, p.max_roller_load_vertex_N, "force");
-        return c;
-      };
       r.peak_sampling_error_Nm = std::abs(
-          *r.peak_torque_Nm - SolveTorqueForRatio([&](double t) { return vertex(t).ratio; }, *r.peak_torque_Nm,
+          *r.peak_torque_Nm - SolveTorqueForRatio([&](double t) { return peak(t, true).ratio; }, *r.peak_torque_Nm,
                                                   "the peak torque's limits between samples"));
     }
   } else {

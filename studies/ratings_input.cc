@@ -114,4 +114,13 @@ void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& j
   }
 }
 
+void CheckSizingRatingsAlone(const Node& root, bool life_limit, bool duty_cycle) {
+  if (life_limit)
+    root["ratings"].FailWith("the rated torque is a life limit of its own (the rated life at the rated torque and "
+                             "speed): not with limits.life_h; would fit: one of the two");
+  if (duty_cycle)
+    root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
+                             "duty_cycle; would fit: one of the two");
+}
+
 }  // namespace camopt::studies

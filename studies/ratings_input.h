@@ -90,6 +90,10 @@ struct SizingRatingsInput {
   }
 };
 
+/// A sizing's "ratings" is a life limit of its own (its rows over the rated point's one line): not
+/// with limits.life_h (`life_limit`) or a duty_cycle. @throws StudyError naming /ratings.
+void CheckSizingRatingsAlone(const Node& root, bool life_limit, bool duty_cycle);
+
 /// The catalogue part of a "stiffness" block: the rated torque the torsional curve goes to, the
 /// three segments' T1 and T2, the lost motion's percentage (a kind adds where the input is held).
 struct StiffnessCatalogueInput {

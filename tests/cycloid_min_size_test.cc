@@ -124,6 +124,27 @@ CycloidSizingLife PaperLife() {
   return l;
 }
 
+// The Jacobian `jac` (at x) of one block's rows against central differences with a step of 1e-5 of
+// each variable's scale, within kLifeRowRelTol of max(1, |fd|).
+void ExpectBlockMatchesCentralDifferences(const Problem& p, const CycloidSizingSpec& spec, const std::vector<double>& x,
+                                          const std::vector<double>& jac, const OutputBlock& block,
+                                          const std::string& what) {
+  const int n = p.num_vars(), m = p.evaluator->num_outputs();
+  for (int j = 0; j < n; ++j) {
+    const double h = 1e-5 * spec.variables[size_t(j)].scale;
+    std::vector<double> xp = x, xm = x, yp(m), ym(m);
+    xp[size_t(j)] += h;
+    xm[size_t(j)] -= h;
+    p.evaluator->Eval(xp, yp);
+    p.evaluator->Eval(xm, ym);
+    for (int r = block.offset; r < block.offset + block.size; ++r) {
+      const double fd = (yp[size_t(r)] - ym[size_t(r)]) / (2 * h);
+      EXPECT_NEAR(jac[size_t(r) * n + j], fd, kLifeRowRelTol * std::max(1.0, std::abs(fd)))
+          << what << " " << r - block.offset << " by " << spec.variables[size_t(j)].name;
+    }
+  }
+}
+
 TEST(CycloidMinSize, LifeRowsDerivativesMatchCentralDifferences) {
   CycloidSizingSpec spec = PaperSpec();
   spec.life = PaperLife();
@@ -145,19 +166,7 @@ TEST(CycloidMinSize, LifeRowsDerivativesMatchCentralDifferences) {
   ASSERT_EQ(e.lives.size(), 2u);
   for (int r = 0; r < 2; ++r)
     EXPECT_NEAR(y[size_t(life.offset + r)], std::log(e.lives[size_t(r)].life.L10h / 5000.0), 1e-12);
-  for (int j = 0; j < n; ++j) {
-    const double h = 1e-5 * spec.variables[size_t(j)].scale;
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[size_t(j)] += h;
-    xm[size_t(j)] -= h;
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    for (int r = life.offset; r < life.offset + life.size; ++r) {
-      const double fd = (yp[size_t(r)] - ym[size_t(r)]) / (2 * h);
-      EXPECT_NEAR(jac[size_t(r) * n + j], fd, kLifeRowRelTol * std::max(1.0, std::abs(fd)))
-          << "life row " << r - life.offset << " by " << spec.variables[size_t(j)].name;
-    }
-  }
+  ExpectBlockMatchesCentralDifferences(p, spec, x, jac, life, "life row");
   // Not flat: a larger eccentricity lowers the crank bearing's load (T/(n2 e) across the crank).
   EXPECT_GT(jac[size_t(life.offset) * n + 0], 0.1);
 }
@@ -200,19 +209,7 @@ TEST(CycloidMinSize, StaticRowsDerivativesMatchCentralDifferences) {
   ASSERT_EQ(b.size(), crank);
   for (size_t k = 0; k < crank; ++k)
     EXPECT_NEAR(y[size_t(rows.offset) + k] * spec.life->crank_static_N, b[k], 1e-4 * std::max(1.0, b[k])) << k;
-  for (int j = 0; j < n; ++j) {
-    const double h = 1e-5 * spec.variables[size_t(j)].scale;
-    std::vector<double> xp = x, xm = x, yp(m), ym(m);
-    xp[size_t(j)] += h;
-    xm[size_t(j)] -= h;
-    p.evaluator->Eval(xp, yp);
-    p.evaluator->Eval(xm, ym);
-    for (int r = rows.offset; r < rows.offset + rows.size; ++r) {
-      const double fd = (yp[size_t(r)] - ym[size_t(r)]) / (2 * h);
-      EXPECT_NEAR(jac[size_t(r) * n + j], fd, kLifeRowRelTol * std::max(1.0, std::abs(fd)))
-          << "static row " << r - rows.offset << " by " << spec.variables[size_t(j)].name;
-    }
-  }
+  ExpectBlockMatchesCentralDifferences(p, spec, x, jac, rows, "static row");
 }
 
 // The output mechanism's rows (stiffness, lost motion, output-pin stress, crank-bearing load, the
