@@ -860,8 +860,18 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
                        std::pow(bl.life.L10h / s.ratings->rated_life_h, 1.0 / (bl.ball ? 3.0 : 10.0 / 3.0));
       if (std::isfinite(t) && (!rated || t < *rated)) rated = t, by = bl.name;
     }
-    b["ratings"] = SizedRatingsJson(*s.ratings, double(s.ratio), k.shortest_L10h, rated, by,
-                                    "no rated bearing is loaded");
+    // Met as the verification holds them: every check of that limit, the accurate value within its
+    // estimated error (one verdict for the exit code, `verified` and these flags).
+    auto holds = [&](const std::string& limit) {
+      bool any = false, all = true;
+      if (best.verification)
+        for (const objectives::VerifiedLimit& c : best.verification->checks)
+          if (c.limit == limit) any = true, all = all && c.holds();
+      return any && all;
+    };
+    const bool momentary_met = !s.ratings->momentary_torque_Nm || holds("min_static_safety");
+    b["ratings"] = SizedRatingsJson(*s.ratings, double(s.ratio), k.shortest_L10h, holds("life_h") && momentary_met,
+                                    rated, by, "no rated bearing is loaded");
     if (s.ratings->momentary_torque_Nm) {
       // The momentary torque: P0max ∝ T (rigid law), so each bearing's s0 = s at
       // T_line C0 / (s P0max(T_line)), T_line the rated line's torque; the design's is the smallest.
@@ -879,8 +889,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
       g["s0_at_required_momentary_torque"] = MaybeFinite(k.min_static_safety);
       g["momentary_torque_Nm"] = momentary ? nlohmann::json(*momentary) : nlohmann::json(nullptr);
       g["momentary_by"] = mby;
-      g["momentary_met"] = k.min_static_safety >= need;
-      g["met"] = g["met"].get<bool>() && k.min_static_safety >= need;
+      g["momentary_met"] = momentary_met;
     }
   }
   res["best"] = b;

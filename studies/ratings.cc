@@ -146,10 +146,9 @@ void SolveAllowableSpeed(const std::function<double(double, double)>& loss_W, co
   }
 }
 
-nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h,
+nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h, bool met,
                                 const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
                                 const std::string& rated_torque_note) {
-  const bool met = shortest_L10h >= in.rated_life_h;
   nlohmann::json j = {{"rated_torque_required_Nm", in.rated_torque_Nm},
                       {"rated_life_h", in.rated_life_h},
                       {"rated_output_speed_rpm", in.rated_output_speed_rpm},

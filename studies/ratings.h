@@ -90,10 +90,10 @@ void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& 
                     double ratio, bool estimate_error, nlohmann::json& j);
 
 /// best.ratings of a sizing kind (SizingRatingsInput): the rated point asked for, the sized design's
-/// shortest L10 there (the accurate model's check) and whether it reaches rated_life_h; with
+/// shortest L10 there (the accurate model's check) and `met` (the verification's verdict on it); with
 /// `rated_torque_Nm` (a kind whose lives follow a closed form in the torque) the design's own rated
 /// torque and its bearing, else `rated_torque_note` says where it is solved.
-nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h,
+nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h, bool met,
                                 const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
                                 const std::string& rated_torque_note);
 

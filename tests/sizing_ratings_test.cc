@@ -148,6 +148,8 @@ TEST(SizingRatings, CycloidMomentaryTorqueLimitHoldsAsCycloidLtcaSolvesIt) {
   ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
   ASSERT_TRUE(run.result["verified"].get<bool>());
   const nlohmann::json& g = run.result["best"]["ratings"];
+  EXPECT_TRUE(g["met"].get<bool>());  // as verified: within the estimated error
+  EXPECT_TRUE(g["momentary_met"].get<bool>());
   const double s0 = g["s0_at_required_momentary_torque"].get<double>();
   const double s0_error = run.result["best"]["estimated_error"]["min_static_safety"].get<double>();
   EXPECT_GE(s0, 1.0 - s0_error);
