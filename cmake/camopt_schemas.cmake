@@ -6,7 +6,7 @@
 # depend on the design — disc_cam's pressure angle and radius margin, and a contact stress),
 # compiled in so that an installed binary writes them.
 set(CAMOPT_INIT_TEMPLATES cycloid_crowning_tuning_nnm cycloid_ltca_nnm_lcm cycloid_min_size_quick
-    disc_cam_min_size disc_cam_dynamics globoidal_cam_paper lcr_crowning_tuning lcr_friction_fit
+    disc_cam_min_size disc_cam_motion disc_cam_dynamics globoidal_cam_paper lcr_crowning_tuning lcr_friction_fit
     lcr_ii lcr_min_size rigidity_gearbox)
 set(CAMOPT_TEMPLATES_CC ${PROJECT_BINARY_DIR}/generated/init_templates.cc)
 list(TRANSFORM CAMOPT_INIT_TEMPLATES PREPEND ${PROJECT_SOURCE_DIR}/studies/examples/ OUTPUT_VARIABLE _templates)

@@ -31,6 +31,11 @@ constexpr double kCostStep = 5e-3;
 // Peaks of the dense grid within this share of the largest are refined.
 constexpr double kRefineShare = 0.01;
 
+template <typename F>
+std::pair<double, double> CycleMax(const std::vector<double>& v, double h, bool refine, const F& f) {
+  return CircularMaxRefined(v, h, refine, kRefineShare, f);
+}
+
 // The fixed sample grid of the fast rows: angles and which samples rise (S' ≥ 0) or return.
 struct Grid {
   std::vector<double> theta;
@@ -150,30 +155,6 @@ void EvalRows(const Context& c, std::span<const T> x, std::span<T> y) {
   }
   for (size_t k = 0; k < c.grid.rise.size(); ++k) y[size_t(c.rise_offset) + k] = phi[size_t(c.grid.rise[k])];
   for (size_t k = 0; k < c.grid.ret.size(); ++k) y[size_t(c.return_offset) + k] = phi[size_t(c.grid.ret[k])];
-}
-
-// The largest value of samples v (circular, step h) and, with refine, every local maximum within
-// kRefineShare of it refined on the continuous function f (−∞ where a sample does not count).
-// Returns {value, angle}.
-template <typename F>
-std::pair<double, double> CycleMax(const std::vector<double>& v, double h, bool refine, const F& f) {
-  const int n = int(v.size());
-  int best = -1;
-  for (int i = 0; i < n; ++i)
-    if (std::isfinite(v[size_t(i)]) && (best < 0 || v[size_t(i)] > v[size_t(best)])) best = i;
-  if (best < 0) return {-kInf, 0.0};
-  double value = v[size_t(best)], at = best * h;
-  if (!refine) return {value, at};
-  const double threshold = value - kRefineShare * std::max(std::abs(value), 1e-300);
-  for (int i = 0; i < n; ++i) {
-    const double vi = v[size_t(i)], vl = v[size_t((i + n - 1) % n)], vr = v[size_t((i + 1) % n)];
-    if (!std::isfinite(vi) || vi < threshold || vi < vl || vi < vr) continue;
-    // Golden section to 1e-12 rad (model/common/roots.h): 2h/0.618^k ≤ 1e-12 within 80 steps.
-    const GoldenSectionBracket g = GoldenSectionMaximize(f, (i - 1) * h, (i + 1) * h, 80, 1e-12);
-    const double fv = std::max(g.f1, g.f2), t = g.f1 >= g.f2 ? g.x1 : g.x2;
-    if (std::isfinite(fv) && fv > value) value = fv, at = t;
-  }
-  return {value, std::fmod(at + 2 * kPi, 2 * kPi)};
 }
 
 // The cycle's largest contact stress from the samples s (NaN when one sample is not finite), refined

@@ -956,7 +956,8 @@ json Coarse(const std::string& name) {
     s["optimizer"]["max_evaluations"] = 20;
     s["optimizer"]["verify_rounds"] = 0;
   }
-  if (name.rfind("disc_cam", 0) == 0 && name.rfind("disc_cam_min_size", 0) != 0) s["analysis"]["monte_carlo"]["samples"] = 10;
+  if (name.rfind("disc_cam", 0) == 0 && name.rfind("disc_cam_min_size", 0) != 0 && name.rfind("disc_cam_motion", 0) != 0)
+    s["analysis"]["monte_carlo"]["samples"] = 10;
   if (name == "globoidal_cam_paper.json") s["dynamics"]["cam_speeds_rpm"] = {600};
   if (name == "lcr_crowning_tuning.json") {
     s["tuning"]["curve_points"] = 3;

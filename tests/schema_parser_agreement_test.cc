@@ -444,6 +444,8 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam", "/analysis/monte_carlo/", "samples × angle_steps × scales must stay below 1e8",
      "the Monte-Carlo work: samples × angle_steps × scales below 1e8"},
     {"disc_cam_min_size", "/follower/", "unknown field", "the follower's fields by follower.type"},
+    {"disc_cam_motion", "/follower/", "unknown field", "the follower's fields by follower.type"},
+    {"disc_cam_motion", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"disc_cam_min_size", "/follower/", "missing required field",
      "an oscillating follower needs pivot_distance_mm and arm_length_mm"},
     {"disc_cam_min_size", "/dynamics", "translating followers only", "the kinetostatic loads need a translating follower"},
@@ -523,6 +525,7 @@ const std::vector<CrossField> kCrossField = {
 const std::vector<CrossField> kOpen = {
     {"disc_cam", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
     {"disc_cam_min_size", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
+    {"disc_cam_motion", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
     {"disc_cam", "/motion/0/boundary/", "unknown field", "polynomial boundary keys in mm or deg by follower type"},
     {"disc_cam", "/motion/0/control_points_", "unknown field", "B-spline control points in mm or deg by follower type"},
     {"globoidal_cam", "/motion/0/", "rise", "rise_deg by law (dwell: none)"},
@@ -675,7 +678,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 // ---------------------------------------------------------------------------------------------
 // The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
 const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
-                                                 "disc_cam", "disc_cam_min_size", "cycloid_ltca", "cycloid_min_size",
+                                                 "disc_cam", "disc_cam_min_size", "disc_cam_motion", "cycloid_ltca", "cycloid_min_size",
                                                  "lcr_analysis", "cycloid_crowning_tuning", "lcr_crowning_tuning",
                                                  "lcr_min_size"};
 

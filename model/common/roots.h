@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
 
 namespace camopt {
 
@@ -33,6 +36,32 @@ GoldenSectionBracket GoldenSectionMaximize(const F& f, double lo, double hi, int
     }
   }
   return {lo, hi, x1, x2, f1, f2};
+}
+
+/// The largest value of circular samples v (sample i at i·h over a period of n·h) and, with refine,
+/// every local maximum within `share` of it refined on the continuous function f by golden-section
+/// search over its two neighbouring intervals to 1e-12 (2h/0.618^k ≤ 1e-12 within 80 steps); −∞
+/// (samples or f) marks what does not count. Returns {value, where}, where in [0, n·h).
+template <typename F>
+std::pair<double, double> CircularMaxRefined(const std::vector<double>& v, double h, bool refine, double share,
+                                             const F& f) {
+  const int n = int(v.size());
+  int best = -1;
+  for (int i = 0; i < n; ++i)
+    if (std::isfinite(v[size_t(i)]) && (best < 0 || v[size_t(i)] > v[size_t(best)])) best = i;
+  if (best < 0) return {-std::numeric_limits<double>::infinity(), 0.0};
+  double value = v[size_t(best)], at = best * h;
+  if (!refine) return {value, at};
+  const double threshold = value - share * std::max(std::abs(value), 1e-300);
+  for (int i = 0; i < n; ++i) {
+    const double vi = v[size_t(i)], vl = v[size_t((i + n - 1) % n)], vr = v[size_t((i + 1) % n)];
+    if (!std::isfinite(vi) || vi < threshold || vi < vl || vi < vr) continue;
+    const GoldenSectionBracket g = GoldenSectionMaximize(f, (i - 1) * h, (i + 1) * h, 80, 1e-12);
+    const double fv = std::max(g.f1, g.f2), t = g.f1 >= g.f2 ? g.x1 : g.x2;
+    if (std::isfinite(fv) && fv > value) value = fv, at = t;
+  }
+  const double period = n * h;
+  return {value, std::fmod(at + period, period)};
 }
 
 /// [lo, hi] around the x where a non-decreasing f reaches target.

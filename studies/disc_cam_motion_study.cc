@@ -1,0 +1,515 @@
+#include "studies/disc_cam_motion_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "studies/format.h"
+#include "studies/report.h"
+#include "studies/verification_json.h"
+#include "studies/work_limits.h"
+#include "studies/writers.h"
+
+namespace camopt::studies::disc_cam_motion {
+namespace {
+
+namespace dc = camopt::disc_cam;
+using objectives::MotionObjective;
+constexpr double kDeg = kPi / 180.0;
+constexpr int kMaxFree = 31;
+
+nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+nlohmann::ordered_json Input::MotionSchema() {
+  using oj = nlohmann::ordered_json;
+  oj s = disc_cam::Input::MotionSchema(false);
+  s["items"]["properties"]["optimize"] = {
+      {"type", "object"},
+      {"description",
+       "design this segment's shape: a B-spline of `control_points` values, degree `degree`, from the segment's start "
+       "to its end with the same rise and cam angle, meeting its neighbours' velocity (and acceleration) — not on a "
+       "dwell, not next to another designed segment"},
+      {"properties",
+       {{"law", {{"const", "bspline"}, {"description", "the designed shape's law (B-spline)"}}},
+        {"control_points",
+         {{"type", "integer"}, {"minimum", 5}, {"maximum", 35},
+          {"description", "n + 1 control values: at least 5 (velocity matched) or 7 (acceleration too), at most 31 free "
+                          "over the designed segments"}}},
+        {"degree", {{"type", "integer"}, {"minimum", 2}, {"maximum", 7}, {"default", 5},
+                    {"description", "p, below control_points"}}},
+        {"boundary",
+         {{"type", "object"},
+          {"description", "what the designed shape keeps of its neighbours at both ends (its position always)"},
+          {"properties",
+           {{"velocity", {{"const", true}, {"default", true},
+                          {"description", "match the neighbours' velocity (always: the follower model needs C1)"}}},
+            {"acceleration", {{"type", "boolean"}, {"default", true},
+                              {"description", "match the neighbours' acceleration too (C2 joints)"}}}}},
+          {"additionalProperties", false}}}}},
+      {"required", oj::array({"law", "control_points"})},
+      {"additionalProperties", false},
+      // With the acceleration matched (the default) six values are fixed: at least seven.
+      {"if", {{"required", oj::array({"boundary"})},
+              {"properties", {{"boundary", {{"required", oj::array({"acceleration"})},
+                                            {"properties", {{"acceleration", {{"const", false}}}}}}}}}}},
+      {"else", {{"properties", {{"control_points", {{"minimum", 7}}}}}}}};
+  // A designed segment is a named law's rise or return.
+  oj& items = s["items"];
+  if (!items.contains("allOf")) items["allOf"] = oj::array();
+  items["allOf"].push_back({{"if", {{"required", oj::array({"law"})},
+                                    {"properties", {{"law", {{"enum", {"dwell", "polynomial", "bspline"}}}}}}}},
+                            {"then", {{"not", {{"required", oj::array({"optimize"})}}}}}});
+  // At least one segment is designed.
+  s["contains"] = {{"required", oj::array({"optimize"})}};
+  return s;
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  using oj = nlohmann::ordered_json;
+  auto follower_is = [](const std::vector<std::string>& types) {
+    return oj{{"required", oj::array({"follower"})},
+              {"properties", {{"follower", {{"properties", {{"type", {{"enum", types}}}}}}}}}};
+  };
+  auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
+  const oj stiffness = {{"required", oj::array({"dynamics"})},
+                        {"properties", {{"dynamics", {{"required", oj::array({"follower_stiffness_N_per_mm"})}}}}}};
+  auto objective = [](const char* o) {
+    return oj{{"required", oj::array({"objective"})}, {"properties", {{"objective", {{"const", o}}}}}};
+  };
+  return {{"allOf",
+           oj::array({
+               // No flat face; an oscillating follower takes no follower loads (disc_cam's rule) nor a stroke in mm.
+               {{"properties", {{"follower", {{"properties", {{"type", {{"not", {{"enum", {"translating_flat_faced",
+                                                                                             "oscillating_flat_faced"}}}}}}}}}}}}},
+               {{"if", follower_is({"oscillating_roller", "oscillating_knife_edge"})},
+                {"then", {{"allOf", oj::array({refuse("dynamics"), {{"properties", {{"limits", refuse("stroke_mm")}}}}})}}}},
+               {{"if", objective("residual_vibration")}, {"then", stiffness}},
+               {{"if", objective("max_contact_force")}, {"then", {{"required", oj::array({"dynamics"})}}}},
+               {{"if", {{"required", oj::array({"limits"})},
+                        {"properties", {{"limits", {{"required", oj::array({"no_separation_up_to_rpm"})}}}}}}},
+                {"then", stiffness}},
+               {{"if", {{"required", oj::array({"analysis"})},
+                        {"properties", {{"analysis", {{"required", oj::array({"residual_speeds_rpm"})}}}}}}},
+                {"then", objective("residual_vibration")}},
+               {{"properties", {{"dynamics", {{"properties", {{"damping_ratio", {{"exclusiveMaximum", 1}}}}}}}}}},
+           })}};
+}
+
+Study Parse(const Node& root) {
+  const Input in = Read<Input>(root);
+  Study s;
+  s.name = in.name;
+  // The design as a disc_cam study: the kind's own fields out, the designed segments' "optimize"
+  // out, the limits disc_cam knows.
+  if (!root.json()["motion"].is_array()) root["motion"].Fail("an array of motion segments");
+  for (size_t i = 0; i < root.json()["motion"].size(); ++i) {
+    const Node seg = root["motion"][i];
+    if (!seg.json().is_object() || !seg.Has("optimize")) continue;
+    const Node opt = seg["optimize"];
+    opt.CheckKnownFields({"law", "control_points", "degree", "boundary"});
+    if (!opt.Has("law") || opt["law"].String() != "bspline") opt["law"].Fail("\"bspline\" (the designed shape's law)");
+    if (opt.Has("degree") && opt["degree"].Integer(2) > 7) opt["degree"].Fail("a whole number in [2, 7]");
+    if (opt["control_points"].Integer(5) > 35) opt["control_points"].Fail("a whole number in [5, 35]");
+    if (opt.Has("boundary")) opt["boundary"].CheckKnownFields({"velocity", "acceleration"});
+  }
+  nlohmann::json d = root.json();
+  for (const char* k : {"objective", "optimizer", "analysis"}) d.erase(k);
+  d["study"] = "disc_cam";
+  if (d.contains("limits") && d["limits"].is_object()) {
+    d["limits"].erase("stroke_mm");
+    d["limits"].erase("no_separation_up_to_rpm");
+  }
+  std::vector<int> designed;
+  for (size_t i = 0; i < d["motion"].size(); ++i)
+    if (d["motion"][i].is_object() && d["motion"][i].contains("optimize")) {
+      designed.push_back(int(i));
+      d["motion"][i].erase("optimize");
+    }
+  s.base_json = d;
+  {
+    nlohmann::json checked = d;
+    checked["analysis"] = {{"monte_carlo", false}, {"evaluate", {"profile"}}};
+    s.base = disc_cam::Parse(Node(&checked, root.file(), root.path()));
+  }
+  if (s.base.contact == disc_cam::Study::Contact::kFlatFaced)
+    root["follower"]["type"].FailWith(
+        "disc_cam_motion designs the motion of a roller or knife-edge follower (translating or oscillating); a flat "
+        "face is not supported: use a roller, or study \"disc_cam\" to analyse the flat-faced design");
+  const bool oscillating = s.base.cam.follower == dc::FollowerType::kOscillatingRoller;
+  s.follower_unit = oscillating ? "deg" : "mm";
+  if (designed.empty())
+    root["motion"].FailWith("no segment is designed: mark one or more moving segments with \"optimize\": {\"law\": "
+                            "\"bspline\", \"control_points\": 10}");
+  objectives::DiscCamMotionSpec& spec = s.spec;
+  spec.cam = s.base.cam;
+  const size_t count = s.base.cam.motion.segments().size();
+  for (int i : designed) {
+    const auto& ms = s.base.cam.motion.segments()[size_t(i)];
+    if (ms.law == motion::MotionLaw::kDwell || ms.law == motion::MotionLaw::kBSpline ||
+        ms.law == motion::MotionLaw::kPolynomial || ms.rise == 0.0)
+      root["motion"][size_t(i)]["optimize"].FailWith(
+          "a designed segment is a rise or return of a named law (its rise and cam angle are kept, the law is the "
+          "start): not a dwell, a polynomial or a B-spline");
+  }
+  for (int i : designed) {
+    const Node opt = root["motion"][size_t(i)]["optimize"];
+    for (int j : designed)
+      if (j != i && (size_t(j) == (size_t(i) + 1) % count || size_t(i) == (size_t(j) + 1) % count))
+        opt.FailWith("next to another designed segment (motion/" + std::to_string(j) +
+                     "): a designed segment meets fixed neighbours, whose velocity and acceleration it matches");
+    objectives::OptimizedSegment o;
+    o.segment = i;
+    o.control_points = opt["control_points"].Integer(5);
+    o.degree = opt.IntegerOr("degree", 2, 5);
+    if (opt.Has("boundary")) {
+      if (!opt["boundary"].BoolOr("velocity", true))
+        opt["boundary"]["velocity"].FailWith("the velocity is always matched (the follower model needs a C1 program): "
+                                             "true, or leave it out");
+      o.acceleration = opt["boundary"].BoolOr("acceleration", true);
+    }
+    if (o.degree >= o.control_points)
+      opt["degree"].FailWith("a degree below control_points (" + std::to_string(o.control_points) + "), found " +
+                             std::to_string(o.degree));
+    const int fixed = 2 + 2 * (o.acceleration ? 2 : 1);
+    if (o.control_points - fixed < 1)
+      opt["control_points"].FailWith("at least " + std::to_string(fixed + 1) + " control points (" +
+                                     std::to_string(fixed) + " are fixed by the ends' position, velocity" +
+                                     (o.acceleration ? " and acceleration" : "") + "), found " +
+                                     std::to_string(o.control_points));
+    spec.segments.push_back(o);
+  }
+  int free = 0;
+  for (const auto& o : spec.segments) free += o.control_points - 2 - 2 * (o.acceleration ? 2 : 1);
+  if (free > kMaxFree)
+    root["motion"].FailWith("at most " + std::to_string(kMaxFree) + " free control values over the designed segments, "
+                            "found " + std::to_string(free) + ": fewer control_points");
+  // The start: each designed segment as the B-spline through its own law at the Greville abscissae.
+  {
+    const std::vector<double> x0 = objectives::StartControls(spec);
+    spec.cam = objectives::MotionDesign(spec, x0);
+  }
+  // Objective and what it needs.
+  const std::string obj = in.objective;
+  spec.objective = obj == "peak_acceleration" ? MotionObjective::kPeakAcceleration
+                   : obj == "peak_jerk"       ? MotionObjective::kPeakJerk
+                   : obj == "residual_vibration" ? MotionObjective::kResidualVibration
+                                                 : MotionObjective::kMaxContactForce;
+  const bool stiff = s.base.dynamics && s.base.dynamics->follower_stiffness_N_per_mm;
+  if (s.base.dynamics) {
+    spec.speed_rpm = s.base.dynamics->speed_rpm;
+    spec.loads = s.base.dynamics->loads;
+    spec.revolutions = s.base.dynamics->revolutions;
+    if (stiff) {
+      dc::ContactFollower f;
+      f.loads = s.base.dynamics->loads;
+      f.follower_stiffness_N_per_mm = *s.base.dynamics->follower_stiffness_N_per_mm;
+      f.damping_ratio = s.base.dynamics->damping_ratio;
+      if (!(f.damping_ratio < 1.0))
+        root["dynamics"]["damping_ratio"].FailWith("below 1 (an underdamped follower) for disc_cam_motion");
+      spec.follower = f;
+    }
+  }
+  if (spec.objective == MotionObjective::kResidualVibration) {
+    if (!stiff)
+      root["objective"].FailWith("residual_vibration needs the follower's dynamics: dynamics.follower_stiffness_N_per_mm "
+                                 "(with speed_rpm, follower_mass_kg)");
+    bool dwell = false;
+    for (const auto& o : spec.segments) {
+      const auto& next = spec.cam.motion.segments()[(size_t(o.segment) + 1) % count];
+      dwell = dwell || next.law == motion::MotionLaw::kDwell;
+    }
+    if (!dwell)
+      root["objective"].FailWith("residual_vibration is the vibration a designed segment leaves in the dwell after it: "
+                                 "no designed segment is followed by a dwell");
+  }
+  if (spec.objective == MotionObjective::kMaxContactForce && !s.base.dynamics)
+    root["objective"].FailWith("max_contact_force needs the follower's loads: a \"dynamics\" block");
+  if (in.analysis.residual_speeds_rpm) {
+    const auto [lo, hi, n] = *in.analysis.residual_speeds_rpm;
+    const Node band = root["analysis"]["residual_speeds_rpm"];
+    if (!(lo <= hi)) band.Fail("[lowest, highest, count] with lowest <= highest");
+    if (!(n >= 1 && n <= 64 && n == std::floor(n))) band[2].Fail("a whole number of speeds in [1, 64]");
+    if (spec.objective != MotionObjective::kResidualVibration)
+      band.FailWith("only with objective residual_vibration");
+    for (int k = 0; k < int(n); ++k) spec.objective_speeds_rpm.push_back(n == 1 ? lo : lo + (hi - lo) * k / (n - 1));
+  } else if (spec.objective == MotionObjective::kResidualVibration) {
+    spec.objective_speeds_rpm = {spec.speed_rpm};
+  }
+  // Limits.
+  spec.pressure_angle_deg = s.base.limits.pressure_angle_deg;
+  const bool knife = s.base.contact == disc_cam::Study::Contact::kKnifeEdge;
+  spec.radius_margin_is_roller = s.base.limits.radius_margin_default && !knife;
+  spec.radius_margin_mm = spec.radius_margin_is_roller ? 0.0 : s.base.limits.radius_margin_mm;
+  if (in.limits) {
+    if (in.limits->stroke_mm) {
+      if (oscillating) root["limits"]["stroke_mm"].FailWith("a translating follower only (its unit is mm)");
+      spec.stroke_mm = *in.limits->stroke_mm;
+    }
+    if (in.limits->no_separation_up_to_rpm) {
+      if (!stiff)
+        root["limits"]["no_separation_up_to_rpm"].FailWith(
+            "needs the follower's dynamics: dynamics.follower_stiffness_N_per_mm");
+      spec.no_separation_up_to_rpm = *in.limits->no_separation_up_to_rpm;
+    }
+  }
+  spec.separation_speeds = in.analysis.separation_speeds;
+  spec.angle_steps = in.analysis.angle_steps;
+  spec.accurate_factor = in.analysis.accurate_factor;
+  s.backend = in.optimizer.backend;
+  optimizers::SolverOptions& so = s.options.solver;
+  so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
+  so.max_evaluations = in.optimizer.max_evaluations;
+  so.tolerance = 1e-10;
+  so.constraint_tolerance = 1e-7;
+  so.max_seconds = 1e9;
+  s.options.verify_rounds = in.optimizer.verify_rounds;
+  return s;
+}
+
+Result Run(const Study& s, const RunContext& ctx) {
+  Result r;
+  Progress progress("disc_cam_motion", ctx.quiet);
+  progress.Update(0.0, "solving");
+  r.outcome = sizing::SolveDiscCamMotion(s.spec, s.options, s.base.cam);
+  progress.Update(1.0);
+  progress.Done();
+  const auto& o = r.outcome;
+  if (o.x.empty()) {
+    r.blocking_message = "the optimizer ended without a design (" + o.result.message +
+                         "); relax the limits or give more control points";
+  } else if (!o.verified) {
+    const objectives::VerifiedLimit* w = o.verification.worst();
+    r.blocking_message = w ? "the design is not verified: " + w->limit + " (" + w->where + ") is " +
+                                 Format(w->accurate_value, 6) + " against the limit " + Format(w->limit_value, 6) +
+                                 " on the accurate model; relax the limit, give more control points or more "
+                                 "optimizer.verify_rounds"
+                           : "the design is not verified";
+  } else if (!o.converged) {
+    r.blocking_message = "the optimizer did not converge (" + std::string(optimizers::ToString(o.result.status)) +
+                         ", " + o.result.message + "): the design meets the limits but is not known to be optimal; "
+                         "give more optimizer.max_evaluations";
+  }
+  return r;
+}
+
+nlohmann::json MotionJson(const Study& s, const dc::DiscCam& cam) {
+  nlohmann::json m = s.base_json["motion"];
+  const double unit = s.follower_unit == "deg" ? 1.0 / kDeg : 1.0;
+  double start = 0;
+  const auto& segs = cam.motion.segments();
+  for (size_t i = 0; i < segs.size(); ++i) {
+    for (const auto& o : s.spec.segments) {
+      if (size_t(o.segment) != i) continue;
+      nlohmann::json pts = nlohmann::json::array();
+      for (double c : segs[i].coefficients) pts.push_back((start + c) * unit);
+      m[i] = {{"law", "bspline"},
+              {"cam_angle_deg", s.base_json["motion"][i]["cam_angle_deg"]},
+              {"degree", segs[i].spline_degree},
+              {"control_points_" + s.follower_unit, pts}};
+    }
+    start += segs[i].rise;
+  }
+  return m;
+}
+
+namespace {
+
+nlohmann::json CheckJson(const objectives::MotionAccurate& a) {
+  nlohmann::json j = {{"objective", NumberOrNull(a.objective)},
+                      {"estimated_error", NumberOrNull(a.objective_error)},
+                      {"fast_value", NumberOrNull(a.objective_fast)},
+                      {"at_cam_angle_deg", a.objective_at_deg},
+                      {"where", a.objective_where}};
+  if (!a.residuals.empty()) {
+    nlohmann::json rs = nlohmann::json::array();
+    for (const auto& r : a.residuals)
+      rs.push_back({{"segment", r.segment}, {"speed_rpm", r.speed_rpm}, {"amplitude_mm", NumberOrNull(r.amplitude_mm)},
+                    {"estimated_error_mm", NumberOrNull(r.error_mm)}});
+    j["residual_vibration"] = rs;
+  }
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json ToJson(const Study& s, const Result& r) {
+  const sizing::DiscCamMotionOutcome& o = r.outcome;
+  const std::string unit = objectives::MotionObjectiveUnit(s.spec.objective, s.follower_unit == "deg" ? "rad" : "mm");
+  nlohmann::json j;
+  j["study"] = "disc_cam_motion";
+  j["name"] = s.name;
+  j["follower"] = s.base.follower_type;
+  j["objective"] = {{"name", objectives::MotionObjectiveName(s.spec.objective)}, {"unit", unit}};
+  if (!s.spec.objective_speeds_rpm.empty()) j["objective"]["speeds_rpm"] = s.spec.objective_speeds_rpm;
+  nlohmann::json segs = nlohmann::json::array();
+  for (const auto& seg : s.spec.segments)
+    segs.push_back({{"segment", seg.segment},
+                    {"start_law", motion::LawName(s.base.cam.motion.segments()[size_t(seg.segment)].law)},
+                    {"control_points", seg.control_points},
+                    {"degree", seg.degree},
+                    {"boundary", {{"velocity", true}, {"acceleration", seg.acceleration}}}});
+  j["designed_segments"] = segs;
+  nlohmann::json limits = {{"pressure_angle_deg", s.spec.pressure_angle_deg}};
+  limits["radius_margin_mm"] = s.spec.radius_margin_mm + (s.spec.radius_margin_is_roller ? s.spec.cam.roller_radius : 0.0);
+  if (s.spec.stroke_mm) limits["stroke_mm"] = *s.spec.stroke_mm;
+  if (s.spec.no_separation_up_to_rpm) limits["no_separation_up_to_rpm"] = *s.spec.no_separation_up_to_rpm;
+  j["limits"] = limits;
+  AddVerificationJson(o.verification, j);
+  j["verified"] = o.verified;
+  if (o.x.empty()) {
+    j["best"] = nullptr;
+  } else {
+    nlohmann::json b = CheckJson(o.check);
+    b["motion"] = MotionJson(s, o.cam);
+    if (s.spec.no_separation_up_to_rpm)
+      b["lowest_separation_rpm"] = o.check.lowest_separation_rpm > 0 ? nlohmann::json(o.check.lowest_separation_rpm)
+                                                                     : nlohmann::json(nullptr);
+    j["best"] = b;
+  }
+  j["start"] = CheckJson(o.start);
+  j["start"]["laws"] = nlohmann::json::array();
+  for (const auto& seg : s.spec.segments)
+    j["start"]["laws"].push_back(motion::LawName(s.base.cam.motion.segments()[size_t(seg.segment)].law));
+  nlohmann::json named = nlohmann::json::array();
+  double best_named = kInf;
+  std::string best_named_law;
+  for (const auto& n : o.named_laws) {
+    named.push_back({{"segment", n.segment}, {"law", n.law}, {"objective", NumberOrNull(n.value)},
+                     {"estimated_error", NumberOrNull(n.error)}});
+    if (std::isfinite(n.value) && n.value < best_named) best_named = n.value, best_named_law = n.law;
+  }
+  j["named_laws"] = named;
+  if (!o.x.empty() && std::isfinite(best_named)) {
+    j["best_named_law"] = {{"law", best_named_law}, {"objective", best_named}};
+    // Beats it when the accurate values differ by more than both errors together.
+    double err = 0;
+    for (const auto& n : o.named_laws)
+      if (n.law == best_named_law) err = std::max(err, n.error);
+    j["beats_every_named_law"] = o.check.objective + o.check.objective_error + err < best_named;
+  }
+  j["optimizer"] = {{"backend", s.backend},
+                    {"converged", o.converged},
+                    {"status", optimizers::ToString(o.result.status)},
+                    {"message", o.result.message},
+                    {"max_violation", o.result.max_violation},
+                    {"max_evaluations", s.options.solver.max_evaluations},
+                    {"verify_rounds", s.options.verify_rounds},
+                    {"rounds", o.rounds},
+                    {"evaluations", o.result.value_evaluations},
+                    {"gradient_evaluations", o.result.gradient_evaluations},
+                    {"gradient_method",
+                     "exact: forward-mode differentiation of the rows (the dynamic rows: forward sensitivities of the "
+                     "held-on follower's ODE through its RK4 steps)"}};
+  j["analysis"] = {{"angle_steps", s.spec.angle_steps},
+                   {"accurate_factor", s.spec.accurate_factor},
+                   {"accurate_angle_steps", s.spec.angle_steps * s.spec.accurate_factor}};
+  if (!r.blocking_message.empty()) j["notes"] = {r.blocking_message};
+  return j;
+}
+
+void Write(const Study& s, const Result& r, Outputs& out) {
+  out.AddJson("result.json", ToJson(s, r));
+  const sizing::DiscCamMotionOutcome& o = r.outcome;
+  out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
+  if (o.x.empty()) return;
+  nlohmann::json best = s.base_json;
+  best["name"] = (o.verified ? "designed motion of " : "closest motion (not verified) of ") + s.name;
+  best["motion"] = MotionJson(s, o.cam);
+  best["analysis"] = {{"angle_steps", std::min(1000000, s.spec.angle_steps * s.spec.accurate_factor)},
+                      {"monte_carlo", false}};
+  out.AddJson("best_disc_cam.json", best);
+  // SVAJ of the designed program against the study's own laws, on the accurate grid.
+  const int n = s.spec.angle_steps * s.spec.accurate_factor;
+  const double unit = s.follower_unit == "deg" ? 1.0 / kDeg : 1.0;
+  const size_t m = static_cast<size_t>(n);
+  std::vector<double> th(m), sb(m), vb(m), ab(m), jb(m), ss(m), as(m);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * kPi * i / n;
+    const motion::Svaj<double> b = o.cam.motion.Evaluate(t), st = s.base.cam.motion.Evaluate(t);
+    th[size_t(i)] = 360.0 * i / n;
+    sb[size_t(i)] = b.s * unit, vb[size_t(i)] = b.v * unit, ab[size_t(i)] = b.a * unit, jb[size_t(i)] = b.j * unit;
+    ss[size_t(i)] = st.s * unit, as[size_t(i)] = st.a * unit;
+  }
+  Table t;
+  t.Add("cam_angle_deg", th);
+  t.Add("follower_" + s.follower_unit, sb);
+  t.Add("velocity_" + s.follower_unit + "_per_rad", vb);
+  t.Add("acceleration_" + s.follower_unit + "_per_rad2", ab);
+  t.Add("jerk_" + s.follower_unit + "_per_rad3", jb);
+  t.Add("start_follower_" + s.follower_unit, ss);
+  t.Add("start_acceleration_" + s.follower_unit + "_per_rad2", as);
+  out.Add("svaj.csv", ToCsv(t));
+  PlotOptions po;
+  po.title = s.name + ": acceleration of the designed program and of the start laws";
+  po.x_label = "cam angle [deg]";
+  po.y_label = "S'' [" + s.follower_unit + "/rad²]";
+  out.Add("acceleration.svg", SvgLinePlot({{"designed", th, ab}, {"start laws", th, as}}, po));
+}
+
+namespace {
+
+std::string Summary(const Study& s, const Result& r) {
+  const sizing::DiscCamMotionOutcome& o = r.outcome;
+  std::ostringstream m;
+  if (o.x.empty()) return "disc_cam_motion: no design\n";
+  m << "disc_cam_motion: " << objectives::MotionObjectiveName(s.spec.objective) << " " << Format(o.check.objective, 6)
+    << " ± " << Format(o.check.objective_error, 2) << " "
+    << objectives::MotionObjectiveUnit(s.spec.objective, s.follower_unit == "deg" ? "rad" : "mm") << " (start "
+    << Format(o.start.objective, 6) << ")" << (o.verified ? ", verified" : ", not verified") << "\n";
+  return m.str();
+}
+
+void RunDiscCamMotion(const Node& root, const RunContext& ctx, Outputs& out) {
+  const Study s = Parse(root);
+  const Result r = Run(s, ctx);
+  Write(s, r, out);
+  if (!ctx.quiet) std::cerr << Summary(s, r);
+}
+
+CAMOPT_REGISTER_STUDY("disc_cam_motion", RunDiscCamMotion);
+CAMOPT_REGISTER_STUDY_PARSER("disc_cam_motion", [](const Node& root) { (void)Parse(root); });
+CAMOPT_REGISTER_DECLARED_KIND("disc_cam_motion", Input,
+                              "camopt study: the shape of a disc cam's rises designed for the least peak acceleration, "
+                              "jerk, residual vibration or contact force");
+
+Fidelity Knobs(const nlohmann::json&) {
+  const Input defaults;
+  Fidelity f;
+  f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, defaults.analysis.angle_steps, 2, true, 0,
+                     "cam angles of the fast rows (the accurate grid is accurate_factor times as fine)"});
+  f.headlines = {"/best/objective"};
+  return f;
+}
+CAMOPT_REGISTER_FIDELITY("disc_cam_motion", Knobs);
+
+// The work limit: every solve's iterations × the rows (the dynamic ones: RK4 steps × speeds), and
+// the accurate checks (CVODE runs).
+WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
+  const Input in = Read<Input>(Node(&study, file, ""));
+  const double steps = in.analysis.angle_steps, budget = std::max(1, in.optimizer.max_evaluations);
+  const double solves = 1 + in.optimizer.verify_rounds;
+  return LargestTerm({{budget * solves * 3 * steps * 8, "/optimizer/max_evaluations",
+                       WorkNumber(budget) + " iterations × " + WorkNumber(solves) + " solves × 3 evaluations × " +
+                           WorkNumber(steps) + " angle steps × 8 speeds"},
+                      {solves * 10 * steps * in.analysis.accurate_factor, "/analysis/accurate_factor",
+                       WorkNumber(solves) + " accurate checks × 10 × " +
+                           WorkNumber(steps * in.analysis.accurate_factor) + " cam angles"}},
+                     1e9 * factor, "cam angle evaluations", 16);
+}
+const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam_motion", EstimateWork);
+
+CAMOPT_REGISTER_REPORT("disc_cam_motion", {
+    {"objective (accurate)", "/best/objective", "", "", NAN, true, "/best/estimated_error"},
+    {"objective of the start laws (accurate)", "/start/objective", ""},
+    {"objective of the best named law", "/best_named_law/objective", ""},
+    {"beats every named law", "/beats_every_named_law", ""},
+    {"verified", "/verified", ""},
+});
+
+}  // namespace
+
+}  // namespace camopt::studies::disc_cam_motion
