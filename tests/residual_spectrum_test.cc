@@ -16,9 +16,13 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "model/disc_cam/follower_dynamics.h"
 #include "model/disc_cam/residual_spectrum.h"
+#include "studies/disc_cam_study.h"
+#include "studies/study.h"
+#include "tests/test_util.h"
 
 namespace camopt::disc_cam {
 namespace {
@@ -148,6 +152,44 @@ TEST(ResidualSpectrum, EqualsTheSimulatedFollowersResidualVibration) {
   EXPECT_NEAR(spectrum, expected, 1e-9);
   std::printf("follower ringing: simulated %.10e mm, r h A(1.3) %.10e mm\n", r.residual_vibration_mm, spectrum);
   EXPECT_NEAR(r.residual_vibration_mm, spectrum, 1e-6 * spectrum);
+}
+
+// The same check through the disc_cam study: result.json's residual_spectrum predicts, for the
+// rise at the study's speed, the residual_vibration_mm its CVODE response reports (ζ = 0, one
+// revolution from rest, the return at τ = 2).
+TEST(ResidualSpectrum, StudysPredictionEqualsItsSimulatedResidualVibration) {
+  const double kf = 1000.0, ks = 10.0, wn = std::sqrt((kf + ks) / 1e-3);  // m = 1 kg
+  const double rise_deg = 100.0, return_deg = 2.0 / 1.3 * rise_deg;
+  const double omega = rise_deg * kDeg * wn / (2 * kPi * 1.3);
+  nlohmann::json file = camopt::testing::Example("disc_cam_translating.json");
+  file["base_circle_radius_mm"] = 80;
+  file["motion"] = {{{"law", "cycloidal"}, {"rise_mm", 20}, {"cam_angle_deg", rise_deg}},
+                    {{"law", "dwell"}, {"cam_angle_deg", 40}},
+                    {{"law", "cycloidal"}, {"rise_mm", -20}, {"cam_angle_deg", return_deg}},
+                    {{"law", "dwell"}, {"cam_angle_deg", 360 - 40 - rise_deg - return_deg}}};
+  file["dynamics"] = {{"speed_rpm", Rpm(omega)}, {"follower_mass_kg", 1.0}, {"spring_rate_N_per_mm", ks},
+                      {"spring_preload_N", 20000}, {"follower_axis", "horizontal"},
+                      {"follower_stiffness_N_per_mm", kf}, {"damping_ratio", 0.0}, {"revolutions", 1}};
+  file["analysis"] = {{"angle_steps", 720}, {"monte_carlo", false}};
+  file.erase("tolerances");
+  const studies::Node root(&file, "study.json", "");
+  const studies::disc_cam::Study st = studies::disc_cam::Parse(root);
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  const nlohmann::json out = studies::disc_cam::ToJson(st, studies::disc_cam::Run(st, ctx));
+  const nlohmann::json& dj = out["dynamics"];
+  ASSERT_EQ(dj["response"]["separates"], false);
+  const nlohmann::json& rise = dj["residual_spectrum"]["segments"][0];
+  EXPECT_NEAR(rise["tau"].get<double>(), 1.3, 1e-9);
+  EXPECT_NEAR(dj["residual_spectrum"]["segments"][1]["tau"].get<double>(), 2.0, 1e-9);
+  EXPECT_NEAR(dj["residual_spectrum"]["segments"][1]["amplitude_per_rise"].get<double>(), 0.0, 1e-9);
+  const double predicted = rise["predicted_residual_vibration_mm"], simulated = dj["response"]["residual_vibration_mm"];
+  std::printf("study: predicted %.10e mm, simulated (CVODE, default tolerances) %.10e mm\n", predicted, simulated);
+  EXPECT_NEAR(predicted, kf / (kf + ks) * 20.0 * CycloidalClosedForm(1.3), 1e-9);
+  EXPECT_NEAR(simulated, predicted, 1e-5 * predicted);
+  // The cycloidal rise's zeros in τ = 0.5 … 10: 2, 3, …, 9.
+  ASSERT_EQ(rise["minima"].size(), 8u);
+  EXPECT_NEAR(rise["minima"][0]["tau"].get<double>(), 2.0, 1e-7);
 }
 
 }  // namespace
