@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -277,6 +278,34 @@ TEST(ArmDynamics, StudyResponseInTheRigidLimitMeetsTheKinetostaticForce) {
     const double fn = std::sqrt((3e5 + 30) / 0.01) / (2 * kPi);
     EXPECT_NEAR(aj["residual_spectrum"]["segments"][0]["tau"].get<double>(), kBeta / RadPerSecond(300) * fn, 1e-9);
   }
+}
+
+// Through the CLI: the response and spectrum files, the chart in report.html, and the same study
+// giving byte-identical outputs twice.
+TEST(ArmDynamics, CliWritesTheResponseAndTheSpectrumIdentically) {
+  namespace fs = std::filesystem;
+  const auto dir = camopt::testing::TempDir("arm-dynamics-cli");
+  json study = ArmStudy("disc_cam_oscillating.json", 2000.0);
+  camopt::testing::WriteFile(dir / "study.json", study.dump());
+  for (const char* out : {"a", "b"}) {
+    const auto res = camopt::testing::RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                                                (dir / out).string());
+    ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  }
+  for (const char* file : {"result.json", "arm_response.csv", "arm_response.svg", "residual_spectrum.csv",
+                           "residual_spectrum_operating.csv", "residual_spectrum.svg", "report.html"}) {
+    ASSERT_TRUE(fs::exists(dir / "a" / file)) << file;
+    EXPECT_EQ(camopt::testing::ReadFile(dir / "a" / file), camopt::testing::ReadFile(dir / "b" / file)) << file;
+  }
+  const std::string report = camopt::testing::ReadFile(dir / "a" / "report.html");
+  EXPECT_NE(report.find("residual-vibration spectrum"), std::string::npos);
+  EXPECT_NE(report.find("residual_spectrum.svg"), std::string::npos);
+  const std::string csv = camopt::testing::ReadFile(dir / "a" / "residual_spectrum.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "tau,amplitude_per_rise_segment_0,amplitude_per_rise_segment_2");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), studies::disc_cam::kSpectrumPoints + 1);
+  const json out = json::parse(camopt::testing::ReadFile(dir / "a" / "result.json"));
+  EXPECT_EQ(out["arm_dynamics"]["response"]["separates"], false);
+  EXPECT_TRUE(out["arm_dynamics"]["dynamic_jump_speed_rpm"].is_number());
 }
 
 TEST(ArmDynamics, BadInputExitsTwoThroughTheCli) {
