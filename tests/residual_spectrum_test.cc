@@ -1,7 +1,7 @@
 // The residual-vibration spectrum (model/disc_cam/residual_spectrum.h) against:
 // - the closed forms of the undamped cycloidal and simple-harmonic rises, derived here from the
-//   Fourier transform of the rise's velocity (Koster, Vibrations of Cam Mechanisms, ch. 3; Rothbart,
-//   Cam Design Handbook, ch. 10): cycloidal A/h = |sin πτ|/(πτ|τ² − 1|), simple harmonic
+//   Fourier transform of the rise's velocity (the spectra Koster, Vibrations of Cam Mechanisms, and
+//   Rothbart, Cam Design Handbook, plot for these laws): cycloidal A/h = |sin πτ|/(πτ|τ² − 1|), simple harmonic
 //   A/h = |cos πτ|/|4τ² − 1|, and their zeros (τ = 2, 3, … and τ = 3/2, 5/2, …);
 // - an independent fixed-step RK4 integration, written here, of z̈ + 2ζω_n ż + ω_n² z = −ÿ over the
 //   segment (damped, a modified trapezoid with its kinks and a B-spline), its free-vibration envelope

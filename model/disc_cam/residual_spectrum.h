@@ -1,9 +1,10 @@
 // Residual-vibration spectrum of a motion segment: the amplitude of the free vibration a rise leaves
 // in a linear one-degree-of-freedom follower when it comes to rest in the following dwell, as a
 // function of τ = T/T_n, the segment's duration in time over the follower's natural period (the
-// classic cam design chart: Koster, Vibrations of Cam Mechanisms (1974), ch. 3; Rothbart, Cam Design
-// Handbook, ch. 10 "Cam system dynamics", the residual-vibration spectra of the rest-in-rest laws;
-// Norton, Cam Design and Manufacturing Handbook, ch. 10).
+// classic cam design chart: Norton, Cam Design and Manufacturing Handbook, ch. 10, the single-DOF
+// lumped model and its residual vibration; Koster, Vibrations of Cam Mechanisms (1974), and Rothbart,
+// Cam Design Handbook, the chapters on cam system dynamics, plot these spectra for the rest-in-rest
+// laws; the closed forms below are derived here from the integral, not copied).
 //
 // Model (base-excited single-DOF, damping on the relative motion): the cam imposes y(t), the
 // follower's mass moves x, z = x − y:
@@ -16,7 +17,7 @@
 // (which also takes in the velocity steps of a segment that does not start or end at rest, as
 // impulses of ÿ between the dwells),
 //   A/|h| = e^{−2πζτ} |∫₀¹ N'(u) e^{−c u} du| / √(1 − ζ²).
-// Closed forms (derived from this integral; Koster ch. 3, Rothbart ch. 10 show the same curves):
+// Closed forms (derived from this integral with N' of the law):
 //   cycloidal (N' = 1 − cos 2πu), ζ = 0:       A/h = |sin πτ| / (πτ |τ² − 1|)   (1/2 at τ = 1; zeros at τ = 2, 3, …)
 //   simple harmonic (N' = (π/2) sin πu), ζ = 0: A/h = |cos πτ| / |4τ² − 1|     (π/4 at τ = 1/2; zeros at τ = 3/2, 5/2, …)
 // For the 1-DOF follower of model/disc_cam/follower_dynamics.h (k_f in series with the mass, return
