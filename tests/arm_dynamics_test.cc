@@ -280,6 +280,18 @@ TEST(ArmDynamics, StudyResponseInTheRigidLimitMeetsTheKinetostaticForce) {
   }
 }
 
+// A critically damped arm does not ring: no spectrum, a note says why; the response is still reported.
+TEST(ArmDynamics, CriticallyDampedArmHasNoSpectrum) {
+  json file = ArmStudy("disc_cam_oscillating.json", 2000.0);
+  file["arm_dynamics"]["damping_ratio"] = 1.0;
+  const json out = RunStudy(file);
+  EXPECT_TRUE(out["arm_dynamics"].contains("response"));
+  EXPECT_FALSE(out["arm_dynamics"].contains("residual_spectrum"));
+  bool noted = false;
+  for (const json& n : out["notes"]) noted = noted || n.get<std::string>().find("no residual_spectrum") != std::string::npos;
+  EXPECT_TRUE(noted) << out["notes"].dump();
+}
+
 // Through the CLI: the response and spectrum files, the chart in report.html, and the same study
 // giving byte-identical outputs twice.
 TEST(ArmDynamics, CliWritesTheResponseAndTheSpectrumIdentically) {
