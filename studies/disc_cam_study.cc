@@ -310,6 +310,9 @@ Study Parse(const Node& root) {
     a.loads.spring_rate_N_m_per_rad = in.arm_dynamics->spring_rate_N_m_per_rad;
     a.loads.spring_preload_N_m = in.arm_dynamics->spring_preload_N_m;
     a.loads.external_moment_N_m = in.arm_dynamics->external_moment_N_m;
+    a.arm_stiffness_N_m_per_rad = in.arm_dynamics->arm_stiffness_N_m_per_rad;
+    a.damping_ratio = in.arm_dynamics->damping_ratio;
+    a.revolutions = in.arm_dynamics->revolutions;
     s.arm_dynamics = a;
   }
   if (limits.contact_stress_MPa) {
@@ -414,6 +417,49 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   return FitPlanarCam(g, s.geometry);
 }
 
+// The oscillating arm on its train stiffness (model/disc_cam/follower_dynamics.h, SimulateArm): the
+// response at the speed, the normal contact force at the cam M_a/lever(θ) at its samples (lever_m:
+// the normal's lever arm about the pivot [m] at a cam angle [rad]), and the dynamic jump speed
+// searched as the translating follower's.
+template <typename Lever>
+void ArmResponse(const Study& s, Result::Loads& L, const Lever& lever_m) {
+  if (!s.arm_dynamics || !s.arm_dynamics->arm_stiffness_N_m_per_rad) return;
+  const Study::ArmDynamics& a = *s.arm_dynamics;
+  const double omega = dc::RadPerSecond(a.speed_rpm);
+  dc::ArmDynamicsInput in;
+  in.motion = s.cam.motion;
+  in.loads = a.loads;
+  in.arm_stiffness_N_m_per_rad = *a.arm_stiffness_N_m_per_rad;
+  in.damping_ratio = a.damping_ratio;
+  in.revolutions = a.revolutions;
+  in.speed_rad_s = omega;
+  L.arm_response = dc::SimulateArm(in);
+  bool first = true;
+  for (const dc::ArmDynamicsSample& q : L.arm_response->samples) {
+    const double f = q.contact_moment_N_m / lever_m(q.cam_angle_deg * kDeg);
+    L.arm_contact_force_N.push_back(f);
+    if (first || f < L.min_dynamic_contact_force_N.value) L.min_dynamic_contact_force_N = {f, q.cam_angle_deg};
+    if (first || f > L.max_dynamic_contact_force_N.value) L.max_dynamic_contact_force_N = {f, q.cam_angle_deg};
+    first = false;
+  }
+  // The extremes of the moment are located between samples: the force there counts too.
+  for (const auto& [m, at] : {std::pair{L.arm_response->min_contact_moment_N_m, L.arm_response->min_contact_moment_cam_angle_deg},
+                             std::pair{L.arm_response->max_contact_moment_N_m, L.arm_response->max_contact_moment_cam_angle_deg}}) {
+    const double f = m / lever_m(at * kDeg);
+    if (f < L.min_dynamic_contact_force_N.value) L.min_dynamic_contact_force_N = {f, at};
+    if (f > L.max_dynamic_contact_force_N.value) L.max_dynamic_contact_force_N = {f, at};
+  }
+  const double reach = std::max(a.speed_rpm, std::isfinite(L.jump_speed_rpm) ? L.jump_speed_rpm : 0.0);
+  L.dynamic_jump_upper_rpm = 1.5 * reach;
+  L.dynamic_jump = dc::FindArmDynamicJumpSpeed(in, dc::RadPerSecond(L.dynamic_jump_upper_rpm));
+  if (L.arm_response->separates && (!L.dynamic_jump->found || L.dynamic_jump->speed_rad_s > omega)) {
+    const int runs = L.dynamic_jump->runs;
+    L.dynamic_jump_upper_rpm = a.speed_rpm;
+    L.dynamic_jump = dc::FindArmDynamicJumpSpeed(in, omega);
+    L.dynamic_jump->runs += runs;
+  }
+}
+
 // The loads' extremes over the grid (contact force, camshaft torque and stress series filled) and,
 // with a follower stiffness, the dynamic response and jump speed (the follower's motion only: the
 // same for every contact type).
@@ -465,7 +511,59 @@ void FinishLoads(const Study& s, Result::Loads& L) {
 Result RunFlatFaced(const Study& s);
 Result RunOscillatingFlatFaced(const Study& s);
 
+// The residual-vibration spectrum of each moving segment (model/disc_cam/residual_spectrum.h) with
+// the follower's natural frequency and damping ratio from the response, and r = k_f/(k_f + k).
+std::optional<Result::Spectrum> ResidualSpectrumOf(const Study& s, const Result& r) {
+  if (!r.loads) return std::nullopt;
+  double fn = 0.0, speed_rpm = 0.0, zeta = 0.0, ratio = 0.0;
+  if (r.loads->response) {
+    fn = r.loads->response->natural_frequency_Hz, speed_rpm = s.dynamics->speed_rpm, zeta = s.dynamics->damping_ratio;
+    ratio = *s.dynamics->follower_stiffness_N_per_mm /
+            (*s.dynamics->follower_stiffness_N_per_mm + s.dynamics->loads.spring_rate_N_per_mm);
+  } else if (r.loads->arm_response) {
+    fn = r.loads->arm_response->natural_frequency_Hz, speed_rpm = s.arm_dynamics->speed_rpm;
+    zeta = s.arm_dynamics->damping_ratio;
+    ratio = *s.arm_dynamics->arm_stiffness_N_m_per_rad /
+            (*s.arm_dynamics->arm_stiffness_N_m_per_rad + s.arm_dynamics->loads.spring_rate_N_m_per_rad);
+  } else {
+    return std::nullopt;
+  }
+  if (!(zeta < 1.0)) return std::nullopt;  // critically damped: no ringing (a note says so)
+  Result::Spectrum sp;
+  sp.zeta = zeta;
+  sp.stiffness_ratio = ratio;
+  for (int i = 0; i < kSpectrumPoints; ++i)
+    sp.tau.push_back(kSpectrumTauLow + (kSpectrumTauHigh - kSpectrumTauLow) * i / (kSpectrumPoints - 1));
+  const double omega = dc::RadPerSecond(speed_rpm);
+  const double unit = r.oscillating ? 1.0 / kDeg : 1.0;  // follower unit
+  const auto& segs = s.cam.motion.segments();
+  for (size_t k = 0; k < segs.size(); ++k) {
+    const motion::MotionSegment<double>& seg = segs[k];
+    if (seg.law == motion::MotionLaw::kDwell || !(std::abs(seg.rise) > 0.0)) continue;
+    Result::SpectrumSegment row;
+    row.index = int(k);
+    row.law = motion::LawName(seg.law);
+    row.tau = seg.duration / omega * fn;  // T/T_n = (β/ω) f_n
+    const dc::ResidualAmplitude a = dc::ResidualAmplitudeAt(seg, zeta, row.tau);
+    row.amplitude = a.amplitude;
+    row.amplitude_error = a.error;
+    row.predicted_residual = ratio * std::abs(seg.rise) * a.amplitude * unit;
+    row.spectrum = dc::ResidualSpectrum(seg, zeta, sp.tau);
+    row.minima = dc::ResidualSpectrumMinima(seg, zeta, kSpectrumTauLow, kSpectrumTauHigh, kSpectrumPoints);
+    sp.segments.push_back(std::move(row));
+  }
+  return sp;
+}
+
+Result RunCam(const Study& s, const RunContext& ctx);
+
 Result Run(const Study& s, const RunContext& ctx) {
+  Result r = RunCam(s, ctx);
+  r.residual_spectrum = ResidualSpectrumOf(s, r);
+  return r;
+}
+
+Result RunCam(const Study& s, const RunContext& ctx) {
   if (s.contact == Study::Contact::kFlatFaced && s.cam.follower == FollowerType::kOscillatingRoller)
     return RunOscillatingFlatFaced(s);
   if (s.contact == Study::Contact::kFlatFaced) return RunFlatFaced(s);
@@ -594,6 +692,11 @@ Result Run(const Study& s, const RunContext& ctx) {
     L.jump_speed_rpm = dc::Rpm(dc::ArmJumpSpeedOver(pts, s.arm_dynamics->loads));
     L.spring = dc::ArmRequiredSpringOver(pts, s.arm_dynamics->loads, omega);
     FinishLoads(s, L);
+    // The normal's lever arm about the pivot, n · dC/dξ (OscillatingRollerLoadAt) [m].
+    ArmResponse(s, L, [&](double theta) {
+      const CamPoint<double> p = dc::EvaluateCam(cam, theta);
+      return p.normal.dot(p.follower_dir) * 1e-3;
+    });
     r.loads = std::move(L);
   }
 
@@ -817,6 +920,8 @@ Result RunOscillatingFlatFaced(const Study& s) {
       const int i_p = g.ArgMax([&](int i) { return L.contact_stress_MPa[size_t(i)]; });
       L.max_contact_stress_MPa = {L.contact_stress_MPa[size_t(i_p)], g.AngleDeg(i_p)};
     }
+    // The face's lever arm about the pivot is ℓ (OscillatingFlatFaceLoadAt) [m].
+    ArmResponse(s, L, [&](double theta) { return dc::EvaluateOscillatingFlatFaced(c, theta).contact_on_face * 1e-3; });
     r.loads = std::move(L);
   }
 
@@ -1014,6 +1119,46 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     return o["contact_stress_ok"].get<bool>();
   };
   constexpr const char* kFaceCusp = "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)";
+  // The residual-vibration spectrum (model/disc_cam/residual_spectrum.h), per moving segment.
+  const auto add_spectrum = [&](nlohmann::json& o, bool with_response, double zeta) {
+    if (!with_response) return;
+    if (!r.residual_spectrum) {
+      j["notes"].push_back("no residual_spectrum: the follower is critically damped (damping_ratio " + Format(zeta) +
+                           "), it does not ring");
+      return;
+    }
+    const Result::Spectrum& sp = *r.residual_spectrum;
+    nlohmann::json segs = nlohmann::json::array();
+    for (const Result::SpectrumSegment& g : sp.segments) {
+      nlohmann::json minima = nlohmann::json::array();
+      for (const dc::SpectrumMinimum& m : g.minima)
+        minima.push_back({{"tau", m.tau}, {"amplitude_per_rise", m.amplitude}, {"zero", m.zero}});
+      segs.push_back({{"segment", g.index},
+                      {"law", g.law},
+                      {"tau", g.tau},
+                      {"amplitude_per_rise", g.amplitude},
+                      {"amplitude_error", g.amplitude_error},
+                      {r.oscillating ? "predicted_residual_vibration_deg" : "predicted_residual_vibration_mm",
+                       g.predicted_residual},
+                      {"minima", minima}});
+    }
+    o["residual_spectrum"] = {{"damping_ratio", sp.zeta},
+                              {"stiffness_ratio", sp.stiffness_ratio},
+                              {"tau_range", {kSpectrumTauLow, kSpectrumTauHigh}},
+                              {"points", kSpectrumPoints},
+                              {"segments", segs}};
+  };
+  const auto add_jump = [&](const Result::Loads& L, nlohmann::json& o, const char* who) {
+    const dc::DynamicJumpSpeed& js = *L.dynamic_jump;
+    o["dynamic_jump_speed_rpm"] = js.found ? nlohmann::json(dc::Rpm(js.speed_rad_s)) : nlohmann::json(nullptr);
+    o["dynamic_jump_search"] = {{"upper_rpm", L.dynamic_jump_upper_rpm},
+                                {"scan_step_rpm", dc::Rpm(js.scan_step_rad_s)},
+                                {"bracket_rpm", {dc::Rpm(js.lower_rad_s), js.found ? dc::Rpm(js.speed_rad_s) : L.dynamic_jump_upper_rpm}},
+                                {"simulations", js.runs}};
+    if (!js.found)
+      j["notes"].push_back(std::string("dynamic_jump_speed_rpm is null: the ") + who +
+                           " holds the cam at every speed scanned up to " + Format(L.dynamic_jump_upper_rpm) + " rpm");
+  };
   if (r.loads && s.arm_dynamics) {
     // The arm of an oscillating follower: contact force (M/ℓ on a flat face, M/(n · dC/dξ) on a roller),
     // camshaft torque, jump speed, stress.
@@ -1042,6 +1187,35 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     } else if (s.face_width_mm || s.material) {
       j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
     }
+    if (L.arm_response) {
+      // The arm on its train stiffness (follower_dynamics.h, SimulateArm): the translating response's
+      // keys with moments about the pivot, and the normal contact force at the cam.
+      const dc::ArmDynamicsResult& ar = *L.arm_response;
+      const Study::ArmDynamics& ad = *s.arm_dynamics;
+      nlohmann::json rj = {{"arm_stiffness_N_m_per_rad", *ad.arm_stiffness_N_m_per_rad},
+                           {"damping_ratio", ad.damping_ratio},
+                           {"revolutions", ad.revolutions},
+                           {"natural_frequency_Hz", ar.natural_frequency_Hz},
+                           {"min_contact_moment_N_m", ar.min_contact_moment_N_m},
+                           {"at_min_contact_moment_cam_angle_deg", ar.min_contact_moment_cam_angle_deg},
+                           {"max_contact_moment_N_m", ar.max_contact_moment_N_m},
+                           {"at_max_contact_moment_cam_angle_deg", ar.max_contact_moment_cam_angle_deg},
+                           {"min_contact_force_N", L.min_dynamic_contact_force_N.value},
+                           {"at_min_contact_force_cam_angle_deg", L.min_dynamic_contact_force_N.cam_angle_deg},
+                           {"max_contact_force_N", L.max_dynamic_contact_force_N.value},
+                           {"at_max_contact_force_cam_angle_deg", L.max_dynamic_contact_force_N.cam_angle_deg},
+                           {"separates", ar.separates},
+                           {"first_separation_cam_angle_deg", nullptr},
+                           {"residual_vibration_deg", ar.residual_vibration_rad / kDeg},
+                           {"at_residual_vibration_cam_angle_deg", ar.residual_vibration_cam_angle_deg},
+                           {"solver_steps", ar.steps},
+                           {"contact_events", ar.events}};
+      if (ar.separates) rj["first_separation_cam_angle_deg"] = ar.first_separation_cam_angle_deg;
+      aj["response"] = rj;
+      add_jump(L, aj, "arm");
+      loads_ok = loads_ok && !ar.separates;
+    }
+    add_spectrum(aj, L.arm_response.has_value(), s.arm_dynamics->damping_ratio);
     j["arm_dynamics"] = aj;
   } else if (r.loads) {
     const Result::Loads& L = *r.loads;
@@ -1077,17 +1251,10 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                            {"contact_events", fr.events}};
       if (fr.separates) rj["first_separation_cam_angle_deg"] = fr.first_separation_cam_angle_deg;
       dj["response"] = rj;
-      const dc::DynamicJumpSpeed& js = *L.dynamic_jump;
-      dj["dynamic_jump_speed_rpm"] = js.found ? nlohmann::json(dc::Rpm(js.speed_rad_s)) : nlohmann::json(nullptr);
-      dj["dynamic_jump_search"] = {{"upper_rpm", L.dynamic_jump_upper_rpm},
-                                   {"scan_step_rpm", dc::Rpm(js.scan_step_rad_s)},
-                                   {"bracket_rpm", {dc::Rpm(js.lower_rad_s), js.found ? dc::Rpm(js.speed_rad_s) : L.dynamic_jump_upper_rpm}},
-                                   {"simulations", js.runs}};
-      if (!js.found)
-        j["notes"].push_back("dynamic_jump_speed_rpm is null: the follower holds the cam at every speed scanned up to " +
-                             Format(L.dynamic_jump_upper_rpm) + " rpm");
+      add_jump(L, dj, "follower");
       loads_ok = loads_ok && !fr.separates;
     }
+    add_spectrum(dj, L.response.has_value(), d.damping_ratio);
     if (L.stress_evaluated) {
       loads_ok = add_stress(L, dj, flat ? kFaceCusp
                                         : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
@@ -1292,6 +1459,64 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                                                  o));
   }
 
+  if (r.loads && r.loads->arm_response) {
+    const auto& smp = r.loads->arm_response->samples;
+    const Study::ArmDynamics& ad = *s.arm_dynamics;
+    Table rt;
+    std::vector<double> angle, cam_deg, arm_deg, moment, kinetostatic;
+    for (const dc::ArmDynamicsSample& q : smp) {
+      angle.push_back(q.cam_angle_deg);
+      cam_deg.push_back(q.cam_arm_rad / kDeg);
+      arm_deg.push_back(q.arm_rad / kDeg);
+      moment.push_back(q.contact_moment_N_m);
+      kinetostatic.push_back(q.kinetostatic_moment_N_m);
+    }
+    rt.Add("cam_angle_deg", angle);
+    rt.Add("cam_arm_deg", cam_deg);
+    rt.Add("arm_inertia_deg", arm_deg);
+    rt.Add("contact_moment_N_m", moment);
+    rt.Add("kinetostatic_contact_moment_N_m", kinetostatic);
+    rt.Add("contact_force_N", r.loads->arm_contact_force_N);
+    out.Add("arm_response.csv", ToCsv(rt));
+    PlotOptions o;
+    o.title = s.name + ": the arm's contact moment at " + Format(ad.speed_rpm) + " rpm, last of " +
+              std::to_string(ad.revolutions) + " revolutions";
+    o.x_label = "cam angle [deg]";
+    o.y_label = "contact moment about the pivot [N·m]";
+    out.Add("arm_response.svg",
+            SvgLinePlot({Series{"dynamic (k_f = " + Format(*ad.arm_stiffness_N_m_per_rad) + " N·m/rad)", angle, moment},
+                         Series{"kinetostatic (rigid arm)", angle, kinetostatic}},
+                        o));
+  }
+  if (r.residual_spectrum && !r.residual_spectrum->segments.empty()) {
+    // The classic chart: A/|h| against τ = T/T_n per moving segment, the study's τ marked.
+    const Result::Spectrum& sp = *r.residual_spectrum;
+    Table st;
+    st.Add("tau", sp.tau);
+    std::vector<Series> curves;
+    PlotOptions o;
+    for (const Result::SpectrumSegment& g : sp.segments) {
+      const std::string name = "segment " + std::to_string(g.index) + " (" + g.law + ")";
+      st.Add("amplitude_per_rise_segment_" + std::to_string(g.index), g.spectrum);
+      curves.push_back(Series{name, sp.tau, g.spectrum});
+      o.points.push_back({name + " at the speed, τ = " + Format(g.tau), g.tau, g.amplitude});
+    }
+    // The operating τ of each segment in a file of its own (the spectrum's columns share one τ grid).
+    out.Add("residual_spectrum.csv", ToCsv(st));
+    Table op;
+    std::vector<double> idx, tau, amp;
+    for (const Result::SpectrumSegment& g : sp.segments)
+      idx.push_back(g.index), tau.push_back(g.tau), amp.push_back(g.amplitude);
+    op.Add("segment", idx);
+    op.Add("tau_at_speed", tau);
+    op.Add("amplitude_per_rise_at_speed", amp);
+    out.Add("residual_spectrum_operating.csv", ToCsv(op));
+    o.title = s.name + ": residual-vibration spectrum (ζ = " + Format(sp.zeta) + ")";
+    o.x_label = "τ = segment time / natural period";
+    o.y_label = "residual amplitude / rise";
+    out.Add("residual_spectrum.svg", SvgLinePlot(curves, o));
+  }
+
   // Profile drawing: cam profile, pitch curve, base circle, and the follower at θ = 0.
   Drawing d;
   d.title = s.name + ": cam profile";
@@ -1477,6 +1702,10 @@ CAMOPT_REGISTER_REPORT("disc_cam", {
     {"largest contact stress (arm's face)", "/arm_dynamics/max_contact_stress_MPa", "MPa",
      "/arm_dynamics/contact_stress_limit_MPa"},
     {"jump speed (arm, kinetostatic)", "/arm_dynamics/jump_speed_rpm", "rpm"},
+    {"jump speed (arm, dynamic, flexible train)", "/arm_dynamics/dynamic_jump_speed_rpm", "rpm", "/arm_dynamics/speed_rpm",
+     NAN, false},
+    {"smallest contact force on the arm (dynamic)", "/arm_dynamics/response/min_contact_force_N", "N"},
+    {"residual vibration (arm)", "/arm_dynamics/response/residual_vibration_deg", "deg"},
     {"largest camshaft torque (arm)", "/arm_dynamics/max_camshaft_torque_Nm", "N·m"},
     {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
     {"worst-case follower error", "/worst_case_error_um/max", "µm"},

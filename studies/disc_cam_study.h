@@ -19,6 +19,7 @@
 #include "model/common/material.h"
 #include "model/disc_cam/exact_motion.h"
 #include "model/disc_cam/follower_dynamics.h"
+#include "model/disc_cam/residual_spectrum.h"
 #include "model/disc_cam/kinetostatics.h"
 #include "model/disc_cam/mechanical_error.h"
 #include "model/disc_cam/oscillating_flat_faced.h"
@@ -165,6 +166,9 @@ struct Input {
   struct ArmDynamics {
     double speed_rpm = 0.0, arm_inertia_kg_m2 = 0.0, spring_rate_N_m_per_rad = 0.0, spring_preload_N_m = 0.0,
            external_moment_N_m = 0.0;
+    std::optional<double> arm_stiffness_N_m_per_rad;
+    double damping_ratio = 0.05;
+    int revolutions = 3;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("speed_rpm", &speed_rpm, Field().Required().Positive().Unit("rpm").Desc("n, the cam speed"));
@@ -176,6 +180,19 @@ struct Input {
                Field().NonNegative().Unit("N·m").Desc("M₀, the spring's moment on the base circle, pressing the arm onto the cam"));
       a->Visit("external_moment_N_m", &external_moment_N_m,
                Field().Unit("N·m").Desc("M_e, a constant moment pressing the arm onto the cam (negative: lifting it off)"));
+      a->Visit("arm_stiffness_N_m_per_rad", &arm_stiffness_N_m_per_rad,
+               Field().Positive().Unit("N·m/rad").Desc(
+                   "k_f, the follower train's torsional stiffness between the cam-imposed arm angle and the arm's "
+                   "inertia: with it the one-degree-of-freedom dynamic response of the arm, its separation, residual "
+                   "vibration and residual-vibration spectrum, and the dynamic jump speed (docs/disc_cam.md, 'Follower "
+                   "dynamics'; absent: the kinetostatic loads only)"));
+      a->Visit("damping_ratio", &damping_ratio,
+               Field().AtLeast(0.0, "a number in [0, 1]").AtMost(1.0, "a number in [0, 1]").Desc(
+                   "zeta of the arm's mode in contact, c = 2 zeta sqrt(J (k_f + k)) (with arm_stiffness_N_m_per_rad)"));
+      a->Visit("revolutions", &revolutions,
+               Field().AtLeast(1, "an integer in [1, 50]").AtMost(50, "an integer in [1, 50]").Desc(
+                   "revolutions simulated from rest on the cam; the response reported is the last one's (with "
+                   "arm_stiffness_N_m_per_rad)"));
     }
   };
   /// The Monte-Carlo check of the linearised error (the object form of analysis.monte_carlo).
@@ -354,9 +371,18 @@ struct Study {
   struct ArmDynamics {
     double speed_rpm = 0.0;
     camopt::disc_cam::ArmLoads loads;
+    /// The arm's dynamic response (follower_dynamics.h, SimulateArm): k_f [N·m/rad] (absent: none), ζ, turns.
+    std::optional<double> arm_stiffness_N_m_per_rad;
+    double damping_ratio = 0.05;
+    int revolutions = 3;
   };
   std::optional<ArmDynamics> arm_dynamics;
 };
+
+/// The residual-vibration spectrum's range of τ = T/T_n and its number of points (result.json's
+/// residual_spectrum, residual_spectrum.csv and .svg).
+inline constexpr double kSpectrumTauLow = 0.5, kSpectrumTauHigh = 10.0;
+inline constexpr int kSpectrumPoints = 381;  // steps of 0.025
 
 /// A value and the cam angle where it is reached.
 struct AtAngle {
@@ -432,6 +458,12 @@ struct Result {
     std::optional<camopt::disc_cam::FollowerDynamicsResult> response;
     std::optional<camopt::disc_cam::DynamicJumpSpeed> dynamic_jump;
     double dynamic_jump_upper_rpm = 0.0;
+    /// With the arm's stiffness: its response (the dynamic jump in dynamic_jump), and the normal
+    /// contact force at the cam, M_a over the normal's lever arm about the pivot, at the response's
+    /// samples (series) and its extremes over them.
+    std::optional<camopt::disc_cam::ArmDynamicsResult> arm_response;
+    std::vector<double> arm_contact_force_N;
+    AtAngle min_dynamic_contact_force_N, max_dynamic_contact_force_N;
   };
   std::optional<Loads> loads;
 
@@ -446,6 +478,23 @@ struct Result {
     std::vector<double> contact_offset_mm, radius_of_curvature_mm;  ///< series
   };
   std::optional<FlatFace> flat_face;
+
+  /// The residual-vibration spectrum of each moving segment (model/disc_cam/residual_spectrum.h),
+  /// with the response: A/|h| over kSpectrumTau, the segment's τ at the study's speed, A/|h| there,
+  /// the predicted residual vibration r |h| A/h (follower unit) and the spectrum's minima.
+  struct SpectrumSegment {
+    int index = 0;  ///< the segment's position in the motion (from 0)
+    std::string law;
+    double tau = 0.0, amplitude = 0.0, amplitude_error = 0.0, predicted_residual = 0.0;
+    std::vector<double> spectrum;
+    std::vector<camopt::disc_cam::SpectrumMinimum> minima;
+  };
+  struct Spectrum {
+    double zeta = 0.0, stiffness_ratio = 0.0;  ///< ζ and r = k_f/(k_f + k)
+    std::vector<double> tau;
+    std::vector<SpectrumSegment> segments;
+  };
+  std::optional<Spectrum> residual_spectrum;
 
   std::vector<motion::JointContinuity> joints;
   double peak_velocity = 0.0, peak_acceleration = 0.0, peak_jerk = 0.0;  ///< follower unit/rad^k

@@ -290,4 +290,52 @@ DynamicJumpSpeed FindDynamicJumpSpeed(FollowerDynamicsInput in, double upper_rad
   return out;
 }
 
+FollowerDynamicsInput ArmAsFollower(const ArmDynamicsInput& in) {
+  const ArmLoads& a = in.loads;
+  if (!(a.inertia_kg_m2 > 0.0)) throw std::invalid_argument("arm dynamics: the arm's inertia must be > 0");
+  if (!(in.arm_stiffness_N_m_per_rad > 0.0)) throw std::invalid_argument("arm dynamics: the arm stiffness must be > 0");
+  if (!(a.spring_rate_N_m_per_rad >= 0.0)) throw std::invalid_argument("arm dynamics: spring rate must be >= 0");
+  FollowerDynamicsInput f;
+  f.motion = in.motion;
+  f.loads.mass_kg = a.inertia_kg_m2 * 1e3;  // m [kg]·10⁻³·ẍ = J ψ̈: ψ plays x in "mm"
+  f.loads.spring_rate_N_per_mm = a.spring_rate_N_m_per_rad;
+  f.loads.spring_preload_N = a.spring_preload_N_m;
+  f.loads.external_load_N = a.external_moment_N_m;
+  f.loads.weight_N = 0.0;
+  f.follower_stiffness_N_per_mm = in.arm_stiffness_N_m_per_rad;
+  f.damping_ratio = in.damping_ratio;
+  f.speed_rad_s = in.speed_rad_s;
+  f.revolutions = in.revolutions;
+  f.relative_tolerance = in.relative_tolerance;
+  f.absolute_tolerance = in.absolute_tolerance;
+  f.max_steps = in.max_steps;
+  f.samples = in.samples;
+  return f;
+}
+
+ArmDynamicsResult SimulateArm(const ArmDynamicsInput& in) {
+  const FollowerDynamicsResult f = SimulateFollower(ArmAsFollower(in));
+  ArmDynamicsResult out;
+  out.natural_frequency_Hz = f.natural_frequency_Hz;
+  out.min_contact_moment_N_m = f.min_axial_force_N;
+  out.min_contact_moment_cam_angle_deg = f.min_axial_force_cam_angle_deg;
+  out.max_contact_moment_N_m = f.max_axial_force_N;
+  out.max_contact_moment_cam_angle_deg = f.max_axial_force_cam_angle_deg;
+  out.separates = f.separates;
+  out.first_separation_cam_angle_deg = f.first_separation_cam_angle_deg;
+  out.residual_vibration_rad = f.residual_vibration_mm;
+  out.residual_vibration_cam_angle_deg = f.residual_vibration_cam_angle_deg;
+  out.samples.reserve(f.samples.size());
+  for (const FollowerDynamicsSample& q : f.samples)
+    out.samples.push_back({q.cam_angle_deg, q.cam_follower_mm, q.follower_mm, q.axial_force_N, q.kinetostatic_force_N});
+  out.steps = f.steps;
+  out.events = f.events;
+  return out;
+}
+
+DynamicJumpSpeed FindArmDynamicJumpSpeed(const ArmDynamicsInput& in, double upper_rad_s, int scan_steps,
+                                         double relative_width) {
+  return FindDynamicJumpSpeed(ArmAsFollower(in), upper_rad_s, scan_steps, relative_width);
+}
+
 }  // namespace camopt::disc_cam
