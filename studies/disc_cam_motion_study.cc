@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "model/disc_cam/residual_spectrum.h"
 #include "studies/format.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
@@ -336,6 +337,78 @@ nlohmann::json CheckJson(const objectives::MotionAccurate& a) {
 
 }  // namespace
 
+namespace {
+
+// The residual-vibration spectrum (model/disc_cam/residual_spectrum.h) of each designed segment, its
+// start law's and the designed one's, against τ = segment time / natural period, with the τ of each
+// objective speed marked: the classic chart, for the law as it was and as designed.
+struct SpectrumOf {
+  std::vector<double> tau;
+  struct Segment {
+    int index;
+    std::string start_law;
+    std::vector<double> start, designed;
+    std::vector<double> tau_at, start_at, designed_at;  ///< at each speed (the study's, or the band's)
+  };
+  std::vector<Segment> segments;
+};
+
+SpectrumOf Spectrum(const Study& s, const sizing::DiscCamMotionOutcome& o) {
+  SpectrumOf sp;
+  const double fn = s.spec.follower->NaturalFrequencyRadS() / (2 * kPi), zeta = s.spec.follower->damping_ratio;
+  std::vector<double> speeds = s.spec.objective_speeds_rpm;
+  if (speeds.empty()) speeds = {s.spec.speed_rpm};
+  double hi = 10.0;
+  for (const auto& g : s.spec.segments)
+    for (double rpm : speeds)
+      hi = std::max(hi, 1.5 * s.spec.cam.motion.segments()[size_t(g.segment)].duration / (2 * kPi) / (rpm / 60.0) * fn);
+  const int n = 381;
+  for (int i = 0; i < n; ++i) sp.tau.push_back(0.5 + (hi - 0.5) * i / (n - 1));
+  for (const auto& g : s.spec.segments) {
+    const auto& start = s.base.cam.motion.segments()[size_t(g.segment)];
+    const auto& designed = o.cam.motion.segments()[size_t(g.segment)];
+    SpectrumOf::Segment seg{g.segment, motion::LawName(start.law), dc::ResidualSpectrum(start, zeta, sp.tau),
+                            dc::ResidualSpectrum(designed, zeta, sp.tau), {}, {}, {}};
+    for (double rpm : speeds) {
+      const double tau = start.duration / (2 * kPi) / (rpm / 60.0) * fn;
+      seg.tau_at.push_back(tau);
+      seg.start_at.push_back(dc::ResidualAmplitudeAt(start, zeta, tau).amplitude);
+      seg.designed_at.push_back(dc::ResidualAmplitudeAt(designed, zeta, tau).amplitude);
+    }
+    sp.segments.push_back(std::move(seg));
+  }
+  return sp;
+}
+
+void AddSpectrum(const Study& s, const sizing::DiscCamMotionOutcome& o, Outputs& out) {
+  const SpectrumOf sp = Spectrum(s, o);
+  Table t;
+  t.Add("tau", sp.tau);
+  std::vector<Series> curves;
+  PlotOptions po;
+  for (const auto& g : sp.segments) {
+    const std::string k = std::to_string(g.index);
+    t.Add("start_amplitude_per_rise_segment_" + k, g.start);
+    t.Add("designed_amplitude_per_rise_segment_" + k, g.designed);
+    curves.push_back(Series{"segment " + k + ", start (" + g.start_law + ")", sp.tau, g.start});
+    curves.push_back(Series{"segment " + k + ", designed", sp.tau, g.designed});
+    for (size_t j = 0; j < g.tau_at.size(); ++j)
+      po.points.push_back({"segment " + k + " designed at " + Format(s.spec.objective_speeds_rpm.empty()
+                                                                        ? s.spec.speed_rpm
+                                                                        : s.spec.objective_speeds_rpm[j]) +
+                               " rpm, τ = " + Format(g.tau_at[j]),
+                           g.tau_at[j], g.designed_at[j]});
+  }
+  out.Add("residual_spectrum.csv", ToCsv(t));
+  po.title = s.name + ": residual-vibration spectrum (one segment from rest), start and designed (ζ = " +
+             Format(s.spec.follower->damping_ratio) + ")";
+  po.x_label = "τ = segment time / natural period";
+  po.y_label = "residual amplitude / rise";
+  out.Add("residual_spectrum.svg", SvgLinePlot(curves, po));
+}
+
+}  // namespace
+
 nlohmann::json ToJson(const Study& s, const Result& r) {
   const sizing::DiscCamMotionOutcome& o = r.outcome;
   const std::string unit = objectives::MotionObjectiveUnit(s.spec.objective, s.follower_unit == "deg" ? "rad" : "mm");
@@ -365,6 +438,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   } else {
     nlohmann::json b = CheckJson(o.check);
     b["motion"] = MotionJson(s, o.cam);
+    if (s.spec.follower) {
+      nlohmann::json spec_j = nlohmann::json::array();
+      for (const auto& g : Spectrum(s, o).segments)
+        spec_j.push_back({{"segment", g.index}, {"start_law", g.start_law}, {"tau_at_speeds", g.tau_at},
+                          {"start_amplitude_per_rise", g.start_at}, {"designed_amplitude_per_rise", g.designed_at}});
+      b["residual_spectrum"] = {
+          {"model",
+           "the classic chart (model/disc_cam/residual_spectrum.h): one segment from rest, base-excited, damping on "
+           "the relative motion; exact for the study's follower when damping_ratio is 0, otherwise without the "
+           "return spring's share of the damper (a term (1 - r) c S', r = k_f/(k_f + k_s)) and without the vibration "
+           "earlier segments leave: best.objective is the whole program's response, verified by CVODE"},
+          {"segments", spec_j}};
+    }
     if (s.spec.no_separation_up_to_rpm)
       b["lowest_separation_rpm"] = o.check.lowest_separation_rpm > 0 ? nlohmann::json(o.check.lowest_separation_rpm)
                                                                      : nlohmann::json(nullptr);
@@ -448,6 +534,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   po.x_label = "cam angle [deg]";
   po.y_label = "S'' [" + s.follower_unit + "/rad²]";
   out.Add("acceleration.svg", SvgLinePlot({{"designed", th, ab}, {"start laws", th, as}}, po));
+  if (s.spec.follower) AddSpectrum(s, o, out);
 }
 
 namespace {

@@ -157,6 +157,16 @@ TEST(DiscCamMotion, LeastResidualVibrationBeatsEveryNamedLawOnTheFineSimulation)
     EXPECT_LE(named, n.value * (1 + 1e-5)) << n.law;
     EXPECT_GE(named, n.value * low * (1 - 1e-5)) << n.law;
   }
+  // The classic one-segment spectrum (written beside the result) of the start law at the study's
+  // τ, scaled by r h, against the start's verified residual: the chart's model leaves out the return
+  // spring's share of the damper and the earlier segments' vibration, a few per cent here.
+  const json j = dcm::ToJson(st, r);
+  const json& sg = j["best"]["residual_spectrum"]["segments"][0];
+  const double kf = st.spec.follower->follower_stiffness_N_per_mm, ks = st.spec.follower->loads.spring_rate_N_per_mm;
+  const double tau = 100.0 / 360.0 / (600.0 / 60.0) * st.spec.follower->NaturalFrequencyRadS() / (2 * kPiHere);
+  EXPECT_NEAR(sg["tau_at_speeds"][0].get<double>(), tau, 1e-12);
+  EXPECT_NEAR(sg["start_amplitude_per_rise"][0].get<double>() * 30.0 * kf / (kf + ks), o.start.objective,
+              0.05 * o.start.objective);
   // No separation up to 800 rpm, on a finer speed grid than the check's.
   for (int k = 1; k <= 40; ++k) {
     disc_cam::FollowerDynamicsInput in;
