@@ -38,6 +38,9 @@ def target_of(kind, study):
         return "3D / cycloid sizing", 2.0
     if kind in ("disc_cam_min_size",):
         return "line-model sizing", 0.5
+    if kind in ("disc_cam_motion",):
+        # A motion design solves the follower's ODE in its rows and verifies by CVODE: as a 3D sizing.
+        return "motion design (ODE rows)", 2.0
     return "analysis", 0.3
 
 
