@@ -312,7 +312,13 @@ std::vector<ResonanceSpeed> ResonanceSpeeds(const Modes& modes, double mesh_peri
   for (size_t j = 0; j < modes.frequencies_Hz.size(); ++j)
     for (int h = 1; h <= harmonics; ++h) {
       const double rpm = 60.0 * modes.frequencies_Hz[j] / (double(h) * per_rev);
-      if (rpm >= lo_rpm && rpm <= hi_rpm) out.push_back({rpm, h, int(j), modes.frequencies_Hz[j]});
+      if (!(rpm >= lo_rpm && rpm <= hi_rpm)) continue;
+      ResonanceSpeed x;
+      x.rpm = rpm;
+      x.order = h;
+      x.mode = int(j);
+      x.frequency_Hz = modes.frequencies_Hz[j];
+      out.push_back(x);
     }
   std::sort(out.begin(), out.end(), [](const ResonanceSpeed& a, const ResonanceSpeed& b) { return a.rpm < b.rpm; });
   return out;
