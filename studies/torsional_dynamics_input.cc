@@ -143,12 +143,14 @@ nlohmann::json TorsionalDynamicsJson(const TorsionalDynamicsSpec& spec, const To
   };
   if (r.peak_index >= 0) {
     const auto& p = r.sweep[size_t(r.peak_index)];
+    json mesh_frequencies = json::array();  // each mesh's, in the order of "meshes"
+    for (const auto& m : r.table.meshes) mesh_frequencies.push_back(p.mesh_frequency_Hz * m.second);
     double nearest = NAN;
     for (const auto& x : r.resonances)
       if (std::isnan(nearest) || std::abs(x.rpm - p.input_speed_rpm) < std::abs(nearest - p.input_speed_rpm))
         nearest = x.rpm;
     j["sweep_peak"] = {{"input_speed_rpm", p.input_speed_rpm},
-                       {"mesh_frequency_Hz", p.mesh_frequency_Hz},
+                       {"mesh_frequencies_Hz", mesh_frequencies},
                        {"overload_factor", p.overload_factor},
                        {"dynamic_te_peak_to_peak_arcsec", p.te_peak_to_peak_rad * kArcsecPerRad},
                        {"nearest_resonance_rpm", std::isnan(nearest) ? json(nullptr) : json(nearest)},
