@@ -989,6 +989,8 @@ Result Run(const Study& st, const RunContext& ctx) {
     try {
       res.torsional = RunTorsionalDynamics(*st.torsional, LcrMeshTable(st), ctx, "lcr_analysis");
       for (const std::string& w : res.torsional->warnings) res.notes.push_back(w);
+    } catch (const StudyError&) {
+      throw;  // bad input found by the run: exit 2
     } catch (const std::runtime_error& e) {  // an integration that did not converge
       res.torsional_failed = e.what();
       res.notes.push_back(std::string("torsional dynamics not solved: ") + e.what());

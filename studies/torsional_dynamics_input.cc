@@ -61,6 +61,19 @@ TorsionalDynamicsResult RunTorsionalDynamics(const TorsionalDynamicsSpec& spec, 
     }
   std::stable_sort(r.resonances.begin(), r.resonances.end(),
                    [](const torsion::ResonanceSpeed& a, const torsion::ResonanceSpeed& b) { return a.rpm < b.rpm; });
+  // The lowest speed the shooting takes: one mesh period at most kMaxModePeriods periods of the
+  // highest mode (CVODE follows each: ~20 steps apiece); slower, the response is the static one.
+  {
+    constexpr double kMaxModePeriods = 2000.0;
+    const double shortest = table.period_rad;
+    const double min_rpm = 60.0 * r.modes.frequencies_Hz.back() * shortest / (2.0 * kPi * kMaxModePeriods);
+    if (spec.lo_rpm < min_rpm)
+      throw StudyError(ctx.study_file + ": /torsional_dynamics/speed_sweep_rpm: lo " + Format(spec.lo_rpm, 6) +
+                       " rpm is below " + Format(min_rpm, 3) + " rpm, where one period of the mesh table holds " +
+                       Format(kMaxModePeriods, 4) + " periods of the " + Format(r.modes.frequencies_Hz.back(), 4) +
+                       " Hz mode (the response there is the static one): start the sweep at " + Format(min_rpm, 3) +
+                       " rpm or above");
+  }
   Progress progress(kind + " torsional dynamics", ctx.quiet);
   for (int s = 0; s < spec.speeds; ++s) {
     const double rpm = spec.lo_rpm + (spec.hi_rpm - spec.lo_rpm) * double(s) / double(spec.speeds - 1);

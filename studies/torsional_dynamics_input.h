@@ -44,7 +44,8 @@ struct TorsionalDynamicsInput {
                  "k_s between the motor (turning at the swept speed) and J_in, at the input (absent: J_in driven "
                  "by a constant motor torque that balances the load, a free pair)"));
     a->Visit("damping_ratio", &damping_ratio,
-             Field().In(0.0, 1.0).Desc("ζ of the mesh (and input shaft) mode, viscous"));
+             Field().Above(0.0, "a number > 0 (an undamped pair has no steady state)").AtMost(1.0)
+                 .Desc("ζ of the mesh (and input shaft) mode, viscous"));
     a->Visit("load_torque_Nm", &load_torque_Nm,
              Field().Positive().Unit("N·m").Desc("T_L on the output, where the mesh is linearised (absent: the "
                                                 "study's torque)"));
@@ -96,7 +97,8 @@ struct TorsionalDynamicsResult {
   std::vector<std::string> warnings;
 };
 
-/// The model on the table and the sweep (progress on stderr).
+/// The model on the table and the sweep (progress on stderr). @throws StudyError (exit 2) when the
+/// sweep starts so slow that one table period holds more than 2000 periods of the highest mode.
 TorsionalDynamicsResult RunTorsionalDynamics(const TorsionalDynamicsSpec& spec, MeshTable table,
                                              const RunContext& ctx, const std::string& kind);
 

@@ -311,6 +311,13 @@ TEST(TorsionalDynamics, BadInputNamesThePath) {
   st["torsional_dynamics"]["speed_sweep_rpm"] = {200, 3000};
   testing::ExpectStudyRejected(st, "torsion-short", "/torsional_dynamics/speed_sweep_rpm", "[lo, hi, n]");
   st = CycloidStudy();
+  st["torsional_dynamics"]["damping_ratio"] = 0.0;
+  testing::ExpectStudyRejected(st, "torsion-zeta", "/torsional_dynamics/damping_ratio", "> 0");
+  // Found by the run (the mode's frequency): 1 rpm is below 60 f (2π/16)/(2π 2000) ≈ 4 rpm.
+  st = CycloidStudy();
+  st["torsional_dynamics"]["speed_sweep_rpm"] = {1, 3000, 3};
+  testing::ExpectStudyRejected(st, "torsion-slow", "/torsional_dynamics/speed_sweep_rpm", "start the sweep at");
+  st = CycloidStudy();
   st["torsional_dynamics"]["max_dynamic_factor"] = 0.5;
   testing::ExpectStudyRejected(st, "torsion-limit", "/torsional_dynamics/max_dynamic_factor", "> 1");
 }
