@@ -1629,6 +1629,14 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   std::vector<WorkTerm> terms = {{runs * angles * rollers * cells, path,
                                   WorkNumber(runs) + " runs × " + WorkNumber(angles) + " crank angles × " +
                                       WorkNumber(rollers) + " rollers × " + WorkNumber(cells) + " grid cells"}};
+  if (in.torsional_dynamics) {
+    // The mesh-stiffness table: one LTCA solve and its torque derivative per angle and disc (about
+    // two solves), as the cycle's angles.
+    const double n = in.torsional_dynamics->angles_per_mesh_period;
+    terms.push_back({2.0 * n * in.discs * rollers * cells, "/torsional_dynamics/angles_per_mesh_period",
+                     WorkNumber(n) + " crank angles × " + WorkNumber(in.discs) + " discs × 2 solves × " +
+                         WorkNumber(rollers) + " rollers × " + WorkNumber(cells) + " grid cells"});
+  }
   if (in.tolerances) {
     // The transmission error from tolerances: per sample (and the nominal and linear passes) and
     // crank angle, both flanks' contact solves of the ring pins and output pins, each about one
