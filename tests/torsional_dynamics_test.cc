@@ -156,6 +156,53 @@ TEST(TorsionalDynamics, SweepPeakAtLinearResonance) {
               at, step, low_te);
 }
 
+// The shooting's periodic solution against a long transient of the same equations from rest (the
+// damped start decays by e^(−ζω t) < 1e-12 before the compared period), for the free pair and for
+// the pair grounded through an input shaft: the dynamic TE's p-p and the largest mesh torque over
+// the last mesh period, sampled at the same crank angles.
+TEST(TorsionalDynamics, PeriodicSolutionEqualsTheSettledTransient) {
+  for (const double shaft : {0.0, 250.0}) {
+    TorsionalModel m = TwoInertias(1.3e6);
+    m.damping_ratio = 0.1;
+    m.input_shaft_stiffness_Nm_per_rad = shaft;
+    const int n = 64;
+    m.mesh_stiffness_Nm_per_rad.resize(n);
+    m.static_te_rad.resize(n);
+    for (int k = 0; k < n; ++k) {
+      const double a = 2 * kPi * k / n;
+      m.mesh_stiffness_Nm_per_rad[size_t(k)] = 1.3e6 * (1 + 0.1 * std::cos(a) + 0.03 * std::sin(3 * a));
+      m.static_te_rad[size_t(k)] = 1e-4 + 5e-6 * std::cos(a);
+    }
+    m.reference_torque_Nm = m.load_torque_Nm = 100.0;
+    const Modes modes = LinearModes(m);
+    const double rpm = 0.9 * 60.0 * modes.frequencies_Hz.back() / 16.0;  // near the highest mode
+    IntegrationOptions o;
+    o.samples_per_period = 256;
+    const SteadyState st = PeriodicSteadyState(m, rpm, o);
+    ASSERT_TRUE(st.stable);
+    const double period = (2 * kPi / 16) / (rpm * 2 * kPi / 60);  // s
+    const double omega_min = 2 * kPi * modes.frequencies_Hz.front();
+    const int settle = int(std::ceil(std::log(1e12) / (0.1 * omega_min) / period)) + 1;
+    std::vector<double> times;
+    for (int k = 0; k <= 256; ++k) times.push_back(period * (settle + double(k) / 256));
+    // Start from the static state of the mean (δ = δ̄_s, input shaft wound by T_L/k_s'); the
+    // motor torque balances the load in the free pair.
+    const double ks = shaft * 81.0 * 81.0, d0 = 1e-4;
+    const double u1 = shaft > 0 ? -100.0 / ks : 0.0;
+    const auto run = Transient(m, rpm, {u1, u1 - d0, 0, 0}, 100.0, times, o);
+    double lo = 1e300, hi = -1e300, tmax = -1e300;
+    for (const auto& s : run) {
+      lo = std::min(lo, s.y[0] - s.y[1]), hi = std::max(hi, s.y[0] - s.y[1]);
+      tmax = std::max(tmax, s.mesh_torque_Nm);
+    }
+    std::printf("input shaft %g: p-p %.10g vs transient %.10g rad; max T_m %.10g vs %.10g N m\n", shaft,
+                st.te_peak_to_peak_rad, hi - lo, st.max_mesh_torque_Nm, tmax);
+    EXPECT_NEAR(st.te_peak_to_peak_rad, hi - lo, 1e-6 * (hi - lo));
+    EXPECT_NEAR(st.max_mesh_torque_Nm, tmax, 1e-6 * tmax);
+    EXPECT_LT(st.periodicity_residual, 1e-7);
+  }
+}
+
 // A small cycloid_ltca study (the NNM drive of the examples on a coarse grid) with the block.
 nlohmann::json CycloidStudy() {
   return nlohmann::json::parse(R"({
