@@ -884,7 +884,7 @@ Result Run(const Study& s, const RunContext& ctx) {
         for (const std::string& w : r.torsional->warnings) r.warnings.push_back(w);
       } catch (const StudyError&) {
         throw;  // bad input found by the run: exit 2
-      } catch (const std::runtime_error& e) {  // an LTCA or an integration that did not converge
+      } catch (const std::exception& e) {  // a mesh the model refuses (k <= 0), an LTCA or an integration that did not converge
         r.torsional_failed = e.what();
         r.warnings.push_back(std::string("torsional dynamics not solved: ") + e.what());
       }

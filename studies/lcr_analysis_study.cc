@@ -991,7 +991,7 @@ Result Run(const Study& st, const RunContext& ctx) {
       for (const std::string& w : res.torsional->warnings) res.notes.push_back(w);
     } catch (const StudyError&) {
       throw;  // bad input found by the run: exit 2
-    } catch (const std::runtime_error& e) {  // an integration that did not converge
+    } catch (const std::exception& e) {  // a mesh the model refuses (k <= 0), an integration that did not converge
       res.torsional_failed = e.what();
       res.notes.push_back(std::string("torsional dynamics not solved: ") + e.what());
     }
