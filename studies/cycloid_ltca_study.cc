@@ -256,6 +256,13 @@ Study Parse(const Node& root) {
   }
   s.lubrication = ParseLubrication(root, in, s);
   ParseCatalogue(root, in, s);
+  if (in.torsional_dynamics) {
+    const Node block = root["torsional_dynamics"];
+    if (!s.loaded)
+      block.FailWith("the mesh stiffness needs the loaded stage: analysis.evaluate must include \"loaded\" (or be "
+                     "absent)");
+    s.torsional = ParseTorsionalDynamics(block, *in.torsional_dynamics);
+  }
   return s;
 }
 
@@ -288,6 +295,9 @@ nlohmann::ordered_json Input::SchemaRules() {
      "then": {"required": ["material", "load"],
               "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
     {"if": {"required": ["stiffness"]},
+     "then": {"required": ["material", "load"],
+              "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
+    {"if": {"required": ["torsional_dynamics"]},
      "then": {"required": ["material", "load"],
               "properties": {"analysis": {"properties": {"evaluate": {"contains": {"const": "loaded"}}}}}}},
     {"if": {"required": ["lubricant"]},
@@ -807,6 +817,50 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
   }
 }
 
+// The ring-pin mesh as the torsional model's spring (docs/torsional_dynamics.md): at the crank
+// angles θ_k = k·(2π/n1)/N of one mesh period, each disc's LTCA at T/discs and its crank angle
+// θ_k + 2πd/discs, its tangent stiffness dT/dβ = 1/(dβ/dT) by the LTCA's implicit derivative of the
+// loaded TE β = β0 + Δφc with respect to the torque (LoadedTca::Differentiate, contact sets
+// frozen), the discs in parallel (one output angle): k = Σ k_d, and the static TE the stiffness-
+// weighted mean δ_s = Σ k_d β_d / k (the linearised discs' torques sum to T at δ = δ_s).
+MeshTable CycloidMeshTable(const Study& s, const LoadedTca& tca, const RunContext& ctx) {
+  const TorsionalDynamicsInput& in = s.torsional->in;
+  MeshTable t;
+  t.period_rad = 2.0 * kPi / s.drive.rollers;
+  t.ratio = double(s.drive.teeth);  // input (crank) turns per output turn, ring fixed: n2
+  t.torque_Nm = in.load_torque_Nm.value_or(s.torque_Nm);
+  t.source = "the ring-pin mesh of the LTCA at the reference torque, each disc's dT/d(beta) by the LTCA's implicit "
+             "derivative of its loaded TE with respect to the torque, the discs in parallel; the output pins' and "
+             "bearings' compliance not included";
+  t.meshes = {{"ring_pins", 1.0}};
+  const int n = in.angles_per_mesh_period;
+  const double disc_torque_Nmm = t.torque_Nm * 1000.0 / s.discs;
+  Progress progress("cycloid_ltca mesh stiffness", ctx.quiet);
+  for (int k = 0; k < n; ++k) {
+    const double theta = t.period_rad * k / n;
+    double ksum = 0.0, kbeta = 0.0;
+    for (int d = 0; d < s.discs; ++d) {
+      const MeshLoad m = tca.Solve(disc_torque_Nmm, theta + 2.0 * kPi * d / s.discs);
+      if (!m.converged)
+        throw std::runtime_error("torsional dynamics: the LTCA did not converge at crank angle " +
+                                 Format(theta * 180 / kPi, 6) + " deg: " + m.message);
+      const LoadedTca::Derivative der = tca.Differentiate(m, "torque_Nmm");
+      if (!der.converged || !(der.rotation_rad > 0))
+        throw std::runtime_error("torsional dynamics: no mesh stiffness at crank angle " + Format(theta * 180 / kPi, 6) +
+                                 " deg (the torque derivative did not converge)");
+      const double kd = 1.0 / der.rotation_rad / 1000.0;  // [N·m/rad]
+      ksum += kd;
+      kbeta += kd * m.rotation_rad;
+    }
+    t.angles_rad.push_back(theta);
+    t.stiffness_Nm_per_rad.push_back(ksum);
+    t.static_te_rad.push_back(kbeta / ksum);
+    progress.Update(double(k + 1) / n, std::to_string(n) + " crank angles");
+  }
+  progress.Done();
+  return t;
+}
+
 }  // namespace
 
 Result Run(const Study& s, const RunContext& ctx) {
@@ -824,6 +878,17 @@ Result Run(const Study& s, const RunContext& ctx) {
     }
     r.composite_modulus_MPa = tca.e_star_MPa();
     ToleranceWarning(s, r);
+    if (s.torsional) {
+      try {
+        r.torsional = RunTorsionalDynamics(*s.torsional, CycloidMeshTable(s, tca, ctx), ctx, "cycloid_ltca");
+        for (const std::string& w : r.torsional->warnings) r.warnings.push_back(w);
+      } catch (const StudyError&) {
+        throw;  // bad input found by the run: exit 2
+      } catch (const std::exception& e) {  // a mesh the model refuses (k <= 0), an LTCA or an integration that did not converge
+        r.torsional_failed = e.what();
+        r.warnings.push_back(std::string("torsional dynamics not solved: ") + e.what());
+      }
+    }
   }
   if (!s.loaded) r.crank_angles_rad = s.crank_angles_rad;
   const int n1 = s.drive.rollers;
@@ -1333,6 +1398,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   // the model frictionless.
   if (r.life && s.lubrication)
     j["life"]["efficiency"] = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
+  if (r.torsional && s.torsional) j["torsional_dynamics"] = TorsionalDynamicsJson(*s.torsional, *r.torsional);
+  else if (s.torsional) j["torsional_dynamics"] = {{"error", r.torsional_failed}};
   return j;
 }
 
@@ -1490,6 +1557,9 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     out.SetStatus(Status::kNotConverged, "output mechanism not solved (its outputs are null in result.json): " +
                                              r.output_failed);
   if (r.torsion) WriteTorsion(r, out);
+  if (r.torsional) WriteTorsionalDynamics(*r.torsional, out);
+  if (s.torsional && !r.torsional)
+    out.SetStatus(Status::kNotConverged, "torsional dynamics not solved: " + r.torsional_failed);
   if (s.ratings && !r.ratings)
     out.SetStatus(Status::kNotConverged, "ratings not solved (null in result.json): " + r.ratings_failed);
   AddToothDrawing(s, r, out);
@@ -1559,6 +1629,14 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   std::vector<WorkTerm> terms = {{runs * angles * rollers * cells, path,
                                   WorkNumber(runs) + " runs × " + WorkNumber(angles) + " crank angles × " +
                                       WorkNumber(rollers) + " rollers × " + WorkNumber(cells) + " grid cells"}};
+  if (in.torsional_dynamics) {
+    // The mesh-stiffness table: one LTCA solve and its torque derivative per angle and disc (about
+    // two solves), as the cycle's angles.
+    const double n = in.torsional_dynamics->angles_per_mesh_period;
+    terms.push_back({2.0 * n * in.discs * rollers * cells, "/torsional_dynamics/angles_per_mesh_period",
+                     WorkNumber(n) + " crank angles × " + WorkNumber(in.discs) + " discs × 2 solves × " +
+                         WorkNumber(rollers) + " rollers × " + WorkNumber(cells) + " grid cells"});
+  }
   if (in.tolerances) {
     // The transmission error from tolerances: per sample (and the nominal and linear passes) and
     // crank angle, both flanks' contact solves of the ring pins and output pins, each about one
@@ -1610,6 +1688,11 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
     {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
     {"output bearing life L10h", "/output_bearing/L10h", "h"},
     {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
+    {"first torsional natural frequency", "/torsional_dynamics/natural_frequencies_Hz/0", "Hz"},
+    {"mesh stiffness ripple", "/torsional_dynamics/mesh_stiffness_ripple_percent", "%"},
+    {"dynamic overload factor (sweep peak)", "/torsional_dynamics/sweep_peak/overload_factor", "",
+     "study:/torsional_dynamics/max_dynamic_factor", NAN, true, "/torsional_dynamics/sweep_peak/overload_sampling_error"},
+    {"at input speed", "/torsional_dynamics/sweep_peak/input_speed_rpm", "rpm"},
     {"converged", "/converged", ""},
 })));
 

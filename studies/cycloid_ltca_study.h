@@ -34,6 +34,7 @@
 #include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/tolerance_input.h"
+#include "studies/torsional_dynamics_input.h"
 
 namespace camopt::studies::cycloid_ltca {
 
@@ -192,6 +193,7 @@ struct Input {
   std::optional<RatingsInput> ratings;
   std::optional<OutputBearingInput> output_bearing;
   std::optional<std::vector<ExternalLoadInput>> external_loads;
+  std::optional<TorsionalDynamicsInput> torsional_dynamics;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -250,6 +252,11 @@ struct Input {
                           "from the contact limits, momentary torque from the static ratings (docs/ratings.md; needs "
                           "crank_bearing, output_mechanism, one disc)"));
     VisitOutputBearing(a, &output_bearing, &external_loads);
+    a->Visit("torsional_dynamics", &torsional_dynamics,
+             Field().Desc("the reducer's torsional dynamics from the ring-pin mesh stiffness of the LTCA "
+                          "(docs/torsional_dynamics.md): natural frequencies, mode shapes, the dynamic transmission "
+                          "error and overload over an input-speed sweep, resonance speeds; mesh_stiffness.csv, "
+                          "dynamic_te.csv (needs the loaded stage)"));
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
@@ -326,6 +333,8 @@ struct Study {
     bool ring_pins_given = false, output_rollers_given = false, crank_given = false;
   };
   std::optional<Lubrication> lubrication;
+  /// "torsional_dynamics" (studies/torsional_dynamics_input.h); nullopt: none.
+  std::optional<TorsionalDynamicsSpec> torsional;
 };
 
 using cycloid_common::ElementLife;
@@ -396,6 +405,8 @@ struct Result {
   std::optional<ThreeSegmentStiffness> segments;         ///< with "stiffness" (N·m/arcmin)
   double lost_motion_user_rad = 0;                       ///< at stiffness.lost_motion_percent
   cycloid_common::PartMasses masses;                     ///< with "stiffness" or "ratings"
+  std::optional<TorsionalDynamicsResult> torsional;      ///< with "torsional_dynamics"
+  std::string torsional_failed;                          ///< why it is absent (an LTCA not converged)
 };
 
 /// @throws StudyError for bad input (exit 2).

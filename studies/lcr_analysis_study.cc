@@ -632,6 +632,16 @@ Study Parse(const Node& root) {
     root["limits"]["life_h"].Fail("a speed with it (\"load.input_speed_rpm\" or \"duty_cycle\"): a life in hours needs one");
   st.lubrication = ParseLubrication(in, root);
   ParseCatalogue(in, root, st);
+  if (in.torsional_dynamics) {
+    if (!in.material) (void)root["material"];  // "missing required field": the contacts' compliance
+    if (!in.load) (void)root["load"];
+    const Node block = root["torsional_dynamics"];
+    const double torque = in.torsional_dynamics->load_torque_Nm.value_or(in.load->output_torque_Nm);
+    if (!(torque > 0))
+      block.FailWith("the mesh stiffness is the contacts' at a torque > 0: give load.output_torque_Nm > 0 or "
+                     "torsional_dynamics.load_torque_Nm");
+    st.torsional = ParseTorsionalDynamics(block, *in.torsional_dynamics);
+  }
   return st;
 }
 
@@ -670,6 +680,7 @@ nlohmann::ordered_json Input::SchemaRules() {
               "properties": {"reducer": {"properties": {"input": {"required": ["dynamic_rating_N"]},
                                                         "output": {"required": ["dynamic_rating_N"]}}}}}},
     {"if": {"required": ["stiffness"]}, "then": {"required": ["material"]}},
+    {"if": {"required": ["torsional_dynamics"]}, "then": {"required": ["material", "load"]}},
     {"if": {"required": ["external_loads"]}, "then": {"required": ["output_bearing"]}},
     {"if": {"required": ["output_bearing"]}, "then": {"required": ["external_loads"]}}
   ])"))
@@ -761,6 +772,58 @@ void AllowableSpeed(const Study& st, double ratio, RatingsResult& g) {
         return lcr::LubricatedCycle(st.reducer, loads, kinematics, l.spec, n, t).mean.total();
       },
       l.common.cooling, l.common.max_oil_temperature_C, ratio, st.ratings->in.rated_output_speed_rpm * ratio, g);
+}
+
+// The rollers' contacts as the torsional model's spring (docs/torsional_dynamics.md): the tangent
+// torsional rigidity dT/dδθ_o of both turrets in series at the torque (model/rigidity/
+// lcr_stiffness.h, DeflectAtAngle, exact by the implicit function theorem) and the output rotation
+// there as the static TE, over one period of the contact pattern. The period: both turrets'
+// roller patterns repeat every 2π lcm(m_A, m_B)/(n_A m_B) of input angle (model/lcr/life.h,
+// LoadPeriodRad, the eccentric's); a finer period P/q (q <= 64) is taken when the stiffness and the
+// rotation repeat after it to 1e-9 at 16 test angles (the largest such q is the true one).
+MeshTable LcrMeshTable(const Study& st) {
+  const TorsionalDynamicsInput& in = st.torsional->in;
+  const lcr::Reducer<double>& r = st.reducer;
+  MeshTable t;
+  t.ratio = std::abs(lcr::SpeedReductionRatio(r));
+  t.torque_Nm = in.load_torque_Nm.value_or(st.load.output_torque_Nmm / 1000.0);
+  const double torque_Nmm = t.torque_Nm * 1000.0;
+  auto at = [&](double theta) { return rigidity::DeflectAtAngle<double>(r, st.material, theta, torque_Nmm, 0.0); };
+  const double p0 = lcr::LoadPeriodRad(r, lcr::LcrBearing::kEccentric, false);
+  int q_best = 1;
+  for (int q = 64; q >= 2 && q_best == 1; --q) {
+    bool repeats = true;
+    for (int j = 0; j < 16 && repeats; ++j) {
+      const double theta = p0 * (j + 0.37) / 16.0;
+      const auto a = at(theta), b = at(theta + p0 / q);
+      repeats = std::abs(a.tangent_rigidity - b.tangent_rigidity) <= 1e-9 * std::abs(a.tangent_rigidity) &&
+                std::abs(a.output_rotation - b.output_rotation) <= 1e-9 * std::abs(a.output_rotation);
+    }
+    if (repeats) q_best = q;
+  }
+  t.period_rad = p0 / q_best;
+  t.source = "the tangent torsional rigidity of both turrets' Palmgren roller contacts in series at the reference "
+             "torque, input held (docs/lcr_stiffness.md); the eccentric bearing, bodies and shafts not included";
+  // Each turret's mesh: the input turret's roller pattern advances one roller pitch every 2π/n_A,
+  // the output turret's every 2π m_A/(n_A m_B) of input angle (its rollers' phase rate q, model/lcr/
+  // life.h, over its n_B rollers): n_A and n_A m_B/m_A mesh periods per input revolution.
+  const double per_rev = 2.0 * kPi / t.period_rad;
+  t.meshes = {{"input_turret", double(r.input.rollers) / per_rev},
+              {"output_turret", double(r.input.rollers) * r.output.lobes / double(r.input.lobes) / per_rev}};
+  const double fastest = std::max(t.meshes[0].second, t.meshes[1].second);
+  const int n = in.angles_per_mesh_period * int(std::ceil(fastest - 1e-9));
+  double sense = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double theta = t.period_rad * k / n;
+    const auto d = at(theta);
+    t.angles_rad.push_back(theta);
+    t.stiffness_Nm_per_rad.push_back(d.tangent_rigidity / 1000.0);
+    t.static_te_rad.push_back(d.output_rotation);
+    sense += d.output_rotation;
+  }
+  if (sense < 0)  // the output turns against the torque's sign convention: the twist in the load's sense
+    for (double& x : t.static_te_rad) x = -x;
+  return t;
 }
 
 void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
@@ -922,6 +985,17 @@ Result Run(const Study& st, const RunContext& ctx) {
   }
   if (st.life) res.life = RunLife(st, ctx.study_file);
   RunCatalogue(st, ctx, res);
+  if (st.torsional) {
+    try {
+      res.torsional = RunTorsionalDynamics(*st.torsional, LcrMeshTable(st), ctx, "lcr_analysis");
+      for (const std::string& w : res.torsional->warnings) res.notes.push_back(w);
+    } catch (const StudyError&) {
+      throw;  // bad input found by the run: exit 2
+    } catch (const std::exception& e) {  // a mesh the model refuses (k <= 0), an integration that did not converge
+      res.torsional_failed = e.what();
+      res.notes.push_back(std::string("torsional dynamics not solved: ") + e.what());
+    }
+  }
   if (st.lubrication) RunLubrication(st, ctx, res);
   if (res.life && st.life->contamination_factor) res.life->oil = ModifiedLifeOilOf(st, res);
   if (q.profile) {
@@ -1251,6 +1325,8 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   if (res.lubrication) j["lubrication"] = WriteJson(*res.lubrication);
   else if (st.lubrication) j["lubrication"] = {{"error", res.lubrication_error}};
   AddCatalogue(st, res, j);
+  if (res.torsional && st.torsional) j["torsional_dynamics"] = TorsionalDynamicsJson(*st.torsional, *res.torsional);
+  else if (st.torsional) j["torsional_dynamics"] = {{"error", res.torsional_failed}};
   j["notes"] = res.notes;
   if (res.input_cam_files && res.output_cam_files)
     j["geometry_files"] =
@@ -1386,6 +1462,9 @@ void Write(const Study& st, const Result& res, Outputs& out) {
   }
   if (st.ratings && !res.ratings)
     out.SetStatus(Status::kNotConverged, "ratings not solved (null in result.json): " + res.ratings_failed);
+  if (res.torsional) WriteTorsionalDynamics(*res.torsional, out);
+  if (st.torsional && !res.torsional)
+    out.SetStatus(Status::kNotConverged, "torsional dynamics not solved: " + res.torsional_failed);
 }
 
 namespace {
@@ -1532,6 +1611,11 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
     {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
     {"output bearing life L10h", "/output_bearing/L10h", "h"},
     {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
+    {"first torsional natural frequency", "/torsional_dynamics/natural_frequencies_Hz/0", "Hz"},
+    {"mesh stiffness ripple", "/torsional_dynamics/mesh_stiffness_ripple_percent", "%"},
+    {"dynamic overload factor (sweep peak)", "/torsional_dynamics/sweep_peak/overload_factor", "",
+     "study:/torsional_dynamics/max_dynamic_factor", NAN, true, "/torsional_dynamics/sweep_peak/overload_sampling_error"},
+    {"at input speed", "/torsional_dynamics/sweep_peak/input_speed_rpm", "rpm"},
 })));
 
 // datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".

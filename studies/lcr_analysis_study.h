@@ -28,6 +28,7 @@
 #include "studies/material_input.h"
 #include "studies/ratings.h"
 #include "studies/study.h"
+#include "studies/torsional_dynamics_input.h"
 #include "studies/writers.h"
 
 namespace camopt::studies::lcr_analysis {
@@ -126,6 +127,7 @@ struct Input {
   std::optional<RatingsInput> ratings;
   std::optional<OutputBearingInput> output_bearing;
   std::optional<std::vector<ExternalLoadInput>> external_loads;
+  std::optional<TorsionalDynamicsInput> torsional_dynamics;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -170,6 +172,11 @@ struct Input {
                           "from the contact limits, momentary torque from the static ratings (docs/ratings.md; the "
                           "rollers' ratings of reducer.input and reducer.output)"));
     VisitOutputBearing(a, &output_bearing, &external_loads);
+    a->Visit("torsional_dynamics", &torsional_dynamics,
+             Field().Desc("the reducer's torsional dynamics from the tangent torsional stiffness of the rollers' "
+                          "Palmgren contacts (docs/torsional_dynamics.md): natural frequencies, mode shapes, the "
+                          "dynamic transmission error and overload over an input-speed sweep, resonance speeds; "
+                          "mesh_stiffness.csv, dynamic_te.csv (needs material and a load torque > 0)"));
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();
@@ -247,6 +254,8 @@ struct Study {
   double density_kg_m3 = 7850.0;  ///< "ratings.density_kg_m3" (steel when absent)
   std::optional<OutputBearingInput> output_bearing;
   std::vector<ExternalLoadInput> external_loads;
+  /// "torsional_dynamics" (studies/torsional_dynamics_input.h); nullopt: none.
+  std::optional<TorsionalDynamicsSpec> torsional;
 };
 
 /// The rating life of one bearing over the duty cycle (model/common/bearing_life.h, model/lcr/life.h).
@@ -332,6 +341,8 @@ struct Result {
   /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
   std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
+  std::optional<TorsionalDynamicsResult> torsional;  ///< with "torsional_dynamics"
+  std::string torsional_failed;                      ///< why it is absent
   /// The finite-length contact per cam, when the study has a "contact" object and stress is evaluated.
   std::optional<lcr::Contact3DCycleSide> contact_input, contact_output;
   std::optional<LifeResult> life;  ///< when the study asks for a life

@@ -47,15 +47,17 @@ inline void QuietCvodeErrors(int, const char*, const char*, char*, void*) {}
 /// Sets sv up for y' = rhs(t, y) from y(0) = y0 (n states): BDF with Newton iterations on a dense
 /// n × n system, scalar tolerances, quiet errors, `user` handed to rhs and to the nroots root
 /// functions. sv.y holds the state, sv.dense is the dense-output buffer. `who` names the caller
-/// in setup errors.
+/// in setup errors. `method` CV_ADAMS instead suits a lightly damped oscillator (the torsional
+/// model, model/common/torsional_dynamics.cc): Adams–Moulton has no BDF's damping of the
+/// oscillation at orders above 2.
 inline void StartBdfDense(CvodeSolver& sv, const double* y0, int n, CVRhsFn rhs, void* user, double rtol,
-                          double atol, CVRootFn roots, int nroots, const char* who) {
+                          double atol, CVRootFn roots, int nroots, const char* who, int method = CV_BDF) {
   sv.y = N_VNew_Serial(n, sv.ctx);
   sv.dense = N_VNew_Serial(n, sv.ctx);
   if (!sv.y || !sv.dense) throw std::bad_alloc();
   double* y = N_VGetArrayPointer(sv.y);
   for (int i = 0; i < n; ++i) y[i] = y0[i];
-  sv.mem = CVodeCreate(CV_BDF, sv.ctx);
+  sv.mem = CVodeCreate(method, sv.ctx);
   if (!sv.mem) throw std::runtime_error(std::string(who) + ": CVodeCreate failed");
   RequireCvode(CVodeInit(sv.mem, rhs, 0.0, sv.y), who, "CVodeInit");
   RequireCvode(CVodeSetErrHandlerFn(sv.mem, QuietCvodeErrors, nullptr), who, "CVodeSetErrHandlerFn");
