@@ -110,7 +110,7 @@ ContactResponse<T> IntegrateInContact(const motion::MotionProgram<T>& program, c
   };
   T u = (T(kf) * sa[0] - T(hold)) / T(kf + ks) - sa[0], w(0.0);
   ContactResponse<T> out;
-  auto record = [&](size_t k, const T& s) {
+  auto record = [&](const T& s) {
     out.s.push_back(s);
     out.u.push_back(u);
     out.w.push_back(w);
@@ -118,7 +118,7 @@ ContactResponse<T> IntegrateInContact(const motion::MotionProgram<T>& program, c
   };
   for (int r = 0; r < revolutions; ++r) {
     const bool last = r + 1 == revolutions;
-    if (last) record(0, sa[0]);
+    if (last) record(sa[0]);
     for (size_t k = 0; k < steps; ++k) {
       const double h = (grid.theta[k + 1] - grid.theta[k]) / omega;
       const T* s = &sa[3 * k];
@@ -130,7 +130,7 @@ ContactResponse<T> IntegrateInContact(const motion::MotionProgram<T>& program, c
       rhs(u + T(h) * k3u, w + T(h) * k3w, s[2], a[2], k4u, k4w);
       u = u + T(h / 6) * (k1u + T(2.0) * k2u + T(2.0) * k3u + k4u);
       w = w + T(h / 6) * (k1w + T(2.0) * k2w + T(2.0) * k3w + k4w);
-      if (last) record(k + 1, s[2]);
+      if (last) record(s[2]);
     }
   }
   return out;
