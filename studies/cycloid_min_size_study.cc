@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -19,6 +20,7 @@
 #include "model/cycloid/geometry_limits.h"
 #include "model/cycloid/tooth_profile.h"
 #include "optimizers/solver.h"
+#include "studies/cycloid_ltca_study.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
 #include "studies/ratings.h"
@@ -555,6 +557,10 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
   // "ratings" (docs/ratings.md, Ratings as sizing limits): the rated point as the life rows' one
   // cycle (load.input_speed_rpm then only sets the lubricated losses' speed).
   s.ratings = in.ratings;
+  if (in.torsional_dynamics) {
+    (void)ParseTorsionalDynamics(root["torsional_dynamics"], *in.torsional_dynamics);  // its own rules, exit 2
+    s.torsional_dynamics = root.json()["torsional_dynamics"];
+  }
   if (in.ratings) {
     CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), !in.duty_cycle.is_null());
     if (!life) life = cycloid_common::ParseLifeRatings(root, s.spec.drive, "a rated torque is asked: ratings is given",
@@ -830,6 +836,48 @@ nlohmann::ordered_json Input::SchemaRules() {
   return rules;
 }
 
+namespace {
+
+// The reported design's torsional dynamics by cycloid_ltca's model (docs/torsional_dynamics.md) on
+// its own study (best_cycloid_ltca.json, without the ratings it would also solve), and the dynamic
+// overload limit as one more check of the verification: the sweep's largest overload factor within
+// the limit plus its sampling error. The optimizer does not steer by it: a design above it is not
+// verified (exit 3, the limit named), and the design cannot be re-solved toward it.
+void CheckTorsionalDynamics(const Study& s, Result& r, const RunContext& ctx) {
+  nlohmann::json j = BestCycloidLtcaStudy(s, r);
+  j.erase("ratings");
+  const nlohmann::json& block = s.torsional_dynamics;
+  const bool limited = block.contains("max_dynamic_factor");
+  objectives::VerifiedLimit c;
+  c.limit = "max_dynamic_factor";
+  c.where = "the sweep's largest dynamic overload factor (cycloid_ltca's torsional model on the reported design)";
+  c.limit_value = limited ? block["max_dynamic_factor"].get<double>() : 0.0;
+  c.accurate_value = std::numeric_limits<double>::quiet_NaN();
+  c.fast_value = std::numeric_limits<double>::quiet_NaN();
+  c.upper = true;
+  try {
+    const cycloid_ltca::Study ls = cycloid_ltca::Parse(Node(&j, ctx.study_file, ""));
+    RunContext quiet = ctx;
+    quiet.quiet = true;
+    const cycloid_ltca::Result lr = cycloid_ltca::Run(ls, quiet);
+    if (!lr.torsional) throw std::runtime_error(lr.torsional_failed);
+    r.torsional = TorsionalDynamicsJson(*ls.torsional, *lr.torsional);
+    if (lr.torsional->peak_index >= 0) {
+      const auto& peak = lr.torsional->sweep[size_t(lr.torsional->peak_index)];
+      c.accurate_value = peak.overload_factor;
+      c.estimated_error = peak.overload_sampling_error;
+    }
+  } catch (const std::exception& e) {
+    r.torsional = {{"error", e.what()}};
+    r.warnings.push_back(std::string("torsional dynamics of the reported design not solved: ") + e.what());
+  }
+  if (!limited) return;
+  r.outcome.verification.checks.push_back(c);
+  r.outcome.verified = r.outcome.verification.verified();
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   const auto t0 = std::chrono::steady_clock::now();
@@ -878,6 +926,7 @@ Result Run(const Study& s, const RunContext& ctx) {
                            Format(k.accurate.stress_MPa, 5) +
                            " MPa (refine analysis.grid or analysis.crank_angles_per_mesh_period)");
   }
+  if (!r.outcome.x.empty() && !s.torsional_dynamics.is_null()) CheckTorsionalDynamics(s, r, ctx);
   progress.Done();
   r.blocking_message = BlockingMessage(s, r.outcome);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -1147,6 +1196,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
         b["estimated_error"]["min_static_safety"] = NumberOrNull(o.check.static_safety_error);
       }
     }
+    if (!r.torsional.is_null()) b["torsional_dynamics"] = r.torsional;
     j["best"] = b;
   }
   // What each limit that binds at the optimum costs: d(objective)/d(limit) from the multipliers.
@@ -1218,6 +1268,7 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     if (life.output.pin_count > 0) om["pin_count"] = life.output.pin_count;
     a["output_mechanism"] = om;
   }
+  if (!s.torsional_dynamics.is_null()) a["torsional_dynamics"] = s.torsional_dynamics;
   if (s.ratings)  // cycloid_ltca solves the design's ratings (docs/ratings.md)
     a["ratings"] = {{"rated_life_h", s.ratings->rated_life_h},
                     {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm},

@@ -30,6 +30,7 @@
 #include "studies/material_input.h"
 #include "studies/ratings_input.h"
 #include "studies/study.h"
+#include "studies/torsional_dynamics_input.h"
 
 namespace camopt::studies::cycloid_min_size {
 
@@ -241,6 +242,7 @@ struct Input {
   std::optional<SurfacesInput> surfaces;
   std::optional<CycloidBearingFrictionInput> bearing_friction;
   std::optional<SizingRatingsInput> ratings;
+  std::optional<TorsionalDynamicsInput> torsional_dynamics;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -288,6 +290,11 @@ struct Input {
                           "rows over one cycle at that torque and the rated speed, and the momentary torque's static "
                           "rows over one more (docs/ratings.md, Ratings as sizing limits); needs crank_bearing and "
                           "output_mechanism"));
+    a->Visit("torsional_dynamics", &torsional_dynamics,
+             Field().Desc("the sized drive's torsional dynamics, as cycloid_ltca's (docs/torsional_dynamics.md): run on "
+                          "the verified design by cycloid_ltca's model and carried into best_cycloid_ltca.json; its "
+                          "max_dynamic_factor is a limit of the verification (a design above it is not verified, exit "
+                          "3; the optimizer does not steer by it)"));
   }
   /// The rules between blocks: each sized field once (in variables or its block), the drive's
   /// fields somewhere, the crowning's fields by its type, a life's blocks.
@@ -310,6 +317,8 @@ struct Study {
   nlohmann::json lubrication_blocks;
   /// "ratings": the rated point the life rows hold (spec.life's one line, spec.limits.life_h).
   std::optional<SizingRatingsInput> ratings;
+  /// "torsional_dynamics" as in the file (null: none): the best design's cycloid_ltca study takes it.
+  nlohmann::json torsional_dynamics;
 };
 
 struct Result {
@@ -322,6 +331,9 @@ struct Result {
   /// what would fit.
   std::string blocking_message;
   std::vector<std::string> warnings;  ///< result.json "warnings" (the run's own)
+  /// With "torsional_dynamics": cycloid_ltca's "torsional_dynamics" object for the reported design
+  /// (or {"error": why}); null without.
+  nlohmann::json torsional;
   double seconds = 0;  ///< wall time of the run (stderr summary only, never in a file)
 };
 

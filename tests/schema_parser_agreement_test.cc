@@ -414,6 +414,8 @@ const std::vector<CrossField> kCrossField = {
      "the torsional speed sweep [lo, hi, n]: lo < hi and n a whole number in [2, 2000]"},
     {"lcr_analysis", "/torsional_dynamics", "expected [lo, hi, n] with",
      "the torsional speed sweep [lo, hi, n]: lo < hi and n a whole number in [2, 2000]"},
+    {"cycloid_min_size", "/torsional_dynamics", "expected [lo, hi, n] with",
+     "the torsional speed sweep [lo, hi, n]: lo < hi and n a whole number in [2, 2000]"},
     {"cycloid_crowning_tuning", "/variables/", "with lo < hi", "a range [lo, hi] needs lo < hi"},
     {"cycloid_crowning_tuning", "/tuning/coefficient_mm", "with 0 <= lo < hi",
      "the shorthand's range of f needs lo < hi"},

@@ -369,5 +369,51 @@ TEST(TorsionalDynamics, BadInputNamesThePath) {
   testing::ExpectStudyRejected(st, "torsion-limit", "/torsional_dynamics/max_dynamic_factor", "> 1");
 }
 
+// The overload limit in a sizing (cycloid_min_size): the sized drive's torsional dynamics by
+// cycloid_ltca's model on the reported design, its first frequency against the two-inertia closed
+// form on the reported mean stiffness, the same numbers when best_cycloid_ltca.json is run as it is,
+// and a limit below the sweep's peak that makes the design not verified (exit 3, the limit named).
+TEST(TorsionalDynamics, SizingChecksTheOverloadLimitOnTheVerifiedDesign) {
+  using nlohmann::json;
+  json st = json::parse(ReadFile(SourcePath("studies/examples/cycloid_min_size_quick.json")));
+  const double jin = 1e-5, jout = 0.02, ratio = 29;
+  st["torsional_dynamics"] = {{"input_inertia_kgm2", jin}, {"output_inertia_kgm2", jout},
+                              {"speed_sweep_rpm", {500, 3000, 51}}, {"damping_ratio", 0.02},
+                              {"max_dynamic_factor", 50}};
+  const auto dir = TempDir("torsion-sizing");
+  WriteFile(dir / "s.json", st.dump());
+  auto run = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const json r = json::parse(ReadFile(dir / "o" / "result.json"));
+  ASSERT_TRUE(r["verified"].get<bool>());
+  const json& t = r["best"]["torsional_dynamics"];
+  const double kbar = t["mean_mesh_stiffness_Nm_per_rad"].get<double>();
+  const double f = std::sqrt(kbar * (1 / (jin * ratio * ratio) + 1 / jout)) / (2 * kPi);
+  EXPECT_NEAR(t["natural_frequencies_Hz"][0].get<double>() / f, 1.0, 1e-9);
+  const double peak = t["sweep_peak"]["overload_factor"].get<double>();
+  EXPECT_GT(peak, 1.0);
+  bool checked = false;
+  for (const auto& c : r["verification"]["checks"])
+    if (c["limit"] == "max_dynamic_factor") {
+      checked = true;
+      EXPECT_DOUBLE_EQ(c["accurate_value"].get<double>(), peak);
+      EXPECT_TRUE(c["holds"].get<bool>());
+    }
+  EXPECT_TRUE(checked);
+  // The best design's own analysis study carries the block and gives the same sweep.
+  run = RunCamopt("run " + (dir / "o" / "best_cycloid_ltca.json").string() + " --quiet --out " + (dir / "b").string());
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const json b = json::parse(ReadFile(dir / "b" / "result.json"));
+  EXPECT_NEAR(b["torsional_dynamics"]["sweep_peak"]["overload_factor"].get<double>(), peak, 1e-9 * peak);
+  // A limit below the peak (by more than its sampling error): not verified, exit 3, named.
+  st["torsional_dynamics"]["max_dynamic_factor"] = 1 + (peak - 1) / 2;
+  WriteFile(dir / "s2.json", st.dump());
+  run = RunCamopt("run " + (dir / "s2.json").string() + " --quiet --out " + (dir / "o2").string());
+  EXPECT_EQ(run.exit_code, 3) << run.stderr_text;
+  EXPECT_NE(run.stderr_text.find("max_dynamic_factor"), std::string::npos) << run.stderr_text;
+  const json r2 = json::parse(ReadFile(dir / "o2" / "result.json"));
+  EXPECT_FALSE(r2["verified"].get<bool>());
+}
+
 }  // namespace
 }  // namespace camopt::torsion
