@@ -102,6 +102,11 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
   out.verified = out.verification.verified();
   // The study's own law(s) and every named law in place of each optimized segment, accurate.
   out.start = objectives::CheckMotionDesign(spec, study_design);
+  if (spec.objective == objectives::MotionObjective::kPeakJerk)
+    for (const objectives::OptimizedSegment& o : spec.segments) {
+      const auto ch = motion::Characteristics(study_design.motion.segments()[size_t(o.segment)].law);
+      if (ch && !std::isfinite(ch->cj)) out.start.objective = kInf, out.start.objective_error = 0.0;
+    }
   const dc::DiscCam base = out.x.empty() ? study_design : out.cam;
   for (const objectives::OptimizedSegment& o : spec.segments)
     for (motion::MotionLaw law : NamedLaws()) {
@@ -110,6 +115,13 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
       const auto& s = study_design.motion.segments()[size_t(o.segment)];
       segs[size_t(o.segment)] = motion::MotionSegment<double>(law, s.rise, s.duration);
       c.motion = motion::MotionProgram<double>(std::move(segs));
+      // A law whose acceleration jumps (inside it or against a dwell) has an infinite jerk there
+      // (its characteristic value c_j, motion_law.h): the sampled jerk would miss the jump.
+      const auto ch = motion::Characteristics(law);
+      if (spec.objective == objectives::MotionObjective::kPeakJerk && ch && !std::isfinite(ch->cj)) {
+        out.named_laws.push_back({o.segment, motion::LawName(law), kInf, 0.0});
+        continue;
+      }
       const objectives::MotionAccurate a = objectives::CheckMotionDesign(spec, c, /*objective_only=*/true);
       out.named_laws.push_back({o.segment, motion::LawName(law), a.objective, a.objective_error});
     }

@@ -89,6 +89,17 @@ nlohmann::ordered_json Input::SchemaRules() {
                {{"if", follower_is({"oscillating_roller", "oscillating_knife_edge"})},
                 {"then", {{"allOf", oj::array({refuse("dynamics"), {{"properties", {{"limits", refuse("stroke_mm")}}}}})}}}},
                {{"if", objective("residual_vibration")}, {"then", stiffness}},
+               // peak_jerk: the designed segments C2 at their ends and of degree 3 at least.
+               {{"if", objective("peak_jerk")},
+                {"then",
+                 {{"properties",
+                   {{"motion",
+                     {{"items",
+                       {{"properties",
+                         {{"optimize",
+                           {{"properties",
+                             {{"degree", {{"minimum", 3}}},
+                              {"boundary", {{"properties", {{"acceleration", {{"const", true}}}}}}}}}}}}}}}}}}}}}},
                {{"if", objective("max_contact_force")}, {"then", {{"required", oj::array({"dynamics"})}}}},
                {{"if", {{"required", oj::array({"limits"})},
                         {"properties", {{"limits", {{"required", oj::array({"no_separation_up_to_rpm"})}}}}}}},
@@ -195,6 +206,16 @@ Study Parse(const Node& root) {
   }
   // Objective and what it needs.
   const std::string obj = in.objective;
+  if (obj == "peak_jerk")
+    for (const auto& o : spec.segments) {
+      const Node opt = root["motion"][size_t(o.segment)]["optimize"];
+      if (!o.acceleration)
+        opt["boundary"]["acceleration"].FailWith("peak_jerk needs the acceleration matched at the ends (an acceleration "
+                                                 "jump is an infinite jerk): true, or leave it out");
+      if (o.degree < 3)
+        opt["degree"].FailWith("peak_jerk needs a degree of at least 3 (a B-spline of degree p has p − 1 continuous "
+                               "derivatives: the jerk is finite from 3 up), found " + std::to_string(o.degree));
+    }
   spec.objective = obj == "peak_acceleration" ? MotionObjective::kPeakAcceleration
                    : obj == "peak_jerk"       ? MotionObjective::kPeakJerk
                    : obj == "residual_vibration" ? MotionObjective::kResidualVibration
@@ -466,6 +487,8 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   for (const auto& n : o.named_laws) {
     named.push_back({{"segment", n.segment}, {"law", n.law}, {"objective", NumberOrNull(n.value)},
                      {"estimated_error", NumberOrNull(n.error)}});
+    if (!std::isfinite(n.value))
+      named.back()["note"] = "infinite: the law's acceleration jumps (inside it or against a dwell), so does its jerk";
     if (std::isfinite(n.value) && n.value < best_named) best_named = n.value, best_named_law = n.law;
   }
   j["named_laws"] = named;
