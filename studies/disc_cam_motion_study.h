@@ -21,6 +21,7 @@
 
 #include "sizing/disc_cam_motion.h"
 #include "studies/archive.h"
+#include "studies/disc_cam_min_size_study.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/study.h"
@@ -68,19 +69,8 @@ struct Input {
                                      "largest residual amplitude is minimised (absent: dynamics.speed_rpm alone)"));
     }
   };
-  struct Optimizer {
-    std::string backend = "ipopt";
-    int max_evaluations = 300, verify_rounds = 4;
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("backend", &backend,
-               Field().OneOf({"ipopt", "slsqp"}, "one of \"ipopt\", \"slsqp\"").Desc("the NLP solver (slsqp: NLopt's)"));
-      a->Visit("max_evaluations", &max_evaluations,
-               Field().AtLeast(1).AtMost(10000).Desc("per solve (Ipopt: iterations; SLSQP: evaluations)"));
-      a->Visit("verify_rounds", &verify_rounds,
-               Field().AtLeast(0).AtMost(10).Desc("tightening rounds of the verification loop"));
-    }
-  };
+  /// The optimizer and the verification loop: disc_cam_min_size's block (the same solvers, budget and rounds).
+  using Optimizer = disc_cam_min_size::Input::Optimizer;
 
   std::string study = "disc_cam_motion", name = "disc cam motion";
   std::optional<std::string> description;
