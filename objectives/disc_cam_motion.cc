@@ -195,6 +195,8 @@ struct Layout {
   dc::ContactGrid grid;
   int nfree = 0;
   int objective_rows = 0, pressure_rows = 0, curvature_rows = 0, stroke_rows = 0, separation_rows = 0;
+  int stress_rows = 0;
+  double stress_limit_MPa = kInf;
   std::vector<double> separation_rpm;
   bool curvature = false;
 };
@@ -221,6 +223,7 @@ Layout MakeLayout(const DiscCamMotionSpec& spec) {
       break;
   }
   l.pressure_rows = n;
+  l.stress_rows = spec.contact_stress_MPa ? n : 0;
   l.curvature = spec.cam.roller_radius + spec.radius_margin_mm > 0 || spec.radius_margin_is_roller;
   l.curvature_rows = l.curvature ? n : 0;
   int interior = 0;
@@ -237,7 +240,7 @@ Layout MakeLayout(const DiscCamMotionSpec& spec) {
 // Every row value (before the epigraph's t is subtracted) of a design.
 template <typename T>
 struct RowValues {
-  std::vector<T> objective, pressure_deg, curvature, stroke, separation;
+  std::vector<T> objective, pressure_deg, curvature, stroke, separation, stress;
 };
 
 template <typename T>
@@ -254,6 +257,13 @@ RowValues<T> Rows(const DiscCamMotionSpec& spec, const Layout& l, const dc::Disc
     cos_phi[size_t(i)] = cos(p.pressure_angle);
     if (l.curvature) r.curvature.push_back(p.pitch_curvature * (cam.roller_radius + margin));
     if (spec.stroke_mm && l.samples.interior[size_t(i)]) r.stroke.push_back(p.s);
+    if (l.stress_rows) {
+      const double s = l.stress_limit_MPa;
+      const T w(dc::RadPerSecond(spec.speed_rpm));
+      r.stress.push_back(dc::CamLoadAt(p, *spec.loads, w).contact_force *
+                             T(spec.composite_modulus_MPa / (kPi * spec.face_width_mm * s * s)) -
+                         dc::RollerCamEffectiveRadius(p, cam.roller_radius));
+    }
     if ((spec.objective == MotionObjective::kPeakAcceleration || spec.objective == MotionObjective::kPeakJerk) &&
         l.samples.optimized[size_t(i)]) {
       const motion::Svaj<T> m = cam.motion.Evaluate(th);
@@ -365,6 +375,7 @@ dc::DiscCam MotionDesign(const DiscCamMotionSpec& spec, const std::vector<double
 
 Problem DiscCamMotionProblem(const DiscCamMotionSpec& spec, const MotionFastLimits& fast) {
   Layout l = MakeLayout(spec);
+  l.stress_limit_MPa = fast.contact_stress_MPa;
   if (!l.separation_rpm.empty()) {
     for (double rpm : fast.extra_separation_rpm) l.separation_rpm.push_back(rpm);
     l.separation_rows = int(l.separation_rpm.size()) * Windows(l.grid.theta.size() - 1);
@@ -402,6 +413,7 @@ Problem DiscCamMotionProblem(const DiscCamMotionSpec& spec, const MotionFastLimi
   add("curvature_ratio", l.curvature_rows);
   add("follower_mm", l.stroke_rows);
   add("axial_force_N", l.separation_rows);
+  add("contact_stress_row_mm", l.stress_rows);
   const int nv = l.nfree;
   const DiscCamMotionSpec* sp = &spec;
   const double margin_extra = fast.radius_margin_extra_mm;
@@ -417,6 +429,7 @@ Problem DiscCamMotionProblem(const DiscCamMotionSpec& spec, const MotionFastLimi
     for (const T& v : r.curvature) y[k++] = v;
     for (const T& v : r.stroke) y[k++] = v;
     for (const T& v : r.separation) y[k++] = v;
+    for (const T& v : r.stress) y[k++] = v;
     if (k != y.size()) throw std::logic_error("disc_cam_motion: the rows do not fill their blocks");
   };
   // The smallest Jet that holds the variables (the rows' cost grows with it).
@@ -433,6 +446,7 @@ Problem DiscCamMotionProblem(const DiscCamMotionSpec& spec, const MotionFastLimi
   if (l.curvature_rows) p.constraints.push_back({"curvature_ratio", -kInf, 1.0, 1.0});
   if (l.stroke_rows)
     p.constraints.push_back({"follower_mm", fast.stroke_inset_mm, *spec.stroke_mm - fast.stroke_inset_mm, *spec.stroke_mm});
+  if (l.stress_rows) p.constraints.push_back({"contact_stress_row_mm", -kInf, 0.0, std::max(1.0, spec.cam.roller_radius)});
   if (l.separation_rows) {
     const double hold = std::max(1.0, std::abs(spec.follower->Hold()));
     p.constraints.push_back({"axial_force_N", fast.separation_margin_N, kInf, hold});
@@ -441,7 +455,8 @@ Problem DiscCamMotionProblem(const DiscCamMotionSpec& spec, const MotionFastLimi
 }
 
 double FastObjective(const DiscCamMotionSpec& spec, const dc::DiscCam& cam) {
-  const Layout l = MakeLayout(spec);
+  Layout l = MakeLayout(spec);
+  l.stress_rows = 0;  // the objective only
   const RowValues<double> r = Rows(spec, l, cam, 0.0);
   double v = r.objective.empty() ? 0.0 : *std::max_element(r.objective.begin(), r.objective.end());
   if (spec.objective == MotionObjective::kResidualVibration) v = std::sqrt(std::max(v, 0.0));
@@ -560,6 +575,25 @@ MotionAccurate CheckMotionDesign(const DiscCamMotionSpec& spec, const dc::DiscCa
     out.checks.push_back(c);
     c.where = "lowest follower position (below the base circle: negative)";
     c.limit_value = 0.0, c.accurate_value = -lo, c.estimated_error = elo, c.upper = false;
+    out.checks.push_back(c);
+  }
+  if (!objective_only && spec.contact_stress_MPa) {
+    const double w = dc::RadPerSecond(spec.speed_rpm);
+    double v, e, at;
+    bool undercut_loaded = false;
+    cycle([&](double th) {
+      const dc::CamPoint<double> p = dc::EvaluateCam(cam, th);
+      const double f = dc::CamLoadAt(p, *spec.loads, w).contact_force;
+      const double s = dc::RollerCamContactStress(p, cam.roller_radius, f, spec.face_width_mm, spec.composite_modulus_MPa);
+      if (!std::isfinite(s)) undercut_loaded = true;
+      return std::isfinite(s) ? s : -kInf;
+    }, v, e, at);
+    VerifiedLimit c;
+    c.limit = "contact_stress_MPa";
+    c.where = "largest Hertz stress (kinetostatic load at the study's speed) at " + std::to_string(at).substr(0, 7) + " deg";
+    c.limit_value = *spec.contact_stress_MPa;
+    c.accurate_value = undercut_loaded ? std::numeric_limits<double>::quiet_NaN() : v;
+    c.estimated_error = e, c.upper = true;
     out.checks.push_back(c);
   }
   out.model = "kinematics on " + std::to_string(n) + " cam angles (" + std::to_string(spec.accurate_factor) +

@@ -25,6 +25,8 @@
 //   radius_margin_mm    κ(θ_i)·(r_f + m) ≤ 1 (sizing/disc_cam_min_size.h kDiscCamCurvature)
 //   stroke_mm           0 ≤ S(θ_i) ≤ stroke: a free spline neither dips below the base circle nor
 //                       overshoots the stroke
+//   contact_stress_MPa  F_c(θ_i) E*/(π w s²) − R'(θ_i) ≤ 0 with the kinetostatic contact force (a
+//                       translating roller follower; sizing/disc_cam_min_size.h kDiscCamStress)
 //   no_separation_up_to_rpm  F_a(θ_k; n) ≥ 0 at every step of the last revolution of the
 //                       held-on follower at separation_speeds speeds n = n_max·j/K (j = 1 … K)
 // The dynamic rows integrate the follower held on the cam by RK4 on a grid with ≥ 64 steps per
@@ -85,6 +87,11 @@ struct DiscCamMotionSpec {
   bool radius_margin_is_roller = false;
   std::optional<double> stroke_mm;
   std::optional<double> no_separation_up_to_rpm;
+  /// The peak Hertz stress between roller and cam under the kinetostatic load at the study's speed
+  /// (a translating roller follower with `loads`): rows F_c E*/(π w s²) − R' ≤ 0, R' the relative
+  /// radius (sizing/disc_cam_min_size.h kDiscCamStress), so p₀ = √(F_c E*/(π w R')) ≤ s.
+  std::optional<double> contact_stress_MPa;
+  double face_width_mm = 0.0, composite_modulus_MPa = 0.0;
   int separation_speeds = 8;                ///< K
   int angle_steps = 720;                    ///< N of the fast rows (kinematics)
   int accurate_factor = 8;
@@ -106,6 +113,7 @@ struct MotionFastLimits {
   double radius_margin_extra_mm = 0.0;
   double stroke_inset_mm = 0.0;
   double separation_margin_N = 0.0;
+  double contact_stress_MPa = kInf;  ///< the fast rows' stress limit
   /// Speeds added to the no-separation rows by the verification loop: where the accurate check
   /// found the smallest contact force between the fast rows' speeds (an active set over speed).
   std::vector<double> extra_separation_rpm;

@@ -34,6 +34,7 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
   objectives::MotionFastLimits fast;
   fast.pressure_angle_deg = spec.pressure_angle_deg * (1 - kTightenMargin);
   if (spec.stroke_mm) fast.stroke_inset_mm = kTightenMargin * *spec.stroke_mm;
+  if (spec.contact_stress_MPa) fast.contact_stress_MPa = *spec.contact_stress_MPa * (1 - kTightenMargin);
   if (spec.follower) fast.separation_margin_N = kTightenMargin * std::max(1.0, std::abs(spec.follower->Hold()));
   std::vector<double> start;  // all variables (t included), from the last solve
   std::vector<objectives::TighteningStep> history;
@@ -74,6 +75,10 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
         st.fast_limit_before = fast.radius_margin_extra_mm;
         fast.radius_margin_extra_mm += ex + 1e-7;
         st.fast_limit_after = fast.radius_margin_extra_mm;
+      } else if (c.limit == "contact_stress_MPa") {
+        st.fast_limit_before = fast.contact_stress_MPa;
+        fast.contact_stress_MPa -= ex + kTightenMargin * *spec.contact_stress_MPa;
+        st.fast_limit_after = fast.contact_stress_MPa;
       } else if (c.limit == "stroke_mm") {
         st.fast_limit_before = fast.stroke_inset_mm;
         fast.stroke_inset_mm += ex + 1e-7;

@@ -88,6 +88,10 @@ nlohmann::ordered_json Input::SchemaRules() {
                                                                                              "oscillating_flat_faced"}}}}}}}}}}}}},
                {{"if", follower_is({"oscillating_roller", "oscillating_knife_edge"})},
                 {"then", {{"allOf", oj::array({refuse("dynamics"), {{"properties", {{"limits", refuse("stroke_mm")}}}}})}}}},
+               {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
+                {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}},
+               {{"if", follower_is({"oscillating_roller", "oscillating_knife_edge"})},
+                {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}},
                {{"if", objective("residual_vibration")}, {"then", stiffness}},
                // peak_jerk: the designed segments C2 at their ends and of degree 3 at least.
                {{"if", objective("peak_jerk")},
@@ -266,6 +270,14 @@ Study Parse(const Node& root) {
   const bool knife = s.base.contact == disc_cam::Study::Contact::kKnifeEdge;
   spec.radius_margin_is_roller = s.base.limits.radius_margin_default && !knife;
   spec.radius_margin_mm = spec.radius_margin_is_roller ? 0.0 : s.base.limits.radius_margin_mm;
+  if (s.base.limits.contact_stress_MPa) {
+    // disc_cam::Parse has checked that face width, material and the loads are there.
+    if (oscillating)
+      root["limits"]["contact_stress_MPa"].FailWith("a translating roller follower only (its loads are dynamics')");
+    spec.contact_stress_MPa = *s.base.limits.contact_stress_MPa;
+    spec.face_width_mm = *s.base.face_width_mm;
+    spec.composite_modulus_MPa = s.base.material->composite_modulus_MPa();
+  }
   if (in.limits) {
     if (in.limits->stroke_mm) {
       if (oscillating) root["limits"]["stroke_mm"].FailWith("a translating follower only (its unit is mm)");
@@ -450,6 +462,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   nlohmann::json limits = {{"pressure_angle_deg", s.spec.pressure_angle_deg}};
   limits["radius_margin_mm"] = s.spec.radius_margin_mm + (s.spec.radius_margin_is_roller ? s.spec.cam.roller_radius : 0.0);
   if (s.spec.stroke_mm) limits["stroke_mm"] = *s.spec.stroke_mm;
+  if (s.spec.contact_stress_MPa) limits["contact_stress_MPa"] = *s.spec.contact_stress_MPa;
   if (s.spec.no_separation_up_to_rpm) limits["no_separation_up_to_rpm"] = *s.spec.no_separation_up_to_rpm;
   j["limits"] = limits;
   AddVerificationJson(o.verification, j);

@@ -30,7 +30,7 @@ namespace camopt::studies::disc_cam_motion {
 
 struct Input {
   struct Limits {
-    std::optional<double> pressure_angle_deg, radius_margin_mm, stroke_mm, no_separation_up_to_rpm;
+    std::optional<double> pressure_angle_deg, radius_margin_mm, contact_stress_MPa, stroke_mm, no_separation_up_to_rpm;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("pressure_angle_deg", &pressure_angle_deg,
@@ -41,6 +41,10 @@ struct Input {
                Field().NonNegative().Unit("mm").Desc(
                    "the profile's smallest convex radius of curvature at least this (absent: the roller radius; a "
                    "knife edge: 0)"));
+      a->Visit("contact_stress_MPa", &contact_stress_MPa,
+               Field().Positive().Unit("MPa").Desc(
+                   "peak Hertz stress between roller and cam under the kinetostatic load at dynamics.speed_rpm; needs "
+                   "face_width_mm, material and dynamics; a translating roller follower only"));
       a->Visit("stroke_mm", &stroke_mm,
                Field().Positive().Unit("mm").Desc(
                    "the follower stays within [0, stroke] over the cycle: a designed rise neither dips below the "
@@ -80,6 +84,8 @@ struct Input {
   std::string objective;
   std::optional<Limits> limits;
   std::optional<disc_cam::Input::Dynamics> dynamics;
+  std::optional<double> face_width_mm;
+  std::optional<MaterialInput> material;
   Analysis analysis;
   Optimizer optimizer;
 
@@ -105,6 +111,9 @@ struct Input {
              Field().Desc("the follower's loads and dynamics at the cam speed, as disc_cam's (translating followers); "
                           "residual_vibration and no_separation_up_to_rpm need follower_stiffness_N_per_mm, "
                           "max_contact_force the loads"));
+    a->Visit("face_width_mm", &face_width_mm,
+             Field().Positive().Unit("mm").Desc("contact length of roller and cam along the camshaft, for the Hertz stress"));
+    a->Visit("material", &material, Field().Desc("follower and cam (both), for the Hertz stress"));
     a->Visit("analysis", &analysis, Field().Desc("the fast rows' and the accurate model's grids"));
     a->Visit("optimizer", &optimizer, Field().Desc("the optimizer and the verification loop"));
   }

@@ -268,6 +268,37 @@ TEST(DiscCamMotion, OscillatingLeastJerkBeatsTheNamedLaws) {
   EXPECT_TRUE(j["best"]["motion"][0].contains("control_points_deg"));
 }
 
+// A contact-stress limit that binds: the least-jerk rise under 379 MPa (its unconstrained optimum
+// reaches 381.6 MPa) verified at the limit, and disc_cam's own kinetostatic stress of the best design
+// (best_disc_cam.json run as it is, another code path) within the limit.
+TEST(DiscCamMotion, ContactStressLimitBindsAndDiscCamAgrees) {
+  json s = Example();
+  s["objective"] = "peak_jerk";
+  s["dynamics"].erase("follower_stiffness_N_per_mm");
+  s["dynamics"]["spring_preload_N"] = 100;
+  s["limits"].erase("no_separation_up_to_rpm");
+  s["limits"]["contact_stress_MPa"] = 379;
+  s["face_width_mm"] = 10;
+  s["material"] = {{"youngs_modulus_GPa", 206}, {"poisson_ratio", 0.3}};
+  const auto dir = TempDir("disc-cam-motion-stress");
+  WriteFile(dir / "s.json", s.dump());
+  auto run = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const json r = json::parse(ReadFile(dir / "o" / "result.json"));
+  EXPECT_TRUE(r["verified"].get<bool>());
+  double stress = 0;
+  for (const auto& c : r["verification"]["checks"])
+    if (c["limit"] == "contact_stress_MPa") stress = c["accurate_value"].get<double>();
+  EXPECT_NEAR(stress, 379.0, 0.01);  // binding
+  EXPECT_LE(stress, 379.0 + 1e-6);
+  run = RunCamopt("run " + (dir / "o" / "best_disc_cam.json").string() + " --quiet --out " + (dir / "b").string());
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const json b = json::parse(ReadFile(dir / "b" / "result.json"));
+  const double sampled = b["dynamics"]["max_contact_stress_MPa"].get<double>();
+  EXPECT_LE(sampled, 379.0 + 1e-6);
+  EXPECT_NEAR(sampled, stress, 0.01);
+}
+
 // What the kind refuses, with the JSON path (exit 2).
 TEST(DiscCamMotion, BadInputExits2NamingThePath) {
   const auto dir = TempDir("disc-cam-motion-bad");

@@ -461,6 +461,8 @@ const std::vector<CrossField> kCrossField = {
      "the variables by follower.type (offset_mm translating; pivot_distance_mm, arm_length_mm oscillating)"},
     {"disc_cam_min_size", "/limits/contact_stress_MPa", "cannot be checked without",
      "the contact-stress limit needs face_width_mm, material and dynamics"},
+    {"disc_cam_motion", "/limits/contact_stress_MPa", "cannot be checked without",
+     "the contact-stress limit needs face_width_mm, material and dynamics"},
     {"globoidal_cam", "/motion", "segment durations sum to", "the motion segments' cam angles sum to 360°"},
     {"globoidal_cam", "/contact/contact_arm_mm", "expected a length in [l₂, l₁]",
      "the contact arm lies on the roller, [l₂, l₁] from the cam geometry"},
