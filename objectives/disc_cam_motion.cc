@@ -17,7 +17,9 @@ namespace dc = camopt::disc_cam;
 constexpr double kDeg = kPi / 180.0;
 constexpr int kJet = 32;  // Jet size: up to 31 free control values and t
 constexpr double kRefineShare = 0.01;
-constexpr int kStepsPerPeriod = 64;  // RK4 steps per natural period of the follower, at least
+// RK4 steps per natural period of the follower, at least: at the highest speed of the rows, and
+// (the scheme's accuracy, far inside its stability limit h ω_n < 2.8) at the lowest.
+constexpr double kStepsPerPeriod = 64, kStepsPerPeriodLowest = 8;
 // The dynamic force rows: one smooth soft extreme per window of the revolution, not one row per
 // RK4 step (thousands of dense rows made Ipopt's KKT solve depend on the heap's layout: the same
 // study gave another answer when run twice in one process). κ = kSharpness / force scale bounds
@@ -38,9 +40,10 @@ T SoftMin(const std::vector<T>& f, size_t lo, size_t hi, double kappa) {
   return T(m) - log(sum) / T(kappa);
 }
 
-// Window k of kForceWindows over `steps` samples: [Begin(k), Begin(k + 1)).
-size_t WindowBegin(size_t k, size_t steps) { return k * steps / size_t(kForceWindows); }
+// The windows over `steps` samples: min(steps, kForceWindows) of them, window k being
+// [WindowBegin(k), WindowBegin(k + 1)), none empty.
 int Windows(size_t steps) { return int(std::min(steps, size_t(kForceWindows))); }
+size_t WindowBegin(size_t k, size_t steps) { return k * steps / size_t(Windows(steps)); }
 
 // The u-derivatives (order 1, 2) of every basis function of a B-spline segment at u.
 std::vector<std::array<double, 2>> BasisDerivatives(int count, int degree, double u) {
@@ -168,21 +171,28 @@ size_t GridIndexOfSegmentStart(const dc::ContactGrid& g, int seg) {
   return 0;
 }
 
-// The RK4 grid for responses up to rpm_max: ≥ N steps a revolution and ≥ 64 per natural period.
-dc::ContactGrid GridFor(const DiscCamMotionSpec& spec, double rpm_max) {
-  int steps = spec.angle_steps;
+}  // namespace
+
+int ContactStepsPerRevolution(const DiscCamMotionSpec& spec) {
+  double steps = spec.angle_steps;
   if (spec.follower) {
-    const double fn = spec.follower->NaturalFrequencyRadS() / (2 * kPi), frev = rpm_max / 60.0;
-    steps = std::max(steps, int(std::ceil(kStepsPerPeriod * fn / frev)));
+    double top = spec.speed_rpm, low = spec.speed_rpm;
+    for (double n : spec.objective_speeds_rpm) top = std::max(top, n), low = std::min(low, n);
+    if (spec.no_separation_up_to_rpm) {
+      top = std::max(top, *spec.no_separation_up_to_rpm);
+      low = std::min(low, *spec.no_separation_up_to_rpm / spec.separation_speeds);
+    }
+    const double fn = spec.follower->NaturalFrequencyRadS() / (2 * kPi);
+    steps = std::max({steps, kStepsPerPeriod * fn / (top / 60.0), kStepsPerPeriodLowest * fn / (low / 60.0)});
   }
-  return dc::MakeContactGrid(Durations(spec.cam), steps);
+  return std::isfinite(steps) && steps < 1e9 ? int(std::ceil(steps)) : 1000000000;
 }
 
-double TopSpeed(const DiscCamMotionSpec& spec) {
-  double top = spec.speed_rpm;
-  for (double n : spec.objective_speeds_rpm) top = std::max(top, n);
-  if (spec.no_separation_up_to_rpm) top = std::max(top, *spec.no_separation_up_to_rpm);
-  return top;
+namespace {
+
+// The RK4 grid of every response (ContactStepsPerRevolution).
+dc::ContactGrid GridFor(const DiscCamMotionSpec& spec) {
+  return dc::MakeContactGrid(Durations(spec.cam), ContactStepsPerRevolution(spec));
 }
 
 bool DynamicForce(const DiscCamMotionSpec& spec) {
@@ -205,7 +215,7 @@ Layout MakeLayout(const DiscCamMotionSpec& spec) {
   Layout l;
   l.samples = MakeSamples(spec, spec.angle_steps);
   l.nfree = FreeControlCount(spec);
-  if (spec.follower) l.grid = GridFor(spec, TopSpeed(spec));
+  if (spec.follower) l.grid = GridFor(spec);
   const int n = spec.angle_steps;
   int inside = 0;
   for (char c : l.samples.optimized) inside += c;
@@ -400,7 +410,7 @@ Problem DiscCamMotionProblem(const DiscCamMotionSpec& spec, const MotionFastLimi
   t.name = "epigraph";
   t.initial = t_start * 1.01 + 1e-12;
   t.lower = spec.objective == MotionObjective::kMaxContactForce ? -kInf : 0.0;
-  t.scale = std::max(std::abs(t_start), 1e-12);
+  t.scale = std::isfinite(t_start) ? std::clamp(std::abs(t_start), 1e-12, 1e100) : 1.0;
   p.variables.push_back(t);
   std::vector<OutputBlock> blocks;
   int off = 0;

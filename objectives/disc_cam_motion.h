@@ -30,7 +30,7 @@
 //   no_separation_up_to_rpm  F_a(θ_k; n) ≥ 0 at every step of the last revolution of the
 //                       held-on follower at separation_speeds speeds n = n_max·j/K (j = 1 … K)
 // The dynamic rows integrate the follower held on the cam by RK4 on a grid with ≥ 64 steps per
-// natural period (contact_response.h), their derivatives by forward-mode differentiation of those
+// natural period at the highest speed and ≥ 8 at the lowest (contact_response.h), their derivatives by forward-mode differentiation of those
 // steps (the forward sensitivities of the ODE).
 //
 // Accurate model: the kinematic values on accurate_factor times the samples, every peak within 1% of
@@ -96,6 +96,10 @@ struct DiscCamMotionSpec {
   int angle_steps = 720;                    ///< N of the fast rows (kinematics)
   int accurate_factor = 8;
 };
+
+/// RK4 steps a revolution of the dynamic rows: N, and at least 64 per natural period of the
+/// follower at the rows' highest speed and 8 at their lowest (the separation rows' n_max/K).
+int ContactStepsPerRevolution(const DiscCamMotionSpec& spec);
 
 /// The free control values of the start design (the variables' starts, without t).
 std::vector<double> StartControls(const DiscCamMotionSpec& spec);

@@ -104,7 +104,9 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
   out.verification = VerificationOf(out.check, options.verify_rounds);
   out.verification.history = history;
   out.verification.ran = !out.x.empty();
-  out.verified = out.verification.verified();
+  // An objective the accurate model cannot evaluate (the follower leaves the cam in the dwell) is
+  // not verified, whatever the limits say.
+  out.verified = out.verification.verified() && std::isfinite(out.check.objective);
   // The study's own law(s) and every named law in place of each optimized segment, accurate.
   out.start = objectives::CheckMotionDesign(spec, study_design);
   if (spec.objective == objectives::MotionObjective::kPeakJerk)

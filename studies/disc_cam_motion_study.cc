@@ -293,6 +293,17 @@ Study Parse(const Node& root) {
   spec.separation_speeds = in.analysis.separation_speeds;
   spec.angle_steps = in.analysis.angle_steps;
   spec.accurate_factor = in.analysis.accurate_factor;
+  // The dynamic rows' RK4 grid follows the follower's natural frequency: refuse a follower whose
+  // grid no run could afford (a stiff train on a feather-light mass, or a crawling cam).
+  if (spec.follower) {
+    const int steps = objectives::ContactStepsPerRevolution(spec);
+    if (steps > 200000)
+      root["dynamics"].FailWith(
+          "the follower's natural frequency " + Format(spec.follower->NaturalFrequencyRadS() / (2 * kPi), 4) +
+          " Hz needs " + Format(double(steps), 3) + " RK4 steps a revolution (64 a natural period at the highest "
+          "speed, 8 at the lowest), at most 200000: a heavier follower_mass_kg, a softer follower_stiffness_N_per_mm, "
+          "or higher speeds");
+  }
   s.backend = in.optimizer.backend;
   optimizers::SolverOptions& so = s.options.solver;
   so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
@@ -315,6 +326,10 @@ Result Run(const Study& s, const RunContext& ctx) {
   if (o.x.empty()) {
     r.blocking_message = "the optimizer ended without a design (" + o.result.message +
                          "); relax the limits or give more control points";
+  } else if (!std::isfinite(o.check.objective)) {
+    r.blocking_message = "the accurate model cannot evaluate the objective at the design: the follower leaves the cam "
+                         "(in the dwell after a designed segment, for the residual vibration); add "
+                         "limits.no_separation_up_to_rpm, or raise the spring's preload or rate";
   } else if (!o.verified) {
     const objectives::VerifiedLimit* w = o.verification.worst();
     r.blocking_message = w ? "the design is not verified: " + w->limit + " (" + w->where + ") is " +

@@ -299,6 +299,57 @@ TEST(DiscCamMotion, ContactStressLimitBindsAndDiscCamAgrees) {
   EXPECT_NEAR(sampled, stress, 0.01);
 }
 
+// Undamped (ζ = 0, where the classic one-segment spectrum is exact for this follower, r = k_f/(k_f + k_s)):
+// the return placed at τ = 5 (a zero of the cycloidal spectrum), the rise designed for the least
+// residual vibration at its τ = 5.42. The designed law's spectrum (model/disc_cam/residual_spectrum.h:
+// Gauss–Kronrod quadrature of its own shape, not the RK4 rows) has a zero there, where the start law's
+// is |sin πτ|/(πτ (τ² − 1)).
+TEST(DiscCamMotion, LeastResidualVibrationIsAZeroOfTheDesignedLawsSpectrum) {
+  json s = Example();
+  s["dynamics"]["damping_ratio"] = 0.0;
+  s["limits"]["no_separation_up_to_rpm"] = 600;  // undamped, the ringing must not lift the follower
+  const double kf = 1500, ks = 5, m = 1.0, rps = 10.0;
+  const double fn = std::sqrt((kf + ks) * 1e3 / m) / (2 * kPiHere);
+  const double beta_return = 5.0 * 360.0 * rps / fn;  // τ = 5 at 600 rpm
+  s["motion"][2]["cam_angle_deg"] = beta_return;
+  s["motion"][3]["cam_angle_deg"] = 180.0 - beta_return;
+  const dcm::Study st = ParseStudy(s);
+  const dcm::Result r = dcm::Run(st, studies::RunContext("s.json", true));
+  const auto& o = r.outcome;
+  ASSERT_FALSE(o.x.empty());
+  EXPECT_TRUE(o.verified);
+  const double tau = 100.0 / 360.0 / rps * fn;
+  const double start = std::abs(std::sin(kPiHere * tau)) / (kPiHere * tau * (tau * tau - 1));
+  const json j = dcm::ToJson(st, r);
+  const json& sg = j["best"]["residual_spectrum"]["segments"][0];
+  EXPECT_NEAR(sg["tau_at_speeds"][0].get<double>(), tau, 1e-12);
+  EXPECT_NEAR(sg["start_amplitude_per_rise"][0].get<double>(), start, 1e-9);
+  EXPECT_LT(sg["designed_amplitude_per_rise"][0].get<double>(), 1e-3 * start);
+  // And the whole program's response, verified by CVODE (undamped, the rise's ringing of every
+  // revolution adds up, so the start's is not r h A; the design's is the same zero).
+  EXPECT_LT(o.check.objective, 1e-3 * start * 30.0 * kf / (kf + ks));
+}
+
+// A coarse grid (36 angles) with a soft follower: fewer RK4 steps a revolution than force windows;
+// every row finite (each window holds at least one step).
+TEST(DiscCamMotion, FewStepsGiveFiniteRows) {
+  json s = Example();
+  s["objective"] = "max_contact_force";
+  s["analysis"] = {{"angle_steps", 36}};
+  s["dynamics"]["follower_stiffness_N_per_mm"] = 1.0;  // 12.3 Hz: 64 steps a period, 53 a revolution at 900 rpm
+  s["dynamics"]["speed_rpm"] = 900;
+  s["limits"].erase("no_separation_up_to_rpm");
+  const dcm::Study st = ParseStudy(s);
+  const objectives::Problem p = objectives::DiscCamMotionProblem(st.spec, {});
+  std::vector<double> x;
+  for (const auto& v : p.variables) x.push_back(v.initial);
+  std::vector<double> y(static_cast<size_t>(p.evaluator->num_outputs()));
+  p.evaluator->Eval(x, y);
+  for (const auto& b : p.evaluator->blocks())
+    for (int k = b.offset; k < b.offset + b.size; ++k) EXPECT_TRUE(std::isfinite(y[size_t(k)])) << b.name << " " << k;
+  EXPECT_LT(p.evaluator->block("objective_rows").size, 60);  // fewer steps than windows: one per step
+}
+
 // What the kind refuses, with the JSON path (exit 2).
 TEST(DiscCamMotion, BadInputExits2NamingThePath) {
   const auto dir = TempDir("disc-cam-motion-bad");
