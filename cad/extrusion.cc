@@ -1,6 +1,7 @@
 #include "cad/extrusion.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -62,25 +63,46 @@ void CheckChain(const Extrusion& e) {
     if (!std::isfinite(a.bulge) || !a.start.allFinite()) throw std::invalid_argument("the profile is not finite");
   }
   if (!(e.thickness_mm > 0) || !std::isfinite(e.thickness_mm)) throw std::invalid_argument("the thickness must be > 0");
-  if (e.bore_diameter_mm > 0) {
-    const double rb = 0.5 * e.bore_diameter_mm;
+  // The bore and the holes: each inside the profile, clear of it and of each other.
+  std::vector<Hole> circles;
+  if (e.bore_diameter_mm > 0) circles.push_back({e.bore_centre, e.bore_diameter_mm});
+  for (const Hole& h : e.holes) {
+    if (!(h.diameter_mm > 0) || !std::isfinite(h.diameter_mm) || !h.centre.allFinite())
+      throw std::invalid_argument("a hole's diameter must be finite and > 0");
+    circles.push_back(h);
+  }
+  for (size_t k = 0; k < circles.size(); ++k) {
+    const Vec2<double> c = circles[k].centre;
+    const double rb = 0.5 * circles[k].diameter_mm;
+    const char* what = k == 0 && e.bore_diameter_mm > 0 ? "the bore" : "a hole";
     double nearest = INFINITY;
-    for (const ArcSegment& a : e.profile) nearest = std::min(nearest, DistanceToArc(a, e.bore_centre));
+    for (const ArcSegment& a : e.profile) nearest = std::min(nearest, DistanceToArc(a, c));
     // Inside: the winding number about the centre of a chord polygon within a quarter of the
     // centre's distance of the arcs (it cannot pass the centre, so it winds as the arcs do).
     std::vector<Vec2<double>> poly;
     if (nearest > rb * (1 + 1e-9) && std::isfinite(nearest))
-      for (const ArcSegment& a : e.profile) AppendChords(a, 0.25 * nearest, e.bore_centre, poly);
+      for (const ArcSegment& a : e.profile) AppendChords(a, 0.25 * nearest, c, poly);
     double turn = 0.0;  // left 0 (refused below) when the centre is not clear of the profile
     for (size_t i = 0; i < poly.size(); ++i) {
-      const Vec2<double> u = poly[i] - e.bore_centre, v = poly[(i + 1) % poly.size()] - e.bore_centre;
+      const Vec2<double> u = poly[i] - c, v = poly[(i + 1) % poly.size()] - c;
       turn += std::atan2(Cross(u, v), u.dot(v));
     }
     if (!(nearest > rb * (1 + 1e-9)) || std::abs(turn - 2 * kPi) > 1e-6) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "the bore (diameter %.6g mm) does not lie inside the profile (nearest profile point %.6g mm from its centre)",
-                    e.bore_diameter_mm, nearest);
+      char buf[240];
+      std::snprintf(buf, sizeof buf,
+                    "%s (diameter %.6g mm at %.6g, %.6g) does not lie inside the profile (nearest profile point %.6g mm "
+                    "from its centre)",
+                    what, circles[k].diameter_mm, c.x(), c.y(), nearest);
       throw std::invalid_argument(buf);
+    }
+    for (size_t m = 0; m < k; ++m) {
+      const double gap = (circles[m].centre - c).norm() - 0.5 * (circles[m].diameter_mm + circles[k].diameter_mm);
+      if (!(gap > 1e-9 * std::max(1.0, size))) {
+        char buf[240];
+        std::snprintf(buf, sizeof buf, "%s (diameter %.6g mm at %.6g, %.6g) overlaps another hole or the bore (gap %.6g mm)",
+                      what, circles[k].diameter_mm, c.x(), c.y(), gap);
+        throw std::invalid_argument(buf);
+      }
     }
   }
 }
@@ -400,88 +422,223 @@ double MeshDeflection(const Extrusion& e) {
   return std::max(e.mesh_deflection_mm, kMeshRelativeDeflection * Diagonal(e.profile));
 }
 
+namespace {
+
+// Triangles between two closed loops of points seen from `c`, each counter-clockwise and turning
+// monotonically about c (star-shaped about it), the inner loop inside the outer or a single point
+// (a fan): a merge of the two in polar angle. False when a loop does not turn monotonically or a
+// triangle is not counter-clockwise — the triangles then would not tile the ring (with every
+// triangle counter-clockwise they cover it exactly once: their indicator functions sum to the
+// boundary's winding number).
+bool MergeRing(const std::vector<Vec2<double>>& pts, const std::vector<int>& outer, const std::vector<int>& inner,
+               const Vec2<double>& c, std::vector<std::array<int, 3>>& cap) {
+  const auto ccw = [&](int a, int b, int d) { return Cross(pts[b] - pts[a], pts[d] - pts[a]) > 0; };
+  // Unwrapped polar angles of a loop from its point of least angle in [0, 2π).
+  auto unwrap = [&](const std::vector<int>& loop, std::vector<double>& alpha, int& first) {
+    const int n = static_cast<int>(loop.size());
+    first = 0;
+    double least = INFINITY;
+    for (int i = 0; i < n; ++i) {
+      const Vec2<double> d = pts[loop[i]] - c;
+      double t = std::atan2(d.y(), d.x());
+      if (t < 0) t += 2 * kPi;
+      if (t < least) least = t, first = i;
+    }
+    alpha.assign(n + 1, least);
+    for (int k = 1; k <= n; ++k) {
+      const Vec2<double> u = pts[loop[(first + k - 1) % n]] - c, v = pts[loop[(first + k) % n]] - c;
+      const double turn = std::atan2(Cross(u, v), u.dot(v));
+      if (!(turn > 0)) return false;
+      alpha[k] = alpha[k - 1] + turn;
+    }
+    return std::abs(alpha[n] - alpha[0] - 2 * kPi) <= 1e-9;
+  };
+  std::vector<double> ao, ai;
+  int fo = 0, fi = 0;
+  if (!unwrap(outer, ao, fo)) return false;
+  const int n = static_cast<int>(outer.size());
+  if (inner.size() == 1) {
+    for (int i = 0; i < n; ++i) {
+      const int a = outer[i], b = outer[(i + 1) % n];
+      if (!ccw(inner[0], a, b)) return false;
+      cap.push_back({inner[0], a, b});
+    }
+    return true;
+  }
+  if (!unwrap(inner, ai, fi)) return false;
+  const int m = static_cast<int>(inner.size());
+  // Both from the outer loop's first angle: the inner loop's angles shifted by −2π when they start
+  // above it, and its start moved to its last point at or below it.
+  while (ai[0] > ao[0]) {
+    for (double& x : ai) x -= 2 * kPi;
+  }
+  int shift = 0;
+  while (shift < m && ai[shift + 1] <= ao[0]) ++shift;
+  int i = 0, j = 0;
+  auto inner_at = [&](int k) { return inner[(fi + shift + k) % m]; };
+  std::vector<double> aj(m + 1);
+  for (int k = 0; k <= m; ++k) {
+    const int idx = shift + k;
+    aj[k] = idx <= m ? ai[idx] : ai[idx - m] + 2 * kPi;
+  }
+  while (i < n || j < m) {
+    const int oi = outer[(fo + i) % n], ij = inner_at(j);
+    if (j == m || (i < n && ao[i + 1] <= aj[j + 1])) {
+      const int on = outer[(fo + i + 1) % n];
+      if (!ccw(ij, oi, on)) return false;
+      cap.push_back({ij, oi, on});
+      ++i;
+    } else {
+      const int in = inner_at(j + 1);
+      if (!ccw(ij, oi, in)) return false;
+      cap.push_back({ij, oi, in});
+      ++j;
+    }
+  }
+  return true;
+}
+
+// Points of a circle counter-clockwise from angle `from`, `count` of them.
+void AppendCircle(const Vec2<double>& c, double r, double from, int count, std::vector<Vec2<double>>& pts,
+                  std::vector<int>& loop) {
+  for (int k = 0; k < count; ++k) {
+    const double t = from + 2 * kPi * k / count;
+    loop.push_back(static_cast<int>(pts.size()));
+    pts.push_back(c + r * Vec2<double>(std::cos(t), std::sin(t)));
+  }
+}
+
+// Chords per full turn of a circle of radius r within the deflection and kMaxChordTurn.
+int CircleChords(double r, double deflection) {
+  const double step = std::min(kMaxChordTurn, 2.0 * std::acos(1.0 - std::min(1.0, deflection / r)));
+  return std::max(8, static_cast<int>(std::ceil(2 * kPi / step - 1e-9)));
+}
+
+}  // namespace
+
 std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection, bool chain_checked) {
   if (!chain_checked) CheckChain(e);
   if (!(deflection > 0) || !std::isfinite(deflection)) throw std::invalid_argument("the mesh deflection must be > 0");
-  std::vector<Vec2<double>> outer;
-  for (const ArcSegment& a : e.profile) AppendChords(a, deflection, e.bore_centre, outer);
   const Vec2<double> c = e.bore_centre;
-  const int n = static_cast<int>(outer.size());
-  const bool bore = e.bore_diameter_mm > 0;
-  std::vector<Vec2<double>> inner;
-  if (bore) {
-    const double rb = 0.5 * e.bore_diameter_mm;
-    const double step = std::min(kMaxChordTurn, 2.0 * std::acos(1.0 - std::min(1.0, deflection / rb)));
-    const int m = std::max(8, static_cast<int>(std::ceil(2 * kPi / step - 1e-9)));
-    for (int j = 0; j < m; ++j) {
-      const double t = 2 * kPi * j / m;
-      inner.push_back(c + rb * Vec2<double>(std::cos(t), std::sin(t)));
-    }
+  std::vector<Vec2<double>> pts;
+  std::vector<int> outer;
+  {
+    std::vector<Vec2<double>> chords;
+    for (const ArcSegment& a : e.profile) AppendChords(a, deflection, c, chords);
+    for (const Vec2<double>& p : chords) outer.push_back(static_cast<int>(pts.size())), pts.push_back(p);
   }
-  const int m = static_cast<int>(inner.size());
-  // End-face triangles as indices into [outer..., inner... or the centre].
+  const bool bore = e.bore_diameter_mm > 0;
+  const double rb = 0.5 * e.bore_diameter_mm;
   std::vector<std::array<int, 3>> cap;
-  const auto pt = [&](int k) -> Vec2<double> { return k < n ? outer[k] : bore ? inner[k - n] : c; };
-  const auto ccw = [&](int a, int b, int d) { return Cross(pt(b) - pt(a), pt(d) - pt(a)) > 0; };
-  if (!bore) {
-    for (int i = 0; i < n; ++i) {
-      cap.push_back({n, i, (i + 1) % n});
-      if (!ccw(n, i, (i + 1) % n)) return std::nullopt;
+  std::vector<std::vector<int>> inner_walls;  // loops whose walls face their axis (bore, holes)
+  if (e.holes.empty()) {
+    std::vector<int> inner;
+    if (bore) {
+      AppendCircle(c, rb, 0.0, CircleChords(rb, deflection), pts, inner);
+      inner_walls.push_back(inner);
+    } else {
+      inner.push_back(static_cast<int>(pts.size()));
+      pts.push_back(c);
     }
+    if (!MergeRing(pts, outer, inner, c, cap)) return std::nullopt;
   } else {
-    // The profile's points in polar angle about the centre, from the one nearest above angle 0.
-    std::vector<double> theta(n);
-    int i0 = 0;
-    for (int i = 0; i < n; ++i) {
-      const Vec2<double> d = outer[i] - c;
-      theta[i] = std::atan2(d.y(), d.x());
-      if (theta[i] < 0) theta[i] += 2 * kPi;
-      if (theta[i] < theta[i0]) i0 = i;
+    // Holes of one diameter equally spaced on a circle about the centre (a disc's output-pin
+    // holes, a bolt circle): a ring between the profile and a circle M outside the holes, merged
+    // about the centre, and one sector per hole (from the bore, or the centre, to M, between the
+    // holes' mid-angles) merged about the hole's centre. Anything else: the kernel's mesher.
+    const int z = static_cast<int>(e.holes.size());
+    const double rh = 0.5 * e.holes[0].diameter_mm;
+    const Vec2<double> d0 = e.holes[0].centre - c;
+    const double R = d0.norm(), a0 = std::atan2(d0.y(), d0.x());
+    if (z < 3 || !(R > 0)) return std::nullopt;
+    for (int j = 0; j < z; ++j) {
+      const Vec2<double> want = c + R * Vec2<double>(std::cos(a0 + 2 * kPi * j / z), std::sin(a0 + 2 * kPi * j / z));
+      if ((e.holes[j].centre - want).norm() > 1e-9 * R || std::abs(e.holes[j].diameter_mm - 2 * rh) > 1e-12 * rh)
+        return std::nullopt;
     }
-    std::vector<double> alpha(n + 1);
-    alpha[0] = theta[i0];
-    for (int k = 1; k <= n; ++k) {
-      const Vec2<double> u = outer[(i0 + k - 1) % n] - c, v = outer[(i0 + k) % n] - c;
-      const double turn = std::atan2(Cross(u, v), u.dot(v));
-      if (!(turn > 0)) return std::nullopt;  // not star-shaped about the centre
-      alpha[k] = alpha[k - 1] + turn;
+    double nearest = INFINITY;
+    for (int k : outer) nearest = std::min(nearest, (pts[k] - c).norm());
+    const double half = kPi / z;
+    // Each sector must see its bore arc and keep its hole clear of its sides.
+    if (!(R + rh < nearest) || !(rh < R * std::sin(half)) || !(rb < R * std::cos(half)) || !(rb < R - rh))
+      return std::nullopt;
+    const double rm = 0.5 * (R + rh + nearest);
+    const double from = a0 - half;
+    // Every chord of a sector's boundary spans at most kMaxChordTurn seen from its hole's centre
+    // (so that the merge's fans reach only the hole's edges they see): on M a turn of at most
+    // kMaxChordTurn (rm − R)/rm about the centre, on the bore kMaxChordTurn (R − rb)/rb, and the
+    // sides cut into pieces of at most kMaxChordTurn R sin(π/z) / 2.
+    auto per_sector = [&](double r, double dist) {
+      const int by_deflection = (CircleChords(r, deflection) + z - 1) / z;
+      const int by_view = static_cast<int>(std::ceil(2 * half * r / (kMaxChordTurn * dist) - 1e-9));
+      return std::max(by_deflection, by_view);
+    };
+    const int qm = per_sector(rm, rm - R);
+    std::vector<int> ring_m;
+    AppendCircle(c, rm, from, qm * z, pts, ring_m);
+    if (!MergeRing(pts, outer, ring_m, c, cap)) return std::nullopt;
+    std::vector<int> ring_b;
+    int qb = 0;
+    if (bore) {
+      qb = per_sector(rb, R - rb);
+      AppendCircle(c, rb, from, qb * z, pts, ring_b);
+      inner_walls.push_back(ring_b);
+    } else {
+      ring_b.push_back(static_cast<int>(pts.size()));
+      pts.push_back(c);
     }
-    if (std::abs(alpha[n] - alpha[0] - 2 * kPi) > 1e-9) return std::nullopt;
-    int i = 0, j = 0;
-    while (i < n || j < m) {
-      const int oi = (i0 + i) % n, ij = n + j % m;
-      if (j == m || (i < n && alpha[i + 1] <= 2 * kPi * (j + 1) / m)) {
-        const int on = (i0 + i + 1) % n;
-        cap.push_back({ij, oi, on});
-        if (!ccw(ij, oi, on)) return std::nullopt;
-        ++i;
-      } else {
-        const int in = n + (j + 1) % m;
-        cap.push_back({ij, oi, in});
-        if (!ccw(ij, oi, in)) return std::nullopt;
-        ++j;
+    // The sides' inner points, from the bore (or the centre) out to M: side j at angle from + 2πj/z.
+    const double r_in = bore ? rb : 0.0;
+    const int pieces = std::max(1, static_cast<int>(std::ceil((rm - r_in) / (0.5 * kMaxChordTurn * R * std::sin(half)))));
+    std::vector<std::vector<int>> sides(z);
+    for (int j = 0; j < z; ++j) {
+      const Vec2<double> u(std::cos(from + 2 * kPi * j / z), std::sin(from + 2 * kPi * j / z));
+      for (int k = 1; k < pieces; ++k) {
+        sides[j].push_back(static_cast<int>(pts.size()));
+        pts.push_back(c + (r_in + (rm - r_in) * k / pieces) * u);
       }
+    }
+    for (int j = 0; j < z; ++j) {
+      // The sector counter-clockwise: out along its first side, along M, in along its second
+      // side, back along the bore clockwise (or through the centre).
+      std::vector<int> loop;
+      loop.push_back(bore ? ring_b[(j * qb) % (qb * z)] : ring_b[0]);
+      loop.insert(loop.end(), sides[j].begin(), sides[j].end());
+      for (int k = 0; k <= qm; ++k) loop.push_back(ring_m[(j * qm + k) % (qm * z)]);
+      loop.insert(loop.end(), sides[(j + 1) % z].rbegin(), sides[(j + 1) % z].rend());
+      if (bore)
+        for (int k = qb; k > 0; --k) loop.push_back(ring_b[(j * qb + k) % (qb * z)]);
+      std::vector<int> hole;
+      AppendCircle(e.holes[j].centre, rh, 0.0, CircleChords(rh, deflection), pts, hole);
+      inner_walls.push_back(hole);
+      if (!MergeRing(pts, loop, hole, e.holes[j].centre, cap)) return std::nullopt;
     }
   }
   TriangleMesh mesh;
-  const int ring = n + (bore ? m : 1);
-  for (double z : {0.0, e.thickness_mm})
-    for (int k = 0; k < ring; ++k) mesh.vertices.emplace_back(pt(k).x(), pt(k).y(), z);
+  const int ring = static_cast<int>(pts.size());
+  for (double zz : {0.0, e.thickness_mm})
+    for (const Vec2<double>& p : pts) mesh.vertices.emplace_back(p.x(), p.y(), zz);
   for (const auto& t : cap) {
     mesh.triangles.push_back({t[0], t[2], t[1]});                       // z = 0, facing −z
     mesh.triangles.push_back({t[0] + ring, t[1] + ring, t[2] + ring});  // z = thickness, facing +z
   }
-  // Walls: the profile counter-clockwise faces out; the bore, counter-clockwise, faces its axis.
+  // Walls: the profile counter-clockwise faces out; the bore and holes, counter-clockwise, face
+  // their axes.
+  const int n = static_cast<int>(outer.size());
   for (int i = 0; i < n; ++i) {
-    const int a = i, b = (i + 1) % n;
+    const int a = outer[i], b = outer[(i + 1) % n];
     mesh.triangles.push_back({a, b, b + ring});
     mesh.triangles.push_back({a, b + ring, a + ring});
   }
-  for (int j = 0; j < m; ++j) {
-    const int a = n + j, b = n + (j + 1) % m;
-    mesh.triangles.push_back({b, a, a + ring});
-    mesh.triangles.push_back({b, a + ring, b + ring});
+  for (const std::vector<int>& loop : inner_walls) {
+    const int m = static_cast<int>(loop.size());
+    for (int j = 0; j < m; ++j) {
+      const int a = loop[j], b = loop[(j + 1) % m];
+      mesh.triangles.push_back({b, a, a + ring});
+      mesh.triangles.push_back({b, a + ring, b + ring});
+    }
   }
+  // Points only the cap uses twice (the centre of a fan) stay; unused points cannot occur.
   return mesh;
 }
 
@@ -529,35 +686,63 @@ std::string StepString(const std::string& text) {
   return out;
 }
 
-std::string StepOfExtrusion(const Extrusion& e) {
-  CheckChain(e);
-  const std::string name = StepString(e.name);
-  const double t = e.thickness_mm;
-  // About 1200 characters per arc of a short chain (its wall, edges, vertices and their geometry), 500
-  // in the B-spline walls of a long one; the text grows past this if need be.
-  StepData d("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('camopt extruded cam'),'2;1');\n"
-             "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n"
-             "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n",
-             1300 * e.profile.size() + 8192);
-  // Product structure and units (AP214, automotive_design; lengths in millimetres).
-  const int app = d.Add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')");
-  d.Add("APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000," + StepData::Ref(app) + ")");
-  const int pctx = d.Add("PRODUCT_CONTEXT(''," + StepData::Ref(app) + ",'mechanical')");
-  const int product = d.Add("PRODUCT('" + name + "','" + name + "','',(" + StepData::Ref(pctx) + "))");
-  const int formation = d.Add("PRODUCT_DEFINITION_FORMATION('',''," + StepData::Ref(product) + ")");
-  const int dctx = d.Add("PRODUCT_DEFINITION_CONTEXT('part definition'," + StepData::Ref(app) + ",'design')");
-  const int definition = d.Add("PRODUCT_DEFINITION('design',''," + StepData::Ref(formation) + "," + StepData::Ref(dctx) + ")");
-  const int shape = d.Add("PRODUCT_DEFINITION_SHAPE(''," + std::string("''") + "," + StepData::Ref(definition) + ")");
-  d.Add("PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,(" + StepData::Ref(product) + "))");
-  const int mm = d.Add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )");
-  const int rad = d.Add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )");
-  const int sr = d.Add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )");
-  const int unc = d.Add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07)," + StepData::Ref(mm) +
-                        ",'distance_accuracy_value','confusion accuracy')");
-  const int ctx = d.Add("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((" + StepData::Ref(unc) +
-                        ")) GLOBAL_UNIT_ASSIGNED_CONTEXT((" + StepData::Ref(mm) + "," + StepData::Ref(rad) + "," +
-                        StepData::Ref(sr) + ")) REPRESENTATION_CONTEXT('','3D') )");
+namespace {
 
+// The entities a file's parts share: the application context and protocol, the product and
+// product-definition contexts, and the geometric context with its units (millimetres); each made
+// when the first part needs it, so that a file of one part lists them in the order it always had.
+struct StepContext {
+  int app = 0, pctx = 0, dctx = 0, ctx = 0;
+};
+
+StepData NewStepFile(const std::string& name, const char* description, size_t expected_size) {
+  return StepData("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('" + std::string(description) + "'),'2;1');\n"
+                  "FILE_NAME('" + name + "','2000-01-01T00:00:00',(''),(''),'camopt','camopt','');\n"
+                  "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n",
+                  expected_size);
+}
+
+StepContext AddApplication(StepData& d) {
+  StepContext c;
+  c.app = d.Add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')");
+  d.Add("APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000," + StepData::Ref(c.app) + ")");
+  c.pctx = d.Add("PRODUCT_CONTEXT(''," + StepData::Ref(c.app) + ",'mechanical')");
+  return c;
+}
+
+// A product and its definition (AP214, automotive_design); `category` 'part' or 'assembly'.
+struct ProductIds {
+  int definition = 0, shape = 0;
+};
+ProductIds AddProduct(StepData& d, StepContext& c, const std::string& name, const char* category) {
+  ProductIds p;
+  const int product = d.Add("PRODUCT('" + name + "','" + name + "','',(" + StepData::Ref(c.pctx) + "))");
+  const int formation = d.Add("PRODUCT_DEFINITION_FORMATION('',''," + StepData::Ref(product) + ")");
+  if (!c.dctx) c.dctx = d.Add("PRODUCT_DEFINITION_CONTEXT('part definition'," + StepData::Ref(c.app) + ",'design')");
+  p.definition = d.Add("PRODUCT_DEFINITION('design',''," + StepData::Ref(formation) + "," + StepData::Ref(c.dctx) + ")");
+  p.shape = d.Add("PRODUCT_DEFINITION_SHAPE(''," + std::string("''") + "," + StepData::Ref(p.definition) + ")");
+  d.Add("PRODUCT_RELATED_PRODUCT_CATEGORY('" + std::string(category) + "',$,(" + StepData::Ref(product) + "))");
+  if (!c.ctx) {
+    const int mm = d.Add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )");
+    const int rad = d.Add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )");
+    const int sr = d.Add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )");
+    const int unc = d.Add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07)," + StepData::Ref(mm) +
+                          ",'distance_accuracy_value','confusion accuracy')");
+    c.ctx = d.Add("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((" + StepData::Ref(unc) +
+                  ")) GLOBAL_UNIT_ASSIGNED_CONTEXT((" + StepData::Ref(mm) + "," + StepData::Ref(rad) + "," +
+                  StepData::Ref(sr) + ")) REPRESENTATION_CONTEXT('','3D') )");
+  }
+  return p;
+}
+
+// One extruded part: its product, B-rep and shape representation (whose first item is the part's
+// frame, `origin`).
+struct PartIds {
+  int definition = 0, rep = 0, origin = 0;
+};
+PartIds AddExtrusion(StepData& d, StepContext& ctx_ids, const Extrusion& e, const std::string& name) {
+  const ProductIds product = AddProduct(d, ctx_ids, name, "part");
+  const double t = e.thickness_mm;
   const int dz = d.Direction(0, 0, 1), dx = d.Direction(1, 0, 0);
   const int up = d.Wrap("VECTOR('',", dz, ",1.)");
   const size_t n = e.profile.size();
@@ -630,11 +815,15 @@ std::string StepOfExtrusion(const Extrusion& e) {
     const int bound = d.Bound({{bottom[w], true}, {vertical[k], true}, {top[w], false}, {vertical[w], false}}, true);
     walls.push_back(d.Face(bound, surface, outward));
   }
-  // The bore: two half-cylinders between the vertices at angles 0 and π about its centre.
-  std::vector<std::pair<int, bool>> bore_bottom, bore_top;
-  if (e.bore_diameter_mm > 0) {
-    const double rb = 0.5 * e.bore_diameter_mm;
-    const Vec2<double> c = e.bore_centre;
+  // The bore and the holes: each two half-cylinders between the vertices at angles 0 and π about
+  // its centre.
+  std::vector<std::vector<std::pair<int, bool>>> inner_bottom, inner_top;
+  std::vector<Hole> circles;
+  if (e.bore_diameter_mm > 0) circles.push_back({e.bore_centre, e.bore_diameter_mm});
+  circles.insert(circles.end(), e.holes.begin(), e.holes.end());
+  for (const Hole& hole : circles) {
+    const double rb = 0.5 * hole.diameter_mm;
+    const Vec2<double> c = hole.centre;
     const int c0 = d.Axis(d.Point(c.x(), c.y(), 0.0), dz, dx), ct = d.Axis(d.Point(c.x(), c.y(), t), dz, dx);
     const int circle0 = d.Wrap("CIRCLE('',", c0, Real(rb), ")");
     const int circlet = d.Wrap("CIRCLE('',", ct, Real(rb), ")");
@@ -660,8 +849,8 @@ std::string StepOfExtrusion(const Extrusion& e) {
       walls.push_back(d.Face(bound, cylinder, false));
     }
     // The end faces' inner loops: clockwise seen from their outside (below for z = 0).
-    bore_bottom = {{arc0[0], true}, {arc0[1], true}};
-    bore_top = {{arct[1], false}, {arct[0], false}};
+    inner_bottom.push_back({{arc0[0], true}, {arc0[1], true}});
+    inner_top.push_back({{arct[1], false}, {arct[0], false}});
   }
   // The end faces: z = 0 faces −z (its profile loop reversed), z = t faces +z.
   std::vector<std::pair<int, bool>> loop0, loopt;
@@ -670,9 +859,9 @@ std::string StepOfExtrusion(const Extrusion& e) {
   const int plane0 = d.Add("PLANE(''," + StepData::Ref(d.Axis(d.Point(0, 0, 0), dz, dx)) + ")");
   const int planet = d.Add("PLANE(''," + StepData::Ref(d.Axis(d.Point(0, 0, t), dz, dx)) + ")");
   std::vector<int> b0 = {d.Bound(loop0, true)}, bt = {d.Bound(loopt, true)};
-  if (!bore_bottom.empty()) {
-    b0.push_back(d.Bound(bore_bottom, false));
-    bt.push_back(d.Bound(bore_top, false));
+  for (size_t k = 0; k < inner_bottom.size(); ++k) {
+    b0.push_back(d.Bound(inner_bottom[k], false));
+    bt.push_back(d.Bound(inner_top[k], false));
   }
   faces.push_back(d.Face(b0, plane0, false));
   faces.push_back(d.Face(bt, planet, true));
@@ -684,11 +873,72 @@ std::string StepOfExtrusion(const Extrusion& e) {
   }
   const int shell = d.Add("CLOSED_SHELL('',(" + list + "))");
   const int brep = d.Add("MANIFOLD_SOLID_BREP(''," + StepData::Ref(shell) + ")");
-  const int origin = d.Axis(d.Point(0, 0, 0), dz, dx);
-  const int rep = d.Add("ADVANCED_BREP_SHAPE_REPRESENTATION('',(" + StepData::Ref(origin) + "," + StepData::Ref(brep) +
-                        ")," + StepData::Ref(ctx) + ")");
-  d.Add("SHAPE_DEFINITION_REPRESENTATION(" + StepData::Ref(shape) + "," + StepData::Ref(rep) + ")");
+  PartIds ids;
+  ids.definition = product.definition;
+  ids.origin = d.Axis(d.Point(0, 0, 0), dz, dx);
+  ids.rep = d.Add("ADVANCED_BREP_SHAPE_REPRESENTATION('',(" + StepData::Ref(ids.origin) + "," + StepData::Ref(brep) +
+                  ")," + StepData::Ref(ctx_ids.ctx) + ")");
+  d.Add("SHAPE_DEFINITION_REPRESENTATION(" + StepData::Ref(product.shape) + "," + StepData::Ref(ids.rep) + ")");
+  return ids;
+}
 
+size_t ExpectedStepSize(const Extrusion& e) { return 1300 * e.profile.size() + 2500 * e.holes.size() + 8192; }
+
+}  // namespace
+
+std::string StepOfExtrusion(const Extrusion& e) {
+  CheckChain(e);
+  const std::string name = StepString(e.name);
+  // About 1200 characters per arc of a short chain (its wall, edges, vertices and their geometry), 500
+  // in the B-spline walls of a long one; the text grows past this if need be.
+  StepData d = NewStepFile(name, "camopt extruded cam", ExpectedStepSize(e));
+  StepContext c = AddApplication(d);
+  AddExtrusion(d, c, e, name);
+  return d.Finish("ENDSEC;\nEND-ISO-10303-21;\n");
+}
+
+std::string StepAssembly(const std::string& raw_name, const std::vector<Extrusion>& parts,
+                         const std::vector<Placement>& placements) {
+  size_t expected = 8192;
+  for (const Extrusion& e : parts) {
+    CheckChain(e);
+    expected += ExpectedStepSize(e);
+  }
+  const std::string name = StepString(raw_name);
+  StepData d = NewStepFile(name, "camopt assembly", expected + 1200 * placements.size());
+  StepContext c = AddApplication(d);
+  std::vector<PartIds> ids;
+  for (const Extrusion& e : parts) ids.push_back(AddExtrusion(d, c, e, StepString(e.name)));
+  const ProductIds top = AddProduct(d, c, name, "assembly");
+  // The assembly's own representation: its frame and each occurrence's placement in it.
+  const int dz = d.Direction(0, 0, 1), dx = d.Direction(1, 0, 0);
+  const int top_origin = d.Axis(d.Point(0, 0, 0), dz, dx);
+  std::vector<int> axes;
+  std::string items = StepData::Ref(top_origin);
+  for (const Placement& p : placements) {
+    if (p.part >= parts.size()) throw std::invalid_argument("an assembly placement names no part");
+    if (!p.origin.allFinite() || !std::isfinite(p.angle_rad)) throw std::invalid_argument("a placement is not finite");
+    const int ref = d.Direction(std::cos(p.angle_rad), std::sin(p.angle_rad), 0.0);
+    axes.push_back(d.Axis(d.Point(p.origin.x(), p.origin.y(), p.origin.z()), dz, ref));
+    items += "," + StepData::Ref(axes.back());
+  }
+  const int top_rep = d.Add("SHAPE_REPRESENTATION('',(" + items + ")," + StepData::Ref(c.ctx) + ")");
+  d.Add("SHAPE_DEFINITION_REPRESENTATION(" + StepData::Ref(top.shape) + "," + StepData::Ref(top_rep) + ")");
+  // Each occurrence (ISO 10303-214 assembly structure): the usage of the part's definition in the
+  // assembly's, and the transformation from the part's frame to its placement.
+  for (size_t k = 0; k < placements.size(); ++k) {
+    const Placement& p = placements[k];
+    const std::string occurrence = StepString(p.name);
+    const int nauo = d.Add("NEXT_ASSEMBLY_USAGE_OCCURRENCE('" + std::to_string(k + 1) + "','" + occurrence + "','',"
+                           + StepData::Ref(top.definition) + "," + StepData::Ref(ids[p.part].definition) + ",$)");
+    const int shape = d.Add("PRODUCT_DEFINITION_SHAPE('" + occurrence + "',''," + StepData::Ref(nauo) + ")");
+    const int transform = d.Add("ITEM_DEFINED_TRANSFORMATION('',''," + StepData::Ref(ids[p.part].origin) + "," +
+                                StepData::Ref(axes[k]) + ")");
+    const int relation = d.Add("( REPRESENTATION_RELATIONSHIP('',''," + StepData::Ref(ids[p.part].rep) + "," +
+                               StepData::Ref(top_rep) + ") REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(" +
+                               StepData::Ref(transform) + ") SHAPE_REPRESENTATION_RELATIONSHIP() )");
+    d.Add("CONTEXT_DEPENDENT_SHAPE_REPRESENTATION(" + StepData::Ref(relation) + "," + StepData::Ref(shape) + ")");
+  }
   return d.Finish("ENDSEC;\nEND-ISO-10303-21;\n");
 }
 

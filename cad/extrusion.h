@@ -19,12 +19,20 @@
 
 namespace camopt::cad {
 
+/// A circular through-hole of an extruded part [mm].
+struct Hole {
+  Vec2<double> centre = Vec2<double>::Zero();
+  double diameter_mm = 0.0;
+};
+
 /// A planar cam extruded along +z: outer profile (a closed, counter-clockwise chain of arcs in the
-/// xy plane) minus an optional circular bore.
+/// xy plane) minus an optional circular bore and further circular holes (a disc's output-pin holes,
+/// a bolt circle).
 struct Extrusion {
   std::vector<ArcSegment> profile;     ///< closed chain [mm]
   Vec2<double> bore_centre = Vec2<double>::Zero();  ///< also the cam's centre without a bore
   double bore_diameter_mm = 0.0;       ///< 0: no bore
+  std::vector<Hole> holes;             ///< each inside the profile, clear of the bore and each other
   double thickness_mm = 10.0;
   std::string name = "cam";            ///< product name in the STEP file
   double mesh_deflection_mm = 0.002;   ///< STL chord deviation from the solid's faces
@@ -48,9 +56,27 @@ double MeshDeflection(const Extrusion& e);
 std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection, bool chain_checked = false);
 
 /// The STEP AP214 file of the extrusion (a MANIFOLD_SOLID_BREP in millimetres), with a fixed time
-/// stamp: the same extrusion gives the same bytes. Throws std::invalid_argument when the bore does
-/// not lie inside the profile with room to spare or the chain is not closed.
+/// stamp: the same extrusion gives the same bytes. Throws std::invalid_argument when the bore or a
+/// hole does not lie inside the profile with room to spare, two of them overlap, or the chain is
+/// not closed.
 std::string StepOfExtrusion(const Extrusion& e);
+
+/// One placed occurrence of a part in an assembly: the part's frame moved to `origin` [mm] and
+/// turned by `angle_rad` about +z.
+struct Placement {
+  std::string name;            ///< occurrence name, e.g. "disc_2" or "ring_pin 7"
+  size_t part = 0;             ///< index into the assembly's parts
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  double angle_rad = 0.0;
+};
+
+/// A STEP AP214 assembly (ISO 10303-214 product structure): a product per part (its B-rep as
+/// StepOfExtrusion writes it, in its own frame), a top product `name`, and for each placement a
+/// NEXT_ASSEMBLY_USAGE_OCCURRENCE with a CONTEXT_DEPENDENT_SHAPE_REPRESENTATION whose
+/// ITEM_DEFINED_TRANSFORMATION maps the part's frame to its place — the structure CAD programs open
+/// as an assembly tree. Fixed time stamp: the same input gives the same bytes.
+std::string StepAssembly(const std::string& name, const std::vector<Extrusion>& parts,
+                         const std::vector<Placement>& placements);
 
 /// A text as the contents of a STEP string (ISO 10303-21 §6.4.3, between its apostrophes).
 std::string StepString(const std::string& text);

@@ -32,7 +32,14 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Poly_Triangulation.hxx>
+#include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <Standard_Failure.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -173,6 +180,15 @@ TriangleMesh OcctMeshUnguarded(const Extrusion& e) {
     if (!with_hole.IsDone()) throw std::runtime_error("OCCT: the bore does not fit the cam face");
     face = with_hole.Face();
   }
+  for (const Hole& h : e.holes) {
+    gp_Circ circle(gp_Ax2(P(h.centre), gp::DZ()), 0.5 * h.diameter_mm);
+    BRepBuilderAPI_MakeWire hole(BRepBuilderAPI_MakeEdge(circle).Edge());
+    TopoDS_Wire w = hole.Wire();
+    w.Reverse();
+    BRepBuilderAPI_MakeFace with_hole(face, w);
+    if (!with_hole.IsDone()) throw std::runtime_error("OCCT: a hole does not fit the cam face");
+    face = with_hole.Face();
+  }
   BRepPrimAPI_MakePrism prism(face, gp_Vec(0, 0, e.thickness_mm));
   if (!prism.IsDone()) throw std::runtime_error("OCCT: extrusion failed");
   const TopoDS_Shape solid = prism.Shape();
@@ -228,6 +244,62 @@ StepReadBack ReadStepUnguarded(const std::string& content) {
   return r;
 }
 
+std::string NameOf(const TDF_Label& label) {
+  Handle(TDataStd_Name) attr;
+  if (!label.FindAttribute(TDataStd_Name::GetID(), attr)) return "";
+  const TCollection_ExtendedString& ext = attr->Get();
+  std::string out;
+  for (int i = 1; i <= ext.Length(); ++i) {
+    const Standard_ExtCharacter ch = ext.Value(i);
+    out += ch < 0x80 ? char(ch) : '?';
+  }
+  return out;
+}
+
+AssemblyReadBack ReadStepAssemblyUnguarded(const std::string& content) {
+  SilenceOcct();
+  AssemblyReadBack r;
+  Handle(TDocStd_Document) doc;
+  XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(true);
+  std::istringstream in(content);
+  if (reader.ChangeReader().ReadStream("camopt.step", in) != IFSelect_RetDone) return r;
+  if (!reader.Transfer(doc)) return r;
+  r.read = true;
+  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_LabelSequence free;
+  tool->GetFreeShapes(free);
+  if (free.Length() != 1) return r;
+  const TDF_Label top = free.Value(1);
+  r.name = NameOf(top);
+  r.assembly = XCAFDoc_ShapeTool::IsAssembly(top);
+  TDF_LabelSequence components;
+  XCAFDoc_ShapeTool::GetComponents(top, components, false);
+  for (int i = 1; i <= components.Length(); ++i) {
+    const TDF_Label comp = components.Value(i);
+    AssemblyComponent c;
+    c.name = NameOf(comp);
+    TDF_Label part;
+    if (XCAFDoc_ShapeTool::GetReferredShape(comp, part)) c.part = NameOf(part);
+    const gp_Trsf trsf = XCAFDoc_ShapeTool::GetLocation(comp).Transformation();
+    const gp_XYZ o = trsf.TranslationPart();
+    c.origin = Eigen::Vector3d(o.X(), o.Y(), o.Z());
+    const gp_Dir x = gp::DX().Transformed(trsf), z = gp::DZ().Transformed(trsf);
+    c.angle_rad = std::atan2(x.Y(), x.X());
+    c.axis_tilt = z.Angle(gp::DZ());
+    const TopoDS_Shape placed = XCAFDoc_ShapeTool::GetShape(comp);
+    GProp_GProps vol;
+    BRepGProp::VolumeProperties(placed, vol, 1e-9);
+    c.volume_mm3 = vol.Mass();
+    const gp_Pnt g = vol.CentreOfMass();
+    c.centroid = Eigen::Vector3d(g.X(), g.Y(), g.Z());
+    r.components.push_back(c);
+  }
+  doc->Close();
+  return r;
+}
+
 // OCCT reports failures as Standard_Failure, which is not a std::exception: turned into one here,
 // so that camopt reports them (exit 1, a defect: the inputs were checked) instead of terminating.
 // OCCT's STEP translator keeps its settings and controller in process-wide statics
@@ -256,7 +328,7 @@ SolidOutput ExtrudeCam(const Extrusion& e) {
   // (cad/extrusion.h): no kernel, no process-wide lock.
   try {
     if (e.step) out.step = StepOfExtrusion(e);
-    out.faces = static_cast<int>(e.profile.size()) + 2 + (e.bore_diameter_mm > 0 ? 2 : 0);
+    out.faces = static_cast<int>(e.profile.size()) + 2 + 2 * (int(e.bore_diameter_mm > 0) + int(e.holes.size()));
     if (std::optional<TriangleMesh> mesh = MeshExtrusion(e, MeshDeflection(e), e.step)) {
       out.mesh = std::move(*mesh);
       return out;
@@ -274,6 +346,10 @@ SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::st
 
 StepReadBack ReadStep(const std::string& content) {
   return Guarded("STEP read", [&] { return ReadStepUnguarded(content); });
+}
+
+AssemblyReadBack ReadStepAssembly(const std::string& content) {
+  return Guarded("STEP assembly read", [&] { return ReadStepAssemblyUnguarded(content); });
 }
 
 }  // namespace camopt::cad

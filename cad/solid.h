@@ -46,4 +46,23 @@ struct StepReadBack {
 };
 StepReadBack ReadStep(const std::string& content);
 
+/// An assembly as a CAD program's document reads it (OCCT's XDE: STEPCAFControl_Reader into an
+/// XCAF document): the top shape's name, whether it is an assembly, and each component with the
+/// name of its occurrence and of the part it refers to, its placement (the location's translation
+/// and its turn about +z) and the part's volume and the placed solid's centroid.
+struct AssemblyComponent {
+  std::string name, part;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  double angle_rad = 0.0;
+  double axis_tilt = 0.0;  ///< angle between the placed part's z axis and +z [rad]
+  double volume_mm3 = 0.0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< of the placed solid, assembly frame
+};
+struct AssemblyReadBack {
+  bool read = false, assembly = false;
+  std::string name;
+  std::vector<AssemblyComponent> components;
+};
+AssemblyReadBack ReadStepAssembly(const std::string& content);
+
 }  // namespace camopt::cad

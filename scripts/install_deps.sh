@@ -15,7 +15,7 @@ PROGRAM_PACKAGES=(build-essential cmake pkg-config ccache
   # Geometry files: OpenCASCADE for STEP solids and their STL meshes where a profile is not
   # star-shaped (libtbb-dev: OCCT's CMake targets link it).
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
-  libocct-data-exchange-dev libtbb-dev
+  libocct-data-exchange-dev libocct-ocaf-dev libtbb-dev
   # Sweeps: Boost.Random's Sobol sequence. The SHA-256 of provenance (studies/provenance.cc)
   # from a maintained library.
   libboost-dev nettle-dev

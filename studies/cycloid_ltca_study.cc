@@ -1,5 +1,6 @@
 // Study kind "cycloid_ltca" (studies/cycloid_ltca_study.h): parse, run the LTCA cycle, write.
 #include "studies/cycloid_ltca_study.h"
+#include "studies/cycloid_parts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -919,12 +920,33 @@ Result Run(const Study& s, const RunContext& ctx) {
     g.design_name = s.name;
     g.cam_name = "cycloid disc (modified profile)";
     g.profile = [d = s.drive](double t) { return ToothProfile<double>(d, t).point; };
+    // The cutter path: the generating circle's (the grinding wheel's) centre X'(t), radius ρ'.
+    g.cutter = [d = s.drive](double t) { return ToothProfile<double>(d, t).centre; };
+    g.cutter_diameter_mm = 2.0 * (s.drive.roller_radius_mm + s.drive.delta_radius_mm);
     g.initial_segments = 8 * n1;
     g.symmetry = s.drive.teeth;  // one tooth turned (eqs. 3–4 with z_c = z_d + 1: checked by the fit)
     g.thickness_mm = s.drive.face_width_mm;
     g.bore_diameter_mm = s.bore_diameter_mm;
     for (const auto& c : r.roller_centres) g.rollers.push_back({c, s.drive.roller_radius_mm});
     r.tooth_files = FitPlanarCam(g, s.geometry);
+    if (r.tooth_files.files && r.tooth_files.solid) {
+      cycloid_common::CycloidPartsInput parts;
+      parts.design_name = s.name;
+      parts.drive = s.drive;
+      parts.discs = s.discs;
+      parts.disc_spacing_mm = s.disc_spacing_mm;
+      parts.bore_diameter_mm = s.bore_diameter_mm;
+      const double stack = (s.discs - 1) * s.disc_spacing_mm + s.drive.face_width_mm;
+      parts.output_pin_length_mm = stack;
+      if (s.output) {
+        parts.pins = s.output->pins;
+        parts.output_pin_length_mm = s.output->span_mm;
+      }
+      parts.density_kg_m3 = s.density_kg_m3;
+      parts.material = "steel (E " + Format(s.material.youngs_modulus_MPa, 6) + " MPa)";
+      parts.crank_angle_rad = s.geometry.assembly_crank_angle_deg * kPi / 180.0;
+      r.parts = cycloid_common::CycloidParts(parts, r.tooth_files);
+    }
   }
   if (s.output) {
     try {
@@ -1062,6 +1084,7 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
                       {"per_angle", per_angle}};
   AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
+  if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
   AddTransmissionError(s, r, j);
   return j;
 }
@@ -1093,6 +1116,7 @@ void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
   drawing.dimensions.push_back(line);
   out.Add("tooth.svg", SvgDrawing(drawing));
   WritePlanarCamFiles(r.tooth_files, s.geometry, out);
+  if (!r.parts.parts.empty()) WriteParts(r.parts, s.geometry, out);
 }
 
 Table BacklashTable(const Study& s, const Result& r, const std::vector<double>& col_angle) {
@@ -1315,6 +1339,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
           {"per_angle", per_angle}};
   AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
+  if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
   AddTransmissionError(s, r, j);
   if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
   if (s.discs > 1) {

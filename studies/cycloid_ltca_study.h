@@ -29,6 +29,7 @@
 #include "studies/cycloid_ratings.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/geometry_files.h"
+#include "studies/parts.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
 #include "studies/ratings_input.h"
@@ -372,6 +373,9 @@ struct Result {
   std::vector<Vec2<double>> tooth_profile;   ///< the modified profile of the whole disc [mm]
   std::vector<Vec2<double>> roller_centres;  ///< in the disc frame at crank angle 0 [mm]
   PlanarCamFit tooth_files;  ///< the disc's geometry files (arcs of the modified profile)
+  /// The drive's parts (studies/cycloid_parts.h): discs with holes and bore, pins, crank, housing;
+  /// empty when the geometry files are off or the disc has no solid.
+  PartsSet parts;
   std::optional<LifeResult> life;
   std::optional<LubricationResult> lubrication;  ///< with "lubricant"
   std::string lubrication_error;                 ///< why it is absent (no thermal equilibrium)

@@ -141,6 +141,7 @@ GeometryFileOptions ParseGeometryFiles(const Node& root) {
   o.dxf_tolerance_um = in.dxf_tolerance_um;
   o.stl_ascii = in.stl_format == "ascii";
   o.step = in.step;
+  o.assembly_crank_angle_deg = in.assembly_crank_angle_deg;
   return o;
 }
 

@@ -33,6 +33,7 @@ struct GeometryFileOptions {
   double dxf_tolerance_um = 1.0;
   bool stl_ascii = false;
   bool step = true;
+  double assembly_crank_angle_deg = 0.0;  ///< the crank angle assembly.step shows (docs/parts.md)
 };
 
 /// The object form of the "geometry_files" block, declared once (studies/archive.h).
@@ -40,12 +41,16 @@ struct GeometryFilesInput {
   double dxf_tolerance_um = 1.0;
   std::string stl_format = "binary";
   bool step = true;
+  double assembly_crank_angle_deg = 0.0;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("dxf_tolerance_um", &dxf_tolerance_um,
              Field().In(0.01, 1000.0).Unit("µm").Desc("largest distance of the DXF/STEP arcs from the exact profile"));
     a->Visit("stl_format", &stl_format, Field().OneOf({"binary", "ascii"}).Desc("STL encoding"));
     a->Visit("step", &step, Field().Desc("write the STEP solids or surfaces"));
+    a->Visit("assembly_crank_angle_deg", &assembly_crank_angle_deg,
+             Field().In(-3600.0, 3600.0).Unit("deg").Desc(
+                 "the crank angle at which assembly.step places the parts (cycloid_ltca; docs/parts.md)"));
   }
 };
 

@@ -60,7 +60,7 @@ std::pair<studies::Outputs, json> RunKind(const K& kind, const json& study) {
 // As given: `cad_files` geometry files; with "geometry_files": false: none, every other file the
 // same, and result.json says so.
 template <typename K>
-void ExpectSwitchedOff(const K& kind, json study, int cad_files) {
+void ExpectSwitchedOff(const K& kind, json study, int cad_files, int other_files = 0) {
   const auto [on, on_json] = RunKind(kind, study);
   EXPECT_EQ(CadFiles(on), cad_files);
   // The planar kinds list their parts; globoidal_cam names its files under "surface_export".
@@ -71,7 +71,7 @@ void ExpectSwitchedOff(const K& kind, json study, int cad_files) {
   const auto [off, off_json] = RunKind(kind, study);
   EXPECT_EQ(CadFiles(off), 0);
   EXPECT_EQ(off_json["geometry_files"], json({{"written", false}}));
-  EXPECT_EQ(off.files().size() + cad_files, on.files().size());
+  EXPECT_EQ(off.files().size() + cad_files + other_files, on.files().size());
   for (const auto& [name, content] : off.files()) EXPECT_TRUE(on.files().count(name)) << name;
 }
 
@@ -85,7 +85,9 @@ TEST(GeometryFilesSwitch, LcrAnalysisWritesNoCadFiles) {
 TEST(GeometryFilesSwitch, CycloidLtcaWritesNoCadFiles) {
   json study = Example("cycloid_ltca_nnm_lcm.json");
   study["analysis"] = {{"crank_angles_deg", {0}}, {"grid", {8, 8}}, {"estimate_error", false}};
-  ExpectSwitchedOff(CAMOPT_KIND(cycloid_ltca), study, 3);  // tooth.dxf, .step, .stl
+  // tooth.dxf, .step, .stl; the parts disc_1, ring_pins and housing .dxf, .step, .stl (the study has no
+  // output mechanism or bore: no pins or crank), assembly.step; and bom.csv.
+  ExpectSwitchedOff(CAMOPT_KIND(cycloid_ltca), study, 3 + 3 * 3 + 1, 1);
 }
 
 TEST(GeometryFilesSwitch, TrueIsTheDefaults) {
@@ -95,8 +97,9 @@ TEST(GeometryFilesSwitch, TrueIsTheDefaults) {
   const auto [given, given_json] = RunKind(CAMOPT_KIND(cycloid_ltca), study);
   study["geometry_files"] = true;
   const auto [on, on_json] = RunKind(CAMOPT_KIND(cycloid_ltca), study);
-  EXPECT_EQ(CadFiles(on), 3);
+  EXPECT_EQ(CadFiles(on), 3 + 3 * 3 + 1);
   EXPECT_EQ(on_json["geometry_files"]["tooth"]["step"], "tooth.step");
+  EXPECT_EQ(on_json["parts"]["assembly"], "assembly.step");
   EXPECT_EQ(on.files().at("tooth.dxf"), given.files().at("tooth.dxf"));
 }
 

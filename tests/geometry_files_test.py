@@ -8,6 +8,11 @@ disc_cam) and checks each file with tools that share no code with camopt:
     (LCR cams, cycloid disc, cycloidal disc cams) sampled densely, or from the model's profile points
     in series.csv (every disc cam), at most the study's tolerance.
   - STL: binary unless asked otherwise; free edges counted here on the raw triangles, and by admesh.
+  - Parts (result.json "parts"): each part's DXF audited; a cycloid disc's HOLES circles against the
+    output mechanism's count, circle and hole radius (to 1e-6 mm), its BORE, its PROFILE against the
+    formula's profile turned by its phase -2 pi (k - 1) / (N n2), its volume from the DXF's own
+    arcs and circles (shoelace and circular segments) against result.json's, its STL closed; bom.csv's
+    masses are volume x density and its total their sum.
 Usage: geometry_files_test.py CAMOPT_BINARY EXAMPLES_DIR
 """
 import concurrent.futures
@@ -182,6 +187,106 @@ def admesh_disconnected(path):
     return total
 
 
+def bulge_polyline_area(arcs):
+    """Signed area of a closed polyline with bulges: the chords' polygon plus each arc's segment."""
+    area = 0.0
+    for (x0, y0), (x1, y1), b in arcs:
+        area += 0.5 * (x0 * y1 - x1 * y0)
+        if abs(b) > 1e-15:
+            theta = 4 * math.atan(abs(b))
+            c = math.hypot(x1 - x0, y1 - y0)
+            r = c / (2 * math.sin(theta / 2))
+            area += math.copysign(r * r * (theta - math.sin(theta)) / 2, b)
+    return area
+
+
+def bulge_polyline_length(arcs):
+    length = 0.0
+    for (x0, y0), (x1, y1), b in arcs:
+        c = math.hypot(x1 - x0, y1 - y0)
+        if abs(b) > 1e-15:
+            theta = 4 * math.atan(abs(b))
+            length += c / (2 * math.sin(theta / 2)) * theta
+        else:
+            length += c
+    return length
+
+
+def check_parts(name, study, result, out):
+    parts = result.get("parts", {}).get("parts")
+    if not parts:
+        return
+    tol_mm = study.get("geometry_files", {}).get("dxf_tolerance_um", 1.0) * 1e-3 if isinstance(
+        study.get("geometry_files"), dict) else 1e-3
+    discs = study.get("discs", 1)
+    om = study.get("output_mechanism", {})
+    holes_expected = "hole_radius_mm" in om and "pins" in om
+    density = result["parts"]["density_kg_m3"]
+    for part, info in parts.items():
+        doc = ezdxf.readfile(os.path.join(out, info["dxf"]))
+        auditor = doc.audit()
+        check(len(auditor.errors) == 0 and len(auditor.fixes) == 0, f"{name}/{info['dxf']}: ezdxf audit")
+        msp = doc.modelspace()
+        profile = [e for e in msp if e.dxftype() == "LWPOLYLINE" and e.dxf.layer == "PROFILE"]
+        check(len(profile) == 1 and profile[0].closed, f"{name}/{info['dxf']}: one closed PROFILE")
+        if not profile:
+            continue
+        arcs = polyline_arcs(profile[0])
+        circles = [(e.dxf.center.x, e.dxf.center.y, e.dxf.radius, e.dxf.layer) for e in msp if e.dxftype() == "CIRCLE"]
+        holes = [c for c in circles if c[3] == "HOLES"]
+        bores = [c for c in circles if c[3] == "BORE"]
+        area = bulge_polyline_area(arcs) - sum(math.pi * c[2] ** 2 for c in holes + bores)
+        volume = area * info["thickness_mm"]
+        bound = bulge_polyline_length(arcs) * tol_mm * info["thickness_mm"] + 1e-9 * volume
+        print(f"{name} {part}: volume from the DXF {volume:.6f} mm3, result.json {info['volume_mm3']:.6f} "
+              f"(bound {bound:.3g}), {len(holes)} holes")
+        check(abs(volume - info["volume_mm3"]) <= bound, f"{name}/{part}: DXF volume {volume} vs {info['volume_mm3']}")
+        check(abs(info["mass_kg"] - info["volume_mm3"] * density * 1e-9) <= 1e-12 * info["mass_kg"],
+              f"{name}/{part}: mass is not volume x density")
+        if part.startswith("disc_"):
+            k = int(part[5:])
+            drive = study["drive"]
+            gamma = -2 * math.pi * (k - 1) / (discs * drive["teeth"])
+            if holes_expected:
+                z, rw, rh = om["pins"], om["pin_circle_radius_mm"], om["hole_radius_mm"]
+                check(len(holes) == z, f"{name}/{part}: {len(holes)} holes, {z} expected")
+                for j in range(z):
+                    want = (rw * math.cos(2 * math.pi * j / z), rw * math.sin(2 * math.pi * j / z))
+                    d = min((math.hypot(h[0] - want[0], h[1] - want[1]) for h in holes), default=math.inf)
+                    check(d <= 1e-6, f"{name}/{part}: no hole within 1e-6 mm of {want} (nearest {d})")
+                for h in holes:
+                    check(abs(h[2] - rh) <= 1e-6, f"{name}/{part}: hole radius {h[2]} vs {rh}")
+            if "bore_diameter_mm" in drive:
+                check(len(bores) == 1 and abs(bores[0][2] - drive["bore_diameter_mm"] / 2) <= 1e-6
+                      and math.hypot(bores[0][0], bores[0][1]) <= 1e-9, f"{name}/{part}: bore")
+            ref = cycloid_profile(drive, study.get("modification", {}))
+            c, s_ = math.cos(gamma), math.sin(gamma)
+            turned = np.column_stack([c * ref[:, 0] - s_ * ref[:, 1], s_ * ref[:, 0] + c * ref[:, 1]])
+            d = distances_to_arcs(turned, arcs).max()
+            print(f"{name} {part}: PROFILE vs the formula turned {math.degrees(gamma):.6f} deg: max {d * 1e3:.4f} um")
+            check(d <= tol_mm + 1e-9, f"{name}/{part}: profile {d * 1e3:.4f} um from the formula at its phase")
+        tris = stl_triangles(os.path.join(out, info["stl"]))
+        if tris is not None:
+            free, wrong = free_edges(tris)
+            check(free == 0 and wrong == 0, f"{name}/{info['stl']}: {free} free, {wrong} misoriented edges")
+    with open(os.path.join(out, "bom.csv")) as f:
+        rows = list(csv.DictReader(f))
+    total = 0.0
+    for r in rows:
+        if r["part"] == "total":
+            check(abs(float(r["total_mass_kg"]) - total) <= 1e-8 * max(total, 1e-9), f"{name}: bom total")
+            continue
+        info = parts.get(r["part"])
+        check(info is not None, f"{name}: bom row {r['part']} is no part")
+        if info is None:
+            continue
+        check(int(r["count"]) == info["count"], f"{name}: bom count of {r['part']}")
+        m = float(r["mass_kg"])
+        check(abs(m - float(r["volume_mm3"]) * density * 1e-9) <= 1e-8 * m, f"{name}: bom mass of {r['part']}")
+        total += int(r["count"]) * m
+    check(len(rows) == len(parts) + 1, f"{name}: bom rows {len(rows)} for {len(parts)} parts")
+
+
 # ---- per example --------------------------------------------------------------------------------
 
 def run_example(camopt, path, tmp):
@@ -200,6 +305,7 @@ def check_example(camopt, path, tmp, run):
     if run.returncode != 0:
         return
     result = json.load(open(os.path.join(out, "result.json")))
+    check_parts(name, study, result, out)
     files = result.get("geometry_files", {})
     evaluate = study.get("analysis", {}).get("evaluate")
     profile_asked = evaluate is None or kind != "lcr_analysis" or "profile" in evaluate
