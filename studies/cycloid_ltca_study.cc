@@ -264,8 +264,59 @@ Study Parse(const Node& root) {
                      "absent)");
     s.torsional = ParseTorsionalDynamics(block, *in.torsional_dynamics);
   }
+  if (in.grinding) {
+    try {
+      s.grinding = cycloid::FormGrindingWheel(s.drive, in.grinding->wheel_radius_mm, in.grinding->tolerance_um * 1e-3);
+      s.grinding_tolerance_um = in.grinding->tolerance_um;
+    } catch (const std::invalid_argument& e) {
+      root["grinding"]["wheel_radius_mm"].FailWith(e.what());
+    }
+  }
   return s;
 }
+
+namespace {
+
+// result.json's "grinding" and grinding_wheel.csv (model/cycloid/form_grinding.h).
+nlohmann::json GrindingJson(const Study& s) {
+  const cycloid::FormWheel& w = *s.grinding;
+  nlohmann::json index = nlohmann::json::array();
+  for (int k = 0; k < s.drive.teeth; ++k) index.push_back(360.0 * k / s.drive.teeth);
+  return {{"file", "grinding_wheel.csv"},
+          {"wheel_radius_mm", w.wheel_radius_mm},
+          {"centre_distance_mm", w.centre_distance_mm},
+          {"wheel_width_mm", w.width_mm},
+          {"edge_radius_mm", w.edge_radius_mm},
+          {"least_radius_mm", w.least_radius_mm},
+          {"root_x_mm", w.root_x_mm},
+          {"tip_x_mm", w.tip_x_mm},
+          {"index_deg", w.index_rad * 180.0 / kPi},
+          {"index_angles_deg", index},
+          {"least_concave_radius_mm", w.least_concave_radius_mm},
+          {"residual_form_error_um", w.residual_form_error_mm * 1e3},
+          {"tolerance_um", s.grinding_tolerance_um},
+          {"points", w.y_mm.size()},
+          {"note", "one tooth space per pass, traversed along the disc's axis at the centre distance, then indexed; "
+                   "disc k of N is indexed from its phase -360 (k - 1)/(N teeth) deg (docs/parts.md)"}};
+}
+
+std::string GrindingCsv(const Study& s) {
+  const cycloid::FormWheel& w = *s.grinding;
+  std::string out = "# form wheel for '" + s.name + "': axial profile r(y) (the wheel's radius at axial position y), "
+                    "centre distance " + Format(w.centre_distance_mm, 12) + " mm, index " +
+                    Format(w.index_rad * 180.0 / kPi, 12) + " deg; the polygon through the points is within " +
+                    Format(w.residual_form_error_mm * 1e3, 4) + " um of the tooth\n"
+                    "y_mm,radius_mm,disc_x_mm,profile_parameter_rad\n";
+  char line[160];
+  for (size_t i = 0; i < w.y_mm.size(); ++i) {
+    std::snprintf(line, sizeof line, "%.12g,%.12g,%.12g,%.12g\n", w.y_mm[i], w.radius_mm[i],
+                  w.centre_distance_mm - w.radius_mm[i], w.t[i]);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace
 
 nlohmann::ordered_json Input::SchemaRules() {
   // The loaded stage (analysis.evaluate absent or with "loaded") needs the material and the load;
@@ -1085,6 +1136,7 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
   AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
+  if (s.grinding) j["grinding"] = GrindingJson(s);
   AddTransmissionError(s, r, j);
   return j;
 }
@@ -1117,6 +1169,7 @@ void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
   out.Add("tooth.svg", SvgDrawing(drawing));
   WritePlanarCamFiles(r.tooth_files, s.geometry, out);
   if (!r.parts.parts.empty()) WriteParts(r.parts, s.geometry, out);
+  if (s.grinding) out.Add("grinding_wheel.csv", GrindingCsv(s));
 }
 
 Table BacklashTable(const Study& s, const Result& r, const std::vector<double>& col_angle) {
@@ -1340,6 +1393,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   AddGeometryLimits(s, j);
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
   if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
+  if (s.grinding) j["grinding"] = GrindingJson(s);
   AddTransmissionError(s, r, j);
   if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
   if (s.discs > 1) {

@@ -18,6 +18,7 @@
 #include "model/common/catalogue_ratings.h"
 #include "model/cycloid/crowning.h"
 #include "model/cycloid/loaded_tca.h"
+#include "model/cycloid/form_grinding.h"
 #include "model/cycloid/output_mechanism.h"
 #include "model/cycloid/stiffness.h"
 #include "model/cycloid/transmission_error.h"
@@ -195,6 +196,21 @@ struct Input {
   std::optional<OutputBearingInput> output_bearing;
   std::optional<std::vector<ExternalLoadInput>> external_loads;
   std::optional<TorsionalDynamicsInput> torsional_dynamics;
+  /// "grinding": the form wheel for the modified tooth (model/cycloid/form_grinding.h).
+  struct Grinding {
+    double wheel_radius_mm = 0;
+    double tolerance_um = 0.1;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("wheel_radius_mm", &wheel_radius_mm,
+               Field().Required().Positive().Unit("mm").Desc(
+                   "the form wheel's largest radius (at the tooth space's root), above the space's depth"));
+      a->Visit("tolerance_um", &tolerance_um,
+               Field().In(0.001, 100.0).Unit("µm").Default(0.1).Desc(
+                   "largest distance of the wheel's dressing polygon (grinding_wheel.csv) from the exact tooth"));
+    }
+  };
+  std::optional<Grinding> grinding;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -258,6 +274,9 @@ struct Input {
                           "(docs/torsional_dynamics.md): natural frequencies, mode shapes, the dynamic transmission "
                           "error and overload over an input-speed sweep, resonance speeds; mesh_stiffness.csv, "
                           "dynamic_te.csv (needs the loaded stage)"));
+    a->Visit("grinding", &grinding,
+             Field().Desc("form grinding of the modified tooth (docs/parts.md, Form grinding): the wheel's axial "
+                          "profile (grinding_wheel.csv), its centre distance and indexing, the residual form error"));
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
@@ -336,6 +355,9 @@ struct Study {
   std::optional<Lubrication> lubrication;
   /// "torsional_dynamics" (studies/torsional_dynamics_input.h); nullopt: none.
   std::optional<TorsionalDynamicsSpec> torsional;
+  /// "grinding": the form wheel, computed while parsing (a wheel too small is an input error).
+  std::optional<cycloid::FormWheel> grinding;
+  double grinding_tolerance_um = 0;
 };
 
 using cycloid_common::ElementLife;

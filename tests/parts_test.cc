@@ -3,7 +3,9 @@
 // STEP assembly opened as an XDE document (components, part names, placements, volumes), and a
 // three-disc cycloid drive's parts placed so that every disc meshes the ring pins at the assembly's
 // crank angle — checked with the papers' profile formula and the placements read back from the file.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
@@ -262,6 +264,8 @@ TEST(CycloidParts, ThreeDiscsMeshThePinsAtTheAssemblysCrankAngleAndWeighWhatThei
       }
       least = std::min(least, (PaperProfile(a, rho_mod, e, n1, 0.5 * (lo + hi)) - q).norm() - 5.0);
     }
+    std::printf("%s placed as read back: least pin clearance %.6f mm, volume %.6f mm3 (formula %.6f)\n",
+                c.part.c_str(), least, c.volume_mm3, disc_volume);
     EXPECT_GE(least, -1e-6) << c.part << ": a pin cuts into the disc by " << -least << " mm";
     EXPECT_LE(least, 0.05) << c.part << ": no pin within 50 um of the tooth";
   }
@@ -283,6 +287,86 @@ TEST(CycloidParts, ThreeDiscsMeshThePinsAtTheAssemblysCrankAngleAndWeighWhatThei
   EXPECT_EQ(parts["output_pins"]["count"], Zw);
   while (std::getline(bom, line)) --rows;
   EXPECT_EQ(rows, -1);  // one row per part and the total
+}
+
+// Form grinding: the wheel of grinding_wheel.csv, placed at the written centre distance and indexed
+// by the written angles, generates in every transverse section the lower envelope of its surface of
+// revolution. That envelope is computed here from the file alone — the wheel's surface sampled in
+// 3D (axial polygon × turns about its axis), each sample's x kept per y bin — and compared with the
+// paper's tooth (Δa, Δρ) over the whole disc: within the stated residual plus the sampling's bound.
+TEST(CycloidGrinding, TheWheelsEnvelopeRegeneratesTheModifiedToothWithinTheStatedFormError) {
+  nlohmann::json study = ThreeDiscStudy();
+  study["discs"] = 1;
+  study.erase("disc_spacing_mm");
+  study["grinding"] = {{"wheel_radius_mm", 120}, {"tolerance_um", 0.2}};
+  studies::RunContext ctx;
+  ctx.quiet = true;
+  const studies::Outputs out = studies::RunStudy(study, ctx);
+  const nlohmann::json g = nlohmann::json::parse(out.files().at("result.json"))["grinding"];
+  const double A = g["centre_distance_mm"], residual_mm = double(g["residual_form_error_um"]) * 1e-3;
+  EXPECT_LE(residual_mm, 0.2e-3);
+  EXPECT_GT(residual_mm, 0.0);
+  std::istringstream csv(out.files().at("grinding_wheel.csv"));
+  std::string line;
+  std::vector<double> ys, rs;
+  while (std::getline(csv, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'y') continue;
+    double y, r;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf", &y, &r), 2) << line;
+    ys.push_back(y);
+    rs.push_back(r);
+  }
+  ASSERT_GT(ys.size(), 50u);
+  for (size_t i = 1; i < ys.size(); ++i) ASSERT_GT(ys[i], ys[i - 1]);  // a wheel's axial profile: y increasing
+  // The envelope: per y, the least x over the wheel's surface x = A − r(y) cos(θ), z = r(y) sin(θ),
+  // θ sampled over ±0.2 rad (the rest of the wheel lies farther out).
+  auto wheel_r = [&](double y) {
+    const size_t i = std::upper_bound(ys.begin(), ys.end(), y) - ys.begin();
+    if (i == 0 || i == ys.size()) return -1.0;
+    const double f = (y - ys[i - 1]) / (ys[i] - ys[i - 1]);
+    return rs[i - 1] + f * (rs[i] - rs[i - 1]);
+  };
+  auto envelope_x = [&](double y) {
+    double x = INFINITY;
+    for (int k = -20; k <= 20; ++k) x = std::min(x, A - wheel_r(y) * std::cos(0.01 * k));
+    return x;
+  };
+  const double a = 60.0 - 0.010, rho_mod = 5.0 + 0.005, e = 2.5;
+  const int n1 = 12, n2 = 11;
+  const double index = double(g["index_deg"]) * kPi / 180.0;
+  EXPECT_NEAR(index, 2 * kPi / n2, 1e-12);
+  // Every point of the paper's tooth, taken into its space's frame, against the envelope: the
+  // distance along x, times the profile's slope factor, bounds the normal distance from above.
+  double worst = 0;
+  int checked = 0;
+  for (int m = 0; m < 44000; ++m) {
+    const Vec2<double> p = PaperProfile(a, rho_mod, e, n1, 2 * kPi * m / 44000);
+    const double polar = std::atan2(p.y(), p.x());
+    const int k = static_cast<int>(std::lround(polar / index));
+    const double back = -k * index;
+    const Vec2<double> q(std::cos(back) * p.x() - std::sin(back) * p.y(), std::sin(back) * p.x() + std::cos(back) * p.y());
+    if (wheel_r(q.y()) < 0) continue;  // at a lobe's very tip, beyond the wheel's edge sample
+    // Normal distance: the envelope near q as a line through two close envelope points.
+    const double h = 1e-4;
+    const Vec2<double> e0(envelope_x(q.y() - h), q.y() - h), e1(envelope_x(q.y() + h), q.y() + h);
+    const Vec2<double> t = (e1 - e0).normalized();
+    const Vec2<double> d = q - e0;
+    worst = std::max(worst, std::abs(t.x() * d.y() - t.y() * d.x()));
+    ++checked;
+  }
+  EXPECT_GT(checked, 40000);
+  std::printf("form error of the wheel's envelope %.4g um (stated %.4g um) over %d points, %zu wheel points\n",
+              worst * 1e3, residual_mm * 1e3, checked, ys.size());
+  // The envelope's own sampling (θ steps of 0.01 rad at the wheel's ~120 mm: r(1 − cos 0.005) ≈ 1.5 µm at
+  // worst between samples, but θ = 0 is sampled, so none) and the tangent line over 2h (< 1e-9 mm).
+  EXPECT_LE(worst, residual_mm + 1e-8) << "form error " << worst * 1e3 << " um";
+  // A wheel smaller than the space's depth is refused with exit 2 at its field.
+  const auto dir = camopt::testing::TempDir("grinding-bad");
+  study["grinding"]["wheel_radius_mm"] = 1.0;
+  camopt::testing::WriteFile(dir / "g.json", study.dump());
+  const auto r = camopt::testing::RunCamopt("run " + (dir / "g.json").string() + " --out " + (dir / "o").string() + " --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("/grinding/wheel_radius_mm"), std::string::npos) << r.stderr_text;
 }
 
 }  // namespace
