@@ -52,6 +52,27 @@ double Diagonal(const std::vector<ArcSegment>& chain) {
   return (hi - lo).norm();
 }
 
+}  // namespace
+
+std::vector<ArcSegment> BoreChain(const Extrusion& e) {
+  if (!(e.bore_diameter_mm > 0)) return {};
+  const double rb = 0.5 * e.bore_diameter_mm;
+  const Vec2<double> c = e.bore_centre;
+  if (!(e.keyway_width_mm > 0)) {
+    const Vec2<double> a = c + Vec2<double>(rb, 0.0), b = c - Vec2<double>(rb, 0.0);
+    return {{a, b, 1.0}, {b, a, 1.0}};
+  }
+  const Vec2<double> u(std::cos(e.keyway_angle_rad), std::sin(e.keyway_angle_rad)), v(-u.y(), u.x());
+  const double hw = 0.5 * e.keyway_width_mm;
+  const double x0 = std::sqrt(std::max(0.0, rb * rb - hw * hw)), xd = rb + e.keyway_depth_mm;
+  const Vec2<double> A = c + x0 * u - hw * v, B = c + xd * u - hw * v, C = c + xd * u + hw * v, D = c + x0 * u + hw * v;
+  // The bore's arc from D counter-clockwise round to A: a sweep of 2π − 2 asin(hw/rb).
+  const double sweep = 2 * kPi - 2 * std::asin(hw / rb);
+  return {{D, A, std::tan(sweep / 4)}, {A, B, 0.0}, {B, C, 0.0}, {C, D, 0.0}};
+}
+
+namespace {
+
 void CheckChain(const Extrusion& e) {
   if (e.profile.size() < 2) throw std::invalid_argument("the profile needs at least two arcs");
   const double size = Diagonal(e.profile);
@@ -63,6 +84,24 @@ void CheckChain(const Extrusion& e) {
     if (!std::isfinite(a.bulge) || !a.start.allFinite()) throw std::invalid_argument("the profile is not finite");
   }
   if (!(e.thickness_mm > 0) || !std::isfinite(e.thickness_mm)) throw std::invalid_argument("the thickness must be > 0");
+  if (e.keyway_width_mm > 0) {
+    const double rb = 0.5 * e.bore_diameter_mm;
+    if (!(rb > 0)) throw std::invalid_argument("a keyway needs a bore");
+    if (!(e.keyway_width_mm < 2 * rb * 0.999) || !(e.keyway_depth_mm > 0) || !std::isfinite(e.keyway_depth_mm))
+      throw std::invalid_argument("the keyway must be narrower than the bore and deeper than 0");
+    // Its bottom corners inside the profile with room to spare.
+    const std::vector<ArcSegment> bore = BoreChain(e);
+    for (const Vec2<double>& corner : {bore[1].end, bore[2].end}) {
+      double nearest = INFINITY;
+      for (const ArcSegment& a : e.profile) nearest = std::min(nearest, DistanceToArc(a, corner));
+      if (!(nearest > 1e-3 * rb) || !((corner - e.bore_centre).norm() < Diagonal(e.profile)))
+        throw std::invalid_argument("the keyway reaches the profile");
+    }
+    for (const Hole& h : e.holes)
+      for (size_t k = 1; k < 4; ++k)
+        if (!(DistanceToArc(bore[k], h.centre) > 0.5 * h.diameter_mm))
+          throw std::invalid_argument("a hole cuts the keyway");
+  }
   // The bore and the holes: each inside the profile, clear of it and of each other.
   std::vector<Hole> circles;
   if (e.bore_diameter_mm > 0) circles.push_back({e.bore_centre, e.bore_diameter_mm});
@@ -533,7 +572,12 @@ std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection,
   std::vector<std::vector<int>> inner_walls;  // loops whose walls face their axis (bore, holes)
   if (e.holes.empty()) {
     std::vector<int> inner;
-    if (bore) {
+    if (bore && e.keyway_width_mm > 0) {
+      std::vector<Vec2<double>> chords;
+      for (const ArcSegment& a : BoreChain(e)) AppendChords(a, deflection, c, chords);
+      for (const Vec2<double>& p : chords) inner.push_back(static_cast<int>(pts.size())), pts.push_back(p);
+      inner_walls.push_back(inner);
+    } else if (bore) {
       AppendCircle(c, rb, 0.0, CircleChords(rb, deflection), pts, inner);
       inner_walls.push_back(inner);
     } else {
@@ -559,8 +603,25 @@ std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection,
     double nearest = INFINITY;
     for (int k : outer) nearest = std::min(nearest, (pts[k] - c).norm());
     const double half = kPi / z;
-    // Each sector must see its bore arc and keep its hole clear of its sides.
-    if (!(R + rh < nearest) || !(rh < R * std::sin(half)) || !(rb < R * std::cos(half)) || !(rb < R - rh))
+    // A keyed bore: the sectors start at a circle K between the keyway's reach and the holes, and
+    // the ring between K and the keyed bore is merged about the centre.
+    const bool keyed = bore && e.keyway_width_mm > 0;
+    std::vector<int> keyed_loop;
+    double r_in = bore ? rb : 0.0;
+    if (keyed) {
+      std::vector<Vec2<double>> chords;
+      for (const ArcSegment& a : BoreChain(e)) AppendChords(a, deflection, c, chords);
+      double reach = 0;
+      for (const Vec2<double>& p : chords) {
+        reach = std::max(reach, (p - c).norm());
+        keyed_loop.push_back(static_cast<int>(pts.size()));
+        pts.push_back(p);
+      }
+      r_in = 0.5 * (reach + R - rh);
+      if (!(r_in > reach)) return std::nullopt;
+    }
+    // Each sector must see its inner arc and keep its hole clear of its sides.
+    if (!(R + rh < nearest) || !(rh < R * std::sin(half)) || !(r_in < R * std::cos(half)) || !(r_in < R - rh))
       return std::nullopt;
     const double rm = 0.5 * (R + rh + nearest);
     const double from = a0 - half;
@@ -580,15 +641,19 @@ std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection,
     std::vector<int> ring_b;
     int qb = 0;
     if (bore) {
-      qb = per_sector(rb, R - rb);
-      AppendCircle(c, rb, from, qb * z, pts, ring_b);
-      inner_walls.push_back(ring_b);
+      qb = per_sector(r_in, R - r_in);
+      AppendCircle(c, r_in, from, qb * z, pts, ring_b);
+      if (keyed) {
+        if (!MergeRing(pts, ring_b, keyed_loop, c, cap)) return std::nullopt;
+        inner_walls.push_back(keyed_loop);
+      } else {
+        inner_walls.push_back(ring_b);
+      }
     } else {
       ring_b.push_back(static_cast<int>(pts.size()));
       pts.push_back(c);
     }
-    // The sides' inner points, from the bore (or the centre) out to M: side j at angle from + 2πj/z.
-    const double r_in = bore ? rb : 0.0;
+    // The sides' inner points, from the bore, K or the centre out to M: side j at angle from + 2πj/z.
     const int pieces = std::max(1, static_cast<int>(std::ceil((rm - r_in) / (0.5 * kMaxChordTurn * R * std::sin(half)))));
     std::vector<std::vector<int>> sides(z);
     for (int j = 0; j < z; ++j) {
@@ -815,42 +880,61 @@ PartIds AddExtrusion(StepData& d, StepContext& ctx_ids, const Extrusion& e, cons
     const int bound = d.Bound({{bottom[w], true}, {vertical[k], true}, {top[w], false}, {vertical[w], false}}, true);
     walls.push_back(d.Face(bound, surface, outward));
   }
-  // The bore and the holes: each two half-cylinders between the vertices at angles 0 and π about
-  // its centre.
+  // The bore (a keyed bore's arc and slot) and the holes: each an inner chain counter-clockwise about
+  // its centre (a hole two half circles), a wall per arc or line facing its axis.
   std::vector<std::vector<std::pair<int, bool>>> inner_bottom, inner_top;
-  std::vector<Hole> circles;
-  if (e.bore_diameter_mm > 0) circles.push_back({e.bore_centre, e.bore_diameter_mm});
-  circles.insert(circles.end(), e.holes.begin(), e.holes.end());
-  for (const Hole& hole : circles) {
-    const double rb = 0.5 * hole.diameter_mm;
-    const Vec2<double> c = hole.centre;
-    const int c0 = d.Axis(d.Point(c.x(), c.y(), 0.0), dz, dx), ct = d.Axis(d.Point(c.x(), c.y(), t), dz, dx);
-    const int circle0 = d.Wrap("CIRCLE('',", c0, Real(rb), ")");
-    const int circlet = d.Wrap("CIRCLE('',", ct, Real(rb), ")");
-    int bv0[2], bvt[2], side[2];
-    for (int h = 0; h < 2; ++h) {
-      const double x = c.x() + (h == 0 ? rb : -rb);
-      const int p0 = d.Point(x, c.y(), 0.0), pt = d.Point(x, c.y(), t);
-      bv0[h] = d.Add("VERTEX_POINT(''," + StepData::Ref(p0) + ")");
-      bvt[h] = d.Add("VERTEX_POINT(''," + StepData::Ref(pt) + ")");
-      side[h] = d.Edge(bv0[h], bvt[h], d.Add("LINE(''," + StepData::Ref(p0) + "," + StepData::Ref(up) + ")"), true);
+  std::vector<std::vector<ArcSegment>> chains;
+  if (e.bore_diameter_mm > 0) chains.push_back(BoreChain(e));
+  for (const Hole& h : e.holes) {
+    const double r = 0.5 * h.diameter_mm;
+    const Vec2<double> a = h.centre + Vec2<double>(r, 0.0), b = h.centre - Vec2<double>(r, 0.0);
+    chains.push_back({{a, b, 1.0}, {b, a, 1.0}});
+  }
+  for (const std::vector<ArcSegment>& chain : chains) {
+    const size_t m = chain.size();
+    std::vector<int> iv0(m), ivt(m), side(m), arc0(m), arct(m);
+    for (size_t k = 0; k < m; ++k) {
+      const Real x(chain[k].start.x()), y(chain[k].start.y());
+      const int p0 = d.Point(x, y, zero), pt = d.Point(x, y, top_z);
+      iv0[k] = d.Wrap("VERTEX_POINT('',", p0, ")");
+      ivt[k] = d.Wrap("VERTEX_POINT('',", pt, ")");
+      side[k] = d.Edge(iv0[k], ivt[k], d.Wrap("LINE('',", p0, up, ")"), true);
     }
-    // Half h runs counter-clockwise from vertex h to vertex 1 − h.
-    int arc0[2], arct[2];
-    for (int h = 0; h < 2; ++h) {
-      arc0[h] = d.Edge(bv0[h], bv0[1 - h], circle0, true);
-      arct[h] = d.Edge(bvt[h], bvt[1 - h], circlet, true);
-    }
-    const int cylinder = d.Wrap("CYLINDRICAL_SURFACE('',", c0, Real(rb), ")");
-    for (int h = 0; h < 2; ++h) {
-      // Seen from the axis (the solid's outside): back along the bottom half, up at vertex h,
-      // along the top half, down at vertex 1 − h.
-      const int bound = d.Bound({{arc0[h], false}, {side[h], true}, {arct[h], true}, {side[1 - h], false}}, true);
-      walls.push_back(d.Face(bound, cylinder, false));
+    for (size_t k = 0; k < m; ++k) {
+      const ArcSegment& a = chain[k];
+      const size_t n1 = (k + 1) % m;
+      int surface = 0;
+      bool same = false;
+      if (std::abs(a.bulge) < 1e-12) {
+        const Vec2<double> u = (a.end - a.start).normalized();
+        const int dir = d.Direction(u.x(), u.y(), 0.0);
+        const int normal = d.Direction(-u.y(), u.x(), 0.0);  // left of travel: towards the hole's axis
+        const int vec = d.Wrap("VECTOR('',", dir, ",1.)");
+        const int p0 = d.Point(a.start.x(), a.start.y(), 0.0), pt = d.Point(a.start.x(), a.start.y(), t);
+        arc0[k] = d.Edge(iv0[k], iv0[n1], d.Wrap("LINE('',", p0, vec, ")"), true);
+        arct[k] = d.Edge(ivt[k], ivt[n1], d.Wrap("LINE('',", pt, vec, ")"), true);
+        surface = d.Wrap("PLANE('',", d.Axis(p0, normal, dir), ")");
+        same = true;
+      } else {
+        const ArcGeometry g = ArcGeometryOf(a);  // counter-clockwise about its centre
+        const Real cx(g.centre.x()), cy(g.centre.y()), r(g.radius);
+        const int c0 = d.Axis(d.Point(cx, cy, zero), dz, dx), ct = d.Axis(d.Point(cx, cy, top_z), dz, dx);
+        arc0[k] = d.Edge(iv0[k], iv0[n1], d.Wrap("CIRCLE('',", c0, r, ")"), g.sweep > 0);
+        arct[k] = d.Edge(ivt[k], ivt[n1], d.Wrap("CIRCLE('',", ct, r, ")"), g.sweep > 0);
+        surface = d.Wrap("CYLINDRICAL_SURFACE('',", c0, r, ")");
+        same = false;  // the solid is outside the circle: the face's normal points to its axis
+      }
+      // Seen from the axis (the solid's outside): back along the bottom edge, up at its start,
+      // along the top edge, down at its end.
+      const int bound = d.Bound({{arc0[k], false}, {side[k], true}, {arct[k], true}, {side[n1], false}}, true);
+      walls.push_back(d.Face(bound, surface, same));
     }
     // The end faces' inner loops: clockwise seen from their outside (below for z = 0).
-    inner_bottom.push_back({{arc0[0], true}, {arc0[1], true}});
-    inner_top.push_back({{arct[1], false}, {arct[0], false}});
+    std::vector<std::pair<int, bool>> b0, bt;
+    for (size_t k = 0; k < m; ++k) b0.push_back({arc0[k], true});
+    for (size_t k = m; k-- > 0;) bt.push_back({arct[k], false});
+    inner_bottom.push_back(b0);
+    inner_top.push_back(bt);
   }
   // The end faces: z = 0 faces −z (its profile loop reversed), z = t faces +z.
   std::vector<std::pair<int, bool>> loop0, loopt;

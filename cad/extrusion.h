@@ -33,11 +33,19 @@ struct Extrusion {
   Vec2<double> bore_centre = Vec2<double>::Zero();  ///< also the cam's centre without a bore
   double bore_diameter_mm = 0.0;       ///< 0: no bore
   std::vector<Hole> holes;             ///< each inside the profile, clear of the bore and each other
+  /// A keyway in the bore (a hub's key slot, DIN 6885-1): width, and depth beyond the bore's radius
+  /// at the slot's centre line (the slot's bottom at bore radius + depth), along `keyway_angle_rad`
+  /// from the centre. 0: a plain bore.
+  double keyway_width_mm = 0.0, keyway_depth_mm = 0.0, keyway_angle_rad = 0.0;
   double thickness_mm = 10.0;
   std::string name = "cam";            ///< product name in the STEP file
   double mesh_deflection_mm = 0.002;   ///< STL chord deviation from the solid's faces
   bool step = true;                    ///< false: no STEP file (SolidOutput::step stays empty)
 };
+
+/// The bore's contour as a closed chain counter-clockwise about the bore's centre: two half circles,
+/// or with a keyway the bore's arc outside the slot and the slot's three sides. Empty: no bore.
+std::vector<ArcSegment> BoreChain(const Extrusion& e);
 
 /// The mesh's chord deviation: Extrusion::mesh_deflection_mm, raised above 4e-6 of the profile's
 /// bounding-box diagonal (the triangle count then stays that of a part of about half a metre,

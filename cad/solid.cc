@@ -172,9 +172,13 @@ TriangleMesh OcctMeshUnguarded(const Extrusion& e) {
   if (!face_maker.IsDone()) throw std::runtime_error("OCCT: no planar face on the cam profile");
   TopoDS_Face face = face_maker.Face();
   if (e.bore_diameter_mm > 0) {
-    gp_Circ circle(gp_Ax2(P(e.bore_centre), gp::DZ()), 0.5 * e.bore_diameter_mm);
-    BRepBuilderAPI_MakeWire hole(BRepBuilderAPI_MakeEdge(circle).Edge());
-    TopoDS_Wire w = hole.Wire();
+    TopoDS_Wire w;
+    if (e.keyway_width_mm > 0) {
+      w = WireOf(BoreChain(e));
+    } else {
+      gp_Circ circle(gp_Ax2(P(e.bore_centre), gp::DZ()), 0.5 * e.bore_diameter_mm);
+      w = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire();
+    }
     w.Reverse();  // inner wire: clockwise seen from +z
     BRepBuilderAPI_MakeFace with_hole(face, w);
     if (!with_hole.IsDone()) throw std::runtime_error("OCCT: the bore does not fit the cam face");
@@ -328,7 +332,7 @@ SolidOutput ExtrudeCam(const Extrusion& e) {
   // (cad/extrusion.h): no kernel, no process-wide lock.
   try {
     if (e.step) out.step = StepOfExtrusion(e);
-    out.faces = static_cast<int>(e.profile.size()) + 2 + 2 * (int(e.bore_diameter_mm > 0) + int(e.holes.size()));
+    out.faces = static_cast<int>(e.profile.size()) + 2 + static_cast<int>(BoreChain(e).size()) + 2 * int(e.holes.size());
     if (std::optional<TriangleMesh> mesh = MeshExtrusion(e, MeshDeflection(e), e.step)) {
       out.mesh = std::move(*mesh);
       return out;

@@ -251,6 +251,9 @@ Study Parse(const Node& root) {
   }
   if (in.bore_diameter_mm)
     s.bore_diameter_mm = ParseBoreDiameter(root["bore_diameter_mm"], 2 * cam.base_radius, "the base circle diameter");
+  if (in.keyway || in.bolt_circle)
+    s.mounting = ParseMounting(root, in.keyway, in.bolt_circle, s.bore_diameter_mm, 2 * cam.base_radius,
+                               "the base circle diameter");
   s.tolerances_given = in.tolerances.has_value();
   if (in.tolerances) {
     s.tolerances.radial = in.tolerances->profile_radial_um * 1e-3;
@@ -414,6 +417,7 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   g.initial_segments = 128;
   g.thickness_mm = s.cam_thickness_mm;
   g.bore_diameter_mm = s.bore_diameter_mm;
+  g.mounting = s.mounting;
   return FitPlanarCam(g, s.geometry);
 }
 

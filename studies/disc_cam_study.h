@@ -243,6 +243,8 @@ struct Input {
   std::optional<ArmDynamics> arm_dynamics;
   Analysis analysis;
   std::optional<double> cam_thickness_mm, bore_diameter_mm, cutter_radius_mm;
+  std::optional<KeywayInput> keyway;
+  std::optional<BoltCircleInput> bolt_circle;
   nlohmann::json geometry_files;
 
   /// The fields disc_cam and disc_cam_min_size share, in the file's order (all but study,
@@ -290,6 +292,9 @@ struct Input {
              Field().Positive().Unit("mm").Desc("the cam's thickness: profile.step/.stl are written only with it"));
     a->Visit("bore_diameter_mm", &bore_diameter_mm,
              Field().Positive().Unit("mm").Desc("the bore of the STEP/STL solid, inside the base circle (absent: none)"));
+    a->Visit("keyway", &keyway, Field().Desc("a key slot in the bore (the geometry files; docs/parts.md)"));
+    a->Visit("bolt_circle", &bolt_circle,
+             Field().Desc("equal through-holes on a circle about the cam's centre, inside the base circle"));
     a->Visit("cutter_radius_mm", &cutter_radius_mm,
              Field().Positive().Unit("mm").Desc(
                  "r_t ≤ r_f, a cutter for a CUTTER_PATH layer in the DXF (absent or r_t = r_f: the pitch curve is "
@@ -341,6 +346,7 @@ struct Study {
   /// Geometry files: cam thickness and bore of the solid [mm] (no STEP/STL without a thickness),
   /// a cutter radius for a cutter-path layer (0: none given), "geometry_files" options.
   double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
+  Mounting mounting;  ///< "keyway", "bolt_circle"
   GeometryFileOptions geometry;
 
   /// The limits of the verdict ("limits"; docs/disc_cam.md "Limits and verdict"). A limit not

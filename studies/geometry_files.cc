@@ -128,6 +128,52 @@ double ParseBoreDiameter(const Node& n, double limit_diameter_mm, const std::str
   return d;
 }
 
+Mounting ParseMounting(const Node& parent, const std::optional<KeywayInput>& keyway,
+                       const std::optional<BoltCircleInput>& bolt, double bore_mm, double limit_diameter_mm,
+                       const std::string& limit_name) {
+  Mounting m;
+  const double web = 1e-3 * limit_diameter_mm, limit_r = 0.5 * limit_diameter_mm - web;
+  const double rb = 0.5 * bore_mm;
+  double reach = rb;  // the bore's and keyway's farthest point from the centre
+  if (keyway) {
+    const Node n = parent["keyway"];
+    if (!(bore_mm > 0)) n.FailWith("a keyway needs the part's bore_diameter_mm");
+    if (!(keyway->width_mm < 0.999 * bore_mm))
+      n["width_mm"].FailWith("a keyway narrower than the bore (" + Format(bore_mm, 6) + " mm): below " +
+                             Format(0.999 * bore_mm, 6) + " mm would fit");
+    const double hw = 0.5 * keyway->width_mm, bottom = rb + keyway->depth_mm;
+    reach = std::hypot(bottom, hw);
+    if (!(reach < limit_r))
+      n["depth_mm"].FailWith("the keyway's corners reach " + Format(reach, 6) + " mm from the centre, beyond " +
+                             limit_name + " less a web (" + Format(limit_r, 6) + " mm): a depth below " +
+                             Format(std::sqrt(std::max(0.0, limit_r * limit_r - hw * hw)) - rb, 4) + " mm would fit");
+    m.keyway_width_mm = keyway->width_mm;
+    m.keyway_depth_mm = keyway->depth_mm;
+    m.keyway_angle_rad = keyway->angle_deg * kPi / 180.0;
+  }
+  if (bolt) {
+    const Node n = parent["bolt_circle"];
+    const double R = 0.5 * bolt->circle_diameter_mm, rh = 0.5 * bolt->hole_diameter_mm;
+    if (!(R + rh < limit_r))
+      n["circle_diameter_mm"].FailWith("the holes reach " + Format(R + rh, 6) + " mm from the centre, beyond " +
+                                       limit_name + " less a web (" + Format(limit_r, 6) + " mm): a circle below " +
+                                       Format(2 * (limit_r - rh), 6) + " mm diameter would fit");
+    if (!(R - rh > reach + web))
+      n["circle_diameter_mm"].FailWith("the holes come within " + Format(R - rh, 6) + " mm of the centre, inside the "
+                                       "bore or keyway (" + Format(reach, 6) + " mm) and a web: a circle above " +
+                                       Format(2 * (reach + web + rh), 6) + " mm diameter would fit");
+    const double pitch = 2 * R * std::sin(kPi / bolt->holes);
+    if (!(pitch > 2 * rh + web))
+      n["hole_diameter_mm"].FailWith("neighbouring holes overlap (pitch " + Format(pitch, 6) + " mm): holes below " +
+                                     Format(pitch - web, 6) + " mm would fit");
+    for (int j = 0; j < bolt->holes; ++j) {
+      const double a = bolt->angle_deg * kPi / 180.0 + 2 * kPi * j / bolt->holes;
+      m.holes.push_back({R * Vec2<double>(std::cos(a), std::sin(a)), bolt->hole_diameter_mm});
+    }
+  }
+  return m;
+}
+
 GeometryFileOptions ParseGeometryFiles(const Node& root) {
   GeometryFileOptions o;
   if (!root.Has("geometry_files")) return o;
@@ -164,6 +210,23 @@ nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,
 std::string StlFile(const cad::TriangleMesh& mesh, const std::string& name, const GeometryFileOptions& o) {
   return o.stl_ascii ? cad::AsciiStl(mesh, name) : cad::BinaryStl(mesh, name);
 }
+
+namespace {
+
+// The solid's bore, keyway, holes and thickness (the profile is the fit's).
+cad::Extrusion ExtrusionOf(const PlanarCamGeometry& cam) {
+  cad::Extrusion e;
+  e.bore_centre = cam.centre;
+  e.bore_diameter_mm = cam.bore_diameter_mm;
+  e.keyway_width_mm = cam.mounting.keyway_width_mm;
+  e.keyway_depth_mm = cam.mounting.keyway_depth_mm;
+  e.keyway_angle_rad = cam.mounting.keyway_angle_rad;
+  for (const cad::Hole& h : cam.mounting.holes) e.holes.push_back({cam.centre + h.centre, h.diameter_mm});
+  e.thickness_mm = cam.thickness_mm;
+  return e;
+}
+
+}  // namespace
 
 PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOptions& options) {
   PlanarCamFit f;
@@ -204,6 +267,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   }
   if (!cam.rollers.empty()) layers.push_back("ROLLERS");
   if (cam.bore_diameter_mm > 0) layers.push_back("BORE");
+  if (!cam.mounting.holes.empty()) layers.push_back("HOLES");
   layers.push_back("CENTRE_MARKS");
   layers.push_back("TEXT");
   f.profile_area_mm2 = exact.area_mm2;
@@ -237,9 +301,19 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
     f.solid = false;
     j["solid"] = "not written: the profile crosses itself (undercut), it bounds no solid";
   } else if (f.solid) {
-    const double bore_area = kPi * 0.25 * cam.bore_diameter_mm * cam.bore_diameter_mm;
+    double bore_area = std::abs(cad::EnclosedArea(cad::BoreChain(ExtrusionOf(cam))));
+    for (const cad::Hole& h : cam.mounting.holes) bore_area += kPi * 0.25 * h.diameter_mm * h.diameter_mm;
     j["thickness_mm"] = cam.thickness_mm;
     j["bore_diameter_mm"] = cam.bore_diameter_mm;
+    if (cam.mounting.keyway_width_mm > 0)
+      j["keyway"] = {{"width_mm", cam.mounting.keyway_width_mm}, {"depth_mm", cam.mounting.keyway_depth_mm},
+                     {"angle_deg", cam.mounting.keyway_angle_rad * 180.0 / kPi}};
+    if (!cam.mounting.holes.empty()) {
+      nlohmann::json holes = nlohmann::json::array();
+      for (const cad::Hole& h : cam.mounting.holes)
+        holes.push_back({{"x_mm", h.centre.x()}, {"y_mm", h.centre.y()}, {"diameter_mm", h.diameter_mm}});
+      j["holes"] = holes;
+    }
     j["solid_volume_mm3"] = (f.profile_area_mm2 - bore_area) * cam.thickness_mm;
     if (options.step) j["step"] = cam.file_stem + ".step";
     j["stl"] = cam.file_stem + ".stl";
@@ -270,7 +344,14 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   }
   if (cam.bore_diameter_mm > 0) {
     dxf.AddLayer("BORE", 7);
-    dxf.AddCircle("BORE", cam.centre, 0.5 * cam.bore_diameter_mm);
+    if (cam.mounting.keyway_width_mm > 0)
+      dxf.AddChain("BORE", cad::BoreChain(ExtrusionOf(cam)), true);
+    else
+      dxf.AddCircle("BORE", cam.centre, 0.5 * cam.bore_diameter_mm);
+  }
+  if (!cam.mounting.holes.empty()) {
+    dxf.AddLayer("HOLES", 7);
+    for (const cad::Hole& h : cam.mounting.holes) dxf.AddCircle("HOLES", cam.centre + h.centre, 0.5 * h.diameter_mm);
   }
   // Centre marks (cam axis, and each roller) and the text block below the drawing.
   dxf.AddLayer("CENTRE_MARKS", 3);
@@ -284,6 +365,8 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   const double mark = std::max(1.0, 0.08 * size);
   dxf.AddCentreMark("CENTRE_MARKS", cam.centre, mark);
   for (const auto& [c, r] : cam.rollers) dxf.AddCentreMark("CENTRE_MARKS", c, std::min(mark, r));
+  for (const cad::Hole& h : cam.mounting.holes)
+    dxf.AddCentreMark("CENTRE_MARKS", cam.centre + h.centre, std::min(mark, 0.75 * h.diameter_mm));
   dxf.AddLayer("TEXT", 7);
   const double h = std::max(1.0, 0.04 * size);
   const std::vector<std::string> lines = {
@@ -298,11 +381,8 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   out.Add(cam.file_stem + ".dxf", dxf.ToString());
 
   if (!f.solid) return;
-  cad::Extrusion e;
+  cad::Extrusion e = ExtrusionOf(cam);
   e.profile = f.profile.arcs;
-  e.bore_centre = cam.centre;
-  e.bore_diameter_mm = cam.bore_diameter_mm;
-  e.thickness_mm = cam.thickness_mm;
   e.name = cam.design_name + " " + cam.cam_name;
   e.step = options.step;
   cad::SolidOutput solid = cad::ExtrudeCam(e);

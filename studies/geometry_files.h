@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cad/arc_fit.h"
+#include "cad/extrusion.h"
 #include "cad/stl.h"
 #include "studies/archive.h"
 #include "studies/input.h"
@@ -53,6 +54,51 @@ struct GeometryFilesInput {
                  "the crank angle at which assembly.step places the parts (cycloid_ltca; docs/parts.md)"));
   }
 };
+
+/// "keyway": a hub's key slot in the bore (DIN 6885-1 gives width and depth t2 by shaft diameter).
+struct KeywayInput {
+  double width_mm = 0, depth_mm = 0, angle_deg = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("width_mm", &width_mm, Field().Required().Positive().Unit("mm").Desc("the slot's width, below the bore"));
+    a->Visit("depth_mm", &depth_mm,
+             Field().Required().Positive().Unit("mm").Desc(
+                 "the slot's depth beyond the bore's radius at its centre line (the hub's t2)"));
+    a->Visit("angle_deg", &angle_deg,
+             Field().In(-360.0, 360.0).Unit("deg").Desc("the slot's direction in the part's frame (absent: 0, along +x)"));
+  }
+};
+
+/// "bolt_circle": equal through-holes on a circle about the part's centre.
+struct BoltCircleInput {
+  int holes = 0;
+  double circle_diameter_mm = 0, hole_diameter_mm = 0, angle_deg = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("holes", &holes, Field().Required().AtLeast(2).AtMost(360, "at most 360 holes").Desc("number of holes"));
+    a->Visit("circle_diameter_mm", &circle_diameter_mm,
+             Field().Required().Positive().Unit("mm").Desc("the holes' pitch circle diameter"));
+    a->Visit("hole_diameter_mm", &hole_diameter_mm, Field().Required().Positive().Unit("mm").Desc("each hole's diameter"));
+    a->Visit("angle_deg", &angle_deg,
+             Field().In(-360.0, 360.0).Unit("deg").Desc("the first hole's angle in the part's frame (absent: 0, on +x)"));
+  }
+};
+
+/// A part's bore features beyond the plain bore: the keyway and the bolt circle's holes.
+struct Mounting {
+  std::vector<cad::Hole> holes;
+  double keyway_width_mm = 0, keyway_depth_mm = 0, keyway_angle_rad = 0;
+};
+
+/// Reads `parent`'s optional "keyway" and "bolt_circle" (declared by KeywayInput and
+/// BoltCircleInput, read as `keyway` and `bolt`) for a part of bore `bore_mm` (0: none) whose
+/// profile keeps outside the circle of `limit_diameter_mm` (named `limit_name`): a keyway needs the
+/// bore and stays inside that circle; the holes stay inside it, clear of the bore and keyway and
+/// of each other (a web of 0.1 % of the limit each side). @throws StudyError naming the field and
+/// what would fit.
+Mounting ParseMounting(const Node& parent, const std::optional<KeywayInput>& keyway,
+                       const std::optional<BoltCircleInput>& bolt, double bore_mm, double limit_diameter_mm,
+                       const std::string& limit_name);
 
 /// Reads the optional root block "geometry_files" (defaults when absent or true; false: none).
 GeometryFileOptions ParseGeometryFiles(const Node& root);
@@ -88,6 +134,7 @@ struct PlanarCamGeometry {
   std::vector<std::pair<Vec2<double>, double>> rollers;  ///< circles drawn on a ROLLERS layer
   double thickness_mm = 10.0;
   double bore_diameter_mm = 0.0;  ///< 0: no bore
+  Mounting mounting;              ///< keyway and bolt-circle holes (the solid's and the DXF's)
 };
 
 /// A cam's curves fitted with arcs (in Run: cheap) and what result.json says about them.

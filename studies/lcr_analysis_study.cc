@@ -111,6 +111,7 @@ PlanarCamGeometry CamGeometry(const Study& st, Side s) {
   if (c.rollers == c.lobes + 1) g.symmetry = c.lobes;
   g.thickness_mm = c.cam_thickness;
   g.bore_diameter_mm = input ? st.bore_diameter_input_mm : st.bore_diameter_output_mm;
+  g.mounting = input ? st.mounting_input : st.mounting_output;
   return g;
 }
 
@@ -144,14 +145,18 @@ Drawing AssemblyDrawing(const lcr::Reducer<double>& r, Side s, const lcr::AngleL
 namespace {
 
 // Optional "bore_diameter_mm" of a cam, inside the smallest profile diameter (ParseBoreDiameter).
-double ParseBoreDiameter(const Node& side, const lcr::Reducer<double>& r, Side s) {
-  if (!side.Has("bore_diameter_mm")) return 0.0;
-  const Node n = side["bore_diameter_mm"];
+double SmallestProfileRadius(const lcr::Reducer<double>& r, Side s) {
   const lcr::CamSide<double>& c = r.side(s);
   double rmin = kInf;
   for (int i = 0; i < 720; ++i)
     rmin = std::min(rmin, lcr::OffsetPoint(c, r.eccentricity, 2 * kPi * i / 720, c.roller_radius).norm());
-  return studies::ParseBoreDiameter(n, 2 * rmin, "the cam's smallest profile diameter");
+  return rmin;
+}
+
+double ParseBoreDiameter(const Node& side, const lcr::Reducer<double>& r, Side s) {
+  if (!side.Has("bore_diameter_mm")) return 0.0;
+  return studies::ParseBoreDiameter(side["bore_diameter_mm"], 2 * SmallestProfileRadius(r, s),
+                                    "the cam's smallest profile diameter");
 }
 
 // The finite-length contact model of each cam (studies/lcr_contact_input.h, model/lcr/contact3d_cycle.h).
@@ -621,6 +626,15 @@ Study Parse(const Node& root) {
   st.cutter_output_given = st.cutter_radius_output_mm != st.reducer.output.roller_radius;
   st.bore_diameter_input_mm = ParseBoreDiameter(reducer_node["input"], st.reducer, Side::kInput);
   st.bore_diameter_output_mm = ParseBoreDiameter(reducer_node["output"], st.reducer, Side::kOutput);
+  for (Side side : {Side::kInput, Side::kOutput}) {
+    const bool input = side == Side::kInput;
+    const LcrSideInput& si = input ? in.reducer.input : in.reducer.output;
+    if (si.keyway || si.bolt_circle)
+      (input ? st.mounting_input : st.mounting_output) =
+          ParseMounting(reducer_node[input ? "input" : "output"], si.keyway, si.bolt_circle,
+                        input ? st.bore_diameter_input_mm : st.bore_diameter_output_mm,
+                        2 * SmallestProfileRadius(st.reducer, side), "the cam's smallest profile diameter");
+  }
   st.geometry = ParseGeometryFiles(root);
   st.contact = ContactOf(in, root, st.reducer);
   CheckModifiedLife(in, root);

@@ -224,6 +224,7 @@ struct Study {
   double cutter_radius_input_mm = 0, cutter_radius_output_mm = 0;  ///< half the cutter diameters
   bool cutter_input_given = false, cutter_output_given = false;      ///< a cutter other than the roller
   double bore_diameter_input_mm = 0, bore_diameter_output_mm = 0;    ///< 0: no bore in the solids
+  Mounting mounting_input, mounting_output;                          ///< keyway and bolt circle of each cam
   GeometryFileOptions geometry;                                      ///< "geometry_files"
   LcrContactInput contact;  ///< "contact" and the rollers' "crowning"
   lcr::LoadModel load_model = lcr::LoadModel::kRigid;  ///< "analysis.load_model"

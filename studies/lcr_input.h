@@ -12,6 +12,7 @@
 #include "studies/bearing_life_io.h"
 #include "studies/input.h"
 #include "studies/lcr_contact_input.h"
+#include "studies/geometry_files.h"
 #include "studies/material_input.h"
 
 namespace camopt::studies {
@@ -21,6 +22,8 @@ struct LcrSideInput {
   int lobes = 0, rollers = 0;
   double turret_radius_mm = 0, roller_diameter_mm = 0, roller_length_mm = 0, cam_thickness_mm = 0;
   std::optional<double> cutter_diameter_mm, bore_diameter_mm;
+  std::optional<KeywayInput> keyway;
+  std::optional<BoltCircleInput> bolt_circle;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("lobes", &lobes, Field().Required().AtLeast(1).Desc("lobes of the cam"));
@@ -35,6 +38,9 @@ struct LcrSideInput {
     a->Visit("cutter_diameter_mm", &cutter_diameter_mm,
              Field().Positive().Unit("mm").Desc("cutter of the cam profile (absent: the roller diameter)"));
     a->Visit("bore_diameter_mm", &bore_diameter_mm, Field().Positive().Unit("mm").Desc("the cam's bore (absent: none)"));
+    a->Visit("keyway", &keyway, Field().Desc("a key slot in the bore (lcr_analysis's geometry files; docs/parts.md)"));
+    a->Visit("bolt_circle", &bolt_circle,
+             Field().Desc("equal through-holes on a circle about the cam's centre (lcr_analysis's geometry files)"));
   }
 };
 

@@ -328,6 +328,51 @@ def check_example(camopt, path, tmp, run):
             continue
         arcs = polyline_arcs(profiles[0])
         check(sum(1 for a in arcs if abs(a[2]) > 0) > len(arcs) // 2, f"{name}/{info['dxf']}: profile has no arcs")
+        # Bolt circle and keyway as declared (lcr_analysis cams, disc cam): the holes where the study
+        # puts them, the keyed bore's area in closed form, the solid's volume from the DXF's own curves.
+        if kind == "lcr_analysis":
+            spec = study["reducer"]["input" if part == "input_cam" else "output"]
+        elif kind == "disc_cam":
+            spec = study
+        else:
+            spec = {}
+        holes = [(e.dxf.center.x, e.dxf.center.y, e.dxf.radius) for e in msp if e.dxftype() == "CIRCLE" and e.dxf.layer == "HOLES"]
+        if "bolt_circle" in spec:
+            b = spec["bolt_circle"]
+            check(len(holes) == b["holes"], f"{name}/{part}: {len(holes)} holes, {b['holes']} declared")
+            for j in range(b["holes"]):
+                a = math.radians(b.get("angle_deg", 0)) + 2 * math.pi * j / b["holes"]
+                want = (b["circle_diameter_mm"] / 2 * math.cos(a), b["circle_diameter_mm"] / 2 * math.sin(a))
+                d = min((math.hypot(h[0] - want[0], h[1] - want[1]) for h in holes), default=math.inf)
+                check(d <= 1e-6, f"{name}/{part}: no hole within 1e-6 mm of {want}")
+            for h in holes:
+                check(abs(h[2] - b["hole_diameter_mm"] / 2) <= 1e-6, f"{name}/{part}: hole radius {h[2]}")
+        else:
+            check(not holes, f"{name}/{part}: holes not declared")
+        if "bore_diameter_mm" in spec and "solid_volume_mm3" in info:
+            bore_e = [e for e in msp if e.dxf.layer == "BORE"]
+            rb = spec["bore_diameter_mm"] / 2
+            if "keyway" in spec:
+                k = spec["keyway"]
+                check(len(bore_e) == 1 and bore_e[0].dxftype() == "LWPOLYLINE", f"{name}/{part}: keyed bore polyline")
+                hw = k["width_mm"] / 2
+                x0 = math.sqrt(rb * rb - hw * hw)
+                theta = 2 * math.asin(hw / rb)
+                keyed = math.pi * rb * rb + k["width_mm"] * (rb + k["depth_mm"] - x0) - rb * rb * (theta - math.sin(theta)) / 2
+                bore_area = abs(bulge_polyline_area(polyline_arcs(bore_e[0]))) if bore_e else math.inf
+                print(f"{name} {part}: keyed bore area from the DXF {bore_area:.9f} mm2, closed form {keyed:.9f}")
+                check(abs(bore_area - keyed) <= 1e-9 * keyed, f"{name}/{part}: keyed bore area {bore_area} vs {keyed}")
+                # the slot along its declared direction: its bottom's midpoint at rb + depth
+                a = math.radians(k.get("angle_deg", 0))
+                pts = bore_e[0].get_points("xy")
+                bottom = max(p[0] * math.cos(a) + p[1] * math.sin(a) for p in pts)
+                check(abs(bottom - (rb + k["depth_mm"])) <= 1e-9, f"{name}/{part}: keyway bottom at {bottom}")
+            else:
+                keyed = math.pi * rb * rb
+            vol = (abs(bulge_polyline_area(arcs)) - keyed - sum(math.pi * h[2] ** 2 for h in holes)) * info["thickness_mm"]
+            bound = bulge_polyline_length(arcs) * tol_mm * info["thickness_mm"]
+            print(f"{name} {part}: solid volume from the DXF {vol:.6f} mm3, result.json {info['solid_volume_mm3']:.6f}")
+            check(abs(vol - info["solid_volume_mm3"]) <= bound, f"{name}/{part}: solid volume {vol} vs {info['solid_volume_mm3']}")
         cutter = [e for e in msp if e.dxf.layer == "CUTTER_PATH"]
         pitch = [e for e in msp if e.dxf.layer == "PITCH_CURVE"]
         check(not (cutter and "cutter_path" in info), f"{name}: cutter path written and noted as omitted")

@@ -111,6 +111,38 @@ TEST(PartSolids, HolesOffAPatternGoToTheKernelsMesherAndBadHolesAreRefused) {
   EXPECT_THROW(cad::StepOfExtrusion(outside), std::invalid_argument);
 }
 
+// A keyed bore (DIN 6885-1 hub slot 6 × 2.8 in a 20 mm bore) with and without six bolt holes: OCCT
+// reads the STEP solid with the closed form's volume — the circle minus the keyed bore
+// π r² + w (r + t2 − x0) − r²(θ − sin θ)/2 (x0 = sqrt(r² − w²/4), θ = 2 asin(w/2r)) minus the holes —
+// and the mesh (without the kernel) is closed and within the chords' bound of it.
+TEST(PartSolids, KeyedBoreAndBoltCircleReadBackWithTheClosedFormsVolume) {
+  for (const bool holes : {false, true}) {
+    cad::Extrusion e;
+    e.profile = studies::CircleChain(Vec2<double>::Zero(), 30.0);
+    e.bore_diameter_mm = 20.0;
+    e.keyway_width_mm = 6.0;
+    e.keyway_depth_mm = 2.8;
+    e.keyway_angle_rad = 0.4;
+    e.thickness_mm = 5.0;
+    if (holes)
+      for (int j = 0; j < 6; ++j)
+        e.holes.push_back({20.0 * Vec2<double>(std::cos(kPi / 6 + j * kPi / 3), std::sin(kPi / 6 + j * kPi / 3)), 5.5});
+    const double r = 10.0, w = 6.0, x0 = std::sqrt(r * r - 9.0), theta = 2 * std::asin(0.3);
+    const double keyed = kPi * r * r + w * (r + 2.8 - x0) - r * r * (theta - std::sin(theta)) / 2;
+    const double face = kPi * 900.0 - keyed - (holes ? 6 * kPi * 2.75 * 2.75 : 0.0);
+    const cad::StepReadBack back = cad::ReadStep(cad::StepOfExtrusion(e));
+    EXPECT_EQ(back.solids, 1);
+    EXPECT_TRUE(back.valid) << "holes " << holes;
+    EXPECT_EQ(back.faces, 2 + 2 + 4 + (holes ? 12 : 0));
+    EXPECT_NEAR(back.volume_mm3 / (face * 5.0) - 1, 0.0, 1e-8) << "holes " << holes;
+    const std::optional<cad::TriangleMesh> mesh = cad::MeshExtrusion(e, 0.002);
+    ASSERT_TRUE(mesh.has_value()) << "holes " << holes;
+    EXPECT_TRUE(ClosedAndOriented(*mesh));
+    const double perimeter = 2 * kPi * 30.0 + 2 * kPi * r + 2 * 2.8 + w + (holes ? 6 * 2 * kPi * 2.75 : 0.0);
+    EXPECT_LE(std::abs(MeshVolume(*mesh) - face * 5.0), perimeter * 0.002 * 5.0) << "holes " << holes;
+  }
+}
+
 // Two parts, three placements: OCCT's XDE reads an assembly whose components carry the names, the
 // parts and the placements written, and a placed part's centroid is R(angle) c + origin.
 TEST(PartAssembly, XdeReadsComponentsWithTheirPlacements) {
