@@ -900,6 +900,11 @@ PartIds AddExtrusion(StepData& d, StepContext& ctx_ids, const Extrusion& e, cons
       ivt[k] = d.Wrap("VERTEX_POINT('',", pt, ")");
       side[k] = d.Edge(iv0[k], ivt[k], d.Wrap("LINE('',", p0, up, ")"), true);
     }
+    struct {
+      Vec2<double> centre = Vec2<double>::Zero();
+      double radius = 0;
+      int bottom = 0, top = 0, surface = 0;
+    } circle;
     for (size_t k = 0; k < m; ++k) {
       const ArcSegment& a = chain[k];
       const size_t n1 = (k + 1) % m;
@@ -917,11 +922,17 @@ PartIds AddExtrusion(StepData& d, StepContext& ctx_ids, const Extrusion& e, cons
         same = true;
       } else {
         const ArcGeometry g = ArcGeometryOf(a);  // counter-clockwise about its centre
-        const Real cx(g.centre.x()), cy(g.centre.y()), r(g.radius);
-        const int c0 = d.Axis(d.Point(cx, cy, zero), dz, dx), ct = d.Axis(d.Point(cx, cy, top_z), dz, dx);
-        arc0[k] = d.Edge(iv0[k], iv0[n1], d.Wrap("CIRCLE('',", c0, r, ")"), g.sweep > 0);
-        arct[k] = d.Edge(ivt[k], ivt[n1], d.Wrap("CIRCLE('',", ct, r, ")"), g.sweep > 0);
-        surface = d.Wrap("CYLINDRICAL_SURFACE('',", c0, r, ")");
+        // Arcs of one circle (a hole's two halves) share its circles and its cylinder.
+        if (!(circle.surface && (g.centre - circle.centre).norm() <= 1e-12 * g.radius &&
+              std::abs(g.radius - circle.radius) <= 1e-12 * g.radius)) {
+          const Real cx(g.centre.x()), cy(g.centre.y()), r(g.radius);
+          const int c0 = d.Axis(d.Point(cx, cy, zero), dz, dx), ct = d.Axis(d.Point(cx, cy, top_z), dz, dx);
+          circle = {g.centre, g.radius, d.Wrap("CIRCLE('',", c0, r, ")"), d.Wrap("CIRCLE('',", ct, r, ")"),
+                    d.Wrap("CYLINDRICAL_SURFACE('',", c0, r, ")")};
+        }
+        arc0[k] = d.Edge(iv0[k], iv0[n1], circle.bottom, g.sweep > 0);
+        arct[k] = d.Edge(ivt[k], ivt[n1], circle.top, g.sweep > 0);
+        surface = circle.surface;
         same = false;  // the solid is outside the circle: the face's normal points to its axis
       }
       // Seen from the axis (the solid's outside): back along the bottom edge, up at its start,

@@ -405,6 +405,19 @@ struct CrossField {
   std::string kind, path, message, why;
 };
 const std::vector<CrossField> kCrossField = {
+    {"cycloid_ltca", "/grinding", "does not exceed the tooth space's depth",
+     "the form wheel's radius against the drive's tooth-space depth (docs/parts.md)"},
+    {"disc_cam", "/bolt_circle", "would fit", "a bolt circle inside the base circle, outside the bore and keyway, holes apart"},
+    {"disc_cam", "/keyway", "a keyway needs the part's bore", "a keyway needs bore_diameter_mm"},
+    {"disc_cam_min_size", "/bolt_circle", "would fit",
+     "a bolt circle inside the base circle, outside the bore and keyway, holes apart"},
+    {"disc_cam_min_size", "/keyway", "a keyway needs the part's bore", "a keyway needs bore_diameter_mm"},
+    {"lcr_analysis", "/reducer/input/bolt_circle", "would fit",
+     "a bolt circle inside the cam's smallest profile circle, outside the bore and keyway, holes apart"},
+    {"lcr_analysis", "/reducer/output/bolt_circle", "would fit",
+     "a bolt circle inside the cam's smallest profile circle, outside the bore and keyway, holes apart"},
+    {"lcr_analysis", "/reducer/input/", "a keyway needs the part's bore", "a keyway needs bore_diameter_mm"},
+    {"lcr_analysis", "/reducer/output/", "a keyway needs the part's bore", "a keyway needs bore_diameter_mm"},
     {"disc_cam", "/motion/0/control_points_mm", "needs at least", "a B-spline's degree below its number of control points"},
     {"globoidal_cam", "/contact/exponent", "static contact penetration",
      "the turret torque against the contact law's static penetration (exponent, stiffness, roller radius)"},
