@@ -51,7 +51,7 @@ RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, Bearin
                                         bool modified_life) {
   RollingBearingRating b;
   b.kind = kind;
-  std::set<std::string> known = {"dynamic_rating_N", "static_rating_N"};
+  std::set<std::string> known = {"dynamic_rating_N", "static_rating_N", "designation"};
   if (with_kind) known.insert("kind");
   if (modified_life) known.insert({"fatigue_load_limit_N", "pitch_diameter_mm"});
   node.CheckKnownFields(known);
@@ -60,7 +60,9 @@ RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, Bearin
     if (k != "ball" && k != "roller") node["kind"].Fail("one of ball, roller");
     b.kind = k == "ball" ? BearingKind::kBall : BearingKind::kRoller;
   }
-  return ParseRatingValues(node, b.kind, why);
+  RollingBearingRating r = ParseRatingValues(node, b.kind, why);
+  if (node.Has("designation")) r.designation = node["designation"].String();
+  return r;
 }
 
 namespace {

@@ -33,6 +33,7 @@ struct ModifiedLifeRating {
 /// and D_pw of the modified life when given.
 struct RollingBearingRating {
   BearingKind kind = BearingKind::kRoller;
+  std::string designation;  ///< the catalogue's designation, for the bill of materials (may be empty)
   double dynamic_N = 0.0, static_N = 0.0;
   std::optional<ModifiedLifeRating> modified;
 };

@@ -60,7 +60,9 @@ ojson RatingProperties(bool modified_life) {
              {"static_rating_N",
               {{"description", "C₀, the basic static load rating, for the static safety s₀ = C₀ / P₀ (absent: none) [N]"},
                {"type", "number"},
-               {"exclusiveMinimum", 0}}}};
+               {"exclusiveMinimum", 0}}},
+             {"designation",
+              {{"description", "the catalogue's designation, in bom.csv (docs/parts.md)"}, {"type", "string"}}}};
   if (modified_life) {
     p["fatigue_load_limit_N"] = {{"description", std::string(kFatigueLoadLimitDesc) + " [N]"},
                                  {"type", "number"},

@@ -264,6 +264,11 @@ Study Parse(const Node& root) {
                      "absent)");
     s.torsional = ParseTorsionalDynamics(block, *in.torsional_dynamics);
   }
+  // The rated bearings' catalogue designations, for bom.csv (validated with their blocks).
+  for (const auto& [block, into] : {std::pair<const char*, std::string*>{"crank_bearing", &s.crank_bearing_designation},
+                                    {"pins", &s.pin_designation}})
+    if (root.Has(block) && root[block].json().is_object() && root[block].Has("designation"))
+      *into = root[block]["designation"].String();
   if (in.grinding) {
     try {
       s.grinding = cycloid::FormGrindingWheel(s.drive, in.grinding->wheel_radius_mm, in.grinding->tolerance_um * 1e-3);
@@ -996,6 +1001,8 @@ Result Run(const Study& s, const RunContext& ctx) {
       parts.density_kg_m3 = s.density_kg_m3;
       parts.material = "steel (E " + Format(s.material.youngs_modulus_MPa, 6) + " MPa)";
       parts.crank_angle_rad = s.geometry.assembly_crank_angle_deg * kPi / 180.0;
+      parts.crank_bearing_designation = s.crank_bearing_designation;
+      parts.pin_designation = s.pin_designation;
       r.parts = cycloid_common::CycloidParts(parts, r.tooth_files);
     }
   }

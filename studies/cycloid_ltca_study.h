@@ -358,6 +358,8 @@ struct Study {
   /// "grinding": the form wheel, computed while parsing (a wheel too small is an input error).
   std::optional<cycloid::FormWheel> grinding;
   double grinding_tolerance_um = 0;
+  /// crank_bearing.designation and pins.designation (bom.csv); empty when not given.
+  std::string crank_bearing_designation, pin_designation;
 };
 
 using cycloid_common::ElementLife;

@@ -74,6 +74,7 @@ PartsSet CycloidParts(const CycloidPartsInput& in, const PlanarCamFit& tooth) {
                     Format(d.roller_position_radius_mm, 6) + " mm";
     p.material = in.material;
     p.count = d.rollers;
+    p.designation = in.pin_designation;
     p.solid.profile = CircleChain(Vec2<double>::Zero(), d.roller_radius_mm);
     p.solid.thickness_mm = stack;
     p.volume_mm3 = circle_area(d.roller_radius_mm) * stack;
@@ -149,8 +150,8 @@ PartsSet CycloidParts(const CycloidPartsInput& in, const PlanarCamFit& tooth) {
     p.name = "crank";
     p.description = "crank eccentric, diameter " + Format(in.bore_diameter_mm, 6) + " mm, eccentricity " +
                     Format(d.eccentricity_mm, 6) + " mm (one per disc, each at its disc's phase)";
-    p.note = "the eccentric is drawn at the discs' bore diameter: the crank bearing between them and the shaft are "
-             "not drawn";
+    p.note = "the eccentric is drawn at the discs' bore diameter: the crank bearing between them (its designation in "
+             "this row) and the shaft are not drawn";
     p.material = in.material;
     p.designation = in.crank_bearing_designation;
     p.count = in.discs;

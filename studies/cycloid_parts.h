@@ -34,6 +34,7 @@ struct CycloidPartsInput {
   std::string material = "steel";
   double crank_angle_rad = 0.0;           ///< the assembly's state
   std::string crank_bearing_designation;  ///< BOM (empty: none given)
+  std::string pin_designation;            ///< the ring pins' (a pin as a rated roller), BOM
 };
 
 /// The parts from the disc's fitted profile (`tooth`: arcs of the model's profile, counter-clockwise,

@@ -204,6 +204,7 @@ nlohmann::json ThreeDiscStudy() {
     "output_mechanism": {"pins": 6, "pin_circle_radius_mm": 32, "pin_radius_mm": 4, "hole_radius_mm": 6.52,
                          "pin_support": "both_ends", "pin_span_mm": 40},
     "geometry_files": {"assembly_crank_angle_deg": 37},
+    "crank_bearing": {"kind": "roller", "dynamic_rating_N": 30000, "designation": "crank bearing X-24"},
     "analysis": {"crank_angles_per_mesh_period": 3, "grid": [8, 8]}
   })");
 }
@@ -316,6 +317,8 @@ TEST(CycloidParts, ThreeDiscsMeshThePinsAtTheAssemblysCrankAngleAndWeighWhatThei
   }
   EXPECT_EQ(parts["ring_pins"]["count"], n1);
   EXPECT_EQ(parts["crank"]["count"], N);
+  EXPECT_EQ(parts["crank"]["designation"], "crank bearing X-24");
+  EXPECT_NE(files.at("bom.csv").find(",crank bearing X-24,"), std::string::npos);
   EXPECT_EQ(parts["output_pins"]["count"], Zw);
   while (std::getline(bom, line)) --rows;
   EXPECT_EQ(rows, -1);  // one row per part and the total
