@@ -16,6 +16,7 @@
 #include <cmath>
 #include <vector>
 
+#include "model/common/profile_deviation.h"
 #include "model/cycloid/tooth_profile.h"
 
 namespace camopt::cycloid {
@@ -52,9 +53,15 @@ constexpr double kMinArmFraction = 0.02;
 /// Solves eq. (12) for roller i at crank angle φ [rad] with the tooth of `d` and a roller whose
 /// centre, from the disc centre in the fixed frame, is `rel` (a u(ψ_i) − e u(φ) for the nominal
 /// drive) and whose radius exceeds the generating circle's ρ' by `drho` (ρ − ρ' nominally): the
-/// form a drive with deviations needs (model/cycloid/transmission_error.h).
+/// form a drive with deviations needs (model/cycloid/transmission_error.h). `shape` (nullptr:
+/// none) adds a normal deviation d(t) of the tooth profile, a function of the curve parameter
+/// (model/common/profile_deviation.h): the roller centre then lies on the normal of X' at the
+/// offset ρ − ρ' + d(t), the first-order contact of a circle with the profile moved by d along its
+/// normal (the envelope theorem: the distance to the moved profile falls by d at the closest
+/// point; the normal's tilt by d'/|P'| changes it only at second order).
 template <typename T>
-PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho) {
+PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho,
+                            const profile::NormalDeviation<T>* shape = nullptr) {
   using std::abs;
   PairGeometry<T> g;
   g.roller = i;
@@ -66,10 +73,13 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
   for (int it = 0; it < 30; ++it) {
     const ProfilePoint<T> p = ToothProfile(d, t);
     const Vec2<T> c = Rotate(rel, T(crank / double(d.teeth) - beta));  // as RollerCentreInDisc
-    const Vec2<T> f = c - p.centre - drho * p.normal;
-    // dF/dβ = −J C;  dF/dt = −|X'_t| T̂ (1 + (ρ − ρ') κ)  (dN/dt = κ |X'_t| T̂).
+    T dn(0.0), dn_t(0.0);
+    if (shape) dn = (*shape)(t, &dn_t);
+    const T off = drho + dn;
+    const Vec2<T> f = c - p.centre - off * p.normal;
+    // dF/dβ = −J C;  dF/dt = −|X'_t| T̂ (1 + (ρ − ρ' + d) κ) − d' N  (dN/dt = κ |X'_t| T̂).
     const Vec2<T> fb = -Perp(c);
-    const Vec2<T> ft = -p.speed * (T(1.0) + drho * p.centre_curvature) * p.tangent;
+    const Vec2<T> ft = -p.speed * (T(1.0) + off * p.centre_curvature) * p.tangent - dn_t * p.normal;
     const T det = Cross(ft, fb);
     if (!(abs(Value(det)) > 1e-300)) break;
     // Solve [ft fb] (dt, dβ) = −f by Cramer's rule.
@@ -95,7 +105,7 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
   const ProfilePoint<T> p = ToothProfile(d, t);
   g.parameter = t;
   g.contact_rotation = beta;
-  g.point = p.point;
+  g.point = shape ? Vec2<T>(p.point + (*shape)(t, nullptr) * p.normal) : p.point;
   g.normal = p.normal;
   g.arm_mm = Cross(p.centre, p.normal);
   g.profile_curvature = p.curvature;
