@@ -339,6 +339,15 @@ nlohmann::ordered_json Input::SchemaRules() {
   AddLubricationSchemaRules(rules);
   // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
   for (const auto& rule : ModifiedLifeSchemaRules({{"crank_bearing"}, {"pins"}})) rules["allOf"].push_back(rule);
+  // The measured disc is one of the drive's: disc_k with k <= discs (absent: 1). Each rule holds
+  // for every discs <= N, so that together they leave disc_1 … disc_discs.
+  for (int n = 1; n < 8; ++n) {
+    nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+    for (int k = 1; k <= n; ++k) parts.push_back("disc_" + std::to_string(k));
+    rules["allOf"].push_back(
+        {{"if", {{"properties", {{"discs", {{"maximum", n}}}}}}},
+         {"then", {{"properties", {{"measured_profile", {{"properties", {{"part", {{"enum", parts}}}}}}}}}}}});
+  }
   return rules;
 }
 
