@@ -23,6 +23,9 @@
 #include "model/cycloid/transmission_error.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_ltca_study.h"
+#include "studies/lcr_analysis_study.h"
+#include "model/lcr/profile.h"
+#include "model/lcr/transmission_error.h"
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
@@ -461,6 +464,139 @@ TEST(MeasuredProfile, CycloidCommandLine) {
   for (int i = 0; i < 100; ++i) few += std::to_string(s.nominal[i].x()) + "," + std::to_string(s.nominal[i].y()) + "\n";
   bad("gap", few, "points covering the whole profile");
   bad("part", Csv(s, "points"), "a disc of the drive, disc_1 to disc_1", "disc_2");
+}
+
+// ---------------------------------------------------------------------------------------------
+// LCR: LCR II (the paper's) at 80 N·m, compliant load sharing, as studies/examples/lcr_ii_tolerances.json.
+
+json LcrStudy() {
+  return json::parse(R"({"study": "lcr_analysis", "name": "LCR II",
+    "reducer": {"eccentricity_mm": 2,
+                "input": {"lobes": 12, "rollers": 13, "turret_radius_mm": 37, "roller_diameter_mm": 12,
+                          "roller_length_mm": 10, "cam_thickness_mm": 8},
+                "output": {"lobes": 14, "rollers": 15, "turret_radius_mm": 42, "roller_diameter_mm": 12,
+                           "roller_length_mm": 10, "cam_thickness_mm": 8}},
+    "material": {"youngs_modulus_GPa": 206, "poisson_ratio": 0.3},
+    "load": {"output_torque_Nm": 80, "friction_coefficient": 0.05},
+    "analysis": {"angle_steps": 36, "load_model": "compliant", "evaluate": ["forces"]}})");
+}
+
+// Nominal rows of a cam profile from the model's OffsetPoint (the cam frame of its DXF) with
+// their outward normals (−InwardNormal), and a known deviation.
+Synthetic CamSample(const lcr::CamSide<double>& c, double e, int n, const std::function<double(double, Vec2<double>)>& dev) {
+  Synthetic s;
+  for (int i = 0; i < n; ++i) {
+    const double psi = 2 * kPi * (i + 0.5) / n;
+    s.t.push_back(psi);
+    s.nominal.push_back(lcr::OffsetPoint(c, e, psi, c.roller_radius));
+    s.normal.push_back(-lcr::InwardNormal(c, e, psi));
+    s.d.push_back(dev(psi, s.normal.back()));
+  }
+  return s;
+}
+
+json RunLcrMeasured(const std::string& tag, const std::string& part, const std::string& kind, const std::string& csv) {
+  const auto dir = TempDir("lcr-measured-" + tag);
+  WriteFile(dir / "points.csv", csv);
+  json j = LcrStudy();
+  j["measured_profile"] = {{"part", part}, {"file", "points.csv"}, {"kind", kind}};
+  const std::string file = (dir / "study.json").string();
+  const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(studies::Node(&j, file, ""));
+  return studies::lcr_analysis::Run(st, studies::RunContext{file, true}).measured;
+}
+
+// A uniform offset δ of the output cam: ISO 1101 deviation 2δ, and the transmission error of the
+// existing tolerance model with the cam's `profile` offset δ (lcr::ExactTransmissionError at the
+// same 720 angles), both kinds of file.
+TEST(MeasuredProfile, LcrUniformOffsetIsTheToleranceModelsProfileOffset) {
+  const lcr::Reducer<double> r = camopt::testing::LcrII();
+  const double delta = 0.002;
+  const Synthetic s = CamSample(r.output, r.eccentricity, 1500, [&](double, Vec2<double>) { return delta; });
+  lcr::Material mat;
+  mat.youngs_modulus_MPa = 206000;
+  mat.poisson_ratio = 0.3;
+  lcr::Deviations<double> dev;
+  dev.profile[1] = delta;
+  std::vector<double> theta;
+  for (int i = 0; i < 720; ++i) theta.push_back(2 * kPi * i / 720);
+  const std::vector<double> te = lcr::ExactTransmissionError(r, mat, dev, 80000.0, theta);
+  const auto [lo, hi] = std::minmax_element(te.begin(), te.end());
+  for (const std::string kind : {"points", "normal_deviation"}) {
+    SCOPED_TRACE(kind);
+    const json m = RunLcrMeasured("uniform-" + kind, "output_cam", kind, Csv(s, kind));
+    EXPECT_NEAR(m["iso1101_profile_deviation_um"].get<double>(), 2 * delta * 1e3, 1e-6);
+    const json& c = m["compliant"];
+    EXPECT_NEAR(c["transmission_error_max_arcsec"].get<double>(), *hi * kArcsec, 1e-6);
+    EXPECT_NEAR(c["transmission_error_min_arcsec"].get<double>(), *lo * kArcsec, 1e-6);
+    EXPECT_LT(*hi * kArcsec, -1.0);
+    std::printf("lcr uniform %s: zone %.9f um; TE %.9f..%.9f arcsec, tolerance model %.9f..%.9f\n", kind.c_str(),
+                m["iso1101_profile_deviation_um"].get<double>(), c["transmission_error_min_arcsec"].get<double>(),
+                c["transmission_error_max_arcsec"].get<double>(), *lo * kArcsec, *hi * kArcsec);
+  }
+}
+
+// The input cam's profile translated by ε in its frame: to first order d = ε·n; exactly, the input
+// cam's centre moved by R(φ)ε in the fixed frame (φ the cam's turn): the existing model's gaps
+// with that centre shift on the input side only (RollerGaps' bearing shift; the output cam stays),
+// in the compliant equilibrium as CompliantAtAngle solves it (the turrets' springs).
+TEST(MeasuredProfile, LcrEccentricCamIsACentreShift) {
+  const lcr::Reducer<double> r = camopt::testing::LcrII();
+  const Vec2<double> eps(0.002, 0.0015);
+  const Synthetic s = CamSample(r.input, r.eccentricity, 2000, [&](double, Vec2<double> n) { return eps.dot(n); });
+  const json m = RunLcrMeasured("eccentric", "input_cam", "points", Csv(s, "points", eps.x(), eps.y()));
+  double zone = 0;
+  for (double v : s.d) zone = std::max(zone, 2 * std::abs(v));
+  EXPECT_NEAR(m["iso1101_profile_deviation_um"].get<double>(), zone * 1e3, 0.005);
+  lcr::Material mat;
+  mat.youngs_modulus_MPa = 206000;
+  mat.poisson_ratio = 0.3;
+  double lo = INFINITY, hi = -INFINITY;
+  const double t = lcr::LoadedArmSign(r, lcr::Side::kOutput) * 80000.0;
+  const double rho = rigidity::FixedTurretTorqueRatio(r);
+  for (int i = 0; i < 720; ++i) {
+    const double th = 2 * kPi * i / 720, phi = lcr::CamSpeedRatio(r) * th;
+    rigidity::TurretSpring<double> a{{}, r.input.contact_length(), mat.composite_modulus_MPa(), 0.0, 0.0};
+    rigidity::TurretSpring<double> b{{}, r.output.contact_length(), mat.composite_modulus_MPa(), 0.0, 0.0};
+    for (const auto& c : lcr::RollerContacts(r, lcr::Side::kInput, th)) a.arms.push_back(c.arm);
+    for (const auto& c : lcr::RollerContacts(r, lcr::Side::kOutput, th)) b.arms.push_back(c.arm);
+    a.gaps = lcr::RollerGaps(r, lcr::Side::kInput, lcr::Deviations<double>{}, th, Vec2<double>(Rotate(eps, phi)));
+    b.gaps = lcr::RollerGaps(r, lcr::Side::kOutput, lcr::Deviations<double>{}, th, Vec2<double>(0.0, 0.0));
+    const double rot = b.Rotation(t) - rho * a.Rotation(-rho * t);
+    const double te = rot - lcr::CompliantAtAngle<double>(r, mat, th, t, nullptr).output_rotation;
+    lo = std::min(lo, te), hi = std::max(hi, te);
+  }
+  const json& c = m["compliant"];
+  const double range = (hi - lo) * kArcsec;
+  EXPECT_GT(range, 1.0);
+  EXPECT_NEAR(c["transmission_error_max_arcsec"].get<double>(), hi * kArcsec, 0.02 * range);
+  EXPECT_NEAR(c["transmission_error_min_arcsec"].get<double>(), lo * kArcsec, 0.02 * range);
+  std::printf("lcr eccentric: zone %.6f um (2 max|eps.n| %.6f); TE %.6f..%.6f arcsec, centre shift %.6f..%.6f\n",
+              m["iso1101_profile_deviation_um"].get<double>(), zone * 1e3,
+              c["transmission_error_min_arcsec"].get<double>(), c["transmission_error_max_arcsec"].get<double>(),
+              lo * kArcsec, hi * kArcsec);
+}
+
+// The command line for lcr_analysis: a measured cam runs (exit 0, "measured"), inspection files of
+// both cams; a missing file is exit 2.
+TEST(MeasuredProfile, LcrCommandLine) {
+  const lcr::Reducer<double> r = camopt::testing::LcrII();
+  const Synthetic s = CamSample(r.output, r.eccentricity, 800, [&](double, Vec2<double>) { return 0.001; });
+  const auto dir = TempDir("lcr-measured-cli");
+  WriteFile(dir / "m.csv", Csv(s, "normal_deviation"));
+  json study = LcrStudy();
+  study["measured_profile"] = {{"part", "output_cam"}, {"file", "m.csv"}, {"kind", "normal_deviation"}};
+  study["inspection"] = {{"spacing_mm", 1}, {"tolerance_um", 5}};
+  WriteFile(dir / "study.json", study.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const json result = json::parse(ReadFile(dir / "out" / "result.json"));
+  ASSERT_TRUE(result.contains("measured"));
+  EXPECT_NEAR(result["measured"]["iso1101_profile_deviation_um"].get<double>(), 2.0, 1e-6);
+  EXPECT_TRUE(fs::exists(dir / "out" / "inspection" / "input_cam.csv"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "inspection" / "output_cam.csv"));
+  json b = LcrStudy();
+  b["measured_profile"] = {{"part", "input_cam"}, {"file", (dir / "none.csv").string()}, {"kind", "points"}};
+  camopt::testing::ExpectStudyRejected(b, "lcr-measured-missing", "/measured_profile/file", "expected a readable CSV file");
 }
 
 }  // namespace
