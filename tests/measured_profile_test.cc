@@ -24,6 +24,8 @@
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_ltca_study.h"
 #include "studies/lcr_analysis_study.h"
+#include "studies/disc_cam_study.h"
+#include "model/disc_cam/disc_cam.h"
 #include "model/lcr/profile.h"
 #include "model/lcr/transmission_error.h"
 #include "tests/reference_designs.h"
@@ -597,6 +599,128 @@ TEST(MeasuredProfile, LcrCommandLine) {
   json b = LcrStudy();
   b["measured_profile"] = {{"part", "input_cam"}, {"file", (dir / "none.csv").string()}, {"kind", "points"}};
   camopt::testing::ExpectStudyRejected(b, "lcr-measured-missing", "/measured_profile/file", "expected a readable CSV file");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Disc cam: Rzine et al.'s translating roller example (studies/examples/disc_cam_translating.json:
+// r_b 40, r_f 10, offset e 12 mm, cycloidal rise 24 mm over 120°, dwell 50°, return 120°, dwell 70°).
+
+json DiscCamStudy() {
+  json j = camopt::testing::Example("disc_cam_translating.json");
+  j["analysis"] = {{"angle_steps", 3600}, {"monte_carlo", false}};
+  return j;
+}
+
+// The pressure angle in closed form: tan φ = (S' − e)/(s0 + S), s0 = sqrt((r_b + r_f)² − e²)
+// (Rzine et al. eqs. 3–5), with the cycloidal law S = h (x − sin 2πx / 2π) written out here.
+double PressureAngle(double th) {
+  const double h = 24, beta = 120 * kPi / 180, e = 12, s0 = std::sqrt(50.0 * 50.0 - e * e);
+  const double deg = th * 180 / kPi;
+  double S = 0, dS = 0;
+  if (deg < 120) {
+    const double x = th / beta;
+    S = h * (x - std::sin(2 * kPi * x) / (2 * kPi)), dS = h / beta * (1 - std::cos(2 * kPi * x));
+  } else if (deg < 170) {
+    S = h;
+  } else if (deg < 290) {
+    const double x = (th - 170 * kPi / 180) / beta;
+    S = h - h * (x - std::sin(2 * kPi * x) / (2 * kPi)), dS = -h / beta * (1 - std::cos(2 * kPi * x));
+  }
+  return std::atan((dS - e) / (s0 + S));
+}
+
+json RunDiscCamMeasured(const std::string& tag, const std::string& kind, const std::string& csv) {
+  const auto dir = TempDir("disc-cam-measured-" + tag);
+  WriteFile(dir / "points.csv", csv);
+  json j = DiscCamStudy();
+  j["measured_profile"] = {{"part", "profile"}, {"file", "points.csv"}, {"kind", kind}};
+  const std::string file = (dir / "study.json").string();
+  const studies::disc_cam::Study st = studies::disc_cam::Parse(studies::Node(&j, file, ""));
+  return studies::disc_cam::Run(st, studies::RunContext{file, true}).measured;
+}
+
+Synthetic DiscCamSample(int n, const std::function<double(double)>& dev) {
+  json j = DiscCamStudy();
+  const studies::disc_cam::Study st = studies::disc_cam::Parse(studies::Node(&j, "s.json", ""));
+  Synthetic s;
+  for (int i = 0; i < n; ++i) {
+    const double th = 2 * kPi * i / n;
+    const disc_cam::CamPoint<double> p = disc_cam::EvaluateCam(st.cam, th);
+    s.t.push_back(th), s.nominal.push_back(p.contact), s.normal.push_back(p.normal), s.d.push_back(dev(th));
+  }
+  return s;
+}
+
+// A uniform offset δ: ISO 1101 deviation 2δ and the follower's error δ/cos φ (Rzine et al. eq. 17)
+// with φ in closed form here, largest and smallest over the 3600 angles; both kinds.
+TEST(MeasuredProfile, DiscCamUniformOffsetMovesTheFollowerByDeltaOverCosPhi) {
+  const double delta = 0.002;
+  const Synthetic s = DiscCamSample(2000, [&](double) { return delta; });
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < 3600; ++i) {
+    const double e = delta / std::cos(PressureAngle(2 * kPi * i / 3600));
+    lo = std::min(lo, e), hi = std::max(hi, e);
+  }
+  for (const std::string kind : {"points", "normal_deviation"}) {
+    SCOPED_TRACE(kind);
+    const json m = RunDiscCamMeasured("uniform-" + kind, kind, Csv(s, kind));
+    EXPECT_NEAR(m["iso1101_profile_deviation_um"].get<double>(), 2 * delta * 1e3, 1e-6);
+    EXPECT_NEAR(m["follower"]["displacement_error_max_um"].get<double>(), hi * 1e3, 1e-6);
+    EXPECT_NEAR(m["follower"]["displacement_error_min_um"].get<double>(), lo * 1e3, 1e-6);
+    std::printf("disc cam uniform %s: zone %.9f um; follower error %.9f..%.9f um, closed form %.9f..%.9f\n",
+                kind.c_str(), m["iso1101_profile_deviation_um"].get<double>(),
+                m["follower"]["displacement_error_min_um"].get<double>(),
+                m["follower"]["displacement_error_max_um"].get<double>(), lo * 1e3, hi * 1e3);
+  }
+}
+
+// A cos² bump of height h over ±10° of cam angle on the rise (centred at 60°): ISO 1101 deviation
+// 2h and the follower's error h/cos φ(60°) at 60°, closed form.
+TEST(MeasuredProfile, DiscCamBumpOnTheRise) {
+  const double h = 0.003, c = 60 * kPi / 180, w = 20 * kPi / 180;
+  auto bump = [&](double th) {
+    const double x = std::remainder(th - c, 2 * kPi);
+    return std::abs(x) < w / 2 ? h * std::pow(std::cos(kPi * x / w), 2) : 0.0;
+  };
+  const Synthetic s = DiscCamSample(3600, bump);
+  const json m = RunDiscCamMeasured("bump", "normal_deviation", Csv(s, "normal_deviation"));
+  EXPECT_NEAR(m["iso1101_profile_deviation_um"].get<double>(), 2 * h * 1e3, 1e-9);
+  double hi = -INFINITY, at = 0;
+  for (int i = 0; i < 3600; ++i) {
+    const double th = 2 * kPi * i / 3600, e = bump(th) / std::cos(PressureAngle(th));
+    if (e > hi) hi = e, at = th;
+  }
+  EXPECT_NEAR(m["follower"]["displacement_error_max_um"].get<double>(), hi * 1e3, 1e-3 * hi * 1e3);
+  EXPECT_NEAR(m["follower"]["displacement_error_max_at_cam_angle_deg"].get<double>(), at * 180 / kPi, 0.5);
+  EXPECT_NEAR(m["follower"]["displacement_error_min_um"].get<double>(), 0.0, 1e-3 * h * 1e3);
+  std::printf("disc cam bump: zone %.9f um; follower error max %.6f um at %.1f deg, closed form %.6f at %.1f\n",
+              m["iso1101_profile_deviation_um"].get<double>(), m["follower"]["displacement_error_max_um"].get<double>(),
+              m["follower"]["displacement_error_max_at_cam_angle_deg"].get<double>(), hi * 1e3, at * 180 / kPi);
+}
+
+// The command line for disc_cam: a measured cam runs (exit 0, "measured", inspection/profile.csv);
+// a NaN in the file is exit 2.
+TEST(MeasuredProfile, DiscCamCommandLine) {
+  const Synthetic s = DiscCamSample(1000, [&](double) { return 0.001; });
+  const auto dir = TempDir("disc-cam-measured-cli");
+  WriteFile(dir / "m.csv", Csv(s, "points"));
+  json study = DiscCamStudy();
+  study["measured_profile"] = {{"part", "profile"}, {"file", "m.csv"}, {"kind", "points"}};
+  study["inspection"] = {{"spacing_mm", 1}, {"tolerance_um", 5}};
+  WriteFile(dir / "study.json", study.dump());
+  const auto res = RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " + (dir / "out").string());
+  ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
+  const json result = json::parse(ReadFile(dir / "out" / "result.json"));
+  ASSERT_TRUE(result.contains("measured"));
+  EXPECT_NEAR(result["measured"]["iso1101_profile_deviation_um"].get<double>(), 2.0, 1e-6);
+  EXPECT_TRUE(fs::exists(dir / "out" / "inspection" / "profile.csv"));
+  std::string nan = Csv(s, "points");
+  nan += "1,nan\n";
+  WriteFile(dir / "nan.csv", nan);
+  json b = DiscCamStudy();
+  b["measured_profile"] = {{"part", "profile"}, {"file", (dir / "nan.csv").string()}, {"kind", "points"}};
+  camopt::testing::ExpectStudyRejected(b, "disc-cam-measured-nan", "/measured_profile/file",
+                                       "expected a finite number in column y_mm");
 }
 
 }  // namespace

@@ -16,6 +16,20 @@ constexpr double kWeights[5] = {0.2369268850561891, 0.4786286704993665, 0.568888
                                 0.2369268850561891};
 }  // namespace
 
+Curve CurveFromPoints(std::function<Vec2<double>(double)> f, double h) {
+  return [f = std::move(f), h](double t) {
+    const Vec2<double> m2 = f(t - 2 * h), m1 = f(t - h), p0 = f(t), p1 = f(t + h), p2 = f(t + 2 * h);
+    const Vec2<double> d1 = (m2 - 8.0 * m1 + 8.0 * p1 - p2) / (12.0 * h);
+    const Vec2<double> d2 = (-m2 + 16.0 * m1 - 30.0 * p0 + 16.0 * p1 - p2) / (12.0 * h * h);
+    CurvePoint c;
+    c.point = p0;
+    c.speed = d1.norm();
+    c.tangent = d1 / c.speed;
+    c.curvature = Cross(d1, d2) / (c.speed * c.speed * c.speed);
+    return c;
+  };
+}
+
 ClosedProfile::ClosedProfile(Curve curve, double t0, double period, int samples)
     : curve_(std::move(curve)), t0_(t0), period_(period) {
   const int n = std::max(16, samples);
