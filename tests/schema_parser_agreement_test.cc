@@ -407,6 +407,10 @@ struct CrossField {
 const std::vector<CrossField> kCrossField = {
     {"cycloid_ltca", "/measured_profile", "expected a readable CSV file",
      "the measured profile's CSV file exists and is readable (a file, not a JSON value)"},
+    {"lcr_analysis", "/measured_profile", "expected a readable CSV file",
+     "the measured profile's CSV file exists and is readable (a file, not a JSON value)"},
+    {"disc_cam", "/measured_profile", "expected a readable CSV file",
+     "the measured profile's CSV file exists and is readable (a file, not a JSON value)"},
     {"disc_cam", "/motion/0/control_points_mm", "needs at least", "a B-spline's degree below its number of control points"},
     {"globoidal_cam", "/contact/exponent", "static contact penetration",
      "the turret torque against the contact law's static penetration (exponent, stiffness, roller radius)"},
