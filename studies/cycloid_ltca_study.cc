@@ -904,6 +904,9 @@ namespace {
 // output revolution (a feature of a few millimetres on a tooth is passed by the contact in a few
 // hundredths of a mesh period).
 constexpr int kMeasuredAnglesPerMeshPeriod = 64;
+// The loaded TCA of a measured disc: 8 crank angles per mesh period over one output revolution
+// (the contact point moves about 1 mm along the tooth per mesh period on the NNM drive).
+constexpr int kMeasuredLoadedAnglesPerMeshPeriod = 8;
 
 // The measured disc's kinematic output (model/cycloid/transmission_error.h, the profile deviation
 // d(t) in the ring-pin contacts) beside the nominal's, over one output revolution of the disc's
@@ -968,12 +971,42 @@ nlohmann::json MeasuredDisc(const Study& s, Result& r) {
   if (jammed > 0)
     r.warnings.push_back("measured_profile: the measured disc interferes with the pins (negative backlash) at " +
                          std::to_string(jammed) + " crank angles: the rigid model turns the output to first contact");
-  j["not_computed"] = nlohmann::json::array(
-      {{{"result", "the loaded results of the measured disc (largest contact stress, pin loads, loaded transmission "
-                   "error, lost motion with the elastic part, lives)"},
-        {"why", "the loaded TCA (model/cycloid/loaded_tca.h) takes the profile modification (delta_a, delta_rho) "
-                "only: the measured deviation is not added to its gaps yet; the loaded results are the nominal "
-                "disc's"}}});
+  if (s.loaded) {
+    // The loaded TCA with the measured tooth (LoadedTca::SetProfileDeviation), over one output
+    // revolution of this disc's crank angle, beside the nominal disc on the same angles.
+    std::vector<double> angles = cycloid::TransmissionErrorAngles(
+        s.drive, kMeasuredLoadedAnglesPerMeshPeriod * s.drive.rollers * s.drive.teeth);
+    for (double& c : angles) c += phase;
+    cycloid::LoadedOptions o = s.options;
+    o.crank_slope = false;
+    o.keep_pressure = false;
+    const LoadedTca nominal_tca(s.drive, s.crowning, s.material, o);
+    o.reuse_symmetric_angles = false;
+    LoadedTca measured_tca(s.drive, s.crowning, s.material, o);
+    measured_tca.SetProfileDeviation(dev.profile_shape);
+    const CycleResult cn = RunCycle(nominal_tca, s.disc_torque_Nmm(), angles);
+    const CycleResult cm = RunCycle(measured_tca, s.disc_torque_Nmm(), angles);
+    j["loaded"] = {
+        {"model", "the loaded TCA (model/cycloid/loaded_tca.h) with the measured tooth in every pair's unloaded "
+                  "contact (arms, backlash, the moved profile's curvature in the Hertz gaps)"},
+        {"crank_angles", angles.size()},
+        {"crank_angles_over", "one output revolution of this disc's own crank angle, " +
+                                  std::to_string(kMeasuredLoadedAnglesPerMeshPeriod) + " per mesh period"},
+        {"disc_torque_Nm", s.disc_torque_Nmm() / 1000.0},
+        {"max_contact_stress_MPa", {{"nominal", cn.max_pressure_MPa}, {"measured", cm.max_pressure_MPa}}},
+        {"max_pair_load_N", {{"nominal", cn.max_pair_load_N}, {"measured", cm.max_pair_load_N}}},
+        {"lte_peak_to_peak_arcsec", {{"nominal", cn.lte_peak_to_peak_arcsec}, {"measured", cm.lte_peak_to_peak_arcsec}}},
+        {"converged", cm.converged && cn.converged}};
+    if (!cm.converged) r.warnings.push_back("measured_profile: the loaded TCA of the measured disc did not converge at some angle");
+    j["not_computed"] = nlohmann::json::array(
+        {{{"result", "the measured disc's bearing lives, elastic lost motion, gear ratio and output-mechanism loads"},
+          {"why", "the life, stiffness and output-mechanism stages run on the nominal disc only"}}});
+  } else {
+    j["not_computed"] = nlohmann::json::array(
+        {{{"result", "the loaded results of the measured disc (largest contact stress, pair loads, loaded "
+                     "transmission error)"},
+          {"why", "analysis.evaluate is [\"unloaded\"]: no material or load"}}});
+  }
   return j;
 }
 

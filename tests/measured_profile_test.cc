@@ -22,6 +22,7 @@
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/transmission_error.h"
 #include "model/cycloid/unloaded_tca.h"
+#include "model/cycloid/loaded_tca.h"
 #include "studies/cycloid_ltca_study.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/disc_cam_study.h"
@@ -376,6 +377,53 @@ TEST(MeasuredProfile, CycloidSingleBump) {
   std::printf("bump: zone %.9f um; TE %.6f..%.6f arcsec, first order %.6f..%.6f\n",
               m.measured["iso1101_profile_deviation_um"].get<double>(), k["transmission_error_min_arcsec"].get<double>(),
               k["transmission_error_max_arcsec"].get<double>(), p_lo * kArcsec, p_hi * kArcsec);
+}
+
+// The loaded TCA of a measured disc with a uniform offset δ: the tooth moved by δ along its
+// normal is exactly the tooth cut with ρ' − δ (an offset of an offset), so its cycle is the LTCA of
+// the drive with delta_radius_mm − δ on the same crank angles (8 per mesh period over one output
+// revolution), run here with the study's grid.
+TEST(MeasuredProfile, CycloidLoadedUniformOffsetIsTheToothCutWithSmallerRho) {
+  const cycloid::Drive d = CycloidNnm();
+  const double delta = 0.001;
+  const Synthetic s = Sample(d, 1, 1, 2400, [&](double, Vec2<double>) { return delta; });
+  const auto dir = TempDir("measured-loaded");
+  WriteFile(dir / "points.csv", Csv(s, "points"));
+  json j = DiscStudy(1);
+  j["analysis"] = {{"crank_angles_per_mesh_period", 4}, {"grid", {12, 12}}, {"estimate_error", false}};
+  j["material"] = {{"youngs_modulus_GPa", 206}, {"poisson_ratio", 0.3}};
+  j["load"] = {{"torque_Nm", 350}};
+  j["measured_profile"] = {{"part", "disc_1"}, {"file", "points.csv"}, {"kind", "points"}};
+  const std::string file = (dir / "study.json").string();
+  const ltca::Study st = ltca::Parse(studies::Node(&j, file, ""));
+  const json m = ltca::Run(st, studies::RunContext{file, true}).measured;
+  ASSERT_TRUE(m.contains("loaded")) << m.dump();
+  std::vector<double> angles;
+  const int n = 8 * d.rollers * d.teeth;
+  for (int i = 0; i < n; ++i) angles.push_back(2 * kPi * d.teeth * i / n);
+  cycloid::LoadedOptions o;
+  o.profile_cells = o.axial_cells = 12;
+  o.crank_slope = false;
+  cycloid::Drive cut = d;
+  cut.delta_radius_mm -= delta;
+  const cycloid::Material mat;
+  const cycloid::CycleResult nominal = cycloid::RunCycle(cycloid::LoadedTca(d, st.crowning, mat, o), 350000.0, angles);
+  // Every angle solved in turn, warm-started from the one before, as the measured disc's (its
+  // iterations stop within the compatibility tolerance 1e-3: the same path gives the same stop).
+  o.reuse_symmetric_angles = false;
+  const cycloid::CycleResult expected = cycloid::RunCycle(cycloid::LoadedTca(cut, st.crowning, mat, o), 350000.0, angles);
+  const json& l = m["loaded"];
+  EXPECT_NEAR(l["max_contact_stress_MPa"]["measured"].get<double>(), expected.max_pressure_MPa,
+              1e-4 * expected.max_pressure_MPa);
+  EXPECT_NEAR(l["max_pair_load_N"]["measured"].get<double>(), expected.max_pair_load_N, 1e-4 * expected.max_pair_load_N);
+  EXPECT_NEAR(l["lte_peak_to_peak_arcsec"]["measured"].get<double>(), expected.lte_peak_to_peak_arcsec,
+              1e-3 * expected.lte_peak_to_peak_arcsec);
+  EXPECT_NEAR(l["max_contact_stress_MPa"]["nominal"].get<double>(), nominal.max_pressure_MPa, 1e-9);
+  std::printf("loaded uniform: max stress %.6f MPa (cut with rho' - delta %.6f; nominal %.6f), max load %.6f N (%.6f), "
+              "LTE p2p %.6f arcsec (%.6f)\n",
+              l["max_contact_stress_MPa"]["measured"].get<double>(), expected.max_pressure_MPa, nominal.max_pressure_MPa,
+              l["max_pair_load_N"]["measured"].get<double>(), expected.max_pair_load_N,
+              l["lte_peak_to_peak_arcsec"]["measured"].get<double>(), expected.lte_peak_to_peak_arcsec);
 }
 
 // The model pieces on a closed form: an ellipse's projection and the periodic spline of a

@@ -63,6 +63,7 @@ template <typename T>
 PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho,
                             const profile::NormalDeviation<T>* shape = nullptr) {
   using std::abs;
+  using std::sqrt;
   PairGeometry<T> g;
   g.roller = i;
   T t = NominalParameter(d, i, crank);
@@ -103,12 +104,26 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
     beta = T(0.0);
   }
   const ProfilePoint<T> p = ToothProfile(d, t);
+  if (shape) {
+    // The moved profile Q = P + d N has its own curvature (d'' bends it): from Q's central
+    // differences over t (step 1e-4 rad: truncation ~1e-8 and rounding ~1e-9 of the curvature).
+    auto moved = [&](const T& u) {
+      const ProfilePoint<T> pu = ToothProfile(d, u);
+      return Vec2<T>(pu.point + (*shape)(u, nullptr) * pu.normal);
+    };
+    const T h(1e-4);
+    const Vec2<T> qm = moved(t - h), q0 = moved(t), qp = moved(t + h);
+    const Vec2<T> d1 = (qp - qm) / (T(2.0) * h), d2 = (qp - T(2.0) * q0 + qm) / (h * h);
+    const T speed = sqrt(d1.squaredNorm());
+    g.profile_curvature = Cross(d1, d2) / (speed * speed * speed);
+  } else {
+    g.profile_curvature = p.curvature;
+  }
   g.parameter = t;
   g.contact_rotation = beta;
   g.point = shape ? Vec2<T>(p.point + (*shape)(t, nullptr) * p.normal) : p.point;
   g.normal = p.normal;
   g.arm_mm = Cross(p.centre, p.normal);
-  g.profile_curvature = p.curvature;
   g.roller_curvature = T(1.0) / d.roller_radius_mm;
   const double min_arm = kMinArmFraction * Value(d.eccentricity_mm) * d.teeth;
   g.converged = converged;
@@ -118,23 +133,26 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
 }
 
 /// Solves eq. (12) for roller i of the drive at crank angle φ [rad].
+/// `shape`: a normal deviation d(t) of the tooth (nullptr: none; SolvePairAt).
 template <typename T>
-PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
+PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank,
+                          const profile::NormalDeviation<T>* shape = nullptr) {
   const T psi = T(2.0 * kPi * i / d.rollers);
   const Vec2<T> rel = d.roller_position_radius_mm * U(psi) - d.eccentricity_mm * U(crank);
   const T drho = d.roller_radius_mm - (d.roller_radius_mm + d.delta_radius_mm);  // ρ − ρ'
-  return SolvePairAt(d, i, crank, rel, drho);
+  return SolvePairAt(d, i, crank, rel, drho, shape);
 }
 
 /// Unloaded TCA at crank angle φ [rad] (eqs. 8–14).
 /// @tparam T double or ceres::Jet. β0 is an exact minimum over pairs: where the first-contact
 /// pair changes, β0 has a kink (the two candidates are equal there, so it stays continuous).
+/// `shape`: a normal deviation d(t) of the tooth, a measured disc (nullptr: none; SolvePairAt).
 template <typename T>
-UnloadedMesh<T> UnloadedTca(const DriveTpl<T>& d, const T& crank) {
+UnloadedMesh<T> UnloadedTca(const DriveTpl<T>& d, const T& crank, const profile::NormalDeviation<T>* shape = nullptr) {
   UnloadedMesh<T> m;
   m.crank_angle = crank;
   m.rotation = T(0.0);
-  for (int i = 0; i < d.rollers; ++i) m.pairs.push_back(SolvePair(d, i, crank));
+  for (int i = 0; i < d.rollers; ++i) m.pairs.push_back(SolvePair(d, i, crank, shape));
   for (size_t k = 0; k < m.pairs.size(); ++k) {
     if (!m.pairs[k].loaded_flank) continue;
     if (m.first_contact < 0 ||
