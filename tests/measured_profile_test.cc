@@ -27,6 +27,7 @@
 #include "studies/lcr_analysis_study.h"
 #include "studies/disc_cam_study.h"
 #include "model/disc_cam/disc_cam.h"
+#include "model/disc_cam/flat_faced.h"
 #include "model/lcr/profile.h"
 #include "model/lcr/transmission_error.h"
 #include "tests/reference_designs.h"
@@ -769,6 +770,87 @@ TEST(MeasuredProfile, DiscCamCommandLine) {
   b["measured_profile"] = {{"part", "profile"}, {"file", (dir / "nan.csv").string()}, {"kind", "points"}};
   camopt::testing::ExpectStudyRejected(b, "disc-cam-measured-nan", "/measured_profile/file",
                                        "expected a finite number in column y_mm");
+}
+
+// Inspection points of the cams (LCR II's two cams; the disc cam with a translating roller and with
+// a translating flat face, whose profile is the envelope of the face lines) against an independent
+// projection onto the model's point function: within 0.1 µm, unit normals perpendicular to the
+// profile and outward, arcs <= the spacing.
+void CheckInspection(const std::string& csv, const std::function<Vec2<double>(double)>& f, double spacing) {
+  const int n = 200000;
+  std::vector<Vec2<double>> pts;
+  for (int i = 0; i < n; ++i) pts.push_back(f(2 * kPi * i / n));
+  auto winding = [&](const Vec2<double>& q) {
+    double w = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec2<double> a = pts[i] - q, b = pts[(i + 1) % n] - q;
+      w += std::atan2(Cross(a, b), a.dot(b));
+    }
+    return int(std::lround(w / (2 * kPi)));
+  };
+  const CsvRows c = ParseCsv(csv);
+  ASSERT_GT(c.rows.size(), 10u);
+  double worst = 0, worst_perp = 0, worst_chord = 0, worst_unit = 0;
+  for (size_t r = 0; r < c.rows.size(); ++r) {
+    const Vec2<double> p(c.rows[r][0], c.rows[r][1]), nn(c.rows[r][2], c.rows[r][3]);
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if ((pts[i] - p).squaredNorm() < (pts[best] - p).squaredNorm()) best = i;
+    const double h = 2 * kPi / n, g = 0.5 * (std::sqrt(5.0) - 1);
+    double a = 2 * kPi * best / n - h, b = a + 2 * h;
+    for (int it = 0; it < 100; ++it) {
+      const double x = b - g * (b - a), y = a + g * (b - a);
+      if ((f(x) - p).norm() < (f(y) - p).norm()) b = y; else a = x;
+    }
+    const double t = 0.5 * (a + b);
+    worst = std::max(worst, (f(t) - p).norm());
+    const Vec2<double> tangent = (f(t + 1e-6) - f(t - 1e-6)).normalized();
+    worst_perp = std::max(worst_perp, std::abs(nn.dot(tangent)));
+    worst_unit = std::max(worst_unit, std::abs(nn.norm() - 1));
+    const auto& w = c.rows[(r + 1) % c.rows.size()];
+    worst_chord = std::max(worst_chord, (Vec2<double>(w[0], w[1]) - p).norm());
+    if (r % 53 == 0) {
+      EXPECT_EQ(winding(p + 0.01 * nn), 0) << "outward at row " << r;
+      EXPECT_NE(winding(p - 0.01 * nn), 0) << "inward at row " << r;
+    }
+  }
+  EXPECT_LE(worst, 1e-4);
+  EXPECT_LE(worst_unit, 1e-9);
+  EXPECT_LE(worst_perp, 2e-6);  // the test's own central difference at a motion law's junction
+  EXPECT_LE(worst_chord, spacing);
+}
+
+TEST(MeasuredProfile, CamInspectionPointsOnTheExactProfile) {
+  {
+    json j = LcrStudy();
+    j["inspection"] = {{"spacing_mm", 0.7}, {"tolerance_um", 10}};
+    const auto st = studies::lcr_analysis::Parse(studies::Node(&j, "s.json", ""));
+    const auto r = studies::lcr_analysis::Run(st, studies::RunContext{"", true});
+    ASSERT_EQ(r.inspection_files.size(), 2u);
+    const lcr::Reducer<double> red = camopt::testing::LcrII();
+    for (int k = 0; k < 2; ++k) {
+      SCOPED_TRACE(r.inspection_files[k].first);
+      const lcr::CamSide<double> c = k == 0 ? red.input : red.output;
+      CheckInspection(r.inspection_files[k].second,
+                      [&](double psi) { return lcr::OffsetPoint(c, red.eccentricity, psi, c.roller_radius); }, 0.7);
+    }
+  }
+  for (const char* example : {"disc_cam_translating.json", "disc_cam_flat_faced.json"}) {
+    SCOPED_TRACE(example);
+    json j = camopt::testing::Example(example);
+    j["inspection"] = {{"spacing_mm", 0.7}, {"tolerance_um", 10}};
+    j["analysis"]["monte_carlo"] = false;
+    const auto st = studies::disc_cam::Parse(studies::Node(&j, "s.json", ""));
+    const auto r = studies::disc_cam::Run(st, studies::RunContext{"", true});
+    ASSERT_EQ(r.inspection_files.size(), 1u);
+    if (st.contact == studies::disc_cam::Study::Contact::kFlatFaced)
+      CheckInspection(r.inspection_files[0].second,
+                      [&](double th) { return disc_cam::EvaluateFlatFaced(st.cam.motion, st.cam.base_radius, th).contact; },
+                      0.7);
+    else
+      CheckInspection(r.inspection_files[0].second, [&](double th) { return disc_cam::EvaluateCam(st.cam, th).contact; },
+                      0.7);
+  }
 }
 
 }  // namespace
