@@ -666,10 +666,46 @@ nlohmann::json MeasuredCam(const Study& s, const Result& r) {
       {"follower_range_" + r.follower_unit,
        {{"nominal", oscillating ? (n_hi - n_lo) * 180.0 / kPi : n_hi - n_lo},
         {"measured", oscillating ? (s_hi - s_lo) * 180.0 / kPi : s_hi - s_lo}}}};
-  j["not_computed"] = nlohmann::json::array(
-      {{{"result", "the contact stress and the dynamics of the measured cam"},
-        {"why", "the Hertz stress needs the measured profile's curvature (d'' of the deviation) at each contact; not "
-                "added yet: the stress reported is the nominal cam's"}}});
+  nlohmann::json not_computed = nlohmann::json::array(
+      {{{"result", "the follower's dynamics with the measured motion (contact force, jump)"},
+        {"why", "the loads are the nominal motion's; the measured error's inertia m dS'' w^2 is left out"}}});
+  if (r.loads && r.loads->stress_evaluated && s.contact == Study::Contact::kRoller &&
+      r.loads->contact_force_N.size() == size_t(n)) {
+    // The Hertz stress on the moved profile Q = A + d n (A the contact point, n its outward
+    // normal): its curvature from central differences over θ (step 1e-4 rad), convex positive,
+    // 1/R' = 1/r_f + κ_Q; the contact force the nominal's (first order).
+    const double e_star = s.material->composite_modulus_MPa();
+    auto moved = [&](double th) {
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      return Vec2<double>(p.contact + m.shape(th) * p.normal);
+    };
+    double p_max = 0, p_at = 0;
+    for (int i = 0; i < n; ++i) {
+      const double th = 2.0 * kPi * i / n, h = 1e-4, force = r.loads->contact_force_N[size_t(i)];
+      if (!(force > 0)) continue;
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      const Vec2<double> qm = moved(th - h), q0 = moved(th), qp = moved(th + h);
+      const Vec2<double> d1 = (qp - qm) / (2 * h), d2 = (qp - 2.0 * q0 + qm) / (h * h);
+      const double ccw = Cross(p.pitch_d1, p.normal) < 0 ? 1.0 : -1.0;  // outward normal on the right: ccw
+      const double kappa = ccw * Cross(d1, d2) / std::pow(d1.norm(), 3);
+      const double inv_r = 1.0 / cam.roller_radius + kappa;
+      const double stress = inv_r > 0 ? std::sqrt(force * e_star * inv_r / (kPi * *s.face_width_mm)) : INFINITY;
+      if (stress > p_max) p_max = stress, p_at = th;
+    }
+    j["contact"] = {
+        {"model", "Hertz line contact of the roller on the measured profile's curvature (the moved profile Q = A + d "
+                  "n differentiated over the cam angle), the nominal motion's contact force"},
+        {"max_contact_stress_MPa",
+         {{"nominal", r.loads->max_contact_stress_MPa.value},
+          {"measured", std::isfinite(p_max) ? nlohmann::json(p_max) : nlohmann::json(nullptr)}}},
+        {"at_max_contact_stress_cam_angle_deg",
+         {{"nominal", r.loads->max_contact_stress_MPa.cam_angle_deg}, {"measured", p_at * 180.0 / kPi}}}};
+  } else {
+    not_computed.push_back({{"result", "the contact stress of the measured cam"},
+                            {"why", "no contact stress in this study (a roller follower with face_width_mm, material "
+                                    "and loads: dynamics or arm_dynamics)"}});
+  }
+  j["not_computed"] = not_computed;
   return j;
 }
 

@@ -747,6 +747,42 @@ TEST(MeasuredProfile, DiscCamBumpOnTheRise) {
               m["follower"]["displacement_error_max_at_cam_angle_deg"].get<double>(), hi * 1e3, at * 180 / kPi);
 }
 
+// The contact stress of a measured roller cam with a uniform offset δ (disc_cam_dynamics.json at
+// 250 rpm): the moved profile is the pitch curve's offset by r_f − δ, of curvature κ/(1 − (r_f − δ)κ)
+// (κ the pitch curve's), so the Hertz line-contact stress is sqrt(F E* (1/r_f + that)/(π w)) with
+// the nominal contact force F, E* = E/(2(1 − ν²)).
+TEST(MeasuredProfile, DiscCamContactStressOfAUniformOffset) {
+  const double delta = 0.3;  // large enough to move the stress well beyond the check's tolerance
+  json j = camopt::testing::Example("disc_cam_dynamics.json");
+  const auto nominal_study = studies::disc_cam::Parse(studies::Node(&j, "s.json", ""));
+  Synthetic s;
+  for (int i = 0; i < 2400; ++i) {
+    const double th = 2 * kPi * i / 2400;
+    const disc_cam::CamPoint<double> p = disc_cam::EvaluateCam(nominal_study.cam, th);
+    s.t.push_back(th), s.nominal.push_back(p.contact), s.normal.push_back(p.normal), s.d.push_back(delta);
+  }
+  const auto dir = TempDir("disc-cam-measured-stress");
+  WriteFile(dir / "points.csv", Csv(s, "points"));
+  j["measured_profile"] = {{"part", "profile"}, {"file", "points.csv"}, {"kind", "points"}};
+  const std::string file = (dir / "study.json").string();
+  const auto st = studies::disc_cam::Parse(studies::Node(&j, file, ""));
+  const auto r = studies::disc_cam::Run(st, studies::RunContext{file, true});
+  ASSERT_TRUE(r.loads.has_value());
+  ASSERT_TRUE(r.measured.contains("contact")) << r.measured.dump();
+  const double e_star = 206000.0 / (2 * (1 - 0.3 * 0.3)), rf = 10.0, w = 12.0;
+  double expected = 0;
+  for (int i = 0; i < 3600; ++i) {
+    const double k = disc_cam::EvaluateCam(st.cam, 2 * kPi * i / 3600).pitch_curvature;
+    const double f = r.loads->contact_force_N[size_t(i)];
+    if (f > 0) expected = std::max(expected, std::sqrt(f * e_star * (1 / rf + k / (1 - (rf - delta) * k)) / (kPi * w)));
+  }
+  const double ours = r.measured["contact"]["max_contact_stress_MPa"]["measured"].get<double>();
+  EXPECT_NEAR(ours, expected, 1e-7 * expected);  // the finite-difference curvature: ~1e-8
+  EXPECT_GT(std::abs(ours - r.measured["contact"]["max_contact_stress_MPa"]["nominal"].get<double>()), 1e-5 * expected);  // 1.5e-4 at 0.3 mm
+  std::printf("disc cam uniform stress: %.6f MPa (closed form %.6f, nominal %.6f)\n", ours, expected,
+              r.measured["contact"]["max_contact_stress_MPa"]["nominal"].get<double>());
+}
+
 // The command line for disc_cam: a measured cam runs (exit 0, "measured", inspection/profile.csv);
 // a NaN in the file is exit 2.
 TEST(MeasuredProfile, DiscCamCommandLine) {
