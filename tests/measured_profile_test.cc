@@ -580,6 +580,27 @@ TEST(MeasuredProfile, LcrUniformOffsetIsTheToleranceModelsProfileOffset) {
     EXPECT_NEAR(c["transmission_error_max_arcsec"].get<double>(), *hi * kArcsec, 1e-6);
     EXPECT_NEAR(c["transmission_error_min_arcsec"].get<double>(), *lo * kArcsec, 1e-6);
     EXPECT_LT(*hi * kArcsec, -1.0);
+    if (kind == "points") {
+      // The Hertz stress on the moved profile: an offset of the pitch curve by r_r − δ, curvature
+      // κ/(1 − (r_r − δ)κ), with the tolerance model's roller forces; E* = E/(2(1 − ν²)).
+      const double e_star = 206000.0 / (2 * (1 - 0.3 * 0.3)), rr = r.output.roller_radius;
+      const double t = lcr::LoadedArmSign(r, lcr::Side::kOutput) * 80000.0;
+      double expected = 0;
+      for (double th : theta) {
+        const auto c = lcr::CompliantAtAngle<double>(r, mat, th, t, &dev);
+        const auto contacts = lcr::RollerContacts(r, lcr::Side::kOutput, th);
+        for (size_t k = 0; k < contacts.size(); ++k) {
+          const double kap = contacts[k].curvature, f = c.force_output[k];
+          if (f > 0)
+            expected = std::max(expected, std::sqrt(f * e_star * (1 / rr + kap / (1 - (rr - delta) * kap)) /
+                                                    (kPi * r.output.contact_length())));
+        }
+      }
+      const double ours = c["max_contact_stress_MPa"]["measured"].get<double>();
+      EXPECT_NEAR(ours, expected, 1e-6 * expected);
+      std::printf("lcr uniform stress: %.6f MPa (closed form %.6f, nominal %.6f)\n", ours, expected,
+                  c["max_contact_stress_MPa"]["nominal"].get<double>());
+    }
     std::printf("lcr uniform %s: zone %.9f um; TE %.9f..%.9f arcsec, tolerance model %.9f..%.9f\n", kind.c_str(),
                 m["iso1101_profile_deviation_um"].get<double>(), c["transmission_error_min_arcsec"].get<double>(),
                 c["transmission_error_max_arcsec"].get<double>(), *lo * kArcsec, *hi * kArcsec);
