@@ -89,7 +89,7 @@ inline camopt::profile::Curve CamProfileCurve(const CamSide<double>& side, doubl
     camopt::profile::CurvePoint c;
     c.tangent = d1 / v;
     c.point = PitchPoint(side, eccentricity, psi) + offset * Perp(c.tangent);
-    c.speed = v * (1.0 - offset * kappa);
+    c.speed = v * std::abs(1.0 - offset * kappa);  // |.|: an undercut loop keeps a positive arc length
     c.curvature = kappa / (1.0 - offset * kappa);
     return c;
   };
