@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "model/cycloid/geometry_limits.h"
+#include "model/cycloid/parts.h"
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "studies/cycloid_life.h"
@@ -277,6 +278,18 @@ Study Parse(const Node& root) {
       root["grinding"]["wheel_radius_mm"].FailWith(e.what());
     }
   }
+  s.inspection = in.inspection;
+  if (in.measured_profile) {
+    const Node n = root["measured_profile"];
+    const int k = std::stoi(in.measured_profile->part.substr(5));
+    if (k > s.discs)
+      n["part"].Fail("a disc of the drive, disc_1 to disc_" + std::to_string(s.discs) + " (discs = " +
+                     std::to_string(s.discs) + ")");
+    s.measured_disc = k;
+    const InspectedPart part = DiscPart(s, k);
+    // Covering: no arc between neighbouring points longer than an eighth of a tooth.
+    s.measured = ReadMeasuredProfile(n, part, part.profile.length_mm() / (8.0 * s.drive.teeth));
+  }
   return s;
 }
 
@@ -322,6 +335,19 @@ std::string GrindingCsv(const Study& s) {
 }
 
 }  // namespace
+
+InspectedPart DiscPart(const Study& s, int k) {
+  const double gamma = cycloid::DiscPhaseRotationRad(k, s.discs, s.drive.teeth);
+  const std::string frame =
+      "disc " + std::to_string(k) + " of " + std::to_string(s.discs) +
+      ": origin at the disc's centre (its bore), the output-pin holes at R_w (cos, sin)(360 j / Z_w deg); the tooth "
+      "profile is the model's disc frame's turned by " + Format(gamma * 180.0 / kPi, 12) +
+      " deg (-360 (k - 1) / (N teeth)); disc 1 is the frame of tooth.dxf";
+  // 256 table points a tooth: the projection's start within a small part of a tooth.
+  return {"disc_" + std::to_string(k), frame,
+          "the disc's centre (the bore's axis), the output-pin holes for the angular position",
+          profile::ClosedProfile(cycloid::DiscPartProfile(s.drive, k, s.discs), 0.0, 2.0 * kPi, 256 * s.drive.teeth)};
+}
 
 nlohmann::ordered_json Input::SchemaRules() {
   // The loaded stage (analysis.evaluate absent or with "loaded") needs the material and the load;
@@ -370,6 +396,15 @@ nlohmann::ordered_json Input::SchemaRules() {
   AddLubricationSchemaRules(rules);
   // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
   for (const auto& rule : ModifiedLifeSchemaRules({{"crank_bearing"}, {"pins"}})) rules["allOf"].push_back(rule);
+  // The measured disc is one of the drive's: disc_k with k <= discs (absent: 1). Each rule holds
+  // for every discs <= N, so that together they leave disc_1 … disc_discs.
+  for (int n = 1; n < 8; ++n) {
+    nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+    for (int k = 1; k <= n; ++k) parts.push_back("disc_" + std::to_string(k));
+    rules["allOf"].push_back(
+        {{"if", {{"properties", {{"discs", {{"maximum", n}}}}}}},
+         {"then", {{"properties", {{"measured_profile", {{"properties", {{"part", {{"enum", parts}}}}}}}}}}}});
+  }
   return rules;
 }
 
@@ -920,6 +955,120 @@ MeshTable CycloidMeshTable(const Study& s, const LoadedTca& tca, const RunContex
 
 }  // namespace
 
+namespace {
+
+// Crank angles of the measured disc's kinematic transmission error: per mesh period, over one
+// output revolution (a feature of a few millimetres on a tooth is passed by the contact in a few
+// hundredths of a mesh period).
+constexpr int kMeasuredAnglesPerMeshPeriod = 64;
+// The loaded TCA of a measured disc: 8 crank angles per mesh period over one output revolution
+// (the contact point moves about 1 mm along the tooth per mesh period on the NNM drive).
+constexpr int kMeasuredLoadedAnglesPerMeshPeriod = 8;
+
+// The measured disc's kinematic output (model/cycloid/transmission_error.h, the profile deviation
+// d(t) in the ring-pin contacts) beside the nominal's, over one output revolution of the disc's
+// own crank angle φ + 2π(k − 1)/N.
+nlohmann::json MeasuredDisc(const Study& s, Result& r) {
+  const MeasuredProfile& m = *s.measured;
+  const int k = s.measured_disc;
+  nlohmann::json j = MeasuredJson(m, DiscPart(s, k));
+  const cycloid::OutputPins* pins = s.output ? &s.output->pins : nullptr;
+  std::vector<double> crank =
+      cycloid::TransmissionErrorAngles(s.drive, kMeasuredAnglesPerMeshPeriod * s.drive.rollers * s.drive.teeth);
+  const double phase = 2.0 * kPi * (k - 1) / s.discs;
+  for (double& c : crank) c += phase;
+  cycloid::Deviations<double> none, dev;
+  const profile::PeriodicSpline shape = m.shape;
+  dev.profile_shape = [shape](const double& t, double* slope) { return shape(t, slope); };
+  const cycloid::KinematicCurves nominal = cycloid::KinematicOutput(s.drive, pins, none, crank);
+  const cycloid::KinematicCurves measured = cycloid::KinematicOutput(s.drive, pins, dev, crank);
+  auto range = [](const std::vector<double>& v) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return std::pair<double, double>(*lo, *hi);
+  };
+  std::vector<double> te, bl_nom, bl_meas;
+  int no_contact = 0, jammed = 0;
+  for (size_t i = 0; i < crank.size(); ++i) {
+    te.push_back(measured.forward_rad[i] - nominal.forward_rad[i]);
+    bl_nom.push_back(nominal.forward_rad[i] - nominal.reverse_rad[i]);
+    bl_meas.push_back(measured.forward_rad[i] - measured.reverse_rad[i]);
+    no_contact += measured.forward_pair[i] < 0;
+    jammed += bl_meas.back() < 0;
+  }
+  const double as = cycloid::kArcsecPerRad, am = as / 60.0;
+  const auto [te_lo, te_hi] = range(te);
+  const auto [ln_lo, ln_hi] = range(nominal.forward_rad);
+  const auto [lm_lo, lm_hi] = range(measured.forward_rad);
+  const auto [bn_lo, bn_hi] = range(bl_nom);
+  const auto [bm_lo, bm_hi] = range(bl_meas);
+  auto mean = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); };
+  j["kinematic"] = {
+      {"model", "the rigid kinematic output of model/cycloid/transmission_error.h with the measured normal deviation "
+                "d(t) in every ring-pin contact (the roller centre on the tooth's normal at rho - rho' + d(t))"},
+      {"crank_angles", crank.size()},
+      {"crank_angles_over", "one output revolution (teeth crank turns) of this disc's own crank angle phi + 360 (k - "
+                            "1) / N deg, " + std::to_string(kMeasuredAnglesPerMeshPeriod) + " per mesh period"},
+      {"transmission_error_peak_to_peak_arcsec", Finite((te_hi - te_lo) * as, "measured te")},
+      {"transmission_error_max_arcsec", te_hi * as},
+      {"transmission_error_min_arcsec", te_lo * as},
+      {"transmission_error_note", "the measured disc's output angle less the nominal's at the same crank angle, "
+                                  "forward torque (> 0: the output ahead)"},
+      {"output_lag_peak_to_peak_arcsec", {{"nominal", (ln_hi - ln_lo) * as}, {"measured", (lm_hi - lm_lo) * as}}},
+      {"backlash_max_arcmin", {{"nominal", bn_hi * am}, {"measured", bm_hi * am}}},
+      {"backlash_min_arcmin", {{"nominal", bn_lo * am}, {"measured", bm_lo * am}}},
+      {"backlash_mean_arcmin", {{"nominal", mean(bl_nom) * am}, {"measured", mean(bl_meas) * am}}},
+      {"lost_motion_kinematic_arcmin", {{"nominal", bn_hi * am}, {"measured", bm_hi * am}}},
+      {"lost_motion_note", "rigid parts: the output's free turn from the forward to the reverse contact, the largest "
+                           "backlash; the elastic part (stiffness block) is not computed for the measured disc"},
+      {"angles_without_contact", no_contact},
+      {"jammed_angles", jammed}};
+  if (no_contact > 0)
+    r.warnings.push_back("measured_profile: at " + std::to_string(no_contact) +
+                         " crank angles no ring pin touches the measured disc's loaded flank");
+  if (jammed > 0)
+    r.warnings.push_back("measured_profile: the measured disc interferes with the pins (negative backlash) at " +
+                         std::to_string(jammed) + " crank angles: the rigid model turns the output to first contact");
+  if (s.loaded) {
+    // The loaded TCA with the measured tooth (LoadedTca::SetProfileDeviation), over one output
+    // revolution of this disc's crank angle, beside the nominal disc on the same angles.
+    std::vector<double> angles = cycloid::TransmissionErrorAngles(
+        s.drive, kMeasuredLoadedAnglesPerMeshPeriod * s.drive.rollers * s.drive.teeth);
+    for (double& c : angles) c += phase;
+    cycloid::LoadedOptions o = s.options;
+    o.crank_slope = false;
+    o.keep_pressure = false;
+    const LoadedTca nominal_tca(s.drive, s.crowning, s.material, o);
+    o.reuse_symmetric_angles = false;
+    LoadedTca measured_tca(s.drive, s.crowning, s.material, o);
+    measured_tca.SetProfileDeviation(dev.profile_shape);
+    const CycleResult cn = RunCycle(nominal_tca, s.disc_torque_Nmm(), angles);
+    const CycleResult cm = RunCycle(measured_tca, s.disc_torque_Nmm(), angles);
+    j["loaded"] = {
+        {"model", "the loaded TCA (model/cycloid/loaded_tca.h) with the measured tooth in every pair's unloaded "
+                  "contact (arms, backlash, the moved profile's curvature in the Hertz gaps)"},
+        {"crank_angles", angles.size()},
+        {"crank_angles_over", "one output revolution of this disc's own crank angle, " +
+                                  std::to_string(kMeasuredLoadedAnglesPerMeshPeriod) + " per mesh period"},
+        {"disc_torque_Nm", s.disc_torque_Nmm() / 1000.0},
+        {"max_contact_stress_MPa", {{"nominal", cn.max_pressure_MPa}, {"measured", cm.max_pressure_MPa}}},
+        {"max_pair_load_N", {{"nominal", cn.max_pair_load_N}, {"measured", cm.max_pair_load_N}}},
+        {"lte_peak_to_peak_arcsec", {{"nominal", cn.lte_peak_to_peak_arcsec}, {"measured", cm.lte_peak_to_peak_arcsec}}},
+        {"converged", cm.converged && cn.converged}};
+    if (!cm.converged) r.warnings.push_back("measured_profile: the loaded TCA of the measured disc did not converge at some angle");
+    j["not_computed"] = nlohmann::json::array(
+        {{{"result", "the measured disc's bearing lives, elastic lost motion, gear ratio and output-mechanism loads"},
+          {"why", "the life, stiffness and output-mechanism stages run on the nominal disc only"}}});
+  } else {
+    j["not_computed"] = nlohmann::json::array(
+        {{{"result", "the loaded results of the measured disc (largest contact stress, pair loads, loaded "
+                     "transmission error)"},
+          {"why", "analysis.evaluate is [\"unloaded\"]: no material or load"}}});
+  }
+  return j;
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   if (s.loaded) {
@@ -1057,6 +1206,16 @@ Result Run(const Study& s, const RunContext& ctx) {
     }
     r.life->oil = oil;
   }
+  if (s.inspection && s.geometry.write) {
+    for (int k = 1; k <= s.discs; ++k) {
+      const InspectedPart part = DiscPart(s, k);
+      long points = 0;
+      r.inspection_files.push_back(
+          {part.name, InspectionCsv(s.name, part, s.inspection->spacing_mm, s.inspection->tolerance_um, &points)});
+      r.inspection_points.push_back({part.name, points});
+    }
+  }
+  if (s.measured) r.measured = MeasuredDisc(s, r);
   if (s.tolerances) {
     // The kinematic transmission error from the tolerances (model/cycloid/transmission_error.h).
     const Study::ToleranceSpec& t = *s.tolerances;
@@ -1093,6 +1252,15 @@ namespace {
 // The unloaded TCA only (analysis.evaluate ["unloaded"]).
 // The tooth's and the pins' closed-form geometric limits (model/cycloid/geometry_limits.h, eqs.
 // C3/C4 and the pin pitch): exact, no grid; the verdict's defaults (no undercut, no overlap).
+void AddMeasured(const Study& s, const Result& r, nlohmann::json& j) {
+  if (s.inspection) {
+    j["inspection"] = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
+                                     s.geometry.write);
+    if (s.geometry.write) j["inspection"]["datum"] = "each disc's centre (its bore); each file's header states its frame";
+  }
+  if (!r.measured.is_null()) j["measured"] = r.measured;
+}
+
 void AddGeometryLimits(const Study& s, nlohmann::json& j) {
   j["min_profile_radius_mm"] = Finite(cycloid::MinConvexProfileRadius(s.drive), "profile radius");
   j["pin_gap_mm"] = Finite(cycloid::PinGapMargin(s.drive), "pin gap");
@@ -1145,6 +1313,7 @@ nlohmann::json UnloadedJson(const Study& s, const Result& r) {
   if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
   if (s.grinding) j["grinding"] = GrindingJson(s);
   AddTransmissionError(s, r, j);
+  AddMeasured(s, r, j);
   return j;
 }
 
@@ -1177,6 +1346,7 @@ void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
   WritePlanarCamFiles(r.tooth_files, s.geometry, out);
   if (!r.parts.parts.empty()) WriteParts(r.parts, s.geometry, out);
   if (s.grinding) out.Add("grinding_wheel.csv", GrindingCsv(s));
+  for (const auto& [name, csv] : r.inspection_files) out.Add("inspection/" + name + ".csv", csv);
 }
 
 Table BacklashTable(const Study& s, const Result& r, const std::vector<double>& col_angle) {
@@ -1402,6 +1572,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
   if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
   if (s.grinding) j["grinding"] = GrindingJson(s);
   AddTransmissionError(s, r, j);
+  AddMeasured(s, r, j);
   if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
   if (s.discs > 1) {
     j["discs"] = s.discs;

@@ -33,6 +33,7 @@
 #include "studies/parts.h"
 #include "studies/input.h"
 #include "studies/material_input.h"
+#include "studies/measured_profile.h"
 #include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/tolerance_input.h"
@@ -172,6 +173,17 @@ struct Input {
     }
   };
 
+  /// The part names of "measured_profile": the discs (each its own part frame, model/cycloid/parts.h).
+  struct Parts {
+    static std::vector<std::string> Names() {
+      return {"disc_1", "disc_2", "disc_3", "disc_4", "disc_5", "disc_6", "disc_7", "disc_8"};
+    }
+    static std::string Description() {
+      return "the measured disc, disc_1 … disc_N (N = discs; its part frame: docs/cycloid.md, \"Inspection and "
+             "measured discs\")";
+    }
+  };
+
   std::string study = "cycloid_ltca", name;
   std::optional<std::string> description;
   cycloid_common::DriveInput drive;
@@ -211,6 +223,8 @@ struct Input {
     }
   };
   std::optional<Grinding> grinding;
+  std::optional<InspectionInput> inspection;
+  std::optional<MeasuredProfileInputT<Parts>> measured_profile;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -277,6 +291,14 @@ struct Input {
     a->Visit("grinding", &grinding,
              Field().Desc("form grinding of the modified tooth (docs/parts.md, Form grinding): the wheel's axial "
                           "profile (grinding_wheel.csv), its centre distance and indexing, the residual form error"));
+    a->Visit("inspection", &inspection,
+             Field().Desc("inspection points of each disc's exact tooth profile with the ISO 1101 profile "
+                          "tolerance zone: inspection/disc_k.csv (docs/cycloid.md, \"Inspection and measured "
+                          "discs\"; none when geometry_files is false)"));
+    a->Visit("measured_profile", &measured_profile,
+             Field().Desc("a measured disc back in: its ISO 1101 profile deviation and the kinematic transmission "
+                          "error and backlash as measured beside the nominal (docs/cycloid.md, \"Inspection and "
+                          "measured discs\")"));
   }
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
@@ -360,6 +382,10 @@ struct Study {
   double grinding_tolerance_um = 0;
   /// crank_bearing.designation and pins.designation (bom.csv); empty when not given.
   std::string crank_bearing_designation, pin_designation;
+  std::optional<InspectionInput> inspection;  ///< "inspection"
+  /// "measured_profile": the disc (1-based) and its measurement projected onto its exact profile.
+  int measured_disc = 0;
+  std::optional<MeasuredProfile> measured;
 };
 
 using cycloid_common::ElementLife;
@@ -435,7 +461,15 @@ struct Result {
   cycloid_common::PartMasses masses;                     ///< with "stiffness" or "ratings"
   std::optional<TorsionalDynamicsResult> torsional;      ///< with "torsional_dynamics"
   std::string torsional_failed;                          ///< why it is absent (an LTCA not converged)
+  /// inspection/disc_k.csv by part name, and the point counts ("inspection").
+  std::vector<std::pair<std::string, std::string>> inspection_files;
+  std::vector<std::pair<std::string, long>> inspection_points;
+  nlohmann::json measured;  ///< result.json's "measured" (null: none)
 };
+
+/// Disc k's part (1-based) as inspected: its exact tooth profile in its part frame
+/// (model/cycloid/parts.h), the frame and datum in words.
+InspectedPart DiscPart(const Study& s, int k);
 
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);

@@ -7,10 +7,6 @@
 
 namespace camopt::studies::cycloid_common {
 
-double DiscPhaseRotationRad(int k, int discs, int teeth) {
-  return -2.0 * kPi * double(k - 1) / (double(discs) * double(teeth));
-}
-
 PartsSet CycloidParts(const CycloidPartsInput& in, const PlanarCamFit& tooth) {
   const cycloid::Drive& d = in.drive;
   PartsSet set;
@@ -40,7 +36,7 @@ PartsSet CycloidParts(const CycloidPartsInput& in, const PlanarCamFit& tooth) {
   }
   const double disc_area = tooth.profile_area_mm2 - circle_area(0.5 * in.bore_diameter_mm) - holes_area;
   for (int k = 1; k <= in.discs; ++k) {
-    const double gamma = DiscPhaseRotationRad(k, in.discs, d.teeth);
+    const double gamma = cycloid::DiscPhaseRotationRad(k, in.discs, d.teeth);
     Part p;
     p.name = "disc_" + std::to_string(k);
     p.description = "cycloid disc " + std::to_string(k) + " of " + std::to_string(in.discs) + ", phase " +

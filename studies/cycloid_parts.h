@@ -7,20 +7,19 @@
 // (the bore's) and the output-pin holes at R_w u(2πj/Z_w); in it the tooth profile is the model's
 // (model/cycloid/tooth_profile.h, disc frame) turned by γ_k = −2π(k − 1)/(N n2): every disc
 // meshes the pins with its centre at e u(φ_k) and turns with the output by −φ/n2, so its model
-// frame, at −φ_k/n2, is the part frame turned by γ_k. Disc 1's part frame is the model's.
+// frame, at −φ_k/n2, is the part frame turned by γ_k (cycloid::DiscPhaseRotationRad,
+// model/cycloid/parts.h, which the inspection points use too). Disc 1's part frame is the model's.
 #pragma once
 
 #include <optional>
 
 #include "model/cycloid/output_mechanism.h"
+#include "model/cycloid/parts.h"
 #include "model/cycloid/tooth_profile.h"
 #include "studies/geometry_files.h"
 #include "studies/parts.h"
 
 namespace camopt::studies::cycloid_common {
-
-/// γ_k [rad]: disc k's (1-based) tooth profile in its part frame is the model's turned by this.
-double DiscPhaseRotationRad(int k, int discs, int teeth);
 
 struct CycloidPartsInput {
   std::string design_name;

@@ -176,7 +176,56 @@ nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
 // The checks that span fields (the follower's fields by its type, lengths against the base
 // circle, the motion, the stages and the contact-stress limit against their inputs, the design
 // over the cycle) and the conversion of the declared input to model units.
+namespace {
+Study ParseDesign(const Node& root);
+}  // namespace
+
 Study Parse(const Node& root) {
+  Study s = ParseDesign(root);
+  const Input in = Read<Input>(root);
+  s.inspection = in.inspection;
+  if (in.measured_profile) {
+    const InspectedPart part = CamPart(s);
+    // Covering: no arc between neighbouring points longer than 1/64 of the profile.
+    s.measured = ReadMeasuredProfile(root["measured_profile"], part, part.profile.length_mm() / 64.0);
+  }
+  return s;
+}
+
+InspectedPart CamPart(const Study& s) {
+  const DiscCam& cam = s.cam;
+  profile::Curve curve;
+  if (s.contact == Study::Contact::kFlatFaced && cam.follower == FollowerType::kOscillatingRoller) {
+    curve = profile::CurveFromPoints(
+        [c = OscillatingFlatFace(s)](double th) { return dc::EvaluateOscillatingFlatFaced(c, th).contact; }, 1e-3);
+  } else if (s.contact == Study::Contact::kFlatFaced) {
+    curve = profile::CurveFromPoints(
+        [cam](double th) { return dc::EvaluateFlatFaced(cam.motion, cam.base_radius, th).contact; }, 1e-3);
+  } else {
+    // The roller's (or knife edge's) contact A = C − r_f n: exact normal n of the pitch curve C,
+    // dA/dθ = |C'| (1 − r_f κ) T, curvature κ/(1 − r_f κ) (κ > 0 convex), turned to the left-positive
+    // sign of the direction of increasing θ.
+    curve = [cam](double th) {
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      profile::CurvePoint c;
+      c.point = p.contact;
+      const double v = p.pitch_d1.norm(), shrink = 1.0 - cam.roller_radius * p.pitch_curvature;
+      c.tangent = p.pitch_d1 / v;
+      c.speed = v * std::abs(shrink);
+      const double left = Cross(c.tangent, p.normal) < 0 ? 1.0 : -1.0;  // outward normal on the right: ccw
+      c.curvature = left * p.pitch_curvature / shrink;
+      return c;
+    };
+  }
+  return {"profile",
+          "the cam frame of profile.dxf: origin at the cam's axis of rotation, the profile point at parameter theta "
+          "the one in contact at cam angle theta",
+          "the cam's axis of rotation (its bore)", profile::ClosedProfile(curve, 0.0, 2.0 * kPi, 4096)};
+}
+
+namespace {
+
+Study ParseDesign(const Node& root) {
   const Input in = Read<Input>(root);
   Study s;
   s.name = in.name;
@@ -378,6 +427,8 @@ Study Parse(const Node& root) {
   return s;
 }
 
+}  // namespace
+
 // The geometry files of the cam: exact profile, pitch curve and cutter path as functions of θ.
 PlanarCamFit FitGeometryFiles(const Study& s) {
   const DiscCam& cam = s.cam;
@@ -561,9 +612,120 @@ std::optional<Result::Spectrum> ResidualSpectrumOf(const Study& s, const Result&
 
 Result RunCam(const Study& s, const RunContext& ctx);
 
+namespace {
+
+// The follower's displacement error of the measured cam: at cam angle θ the follower touches the
+// profile point of parameter θ, moved by d(θ) along its normal; to first order (Rzine et al.
+// eqs. 17, 22, model/disc_cam/mechanical_error.h) ΔS = d/cos φ (translating roller or knife edge),
+// d/(l cos φ) (oscillating), and ΔS = d for a translating flat face (its normal is the line of
+// motion). Over the study's analysis grid.
+nlohmann::json MeasuredCam(const Study& s, const Result& r) {
+  const MeasuredProfile& m = *s.measured;
+  nlohmann::json j = MeasuredJson(m, CamPart(s));
+  const DiscCam& cam = s.cam;
+  const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
+  if (s.contact == Study::Contact::kFlatFaced && oscillating) {
+    j["not_computed"] = nlohmann::json::array(
+        {{{"result", "the follower's displacement error and the contact stress of the measured cam"},
+          {"why", "the oscillating flat face's error gain (the contact's distance along the face) is not modelled "
+                  "for a measured profile yet"}}});
+    return j;
+  }
+  const double unit = oscillating ? 180.0 / kPi * 3600.0 : 1000.0;  // arcsec or µm
+  const std::string u = oscillating ? "arcsec" : "um";
+  double lo = INFINITY, hi = -INFINITY, lo_at = 0, hi_at = 0, s_lo = INFINITY, s_hi = -INFINITY, n_lo = INFINITY,
+         n_hi = -INFINITY;
+  const int n = s.angle_steps;
+  for (int i = 0; i < n; ++i) {
+    const double th = 2.0 * kPi * i / n;
+    const double d = m.shape(th);
+    double error = d, follower = 0;
+    if (s.contact == Study::Contact::kFlatFaced) {
+      follower = cam.motion.Evaluate(th).s;
+    } else {
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      dc::Deviations<double> dev;
+      dev.normal = d;
+      error = dc::FollowerError(cam, p, dev).normal;
+      follower = p.s;
+    }
+    if (error < lo) lo = error, lo_at = th;
+    if (error > hi) hi = error, hi_at = th;
+    s_lo = std::min(s_lo, follower + error);
+    s_hi = std::max(s_hi, follower + error);
+    n_lo = std::min(n_lo, follower);
+    n_hi = std::max(n_hi, follower);
+  }
+  j["follower"] = {
+      {"model", s.contact == Study::Contact::kFlatFaced
+                    ? "first order: the translating flat face moves by d(theta), the deviation at the contact"
+                    : "first order (Rzine et al. eqs. 17, 22): the follower moves by d(theta)/cos(pressure angle) "
+                      "(translating) or d/(l cos) (oscillating), d the deviation at the point in contact at theta"},
+      {"angles", n},
+      {"displacement_error_max_" + u, hi * unit},
+      {"displacement_error_max_at_cam_angle_deg", hi_at * 180.0 / kPi},
+      {"displacement_error_min_" + u, lo * unit},
+      {"displacement_error_min_at_cam_angle_deg", lo_at * 180.0 / kPi},
+      {"displacement_error_peak_to_peak_" + u, (hi - lo) * unit},
+      {"follower_range_" + r.follower_unit,
+       {{"nominal", oscillating ? (n_hi - n_lo) * 180.0 / kPi : n_hi - n_lo},
+        {"measured", oscillating ? (s_hi - s_lo) * 180.0 / kPi : s_hi - s_lo}}}};
+  nlohmann::json not_computed = nlohmann::json::array(
+      {{{"result", "the follower's dynamics with the measured motion (contact force, jump)"},
+        {"why", "the loads are the nominal motion's; the measured error's inertia m dS'' w^2 is left out"}}});
+  if (r.loads && r.loads->stress_evaluated && s.contact == Study::Contact::kRoller &&
+      r.loads->contact_force_N.size() == size_t(n)) {
+    // The Hertz stress on the moved profile Q = A + d n (A the contact point, n its outward
+    // normal): its curvature from central differences over θ (step 1e-4 rad), convex positive,
+    // 1/R' = 1/r_f + κ_Q; the contact force the nominal's (first order).
+    const double e_star = s.material->composite_modulus_MPa();
+    auto moved = [&](double th) {
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      return Vec2<double>(p.contact + m.shape(th) * p.normal);
+    };
+    double p_max = 0, p_at = 0;
+    for (int i = 0; i < n; ++i) {
+      const double th = 2.0 * kPi * i / n, h = 1e-4, force = r.loads->contact_force_N[size_t(i)];
+      if (!(force > 0)) continue;
+      const CamPoint<double> p = dc::EvaluateCam(cam, th);
+      const Vec2<double> qm = moved(th - h), q0 = moved(th), qp = moved(th + h);
+      const Vec2<double> d1 = (qp - qm) / (2 * h), d2 = (qp - 2.0 * q0 + qm) / (h * h);
+      const double ccw = Cross(p.pitch_d1, p.normal) < 0 ? 1.0 : -1.0;  // outward normal on the right: ccw
+      const double kappa = ccw * Cross(d1, d2) / std::pow(d1.norm(), 3);
+      const double inv_r = 1.0 / cam.roller_radius + kappa;
+      const double stress = inv_r > 0 ? std::sqrt(force * e_star * inv_r / (kPi * *s.face_width_mm)) : INFINITY;
+      if (stress > p_max) p_max = stress, p_at = th;
+    }
+    j["contact"] = {
+        {"model", "Hertz line contact of the roller on the measured profile's curvature (the moved profile Q = A + d "
+                  "n differentiated over the cam angle), the nominal motion's contact force"},
+        {"max_contact_stress_MPa",
+         {{"nominal", r.loads->max_contact_stress_MPa.value},
+          {"measured", std::isfinite(p_max) ? nlohmann::json(p_max) : nlohmann::json(nullptr)}}},
+        {"at_max_contact_stress_cam_angle_deg",
+         {{"nominal", r.loads->max_contact_stress_MPa.cam_angle_deg}, {"measured", p_at * 180.0 / kPi}}}};
+  } else {
+    not_computed.push_back({{"result", "the contact stress of the measured cam"},
+                            {"why", "no contact stress in this study (a roller follower with face_width_mm, material "
+                                    "and loads: dynamics or arm_dynamics)"}});
+  }
+  j["not_computed"] = not_computed;
+  return j;
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   Result r = RunCam(s, ctx);
   r.residual_spectrum = ResidualSpectrumOf(s, r);
+  if (s.inspection && s.geometry.write) {
+    const InspectedPart part = CamPart(s);
+    long points = 0;
+    r.inspection_files.push_back(
+        {part.name, InspectionCsv(s.name, part, s.inspection->spacing_mm, s.inspection->tolerance_um, &points)});
+    r.inspection_points.push_back({part.name, points});
+  }
+  if (s.measured) r.measured = MeasuredCam(s, r);
   return r;
 }
 
@@ -1323,12 +1485,19 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     j["monte_carlo"] = {{"skipped", "the profile is undercut"}};
   }
   j["geometry_files"] = GeometryFilesJson(s.geometry, {{"profile", &r.profile_files}});
+  if (s.inspection) {
+    j["inspection"] = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
+                                     s.geometry.write);
+    if (s.geometry.write) j["inspection"]["datum"] = "the cam's axis of rotation (its bore); the file's header states its frame";
+  }
+  if (!r.measured.is_null()) j["measured"] = r.measured;
   return j;
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.AddJson("result.json", ToJson(s, r));
   WritePlanarCamFiles(r.profile_files, s.geometry, out);
+  for (const auto& [name, csv] : r.inspection_files) out.Add("inspection/" + name + ".csv", csv);
   const DiscCam& cam = s.cam;
   const auto& t = r.series;
   const std::string& fu = r.follower_unit;

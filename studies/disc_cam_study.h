@@ -26,6 +26,7 @@
 #include "model/motion/motion_program.h"
 #include "studies/archive.h"
 #include "studies/geometry_files.h"
+#include "studies/measured_profile.h"
 #include "studies/material_input.h"
 #include "studies/input.h"
 #include "studies/study.h"
@@ -304,6 +305,13 @@ struct Input {
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no "
                  "DXF/STEP/STL)")));
   }
+  /// The part name of "measured_profile": the cam (its geometry files' stem).
+  struct Parts {
+    static std::vector<std::string> Names() { return {"profile"}; }
+    static std::string Description() { return "the measured cam, \"profile\" (the frame of profile.dxf)"; }
+  };
+  std::optional<InspectionInput> inspection;
+  std::optional<MeasuredProfileInputT<Parts>> measured_profile;
   /// What a follower without a roller does not take (the mechanical-error stages, a cutter path; a
   /// knife edge no contact-stress limit): Parse refuses the same with its reasons.
   static nlohmann::ordered_json SchemaRules();
@@ -313,6 +321,13 @@ struct Input {
     SerializeDesign(a);
     a->Visit("analysis", &analysis, Field().Desc("the analysis grid, the Monte-Carlo check and the stages to run"));
     SerializeGeometry(a);
+    a->Visit("inspection", &inspection,
+             Field().Desc("inspection points of the cam's exact profile with the ISO 1101 profile tolerance zone: "
+                          "inspection/profile.csv (docs/studies.md, \"Inspection points and measured parts\"; none "
+                          "when geometry_files is false)"));
+    a->Visit("measured_profile", &measured_profile,
+             Field().Desc("a measured cam back in: its ISO 1101 profile deviation and the follower's displacement "
+                          "error as measured (docs/studies.md, \"Inspection points and measured parts\")"));
   }
   /// The schema of "motion" (read by ParseMotionProgram): rise_mm for a translating, rise_deg for an
   /// oscillating follower; polynomial segments (`sizing`: the same, disc_cam_min_size sizes both).
@@ -348,6 +363,8 @@ struct Study {
   double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
   Mounting mounting;  ///< "keyway", "bolt_circle"
   GeometryFileOptions geometry;
+  std::optional<InspectionInput> inspection;  ///< "inspection"
+  std::optional<MeasuredProfile> measured;    ///< "measured_profile", projected onto the exact profile
 
   /// The limits of the verdict ("limits"; docs/disc_cam.md "Limits and verdict"). A limit not
   /// given takes its default (recorded in *_default): the pressure angle 30° translating / 45°
@@ -509,7 +526,15 @@ struct Result {
   bool error_evaluated = false;  ///< the mechanical-error stage ran (the error fields are set)
   std::vector<MonteCarloRow> monte_carlo_rows;
   PlanarCamFit profile_files;  ///< the cam's geometry files (arcs of the exact profile)
+  /// inspection/profile.csv and its point count ("inspection").
+  std::vector<std::pair<std::string, std::string>> inspection_files;
+  std::vector<std::pair<std::string, long>> inspection_points;
+  nlohmann::json measured;  ///< result.json's "measured" (null: none)
 };
+
+/// The cam as inspected: its exact profile as a function of the cam angle θ in the frame of
+/// profile.dxf, the frame and datum in words.
+InspectedPart CamPart(const Study& study);
 
 /// Parses and validates a "disc_cam" study. @throws StudyError (exit 2) naming the JSON path.
 Study Parse(const Node& root);

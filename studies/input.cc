@@ -376,7 +376,7 @@ nlohmann::json ParseStudyText(const std::string& text, const std::string& file, 
   return nlohmann::json::parse(text);
 }
 
-nlohmann::json LoadStudyFile(const std::string& file) {
+void CheckFileInside(const std::string& file) {
   const InputLimits& limits = CurrentInputLimits();
   if (!limits.files_inside.empty()) {
     // Resolved before anything is opened, so the answer does not depend on whether it exists.
@@ -388,6 +388,11 @@ nlohmann::json LoadStudyFile(const std::string& file) {
       throw StudyError(file + ": expected a file inside the folder " + limits.files_inside +
                        ", found a path that leads outside it (copy the file into the folder)");
   }
+}
+
+nlohmann::json LoadStudyFile(const std::string& file) {
+  CheckFileInside(file);
+  const InputLimits& limits = CurrentInputLimits();
   return ParseStudyText(ReadFileCapped(file, limits.max_file_bytes, "file"), file,
                         limits.max_depth);
 }

@@ -122,6 +122,9 @@ std::string ReadFileCapped(const std::string& file, size_t max_bytes, const std:
 /// column. No recursion over the value: a 100 000-deep text is refused, not a stack overflow.
 nlohmann::json ParseStudyText(const std::string& text, const std::string& file, int max_depth);
 
+/// Throws StudyError when CurrentInputLimits().files_inside is set and `file` lies outside it.
+void CheckFileInside(const std::string& file);
+
 /// Reads (ReadFileCapped) and parses (ParseStudyText) a study file with CurrentInputLimits().
 nlohmann::json LoadStudyFile(const std::string& file);
 

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "model/common/sliced_bearing_life.h"
+#include "model/contact/hertz.h"
 #include "model/lcr/contact_fatigue.h"
 #include "model/lcr/friction.h"
 #include "model/lcr/life.h"
@@ -595,7 +596,8 @@ Study Parse(const Node& root) {
   // (forces, stress, efficiency); a profile/undercut study needs neither (checked when given).
   // The compliant load model and the transmission error (Palmgren contacts) need both.
   st.tolerances = ToToleranceSpec(in.tolerances, in.monte_carlo, root);
-  const bool compliant = st.load_model == lcr::LoadModel::kCompliant || st.tolerances.has_value();
+  const bool compliant =
+      st.load_model == lcr::LoadModel::kCompliant || st.tolerances.has_value() || in.measured_profile.has_value();
   if ((st.evaluate.stress || compliant) && !in.material) (void)root["material"];  // "missing required field"
   if (in.material) {
     st.material = in.material->ToMaterial();
@@ -613,6 +615,8 @@ Study Parse(const Node& root) {
       load_node["output_torque_Nm"].Fail("a torque > 0 for \"load_model\": \"compliant\"");
     if (st.tolerances && !(st.load.output_torque_Nmm > 0))
       load_node["output_torque_Nm"].Fail("a torque > 0 for the transmission error under \"tolerances\"");
+    if (in.measured_profile && !(st.load.output_torque_Nmm > 0))
+      load_node["output_torque_Nm"].Fail("a torque > 0 for the measured cam's transmission error (\"measured_profile\")");
   }
   if (in.limits) {
     st.life_limit_h = in.limits->life_h.value_or(0.0);
@@ -656,7 +660,26 @@ Study Parse(const Node& root) {
                      "torsional_dynamics.load_torque_Nm");
     st.torsional = ParseTorsionalDynamics(block, *in.torsional_dynamics);
   }
+  st.inspection = in.inspection;
+  if (in.measured_profile) {
+    st.measured_side = in.measured_profile->part == "input_cam" ? Side::kInput : Side::kOutput;
+    const InspectedPart part = CamPart(st, st.measured_side);
+    // Covering: no arc between neighbouring points longer than 1/64 of the profile.
+    st.measured = ReadMeasuredProfile(root["measured_profile"], part, part.profile.length_mm() / 64.0);
+  }
   return st;
+}
+
+InspectedPart CamPart(const Study& st, Side side) {
+  const lcr::CamSide<double>& c = st.reducer.side(side);
+  const bool input = side == Side::kInput;
+  const std::string name = input ? "input_cam" : "output_cam";
+  return {name,
+          "the " + std::string(input ? "input" : "output") + " cam's frame (as " + name +
+              ".dxf): origin at the cam's centre (its bore, on the eccentric), x axis the model's at input angle 0",
+          "the cam's centre (the bore's axis)",
+          profile::ClosedProfile(lcr::CamProfileCurve(c, st.reducer.eccentricity, c.roller_radius), 0.0, 2.0 * kPi,
+                                 512 * c.rollers)};
 }
 
 nlohmann::ordered_json Input::SchemaRules() {
@@ -674,6 +697,9 @@ nlohmann::ordered_json Input::SchemaRules() {
                                         "properties": {"evaluate": {"not": {"contains": {"enum": ["forces", "stress", "efficiency"]}}}}}}},
      "else": {"required": ["load"]}},
     {"if": {"required": ["tolerances"]}, "then": {"required": ["material", "load"]}},
+    {"if": {"required": ["measured_profile"]},
+     "then": {"required": ["material", "load"],
+              "properties": {"load": {"properties": {"output_torque_Nm": {"exclusiveMinimum": 0}}}}}},
     {"if": {"required": ["analysis"],
             "properties": {"analysis": {"required": ["load_model"], "properties": {"load_model": {"const": "compliant"}}}}},
      "then": {"required": ["material", "load"]}},
@@ -911,6 +937,122 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
 
 }  // namespace
 
+namespace {
+
+// Input angles of the measured cam's transmission error over one input revolution.
+constexpr int kMeasuredAngleSteps = 720;
+
+// The measured cam in the compliant model (model/lcr/transmission_error.h: the measured normal
+// deviation d(ψ) in every roller's gap of that cam) beside the nominal reducer.
+nlohmann::json MeasuredCam(const Study& st, Result& res) {
+  const MeasuredProfile& m = *st.measured;
+  const Side side = st.measured_side;
+  nlohmann::json j = MeasuredJson(m, CamPart(st, side));
+  const lcr::Reducer<double>& r = st.reducer;
+  lcr::Deviations<double> dev;
+  const profile::PeriodicSpline shape = m.shape;
+  dev.profile_shape[lcr::SideIndex(side)] = [shape](const double& t, double* slope) { return shape(t, slope); };
+  const double torque = st.load.output_torque_Nmm;
+  const double sense = lcr::LoadedArmSign(r, Side::kOutput);
+  const double fraction = st.tolerances ? st.tolerances->lost_motion_torque_fraction : 0.03;
+  const double t_lm = fraction * torque;
+  std::vector<double> te, lm_nom, lm_meas, rot_nom, rot_meas;
+  double force_nom = 0, force_meas = 0, stress_nom = 0, stress_meas = 0;
+  const lcr::CamSide<double>& cam = r.side(side);
+  const double e_star = st.material.composite_modulus_MPa(), rr = cam.roller_radius;
+  const profile::Curve profile_curve = lcr::CamProfileCurve(cam, r.eccentricity, rr);
+  // The curvature of the moved profile Q = P + d n at ψ (convex positive: the profile runs
+  // counter-clockwise about the cam), from central differences over ψ (step 1e-4 rad).
+  auto moved_curvature = [&](double psi) {
+    auto q = [&](double u) {
+      const profile::CurvePoint c = profile_curve(u);
+      return Vec2<double>(c.point + shape(u) * Vec2<double>(c.tangent.y(), -c.tangent.x()));
+    };
+    const double h = 1e-4;
+    const Vec2<double> qm = q(psi - h), q0 = q(psi), qp = q(psi + h);
+    const Vec2<double> d1 = (qp - qm) / (2 * h), d2 = (qp - 2.0 * q0 + qm) / (h * h);
+    return Cross(d1, d2) / std::pow(d1.norm(), 3);
+  };
+  auto hertz = [&](double f, double inv_r) {
+    return inv_r > 0 ? contact::LineContactPeakPressure(f, cam.contact_length(), 1.0 / inv_r, e_star) : kInf;
+  };
+  try {
+    for (int i = 0; i < kMeasuredAngleSteps; ++i) {
+      const double th = 2.0 * kPi * i / kMeasuredAngleSteps;
+      const Vec2<double> dir = lcr::EccentricLoadDirection(r, st.material, torque, th);
+      auto at = [&](double t, const lcr::Deviations<double>* d) {
+        return lcr::CompliantAtAngle<double>(r, st.material, th, sense * t, d, dir);
+      };
+      const lcr::CompliantAngle<double> nom = at(torque, nullptr), meas = at(torque, &dev);
+      rot_nom.push_back(nom.output_rotation);
+      rot_meas.push_back(meas.output_rotation);
+      te.push_back(meas.output_rotation - nom.output_rotation);
+      lm_nom.push_back(sense * (at(t_lm, nullptr).output_rotation - at(-t_lm, nullptr).output_rotation));
+      lm_meas.push_back(sense * (at(t_lm, &dev).output_rotation - at(-t_lm, &dev).output_rotation));
+      const auto& fn = side == Side::kInput ? nom.force_input : nom.force_output;
+      const auto& fm = side == Side::kInput ? meas.force_input : meas.force_output;
+      for (double f : fn) force_nom = std::max(force_nom, f);
+      for (double f : fm) force_meas = std::max(force_meas, f);
+      // Hertz line contact on each loaded roller of the measured cam: the nominal's on the pitch
+      // curve's κ (1/R' = 1/r_r + κ/(1 − r_r κ), as AnalyzeCycleCompliant), the measured one on the
+      // moved profile's curvature at the roller's foot point ψ* (found as RollerGaps finds it).
+      const double phi = lcr::CamSpeedRatio(r) * th;
+      const double turn = side == Side::kInput ? 0.0 : lcr::OutputSpeedRatio(r) * th;
+      const auto contacts = lcr::RollerContacts(r, side, th);
+      for (size_t k = 0; k < contacts.size(); ++k) {
+        if (fn[k] > 0) stress_nom = std::max(stress_nom, hertz(fn[k], 1.0 / rr + contacts[k].curvature /
+                                                                            (1.0 - rr * contacts[k].curvature)));
+        if (!(fm[k] > 0)) continue;
+        const double slot = 2.0 * kPi * double(k) / cam.rollers;
+        const Vec2<double> o = cam.turret_radius * U(slot + turn) - r.eccentricity * U(th);
+        double foot = 0;
+        (void)lcr::PitchCurveDistance<double>(cam, r.eccentricity, Rotate(o, -phi), slot + turn - phi, &foot);
+        stress_meas = std::max(stress_meas, hertz(fm[k], 1.0 / rr + moved_curvature(foot)));
+      }
+    }
+  } catch (const std::domain_error& e) {
+    j["not_computed"] = nlohmann::json::array(
+        {{{"result", "the transmission error and lost motion of the measured cam"},
+          {"why", std::string("the compliant model cannot carry the torque: ") + e.what()}}});
+    res.notes.push_back(std::string("measured_profile: ") + e.what());
+    return j;
+  }
+  auto range = [](const std::vector<double>& v) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return std::pair<double, double>(*lo, *hi);
+  };
+  const double as = tolerance::kArcsecPerRad, am = as / 60.0;
+  const auto [te_lo, te_hi] = range(te);
+  const auto [rn_lo, rn_hi] = range(rot_nom);
+  const auto [rm_lo, rm_hi] = range(rot_meas);
+  j["compliant"] = {
+      {"model", "the compliant load sharing of model/lcr/transmission_error.h (Palmgren contacts, input held) with the "
+                "measured normal deviation d(psi) in every roller's gap of the measured cam"},
+      {"angles", kMeasuredAngleSteps},
+      {"output_torque_Nm", torque / 1000.0},
+      {"transmission_error_peak_to_peak_arcsec", Finite((te_hi - te_lo) * as, "measured te")},
+      {"transmission_error_max_arcsec", te_hi * as},
+      {"transmission_error_min_arcsec", te_lo * as},
+      {"transmission_error_note", "the output angle of the reducer with the measured cam less the nominal's at the "
+                                  "same input angle and torque (input held)"},
+      {"output_rotation_peak_to_peak_arcsec", {{"nominal", (rn_hi - rn_lo) * as}, {"measured", (rm_hi - rm_lo) * as}}},
+      {"lost_motion_arcmin",
+       {{"nominal", *std::max_element(lm_nom.begin(), lm_nom.end()) * am},
+        {"measured", *std::max_element(lm_meas.begin(), lm_meas.end()) * am}}},
+      {"lost_motion_torque_Nm", t_lm / 1000.0},
+      {"max_roller_force_N", {{"nominal", force_nom}, {"measured", force_meas}}},
+      {"max_contact_stress_MPa", {{"nominal", stress_nom}, {"measured", stress_meas}}},
+      {"contact_stress_note", "Hertz line contact of each loaded roller of the measured cam at the load torque, on "
+                              "the measured profile's curvature (the moved profile P + d n differentiated over psi) "
+                              "with the compliant model's forces; the nominal's on the exact profile"}};
+  j["not_computed"] = nlohmann::json::array(
+      {{{"result", "the lives, efficiency and the 3D (crowned) contact of the measured cam"},
+        {"why", "those stages run on the nominal cams"}}});
+  return j;
+}
+
+}  // namespace
+
 Result Run(const Study& st, const RunContext& ctx) {
   const lcr::Reducer<double>& r = st.reducer;
   const Evaluate& q = st.evaluate;
@@ -1016,6 +1158,16 @@ Result Run(const Study& st, const RunContext& ctx) {
     res.input_cam_files = FitPlanarCam(CamGeometry(st, Side::kInput), st.geometry);
     res.output_cam_files = FitPlanarCam(CamGeometry(st, Side::kOutput), st.geometry);
   }
+  if (st.inspection && st.geometry.write) {
+    for (Side side : {Side::kInput, Side::kOutput}) {
+      const InspectedPart part = CamPart(st, side);
+      long points = 0;
+      res.inspection_files.push_back(
+          {part.name, InspectionCsv(st.name, part, st.inspection->spacing_mm, st.inspection->tolerance_um, &points)});
+      res.inspection_points.push_back({part.name, points});
+    }
+  }
+  if (st.measured) res.measured = MeasuredCam(st, res);
   if (st.tolerances) {
     const LcrToleranceSpec& t = *st.tolerances;
     Progress progress("lcr_analysis transmission error", ctx.quiet);
@@ -1345,6 +1497,12 @@ nlohmann::json ToJson(const Study& st, const Result& res) {
   if (res.input_cam_files && res.output_cam_files)
     j["geometry_files"] =
         GeometryFilesJson(st.geometry, {{"input_cam", &*res.input_cam_files}, {"output_cam", &*res.output_cam_files}});
+  if (st.inspection) {
+    j["inspection"] = InspectionJson(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
+                                     st.geometry.write);
+    if (st.geometry.write) j["inspection"]["datum"] = "each cam's centre (its bore); each file's header states its frame";
+  }
+  if (!res.measured.is_null()) j["measured"] = res.measured;
   return j;
 }
 
@@ -1460,6 +1618,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
     }
   }
   out.AddJson("result.json", ToJson(st, res));
+  for (const auto& [name, csv] : res.inspection_files) out.Add("inspection/" + name + ".csv", csv);
   if (!res.torsion_curve.empty()) {
     // The torsional curve (docs/ratings.md): hysteresis.csv and .svg, as cycloid_ltca's.
     std::vector<double> torque, angle;

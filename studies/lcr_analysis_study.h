@@ -27,6 +27,7 @@
 #include "model/lcr/lubrication.h"
 #include "studies/material_input.h"
 #include "studies/ratings.h"
+#include "studies/measured_profile.h"
 #include "studies/study.h"
 #include "studies/torsional_dynamics_input.h"
 #include "studies/writers.h"
@@ -128,6 +129,15 @@ struct Input {
   std::optional<OutputBearingInput> output_bearing;
   std::optional<std::vector<ExternalLoadInput>> external_loads;
   std::optional<TorsionalDynamicsInput> torsional_dynamics;
+  /// The part names of "measured_profile": the two cams (their geometry files' stems and frames).
+  struct Parts {
+    static std::vector<std::string> Names() { return {"input_cam", "output_cam"}; }
+    static std::string Description() {
+      return "the measured cam, input_cam or output_cam (the frame of its DXF: origin at the cam's centre)";
+    }
+  };
+  std::optional<InspectionInput> inspection;
+  std::optional<MeasuredProfileInputT<Parts>> measured_profile;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -177,6 +187,14 @@ struct Input {
                           "Palmgren contacts (docs/torsional_dynamics.md): natural frequencies, mode shapes, the "
                           "dynamic transmission error and overload over an input-speed sweep, resonance speeds; "
                           "mesh_stiffness.csv, dynamic_te.csv (needs material and a load torque > 0)"));
+    a->Visit("inspection", &inspection,
+             Field().Desc("inspection points of each cam's exact profile with the ISO 1101 profile tolerance zone: "
+                          "inspection/input_cam.csv, inspection/output_cam.csv (docs/studies.md, \"Inspection points "
+                          "and measured parts\"; none when geometry_files is false)"));
+    a->Visit("measured_profile", &measured_profile,
+             Field().Desc("a measured cam back in: its ISO 1101 profile deviation and the transmission error and lost "
+                          "motion of the compliant model as measured beside the nominal (docs/studies.md, "
+                          "\"Inspection points and measured parts\"; needs material and a load torque > 0)"));
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();
@@ -257,6 +275,10 @@ struct Study {
   std::vector<ExternalLoadInput> external_loads;
   /// "torsional_dynamics" (studies/torsional_dynamics_input.h); nullopt: none.
   std::optional<TorsionalDynamicsSpec> torsional;
+  std::optional<InspectionInput> inspection;  ///< "inspection"
+  /// "measured_profile": the cam and its measurement projected onto its exact profile.
+  lcr::Side measured_side = lcr::Side::kInput;
+  std::optional<MeasuredProfile> measured;
 };
 
 /// The rating life of one bearing over the duty cycle (model/common/bearing_life.h, model/lcr/life.h).
@@ -339,6 +361,10 @@ struct Result {
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
   std::optional<PlanarCamFit> input_cam_files, output_cam_files;  ///< with the profile stage
+  /// inspection/<cam>.csv by part name and their point counts ("inspection").
+  std::vector<std::pair<std::string, std::string>> inspection_files;
+  std::vector<std::pair<std::string, long>> inspection_points;
+  nlohmann::json measured;  ///< result.json's "measured" (null: none)
   /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
   std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
@@ -369,6 +395,9 @@ struct Result {
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.
 Study Parse(const Node& root);
+/// A cam as inspected: its exact profile in the frame of its DXF (origin at the cam's centre),
+/// the frame and datum in words.
+InspectedPart CamPart(const Study& study, lcr::Side side);
 /// Runs the stages asked. @throws StudyError for a design no roller can carry load on.
 Result Run(const Study& study, const RunContext& ctx);
 /// The content of result.json.

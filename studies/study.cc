@@ -356,8 +356,29 @@ OutputFolder::~OutputFolder() {
 }
 
 void WriteFilesInto(const std::string& dir, const Outputs& outputs) {
-  for (const auto& [name, content] : outputs.files())
+  // A name "sub/file" (one level: e.g. inspection/disc_1.csv) goes into a sub-folder with its own
+  // list of the files camopt wrote there (NotReplaceable reads it when the folder is replaced).
+  std::map<std::string, std::vector<std::string>> sub;
+  for (const auto& [name, content] : outputs.files()) {
+    if (const size_t slash = name.find('/'); slash != std::string::npos) {
+      const std::string folder = name.substr(0, slash);
+      if (!sub.count(folder) && mkdir((fs::path(dir) / folder).c_str(), 0755) != 0 && errno != EEXIST)
+        OutputFail("cannot create " + folder, dir, errno);
+      sub[folder].push_back(name.substr(slash + 1));
+    }
     WriteWholeFile((fs::path(dir) / name).string(), content);
+  }
+  for (const auto& [folder, names] : sub) WriteManifest((fs::path(dir) / folder).string(), names);
+}
+
+std::vector<std::string> ManifestEntries(const Outputs& outputs) {
+  std::vector<std::string> entries;
+  for (const auto& [name, content] : outputs.files()) {
+    const size_t slash = name.find('/');
+    std::string e = slash == std::string::npos ? name : name.substr(0, slash + 1);
+    if (entries.empty() || entries.back() != e) entries.push_back(std::move(e));
+  }
+  return entries;
 }
 
 void MoveFolderIn(const std::string& tmp, const std::string& dir) {
@@ -386,8 +407,7 @@ void MoveFolderIn(const std::string& tmp, const std::string& dir) {
 
 void OutputFolder::Commit(const Outputs& outputs) {
   std::lock_guard<std::mutex> lock(OutputMutex());
-  std::vector<std::string> manifest;
-  for (const auto& [name, content] : outputs.files()) manifest.push_back(name);
+  const std::vector<std::string> manifest = ManifestEntries(outputs);
   try {
     WriteFilesInto(tmp_, outputs);
     WriteManifest(tmp_, manifest);

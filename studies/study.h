@@ -229,6 +229,9 @@ void CheckNotInside(const std::string& file, const std::string& out, const std::
 /// Writes every file of `outputs` into the existing folder `dir` (StudyError with the operating
 /// system's reason otherwise). OutputFolder::Commit and the sweep's merged output use it.
 void WriteFilesInto(const std::string& dir, const Outputs& outputs);
+/// The entries of a folder's list for `outputs`: each file, and "sub/" once for the files of a
+/// sub-folder (which WriteFilesInto lists in the sub-folder itself).
+std::vector<std::string> ManifestEntries(const Outputs& outputs);
 
 /// Replaces `dir` by the complete folder `tmp` with one rename (an atomic exchange when `dir`
 /// exists; the previous folder is then removed). StudyError with the operating system's reason.

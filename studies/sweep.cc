@@ -452,8 +452,7 @@ void WriteMerged(const Sweep& s, const std::vector<std::vector<json>>& cases,
   WriteFilesInto(partial.string(), outputs);
   // The lists that make this folder the next sweep's to replace (studies/study.h, NotReplaceable):
   // the merged files and cases/, whose list names the case folders (each with its run's own list).
-  std::vector<std::string> manifest;
-  for (const auto& [name, content] : outputs.files()) manifest.push_back(name);
+  std::vector<std::string> manifest = ManifestEntries(outputs);
   std::error_code ec;
   if (fs::is_directory(partial / "cases", ec)) {
     std::vector<std::string> case_folders;

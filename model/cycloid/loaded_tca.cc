@@ -353,7 +353,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
     out.message = "torque balance not met: the torque is not a finite number in N·mm";
     return out;
   }
-  const UnloadedMesh<double> unloaded = UnloadedTca<double>(drive_, crank_angle_rad);
+  const UnloadedMesh<double> unloaded = UnloadedTca<double>(drive_, crank_angle_rad, shape_ ? &shape_ : nullptr);
   out.unloaded_rotation_rad = unloaded.rotation;
   out.rotation_rad = unloaded.rotation;
   if (unloaded.first_contact < 0) {

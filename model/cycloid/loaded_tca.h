@@ -161,6 +161,12 @@ class LoadedTca {
   /// `warm` is given it is read as a starting point and updated with this solve's pairs.
   MeshLoad Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmStart* warm = nullptr) const;
 
+  /// A measured disc: its tooth moved by the normal deviation d(t) (model/common/profile_deviation.h)
+  /// in the unloaded TCA of every solve (arms, backlash and β0 with d in each pair's contact, the
+  /// tooth's curvature that of the moved profile; UnloadedTca). The drive then has no symmetry:
+  /// solve with LoadedOptions::reuse_symmetric_angles and crank_slope off. Empty: the nominal disc.
+  void SetProfileDeviation(profile::NormalDeviation<double> shape) { shape_ = std::move(shape); }
+
   /// Derivatives of a converged solve's outputs with respect to one parameter, by implicit
   /// differentiation with every pair's contact set and the set of loaded pairs frozen
   /// (implicit-function theorem): per pair one forward sensitivity for its load (its compliance
@@ -247,6 +253,7 @@ class LoadedTca {
   std::vector<double> crown_;  // crowning drop per axial cell
   std::shared_ptr<contact::HalfSpaceSolver> solver_;        // final tolerance
   std::shared_ptr<contact::HalfSpaceSolver> rough_solver_;  // steering iterations
+  profile::NormalDeviation<double> shape_;                  // a measured disc's d(t); empty: none
 };
 
 /// A mesh cycle: the LTCA at each crank angle, with the derived series.

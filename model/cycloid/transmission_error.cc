@@ -98,6 +98,18 @@ std::vector<double> TransmissionErrorAngles(const Drive& d, int steps) {
   return a;
 }
 
+KinematicCurves KinematicOutput(const Drive& d, const OutputPins* pins, const Deviations<double>& dev,
+                                const std::vector<double>& crank) {
+  KinematicCurves c;
+  for (double phi : crank) {
+    const OutputLag<double> fwd = KinematicLag<double>(d, pins, dev, phi, 1);
+    c.forward_rad.push_back(fwd.total_rad);
+    c.forward_pair.push_back(fwd.pair);
+    c.reverse_rad.push_back(KinematicLag<double>(d, pins, dev, phi, -1).total_rad);
+  }
+  return c;
+}
+
 std::vector<double> ExactTransmissionError(const Drive& d, const OutputPins* pins, const Deviations<double>& dev,
                                            const std::vector<double>& crank) {
   std::vector<double> te;

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "model/common/geometry.h"
+#include "model/common/profile_deviation.h"
 #include "model/common/scalar.h"
 #include "model/common/tolerance_stats.h"
 #include "model/cycloid/output_mechanism.h"
@@ -61,6 +62,10 @@ struct Deviations {
   std::vector<T> pin_radius, pin_angle;                       ///< δρ_i, δψ_i per ring pin
   std::vector<T> output_pin_radial, output_pin_tangential;    ///< δr_j, δt_j per output pin
   std::vector<T> hole_radial, hole_tangential, hole_radius;   ///< δr'_j, δt'_j, δr_h,j per hole
+  /// A normal deviation of the disc's profile that varies along it, d(t) of the curve parameter t
+  /// of ToothProfile (disc frame), added to `profile` (a measured disc,
+  /// model/common/profile_deviation.h; SolvePairAt states the contact it enters); empty: none.
+  profile::NormalDeviation<T> profile_shape;
 };
 
 /// Pins whose distance to their hole's centre grows more slowly with w than this fraction of R_w
@@ -117,7 +122,7 @@ OutputLag<T> KinematicLag(const Drive& d, const OutputPins* pins, const Deviatio
     const T psi = T(2.0 * kPi * i / d.rollers) + At(dev.pin_angle, i);
     const Vec2<T> rel = a * U(psi) - e * U(crank_t);
     const T drho = T(d.roller_radius_mm) + At(dev.pin_radius, i) - (tooth.roller_radius_mm + tooth.delta_radius_mm);
-    const PairGeometry<T> g = SolvePairAt(tooth, i, crank_t, rel, drho);
+    const PairGeometry<T> g = SolvePairAt(tooth, i, crank_t, rel, drho, dev.profile_shape ? &dev.profile_shape : nullptr);
     if (!(g.converged && sense * Value(g.arm_mm) > min_arm)) continue;
     if (!found || sense * Value(g.contact_rotation) < sense * Value(out.ring_rad)) {
       out.ring_rad = g.contact_rotation;
@@ -269,6 +274,14 @@ Deviations<double> SampleDeviations(const Drive& d, const OutputPins* pins,
 
 /// The crank angles of the analysis: `steps` over one output revolution (0: 8 per mesh period).
 std::vector<double> TransmissionErrorAngles(const Drive& d, int steps);
+
+/// The output lag of one set of deviations at the crank angles, both flanks (exact model).
+struct KinematicCurves {
+  std::vector<double> forward_rad, reverse_rad;  ///< β0 + w0 under a forward / reverse torque
+  std::vector<int> forward_pair;                 ///< the ring pin in contact, forward (-1: none)
+};
+KinematicCurves KinematicOutput(const Drive& d, const OutputPins* pins, const Deviations<double>& dev,
+                                const std::vector<double>& crank);
 
 /// TE(φ) [rad] of one set of deviations at the crank angles (exact model).
 std::vector<double> ExactTransmissionError(const Drive& d, const OutputPins* pins, const Deviations<double>& dev,

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <vector>
 
+#include "model/common/profile_deviation.h"
 #include "model/cycloid/tooth_profile.h"
 
 namespace camopt::cycloid {
@@ -52,10 +53,17 @@ constexpr double kMinArmFraction = 0.02;
 /// Solves eq. (12) for roller i at crank angle φ [rad] with the tooth of `d` and a roller whose
 /// centre, from the disc centre in the fixed frame, is `rel` (a u(ψ_i) − e u(φ) for the nominal
 /// drive) and whose radius exceeds the generating circle's ρ' by `drho` (ρ − ρ' nominally): the
-/// form a drive with deviations needs (model/cycloid/transmission_error.h).
+/// form a drive with deviations needs (model/cycloid/transmission_error.h). `shape` (nullptr:
+/// none) adds a normal deviation d(t) of the tooth profile, a function of the curve parameter
+/// (model/common/profile_deviation.h): the roller centre then lies on the normal of X' at the
+/// offset ρ − ρ' + d(t), the first-order contact of a circle with the profile moved by d along its
+/// normal (the envelope theorem: the distance to the moved profile falls by d at the closest
+/// point; the normal's tilt by d'/|P'| changes it only at second order).
 template <typename T>
-PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho) {
+PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho,
+                            const profile::NormalDeviation<T>* shape = nullptr) {
   using std::abs;
+  using std::sqrt;
   PairGeometry<T> g;
   g.roller = i;
   T t = NominalParameter(d, i, crank);
@@ -66,10 +74,13 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
   for (int it = 0; it < 30; ++it) {
     const ProfilePoint<T> p = ToothProfile(d, t);
     const Vec2<T> c = Rotate(rel, T(crank / double(d.teeth) - beta));  // as RollerCentreInDisc
-    const Vec2<T> f = c - p.centre - drho * p.normal;
-    // dF/dβ = −J C;  dF/dt = −|X'_t| T̂ (1 + (ρ − ρ') κ)  (dN/dt = κ |X'_t| T̂).
+    T dn(0.0), dn_t(0.0);
+    if (shape) dn = (*shape)(t, &dn_t);
+    const T off = drho + dn;
+    const Vec2<T> f = c - p.centre - off * p.normal;
+    // dF/dβ = −J C;  dF/dt = −|X'_t| T̂ (1 + (ρ − ρ' + d) κ) − d' N  (dN/dt = κ |X'_t| T̂).
     const Vec2<T> fb = -Perp(c);
-    const Vec2<T> ft = -p.speed * (T(1.0) + drho * p.centre_curvature) * p.tangent;
+    const Vec2<T> ft = -p.speed * (T(1.0) + off * p.centre_curvature) * p.tangent - dn_t * p.normal;
     const T det = Cross(ft, fb);
     if (!(abs(Value(det)) > 1e-300)) break;
     // Solve [ft fb] (dt, dβ) = −f by Cramer's rule.
@@ -93,12 +104,26 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
     beta = T(0.0);
   }
   const ProfilePoint<T> p = ToothProfile(d, t);
+  if (shape) {
+    // The moved profile Q = P + d N has its own curvature (d'' bends it): from Q's central
+    // differences over t (step 1e-4 rad: truncation ~1e-8 and rounding ~1e-9 of the curvature).
+    auto moved = [&](const T& u) {
+      const ProfilePoint<T> pu = ToothProfile(d, u);
+      return Vec2<T>(pu.point + (*shape)(u, nullptr) * pu.normal);
+    };
+    const T h(1e-4);
+    const Vec2<T> qm = moved(t - h), q0 = moved(t), qp = moved(t + h);
+    const Vec2<T> d1 = (qp - qm) / (T(2.0) * h), d2 = (qp - T(2.0) * q0 + qm) / (h * h);
+    const T speed = sqrt(d1.squaredNorm());
+    g.profile_curvature = Cross(d1, d2) / (speed * speed * speed);
+  } else {
+    g.profile_curvature = p.curvature;
+  }
   g.parameter = t;
   g.contact_rotation = beta;
-  g.point = p.point;
+  g.point = shape ? Vec2<T>(p.point + (*shape)(t, nullptr) * p.normal) : p.point;
   g.normal = p.normal;
   g.arm_mm = Cross(p.centre, p.normal);
-  g.profile_curvature = p.curvature;
   g.roller_curvature = T(1.0) / d.roller_radius_mm;
   const double min_arm = kMinArmFraction * Value(d.eccentricity_mm) * d.teeth;
   g.converged = converged;
@@ -108,23 +133,26 @@ PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const V
 }
 
 /// Solves eq. (12) for roller i of the drive at crank angle φ [rad].
+/// `shape`: a normal deviation d(t) of the tooth (nullptr: none; SolvePairAt).
 template <typename T>
-PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank) {
+PairGeometry<T> SolvePair(const DriveTpl<T>& d, int i, const T& crank,
+                          const profile::NormalDeviation<T>* shape = nullptr) {
   const T psi = T(2.0 * kPi * i / d.rollers);
   const Vec2<T> rel = d.roller_position_radius_mm * U(psi) - d.eccentricity_mm * U(crank);
   const T drho = d.roller_radius_mm - (d.roller_radius_mm + d.delta_radius_mm);  // ρ − ρ'
-  return SolvePairAt(d, i, crank, rel, drho);
+  return SolvePairAt(d, i, crank, rel, drho, shape);
 }
 
 /// Unloaded TCA at crank angle φ [rad] (eqs. 8–14).
 /// @tparam T double or ceres::Jet. β0 is an exact minimum over pairs: where the first-contact
 /// pair changes, β0 has a kink (the two candidates are equal there, so it stays continuous).
+/// `shape`: a normal deviation d(t) of the tooth, a measured disc (nullptr: none; SolvePairAt).
 template <typename T>
-UnloadedMesh<T> UnloadedTca(const DriveTpl<T>& d, const T& crank) {
+UnloadedMesh<T> UnloadedTca(const DriveTpl<T>& d, const T& crank, const profile::NormalDeviation<T>* shape = nullptr) {
   UnloadedMesh<T> m;
   m.crank_angle = crank;
   m.rotation = T(0.0);
-  for (int i = 0; i < d.rollers; ++i) m.pairs.push_back(SolvePair(d, i, crank));
+  for (int i = 0; i < d.rollers; ++i) m.pairs.push_back(SolvePair(d, i, crank, shape));
   for (size_t k = 0; k < m.pairs.size(); ++k) {
     if (!m.pairs[k].loaded_flank) continue;
     if (m.first_contact < 0 ||

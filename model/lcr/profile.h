@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "model/common/geometry.h"
+#include "model/common/profile_deviation.h"
 #include "model/common/roots.h"
 #include "model/lcr/reducer.h"
 
@@ -72,6 +73,26 @@ Vec2<T> InwardNormal(const CamSide<T>& side, const T& eccentricity, const T& psi
 template <typename T>
 Vec2<T> OffsetPoint(const CamSide<T>& side, const T& eccentricity, const T& psi, const T& offset) {
   return PitchPoint(side, eccentricity, psi) + offset * InwardNormal(side, eccentricity, psi);
+}
+
+/// The cam profile (inward offset of the pitch curve by `offset`, the roller radius) as a closed
+/// curve of ψ ∈ [0, 2π) in the cam frame (the geometry files'), for inspection and measured cams
+/// (model/common/profile_deviation.h): with X' = r_d J u(ψ) − e k J u(kψ), X'' = −r_d u(ψ) +
+/// e k² u(kψ), v = |X'|, κ = X' × X''/v³ and T = X'/v, the offset P = X + r J T has
+/// dP/dψ = v (1 − r κ) T and the curvature κ/(1 − r κ). @pre no undercut (r κ < 1 everywhere).
+inline camopt::profile::Curve CamProfileCurve(const CamSide<double>& side, double eccentricity, double offset) {
+  return [side, eccentricity, offset](double psi) {
+    const double k = side.pitch_factor(), rd = side.turret_radius, e = eccentricity;
+    const Vec2<double> d1 = rd * Perp(U(psi)) - e * k * Perp(U(k * psi));
+    const Vec2<double> d2 = -rd * U(psi) + e * k * k * U(k * psi);
+    const double v = d1.norm(), kappa = Cross(d1, d2) / (v * v * v);
+    camopt::profile::CurvePoint c;
+    c.tangent = d1 / v;
+    c.point = PitchPoint(side, eccentricity, psi) + offset * Perp(c.tangent);
+    c.speed = v * std::abs(1.0 - offset * kappa);  // |.|: an undercut loop keeps a positive arc length
+    c.curvature = kappa / (1.0 - offset * kappa);
+    return c;
+  };
 }
 
 // The double curves' evaluations (drawings, geometry files' fits), compiled in profile.cc at the

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "model/common/geometry.h"
+#include "model/common/profile_deviation.h"
 #include "model/common/scalar.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/kinematics.h"
@@ -35,6 +36,11 @@ struct Deviations {
   std::vector<T> roller_angle[2];            ///< Δβ per roller, angular pitch error [rad]
   T profile[2] = {T(0.0), T(0.0)};           ///< normal offset of cam A / cam B, material added [mm]
   T bearing_clearance{};                     ///< radial clearance of the eccentric bearing [mm]
+  /// A normal deviation of cam A / cam B that varies along it, d(ψ) of the pitch-curve parameter ψ
+  /// (the profile's, OffsetPoint), material added, evaluated at the roller's foot point ψ* and
+  /// added to `profile` (a measured cam, model/common/profile_deviation.h): to first order the
+  /// roller's distance to the moved profile falls by d(ψ*) (the envelope theorem). Empty: none.
+  camopt::profile::NormalDeviation<T> profile_shape[2];
 };
 
 inline int SideIndex(Side s) { return s == Side::kInput ? 0 : 1; }
@@ -42,8 +48,9 @@ inline int SideIndex(Side s) { return s == Side::kInput ? 0 : 1; }
 /// Signed distance [mm] of a cam-frame point x from the pitch curve X(ψ) of a cam (positive away
 /// from the cam), with the foot point found by Newton from ψ0 (in double, then one Newton step in
 /// T, which carries the exact first derivatives: implicit function theorem). @pre x near X(ψ0).
+/// `foot` (nullptr: not asked) receives ψ*.
 template <typename T>
-T PitchCurveDistance(const CamSide<double>& c, double e, const Vec2<T>& x, double psi0) {
+T PitchCurveDistance(const CamSide<double>& c, double e, const Vec2<T>& x, double psi0, T* foot = nullptr) {
   const double k = c.pitch_factor(), rd = c.turret_radius;
   auto derivs = [&](const auto& psi, auto& p, auto& d1, auto& d2) {
     using S = std::decay_t<decltype(psi)>;
@@ -66,6 +73,7 @@ T PitchCurveDistance(const CamSide<double>& c, double e, const Vec2<T>& x, doubl
   derivs(psi_t, p, d1, d2);
   psi_t = psi_t - (p - x).dot(d1) / (d1.dot(d1) + (p - x).dot(d2));
   derivs(psi_t, p, d1, d2);
+  if (foot) *foot = psi_t;
   // Outward normal: the pitch curve runs counter-clockwise around the cam, so −J X'/|X'| points
   // away from the cam (−InwardNormal of profile.h).
   const Vec2<T> n_out = Vec2<T>(d1.y(), -d1.x()) / d1.norm();
@@ -98,7 +106,9 @@ std::vector<T> RollerGaps(const Reducer<double>& r, Side s, const Deviations<T>&
     const Vec2<T> o = radius * U(T(slot + turn) + beta) - centre;
     const Vec2<T> x(T(back.x()) * o.x() - T(back.y()) * o.y(), T(back.y()) * o.x() + T(back.x()) * o.y());
     const T dr = dev.roller_radius[i].empty() ? T(0.0) : dev.roller_radius[i][k];
-    gaps[k] = PitchCurveDistance(c, r.eccentricity, x, slot + turn - phi) - dr - dev.profile[i];
+    T foot(0.0);
+    gaps[k] = PitchCurveDistance(c, r.eccentricity, x, slot + turn - phi, &foot) - dr - dev.profile[i];
+    if (dev.profile_shape[i]) gaps[k] -= dev.profile_shape[i](foot, nullptr);
   }
   return gaps;
 }

@@ -1,0 +1,96 @@
+// The "inspection" and "measured_profile" blocks of the planar-profile analyses (cycloid_ltca,
+// lcr_analysis, disc_cam; docs/studies.md, "Inspection points and measured parts"):
+//
+//   "inspection": {"spacing_mm": 0.5, "tolerance_um": 10}
+//       inspection/<part>.csv per profile part: points of the exact profile at arc-length steps
+//       <= spacing_mm, their outward normals, and the ISO 1101 profile-of-a-line zone ± t/2.
+//   "measured_profile": {"part": "disc_1", "file": "points.csv", "kind": "points"}
+//       a measured part back in (file relative to the study file): "points", measured x_mm,y_mm in
+//       the part frame, each projected onto the exact profile; "normal_deviation", the inspection
+//       CSV with a deviation_mm column (x_mm,y_mm the nominal point, nx,ny optional and checked).
+//       result.json's "measured": the ISO 1101 deviation and the kind's headlines as measured.
+//
+// The geometry (projection, spline, zone) is model/common/profile_deviation.h; here the files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/common/profile_deviation.h"
+#include "studies/archive.h"
+#include "studies/input.h"
+
+namespace camopt::studies {
+
+/// "inspection" as declared (studies/archive.h).
+struct InspectionInput {
+  double spacing_mm = 1.0, tolerance_um = 10.0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("spacing_mm", &spacing_mm,
+             Field().Required().In(0.01, 100.0).Unit("mm").Desc(
+                 "largest arc length between neighbouring inspection points along the exact profile"));
+    a->Visit("tolerance_um", &tolerance_um,
+             Field().Required().In(0.01, 10000.0).Unit("µm").Desc(
+                 "ISO 1101 profile-of-a-line tolerance t: the zone ± t/2 along the normal of the exact profile"));
+  }
+};
+
+/// "measured_profile" as declared; `Parts::Names()` the kind's part names.
+template <typename Parts>
+struct MeasuredProfileInputT {
+  std::string part, file, kind;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("part", &part, Field().Required().OneOf(Parts::Names()).Desc(Parts::Description()));
+    a->Visit("file", &file,
+             Field().Required().Desc("the measurement, a CSV file relative to the study file (docs/studies.md, "
+                                     "\"Inspection points and measured parts\")"));
+    a->Visit("kind", &kind,
+             Field().Required().OneOf({"points", "normal_deviation"}).Desc(
+                 "\"points\": x_mm,y_mm measured in the part frame, projected onto the exact profile; "
+                 "\"normal_deviation\": x_mm,y_mm on the nominal profile and deviation_mm along its outward normal"));
+  }
+};
+
+/// One profile part as inspected: its name (the file stem), frame and datum in words, the exact
+/// profile in the part frame.
+struct InspectedPart {
+  std::string name, frame, datum;
+  profile::ClosedProfile profile;
+};
+
+/// inspection/<part>.csv (header comment, then x_mm,y_mm,nx,ny,nominal_mm,upper_mm,lower_mm) and
+/// the number of points.
+std::string InspectionCsv(const std::string& design, const InspectedPart& part, double spacing_mm,
+                          double tolerance_um, long* points);
+
+/// A measured part read and projected onto its exact profile.
+struct MeasuredProfile {
+  std::string part, file, kind;  ///< as given (file: as resolved)
+  std::vector<Vec2<double>> points;      ///< the measured points (kind points), or the nominal points
+  std::vector<double> t, deviation_mm;   ///< profile parameter and signed normal deviation of each
+  std::vector<double> arc_mm;            ///< arc length of each from the profile's start
+  profile::ProfileZone zone;
+  profile::PeriodicSpline shape;         ///< d(t), the periodic cubic spline through the points
+  double largest_gap_mm = 0;             ///< largest arc between neighbouring points
+};
+
+/// Reads `node` ("measured_profile"), resolves its file relative to the study file, reads the CSV
+/// and projects its points onto `part`'s profile. Points farther than min(1 mm, 10 % of the
+/// profile's size) from it, an arc longer than `max_gap_mm` between neighbours (or fewer than 8
+/// distinct points), a missing file or column, a number that is not finite: StudyError (exit 2)
+/// naming the study file, the JSON path, the CSV file and line, what was expected and found.
+MeasuredProfile ReadMeasuredProfile(const Node& node, const InspectedPart& part, double max_gap_mm);
+
+/// result.json's "measured" without the kind's headlines: part, file, kind, points, the ISO 1101
+/// deviation, the largest and smallest deviation and where, mean, RMS, the interpolation.
+nlohmann::json MeasuredJson(const MeasuredProfile& m, const InspectedPart& part);
+
+/// result.json's "inspection": spacing, tolerance and each part's file and point count.
+nlohmann::json InspectionJson(double spacing_mm, double tolerance_um,
+                              const std::vector<std::pair<std::string, long>>& files, bool written);
+
+}  // namespace camopt::studies
