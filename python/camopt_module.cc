@@ -101,11 +101,15 @@ py::dict CsvColumns(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   py::dict out;
-  if (!std::getline(in, line)) return out;
+  // Leading comment lines ('#': the inspection points' and grinding wheel's headers) are not the
+  // header row.
+  do {
+    if (!std::getline(in, line)) return out;
+  } while (!line.empty() && line[0] == '#');
   const std::vector<std::string> names = SplitCsvLine(line);
   std::vector<std::vector<std::string>> cols(names.size());
   while (std::getline(in, line)) {
-    if (line.empty()) continue;
+    if (line.empty() || line[0] == '#') continue;
     const auto cells = SplitCsvLine(line);
     for (size_t c = 0; c < names.size(); ++c) cols[c].push_back(c < cells.size() ? cells[c] : "");
   }

@@ -1055,9 +1055,24 @@ nlohmann::json MeasuredDisc(const Study& s, Result& r) {
         {"lte_peak_to_peak_arcsec", {{"nominal", cn.lte_peak_to_peak_arcsec}, {"measured", cm.lte_peak_to_peak_arcsec}}},
         {"converged", cm.converged && cn.converged}};
     if (!cm.converged) r.warnings.push_back("measured_profile: the loaded TCA of the measured disc did not converge at some angle");
+    if (s.life && cm.converged && cn.converged) {
+      // The lives as made: the duty cycle on the measured disc's loaded TCA, beside the nominal
+      // disc's on the same angles (each line one cycle; the study's torque reuses the cycle above).
+      const cycloid_common::LifeResult ln = cycloid_common::RunLife(*s.life, nominal_tca, angles, s.disc_torque_Nmm(), &cn.meshes);
+      const cycloid_common::LifeResult lm = cycloid_common::RunLife(*s.life, measured_tca, angles, s.disc_torque_Nmm(), &cm.meshes);
+      nlohmann::json elements = nlohmann::json::object();
+      for (size_t i = 0; i < lm.elements.size() && i < ln.elements.size(); ++i)
+        elements[lm.elements[i].name] = {{"nominal", ln.elements[i].life.L10h}, {"measured", lm.elements[i].life.L10h}};
+      j["loaded"]["life"] = {{"shortest_L10h", {{"nominal", ln.shortest_L10h}, {"measured", lm.shortest_L10h}}},
+                             {"shortest", {{"nominal", ln.shortest}, {"measured", lm.shortest}}},
+                             {"L10h", elements},
+                             {"crank_angles_over", "the loaded results' angles (the study's life runs on its own "
+                                                   "angles: compare the two columns here)"}};
+    }
     j["not_computed"] = nlohmann::json::array(
-        {{{"result", "the measured disc's bearing lives, elastic lost motion, gear ratio and output-mechanism loads"},
-          {"why", "the life, stiffness and output-mechanism stages run on the nominal disc only"}}});
+        {{{"result", std::string(s.life ? "" : "the measured disc's bearing lives (no life asked), ") +
+                         "elastic lost motion, gear ratio and output-mechanism loads"},
+          {"why", "the stiffness and output-mechanism stages run on the nominal disc only"}}});
   } else {
     j["not_computed"] = nlohmann::json::array(
         {{{"result", "the loaded results of the measured disc (largest contact stress, pair loads, loaded "

@@ -23,6 +23,7 @@
 #include "model/cycloid/transmission_error.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "model/cycloid/loaded_tca.h"
+#include "studies/cycloid_life.h"
 #include "studies/cycloid_ltca_study.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/disc_cam_study.h"
@@ -425,6 +426,52 @@ TEST(MeasuredProfile, CycloidLoadedUniformOffsetIsTheToothCutWithSmallerRho) {
               l["max_contact_stress_MPa"]["measured"].get<double>(), expected.max_pressure_MPa, nominal.max_pressure_MPa,
               l["max_pair_load_N"]["measured"].get<double>(), expected.max_pair_load_N,
               l["lte_peak_to_peak_arcsec"]["measured"].get<double>(), expected.lte_peak_to_peak_arcsec);
+}
+
+// The lives as made: a disc measured 1 µm fuller everywhere carries its duty cycle as the tooth cut
+// with ρ' − 1 µm does (the same equivalence as the stress above), so the measured crank-bearing and
+// pin lives are those of the cut tooth's cycle on the same angles, and differ from the nominal's.
+TEST(MeasuredProfile, CycloidLivesAsMadeAreTheToothCutWithSmallerRhos) {
+  const cycloid::Drive d = CycloidNnm();
+  const double delta = 0.001;
+  const Synthetic s = Sample(d, 1, 1, 2400, [&](double, Vec2<double>) { return delta; });
+  const auto dir = TempDir("measured-life");
+  WriteFile(dir / "points.csv", Csv(s, "points"));
+  json j = DiscStudy(1);
+  j["analysis"] = {{"crank_angles_per_mesh_period", 4}, {"grid", {10, 10}}, {"estimate_error", false}};
+  j["material"] = {{"youngs_modulus_GPa", 206}, {"poisson_ratio", 0.3}};
+  j["load"] = {{"torque_Nm", 350}, {"input_speed_rpm", 1500}};
+  j["crank_bearing"] = {{"kind", "roller"}, {"dynamic_rating_N", 60000}};
+  j["pins"] = {{"dynamic_rating_N", 9000}};
+  j["output_mechanism"] = {{"pins", 8}, {"pin_circle_radius_mm", 50}};
+  j["measured_profile"] = {{"part", "disc_1"}, {"file", "points.csv"}, {"kind", "points"}};
+  const std::string file = (dir / "study.json").string();
+  const ltca::Study st = ltca::Parse(studies::Node(&j, file, ""));
+  ASSERT_TRUE(st.life.has_value());
+  const json m = ltca::Run(st, studies::RunContext{file, true}).measured;
+  ASSERT_TRUE(m["loaded"].contains("life")) << m.dump().substr(0, 400);
+  std::vector<double> angles;
+  const int n = 8 * d.rollers * d.teeth;
+  for (int i = 0; i < n; ++i) angles.push_back(2 * kPi * d.teeth * i / n);
+  cycloid::LoadedOptions o;
+  o.profile_cells = o.axial_cells = 10;
+  o.crank_slope = false;
+  o.reuse_symmetric_angles = false;
+  cycloid::Drive cut = d;
+  cut.delta_radius_mm -= delta;
+  const cycloid::Material mat;
+  const cycloid::LoadedTca tca(cut, st.crowning, mat, o);
+  const studies::cycloid_common::LifeResult expected = studies::cycloid_common::RunLife(*st.life, tca, angles);
+  const json& life = m["loaded"]["life"];
+  ASSERT_EQ(expected.elements.size(), 2u);
+  for (const auto& e : expected.elements) {
+    const double got = life["L10h"][e.name]["measured"], nominal = life["L10h"][e.name]["nominal"];
+    std::printf("life as made, %s: %.6f h (tooth cut with rho' - 1 um: %.6f h; nominal %.6f h)\n", e.name.c_str(), got,
+                e.life.L10h, nominal);
+    EXPECT_NEAR(got, e.life.L10h, 1e-3 * e.life.L10h) << e.name;
+    EXPECT_GT(std::abs(got - nominal), 10 * std::abs(got - e.life.L10h)) << e.name << ": the measured disc changes it";
+  }
+  EXPECT_NEAR(life["shortest_L10h"]["measured"].get<double>(), expected.shortest_L10h, 1e-3 * expected.shortest_L10h);
 }
 
 // The model pieces on a closed form: an ellipse's projection and the periodic spline of a

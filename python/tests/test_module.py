@@ -26,6 +26,18 @@ class Run(unittest.TestCase):
         self.assertAlmostEqual(float(stress.max()), r["input_cam"]["max_contact_stress_MPa"], delta=1e-6 * stress.max())
         self.assertEqual(r["warnings"], [])
 
+    def test_csv_outputs_with_comment_headers_become_columns(self):
+        # inspection/<part>.csv opens with '#' lines (part, frame, ISO 1101 zone) before its header row.
+        s = helpers.small_lcr_ii()
+        s["inspection"] = {"spacing_mm": 2.0, "tolerance_um": 20}
+        r = camopt.run(s)
+        table = r["series"]["inspection/input_cam"]
+        self.assertIn("x_mm", table)
+        self.assertIsInstance(table["x_mm"], np.ndarray)
+        n = np.hypot(table["nx"], table["ny"])
+        self.assertTrue(np.all(np.abs(n - 1) < 1e-9))
+        self.assertTrue(np.all(table["upper_mm"] == 0.01))
+
     def test_a_path_gives_the_same_as_the_command_line_and_the_files_sha256(self):
         d = helpers.temp_dir("py-path")
         path = d / "s.json"
