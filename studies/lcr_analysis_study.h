@@ -361,7 +361,7 @@ struct Result {
   /// profile are evaluated.
   std::optional<lcr::AngleLoads<double>> loads_at_zero;
   std::optional<PlanarCamFit> input_cam_files, output_cam_files;  ///< with the profile stage
-  /// inspection/<cam>.csv by part name and their point counts ("inspection").
+  /// inspection/CAM.csv by part name and their point counts ("inspection").
   std::vector<std::pair<std::string, std::string>> inspection_files;
   std::vector<std::pair<std::string, long>> inspection_points;
   nlohmann::json measured;  ///< result.json's "measured" (null: none)

@@ -62,7 +62,7 @@ struct InspectedPart {
   profile::ClosedProfile profile;
 };
 
-/// inspection/<part>.csv (header comment, then x_mm,y_mm,nx,ny,nominal_mm,upper_mm,lower_mm) and
+/// inspection/PART.csv (header comment, then x_mm,y_mm,nx,ny,nominal_mm,upper_mm,lower_mm) and
 /// the number of points.
 std::string InspectionCsv(const std::string& design, const InspectedPart& part, double spacing_mm,
                           double tolerance_um, long* points);
