@@ -301,6 +301,47 @@ class StepData {
     body += ")) REPRESENTATION_ITEM('') SURFACE() )";
     return Add(body);
   }
+  // The knots of a clamped cubic of `spans` single-knot spans: multiplicities 4,1,…,1,4, then
+  // `between`, then the knot values 0.,1.,…,spans.
+  static void AppendClampedCubicKnots(std::string& body, int spans, std::string_view between) {
+    body += '4';
+    for (int k = 1; k < spans; ++k) body += ",1";
+    body += ",4";
+    body += between;
+    for (int k = 0; k <= spans; ++k) {
+      if (k) body += ',';
+      const Real r(k);
+      body.append(r.c, size_t(r.n));
+    }
+  }
+  // A non-rational clamped cubic B-spline curve of `spans` spans through `poles` (spans + 3).
+  int CubicCurve(const std::vector<int>& poles, int spans) {
+    std::string body = "B_SPLINE_CURVE_WITH_KNOTS('',3,(";
+    for (size_t i = 0; i < poles.size(); ++i) {
+      if (i) body += ',';
+      body += Ref(poles[i]);
+    }
+    body += "),.UNSPECIFIED.,.F.,.F.,(";
+    AppendClampedCubicKnots(body, spans, "),(");
+    body += "),.UNSPECIFIED.)";
+    return Add(body);
+  }
+  // The wall over a clamped cubic run: degree 3 along the run, 1 across the thickness.
+  int CubicWall(const std::vector<int>& poles0, const std::vector<int>& polest, int spans) {
+    std::string body = "B_SPLINE_SURFACE_WITH_KNOTS('',3,1,(";
+    for (size_t i = 0; i < poles0.size(); ++i) {
+      if (i) body += ',';
+      body += '(';
+      body += Ref(poles0[i]);
+      body += ',';
+      body += Ref(polest[i]);
+      body += ')';
+    }
+    body += "),.UNSPECIFIED.,.F.,.F.,.F.,(";
+    AppendClampedCubicKnots(body, spans, "),(2,2),(");
+    body += "),(0.,1.),.UNSPECIFIED.)";
+    return Add(body);
+  }
   int Edge(int from, int to, int curve, bool same_sense) {
     const int id = Open(32);
     Put("EDGE_CURVE('',");
@@ -454,6 +495,17 @@ RationalQuadratic ChainAsRationalQuadratic(const ArcSegment* arcs, size_t count)
 // The largest number of the chain's arcs in one wall face (the file then has a face per this many
 // arcs instead of a face per arc: a tenth of the text for a profile of hundreds of arcs).
 constexpr size_t kArcsPerWall = 64;
+// The largest number of a closed cubic's spans in one wall face.
+constexpr int kSpansPerWall = 256;
+
+}  // namespace
+
+bool SplineWalls(const Extrusion& e) {
+  return e.profile_spline && e.profile.size() > kArcsPerWall && e.profile_spline->poles.size() >= 4 &&
+         e.profile_spline->poles.size() < e.profile.size();
+}
+
+namespace {
 
 }  // namespace
 
@@ -816,15 +868,30 @@ PartIds AddExtrusion(StepData& d, StepContext& ctx_ids, const Extrusion& e, cons
   // kArcsPerWall of them, one face per run of kArcsPerWall (the extrusion of the run as a rational
   // B-spline, exactly the same arcs). A wall starts at each `first[w]` of the chain.
   const size_t per_wall = n > kArcsPerWall ? kArcsPerWall : 1;
+  // Or, where the extrusion carries a closed cubic of fewer poles than the chain has arcs, the
+  // walls are that spline's (ProfileAsSpline): runs of at most kSpansPerWall spans, two at least.
+  const ClosedCubic* spline = SplineWalls(e) ? &*e.profile_spline : nullptr;
   std::vector<size_t> first;
-  for (size_t i = 0; i < n; i += per_wall) first.push_back(i);
-  const size_t walls_n = first.size();
+  std::vector<std::vector<Vec2<double>>> clamped;
+  std::vector<int> spans;
+  if (spline) {
+    const int poles = static_cast<int>(spline->poles.size());
+    const int runs = std::max(2, (poles + kSpansPerWall - 1) / kSpansPerWall);
+    for (int w = 0; w < runs; ++w) {
+      const int a = w * poles / runs, b = (w + 1) * poles / runs;
+      clamped.push_back(ClampedSpans(*spline, a, b));
+      spans.push_back(b - a);
+    }
+  } else {
+    for (size_t i = 0; i < n; i += per_wall) first.push_back(i);
+  }
+  const size_t walls_n = spline ? clamped.size() : first.size();
   // Vertices at the walls' start points, at z = 0 and z = t; the vertical edge through each.
   std::vector<int> v0(walls_n), vt(walls_n), vertical(walls_n);
   std::vector<Real> start_x, start_y;
   start_x.reserve(walls_n), start_y.reserve(walls_n);
   for (size_t w = 0; w < walls_n; ++w) {
-    const Vec2<double>& p = e.profile[first[w]].start;
+    const Vec2<double>& p = spline ? clamped[w].front() : e.profile[first[w]].start;
     start_x.emplace_back(p.x()), start_y.emplace_back(p.y());
     const int p0 = d.Point(start_x[w], start_y[w], zero), pt = d.Point(start_x[w], start_y[w], top_z);
     v0[w] = d.Wrap("VERTEX_POINT('',", p0, ")");
@@ -836,10 +903,26 @@ PartIds AddExtrusion(StepData& d, StepContext& ctx_ids, const Extrusion& e, cons
   std::vector<int> bottom(walls_n), top(walls_n), faces;
   std::vector<int> walls;
   for (size_t w = 0; w < walls_n; ++w) {
-    const ArcSegment& a = e.profile[first[w]];
     const size_t k = (w + 1) % walls_n;
     int surface = 0;
     bool outward = true;
+    if (spline) {
+      std::vector<int> poles0, polest;
+      poles0.reserve(clamped[w].size()), polest.reserve(clamped[w].size());
+      for (const Vec2<double>& p : clamped[w]) {
+        const Real x(p.x()), y(p.y());
+        poles0.push_back(d.Point(x, y, zero));
+        polest.push_back(d.Point(x, y, top_z));
+      }
+      bottom[w] = d.Edge(v0[w], v0[k], d.CubicCurve(poles0, spans[w]), true);
+      top[w] = d.Edge(vt[w], vt[k], d.CubicCurve(polest, spans[w]), true);
+      // S(u, v) = C(u) + v t ẑ: its normal C'(u) × ẑ is right of travel, out of a counter-clockwise curve.
+      surface = d.CubicWall(poles0, polest, spans[w]);
+      const int bound = d.Bound({{bottom[w], true}, {vertical[k], true}, {top[w], false}, {vertical[w], false}}, true);
+      walls.push_back(d.Face(bound, surface, outward));
+      continue;
+    }
+    const ArcSegment& a = e.profile[first[w]];
     if (per_wall > 1) {
       const size_t count = std::min(per_wall, n - first[w]);
       const RationalQuadratic c = ChainAsRationalQuadratic(&e.profile[first[w]], count);

@@ -4,8 +4,10 @@
 // cylinder) or line (a plane), as the OCCT extrusion gave them (cad/solid.cc); a longer one a wall
 // per run of 64, each the run as a rational quadratic B-spline surface (every arc one or more
 // segments of it, exactly: Piegl & Tiller, The NURBS Book, §7.3), a third of the text for the
-// cycloid disc's 690 arcs. Either way the faces are the chain's arcs and lines exactly, so the
-// files' checks against the exact profile are unchanged; the kernel is left for what needs it
+// cycloid disc's 690 arcs. Either way the faces are the chain's arcs and lines exactly. A long
+// profile that comes with a closed cubic B-spline of fewer poles (cad/bspline.h, fitted to the
+// exact curve within the same tolerance) has that spline's walls instead: a tenth of the file for
+// the cycloid discs (docs/parts.md "File sizes"). The kernel is left for what needs it
 // (reading files back in the tests, B-spline surfaces of other shapes, and the mesh of a profile
 // the fast triangulation below cannot take).
 #pragma once
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "cad/arc_fit.h"
+#include "cad/bspline.h"
 #include "cad/stl.h"
 
 namespace camopt::cad {
@@ -38,6 +41,10 @@ struct Extrusion {
   /// from the centre. 0: a plain bore.
   double keyway_width_mm = 0.0, keyway_depth_mm = 0.0, keyway_angle_rad = 0.0;
   double thickness_mm = 10.0;
+  /// The profile as a closed cubic B-spline (FitClosedCubic of the exact curve, counter-clockwise),
+  /// if one was fitted: the STEP walls are this spline's where SplineWalls says so; the mesh and the
+  /// checks of the chain stay the arcs'.
+  std::optional<ClosedCubic> profile_spline;
   std::string name = "cam";            ///< product name in the STEP file
   double mesh_deflection_mm = 0.002;   ///< STL chord deviation from the solid's faces
   bool step = true;                    ///< false: no STEP file (SolidOutput::step stays empty)
@@ -62,6 +69,11 @@ double MeshDeflection(const Extrusion& e);
 /// `chain_checked`: StepOfExtrusion has accepted `e` already (its checks of the chain and the bore
 /// are not repeated).
 std::optional<TriangleMesh> MeshExtrusion(const Extrusion& e, double deflection, bool chain_checked = false);
+
+/// Whether the STEP walls are `profile_spline`'s: a chain longer than one wall of arcs takes
+/// (64) and a spline of fewer poles than the chain has arcs (a rational quadratic B-spline through
+/// the arcs has two poles per arc). Otherwise a wall per arc or line, or per run of 64 of them.
+bool SplineWalls(const Extrusion& e);
 
 /// The STEP AP214 file of the extrusion (a MANIFOLD_SOLID_BREP in millimetres), with a fixed time
 /// stamp: the same extrusion gives the same bytes. Throws std::invalid_argument when the bore or a

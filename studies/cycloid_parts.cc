@@ -44,6 +44,7 @@ PartsSet CycloidParts(const CycloidPartsInput& in, const PlanarCamFit& tooth) {
                     Format(gamma * 180.0 / kPi + 0.0, 8) + " deg against its holes";
     p.material = in.material;
     p.solid.profile = RotatedChain(tooth.profile.arcs, gamma);
+    if (tooth.spline) p.solid.profile_spline = cad::Rotated(*tooth.spline, gamma);
     p.solid.bore_diameter_mm = in.bore_diameter_mm;
     p.solid.holes = holes;
     p.solid.thickness_mm = B;

@@ -244,7 +244,8 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   f.tolerance_mm = tol_mm;
   Fit profile = FitCurve(cam.profile, cam, tol_mm);
   // Counter-clockwise outer profile (positive area) for the solid and for readers that expect it.
-  if (cad::EnclosedArea(profile.curve.arcs) < 0) profile.curve.arcs = Reversed(profile.curve.arcs);
+  const bool reversed = cad::EnclosedArea(profile.curve.arcs) < 0;
+  if (reversed) profile.curve.arcs = Reversed(profile.curve.arcs);
   f.profile = profile.curve;
   f.max_deviation_mm = profile.deviation_mm;
   f.checked_points = profile.curve.checked_points;
@@ -301,6 +302,20 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
     f.solid = false;
     j["solid"] = "not written: the profile crosses itself (undercut), it bounds no solid";
   } else if (f.solid) {
+    // The STEP walls of a long profile as a closed cubic B-spline fitted to the exact curve at the
+    // same target as the arcs (cad/bspline.h), when it has fewer poles than there are arcs.
+    if (options.step && f.profile.arcs.size() > 64) {
+      std::optional<cad::ClosedCubic> s =
+          cad::FitClosedCubic(cam.profile, cam.t0, cam.t1, cam.symmetry, 8 * std::max(1, cam.symmetry),
+                              kFitTarget * tol_mm, static_cast<int>(f.profile.arcs.size()) - 1);
+      if (s) {
+        if (reversed) std::reverse(s->poles.begin(), s->poles.end());
+        j["step_profile_spline_poles"] = s->poles.size();
+        j["step_max_deviation_um"] = s->max_deviation_mm * 1e3;
+        j["step_deviation_check_points"] = s->checked_points;
+        f.spline = std::move(s);
+      }
+    }
     double bore_area = std::abs(cad::EnclosedArea(cad::BoreChain(ExtrusionOf(cam))));
     for (const cad::Hole& h : cam.mounting.holes) bore_area += kPi * 0.25 * h.diameter_mm * h.diameter_mm;
     j["thickness_mm"] = cam.thickness_mm;
@@ -383,6 +398,7 @@ void WritePlanarCamFiles(const PlanarCamFit& f, const GeometryFileOptions& optio
   if (!f.solid) return;
   cad::Extrusion e = ExtrusionOf(cam);
   e.profile = f.profile.arcs;
+  e.profile_spline = f.spline;
   e.name = cam.design_name + " " + cam.cam_name;
   e.step = options.step;
   cad::SolidOutput solid = cad::ExtrudeCam(e);

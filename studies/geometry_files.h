@@ -15,12 +15,14 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cad/arc_fit.h"
+#include "cad/bspline.h"
 #include "cad/extrusion.h"
 #include "cad/stl.h"
 #include "studies/archive.h"
@@ -141,6 +143,9 @@ struct PlanarCamGeometry {
 struct PlanarCamFit {
   PlanarCamGeometry cam;
   cad::FittedCurve profile, pitch, cutter;  ///< profile counter-clockwise
+  /// The profile as a closed cubic B-spline for the STEP walls (counter-clockwise, within the same
+  /// tolerance of the exact curve), when it has fewer poles than the profile has arcs.
+  std::optional<cad::ClosedCubic> spline;
   double tolerance_mm = 0.0;                ///< used: dxf_tolerance_um, or 1e-7 of a larger part
   double max_deviation_mm = 0.0;            ///< over profile, pitch and cutter path
   long checked_points = 0;
