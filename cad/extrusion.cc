@@ -241,29 +241,45 @@ class StepData {
     Close();
     return id;
   }
-  // The knots of `segments` quadratic segments meeting at double knots: the multiplicities
-  // 3,2,…,2,3, then `between`, then the knot values 0.,1.,…,segments.
-  static void AppendQuadraticKnots(std::string& body, int segments, std::string_view between) {
-    body += '3';
-    for (int k = 1; k < segments; ++k) body += ",2";
-    body += ",3";
+  // The knots of `spans` segments of degree p: multiplicities p+1, then `inner` at each joint, then
+  // p+1; then `between`, then the knot values 0.,1.,…,spans. Quadratic segments meeting at double
+  // knots (the arcs' rational walls) or cubic spans at single knots (a closed cubic's runs).
+  static void AppendKnots(std::string& body, int spans, char end, char inner, std::string_view between) {
+    body += end;
+    for (int k = 1; k < spans; ++k) body += ',', body += inner;
+    body += ',', body += end;
     body += between;
-    for (int k = 0; k <= segments; ++k) {
+    for (int k = 0; k <= spans; ++k) {
       if (k) body += ',';
       const Real r(k);
       body.append(r.c, size_t(r.n));
+    }
+  }
+  // The references `(#a,#b,…` of a curve's poles, or `((#a0,#at),(#b0,#bt),…` of a wall's (bottom
+  // and top curve's poles in pairs), without the closing parenthesis.
+  static void AppendPoles(std::string& body, const std::vector<int>& poles) {
+    for (size_t i = 0; i < poles.size(); ++i) {
+      if (i) body += ',';
+      body += Ref(poles[i]);
+    }
+  }
+  static void AppendPolePairs(std::string& body, const std::vector<int>& poles0, const std::vector<int>& polest) {
+    for (size_t i = 0; i < poles0.size(); ++i) {
+      if (i) body += ',';
+      body += '(';
+      body += Ref(poles0[i]);
+      body += ',';
+      body += Ref(polest[i]);
+      body += ')';
     }
   }
   // A rational quadratic B-spline curve (ISO 10303-42 complex instance) of `segments` segments
   // meeting at double knots, through the points `poles` with `weights`.
   int RationalQuadraticCurve(const std::vector<int>& poles, const std::vector<double>& weights, int segments) {
     std::string body = "( BOUNDED_CURVE() B_SPLINE_CURVE(2,(";
-    for (size_t i = 0; i < poles.size(); ++i) {
-      if (i) body += ',';
-      body += Ref(poles[i]);
-    }
+    AppendPoles(body, poles);
     body += "),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS((";
-    AppendQuadraticKnots(body, segments, "),(");
+    AppendKnots(body, segments, '3', '2', "),(");
     body += "),.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE((";
     for (size_t i = 0; i < weights.size(); ++i) {
       if (i) body += ',';
@@ -278,16 +294,9 @@ class StepData {
   int RationalQuadraticWall(const std::vector<int>& poles0, const std::vector<int>& polest,
                             const std::vector<double>& weights, int segments) {
     std::string body = "( BOUNDED_SURFACE() B_SPLINE_SURFACE(2,1,(";
-    for (size_t i = 0; i < poles0.size(); ++i) {
-      if (i) body += ',';
-      body += '(';
-      body += Ref(poles0[i]);
-      body += ',';
-      body += Ref(polest[i]);
-      body += ')';
-    }
+    AppendPolePairs(body, poles0, polest);
     body += "),.UNSPECIFIED.,.F.,.F.,.F.) B_SPLINE_SURFACE_WITH_KNOTS((";
-    AppendQuadraticKnots(body, segments, "),(2,2),(");
+    AppendKnots(body, segments, '3', '2', "),(2,2),(");
     body += "),(0.,1.),.UNSPECIFIED.) GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE((";
     for (size_t i = 0; i < weights.size(); ++i) {
       if (i) body += ',';
@@ -301,44 +310,21 @@ class StepData {
     body += ")) REPRESENTATION_ITEM('') SURFACE() )";
     return Add(body);
   }
-  // The knots of a clamped cubic of `spans` single-knot spans: multiplicities 4,1,…,1,4, then
-  // `between`, then the knot values 0.,1.,…,spans.
-  static void AppendClampedCubicKnots(std::string& body, int spans, std::string_view between) {
-    body += '4';
-    for (int k = 1; k < spans; ++k) body += ",1";
-    body += ",4";
-    body += between;
-    for (int k = 0; k <= spans; ++k) {
-      if (k) body += ',';
-      const Real r(k);
-      body.append(r.c, size_t(r.n));
-    }
-  }
   // A non-rational clamped cubic B-spline curve of `spans` spans through `poles` (spans + 3).
   int CubicCurve(const std::vector<int>& poles, int spans) {
     std::string body = "B_SPLINE_CURVE_WITH_KNOTS('',3,(";
-    for (size_t i = 0; i < poles.size(); ++i) {
-      if (i) body += ',';
-      body += Ref(poles[i]);
-    }
+    AppendPoles(body, poles);
     body += "),.UNSPECIFIED.,.F.,.F.,(";
-    AppendClampedCubicKnots(body, spans, "),(");
+    AppendKnots(body, spans, '4', '1', "),(");
     body += "),.UNSPECIFIED.)";
     return Add(body);
   }
   // The wall over a clamped cubic run: degree 3 along the run, 1 across the thickness.
   int CubicWall(const std::vector<int>& poles0, const std::vector<int>& polest, int spans) {
     std::string body = "B_SPLINE_SURFACE_WITH_KNOTS('',3,1,(";
-    for (size_t i = 0; i < poles0.size(); ++i) {
-      if (i) body += ',';
-      body += '(';
-      body += Ref(poles0[i]);
-      body += ',';
-      body += Ref(polest[i]);
-      body += ')';
-    }
+    AppendPolePairs(body, poles0, polest);
     body += "),.UNSPECIFIED.,.F.,.F.,.F.,(";
-    AppendClampedCubicKnots(body, spans, "),(2,2),(");
+    AppendKnots(body, spans, '4', '1', "),(2,2),(");
     body += "),(0.,1.),.UNSPECIFIED.)";
     return Add(body);
   }
