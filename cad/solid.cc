@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -27,6 +28,7 @@
 #include <GC_MakeSegment.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
@@ -200,7 +202,8 @@ TriangleMesh OcctMeshUnguarded(const Extrusion& e) {
   return MeshOf(solid, MeshDeflection(e));
 }
 
-SurfaceOutput BSplineSurfacesUnguarded(const std::vector<PointGrid>& grids, const std::string& name) {
+SurfaceOutput BSplineSurfacesUnguarded(const std::vector<PointGrid>& grids, const std::string& name,
+                                        double tolerance_mm) {
   SilenceOcct();
   SurfaceOutput out;
   BRep_Builder builder;
@@ -213,7 +216,7 @@ SurfaceOutput BSplineSurfacesUnguarded(const std::vector<PointGrid>& grids, cons
     for (int i = 0; i < nu; ++i)
       for (int j = 0; j < nv; ++j) pts.SetValue(i + 1, j + 1, gp_Pnt(g[i][j].x(), g[i][j].y(), g[i][j].z()));
     GeomAPI_PointsToBSplineSurface fit;
-    fit.Interpolate(pts);
+    fit.Init(pts, 3, 3, GeomAbs_C2, tolerance_mm);
     if (!fit.IsDone()) throw std::runtime_error("OCCT: B-spline surface fit failed");
     const Handle(Geom_BSplineSurface) surface = fit.Surface();
     const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
@@ -344,8 +347,39 @@ SolidOutput ExtrudeCam(const Extrusion& e) {
   return out;
 }
 
-SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name) {
-  return Guarded("B-spline surfaces", [&] { return BSplineSurfacesUnguarded(grids, name); });
+SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name, double tolerance_mm) {
+  return Guarded("B-spline surfaces", [&] { return BSplineSurfacesUnguarded(grids, name, tolerance_mm); });
+}
+
+double MaxDistanceToStepFaces(const std::string& content, const std::vector<Eigen::Vector3d>& points) {
+  return Guarded("STEP distances", [&] {
+    SilenceOcct();
+    STEPControl_Reader reader;
+    std::istringstream in(content);
+    if (reader.ReadStream("camopt.step", in) != IFSelect_RetDone) return double(INFINITY);
+    reader.TransferRoots();
+    const TopoDS_Shape shape = reader.OneShape();
+    // One projector per face, its search structure built once (Init), then Perform per point.
+    std::vector<std::unique_ptr<GeomAPI_ProjectPointOnSurf>> projectors;
+    for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
+      const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(ex.Current()));
+      double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+      surface->Bounds(u0, u1, v0, v1);
+      projectors.push_back(std::make_unique<GeomAPI_ProjectPointOnSurf>());
+      projectors.back()->Init(surface, u0, u1, v0, v1);
+    }
+    if (projectors.empty()) return double(INFINITY);
+    double worst = 0.0;
+    for (const Eigen::Vector3d& p : points) {
+      double best = INFINITY;
+      for (const auto& projection : projectors) {
+        projection->Perform(gp_Pnt(p.x(), p.y(), p.z()));
+        if (projection->NbPoints() > 0) best = std::min(best, projection->LowerDistance());
+      }
+      worst = std::max(worst, best);
+    }
+    return worst;
+  });
 }
 
 StepReadBack ReadStep(const std::string& content) {

@@ -29,14 +29,20 @@ SolidOutput ExtrudeCam(const Extrusion& e);
 /// A grid of points on a surface: points[i][j], i along one direction, j along the other [mm].
 using PointGrid = std::vector<std::vector<Eigen::Vector3d>>;
 
-/// One B-spline surface through each grid (OCCT GeomAPI_PointsToBSplineSurface::Interpolate:
-/// cubic, through every grid point) in one STEP AP214 file.
+/// One B-spline surface for each grid in one STEP AP214 file: OCCT's approximation
+/// (GeomAPI_PointsToBSplineSurface::Init, cubic, C2) within `tolerance_mm` of every grid point.
+/// The interpolation through every point it replaces wrote a pole per point: the globoidal
+/// example's two surfaces 700 689 bytes, now 137 415 at 1 µm, in the same time.
 struct SurfaceOutput {
   std::string step;
   double area_mm2 = 0.0;
   int faces = 0;
 };
-SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name);
+SurfaceOutput BSplineSurfaces(const std::vector<PointGrid>& grids, const std::string& name, double tolerance_mm);
+
+/// The largest distance from `points` to the nearest face of a STEP file's shape (each face's
+/// surface, OCCT GeomAPI_ProjectPointOnSurf), for the tests; INFINITY when the file is not read.
+double MaxDistanceToStepFaces(const std::string& content, const std::vector<Eigen::Vector3d>& points);
 
 /// What OCCT reads back from a STEP file (content in memory).
 struct StepReadBack {

@@ -469,6 +469,7 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                            {"stl", s.export_stl ? "working_surfaces.stl" : ""},
                            {"stl_format", s.geometry.stl_ascii ? "ascii" : "binary"},
                            {"step", s.export_stl && s.geometry.step ? "working_surfaces.step" : ""},
+                           {"step_tolerance_um", s.geometry.dxf_tolerance_um},
                            {"solid", "not written: the two working surfaces are open bands (the rib's "
                                      "crest and root surfaces are not modelled), so they close no solid"},
                            {"point_cloud", s.export_point_cloud ? "working_surfaces.csv" : ""}};
@@ -579,9 +580,11 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     }
     if (s.export_stl) {
       out.Add("working_surfaces.stl", StlFile(mesh, "globoidal_working_surfaces", s.geometry));
-      // Each working surface as one cubic B-spline surface through its grid points (OCCT).
+      // Each working surface as one cubic B-spline surface within the geometry files' tolerance of
+      // its grid points (OCCT's approximation).
       if (s.geometry.step)
-        out.Add("working_surfaces.step", cad::BSplineSurfaces(grids, s.name + " working surfaces").step);
+        out.Add("working_surfaces.step",
+                cad::BSplineSurfaces(grids, s.name + " working surfaces", s.geometry.dxf_tolerance_um * 1e-3).step);
     }
     if (s.export_point_cloud) {
       Table cloud;

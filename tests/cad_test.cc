@@ -719,6 +719,17 @@ TEST(GeometryFiles, GloboidalSurfacesBinaryStlAndStep) {
   EXPECT_EQ(back.faces, 2);
   EXPECT_EQ(back.solids, 0);
   EXPECT_NEAR(back.area_mm2 / mesh_area - 1, 0.0, 1e-3);
+  // The approximated surfaces within the 1 µm tolerance of every grid point (OCCT's projection of
+  // each point on the faces read back), in a fifth of the interpolation's file.
+  std::vector<Eigen::Vector3d> grid_points;
+  for (const auto& grid : res.surface_points)
+    for (const auto& row : grid)
+      for (const auto& p : row) grid_points.emplace_back(p.x(), p.y(), p.z());
+  const double far = cad::MaxDistanceToStepFaces(out.files().at("working_surfaces.step"), grid_points);
+  std::printf("globoidal surfaces: %zu grid points within %.4f um of the STEP faces; %zu bytes\n",
+              grid_points.size(), far * 1e3, out.files().at("working_surfaces.step").size());
+  EXPECT_LE(far, 1e-3 * (1 + 1e-6));
+  EXPECT_LT(out.files().at("working_surfaces.step").size(), 200000u);
   std::printf("globoidal: STEP surface area %.3f mm², grid triangles %.3f mm² (rel. diff %.2e)\n", back.area_mm2,
               mesh_area, back.area_mm2 / mesh_area - 1);
 }
