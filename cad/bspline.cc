@@ -174,8 +174,10 @@ std::vector<Vec2<double>> ClampedSpans(const ClosedCubic& s, int a, int b) {
       } else if (i > k) {
         q[i] = d[i - 1];
       } else {
+        // α = 0 where x is already a knot at or before u_i (at the run's last knot i = k is one past
+        // the poles): D_{i−1} alone, D_i not read.
         const double alpha = (x - knots[i]) / (knots[i + 3] - knots[i]);
-        q[i] = alpha * d[i] + (1.0 - alpha) * d[i - 1];
+        q[i] = alpha > 0 ? alpha * d[i] + (1.0 - alpha) * d[i - 1] : d[i - 1];
       }
     }
     knots.insert(knots.begin() + k + 1, x);
