@@ -15,7 +15,7 @@
 #include "model/contact/reference_gaps.h"
 
 namespace camopt::contact {
-namespace {
+namespace contact_bench {
 
 constexpr double kEStar = 115384.6;  // steel on steel [MPa]
 constexpr double kPointRadius = 10.0, kPointLoad = 100.0;  // sphere R [mm], W [N]
@@ -201,5 +201,5 @@ void BM_FftwPair(benchmark::State& state) {
 }
 BENCHMARK(BM_FftwPair)->Arg(48)->Arg(80)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
 
-}  // namespace
+}  // namespace contact_bench
 }  // namespace camopt::contact

@@ -16,7 +16,7 @@
 
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_bench {
 
 using camopt::testing::CycloidNnm;
 
@@ -154,5 +154,5 @@ void BM_CycloidCrowningTuningStudy(benchmark::State& state) {
 BENCHMARK(BM_CycloidCrowningTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_CycloidJointTuningStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-}  // namespace
+}  // namespace cycloid_bench
 }  // namespace camopt::cycloid

@@ -11,7 +11,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::objectives {
-namespace {
+namespace cycloid_min_size_bench {
 
 void BM_CycloidMinSizeRatio29(benchmark::State& state) {
   CycloidMinSizeOptions o;
@@ -44,5 +44,5 @@ void BM_CycloidMinSizePaperStudy(benchmark::State& state) { bench::RunExampleStu
 BENCHMARK(BM_CycloidMinSizeRatio29Study)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_CycloidMinSizePaperStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-}  // namespace
+}  // namespace cycloid_min_size_bench
 }  // namespace camopt::objectives

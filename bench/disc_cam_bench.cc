@@ -8,7 +8,7 @@
 #include "model/disc_cam/mechanical_error.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace disc_cam_bench {
 
 using namespace camopt;
 using namespace camopt::disc_cam;
@@ -77,4 +77,4 @@ void BM_MonteCarloSample360(benchmark::State& state) {
 }
 BENCHMARK(BM_MonteCarloSample360)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+}  // namespace disc_cam_bench

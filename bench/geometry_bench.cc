@@ -10,7 +10,7 @@
 #include "studies/input.h"
 #include "studies/study.h"
 
-namespace {
+namespace geometry_bench {
 
 using namespace camopt;
 
@@ -35,4 +35,4 @@ BENCHMARK_CAPTURE(BM_StudyWithoutFiles, cycloid_ltca_nnm_none, "cycloid_ltca_nnm
 BENCHMARK_CAPTURE(BM_StudyWithFiles, disc_cam_translating, "disc_cam_translating.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_StudyWithoutFiles, disc_cam_translating, "disc_cam_translating.json")->Unit(benchmark::kMillisecond);
 
-}  // namespace
+}  // namespace geometry_bench

@@ -12,7 +12,7 @@
 #include "model/globoidal/paper_example.h"
 #include "tests/globoidal_reference_rk4.h"
 
-namespace {
+namespace globoidal_bench {
 
 using namespace camopt;
 using namespace camopt::globoidal;
@@ -67,10 +67,10 @@ DynamicsInput ExampleRun(double rpm) {
 }
 
 // Reference peaks at a tiny RK4 step (1e-7 s), computed once per speed.
-const testing::ReferencePeaks& Reference(int rpm) {
-  static std::map<int, testing::ReferencePeaks> cache;
+const globoidal::testing::ReferencePeaks& Reference(int rpm) {
+  static std::map<int, globoidal::testing::ReferencePeaks> cache;
   auto it = cache.find(rpm);
-  if (it == cache.end()) it = cache.emplace(rpm, testing::ReferenceRk4(ExampleRun(rpm), 1e-7)).first;
+  if (it == cache.end()) it = cache.emplace(rpm, globoidal::testing::ReferenceRk4(ExampleRun(rpm), 1e-7)).first;
   return it->second;
 }
 
@@ -82,7 +82,7 @@ void BM_GloboidalDynamicsTolerance(benchmark::State& state) {
   in.relative_tolerance = std::pow(10.0, -double(state.range(1)));
   DynamicsResult r;
   for (auto _ : state) benchmark::DoNotOptimize(r = SimulateDynamics(in));
-  const testing::ReferencePeaks& ref = Reference(rpm);
+  const globoidal::testing::ReferencePeaks& ref = Reference(rpm);
   state.counters["steps"] = double(r.steps);
   state.counters["rhs"] = double(r.rhs_evaluations);
   state.counters["acc"] = r.peaks.swing_acc_rad_s2;
@@ -100,9 +100,9 @@ void BM_GloboidalDynamicsFixedStepRk4(benchmark::State& state) {
   const int rpm = int(state.range(0));
   const double h = std::pow(10.0, -double(state.range(1)) / 2);
   const DynamicsInput in = ExampleRun(rpm);
-  testing::ReferencePeaks r;
-  for (auto _ : state) benchmark::DoNotOptimize(r = testing::ReferenceRk4(in, h));
-  const testing::ReferencePeaks& ref = Reference(rpm);
+  globoidal::testing::ReferencePeaks r;
+  for (auto _ : state) benchmark::DoNotOptimize(r = globoidal::testing::ReferenceRk4(in, h));
+  const globoidal::testing::ReferencePeaks& ref = Reference(rpm);
   state.counters["steps"] = double(r.steps);
   state.counters["rhs"] = 4.0 * double(r.steps);
   state.counters["acc"] = r.swing_acc_rad_s2;
@@ -117,4 +117,4 @@ BENCHMARK(BM_GloboidalDynamicsFixedStepRk4)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-}  // namespace
+}  // namespace globoidal_bench

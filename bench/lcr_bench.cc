@@ -5,7 +5,7 @@
 #include "model/lcr/cycle.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace lcr_bench {
 
 using namespace camopt;
 
@@ -71,4 +71,4 @@ void BM_LcrCycleAggregatesJet6(benchmark::State& state) {
 }
 BENCHMARK(BM_LcrCycleAggregatesJet6)->Arg(90)->Arg(360)->Unit(benchmark::kMicrosecond);
 
-}  // namespace
+}  // namespace lcr_bench

@@ -8,7 +8,7 @@
 #include "model/lcr/contact3d_cycle.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace lcr_contact3d_bench {
 
 using namespace camopt;
 
@@ -66,4 +66,4 @@ void BM_Contact3DLcrCycle(benchmark::State& state) {
 }
 BENCHMARK(BM_Contact3DLcrCycle)->Arg(360)->Arg(3600)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+}  // namespace lcr_contact3d_bench

@@ -10,7 +10,7 @@
 
 #include "studies/lcr_min_size_study.h"
 
-namespace {
+namespace lcr_min_size3d_bench {
 
 using namespace camopt;
 
@@ -28,4 +28,4 @@ void BM_MinSize3DCrowned(benchmark::State& state) {
 }
 BENCHMARK(BM_MinSize3DCrowned)->Arg(14)->Arg(40)->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime();
 
-}  // namespace
+}  // namespace lcr_min_size3d_bench

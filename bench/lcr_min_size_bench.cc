@@ -9,7 +9,7 @@
 #include "bench/example_study.h"
 
 namespace camopt {
-namespace {
+namespace lcr_min_size_bench {
 
 void BM_LcrMinSizeExample(benchmark::State& state) { bench::RunExampleStudy(state, "lcr_min_size.json"); }
 void BM_LcrMinSizeLifeExample(benchmark::State& state) { bench::RunExampleStudy(state, "lcr_min_size_life.json"); }
@@ -23,5 +23,5 @@ BENCHMARK(BM_LcrMinSizeExample)->Unit(benchmark::kMillisecond)->Iterations(1)->M
 BENCHMARK(BM_LcrMinSizeLifeExample)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 BENCHMARK(BM_LcrMinSizeHardLife)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 
-}  // namespace
+}  // namespace lcr_min_size_bench
 }  // namespace camopt

@@ -8,7 +8,7 @@
 #include "objectives/lcr_robust.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace lcr_robust_bench {
 
 using namespace camopt;
 
@@ -45,4 +45,4 @@ void BM_LcrRobustJacobian(benchmark::State& state) {
 }
 BENCHMARK(BM_LcrRobustJacobian)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+}  // namespace lcr_robust_bench

@@ -12,7 +12,7 @@
 
 #include "studies/lcr_min_size_study.h"
 
-namespace {
+namespace lcr_robust_study_bench {
 
 using namespace camopt;
 
@@ -24,4 +24,4 @@ void BM_LcrRobustStudy(benchmark::State& state) {
 }
 BENCHMARK(BM_LcrRobustStudy)->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime();
 
-}  // namespace
+}  // namespace lcr_robust_study_bench

@@ -6,7 +6,7 @@
 #include "model/lcr/transmission_error.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace lcr_tolerance_bench {
 
 using namespace camopt;
 
@@ -40,4 +40,4 @@ void BM_LcrTransmissionErrorLinear(benchmark::State& state) {
 }
 BENCHMARK(BM_LcrTransmissionErrorLinear)->Arg(72)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+}  // namespace lcr_tolerance_bench

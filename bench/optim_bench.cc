@@ -12,7 +12,7 @@
 #include "studies/study.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace optim_bench {
 
 using camopt::objectives::LcrConstraintForm;
 
@@ -94,4 +94,4 @@ BENCHMARK(BM_LcrMinSizeStudy)
     ->Args({0, 0, 0})->Args({1, 0, 0})->Args({1, 1, 0})
     ->Unit(benchmark::kMillisecond)->Iterations(1);
 
-}  // namespace
+}  // namespace optim_bench

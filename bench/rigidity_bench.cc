@@ -5,7 +5,7 @@
 #include "model/rigidity/lcr_stiffness.h"
 #include "tests/reference_designs.h"
 
-namespace {
+namespace rigidity_bench {
 
 using namespace camopt;
 using namespace camopt::rigidity;
@@ -73,4 +73,4 @@ void BM_LcrStiffnessCycle720(benchmark::State& state) {
 }
 BENCHMARK(BM_LcrStiffnessCycle720)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+}  // namespace rigidity_bench

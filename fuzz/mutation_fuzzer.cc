@@ -22,7 +22,8 @@
 //   camopt_mutate --fields [...]    (every numeric leaf of every kind's `camopt init` study set to
 //                                    0, -1, ±1e-300, 1e308, -0, 5e-324, a string, a deep array)
 //                 [--kind KIND] [--sample N] (one kind's cases; N of them, evenly spaced from seed)
-//                 [--shard I/N]  (of those, every N-th from the I-th: one test per shard)
+//                 [--shard I/N]  (of those, every N-th from the I-th: one test per shard;
+//                                 with --cases, cases I, I + N, I + 2N, ... below N's count)
 //                 [--work-factor F] [--save DIR] [--record FILE] [--quiet]
 //   camopt_mutate --replay DIR      (every *.json in DIR as it is: the corpus of past failures)
 //   camopt_mutate --show I --seed S (print case I's study text: a failure is reproducible)
@@ -559,6 +560,10 @@ int main(int argc, char** argv) {
     }
     o.cases = static_cast<long>(replay.size());
   }
+  // Random mutants of one shard: cases shard, shard + shards, ... (each keeps its number, so that
+  // `--show I` prints the case a shard reported).
+  const long first_case = replay.empty() ? o.shard : 0, case_step = replay.empty() ? o.shards : 1;
+  if (replay.empty() && o.shards > 1) o.cases = o.cases > o.shard ? (o.cases - o.shard + o.shards - 1) / o.shards : 0;
 
   // A scratch folder that looks like the examples folder (relative catalogue paths resolve).
   std::string pattern = (fs::temp_directory_path() / "camopt-mutate-XXXXXX").string();
@@ -589,7 +594,7 @@ int main(int argc, char** argv) {
     for (size_t s = 0; s < slots.size() && next < o.cases; ++s) {
       if (slots[s].pid != 0) continue;
       Running& r = slots[s];
-      r.index = next++;
+      r.index = first_case + case_step * next++;
       if (!replay.empty()) {
         r.from = replay[static_cast<size_t>(r.index)].first;
         r.text = replay[static_cast<size_t>(r.index)].second;

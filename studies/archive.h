@@ -51,6 +51,10 @@
 
 namespace camopt::studies {
 
+/// A number of a result that may be ±inf or NaN (the stress of an undercut contact, an estimate
+/// not made): itself, or null in JSON.
+inline nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
 /// What a declared field accepts and how it is documented, besides its C++ type. Built with
 /// chained calls: `Field().Required().Positive().Unit("mm").Desc("…")`.
 ///
@@ -447,7 +451,7 @@ DeclaredEcho FindDeclaredEcho(const std::string& kind);
 /// Registers the study kind `kind` declared by the struct `Type` (in the kind's .cc): its schema
 /// is emitted from the declaration (`camopt schema KIND`).
 #define CAMOPT_REGISTER_DECLARED_KIND(kind, Type, title)                                          \
-  static const bool CAMOPT_ARCHIVE_CONCAT(camopt_declared_kind_, __LINE__) =                     \
+  static const bool CAMOPT_ARCHIVE_CONCAT(camopt_declared_kind_, __COUNTER__) =                  \
       ::camopt::studies::RegisterDeclaredKind(                                                   \
           kind, [] { return ::camopt::studies::EmitSchema<Type>(kind, title).dump(2) + "\n"; },   \
           [](const nlohmann::json& study, const std::string& file) {                             \

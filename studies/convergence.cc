@@ -10,6 +10,7 @@
 #include "studies/format.h"
 #include "studies/report.h"
 #include "studies/writers.h"
+#include "studies/archive.h"
 
 namespace camopt::studies {
 
@@ -17,8 +18,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using json = nlohmann::json;
-
-json NumberOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 // value × factor, element by element for an array of numbers; whole numbers rounded.
 json Scale(const json& value, double factor, bool integer) {

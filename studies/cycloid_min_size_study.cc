@@ -28,6 +28,7 @@
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
+#include "studies/archive.h"
 
 namespace camopt::studies::cycloid_min_size {
 
@@ -934,8 +935,6 @@ Result Run(const Study& s, const RunContext& ctx) {
 }
 
 namespace {
-
-nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // The values of one model at the reported design (accurate or fast), by their result.json names.
 nlohmann::json ModelJson(const Study& s, const objectives::CycloidSizingEvaluation& e) {

@@ -12,6 +12,7 @@
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
+#include "studies/archive.h"
 
 namespace camopt::studies::disc_cam_min_size {
 namespace {
@@ -19,8 +20,6 @@ namespace {
 namespace dc = camopt::disc_cam;
 using objectives::DiscCamSizingVariable;
 constexpr double kDeg = kPi / 180.0;
-
-nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // The unit of a limit key, for the costs ("mm per deg").
 std::string LimitUnit(const std::string& key) {

@@ -12,6 +12,7 @@
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
+#include "studies/archive.h"
 
 namespace camopt::studies::disc_cam_motion {
 namespace {
@@ -20,8 +21,6 @@ namespace dc = camopt::disc_cam;
 using objectives::MotionObjective;
 constexpr double kDeg = kPi / 180.0;
 constexpr int kMaxFree = 31;
-
-nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace
 

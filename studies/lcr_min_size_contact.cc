@@ -10,6 +10,7 @@
 #include "studies/format.h"
 #include "studies/lcr_contact_input.h"
 #include "studies/lcr_min_size_study.h"
+#include "studies/archive.h"
 
 namespace camopt::studies::lcr_min_size {
 
@@ -37,8 +38,6 @@ nlohmann::json CrowningJson(const lcr::RollerCrowning<double>& c) {
   }
   return j;
 }
-
-nlohmann::json MaybeFinite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace
 
@@ -157,7 +156,7 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
     best[sides[k]]["crowning"] = CrowningJson(b.crowning[k]);
     if (!b.contact) continue;
     const lcr::Contact3DCycleSide& d = b.contact->design[k];
-    nlohmann::json side = {{"max_contact_stress_MPa", MaybeFinite(d.max_contact_stress_MPa)},
+    nlohmann::json side = {{"max_contact_stress_MPa", NumberOrNull(d.max_contact_stress_MPa)},
                            {"edge_loaded", d.edge_loaded},
                            {"slice_width_mm", d.slice_width_mm},
                            {"interpolation_error_MPa", d.interpolation_error_MPa}};
@@ -171,10 +170,10 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
                                           "half-spaces, Johnson 1985 eq. 4.50 ff.)");
     }
     if (c3.overload_torque_Nmm > 0) {
-      side["overload_edge_margin"] = MaybeFinite(b.contact->overload_edge_margin[k]);
+      side["overload_edge_margin"] = NumberOrNull(b.contact->overload_edge_margin[k]);
       side["overload_edge_loaded"] = b.contact->overload_edge_loaded[k];
     } else {
-      side["edge_margin"] = MaybeFinite(b.contact->overload_edge_margin[k]);  // at the design torque
+      side["edge_margin"] = NumberOrNull(b.contact->overload_edge_margin[k]);  // at the design torque
     }
     contact[sides[k]] = side;
   }
@@ -184,9 +183,9 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
     nlohmann::json j = {{"cell_dx_mm", h.cell_dx_mm}, {"cell_dy_mm", h.cell_dy_mm}, {"converged", h.converged},
                         {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}}};
     for (int k = 0; k < 2; ++k)
-      j[sides[k]] = {{"half_space_MPa", MaybeFinite(h.half_space_MPa[k])},
-                     {"slices_MPa", MaybeFinite(h.slices_MPa[k])},
-                     {"slices_minus_half_space_percent", MaybeFinite(h.difference_percent[k])},
+      j[sides[k]] = {{"half_space_MPa", NumberOrNull(h.half_space_MPa[k])},
+                     {"slices_MPa", NumberOrNull(h.slices_MPa[k])},
+                     {"slices_minus_half_space_percent", NumberOrNull(h.difference_percent[k])},
                      {"edge_loaded", h.edge_loaded[k]}};
     best["half_space_check"] = j;
   }

@@ -25,6 +25,7 @@
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
+#include "studies/archive.h"
 
 namespace camopt::studies::lcr_min_size {
 namespace {
@@ -159,20 +160,17 @@ nlohmann::json SideJson(const lcr::CamSide<double>& c) {
           {"cam_thickness_mm", c.cam_thickness}};
 }
 
-// A number that may be +inf (the stress of an undercut contact): null in JSON.
-nlohmann::json MaybeFinite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
 // The lives of a design (docs/life.md, "Life as a sizing limit"): `<bearing>_L10h` per bearing,
 // shortest_L10h, and a table per element (load, C, L10h, s0, pass/fail against life_h).
 nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives::LcrDenseCheck& k) {
   nlohmann::json lj;
   const double limit = spec.limits.life_h;
   lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
-  lj["shortest_L10h"] = MaybeFinite(k.shortest_L10h);
+  lj["shortest_L10h"] = NumberOrNull(k.shortest_L10h);
   const auto shortest = std::min_element(k.life.begin(), k.life.end(),
                                           [](const auto& a, const auto& b) { return a.life.L10h < b.life.L10h; });
   lj["shortest_bearing"] = shortest->name;
-  for (const auto& b : k.life) lj[b.name + "_L10h"] = MaybeFinite(b.life.L10h);
+  for (const auto& b : k.life) lj[b.name + "_L10h"] = NumberOrNull(b.life.L10h);
   lj["duty_cycle"] = DutyCycleJson(spec.life->lines);
   nlohmann::json table = nlohmann::json::array();
   for (const auto& b : k.life)
@@ -253,10 +251,10 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
     j["max_contact_stress_MPa"] = std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]);
     j["max_roller_force_N"] = std::max(k.max_force_N[0], k.max_force_N[1]);
     j["undercut_margin_mm"] = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
-    if (!k.life.empty()) j["shortest_L10h"] = MaybeFinite(k.shortest_L10h);
+    if (!k.life.empty()) j["shortest_L10h"] = NumberOrNull(k.shortest_L10h);
     if (loss) {
-      j["power_loss_W"] = MaybeFinite(k.lubricated_loss_W);
-      j["mean_efficiency"] = MaybeFinite(k.mean_efficiency);
+      j["power_loss_W"] = NumberOrNull(k.lubricated_loss_W);
+      j["mean_efficiency"] = NumberOrNull(k.mean_efficiency);
     }
   } else if (o.design) {
     // Not a result: the point where the search came closest, and what it breaks there.
@@ -266,8 +264,8 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
     if (o.check) {
       nlohmann::json v = nlohmann::json::array();
       for (const auto& x : o.check->violations)
-        v.push_back({{"limit", x.limit}, {"value", MaybeFinite(x.value)}, {"limit_value", x.limit_value},
-                     {"excess", MaybeFinite(x.excess())}});
+        v.push_back({{"limit", x.limit}, {"value", NumberOrNull(x.value)}, {"limit_value", x.limit_value},
+                     {"excess", NumberOrNull(x.excess())}});
       j["violations"] = v;
       if (!o.check->design_problems.empty()) j["design_problems"] = o.check->design_problems;
     }
@@ -886,7 +884,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
       nlohmann::json& g = b["ratings"];
       g["momentary_torque_required_Nm"] = *s.ratings->momentary_torque_Nm;
       g["momentary_static_safety"] = need;
-      g["s0_at_required_momentary_torque"] = MaybeFinite(k.min_static_safety);
+      g["s0_at_required_momentary_torque"] = NumberOrNull(k.min_static_safety);
       g["momentary_torque_Nm"] = momentary ? nlohmann::json(*momentary) : nlohmann::json(nullptr);
       g["momentary_by"] = mby;
       g["momentary_met"] = momentary_met;

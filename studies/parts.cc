@@ -77,7 +77,8 @@ std::string CsvField(const std::string& s) {
   return out + "\"";
 }
 
-std::string Number(double v) { return Format(v, 10); }
+// A number of the bill of materials: ten significant digits.
+std::string TenDigits(double v) { return Format(v, 10); }
 
 }  // namespace
 
@@ -87,11 +88,11 @@ std::string BomCsv(const PartsSet& set) {
   for (const Part& p : set.parts) {
     total += p.count * p.mass_kg;
     out += CsvField(p.name) + "," + std::to_string(p.count) + "," + CsvField(p.description) + "," +
-           CsvField(p.material) + "," + Number(p.solid.thickness_mm) + "," + Number(p.volume_mm3) + "," +
-           Number(p.mass_kg) + "," + Number(p.count * p.mass_kg) + "," + CsvField(p.designation) + "," +
+           CsvField(p.material) + "," + TenDigits(p.solid.thickness_mm) + "," + TenDigits(p.volume_mm3) + "," +
+           TenDigits(p.mass_kg) + "," + TenDigits(p.count * p.mass_kg) + "," + CsvField(p.designation) + "," +
            CsvField(p.note) + "\n";
   }
-  out += "total,,,,,,," + Number(total) + ",,density " + Number(set.density_kg_m3) + " kg/m^3\n";
+  out += "total,,,,,,," + TenDigits(total) + ",,density " + TenDigits(set.density_kg_m3) + " kg/m^3\n";
   return out;
 }
 

@@ -124,5 +124,5 @@ void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& ou
 }  // namespace camopt::studies
 
 #define CAMOPT_REGISTER_REPORT(kind, ...)                                 \
-  static const bool CAMOPT_CONCAT(camopt_report_registered_, __LINE__) = \
+  static const bool CAMOPT_CONCAT(camopt_report_registered_, __COUNTER__) = \
       ::camopt::studies::RegisterReport(kind, std::vector<::camopt::studies::Headline> __VA_ARGS__)

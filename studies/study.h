@@ -320,11 +320,11 @@ double Finite(double value, const std::string& what);
 
 #define CAMOPT_CONCAT_INNER(a, b) a##b
 #define CAMOPT_REGISTER_FIDELITY(kind, fn) \
-  static const bool CAMOPT_CONCAT(camopt_fidelity_registered_, __LINE__) = \
+  static const bool CAMOPT_CONCAT(camopt_fidelity_registered_, __COUNTER__) = \
       ::camopt::studies::RegisterFidelity(kind, fn)
 #define CAMOPT_CONCAT(a, b) CAMOPT_CONCAT_INNER(a, b)
 #define CAMOPT_REGISTER_STUDY(kind, fn) \
-  static const bool CAMOPT_CONCAT(camopt_study_registered_, __LINE__) = \
+  static const bool CAMOPT_CONCAT(camopt_study_registered_, __COUNTER__) = \
       ::camopt::studies::RegisterStudy(kind, fn)
 
 /// Registers a study kind of the Parse → Run → Write shape: used inside the kind's namespace,
@@ -343,5 +343,5 @@ double Finite(double value, const std::string& what);
 
 /// Registers the parse step of a kind registered with CAMOPT_REGISTER_STUDY (for CheckStudy).
 #define CAMOPT_REGISTER_STUDY_PARSER(kind, fn) \
-  static const bool CAMOPT_CONCAT(camopt_study_parser_registered_, __LINE__) = \
+  static const bool CAMOPT_CONCAT(camopt_study_parser_registered_, __COUNTER__) = \
       ::camopt::studies::RegisterStudyParser(kind, fn)

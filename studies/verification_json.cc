@@ -4,12 +4,9 @@
 
 #include "studies/format.h"
 #include "studies/study.h"
+#include "studies/archive.h"
 
 namespace camopt::studies {
-
-namespace {
-nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-}  // namespace
 
 void AddVerificationJson(const objectives::Verification& v, nlohmann::json& result) {
   nlohmann::json checks = nlohmann::json::array(), steps = nlohmann::json::array();

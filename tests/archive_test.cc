@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 namespace camopt::studies {
-namespace {
+namespace archive_test {
 
 using nlohmann::json;
 
@@ -201,5 +201,5 @@ TEST(Archive, WriterOutputReadsBackTheSame) {
   EXPECT_EQ(again, written);
 }
 
-}  // namespace
+}  // namespace archive_test
 }  // namespace camopt::studies

@@ -27,7 +27,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::disc_cam {
-namespace {
+namespace arm_dynamics_test {
 
 using motion::MotionLaw;
 using motion::MotionSegment;
@@ -345,5 +345,5 @@ TEST(ArmDynamics, BadInputExitsTwoThroughTheCli) {
   EXPECT_EQ(res.exit_code, 2) << res.stderr_text;
 }
 
-}  // namespace
+}  // namespace arm_dynamics_test
 }  // namespace camopt::disc_cam

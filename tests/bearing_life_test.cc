@@ -14,7 +14,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace bearing_life_test {
 
 /// Agreement of two evaluations of the same closed form in double (a few roundings of pow/log).
 constexpr double kClosedFormRelTol = 1e-12;
@@ -334,5 +334,5 @@ TEST(BearingLife, BadInputIsRejectedNamingTheFieldAndValue) {
   EXPECT_NO_THROW(DutyCycleLifeHours(30000.0, cycle, k));
 }
 
-}  // namespace
+}  // namespace bearing_life_test
 }  // namespace camopt

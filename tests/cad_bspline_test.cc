@@ -15,7 +15,7 @@
 #include "cad/solid.h"
 
 namespace camopt {
-namespace {
+namespace cad_bspline_test {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -187,5 +187,5 @@ TEST(ClosedCubic, StepWallsOfTheSplineReadBackWithTheExactVolume) {
   EXPECT_FALSE(cad::SplineWalls(e));
 }
 
-}  // namespace
+}  // namespace cad_bspline_test
 }  // namespace camopt

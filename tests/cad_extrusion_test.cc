@@ -14,7 +14,7 @@
 #include "cad/stl.h"
 
 namespace camopt {
-namespace {
+namespace cad_extrusion_test {
 
 constexpr double kPi = 3.14159265358979323846;
 // OCCT's volume and area of a B-rep of lines and circles: its integration, not the file, limits it.
@@ -179,5 +179,5 @@ TEST(ExtrusionMesh, AProfileNotStarShapedAboutItsCentreFallsBackToTheKernelsMesh
   EXPECT_NEAR(back.volume_mm3 / ((80 + 64) * 3.0) - 1, 0.0, kMeasureRelTol);
 }
 
-}  // namespace
+}  // namespace cad_extrusion_test
 }  // namespace camopt

@@ -30,7 +30,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace cad_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::SourcePath;
@@ -142,7 +142,6 @@ TEST(ArcFit, EllipseWithinToleranceEverywhere) {
   EXPECT_LT(fit.arcs.size(), 400u);
 }
 
-namespace {
 // A closed chain of chords through the points (bulge 0: ChainCrossesItself looks at the chords).
 std::vector<cad::ArcSegment> Polygon(const std::vector<Vec2<double>>& p) {
   std::vector<cad::ArcSegment> chain;
@@ -173,7 +172,6 @@ bool CrossesByEveryPair(const std::vector<Vec2<double>>& p) {
     }
   return false;
 }
-}  // namespace
 
 // Limaçons r = b + a cos t: an inner loop (the chain crosses itself where the loop closes) exactly
 // when a > b; a regular polygon and the star polygon {7/3} (whose edges cross by construction).
@@ -734,5 +732,5 @@ TEST(GeometryFiles, GloboidalSurfacesBinaryStlAndStep) {
               mesh_area, back.area_mm2 / mesh_area - 1);
 }
 
-}  // namespace
+}  // namespace cad_test
 }  // namespace camopt

@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace catalogue_ratings_test {
 
 /// Recovering exact piecewise-linear data: a few roundings of sums of order-one numbers.
 constexpr double kExactRelTol = 1e-12;
@@ -280,5 +280,5 @@ TEST(CatalogueRatings, RejectsBadInputNamingTheQuantity) {
   ExpectRejects([&] { AllowedMomentaryPeakCount(5.0, 0.1, -100.0); }, "R (reduction_ratio)");
 }
 
-}  // namespace
+}  // namespace catalogue_ratings_test
 }  // namespace camopt

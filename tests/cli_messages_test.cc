@@ -14,7 +14,7 @@
 #include "studies/suggest.h"
 #include "tests/test_util.h"
 
-namespace {
+namespace cli_messages_test {
 
 using camopt::studies::NamesInExpected;
 using camopt::studies::NearestName;
@@ -193,4 +193,4 @@ TEST(CliMessages, CycloidLtcaLimitsGiveAVerdict) {
                                        "did you mean \"contact_stress_MPa\"?");
 }
 
-}  // namespace
+}  // namespace cli_messages_test

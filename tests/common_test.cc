@@ -22,7 +22,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace common_test {
 
 TEST(Scalar, SoftMaxBoundsTheMaximum) {
   const std::vector<double> x = {1.0, 3.0, 2.5, -4.0};
@@ -233,11 +233,11 @@ TEST(Cli, MissingFileAndBadJsonExitWithCode2) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "the output folder given is not created";
 }
 
-}  // namespace
+}  // namespace common_test
 }  // namespace camopt
 
 namespace camopt {
-namespace {
+namespace common_test {
 
 // Every study kind rejects a misspelt top-level field instead of silently ignoring it.
 // `--timings`: one line with every phase of the run in order, each CPU and wall time >= 0, and the
@@ -295,5 +295,5 @@ TEST(Cli, EveryKindRejectsAnUnknownTopLevelField) {
   EXPECT_GE(kinds, 8);
 }
 
-}  // namespace
+}  // namespace common_test
 }  // namespace camopt

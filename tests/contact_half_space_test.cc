@@ -20,7 +20,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::contact {
-namespace {
+namespace contact_half_space_test {
 
 constexpr double kEStar = 115384.6;  // steel on steel, E = 210 GPa, ν = 0.3 [MPa]
 
@@ -590,11 +590,11 @@ TEST(ContactHardCases, BadInputThrowsWithAClearMessage) {
                "exceed its limit");
 }
 
-}  // namespace
+}  // namespace contact_half_space_test
 }  // namespace camopt::contact
 
 namespace camopt::contact {
-namespace {
+namespace contact_half_space_test {
 
 TEST(HalfSpaceSensitivity, MatchesCentralDifferencesOfTheLoadControlledSolve) {
   // A crowned roller on a 24 x 24 grid: the gap depends on s through a crown scale and a tilt, the
@@ -743,5 +743,5 @@ TEST(HalfSpaceSensitivity, AdjointGivesEachFunctionalOfTheFixedLoadSensitivity) 
   EXPECT_THROW(solver.AdjointOfFunctional(g, base.pressure_MPa, {1.0}, e_star), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace contact_half_space_test
 }  // namespace camopt::contact

@@ -20,7 +20,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::contact {
-namespace {
+namespace contact_roller_limits_test {
 
 constexpr double kEStar = 115384.6;  // steel on steel [MPa]
 
@@ -305,5 +305,5 @@ TEST(RollerSlices, CircularAndPartialCrownGradientsMatchCentralDifferences) {
   }
 }
 
-}  // namespace
+}  // namespace contact_roller_limits_test
 }  // namespace camopt::contact

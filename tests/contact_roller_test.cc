@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::contact {
-namespace {
+namespace contact_roller_test {
 
 constexpr double kEStar = 115384.6;  // steel on steel [MPa]
 
@@ -199,11 +199,11 @@ TEST(RollerSlices, GradientsMatchCentralDifferences) {
   testing::ExpectJacobianMatchesCentralDifferences<5>(fn, {8000.0, 5.0, 20.0, 0.002, 0.0003}, 1e-5, 1e-6);
 }
 
-}  // namespace
+}  // namespace contact_roller_test
 }  // namespace camopt::contact
 
 namespace camopt::contact {
-namespace {
+namespace contact_roller_test {
 
 // Convergence of the two fidelities on LCR II's worst output contact at 80 N·m (F = 835 N,
 // R' = 2.02 mm, l = 8 mm, the example's crown f = 0.01 mm, Le = 10.5 mm): the numbers behind
@@ -254,5 +254,5 @@ TEST(RollerContactConvergence, SliceCountAndGridForStraightAndCrownedRollers) {
   }
 }
 
-}  // namespace
+}  // namespace contact_roller_test
 }  // namespace camopt::contact

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::contact {
-namespace {
+namespace contact_validation_test {
 
 constexpr double kEStar = 115384.6;  // steel on steel [MPa]
 
@@ -127,5 +127,5 @@ TEST(ContactHertz, StraightRollerEdgePeakGrowsAsAxialCellsShrink) {
   }
 }
 
-}  // namespace
+}  // namespace contact_validation_test
 }  // namespace camopt::contact

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace convergence_test {
 
 using nlohmann::json;
 using testing::Example;
@@ -244,5 +244,5 @@ TEST(Convergence, RefinementOverTheWorkLimitIsSkipped) {
   EXPECT_EQ((*grid)["outputs"]["/max_contact_stress_MPa"]["method"], "difference_to_coarser");
 }
 
-}  // namespace
+}  // namespace convergence_test
 }  // namespace camopt

@@ -26,7 +26,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_audit_test {
 
 constexpr double kE = 206000.0, kNu = 0.3;
 const double kEStar = kE / (2.0 * (1.0 - kNu * kNu));  // two equal steel bodies
@@ -330,5 +330,5 @@ TEST(CycloidAudit, LogCrownLoadsAndPeakMatchTheSlicingModel) {
   EXPECT_NEAR(m.max_pressure_MPa, ind_peak, 0.04 * ind_peak);
 }
 
-}  // namespace
+}  // namespace cycloid_audit_test
 }  // namespace camopt::cycloid

@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_bearing_life_test {
 
 Drive Nnm() { return camopt::testing::CycloidNnm(); }  // the paper's drive with its NNM modification
 Drive Unmodified() {
@@ -353,5 +353,5 @@ TEST(CycloidLife, SizingLifeLimitNeedsTheSpeedAndRatings) {
   ExpectStudyRejected(s, "cyc-size-life-negative", "/limits/life_h", "expected");
 }
 
-}  // namespace
+}  // namespace cycloid_bearing_life_test
 }  // namespace camopt::cycloid

@@ -9,7 +9,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::objectives {
-namespace {
+namespace cycloid_crowning_objective_test {
 
 cycloid::LoadedOptions Coarse() {
   cycloid::LoadedOptions o;
@@ -140,5 +140,5 @@ TEST(CycloidCrowningProblem, ScanSelections) {
   EXPECT_THROW(LargestEdgeMargin({}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace cycloid_crowning_objective_test
 }  // namespace camopt::objectives

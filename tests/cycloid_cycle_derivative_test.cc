@@ -11,7 +11,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_cycle_derivative_test {
 
 // Tolerances of the comparison (relative to the central difference). The solves run at a
 // compatibility tolerance of 1e-11 and CG residuals of 1e-12, the derivatives' CG at 1e-10, and the
@@ -236,5 +236,5 @@ TEST(CycloidCycleDerivative, SmoothPeakBiasIsWithinItsStatedBound) {
   EXPECT_EQ(SmoothPeakPressure(cycle, 0.0), cycle.max_pressure_MPa);
 }
 
-}  // namespace
+}  // namespace cycloid_cycle_derivative_test
 }  // namespace camopt::cycloid

@@ -26,7 +26,7 @@
 #include "studies/study.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_error_estimate_test {
 
 // Crank angles per mesh period of the converged reference (the step 32 times finer than the
 // finest case's refined set).
@@ -115,5 +115,5 @@ TEST(CycloidErrorEstimate, CrankAngleErrorBoundsTheConvergedAnswer) {
   }
 }
 
-}  // namespace
+}  // namespace cycloid_error_estimate_test
 }  // namespace camopt::cycloid

@@ -19,7 +19,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_geometry_limits_test {
 
 // A 3-point circle on points ~1e-3 mm apart is exact to O(h²) and loses ~1e-7 to rounding; the
 // sampled maximum is biased by |κ''| h²/8 ~ 1e-9 relative. Radii of 0.5–20 mm: 1e-5 mm is ample.
@@ -406,5 +406,5 @@ TEST(CycloidGeometryLimits, BadInputThrowsInvalidArgument) {
   ExpectInvalid([&] { (void)UndercutMargin(dj); }, "eccentricity_mm");
 }
 
-}  // namespace
+}  // namespace cycloid_geometry_limits_test
 }  // namespace camopt::cycloid

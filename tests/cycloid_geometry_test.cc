@@ -12,7 +12,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_geometry_test {
 
 // The paper's example (Table 2) with NNM (Table 3): Δa = −16 µm, Δρ = −8 µm.
 Drive PaperDrive(bool nnm) {
@@ -263,5 +263,5 @@ TEST(CycloidGeometry, CrowningGradientsMatchCentralDifferences) {
   camopt::testing::ExpectJacobianMatchesCentralDifferences<3>(f, {0.005, 7.3, 17.5}, 1e-6, 1e-10);
 }
 
-}  // namespace
+}  // namespace cycloid_geometry_test
 }  // namespace camopt::cycloid

@@ -19,7 +19,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_ltca_test {
 
 Drive NnmDrive() { return camopt::testing::CycloidNnm(); }  // Tables 2 and 3 of the paper
 
@@ -831,5 +831,5 @@ TEST(CycloidStudies, MisspeltNestedFieldIsRejected) {
   camopt::testing::ExpectStudyRejected(tuning, "cycloid-tuning-typo", "/tuning/edge_margin_mm", "unknown field");
 }
 
-}  // namespace
+}  // namespace cycloid_ltca_test
 }  // namespace camopt::cycloid

@@ -11,7 +11,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_lubrication_test {
 
 Drive Unmodified() {
   Drive d = testing::CycloidNnm();
@@ -173,14 +173,14 @@ TEST(CycloidLubrication, MetamorphicRelations) {
   EXPECT_GT(one.output_pins_sliding, 0.0);
 }
 
-}  // namespace
+}  // namespace cycloid_lubrication_test
 }  // namespace camopt::cycloid
 
 #include "studies/cycloid_ltca_study.h"
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace cycloid_lubrication_test {
 
 nlohmann::json CycloidLubricated() {
   nlohmann::json s =
@@ -281,5 +281,5 @@ TEST(CycloidLubricationStudy, ALargerHousingRunsCoolerAndBadInputExitsTwo) {
   testing::ExpectStudyRejected(bad, "cyc-lub-angles", "/analysis", "whole mesh periods");
 }
 
-}  // namespace
+}  // namespace cycloid_lubrication_test
 }  // namespace camopt

@@ -20,7 +20,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace cycloid_min_size_study_test {
 
 using nlohmann::json;
 using testing::Example;
@@ -537,5 +537,5 @@ TEST(CycloidMinSizeStudy, AnUnreachableStressLimitExitsThree) {
   ASSERT_TRUE(r["notes"].is_array());
 }
 
-}  // namespace
+}  // namespace cycloid_min_size_study_test
 }  // namespace camopt

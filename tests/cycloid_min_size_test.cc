@@ -13,7 +13,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::objectives {
-namespace {
+namespace cycloid_min_size_test {
 
 // Central differences of converged cycles (compatibility 1e-11, CG 1e-12) against the implicit
 // derivatives (CG 1e-10): measured agreement 1e-6 or better on the LTCA rows; the closed forms
@@ -366,12 +366,12 @@ TEST(CycloidMinSize, LubricatedRowsDerivativesMatchCentralDifferences) {
   }
 }
 
-}  // namespace
+}  // namespace cycloid_min_size_test
 }  // namespace camopt::objectives
 
 
 namespace camopt::objectives {
-namespace {
+namespace cycloid_min_size_test {
 
 // The fast model of the sizing tests: 16 × 16 cells per pair, 4 crank angles per mesh period (the
 // accurate check doubles both).
@@ -501,5 +501,5 @@ TEST(CycloidMinSize, RowDerivativesHoldAtTheUndercutBoundary) {
   ExpectRowsMatchCentralDifferences(p, spec, x, jac, 1e-6, 1e-4);  // steps stay inside the 2 µm
 }
 
-}  // namespace
+}  // namespace cycloid_min_size_test
 }  // namespace camopt::objectives

@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_output_mechanism_test {
 
 using camopt::testing::Example;
 using camopt::testing::ExpectStudyRejected;
@@ -477,5 +477,5 @@ TEST(CycloidOutputMechanismStudy, BadOutputMechanismIsRejectedWithThePathAndWhat
   ExpectStudyRejected(study, "three-discs", "/analysis", "a multiple of 3");
 }
 
-}  // namespace
+}  // namespace cycloid_output_mechanism_test
 }  // namespace camopt::cycloid

@@ -14,7 +14,7 @@
 #include "studies/cycloid_ratings.h"
 #include "tests/test_util.h"
 
-namespace {
+namespace cycloid_ratings_test {
 
 using camopt::kPi;
 namespace t = camopt::testing;
@@ -274,4 +274,4 @@ TEST(CycloidRatings, AllowableOutputSpeedPutsTheOilAtItsLimit) {
             std::string::npos);
 }
 
-}  // namespace
+}  // namespace cycloid_ratings_test

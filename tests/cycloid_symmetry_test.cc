@@ -13,7 +13,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_symmetry_test {
 
 constexpr double kTorque = 350.0e3;  // N·mm, the reference drive's torque
 constexpr int kRollers = 16;
@@ -225,5 +225,5 @@ TEST(CycloidSymmetry, CycleDerivativesAtCopiesAreTheirSourcesRelabelled) {
   }
 }
 
-}  // namespace
+}  // namespace cycloid_symmetry_test
 }  // namespace camopt::cycloid

@@ -14,7 +14,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::cycloid {
-namespace {
+namespace cycloid_transmission_error_test {
 
 using camopt::testing::CycloidNnm;
 
@@ -350,5 +350,5 @@ TEST(CycloidTransmissionErrorStudy, RunsAndRefusesWhatItCannotModel) {
   ExpectStudyRejected(bad, "te-two-discs", "/discs", "one disc");
 }
 
-}  // namespace
+}  // namespace cycloid_transmission_error_test
 }  // namespace camopt::cycloid

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::objectives {
-namespace {
+namespace cycloid_tuning_test {
 
 // The problem's Jacobian rows (smooth stress, end distance per angle, LTE p-p) against central
 // differences of the evaluator's values; the solves are tight so that the differences resolve
@@ -349,5 +349,5 @@ TEST(CycloidTuningStudy, BadGeneralFormsAreInputErrors) {
   rejected(with(kJointStudy, "\"coefficient_mm\": [0, 0.02]", "\"effective_length_mm\": [10, 20]"));  // < B
 }
 
-}  // namespace
+}  // namespace cycloid_tuning_test
 }  // namespace camopt::objectives

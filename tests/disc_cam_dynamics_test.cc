@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::disc_cam {
-namespace {
+namespace disc_cam_dynamics_test {
 
 using nlohmann::json;
 using testing::DiscCamPaperExample;
@@ -290,5 +290,5 @@ TEST(DiscCamStudyDynamics, RefusalsNameWhatToAdd) {
   camopt::testing::ExpectStudyRejected(s, "disc-cam-speed", "/dynamics/speed_rpm", "missing");
 }
 
-}  // namespace
+}  // namespace disc_cam_dynamics_test
 }  // namespace camopt::disc_cam

@@ -10,7 +10,7 @@
 #include "model/disc_cam/flat_faced.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_flat_faced_test {
 
 constexpr double kPiHere = 3.14159265358979323846;
 constexpr double kDegHere = kPiHere / 180.0;
@@ -92,5 +92,5 @@ TEST(DiscCamFlatFaced, FaceWidthAndCusp) {
   EXPECT_NEAR(disc_cam::EvaluateFlatFaced(Program(), 5.0, 90 * kDegHere).radius_of_curvature, rho90, 1e-9);
 }
 
-}  // namespace
+}  // namespace disc_cam_flat_faced_test
 }  // namespace camopt

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_follower_types_test {
 
 using camopt::testing::Example;
 using nlohmann::json;
@@ -428,5 +428,5 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"roller_without_radius", kK, R"({"follower": {"type": "translating_roller"}})",
                 "/follower/roller_radius_mm", "missing required field"}));
 
-}  // namespace
+}  // namespace disc_cam_follower_types_test
 }  // namespace camopt

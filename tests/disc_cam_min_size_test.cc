@@ -19,7 +19,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_min_size_test {
 
 using nlohmann::json;
 namespace dcs = studies::disc_cam_min_size;
@@ -544,5 +544,5 @@ TEST(DiscCamMinSize, ByteIdenticalAndTheBestDesignRunsAsDiscCam) {
               30.0, 1e-3);
 }
 
-}  // namespace
+}  // namespace disc_cam_min_size_test
 }  // namespace camopt

@@ -21,7 +21,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_motion_test {
 
 using nlohmann::json;
 using namespace camopt::testing;
@@ -391,5 +391,5 @@ TEST(DiscCamMotion, BadInputExits2NamingThePath) {
   }
 }
 
-}  // namespace
+}  // namespace disc_cam_motion_test
 }  // namespace camopt

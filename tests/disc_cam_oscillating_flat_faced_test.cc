@@ -12,7 +12,7 @@
 #include "model/disc_cam/oscillating_flat_faced.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_oscillating_flat_faced_test {
 
 constexpr double kPiHere = 3.14159265358979323846;
 constexpr double kDegHere = kPiHere / 180.0;
@@ -156,5 +156,5 @@ TEST(DiscCamOscillatingFlatFaced, InfeasibleDesigns) {
   EXPECT_NE(disc_cam::CheckOscillatingFlatFaced(c, 360).find("as fast as the cam"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace disc_cam_oscillating_flat_faced_test
 }  // namespace camopt

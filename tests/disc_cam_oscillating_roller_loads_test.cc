@@ -25,7 +25,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_oscillating_roller_loads_test {
 
 using nlohmann::json;
 constexpr double kPiHere = 3.14159265358979323846;
@@ -351,5 +351,5 @@ TEST(DiscCamOscillatingRollerLoads, RefusalsAndTheKnifeEdge) {
   }
 }
 
-}  // namespace
+}  // namespace disc_cam_oscillating_roller_loads_test
 }  // namespace camopt

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace disc_cam_study_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
@@ -522,5 +522,5 @@ TEST(DiscCamStudy, JumpStudyAgainstAnIndependentIntegration) {
   EXPECT_EQ(fd["limits_ok"], false);
 }
 
-}  // namespace
+}  // namespace disc_cam_study_test
 }  // namespace camopt

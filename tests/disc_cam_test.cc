@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::disc_cam {
-namespace {
+namespace disc_cam_test {
 
 constexpr double kDeg = kPi / 180.0;
 using motion::MotionLaw;
@@ -402,5 +402,5 @@ TEST(DiscCamMechanicalError, RollerCentreDisplacementPerFollowerUnit) {
   EXPECT_EQ(RollerCentreMmPerFollowerUnit(DiscCamOscillatingExample()), 80.0);  // the arm length l
 }
 
-}  // namespace
+}  // namespace disc_cam_test
 }  // namespace camopt::disc_cam

@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace ehl_test {
 
 // ASTM D341 written as the chart reads it: Z = log10 log10(ν + 0.7) is a straight line in
 // log10 T_K through the two data-sheet points, so at t it is the linear interpolation (or
@@ -218,5 +218,5 @@ TEST(EhlFilm, GradientsMatchCentralDifferences) {
   testing::ExpectJacobianMatchesCentralDifferences<1>(g, {55.0});
 }
 
-}  // namespace
+}  // namespace ehl_test
 }  // namespace camopt

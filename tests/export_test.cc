@@ -20,7 +20,7 @@
 #include "studies/study.h"
 #include "tests/test_util.h"
 
-namespace {
+namespace export_test {
 
 namespace fs = std::filesystem;
 using camopt::testing::CliResult;
@@ -761,4 +761,4 @@ TEST(ExportCli, BadInputExitsTwoNamingThePath) {
   EXPECT_TRUE(fs::is_regular_file(dir / "result.json"));
 }
 
-}  // namespace
+}  // namespace export_test

@@ -10,7 +10,7 @@
 #include "tests/optim_reference_problems.h"
 
 namespace camopt {
-namespace {
+namespace first_order_test {
 
 using optimizers::CheckFirstOrder;
 using optimizers::FirstOrderCheck;
@@ -143,5 +143,5 @@ TEST(FirstOrder, AStopWithNothingOpposingTheGradientIsNotConverged) {
   EXPECT_DOUBLE_EQ(r.first_order_residual, 1.0);
 }
 
-}  // namespace
+}  // namespace first_order_test
 }  // namespace camopt

@@ -16,7 +16,7 @@
 #include "model/disc_cam/kinetostatics.h"
 
 namespace camopt::disc_cam {
-namespace {
+namespace follower_dynamics_test {
 
 constexpr double kDeg = kPi / 180.0;
 constexpr double kH = 20.0, kBeta = 120.0 * kDeg;  // 3-4-5 rise of 20 mm over 120°
@@ -174,5 +174,5 @@ TEST(FollowerDynamics, BadInputThrows) {
   EXPECT_THROW(SimulateFollower(in), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace follower_dynamics_test
 }  // namespace camopt::disc_cam

@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace fuzz_replay_test {
 
 std::vector<fs::path> CorpusFiles() {
   std::vector<fs::path> files;
@@ -22,8 +22,6 @@ std::vector<fs::path> CorpusFiles() {
   std::sort(files.begin(), files.end());
   return files;
 }
-
-}  // namespace
 
 TEST(FuzzCorpus, EveryInputRunsOrIsRefusedWithAStudyError) {
   const auto files = CorpusFiles();
@@ -45,3 +43,5 @@ TEST(FuzzCorpus, EveryInputRunsOrIsRefusedWithAStudyError) {
   // Some inputs pass the small caps and really run (not everything is refused up front).
   EXPECT_GT(accepted, 0);
 }
+
+}  // namespace fuzz_replay_test

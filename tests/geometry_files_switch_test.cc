@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace geometry_files_switch_test {
 
 using camopt::testing::Example;
 using nlohmann::json;
@@ -134,5 +134,5 @@ TEST(GeometryFilesSwitch, BadValueIsAnInputError) {
   }
 }
 
-}  // namespace
+}  // namespace geometry_files_switch_test
 }  // namespace camopt

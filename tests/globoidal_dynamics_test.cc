@@ -13,7 +13,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::globoidal {
-namespace {
+namespace globoidal_dynamics_test {
 
 constexpr double kDeg = kPi / 180.0;
 
@@ -345,5 +345,5 @@ TEST(GloboidalDynamics, BadInputThrows) {
   EXPECT_THROW(SimulateDynamics(in), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace globoidal_dynamics_test
 }  // namespace camopt::globoidal

@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::globoidal {
-namespace {
+namespace globoidal_geometry_test {
 
 constexpr double kDeg = kPi / 180.0;
 
@@ -432,5 +432,5 @@ TEST(GloboidalCheckDesign, SurveyFindsTheClosedFormPressureAngle) {
   }
 }
 
-}  // namespace
+}  // namespace globoidal_geometry_test
 }  // namespace camopt::globoidal

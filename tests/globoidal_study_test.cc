@@ -16,7 +16,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace globoidal_study_test {
 
 using camopt::testing::ReadCsv;
 using camopt::testing::ReadFile;
@@ -354,5 +354,5 @@ INSTANTIATE_TEST_SUITE_P(
             {"law": "dwell", "cam_angle_deg": 119.5}, {"law": "modified_sine", "rise_deg": -20, "cam_angle_deg": 135},
             {"law": "dwell", "cam_angle_deg": 105}]})", "/motion", "pressure angle"}));
 
-}  // namespace
+}  // namespace globoidal_study_test
 }  // namespace camopt

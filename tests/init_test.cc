@@ -17,7 +17,7 @@
 #include "tests/verdict_check.h"
 
 namespace camopt {
-namespace {
+namespace init_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
@@ -91,5 +91,5 @@ TEST(Init, UnknownKindAndAnExistingFileAreRefusedWithExit2) {
   EXPECT_NE(res.stderr_text.find("did you mean \"init\""), std::string::npos) << res.stderr_text;
 }
 
-}  // namespace
+}  // namespace init_test
 }  // namespace camopt

@@ -12,7 +12,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace layers_test {
 
 namespace fs = std::filesystem;
 using camopt::testing::ReadFile;
@@ -79,5 +79,5 @@ TEST(Layers, SizingDriversSitAboveObjectivesAndOptimizers) {
   EXPECT_NE(c.output.find("optimizers/down.cc includes sizing/cycloid_min_size.h"), std::string::npos) << c.output;
 }
 
-}  // namespace
+}  // namespace layers_test
 }  // namespace camopt

@@ -12,7 +12,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lazy_stages_test {
 
 using nlohmann::json;
 using testing::Example;
@@ -131,5 +131,5 @@ TEST(LazyStages, CycloidLooseToleranceWarns) {
   EXPECT_NE(warnings(0.5).find("analysis.tolerance 0.5 is looser"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace lazy_stages_test
 }  // namespace camopt

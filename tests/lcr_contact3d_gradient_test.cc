@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_contact3d_gradient_test {
 
 TEST(LcrContact3D, RadiusPeakAndPressureAlongTheRollerGradientsMatchCentralDifferences) {
   // x = (e, r_r, crown parameter (f [µm] or R [100 mm]), γ [mrad], F), scaled so that the central-
@@ -45,5 +45,5 @@ TEST(LcrContact3D, RadiusPeakAndPressureAlongTheRollerGradientsMatchCentralDiffe
   }
 }
 
-}  // namespace
+}  // namespace lcr_contact3d_gradient_test
 }  // namespace camopt

@@ -25,7 +25,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_contact3d_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::SourcePath;
@@ -264,5 +264,5 @@ TEST(LcrContact3D, SlicesPeakGradientThroughTheReducerMatchesCentralDifferences)
   testing::ExpectJacobianMatchesCentralDifferences<5>(fn, {2.0, 6.0, 0.002, 0.5, 800.0}, 1e-5, 1e-6);
 }
 
-}  // namespace
+}  // namespace lcr_contact3d_test
 }  // namespace camopt

@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_contact_fatigue_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::SourcePath;
@@ -240,5 +240,5 @@ TEST(LcrContactFatigue, BadInputExitsTwoNamingThePath) {
   camopt::testing::ExpectStudyRejected(s, "life-limit-no-speed", "/limits/life_h", "needs one");
 }
 
-}  // namespace
+}  // namespace lcr_contact_fatigue_test
 }  // namespace camopt

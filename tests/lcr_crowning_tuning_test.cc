@@ -11,7 +11,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::objectives {
-namespace {
+namespace lcr_crowning_tuning_test {
 
 TEST(LcrCrowningTuning, LcrIIAt80NmUncrownedVersusTuned) {
   LcrCrowningTuningSpec spec;
@@ -63,5 +63,5 @@ TEST(LcrCrowningTuning, LcrIIAt80NmUncrownedVersusTuned) {
   }
 }
 
-}  // namespace
+}  // namespace lcr_crowning_tuning_test
 }  // namespace camopt::objectives

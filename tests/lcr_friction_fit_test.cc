@@ -14,7 +14,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_friction_fit_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
@@ -195,5 +195,5 @@ TEST(LcrFrictionFit, MisspeltNestedFieldIsRejected) {
                                        "unknown field");
 }
 
-}  // namespace
+}  // namespace lcr_friction_fit_test
 }  // namespace camopt

@@ -16,7 +16,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_life_test {
 
 using camopt::testing::ExpectStudyRejected;
 using camopt::testing::ReadFile;
@@ -244,5 +244,5 @@ TEST(LcrLife, BadInputExitsTwoNamingThePath) {
   ExpectStudyRejected(s, "life-kind", "/reducer/eccentric_bearing/kind", "ball, roller");
 }
 
-}  // namespace
+}  // namespace lcr_life_test
 }  // namespace camopt

@@ -14,7 +14,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::lcr {
-namespace {
+namespace lcr_lubrication_test {
 
 using testing::LcrII;
 using testing::Steel;
@@ -315,11 +315,11 @@ TEST(LcrLubrication, DerivativesMatchCentralDifferences) {
   }
 }
 
-}  // namespace
+}  // namespace lcr_lubrication_test
 }  // namespace camopt::lcr
 
 namespace camopt {
-namespace {
+namespace lcr_lubrication_test {
 
 using testing::ExpectStudyRejected;
 using testing::ReadFile;
@@ -525,5 +525,5 @@ TEST(LcrLubricationStudy, ABuiltInOilIsItsDataSheet) {
   EXPECT_NE(y.result.lubrication->oil.source.find("880 kg/m³ assumed"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace lcr_lubrication_test
 }  // namespace camopt

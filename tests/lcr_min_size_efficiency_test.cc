@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_min_size_efficiency_test {
 
 using camopt::testing::Example;
 using camopt::testing::ReadFile;
@@ -233,5 +233,5 @@ TEST(LcrMinSizeEfficiency, WhatTheObjectiveNeedsIsRefused) {
   camopt::testing::ExpectStudyRejected(s, "lcr-eff-3d", "/objective", "line contact model");
 }
 
-}  // namespace
+}  // namespace lcr_min_size_efficiency_test
 }  // namespace camopt

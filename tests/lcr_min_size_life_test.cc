@@ -19,7 +19,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_min_size_life_test {
 
 using camopt::testing::Example;
 using camopt::testing::ReadFile;
@@ -444,5 +444,5 @@ TEST(LcrMinSizeLife, AHardLifeLimitSkipsTheCombinationsOutOfReach) {
   EXPECT_EQ(out_of_reach, 3);
 }
 
-}  // namespace
+}  // namespace lcr_min_size_life_test
 }  // namespace camopt

@@ -15,7 +15,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_min_size_lubrication_test {
 
 using camopt::testing::Example;
 using camopt::testing::ReadFile;
@@ -175,5 +175,5 @@ TEST(LcrMinSizeLubrication, WhatTheLimitsNeedIsRefusedOrSaid) {
   camopt::testing::ExpectStudyRejected(s, "lcr-lub-none", "/limits/max_oil_temperature_C", "lubricant");
 }
 
-}  // namespace
+}  // namespace lcr_min_size_lubrication_test
 }  // namespace camopt

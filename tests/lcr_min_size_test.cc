@@ -21,7 +21,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_min_size_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
@@ -482,5 +482,5 @@ TEST(LcrMinSize, MisspeltNestedFieldIsRejected) {
                                        "unknown field");
 }
 
-}  // namespace
+}  // namespace lcr_min_size_test
 }  // namespace camopt

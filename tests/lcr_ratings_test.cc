@@ -10,7 +10,7 @@
 
 #include "tests/test_util.h"
 
-namespace {
+namespace lcr_ratings_test {
 
 namespace t = camopt::testing;
 
@@ -184,4 +184,4 @@ TEST(LcrRatings, EstimatedErrorsBoundTheConvergedRatings) {
   }
 }
 
-}  // namespace
+}  // namespace lcr_ratings_test

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_robust_test {
 
 using nlohmann::json;
 using objectives::LcrConstraintForm;
@@ -230,5 +230,5 @@ TEST(LcrRobust, BadRobustInputIsAClearErrorWithExitCode2) {
   camopt::testing::ExpectStudyRejected(study, "lcr-robust-k-worst", "/robust/k", "sigma");
 }
 
-}  // namespace
+}  // namespace lcr_robust_test
 }  // namespace camopt

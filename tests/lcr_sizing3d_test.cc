@@ -21,7 +21,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_sizing3d_test {
 
 using nlohmann::json;
 using objectives::LcrContactSample;
@@ -417,5 +417,5 @@ TEST(LcrSizing3D, BadInputIsExit2WithThePath) {
   ExpectStudyRejected(circ, "crown-circ", "/variables/crowning_coefficient_mm", "logarithmic");
 }
 
-}  // namespace
+}  // namespace lcr_sizing3d_test
 }  // namespace camopt

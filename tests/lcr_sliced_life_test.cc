@@ -13,7 +13,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_sliced_life_test {
 
 using camopt::testing::ReadFile;
 using camopt::testing::SourcePath;
@@ -117,5 +117,5 @@ TEST(LcrSlicedLife, TuningReportsTheTunedDesignsLives) {
   EXPECT_EQ(life["table"].size(), 6u);  // two rollers, each sliced at two misalignments
 }
 
-}  // namespace
+}  // namespace lcr_sliced_life_test
 }  // namespace camopt

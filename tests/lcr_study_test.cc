@@ -10,7 +10,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_study_test {
 
 namespace fs = std::filesystem;
 using camopt::testing::ReadFile;
@@ -156,5 +156,5 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"evaluate", "/analysis/evaluate", "[\"forcez\"]", "/analysis/evaluate/0: expected one of profile"}),
     [](const auto& p) { return p.param.name; });
 
-}  // namespace
+}  // namespace lcr_study_test
 }  // namespace camopt

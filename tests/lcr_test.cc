@@ -12,7 +12,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::lcr {
-namespace {
+namespace lcr_test {
 
 using camopt::testing::LcrI;
 using camopt::testing::LcrII;
@@ -414,5 +414,5 @@ TEST(LcrDesignChecks, RejectsImpossibleDesigns) {
   EXPECT_NE(loop[0].message.find("below 2.84615 mm"), std::string::npos) << loop[0].message;
 }
 
-}  // namespace
+}  // namespace lcr_test
 }  // namespace camopt::lcr

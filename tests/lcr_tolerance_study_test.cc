@@ -7,7 +7,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lcr_tolerance_study_test {
 
 using camopt::testing::Example;
 using camopt::testing::ExpectStudyRejected;
@@ -67,5 +67,5 @@ TEST(LcrLoadModel, BadInputIsRejected) {
   ExpectStudyRejected(j, "mc-alone", "/monte_carlo", "tolerances");
 }
 
-}  // namespace
+}  // namespace lcr_tolerance_study_test
 }  // namespace camopt

@@ -10,7 +10,7 @@
 #include "tests/reference_designs.h"
 
 namespace camopt::lcr {
-namespace {
+namespace lcr_tolerance_test {
 
 using camopt::testing::LcrII;
 using camopt::testing::Steel;
@@ -164,5 +164,5 @@ TEST(LcrTolerance, MonteCarloIsDeterministicPerSeed) {
   EXPECT_GT(a.lost_motion_arcmin, a.lost_motion_nominal_arcmin);  // clearance adds play
 }
 
-}  // namespace
+}  // namespace lcr_tolerance_test
 }  // namespace camopt::lcr

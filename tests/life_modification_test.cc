@@ -11,7 +11,7 @@
 #include "model/common/life_modification.h"
 
 namespace camopt {
-namespace {
+namespace life_modification_test {
 
 constexpr BearingKind kBall = BearingKind::kBall, kRoller = BearingKind::kRoller;
 
@@ -155,5 +155,5 @@ TEST(LifeModification, ReferenceViscosityBothBranches) {
   EXPECT_NEAR(ReferenceViscosity(1000.0, 25.0), 28.460498941515414, 1e-10);
 }
 
-}  // namespace
+}  // namespace life_modification_test
 }  // namespace camopt

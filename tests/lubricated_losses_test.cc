@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace lubricated_losses_test {
 
 using J1 = ceres::Jet<double, 1>;
 
@@ -190,5 +190,5 @@ TEST(OperatingTemperature, OneJetEvaluationAtTheSolvedPointGivesTheSameDerivativ
   EXPECT_EQ(jet_evaluations, 1);
 }
 
-}  // namespace
+}  // namespace lubricated_losses_test
 }  // namespace camopt

@@ -35,7 +35,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace measured_profile_test {
 
 namespace fs = std::filesystem;
 namespace ltca = studies::cycloid_ltca;
@@ -957,5 +957,5 @@ TEST(MeasuredProfile, CamInspectionPointsOnTheExactProfile) {
   }
 }
 
-}  // namespace
+}  // namespace measured_profile_test
 }  // namespace camopt

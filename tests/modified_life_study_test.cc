@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace modified_life_study_test {
 
 using camopt::testing::Example;
 using camopt::testing::ExpectStudyRejected;
@@ -199,5 +199,5 @@ TEST(ModifiedLifeStudy, CycloidRowsMatchTheHandCalculation) {
   ExpectStudyRejected(dry, "aiso-cycloid-dry", "/pins/fatigue_load_limit_N", "needs the oil");
 }
 
-}  // namespace
+}  // namespace modified_life_study_test
 }  // namespace camopt

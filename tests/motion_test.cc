@@ -12,7 +12,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::motion {
-namespace {
+namespace motion_test {
 
 const MotionLaw kRiseLaws[] = {MotionLaw::kCycloidal,         MotionLaw::kSimpleHarmonic,
                                MotionLaw::kModifiedSine,      MotionLaw::kModifiedTrapezoid,
@@ -441,5 +441,5 @@ TEST(MotionBSpline, InterpolationTangencyAndDerivatives) {
   EXPECT_NEAR(MotionSegmentShape(seg, 1.0 / 3.0 - 1e-9).j, MotionSegmentShape(seg, 1.0 / 3.0 + 1e-9).j, 1e-4);
 }
 
-}  // namespace
+}  // namespace motion_test
 }  // namespace camopt::motion

@@ -17,7 +17,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace objectives_test {
 
 using objectives::LcrConstraintForm;
 using objectives::LcrSizingSpec;
@@ -307,5 +307,5 @@ TEST(LcrSizing, LobeCombinationsOfRatioMinus90) {
   EXPECT_TRUE(objectives::LobeCombinations(7, 3, {1}).empty());
 }
 
-}  // namespace
+}  // namespace objectives_test
 }  // namespace camopt

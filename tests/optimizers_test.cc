@@ -16,7 +16,7 @@
 #include "tests/optim_reference_problems.h"
 
 namespace camopt {
-namespace {
+namespace optimizers_test {
 
 using optimizers::SolverOptions;
 using optimizers::SolverStatus;
@@ -311,5 +311,5 @@ TEST(CeresFit, RankDeficientFitHasNoCovariance) {
   EXPECT_TRUE(fit.covariance.empty());
 }
 
-}  // namespace
+}  // namespace optimizers_test
 }  // namespace camopt

@@ -20,7 +20,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace output_bearing_test {
 
 /// The hand values are printed to 10 significant digits: half a unit of the 10th digit is 5e-10
 /// relative; 1e-9 leaves room for the rounding of the printed value itself.
@@ -310,5 +310,5 @@ TEST(OutputBearing, RejectsBadInputNamingTheQuantity) {
   ExpectRejects([&] { CatalogueTiltingMomentNm(nan, 1.0, 1.0, 10.0, 10.0); }, "F_r_N");
 }
 
-}  // namespace
+}  // namespace output_bearing_test
 }  // namespace camopt

@@ -25,7 +25,7 @@
 #include "test_util.h"
 
 namespace camopt {
-namespace {
+namespace parts_test {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -404,5 +404,5 @@ TEST(CycloidGrinding, TheWheelsEnvelopeRegeneratesTheModifiedToothWithinTheState
   EXPECT_NE(r.stderr_text.find("/grinding/wheel_radius_mm"), std::string::npos) << r.stderr_text;
 }
 
-}  // namespace
+}  // namespace parts_test
 }  // namespace camopt

@@ -14,7 +14,7 @@
 #include "studies/provenance.h"
 #include "tests/test_util.h"
 
-namespace {
+namespace provenance_test {
 
 namespace fs = std::filesystem;
 using camopt::studies::PlausibilityWarnings;
@@ -240,4 +240,4 @@ TEST(Cli, SchemaAndKinds) {
   EXPECT_EQ(code, 2);
 }
 
-}  // namespace
+}  // namespace provenance_test

@@ -31,7 +31,7 @@
 
 extern char** environ;
 
-namespace {
+namespace reliability_test {
 
 namespace fs = std::filesystem;
 using camopt::testing::Example;
@@ -1029,4 +1029,4 @@ INSTANTIATE_TEST_SUITE_P(EveryExample, TwoRuns, ::testing::ValuesIn(ExampleNames
                            return n;
                          });
 
-}  // namespace
+}  // namespace reliability_test

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """report.html opens in headless Chromium: it renders and logs nothing on the console.
 
-Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR]
+Usage: report_render_test.py CAMOPT_BINARY SOURCE_DIR WORK_DIR [SCREENSHOT_DIR] [--shard I/N]
+
+With --shard I/N only the examples I, I + N, ... of the list below (ctest runs two shards, each in
+its own WORK_DIR: a Chromium profile folder is not shared).
 
 For each of the examples below (LCR analysis, LCR min-size, cycloid LTCA, LCR analysis with lives:
 its life table and life.svg, a drive train's rigidity, a disc-cam sizing, a disc cam, the cycloid's
@@ -215,11 +218,24 @@ def pixel_checks(png_path):
 
 
 def main():
-    if len(sys.argv) < 4:
+    args = sys.argv[1:]
+    shard, shards = 0, 1
+    if "--shard" in args:
+        k = args.index("--shard")
+        try:
+            shard, shards = (int(v) for v in args[k + 1].split("/"))
+        except (IndexError, ValueError):
+            shard, shards = -1, 0
+        if not 0 <= shard < shards:
+            print("--shard I/N with 0 <= I < N")
+            return 2
+        del args[k:k + 2]
+    if len(args) < 3:
         print(__doc__)
         return 2
-    camopt, source, work = sys.argv[1], sys.argv[2], os.path.abspath(sys.argv[3])
-    shots = sys.argv[4] if len(sys.argv) > 4 else None
+    camopt, source, work = args[0], args[1], os.path.abspath(args[2])
+    shots = args[3] if len(args) > 3 else None
+    examples = EXAMPLES[shard::shards]
     chromium = find_chromium()
     if not chromium:
         print("SKIPPED: no chromium on PATH (Debian package chromium; scripts/install_deps.sh installs it)")
@@ -231,7 +247,7 @@ def main():
         return 1
     os.makedirs(work, exist_ok=True)
     failures = []
-    for example, shot in EXAMPLES:
+    for example, shot in examples:
         print(example)
         out = os.path.join(work, example)
         if example.startswith("sweep:"):
@@ -293,7 +309,7 @@ def main():
         failures += ["%s: %s" % (example, e) for e in errors]
     for f in failures:
         print("FAILED: " + f)
-    print("%d reports checked, %d problems" % (len(EXAMPLES), len(failures)))
+    print("%d reports checked, %d problems" % (len(examples), len(failures)))
     return 1 if failures else 0
 
 

@@ -13,7 +13,7 @@
 #include "studies/writers.h"
 
 namespace camopt::studies {
-namespace {
+namespace report_test {
 
 int Count(const std::string& text, const std::string& what) {
   int n = 0;
@@ -346,5 +346,5 @@ TEST(HtmlReport, NoLifeNoLifePlot) {
   EXPECT_EQ(out.files().at("report.html").find("<h2>Lives</h2>"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace report_test
 }  // namespace camopt::studies

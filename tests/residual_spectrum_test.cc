@@ -25,7 +25,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::disc_cam {
-namespace {
+namespace residual_spectrum_test {
 
 using motion::MotionLaw;
 using motion::MotionSegment;
@@ -192,5 +192,5 @@ TEST(ResidualSpectrum, StudysPredictionEqualsItsSimulatedResidualVibration) {
   EXPECT_NEAR(rise["minima"][0]["tau"].get<double>(), 2.0, 1e-7);
 }
 
-}  // namespace
+}  // namespace residual_spectrum_test
 }  // namespace camopt::disc_cam

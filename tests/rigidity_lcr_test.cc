@@ -18,7 +18,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::rigidity {
-namespace {
+namespace rigidity_lcr_test {
 
 using camopt::testing::LcrII;
 using camopt::testing::LcrIII;
@@ -413,5 +413,5 @@ TEST(LcrStiffnessStudy, BadReducerIsAClearError) {
   EXPECT_NE(res.stderr_text.find("/chain/0/reducer/input/rollers"), std::string::npos) << res.stderr_text;
 }
 
-}  // namespace
+}  // namespace rigidity_lcr_test
 }  // namespace camopt::rigidity

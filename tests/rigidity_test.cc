@@ -16,7 +16,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::rigidity {
-namespace {
+namespace rigidity_test {
 
 constexpr double kG = 82500.0;   // MPa, the paper's steel
 constexpr double kE = 205000.0;  // MPa
@@ -477,5 +477,5 @@ TEST(RigidityStudy, MisspeltElementFieldIsRejected) {
   camopt::testing::ExpectStudyRejected(study, "rigidity-support", "/chain/1/to_bearing_1_mm", "unknown field");
 }
 
-}  // namespace
+}  // namespace rigidity_test
 }  // namespace camopt::rigidity

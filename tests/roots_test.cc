@@ -6,7 +6,7 @@
 #include "model/common/roots.h"
 
 namespace camopt {
-namespace {
+namespace roots_test {
 
 // max of sin on [0, 3]: x = π/2, f = 1 (closed form).
 TEST(Roots, GoldenSectionFindsTheMaximumOfSine) {
@@ -68,5 +68,5 @@ TEST(Roots, SafeguardedNewtonMatchesClosedForms) {
   EXPECT_NEAR(flat, 3.0, 1e-13);
 }
 
-}  // namespace
+}  // namespace roots_test
 }  // namespace camopt

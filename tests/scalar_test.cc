@@ -5,7 +5,7 @@
 #include "model/common/scalar.h"
 
 namespace camopt {
-namespace {
+namespace scalar_test {
 
 TEST(Scalar, IfThenElseComparesValues) {
   struct Case {
@@ -45,5 +45,5 @@ TEST(Scalar, IfThenElseKeepsTheChosenBranchsDerivative) {
   EXPECT_EQ(chosen.v[0], 2e8);
 }
 
-}  // namespace
+}  // namespace scalar_test
 }  // namespace camopt

@@ -31,7 +31,7 @@
 #include "test_util.h"
 
 namespace camopt {
-namespace {
+namespace schema_parser_agreement_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -891,5 +891,5 @@ TEST(SchemaParserAgreement, DeclaredKindsRefuseWhatTheSchemaRefusesWithExit2) {
   EXPECT_EQ(spawned, int(kDeclaredKinds.size()));
 }
 
-}  // namespace
+}  // namespace schema_parser_agreement_test
 }  // namespace camopt

@@ -37,7 +37,7 @@
 // name in Eigen's headers.
 #include <httplib.h>
 
-namespace {
+namespace serve_test {
 
 namespace fs = std::filesystem;
 using camopt::testing::ReadFile;
@@ -1615,4 +1615,4 @@ TEST(Serve, FilesAStudyNamesOutsideTheFolderAreRefusedWithoutRevealingThem) {
             std::string::npos);
 }
 
-}  // namespace
+}  // namespace serve_test

@@ -9,7 +9,7 @@
 #include "objectives/sizing_driver.h"
 
 namespace camopt::objectives {
-namespace {
+namespace sizing_driver_test {
 
 // Candidates with a size each (empty: infeasible) and whether their verification would hold.
 struct Fake {
@@ -201,5 +201,5 @@ TEST(SizingDriver, MissingHooksAreRefused) {
   EXPECT_THROW(RunSizingDriver(c), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace sizing_driver_test
 }  // namespace camopt::objectives

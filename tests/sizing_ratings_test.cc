@@ -10,7 +10,7 @@
 
 #include "tests/test_util.h"
 
-namespace {
+namespace sizing_ratings_test {
 
 namespace t = camopt::testing;
 
@@ -203,4 +203,4 @@ TEST(SizingRatings, ConflictsAndMissingBearingsExitTwoNamingTheBlock) {
   EXPECT_NE(r.stderr_text.find("/rollers"), std::string::npos) << r.stderr_text;
 }
 
-}  // namespace
+}  // namespace sizing_ratings_test

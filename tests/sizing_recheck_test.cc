@@ -19,7 +19,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace sizing_recheck_test {
 
 namespace fs = std::filesystem;
 using camopt::testing::ReadFile;
@@ -144,5 +144,5 @@ INSTANTIATE_TEST_SUITE_P(EveryExample, SizingExample, ::testing::ValuesIn(Sizing
                            return n;
                          });
 
-}  // namespace
+}  // namespace sizing_recheck_test
 }  // namespace camopt

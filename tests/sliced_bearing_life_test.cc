@@ -10,7 +10,7 @@
 #include "model/common/sliced_bearing_life.h"
 
 namespace camopt {
-namespace {
+namespace sliced_bearing_life_test {
 
 /// A few roundings of pow over the slices.
 constexpr double kRelTol = 1e-12;
@@ -91,5 +91,5 @@ TEST(SlicedLife, BadInputThrows) {
                std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace sliced_bearing_life_test
 }  // namespace camopt

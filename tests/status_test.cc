@@ -12,7 +12,7 @@
 #include "studies/status.h"
 #include "tests/test_util.h"
 
-namespace {
+namespace status_test {
 
 namespace fs = std::filesystem;
 namespace st = camopt::studies;
@@ -357,4 +357,4 @@ TEST(Status, AnAskedForBlockThatCannotBeComputedIsExit3WithTheReason) {
   EXPECT_TRUE(r.result["dynamics"]["speeds"].empty()) << r.result["dynamics"];
 }
 
-}  // namespace
+}  // namespace status_test

@@ -14,7 +14,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::contact {
-namespace {
+namespace subsurface_stress_test {
 
 /// The literature's values are printed to two or three digits: ±1% as the issue asks.
 constexpr double kLiteratureRelTol = 0.01;
@@ -400,5 +400,5 @@ TEST(ContactFatigueLife, LundbergPalmgrenGivesTheirLoadLifeExponents) {
   }
 }
 
-}  // namespace
+}  // namespace subsurface_stress_test
 }  // namespace camopt::contact

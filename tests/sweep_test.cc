@@ -30,7 +30,7 @@
 
 extern char** environ;
 
-namespace {
+namespace sweep_test {
 
 namespace fs = std::filesystem;
 namespace sw = camopt::studies::sweep;
@@ -725,4 +725,4 @@ TEST(SweepRun, ResumeAfterSigintFinishesWithTheTableOfAnUninterruptedRun) {
   EXPECT_NE(other.stderr_text.find("checkpoint of another sweep"), std::string::npos) << other.stderr_text;
 }
 
-}  // namespace
+}  // namespace sweep_test

@@ -11,7 +11,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::testing {
-namespace {
+namespace test_util_test {
 
 // y = (1e3 x0², 1e3 x0 x1 | 1e-3 x1³): two blocks of very different size.
 std::vector<double> F(const std::vector<double>& x) {
@@ -54,5 +54,5 @@ TEST(JacobianCheckHelper, BlockColumnScaleJudgesASmallBlockOnItsOwnScale) {
   EXPECT_NONFATAL_FAILURE(ExpectGivenJacobianMatchesCentralDifferences(F, x, F(x), jac, c), "AD");
 }
 
-}  // namespace
+}  // namespace test_util_test
 }  // namespace camopt::testing

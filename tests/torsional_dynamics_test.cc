@@ -20,7 +20,7 @@
 #include "tests/test_util.h"
 
 namespace camopt::torsion {
-namespace {
+namespace torsional_dynamics_test {
 
 using namespace camopt::testing;
 
@@ -415,5 +415,5 @@ TEST(TorsionalDynamics, SizingChecksTheOverloadLimitOnTheVerifiedDesign) {
   EXPECT_FALSE(r2["verified"].get<bool>());
 }
 
-}  // namespace
+}  // namespace torsional_dynamics_test
 }  // namespace camopt::torsion

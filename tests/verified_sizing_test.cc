@@ -19,7 +19,7 @@
 #include "tests/test_util.h"
 
 namespace camopt {
-namespace {
+namespace verified_sizing_test {
 
 using nlohmann::json;
 using camopt::testing::Example;
@@ -218,5 +218,5 @@ TEST(Verification, EverySizingAndTuningExampleIsVerified) {
   }
 }
 
-}  // namespace
+}  // namespace verified_sizing_test
 }  // namespace camopt
