@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/common/geometry.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/profile.h"
@@ -31,12 +32,6 @@ LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
   if (t.limits.life_h > 0) t.limits.life_h *= 1 + kLimitMargin;
   t.limits.max_outer_diameter_mm *= 1 - kLimitMargin;
   return t;
-}
-
-// Circular distance of two input angles modulo a load period.
-double PhaseDistance(double a, double b, double period) {
-  const double d = std::fmod(std::abs(a - b), period);
-  return std::min(d, period - d);
 }
 
 }  // namespace

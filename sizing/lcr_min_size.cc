@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "model/lcr/forces.h"
+#include "model/common/geometry.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/profile.h"
 
@@ -21,12 +22,6 @@ constexpr double kBindingFraction = 1e-3;
 // Relative move of a limit for its sensitivity (central difference).
 constexpr double kSensitivityStep = 5e-3;
 
-
-// Circular distance of two input angles modulo a load period.
-double PhaseDistance(double a, double b, double period) {
-  const double d = std::fmod(std::abs(a - b), period);
-  return std::min(d, period - d);
-}
 
 // Takes the fresh peaks of `from` into `to`: a fresh peak replaces an old one within its window
 // (the same physical peak, re-centred), others are added. Returns whether a peak was added or

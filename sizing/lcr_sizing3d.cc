@@ -6,6 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "model/common/geometry.h"
 #include "model/contact/hertz.h"
 #include "model/contact/roller_half_space.h"
 #include "model/lcr/contact3d_edge.h"
@@ -216,11 +217,6 @@ LcrSizingSpec Tightened(const LcrSizingSpec& spec) {
 double Interior(double value, const std::array<double, 2>& range) {
   const double pad = 0.01 * (range[1] - range[0]);
   return std::clamp(value, range[0] + pad, range[1] - pad);
-}
-
-double PhaseDistance(double a, double b, double period) {
-  const double d = std::fmod(std::abs(a - b), period);
-  return std::min(d, period - d);
 }
 
 void AddUnique(std::vector<LcrContactSample>& to, const LcrContactSample& c, bool& changed) {

@@ -2,6 +2,9 @@
 // u(a) = (cos a, sin a), J rotates by +90°, a × b = a_x b_y − a_y b_x.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Core>
 
 namespace camopt {
@@ -36,6 +39,12 @@ Vec2<T> Rotate(const Vec2<T>& v, const T& a) {
   using std::sin;
   const T c = cos(a), s = sin(a);
   return Vec2<T>(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
+/// Circular distance of two angles a, b [rad] modulo a period [rad]: in [0, period / 2].
+inline double PhaseDistance(double a, double b, double period) {
+  const double d = std::fmod(std::abs(a - b), period);
+  return std::min(d, period - d);
 }
 
 }  // namespace camopt
