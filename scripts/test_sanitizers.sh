@@ -3,7 +3,7 @@
 # option CAMOPT_SANITIZE) and runs it. Exits non-zero when a test fails or a sanitizer reports
 # (UBSan is built not to recover, ASan aborts on its first report). .ci/run calls it after the
 # README's test command. `bash scripts/test_sanitizers.sh --all` runs every test, long ones too;
-# `--list` prints the tests left out; `--build-only` builds and runs nothing.
+# `--list` prints the tests left out.
 #
 # Cost (2 cores, 2026-11-25, docs/reliability.md): the build at -O2 -g took 18 min and the whole
 # suite under the sanitizers 15 min here, and on CI more than the rest of the run together. So the
@@ -23,9 +23,6 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RE
   -DCAMOPT_SANITIZE=ON -DCAMOPT_BUILD_BENCH=OFF ${CXX_SAN:+-DCMAKE_CXX_COMPILER="$CXX_SAN"} >/dev/null
 # --list: what would run, from the build as it stands (nothing built or run)
 [[ "${1:-}" == "--list" ]] || cmake --build build-asan -j"$(nproc)"
-# --build-only: the sanitized build and nothing run (.ci/run starts it beside the README's test
-# command, at the lowest priority, and runs the suite after)
-[[ "${1:-}" != "--build-only" ]] || exit 0
 # Leak checking is off: the libraries (Ceres/glog, Ipopt) keep allocations to exit, and a CLI run
 # is one process. Container-overflow checks are off: Ceres and NLopt are not instrumented, and
 # vectors passed across that boundary give false reports.
