@@ -1,7 +1,7 @@
 // An extruded planar cam written without a CAD kernel: its STEP AP214 B-rep (the walls, the planes
 // at both ends and the bore's two half-cylinders; ISO 10303-42 entities in an ISO 10303-21 file) and
 // its closed triangle mesh for STL. A chain of up to 64 arcs and lines has a wall per arc (a
-// cylinder) or line (a plane), as the OCCT extrusion gave them (cad/solid.cc); a longer one a wall
+// cylinder) or line (a plane), as the OCCT extrusion gave them (cad/occt.cc); a longer one a wall
 // per run of 64, each the run as a rational quadratic B-spline surface (every arc one or more
 // segments of it, exactly: Piegl & Tiller, The NURBS Book, §7.3), a third of the text for the
 // cycloid disc's 690 arcs. Either way the faces are the chain's arcs and lines exactly. A long

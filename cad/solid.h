@@ -1,6 +1,6 @@
 // Solids and surfaces through OpenCASCADE (OCCT): STEP AP214 files and triangle meshes for STL.
-// Only this file includes OCCT headers, and it builds as its own library (camopt_cad_occt), so
-// the rest of camopt compiles without them.
+// No OCCT header is included here: the kernel's half (cad/occt.cc) is a module that cad/solid.cc
+// opens on first use, so the rest of camopt compiles, links and starts without OCCT.
 #pragma once
 
 #include <string>

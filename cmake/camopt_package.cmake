@@ -24,6 +24,9 @@ set_target_properties(camopt_lib PROPERTIES INSTALL_RPATH "$ORIGIN")
 set_target_properties(camopt PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
 
 install(TARGETS camopt RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The OpenCASCADE module beside the library (cad/solid.cc looks for it there, and in the library
+# folder seen from bin/).
+install(TARGETS camopt_occt LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS camopt_lib EXPORT camoptTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -50,11 +50,11 @@ execute_process(COMMAND ${CAMOPT_PYTHON} ${PROJECT_SOURCE_DIR}/python/make_wheel
 set(CAMOPT_WHEEL ${PROJECT_BINARY_DIR}/dist/camopt-${PROJECT_VERSION}-${CAMOPT_WHEEL_TAG}.whl)
 add_custom_command(OUTPUT ${CAMOPT_WHEEL}
   COMMAND ${CMAKE_COMMAND} -DMODULE=$<TARGET_FILE:camopt_python> -DSTUB=${PROJECT_SOURCE_DIR}/python/camopt.pyi
-          -DLIBRARY=$<TARGET_SONAME_FILE:camopt_lib> -DSTAGE=${PROJECT_BINARY_DIR}/wheel-stage
+          -DLIBRARY=$<TARGET_SONAME_FILE:camopt_lib> -DOCCT=$<TARGET_FILE:camopt_occt> -DSTAGE=${PROJECT_BINARY_DIR}/wheel-stage
           -P ${PROJECT_SOURCE_DIR}/cmake/camopt_wheel_stage.cmake
   COMMAND ${CAMOPT_PYTHON} ${PROJECT_SOURCE_DIR}/python/make_wheel.py --stage ${PROJECT_BINARY_DIR}/wheel-stage
           --version ${PROJECT_VERSION} --out ${CAMOPT_WHEEL}
-  DEPENDS camopt_python camopt_lib ${PROJECT_SOURCE_DIR}/python/camopt.pyi
+  DEPENDS camopt_python camopt_lib camopt_occt ${PROJECT_SOURCE_DIR}/python/camopt.pyi
           ${PROJECT_SOURCE_DIR}/python/make_wheel.py ${PROJECT_SOURCE_DIR}/cmake/camopt_wheel_stage.cmake
   COMMENT "Packing the Python module into ${CAMOPT_WHEEL}" VERBATIM)
 add_custom_target(wheel ALL DEPENDS ${CAMOPT_WHEEL})

@@ -8,7 +8,9 @@ Run by the build's `wheel` target (cmake/camopt_python.cmake), never by hand:
       cmake/camopt_wheel_stage.cmake) with camopt-V.dist-info/{METADATA,WHEEL,top_level.txt,RECORD}
 
 The module is the same top-level extension `camopt` as in build/python and in the .deb; the wheel
-adds nothing to it but the library it links (camopt.libs/libcamopt.so.N) and the metadata. The
+adds nothing to it but the library it links (camopt.libs/libcamopt.so.N), the OpenCASCADE module
+that library opens from its folder when a part needs the kernel (camopt.libs/libcamopt_occt.so,
+cad/solid.cc) and the metadata. The
 archive is reproducible: sorted entries, fixed timestamps (SOURCE_DATE_EPOCH if set).
 """
 import argparse

@@ -133,7 +133,7 @@ std::vector<std::pair<std::string, std::string>> OutputPlots(const Sweep& s, con
         // Along x, so that the line joins neighbouring levels of this input.
         std::vector<size_t> order(line.x.size());
         for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-        std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return line.x[a] < line.x[b]; });
+        std::sort(order.begin(), order.end(), [&x = line.x](size_t a, size_t b) { return x[a] < x[b]; });
         Series sorted{line.label, {}, {}};
         sorted.style = line.style;
         for (size_t k : order) sorted.x.push_back(line.x[k]), sorted.y.push_back(line.y[k]);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <sys/wait.h>
 #include <filesystem>
 #include <functional>
 #include <cstdint>
@@ -730,6 +731,38 @@ TEST(GeometryFiles, GloboidalSurfacesBinaryStlAndStep) {
   EXPECT_LT(out.files().at("working_surfaces.step").size(), 200000u);
   std::printf("globoidal: STEP surface area %.3f mm², grid triangles %.3f mm² (rel. diff %.2e)\n", back.area_mm2,
               mesh_area, back.area_mm2 / mesh_area - 1);
+}
+
+// The kernel's half is a module opened on first use (cad/solid.cc): the program does not load
+// OpenCASCADE's libraries to start, the build's program finds the module beside it and writes the
+// globoidal cam's B-spline surfaces, and a copy of the program without it fails with a message
+// that names the module and where it was looked for, writing no folder.
+TEST(GeometryFiles, OcctIsAModuleFoundBesideTheProgramAndNamedWhenMissing) {
+  const auto dir = camopt::testing::TempDir("occt-module");
+  const std::string ldd = dir.string() + "/ldd.txt";
+  ASSERT_EQ(std::system(("ldd " + std::string(CAMOPT_BINARY) + " > " + ldd).c_str()), 0);
+  const std::string libraries = ReadFile(ldd);
+  EXPECT_NE(libraries.find("libc.so"), std::string::npos) << libraries;
+  EXPECT_EQ(libraries.find("libTK"), std::string::npos) << libraries;
+
+  const std::string study = SourcePath("studies/examples/globoidal_cam_paper.json");
+  const camopt::testing::CliResult built =
+      camopt::testing::RunCamopt("run " + study + " --quiet --out " + (dir / "built").string());
+  ASSERT_EQ(built.exit_code, 0) << built.stderr_text;
+  EXPECT_GT(std::filesystem::file_size(dir / "built" / "working_surfaces.step"), 1000u);
+
+  const auto alone = dir / "alone";
+  std::filesystem::create_directories(alone);
+  std::filesystem::copy_file(CAMOPT_BINARY, alone / "camopt");
+  const std::string err = (dir / "alone.txt").string();
+  const int status = std::system(((alone / "camopt").string() + " run " + study + " --quiet --out " +
+                                  (alone / "out").string() + " 2> " + err).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_NE(WEXITSTATUS(status), 0);
+  const std::string message = ReadFile(err);
+  EXPECT_NE(message.find("libcamopt_occt.so"), std::string::npos) << message;
+  EXPECT_NE(message.find((alone / "libcamopt_occt.so").lexically_normal().string()), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(alone / "out"));
 }
 
 }  // namespace cad_test

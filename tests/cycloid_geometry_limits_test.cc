@@ -145,7 +145,7 @@ std::vector<std::pair<std::string, Drive>> SampledCases() {
 TEST(CycloidGeometryLimits, CentreCurveRadiusMatchesThreePointCircles) {
   for (const auto& [name, d] : SampledCases()) {
     const SampledExtreme s =
-        SampledMinConvexRadius(d, [&](double t) { return CentreCurvePoint(d, t); });
+        SampledMinConvexRadius(d, [&drive = d](double t) { return CentreCurvePoint(drive, t); });
     EXPECT_NEAR(MinConvexCentreRadius(d), s.min_convex_radius_mm, kThreePointTolMm) << name;
     std::printf("%-18s rho_min(X): closed form %.9f mm, 3-point %.9f mm, diff %.1e\n",
                 name.c_str(), MinConvexCentreRadius(d), s.min_convex_radius_mm,
@@ -167,7 +167,7 @@ TEST(CycloidGeometryLimits, ProfileRadiusMatchesThreePointCirclesOnToothProfileP
   for (const auto& [name, d] : SampledCases()) {
     if (MinConvexProfileRadius(d) <= 0.0) continue;  // undercut: the offset has a swallowtail
     const SampledExtreme s =
-        SampledMinConvexRadius(d, [&](double t) { return ToothProfile(d, t).point; });
+        SampledMinConvexRadius(d, [&drive = d](double t) { return ToothProfile(drive, t).point; });
     EXPECT_NEAR(MinConvexProfileRadius(d), s.min_convex_radius_mm, kThreePointTolMm) << name;
     std::printf("%-18s profile: closed form %.9f mm, 3-point %.9f mm, diff %.1e\n", name.c_str(),
                 MinConvexProfileRadius(d), s.min_convex_radius_mm,

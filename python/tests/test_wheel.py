@@ -105,6 +105,8 @@ class Wheel(unittest.TestCase):
         self.assertIn(ext, names)
         self.assertIn("camopt.pyi", names)
         self.assertTrue(any(n.startswith("camopt.libs/libcamopt.so.") for n in names), names)
+        # The OpenCASCADE module the library opens from its own folder (cad/solid.cc).
+        self.assertIn("camopt.libs/libcamopt_occt.so", names)
 
     def test_2_the_must_show_command_runs_from_the_venv_without_pythonpath(self):
         self.assertNotIn("PYTHONPATH", user_env())
