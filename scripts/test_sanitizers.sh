@@ -8,7 +8,8 @@
 # Cost (2 cores, 2026-11-25, docs/reliability.md): the build at -O2 -g took 18 min and the whole
 # suite under the sanitizers 15 min here, and on CI more than the rest of the run together. So the
 # build is -O1 with line tables only (-g1: reports still give file:line; GCC's variable tracking
-# off, executables not position-independent: CMakeLists.txt, CAMOPT_SANITIZE), and the run leaves out
+# off, executables not position-independent; the test files under ASan only: CMakeLists.txt,
+# CAMOPT_SANITIZE), and the run leaves out
 # the tests that repeat whole studies over and over: each example at every convergence setting,
 # the sizing examples run twice, sweeps run three or four times over, the readers in Python and
 # Chromium. Those
@@ -105,6 +106,10 @@ long_tests=(
   # the sweep files' fixed-seed mutation campaign (500 sweeps; the studies' campaign and the sweep
   # corpus replay stay)
   '^MutationFuzz\.SweepFilesFixedSeed'
+  # half of the studies' fixed-seed mutation campaign: shards 2 and 3 (45-50 s each sanitized,
+  # 2026-12-02, the longest sanitized tests after the examples' two runs); shards 0 and 1 and the
+  # corpus of past failures stay, and the Release suite runs all four shards
+  '^MutationFuzz\.FixedSeedShard[23]'
   # whole lubricated sizings (each example twice and at its coarse settings, and each binding
   # efficiency limit against the same sizing without it: 500 s of the sanitized suite's CPU, 2026-11-29;
   # the LCR efficiency objective's example against the same study minimising the outer diameter);
