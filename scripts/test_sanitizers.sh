@@ -9,8 +9,8 @@
 # suite under the sanitizers 15 min here, and on CI more than the rest of the run together. So the
 # build is -O1 with line tables only (-g1: reports still give file:line; GCC's variable tracking
 # off, executables not position-independent; the test files under ASan only: CMakeLists.txt,
-# CAMOPT_SANITIZE), and the run leaves out
-# the tests that repeat whole studies over and over: each example at every convergence setting,
+# CAMOPT_SANITIZE), and the run leaves out the tests that repeat whole studies over and over: each
+# example at every convergence setting,
 # the sizing examples run twice, sweeps run three or four times over, the readers in Python and
 # Chromium. Those
 # took 80% of the sanitized suite's time; the code they run is run under the sanitizers by the
