@@ -709,7 +709,7 @@ int main(int argc, char** argv) {
   rec["max_rss_mb"] = max_rss;
   rec["biggest_case"] = biggest_case;
   json big = json::array();
-  for (const auto& [mb, c] : biggest) big.push_back(json::object({{"peak_mb", mb}, {"case", c}}));
+  for (const auto& [mb, name] : biggest) big.push_back(json::object({{"peak_mb", mb}, {"case", name}}));
   rec["biggest_cases"] = big;
   rec["slowest_s"] = slowest;
   rec["slowest_case"] = slowest_case;

@@ -165,12 +165,12 @@ std::vector<std::pair<std::string, const nlohmann::json*>> LifeTables(const nloh
 }
 
 std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::string& title) {
-  struct Bar {
+  struct LifeBar {
     std::string label;
     double hours;  // NaN: no load (infinite life)
     bool fails;
   };
-  std::vector<Bar> bars;
+  std::vector<LifeBar> bars;
   double lo = INFINITY, hi = -INFINITY;
   for (const nlohmann::json& row : table) {
     if (!row.is_object()) continue;
@@ -207,7 +207,7 @@ std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::
                 left + plot_w / 2, bottom + 36);
   os << buf;
   for (size_t i = 0; i < bars.size(); ++i) {
-    const Bar& b = bars[i];
+    const LifeBar& b = bars[i];
     const double y = top + row_h * i;
     std::snprintf(buf, sizeof buf, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\">", left - 6, y + row_h * 0.65);
     os << buf << Html(b.label) << "</text>\n";
@@ -372,7 +372,7 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
 
   const HeadlineTable table = EvaluateHeadlines(kind, study, result);
   const std::vector<HeadlineRow>& rows = table.rows;
-  const int limits = table.limits, exceeded = int(table.exceeded.size());
+  const int limits = table.limits;
 
   std::vector<std::string> warnings;
   if (result.contains("warnings") && result["warnings"].is_array())

@@ -219,8 +219,9 @@ TEST(CycloidGeometryLimits, UndercutMarginAgreesWithCheckDrive) {
                 why.find("overlap") != std::string::npos)
         << why;
     // The sampled sharpest radius (the issue's limit on ρ') agrees with the closed form (C3)/(C4).
-    if (why.find("undercut") != std::string::npos)
+    if (why.find("undercut") != std::string::npos) {
       EXPECT_NEAR(issues.front().limit, MinConvexCentreRadius(d), 1e-3);
+    }
   }
 }
 

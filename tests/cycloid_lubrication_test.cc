@@ -44,7 +44,7 @@ TEST(CycloidLubrication, RingPinSpeedsAreThoseOfTheRigidBodies) {
         const Vec2<double> ring_on_disc = -DiscVelocity(d, crank, c);  // the ring's point C against the disc's
         // Conjugate (unmodified) tooth: no relative motion along the normal; the modified one's
         // contact is off the conjugate point by microns.
-        if (!modified) EXPECT_NEAR(ring_on_disc.dot(n), 0.0, 1e-9 * (1 + ring_on_disc.norm())) << i;
+        if (!modified) { EXPECT_NEAR(ring_on_disc.dot(n), 0.0, 1e-9 * (1 + ring_on_disc.norm())) << i; }
         const PinSpeeds<double> fixed = RingPinSpeeds(d, g, crank, false);
         EXPECT_NEAR(fixed.sliding, std::abs(ring_on_disc.dot(Perp(n))), 1e-9 * (1 + fixed.sliding)) << i;
         // The contact point's travel along the tooth (disc frame), by a central difference.

@@ -76,7 +76,7 @@ TEST(CycloidOutputMechanism, ZeroClearanceEqualStiffnessIsTheSineLawOfBearingLoa
     const int loaded = int(std::count_if(got.force_N.begin(), got.force_N.end(),
                                          [&](double q) { return q > 1e-6 * q_max; }));
     EXPECT_EQ(loaded, half) << crank;
-    if (crank != 0.0) EXPECT_EQ(half, 4) << "a rigid disc with equal pins loads half the pins";
+    if (crank != 0.0) { EXPECT_EQ(half, 4) << "a rigid disc with equal pins loads half the pins"; }
     EXPECT_NEAR(sum_sq, 2.0, 1e-12) << "Σ max(0, sin)² = N_w/4 for an even count";
     for (int j = 0; j < 8; ++j) {
       EXPECT_NEAR(got.force_N[size_t(j)], q_max * s[size_t(j)], 2e-6 * q_max) << crank << " pin " << j;
@@ -217,7 +217,7 @@ TEST(CycloidRigidBody, PublishedCaseLargestRingPinForceAndProfileRadius) {
       positive += Cross(U(crank), Vec2<double>((42.5 * U(2.0 * kPi * i / 18) - pitch).normalized())) > 1e-9;
     for (const auto& [i, f] : loads) significant += f > 1e-9 * torque;
     EXPECT_EQ(significant, positive) << k;
-    if (k % 200 != 0) EXPECT_EQ(positive, 9) << "half the 18 pins";
+    if (k % 200 != 0) { EXPECT_EQ(positive, 9) << "half the 18 pins"; }
     g_max = std::max(g_max, g.norm());
   }
   EXPECT_NEAR(f_max, 10.04, 0.005) << "published 10.04 N per N·m";
@@ -271,7 +271,6 @@ TEST(CycloidOutputMechanism, StressAndBearingLoadGradientsMatchCentralDifference
     m.face_width_mm = T(6.35);
     m.e_star_MPa = T(Material{}.composite_modulus_MPa());
     const T torque = x[3], e = x[4];
-    const T crank(0.21);
     const OutputPinLoads<T> p = SolveOutputPins(m, e, torque, T(-0.21 * 18.0 / 17.0));
     // Ring-pin resultant scaled with the torque (rigid law, linear in T).
     const Vec2<T> g(T(g0.x()) * torque / T(20e3), T(g0.y()) * torque / T(20e3));

@@ -254,8 +254,8 @@ TEST(LcrLubrication, OneAngleLossesAreTheFormulasAtEachTemperature) {
           << rotate << " " << t;
       EXPECT_NEAR(l.eccentric_bearing, eccentric, tol * eccentric) << rotate << " " << t;
       EXPECT_NEAR(l.min_film_mm, min_h, tol * min_h) << rotate << " " << t;
-      if (!rotate) EXPECT_GT(sliding, 0.0);
-      if (rotate) EXPECT_GT(bearings, 0.0);
+      if (!rotate) { EXPECT_GT(sliding, 0.0); }
+      if (rotate) { EXPECT_GT(bearings, 0.0); }
     }
   }
 }

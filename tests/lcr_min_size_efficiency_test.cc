@@ -150,7 +150,7 @@ TEST(LcrMinSizeEfficiency, TheExampleLosesLeastIsWhatLcrAnalysisReportsAndNoFeas
     result[k] = json::parse(ReadFile(dir / tag / "result.json"));
     EXPECT_EQ(result[k]["verified"], true) << tag;
     std::cout << tag << ": " << r.stderr_text;
-    if (k == 0) EXPECT_NE(r.stderr_text.find("minimised the lubricated loss"), std::string::npos) << r.stderr_text;
+    if (k == 0) { EXPECT_NE(r.stderr_text.find("minimised the lubricated loss"), std::string::npos) << r.stderr_text; }
   }
   EXPECT_EQ(result[0]["objective"], "efficiency");
   EXPECT_FALSE(result[1].contains("objective"));  // the default's result.json is as it was

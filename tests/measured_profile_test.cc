@@ -634,10 +634,10 @@ TEST(MeasuredProfile, LcrUniformOffsetIsTheToleranceModelsProfileOffset) {
       const double t = lcr::LoadedArmSign(r, lcr::Side::kOutput) * 80000.0;
       double expected = 0;
       for (double th : theta) {
-        const auto c = lcr::CompliantAtAngle<double>(r, mat, th, t, &dev);
+        const auto eq = lcr::CompliantAtAngle<double>(r, mat, th, t, &dev);
         const auto contacts = lcr::RollerContacts(r, lcr::Side::kOutput, th);
         for (size_t k = 0; k < contacts.size(); ++k) {
-          const double kap = contacts[k].curvature, f = c.force_output[k];
+          const double kap = contacts[k].curvature, f = eq.force_output[k];
           if (f > 0)
             expected = std::max(expected, std::sqrt(f * e_star * (1 / rr + kap / (1 - (rr - delta) * kap)) /
                                                     (kPi * r.output.contact_length())));

@@ -312,7 +312,7 @@ TEST(CycloidParts, ThreeDiscsMeshThePinsAtTheAssemblysCrankAngleAndWeighWhatThei
   for (auto it = parts.begin(); it != parts.end(); ++it) {
     const double v = it.value()["volume_mm3"], m = it.value()["mass_kg"];
     EXPECT_NEAR(m, v * 7850.0 * 1e-9, 1e-12 * m) << it.key();
-    if (it.key().rfind("disc_", 0) == 0) EXPECT_NEAR(v / disc_volume - 1, 0.0, 1e-6) << it.key();
+    if (it.key().rfind("disc_", 0) == 0) { EXPECT_NEAR(v / disc_volume - 1, 0.0, 1e-6) << it.key(); }
     ++rows;
   }
   EXPECT_EQ(parts["ring_pins"]["count"], n1);

@@ -95,14 +95,14 @@ void ExpectOneStatus(const CliRun& r, const std::string& status, int exit_code) 
   EXPECT_FALSE(verdict.empty()) << r.stdout_text;
   EXPECT_NE(r.report.find("<code>" + status + "</code>"), std::string::npos);
   const bool verified = status == "optimal_verified" || status == "feasible_verified";
-  if (r.result.contains("verified")) EXPECT_EQ(r.result["verified"], verified);
+  if (r.result.contains("verified")) { EXPECT_EQ(r.result["verified"], verified); }
   const bool met = status == "optimal_verified" || status == "feasible_verified" || status == "limits_met";
   // "met" only in a verdict whose status says so.
   EXPECT_EQ(verdict.find("met") != std::string::npos && verdict.find("exceeded") == std::string::npos &&
                 verdict.find("No design") == std::string::npos && verdict.rfind("Not ", 0) != 0,
             met)
       << verdict;
-  if (exit_code == 3) EXPECT_NE(r.stderr_text.find(status), std::string::npos) << r.stderr_text;
+  if (exit_code == 3) { EXPECT_NE(r.stderr_text.find(status), std::string::npos) << r.stderr_text; }
 }
 
 TEST(Status, AnAnalysisWithinAndOverItsLimits) {
@@ -175,8 +175,9 @@ TEST(Status, ACycloidSizingWithItsLimitsMovedAgreesWithItselfInEveryRun) {
       ++verified;
       EXPECT_EQ(r.exit_code, 0);
       EXPECT_NE(Verdict(r).find("verified by the accurate model"), std::string::npos) << Verdict(r);
-      if (*parsed == st::Status::kFeasibleVerified)
+      if (*parsed == st::Status::kFeasibleVerified) {
         EXPECT_NE(Verdict(r).find("not proven optimal"), std::string::npos) << Verdict(r);
+      }
       // best_cycloid_ltca.json keeps the limits the design was sized for that cycloid_ltca checks.
       const json best = json::parse(ReadFile(dir / m.tag / "best_cycloid_ltca.json"));
       EXPECT_EQ(best["limits"]["contact_stress_MPa"], study["limits"]["contact_stress_MPa"]);
@@ -304,7 +305,7 @@ TEST(Status, AnAskedForOutputMechanismIsAnsweredOrTheRunSaysWhy) {
     ASSERT_TRUE(parsed.has_value());
     ExpectOneStatus(r, st::StatusName(*parsed), st::ExitCode(*parsed, false));
     // Asked means answered: exit 0 only with the mechanism's outputs.
-    if (r.exit_code == 0) EXPECT_TRUE(r.result["eccentric_bearing_load_N"].is_number());
+    if (r.exit_code == 0) { EXPECT_TRUE(r.result["eccentric_bearing_load_N"].is_number()); }
   }
 }
 

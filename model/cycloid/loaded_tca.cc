@@ -1021,13 +1021,13 @@ std::vector<CycleDerivative> DifferentiateCycle(const LoadedTca& tca, const Cycl
     if (map) {
       d = by_angle[src];  // the same state relabelled: the same derivatives, pairs in this order
       for (LoadedTca::Derivative& x : d) {
-        std::vector<double> load(map->size()), peak(map->size());
+        std::vector<double> loads(map->size()), peaks(map->size());
         for (size_t i = 0; i < map->size(); ++i) {
-          load[i] = x.pair_load_N.at((*map)[i]);
-          peak[i] = x.pair_max_pressure_MPa.at((*map)[i]);
+          loads[i] = x.pair_load_N.at((*map)[i]);
+          peaks[i] = x.pair_max_pressure_MPa.at((*map)[i]);
         }
-        x.pair_load_N = std::move(load);
-        x.pair_max_pressure_MPa = std::move(peak);
+        x.pair_load_N = std::move(loads);
+        x.pair_max_pressure_MPa = std::move(peaks);
       }
     } else {
       d = tca.Differentiate(m, parameters);
