@@ -81,7 +81,8 @@ if(CAMOPT_BUILD_TESTS AND NOT CAMOPT_SANITIZE AND NOT CAMOPT_FUZZ)
   # one shard.
   set(shards
       "model_common_contact_motion=^model/(common|contact|motion)/"
-      "model_cycloid_disc_cam_globoidal_rigidity=^model/(cycloid|disc_cam|globoidal|rigidity)/"
+      "model_cycloid=^model/cycloid/"
+      "model_disc_cam_globoidal_rigidity=^model/(disc_cam|globoidal|rigidity)/"
       "model_lcr=^model/lcr/"
       "objectives_optimizers_sizing_cad=^(objectives|optimizers|sizing|cad)/"
       "studies_a_to_co=^studies/([ab]|c[a-o])"
@@ -90,7 +91,8 @@ if(CAMOPT_BUILD_TESTS AND NOT CAMOPT_SANITIZE AND NOT CAMOPT_FUZZ)
       "studies_d_to_k=^studies/[d-k]"
       "studies_lcr_a_to_h=^studies/lcr_[a-h]"
       "studies_lcr_i_to_z_lubrication=^studies/l(cr_[i-z]|u)"
-      "studies_m_to_z=^studies/[m-z]")
+      "studies_m_to_r=^studies/[m-r]"
+      "studies_s_to_z=^studies/[s-z]")
   set(regexes)
   foreach(shard ${shards})
     string(REGEX REPLACE "^[^=]*=" "" regex "${shard}")

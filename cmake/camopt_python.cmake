@@ -23,8 +23,14 @@ if(NOT pybind11_FOUND)
                       " or configure with -DCAMOPT_BUILD_PYTHON=OFF")
 endif()
 
-pybind11_add_module(camopt_python MODULE ${PROJECT_SOURCE_DIR}/python/camopt_module.cc
+# NO_EXTRAS: without pybind11's link-time optimisation (its default), which compiled the module's
+# code a second time at the link, serially ("using serial compilation of 9 LTRANS jobs"), for
+# bindings whose time is the engine's, not theirs; stripped as pybind11 would.
+pybind11_add_module(camopt_python MODULE NO_EXTRAS ${PROJECT_SOURCE_DIR}/python/camopt_module.cc
                     ${PROJECT_SOURCE_DIR}/python/camopt_models.cc)
+if(NOT CMAKE_BUILD_TYPE MATCHES "^(Debug|RelWithDebInfo)$")
+  pybind11_strip(camopt_python)
+endif()
 set_target_properties(camopt_python PROPERTIES OUTPUT_NAME camopt
                       LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/python)
 target_compile_options(camopt_python PRIVATE ${CAMOPT_WARNINGS})

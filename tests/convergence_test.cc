@@ -99,6 +99,10 @@ json Coarse(json s) {
                      {"absolute_tolerance", 1e-8}};
     s["export"] = {{"stl", false}, {"point_cloud", false}};
   }
+  // The tolerance analyses at 20 Monte-Carlo samples (200 and 300 in the examples): each knob's
+  // runs repeat the whole analysis, and every sample is a run of the exact model.
+  if ((kind == "cycloid_ltca" || kind == "lcr_analysis") && s.contains("monte_carlo"))
+    s["monte_carlo"]["samples"] = 20;
   if (kind == "transmission_rigidity")
     for (auto& e : s["chain"])
       if (e["element"] == "lobe_cam_reducer") e["angle_steps"] = 72;

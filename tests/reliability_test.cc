@@ -976,6 +976,14 @@ std::map<std::string, std::string> Folder(const fs::path& dir) {
 
 class TwoRuns : public ::testing::TestWithParam<std::string> {};
 
+// Under AddressSanitizer (CI's sanitized pass) the example runs once: what the sanitizers check is
+// the run; that a second run writes the same bytes is checked by the Release suite, where both run.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kRunsOfEachExample = 1;
+#else
+constexpr int kRunsOfEachExample = 2;
+#endif
+
 TEST_P(TwoRuns, GiveByteIdenticalFolders) {
   const std::string name = GetParam();
   const auto dir = TempDir("twice-" + name);
@@ -988,7 +996,7 @@ TEST_P(TwoRuns, GiveByteIdenticalFolders) {
   // a verified optimum (exit 3, outputs written): both runs must end the same way.
   const bool sizing_coarse = name.rfind("cycloid_min_size", 0) == 0;
   int expected = name == "lcr_min_size_straight3d.json" ? 3 : 0;
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < kRunsOfEachExample; ++k) {
     const auto out = dir / ("out" + std::to_string(k));
     const auto r = RunCamopt("run " + (dir / name).string() + " --quiet --out " + out.string());
     if (sizing_coarse && k == 0 && r.exit_code == 3) expected = 3;
@@ -1003,6 +1011,7 @@ TEST_P(TwoRuns, GiveByteIdenticalFolders) {
       ADD_FAILURE() << "asked for, exit 0 without it: " << m;
   // The verdict names every limit the kind considers that the example does not set.
   camopt::testing::ExpectVerdictNamesUnsetLimits(study["study"], study, result, runs[0]["report.html"]);
+  if (kRunsOfEachExample < 2) return;
   ASSERT_EQ(runs[0].size(), runs[1].size());
   for (const auto& [file, content] : runs[0]) {
     SCOPED_TRACE(file);
