@@ -688,13 +688,16 @@ PYBIND11_MODULE(camopt, m) {
   m.def("kinds", &camopt::studies::StudyKinds, "The study kinds this build knows.");
   m.def(
       "schema",
-      [](const std::string& kind) {
+      [](const std::string& kind, bool result) {
         try {
-          return py::module_::import("json").attr("loads")(camopt::studies::StudySchema(kind));
+          return py::module_::import("json").attr("loads")(result ? camopt::studies::StudyResultSchema(kind)
+                                                                  : camopt::studies::StudySchema(kind));
         } catch (const camopt::studies::StudyError& e) {
           RaiseStudyError(e, "");
         }
       },
-      py::arg("kind"), "The JSON Schema (draft 2020-12) of a study kind, as a dict.");
+      py::arg("kind"), py::arg("result") = false,
+      "The JSON Schema (draft 2020-12) of a study kind, as a dict; with result=True, of its result.json\n"
+      "(camopt.StudyError for a kind whose result is not declared yet).");
   camopt::python::AddModels(m);
 }

@@ -3,8 +3,9 @@
 
     scripts/update_schema_tables.py BUILD/camopt
 
-Each table that follows a line `<!-- camopt schema KIND --table -->` is replaced by what that
-command prints (the kinds declared once, studies/archive.h). The gtest
+Each table that follows a line `<!-- camopt schema KIND --table -->` (or `<!-- camopt schema KIND
+--result --table -->`, the keys of its result.json) is replaced by what that command prints (the
+kinds declared once, studies/archive.h). The gtest
 SchemaParserAgreement.DeclaredKindsFieldTablesInTheDocsAreTheEmittedOnes fails when a table is stale.
 """
 import pathlib
@@ -17,11 +18,11 @@ lines = docs.read_text().split("\n")
 out, i = [], 0
 while i < len(lines):
     out.append(lines[i])
-    m = re.fullmatch(r"<!-- camopt schema (\w+) --table -->", lines[i])
+    m = re.fullmatch(r"<!-- camopt schema (\w+)( --result)? --table -->", lines[i])
     i += 1
     if not m:
         continue
-    table = subprocess.run([sys.argv[1], "schema", m.group(1), "--table"], check=True,
+    table = subprocess.run([sys.argv[1], "schema", m.group(1)] + (["--result"] if m.group(2) else []) + ["--table"], check=True,
                            capture_output=True, text=True).stdout.rstrip("\n").split("\n")
     while i < len(lines) and lines[i].startswith("|"):
         i += 1  # the old table

@@ -132,30 +132,32 @@ std::string Accepts(const nlohmann::ordered_json& s) {
   return type;
 }
 
-void TableRows(const nlohmann::ordered_json& schema, const std::string& prefix, std::string& out) {
+void TableRows(const nlohmann::ordered_json& schema, const std::string& prefix, bool result, std::string& out) {
   if (!schema.contains("properties")) return;
   const nlohmann::ordered_json required = schema.value("required", nlohmann::ordered_json::array());
   for (auto it = schema["properties"].begin(); it != schema["properties"].end(); ++it) {
     const nlohmann::ordered_json& p = it.value();
     const std::string path = prefix + it.key();
     std::string accepts = Accepts(p);
-    if (std::find(required.begin(), required.end(), it.key()) != required.end()) accepts += ", required";
+    const bool always = std::find(required.begin(), required.end(), it.key()) != required.end();
+    if (result) accepts += always ? ", always" : ", not always";
+    else if (always) accepts += ", required";
     else if (p.contains("default")) accepts += ", optional (" + p["default"].dump() + ")";
     else if (!p.contains("const")) accepts += ", optional";
     std::string meaning = p.value("description", "");
     for (char& c : meaning)
       if (c == '|') c = '/';
     out += "| `" + path + "` | " + accepts + " | " + meaning + " |\n";
-    TableRows(p, path + ".", out);
-    if (p.contains("items")) TableRows(p["items"], path + "[i].", out);
+    TableRows(p, path + ".", result, out);
+    if (p.contains("items")) TableRows(p["items"], path + "[i].", result, out);
   }
 }
 
 }  // namespace
 
-std::string SchemaFieldTable(const nlohmann::ordered_json& schema) {
-  std::string out = "| field | accepts | meaning |\n|---|---|---|\n";
-  TableRows(schema, "", out);
+std::string SchemaFieldTable(const nlohmann::ordered_json& schema, bool result) {
+  std::string out = result ? "| key | value | meaning |\n|---|---|---|\n" : "| field | accepts | meaning |\n|---|---|---|\n";
+  TableRows(schema, "", result, out);
   return out;
 }
 
@@ -178,6 +180,37 @@ bool RegisterDeclaredKind(const std::string& kind, std::string (*emit_schema)(),
 DeclaredEcho FindDeclaredEcho(const std::string& kind) {
   const auto it = DeclaredRegistry().find(kind);
   return it == DeclaredRegistry().end() ? nullptr : it->second.echo;
+}
+
+namespace {
+
+std::map<std::string, std::string (*)()>& ResultRegistry() {
+  static std::map<std::string, std::string (*)()> registry;
+  return registry;
+}
+
+}  // namespace
+
+bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)()) {
+  ResultRegistry()[kind] = emit_schema;
+  return true;
+}
+
+const std::string* DeclaredResultSchema(const std::string& kind) {
+  static std::map<std::string, std::string> texts;  // emitted once per kind
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto it = ResultRegistry().find(kind);
+  if (it == ResultRegistry().end()) return nullptr;
+  auto [text, fresh] = texts.try_emplace(kind);
+  if (fresh) text->second = it->second();
+  return &text->second;
+}
+
+std::vector<std::string> KindsWithDeclaredResult() {
+  std::vector<std::string> kinds;
+  for (const auto& [kind, emit] : ResultRegistry()) kinds.push_back(kind);
+  return kinds;
 }
 
 const std::string* DeclaredSchema(const std::string& kind) {

@@ -37,6 +37,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -130,6 +131,10 @@ class Field {
   Field& Default(nlohmann::json value) { documented_default = std::move(value); return *this; }
   /// The schema of a field kept as raw JSON (nlohmann::json) and read by shared code.
   Field& Schema(nlohmann::ordered_json fragment) { schema = std::move(fragment); return *this; }
+  /// A result number that may be ±inf or NaN (a rigid element's compliance, an estimate not made):
+  /// null in result.json, `"type": ["number", "null"]` in the result's schema. Without it a
+  /// non-finite result number is an error naming its JSON path (ResultWriter).
+  Field& NullWhenNotFinite() { null_when_not_finite = true; return *this; }
 
   std::string desc, unit;
   bool required = false;
@@ -143,6 +148,7 @@ class Field {
   bool names_array = false;
   nlohmann::json documented_default;  ///< null: none
   nlohmann::ordered_json schema;      ///< null: none
+  bool null_when_not_finite = false;
 };
 
 namespace archive_detail {
@@ -153,6 +159,8 @@ template <typename T> struct IsVector : std::false_type {};
 template <typename T> struct IsVector<std::vector<T>> : std::true_type {};
 template <typename T> struct IsArray : std::false_type {};
 template <typename T, size_t N> struct IsArray<std::array<T, N>> : std::true_type {};
+template <typename T> struct IsStringMap : std::false_type {};
+template <typename T> struct IsStringMap<std::map<std::string, T>> : std::true_type {};
 
 /// Collects the names a declaration visits (the known fields of its object).
 class NameCollector {
@@ -400,6 +408,162 @@ nlohmann::ordered_json SchemaEmitter::WriteValue(const T& value) {
   }
 }
 
+/// Writes a declared result as result.json's JSON (the same `Serialize` that `camopt schema KIND
+/// --result` describes): every member, a std::optional one only when set, a std::map<std::string,
+/// T> as an object. A number that is NaN or infinite throws NonFiniteResult naming its JSON path,
+/// unless its field is NullWhenNotFinite (then null): no non-finite number reaches a result file.
+class ResultWriter {
+ public:
+  ResultWriter(nlohmann::ordered_json* object, std::string path) : object_(object), path_(std::move(path)) {}
+  template <typename T>
+  void Visit(const char* name, T* value, const Field& f) {
+    const std::string path = path_ + "/" + name;
+    if constexpr (archive_detail::IsOptional<T>::value) {
+      if (*value) (*object_)[name] = Value(**value, f, path);
+    } else {
+      (*object_)[name] = Value(*value, f, path);
+    }
+  }
+  void Retired(const char*, const char*) {}
+  void Alias(const char*, const char*) {}
+
+  /// The JSON of one value at `path` (a whole result: "").
+  template <typename T>
+  static nlohmann::ordered_json Value(const T& value, const Field& f, const std::string& path) {
+    if constexpr (archive_detail::Declared<T>) {
+      nlohmann::ordered_json o = nlohmann::ordered_json::object();
+      ResultWriter w(&o, path);
+      const_cast<T&>(value).Serialize(&w);  // Serialize is not const; the writer only reads
+      return o;
+    } else if constexpr (std::is_same_v<T, double>) {
+      if (std::isfinite(value)) return value;
+      if (f.null_when_not_finite) return nullptr;
+      throw NonFiniteResult(path.empty() ? "/" : path);
+    } else if constexpr (archive_detail::IsVector<T>::value || archive_detail::IsArray<T>::value) {
+      nlohmann::ordered_json a = nlohmann::ordered_json::array();
+      size_t i = 0;
+      for (const auto& x : value) a.push_back(Value(x, f, path + "/" + std::to_string(i++)));
+      return a;
+    } else if constexpr (archive_detail::IsStringMap<T>::value) {
+      nlohmann::ordered_json o = nlohmann::ordered_json::object();
+      for (const auto& [k, x] : value) o[k] = Value(x, f, path + "/" + k);
+      return o;
+    } else if constexpr (std::is_same_v<T, nlohmann::json>) {
+      return nlohmann::ordered_json(value);
+    } else {
+      static_assert(std::is_same_v<T, int> || std::is_same_v<T, bool> || std::is_same_v<T, std::string>,
+                    "a result member type the archives do not know");
+      return nlohmann::ordered_json(value);
+    }
+  }
+
+ private:
+  nlohmann::ordered_json* object_;
+  std::string path_;
+};
+
+/// Emits the JSON Schema of a declared result: a member not std::optional is always present
+/// (`required`), every object closed (`"additionalProperties": false`), each number's unit in its
+/// description.
+class ResultSchemaEmitter {
+ public:
+  explicit ResultSchemaEmitter(nlohmann::ordered_json* object) : object_(object) {}
+  template <typename T>
+  void Visit(const char* name, T* value, const Field& f) {
+    nlohmann::ordered_json s = nlohmann::ordered_json::object();
+    const std::string d = f.desc + (f.unit.empty() ? "" : (f.desc.empty() ? "[" : " [") + f.unit + "]");
+    if (!d.empty()) s["description"] = d;
+    if constexpr (archive_detail::IsOptional<T>::value) {
+      typename T::value_type v{};
+      Describe(&v, f, s);
+    } else {
+      Describe(value, f, s);
+      (*object_)["required"].push_back(name);
+    }
+    (*object_)["properties"][name] = std::move(s);
+  }
+  void Retired(const char*, const char*) {}
+  void Alias(const char*, const char*) {}
+
+  template <typename T>
+  static void Describe(T* value, const Field& f, nlohmann::ordered_json& s) {
+    if constexpr (archive_detail::Declared<T>) {
+      s["type"] = "object";
+      s["properties"] = nlohmann::ordered_json::object();
+      ResultSchemaEmitter inner(&s);
+      value->Serialize(&inner);
+      s["additionalProperties"] = false;
+    } else if constexpr (std::is_same_v<T, double>) {
+      if (f.null_when_not_finite) s["type"] = {"number", "null"};
+      else s["type"] = "number";
+    } else if constexpr (std::is_same_v<T, int>) {
+      s["type"] = "integer";
+    } else if constexpr (std::is_same_v<T, bool>) {
+      s["type"] = "boolean";
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      if (f.constant) s["const"] = *f.constant;
+      else if (!f.one_of.empty()) s["enum"] = f.one_of;
+      else s["type"] = "string";
+    } else if constexpr (std::is_same_v<T, nlohmann::json>) {
+      for (auto it = f.schema.begin(); it != f.schema.end(); ++it)
+        if (!s.contains(it.key())) s[it.key()] = it.value();
+    } else if constexpr (archive_detail::IsVector<T>::value || archive_detail::IsArray<T>::value) {
+      s["type"] = "array";
+      if constexpr (archive_detail::IsArray<T>::value) {
+        s["minItems"] = value->size();
+        s["maxItems"] = value->size();
+      }
+      typename T::value_type item{};
+      nlohmann::ordered_json is = nlohmann::ordered_json::object();
+      Describe(&item, f, is);
+      s["items"] = std::move(is);
+    } else if constexpr (archive_detail::IsStringMap<T>::value) {
+      s["type"] = "object";
+      typename T::mapped_type item{};
+      nlohmann::ordered_json is = nlohmann::ordered_json::object();
+      Describe(&item, f, is);
+      s["additionalProperties"] = std::move(is);
+    } else {
+      static_assert(sizeof(T) == 0, "a result member type the archives do not know");
+    }
+  }
+
+ private:
+  nlohmann::ordered_json* object_;
+};
+
+/// A declared result as result.json's JSON (ResultWriter; the keys sorted, as result.json has them).
+/// @throws NonFiniteResult naming the JSON path of a number that is not finite.
+template <typename T>
+nlohmann::json WriteResult(const T& result) {
+  return nlohmann::json(ResultWriter::Value(result, Field(), ""));
+}
+
+/// Adds the members every result.json gets from the run (RunStudy, studies/study.h: status,
+/// status_reason, camopt_version, study_sha256, warnings) to a result's schema.
+void AddRunStampToResultSchema(nlohmann::ordered_json& schema);
+
+/// The JSON Schema (draft 2020-12) of a kind's result.json, declared by T: `camopt schema KIND
+/// --result`.
+template <typename T>
+nlohmann::ordered_json EmitResultSchema(const std::string& kind, const std::string& title) {
+  nlohmann::ordered_json s = nlohmann::ordered_json::object();
+  s["$schema"] = "https://json-schema.org/draft/2020-12/schema";
+  s["$id"] = "https://camopt.invalid/schema/" + kind + ".result.schema.json";
+  s["title"] = title;
+  T value{};
+  ResultSchemaEmitter::Describe(&value, Field(), s);
+  AddRunStampToResultSchema(s);
+  return s;
+}
+
+/// Registers the result schema of a kind (CAMOPT_REGISTER_KIND does it); returns true.
+bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)());
+/// The result schema text of a kind whose result is declared, or nullptr.
+const std::string* DeclaredResultSchema(const std::string& kind);
+/// The kinds whose result is declared, sorted.
+std::vector<std::string> KindsWithDeclaredResult();
+
 /// Reads the declared struct T from `node`: unknown fields refused, each field checked, defaults
 /// for the absent ones. @throws StudyError (exit 2) with the file and JSON path.
 template <typename T>
@@ -429,8 +593,9 @@ nlohmann::ordered_json WriteJson(const T& value) {
 
 /// The fields of a schema as a Markdown table (`| field | accepts | meaning |`, one row a field, nested
 /// objects as `a.b`, array items as `a[i].b`), for the reference in docs/studies.md: `camopt schema
-/// KIND --table` prints it.
-std::string SchemaFieldTable(const nlohmann::ordered_json& schema);
+/// KIND --table` prints it. With `result`, of a result's schema (`camopt schema KIND --result
+/// --table`): `| key | value | meaning |`, each key there "always" or "not always" (its description says when).
+std::string SchemaFieldTable(const nlohmann::ordered_json& schema, bool result = false);
 
 /// The study as its declaration reads it, written back (WriteJson(Read(study))): every field with
 /// the value the kind uses, defaults filled in. @throws StudyError as Read.
@@ -458,3 +623,16 @@ DeclaredEcho FindDeclaredEcho(const std::string& kind);
             return ::camopt::studies::WriteJson(                                                 \
                 ::camopt::studies::Read<Type>(::camopt::studies::Node(&study, file, "")));       \
           })
+
+/// Registers the study kind `kind` declared by its input `InputType` and its result `ResultType`
+/// (both with a Serialize): `camopt schema KIND` prints the input's schema, `camopt schema KIND
+/// --result` the result's, and the kind writes result.json with WriteResult.
+#define CAMOPT_REGISTER_KIND(kind, InputType, ResultType, title)                                  \
+  CAMOPT_REGISTER_DECLARED_KIND(kind, InputType, title);                                        \
+  static const bool CAMOPT_ARCHIVE_CONCAT(camopt_declared_result_, __COUNTER__) =              \
+      ::camopt::studies::RegisterResultSchema(kind, [] {                                        \
+        return ::camopt::studies::EmitResultSchema<ResultType>(kind, std::string("result.json of the ") + \
+                                                                         title)                 \
+                   .dump(2) +                                                                   \
+               "\n";                                                                            \
+      })

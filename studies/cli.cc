@@ -278,6 +278,8 @@ int RunCommandLine(int argc, char** argv) {
   schema->add_option("kind", schema_kind, "Study kind (see `camopt kinds`)")->required();
   bool schema_table = false;
   schema->add_flag("--table", schema_table, "Print the fields as a Markdown table (docs/studies.md)");
+  bool schema_result = false;
+  schema->add_flag("--result", schema_result, "The schema of the kind's result.json instead of its study file");
   std::string init_kind, init_out;
   CLI::App* init = app.add_subcommand(
       "init", "Write a complete study of a kind to start from, every default spelled out (docs/studies.md)");
@@ -360,9 +362,10 @@ int RunCommandLine(int argc, char** argv) {
   }
   if (schema->parsed()) {
     try {
-      const std::string& text = camopt::studies::StudySchema(schema_kind);
+      const std::string& text = schema_result ? camopt::studies::StudyResultSchema(schema_kind)
+                                              : camopt::studies::StudySchema(schema_kind);
       if (schema_table)
-        std::cout << camopt::studies::SchemaFieldTable(nlohmann::ordered_json::parse(text));
+        std::cout << camopt::studies::SchemaFieldTable(nlohmann::ordered_json::parse(text), schema_result);
       else
         std::cout << text;
       return 0;

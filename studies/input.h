@@ -30,6 +30,14 @@ class StudyError : public std::runtime_error {
   std::string file_, path_, expected_, found_;
 };
 
+/// A result number that came out NaN or infinite. The inputs passed their checks, so it means
+/// the study's values are outside what the models can compute (a base radius of 1e308 mm, a
+/// roller of 1e-6 mm): RunStudy reports it as a StudyError (exit 2) naming the study file.
+class NonFiniteResult : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// A view of one JSON value in a study file, with its path for error messages.
 class Node {
  public:

@@ -11,4 +11,9 @@ namespace camopt::studies {
 /// (…), found KIND" for a kind without one.
 const std::string& StudySchema(const std::string& kind);
 
+/// The JSON Schema of KIND's result.json (`camopt schema KIND --result`), emitted from the
+/// declaration of its result (studies/archive.h). @throws StudyError for an unknown kind or a kind
+/// whose result is not declared yet, naming those that are.
+const std::string& StudyResultSchema(const std::string& kind);
+
 }  // namespace camopt::studies

@@ -628,6 +628,43 @@ const std::string& StudySchema(const std::string& kind) {
   throw StudyError("schema " + kind + ": expected a known study kind (" + known + "), found " + kind);
 }
 
+const std::string& StudyResultSchema(const std::string& kind) {
+  if (const std::string* declared = DeclaredResultSchema(kind)) return *declared;
+  std::string known;
+  for (const auto& k : KindsWithDeclaredResult()) known += (known.empty() ? "" : ", ") + k;
+  const std::vector<std::string> kinds = StudyKinds();
+  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+    throw StudyError("schema " + kind + " --result: expected a known study kind whose result is declared (" + known +
+                     "), found " + kind);
+  throw StudyError("schema " + kind + " --result: expected a kind whose result is declared (" + known + "), found " +
+                   kind + ", whose result.json is not declared yet (docs/studies.md lists its keys)");
+}
+
+void AddRunStampToResultSchema(nlohmann::ordered_json& schema) {
+  // What RunStudy adds to every kind's result.json (above): the one status and its reason, the
+  // version and the study's hash, the warnings.
+  nlohmann::ordered_json& p = schema["properties"];
+  nlohmann::ordered_json statuses = nlohmann::ordered_json::array();
+  for (Status st : {Status::kOptimalVerified, Status::kFeasibleVerified, Status::kInfeasible, Status::kNotVerifiable,
+                    Status::kNotConverged, Status::kLimitsMet, Status::kLimitsExceeded})
+    statuses.push_back(StatusName(st));
+  p["status"] = {{"description", "the answer's one status, from which the exit code, the verdict and `verified` follow (docs/studies.md)"},
+                 {"enum", statuses}};
+  p["status_reason"] = {{"description", "why the answer is not what was asked, or what a verified answer did not prove"},
+                        {"type", "string"}};
+  p["camopt_version"] = {{"description", "the camopt that wrote the result"}, {"type", "string"}};
+  p["study_sha256"] = {{"description", "SHA-256 of the study file as read"}, {"type", "string"}};
+  p["warnings"] = {{"description", "the run's warnings, also printed on stderr"},
+                   {"type", "array"}, {"items", {{"type", "string"}}}};
+  for (const char* always : {"status", "camopt_version", "study_sha256", "warnings"}) schema["required"].push_back(always);
+  // additionalProperties after the properties, for the reader
+  if (schema.contains("additionalProperties")) {
+    nlohmann::ordered_json closed = std::move(schema["additionalProperties"]);
+    schema.erase("additionalProperties");
+    schema["additionalProperties"] = std::move(closed);
+  }
+}
+
 double Finite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw NonFiniteResult(what);
   return value;

@@ -304,14 +304,6 @@ RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, cons
 /// studies/provenance.h, also printed on stderr unless ctx.quiet).
 Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx);
 
-/// A result number that came out NaN or infinite. The inputs passed their checks, so it means
-/// the study's values are outside what the models can compute (a base radius of 1e308 mm, a
-/// roller of 1e-6 mm): RunStudy reports it as a StudyError (exit 2) naming the study file.
-class NonFiniteResult : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 /// A json number that is never NaN or infinite: throws NonFiniteResult naming the field
 /// otherwise, so no non-finite number can reach a result file.
 double Finite(double value, const std::string& what);

@@ -211,8 +211,6 @@ ReducerResult RunReducer(const ReducerElement& x, bool quiet) {
   return res;
 }
 
-nlohmann::json FiniteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-
 // The paper's advice for the dominant element, by kind.
 std::string KindAdvice(const std::string& kind) {
   static const std::map<std::string, std::string> advice = {
@@ -229,6 +227,95 @@ std::string KindAdvice(const std::string& kind) {
   };
   auto it = advice.find(kind);
   return it == advice.end() ? "" : it->second;
+}
+
+// result.json's members (Result's Serialize) from the model's numbers, in the file's units.
+void FillResult(const Study& study, Result& res) {
+  const auto& r = res.chain;
+  res.name = study.name;
+  res.rigidity_Nm_per_rad = 1.0e-3 / r.compliance_b;
+  res.rigidity_at_end_b_Nm_per_rad = res.rigidity_Nm_per_rad;
+  res.rigidity_at_end_a_Nm_per_rad = 1.0e-3 / r.compliance_a;
+  res.total_ratio = r.total_ratio;
+  res.backlash_at_end_b_arcmin = r.backlash_b * kArcminPerRad;
+  res.backlash_at_end_a_arcmin = r.backlash_a * kArcminPerRad;
+  if (study.report_radius_mm) {
+    // Eq. 5 transposed: the linear stiffness at a radius of end B (e.g. at the follower roller).
+    res.report_radius_mm = study.report_radius_mm;
+    res.linear_stiffness_at_report_radius_N_per_mm =
+        rigidity::LinearStiffnessAtRadius(r.compliance_b, *study.report_radius_mm);
+  }
+  if (study.load_torque_Nm) {
+    res.load_torque_Nm = study.load_torque_Nm;
+    res.deflection_at_end_b_deg = 1000.0 * *study.load_torque_Nm * r.compliance_b * 180.0 / kPi;
+  }
+  // The verdict: each limit given beside its value (report.html and the summary read them).
+  if (const Input::Limits& l = study.limits; l.rigidity_Nm_per_rad || l.backlash_arcmin || l.deflection_deg) {
+    res.limits = l;
+    if (l.rigidity_Nm_per_rad) res.rigidity_ok = res.rigidity_at_end_b_Nm_per_rad >= *l.rigidity_Nm_per_rad;
+    if (l.backlash_arcmin) res.backlash_ok = res.backlash_at_end_b_arcmin <= *l.backlash_arcmin;
+    if (l.deflection_deg) res.deflection_ok = *res.deflection_at_end_b_deg <= *l.deflection_deg;
+    res.limits_ok = res.rigidity_ok.value_or(true) && res.backlash_ok.value_or(true) && res.deflection_ok.value_or(true);
+  }
+  for (size_t i = 0; i < res.elements.size(); ++i) {
+    const ElementResult& er = res.elements[i];
+    const ElementSpec& s = er.spec;
+    Result::ElementRow e;
+    e.index = static_cast<int>(i);
+    e.name = s.name;
+    e.element = s.kind_name;
+    e.rigidity_Nm_per_rad = 1.0e-3 / er.compliance_rad_per_Nmm;  // null: rigid
+    e.rigidity_at_end_b_Nm_per_rad = 1.0e-3 / r.compliance_at_b[i];
+    e.compliance_share = r.share[i];
+    // The paper's remark on the stepped shaft: the overall rigidity had this element been
+    // ignored (made rigid).
+    e.rigidity_if_rigid_Nm_per_rad = 1.0e-3 / r.compliance_b_if_rigid[i];
+    if (s.kind == ElementKind::kGearStage || s.kind == ElementKind::kFixed) e.ratio = s.params[0];
+    e.backlash_arcmin = s.backlash_rad * kArcminPerRad;
+    e.backlash_at_end_b_arcmin = r.backlash_at_b[i] * kArcminPerRad;
+    for (const auto& [n, v] : er.elasticity) e.rigidity_elasticity[n] = v;
+    if (er.reducer) {
+      const ReducerElement& in = *study.elements[i].reducer;
+      const ReducerResult& x = *er.reducer;
+      const auto& cycle = x.cycle;
+      Result::ReducerRow& j = e.reducer.emplace();
+      j.speed_reduction_ratio = x.speed_reduction_ratio;
+      j.output_torque_Nm = in.torque_Nmm / 1000.0;
+      j.direction = in.direction;
+      j.clearance_um = in.clearance_mm * 1000.0;
+      if (in.bearing_N_per_mm > 0) j.needle_bearing_radial_stiffness_N_per_mm = in.bearing_N_per_mm;
+      j.contact_law = "Palmgren line contact, delta = 3.84e-5 Q^0.9 / L^0.8 (steel), scaled by E*";
+      j.mean_secant_rigidity_Nm_per_rad = cycle.mean_secant_Nmm_per_rad / 1000.0;
+      j.mean_secant_rigidity_Nm_per_arcmin = cycle.mean_secant_Nmm_per_rad / 1000.0 / kArcminPerRad;
+      j.min_secant_rigidity_Nm_per_rad = cycle.min_secant_Nmm_per_rad / 1000.0;
+      j.max_secant_rigidity_Nm_per_rad = cycle.max_secant_Nmm_per_rad / 1000.0;
+      j.secant_ripple = cycle.ripple;
+      j.mean_tangent_rigidity_Nm_per_rad = cycle.mean_tangent_Nmm_per_rad / 1000.0;
+      j.min_tangent_rigidity_Nm_per_rad = cycle.min_tangent_Nmm_per_rad / 1000.0;
+      j.max_tangent_rigidity_Nm_per_rad = cycle.max_tangent_Nmm_per_rad / 1000.0;
+      j.reverse_mean_secant_rigidity_Nm_per_rad = x.reverse.mean_secant_Nmm_per_rad / 1000.0;
+      j.rigidity_at_input_Nm_per_rad = x.rigidity_at_input_Nm_per_rad;
+      j.mean_elastic_rotation_arcmin = in.torque_Nmm / cycle.mean_secant_Nmm_per_rad * kArcminPerRad;
+      j.lost_motion_arcmin_at_3pct_torque = x.lost_motion_rad * kArcminPerRad;
+      j.dead_band_arcmin = x.dead_band_rad * kArcminPerRad;
+      j.max_roller_force_input_N = HardMax(cycle.max_force_input_N);
+      j.max_roller_force_output_N = HardMax(cycle.max_force_output_N);
+    }
+    res.element_rows.push_back(std::move(e));
+  }
+  const int d = r.dominant;
+  const ElementSpec& ds = res.elements[d].spec;
+  res.dominant.index = d;
+  res.dominant.name = ds.name;
+  res.dominant.element = ds.kind_name;
+  res.dominant.compliance_share = r.share[d];
+  if (res.most_effective >= 0) {
+    const auto& [n, v] = res.elements[d].elasticity[res.most_effective];
+    res.dominant.most_effective_parameter = n;
+    res.dominant.most_effective_parameter_elasticity = v;
+  }
+  res.dominant.advice = res.advice;
+  res.notes = {"Advice: " + res.advice};  // report.html's notes
 }
 
 }  // namespace
@@ -322,131 +409,12 @@ Result Run(const Study& study, const RunContext& ctx) {
     res.advice += buf;
   }
   res.most_effective = best_q;
-  if (study.report_radius_mm)
-    res.linear_stiffness_at_report_radius_N_per_mm =
-        rigidity::LinearStiffnessAtRadius(r.compliance_b, *study.report_radius_mm);
-  if (study.load_torque_Nm) res.deflection_at_end_b_rad = 1000.0 * *study.load_torque_Nm * r.compliance_b;
+  FillResult(study, res);
   return res;
 }
 
-nlohmann::json ToJson(const Study& study, const Result& res) {
-  const auto& r = res.chain;
-  nlohmann::json result;
-  result["study"] = "transmission_rigidity";
-  result["name"] = study.name;
-  result["rigidity_Nm_per_rad"] = Finite(1.0e-3 / r.compliance_b, "rigidity");
-  result["rigidity_at_end_b_Nm_per_rad"] = 1.0e-3 / r.compliance_b;
-  result["rigidity_at_end_a_Nm_per_rad"] = Finite(1.0e-3 / r.compliance_a, "rigidity at end A");
-  result["total_ratio"] = r.total_ratio;
-  result["backlash_at_end_b_arcmin"] = r.backlash_b * kArcminPerRad;
-  result["backlash_at_end_a_arcmin"] = r.backlash_a * kArcminPerRad;
-  if (study.report_radius_mm) {
-    const double rr = *study.report_radius_mm;
-    // Eq. 5 transposed: the linear stiffness at a radius of end B (e.g. at the follower roller).
-    result["report_radius_mm"] = rr;
-    result["linear_stiffness_at_report_radius_N_per_mm"] = *res.linear_stiffness_at_report_radius_N_per_mm;
-  }
-  if (study.load_torque_Nm) {
-    const double t = *study.load_torque_Nm;
-    result["load_torque_Nm"] = t;
-    result["deflection_at_end_b_deg"] = *res.deflection_at_end_b_rad * 180.0 / kPi;
-  }
-
-  // The verdict: each limit given beside its value (report.html and the summary read them).
-  if (const Input::Limits& l = study.limits; l.rigidity_Nm_per_rad || l.backlash_arcmin || l.deflection_deg) {
-    nlohmann::json lim = nlohmann::json::object();
-    bool ok = true;
-    if (l.rigidity_Nm_per_rad) {
-      lim["rigidity_Nm_per_rad"] = *l.rigidity_Nm_per_rad;
-      result["rigidity_ok"] = result["rigidity_at_end_b_Nm_per_rad"].get<double>() >= *l.rigidity_Nm_per_rad;
-      ok = ok && result["rigidity_ok"].get<bool>();
-    }
-    if (l.backlash_arcmin) {
-      lim["backlash_arcmin"] = *l.backlash_arcmin;
-      result["backlash_ok"] = result["backlash_at_end_b_arcmin"].get<double>() <= *l.backlash_arcmin;
-      ok = ok && result["backlash_ok"].get<bool>();
-    }
-    if (l.deflection_deg) {
-      lim["deflection_deg"] = *l.deflection_deg;
-      result["deflection_ok"] = result["deflection_at_end_b_deg"].get<double>() <= *l.deflection_deg;
-      ok = ok && result["deflection_ok"].get<bool>();
-    }
-    result["limits"] = lim;
-    result["limits_ok"] = ok;
-  }
-
-  nlohmann::json elements = nlohmann::json::array();
-  for (size_t i = 0; i < res.elements.size(); ++i) {
-    const ElementResult& er = res.elements[i];
-    const ElementSpec& s = er.spec;
-    nlohmann::json e;
-    e["index"] = i;
-    e["name"] = s.name;
-    e["element"] = s.kind_name;
-    e["rigidity_Nm_per_rad"] = FiniteOrNull(1.0e-3 / er.compliance_rad_per_Nmm);  // null: rigid
-    e["rigidity_at_end_b_Nm_per_rad"] = FiniteOrNull(1.0e-3 / r.compliance_at_b[i]);
-    e["compliance_share"] = r.share[i];
-    // The paper's remark on the stepped shaft: the overall rigidity had this element been
-    // ignored (made rigid).
-    e["rigidity_if_rigid_Nm_per_rad"] = FiniteOrNull(1.0e-3 / r.compliance_b_if_rigid[i]);
-    if (s.kind == ElementKind::kGearStage || s.kind == ElementKind::kFixed) e["ratio"] = s.params[0];
-    e["backlash_arcmin"] = s.backlash_rad * kArcminPerRad;
-    e["backlash_at_end_b_arcmin"] = r.backlash_at_b[i] * kArcminPerRad;
-    nlohmann::json el = nlohmann::json::object();
-    for (const auto& [n, v] : er.elasticity) el[n] = v;
-    e["rigidity_elasticity"] = el;
-    if (er.reducer) {
-      const ReducerElement& in = *study.elements[i].reducer;
-      const ReducerResult& x = *er.reducer;
-      const auto& cycle = x.cycle;
-      nlohmann::json j;
-      j["speed_reduction_ratio"] = x.speed_reduction_ratio;
-      j["output_torque_Nm"] = in.torque_Nmm / 1000.0;
-      j["direction"] = in.direction;
-      j["clearance_um"] = in.clearance_mm * 1000.0;
-      if (in.bearing_N_per_mm > 0) j["needle_bearing_radial_stiffness_N_per_mm"] = in.bearing_N_per_mm;
-      j["contact_law"] = "Palmgren line contact, delta = 3.84e-5 Q^0.9 / L^0.8 (steel), scaled by E*";
-      j["mean_secant_rigidity_Nm_per_rad"] = cycle.mean_secant_Nmm_per_rad / 1000.0;
-      j["mean_secant_rigidity_Nm_per_arcmin"] = cycle.mean_secant_Nmm_per_rad / 1000.0 / kArcminPerRad;
-      j["min_secant_rigidity_Nm_per_rad"] = cycle.min_secant_Nmm_per_rad / 1000.0;
-      j["max_secant_rigidity_Nm_per_rad"] = cycle.max_secant_Nmm_per_rad / 1000.0;
-      j["secant_ripple"] = cycle.ripple;
-      j["mean_tangent_rigidity_Nm_per_rad"] = cycle.mean_tangent_Nmm_per_rad / 1000.0;
-      j["min_tangent_rigidity_Nm_per_rad"] = cycle.min_tangent_Nmm_per_rad / 1000.0;
-      j["max_tangent_rigidity_Nm_per_rad"] = cycle.max_tangent_Nmm_per_rad / 1000.0;
-      j["reverse_mean_secant_rigidity_Nm_per_rad"] = x.reverse.mean_secant_Nmm_per_rad / 1000.0;
-      j["rigidity_at_input_Nm_per_rad"] = x.rigidity_at_input_Nm_per_rad;
-      j["mean_elastic_rotation_arcmin"] = in.torque_Nmm / cycle.mean_secant_Nmm_per_rad * kArcminPerRad;
-      j["lost_motion_arcmin_at_3pct_torque"] = x.lost_motion_rad * kArcminPerRad;
-      j["dead_band_arcmin"] = x.dead_band_rad * kArcminPerRad;
-      j["max_roller_force_input_N"] = HardMax(cycle.max_force_input_N);
-      j["max_roller_force_output_N"] = HardMax(cycle.max_force_output_N);
-      e["reducer"] = j;
-    }
-    elements.push_back(e);
-  }
-  result["elements"] = elements;
-
-  const int d = r.dominant;
-  const ElementSpec& ds = res.elements[d].spec;
-  nlohmann::json dom;
-  dom["index"] = d;
-  dom["name"] = ds.name;
-  dom["element"] = ds.kind_name;
-  dom["compliance_share"] = r.share[d];
-  if (res.most_effective >= 0) {
-    const auto& [n, v] = res.elements[d].elasticity[res.most_effective];
-    dom["most_effective_parameter"] = n;
-    dom["most_effective_parameter_elasticity"] = v;
-  }
-  dom["advice"] = res.advice;
-  result["dominant"] = dom;
-  result["notes"].push_back("Advice: " + res.advice);  // report.html's notes
-  return result;
-}
-
 void Write(const Study& study, const Result& res, Outputs& out) {
-  out.AddJson("result.json", ToJson(study, res));
+  out.AddJson("result.json", WriteResult(res));
   const auto& r = res.chain;
   // CSV: one row per element; infinite rigidities (rigid elements) are written as "inf".
   Table table;
@@ -544,7 +512,7 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
 
-CAMOPT_REGISTER_DECLARED_KIND("transmission_rigidity", Input, "camopt study: torsional rigidity, backlash and deflection of a drive train from its elements");
+CAMOPT_REGISTER_KIND("transmission_rigidity", Input, Result, "camopt study: torsional rigidity, backlash and deflection of a drive train from its elements");
 
 // The work limit (studies/work_limits.h): one unit per closed-form element; a lobe cam reducer
 // solves its rollers' load sharing at every angle step in both load directions. The chain's length

@@ -226,10 +226,151 @@ struct ElementResult {
   std::optional<ReducerResult> reducer;
 };
 
+/// The run's answer: result.json as declared (its `Serialize`; `camopt schema
+/// transmission_rigidity --result` is emitted from it), then the model's numbers the CSV and SVG
+/// files are drawn from, which result.json does not hold.
 struct Result {
+  /// A lobe_cam_reducer element's own numbers (result.json's elements[i].reducer).
+  struct ReducerRow {
+    double speed_reduction_ratio = 0, output_torque_Nm = 0;
+    std::string direction;
+    double clearance_um = 0;
+    std::optional<double> needle_bearing_radial_stiffness_N_per_mm;
+    std::string contact_law;
+    double mean_secant_rigidity_Nm_per_rad = 0, mean_secant_rigidity_Nm_per_arcmin = 0;
+    double min_secant_rigidity_Nm_per_rad = 0, max_secant_rigidity_Nm_per_rad = 0, secant_ripple = 0;
+    double mean_tangent_rigidity_Nm_per_rad = 0, min_tangent_rigidity_Nm_per_rad = 0;
+    double max_tangent_rigidity_Nm_per_rad = 0, reverse_mean_secant_rigidity_Nm_per_rad = 0;
+    double rigidity_at_input_Nm_per_rad = 0, mean_elastic_rotation_arcmin = 0;
+    double lost_motion_arcmin_at_3pct_torque = 0, dead_band_arcmin = 0;
+    double max_roller_force_input_N = 0, max_roller_force_output_N = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("speed_reduction_ratio", &speed_reduction_ratio, Field().Desc("signed, as the LCR model defines it"));
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("the load of its stiffness cycle"));
+      a->Visit("direction", &direction, Field().OneOf({"forward", "reverse"}).Desc("the load's sense"));
+      a->Visit("clearance_um", &clearance_um, Field().Unit("µm").Desc("the rollers' clearance"));
+      a->Visit("needle_bearing_radial_stiffness_N_per_mm", &needle_bearing_radial_stiffness_N_per_mm,
+               Field().Unit("N/mm").Desc("each roller's bearing, when not rigid"));
+      a->Visit("contact_law", &contact_law, Field().Desc("the roller contacts' load-deflection law"));
+      a->Visit("mean_secant_rigidity_Nm_per_rad", &mean_secant_rigidity_Nm_per_rad,
+               Field().Unit("N·m/rad").Desc("torsional rigidity at the output, secant, mean over an input turn"));
+      a->Visit("mean_secant_rigidity_Nm_per_arcmin", &mean_secant_rigidity_Nm_per_arcmin,
+               Field().Unit("N·m/arcmin").Desc("the same per arcminute"));
+      a->Visit("min_secant_rigidity_Nm_per_rad", &min_secant_rigidity_Nm_per_rad, Field().Unit("N·m/rad"));
+      a->Visit("max_secant_rigidity_Nm_per_rad", &max_secant_rigidity_Nm_per_rad, Field().Unit("N·m/rad"));
+      a->Visit("secant_ripple", &secant_ripple, Field().Desc("(max − min) / mean of the secant rigidity"));
+      a->Visit("mean_tangent_rigidity_Nm_per_rad", &mean_tangent_rigidity_Nm_per_rad, Field().Unit("N·m/rad"));
+      a->Visit("min_tangent_rigidity_Nm_per_rad", &min_tangent_rigidity_Nm_per_rad, Field().Unit("N·m/rad"));
+      a->Visit("max_tangent_rigidity_Nm_per_rad", &max_tangent_rigidity_Nm_per_rad, Field().Unit("N·m/rad"));
+      a->Visit("reverse_mean_secant_rigidity_Nm_per_rad", &reverse_mean_secant_rigidity_Nm_per_rad,
+               Field().Unit("N·m/rad").Desc("the mean secant rigidity under the load in the other sense"));
+      a->Visit("rigidity_at_input_Nm_per_rad", &rigidity_at_input_Nm_per_rad,
+               Field().Unit("N·m/rad").Desc("its own rigidity seen from its input shaft"));
+      a->Visit("mean_elastic_rotation_arcmin", &mean_elastic_rotation_arcmin,
+               Field().Unit("arcmin").Desc("the output's rotation under the load at the mean secant rigidity"));
+      a->Visit("lost_motion_arcmin_at_3pct_torque", &lost_motion_arcmin_at_3pct_torque,
+               Field().Unit("arcmin").Desc("rotation between ±3 % of the load torque"));
+      a->Visit("dead_band_arcmin", &dead_band_arcmin, Field().Unit("arcmin").Desc("the clearance's free rotation"));
+      a->Visit("max_roller_force_input_N", &max_roller_force_input_N, Field().Unit("N"));
+      a->Visit("max_roller_force_output_N", &max_roller_force_output_N, Field().Unit("N"));
+    }
+  };
+  /// One element of the chain (result.json's elements[i]).
+  struct ElementRow {
+    int index = 0;
+    std::string name, element;
+    double rigidity_Nm_per_rad = 0, rigidity_at_end_b_Nm_per_rad = 0, compliance_share = 0;
+    double rigidity_if_rigid_Nm_per_rad = 0;
+    std::optional<double> ratio;
+    double backlash_arcmin = 0, backlash_at_end_b_arcmin = 0;
+    std::map<std::string, double> rigidity_elasticity;
+    std::optional<ReducerRow> reducer;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("index", &index, Field().Desc("its place in the chain, from end a"));
+      a->Visit("name", &name, Field().Desc("the study's name for it, or its kind and place"));
+      a->Visit("element", &element, Field().Desc("its kind"));
+      a->Visit("rigidity_Nm_per_rad", &rigidity_Nm_per_rad,
+               Field().NullWhenNotFinite().Unit("N·m/rad").Desc("its own torsional rigidity (null: rigid)"));
+      a->Visit("rigidity_at_end_b_Nm_per_rad", &rigidity_at_end_b_Nm_per_rad,
+               Field().NullWhenNotFinite().Unit("N·m/rad").Desc("the same seen at end b, through the ratios after it"));
+      a->Visit("compliance_share", &compliance_share, Field().Desc("its share of the chain's compliance at end b"));
+      a->Visit("rigidity_if_rigid_Nm_per_rad", &rigidity_if_rigid_Nm_per_rad,
+               Field().NullWhenNotFinite().Unit("N·m/rad").Desc("the chain's rigidity at end b had this element been rigid"));
+      a->Visit("ratio", &ratio, Field().Desc("gear_stage, lobe_cam_reducer: its speed ratio (other kinds: absent)"));
+      a->Visit("backlash_arcmin", &backlash_arcmin, Field().Unit("arcmin").Desc("its own backlash"));
+      a->Visit("backlash_at_end_b_arcmin", &backlash_at_end_b_arcmin,
+               Field().Unit("arcmin").Desc("the same seen at end b"));
+      a->Visit("rigidity_elasticity", &rigidity_elasticity,
+               Field().Desc("∂ln R/∂ln p of the chain's rigidity at end b for each of its named parameters p"));
+      a->Visit("reducer", &reducer, Field().Desc("lobe_cam_reducer: its stiffness cycle and lost motion"));
+    }
+  };
+  /// The element holding the largest share of the compliance, and the paper's advice on it.
+  struct Dominant {
+    int index = 0;
+    std::string name, element;
+    double compliance_share = 0;
+    std::optional<std::string> most_effective_parameter;
+    std::optional<double> most_effective_parameter_elasticity;
+    std::string advice;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("index", &index, Field().Desc("its place in the chain"));
+      a->Visit("name", &name, Field().Desc("its name"));
+      a->Visit("element", &element, Field().Desc("its kind"));
+      a->Visit("compliance_share", &compliance_share, Field().Desc("its share of the chain's compliance at end b"));
+      a->Visit("most_effective_parameter", &most_effective_parameter,
+               Field().Desc("its dimension with the largest |elasticity| (not a modulus or a ratio)"));
+      a->Visit("most_effective_parameter_elasticity", &most_effective_parameter_elasticity,
+               Field().Desc("that elasticity, % of the chain's rigidity per +1 %"));
+      a->Visit("advice", &advice, Field().Desc("which dimension to change, in words"));
+    }
+  };
+
+  std::string study = "transmission_rigidity", name;
+  double rigidity_Nm_per_rad = 0, rigidity_at_end_b_Nm_per_rad = 0, rigidity_at_end_a_Nm_per_rad = 0;
+  double total_ratio = 0, backlash_at_end_b_arcmin = 0, backlash_at_end_a_arcmin = 0;
+  std::optional<double> report_radius_mm, linear_stiffness_at_report_radius_N_per_mm;
+  std::optional<double> load_torque_Nm, deflection_at_end_b_deg;
+  std::optional<Input::Limits> limits;  ///< the study's limits, when it gives any
+  std::optional<bool> rigidity_ok, backlash_ok, deflection_ok, limits_ok;
+  std::vector<ElementRow> element_rows;  ///< result.json's "elements"
+  Dominant dominant;
+  std::vector<std::string> notes;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("transmission_rigidity"));
+    a->Visit("name", &name, Field().Desc("the transmission's name"));
+    a->Visit("rigidity_Nm_per_rad", &rigidity_Nm_per_rad,
+             Field().Unit("N·m/rad").Desc("the chain's torsional rigidity at end b (the load)"));
+    a->Visit("rigidity_at_end_b_Nm_per_rad", &rigidity_at_end_b_Nm_per_rad, Field().Unit("N·m/rad").Desc("the same"));
+    a->Visit("rigidity_at_end_a_Nm_per_rad", &rigidity_at_end_a_Nm_per_rad,
+             Field().Unit("N·m/rad").Desc("the chain's torsional rigidity at end a (the motor)"));
+    a->Visit("total_ratio", &total_ratio, Field().Desc("the speed ratio from end a to end b"));
+    a->Visit("backlash_at_end_b_arcmin", &backlash_at_end_b_arcmin,
+             Field().Unit("arcmin").Desc("the chain's backlash seen at end b"));
+    a->Visit("backlash_at_end_a_arcmin", &backlash_at_end_a_arcmin,
+             Field().Unit("arcmin").Desc("the chain's backlash seen at end a"));
+    a->Visit("report_radius_mm", &report_radius_mm,
+             Field().Unit("mm").Desc("the study's report radius at end b, when it gives one"));
+    a->Visit("linear_stiffness_at_report_radius_N_per_mm", &linear_stiffness_at_report_radius_N_per_mm,
+             Field().Unit("N/mm").Desc("the rigidity at end b as a linear stiffness at that radius"));
+    a->Visit("load_torque_Nm", &load_torque_Nm, Field().Unit("N·m").Desc("the study's torque at end b, when it gives one"));
+    a->Visit("deflection_at_end_b_deg", &deflection_at_end_b_deg, Field().Unit("deg").Desc("end b's deflection under it"));
+    a->Visit("limits", &limits, Field().Desc("the study's limits at end b, when it gives any"));
+    a->Visit("rigidity_ok", &rigidity_ok, Field().Desc("the rigidity at end b meets its limit (with that limit)"));
+    a->Visit("backlash_ok", &backlash_ok, Field().Desc("the backlash at end b meets its limit (with that limit)"));
+    a->Visit("deflection_ok", &deflection_ok, Field().Desc("the deflection at end b meets its limit (with that limit)"));
+    a->Visit("limits_ok", &limits_ok, Field().Desc("every limit given is met (with limits)"));
+    a->Visit("elements", &element_rows, Field().Desc("the chain's elements, from end a to end b"));
+    a->Visit("dominant", &dominant, Field().Desc("the most compliant element"));
+    a->Visit("notes", &notes, Field().Desc("remarks for the report"));
+  }
+
+  // Not in result.json: the model's numbers (model units) the files are drawn from.
   rigidity::ChainResult<double> chain;
-  std::optional<double> linear_stiffness_at_report_radius_N_per_mm;
-  std::optional<double> deflection_at_end_b_rad;  ///< under load_torque_Nm
   std::vector<ElementResult> elements;
   int most_effective = -1;  ///< index into the dominant element's elasticity, −1 for none
   std::string advice;
@@ -239,7 +380,6 @@ struct Result {
 Study Parse(const Node& root);
 /// @throws StudyError when a reducer cannot carry its load or every element is rigid.
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, elements.csv and, per reducer k, reducer_k_stiffness.csv/.svg and
 /// reducer_k_lost_motion.csv/.svg.
 void Write(const Study& study, const Result& result, Outputs& out);

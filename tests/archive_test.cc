@@ -1,9 +1,14 @@
 // The study declaration archives (studies/archive.h): the reader refuses what Node refuses with
 // Node's own messages, the schema emitter states the declared bounds, defaults and enums, and the
-// writer's output reads back to the same values.
+// writer's output reads back to the same values; a declared result is written whole with its
+// non-finite numbers refused by JSON path, and its schema says which members are always there.
 #include "studies/archive.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -199,6 +204,98 @@ TEST(Archive, WriterOutputReadsBackTheSame) {
   EXPECT_EQ(written["speeds_rpm"], json({1.0, 2.0}));
   const json again = json::parse(WriteJson(Read<Toy>(Node(&written, "t.json", ""))).dump());
   EXPECT_EQ(again, written);
+}
+
+
+// A declared result (ResultWriter, ResultSchemaEmitter).
+struct ToyResult {
+  struct Row {
+    double stiffness_N_per_mm = 0;
+    std::optional<double> margin;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("stiffness_N_per_mm", &stiffness_N_per_mm, Field().NullWhenNotFinite().Unit("N/mm"));
+      a->Visit("margin", &margin, Field().Desc("limit − value"));
+    }
+  };
+  std::string study = "toy";
+  double stress_MPa = 0;
+  int count = 0;
+  bool ok = false;
+  std::optional<double> deflection_deg;
+  std::vector<Row> rows;
+  std::map<std::string, double> elasticity;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("toy"));
+    a->Visit("stress_MPa", &stress_MPa, Field().Unit("MPa").Desc("the largest stress"));
+    a->Visit("count", &count, Field());
+    a->Visit("ok", &ok, Field());
+    a->Visit("deflection_deg", &deflection_deg, Field().Unit("deg"));
+    a->Visit("rows", &rows, Field());
+    a->Visit("elasticity", &elasticity, Field());
+  }
+};
+
+TEST(Archive, ResultWriterWritesEveryMemberAndRefusesNonFiniteNumbersByPath) {
+  ToyResult r;
+  r.stress_MPa = 1234.5;
+  r.count = 3;
+  r.rows = {{7.0, 0.5}, {std::numeric_limits<double>::infinity(), std::nullopt}};
+  r.elasticity = {{"width_mm", 1.5}, {"diameter_mm", -0.25}};
+  const json j = WriteResult(r);
+  EXPECT_EQ(j["stress_MPa"], 1234.5);
+  EXPECT_EQ(j["count"], 3);
+  EXPECT_EQ(j["ok"], false);
+  EXPECT_FALSE(j.contains("deflection_deg"));  // an unset optional is absent
+  EXPECT_EQ(j["rows"][0]["margin"], 0.5);
+  EXPECT_TRUE(j["rows"][1]["stiffness_N_per_mm"].is_null());  // NullWhenNotFinite
+  EXPECT_FALSE(j["rows"][1].contains("margin"));
+  EXPECT_EQ(j["elasticity"], json({{"diameter_mm", -0.25}, {"width_mm", 1.5}}));
+  // Keys sorted, as result.json has them.
+  EXPECT_EQ(j.dump().rfind("{\"count\":3,\"elasticity\":{\"diameter_mm\"", 0), 0u);
+  const auto path_of = [](ToyResult x) -> std::string {
+    try {
+      (void)WriteResult(x);
+    } catch (const NonFiniteResult& e) {
+      return e.what();
+    }
+    return "";
+  };
+  ToyResult bad = r;
+  bad.stress_MPa = std::nan("");
+  EXPECT_EQ(path_of(bad), "/stress_MPa");
+  bad = r;
+  bad.rows[0].margin = -std::numeric_limits<double>::infinity();
+  EXPECT_EQ(path_of(bad), "/rows/0/margin");
+  bad = r;
+  bad.elasticity["width_mm"] = std::nan("");
+  EXPECT_EQ(path_of(bad), "/elasticity/width_mm");
+  bad = r;
+  bad.deflection_deg = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(path_of(bad), "/deflection_deg");
+}
+
+TEST(Archive, ResultSchemaSaysWhatIsAlwaysThereAndWhatMayBeNull) {
+  const nlohmann::ordered_json s = EmitResultSchema<ToyResult>("toy", "toy result");
+  EXPECT_EQ(s["$id"], "https://camopt.invalid/schema/toy.result.schema.json");
+  EXPECT_EQ(s["additionalProperties"], false);
+  const auto& p = s["properties"];
+  EXPECT_EQ(p["stress_MPa"]["type"], "number");
+  EXPECT_EQ(p["stress_MPa"]["description"], "the largest stress [MPa]");
+  EXPECT_EQ(p["count"]["type"], "integer");
+  EXPECT_EQ(p["study"]["const"], "toy");
+  EXPECT_EQ(p["rows"]["items"]["properties"]["stiffness_N_per_mm"]["type"], nlohmann::ordered_json({"number", "null"}));
+  EXPECT_EQ(p["rows"]["items"]["required"], nlohmann::ordered_json({"stiffness_N_per_mm"}));
+  EXPECT_EQ(p["elasticity"]["additionalProperties"]["type"], "number");
+  // Required: the members that are not std::optional, then the run's stamp (RunStudy).
+  const std::vector<std::string> required = s["required"];
+  for (const char* always : {"study", "stress_MPa", "count", "ok", "rows", "elasticity", "status", "camopt_version",
+                             "study_sha256", "warnings"})
+    EXPECT_NE(std::find(required.begin(), required.end(), always), required.end()) << always;
+  EXPECT_EQ(std::find(required.begin(), required.end(), "deflection_deg"), required.end());
+  EXPECT_EQ(std::find(required.begin(), required.end(), "status_reason"), required.end());
+  EXPECT_TRUE(p["status"]["enum"].size() == 7);
 }
 
 }  // namespace archive_test

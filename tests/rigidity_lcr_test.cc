@@ -347,7 +347,7 @@ ExampleRun RunExample(const std::string& file) {
   studies::RunContext ctx;
   ctx.quiet = true;
   const tr::Result r = tr::Run(s, ctx);
-  return {r, tr::ToJson(s, r)};
+  return {r, studies::WriteResult(r)};
 }
 
 TEST(LcrStiffnessStudy, ReducerElementCarriesItsRatioAndStiffness) {

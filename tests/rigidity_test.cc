@@ -340,7 +340,7 @@ TEST(Rigidity, ReportRadiusAndReferredRigidityClosedForms) {
 // ---- The study: numbers through the C++ entry points, exit codes and files through the CLI ---------------------------------------------------------------
 
 TEST(RigidityStudy, ExamplesReportRigidityAndShares) {
-  // Through the C++ entry points (Parse, Run, ToJson).
+  // Through the C++ entry points (Parse, Run, WriteResult).
   namespace tr = studies::transmission_rigidity;
   for (const std::string name : {"stepped_shaft", "input_transmission", "output_transmission",
                                  "gearbox"}) {
@@ -350,7 +350,7 @@ TEST(RigidityStudy, ExamplesReportRigidityAndShares) {
     studies::RunContext ctx;
     ctx.quiet = true;
     const tr::Result r = tr::Run(s, ctx);
-    const nlohmann::json j = tr::ToJson(s, r);
+    const nlohmann::json j = studies::WriteResult(r);
     ASSERT_TRUE(j["rigidity_Nm_per_rad"].is_number());
     double sum = 0.0;
     for (const auto& e : j["elements"]) {
@@ -386,7 +386,7 @@ TEST(RigidityStudy, ExamplesRunThroughTheCli) {
     const nlohmann::json study = camopt::testing::Example("rigidity_" + name + ".json");
     const tr::Study s = tr::Parse(studies::Node(&study, name + ".json", ""));
     const nlohmann::json j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "result.json"));
-    EXPECT_EQ(camopt::testing::WithoutRunStamp(j), tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})));
+    EXPECT_EQ(camopt::testing::WithoutRunStamp(j), studies::WriteResult(tr::Run(s, studies::RunContext{"", true})));
     // elements.csv: a row per element of the study's chain; springs in series, so the element
     // rigidities referred to end B combine as 1/R = Σ 1/R_i to result.json's rigidity, and the
     // compliance shares sum to 1.
@@ -410,7 +410,7 @@ TEST(RigidityStudy, LimitsAtEndBGiveTheVerdict) {
   namespace tr = studies::transmission_rigidity;
   nlohmann::json study = camopt::testing::Example("rigidity_gearbox.json");
   tr::Study s = tr::Parse(studies::Node(&study, "gearbox.json", ""));
-  nlohmann::json j = tr::ToJson(s, tr::Run(s, studies::RunContext{"", true}));
+  nlohmann::json j = studies::WriteResult(tr::Run(s, studies::RunContext{"", true}));
   EXPECT_NEAR(j["backlash_at_end_b_arcmin"].get<double>(), 6.0 / 5.0 + 3.0, 1e-9);
   EXPECT_TRUE(j["rigidity_ok"].get<bool>());
   EXPECT_FALSE(j["backlash_ok"].get<bool>());
@@ -424,7 +424,7 @@ TEST(RigidityStudy, LimitsAtEndBGiveTheVerdict) {
   // Without limits: no verdict keys; a deflection limit without the torque is refused.
   study.erase("limits");
   s = tr::Parse(studies::Node(&study, "gearbox.json", ""));
-  EXPECT_FALSE(tr::ToJson(s, tr::Run(s, studies::RunContext{"", true})).contains("limits_ok"));
+  EXPECT_FALSE(studies::WriteResult(tr::Run(s, studies::RunContext{"", true})).contains("limits_ok"));
   study.erase("load_torque_Nm");
   study["limits"] = {{"deflection_deg", 0.1}};
   camopt::testing::WriteFile(dir / "bad.json", study.dump());

@@ -762,6 +762,14 @@ TEST(SchemaParserAgreement, DeclaredKindsFieldTablesInTheDocsAreTheEmittedOnes) 
     EXPECT_NE(docs.find(table), std::string::npos)
         << kind << ": docs/studies.md does not have the table of `camopt schema " << kind << " --table`:\n" << table;
   }
+  // And the keys of each declared result.json (`camopt schema KIND --result --table`).
+  for (const std::string& kind : studies::KindsWithDeclaredResult()) {
+    const std::string table =
+        studies::SchemaFieldTable(nlohmann::ordered_json::parse(studies::StudyResultSchema(kind)), true);
+    EXPECT_NE(docs.find("<!-- camopt schema " + kind + " --result --table -->\n" + table), std::string::npos)
+        << kind << ": docs/studies.md does not have the table of `camopt schema " << kind << " --result --table`:\n"
+        << table;
+  }
 }
 
 // Every property with a schema `default`, added where the study does not give it (inside objects

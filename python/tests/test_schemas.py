@@ -3,7 +3,9 @@ studies/archive.h): every example validates against its
 kind's schema, the files are what `camopt schema KIND` prints, and a set of bad studies is rejected
 both by the schema and by camopt's own checks (the C++ parser, through the Python module)."""
 import json
+import pathlib
 import subprocess
+import tempfile
 import unittest
 
 import jsonschema
@@ -106,6 +108,70 @@ class BadStudies(unittest.TestCase):
                 with self.assertRaises(camopt.StudyError) as cm:
                     camopt.run(bad)
                 self.assertEqual(cm.exception.path, named, str(cm.exception))
+
+
+class ResultSchemas(unittest.TestCase):
+    """`camopt schema KIND --result`: the schema of result.json, emitted from the kind's declared
+    result (studies/archive.h). Every example of a kind whose result is declared writes a
+    result.json that validates against it (checked by jsonschema, not by camopt), and the binary
+    and the module print the same schema."""
+
+    def declared(self):
+        kinds = {}
+        for k in camopt.kinds():
+            out = subprocess.run([helpers.BINARY, "schema", k, "--result"], capture_output=True, text=True)
+            if out.returncode == 0:
+                kinds[k] = json.loads(out.stdout)
+                self.assertEqual(camopt.schema(k, result=True), kinds[k], k)
+            else:
+                self.assertEqual(out.returncode, 2, k)
+                self.assertIn("not declared yet", out.stderr, k)
+                with self.assertRaises(camopt.StudyError):
+                    camopt.schema(k, result=True)
+        return kinds
+
+    def test_every_example_of_a_declared_kind_validates(self):
+        if not helpers.BINARY:
+            self.skipTest("CAMOPT_BINARY not set (run through ctest)")
+        schemas = self.declared()
+        self.assertIn("transmission_rigidity", schemas)
+        checked = 0
+        with tempfile.TemporaryDirectory() as tmp:
+            for path in helpers.study_examples():
+                kind = json.loads(path.read_text())["study"]
+                if kind not in schemas:
+                    continue
+                Validator.check_schema(schemas[kind])
+                out = pathlib.Path(tmp) / path.stem
+                run = subprocess.run([helpers.BINARY, "run", "-q", str(path), "-o", str(out)],
+                                     capture_output=True, text=True)
+                self.assertIn(run.returncode, (0, 3), run.stderr)
+                result = json.loads((out / "result.json").read_text())
+                problems = [f"/{'/'.join(str(p) for p in e.absolute_path)}: {e.message}"
+                            for e in Validator(schemas[kind]).iter_errors(result)]
+                self.assertEqual(problems, [], path.name)
+                checked += 1
+        self.assertGreaterEqual(checked, 6)
+
+    def test_a_result_missing_a_member_or_with_an_unknown_one_fails(self):
+        if not helpers.BINARY:
+            self.skipTest("CAMOPT_BINARY not set (run through ctest)")
+        schema = camopt.schema("transmission_rigidity", result=True)
+        with tempfile.TemporaryDirectory() as tmp:
+            study = helpers.SOURCE / "studies" / "examples" / "rigidity_stepped_shaft.json"
+            subprocess.run([helpers.BINARY, "run", "-q", str(study), "-o", tmp + "/o"], check=True, capture_output=True)
+            result = json.loads(pathlib.Path(tmp, "o", "result.json").read_text())
+        self.assertEqual(list(Validator(schema).iter_errors(result)), [])
+        for change in ("drop", "add", "retype"):
+            bad = json.loads(json.dumps(result))
+            if change == "drop":
+                del bad["elements"][0]["compliance_share"]
+            elif change == "add":
+                bad["dominant"]["colour"] = "red"
+            else:
+                bad["rigidity_Nm_per_rad"] = "stiff"
+            with self.subTest(change=change):
+                self.assertNotEqual(list(Validator(schema).iter_errors(bad)), [])
 
 
 if __name__ == "__main__":
