@@ -135,6 +135,9 @@ class Field {
   /// null in result.json, `"type": ["number", "null"]` in the result's schema. Without it a
   /// non-finite result number is an error naming its JSON path (ResultWriter).
   Field& NullWhenNotFinite() { null_when_not_finite = true; return *this; }
+  /// A std::optional result member that is always in result.json, null when unset (a covariance
+  /// that does not exist): required and nullable in the result's schema.
+  Field& NullWhenAbsent() { null_when_absent = true; return *this; }
 
   std::string desc, unit;
   bool required = false;
@@ -149,6 +152,7 @@ class Field {
   nlohmann::json documented_default;  ///< null: none
   nlohmann::ordered_json schema;      ///< null: none
   bool null_when_not_finite = false;
+  bool null_when_absent = false;
 };
 
 namespace archive_detail {
@@ -420,6 +424,7 @@ class ResultWriter {
     const std::string path = path_ + "/" + name;
     if constexpr (archive_detail::IsOptional<T>::value) {
       if (*value) (*object_)[name] = Value(**value, f, path);
+      else if (f.null_when_absent) (*object_)[name] = nullptr;
     } else {
       (*object_)[name] = Value(*value, f, path);
     }
@@ -451,7 +456,7 @@ class ResultWriter {
     } else if constexpr (std::is_same_v<T, nlohmann::json>) {
       return nlohmann::ordered_json(value);
     } else {
-      static_assert(std::is_same_v<T, int> || std::is_same_v<T, bool> || std::is_same_v<T, std::string>,
+      static_assert(std::is_integral_v<T> || std::is_same_v<T, std::string>,
                     "a result member type the archives do not know");
       return nlohmann::ordered_json(value);
     }
@@ -476,6 +481,11 @@ class ResultSchemaEmitter {
     if constexpr (archive_detail::IsOptional<T>::value) {
       typename T::value_type v{};
       Describe(&v, f, s);
+      if (f.null_when_absent) {
+        (*object_)["required"].push_back(name);
+        if (s.contains("type") && s["type"].is_string()) s["type"] = {s["type"], "null"};
+        else if (s.contains("type")) s["type"].push_back("null");
+      }
     } else {
       Describe(value, f, s);
       (*object_)["required"].push_back(name);
@@ -496,10 +506,10 @@ class ResultSchemaEmitter {
     } else if constexpr (std::is_same_v<T, double>) {
       if (f.null_when_not_finite) s["type"] = {"number", "null"};
       else s["type"] = "number";
-    } else if constexpr (std::is_same_v<T, int>) {
-      s["type"] = "integer";
     } else if constexpr (std::is_same_v<T, bool>) {
       s["type"] = "boolean";
+    } else if constexpr (std::is_integral_v<T>) {
+      s["type"] = "integer";
     } else if constexpr (std::is_same_v<T, std::string>) {
       if (f.constant) s["const"] = *f.constant;
       else if (!f.one_of.empty()) s["enum"] = f.one_of;

@@ -195,6 +195,134 @@ Study Parse(const Node& root) {
   return s;
 }
 
+namespace {
+
+// result.json's members (Result's Serialize) from the model's numbers, in the file's units.
+void FillResult(const Study& s, Result& r) {
+  r.name = s.name;
+  r.angle_steps = s.angle_steps;
+  r.axis_steps = s.axis_steps;
+  r.roller_axis_range_mm = {r.roller_axis_limits_mm.l1, r.roller_axis_limits_mm.l2};
+  r.initial_angles_deg.top_dead_point = {r.initial_angle_top_deg[0], r.initial_angle_top_deg[1]};
+  r.initial_angles_deg.bottom_dead_point = {r.initial_angle_bottom_deg[0], r.initial_angle_bottom_deg[1]};
+  r.roller_angle_ranges_deg = {r.roller_angle_range_deg[0], r.roller_angle_range_deg[1]};
+  const auto& alpha = r.survey.max_abs_pressure_angle;
+  const auto& margin = r.survey.min_undercut_margin;
+  const auto& rcontact = r.survey.min_contact_radius;
+  r.max_pressure_angle_deg = alpha.value / kDeg;
+  // "warnings" only when there is one (RunStudy adds the list to every result.json).
+  if (alpha.value > globoidal::kHighPressureAngle)
+    r.warnings = std::vector<std::string>{
+        "the pressure angle reaches " + Format(alpha.value / kDeg) + " deg, above the " +
+        Format(globoidal::kHighPressureAngle / kDeg) +
+        " deg warning limit (docs/globoidal.md): large side thrust on the turret, near jamming"};
+  r.max_pressure_angle_at = {alpha.cam_angle_rad / kDeg, alpha.axis_mm, alpha.roller};
+  r.min_undercut_margin = margin.value;
+  r.min_undercut_margin_at = {margin.cam_angle_rad / kDeg, margin.axis_mm, margin.roller};
+  r.min_offset_area_ratio = r.survey.min_offset_jacobian.value;
+  r.conformal_contact = r.survey.conformal;
+  if (rcontact.set) {
+    r.min_contact_radius_mm = rcontact.value;
+    r.min_contact_radius_at = Result::At{rcontact.cam_angle_rad / kDeg, std::nullopt, rcontact.roller};
+  }
+  r.motion.joints = JointsJson(r.joints);
+  r.motion.peak_velocity_deg_per_rad = r.peak_velocity_deg_per_rad;
+  r.motion.peak_acceleration_deg_per_rad2 = r.peak_acceleration_deg_per_rad2;
+  r.motion.peak_jerk_deg_per_rad3 = r.peak_jerk_deg_per_rad3;
+  if (!s.geometry.write) r.geometry_files = GeometryFilesJson(s.geometry, {});
+  if (s.evaluate_given) {
+    r.evaluated = std::vector<std::string>{"geometry"};
+    if (s.dynamics_stage) r.evaluated->push_back("dynamics");
+    if (s.export_stage) r.evaluated->push_back("export");
+  }
+  if (s.dynamics_stage) {
+    r.load = Result::Load{s.dyn.load_torque_Nmm * 1e-3, s.dyn.inertia_Nmms2 * 1e-3};
+    r.effective_modulus = r.effective_modulus_MPa;
+  }
+  if (!s.dynamics_stage) {
+    // not asked for: no dynamics entry at all
+  } else if (!r.dynamics_skipped.empty()) {
+    r.dynamics = Result::Dynamics{r.dynamics_skipped, std::nullopt, std::nullopt, std::nullopt};
+  } else {
+    std::vector<Result::SpeedRow> speeds;
+    for (const SpeedResult& x : r.speeds) {
+      Result::SpeedRow row;
+      row.cam_speed_rpm = x.cam_speed_rpm;
+      if (!x.failed.empty()) {
+        row.failed = x.failed;
+        speeds.push_back(std::move(row));
+        continue;
+      }
+      row.end_time_s = x.end_time_s;
+      row.relative_tolerance = s.relative_tolerance;
+      row.absolute_tolerance = s.absolute_tolerance;
+      row.steps = x.steps;
+      row.rhs_evaluations = x.rhs_evaluations;
+      row.contact_events = x.events;
+      row.smallest_step_s = x.smallest_step_s;
+      row.largest_step_s = x.largest_step_s;
+      row.peak_turret_velocity_kinematic_rad_s = x.peak_turret_velocity_kinematic_rad_s;
+      row.peak_turret_velocity_dynamic_rad_s = x.peak_turret_velocity_dynamic_rad_s;
+      row.peak_turret_acceleration_kinematic_rad_s2 = x.peak_turret_acceleration_kinematic_rad_s2;
+      row.peak_turret_acceleration_dynamic_rad_s2 = x.peak_turret_acceleration_dynamic_rad_s2;
+      row.max_force_roller_1_N = x.max_force_roller_1_N;
+      row.max_force_roller_2_N = x.max_force_roller_2_N;
+      row.max_contact_stress_MPa = x.max_contact_stress_MPa;
+      row.max_contact_stress_at_cam_angle_deg = x.max_contact_stress_cam_angle_deg;
+      row.max_quasi_static_force_N = x.max_quasi_static_force_N;
+      row.max_swing_deviation_deg = x.max_swing_deviation_deg;
+      row.max_penetration_mm = x.max_penetration_mm;
+      speeds.push_back(std::move(row));
+    }
+    // The largest contact stress over the speeds run, for the verdict.
+    const SpeedResult* worst = nullptr;
+    for (const SpeedResult& x : r.speeds)
+      if (x.failed.empty() && (!worst || x.max_contact_stress_MPa > worst->max_contact_stress_MPa)) worst = &x;
+    if (worst) {
+      r.max_contact_stress_MPa = worst->max_contact_stress_MPa;
+      r.max_contact_stress_at = Result::StressAt{worst->cam_speed_rpm, worst->max_contact_stress_cam_angle_deg};
+      r.contact_stress_model =
+          "Hertz line contact along the roller length: p0 = sqrt(F E* / (pi m R)), R the eq. (12) radius "
+          "at that instant (docs/globoidal.md \"Limits and verdict\")";
+    }
+    r.dynamics = Result::Dynamics{std::nullopt, "F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ (eqs. 10–14)",
+                                  "CVODE (BDF, variable step and order), contact onset "
+                                  "and loss located as events; peaks over every step",
+                                  std::move(speeds)};
+  }
+  // The verdict (docs/globoidal.md "Limits and verdict"): each limit beside its value.
+  r.limits.pressure_angle_deg = s.limits.pressure_angle_deg;
+  if (s.pressure_angle_limit_default) r.limits.defaults.push_back("pressure_angle_deg");
+  r.pressure_angle_ok = alpha.value / kDeg <= s.limits.pressure_angle_deg;
+  bool ok = r.pressure_angle_ok && !r.undercut && r.rib_thickness_at_l2_mm >= 0.0;
+  if (s.limits.contact_stress_MPa) {
+    r.limits.contact_stress_MPa = *s.limits.contact_stress_MPa;
+    if (r.max_contact_stress_MPa) {
+      r.contact_stress_ok = *r.max_contact_stress_MPa <= *s.limits.contact_stress_MPa;
+      ok = ok && *r.contact_stress_ok;
+    } else {
+      r.notes = std::vector<std::string>{
+          "limits.contact_stress_MPa is not checked: the contact stress comes from the dynamics, "
+          "which did not run (no cam speed, not asked for, or skipped)"};
+    }
+  }
+  r.limits_ok = ok;
+  if (s.export_point_cloud || s.export_stl)
+    r.surface_export = Result::SurfaceExport{
+        "cam frame oxyz, oz the cam axis, mm; θ = 0 at the start of the first motion",
+        s.export_angle_steps,
+        s.export_axis_steps,
+        s.export_stl ? "working_surfaces.stl" : "",
+        s.geometry.stl_ascii ? "ascii" : "binary",
+        s.export_stl && s.geometry.step ? "working_surfaces.step" : "",
+        s.geometry.dxf_tolerance_um,
+        "not written: the two working surfaces are open bands (the rib's crest and root surfaces are not "
+        "modelled), so they close no solid",
+        s.export_point_cloud ? "working_surfaces.csv" : ""};
+}
+
+}  // namespace
+
 Result Run(const Study& s, const RunContext& ctx) {
   const GloboidalCam<double>& cam = s.dyn.cam;
   const auto lim = globoidal::RollerAxisLimits(cam);
@@ -332,152 +460,13 @@ Result Run(const Study& s, const RunContext& ctx) {
       }
     }
   }
+  FillResult(s, r);
   return r;
 }
 
-nlohmann::json ToJson(const Study& s, const Result& r) {
-  nlohmann::json j;
-  j["study"] = "globoidal_cam";
-  j["name"] = s.name;
-  j["angle_steps"] = s.angle_steps;
-  j["axis_steps"] = s.axis_steps;
-  j["roller_axis_limits_mm"] = {{"l1", r.roller_axis_limits_mm.l1},
-                                {"l2", r.roller_axis_limits_mm.l2}};
-  j["initial_angles_deg"] = {
-      {"top_dead_point", {{"roller_1", r.initial_angle_top_deg[0]},
-                          {"roller_2", r.initial_angle_top_deg[1]}}},
-      {"bottom_dead_point", {{"roller_1", r.initial_angle_bottom_deg[0]},
-                             {"roller_2", r.initial_angle_bottom_deg[1]}}}};
-  j["roller_angle_range_deg"] = {
-      {"roller_1", {r.roller_angle_range_deg[0][0], r.roller_angle_range_deg[0][1]}},
-      {"roller_2", {r.roller_angle_range_deg[1][0], r.roller_angle_range_deg[1][1]}}};
-  j["rib_thickness_at_l2_mm"] = r.rib_thickness_at_l2_mm;
-  const auto& alpha = r.survey.max_abs_pressure_angle;
-  const auto& margin = r.survey.min_undercut_margin;
-  const auto& rcontact = r.survey.min_contact_radius;
-  j["max_pressure_angle_deg"] = alpha.value / kDeg;
-  // "warnings" only when there is one (RunStudy adds the list to every result.json).
-  if (alpha.value > globoidal::kHighPressureAngle)
-    j["warnings"].push_back("the pressure angle reaches " + Format(alpha.value / kDeg) + " deg, above the " +
-                            Format(globoidal::kHighPressureAngle / kDeg) +
-                            " deg warning limit (docs/globoidal.md): large side thrust on the turret, near jamming");
-  j["max_pressure_angle_at"] = {{"cam_angle_deg", alpha.cam_angle_rad / kDeg},
-                                {"axis_mm", alpha.axis_mm},
-                                {"roller", alpha.roller}};
-  j["undercut"] = r.undercut;
-  j["min_undercut_margin"] = margin.value;
-  j["min_undercut_margin_at"] = {{"cam_angle_deg", margin.cam_angle_rad / kDeg},
-                                 {"axis_mm", margin.axis_mm},
-                                 {"roller", margin.roller}};
-  j["min_offset_area_ratio"] = r.survey.min_offset_jacobian.value;
-  j["contact_arm_mm"] = r.contact_arm_mm;
-  j["conformal_contact"] = r.survey.conformal;
-  if (rcontact.set) {
-    j["min_contact_radius_mm"] = rcontact.value;
-    j["min_contact_radius_at"] = {{"cam_angle_deg", rcontact.cam_angle_rad / kDeg},
-                                  {"roller", rcontact.roller}};
-  }
-  j["motion"] = {{"joints", JointsJson(r.joints)},
-                 {"peak_velocity_deg_per_rad", r.peak_velocity_deg_per_rad},
-                 {"peak_acceleration_deg_per_rad2", r.peak_acceleration_deg_per_rad2},
-                 {"peak_jerk_deg_per_rad3", r.peak_jerk_deg_per_rad3}};
-  if (!s.geometry.write) j["geometry_files"] = GeometryFilesJson(s.geometry, {});
-  if (s.evaluate_given) {
-    j["evaluated"] = {"geometry"};
-    if (s.dynamics_stage) j["evaluated"].push_back("dynamics");
-    if (s.export_stage) j["evaluated"].push_back("export");
-  }
-  if (s.dynamics_stage) {
-    j["load"] = {{"turret_torque_Nm", s.dyn.load_torque_Nmm * 1e-3},
-                 {"turret_inertia_kgm2", s.dyn.inertia_Nmms2 * 1e-3}};
-    j["effective_modulus_MPa"] = r.effective_modulus_MPa;
-  }
-  if (!s.dynamics_stage) {
-    // not asked for: no dynamics entry at all
-  } else if (!r.dynamics_skipped.empty()) {
-    j["dynamics"] = {{"skipped", r.dynamics_skipped}};
-  } else {
-    nlohmann::json speeds = nlohmann::json::array();
-    for (const SpeedResult& x : r.speeds) {
-      if (!x.failed.empty()) {
-        speeds.push_back({{"cam_speed_rpm", x.cam_speed_rpm}, {"failed", x.failed}});
-        continue;
-      }
-      speeds.push_back({{"cam_speed_rpm", x.cam_speed_rpm},
-                        {"end_time_s", x.end_time_s},
-                        {"relative_tolerance", s.relative_tolerance},
-                        {"absolute_tolerance", s.absolute_tolerance},
-                        {"steps", x.steps},
-                        {"rhs_evaluations", x.rhs_evaluations},
-                        {"contact_events", x.events},
-                        {"smallest_step_s", x.smallest_step_s},
-                        {"largest_step_s", x.largest_step_s},
-                        {"peak_turret_velocity_kinematic_rad_s",
-                         x.peak_turret_velocity_kinematic_rad_s},
-                        {"peak_turret_velocity_dynamic_rad_s", x.peak_turret_velocity_dynamic_rad_s},
-                        {"peak_turret_acceleration_kinematic_rad_s2",
-                         x.peak_turret_acceleration_kinematic_rad_s2},
-                        {"peak_turret_acceleration_dynamic_rad_s2",
-                         x.peak_turret_acceleration_dynamic_rad_s2},
-                        {"max_force_roller_1_N", x.max_force_roller_1_N},
-                        {"max_force_roller_2_N", x.max_force_roller_2_N},
-                        {"max_contact_stress_MPa", x.max_contact_stress_MPa},
-                        {"max_contact_stress_at_cam_angle_deg", x.max_contact_stress_cam_angle_deg},
-                        {"max_quasi_static_force_N", x.max_quasi_static_force_N},
-                        {"max_swing_deviation_deg", x.max_swing_deviation_deg},
-                        {"max_penetration_mm", x.max_penetration_mm}});
-    }
-    // The largest contact stress over the speeds run, for the verdict.
-    const SpeedResult* worst = nullptr;
-    for (const SpeedResult& x : r.speeds)
-      if (x.failed.empty() && (!worst || x.max_contact_stress_MPa > worst->max_contact_stress_MPa)) worst = &x;
-    if (worst) {
-      j["max_contact_stress_MPa"] = worst->max_contact_stress_MPa;
-      j["max_contact_stress_at"] = {{"cam_speed_rpm", worst->cam_speed_rpm},
-                                    {"cam_angle_deg", worst->max_contact_stress_cam_angle_deg}};
-      j["contact_stress_model"] =
-          "Hertz line contact along the roller length: p0 = sqrt(F E* / (pi m R)), R the eq. (12) radius "
-          "at that instant (docs/globoidal.md \"Limits and verdict\")";
-    }
-    j["dynamics"] = {{"contact_model", "F = K δ^e + step(δ, 0, 0, d, C_max) δ̇ (eqs. 10–14)"},
-                     {"integrator", "CVODE (BDF, variable step and order), contact onset "
-                                    "and loss located as events; peaks over every step"},
-                     {"speeds", speeds}};
-  }
-  // The verdict (docs/globoidal.md "Limits and verdict"): each limit beside its value.
-  nlohmann::json defaults = nlohmann::json::array();
-  if (s.pressure_angle_limit_default) defaults.push_back("pressure_angle_deg");
-  j["limits"] = {{"pressure_angle_deg", s.limits.pressure_angle_deg}, {"defaults", defaults}};
-  j["pressure_angle_ok"] = alpha.value / kDeg <= s.limits.pressure_angle_deg;
-  bool ok = j["pressure_angle_ok"].get<bool>() && !r.undercut && r.rib_thickness_at_l2_mm >= 0.0;
-  if (s.limits.contact_stress_MPa) {
-    j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
-    if (j.contains("max_contact_stress_MPa")) {
-      j["contact_stress_ok"] = j["max_contact_stress_MPa"].get<double>() <= *s.limits.contact_stress_MPa;
-      ok = ok && j["contact_stress_ok"].get<bool>();
-    } else {
-      j["notes"].push_back("limits.contact_stress_MPa is not checked: the contact stress comes from the dynamics, "
-                           "which did not run (no cam speed, not asked for, or skipped)");
-    }
-  }
-  j["limits_ok"] = ok;
-  if (s.export_point_cloud || s.export_stl)
-    j["surface_export"] = {{"frame", "cam frame oxyz, oz the cam axis, mm; θ = 0 at the start of the "
-                                     "first motion"},
-                           {"angle_steps", s.export_angle_steps},
-                           {"axis_steps", s.export_axis_steps},
-                           {"stl", s.export_stl ? "working_surfaces.stl" : ""},
-                           {"stl_format", s.geometry.stl_ascii ? "ascii" : "binary"},
-                           {"step", s.export_stl && s.geometry.step ? "working_surfaces.step" : ""},
-                           {"step_tolerance_um", s.geometry.dxf_tolerance_um},
-                           {"solid", "not written: the two working surfaces are open bands (the rib's "
-                                     "crest and root surfaces are not modelled), so they close no solid"},
-                           {"point_cloud", s.export_point_cloud ? "working_surfaces.csv" : ""}};
-  return j;
-}
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   const auto& t = r.series;
   const auto& th = t.cam_angle_deg;
 
@@ -630,7 +619,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("globoidal_cam");
 
-CAMOPT_REGISTER_DECLARED_KIND("globoidal_cam", Input, "camopt study: globoidal cam indexer: pressure angle, undercut, rib thickness, contact stress and roller forces at speed");
+CAMOPT_REGISTER_KIND("globoidal_cam", Input, Result, "camopt study: globoidal cam indexer: pressure angle, undercut, rib thickness, contact stress and roller forces at speed");
 
 // The declared input of a study, for the estimates below that run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

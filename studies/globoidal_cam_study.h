@@ -257,16 +257,238 @@ struct SpeedResult {
   std::vector<globoidal::DynamicsSample> samples;
 };
 
-/// Every number the kind reports.
+/// Every number the kind reports: result.json as declared (its `Serialize`; `camopt schema
+/// globoidal_cam --result`), then the model's numbers the CSV, SVG and surface files are drawn from.
 struct Result {
+  struct PerRoller {
+    double roller_1 = 0, roller_2 = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("roller_1", &roller_1, Field().Unit("deg"));
+      a->Visit("roller_2", &roller_2, Field().Unit("deg"));
+    }
+  };
+  struct DeadPoints {
+    PerRoller top_dead_point, bottom_dead_point;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("top_dead_point", &top_dead_point, Field().Desc("φ₀ of each roller, eq. (7)"));
+      a->Visit("bottom_dead_point", &bottom_dead_point, Field().Desc("φ₀ of each roller, eq. (7)"));
+    }
+  };
+  struct RollerRanges {
+    std::array<double, 2> roller_1{}, roller_2{};
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("roller_1", &roller_1, Field().Unit("deg").Desc("[min, max]"));
+      a->Visit("roller_2", &roller_2, Field().Unit("deg").Desc("[min, max]"));
+    }
+  };
+  struct AxisRange {
+    double l1 = 0, l2 = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("l1", &l1, Field().Unit("mm").Desc("the working surface's inner end on the roller axis"));
+      a->Visit("l2", &l2, Field().Unit("mm").Desc("its outer end"));
+    }
+  };
+  /// Where an extreme is.
+  struct At {
+    double cam_angle_deg = 0;
+    std::optional<double> axis_mm;
+    int roller = 1;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("cam_angle_deg", &cam_angle_deg, Field().Unit("deg"));
+      a->Visit("axis_mm", &axis_mm, Field().Unit("mm").Desc("along the roller axis"));
+      a->Visit("roller", &roller, Field().Desc("1 or 2"));
+    }
+  };
+  struct MotionSummary {
+    nlohmann::json joints;
+    double peak_velocity_deg_per_rad = 0, peak_acceleration_deg_per_rad2 = 0, peak_jerk_deg_per_rad3 = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("joints", &joints, Field().Desc("the motion program's joints and their continuity").Schema({{"type", "array"}}));
+      a->Visit("peak_velocity_deg_per_rad", &peak_velocity_deg_per_rad, Field().Unit("deg/rad"));
+      a->Visit("peak_acceleration_deg_per_rad2", &peak_acceleration_deg_per_rad2, Field().Unit("deg/rad²"));
+      a->Visit("peak_jerk_deg_per_rad3", &peak_jerk_deg_per_rad3, Field().Unit("deg/rad³"));
+    }
+  };
+  struct Load {
+    double turret_torque_Nm = 0, turret_inertia_kgm2 = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("turret_torque_Nm", &turret_torque_Nm, Field().Unit("N·m"));
+      a->Visit("turret_inertia_kgm2", &turret_inertia_kgm2, Field().Unit("kg·m²"));
+    }
+  };
+  /// One cam speed's simulation: every member but the speed is absent when it `failed`.
+  struct SpeedRow {
+    double cam_speed_rpm = 0;
+    std::optional<std::string> failed;
+    std::optional<double> end_time_s, relative_tolerance, absolute_tolerance;
+    std::optional<long> steps, rhs_evaluations;
+    std::optional<int> contact_events;
+    std::optional<double> smallest_step_s, largest_step_s;
+    std::optional<double> peak_turret_velocity_kinematic_rad_s, peak_turret_velocity_dynamic_rad_s;
+    std::optional<double> peak_turret_acceleration_kinematic_rad_s2, peak_turret_acceleration_dynamic_rad_s2;
+    std::optional<double> max_force_roller_1_N, max_force_roller_2_N, max_contact_stress_MPa;
+    std::optional<double> max_contact_stress_at_cam_angle_deg, max_quasi_static_force_N;
+    std::optional<double> max_swing_deviation_deg, max_penetration_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("cam_speed_rpm", &cam_speed_rpm, Field().Unit("rpm"));
+      a->Visit("failed", &failed, Field().Desc("why the simulation stopped, when it did"));
+      a->Visit("end_time_s", &end_time_s, Field().Unit("s"));
+      a->Visit("relative_tolerance", &relative_tolerance, Field().Desc("CVODE's"));
+      a->Visit("absolute_tolerance", &absolute_tolerance, Field().Desc("CVODE's"));
+      a->Visit("steps", &steps, Field().Desc("accepted solver steps"));
+      a->Visit("rhs_evaluations", &rhs_evaluations, Field());
+      a->Visit("contact_events", &contact_events, Field().Desc("contact onsets and losses located"));
+      a->Visit("smallest_step_s", &smallest_step_s, Field().Unit("s"));
+      a->Visit("largest_step_s", &largest_step_s, Field().Unit("s"));
+      a->Visit("peak_turret_velocity_kinematic_rad_s", &peak_turret_velocity_kinematic_rad_s, Field().Unit("rad/s"));
+      a->Visit("peak_turret_velocity_dynamic_rad_s", &peak_turret_velocity_dynamic_rad_s, Field().Unit("rad/s"));
+      a->Visit("peak_turret_acceleration_kinematic_rad_s2", &peak_turret_acceleration_kinematic_rad_s2,
+               Field().Unit("rad/s²"));
+      a->Visit("peak_turret_acceleration_dynamic_rad_s2", &peak_turret_acceleration_dynamic_rad_s2,
+               Field().Unit("rad/s²"));
+      a->Visit("max_force_roller_1_N", &max_force_roller_1_N, Field().Unit("N"));
+      a->Visit("max_force_roller_2_N", &max_force_roller_2_N, Field().Unit("N"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("max_contact_stress_at_cam_angle_deg", &max_contact_stress_at_cam_angle_deg, Field().Unit("deg"));
+      a->Visit("max_quasi_static_force_N", &max_quasi_static_force_N, Field().Unit("N"));
+      a->Visit("max_swing_deviation_deg", &max_swing_deviation_deg, Field().Unit("deg"));
+      a->Visit("max_penetration_mm", &max_penetration_mm, Field().Unit("mm"));
+    }
+  };
+  /// The dynamics: `skipped` (why not run), or the contact model and each speed's simulation.
+  struct Dynamics {
+    std::optional<std::string> skipped, contact_model, integrator;
+    std::optional<std::vector<SpeedRow>> speeds;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("skipped", &skipped, Field().Desc("why the dynamics were not run (undercut or conformal contact)"));
+      a->Visit("contact_model", &contact_model, Field());
+      a->Visit("integrator", &integrator, Field());
+      a->Visit("speeds", &speeds, Field().Desc("one per cam speed"));
+    }
+  };
+  struct StressAt {
+    double cam_speed_rpm = 0, cam_angle_deg = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("cam_speed_rpm", &cam_speed_rpm, Field().Unit("rpm"));
+      a->Visit("cam_angle_deg", &cam_angle_deg, Field().Unit("deg"));
+    }
+  };
+  struct LimitsOut {
+    double pressure_angle_deg = 0;
+    std::vector<std::string> defaults;
+    std::optional<double> contact_stress_MPa;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pressure_angle_deg", &pressure_angle_deg, Field().Unit("deg").Desc("the largest pressure angle"));
+      a->Visit("defaults", &defaults, Field().Desc("the limits the study did not give (their defaults apply)"));
+      a->Visit("contact_stress_MPa", &contact_stress_MPa, Field().Unit("MPa").Desc("the largest contact stress"));
+    }
+  };
+  struct SurfaceExport {
+    std::string frame;
+    int angle_steps = 0, axis_steps = 0;
+    std::string stl, stl_format, step;
+    double step_tolerance_um = 0;
+    std::string solid, point_cloud;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("frame", &frame, Field());
+      a->Visit("angle_steps", &angle_steps, Field());
+      a->Visit("axis_steps", &axis_steps, Field());
+      a->Visit("stl", &stl, Field().Desc("the STL file (empty: none)"));
+      a->Visit("stl_format", &stl_format, Field().OneOf({"ascii", "binary"}));
+      a->Visit("step", &step, Field().Desc("the STEP file (empty: none)"));
+      a->Visit("step_tolerance_um", &step_tolerance_um, Field().Unit("µm"));
+      a->Visit("solid", &solid, Field());
+      a->Visit("point_cloud", &point_cloud, Field().Desc("the point cloud's CSV (empty: none)"));
+    }
+  };
+
+  std::string study = "globoidal_cam", name;
+  int angle_steps = 0, axis_steps = 0;
+  AxisRange roller_axis_range_mm;           ///< result.json's roller_axis_limits_mm
+  DeadPoints initial_angles_deg;
+  RollerRanges roller_angle_ranges_deg;     ///< result.json's roller_angle_range_deg
+  double rib_thickness_at_l2_mm = 0.0;
+  double max_pressure_angle_deg = 0;
+  std::optional<std::vector<std::string>> warnings;
+  At max_pressure_angle_at, min_undercut_margin_at;
+  bool undercut = false;
+  double min_undercut_margin = 0, min_offset_area_ratio = 0;
+  double contact_arm_mm = 0.0;
+  bool conformal_contact = false;
+  std::optional<double> min_contact_radius_mm;
+  std::optional<At> min_contact_radius_at;
+  MotionSummary motion;
+  std::optional<nlohmann::json> geometry_files;
+  std::optional<std::vector<std::string>> evaluated;
+  std::optional<Load> load;
+  std::optional<double> effective_modulus;  ///< result.json's effective_modulus_MPa, with the dynamics
+  std::optional<Dynamics> dynamics;
+  std::optional<double> max_contact_stress_MPa;
+  std::optional<StressAt> max_contact_stress_at;
+  std::optional<std::string> contact_stress_model;
+  LimitsOut limits;
+  bool pressure_angle_ok = false;
+  std::optional<bool> contact_stress_ok;
+  std::optional<std::vector<std::string>> notes;
+  bool limits_ok = false;
+  std::optional<SurfaceExport> surface_export;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("globoidal_cam"));
+    a->Visit("name", &name, Field().Desc("the cam's name"));
+    a->Visit("angle_steps", &angle_steps, Field().Desc("cam angles of the analysis grid"));
+    a->Visit("axis_steps", &axis_steps, Field().Desc("points along the roller axis"));
+    a->Visit("roller_axis_limits_mm", &roller_axis_range_mm, Field().Desc("the working surface along the roller axis"));
+    a->Visit("initial_angles_deg", &initial_angles_deg, Field());
+    a->Visit("roller_angle_range_deg", &roller_angle_ranges_deg, Field());
+    a->Visit("rib_thickness_at_l2_mm", &rib_thickness_at_l2_mm, Field().Unit("mm").Desc("< 0: the rib is cut through"));
+    a->Visit("max_pressure_angle_deg", &max_pressure_angle_deg, Field().Unit("deg"));
+    a->Visit("warnings", &warnings, Field());
+    a->Visit("max_pressure_angle_at", &max_pressure_angle_at, Field());
+    a->Visit("undercut", &undercut, Field().Desc("the working surface is undercut somewhere"));
+    a->Visit("min_undercut_margin", &min_undercut_margin, Field().Desc("min 1 − R κ₁ (≤ 0: undercut)"));
+    a->Visit("min_undercut_margin_at", &min_undercut_margin_at, Field());
+    a->Visit("min_offset_area_ratio", &min_offset_area_ratio, Field().Desc("min area ratio working/trajectory surface"));
+    a->Visit("contact_arm_mm", &contact_arm_mm, Field().Unit("mm"));
+    a->Visit("conformal_contact", &conformal_contact, Field().Desc("the contact radius at the arm is ≤ 0 somewhere"));
+    a->Visit("min_contact_radius_mm", &min_contact_radius_mm, Field().Unit("mm").Desc("eq. (12) at the contact arm, where > 0"));
+    a->Visit("min_contact_radius_at", &min_contact_radius_at, Field());
+    a->Visit("motion", &motion, Field());
+    a->Visit("geometry_files", &geometry_files, Field().Desc("the geometry files not written, and why").Schema({{"type", "object"}}));
+    a->Visit("evaluated", &evaluated, Field().Desc("the stages run, when analysis.evaluate is given"));
+    a->Visit("load", &load, Field().Desc("with the dynamics"));
+    a->Visit("effective_modulus_MPa", &effective_modulus, Field().Unit("MPa").Desc("with the dynamics"));
+    a->Visit("dynamics", &dynamics, Field().Desc("when asked for"));
+    a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa").Desc("over the speeds run"));
+    a->Visit("max_contact_stress_at", &max_contact_stress_at, Field());
+    a->Visit("contact_stress_model", &contact_stress_model, Field());
+    a->Visit("limits", &limits, Field().Desc("the verdict's limits"));
+    a->Visit("pressure_angle_ok", &pressure_angle_ok, Field());
+    a->Visit("contact_stress_ok", &contact_stress_ok, Field().Desc("with a stress limit and the dynamics run"));
+    a->Visit("notes", &notes, Field());
+    a->Visit("limits_ok", &limits_ok, Field());
+    a->Visit("surface_export", &surface_export, Field().Desc("with the surfaces exported"));
+  }
+
+  // Not in result.json: the model's numbers (rib_thickness_at_l2_mm, undercut and contact_arm_mm
+  // above are both).
   globoidal::AxisLimits<double> roller_axis_limits_mm;
   /// φ₀ of rollers 1, 2 at the top and the bottom dead point [deg], eq. (7).
   std::array<double, 2> initial_angle_top_deg, initial_angle_bottom_deg;
   std::array<std::array<double, 2>, 2> roller_angle_range_deg;  ///< [roller][min, max]
-  double rib_thickness_at_l2_mm = 0.0;
   globoidal::CycleSurvey survey;  ///< extremes in model units (rad, mm)
-  bool undercut = false;
-  double contact_arm_mm = 0.0;
 
   /// Series over the analysis grid (the columns of series.csv); angles in deg.
   struct Series {
@@ -298,8 +520,6 @@ struct Result {
 Study Parse(const Node& root);
 /// Geometry over the cycle, the dynamics at every speed and the surfaces to export.
 Result Run(const Study& study, const RunContext& ctx);
-/// result.json.
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, series.csv, dynamics CSVs, SVG plots, working_surfaces.csv/.stl.
 void Write(const Study& study, const Result& result, Outputs& out);
 

@@ -129,12 +129,37 @@ Result Run(const Study& st, const RunContext& ctx) {
                                            J2(fit.x[1], 1));
       row.fitted_input_torque_sd_Nm = fit.PropagatedStandardDeviation({t_in.v[0], t_in.v[1]});
     }
+    row.output_torque_Nm = data[i].output_torque_Nm;
+    row.measured_input_torque_Nm = data[i].input_torque_Nm;
+    row.measured_sd_Nm = data[i].sd_Nm;
     row.residual_Nm = row.fitted_input_torque_Nm - data[i].input_torque_Nm;
     row.weighted_residual = fit.residuals[i];
     row.fitted_efficiency = lcr::Efficiency(data[i].output_torque_Nm, row.fitted_input_torque_Nm, ratio);
     row.measured_efficiency = lcr::Efficiency(data[i].output_torque_Nm, data[i].input_torque_Nm, ratio);
     res.rows.push_back(row);
   }
+  // result.json's members (Result's Serialize).
+  res.name = st.name;
+  res.fit_status = optimizers::ToString(fit.status);  // "status" is the answer's one status (studies/status.h)
+  res.model = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
+  Result::FittedParameter* fitted[2] = {&res.parameters.friction_coefficient, &res.parameters.drag_torque_Nm};
+  const bool at_bound[2] = {res.friction_coefficient_at_bound, res.drag_torque_at_bound};
+  for (int i = 0; i < 2; ++i) {
+    fitted[i]->value = fit.x[i];
+    if (!fit.standard_errors.empty()) fitted[i]->standard_error = fit.standard_errors[i];
+    fitted[i]->at_bound = at_bound[i];
+  }
+  if (!fit.covariance.empty())
+    res.covariance = std::array<std::array<double, 2>, 2>{
+        {{fit.covariance[0], fit.covariance[1]}, {fit.covariance[2], fit.covariance[3]}}};
+  else
+    res.notes = std::vector<std::string>{"the Jacobian is rank deficient at the fit: no covariance"};
+  const int dof = res.degrees_of_freedom;
+  res.reduced_chi_square = dof > 0 ? res.chi_square / dof : NAN;
+  // The chi-square test: P(χ²(dof) ≥ χ²) = Q(dof/2, χ²/2), the regularized upper incomplete gamma.
+  res.chi_square_p_value = dof > 0 ? boost::math::gamma_q(0.5 * dof, 0.5 * res.chi_square) : NAN;
+  res.chi_square_p_value_limit = st.min_p_value;
+  res.solver = {fit.message, fit.iterations, fit.residual_evaluations};
   double tmax = 0;
   for (const Measurement& d : data) tmax = std::max(tmax, d.output_torque_Nm);
   tmax *= 1.1;
@@ -146,65 +171,8 @@ Result Run(const Study& st, const RunContext& ctx) {
   return res;
 }
 
-nlohmann::json ToJson(const Study& st, const Result& res) {
-  const optimizers::FitResult& fit = res.fit;
-  nlohmann::json j;
-  j["study"] = "lcr_friction_fit";
-  j["name"] = st.name;
-  j["fit_status"] = optimizers::ToString(fit.status);  // "status" is the answer's one status (studies/status.h)
-  j["model"] = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
-  j["speed_ratio"] = res.speed_ratio;
-  j["ideal_input_torque_per_output_torque"] = res.per_output_torque.ideal;
-  j["friction_input_torque_per_output_torque_and_mu"] = res.per_output_torque.friction;
-  const char* names[2] = {"friction_coefficient", "drag_torque_Nm"};
-  const bool at_bound[2] = {res.friction_coefficient_at_bound, res.drag_torque_at_bound};
-  for (int i = 0; i < 2; ++i) {
-    nlohmann::json p;
-    p["value"] = fit.x[i];
-    if (!fit.standard_errors.empty()) p["standard_error"] = fit.standard_errors[i];
-    p["at_bound"] = at_bound[i];
-    j["parameters"][names[i]] = p;
-  }
-  if (!fit.covariance.empty()) {
-    j["covariance"] = {{fit.covariance[0], fit.covariance[1]}, {fit.covariance[2], fit.covariance[3]}};
-    j["correlation"] = *res.correlation;
-  } else {
-    j["covariance"] = nullptr;
-    j["notes"] = {"the Jacobian is rank deficient at the fit: no covariance"};
-  }
-  const int dof = res.degrees_of_freedom;
-  j["chi_square"] = res.chi_square;
-  j["degrees_of_freedom"] = dof;
-  j["reduced_chi_square"] = dof > 0 ? nlohmann::json(res.chi_square / dof) : nlohmann::json(nullptr);
-  // The chi-square test: P(χ²(dof) ≥ χ²) = Q(dof/2, χ²/2), the regularized upper incomplete gamma.
-  j["chi_square_p_value"] =
-      dof > 0 ? nlohmann::json(boost::math::gamma_q(0.5 * dof, 0.5 * res.chi_square)) : nlohmann::json(nullptr);
-  j["chi_square_p_value_limit"] = st.min_p_value;
-  nlohmann::json rows = nlohmann::json::array();
-  for (size_t i = 0; i < res.rows.size(); ++i) {
-    const Row& row = res.rows[i];
-    const Measurement& d = st.measurements[i];
-    rows.push_back({{"output_torque_Nm", d.output_torque_Nm},
-                    {"fitted_input_torque_sd_Nm", row.fitted_input_torque_sd_Nm
-                                                      ? nlohmann::json(*row.fitted_input_torque_sd_Nm)
-                                                      : nlohmann::json(nullptr)},
-                    {"measured_input_torque_Nm", d.input_torque_Nm},
-                    {"measured_sd_Nm", d.sd_Nm},
-                    {"fitted_input_torque_Nm", row.fitted_input_torque_Nm},
-                    {"residual_Nm", row.residual_Nm},
-                    {"weighted_residual", row.weighted_residual},
-                    {"fitted_efficiency", row.fitted_efficiency},
-                    {"measured_efficiency", row.measured_efficiency},
-                    {"input_torque_with_mu_0.05_no_drag_Nm", row.paper_input_torque_Nm}});
-  }
-  j["measurements"] = rows;
-  j["solver"] = {{"message", fit.message}, {"iterations", fit.iterations},
-                 {"residual_evaluations", fit.residual_evaluations}};
-  return j;
-}
-
 void Write(const Study& st, const Result& res, Outputs& out) {
-  out.AddJson("result.json", ToJson(st, res));
+  out.AddJson("result.json", WriteResult(res));
   if (res.fit.status != optimizers::SolverStatus::kConverged)
     out.SetStatus(Status::kNotConverged, std::string("the fit stopped: ") + optimizers::ToString(res.fit.status));
   std::vector<double> to, tin, tsd, tfit, resid;
@@ -229,7 +197,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_friction_fit");
-CAMOPT_REGISTER_DECLARED_KIND("lcr_friction_fit", Input, "camopt study: friction coefficient and drag of a lobe cam reducer fitted to measured input torques");
+CAMOPT_REGISTER_KIND("lcr_friction_fit", Input, Result, "camopt study: friction coefficient and drag of a lobe cam reducer fitted to measured input torques");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the model's
 // mean input torque (Ceres' tolerances are fixed).

@@ -122,24 +122,106 @@ struct Study {
   double min_p_value = 0.05;                       ///< limits.chi_square_p_value
 };
 
-/// The fitted model at one measurement.
+/// The fitted model at one measurement (result.json's measurements[i]).
 struct Row {
+  double output_torque_Nm = 0, measured_input_torque_Nm = 0, measured_sd_Nm = 0;  ///< the measurement
   double fitted_input_torque_Nm = 0;
   std::optional<double> fitted_input_torque_sd_Nm;  ///< sqrt(gᵀ C g); none without a covariance
   double residual_Nm = 0, weighted_residual = 0;
   double fitted_efficiency = 0, measured_efficiency = 0;
   double paper_input_torque_Nm = 0;  ///< with the paper's μ and no drag
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("the measurement's output torque"));
+    a->Visit("measured_input_torque_Nm", &measured_input_torque_Nm, Field().Unit("N·m"));
+    a->Visit("measured_sd_Nm", &measured_sd_Nm, Field().Unit("N·m").Desc("its standard deviation"));
+    a->Visit("fitted_input_torque_Nm", &fitted_input_torque_Nm, Field().Unit("N·m").Desc("the fitted model's"));
+    a->Visit("fitted_input_torque_sd_Nm", &fitted_input_torque_sd_Nm,
+             Field().NullWhenAbsent().Unit("N·m").Desc("its standard deviation from the parameters' covariance (null: none)"));
+    a->Visit("residual_Nm", &residual_Nm, Field().Unit("N·m").Desc("fitted − measured"));
+    a->Visit("weighted_residual", &weighted_residual, Field().Desc("the residual over the measured standard deviation"));
+    a->Visit("fitted_efficiency", &fitted_efficiency, Field());
+    a->Visit("measured_efficiency", &measured_efficiency, Field());
+    a->Visit("input_torque_with_mu_0.05_no_drag_Nm", &paper_input_torque_Nm,
+             Field().Unit("N·m").Desc("the model with the paper's friction coefficient and no drag"));
+  }
 };
 
+/// The run's answer: result.json as declared (`camopt schema lcr_friction_fit --result`), then what
+/// the files are drawn from.
 struct Result {
+  /// A fitted parameter.
+  struct FittedParameter {
+    double value = 0;
+    std::optional<double> standard_error;
+    bool at_bound = false;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("value", &value, Field().Desc("the fitted value"));
+      a->Visit("standard_error", &standard_error, Field().Desc("from the covariance, when it exists"));
+      a->Visit("at_bound", &at_bound, Field().Desc("the value is at a bound of the parameter"));
+    }
+  };
+  struct Parameters {
+    FittedParameter friction_coefficient, drag_torque_Nm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("friction_coefficient", &friction_coefficient, Field().Desc("μ of the rollers' contacts"));
+      a->Visit("drag_torque_Nm", &drag_torque_Nm, Field().Desc("the no-load drag at the input [N·m]"));
+    }
+  };
+  struct Solver {
+    std::string message;
+    int iterations = 0, residual_evaluations = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("message", &message, Field().Desc("Ceres' summary"));
+      a->Visit("iterations", &iterations, Field());
+      a->Visit("residual_evaluations", &residual_evaluations, Field());
+    }
+  };
+
+  std::string study = "lcr_friction_fit", name, fit_status, model;
   double speed_ratio = 0;
   lcr::CycleInputTorque per_output_torque;  ///< t_ideal, t_friction
-  optimizers::FitResult fit;                ///< x = (μ, T_drag [N·m])
-  bool friction_coefficient_at_bound = false, drag_torque_at_bound = false;
+  Parameters parameters;
+  std::optional<std::array<std::array<double, 2>, 2>> covariance;  ///< of (μ, T_drag)
   std::optional<double> correlation;        ///< of μ and T_drag, when the covariance exists
+  std::optional<std::vector<std::string>> notes;
   double chi_square = 0;
   int degrees_of_freedom = 0;
+  double reduced_chi_square = 0, chi_square_p_value = 0, chi_square_p_value_limit = 0;  ///< NaN: no dof
   std::vector<Row> rows;                    ///< one per measurement
+  Solver solver;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("lcr_friction_fit"));
+    a->Visit("name", &name, Field().Desc("the design's name"));
+    a->Visit("fit_status", &fit_status, Field().Desc("the least-squares solver's end (`status` is the answer's)"));
+    a->Visit("model", &model, Field().Desc("the fitted torque model"));
+    a->Visit("speed_ratio", &speed_ratio, Field().Desc("the reducer's, signed"));
+    a->Visit("ideal_input_torque_per_output_torque", &per_output_torque.ideal,
+             Field().Desc("input torque per output torque without friction"));
+    a->Visit("friction_input_torque_per_output_torque_and_mu", &per_output_torque.friction,
+             Field().Desc("input torque per output torque and unit friction coefficient"));
+    a->Visit("parameters", &parameters, Field().Desc("the fitted parameters"));
+    a->Visit("covariance", &covariance,
+             Field().NullWhenAbsent().Desc("of (μ, drag torque [N·m]); null when the Jacobian is rank deficient"));
+    a->Visit("correlation", &correlation, Field().Desc("of μ and the drag torque, with the covariance"));
+    a->Visit("notes", &notes, Field().Desc("remarks for the report"));
+    a->Visit("chi_square", &chi_square, Field().Desc("Σ weighted residual²"));
+    a->Visit("degrees_of_freedom", &degrees_of_freedom, Field().Desc("measurements − 2"));
+    a->Visit("reduced_chi_square", &reduced_chi_square, Field().NullWhenNotFinite().Desc("χ² / dof (null: no dof)"));
+    a->Visit("chi_square_p_value", &chi_square_p_value,
+             Field().NullWhenNotFinite().Desc("P(χ²(dof) ≥ χ²): the model within the measurements' deviations (null: no dof)"));
+    a->Visit("chi_square_p_value_limit", &chi_square_p_value_limit, Field().Desc("the study's least p-value"));
+    a->Visit("measurements", &rows, Field().Desc("the model at each measurement"));
+    a->Visit("solver", &solver, Field().Desc("the least-squares solve"));
+  }
+
+  // Not in result.json:
+  optimizers::FitResult fit;                ///< x = (μ, T_drag [N·m])
+  bool friction_coefficient_at_bound = false, drag_torque_at_bound = false;
   std::vector<double> line_output_torque_Nm, line_input_torque_Nm;  ///< the fitted line, plotted
 };
 
@@ -147,7 +229,6 @@ struct Result {
 Study Parse(const Node& root);
 /// @throws StudyError for an infeasible design, std::runtime_error when the fit fails.
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, fit.csv, fit.svg.
 void Write(const Study& study, const Result& result, Outputs& out);
 

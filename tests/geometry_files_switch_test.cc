@@ -37,16 +37,14 @@ struct Kind {
   Study (*parse)(const studies::Node&);
   Result (*run)(const Study&, const studies::RunContext&);
   void (*write)(const Study&, const Result&, studies::Outputs&);
-  json (*to_json)(const Study&, const Result&);
 };
 template <typename Study, typename Result>
 Kind(Study (*)(const studies::Node&), Result (*)(const Study&, const studies::RunContext&),
-     void (*)(const Study&, const Result&, studies::Outputs&), json (*)(const Study&, const Result&))
-    -> Kind<Study, Result>;
+     void (*)(const Study&, const Result&, studies::Outputs&)) -> Kind<Study, Result>;
 
-#define CAMOPT_KIND(ns) Kind{&studies::ns::Parse, &studies::ns::Run, &studies::ns::Write, &studies::ns::ToJson}
+#define CAMOPT_KIND(ns) Kind{&studies::ns::Parse, &studies::ns::Run, &studies::ns::Write}
 
-// Parses, runs and writes `study`; returns the outputs and result.json.
+// Parses, runs and writes `study`; returns the outputs and the result.json they hold.
 template <typename K>
 std::pair<studies::Outputs, json> RunKind(const K& kind, const json& study) {
   const studies::Node root(&study, "study.json", "");
@@ -54,7 +52,7 @@ std::pair<studies::Outputs, json> RunKind(const K& kind, const json& study) {
   const auto res = kind.run(st, {"study.json", true});
   studies::Outputs out;
   kind.write(st, res, out);
-  return {out, kind.to_json(st, res)};
+  return {out, json::parse(out.files().at("result.json"))};
 }
 
 // As given: `cad_files` geometry files; with "geometry_files": false: none, every other file the

@@ -148,9 +148,9 @@ TEST(GloboidalStudy, PaperExampleThroughTheCli) {
   ASSERT_EQ(res.exit_code, 0) << res.stderr_text;
   const json r = json::parse(ReadFile(dir / "result.json"));
   EXPECT_EQ(r["dynamics"]["speeds"].size(), 2u);
-  // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
+  // The CLI writes what the C++ entry points give: result.json is WriteResult(Run(Parse)).
   const Ran ran = ParseAndRun(file);
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(r), globoidal_study::ToJson(ran.study, ran.result));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(r), studies::WriteResult(ran.result));
   for (const char* f : {"series.csv", "dynamics_600rpm.csv", "dynamics_120rpm.csv",
                         "svaj.svg", "svaj_time.svg", "pressure_angle.svg", "contact_forces_600rpm.svg",
                         "contact_forces_120rpm.svg", "turret_velocity_600rpm.svg",
@@ -208,7 +208,7 @@ TEST(GloboidalStudy, GeometryOnlySkipsDynamicsAndExport) {
   const Ran asked = ParseAndRun(file);
   EXPECT_TRUE(asked.result.speeds.empty());
   EXPECT_TRUE(asked.result.surface_points[1].empty());
-  const json j = globoidal_study::ToJson(asked.study, asked.result);
+  const json j = studies::WriteResult(asked.result);
   EXPECT_FALSE(j.contains("dynamics"));
   EXPECT_FALSE(j.contains("load"));
   EXPECT_FALSE(j.contains("surface_export"));
@@ -246,7 +246,7 @@ TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
   EXPECT_LE(r.survey.min_undercut_margin.value, 0.0);
   EXPECT_FALSE(r.dynamics_skipped.empty());
   EXPECT_TRUE(r.speeds.empty());
-  EXPECT_TRUE(globoidal_study::ToJson(ran.study, r)["dynamics"].contains("skipped"));
+  EXPECT_TRUE(studies::WriteResult(r)["dynamics"].contains("skipped"));
 }
 
 // The verdict's limits: the pressure angle against its default 45° (Rothbart, for a follower on a
@@ -254,7 +254,7 @@ TEST(GloboidalStudy, UndercutSkipsDynamicsAndIsReported) {
 // 4 mm rollers: about 7.7 GPa, so 2000 MPa fails), limits_ok, and --strict's exit 3.
 TEST(GloboidalStudy, LimitsGiveTheVerdict) {
   const Ran ran = ParseAndRun(Example());
-  json j = globoidal_study::ToJson(ran.study, ran.result);
+  json j = studies::WriteResult(ran.result);
   EXPECT_EQ(j["limits"]["pressure_angle_deg"], 45.0);
   EXPECT_EQ(j["limits"]["defaults"], json({"pressure_angle_deg"}));
   EXPECT_TRUE(j["pressure_angle_ok"].get<bool>());  // 34.97°
@@ -269,7 +269,7 @@ TEST(GloboidalStudy, LimitsGiveTheVerdict) {
   json study = Example();
   study["limits"] = {{"pressure_angle_deg", 30}, {"contact_stress_MPa", 2000}};
   const Ran strict = ParseAndRun(study);
-  j = globoidal_study::ToJson(strict.study, strict.result);
+  j = studies::WriteResult(strict.result);
   EXPECT_EQ(j["limits"]["defaults"], json::array());
   EXPECT_FALSE(j["pressure_angle_ok"].get<bool>());
   EXPECT_FALSE(j["contact_stress_ok"].get<bool>());

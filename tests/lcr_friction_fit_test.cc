@@ -125,7 +125,7 @@ TEST(LcrFrictionFit, ChiSquareTestIsTheVerdict) {
   ASSERT_EQ(study["measurements"].size(), 3u);
   const studies::Node root(&study, "fit.json", "");
   const fit::Study st = fit::Parse(root);
-  const json j = fit::ToJson(st, fit::Run(st, {"fit.json", true}));
+  const json j = studies::WriteResult(fit::Run(st, {"fit.json", true}));
   ASSERT_EQ(j["degrees_of_freedom"], 1);
   const double chi2 = j["chi_square"].get<double>(), p = j["chi_square_p_value"].get<double>();
   EXPECT_NEAR(p, std::erfc(std::sqrt(chi2 / 2)), 1e-12);
@@ -135,14 +135,14 @@ TEST(LcrFrictionFit, ChiSquareTestIsTheVerdict) {
   EXPECT_EQ(t.exceeded.empty(), p >= 0.05) << "p = " << p;
   study["limits"] = {{"chi_square_p_value", std::min(0.999, 2 * p)}};
   const fit::Study strict = fit::Parse(studies::Node(&study, "fit.json", ""));
-  const json js = fit::ToJson(strict, fit::Run(strict, {"fit.json", true}));
+  const json js = studies::WriteResult(fit::Run(strict, {"fit.json", true}));
   t = studies::EvaluateHeadlines("lcr_friction_fit", study, js);
   ASSERT_EQ(t.exceeded.size(), 1u);
   study["limits"] = {{"chi_square_p_value", 1.0}};
   camopt::testing::ExpectStudyRejected(study, "friction-p", "/limits/chi_square_p_value", "a number in (0, 1)");
 }
 
-// The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run); fit.csv has a
+// The CLI writes what the C++ entry points give: result.json is WriteResult(Run(Parse)); fit.csv has a
 // row per measurement of the study file, its torques, and residual = fitted − measured; fit.svg is
 // written.
 TEST(LcrFrictionFit, CliWritesTheEntryPointsResult) {
@@ -154,7 +154,7 @@ TEST(LcrFrictionFit, CliWritesTheEntryPointsResult) {
   const json written = json::parse(ReadFile(dir / "out" / "result.json"));
   const studies::Node root(&study, "fit.json", "");
   const fit::Study st = fit::Parse(root);
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(written), fit::ToJson(st, fit::Run(st, {"fit.json", true})));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(written), studies::WriteResult(fit::Run(st, {"fit.json", true})));
   for (const char* f : {"fit.csv", "fit.svg"}) EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   const auto table = camopt::testing::ReadCsv(ReadFile(dir / "out" / "fit.csv"));
   const json& measured = study["measurements"];
