@@ -155,6 +155,125 @@ LifeResult TunedLives(const Study& st, const std::array<objectives::LcrCrowningS
 }
 }  // namespace
 
+namespace {
+
+// The peaks of one check per misalignment (result.json's tuned/uncrowned slices and half_space).
+std::vector<Result::CheckRow> CheckRows(const Study& st, const objectives::LcrCrowningCheck& c,
+                                        const std::vector<double>& dy) {
+  std::vector<Result::CheckRow> out;
+  for (size_t g = 0; g < st.spec.misalignments_rad.size(); ++g) {
+    Result::CheckRow j;
+    j.misalignment_mrad = st.spec.misalignments_rad[g] * 1e3;
+    j.design_max_contact_stress_MPa = c.design_MPa[g];
+    j.design_edge_loaded = bool(c.design_edge[g]);
+    j.overload_max_contact_stress_MPa = c.overload_MPa[g];
+    j.overload_edge_loaded = bool(c.overload_edge[g]);
+    if (g < dy.size()) j.cell_dy_mm = dy[g];
+    out.push_back(j);
+  }
+  return out;
+}
+
+// result.json's members (Result's Serialize) from the model's numbers, in the file's units.
+void FillResult(const Study& st, Result& res) {
+  res.name = st.name;
+  res.design_torque_Nm = st.spec.design_load.output_torque_Nmm / 1000;
+  res.overload_torque_Nm = st.spec.overload_torque_Nmm / 1000;
+  res.slices = st.spec.slices;
+  res.angle_steps = st.spec.angle_steps;
+  for (int k : {0, 1}) {
+    const auto& r = res.tuned[k];
+    Result::Side& c = k == 0 ? res.input : res.output;
+    c.crowning.coefficient_mm = r.coefficient_mm;
+    c.crowning.effective_length_mm = st.spec.effective_length_mm[k];
+    c.feasible = r.feasible;
+    c.evaluations = r.evaluations;
+    c.tuned.slices = CheckRows(st, res.tuned_check[k].slices, {});
+    c.uncrowned.slices = CheckRows(st, res.uncrowned_check[k].slices, {});
+    if (st.half_space_check) {
+      c.tuned.half_space = CheckRows(st, res.tuned_check[k].half_space, res.tuned_check[k].half_space_dy_mm);
+      c.uncrowned.half_space =
+          CheckRows(st, res.uncrowned_check[k].half_space, res.uncrowned_check[k].half_space_dy_mm);
+      c.half_space_grid = std::array<int, 2>{st.grid_nx, st.grid_ny};
+    }
+  }
+  if (st.half_space_check) {
+    res.verified = res.verification.verified();
+    res.verification_block = VerificationBlock::Of(res.verification);
+    // The verdict's one number: the largest edge-pressure share the accurate model finds on either
+    // cam, misalignment and torque, against its limit (with that check's error estimate).
+    const objectives::VerifiedLimit* worst = nullptr;
+    for (const objectives::VerifiedLimit& c : res.verification.checks)
+      if (!worst || c.accurate_value - c.limit_value > worst->accurate_value - worst->limit_value) worst = &c;
+    if (worst) {
+      res.max_edge_pressure_share = worst->accurate_value;
+      res.max_edge_pressure_share_error = worst->estimated_error;
+      res.max_edge_pressure_share_where = worst->limit + ", " + worst->where;
+      res.edge_pressure_share_limit = worst->limit_value;
+    }
+  } else {
+    res.verified = false;
+    res.verification_block = VerificationBlock::NotRun("tuning.half_space_check is false: not verified");
+  }
+  if (res.life) {
+    const LifeResult& l = *res.life;
+    Result::Life& lj = res.life_block.emplace();
+    const char* names[2] = {"input_roller", "output_roller"};
+    double shortest = kInf;
+    std::string shortest_name;
+    auto row = [&](const std::string& element, const std::string& kind, const lcr::LcrBearingLife& b, double c,
+                   double c0, double hours) {
+      Result::LifeRow e;
+      e.element = element;
+      e.kind = kind;
+      e.equivalent_load_N = b.equivalent_load_N;
+      e.max_load_N = b.max_load_N;
+      e.revolutions_per_input_revolution = b.revolutions_per_input_revolution;
+      e.dynamic_rating_N = c;
+      e.L10h = hours;
+      if (c0 > 0) e.static_rating_N = c0, e.s0 = b.max_load_N > 0 ? c0 / b.max_load_N : NAN;
+      lj.table.push_back(e);
+    };
+    for (int k = 0; k < 2; ++k) {
+      (k == 0 ? lj.input_roller_L10h : lj.output_roller_L10h) = l.rollers[size_t(k)].L10h;
+      if (l.rollers[size_t(k)].L10h < shortest || shortest_name.empty())
+        shortest = l.rollers[size_t(k)].L10h, shortest_name = names[k];
+      row(names[k], "roller", l.rollers[size_t(k)], st.life->dynamic_rating_N[size_t(k)],
+          st.life->static_rating_N[size_t(k)], l.rollers[size_t(k)].L10h);
+    }
+    if (l.eccentric) {
+      lj.eccentric_bearing_L10h = l.eccentric->L10h;
+      if (l.eccentric->L10h < shortest) shortest = l.eccentric->L10h, shortest_name = "eccentric_bearing";
+      row("eccentric_bearing", st.life->eccentric->ball ? "ball" : "roller", *l.eccentric, st.life->eccentric->dynamic_N,
+          st.life->eccentric->static_N, l.eccentric->L10h);
+    }
+    lj.shortest_L10h = shortest;
+    lj.shortest_bearing = shortest_name;
+    for (size_t g = 0; g < l.sliced.size(); ++g) {
+      const double mrad = st.spec.misalignments_rad[g] * 1e3;
+      Result::SlicedRow sj;
+      sj.misalignment_mrad = mrad;
+      for (int k = 0; k < 2; ++k) {
+        const SlicedLife& sl = l.sliced[g][size_t(k)];
+        (k == 0 ? sj.input_roller_sliced_L10h : sj.output_roller_sliced_L10h) = sl.L10h;
+        row(std::string(names[k]) + "_sliced at " + Format(mrad) + " mrad", "roller, sliced (ISO/TS 16281)",
+            l.rollers[size_t(k)], st.life->dynamic_rating_N[size_t(k)], st.life->static_rating_N[size_t(k)], sl.L10h);
+      }
+      lj.sliced.push_back(sj);
+    }
+    for (const lcr::LcrDutyLine& line : st.life->lines)
+      lj.duty_cycle.push_back({line.output_torque_Nmm / 1000.0, line.input_speed_rpm, line.time_share});
+    lj.model = "lives of the tuned design (the tuning's objective is the contact pressure, not the life): ISO 281:2007 "
+               "basic rating life of each bearing over the duty cycle (rigid load law, the tuning's angle steps), and "
+               "each roller sliced with its tuned crowning at every misalignment of the tuning (ISO/TS 16281's idea, "
+               "docs/life.md \"Sliced roller life under tilt\"); sliced lives are not in shortest_L10h";
+  }
+  res.notes = {"uncrowned rollers are edge-loaded: their peak is the end row's pressure and grows as the resolution "
+               "refines (slice width / cell_dy_mm); the crowned values are converged (docs/lcr.md)"};
+}
+
+}  // namespace
+
 Result Run(const Study& st, const RunContext& ctx) {
   Result res;
   objectives::LcrCrowningTuningSpec spec = st.spec;
@@ -226,137 +345,10 @@ Result Run(const Study& st, const RunContext& ctx) {
                                       std::to_string(st.grid_nx) + "x" + std::to_string(st.grid_ny) + " cells, " +
                                       std::to_string(spec.angle_steps) + " angles)";
   }
+  FillResult(st, res);
   return res;
 }
 
-namespace {
-
-nlohmann::json CheckJson(const Study& st, const objectives::LcrCrowningCheck& c, const std::vector<double>& dy) {
-  nlohmann::json out = nlohmann::json::array();
-  for (size_t g = 0; g < st.spec.misalignments_rad.size(); ++g) {
-    nlohmann::json j = {{"misalignment_mrad", st.spec.misalignments_rad[g] * 1e3},
-                        {"design_max_contact_stress_MPa", c.design_MPa[g]},
-                        {"design_edge_loaded", bool(c.design_edge[g])},
-                        {"overload_max_contact_stress_MPa", c.overload_MPa[g]},
-                        {"overload_edge_loaded", bool(c.overload_edge[g])}};
-    if (g < dy.size()) j["cell_dy_mm"] = dy[g];
-    out.push_back(j);
-  }
-  return out;
-}
-
-}  // namespace
-
-nlohmann::json ToJson(const Study& st, const Result& res) {
-  nlohmann::json j;
-  j["study"] = "lcr_crowning_tuning";
-  j["name"] = st.name;
-  j["design_torque_Nm"] = st.spec.design_load.output_torque_Nmm / 1000;
-  j["overload_torque_Nm"] = st.spec.overload_torque_Nmm / 1000;
-  j["slices"] = st.spec.slices;
-  j["angle_steps"] = st.spec.angle_steps;
-  for (lcr::Side s : {lcr::Side::kInput, lcr::Side::kOutput}) {
-    const int k = s == lcr::Side::kInput ? 0 : 1;
-    const auto& r = res.tuned[k];
-    nlohmann::json& c = j[k == 0 ? "input" : "output"];
-    c["crowning"] = {{"type", "logarithmic"}, {"coefficient_mm", r.coefficient_mm},
-                     {"effective_length_mm", st.spec.effective_length_mm[k]}};
-    c["feasible"] = r.feasible;
-    c["evaluations"] = r.evaluations;
-    c["tuned"] = {{"slices", CheckJson(st, res.tuned_check[k].slices, {})}};
-    c["uncrowned"] = {{"slices", CheckJson(st, res.uncrowned_check[k].slices, {})}};
-    if (st.half_space_check) {
-      c["tuned"]["half_space"] = CheckJson(st, res.tuned_check[k].half_space, res.tuned_check[k].half_space_dy_mm);
-      c["uncrowned"]["half_space"] =
-          CheckJson(st, res.uncrowned_check[k].half_space, res.uncrowned_check[k].half_space_dy_mm);
-      c["half_space_grid"] = {st.grid_nx, st.grid_ny};
-    }
-  }
-  if (st.half_space_check) {
-    AddVerificationJson(res.verification, j);
-    // The verdict's one number: the largest edge-pressure share the accurate model finds on either
-    // cam, misalignment and torque, against its limit (with that check's error estimate).
-    const objectives::VerifiedLimit* worst = nullptr;
-    for (const objectives::VerifiedLimit& c : res.verification.checks)
-      if (!worst || c.accurate_value - c.limit_value > worst->accurate_value - worst->limit_value) worst = &c;
-    if (worst) {
-      j["max_edge_pressure_share"] = worst->accurate_value;
-      j["max_edge_pressure_share_error"] = worst->estimated_error;
-      j["max_edge_pressure_share_where"] = worst->limit + ", " + worst->where;
-      j["edge_pressure_share_limit"] = worst->limit_value;
-    }
-  } else {
-    j["verified"] = false;
-    j["verification"] = {{"accurate_model", nullptr}, {"note", "tuning.half_space_check is false: not verified"}};
-  }
-  if (res.life) {
-    const LifeResult& l = *res.life;
-    auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-    nlohmann::json lj;
-    const char* names[2] = {"input_roller", "output_roller"};
-    double shortest = kInf;
-    std::string shortest_name;
-    nlohmann::json table = nlohmann::json::array();
-    auto row = [&](const std::string& element, const std::string& kind, const lcr::LcrBearingLife& b, double c,
-                   double c0, double hours) {
-      nlohmann::json e = {{"element", element},
-                          {"kind", kind},
-                          {"equivalent_load_N", b.equivalent_load_N},
-                          {"max_load_N", b.max_load_N},
-                          {"revolutions_per_input_revolution", b.revolutions_per_input_revolution},
-                          {"dynamic_rating_N", c},
-                          {"L10h", finite(hours)},
-                          {"pass", nullptr}};
-      if (c0 > 0) e["static_rating_N"] = c0, e["s0"] = b.max_load_N > 0 ? nlohmann::json(c0 / b.max_load_N) : nullptr;
-      table.push_back(e);
-    };
-    for (int k = 0; k < 2; ++k) {
-      lj[std::string(names[k]) + "_L10h"] = finite(l.rollers[size_t(k)].L10h);
-      if (l.rollers[size_t(k)].L10h < shortest || shortest_name.empty())
-        shortest = l.rollers[size_t(k)].L10h, shortest_name = names[k];
-      row(names[k], "roller", l.rollers[size_t(k)], st.life->dynamic_rating_N[size_t(k)],
-          st.life->static_rating_N[size_t(k)], l.rollers[size_t(k)].L10h);
-    }
-    if (l.eccentric) {
-      lj["eccentric_bearing_L10h"] = finite(l.eccentric->L10h);
-      if (l.eccentric->L10h < shortest) shortest = l.eccentric->L10h, shortest_name = "eccentric_bearing";
-      row("eccentric_bearing", st.life->eccentric->ball ? "ball" : "roller", *l.eccentric, st.life->eccentric->dynamic_N,
-          st.life->eccentric->static_N, l.eccentric->L10h);
-    }
-    lj["shortest_L10h"] = finite(shortest);
-    lj["shortest_bearing"] = shortest_name;
-    nlohmann::json sliced = nlohmann::json::array();
-    for (size_t g = 0; g < l.sliced.size(); ++g) {
-      const double mrad = st.spec.misalignments_rad[g] * 1e3;
-      nlohmann::json sj = {{"misalignment_mrad", mrad}};
-      for (int k = 0; k < 2; ++k) {
-        const SlicedLife& sl = l.sliced[g][size_t(k)];
-        sj[std::string(names[k]) + "_sliced_L10h"] = finite(sl.L10h);
-        row(std::string(names[k]) + "_sliced at " + Format(mrad) + " mrad", "roller, sliced (ISO/TS 16281)",
-            l.rollers[size_t(k)], st.life->dynamic_rating_N[size_t(k)], st.life->static_rating_N[size_t(k)], sl.L10h);
-      }
-      sliced.push_back(sj);
-    }
-    lj["sliced"] = sliced;
-    nlohmann::json lines = nlohmann::json::array();
-    for (const lcr::LcrDutyLine& line : st.life->lines)
-      lines.push_back({{"output_torque_Nm", line.output_torque_Nmm / 1000.0},
-                       {"input_speed_rpm", line.input_speed_rpm},
-                       {"time_share", line.time_share}});
-    lj["duty_cycle"] = lines;
-    lj["life_h"] = nullptr;
-    lj["table"] = table;
-    lj["model"] = "lives of the tuned design (the tuning's objective is the contact pressure, not the life): ISO 281:2007 "
-                  "basic rating life of each bearing over the duty cycle (rigid load law, the tuning's angle steps), and "
-                  "each roller sliced with its tuned crowning at every misalignment of the tuning (ISO/TS 16281's idea, "
-                  "docs/life.md \"Sliced roller life under tilt\"); sliced lives are not in shortest_L10h";
-    j["life"] = lj;
-  }
-  j["notes"] = nlohmann::json::array(
-      {"uncrowned rollers are edge-loaded: their peak is the end row's pressure and grows as the resolution "
-       "refines (slice width / cell_dy_mm); the crowned values are converged (docs/lcr.md)"});
-  return j;
-}
 
 void Write(const Study& st, const Result& res, Outputs& out) {
   Table t;
@@ -374,7 +366,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
   out.Add("stress_vs_coefficient.svg",
           SvgLinePlot(curves, {"Largest contact pressure at the design torque (worst misalignment), slices model",
                                "logarithmic crowning coefficient f [mm]", "contact pressure [MPa]"}));
-  out.AddJson("result.json", ToJson(st, res));
+  out.AddJson("result.json", WriteResult(res));
   std::string infeasible;
   for (int k = 0; k < 2; ++k)
     if (!res.tuned[k].feasible) infeasible += std::string(infeasible.empty() ? "" : "; ") + (k == 0 ? "input" : "output") +
@@ -392,7 +384,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_crowning_tuning");
-CAMOPT_REGISTER_DECLARED_KIND("lcr_crowning_tuning", Input,
+CAMOPT_REGISTER_KIND("lcr_crowning_tuning", Input, Result,
                               "camopt study: logarithmic roller crowning of a lobe cam reducer, tuned per cam");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.

@@ -21,6 +21,7 @@
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
+#include "studies/verification_json.h"
 
 namespace camopt::studies::lcr_crowning_tuning {
 
@@ -140,7 +141,157 @@ struct SideCheck {
   std::vector<double> half_space_dy_mm;  // per misalignment (design torque)
 };
 
+/// The run's answer: result.json as declared (`camopt schema lcr_crowning_tuning --result`), then
+/// the model's numbers the CSV and SVG files are drawn from.
 struct Result {
+  /// The peak pressures at one misalignment.
+  struct CheckRow {
+    double misalignment_mrad = 0, design_max_contact_stress_MPa = 0, overload_max_contact_stress_MPa = 0;
+    bool design_edge_loaded = false, overload_edge_loaded = false;
+    std::optional<double> cell_dy_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("misalignment_mrad", &misalignment_mrad, Field().Unit("mrad"));
+      a->Visit("design_max_contact_stress_MPa", &design_max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("design_edge_loaded", &design_edge_loaded, Field().Desc("the peak at the design torque is at a roller end"));
+      a->Visit("overload_max_contact_stress_MPa", &overload_max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("overload_edge_loaded", &overload_edge_loaded, Field().Desc("the same at the overload torque"));
+      a->Visit("cell_dy_mm", &cell_dy_mm, Field().Unit("mm").Desc("half_space: the cells' size along the roller"));
+    }
+  };
+  /// A crowning checked by both contact models.
+  struct Checked {
+    std::vector<CheckRow> slices;
+    std::optional<std::vector<CheckRow>> half_space;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("slices", &slices, Field().Desc("the slices model, per misalignment"));
+      a->Visit("half_space", &half_space, Field().Desc("the half_space model, per misalignment (with its check)"));
+    }
+  };
+  struct Crowning {
+    std::string type = "logarithmic";
+    double coefficient_mm = 0, effective_length_mm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("type", &type, Field().Const("logarithmic"));
+      a->Visit("coefficient_mm", &coefficient_mm, Field().Unit("mm").Desc("the tuned LCM coefficient f"));
+      a->Visit("effective_length_mm", &effective_length_mm, Field().Unit("mm"));
+    }
+  };
+  /// One cam's tuning.
+  struct Side {
+    Crowning crowning;
+    bool feasible = false;
+    int evaluations = 0;
+    Checked tuned, uncrowned;
+    std::optional<std::array<int, 2>> half_space_grid;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("crowning", &crowning, Field().Desc("the tuned crowning"));
+      a->Visit("feasible", &feasible, Field().Desc("some coefficient keeps the pressure off the ends at overload"));
+      a->Visit("evaluations", &evaluations, Field().Desc("contact cycles solved by the tuning"));
+      a->Visit("tuned", &tuned, Field().Desc("the tuned crowning's peaks"));
+      a->Visit("uncrowned", &uncrowned, Field().Desc("straight rollers' peaks, for comparison"));
+      a->Visit("half_space_grid", &half_space_grid, Field().Desc("the half_space check's cells [nx, ny]"));
+    }
+  };
+  struct LifeRow {
+    std::string element, kind;
+    double equivalent_load_N = 0, max_load_N = 0, revolutions_per_input_revolution = 0, dynamic_rating_N = 0;
+    double L10h = 0;
+    std::optional<bool> pass;  ///< always null: the tuning has no life limit
+    std::optional<double> static_rating_N, s0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("element", &element, Field());
+      a->Visit("kind", &kind, Field());
+      a->Visit("equivalent_load_N", &equivalent_load_N, Field().Unit("N"));
+      a->Visit("max_load_N", &max_load_N, Field().Unit("N"));
+      a->Visit("revolutions_per_input_revolution", &revolutions_per_input_revolution, Field());
+      a->Visit("dynamic_rating_N", &dynamic_rating_N, Field().Unit("N"));
+      a->Visit("L10h", &L10h, Field().NullWhenNotFinite().Unit("h").Desc("null: unlimited"));
+      a->Visit("pass", &pass, Field().NullWhenAbsent().Desc("null: no life limit in a tuning"));
+      a->Visit("static_rating_N", &static_rating_N, Field().Unit("N"));
+      a->Visit("s0", &s0, Field().NullWhenNotFinite().Desc("static safety, with a static rating (null: no load)"));
+    }
+  };
+  struct SlicedRow {
+    double misalignment_mrad = 0, input_roller_sliced_L10h = 0, output_roller_sliced_L10h = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("misalignment_mrad", &misalignment_mrad, Field().Unit("mrad"));
+      a->Visit("input_roller_sliced_L10h", &input_roller_sliced_L10h, Field().NullWhenNotFinite().Unit("h"));
+      a->Visit("output_roller_sliced_L10h", &output_roller_sliced_L10h, Field().NullWhenNotFinite().Unit("h"));
+    }
+  };
+  struct DutyLine {
+    double output_torque_Nm = 0, input_speed_rpm = 0, time_share = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m"));
+      a->Visit("input_speed_rpm", &input_speed_rpm, Field().Unit("rpm"));
+      a->Visit("time_share", &time_share, Field());
+    }
+  };
+  /// The tuned design's bearing lives (with a speed or a duty cycle).
+  struct Life {
+    double input_roller_L10h = 0, output_roller_L10h = 0;
+    std::optional<double> eccentric_bearing_L10h;
+    double shortest_L10h = 0;
+    std::string shortest_bearing;
+    std::vector<SlicedRow> sliced;
+    std::vector<DutyLine> duty_cycle;
+    std::optional<double> life_h;  ///< always null: the tuning has no life limit
+    std::vector<LifeRow> table;
+    std::string model;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("input_roller_L10h", &input_roller_L10h, Field().NullWhenNotFinite().Unit("h"));
+      a->Visit("output_roller_L10h", &output_roller_L10h, Field().NullWhenNotFinite().Unit("h"));
+      a->Visit("eccentric_bearing_L10h", &eccentric_bearing_L10h, Field().NullWhenNotFinite().Unit("h"));
+      a->Visit("shortest_L10h", &shortest_L10h, Field().NullWhenNotFinite().Unit("h").Desc("sliced lives not included"));
+      a->Visit("shortest_bearing", &shortest_bearing, Field());
+      a->Visit("sliced", &sliced, Field().Desc("each roller sliced with its tuned crowning, per misalignment"));
+      a->Visit("duty_cycle", &duty_cycle, Field());
+      a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("the life limit: none in a tuning"));
+      a->Visit("table", &table, Field().Desc("report.html's rows"));
+      a->Visit("model", &model, Field());
+    }
+  };
+
+  std::string study = "lcr_crowning_tuning", name;
+  double design_torque_Nm = 0, overload_torque_Nm = 0;
+  int slices = 0, angle_steps = 0;
+  Side input, output;
+  bool verified = false;
+  VerificationBlock verification_block;  ///< result.json's "verification"
+  std::optional<double> max_edge_pressure_share, max_edge_pressure_share_error, edge_pressure_share_limit;
+  std::optional<std::string> max_edge_pressure_share_where;
+  std::optional<Life> life_block;  ///< result.json's "life"
+  std::vector<std::string> notes;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("lcr_crowning_tuning"));
+    a->Visit("name", &name, Field().Desc("the design's name"));
+    a->Visit("design_torque_Nm", &design_torque_Nm, Field().Unit("N·m"));
+    a->Visit("overload_torque_Nm", &overload_torque_Nm, Field().Unit("N·m"));
+    a->Visit("slices", &slices, Field().Desc("slices along each roller"));
+    a->Visit("angle_steps", &angle_steps, Field().Desc("input angles of the contact cycles"));
+    a->Visit("input", &input, Field().Desc("the input cam's tuning"));
+    a->Visit("output", &output, Field().Desc("the output cam's tuning"));
+    a->Visit("verified", &verified, Field().Desc("the accurate model confirms the tuning (a view of `status`)"));
+    a->Visit("verification", &verification_block, Field().Desc("the accurate model's checks"));
+    a->Visit("max_edge_pressure_share", &max_edge_pressure_share,
+             Field().Desc("the largest roller-end share of the peak pressure the accurate model finds (with its check)"));
+    a->Visit("max_edge_pressure_share_error", &max_edge_pressure_share_error, Field().Desc("its estimated error"));
+    a->Visit("max_edge_pressure_share_where", &max_edge_pressure_share_where, Field());
+    a->Visit("edge_pressure_share_limit", &edge_pressure_share_limit, Field());
+    a->Visit("life", &life_block, Field().Desc("the tuned design's bearing lives, with a speed or a duty cycle"));
+    a->Visit("notes", &notes, Field());
+  }
+
+  // Not in result.json: the model's numbers.
   std::array<objectives::LcrCrowningSideResult, 2> tuned;
   std::array<SideCheck, 2> tuned_check, uncrowned_check;  // half_space part empty when not asked
   /// The tuned crowning checked by the accurate model (objectives/verification.h): not run when
@@ -152,7 +303,6 @@ struct Result {
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, stress_vs_coefficient.csv/.svg.
 void Write(const Study& study, const Result& result, Outputs& out);
 

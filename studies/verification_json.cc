@@ -8,31 +8,31 @@
 
 namespace camopt::studies {
 
-void AddVerificationJson(const objectives::Verification& v, nlohmann::json& result) {
-  nlohmann::json checks = nlohmann::json::array(), steps = nlohmann::json::array();
+VerificationBlock VerificationBlock::Of(const objectives::Verification& v) {
+  VerificationBlock b;
+  b.accurate_model = v.accurate_model;
+  b.rounds = int(v.history.size());
+  b.max_rounds = v.max_rounds;
+  b.checks.emplace();
   for (const objectives::VerifiedLimit& c : v.checks)
-    checks.push_back({{"limit", c.limit},
-                      {"where", c.where},
-                      {"limit_value", Finite(c.limit_value, "verification limit")},
-                      {"accurate_value", NumberOrNull(c.accurate_value)},
-                      {"estimated_error", NumberOrNull(c.estimated_error)},
-                      {"fast_value", NumberOrNull(c.fast_value)},
-                      {"upper", c.upper},
-                      {"holds", c.holds()}});
+    b.checks->push_back({c.limit, c.where, c.limit_value, c.accurate_value, c.estimated_error, c.fast_value, c.upper,
+                         c.holds()});
+  b.tightening.emplace();
   for (const objectives::TighteningStep& t : v.history)
-    steps.push_back({{"round", t.round},
-                     {"limit", t.limit},
-                     {"where", t.where},
-                     {"fast_limit_before", NumberOrNull(t.fast_limit_before)},
-                     {"fast_limit_after", NumberOrNull(t.fast_limit_after)},
-                     {"accurate_value", NumberOrNull(t.accurate_value)},
-                     {"limit_value", NumberOrNull(t.limit_value)}});
+    b.tightening->push_back({t.round, t.limit, t.where, t.fast_limit_before, t.fast_limit_after, t.accurate_value,
+                             t.limit_value});
+  return b;
+}
+
+VerificationBlock VerificationBlock::NotRun(std::string note) {
+  VerificationBlock b;
+  b.note = std::move(note);
+  return b;
+}
+
+void AddVerificationJson(const objectives::Verification& v, nlohmann::json& result) {
   result["verified"] = v.verified();
-  result["verification"] = {{"accurate_model", v.accurate_model},
-                            {"rounds", int(v.history.size())},
-                            {"max_rounds", v.max_rounds},
-                            {"checks", checks},
-                            {"tightening", steps}};
+  result["verification"] = WriteResult(VerificationBlock::Of(v));
 }
 
 void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry) {

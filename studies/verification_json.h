@@ -8,14 +8,73 @@
 //                     "accurate_value", "limit_value"}, ...]}
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "objectives/verification.h"
 #include "sizing/limit_slope.h"
+#include "studies/archive.h"
 
 namespace camopt::studies {
+
+/// The "verification" block above, declared (studies/archive.h) for the kinds whose result is: a
+/// member `VerificationBlock verification` of their Result, filled with Of (or NotRun).
+struct VerificationBlock {
+  struct Check {
+    std::string limit, where;
+    double limit_value = 0, accurate_value = 0, estimated_error = 0, fast_value = 0;
+    bool upper = true, holds = false;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("limit", &limit, Field().Desc("the study's limit key"));
+      a->Visit("where", &where, Field().Desc("which part, torque or misalignment"));
+      a->Visit("limit_value", &limit_value, Field().Desc("the study's own limit"));
+      a->Visit("accurate_value", &accurate_value,
+               Field().NullWhenNotFinite().Desc("the accurate model's value at the reported design"));
+      a->Visit("estimated_error", &estimated_error, Field().NullWhenNotFinite().Desc("of accurate_value (>= 0)"));
+      a->Visit("fast_value", &fast_value, Field().NullWhenNotFinite().Desc("the fast model's value at the same design"));
+      a->Visit("upper", &upper, Field().Desc("true: value <= limit; false: value >= limit"));
+      a->Visit("holds", &holds, Field().Desc("the accurate value is within the limit plus its estimated error"));
+    }
+  };
+  struct Step {
+    int round = 0;
+    std::string limit, where;
+    double fast_limit_before = 0, fast_limit_after = 0, accurate_value = 0, limit_value = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("round", &round, Field());
+      a->Visit("limit", &limit, Field());
+      a->Visit("where", &where, Field());
+      a->Visit("fast_limit_before", &fast_limit_before, Field().NullWhenNotFinite().Desc("the fast model's limit"));
+      a->Visit("fast_limit_after", &fast_limit_after, Field().NullWhenNotFinite().Desc("tightened for the next round"));
+      a->Visit("accurate_value", &accurate_value, Field().NullWhenNotFinite());
+      a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite());
+    }
+  };
+  std::optional<std::string> accurate_model;  ///< null: the check was not run (`note` says why)
+  std::optional<int> rounds, max_rounds;
+  std::optional<std::vector<Check>> checks;
+  std::optional<std::vector<Step>> tightening;
+  std::optional<std::string> note;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("accurate_model", &accurate_model,
+             Field().NullWhenAbsent().Desc("what the accurate model was, with its settings (null: not run)"));
+    a->Visit("rounds", &rounds, Field().Desc("tightening rounds run"));
+    a->Visit("max_rounds", &max_rounds, Field().Desc("the loop's budget"));
+    a->Visit("checks", &checks, Field().Desc("every checked limit at the reported design"));
+    a->Visit("tightening", &tightening, Field().Desc("the tightening rounds, in order"));
+    a->Visit("note", &note, Field().Desc("why the check was not run"));
+  }
+  /// The block of a verification that ran (or was attempted).
+  static VerificationBlock Of(const objectives::Verification& v);
+  /// The block of a check not run: accurate_model null, `note` saying why.
+  static VerificationBlock NotRun(std::string note);
+};
 
 /// Adds "verified" and "verification" to result (an object).
 void AddVerificationJson(const objectives::Verification& v, nlohmann::json& result);

@@ -89,7 +89,7 @@ TEST(LcrSlicedLife, TuningReportsTheTunedDesignsLives) {
   for (const char* side : {"input", "output"}) t["reducer"][side]["dynamic_rating_N"] = 3300;
   const studies::Node troot(&t, "t.json", "");
   const auto tst = studies::lcr_crowning_tuning::Parse(troot);
-  const nlohmann::json tj = studies::lcr_crowning_tuning::ToJson(tst, studies::lcr_crowning_tuning::Run(tst, {"t.json", true}));
+  const nlohmann::json tj = studies::WriteResult(studies::lcr_crowning_tuning::Run(tst, {"t.json", true}));
   ASSERT_TRUE(tj.contains("life"));
   const nlohmann::json& life = tj["life"];
   ASSERT_EQ(life["sliced"].size(), 2u);  // 0 and 1 mrad
