@@ -638,6 +638,57 @@ cycloid_common::LifeResult TunedLife(const Study& s, const Result& r) {
   return cycloid_common::RunLife(*s.life, tca, angles);
 }
 
+// result.json's members (Result's Serialize) from the model's numbers, in the file's units.
+void FillResult(const Study& s, Result& r) {
+  r.curve_points.clear();
+  for (const auto& e : r.curve) r.curve_points.push_back({e.coefficient_mm, e.stress_MPa, e.edge_margin_um});
+  for (const auto& [name, value] : r.tuned) r.tuned_values[name] = value;
+  for (const auto& [name, value] : r.estimated_error) r.error_values[name] = value;
+  r.optimizer = {r.backend, r.solver_status,
+                 s.joint ? (s.backend == "cobyla" ? "NLopt LN_COBYLA on the smooth peak stress (values only)"
+                            : s.backend == "slsqp" ? "NLopt LD_SLSQP with exact gradients (implicit differentiation)"
+                                                   : "Ipopt with exact gradients (implicit differentiation)")
+                         : "NLopt LN_COBYLA from the best feasible point of a scan",
+                 r.solver_evaluations, r.solver_gradient_evaluations};
+  r.name = s.name;
+  r.tuned_coefficient_mm = r.best.coefficient_mm;
+  r.tuned_effective_length_mm = r.best.length_mm;
+  r.end_drop_mm = s.shape.end_drop_mm;
+  r.flat_length_mm = s.shape.flat_length_mm;
+  r.tuned_max_contact_stress_MPa = r.best.stress_MPa;
+  r.tuned_edge_margin_at_max_torque_um = r.best.edge_margin_um;
+  r.reference_coefficient_mm = s.reference_coefficient_mm;
+  r.reference_max_contact_stress_MPa = r.reference.stress_MPa;
+  r.reference_edge_margin_at_max_torque_um = r.reference.edge_margin_um;
+  r.design_torque_Nm = s.design_torque_Nm;
+  r.max_torque_Nm = s.max_torque_Nm;
+  r.crank_angles_per_mesh_period = s.crank_angles_per_mesh_period;
+  r.axial_cell_mm = s.drive.face_width_mm / s.options.axial_cells;
+  if (s.joint) {
+    const objectives::TuningEvaluation& b = r.joint_best;
+    r.crowning_type = cycloid_common::CrowningTypeName(s.crowning.type);
+    r.softmax_temperature_MPa = s.temperature_MPa;
+    r.tuned_smooth_max_contact_stress_MPa = b.smooth_stress_MPa;
+    r.tuned_lte_peak_to_peak_arcsec = r.accurate_lte_peak_to_peak_arcsec;
+    r.tuned_max_pair_load_N = b.max_pair_load_N;
+    if (!b.unloaded_te_arcsec.empty())
+      r.tuned_min_unloaded_te_arcsec = *std::min_element(b.unloaded_te_arcsec.begin(), b.unloaded_te_arcsec.end());
+    r.min_unloaded_te_arcsec = s.min_unloaded_te_arcsec;
+    if (!r.joint_history.empty()) {
+      const objectives::TuningEvaluation& a = r.joint_history.front();
+      r.start_max_contact_stress_MPa = a.stress_MPa;
+      r.start_edge_margin_at_max_torque_um = a.edge_margin_um;
+    }
+  }
+  if (r.life) {
+    r.life_json = cycloid_common::LifeJson(*s.life, *r.life);
+    (*r.life_json)["design"] = "the tuned design (tuned crowning and modifications) on the accurate model's grid and "
+                               "crank angles";
+  }
+  r.verified = r.verification.verified();
+  r.verification_block = VerificationBlock::Of(r.verification);
+}
+
 Result Run(const Study& s, const RunContext& ctx) {
   Study fast = s;
   objectives::Verification v;
@@ -682,6 +733,7 @@ Result Run(const Study& s, const RunContext& ctx) {
       r.evaluations = evaluations;
       r.verification = v;
       if (s.life) r.life = TunedLife(s, r);
+      FillResult(s, r);
       return r;
     }
     objectives::TighteningStep step;
@@ -700,78 +752,9 @@ Result Run(const Study& s, const RunContext& ctx) {
   }
 }
 
-nlohmann::json ToJson(const Study& s, const Result& r) {
-  nlohmann::json jcurve = nlohmann::json::array();
-  for (const auto& e : r.curve)
-    jcurve.push_back({{"coefficient_mm", e.coefficient_mm},
-                      {"max_contact_stress_MPa", Finite(e.stress_MPa, "stress")},
-                      {"edge_margin_at_max_torque_um", Finite(e.edge_margin_um, "margin")}});
-  nlohmann::json tuned = nlohmann::json::object();
-  for (const auto& [name, value] : r.tuned) tuned[name] = Finite(value, name.c_str());
-  nlohmann::json error = nlohmann::json::object();
-  for (const auto& [name, value] : r.estimated_error) error[name] = Finite(value, name.c_str());
-  nlohmann::json optimizer = {
-      {"backend", r.backend},
-      {"status", r.solver_status},
-      {"evaluations", r.solver_evaluations},
-      {"gradient_evaluations", r.solver_gradient_evaluations},
-      {"method", s.joint ? (s.backend == "cobyla" ? "NLopt LN_COBYLA on the smooth peak stress (values only)"
-                            : s.backend == "slsqp" ? "NLopt LD_SLSQP with exact gradients (implicit differentiation)"
-                                                   : "Ipopt with exact gradients (implicit differentiation)")
-                         : "NLopt LN_COBYLA from the best feasible point of a scan"}};
-  nlohmann::json j = {{"study", "cycloid_crowning_tuning"},
-          {"name", s.name},
-          {"optimizer", optimizer},
-          {"tuned", tuned},
-          {"estimated_error", error},
-          {"warnings", r.warnings},
-          {"search_status", r.status},  // "status" is the answer's one status (studies/status.h)
-          {"feasible", r.feasible},
-          {"tuned_coefficient_mm", Finite(r.best.coefficient_mm, "f")},
-          {"tuned_effective_length_mm", Finite(r.best.length_mm, "L")},
-          {"end_drop_mm", s.shape.end_drop_mm},
-          {"flat_length_mm", s.shape.flat_length_mm},
-          {"tuned_max_contact_stress_MPa", Finite(r.best.stress_MPa, "stress")},
-          {"tuned_edge_margin_at_max_torque_um", Finite(r.best.edge_margin_um, "margin")},
-          {"tuned_max_contact_stress_fast_model_MPa", Finite(r.fast_stress_MPa, "stress")},
-          {"tuned_edge_margin_at_max_torque_fast_model_um", Finite(r.fast_edge_margin_um, "margin")},
-          {"reference_coefficient_mm", s.reference_coefficient_mm},
-          {"reference_max_contact_stress_MPa", Finite(r.reference.stress_MPa, "stress")},
-          {"reference_edge_margin_at_max_torque_um", Finite(r.reference.edge_margin_um, "margin")},
-          {"design_torque_Nm", s.design_torque_Nm},
-          {"max_torque_Nm", s.max_torque_Nm},
-          {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
-          {"axial_cell_mm", s.drive.face_width_mm / s.options.axial_cells},
-          {"evaluations", r.evaluations},
-          {"curve", jcurve}};
-  if (s.joint) {
-    const objectives::TuningEvaluation& b = r.joint_best;
-    j["crowning_type"] = cycloid_common::CrowningTypeName(s.crowning.type);
-    j["softmax_temperature_MPa"] = s.temperature_MPa;
-    j["tuned_smooth_max_contact_stress_MPa"] = Finite(b.smooth_stress_MPa, "stress");
-    j["tuned_lte_peak_to_peak_arcsec"] = Finite(r.accurate_lte_peak_to_peak_arcsec, "LTE");
-    j["tuned_max_pair_load_N"] = Finite(b.max_pair_load_N, "load");
-    if (!b.unloaded_te_arcsec.empty())
-      j["tuned_min_unloaded_te_arcsec"] =
-          Finite(*std::min_element(b.unloaded_te_arcsec.begin(), b.unloaded_te_arcsec.end()), "TE");
-    j["min_unloaded_te_arcsec"] = s.min_unloaded_te_arcsec;
-    if (!r.joint_history.empty()) {
-      const objectives::TuningEvaluation& a = r.joint_history.front();
-      j["start_max_contact_stress_MPa"] = Finite(a.stress_MPa, "stress");
-      j["start_edge_margin_at_max_torque_um"] = Finite(a.edge_margin_um, "margin");
-    }
-  }
-  if (r.life) {
-    j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
-    j["life"]["design"] = "the tuned design (tuned crowning and modifications) on the accurate model's grid and "
-                          "crank angles";
-  }
-  AddVerificationJson(r.verification, j);
-  return j;
-}
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   // Without a feasible coefficient, result.json's "feasible": false gives "infeasible" (RunStudy).
   if (r.feasible) {
     const bool converged = r.status == "converged";
@@ -848,7 +831,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
-CAMOPT_REGISTER_DECLARED_KIND("cycloid_crowning_tuning", Input,
+CAMOPT_REGISTER_KIND("cycloid_crowning_tuning", Input, Result,
                               "camopt study: crowning (and modification) tuning of a cycloid drive");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): crank angles, contact grid and

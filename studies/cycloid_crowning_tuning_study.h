@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "studies/input.h"
 #include "studies/material_input.h"
 #include "studies/study.h"
+#include "studies/verification_json.h"
 
 namespace camopt::studies::cycloid_crowning_tuning {
 
@@ -256,7 +258,94 @@ inline constexpr int kVerificationRounds = 3;
 /// Added to the measured excess when the fast model's required edge margin is raised [µm].
 inline constexpr double kMarginStepUm = 0.5;
 
+/// The run's answer: result.json as declared (`camopt schema cycloid_crowning_tuning --result`),
+/// then the model's numbers the files are drawn from.
 struct Result {
+  struct Optimizer {
+    std::string backend, status, method;
+    int evaluations = 0, gradient_evaluations = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend, Field().Desc("the optimizer"));
+      a->Visit("status", &status, Field().Desc("the optimizer's end"));
+      a->Visit("evaluations", &evaluations, Field());
+      a->Visit("gradient_evaluations", &gradient_evaluations, Field());
+      a->Visit("method", &method, Field());
+    }
+  };
+  struct CurvePoint {
+    double coefficient_mm = 0, max_contact_stress_MPa = 0, edge_margin_at_max_torque_um = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("coefficient_mm", &coefficient_mm, Field().Unit("mm"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("edge_margin_at_max_torque_um", &edge_margin_at_max_torque_um, Field().Unit("µm"));
+    }
+  };
+
+  std::string study = "cycloid_crowning_tuning", name;
+  Optimizer optimizer;
+  std::map<std::string, double> tuned_values, error_values;  ///< result.json's tuned, estimated_error
+  double tuned_coefficient_mm = 0, tuned_effective_length_mm = 0, end_drop_mm = 0, flat_length_mm = 0;
+  double tuned_max_contact_stress_MPa = 0, tuned_edge_margin_at_max_torque_um = 0;
+  double reference_coefficient_mm = 0, reference_max_contact_stress_MPa = 0, reference_edge_margin_at_max_torque_um = 0;
+  double design_torque_Nm = 0, max_torque_Nm = 0;
+  int crank_angles_per_mesh_period = 0;
+  double axial_cell_mm = 0;
+  std::vector<CurvePoint> curve_points;  ///< result.json's curve
+  std::optional<std::string> crowning_type;
+  std::optional<double> softmax_temperature_MPa, tuned_smooth_max_contact_stress_MPa, tuned_lte_peak_to_peak_arcsec;
+  std::optional<double> tuned_max_pair_load_N, tuned_min_unloaded_te_arcsec, min_unloaded_te_arcsec;
+  std::optional<double> start_max_contact_stress_MPa, start_edge_margin_at_max_torque_um;
+  std::optional<nlohmann::json> life_json;  ///< result.json's life (cycloid_common::LifeJson)
+  bool verified = false;
+  VerificationBlock verification_block;  ///< result.json's verification
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("cycloid_crowning_tuning"));
+    a->Visit("name", &name, Field().Desc("the design's name"));
+    a->Visit("optimizer", &optimizer, Field());
+    a->Visit("tuned", &tuned_values, Field().Desc("each tuned variable, named by the field it sets"));
+    a->Visit("estimated_error", &error_values, Field().Desc("the accurate model's error estimate of each tuned output"));
+    a->Visit("warnings", &warnings, Field());
+    a->Visit("search_status", &status, Field().Desc("the search's end (`status` is the answer's)"));
+    a->Visit("feasible", &feasible, Field().Desc("a point met the edge margin"));
+    a->Visit("tuned_coefficient_mm", &tuned_coefficient_mm, Field().Unit("mm"));
+    a->Visit("tuned_effective_length_mm", &tuned_effective_length_mm, Field().Unit("mm"));
+    a->Visit("end_drop_mm", &end_drop_mm, Field().Unit("mm"));
+    a->Visit("flat_length_mm", &flat_length_mm, Field().Unit("mm"));
+    a->Visit("tuned_max_contact_stress_MPa", &tuned_max_contact_stress_MPa,
+             Field().Unit("MPa").Desc("the accurate model's, at the design torque"));
+    a->Visit("tuned_edge_margin_at_max_torque_um", &tuned_edge_margin_at_max_torque_um,
+             Field().Unit("µm").Desc("the accurate model's"));
+    a->Visit("tuned_max_contact_stress_fast_model_MPa", &fast_stress_MPa, Field().Unit("MPa"));
+    a->Visit("tuned_edge_margin_at_max_torque_fast_model_um", &fast_edge_margin_um, Field().Unit("µm"));
+    a->Visit("reference_coefficient_mm", &reference_coefficient_mm, Field().Unit("mm"));
+    a->Visit("reference_max_contact_stress_MPa", &reference_max_contact_stress_MPa, Field().Unit("MPa"));
+    a->Visit("reference_edge_margin_at_max_torque_um", &reference_edge_margin_at_max_torque_um, Field().Unit("µm"));
+    a->Visit("design_torque_Nm", &design_torque_Nm, Field().Unit("N·m"));
+    a->Visit("max_torque_Nm", &max_torque_Nm, Field().Unit("N·m"));
+    a->Visit("crank_angles_per_mesh_period", &crank_angles_per_mesh_period, Field());
+    a->Visit("axial_cell_mm", &axial_cell_mm, Field().Unit("mm"));
+    a->Visit("evaluations", &evaluations, Field().Desc("model evaluations, scan and reference included"));
+    a->Visit("curve", &curve_points, Field().Desc("the scan"));
+    a->Visit("crowning_type", &crowning_type, Field().Desc("the general form's crowning"));
+    a->Visit("softmax_temperature_MPa", &softmax_temperature_MPa, Field().Unit("MPa"));
+    a->Visit("tuned_smooth_max_contact_stress_MPa", &tuned_smooth_max_contact_stress_MPa, Field().Unit("MPa"));
+    a->Visit("tuned_lte_peak_to_peak_arcsec", &tuned_lte_peak_to_peak_arcsec, Field().Unit("arcsec"));
+    a->Visit("tuned_max_pair_load_N", &tuned_max_pair_load_N, Field().Unit("N"));
+    a->Visit("tuned_min_unloaded_te_arcsec", &tuned_min_unloaded_te_arcsec, Field().Unit("arcsec"));
+    a->Visit("min_unloaded_te_arcsec", &min_unloaded_te_arcsec, Field().Unit("arcsec"));
+    a->Visit("start_max_contact_stress_MPa", &start_max_contact_stress_MPa, Field().Unit("MPa"));
+    a->Visit("start_edge_margin_at_max_torque_um", &start_edge_margin_at_max_torque_um, Field().Unit("µm"));
+    a->Visit("life", &life_json,
+             Field().Desc("the tuned design's bearing lives, when asked").Schema(cycloid_common::LifeJsonSchema()));
+    a->Visit("verified", &verified, Field().Desc("the accurate model confirms the tuning (a view of `status`)"));
+    a->Visit("verification", &verification_block, Field().Desc("the accurate model's checks"));
+  }
+
+  // Not in result.json (bar the members visited above: warnings, status, feasible, evaluations, the
+  // fast model's stress and margin): the model's numbers.
   std::vector<objectives::CrowningEvaluation> curve;    ///< the scan (L = length_lo_mm)
   std::vector<objectives::CrowningEvaluation> history;  ///< the optimizer's evaluations, in order
   objectives::CrowningEvaluation reference;             ///< f = reference, L = face width
@@ -296,7 +385,8 @@ Input ReadInput(const Node& root);
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json's members of `result` (its Serialize) from its model numbers; Run ends with it.
+void FillResult(const Study& study, Result& result);
 /// result.json, stress_vs_coefficient.csv/.svg, history.csv, edge_margin_vs_coefficient.svg.
 void Write(const Study& study, const Result& result, Outputs& out);
 

@@ -102,4 +102,27 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
   return lj;
 }
 
+nlohmann::ordered_json LifeJsonSchema() {
+  using ojson = nlohmann::ordered_json;
+  const ojson hours = {{"type", {"number", "null"}}, {"description", "[h] (null: unlimited)"}};
+  ojson p = ojson::object();
+  p["shortest_L10h"] = hours;
+  p["shortest_bearing"] = {{"type", "string"}};
+  for (const char* element : {"crank_bearing_L10h", "pins_L10h", "eccentric_bearing_L10h"}) p[element] = hours;
+  p["table"] = {{"type", "array"}, {"items", {{"type", "object"}}}, {"description", "report.html's rows"}};
+  p["shortest_L_nm_h"] = hours;
+  p["shortest_L_nm_bearing"] = {{"type", {"string", "null"}}};
+  p["duty_cycle"] = {{"type", "array"}};
+  p["mean_input_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
+  p["output_mechanism"] = {{"type", "object"}};
+  p["crank_bearing_samples_per_line"] = {{"type", "integer"}};
+  p["efficiency_energy_mean"] = {{"type", "null"}};
+  p["efficiency"] = {{"type", "string"}};
+  p["model"] = {{"type", "string"}};
+  p["design"] = {{"type", "string"}};
+  return {{"type", "object"},
+          {"properties", p},
+          {"required", {"shortest_L10h", "shortest_bearing", "table", "duty_cycle", "model"}}};
+}
+
 }  // namespace camopt::studies::cycloid_common

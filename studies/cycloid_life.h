@@ -47,5 +47,8 @@ LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const st
 /// mechanism and the table (the rows of lcr_min_size's best.life.table); with `l.oil` the modified
 /// life of the bearings given C_u and D_pw in their rows and shortest_L_nm_h (AddModifiedLife).
 nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l);
+/// The JSON Schema of LifeJson's object, for a declared result's raw "life" member (its
+/// `ELEMENT_L10h` keys vary with the drive, so further properties are allowed).
+nlohmann::ordered_json LifeJsonSchema();
 
 }  // namespace camopt::studies::cycloid_common

@@ -656,7 +656,9 @@ void AddRunStampToResultSchema(nlohmann::ordered_json& schema) {
   p["study_sha256"] = {{"description", "SHA-256 of the study file as read"}, {"type", "string"}};
   p["warnings"] = {{"description", "the run's warnings, also printed on stderr"},
                    {"type", "array"}, {"items", {{"type", "string"}}}};
-  for (const char* always : {"status", "camopt_version", "study_sha256", "warnings"}) schema["required"].push_back(always);
+  nlohmann::ordered_json& required = schema["required"];
+  for (const char* always : {"status", "camopt_version", "study_sha256", "warnings"})
+    if (std::find(required.begin(), required.end(), always) == required.end()) required.push_back(always);
   // additionalProperties after the properties, for the reader
   if (schema.contains("additionalProperties")) {
     nlohmann::ordered_json closed = std::move(schema["additionalProperties"]);

@@ -740,7 +740,7 @@ TEST(CycloidStudies, CrowningTuningIsTheSameWhateverRanBefore) {
     const nlohmann::json study = nlohmann::json::parse(text);
     const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
     const tuning::Result r = tuning::Run(s, ctx);
-    return std::pair<tuning::Result, std::string>(r, tuning::ToJson(s, r).dump());
+    return std::pair<tuning::Result, std::string>(r, studies::WriteResult(r).dump());
   };
   const auto [first, first_json] = run(kTuningStudy);
   std::string other = kTuningStudy;
@@ -818,7 +818,7 @@ TEST(CycloidStudies, CrowningTuningWritesItsFiles) {
   const nlohmann::json study = nlohmann::json::parse(kTuningStudy);
   const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
   EXPECT_EQ(camopt::testing::WithoutRunStamp(j),
-            camopt::testing::WithoutRunStamp(tuning::ToJson(s, tuning::Run(s, studies::RunContext{"", true}))));
+            camopt::testing::WithoutRunStamp(studies::WriteResult(tuning::Run(s, studies::RunContext{"", true}))));
 }
 
 TEST(CycloidStudies, MisspeltNestedFieldIsRejected) {

@@ -163,7 +163,7 @@ std::pair<tuning::Result, nlohmann::json> RunStudy(const std::string& text) {
   const nlohmann::json study = nlohmann::json::parse(text);
   const tuning::Study s = tuning::Parse(studies::Node(&study, "t.json", ""));
   const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
-  return {r, tuning::ToJson(s, r)};
+  return {r, studies::WriteResult(r)};
 }
 
 TEST(CycloidTuningStudy, GeneralFormReportsEveryVariableAndTheOptimizer) {
@@ -229,7 +229,7 @@ TEST(CycloidTuningStudy, ExamplesAreVerifiedByTheAccurateModel) {
     const nlohmann::json study = camopt::testing::Example(name);
     const tuning::Study s = tuning::Parse(studies::Node(&study, name, ""));
     const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
-    const nlohmann::json j = tuning::ToJson(s, r);
+    const nlohmann::json j = studies::WriteResult(r);
     EXPECT_EQ(j["verified"], true);
     EXPECT_EQ(j["feasible"], true);
     const nlohmann::json& checks = j["verification"]["checks"];
@@ -274,7 +274,7 @@ TEST(CycloidTuningStudy, TunedDesignLivesEqualTheLtcaOfTheTunedDesign) {
   study["output_mechanism"] = output;
   const tuning::Study s = tuning::Parse(studies::Node(&study, "tuning.json", ""));
   const tuning::Result r = tuning::Run(s, studies::RunContext{"", true});
-  const nlohmann::json j = tuning::ToJson(s, r);
+  const nlohmann::json j = studies::WriteResult(r);
   ASSERT_TRUE(j.contains("life")) << j.dump(1);
   const nlohmann::json& life = j["life"];
 
@@ -321,7 +321,8 @@ TEST(CycloidTuningStudy, AnUnverifiedDesignEndsIncomplete) {
   margin.fast_value = 0.5;
   margin.upper = false;
   r.verification.checks = {margin};
-  const nlohmann::json j = tuning::ToJson(s, r);
+  tuning::FillResult(s, r);
+  const nlohmann::json j = studies::WriteResult(r);
   EXPECT_EQ(j["verified"], false);
   EXPECT_EQ(j["verification"]["checks"][0]["holds"], false);
   studies::Outputs out;
