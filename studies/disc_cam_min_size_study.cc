@@ -76,21 +76,108 @@ std::string BlockingMessage(const Study& s, const objectives::DiscCamMinSizeOutc
          o.result.message + "); give more optimizer.max_evaluations";
 }
 
-nlohmann::json CycleJson(const objectives::DiscCamCycleValues& v) {
-  nlohmann::json pa = {{"max_rise", v.max_pressure_rise_deg}, {"at_max_rise_cam_angle_deg", v.at_rise_deg}};
+Result::Cycle CycleOf(const objectives::DiscCamCycleValues& v) {
+  Result::Cycle c;
+  c.pressure_angle_deg.max_rise = v.max_pressure_rise_deg;
+  c.pressure_angle_deg.at_max_rise_cam_angle_deg = v.at_rise_deg;
   if (v.has_return) {
-    pa["max_return"] = v.max_pressure_return_deg;
-    pa["at_max_return_cam_angle_deg"] = v.at_return_deg;
+    c.pressure_angle_deg.max_return = v.max_pressure_return_deg;
+    c.pressure_angle_deg.at_max_return_cam_angle_deg = v.at_return_deg;
   }
-  nlohmann::json j = {{"pressure_angle_deg", pa},
-                      {"min_radius_of_curvature_mm", NumberOrNull(v.min_radius_of_curvature_mm)},
-                      {"at_min_radius_of_curvature_cam_angle_deg", v.at_curvature_deg},
-                      {"max_radial_dimension_mm", v.max_radial_dimension_mm}};
+  c.min_radius_of_curvature_mm = v.min_radius_of_curvature_mm;  // null: +inf, no convex part
+  c.at_min_radius_of_curvature_cam_angle_deg = v.at_curvature_deg;
+  c.max_radial_dimension_mm = v.max_radial_dimension_mm;
   if (v.stress_evaluated) {
-    j["max_contact_stress_MPa"] = NumberOrNull(v.max_contact_stress_MPa);
-    j["at_max_contact_stress_cam_angle_deg"] = v.at_stress_deg;
+    c.max_contact_stress_MPa = v.max_contact_stress_MPa;
+    c.at_max_contact_stress_cam_angle_deg = v.at_stress_deg;
   }
-  return j;
+  return c;
+}
+
+// result.json's members (Result's Serialize) from the sizing's outcome.
+void FillResult(const Study& s, Result& r) {
+  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  r.name = s.name;
+  r.follower = s.base.follower_type;
+  for (const objectives::Variable& v : s.spec.variables) r.variables.push_back({v.name, v.lower, v.upper, v.initial});
+  if (s.base.limits.pressure_angle_default) r.limits.defaults.push_back("pressure_angle_deg");
+  if (s.base.limits.radius_margin_default) r.limits.defaults.push_back("radius_margin_mm");
+  r.limits.pressure_angle_deg = s.spec.limits.pressure_angle_deg;
+  if (s.spec.limits.radius_margin_is_roller) {
+    r.limits.radius_margin_mm = o.x.empty() ? s.spec.cam.roller_radius : o.cam.roller_radius;
+    r.limits.radius_margin_follows = "roller_radius_mm";
+  } else {
+    r.limits.radius_margin_mm = s.spec.limits.radius_margin_mm;
+  }
+  if (std::isfinite(s.spec.limits.contact_stress_MPa)) r.limits.contact_stress_MPa = s.spec.limits.contact_stress_MPa;
+  r.verification = VerificationBlock::Of(o.verification);
+  // Verified: the accurate values themselves within the limits (RunStudy writes it again from the
+  // status, studies/status.h: feasible_verified when the optimizer did not converge).
+  r.verified = o.verified;
+  if (!o.x.empty()) {
+    Result::Best& b = r.best.emplace();
+    b.base_circle_radius_mm = o.cam.base_radius;
+    if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
+      b.pivot_distance_mm = o.cam.pivot_distance;
+      b.arm_length_mm = o.cam.arm_length;
+    } else if (!s.spec.flat_face) {
+      b.offset_mm = o.cam.offset;
+    }
+    if (!s.spec.flat_face) {
+      b.roller_radius_mm = o.cam.roller_radius;
+      b.prime_circle_radius_mm = o.cam.base_radius + o.cam.roller_radius;
+    }
+    for (size_t k = 0; k < s.spec.variables.size(); ++k) {
+      const objectives::Variable& v = s.spec.variables[k];
+      const double tol = 1e-6 * std::max(1.0, v.upper - v.lower);
+      if (v.upper > v.lower && o.x[k] <= v.lower + tol)
+        b.variables_at_bounds.push_back({v.name, "lower", v.lower});
+      else if (v.upper > v.lower && o.x[k] >= v.upper - tol)
+        b.variables_at_bounds.push_back({v.name, "upper", v.upper});
+    }
+    b.accurate = CycleOf(o.check.accurate);
+    b.fast = CycleOf(o.check.fast);
+    // The accurate values' own error estimate, and the fast (sampled) model's error: accurate − fast.
+    const objectives::DiscCamCycleValues &a = o.check.accurate, &d = o.check.dense, &f = o.check.fast;
+    Result::CycleError &err = b.estimated_error, &fast_err = b.fast_model_error;
+    err.pressure_angle_rise_deg = a.max_pressure_rise_deg - d.max_pressure_rise_deg;
+    fast_err.pressure_angle_rise_deg = a.max_pressure_rise_deg - f.max_pressure_rise_deg;
+    if (a.has_return) {
+      err.pressure_angle_return_deg = a.max_pressure_return_deg - d.max_pressure_return_deg;
+      fast_err.pressure_angle_return_deg = a.max_pressure_return_deg - f.max_pressure_return_deg;
+    }
+    err.min_radius_of_curvature_mm = d.min_radius_of_curvature_mm - a.min_radius_of_curvature_mm;
+    fast_err.min_radius_of_curvature_mm = a.min_radius_of_curvature_mm - f.min_radius_of_curvature_mm;
+    if (a.stress_evaluated) {
+      err.max_contact_stress_MPa = a.max_contact_stress_MPa - d.max_contact_stress_MPa;
+      fast_err.max_contact_stress_MPa = a.max_contact_stress_MPa - f.max_contact_stress_MPa;
+    }
+    b.accurate_model = o.check.model;
+  }
+  r.binding = o.binding;
+  for (const auto& [key, cost] : o.limit_cost) {
+    // The cost is itself the re-solve slope here: the same number, with its sides.
+    r.binding_limits.push_back({key, LimitValue(s, o, key), cost, "mm of base circle per " + LimitUnit(key),
+                                MakeLimitSlopeResult(o.limit_slope.count(key) ? &o.limit_slope.at(key) : nullptr)});
+  }
+  Result::Optimizer& opt = r.optimizer;
+  for (const optimizers::SolverResult& st : o.starts)
+    opt.start_outcomes.push_back({optimizers::ToString(st.status),
+                                  st.x.empty() ? std::nullopt : std::optional<double>(st.objective), st.max_violation,
+                                  st.first_order_residual});
+  opt.backend = s.backend;
+  opt.converged = o.converged;
+  opt.status = optimizers::ToString(o.result.status);
+  opt.message = o.result.message;
+  opt.max_violation = o.result.max_violation;
+  opt.binding_rows = o.result.active;
+  opt.max_evaluations = s.options.solver.max_evaluations;
+  opt.verify_rounds = s.options.verify_rounds;
+  opt.rounds = o.rounds;
+  opt.evaluations = o.result.value_evaluations;
+  opt.gradient_evaluations = o.result.gradient_evaluations;
+  r.analysis = {s.spec.angle_steps, s.spec.accurate_factor, s.spec.angle_steps * s.spec.accurate_factor};
+  if (!r.blocking_message.empty()) r.notes = std::vector<std::string>{r.blocking_message};
 }
 
 }  // namespace
@@ -225,117 +312,8 @@ Result Run(const Study& s, const RunContext& ctx) {
   progress.Update(1.0);
   progress.Done();
   r.blocking_message = BlockingMessage(s, r.outcome);
+  FillResult(s, r);
   return r;
-}
-
-nlohmann::json ToJson(const Study& s, const Result& r) {
-  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
-  nlohmann::json j;
-  j["study"] = "disc_cam_min_size";
-  j["name"] = s.name;
-  j["follower"] = s.base.follower_type;
-  j["objective"] = "base_circle_radius_mm";
-  nlohmann::json vars = nlohmann::json::array();
-  for (const objectives::Variable& v : s.spec.variables)
-    vars.push_back({{"name", v.name}, {"lower", v.lower}, {"upper", v.upper}, {"start", v.initial}});
-  j["variables"] = vars;
-  nlohmann::json defaults = nlohmann::json::array();
-  if (s.base.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
-  if (s.base.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
-  nlohmann::json limits = {{"pressure_angle_deg", s.spec.limits.pressure_angle_deg}, {"defaults", defaults}};
-  if (s.spec.limits.radius_margin_is_roller) {
-    limits["radius_margin_mm"] = o.x.empty() ? s.spec.cam.roller_radius : o.cam.roller_radius;
-    limits["radius_margin_follows"] = "roller_radius_mm";
-  } else {
-    limits["radius_margin_mm"] = s.spec.limits.radius_margin_mm;
-  }
-  if (std::isfinite(s.spec.limits.contact_stress_MPa)) limits["contact_stress_MPa"] = s.spec.limits.contact_stress_MPa;
-  j["limits"] = limits;
-  AddVerificationJson(o.verification, j);
-  // Verified: the accurate values themselves within the limits (RunStudy writes it again from the
-  // status, studies/status.h: feasible_verified when the optimizer did not converge).
-  j["verified"] = o.verified;
-  if (o.x.empty()) {
-    j["best"] = nullptr;
-  } else {
-    nlohmann::json b;
-    b["base_circle_radius_mm"] = Finite(o.cam.base_radius, "base circle");
-    if (s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {
-      b["pivot_distance_mm"] = Finite(o.cam.pivot_distance, "pivot distance");
-      b["arm_length_mm"] = Finite(o.cam.arm_length, "arm length");
-    } else if (!s.spec.flat_face) {
-      b["offset_mm"] = Finite(o.cam.offset, "offset");
-    }
-    if (!s.spec.flat_face) {
-      b["roller_radius_mm"] = Finite(o.cam.roller_radius, "roller radius");
-      b["prime_circle_radius_mm"] = Finite(o.cam.base_radius + o.cam.roller_radius, "prime circle");
-    }
-    nlohmann::json at_bounds = nlohmann::json::array();
-    for (size_t k = 0; k < s.spec.variables.size(); ++k) {
-      const objectives::Variable& v = s.spec.variables[k];
-      const double tol = 1e-6 * std::max(1.0, v.upper - v.lower);
-      if (v.upper > v.lower && o.x[k] <= v.lower + tol)
-        at_bounds.push_back({{"name", v.name}, {"bound", "lower"}, {"value", v.lower}});
-      else if (v.upper > v.lower && o.x[k] >= v.upper - tol)
-        at_bounds.push_back({{"name", v.name}, {"bound", "upper"}, {"value", v.upper}});
-    }
-    b["variables_at_bounds"] = at_bounds;
-    b["accurate"] = CycleJson(o.check.accurate);
-    b["fast"] = CycleJson(o.check.fast);
-    // The accurate values' own error estimate, and the fast (sampled) model's error: accurate − fast.
-    const objectives::DiscCamCycleValues &a = o.check.accurate, &d = o.check.dense, &f = o.check.fast;
-    nlohmann::json err = {{"pressure_angle_rise_deg", a.max_pressure_rise_deg - d.max_pressure_rise_deg}};
-    nlohmann::json fast_err = {{"pressure_angle_rise_deg", a.max_pressure_rise_deg - f.max_pressure_rise_deg}};
-    if (a.has_return) {
-      err["pressure_angle_return_deg"] = a.max_pressure_return_deg - d.max_pressure_return_deg;
-      fast_err["pressure_angle_return_deg"] = a.max_pressure_return_deg - f.max_pressure_return_deg;
-    }
-    err["min_radius_of_curvature_mm"] = NumberOrNull(d.min_radius_of_curvature_mm - a.min_radius_of_curvature_mm);
-    fast_err["min_radius_of_curvature_mm"] = NumberOrNull(a.min_radius_of_curvature_mm - f.min_radius_of_curvature_mm);
-    if (a.stress_evaluated) {
-      err["max_contact_stress_MPa"] = NumberOrNull(a.max_contact_stress_MPa - d.max_contact_stress_MPa);
-      fast_err["max_contact_stress_MPa"] = NumberOrNull(a.max_contact_stress_MPa - f.max_contact_stress_MPa);
-    }
-    b["estimated_error"] = err;
-    b["fast_model_error"] = fast_err;
-    b["accurate_model"] = o.check.model;
-    j["best"] = b;
-  }
-  j["binding"] = o.binding;
-  nlohmann::json costs = nlohmann::json::array();
-  for (const auto& [key, cost] : o.limit_cost) {
-    nlohmann::json entry = {{"limit", key},
-                            {"limit_value", NumberOrNull(LimitValue(s, o, key))},
-                            {"limit_cost", Finite(cost, "limit cost")},
-                            {"unit", "mm of base circle per " + LimitUnit(key)}};
-    // The cost is itself the re-solve slope here: the same number, with its sides.
-    AddLimitSlopeJson(o.limit_slope.count(key) ? &o.limit_slope.at(key) : nullptr, entry);
-    costs.push_back(entry);
-  }
-  j["binding_limits"] = costs;
-  nlohmann::json starts = nlohmann::json::array();
-  for (const optimizers::SolverResult& st : o.starts)
-    starts.push_back({{"status", optimizers::ToString(st.status)},
-                      {"base_circle_radius_mm", st.x.empty() ? nlohmann::json(nullptr) : nlohmann::json(st.objective)},
-                      {"max_violation", st.max_violation},
-                      {"first_order_residual", NumberOrNull(st.first_order_residual)}});
-  j["optimizer"] = {{"backend", s.backend},
-                    {"converged", o.converged},
-                    {"status", optimizers::ToString(o.result.status)},
-                    {"message", o.result.message},
-                    {"max_violation", o.result.max_violation},
-                    {"binding_rows", o.result.active},
-                    {"max_evaluations", s.options.solver.max_evaluations},
-                    {"verify_rounds", s.options.verify_rounds},
-                    {"rounds", o.rounds},
-                    {"evaluations", o.result.value_evaluations},
-                    {"gradient_evaluations", o.result.gradient_evaluations},
-                    {"start_outcomes", starts}};
-  j["analysis"] = {{"angle_steps", s.spec.angle_steps},
-                   {"accurate_factor", s.spec.accurate_factor},
-                   {"accurate_angle_steps", s.spec.angle_steps * s.spec.accurate_factor}};
-  if (!r.blocking_message.empty()) j["notes"] = {r.blocking_message};
-  return j;
 }
 
 namespace {
@@ -410,7 +388,7 @@ void AddProfileDrawing(const Study& s, const objectives::DiscCamMinSizeOutcome& 
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   const objectives::DiscCamMinSizeOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   if (o.x.empty()) return;
@@ -503,9 +481,9 @@ CAMOPT_REGISTER_STUDY_PARSER("disc_cam_min_size", [](const Node& root) { (void)P
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the fast rows' angles (the
 // accurate grid follows them) and the optimizer's budget. The verified answer should not move.
-CAMOPT_REGISTER_DECLARED_KIND("disc_cam_min_size", Input,
-                              "camopt study: the smallest base circle of a disc cam with a translating or "
-                              "oscillating roller follower");
+CAMOPT_REGISTER_KIND("disc_cam_min_size", Input, Result,
+                     "camopt study: the smallest base circle of a disc cam with a translating or "
+                     "oscillating roller follower");
 
 Fidelity Knobs(const nlohmann::json&) {
   const Input defaults;

@@ -17,6 +17,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
 #include "studies/study.h"
+#include "studies/verification_json.h"
 
 namespace camopt::studies::disc_cam_min_size {
 
@@ -117,7 +119,223 @@ struct Study {
   std::string backend = "ipopt";  ///< as in the file: "ipopt" or "slsqp"
 };
 
+/// The run's answer: result.json as declared (its `Serialize`; `camopt schema disc_cam_min_size
+/// --result` is emitted from it), then the sizing's outcome the other files are drawn from.
 struct Result {
+  /// A sized quantity: its range and its start (the study's value clamped into the range).
+  struct VariableRow {
+    std::string name;
+    double lower = 0, upper = 0, start = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("name", &name, Field().Desc("the variable's key in variables"));
+      a->Visit("lower", &lower, Field().Unit("mm"));
+      a->Visit("upper", &upper, Field().Unit("mm"));
+      a->Visit("start", &start, Field().Unit("mm").Desc("the study's value clamped into [lower, upper]"));
+    }
+  };
+  /// The limits applied.
+  struct Limits {
+    double pressure_angle_deg = 0;
+    std::vector<std::string> defaults;
+    double radius_margin_mm = 0;
+    std::optional<std::string> radius_margin_follows;
+    std::optional<double> contact_stress_MPa;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pressure_angle_deg", &pressure_angle_deg,
+               Field().Unit("deg").Desc("the largest |φ| allowed, on the rise and on the return"));
+      a->Visit("defaults", &defaults, Field().Desc("the limits the study did not give (their defaults apply)"));
+      a->Visit("radius_margin_mm", &radius_margin_mm,
+               Field().Unit("mm").Desc("the profile's smallest convex radius of curvature at least this (the default, the "
+                                       "roller radius: its value at the best design, else at the start)"));
+      a->Visit("radius_margin_follows", &radius_margin_follows,
+               Field().Desc("with the default margin: the variable it follows (roller_radius_mm)"));
+      a->Visit("contact_stress_MPa", &contact_stress_MPa, Field().Unit("MPa").Desc("the peak Hertz stress, when limited"));
+    }
+  };
+  /// A design's pressure angles.
+  struct PressureAngles {
+    double max_rise = 0, at_max_rise_cam_angle_deg = 0;
+    std::optional<double> max_return, at_max_return_cam_angle_deg;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_rise", &max_rise, Field().Unit("deg").Desc("the largest |φ| where S' >= 0 (dwells included)"));
+      a->Visit("at_max_rise_cam_angle_deg", &at_max_rise_cam_angle_deg, Field().Unit("deg"));
+      a->Visit("max_return", &max_return, Field().Unit("deg").Desc("the largest |φ| where S' < 0, when there is a return"));
+      a->Visit("at_max_return_cam_angle_deg", &at_max_return_cam_angle_deg, Field().Unit("deg"));
+    }
+  };
+  /// A design's values over the cycle, by one model (the accurate or the fast one).
+  struct Cycle {
+    PressureAngles pressure_angle_deg;
+    double min_radius_of_curvature_mm = 0, at_min_radius_of_curvature_cam_angle_deg = 0;
+    double max_radial_dimension_mm = 0;
+    std::optional<double> max_contact_stress_MPa, at_max_contact_stress_cam_angle_deg;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pressure_angle_deg", &pressure_angle_deg, Field().Desc("on the rise and on the return"));
+      a->Visit("min_radius_of_curvature_mm", &min_radius_of_curvature_mm,
+               Field().NullWhenNotFinite().Unit("mm").Desc(
+                   "the profile's smallest convex radius of curvature (roller: ρ_pitch − r_roller; flat face: r_b + S + "
+                   "S''; null: no convex part)"));
+      a->Visit("at_min_radius_of_curvature_cam_angle_deg", &at_min_radius_of_curvature_cam_angle_deg, Field().Unit("deg"));
+      a->Visit("max_radial_dimension_mm", &max_radial_dimension_mm, Field().Unit("mm").Desc("the profile's largest radius"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+               Field().NullWhenNotFinite().Unit("MPa").Desc(
+                   "the peak Hertz stress, with the loads (null: loaded on an undercut profile)"));
+      a->Visit("at_max_contact_stress_cam_angle_deg", &at_max_contact_stress_cam_angle_deg, Field().Unit("deg"));
+    }
+  };
+  /// A difference of the accurate values and another model's, key by key.
+  struct CycleError {
+    double pressure_angle_rise_deg = 0;
+    std::optional<double> pressure_angle_return_deg;
+    double min_radius_of_curvature_mm = 0;
+    std::optional<double> max_contact_stress_MPa;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("pressure_angle_rise_deg", &pressure_angle_rise_deg, Field().Unit("deg"));
+      a->Visit("pressure_angle_return_deg", &pressure_angle_return_deg, Field().Unit("deg").Desc("when there is a return"));
+      a->Visit("min_radius_of_curvature_mm", &min_radius_of_curvature_mm, Field().NullWhenNotFinite().Unit("mm"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+               Field().NullWhenNotFinite().Unit("MPa").Desc("with the loads"));
+    }
+  };
+  /// A variable of the best design at a bound of its range.
+  struct AtBound {
+    std::string name, bound;
+    double value = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("name", &name, Field().Desc("the variable"));
+      a->Visit("bound", &bound, Field().OneOf({"lower", "upper"}));
+      a->Visit("value", &value, Field().Unit("mm").Desc("the bound"));
+    }
+  };
+  /// The best design (the closest one when it is not verified).
+  struct Best {
+    double base_circle_radius_mm = 0;
+    std::optional<double> pivot_distance_mm, arm_length_mm, offset_mm, roller_radius_mm, prime_circle_radius_mm;
+    std::vector<AtBound> variables_at_bounds;
+    Cycle accurate, fast;
+    CycleError estimated_error, fast_model_error;
+    std::string accurate_model;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("base_circle_radius_mm", &base_circle_radius_mm, Field().Unit("mm").Desc("r_b, the objective"));
+      a->Visit("pivot_distance_mm", &pivot_distance_mm, Field().Unit("mm").Desc("oscillating follower: f"));
+      a->Visit("arm_length_mm", &arm_length_mm, Field().Unit("mm").Desc("oscillating follower: l"));
+      a->Visit("offset_mm", &offset_mm, Field().Unit("mm").Desc("translating roller or knife edge: e"));
+      a->Visit("roller_radius_mm", &roller_radius_mm, Field().Unit("mm").Desc("r_f (not a flat face)"));
+      a->Visit("prime_circle_radius_mm", &prime_circle_radius_mm, Field().Unit("mm").Desc("r_b + r_f (not a flat face)"));
+      a->Visit("variables_at_bounds", &variables_at_bounds, Field().Desc("the variables at a bound of their range"));
+      a->Visit("accurate", &accurate, Field().Desc("the accurate model's values (the dense grid, every peak refined)"));
+      a->Visit("fast", &fast, Field().Desc("the fast model's (the optimizer's sampled angles)"));
+      a->Visit("estimated_error", &estimated_error, Field().Desc("of the accurate values: how far refining the peaks moved them from the dense grid's"));
+      a->Visit("fast_model_error", &fast_model_error, Field().Desc("of the fast model: accurate − fast"));
+      a->Visit("accurate_model", &accurate_model, Field().Desc("the accurate model, in words"));
+    }
+  };
+  /// A limit that binds at the answer and what it costs.
+  struct BindingLimit {
+    std::string limit;
+    double limit_value = 0, limit_cost = 0;
+    std::string unit;
+    LimitSlopeResult slope;  ///< its members are the entry's own
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("limit", &limit, Field().Desc("the limit's key"));
+      a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite().Desc("the limit, in its unit"));
+      a->Visit("limit_cost", &limit_cost,
+               Field().Desc("d(base circle)/d(limit), from verified re-solves with the limit moved: itself the "
+                            "re-solve slope"));
+      a->Visit("unit", &unit, Field().Desc("of limit_cost"));
+      slope.Serialize(a);
+    }
+  };
+  /// One start's first solve.
+  struct StartOutcome {
+    std::string status;
+    std::optional<double> base_circle_radius_mm;
+    double max_violation = 0, first_order_residual = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("status", &status, Field().Desc("the solver's end"));
+      a->Visit("base_circle_radius_mm", &base_circle_radius_mm,
+               Field().NullWhenAbsent().Unit("mm").Desc("the objective at its end (null: no design)"));
+      a->Visit("max_violation", &max_violation, Field().Desc("the largest constraint violation (scaled)"));
+      a->Visit("first_order_residual", &first_order_residual,
+               Field().NullWhenNotFinite().Desc("the first-order optimality residual (null: not computed, the solve did not "
+                                                "converge)"));
+    }
+  };
+  struct Optimizer {
+    std::string backend;
+    bool converged = false;
+    std::string status, message;
+    double max_violation = 0;
+    std::vector<std::string> binding_rows;
+    int max_evaluations = 0, verify_rounds = 0, rounds = 0, evaluations = 0, gradient_evaluations = 0;
+    std::vector<StartOutcome> start_outcomes;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}).Desc("the NLP solver (slsqp: NLopt's)"));
+      a->Visit("converged", &converged, Field().Desc("the last solve converged"));
+      a->Visit("status", &status, Field().Desc("the last solve's end"));
+      a->Visit("message", &message, Field().Desc("the backend's own words"));
+      a->Visit("max_violation", &max_violation, Field().Desc("the largest constraint violation at the answer (scaled)"));
+      a->Visit("binding_rows", &binding_rows, Field().Desc("the constraint rows and variable bounds active at the answer"));
+      a->Visit("max_evaluations", &max_evaluations, Field().Desc("the budget of each solve"));
+      a->Visit("verify_rounds", &verify_rounds, Field().Desc("the verification loop's budget"));
+      a->Visit("rounds", &rounds, Field().Desc("solves after the first (tightening rounds)"));
+      a->Visit("evaluations", &evaluations, Field().Desc("model runs for values, over every solve"));
+      a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("model runs with exact derivatives"));
+      a->Visit("start_outcomes", &start_outcomes, Field().Desc("each start's first solve"));
+    }
+  };
+  struct Analysis {
+    int angle_steps = 0, accurate_factor = 0, accurate_angle_steps = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("angle_steps", &angle_steps, Field().Desc("cam angles of the fast rows"));
+      a->Visit("accurate_factor", &accurate_factor, Field().Desc("the accurate grid is this many times finer"));
+      a->Visit("accurate_angle_steps", &accurate_angle_steps, Field().Desc("cam angles of the accurate grid"));
+    }
+  };
+
+  std::string study = "disc_cam_min_size", name, follower, objective = "base_circle_radius_mm";
+  std::vector<VariableRow> variables;
+  Limits limits;
+  VerificationBlock verification;
+  bool verified = false;
+  std::optional<Best> best;
+  std::vector<std::string> binding;
+  std::vector<BindingLimit> binding_limits;
+  Optimizer optimizer;
+  Analysis analysis;
+  std::optional<std::vector<std::string>> notes;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("disc_cam_min_size"));
+    a->Visit("name", &name, Field().Desc("the design's name"));
+    a->Visit("follower", &follower, Field().Desc("the follower's type"));
+    a->Visit("objective", &objective, Field().Const("base_circle_radius_mm").Desc("what is minimised"));
+    a->Visit("variables", &variables, Field().Desc("the sized quantities, the base circle first"));
+    a->Visit("limits", &limits, Field().Desc("the limits applied"));
+    a->Visit("verification", &verification,
+             Field().Desc("each limit's check on the accurate model and the tightening rounds (studies/verification_json.h)"));
+    a->Visit("verified", &verified, Field().Desc("the accurate values are within the limits at the design (a view of status: "
+                                         "optimal_verified or feasible_verified)"));
+    a->Visit("best", &best, Field().NullWhenAbsent().Desc("the best design (null: no design)"));
+    a->Visit("binding", &binding, Field().Desc("the limits that bind at the answer, by key"));
+    a->Visit("binding_limits", &binding_limits, Field().Desc("what each binding limit costs"));
+    a->Visit("optimizer", &optimizer, Field().Desc("the solves"));
+    a->Visit("analysis", &analysis, Field().Desc("the grids"));
+    a->Visit("notes", &notes, Field().Desc("why the answer is not what was asked, when it is not"));
+  }
+
+  // Not in result.json: the sizing's outcome (model units) the other files are drawn from.
   objectives::DiscCamMinSizeOutcome outcome;
   /// Not empty when the answer is not what was asked (exit 3): what blocks and what would help.
   std::string blocking_message;
@@ -126,7 +344,6 @@ struct Result {
 /// @throws StudyError for bad input (exit 2) with the JSON path.
 Study Parse(const Node& root);
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// The best design as a complete disc_cam study; null when there is no design.
 nlohmann::json BestDiscCamStudy(const Study& study, const Result& result);
 /// The start design (each variable's start, the study's values clamped to their ranges) as a

@@ -35,15 +35,26 @@ void AddVerificationJson(const objectives::Verification& v, nlohmann::json& resu
   result["verification"] = WriteResult(VerificationBlock::Of(v));
 }
 
-void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry) {
+LimitSlopeResult MakeLimitSlopeResult(const objectives::LimitSlope* slope) {
+  LimitSlopeResult r;
   const bool has = slope && !slope->sides.empty();
-  entry["re_solve_slope"] = has ? NumberOrNull(slope->slope) : nlohmann::json(nullptr);
-  entry["re_solve_sides"] = has ? nlohmann::json(slope->sides) : nlohmann::json(nullptr);
-  entry["re_solve_step"] = slope ? NumberOrNull(slope->step) : nlohmann::json(nullptr);
-  entry["re_solve_left_slope"] = slope ? NumberOrNull(slope->left) : nlohmann::json(nullptr);
-  entry["re_solve_right_slope"] = slope ? NumberOrNull(slope->right) : nlohmann::json(nullptr);
-  entry["kink"] = slope && slope->kink;
-  entry["headline"] = has ? "re_solve_slope" : "limit_cost";
+  if (has) {
+    r.re_solve_slope = slope->slope;
+    r.re_solve_sides = slope->sides;
+  }
+  if (slope) {
+    r.re_solve_step = slope->step;
+    r.re_solve_left_slope = slope->left;
+    r.re_solve_right_slope = slope->right;
+  }
+  r.kink = slope && slope->kink;
+  r.headline = has ? "re_solve_slope" : "limit_cost";
+  return r;
+}
+
+void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry) {
+  const nlohmann::json members = WriteResult(MakeLimitSlopeResult(slope));
+  for (auto it = members.begin(); it != members.end(); ++it) entry[it.key()] = it.value();
 }
 
 std::string VerificationFailure(const objectives::Verification& v, const std::string& advice) {

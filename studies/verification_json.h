@@ -8,6 +8,7 @@
 //                     "accurate_value", "limit_value"}, ...]}
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,6 +86,36 @@ void AddVerificationJson(const objectives::Verification& v, nlohmann::json& resu
 /// kink, and `headline`: which of limit_cost and re_solve_slope to quote ("re_solve_slope" whenever
 /// it exists: it is what moving the limit does).
 void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry);
+
+struct LimitSlopeResult {
+  double re_solve_slope = std::numeric_limits<double>::quiet_NaN();
+  std::optional<std::string> re_solve_sides;
+  double re_solve_step = std::numeric_limits<double>::quiet_NaN();
+  double re_solve_left_slope = std::numeric_limits<double>::quiet_NaN();
+  double re_solve_right_slope = std::numeric_limits<double>::quiet_NaN();
+  bool kink = false;
+  std::string headline = "limit_cost";
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("re_solve_slope", &re_solve_slope,
+             Field().NullWhenNotFinite().Desc("the objective's slope against the limit from verified re-solves with the "
+                                              "limit moved (null: no side solved, or not computed)"));
+    a->Visit("re_solve_sides", &re_solve_sides,
+             Field().NullWhenAbsent().Desc("which re-solves it is from: central, left or right (null: none)"));
+    a->Visit("re_solve_step", &re_solve_step,
+             Field().NullWhenNotFinite().Desc("the limit's move, in its unit (null: not computed)"));
+    a->Visit("re_solve_left_slope", &re_solve_left_slope,
+             Field().NullWhenNotFinite().Desc("the slope from the lowered limit alone (null: none)"));
+    a->Visit("re_solve_right_slope", &re_solve_right_slope,
+             Field().NullWhenNotFinite().Desc("the slope from the raised limit alone (null: none)"));
+    a->Visit("kink", &kink, Field().Desc("the two sides' slopes disagree beyond their errors"));
+    a->Visit("headline", &headline,
+             Field().OneOf({"re_solve_slope", "limit_cost"}).Desc("which of the two to quote (re_solve_slope whenever it exists)"));
+  }
+};
+
+/// The re-solve members of a binding limit's declared entry; `slope` null: not computed.
+LimitSlopeResult MakeLimitSlopeResult(const objectives::LimitSlope* slope);
 
 /// The exit-3 sentence of a verification that does not hold: the limit, where, the accurate
 /// value with its error, the limit, and `advice` (what to change). Empty when it holds.
