@@ -22,6 +22,8 @@ using objectives::MotionObjective;
 constexpr double kDeg = kPi / 180.0;
 constexpr int kMaxFree = 31;
 
+void FillResult(const Study& s, Result& r);
+
 }  // namespace
 
 nlohmann::ordered_json Input::MotionSchema() {
@@ -341,6 +343,7 @@ Result Run(const Study& s, const RunContext& ctx) {
                          ", " + o.result.message + "): the design meets the limits but is not known to be optimal; "
                          "give more optimizer.max_evaluations";
   }
+  FillResult(s, r);
   return r;
 }
 
@@ -366,20 +369,17 @@ nlohmann::json MotionJson(const Study& s, const dc::DiscCam& cam) {
 
 namespace {
 
-nlohmann::json CheckJson(const objectives::MotionAccurate& a) {
-  nlohmann::json j = {{"objective", NumberOrNull(a.objective)},
-                      {"estimated_error", NumberOrNull(a.objective_error)},
-                      {"fast_value", NumberOrNull(a.objective_fast)},
-                      {"at_cam_angle_deg", a.objective_at_deg},
-                      {"where", a.objective_where}};
+// A program's accurate check: its members of best and of start.
+void FillCheck(const objectives::MotionAccurate& a, Result::Check& c) {
+  c.objective = a.objective;
+  c.estimated_error = a.objective_error;
+  c.fast_value = a.objective_fast;
+  c.at_cam_angle_deg = a.objective_at_deg;
+  c.where = a.objective_where;
   if (!a.residuals.empty()) {
-    nlohmann::json rs = nlohmann::json::array();
-    for (const auto& r : a.residuals)
-      rs.push_back({{"segment", r.segment}, {"speed_rpm", r.speed_rpm}, {"amplitude_mm", NumberOrNull(r.amplitude_mm)},
-                    {"estimated_error_mm", NumberOrNull(r.error_mm)}});
-    j["residual_vibration"] = rs;
+    std::vector<Result::Residual>& rs = c.residual_vibration.emplace();
+    for (const auto& r : a.residuals) rs.push_back({r.segment, r.speed_rpm, r.amplitude_mm, r.error_mm});
   }
-  return j;
 }
 
 }  // namespace
@@ -456,99 +456,90 @@ void AddSpectrum(const Study& s, const sizing::DiscCamMotionOutcome& o, Outputs&
 
 }  // namespace
 
-nlohmann::json ToJson(const Study& s, const Result& r) {
+namespace {
+
+// result.json's members (Result's Serialize) from the design's outcome.
+void FillResult(const Study& s, Result& r) {
   const sizing::DiscCamMotionOutcome& o = r.outcome;
   const std::string unit = objectives::MotionObjectiveUnit(s.spec.objective, s.follower_unit == "deg" ? "rad" : "mm");
-  nlohmann::json j;
-  j["study"] = "disc_cam_motion";
-  j["name"] = s.name;
-  j["follower"] = s.base.follower_type;
-  j["objective"] = {{"name", objectives::MotionObjectiveName(s.spec.objective)}, {"unit", unit}};
-  if (!s.spec.objective_speeds_rpm.empty()) j["objective"]["speeds_rpm"] = s.spec.objective_speeds_rpm;
-  nlohmann::json segs = nlohmann::json::array();
+  r.name = s.name;
+  r.follower = s.base.follower_type;
+  r.objective.name = objectives::MotionObjectiveName(s.spec.objective);
+  r.objective.unit = unit;
+  if (!s.spec.objective_speeds_rpm.empty()) r.objective.speeds_rpm = s.spec.objective_speeds_rpm;
   for (const auto& seg : s.spec.segments)
-    segs.push_back({{"segment", seg.segment},
-                    {"start_law", motion::LawName(s.base.cam.motion.segments()[size_t(seg.segment)].law)},
-                    {"control_points", seg.control_points},
-                    {"degree", seg.degree},
-                    {"boundary", {{"velocity", true}, {"acceleration", seg.acceleration}}}});
-  j["designed_segments"] = segs;
-  nlohmann::json limits = {{"pressure_angle_deg", s.spec.pressure_angle_deg}};
-  limits["radius_margin_mm"] = s.spec.radius_margin_mm + (s.spec.radius_margin_is_roller ? s.spec.cam.roller_radius : 0.0);
-  if (s.spec.stroke_mm) limits["stroke_mm"] = *s.spec.stroke_mm;
-  if (s.spec.contact_stress_MPa) limits["contact_stress_MPa"] = *s.spec.contact_stress_MPa;
-  if (s.spec.no_separation_up_to_rpm) limits["no_separation_up_to_rpm"] = *s.spec.no_separation_up_to_rpm;
-  j["limits"] = limits;
-  AddVerificationJson(o.verification, j);
-  j["verified"] = o.verified;
-  if (o.x.empty()) {
-    j["best"] = nullptr;
-  } else {
-    nlohmann::json b = CheckJson(o.check);
-    b["motion"] = MotionJson(s, o.cam);
+    r.designed_segments.push_back({seg.segment,
+                                   motion::LawName(s.base.cam.motion.segments()[size_t(seg.segment)].law),
+                                   seg.control_points,
+                                   seg.degree,
+                                   {true, seg.acceleration}});
+  r.limits.pressure_angle_deg = s.spec.pressure_angle_deg;
+  r.limits.radius_margin_mm =
+      s.spec.radius_margin_mm + (s.spec.radius_margin_is_roller ? s.spec.cam.roller_radius : 0.0);
+  r.limits.stroke_mm = s.spec.stroke_mm;
+  r.limits.contact_stress_MPa = s.spec.contact_stress_MPa;
+  r.limits.no_separation_up_to_rpm = s.spec.no_separation_up_to_rpm;
+  r.verification = VerificationBlock::Of(o.verification);
+  r.verified = o.verified;
+  if (!o.x.empty()) {
+    Result::Best& b = r.best.emplace();
+    FillCheck(o.check, b);
+    b.motion = MotionJson(s, o.cam);
     if (s.spec.follower) {
-      nlohmann::json spec_j = nlohmann::json::array();
+      Result::ResidualSpectrum& sp = b.residual_spectrum.emplace();
+      sp.model =
+          "the classic chart (model/disc_cam/residual_spectrum.h): one segment from rest, base-excited, damping on "
+          "the relative motion; exact for the study's follower when damping_ratio is 0, otherwise without the "
+          "return spring's share of the damper (a term (1 - r) c S', r = k_f/(k_f + k_s)) and without the vibration "
+          "earlier segments leave: best.objective is the whole program's response, verified by CVODE";
       for (const auto& g : Spectrum(s, o).segments)
-        spec_j.push_back({{"segment", g.index}, {"start_law", g.start_law}, {"tau_at_speeds", g.tau_at},
-                          {"start_amplitude_per_rise", g.start_at}, {"designed_amplitude_per_rise", g.designed_at}});
-      b["residual_spectrum"] = {
-          {"model",
-           "the classic chart (model/disc_cam/residual_spectrum.h): one segment from rest, base-excited, damping on "
-           "the relative motion; exact for the study's follower when damping_ratio is 0, otherwise without the "
-           "return spring's share of the damper (a term (1 - r) c S', r = k_f/(k_f + k_s)) and without the vibration "
-           "earlier segments leave: best.objective is the whole program's response, verified by CVODE"},
-          {"segments", spec_j}};
+        sp.segments.push_back({g.index, g.start_law, g.tau_at, g.start_at, g.designed_at});
     }
+    // null (NaN): no separation seen up to the limit.
     if (s.spec.no_separation_up_to_rpm)
-      b["lowest_separation_rpm"] = o.check.lowest_separation_rpm > 0 ? nlohmann::json(o.check.lowest_separation_rpm)
-                                                                     : nlohmann::json(nullptr);
-    j["best"] = b;
+      b.lowest_separation_rpm = o.check.lowest_separation_rpm > 0 ? o.check.lowest_separation_rpm : NAN;
   }
-  j["start"] = CheckJson(o.start);
-  j["start"]["laws"] = nlohmann::json::array();
+  FillCheck(o.start, r.start);
   for (const auto& seg : s.spec.segments)
-    j["start"]["laws"].push_back(motion::LawName(s.base.cam.motion.segments()[size_t(seg.segment)].law));
-  nlohmann::json named = nlohmann::json::array();
+    r.start.laws.push_back(motion::LawName(s.base.cam.motion.segments()[size_t(seg.segment)].law));
   double best_named = kInf;
   std::string best_named_law;
   for (const auto& n : o.named_laws) {
-    named.push_back({{"segment", n.segment}, {"law", n.law}, {"objective", NumberOrNull(n.value)},
-                     {"estimated_error", NumberOrNull(n.error)}});
+    r.named_laws.push_back({n.segment, n.law, n.value, n.error, std::nullopt});
     if (!std::isfinite(n.value))
-      named.back()["note"] = "infinite: the law's acceleration jumps (inside it or against a dwell), so does its jerk";
+      r.named_laws.back().note = "infinite: the law's acceleration jumps (inside it or against a dwell), so does its jerk";
     if (std::isfinite(n.value) && n.value < best_named) best_named = n.value, best_named_law = n.law;
   }
-  j["named_laws"] = named;
   if (!o.x.empty() && std::isfinite(best_named)) {
-    j["best_named_law"] = {{"law", best_named_law}, {"objective", best_named}};
+    r.best_named_law = Result::BestNamedLaw{best_named_law, best_named};
     // Beats it when the accurate values differ by more than both errors together.
     double err = 0;
     for (const auto& n : o.named_laws)
       if (n.law == best_named_law) err = std::max(err, n.error);
-    j["beats_every_named_law"] = o.check.objective + o.check.objective_error + err < best_named;
+    r.beats_every_named_law = o.check.objective + o.check.objective_error + err < best_named;
   }
-  j["optimizer"] = {{"backend", s.backend},
-                    {"converged", o.converged},
-                    {"status", optimizers::ToString(o.result.status)},
-                    {"message", o.result.message},
-                    {"max_violation", o.result.max_violation},
-                    {"max_evaluations", s.options.solver.max_evaluations},
-                    {"verify_rounds", s.options.verify_rounds},
-                    {"rounds", o.rounds},
-                    {"evaluations", o.result.value_evaluations},
-                    {"gradient_evaluations", o.result.gradient_evaluations},
-                    {"gradient_method",
-                     "exact: forward-mode differentiation of the rows (the dynamic rows: forward sensitivities of the "
-                     "held-on follower's ODE through its RK4 steps)"}};
-  j["analysis"] = {{"angle_steps", s.spec.angle_steps},
-                   {"accurate_factor", s.spec.accurate_factor},
-                   {"accurate_angle_steps", s.spec.angle_steps * s.spec.accurate_factor}};
-  if (!r.blocking_message.empty()) j["notes"] = {r.blocking_message};
-  return j;
+  Result::Optimizer& opt = r.optimizer;
+  opt.backend = s.backend;
+  opt.converged = o.converged;
+  opt.status = optimizers::ToString(o.result.status);
+  opt.message = o.result.message;
+  opt.max_violation = o.result.max_violation;
+  opt.max_evaluations = s.options.solver.max_evaluations;
+  opt.verify_rounds = s.options.verify_rounds;
+  opt.rounds = o.rounds;
+  opt.evaluations = o.result.value_evaluations;
+  opt.gradient_evaluations = o.result.gradient_evaluations;
+  opt.gradient_method =
+      "exact: forward-mode differentiation of the rows (the dynamic rows: forward sensitivities of the "
+      "held-on follower's ODE through its RK4 steps)";
+  r.analysis = {s.spec.angle_steps, s.spec.accurate_factor, s.spec.angle_steps * s.spec.accurate_factor};
+  if (!r.blocking_message.empty()) r.notes = std::vector<std::string>{r.blocking_message};
 }
 
+}  // namespace
+
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   const sizing::DiscCamMotionOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   if (o.x.empty()) return;
@@ -609,9 +600,9 @@ void RunDiscCamMotion(const Node& root, const RunContext& ctx, Outputs& out) {
 
 CAMOPT_REGISTER_STUDY("disc_cam_motion", RunDiscCamMotion);
 CAMOPT_REGISTER_STUDY_PARSER("disc_cam_motion", [](const Node& root) { (void)Parse(root); });
-CAMOPT_REGISTER_DECLARED_KIND("disc_cam_motion", Input,
-                              "camopt study: the shape of a disc cam's rises designed for the least peak acceleration, "
-                              "jerk, residual vibration or contact force");
+CAMOPT_REGISTER_KIND("disc_cam_motion", Input, Result,
+                     "camopt study: the shape of a disc cam's rises designed for the least peak acceleration, "
+                     "jerk, residual vibration or contact force");
 
 Fidelity Knobs(const nlohmann::json&) {
   const Input defaults;

@@ -163,7 +163,7 @@ TEST(DiscCamMotion, LeastResidualVibrationBeatsEveryNamedLawOnTheFineSimulation)
   // The classic one-segment spectrum (written beside the result) of the start law at the study's
   // τ, scaled by r h, against the start's verified residual: the chart's model leaves out the return
   // spring's share of the damper and the earlier segments' vibration, a few per cent here.
-  const json j = dcm::ToJson(st, r);
+  const json j = studies::WriteResult(r);
   const json& sg = j["best"]["residual_spectrum"]["segments"][0];
   const double kf = st.spec.follower->follower_stiffness_N_per_mm, ks = st.spec.follower->loads.spring_rate_N_per_mm;
   const double tau = 100.0 / 360.0 / (600.0 / 60.0) * st.spec.follower->NaturalFrequencyRadS() / (2 * kPiHere);
@@ -263,7 +263,7 @@ TEST(DiscCamMotion, OscillatingLeastJerkBeatsTheNamedLaws) {
   const auto joints = motion::CheckContinuity(o.cam.motion);
   EXPECT_GE(joints[0].order, 2);
   EXPECT_GE(joints.back().order, 2);
-  const json j = dcm::ToJson(st, r);
+  const json j = studies::WriteResult(r);
   EXPECT_TRUE(j["beats_every_named_law"].get<bool>());
   EXPECT_TRUE(j["best"]["motion"][0].contains("control_points_deg"));
 }
@@ -320,7 +320,7 @@ TEST(DiscCamMotion, LeastResidualVibrationIsAZeroOfTheDesignedLawsSpectrum) {
   EXPECT_TRUE(o.verified);
   const double tau = 100.0 / 360.0 / rps * fn;
   const double start = std::abs(std::sin(kPiHere * tau)) / (kPiHere * tau * (tau * tau - 1));
-  const json j = dcm::ToJson(st, r);
+  const json j = studies::WriteResult(r);
   const json& sg = j["best"]["residual_spectrum"]["segments"][0];
   EXPECT_NEAR(sg["tau_at_speeds"][0].get<double>(), tau, 1e-12);
   EXPECT_NEAR(sg["start_amplitude_per_rise"][0].get<double>(), start, 1e-9);
