@@ -1,8 +1,12 @@
 // The study registry, the run context and the set of output files of one run.
 //
-// A study kind is one .cc file in studies/ that parses its section of the file, runs the stages
-// it needs and fills an Outputs; it registers itself with CAMOPT_REGISTER_STUDY and touches no
-// other kind.
+// A study kind is a header in studies/ declaring its Input and its Result (each with a
+// `Serialize`, studies/archive.h) and a .cc with Parse → Run → Write, registered with
+// CAMOPT_REGISTER_STUDY_KIND (the runner and the parse step) and CAMOPT_REGISTER_KIND (the input's
+// and the result's schemas), with its work estimate (RegisterWorkEstimate), fidelity knobs
+// (CAMOPT_REGISTER_FIDELITY) and report rows (CAMOPT_REGISTER_REPORT) beside them; docs/studies.md,
+// "One declaration per kind" and "The result declared once". Kinds whose result is not declared
+// yet write result.json with a hand-written ToJson and register with CAMOPT_REGISTER_DECLARED_KIND.
 #pragma once
 
 #include <chrono>

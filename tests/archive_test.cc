@@ -225,9 +225,11 @@ struct ToyResult {
   std::optional<double> deflection_deg;
   std::vector<Row> rows;
   std::map<std::string, double> elasticity;
+  std::optional<double> covariance;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("study", &study, Field().Const("toy"));
+    a->Visit("covariance", &covariance, Field().NullWhenAbsent());
     a->Visit("stress_MPa", &stress_MPa, Field().Unit("MPa").Desc("the largest stress"));
     a->Visit("count", &count, Field());
     a->Visit("ok", &ok, Field());
@@ -248,12 +250,14 @@ TEST(Archive, ResultWriterWritesEveryMemberAndRefusesNonFiniteNumbersByPath) {
   EXPECT_EQ(j["count"], 3);
   EXPECT_EQ(j["ok"], false);
   EXPECT_FALSE(j.contains("deflection_deg"));  // an unset optional is absent
+  EXPECT_TRUE(j.contains("covariance"));        // unless NullWhenAbsent: null
+  EXPECT_TRUE(j["covariance"].is_null());
   EXPECT_EQ(j["rows"][0]["margin"], 0.5);
   EXPECT_TRUE(j["rows"][1]["stiffness_N_per_mm"].is_null());  // NullWhenNotFinite
   EXPECT_FALSE(j["rows"][1].contains("margin"));
   EXPECT_EQ(j["elasticity"], json({{"diameter_mm", -0.25}, {"width_mm", 1.5}}));
   // Keys sorted, as result.json has them.
-  EXPECT_EQ(j.dump().rfind("{\"count\":3,\"elasticity\":{\"diameter_mm\"", 0), 0u);
+  EXPECT_EQ(j.dump().rfind("{\"count\":3,\"covariance\":null,\"elasticity\":{\"diameter_mm\"", 0), 0u);
   const auto path_of = [](ToyResult x) -> std::string {
     try {
       (void)WriteResult(x);
@@ -288,9 +292,10 @@ TEST(Archive, ResultSchemaSaysWhatIsAlwaysThereAndWhatMayBeNull) {
   EXPECT_EQ(p["rows"]["items"]["properties"]["stiffness_N_per_mm"]["type"], nlohmann::ordered_json({"number", "null"}));
   EXPECT_EQ(p["rows"]["items"]["required"], nlohmann::ordered_json({"stiffness_N_per_mm"}));
   EXPECT_EQ(p["elasticity"]["additionalProperties"]["type"], "number");
+  EXPECT_EQ(p["covariance"]["type"], nlohmann::ordered_json({"number", "null"}));
   // Required: the members that are not std::optional, then the run's stamp (RunStudy).
   const std::vector<std::string> required = s["required"];
-  for (const char* always : {"study", "stress_MPa", "count", "ok", "rows", "elasticity", "status", "camopt_version",
+  for (const char* always : {"study", "covariance", "stress_MPa", "count", "ok", "rows", "elasticity", "status", "camopt_version",
                              "study_sha256", "warnings"})
     EXPECT_NE(std::find(required.begin(), required.end(), always), required.end()) << always;
   EXPECT_EQ(std::find(required.begin(), required.end(), "deflection_deg"), required.end());
