@@ -68,8 +68,13 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
       st.round = round + 1, st.limit = c.limit, st.where = c.where;
       st.accurate_value = c.accurate_value, st.limit_value = c.limit_value;
       if (c.limit == "pressure_angle_deg") {
+        // The fast rows hold |φ| within [−p, p]: an excess as large as p itself leaves no band to
+        // tighten to, and the design stays over the limit (not verified) instead of a problem
+        // whose bounds cross.
+        const double next = fast.pressure_angle_deg - (ex + kTightenMargin * spec.pressure_angle_deg);
+        if (!(next > 0)) continue;
         st.fast_limit_before = fast.pressure_angle_deg;
-        fast.pressure_angle_deg -= ex + kTightenMargin * spec.pressure_angle_deg;
+        fast.pressure_angle_deg = next;
         st.fast_limit_after = fast.pressure_angle_deg;
       } else if (c.limit == "radius_margin_mm") {
         st.fast_limit_before = fast.radius_margin_extra_mm;

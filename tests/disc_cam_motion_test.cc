@@ -351,6 +351,33 @@ TEST(DiscCamMotion, FewStepsGiveFiniteRows) {
 }
 
 // What the kind refuses, with the JSON path (exit 2).
+// A pressure-angle limit the design misses on the accurate model by more than the limit itself
+// (5 deg against about 25 deg for a 30 mm rise over 100 deg on a 50 mm base circle): the fast rows'
+// band [-p, p] cannot be tightened by that much, so the answer is the unverified design with the
+// limit named (exit 3), not a problem whose bounds cross (which ended as an internal error, exit 1).
+TEST(DiscCamMotion, APressureAngleLimitFarOutOfReachIsNotVerifiedAndNamed) {
+  const auto dir = TempDir("disc-cam-motion-far-limit");
+  json s = Example();
+  s["motion"][0]["optimize"]["control_points"] = 8;
+  s["limits"]["pressure_angle_deg"] = 5;
+  s["dynamics"]["revolutions"] = 2;
+  WriteFile(dir / "s.json", s.dump());
+  const auto r = RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_EQ(r.stderr_text.find("internal error"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("pressure_angle_deg"), std::string::npos) << r.stderr_text;
+  const json result = json::parse(ReadFile(dir / "o" / "result.json"));
+  EXPECT_EQ(result["verified"], false);
+  bool checked = false;
+  for (const json& c : result["verification"]["checks"])
+    if (c["limit"] == "pressure_angle_deg") {
+      checked = true;
+      EXPECT_FALSE(c["holds"].get<bool>());
+      EXPECT_GT(c["accurate_value"].get<double>(), 2 * 5.0);  // beyond what tightening can close
+    }
+  EXPECT_TRUE(checked);
+}
+
 TEST(DiscCamMotion, BadInputExits2NamingThePath) {
   const auto dir = TempDir("disc-cam-motion-bad");
   struct Bad {
