@@ -318,15 +318,8 @@ struct Result {
       a->Visit("gradient_method", &gradient_method, Field().Desc("how the gradients are computed"));
     }
   };
-  struct Analysis {
-    int angle_steps = 0, accurate_factor = 0, accurate_angle_steps = 0;
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("angle_steps", &angle_steps, Field().Desc("cam angles of the fast rows"));
-      a->Visit("accurate_factor", &accurate_factor, Field().Desc("the accurate grid is this many times finer"));
-      a->Visit("accurate_angle_steps", &accurate_angle_steps, Field().Desc("cam angles of the accurate grid"));
-    }
-  };
+  /// The fast rows' and the accurate check's grids: disc_cam_min_size's block.
+  using Analysis = disc_cam_min_size::Result::Analysis;
 
   std::string study = "disc_cam_motion", name, follower;
   Objective objective;
