@@ -18,8 +18,7 @@ const char* StatusName(Status status) {
 }
 
 std::optional<Status> StatusFromName(const std::string& name) {
-  for (Status s : {Status::kOptimalVerified, Status::kFeasibleVerified, Status::kInfeasible, Status::kNotVerifiable,
-                   Status::kNotConverged, Status::kLimitsMet, Status::kLimitsExceeded})
+  for (Status s : kAllStatuses)
     if (name == StatusName(s)) return s;
   return std::nullopt;
 }

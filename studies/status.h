@@ -36,6 +36,11 @@ enum class Status {
   kLimitsExceeded,
 };
 
+/// Every status, in the order above (the result schema's enum, StatusFromName).
+inline constexpr Status kAllStatuses[] = {Status::kOptimalVerified, Status::kFeasibleVerified, Status::kInfeasible,
+                                          Status::kNotVerifiable,   Status::kNotConverged,     Status::kLimitsMet,
+                                          Status::kLimitsExceeded};
+
 /// result.json's spelling: "optimal_verified", "feasible_verified", "infeasible", "not_verifiable",
 /// "not_converged", "limits_met", "limits_exceeded".
 const char* StatusName(Status status);

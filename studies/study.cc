@@ -645,8 +645,7 @@ void AddRunStampToResultSchema(nlohmann::ordered_json& schema) {
   // version and the study's hash, the warnings.
   nlohmann::ordered_json& p = schema["properties"];
   nlohmann::ordered_json statuses = nlohmann::ordered_json::array();
-  for (Status st : {Status::kOptimalVerified, Status::kFeasibleVerified, Status::kInfeasible, Status::kNotVerifiable,
-                    Status::kNotConverged, Status::kLimitsMet, Status::kLimitsExceeded})
+  for (Status st : kAllStatuses)
     statuses.push_back(StatusName(st));
   p["status"] = {{"description", "the answer's one status, from which the exit code, the verdict and `verified` follow (docs/studies.md)"},
                  {"enum", statuses}};
