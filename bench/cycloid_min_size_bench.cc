@@ -15,7 +15,7 @@ namespace cycloid_min_size_bench {
 
 void BM_CycloidMinSizeRatio29(benchmark::State& state) {
   CycloidMinSizeOptions o;
-  o.solver.backend = state.range(0) == 0 ? "ipopt" : "slsqp";
+  o.solver.backend = state.range(0) == 0 ? optimizers::Backend::kIpopt : optimizers::Backend::kSlsqp;
   o.solver.tolerance = 1e-6;
   o.solver.constraint_tolerance = 1e-3;
   o.solver.stall_iterations = 3;

@@ -44,15 +44,15 @@ BENCHMARK(BM_LcrSizingJacobian)->Unit(benchmark::kMicrosecond);
 
 // One combination (25/26 + 35/36), one start. Arg 0: backend index; arg 1: 0 aggregate, 1 samples.
 void BM_SolveOneCombination(benchmark::State& state) {
-  const char* backends[] = {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
+  const char* backends[] = {"ipopt", "slsqp", "mma", "cobyla"};
   const auto form = state.range(1) ? LcrConstraintForm::kSamples : LcrConstraintForm::kAggregate;
   const auto p = camopt::objectives::MakeLcrSizingProblem(Spec(form));
   camopt::optimizers::SolverOptions o;
-  o.backend = backends[state.range(0)];
+  o.backend = *camopt::optimizers::BackendFromName(backends[state.range(0)]);
   o.max_seconds = 20;
   camopt::optimizers::SolverResult r;
   for (auto _ : state) r = camopt::optimizers::Solve(p, o);
-  state.SetLabel(std::string(o.backend) + (state.range(1) ? " samples" : " aggregate") + " " +
+  state.SetLabel(std::string(camopt::optimizers::ToString(o.backend)) + (state.range(1) ? " samples" : " aggregate") + " " +
                  camopt::optimizers::ToString(r.status));
   state.counters["OD_mm"] = r.objective;
   state.counters["value_evals"] = r.value_evaluations;
@@ -72,7 +72,7 @@ void BM_LcrMinSizeStudy(benchmark::State& state) {
   std::stringstream ss;
   ss << in.rdbuf();
   nlohmann::json study = nlohmann::json::parse(ss.str());
-  const char* backends[] = {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
+  const char* backends[] = {"ipopt", "slsqp", "mma", "cobyla"};
   study["optimizer"]["backend"] = backends[state.range(0)];
   study["optimizer"]["constraints"] = state.range(1) ? "samples" : "aggregate";
   study["optimizer"]["polish"] = state.range(2) != 0;

@@ -89,11 +89,11 @@ void Constraints(unsigned m, double* result, unsigned n, const double* z, double
   }
 }
 
-nlopt::algorithm Algorithm(const std::string& backend) {
-  if (backend == "nlopt_slsqp" || backend == "slsqp") return nlopt::LD_SLSQP;
-  if (backend == "nlopt_mma" || backend == "mma") return nlopt::LD_MMA;
-  if (backend == "nlopt_cobyla" || backend == "cobyla") return nlopt::LN_COBYLA;
-  throw std::invalid_argument("unknown NLopt backend '" + backend + "'");
+nlopt::algorithm Algorithm(Backend backend) {
+  if (backend == Backend::kSlsqp) return nlopt::LD_SLSQP;
+  if (backend == Backend::kMma) return nlopt::LD_MMA;
+  if (backend == Backend::kCobyla) return nlopt::LN_COBYLA;
+  throw std::invalid_argument(std::string("not an NLopt backend: ") + ToString(backend));
 }
 
 }  // namespace

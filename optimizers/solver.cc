@@ -19,18 +19,34 @@ const char* ToString(SolverStatus status) {
   return "failed";
 }
 
-std::vector<std::string> Backends() {
-  return {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"};
+const char* ToString(Backend backend) {
+  switch (backend) {
+    case Backend::kIpopt: return "ipopt";
+    case Backend::kSlsqp: return "slsqp";
+    case Backend::kMma: return "mma";
+    case Backend::kCobyla: return "cobyla";
+  }
+  return "ipopt";
+}
+
+std::vector<Backend> Backends() { return {Backend::kIpopt, Backend::kSlsqp, Backend::kMma, Backend::kCobyla}; }
+
+std::optional<Backend> BackendFromName(std::string_view name, bool* deprecated) {
+  if (deprecated) *deprecated = false;
+  for (Backend b : Backends()) {
+    if (name == ToString(b)) return b;
+    if (b != Backend::kIpopt && name == std::string("nlopt_") + ToString(b)) {
+      if (deprecated) *deprecated = true;
+      return b;
+    }
+  }
+  return std::nullopt;
 }
 
 namespace {
 SolverResult SolveWith(const objectives::Problem& problem, const SolverOptions& options) {
-  const std::string& b = options.backend;
-  if (b == "ipopt") return SolveIpopt(problem, options);
-  if (b == "nlopt_slsqp" || b == "nlopt_mma" || b == "nlopt_cobyla" || b == "slsqp" ||
-      b == "mma" || b == "cobyla")
-    return SolveNlopt(problem, options);
-  throw std::invalid_argument("unknown optimizer backend '" + b + "'");
+  if (options.backend == Backend::kIpopt) return SolveIpopt(problem, options);
+  return SolveNlopt(problem, options);
 }
 }  // namespace
 
@@ -82,11 +98,11 @@ SolverResult SolveAndPolish(const objectives::Problem& problem, const SolverOpti
   problem.Validate();
   SolverResult first = SolveWith(problem, options);
   const bool stuck = first.status == SolverStatus::kIterationLimit || first.status == SolverStatus::kInfeasible;
-  if (!stuck || options.fallback_backend.empty() || options.fallback_backend == options.backend || first.x.empty())
+  if (!stuck || !options.fallback_backend || *options.fallback_backend == options.backend || first.x.empty())
     return first;
   SolverOptions o = options;
-  o.backend = options.fallback_backend;
-  o.fallback_backend.clear();
+  o.backend = *options.fallback_backend;
+  o.fallback_backend.reset();
   o.max_evaluations = options.fallback_max_evaluations;
   o.initial = first.x;
   SolverResult second = SolveWith(problem, o);
@@ -94,9 +110,9 @@ SolverResult SolveAndPolish(const objectives::Problem& problem, const SolverOpti
   out.value_evaluations = first.value_evaluations + second.value_evaluations;
   out.gradient_evaluations = first.gradient_evaluations + second.gradient_evaluations;
   out.iterations = first.iterations + second.iterations;
-  out.message = second.ok() ? options.backend + " stopped (" + first.message + "); " + o.backend +
-                                  " polished its last point: " + second.message
-                            : first.message + " (the " + o.backend + " polish did not converge: " +
+  out.message = second.ok() ? std::string(ToString(options.backend)) + " stopped (" + first.message + "); " +
+                                  ToString(o.backend) + " polished its last point: " + second.message
+                            : first.message + " (the " + ToString(o.backend) + " polish did not converge: " +
                                   second.message + ")";
   return out;
 }

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "objectives/problem.h"
@@ -24,9 +26,21 @@ enum class SolverStatus {
 };
 const char* ToString(SolverStatus status);
 
+/// The optimizers camopt drives: Ipopt (interior point with exact first derivatives and a
+/// limited-memory Hessian) and NLopt's SLSQP and MMA (exact first derivatives) and COBYLA (values
+/// only).
+enum class Backend { kIpopt, kSlsqp, kMma, kCobyla };
+/// A backend's one spelling, in studies, result.json and messages alike: "ipopt", "slsqp", "mma",
+/// "cobyla".
+const char* ToString(Backend backend);
+/// The backend of a spelling. The old spellings "nlopt_slsqp", "nlopt_mma" and "nlopt_cobyla" are
+/// accepted (*deprecated is then set); nullopt: no backend is spelt so.
+std::optional<Backend> BackendFromName(std::string_view name, bool* deprecated = nullptr);
+/// Every backend, in the enum's order.
+std::vector<Backend> Backends();
+
 struct SolverOptions {
-  /// "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla", "ipopt" (also "slsqp", "mma", "cobyla").
-  std::string backend = "ipopt";
+  Backend backend = Backend::kIpopt;
   double tolerance = 1e-8;             ///< relative optimality / step tolerance
   double constraint_tolerance = 1e-6;  ///< on scaled constraints, also used to judge feasibility
   int max_evaluations = 3000;          ///< NLopt: evaluations; Ipopt: iterations
@@ -57,10 +71,10 @@ struct SolverOptions {
   /// Starting point (unscaled); empty: the variables' own initial values. Clamped to the bounds.
   std::vector<double> initial;
   /// When the backend stops at its iteration limit (or stalls infeasible), its last point is
-  /// polished by this backend (same tolerances, its own evaluation budget); empty: no fallback.
+  /// polished by this backend (same tolerances, its own evaluation budget); none: no fallback.
   /// The result is the fallback's when it converges, else the first backend's. Its message says
   /// which backend finished.
-  std::string fallback_backend;
+  std::optional<Backend> fallback_backend;
   int fallback_max_evaluations = 3000;
 };
 
@@ -98,9 +112,6 @@ SolverResult SolveMultistart(const objectives::Problem& problem, const SolverOpt
 
 /// The starting point of a solve: options.initial or the variables' initial values, in bounds.
 std::vector<double> InitialPoint(const objectives::Problem& problem, const SolverOptions& options);
-
-/// Backend names Solve() accepts.
-std::vector<std::string> Backends();
 
 namespace internal {
 /// Fills status-independent fields of result at x: objective, violation, active/violated rows.

@@ -1328,7 +1328,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   auto progress = [&](double done, const std::string& stage) {
     if (options.progress) options.progress(std::min(1.0, done / steps), stage);
   };
-  const OutsideDomain outside = options.solver.backend == "ipopt" ? OutsideDomain::kNaN : OutsideDomain::kPenalty;
+  const OutsideDomain outside = options.solver.backend == optimizers::Backend::kIpopt ? OutsideDomain::kNaN : OutsideDomain::kPenalty;
 
   // One round of solves with the current fast limits: round 0 from every start, later rounds from
   // the last design. The smallest converged end point (else the first with a design) is kept.
@@ -1336,7 +1336,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
     optimizers::SolverResult best;
     bool have = false;
-    const bool ipopt_backend = options.solver.backend == "ipopt";
+    const bool ipopt_backend = options.solver.backend == optimizers::Backend::kIpopt;
     const std::vector<std::vector<double>> points =
         round == 0 ? Starts(model, starts) : std::vector<std::vector<double>>{out.x};
     for (size_t s = 0; s < points.size(); ++s) {
@@ -1347,7 +1347,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
       so.initial = points[s];
       // Ipopt may cycle on the kinks of the rows (a peak cell or a loaded pair switching) until its
       // iteration limit: SLSQP polishes its last point then (as the LCR sizing does).
-      if (ipopt_backend && so.fallback_backend.empty()) so.fallback_backend = "nlopt_slsqp";
+      if (ipopt_backend && !so.fallback_backend) so.fallback_backend = optimizers::Backend::kSlsqp;
       optimizers::SolverResult r = optimizers::Solve(problem, so);
       out.evaluations += r.value_evaluations;
       out.gradient_evaluations += r.gradient_evaluations;
@@ -1365,15 +1365,15 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     // (SLSQP takes a start as it is; Ipopt's barrier would push it back inside first).
     if (have && best.ok() && ipopt_backend) {
       optimizers::SolverOptions polish = options.solver;
-      polish.backend = "nlopt_slsqp";
-      polish.fallback_backend.clear();
+      polish.backend = optimizers::Backend::kSlsqp;
+      polish.fallback_backend.reset();
       polish.initial = best.x;
       optimizers::SolverResult p = optimizers::Solve(problem, polish);
       out.evaluations += p.value_evaluations;
       out.gradient_evaluations += p.gradient_evaluations;
       const double settled = std::max(options.solver.stall_change, options.solver.tolerance) * std::max(std::abs(best.objective), 1.0);
       if (p.ok() && p.objective <= best.objective + settled) {
-        p.message = best.message + "; nlopt_slsqp polished its stall point: " + p.message;
+        p.message = best.message + "; slsqp polished its stall point: " + p.message;
         p.value_evaluations += best.value_evaluations;
         p.gradient_evaluations += best.gradient_evaluations;
         p.iterations += best.iterations;
@@ -1523,8 +1523,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         // first-order point of the moved problem too (the paper drive at 1322 MPa stayed at
         // 147.78 mm; the full search finds 146.22 mm). A re-solve that stopped short, or did not
         // move the size although its binding limit moved, is solved by Ipopt from the same start.
-        again.solver.backend = "nlopt_slsqp";
-        again.solver.fallback_backend.clear();
+        again.solver.backend = optimizers::Backend::kSlsqp;
+        again.solver.fallback_backend.reset();
         again.re_solve_limit_costs = false;
         again.fast_start = start;
         again.progress = nullptr;
@@ -1535,8 +1535,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
           out.evaluations += r.evaluations;
           out.gradient_evaluations += r.gradient_evaluations;
           again.solver = options.solver;
-          again.solver.backend = "ipopt";
-          again.solver.fallback_backend.clear();
+          again.solver.backend = optimizers::Backend::kIpopt;
+          again.solver.fallback_backend.reset();
           CycloidMinSizeOutcome ipopt = SolveCycloidMinSize(moved, again);
           if ((ipopt.verified && ipopt.converged) || !(r.verified && r.converged)) r = std::move(ipopt);
         }

@@ -152,7 +152,7 @@ void LongestLife(const LcrSizingSpec& spec, const LcrMinSizeOptions& options, Lc
     x0[t_index] = 0.0;
     optimizers::SolverOptions so = options.solver;
     so.initial = x0;
-    so.fallback_backend.clear();
+    so.fallback_backend.reset();
     optimizers::SolverResult r = optimizers::Solve(problem, so);
     values += r.value_evaluations;
     gradients += r.gradient_evaluations;

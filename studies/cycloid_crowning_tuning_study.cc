@@ -12,6 +12,7 @@
 
 #include "optimizers/solver.h"
 #include "studies/cycloid_study_common.h"
+#include "studies/backend_input.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -373,10 +374,6 @@ ojson Input::SchemaRules() {
 
 namespace {
 
-std::string BackendName(const std::string& backend) {
-  return backend == "ipopt" ? "ipopt" : backend == "slsqp" ? "nlopt_slsqp" : "nlopt_cobyla";
-}
-
 // The accurate model of the verified-optimum contract (objectives/verification.h): the tuned
 // design at twice the crank angles (the study's N and the same shifted by half a step) on a grid
 // with twice the cells each way. Its own error is estimated by the refinement: |value(2N) −
@@ -494,7 +491,7 @@ Result RunJoint(const Study& s, const RunContext& ctx) {
                             cycloid_common::Fixed(e.edge_margin_um, 1) + " um");
       });
   optimizers::SolverOptions options;
-  options.backend = BackendName(s.backend);
+  options.backend = ToBackend(s.backend);
   options.tolerance = 1e-3;
   options.constraint_tolerance = 1e-3;  // scaled: 0.01 µm of end distance (scale 10 µm)
   options.max_evaluations = s.max_evaluations;
@@ -588,7 +585,7 @@ Result RunShorthand(const Study& s, const RunContext& ctx) {
                             cycloid_common::Fixed(e.stress_MPa, 0) + " MPa");
       });
   optimizers::SolverOptions options;
-  options.backend = "nlopt_cobyla";
+  options.backend = optimizers::Backend::kCobyla;
   options.tolerance = 1e-3;             // relative, on f (and L) and on the stress
   options.constraint_tolerance = 1e-2;  // µm of edge margin; NLopt aims at a tenth of it
   options.max_evaluations = s.max_evaluations;

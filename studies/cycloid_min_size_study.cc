@@ -237,11 +237,11 @@ void ParseAnalysis(const Input::Analysis& in, Study& s) {
 
 void ParseOptimizer(const Input::Optimizer& in, Study& s) {
   optimizers::SolverOptions& so = s.options.solver;
-  s.backend = in.backend;
+  s.backend = optimizers::ToString(ToBackend(in.backend));
   s.options.starts = in.starts;
   so.max_evaluations = in.max_evaluations;
   s.options.verify_rounds = in.verify_rounds;
-  so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
+  so.backend = ToBackend(s.backend);
   // The evaluation budget bounds the run, never the clock: the same study gives the same design.
   so.max_seconds = 1e9;
   // The contact model is discretised: its peaks move by a fraction of a MPa between neighbouring

@@ -23,6 +23,7 @@
 
 #include "model/cycloid/loaded_tca.h"
 #include "sizing/cycloid_min_size.h"
+#include "studies/backend_input.h"
 #include "studies/archive.h"
 #include "studies/cycloid_input.h"
 #include "studies/input.h"
@@ -204,7 +205,7 @@ struct Input {
     int starts = kDefaultStarts, max_evaluations = kDefaultMaxEvaluations, verify_rounds = kDefaultVerifyRounds;
     template <typename Archive>
     void Serialize(Archive* a) {
-      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}, "one of \"ipopt\", \"slsqp\"").Desc("the solver: Ipopt or NLopt's SLSQP"));
+      a->Visit("backend", &backend, BackendField({optimizers::Backend::kIpopt, optimizers::Backend::kSlsqp}).Desc("the solver: Ipopt or NLopt's SLSQP"));
       a->Visit("starts", &starts, Field().AtLeast(1).AtMost(10, "at most 10 starts").Desc("starts of the solver"));
       a->Visit("max_evaluations", &max_evaluations,
                Field().AtLeast(1).AtMost(10000, "at most 10000").Desc("per solve: Ipopt iterations, SLSQP evaluations"));

@@ -292,10 +292,10 @@ Study Parse(const Node& root) {
   spec.angle_steps = in.analysis.angle_steps;
   spec.accurate_factor = in.analysis.accurate_factor;
   optimizers::SolverOptions& so = s.options.solver;
-  s.backend = in.optimizer.backend;
+  s.backend = optimizers::ToString(ToBackend(in.optimizer.backend));
   so.max_evaluations = in.optimizer.max_evaluations;
   s.options.verify_rounds = in.optimizer.verify_rounds;
-  so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
+  so.backend = ToBackend(s.backend);
   // The rows are smooth (closed forms over the angle samples): tight tolerances, and the budget,
   // never the clock, bounds a run (the same study gives the same design).
   so.tolerance = 1e-10;

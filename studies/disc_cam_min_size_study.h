@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sizing/disc_cam_min_size.h"
+#include "studies/backend_input.h"
 #include "studies/archive.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
@@ -83,7 +84,7 @@ struct Input {
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("backend", &backend,
-               Field().OneOf({"ipopt", "slsqp"}, "one of \"ipopt\", \"slsqp\"").Desc("the NLP solver (slsqp: NLopt's)"));
+               BackendField({optimizers::Backend::kIpopt, optimizers::Backend::kSlsqp}).Desc("the NLP solver (slsqp: NLopt's)"));
       a->Visit("max_evaluations", &max_evaluations,
                Field().AtLeast(1).AtMost(10000).Desc("per solve (Ipopt: iterations; SLSQP: evaluations)"));
       a->Visit("verify_rounds", &verify_rounds,

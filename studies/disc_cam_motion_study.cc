@@ -8,6 +8,7 @@
 
 #include "model/disc_cam/residual_spectrum.h"
 #include "studies/format.h"
+#include "studies/backend_input.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -305,9 +306,9 @@ Study Parse(const Node& root) {
           "speed, 8 at the lowest), at most 200000: a heavier follower_mass_kg, a softer follower_stiffness_N_per_mm, "
           "or higher speeds");
   }
-  s.backend = in.optimizer.backend;
+  s.backend = optimizers::ToString(ToBackend(in.optimizer.backend));
   optimizers::SolverOptions& so = s.options.solver;
-  so.backend = s.backend == "slsqp" ? "nlopt_slsqp" : "ipopt";
+  so.backend = ToBackend(s.backend);
   so.max_evaluations = in.optimizer.max_evaluations;
   so.tolerance = 1e-10;
   so.constraint_tolerance = 1e-7;

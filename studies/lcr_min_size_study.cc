@@ -419,10 +419,7 @@ Study Parse(const Node& root) {
 
   const Input::Optimizer& o = in.optimizer;
   optimizers::SolverOptions& solver = s.options.solver;
-  solver.backend = o.backend;
-  const auto backends = optimizers::Backends();
-  if (std::find(backends.begin(), backends.end(), solver.backend) == backends.end())
-    root["optimizer"]["backend"].Fail("one of ipopt, nlopt_slsqp, nlopt_mma, nlopt_cobyla");
+  solver.backend = ToBackend(o.backend);
   s.form = o.constraints == "samples" ? LcrConstraintForm::kSamples : LcrConstraintForm::kAggregate;
   s.options.polish = o.polish;
   b.samples_per_period = o.samples_per_period;
@@ -430,12 +427,12 @@ Study Parse(const Node& root) {
   solver.tolerance = o.tolerance;
   // Ipopt counts iterations (one gradient each), NLopt evaluations: Ipopt converges in 10–50
   // iterations here, and a start that needs hundreds is a degenerate one that other starts cover.
-  solver.max_evaluations = o.max_evaluations.value_or(solver.backend == "ipopt" ? 200 : 3000);
+  solver.max_evaluations = o.max_evaluations.value_or(solver.backend == optimizers::Backend::kIpopt ? 200 : 3000);
   s.options.starts = o.starts;
   solver.max_seconds = 10.0;  // per local solve
   // A local solve that Ipopt ends at its iteration limit is polished by SLSQP from Ipopt's last
   // point (Ipopt may cycle on the kinks of tracked maxima; SLSQP's active set settles them).
-  if (solver.backend == "ipopt") solver.fallback_backend = "nlopt_slsqp";
+  if (solver.backend == optimizers::Backend::kIpopt) solver.fallback_backend = optimizers::Backend::kSlsqp;
   double longest = b.roller_length_mm;
   for (const CatalogueRoller& r : s.catalogue) longest = std::max(longest, r.length_mm);
   s.contact3d = ParseContact3D(in, root, s.catalogue.empty() ? b.roller_length_mm : longest, !s.catalogue.empty());
@@ -750,7 +747,7 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
   // What was minimised: written for the efficiency objective only (absent: the outer diameter, so
   // that a default study's result.json stays as it was).
   if (MinimisesLoss(s)) res["objective"] = "efficiency";
-  res["optimizer"] = {{"backend", s.options.solver.backend},
+  res["optimizer"] = {{"backend", optimizers::ToString(s.options.solver.backend)},
                       {"constraints", s.form == LcrConstraintForm::kSamples ? "samples" : "aggregate"},
                       {"polish", s.options.polish},
                       {"samples_per_period", s.base.samples_per_period},

@@ -22,6 +22,7 @@
 #include "sizing/lcr_robust_solve.h"
 #include "objectives/lcr_sizing.h"
 #include "sizing/lcr_sizing3d.h"
+#include "studies/backend_input.h"
 #include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/lcr_contact_input.h"
@@ -214,9 +215,11 @@ struct Input {
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("backend", &backend,
-               Field().OneOf({"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"},
-                             "one of ipopt, nlopt_slsqp, nlopt_mma, nlopt_cobyla")
-                   .Desc("the NLP solver (a local solve Ipopt ends at its iteration limit is polished by SLSQP)"));
+               BackendField({optimizers::Backend::kIpopt, optimizers::Backend::kSlsqp, optimizers::Backend::kMma,
+                             optimizers::Backend::kCobyla},
+                            /*old_spellings=*/true)
+                   .Desc("the NLP solver (a local solve Ipopt ends at its iteration limit is polished by SLSQP); "
+                         "nlopt_slsqp, nlopt_mma, nlopt_cobyla: the old spellings, deprecated"));
       a->Visit("constraints", &constraints,
                Field().OneOf({"aggregate", "samples"}).Desc(
                    "form of the smooth phase: the cycle maxima as soft aggregates or one row per angle sample"));

@@ -7,6 +7,8 @@
 
 #include <nettle/sha2.h>
 
+#include "studies/backend_input.h"
+
 #ifndef CAMOPT_VERSION_STRING
 #error "CAMOPT_VERSION_STRING is set by cmake/camopt_schemas.cmake"
 #endif
@@ -63,6 +65,8 @@ void CheckValue(const std::string& key, const std::string& path, double v, std::
 void Walk(const nlohmann::json& j, const std::string& key, const std::string& path,
           std::vector<std::string>& out) {
   if (j.is_number() && !j.is_boolean()) CheckValue(key, path, j.get<double>(), out);
+  if (j.is_string() && key == "backend")
+    if (auto w = BackendSpellingWarning(j.get<std::string>(), path)) out.push_back(*w);
   if (j.is_object())
     for (auto it = j.begin(); it != j.end(); ++it) Walk(*it, it.key(), path + "/" + it.key(), out);
   if (j.is_array())  // an array's numbers carry the key of the array ("cam_speeds_rpm": [...])

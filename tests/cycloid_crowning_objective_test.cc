@@ -102,7 +102,7 @@ TEST(CycloidCrowningProblem, CobylaFindsAFeasiblePointBetterThanTheStart) {
   spec.initial_coefficient_mm = 0.007;
   const Problem p = CycloidCrowningProblem(model, spec, [&](const CrowningEvaluation& e) { seen.push_back(e); });
   optimizers::SolverOptions o;
-  o.backend = "nlopt_cobyla";
+  o.backend = optimizers::Backend::kCobyla;
   o.tolerance = 1e-3;
   o.constraint_tolerance = 1e-2;
   o.max_evaluations = 12;

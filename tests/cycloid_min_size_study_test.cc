@@ -118,7 +118,7 @@ TEST(CycloidMinSizeStudy, ParsedSpecHasTheFileValues) {
   EXPECT_DOUBLE_EQ(s.spec.limits.min_curtate_margin, 0.05);  // the default
   EXPECT_EQ(s.spec.angles_per_period, 4);
   EXPECT_EQ(s.spec.options.profile_cells, 16);
-  EXPECT_EQ(s.options.solver.backend, "ipopt");
+  EXPECT_EQ(s.options.solver.backend, optimizers::Backend::kIpopt);
   // speed_ratio z is the same drive as teeth z; the fixed face width comes from "drive".
   const json r = Example("cycloid_min_size_ratio29.json");
   const auto s29 = studies::cycloid_min_size::Parse(studies::Node(&r, "r.json", ""));
@@ -126,7 +126,7 @@ TEST(CycloidMinSizeStudy, ParsedSpecHasTheFileValues) {
   EXPECT_EQ(s29.spec.drive.rollers, 30);
   EXPECT_DOUBLE_EQ(s29.spec.drive.face_width_mm, 8);
   EXPECT_DOUBLE_EQ(s29.spec.overload_torque_Nmm, 40e3);
-  EXPECT_EQ(s29.options.solver.backend, "nlopt_slsqp");
+  EXPECT_EQ(s29.options.solver.backend, optimizers::Backend::kSlsqp);
   EXPECT_DOUBLE_EQ(s29.spec.limits.bore_radius_mm, 0);  // no bore: no web row
   // A range without a start starts at its middle; the bore diameter gives the bore radius.
   json small = SmallStudy();

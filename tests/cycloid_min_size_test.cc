@@ -384,7 +384,7 @@ cycloid::LoadedOptions Fast() {
 
 CycloidMinSizeOptions Ipopt() {
   CycloidMinSizeOptions o;
-  o.solver.backend = "ipopt";
+  o.solver.backend = optimizers::Backend::kIpopt;
   o.solver.tolerance = 1e-6;
   o.solver.constraint_tolerance = 1e-3;
   o.solver.stall_iterations = 3;
@@ -463,7 +463,7 @@ TEST(CycloidMinSize, IpoptAndSlsqpAgreeInDiameter) {
   const CycloidSizingSpec spec = Ratio29(cycloid::CrowningType::kLogarithmic);
   const CycloidMinSizeOutcome ipopt = SolveCycloidMinSize(spec, Ipopt());
   CycloidMinSizeOptions o = Ipopt();
-  o.solver.backend = "slsqp";
+  o.solver.backend = optimizers::Backend::kSlsqp;
   const CycloidMinSizeOutcome slsqp = SolveCycloidMinSize(spec, o);
   ASSERT_TRUE(ipopt.converged);
   ASSERT_TRUE(slsqp.converged);

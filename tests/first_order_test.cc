@@ -103,9 +103,9 @@ TEST(FirstOrder, MaximisingFlipsTheGradient) {
 TEST(FirstOrder, EveryBackendsConvergedReferenceOptimaAreStationary) {
   // A converged status now carries its residual: at the known optima of the reference problems
   // it is small for every backend (COBYLA ends within its trust radius of the optimum).
-  for (const std::string backend : {"ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"}) {
+  for (const std::string backend : {"ipopt", "slsqp", "mma", "cobyla"}) {
     optimizers::SolverOptions o;
-    o.backend = backend;
+    o.backend = *optimizers::BackendFromName(backend);
     const optimizers::SolverResult r = optimizers::Solve(testing::QpWithActiveConstraintAndBound(), o);
     ASSERT_TRUE(r.ok()) << backend << ": " << r.message;
     EXPECT_LT(r.first_order_residual, 1e-3) << backend;
@@ -132,7 +132,7 @@ TEST(FirstOrder, AStopWithNothingOpposingTheGradientIsNotConverged) {
   p.objective = "f";
   p.constraints = {{"step", -kInf, 0.0, 1.0}};
   optimizers::SolverOptions o;
-  o.backend = "nlopt_slsqp";
+  o.backend = optimizers::Backend::kSlsqp;
   const optimizers::SolverResult r = optimizers::Solve(p, o);
   // SLSQP ends on the boundary of the feasible set it cannot see (x = 1, "roundoff limited"),
   // resumed once from there to the same end.

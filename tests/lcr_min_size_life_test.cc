@@ -289,7 +289,7 @@ TEST(LcrMinSizeLife, UnreachableLifeSaysWhichLifeWouldFit) {
   json study = Example("lcr_min_size_life.json");
   study["search"]["max_lobes"] = 14;  // one combination (12/13 + 14/15)
   study["limits"]["life_h"] = 1e5;
-  study["optimizer"] = json::parse(R"({"backend": "nlopt_slsqp", "starts": 1})");  // 1 s instead of 40 (Ipopt)
+  study["optimizer"] = json::parse(R"({"backend": "slsqp", "starts": 1})");  // 1 s instead of 40 (Ipopt)
   int code = -1;
   std::string err;
   RunStudy(study, TempDir("lcr-min-size-life-unreachable"), &code, &err);

@@ -152,12 +152,12 @@ TEST(LcrMinSize, DefaultReachesTheExactOptimum) {
 TEST(LcrMinSize, BackendsAgreeAndGradientsSaveEvaluations) {
   json study = Example("lcr_min_size.json");
   std::map<std::string, ms::Result> res;
-  for (const char* backend : {"ipopt", "nlopt_slsqp", "nlopt_cobyla"}) {
+  for (const char* backend : {"ipopt", "slsqp", "cobyla"}) {
     study["optimizer"]["backend"] = backend;
     res[backend] = Solve(study);
     ASSERT_GE(res[backend].best, 0) << backend;
   }
-  study["optimizer"]["backend"] = "nlopt_slsqp";
+  study["optimizer"]["backend"] = "slsqp";
   study["optimizer"]["constraints"] = "samples";
   res["slsqp samples"] = Solve(study);
   study["optimizer"]["polish"] = false;
@@ -165,12 +165,12 @@ TEST(LcrMinSize, BackendsAgreeAndGradientsSaveEvaluations) {
   double best = kInf;
   for (const auto& [name, r] : res) best = std::min(best, BestOd(r));
   const double od = BestOd(res["ipopt"]);
-  EXPECT_NEAR(BestOd(res["nlopt_slsqp"]), od, 1e-3 * od);
+  EXPECT_NEAR(BestOd(res["slsqp"]), od, 1e-3 * od);
   EXPECT_LE(od, best * (1 + 1e-3));
-  EXPECT_NEAR(BestOd(res["nlopt_cobyla"]), od, 5e-3 * od);
-  EXPECT_EQ(res["nlopt_cobyla"].gradient_evaluations, 0);
+  EXPECT_NEAR(BestOd(res["cobyla"]), od, 5e-3 * od);
+  EXPECT_EQ(res["cobyla"].gradient_evaluations, 0);
   const int ipopt_runs = res["ipopt"].value_evaluations + res["ipopt"].gradient_evaluations;
-  EXPECT_LT(3 * ipopt_runs, res["nlopt_cobyla"].value_evaluations);
+  EXPECT_LT(3 * ipopt_runs, res["cobyla"].value_evaluations);
 }
 
 // An independent brute-force search of the 12/13 + 14/15 combination: a grid over e and d_r,
@@ -257,7 +257,7 @@ TEST(LcrMinSize, LimitSensitivityMatchesResolving) {
 TEST(LcrMinSize, EfficiencyLimitIsHeld) {
   json study = Example("lcr_min_size.json");
   study["limits"]["min_efficiency"] = 0.93;
-  study["optimizer"]["backend"] = "nlopt_slsqp";
+  study["optimizer"]["backend"] = "slsqp";
   const auto dir = TempDir("lcr-min-size-efficiency");
   int code = -1;
   std::string err;
@@ -279,7 +279,7 @@ TEST(LcrMinSize, EfficiencyLimitIsHeld) {
 TEST(LcrMinSize, RollerPerCam) {
   json study = Example("lcr_min_size.json");
   study["search"]["max_lobes"] = 14;  // LCR II's combination only
-  study["optimizer"]["backend"] = "nlopt_slsqp";
+  study["optimizer"]["backend"] = "slsqp";
   int code = -1;
   std::string err;
   const json same = RunStudy(study, TempDir("lcr-min-size-same"), &code, &err);

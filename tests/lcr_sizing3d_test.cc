@@ -329,7 +329,7 @@ TEST(LcrSizing3D, CrownRadiusAndCamThicknessVariablesIpoptAndSlsqpAgree) {
     std::array<double, 2> od{};
     std::array<std::array<double, 2>, 2> param{};
     int b = 0;
-    for (const std::string backend : {"ipopt", "nlopt_slsqp"}) {
+    for (const std::string backend : {"ipopt", "slsqp"}) {
       const json j = OneCombination(variant, backend);
       const auto study = studies::lcr_min_size::Parse(studies::Node(&j, "vars.json", ""));
       ASSERT_TRUE(study.contact3d);

@@ -2,6 +2,7 @@
 // that cannot converge, and the Ceres least-squares adapter on fits with known answers.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -36,7 +37,7 @@ void ExpectKnownOptimum(const optimizers::SolverResult& r, double f_star, const 
 
 TEST_P(EveryBackend, Hs71ReachesTheKnownOptimum) {
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   ExpectKnownOptimum(optimizers::Solve(testing::Hs71(), opt), testing::kHs71Optimum,
                      {1.0, 4.7429994, 3.8211503, 1.3794082}, 1e-3, opt.constraint_tolerance);
 }
@@ -44,7 +45,7 @@ TEST_P(EveryBackend, Hs71ReachesTheKnownOptimum) {
 TEST_P(EveryBackend, ScalingIsTranslated) {
   // Same problem with variables in a unit 1000 times smaller: the optimum must scale exactly.
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   const auto r = optimizers::Solve(testing::Hs71(1000.0), opt);
   ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
   EXPECT_NEAR(r.objective, testing::kHs71Optimum, 1e-5);
@@ -53,7 +54,7 @@ TEST_P(EveryBackend, ScalingIsTranslated) {
 
 TEST_P(EveryBackend, RosenbrockOnDiskWithInfiniteBounds) {
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   const auto [t, f] = testing::RosenbrockOnDiskOptimum();
   const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
   ASSERT_EQ(r.status, SolverStatus::kConverged) << r.message;
@@ -75,7 +76,7 @@ TEST_P(EveryBackend, InfeasibleProblemIsReportedAsSuch) {
   p.objective = "f";
   p.constraints = {{"g", 2.0, kInf, 1.0}};
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   opt.max_evaluations = 500;
   const auto r = optimizers::Solve(p, opt);
   EXPECT_NE(r.status, SolverStatus::kConverged) << r.message;
@@ -88,7 +89,7 @@ TEST_P(EveryBackend, InfeasibleProblemIsReportedAsSuch) {
 
 TEST_P(EveryBackend, IterationLimitIsReported) {
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   opt.max_evaluations = 2;
   const auto r = optimizers::Solve(testing::RosenbrockOnDisk(), opt);
   EXPECT_EQ(r.status, SolverStatus::kIterationLimit) << r.message;
@@ -98,7 +99,7 @@ TEST_P(EveryBackend, IterationLimitIsReported) {
 // is thrown as Cancelled, not reported as a failed solve; cleared, the same solve runs again.
 TEST_P(EveryBackend, ACancellationIsThrownNotReportedAsAFailure) {
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   optimizers::RequestCancel();
   EXPECT_THROW(optimizers::Solve(testing::RosenbrockOnDisk(), opt), optimizers::Cancelled);
   optimizers::ClearCancel();
@@ -120,7 +121,7 @@ TEST_P(EveryBackend, NonFiniteModelGivesNoDesign) {
   });
   p.objective = "f";
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   const auto r = optimizers::Solve(p, opt);
   EXPECT_EQ(r.status, SolverStatus::kFailed);
   EXPECT_TRUE(r.x.empty());
@@ -130,7 +131,7 @@ TEST_P(EveryBackend, QpReachesTheHandComputedKktPoint) {
   // x* = (1.75, 0.25), f* = 4.625 with x + y <= 2 and y <= 0.25 active (KKT derivation in
   // tests/optim_reference_problems.h).
   SolverOptions opt;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   const auto r = optimizers::Solve(testing::QpWithActiveConstraintAndBound(), opt);
   ExpectKnownOptimum(r, testing::kQpOptimum, {testing::kQpOptimumX, testing::kQpOptimumY}, 1e-4,
                      opt.constraint_tolerance);
@@ -144,10 +145,10 @@ TEST_P(EveryBackend, QpReachesTheHandComputedKktPoint) {
 TEST_P(EveryBackend, LcrIISizingAgreesAcrossBackends) {
   const auto spec = testing::LcrIISizingSpec();
   SolverOptions opt;
-  opt.backend = GetParam() == "ipopt" ? "nlopt_slsqp" : "ipopt";
+  opt.backend = GetParam() == "ipopt" ? optimizers::Backend::kSlsqp : optimizers::Backend::kIpopt;
   const auto reference = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
   ASSERT_TRUE(reference.ok()) << reference.message;
-  opt.backend = GetParam();
+  opt.backend = *optimizers::BackendFromName(GetParam());
   const auto r = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(r.objective, reference.objective, 1e-4 * reference.objective);
@@ -183,27 +184,27 @@ TEST(CeresFit, CorrelationAndPropagatedStandardDeviation) {
 TEST(Optimizers, LcrIISizingPerSampleConstraints) {
   const auto spec = testing::LcrIISizingSpec(objectives::LcrConstraintForm::kSamples);
   SolverOptions opt;
-  opt.backend = "nlopt_slsqp";
+  opt.backend = optimizers::Backend::kSlsqp;
   const auto slsqp = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
-  opt.backend = "ipopt";
+  opt.backend = optimizers::Backend::kIpopt;
   const auto ipopt = optimizers::Solve(objectives::MakeLcrSizingProblem(spec), opt);
   ASSERT_TRUE(slsqp.ok() && ipopt.ok()) << slsqp.message << " / " << ipopt.message;
   EXPECT_NEAR(slsqp.objective, ipopt.objective, 1e-4 * ipopt.objective);
   // Per-sample rows are exact at the samples, the aggregate is conservative: never larger.
-  opt.backend = "nlopt_slsqp";
+  opt.backend = optimizers::Backend::kSlsqp;
   const auto aggregate = optimizers::Solve(objectives::MakeLcrSizingProblem(testing::LcrIISizingSpec()), opt);
   ASSERT_TRUE(aggregate.ok());
   EXPECT_LE(slsqp.objective, aggregate.objective);
 }
 
 INSTANTIATE_TEST_SUITE_P(Optimizers, EveryBackend,
-                         ::testing::Values("ipopt", "nlopt_slsqp", "nlopt_mma", "nlopt_cobyla"));
+                         ::testing::Values("ipopt", "slsqp", "mma", "cobyla"));
 
 TEST(Optimizers, GradientBackendsUseFarFewerEvaluationsThanCobyla) {
   SolverOptions opt;
-  opt.backend = "ipopt";
+  opt.backend = optimizers::Backend::kIpopt;
   const auto ipopt = optimizers::Solve(testing::Hs71(), opt);
-  opt.backend = "nlopt_cobyla";
+  opt.backend = optimizers::Backend::kCobyla;
   const auto cobyla = optimizers::Solve(testing::Hs71(), opt);
   ASSERT_TRUE(ipopt.ok() && cobyla.ok());
   EXPECT_GT(ipopt.gradient_evaluations, 0);
@@ -220,14 +221,28 @@ TEST(Optimizers, MumpsSaveSizeBookkeepingIsSkippedWhereConfigured) {
   EXPECT_FALSE(optimizers::MumpsSaveSizeSkipped());
 #endif
   optimizers::SolverOptions opt;
-  opt.backend = "ipopt";
+  opt.backend = optimizers::Backend::kIpopt;
   EXPECT_NEAR(optimizers::Solve(testing::Hs71(), opt).objective, testing::kHs71Optimum, 1e-6);
 }
 
-TEST(Optimizers, UnknownBackendIsAnError) {
-  SolverOptions opt;
-  opt.backend = "simplex";
-  EXPECT_THROW(optimizers::Solve(testing::Hs71(), opt), std::invalid_argument);
+// One spelling per backend; the old "nlopt_" spellings still name their backend, flagged deprecated.
+TEST(Optimizers, EachBackendHasOneSpellingAndTheOldOnesAreDeprecated) {
+  const std::map<std::string, optimizers::Backend> current = {{"ipopt", optimizers::Backend::kIpopt},
+                                                              {"slsqp", optimizers::Backend::kSlsqp},
+                                                              {"mma", optimizers::Backend::kMma},
+                                                              {"cobyla", optimizers::Backend::kCobyla}};
+  ASSERT_EQ(optimizers::Backends().size(), current.size());
+  for (const auto& [name, backend] : current) {
+    bool deprecated = true;
+    EXPECT_EQ(optimizers::BackendFromName(name, &deprecated), backend) << name;
+    EXPECT_FALSE(deprecated) << name;
+    EXPECT_EQ(optimizers::ToString(backend), name);
+    if (backend == optimizers::Backend::kIpopt) continue;
+    EXPECT_EQ(optimizers::BackendFromName("nlopt_" + name, &deprecated), backend) << name;
+    EXPECT_TRUE(deprecated) << name;
+  }
+  for (const char* unknown : {"simplex", "nlopt_ipopt", "SLSQP", ""})
+    EXPECT_FALSE(optimizers::BackendFromName(unknown).has_value()) << unknown;
 }
 
 TEST(Optimizers, InvalidProblemIsAnError) {

@@ -152,6 +152,40 @@ TEST(Plausibility, A206000GPaModulusWarnsOnStderrAndInResultJson) {
   EXPECT_EQ(r.stderr_text, "");
 }
 
+// The backend has one spelling across kinds ("slsqp"); lcr_min_size's old "nlopt_slsqp" still runs,
+// to the same answer, with a deprecation warning on stderr and in result.json, which writes the
+// one spelling.
+TEST(Units, TheOldBackendSpellingRunsTheSameSizingWithADeprecationWarning) {
+  const auto dir = TempDir("backend_spelling");
+  json now = Example("lcr_min_size_catalogue.json");
+  ASSERT_EQ(now["optimizer"]["backend"], "slsqp");
+  now["roller_catalogue"]["file"] = SourcePath("studies/examples/" + now["roller_catalogue"]["file"].get<std::string>());
+  json old = now;
+  old["optimizer"]["backend"] = "nlopt_slsqp";
+  WriteFile(dir / "now.json", now.dump());
+  WriteFile(dir / "old.json", old.dump());
+  const auto a = RunCamopt("run " + (dir / "now.json").string() + " --out " + (dir / "a").string() + " > /dev/null");
+  const auto b = RunCamopt("run " + (dir / "old.json").string() + " --out " + (dir / "b").string() + " > /dev/null");
+  ASSERT_EQ(a.exit_code, 0) << a.stderr_text;
+  ASSERT_EQ(b.exit_code, 0) << b.stderr_text;
+  EXPECT_EQ(a.stderr_text.find("deprecated"), std::string::npos) << a.stderr_text;
+  EXPECT_NE(b.stderr_text.find("camopt: warning: " + (dir / "old.json").string() +
+                               ": /optimizer/backend: \"nlopt_slsqp\" is the old spelling of \"slsqp\""),
+            std::string::npos)
+      << b.stderr_text;
+  json ra = json::parse(ReadFile(dir / "a" / "result.json"));
+  json rb = json::parse(ReadFile(dir / "b" / "result.json"));
+  EXPECT_EQ(rb["optimizer"]["backend"], "slsqp");
+  ASSERT_EQ(rb["warnings"].size(), 1u);
+  EXPECT_NE(rb["warnings"][0].get<std::string>().find("deprecated"), std::string::npos);
+  // The same answer: only the warning and the study's own hash differ.
+  for (json* r : {&ra, &rb}) {
+    r->erase("warnings");
+    r->erase("study_sha256");
+  }
+  EXPECT_EQ(ra, rb);
+}
+
 TEST(Units, GloboidalModulusInGPaOrUnderItsOldMPaNameGivesTheSameResult) {
   const auto dir = TempDir("units");
   json gpa = Example("globoidal_cam_paper.json");

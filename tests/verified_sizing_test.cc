@@ -91,14 +91,14 @@ TEST(Verification, IpoptStoppedAtItsIterationLimitIsPolishedBySlsqp) {
   p.objective = "f";
   p.constraints = {{"g", -kInf, 1.5, 1.0}};
   optimizers::SolverOptions o;
-  o.backend = "ipopt";
+  o.backend = optimizers::Backend::kIpopt;
   o.max_evaluations = 2;
   const auto stopped = optimizers::Solve(p, o);
   EXPECT_EQ(stopped.status, optimizers::SolverStatus::kIterationLimit);
-  o.fallback_backend = "nlopt_slsqp";
+  o.fallback_backend = optimizers::Backend::kSlsqp;
   const auto polished = optimizers::Solve(p, o);
   ASSERT_TRUE(polished.ok()) << polished.message;
-  EXPECT_NE(polished.message.find("nlopt_slsqp polished"), std::string::npos) << polished.message;
+  EXPECT_NE(polished.message.find("; slsqp polished"), std::string::npos) << polished.message;
   EXPECT_GT(polished.iterations, stopped.iterations);
   // The constrained optimum by hand: on x + y = 1.5 with y = x² near x ≈ 0.843 … the KKT point of
   // (x−1)² + 10(y − x²)² with y = 1.5 − x: solve d/dx = 0 by bisection here.
@@ -161,7 +161,7 @@ TEST(Verification, ShortLogCrownWithoutOverloadIsVerifiedAndBackendsAgree) {
   s["fixed"]["crowning"]["effective_length_mm"] = 11;
   s["variables"]["crowning_coefficient_mm"] = {0.0005, 0.02};
   double d[2] = {0, 0};
-  const char* backends[2] = {"ipopt", "nlopt_slsqp"};
+  const char* backends[2] = {"ipopt", "slsqp"};
   json best;
   for (int b = 0; b < 2; ++b) {
     s["optimizer"]["backend"] = backends[b];
