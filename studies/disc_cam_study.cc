@@ -43,9 +43,10 @@ std::vector<std::pair<double, double>> Intervals(const std::vector<bool>& flag) 
   return out;
 }
 
-nlohmann::json AtAngleOrNull(const std::optional<AtAngle>& x, bool angle) {
-  if (!x) return nlohmann::json();
-  return angle ? nlohmann::json(x->cam_angle_deg) : nlohmann::json(x->value);
+// The value (or its cam angle) of an extreme that may not exist: NaN (null in result.json) when not.
+double AtAngleOrNaN(const std::optional<AtAngle>& x, bool angle) {
+  if (!x) return NAN;
+  return angle ? x->cam_angle_deg : x->value;
 }
 
 // How the motion's rise is written for a follower (ParseMotionProgram): a length for a
@@ -713,6 +714,9 @@ nlohmann::json MeasuredCam(const Study& s, const Result& r) {
   return j;
 }
 
+// Fills Result::json, result.json's members (defined below the Run* functions).
+void FillResult(const Study& s, Result& r);
+
 }  // namespace
 
 Result Run(const Study& s, const RunContext& ctx) {
@@ -726,6 +730,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     r.inspection_points.push_back({part.name, points});
   }
   if (s.measured) r.measured = MeasuredCam(s, r);
+  FillResult(s, r);
   return r;
 }
 
@@ -1100,54 +1105,63 @@ Result RunOscillatingFlatFaced(const Study& s) {
   return r;
 }
 
-nlohmann::json ToJson(const Study& s, const Result& r) {
-  nlohmann::json j;
-  j["study"] = "disc_cam";
-  j["name"] = s.name;
-  j["follower"] = s.follower_type;
+namespace {
+
+// result.json's members (Result::json) from the study and the model's numbers, in the order the
+// former ToJson computed them (notes keep their order).
+void FillResult(const Study& s, Result& r) {
+  Result::Json& j = r.json;
+  const auto note = [&](std::string text) {
+    if (!j.notes) j.notes.emplace();
+    j.notes->push_back(std::move(text));
+  };
+  j.name = s.name;
+  j.follower = s.follower_type;
   const bool flat = s.contact == Study::Contact::kFlatFaced;
-  j["angle_steps"] = s.angle_steps;
-  j["max_radial_dimension_mm"] = r.max_radial_dimension_mm.value;
-  j["max_radial_dimension_at_cam_angle_deg"] = r.max_radial_dimension_mm.cam_angle_deg;
-  j["min_radial_dimension_mm"] = r.min_radial_dimension_mm;
-  j["pressure_angle_deg"] = {{"min", r.min_pressure_angle_deg.value},
-                             {"at_min_cam_angle_deg", r.min_pressure_angle_deg.cam_angle_deg},
-                             {"max", r.max_pressure_angle_deg.value},
-                             {"at_max_cam_angle_deg", r.max_pressure_angle_deg.cam_angle_deg}};
+  j.angle_steps = s.angle_steps;
+  j.max_radial_dimension_mm = r.max_radial_dimension_mm.value;
+  j.max_radial_dimension_at_cam_angle_deg = r.max_radial_dimension_mm.cam_angle_deg;
+  j.min_radial_dimension_mm = r.min_radial_dimension_mm;
+  Result::Json::PressureAngle& pa = j.pressure_angle_deg;
+  pa.min = r.min_pressure_angle_deg.value;
+  pa.at_min_cam_angle_deg = r.min_pressure_angle_deg.cam_angle_deg;
+  pa.max = r.max_pressure_angle_deg.value;
+  pa.at_max_cam_angle_deg = r.max_pressure_angle_deg.cam_angle_deg;
   // "warnings" only when there is one (RunStudy adds the list to every result.json).
   if (const double worst = std::max(std::abs(r.min_pressure_angle_deg.value), std::abs(r.max_pressure_angle_deg.value));
       worst > dc::kHighPressureAngle / kDeg)
-    j["warnings"].push_back("the pressure angle reaches " + Format(worst) + " deg, above the " +
-                            Format(dc::kHighPressureAngle / kDeg) +
-                            " deg warning limit (docs/disc_cam.md): large side thrust on the follower, near jamming");
+    j.warnings = std::vector<std::string>{
+        "the pressure angle reaches " + Format(worst) + " deg, above the " + Format(dc::kHighPressureAngle / kDeg) +
+        " deg warning limit (docs/disc_cam.md): large side thrust on the follower, near jamming"};
   // The limits: the value, the limit and pass/fail side by side, as lcr_analysis writes them
   // (docs/disc_cam.md "Limits and verdict").
-  nlohmann::json& pa = j["pressure_angle_deg"];
   const double pa_limit = s.limits.pressure_angle_deg;
   bool geometry_ok = true;  // the pressure angle and radius limits (and a flat face's width)
   // The pressure angle on the rise and on the return against its limit (a roller, a knife edge, a
   // flat face on an arm).
   auto pressure_angle_limits = [&] {
-    pa["max_rise"] = r.max_pressure_angle_rise_deg.value;
-    pa["at_max_rise_cam_angle_deg"] = r.max_pressure_angle_rise_deg.cam_angle_deg;
+    pa.max_rise = r.max_pressure_angle_rise_deg.value;
+    pa.at_max_rise_cam_angle_deg = r.max_pressure_angle_rise_deg.cam_angle_deg;
     if (r.max_pressure_angle_return_deg) {
-      pa["max_return"] = r.max_pressure_angle_return_deg->value;
-      pa["at_max_return_cam_angle_deg"] = r.max_pressure_angle_return_deg->cam_angle_deg;
+      pa.max_return = r.max_pressure_angle_return_deg->value;
+      pa.at_max_return_cam_angle_deg = r.max_pressure_angle_return_deg->cam_angle_deg;
     }
-    pa["limit"] = pa_limit;
-    pa["rise_ok"] = r.max_pressure_angle_rise_deg.value <= pa_limit;
-    pa["return_ok"] = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
-    return pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>();
+    pa.limit = pa_limit;
+    pa.rise_ok = r.max_pressure_angle_rise_deg.value <= pa_limit;
+    pa.return_ok = !r.max_pressure_angle_return_deg || r.max_pressure_angle_return_deg->value <= pa_limit;
+    return *pa.rise_ok && *pa.return_ok;
   };
   // A flat face's convexity: ρ_min against the margin and where the profile has cusps.
-  const auto add_radius_and_cusps = [&](const Result::FlatFace& F, nlohmann::json& ff) {
-    ff["min_radius_of_curvature_mm"] = F.min_radius_of_curvature_mm.value;
-    ff["min_radius_of_curvature_at_cam_angle_deg"] = F.min_radius_of_curvature_mm.cam_angle_deg;
-    ff["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
-    ff["radius_margin_ok"] = F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm;
-    ff["cusp"] = !F.cusp_cam_angle_deg.empty();
-    ff["cusp_cam_angle_deg"] = nlohmann::json::array();
-    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff["cusp_cam_angle_deg"].push_back({from, to});
+  const auto add_radius_and_cusps = [&](const Result::FlatFace& F, Result::Json::FlatFace& ff) {
+    ff.min_radius_of_curvature_mm = F.min_radius_of_curvature_mm.value;
+    ff.min_radius_of_curvature_at_cam_angle_deg = F.min_radius_of_curvature_mm.cam_angle_deg;
+    ff.radius_margin_limit_mm = s.limits.radius_margin_mm;
+    ff.radius_margin_ok = F.min_radius_of_curvature_mm.value > s.limits.radius_margin_mm;
+    ff.cusp = !F.cusp_cam_angle_deg.empty();
+    for (const auto& [from, to] : F.cusp_cam_angle_deg) ff.cusp_cam_angle_deg.push_back({from, to});
+  };
+  const auto range = [](const AtAngle& max, const AtAngle& min) {
+    return Result::Json::Range{max.value, max.cam_angle_deg, min.value, min.cam_angle_deg};
   };
   const bool flat_arm = flat && s.cam.follower == FollowerType::kOscillatingRoller;
   if (flat_arm) {
@@ -1156,191 +1170,171 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
     const Result::FlatFace& F = *r.flat_face;
     const bool pa_ok = pressure_angle_limits();
     const double needed = F.max_contact_offset_mm.value - F.min_contact_offset_mm.value;
-    nlohmann::json ff = {{"pivot_distance_mm", s.cam.pivot_distance},
-                         {"face_offset_mm", s.face_offset_mm},
-                         {"arm_angle_on_base_circle_deg", dc::InitialArmAngle(OscillatingFlatFace(s)) / kDeg},
-                         {"contact_on_face_mm", {{"max", F.max_contact_offset_mm.value},
-                                                 {"at_max_cam_angle_deg", F.max_contact_offset_mm.cam_angle_deg},
-                                                 {"min", F.min_contact_offset_mm.value},
-                                                 {"at_min_cam_angle_deg", F.min_contact_offset_mm.cam_angle_deg}}},
-                         {"face_length_needed_mm", needed}};
+    Result::Json::FlatFace& ff = j.flat_face.emplace();
+    ff.pivot_distance_mm = s.cam.pivot_distance;
+    ff.face_offset_mm = s.face_offset_mm;
+    ff.arm_angle_on_base_circle_deg = dc::InitialArmAngle(OscillatingFlatFace(s)) / kDeg;
+    ff.contact_on_face_mm = range(F.max_contact_offset_mm, F.min_contact_offset_mm);
+    ff.face_length_needed_mm = needed;
     add_radius_and_cusps(F, ff);
     if (s.follower_face_width_mm) {
-      ff["face_width_mm"] = *s.follower_face_width_mm;
-      ff["face_width_ok"] = *s.follower_face_width_mm >= needed;
-      geometry_ok = ff["face_width_ok"].get<bool>();
+      ff.face_width_mm = *s.follower_face_width_mm;
+      ff.face_width_ok = *s.follower_face_width_mm >= needed;
+      geometry_ok = *ff.face_width_ok;
     }
-    geometry_ok = geometry_ok && pa_ok && ff["radius_margin_ok"].get<bool>();
-    j["flat_face"] = ff;
+    geometry_ok = geometry_ok && pa_ok && ff.radius_margin_ok;
   } else if (flat) {
     // The flat face: no pressure-angle limit (φ = 0), the radius ρ = r_b + S + S'' above the margin
     // (a convex cam: the face cannot follow ρ ≤ 0), the face wide enough for the contact's travel.
     const Result::FlatFace& F = *r.flat_face;
-    pa["note"] = "0 everywhere: the common normal of a flat face perpendicular to the line of motion is the line "
-                 "of motion";
+    pa.note = "0 everywhere: the common normal of a flat face perpendicular to the line of motion is the line "
+              "of motion";
     const double rise_side = std::max(0.0, F.max_contact_offset_mm.value);
     const double return_side = std::max(0.0, -F.min_contact_offset_mm.value);
-    nlohmann::json ff = {{"contact_offset_mm", {{"max", F.max_contact_offset_mm.value},
-                                                {"at_max_cam_angle_deg", F.max_contact_offset_mm.cam_angle_deg},
-                                                {"min", F.min_contact_offset_mm.value},
-                                                {"at_min_cam_angle_deg", F.min_contact_offset_mm.cam_angle_deg}}},
-                         {"face_needed_rise_side_mm", rise_side},
-                         {"face_needed_return_side_mm", return_side},
-                         {"face_width_needed_mm", rise_side + return_side},
-                         {"face_width_needed_centred_mm", 2 * std::max(rise_side, return_side)}};
+    Result::Json::FlatFace& ff = j.flat_face.emplace();
+    ff.contact_offset_mm = range(F.max_contact_offset_mm, F.min_contact_offset_mm);
+    ff.face_needed_rise_side_mm = rise_side;
+    ff.face_needed_return_side_mm = return_side;
+    ff.face_width_needed_mm = rise_side + return_side;
+    ff.face_width_needed_centred_mm = 2 * std::max(rise_side, return_side);
     add_radius_and_cusps(F, ff);
     if (s.follower_face_width_mm) {
-      ff["face_width_mm"] = *s.follower_face_width_mm;
-      ff["face_width_ok"] = *s.follower_face_width_mm >= 2 * std::max(rise_side, return_side);
-      geometry_ok = ff["face_width_ok"].get<bool>();
+      ff.face_width_mm = *s.follower_face_width_mm;
+      ff.face_width_ok = *s.follower_face_width_mm >= 2 * std::max(rise_side, return_side);
+      geometry_ok = *ff.face_width_ok;
     }
-    geometry_ok = geometry_ok && ff["radius_margin_ok"].get<bool>();
-    j["flat_face"] = ff;
+    geometry_ok = geometry_ok && ff.radius_margin_ok;
     if (s.limits.pressure_angle_default == false)
-      j["notes"].push_back("limits.pressure_angle_deg is not checked: a flat face's pressure angle is 0");
+      note("limits.pressure_angle_deg is not checked: a flat face's pressure angle is 0");
   } else {
     pressure_angle_limits();
-    j["shift_angle_deg"] = {{"min", r.shift_angle_deg.min}, {"max", r.shift_angle_deg.max}};
-    j["cos_shift_over_cos_pressure"] = {{"min", r.cos_shift_over_cos_pressure.min},
-                                        {"max", r.cos_shift_over_cos_pressure.max}};
-    j["min_radius_of_curvature_mm"] = AtAngleOrNull(r.min_radius_of_curvature_mm, false);
-    j["min_radius_of_curvature_at_cam_angle_deg"] =
-        AtAngleOrNull(r.min_radius_of_curvature_mm, true);
-    j["min_concave_radius_of_curvature_mm"] =
-        AtAngleOrNull(r.min_concave_radius_of_curvature_mm, false);
-    j["min_concave_radius_at_cam_angle_deg"] =
-        AtAngleOrNull(r.min_concave_radius_of_curvature_mm, true);
+    j.shift_angle_deg = Result::Json::MinMax{r.shift_angle_deg.min, r.shift_angle_deg.max};
+    j.cos_shift_over_cos_pressure =
+        Result::Json::MinMax{r.cos_shift_over_cos_pressure.min, r.cos_shift_over_cos_pressure.max};
+    // null (NaN) when there is no convex (concave) part.
+    j.min_radius_of_curvature_mm = AtAngleOrNaN(r.min_radius_of_curvature_mm, false);
+    j.min_radius_of_curvature_at_cam_angle_deg = AtAngleOrNaN(r.min_radius_of_curvature_mm, true);
+    j.min_concave_radius_of_curvature_mm = AtAngleOrNaN(r.min_concave_radius_of_curvature_mm, false);
+    j.min_concave_radius_at_cam_angle_deg = AtAngleOrNaN(r.min_concave_radius_of_curvature_mm, true);
     // ρ_pitch − r_f (the profile's smallest convex radius) against the margin; no convex part: met.
-    j["radius_margin_limit_mm"] = s.limits.radius_margin_mm;
-    j["radius_margin_ok"] = !r.min_radius_of_curvature_mm || r.min_radius_of_curvature_mm->value >= s.limits.radius_margin_mm;
-    j["undercut"] = r.undercut;
-    j["undercut_cam_angle_deg"] = nlohmann::json::array();
-    for (const auto& [from, to] : r.undercut_cam_angle_deg)
-      j["undercut_cam_angle_deg"].push_back({from, to});
-    geometry_ok = pa["rise_ok"].get<bool>() && pa["return_ok"].get<bool>() && j["radius_margin_ok"].get<bool>();
+    j.radius_margin_limit_mm = s.limits.radius_margin_mm;
+    j.radius_margin_ok = !r.min_radius_of_curvature_mm || r.min_radius_of_curvature_mm->value >= s.limits.radius_margin_mm;
+    j.undercut = r.undercut;
+    j.undercut_cam_angle_deg.emplace();
+    for (const auto& [from, to] : r.undercut_cam_angle_deg) j.undercut_cam_angle_deg->push_back({from, to});
+    geometry_ok = *pa.rise_ok && *pa.return_ok && *j.radius_margin_ok;
   }
 
   if (s.contact != Study::Contact::kRoller && s.tolerances_given)
-    j["notes"].push_back("tolerances are not used: the mechanical error (Rzine et al.) is computed for roller "
-                         "followers only");
+    note("tolerances are not used: the mechanical error (Rzine et al.) is computed for roller followers only");
   if (s.evaluate_given) {
-    j["evaluated"] = {"profile"};
-    if (s.error_stage) j["evaluated"].push_back("error");
-    if (s.monte_carlo) j["evaluated"].push_back("monte_carlo");
+    j.evaluated = std::vector<std::string>{"profile"};
+    if (s.error_stage) j.evaluated->push_back("error");
+    if (s.monte_carlo) j.evaluated->push_back("monte_carlo");
   }
   if (r.error_evaluated) {
-    j["tolerances_um"] = {{"profile_radial", s.tolerances.radial * 1e3},
-                          {"roller_radius", s.tolerances.roller * 1e3},
-                          {"profile_normal", s.tolerances.normal * 1e3}};
-    j["worst_case_error_um"] = {{"max", r.max_worst_case_error_um.value},
-                                {"at_cam_angle_deg", r.max_worst_case_error_um.cam_angle_deg},
-                                {"min", r.min_worst_case_error_um}};
-    j["rms_error_um"] = {{"max", r.max_rms_error_um.value},
-                         {"at_cam_angle_deg", r.max_rms_error_um.cam_angle_deg}};
-    auto min_max = [](const MinMax& m) { return nlohmann::json{{"max", m.max}, {"min", m.min}}; };
-    j["error_components_um"] = {{"radial", min_max(r.radial_error_um)},
-                                {"roller", min_max(r.roller_error_um)},
-                                {"normal", min_max(r.normal_error_um)}};
+    j.tolerances_um = Result::Json::Tolerances{s.tolerances.radial * 1e3, s.tolerances.roller * 1e3,
+                                               s.tolerances.normal * 1e3};
+    Result::Json::WorstCase& wc = j.worst_case_error_um.emplace();
+    wc.max = r.max_worst_case_error_um.value;
+    wc.at_cam_angle_deg = r.max_worst_case_error_um.cam_angle_deg;
+    wc.min = r.min_worst_case_error_um;
+    j.rms_error_um = Result::Json::Peak{r.max_rms_error_um.value, r.max_rms_error_um.cam_angle_deg};
+    const auto min_max = [](const MinMax& m) { return Result::Json::MinMax{m.min, m.max}; };
+    j.error_components_um = Result::Json::ErrorComponents{min_max(r.radial_error_um), min_max(r.roller_error_um),
+                                                          min_max(r.normal_error_um)};
     if (r.max_worst_case_error_arcsec)
-      j["worst_case_error_arcsec"] = {{"max", r.max_worst_case_error_arcsec->value},
-                                      {"at_cam_angle_deg",
-                                       r.max_worst_case_error_arcsec->cam_angle_deg}};
-    if (r.max_rms_error_arcsec) j["rms_error_arcsec"] = {{"max", *r.max_rms_error_arcsec}};
+      j.worst_case_error_arcsec =
+          Result::Json::Peak{r.max_worst_case_error_arcsec->value, r.max_worst_case_error_arcsec->cam_angle_deg};
+    if (r.max_rms_error_arcsec) j.rms_error_arcsec = Result::Json::Max{*r.max_rms_error_arcsec};
   }
 
   bool loads_ok = true;
   // The loads' extremes over the cycle and the kinetostatic jump speed (null, with a note, when
   // nothing decelerates the follower); returns whether contact holds.
-  const auto add_extremes = [&](const Result::Loads& L, nlohmann::json& o, const char* never_jumps) {
-    o["min_contact_force_N"] = L.min_contact_force_N.value;
-    o["at_min_contact_force_cam_angle_deg"] = L.min_contact_force_N.cam_angle_deg;
-    o["max_contact_force_N"] = L.max_contact_force_N.value;
-    o["at_max_contact_force_cam_angle_deg"] = L.max_contact_force_N.cam_angle_deg;
-    o["separation_ok"] = L.min_contact_force_N.value > 0.0;
-    o["max_camshaft_torque_Nm"] = L.max_abs_camshaft_torque_Nm.value;
-    o["at_max_camshaft_torque_cam_angle_deg"] = L.max_abs_camshaft_torque_Nm.cam_angle_deg;
-    o["camshaft_torque_range_Nm"] = {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm};
-    if (std::isfinite(L.jump_speed_rpm)) {
-      o["jump_speed_rpm"] = L.jump_speed_rpm;
-    } else {
-      o["jump_speed_rpm"] = nullptr;
-      j["notes"].push_back(never_jumps);
-    }
+  const auto add_extremes = [&](const Result::Loads& L, Result::Json::Loads& o, const char* never_jumps) {
+    o.min_contact_force_N = L.min_contact_force_N.value;
+    o.at_min_contact_force_cam_angle_deg = L.min_contact_force_N.cam_angle_deg;
+    o.max_contact_force_N = L.max_contact_force_N.value;
+    o.at_max_contact_force_cam_angle_deg = L.max_contact_force_N.cam_angle_deg;
+    o.separation_ok = L.min_contact_force_N.value > 0.0;
+    o.max_camshaft_torque_Nm = L.max_abs_camshaft_torque_Nm.value;
+    o.at_max_camshaft_torque_cam_angle_deg = L.max_abs_camshaft_torque_Nm.cam_angle_deg;
+    o.camshaft_torque_range_Nm = {L.min_camshaft_torque_Nm, L.max_camshaft_torque_Nm};
+    o.jump_speed_rpm = L.jump_speed_rpm;  // null when not finite
+    if (!std::isfinite(L.jump_speed_rpm)) note(never_jumps);
     return L.min_contact_force_N.value > 0.0;
   };
   // The peak Hertz stress and its limit; returns whether the limit holds (true without one).
-  const auto add_stress = [&](const Result::Loads& L, nlohmann::json& o, const char* cusp_note) {
-    o["face_width_mm"] = *s.face_width_mm;
-    o["composite_modulus_MPa"] = s.material->composite_modulus_MPa();
+  const auto add_stress = [&](const Result::Loads& L, Result::Json::Loads& o, const char* cusp_note) {
+    o.face_width_mm = *s.face_width_mm;
+    o.composite_modulus_MPa = s.material->composite_modulus_MPa();
     if (L.stress_finite) {
-      o["max_contact_stress_MPa"] = L.max_contact_stress_MPa.value;
-      o["at_max_contact_stress_cam_angle_deg"] = L.max_contact_stress_MPa.cam_angle_deg;
+      o.max_contact_stress_MPa = L.max_contact_stress_MPa.value;
+      o.at_max_contact_stress_cam_angle_deg = L.max_contact_stress_MPa.cam_angle_deg;
     } else {
-      o["max_contact_stress_MPa"] = nullptr;  // a loaded point of the profile is undercut (a cusp)
-      j["notes"].push_back(cusp_note);
+      o.max_contact_stress_MPa = NAN;  // null: a loaded point of the profile is undercut (a cusp)
+      note(cusp_note);
     }
     if (!s.limits.contact_stress_MPa) return true;
-    o["contact_stress_limit_MPa"] = *s.limits.contact_stress_MPa;
-    o["contact_stress_ok"] = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
-    return o["contact_stress_ok"].get<bool>();
+    o.contact_stress_limit_MPa = *s.limits.contact_stress_MPa;
+    o.contact_stress_ok = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
+    return *o.contact_stress_ok;
   };
   constexpr const char* kFaceCusp = "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)";
   // The residual-vibration spectrum (model/disc_cam/residual_spectrum.h), per moving segment.
-  const auto add_spectrum = [&](nlohmann::json& o, bool with_response, double zeta) {
+  const auto add_spectrum = [&](Result::Json::Loads& o, bool with_response, double zeta) {
     if (!with_response) return;
     if (!r.residual_spectrum) {
-      j["notes"].push_back("no residual_spectrum: the follower is critically damped (damping_ratio " + Format(zeta) +
-                           "), it does not ring");
+      note("no residual_spectrum: the follower is critically damped (damping_ratio " + Format(zeta) +
+           "), it does not ring");
       return;
     }
     const Result::Spectrum& sp = *r.residual_spectrum;
-    nlohmann::json segs = nlohmann::json::array();
+    Result::Json::Spectrum& out = o.residual_spectrum.emplace();
+    out.damping_ratio = sp.zeta;
+    out.stiffness_ratio = sp.stiffness_ratio;
+    out.tau_range = {kSpectrumTauLow, kSpectrumTauHigh};
+    out.points = kSpectrumPoints;
     for (const Result::SpectrumSegment& g : sp.segments) {
-      nlohmann::json minima = nlohmann::json::array();
-      for (const dc::SpectrumMinimum& m : g.minima)
-        minima.push_back({{"tau", m.tau}, {"amplitude_per_rise", m.amplitude}, {"zero", m.zero}});
-      segs.push_back({{"segment", g.index},
-                      {"law", g.law},
-                      {"tau", g.tau},
-                      {"amplitude_per_rise", g.amplitude},
-                      {"amplitude_error", g.amplitude_error},
-                      {r.oscillating ? "predicted_residual_vibration_deg" : "predicted_residual_vibration_mm",
-                       g.predicted_residual},
-                      {"minima", minima}});
+      Result::Json::SpectrumSegment& seg = out.segments.emplace_back();
+      seg.segment = g.index;
+      seg.law = g.law;
+      seg.tau = g.tau;
+      seg.amplitude_per_rise = g.amplitude;
+      seg.amplitude_error = g.amplitude_error;
+      (r.oscillating ? seg.predicted_residual_vibration_deg : seg.predicted_residual_vibration_mm) = g.predicted_residual;
+      for (const dc::SpectrumMinimum& m : g.minima) seg.minima.push_back({m.tau, m.amplitude, m.zero});
     }
-    o["residual_spectrum"] = {{"damping_ratio", sp.zeta},
-                              {"stiffness_ratio", sp.stiffness_ratio},
-                              {"tau_range", {kSpectrumTauLow, kSpectrumTauHigh}},
-                              {"points", kSpectrumPoints},
-                              {"segments", segs}};
   };
-  const auto add_jump = [&](const Result::Loads& L, nlohmann::json& o, const char* who) {
+  const auto add_jump = [&](const Result::Loads& L, Result::Json::Loads& o, const char* who) {
     const dc::DynamicJumpSpeed& js = *L.dynamic_jump;
-    o["dynamic_jump_speed_rpm"] = js.found ? nlohmann::json(dc::Rpm(js.speed_rad_s)) : nlohmann::json(nullptr);
-    o["dynamic_jump_search"] = {{"upper_rpm", L.dynamic_jump_upper_rpm},
-                                {"scan_step_rpm", dc::Rpm(js.scan_step_rad_s)},
-                                {"bracket_rpm", {dc::Rpm(js.lower_rad_s), js.found ? dc::Rpm(js.speed_rad_s) : L.dynamic_jump_upper_rpm}},
-                                {"simulations", js.runs}};
+    o.dynamic_jump_speed_rpm = js.found ? dc::Rpm(js.speed_rad_s) : NAN;  // null: not found
+    o.dynamic_jump_search = Result::Json::JumpSearch{
+        L.dynamic_jump_upper_rpm,
+        dc::Rpm(js.scan_step_rad_s),
+        {dc::Rpm(js.lower_rad_s), js.found ? dc::Rpm(js.speed_rad_s) : L.dynamic_jump_upper_rpm},
+        js.runs};
     if (!js.found)
-      j["notes"].push_back(std::string("dynamic_jump_speed_rpm is null: the ") + who +
-                           " holds the cam at every speed scanned up to " + Format(L.dynamic_jump_upper_rpm) + " rpm");
+      note(std::string("dynamic_jump_speed_rpm is null: the ") + who + " holds the cam at every speed scanned up to " +
+           Format(L.dynamic_jump_upper_rpm) + " rpm");
   };
   if (r.loads && s.arm_dynamics) {
     // The arm of an oscillating follower: contact force (M/ℓ on a flat face, M/(n · dC/dξ) on a roller),
     // camshaft torque, jump speed, stress.
     const Result::Loads& L = *r.loads;
     const dc::ArmLoads& a = s.arm_dynamics->loads;
-    nlohmann::json aj = {{"speed_rpm", s.arm_dynamics->speed_rpm},
-                         {"arm_inertia_kg_m2", a.inertia_kg_m2},
-                         {"spring_rate_N_m_per_rad", a.spring_rate_N_m_per_rad},
-                         {"spring_preload_N_m", a.spring_preload_N_m},
-                         {"external_moment_N_m", a.external_moment_N_m}};
+    Result::Json::ArmDynamics& aj = j.arm_dynamics.emplace();
+    aj.speed_rpm = s.arm_dynamics->speed_rpm;
+    aj.arm_inertia_kg_m2 = a.inertia_kg_m2;
+    aj.spring_rate_N_m_per_rad = a.spring_rate_N_m_per_rad;
+    aj.spring_preload_N_m = a.spring_preload_N_m;
+    aj.external_moment_N_m = a.external_moment_N_m;
     if (!flat_arm) {
       // What keeps the arm on the cam up to the speed: the smallest M₀ with this rate, the smallest
       // rate with this M₀ (null: no rate does, the deficit is on the base circle).
-      aj["min_spring_preload_N_m"] = L.spring.min_preload_N;
-      aj["min_spring_rate_N_m_per_rad"] =
-          std::isfinite(L.spring.min_rate_N_per_mm) ? nlohmann::json(L.spring.min_rate_N_per_mm) : nlohmann::json(nullptr);
+      aj.min_spring_preload_N_m = L.spring.min_preload_N;
+      aj.min_spring_rate_N_m_per_rad = L.spring.min_rate_N_per_mm;  // null when not finite
     }
     loads_ok = add_extremes(L, aj, flat_arm ? "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam"
                                             : "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the roller off the cam");
@@ -1349,74 +1343,71 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                                             : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
                  loads_ok;
     } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
-      j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
+      note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
     } else if (s.face_width_mm || s.material) {
-      j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
+      note("no contact stress: it needs both face_width_mm and material");
     }
     if (L.arm_response) {
       // The arm on its train stiffness (follower_dynamics.h, SimulateArm): the translating response's
       // keys with moments about the pivot, and the normal contact force at the cam.
       const dc::ArmDynamicsResult& ar = *L.arm_response;
       const Study::ArmDynamics& ad = *s.arm_dynamics;
-      nlohmann::json rj = {{"arm_stiffness_N_m_per_rad", *ad.arm_stiffness_N_m_per_rad},
-                           {"damping_ratio", ad.damping_ratio},
-                           {"revolutions", ad.revolutions},
-                           {"natural_frequency_Hz", ar.natural_frequency_Hz},
-                           {"min_contact_moment_N_m", ar.min_contact_moment_N_m},
-                           {"at_min_contact_moment_cam_angle_deg", ar.min_contact_moment_cam_angle_deg},
-                           {"max_contact_moment_N_m", ar.max_contact_moment_N_m},
-                           {"at_max_contact_moment_cam_angle_deg", ar.max_contact_moment_cam_angle_deg},
-                           {"min_contact_force_N", L.min_dynamic_contact_force_N.value},
-                           {"at_min_contact_force_cam_angle_deg", L.min_dynamic_contact_force_N.cam_angle_deg},
-                           {"max_contact_force_N", L.max_dynamic_contact_force_N.value},
-                           {"at_max_contact_force_cam_angle_deg", L.max_dynamic_contact_force_N.cam_angle_deg},
-                           {"separates", ar.separates},
-                           {"first_separation_cam_angle_deg", nullptr},
-                           {"residual_vibration_deg", ar.residual_vibration_rad / kDeg},
-                           {"at_residual_vibration_cam_angle_deg", ar.residual_vibration_cam_angle_deg},
-                           {"solver_steps", ar.steps},
-                           {"contact_events", ar.events}};
-      if (ar.separates) rj["first_separation_cam_angle_deg"] = ar.first_separation_cam_angle_deg;
-      aj["response"] = rj;
+      Result::Json::ArmResponse& rj = aj.response.emplace();
+      rj.arm_stiffness_N_m_per_rad = *ad.arm_stiffness_N_m_per_rad;
+      rj.damping_ratio = ad.damping_ratio;
+      rj.revolutions = ad.revolutions;
+      rj.natural_frequency_Hz = ar.natural_frequency_Hz;
+      rj.min_contact_moment_N_m = ar.min_contact_moment_N_m;
+      rj.at_min_contact_moment_cam_angle_deg = ar.min_contact_moment_cam_angle_deg;
+      rj.max_contact_moment_N_m = ar.max_contact_moment_N_m;
+      rj.at_max_contact_moment_cam_angle_deg = ar.max_contact_moment_cam_angle_deg;
+      rj.min_contact_force_N = L.min_dynamic_contact_force_N.value;
+      rj.at_min_contact_force_cam_angle_deg = L.min_dynamic_contact_force_N.cam_angle_deg;
+      rj.max_contact_force_N = L.max_dynamic_contact_force_N.value;
+      rj.at_max_contact_force_cam_angle_deg = L.max_dynamic_contact_force_N.cam_angle_deg;
+      rj.separates = ar.separates;
+      if (ar.separates) rj.first_separation_cam_angle_deg = ar.first_separation_cam_angle_deg;  // else null
+      rj.residual_vibration_deg = ar.residual_vibration_rad / kDeg;
+      rj.at_residual_vibration_cam_angle_deg = ar.residual_vibration_cam_angle_deg;
+      rj.solver_steps = ar.steps;
+      rj.contact_events = ar.events;
       add_jump(L, aj, "arm");
       loads_ok = loads_ok && !ar.separates;
     }
     add_spectrum(aj, L.arm_response.has_value(), s.arm_dynamics->damping_ratio);
-    j["arm_dynamics"] = aj;
   } else if (r.loads) {
     const Result::Loads& L = *r.loads;
     const auto& d = *s.dynamics;
-    nlohmann::json dj = {{"speed_rpm", d.speed_rpm},
-                         {"follower_mass_kg", d.loads.mass_kg},
-                         {"spring_rate_N_per_mm", d.loads.spring_rate_N_per_mm},
-                         {"spring_preload_N", d.loads.spring_preload_N},
-                         {"external_load_N", d.loads.external_load_N},
-                         {"follower_axis", d.follower_axis},
-                         {"weight_toward_cam_N", L.weight_N}};
+    Result::Json::Dynamics& dj = j.dynamics.emplace();
+    dj.speed_rpm = d.speed_rpm;
+    dj.follower_mass_kg = d.loads.mass_kg;
+    dj.spring_rate_N_per_mm = d.loads.spring_rate_N_per_mm;
+    dj.spring_preload_N = d.loads.spring_preload_N;
+    dj.external_load_N = d.loads.external_load_N;
+    dj.follower_axis = d.follower_axis;
+    dj.weight_toward_cam_N = L.weight_N;
     // What keeps contact up to the speed: the smallest preload with this rate, the smallest rate
     // with this preload (null: no rate does, the deficit is on the base circle).
-    dj["min_spring_preload_N"] = L.spring.min_preload_N;
-    dj["min_spring_rate_N_per_mm"] =
-        std::isfinite(L.spring.min_rate_N_per_mm) ? nlohmann::json(L.spring.min_rate_N_per_mm) : nlohmann::json(nullptr);
+    dj.min_spring_preload_N = L.spring.min_preload_N;
+    dj.min_spring_rate_N_per_mm = L.spring.min_rate_N_per_mm;  // null when not finite
     loads_ok = add_extremes(L, dj, "jump_speed_rpm is null: the follower never decelerates, so no speed lifts it off the cam");
     if (L.response) {
       const dc::FollowerDynamicsResult& fr = *L.response;
-      nlohmann::json rj = {{"follower_stiffness_N_per_mm", *d.follower_stiffness_N_per_mm},
-                           {"damping_ratio", d.damping_ratio},
-                           {"revolutions", d.revolutions},
-                           {"natural_frequency_Hz", fr.natural_frequency_Hz},
-                           {"min_axial_force_N", fr.min_axial_force_N},
-                           {"at_min_axial_force_cam_angle_deg", fr.min_axial_force_cam_angle_deg},
-                           {"max_axial_force_N", fr.max_axial_force_N},
-                           {"at_max_axial_force_cam_angle_deg", fr.max_axial_force_cam_angle_deg},
-                           {"separates", fr.separates},
-                           {"first_separation_cam_angle_deg", nullptr},
-                           {"residual_vibration_mm", fr.residual_vibration_mm},
-                           {"at_residual_vibration_cam_angle_deg", fr.residual_vibration_cam_angle_deg},
-                           {"solver_steps", fr.steps},
-                           {"contact_events", fr.events}};
-      if (fr.separates) rj["first_separation_cam_angle_deg"] = fr.first_separation_cam_angle_deg;
-      dj["response"] = rj;
+      Result::Json::FollowerResponse& rj = dj.response.emplace();
+      rj.follower_stiffness_N_per_mm = *d.follower_stiffness_N_per_mm;
+      rj.damping_ratio = d.damping_ratio;
+      rj.revolutions = d.revolutions;
+      rj.natural_frequency_Hz = fr.natural_frequency_Hz;
+      rj.min_axial_force_N = fr.min_axial_force_N;
+      rj.at_min_axial_force_cam_angle_deg = fr.min_axial_force_cam_angle_deg;
+      rj.max_axial_force_N = fr.max_axial_force_N;
+      rj.at_max_axial_force_cam_angle_deg = fr.max_axial_force_cam_angle_deg;
+      rj.separates = fr.separates;
+      if (fr.separates) rj.first_separation_cam_angle_deg = fr.first_separation_cam_angle_deg;  // else null
+      rj.residual_vibration_mm = fr.residual_vibration_mm;
+      rj.at_residual_vibration_cam_angle_deg = fr.residual_vibration_cam_angle_deg;
+      rj.solver_steps = fr.steps;
+      rj.contact_events = fr.events;
       add_jump(L, dj, "follower");
       loads_ok = loads_ok && !fr.separates;
     }
@@ -1426,76 +1417,69 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
                                         : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
                  loads_ok;
     } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
-      j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
+      note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
     } else if (s.face_width_mm || s.material) {
-      j["notes"].push_back("no contact stress: it needs both face_width_mm and material");
+      note("no contact stress: it needs both face_width_mm and material");
     }
-    j["dynamics"] = dj;
   } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
-    j["notes"].push_back("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
+    note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
   } else if (s.face_width_mm || s.material) {
-    j["notes"].push_back(r.oscillating ? "no contact force and no contact stress: they need \"arm_dynamics\" (speed, arm "
-                                    "inertia, spring)"
-                                  : "no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
+    note(r.oscillating ? "no contact force and no contact stress: they need \"arm_dynamics\" (speed, arm "
+                         "inertia, spring)"
+                       : "no contact force and no contact stress: they need \"dynamics\" (speed, mass, spring)");
   }
 
   // The verdict: every limit met, and which limits are the defaults.
-  nlohmann::json defaults = nlohmann::json::array();
-  if (s.limits.pressure_angle_default) defaults.push_back("pressure_angle_deg");
-  if (s.limits.radius_margin_default) defaults.push_back("radius_margin_mm");
+  Result::Json::Limits& lim = j.limits;
+  if (s.limits.pressure_angle_default) lim.defaults.push_back("pressure_angle_deg");
+  if (s.limits.radius_margin_default) lim.defaults.push_back("radius_margin_mm");
+  lim.radius_margin_mm = s.limits.radius_margin_mm;
   if (flat && !flat_arm) {
-    if (s.limits.pressure_angle_default) defaults.erase(defaults.begin());
-    j["limits"] = {{"radius_margin_mm", s.limits.radius_margin_mm}, {"defaults", defaults}};
-    if (s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
+    if (s.limits.pressure_angle_default) lim.defaults.erase(lim.defaults.begin());
+    if (s.follower_face_width_mm) lim.face_width_mm = *s.follower_face_width_mm;
   } else {
-    j["limits"] = {{"pressure_angle_deg", pa_limit}, {"radius_margin_mm", s.limits.radius_margin_mm},
-                   {"defaults", defaults}};
-    if (flat_arm && s.follower_face_width_mm) j["limits"]["face_width_mm"] = *s.follower_face_width_mm;
+    lim.pressure_angle_deg = pa_limit;
+    if (flat_arm && s.follower_face_width_mm) lim.face_width_mm = *s.follower_face_width_mm;
   }
-  if (r.loads) j["limits"]["min_contact_force_N"] = 0.0;
-  if (s.limits.contact_stress_MPa) j["limits"]["contact_stress_MPa"] = *s.limits.contact_stress_MPa;
-  j["limits_ok"] = geometry_ok && loads_ok;
+  if (r.loads) lim.min_contact_force_N = 0.0;
+  if (s.limits.contact_stress_MPa) lim.contact_stress_MPa = *s.limits.contact_stress_MPa;
+  j.limits_ok = geometry_ok && loads_ok;
 
-  const std::string& fu = r.follower_unit;
-  j["motion"] = {{"joints", JointsJson(r.joints)},
-                 {"peak_velocity_" + fu + "_per_rad", r.peak_velocity},
-                 {"peak_acceleration_" + fu + "_per_rad2", r.peak_acceleration},
-                 {"peak_jerk_" + fu + "_per_rad3", r.peak_jerk}};
+  j.motion.joints = JointsJson(r.joints);
+  if (r.follower_unit == "deg") {
+    j.motion.peak_velocity_deg_per_rad = r.peak_velocity;
+    j.motion.peak_acceleration_deg_per_rad2 = r.peak_acceleration;
+    j.motion.peak_jerk_deg_per_rad3 = r.peak_jerk;
+  } else {
+    j.motion.peak_velocity_mm_per_rad = r.peak_velocity;
+    j.motion.peak_acceleration_mm_per_rad2 = r.peak_acceleration;
+    j.motion.peak_jerk_mm_per_rad3 = r.peak_jerk;
+  }
 
   if (r.monte_carlo == Result::MonteCarlo::kDone) {
-    nlohmann::json scales = nlohmann::json::array();
-    for (const auto& m : r.monte_carlo_rows)
-      scales.push_back({{"scale", m.scale},
-                        {"max_linear_um", m.max_linear_um},
-                        {"max_exact_um", m.max_exact_um},
-                        {"max_difference_um", m.max_difference_um},
-                        {"relative_difference", m.relative_difference},
-                        {"at_cam_angle_deg", m.at_cam_angle_deg},
-                        {"within_worst_case_fraction", m.within_worst_case_fraction},
-                        {"worst_case_exceeded_by_um", m.worst_case_exceeded_by_um},
-                        {"sample_rms_um", m.sample_rms_um},
-                        {"linear_rms_uniform_um", m.linear_rms_uniform_um}});
     const auto& o = s.monte_carlo_options;
-    j["monte_carlo"] = {{"samples", o.samples},
-                        {"angle_steps", o.angle_steps},
-                        {"seed", o.seed},
-                        {"distribution", "uniform within ±scale × tolerance, independent"},
-                        {"scales", scales}};
+    Result::Json::MonteCarlo& mc = j.monte_carlo.emplace();
+    mc.samples = o.samples;
+    mc.angle_steps = o.angle_steps;
+    mc.seed = o.seed;
+    mc.distribution = "uniform within ±scale × tolerance, independent";
+    mc.scales = r.monte_carlo_rows;
   } else if (r.monte_carlo == Result::MonteCarlo::kSkippedUndercut) {
-    j["monte_carlo"] = {{"skipped", "the profile is undercut"}};
+    j.monte_carlo.emplace().skipped = "the profile is undercut";
   }
-  j["geometry_files"] = GeometryFilesJson(s.geometry, {{"profile", &r.profile_files}});
+  j.geometry_files = GeometryFilesJson(s.geometry, {{"profile", &r.profile_files}});
   if (s.inspection) {
-    j["inspection"] = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
-                                     s.geometry.write);
-    if (s.geometry.write) j["inspection"]["datum"] = "the cam's axis of rotation (its bore); the file's header states its frame";
+    j.inspection = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
+                                  s.geometry.write);
+    if (s.geometry.write) (*j.inspection)["datum"] = "the cam's axis of rotation (its bore); the file's header states its frame";
   }
-  if (!r.measured.is_null()) j["measured"] = r.measured;
-  return j;
+  if (!r.measured.is_null()) j.measured = r.measured;
 }
 
+}  // namespace
+
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   WritePlanarCamFiles(r.profile_files, s.geometry, out);
   for (const auto& [name, csv] : r.inspection_files) out.Add("inspection/" + name + ".csv", csv);
   const DiscCam& cam = s.cam;
@@ -1787,7 +1771,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("disc_cam");
 
-CAMOPT_REGISTER_DECLARED_KIND("disc_cam", Input, "camopt study: disc cam with a roller, knife-edge or flat-faced follower");
+CAMOPT_REGISTER_KIND("disc_cam", Input, Result, "camopt study: disc cam with a roller, knife-edge or flat-faced follower");
 
 // The declared input of a study, for the estimates below that run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

@@ -8,6 +8,8 @@
 // Outputs: result.json, series.csv, SVAJ / angle / error plots (SVG), profile.svg, profile.dxf.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -423,6 +425,21 @@ struct MonteCarloRow {
   double scale, max_linear_um, max_exact_um, max_difference_um, relative_difference;
   double at_cam_angle_deg, within_worst_case_fraction, worst_case_exceeded_by_um;
   double sample_rms_um, linear_rms_uniform_um;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("scale", &scale, Field().Desc("the tolerance multiplier"));
+    a->Visit("max_linear_um", &max_linear_um, Field().Unit("µm").Desc("the largest linearised error over the samples"));
+    a->Visit("max_exact_um", &max_exact_um, Field().Unit("µm").Desc("the largest exact error"));
+    a->Visit("max_difference_um", &max_difference_um, Field().Unit("µm").Desc("the largest absolute difference, exact − linear"));
+    a->Visit("relative_difference", &relative_difference, Field().Desc("max_difference over max_linear"));
+    a->Visit("at_cam_angle_deg", &at_cam_angle_deg, Field().Unit("deg").Desc("where the largest difference is"));
+    a->Visit("within_worst_case_fraction", &within_worst_case_fraction,
+             Field().Desc("the share of samples within the worst case (eq. 31)"));
+    a->Visit("worst_case_exceeded_by_um", &worst_case_exceeded_by_um, Field().Unit("µm").Desc("by how much at most"));
+    a->Visit("sample_rms_um", &sample_rms_um, Field().Unit("µm").Desc("the samples' RMS"));
+    a->Visit("linear_rms_uniform_um", &linear_rms_uniform_um,
+             Field().Unit("µm").Desc("the linear model's RMS for uniform deviations"));
+  }
 };
 
 /// Every number the kind reports. "Follower unit" is mm (translating) or deg (oscillating);
@@ -530,6 +547,497 @@ struct Result {
   std::vector<std::pair<std::string, std::string>> inspection_files;
   std::vector<std::pair<std::string, long>> inspection_points;
   nlohmann::json measured;  ///< result.json's "measured" (null: none)
+
+  /// result.json, declared once (studies/archive.h): Run ends by filling it from the numbers above
+  /// (FillResult), Write writes it (WriteResult) and `camopt schema disc_cam --result` prints its
+  /// schema. The keys a follower type does not have are std::optional (absent).
+  struct Json {
+    struct MinMax {
+      double min = 0, max = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("min", &min, Field());
+        a->Visit("max", &max, Field());
+      }
+    };
+    /// The extremes of a value over the cycle and where they are.
+    struct Range {
+      double max = 0, at_max_cam_angle_deg = 0, min = 0, at_min_cam_angle_deg = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("max", &max, Field());
+        a->Visit("at_max_cam_angle_deg", &at_max_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("min", &min, Field());
+        a->Visit("at_min_cam_angle_deg", &at_min_cam_angle_deg, Field().Unit("deg"));
+      }
+    };
+    /// The pressure angle φ over the cycle and, but for a translating flat face, against its limit.
+    struct PressureAngle {
+      double min = 0, at_min_cam_angle_deg = 0, max = 0, at_max_cam_angle_deg = 0;
+      std::optional<double> max_rise, at_max_rise_cam_angle_deg, max_return, at_max_return_cam_angle_deg, limit;
+      std::optional<bool> rise_ok, return_ok;
+      std::optional<std::string> note;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("min", &min, Field().Unit("deg"));
+        a->Visit("at_min_cam_angle_deg", &at_min_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max", &max, Field().Unit("deg"));
+        a->Visit("at_max_cam_angle_deg", &at_max_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max_rise", &max_rise,
+                 Field().Unit("deg").Desc("the largest absolute φ where the follower rises or dwells (S' ≥ 0); not for a "
+                                          "translating flat face"));
+        a->Visit("at_max_rise_cam_angle_deg", &at_max_rise_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max_return", &max_return,
+                 Field().Unit("deg").Desc("the largest absolute φ where the follower returns (S' < 0), when it does"));
+        a->Visit("at_max_return_cam_angle_deg", &at_max_return_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("limit", &limit, Field().Unit("deg").Desc("limits.pressure_angle_deg, not for a translating flat face"));
+        a->Visit("rise_ok", &rise_ok, Field().Desc("max_rise within the limit"));
+        a->Visit("return_ok", &return_ok, Field().Desc("max_return within the limit (no return: true)"));
+        a->Visit("note", &note, Field().Desc("a translating flat face: why φ is 0"));
+      }
+    };
+    /// A flat face: where the contact runs on it, the profile's radius of curvature ρ and its cusps.
+    struct FlatFace {
+      std::optional<double> pivot_distance_mm, face_offset_mm, arm_angle_on_base_circle_deg;
+      std::optional<Range> contact_on_face_mm;
+      std::optional<double> face_length_needed_mm;
+      std::optional<Range> contact_offset_mm;
+      std::optional<double> face_needed_rise_side_mm, face_needed_return_side_mm, face_width_needed_mm,
+          face_width_needed_centred_mm;
+      double min_radius_of_curvature_mm = 0, min_radius_of_curvature_at_cam_angle_deg = 0, radius_margin_limit_mm = 0;
+      bool radius_margin_ok = false, cusp = false;
+      std::vector<std::array<double, 2>> cusp_cam_angle_deg;
+      std::optional<double> face_width_mm;
+      std::optional<bool> face_width_ok;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("pivot_distance_mm", &pivot_distance_mm, Field().Unit("mm").Desc("on an arm: f, cam centre to pivot"));
+        a->Visit("face_offset_mm", &face_offset_mm, Field().Unit("mm").Desc("on an arm: d, the face's distance from the pivot"));
+        a->Visit("arm_angle_on_base_circle_deg", &arm_angle_on_base_circle_deg,
+                 Field().Unit("deg").Desc("on an arm: its angle on the base circle"));
+        a->Visit("contact_on_face_mm", &contact_on_face_mm,
+                 Field().Unit("mm").Desc("on an arm: ℓ, the contact along the face from the foot of the pivot's "
+                                         "perpendicular"));
+        a->Visit("face_length_needed_mm", &face_length_needed_mm, Field().Unit("mm").Desc("on an arm: max ℓ − min ℓ"));
+        a->Visit("contact_offset_mm", &contact_offset_mm,
+                 Field().Unit("mm").Desc("translating: S', the contact's offset from the follower's axis"));
+        a->Visit("face_needed_rise_side_mm", &face_needed_rise_side_mm, Field().Unit("mm").Desc("translating: max(0, max S')"));
+        a->Visit("face_needed_return_side_mm", &face_needed_return_side_mm,
+                 Field().Unit("mm").Desc("translating: max(0, −min S')"));
+        a->Visit("face_width_needed_mm", &face_width_needed_mm, Field().Unit("mm").Desc("translating: both sides"));
+        a->Visit("face_width_needed_centred_mm", &face_width_needed_centred_mm,
+                 Field().Unit("mm").Desc("translating: a face centred on the axis, twice the larger side"));
+        a->Visit("min_radius_of_curvature_mm", &min_radius_of_curvature_mm,
+                 Field().Unit("mm").Desc("ρ_min, the profile's smallest radius of curvature (≤ 0: a cusp)"));
+        a->Visit("min_radius_of_curvature_at_cam_angle_deg", &min_radius_of_curvature_at_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("radius_margin_limit_mm", &radius_margin_limit_mm, Field().Unit("mm").Desc("limits.radius_margin_mm"));
+        a->Visit("radius_margin_ok", &radius_margin_ok, Field().Desc("ρ_min above the margin"));
+        a->Visit("cusp", &cusp, Field().Desc("the profile has a cusp (ρ ≤ 0 somewhere)"));
+        a->Visit("cusp_cam_angle_deg", &cusp_cam_angle_deg, Field().Unit("deg").Desc("[from, to] where ρ ≤ 0"));
+        a->Visit("face_width_mm", &face_width_mm, Field().Unit("mm").Desc("follower.face_width_mm, when given"));
+        a->Visit("face_width_ok", &face_width_ok, Field().Desc("the face is long (wide) enough, with face_width_mm"));
+      }
+    };
+    struct Tolerances {
+      double profile_radial = 0, roller_radius = 0, profile_normal = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("profile_radial", &profile_radial, Field().Unit("µm"));
+        a->Visit("roller_radius", &roller_radius, Field().Unit("µm"));
+        a->Visit("profile_normal", &profile_normal, Field().Unit("µm"));
+      }
+    };
+    /// The largest value of an error and where it is.
+    struct Peak {
+      double max = 0, at_cam_angle_deg = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("max", &max, Field());
+        a->Visit("at_cam_angle_deg", &at_cam_angle_deg, Field().Unit("deg"));
+      }
+    };
+    struct WorstCase : Peak {
+      double min = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        Peak::Serialize(a);
+        a->Visit("min", &min, Field());
+      }
+    };
+    struct Max {
+      double max = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("max", &max, Field());
+      }
+    };
+    struct ErrorComponents {
+      MinMax radial, roller, normal;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("radial", &radial, Field().Desc("from the profile's radial tolerance"));
+        a->Visit("roller", &roller, Field().Desc("from the roller radius's tolerance"));
+        a->Visit("normal", &normal, Field().Desc("from the profile's normal tolerance"));
+      }
+    };
+    struct FollowerResponse {
+      double follower_stiffness_N_per_mm = 0, damping_ratio = 0;
+      int revolutions = 0;
+      double natural_frequency_Hz = 0, min_axial_force_N = 0, at_min_axial_force_cam_angle_deg = 0,
+             max_axial_force_N = 0, at_max_axial_force_cam_angle_deg = 0;
+      bool separates = false;
+      std::optional<double> first_separation_cam_angle_deg;
+      double residual_vibration_mm = 0, at_residual_vibration_cam_angle_deg = 0;
+      long solver_steps = 0;
+      int contact_events = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("follower_stiffness_N_per_mm", &follower_stiffness_N_per_mm, Field().Unit("N/mm").Desc("k_f"));
+        a->Visit("damping_ratio", &damping_ratio, Field().Desc("ζ"));
+        a->Visit("revolutions", &revolutions, Field().Desc("simulated; the last one's response"));
+        a->Visit("natural_frequency_Hz", &natural_frequency_Hz, Field().Unit("Hz"));
+        a->Visit("min_axial_force_N", &min_axial_force_N, Field().Unit("N"));
+        a->Visit("at_min_axial_force_cam_angle_deg", &at_min_axial_force_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max_axial_force_N", &max_axial_force_N, Field().Unit("N"));
+        a->Visit("at_max_axial_force_cam_angle_deg", &at_max_axial_force_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("separates", &separates, Field().Desc("contact lost in the last revolution"));
+        a->Visit("first_separation_cam_angle_deg", &first_separation_cam_angle_deg,
+                 Field().NullWhenAbsent().Unit("deg").Desc("where (null: no separation)"));
+        a->Visit("residual_vibration_mm", &residual_vibration_mm, Field().Unit("mm"));
+        a->Visit("at_residual_vibration_cam_angle_deg", &at_residual_vibration_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("solver_steps", &solver_steps, Field().Desc("CVODE's steps"));
+        a->Visit("contact_events", &contact_events, Field().Desc("contact losses and returns over the run"));
+      }
+    };
+    struct ArmResponse {
+      double arm_stiffness_N_m_per_rad = 0, damping_ratio = 0;
+      int revolutions = 0;
+      double natural_frequency_Hz = 0, min_contact_moment_N_m = 0, at_min_contact_moment_cam_angle_deg = 0,
+             max_contact_moment_N_m = 0, at_max_contact_moment_cam_angle_deg = 0, min_contact_force_N = 0,
+             at_min_contact_force_cam_angle_deg = 0, max_contact_force_N = 0, at_max_contact_force_cam_angle_deg = 0;
+      bool separates = false;
+      std::optional<double> first_separation_cam_angle_deg;
+      double residual_vibration_deg = 0, at_residual_vibration_cam_angle_deg = 0;
+      long solver_steps = 0;
+      int contact_events = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("arm_stiffness_N_m_per_rad", &arm_stiffness_N_m_per_rad, Field().Unit("N·m/rad").Desc("k_f"));
+        a->Visit("damping_ratio", &damping_ratio, Field().Desc("ζ"));
+        a->Visit("revolutions", &revolutions, Field().Desc("simulated; the last one's response"));
+        a->Visit("natural_frequency_Hz", &natural_frequency_Hz, Field().Unit("Hz"));
+        a->Visit("min_contact_moment_N_m", &min_contact_moment_N_m, Field().Unit("N·m").Desc("M_a, about the pivot"));
+        a->Visit("at_min_contact_moment_cam_angle_deg", &at_min_contact_moment_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max_contact_moment_N_m", &max_contact_moment_N_m, Field().Unit("N·m"));
+        a->Visit("at_max_contact_moment_cam_angle_deg", &at_max_contact_moment_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("min_contact_force_N", &min_contact_force_N,
+                 Field().Unit("N").Desc("the normal contact force at the cam, M_a over its lever arm"));
+        a->Visit("at_min_contact_force_cam_angle_deg", &at_min_contact_force_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max_contact_force_N", &max_contact_force_N, Field().Unit("N"));
+        a->Visit("at_max_contact_force_cam_angle_deg", &at_max_contact_force_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("separates", &separates, Field().Desc("contact lost in the last revolution"));
+        a->Visit("first_separation_cam_angle_deg", &first_separation_cam_angle_deg,
+                 Field().NullWhenAbsent().Unit("deg").Desc("where (null: no separation)"));
+        a->Visit("residual_vibration_deg", &residual_vibration_deg, Field().Unit("deg"));
+        a->Visit("at_residual_vibration_cam_angle_deg", &at_residual_vibration_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("solver_steps", &solver_steps, Field().Desc("CVODE's steps"));
+        a->Visit("contact_events", &contact_events, Field().Desc("contact losses and returns over the run"));
+      }
+    };
+    /// The search of the dynamic jump speed.
+    struct JumpSearch {
+      double upper_rpm = 0, scan_step_rpm = 0;
+      std::array<double, 2> bracket_rpm{};
+      int simulations = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("upper_rpm", &upper_rpm, Field().Unit("rpm").Desc("the highest speed scanned"));
+        a->Visit("scan_step_rpm", &scan_step_rpm, Field().Unit("rpm"));
+        a->Visit("bracket_rpm", &bracket_rpm, Field().Unit("rpm").Desc("the last bracket of the bisection"));
+        a->Visit("simulations", &simulations, Field());
+      }
+    };
+    struct SpectrumMinimum {
+      double tau = 0, amplitude_per_rise = 0;
+      bool zero = false;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("tau", &tau, Field().Desc("T/T_n"));
+        a->Visit("amplitude_per_rise", &amplitude_per_rise, Field().Desc("A/h, the amplitude over the rise, there"));
+        a->Visit("zero", &zero, Field().Desc("a zero of the spectrum"));
+      }
+    };
+    struct SpectrumSegment {
+      int segment = 0;
+      std::string law;
+      double tau = 0, amplitude_per_rise = 0, amplitude_error = 0;
+      std::optional<double> predicted_residual_vibration_deg, predicted_residual_vibration_mm;
+      std::vector<SpectrumMinimum> minima;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("segment", &segment, Field().Desc("its index in motion"));
+        a->Visit("law", &law, Field());
+        a->Visit("tau", &tau, Field().Desc("the segment's T/T_n at the study's speed"));
+        a->Visit("amplitude_per_rise", &amplitude_per_rise, Field().Desc("A/h, the residual amplitude over the segment's rise, at that τ"));
+        a->Visit("amplitude_error", &amplitude_error, Field());
+        a->Visit("predicted_residual_vibration_deg", &predicted_residual_vibration_deg,
+                 Field().Unit("deg").Desc("oscillating: r h (A/h), r the stiffness ratio"));
+        a->Visit("predicted_residual_vibration_mm", &predicted_residual_vibration_mm,
+                 Field().Unit("mm").Desc("translating: r h (A/h), r the stiffness ratio"));
+        a->Visit("minima", &minima, Field().Desc("the spectrum's local minima over tau_range"));
+      }
+    };
+    /// The residual-vibration spectrum of each moving segment (model/disc_cam/residual_spectrum.h).
+    struct Spectrum {
+      double damping_ratio = 0, stiffness_ratio = 0;
+      std::array<double, 2> tau_range{};
+      int points = 0;
+      std::vector<SpectrumSegment> segments;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("damping_ratio", &damping_ratio, Field().Desc("ζ"));
+        a->Visit("stiffness_ratio", &stiffness_ratio, Field().Desc("r = k_f/(k_f + k)"));
+        a->Visit("tau_range", &tau_range, Field().Desc("the range of τ = T/T_n of residual_spectrum.csv"));
+        a->Visit("points", &points, Field().Desc("τ values over the range"));
+        a->Visit("segments", &segments, Field().Desc("one per moving segment"));
+      }
+    };
+    /// The keys dynamics and arm_dynamics share: the loads' extremes, the kinetostatic jump speed,
+    /// the Hertz stress, the dynamic jump speed and the residual-vibration spectrum.
+    struct Loads {
+      double min_contact_force_N = 0, at_min_contact_force_cam_angle_deg = 0, max_contact_force_N = 0,
+             at_max_contact_force_cam_angle_deg = 0;
+      bool separation_ok = false;
+      double max_camshaft_torque_Nm = 0, at_max_camshaft_torque_cam_angle_deg = 0;
+      std::array<double, 2> camshaft_torque_range_Nm{};
+      double jump_speed_rpm = 0;
+      std::optional<double> face_width_mm, composite_modulus_MPa, max_contact_stress_MPa,
+          at_max_contact_stress_cam_angle_deg, contact_stress_limit_MPa;
+      std::optional<bool> contact_stress_ok;
+      std::optional<double> dynamic_jump_speed_rpm;
+      std::optional<JumpSearch> dynamic_jump_search;
+      std::optional<Spectrum> residual_spectrum;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("min_contact_force_N", &min_contact_force_N, Field().Unit("N").Desc("kinetostatic"));
+        a->Visit("at_min_contact_force_cam_angle_deg", &at_min_contact_force_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("max_contact_force_N", &max_contact_force_N, Field().Unit("N"));
+        a->Visit("at_max_contact_force_cam_angle_deg", &at_max_contact_force_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("separation_ok", &separation_ok, Field().Desc("the contact force stays above 0"));
+        a->Visit("max_camshaft_torque_Nm", &max_camshaft_torque_Nm, Field().Unit("N·m").Desc("the largest absolute camshaft torque T"));
+        a->Visit("at_max_camshaft_torque_cam_angle_deg", &at_max_camshaft_torque_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("camshaft_torque_range_Nm", &camshaft_torque_range_Nm, Field().Unit("N·m").Desc("[min, max] of T"));
+        a->Visit("jump_speed_rpm", &jump_speed_rpm,
+                 Field().NullWhenNotFinite().Unit("rpm").Desc(
+                     "kinetostatic: the lowest speed the follower leaves the cam (null: it never decelerates)"));
+        a->Visit("face_width_mm", &face_width_mm, Field().Unit("mm").Desc("with the Hertz stress"));
+        a->Visit("composite_modulus_MPa", &composite_modulus_MPa, Field().Unit("MPa").Desc("E*, with the Hertz stress"));
+        a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+                 Field().NullWhenNotFinite().Unit("MPa").Desc(
+                     "the peak Hertz stress, with face_width_mm and material (null: loaded at an undercut point or a "
+                     "cusp)"));
+        a->Visit("at_max_contact_stress_cam_angle_deg", &at_max_contact_stress_cam_angle_deg, Field().Unit("deg"));
+        a->Visit("contact_stress_limit_MPa", &contact_stress_limit_MPa,
+                 Field().Unit("MPa").Desc("limits.contact_stress_MPa, with the stress"));
+        a->Visit("contact_stress_ok", &contact_stress_ok, Field().Desc("the stress within its limit"));
+        a->Visit("dynamic_jump_speed_rpm", &dynamic_jump_speed_rpm,
+                 Field().NullWhenNotFinite().Unit("rpm").Desc(
+                     "with the response: the lowest speed the follower leaves the cam on its stiffness (null: none "
+                     "up to dynamic_jump_search.upper_rpm)"));
+        a->Visit("dynamic_jump_search", &dynamic_jump_search, Field().Desc("with the response"));
+        a->Visit("residual_spectrum", &residual_spectrum,
+                 Field().Desc("with the response, when the follower rings (damping_ratio < 1)"));
+      }
+    };
+    /// A translating follower's loads ("dynamics").
+    struct Dynamics : Loads {
+      double speed_rpm = 0, follower_mass_kg = 0, spring_rate_N_per_mm = 0, spring_preload_N = 0, external_load_N = 0;
+      std::string follower_axis;
+      double weight_toward_cam_N = 0, min_spring_preload_N = 0, min_spring_rate_N_per_mm = 0;
+      std::optional<FollowerResponse> response;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("speed_rpm", &speed_rpm, Field().Unit("rpm"));
+        a->Visit("follower_mass_kg", &follower_mass_kg, Field().Unit("kg"));
+        a->Visit("spring_rate_N_per_mm", &spring_rate_N_per_mm, Field().Unit("N/mm"));
+        a->Visit("spring_preload_N", &spring_preload_N, Field().Unit("N"));
+        a->Visit("external_load_N", &external_load_N, Field().Unit("N"));
+        a->Visit("follower_axis", &follower_axis, Field().OneOf({"vertical_above_cam", "vertical_below_cam", "horizontal"}));
+        a->Visit("weight_toward_cam_N", &weight_toward_cam_N, Field().Unit("N"));
+        a->Visit("min_spring_preload_N", &min_spring_preload_N,
+                 Field().Unit("N").Desc("the smallest preload that keeps contact up to the speed, with this rate"));
+        a->Visit("min_spring_rate_N_per_mm", &min_spring_rate_N_per_mm,
+                 Field().NullWhenNotFinite().Unit("N/mm").Desc(
+                     "the smallest rate that does, with this preload (null: none does, the deficit is on the base "
+                     "circle)"));
+        Loads::Serialize(a);
+        a->Visit("response", &response,
+                 Field().Desc("with follower_stiffness_N_per_mm: the one-degree-of-freedom dynamic response"));
+      }
+    };
+    /// An oscillating follower's loads on its arm ("arm_dynamics").
+    struct ArmDynamics : Loads {
+      double speed_rpm = 0, arm_inertia_kg_m2 = 0, spring_rate_N_m_per_rad = 0, spring_preload_N_m = 0,
+             external_moment_N_m = 0;
+      std::optional<double> min_spring_preload_N_m, min_spring_rate_N_m_per_rad;
+      std::optional<ArmResponse> response;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("speed_rpm", &speed_rpm, Field().Unit("rpm"));
+        a->Visit("arm_inertia_kg_m2", &arm_inertia_kg_m2, Field().Unit("kg·m²"));
+        a->Visit("spring_rate_N_m_per_rad", &spring_rate_N_m_per_rad, Field().Unit("N·m/rad"));
+        a->Visit("spring_preload_N_m", &spring_preload_N_m, Field().Unit("N·m"));
+        a->Visit("external_moment_N_m", &external_moment_N_m, Field().Unit("N·m"));
+        a->Visit("min_spring_preload_N_m", &min_spring_preload_N_m,
+                 Field().Unit("N·m").Desc("a roller or knife edge: the smallest M₀ that keeps contact up to the speed, "
+                                          "with this rate"));
+        a->Visit("min_spring_rate_N_m_per_rad", &min_spring_rate_N_m_per_rad,
+                 Field().NullWhenNotFinite().Unit("N·m/rad").Desc(
+                     "a roller or knife edge: the smallest rate that does, with this M₀ (null: none does)"));
+        Loads::Serialize(a);
+        a->Visit("response", &response,
+                 Field().Desc("with arm_stiffness_N_m_per_rad: the arm's one-degree-of-freedom dynamic response"));
+      }
+    };
+    /// The limits of the verdict.
+    struct Limits {
+      std::optional<double> pressure_angle_deg;
+      double radius_margin_mm = 0;
+      std::vector<std::string> defaults;
+      std::optional<double> face_width_mm, min_contact_force_N, contact_stress_MPa;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("pressure_angle_deg", &pressure_angle_deg, Field().Unit("deg").Desc("not for a translating flat face"));
+        a->Visit("radius_margin_mm", &radius_margin_mm, Field().Unit("mm"));
+        a->Visit("defaults", &defaults, Field().Desc("the limits the study did not give (their defaults apply)"));
+        a->Visit("face_width_mm", &face_width_mm, Field().Unit("mm").Desc("a flat face's width, when given"));
+        a->Visit("min_contact_force_N", &min_contact_force_N, Field().Unit("N").Desc("with the loads: 0"));
+        a->Visit("contact_stress_MPa", &contact_stress_MPa, Field().Unit("MPa").Desc("when given"));
+      }
+    };
+    /// The motion program: its joints and peak derivatives, in the follower's unit (mm or deg) per rad^k.
+    struct Motion {
+      nlohmann::json joints;
+      std::optional<double> peak_velocity_mm_per_rad, peak_velocity_deg_per_rad, peak_acceleration_mm_per_rad2,
+          peak_acceleration_deg_per_rad2, peak_jerk_mm_per_rad3, peak_jerk_deg_per_rad3;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("joints", &joints, Field().Desc("the motion program's joints and their continuity").Schema({{"type", "array"}}));
+        a->Visit("peak_velocity_mm_per_rad", &peak_velocity_mm_per_rad, Field().Unit("mm/rad").Desc("translating"));
+        a->Visit("peak_velocity_deg_per_rad", &peak_velocity_deg_per_rad, Field().Unit("deg/rad").Desc("oscillating"));
+        a->Visit("peak_acceleration_mm_per_rad2", &peak_acceleration_mm_per_rad2, Field().Unit("mm/rad²").Desc("translating"));
+        a->Visit("peak_acceleration_deg_per_rad2", &peak_acceleration_deg_per_rad2,
+                 Field().Unit("deg/rad²").Desc("oscillating"));
+        a->Visit("peak_jerk_mm_per_rad3", &peak_jerk_mm_per_rad3, Field().Unit("mm/rad³").Desc("translating"));
+        a->Visit("peak_jerk_deg_per_rad3", &peak_jerk_deg_per_rad3, Field().Unit("deg/rad³").Desc("oscillating"));
+      }
+    };
+    /// The Monte-Carlo check of the linearised error, or why it was skipped.
+    struct MonteCarlo {
+      std::optional<int> samples, angle_steps;
+      std::optional<uint64_t> seed;
+      std::optional<std::string> distribution;
+      std::optional<std::vector<MonteCarloRow>> scales;
+      std::optional<std::string> skipped;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("samples", &samples, Field().Desc("per tolerance scale"));
+        a->Visit("angle_steps", &angle_steps, Field().Desc("cam angles per sample"));
+        a->Visit("seed", &seed, Field());
+        a->Visit("distribution", &distribution, Field());
+        a->Visit("scales", &scales, Field().Desc("one per tolerance scale"));
+        a->Visit("skipped", &skipped, Field().Desc("why it was not run (then the only key)"));
+      }
+    };
+
+    std::string study = "disc_cam", name, follower;
+    int angle_steps = 0;
+    double max_radial_dimension_mm = 0, max_radial_dimension_at_cam_angle_deg = 0, min_radial_dimension_mm = 0;
+    PressureAngle pressure_angle_deg;
+    std::optional<std::vector<std::string>> warnings;
+    std::optional<FlatFace> flat_face;
+    std::optional<MinMax> shift_angle_deg, cos_shift_over_cos_pressure;
+    /// null (NaN): no convex (concave) part.
+    std::optional<double> min_radius_of_curvature_mm, min_radius_of_curvature_at_cam_angle_deg,
+        min_concave_radius_of_curvature_mm, min_concave_radius_at_cam_angle_deg;
+    std::optional<double> radius_margin_limit_mm;
+    std::optional<bool> radius_margin_ok, undercut;
+    std::optional<std::vector<std::array<double, 2>>> undercut_cam_angle_deg;
+    std::optional<std::vector<std::string>> evaluated;
+    std::optional<Tolerances> tolerances_um;
+    std::optional<WorstCase> worst_case_error_um;
+    std::optional<Peak> rms_error_um, worst_case_error_arcsec;
+    std::optional<ErrorComponents> error_components_um;
+    std::optional<Max> rms_error_arcsec;
+    std::optional<ArmDynamics> arm_dynamics;
+    std::optional<Dynamics> dynamics;
+    Limits limits;
+    bool limits_ok = false;
+    Motion motion;
+    std::optional<MonteCarlo> monte_carlo;
+    nlohmann::json geometry_files;
+    std::optional<nlohmann::json> inspection, measured;
+    std::optional<std::vector<std::string>> notes;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("study", &study, Field().Const("disc_cam"));
+      a->Visit("name", &name, Field().Desc("the design's name"));
+      a->Visit("follower", &follower, Field().Desc("the follower's type, as in the study"));
+      a->Visit("angle_steps", &angle_steps, Field().Desc("cam angles of the analysis grid"));
+      a->Visit("max_radial_dimension_mm", &max_radial_dimension_mm, Field().Unit("mm").Desc("the profile's largest radius"));
+      a->Visit("max_radial_dimension_at_cam_angle_deg", &max_radial_dimension_at_cam_angle_deg, Field().Unit("deg"));
+      a->Visit("min_radial_dimension_mm", &min_radial_dimension_mm, Field().Unit("mm").Desc("the profile's smallest radius"));
+      a->Visit("pressure_angle_deg", &pressure_angle_deg, Field().Desc("φ over the cycle and against its limit"));
+      a->Visit("warnings", &warnings, Field().Desc("a pressure angle above the warning limit"));
+      a->Visit("flat_face", &flat_face, Field().Desc("a flat-faced follower: the contact on the face and the profile's convexity"));
+      a->Visit("shift_angle_deg", &shift_angle_deg, Field().Unit("deg").Desc("a roller or knife edge"));
+      a->Visit("cos_shift_over_cos_pressure", &cos_shift_over_cos_pressure, Field().Desc("a roller or knife edge"));
+      a->Visit("min_radius_of_curvature_mm", &min_radius_of_curvature_mm,
+               Field().NullWhenNotFinite().Unit("mm").Desc(
+                   "a roller or knife edge: the profile's smallest convex radius of curvature (null: no convex part)"));
+      a->Visit("min_radius_of_curvature_at_cam_angle_deg", &min_radius_of_curvature_at_cam_angle_deg,
+               Field().NullWhenNotFinite().Unit("deg"));
+      a->Visit("min_concave_radius_of_curvature_mm", &min_concave_radius_of_curvature_mm,
+               Field().NullWhenNotFinite().Unit("mm").Desc("a roller or knife edge: the smallest concave radius (null: "
+                                                           "no concave part)"));
+      a->Visit("min_concave_radius_at_cam_angle_deg", &min_concave_radius_at_cam_angle_deg,
+               Field().NullWhenNotFinite().Unit("deg"));
+      a->Visit("radius_margin_limit_mm", &radius_margin_limit_mm,
+               Field().Unit("mm").Desc("a roller or knife edge: limits.radius_margin_mm"));
+      a->Visit("radius_margin_ok", &radius_margin_ok,
+               Field().Desc("a roller or knife edge: the smallest convex radius at least the margin (no convex part: true)"));
+      a->Visit("undercut", &undercut, Field().Desc("a roller or knife edge: the profile is undercut somewhere"));
+      a->Visit("undercut_cam_angle_deg", &undercut_cam_angle_deg, Field().Unit("deg").Desc("[from, to] where it is"));
+      a->Visit("evaluated", &evaluated, Field().Desc("the stages run, when analysis.evaluate is given"));
+      a->Visit("tolerances_um", &tolerances_um, Field().Desc("with the mechanical error: the tolerances"));
+      a->Visit("worst_case_error_um", &worst_case_error_um,
+               Field().Unit("µm").Desc("with the mechanical error: the worst case at the roller centre (eq. 31)"));
+      a->Visit("rms_error_um", &rms_error_um, Field().Unit("µm").Desc("with the mechanical error: the RMS (eq. 32)"));
+      a->Visit("error_components_um", &error_components_um, Field().Unit("µm").Desc("with the mechanical error"));
+      a->Visit("worst_case_error_arcsec", &worst_case_error_arcsec,
+               Field().Unit("arcsec").Desc("oscillating, with the mechanical error: of the arm angle"));
+      a->Visit("rms_error_arcsec", &rms_error_arcsec, Field().Unit("arcsec").Desc("oscillating, with the mechanical error"));
+      a->Visit("arm_dynamics", &arm_dynamics, Field().Desc("with arm_dynamics: the arm's loads"));
+      a->Visit("dynamics", &dynamics, Field().Desc("with dynamics: the follower's loads"));
+      a->Visit("limits", &limits, Field().Desc("the verdict's limits"));
+      a->Visit("limits_ok", &limits_ok, Field().Desc("every limit met"));
+      a->Visit("motion", &motion, Field());
+      a->Visit("monte_carlo", &monte_carlo, Field().Desc("with the Monte-Carlo stage"));
+      a->Visit("geometry_files", &geometry_files,
+               Field().Desc("the cam's geometry files (profile), or why none").Schema({{"type", "object"}}));
+      a->Visit("inspection", &inspection,
+               Field().Desc("with inspection: its points, files and datum").Schema({{"type", "object"}}));
+      a->Visit("measured", &measured,
+               Field().Desc("with measured_profile: the measured cam's deviation and its follower error").Schema(
+                   {{"type", "object"}}));
+      a->Visit("notes", &notes, Field().Desc("what was not computed or checked, and why"));
+    }
+  };
+  Json json;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    json.Serialize(a);
+  }
 };
 
 /// The cam as inspected: its exact profile as a function of the cam angle θ in the frame of
@@ -538,10 +1046,9 @@ InspectedPart CamPart(const Study& study);
 
 /// Parses and validates a "disc_cam" study. @throws StudyError (exit 2) naming the JSON path.
 Study Parse(const Node& root);
-/// Evaluates the cam over the analysis grid, the mechanical error and the Monte-Carlo check.
+/// Evaluates the cam over the analysis grid, the mechanical error and the Monte-Carlo check, and
+/// fills result.json's members (Result::json).
 Result Run(const Study& study, const RunContext& ctx);
-/// result.json.
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, series.csv, the SVG plots, profile.svg and profile.dxf.
 void Write(const Study& study, const Result& result, Outputs& out);
 

@@ -254,7 +254,7 @@ json RunStudy(const json& file) {
   const studies::disc_cam::Study s = studies::disc_cam::Parse(root);
   studies::RunContext ctx;
   ctx.quiet = true;
-  return studies::disc_cam::ToJson(s, studies::disc_cam::Run(s, ctx));
+  return studies::WriteResult(studies::disc_cam::Run(s, ctx));
 }
 
 // In the rigid limit the study's dynamic contact force (M_a over the normal's lever arm) meets the

@@ -601,7 +601,7 @@ TEST(GeometryFiles, DiscCamStepSolidAndCutterPath) {
   std::printf("disc cam: STEP volume %.3f mm³, from the profile points %.3f mm³ (rel. diff %.2e)\n",
               back.volume_mm3, volume, back.volume_mm3 / volume - 1);
   EXPECT_NE(out.files().at("profile.dxf").find("CUTTER_PATH"), std::string::npos);
-  const json g = studies::disc_cam::ToJson(st, res)["geometry_files"]["profile"];
+  const json g = studies::WriteResult(res)["geometry_files"]["profile"];
   EXPECT_LE(double(g["dxf_max_deviation_um"]), 1.0);
   EXPECT_EQ(g["cutter_diameter_mm"], 2 * double(study["cutter_radius_mm"]));
 }
@@ -651,7 +651,7 @@ TEST(GeometryFiles, EveryExampleStepSolidReadsBack) {
       const auto st = studies::disc_cam::Parse(root);
       const auto res = studies::disc_cam::Run(st, {name, true});
       studies::disc_cam::Write(st, res, out);
-      j = studies::disc_cam::ToJson(st, res);
+      j = studies::WriteResult(res);
     } else {
       continue;
     }

@@ -235,7 +235,7 @@ TEST(DiscCamStudyDynamics, ReportsForcesTorqueJumpSpeedAndStress) {
   // on the return's deceleration, still positive at 300 rpm, well below the jump speed.
   EXPECT_GT(L.min_contact_force_N.value, 0.0);
   EXPECT_LT(300.0, L.jump_speed_rpm);
-  const json j = ds::ToJson(st, r);
+  const json j = studies::WriteResult(r);
   EXPECT_EQ(j["dynamics"]["separation_ok"], true);
   EXPECT_EQ(j["dynamics"]["contact_stress_ok"], true);
   EXPECT_EQ(j["limits_ok"], true);
@@ -250,7 +250,7 @@ TEST(DiscCamStudyDynamics, ReportsForcesTorqueJumpSpeedAndStress) {
   ds::Study st2;
   const ds::Result r2 = RunFile(fast, &st2);
   EXPECT_LT(r2.loads->min_contact_force_N.value, 0.0);
-  const json j2 = ds::ToJson(st2, r2);
+  const json j2 = studies::WriteResult(r2);
   EXPECT_EQ(j2["dynamics"]["separation_ok"], false);
   EXPECT_EQ(j2["limits_ok"], false);
   // And just below it, it holds.
@@ -261,7 +261,7 @@ TEST(DiscCamStudyDynamics, ReportsForcesTorqueJumpSpeedAndStress) {
   fast["dynamics"]["speed_rpm"] = 1.2 * L.jump_speed_rpm;
   ds::Study st3;
   const ds::Result r3 = RunFile(fast, &st3);
-  const double preload = ds::ToJson(st3, r3)["dynamics"]["min_spring_preload_N"].get<double>();
+  const double preload = studies::WriteResult(r3)["dynamics"]["min_spring_preload_N"].get<double>();
   EXPECT_GT(preload, 40.0);
   fast["dynamics"]["spring_preload_N"] = preload;
   const ds::Result r4 = RunFile(fast);

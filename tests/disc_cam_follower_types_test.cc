@@ -38,7 +38,7 @@ Ran ParseAndRun(const json& file) {
   studies::RunContext ctx;
   ctx.quiet = true;
   r.result = disc_study::Run(r.study, ctx);
-  r.out = disc_study::ToJson(r.study, r.result);
+  r.out = studies::WriteResult(r.result);
   return r;
 }
 

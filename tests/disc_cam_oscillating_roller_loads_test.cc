@@ -211,7 +211,7 @@ TEST(DiscCamOscillatingRollerLoads, StudyReportsForceTorqueJumpAndStress) {
   studies::RunContext ctx;
   ctx.quiet = true;
   const studies::disc_cam::Result r = studies::disc_cam::Run(s, ctx);
-  const json out = studies::disc_cam::ToJson(s, r);
+  const json out = studies::WriteResult(r);
   ASSERT_TRUE(out.contains("arm_dynamics")) << out.dump(1);
   const json& aj = out["arm_dynamics"];
   const Mechanism m{100, 80, 50, 20 * kDegHere};
@@ -338,7 +338,7 @@ TEST(DiscCamOscillatingRollerLoads, RefusalsAndTheKnifeEdge) {
   studies::RunContext ctx;
   ctx.quiet = true;
   const studies::disc_cam::Result kr = studies::disc_cam::Run(ks, ctx);
-  const json out = studies::disc_cam::ToJson(ks, kr);
+  const json out = studies::WriteResult(kr);
   ASSERT_TRUE(out.contains("arm_dynamics"));
   EXPECT_FALSE(out["arm_dynamics"].contains("max_contact_stress_MPa"));
   const Mechanism m{100, 80, 50, 20 * kDegHere};

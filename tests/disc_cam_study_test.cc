@@ -106,9 +106,9 @@ TEST(DiscCamStudy, PaperExampleThroughTheCli) {
   const json r = json::parse(ReadFile(dir / "out" / "result.json"));
   EXPECT_EQ(r["study"], "disc_cam");
   EXPECT_EQ(r["motion"]["joints"][0]["continuity"], "C2");
-  // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
+  // The CLI writes what the C++ entry points give: result.json is WriteResult(Run(Parse)).
   const Ran ran = ParseAndRun(study);
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(r), disc_study::ToJson(ran.study, ran.result));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(r), studies::WriteResult(ran.result));
   for (const char* f : {"series.csv", "error.svg", "angles.svg", "svaj.svg", "profile.svg", "profile.dxf"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   // S-V-A-J stacked in one plot, per degree of cam; no speed given, so nothing over time.
@@ -142,7 +142,7 @@ TEST(DiscCamStudy, OscillatingExample) {
   const Ran ran = ParseAndRun(study);
   const disc_study::Result& r = ran.result;
   EXPECT_TRUE(r.oscillating);
-  EXPECT_EQ(disc_study::ToJson(ran.study, r)["follower"], "oscillating_roller");
+  EXPECT_EQ(studies::WriteResult(r)["follower"], "oscillating_roller");
   EXPECT_NEAR(r.min_radial_dimension_mm, 40.0, 1e-9);
   // The error at the roller centre is l·Δξ: µm and arc seconds agree through l = 80 mm.
   ASSERT_TRUE(r.max_worst_case_error_arcsec.has_value());
@@ -173,7 +173,7 @@ TEST(DiscCamStudy, ProfileOnlySkipsTheErrorStages) {
   EXPECT_TRUE(bare.result.monte_carlo_rows.empty());
   EXPECT_EQ(bare.result.series.pressure_angle_deg, full.result.series.pressure_angle_deg);
   EXPECT_EQ(bare.result.max_radial_dimension_mm.value, full.result.max_radial_dimension_mm.value);
-  const json j = disc_study::ToJson(bare.study, bare.result);
+  const json j = studies::WriteResult(bare.result);
   EXPECT_FALSE(j.contains("worst_case_error_um"));
   EXPECT_FALSE(j.contains("monte_carlo"));
   EXPECT_EQ(j["evaluated"], json({"profile"}));
@@ -209,7 +209,7 @@ TEST(DiscCamStudy, UndercutIsReportedNotHidden) {
   ASSERT_TRUE(r.min_radius_of_curvature_mm.has_value());
   EXPECT_LT(r.min_radius_of_curvature_mm->value, 0.0);
   EXPECT_EQ(r.monte_carlo, disc_study::Result::MonteCarlo::kSkippedUndercut);
-  EXPECT_TRUE(disc_study::ToJson(ran.study, r)["monte_carlo"].contains("skipped"));
+  EXPECT_TRUE(studies::WriteResult(r)["monte_carlo"].contains("skipped"));
 }
 
 // Limits and verdict (docs/disc_cam.md "Limits and verdict"). The paper's translating example
@@ -241,7 +241,7 @@ TEST(DiscCamStudy, DefaultLimitsGiveAVerdict) {
   EXPECT_NEAR(r.max_pressure_angle_return_deg->value, ret, 1e-9);
   EXPECT_NEAR(r.max_pressure_angle_return_deg->cam_angle_deg, ret_at, 1e-9);
   EXPECT_NEAR(ret, 30.596, 1e-3);
-  const json j = disc_study::ToJson(ran.study, r);
+  const json j = studies::WriteResult(r);
   EXPECT_EQ(j["pressure_angle_deg"]["limit"], 30.0);
   EXPECT_EQ(j["pressure_angle_deg"]["rise_ok"], true);
   EXPECT_EQ(j["pressure_angle_deg"]["return_ok"], false);
@@ -269,14 +269,14 @@ TEST(DiscCamStudy, DefaultLimitsGiveAVerdict) {
   // Given limits replace the defaults: 31° passes the return; a margin of 37 mm fails 36.56 mm.
   file["limits"] = {{"pressure_angle_deg", 31}, {"radius_margin_mm", 37}};
   const Ran given = ParseAndRun(file);
-  const json g = disc_study::ToJson(given.study, given.result);
+  const json g = studies::WriteResult(given.result);
   EXPECT_EQ(g["pressure_angle_deg"]["return_ok"], true);
   EXPECT_EQ(g["radius_margin_ok"], false);
   EXPECT_NEAR(g["min_radius_of_curvature_mm"].get<double>(), 36.558, 1e-3);
   EXPECT_EQ(g["limits"]["defaults"], json::array());
   EXPECT_EQ(g["limits_ok"], false);
   file["limits"] = {{"radius_margin_mm", 36.5}};
-  const json h = disc_study::ToJson(ParseAndRun(file).study, ParseAndRun(file).result);
+  const json h = studies::WriteResult(ParseAndRun(file).result);
   EXPECT_EQ(h["radius_margin_ok"], true);
   EXPECT_EQ(h["limits"]["defaults"], json({"pressure_angle_deg"}));
 }
@@ -287,7 +287,7 @@ TEST(DiscCamStudy, OscillatingDefaultAndUndercutVerdict) {
   json osc = Example("disc_cam_oscillating.json");
   osc["analysis"]["monte_carlo"] = false;
   const Ran o = ParseAndRun(osc);
-  const json jo = disc_study::ToJson(o.study, o.result);
+  const json jo = studies::WriteResult(o.result);
   EXPECT_EQ(jo["pressure_angle_deg"]["limit"], 45.0);
   EXPECT_NEAR(jo["pressure_angle_deg"]["max_return"].get<double>(), 26.311, 1e-3);
   EXPECT_EQ(jo["limits_ok"], true);
@@ -301,7 +301,7 @@ TEST(DiscCamStudy, OscillatingDefaultAndUndercutVerdict) {
       {"law": "cycloidal", "rise_mm": -24, "cam_angle_deg": 60},
       {"law": "dwell", "cam_angle_deg": 240}])");
   const Ran u = ParseAndRun(study);
-  const json ju = disc_study::ToJson(u.study, u.result);
+  const json ju = studies::WriteResult(u.result);
   EXPECT_EQ(ju["undercut"], true);
   EXPECT_EQ(ju["radius_margin_ok"], false);
   EXPECT_EQ(ju["limits_ok"], false);
@@ -496,7 +496,7 @@ TEST(DiscCamStudy, PolynomialDiscontinuitiesAreRejectedWithBothValues) {
 // kinetostatic jump speed by hand over the 0.1° grid: min (k S + F₀ + W)/(−m S'') → 356.43 rpm.
 TEST(DiscCamStudy, JumpStudyAgainstAnIndependentIntegration) {
   const Ran ran = ParseAndRun(Example("disc_cam_jump.json"));
-  const json d = disc_study::ToJson(ran.study, ran.result)["dynamics"];
+  const json d = studies::WriteResult(ran.result)["dynamics"];
   EXPECT_NEAR(d["jump_speed_rpm"].get<double>(), 356.43, 0.01);
   const double jump = d["dynamic_jump_speed_rpm"].get<double>();
   EXPECT_GT(jump, 293.9);
@@ -515,7 +515,7 @@ TEST(DiscCamStudy, JumpStudyAgainstAnIndependentIntegration) {
   json fast = Example("disc_cam_jump.json");
   fast["dynamics"]["speed_rpm"] = 300;
   const Ran f = ParseAndRun(fast);
-  const json fd = disc_study::ToJson(f.study, f.result);
+  const json fd = studies::WriteResult(f.result);
   EXPECT_EQ(fd["dynamics"]["response"]["separates"], true);
   EXPECT_EQ(fd["dynamics"]["response"]["min_axial_force_N"], 0.0);
   EXPECT_NEAR(fd["dynamics"]["dynamic_jump_speed_rpm"].get<double>(), jump, 1e-9);

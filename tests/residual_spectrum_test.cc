@@ -176,7 +176,7 @@ TEST(ResidualSpectrum, StudysPredictionEqualsItsSimulatedResidualVibration) {
   const studies::disc_cam::Study st = studies::disc_cam::Parse(root);
   studies::RunContext ctx;
   ctx.quiet = true;
-  const nlohmann::json out = studies::disc_cam::ToJson(st, studies::disc_cam::Run(st, ctx));
+  const nlohmann::json out = studies::WriteResult(studies::disc_cam::Run(st, ctx));
   const nlohmann::json& dj = out["dynamics"];
   ASSERT_EQ(dj["response"]["separates"], false);
   const nlohmann::json& rise = dj["residual_spectrum"]["segments"][0];
