@@ -1712,6 +1712,17 @@ nlohmann::ordered_json Result::LubricationSchema() {
   return {{"type", "object"}, {"properties", p}};
 }
 
+nlohmann::ordered_json Result::JointModelSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  for (const char* k : {"ratio", "rated_torque_Nm", "stiffness_Nm_per_rad", "stiffness_segments", "torsion_curve",
+                        "backlash_rad", "lost_motion_rad", "lost_motion_percent", "reflected_inertia_kgm2",
+                        "inertia_includes", "damping_Nms_per_rad", "damping_note", "friction_torque_Nm",
+                        "friction_note", "efficiency", "loss_table", "tilt_stiffness_Nm_per_rad", "tilt_note"})
+    p[k] = ojson::object();
+  return {{"type", "object"}, {"properties", p}};
+}
+
 nlohmann::ordered_json Result::TorsionalDynamicsSchema() {
   using ojson = nlohmann::ordered_json;
   ojson p = ojson::object();

@@ -666,7 +666,7 @@ struct Result {
     a->Visit("lte_peak_to_peak_arcsec", &lte_peak_to_peak_arcsec,
              Field().Unit("arcsec").Desc("loaded transmission error, peak to peak (loaded stage)"));
     a->Visit("lte_mean_abs_arcsec", &lte_mean_abs_arcsec,
-             Field().Unit("arcsec").Desc("mean |loaded transmission error| (loaded stage)"));
+             Field().Unit("arcsec").Desc("mean absolute loaded transmission error (loaded stage)"));
     a->Visit("gear_ratio_nominal", &gear_ratio_nominal, Field().Desc("the teeth (loaded stage)"));
     a->Visit("gear_ratio_peak_to_peak", &gear_ratio_peak_to_peak, loaded);
     a->Visit("max_pairs_in_contact", &max_pairs_in_contact, loaded);
@@ -735,7 +735,7 @@ struct Result {
     a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
     a->Visit("masses", &masses_out, Field().Desc("with stiffness or ratings"));
     a->Visit("joint_model", &joint_model,
-             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema({{"type", "object"}}));
+             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelSchema()));
     a->Visit("lubrication", &lubrication_json,
              Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationSchema()));
     a->Visit("torsional_dynamics", &torsional_dynamics,
@@ -748,6 +748,8 @@ struct Result {
   static nlohmann::ordered_json OutputBearingSchema();
   static nlohmann::ordered_json LubricationSchema();
   static nlohmann::ordered_json TorsionalDynamicsSchema();
+  /// "joint_model" (its tilt keys from AddJointTilt, shared with lcr_analysis).
+  static nlohmann::ordered_json JointModelSchema();
 
   // Not in result.json: the model's numbers.
   /// Per angle (meshes) and over the cycle, at crank_angles_rad: the study's angles, or their
