@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <map>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -295,29 +297,7 @@ Study Parse(const Node& root) {
 
 namespace {
 
-// result.json's "grinding" and grinding_wheel.csv (model/cycloid/form_grinding.h).
-nlohmann::json GrindingJson(const Study& s) {
-  const cycloid::FormWheel& w = *s.grinding;
-  nlohmann::json index = nlohmann::json::array();
-  for (int k = 0; k < s.drive.teeth; ++k) index.push_back(360.0 * k / s.drive.teeth);
-  return {{"file", "grinding_wheel.csv"},
-          {"wheel_radius_mm", w.wheel_radius_mm},
-          {"centre_distance_mm", w.centre_distance_mm},
-          {"wheel_width_mm", w.width_mm},
-          {"edge_radius_mm", w.edge_radius_mm},
-          {"least_radius_mm", w.least_radius_mm},
-          {"root_x_mm", w.root_x_mm},
-          {"tip_x_mm", w.tip_x_mm},
-          {"index_deg", w.index_rad * 180.0 / kPi},
-          {"index_angles_deg", index},
-          {"least_concave_radius_mm", w.least_concave_radius_mm},
-          {"residual_form_error_um", w.residual_form_error_mm * 1e3},
-          {"tolerance_um", s.grinding_tolerance_um},
-          {"points", w.y_mm.size()},
-          {"note", "one tooth space per pass, traversed along the disc's axis at the centre distance, then indexed; "
-                   "disc k of N is indexed from its phase -360 (k - 1)/(N teeth) deg (docs/parts.md)"}};
-}
-
+// grinding_wheel.csv (model/cycloid/form_grinding.h).
 std::string GrindingCsv(const Study& s) {
   const cycloid::FormWheel& w = *s.grinding;
   std::string out = "# form wheel for '" + s.name + "': axial profile r(y) (the wheel's radius at axial position y), "
@@ -1259,78 +1239,11 @@ Result Run(const Study& s, const RunContext& ctx) {
                            "% of the largest Monte-Carlo peak-to-peak (the contact passes to other pins within "
                            "the bands): use the Monte-Carlo numbers");
   }
+  FillResult(s, r);
   return r;
 }
 
 namespace {
-
-// The unloaded TCA only (analysis.evaluate ["unloaded"]).
-// The tooth's and the pins' closed-form geometric limits (model/cycloid/geometry_limits.h, eqs.
-// C3/C4 and the pin pitch): exact, no grid; the verdict's defaults (no undercut, no overlap).
-void AddMeasured(const Study& s, const Result& r, nlohmann::json& j) {
-  if (s.inspection) {
-    j["inspection"] = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
-                                     s.geometry.write);
-    if (s.geometry.write) j["inspection"]["datum"] = "each disc's centre (its bore); each file's header states its frame";
-  }
-  if (!r.measured.is_null()) j["measured"] = r.measured;
-}
-
-void AddGeometryLimits(const Study& s, nlohmann::json& j) {
-  j["min_profile_radius_mm"] = Finite(cycloid::MinConvexProfileRadius(s.drive), "profile radius");
-  j["pin_gap_mm"] = Finite(cycloid::PinGapMargin(s.drive), "pin gap");
-}
-
-// "transmission_error" (with "tolerances"): the shared statistics (studies/tolerance_input.h) and
-// the cycloid's own keys.
-void AddTransmissionError(const Study& s, const Result& r, nlohmann::json& out) {
-  if (!r.transmission_error) return;
-  const cycloid::TransmissionErrorResult& te = *r.transmission_error;
-  nlohmann::json j = ToleranceStatisticsJson(te, s.tolerances->seed);
-  j["model"] = "kinematic (unloaded, rigid): the first ring pin to touch the disc on the loaded flank and the first "
-               "output pin to touch its hole set the output angle; TE = output angle minus the nominal drive's at the "
-               "same crank angle";
-  j["output_mechanism"] = s.output ? "pins in holes with clearance (first contact)"
-                                   : "rigid (no pin and hole radii given: no play, no output tolerances)";
-  j["distribution"] = "each deviation uniform in its ± band (a diameter's band is half on the radius); position "
-                      "bands apply to the radial and the tangential component each; linear: exact derivatives "
-                      "(ceres::Jet) of the pair and pin in contact";
-  j["angle_steps"] = te.crank_angle_rad.size();
-  j["crank_span_deg"] = 360.0 * s.drive.teeth;
-  j["parameters"] = te.parameters;
-  j["jammed_samples"] = te.jammed_samples;
-  j["backlash_arcmin"] = te.backlash_arcmin;
-  j["backlash_p99_arcmin"] = te.backlash_p99_arcmin;
-  j["backlash_nominal_arcmin"] = te.backlash_nominal_arcmin;
-  j["peak_to_peak"] = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are peak-to-peak "
-                      "over one output revolution; backlash: output angle forward minus reverse (both flanks, rigid), "
-                      "the largest over the revolution";
-  out["transmission_error"] = j;
-}
-
-nlohmann::json UnloadedJson(const Study& s, const Result& r) {
-  nlohmann::json per_angle = nlohmann::json::array();
-  double lo = 0, hi = 0;
-  for (size_t k = 0; k < r.unloaded_te_arcsec.size(); ++k) {
-    const double te = Finite(r.unloaded_te_arcsec[k], "ute");
-    lo = k == 0 ? te : std::min(lo, te);
-    hi = k == 0 ? te : std::max(hi, te);
-    per_angle.push_back({{"crank_angle_deg", s.crank_angles_rad[k] * 180.0 / kPi}, {"unloaded_te_arcsec", te}});
-  }
-  nlohmann::json j = {{"study", "cycloid_ltca"},
-                      {"name", s.name},
-                      {"evaluated", {"unloaded"}},
-                      {"unloaded_te_peak_to_peak_arcsec", hi - lo},
-                      {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
-                      {"per_angle", per_angle}};
-  AddGeometryLimits(s, j);
-  j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
-  if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
-  if (s.grinding) j["grinding"] = GrindingJson(s);
-  AddTransmissionError(s, r, j);
-  AddMeasured(s, r, j);
-  return j;
-}
 
 void AddToothDrawing(const Study& s, const Result& r, Outputs& out) {
   Drawing drawing;
@@ -1415,7 +1328,7 @@ void WriteToleranceFiles(const Result& r, Outputs& out) {
 }
 
 void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", UnloadedJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   std::vector<double> col_angle;
   for (double a : s.crank_angles_rad) col_angle.push_back(a * 180.0 / kPi);
   Table table;
@@ -1433,40 +1346,109 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 
+// The tooth's and the pins' closed-form geometric limits (model/cycloid/geometry_limits.h, eqs.
+// C3/C4 and the pin pitch): exact, no grid; the verdict's defaults (no undercut, no overlap). Then
+// the blocks both stages write: geometry files, parts, grinding, the transmission error from the
+// tolerances, inspection and the measured disc.
+void FillCommon(const Study& s, Result& r) {
+  r.min_profile_radius_mm = Finite(cycloid::MinConvexProfileRadius(s.drive), "profile radius");
+  r.pin_gap_mm = Finite(cycloid::PinGapMargin(s.drive), "pin gap");
+  r.geometry_files = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
+  if (!r.parts.parts.empty()) r.parts_json = PartsJson(r.parts, s.geometry);
+  if (s.grinding) {
+    const cycloid::FormWheel& w = *s.grinding;
+    Result::GrindingOut g;
+    for (int k = 0; k < s.drive.teeth; ++k) g.index_angles_deg.push_back(360.0 * k / s.drive.teeth);
+    g.file = "grinding_wheel.csv";
+    g.wheel_radius_mm = w.wheel_radius_mm;
+    g.centre_distance_mm = w.centre_distance_mm;
+    g.wheel_width_mm = w.width_mm;
+    g.edge_radius_mm = w.edge_radius_mm;
+    g.least_radius_mm = w.least_radius_mm;
+    g.root_x_mm = w.root_x_mm;
+    g.tip_x_mm = w.tip_x_mm;
+    g.index_deg = w.index_rad * 180.0 / kPi;
+    g.least_concave_radius_mm = w.least_concave_radius_mm;
+    g.residual_form_error_um = w.residual_form_error_mm * 1e3;
+    g.tolerance_um = s.grinding_tolerance_um;
+    g.points = int(w.y_mm.size());
+    g.note = "one tooth space per pass, traversed along the disc's axis at the centre distance, then indexed; "
+             "disc k of N is indexed from its phase -360 (k - 1)/(N teeth) deg (docs/parts.md)";
+    r.grinding = g;
+  }
+  // "transmission_error" (with "tolerances"): the shared statistics (studies/tolerance_input.h) and
+  // the cycloid's own keys.
+  if (r.transmission_error) {
+    const cycloid::TransmissionErrorResult& te = *r.transmission_error;
+    nlohmann::json j = ToleranceStatisticsJson(te, s.tolerances->seed);
+    j["model"] = "kinematic (unloaded, rigid): the first ring pin to touch the disc on the loaded flank and the first "
+                 "output pin to touch its hole set the output angle; TE = output angle minus the nominal drive's at "
+                 "the same crank angle";
+    j["output_mechanism"] = s.output ? "pins in holes with clearance (first contact)"
+                                     : "rigid (no pin and hole radii given: no play, no output tolerances)";
+    j["distribution"] = "each deviation uniform in its ± band (a diameter's band is half on the radius); position "
+                        "bands apply to the radial and the tangential component each; linear: exact derivatives "
+                        "(ceres::Jet) of the pair and pin in contact";
+    j["angle_steps"] = te.crank_angle_rad.size();
+    j["crank_span_deg"] = 360.0 * s.drive.teeth;
+    j["parameters"] = te.parameters;
+    j["jammed_samples"] = te.jammed_samples;
+    j["backlash_arcmin"] = te.backlash_arcmin;
+    j["backlash_p99_arcmin"] = te.backlash_p99_arcmin;
+    j["backlash_nominal_arcmin"] = te.backlash_nominal_arcmin;
+    j["peak_to_peak"] = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are peak-to-peak "
+                        "over one output revolution; backlash: output angle forward minus reverse (both flanks, "
+                        "rigid), the largest over the revolution";
+    r.transmission_error_json = j;
+  }
+  if (s.inspection) {
+    nlohmann::json j = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
+                                      s.geometry.write);
+    if (s.geometry.write) j["datum"] = "each disc's centre (its bore); each file's header states its frame";
+    r.inspection = j;
+  }
+  if (!r.measured.is_null()) r.measured_json = r.measured;
+}
+
 // result.json's catalogue numbers (docs/ratings.md): rated_torque_Nm, peak_torque_Nm,
 // momentary_torque_Nm and "ratings"; "output_bearing"; "stiffness_segments"; "masses"; and
 // "joint_model", the parameters `camopt export` turns into a simulator's joint.
-void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
-  if (s.ratings)
+void FillCatalogue(const Study& s, Result& r) {
+  if (s.ratings) {
+    nlohmann::json j = nlohmann::json::object();
     AddRatingsJson(s.ratings->in, r.ratings, r.ratings_failed,
                    double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), s.estimate_error, j);
-  if (r.output_bearing) j["output_bearing"] = OutputBearingJson(*s.output_bearing, *r.output_bearing);
-  else if (s.output_bearing) j["output_bearing"] = {{"error", r.output_bearing_failed}};
+    r.rated_torque_Nm = j.at("rated_torque_Nm");
+    r.peak_torque_Nm = j.at("peak_torque_Nm");
+    r.momentary_torque_Nm = j.at("momentary_torque_Nm");
+    r.ratings_json = j.at("ratings");
+  }
+  if (r.output_bearing) r.output_bearing_json = OutputBearingJson(*s.output_bearing, *r.output_bearing);
+  else if (s.output_bearing) r.output_bearing_json = nlohmann::json{{"error", r.output_bearing_failed}};
   const double arcmin = kArcminPerRad;
   if (r.segments) {
     const ThreeSegmentStiffness& g = *r.segments;
-    j["stiffness_segments"] = {
-        {"T1_Nm", s.segment_T1_Nm}, {"T2_Nm", s.segment_T2_Nm}, {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
-        {"K1_Nm_per_arcmin", Finite(g.k1_Nm_per_arcmin, "K1")},
-        {"K2_Nm_per_arcmin", Finite(g.k2_Nm_per_arcmin, "K2")},
-        {"K3_Nm_per_arcmin", Finite(g.k3_Nm_per_arcmin, "K3")},
-        {"definitions", "loading branch from 0+ (after the backlash): K1 = T1 / (angle(T1) - angle(0+)), K2 = (T2 - "
-                        "T1) / (angle(T2) - angle(T1)), K3 = (T_r - T2) / (angle(T_r) - angle(T2))"}};
-    j["stiffness"]["lost_motion_percent"] = s.lost_motion_percent;
-    j["stiffness"]["lost_motion_at_percent_arcmin"] = Finite(r.lost_motion_user_rad * arcmin, "lost motion");
+    Result::StiffnessSegmentsOut o;
+    o.T1_Nm = s.segment_T1_Nm;
+    o.T2_Nm = s.segment_T2_Nm;
+    o.rated_torque_Nm = s.stiffness->rated_torque_Nm;
+    o.K1_Nm_per_arcmin = Finite(g.k1_Nm_per_arcmin, "K1");
+    o.K2_Nm_per_arcmin = Finite(g.k2_Nm_per_arcmin, "K2");
+    o.K3_Nm_per_arcmin = Finite(g.k3_Nm_per_arcmin, "K3");
+    o.definitions = "loading branch from 0+ (after the backlash): K1 = T1 / (angle(T1) - angle(0+)), K2 = (T2 - "
+                    "T1) / (angle(T2) - angle(T1)), K3 = (T_r - T2) / (angle(T_r) - angle(T2))";
+    r.stiffness_segments = o;
+    // r.segments comes with r.torsion (RunSegments), so "stiffness" is there.
+    if (r.stiffness) {
+      r.stiffness->lost_motion_percent = s.lost_motion_percent;
+      r.stiffness->lost_motion_at_percent_arcmin = Finite(r.lost_motion_user_rad * arcmin, "lost motion");
+    }
   }
   if (s.stiffness || s.ratings) {
     const cycloid_common::PartMasses& m = r.masses;
-    j["masses"] = {{"density_kg_m3", s.density_kg_m3},
-                   {"disc_kg", m.disc_kg},
-                   {"disc_inertia_kgm2", m.disc_inertia_kgm2},
-                   {"ring_pins_kg", m.ring_pins_kg},
-                   {"output_pins_kg", m.output_pins_kg},
-                   {"total_kg", m.total_kg},
-                   {"outer_diameter_mm", m.outer_diameter_mm},
-                   {"width_mm", m.width_mm},
-                   {"reflected_inertia_kgm2", m.reflected_inertia_kgm2},
-                   {"includes", m.includes}};
+    r.masses_out = Result::MassesOut{s.density_kg_m3, m.disc_kg, m.disc_inertia_kgm2, m.ring_pins_kg,
+                                     m.output_pins_kg, m.total_kg, m.outer_diameter_mm, m.width_mm,
+                                     m.reflected_inertia_kgm2, m.includes};
   }
   if (r.torsion && r.segments) {
     const cycloid::TorsionCurve& c = *r.torsion;
@@ -1487,7 +1469,7 @@ void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
                         {"efficiency_backward", l.efficiency},
                         {"friction_torque_input_Nm", l.no_load_running_torque_Nm}});
     }
-    j["joint_model"] = {
+    nlohmann::json joint = {
         {"ratio", double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth)},
         {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
         {"stiffness_Nm_per_rad", Finite(c.stiffness_Nmm_per_rad / 1000.0, "stiffness")},
@@ -1512,167 +1494,247 @@ void AddCatalogue(const Study& s, const Result& r, nlohmann::json& j) {
                                         : "not modelled without a lubricant (frictionless)"},
         {"efficiency", efficiency ? nlohmann::json(*efficiency) : nlohmann::json(nullptr)},
         {"loss_table", losses}};
-    AddJointTilt(s.output_bearing, j["joint_model"]);
+    AddJointTilt(s.output_bearing, joint);
+    r.joint_model = joint;
   }
 }
 
-}  // namespace
-
-nlohmann::json ToJson(const Study& s, const Result& r) {
-  if (!s.loaded) return UnloadedJson(s, r);
+// The loaded stage's per-angle table and headlines.
+void FillLoaded(const Study& s, Result& r) {
   const CycleResult& cycle = r.cycle;
   const std::vector<double>& angles = r.crank_angles_rad;
-  nlohmann::json per_angle = nlohmann::json::array();
+  r.per_angle.clear();
   for (size_t k = 0; k < cycle.meshes.size(); ++k) {
     const MeshLoad& m = cycle.meshes[k];
-    nlohmann::json loads = nlohmann::json::array();
+    std::vector<Result::PairLoadOut> loads;
     for (const PairLoad& p : m.pairs)
-      loads.push_back({{"roller", p.roller + 1},
-                       {"load_N", Finite(p.load_N, "load")},
-                       {"max_contact_stress_MPa", Finite(p.max_pressure_MPa, "pressure")},
-                       {"approach_um", Finite(p.approach_mm * 1e3, "approach")},
-                       {"arm_mm", p.arm_mm}});
-    per_angle.push_back({{"crank_angle_deg", angles[k] * 180.0 / kPi},
-                         {"max_contact_stress_MPa", Finite(m.max_pressure_MPa, "max stress")},
-                         {"pairs_in_contact", m.pairs_in_contact},
-                         {"lte_arcsec", Finite(cycle.lte_arcsec[k], "lte")},
-                         {"unloaded_te_arcsec", Finite(m.unloaded_rotation_rad * kArcsecPerRad, "ute")},
-                         {"gear_ratio", Finite(cycle.gear_ratio.at(k), "gear ratio")},
-                         {"converged", m.converged},
-                         {"loads", loads}});
+      loads.push_back({p.roller + 1, Finite(p.load_N, "load"), Finite(p.max_pressure_MPa, "pressure"),
+                       Finite(p.approach_mm * 1e3, "approach"), p.arm_mm});
+    Result::PerAngle a;
+    a.crank_angle_deg = angles[k] * 180.0 / kPi;
+    a.max_contact_stress_MPa = Finite(m.max_pressure_MPa, "max stress");
+    a.pairs_in_contact = m.pairs_in_contact;
+    a.lte_arcsec = Finite(cycle.lte_arcsec[k], "lte");
+    a.unloaded_te_arcsec = Finite(m.unloaded_rotation_rad * kArcsecPerRad, "ute");
+    a.gear_ratio = Finite(cycle.gear_ratio.at(k), "gear ratio");
+    a.converged = m.converged;
+    a.loads = std::move(loads);
+    r.per_angle.push_back(std::move(a));
   }
-  nlohmann::json errors = nlohmann::json::object(), by_grid = nlohmann::json::object(),
-                 by_crank = nlohmann::json::object();
+  std::map<std::string, double> errors, by_grid, by_crank;
   for (const auto& [k, v] : r.estimated_error) errors[k] = Finite(v, "error");
   for (const auto& [k, v] : r.error_grid) by_grid[k] = Finite(v, "error");
   for (const auto& [k, v] : r.error_crank) by_crank[k] = Finite(v, "error");
-  nlohmann::json sources = nlohmann::json::object();
+  Result::ErrorSources sources;
   if (s.estimate_error) {
-    sources["grid"] = {{"coarse_grid", {r.coarse_grid[0], r.coarse_grid[1]}},
-                       {"angles", s.crank_angles_rad.size()},
-                       {"error", by_grid}};
+    sources.grid = Result::GridErrorSource{r.coarse_grid, int(s.crank_angles_rad.size()), by_grid};
     if (r.crank_error_angles > 0)
-      sources["crank_angles"] = {{"coarse_angles", r.crank_error_angles},
-                                 {"refined_angles", r.crank_angles_rad.size()},
-                                 {"method", "half-step-shifted set; error |N - 2N| of the 2N value"},
-                                 {"error", by_crank}};
-    sources["warning_share"] = kErrorShare;
+      sources.crank_angles = Result::CrankErrorSource{r.crank_error_angles, int(r.crank_angles_rad.size()),
+                                                      "half-step-shifted set; error |N - 2N| of the 2N value", by_crank};
+    sources.warning_share = kErrorShare;
   }
-  nlohmann::json j = {{"study", "cycloid_ltca"},
-          {"name", s.name},
-          {"torque_Nm", s.torque_Nm},
-          {"max_contact_stress_MPa", Finite(cycle.max_pressure_MPa, "max stress")},
-          {"max_contact_stress_crank_angle_deg", angles[cycle.max_pressure_index] * 180.0 / kPi},
-          {"lte_peak_to_peak_arcsec", Finite(cycle.lte_peak_to_peak_arcsec, "lte p2p")},
-          {"lte_mean_abs_arcsec", Finite(cycle.lte_mean_abs_arcsec, "lte mean")},
-          {"gear_ratio_nominal", double(s.drive.teeth)},
-          {"gear_ratio_peak_to_peak", Finite(cycle.gear_ratio_peak_to_peak, "gr p2p")},
-          {"max_pairs_in_contact", cycle.max_pairs_in_contact},
-          {"max_pair_load_N", Finite(cycle.max_pair_load_N, "max pair load")},
-          {"crank_angles_per_mesh_period", s.crank_angles_per_mesh_period},
-          {"crank_angles_used", angles.size()},
-          {"crank_angles_refined", r.crank_angles_rad.size() > s.crank_angles_rad.size()},
-          {"axial_cell_mm", s.drive.face_width_mm / s.options.axial_cells},
-          {"grid", {s.options.profile_cells, s.options.axial_cells}},
-          {"composite_modulus_MPa", r.composite_modulus_MPa},
-          {"contact_solves", cycle.contact_solves},
-          {"converged", cycle.converged},
-          {"warning", r.warning},
-          {"estimated_error", errors},
-          {"estimated_error_sources", sources},
-          {"warnings", r.warnings},
-          {"per_angle", per_angle}};
-  AddGeometryLimits(s, j);
-  j["geometry_files"] = GeometryFilesJson(s.geometry, {{"tooth", &r.tooth_files}});
-  if (!r.parts.parts.empty()) j["parts"] = PartsJson(r.parts, s.geometry);
-  if (s.grinding) j["grinding"] = GrindingJson(s);
-  AddTransmissionError(s, r, j);
-  AddMeasured(s, r, j);
-  if (r.life) j["life"] = cycloid_common::LifeJson(*s.life, *r.life);
+  r.torque_Nm = s.torque_Nm;
+  r.max_contact_stress_MPa = Finite(cycle.max_pressure_MPa, "max stress");
+  r.max_contact_stress_crank_angle_deg = angles[cycle.max_pressure_index] * 180.0 / kPi;
+  r.lte_peak_to_peak_arcsec = Finite(cycle.lte_peak_to_peak_arcsec, "lte p2p");
+  r.lte_mean_abs_arcsec = Finite(cycle.lte_mean_abs_arcsec, "lte mean");
+  r.gear_ratio_nominal = double(s.drive.teeth);
+  r.gear_ratio_peak_to_peak = Finite(cycle.gear_ratio_peak_to_peak, "gr p2p");
+  r.max_pairs_in_contact = cycle.max_pairs_in_contact;
+  r.max_pair_load_N = Finite(cycle.max_pair_load_N, "max pair load");
+  r.crank_angles_per_mesh_period = s.crank_angles_per_mesh_period;
+  r.crank_angles_used = int(angles.size());
+  r.crank_angles_refined = r.crank_angles_rad.size() > s.crank_angles_rad.size();
+  r.axial_cell_mm = s.drive.face_width_mm / s.options.axial_cells;
+  r.grid = std::array<int, 2>{s.options.profile_cells, s.options.axial_cells};
+  r.composite_modulus_out = r.composite_modulus_MPa;
+  r.contact_solves = cycle.contact_solves;
+  r.converged = cycle.converged;
+  r.warning_out = r.warning;
+  r.error_values = errors;
+  r.estimated_error_sources = sources;
+  r.warnings_out = r.warnings;
+  FillCommon(s, r);
+  if (r.life) r.life_json = cycloid_common::LifeJson(*s.life, *r.life);
   if (s.discs > 1) {
-    j["discs"] = s.discs;
-    j["disc_torque_Nm"] = s.disc_torque_Nmm() / 1000.0;
+    r.discs = s.discs;
+    r.disc_torque_Nm = s.disc_torque_Nmm() / 1000.0;
   }
-  if (s.stiffness && !r.torsion)
-    for (const char* key : {"torsional_stiffness_Nm_per_arcmin", "lost_motion_arcmin", "backlash_arcmin"}) j[key] = nullptr;
+  const double nan = std::numeric_limits<double>::quiet_NaN();  // null in result.json
+  if (s.stiffness && !r.torsion) r.torsional_stiffness_Nm_per_arcmin = r.lost_motion_arcmin = r.backlash_arcmin = nan;
   if (s.output && !r.output_failed.empty()) {
-    for (const char* key : {"max_ring_pin_force_N", "max_output_pin_force_N", "eccentric_bearing_load_N",
-                            "output_pin_bending_stress_MPa", "output_pin_contact_pressure_MPa"})
-      j[key] = nullptr;
-    j["output_mechanism"] = {{"error", r.output_failed}};
+    r.max_ring_pin_force_N = r.max_output_pin_force_out = r.eccentric_bearing_load_N =
+        r.output_pin_bending_stress_MPa = r.output_pin_contact_pressure_MPa = nan;
+    r.output_mechanism = Result::OutputMechanismOut{};
+    r.output_mechanism->error = r.output_failed;
   }
   if (r.torsion) {
     const cycloid::TorsionCurve& c = *r.torsion;
     const double arcmin = 60.0 * 180.0 / kPi;
-    j["torsional_stiffness_Nm_per_arcmin"] = Finite(c.stiffness_Nmm_per_rad / 1000.0 / arcmin, "stiffness");
-    j["lost_motion_arcmin"] = Finite(c.lost_motion_rad * arcmin, "lost motion");
-    j["backlash_arcmin"] = Finite(c.backlash_rad * arcmin, "backlash");
-    j["stiffness"] = {
-        {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
-        {"crank_angle_deg", s.stiffness->crank_angle_deg},
-        {"stiffness_positive_Nm_per_arcmin", c.stiffness_positive_Nmm_per_rad / 1000.0 / arcmin},
-        {"stiffness_negative_Nm_per_arcmin", c.stiffness_negative_Nmm_per_rad / 1000.0 / arcmin},
-        {"ring_pins_share", c.ring_share},
-        {"output_pins_share", c.output_pins_share},
-        {"output_pins", s.output ? "compliant (output_mechanism)" : "rigid (no pin and hole radii given)"},
-        {"contact_solves", c.contact_solves},
-        {"hysteresis_width_arcmin", 0.0},
-        {"definitions",
-         "input held at crank_angle_deg; output angle = disc against ring (LTCA: beta0 + deflection) + output "
-         "against disc (output pins); stiffness: mean of the two directions' slopes between 50% and 100% of the "
-         "rated torque; lost motion: angle(+3%) - angle(-3%); backlash: angle(0+) - angle(0-); frictionless: "
-         "loading and unloading coincide (hysteresis width 0)"}};
+    r.torsional_stiffness_Nm_per_arcmin = Finite(c.stiffness_Nmm_per_rad / 1000.0 / arcmin, "stiffness");
+    r.lost_motion_arcmin = Finite(c.lost_motion_rad * arcmin, "lost motion");
+    r.backlash_arcmin = Finite(c.backlash_rad * arcmin, "backlash");
+    Result::StiffnessOut o;
+    o.rated_torque_Nm = s.stiffness->rated_torque_Nm;
+    o.crank_angle_deg = s.stiffness->crank_angle_deg;
+    o.stiffness_positive_Nm_per_arcmin = c.stiffness_positive_Nmm_per_rad / 1000.0 / arcmin;
+    o.stiffness_negative_Nm_per_arcmin = c.stiffness_negative_Nmm_per_rad / 1000.0 / arcmin;
+    o.ring_pins_share = c.ring_share;
+    o.output_pins_share = c.output_pins_share;
+    o.output_pins = s.output ? "compliant (output_mechanism)" : "rigid (no pin and hole radii given)";
+    o.contact_solves = c.contact_solves;
+    o.hysteresis_width_arcmin = 0.0;
+    o.definitions =
+        "input held at crank_angle_deg; output angle = disc against ring (LTCA: beta0 + deflection) + output "
+        "against disc (output pins); stiffness: mean of the two directions' slopes between 50% and 100% of the "
+        "rated torque; lost motion: angle(+3%) - angle(-3%); backlash: angle(0+) - angle(0-); frictionless: "
+        "loading and unloading coincide (hysteresis width 0)";
+    r.stiffness = o;
   }
   if (s.output && r.output_failed.empty()) {
     const OutputSpec& o = *s.output;
-    j["max_ring_pin_force_N"] = Finite(cycle.max_pair_load_N, "max ring-pin force");
-    j["max_output_pin_force_N"] = Finite(r.max_output_pin_force_N, "max output-pin force");
-    j["eccentric_bearing_load_N"] = Finite(r.max_bearing_load_N, "eccentric bearing load");
-    j["output_pin_bending_stress_MPa"] = Finite(r.max_bending_stress_MPa, "pin bending stress");
-    j["output_pin_contact_pressure_MPa"] = Finite(r.max_contact_pressure_MPa, "pin contact pressure");
+    r.max_ring_pin_force_N = Finite(cycle.max_pair_load_N, "max ring-pin force");
+    r.max_output_pin_force_out = Finite(r.max_output_pin_force_N, "max output-pin force");
+    r.eccentric_bearing_load_N = Finite(r.max_bearing_load_N, "eccentric bearing load");
+    r.output_pin_bending_stress_MPa = Finite(r.max_bending_stress_MPa, "pin bending stress");
+    r.output_pin_contact_pressure_MPa = Finite(r.max_contact_pressure_MPa, "pin contact pressure");
     const double rc = o.pins.contact_radius_mm();
-    nlohmann::json om = {
-        {"pins", o.pins.pins},
-        {"pin_circle_radius_mm", o.pins.pin_circle_radius_mm},
-        {"pin_radius_mm", o.pins.pin_radius_mm},
-        {"hole_radius_mm", o.pins.hole_radius_mm},
-        {"contact_radius_mm", rc},
-        {"clearance_mm", o.pins.hole_radius_mm - rc - s.drive.eccentricity_mm},
-        {"pin_support", o.support == cycloid::PinSupport::kCantilever ? "cantilever" : "both_ends"},
-        {"pin_span_mm", o.span_mm},
-        {"disc_planes_mm", cycloid::DiscPlanesOnPin(o.support, o.span_mm, s.discs, s.drive.face_width_mm,
-                                                    s.disc_spacing_mm)},
-        {"disc_spacing_mm", s.disc_spacing_mm},
-        {"discs", s.discs},
-        {"disc_torque_Nm", s.disc_torque_Nmm() / 1000.0},
-        {"load_period_crank_deg", r.output_angles_rad.size() * (r.output_angles_rad.size() > 1
-                                      ? (r.output_angles_rad[1] - r.output_angles_rad[0]) * 180.0 / kPi : 0.0)},
-        {"samples", r.output_angles_rad.size()},
-        {"max_net_crank_force_N", r.max_net_crank_force_N},
-        {"max_crank_couple_Nmm", r.max_couple_Nmm},
-        {"max_moment_residual_relative", r.max_moment_residual},
-        {"model",
-         "pins in the disc's holes with clearance (hole - contact radius - e) and Palmgren line-contact compliance, "
-         "exact geometry, solved for the disc's rotation against the output (sum of the pins' moments = disc torque); "
-         "eccentric bearing load from the disc's force balance (ring-pin forces along the LTCA's contact normals + "
-         "output-pin forces); pin bending 32 M / (pi d^3) as a beam (Roark, Table 8.1); hole-pin pressure: internal "
-         "Hertz line contact, 1/R' = 1/r_contact - 1/r_hole"},
-        {"disc_split",
-         "each disc carries the output torque / discs (identical discs, equal split assumed); disc k runs at crank "
-         "angle phi + 360 k / discs deg"}};
-    if (o.pins.roller_radius_mm > 0) om["roller_radius_mm"] = o.pins.roller_radius_mm;
-    j["output_mechanism"] = om;
+    Result::OutputMechanismOut om;
+    om.pins = o.pins.pins;
+    om.pin_circle_radius_mm = o.pins.pin_circle_radius_mm;
+    om.pin_radius_mm = o.pins.pin_radius_mm;
+    om.hole_radius_mm = o.pins.hole_radius_mm;
+    om.contact_radius_mm = rc;
+    om.clearance_mm = o.pins.hole_radius_mm - rc - s.drive.eccentricity_mm;
+    om.pin_support = o.support == cycloid::PinSupport::kCantilever ? "cantilever" : "both_ends";
+    om.pin_span_mm = o.span_mm;
+    om.disc_planes_mm =
+        cycloid::DiscPlanesOnPin(o.support, o.span_mm, s.discs, s.drive.face_width_mm, s.disc_spacing_mm);
+    om.disc_spacing_mm = s.disc_spacing_mm;
+    om.discs = s.discs;
+    om.disc_torque_Nm = s.disc_torque_Nmm() / 1000.0;
+    om.load_period_crank_deg = r.output_angles_rad.size() * (r.output_angles_rad.size() > 1
+                                   ? (r.output_angles_rad[1] - r.output_angles_rad[0]) * 180.0 / kPi : 0.0);
+    om.samples = int(r.output_angles_rad.size());
+    om.max_net_crank_force_N = r.max_net_crank_force_N;
+    om.max_crank_couple_Nmm = r.max_couple_Nmm;
+    om.max_moment_residual_relative = r.max_moment_residual;
+    om.model =
+        "pins in the disc's holes with clearance (hole - contact radius - e) and Palmgren line-contact compliance, "
+        "exact geometry, solved for the disc's rotation against the output (sum of the pins' moments = disc torque); "
+        "eccentric bearing load from the disc's force balance (ring-pin forces along the LTCA's contact normals + "
+        "output-pin forces); pin bending 32 M / (pi d^3) as a beam (Roark, Table 8.1); hole-pin pressure: internal "
+        "Hertz line contact, 1/R' = 1/r_contact - 1/r_hole";
+    om.disc_split =
+        "each disc carries the output torque / discs (identical discs, equal split assumed); disc k runs at crank "
+        "angle phi + 360 k / discs deg";
+    if (o.pins.roller_radius_mm > 0) om.roller_radius_mm = o.pins.roller_radius_mm;
+    r.output_mechanism = om;
   }
-  AddCatalogue(s, r, j);
-  if (r.lubrication) j["lubrication"] = WriteJson(*r.lubrication);
-  else if (s.lubrication) j["lubrication"] = {{"error", r.lubrication_error}};
+  FillCatalogue(s, r);
+  if (r.lubrication) r.lubrication_json = nlohmann::json(WriteJson(*r.lubrication));
+  else if (s.lubrication) r.lubrication_json = nlohmann::json{{"error", r.lubrication_error}};
   // With a lubricant the drive has an efficiency: the life block points to it instead of calling
   // the model frictionless.
   if (r.life && s.lubrication)
-    j["life"]["efficiency"] = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
-  if (r.torsional && s.torsional) j["torsional_dynamics"] = TorsionalDynamicsJson(*s.torsional, *r.torsional);
-  else if (s.torsional) j["torsional_dynamics"] = {{"error", r.torsional_failed}};
-  return j;
+    (*r.life_json)["efficiency"] = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
+  if (r.torsional && s.torsional) r.torsional_dynamics = TorsionalDynamicsJson(*s.torsional, *r.torsional);
+  else if (s.torsional) r.torsional_dynamics = nlohmann::json{{"error", r.torsional_failed}};
+}
+
+// The unloaded TCA only (analysis.evaluate ["unloaded"]).
+void FillUnloaded(const Study& s, Result& r) {
+  r.per_angle.clear();
+  double lo = 0, hi = 0;
+  for (size_t k = 0; k < r.unloaded_te_arcsec.size(); ++k) {
+    const double te = Finite(r.unloaded_te_arcsec[k], "ute");
+    lo = k == 0 ? te : std::min(lo, te);
+    hi = k == 0 ? te : std::max(hi, te);
+    Result::PerAngle a;
+    a.crank_angle_deg = s.crank_angles_rad[k] * 180.0 / kPi;
+    a.unloaded_te_arcsec = te;
+    r.per_angle.push_back(std::move(a));
+  }
+  r.evaluated = std::vector<std::string>{"unloaded"};
+  r.unloaded_te_peak_to_peak_arcsec = hi - lo;
+  r.crank_angles_per_mesh_period = s.crank_angles_per_mesh_period;
+  FillCommon(s, r);
+}
+
+}  // namespace
+
+void FillResult(const Study& s, Result& r) {
+  r.name = s.name;
+  if (s.loaded) FillLoaded(s, r);
+  else FillUnloaded(s, r);
+}
+
+nlohmann::ordered_json Result::TransmissionErrorSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  for (const char* k : {"linear_worst_case_arcsec", "monte_carlo_max_arcsec", "monte_carlo_p99_arcsec"})
+    p[k] = {{"description", "peak-to-peak over one output revolution [arcsec]"}};
+  p["backlash_arcmin"] = {{"description", "the largest over the revolution [arcmin]"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::RatingsSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson error = ojson::object();
+  for (const char* k : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"})
+    error[k] = {{"description", "[N·m]"}};
+  ojson p = ojson::object();
+  p["estimated_error"] = {{"type", {"object", "null"}}, {"properties", error}};
+  p["allowable_output_speed_rpm"] = {{"description", "[rpm]"}};
+  p["error"] = {{"type", "string"}, {"description", "why the ratings were not solved (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::OutputBearingSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["L10h"] = {{"description", "[h]"}};
+  p["static_safety"] = {{"description", "f_s"}};
+  p["error"] = {{"type", "string"}, {"description", "why the life was not computed (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::LubricationSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["efficiency"] = {{"description", "at the load's torque and speed"}};
+  p["power_loss_W"] = {{"type", "object"}, {"properties", {{"total", {{"description", "[W]"}}}}}};
+  p["power_loss_sampling_error_W"] = {{"description", "[W]"}};
+  p["oil_temperature_C"] = {{"description", "[°C]"}};
+  p["min_film_lambda"] = {{"type", "object"}, {"properties", {{"value", {{"description", "least film parameter λ"}}}}}};
+  p["no_load_running_torque_Nm"] = {{"description", "at the input [N·m]"}};
+  p["error"] = {{"type", "string"}, {"description", "why the losses were not computed (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::JointModelSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  for (const char* k : {"ratio", "rated_torque_Nm", "stiffness_Nm_per_rad", "stiffness_segments", "torsion_curve",
+                        "backlash_rad", "lost_motion_rad", "lost_motion_percent", "reflected_inertia_kgm2",
+                        "inertia_includes", "damping_Nms_per_rad", "damping_note", "friction_torque_Nm",
+                        "friction_note", "efficiency", "loss_table", "tilt_stiffness_Nm_per_rad", "tilt_note"})
+    p[k] = ojson::object();
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::TorsionalDynamicsSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["natural_frequencies_Hz"] = {{"type", "array"}, {"items", {{"description", "[Hz]"}}}};
+  p["mesh_stiffness_ripple_percent"] = {{"description", "[%]"}};
+  p["sweep_peak"] = {{"type", "object"},
+                     {"properties",
+                      {{"overload_factor", {{"description", "the dynamic overload factor at the sweep's peak"}}},
+                       {"overload_sampling_error", {{"description", "its sampling error"}}},
+                       {"input_speed_rpm", {{"description", "[rpm]"}}}}}};
+  p["error"] = {{"type", "string"}, {"description", "why the dynamics were not solved (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
 }
 
 namespace {
@@ -1761,7 +1823,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   const CycleResult& cycle = r.cycle;
   const int n1 = s.drive.rollers;
   const size_t n = r.crank_angles_rad.size();
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   if (!r.efficiency_map.empty()) WriteEfficiencyMap(r.efficiency_map, s.lubrication->common.map->torque_Nm, out);
 
   Table table;
@@ -1840,7 +1902,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
-CAMOPT_REGISTER_DECLARED_KIND("cycloid_ltca", Input, "camopt study: loaded tooth contact analysis of a cycloid drive: pin loads, contact pressure and transmission error");
+CAMOPT_REGISTER_KIND("cycloid_ltca", Input, Result, "camopt study: loaded tooth contact analysis of a cycloid drive: pin loads, contact pressure and transmission error");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -402,7 +403,355 @@ inline constexpr double kErrorShare = 0.05;
 inline constexpr double kLooseTolerance = 0.1;
 inline constexpr double kToleranceShare = 0.05;
 
+/// The run's answer: result.json as declared (`camopt schema cycloid_ltca --result`; the loaded
+/// stage's keys, or the unloaded stage's alone with analysis.evaluate ["unloaded"]), then the
+/// model's numbers the tables, plots and drawings are drawn from.
 struct Result {
+  /// One pin-tooth pair in contact at a crank angle (per_angle[i].loads).
+  struct PairLoadOut {
+    int roller = 0;
+    double load_N = 0, max_contact_stress_MPa = 0, approach_um = 0, arm_mm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("roller", &roller, Field().Desc("the ring pin, 1 … rollers"));
+      a->Visit("load_N", &load_N, Field().Unit("N"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa").Desc("the pair's peak pressure"));
+      a->Visit("approach_um", &approach_um, Field().Unit("µm").Desc("the pair's elastic approach"));
+      a->Visit("arm_mm", &arm_mm, Field().Unit("mm").Desc("the pair's lever arm l_i").NullWhenNotFinite());
+    }
+  };
+  /// One crank angle (per_angle[i]): the unloaded stage gives the angle and β0 alone.
+  struct PerAngle {
+    double crank_angle_deg = 0;
+    std::optional<double> max_contact_stress_MPa;
+    std::optional<int> pairs_in_contact;
+    std::optional<double> lte_arcsec;
+    double unloaded_te_arcsec = 0;
+    std::optional<double> gear_ratio;
+    std::optional<bool> converged;
+    std::optional<std::vector<PairLoadOut>> loads;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("crank_angle_deg", &crank_angle_deg, Field().Unit("deg"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+               Field().Unit("MPa").Desc("the largest over the pairs (loaded stage)"));
+      a->Visit("pairs_in_contact", &pairs_in_contact, Field().Desc("pairs carrying load (loaded stage)"));
+      a->Visit("lte_arcsec", &lte_arcsec, Field().Unit("arcsec").Desc("loaded transmission error (loaded stage)"));
+      a->Visit("unloaded_te_arcsec", &unloaded_te_arcsec, Field().Unit("arcsec").Desc("unloaded transmission error β0"));
+      a->Visit("gear_ratio", &gear_ratio, Field().Desc("instantaneous gear ratio (loaded stage)"));
+      a->Visit("converged", &converged, Field().Desc("the contact solve converged (loaded stage)"));
+      a->Visit("loads", &loads, Field().Desc("the pairs in contact (loaded stage)"));
+    }
+  };
+  /// estimated_error_sources.grid: the coarser grid's run.
+  struct GridErrorSource {
+    std::array<int, 2> coarse_grid{0, 0};
+    int angles = 0;
+    std::map<std::string, double> error;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("coarse_grid", &coarse_grid, Field().Desc("cells across the profile and along the face"));
+      a->Visit("angles", &angles, Field().Desc("the crank angles of the coarse run"));
+      a->Visit("error", &error, Field().Desc("the grid's part of each headline's error, by its name"));
+    }
+  };
+  /// estimated_error_sources.crank_angles: the crank angles' part (the half-step-shifted set).
+  struct CrankErrorSource {
+    int coarse_angles = 0, refined_angles = 0;
+    std::string method;
+    std::map<std::string, double> error;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("coarse_angles", &coarse_angles, Field());
+      a->Visit("refined_angles", &refined_angles, Field());
+      a->Visit("method", &method, Field());
+      a->Visit("error", &error, Field().Desc("the crank angles' part of each headline's error, by its name"));
+    }
+  };
+  /// estimated_error_sources (empty without analysis.estimate_error).
+  struct ErrorSources {
+    std::optional<GridErrorSource> grid;
+    std::optional<CrankErrorSource> crank_angles;
+    std::optional<double> warning_share;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("grid", &grid, Field());
+      a->Visit("crank_angles", &crank_angles, Field().Desc("when the crank angles were refined"));
+      a->Visit("warning_share", &warning_share, Field().Desc("a headline whose error exceeds this share of it warns"));
+    }
+  };
+  /// "grinding": the form wheel (model/cycloid/form_grinding.h).
+  struct GrindingOut {
+    std::string file, note;
+    double wheel_radius_mm = 0, centre_distance_mm = 0, wheel_width_mm = 0, edge_radius_mm = 0, least_radius_mm = 0,
+           root_x_mm = 0, tip_x_mm = 0, index_deg = 0, least_concave_radius_mm = 0, residual_form_error_um = 0,
+           tolerance_um = 0;
+    std::vector<double> index_angles_deg;
+    int points = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("file", &file, Field().Desc("the wheel's axial profile"));
+      a->Visit("wheel_radius_mm", &wheel_radius_mm, Field(n).Unit("mm"));
+      a->Visit("centre_distance_mm", &centre_distance_mm, Field(n).Unit("mm"));
+      a->Visit("wheel_width_mm", &wheel_width_mm, Field(n).Unit("mm"));
+      a->Visit("edge_radius_mm", &edge_radius_mm, Field(n).Unit("mm"));
+      a->Visit("least_radius_mm", &least_radius_mm, Field(n).Unit("mm"));
+      a->Visit("root_x_mm", &root_x_mm, Field(n).Unit("mm"));
+      a->Visit("tip_x_mm", &tip_x_mm, Field(n).Unit("mm"));
+      a->Visit("index_deg", &index_deg, Field(n).Unit("deg"));
+      a->Visit("index_angles_deg", &index_angles_deg, Field(n).Unit("deg").Desc("one pass per tooth space"));
+      a->Visit("least_concave_radius_mm", &least_concave_radius_mm, Field(n).Unit("mm"));
+      a->Visit("residual_form_error_um", &residual_form_error_um, Field(n).Unit("µm"));
+      a->Visit("tolerance_um", &tolerance_um, Field(n).Unit("µm"));
+      a->Visit("points", &points, Field().Desc("points of the wheel's dressing polygon"));
+      a->Visit("note", &note, Field());
+    }
+  };
+  /// "output_mechanism": the mechanism with clearance, or {"error": why} when not solved.
+  struct OutputMechanismOut {
+    std::optional<std::string> error, pin_support, model, disc_split;
+    std::optional<int> pins, discs, samples;
+    std::optional<double> pin_circle_radius_mm, pin_radius_mm, hole_radius_mm, contact_radius_mm, clearance_mm,
+        pin_span_mm, disc_spacing_mm, disc_torque_Nm, load_period_crank_deg, max_net_crank_force_N,
+        max_crank_couple_Nmm, max_moment_residual_relative, roller_radius_mm;
+    std::optional<std::vector<double>> disc_planes_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("error", &error, Field().Desc("why the mechanism was not solved (then the only key)"));
+      a->Visit("pins", &pins, Field());
+      a->Visit("pin_circle_radius_mm", &pin_circle_radius_mm, Field(n).Unit("mm"));
+      a->Visit("pin_radius_mm", &pin_radius_mm, Field(n).Unit("mm"));
+      a->Visit("hole_radius_mm", &hole_radius_mm, Field(n).Unit("mm"));
+      a->Visit("contact_radius_mm", &contact_radius_mm, Field(n).Unit("mm").Desc("the pin's, or its roller's"));
+      a->Visit("clearance_mm", &clearance_mm, Field(n).Unit("mm").Desc("hole - contact radius - e"));
+      a->Visit("pin_support", &pin_support, Field().OneOf({"cantilever", "both_ends"}));
+      a->Visit("pin_span_mm", &pin_span_mm, Field(n).Unit("mm"));
+      a->Visit("disc_planes_mm", &disc_planes_mm, Field(n).Unit("mm").Desc("the discs' mid-planes on the pin"));
+      a->Visit("disc_spacing_mm", &disc_spacing_mm, Field(n).Unit("mm"));
+      a->Visit("discs", &discs, Field());
+      a->Visit("disc_torque_Nm", &disc_torque_Nm, Field(n).Unit("N·m"));
+      a->Visit("load_period_crank_deg", &load_period_crank_deg, Field(n).Unit("deg"));
+      a->Visit("samples", &samples, Field().Desc("crank angles over the load period"));
+      a->Visit("max_net_crank_force_N", &max_net_crank_force_N, Field(n).Unit("N"));
+      a->Visit("max_crank_couple_Nmm", &max_crank_couple_Nmm, Field(n).Unit("N·mm"));
+      a->Visit("max_moment_residual_relative", &max_moment_residual_relative, Field(n));
+      a->Visit("model", &model, Field());
+      a->Visit("disc_split", &disc_split, Field());
+      a->Visit("roller_radius_mm", &roller_radius_mm, Field(n).Unit("mm").Desc("with rollers on the pins"));
+    }
+  };
+  /// "stiffness": the torsional curve, input held (model/cycloid/stiffness.h).
+  struct StiffnessOut {
+    double rated_torque_Nm = 0, crank_angle_deg = 0, stiffness_positive_Nm_per_arcmin = 0,
+           stiffness_negative_Nm_per_arcmin = 0, ring_pins_share = 0, output_pins_share = 0,
+           hysteresis_width_arcmin = 0;
+    std::string output_pins, definitions;
+    int contact_solves = 0;
+    std::optional<double> lost_motion_percent, lost_motion_at_percent_arcmin;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Unit("N·m"));
+      a->Visit("crank_angle_deg", &crank_angle_deg, Field().Unit("deg"));
+      a->Visit("stiffness_positive_Nm_per_arcmin", &stiffness_positive_Nm_per_arcmin, Field(n).Unit("N·m/arcmin"));
+      a->Visit("stiffness_negative_Nm_per_arcmin", &stiffness_negative_Nm_per_arcmin, Field(n).Unit("N·m/arcmin"));
+      a->Visit("ring_pins_share", &ring_pins_share, Field(n).Desc("the ring pins' share of the compliance"));
+      a->Visit("output_pins_share", &output_pins_share, Field(n).Desc("the output pins' share of the compliance"));
+      a->Visit("output_pins", &output_pins, Field());
+      a->Visit("contact_solves", &contact_solves, Field());
+      a->Visit("hysteresis_width_arcmin", &hysteresis_width_arcmin, Field().Unit("arcmin"));
+      a->Visit("definitions", &definitions, Field());
+      a->Visit("lost_motion_percent", &lost_motion_percent,
+               Field().Unit("%").Desc("stiffness.lost_motion_percent (with the three segments)"));
+      a->Visit("lost_motion_at_percent_arcmin", &lost_motion_at_percent_arcmin,
+               Field().Unit("arcmin").Desc("lost motion at ± lost_motion_percent of the rated torque"));
+    }
+  };
+  /// "stiffness_segments": the catalogue's three-segment stiffness (docs/ratings.md).
+  struct StiffnessSegmentsOut {
+    double T1_Nm = 0, T2_Nm = 0, rated_torque_Nm = 0, K1_Nm_per_arcmin = 0, K2_Nm_per_arcmin = 0,
+           K3_Nm_per_arcmin = 0;
+    std::string definitions;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("T1_Nm", &T1_Nm, Field().Unit("N·m"));
+      a->Visit("T2_Nm", &T2_Nm, Field().Unit("N·m"));
+      a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Unit("N·m"));
+      a->Visit("K1_Nm_per_arcmin", &K1_Nm_per_arcmin, Field().Unit("N·m/arcmin").Desc("0 … T1"));
+      a->Visit("K2_Nm_per_arcmin", &K2_Nm_per_arcmin, Field().Unit("N·m/arcmin").Desc("T1 … T2"));
+      a->Visit("K3_Nm_per_arcmin", &K3_Nm_per_arcmin, Field().Unit("N·m/arcmin").Desc("T2 … rated torque"));
+      a->Visit("definitions", &definitions, Field());
+    }
+  };
+  /// "masses": the parts' masses and the inertia at the output (with stiffness or ratings).
+  struct MassesOut {
+    double density_kg_m3 = 0, disc_kg = 0, disc_inertia_kgm2 = 0, ring_pins_kg = 0, output_pins_kg = 0,
+           total_kg = 0, outer_diameter_mm = 0, width_mm = 0, reflected_inertia_kgm2 = 0;
+    std::string includes;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("density_kg_m3", &density_kg_m3, Field().Unit("kg/m³"));
+      a->Visit("disc_kg", &disc_kg, Field(n).Unit("kg").Desc("one disc"));
+      a->Visit("disc_inertia_kgm2", &disc_inertia_kgm2, Field(n).Unit("kg·m²").Desc("one disc, about its centre"));
+      a->Visit("ring_pins_kg", &ring_pins_kg, Field(n).Unit("kg"));
+      a->Visit("output_pins_kg", &output_pins_kg, Field(n).Unit("kg"));
+      a->Visit("total_kg", &total_kg, Field(n).Unit("kg"));
+      a->Visit("outer_diameter_mm", &outer_diameter_mm, Field(n).Unit("mm"));
+      a->Visit("width_mm", &width_mm, Field(n).Unit("mm"));
+      a->Visit("reflected_inertia_kgm2", &reflected_inertia_kgm2, Field(n).Unit("kg·m²").Desc("at the output"));
+      a->Visit("includes", &includes, Field().Desc("what the masses and the inertia are of"));
+    }
+  };
+
+  std::string study = "cycloid_ltca", name;
+  std::optional<std::vector<std::string>> evaluated;  ///< ["unloaded"] for the unloaded stage alone
+  std::optional<double> unloaded_te_peak_to_peak_arcsec;
+  std::optional<double> torque_Nm, max_contact_stress_MPa, max_contact_stress_crank_angle_deg,
+      lte_peak_to_peak_arcsec, lte_mean_abs_arcsec, gear_ratio_nominal, gear_ratio_peak_to_peak;
+  std::optional<int> max_pairs_in_contact;
+  std::optional<double> max_pair_load_N;
+  int crank_angles_per_mesh_period = 0;
+  std::optional<int> crank_angles_used;
+  std::optional<bool> crank_angles_refined;
+  std::optional<double> axial_cell_mm;
+  std::optional<std::array<int, 2>> grid;
+  std::optional<double> composite_modulus_out;  ///< result.json's composite_modulus_MPa
+  std::optional<int> contact_solves;
+  std::optional<bool> converged;
+  std::optional<std::string> warning_out;                       ///< result.json's warning
+  std::optional<std::map<std::string, double>> error_values;    ///< result.json's estimated_error
+  std::optional<ErrorSources> estimated_error_sources;
+  std::optional<std::vector<std::string>> warnings_out;         ///< result.json's warnings (loaded stage)
+  std::vector<PerAngle> per_angle;
+  double min_profile_radius_mm = 0, pin_gap_mm = 0;
+  nlohmann::json geometry_files;                 ///< GeometryFilesJson's block
+  std::optional<nlohmann::json> parts_json;      ///< result.json's parts (PartsJson)
+  std::optional<GrindingOut> grinding;
+  std::optional<nlohmann::json> transmission_error_json;  ///< result.json's transmission_error
+  std::optional<nlohmann::json> inspection, measured_json;
+  std::optional<nlohmann::json> life_json;       ///< result.json's life (cycloid_common::LifeJson)
+  std::optional<int> discs;
+  std::optional<double> disc_torque_Nm;
+  /// NaN: null (the curve or the mechanism asked for but not solved).
+  std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin;
+  std::optional<double> max_ring_pin_force_N, max_output_pin_force_out, eccentric_bearing_load_N,
+      output_pin_bending_stress_MPa, output_pin_contact_pressure_MPa;
+  std::optional<OutputMechanismOut> output_mechanism;
+  std::optional<StiffnessOut> stiffness;
+  /// AddRatingsJson's keys (a number or null; with "ratings").
+  std::optional<nlohmann::json> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, ratings_json;
+  std::optional<nlohmann::json> output_bearing_json;  ///< OutputBearingJson's block, or {"error": why}
+  std::optional<StiffnessSegmentsOut> stiffness_segments;
+  std::optional<MassesOut> masses_out;                ///< result.json's masses
+  std::optional<nlohmann::json> joint_model;          ///< the parameters `camopt export` reads
+  std::optional<nlohmann::json> lubrication_json;     ///< LubricationResult's JSON, or {"error": why}
+  std::optional<nlohmann::json> torsional_dynamics;   ///< TorsionalDynamicsJson, or {"error": why}
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field n = Field().NullWhenNotFinite();
+    const Field loaded = Field().Desc("loaded stage");
+    a->Visit("study", &study, Field().Const("cycloid_ltca"));
+    a->Visit("name", &name, Field().Desc("the design's name"));
+    a->Visit("evaluated", &evaluated, Field().Desc("[\"unloaded\"]: the unloaded stage alone was run"));
+    a->Visit("unloaded_te_peak_to_peak_arcsec", &unloaded_te_peak_to_peak_arcsec,
+             Field().Unit("arcsec").Desc("unloaded stage alone"));
+    a->Visit("torque_Nm", &torque_Nm, Field().Unit("N·m").Desc("the output torque (loaded stage)"));
+    a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+             Field().Unit("MPa").Desc("largest Hertz pressure of the disc on a ring pin (loaded stage)"));
+    a->Visit("max_contact_stress_crank_angle_deg", &max_contact_stress_crank_angle_deg,
+             Field().Unit("deg").Desc("its crank angle (loaded stage)"));
+    a->Visit("lte_peak_to_peak_arcsec", &lte_peak_to_peak_arcsec,
+             Field().Unit("arcsec").Desc("loaded transmission error, peak to peak (loaded stage)"));
+    a->Visit("lte_mean_abs_arcsec", &lte_mean_abs_arcsec,
+             Field().Unit("arcsec").Desc("mean absolute loaded transmission error (loaded stage)"));
+    a->Visit("gear_ratio_nominal", &gear_ratio_nominal, Field().Desc("the teeth (loaded stage)"));
+    a->Visit("gear_ratio_peak_to_peak", &gear_ratio_peak_to_peak, loaded);
+    a->Visit("max_pairs_in_contact", &max_pairs_in_contact, loaded);
+    a->Visit("max_pair_load_N", &max_pair_load_N,
+             Field().Unit("N").Desc("largest load of one pin-tooth pair (loaded stage)"));
+    a->Visit("crank_angles_per_mesh_period", &crank_angles_per_mesh_period,
+             Field().Desc("uniform samples of one mesh period (0: the file gives the angles otherwise)"));
+    a->Visit("crank_angles_used", &crank_angles_used, Field().Desc("the reported angles (loaded stage)"));
+    a->Visit("crank_angles_refined", &crank_angles_refined,
+             Field().Desc("the reported angles are the study's and the half-step-shifted ones (loaded stage)"));
+    a->Visit("axial_cell_mm", &axial_cell_mm, Field().Unit("mm").Desc("loaded stage"));
+    a->Visit("grid", &grid, Field().Desc("contact cells across the profile and along the face (loaded stage)"));
+    a->Visit("composite_modulus_MPa", &composite_modulus_out, Field().Unit("MPa").Desc("E* (loaded stage)"));
+    a->Visit("contact_solves", &contact_solves, loaded);
+    a->Visit("converged", &converged, Field().Desc("every crank angle's contact converged (loaded stage)"));
+    a->Visit("warning", &warning_out, Field().Desc("the first angle that did not converge, or empty (loaded stage)"));
+    a->Visit("estimated_error", &error_values,
+             Field().Desc("estimated discretisation error of each headline, by its name, in its unit (loaded stage)"));
+    a->Visit("estimated_error_sources", &estimated_error_sources, Field().Desc("the error's parts (loaded stage)"));
+    a->Visit("warnings", &warnings_out, Field().Desc("the run's warnings"));
+    a->Visit("per_angle", &per_angle, Field().Desc("each crank angle"));
+    a->Visit("min_profile_radius_mm", &min_profile_radius_mm,
+             Field().Unit("mm").Desc("smallest convex radius of the tooth, rho_min - rho'"));
+    a->Visit("pin_gap_mm", &pin_gap_mm, Field().Unit("mm").Desc("clearance between neighbouring pins"));
+    a->Visit("geometry_files", &geometry_files,
+             Field().Desc("the tooth's geometry files, or why none").Schema({{"type", "object"}}));
+    a->Visit("parts", &parts_json, Field().Desc("the drive's parts (studies/parts.h)").Schema({{"type", "object"}}));
+    a->Visit("grinding", &grinding, Field().Desc("the form wheel (with grinding)"));
+    a->Visit("transmission_error", &transmission_error_json,
+             Field().Desc("the kinematic transmission error from the tolerances (with tolerances)")
+                 .Schema(TransmissionErrorSchema()));
+    a->Visit("inspection", &inspection,
+             Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
+    a->Visit("measured", &measured_json,
+             Field().Desc("the measured disc (with measured_profile)").Schema({{"type", "object"}}));
+    a->Visit("life", &life_json, Field().Desc("the bearing lives, when asked").Schema(cycloid_common::LifeJsonSchema()));
+    a->Visit("discs", &discs, Field().Desc("with more than one disc"));
+    a->Visit("disc_torque_Nm", &disc_torque_Nm, Field().Unit("N·m").Desc("each disc's torque (more than one disc)"));
+    a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,
+             Field(n).Unit("N·m/arcmin").Desc("50-100% of the rated torque (with stiffness; null: not solved)"));
+    a->Visit("lost_motion_arcmin", &lost_motion_arcmin,
+             Field(n).Unit("arcmin").Desc("±3% of the rated torque (with stiffness; null: not solved)"));
+    a->Visit("backlash_arcmin", &backlash_arcmin, Field(n).Unit("arcmin").Desc("with stiffness; null: not solved"));
+    a->Visit("max_ring_pin_force_N", &max_ring_pin_force_N,
+             Field(n).Unit("N").Desc("with output_mechanism; null: not solved"));
+    a->Visit("max_output_pin_force_N", &max_output_pin_force_out,
+             Field(n).Unit("N").Desc("with output_mechanism; null: not solved"));
+    a->Visit("eccentric_bearing_load_N", &eccentric_bearing_load_N,
+             Field(n).Unit("N").Desc("largest eccentric (crank) bearing load (with output_mechanism; null: not solved)"));
+    a->Visit("output_pin_bending_stress_MPa", &output_pin_bending_stress_MPa,
+             Field(n).Unit("MPa").Desc("with output_mechanism; null: not solved"));
+    a->Visit("output_pin_contact_pressure_MPa", &output_pin_contact_pressure_MPa,
+             Field(n).Unit("MPa").Desc("hole-pin Hertz pressure (with output_mechanism; null: not solved)"));
+    a->Visit("output_mechanism", &output_mechanism, Field().Desc("with output_mechanism's pin and hole radii"));
+    a->Visit("stiffness", &stiffness, Field().Desc("the torsional curve (with stiffness)"));
+    const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
+    a->Visit("rated_torque_Nm", &rated_torque_Nm,
+             Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
+    a->Visit("peak_torque_Nm", &peak_torque_Nm,
+             Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
+    a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
+             Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
+    a->Visit("ratings", &ratings_json, Field().Desc("the catalogue's ratings (docs/ratings.md)").Schema(RatingsSchema()));
+    a->Visit("output_bearing", &output_bearing_json,
+             Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingSchema()));
+    a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
+    a->Visit("masses", &masses_out, Field().Desc("with stiffness or ratings"));
+    a->Visit("joint_model", &joint_model,
+             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelSchema()));
+    a->Visit("lubrication", &lubrication_json,
+             Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationSchema()));
+    a->Visit("torsional_dynamics", &torsional_dynamics,
+             Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsSchema()));
+  }
+  /// The schemas of the raw blocks shared with kinds whose result is not declared yet: the keys
+  /// camopt reads from them (report.html's headlines), the rest open.
+  static nlohmann::ordered_json TransmissionErrorSchema();
+  static nlohmann::ordered_json RatingsSchema();
+  static nlohmann::ordered_json OutputBearingSchema();
+  static nlohmann::ordered_json LubricationSchema();
+  static nlohmann::ordered_json TorsionalDynamicsSchema();
+  /// "joint_model" (its tilt keys from AddJointTilt, shared with lcr_analysis).
+  static nlohmann::ordered_json JointModelSchema();
+
+  // Not in result.json: the model's numbers.
   /// Per angle (meshes) and over the cycle, at crank_angles_rad: the study's angles, or their
   /// union with the half-step-shifted set (twice as many) when the crank angles were refined.
   cycloid::CycleResult cycle;
@@ -474,7 +823,8 @@ InspectedPart DiscPart(const Study& s, int k);
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json's members of `result` (its Serialize) from its model numbers; Run ends with it.
+void FillResult(const Study& study, Result& result);
 /// result.json and the tables, plots and drawings listed above.
 void Write(const Study& study, const Result& result, Outputs& out);
 

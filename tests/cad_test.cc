@@ -571,7 +571,7 @@ TEST(GeometryFiles, CycloidNnmDiscStepSolid) {
   EXPECT_NEAR(back.volume_mm3 / volume - 1, 0.0, kSolidRelTol);
   std::printf("cycloid disc: STEP volume %.3f mm³, closed form %.3f mm³ (rel. diff %.2e)\n", back.volume_mm3,
               volume, back.volume_mm3 / volume - 1);
-  const json g = studies::cycloid_ltca::ToJson(st, res)["geometry_files"]["tooth"];
+  const json g = studies::WriteResult(res)["geometry_files"]["tooth"];
   EXPECT_LE(double(g["dxf_max_deviation_um"]), 1.0);
 }
 
@@ -645,7 +645,7 @@ TEST(GeometryFiles, EveryExampleStepSolidReadsBack) {
       const auto st = studies::cycloid_ltca::Parse(root);
       const auto res = studies::cycloid_ltca::Run(st, {name, true});
       studies::cycloid_ltca::Write(st, res, out);
-      j = studies::cycloid_ltca::ToJson(st, res);
+      j = studies::WriteResult(res);
     } else if (kind == "disc_cam") {
       study["analysis"] = {{"evaluate", {"profile"}}};
       const auto st = studies::disc_cam::Parse(root);

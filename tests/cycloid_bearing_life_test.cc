@@ -222,7 +222,7 @@ nlohmann::json LifeExample() {
 nlohmann::json RunLife(const nlohmann::json& study) {
   const studies::Node root(&study, "life.json", "");
   const auto s = studies::cycloid_ltca::Parse(root);
-  return studies::cycloid_ltca::ToJson(s, studies::cycloid_ltca::Run(s, {"life.json", true}));
+  return studies::WriteResult(studies::cycloid_ltca::Run(s, {"life.json", true}));
 }
 
 const nlohmann::json& Row(const nlohmann::json& life, const std::string& element) {

@@ -87,7 +87,7 @@ TEST(CycloidErrorEstimate, CrankAngleErrorBoundsTheConvergedAnswer) {
                                UniformCrankAngles(kConvergedPerPeriod, 2.0 * kPi / s.drive.rollers));
           have_converged = true;
         }
-        const nlohmann::json j = ltca::ToJson(s, ltca::Run(s, studies::RunContext{"", true}));
+        const nlohmann::json j = studies::WriteResult(ltca::Run(s, studies::RunContext{"", true}));
         ASSERT_EQ(j["crank_angles_used"], 2 * per_period);
         const nlohmann::json& crank = j["estimated_error_sources"]["crank_angles"]["error"];
         for (size_t f = 0; f < fields.size(); ++f) {

@@ -457,7 +457,7 @@ TEST(CycloidStudies, LtcaStudyReportsEveryAngle) {
   studies::RunContext ctx;
   ctx.quiet = true;
   const ltca::Result r = ltca::Run(s, ctx);
-  const nlohmann::json j = ltca::ToJson(s, r);
+  const nlohmann::json j = studies::WriteResult(r);
   for (const char* k : {"max_contact_stress_MPa", "lte_peak_to_peak_arcsec", "lte_mean_abs_arcsec",
                         "gear_ratio_peak_to_peak", "max_pairs_in_contact", "axial_cell_mm"})
     EXPECT_TRUE(j.contains(k)) << k;
@@ -490,7 +490,7 @@ TEST(CycloidStudies, LtcaChecksTheToothAndPinGeometryByDefault) {
     const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
     studies::RunContext ctx;
     ctx.quiet = true;
-    const nlohmann::json j = ltca::ToJson(s, ltca::Run(s, ctx));
+    const nlohmann::json j = studies::WriteResult(ltca::Run(s, ctx));
     EXPECT_NEAR(j["pin_gap_mm"].get<double>(), gap, 1e-9);
     EXPECT_NEAR(j["min_profile_radius_mm"].get<double>(), radius, 1e-9);
     const studies::HeadlineTable t = studies::EvaluateHeadlines("cycloid_ltca", study, j);
@@ -538,7 +538,7 @@ TEST(CycloidStudies, LtcaSamplesOneMeshPeriodAndEstimatesItsErrors) {
   EXPECT_EQ(r.cycle.gear_ratio_peak_to_peak, doubled.gear_ratio_peak_to_peak);
   const CycleResult coarse = RunCycle(LoadedTca(s.drive, s.crowning, s.material, Coarse(6, 6)), 350.0e3,
                                       s.crank_angles_rad);
-  const nlohmann::json j = ltca::ToJson(s, r);
+  const nlohmann::json j = studies::WriteResult(r);
   EXPECT_EQ(j["crank_angles_used"], 16);
   EXPECT_EQ(j["crank_angles_refined"], true);
   EXPECT_EQ(j["per_angle"].size(), 16u);
@@ -580,7 +580,7 @@ TEST(CycloidStudies, PaperDriveRippleWithTheExampleSettingsIsNearTheConvergedVal
       camopt::testing::ReadFile(camopt::testing::SourcePath("studies/examples/cycloid_ltca_nnm_none.json")));
   const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
   const ltca::Result r = ltca::Run(s, studies::RunContext{"", true});
-  const nlohmann::json j = ltca::ToJson(s, r);
+  const nlohmann::json j = studies::WriteResult(r);
   const double lte = j["lte_peak_to_peak_arcsec"], gr = j["gear_ratio_peak_to_peak"];
   EXPECT_LE(std::abs(lte - 1.37), std::max(0.05 * 1.37, j["estimated_error"]["lte_peak_to_peak_arcsec"].get<double>()));
   EXPECT_LE(std::abs(gr - 0.027), std::max(0.05 * 0.027, j["estimated_error"]["gear_ratio_peak_to_peak"].get<double>()));
@@ -607,7 +607,7 @@ TEST(CycloidStudies, LtcaStudyWritesResultsAndMaps) {
   const nlohmann::json study = nlohmann::json::parse(camopt::testing::ReadFile(dir / "s.json"));
   const ltca::Study s = ltca::Parse(studies::Node(&study, "s.json", ""));
   const nlohmann::json j = nlohmann::json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(j), ltca::ToJson(s, ltca::Run(s, studies::RunContext{"", true})));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(j), studies::WriteResult(ltca::Run(s, studies::RunContext{"", true})));
 
   // The tables: a row per crank angle of the study (0, 120, 300°), a load column per roller of the
   // drive (16), and numbers (written to 10 digits) that agree with result.json.

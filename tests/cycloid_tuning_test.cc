@@ -289,7 +289,7 @@ TEST(CycloidTuningStudy, TunedDesignLivesEqualTheLtcaOfTheTunedDesign) {
   ltca["output_mechanism"] = output;
   ltca["analysis"] = {{"crank_angles_per_mesh_period", 8}, {"grid", {32, 32}}};
   const studies::cycloid_ltca::Study ls = studies::cycloid_ltca::Parse(studies::Node(&ltca, "ltca.json", ""));
-  const nlohmann::json lj = studies::cycloid_ltca::ToJson(ls, studies::cycloid_ltca::Run(ls, studies::RunContext{"", true}));
+  const nlohmann::json lj = studies::WriteResult(studies::cycloid_ltca::Run(ls, studies::RunContext{"", true}));
   constexpr double kSameDesignLifeRelTol = 2e-3;
   for (const char* key : {"crank_bearing_L10h", "pins_L10h", "shortest_L10h"})
     EXPECT_NEAR(life[key].get<double>(), lj["life"][key].get<double>(),

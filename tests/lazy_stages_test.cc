@@ -97,7 +97,7 @@ TEST(LazyStages, CycloidUnloadedTcaOnly) {
   ASSERT_EQ(r.unloaded_te_arcsec.size(), full.cycle.meshes.size());
   for (size_t k = 0; k < r.unloaded_te_arcsec.size(); ++k)
     EXPECT_NEAR(r.unloaded_te_arcsec[k], full.cycle.meshes[k].unloaded_rotation_rad * 206264.80624709636, 1e-9);
-  const json j = ltca::ToJson(st, r);
+  const json j = studies::WriteResult(r);
   EXPECT_EQ(j["evaluated"], json({"unloaded"}));
   EXPECT_FALSE(j.contains("max_contact_stress_MPa"));
   EXPECT_EQ(j["per_angle"].size(), 8u);
@@ -125,7 +125,7 @@ TEST(LazyStages, CycloidLooseToleranceWarns) {
   auto warnings = [&](double tol) {
     file["analysis"]["tolerance"] = tol;
     const ltca::Study st = ltca::Parse(studies::Node(&file, "s.json", ""));
-    return ltca::ToJson(st, ltca::Run(st, {"s.json", true}))["warnings"].dump();
+    return studies::WriteResult(ltca::Run(st, {"s.json", true}))["warnings"].dump();
   };
   EXPECT_EQ(warnings(1e-3).find("analysis.tolerance"), std::string::npos);
   EXPECT_NE(warnings(0.5).find("analysis.tolerance 0.5 is looser"), std::string::npos);

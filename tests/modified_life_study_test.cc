@@ -181,7 +181,7 @@ TEST(ModifiedLifeStudy, CycloidRowsMatchTheHandCalculation) {
   study["lubricant"]["contamination_factor"] = 0.3;
   const studies::Node root(&study, "cycloid.json", "");
   const studies::cycloid_ltca::Study st = studies::cycloid_ltca::Parse(root);
-  const nlohmann::json result = studies::cycloid_ltca::ToJson(st, studies::cycloid_ltca::Run(st, {"cycloid.json", true}));
+  const nlohmann::json result = studies::WriteResult(studies::cycloid_ltca::Run(st, {"cycloid.json", true}));
   const nlohmann::json& life = result["life"];
   const double t = result["lubrication"]["oil_temperature_C"], rpm = study["load"]["input_speed_rpm"];
   const double crank = ExpectRowByHand(Row(life, "crank_bearing"), study, t, rpm, 6500, 55, 0.3);
