@@ -128,9 +128,10 @@ std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double boun
   return std::nullopt;
 }
 
-void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
+void AddContact3DJson(const Study& s, Result& r) {
   const objectives::LcrSizing3DSpec& c3 = *s.contact3d;
-  res["contact"] = {{"model", ContactModelName(c3.contact.model)},
+  Result::Json& res = r.json;
+  res.contact = nlohmann::json{{"model", ContactModelName(c3.contact.model)},
                     {"sizing_model", "slices"},
                     {"slices", c3.contact.slices},
                     {"misalignment_mrad", c3.contact.misalignment_rad * 1e3},
@@ -138,18 +139,18 @@ void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res) {
                     {"crowning_variable", bool(c3.coefficient_range_mm || c3.radius_range_mm || c3.flat_length_range_mm)},
                     {"length_variables", {{"roller_length_mm", bool(c3.roller_length_range_mm)},
                                           {"cam_thickness_mm", bool(c3.cam_thickness_range_mm)}}}};
-  if (c3.overload_torque_Nmm > 0) res["contact"]["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
+  if (c3.overload_torque_Nmm > 0) (*res.contact)["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
   for (size_t i = 0; i < r.candidates.size(); ++i) {
     const auto& o3 = r.candidates[i].outcome3d;
-    if (o3 && r.candidates[i].pruned()) res["candidates"][i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
+    if (o3 && r.candidates[i].pruned()) res.candidates[i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
     if (!o3 || !r.candidates[i].feasible()) continue;
-    res["candidates"][i]["input"]["crowning"] = CrowningJson(o3->crowning[0]);
-    res["candidates"][i]["output"]["crowning"] = CrowningJson(o3->crowning[1]);
-    res["candidates"][i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
+    res.candidates[i]["input"]["crowning"] = CrowningJson(o3->crowning[0]);
+    res.candidates[i]["output"]["crowning"] = CrowningJson(o3->crowning[1]);
+    res.candidates[i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
   }
   if (r.best < 0) return;
   const objectives::LcrMinSize3DOutcome& b = *r.candidates[r.best].outcome3d;
-  nlohmann::json& best = res["best"];
+  nlohmann::json& best = res.best;
   const char* sides[2] = {"input", "output"};
   nlohmann::json contact = {{"line_model_outer_diameter_mm", b.line_outer_diameter_mm}};
   for (int k = 0; k < 2; ++k) {

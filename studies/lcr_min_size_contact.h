@@ -32,10 +32,10 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const
 /// `bound` (objectives::SolveLcrMinSize3D) and then returns that lower bound.
 std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound);
 
-/// Adds the 3D parts to result.json (res: ToJson's object): "contact", best.input/output.crowning,
+/// Adds the 3D parts to result.json's members (r.json): "contact", best.input/output.crowning,
 /// best.contact (3D peaks, edge margins, the line-model outer diameter), best.half_space_check,
 /// and each candidate's crowning.
-void AddContact3DJson(const Study& s, const Result& r, nlohmann::json& res);
+void AddContact3DJson(const Study& s, Result& r);
 
 /// Adds crowning and contact to the best design's lcr_analysis study.
 void AddContact3DAnalysis(const Study& s, const Candidate& best, nlohmann::json& analysis);

@@ -99,7 +99,8 @@ void RunRobust(const Study& s, Result& res, const RunContext& ctx) {
   progress.Update(1.0, "robust done");
 }
 
-void RobustJson(const Study& s, const Result& r, nlohmann::json& res) {
+void RobustJson(const Study& s, Result& r) {
+  Result::Json& res = r.json;
   const objectives::LcrRobustRule& rule = *s.robust;
   nlohmann::json rj;
   rj["method"] = rule.method == objectives::LcrRobustMethod::kWorstCase ? "worst_case" : "sigma";
@@ -125,20 +126,23 @@ void RobustJson(const Study& s, const Result& r, nlohmann::json& res) {
     cands.push_back(j);
   }
   rj["candidates"] = cands;
-  res["robust"] = rj;
+  res.robust = rj;
   if (r.best >= 0) {
-    res["nominal_best"] = res["best"];
-    if (r.nominal_mc) res["nominal_best"]["monte_carlo"] = MonteCarloJson(*r.nominal_mc);
+    res.nominal_best = res.best;
+    if (r.nominal_mc) (*res.nominal_best)["monte_carlo"] = MonteCarloJson(*r.nominal_mc);
   } else {
-    res["nominal_best"] = nullptr;
+    res.nominal_best = nlohmann::json(nullptr);
   }
   if (r.robust_best < 0) {
-    res["best"] = nullptr;
-    res["verified"] = false;
-    res["verification"] = {{"accurate_model", nullptr}, {"note", "no robust design to verify"}};
+    res.best = nullptr;
+    res.verified = false;
+    res.verification = VerificationBlock::NotRun("no robust design to verify");
     return;
   }
-  if (r.robust_verification) AddVerificationJson(*r.robust_verification, res);
+  if (r.robust_verification) {
+    res.verified = r.robust_verification->verified();
+    res.verification = VerificationBlock::Of(*r.robust_verification);
+  }
   const objectives::LcrRobustOutcome& o = r.robust[r.robust_best];
   const lcr::Reducer<double>& d = *o.design;
   const objectives::LcrDenseCheck& k = *o.dense;
@@ -166,9 +170,9 @@ void RobustJson(const Study& s, const Result& r, nlohmann::json& res) {
   }
   bj["binding"] = binding;
   if (r.robust_mc) bj["monte_carlo"] = MonteCarloJson(*r.robust_mc);
-  res["best"] = bj;
+  res.best = bj;
   if (r.best >= 0)
-    res["robust"]["outer_diameter_increase_mm"] =
+    (*res.robust)["outer_diameter_increase_mm"] =
         k.outer_diameter_mm - r.candidates[r.best].outcome.check->outer_diameter_mm;
 }
 

@@ -333,6 +333,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
 }  // namespace
 
 void ParseSizingLubrication(const Input& in, const Node& root, Study& s);
+void FillResult(const Study& s, Result& result);
 
 Study Parse(const Node& root) {
   // Every field's type and bounds; what spans fields follows.
@@ -553,6 +554,182 @@ nlohmann::ordered_json Input::CatalogueSchema() {
           {"oneOf", {file, list}}};
 }
 
+namespace {
+
+// A raw block's schema from its JSON text.
+nlohmann::ordered_json SchemaOf(const char* text) { return nlohmann::ordered_json::parse(text); }
+
+// A cam's side in the best design, a candidate or a closest point (SideJson, its peaks, the 3D
+// crowning; the robust best's sides have the counts, turret radius and roller diameter only).
+const char* kSideSchema = R"json({"type": "object", "properties": {
+  "lobes": {"type": "integer", "description": "the cam's lobes"},
+  "rollers": {"type": "integer", "description": "the rollers of its turret"},
+  "turret_radius_mm": {"type": "number", "description": "turret radius r_d [mm]"},
+  "roller_diameter_mm": {"type": "number", "description": "roller diameter d_r [mm]"},
+  "roller_length_mm": {"type": "number", "description": "roller length [mm]"},
+  "cam_thickness_mm": {"type": "number", "description": "cam thickness [mm]"},
+  "max_contact_stress_MPa": {"type": ["number", "null"], "description": "best: the cam's peak Hertz pressure in the dense check [MPa]"},
+  "max_roller_force_N": {"type": ["number", "null"], "description": "best: the cam's largest roller force [N]"},
+  "undercut_margin_mm": {"type": ["number", "null"], "description": "best: 1/κ_max − r_r of the cam [mm]"},
+  "roller_gap_mm": {"type": ["number", "null"], "description": "best: the gap between neighbouring rollers [mm]"},
+  "subsurface": {"type": "object", "description": "best: the subsurface stresses under the cam's peak pressure (as lcr_analysis gives them)"},
+  "crowning": {"type": "object", "description": "3D contact: the crowning sized for the cam's rollers (type and its parameters)"}},
+  "required": ["lobes", "rollers"], "additionalProperties": false})json";
+
+const char* kMonteCarloSchema = R"json({"type": "object", "description": "the Monte-Carlo check against the exact compliant model", "properties": {
+  "samples": {"type": "integer"}, "seed": {"type": "integer"}, "angle_steps": {"type": "integer"},
+  "violating_samples": {"type": "integer", "description": "samples that break a limit"},
+  "violating_fraction": {"type": "number"},
+  "max_roller_force_N": {"type": "number", "description": "[N]"},
+  "max_contact_stress_MPa": {"type": ["number", "null"], "description": "[MPa]"},
+  "min_undercut_margin_mm": {"type": "number", "description": "[mm]"},
+  "worst_sample": {"type": "integer"},
+  "worst_sample_relative_excess": {"type": "number"}},
+  "additionalProperties": false})json";
+
+}  // namespace
+
+nlohmann::ordered_json Result::Json::CandidateSchema() {
+  nlohmann::ordered_json s = SchemaOf(R"json({"type": "object", "properties": {
+    "input": {"description": "the input cam: its lobes and rollers, and of a feasible candidate its sizes"},
+    "output": {"description": "the output cam, as input"},
+    "catalogue_roller": {"type": "string", "description": "with a catalogue: the roller's name"},
+    "status": {"type": "string", "description": "converged, pruned, life_out_of_reach, fails_dense_check, failed, or the solver's status"},
+    "feasible": {"type": "boolean", "description": "converged and verified: a design that meets the limits"},
+    "solver_message": {"type": "string"},
+    "note": {"type": "string"},
+    "longest_life_h": {"type": "number", "description": "life_out_of_reach: the longest life the combination reaches [h]"},
+    "evaluations": {"type": "object", "properties": {"values": {"type": "integer"}, "gradients": {"type": "integer"},
+      "iterations": {"type": "integer"}, "polish_rounds": {"type": "integer"}}, "additionalProperties": false},
+    "outer_diameter_lower_bound_mm": {"type": "number", "description": "pruned: the polish round's outer diameter that exceeded the best design's [mm]"},
+    "line_model_outer_diameter_mm": {"type": "number", "description": "3D contact: the line model's optimum [mm]"},
+    "starts": {"type": "array", "description": "every start of the multistart", "items": {"type": "object", "properties": {
+      "status": {"type": "string"}, "outer_diameter_mm": {"type": "number", "description": "[mm]"},
+      "power_loss_W": {"type": "number", "description": "efficiency objective: the loss [W]"}},
+      "required": ["status"], "additionalProperties": false}},
+    "multistart_spread_mm": {"type": "number", "description": "the spread of the converged starts' outer diameters [mm]"},
+    "multistart_spread_W": {"type": "number", "description": "efficiency objective: the spread of their losses [W]"},
+    "binding": {"type": "array", "items": {"type": "string"}, "description": "the constraint rows active at the optimum"},
+    "violated": {"type": "array", "items": {"type": "string"}, "description": "the constraint rows violated"},
+    "outer_diameter_mm": {"type": "number", "description": "feasible: the outer diameter [mm]"},
+    "eccentricity_mm": {"type": "number", "description": "feasible: the eccentricity [mm]"},
+    "max_contact_stress_MPa": {"type": ["number", "null"], "description": "feasible: [MPa]"},
+    "max_roller_force_N": {"type": ["number", "null"], "description": "feasible: [N]"},
+    "undercut_margin_mm": {"type": ["number", "null"], "description": "feasible: [mm]"},
+    "shortest_L10h": {"type": ["number", "null"], "description": "feasible, with lives: the shortest L10h [h]"},
+    "power_loss_W": {"type": ["number", "null"], "description": "feasible, efficiency objective: the lubricated loss [W]"},
+    "mean_efficiency": {"type": ["number", "null"], "description": "feasible, efficiency objective"},
+    "closest_point": {"type": "object", "description": "not feasible: where the search came closest", "properties": {
+      "eccentricity_mm": {"type": "number"}, "input": {}, "output": {}}, "additionalProperties": false},
+    "violations": {"type": "array", "description": "not feasible: the limits broken at the closest point", "items": {
+      "type": "object", "properties": {"limit": {"type": "string"}, "value": {"type": ["number", "null"]},
+      "limit_value": {"type": ["number", "null"]}, "excess": {"type": ["number", "null"]}}, "additionalProperties": false}},
+    "design_problems": {"type": "array", "items": {"type": "string"}}},
+    "required": ["input", "output", "status", "feasible", "solver_message", "evaluations", "starts", "binding", "violated"],
+    "additionalProperties": false})json");
+  for (const char* side : {"input", "output"}) {
+    nlohmann::ordered_json side_schema = SchemaOf(kSideSchema);
+    side_schema["description"] = s["properties"][side]["description"];
+    s["properties"][side] = side_schema;
+    s["properties"]["closest_point"]["properties"][side] = SchemaOf(kSideSchema);
+  }
+  return s;
+}
+
+nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
+  nlohmann::ordered_json s = SchemaOf(R"json({"type": "object", "properties": {
+    "eccentricity_mm": {"type": "number", "description": "the eccentricity e [mm]"},
+    "outer_diameter_mm": {"type": "number", "description": "the outer diameter 2 max(r_d + r_r) [mm]"},
+    "speed_ratio": {"type": "number", "description": "the design's speed ratio"},
+    "max_contact_stress_MPa": {"type": ["number", "null"], "description": "the largest Hertz pressure of both cams in the dense check [MPa]"},
+    "max_roller_force_N": {"type": ["number", "null"], "description": "the largest roller force [N]"},
+    "undercut_margin_mm": {"type": ["number", "null"], "description": "the smaller cam's 1/κ_max − r_r [mm]"},
+    "roller_gap_mm": {"type": ["number", "null"], "description": "the smallest gap between rollers [mm]"},
+    "mean_efficiency": {"type": ["number", "null"], "description": "the mean efficiency over the revolution (null: not computed)"},
+    "efficiency_model": {"type": "string", "description": "eq. 33 with the friction coefficient, or lubricated"},
+    "oil_temperature_C": {"type": ["number", "null"], "description": "with lubricant: the housing's oil temperature [°C]"},
+    "power_loss_W": {"type": ["number", "null"], "description": "with lubricant: the lubricated power loss [W]"},
+    "lubrication_error": {"type": "string", "description": "with lubricant: why the lubricated losses were not computed"},
+    "input": {"description": "the input cam"},
+    "output": {"description": "the output cam"},
+    "catalogue_roller": {"type": "string", "description": "with a catalogue: the roller's name"},
+    "binding": {"type": "array", "items": {"type": "string"}, "description": "the constraint rows active at the optimum"},
+    "binding_names": {"type": "array", "items": {"type": "string"}, "description": "the binding limits in words"},
+    "limit_sensitivity": {"type": "object", "additionalProperties": {"type": "number"},
+      "description": "d(objective)/d(limit) by limit key [mm, or W of loss, per unit of the limit]"},
+    "limit_costs": {"type": "array", "items": {"type": "string"}, "description": "what each binding limit costs, in words"},
+    "binding_limits": {"type": "array", "description": "each binding limit, its value and its cost"},
+    "limit_sensitivity_note": {"type": "string", "description": "3D contact: why the limit costs are not computed"},
+    "life": {"type": "object", "description": "with a speed or duty cycle: the bearing lives (docs/life.md)", "properties": {
+      "life_h": {"type": ["number", "null"], "description": "the life limit [h] (null: none)"},
+      "shortest_L10h": {"type": ["number", "null"], "description": "the shortest L10h of any rated bearing [h]"},
+      "shortest_bearing": {"type": "string"},
+      "duty_cycle": {"type": "array"}, "table": {"type": "array"},
+      "rating_rule": {"type": "string"}, "model": {"type": "string"}},
+      "additionalProperties": {"type": ["number", "null"], "description": "<bearing>_L10h [h]"}},
+    "ratings": {"type": "object", "description": "with ratings: the sized design's ratings (docs/ratings.md)", "properties": {
+      "L10h_at_required_torque": {"type": ["number", "null"], "description": "[h]"},
+      "rated_torque_Nm": {"type": ["number", "null"], "description": "[N·m]"},
+      "momentary_torque_required_Nm": {"type": "number", "description": "[N·m]"},
+      "momentary_static_safety": {"type": "number"},
+      "s0_at_required_momentary_torque": {"type": ["number", "null"]},
+      "momentary_torque_Nm": {"type": ["number", "null"], "description": "[N·m]"},
+      "momentary_by": {"type": "string"}, "momentary_met": {"type": "boolean"}}},
+    "contact": {"type": "object", "description": "3D contact: the 3D peaks, edge margins and the line model's outer diameter"},
+    "half_space_check": {"type": "object", "description": "3D contact: the half-space model's check of the slices model's peaks"},
+    "nominal": {"type": "object", "description": "robust: the nominal dense check's extremes"},
+    "robust_linear": {"type": "object", "description": "robust: the linearised robust constraints' extremes"},
+    "monte_carlo": {}},
+    "required": ["eccentricity_mm", "outer_diameter_mm", "speed_ratio", "input", "output", "binding"],
+    "additionalProperties": false})json");
+  s["properties"]["input"] = SchemaOf(kSideSchema);
+  s["properties"]["input"]["description"] = "the input cam";
+  s["properties"]["output"] = SchemaOf(kSideSchema);
+  s["properties"]["output"]["description"] = "the output cam";
+  s["properties"]["monte_carlo"] = SchemaOf(kMonteCarloSchema);
+  // binding_limits: the limit, its value and cost, and the re-solve members (LimitSlopeResult).
+  nlohmann::ordered_json entry = nlohmann::ordered_json::object();
+  LimitSlopeResult slope;
+  ResultSchemaEmitter::Describe(&slope, Field(), entry);
+  entry["properties"]["limit"] = {{"type", "string"}, {"description", "the limit's key"}};
+  entry["properties"]["limit_value"] = {{"type", {"number", "null"}}, {"description", "the study's limit"}};
+  entry["properties"]["limit_cost"] = {{"type", "number"}, {"description", "d(objective)/d(limit)"}};
+  entry["properties"]["unit"] = {{"type", "string"}, {"description", "of limit_cost"}};
+  for (const char* k : {"limit", "limit_value", "limit_cost", "unit"}) entry["required"].push_back(k);
+  s["properties"]["binding_limits"]["items"] = entry;
+  if (nullable) s["type"] = {"object", "null"};
+  return s;
+}
+
+nlohmann::ordered_json Result::Json::ContactSchema() {
+  return SchemaOf(R"json({"type": "object", "properties": {
+    "model": {"type": "string", "description": "the contact model of the study (slices or half_space)"},
+    "sizing_model": {"const": "slices", "description": "the model of the sizing's stress rows"},
+    "slices": {"type": "integer"},
+    "misalignment_mrad": {"type": "number", "description": "[mrad]"},
+    "crowning": {"type": "object", "description": "fixed.crowning"},
+    "crowning_variable": {"type": "boolean"},
+    "length_variables": {"type": "object", "properties": {"roller_length_mm": {"type": "boolean"},
+      "cam_thickness_mm": {"type": "boolean"}}, "additionalProperties": false},
+    "overload_torque_Nm": {"type": "number", "description": "[N·m]"}},
+    "required": ["model", "sizing_model", "slices", "misalignment_mrad", "crowning", "crowning_variable", "length_variables"],
+    "additionalProperties": false})json");
+}
+
+nlohmann::ordered_json Result::Json::RobustSchema() {
+  return SchemaOf(R"json({"type": "object", "properties": {
+    "method": {"enum": ["worst_case", "sigma"]},
+    "k": {"type": "number", "description": "sigma: k of mean + k sigma"},
+    "tolerances": {"type": "object", "description": "the tolerance bands [µm, arcsec]"},
+    "model": {"type": "string"},
+    "candidates": {"type": "array", "description": "every candidate's robust solve, in the candidates' order", "items": {
+      "type": "object", "properties": {"candidate": {"type": "integer"}, "converged": {"type": "boolean"},
+      "rounds": {"type": "integer"}, "status": {"type": "string"}, "outer_diameter_mm": {"type": "number"},
+      "note": {"type": "string"}}, "additionalProperties": false}},
+    "outer_diameter_increase_mm": {"type": "number", "description": "the robust best's outer diameter over the nominal best's [mm]"}},
+    "required": ["method", "tolerances", "model", "candidates"], "additionalProperties": false})json");
+}
+
 nlohmann::ordered_json Input::SchemaRules() {
   // Robust sizing needs its tolerances (and the tolerances are only for it), the Monte-Carlo the
   // tolerances; a catalogue gives the rollers' lengths and diameters (else fixed.roller_length_mm
@@ -700,6 +877,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     res.blocking_message = BlockingMessage(s, res);
   }
   if (s.robust) RunRobust(s, res, ctx);
+  FillResult(s, res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
@@ -739,25 +917,24 @@ std::vector<std::string> LimitCosts(const Study& s, const Result& result) {
   return lines;
 }
 
-nlohmann::json ToJson(const Study& s, const Result& result) {
-  nlohmann::json res;
-  res["study"] = "lcr_min_size";
-  res["name"] = s.name;
-  res["target"] = {{"speed_ratio", s.ratio}, {"output_torque_Nm", s.output_torque_Nmm / 1000}};
+void FillResult(const Study& s, Result& result) {
+  Result::Json& res = result.json;
+  res.name = s.name;
+  res.target.speed_ratio = s.ratio;
+  res.target.output_torque_Nm = s.output_torque_Nmm / 1000;
   // What was minimised: written for the efficiency objective only (absent: the outer diameter, so
   // that a default study's result.json stays as it was).
-  if (MinimisesLoss(s)) res["objective"] = "efficiency";
-  res["optimizer"] = {{"backend", optimizers::ToString(s.options.solver.backend)},
-                      {"constraints", s.form == LcrConstraintForm::kSamples ? "samples" : "aggregate"},
-                      {"polish", s.options.polish},
-                      {"samples_per_period", s.base.samples_per_period},
-                      {"sharpness", s.base.sharpness},
-                      {"starts", s.options.starts},
-                      {"value_evaluations", result.value_evaluations},
-                      {"gradient_evaluations", result.gradient_evaluations}};
-  nlohmann::json cj = nlohmann::json::array();
-  for (const auto& c : result.candidates) cj.push_back(CandidateJson(s, c));
-  res["candidates"] = cj;
+  if (MinimisesLoss(s)) res.objective = "efficiency";
+  res.optimizer.backend = optimizers::ToString(s.options.solver.backend);
+  res.optimizer.constraints = s.form == LcrConstraintForm::kSamples ? "samples" : "aggregate";
+  res.optimizer.polish = s.options.polish;
+  res.optimizer.samples_per_period = s.base.samples_per_period;
+  res.optimizer.sharpness = s.base.sharpness;
+  res.optimizer.starts = s.options.starts;
+  res.optimizer.value_evaluations = result.value_evaluations;
+  res.optimizer.gradient_evaluations = result.gradient_evaluations;
+  res.candidates.clear();
+  for (const auto& c : result.candidates) res.candidates.push_back(CandidateJson(s, c));
   // The verified-optimum contract: of the best design, or, when nothing fits, of the candidate
   // that failed its check.
   const objectives::Verification* verification = nullptr;
@@ -766,17 +943,18 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
     for (const Candidate& c : result.candidates)
       if (c.verification && !verification) verification = &*c.verification;
   if (verification) {
-    AddVerificationJson(*verification, res);
+    res.verified = verification->verified();
+    res.verification = VerificationBlock::Of(*verification);
   } else {
-    res["verified"] = false;
-    res["verification"] = {{"accurate_model", nullptr}, {"note", "no design to verify"}};
+    res.verified = false;
+    res.verification = VerificationBlock::NotRun("no design to verify");
   }
   if (result.best < 0) {
-    res["best"] = nullptr;
-    res["notes"] = {result.blocking_message};
-    if (s.contact3d) AddContact3DJson(s, result, res);
-    if (s.robust) RobustJson(s, result, res);
-    return res;
+    res.best = nullptr;
+    res.notes = std::vector<std::string>{result.blocking_message};
+    if (s.contact3d) AddContact3DJson(s, result);
+    if (s.robust) RobustJson(s, result);
+    return;
   }
   const Candidate& best = result.candidates[result.best];
   const lcr::Reducer<double>& r = *best.outcome.design;
@@ -887,10 +1065,9 @@ nlohmann::json ToJson(const Study& s, const Result& result) {
       g["momentary_met"] = momentary_met;
     }
   }
-  res["best"] = b;
-  if (s.contact3d) AddContact3DJson(s, result, res);
-  if (s.robust) RobustJson(s, result, res);
-  return res;
+  res.best = b;
+  if (s.contact3d) AddContact3DJson(s, result);
+  if (s.robust) RobustJson(s, result);
 }
 
 namespace {
@@ -996,7 +1173,7 @@ void AddSizedAssembly(const Study& s, const nlohmann::json& best, Outputs& out) 
 }  // namespace
 
 void Write(const Study& s, const Result& result, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, result));
+  out.AddJson("result.json", WriteResult(result));
   if (result.best >= 0) {
     // The best design as an lcr_analysis study, ready for `camopt run`.
     const Candidate& best = result.candidates[result.best];
@@ -1123,7 +1300,7 @@ void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 
 CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
 CAMOPT_REGISTER_STUDY_PARSER("lcr_min_size", [](const Node& root) { (void)Parse(root); });
-CAMOPT_REGISTER_DECLARED_KIND("lcr_min_size", Input, "camopt study: smallest lobe cam reducer for a ratio and torque");
+CAMOPT_REGISTER_KIND("lcr_min_size", Input, Result, "camopt study: smallest lobe cam reducer for a ratio and torque");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

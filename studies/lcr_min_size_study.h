@@ -32,6 +32,7 @@
 #include "studies/material_input.h"
 #include "studies/ratings_input.h"
 #include "studies/study.h"
+#include "studies/verification_json.h"
 
 namespace camopt::studies::lcr_min_size {
 
@@ -445,17 +446,104 @@ struct Result {
   std::optional<objectives::LcrMonteCarloCheck> robust_mc, nominal_mc;
   /// With Study::robust: the accurate check of the robust best design (its nominal limits).
   std::optional<objectives::Verification> robust_verification;
+
+  /// result.json, declared (studies/archive.h): Run fills it (FillResult; AddContact3DJson and
+  /// RobustJson add their parts). The candidates, the best designs, the 3D contact and the robust
+  /// block are raw JSON (their blocks are shared with lcr_analysis: SideJson, SubsurfaceJson,
+  /// LifeJson, SizedRatingsJson), described by their schemas (lcr_min_size_study.cc).
+  struct Json {
+    struct Target {
+      long speed_ratio = 0;
+      double output_torque_Nm = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("speed_ratio", &speed_ratio, Field().Desc("the study's target speed ratio r_i"));
+        a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("the study's output torque T_o"));
+      }
+    };
+    struct Optimizer {
+      std::string backend, constraints;
+      bool polish = true;
+      int samples_per_period = 0;
+      double sharpness = 0;
+      int starts = 0, value_evaluations = 0, gradient_evaluations = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp", "mma", "cobyla"}).Desc("the NLP solver"));
+        a->Visit("constraints", &constraints,
+                 Field().OneOf({"aggregate", "samples"}).Desc("form of the smooth phase's cycle maxima"));
+        a->Visit("polish", &polish, Field().Desc("every smooth optimum polished to the exact cycle maxima"));
+        a->Visit("samples_per_period", &samples_per_period, Field().Desc("angle samples per load period"));
+        a->Visit("sharpness", &sharpness, Field().Desc("log-sum-exp sharpness of the aggregates"));
+        a->Visit("starts", &starts, Field().Desc("starting points per combination"));
+        a->Visit("value_evaluations", &value_evaluations, Field().Desc("objective and constraint evaluations, all solves"));
+        a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("gradient evaluations, all solves"));
+      }
+    };
+    std::string study = "lcr_min_size", name;
+    Target target;
+    std::optional<std::string> objective;
+    Optimizer optimizer;
+    std::vector<nlohmann::json> candidates;
+    bool verified = false;
+    VerificationBlock verification;
+    nlohmann::json best;  ///< null when nothing fits
+    std::optional<nlohmann::json> nominal_best;
+    std::optional<std::vector<std::string>> notes;
+    std::optional<nlohmann::json> contact, robust;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("study", &study, Field().Const("lcr_min_size").Desc("the study kind"));
+      a->Visit("name", &name, Field().Desc("the study's name"));
+      a->Visit("target", &target, Field().Desc("the speed ratio and output torque sized for"));
+      a->Visit("objective", &objective,
+               Field().Const("efficiency").Desc("what was minimised, with the efficiency objective only (absent: the "
+                                                "outer diameter)"));
+      a->Visit("optimizer", &optimizer, Field().Desc("the solver settings and the evaluations of all solves"));
+      a->Visit("candidates", &candidates,
+               Field().Schema(CandidateSchema()).Desc("one per lobe/roller combination (and catalogue roller), in the "
+                                                      "order solved"));
+      a->Visit("verified", &verified,
+               Field().Desc("the accurate model holds the best design's limits (objectives/verification.h)"));
+      a->Visit("verification", &verification,
+               Field().Desc("the accurate model's check of the best design, or when nothing fits of the candidate "
+                            "that failed it"));
+      a->Visit("best", &best,
+               Field().Schema(BestSchema(true)).Desc(
+                   "the best design (with robust: the smallest robust design), null when nothing fits"));
+      a->Visit("nominal_best", &nominal_best,
+               Field().Schema(BestSchema(true)).Desc(
+                   "with robust: the best design of the study without tolerances, with its Monte-Carlo check (null: "
+                   "none)"));
+      a->Visit("notes", &notes, Field().Desc("when nothing fits: the limit that blocks most and what would fit"));
+      a->Visit("contact", &contact,
+               Field().Schema(ContactSchema()).Desc("with a 3D contact: the contact model and the crowning sized"));
+      a->Visit("robust", &robust,
+               Field().Schema(RobustSchema()).Desc("with robust: the method, the tolerances and every candidate's "
+                                                   "robust solve"));
+    }
+    /// The schemas of the raw blocks (lcr_min_size_study.cc).
+    static nlohmann::ordered_json CandidateSchema();
+    static nlohmann::ordered_json BestSchema(bool nullable);
+    static nlohmann::ordered_json ContactSchema();
+    static nlohmann::ordered_json RobustSchema();
+  };
+  Json json;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    json.Serialize(a);
+  }
 };
 
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
 /// The robust parts (studies/lcr_min_size_robust.cc): "tolerances", "robust", "monte_carlo" into s;
-/// the robust solves and checks into r; "best" (robust), "nominal_best" and "robust" into res.
+/// the robust solves and checks into r; "best" (robust), "nominal_best" and "robust" into r.json.
 void ParseRobust(const Input& in, const Node& root, Study& s);
 void RunRobust(const Study& s, Result& r, const RunContext& ctx);
-void RobustJson(const Study& s, const Result& r, nlohmann::json& res);
+void RobustJson(const Study& s, Result& r);
+/// Solves every combination and fills result.json's members (Result::json).
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// result.json, candidates.csv, outer_diameter.svg, best_lcr_analysis.json (when something fits);
 /// marks the outputs incomplete (exit code 3) when nothing fits.
 void Write(const Study& study, const Result& result, Outputs& out);

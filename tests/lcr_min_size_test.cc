@@ -429,7 +429,7 @@ TEST(LcrMinSize, OutputsAreByteIdentical) {
   ms::Study parsed;
   const ms::Result r = Solve(study, &parsed);
   EXPECT_EQ(camopt::testing::WithoutRunStamp(json::parse(text[0])).dump(2) + "\n",
-            ms::ToJson(parsed, r).dump(2) + "\n");
+            studies::WriteResult(r).dump(2) + "\n");
 }
 
 TEST(LcrMinSize, ProgressLineWithoutQuiet) {

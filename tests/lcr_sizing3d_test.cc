@@ -236,7 +236,7 @@ TEST(LcrSizing3D, CrownedSizingHoldsTheLimitsUnderAnIndependentCheck) {
   }
   // The 3D limit makes the reducer larger than the line model's optimum.
   EXPECT_GT(best.outcome.check->outer_diameter_mm, o3.line_outer_diameter_mm);
-  const json out = studies::lcr_min_size::ToJson(study, res);
+  const json out = studies::WriteResult(res);
   EXPECT_EQ(out["best"]["input"]["crowning"]["type"], "logarithmic");
   EXPECT_TRUE(out["best"].contains("half_space_check"));
 }
@@ -294,7 +294,7 @@ TEST(LcrSizing3D, CrownedExamplePrunesTheCombinationsAboveTheBest) {
   const auto study = studies::lcr_min_size::Parse(studies::Node(&j, "crowned.json", ""));
   const auto res = studies::lcr_min_size::Run(study, studies::RunContext("", true));
   ASSERT_GE(res.best, 0);
-  const json out = studies::lcr_min_size::ToJson(study, res);
+  const json out = studies::WriteResult(res);
   const double best = out["best"]["outer_diameter_mm"].get<double>();
   EXPECT_NEAR(best, 103.64474369403028, 1e-6);
   EXPECT_EQ(out["best"]["input"]["lobes"], 20);
