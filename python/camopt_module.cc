@@ -328,13 +328,15 @@ struct Result {
   std::map<std::string, std::string> contents;
 };
 
+// `result`: the run's result.json as JSON (Outputs::result), or nullptr to read it from `files`
+// (a sweep's folder).
 Result MakeResult(const json& study, std::map<std::string, std::string> files, const std::string& incomplete,
-                  const std::string& out) {
+                  const std::string& out, const json* result = nullptr) {
   Result r;
   r.kind = study.value("study", std::string());
   json rj = json::object();
-  const auto it = files.find("result.json");
-  if (it != files.end()) rj = json::parse(it->second, nullptr, false);
+  if (result) rj = *result;
+  else if (const auto it = files.find("result.json"); it != files.end()) rj = json::parse(it->second, nullptr, false);
   if (rj.is_object()) {
     r.result = ToPython(rj).cast<py::dict>();
     if (rj.contains("warnings") && rj["warnings"].is_array())
@@ -402,8 +404,7 @@ st::Outputs RunOutputs(const StudyData& s, const std::string& out, bool quiet, d
 py::dict ResultDict(const st::Outputs& outputs) {
   const auto& files = outputs.files();
   py::dict result;
-  const auto r = files.find("result.json");
-  if (r != files.end()) result = ToPython(json::parse(r->second)).cast<py::dict>();
+  if (outputs.result()) result = ToPython(*outputs.result()).cast<py::dict>();
   result["series"] = Tables(files);
   py::list names;
   for (const auto& [name, content] : files) names.append(name);
@@ -644,7 +645,7 @@ PYBIND11_MODULE(camopt, m) {
             const std::string folder = out.is_none() ? "" : FsPath(out);
             st::Outputs o = RunOutputs(s, folder, quiet, max_work_factor, progress);
             const std::string incomplete = o.incomplete();
-            return MakeResult(s.study, o.files(), incomplete, folder);
+            return MakeResult(s.study, o.files(), incomplete, folder, o.result());
           },
           py::arg("out") = py::none(), py::arg("progress") = py::none(), py::arg("quiet") = true,
           py::arg("max_work_factor") = 1.0,

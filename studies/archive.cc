@@ -184,16 +184,27 @@ DeclaredEcho FindDeclaredEcho(const std::string& kind) {
 
 namespace {
 
-std::map<std::string, std::string (*)()>& ResultRegistry() {
-  static std::map<std::string, std::string (*)()> registry;
+struct DeclaredResult {
+  std::string (*emit_schema)() = nullptr;
+  std::vector<std::string> (*run_fact_keys)() = nullptr;
+};
+
+std::map<std::string, DeclaredResult>& ResultRegistry() {
+  static std::map<std::string, DeclaredResult> registry;
   return registry;
 }
 
 }  // namespace
 
-bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)()) {
-  ResultRegistry()[kind] = emit_schema;
+bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)(),
+                          std::vector<std::string> (*run_fact_keys)()) {
+  ResultRegistry()[kind] = {emit_schema, run_fact_keys};
   return true;
+}
+
+std::vector<std::string> DeclaredRunFactKeys(const std::string& kind) {
+  const auto it = ResultRegistry().find(kind);
+  return it == ResultRegistry().end() ? std::vector<std::string>{} : it->second.run_fact_keys();
 }
 
 const std::string* DeclaredResultSchema(const std::string& kind) {
@@ -203,7 +214,7 @@ const std::string* DeclaredResultSchema(const std::string& kind) {
   const auto it = ResultRegistry().find(kind);
   if (it == ResultRegistry().end()) return nullptr;
   auto [text, fresh] = texts.try_emplace(kind);
-  if (fresh) text->second = it->second();
+  if (fresh) text->second = it->second.emit_schema();
   return &text->second;
 }
 

@@ -41,6 +41,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -55,6 +56,11 @@ namespace camopt::studies {
 /// A number of a result that may be ±inf or NaN (the stress of an undercut contact, an estimate
 /// not made): itself, or null in JSON.
 inline nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+/// The members of a declared result that decide the run's status (RunStudy, studies/status.h), each
+/// marked on its field with Field::Decides: a `converged` that is false gives "not_converged", a
+/// `feasible` that is false "infeasible", and the `warning` is the reason given with either.
+enum class RunFact { kNone, kConverged, kFeasible, kWarning };
 
 /// What a declared field accepts and how it is documented, besides its C++ type. Built with
 /// chained calls: `Field().Required().Positive().Unit("mm").Desc("…")`.
@@ -138,6 +144,10 @@ class Field {
   /// A std::optional result member that is always in result.json, null when unset (a covariance
   /// that does not exist): required and nullable in the result's schema.
   Field& NullWhenAbsent() { null_when_absent = true; return *this; }
+  /// A result member that decides the run's status (a top-level bool for kConverged and
+  /// kFeasible, a string for kWarning; std::optional when a stage may not set it): RunStudy reads
+  /// it from the typed Result (CollectRunFacts), never from result.json's text.
+  Field& Decides(RunFact fact) { run_fact = fact; return *this; }
 
   std::string desc, unit;
   bool required = false;
@@ -153,6 +163,7 @@ class Field {
   nlohmann::ordered_json schema;      ///< null: none
   bool null_when_not_finite = false;
   bool null_when_absent = false;
+  RunFact run_fact = RunFact::kNone;
 };
 
 namespace archive_detail {
@@ -467,6 +478,61 @@ class ResultWriter {
   std::string path_;
 };
 
+/// What a declared result says about its own status (the members marked Field::Decides): unset
+/// when the result has no such member or the stage that sets it did not run.
+struct RunFacts {
+  std::optional<bool> converged, feasible;
+  std::string warning;
+};
+
+/// Reads the members of a declared result marked Field::Decides (top level: a forwarding
+/// Serialize, as disc_cam's Result::Json, is the top level too) into RunFacts, and their names.
+class RunFactCollector {
+ public:
+  template <typename T>
+  void Visit(const char* name, T* value, const Field& f) {
+    if (f.run_fact == RunFact::kNone) return;
+    keys.push_back(name);
+    using V = std::conditional_t<archive_detail::IsOptional<T>::value, typename OptionalValue<T>::type, T>;
+    const V* v = nullptr;
+    if constexpr (archive_detail::IsOptional<T>::value) v = *value ? &**value : nullptr;
+    else v = value;
+    if constexpr (std::is_same_v<V, bool>) {
+      if (f.run_fact == RunFact::kConverged) { if (v) facts.converged = *v; return; }
+      if (f.run_fact == RunFact::kFeasible) { if (v) facts.feasible = *v; return; }
+    } else if constexpr (std::is_same_v<V, std::string>) {
+      if (f.run_fact == RunFact::kWarning) { if (v) facts.warning = *v; return; }
+    }
+    throw std::logic_error(std::string("result member ") + name +
+                           ": Decides(kConverged | kFeasible) needs a bool, Decides(kWarning) a string");
+  }
+  void Retired(const char*, const char*) {}
+  void Alias(const char*, const char*) {}
+  RunFacts facts;
+  std::vector<std::string> keys;
+
+ private:
+  template <typename T> struct OptionalValue { using type = T; };
+  template <typename T> struct OptionalValue<std::optional<T>> { using type = T; };
+};
+
+/// The status-deciding members of a declared result (RunFactCollector).
+template <typename T>
+RunFacts CollectRunFacts(const T& result) {
+  RunFactCollector c;
+  const_cast<T&>(result).Serialize(&c);  // Serialize is not const; the collector only reads
+  return c.facts;
+}
+
+/// The result.json keys of T that decide the status (for the registry and its test).
+template <typename T>
+std::vector<std::string> RunFactKeys() {
+  RunFactCollector c;
+  T value{};
+  value.Serialize(&c);
+  return c.keys;
+}
+
 /// Emits the JSON Schema of a declared result: a member not std::optional is always present
 /// (`required`), every object closed (`"additionalProperties": false`), each number's unit in its
 /// description.
@@ -567,8 +633,13 @@ nlohmann::ordered_json EmitResultSchema(const std::string& kind, const std::stri
   return s;
 }
 
-/// Registers the result schema of a kind (CAMOPT_REGISTER_KIND does it); returns true.
-bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)());
+/// Registers the result schema of a kind and the keys that decide its status (CAMOPT_REGISTER_KIND
+/// does it); returns true.
+bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)(),
+                          std::vector<std::string> (*run_fact_keys)());
+/// The top-level result.json keys of a declared kind marked Field::Decides (empty when none or
+/// not declared).
+std::vector<std::string> DeclaredRunFactKeys(const std::string& kind);
 /// The result schema text of a kind whose result is declared, or nullptr.
 const std::string* DeclaredResultSchema(const std::string& kind);
 /// The kinds whose result is declared, sorted.
@@ -645,4 +716,4 @@ DeclaredEcho FindDeclaredEcho(const std::string& kind);
                                                                          title)                 \
                    .dump(2) +                                                                   \
                "\n";                                                                            \
-      })
+      }, &::camopt::studies::RunFactKeys<ResultType>)

@@ -106,9 +106,8 @@ void InstallJsonProgress() {
 // 24): first the top-level numbers, flags and short strings, then from the objects one level down
 // the extremes and verdicts (max…, min…, mean…, …_ok, feasible, converged).
 void PrintSummary(const std::string& out_dir, const std::string& study_file, const camopt::studies::RunAnswer& answer) {
-  std::ifstream in(std::filesystem::path(out_dir) / "result.json");
-  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
-  if (!r.is_object()) return;
+  if (!answer.result || !answer.result->is_object()) return;
+  const nlohmann::json& r = *answer.result;
   std::cout << "camopt: " << r.value("study", std::string("study"));
   if (r.contains("name") && r["name"].is_string()) std::cout << " \"" << r["name"].get<std::string>() << "\"";
   std::cout << "\n";

@@ -59,9 +59,8 @@ struct Ran {
 };
 
 std::vector<double> HeadlineValues(const Outputs& outputs, const std::vector<std::string>& headlines) {
-  json result;
-  const auto it = outputs.files().find("result.json");
-  if (it != outputs.files().end()) result = json::parse(it->second, nullptr, false);
+  static const json kNone;
+  const json& result = outputs.result() ? *outputs.result() : kNone;
   std::vector<double> values;
   for (const std::string& h : headlines) {
     double v = kNaN;

@@ -751,7 +751,7 @@ Result Run(const Study& s, const RunContext& ctx) {
 
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   // Without a feasible coefficient, result.json's "feasible": false gives "infeasible" (RunStudy).
   if (r.feasible) {
     const bool converged = r.status == "converged";

@@ -309,7 +309,7 @@ struct Result {
     a->Visit("estimated_error", &error_values, Field().Desc("the accurate model's error estimate of each tuned output"));
     a->Visit("warnings", &warnings, Field());
     a->Visit("search_status", &status, Field().Desc("the search's end (`status` is the answer's)"));
-    a->Visit("feasible", &feasible, Field().Desc("a point met the edge margin"));
+    a->Visit("feasible", &feasible, Field().Desc("a point met the edge margin").Decides(RunFact::kFeasible));
     a->Visit("tuned_coefficient_mm", &tuned_coefficient_mm, Field().Unit("mm"));
     a->Visit("tuned_effective_length_mm", &tuned_effective_length_mm, Field().Unit("mm"));
     a->Visit("end_drop_mm", &end_drop_mm, Field().Unit("mm"));

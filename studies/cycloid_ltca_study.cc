@@ -1328,7 +1328,7 @@ void WriteToleranceFiles(const Result& r, Outputs& out) {
 }
 
 void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   std::vector<double> col_angle;
   for (double a : s.crank_angles_rad) col_angle.push_back(a * 180.0 / kPi);
   Table table;
@@ -1823,7 +1823,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   const CycleResult& cycle = r.cycle;
   const int n1 = s.drive.rollers;
   const size_t n = r.crank_angles_rad.size();
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   if (!r.efficiency_map.empty()) WriteEfficiencyMap(r.efficiency_map, s.lubrication->common.map->torque_Nm, out);
 
   Table table;

@@ -681,8 +681,10 @@ struct Result {
     a->Visit("grid", &grid, Field().Desc("contact cells across the profile and along the face (loaded stage)"));
     a->Visit("composite_modulus_MPa", &composite_modulus_out, Field().Unit("MPa").Desc("E* (loaded stage)"));
     a->Visit("contact_solves", &contact_solves, loaded);
-    a->Visit("converged", &converged, Field().Desc("every crank angle's contact converged (loaded stage)"));
-    a->Visit("warning", &warning_out, Field().Desc("the first angle that did not converge, or empty (loaded stage)"));
+    a->Visit("converged", &converged,
+             Field().Desc("every crank angle's contact converged (loaded stage)").Decides(RunFact::kConverged));
+    a->Visit("warning", &warning_out,
+             Field().Desc("the first angle that did not converge, or empty (loaded stage)").Decides(RunFact::kWarning));
     a->Visit("estimated_error", &error_values,
              Field().Desc("estimated discretisation error of each headline, by its name, in its unit (loaded stage)"));
     a->Visit("estimated_error_sources", &estimated_error_sources, Field().Desc("the error's parts (loaded stage)"));

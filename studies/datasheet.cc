@@ -100,10 +100,9 @@ void AddDatasheet(const std::string& kind, Outputs& outputs) {
   const auto it = Datasheets().find(kind);
   if (it == Datasheets().end()) return;
   const auto& files = outputs.files();
-  const auto r = files.find("result.json");
-  if (r == files.end()) return;
-  const nlohmann::json result = nlohmann::json::parse(r->second, nullptr, false);
-  if (result.is_discarded() || !At(result, it->second.when_pointer)) return;
+  if (!outputs.result()) return;
+  const nlohmann::json& result = *outputs.result();
+  if (!At(result, it->second.when_pointer)) return;
   std::vector<std::pair<std::string, std::string>> figures;
   for (const std::string& f : it->second.figures)
     if (const auto svg = files.find(f); svg != files.end()) figures.emplace_back(f, svg->second);

@@ -388,7 +388,7 @@ void AddProfileDrawing(const Study& s, const objectives::DiscCamMinSizeOutcome& 
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   const objectives::DiscCamMinSizeOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   if (o.x.empty()) return;

@@ -540,7 +540,7 @@ void FillResult(const Study& s, Result& r) {
 }  // namespace
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   const sizing::DiscCamMotionOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   if (o.x.empty()) return;

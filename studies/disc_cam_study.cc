@@ -1479,7 +1479,7 @@ void FillResult(const Study& s, Result& r) {
 }  // namespace
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   WritePlanarCamFiles(r.profile_files, s.geometry, out);
   for (const auto& [name, csv] : r.inspection_files) out.Add("inspection/" + name + ".csv", csv);
   const DiscCam& cam = s.cam;

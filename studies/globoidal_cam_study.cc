@@ -466,7 +466,7 @@ Result Run(const Study& s, const RunContext& ctx) {
 
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   const auto& t = r.series;
   const auto& th = t.cam_angle_deg;
 

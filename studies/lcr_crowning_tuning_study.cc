@@ -366,7 +366,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
   out.Add("stress_vs_coefficient.svg",
           SvgLinePlot(curves, {"Largest contact pressure at the design torque (worst misalignment), slices model",
                                "logarithmic crowning coefficient f [mm]", "contact pressure [MPa]"}));
-  out.AddJson("result.json", WriteResult(res));
+  out.SetResult(res);
   std::string infeasible;
   for (int k = 0; k < 2; ++k)
     if (!res.tuned[k].feasible) infeasible += std::string(infeasible.empty() ? "" : "; ") + (k == 0 ? "input" : "output") +

@@ -172,7 +172,7 @@ Result Run(const Study& st, const RunContext& ctx) {
 }
 
 void Write(const Study& st, const Result& res, Outputs& out) {
-  out.AddJson("result.json", WriteResult(res));
+  out.SetResult(res);
   if (res.fit.status != optimizers::SolverStatus::kConverged)
     out.SetStatus(Status::kNotConverged, std::string("the fit stopped: ") + optimizers::ToString(res.fit.status));
   std::vector<double> to, tin, tsd, tfit, resid;

@@ -1173,7 +1173,7 @@ void AddSizedAssembly(const Study& s, const nlohmann::json& best, Outputs& out) 
 }  // namespace
 
 void Write(const Study& s, const Result& result, Outputs& out) {
-  out.AddJson("result.json", WriteResult(result));
+  out.SetResult(result);
   if (result.best >= 0) {
     // The best design as an lcr_analysis study, ready for `camopt run`.
     const Candidate& best = result.candidates[result.best];

@@ -360,11 +360,8 @@ std::string VerdictOf(const HeadlineTable& table, const nlohmann::json& result) 
 
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs) {
   const auto& files = outputs.files();
-  nlohmann::json result = nlohmann::json::object();
-  if (const auto it = files.find("result.json"); it != files.end()) {
-    result = nlohmann::json::parse(it->second, nullptr, false);
-    if (result.is_discarded()) result = nlohmann::json::object();
-  }
+  static const nlohmann::json kNone = nlohmann::json::object();
+  const nlohmann::json& result = outputs.result() && outputs.result()->is_object() ? *outputs.result() : kNone;
   std::string name = study.is_object() && study.contains("name") && study["name"].is_string()
                          ? study["name"].get<std::string>()
                          : "";
@@ -506,10 +503,9 @@ std::string PlainName(const std::string& kind, const std::string& pointer) {
 }
 
 void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs) {
-  const auto& files = outputs.files();
-  if (const auto it = files.find("result.json"); it != files.end()) {
-    const nlohmann::json result = nlohmann::json::parse(it->second, nullptr, false);
-    const auto lives = result.is_discarded() ? decltype(LifeTables(result)){} : LifeTables(result);
+  if (const nlohmann::json* r = outputs.result()) {
+    const nlohmann::json& result = *r;
+    const auto lives = LifeTables(result);
     for (size_t i = 0; i < lives.size(); ++i) {
       const nlohmann::json& life = *lives[i].second;
       const double limit = life.contains("life_h") && life["life_h"].is_number() ? life["life_h"].get<double>() : 0.0;

@@ -505,6 +505,40 @@ void CheckStudy(const nlohmann::json& study, const std::string& file) {
   it->second(root);
 }
 
+void SettleStatus(const std::string& kind, const nlohmann::json& study, Outputs& outputs) {
+  if (!outputs.result()) {
+    if (!outputs.status()) outputs.SetStatus(Status::kLimitsMet);
+    return;
+  }
+  const nlohmann::json& r = *outputs.result();
+  const RunFacts& facts = outputs.run_facts();
+  const std::string& why = facts.warning;
+  if (!outputs.status() && facts.converged == false)
+    outputs.SetStatus(Status::kNotConverged, kind + ": not converged" + (why.empty() ? "" : ": " + why));
+  if (!outputs.status() && facts.feasible == false)
+    outputs.SetStatus(Status::kInfeasible, kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
+  const HeadlineTable table = EvaluateHeadlines(kind, study, r);
+  if (!outputs.status() && table.exceeded.empty()) outputs.SetStatus(Status::kLimitsMet);
+  if (!outputs.status())
+    outputs.SetStatus(Status::kLimitsExceeded, VerdictLine(table, Status::kLimitsExceeded, ""));
+  // Asked means answered: a block the study asks for and result.json lacks is an incomplete
+  // answer, never exit 0 (a sizing without a design is already exit 3: its blocks have nothing
+  // to be computed on).
+  if (const std::vector<std::string> missing = MissingAnswers(kind, study, r);
+      !missing.empty() && ExitCode(*outputs.status(), false) == 0) {
+    std::string list;
+    for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+    outputs.SetStatus(Status::kNotConverged, kind + ": asked for but not computed: " + list +
+                                                 (why.empty() ? "" : " (" + why + ")"));
+  }
+  // A verified answer whose own headlines break a limit would say two things: the verdict's
+  // limits are the ones the verification must have checked.
+  if (IsVerified(*outputs.status()) && !table.exceeded.empty())
+    outputs.SetStatus(Status::kNotVerifiable,
+                      "the verification passed but " + VerdictLine(table, Status::kLimitsExceeded, "") +
+                          " (the accurate check and the headline limits disagree: a camopt defect, please report it)");
+}
+
 Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   const Node root(&study, ctx.study_file, "");
   const std::string kind = CheckCommonFields(root);
@@ -527,55 +561,37 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
                      "study whose result " + e.what() + " is not a finite number (check for " +
                      "extreme sizes, such as 1e308 mm or 1e-6 mm)");
   }
-  // The one status of the answer (studies/status.h): a sizing or tuning kind set its own; a kind
-  // whose result says it did not converge (or found nothing feasible) gets that, for every kind
-  // alike with the kind's own warning as the reason; an analysis gets its verdict's.
-  std::vector<PhaseTime> status_phase;
+  // The one status of the answer (SettleStatus), stamped on the result, which is then written once.
   const double status_cpu = ProcessCpuSeconds(), status_wall = WallSeconds();
-  const auto result = outputs.files().find("result.json");
-  if (result != outputs.files().end()) {
-    const nlohmann::json r = nlohmann::json::parse(result->second, nullptr, false);
-    if (r.is_object()) {
-      std::string why;
-      if (r.contains("warning") && r["warning"].is_string()) why = r["warning"].get<std::string>();
-      if (!outputs.status() && r.contains("converged") && r["converged"] == false)
-        outputs.SetStatus(Status::kNotConverged, kind + ": not converged" + (why.empty() ? "" : ": " + why));
-      if (!outputs.status() && r.contains("feasible") && r["feasible"] == false)
-        outputs.SetStatus(Status::kInfeasible, kind + ": no feasible design" + (why.empty() ? "" : ": " + why));
-      const HeadlineTable table = EvaluateHeadlines(kind, study, r);
-      if (!outputs.status() && table.exceeded.empty()) outputs.SetStatus(Status::kLimitsMet);
-      if (!outputs.status())
-        outputs.SetStatus(Status::kLimitsExceeded, VerdictLine(table, Status::kLimitsExceeded, ""));
-      // Asked means answered: a block the study asks for and result.json lacks is an incomplete
-      // answer, never exit 0 (a sizing without a design is already exit 3: its blocks have nothing
-      // to be computed on).
-      if (const std::vector<std::string> missing = MissingAnswers(kind, study, r);
-          !missing.empty() && ExitCode(*outputs.status(), false) == 0) {
-        std::string list;
-        for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
-        outputs.SetStatus(Status::kNotConverged, kind + ": asked for but not computed: " + list +
-                                                     (why.empty() ? "" : " (" + why + ")"));
+  // Until every kind sets its declared result (Outputs::SetResult), a kind's hand-written
+  // result.json is read back once here; its facts are the same top-level keys.
+  if (!outputs.result())
+    if (const auto raw = outputs.files().find("result.json"); raw != outputs.files().end()) {
+      nlohmann::json r = nlohmann::json::parse(raw->second, nullptr, false);
+      RunFacts facts;
+      if (r.is_object()) {
+        if (r.contains("converged") && r["converged"].is_boolean()) facts.converged = r["converged"].get<bool>();
+        if (r.contains("feasible") && r["feasible"].is_boolean()) facts.feasible = r["feasible"].get<bool>();
+        if (r.contains("warning") && r["warning"].is_string()) facts.warning = r["warning"].get<std::string>();
+        outputs.SetResultJson(std::move(r), std::move(facts));
       }
-      // A verified answer whose own headlines break a limit would say two things: the verdict's
-      // limits are the ones the verification must have checked.
-      if (IsVerified(*outputs.status()) && !table.exceeded.empty())
-        outputs.SetStatus(Status::kNotVerifiable,
-                          "the verification passed but " + VerdictLine(table, Status::kLimitsExceeded, "") +
-                              " (the accurate check and the headline limits disagree: a camopt defect, please report it)");
-      // Provenance and the warnings, the same three fields for every kind (studies/provenance.h).
-      nlohmann::json stamped = r;
-      stamped["status"] = StatusName(*outputs.status());
-      if (!outputs.status_reason().empty()) stamped["status_reason"] = outputs.status_reason();
-      else stamped.erase("status_reason");
-      // "verified" is a view of the status: a kind that verifies cannot say it beside exit 3.
-      if (stamped.contains("verified")) stamped["verified"] = IsVerified(*outputs.status());
-      stamped["camopt_version"] = CamoptVersion();
-      stamped["study_sha256"] = ctx.study_sha256.empty() ? Sha256Hex(study.dump()) : ctx.study_sha256;
-      nlohmann::json& warnings = stamped["warnings"];
-      if (!warnings.is_array()) warnings = nlohmann::json::array();
-      for (const auto& w : implausible) warnings.push_back(w);
-      outputs.AddJson("result.json", stamped);
     }
+  if (nlohmann::json* result = outputs.result()) {
+    SettleStatus(kind, study, outputs);
+    // Provenance and the warnings, the same fields for every kind (studies/provenance.h), added
+    // to the result itself: result.json is written once.
+    nlohmann::json& stamped = *result;
+    stamped["status"] = StatusName(*outputs.status());
+    if (!outputs.status_reason().empty()) stamped["status_reason"] = outputs.status_reason();
+    else stamped.erase("status_reason");
+    // "verified" is a view of the status: a kind that verifies cannot say it beside exit 3.
+    if (stamped.contains("verified")) stamped["verified"] = IsVerified(*outputs.status());
+    stamped["camopt_version"] = CamoptVersion();
+    stamped["study_sha256"] = ctx.study_sha256.empty() ? Sha256Hex(study.dump()) : ctx.study_sha256;
+    nlohmann::json& warnings = stamped["warnings"];
+    if (!warnings.is_array()) warnings = nlohmann::json::array();
+    for (const auto& w : implausible) warnings.push_back(w);
+    outputs.AddJson("result.json", stamped);
   }
   if (!outputs.status()) outputs.SetStatus(Status::kLimitsMet);
   outputs.phases().push_back({"status", ProcessCpuSeconds() - status_cpu, WallSeconds() - status_wall});
@@ -612,7 +628,8 @@ RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, cons
   Outputs outputs = RunStudy(study, c);
   outputs.phases().insert(outputs.phases().begin(), read.front());
   Timed(outputs.phases(), "write", [&] { folder.Commit(outputs); });
-  const RunAnswer answer{*outputs.status(), outputs.status_reason(), outputs.phases()};
+  const RunAnswer answer{*outputs.status(), outputs.status_reason(), outputs.phases(),
+                         outputs.result() ? std::make_shared<const nlohmann::json>(*outputs.result()) : nullptr};
   if (ExitCode(answer.status, ctx.strict) != 0) throw StudyIncomplete(answer);
   return answer;
 }

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "optimizers/cancel.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/status.h"
 
@@ -132,6 +134,24 @@ class Outputs {
   void Add(const std::string& name, std::string content) { files_[name] = std::move(content); }
   void AddJson(const std::string& name, const nlohmann::json& value);
   const std::map<std::string, std::string>& files() const { return files_; }
+
+  /// result.json, from the kind's declared Result (WriteResult) with the members that decide the
+  /// status (CollectRunFacts): RunStudy reads the status from them, adds its stamp (status,
+  /// version, hash, warnings) and writes the file once. @throws NonFiniteResult (WriteResult).
+  template <typename R>
+  void SetResult(const R& result) {
+    SetResultJson(WriteResult(result), CollectRunFacts(result));
+  }
+  /// result.json as JSON with its facts (SetResult; RunStudy's stamped result).
+  void SetResultJson(nlohmann::json result, RunFacts facts = {}) {
+    result_ = std::move(result);
+    facts_ = std::move(facts);
+  }
+  /// result.json as JSON (after RunStudy: as written, stamp included), or nullptr when the run
+  /// made none.
+  const nlohmann::json* result() const { return result_ ? &*result_ : nullptr; }
+  nlohmann::json* result() { return result_ ? &*result_ : nullptr; }
+  const RunFacts& run_facts() const { return facts_; }
   /// Writes every file into dir at once (an OutputFolder: temporary sibling folder, one rename).
   void WriteAll(const std::string& dir) const;
 
@@ -156,6 +176,8 @@ class Outputs {
 
  private:
   std::map<std::string, std::string> files_;
+  std::optional<nlohmann::json> result_;
+  RunFacts facts_;
   std::optional<Status> status_;
   std::string status_reason_;
   std::vector<PhaseTime> phases_;
@@ -169,6 +191,7 @@ struct RunAnswer {
   Status status = Status::kLimitsMet;
   std::string reason;
   std::vector<PhaseTime> phases;  ///< read, checks, parse, solve, files, status, report, write
+  std::shared_ptr<const nlohmann::json> result;  ///< result.json as written (null: none)
 };
 
 class StudyIncomplete : public std::runtime_error {
@@ -302,6 +325,13 @@ const FidelityOf* FindFidelity(const std::string& kind);
 /// StudyIncomplete after writing a result whose status gives exit 3 (ctx.strict included), and
 /// std::exception for other failures.
 RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx);
+
+/// The one status of a run's answer (studies/status.h), from its typed facts and its result
+/// (Outputs::SetResult): a sizing or tuning kind has set its own; a result whose facts say it did
+/// not converge (or found nothing feasible) gets that, with the kind's own warning as the reason;
+/// an analysis gets its verdict's (EvaluateHeadlines over the kind's limits); an asked-for block
+/// the result lacks is not_converged; a verified answer over a headline limit not_verifiable.
+void SettleStatus(const std::string& kind, const nlohmann::json& study, Outputs& outputs);
 
 /// Runs an already parsed study, returning its outputs without writing them. result.json gets
 /// "camopt_version", "study_sha256" and "warnings" (the kind's own and PlausibilityWarnings of

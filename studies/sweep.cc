@@ -277,8 +277,7 @@ CaseRecord RunCase(const Sweep& s, size_t index, const std::vector<json>& inputs
     Outputs out = RunStudy(CaseStudy(s, inputs), c);
     r.status = out.incomplete().empty() ? "ok" : "incomplete";
     r.message = out.incomplete();
-    const auto it = out.files().find("result.json");
-    const json result = it == out.files().end() ? json() : json::parse(it->second);
+    const json result = out.result() ? *out.result() : json();
     for (size_t k = 0; k < s.outputs.size(); ++k) {
       const Pointer p(s.outputs[k].path);
       if (!result.contains(p)) continue;

@@ -414,7 +414,7 @@ Result Run(const Study& study, const RunContext& ctx) {
 }
 
 void Write(const Study& study, const Result& res, Outputs& out) {
-  out.AddJson("result.json", WriteResult(res));
+  out.SetResult(res);
   const auto& r = res.chain;
   // CSV: one row per element; infinite rigidities (rigid elements) are written as "inf".
   Table table;

@@ -158,7 +158,7 @@ TEST(SvgBarChart, BarsFromZeroToTheirValueWithTheLimitAndNotesUnder) {
 
 Outputs SampleOutputs(double stress) {
   Outputs out;
-  out.AddJson("result.json", {{"max_stress_MPa", stress},
+  out.SetResultJson({{"max_stress_MPa", stress},
                               {"limit_MPa", 1500.0},
                               {"margin_mm", 0.2},
                               {"warnings", {"roller <b> is small"}},
@@ -214,7 +214,7 @@ TEST(HtmlReport, LimitsMetWithALimitNotSetIsNotGreen) {
                             {"margin", "/margin_mm", "mm", "/limit_mm", NAN, false}});
   ASSERT_TRUE(registered);
   Outputs out;
-  out.AddJson("result.json", {{"max_stress_MPa", 7682.0}, {"margin_mm", 0.5}, {"limit_mm", 0.0}});
+  out.SetResultJson({{"max_stress_MPa", 7682.0}, {"margin_mm", 0.5}, {"limit_mm", 0.0}});
   // The study sets no stress limit: the one limit set is met, the stress is named as not checked,
   // and the banner is amber, not green.
   const std::string unset = HtmlReport("report_test_unset", {{"name", "x"}}, out);
@@ -266,17 +266,17 @@ TEST(HtmlReport, UnregisteredKindShowsTopLevelNumbers) {
 // the verdict says so with the result's reason, not "No limits to check".
 TEST(HtmlReport, ASizingResultWithoutADesignSaysSoInsteadOfNoLimits) {
   Outputs out;
-  out.AddJson("result.json", {{"best", nullptr}, {"notes", {"edge-loaded: crown the rollers"}}});
+  out.SetResultJson({{"best", nullptr}, {"notes", {"edge-loaded: crown the rollers"}}});
   const HeadlineTable table = EvaluateHeadlines("report_test_kind", {{"name", "n"}},
-                                                nlohmann::json::parse(out.files().at("result.json")));
+                                                *out.result());
   EXPECT_TRUE(table.no_design);
   EXPECT_EQ(VerdictOf(table, nlohmann::json::object()), "No design meets the limits: edge-loaded: crown the rollers");
   const std::string html = HtmlReport("report_test_kind", {{"name", "n"}}, out);
   EXPECT_NE(html.find("<div class=\"verdict bad\">No design meets the limits: edge-loaded"), std::string::npos);
   EXPECT_EQ(html.find("No limits to check"), std::string::npos);
   Outputs bare;
-  bare.AddJson("result.json", {{"best", nullptr}});
-  EXPECT_EQ(VerdictOf(EvaluateHeadlines("report_test_kind", {}, nlohmann::json::parse(bare.files().at("result.json"))),
+  bare.SetResultJson({{"best", nullptr}});
+  EXPECT_EQ(VerdictOf(EvaluateHeadlines("report_test_kind", {}, *bare.result()),
                       nlohmann::json::object()),
             "No design meets the limits (result.json: best is null)");
 }
@@ -304,7 +304,7 @@ Outputs LifeOutputs() {
      "reference_pressure_MPa": 1500, "L10h": 1000, "pass": true},
     {"element": "idle_roller", "kind": "roller", "equivalent_load_N": 0, "dynamic_rating_N": 3300, "L10h": null,
      "pass": true}])");
-  out.AddJson("result.json", {{"best", {{"life", {{"life_h", 1000.0}, {"table", table}}}}}});
+  out.SetResultJson({{"best", {{"life", {{"life_h", 1000.0}, {"table", table}}}}}});
   return out;
 }
 

@@ -7,6 +7,8 @@
 // python/tests/test_schemas.py.)
 #include <algorithm>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -114,6 +116,117 @@ TEST(ResultSchema, EveryPointerIntoAResultNamesADeclaredMember) {
       }
     }
     EXPECT_GT(checked, 0);
+  }
+}
+
+// The members that decide a run's status are marked on their declaration (Field::Decides), so the
+// status is read from the typed result: a kind that writes a top-level converged, feasible or
+// warning without the mark would have its status silently ignored.
+TEST(ResultSchema, EveryTopLevelConvergedFeasibleOrWarningDecidesTheStatus) {
+  size_t marked = 0;
+  for (const std::string& kind : KindsWithDeclaredResult()) {
+    SCOPED_TRACE(kind);
+    const ordered_json s = ResultSchemaOf(kind);
+    std::vector<std::string> named;
+    for (const char* key : {"converged", "feasible", "warning"})
+      if (s["properties"].contains(key)) named.push_back(key);
+    std::vector<std::string> keys = DeclaredRunFactKeys(kind);
+    std::sort(keys.begin(), keys.end());
+    std::sort(named.begin(), named.end());
+    EXPECT_EQ(keys, named);
+    marked += keys.size();
+  }
+  EXPECT_GE(marked, 3u);  // cycloid_ltca's converged and warning, cycloid_crowning_tuning's feasible
+}
+
+// A small declared result: its facts come from the members marked Decides, typed, wherever the
+// Serialize puts them; an unmarked member of the same name decides nothing.
+struct FactsResult {
+  struct Block {
+    bool converged = false;
+    template <typename Archive>
+    void Serialize(Archive* a) { a->Visit("converged", &converged, Field()); }
+  };
+  std::optional<bool> converged;
+  bool feasible = true;
+  std::optional<std::string> warning;
+  Block nested;
+  double value = 1.5;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("value", &value, Field().Unit("mm"));
+    a->Visit("nested", &nested, Field());
+    a->Visit("converged", &converged, Field().Decides(RunFact::kConverged));
+    a->Visit("feasible", &feasible, Field().Decides(RunFact::kFeasible));
+    a->Visit("warning", &warning, Field().Decides(RunFact::kWarning));
+  }
+};
+
+struct WrongFact {
+  double converged = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) { a->Visit("converged", &converged, Field().Decides(RunFact::kConverged)); }
+};
+
+TEST(ResultSchema, RunFactsAreReadFromTheTypedResult) {
+  FactsResult r;
+  RunFacts f = CollectRunFacts(r);
+  EXPECT_FALSE(f.converged.has_value());  // the stage that sets it did not run
+  EXPECT_EQ(f.feasible, std::optional<bool>(true));
+  EXPECT_EQ(f.warning, "");
+  r.converged = false;
+  r.feasible = false;
+  r.warning = "angle 3 did not converge";
+  r.nested.converged = true;
+  f = CollectRunFacts(r);
+  EXPECT_EQ(f.converged, std::optional<bool>(false));
+  EXPECT_EQ(f.feasible, std::optional<bool>(false));
+  EXPECT_EQ(f.warning, "angle 3 did not converge");
+  EXPECT_EQ(RunFactKeys<FactsResult>(), (std::vector<std::string>{"converged", "feasible", "warning"}));
+  EXPECT_THROW((void)CollectRunFacts(WrongFact{}), std::logic_error);
+}
+
+// The status follows the typed facts, not result.json's text: a result whose converged member
+// is false is not_converged with its warning as the reason, whatever its JSON says; infeasible
+// likewise; without facts an analysis of a kind with no limits meets them.
+TEST(ResultSchema, TheStatusFollowsTheTypedFacts) {
+  const nlohmann::json study = {{"study", "no_kind_for_facts"}};
+  {
+    FactsResult r;
+    r.converged = false;
+    r.warning = "angle 3 did not converge";
+    Outputs out;
+    out.SetResult(r);
+    EXPECT_EQ((*out.result())["converged"], false);
+    EXPECT_EQ((*out.result())["value"], 1.5);
+    SettleStatus("no_kind_for_facts", study, out);
+    ASSERT_TRUE(out.status().has_value());
+    EXPECT_EQ(*out.status(), Status::kNotConverged);
+    EXPECT_EQ(out.status_reason(), "no_kind_for_facts: not converged: angle 3 did not converge");
+  }
+  {
+    FactsResult r;
+    r.feasible = false;
+    Outputs out;
+    out.SetResult(r);
+    SettleStatus("no_kind_for_facts", study, out);
+    EXPECT_EQ(*out.status(), Status::kInfeasible);
+    EXPECT_EQ(out.status_reason(), "no_kind_for_facts: no feasible design");
+  }
+  {
+    Outputs out;  // the same keys as raw JSON decide nothing: only declared members do
+    out.SetResultJson({{"converged", false}, {"feasible", false}});
+    SettleStatus("no_kind_for_facts", study, out);
+    EXPECT_EQ(*out.status(), Status::kLimitsMet);
+  }
+  {
+    FactsResult r;  // a kind's own status stands
+    r.converged = false;
+    Outputs out;
+    out.SetResult(r);
+    out.SetStatus(Status::kFeasibleVerified);
+    SettleStatus("no_kind_for_facts", study, out);
+    EXPECT_EQ(*out.status(), Status::kFeasibleVerified);
   }
 }
 
