@@ -96,8 +96,11 @@ struct Input {
                    .Desc("the stages to run: [\"unloaded\"] the unloaded TCA only (no material or load needed); "
                          "absent: the loaded stage, which includes the unloaded one"));
     }
-    static nlohmann::ordered_json SchemaRules() {
-      return {{"dependentRequired", {{"crank_span_deg", {"crank_angle_steps"}}}}};
+    static nlohmann::ordered_json SchemaRules() {  // one sampling at most; the span only with steps
+      return {{"dependentRequired", {{"crank_span_deg", {"crank_angle_steps"}}}},
+              {"not", {{"anyOf", {{{"required", {"crank_angles_deg", "crank_angle_steps"}}},
+                                  {{"required", {"crank_angles_deg", "crank_angles_per_mesh_period"}}},
+                                  {{"required", {"crank_angle_steps", "crank_angles_per_mesh_period"}}}}}}}};
     }
   };
   /// "output_mechanism" (studies/cycloid_input.h, shared with cycloid_min_size).

@@ -267,6 +267,10 @@ struct Input {
                    "constraints"));
       a->Visit("k", &k, Field().In(0.1, 10.0).Desc("sigma only: k of mean + k sigma (absent: 3)"));
     }
+    static nlohmann::ordered_json SchemaRules() {  // k belongs to sigma
+      return {{"if", {{"properties", {{"method", {{"const", "worst_case"}}}}}}},
+              {"then", {{"not", {{"required", {"k"}}}}}}};
+    }
   };
   /// "rollers": the ratings of a reference roller, scaled with the sized one (without a catalogue).
   struct Rollers {
