@@ -20,6 +20,7 @@
 #include "model/cycloid/geometry_limits.h"
 #include "model/cycloid/tooth_profile.h"
 #include "optimizers/solver.h"
+#include "studies/cycloid_life.h"
 #include "studies/cycloid_ltca_study.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
@@ -837,7 +838,61 @@ nlohmann::ordered_json Input::SchemaRules() {
   return rules;
 }
 
+nlohmann::ordered_json Result::LifeSchema() {
+  // cycloid_ltca's life (cycloid_common::LifeJson's keys) with the sizing's limit and pass/fail.
+  nlohmann::ordered_json l = cycloid_common::LifeJsonSchema();
+  l["properties"]["life_h"] = {{"type", {"number", "null"}}, {"description", "limits.life_h [h] (null: none)"}};
+  l["properties"]["output_mechanism"] = nlohmann::ordered_json::parse(R"json({"type": "object", "properties": {
+    "pin_count": {"type": ["integer", "string"], "description": "the output pins, or \"continuous\" (the continuous limit)"},
+    "pin_circle_radius_mm": {"type": "number", "description": "R_w [mm]"},
+    "inside_root_radius": {"type": "boolean", "description": "the pins' circle is inside the sized disc's root radius"}},
+    "required": ["pin_count", "pin_circle_radius_mm", "inside_root_radius"], "additionalProperties": false})json");
+  l["required"].push_back("life_h");
+  l["required"].push_back("output_mechanism");
+  return l;
+}
+
+nlohmann::ordered_json Result::RatingsSchema() {
+  // SizedRatingsJson (studies/ratings.h) without a rated torque of its own (cycloid_ltca solves it
+  // from best_cycloid_ltca.json), and with ratings.momentary_torque_Nm the static check at it.
+  return nlohmann::ordered_json::parse(R"json({"type": "object", "properties": {
+    "rated_torque_required_Nm": {"type": "number", "description": "ratings.rated_torque_Nm [N·m]"},
+    "rated_life_h": {"type": "number", "description": "ratings.rated_life_h [h]"},
+    "rated_output_speed_rpm": {"type": "number", "description": "ratings.rated_output_speed_rpm [rpm]"},
+    "rated_input_speed_rpm": {"type": "number", "description": "the rated output speed times the ratio [rpm]"},
+    "L10h_at_required_torque": {"type": ["number", "null"], "description": "the shortest L10h at the rated torque and speed, accurate model [h] (null: unlimited)"},
+    "met": {"type": "boolean", "description": "the life (and the momentary torque's s0) holds as the verification holds it"},
+    "rated_torque_Nm": {"type": ["number", "null"], "description": "null: cycloid_ltca solves the sized drive's own [N·m]"},
+    "rated_torque_note": {"type": "string", "description": "where the sized drive's own rated torque comes from"},
+    "definition": {"type": "string", "description": "what reaching the rated torque means"},
+    "momentary_torque_required_Nm": {"type": "number", "description": "with ratings.momentary_torque_Nm [N·m]"},
+    "momentary_static_safety": {"type": "number", "description": "with it: the s0 asked for"},
+    "s0_at_required_momentary_torque": {"type": ["number", "null"], "description": "with it: the smallest s0 at it, accurate model (null: unlimited)"},
+    "momentary_torque_Nm": {"type": ["number", "null"], "description": "with it: null, cycloid_ltca solves the sized drive's own [N·m]"},
+    "momentary_torque_note": {"type": "string", "description": "with it: where the sized drive's own comes from"},
+    "momentary_met": {"type": "boolean", "description": "with it: s0 holds as the verification holds it"}},
+    "required": ["rated_torque_required_Nm", "rated_life_h", "rated_output_speed_rpm", "rated_input_speed_rpm",
+      "L10h_at_required_torque", "met", "rated_torque_Nm", "rated_torque_note", "definition"],
+    "additionalProperties": false})json");
+}
+
+nlohmann::ordered_json Result::TorsionalDynamicsSchema() {
+  // cycloid_ltca's block (TorsionalDynamicsJson), with the types of the keys it lists: the sweep's
+  // peak is null when no swept speed has a stable periodic solution.
+  nlohmann::ordered_json t = cycloid_ltca::Result::TorsionalDynamicsSchema();
+  nlohmann::ordered_json& p = t["properties"];
+  p["natural_frequencies_Hz"]["items"]["type"] = "number";
+  p["mesh_stiffness_ripple_percent"]["type"] = "number";
+  p["sweep_peak"]["type"] = {"object", "null"};
+  nlohmann::ordered_json& peak = p["sweep_peak"]["properties"];
+  for (auto it = peak.begin(); it != peak.end(); ++it) (*it)["type"] = "number";
+  return t;
+}
+
 namespace {
+
+// result.json's members of r from the study and the outcome (below).
+void FillResult(const Study& s, Result& r);
 
 // The reported design's torsional dynamics by cycloid_ltca's model (docs/torsional_dynamics.md) on
 // its own study (best_cycloid_ltca.json, without the ratings it would also solve), and the dynamic
@@ -930,6 +985,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   if (!r.outcome.x.empty() && !s.torsional_dynamics.is_null()) CheckTorsionalDynamics(s, r, ctx);
   progress.Done();
   r.blocking_message = BlockingMessage(s, r.outcome);
+  FillResult(s, r);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -937,30 +993,30 @@ Result Run(const Study& s, const RunContext& ctx) {
 namespace {
 
 // The values of one model at the reported design (accurate or fast), by their result.json names.
-nlohmann::json ModelJson(const Study& s, const objectives::CycloidSizingEvaluation& e) {
-  nlohmann::json j;
-  j["max_contact_stress_MPa"] = Finite(e.stress_MPa, "stress");
-  j["max_pair_load_N"] = Finite(e.max_pair_load_N, "pair load");
-  if (s.spec.overload_torque_Nmm > 0) j["edge_margin_at_overload_um"] = Finite(e.edge_margin_um, "edge margin");
+Result::Model ModelOf(const Study& s, const objectives::CycloidSizingEvaluation& e) {
+  Result::Model j;
+  j.max_contact_stress_MPa = Finite(e.stress_MPa, "stress");
+  j.max_pair_load_N = Finite(e.max_pair_load_N, "pair load");
+  if (s.spec.overload_torque_Nmm > 0) j.edge_margin_at_overload_um = Finite(e.edge_margin_um, "edge margin");
   if (!e.unloaded_te_arcsec.empty()) {
     const auto [lo, hi] = std::minmax_element(e.unloaded_te_arcsec.begin(), e.unloaded_te_arcsec.end());
-    j["backlash_min_arcsec"] = Finite(*lo, "backlash");
-    j["backlash_max_arcsec"] = Finite(*hi, "backlash");
+    j.backlash_min_arcsec = Finite(*lo, "backlash");
+    j.backlash_max_arcsec = Finite(*hi, "backlash");
   }
-  j["lte_peak_to_peak_arcsec"] = Finite(e.lte_peak_to_peak_arcsec, "LTE");
+  j.lte_peak_to_peak_arcsec = Finite(e.lte_peak_to_peak_arcsec, "LTE");
   if (s.spec.output) {  // cycloid_ltca's names (its "stiffness" at the design torque, crank 0)
-    j["torsional_stiffness_Nm_per_arcmin"] = NumberOrNull(e.stiffness_Nm_per_arcmin);
-    j["lost_motion_arcmin"] = NumberOrNull(e.lost_motion_arcmin);
-    j["output_pin_bending_stress_MPa"] = NumberOrNull(e.max_output_pin_stress_MPa);
-    j["eccentric_bearing_load_N"] = NumberOrNull(e.max_crank_bearing_load_N);
+    j.torsional_stiffness_Nm_per_arcmin = e.stiffness_Nm_per_arcmin;
+    j.lost_motion_arcmin = e.lost_motion_arcmin;
+    j.output_pin_bending_stress_MPa = e.max_output_pin_stress_MPa;
+    j.eccentric_bearing_load_N = e.max_crank_bearing_load_N;
   }
   if (s.spec.lubrication) {  // one disc at the design torque and the input speed (docs/lubrication.md)
-    j["efficiency"] = NumberOrNull(e.efficiency);
-    j["power_loss_W"] = NumberOrNull(e.power_loss_W);
-    j["oil_temperature_C"] = NumberOrNull(e.oil_temperature_C);
-    if (!e.lubrication_why.empty()) j["lubrication_error"] = e.lubrication_why;
+    j.efficiency = e.efficiency;
+    j.power_loss_W = e.power_loss_W;
+    j.oil_temperature_C = e.oil_temperature_C;
+    if (!e.lubrication_why.empty()) j.lubrication_error = e.lubrication_why;
   }
-  j["converged"] = e.converged;
+  j.converged = e.converged;
   return j;
 }
 
@@ -971,6 +1027,21 @@ nlohmann::json DriveJson(const cycloid::Drive& d) {
           {"roller_radius_mm", d.roller_radius_mm},
           {"eccentricity_mm", d.eccentricity_mm},
           {"face_width_mm", d.face_width_mm}};
+}
+
+// A crowning as result.json's best.crowning: the fields cycloid_common::CrowningJson gives its type.
+Result::Crowning CrowningOf(const cycloid::Crowning& c) {
+  const nlohmann::json j = cycloid_common::CrowningJson(c);
+  Result::Crowning out;
+  out.type = j.at("type").get<std::string>();
+  const std::pair<const char*, std::optional<double>*> fields[] = {{"radius_mm", &out.radius_mm},
+                                                                   {"flat_length_mm", &out.flat_length_mm},
+                                                                   {"coefficient_mm", &out.coefficient_mm},
+                                                                   {"effective_length_mm", &out.effective_length_mm},
+                                                                   {"end_drop_mm", &out.end_drop_mm}};
+  for (const auto& [key, member] : fields)
+    if (j.contains(key)) *member = j.at(key).get<double>();
+  return out;
 }
 
 nlohmann::json ModificationJson(const cycloid::Drive& d) {
@@ -1059,112 +1130,96 @@ nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const obj
   return lj;
 }
 
-nlohmann::json StartJson(const optimizers::SolverResult& r) {
-  nlohmann::json j = {{"status", optimizers::ToString(r.status)},
-                      {"message", r.message},
-                      {"objective", NumberOrNull(r.objective)},
-                      {"max_violation", NumberOrNull(r.max_violation)},
-                      {"first_order_residual", NumberOrNull(r.first_order_residual)},
-                      {"evaluations", r.value_evaluations},
-                      {"gradient_evaluations", r.gradient_evaluations},
-                      {"iterations", r.iterations}};
-  j["x"] = nlohmann::json::array();
-  for (double x : r.x) j["x"].push_back(NumberOrNull(x));
-  return j;
+Result::StartOutcome StartOf(const optimizers::SolverResult& r) {
+  return {optimizers::ToString(r.status), r.message, r.objective, r.max_violation, r.first_order_residual,
+          r.value_evaluations, r.gradient_evaluations, r.iterations, r.x};
 }
 
 // The accurate settings of the verification and the plots (sizing/cycloid_min_size.h: twice
 // the cells each way, twice the crank angles), as cycloid_ltca's "analysis" block.
-nlohmann::json AccurateAnalysisJson(const Study& s) {
-  return {{"grid", {std::min(512, 2 * s.spec.options.profile_cells), std::min(512, 2 * s.spec.options.axial_cells)}},
-          {"crank_angles_per_mesh_period", std::min(10000, 2 * s.spec.angles_per_period)},
-          {"tolerance", s.spec.options.tolerance}};
+Result::Settings AccurateSettings(const Study& s) {
+  Result::Settings a;
+  a.grid = {std::min(512, 2 * s.spec.options.profile_cells), std::min(512, 2 * s.spec.options.axial_cells)};
+  a.crank_angles_per_mesh_period = std::min(10000, 2 * s.spec.angles_per_period);
+  a.tolerance = s.spec.options.tolerance;
+  return a;
 }
+nlohmann::json AccurateAnalysisJson(const Study& s) { return WriteResult(AccurateSettings(s)); }
 
-}  // namespace
-
-nlohmann::json ToJson(const Study& s, const Result& r) {
+// The former ToJson's arithmetic, in its order (the same Finite checks first to fail).
+void FillResult(const Study& s, Result& r) {
   const objectives::CycloidMinSizeOutcome& o = r.outcome;
-  nlohmann::json j;
-  j["study"] = "cycloid_min_size";
-  j["name"] = s.name;
-  nlohmann::json target = {{"teeth", s.spec.drive.teeth},
-                           {"rollers", s.spec.drive.rollers},
-                           {"speed_ratio", s.spec.drive.teeth},
-                           {"design_torque_Nm", s.design_torque_Nm}};
-  if (s.overload_torque_Nm > 0) target["overload_torque_Nm"] = s.overload_torque_Nm;
-  j["target"] = target;
-  j["objective"] = s.spec.objective == objectives::CycloidSizeObjective::kVolume      ? "volume"
-                   : s.spec.objective == objectives::CycloidSizeObjective::kPowerLoss ? "efficiency"
-                                                                                       : "outer_diameter";
-  nlohmann::json vars = nlohmann::json::array();
-  for (const objectives::Variable& v : s.spec.variables)
-    vars.push_back({{"name", v.name}, {"lower", v.lower}, {"upper", v.upper}, {"start", v.initial}});
-  j["variables"] = vars;
-  AddVerificationJson(o.verification, j);
+  r.name = s.name;
+  r.target.teeth = s.spec.drive.teeth;
+  r.target.rollers = s.spec.drive.rollers;
+  r.target.speed_ratio = s.spec.drive.teeth;
+  r.target.design_torque_Nm = s.design_torque_Nm;
+  if (s.overload_torque_Nm > 0) r.target.overload_torque_Nm = s.overload_torque_Nm;
+  r.objective = s.spec.objective == objectives::CycloidSizeObjective::kVolume      ? "volume"
+                : s.spec.objective == objectives::CycloidSizeObjective::kPowerLoss ? "efficiency"
+                                                                                    : "outer_diameter";
+  r.variables.clear();
+  for (const objectives::Variable& v : s.spec.variables) r.variables.push_back({v.name, v.lower, v.upper, v.initial});
+  r.verified = o.verification.verified();
+  r.verification = VerificationBlock::Of(o.verification);
   if (o.x.empty()) {
-    j["best"] = nullptr;
+    r.best.reset();
   } else {
     const objectives::CycloidSizingEvaluation& acc = o.check.accurate;
-    nlohmann::json b;
-    b["outer_diameter_mm"] = Finite(2 * (o.drive.roller_position_radius_mm + o.drive.roller_radius_mm), "outer diameter");
-    b["envelope_volume_mm3"] =
+    Result::Best& b = r.best.emplace();
+    b.outer_diameter_mm = Finite(2 * (o.drive.roller_position_radius_mm + o.drive.roller_radius_mm), "outer diameter");
+    b.envelope_volume_mm3 =
         Finite(kPi * std::pow(o.drive.roller_position_radius_mm + o.drive.roller_radius_mm, 2) * o.drive.face_width_mm,
                "volume");
-    b["drive"] = DriveJson(o.drive);
-    b["modification"] = ModificationJson(o.drive);
-    b["crowning"] = cycloid_common::CrowningJson(o.crowning);
-    nlohmann::json x = nlohmann::json::object();
+    b.drive = {o.drive.teeth,           o.drive.rollers,         o.drive.roller_position_radius_mm,
+               o.drive.roller_radius_mm, o.drive.eccentricity_mm, o.drive.face_width_mm};
+    b.modification = {o.drive.delta_position_mm * 1e3, o.drive.delta_radius_mm * 1e3};
+    b.crowning = CrowningOf(o.crowning);
     for (size_t k = 0; k < s.spec.variables.size() && k < o.x.size(); ++k)
-      x[s.spec.variables[k].name] = Finite(o.x[k], s.spec.variables[k].name);
-    b["variables"] = x;
+      b.variables[s.spec.variables[k].name] = Finite(o.x[k], s.spec.variables[k].name);
     // Variables the optimum presses against a bound of their range: widening it would shrink the
     // drive further (the bounds' own multipliers are not reported).
-    nlohmann::json at_bounds = nlohmann::json::array();
     for (size_t k = 0; k < s.spec.variables.size() && k < o.x.size(); ++k) {
       const objectives::Variable& v = s.spec.variables[k];
       // Ipopt stays a little inside its bounds (bound_push): 0.1% of the range.
       const double tol = 1e-3 * (v.upper - v.lower);
-      if (o.x[k] <= v.lower + tol) at_bounds.push_back({{"name", v.name}, {"bound", "lower"}, {"value", v.lower}});
-      else if (o.x[k] >= v.upper - tol) at_bounds.push_back({{"name", v.name}, {"bound", "upper"}, {"value", v.upper}});
+      if (o.x[k] <= v.lower + tol) b.variables_at_bounds.push_back({v.name, "lower", v.lower});
+      else if (o.x[k] >= v.upper - tol) b.variables_at_bounds.push_back({v.name, "upper", v.upper});
     }
-    b["variables_at_bounds"] = at_bounds;
     // The closed-form limits (geometry_limits.h): exact, the same for both models.
-    b["curtate_margin"] = Finite(acc.curtate_margin, "curtate margin");
-    b["undercut_margin_mm"] = Finite(acc.undercut_margin_mm, "undercut margin");
-    b["min_profile_radius_mm"] = Finite(acc.min_profile_radius_mm, "profile radius");
-    b["pin_gap_margin_mm"] = Finite(acc.pin_gap_margin_mm, "pin gap margin");
-    if (s.spec.limits.bore_radius_mm > 0) b["web_margin_mm"] = Finite(acc.web_margin_mm, "web margin");
-    b["accurate"] = ModelJson(s, acc);
-    b["fast"] = ModelJson(s, o.check.fast);
-    nlohmann::json err = {{"max_contact_stress_MPa", Finite(o.check.stress_error_MPa, "error")},
-                          {"backlash_arcsec", Finite(o.check.backlash_error_arcsec, "error")},
-                          {"lte_peak_to_peak_arcsec", Finite(o.check.lte_error_arcsec, "error")}};
-    if (s.spec.overload_torque_Nmm > 0) err["edge_margin_at_overload_um"] = Finite(o.check.edge_margin_error_um, "error");
+    b.curtate_margin = Finite(acc.curtate_margin, "curtate margin");
+    b.undercut_margin_mm = Finite(acc.undercut_margin_mm, "undercut margin");
+    b.min_profile_radius_mm = Finite(acc.min_profile_radius_mm, "profile radius");
+    b.pin_gap_margin_mm = Finite(acc.pin_gap_margin_mm, "pin gap margin");
+    if (s.spec.limits.bore_radius_mm > 0) b.web_margin_mm = Finite(acc.web_margin_mm, "web margin");
+    b.accurate = ModelOf(s, acc);
+    b.fast = ModelOf(s, o.check.fast);
+    Result::EstimatedError& err = b.estimated_error;
+    err.max_contact_stress_MPa = Finite(o.check.stress_error_MPa, "error");
+    err.backlash_arcsec = Finite(o.check.backlash_error_arcsec, "error");
+    err.lte_peak_to_peak_arcsec = Finite(o.check.lte_error_arcsec, "error");
+    if (s.spec.overload_torque_Nmm > 0) err.edge_margin_at_overload_um = Finite(o.check.edge_margin_error_um, "error");
     if (s.spec.output) {
-      b["output_holes_margin_mm"] = Finite(acc.output_holes_margin_mm, "holes margin");
-      err["torsional_stiffness_Nm_per_arcmin"] = NumberOrNull(o.check.stiffness_error);
-      err["lost_motion_arcmin"] = NumberOrNull(o.check.lost_motion_error_arcmin);
-      err["output_pin_bending_stress_MPa"] = NumberOrNull(o.check.output_pin_stress_error_MPa);
-      err["eccentric_bearing_load_N"] = NumberOrNull(o.check.crank_bearing_error_N);
+      b.output_holes_margin_mm = Finite(acc.output_holes_margin_mm, "holes margin");
+      err.torsional_stiffness_Nm_per_arcmin = o.check.stiffness_error;
+      err.lost_motion_arcmin = o.check.lost_motion_error_arcmin;
+      err.output_pin_bending_stress_MPa = o.check.output_pin_stress_error_MPa;
+      err.eccentric_bearing_load_N = o.check.crank_bearing_error_N;
     }
     if (s.spec.lubrication) {
-      err["efficiency"] = NumberOrNull(o.check.efficiency_error);
-      err["oil_temperature_C"] = NumberOrNull(o.check.oil_temperature_error_C);
+      err.efficiency = o.check.efficiency_error;
+      err.oil_temperature_C = o.check.oil_temperature_error_C;
       const objectives::CycloidSizingLubrication& l = *s.spec.lubrication;
-      b["lubrication"] = {
-          {"input_speed_rpm", l.input_speed_rpm},
-          {"output_torque_Nm", s.design_torque_Nm},
-          {"temperature_source", l.temperature_C ? "given" : "thermal balance"},
-          {"model", "one disc's mean loss over a revolution's pattern at the design torque (the LTCA's pair loads, "
-                    "the rigid output pins' forces), Pan-Hamrock line film, friction by regime, Palmgren bearings; "
-                    "best_cycloid_ltca.json gives the loss split, the film and the efficiency map "
-                    "(docs/lubrication.md)"}};
+      b.lubrication = Result::Lubrication{
+          l.input_speed_rpm, s.design_torque_Nm, l.temperature_C ? "given" : "thermal balance",
+          "one disc's mean loss over a revolution's pattern at the design torque (the LTCA's pair loads, "
+          "the rigid output pins' forces), Pan-Hamrock line film, friction by regime, Palmgren bearings; "
+          "best_cycloid_ltca.json gives the loss split, the film and the efficiency map "
+          "(docs/lubrication.md)"};
     }
-    b["estimated_error"] = err;
-    b["accurate_model"] = o.check.model;
+    b.accurate_model = o.check.model;
     if (s.spec.life) {
-      b["life"] = SizingLifeJson(s, o.drive, acc);
+      b.life = SizingLifeJson(s, o.drive, acc);
       // Met as the verification holds them: the accurate value within its estimated error (one
       // verdict for the exit code, `verified` and these flags).
       auto holds = [&](const std::string& limit) {
@@ -1174,16 +1229,16 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
       };
       const bool momentary_met = !(s.ratings && s.ratings->momentary_torque_Nm) || holds("min_static_safety");
       if (s.ratings)
-        b["ratings"] = SizedRatingsJson(
+        b.ratings = SizedRatingsJson(
             *s.ratings, double(o.drive.teeth) / double(o.drive.rollers - o.drive.teeth), acc.shortest_life_h,
             holds("life_h") && momentary_met, std::nullopt, "",
             "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block), one LTCA cycle per trial torque: "
             "the loaded contact's loads are not proportional to the torque");
-      b["estimated_error"]["shortest_L10h"] = Finite(o.check.life_error_h, "error");
+      err.shortest_L10h = Finite(o.check.life_error_h, "error");
       if (s.ratings && s.ratings->momentary_torque_Nm) {
         // The momentary torque: s0 at it on the accurate model; the drive's own momentary torque is
         // cycloid_ltca's root search (the loads are not proportional to the torque).
-        nlohmann::json& g = b["ratings"];
+        nlohmann::json& g = *b.ratings;
         const double need = s.ratings->momentary_static_safety;
         g["momentary_torque_required_Nm"] = *s.ratings->momentary_torque_Nm;
         g["momentary_static_safety"] = need;
@@ -1192,48 +1247,39 @@ nlohmann::json ToJson(const Study& s, const Result& r) {
         g["momentary_torque_Nm"] = nullptr;
         g["momentary_torque_note"] = "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block)";
         g["momentary_met"] = momentary_met;
-        b["estimated_error"]["min_static_safety"] = NumberOrNull(o.check.static_safety_error);
+        err.min_static_safety = o.check.static_safety_error;
       }
     }
-    if (!r.torsional.is_null()) b["torsional_dynamics"] = r.torsional;
-    j["best"] = b;
+    if (!r.torsional.is_null()) b.torsional_dynamics = r.torsional;
   }
   // What each limit that binds at the optimum costs: d(objective)/d(limit) from the multipliers.
-  nlohmann::json binding = nlohmann::json::array();
-  for (const auto& [key, cost] : o.limit_cost) {
-    nlohmann::json entry = {{"limit", key},
-                            {"limit_value", NumberOrNull(LimitValue(s, key))},
-                            {"limit_cost", Finite(cost, "limit cost")},
-                            {"unit", ObjectiveUnit(s) + " per " + LimitUnit(key)}};
-    AddLimitSlopeJson(o.limit_slope.count(key) ? &o.limit_slope.at(key) : nullptr, entry);
-    binding.push_back(entry);
-  }
-  j["binding_limits"] = binding;
-  nlohmann::json starts = nlohmann::json::array();
-  for (const optimizers::SolverResult& st : o.starts) starts.push_back(StartJson(st));
+  r.binding_limits.clear();
+  for (const auto& [key, cost] : o.limit_cost)
+    r.binding_limits.push_back({key, LimitValue(s, key), Finite(cost, "limit cost"),
+                                ObjectiveUnit(s) + " per " + LimitUnit(key),
+                                MakeLimitSlopeResult(o.limit_slope.count(key) ? &o.limit_slope.at(key) : nullptr)});
   // Counts only: the time split (values, gradients, verification) goes to the terminal, so that two
   // runs write identical files.
-  j["optimizer"] = {{"backend", s.backend},
-                    {"converged", o.converged},
-                    {"status", optimizers::ToString(o.result.status)},
-                    {"message", o.result.message},
-                    {"starts", s.options.starts},
-                    {"max_evaluations", s.options.solver.max_evaluations},
-                    {"verify_rounds", s.options.verify_rounds},
-                    {"evaluations", o.evaluations},
-                    {"gradient_evaluations", o.gradient_evaluations},
-                    {"binding_rows", o.result.active},
-                    {"start_outcomes", starts}};
-  j["analysis"] = {{"grid", {s.spec.options.profile_cells, s.spec.options.axial_cells}},
-                   {"crank_angles_per_mesh_period", s.spec.angles_per_period},
-                   {"tolerance", s.spec.options.tolerance},
-                   {"accurate", AccurateAnalysisJson(s)}};
-  if (!r.blocking_message.empty()) j["notes"] = {r.blocking_message};
-  j["warnings"] = r.warnings;
-  return j;
+  Result::Optimizer& opt = r.optimizer;
+  opt.backend = s.backend;
+  opt.converged = o.converged;
+  opt.status = optimizers::ToString(o.result.status);
+  opt.message = o.result.message;
+  opt.starts = s.options.starts;
+  opt.max_evaluations = s.options.solver.max_evaluations;
+  opt.verify_rounds = s.options.verify_rounds;
+  opt.evaluations = o.evaluations;
+  opt.gradient_evaluations = o.gradient_evaluations;
+  opt.binding_rows = o.result.active;
+  opt.start_outcomes.clear();
+  for (const optimizers::SolverResult& st : o.starts) opt.start_outcomes.push_back(StartOf(st));
+  r.analysis.grid = {s.spec.options.profile_cells, s.spec.options.axial_cells};
+  r.analysis.crank_angles_per_mesh_period = s.spec.angles_per_period;
+  r.analysis.tolerance = s.spec.options.tolerance;
+  r.analysis.accurate = AccurateSettings(s);
+  if (!r.blocking_message.empty()) r.notes = std::vector<std::string>{r.blocking_message};
 }
 
-namespace {
 
 // A design (drive and crowning) of this sizing as a complete cycloid_ltca study: the accurate
 // settings, the design torque, the life's and the output mechanism's blocks of the study.
@@ -1368,7 +1414,7 @@ nlohmann::json StartCycloidLtcaStudy(const Study& s) {
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", ToJson(s, r));
+  out.AddJson("result.json", WriteResult(r));
   const objectives::CycloidMinSizeOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   // A stress limit on a tooth whose edge peak is singular is checked on a number that grows as the
@@ -1444,8 +1490,8 @@ void RunCycloidMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
 
 CAMOPT_REGISTER_STUDY("cycloid_min_size", RunCycloidMinSize);
 CAMOPT_REGISTER_STUDY_PARSER("cycloid_min_size", [](const Node& root) { (void)Parse(root); });
-CAMOPT_REGISTER_DECLARED_KIND("cycloid_min_size", Input,
-                              "camopt study: the smallest cycloid drive for a ratio and a torque");
+CAMOPT_REGISTER_KIND("cycloid_min_size", Input, Result,
+                     "camopt study: the smallest cycloid drive for a ratio and a torque");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

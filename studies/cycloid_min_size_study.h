@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,7 @@
 #include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/torsional_dynamics_input.h"
+#include "studies/verification_json.h"
 
 namespace camopt::studies::cycloid_min_size {
 
@@ -323,6 +325,355 @@ struct Study {
 };
 
 struct Result {
+  /// The ratio and the torques sized for.
+  struct Target {
+    int teeth = 0, rollers = 0, speed_ratio = 0;
+    double design_torque_Nm = 0;
+    std::optional<double> overload_torque_Nm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("teeth", &teeth, Field().Desc("z, the disc's teeth"));
+      a->Visit("rollers", &rollers, Field().Desc("z + 1, the ring's pins"));
+      a->Visit("speed_ratio", &speed_ratio,
+               Field().Desc("the reduction z (ring fixed, output from the disc, turning the other way)"));
+      a->Visit("design_torque_Nm", &design_torque_Nm, Field().Unit("N·m").Desc("on the disc"));
+      a->Visit("overload_torque_Nm", &overload_torque_Nm,
+               Field().Unit("N·m").Desc("the overload cycle's torque, when the study gives one"));
+    }
+  };
+  /// A sized field: its range and its start, in the field's own unit (µm for the modifications).
+  struct VariableRow {
+    std::string name;
+    double lower = 0, upper = 0, start = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("name", &name, Field().Desc("the cycloid_ltca field it sets"));
+      a->Visit("lower", &lower, Field().Desc("the range's lower bound [mm, or µm for delta_*_um]"));
+      a->Visit("upper", &upper, Field().Desc("the range's upper bound [mm, or µm for delta_*_um]"));
+      a->Visit("start", &start, Field().Desc("the first start [mm, or µm for delta_*_um]"));
+    }
+  };
+  /// The sized drive, as cycloid_ltca's "drive".
+  struct Drive {
+    int teeth = 0, rollers = 0;
+    double roller_position_radius_mm = 0, roller_radius_mm = 0, eccentricity_mm = 0, face_width_mm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("teeth", &teeth, Field().Desc("z, the disc's teeth"));
+      a->Visit("rollers", &rollers, Field().Desc("z + 1, the pins"));
+      a->Visit("roller_position_radius_mm", &roller_position_radius_mm, Field().Unit("mm").Desc("a, the pins' circle"));
+      a->Visit("roller_radius_mm", &roller_radius_mm, Field().Unit("mm").Desc("ρ, of each pin"));
+      a->Visit("eccentricity_mm", &eccentricity_mm, Field().Unit("mm").Desc("e, the crank's eccentricity"));
+      a->Visit("face_width_mm", &face_width_mm, Field().Unit("mm").Desc("b, the disc's width"));
+    }
+  };
+  /// The sized profile modifications, as cycloid_ltca's "modification".
+  struct Modification {
+    double delta_position_um = 0, delta_radius_um = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("delta_position_um", &delta_position_um, Field().Unit("µm").Desc("Δa, of the pins' circle radius"));
+      a->Visit("delta_radius_um", &delta_radius_um, Field().Unit("µm").Desc("Δr, of the pin radius"));
+    }
+  };
+  /// The sized crowning, as cycloid_ltca's "crowning" (cycloid_common::CrowningJson): its type and
+  /// the fields of that type.
+  struct Crowning {
+    std::string type = "none";
+    std::optional<double> radius_mm, flat_length_mm, coefficient_mm, effective_length_mm, end_drop_mm;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("type", &type, Field().OneOf({"none", "full", "partial", "logarithmic"}).Desc("the crowning type"));
+      a->Visit("radius_mm", &radius_mm, Field().Unit("mm").Desc("full, partial: the crowning radius"));
+      a->Visit("flat_length_mm", &flat_length_mm,
+               Field().Unit("mm").Desc("partial, logarithmic: the uncrowned middle's length"));
+      a->Visit("coefficient_mm", &coefficient_mm, Field().Unit("mm").Desc("logarithmic: the coefficient of the drop"));
+      a->Visit("effective_length_mm", &effective_length_mm,
+               Field().Unit("mm").Desc("logarithmic: the crowned length L (0: the face width)"));
+      a->Visit("end_drop_mm", &end_drop_mm,
+               Field().Unit("mm").Desc("logarithmic: the largest drop at the face ends (0: unbounded)"));
+    }
+  };
+  /// A variable the optimum presses against a bound of its range (within 0.1% of the range).
+  struct AtBound {
+    std::string name, bound;
+    double value = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("name", &name, Field().Desc("the variable"));
+      a->Visit("bound", &bound, Field().OneOf({"lower", "upper"}));
+      a->Visit("value", &value, Field().Desc("the bound [mm, or µm for delta_*_um]"));
+    }
+  };
+  /// One model's values at the reported design (the accurate or the fast settings).
+  struct Model {
+    double max_contact_stress_MPa = 0, max_pair_load_N = 0;
+    std::optional<double> edge_margin_at_overload_um, backlash_min_arcsec, backlash_max_arcsec;
+    double lte_peak_to_peak_arcsec = 0;
+    std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, output_pin_bending_stress_MPa,
+        eccentric_bearing_load_N;
+    std::optional<double> efficiency, power_loss_W, oil_temperature_C;
+    std::optional<std::string> lubrication_error;
+    bool converged = true;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+               Field().Unit("MPa").Desc("peak pressure over the design-torque cycle"));
+      a->Visit("max_pair_load_N", &max_pair_load_N, Field().Unit("N").Desc("largest load of a tooth pair"));
+      a->Visit("edge_margin_at_overload_um", &edge_margin_at_overload_um,
+               Field().Unit("µm").Desc("with an overload torque: the contact's least end distance from the face ends"));
+      a->Visit("backlash_min_arcsec", &backlash_min_arcsec,
+               Field().Unit("arcsec").Desc("the smallest unloaded TE β0 over the angles (when computed)"));
+      a->Visit("backlash_max_arcsec", &backlash_max_arcsec,
+               Field().Unit("arcsec").Desc("the largest unloaded TE β0 over the angles (when computed)"));
+      a->Visit("lte_peak_to_peak_arcsec", &lte_peak_to_peak_arcsec,
+               Field().Unit("arcsec").Desc("the loaded transmission error's peak to peak"));
+      const std::string output = "with output_mechanism's pin_radius_mm and hole_radius_mm (null: not solved): ";
+      a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,
+               Field().NullWhenNotFinite().Unit("N·m/arcmin").Desc(
+                   output + "the torsional stiffness between 50% and 100% of the design torque, crank 0"));
+      a->Visit("lost_motion_arcmin", &lost_motion_arcmin,
+               Field().NullWhenNotFinite().Unit("arcmin").Desc(output + "the lost motion between ±3% of it"));
+      a->Visit("output_pin_bending_stress_MPa", &output_pin_bending_stress_MPa,
+               Field().NullWhenNotFinite().Unit("MPa").Desc(output + "the output pins' largest bending stress"));
+      a->Visit("eccentric_bearing_load_N", &eccentric_bearing_load_N,
+               Field().NullWhenNotFinite().Unit("N").Desc(output + "the largest eccentric (crank) bearing load"));
+      const std::string oil = "with lubricant, at the design torque and input speed (null: not computed): ";
+      a->Visit("efficiency", &efficiency,
+               Field().NullWhenNotFinite().Desc(oil + "the lubricated efficiency, a revolution's mean"));
+      a->Visit("power_loss_W", &power_loss_W, Field().NullWhenNotFinite().Unit("W").Desc(oil + "one disc's loss"));
+      a->Visit("oil_temperature_C", &oil_temperature_C,
+               Field().NullWhenNotFinite().Unit("°C").Desc(oil + "the oil temperature"));
+      a->Visit("lubrication_error", &lubrication_error,
+               Field().Desc("with lubricant: why the lubricated losses were not computed"));
+      a->Visit("converged", &converged, Field().Desc("every contact of both cycles converged"));
+    }
+  };
+  /// The estimated error of the accurate values: |accurate − fast| (objectives/verification.h).
+  struct EstimatedError {
+    double max_contact_stress_MPa = 0, backlash_arcsec = 0, lte_peak_to_peak_arcsec = 0;
+    std::optional<double> edge_margin_at_overload_um;
+    std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, output_pin_bending_stress_MPa,
+        eccentric_bearing_load_N, efficiency, oil_temperature_C;
+    std::optional<double> shortest_L10h, min_static_safety;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("backlash_arcsec", &backlash_arcsec, Field().Unit("arcsec"));
+      a->Visit("lte_peak_to_peak_arcsec", &lte_peak_to_peak_arcsec, Field().Unit("arcsec"));
+      a->Visit("edge_margin_at_overload_um", &edge_margin_at_overload_um,
+               Field().Unit("µm").Desc("with an overload torque"));
+      const std::string output = "with output_mechanism's pin_radius_mm and hole_radius_mm (null: not solved)";
+      a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,
+               Field().NullWhenNotFinite().Unit("N·m/arcmin").Desc(output));
+      a->Visit("lost_motion_arcmin", &lost_motion_arcmin, Field().NullWhenNotFinite().Unit("arcmin").Desc(output));
+      a->Visit("output_pin_bending_stress_MPa", &output_pin_bending_stress_MPa,
+               Field().NullWhenNotFinite().Unit("MPa").Desc(output));
+      a->Visit("eccentric_bearing_load_N", &eccentric_bearing_load_N,
+               Field().NullWhenNotFinite().Unit("N").Desc(output));
+      a->Visit("efficiency", &efficiency, Field().NullWhenNotFinite().Desc("with lubricant (null: not computed)"));
+      a->Visit("oil_temperature_C", &oil_temperature_C,
+               Field().NullWhenNotFinite().Unit("°C").Desc("with lubricant (null: not computed)"));
+      a->Visit("shortest_L10h", &shortest_L10h, Field().Unit("h").Desc("with the bearing lives"));
+      a->Visit("min_static_safety", &min_static_safety,
+               Field().NullWhenNotFinite().Desc("with ratings.momentary_torque_Nm: of s0 at the momentary torque"));
+    }
+  };
+  /// With lubricant: where the lubricated values of `accurate` and `fast` were computed.
+  struct Lubrication {
+    double input_speed_rpm = 0, output_torque_Nm = 0;
+    std::string temperature_source, model;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("input_speed_rpm", &input_speed_rpm, Field().Unit("rpm").Desc("load.input_speed_rpm"));
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("the design torque"));
+      a->Visit("temperature_source", &temperature_source,
+               Field().OneOf({"given", "thermal balance"}).Desc("the oil's temperature: lubricant.temperature_C or "
+                                                                "the housing's heat balance"));
+      a->Visit("model", &model, Field().Desc("the loss model, in words"));
+    }
+  };
+  /// The reported design: the best one, or the closest when it is not verified.
+  struct Best {
+    double outer_diameter_mm = 0, envelope_volume_mm3 = 0;
+    Drive drive;
+    Modification modification;
+    Crowning crowning;
+    std::map<std::string, double> variables;
+    std::vector<AtBound> variables_at_bounds;
+    double curtate_margin = 0, undercut_margin_mm = 0, min_profile_radius_mm = 0, pin_gap_margin_mm = 0;
+    std::optional<double> web_margin_mm;
+    Model accurate, fast;
+    std::optional<double> output_holes_margin_mm;
+    std::optional<Lubrication> lubrication;
+    EstimatedError estimated_error;
+    std::string accurate_model;
+    std::optional<nlohmann::json> life, ratings, torsional_dynamics;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("2 (a + ρ) of drive"));
+      a->Visit("envelope_volume_mm3", &envelope_volume_mm3, Field().Unit("mm³").Desc("π (a + ρ)² b"));
+      a->Visit("drive", &drive, Field().Desc("every cycloid_ltca drive field"));
+      a->Visit("modification", &modification, Field().Desc("the profile modifications"));
+      a->Visit("crowning", &crowning, Field().Desc("the crowning, its type and fields"));
+      a->Visit("variables", &variables,
+               Field().Desc("the optimizer's value of each variable, by name [mm, or µm for delta_*_um]"));
+      a->Visit("variables_at_bounds", &variables_at_bounds,
+               Field().Desc("the variables at a bound of their range (widening it may shrink the drive)"));
+      a->Visit("curtate_margin", &curtate_margin,
+               Field().Desc("1 − e (z + 1) / a' (closed form; >= min_curtate_margin holds)"));
+      a->Visit("undercut_margin_mm", &undercut_margin_mm,
+               Field().Unit("mm").Desc("ρ_min − ρ' − min_profile_radius_mm: not undercut when >= 0 (closed form)"));
+      a->Visit("min_profile_radius_mm", &min_profile_radius_mm,
+               Field().Unit("mm").Desc("the tooth's smallest convex radius of curvature, ρ_min − ρ'"));
+      a->Visit("pin_gap_margin_mm", &pin_gap_margin_mm,
+               Field().Unit("mm").Desc("2 a sin(π/N) − 2ρ − min_pin_gap_mm: the pins clear when >= 0 (closed form)"));
+      a->Visit("web_margin_mm", &web_margin_mm,
+               Field().Unit("mm").Desc(
+                   "with a bore: (a' − e − ρ') − bore radius − min_web_mm, >= 0 holds (closed form)"));
+      a->Visit("accurate", &accurate,
+               Field().Desc("the accurate model's values (twice the cells each way and twice the crank angles)"));
+      a->Visit("fast", &fast, Field().Desc("the fast model's values (the optimizer's)"));
+      a->Visit("output_holes_margin_mm", &output_holes_margin_mm,
+               Field().Unit("mm").Desc("with the compliant output mechanism: the holes' fit in the disc"));
+      a->Visit("lubrication", &lubrication, Field().Desc("with lubricant: the operating point of the lubricated values"));
+      a->Visit("estimated_error", &estimated_error, Field().Desc("of the accurate values, key by key, in their units"));
+      a->Visit("accurate_model", &accurate_model, Field().Desc("the accurate model, in words"));
+      a->Visit("life", &life,
+               Field().Schema(LifeSchema()).Desc("with a speed or duty cycle: the accurate model's bearing lives"));
+      a->Visit("ratings", &ratings,
+               Field().Schema(RatingsSchema()).Desc("with ratings: the rated and momentary torques checked"));
+      a->Visit("torsional_dynamics", &torsional_dynamics,
+               Field().Schema(TorsionalDynamicsSchema()).Desc(
+                   "with torsional_dynamics: cycloid_ltca's block for the reported design, or its error"));
+    }
+  };
+  /// A limit that binds at the optimum and what it costs.
+  struct BindingLimit {
+    std::string limit;
+    double limit_value = 0, limit_cost = 0;
+    std::string unit;
+    LimitSlopeResult slope;  ///< its members are the entry's own
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("limit", &limit, Field().Desc("the study's limit key"));
+      a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite().Desc("the study's limit, in its unit"));
+      a->Visit("limit_cost", &limit_cost,
+               Field().Desc("d(objective)/d(limit) from the multipliers, in unit (negative: relaxing it shrinks)"));
+      a->Visit("unit", &unit, Field().Desc("of limit_cost: the objective's unit per the limit's"));
+      slope.Serialize(a);
+    }
+  };
+  /// One start's solve in the first round.
+  struct StartOutcome {
+    std::string status, message;
+    double objective = 0, max_violation = 0, first_order_residual = 0;
+    int evaluations = 0, gradient_evaluations = 0, iterations = 0;
+    std::vector<double> x;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("status", &status, Field().Desc("the solver's end"));
+      a->Visit("message", &message, Field().Desc("the backend's own words"));
+      a->Visit("objective", &objective,
+               Field().NullWhenNotFinite().Desc("at its end [mm, mm³ or W of loss, as objective]"));
+      a->Visit("max_violation", &max_violation,
+               Field().NullWhenNotFinite().Desc("largest constraint violation (scaled)"));
+      a->Visit("first_order_residual", &first_order_residual,
+               Field().NullWhenNotFinite().Desc(
+                   "the first-order optimality residual (0 at a KKT point; null: not computed)"));
+      a->Visit("evaluations", &evaluations, Field().Desc("model runs for values"));
+      a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("model runs with exact derivatives"));
+      a->Visit("iterations", &iterations, Field().Desc("backend iterations (Ipopt), else evaluations"));
+      a->Visit("x", &x, Field().NullWhenNotFinite().Desc("the end point, in the order of variables"));
+    }
+  };
+  struct Optimizer {
+    std::string backend;
+    bool converged = false;
+    std::string status, message;
+    int starts = 0, max_evaluations = 0, verify_rounds = 0, evaluations = 0, gradient_evaluations = 0;
+    std::vector<std::string> binding_rows;
+    std::vector<StartOutcome> start_outcomes;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}).Desc("the NLP solver (slsqp: NLopt's)"));
+      a->Visit("converged", &converged, Field().Desc("the last solve converged (the optimizer's own test)"));
+      a->Visit("status", &status, Field().Desc("the last solve's end"));
+      a->Visit("message", &message, Field().Desc("the backend's own words"));
+      a->Visit("starts", &starts, Field().Desc("starts of the solver"));
+      a->Visit("max_evaluations", &max_evaluations, Field().Desc("the budget of each solve"));
+      a->Visit("verify_rounds", &verify_rounds, Field().Desc("the verification loop's budget"));
+      a->Visit("evaluations", &evaluations, Field().Desc("LTCA value runs, summed over every solve"));
+      a->Visit("gradient_evaluations", &gradient_evaluations,
+               Field().Desc("LTCA gradient runs, summed over every solve"));
+      a->Visit("binding_rows", &binding_rows, Field().Desc("the constraint rows active at the answer"));
+      a->Visit("start_outcomes", &start_outcomes, Field().Desc("each start's solve in the first round"));
+    }
+  };
+  /// The contact settings of a model, as cycloid_ltca's "analysis".
+  struct Settings {
+    std::array<int, 2> grid{};
+    int crank_angles_per_mesh_period = 0;
+    double tolerance = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("grid", &grid, Field().Desc("[profile_cells, axial_cells]"));
+      a->Visit("crank_angles_per_mesh_period", &crank_angles_per_mesh_period, Field().Desc("uniform crank angles"));
+      a->Visit("tolerance", &tolerance, Field().Desc("relative compatibility residual of the LTCA"));
+    }
+  };
+  /// The fast model's settings and the accurate ones.
+  struct Analysis : Settings {
+    Settings accurate;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      Settings::Serialize(a);
+      a->Visit("accurate", &accurate,
+               Field().Desc("the verification's and the plots' (twice the cells each way, twice the crank angles)"));
+    }
+  };
+
+  // result.json (studies/archive.h): Run fills these members (FillResult), Write writes them.
+  std::string study = "cycloid_min_size", name;
+  Target target;
+  std::string objective = "outer_diameter";
+  std::vector<VariableRow> variables;
+  bool verified = false;
+  VerificationBlock verification;
+  std::optional<Best> best;
+  std::vector<BindingLimit> binding_limits;
+  Optimizer optimizer;
+  Analysis analysis;
+  std::optional<std::vector<std::string>> notes;
+  std::vector<std::string> warnings;  ///< the run's own (RunStudy adds the implausible inputs')
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("study", &study, Field().Const("cycloid_min_size").Desc("the study kind"));
+    a->Visit("name", &name, Field().Desc("the study's name"));
+    a->Visit("target", &target, Field().Desc("the ratio and the torques sized for"));
+    a->Visit("objective", &objective,
+             Field().OneOf({"outer_diameter", "volume", "efficiency"}).Desc("what was minimised"));
+    a->Visit("variables", &variables, Field().Desc("the sized fields, their ranges and starts"));
+    a->Visit("verified", &verified,
+             Field().Desc("the accurate model holds every limit at the reported design (a view of status)"));
+    a->Visit("verification", &verification,
+             Field().Desc("each limit's check on the accurate model and the tightening rounds "
+                          "(studies/verification_json.h)"));
+    a->Visit("best", &best,
+             Field().NullWhenAbsent().Desc("the reported design (the closest when not verified; null: no design)"));
+    a->Visit("binding_limits", &binding_limits, Field().Desc("each limit that binds at the optimum and what it costs"));
+    a->Visit("optimizer", &optimizer, Field().Desc("the solves (counts only: no times, two runs write the same file)"));
+    a->Visit("analysis", &analysis, Field().Desc("the fast model's settings and the accurate ones"));
+    a->Visit("notes", &notes, Field().Desc("why the answer is not what was asked, when it is not"));
+    a->Visit("warnings", &warnings, Field().Desc("the run's warnings"));
+  }
+  /// The schemas of the raw blocks of best (cycloid_min_size_study.cc).
+  static nlohmann::ordered_json LifeSchema();
+  static nlohmann::ordered_json RatingsSchema();
+  static nlohmann::ordered_json TorsionalDynamicsSchema();
+
+  // Not in result.json: the sizing's outcome and the best design's cycle, which the other files
+  // are drawn from.
   objectives::CycloidMinSizeOutcome outcome;
   /// The best design's cycle at the design torque on the accurate settings (cells and crank angles
   /// twice the study's): the stress plot and the pressure map. Empty when there is no design.
@@ -331,7 +682,6 @@ struct Result {
   /// Not empty when the answer is not what was asked (exit 3): the limit that blocks, its value and
   /// what would fit.
   std::string blocking_message;
-  std::vector<std::string> warnings;  ///< result.json "warnings" (the run's own)
   /// With "torsional_dynamics": cycloid_ltca's "torsional_dynamics" object for the reported design
   /// (or {"error": why}); null without.
   nlohmann::json torsional;
@@ -340,8 +690,8 @@ struct Result {
 
 /// @throws StudyError for bad input (exit 2).
 Study Parse(const Node& root);
+/// Sizes the drive and fills result.json's members of Result (FillResult).
 Result Run(const Study& study, const RunContext& ctx);
-nlohmann::json ToJson(const Study& study, const Result& result);
 /// The best design as a complete cycloid_ltca study (the accurate settings, the design torque);
 /// null when there is no design.
 nlohmann::json BestCycloidLtcaStudy(const Study& study, const Result& result);
