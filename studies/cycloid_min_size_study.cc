@@ -1414,7 +1414,7 @@ nlohmann::json StartCycloidLtcaStudy(const Study& s) {
 }
 
 void Write(const Study& s, const Result& r, Outputs& out) {
-  out.AddJson("result.json", WriteResult(r));
+  out.SetResult(r);
   const objectives::CycloidMinSizeOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   // A stress limit on a tooth whose edge peak is singular is checked on a number that grows as the
