@@ -1186,6 +1186,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     }
     progress.Done();
   }
+  FillResult(st, res);
   return res;
 }
 
@@ -1193,44 +1194,43 @@ namespace {
 
 // result.json's catalogue numbers (docs/ratings.md), as cycloid_ltca's: ratings, output_bearing,
 // stiffness and stiffness_segments, masses, joint_model.
-void AddCatalogue(const Study& st, const Result& res, nlohmann::json& j) {
+void FillCatalogue(const Study& st, const Result& res, Result::Json& j) {
   const double ratio = std::abs(lcr::SpeedReductionRatio(st.reducer));
-  if (st.ratings) AddRatingsJson(st.ratings->in, res.ratings, res.ratings_failed, ratio, true, j);
-  if (res.output_bearing) j["output_bearing"] = OutputBearingJson(*st.output_bearing, *res.output_bearing);
-  else if (st.output_bearing) j["output_bearing"] = {{"error", res.output_bearing_failed}};
+  if (st.ratings) {
+    nlohmann::json r = nlohmann::json::object();
+    AddRatingsJson(st.ratings->in, res.ratings, res.ratings_failed, ratio, true, r);
+    j.rated_torque_Nm = r.at("rated_torque_Nm");
+    j.peak_torque_Nm = r.at("peak_torque_Nm");
+    j.momentary_torque_Nm = r.at("momentary_torque_Nm");
+    j.ratings = r.at("ratings");
+  }
+  if (res.output_bearing) j.output_bearing = OutputBearingJson(*st.output_bearing, *res.output_bearing);
+  else if (st.output_bearing) j.output_bearing = nlohmann::json{{"error", res.output_bearing_failed}};
   if (st.stiffness || st.ratings)
-    j["masses"] = {{"density_kg_m3", st.density_kg_m3},
-                   {"cam_kg", res.cam_kg},
-                   {"cam_inertia_kgm2", res.cam_inertia_kgm2},
-                   {"outer_diameter_mm", res.outer_diameter_mm},
-                   {"reflected_inertia_kgm2", res.reflected_inertia_kgm2},
-                   {"includes", "the cam (both profiles less their bores, each over its thickness); not the rollers, "
-                                "turrets, eccentric shaft, bearings or housing. Reflected inertia: the cam's orbit "
-                                "m e^2 r_i^2 and spin J_c (w_c/w_o)^2, at the output"}};
+    j.masses = Result::Json::Masses{
+        st.density_kg_m3, res.cam_kg, res.cam_inertia_kgm2, res.outer_diameter_mm, res.reflected_inertia_kgm2,
+        "the cam (both profiles less their bores, each over its thickness); not the rollers, turrets, eccentric "
+        "shaft, bearings or housing. Reflected inertia: the cam's orbit m e^2 r_i^2 and spin J_c (w_c/w_o)^2, at "
+        "the output"};
   if (st.stiffness && res.segments) {
     const Study::StiffnessSpec& k = *st.stiffness;
     const ThreeSegmentStiffness& g = *res.segments;
-    j["torsional_stiffness_Nm_per_arcmin"] = res.stiffness_Nm_per_rad / kArcminPerRad;
-    j["lost_motion_arcmin"] = res.lost_motion_rad * kArcminPerRad;
-    j["backlash_arcmin"] = 0.0;
-    j["stiffness"] = {{"rated_torque_Nm", k.rated_torque_Nm},
-                      {"lost_motion_percent", k.lost_motion_percent},
-                      {"lost_motion_at_percent_arcmin", res.lost_motion_user_rad * kArcminPerRad},
-                      {"hysteresis_width_arcmin", 0.0},
-                      {"definitions",
-                       "input held; output angle: the mean over the input revolution of the output turret's rotation "
-                       "under the rollers' Palmgren line contacts (docs/lcr_stiffness.md); conjugate profiles: no "
-                       "clearance, so no backlash; stiffness: mean of the two senses' slopes between 50% and 100% of "
-                       "the rated torque; frictionless: no hysteresis width"}};
-    j["stiffness_segments"] = {
-        {"T1_Nm", k.T1_Nm}, {"T2_Nm", k.T2_Nm}, {"rated_torque_Nm", k.rated_torque_Nm},
-        {"K1_Nm_per_arcmin", g.k1_Nm_per_arcmin}, {"K2_Nm_per_arcmin", g.k2_Nm_per_arcmin},
-        {"K3_Nm_per_arcmin", g.k3_Nm_per_arcmin},
-        {"definitions", "loading branch from 0: K1 = T1 / (angle(T1) - angle(0)), K2 = (T2 - T1) / (angle(T2) - "
-                        "angle(T1)), K3 = (T_r - T2) / (angle(T_r) - angle(T2))"}};
+    j.torsional_stiffness_Nm_per_arcmin = res.stiffness_Nm_per_rad / kArcminPerRad;
+    j.lost_motion_arcmin = res.lost_motion_rad * kArcminPerRad;
+    j.backlash_arcmin = 0.0;
+    j.stiffness = Result::Json::Stiffness{
+        k.rated_torque_Nm, k.lost_motion_percent, res.lost_motion_user_rad * kArcminPerRad, 0.0,
+        "input held; output angle: the mean over the input revolution of the output turret's rotation under the "
+        "rollers' Palmgren line contacts (docs/lcr_stiffness.md); conjugate profiles: no clearance, so no backlash; "
+        "stiffness: mean of the two senses' slopes between 50% and 100% of the rated torque; frictionless: no "
+        "hysteresis width"};
+    j.stiffness_segments = Result::Json::StiffnessSegments{
+        k.T1_Nm, k.T2_Nm, k.rated_torque_Nm, g.k1_Nm_per_arcmin, g.k2_Nm_per_arcmin, g.k3_Nm_per_arcmin,
+        "loading branch from 0: K1 = T1 / (angle(T1) - angle(0)), K2 = (T2 - T1) / (angle(T2) - angle(T1)), K3 = "
+        "(T_r - T2) / (angle(T_r) - angle(T2))"};
     nlohmann::json curve = nlohmann::json::array();
     for (const auto& [t, a] : res.torsion_curve) curve.push_back({t, a});
-    j["joint_model"] = {
+    nlohmann::json joint = {
         {"ratio", ratio},
         {"rated_torque_Nm", k.rated_torque_Nm},
         {"stiffness_Nm_per_rad", res.stiffness_Nm_per_rad},
@@ -1252,259 +1252,414 @@ void AddCatalogue(const Study& st, const Result& res, nlohmann::json& j) {
         {"friction_note", "not modelled in the joint (the LCR's losses are in the efficiency stage and lubrication)"},
         {"efficiency", res.lubrication ? nlohmann::json(res.lubrication->efficiency) : nlohmann::json(nullptr)},
         {"loss_table", nlohmann::json::array()}};
-    AddJointTilt(st.output_bearing, j["joint_model"]);
+    AddJointTilt(st.output_bearing, joint);
+    j.joint_model = std::move(joint);
   }
+}
+
+// One cam's keys: input_cam or output_cam.
+Result::Json::Cam CamJson(const Study& st, const Result& res, Side s) {
+  const Evaluate& q = st.evaluate;
+  const CamResult& c = s == Side::kInput ? res.input_cam : res.output_cam;
+  Result::Json::Cam cj;
+  cj.lobes = c.lobes;
+  cj.rollers = c.rollers;
+  cj.roller_gap_mm = c.roller_gap_mm;
+  cj.pitch_point_radius_mm = c.pitch_point_radius_mm;
+  if (res.undercut_evaluated) {
+    cj.min_pitch_curve_radius_mm = c.min_pitch_curve_radius_mm;
+    cj.min_convex_cam_radius_mm = c.undercut_margin_mm;
+    cj.undercut_margin_mm = c.undercut_margin_mm;
+    cj.undercut = c.undercut_margin_mm < 0;
+    cj.cutter_diameter_mm = c.cutter_diameter_mm;
+    cj.min_cutter_path_radius_mm = c.min_cutter_path_radius_mm;
+  }
+  if (!q.forces) return cj;
+  cj.actuating_rollers_max = c.actuating_rollers_max;
+  cj.actuating_rollers_min = c.actuating_rollers_min;
+  cj.max_roller_force_N = c.max_roller_force_N;
+  if (std::isfinite(st.roller_load_limit_N)) {
+    cj.roller_load_limit_N = st.roller_load_limit_N;
+    cj.roller_load_ok = c.max_roller_force_N <= st.roller_load_limit_N;
+  }
+  if (q.stress) {
+    const double p = c.max_contact_stress_MPa;
+    cj.max_contact_stress_MPa = p;  // null when not finite: a loaded roller sits on an undercut point
+    if (std::isfinite(p) && std::isfinite(st.contact_stress_limit_MPa)) {
+      cj.contact_stress_limit_MPa = st.contact_stress_limit_MPa;
+      cj.contact_stress_ok = p <= st.contact_stress_limit_MPa;
+    }
+    cj.contact_length_mm = c.contact_length_mm;
+    if (c.peak_half_width_mm > 0 || !std::isfinite(p))
+      cj.subsurface = SubsurfaceJson(p, c.peak_half_width_mm, st.material.poisson_ratio, c.subsurface_basis);
+    const auto& c3 = s == Side::kInput ? res.contact_input : res.contact_output;
+    if (c3) {
+      const lcr::ContactModel m = st.contact.options.model;
+      cj.contact_model = ContactModelName(m);
+      cj.edge_loaded = c3->edge_loaded;
+      if (c3->worst_angle >= 0) cj.worst_input_angle_deg = res.series.theta_rad[c3->worst_angle] * 180 / kPi;
+      if (m != lcr::ContactModel::kLine) {
+        cj.slice_width_mm = c3->slice_width_mm;
+        cj.interpolation_error_MPa = c3->interpolation_error_MPa;
+      }
+      if (m == lcr::ContactModel::kHalfSpace) {
+        cj.cell_size_mm = std::array<double, 2>{c3->cell_dx_mm, c3->cell_dy_mm};
+        cj.slices_max_contact_stress_MPa = c3->slices_peak_at_worst_MPa;
+      }
+    }
+  }
+  return cj;
+}
+
+// result.json's "life": the bearings' and the cams' contact lives over the duty cycle.
+nlohmann::json LifeJson(const Study& st, const LifeResult& l) {
+  const LifeSpec& spec = *st.life;
+  // +∞ (a bearing without load) is written as null.
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  nlohmann::json lj;
+  lj["shortest_L10h"] = finite(l.shortest_L10h);
+  lj["shortest_bearing"] = l.shortest;
+  for (const BearingLifeResult& b : l.bearings) lj[b.name + "_L10h"] = finite(b.L10h);
+  for (const BearingLifeResult& b : l.bearings)
+    if (b.sliced) lj[b.name + "_sliced_L10h"] = finite(b.sliced->L10h);
+  lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
+  lj["efficiency_energy_mean"] = l.efficiency_energy_mean;
+  nlohmann::json lines = nlohmann::json::array();
+  for (size_t i = 0; i < spec.lines.size(); ++i)
+    lines.push_back({{"output_torque_Nm", spec.lines[i].output_torque_Nmm / 1000.0},
+                     {"input_speed_rpm", spec.lines[i].input_speed_rpm},
+                     {"time_share", spec.lines[i].time_share},
+                     {"mean_input_torque_Nm", l.line_mean_input_torque_Nm[i]}});
+  lj["duty_cycle"] = lines;
+  for (const BearingLifeResult& b : l.bearings) {
+    nlohmann::json bj;
+    bj["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
+    bj["life_exponent"] = LifeExponent(b.rating.kind);
+    bj["dynamic_rating_N"] = b.rating.dynamic_N;
+    if (b.rating.static_N > 0) {
+      bj["static_rating_N"] = b.rating.static_N;
+      bj["s0"] = finite(b.s0);
+    }
+    bj["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
+    bj["mean_speed_rpm"] = b.mean_speed_rpm;
+    bj["equivalent_load_N"] = b.equivalent_load_N;
+    bj["line_equivalent_load_N"] = b.line_equivalent_load_N;
+    bj["max_load_N"] = b.max_load_N;
+    bj["L10_Mrev"] = finite(b.L10_Mrev);
+    bj["L10h"] = finite(b.L10h);
+    if (b.sliced) {
+      const BearingLifeResult::Sliced& sl = *b.sliced;
+      bj["sliced"] = {{"L10h", finite(sl.L10h)},
+                      {"slices", sl.slices},
+                      {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3},
+                      {"slice_rating_N", sl.slice_rating_N},
+                      {"weibull_slope", sl.weibull_slope},
+                      {"worst_slice_y_mm", sl.worst_slice_y_mm},
+                      {"worst_slice_L10h", finite(sl.worst_slice_L10h)},
+                      {"slice_equivalent_load_N", sl.slice_equivalent_load_N},
+                      {"edge_loaded", sl.edge_loaded},
+                      {"converged", sl.converged},
+                      {"model", "ISO/TS 16281's idea: the roller cut into slices along its length, the load per slice "
+                                "from the slices contact model (crowning, misalignment) at each sample, each slice "
+                                "rated C (w/L)^(7/9) (ISO 281 6.1.1), slice lives over the duty cycle combined as "
+                                "1/L^e = sum 1/L_k^e with e = 9/(2p), which gives back ISO 281 for a uniform load "
+                                "(docs/life.md)"}};
+    }
+    lj[b.name] = bj;
+  }
+  lj["model"] = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
+                "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
+                "the same load over its period; " + ModifiedLifeModelText(l.oil.has_value());
+  // The cams' contact lives (docs/life.md, "Contact fatigue of the cam surfaces"): separate from
+  // the bearings' shortest_L10h.
+  for (const CamContactLifeResult& c : l.cam_contacts) lj[c.name + "_L10h"] = finite(c.L10h);
+  if (!l.cam_contacts.empty()) {
+    const ContactFatigueSpec& cf = *st.contact_fatigue;
+    nlohmann::json cl;
+    cl["reference_pressure_MPa"] = cf.reference_pressure_MPa;
+    cl["reference_cycles"] = cf.reference_cycles;
+    cl["exponent"] = cf.exponent;
+    cl["exponent_source"] = cf.exponent_given ? "given" : "default: Lundberg-Palmgren line contact, n = 8";
+    cl["pressure_model"] = st.contact.given ? ContactModelName(st.contact.options.model) : "line";
+    for (const CamContactLifeResult& c : l.cam_contacts)
+      cl[c.name] = {{"contacts_per_input_revolution", c.passes_per_input_revolution},
+                    {"line_peak_pressure_MPa", c.line_peak_pressure_MPa},
+                    {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
+                    {"L10h", finite(c.L10h)}};
+    cl["model"] =
+        "stress-life law of the material, N = N_ref (p_ref/p0)^n over-rollings of a point of the cam's track to 10% "
+        "failure, Palmgren-Miner over the duty cycle; every over-rolling counted at the cam's peak Hertz pressure of "
+        "its line (n rollers times the turret's turns relative to the cam per input revolution); assumes the same "
+        "contact geometry, material, heat treatment and lubrication as the reference, no fatigue limit, subsurface "
+        "(not surface) initiated fatigue; not part of shortest_L10h (docs/life.md)";
+    lj["contact_life"] = cl;
+  }
+  // One row per element, the same keys as lcr_min_size's best.life.table (report.html's life table).
+  const double limit = st.life_limit_h;
+  lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
+  auto pass = [limit](double h) { return limit > 0 ? nlohmann::json(h >= limit) : nlohmann::json(nullptr); };
+  nlohmann::json table = nlohmann::json::array();
+  double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
+  std::string shortest_nm;
+  for (const BearingLifeResult& b : l.bearings) {
+    nlohmann::json e;
+    e["element"] = b.name;
+    e["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
+    e["equivalent_load_N"] = b.equivalent_load_N;
+    e["max_load_N"] = b.max_load_N;
+    e["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
+    e["dynamic_rating_N"] = b.rating.dynamic_N;
+    e["L10h"] = finite(b.L10h);
+    if (b.rating.static_N > 0) {
+      e["static_rating_N"] = b.rating.static_N;
+      e["s0"] = finite(b.s0);
+    }
+    e["pass"] = pass(b.L10h);
+    if (l.oil && b.rating.modified) {
+      const double l_nm = AddModifiedLife(e, b.rating.kind, *b.rating.modified, *l.oil, b.mean_speed_rpm,
+                                          b.equivalent_load_N, b.L10h);
+      if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = b.name;
+    }
+    table.push_back(e);
+    if (b.sliced) {
+      nlohmann::json es = e;
+      es["element"] = b.name + "_sliced";
+      es["kind"] = "roller, sliced (ISO/TS 16281)";
+      es["L10h"] = finite(b.sliced->L10h);
+      es["pass"] = pass(b.sliced->L10h);
+      table.push_back(es);
+    }
+  }
+  for (const CamContactLifeResult& c : l.cam_contacts) {
+    double peak = 0;
+    for (double p : c.line_peak_pressure_MPa) peak = std::max(peak, p);
+    table.push_back({{"element", c.name},
+                     {"kind", "cam contact"},
+                     {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
+                     {"max_pressure_MPa", finite(peak)},
+                     {"contacts_per_input_revolution", c.passes_per_input_revolution},
+                     {"reference_pressure_MPa", st.contact_fatigue->reference_pressure_MPa},
+                     {"L10h", finite(c.L10h)},
+                     {"pass", pass(c.L10h)}});
+  }
+  lj["table"] = table;
+  if (l.oil) {
+    lj["shortest_L_nm_h"] = shortest_nm.empty() ? nlohmann::json(nullptr) : finite(shortest_nm_h);
+    lj["shortest_L_nm_bearing"] = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+  }
+  return lj;
 }
 
 }  // namespace
 
-nlohmann::json ToJson(const Study& st, const Result& res) {
+void FillResult(const Study& st, Result& res) {
   const Evaluate& q = st.evaluate;
-  nlohmann::json j;
-  j["study"] = "lcr_analysis";
-  j["name"] = st.name;
-  j["speed_ratio"] = res.speed_ratio;
-  j["cam_speed_ratio"] = res.cam_speed_ratio;
-  j["output_speed_ratio"] = res.output_speed_ratio;
-  j["outer_diameter_mm"] = res.outer_diameter_mm;
-  j["angle_steps"] = st.angle_steps;
-  j["load_model"] = LoadModelName(st.load_model);
-  for (Side s : {Side::kInput, Side::kOutput}) {
-    const CamResult& c = s == Side::kInput ? res.input_cam : res.output_cam;
-    nlohmann::json& cj = j[s == Side::kInput ? "input_cam" : "output_cam"];
-    cj["lobes"] = c.lobes;
-    cj["rollers"] = c.rollers;
-    cj["roller_gap_mm"] = c.roller_gap_mm;
-    cj["pitch_point_radius_mm"] = c.pitch_point_radius_mm;
-    if (res.undercut_evaluated) {
-      cj["min_pitch_curve_radius_mm"] = c.min_pitch_curve_radius_mm;
-      cj["min_convex_cam_radius_mm"] = c.undercut_margin_mm;
-      cj["undercut_margin_mm"] = c.undercut_margin_mm;
-      cj["undercut"] = c.undercut_margin_mm < 0;
-      cj["cutter_diameter_mm"] = c.cutter_diameter_mm;
-      cj["min_cutter_path_radius_mm"] = c.min_cutter_path_radius_mm;
-    }
-    if (!q.forces) continue;
-    cj["actuating_rollers_max"] = c.actuating_rollers_max;
-    cj["actuating_rollers_min"] = c.actuating_rollers_min;
-    cj["max_roller_force_N"] = c.max_roller_force_N;
-    if (std::isfinite(st.roller_load_limit_N)) {
-      cj["roller_load_limit_N"] = st.roller_load_limit_N;
-      cj["roller_load_ok"] = c.max_roller_force_N <= st.roller_load_limit_N;
-    }
-    if (q.stress) {
-      const double p = c.max_contact_stress_MPa;
-      if (std::isfinite(p)) {
-        cj["max_contact_stress_MPa"] = p;
-        if (std::isfinite(st.contact_stress_limit_MPa)) {
-          cj["contact_stress_limit_MPa"] = st.contact_stress_limit_MPa;
-          cj["contact_stress_ok"] = p <= st.contact_stress_limit_MPa;
-        }
-      } else {
-        cj["max_contact_stress_MPa"] = nullptr;  // a loaded roller sits on an undercut point
-      }
-      cj["contact_length_mm"] = c.contact_length_mm;
-      if (c.peak_half_width_mm > 0 || !std::isfinite(p))
-        cj["subsurface"] = SubsurfaceJson(p, c.peak_half_width_mm, st.material.poisson_ratio, c.subsurface_basis);
-      const auto& c3 = s == Side::kInput ? res.contact_input : res.contact_output;
-      if (c3) {
-        const lcr::ContactModel m = st.contact.options.model;
-        cj["contact_model"] = ContactModelName(m);
-        cj["edge_loaded"] = c3->edge_loaded;
-        if (c3->worst_angle >= 0) cj["worst_input_angle_deg"] = res.series.theta_rad[c3->worst_angle] * 180 / kPi;
-        if (m != lcr::ContactModel::kLine) {
-          cj["slice_width_mm"] = c3->slice_width_mm;
-          cj["interpolation_error_MPa"] = c3->interpolation_error_MPa;
-        }
-        if (m == lcr::ContactModel::kHalfSpace) {
-          cj["cell_size_mm"] = {c3->cell_dx_mm, c3->cell_dy_mm};
-          cj["slices_max_contact_stress_MPa"] = c3->slices_peak_at_worst_MPa;
-        }
-      }
-    }
-  }
+  Result::Json& j = res.json;
+  j.name = st.name;
+  j.speed_ratio = res.speed_ratio;
+  j.cam_speed_ratio = res.cam_speed_ratio;
+  j.output_speed_ratio = res.output_speed_ratio;
+  j.outer_diameter_mm = res.outer_diameter_mm;
+  j.angle_steps = st.angle_steps;
+  j.load_model = LoadModelName(st.load_model);
+  j.input_cam = CamJson(st, res, Side::kInput);
+  j.output_cam = CamJson(st, res, Side::kOutput);
   if (q.forces) {
-    j["fixed_turret_torque_Nm"] = res.fixed_turret_torque_Nm;
+    j.fixed_turret_torque_Nm = res.fixed_turret_torque_Nm;
     // The paper's force model: the roller forces are frictionless and the friction enters the input
     // torque only (T_in = (F_t + μ F_r) e), so the three members' torques balance without it.
     if (st.load.friction_coefficient > 0)
-      j["fixed_turret_torque_model"] =
+      j.fixed_turret_torque_model =
           "from the frictionless roller forces (the paper's model): the friction moment of the input torque is "
           "not in it, so input, output and fixed-turret torques balance only up to the friction terms";
-    j["output_torque_Nm"] = st.load.output_torque_Nmm / 1000.0;
+    j.output_torque_Nm = st.load.output_torque_Nmm / 1000.0;
     if (q.efficiency) {
-      j["input_torque_Nm"] = {{"mean", res.input_torque_mean_Nm},
-                              {"max", res.input_torque_max_Nm},
-                              {"min", res.input_torque_min_Nm},
-                              {"ideal", res.input_torque_ideal_Nm}};
-      j["efficiency"] = {{"mean", res.efficiency_mean}, {"min", res.efficiency_min}, {"max", res.efficiency_max}};
-      j["eccentric_load_N"] = {{"tangential_max", res.eccentric_tangential_max_N},
-                               {"radial_max_abs", res.eccentric_radial_max_abs_N}};
-      j["friction_coefficient"] = st.load.friction_coefficient;
+      j.input_torque_Nm = Result::Json::InputTorque{res.input_torque_mean_Nm, res.input_torque_max_Nm,
+                                                    res.input_torque_min_Nm, res.input_torque_ideal_Nm};
+      j.efficiency = Result::Json::Efficiency{res.efficiency_mean, res.efficiency_min, res.efficiency_max};
+      j.eccentric_load_N = Result::Json::EccentricLoad{res.eccentric_tangential_max_N, res.eccentric_radial_max_abs_N};
+      j.friction_coefficient = st.load.friction_coefficient;
     }
   }
   if (st.contact.given) {
-    j["contact"] = {{"model", ContactModelName(st.contact.options.model)},
-                    {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3}};
-    if (st.contact.options.model != lcr::ContactModel::kLine) j["contact"]["slices"] = st.contact.options.slices;
+    Result::Json::Contact c;
+    c.model = ContactModelName(st.contact.options.model);
+    c.misalignment_mrad = st.contact.options.misalignment_rad * 1e3;
+    if (st.contact.options.model != lcr::ContactModel::kLine) c.slices = st.contact.options.slices;
     if (st.contact.options.model == lcr::ContactModel::kHalfSpace)
-      j["contact"]["grid"] = {st.contact.options.grid_nx, st.contact.options.grid_ny};
+      c.grid = std::array<int, 2>{st.contact.options.grid_nx, st.contact.options.grid_ny};
+    j.contact = c;
   }
-  if (res.transmission_error) j["transmission_error"] = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
-  if (res.life) {
-    const LifeResult& l = *res.life;
-    const LifeSpec& spec = *st.life;
-    // +∞ (a bearing without load) is written as null.
-    auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-    nlohmann::json lj;
-    lj["shortest_L10h"] = finite(l.shortest_L10h);
-    lj["shortest_bearing"] = l.shortest;
-    for (const BearingLifeResult& b : l.bearings) lj[b.name + "_L10h"] = finite(b.L10h);
-    for (const BearingLifeResult& b : l.bearings)
-      if (b.sliced) lj[b.name + "_sliced_L10h"] = finite(b.sliced->L10h);
-    lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
-    lj["efficiency_energy_mean"] = l.efficiency_energy_mean;
-    nlohmann::json lines = nlohmann::json::array();
-    for (size_t i = 0; i < spec.lines.size(); ++i)
-      lines.push_back({{"output_torque_Nm", spec.lines[i].output_torque_Nmm / 1000.0},
-                       {"input_speed_rpm", spec.lines[i].input_speed_rpm},
-                       {"time_share", spec.lines[i].time_share},
-                       {"mean_input_torque_Nm", l.line_mean_input_torque_Nm[i]}});
-    lj["duty_cycle"] = lines;
-    for (const BearingLifeResult& b : l.bearings) {
-      nlohmann::json bj;
-      bj["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
-      bj["life_exponent"] = LifeExponent(b.rating.kind);
-      bj["dynamic_rating_N"] = b.rating.dynamic_N;
-      if (b.rating.static_N > 0) {
-        bj["static_rating_N"] = b.rating.static_N;
-        bj["s0"] = finite(b.s0);
-      }
-      bj["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
-      bj["mean_speed_rpm"] = b.mean_speed_rpm;
-      bj["equivalent_load_N"] = b.equivalent_load_N;
-      bj["line_equivalent_load_N"] = b.line_equivalent_load_N;
-      bj["max_load_N"] = b.max_load_N;
-      bj["L10_Mrev"] = finite(b.L10_Mrev);
-      bj["L10h"] = finite(b.L10h);
-      if (b.sliced) {
-        const BearingLifeResult::Sliced& sl = *b.sliced;
-        bj["sliced"] = {{"L10h", finite(sl.L10h)},
-                        {"slices", sl.slices},
-                        {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3},
-                        {"slice_rating_N", sl.slice_rating_N},
-                        {"weibull_slope", sl.weibull_slope},
-                        {"worst_slice_y_mm", sl.worst_slice_y_mm},
-                        {"worst_slice_L10h", finite(sl.worst_slice_L10h)},
-                        {"slice_equivalent_load_N", sl.slice_equivalent_load_N},
-                        {"edge_loaded", sl.edge_loaded},
-                        {"converged", sl.converged},
-                        {"model", "ISO/TS 16281's idea: the roller cut into slices along its length, the load per slice "
-                                  "from the slices contact model (crowning, misalignment) at each sample, each slice "
-                                  "rated C (w/L)^(7/9) (ISO 281 6.1.1), slice lives over the duty cycle combined as "
-                                  "1/L^e = sum 1/L_k^e with e = 9/(2p), which gives back ISO 281 for a uniform load "
-                                  "(docs/life.md)"}};
-      }
-      lj[b.name] = bj;
-    }
-    lj["model"] = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
-                  "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
-                  "the same load over its period; " + ModifiedLifeModelText(l.oil.has_value());
-    // The cams' contact lives (docs/life.md, "Contact fatigue of the cam surfaces"): separate from
-    // the bearings' shortest_L10h.
-    for (const CamContactLifeResult& c : l.cam_contacts) lj[c.name + "_L10h"] = finite(c.L10h);
-    if (!l.cam_contacts.empty()) {
-      const ContactFatigueSpec& cf = *st.contact_fatigue;
-      nlohmann::json cl;
-      cl["reference_pressure_MPa"] = cf.reference_pressure_MPa;
-      cl["reference_cycles"] = cf.reference_cycles;
-      cl["exponent"] = cf.exponent;
-      cl["exponent_source"] = cf.exponent_given ? "given" : "default: Lundberg-Palmgren line contact, n = 8";
-      cl["pressure_model"] = st.contact.given ? ContactModelName(st.contact.options.model) : "line";
-      for (const CamContactLifeResult& c : l.cam_contacts)
-        cl[c.name] = {{"contacts_per_input_revolution", c.passes_per_input_revolution},
-                      {"line_peak_pressure_MPa", c.line_peak_pressure_MPa},
-                      {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
-                      {"L10h", finite(c.L10h)}};
-      cl["model"] =
-          "stress-life law of the material, N = N_ref (p_ref/p0)^n over-rollings of a point of the cam's track to 10% "
-          "failure, Palmgren-Miner over the duty cycle; every over-rolling counted at the cam's peak Hertz pressure of "
-          "its line (n rollers times the turret's turns relative to the cam per input revolution); assumes the same "
-          "contact geometry, material, heat treatment and lubrication as the reference, no fatigue limit, subsurface "
-          "(not surface) initiated fatigue; not part of shortest_L10h (docs/life.md)";
-      lj["contact_life"] = cl;
-    }
-    // One row per element, the same keys as lcr_min_size's best.life.table (report.html's life table).
-    const double limit = st.life_limit_h;
-    lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
-    auto pass = [limit](double h) { return limit > 0 ? nlohmann::json(h >= limit) : nlohmann::json(nullptr); };
-    nlohmann::json table = nlohmann::json::array();
-    double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
-    std::string shortest_nm;
-    for (const BearingLifeResult& b : l.bearings) {
-      nlohmann::json e;
-      e["element"] = b.name;
-      e["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
-      e["equivalent_load_N"] = b.equivalent_load_N;
-      e["max_load_N"] = b.max_load_N;
-      e["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
-      e["dynamic_rating_N"] = b.rating.dynamic_N;
-      e["L10h"] = finite(b.L10h);
-      if (b.rating.static_N > 0) {
-        e["static_rating_N"] = b.rating.static_N;
-        e["s0"] = finite(b.s0);
-      }
-      e["pass"] = pass(b.L10h);
-      if (l.oil && b.rating.modified) {
-        const double l_nm = AddModifiedLife(e, b.rating.kind, *b.rating.modified, *l.oil, b.mean_speed_rpm,
-                                            b.equivalent_load_N, b.L10h);
-        if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = b.name;
-      }
-      table.push_back(e);
-      if (b.sliced) {
-        nlohmann::json es = e;
-        es["element"] = b.name + "_sliced";
-        es["kind"] = "roller, sliced (ISO/TS 16281)";
-        es["L10h"] = finite(b.sliced->L10h);
-        es["pass"] = pass(b.sliced->L10h);
-        table.push_back(es);
-      }
-    }
-    for (const CamContactLifeResult& c : l.cam_contacts) {
-      double peak = 0;
-      for (double p : c.line_peak_pressure_MPa) peak = std::max(peak, p);
-      table.push_back({{"element", c.name},
-                       {"kind", "cam contact"},
-                       {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
-                       {"max_pressure_MPa", finite(peak)},
-                       {"contacts_per_input_revolution", c.passes_per_input_revolution},
-                       {"reference_pressure_MPa", st.contact_fatigue->reference_pressure_MPa},
-                       {"L10h", finite(c.L10h)},
-                       {"pass", pass(c.L10h)}});
-    }
-    lj["table"] = table;
-    if (l.oil) {
-      lj["shortest_L_nm_h"] = shortest_nm.empty() ? nlohmann::json(nullptr) : finite(shortest_nm_h);
-      lj["shortest_L_nm_bearing"] = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
-    }
-    j["life"] = lj;
-  }
-  if (res.lubrication) j["lubrication"] = WriteJson(*res.lubrication);
-  else if (st.lubrication) j["lubrication"] = {{"error", res.lubrication_error}};
-  AddCatalogue(st, res, j);
-  if (res.torsional && st.torsional) j["torsional_dynamics"] = TorsionalDynamicsJson(*st.torsional, *res.torsional);
-  else if (st.torsional) j["torsional_dynamics"] = {{"error", res.torsional_failed}};
-  j["notes"] = res.notes;
+  if (res.transmission_error) j.transmission_error = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
+  if (res.life) j.life = LifeJson(st, *res.life);
+  if (res.lubrication) j.lubrication = nlohmann::json(WriteJson(*res.lubrication));
+  else if (st.lubrication) j.lubrication = nlohmann::json{{"error", res.lubrication_error}};
+  FillCatalogue(st, res, j);
+  if (res.torsional && st.torsional) j.torsional_dynamics = TorsionalDynamicsJson(*st.torsional, *res.torsional);
+  else if (st.torsional) j.torsional_dynamics = nlohmann::json{{"error", res.torsional_failed}};
+  j.notes = res.notes;
   if (res.input_cam_files && res.output_cam_files)
-    j["geometry_files"] =
+    j.geometry_files =
         GeometryFilesJson(st.geometry, {{"input_cam", &*res.input_cam_files}, {"output_cam", &*res.output_cam_files}});
   if (st.inspection) {
-    j["inspection"] = InspectionJson(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
-                                     st.geometry.write);
-    if (st.geometry.write) j["inspection"]["datum"] = "each cam's centre (its bore); each file's header states its frame";
+    nlohmann::json ins = InspectionJson(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
+                                        st.geometry.write);
+    if (st.geometry.write) ins["datum"] = "each cam's centre (its bore); each file's header states its frame";
+    j.inspection = std::move(ins);
   }
-  if (!res.measured.is_null()) j["measured"] = res.measured;
-  return j;
+  if (!res.measured.is_null()) j.measured = res.measured;
+}
+
+nlohmann::ordered_json Result::Json::SubsurfaceSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["peak_pressure_MPa"] = {{"type", "number"}, {"description", "p0 [MPa]"}};
+  p["half_width_mm"] = {{"type", "number"}, {"description", "b of the line contact [mm]"}};
+  for (const char* k : {"max_shear_MPa", "max_orthogonal_shear_MPa", "max_von_mises_MPa"})
+    p[k] = {{"type", "number"}, {"description", "[MPa]"}};
+  for (const char* k : {"max_shear_depth_mm", "max_orthogonal_shear_depth_mm", "max_orthogonal_shear_offset_mm",
+                        "max_von_mises_depth_mm"})
+    p[k] = {{"type", "number"}, {"description", "[mm]"}};
+  p["poisson_ratio"] = {{"type", "number"}};
+  p["basis"] = {{"type", "string"}};
+  return {{"type", {"object", "null"}},
+          {"description", "Johnson 1985, eq. 4.50 ff.; {} when no roller carries load"},
+          {"properties", p}};
+}
+
+nlohmann::ordered_json Result::Json::TransmissionErrorSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  for (const char* k : {"linear_worst_case_arcsec", "monte_carlo_max_arcsec", "monte_carlo_p99_arcsec"})
+    p[k] = {{"description", "peak-to-peak over the input revolution [arcsec]"}};
+  for (const char* k : {"lost_motion_arcmin", "lost_motion_p99_arcmin", "lost_motion_nominal_arcmin"})
+    p[k] = {{"type", "number"}, {"description", "[arcmin]"}};
+  p["angle_steps"] = {{"type", "integer"}};
+  p["lost_motion_torque_fraction"] = {{"type", "number"}};
+  p["model"] = {{"type", "string"}};
+  return {{"type", "object"}, {"properties", p}, {"required", {"lost_motion_arcmin", "model"}}};
+}
+
+nlohmann::ordered_json Result::Json::LifeSchema() {
+  using ojson = nlohmann::ordered_json;
+  const ojson hours = {{"type", {"number", "null"}}, {"description", "[h] (null: no load, unlimited)"}};
+  ojson p = ojson::object();
+  p["shortest_L10h"] = hours;
+  p["shortest_bearing"] = {{"type", "string"}};
+  for (const char* k : {"input_roller_L10h", "output_roller_L10h", "eccentric_bearing_L10h", "input_roller_sliced_L10h",
+                        "output_roller_sliced_L10h", "input_cam_contact_L10h", "output_cam_contact_L10h"})
+    p[k] = hours;
+  p["mean_input_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
+  p["efficiency_energy_mean"] = {{"type", "number"}, {"description", "output energy / input energy over the duty cycle"}};
+  p["duty_cycle"] = {{"type", "array"}, {"items", {{"type", "object"}}}};
+  for (const char* k : {"input_roller", "output_roller", "eccentric_bearing"}) p[k] = {{"type", "object"}};
+  p["model"] = {{"type", "string"}};
+  p["contact_life"] = {{"type", "object"}, {"description", "with material.contact_fatigue"}};
+  p["life_h"] = {{"type", {"number", "null"}}, {"description", "limits.life_h [h] (null: none)"}};
+  p["table"] = {{"type", "array"},
+                {"items",
+                 {{"type", "object"},
+                  {"properties",
+                   {{"element", {{"type", "string"}}},
+                    {"kind", {{"type", "string"}}},
+                    {"equivalent_load_N", {{"type", "number"}, {"description", "[N]"}}},
+                    {"equivalent_pressure_MPa", {{"type", "number"}, {"description", "[MPa]"}}},
+                    {"dynamic_rating_N", {{"type", "number"}, {"description", "[N]"}}},
+                    {"reference_pressure_MPa", {{"type", "number"}, {"description", "[MPa]"}}},
+                    {"static_rating_N", {{"type", "number"}, {"description", "[N]"}}},
+                    {"s0", {{"type", {"number", "null"}}}},
+                    {"L10h", hours},
+                    {"pass", {{"type", {"boolean", "null"}}}}}},
+                  {"required", {"element", "kind", "L10h", "pass"}}}},
+                {"description", "report.html's and datasheet.html's rows"}};
+  p["shortest_L_nm_h"] = hours;
+  p["shortest_L_nm_bearing"] = {{"type", {"string", "null"}}};
+  return {{"type", "object"},
+          {"properties", p},
+          {"required", {"shortest_L10h", "shortest_bearing", "duty_cycle", "model", "life_h", "table"}}};
+}
+
+nlohmann::ordered_json Result::Json::LubricationSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["efficiency"] = {{"description", "at the load's torque and speed"}};
+  p["power_loss_W"] = {{"type", "object"}, {"properties", {{"total", {{"description", "[W]"}}}}}};
+  p["power_loss_sampling_error_W"] = {{"description", "[W]"}};
+  p["oil_temperature_C"] = {{"description", "[°C]"}};
+  p["min_film_lambda"] = {{"type", "object"}, {"properties", {{"value", {{"description", "least film parameter λ"}}}}}};
+  p["error"] = {{"type", "string"}, {"description", "why the losses were not computed (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::Json::RatingsSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson error = ojson::object();
+  for (const char* k : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"})
+    error[k] = {{"description", "[N·m]"}};
+  ojson p = ojson::object();
+  p["rated_life_h"] = {{"type", "number"}, {"description", "[h]"}};
+  p["rated_output_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
+  p["rated_by"] = {{"type", "string"}};
+  p["peak_limited_by"] = {{"type", "string"}};
+  p["momentary_limited_by"] = {{"type", "string"}};
+  p["momentary_peaks_allowed"] = {{"type", {"number", "null"}}};
+  p["estimated_error"] = {{"type", {"object", "null"}}, {"properties", error}};
+  p["allowable_output_speed_rpm"] = {{"type", {"number", "null"}}, {"description", "[rpm]"}};
+  p["allowable_output_speed"] = {{"type", "string"}};
+  p["error"] = {{"type", "string"}, {"description", "why the ratings were not solved (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::Json::OutputBearingSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["type"] = {{"type", "string"}};
+  p["P_C_N"] = {{"description", "[N]"}};
+  p["L10h"] = {{"description", "[h]"}};
+  p["L_OC_h"] = {{"description", "[h]"}};
+  p["P0_N"] = {{"description", "[N]"}};
+  p["static_safety"] = {{"description", "f_s"}};
+  p["tilt_arcmin"] = {{"description", "[arcmin]"}};
+  p["error"] = {{"type", "string"}, {"description", "why the life was not computed (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::Json::JointModelSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  for (const char* k : {"ratio", "rated_torque_Nm", "stiffness_Nm_per_rad", "stiffness_segments", "torsion_curve",
+                        "backlash_rad", "lost_motion_rad", "lost_motion_percent", "reflected_inertia_kgm2",
+                        "inertia_includes", "damping_Nms_per_rad", "damping_note", "friction_torque_Nm",
+                        "friction_note", "efficiency", "loss_table", "tilt_stiffness_Nm_per_rad", "tilt_note"})
+    p[k] = ojson::object();
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::Json::TorsionalDynamicsSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["natural_frequencies_Hz"] = {{"type", "array"}, {"items", {{"description", "[Hz]"}}}};
+  p["mesh_stiffness_ripple_percent"] = {{"description", "[%]"}};
+  p["sweep_peak"] = {{"type", "object"},
+                     {"properties",
+                      {{"overload_factor", {{"description", "the dynamic overload factor at the sweep's peak"}}},
+                       {"overload_sampling_error", {{"description", "its sampling error"}}},
+                       {"input_speed_rpm", {{"description", "[rpm]"}}}}}};
+  p["error"] = {{"type", "string"}, {"description", "why the dynamics were not solved (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json Result::Json::MeasuredSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["part"] = {{"enum", {"input_cam", "output_cam"}}};
+  p["iso1101_profile_deviation_um"] = {{"type", "number"}, {"description", "[µm]"}};
+  p["compliant"] = {{"type", "object"},
+                    {"description", "the transmission error, lost motion, roller force and contact stress with the "
+                                    "measured cam beside the nominal (absent when the compliant model cannot carry "
+                                    "the torque)"}};
+  p["not_computed"] = {{"type", "array"}, {"items", {{"type", "object"}}}};
+  return {{"type", "object"}, {"properties", p}};
 }
 
 namespace {
@@ -1618,7 +1773,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
                                          which + " cam and rollers at input angle 0 (loaded rollers red)")));
     }
   }
-  out.AddJson("result.json", ToJson(st, res));
+  out.SetResult(res);
   for (const auto& [name, csv] : res.inspection_files) out.Add("inspection/" + name + ".csv", csv);
   if (!res.torsion_curve.empty()) {
     // The torsional curve (docs/ratings.md): hysteresis.csv and .svg, as cycloid_ltca's.
@@ -1643,7 +1798,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 
 namespace {
 CAMOPT_REGISTER_STUDY_KIND("lcr_analysis");
-CAMOPT_REGISTER_DECLARED_KIND("lcr_analysis", Input, "camopt study: lobe cam reducer analysis: roller forces, contact stress, undercut, efficiency and bearing life over a revolution");
+CAMOPT_REGISTER_KIND("lcr_analysis", Input, Result, "camopt study: lobe cam reducer analysis: roller forces, contact stress, undercut, efficiency and bearing life over a revolution");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }

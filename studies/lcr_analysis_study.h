@@ -1,6 +1,6 @@
 // Study kind "lcr_analysis": one lobe cam reducer over an input revolution. Parse reads the study
-// file into a Study, Run calls the LCR stages of model/lcr/ that the study asks for, ToJson and
-// Write turn the typed Result into result.json, series.csv, SVG plots and DXF profiles.
+// file into a Study, Run calls the LCR stages of model/lcr/ that the study asks for and fills the
+// declared result.json (Result::Json), Write writes it with series.csv, SVG plots and DXF profiles.
 #pragma once
 
 #include <array>
@@ -391,6 +391,299 @@ struct Result {
   std::string ratings_failed;
   std::optional<OutputBearingResult> output_bearing;
   std::string output_bearing_failed;
+
+  /// result.json, declared (studies/archive.h; `camopt schema lcr_analysis --result`): Run ends by
+  /// filling it (FillResult). Its members sit here because the model's members above have the
+  /// names of result.json's keys with other types. The blocks shared with other kinds (the lives,
+  /// the transmission error, the lubrication, the ratings, the output bearing, the joint model, the
+  /// torsional dynamics, the geometry and inspection files, the measured cam, the subsurface
+  /// stresses) are raw JSON described by the schema of the keys camopt reads from them.
+  struct Json {
+    /// input_cam / output_cam: one cam and its turret's rollers.
+    struct Cam {
+      int lobes = 0, rollers = 0;
+      double roller_gap_mm = 0, pitch_point_radius_mm = 0;
+      std::optional<double> min_pitch_curve_radius_mm, min_convex_cam_radius_mm, undercut_margin_mm;
+      std::optional<bool> undercut;
+      std::optional<double> cutter_diameter_mm, min_cutter_path_radius_mm;
+      std::optional<int> actuating_rollers_max, actuating_rollers_min;
+      std::optional<double> max_roller_force_N, roller_load_limit_N;
+      std::optional<bool> roller_load_ok;
+      std::optional<double> max_contact_stress_MPa, contact_stress_limit_MPa;
+      std::optional<bool> contact_stress_ok;
+      std::optional<double> contact_length_mm;
+      std::optional<nlohmann::json> subsurface;  ///< SubsurfaceJson's block (null: an undercut peak)
+      std::optional<std::string> contact_model;
+      std::optional<bool> edge_loaded;
+      std::optional<double> worst_input_angle_deg, slice_width_mm, interpolation_error_MPa;
+      std::optional<std::array<double, 2>> cell_size_mm;
+      std::optional<double> slices_max_contact_stress_MPa;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        const Field n = Field().NullWhenNotFinite();
+        a->Visit("lobes", &lobes, Field().Desc("lobes of the cam"));
+        a->Visit("rollers", &rollers, Field().Desc("rollers of its turret"));
+        a->Visit("roller_gap_mm", &roller_gap_mm, Field().Unit("mm").Desc("gap between neighbouring rollers"));
+        a->Visit("pitch_point_radius_mm", &pitch_point_radius_mm,
+                 Field().Unit("mm").Desc("radius of the pitch point, e·n/(n−m)"));
+        a->Visit("min_pitch_curve_radius_mm", &min_pitch_curve_radius_mm,
+                 Field(n).Unit("mm").Desc("smallest convex radius of the pitch curve (undercut or stress stage)"));
+        a->Visit("min_convex_cam_radius_mm", &min_convex_cam_radius_mm,
+                 Field(n).Unit("mm").Desc("smallest convex radius of the cam profile, pitch radius less the roller "
+                                          "radius; < 0 is an undercut (undercut or stress stage)"));
+        a->Visit("undercut_margin_mm", &undercut_margin_mm,
+                 Field(n).Unit("mm").Desc("the same number, the verdict's undercut margin (undercut or stress stage)"));
+        a->Visit("undercut", &undercut, Field().Desc("the margin is < 0 (undercut or stress stage)"));
+        a->Visit("cutter_diameter_mm", &cutter_diameter_mm,
+                 Field(n).Unit("mm").Desc("the cutter of the cutter path (undercut or stress stage)"));
+        a->Visit("min_cutter_path_radius_mm", &min_cutter_path_radius_mm,
+                 Field(n).Unit("mm").Desc("smallest convex radius of the cutter path (undercut or stress stage)"));
+        a->Visit("actuating_rollers_max", &actuating_rollers_max,
+                 Field().Desc("most rollers carrying load at one angle (force stages)"));
+        a->Visit("actuating_rollers_min", &actuating_rollers_min,
+                 Field().Desc("fewest rollers carrying load at one angle (force stages)"));
+        a->Visit("max_roller_force_N", &max_roller_force_N,
+                 Field(n).Unit("N").Desc("largest roller force over the revolution (force stages)"));
+        a->Visit("roller_load_limit_N", &roller_load_limit_N,
+                 Field().Unit("N").Desc("limits.roller_load_N (force stages, with the limit)"));
+        a->Visit("roller_load_ok", &roller_load_ok,
+                 Field().Desc("max_roller_force_N <= the limit (force stages, with the limit)"));
+        a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+                 Field(n).Unit("MPa").Desc("largest Hertz contact stress over the revolution, the paper's eq. 27 (stress "
+                                           "stage; null: a loaded roller sits on an undercut point)"));
+        a->Visit("contact_stress_limit_MPa", &contact_stress_limit_MPa,
+                 Field().Unit("MPa").Desc("limits.contact_stress_MPa (stress stage, with the limit, a finite stress)"));
+        a->Visit("contact_stress_ok", &contact_stress_ok,
+                 Field().Desc("max_contact_stress_MPa <= the limit (stress stage, with the limit, a finite stress)"));
+        a->Visit("contact_length_mm", &contact_length_mm,
+                 Field(n).Unit("mm").Desc("the rollers' contact length (stress stage)"));
+        a->Visit("subsurface", &subsurface,
+                 Field().Desc("the subsurface stresses under the peak pressure (stress stage, a loaded contact; null: "
+                              "an undercut peak)").Schema(SubsurfaceSchema()));
+        a->Visit("contact_model", &contact_model,
+                 Field().OneOf({"line", "slices", "half_space"}).Desc("the finite-length contact model (with contact)"));
+        a->Visit("edge_loaded", &edge_loaded,
+                 Field().Desc("the pressure reaches an end of the contact at some angle (with contact)"));
+        a->Visit("worst_input_angle_deg", &worst_input_angle_deg,
+                 Field(n).Unit("deg").Desc("input angle of the largest pressure (with contact)"));
+        a->Visit("slice_width_mm", &slice_width_mm,
+                 Field(n).Unit("mm").Desc("resolution of the slices model (with a contact model other than line)"));
+        a->Visit("interpolation_error_MPa", &interpolation_error_MPa,
+                 Field(n).Unit("MPa").Desc("error of the pressure table's interpolation against exact solves (with a "
+                                           "contact model other than line)"));
+        a->Visit("cell_size_mm", &cell_size_mm,
+                 Field(n).Unit("mm").Desc("half_space cell across rolling and along the roller (half_space)"));
+        a->Visit("slices_max_contact_stress_MPa", &slices_max_contact_stress_MPa,
+                 Field(n).Unit("MPa").Desc("the slices model at the same contact (half_space)"));
+      }
+    };
+    /// input_torque_Nm (efficiency stage).
+    struct InputTorque {
+      double mean = 0, max = 0, min = 0, ideal = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        const Field n = Field().NullWhenNotFinite().Unit("N·m");
+        a->Visit("mean", &mean, Field(n).Desc("mean over the revolution, T_in = (F_t + μ F_r) e (the paper's eq. 32)"));
+        a->Visit("max", &max, Field(n).Desc("largest over the revolution"));
+        a->Visit("min", &min, Field(n).Desc("smallest over the revolution"));
+        a->Visit("ideal", &ideal, Field(n).Desc("T_o/|r_i|, frictionless"));
+      }
+    };
+    /// efficiency (efficiency stage).
+    struct Efficiency {
+      double mean = 0, min = 0, max = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        const Field n = Field().NullWhenNotFinite();
+        a->Visit("mean", &mean, Field(n).Desc("mean over the revolution (the paper's eq. 33)"));
+        a->Visit("min", &min, Field(n).Desc("smallest over the revolution"));
+        a->Visit("max", &max, Field(n).Desc("largest over the revolution"));
+      }
+    };
+    /// eccentric_load_N (efficiency stage).
+    struct EccentricLoad {
+      double tangential_max = 0, radial_max_abs = 0;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        const Field n = Field().NullWhenNotFinite().Unit("N");
+        a->Visit("tangential_max", &tangential_max, Field(n).Desc("largest tangential force F_t on the eccentric"));
+        a->Visit("radial_max_abs", &radial_max_abs, Field(n).Desc("largest |radial force F_r| on the eccentric"));
+      }
+    };
+    /// contact: the finite-length contact model asked for.
+    struct Contact {
+      std::string model;
+      double misalignment_mrad = 0;
+      std::optional<int> slices;
+      std::optional<std::array<int, 2>> grid;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("model", &model, Field().OneOf({"line", "slices", "half_space"}).Desc("contact.model"));
+        a->Visit("misalignment_mrad", &misalignment_mrad, Field().Unit("mrad").Desc("contact.misalignment"));
+        a->Visit("slices", &slices, Field().Desc("slices along the roller (a model other than line)"));
+        a->Visit("grid", &grid, Field().Desc("half_space cells across rolling and along the roller (half_space)"));
+      }
+    };
+    /// masses (with stiffness or ratings).
+    struct Masses {
+      double density_kg_m3 = 0, cam_kg = 0, cam_inertia_kgm2 = 0, outer_diameter_mm = 0, reflected_inertia_kgm2 = 0;
+      std::string includes;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        const Field n = Field().NullWhenNotFinite();
+        a->Visit("density_kg_m3", &density_kg_m3, Field().Unit("kg/m³").Desc("ratings.density_kg_m3, steel when absent"));
+        a->Visit("cam_kg", &cam_kg, Field(n).Unit("kg").Desc("the cam: both profiles less their bores"));
+        a->Visit("cam_inertia_kgm2", &cam_inertia_kgm2, Field(n).Unit("kg·m²").Desc("the cam's polar moment about its centre"));
+        a->Visit("outer_diameter_mm", &outer_diameter_mm, Field(n).Unit("mm"));
+        a->Visit("reflected_inertia_kgm2", &reflected_inertia_kgm2,
+                 Field(n).Unit("kg·m²").Desc("at the output: m e² r_i² + J_c (ω_c/ω_o)²"));
+        a->Visit("includes", &includes, Field().Desc("what the masses and the inertia are of"));
+      }
+    };
+    /// stiffness: the torsional curve, input held (docs/lcr_stiffness.md).
+    struct Stiffness {
+      double rated_torque_Nm = 0, lost_motion_percent = 0, lost_motion_at_percent_arcmin = 0,
+             hysteresis_width_arcmin = 0;
+      std::string definitions;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Unit("N·m").Desc("stiffness.rated_torque_Nm"));
+        a->Visit("lost_motion_percent", &lost_motion_percent, Field().Unit("%").Desc("stiffness.lost_motion_percent"));
+        a->Visit("lost_motion_at_percent_arcmin", &lost_motion_at_percent_arcmin,
+                 Field().NullWhenNotFinite().Unit("arcmin").Desc("lost motion at ± lost_motion_percent of the rated torque"));
+        a->Visit("hysteresis_width_arcmin", &hysteresis_width_arcmin,
+                 Field().Unit("arcmin").Desc("0: the contact model is frictionless"));
+        a->Visit("definitions", &definitions, Field());
+      }
+    };
+    /// stiffness_segments: the catalogue's three-segment stiffness (docs/ratings.md).
+    struct StiffnessSegments {
+      double T1_Nm = 0, T2_Nm = 0, rated_torque_Nm = 0, K1_Nm_per_arcmin = 0, K2_Nm_per_arcmin = 0,
+             K3_Nm_per_arcmin = 0;
+      std::string definitions;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        const Field n = Field().NullWhenNotFinite();
+        a->Visit("T1_Nm", &T1_Nm, Field().Unit("N·m"));
+        a->Visit("T2_Nm", &T2_Nm, Field().Unit("N·m"));
+        a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().Unit("N·m"));
+        a->Visit("K1_Nm_per_arcmin", &K1_Nm_per_arcmin, Field(n).Unit("N·m/arcmin").Desc("0 … T1"));
+        a->Visit("K2_Nm_per_arcmin", &K2_Nm_per_arcmin, Field(n).Unit("N·m/arcmin").Desc("T1 … T2"));
+        a->Visit("K3_Nm_per_arcmin", &K3_Nm_per_arcmin, Field(n).Unit("N·m/arcmin").Desc("T2 … rated torque"));
+        a->Visit("definitions", &definitions, Field());
+      }
+    };
+
+    std::string study = "lcr_analysis", name;
+    double speed_ratio = 0, cam_speed_ratio = 0, output_speed_ratio = 0, outer_diameter_mm = 0;
+    int angle_steps = 0;
+    std::string load_model;
+    Cam input_cam, output_cam;
+    std::optional<double> fixed_turret_torque_Nm;
+    std::optional<std::string> fixed_turret_torque_model;
+    std::optional<double> output_torque_Nm;
+    std::optional<InputTorque> input_torque_Nm;
+    std::optional<Efficiency> efficiency;
+    std::optional<EccentricLoad> eccentric_load_N;
+    std::optional<double> friction_coefficient;
+    std::optional<Contact> contact;
+    std::optional<nlohmann::json> transmission_error;  ///< TransmissionErrorJson's block
+    std::optional<nlohmann::json> life;                ///< the bearing and cam-contact lives (LifeJson)
+    std::optional<nlohmann::json> lubrication;         ///< LubricationResult's JSON, or {"error": why}
+    /// AddRatingsJson's keys (a number or null; with "ratings").
+    std::optional<nlohmann::json> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, ratings;
+    std::optional<nlohmann::json> output_bearing;      ///< OutputBearingJson's block, or {"error": why}
+    std::optional<Masses> masses;
+    std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin;
+    std::optional<Stiffness> stiffness;
+    std::optional<StiffnessSegments> stiffness_segments;
+    std::optional<nlohmann::json> joint_model;         ///< the parameters `camopt export` reads
+    std::optional<nlohmann::json> torsional_dynamics;  ///< TorsionalDynamicsJson, or {"error": why}
+    std::vector<std::string> notes;
+    std::optional<nlohmann::json> geometry_files;      ///< GeometryFilesJson's block
+    std::optional<nlohmann::json> inspection;          ///< InspectionJson's block
+    std::optional<nlohmann::json> measured;            ///< MeasuredJson's block and the compliant model's
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("study", &study, Field().Const("lcr_analysis").Desc("the study kind"));
+      a->Visit("name", &name, Field().Desc("the design's name"));
+      a->Visit("speed_ratio", &speed_ratio, Field().Desc("speed reduction ratio r_i, input over output speed"));
+      a->Visit("cam_speed_ratio", &cam_speed_ratio, Field().Desc("the cam's spin over the input speed"));
+      a->Visit("output_speed_ratio", &output_speed_ratio, Field().Desc("the output turret's speed over the input speed"));
+      a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("over the larger turret's rollers"));
+      a->Visit("angle_steps", &angle_steps, Field().Desc("samples of the input revolution"));
+      a->Visit("load_model", &load_model, Field().OneOf({"rigid", "compliant"}).Desc("analysis.load_model"));
+      a->Visit("input_cam", &input_cam, Field().Desc("cam A and the fixed turret's rollers"));
+      a->Visit("output_cam", &output_cam, Field().Desc("cam B and the output turret's rollers"));
+      a->Visit("fixed_turret_torque_Nm", &fixed_turret_torque_Nm,
+               Field(n).Unit("N·m").Desc("mean torque on the fixed turret (force stages)"));
+      a->Visit("fixed_turret_torque_model", &fixed_turret_torque_model,
+               Field().Desc("how the fixed turret's torque is found (force stages with friction)"));
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("load.output_torque_Nm (force stages)"));
+      a->Visit("input_torque_Nm", &input_torque_Nm, Field().Desc("the input torque (efficiency stage)"));
+      a->Visit("efficiency", &efficiency, Field().Desc("the paper's friction model (efficiency stage)"));
+      a->Visit("eccentric_load_N", &eccentric_load_N, Field().Desc("the eccentric's load (efficiency stage)"));
+      a->Visit("friction_coefficient", &friction_coefficient,
+               Field().Desc("load.friction_coefficient μ of the eccentric (efficiency stage)"));
+      a->Visit("contact", &contact, Field().Desc("the finite-length contact model (with contact)"));
+      a->Visit("transmission_error", &transmission_error,
+               Field().Desc("transmission error and lost motion from the tolerances (with tolerances; docs/lcr.md)")
+                   .Schema(TransmissionErrorSchema()));
+      a->Visit("life", &life,
+               Field().Desc("the bearing lives and the cams' contact lives (with a speed or a duty cycle; docs/life.md)")
+                   .Schema(LifeSchema()));
+      a->Visit("lubrication", &lubrication,
+               Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationSchema()));
+      const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
+      a->Visit("rated_torque_Nm", &rated_torque_Nm,
+               Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
+      a->Visit("peak_torque_Nm", &peak_torque_Nm,
+               Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
+      a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
+               Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
+      a->Visit("ratings", &ratings, Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)").Schema(RatingsSchema()));
+      a->Visit("output_bearing", &output_bearing,
+               Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingSchema()));
+      a->Visit("masses", &masses, Field().Desc("the cam's mass and the inertia at the output (with stiffness or ratings)"));
+      a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,
+               Field(n).Unit("N·m/arcmin").Desc("mean of both senses' slopes, 50-100% of the rated torque (with stiffness)"));
+      a->Visit("lost_motion_arcmin", &lost_motion_arcmin,
+               Field(n).Unit("arcmin").Desc("at ±3% of the rated torque (with stiffness)"));
+      a->Visit("backlash_arcmin", &backlash_arcmin,
+               Field().Unit("arcmin").Desc("0: conjugate profiles have no clearance (with stiffness)"));
+      a->Visit("stiffness", &stiffness, Field().Desc("the torsional curve (with stiffness)"));
+      a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
+      a->Visit("joint_model", &joint_model,
+               Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelSchema()));
+      a->Visit("torsional_dynamics", &torsional_dynamics,
+               Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsSchema()));
+      a->Visit("notes", &notes, Field().Desc("what the numbers do not say (an undercut, a zero torque, a model's warning)"));
+      a->Visit("geometry_files", &geometry_files,
+               Field().Desc("the cams' geometry files (with the profile stage)").Schema({{"type", "object"}}));
+      a->Visit("inspection", &inspection,
+               Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
+      a->Visit("measured", &measured,
+               Field().Desc("the measured cam and the compliant model with it (with measured_profile)")
+                   .Schema(MeasuredSchema()));
+    }
+    /// The schemas of the raw blocks: the keys camopt reads from them (report.html, datasheet.html,
+    /// `camopt export`, the convergence headlines), the rest open (lcr_analysis_study.cc).
+    static nlohmann::ordered_json SubsurfaceSchema();
+    static nlohmann::ordered_json TransmissionErrorSchema();
+    static nlohmann::ordered_json LifeSchema();
+    static nlohmann::ordered_json LubricationSchema();
+    static nlohmann::ordered_json RatingsSchema();
+    static nlohmann::ordered_json OutputBearingSchema();
+    static nlohmann::ordered_json JointModelSchema();
+    static nlohmann::ordered_json TorsionalDynamicsSchema();
+    static nlohmann::ordered_json MeasuredSchema();
+  };
+  Json json;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    json.Serialize(a);
+  }
 };
 
 /// @throws StudyError (exit 2) naming the JSON path of bad input.
@@ -400,8 +693,8 @@ Study Parse(const Node& root);
 InspectedPart CamPart(const Study& study, lcr::Side side);
 /// Runs the stages asked. @throws StudyError for a design no roller can carry load on.
 Result Run(const Study& study, const RunContext& ctx);
-/// The content of result.json.
-nlohmann::json ToJson(const Study& study, const Result& result);
+/// result.json's members of `result` (Result::json) from its model numbers; Run ends with it.
+void FillResult(const Study& study, Result& result);
 /// result.json, series.csv and plots (forces), DXF/SVG drawings (profile).
 void Write(const Study& study, const Result& result, Outputs& out);
 

@@ -563,19 +563,11 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   }
   // The one status of the answer (SettleStatus), stamped on the result, which is then written once.
   const double status_cpu = ProcessCpuSeconds(), status_wall = WallSeconds();
-  // Until every kind sets its declared result (Outputs::SetResult), a kind's hand-written
-  // result.json is read back once here; its facts are the same top-level keys.
-  if (!outputs.result())
-    if (const auto raw = outputs.files().find("result.json"); raw != outputs.files().end()) {
-      nlohmann::json r = nlohmann::json::parse(raw->second, nullptr, false);
-      RunFacts facts;
-      if (r.is_object()) {
-        if (r.contains("converged") && r["converged"].is_boolean()) facts.converged = r["converged"].get<bool>();
-        if (r.contains("feasible") && r["feasible"].is_boolean()) facts.feasible = r["feasible"].get<bool>();
-        if (r.contains("warning") && r["warning"].is_string()) facts.warning = r["warning"].get<std::string>();
-        outputs.SetResultJson(std::move(r), std::move(facts));
-      }
-    }
+  // Every kind declares its result (studies/archive.h) and hands it over with Outputs::SetResult;
+  // a result.json written as text would bypass the status and the stamp.
+  if (outputs.files().count("result.json"))
+    throw std::logic_error("study kind " + kind + " wrote result.json itself: hand its declared Result to "
+                           "Outputs::SetResult");
   if (nlohmann::json* result = outputs.result()) {
     SettleStatus(kind, study, outputs);
     // Provenance and the warnings, the same fields for every kind (studies/provenance.h), added

@@ -5,8 +5,8 @@
 // CAMOPT_REGISTER_STUDY_KIND (the runner and the parse step) and CAMOPT_REGISTER_KIND (the input's
 // and the result's schemas), with its work estimate (RegisterWorkEstimate), fidelity knobs
 // (CAMOPT_REGISTER_FIDELITY) and report rows (CAMOPT_REGISTER_REPORT) beside them; docs/studies.md,
-// "One declaration per kind" and "The result declared once". Kinds whose result is not declared
-// yet write result.json with a hand-written ToJson and register with CAMOPT_REGISTER_DECLARED_KIND.
+// "One declaration per kind" and "The result declared once". Write hands the Result to
+// Outputs::SetResult; RunStudy stamps it and writes result.json.
 #pragma once
 
 #include <chrono>

@@ -449,7 +449,7 @@ TEST(GeometryFiles, LcrIIStepSolidsReadBack) {
   const studies::lcr_analysis::Result res = studies::lcr_analysis::Run(st, {"lcr_ii.json", true});
   studies::Outputs out;
   studies::lcr_analysis::Write(st, res, out);
-  const json j = studies::lcr_analysis::ToJson(st, res);
+  const json j = studies::WriteResult(res);
   for (const char* side : {"input", "output"}) {
     const json& s = study["reducer"][side];
     const double R = s["turret_radius_mm"], e = study["reducer"]["eccentricity_mm"];
@@ -532,7 +532,7 @@ TEST(GeometryFiles, LcrCutterPathLayerWhenACutterIsGiven) {
   EXPECT_EQ(out.files().at("output_cam.dxf").find("CUTTER_PATH"), std::string::npos);
   EXPECT_FALSE(out.files().count("input_cam.step"));
   EXPECT_EQ(out.files().at("input_cam.stl").rfind("solid ", 0), 0u);
-  const json g = studies::lcr_analysis::ToJson(st, res)["geometry_files"];
+  const json g = studies::WriteResult(res)["geometry_files"];
   EXPECT_EQ(g["input_cam"]["cutter_diameter_mm"], 10.0);
   EXPECT_LE(double(g["input_cam"]["dxf_max_deviation_um"]), 5.0);
   // A coarser tolerance, fewer arcs.
@@ -625,7 +625,7 @@ TEST(GeometryFiles, EveryExampleStepSolidReadsBack) {
       const auto st = studies::lcr_analysis::Parse(root);
       const auto res = studies::lcr_analysis::Run(st, {name, true});
       studies::lcr_analysis::Write(st, res, out);
-      j = studies::lcr_analysis::ToJson(st, res);
+      j = studies::WriteResult(res);
     } else if (kind == "cycloid_ltca") {
       study["analysis"] = {{"evaluate", {"unloaded"}}, {"crank_angles_deg", {0}}};
       study.erase("duty_cycle");  // a bearing life needs the loaded stage; the geometry does not

@@ -39,7 +39,7 @@ TEST(LazyStages, LcrProfileOnlyNeedsNoMaterialOrLoad) {
   EXPECT_FALSE(res.loads_at_zero.has_value());
   EXPECT_EQ(res.input_cam.undercut_margin_mm, full.input_cam.undercut_margin_mm);
   EXPECT_EQ(res.output_cam.min_pitch_curve_radius_mm, full.output_cam.min_pitch_curve_radius_mm);
-  const json j = lcr_study::ToJson(st, res);
+  const json j = studies::WriteResult(res);
   EXPECT_FALSE(j["input_cam"].contains("max_roller_force_N"));
   EXPECT_FALSE(j.contains("efficiency"));
 

@@ -40,7 +40,7 @@ StudyRun RunStudy(const nlohmann::json& s) {
   const studies::Node root(&s, "s.json", "");
   StudyRun r{studies::lcr_analysis::Parse(root), {}, {}};
   r.result = studies::lcr_analysis::Run(r.study, {"s.json", true});
-  r.json = studies::lcr_analysis::ToJson(r.study, r.result);
+  r.json = studies::WriteResult(r.result);
   return r;
 }
 

@@ -176,9 +176,8 @@ TEST(LcrLife, OneLineDutyCycleEqualsTorqueAndSpeed) {
     dc["load"].erase("input_speed_rpm");
     dc["duty_cycle"] = {{{"output_torque_Nm", 80}, {"input_speed_rpm", 1000}, {"time_share", 1}}};
     const auto a = RunStudy(one), b = RunStudy(dc);
-    const studies::Node ra(&one, "a.json", ""), rb(&dc, "b.json", "");
-    const auto ja = studies::lcr_analysis::ToJson(studies::lcr_analysis::Parse(ra), a)["life"];
-    const auto jb = studies::lcr_analysis::ToJson(studies::lcr_analysis::Parse(rb), b)["life"];
+    const auto ja = studies::WriteResult(a)["life"];
+    const auto jb = studies::WriteResult(b)["life"];
     EXPECT_EQ(ja, jb);
     EXPECT_TRUE(std::isfinite(a.life->shortest_L10h));
   }
@@ -211,7 +210,7 @@ TEST(LcrLife, StudyWithoutSpeedHasNoLife) {
   const studies::Node root(&s, "s.json", "");
   const auto st = studies::lcr_analysis::Parse(root);
   EXPECT_FALSE(st.life.has_value());
-  EXPECT_FALSE(studies::lcr_analysis::ToJson(st, studies::lcr_analysis::Run(st, {"s.json", true})).contains("life"));
+  EXPECT_FALSE(studies::WriteResult(studies::lcr_analysis::Run(st, {"s.json", true})).contains("life"));
 }
 
 TEST(LcrLife, BadInputExitsTwoNamingThePath) {

@@ -34,7 +34,7 @@ nlohmann::json TiltStudy(double misalignment_mrad) {
 nlohmann::json RunJson(const nlohmann::json& s) {
   const studies::Node root(&s, "s.json", "");
   const auto st = studies::lcr_analysis::Parse(root);
-  return studies::lcr_analysis::ToJson(st, studies::lcr_analysis::Run(st, {"s.json", true}));
+  return studies::WriteResult(studies::lcr_analysis::Run(st, {"s.json", true}));
 }
 
 // One duty line: slice k lives L_k = 10⁶ (C_k/P_k)^(10/3) / (60 n R), C_k = C·12^(−7/9), and the

@@ -1,4 +1,4 @@
-// The lcr_analysis study: numbers through the C++ entry points (Parse, Run, ToJson, Write), and
+// The lcr_analysis study: numbers through the C++ entry points (Parse, Run, WriteResult, Write), and
 // through the CLI the exit codes, messages and files written.
 #include <filesystem>
 #include <string>
@@ -65,10 +65,10 @@ TEST(LcrStudy, ExampleWritesEveryOutputWithTheRequiredFields) {
   }
   EXPECT_TRUE(res["input_torque_Nm"]["mean"].is_number());
   EXPECT_TRUE(res["input_torque_Nm"]["max"].is_number());
-  // The CLI writes what the C++ entry points give: result.json is ToJson(Parse, Run).
+  // The CLI writes what the C++ entry points give: result.json is WriteResult(Run(Parse)).
   const studies::Node root(&study, "lcr.json", "");
   const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(root);
-  EXPECT_EQ(camopt::testing::WithoutRunStamp(res), studies::lcr_analysis::ToJson(st, studies::lcr_analysis::Run(st, {"lcr.json", true})));
+  EXPECT_EQ(camopt::testing::WithoutRunStamp(res), studies::WriteResult(studies::lcr_analysis::Run(st, {"lcr.json", true})));
   for (const char* f : {"series.csv", "forces.svg", "contact_stress.svg", "efficiency.svg", "input_cam.dxf",
                         "output_cam.dxf", "input_assembly.svg", "output_assembly.svg"})
     EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
@@ -87,7 +87,7 @@ TEST(LcrStudy, ProfileOnlyEvaluatesNoForces) {
   const studies::Node root(&study, "lcr.json", "");
   const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(root);
   const studies::lcr_analysis::Result res = studies::lcr_analysis::Run(st, {"lcr.json", true});
-  const nlohmann::json j = studies::lcr_analysis::ToJson(st, res);
+  const nlohmann::json j = studies::WriteResult(res);
   EXPECT_FALSE(j["input_cam"].contains("max_roller_force_N"));
   EXPECT_FALSE(j.contains("efficiency"));
   EXPECT_TRUE(res.series.theta_rad.empty());

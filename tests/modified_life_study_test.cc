@@ -97,7 +97,7 @@ nlohmann::json LcrStudy() {
 nlohmann::json RunLcr(const nlohmann::json& study) {
   const studies::Node root(&study, "lcr.json", "");
   const studies::lcr_analysis::Study st = studies::lcr_analysis::Parse(root);
-  return studies::lcr_analysis::ToJson(st, studies::lcr_analysis::Run(st, {"lcr.json", true}));
+  return studies::WriteResult(studies::lcr_analysis::Run(st, {"lcr.json", true}));
 }
 
 TEST(ModifiedLifeStudy, LcrRowsMatchTheHandCalculation) {

@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/archive.h"
+#include "studies/datasheet.h"
+#include "studies/ratings.h"
 #include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/status.h"
@@ -228,6 +230,28 @@ TEST(ResultSchema, TheStatusFollowsTheTypedFacts) {
     SettleStatus("no_kind_for_facts", study, out);
     EXPECT_EQ(*out.status(), Status::kFeasibleVerified);
   }
+}
+
+// datasheet.html's shared rows (the ratings and the output bearing, studies/ratings.h) and the
+// life table it reads name members of lcr_analysis's result: its raw blocks list those keys.
+TEST(ResultSchema, LcrAnalysisDeclaresTheDatasheetsRatingsRows) {
+  const ordered_json s = ResultSchemaOf("lcr_analysis");
+  int checked = 0;
+  for (const DatasheetSection& section : RatingsDatasheetSections())
+    for (const DatasheetRow& row : section.rows) {
+      EXPECT_TRUE(Declares(s, row.pointer)) << section.title << ": " << row.pointer;
+      if (!row.why_pointer.empty()) {
+        EXPECT_TRUE(Declares(s, row.why_pointer)) << section.title << ": " << row.why_pointer;
+      }
+      ++checked;
+    }
+  for (const char* p : {"/life/table/0/L10h", "/life/table/0/element", "/life/life_h", "/masses/includes",
+                        "/stiffness/lost_motion_at_percent_arcmin", "/stiffness_segments/K3_Nm_per_arcmin",
+                        "/joint_model/tilt_stiffness_Nm_per_rad", "/lubrication/efficiency"}) {
+    EXPECT_TRUE(Declares(s, p)) << p;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
 }
 
 }  // namespace result_schema_test
