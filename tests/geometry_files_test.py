@@ -179,7 +179,10 @@ def free_edges(tris):
 
 
 def admesh_disconnected(path):
-    out = subprocess.run(["admesh", path], capture_output=True, text=True).stdout
+    # admesh echoes the 80-byte header as a C string: the header has no NUL inside its 80 bytes
+    # (the format needs none), so the echo runs on into whatever memory follows, which need not be
+    # UTF-8. Only the counts below are read.
+    out = subprocess.run(["admesh", path], capture_output=True).stdout.decode("utf-8", errors="replace")
     total = None
     for line in out.splitlines():
         if line.startswith("Total disconnected facets"):
