@@ -329,7 +329,8 @@ TEST(CycloidTuningStudy, AnUnverifiedDesignEndsIncomplete) {
   tuning::Write(s, r, out);
   EXPECT_NE(out.incomplete().find("edge_margin_um"), std::string::npos) << out.incomplete();
   EXPECT_NE(out.incomplete().find("not verified"), std::string::npos) << out.incomplete();
-  EXPECT_TRUE(out.files().count("result.json"));
+  ASSERT_NE(out.result(), nullptr);  // handed to RunStudy, which writes result.json
+  EXPECT_EQ((*out.result())["verified"], false);
 }
 
 TEST(CycloidTuningStudy, BadGeneralFormsAreInputErrors) {

@@ -3,6 +3,7 @@
 // "geometry_files": {"written": false}; the same study with the block absent does write them (so
 // that the first check can fail). A value that is neither an object nor a boolean is bad input.
 #include <iterator>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -52,7 +53,8 @@ std::pair<studies::Outputs, json> RunKind(const K& kind, const json& study) {
   const auto res = kind.run(st, {"study.json", true});
   studies::Outputs out;
   kind.write(st, res, out);
-  return {out, json::parse(out.files().at("result.json"))};
+  if (!out.result()) throw std::logic_error("the kind's Write handed no result to Outputs::SetResult");
+  return {out, *out.result()};
 }
 
 // As given: `cad_files` geometry files; with "geometry_files": false: none, every other file the
