@@ -1678,65 +1678,6 @@ nlohmann::ordered_json Result::TransmissionErrorSchema() {
   return {{"type", "object"}, {"properties", p}};
 }
 
-nlohmann::ordered_json Result::RatingsSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson error = ojson::object();
-  for (const char* k : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"})
-    error[k] = {{"description", "[N·m]"}};
-  ojson p = ojson::object();
-  p["estimated_error"] = {{"type", {"object", "null"}}, {"properties", error}};
-  p["allowable_output_speed_rpm"] = {{"description", "[rpm]"}};
-  p["error"] = {{"type", "string"}, {"description", "why the ratings were not solved (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
-}
-
-nlohmann::ordered_json Result::OutputBearingSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["L10h"] = {{"description", "[h]"}};
-  p["static_safety"] = {{"description", "f_s"}};
-  p["error"] = {{"type", "string"}, {"description", "why the life was not computed (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
-}
-
-nlohmann::ordered_json Result::LubricationSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["efficiency"] = {{"description", "at the load's torque and speed"}};
-  p["power_loss_W"] = {{"type", "object"}, {"properties", {{"total", {{"description", "[W]"}}}}}};
-  p["power_loss_sampling_error_W"] = {{"description", "[W]"}};
-  p["oil_temperature_C"] = {{"description", "[°C]"}};
-  p["min_film_lambda"] = {{"type", "object"}, {"properties", {{"value", {{"description", "least film parameter λ"}}}}}};
-  p["no_load_running_torque_Nm"] = {{"description", "at the input [N·m]"}};
-  p["error"] = {{"type", "string"}, {"description", "why the losses were not computed (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
-}
-
-nlohmann::ordered_json Result::JointModelSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  for (const char* k : {"ratio", "rated_torque_Nm", "stiffness_Nm_per_rad", "stiffness_segments", "torsion_curve",
-                        "backlash_rad", "lost_motion_rad", "lost_motion_percent", "reflected_inertia_kgm2",
-                        "inertia_includes", "damping_Nms_per_rad", "damping_note", "friction_torque_Nm",
-                        "friction_note", "efficiency", "loss_table", "tilt_stiffness_Nm_per_rad", "tilt_note"})
-    p[k] = ojson::object();
-  return {{"type", "object"}, {"properties", p}};
-}
-
-nlohmann::ordered_json Result::TorsionalDynamicsSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["natural_frequencies_Hz"] = {{"type", "array"}, {"items", {{"description", "[Hz]"}}}};
-  p["mesh_stiffness_ripple_percent"] = {{"description", "[%]"}};
-  p["sweep_peak"] = {{"type", "object"},
-                     {"properties",
-                      {{"overload_factor", {{"description", "the dynamic overload factor at the sweep's peak"}}},
-                       {"overload_sampling_error", {{"description", "its sampling error"}}},
-                       {"input_speed_rpm", {{"description", "[rpm]"}}}}}};
-  p["error"] = {{"type", "string"}, {"description", "why the dynamics were not solved (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
-}
-
 namespace {
 
 // output_mechanism.csv (over the crank bearing's load period: every disc's bearing load, its

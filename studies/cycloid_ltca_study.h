@@ -35,6 +35,7 @@
 #include "studies/input.h"
 #include "studies/material_input.h"
 #include "studies/measured_profile.h"
+#include "studies/ratings.h"
 #include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/tolerance_input.h"
@@ -734,27 +735,21 @@ struct Result {
              Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
     a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
              Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
-    a->Visit("ratings", &ratings_json, Field().Desc("the catalogue's ratings (docs/ratings.md)").Schema(RatingsSchema()));
+    a->Visit("ratings", &ratings_json, Field().Desc("the catalogue's ratings (docs/ratings.md)").Schema(RatingsResultSchema()));
     a->Visit("output_bearing", &output_bearing_json,
-             Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingSchema()));
+             Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));
     a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
     a->Visit("masses", &masses_out, Field().Desc("with stiffness or ratings"));
     a->Visit("joint_model", &joint_model,
-             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelSchema()));
+             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelResultSchema()));
     a->Visit("lubrication", &lubrication_json,
-             Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationSchema()));
+             Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationResultSchema()));
     a->Visit("torsional_dynamics", &torsional_dynamics,
-             Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsSchema()));
+             Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsResultSchema()));
   }
   /// The schemas of the raw blocks shared with kinds whose result is not declared yet: the keys
   /// camopt reads from them (report.html's headlines), the rest open.
   static nlohmann::ordered_json TransmissionErrorSchema();
-  static nlohmann::ordered_json RatingsSchema();
-  static nlohmann::ordered_json OutputBearingSchema();
-  static nlohmann::ordered_json LubricationSchema();
-  static nlohmann::ordered_json TorsionalDynamicsSchema();
-  /// "joint_model" (its tilt keys from AddJointTilt, shared with lcr_analysis).
-  static nlohmann::ordered_json JointModelSchema();
 
   // Not in result.json: the model's numbers.
   /// Per angle (meshes) and over the cycle, at crank_angles_rad: the study's angles, or their

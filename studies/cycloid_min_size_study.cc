@@ -876,19 +876,6 @@ nlohmann::ordered_json Result::RatingsSchema() {
     "additionalProperties": false})json");
 }
 
-nlohmann::ordered_json Result::TorsionalDynamicsSchema() {
-  // cycloid_ltca's block (TorsionalDynamicsJson), with the types of the keys it lists: the sweep's
-  // peak is null when no swept speed has a stable periodic solution.
-  nlohmann::ordered_json t = cycloid_ltca::Result::TorsionalDynamicsSchema();
-  nlohmann::ordered_json& p = t["properties"];
-  p["natural_frequencies_Hz"]["items"]["type"] = "number";
-  p["mesh_stiffness_ripple_percent"]["type"] = "number";
-  p["sweep_peak"]["type"] = {"object", "null"};
-  nlohmann::ordered_json& peak = p["sweep_peak"]["properties"];
-  for (auto it = peak.begin(); it != peak.end(); ++it) (*it)["type"] = "number";
-  return t;
-}
-
 namespace {
 
 // result.json's members of r from the study and the outcome (below).

@@ -544,7 +544,7 @@ struct Result {
       a->Visit("ratings", &ratings,
                Field().Schema(RatingsSchema()).Desc("with ratings: the rated and momentary torques checked"));
       a->Visit("torsional_dynamics", &torsional_dynamics,
-               Field().Schema(TorsionalDynamicsSchema()).Desc(
+               Field().Schema(TorsionalDynamicsResultSchema()).Desc(
                    "with torsional_dynamics: cycloid_ltca's block for the reported design, or its error"));
     }
   };
@@ -670,7 +670,6 @@ struct Result {
   /// The schemas of the raw blocks of best (cycloid_min_size_study.cc).
   static nlohmann::ordered_json LifeSchema();
   static nlohmann::ordered_json RatingsSchema();
-  static nlohmann::ordered_json TorsionalDynamicsSchema();
 
   // Not in result.json: the sizing's outcome and the best design's cycle, which the other files
   // are drawn from.

@@ -27,6 +27,7 @@
 #include "model/lcr/lubrication.h"
 #include "studies/material_input.h"
 #include "studies/ratings.h"
+#include "studies/ratings_input.h"
 #include "studies/measured_profile.h"
 #include "studies/study.h"
 #include "studies/torsional_dynamics_input.h"
@@ -634,7 +635,7 @@ struct Result {
                Field().Desc("the bearing lives and the cams' contact lives (with a speed or a duty cycle; docs/life.md)")
                    .Schema(LifeSchema()));
       a->Visit("lubrication", &lubrication,
-               Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationSchema()));
+               Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationResultSchema()));
       const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
       a->Visit("rated_torque_Nm", &rated_torque_Nm,
                Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
@@ -642,9 +643,9 @@ struct Result {
                Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
       a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
                Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
-      a->Visit("ratings", &ratings, Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)").Schema(RatingsSchema()));
+      a->Visit("ratings", &ratings, Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)").Schema(RatingsResultSchema()));
       a->Visit("output_bearing", &output_bearing,
-               Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingSchema()));
+               Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));
       a->Visit("masses", &masses, Field().Desc("the cam's mass and the inertia at the output (with stiffness or ratings)"));
       a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,
                Field(n).Unit("N·m/arcmin").Desc("mean of both senses' slopes, 50-100% of the rated torque (with stiffness)"));
@@ -655,9 +656,9 @@ struct Result {
       a->Visit("stiffness", &stiffness, Field().Desc("the torsional curve (with stiffness)"));
       a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
       a->Visit("joint_model", &joint_model,
-               Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelSchema()));
+               Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelResultSchema()));
       a->Visit("torsional_dynamics", &torsional_dynamics,
-               Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsSchema()));
+               Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsResultSchema()));
       a->Visit("notes", &notes, Field().Desc("what the numbers do not say (an undercut, a zero torque, a model's warning)"));
       a->Visit("geometry_files", &geometry_files,
                Field().Desc("the cams' geometry files (with the profile stage)").Schema({{"type", "object"}}));
@@ -672,11 +673,6 @@ struct Result {
     static nlohmann::ordered_json SubsurfaceSchema();
     static nlohmann::ordered_json TransmissionErrorSchema();
     static nlohmann::ordered_json LifeSchema();
-    static nlohmann::ordered_json LubricationSchema();
-    static nlohmann::ordered_json RatingsSchema();
-    static nlohmann::ordered_json OutputBearingSchema();
-    static nlohmann::ordered_json JointModelSchema();
-    static nlohmann::ordered_json TorsionalDynamicsSchema();
     static nlohmann::ordered_json MeasuredSchema();
   };
   Json json;

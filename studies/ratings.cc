@@ -238,4 +238,23 @@ std::vector<DatasheetSection> RatingsDatasheetSections() {
             {"tilt under the largest moment", "/output_bearing/tilt_arcmin", "arcmin"}}}};
 }
 
+nlohmann::ordered_json RatingsResultSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson error = ojson::object();
+  for (const char* k : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"})
+    error[k] = {{"description", "[N·m]"}};
+  ojson p = ojson::object();
+  p["rated_life_h"] = {{"type", "number"}, {"description", "[h]"}};
+  p["rated_output_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
+  p["rated_by"] = {{"type", "string"}};
+  p["peak_limited_by"] = {{"type", "string"}};
+  p["momentary_limited_by"] = {{"type", "string"}};
+  p["momentary_peaks_allowed"] = {{"type", {"number", "null"}}};
+  p["estimated_error"] = {{"type", {"object", "null"}}, {"properties", error}};
+  p["allowable_output_speed_rpm"] = {{"type", {"number", "null"}}, {"description", "[rpm]"}};
+  p["allowable_output_speed"] = {{"type", "string"}};
+  p["error"] = {{"type", "string"}, {"description", "why the ratings were not solved (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
 }  // namespace camopt::studies

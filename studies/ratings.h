@@ -100,4 +100,8 @@ nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, doub
 /// The datasheet's "Ratings" and "Output bearing" sections (studies/datasheet.h).
 std::vector<DatasheetSection> RatingsDatasheetSections();
 
+/// The JSON Schema of the block AddRatingsJson writes (result.json's ratings of cycloid_ltca and
+/// lcr_analysis): the keys camopt reads (the datasheet's rows among them).
+nlohmann::ordered_json RatingsResultSchema();
+
 }  // namespace camopt::studies

@@ -123,4 +123,29 @@ void CheckSizingRatingsAlone(const Node& root, bool life_limit, bool duty_cycle)
                              "duty_cycle; would fit: one of the two");
 }
 
+nlohmann::ordered_json OutputBearingResultSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["type"] = {{"type", "string"}};
+  p["P_C_N"] = {{"description", "[N]"}};
+  p["L10h"] = {{"description", "[h]"}};
+  p["L_OC_h"] = {{"description", "[h]"}};
+  p["P0_N"] = {{"description", "[N]"}};
+  p["static_safety"] = {{"description", "f_s"}};
+  p["tilt_arcmin"] = {{"description", "[arcmin]"}};
+  p["error"] = {{"type", "string"}, {"description", "why the life was not computed (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
+nlohmann::ordered_json JointModelResultSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  for (const char* k : {"ratio", "rated_torque_Nm", "stiffness_Nm_per_rad", "stiffness_segments", "torsion_curve",
+                        "backlash_rad", "lost_motion_rad", "lost_motion_percent", "reflected_inertia_kgm2",
+                        "inertia_includes", "damping_Nms_per_rad", "damping_note", "friction_torque_Nm",
+                        "friction_note", "efficiency", "loss_table", "tilt_stiffness_Nm_per_rad", "tilt_note"})
+    p[k] = ojson::object();
+  return {{"type", "object"}, {"properties", p}};
+}
+
 }  // namespace camopt::studies

@@ -225,4 +225,9 @@ nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBeari
 /// tilt about each axis across the reducer's; null when not given) and "tilt_note".
 void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& joint_model);
 
+/// The JSON Schemas of result.json's output_bearing and joint_model blocks (cycloid_ltca and
+/// lcr_analysis; AddJointTilt adds the tilt keys): the keys camopt reads.
+nlohmann::ordered_json OutputBearingResultSchema();
+nlohmann::ordered_json JointModelResultSchema();
+
 }  // namespace camopt::studies

@@ -239,4 +239,20 @@ void WriteTorsionalDynamics(const TorsionalDynamicsResult& r, Outputs& out) {
   out.Add("dynamic_te.csv", ToCsv(d));
 }
 
+nlohmann::ordered_json TorsionalDynamicsResultSchema() {
+  using ojson = nlohmann::ordered_json;
+  ojson p = ojson::object();
+  p["natural_frequencies_Hz"] = {{"type", "array"}, {"items", {{"type", "number"}, {"description", "[Hz]"}}}};
+  p["mesh_stiffness_ripple_percent"] = {{"type", "number"}, {"description", "[%]"}};
+  // null when no swept speed has a stable periodic solution
+  p["sweep_peak"] = {{"type", {"object", "null"}},
+                     {"properties",
+                      {{"overload_factor",
+                        {{"type", "number"}, {"description", "the dynamic overload factor at the sweep's peak"}}},
+                       {"overload_sampling_error", {{"type", "number"}, {"description", "its sampling error"}}},
+                       {"input_speed_rpm", {{"type", "number"}, {"description", "[rpm]"}}}}}};
+  p["error"] = {{"type", "string"}, {"description", "why the dynamics were not solved (then the only key)"}};
+  return {{"type", "object"}, {"properties", p}};
+}
+
 }  // namespace camopt::studies

@@ -108,4 +108,8 @@ nlohmann::json TorsionalDynamicsJson(const TorsionalDynamicsSpec& spec, const To
 /// mesh_stiffness.csv and dynamic_te.csv.
 void WriteTorsionalDynamics(const TorsionalDynamicsResult& r, Outputs& out);
 
+/// The JSON Schema of the block TorsionalDynamicsJson writes (result.json's torsional_dynamics of
+/// cycloid_ltca, lcr_analysis and cycloid_min_size): the keys camopt reads, with their types.
+nlohmann::ordered_json TorsionalDynamicsResultSchema();
+
 }  // namespace camopt::studies
