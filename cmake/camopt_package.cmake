@@ -2,7 +2,7 @@
 # the exported targets, so that an installed camopt is used with
 #   find_package(camopt 0.1 REQUIRED)
 #   target_link_libraries(app PRIVATE camopt::camopt)
-# The library is shared: every object of camopt_core is in it, so the self-registering study kinds
+# The library is shared: every object of the engine's rooms is in it, so the self-registering study kinds
 # are always there (a static archive would drop them unless linked whole).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -11,10 +11,10 @@ add_library(camopt_lib SHARED)
 add_library(camopt::camopt ALIAS camopt_lib)
 set_target_properties(camopt_lib PROPERTIES OUTPUT_NAME camopt EXPORT_NAME camopt
                       VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
-# The objects and private dependencies come from camopt_core; what a user of the headers needs is
+# The objects and private dependencies come from the rooms; what a user of the headers needs is
 # public: the include root (headers are included as "model/…", "studies/…") and the libraries the
 # headers include (Eigen, Ceres' Jet, nlohmann::json).
-target_link_libraries(camopt_lib PRIVATE camopt_core)
+target_link_libraries(camopt_lib PRIVATE ${CAMOPT_ENGINE})
 target_include_directories(camopt_lib PUBLIC
   $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/camopt>)

@@ -18,7 +18,7 @@ add_custom_command(
   DEPENDS ${_templates} ${PROJECT_SOURCE_DIR}/cmake/embed_templates.cmake
   COMMENT "Embedding the templates of camopt init"
   VERBATIM)
-target_sources(camopt_core PRIVATE ${CAMOPT_TEMPLATES_CC})
+target_sources(camopt_studies PRIVATE ${CAMOPT_TEMPLATES_CC})
 
 # The version recorded in every result.json and printed by `camopt --version`.
 set_source_files_properties(${PROJECT_SOURCE_DIR}/studies/provenance.cc PROPERTIES

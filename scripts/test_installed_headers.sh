@@ -8,7 +8,7 @@
 #     compiles each installed header whose path (under include/camopt) matches REGEX on its own
 #     against that install tree (cmake/headers_check), in BUILD/headers-check-NAME. A header that
 #     the build BUILD has already compiled on its own, as the first line of its room's .cc compiled
-#     alone (model/x.h, first included by model/x.cc: CMakeFiles/camopt_core.dir/model/x.cc.o), is
+#     alone (model/x.h, first included by model/x.cc: CMakeFiles/camopt_model.dir/model/x.cc.o), is
 #     not compiled alone again: those go into one translation unit of the shard, which checks that
 #     they resolve against the install tree with the package's flags.
 # The shards (cmake/camopt_package.cmake) keep each test near 30 s on 2 idle cores; all 145 headers
@@ -53,7 +53,7 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 proven=()
 while IFS= read -r h; do
   cc="${h%.h}.cc"
-  [[ "$h" =~ $regex && -f "$source/$cc" && -f "$build/CMakeFiles/camopt_core.dir/$cc.o" ]] || continue
+  [[ "$h" =~ $regex && -f "$source/$cc" && -f "$build/CMakeFiles/camopt_${h%%/*}.dir/$cc.o" ]] || continue
   # the .cc's first preprocessor line includes the header
   first=$(grep -m1 '^[[:space:]]*#' "$source/$cc" || true)
   if [[ "$first" =~ ^[[:space:]]*#[[:space:]]*include[[:space:]]*\"$h\" ]]; then proven+=("$h"); fi
