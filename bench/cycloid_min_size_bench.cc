@@ -10,7 +10,7 @@
 #include "bench/example_study.h"
 #include "tests/reference_designs.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 namespace cycloid_min_size_bench {
 
 void BM_CycloidMinSizeRatio29(benchmark::State& state) {
@@ -45,4 +45,4 @@ BENCHMARK(BM_CycloidMinSizeRatio29Study)->Unit(benchmark::kMillisecond)->Iterati
 BENCHMARK(BM_CycloidMinSizePaperStudy)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace cycloid_min_size_bench
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -12,10 +12,11 @@
 
 #include "model/cycloid/geometry_limits.h"
 #include "objectives/cycloid_fields.h"
-#include "objectives/sizing_driver.h"
+#include "sizing/sizing_driver.h"
 #include "optimizers/first_order.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+using namespace camopt::objectives;
 
 namespace {
 
@@ -1462,7 +1463,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     }
   };
 
-  // The sizing driver (objectives/sizing_driver.h) with one candidate: the tooth count is given.
+  // The sizing driver (sizing/sizing_driver.h) with one candidate: the tooth count is given.
   SizingCandidates loop;
   loop.count = 1;
   loop.label = [&](int) { return std::to_string(spec.drive.teeth) + " teeth"; };
@@ -1554,4 +1555,4 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   return out;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -106,7 +106,9 @@
 #include "optimizers/solver.h"
 #include "sizing/limit_slope.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+// The sizing loops speak the objectives' vocabulary (problems, limits, the verification contract).
+using namespace camopt::objectives;
 
 inline constexpr const char* kSizingOuterDiameter = "outer_diameter_mm";
 inline constexpr const char* kSizingVolume = "envelope_volume_mm3";
@@ -396,4 +398,4 @@ struct CycloidMinSizeOutcome {
 /// @throws std::invalid_argument for a spec the model refuses.
 CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const CycloidMinSizeOptions& options);
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -10,9 +10,10 @@
 
 #include "model/common/roots.h"
 #include "model/contact/hertz.h"
-#include "objectives/sizing_driver.h"
+#include "sizing/sizing_driver.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+using namespace camopt::objectives;
 namespace {
 
 namespace dc = camopt::disc_cam;
@@ -511,7 +512,7 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
     }
   };
 
-  // The sizing driver (objectives/sizing_driver.h) with one candidate: the follower type is given.
+  // The sizing driver (sizing/sizing_driver.h) with one candidate: the follower type is given.
   SizingCandidates loop;
   loop.count = 1;
   loop.label = [](int) { return std::string("translating roller follower"); };
@@ -577,4 +578,4 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
   return out;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -59,7 +59,9 @@
 #include "optimizers/solver.h"
 #include "sizing/limit_slope.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+// The sizing loops speak the objectives' vocabulary (problems, limits, the verification contract).
+using namespace camopt::objectives;
 
 inline constexpr const char* kDiscCamBaseCircle = "base_circle_radius_mm";
 inline constexpr const char* kDiscCamPressureRise = "pressure_angle_rise_deg";
@@ -180,4 +182,4 @@ struct DiscCamMinSizeOutcome {
 /// @throws std::invalid_argument as DiscCamSizingProblem.
 DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const DiscCamMinSizeOptions& options);
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

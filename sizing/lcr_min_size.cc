@@ -11,7 +11,8 @@
 #include "model/contact/hertz.h"
 #include "model/lcr/profile.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+using namespace camopt::objectives;
 namespace {
 
 using optimizers::SolverResult;
@@ -405,4 +406,4 @@ std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOpti
   return hi;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

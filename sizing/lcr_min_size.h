@@ -49,7 +49,9 @@
 #include "objectives/verification.h"
 #include "optimizers/solver.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+// The sizing loops speak the objectives' vocabulary (problems, limits, the verification contract).
+using namespace camopt::objectives;
 
 struct LcrMinSizeOptions {
   optimizers::SolverOptions solver;  ///< backend, tolerances, limits of each local solve
@@ -121,4 +123,4 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
 std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                  const std::string& key);
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

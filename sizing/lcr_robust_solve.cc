@@ -4,7 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+using namespace camopt::objectives;
 
 LcrRobustOutcome SolveLcrRobust(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                 const std::vector<double>& x0) {
@@ -61,4 +62,4 @@ LcrRobustOutcome SolveLcrRobust(const LcrSizingSpec& spec, const LcrMinSizeOptio
   return out;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -12,7 +12,9 @@
 #include "optimizers/solver.h"
 #include "sizing/lcr_min_size.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+// The sizing loops speak the objectives' vocabulary (problems, limits, the verification contract).
+using namespace camopt::objectives;
 
 /// The robust optimum of one combination (spec.robust set), started from x0 (the nominal optimum):
 /// the aggregate form, then the samples form (one row per sample), then the robust grid check at
@@ -32,4 +34,4 @@ struct LcrRobustOutcome {
 LcrRobustOutcome SolveLcrRobust(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
                                 const std::vector<double>& x0);
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -14,7 +14,8 @@
 #include "model/lcr/forces.h"
 #include "model/lcr/profile.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+using namespace camopt::objectives;
 namespace {
 
 // e, r_dA, r_dB, d_rA, d_rB (at most 6 line variables) and two crowning variables: the usual
@@ -709,4 +710,4 @@ Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec
   }
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -40,7 +40,9 @@
 #include "objectives/lcr_sizing.h"
 #include "objectives/verification.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
+// The sizing loops speak the objectives' vocabulary (problems, limits, the verification contract).
+using namespace camopt::objectives;
 
 struct LcrSizing3DSpec {
   lcr::ContactModelOptions contact;  ///< slices N, misalignment γ, half_space grid of the check
@@ -125,7 +127,7 @@ struct LcrMinSize3DOutcome {
 };
 
 /// Solves one combination under the 3D contact model (header). Branch and bound over candidates
-/// (objectives/sizing_driver.h): each polish round's problem has the rows of the round before and
+/// (sizing/sizing_driver.h): each polish round's problem has the rows of the round before and
 /// more, so its optimum bounds the final outer diameter from below (as far as the local optima are
 /// global ones); once a converged round's optimum (less the solver's relative tolerance) exceeds
 /// `bound` [mm] the polish stops there and the outcome is `paused` with that lower bound.
@@ -152,4 +154,4 @@ Verification VerifyLcrMinSize3D(const LcrSizingSpec& spec, const LcrSizing3DSpec
                                 LcrHalfSpaceCheck* first_grid = nullptr);
 
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

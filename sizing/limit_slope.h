@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 
 struct LimitSlope {
   double step = 0;  ///< h, in the limit's unit
@@ -58,4 +58,4 @@ inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, do
   return s;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

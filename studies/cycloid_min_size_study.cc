@@ -33,7 +33,7 @@
 
 namespace camopt::studies::cycloid_min_size {
 
-using objectives::CycloidSizingLimits;
+using sizing::CycloidSizingLimits;
 
 namespace {
 
@@ -262,7 +262,7 @@ void ParseOptimizer(const Input::Optimizer& in, Study& s) {
 // The sizing fields: "variables" and the sections. Fills s.spec.drive, s.spec.crowning and
 // s.spec.variables; returns every field by name (for the checks that follow).
 std::map<std::string, Field> ParseDesign(const Node& root, const Input& in, Study& s) {
-  const std::vector<std::string> names = objectives::CycloidSizingVariableNames();
+  const std::vector<std::string> names = sizing::CycloidSizingVariableNames();
   const Node v = root["variables"];
   if (v.json().empty()) v.Fail("an object of sized fields {\"field\": [lo, hi] or a number, ...}");
   std::set<std::string> in_variables;
@@ -282,7 +282,7 @@ std::map<std::string, Field> ParseDesign(const Node& root, const Input& in, Stud
       if (in_section)
         root[section][name].FailWith("given twice: also in /variables/" + name +
                                      "; give it once (a range or a number in \"variables\", or a number here)");
-      if (const std::string why = objectives::CycloidSizingVariableAllowed(name, s.spec.crowning.type); !why.empty())
+      if (const std::string why = sizing::CycloidSizingVariableAllowed(name, s.spec.crowning.type); !why.empty())
         v[name].FailWith("not with the crowning type \"" +
                          std::string(cycloid_common::CrowningTypeName(s.spec.crowning.type)) + "\": " + why +
                          " (choose the crowning with \"crowning\": {\"type\": ...})");
@@ -472,23 +472,23 @@ void CheckClosedFormCorner(const Node& root, const std::map<std::string, Field>&
 // A limit row's study key (its name without the sample index).
 std::string LimitKeyOfRow(const std::string& row) {
   const std::string base = row.substr(0, row.find('['));
-  if (base == objectives::kSizingPeakPressure) return "contact_stress_MPa";
-  if (base == objectives::kSizingEndDistance) return "min_edge_margin_um";
-  if (base == objectives::kSizingBacklash) return "min_backlash_arcsec / max_backlash_arcsec";
-  if (base == objectives::kSizingLte) return "max_lte_peak_to_peak_arcsec";
-  if (base == objectives::kSizingCurtate) return "min_curtate_margin";
-  if (base == objectives::kSizingUndercut) return "min_profile_radius_mm";
-  if (base == objectives::kSizingPinGap) return "min_pin_gap_mm";
-  if (base == objectives::kSizingWeb) return "min_web_mm";
-  if (base == objectives::kSizingCrowningFit) return "crowning_on_the_face";
-  if (base == objectives::kSizingLife) return "life_h";
-  if (base == objectives::kSizingStatic) return "min_static_safety";
+  if (base == sizing::kSizingPeakPressure) return "contact_stress_MPa";
+  if (base == sizing::kSizingEndDistance) return "min_edge_margin_um";
+  if (base == sizing::kSizingBacklash) return "min_backlash_arcsec / max_backlash_arcsec";
+  if (base == sizing::kSizingLte) return "max_lte_peak_to_peak_arcsec";
+  if (base == sizing::kSizingCurtate) return "min_curtate_margin";
+  if (base == sizing::kSizingUndercut) return "min_profile_radius_mm";
+  if (base == sizing::kSizingPinGap) return "min_pin_gap_mm";
+  if (base == sizing::kSizingWeb) return "min_web_mm";
+  if (base == sizing::kSizingCrowningFit) return "crowning_on_the_face";
+  if (base == sizing::kSizingLife) return "life_h";
+  if (base == sizing::kSizingStatic) return "min_static_safety";
   return base;
 }
 
 // Why the answer is not what was asked (exit 3), or "" when it is: the limit that blocks, its value
 // at the design the solve ended on, and the value of that limit at which that design fits.
-std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutcome& o) {
+std::string BlockingMessage(const Study& s, const sizing::CycloidMinSizeOutcome& o) {
   if (o.x.empty())
     return "no design meets the limits: the optimizer ended without a design (" +
            (o.result.message.empty() ? std::string(optimizers::ToString(o.result.status)) : o.result.message) +
@@ -530,7 +530,7 @@ std::string BlockingMessage(const Study& s, const objectives::CycloidMinSizeOutc
                                                       " tightening rounds)");
   }
   // No accurate check breaks: the closed-form rows the solver left violated.
-  const objectives::CycloidSizingEvaluation& a = o.check.accurate;
+  const sizing::CycloidSizingEvaluation& a = o.check.accurate;
   const CycloidSizingLimits& lim = s.spec.limits;
   struct Row {
     const char* key;
@@ -585,7 +585,7 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
     root["limits"]["life_h"].FailWith("a life limit needs the speed: expected load.input_speed_rpm (> 0) or a "
                                       "duty_cycle beside limits.life_h, found neither");
   if (!life) return;
-  objectives::CycloidSizingLife l;
+  sizing::CycloidSizingLife l;
   l.lines = life->lines;
   l.crank_kind = life->crank_bearing.kind;
   l.crank_dynamic_N = life->crank_bearing.dynamic_N;
@@ -619,7 +619,7 @@ void ParseSizingLubrication(const Node& root, const Input& in, Study& s) {
     root["limits"]["max_oil_temperature_C"].FailWith(
         "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
         "lubricant.temperature_C (" + Format(*common->temperature_C) + " °C)");
-  objectives::CycloidSizingLubrication l;
+  sizing::CycloidSizingLubrication l;
   l.spec.oil = common->oil;
   l.spec.friction = common->friction;
   l.spec.composite_roughness_mm = common->composite_roughness_mm;
@@ -662,7 +662,7 @@ void ParseSizingOutput(const Node& root, const Input& in, const std::map<std::st
       root["limits"][key].FailWith(std::string(key) + " needs the output mechanism with clearance and compliance: "
                                    "output_mechanism with pins, pin_circle_radius_mm, pin_radius_mm and hole_radius_mm");
   if (!o) return;
-  objectives::CycloidSizingOutput out;
+  sizing::CycloidSizingOutput out;
   out.pins = o->pins;
   out.support = o->support;
   out.span_mm = in.output_mechanism->pin_span_mm ? o->span_mm : 0.0;  // absent: the face width, sized or not
@@ -686,7 +686,7 @@ Study Parse(const Node& root) {
   s.spec.material = in.material.ToMaterial();
   ParseAnalysis(in.analysis, s);
   ParseOptimizer(in.optimizer, s);
-  if (in.objective == "volume") s.spec.objective = objectives::CycloidSizeObjective::kVolume;
+  if (in.objective == "volume") s.spec.objective = sizing::CycloidSizeObjective::kVolume;
   const std::map<std::string, Field> fields = ParseDesign(root, in, s);
   CheckPlausibleBox(fields, s.spec.drive.rollers);
   CheckCrowningBox(root, fields, s);
@@ -698,7 +698,7 @@ Study Parse(const Node& root) {
     if (!s.spec.lubrication)
       root["objective"].FailWith("the efficiency objective needs \"lubricant\" (the oil whose losses it minimises) and "
                                  "load.input_speed_rpm");
-    s.spec.objective = objectives::CycloidSizeObjective::kPowerLoss;
+    s.spec.objective = sizing::CycloidSizeObjective::kPowerLoss;
   }
   return s;
 }
@@ -925,10 +925,10 @@ Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   const auto t0 = std::chrono::steady_clock::now();
   Progress progress("cycloid_min_size", ctx.quiet);
-  objectives::CycloidMinSizeOptions options = s.options;
+  sizing::CycloidMinSizeOptions options = s.options;
   options.progress = [&](double fraction, const std::string& stage) { progress.Update(0.9 * fraction, stage); };
   try {
-    r.outcome = objectives::SolveCycloidMinSize(s.spec, options);
+    r.outcome = sizing::SolveCycloidMinSize(s.spec, options);
   } catch (const std::invalid_argument& e) {
     // A spec the sizing model refuses that the parse let through: bad input all the same.
     throw StudyError(ctx.study_file + ": /variables: the sizing model refuses the study: " + e.what());
@@ -952,7 +952,7 @@ Result Run(const Study& s, const RunContext& ctx) {
       r.warnings.push_back("no stress_over_cycle or pressure_map: the loaded contact analysis refuses the design (" +
                            std::string(e.what()) + ")");
     }
-    const objectives::CycloidAccurateCheck& k = r.outcome.check;
+    const sizing::CycloidAccurateCheck& k = r.outcome.check;
     if (s.spec.life) {
       const cycloid::Drive& d = r.outcome.drive;
       const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
@@ -980,7 +980,7 @@ Result Run(const Study& s, const RunContext& ctx) {
 namespace {
 
 // The values of one model at the reported design (accurate or fast), by their result.json names.
-Result::Model ModelOf(const Study& s, const objectives::CycloidSizingEvaluation& e) {
+Result::Model ModelOf(const Study& s, const sizing::CycloidSizingEvaluation& e) {
   Result::Model j;
   j.max_contact_stress_MPa = Finite(e.stress_MPa, "stress");
   j.max_pair_load_N = Finite(e.max_pair_load_N, "pair load");
@@ -1036,14 +1036,14 @@ nlohmann::json ModificationJson(const cycloid::Drive& d) {
 }
 
 std::string ObjectiveUnit(const Study& s) {
-  return s.spec.objective == objectives::CycloidSizeObjective::kVolume      ? "mm3"
-         : s.spec.objective == objectives::CycloidSizeObjective::kPowerLoss ? "W of loss"
+  return s.spec.objective == sizing::CycloidSizeObjective::kVolume      ? "mm3"
+         : s.spec.objective == sizing::CycloidSizeObjective::kPowerLoss ? "W of loss"
                                                                              : "mm";
 }
 
 // The unit of a limit, from its key (the suffix of the study's field name).
 std::string LimitUnit(const std::string& key) {
-  if (key == "crowning_on_the_face") return "mm";  // the crowning rows (objectives::kSizingCrowningFit)
+  if (key == "crowning_on_the_face") return "mm";  // the crowning rows (sizing::kSizingCrowningFit)
   if (key == "min_torsional_stiffness_Nm_per_arcmin") return "N·m/arcmin";
   if (key == "max_lost_motion_arcmin") return "arcmin";
   if (key == "eccentric_bearing_load_N") return "N";
@@ -1083,8 +1083,8 @@ double LimitValue(const Study& s, const std::string& key) {
 
 // best.life (docs/life.md, "Cycloid"): the lives of the accurate model as cycloid_ltca's "life",
 // with pass/fail against limits.life_h.
-nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const objectives::CycloidSizingEvaluation& acc) {
-  const objectives::CycloidSizingLife& life = *s.spec.life;
+nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const sizing::CycloidSizingEvaluation& acc) {
+  const sizing::CycloidSizingLife& life = *s.spec.life;
   const double limit = s.spec.limits.life_h;
   auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   nlohmann::json lj;
@@ -1093,7 +1093,7 @@ nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const obj
   nlohmann::json table = nlohmann::json::array();
   std::string shortest;
   double least = kInf;
-  for (const objectives::CycloidBearingLife& b : acc.lives) {
+  for (const sizing::CycloidBearingLife& b : acc.lives) {
     lj[b.name + "_L10h"] = finite(b.life.L10h);
     if (shortest.empty() || b.life.L10h < least) shortest = b.name, least = b.life.L10h;
     table.push_back(LifeTableRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
@@ -1135,15 +1135,15 @@ nlohmann::json AccurateAnalysisJson(const Study& s) { return WriteResult(Accurat
 
 // The former ToJson's arithmetic, in its order (the same Finite checks first to fail).
 void FillResult(const Study& s, Result& r) {
-  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  const sizing::CycloidMinSizeOutcome& o = r.outcome;
   r.name = s.name;
   r.target.teeth = s.spec.drive.teeth;
   r.target.rollers = s.spec.drive.rollers;
   r.target.speed_ratio = s.spec.drive.teeth;
   r.target.design_torque_Nm = s.design_torque_Nm;
   if (s.overload_torque_Nm > 0) r.target.overload_torque_Nm = s.overload_torque_Nm;
-  r.objective = s.spec.objective == objectives::CycloidSizeObjective::kVolume      ? "volume"
-                : s.spec.objective == objectives::CycloidSizeObjective::kPowerLoss ? "efficiency"
+  r.objective = s.spec.objective == sizing::CycloidSizeObjective::kVolume      ? "volume"
+                : s.spec.objective == sizing::CycloidSizeObjective::kPowerLoss ? "efficiency"
                                                                                     : "outer_diameter";
   r.variables.clear();
   for (const objectives::Variable& v : s.spec.variables) r.variables.push_back({v.name, v.lower, v.upper, v.initial});
@@ -1152,7 +1152,7 @@ void FillResult(const Study& s, Result& r) {
   if (o.x.empty()) {
     r.best.reset();
   } else {
-    const objectives::CycloidSizingEvaluation& acc = o.check.accurate;
+    const sizing::CycloidSizingEvaluation& acc = o.check.accurate;
     Result::Best& b = r.best.emplace();
     b.outer_diameter_mm = Finite(2 * (o.drive.roller_position_radius_mm + o.drive.roller_radius_mm), "outer diameter");
     b.envelope_volume_mm3 =
@@ -1196,7 +1196,7 @@ void FillResult(const Study& s, Result& r) {
     if (s.spec.lubrication) {
       err.efficiency = o.check.efficiency_error;
       err.oil_temperature_C = o.check.oil_temperature_error_C;
-      const objectives::CycloidSizingLubrication& l = *s.spec.lubrication;
+      const sizing::CycloidSizingLubrication& l = *s.spec.lubrication;
       b.lubrication = Result::Lubrication{
           l.input_speed_rpm, s.design_torque_Nm, l.temperature_C ? "given" : "thermal balance",
           "one disc's mean loss over a revolution's pattern at the design torque (the LTCA's pair loads, "
@@ -1285,7 +1285,7 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
   a["load"] = {{"torque_Nm", s.design_torque_Nm}};
   a["analysis"] = AccurateAnalysisJson(s);
   if (s.spec.life) {  // the same lives through cycloid_ltca (docs/life.md)
-    const objectives::CycloidSizingLife& life = *s.spec.life;
+    const sizing::CycloidSizingLife& life = *s.spec.life;
     a["duty_cycle"] = DutyCycleJson(life.lines);
     nlohmann::json cb = {{"kind", life.crank_kind == BearingKind::kBall ? "ball" : "roller"},
                          {"dynamic_rating_N", life.crank_dynamic_N}};
@@ -1306,7 +1306,7 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
                     {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm},
                     {"momentary_static_safety", s.ratings->momentary_static_safety}};
   if (s.spec.output) {  // the compliant output mechanism and the datasheet at the design torque
-    const objectives::CycloidSizingOutput& out = *s.spec.output;
+    const sizing::CycloidSizingOutput& out = *s.spec.output;
     nlohmann::json om = {{"pins", out.pins.pins},
                          {"pin_circle_radius_mm", out.pins.pin_circle_radius_mm},
                          {"pin_radius_mm", out.pins.pin_radius_mm},
@@ -1388,7 +1388,7 @@ void AddSizedDiscDrawing(const Study& s, const cycloid::Drive& sized, Outputs& o
 }  // namespace
 
 nlohmann::json BestCycloidLtcaStudy(const Study& s, const Result& r) {
-  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  const sizing::CycloidMinSizeOutcome& o = r.outcome;
   if (o.x.empty()) return nullptr;
   return CycloidLtcaStudyOf(s, o.drive, o.crowning,
                             o.verified && o.converged ? "best of "
@@ -1402,7 +1402,7 @@ nlohmann::json StartCycloidLtcaStudy(const Study& s) {
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.SetResult(r);
-  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  const sizing::CycloidMinSizeOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   // A stress limit on a tooth whose edge peak is singular is checked on a number that grows as the
   // cells shrink: its "verified" would hold only at the grid it was checked on.
@@ -1445,7 +1445,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 std::string Summary(const Study& s, const Result& r) {
-  const objectives::CycloidMinSizeOutcome& o = r.outcome;
+  const sizing::CycloidMinSizeOutcome& o = r.outcome;
   std::ostringstream m;
   char buf[300];
   if (!o.x.empty()) {

@@ -308,9 +308,9 @@ struct Study {
   std::string name;
   /// Teeth, rollers, torques, material, the fast model's grid and angles, the variables (bounds and
   /// starts in their own units), the fixed fields (in spec.drive / spec.crowning), the limits and the
-  /// objective: what objectives::SolveCycloidMinSize is given.
-  objectives::CycloidSizingSpec spec;
-  objectives::CycloidMinSizeOptions options;  ///< without the progress callback (set by Run)
+  /// objective: what sizing::SolveCycloidMinSize is given.
+  sizing::CycloidSizingSpec spec;
+  sizing::CycloidMinSizeOptions options;  ///< without the progress callback (set by Run)
   double design_torque_Nm = 0, overload_torque_Nm = 0;  ///< as in the file (0: no overload)
   bool ratio_given = false;          ///< target.speed_ratio (else target.teeth)
   double bore_diameter_mm = 0;       ///< limits.bore_diameter_mm (0: none)
@@ -673,7 +673,7 @@ struct Result {
 
   // Not in result.json: the sizing's outcome and the best design's cycle, which the other files
   // are drawn from.
-  objectives::CycloidMinSizeOutcome outcome;
+  sizing::CycloidMinSizeOutcome outcome;
   /// The best design's cycle at the design torque on the accurate settings (cells and crank angles
   /// twice the study's): the stress plot and the pressure map. Empty when there is no design.
   cycloid::CycleResult best_cycle;

@@ -18,7 +18,7 @@ namespace camopt::studies::disc_cam_min_size {
 namespace {
 
 namespace dc = camopt::disc_cam;
-using objectives::DiscCamSizingVariable;
+using sizing::DiscCamSizingVariable;
 constexpr double kDeg = kPi / 180.0;
 
 // The unit of a limit key, for the costs ("mm per deg").
@@ -28,22 +28,22 @@ std::string LimitUnit(const std::string& key) {
   return "mm";
 }
 
-double LimitValue(const Study& s, const objectives::DiscCamMinSizeOutcome& o, const std::string& key) {
+double LimitValue(const Study& s, const sizing::DiscCamMinSizeOutcome& o, const std::string& key) {
   if (key == "pressure_angle_deg") return s.spec.limits.pressure_angle_deg;
   if (key == "contact_stress_MPa") return s.spec.limits.contact_stress_MPa;
-  return objectives::RadiusMarginOf(s.spec, o.cam);
+  return sizing::RadiusMarginOf(s.spec, o.cam);
 }
 
-std::string DesignWords(const Study& s, const objectives::DiscCamMinSizeOutcome& o) {
+std::string DesignWords(const Study& s, const sizing::DiscCamMinSizeOutcome& o) {
   std::string w = "base circle " + Format(o.cam.base_radius, 6) + " mm";
   for (size_t k = 1; k < s.spec.which.size(); ++k)
-    w += ", " + objectives::DiscCamSizingVariableName(s.spec.which[k]) + " " + Format(o.x[k], 6);
+    w += ", " + sizing::DiscCamSizingVariableName(s.spec.which[k]) + " " + Format(o.x[k], 6);
   return w;
 }
 
 // Why the answer is not what was asked (exit 3), or "" when it is: the limit that blocks, its
 // accurate value at the closest design, and what would help.
-std::string BlockingMessage(const Study& s, const objectives::DiscCamMinSizeOutcome& o) {
+std::string BlockingMessage(const Study& s, const sizing::DiscCamMinSizeOutcome& o) {
   if (o.x.empty())
     return "no design meets the limits: the optimizer ended without a design (" +
            (o.result.message.empty() ? std::string(optimizers::ToString(o.result.status)) : o.result.message) +
@@ -76,7 +76,7 @@ std::string BlockingMessage(const Study& s, const objectives::DiscCamMinSizeOutc
          o.result.message + "); give more optimizer.max_evaluations";
 }
 
-Result::Cycle CycleOf(const objectives::DiscCamCycleValues& v) {
+Result::Cycle CycleOf(const sizing::DiscCamCycleValues& v) {
   Result::Cycle c;
   c.pressure_angle_deg.max_rise = v.max_pressure_rise_deg;
   c.pressure_angle_deg.at_max_rise_cam_angle_deg = v.at_rise_deg;
@@ -96,7 +96,7 @@ Result::Cycle CycleOf(const objectives::DiscCamCycleValues& v) {
 
 // result.json's members (Result's Serialize) from the sizing's outcome.
 void FillResult(const Study& s, Result& r) {
-  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  const sizing::DiscCamMinSizeOutcome& o = r.outcome;
   r.name = s.name;
   r.follower = s.base.follower_type;
   for (const objectives::Variable& v : s.spec.variables) r.variables.push_back({v.name, v.lower, v.upper, v.initial});
@@ -138,7 +138,7 @@ void FillResult(const Study& s, Result& r) {
     b.accurate = CycleOf(o.check.accurate);
     b.fast = CycleOf(o.check.fast);
     // The accurate values' own error estimate, and the fast (sampled) model's error: accurate − fast.
-    const objectives::DiscCamCycleValues &a = o.check.accurate, &d = o.check.dense, &f = o.check.fast;
+    const sizing::DiscCamCycleValues &a = o.check.accurate, &d = o.check.dense, &f = o.check.fast;
     Result::CycleError &err = b.estimated_error, &fast_err = b.fast_model_error;
     err.pressure_angle_rise_deg = a.max_pressure_rise_deg - d.max_pressure_rise_deg;
     fast_err.pressure_angle_rise_deg = a.max_pressure_rise_deg - f.max_pressure_rise_deg;
@@ -233,7 +233,7 @@ Study Parse(const Node& root) {
                                       " follower: its geometry is sized by " + other);
   }
 
-  objectives::DiscCamSizingSpec& spec = s.spec;
+  sizing::DiscCamSizingSpec& spec = s.spec;
   spec.cam = cam;
   const Node vars = root["variables"];
   struct Entry {
@@ -276,7 +276,7 @@ Study Parse(const Node& root) {
   if ((s.base.dynamics || s.base.arm_dynamics) && s.base.face_width_mm && s.base.material) {
     // The translating follower's loads, or an oscillating follower's arm loads (disc_cam::Parse
     // takes each for its follower only).
-    objectives::DiscCamStressModel m;
+    sizing::DiscCamStressModel m;
     if (s.base.dynamics) {
       m.loads = s.base.dynamics->loads;
       m.omega_rad_per_s = dc::RadPerSecond(s.base.dynamics->speed_rpm);
@@ -308,7 +308,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   Result r;
   Progress progress("disc_cam_min_size", ctx.quiet);
   progress.Update(0.0, "solving");
-  r.outcome = objectives::SolveDiscCamMinSize(s.spec, s.options);
+  r.outcome = sizing::SolveDiscCamMinSize(s.spec, s.options);
   progress.Update(1.0);
   progress.Done();
   r.blocking_message = BlockingMessage(s, r.outcome);
@@ -346,7 +346,7 @@ nlohmann::json DiscCamStudyOf(const Study& s, const dc::DiscCam& cam, const std:
 }  // namespace
 
 nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
-  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  const sizing::DiscCamMinSizeOutcome& o = r.outcome;
   if (o.x.empty()) return nullptr;
   return DiscCamStudyOf(s, o.cam, (o.verified && o.converged ? "best of "
                                : o.verified   ? "verified design (not proven the smallest) of "
@@ -356,15 +356,15 @@ nlohmann::json BestDiscCamStudy(const Study& s, const Result& r) {
 nlohmann::json StartDiscCamStudy(const Study& s) {
   std::vector<double> x;
   for (const objectives::Variable& v : s.spec.variables) x.push_back(v.initial);
-  return DiscCamStudyOf(s, objectives::DiscCamDesign(s.spec, x), "start of " + s.name);
+  return DiscCamStudyOf(s, sizing::DiscCamDesign(s.spec, x), "start of " + s.name);
 }
 
 // profile.svg: the sized cam drawn over the start design (each variable's start), each with its
 // base circle, in the cam's frame at θ = 0 — what the sizing changed, seen as a part.
-void AddProfileDrawing(const Study& s, const objectives::DiscCamMinSizeOutcome& o, Outputs& out) {
+void AddProfileDrawing(const Study& s, const sizing::DiscCamMinSizeOutcome& o, Outputs& out) {
   std::vector<double> x0;
   for (const objectives::Variable& v : s.spec.variables) x0.push_back(v.initial);
-  const dc::DiscCam start = objectives::DiscCamDesign(s.spec, x0);
+  const dc::DiscCam start = sizing::DiscCamDesign(s.spec, x0);
   const int n = 720;
   auto outline = [&](const dc::DiscCam& cam) {
     Polyline p;
@@ -389,7 +389,7 @@ void AddProfileDrawing(const Study& s, const objectives::DiscCamMinSizeOutcome& 
 
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.SetResult(r);
-  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  const sizing::DiscCamMinSizeOutcome& o = r.outcome;
   out.SetStatus(SizingStatus(!o.x.empty(), o.verification.ran, o.verified, o.converged), r.blocking_message);
   if (o.x.empty()) return;
   out.AddJson("best_disc_cam.json", BestDiscCamStudy(s, r));
@@ -416,7 +416,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                Format(o.cam.base_radius, 5) + " mm)";
     po.x_label = "cam angle [deg]";
     po.y_label = "radius of curvature [mm]";
-    po.guides = {{"margin", objectives::RadiusMarginOf(s.spec, o.cam)}};
+    po.guides = {{"margin", sizing::RadiusMarginOf(s.spec, o.cam)}};
     out.Add("radius_of_curvature.svg", SvgLinePlot({{"ρ", th, rho}}, po));
     return;
   }
@@ -446,7 +446,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 namespace {
 
 std::string Summary(const Study& s, const Result& r) {
-  const objectives::DiscCamMinSizeOutcome& o = r.outcome;
+  const sizing::DiscCamMinSizeOutcome& o = r.outcome;
   std::ostringstream m;
   char buf[300];
   if (!o.x.empty() && s.spec.cam.follower == dc::FollowerType::kOscillatingRoller) {

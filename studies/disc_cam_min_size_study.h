@@ -115,8 +115,8 @@ struct Study {
   std::string name;
   disc_cam::Study base;      ///< the disc_cam study (its design is the start)
   nlohmann::json base_json;  ///< its file text, for best_disc_cam.json
-  objectives::DiscCamSizingSpec spec;
-  objectives::DiscCamMinSizeOptions options;
+  sizing::DiscCamSizingSpec spec;
+  sizing::DiscCamMinSizeOptions options;
   std::string backend = "ipopt";  ///< as in the file: "ipopt" or "slsqp"
 };
 
@@ -337,7 +337,7 @@ struct Result {
   }
 
   // Not in result.json: the sizing's outcome (model units) the other files are drawn from.
-  objectives::DiscCamMinSizeOutcome outcome;
+  sizing::DiscCamMinSizeOutcome outcome;
   /// Not empty when the answer is not what was asked (exit 3): what blocks and what would help.
   std::string blocking_message;
 };

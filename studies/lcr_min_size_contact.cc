@@ -41,7 +41,7 @@ nlohmann::json CrowningJson(const lcr::RollerCrowning<double>& c) {
 
 }  // namespace
 
-std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
+std::optional<sizing::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
                                                           bool catalogue) {
   const Input::Variables& v = in.variables;
   const Node vars = root["variables"], fixed = root["fixed"];
@@ -50,7 +50,7 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const
   const bool has_contact = in.contact.has_value(), has_crown = in.fixed.crowning.has_value(),
              has_over = in.load.overload_torque_Nm.has_value();
   if (!has_contact && !has_crown && !has_var && !has_length_var && !has_over) return std::nullopt;
-  objectives::LcrSizing3DSpec s;
+  sizing::LcrSizing3DSpec s;
   if (has_contact) s.contact = ToContactOptions(*in.contact, root["contact"]);
   // The roller length variable's upper end is the longest roller the crowning must fit.
   double longest = roller_length_mm;
@@ -120,16 +120,16 @@ std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const
 
 std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound) {
   if (c.outcome3d && c.outcome3d->paused)
-    objectives::ContinueLcrMinSize3D(c.spec, s.options, *c.outcome3d, bound);
+    sizing::ContinueLcrMinSize3D(c.spec, s.options, *c.outcome3d, bound);
   else
-    c.outcome3d = objectives::SolveLcrMinSize3D(c.spec, *s.contact3d, s.options, bound);
+    c.outcome3d = sizing::SolveLcrMinSize3D(c.spec, *s.contact3d, s.options, bound);
   c.outcome = c.outcome3d->outcome;
   if (c.outcome3d->paused) return c.outcome3d->paused->lower_bound_mm;
   return std::nullopt;
 }
 
 void AddContact3DJson(const Study& s, Result& r) {
-  const objectives::LcrSizing3DSpec& c3 = *s.contact3d;
+  const sizing::LcrSizing3DSpec& c3 = *s.contact3d;
   Result::Json& res = r.json;
   res.contact = nlohmann::json{{"model", ContactModelName(c3.contact.model)},
                     {"sizing_model", "slices"},
@@ -149,7 +149,7 @@ void AddContact3DJson(const Study& s, Result& r) {
     res.candidates[i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
   }
   if (r.best < 0) return;
-  const objectives::LcrMinSize3DOutcome& b = *r.candidates[r.best].outcome3d;
+  const sizing::LcrMinSize3DOutcome& b = *r.candidates[r.best].outcome3d;
   nlohmann::json& best = res.best;
   const char* sides[2] = {"input", "output"};
   nlohmann::json contact = {{"line_model_outer_diameter_mm", b.line_outer_diameter_mm}};
@@ -180,7 +180,7 @@ void AddContact3DJson(const Study& s, Result& r) {
   }
   best["contact"] = contact;
   if (r.half_space) {
-    const objectives::LcrHalfSpaceCheck& h = *r.half_space;
+    const sizing::LcrHalfSpaceCheck& h = *r.half_space;
     nlohmann::json j = {{"cell_dx_mm", h.cell_dx_mm}, {"cell_dy_mm", h.cell_dy_mm}, {"converged", h.converged},
                         {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}}};
     for (int k = 0; k < 2; ++k)
@@ -193,7 +193,7 @@ void AddContact3DJson(const Study& s, Result& r) {
 }
 
 void AddContact3DAnalysis(const Study& s, const Candidate& best, nlohmann::json& a) {
-  const objectives::LcrSizing3DSpec& c3 = *s.contact3d;
+  const sizing::LcrSizing3DSpec& c3 = *s.contact3d;
   a["contact"] = {{"model", ContactModelName(c3.contact.model)},
                   {"slices", c3.contact.slices},
                   {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}},

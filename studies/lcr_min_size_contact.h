@@ -24,12 +24,12 @@ struct Result;
 /// length variable). @throws StudyError: crowning, misalignment, an overload torque or a crowning
 /// or length variable with the line model; a crowning variable the crowning type does not have;
 /// ranges whose ends the crowning does not fit.
-std::optional<objectives::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
+std::optional<sizing::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
                                                           bool catalogue);
 
 /// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d), or continues it
 /// when its polish was stopped at a bound; stops where a polish round's outer diameter exceeds
-/// `bound` (objectives::SolveLcrMinSize3D) and then returns that lower bound.
+/// `bound` (sizing::SolveLcrMinSize3D) and then returns that lower bound.
 std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound);
 
 /// Adds the 3D parts to result.json's members (r.json): "contact", best.input/output.crowning,

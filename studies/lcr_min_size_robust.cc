@@ -78,7 +78,7 @@ void RunRobust(const Study& s, Result& res, const RunContext& ctx) {
     if (!c.feasible()) continue;  // no nominal optimum to start from
     objectives::LcrSizingSpec spec = c.spec;
     spec.robust = s.robust;
-    res.robust[i] = objectives::SolveLcrRobust(spec, s.options, c.outcome.x);
+    res.robust[i] = sizing::SolveLcrRobust(spec, s.options, c.outcome.x);
     const auto& o = res.robust[i];
     if (o.converged && (res.robust_best < 0 || lcr::OuterDiameter(*o.design) <
                                                    lcr::OuterDiameter(*res.robust[res.robust_best].design)))
@@ -143,7 +143,7 @@ void RobustJson(const Study& s, Result& r) {
     res.verified = r.robust_verification->verified();
     res.verification = VerificationBlock::Of(*r.robust_verification);
   }
-  const objectives::LcrRobustOutcome& o = r.robust[r.robust_best];
+  const sizing::LcrRobustOutcome& o = r.robust[r.robust_best];
   const lcr::Reducer<double>& d = *o.design;
   const objectives::LcrDenseCheck& k = *o.dense;
   const objectives::LcrRobustCheck& g = *o.grid;

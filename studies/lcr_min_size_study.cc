@@ -2,7 +2,7 @@
 // every combination (and catalogue roller), write.
 #include "studies/lcr_min_size_study.h"
 
-#include "objectives/sizing_driver.h"
+#include "sizing/sizing_driver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -214,7 +214,7 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
                       {"iterations", o.result.iterations},
                       {"polish_rounds", o.polish_rounds}};
   if (c.pruned()) {
-    // Branch and bound (objectives/sizing_driver.h): not solved to the end, no design to report.
+    // Branch and bound (sizing/sizing_driver.h): not solved to the end, no design to report.
     j["outer_diameter_lower_bound_mm"] = c.outcome3d->paused->lower_bound_mm;
     j["note"] = "pruned: a polish round's outer diameter (outer_diameter_lower_bound_mm) already exceeds the best "
                 "design's; each round adds constraints, so the candidate's optimum can only be larger";
@@ -275,7 +275,7 @@ nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
 
 // What blocks when nothing fits: the candidate whose worst relative violation at its closest
 // point is least (an undercut contact counts as infinite), that violation's limit, and, for a
-// stress or load limit, the value at which that candidate fits (objectives::LimitToFit).
+// stress or load limit, the value at which that candidate fits (sizing::LimitToFit).
 std::string BlockingMessage(const Study& s, const Result& r) {
   // A candidate that converged on the fast model but failed the accurate model's check: that
   // check's words (the limit, the accurate value, what to change).
@@ -317,7 +317,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
   std::ostringstream m;
   m.precision(4);
   m << "no design meets the limits: " << worst->limit << " blocks most; ";
-  const std::optional<double> fit = objectives::LimitToFit(closest->spec, s.options, worst->limit);
+  const std::optional<double> fit = sizing::LimitToFit(closest->spec, s.options, worst->limit);
   if (fit) {
     m << ComboName(closest->combo) << " fits with " << worst->limit << " = " << *fit << " (limit "
       << worst->limit_value << ")";
@@ -790,13 +790,13 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}, {}, {}});
     for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}, {}, {}});
   }
-  // The sizing driver (objectives/sizing_driver.h): every candidate solved (with a 3D contact by
+  // The sizing driver (sizing/sizing_driver.h): every candidate solved (with a 3D contact by
   // branch and bound: a candidate whose polish round already exceeds the best's size stops there,
   // "pruned", and is continued if the best's verification raises it past that round), then the
   // smallest feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
   // re-solving where it breaks a limit; line: the exact cycle on twice the angles); one that fails
   // is dropped and the next smallest checked, until one holds or none is left.
-  objectives::SizingCandidates loop;
+  sizing::SizingCandidates loop;
   loop.count = int(res.candidates.size());
   loop.label = [&](int i) {
     const Candidate& c = res.candidates[size_t(i)];
@@ -834,7 +834,7 @@ Result Run(const Study& s, const RunContext& ctx) {
     loop.solve = [&](int i) {
       Candidate& c = res.candidates[size_t(i)];
       make_spec(c);
-      c.outcome = objectives::SolveLcrMinSize(c.spec, s.options);
+      c.outcome = sizing::SolveLcrMinSize(c.spec, s.options);
       res.value_evaluations += c.outcome.result.value_evaluations;
       res.gradient_evaluations += c.outcome.result.gradient_evaluations;
     };
@@ -851,8 +851,8 @@ Result Run(const Study& s, const RunContext& ctx) {
     if (s.contact3d) {
       const int values = b.outcome3d->outcome.result.value_evaluations,
                 gradients = b.outcome3d->outcome.result.gradient_evaluations;
-      objectives::LcrHalfSpaceCheck h;
-      b.verification = objectives::VerifyLcrMinSize3D(b.spec, *s.contact3d, s.options, *b.outcome3d, &h);
+      sizing::LcrHalfSpaceCheck h;
+      b.verification = sizing::VerifyLcrMinSize3D(b.spec, *s.contact3d, s.options, *b.outcome3d, &h);
       b.outcome = b.outcome3d->outcome;
       res.value_evaluations += b.outcome.result.value_evaluations - values;
       res.gradient_evaluations += b.outcome.result.gradient_evaluations - gradients;
@@ -863,14 +863,14 @@ Result Run(const Study& s, const RunContext& ctx) {
   };
   {
     Progress progress("lcr_min_size", ctx.quiet);
-    res.best = objectives::RunSizingDriver(loop, [&](double f, const std::string& what) { progress.Update(f, what); }).best;
+    res.best = sizing::RunSizingDriver(loop, [&](double f, const std::string& what) { progress.Update(f, what); }).best;
   }
   if (res.best >= 0 && s.contact3d) {
     // The limit sensitivities re-solve the line problem: not done for the 3D contact.
     res.half_space = res.candidates[res.best].half_space;
   } else if (res.best >= 0) {
     const Candidate& b = res.candidates[res.best];
-    res.limit_slope = objectives::LimitSlopes(b.spec, s.options, b.outcome);
+    res.limit_slope = sizing::LimitSlopes(b.spec, s.options, b.outcome);
     for (const auto& [key, slope] : res.limit_slope)
       if (!slope.sides.empty()) res.limit_sensitivity[key] = slope.slope;
   } else {
@@ -1388,7 +1388,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                      WorkNumber(combos) + " candidates × " + WorkNumber(starts) + " starts × " +
                          WorkNumber(double(duty.size())) +
                          " duty-cycle lines (each line's bearing lives in every dense check)"});
-  // When nothing fits, the message names the limit that would fit (objectives::LimitToFit: up to 13
+  // When nothing fits, the message names the limit that would fit (sizing::LimitToFit: up to 13
   // solves of the closest combination, each up to 8 polish rounds of an infeasible problem, measured
   // at about 4 units a round and start); a converged result prices its binding limits with fewer
   // re-solves than that. Counted always: whether anything fits is not known before the search.

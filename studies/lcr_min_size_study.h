@@ -212,7 +212,7 @@ struct Input {
     double sharpness = objectives::LcrSizingSpec{}.sharpness;
     double tolerance = optimizers::SolverOptions{}.tolerance;
     std::optional<int> max_evaluations;
-    int starts = objectives::LcrMinSizeOptions{}.starts;
+    int starts = sizing::LcrMinSizeOptions{}.starts;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("backend", &backend,
@@ -397,11 +397,11 @@ struct Study {
   std::vector<int> differences{1};
   objectives::LcrSizingSpec base;  ///< bounds, fixed sizes, material, load and the study's limits
   std::vector<CatalogueRoller> catalogue;
-  objectives::LcrMinSizeOptions options;
+  sizing::LcrMinSizeOptions options;
   objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate;  ///< as written
   /// The finite-length contact (crowning, misalignment, overload; studies/lcr_min_size_contact.h);
   /// empty: the line model.
-  std::optional<objectives::LcrSizing3DSpec> contact3d;
+  std::optional<sizing::LcrSizing3DSpec> contact3d;
   /// "tolerances" + "robust" (+ "monte_carlo"): studies/lcr_min_size_robust.cc. Null: nominal only.
   std::shared_ptr<const objectives::LcrRobustRule> robust;
   int mc_samples = 200, mc_angle_steps = 720;
@@ -417,12 +417,12 @@ struct Candidate {
   objectives::LobeCombination combo{};
   int roller = -1;  ///< index into Study::catalogue, −1 without a catalogue
   objectives::LcrSizingSpec spec;  ///< what was solved (counts, roller, the study's limits)
-  objectives::LcrMinSizeOutcome outcome;
-  std::optional<objectives::LcrMinSize3DOutcome> outcome3d;  ///< with Study::contact3d
+  sizing::LcrMinSizeOutcome outcome;
+  std::optional<sizing::LcrMinSize3DOutcome> outcome3d;  ///< with Study::contact3d
   /// The accurate model's check (objectives/verification.h), of the candidates that were chosen
   /// as best at some point: one that fails it is not feasible.
   std::optional<objectives::Verification> verification;
-  std::optional<objectives::LcrHalfSpaceCheck> half_space;  ///< 3D: the verification's study-grid numbers
+  std::optional<sizing::LcrHalfSpaceCheck> half_space;  ///< 3D: the verification's study-grid numbers
   bool feasible() const { return outcome.converged && (!verification || verification->verified()); }
   /// 3D: its polish stopped at the best's size (branch and bound; outcome3d->paused has the lower
   /// bound): not solved to the end, not feasible.
@@ -436,16 +436,16 @@ struct Result {
   /// objective, per unit of the limit], by limit key.
   std::map<std::string, double> limit_sensitivity;
   /// The same re-solves with both sides (sizing/limit_slope.h): the binding_limits' re_solve_* and kink.
-  std::map<std::string, objectives::LimitSlope> limit_slope;
+  std::map<std::string, sizing::LimitSlope> limit_slope;
   int value_evaluations = 0, gradient_evaluations = 0;
-  std::optional<objectives::LcrHalfSpaceCheck> half_space;  ///< best design, with Study::contact3d
+  std::optional<sizing::LcrHalfSpaceCheck> half_space;  ///< best design, with Study::contact3d
   double seconds = 0;  ///< wall time of the search (summary only, never in result.json)
   /// When nothing fits: the limit that blocks most, the closest candidate, and the value of that
   /// limit that its closest point needs.
   std::string blocking_message;
   /// With Study::robust: the robust solve of every candidate (same order), the smallest converged
   /// one, and the Monte-Carlo checks of the robust and the nominal best designs.
-  std::vector<objectives::LcrRobustOutcome> robust;
+  std::vector<sizing::LcrRobustOutcome> robust;
   int robust_best = -1;
   std::optional<objectives::LcrMonteCarloCheck> robust_mc, nominal_mc;
   /// With Study::robust: the accurate check of the robust best design (its nominal limits).

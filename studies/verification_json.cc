@@ -35,7 +35,7 @@ void AddVerificationJson(const objectives::Verification& v, nlohmann::json& resu
   result["verification"] = WriteResult(VerificationBlock::Of(v));
 }
 
-LimitSlopeResult MakeLimitSlopeResult(const objectives::LimitSlope* slope) {
+LimitSlopeResult MakeLimitSlopeResult(const sizing::LimitSlope* slope) {
   LimitSlopeResult r;
   const bool has = slope && !slope->sides.empty();
   if (has) {
@@ -52,7 +52,7 @@ LimitSlopeResult MakeLimitSlopeResult(const objectives::LimitSlope* slope) {
   return r;
 }
 
-void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry) {
+void AddLimitSlopeJson(const sizing::LimitSlope* slope, nlohmann::json& entry) {
   const nlohmann::json members = WriteResult(MakeLimitSlopeResult(slope));
   for (auto it = members.begin(); it != members.end(); ++it) entry[it.key()] = it.value();
 }

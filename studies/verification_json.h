@@ -85,7 +85,7 @@ void AddVerificationJson(const objectives::Verification& v, nlohmann::json& resu
 /// ("central", "left", "right"; null), re_solve_step, re_solve_left_slope / re_solve_right_slope,
 /// kink, and `headline`: which of limit_cost and re_solve_slope to quote ("re_solve_slope" whenever
 /// it exists: it is what moving the limit does).
-void AddLimitSlopeJson(const objectives::LimitSlope* slope, nlohmann::json& entry);
+void AddLimitSlopeJson(const sizing::LimitSlope* slope, nlohmann::json& entry);
 
 struct LimitSlopeResult {
   double re_solve_slope = std::numeric_limits<double>::quiet_NaN();
@@ -115,7 +115,7 @@ struct LimitSlopeResult {
 };
 
 /// The re-solve members of a binding limit's declared entry; `slope` null: not computed.
-LimitSlopeResult MakeLimitSlopeResult(const objectives::LimitSlope* slope);
+LimitSlopeResult MakeLimitSlopeResult(const sizing::LimitSlope* slope);
 
 /// The exit-3 sentence of a verification that does not hold: the limit, where, the accurate
 /// value with its error, the limit, and `advice` (what to change). Empty when it holds.

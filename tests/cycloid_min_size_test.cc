@@ -12,7 +12,7 @@
 #include "tests/reference_designs.h"
 #include "tests/test_util.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 namespace cycloid_min_size_test {
 
 // Central differences of converged cycles (compatibility 1e-11, CG 1e-12) against the implicit
@@ -367,10 +367,10 @@ TEST(CycloidMinSize, LubricatedRowsDerivativesMatchCentralDifferences) {
 }
 
 }  // namespace cycloid_min_size_test
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing
 
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 namespace cycloid_min_size_test {
 
 // The fast model of the sizing tests: 16 × 16 cells per pair, 4 crank angles per mesh period (the
@@ -502,4 +502,4 @@ TEST(CycloidMinSize, RowDerivativesHoldAtTheUndercutBoundary) {
 }
 
 }  // namespace cycloid_min_size_test
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -200,7 +200,7 @@ TEST(DiscCamMinSize, FlatFaceBaseCircleMatchesTheConvexityClosedForm) {
     EXPECT_LT(rho_min, margin + 1e-4) << "the margin binds";
     EXPECT_EQ(o.binding, std::vector<std::string>{"radius_margin_mm"});
     if (k == 0) {
-      const objectives::Problem p = objectives::DiscCamSizingProblem(s.spec, objectives::StudyFastLimits(s.spec));
+      const objectives::Problem p = sizing::DiscCamSizingProblem(s.spec, sizing::StudyFastLimits(s.spec));
       for (double x : {20.0, 35.0}) {
         testing::JacobianCheck check;
         check.abs_tol_scales_with_value = true;
@@ -229,8 +229,8 @@ TEST(DiscCamMinSize, RowsHaveExactDerivatives) {
                    {"spring_preload_N", 30}};
   j["analysis"] = {{"angle_steps", 72}};
   const dcs::Study s = ParseStudy(j);
-  objectives::DiscCamFastLimits fast = objectives::StudyFastLimits(s.spec);
-  const objectives::Problem p = objectives::DiscCamSizingProblem(s.spec, fast);
+  sizing::DiscCamFastLimits fast = sizing::StudyFastLimits(s.spec);
+  const objectives::Problem p = sizing::DiscCamSizingProblem(s.spec, fast);
   for (const std::vector<double>& x : {std::vector<double>{35, 6, 10}, std::vector<double>{22, -9, 13.5}}) {
     testing::JacobianCheck check;
     check.rel_tol = 1e-6;
@@ -424,8 +424,8 @@ TEST(DiscCamMinSize, OscillatingRowsHaveExactDerivatives) {
   ASSERT_EQ(s.spec.variables.size(), 4u);
   EXPECT_EQ(s.spec.variables[1].name, "pivot_distance_mm");
   EXPECT_EQ(s.spec.variables[2].name, "arm_length_mm");
-  const objectives::DiscCamFastLimits fast = objectives::StudyFastLimits(s.spec);
-  const objectives::Problem p = objectives::DiscCamSizingProblem(s.spec, fast);
+  const sizing::DiscCamFastLimits fast = sizing::StudyFastLimits(s.spec);
+  const objectives::Problem p = sizing::DiscCamSizingProblem(s.spec, fast);
   for (const std::vector<double>& x : {std::vector<double>{40, 100, 80, 10}, std::vector<double>{25, 75, 62, 7.5}}) {
     testing::JacobianCheck check;
     check.rel_tol = 1e-6;

@@ -271,7 +271,7 @@ TEST(DiscCamOscillatingRollerLoads, SizingStressRowsHaveExactDerivatives) {
   j["analysis"] = {{"angle_steps", 72}};
   const dcs::Study s = dcs::Parse(studies::Node(&j, "s.json", ""));
   ASSERT_TRUE(s.spec.stress && s.spec.stress->arm);
-  const objectives::Problem p = objectives::DiscCamSizingProblem(s.spec, objectives::StudyFastLimits(s.spec));
+  const objectives::Problem p = sizing::DiscCamSizingProblem(s.spec, sizing::StudyFastLimits(s.spec));
   for (const std::vector<double>& x : {std::vector<double>{40, 100, 80, 10}, std::vector<double>{22, 90, 75, 15}}) {
     camopt::testing::JacobianCheck check;
     check.abs_tol_scales_with_value = true;

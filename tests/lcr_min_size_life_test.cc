@@ -283,7 +283,7 @@ TEST(LcrMinSizeLife, CatalogueRatingsAndAnEntryWithoutC) {
 }
 
 // A life no design of the combination reaches: exit 3, the message names life_h as the blocking
-// limit and the largest life at which the combination fits (objectives::LimitToFit, halving and
+// limit and the largest life at which the combination fits (sizing::LimitToFit, halving and
 // bisecting to 1%), and the study with that life fits.
 TEST(LcrMinSizeLife, UnreachableLifeSaysWhichLifeWouldFit) {
   json study = Example("lcr_min_size_life.json");
@@ -362,10 +362,10 @@ LcrSizingSpec HardLifeSpec(int ma, int mb) {
 // rows have exact gradients.
 TEST(LcrMinSizeLife, ALifeOutOfReachIsBoundedAndNotSized) {
   const LcrSizingSpec spec = HardLifeSpec(20, 26);
-  objectives::LcrMinSizeOptions o;
+  sizing::LcrMinSizeOptions o;
   o.solver.tolerance = 1e-6;
   o.solver.constraint_tolerance = 1e-6;
-  const objectives::LcrMinSizeOutcome out = objectives::SolveLcrMinSize(spec, o);
+  const sizing::LcrMinSizeOutcome out = sizing::SolveLcrMinSize(spec, o);
   ASSERT_TRUE(out.longest_life_h.has_value());
   EXPECT_TRUE(out.life_out_of_reach);
   EXPECT_FALSE(out.converged);

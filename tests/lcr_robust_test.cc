@@ -186,11 +186,11 @@ TEST(LcrRobust, RobustOptimumIsLargerHoldsTheGridAndFewerSamplesViolate) {
   spec.robust = rule;
   LcrSizingSpec nominal = spec;
   nominal.robust = nullptr;
-  objectives::LcrMinSizeOptions o;
+  sizing::LcrMinSizeOptions o;
   o.starts = 1;
-  const objectives::LcrMinSizeOutcome n = objectives::SolveLcrMinSize(nominal, o);
+  const sizing::LcrMinSizeOutcome n = sizing::SolveLcrMinSize(nominal, o);
   ASSERT_TRUE(n.converged);
-  const objectives::LcrRobustOutcome r = objectives::SolveLcrRobust(spec, o, n.x);
+  const sizing::LcrRobustOutcome r = sizing::SolveLcrRobust(spec, o, n.x);
   ASSERT_TRUE(r.converged) << r.result.message << " " << r.note;
   EXPECT_TRUE(r.grid->ok());
   EXPECT_TRUE(r.dense->ok());

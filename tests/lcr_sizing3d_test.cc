@@ -24,7 +24,7 @@ namespace camopt {
 namespace lcr_sizing3d_test {
 
 using nlohmann::json;
-using objectives::LcrContactSample;
+using sizing::LcrContactSample;
 
 // Central differences of an iterative solve (line loads converged to 1e-10 relative): the
 // difference quotient carries ~1e-10/h ≈ 2e-5 relative noise.
@@ -46,8 +46,8 @@ objectives::LcrSizingSpec Spec() {
   return s;
 }
 
-objectives::LcrSizing3DSpec Spec3D() {
-  objectives::LcrSizing3DSpec s;
+sizing::LcrSizing3DSpec Spec3D() {
+  sizing::LcrSizing3DSpec s;
   s.contact.model = lcr::ContactModel::kSlices;
   s.contact.slices = 20;
   s.contact.misalignment_rad = 1e-3;
@@ -69,19 +69,19 @@ int TopRoller(const objectives::LcrSizingSpec& s, const std::vector<double>& x, 
 // The 3D rows' Jacobian (AD through the evaluator) against central differences over all N
 // variables of the problem of s3 at x0 (the 5 line variables of Spec() first).
 template <int N>
-void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0, const objectives::LcrSizing3DSpec& s3,
+void ExpectRowsMatchCentralDifferences(const std::vector<double>& x0, const sizing::LcrSizing3DSpec& s3,
                                        double cam_thickness_mm = 8, double roller_length_mm = 10) {
   objectives::LcrSizingSpec s = Spec();
   s.limits.contact_stress_MPa = kInf;
   s.cam_thickness_mm = cam_thickness_mm, s.roller_length_mm = roller_length_mm;
-  objectives::LcrTracked3D tr;
+  sizing::LcrTracked3D tr;
   for (int side = 0; side < 2; ++side)
     for (double theta : {0.05, 0.11}) {
       tr.stress.push_back({side, theta, TopRoller(s, x0, side, theta)});
       tr.edge.push_back({side, theta, TopRoller(s, x0, side, theta)});
     }
   for (int side = 0; side < 2; ++side) s.active.force[side] = {{0.05, TopRoller(s, x0, side, 0.05), 0.0}};
-  const objectives::Problem p = objectives::MakeLcrSizing3DProblem(s, s3, 1500, tr);
+  const objectives::Problem p = sizing::MakeLcrSizing3DProblem(s, s3, 1500, tr);
   ASSERT_EQ(p.num_vars(), N);
   ASSERT_EQ(int(x0.size()), N);
   const auto& ev = *p.evaluator;
@@ -118,13 +118,13 @@ TEST(LcrSizing3D, ThePolishEvaluatorsLastPointCacheGivesEachPointsOwnNumbers) {
   const std::vector<double> x1 = {1.2266, 48.889, 48.889, 7.722, 52.75, 0.03, 0.025};
   std::vector<double> x2 = x1;
   x2[0] *= 1.01, x2[5] *= 0.9;
-  objectives::LcrTracked3D tr;
+  sizing::LcrTracked3D tr;
   for (int side = 0; side < 2; ++side) {
     tr.stress.push_back({side, 0.05, TopRoller(s, x1, side, 0.05)});
     tr.edge.push_back({side, 0.11, TopRoller(s, x1, side, 0.11)});
     s.active.force[side] = {{0.05, TopRoller(s, x1, side, 0.05), 0.0}};
   }
-  const auto make = [&] { return objectives::MakeLcrSizing3DProblem(s, Spec3D(), 1500, tr); };
+  const auto make = [&] { return sizing::MakeLcrSizing3DProblem(s, Spec3D(), 1500, tr); };
   const objectives::Problem p = make();
   const int n = p.num_vars(), m = p.evaluator->num_outputs();
   // Fresh problems (no cached point) give the reference numbers of each point.
@@ -153,7 +153,7 @@ TEST(LcrSizing3D, RowsMatchCentralDifferencesInTheCrownRadiusFlatLengthAndLength
   // A partial crown (R, L0 per cam as variables) and the roller length and cam thickness as
   // variables: 5 + 2 + 2 + 1 + 1 = 11. The contact length is min(l_r, b_c): with l_r < b_c the
   // roller length sets it (the cam thickness column is zero), with b_c < l_r the cam thickness.
-  objectives::LcrSizing3DSpec s3 = Spec3D();
+  sizing::LcrSizing3DSpec s3 = Spec3D();
   s3.coefficient_range_mm.reset();
   s3.crowning = {};
   s3.crowning.type = contact::CrowningType::kPartial;
@@ -167,7 +167,7 @@ TEST(LcrSizing3D, RowsMatchCentralDifferencesInTheCrownRadiusFlatLengthAndLength
 }
 
 TEST(LcrSizing3D, RowsMatchCentralDifferencesInTheLogCoefficientAndLengths) {
-  objectives::LcrSizing3DSpec s3 = Spec3D();  // log crown, Le 12, coefficient per cam
+  sizing::LcrSizing3DSpec s3 = Spec3D();  // log crown, Le 12, coefficient per cam
   s3.roller_length_range_mm = std::array<double, 2>{5, 11};
   s3.cam_thickness_range_mm = std::array<double, 2>{5, 12};
   ExpectRowsMatchCentralDifferences<9>({1.2266, 48.889, 48.889, 7.722, 52.75, 0.03, 0.025, 9.5, 10.5}, s3, 10.5, 9.5);
@@ -241,7 +241,7 @@ TEST(LcrSizing3D, CrownedSizingHoldsTheLimitsUnderAnIndependentCheck) {
   EXPECT_TRUE(out["best"].contains("half_space_check"));
 }
 
-// Branch and bound over candidates (objectives/sizing_driver.h): a polish stopped at a bound goes on
+// Branch and bound over candidates (sizing/sizing_driver.h): a polish stopped at a bound goes on
 // from where it stopped to the design, numbers and counts of the polish that never stopped, and each
 // stop's lower bound is at most the final outer diameter.
 TEST(LcrSizing3D, APolishStoppedAtABoundContinuesToTheSameDesign) {
@@ -252,26 +252,26 @@ TEST(LcrSizing3D, APolishStoppedAtABoundContinuesToTheSameDesign) {
   ASSERT_EQ(combos.size(), 1u);
   spec.lobes_a = combos[0].lobes_a, spec.rollers_a = combos[0].rollers_a;
   spec.lobes_b = combos[0].lobes_b, spec.rollers_b = combos[0].rollers_b;
-  const auto full = objectives::SolveLcrMinSize3D(spec, *study.contact3d, study.options);
+  const auto full = sizing::SolveLcrMinSize3D(spec, *study.contact3d, study.options);
   ASSERT_TRUE(full.outcome.converged);
   ASSERT_FALSE(full.paused);
   const double od = full.outcome.check->outer_diameter_mm;
   ASSERT_GE(full.outcome.polish_rounds, 3);
   // Bound 0: every converged round exceeds it, the polish stops after its first round.
-  auto o = objectives::SolveLcrMinSize3D(spec, *study.contact3d, study.options, 0.0);
+  auto o = sizing::SolveLcrMinSize3D(spec, *study.contact3d, study.options, 0.0);
   ASSERT_TRUE(o.paused);
   EXPECT_FALSE(o.outcome.converged);
   EXPECT_EQ(o.outcome.polish_rounds, 1);
   double lower = o.paused->lower_bound_mm;
   EXPECT_LE(lower, od);
   // A bound just above the first round's optimum: it stops again, later and higher.
-  objectives::ContinueLcrMinSize3D(spec, study.options, o, lower + 1e-9);
+  sizing::ContinueLcrMinSize3D(spec, study.options, o, lower + 1e-9);
   ASSERT_TRUE(o.paused);
   EXPECT_EQ(o.outcome.polish_rounds, 2);
   EXPECT_GT(o.paused->lower_bound_mm, lower);
   EXPECT_LE(o.paused->lower_bound_mm, od);
   lower = o.paused->lower_bound_mm;
-  objectives::ContinueLcrMinSize3D(spec, study.options, o);
+  sizing::ContinueLcrMinSize3D(spec, study.options, o);
   ASSERT_FALSE(o.paused);
   ASSERT_TRUE(o.outcome.converged);
   EXPECT_EQ(o.outcome.x, full.outcome.x);  // bit for bit
@@ -283,7 +283,7 @@ TEST(LcrSizing3D, APolishStoppedAtABoundContinuesToTheSameDesign) {
   EXPECT_EQ(o.crowning[0].coefficient, full.crowning[0].coefficient);
   EXPECT_EQ(o.crowning[1].coefficient, full.crowning[1].coefficient);
   EXPECT_EQ(o.tracked.stress, full.tracked.stress);
-  EXPECT_THROW(objectives::ContinueLcrMinSize3D(spec, study.options, o), std::invalid_argument);
+  EXPECT_THROW(sizing::ContinueLcrMinSize3D(spec, study.options, o), std::invalid_argument);
 }
 
 // The crowned example's 4 combinations: the best (20/21 + 26/27) is the design of the search that

@@ -136,8 +136,8 @@ LcrIIContact<T> LcrIIOutputRoller3(T eccentricity, T roller_radius) {
 /// 20 N·m on the disc, 1500 MPa, 8 mm face; e, a, ρ, Δa, Δρ and (crowned) the LCM coefficient free,
 /// starting at a = 35, ρ = 2.5, e = 0.9 mm, Δa −10, Δρ −5 µm, f = 2 µm; 16 × 16 cells, 4 angles per
 /// mesh period. overload_Nm > 0 adds the contact-inside-the-face row at that torque.
-inline objectives::CycloidSizingSpec CycloidRatio29Sizing(cycloid::CrowningType crowning, double overload_Nm = 0) {
-  objectives::CycloidSizingSpec s;
+inline sizing::CycloidSizingSpec CycloidRatio29Sizing(cycloid::CrowningType crowning, double overload_Nm = 0) {
+  sizing::CycloidSizingSpec s;
   s.drive.teeth = 29;
   s.drive.rollers = 30;
   s.drive.roller_position_radius_mm = 35;

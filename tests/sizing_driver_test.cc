@@ -1,4 +1,4 @@
-// The sizing loop shared by lcr_min_size and cycloid_min_size (objectives/sizing_driver.h).
+// The sizing loop shared by lcr_min_size and cycloid_min_size (sizing/sizing_driver.h).
 #include <optional>
 #include <random>
 #include <string>
@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "objectives/sizing_driver.h"
+#include "sizing/sizing_driver.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 namespace sizing_driver_test {
 
 // Candidates with a size each (empty: infeasible) and whether their verification would hold.
@@ -202,4 +202,4 @@ TEST(SizingDriver, MissingHooksAreRefused) {
 }
 
 }  // namespace sizing_driver_test
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

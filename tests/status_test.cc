@@ -190,8 +190,8 @@ TEST(Status, ACycloidSizingWithItsLimitsMovedAgreesWithItselfInEveryRun) {
 // of the impossible sign (a tightened lower limit that lowered the minimum), which the sides'
 // agreement alone would pass.
 TEST(Status, ReSolveSlopesFlagDifferingSidesAndImpossibleSigns) {
-  using camopt::objectives::LimitSense;
-  using camopt::objectives::SlopeFromReSolves;
+  using camopt::sizing::LimitSense;
+  using camopt::sizing::SlopeFromReSolves;
   const auto smooth = SlopeFromReSolves(99.0, 100.0, 101.02, 1.0, 1e-4, LimitSense::kLower);
   EXPECT_FALSE(smooth.kink);
   EXPECT_NEAR(smooth.slope, 1.01, 1e-12);

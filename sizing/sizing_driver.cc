@@ -1,10 +1,10 @@
-#include "objectives/sizing_driver.h"
+#include "sizing/sizing_driver.h"
 
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 
 SizingDriverResult RunSizingDriver(const SizingCandidates& c,
                                    const std::function<void(double, const std::string&)>& progress) {
@@ -81,4 +81,4 @@ SizingDriverResult RunSizingDriver(const SizingCandidates& c,
   return out;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 
 struct SizingCandidates {
   int count = 0;
@@ -65,4 +65,4 @@ struct SizingDriverResult {
 SizingDriverResult RunSizingDriver(const SizingCandidates& candidates,
                                    const std::function<void(double, const std::string&)>& progress = nullptr);
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing
