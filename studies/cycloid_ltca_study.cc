@@ -1415,13 +1415,8 @@ void FillCommon(const Study& s, Result& r) {
 // "joint_model", the parameters `camopt export` turns into a simulator's joint.
 void FillCatalogue(const Study& s, Result& r) {
   if (s.ratings) {
-    nlohmann::json j = nlohmann::json::object();
-    AddRatingsJson(s.ratings->in, r.ratings, r.ratings_failed,
-                   double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), s.estimate_error, j);
-    r.rated_torque_Nm = j.at("rated_torque_Nm");
-    r.peak_torque_Nm = j.at("peak_torque_Nm");
-    r.momentary_torque_Nm = j.at("momentary_torque_Nm");
-    r.ratings_json = j.at("ratings");
+    r.ratings_keys.Set(s.ratings->in, r.ratings, r.ratings_failed,
+                       double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), s.estimate_error);
   }
   if (r.output_bearing) r.output_bearing_json = OutputBearingJson(*s.output_bearing, *r.output_bearing);
   else if (s.output_bearing) r.output_bearing_json = nlohmann::json{{"error", r.output_bearing_failed}};

@@ -645,8 +645,7 @@ struct Result {
       output_pin_bending_stress_MPa, output_pin_contact_pressure_MPa;
   std::optional<OutputMechanismOut> output_mechanism;
   std::optional<StiffnessOut> stiffness;
-  /// AddRatingsJson's keys (a number or null; with "ratings").
-  std::optional<nlohmann::json> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, ratings_json;
+  RatingsKeys ratings_keys;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
   std::optional<nlohmann::json> output_bearing_json;  ///< OutputBearingJson's block, or {"error": why}
   std::optional<StiffnessSegmentsOut> stiffness_segments;
   std::optional<MassesOut> masses_out;                ///< result.json's masses
@@ -728,14 +727,7 @@ struct Result {
              Field(n).Unit("MPa").Desc("hole-pin Hertz pressure (with output_mechanism; null: not solved)"));
     a->Visit("output_mechanism", &output_mechanism, Field().Desc("with output_mechanism's pin and hole radii"));
     a->Visit("stiffness", &stiffness, Field().Desc("the torsional curve (with stiffness)"));
-    const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
-    a->Visit("rated_torque_Nm", &rated_torque_Nm,
-             Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
-    a->Visit("peak_torque_Nm", &peak_torque_Nm,
-             Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
-    a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
-             Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
-    a->Visit("ratings", &ratings_json, Field().Desc("the catalogue's ratings (docs/ratings.md)").Schema(RatingsResultSchema()));
+    ratings_keys.Serialize(a);
     a->Visit("output_bearing", &output_bearing_json,
              Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));
     a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));

@@ -548,22 +548,6 @@ struct Result {
                    "with torsional_dynamics: cycloid_ltca's block for the reported design, or its error"));
     }
   };
-  /// A limit that binds at the optimum and what it costs.
-  struct BindingLimit {
-    std::string limit;
-    double limit_value = 0, limit_cost = 0;
-    std::string unit;
-    LimitSlopeResult slope;  ///< its members are the entry's own
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("limit", &limit, Field().Desc("the study's limit key"));
-      a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite().Desc("the study's limit, in its unit"));
-      a->Visit("limit_cost", &limit_cost,
-               Field().Desc("d(objective)/d(limit) from the multipliers, in unit (negative: relaxing it shrinks)"));
-      a->Visit("unit", &unit, Field().Desc("of limit_cost: the objective's unit per the limit's"));
-      slope.Serialize(a);
-    }
-  };
   /// One start's solve in the first round.
   struct StartOutcome {
     std::string status, message;

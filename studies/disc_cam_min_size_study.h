@@ -238,23 +238,6 @@ struct Result {
       a->Visit("accurate_model", &accurate_model, Field().Desc("the accurate model, in words"));
     }
   };
-  /// A limit that binds at the answer and what it costs.
-  struct BindingLimit {
-    std::string limit;
-    double limit_value = 0, limit_cost = 0;
-    std::string unit;
-    LimitSlopeResult slope;  ///< its members are the entry's own
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("limit", &limit, Field().Desc("the limit's key"));
-      a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite().Desc("the limit, in its unit"));
-      a->Visit("limit_cost", &limit_cost,
-               Field().Desc("d(base circle)/d(limit), from verified re-solves with the limit moved: itself the "
-                            "re-solve slope"));
-      a->Visit("unit", &unit, Field().Desc("of limit_cost"));
-      slope.Serialize(a);
-    }
-  };
   /// One start's first solve.
   struct StartOutcome {
     std::string status;

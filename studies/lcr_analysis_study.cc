@@ -1197,12 +1197,7 @@ namespace {
 void FillCatalogue(const Study& st, const Result& res, Result::Json& j) {
   const double ratio = std::abs(lcr::SpeedReductionRatio(st.reducer));
   if (st.ratings) {
-    nlohmann::json r = nlohmann::json::object();
-    AddRatingsJson(st.ratings->in, res.ratings, res.ratings_failed, ratio, true, r);
-    j.rated_torque_Nm = r.at("rated_torque_Nm");
-    j.peak_torque_Nm = r.at("peak_torque_Nm");
-    j.momentary_torque_Nm = r.at("momentary_torque_Nm");
-    j.ratings = r.at("ratings");
+    j.ratings.Set(st.ratings->in, res.ratings, res.ratings_failed, ratio, true);
   }
   if (res.output_bearing) j.output_bearing = OutputBearingJson(*st.output_bearing, *res.output_bearing);
   else if (st.output_bearing) j.output_bearing = nlohmann::json{{"error", res.output_bearing_failed}};

@@ -591,8 +591,7 @@ struct Result {
     std::optional<nlohmann::json> transmission_error;  ///< TransmissionErrorJson's block
     std::optional<nlohmann::json> life;                ///< the bearing and cam-contact lives (LifeJson)
     std::optional<nlohmann::json> lubrication;         ///< LubricationResult's JSON, or {"error": why}
-    /// AddRatingsJson's keys (a number or null; with "ratings").
-    std::optional<nlohmann::json> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, ratings;
+    RatingsKeys ratings;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
     std::optional<nlohmann::json> output_bearing;      ///< OutputBearingJson's block, or {"error": why}
     std::optional<Masses> masses;
     std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin;
@@ -636,14 +635,7 @@ struct Result {
                    .Schema(LifeSchema()));
       a->Visit("lubrication", &lubrication,
                Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationResultSchema()));
-      const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
-      a->Visit("rated_torque_Nm", &rated_torque_Nm,
-               Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
-      a->Visit("peak_torque_Nm", &peak_torque_Nm,
-               Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
-      a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
-               Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
-      a->Visit("ratings", &ratings, Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)").Schema(RatingsResultSchema()));
+      ratings.Serialize(a);
       a->Visit("output_bearing", &output_bearing,
                Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));
       a->Visit("masses", &masses, Field().Desc("the cam's mass and the inertia at the output (with stiffness or ratings)"));

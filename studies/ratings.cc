@@ -165,6 +165,8 @@ nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, doub
   return j;
 }
 
+namespace {
+
 void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
                     double ratio, bool estimate_error, nlohmann::json& j) {
   if (!g) {
@@ -210,6 +212,18 @@ void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& 
     d["momentary_peak"] = {{"output_speed_rpm", in.momentary_peaks->output_speed_rpm},
                            {"duration_s", in.momentary_peaks->duration_s}};
   j["ratings"] = d;
+}
+
+}  // namespace
+
+void RatingsKeys::Set(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
+                      double ratio, bool estimate_error) {
+  nlohmann::json j = nlohmann::json::object();
+  AddRatingsJson(in, g, failed, ratio, estimate_error, j);
+  rated_torque_Nm = j.at("rated_torque_Nm");
+  peak_torque_Nm = j.at("peak_torque_Nm");
+  momentary_torque_Nm = j.at("momentary_torque_Nm");
+  ratings = j.at("ratings");
 }
 
 std::vector<DatasheetSection> RatingsDatasheetSections() {

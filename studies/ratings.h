@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/thermal.h"
+#include "studies/archive.h"
 #include "studies/datasheet.h"
 #include "studies/ratings_input.h"
 
@@ -84,10 +85,32 @@ void SolveAllowableSpeed(const std::function<double(double, double)>& loss_W, co
 RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
                            const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm);
 
-/// result.json's top-level rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm and "ratings" (the
-/// details, `estimate_error`: its estimated_error block), or their nulls and {"error": why}.
-void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
-                    double ratio, bool estimate_error, nlohmann::json& j);
+/// The JSON Schema of RatingsKeys::ratings (result.json's ratings of cycloid_ltca and lcr_analysis):
+/// the keys camopt reads (the datasheet's rows among them).
+nlohmann::ordered_json RatingsResultSchema();
+
+/// result.json's top-level rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm and "ratings" of the
+/// kinds that rate a design (cycloid_ltca, lcr_analysis): a member of their result serialized flat
+/// into it (RatingsKeys::Serialize), every key absent without "ratings".
+struct RatingsKeys {
+  /// A number or null each; "ratings": the details (`estimate_error`: its estimated_error block), or
+  /// {"error": why} when `failed` says why there is no g.
+  std::optional<nlohmann::json> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, ratings;
+  void Set(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed, double ratio,
+           bool estimate_error);
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
+    a->Visit("rated_torque_Nm", &rated_torque_Nm,
+             Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
+    a->Visit("peak_torque_Nm", &peak_torque_Nm,
+             Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
+    a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
+             Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
+    a->Visit("ratings", &ratings,
+             Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)").Schema(RatingsResultSchema()));
+  }
+};
 
 /// best.ratings of a sizing kind (SizingRatingsInput): the rated point asked for, the sized design's
 /// shortest L10 there (the accurate model's check) and `met` (the verification's verdict on it); with
@@ -100,8 +123,5 @@ nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, doub
 /// The datasheet's "Ratings" and "Output bearing" sections (studies/datasheet.h).
 std::vector<DatasheetSection> RatingsDatasheetSections();
 
-/// The JSON Schema of the block AddRatingsJson writes (result.json's ratings of cycloid_ltca and
-/// lcr_analysis): the keys camopt reads (the datasheet's rows among them).
-nlohmann::ordered_json RatingsResultSchema();
 
 }  // namespace camopt::studies

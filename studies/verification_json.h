@@ -117,6 +117,26 @@ struct LimitSlopeResult {
 /// The re-solve members of a binding limit's declared entry; `slope` null: not computed.
 LimitSlopeResult MakeLimitSlopeResult(const sizing::LimitSlope* slope);
 
+/// A limit that binds at a sizing's answer and what it costs: an entry of the sizing kinds'
+/// `binding_limits`. limit_cost is d(objective)/d(limit) in `unit` (the objective's unit per the
+/// limit's): from the solver's multipliers where the kind has them, else itself the re-solve slope.
+struct BindingLimit {
+  std::string limit;
+  double limit_value = 0, limit_cost = 0;
+  std::string unit;
+  LimitSlopeResult slope;  ///< its members are the entry's own
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("limit", &limit, Field().Desc("the study's limit key"));
+    a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite().Desc("the study's limit, in its unit"));
+    a->Visit("limit_cost", &limit_cost,
+             Field().Desc("d(objective)/d(limit) in unit, from the solver's multipliers where the kind has them, "
+                          "else the re-solve slope (negative: relaxing the limit shrinks the design)"));
+    a->Visit("unit", &unit, Field().Desc("of limit_cost: the objective's unit per the limit's"));
+    slope.Serialize(a);
+  }
+};
+
 /// The exit-3 sentence of a verification that does not hold: the limit, where, the accurate
 /// value with its error, the limit, and `advice` (what to change). Empty when it holds.
 std::string VerificationFailure(const objectives::Verification& v, const std::string& advice);
