@@ -118,16 +118,6 @@ std::optional<sizing::LcrSizing3DSpec> ParseContact3D(const Input& in, const Nod
   return s;
 }
 
-std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound) {
-  if (c.outcome3d && c.outcome3d->paused)
-    sizing::ContinueLcrMinSize3D(c.spec, s.options, *c.outcome3d, bound);
-  else
-    c.outcome3d = sizing::SolveLcrMinSize3D(c.spec, *s.contact3d, s.options, bound);
-  c.outcome = c.outcome3d->outcome;
-  if (c.outcome3d->paused) return c.outcome3d->paused->lower_bound_mm;
-  return std::nullopt;
-}
-
 void AddContact3DJson(const Study& s, Result& r) {
   const sizing::LcrSizing3DSpec& c3 = *s.contact3d;
   Result::Json& res = r.json;

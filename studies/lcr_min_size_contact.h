@@ -1,14 +1,15 @@
 // The finite-length contact in lcr_min_size (docs/lcr.md, "Crowned rollers and 3D contact"):
 // parsing of the top-level "contact" object, fixed.crowning, variables.crowning_coefficient_mm
-// and load.overload_torque_Nm, the 3D solve of a candidate (sizing/lcr_sizing3d.h) and its part
-// of result.json. Kept apart from
-// lcr_min_size_study.cc, which calls these hooks only when the study has a 3D contact.
+// and load.overload_torque_Nm, and its part of result.json (the 3D solve of a candidate is in
+// sizing/lcr_search.h). Kept apart from lcr_min_size_study.cc, which calls these hooks only when the
+// study has a 3D contact.
 #pragma once
 
 #include <optional>
 
 #include <nlohmann/json.hpp>
 
+#include "sizing/lcr_search.h"
 #include "sizing/lcr_sizing3d.h"
 #include "studies/input.h"
 
@@ -16,7 +17,7 @@ namespace camopt::studies::lcr_min_size {
 
 struct Input;
 struct Study;
-struct Candidate;
+using Candidate = sizing::LcrCandidate;
 struct Result;
 
 /// The 3D contact of the study, or nothing (the line model: the fast path). roller_length_mm: the
@@ -26,11 +27,6 @@ struct Result;
 /// ranges whose ends the crowning does not fit.
 std::optional<sizing::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
                                                           bool catalogue);
-
-/// Solves candidate c under the study's 3D contact (c.outcome and c.outcome3d), or continues it
-/// when its polish was stopped at a bound; stops where a polish round's outer diameter exceeds
-/// `bound` (sizing::SolveLcrMinSize3D) and then returns that lower bound.
-std::optional<double> SolveCandidate3D(const Study& s, Candidate& c, double bound);
 
 /// Adds the 3D parts to result.json's members (r.json): "contact", best.input/output.crowning,
 /// best.contact (3D peaks, edge margins, the line-model outer diameter), best.half_space_check,

@@ -1,8 +1,7 @@
-// Study kind "lcr_min_size" (see lcr_min_size_study.h): parse, call sizing/lcr_min_size.h for
-// every combination (and catalogue roller), write.
+// Study kind "lcr_min_size" (see lcr_min_size_study.h): parse, size through sizing/lcr_search.h
+// (every combination and catalogue roller, the accurate check of the answer), write.
 #include "studies/lcr_min_size_study.h"
 
-#include "sizing/sizing_driver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -96,10 +95,7 @@ std::optional<objectives::LcrLifeSpec> ParseLife(const Input& in, const Node& ro
   return life;
 }
 
-std::string ComboName(const objectives::LobeCombination& c) {
-  return std::to_string(c.lobes_a) + "/" + std::to_string(c.rollers_a) + " + " + std::to_string(c.lobes_b) +
-         "/" + std::to_string(c.rollers_b);
-}
+std::string ComboName(const objectives::LobeCombination& c) { return sizing::LobeCombinationName(c); }
 
 // Constraint row names without the sample index, each once.
 std::vector<std::string> Unique(const std::vector<std::string>& rows) {
@@ -786,96 +782,13 @@ nlohmann::ordered_json Input::SchemaRules() {
 Result Run(const Study& s, const RunContext& ctx) {
   Result res;
   const auto t0 = std::chrono::steady_clock::now();
-  for (const auto& c : objectives::LobeCombinations(s.ratio, s.max_lobes, s.differences)) {
-    if (s.catalogue.empty()) res.candidates.push_back({c, -1, {}, {}, {}, {}, {}});
-    for (size_t r = 0; r < s.catalogue.size(); ++r) res.candidates.push_back({c, int(r), {}, {}, {}, {}, {}});
-  }
-  // The sizing driver (sizing/sizing_driver.h): every candidate solved (with a 3D contact by
-  // branch and bound: a candidate whose polish round already exceeds the best's size stops there,
-  // "pruned", and is continued if the best's verification raises it past that round), then the
-  // smallest feasible one checked by the accurate model (3D: half_space on a refined grid, tightening and
-  // re-solving where it breaks a limit; line: the exact cycle on twice the angles); one that fails
-  // is dropped and the next smallest checked, until one holds or none is left.
-  sizing::SizingCandidates loop;
-  loop.count = int(res.candidates.size());
-  loop.label = [&](int i) {
-    const Candidate& c = res.candidates[size_t(i)];
-    return ComboName(c.combo) + (c.roller >= 0 ? " " + s.catalogue[c.roller].name : "");
-  };
-  const auto make_spec = [&](Candidate& c) {
-    c.spec = s.base;
-    c.spec.lobes_a = c.combo.lobes_a;
-    c.spec.rollers_a = c.combo.rollers_a;
-    c.spec.lobes_b = c.combo.lobes_b;
-    c.spec.rollers_b = c.combo.rollers_b;
-    if (c.roller >= 0) {
-      const CatalogueRoller& r = s.catalogue[c.roller];
-      c.spec.fixed_roller_diameter_mm = r.diameter_mm;
-      c.spec.roller_length_mm = r.length_mm;
-      c.spec.limits.roller_load_N = std::min(c.spec.limits.roller_load_N, r.load_limit_N);
-      if (c.spec.life) c.spec.life->roller = {r.dynamic_rating_N, r.static_rating_N, 0.0, 0.0};  // the catalogue's own
-    }
-  };
-  if (s.contact3d) {
-    // Branch and bound: a candidate's 3D polish stops once a round's outer diameter exceeds the
-    // bound the driver gives, and goes on when the driver needs it (sizing/lcr_sizing3d.h).
-    loop.solve_within = [&](int i, double bound) {
-      Candidate& c = res.candidates[size_t(i)];
-      const bool first = !c.outcome3d;
-      if (first) make_spec(c);
-      const int values = first ? 0 : c.outcome.result.value_evaluations,
-                gradients = first ? 0 : c.outcome.result.gradient_evaluations;
-      const std::optional<double> lower = SolveCandidate3D(s, c, bound);
-      res.value_evaluations += c.outcome.result.value_evaluations - values;
-      res.gradient_evaluations += c.outcome.result.gradient_evaluations - gradients;
-      return lower;
-    };
-  } else {
-    loop.solve = [&](int i) {
-      Candidate& c = res.candidates[size_t(i)];
-      make_spec(c);
-      c.outcome = sizing::SolveLcrMinSize(c.spec, s.options);
-      res.value_evaluations += c.outcome.result.value_evaluations;
-      res.gradient_evaluations += c.outcome.result.gradient_evaluations;
-    };
-  }
-  // The driver's "size" is the objective's value on the dense check: the outer diameter, or the
-  // lubricated loss with the efficiency objective (the 3D path sizes the outer diameter only).
-  loop.feasible_size = [&](int i) -> std::optional<double> {
-    const Candidate& c = res.candidates[size_t(i)];
-    if (!c.feasible()) return std::nullopt;
-    return objectives::LcrObjectiveValue(c.spec, *c.outcome.check);
-  };
-  loop.verify = [&](int i) {
-    Candidate& b = res.candidates[size_t(i)];
-    if (s.contact3d) {
-      const int values = b.outcome3d->outcome.result.value_evaluations,
-                gradients = b.outcome3d->outcome.result.gradient_evaluations;
-      sizing::LcrHalfSpaceCheck h;
-      b.verification = sizing::VerifyLcrMinSize3D(b.spec, *s.contact3d, s.options, *b.outcome3d, &h);
-      b.outcome = b.outcome3d->outcome;
-      res.value_evaluations += b.outcome.result.value_evaluations - values;
-      res.gradient_evaluations += b.outcome.result.gradient_evaluations - gradients;
-      if (b.verification->ran) b.half_space = h;
-    } else {
-      b.verification = objectives::VerifyLcrLineDesign(b.spec, *b.outcome.design, s.options.dense_steps);
-    }
-  };
   {
+    // The search over the candidates and the accurate check of the answer (sizing/lcr_search.h).
     Progress progress("lcr_min_size", ctx.quiet);
-    res.best = sizing::RunSizingDriver(loop, [&](double f, const std::string& what) { progress.Update(f, what); }).best;
+    static_cast<sizing::LcrSearchOutcome&>(res) =
+        sizing::SearchLcrMinSize(s, [&](double f, const std::string& what) { progress.Update(f, what); });
   }
-  if (res.best >= 0 && s.contact3d) {
-    // The limit sensitivities re-solve the line problem: not done for the 3D contact.
-    res.half_space = res.candidates[res.best].half_space;
-  } else if (res.best >= 0) {
-    const Candidate& b = res.candidates[res.best];
-    res.limit_slope = sizing::LimitSlopes(b.spec, s.options, b.outcome);
-    for (const auto& [key, slope] : res.limit_slope)
-      if (!slope.sides.empty()) res.limit_sensitivity[key] = slope.slope;
-  } else {
-    res.blocking_message = BlockingMessage(s, res);
-  }
+  if (res.best < 0) res.blocking_message = BlockingMessage(s, res);
   if (s.robust) RunRobust(s, res, ctx);
   FillResult(s, res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

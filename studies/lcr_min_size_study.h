@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sizing/lcr_min_size.h"
+#include "sizing/lcr_search.h"
 #include "objectives/lcr_robust.h"
 #include "sizing/lcr_robust_solve.h"
 #include "objectives/lcr_sizing.h"
@@ -381,27 +382,15 @@ struct Input {
 /// A [lower, upper] range of the study with lower <= upper ("[lower, upper] with lower <= upper" at `n`).
 std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n);
 
-struct CatalogueRoller {
-  std::string name;
-  double diameter_mm = 0, length_mm = 0, load_limit_N = 0;
-  /// The roller's ratings C and C0 [N] as the catalogue gives them (0: not given); C is required
-  /// when a life is asked (load.input_speed_rpm or duty_cycle).
-  double dynamic_rating_N = 0, static_rating_N = 0;
-};
+using CatalogueRoller = sizing::LcrCatalogueRoller;
 
-struct Study {
+/// The search (sizing/lcr_search.h: ratio, lobe and difference ranges, the shared problem `base`,
+/// the catalogue, the solver options, the finite-length contact of studies/lcr_min_size_contact.h)
+/// and what the study adds around it.
+struct Study : sizing::LcrSearchSpec {
   std::string name;
-  long ratio = 0;
   double output_torque_Nmm = 0;
-  int max_lobes = 40;
-  std::vector<int> differences{1};
-  objectives::LcrSizingSpec base;  ///< bounds, fixed sizes, material, load and the study's limits
-  std::vector<CatalogueRoller> catalogue;
-  sizing::LcrMinSizeOptions options;
   objectives::LcrConstraintForm form = objectives::LcrConstraintForm::kAggregate;  ///< as written
-  /// The finite-length contact (crowning, misalignment, overload; studies/lcr_min_size_contact.h);
-  /// empty: the line model.
-  std::optional<sizing::LcrSizing3DSpec> contact3d;
   /// "tolerances" + "robust" (+ "monte_carlo"): studies/lcr_min_size_robust.cc. Null: nominal only.
   std::shared_ptr<const objectives::LcrRobustRule> robust;
   int mc_samples = 200, mc_angle_steps = 720;
@@ -413,32 +402,11 @@ struct Study {
   std::optional<SizingRatingsInput> ratings;
 };
 
-struct Candidate {
-  objectives::LobeCombination combo{};
-  int roller = -1;  ///< index into Study::catalogue, −1 without a catalogue
-  objectives::LcrSizingSpec spec;  ///< what was solved (counts, roller, the study's limits)
-  sizing::LcrMinSizeOutcome outcome;
-  std::optional<sizing::LcrMinSize3DOutcome> outcome3d;  ///< with Study::contact3d
-  /// The accurate model's check (objectives/verification.h), of the candidates that were chosen
-  /// as best at some point: one that fails it is not feasible.
-  std::optional<objectives::Verification> verification;
-  std::optional<sizing::LcrHalfSpaceCheck> half_space;  ///< 3D: the verification's study-grid numbers
-  bool feasible() const { return outcome.converged && (!verification || verification->verified()); }
-  /// 3D: its polish stopped at the best's size (branch and bound; outcome3d->paused has the lower
-  /// bound): not solved to the end, not feasible.
-  bool pruned() const { return outcome3d && outcome3d->paused; }
-};
+using Candidate = sizing::LcrCandidate;
 
-struct Result {
-  std::vector<Candidate> candidates;
-  int best = -1;  ///< index of the feasible candidate with the least objective, −1 when nothing fits
-  /// d(objective)/d(limit) of the best design [mm of outer diameter, or W of loss with the efficiency
-  /// objective, per unit of the limit], by limit key.
-  std::map<std::string, double> limit_sensitivity;
-  /// The same re-solves with both sides (sizing/limit_slope.h): the binding_limits' re_solve_* and kink.
-  std::map<std::string, sizing::LimitSlope> limit_slope;
-  int value_evaluations = 0, gradient_evaluations = 0;
-  std::optional<sizing::LcrHalfSpaceCheck> half_space;  ///< best design, with Study::contact3d
+/// The search's outcome (sizing/lcr_search.h: the candidates, the best, the limit slopes, the
+/// evaluations, the 3D half-space check) and what the study adds around it.
+struct Result : sizing::LcrSearchOutcome {
   double seconds = 0;  ///< wall time of the search (summary only, never in result.json)
   /// When nothing fits: the limit that blocks most, the closest candidate, and the value of that
   /// limit that its closest point needs.
