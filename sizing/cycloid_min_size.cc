@@ -95,15 +95,7 @@ CrowningFit CrowningFitOf(const cycloid::Drive& d, const cycloid::Crowning& c) {
 // A drive over a Jet whose derivative is along the sizing variable `name` (µm variables: 1e-3 mm).
 using J1 = ceres::Jet<double, 1>;
 cycloid::DriveTpl<J1> JetDrive(const cycloid::Drive& d, const std::string& name) {
-  cycloid::DriveTpl<J1> dj;
-  dj.teeth = d.teeth;
-  dj.rollers = d.rollers;
-  dj.eccentricity_mm = J1(d.eccentricity_mm);
-  dj.roller_position_radius_mm = J1(d.roller_position_radius_mm);
-  dj.roller_radius_mm = J1(d.roller_radius_mm);
-  dj.face_width_mm = J1(d.face_width_mm);
-  dj.delta_position_mm = J1(d.delta_position_mm);
-  dj.delta_radius_mm = J1(d.delta_radius_mm);
+  cycloid::DriveTpl<J1> dj = d.cast<J1>();
   if (name == "eccentricity_mm") dj.eccentricity_mm.v[0] = 1;
   if (name == "roller_position_radius_mm") dj.roller_position_radius_mm.v[0] = 1;
   if (name == "roller_radius_mm") dj.roller_radius_mm.v[0] = 1;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "model/cycloid/crowning.h"
+#include "model/cycloid/output_mechanism.h"
 #include "model/cycloid/tooth_profile.h"
 #include "model/cycloid/unloaded_tca.h"
 #include "tests/reference_designs.h"
@@ -261,6 +262,59 @@ TEST(CycloidGeometry, CrowningGradientsMatchCentralDifferences) {
         CrowningDrop<T>(CrowningType::kPartial, x[2] * T(200), T(13.6), T(0), T(0), x[1])};
   };
   camopt::testing::ExpectJacobianMatchesCentralDifferences<3>(f, {0.005, 7.3, 17.5}, 1e-6, 1e-10);
+}
+
+// DriveTpl::cast and OutputPinsTpl::cast: every member carried over, the integers as they are, a Jet
+// drive from a double one with zero derivatives, and the values back.
+TEST(CycloidGeometry, CastCarriesEveryMemberBetweenScalars) {
+  using J = ceres::Jet<double, 2>;
+  Drive d;
+  d.teeth = 29;
+  d.rollers = 30;
+  d.roller_position_radius_mm = 61.5;
+  d.roller_radius_mm = 3.25;
+  d.eccentricity_mm = 1.75;
+  d.face_width_mm = 9.5;
+  d.delta_position_mm = 0.012;
+  d.delta_radius_mm = -0.004;
+  const DriveTpl<J> dj = d.cast<J>();
+  const double* in[] = {&d.roller_position_radius_mm, &d.roller_radius_mm, &d.eccentricity_mm,
+                        &d.face_width_mm, &d.delta_position_mm, &d.delta_radius_mm};
+  const J* jet[] = {&dj.roller_position_radius_mm, &dj.roller_radius_mm, &dj.eccentricity_mm,
+                    &dj.face_width_mm, &dj.delta_position_mm, &dj.delta_radius_mm};
+  EXPECT_EQ(dj.teeth, 29);
+  EXPECT_EQ(dj.rollers, 30);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(jet[k]->a, *in[k]) << k;
+    EXPECT_EQ(jet[k]->v.norm(), 0.0) << k;
+  }
+  DriveTpl<J> seeded = dj;
+  seeded.eccentricity_mm.v[0] = 1.0;
+  const Drive back = seeded.cast<double>();
+  const double* out[] = {&back.roller_position_radius_mm, &back.roller_radius_mm, &back.eccentricity_mm,
+                         &back.face_width_mm, &back.delta_position_mm, &back.delta_radius_mm};
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(*out[k], *in[k]) << k;
+  EXPECT_EQ(back.teeth, 29);
+  EXPECT_EQ(back.rollers, 30);
+
+  OutputPins m;
+  m.pins = 10;
+  m.pin_circle_radius_mm = 40.0;
+  m.pin_radius_mm = 4.0;
+  m.hole_radius_mm = 7.5;
+  m.roller_radius_mm = 5.0;
+  m.face_width_mm = 9.5;
+  m.e_star_MPa = 113000.0;
+  m.linear_stiffness_N_per_mm = 2.5e5;
+  const OutputPins mb = m.cast<J>().cast<double>();
+  EXPECT_EQ(mb.pins, 10);
+  EXPECT_EQ(mb.pin_circle_radius_mm, 40.0);
+  EXPECT_EQ(mb.pin_radius_mm, 4.0);
+  EXPECT_EQ(mb.hole_radius_mm, 7.5);
+  EXPECT_EQ(mb.roller_radius_mm, 5.0);
+  EXPECT_EQ(mb.face_width_mm, 9.5);
+  EXPECT_EQ(mb.e_star_MPa, 113000.0);
+  EXPECT_EQ(mb.linear_stiffness_N_per_mm, 2.5e5);
 }
 
 }  // namespace cycloid_geometry_test

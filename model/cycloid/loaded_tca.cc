@@ -675,15 +675,7 @@ std::vector<LoadedTca::Derivative> LoadedTca::Differentiate(const MeshLoad& solv
                parameter == "crank_angle_rad" || parameter == "eccentricity_mm" ||
                parameter == "roller_position_radius_mm" || parameter == "roller_radius_mm") {
       kind[j] = Kind::kGeometry;
-      DriveTpl<J> dj;
-      dj.teeth = drive_.teeth;
-      dj.rollers = drive_.rollers;
-      dj.roller_position_radius_mm = J(drive_.roller_position_radius_mm);
-      dj.roller_radius_mm = J(drive_.roller_radius_mm);
-      dj.eccentricity_mm = J(drive_.eccentricity_mm);
-      dj.face_width_mm = J(drive_.face_width_mm);
-      dj.delta_position_mm = J(drive_.delta_position_mm);
-      dj.delta_radius_mm = J(drive_.delta_radius_mm);
+      DriveTpl<J> dj = drive_.cast<J>();
       J crank(solved.crank_angle_rad);
       (parameter == "delta_position_mm"           ? dj.delta_position_mm
        : parameter == "delta_radius_mm"           ? dj.delta_radius_mm

@@ -83,6 +83,21 @@ struct OutputPinsTpl {
   T contact_radius_mm() const { return Value(roller_radius_mm) > 0.0 ? roller_radius_mm : pin_radius_mm; }
   /// c = r_h − r_c − e, the radial clearance of every pin at w = 0.
   T clearance_mm(const T& eccentricity_mm) const { return hole_radius_mm - contact_radius_mm() - eccentricity_mm; }
+
+  /// The same mechanism over another scalar (ScalarCast per member; cf. DriveTpl::cast).
+  template <typename U>
+  OutputPinsTpl<U> cast() const {
+    OutputPinsTpl<U> m;
+    m.pins = pins;
+    m.pin_circle_radius_mm = ScalarCast<U>(pin_circle_radius_mm);
+    m.pin_radius_mm = ScalarCast<U>(pin_radius_mm);
+    m.hole_radius_mm = ScalarCast<U>(hole_radius_mm);
+    m.roller_radius_mm = ScalarCast<U>(roller_radius_mm);
+    m.face_width_mm = ScalarCast<U>(face_width_mm);
+    m.e_star_MPa = ScalarCast<U>(e_star_MPa);
+    m.linear_stiffness_N_per_mm = ScalarCast<U>(linear_stiffness_N_per_mm);
+    return m;
+  }
 };
 using OutputPins = OutputPinsTpl<double>;
 
@@ -176,15 +191,7 @@ template <typename T>
 OutputPinLoads<T> SolveOutputPins(const OutputPinsTpl<T>& m, const T& eccentricity_mm, const T& torque_Nmm,
                                   const T& pin0_angle_rad) {
   using J = ceres::Jet<double, 1>;
-  OutputPinsTpl<double> md;
-  md.pins = m.pins;
-  md.pin_circle_radius_mm = Value(m.pin_circle_radius_mm);
-  md.pin_radius_mm = Value(m.pin_radius_mm);
-  md.hole_radius_mm = Value(m.hole_radius_mm);
-  md.roller_radius_mm = Value(m.roller_radius_mm);
-  md.face_width_mm = Value(m.face_width_mm);
-  md.e_star_MPa = Value(m.e_star_MPa);
-  md.linear_stiffness_N_per_mm = Value(m.linear_stiffness_N_per_mm);
+  const OutputPinsTpl<double> md = m.template cast<double>();
   const double e = Value(eccentricity_mm), torque = Value(torque_Nmm), phi0 = Value(pin0_angle_rad);
   if (const std::string why = CheckOutputPins(md, e); !why.empty())
     throw std::invalid_argument("output pins: " + why);

@@ -35,6 +35,22 @@ struct DriveTpl {
   T face_width_mm = T(17.0);              ///< B
   T delta_position_mm = T(0.0);           ///< Δa, profile modification of the roller position
   T delta_radius_mm = T(0.0);             ///< Δρ, profile modification of the roller radius
+
+  /// The same drive over another scalar (ScalarCast per member): a Jet drive from a double one
+  /// (constants, to be seeded), or the values of a Jet drive.
+  template <typename U>
+  DriveTpl<U> cast() const {
+    DriveTpl<U> d;
+    d.teeth = teeth;
+    d.rollers = rollers;
+    d.roller_position_radius_mm = ScalarCast<U>(roller_position_radius_mm);
+    d.roller_radius_mm = ScalarCast<U>(roller_radius_mm);
+    d.eccentricity_mm = ScalarCast<U>(eccentricity_mm);
+    d.face_width_mm = ScalarCast<U>(face_width_mm);
+    d.delta_position_mm = ScalarCast<U>(delta_position_mm);
+    d.delta_radius_mm = ScalarCast<U>(delta_radius_mm);
+    return d;
+  }
 };
 using Drive = DriveTpl<double>;
 

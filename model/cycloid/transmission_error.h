@@ -100,15 +100,8 @@ OutputLag<T> KinematicLag(const Drive& d, const OutputPins* pins, const Deviatio
   using std::sqrt;
   using te_detail::At;
   OutputLag<T> out;
-  DriveTpl<T> tooth;  // the disc as cut, the profile moved by δn (ρ' − δn)
-  tooth.teeth = d.teeth;
-  tooth.rollers = d.rollers;
-  tooth.roller_position_radius_mm = T(d.roller_position_radius_mm);
-  tooth.roller_radius_mm = T(d.roller_radius_mm);
-  tooth.eccentricity_mm = T(d.eccentricity_mm);
-  tooth.face_width_mm = T(d.face_width_mm);
-  tooth.delta_position_mm = T(d.delta_position_mm);
-  tooth.delta_radius_mm = T(d.delta_radius_mm) - dev.profile;
+  DriveTpl<T> tooth = d.cast<T>();  // the disc as cut, the profile moved by δn (ρ' − δn)
+  tooth.delta_radius_mm = tooth.delta_radius_mm - dev.profile;
   const T a = T(d.roller_position_radius_mm) + dev.pin_circle_radius;
   const T e = T(d.eccentricity_mm) + dev.eccentricity;
   const T crank_t(crank);
