@@ -356,7 +356,9 @@ void RunConvergenceFile(const std::string& file, const std::string& out_dir, con
   if (study.contains("study") && study["study"].is_string()) AddReport(study["study"].get<std::string>(), study, run.own);
   folder.Commit(run.own);
   std::cout << run.table << std::flush;
-  const RunAnswer answer{run.own.status().value_or(Status::kLimitsMet), run.own.status_reason(), {}};
+  RunAnswer answer;
+  answer.status = run.own.status().value_or(Status::kLimitsMet);
+  answer.reason = run.own.status_reason();
   if (ExitCode(answer.status, ctx.strict) != 0) throw StudyIncomplete(answer);
 }
 

@@ -1,5 +1,6 @@
-// Study kind "cycloid_crowning_tuning" (studies/cycloid_crowning_tuning_study.h): parse, scan and
-// optimise through objectives/cycloid_crowning.h and optimizers/, write.
+// Study kind "cycloid_crowning_tuning" (studies/cycloid_crowning_tuning_study.h): parse, scan,
+// tune through sizing/cycloid_crowning_tuning.h (the problems of objectives/cycloid_crowning.h),
+// verify on the accurate model, write.
 #include "studies/cycloid_crowning_tuning_study.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "optimizers/solver.h"
+#include "sizing/cycloid_crowning_tuning.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/backend_input.h"
 #include "studies/report.h"
@@ -469,74 +471,29 @@ Result RunJoint(const Study& s, const RunContext& ctx) {
   }
   r.reference = paper.Evaluate(s.reference_coefficient_mm, s.drive.face_width_mm);
   const int scan_runs = model.evaluations();
-  // 2. The optimizer from the start values.
-  objectives::CycloidTuningSpec spec;
-  spec.variables = s.variables;
-  spec.required_end_distance_um = s.required_edge_margin_um;
-  spec.max_lte_peak_to_peak_arcsec = s.max_lte_peak_to_peak_arcsec;
-  spec.min_unloaded_te_arcsec = s.min_unloaded_te_arcsec;
-  spec.stress_scale_MPa = 1000.0;
-  // The gradient solvers get the epigraph form (objectives/cycloid_crowning.h): minimise t with
-  // every (angle, roller) peak <= t; t starts at the start design's exact maximum (this run is the
-  // optimizer's first point, which the model then answers from its last cycles).
-  if (s.backend != "cobyla") {
-    spec.epigraph = true;
-    spec.initial_peak_bound_MPa = model.Evaluate(start, false).stress_MPa;
-  }
-  const objectives::Problem problem = objectives::CycloidTuningProblem(
-      model, spec, [&](const objectives::TuningEvaluation& e) {
-        r.joint_history.push_back(e);
+  // 2. The optimizer from the start values (sizing/cycloid_crowning_tuning.h).
+  sizing::CycloidJointTuningSpec spec;
+  spec.problem.variables = s.variables;
+  spec.problem.required_end_distance_um = s.required_edge_margin_um;
+  spec.problem.max_lte_peak_to_peak_arcsec = s.max_lte_peak_to_peak_arcsec;
+  spec.problem.min_unloaded_te_arcsec = s.min_unloaded_te_arcsec;
+  spec.problem.stress_scale_MPa = 1000.0;
+  spec.backend = ToBackend(s.backend);
+  spec.max_evaluations = s.max_evaluations;
+  sizing::CycloidJointTuningOutcome solve =
+      sizing::TuneCycloidCrowningJoint(model, spec, start, [&](const objectives::TuningEvaluation& e) {
         progress.Update(std::min(1.0, 0.3 + 0.7 * double(model.evaluations() - scan_runs) / (s.max_evaluations + 1)),
                         cycloid_common::Fixed(e.stress_MPa, 0) + " MPa, end distance " +
                             cycloid_common::Fixed(e.edge_margin_um, 1) + " um");
       });
-  optimizers::SolverOptions options;
-  options.backend = ToBackend(s.backend);
-  options.tolerance = 1e-3;
-  options.constraint_tolerance = 1e-3;  // scaled: 0.01 µm of end distance (scale 10 µm)
-  options.max_evaluations = s.max_evaluations;
-  options.max_seconds = 1e9;  // no time limit: the evaluation budget bounds the run
-  // Near the optimum the end distance at 550 N·m scatters by ±2 µm and the stress by 0.3 MPa for
-  // design changes of 1e-9 (the contact solves stop at their tolerance, rows and cells enter the
-  // contact): Ipopt's multipliers then jump and its optimality test never passes although the
-  // design no longer moves. Ipopt also stops once 3 iterations in a row change the stress by less
-  // than 1e-3 (relative) within 2 µm of the end-distance bound (docs/cycloid.md); the status
-  // still judges that final point at the constraint tolerance, and the reported design is the
-  // best feasible one evaluated.
-  options.stall_iterations = 3;
-  options.stall_violation = 2.0;  // µm of end distance (the β0 rows, arcsec, stay far inside it)
-  // The epigraph has one row per (angle, roller), 96 on the paper's drive, each with a barrier
-  // term that pushes t up: with Ipopt's own barrier settings (mu about 1 at the start) t went
-  // to 5900 MPa before coming back, and the start, 0.09 arcsec inside the β0 bound, was pushed
-  // off it. A small fixed initial barrier and a start kept at its bounds (docs/cycloid.md, the
-  // measured comparison) let it start from where the design is.
-  options.barrier_initial = 1e-5;
-  options.bound_push = 1e-6;
-  const optimizers::SolverResult solved = optimizers::Solve(problem, options);
-  r.solver_status = optimizers::ToString(solved.status);
-  r.status = RunStatus(solved);
+  r.solver_status = optimizers::ToString(solve.solved.status);
+  r.status = RunStatus(solve.solved);
   progress.Done();
   r.solver_evaluations = model.evaluations() - scan_runs;
   r.solver_gradient_evaluations = model.gradient_evaluations();
-  // The best feasible design the optimizer evaluated (smooth stress; feasible within the
-  // constraint tolerance: 0.01 µm of end distance, 1e-3 arcsec), else the one with the largest
-  // margin.
-  // The objective the optimizer saw: the exact maximum (epigraph) or the soft-max.
-  auto objective = [&](const objectives::TuningEvaluation& e) {
-    return spec.epigraph ? e.stress_MPa : e.smooth_stress_MPa;
-  };
-  const objectives::TuningEvaluation* best = nullptr;
-  const objectives::TuningEvaluation* widest = nullptr;
-  for (const auto& e : r.joint_history) {
-    if (!widest || e.edge_margin_um > widest->edge_margin_um) widest = &e;
-    const double te = *std::min_element(e.unloaded_te_arcsec.begin(), e.unloaded_te_arcsec.end());
-    const bool ok = e.converged && e.edge_margin_um >= s.required_edge_margin_um - 0.01 &&
-                    e.lte_peak_to_peak_arcsec <= s.max_lte_peak_to_peak_arcsec + 1e-3 &&
-                    te >= s.min_unloaded_te_arcsec - 1e-3;
-    if (ok && (!best || objective(e) < objective(*best))) best = &e;
-  }
-  r.feasible = best != nullptr;
-  r.joint_best = best ? *best : widest ? *widest : model.Evaluate(start, false);
+  r.joint_history = std::move(solve.history);
+  r.feasible = solve.feasible;
+  r.joint_best = solve.best;
   const auto [drive, crowning] = model.Design(r.joint_best.x);
   r.best = {crowning.coefficient_mm, crowning.effective_length_mm > 0 ? crowning.effective_length_mm : s.drive.face_width_mm,
             r.joint_best.stress_MPa, r.joint_best.edge_margin_um, r.joint_best.pairs};
@@ -577,31 +534,21 @@ Result RunShorthand(const Study& s, const RunContext& ctx) {
   spec.length_hi_mm = s.length_hi_mm;
   spec.required_edge_margin_um = s.required_edge_margin_um;
   spec.stress_scale_MPa = std::max(1.0, start.stress_MPa);
-  const objectives::Problem problem = objectives::CycloidCrowningProblem(
-      model, spec, [&](const CrowningEvaluation& e) {
-        r.history.push_back(e);
-        progress.Update(std::min(1.0, 0.5 + 0.5 * double(r.history.size()) / (s.max_evaluations + 1)),
+  // 3. COBYLA from there (sizing/cycloid_crowning_tuning.h); the best feasible point seen anywhere.
+  const sizing::CycloidShorthandTuningOutcome solve = sizing::TuneCycloidCrowningShorthand(
+      model, spec, s.max_evaluations, r.curve, start, [&](const CrowningEvaluation& e) {
+        progress.Update(std::min(1.0, 0.5 + 0.5 * double(r.history.size() + 1) / (s.max_evaluations + 1)),
                         "f = " + Format(e.coefficient_mm * 1e3, 4) + " um, " +
                             cycloid_common::Fixed(e.stress_MPa, 0) + " MPa");
+        r.history.push_back(e);
       });
-  optimizers::SolverOptions options;
-  options.backend = optimizers::Backend::kCobyla;
-  options.tolerance = 1e-3;             // relative, on f (and L) and on the stress
-  options.constraint_tolerance = 1e-2;  // µm of edge margin; NLopt aims at a tenth of it
-  options.max_evaluations = s.max_evaluations;
-  options.max_seconds = 1e9;  // no time limit: the evaluation budget bounds the run
-  const optimizers::SolverResult solved = optimizers::Solve(problem, options);
-  r.status = RunStatus(solved);
+  r.status = RunStatus(solve.solved);
   progress.Done();
-  // The best feasible point seen anywhere (scan, then optimiser).
-  std::vector<CrowningEvaluation> seen = r.curve;
-  seen.insert(seen.end(), r.history.begin(), r.history.end());
-  const auto best = objectives::LowestFeasibleStress(seen, s.required_edge_margin_um - 1e-9);
-  r.feasible = best.has_value();
-  r.best = best.value_or(start);
+  r.feasible = solve.feasible;
+  r.best = solve.best;
   r.evaluations = model.evaluations() + paper.evaluations();
   r.backend = "cobyla";
-  r.solver_status = optimizers::ToString(solved.status);
+  r.solver_status = optimizers::ToString(solve.solved.status);
   r.solver_evaluations = int(r.history.size());
   r.tuned.push_back({"coefficient_mm", r.best.coefficient_mm});
   if (s.tune_length) r.tuned.push_back({"effective_length_mm", r.best.length_mm});
