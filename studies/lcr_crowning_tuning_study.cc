@@ -116,8 +116,8 @@ namespace {
 // The lives of the tuned design (docs/life.md, "Sliced roller life under tilt"): ISO 281 of each
 // bearing over the duty cycle (rigid law, the tuning's angle steps), and each roller sliced with
 // its tuned crowning at every misalignment of the tuning (the slices model's load per slice).
-LifeResult TunedLives(const Study& st, const std::array<objectives::LcrCrowningSideResult, 2>& tuned) {
-  const objectives::LcrCrowningTuningSpec& sp = st.spec;
+LifeResult TunedLives(const Study& st, const std::array<sizing::LcrCrowningSideResult, 2>& tuned) {
+  const sizing::LcrCrowningTuningSpec& sp = st.spec;
   const LifeSpec& spec = *st.life;
   LifeResult out;
   for (int k = 0; k < 2; ++k)
@@ -158,7 +158,7 @@ LifeResult TunedLives(const Study& st, const std::array<objectives::LcrCrowningS
 namespace {
 
 // The peaks of one check per misalignment (result.json's tuned/uncrowned slices and half_space).
-std::vector<Result::CheckRow> CheckRows(const Study& st, const objectives::LcrCrowningCheck& c,
+std::vector<Result::CheckRow> CheckRows(const Study& st, const sizing::LcrCrowningCheck& c,
                                         const std::vector<double>& dy) {
   std::vector<Result::CheckRow> out;
   for (size_t g = 0; g < st.spec.misalignments_rad.size(); ++g) {
@@ -276,11 +276,11 @@ void FillResult(const Study& st, Result& res) {
 
 Result Run(const Study& st, const RunContext& ctx) {
   Result res;
-  objectives::LcrCrowningTuningSpec spec = st.spec;
+  sizing::LcrCrowningTuningSpec spec = st.spec;
   Progress progress("lcr_crowning_tuning", ctx.quiet);
   spec.progress = [&](double f) { progress.Update(f, "crowning coefficient scan and refinement"); };
   try {
-    res.tuned = objectives::TuneLcrCrowning(spec);
+    res.tuned = sizing::TuneLcrCrowning(spec);
   } catch (const std::domain_error& e) {
     throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
   }
@@ -297,7 +297,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     std::vector<lcr::Contact3DCycleSide> coarse;
     for (auto [check, c] : {std::pair{&res.tuned_check[k], crown}, std::pair{&res.uncrowned_check[k], lcr::RollerCrowning<double>{}}}) {
       std::vector<lcr::Contact3DCycleSide> details;
-      check->half_space = objectives::CheckLcrCrowning(spec, s, c, lcr::ContactModel::kHalfSpace, &details,
+      check->half_space = sizing::CheckLcrCrowning(spec, s, c, lcr::ContactModel::kHalfSpace, &details,
                                                        st.grid_nx, st.grid_ny);
       for (size_t g = 0; g < spec.misalignments_rad.size(); ++g) check->half_space_dy_mm.push_back(details[2 * g].cell_dy_mm);
       if (check == &res.tuned_check[k]) coarse = details;
@@ -306,11 +306,11 @@ Result Run(const Study& st, const RunContext& ctx) {
     // half_space cells each way; per misalignment, the largest pressure at a contact end as a
     // share of the peak at the overload torque (the tuning's constraint: off the ends) and at the
     // design torque, the error the change from the study's own settings.
-    objectives::LcrCrowningTuningSpec fine_spec = spec;
+    sizing::LcrCrowningTuningSpec fine_spec = spec;
     fine_spec.angle_steps = 2 * spec.angle_steps;
     fine_spec.progress = nullptr;
     std::vector<lcr::Contact3DCycleSide> fine;
-    objectives::CheckLcrCrowning(fine_spec, s, crown, lcr::ContactModel::kHalfSpace, &fine, 2 * st.grid_nx,
+    sizing::CheckLcrCrowning(fine_spec, s, crown, lcr::ContactModel::kHalfSpace, &fine, 2 * st.grid_nx,
                                  2 * st.grid_ny);
     const auto end_share = [](const lcr::Contact3DCycleSide& c) {
       const auto& p = c.worst_pressure_MPa;

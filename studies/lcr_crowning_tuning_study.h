@@ -2,7 +2,7 @@
 // roller crowning per cam that minimises the largest contact pressure over a revolution at the
 // design torque (worst over a misalignment range), with the pressure off the contact's ends at an
 // overload torque; against uncrowned rollers, each checked with the half_space model.
-// The problem is objectives/lcr_crowning_tuning.h; the contact models model/lcr/contact3d*.
+// The problem is sizing/lcr_crowning_tuning.h; the contact models model/lcr/contact3d*.
 #pragma once
 
 #include <array>
@@ -14,7 +14,7 @@
 
 #include "model/common/sliced_bearing_life.h"
 #include "model/lcr/life.h"
-#include "objectives/lcr_crowning_tuning.h"
+#include "sizing/lcr_crowning_tuning.h"
 #include "objectives/verification.h"
 #include "studies/archive.h"
 #include "studies/input.h"
@@ -123,7 +123,7 @@ struct LifeSpec {
 
 struct Study {
   std::string name;
-  objectives::LcrCrowningTuningSpec spec;
+  sizing::LcrCrowningTuningSpec spec;
   bool half_space_check = true;
   int grid_nx = 48, grid_ny = 256;
   std::optional<LifeSpec> life;
@@ -137,7 +137,7 @@ struct LifeResult {
 };
 
 struct SideCheck {
-  objectives::LcrCrowningCheck slices, half_space;
+  sizing::LcrCrowningCheck slices, half_space;
   std::vector<double> half_space_dy_mm;  // per misalignment (design torque)
 };
 
@@ -292,7 +292,7 @@ struct Result {
   }
 
   // Not in result.json: the model's numbers.
-  std::array<objectives::LcrCrowningSideResult, 2> tuned;
+  std::array<sizing::LcrCrowningSideResult, 2> tuned;
   std::array<SideCheck, 2> tuned_check, uncrowned_check;  // half_space part empty when not asked
   /// The tuned crowning checked by the accurate model (objectives/verification.h): not run when
   /// the half_space check is off.

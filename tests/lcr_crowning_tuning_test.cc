@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "objectives/lcr_crowning_tuning.h"
+#include "sizing/lcr_crowning_tuning.h"
 #include "tests/reference_designs.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 namespace lcr_crowning_tuning_test {
 
 TEST(LcrCrowningTuning, LcrIIAt80NmUncrownedVersusTuned) {
@@ -64,4 +64,4 @@ TEST(LcrCrowningTuning, LcrIIAt80NmUncrownedVersusTuned) {
 }
 
 }  // namespace lcr_crowning_tuning_test
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

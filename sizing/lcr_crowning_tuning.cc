@@ -1,4 +1,4 @@
-#include "objectives/lcr_crowning_tuning.h"
+#include "sizing/lcr_crowning_tuning.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "model/common/roots.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 
 namespace {
 
@@ -100,4 +100,4 @@ std::array<LcrCrowningSideResult, 2> TuneLcrCrowning(const LcrCrowningTuningSpec
   return out;
 }
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing

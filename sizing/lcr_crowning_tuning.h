@@ -17,7 +17,7 @@
 
 #include "model/lcr/contact3d_cycle.h"
 
-namespace camopt::objectives {
+namespace camopt::sizing {
 
 struct LcrCrowningTuningSpec {
   lcr::Reducer<double> reducer;
@@ -60,4 +60,4 @@ LcrCrowningCheck CheckLcrCrowning(const LcrCrowningTuningSpec& spec, lcr::Side s
                                   std::vector<lcr::Contact3DCycleSide>* details = nullptr, int grid_nx = 48,
                                   int grid_ny = 256);
 
-}  // namespace camopt::objectives
+}  // namespace camopt::sizing
