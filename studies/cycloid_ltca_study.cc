@@ -1926,7 +1926,7 @@ const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_ltca", EstimateWo
 
 namespace {
 // report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
+CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines(JoinHeadlines({{
     {"largest contact stress", "/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa", NAN, true,
      "/estimated_error/max_contact_stress_MPa"},
     {"at crank angle", "/max_contact_stress_crank_angle_deg", "deg"},
@@ -1950,21 +1950,7 @@ CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines({
     {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
     {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
     {"ring pin life L10h", "/life/pins_L10h", "h"},
-    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m", "", NAN, true,
-     "/ratings/estimated_error/rated_torque_Nm"},
-    {"peak torque (contact limits)", "/peak_torque_Nm", "N m", "", NAN, true, "/ratings/estimated_error/peak_torque_Nm"},
-    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m", "", NAN, true,
-     "/ratings/estimated_error/momentary_torque_Nm"},
-    {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
-    {"output bearing life L10h", "/output_bearing/L10h", "h"},
-    {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
-    {"first torsional natural frequency", "/torsional_dynamics/natural_frequencies_Hz/0", "Hz"},
-    {"mesh stiffness ripple", "/torsional_dynamics/mesh_stiffness_ripple_percent", "%"},
-    {"dynamic overload factor (sweep peak)", "/torsional_dynamics/sweep_peak/overload_factor", "",
-     "study:/torsional_dynamics/max_dynamic_factor", NAN, true, "/torsional_dynamics/sweep_peak/overload_sampling_error"},
-    {"at input speed", "/torsional_dynamics/sweep_peak/input_speed_rpm", "rpm"},
-    {"converged", "/converged", ""},
-})));
+}, RatingsHeadlines(), TorsionalDynamicsHeadlines(), {{"converged", "/converged", ""}}}))));
 
 // datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
 DatasheetSpec CycloidDatasheet() {
@@ -1972,17 +1958,7 @@ DatasheetSpec CycloidDatasheet() {
   DatasheetSpec d{"/masses",
      {{"Reducer", {{"reduction ratio", "/gear_ratio_nominal", ""}}},
       ratings[0],
-      {"Torsional stiffness and lost motion (input held)",
-       {{"T1", "/stiffness_segments/T1_Nm", "N·m"},
-        {"T2", "/stiffness_segments/T2_Nm", "N·m"},
-        {"K1 (0–T1)", "/stiffness_segments/K1_Nm_per_arcmin", "N·m/arcmin"},
-        {"K2 (T1–T2)", "/stiffness_segments/K2_Nm_per_arcmin", "N·m/arcmin"},
-        {"K3 (T2–rated)", "/stiffness_segments/K3_Nm_per_arcmin", "N·m/arcmin"},
-        {"torsional stiffness (50–100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N·m/arcmin"},
-        {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
-        {"lost motion at ± stiffness.lost_motion_percent", "/stiffness/lost_motion_at_percent_arcmin", "arcmin"},
-        {"backlash", "/backlash_arcmin", "arcmin"},
-        {"hysteresis loss", "/stiffness/hysteresis_width_arcmin", "arcmin"}}},
+      StiffnessDatasheetSection(),
       {"Accuracy",
        {{"loaded transmission error, peak to peak", "/lte_peak_to_peak_arcsec", "arcsec"},
         {"angular transmission accuracy from the tolerances (linear worst case)",

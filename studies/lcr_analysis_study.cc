@@ -1839,7 +1839,7 @@ const bool kEstimateRegistered = RegisterWorkEstimate("lcr_analysis", EstimateWo
 
 namespace {
 // report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
+CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines(JoinHeadlines({{
     {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},
     {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
     {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
@@ -1857,20 +1857,7 @@ CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines({
     {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
     {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
     {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
-    {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m", "", NAN, true,
-     "/ratings/estimated_error/rated_torque_Nm"},
-    {"peak torque (contact limits)", "/peak_torque_Nm", "N m", "", NAN, true, "/ratings/estimated_error/peak_torque_Nm"},
-    {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m", "", NAN, true,
-     "/ratings/estimated_error/momentary_torque_Nm"},
-    {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
-    {"output bearing life L10h", "/output_bearing/L10h", "h"},
-    {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
-    {"first torsional natural frequency", "/torsional_dynamics/natural_frequencies_Hz/0", "Hz"},
-    {"mesh stiffness ripple", "/torsional_dynamics/mesh_stiffness_ripple_percent", "%"},
-    {"dynamic overload factor (sweep peak)", "/torsional_dynamics/sweep_peak/overload_factor", "",
-     "study:/torsional_dynamics/max_dynamic_factor", NAN, true, "/torsional_dynamics/sweep_peak/overload_sampling_error"},
-    {"at input speed", "/torsional_dynamics/sweep_peak/input_speed_rpm", "rpm"},
-})));
+}, RatingsHeadlines(), TorsionalDynamicsHeadlines()}))));
 
 // datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
 DatasheetSpec LcrDatasheet() {
@@ -1878,17 +1865,7 @@ DatasheetSpec LcrDatasheet() {
   return {"/masses",
           {{"Reducer", {{"speed reduction ratio r_i", "/speed_ratio", ""}}},
            ratings[0],
-           {"Torsional stiffness and lost motion (input held)",
-            {{"T1", "/stiffness_segments/T1_Nm", "N·m"},
-             {"T2", "/stiffness_segments/T2_Nm", "N·m"},
-             {"K1 (0–T1)", "/stiffness_segments/K1_Nm_per_arcmin", "N·m/arcmin"},
-             {"K2 (T1–T2)", "/stiffness_segments/K2_Nm_per_arcmin", "N·m/arcmin"},
-             {"K3 (T2–rated)", "/stiffness_segments/K3_Nm_per_arcmin", "N·m/arcmin"},
-             {"torsional stiffness (50–100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N·m/arcmin"},
-             {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
-             {"lost motion at ± stiffness.lost_motion_percent", "/stiffness/lost_motion_at_percent_arcmin", "arcmin"},
-             {"backlash", "/backlash_arcmin", "arcmin"},
-             {"hysteresis loss", "/stiffness/hysteresis_width_arcmin", "arcmin"}}},
+           StiffnessDatasheetSection(),
            {"Efficiency",
             {{"mean efficiency (eq. 33)", "/efficiency/mean", ""},
              {"lubricated efficiency", "/lubrication/efficiency", ""}}},

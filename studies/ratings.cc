@@ -226,6 +226,33 @@ void RatingsKeys::Set(const RatingsInput& in, const std::optional<RatingsResult>
   ratings = j.at("ratings");
 }
 
+DatasheetSection StiffnessDatasheetSection() {
+  return {"Torsional stiffness and lost motion (input held)",
+          {{"T1", "/stiffness_segments/T1_Nm", "N·m"},
+           {"T2", "/stiffness_segments/T2_Nm", "N·m"},
+           {"K1 (0–T1)", "/stiffness_segments/K1_Nm_per_arcmin", "N·m/arcmin"},
+           {"K2 (T1–T2)", "/stiffness_segments/K2_Nm_per_arcmin", "N·m/arcmin"},
+           {"K3 (T2–rated)", "/stiffness_segments/K3_Nm_per_arcmin", "N·m/arcmin"},
+           {"torsional stiffness (50–100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N·m/arcmin"},
+           {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+           {"lost motion at ± stiffness.lost_motion_percent", "/stiffness/lost_motion_at_percent_arcmin", "arcmin"},
+           {"backlash", "/backlash_arcmin", "arcmin"},
+           {"hysteresis loss", "/stiffness/hysteresis_width_arcmin", "arcmin"}}};
+}
+
+std::vector<Headline> RatingsHeadlines() {
+  return {
+      {"rated torque (rated life at rated speed)", "/rated_torque_Nm", "N m", "", NAN, true,
+       "/ratings/estimated_error/rated_torque_Nm"},
+      {"peak torque (contact limits)", "/peak_torque_Nm", "N m", "", NAN, true, "/ratings/estimated_error/peak_torque_Nm"},
+      {"momentary torque (static ratings)", "/momentary_torque_Nm", "N m", "", NAN, true,
+       "/ratings/estimated_error/momentary_torque_Nm"},
+      {"allowable output speed (thermal, rated torque)", "/ratings/allowable_output_speed_rpm", "rpm"},
+      {"output bearing life L10h", "/output_bearing/L10h", "h"},
+      {"output bearing static safety f_s", "/output_bearing/static_safety", ""},
+  };
+}
+
 std::vector<DatasheetSection> RatingsDatasheetSections() {
   return {{"Ratings",
            {{"rated torque", "/rated_torque_Nm", "N·m", 1.0, "/ratings/error"},

@@ -14,6 +14,7 @@
 #include "model/common/thermal.h"
 #include "studies/archive.h"
 #include "studies/datasheet.h"
+#include "studies/report.h"
 #include "studies/ratings_input.h"
 
 namespace camopt::studies {
@@ -122,6 +123,15 @@ nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, doub
 
 /// The datasheet's "Ratings" and "Output bearing" sections (studies/datasheet.h).
 std::vector<DatasheetSection> RatingsDatasheetSections();
+
+/// The datasheet's "Torsional stiffness and lost motion (input held)" section: the stiffness block
+/// of the rating kinds (stiffness_segments, torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin,
+/// backlash_arcmin, stiffness).
+DatasheetSection StiffnessDatasheetSection();
+
+/// report.html's headlines of RatingsKeys and the output bearing: the rated, peak and momentary
+/// torques with their error estimates, the allowable speed, the output bearing's life and safety.
+std::vector<Headline> RatingsHeadlines();
 
 
 }  // namespace camopt::studies

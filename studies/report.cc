@@ -464,6 +464,12 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
 }
 
 const char* ReportStyle() { return kStyle; }
+std::vector<Headline> JoinHeadlines(std::initializer_list<std::vector<Headline>> parts) {
+  std::vector<Headline> rows;
+  for (const auto& part : parts) rows.insert(rows.end(), part.begin(), part.end());
+  return rows;
+}
+
 std::string HtmlEscape(const std::string& text) { return Html(text); }
 std::string ReportNumber(double value) { return Number(value); }
 

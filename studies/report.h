@@ -43,6 +43,10 @@ struct Headline {
   double resolution = 0;
 };
 
+/// The rows of several lists, in order: a kind's own rows and the shared blocks' (RatingsHeadlines,
+/// TorsionalDynamicsHeadlines).
+std::vector<Headline> JoinHeadlines(std::initializer_list<std::vector<Headline>> parts);
+
 /// Registers the headlines of a kind's report; returns true so that it can initialise a static.
 /// A kind without registered headlines gets every top-level number of result.json instead.
 bool RegisterReport(const std::string& kind, std::vector<Headline> headlines);

@@ -255,4 +255,14 @@ nlohmann::ordered_json TorsionalDynamicsResultSchema() {
   return {{"type", "object"}, {"properties", p}};
 }
 
+std::vector<Headline> TorsionalDynamicsHeadlines() {
+  return {
+      {"first torsional natural frequency", "/torsional_dynamics/natural_frequencies_Hz/0", "Hz"},
+      {"mesh stiffness ripple", "/torsional_dynamics/mesh_stiffness_ripple_percent", "%"},
+      {"dynamic overload factor (sweep peak)", "/torsional_dynamics/sweep_peak/overload_factor", "",
+       "study:/torsional_dynamics/max_dynamic_factor", NAN, true, "/torsional_dynamics/sweep_peak/overload_sampling_error"},
+      {"at input speed", "/torsional_dynamics/sweep_peak/input_speed_rpm", "rpm"},
+  };
+}
+
 }  // namespace camopt::studies

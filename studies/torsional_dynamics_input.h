@@ -16,6 +16,7 @@
 #include "model/common/torsional_dynamics.h"
 #include "studies/archive.h"
 #include "studies/input.h"
+#include "studies/report.h"
 #include "studies/study.h"
 
 namespace camopt::studies {
@@ -111,5 +112,10 @@ void WriteTorsionalDynamics(const TorsionalDynamicsResult& r, Outputs& out);
 /// The JSON Schema of the block TorsionalDynamicsJson writes (result.json's torsional_dynamics of
 /// cycloid_ltca, lcr_analysis and cycloid_min_size): the keys camopt reads, with their types.
 nlohmann::ordered_json TorsionalDynamicsResultSchema();
+
+/// report.html's headlines of the torsional_dynamics block: the first natural frequency, the mesh
+/// stiffness ripple, the sweep's peak overload factor (against torsional_dynamics.max_dynamic_factor,
+/// with its sampling error) and the input speed it is at.
+std::vector<Headline> TorsionalDynamicsHeadlines();
 
 }  // namespace camopt::studies
