@@ -727,8 +727,8 @@ nlohmann::ordered_json Result::Json::RobustSchema() {
 }
 
 nlohmann::ordered_json Input::SchemaRules() {
-  // Robust sizing needs its tolerances (and the tolerances are only for it), the Monte-Carlo the
-  // tolerances; a catalogue gives the rollers' lengths and diameters (else fixed.roller_length_mm
+  // Robust sizing needs its tolerances (and the tolerances are only for it) and the aggregate
+  // constraints (it picks its own forms), the Monte-Carlo the tolerances; a catalogue gives the rollers' lengths and diameters (else fixed.roller_length_mm
   // and variables.roller_diameter_mm), and with a life their ratings (else "rollers"); a life limit
   // needs a speed, given one way; a life is sized on the line model without tolerances.
   return nlohmann::ordered_json::parse(R"({
@@ -736,6 +736,8 @@ nlohmann::ordered_json Input::SchemaRules() {
                           "surfaces": ["lubricant"], "bearing_friction": ["lubricant"],
                           "lubricant": ["material", "load"]},
     "allOf": [
+      {"if": {"required": ["robust"]},
+       "then": {"properties": {"optimizer": {"properties": {"constraints": {"const": "aggregate"}}}}}},
       {"if": {"required": ["lubricant"]},
        "then": {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}},
       {"if": {"required": ["objective"], "properties": {"objective": {"const": "efficiency"}}},

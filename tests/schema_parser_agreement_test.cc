@@ -560,7 +560,6 @@ const std::vector<CrossField> kOpen = {
     {"lcr_min_size", "/contact", "", "contact.model with crowning / misalignment / robust"},
     {"lcr_min_size", "/fixed/crowning", "", "fixed.crowning and the crowning variables"},
     {"lcr_min_size", "/variables/", "", "crowning and length variables against fixed.crowning, contact, catalogue"},
-    {"lcr_min_size", "/optimizer/constraints", "with \"robust\"", "constraints with robust"},
     {"transmission_rigidity", "/chain/", "", "the fields of each element kind (schema: one list for all)"},
     {"transmission_rigidity", "/material", "missing required field",
      "the chain material's fields are required by the elements that use them"},
