@@ -726,6 +726,25 @@ nlohmann::ordered_json Input::SchemaRules() {
     {"if": {"required": ["output_bearing"]}, "then": {"required": ["external_loads"]}}
   ])"))
     rules["allOf"].push_back(rule);
+  // A crowned roller or a misalignment needs a contact model that sees it (the line model, also
+  // the one of an absent "contact" or "model", ignores both).
+  for (const auto& rule : nlohmann::ordered_json::parse(R"([
+    {"if": {"required": ["reducer"], "properties": {"reducer": {"required": ["input"], "properties": {"input": {
+              "required": ["crowning"], "properties": {"crowning": {
+                "required": ["type"], "not": {"properties": {"type": {"const": "none"}}}}}}}}}},
+     "then": {"required": ["contact"], "properties": {"contact": {
+                "required": ["model"], "properties": {"model": {"enum": ["slices", "half_space"]}}}}}},
+    {"if": {"required": ["reducer"], "properties": {"reducer": {"required": ["output"], "properties": {"output": {
+              "required": ["crowning"], "properties": {"crowning": {
+                "required": ["type"], "not": {"properties": {"type": {"const": "none"}}}}}}}}}},
+     "then": {"required": ["contact"], "properties": {"contact": {
+                "required": ["model"], "properties": {"model": {"enum": ["slices", "half_space"]}}}}}},
+    {"if": {"required": ["contact"], "properties": {"contact": {
+              "required": ["misalignment_mrad"], "properties": {"misalignment_mrad": {"not": {"const": 0}}}}}},
+     "then": {"properties": {"contact": {
+                "required": ["model"], "properties": {"model": {"enum": ["slices", "half_space"]}}}}}}
+  ])"))
+    rules["allOf"].push_back(rule);
   // The modified life a_ISO (docs/life.md): a bearing's C_u and D_pw with lubricant.contamination_factor.
   for (const auto& rule : ModifiedLifeSchemaRules(
            {{"reducer", "input"}, {"reducer", "output"}, {"reducer", "eccentric_bearing"}}))

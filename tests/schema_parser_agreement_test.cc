@@ -556,7 +556,6 @@ const std::vector<CrossField> kOpen = {
     {"disc_cam", "/motion/0/boundary/", "unknown field", "polynomial boundary keys in mm or deg by follower type"},
     {"disc_cam", "/motion/0/control_points_", "unknown field", "B-spline control points in mm or deg by follower type"},
     {"globoidal_cam", "/motion/0/", "rise", "rise_deg by law (dwell: none)"},
-    {"lcr_analysis", "/contact", "", "contact.model with crowning / misalignment"},
     {"lcr_min_size", "/contact", "", "contact.model with crowning / misalignment / robust"},
     {"lcr_min_size", "/fixed/crowning", "", "fixed.crowning and the crowning variables"},
     {"lcr_min_size", "/variables/", "", "crowning and length variables against fixed.crowning, contact, catalogue"},
