@@ -738,6 +738,39 @@ nlohmann::ordered_json Input::SchemaRules() {
     "allOf": [
       {"if": {"required": ["robust"]},
        "then": {"properties": {"optimizer": {"properties": {"constraints": {"const": "aggregate"}}}}}},
+      {"if": {"anyOf": [
+         {"required": ["fixed"], "properties": {"fixed": {"required": ["crowning"]}}},
+         {"required": ["variables"], "properties": {"variables": {"anyOf": [
+           {"required": ["crowning_coefficient_mm"]}, {"required": ["crowning_radius_mm"]},
+           {"required": ["crowning_flat_length_mm"]}, {"required": ["roller_length_mm"]},
+           {"required": ["cam_thickness_mm"]}]}}},
+         {"required": ["load"], "properties": {"load": {"required": ["overload_torque_Nm"]}}}]},
+       "then": {"required": ["contact"], "properties": {"contact": {
+         "required": ["model"], "properties": {"model": {"enum": ["slices", "half_space"]}}}}}},
+      {"if": {"required": ["contact"], "properties": {"contact": {
+         "required": ["misalignment_mrad"], "properties": {"misalignment_mrad": {"not": {"const": 0}}}}}},
+       "then": {"properties": {"contact": {
+         "required": ["model"], "properties": {"model": {"enum": ["slices", "half_space"]}}}}}},
+      {"if": {"anyOf": [{"required": ["robust"]},
+                        {"required": ["objective"], "properties": {"objective": {"const": "efficiency"}}}]},
+       "then": {"not": {"required": ["contact"], "properties": {"contact": {
+         "required": ["model"], "properties": {"model": {"enum": ["slices", "half_space"]}}}}}}},
+      {"if": {"required": ["objective"], "properties": {"objective": {"const": "efficiency"}}},
+       "then": {"not": {"required": ["robust"]}}},
+      {"if": {"required": ["variables"], "properties": {"variables": {"required": ["crowning_coefficient_mm"]}}},
+       "then": {"required": ["fixed"], "properties": {"fixed": {"required": ["crowning"], "properties": {"crowning": {
+         "required": ["type"], "properties": {"type": {"const": "logarithmic"}}}}}}}},
+      {"if": {"required": ["variables"], "properties": {"variables": {"required": ["crowning_radius_mm"]}}},
+       "then": {"required": ["fixed"], "properties": {"fixed": {"required": ["crowning"], "properties": {"crowning": {
+         "required": ["type"], "properties": {"type": {"enum": ["circular", "partial"]}}}}}}}},
+      {"if": {"required": ["variables"], "properties": {"variables": {"required": ["crowning_flat_length_mm"]}}},
+       "then": {"required": ["fixed"], "properties": {"fixed": {"required": ["crowning"], "properties": {"crowning": {
+         "required": ["type"], "properties": {"type": {"const": "partial"}}}}}}}},
+      {"if": {"required": ["fixed"],
+              "properties": {"fixed": {"required": ["crowning"], "properties": {"crowning": {
+                "required": ["type"], "properties": {"type": {"const": "logarithmic"}}}}}},
+              "not": {"required": ["variables"], "properties": {"variables": {"required": ["crowning_coefficient_mm"]}}}},
+       "then": {"properties": {"fixed": {"properties": {"crowning": {"required": ["coefficient_mm"]}}}}}},
       {"if": {"required": ["lubricant"]},
        "then": {"required": ["load"], "properties": {"load": {"required": ["input_speed_rpm"]}}}},
       {"if": {"required": ["objective"], "properties": {"objective": {"const": "efficiency"}}},
