@@ -68,6 +68,101 @@ ReducerElement ParseReducerElement(const Node& e, const Node& root) {
   return x;
 }
 
+}  // namespace
+
+nlohmann::ordered_json Input::Element::SchemaRules() {
+  using ojson = nlohmann::ordered_json;
+  // The fields every element may have; then per kind (as ParseElement checks them) the fields it
+  // may have and those it needs.
+  const std::vector<std::string> common = {"element", "name", "comment", "backlash_arcmin", "shear_modulus_GPa",
+                                           "youngs_modulus_GPa"};
+  struct Kind {
+    const char* name;
+    std::vector<std::string> own, required;
+  };
+  const std::vector<Kind> kinds = {
+      {"shaft_torsion", {"outer_diameter_mm", "inner_diameter_mm", "length_mm"}, {"outer_diameter_mm", "length_mm"}},
+      {"shaft_bending",
+       {"outer_diameter_mm", "inner_diameter_mm", "pitch_radius_mm", "support", "to_bearing_1_mm", "to_bearing_2_mm",
+        "bearing_span_mm", "overhang_mm"},
+       {"outer_diameter_mm", "pitch_radius_mm"}},
+      {"linear_stiffness", {"stiffness_N_per_mm", "radius_mm"}, {"stiffness_N_per_mm", "radius_mm"}},
+      {"chain_span", {"stiffness_N_per_mm", "reference_length_mm", "span_length_mm", "radius_mm"},
+       {"stiffness_N_per_mm", "span_length_mm", "radius_mm"}},
+      {"belt_span", {"stiffness_N_per_mm", "reference_length_mm", "span_length_mm", "radius_mm"},
+       {"stiffness_N_per_mm", "span_length_mm", "radius_mm"}},
+      {"pull_rod", {"diameter_mm", "inner_diameter_mm", "length_mm", "lever_radius_mm"},
+       {"diameter_mm", "length_mm", "lever_radius_mm"}},
+      {"lever", {"length_mm", "tip_stiffness_N_per_mm", "width_mm", "height_mm"}, {"length_mm"}},
+      {"coupling", {"rigidity_Nm_per_rad", "rigid"}, {}},
+      {"gear_stage", {"ratio", "rigidity_Nm_per_rad", "mesh_stiffness_N_per_mm", "driven_pitch_radius_mm"}, {"ratio"}},
+      {"lobe_cam_reducer",
+       {"reducer", "material", "load", "clearance_um", "needle_bearing_radial_stiffness_N_per_mm", "angle_steps",
+        "direction"},
+       {"reducer", "load"}},
+  };
+  std::set<std::string> every;
+  for (const Kind& k : kinds) every.insert(k.own.begin(), k.own.end());
+  ojson all = ojson::array();
+  for (const Kind& k : kinds) {
+    ojson then = ojson::object();
+    if (!k.required.empty()) then["required"] = k.required;
+    for (const std::string& f : every)
+      if (std::find(k.own.begin(), k.own.end(), f) == k.own.end() &&
+          std::find(common.begin(), common.end(), f) == common.end())
+        then["properties"][f] = false;
+    all.push_back({{"if", {{"required", {"element"}}, {"properties", {{"element", {{"const", k.name}}}}}}},
+                   {"then", then}});
+  }
+  // The variants within a kind.
+  for (const auto& rule : ojson::parse(R"([
+    {"if": {"required": ["element", "support"],
+            "properties": {"element": {"const": "shaft_bending"}, "support": {"const": "overhung"}}},
+     "then": {"required": ["bearing_span_mm", "overhang_mm"],
+              "properties": {"to_bearing_1_mm": false, "to_bearing_2_mm": false}}},
+    {"if": {"required": ["element"], "properties": {"element": {"const": "shaft_bending"}},
+            "not": {"required": ["support"], "properties": {"support": {"const": "overhung"}}}},
+     "then": {"required": ["to_bearing_1_mm", "to_bearing_2_mm"],
+              "properties": {"bearing_span_mm": false, "overhang_mm": false}}},
+    {"if": {"required": ["element"], "properties": {"element": {"const": "lever"}},
+            "not": {"required": ["tip_stiffness_N_per_mm"]}},
+     "then": {"required": ["width_mm", "height_mm"]}},
+    {"if": {"required": ["element"], "properties": {"element": {"const": "coupling"}}},
+     "then": {"anyOf": [{"required": ["rigidity_Nm_per_rad"]},
+                        {"required": ["rigid"], "properties": {"rigid": {"const": true}}}]}},
+    {"if": {"required": ["element", "mesh_stiffness_N_per_mm"], "properties": {"element": {"const": "gear_stage"}},
+            "not": {"required": ["rigidity_Nm_per_rad"]}},
+     "then": {"required": ["driven_pitch_radius_mm"]}}
+  ])"))
+    all.push_back(rule);
+  return {{"allOf", all}};
+}
+
+nlohmann::ordered_json Input::SchemaRules() {
+  // An element takes its modulus from the chain's material unless it gives its own: a shaft in
+  // torsion G; a shaft in bending, a pull rod and a lever by its section E; a lobe cam reducer
+  // without its own "material" the chain's E and ν.
+  return nlohmann::ordered_json::parse(R"({"allOf": [
+    {"if": {"required": ["chain"], "properties": {"chain": {"contains": {
+              "required": ["element"], "properties": {"element": {"const": "shaft_torsion"}},
+              "not": {"required": ["shear_modulus_GPa"]}}}}},
+     "then": {"required": ["material"], "properties": {"material": {"required": ["shear_modulus_GPa"]}}}},
+    {"if": {"required": ["chain"], "properties": {"chain": {"contains": {
+              "required": ["element"],
+              "allOf": [{"not": {"required": ["youngs_modulus_GPa"]}},
+                        {"anyOf": [{"properties": {"element": {"enum": ["shaft_bending", "pull_rod"]}}},
+                                   {"properties": {"element": {"const": "lever"}},
+                                    "not": {"required": ["tip_stiffness_N_per_mm"]}}]}]}}}},
+     "then": {"required": ["material"], "properties": {"material": {"required": ["youngs_modulus_GPa"]}}}},
+    {"if": {"required": ["chain"], "properties": {"chain": {"contains": {
+              "required": ["element"], "properties": {"element": {"const": "lobe_cam_reducer"}},
+              "not": {"required": ["material"]}}}}},
+     "then": {"required": ["material"], "properties": {"material": {"required": ["youngs_modulus_GPa", "poisson_ratio"]}}}}
+  ]})");
+}
+
+namespace {
+
 Element ParseElement(const Node& e, const Node& root, size_t index) {
   Element parsed;
   ElementSpec& s = parsed.spec;

@@ -28,9 +28,9 @@ namespace camopt::studies::transmission_rigidity {
 /// The study file as declared: each field once, in the file's units, with its bounds and
 /// description (studies/archive.h); `camopt schema transmission_rigidity` is emitted from it.
 /// A chain element is one object holding the fields of every element kind; which of them an
-/// element of a given kind needs or may have is checked by Parse (docs/studies.md lists them per
-/// kind), so the element's fields have no default here: a field's default depends on the kind
-/// and is in its description.
+/// element of a given kind needs or may have is declared by Element::SchemaRules (and checked by
+/// Parse; docs/studies.md lists them per kind), so the element's fields have no default here: a
+/// field's default depends on the kind and is in its description.
 struct Input {
   /// The chain's material: each element takes what it needs (a shaft G, a rod E, a reducer E, ν).
   struct Material {
@@ -141,6 +141,8 @@ struct Input {
                Field().OneOf({"forward", "reverse"})
                    .Desc("lobe_cam_reducer: the load along the output's motion or against it (default forward)"));
     }
+    /// The fields each element kind requires and allows (a tagged union on "element").
+    static nlohmann::ordered_json SchemaRules();
   };
 
   /// The verdict's limits at end b (none has a default: each is a requirement of the machine).
@@ -178,6 +180,9 @@ struct Input {
              Field().Positive().Unit("mm").Desc("a radius at end b to report the deflection at as a length"));
     a->Visit("limits", &limits, Field().Desc("requirements at end b for the verdict (each optional)"));
   }
+  /// The chain material's moduli and the reducer's material where an element needs them and has
+  /// no own.
+  static nlohmann::ordered_json SchemaRules();
 };
 
 /// A lobe_cam_reducer element's own inputs (model units).

@@ -502,6 +502,10 @@ const std::vector<CrossField> kCrossField = {
     {"lcr_friction_fit", "/reducer/", "more rollers than lobes", "rollers > lobes"},
     {"lcr_friction_fit", "/parameters/", "with lower < upper", "bounds [lower, upper] need lower < upper"},
     {"lcr_friction_fit", "/reducer/", "no common divisor", "lobes and rollers without a common divisor"},
+    {"transmission_rigidity", "/chain/0/reducer/", "rollers − lobes", "a lobe_cam_reducer element: rollers = lobes + 1"},
+    {"transmission_rigidity", "/chain/0/reducer/", "more rollers than lobes", "a lobe_cam_reducer element: rollers > lobes"},
+    {"transmission_rigidity", "/chain/0/reducer/", "no common divisor",
+     "a lobe_cam_reducer element: lobes and rollers without a common divisor"},
     {"lcr_min_size", "/load/overload_torque_Nm", ">= the target's output_torque_Nm", "overload >= design torque"},
     {"lcr_crowning_tuning", "/load/overload_torque_Nm", "an overload torque >= output_torque_Nm", "overload >= design torque"},
     {"lcr_analysis", "/material/youngs_modulus_GPa", "a torque the output rollers can carry",
@@ -556,9 +560,6 @@ const std::vector<CrossField> kOpen = {
     {"disc_cam", "/motion/0/boundary/", "unknown field", "polynomial boundary keys in mm or deg by follower type"},
     {"disc_cam", "/motion/0/control_points_", "unknown field", "B-spline control points in mm or deg by follower type"},
     {"globoidal_cam", "/motion/0/", "rise", "rise_deg by law (dwell: none)"},
-    {"transmission_rigidity", "/chain/", "", "the fields of each element kind (schema: one list for all)"},
-    {"transmission_rigidity", "/material", "missing required field",
-     "the chain material's fields are required by the elements that use them"},
 };
 
 // The schema of the value at `path` of `study` (properties of every branch followed).
