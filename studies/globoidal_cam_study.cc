@@ -56,10 +56,20 @@ std::string SpeedTag(double rpm) { return Format(rpm) + "rpm"; }
 }  // namespace
 
 nlohmann::ordered_json Input::MotionSchema() {
-  nlohmann::ordered_json laws = nlohmann::ordered_json::array();
+  using oj = nlohmann::ordered_json;
+  oj laws = oj::array(), moving = oj::array();
+  const std::string dwell = motion::LawName(motion::MotionLaw::kDwell);
   for (const std::string& law : motion::LawNames())
-    if (law != motion::LawName(motion::MotionLaw::kPolynomial) && law != motion::LawName(motion::MotionLaw::kBSpline))
+    if (law != motion::LawName(motion::MotionLaw::kPolynomial) && law != motion::LawName(motion::MotionLaw::kBSpline)) {
       laws.push_back(law);
+      if (law != dwell) moving.push_back(law);
+    }
+  // A moving law swings the turret (rise_deg given, not 0); a dwell does not (0 when given).
+  const oj rules = oj::array(
+      {{{"if", {{"properties", {{"law", {{"enum", moving}}}}}, {"required", {"law"}}}},
+        {"then", {{"required", {"rise_deg"}}, {"properties", {{"rise_deg", {{"not", {{"const", 0}}}}}}}}}},
+       {{"if", {{"properties", {{"law", {{"const", dwell}}}}}, {"required", {"law"}}}},
+        {"then", {{"properties", {{"rise_deg", {{"const", 0}}}}}}}}});
   return {{"type", "array"},
           {"minItems", 1},
           {"items",
@@ -70,7 +80,8 @@ nlohmann::ordered_json Input::MotionSchema() {
               {"cam_angle_deg",
                {{"description", "the cam angle the segment spans [deg]"}, {"type", "number"}, {"exclusiveMinimum", 0}}}}},
             {"required", {"law", "cam_angle_deg"}},
-            {"additionalProperties", false}}}};
+            {"additionalProperties", false},
+            {"allOf", rules}}}};
 }
 
 // The checks that span fields (the geometry, the motion against the swing, the contact arm, the

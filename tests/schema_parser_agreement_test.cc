@@ -559,7 +559,6 @@ const std::vector<CrossField> kOpen = {
     {"disc_cam_motion", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
     {"disc_cam", "/motion/0/boundary/", "unknown field", "polynomial boundary keys in mm or deg by follower type"},
     {"disc_cam", "/motion/0/control_points_", "unknown field", "B-spline control points in mm or deg by follower type"},
-    {"globoidal_cam", "/motion/0/", "rise", "rise_deg by law (dwell: none)"},
 };
 
 // The schema of the value at `path` of `study` (properties of every branch followed).
