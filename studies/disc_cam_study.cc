@@ -49,23 +49,6 @@ double AtAngleOrNaN(const std::optional<AtAngle>& x, bool angle) {
   return angle ? x->cam_angle_deg : x->value;
 }
 
-// How the motion's rise is written for a follower (ParseMotionProgram): a length for a
-// translating, an angle for an oscillating one; durations in degrees; polynomial segments.
-MotionInputSpec FollowerMotionSpec(bool oscillating) {
-  MotionInputSpec spec;
-  spec.subject = "follower";
-  spec.allow_polynomial = true;
-  if (oscillating) {
-    spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg";
-    spec.misplaced_key = "rise_mm";
-    spec.misplaced_hint = "a oscillating follower's rise is an angle: use rise_deg";
-  } else {
-    spec.rise_key = "rise_mm", spec.rise_scale = 1.0, spec.unit = "mm";
-    spec.misplaced_key = "rise_deg";
-    spec.misplaced_hint = "a translating follower's rise is a length: use rise_mm";
-  }
-  return spec;
-}
 
 // The model of an oscillating flat-faced follower (model/disc_cam/oscillating_flat_faced.h) of a study.
 dc::OscillatingFlatFaced OscillatingFlatFace(const Study& s) {
@@ -117,6 +100,22 @@ struct Grid {
 
 }  // namespace
 
+MotionInputSpec FollowerMotionSpec(bool oscillating) {
+  MotionInputSpec spec;
+  spec.subject = "follower";
+  spec.allow_polynomial = true;
+  if (oscillating) {
+    spec.rise_key = "rise_deg", spec.rise_scale = kDeg, spec.unit = "deg";
+    spec.misplaced_key = "rise_mm";
+    spec.misplaced_hint = "a oscillating follower's rise is an angle: use rise_deg";
+  } else {
+    spec.rise_key = "rise_mm", spec.rise_scale = 1.0, spec.unit = "mm";
+    spec.misplaced_key = "rise_deg";
+    spec.misplaced_hint = "a translating follower's rise is a length: use rise_mm";
+  }
+  return spec;
+}
+
 nlohmann::ordered_json Input::MotionSchema(bool /*sizing*/) {
   // disc_cam_min_size sizes translating and oscillating followers alike: the same schema.
   return studies::MotionSchema({FollowerMotionSpec(false), FollowerMotionSpec(true)},
@@ -160,7 +159,14 @@ nlohmann::ordered_json Input::SchemaRules() {
   const oj translating_loads = {
       {"if", follower_is({"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})},
       {"then", refuse("dynamics")}};
-  return {{"allOf", oj::array({no_roller, knife, arm, translating_loads})}};
+  // The motion's unit by the follower's type (a length for translating, an angle for oscillating).
+  const oj rise_translating =
+      FollowerRiseRule(FollowerMotionSpec(false), FollowerMotionSpec(true),
+                       {"translating_roller", "translating_knife_edge", "translating_flat_faced"});
+  const oj rise_oscillating =
+      FollowerRiseRule(FollowerMotionSpec(true), FollowerMotionSpec(false),
+                       {"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"});
+  return {{"allOf", oj::array({no_roller, knife, arm, translating_loads, rise_translating, rise_oscillating})}};
 }
 
 nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {

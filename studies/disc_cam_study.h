@@ -29,6 +29,7 @@
 #include "studies/archive.h"
 #include "studies/geometry_files.h"
 #include "studies/measured_profile.h"
+#include "studies/motion_input.h"
 #include "studies/material_input.h"
 #include "studies/input.h"
 #include "studies/study.h"
@@ -1039,6 +1040,10 @@ struct Result {
     json.Serialize(a);
   }
 };
+
+/// How the motion's rise is written for a follower (ParseMotionProgram): a length for a
+/// translating, an angle for an oscillating one; durations in degrees; polynomial segments.
+MotionInputSpec FollowerMotionSpec(bool oscillating);
 
 /// The cam as inspected: its exact profile as a function of the cam angle θ in the frame of
 /// profile.dxf, the frame and datum in words.

@@ -184,6 +184,29 @@ motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
   return program;
 }
 
+nlohmann::ordered_json FollowerRiseRule(const MotionInputSpec& spec, const MotionInputSpec& other,
+                                        const std::vector<std::string>& types) {
+  using oj = nlohmann::ordered_json;
+  oj moving = oj::array();
+  for (const std::string& law : motion::LawNames())
+    if (!Shaped(law) && law != motion::LawName(motion::MotionLaw::kDwell)) moving.push_back(law);
+  oj other_state = oj::object();
+  for (const std::string& k : BoundaryKeys(other.unit)) other_state[k] = false;
+  const oj item = {
+      {"allOf",
+       oj::array({{{"properties", {{other.rise_key, false},
+                                   {"control_points_" + other.unit, false},
+                                   {"boundary", {{"properties", {{"start", {{"properties", other_state}}},
+                                                                 {"end", {{"properties", other_state}}}}}}}}}},
+                  {{"if", {{"required", {"law"}}, {"properties", {{"law", {{"enum", moving}}}}}}},
+                   {"then", {{"required", {spec.rise_key}}, {"properties", {{spec.rise_key, {{"not", {{"const", 0}}}}}}}}}},
+                  {{"if", {{"required", {"law"}},
+                           {"properties", {{"law", {{"const", motion::LawName(motion::MotionLaw::kDwell)}}}}}}},
+                   {"then", {{"properties", {{spec.rise_key, {{"const", 0}}}}}}}}})}};
+  return {{"if", {{"required", {"follower"}}, {"properties", {{"follower", {{"required", {"type"}}, {"properties", {{"type", {{"enum", types}}}}}}}}}}},
+          {"then", {{"properties", {{"motion", {{"items", item}}}}}}}};
+}
+
 nlohmann::ordered_json MotionSchema(const std::vector<MotionInputSpec>& specs,
                                     const std::vector<std::string>& rise_notes, bool rise_rules) {
   using oj = nlohmann::ordered_json;

@@ -37,6 +37,13 @@ struct MotionInputSpec {
 /// Throws StudyError naming the segment and field, and for a discontinuity the two values.
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion, const MotionInputSpec& spec);
 
+/// The root-level rules of a follower kind's "motion" (MotionSchema of both specs) by follower
+/// type, as ParseMotionProgram holds them: with a follower of `types` (the "follower" object's
+/// "type") each segment uses `spec`'s unit only (the other unit's rise, boundary keys and control
+/// points refused), a moving law has a non-zero rise and a dwell none (0 when given).
+nlohmann::ordered_json FollowerRiseRule(const MotionInputSpec& spec, const MotionInputSpec& other,
+                                        const std::vector<std::string>& types);
+
 /// The JSON Schema of a "motion" array as ParseMotionProgram reads it, for a kind whose follower
 /// may be any of `specs` (one per follower type; their rise keys side by side, the polynomial
 /// segments' boundary keys in either unit): the laws (polynomial when specs[0].allow_polynomial),

@@ -425,6 +425,8 @@ const std::vector<CrossField> kCrossField = {
     {"disc_cam", "/measured_profile", "expected a readable CSV file",
      "the measured profile's CSV file exists and is readable (a file, not a JSON value)"},
     {"disc_cam", "/motion/0/control_points_mm", "needs at least", "a B-spline's degree below its number of control points"},
+    {"disc_cam", "/motion/0/control_points_mm", "does not return",
+     "the program returns: the rises (a B-spline's last control point minus its first) sum to 0"},
     {"globoidal_cam", "/contact/exponent", "static contact penetration",
      "the turret torque against the contact law's static penetration (exponent, stiffness, roller radius)"},
     {"cycloid_crowning_tuning", "/drive/", "teeth + 1", "rollers = teeth + 1 (one-tooth difference)"},
@@ -550,16 +552,6 @@ const std::vector<CrossField> kCrossField = {
      "the holes' pitch 2 R_w sin(π/Z_w) against hole_radius_mm (the pin count's bound 1e9 of a whole number)"},
 };
 
-// Disagreements found by this test and not yet resolved: conditions JSON Schema could state
-// (if/then on another field) but the schema does not yet. Each is listed in docs/reliability.md
-// (item 13, "open"); the test fails when an entry is no longer met, so a fix removes it here.
-const std::vector<CrossField> kOpen = {
-    {"disc_cam", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
-    {"disc_cam_min_size", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
-    {"disc_cam_motion", "/motion/0/", "rise", "rise_mm / rise_deg by follower type and law (dwell: none)"},
-    {"disc_cam", "/motion/0/boundary/", "unknown field", "polynomial boundary keys in mm or deg by follower type"},
-    {"disc_cam", "/motion/0/control_points_", "unknown field", "B-spline control points in mm or deg by follower type"},
-};
 
 // The schema of the value at `path` of `study` (properties of every branch followed).
 json SchemaAt(const Validator& v, const json& schema, const json& study, const std::string& path) {
@@ -585,7 +577,7 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
       if (j.is_object() && j.contains("study")) by_kind[j["study"].get<std::string>()].push_back(e.path());
     }
   std::set<std::string> disagreements;
-  std::set<size_t> used, open_used;
+  std::set<size_t> used;
   size_t cases = 0;
   for (const auto& kind : studies::StudyKinds()) {
     SCOPED_TRACE(kind);
@@ -671,18 +663,15 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
             }
           return any;
         };
-        // A cross-field rule only ever makes the parser stricter; an open item may go either way.
+        // A cross-field rule only ever makes the parser stricter. Every rule JSON Schema can state
+        // (if/then on another field, a tagged union) is in the schema: nothing else is excused.
         if (schema_ok && !parser_ok && !bad_exception && listed(kCrossField, used)) continue;
-        if (listed(kOpen, open_used)) continue;
         disagreements.insert(kind + ": " + what + "  [schema " +
                              (schema_ok ? "accepts" : "refuses: " + schema_error) + "; parser " +
                              (parser_ok ? "accepts" : "refuses: " + parser_error) + "]");
       }
     }
   }
-  for (size_t i = 0; i < kOpen.size(); ++i)
-    EXPECT_TRUE(open_used.count(i)) << "kOpen entry resolved (remove it here and in docs/reliability.md): "
-                                    << kOpen[i].kind << " " << kOpen[i].path;
   for (size_t i = 0; i < kCrossField.size(); ++i)
     EXPECT_TRUE(used.count(i)) << "kCrossField entry no longer met (remove it): " << kCrossField[i].kind << " "
                                << kCrossField[i].path << " \"" << kCrossField[i].message << "\"";
