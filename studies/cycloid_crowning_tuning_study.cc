@@ -535,13 +535,14 @@ Result RunShorthand(const Study& s, const RunContext& ctx) {
   spec.required_edge_margin_um = s.required_edge_margin_um;
   spec.stress_scale_MPa = std::max(1.0, start.stress_MPa);
   // 3. COBYLA from there (sizing/cycloid_crowning_tuning.h); the best feasible point seen anywhere.
-  const sizing::CycloidShorthandTuningOutcome solve = sizing::TuneCycloidCrowningShorthand(
+  int runs = 0;
+  sizing::CycloidShorthandTuningOutcome solve = sizing::TuneCycloidCrowningShorthand(
       model, spec, s.max_evaluations, r.curve, start, [&](const CrowningEvaluation& e) {
-        progress.Update(std::min(1.0, 0.5 + 0.5 * double(r.history.size() + 1) / (s.max_evaluations + 1)),
+        progress.Update(std::min(1.0, 0.5 + 0.5 * double(++runs) / (s.max_evaluations + 1)),
                         "f = " + Format(e.coefficient_mm * 1e3, 4) + " um, " +
                             cycloid_common::Fixed(e.stress_MPa, 0) + " MPa");
-        r.history.push_back(e);
       });
+  r.history = std::move(solve.history);
   r.status = RunStatus(solve.solved);
   progress.Done();
   r.feasible = solve.feasible;

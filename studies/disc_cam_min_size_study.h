@@ -110,14 +110,7 @@ struct Input {
     a->Visit("optimizer", &optimizer, Field().Desc("the optimizer and the verification loop"));
   }
   /// The motion's unit by the follower's type (disc_cam's rule, studies/motion_input.h).
-  static nlohmann::ordered_json SchemaRules() {
-    return {{"allOf",
-             nlohmann::ordered_json::array(
-                 {FollowerRiseRule(disc_cam::FollowerMotionSpec(false), disc_cam::FollowerMotionSpec(true),
-                                   {"translating_roller", "translating_knife_edge", "translating_flat_faced"}),
-                  FollowerRiseRule(disc_cam::FollowerMotionSpec(true), disc_cam::FollowerMotionSpec(false),
-                                   {"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})})}};
-  }
+  static nlohmann::ordered_json SchemaRules() { return {{"allOf", disc_cam::FollowerMotionRules()}}; }
 };
 
 struct Study {

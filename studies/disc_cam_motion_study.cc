@@ -86,10 +86,8 @@ nlohmann::ordered_json Input::SchemaRules() {
   return {{"allOf",
            oj::array({
                // The motion's unit by the follower's type (disc_cam's rule).
-               FollowerRiseRule(disc_cam::FollowerMotionSpec(false), disc_cam::FollowerMotionSpec(true),
-                                {"translating_roller", "translating_knife_edge", "translating_flat_faced"}),
-               FollowerRiseRule(disc_cam::FollowerMotionSpec(true), disc_cam::FollowerMotionSpec(false),
-                                {"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"}),
+               disc_cam::FollowerMotionRules()[0],
+               disc_cam::FollowerMotionRules()[1],
                // No flat face; an oscillating follower takes no follower loads (disc_cam's rule) nor a stroke in mm.
                {{"properties", {{"follower", {{"properties", {{"type", {{"not", {{"enum", {"translating_flat_faced",
                                                                                              "oscillating_flat_faced"}}}}}}}}}}}}},

@@ -116,6 +116,13 @@ MotionInputSpec FollowerMotionSpec(bool oscillating) {
   return spec;
 }
 
+nlohmann::ordered_json FollowerMotionRules() {
+  return {FollowerRiseRule(FollowerMotionSpec(false), FollowerMotionSpec(true),
+                           {"translating_roller", "translating_knife_edge", "translating_flat_faced"}),
+          FollowerRiseRule(FollowerMotionSpec(true), FollowerMotionSpec(false),
+                           {"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})};
+}
+
 nlohmann::ordered_json Input::MotionSchema(bool /*sizing*/) {
   // disc_cam_min_size sizes translating and oscillating followers alike: the same schema.
   return studies::MotionSchema({FollowerMotionSpec(false), FollowerMotionSpec(true)},
@@ -159,14 +166,9 @@ nlohmann::ordered_json Input::SchemaRules() {
   const oj translating_loads = {
       {"if", follower_is({"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})},
       {"then", refuse("dynamics")}};
-  // The motion's unit by the follower's type (a length for translating, an angle for oscillating).
-  const oj rise_translating =
-      FollowerRiseRule(FollowerMotionSpec(false), FollowerMotionSpec(true),
-                       {"translating_roller", "translating_knife_edge", "translating_flat_faced"});
-  const oj rise_oscillating =
-      FollowerRiseRule(FollowerMotionSpec(true), FollowerMotionSpec(false),
-                       {"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"});
-  return {{"allOf", oj::array({no_roller, knife, arm, translating_loads, rise_translating, rise_oscillating})}};
+  oj all = oj::array({no_roller, knife, arm, translating_loads});
+  for (const oj& rule : FollowerMotionRules()) all.push_back(rule);
+  return {{"allOf", all}};
 }
 
 nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {

@@ -1045,6 +1045,10 @@ struct Result {
 /// translating, an angle for an oscillating one; durations in degrees; polynomial segments.
 MotionInputSpec FollowerMotionSpec(bool oscillating);
 
+/// The motion's unit by the follower's type (FollowerRiseRule for translating and oscillating
+/// followers): the schema rules of every kind with a disc-cam follower and its "motion".
+nlohmann::ordered_json FollowerMotionRules();
+
 /// The cam as inspected: its exact profile as a function of the cam angle θ in the frame of
 /// profile.dxf, the frame and datum in words.
 InspectedPart CamPart(const Study& study);

@@ -95,7 +95,6 @@ std::optional<objectives::LcrLifeSpec> ParseLife(const Input& in, const Node& ro
   return life;
 }
 
-std::string ComboName(const objectives::LobeCombination& c) { return sizing::LobeCombinationName(c); }
 
 // Constraint row names without the sample index, each once.
 std::vector<std::string> Unique(const std::vector<std::string>& rows) {
@@ -279,7 +278,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
     if (c.verification && c.verification->ran && !c.verification->verified()) {
       const objectives::VerifiedLimit* w = c.verification->worst();
       const bool edge = w && w->limit.find("edge") != std::string::npos;
-      return ComboName(c.combo) + " converged on the fast model but is " +
+      return sizing::LobeCombinationName(c.combo) + " converged on the fast model but is " +
              VerificationFailure(*c.verification,
                                  edge ? "edge-loaded: crown the rollers more (a larger crowning range or effective "
                                         "length), or lower the misalignment"
@@ -305,7 +304,7 @@ std::string BlockingMessage(const Study& s, const Result& r) {
     std::ostringstream m;
     m.precision(4);
     m << "edge-loaded: the pressure reaches the rollers' ends at the " << torque << " torque for every design ("
-      << ComboName(closest->combo) << ": end margin " << worst->value << ", needs > 0); "
+      << sizing::LobeCombinationName(closest->combo) << ": end margin " << worst->value << ", needs > 0); "
       << (straight ? "crown the rollers (fixed.crowning with variables.crowning_coefficient_mm)"
                    : "allow more crowning (a wider crowning range, a longer effective length) or less misalignment");
     return m.str();
@@ -315,13 +314,13 @@ std::string BlockingMessage(const Study& s, const Result& r) {
   m << "no design meets the limits: " << worst->limit << " blocks most; ";
   const std::optional<double> fit = sizing::LimitToFit(closest->spec, s.options, worst->limit);
   if (fit) {
-    m << ComboName(closest->combo) << " fits with " << worst->limit << " = " << *fit << " (limit "
+    m << sizing::LobeCombinationName(closest->combo) << " fits with " << worst->limit << " = " << *fit << " (limit "
       << worst->limit_value << ")";
   } else if (std::isfinite(worst->value)) {
-    m << "at the closest point of " << ComboName(closest->combo) << " it is " << worst->value << " (limit "
+    m << "at the closest point of " << sizing::LobeCombinationName(closest->combo) << " it is " << worst->value << " (limit "
       << worst->limit_value << ")";
   } else {
-    m << "the closest point of " << ComboName(closest->combo) << " has an undercut contact";
+    m << "the closest point of " << sizing::LobeCombinationName(closest->combo) << " has an undercut contact";
   }
   return m.str();
 }
@@ -1199,7 +1198,7 @@ void Write(const Study& s, const Result& result, Outputs& out) {
                  "input cam lobes [-]", "outer diameter [mm]"};
   if (result.best >= 0) {
     const Candidate& best = result.candidates[result.best];
-    po.points = {{(loss ? "least loss: " : "smallest: ") + ComboName(best.combo), double(best.combo.lobes_a),
+    po.points = {{(loss ? "least loss: " : "smallest: ") + sizing::LobeCombinationName(best.combo), double(best.combo.lobes_a),
                   lcr::OuterDiameter(*best.outcome.design)}};
   }
   // Candidates pruned by the branch and bound (3D): their lower bounds, a second series.
@@ -1225,13 +1224,13 @@ std::string Summary(const Study& s, const Result& result) {
     std::snprintf(buf, sizeof buf,
                   "lcr_min_size: minimised the lubricated loss: best %s, loss %.4g W (efficiency %.5f), outer "
                   "diameter %.3f mm (%zu candidates, %.2f s)\n",
-                  ComboName(b.combo).c_str(), k.lubricated_loss_W, k.mean_efficiency, k.outer_diameter_mm,
+                  sizing::LobeCombinationName(b.combo).c_str(), k.lubricated_loss_W, k.mean_efficiency, k.outer_diameter_mm,
                   result.candidates.size(), result.seconds);
   else
     std::snprintf(buf, sizeof buf,
                   "lcr_min_size: minimised the outer diameter: best %s, outer diameter %.3f mm (%zu candidates, "
                   "%.2f s)\n",
-                  ComboName(b.combo).c_str(), k.outer_diameter_mm, result.candidates.size(), result.seconds);
+                  sizing::LobeCombinationName(b.combo).c_str(), k.outer_diameter_mm, result.candidates.size(), result.seconds);
   m << buf;
   for (const std::string& line : LimitCosts(s, result)) m << "lcr_min_size: " << line << "\n";
   return m.str();
