@@ -633,18 +633,6 @@ nlohmann::ordered_json EmitResultSchema(const std::string& kind, const std::stri
   return s;
 }
 
-/// Registers the result schema of a kind and the keys that decide its status (CAMOPT_REGISTER_KIND
-/// does it); returns true.
-bool RegisterResultSchema(const std::string& kind, std::string (*emit_schema)(),
-                          std::vector<std::string> (*run_fact_keys)());
-/// The top-level result.json keys of a declared kind marked Field::Decides (empty when none or
-/// not declared).
-std::vector<std::string> DeclaredRunFactKeys(const std::string& kind);
-/// The result schema text of a kind whose result is declared, or nullptr.
-const std::string* DeclaredResultSchema(const std::string& kind);
-/// The kinds whose result is declared, sorted.
-std::vector<std::string> KindsWithDeclaredResult();
-
 /// Reads the declared struct T from `node`: unknown fields refused, each field checked, defaults
 /// for the absent ones. @throws StudyError (exit 2) with the file and JSON path.
 template <typename T>
@@ -682,38 +670,4 @@ std::string SchemaFieldTable(const nlohmann::ordered_json& schema, bool result =
 /// the value the kind uses, defaults filled in. @throws StudyError as Read.
 using DeclaredEcho = nlohmann::ordered_json (*)(const nlohmann::json& study, const std::string& file);
 
-/// Registers a declared kind: its schema, which `camopt schema KIND` (StudySchema) prints, and its
-/// echo; returns true (for a static).
-bool RegisterDeclaredKind(const std::string& kind, std::string (*emit_schema)(), DeclaredEcho echo);
-/// The schema text of a kind registered with RegisterDeclaredKind, or nullptr.
-const std::string* DeclaredSchema(const std::string& kind);
-/// The echo of a declared kind, or nullptr.
-DeclaredEcho FindDeclaredEcho(const std::string& kind);
-
 }  // namespace camopt::studies
-
-#define CAMOPT_ARCHIVE_CONCAT_INNER(a, b) a##b
-#define CAMOPT_ARCHIVE_CONCAT(a, b) CAMOPT_ARCHIVE_CONCAT_INNER(a, b)
-/// Registers the study kind `kind` declared by the struct `Type` (in the kind's .cc): its schema
-/// is emitted from the declaration (`camopt schema KIND`).
-#define CAMOPT_REGISTER_DECLARED_KIND(kind, Type, title)                                          \
-  static const bool CAMOPT_ARCHIVE_CONCAT(camopt_declared_kind_, __COUNTER__) =                  \
-      ::camopt::studies::RegisterDeclaredKind(                                                   \
-          kind, [] { return ::camopt::studies::EmitSchema<Type>(kind, title).dump(2) + "\n"; },   \
-          [](const nlohmann::json& study, const std::string& file) {                             \
-            return ::camopt::studies::WriteJson(                                                 \
-                ::camopt::studies::Read<Type>(::camopt::studies::Node(&study, file, "")));       \
-          })
-
-/// Registers the study kind `kind` declared by its input `InputType` and its result `ResultType`
-/// (both with a Serialize): `camopt schema KIND` prints the input's schema, `camopt schema KIND
-/// --result` the result's, and the kind writes result.json with WriteResult.
-#define CAMOPT_REGISTER_KIND(kind, InputType, ResultType, title)                                  \
-  CAMOPT_REGISTER_DECLARED_KIND(kind, InputType, title);                                        \
-  static const bool CAMOPT_ARCHIVE_CONCAT(camopt_declared_result_, __COUNTER__) =              \
-      ::camopt::studies::RegisterResultSchema(kind, [] {                                        \
-        return ::camopt::studies::EmitResultSchema<ResultType>(kind, std::string("result.json of the ") + \
-                                                                         title)                 \
-                   .dump(2) +                                                                   \
-               "\n";                                                                            \
-      }, &::camopt::studies::RunFactKeys<ResultType>)

@@ -393,10 +393,10 @@ int RunCommandLine(int argc, char** argv) {
         std::filesystem::remove(init_out);
         return 2;
       }
-      std::cerr << "camopt: wrote " << init_out << ", the " << init_kind << " example " << study.example
-                << (study.every_default ? " with every field and default spelled out"
-                                        : " (fields it leaves out take the defaults of docs/studies.md)")
-                << "; change the design, then: camopt run " << init_out << "\n";
+      std::cerr << "camopt: wrote " << init_out << ", the " << init_kind
+                << (study.example.empty() ? " study of the declared defaults" : " example " + study.example)
+                << " with every field and default spelled out; change the design, then: camopt run " << init_out
+                << "\n";
       return 0;
     } catch (const camopt::studies::StudyError& e) {
       std::cerr << "camopt: error: " << e.what() << "\n";

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/report.h"
 #include "studies/writers.h"
 #include "studies/archive.h"

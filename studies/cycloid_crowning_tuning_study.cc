@@ -15,6 +15,7 @@
 #include "sizing/cycloid_crowning_tuning.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/backend_input.h"
+#include "studies/kind.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -697,7 +698,6 @@ Result Run(const Study& s, const RunContext& ctx) {
   }
 }
 
-
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.SetResult(r);
   // Without a feasible coefficient, result.json's "feasible": false gives "infeasible" (RunStudy).
@@ -775,9 +775,6 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("cycloid_crowning_tuning");
-CAMOPT_REGISTER_KIND("cycloid_crowning_tuning", Input, Result,
-                              "camopt study: crowning (and modification) tuning of a cycloid drive");
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): crank angles, contact grid and
 // the optimizer's evaluation budget (its tolerances are fixed); the defaults are the declaration's.
@@ -802,7 +799,6 @@ Fidelity Knobs(const nlohmann::json& study) {
                  "/reference_max_contact_stress_MPa"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("cycloid_crowning_tuning", Knobs);
 
 // The work limit (studies/work_limits.h): 2 torques × (the scan's points + the optimizer's
 // evaluations) × crank angles × rollers × grid cells. In the general form each evaluation is a
@@ -833,24 +829,25 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                        "verification: up to 3 rounds × 2 torques on twice the angles and cells"}},
                      5e7 * factor, "contact cell solves", 1);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_crowning_tuning", EstimateWork);
-}  // namespace
 
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("cycloid_crowning_tuning", {
-    {"tuned LCM coefficient", "/tuned_coefficient_mm", "mm"},
-    {"peak contact stress, tuned", "/tuned_max_contact_stress_MPa", "MPa"},
-    {"peak contact stress, paper's coefficient", "/reference_max_contact_stress_MPa", "MPa"},
-    {"edge margin at the maximum torque, tuned", "/tuned_edge_margin_at_max_torque_um", "um",
-     "study:/tuning/edge_margin_um", 0.0, false},
-    {"edge margin at the maximum torque, paper's coefficient", "/reference_edge_margin_at_max_torque_um", "um",
-     "study:/tuning/edge_margin_um", 0.0, false},
-    {"smallest unloaded transmission error (backlash), tuned", "/tuned_min_unloaded_te_arcsec", "arcsec",
-     "/min_unloaded_te_arcsec", NAN, false},
-    {"shortest bearing life L10h, tuned design", "/life/shortest_L10h", "h"},
-    {"coefficient search", "/search_status", ""},
-});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "cycloid_crowning_tuning",
+    .title = "camopt study: crowning (and modification) tuning of a cycloid drive",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        {"tuned LCM coefficient", "/tuned_coefficient_mm", "mm"},
+        {"peak contact stress, tuned", "/tuned_max_contact_stress_MPa", "MPa"},
+        {"peak contact stress, paper's coefficient", "/reference_max_contact_stress_MPa", "MPa"},
+        {"edge margin at the maximum torque, tuned", "/tuned_edge_margin_at_max_torque_um", "um",
+         "study:/tuning/edge_margin_um", 0.0, false},
+        {"edge margin at the maximum torque, paper's coefficient", "/reference_edge_margin_at_max_torque_um", "um",
+         "study:/tuning/edge_margin_um", 0.0, false},
+        {"smallest unloaded transmission error (backlash), tuned", "/tuned_min_unloaded_te_arcsec", "arcsec",
+         "/min_unloaded_te_arcsec", NAN, false},
+        {"shortest bearing life L10h, tuned design", "/life/shortest_L10h", "h"},
+        {"coefficient search", "/search_status", ""},
+    },
+    .init_example = "cycloid_crowning_tuning_nnm"});
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_crowning_tuning

@@ -20,7 +20,9 @@
 #include "studies/cycloid_study_common.h"
 #include "studies/datasheet.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/report.h"
+#include "studies/studio_mechanism.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
 
@@ -568,7 +570,6 @@ void ToleranceWarning(const Study& s, Result& r) {
 }
 
 namespace {
-
 
 }  // namespace
 
@@ -1340,8 +1341,6 @@ void WriteUnloaded(const Study& s, const Result& r, Outputs& out) {
   WriteToleranceFiles(r, out);
 }
 
-
-
 }  // namespace
 
 namespace {
@@ -1837,8 +1836,6 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("cycloid_ltca");
-CAMOPT_REGISTER_KIND("cycloid_ltca", Input, Result, "camopt study: loaded tooth contact analysis of a cycloid drive: pin loads, contact pressure and transmission error");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
@@ -1873,7 +1870,6 @@ Fidelity Knobs(const nlohmann::json& study) {
   }
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("cycloid_ltca", Knobs);
 
 // The work limit (studies/work_limits.h): runs (2.25 with the error estimate: the shifted angles
 // once more and a grid of a quarter of the cells) × crank angles (a list, crank_angle_steps or
@@ -1921,36 +1917,6 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   }
   return LargestTerm(terms, 5e7 * factor, "contact cell solves", 24);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_ltca", EstimateWork);
-}  // namespace
-
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("cycloid_ltca", (WithLubricationHeadlines(JoinHeadlines({{
-    {"largest contact stress", "/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa", NAN, true,
-     "/estimated_error/max_contact_stress_MPa"},
-    {"at crank angle", "/max_contact_stress_crank_angle_deg", "deg"},
-    {"largest roller load", "/max_pair_load_N", "N", "study:/limits/roller_load_N", NAN, true, "/estimated_error/max_pair_load_N"},
-    {"mean |loaded transmission error|", "/lte_mean_abs_arcsec", "arcsec", "", NAN, true,
-     "/estimated_error/lte_mean_abs_arcsec"},
-    {"loaded transmission error, peak to peak", "/lte_peak_to_peak_arcsec", "arcsec", "", NAN, true,
-     "/estimated_error/lte_peak_to_peak_arcsec"},
-    {"gear ratio, peak to peak", "/gear_ratio_peak_to_peak", "", "", NAN, true, "/estimated_error/gear_ratio_peak_to_peak"},
-    {"most rollers in contact", "/max_pairs_in_contact", ""},
-    {"largest ring-pin force", "/max_ring_pin_force_N", "N"},
-    {"largest output-pin force", "/max_output_pin_force_N", "N"},
-    {"smallest tooth radius", "/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
-    {"gap between pins", "/pin_gap_mm", "mm", "study:/limits/min_pin_gap_mm", 0.0, false},
-    {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N", "study:/limits/eccentric_bearing_load_N"},
-    {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa", "study:/limits/output_pin_stress_MPa"},
-    {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa", "study:/limits/output_pin_contact_pressure_MPa"},
-    {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
-    {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
-    {"backlash", "/backlash_arcmin", "arcmin"},
-    {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
-    {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
-    {"ring pin life L10h", "/life/pins_L10h", "h"},
-}, RatingsHeadlines(), TorsionalDynamicsHeadlines(), {{"converged", "/converged", ""}}}))));
 
 // datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
 DatasheetSpec CycloidDatasheet() {
@@ -1978,7 +1944,48 @@ DatasheetSpec CycloidDatasheet() {
      {"hysteresis.svg", "lte.svg"}};
   return d;
 }
-const bool kDatasheet = RegisterDatasheet("cycloid_ltca", CycloidDatasheet());
+
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "cycloid_ltca",
+    .title = "camopt study: loaded tooth contact analysis of a cycloid drive: pin loads, contact pressure and transmission error",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = WithLubricationHeadlines(JoinHeadlines({{
+        {"largest contact stress", "/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa", NAN, true,
+         "/estimated_error/max_contact_stress_MPa"},
+        {"at crank angle", "/max_contact_stress_crank_angle_deg", "deg"},
+        {"largest roller load", "/max_pair_load_N", "N", "study:/limits/roller_load_N", NAN, true, "/estimated_error/max_pair_load_N"},
+        {"mean |loaded transmission error|", "/lte_mean_abs_arcsec", "arcsec", "", NAN, true,
+         "/estimated_error/lte_mean_abs_arcsec"},
+        {"loaded transmission error, peak to peak", "/lte_peak_to_peak_arcsec", "arcsec", "", NAN, true,
+         "/estimated_error/lte_peak_to_peak_arcsec"},
+        {"gear ratio, peak to peak", "/gear_ratio_peak_to_peak", "", "", NAN, true, "/estimated_error/gear_ratio_peak_to_peak"},
+        {"most rollers in contact", "/max_pairs_in_contact", ""},
+        {"largest ring-pin force", "/max_ring_pin_force_N", "N"},
+        {"largest output-pin force", "/max_output_pin_force_N", "N"},
+        {"smallest tooth radius", "/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
+        {"gap between pins", "/pin_gap_mm", "mm", "study:/limits/min_pin_gap_mm", 0.0, false},
+        {"eccentric bearing load, largest", "/eccentric_bearing_load_N", "N", "study:/limits/eccentric_bearing_load_N"},
+        {"output-pin bending stress", "/output_pin_bending_stress_MPa", "MPa", "study:/limits/output_pin_stress_MPa"},
+        {"output-pin contact pressure", "/output_pin_contact_pressure_MPa", "MPa", "study:/limits/output_pin_contact_pressure_MPa"},
+        {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
+        {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+        {"backlash", "/backlash_arcmin", "arcmin"},
+        {"shortest bearing life L10h", "/life/shortest_L10h", "h"},
+        {"crank bearing life L10h", "/life/crank_bearing_L10h", "h"},
+        {"ring pin life L10h", "/life/pins_L10h", "h"},
+    }, RatingsHeadlines(), TorsionalDynamicsHeadlines(), {{"converged", "/converged", ""}}})),
+    .datasheet = CycloidDatasheet(),
+    .asked = std::vector<AskedBlock>{
+        {{"/output_mechanism/hole_radius_mm"}, "/output_mechanism", "the output mechanism with clearance (pin forces, eccentric-bearing load, lost motion)"},
+        {{"/stiffness"}, "/stiffness", "the torsional stiffness"},
+        {{"/tolerances"}, "/transmission_error", "the tolerance analysis"},
+        {{"/duty_cycle", "/load/input_speed_rpm"}, "/life", "the bearing lives"},
+        {{"/lubricant"}, "/lubrication", "the lubricated losses"},
+        {{"/ratings"}, "/ratings", "the ratings"},
+        {{"/output_bearing"}, "/output_bearing", "the output bearing's life"},
+    },
+    .init_example = "cycloid_ltca_nnm_lcm",
+    .mechanism = CycloidMechanismAt});
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_ltca

@@ -24,6 +24,7 @@
 #include "studies/cycloid_ltca_study.h"
 #include "studies/cycloid_study_common.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/ratings.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
@@ -1267,7 +1268,6 @@ void FillResult(const Study& s, Result& r) {
   if (!r.blocking_message.empty()) r.notes = std::vector<std::string>{r.blocking_message};
 }
 
-
 // A design (drive and crowning) of this sizing as a complete cycloid_ltca study: the accurate
 // settings, the design torque, the life's and the output mechanism's blocks of the study.
 nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, const cycloid::Crowning& crowning,
@@ -1468,18 +1468,6 @@ std::string Summary(const Study& s, const Result& r) {
 
 namespace {
 
-void RunCycloidMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  const Result r = Run(s, ctx);
-  Write(s, r, out);
-  if (!ctx.quiet) std::cerr << Summary(s, r);
-}
-
-CAMOPT_REGISTER_STUDY("cycloid_min_size", RunCycloidMinSize);
-CAMOPT_REGISTER_STUDY_PARSER("cycloid_min_size", [](const Node& root) { (void)Parse(root); });
-CAMOPT_REGISTER_KIND("cycloid_min_size", Input, Result,
-                     "camopt study: the smallest cycloid drive for a ratio and a torque");
-
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
@@ -1499,7 +1487,6 @@ Fidelity Knobs(const nlohmann::json&) {
   f.headlines = {"/best/outer_diameter_mm", "/best/accurate/max_contact_stress_MPa"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("cycloid_min_size", Knobs);
 
 // The work limit (studies/work_limits.h). Every solve (the starts, then one per tightening round
 // of the verified-optimum loop) may use its whole budget, each iteration about two value runs of
@@ -1539,52 +1526,64 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                            " accurate checks on twice the angles and four times the cells"}},
                      5e8 * factor, "contact cell solves", 1);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("cycloid_min_size", EstimateWork);
 
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("cycloid_min_size", {
-    // "outer diameter", not "smallest": the objective may be the volume or the lubricated loss.
-    {"outer diameter", "/best/outer_diameter_mm", "mm"},
-    {"teeth (disc) / pins", "/target/teeth", ""},
-    {"pin circle radius", "/best/drive/roller_position_radius_mm", "mm"},
-    {"pin radius", "/best/drive/roller_radius_mm", "mm"},
-    {"eccentricity", "/best/drive/eccentricity_mm", "mm"},
-    {"face width", "/best/drive/face_width_mm", "mm"},
-    {"peak contact stress (accurate model)", "/best/accurate/max_contact_stress_MPa", "MPa",
-     "study:/limits/contact_stress_MPa", NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
-    {"edge margin at the overload torque", "/best/accurate/edge_margin_at_overload_um", "um",
-     "study:/limits/min_edge_margin_um", 0.0, false, "/best/estimated_error/edge_margin_at_overload_um"},
-    {"smallest backlash", "/best/accurate/backlash_min_arcsec", "arcsec", "study:/limits/min_backlash_arcsec", 0.0,
-     false, "/best/estimated_error/backlash_arcsec"},
-    {"largest backlash", "/best/accurate/backlash_max_arcsec", "arcsec", "study:/limits/max_backlash_arcsec", NAN,
-     true, "/best/estimated_error/backlash_arcsec"},
-    {"loaded transmission error, peak to peak", "/best/accurate/lte_peak_to_peak_arcsec", "arcsec",
-     "study:/limits/max_lte_peak_to_peak_arcsec", NAN, true, "/best/estimated_error/lte_peak_to_peak_arcsec"},
-    {"torsional stiffness (50-100% of the design torque, crank 0)", "/best/accurate/torsional_stiffness_Nm_per_arcmin",
-     "N m/arcmin", "study:/limits/min_torsional_stiffness_Nm_per_arcmin", NAN, false,
-     "/best/estimated_error/torsional_stiffness_Nm_per_arcmin"},
-    {"lost motion (±3% of the design torque)", "/best/accurate/lost_motion_arcmin", "arcmin",
-     "study:/limits/max_lost_motion_arcmin", NAN, true, "/best/estimated_error/lost_motion_arcmin"},
-    {"output-pin bending stress", "/best/accurate/output_pin_bending_stress_MPa", "MPa",
-     "study:/limits/output_pin_stress_MPa", NAN, true, "/best/estimated_error/output_pin_bending_stress_MPa"},
-    {"eccentric bearing load, largest", "/best/accurate/eccentric_bearing_load_N", "N",
-     "study:/limits/eccentric_bearing_load_N", NAN, true, "/best/estimated_error/eccentric_bearing_load_N"},
-    {"efficiency (lubricated, design torque)", "/best/accurate/efficiency", "", "study:/limits/min_efficiency", NAN,
-     false, "/best/estimated_error/efficiency"},
-    {"oil temperature", "/best/accurate/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true,
-     "/best/estimated_error/oil_temperature_C"},
-    {"lubricated loss", "/best/accurate/power_loss_W", "W"},
-    {"shortest bearing life L10h (accurate model)", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN,
-     false, "/best/estimated_error/shortest_L10h"},
-    {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
-     "study:/ratings/rated_life_h", NAN, false, "/best/estimated_error/shortest_L10h"},
-    {"static safety s0 at the momentary torque (accurate model)", "/best/ratings/s0_at_required_momentary_torque", "",
-     "/best/ratings/momentary_static_safety", NAN, false, "/best/estimated_error/min_static_safety"},
-    {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
-    {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
-    {"verified", "/verified", ""},
-});
+// The studio's start design: the study's start as a cycloid_ltca study.
+nlohmann::json StartStudy(const Node& root, const nlohmann::json&) { return StartCycloidLtcaStudy(Parse(root)); }
 
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "cycloid_min_size",
+    .title = "camopt study: the smallest cycloid drive for a ratio and a torque",
+    .run = Run, .parse = Parse, .write = Write, .summary = Summary, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        // "outer diameter", not "smallest": the objective may be the volume or the lubricated loss.
+        {"outer diameter", "/best/outer_diameter_mm", "mm"},
+        {"teeth (disc) / pins", "/target/teeth", ""},
+        {"pin circle radius", "/best/drive/roller_position_radius_mm", "mm"},
+        {"pin radius", "/best/drive/roller_radius_mm", "mm"},
+        {"eccentricity", "/best/drive/eccentricity_mm", "mm"},
+        {"face width", "/best/drive/face_width_mm", "mm"},
+        {"peak contact stress (accurate model)", "/best/accurate/max_contact_stress_MPa", "MPa",
+         "study:/limits/contact_stress_MPa", NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
+        {"edge margin at the overload torque", "/best/accurate/edge_margin_at_overload_um", "um",
+         "study:/limits/min_edge_margin_um", 0.0, false, "/best/estimated_error/edge_margin_at_overload_um"},
+        {"smallest backlash", "/best/accurate/backlash_min_arcsec", "arcsec", "study:/limits/min_backlash_arcsec", 0.0,
+         false, "/best/estimated_error/backlash_arcsec"},
+        {"largest backlash", "/best/accurate/backlash_max_arcsec", "arcsec", "study:/limits/max_backlash_arcsec", NAN,
+         true, "/best/estimated_error/backlash_arcsec"},
+        {"loaded transmission error, peak to peak", "/best/accurate/lte_peak_to_peak_arcsec", "arcsec",
+         "study:/limits/max_lte_peak_to_peak_arcsec", NAN, true, "/best/estimated_error/lte_peak_to_peak_arcsec"},
+        {"torsional stiffness (50-100% of the design torque, crank 0)", "/best/accurate/torsional_stiffness_Nm_per_arcmin",
+         "N m/arcmin", "study:/limits/min_torsional_stiffness_Nm_per_arcmin", NAN, false,
+         "/best/estimated_error/torsional_stiffness_Nm_per_arcmin"},
+        {"lost motion (±3% of the design torque)", "/best/accurate/lost_motion_arcmin", "arcmin",
+         "study:/limits/max_lost_motion_arcmin", NAN, true, "/best/estimated_error/lost_motion_arcmin"},
+        {"output-pin bending stress", "/best/accurate/output_pin_bending_stress_MPa", "MPa",
+         "study:/limits/output_pin_stress_MPa", NAN, true, "/best/estimated_error/output_pin_bending_stress_MPa"},
+        {"eccentric bearing load, largest", "/best/accurate/eccentric_bearing_load_N", "N",
+         "study:/limits/eccentric_bearing_load_N", NAN, true, "/best/estimated_error/eccentric_bearing_load_N"},
+        {"efficiency (lubricated, design torque)", "/best/accurate/efficiency", "", "study:/limits/min_efficiency", NAN,
+         false, "/best/estimated_error/efficiency"},
+        {"oil temperature", "/best/accurate/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true,
+         "/best/estimated_error/oil_temperature_C"},
+        {"lubricated loss", "/best/accurate/power_loss_W", "W"},
+        {"shortest bearing life L10h (accurate model)", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN,
+         false, "/best/estimated_error/shortest_L10h"},
+        {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
+         "study:/ratings/rated_life_h", NAN, false, "/best/estimated_error/shortest_L10h"},
+        {"static safety s0 at the momentary torque (accurate model)", "/best/ratings/s0_at_required_momentary_torque", "",
+         "/best/ratings/momentary_static_safety", NAN, false, "/best/estimated_error/min_static_safety"},
+        {"curtate margin", "/best/curtate_margin", "", "study:/limits/min_curtate_margin", 0.05, false},
+        {"smallest tooth radius", "/best/min_profile_radius_mm", "mm", "study:/limits/min_profile_radius_mm", 0.0, false},
+        {"verified", "/verified", ""},
+    },
+    .asked = std::vector<AskedBlock>{
+        {{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
+        {{"/lubricant"}, "/best/accurate/efficiency", "the sized design's lubricated losses",
+         {}, "/best/accurate/lubrication_error"},
+    },
+    .init_example = "cycloid_min_size_quick",
+    .sizing_of = "cycloid_ltca",
+    .start_study = StartStudy});
 }  // namespace
 
 }  // namespace camopt::studies::cycloid_min_size

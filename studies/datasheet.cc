@@ -4,16 +4,12 @@
 #include <cmath>
 #include <map>
 
+#include "studies/kind.h"
 #include "studies/report.h"
 
 namespace camopt::studies {
 
 namespace {
-
-std::map<std::string, DatasheetSpec>& Datasheets() {
-  static std::map<std::string, DatasheetSpec> m;
-  return m;
-}
 
 const nlohmann::json* At(const nlohmann::json& j, const std::string& pointer) {
   if (pointer.empty()) return nullptr;
@@ -26,11 +22,6 @@ const char* kSheetStyle =
     "table.sheet td.why{color:#8a5300}";
 
 }  // namespace
-
-bool RegisterDatasheet(const std::string& kind, DatasheetSpec spec) {
-  Datasheets()[kind] = std::move(spec);
-  return true;
-}
 
 std::string DatasheetHtml(const DatasheetSpec& spec, const nlohmann::json& result,
                           const std::vector<std::pair<std::string, std::string>>& figures) {
@@ -97,16 +88,16 @@ std::string DatasheetHtml(const DatasheetSpec& spec, const nlohmann::json& resul
 }
 
 void AddDatasheet(const std::string& kind, Outputs& outputs) {
-  const auto it = Datasheets().find(kind);
-  if (it == Datasheets().end()) return;
+  const KindDescriptor* k = FindKind(kind);
+  if (!k || !k->datasheet || !outputs.result()) return;
+  const DatasheetSpec& spec = *k->datasheet;
   const auto& files = outputs.files();
-  if (!outputs.result()) return;
   const nlohmann::json& result = *outputs.result();
-  if (!At(result, it->second.when_pointer)) return;
+  if (!At(result, spec.when_pointer)) return;
   std::vector<std::pair<std::string, std::string>> figures;
-  for (const std::string& f : it->second.figures)
+  for (const std::string& f : spec.figures)
     if (const auto svg = files.find(f); svg != files.end()) figures.emplace_back(f, svg->second);
-  outputs.Add("datasheet.html", DatasheetHtml(it->second, result, figures));
+  outputs.Add("datasheet.html", DatasheetHtml(spec, result, figures));
 }
 
 }  // namespace camopt::studies

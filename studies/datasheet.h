@@ -33,14 +33,11 @@ struct DatasheetSpec {
   std::vector<std::string> figures;
 };
 
-/// Registers a kind's datasheet; returns true so that it can initialise a static.
-bool RegisterDatasheet(const std::string& kind, DatasheetSpec spec);
-
 /// The page for `result` (pure: tests call it), `figures` the SVG texts to embed by file name.
 std::string DatasheetHtml(const DatasheetSpec& spec, const nlohmann::json& result,
                           const std::vector<std::pair<std::string, std::string>>& figures);
 
-/// Adds datasheet.html to `outputs` when `kind` registered one and result.json has its
+/// Adds datasheet.html to `outputs` when `kind` has one (KindDescriptor::datasheet) and result.json has its
 /// `when_pointer`; the life table of /life, when present, is added as rows.
 void AddDatasheet(const std::string& kind, Outputs& outputs);
 

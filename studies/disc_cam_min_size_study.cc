@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -469,21 +470,8 @@ std::string Summary(const Study& s, const Result& r) {
   return m.str();
 }
 
-void RunDiscCamMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  const Result r = Run(s, ctx);
-  Write(s, r, out);
-  if (!ctx.quiet) std::cerr << Summary(s, r);
-}
-
-CAMOPT_REGISTER_STUDY("disc_cam_min_size", RunDiscCamMinSize);
-CAMOPT_REGISTER_STUDY_PARSER("disc_cam_min_size", [](const Node& root) { (void)Parse(root); });
-
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the fast rows' angles (the
 // accurate grid follows them) and the optimizer's budget. The verified answer should not move.
-CAMOPT_REGISTER_KIND("disc_cam_min_size", Input, Result,
-                     "camopt study: the smallest base circle of a disc cam with a translating or "
-                     "oscillating roller follower");
 
 Fidelity Knobs(const nlohmann::json&) {
   const Input defaults;
@@ -495,7 +483,6 @@ Fidelity Knobs(const nlohmann::json&) {
   f.headlines = {"/best/base_circle_radius_mm", "/best/accurate/pressure_angle_deg/max_rise"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("disc_cam_min_size", Knobs);
 
 // The work limit (studies/work_limits.h): every solve (two starts, the tightening rounds, two
 // re-solves per limit for its cost) may use its whole budget of iterations, each a few evaluations
@@ -513,28 +500,36 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                        WorkNumber(1 + rounds) + " accurate checks × 3 × " + WorkNumber(dense) + " cam angles"}},
                      1e8 * factor, "cam angle evaluations", 16);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam_min_size", EstimateWork);
 
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("disc_cam_min_size", {
-    {"smallest base circle radius", "/best/base_circle_radius_mm", "mm"},
-    // A sized offset within 1 nm of zero is the solver's zero (its KKT tolerance), not a design.
-    {"offset", "/best/offset_mm", "mm", "", NAN, true, "", "", "", 1e-6},
-    {"pivot distance", "/best/pivot_distance_mm", "mm"},
-    {"arm length", "/best/arm_length_mm", "mm"},
-    {"roller radius", "/best/roller_radius_mm", "mm"},
-    {"largest pressure angle, rise (accurate)", "/best/accurate/pressure_angle_deg/max_rise", "deg",
-     "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_rise_deg"},
-    {"largest pressure angle, return (accurate)", "/best/accurate/pressure_angle_deg/max_return", "deg",
-     "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_return_deg"},
-    {"smallest convex radius of curvature (roller: ρ_pitch − r_roller; flat face: r_b + S + S'')", "/best/accurate/min_radius_of_curvature_mm", "mm",
-     "/limits/radius_margin_mm", NAN, false, "/best/estimated_error/min_radius_of_curvature_mm"},
-    {"largest contact stress (accurate)", "/best/accurate/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa",
-     NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
-    {"largest radial dimension", "/best/accurate/max_radial_dimension_mm", "mm"},
-    {"verified", "/verified", ""},
-});
+// The studio's start design: the study's start as a disc_cam study.
+nlohmann::json StartStudy(const Node& root, const nlohmann::json&) { return StartDiscCamStudy(Parse(root)); }
 
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "disc_cam_min_size",
+    .title = "camopt study: the smallest base circle of a disc cam with a translating or "
+              "oscillating roller follower",
+    .run = Run, .parse = Parse, .write = Write, .summary = Summary, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        {"smallest base circle radius", "/best/base_circle_radius_mm", "mm"},
+        // A sized offset within 1 nm of zero is the solver's zero (its KKT tolerance), not a design.
+        {"offset", "/best/offset_mm", "mm", "", NAN, true, "", "", "", 1e-6},
+        {"pivot distance", "/best/pivot_distance_mm", "mm"},
+        {"arm length", "/best/arm_length_mm", "mm"},
+        {"roller radius", "/best/roller_radius_mm", "mm"},
+        {"largest pressure angle, rise (accurate)", "/best/accurate/pressure_angle_deg/max_rise", "deg",
+         "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_rise_deg"},
+        {"largest pressure angle, return (accurate)", "/best/accurate/pressure_angle_deg/max_return", "deg",
+         "/limits/pressure_angle_deg", NAN, true, "/best/estimated_error/pressure_angle_return_deg"},
+        {"smallest convex radius of curvature (roller: ρ_pitch − r_roller; flat face: r_b + S + S'')", "/best/accurate/min_radius_of_curvature_mm", "mm",
+         "/limits/radius_margin_mm", NAN, false, "/best/estimated_error/min_radius_of_curvature_mm"},
+        {"largest contact stress (accurate)", "/best/accurate/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa",
+         NAN, true, "/best/estimated_error/max_contact_stress_MPa"},
+        {"largest radial dimension", "/best/accurate/max_radial_dimension_mm", "mm"},
+        {"verified", "/verified", ""},
+    },
+    .init_example = "disc_cam_min_size",
+    .sizing_of = "disc_cam",
+    .start_study = StartStudy});
 }  // namespace
 
 }  // namespace camopt::studies::disc_cam_min_size

@@ -9,6 +9,7 @@
 #include "model/disc_cam/residual_spectrum.h"
 #include "studies/format.h"
 #include "studies/backend_input.h"
+#include "studies/kind.h"
 #include "studies/report.h"
 #include "studies/verification_json.h"
 #include "studies/work_limits.h"
@@ -595,19 +596,6 @@ std::string Summary(const Study& s, const Result& r) {
   return m.str();
 }
 
-void RunDiscCamMotion(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  const Result r = Run(s, ctx);
-  Write(s, r, out);
-  if (!ctx.quiet) std::cerr << Summary(s, r);
-}
-
-CAMOPT_REGISTER_STUDY("disc_cam_motion", RunDiscCamMotion);
-CAMOPT_REGISTER_STUDY_PARSER("disc_cam_motion", [](const Node& root) { (void)Parse(root); });
-CAMOPT_REGISTER_KIND("disc_cam_motion", Input, Result,
-                     "camopt study: the shape of a disc cam's rises designed for the least peak acceleration, "
-                     "jerk, residual vibration or contact force");
-
 Fidelity Knobs(const nlohmann::json&) {
   const Input defaults;
   Fidelity f;
@@ -616,7 +604,6 @@ Fidelity Knobs(const nlohmann::json&) {
   f.headlines = {"/best/objective"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("disc_cam_motion", Knobs);
 
 // The work limit: every solve's iterations × the rows (the dynamic ones: RK4 steps × speeds), and
 // the accurate checks (CVODE runs).
@@ -632,16 +619,20 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                            WorkNumber(steps * in.analysis.accurate_factor) + " cam angles"}},
                      1e9 * factor, "cam angle evaluations", 16);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam_motion", EstimateWork);
 
-CAMOPT_REGISTER_REPORT("disc_cam_motion", {
-    {"objective (accurate)", "/best/objective", "", "", NAN, true, "/best/estimated_error"},
-    {"objective of the start laws (accurate)", "/start/objective", ""},
-    {"objective of the best named law", "/best_named_law/objective", ""},
-    {"beats every named law", "/beats_every_named_law", ""},
-    {"verified", "/verified", ""},
-});
-
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "disc_cam_motion",
+    .title = "camopt study: the shape of a disc cam's rises designed for the least peak acceleration, "
+              "jerk, residual vibration or contact force",
+    .run = Run, .parse = Parse, .write = Write, .summary = Summary, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        {"objective (accurate)", "/best/objective", "", "", NAN, true, "/best/estimated_error"},
+        {"objective of the start laws (accurate)", "/start/objective", ""},
+        {"objective of the best named law", "/best_named_law/objective", ""},
+        {"beats every named law", "/beats_every_named_law", ""},
+        {"verified", "/verified", ""},
+    },
+    .init_example = "disc_cam_motion"});
 }  // namespace
 
 }  // namespace camopt::studies::disc_cam_motion

@@ -9,9 +9,11 @@
 #include "model/disc_cam/oscillating_flat_faced.h"
 #include "studies/design_issue_paths.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/material_input.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
+#include "studies/studio_mechanism.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
 
@@ -48,7 +50,6 @@ double AtAngleOrNaN(const std::optional<AtAngle>& x, bool angle) {
   if (!x) return NAN;
   return angle ? x->cam_angle_deg : x->value;
 }
-
 
 // The model of an oscillating flat-faced follower (model/disc_cam/oscillating_flat_faced.h) of a study.
 dc::OscillatingFlatFaced OscillatingFlatFace(const Study& s) {
@@ -1777,9 +1778,6 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("disc_cam");
-
-CAMOPT_REGISTER_KIND("disc_cam", Input, Result, "camopt study: disc cam with a roller, knife-edge or flat-faced follower");
 
 // The declared input of a study, for the estimates below that run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
@@ -1811,7 +1809,6 @@ Fidelity Knobs(const nlohmann::json& study) {
                  "/monte_carlo/scales/0/max_exact_um", "/monte_carlo/scales/0/relative_difference"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("disc_cam", Knobs);
 
 // The work limit (studies/work_limits.h): the analysis grid and, unless switched off, the
 // Monte-Carlo samples × their grid × the tolerance scales (cam angle evaluations).
@@ -1831,51 +1828,58 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   }
   return LargestTerm(terms, 2e6 * factor, "cam angle evaluations", 200);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("disc_cam", EstimateWork);
-}  // namespace
 
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("disc_cam", {
-    // The signed extremes of φ (the limit holds |φ| on the rise and on the return, the rows after).
-    {"pressure angle φ, most positive (signed)", "/pressure_angle_deg/max", "deg"},
-    {"pressure angle φ, most negative (signed)", "/pressure_angle_deg/min", "deg"},
-    {"largest pressure angle, rise", "/pressure_angle_deg/max_rise", "deg", "/pressure_angle_deg/limit"},
-    {"largest pressure angle, return", "/pressure_angle_deg/max_return", "deg", "/pressure_angle_deg/limit"},
-    {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
-     NAN, false},
-    {"undercut", "/undercut", ""},
-    // ρ's formula by the face's follower: translating ρ = r_b + S + S'', on an arm ρ = h + h_φφ
-    // (model/disc_cam/flat_faced.h, oscillating_flat_faced.h); each row shown for its own follower.
-    {"smallest radius of curvature r_b + S + S'' (flat face)", "/flat_face/min_radius_of_curvature_mm", "mm",
-     "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_width_needed_centred_mm"},
-    {"smallest radius of curvature h + h_φφ (flat face on an arm)", "/flat_face/min_radius_of_curvature_mm", "mm",
-     "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_length_needed_mm"},
-    {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
-     "/flat_face/face_width_mm"},
-    {"face length needed (flat face on an arm)", "/flat_face/face_length_needed_mm", "mm", "/flat_face/face_width_mm"},
-    {"smallest contact force (separation)", "/dynamics/min_contact_force_N", "N", "", 0.0, false},
-    {"largest contact force", "/dynamics/max_contact_force_N", "N"},
-    {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},
-    {"jump speed (kinetostatic)", "/dynamics/jump_speed_rpm", "rpm"},
-    {"jump speed (dynamic, flexible follower)", "/dynamics/dynamic_jump_speed_rpm", "rpm", "/dynamics/speed_rpm", NAN, false},
-    {"smallest axial force (dynamic)", "/dynamics/response/min_axial_force_N", "N"},
-    {"residual vibration", "/dynamics/response/residual_vibration_mm", "mm"},
-    {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
-    {"smallest spring preload keeping contact up to the speed", "/dynamics/min_spring_preload_N", "N"},
-    {"smallest contact force on the arm's face (separation)", "/arm_dynamics/min_contact_force_N", "N", "", 0.0, false},
-    {"largest contact stress (arm's face)", "/arm_dynamics/max_contact_stress_MPa", "MPa",
-     "/arm_dynamics/contact_stress_limit_MPa"},
-    {"jump speed (arm, kinetostatic)", "/arm_dynamics/jump_speed_rpm", "rpm"},
-    {"jump speed (arm, dynamic, flexible train)", "/arm_dynamics/dynamic_jump_speed_rpm", "rpm", "/arm_dynamics/speed_rpm",
-     NAN, false},
-    {"smallest contact force on the arm (dynamic)", "/arm_dynamics/response/min_contact_force_N", "N"},
-    {"residual vibration (arm)", "/arm_dynamics/response/residual_vibration_deg", "deg"},
-    {"largest camshaft torque (arm)", "/arm_dynamics/max_camshaft_torque_Nm", "N·m"},
-    {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
-    {"worst-case follower error", "/worst_case_error_um/max", "µm"},
-    {"largest rms follower error", "/rms_error_um/max", "µm"},
-});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "disc_cam",
+    .title = "camopt study: disc cam with a roller, knife-edge or flat-faced follower",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        // The signed extremes of φ (the limit holds |φ| on the rise and on the return, the rows after).
+        {"pressure angle φ, most positive (signed)", "/pressure_angle_deg/max", "deg"},
+        {"pressure angle φ, most negative (signed)", "/pressure_angle_deg/min", "deg"},
+        {"largest pressure angle, rise", "/pressure_angle_deg/max_rise", "deg", "/pressure_angle_deg/limit"},
+        {"largest pressure angle, return", "/pressure_angle_deg/max_return", "deg", "/pressure_angle_deg/limit"},
+        {"smallest radius of curvature (ρ_pitch − r_roller)", "/min_radius_of_curvature_mm", "mm", "/radius_margin_limit_mm",
+         NAN, false},
+        {"undercut", "/undercut", ""},
+        // ρ's formula by the face's follower: translating ρ = r_b + S + S'', on an arm ρ = h + h_φφ
+        // (model/disc_cam/flat_faced.h, oscillating_flat_faced.h); each row shown for its own follower.
+        {"smallest radius of curvature r_b + S + S'' (flat face)", "/flat_face/min_radius_of_curvature_mm", "mm",
+         "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_width_needed_centred_mm"},
+        {"smallest radius of curvature h + h_φφ (flat face on an arm)", "/flat_face/min_radius_of_curvature_mm", "mm",
+         "/flat_face/radius_margin_limit_mm", NAN, false, "", "/flat_face/face_length_needed_mm"},
+        {"face width needed, centred on the axis (flat face)", "/flat_face/face_width_needed_centred_mm", "mm",
+         "/flat_face/face_width_mm"},
+        {"face length needed (flat face on an arm)", "/flat_face/face_length_needed_mm", "mm", "/flat_face/face_width_mm"},
+        {"smallest contact force (separation)", "/dynamics/min_contact_force_N", "N", "", 0.0, false},
+        {"largest contact force", "/dynamics/max_contact_force_N", "N"},
+        {"largest contact stress", "/dynamics/max_contact_stress_MPa", "MPa", "/dynamics/contact_stress_limit_MPa"},
+        {"jump speed (kinetostatic)", "/dynamics/jump_speed_rpm", "rpm"},
+        {"jump speed (dynamic, flexible follower)", "/dynamics/dynamic_jump_speed_rpm", "rpm", "/dynamics/speed_rpm", NAN, false},
+        {"smallest axial force (dynamic)", "/dynamics/response/min_axial_force_N", "N"},
+        {"residual vibration", "/dynamics/response/residual_vibration_mm", "mm"},
+        {"largest camshaft torque", "/dynamics/max_camshaft_torque_Nm", "N·m"},
+        {"smallest spring preload keeping contact up to the speed", "/dynamics/min_spring_preload_N", "N"},
+        {"smallest contact force on the arm's face (separation)", "/arm_dynamics/min_contact_force_N", "N", "", 0.0, false},
+        {"largest contact stress (arm's face)", "/arm_dynamics/max_contact_stress_MPa", "MPa",
+         "/arm_dynamics/contact_stress_limit_MPa"},
+        {"jump speed (arm, kinetostatic)", "/arm_dynamics/jump_speed_rpm", "rpm"},
+        {"jump speed (arm, dynamic, flexible train)", "/arm_dynamics/dynamic_jump_speed_rpm", "rpm", "/arm_dynamics/speed_rpm",
+         NAN, false},
+        {"smallest contact force on the arm (dynamic)", "/arm_dynamics/response/min_contact_force_N", "N"},
+        {"residual vibration (arm)", "/arm_dynamics/response/residual_vibration_deg", "deg"},
+        {"largest camshaft torque (arm)", "/arm_dynamics/max_camshaft_torque_Nm", "N·m"},
+        {"largest radial dimension", "/max_radial_dimension_mm", "mm"},
+        {"worst-case follower error", "/worst_case_error_um/max", "µm"},
+        {"largest rms follower error", "/rms_error_um/max", "µm"},
+    },
+    .asked = std::vector<AskedBlock>{
+        {{"/dynamics"}, "/dynamics", "the follower dynamics"},
+        {{"/arm_dynamics"}, "/arm_dynamics", "the arm's loads"},
+        {{"/tolerances"}, "/worst_case_error_um", "the tolerance analysis", {"error", "monte_carlo"}},
+    },
+    .init_example = "disc_cam_dynamics",
+    .mechanism = DiscCamMechanismAt});
 }  // namespace
 
 }  // namespace camopt::studies::disc_cam

@@ -9,6 +9,7 @@
 #include "cad/solid.h"
 #include "studies/design_issue_paths.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/motion_input.h"
 #include "studies/report.h"
 #include "studies/work_limits.h"
@@ -475,7 +476,6 @@ Result Run(const Study& s, const RunContext& ctx) {
   return r;
 }
 
-
 void Write(const Study& s, const Result& r, Outputs& out) {
   out.SetResult(r);
   const auto& t = r.series;
@@ -628,9 +628,6 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("globoidal_cam");
-
-CAMOPT_REGISTER_KIND("globoidal_cam", Input, Result, "camopt study: globoidal cam indexer: pressure angle, undercut, rib thickness, contact stress and roller forces at speed");
 
 // The declared input of a study, for the estimates below that run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
@@ -664,7 +661,6 @@ Fidelity Knobs(const nlohmann::json& study) {
   f.variant_overrides["/export/point_cloud"] = false;
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("globoidal_cam", Knobs);
 
 // The work limit (studies/work_limits.h): the dynamics run on CVODE with error control, about
 // 5000 accepted steps per cam revolution at the default tolerance (docs/globoidal.md), never more
@@ -694,21 +690,26 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
         WorkNumber(x.angle_steps) + " × " + WorkNumber(x.axis_steps) + " surface points"}},
       1e7 * factor, "time steps and surface points", 150);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("globoidal_cam", EstimateWork);
-}  // namespace
 
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("globoidal_cam", {
-    {"largest pressure angle", "/max_pressure_angle_deg", "deg", "/limits/pressure_angle_deg"},
-    {"largest contact stress (dynamics, line contact)", "/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa"},
-    {"smallest contact radius", "/min_contact_radius_mm", "mm"},
-    {"smallest undercut margin", "/min_undercut_margin", "", "", 0.0, false},
-    {"undercut", "/undercut", ""},
-    {"rib thickness at l2", "/rib_thickness_at_l2_mm", "mm", "", 0.0, false},
-    {"largest force on roller 1 (first speed)", "/dynamics/speeds/0/max_force_roller_1_N", "N"},
-    {"largest quasi-static force (first speed)", "/dynamics/speeds/0/max_quasi_static_force_N", "N"},
-});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "globoidal_cam",
+    .title = "camopt study: globoidal cam indexer: pressure angle, undercut, rib thickness, contact stress and roller forces at speed",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        {"largest pressure angle", "/max_pressure_angle_deg", "deg", "/limits/pressure_angle_deg"},
+        {"largest contact stress (dynamics, line contact)", "/max_contact_stress_MPa", "MPa", "/limits/contact_stress_MPa"},
+        {"smallest contact radius", "/min_contact_radius_mm", "mm"},
+        {"smallest undercut margin", "/min_undercut_margin", "", "", 0.0, false},
+        {"undercut", "/undercut", ""},
+        {"rib thickness at l2", "/rib_thickness_at_l2_mm", "mm", "", 0.0, false},
+        {"largest force on roller 1 (first speed)", "/dynamics/speeds/0/max_force_roller_1_N", "N"},
+        {"largest quasi-static force (first speed)", "/dynamics/speeds/0/max_quasi_static_force_N", "N"},
+    },
+    .asked = std::vector<AskedBlock>{
+        {{"/dynamics"}, "/dynamics", "the dynamics", {"dynamics"}},
+        {{"/export/stl", "/export/point_cloud"}, "/surface_export", "the surface export", {"export"}},
+    },
+    .init_example = "globoidal_cam_paper"});
 }  // namespace
 
 }  // namespace camopt::studies::globoidal_cam

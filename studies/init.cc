@@ -6,6 +6,7 @@
 
 #include "studies/archive.h"
 #include "studies/input.h"
+#include "studies/kind.h"
 #include "studies/study.h"
 #include "studies/suggest.h"
 
@@ -33,27 +34,29 @@ void FillDefaults(const nlohmann::ordered_json& schema, nlohmann::ordered_json& 
 }  // namespace
 
 InitStudy InitTemplate(const std::string& kind) {
-  for (const auto& [name, text] : EmbeddedTemplates()) {
-    const nlohmann::json example = nlohmann::json::parse(text);
-    if (example.value("study", "") != kind) continue;
-    InitStudy out;
-    out.example = name;
-    if (const DeclaredEcho echo = FindDeclaredEcho(kind)) {
-      nlohmann::ordered_json study = echo(example, "studies/examples/" + name + ".json");
-      if (const std::string* schema = DeclaredSchema(kind)) FillDefaults(nlohmann::ordered_json::parse(*schema), study);
-      out.text = study.dump(2) + "\n";
-      out.every_default = true;
-    } else {
-      out.text = text;
-    }
-    return out;
+  const KindDescriptor* k = FindKind(kind);
+  if (!k) {
+    const std::vector<std::string> kinds = StudyKinds();
+    std::string known;
+    for (const auto& name : kinds) known += (known.empty() ? "" : ", ") + name;
+    const std::string near = NearestName(kind, kinds);
+    throw StudyError("init " + kind + ": expected a study kind (" + known + "), found " + kind +
+                     (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
   }
-  const std::vector<std::string> kinds = StudyKinds();
-  std::string known;
-  for (const auto& k : kinds) known += (known.empty() ? "" : ", ") + k;
-  const std::string near = NearestName(kind, kinds);
-  throw StudyError("init " + kind + ": expected a study kind (" + known + "), found " + kind +
-                   (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
+  // The kind's example (KindDescriptor::init_example), or a study of its declared defaults alone.
+  InitStudy out;
+  out.example = k->init_example;
+  nlohmann::json example = {{"study", kind}};
+  if (!k->init_example.empty()) {
+    const auto text = EmbeddedTemplates().find(k->init_example);
+    if (text == EmbeddedTemplates().end())
+      throw std::logic_error("study kind " + kind + ": no example " + k->init_example + " in studies/examples/");
+    example = nlohmann::json::parse(text->second);
+  }
+  nlohmann::ordered_json study = k->echo(example, "studies/examples/" + out.example + ".json");
+  FillDefaults(nlohmann::ordered_json::parse(*DeclaredSchema(kind)), study);
+  out.text = study.dump(2) + "\n";
+  return out;
 }
 
 }  // namespace camopt::studies

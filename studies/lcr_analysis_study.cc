@@ -26,9 +26,11 @@
 #include "studies/contact_fatigue_input.h"
 #include "studies/datasheet.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/report.h"
+#include "studies/studio_mechanism.h"
 #include "studies/work_limits.h"
 #include "studies/writers.h"
 
@@ -194,7 +196,6 @@ void RunContact3D(const Study& st, Result& res) {
     (s == Side::kInput ? res.contact_input : res.contact_output) = std::move(c);
   }
 }
-
 
 // A bearing's ratings from `node` (a reducer side or "eccentric_bearing"): C required when a life
 // is asked, C0 optional (s0 is reported when given).
@@ -1741,8 +1742,6 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("lcr_analysis");
-CAMOPT_REGISTER_KIND("lcr_analysis", Input, Result, "camopt study: lobe cam reducer analysis: roller forces, contact stress, undercut, efficiency and bearing life over a revolution");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
@@ -1788,7 +1787,6 @@ Fidelity Knobs(const nlohmann::json& study) {
   }
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("lcr_analysis", Knobs);
 
 // The work limit (studies/work_limits.h): angle_steps × rollers + profile_points × lobes, the
 // finite-length contact's slices and half_space solves, the transmission error's Monte-Carlo and the
@@ -1853,30 +1851,6 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   }
   return LargestTerm(terms, 2e7 * factor, "roller contact evaluations", 64);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("lcr_analysis", EstimateWork);
-}  // namespace
-
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("lcr_analysis", (WithLubricationHeadlines(JoinHeadlines({{
-    {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},
-    {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
-    {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
-    {"largest roller force, output cam", "/output_cam/max_roller_force_N", "N", "/output_cam/roller_load_limit_N"},
-    {"undercut margin, input cam", "/input_cam/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
-    {"undercut margin, output cam", "/output_cam/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
-    {"gap between rollers, input cam", "/input_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
-    {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
-    {"outer diameter", "/outer_diameter_mm", "mm"},
-    {"speed ratio", "/speed_ratio", ""},
-    {"mean efficiency (eq. 33, load.friction_coefficient)", "/efficiency/mean", ""},
-    {"largest input torque", "/input_torque_Nm/max", "N·m"},
-    {"shortest bearing life L10h", "/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
-    {"input cam contact life L10h", "/life/input_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
-    {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
-    {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
-    {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
-}, RatingsHeadlines(), TorsionalDynamicsHeadlines()}))));
 
 // datasheet.html (studies/datasheet.h): with "stiffness" or "ratings".
 DatasheetSpec LcrDatasheet() {
@@ -1896,7 +1870,41 @@ DatasheetSpec LcrDatasheet() {
              {"what the masses include", "/masses/includes", ""}}}},
           {"hysteresis.svg", "forces.svg"}};
 }
-const bool kDatasheet = RegisterDatasheet("lcr_analysis", LcrDatasheet());
+
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "lcr_analysis",
+    .title = "camopt study: lobe cam reducer analysis: roller forces, contact stress, undercut, efficiency and bearing life over a revolution",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = WithLubricationHeadlines(JoinHeadlines({{
+        {"largest contact stress, input cam", "/input_cam/max_contact_stress_MPa", "MPa", "/input_cam/contact_stress_limit_MPa"},
+        {"largest contact stress, output cam", "/output_cam/max_contact_stress_MPa", "MPa", "/output_cam/contact_stress_limit_MPa"},
+        {"largest roller force, input cam", "/input_cam/max_roller_force_N", "N", "/input_cam/roller_load_limit_N"},
+        {"largest roller force, output cam", "/output_cam/max_roller_force_N", "N", "/output_cam/roller_load_limit_N"},
+        {"undercut margin, input cam", "/input_cam/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
+        {"undercut margin, output cam", "/output_cam/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
+        {"gap between rollers, input cam", "/input_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
+        {"gap between rollers, output cam", "/output_cam/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
+        {"outer diameter", "/outer_diameter_mm", "mm"},
+        {"speed ratio", "/speed_ratio", ""},
+        {"mean efficiency (eq. 33, load.friction_coefficient)", "/efficiency/mean", ""},
+        {"largest input torque", "/input_torque_Nm/max", "N·m"},
+        {"shortest bearing life L10h", "/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
+        {"input cam contact life L10h", "/life/input_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
+        {"output cam contact life L10h", "/life/output_cam_contact_L10h", "h", "study:/limits/life_h", NAN, false},
+        {"torsional stiffness (50-100% of rated)", "/torsional_stiffness_Nm_per_arcmin", "N m/arcmin"},
+        {"lost motion (±3% of rated)", "/lost_motion_arcmin", "arcmin"},
+    }, RatingsHeadlines(), TorsionalDynamicsHeadlines()})),
+    .datasheet = LcrDatasheet(),
+    .asked = std::vector<AskedBlock>{
+        {{"/contact"}, "/contact", "the 3D roller contact"},
+        {{"/tolerances"}, "/transmission_error", "the tolerance analysis"},
+        {{"/duty_cycle", "/load/input_speed_rpm"}, "/life", "the bearing lives"},
+        {{"/lubricant"}, "/lubrication", "the lubricated losses"},
+        {{"/ratings"}, "/ratings", "the ratings"},
+        {{"/output_bearing"}, "/output_bearing", "the output bearing's life"},
+    },
+    .init_example = "lcr_ii",
+    .mechanism = LcrMechanismAt});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_analysis

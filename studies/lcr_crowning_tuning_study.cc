@@ -1,4 +1,5 @@
 #include "studies/lcr_crowning_tuning_study.h"
+#include "studies/kind.h"
 #include "studies/verification_json.h"
 
 #include <algorithm>
@@ -349,7 +350,6 @@ Result Run(const Study& st, const RunContext& ctx) {
   return res;
 }
 
-
 void Write(const Study& st, const Result& res, Outputs& out) {
   Table t;
   t.Add("coefficient_mm", res.tuned[0].curve_coefficient_mm);
@@ -383,9 +383,6 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("lcr_crowning_tuning");
-CAMOPT_REGISTER_KIND("lcr_crowning_tuning", Input, Result,
-                              "camopt study: logarithmic roller crowning of a lobe cam reducer, tuned per cam");
 
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
@@ -408,7 +405,6 @@ Fidelity Knobs(const nlohmann::json&) {
                  "/output/tuned/slices/0/design_max_contact_stress_MPa"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("lcr_crowning_tuning", Knobs);
 
 // The work limit (studies/work_limits.h): slices solves of 40 slices as the unit (≈0.6 ms; N slices
 // cost (N/40)³), 69 per cam and cycle (13 × 5 table + 4 exact), 2 cycles (design, overload) per
@@ -437,27 +433,29 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                       {angles, "/tuning/angle_steps", WorkNumber(angle_steps) + " input angles per cycle"}},
                      1e5 * factor, "slice-solve units", 1000);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("lcr_crowning_tuning", EstimateWork);
-}  // namespace
 
-namespace {
-// report.html and the summary: the tuned coefficients, the tuned and uncrowned peak pressures of
-// the aligned rollers at the design torque (the accurate model's), and the verdict on the edge
-// loading the tuning is for.
-const bool kReportRegistered = RegisterReport(
-    "lcr_crowning_tuning",
-    {{"tuned LCM coefficient, input rollers", "/input/crowning/coefficient_mm", "mm"},
-     {"tuned LCM coefficient, output rollers", "/output/crowning/coefficient_mm", "mm"},
-     {"largest edge-pressure share, tuned (accurate model)", "/max_edge_pressure_share", "",
-      "/edge_pressure_share_limit", NAN, true, "/max_edge_pressure_share_error"},
-     {"where", "/max_edge_pressure_share_where", ""},
-     {"peak pressure, input cam, tuned (0 mrad, design torque)", "/input/tuned/half_space/0/design_max_contact_stress_MPa",
-      "MPa"},
-     {"peak pressure, input cam, uncrowned", "/input/uncrowned/half_space/0/design_max_contact_stress_MPa", "MPa"},
-     {"peak pressure, output cam, tuned (0 mrad, design torque)",
-      "/output/tuned/half_space/0/design_max_contact_stress_MPa", "MPa"},
-     {"peak pressure, output cam, uncrowned", "/output/uncrowned/half_space/0/design_max_contact_stress_MPa", "MPa"},
-     {"verified", "/verified", ""}});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "lcr_crowning_tuning",
+    .title = "camopt study: logarithmic roller crowning of a lobe cam reducer, tuned per cam",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    // report.html and the summary: the tuned coefficients, the tuned and uncrowned peak pressures of
+    // the aligned rollers at the design torque (the accurate model's), and the verdict on the edge
+    // loading the tuning is for.
+    .report = std::vector<Headline>{
+        {"tuned LCM coefficient, input rollers", "/input/crowning/coefficient_mm", "mm"},
+        {"tuned LCM coefficient, output rollers", "/output/crowning/coefficient_mm", "mm"},
+        {"largest edge-pressure share, tuned (accurate model)", "/max_edge_pressure_share", "",
+         "/edge_pressure_share_limit", NAN, true, "/max_edge_pressure_share_error"},
+        {"where", "/max_edge_pressure_share_where", ""},
+        {"peak pressure, input cam, tuned (0 mrad, design torque)",
+         "/input/tuned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+        {"peak pressure, input cam, uncrowned", "/input/uncrowned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+        {"peak pressure, output cam, tuned (0 mrad, design torque)",
+         "/output/tuned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+        {"peak pressure, output cam, uncrowned", "/output/uncrowned/half_space/0/design_max_contact_stress_MPa", "MPa"},
+        {"verified", "/verified", ""},
+    },
+    .init_example = "lcr_crowning_tuning"});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_crowning_tuning

@@ -18,6 +18,7 @@
 #include "model/lcr/kinematics.h"
 #include "objectives/problem.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
 #include "studies/report.h"
@@ -196,9 +197,6 @@ void Write(const Study& st, const Result& res, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("lcr_friction_fit");
-CAMOPT_REGISTER_KIND("lcr_friction_fit", Input, Result, "camopt study: friction coefficient and drag of a lobe cam reducer fitted to measured input torques");
-
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of the model's
 // mean input torque (Ceres' tolerances are fixed).
 Fidelity Knobs(const nlohmann::json&) {
@@ -209,7 +207,6 @@ Fidelity Knobs(const nlohmann::json&) {
                  "/chi_square"};
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("lcr_friction_fit", Knobs);
 
 // The work limit (studies/work_limits.h): the torque model's angle grid over every roller (the
 // model runs once, at a unit torque; the fit scales it), and the measurements.
@@ -222,22 +219,23 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                       {double(in.measurements.size()), "/measurements", "measurements"}},
                      2e7 * factor, "roller contact evaluations", 64);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("lcr_friction_fit", EstimateWork);
-}  // namespace
 
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("lcr_friction_fit", {
-    {"friction coefficient", "/parameters/friction_coefficient/value", "", "", NAN, true,
-     "/parameters/friction_coefficient/standard_error"},
-    {"no-load drag torque", "/parameters/drag_torque_Nm/value", "N·m", "", NAN, true,
-     "/parameters/drag_torque_Nm/standard_error"},
-    {"chi-square test p-value (the model within the measurements' standard deviations)", "/chi_square_p_value", "",
-     "/chi_square_p_value_limit", NAN, false},
-    {"reduced chi-square", "/reduced_chi_square", ""},
-    {"degrees of freedom", "/degrees_of_freedom", ""},
-    {"solver status", "/status", ""},
-});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "lcr_friction_fit",
+    .title = "camopt study: friction coefficient and drag of a lobe cam reducer fitted to measured input torques",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        {"friction coefficient", "/parameters/friction_coefficient/value", "", "", NAN, true,
+         "/parameters/friction_coefficient/standard_error"},
+        {"no-load drag torque", "/parameters/drag_torque_Nm/value", "N·m", "", NAN, true,
+         "/parameters/drag_torque_Nm/standard_error"},
+        {"chi-square test p-value (the model within the measurements' standard deviations)", "/chi_square_p_value", "",
+         "/chi_square_p_value_limit", NAN, false},
+        {"reduced chi-square", "/reduced_chi_square", ""},
+        {"degrees of freedom", "/degrees_of_freedom", ""},
+        {"solver status", "/status", ""},
+    },
+    .init_example = "lcr_friction_fit"});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_friction_fit

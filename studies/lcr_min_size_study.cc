@@ -2,7 +2,6 @@
 // (every combination and catalogue roller, the accurate check of the answer), write.
 #include "studies/lcr_min_size_study.h"
 
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +14,7 @@
 
 #include "model/lcr/kinematics.h"
 #include "studies/contact_fatigue_input.h"
+#include "studies/kind.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/lcr_input.h"
 #include "studies/format.h"
@@ -94,7 +94,6 @@ std::optional<objectives::LcrLifeSpec> ParseLife(const Input& in, const Node& ro
   life.lines = *lines;
   return life;
 }
-
 
 // Constraint row names without the sample index, each once.
 std::vector<std::string> Unique(const std::vector<std::string>& rows) {
@@ -1238,17 +1237,6 @@ std::string Summary(const Study& s, const Result& result) {
 
 namespace {
 
-void RunLcrMinSize(const Node& root, const RunContext& ctx, Outputs& out) {
-  const Study s = Parse(root);
-  const Result r = Run(s, ctx);
-  Write(s, r, out);
-  if (!ctx.quiet) std::cerr << Summary(s, r);
-}
-
-CAMOPT_REGISTER_STUDY("lcr_min_size", RunLcrMinSize);
-CAMOPT_REGISTER_STUDY_PARSER("lcr_min_size", [](const Node& root) { (void)Parse(root); });
-CAMOPT_REGISTER_KIND("lcr_min_size", Input, Result, "camopt study: smallest lobe cam reducer for a ratio and torque");
-
 // The declared input of a study, for the knobs and the estimate below, which run before Parse.
 Input ReadInput(const nlohmann::json& study, const std::string& file) { return Read<Input>(Node(&study, file, "")); }
 
@@ -1272,7 +1260,6 @@ Fidelity Knobs(const nlohmann::json& study) {
   if (in.objective == "efficiency") f.headlines.push_back("/best/power_loss_W");
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("lcr_min_size", Knobs);
 
 // The work limit (studies/work_limits.h), in local optimizations of the line model (24 samples per
 // load period, ~30 ms) ≤ 2e4: lobe counts × differences × catalogue rollers × starts, the 3D polish
@@ -1351,42 +1338,63 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   }
   return LargestTerm(terms, 2e4 * factor, "local optimizations", 1000);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("lcr_min_size", EstimateWork);
 
-}  // namespace
+// The studio's start design: the start of the lobe combination the run chose (its optimum's counts)
+// as an lcr_analysis study.
+nlohmann::json StartStudy(const Node& root, const nlohmann::json& optimum) {
+  const Study s = Parse(root);
+  if (!optimum.is_object()) return "the start depends on the lobe combination the run chooses: run the study";
+  try {
+    return StartLcrAnalysisStudy(s, optimum);
+  } catch (const nlohmann::json::exception&) {
+    return "the optimum's study has no reducer counts";
+  }
+}
 
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("lcr_min_size", {
-    // What was minimised: result.json's "objective" is written for the efficiency objective only.
-    {"smallest outer diameter", "/best/outer_diameter_mm", "mm", "", NAN, true, "", "", "/objective"},
-    {"objective", "/objective", ""},
-    {"outer diameter", "/best/outer_diameter_mm", "mm", "study:/limits/max_outer_diameter_mm", NAN, true, "",
-     "/objective"},
-    {"input cam lobes", "/best/input/lobes", ""},
-    {"output cam lobes", "/best/output/lobes", ""},
-    {"eccentricity", "/best/eccentricity_mm", "mm"},
-    {"roller diameter", "/best/input/roller_diameter_mm", "mm"},
-    {"largest contact stress", "/best/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa"},
-    {"largest roller force", "/best/max_roller_force_N", "N", "study:/limits/roller_load_N"},
-    {"undercut margin", "/best/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
-    {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
-    {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
-    {"oil temperature (lubricated)", "/best/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true},
-    {"lubricated loss", "/best/power_loss_W", "W"},
-    {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
-    {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
-     "study:/ratings/rated_life_h", NAN, false},
-    {"rated torque (the rigid law's lives)", "/best/ratings/rated_torque_Nm", "N m", "study:/ratings/rated_torque_Nm",
-     NAN, false},
-    {"static safety s0 at the momentary torque", "/best/ratings/s0_at_required_momentary_torque", "",
-     "/best/ratings/momentary_static_safety", NAN, false},
-    {"momentary torque (the rigid law's static loads)", "/best/ratings/momentary_torque_Nm", "N m",
-     "study:/ratings/momentary_torque_Nm", NAN, false},
-    {"binding limits", "/best/binding_names", ""},
-    {"what the binding limits cost", "/best/limit_costs", ""},
-    {"limit costs", "/best/limit_sensitivity_note", ""},
-});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "lcr_min_size",
+    .title = "camopt study: smallest lobe cam reducer for a ratio and torque",
+    .run = Run, .parse = Parse, .write = Write, .summary = Summary, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        // What was minimised: result.json's "objective" is written for the efficiency objective only.
+        {"smallest outer diameter", "/best/outer_diameter_mm", "mm", "", NAN, true, "", "", "/objective"},
+        {"objective", "/objective", ""},
+        {"outer diameter", "/best/outer_diameter_mm", "mm", "study:/limits/max_outer_diameter_mm", NAN, true, "",
+         "/objective"},
+        {"input cam lobes", "/best/input/lobes", ""},
+        {"output cam lobes", "/best/output/lobes", ""},
+        {"eccentricity", "/best/eccentricity_mm", "mm"},
+        {"roller diameter", "/best/input/roller_diameter_mm", "mm"},
+        {"largest contact stress", "/best/max_contact_stress_MPa", "MPa", "study:/limits/contact_stress_MPa"},
+        {"largest roller force", "/best/max_roller_force_N", "N", "study:/limits/roller_load_N"},
+        {"undercut margin", "/best/undercut_margin_mm", "mm", "study:/limits/undercut_margin_mm", 0.0, false},
+        {"gap between rollers", "/best/roller_gap_mm", "mm", "study:/limits/roller_gap_mm", 0.0, false},
+        {"mean efficiency", "/best/mean_efficiency", "", "study:/limits/min_efficiency", NAN, false},
+        {"oil temperature (lubricated)", "/best/oil_temperature_C", "°C", "study:/limits/max_oil_temperature_C", NAN, true},
+        {"lubricated loss", "/best/power_loss_W", "W"},
+        {"shortest bearing life L10h", "/best/life/shortest_L10h", "h", "study:/limits/life_h", NAN, false},
+        {"bearing life L10h at the rated torque and speed", "/best/ratings/L10h_at_required_torque", "h",
+         "study:/ratings/rated_life_h", NAN, false},
+        {"rated torque (the rigid law's lives)", "/best/ratings/rated_torque_Nm", "N m", "study:/ratings/rated_torque_Nm",
+         NAN, false},
+        {"static safety s0 at the momentary torque", "/best/ratings/s0_at_required_momentary_torque", "",
+         "/best/ratings/momentary_static_safety", NAN, false},
+        {"momentary torque (the rigid law's static loads)", "/best/ratings/momentary_torque_Nm", "N m",
+         "study:/ratings/momentary_torque_Nm", NAN, false},
+        {"binding limits", "/best/binding_names", ""},
+        {"what the binding limits cost", "/best/limit_costs", ""},
+        {"limit costs", "/best/limit_sensitivity_note", ""},
+    },
+    .asked = std::vector<AskedBlock>{
+        {{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
+        {{"/robust"}, "/robust", "the robust sizing"},
+        {{"/contact"}, "/best/contact", "the sized design's 3D roller contact"},
+        {{"/lubricant"}, "/best/oil_temperature_C", "the sized design's lubricated losses",
+         {}, "/best/lubrication_error"},
+    },
+    .init_example = "lcr_min_size",
+    .sizing_of = "lcr_analysis",
+    .start_study = StartStudy});
 }  // namespace
 
 }  // namespace camopt::studies::lcr_min_size

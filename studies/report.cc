@@ -1,4 +1,5 @@
 #include "studies/report.h"
+#include "studies/kind.h"
 #include "studies/writers.h"
 
 #include <algorithm>
@@ -13,11 +14,6 @@
 namespace camopt::studies {
 
 namespace {
-
-std::map<std::string, std::vector<Headline>>& Reports() {
-  static std::map<std::string, std::vector<Headline>> reports;
-  return reports;
-}
 
 std::string Html(const std::string& s) { return XmlText(s); }
 
@@ -239,16 +235,16 @@ std::string SvgLifeBars(const nlohmann::json& table, double limit_h, const std::
 }
 
 const std::vector<Headline>* FindHeadlines(const std::string& kind) {
-  const auto it = Reports().find(kind);
-  return it == Reports().end() ? nullptr : &it->second;
-}
-
-bool RegisterReport(const std::string& kind, std::vector<Headline> headlines) {
-  Reports()[kind] = std::move(headlines);
-  return true;
+  const KindDescriptor* k = FindKind(kind);
+  return k && k->report ? &*k->report : nullptr;
 }
 
 HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result) {
+  return EvaluateHeadlines(FindHeadlines(kind), study, result);
+}
+
+HeadlineTable EvaluateHeadlines(const std::vector<Headline>* headlines, const nlohmann::json& study,
+                                const nlohmann::json& result) {
   HeadlineTable table;
   if (result.is_object() && result.contains("best") && result["best"].is_null()) {
     table.no_design = true;
@@ -256,14 +252,13 @@ HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& s
         result["notes"][0].is_string())
       table.no_design_reason = result["notes"][0].get<std::string>();
   }
-  const auto reg = Reports().find(kind);
-  if (reg == Reports().end()) {
+  if (!headlines) {
     for (const auto& [k, v] : result.items())
       if (v.is_number()) table.rows.push_back({k, Value(v), "", "", ""});
     return table;
   }
   table.registered = true;
-  for (const Headline& h : reg->second) {
+  for (const Headline& h : *headlines) {
     const nlohmann::json* v = At(result, h.pointer);
     if (!v) continue;
     if (!h.only_with.empty() && !At(result, h.only_with)) continue;
@@ -359,6 +354,11 @@ std::string VerdictOf(const HeadlineTable& table, const nlohmann::json& result) 
 }
 
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs) {
+  return HtmlReport(kind, FindHeadlines(kind), study, outputs);
+}
+
+std::string HtmlReport(const std::string& kind, const std::vector<Headline>* headlines, const nlohmann::json& study,
+                       const Outputs& outputs) {
   const auto& files = outputs.files();
   static const nlohmann::json kNone = nlohmann::json::object();
   const nlohmann::json& result = outputs.result() && outputs.result()->is_object() ? *outputs.result() : kNone;
@@ -367,7 +367,7 @@ std::string HtmlReport(const std::string& kind, const nlohmann::json& study, con
                          : "";
   if (name.empty()) name = kind;
 
-  const HeadlineTable table = EvaluateHeadlines(kind, study, result);
+  const HeadlineTable table = EvaluateHeadlines(headlines, study, result);
   const std::vector<HeadlineRow>& rows = table.rows;
   const int limits = table.limits;
 
@@ -474,9 +474,8 @@ std::string HtmlEscape(const std::string& text) { return Html(text); }
 std::string ReportNumber(double value) { return Number(value); }
 
 std::string PlainName(const std::string& kind, const std::string& pointer) {
-  const auto it = Reports().find(kind);
-  if (it != Reports().end())
-    for (const Headline& h : it->second)
+  if (const std::vector<Headline>* headlines = FindHeadlines(kind))
+    for (const Headline& h : *headlines)
       if (h.pointer == pointer) return h.label + (h.unit.empty() ? "" : " [" + h.unit + "]");
   // Unit suffixes of result keys (docs/studies.md, "Units"), longest first.
   static const std::vector<std::pair<std::string, std::string>> kUnits = {

@@ -5,7 +5,7 @@
 // anywhere else (no script, no style sheet, no font, no image file), so it can be mailed as is.
 // The page is built from the run's own outputs (result.json and the *.svg files), so a kind only
 // declares which result.json numbers are its headlines and where their limits are
-// (CAMOPT_REGISTER_REPORT). Same outputs → byte-identical page.
+// (KindDescriptor::report, studies/kind.h). Same outputs → byte-identical page.
 #pragma once
 
 #include <cmath>
@@ -47,12 +47,9 @@ struct Headline {
 /// TorsionalDynamicsHeadlines).
 std::vector<Headline> JoinHeadlines(std::initializer_list<std::vector<Headline>> parts);
 
-/// Registers the headlines of a kind's report; returns true so that it can initialise a static.
-/// A kind without registered headlines gets every top-level number of result.json instead.
-bool RegisterReport(const std::string& kind, std::vector<Headline> headlines);
-
-/// The headlines registered for a kind, or nullptr (the Python module's Result.headlines reads
-/// their numbers from result.json by their pointers).
+/// The headlines of a kind's report (KindDescriptor::report), or nullptr: a kind without them gets
+/// every top-level number of result.json instead (the Python module's Result.headlines reads their
+/// numbers from result.json by their pointers).
 const std::vector<Headline>* FindHeadlines(const std::string& kind);
 
 /// One headline evaluated on a run, as report.html and the stdout summary show it.
@@ -81,6 +78,9 @@ struct HeadlineTable {
   std::string no_design_reason;
 };
 HeadlineTable EvaluateHeadlines(const std::string& kind, const nlohmann::json& study, const nlohmann::json& result);
+/// The same with the headlines given (nullptr: none).
+HeadlineTable EvaluateHeadlines(const std::vector<Headline>* headlines, const nlohmann::json& study,
+                                const nlohmann::json& result);
 
 /// The verdict line of an answer, a function of its status (studies/status.h) and the reason
 /// that goes with it: "All 7 limits met, verified by the accurate model", "All 7 limits met,
@@ -99,6 +99,9 @@ std::string VerdictOf(const HeadlineTable& table, const nlohmann::json& result);
 
 /// The page for a run of `kind` on `study` whose files are `outputs` (result.json, *.svg, …).
 std::string HtmlReport(const std::string& kind, const nlohmann::json& study, const Outputs& outputs);
+/// The same with the headlines given (nullptr: every top-level number).
+std::string HtmlReport(const std::string& kind, const std::vector<Headline>* headlines, const nlohmann::json& study,
+                       const Outputs& outputs);
 
 /// The life tables of a result: every object named "life" with a "table" array, at the top level
 /// or one level down (lcr_analysis's /life, the sizing kinds' /best/life), with its JSON pointer.
@@ -126,7 +129,3 @@ std::string ReportNumber(double value);
 void AddReport(const std::string& kind, const nlohmann::json& study, Outputs& outputs);
 
 }  // namespace camopt::studies
-
-#define CAMOPT_REGISTER_REPORT(kind, ...)                                 \
-  static const bool CAMOPT_CONCAT(camopt_report_registered_, __COUNTER__) = \
-      ::camopt::studies::RegisterReport(kind, std::vector<::camopt::studies::Headline> __VA_ARGS__)

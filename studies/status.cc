@@ -1,4 +1,5 @@
 #include "studies/status.h"
+#include "studies/kind.h"
 
 #include <map>
 
@@ -51,47 +52,9 @@ Status SizingStatus(bool has_design, bool verification_ran, bool verified, bool 
 }
 
 const std::vector<AskedBlock>& AskedBlocks(const std::string& kind) {
-  static const std::map<std::string, std::vector<AskedBlock>> table = {
-      {"cycloid_ltca",
-       {{{"/output_mechanism/hole_radius_mm"}, "/output_mechanism",
-         "the output mechanism with clearance (pin forces, eccentric-bearing load, lost motion)"},
-        {{"/stiffness"}, "/stiffness", "the torsional stiffness"},
-        {{"/tolerances"}, "/transmission_error", "the tolerance analysis"},
-        {{"/duty_cycle", "/load/input_speed_rpm"}, "/life", "the bearing lives"},
-        {{"/lubricant"}, "/lubrication", "the lubricated losses"},
-        {{"/ratings"}, "/ratings", "the ratings"},
-        {{"/output_bearing"}, "/output_bearing", "the output bearing's life"}}},
-      {"lcr_analysis",
-       {{{"/contact"}, "/contact", "the 3D roller contact"},
-        {{"/tolerances"}, "/transmission_error", "the tolerance analysis"},
-        {{"/duty_cycle", "/load/input_speed_rpm"}, "/life", "the bearing lives"},
-        {{"/lubricant"}, "/lubrication", "the lubricated losses"},
-        {{"/ratings"}, "/ratings", "the ratings"},
-        {{"/output_bearing"}, "/output_bearing", "the output bearing's life"}}},
-      {"disc_cam",
-       {{{"/dynamics"}, "/dynamics", "the follower dynamics"},
-        {{"/arm_dynamics"}, "/arm_dynamics", "the arm's loads"},
-        {{"/tolerances"}, "/worst_case_error_um", "the tolerance analysis", {"error", "monte_carlo"}}}},
-      {"globoidal_cam",
-       {{{"/dynamics"}, "/dynamics", "the dynamics", {"dynamics"}},
-        {{"/export/stl", "/export/point_cloud"}, "/surface_export", "the surface export", {"export"}}}},
-      {"transmission_rigidity",
-       {{{"/load_torque_Nm"}, "/deflection_at_end_b_deg", "the deflection under load"},
-        {{"/report_radius_mm"}, "/linear_stiffness_at_report_radius_N_per_mm", "the stiffness at the radius"}}},
-      {"lcr_min_size",
-       {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
-        {{"/robust"}, "/robust", "the robust sizing"},
-        {{"/contact"}, "/best/contact", "the sized design's 3D roller contact"},
-        {{"/lubricant"}, "/best/oil_temperature_C", "the sized design's lubricated losses", {},
-         "/best/lubrication_error"}}},
-      {"cycloid_min_size",
-       {{{"/duty_cycle", "/load/input_speed_rpm"}, "/best/life", "the sized design's bearing lives"},
-        {{"/lubricant"}, "/best/accurate/efficiency", "the sized design's lubricated losses", {},
-         "/best/accurate/lubrication_error"}}},
-  };
   static const std::vector<AskedBlock> none;
-  const auto it = table.find(kind);
-  return it == table.end() ? none : it->second;
+  const KindDescriptor* k = FindKind(kind);
+  return k ? k->asked : none;
 }
 
 std::vector<std::string> MissingAnswers(const std::string& kind, const nlohmann::json& study,

@@ -79,7 +79,7 @@ struct AskedBlock {
   std::string reason = {};
 };
 
-/// The blocks `kind` computes on request (one table for every kind).
+/// The blocks `kind` computes on request (KindDescriptor::asked).
 const std::vector<AskedBlock>& AskedBlocks(const std::string& kind);
 
 /// The blocks that `study` asks for and `result` lacks, each as "what (answer pointer)".

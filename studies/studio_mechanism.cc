@@ -22,11 +22,9 @@
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
 #include "studies/cycloid_ltca_study.h"
-#include "studies/cycloid_min_size_study.h"
-#include "studies/disc_cam_min_size_study.h"
-#include "studies/lcr_min_size_study.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
+#include "studies/kind.h"
 #include "studies/lcr_analysis_study.h"
 #include "studies/study.h"
 
@@ -419,35 +417,17 @@ nlohmann::json DrawnDesign(const nlohmann::json& analysis, double angle_deg, int
 }
 
 // A sizing study: its start design and the optimum of its run, each as the analysis study of the
-// same mechanism (the sizing kind's own Start…Study and its run's best_….json) drawn at one angle.
-nlohmann::json SizingAt(const std::string& kind, const nlohmann::json& study, const nlohmann::json& optimum,
+// same mechanism (the sizing kind's start_study and its run's best_….json) drawn at one angle.
+nlohmann::json SizingAt(const KindDescriptor& kind, const nlohmann::json& study, const nlohmann::json& optimum,
                         double angle_deg, int points) {
-  const Node root(&study, "study", "");
-  nlohmann::json start;
-  std::string why;
-  if (kind == "disc_cam_min_size") {
-    start = disc_cam_min_size::StartDiscCamStudy(disc_cam_min_size::Parse(root));
-  } else if (kind == "cycloid_min_size") {
-    start = cycloid_min_size::StartCycloidLtcaStudy(cycloid_min_size::Parse(root));
-  } else {
-    const lcr_min_size::Study s = lcr_min_size::Parse(root);
-    if (optimum.is_object()) {
-      try {
-        start = lcr_min_size::StartLcrAnalysisStudy(s, optimum);
-      } catch (const nlohmann::json::exception&) {
-        why = "the optimum's study has no reducer counts";
-      }
-    } else {
-      why = "the start depends on the lobe combination the run chooses: run the study";
-    }
-  }
+  const nlohmann::json start = kind.start_study(Node(&study, "study", ""), optimum);
   nlohmann::json out = {{"kind", "sizing"},
-                        {"sizing_kind", kind},
+                        {"sizing_kind", kind.name},
                         {"supported", true},
                         {"input_angle_deg", angle_deg},
-                        {"analysis_kind", SizingAnalysisKind(kind)}};
+                        {"analysis_kind", kind.sizing_of}};
   out["start"] = start.is_object() ? DrawnDesign(start, angle_deg, points)
-                                   : nlohmann::json{{"supported", false}, {"why", why}};
+                                   : nlohmann::json{{"supported", false}, {"why", start}};
   out["optimum"] = optimum.is_object() ? DrawnDesign(optimum, angle_deg, points) : nlohmann::json(nullptr);
   return out;
 }
@@ -455,10 +435,19 @@ nlohmann::json SizingAt(const std::string& kind, const nlohmann::json& study, co
 }  // namespace
 
 std::string SizingAnalysisKind(const std::string& kind) {
-  if (kind == "lcr_min_size") return "lcr_analysis";
-  if (kind == "cycloid_min_size") return "cycloid_ltca";
-  if (kind == "disc_cam_min_size") return "disc_cam";
-  return "";
+  const KindDescriptor* k = FindKind(kind);
+  return k ? k->sizing_of : "";
+}
+
+nlohmann::json LcrMechanismAt(const nlohmann::json& study, double input_angle_deg, int points, const LoadedRun*) {
+  return LcrAt(study, input_angle_deg, points);
+}
+nlohmann::json DiscCamMechanismAt(const nlohmann::json& study, double input_angle_deg, int points, const LoadedRun*) {
+  return DiscCamAt(study, input_angle_deg, points);
+}
+nlohmann::json CycloidMechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
+                                  const LoadedRun* run) {
+  return CycloidAt(study, input_angle_deg, points, run);
 }
 
 std::string SizingOptimumFile(const std::string& kind) {
@@ -561,10 +550,9 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
   const std::string kind = study.is_object() && study.contains("study") && study["study"].is_string()
                                ? study["study"].get<std::string>()
                                : std::string();
-  if (kind == "lcr_analysis") return LcrAt(study, input_angle_deg, points);
-  if (kind == "disc_cam") return DiscCamAt(study, input_angle_deg, points);
-  if (kind == "cycloid_ltca") return CycloidAt(study, input_angle_deg, points, run);
-  if (!SizingAnalysisKind(kind).empty()) return SizingAt(kind, study, optimum, input_angle_deg, points);
+  const KindDescriptor* k = FindKind(kind);
+  if (k && k->mechanism) return k->mechanism(study, input_angle_deg, points, run);
+  if (k && k->start_study) return SizingAt(*k, study, optimum, input_angle_deg, points);
   return {{"kind", kind}, {"supported", false}};
 }
 

@@ -51,10 +51,9 @@ namespace camopt::studies {
 ///    "start": {…as the analysis kind…, "study": the start's analysis study},
 ///    "optimum": {…, "study": `optimum`} or null without `optimum`}
 /// with `optimum` the run's best_….json (SizingOptimumFile); the start is the sizing kind's own
-/// (disc_cam_min_size::StartDiscCamStudy, cycloid_min_size::StartCycloidLtcaStudy,
-/// lcr_min_size::StartLcrAnalysisStudy: an LCR's start needs the optimum's lobe combination). A
-/// design the analysis kind refuses is {"supported": false, "why", "study"}.
-/// Another kind: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
+/// (KindDescriptor::start_study: an LCR's start needs the optimum's lobe combination). A design the
+/// analysis kind refuses is {"supported": false, "why", "study"}. Each kind's drawing is its
+/// KindDescriptor::mechanism; a kind without one: {"kind": KIND, "supported": false}. @throws StudyError for a study the CLI
 /// would refuse (the kind's Parse).
 /// A finished run of a cycloid_ltca study: its output folder (as shown) and the text of its
 /// per_angle.csv (crank_angle_deg, load_roller_i_N and max_pressure_roller_i_MPa of i = 1 … n1).
@@ -80,6 +79,13 @@ nlohmann::json MechanismAt(const nlohmann::json& study, double input_angle_deg, 
 /// "unloaded_te_arcsec" (of the first row; null without the column)} or
 /// {"why": text} when the run cannot give θ.
 nlohmann::json CycloidRunAt(const std::string& per_angle_csv, int rollers, double crank_deg);
+
+/// The studio's drawing of each analysis kind (KindDescriptor::mechanism): MechanismAt's JSON.
+nlohmann::json LcrMechanismAt(const nlohmann::json& study, double input_angle_deg, int points, const LoadedRun* run);
+nlohmann::json DiscCamMechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
+                                  const LoadedRun* run);
+nlohmann::json CycloidMechanismAt(const nlohmann::json& study, double input_angle_deg, int points,
+                                  const LoadedRun* run);
 
 /// The analysis kind a sizing kind's designs are studies of ("disc_cam" for "disc_cam_min_size");
 /// empty for a kind that is not a sizing.

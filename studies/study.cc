@@ -25,6 +25,7 @@
 #include "studies/archive.h"
 #include "studies/provenance.h"
 #include "studies/datasheet.h"
+#include "studies/kind.h"
 #include "studies/report.h"
 #include "studies/schemas.h"
 #include "studies/work_limits.h"
@@ -117,11 +118,6 @@ void Progress::Done() {
 }
 
 namespace {
-
-std::map<std::string, StudyRunner>& Registry() {
-  static std::map<std::string, StudyRunner> registry;
-  return registry;
-}
 
 // Rejects NaN and infinities anywhere in a json tree, naming the path.
 void CheckFiniteTree(const nlohmann::json& j, const std::string& path) {
@@ -439,46 +435,6 @@ void RemoveTemporaryOutputForInterrupt() {
   }
 }
 
-bool RegisterStudy(const std::string& kind, StudyRunner runner) {
-  Registry()[kind] = std::move(runner);
-  return true;
-}
-
-namespace {
-std::map<std::string, FidelityOf>& FidelityRegistry() {
-  static std::map<std::string, FidelityOf> registry;
-  return registry;
-}
-}  // namespace
-
-bool RegisterFidelity(const std::string& kind, FidelityOf fidelity) {
-  FidelityRegistry()[kind] = std::move(fidelity);
-  return true;
-}
-
-const FidelityOf* FindFidelity(const std::string& kind) {
-  const auto it = FidelityRegistry().find(kind);
-  return it == FidelityRegistry().end() ? nullptr : &it->second;
-}
-
-std::vector<std::string> StudyKinds() {
-  std::vector<std::string> kinds;
-  for (const auto& [k, v] : Registry()) kinds.push_back(k);
-  return kinds;
-}
-
-namespace {
-std::map<std::string, StudyParser>& ParserRegistry() {
-  static std::map<std::string, StudyParser> registry;
-  return registry;
-}
-}  // namespace
-
-bool RegisterStudyParser(const std::string& kind, StudyParser parser) {
-  ParserRegistry()[kind] = std::move(parser);
-  return true;
-}
-
 std::string CheckCommonFields(const Node& root) {
   if (!root.json().is_object()) root.Fail("a study object");
   if (!root.Has("study") && root.Has("sweep") && root.Has("vary"))
@@ -486,7 +442,7 @@ std::string CheckCommonFields(const Node& root) {
                   "`camopt sweep " + root.file() + " --out DIR`");
   const Node kind_node = root["study"];
   const std::string kind = kind_node.String();
-  if (Registry().find(kind) == Registry().end()) {
+  if (!FindKind(kind)) {
     std::string known;
     for (const auto& k : StudyKinds()) known += (known.empty() ? "" : ", ") + k;
     kind_node.Fail("a known study kind (" + known + ")");
@@ -500,9 +456,7 @@ std::string CheckCommonFields(const Node& root) {
 void CheckStudy(const nlohmann::json& study, const std::string& file) {
   const Node root(&study, file, "");
   const std::string kind = CheckCommonFields(root);
-  const auto it = ParserRegistry().find(kind);
-  if (it == ParserRegistry().end()) throw std::logic_error("study kind " + kind + " has no registered parser");
-  it->second(root);
+  FindKind(kind)->check(root);
 }
 
 void SettleStatus(const std::string& kind, const nlohmann::json& study, Outputs& outputs) {
@@ -542,7 +496,7 @@ void SettleStatus(const std::string& kind, const nlohmann::json& study, Outputs&
 Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   const Node root(&study, ctx.study_file, "");
   const std::string kind = CheckCommonFields(root);
-  auto it = Registry().find(kind);
+  const KindDescriptor& described = *FindKind(kind);
   Outputs outputs;
   const std::vector<std::string> implausible = Timed(outputs.phases(), "checks", [&] {
     CheckWorkLimits(study, ctx.study_file, ctx.max_work_factor);
@@ -551,11 +505,7 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   if (!ctx.quiet)
     for (const auto& w : implausible) std::cerr << "camopt: warning: " << ctx.study_file << ": " << w << "\n";
   try {
-    // A kind registered with CAMOPT_REGISTER_STUDY_KIND times its parse, solve and files itself.
-    const size_t before = outputs.phases().size();
-    std::vector<PhaseTime> whole;
-    Timed(whole, "parse+solve+files", [&] { it->second(root, ctx, outputs); });
-    if (outputs.phases().size() == before) outputs.phases().push_back(whole.front());
+    described.run(root, ctx, outputs);  // timed as its phases parse, solve and files
   } catch (const NonFiniteResult& e) {
     throw StudyError(ctx.study_file + ": /: expected values the models can compute, found a " +
                      "study whose result " + e.what() + " is not a finite number (check for " +
@@ -626,27 +576,23 @@ RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, cons
   return answer;
 }
 
-const std::string& StudySchema(const std::string& kind) {
-  // Every kind is declared once (studies/archive.h): its schema is emitted from the declaration.
-  if (const std::string* declared = DeclaredSchema(kind)) return *declared;
-  std::set<std::string> kinds;
-  for (const auto& k : StudyKinds())
-    if (DeclaredSchema(k)) kinds.insert(k);
+namespace {
+std::string KnownKinds() {
   std::string known;
-  for (const auto& k : kinds) known += (known.empty() ? "" : ", ") + k;
-  throw StudyError("schema " + kind + ": expected a known study kind (" + known + "), found " + kind);
+  for (const auto& k : StudyKinds()) known += (known.empty() ? "" : ", ") + k;
+  return known;
+}
+}  // namespace
+
+const std::string& StudySchema(const std::string& kind) {
+  // Every kind is declared once (studies/kind.h): its schema is emitted from the declaration.
+  if (const std::string* declared = DeclaredSchema(kind)) return *declared;
+  throw StudyError("schema " + kind + ": expected a known study kind (" + KnownKinds() + "), found " + kind);
 }
 
 const std::string& StudyResultSchema(const std::string& kind) {
   if (const std::string* declared = DeclaredResultSchema(kind)) return *declared;
-  std::string known;
-  for (const auto& k : KindsWithDeclaredResult()) known += (known.empty() ? "" : ", ") + k;
-  const std::vector<std::string> kinds = StudyKinds();
-  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
-    throw StudyError("schema " + kind + " --result: expected a known study kind whose result is declared (" + known +
-                     "), found " + kind);
-  throw StudyError("schema " + kind + " --result: expected a kind whose result is declared (" + known + "), found " +
-                   kind + ", whose result.json is not declared yet (docs/studies.md lists its keys)");
+  throw StudyError("schema " + kind + " --result: expected a known study kind (" + KnownKinds() + "), found " + kind);
 }
 
 void AddRunStampToResultSchema(nlohmann::ordered_json& schema) {

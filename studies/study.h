@@ -1,12 +1,9 @@
 // The study registry, the run context and the set of output files of one run.
 //
-// A study kind is a header in studies/ declaring its Input and its Result (each with a
-// `Serialize`, studies/archive.h) and a .cc with Parse → Run → Write, registered with
-// CAMOPT_REGISTER_STUDY_KIND (the runner and the parse step) and CAMOPT_REGISTER_KIND (the input's
-// and the result's schemas), with its work estimate (RegisterWorkEstimate), fidelity knobs
-// (CAMOPT_REGISTER_FIDELITY) and report rows (CAMOPT_REGISTER_REPORT) beside them; docs/studies.md,
-// "One declaration per kind" and "The result declared once". Write hands the Result to
-// Outputs::SetResult; RunStudy stamps it and writes result.json.
+// A study kind declares its Input and its Result (each with a `Serialize`, studies/archive.h) and a
+// Run, and registers them once with CAMOPT_REGISTER_KIND (studies/kind.h), with whatever else it has
+// (knobs, work estimate, report rows, …); docs/studies.md, "Adding a kind". RunStudy runs it,
+// stamps the Result (Outputs::SetResult) and writes result.json.
 #pragma once
 
 #include <chrono>
@@ -268,16 +265,8 @@ void MoveFolderIn(const std::string& tmp, const std::string& dir);
 /// Commit under way to finish, so that `--out` is left either old or new, never mixed).
 void RemoveTemporaryOutputForInterrupt();
 
-using StudyRunner = std::function<void(const Node& root, const RunContext&, Outputs&)>;
-
-/// Registers a study kind; returns true so that it can initialise a static.
-bool RegisterStudy(const std::string& kind, StudyRunner runner);
+/// The registered study kinds, sorted (studies/kind.h).
 std::vector<std::string> StudyKinds();
-
-/// The parse step of a kind alone (its Parse: every check of the file, nothing run).
-using StudyParser = std::function<void(const Node& root)>;
-/// Registers the parse step of a kind (CAMOPT_REGISTER_STUDY_KIND does it); returns true.
-bool RegisterStudyParser(const std::string& kind, StudyParser parser);
 
 /// The checks every kind shares before its own: a study object, a known "study" kind, and "name"
 /// and "description" strings when given (StudyError otherwise). Returns the kind.
@@ -315,10 +304,6 @@ struct Fidelity {
 };
 
 using FidelityOf = std::function<Fidelity(const nlohmann::json& study)>;
-/// Declares the fidelity knobs and headline outputs of a kind; returns true (for a static).
-bool RegisterFidelity(const std::string& kind, FidelityOf fidelity);
-/// The kind's declaration, or nullptr when it has none.
-const FidelityOf* FindFidelity(const std::string& kind);
 
 /// Runs the study in file: parses, checks the work limits, dispatches on "study", writes into
 /// out_dir (checked first); returns the answer's status. Throws StudyError for bad input (exit 2),
@@ -344,30 +329,3 @@ double Finite(double value, const std::string& what);
 
 }  // namespace camopt::studies
 
-#define CAMOPT_CONCAT_INNER(a, b) a##b
-#define CAMOPT_REGISTER_FIDELITY(kind, fn) \
-  static const bool CAMOPT_CONCAT(camopt_fidelity_registered_, __COUNTER__) = \
-      ::camopt::studies::RegisterFidelity(kind, fn)
-#define CAMOPT_CONCAT(a, b) CAMOPT_CONCAT_INNER(a, b)
-#define CAMOPT_REGISTER_STUDY(kind, fn) \
-  static const bool CAMOPT_CONCAT(camopt_study_registered_, __COUNTER__) = \
-      ::camopt::studies::RegisterStudy(kind, fn)
-
-/// Registers a study kind of the Parse → Run → Write shape: used inside the kind's namespace,
-/// which defines Study, Parse(const Node&), Run(const Study&, const RunContext&) and
-/// Write(const Study&, const Result&, Outputs&).
-#define CAMOPT_REGISTER_STUDY_KIND(kind)                                                        \
-  CAMOPT_REGISTER_STUDY(kind, [](const ::camopt::studies::Node& root,                           \
-                                 const ::camopt::studies::RunContext& ctx,                      \
-                                 ::camopt::studies::Outputs& out) {                             \
-    auto& phases = out.phases();                                                                \
-    const auto study = ::camopt::studies::Timed(phases, "parse", [&] { return Parse(root); });  \
-    const auto result = ::camopt::studies::Timed(phases, "solve", [&] { return Run(study, ctx); }); \
-    ::camopt::studies::Timed(phases, "files", [&] { Write(study, result, out); });              \
-  });                                                                                           \
-  CAMOPT_REGISTER_STUDY_PARSER(kind, [](const ::camopt::studies::Node& root) { (void)Parse(root); })
-
-/// Registers the parse step of a kind registered with CAMOPT_REGISTER_STUDY (for CheckStudy).
-#define CAMOPT_REGISTER_STUDY_PARSER(kind, fn) \
-  static const bool CAMOPT_CONCAT(camopt_study_parser_registered_, __COUNTER__) = \
-      ::camopt::studies::RegisterStudyParser(kind, fn)

@@ -13,6 +13,7 @@
 #include "model/lcr/kinematics.h"
 #include "model/rigidity/lost_motion.h"
 #include "studies/format.h"
+#include "studies/kind.h"
 #include "studies/lcr_input.h"
 #include "studies/report.h"
 #include "studies/work_limits.h"
@@ -605,9 +606,6 @@ void Write(const Study& study, const Result& res, Outputs& out) {
 }
 
 namespace {
-CAMOPT_REGISTER_STUDY_KIND("transmission_rigidity");
-
-CAMOPT_REGISTER_KIND("transmission_rigidity", Input, Result, "camopt study: torsional rigidity, backlash and deflection of a drive train from its elements");
 
 // The work limit (studies/work_limits.h): one unit per closed-form element; a lobe cam reducer
 // solves its rollers' load sharing at every angle step in both load directions. The chain's length
@@ -633,7 +631,6 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   }
   return LargestTerm(terms, 2e6 * factor, "roller load-sharing solves", 200);
 }
-const bool kEstimateRegistered = RegisterWorkEstimate("transmission_rigidity", EstimateWork);
 
 // Fidelity for `camopt run --convergence` (studies/convergence.h): the angle grid of every lobe
 // cam reducer in the chain (together); the other elements are closed forms.
@@ -654,22 +651,27 @@ Fidelity Knobs(const nlohmann::json& study) {
   f.headlines.insert(f.headlines.begin(), {"/rigidity_Nm_per_rad", "/rigidity_at_end_a_Nm_per_rad"});
   return f;
 }
-CAMOPT_REGISTER_FIDELITY("transmission_rigidity", Knobs);
-}  // namespace
 
-namespace {
-// report.html: the headline numbers and their limits.
-CAMOPT_REGISTER_REPORT("transmission_rigidity", {
-    {"torsional rigidity at end b", "/rigidity_at_end_b_Nm_per_rad", "N·m/rad", "/limits/rigidity_Nm_per_rad", NAN,
-     false},
-    {"torsional rigidity at end a", "/rigidity_at_end_a_Nm_per_rad", "N·m/rad"},
-    {"backlash at end b", "/backlash_at_end_b_arcmin", "arcmin", "/limits/backlash_arcmin"},
-    {"backlash at end a", "/backlash_at_end_a_arcmin", "arcmin"},
-    {"deflection at end b", "/deflection_at_end_b_deg", "deg", "/limits/deflection_deg"},
-    {"total ratio", "/total_ratio", ""},
-    {"most compliant element", "/dominant/name", ""},
-    {"its share of the compliance", "/dominant/compliance_share", ""},
-});
+CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+    .name = "transmission_rigidity",
+    .title = "camopt study: torsional rigidity, backlash and deflection of a drive train from its elements",
+    .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,
+    .report = std::vector<Headline>{
+        {"torsional rigidity at end b", "/rigidity_at_end_b_Nm_per_rad", "N·m/rad", "/limits/rigidity_Nm_per_rad", NAN,
+         false},
+        {"torsional rigidity at end a", "/rigidity_at_end_a_Nm_per_rad", "N·m/rad"},
+        {"backlash at end b", "/backlash_at_end_b_arcmin", "arcmin", "/limits/backlash_arcmin"},
+        {"backlash at end a", "/backlash_at_end_a_arcmin", "arcmin"},
+        {"deflection at end b", "/deflection_at_end_b_deg", "deg", "/limits/deflection_deg"},
+        {"total ratio", "/total_ratio", ""},
+        {"most compliant element", "/dominant/name", ""},
+        {"its share of the compliance", "/dominant/compliance_share", ""},
+    },
+    .asked = std::vector<AskedBlock>{
+        {{"/load_torque_Nm"}, "/deflection_at_end_b_deg", "the deflection under load"},
+        {{"/report_radius_mm"}, "/linear_stiffness_at_report_radius_N_per_mm", "the stiffness at the radius"},
+    },
+    .init_example = "rigidity_gearbox"});
 }  // namespace
 
 }  // namespace camopt::studies::transmission_rigidity

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "studies/input.h"
+#include "studies/kind.h"
 
 namespace camopt::studies {
 
@@ -51,23 +52,10 @@ WorkEstimate LargestTerm(std::vector<WorkTerm> terms, double cap, std::string un
   return e;
 }
 
-namespace {
-std::map<std::string, WorkEstimator>& EstimatorRegistry() {
-  static std::map<std::string, WorkEstimator> registry;
-  return registry;
-}
-}  // namespace
-
-bool RegisterWorkEstimate(const std::string& kind, WorkEstimator estimator) {
-  EstimatorRegistry()[kind] = std::move(estimator);
-  return true;
-}
-
 WorkEstimate EstimateWork(const json& study, const std::string& file, double factor) {
   const json& kind_json = Sub(study, "study");
   const std::string kind = kind_json.is_string() ? kind_json.get<std::string>() : "";
-  if (const auto it = EstimatorRegistry().find(kind); it != EstimatorRegistry().end())
-    return it->second(study, file, factor);
+  if (const KindDescriptor* k = FindKind(kind); k && k->estimate) return k->estimate(study, file, factor);
   WorkEstimate none;
   none.cap = 1;
   return none;

@@ -58,8 +58,6 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
 /// the study with the same message).
 using WorkEstimator =
     std::function<WorkEstimate(const nlohmann::json& study, const std::string& file, double factor)>;
-/// Registers a kind's estimate (EstimateWork then calls it); returns true (for a static).
-bool RegisterWorkEstimate(const std::string& kind, WorkEstimator estimator);
 
 /// One term of an estimate: the work it adds, the path that sets it and how it was formed.
 struct WorkTerm {

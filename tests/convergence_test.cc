@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/convergence.h"
+#include "studies/kind.h"
 #include "studies/study.h"
 #include "tests/test_util.h"
 

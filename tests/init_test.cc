@@ -12,6 +12,7 @@
 
 #include "studies/archive.h"
 #include "studies/init.h"
+#include "studies/kind.h"
 #include "studies/study.h"
 #include "tests/test_util.h"
 #include "tests/verdict_check.h"
@@ -23,10 +24,6 @@ using camopt::testing::ReadFile;
 using camopt::testing::RunCamopt;
 using camopt::testing::TempDir;
 using nlohmann::json;
-
-// The kinds whose schema is still a hand-kept file: their template is the example as written.
-// A kind that becomes declared fails here until it is taken off this list. Every kind is declared.
-const std::set<std::string> kNotDeclaredYet = {};
 
 // Every property of an object schema that has a "default" is in `study` (recursively into the
 // objects the study holds); the pointers of those missing are appended to `missing`.
@@ -57,15 +54,10 @@ TEST(Init, EveryKindsStudyRunsAndDeclaredKindsSpellOutEveryDefault) {
       for (const char* limit : {"pressure_angle_deg", "radius_margin_mm", "contact_stress_MPa"})
         EXPECT_TRUE(study["limits"].contains(limit)) << limit;
     }
-    const bool declared = studies::DeclaredSchema(kind) != nullptr;
-    EXPECT_EQ(declared, !kNotDeclaredYet.count(kind));
-    EXPECT_EQ(studies::InitTemplate(kind).every_default, declared);
-    if (declared) {
-      std::vector<std::string> missing;
-      DefaultsPresent(json::parse(*studies::DeclaredSchema(kind)), study, "", missing);
-      EXPECT_TRUE(missing.empty()) << "fields with a default not written: " << ::testing::PrintToString(missing);
-      EXPECT_NE(wrote.stderr_text.find("every field and default spelled out"), std::string::npos);
-    }
+    std::vector<std::string> missing;
+    DefaultsPresent(json::parse(*studies::DeclaredSchema(kind)), study, "", missing);
+    EXPECT_TRUE(missing.empty()) << "fields with a default not written: " << ::testing::PrintToString(missing);
+    EXPECT_NE(wrote.stderr_text.find("every field and default spelled out"), std::string::npos);
     const auto ran = RunCamopt("run " + file.string() + " --quiet --out " + (dir / (kind + "_out")).string());
     EXPECT_EQ(ran.exit_code, 0) << ran.stderr_text;
     EXPECT_TRUE(std::filesystem::exists(dir / (kind + "_out") / "result.json"));

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/archive.h"
+#include "studies/kind.h"
 #include "studies/provenance.h"
 #include "tests/test_util.h"
 

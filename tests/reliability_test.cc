@@ -23,6 +23,7 @@
 
 #include "studies/init.h"
 #include "studies/input.h"
+#include "studies/kind.h"
 #include "studies/study.h"
 #include "studies/work_limits.h"
 #include "studies/status.h"

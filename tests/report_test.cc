@@ -170,16 +170,15 @@ Outputs SampleOutputs(double stress) {
   return out;
 }
 
-const bool kRegistered = RegisterReport(
-    "report_test_kind", {{"largest stress", "/max_stress_MPa", "MPa", "/limit_MPa"},
-                         {"margin", "/margin_mm", "mm", "study:/limits/margin_mm", 0.0, false},
-                         {"not in this result", "/absent", "N"},
-                         {"status", "/status", ""}});
+// A kind's report rows (KindDescriptor::report), given to HtmlReport and EvaluateHeadlines directly.
+const std::vector<Headline> kTestHeadlines = {{"largest stress", "/max_stress_MPa", "MPa", "/limit_MPa"},
+                                              {"margin", "/margin_mm", "mm", "study:/limits/margin_mm", 0.0, false},
+                                              {"not in this result", "/absent", "N"},
+                                              {"status", "/status", ""}};
 
 TEST(HtmlReport, HeadlinesWithLimitsPassOrFail) {
-  ASSERT_TRUE(kRegistered);
   const nlohmann::json study = {{"study", "report_test_kind"}, {"name", "sample"}, {"limits", {{"margin_mm", 0.5}}}};
-  const std::string html = HtmlReport("report_test_kind", study, SampleOutputs(1400));
+  const std::string html = HtmlReport("report_test_kind", &kTestHeadlines, study, SampleOutputs(1400));
   // 1400 ≤ 1500 passes; 0.2 ≥ 0.5 (the study's limit) fails.
   EXPECT_NE(html.find("1 of 2 limits exceeded"), std::string::npos);
   EXPECT_EQ(Count(html, ">pass</td>"), 1);
@@ -189,19 +188,18 @@ TEST(HtmlReport, HeadlinesWithLimitsPassOrFail) {
   EXPECT_NE(html.find("100 MPa"), std::string::npos);  // the stress margin
   EXPECT_EQ(html.find("not in this result"), std::string::npos);
   EXPECT_NE(html.find(">converged<"), std::string::npos);
-  const std::string all_pass = HtmlReport("report_test_kind", {{"name", "sample"}}, SampleOutputs(1400));
+  const std::string all_pass =
+      HtmlReport("report_test_kind", &kTestHeadlines, {{"name", "sample"}}, SampleOutputs(1400));
   EXPECT_NE(all_pass.find("All 2 limits met"), std::string::npos);  // margin limit defaults to 0
 }
 
 TEST(HtmlReport, AValueBelowItsResolutionOrItsErrorIsShownAsZero) {
-  static const bool registered = RegisterReport(
-      "report_test_resolution", {{"offset", "/offset_mm", "mm", "", NAN, true, "", "", "", 1e-6},
-                                 {"tilt", "/tilt_deg", "deg", "", NAN, true, "/tilt_error_deg"},
-                                 {"length", "/length_mm", "mm", "", NAN, true, "", "", "", 1e-6}});
-  ASSERT_TRUE(registered);
+  static const std::vector<Headline> headlines = {{"offset", "/offset_mm", "mm", "", NAN, true, "", "", "", 1e-6},
+                                                  {"tilt", "/tilt_deg", "deg", "", NAN, true, "/tilt_error_deg"},
+                                                  {"length", "/length_mm", "mm", "", NAN, true, "", "", "", 1e-6}};
   const nlohmann::json result = {{"offset_mm", 1.31078e-10}, {"tilt_deg", 2e-7}, {"tilt_error_deg", 1e-5},
                                  {"length_mm", 12.5}};
-  const HeadlineTable t = EvaluateHeadlines("report_test_resolution", nlohmann::json::object(), result);
+  const HeadlineTable t = EvaluateHeadlines(&headlines, nlohmann::json::object(), result);
   ASSERT_EQ(t.rows.size(), 3u);
   EXPECT_EQ(t.rows[0].value, "0 mm");
   EXPECT_EQ(t.rows[1].value.rfind("0 ± ", 0), 0u) << t.rows[1].value;
@@ -209,28 +207,29 @@ TEST(HtmlReport, AValueBelowItsResolutionOrItsErrorIsShownAsZero) {
 }
 
 TEST(HtmlReport, LimitsMetWithALimitNotSetIsNotGreen) {
-  static const bool registered = RegisterReport(
-      "report_test_unset", {{"largest stress", "/max_stress_MPa", "MPa", "study:/limits/contact_stress_MPa"},
-                            {"margin", "/margin_mm", "mm", "/limit_mm", NAN, false}});
-  ASSERT_TRUE(registered);
+  static const std::vector<Headline> headlines = {
+      {"largest stress", "/max_stress_MPa", "MPa", "study:/limits/contact_stress_MPa"},
+      {"margin", "/margin_mm", "mm", "/limit_mm", NAN, false}};
   Outputs out;
   out.SetResultJson({{"max_stress_MPa", 7682.0}, {"margin_mm", 0.5}, {"limit_mm", 0.0}});
   // The study sets no stress limit: the one limit set is met, the stress is named as not checked,
   // and the banner is amber, not green.
-  const std::string unset = HtmlReport("report_test_unset", {{"name", "x"}}, out);
+  const std::string unset = HtmlReport("report_test_unset", &headlines, {{"name", "x"}}, out);
   EXPECT_NE(unset.find("<div class=\"verdict partial\">The limit is met; not checked, no limit set: largest stress"),
             std::string::npos)
       << unset;
   // With the stress limit set and met: green.
-  const std::string all = HtmlReport("report_test_unset", {{"name", "x"}, {"limits", {{"contact_stress_MPa", 8000}}}}, out);
+  const std::string all =
+      HtmlReport("report_test_unset", &headlines, {{"name", "x"}, {"limits", {{"contact_stress_MPa", 8000}}}}, out);
   EXPECT_NE(all.find("<div class=\"verdict ok\">All 2 limits met"), std::string::npos) << all;
   // Set and exceeded: red.
-  const std::string bad = HtmlReport("report_test_unset", {{"name", "x"}, {"limits", {{"contact_stress_MPa", 1500}}}}, out);
+  const std::string bad =
+      HtmlReport("report_test_unset", &headlines, {{"name", "x"}, {"limits", {{"contact_stress_MPa", 1500}}}}, out);
   EXPECT_NE(bad.find("<div class=\"verdict bad\">1 of 2 limits exceeded: largest stress"), std::string::npos) << bad;
 }
 
 TEST(HtmlReport, WarningsEscapedEveryPlotInlineNothingExternal) {
-  const std::string html = HtmlReport("report_test_kind", {{"name", "a <name>"}}, SampleOutputs(1600));
+  const std::string html = HtmlReport("report_test_kind", &kTestHeadlines, {{"name", "a <name>"}}, SampleOutputs(1600));
   EXPECT_NE(html.find("roller &lt;b&gt; is small"), std::string::npos);
   EXPECT_NE(html.find("a &lt;name&gt;"), std::string::npos);
   EXPECT_EQ(Count(html, "<svg "), 2);
@@ -244,15 +243,15 @@ TEST(HtmlReport, WarningsEscapedEveryPlotInlineNothingExternal) {
 TEST(HtmlReport, AnSvgWithoutViewBoxGetsOneSoThatThePageScalesItWithoutCropping) {
   Outputs out = SampleOutputs(1400);
   out.Add("map.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1450\" height=\"440\"><rect/></svg>\n");
-  const std::string html = HtmlReport("report_test_kind", {{"name", "n"}}, out);
+  const std::string html = HtmlReport("report_test_kind", &kTestHeadlines, {{"name", "n"}}, out);
   EXPECT_NE(html.find("<svg viewBox=\"0 0 1450 440\" xmlns="), std::string::npos);
   EXPECT_EQ(Count(html, "<figure class=\"wide\">"), 1);  // wider than a grid column: full width
 }
 
 TEST(HtmlReport, SameOutputsSamePage) {
   const nlohmann::json study = {{"name", "x"}, {"b", {1, 2}}, {"a", {{"c", "d"}}}};
-  EXPECT_EQ(HtmlReport("report_test_kind", study, SampleOutputs(1400)),
-            HtmlReport("report_test_kind", study, SampleOutputs(1400)));
+  EXPECT_EQ(HtmlReport("report_test_kind", &kTestHeadlines, study, SampleOutputs(1400)),
+            HtmlReport("report_test_kind", &kTestHeadlines, study, SampleOutputs(1400)));
 }
 
 TEST(HtmlReport, UnregisteredKindShowsTopLevelNumbers) {
@@ -267,16 +266,16 @@ TEST(HtmlReport, UnregisteredKindShowsTopLevelNumbers) {
 TEST(HtmlReport, ASizingResultWithoutADesignSaysSoInsteadOfNoLimits) {
   Outputs out;
   out.SetResultJson({{"best", nullptr}, {"notes", {"edge-loaded: crown the rollers"}}});
-  const HeadlineTable table = EvaluateHeadlines("report_test_kind", {{"name", "n"}},
+  const HeadlineTable table = EvaluateHeadlines(&kTestHeadlines, {{"name", "n"}},
                                                 *out.result());
   EXPECT_TRUE(table.no_design);
   EXPECT_EQ(VerdictOf(table, nlohmann::json::object()), "No design meets the limits: edge-loaded: crown the rollers");
-  const std::string html = HtmlReport("report_test_kind", {{"name", "n"}}, out);
+  const std::string html = HtmlReport("report_test_kind", &kTestHeadlines, {{"name", "n"}}, out);
   EXPECT_NE(html.find("<div class=\"verdict bad\">No design meets the limits: edge-loaded"), std::string::npos);
   EXPECT_EQ(html.find("No limits to check"), std::string::npos);
   Outputs bare;
   bare.SetResultJson({{"best", nullptr}});
-  EXPECT_EQ(VerdictOf(EvaluateHeadlines("report_test_kind", {}, *bare.result()),
+  EXPECT_EQ(VerdictOf(EvaluateHeadlines(&kTestHeadlines, {}, *bare.result()),
                       nlohmann::json::object()),
             "No design meets the limits (result.json: best is null)");
 }

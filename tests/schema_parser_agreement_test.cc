@@ -1,6 +1,6 @@
 // The JSON Schemas `camopt schema KIND` prints and the C++ parsers of studies/ accept the same
 // studies (docs/studies.md "Keeping the schemas in step with the parsers", docs/reliability.md
-// item 13). Every kind is declared once (studies/archive.h, listed in kDeclaredKinds below) and has
+// item 13). Every kind is declared once (studies/kind.h, every registered kind) and has
 // its schema emitted from the declaration. For every study kind, studies are generated from the
 // kind's schema, starting from each
 // example of that kind in studies/examples/: every optional property the schema declares added
@@ -26,6 +26,7 @@
 
 #include "studies/archive.h"
 #include "studies/input.h"
+#include "studies/kind.h"
 #include "studies/schemas.h"
 #include "studies/study.h"
 #include "test_util.h"
@@ -683,11 +684,6 @@ TEST(SchemaParserAgreement, EveryKindsParserAcceptsExactlyWhatItsSchemaAccepts) 
 }
 
 // ---------------------------------------------------------------------------------------------
-// The kinds declared once (studies/archive.h). Migrating a kind to a declaration adds it here.
-const std::vector<std::string> kDeclaredKinds = {"globoidal_cam", "lcr_friction_fit", "transmission_rigidity",
-                                                 "disc_cam", "disc_cam_min_size", "disc_cam_motion", "cycloid_ltca", "cycloid_min_size",
-                                                 "lcr_analysis", "cycloid_crowning_tuning", "lcr_crowning_tuning",
-                                                 "lcr_min_size"};
 
 // The examples of a kind in studies/examples/, sorted.
 std::vector<fs::path> ExamplesOf(const std::string& kind) {
@@ -713,10 +709,10 @@ void Properties(const json& schema, const std::string& path, std::vector<std::pa
 }
 
 TEST(SchemaParserAgreement, DeclaredKindsHaveOneSchemaEmittedFromTheDeclaration) {
-  for (const std::string& kind : kDeclaredKinds) {
+  for (const std::string& kind : studies::StudyKinds()) {
     SCOPED_TRACE(kind);
     const std::string* emitted = studies::DeclaredSchema(kind);
-    ASSERT_NE(emitted, nullptr) << "not declared (CAMOPT_REGISTER_DECLARED_KIND)";
+    ASSERT_NE(emitted, nullptr) << "not registered (CAMOPT_REGISTER_KIND)";
     EXPECT_EQ(studies::StudySchema(kind), *emitted);
     EXPECT_FALSE(fs::exists(fs::path(CAMOPT_SOURCE_DIR) / "studies" / "schema" / (kind + ".schema.json")))
         << "a hand-kept schema beside the declaration";
@@ -736,14 +732,14 @@ TEST(SchemaParserAgreement, DeclaredKindsHaveOneSchemaEmittedFromTheDeclaration)
 // docs/studies.md shows each declared kind's fields as `camopt schema KIND --table` prints them.
 TEST(SchemaParserAgreement, DeclaredKindsFieldTablesInTheDocsAreTheEmittedOnes) {
   const std::string docs = ReadFile(fs::path(CAMOPT_SOURCE_DIR) / "docs" / "studies.md");
-  for (const std::string& kind : kDeclaredKinds) {
+  for (const std::string& kind : studies::StudyKinds()) {
     const std::string table = studies::SchemaFieldTable(nlohmann::ordered_json::parse(studies::StudySchema(kind)));
     EXPECT_NE(docs.find("## " + kind + "\n"), std::string::npos) << kind;
     EXPECT_NE(docs.find(table), std::string::npos)
         << kind << ": docs/studies.md does not have the table of `camopt schema " << kind << " --table`:\n" << table;
   }
   // And the keys of each declared result.json (`camopt schema KIND --result --table`).
-  for (const std::string& kind : studies::KindsWithDeclaredResult()) {
+  for (const std::string& kind : studies::StudyKinds()) {
     const std::string table =
         studies::SchemaFieldTable(nlohmann::ordered_json::parse(studies::StudyResultSchema(kind)), true);
     EXPECT_NE(docs.find("<!-- camopt schema " + kind + " --result --table -->\n" + table), std::string::npos)
@@ -805,11 +801,11 @@ json Restrict(const json& a, const json& b) {
 // that have a default, and the same with every default written out, are accepted and read (the
 // declaration's echo: every field as the kind uses it) to the same values.
 TEST(SchemaParserAgreement, DeclaredDefaultsAreTheParsersDefaults) {
-  for (const std::string& kind : kDeclaredKinds) {
+  for (const std::string& kind : studies::StudyKinds()) {
     const json schema = json::parse(studies::StudySchema(kind));
     const Validator validator(schema);
-    const studies::DeclaredEcho echo = studies::FindDeclaredEcho(kind);
-    ASSERT_NE(echo, nullptr) << kind;
+    ASSERT_NE(studies::FindKind(kind), nullptr) << kind;
+    const studies::DeclaredEcho echo = studies::FindKind(kind)->echo;
     const auto examples = ExamplesOf(kind);
     ASSERT_FALSE(examples.empty()) << kind;
     for (const auto& file : examples) {
@@ -838,7 +834,7 @@ TEST(SchemaParserAgreement, DeclaredDefaultsAreTheParsersDefaults) {
 // sample (the first refused case of each kind: exit 2, the line on stderr).
 TEST(SchemaParserAgreement, DeclaredKindsRefuseWhatTheSchemaRefusesWithExit2) {
   int refused = 0, spawned = 0;
-  for (const std::string& kind : kDeclaredKinds) {
+  for (const std::string& kind : studies::StudyKinds()) {
     const json schema = json::parse(studies::StudySchema(kind));
     const Validator validator(schema);
     const fs::path example_file = ExamplesOf(kind).front();
@@ -876,7 +872,7 @@ TEST(SchemaParserAgreement, DeclaredKindsRefuseWhatTheSchemaRefusesWithExit2) {
     }
   }
   EXPECT_GT(refused, 50);
-  EXPECT_EQ(spawned, int(kDeclaredKinds.size()));
+  EXPECT_EQ(spawned, int(studies::StudyKinds().size()));
 }
 
 }  // namespace schema_parser_agreement_test
