@@ -77,6 +77,18 @@ if(CAMOPT_BUILD_TESTS)
              WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
     set_tests_properties(Python.${t} PROPERTIES ENVIRONMENT "${CAMOPT_PY_ENV}" TIMEOUT 600)
   endforeach()
+  # Every example's result.json against its result schema (python/tests/test_result_examples.py):
+  # every example run through the command line, 4.5 min of CPU in all, so in six shards of about
+  # 35 s each (the one test it was took 210 s and ran last on a fresh clone, one core idle).
+  set(camopt_result_example_shards 6)
+  math(EXPR last "${camopt_result_example_shards} - 1")
+  foreach(shard RANGE ${last})
+    add_test(NAME Python.result_examples/shard${shard}
+             COMMAND ${CAMOPT_PYTHON} -m unittest -v test_result_examples
+             WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)
+    set_tests_properties(Python.result_examples/shard${shard} PROPERTIES TIMEOUT 300 COST 35 ENVIRONMENT
+      "${CAMOPT_PY_ENV};CAMOPT_EXAMPLE_SHARD=${shard}/${camopt_result_example_shards}")
+  endforeach()
   # The wheel in a fresh venv, without PYTHONPATH, and `pip install .` (python/tests/test_wheel.py).
   add_test(NAME Python.wheel COMMAND ${CAMOPT_PYTHON} -m unittest -v test_wheel
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/python/tests)

@@ -4,7 +4,7 @@
 // the convergence headlines of each example — names a member the schema declares, so that a
 // renamed result field fails here and not in a user's report or sweep. (That each example's
 // result.json validates against the schema is checked by an independent validator, jsonschema, in
-// python/tests/test_schemas.py.)
+// python/tests/test_result_examples.py.)
 #include <algorithm>
 #include <filesystem>
 #include <optional>

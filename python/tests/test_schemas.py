@@ -112,46 +112,21 @@ class BadStudies(unittest.TestCase):
 
 class ResultSchemas(unittest.TestCase):
     """`camopt schema KIND --result`: the schema of result.json, emitted from the kind's declared
-    result (studies/archive.h). Every example of a kind whose result is declared writes a
-    result.json that validates against it (checked by jsonschema, not by camopt), and the binary
-    and the module print the same schema."""
+    result (studies/archive.h): one per kind, the same from the binary and the module, and one that
+    refuses a result with a member dropped, added or of another type. That every example's
+    result.json validates against it is test_result_examples.py, in shards."""
 
-    def declared(self):
-        kinds = {}
-        for k in camopt.kinds():
-            out = subprocess.run([helpers.BINARY, "schema", k, "--result"], capture_output=True, text=True)
-            if out.returncode == 0:
-                kinds[k] = json.loads(out.stdout)
-                self.assertEqual(camopt.schema(k, result=True), kinds[k], k)
-            else:
-                self.assertEqual(out.returncode, 2, k)
-                self.assertIn("not declared yet", out.stderr, k)
-                with self.assertRaises(camopt.StudyError):
-                    camopt.schema(k, result=True)
-        return kinds
-
-    def test_every_example_of_a_declared_kind_validates(self):
+    def test_every_kind_has_one_and_the_module_prints_the_same(self):
         if not helpers.BINARY:
             self.skipTest("CAMOPT_BINARY not set (run through ctest)")
-        schemas = self.declared()
-        self.assertIn("transmission_rigidity", schemas)
-        checked = 0
-        with tempfile.TemporaryDirectory() as tmp:
-            for path in helpers.study_examples():
-                kind = json.loads(path.read_text())["study"]
-                if kind not in schemas:
-                    continue
-                Validator.check_schema(schemas[kind])
-                out = pathlib.Path(tmp) / path.stem
-                run = subprocess.run([helpers.BINARY, "run", "-q", str(path), "-o", str(out)],
-                                     capture_output=True, text=True)
-                self.assertIn(run.returncode, (0, 3), run.stderr)
-                result = json.loads((out / "result.json").read_text())
-                problems = [f"/{'/'.join(str(p) for p in e.absolute_path)}: {e.message}"
-                            for e in Validator(schemas[kind]).iter_errors(result)]
-                self.assertEqual(problems, [], path.name)
-                checked += 1
-        self.assertGreaterEqual(checked, 6)
+        kinds = camopt.kinds()
+        self.assertIn("transmission_rigidity", kinds)
+        for k in kinds:
+            out = subprocess.run([helpers.BINARY, "schema", k, "--result"], capture_output=True, text=True)
+            self.assertEqual(out.returncode, 0, f"{k}: {out.stderr}")
+            schema = json.loads(out.stdout)
+            Validator.check_schema(schema)
+            self.assertEqual(camopt.schema(k, result=True), schema, k)
 
     def test_a_result_missing_a_member_or_with_an_unknown_one_fails(self):
         if not helpers.BINARY:
