@@ -11,7 +11,8 @@
 //   CAMOPT_REGISTER_KIND(Kind<Input, Result>{.name = "my_kind", .title = "camopt study: …", .run = Run});
 //
 // The rest is optional and named where the kind has it (designated initialisers, in the order of
-// Kind's members): a model-unit Study made from the Input by `.parse`, the files beside result.json
+// Kind's members): `.parse` for the checks between fields (returning the Input itself, or a
+// model-unit Study made from it where a kind still has one), the files beside result.json
 // by `.write`, `.summary` on stderr, `.knobs`, `.estimate`, `.report`, `.datasheet`, `.asked`,
 // `.init_example`, `.mechanism`, and for a sizing kind `.sizing_of` and `.start_study`.
 #pragma once

@@ -28,49 +28,41 @@
 namespace camopt::studies::lcr_friction_fit {
 namespace {
 
-// A fitted parameter from its declaration: equal bounds leave nothing to fit (and Ceres refuses them
-// with an opaque message); a start within the bounds.
-Parameter ToParameter(const Input::Parameter& in, double default_start, const Node& root, const char* key) {
+// The friction coefficient starts at the paper's μ, the drag at none (each clamped into its bounds).
+constexpr double kStartFriction = lcr::kPaperFrictionCoefficient, kStartDrag = 0.0;
+
+// A parameter's bounds and start: equal bounds leave nothing to fit (and Ceres refuses them with an
+// opaque message); a start within the bounds.
+void CheckParameter(const Input::Parameter& in, double default_start, const Node& root, const char* key) {
   const auto node = [&](const char* field) { return root["parameters"][key][field]; };
-  Parameter out;
-  out.lower = in.bounds[0], out.upper = in.bounds[1];
-  if (!(out.lower < out.upper)) node("bounds").Fail("[lower, upper] with lower < upper");
-  out.initial = in.initial.value_or(std::clamp(default_start, out.lower, out.upper));
-  if (out.initial < out.lower || out.initial > out.upper)
-    node("initial").Fail("a number within the bounds [" + std::to_string(out.lower) + ", " +
-                         std::to_string(out.upper) + "]");
-  return out;
+  const double lower = in.bounds[0], upper = in.bounds[1];
+  if (!(lower < upper)) node("bounds").Fail("[lower, upper] with lower < upper");
+  const double start = in.Start(default_start);
+  if (start < lower || start > upper)
+    node("initial").Fail("a number within the bounds [" + std::to_string(lower) + ", " + std::to_string(upper) + "]");
 }
 
-bool AtBound(double x, const Parameter& p) { return x <= p.lower + 1e-12 || x >= p.upper - 1e-12; }
+bool AtBound(double x, const Input::Parameter& p) { return x <= p.bounds[0] + 1e-12 || x >= p.bounds[1] - 1e-12; }
 
 }  // namespace
 
-// The checks between fields and the conversion of the declared input.
-Study Parse(const Node& root) {
-  const Input in = Read<Input>(root);
-  Study st;
-  st.name = in.name;
-  st.reducer = ToReducer(in.reducer, root["reducer"]);
-  if (in.material) st.material = in.material->ToMaterial();
-  for (const Input::Measurement& m : in.measurements)
-    st.measurements.push_back({m.output_torque_Nm, m.input_torque_Nm, m.input_torque_sd_Nm});
-  st.angle_steps = in.analysis.angle_steps;
-  st.min_p_value = in.limits.chi_square_p_value;
-  st.friction_coefficient = ToParameter(in.parameters.friction_coefficient, lcr::kPaperFrictionCoefficient, root,
-                                        "friction_coefficient");
-  st.drag_torque_Nm = ToParameter(in.parameters.drag_torque_Nm, 0.0, root, "drag_torque_Nm");
-  return st;
+Input Parse(const Node& root) {
+  Input in = Read<Input>(root);
+  (void)ToReducer(in.reducer, root["reducer"]);
+  CheckParameter(in.parameters.friction_coefficient, kStartFriction, root, "friction_coefficient");
+  CheckParameter(in.parameters.drag_torque_Nm, kStartDrag, root, "drag_torque_Nm");
+  return in;
 }
 
-Result Run(const Study& st, const RunContext& ctx) {
-  const lcr::Reducer<double>& r = st.reducer;
-  const std::vector<Measurement>& data = st.measurements;
+Result Run(const Input& in, const RunContext& ctx) {
+  const lcr::Reducer<double> r = ReducerOf(in.reducer);
+  const std::vector<Input::Measurement>& data = in.measurements;
   // Pipeline: loads on the eccentric per unit output torque (1 N·mm), no friction.
   lcr::CycleSeries series;
   try {
     Progress progress("lcr_friction_fit", ctx.quiet);
-    series = lcr::AnalyzeCycle(r, st.material, {1.0, 0.0, 0.0}, st.angle_steps, {true, false, true},
+    series = lcr::AnalyzeCycle(r, in.material ? in.material->ToMaterial() : Material{}, {1.0, 0.0, 0.0},
+                               in.analysis.angle_steps, {true, false, true},
                                [&](double f) { progress.Update(f); });
   } catch (const std::domain_error& e) {
     throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
@@ -82,17 +74,18 @@ Result Run(const Study& st, const RunContext& ctx) {
   res.speed_ratio = lcr::SpeedReductionRatio(r);
   const double ratio = std::abs(res.speed_ratio);
 
-  const Parameter& mu = st.friction_coefficient;
-  const Parameter& drag = st.drag_torque_Nm;
+  const Input::Parameter& mu = in.parameters.friction_coefficient;
+  const Input::Parameter& drag = in.parameters.drag_torque_Nm;
+  const double mu0 = mu.Start(kStartFriction), drag0 = drag.Start(kStartDrag);
   optimizers::LeastSquaresProblem p;
-  p.variables = {{"friction_coefficient", mu.lower, mu.upper, mu.initial, 0.1},
-                 {"drag_torque_Nm", drag.lower, drag.upper, drag.initial, 0.1}};
+  p.variables = {{"friction_coefficient", mu.bounds[0], mu.bounds[1], mu0, 0.1},
+                 {"drag_torque_Nm", drag.bounds[0], drag.bounds[1], drag0, 0.1}};
   const int m = static_cast<int>(data.size());
   // A measurement whose weighted residual at the start is not a number, or one whose square is not
   // (a torque of 1e308, a standard deviation of 1e-320), is the study's, not the fit's.
   for (int i = 0; i < m; ++i) {
-    const double r0 = (lcr::MeanInputTorque(unit, data[i].output_torque_Nm, mu.initial, drag.initial) -
-                       data[i].input_torque_Nm) / data[i].sd_Nm;
+    const double r0 = (lcr::MeanInputTorque(unit, data[i].output_torque_Nm, mu0, drag0) - data[i].input_torque_Nm) /
+                      data[i].input_torque_sd_Nm;
     if (!(std::abs(r0) <= 1e100))  // its square must stay a number too
       throw StudyError(ctx.study_file + ": /measurements/" + std::to_string(i) +
                        ": expected a measurement whose weighted residual (model - measured) / input_torque_sd_Nm "
@@ -104,7 +97,7 @@ Result Run(const Study& st, const RunContext& ctx) {
         using T = std::decay_t<decltype(x[0])>;
         for (size_t i = 0; i < data.size(); ++i) {
           const T model = lcr::MeanInputTorque(unit, T(data[i].output_torque_Nm), x[0], x[1]);
-          residuals[i] = (model - T(data[i].input_torque_Nm)) / T(data[i].sd_Nm);
+          residuals[i] = (model - T(data[i].input_torque_Nm)) / T(data[i].input_torque_sd_Nm);
         }
       });
   p.residuals = "weighted_residuals";
@@ -132,7 +125,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     }
     row.output_torque_Nm = data[i].output_torque_Nm;
     row.measured_input_torque_Nm = data[i].input_torque_Nm;
-    row.measured_sd_Nm = data[i].sd_Nm;
+    row.measured_sd_Nm = data[i].input_torque_sd_Nm;
     row.residual_Nm = row.fitted_input_torque_Nm - data[i].input_torque_Nm;
     row.weighted_residual = fit.residuals[i];
     row.fitted_efficiency = lcr::Efficiency(data[i].output_torque_Nm, row.fitted_input_torque_Nm, ratio);
@@ -140,7 +133,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     res.rows.push_back(row);
   }
   // result.json's members (Result's Serialize).
-  res.name = st.name;
+  res.name = in.name;
   res.fit_status = optimizers::ToString(fit.status);  // "status" is the answer's one status (studies/status.h)
   res.model = "T_in = drag_torque + mean[(F_t + mu |F_r|) e] (paper eq. 32 plus a no-load drag)";
   Result::FittedParameter* fitted[2] = {&res.parameters.friction_coefficient, &res.parameters.drag_torque_Nm};
@@ -159,10 +152,10 @@ Result Run(const Study& st, const RunContext& ctx) {
   res.reduced_chi_square = dof > 0 ? res.chi_square / dof : NAN;
   // The chi-square test: P(χ²(dof) ≥ χ²) = Q(dof/2, χ²/2), the regularized upper incomplete gamma.
   res.chi_square_p_value = dof > 0 ? boost::math::gamma_q(0.5 * dof, 0.5 * res.chi_square) : NAN;
-  res.chi_square_p_value_limit = st.min_p_value;
+  res.chi_square_p_value_limit = in.limits.chi_square_p_value;
   res.solver = {fit.message, fit.iterations, fit.residual_evaluations};
   double tmax = 0;
-  for (const Measurement& d : data) tmax = std::max(tmax, d.output_torque_Nm);
+  for (const Input::Measurement& d : data) tmax = std::max(tmax, d.output_torque_Nm);
   tmax *= 1.1;
   for (int i = 0; i <= 20; ++i) {
     res.line_output_torque_Nm.push_back(tmax * i / 20);
@@ -172,15 +165,15 @@ Result Run(const Study& st, const RunContext& ctx) {
   return res;
 }
 
-void Write(const Study& st, const Result& res, Outputs& out) {
+void Write(const Input& in, const Result& res, Outputs& out) {
   out.SetResult(res);
   if (res.fit.status != optimizers::SolverStatus::kConverged)
     out.SetStatus(Status::kNotConverged, std::string("the fit stopped: ") + optimizers::ToString(res.fit.status));
   std::vector<double> to, tin, tsd, tfit, resid;
   for (size_t i = 0; i < res.rows.size(); ++i) {
-    to.push_back(st.measurements[i].output_torque_Nm);
-    tin.push_back(st.measurements[i].input_torque_Nm);
-    tsd.push_back(st.measurements[i].sd_Nm);
+    to.push_back(in.measurements[i].output_torque_Nm);
+    tin.push_back(in.measurements[i].input_torque_Nm);
+    tsd.push_back(in.measurements[i].input_torque_sd_Nm);
     tfit.push_back(res.rows[i].fitted_input_torque_Nm);
     resid.push_back(res.rows[i].residual_Nm);
   }
@@ -220,7 +213,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                      2e7 * factor, "roller contact evaluations", 64);
 }
 
-CAMOPT_REGISTER_KIND(Kind<Input, Result, Study>{
+CAMOPT_REGISTER_KIND(Kind<Input, Result>{
     .name = "lcr_friction_fit",
     .title = "camopt study: friction coefficient and drag of a lobe cam reducer fitted to measured input torques",
     .run = Run, .parse = Parse, .write = Write, .knobs = Knobs, .estimate = EstimateWork,

@@ -1,8 +1,9 @@
 // Study kind "lcr_friction_fit": fits the friction law of model/lcr/friction.h (the paper's eq. 32
 // plus a no-load drag) to measured input torques, e.g. the paper's Table 4, by bounded least
-// squares with Ceres, with the parameters' covariance. Parse → Run → ToJson / Write.
+// squares with Ceres, with the parameters' covariance. Parse (the Input, checked) → Run → Write.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -22,17 +23,9 @@
 
 namespace camopt::studies::lcr_friction_fit {
 
-struct Measurement {
-  double output_torque_Nm = 0, input_torque_Nm = 0, sd_Nm = 0;
-};
-
-/// A fitted parameter: start value and bounds.
-struct Parameter {
-  double initial = 0, lower = 0, upper = 0;
-};
-
 /// The study file as declared: each field once, in the file's units, with its default, bounds
-/// and description (studies/archive.h); `camopt schema lcr_friction_fit` is emitted from it.
+/// and description (studies/archive.h); `camopt schema lcr_friction_fit` is emitted from it. It is
+/// also what Run takes: Parse checks what spans fields and returns it.
 struct Input {
   struct Measurement {
     double output_torque_Nm = 0, input_torque_Nm = 0, input_torque_sd_Nm = 0;
@@ -48,6 +41,10 @@ struct Input {
   struct Parameter {
     std::optional<double> initial;
     std::array<double, 2> bounds{0.0, 1.0};
+    /// Where the fit starts: `initial`, or the default start clamped into the bounds.
+    double Start(double default_start) const {
+      return initial.value_or(std::clamp(default_start, bounds[0], bounds[1]));
+    }
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("initial", &initial, Field().Desc("start of the fit, within the bounds (absent: the default start "
@@ -109,17 +106,6 @@ struct Input {
     a->Visit("analysis", &analysis, Field().Desc("the torque model's grid"));
     a->Visit("limits", &limits, Field().Desc("the fit's verdict"));
   }
-};
-
-/// What the study file says, parsed and validated.
-struct Study {
-  std::string name;
-  lcr::Reducer<double> reducer;
-  Material material;
-  std::vector<Measurement> measurements;  ///< at least 3
-  int angle_steps = 3600;
-  Parameter friction_coefficient, drag_torque_Nm;  ///< Input::Parameters' defaults
-  double min_p_value = 0.05;                       ///< limits.chi_square_p_value
 };
 
 /// The fitted model at one measurement (result.json's measurements[i]).
@@ -225,11 +211,12 @@ struct Result {
   std::vector<double> line_output_torque_Nm, line_input_torque_Nm;  ///< the fitted line, plotted
 };
 
-/// @throws StudyError (exit 2) naming the JSON path of bad input.
-Study Parse(const Node& root);
+/// The study as read, with the checks between fields (the design, the parameters' bounds and
+/// starts). @throws StudyError (exit 2) naming the JSON path of bad input.
+Input Parse(const Node& root);
 /// @throws StudyError for an infeasible design, std::runtime_error when the fit fails.
-Result Run(const Study& study, const RunContext& ctx);
+Result Run(const Input& in, const RunContext& ctx);
 /// result.json, fit.csv, fit.svg.
-void Write(const Study& study, const Result& result, Outputs& out);
+void Write(const Input& in, const Result& result, Outputs& out);
 
 }  // namespace camopt::studies::lcr_friction_fit

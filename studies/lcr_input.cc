@@ -10,16 +10,22 @@ namespace camopt::studies {
 
 namespace {
 
-// A side's design from its declared fields: the checks between them.
-lcr::CamSide<double> SideOf(const LcrSideInput& in, const Node& s) {
+// A side's design from its declared fields.
+lcr::CamSide<double> SideOf(const LcrSideInput& in) {
   lcr::CamSide<double> c;
   c.lobes = in.lobes;
   c.rollers = in.rollers;
   c.turret_radius = in.turret_radius_mm;
-  c.roller_radius = PlausibleLength(s["roller_diameter_mm"], c.turret_radius, "the turret radius") / 2;
-  c.roller_length = PlausibleLength(s["roller_length_mm"], c.turret_radius, "the turret radius");
-  c.cam_thickness = PlausibleLength(s["cam_thickness_mm"], c.turret_radius, "the turret radius");
+  c.roller_radius = in.roller_diameter_mm / 2;
+  c.roller_length = in.roller_length_mm;
+  c.cam_thickness = in.cam_thickness_mm;
   return c;
+}
+
+// The checks between a side's fields: lengths on the turret's scale.
+void CheckSide(const LcrSideInput& in, const Node& s) {
+  for (const char* key : {"roller_diameter_mm", "roller_length_mm", "cam_thickness_mm"})
+    PlausibleLength(s[key], in.turret_radius_mm, "the turret radius");
 }
 
 lcr::Reducer<double> Checked(const lcr::Reducer<double>& r, const Node& node) {
@@ -29,12 +35,18 @@ lcr::Reducer<double> Checked(const lcr::Reducer<double>& r, const Node& node) {
 
 }  // namespace
 
-lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node) {
+lcr::Reducer<double> ReducerOf(const LcrReducerInput& in) {
   lcr::Reducer<double> r;
   r.eccentricity = in.eccentricity_mm;
-  r.input = SideOf(in.input, node["input"]);
-  r.output = SideOf(in.output, node["output"]);
-  return Checked(r, node);
+  r.input = SideOf(in.input);
+  r.output = SideOf(in.output);
+  return r;
+}
+
+lcr::Reducer<double> ToReducer(const LcrReducerInput& in, const Node& node) {
+  CheckSide(in.input, node["input"]);
+  CheckSide(in.output, node["output"]);
+  return Checked(ReducerOf(in), node);
 }
 
 lcr::Reducer<double> ParseReducer(const Node& node) { return ToReducer(Read<LcrReducerInput>(node), node); }

@@ -167,6 +167,10 @@ struct LcrReducerWithRatingsInput {
 };
 using LcrRatedReducerInput = LcrReducerWithRatingsInput<LcrRatedSideInput, RatedEccentricBearingInput>;
 
+/// The model's reducer of a declared one (the file's units are the model's, mm): the conversion
+/// alone, for a design ToReducer has checked.
+lcr::Reducer<double> ReducerOf(const LcrReducerInput& in);
+
 /// The design of a reducer read from `node` as LcrReducerInput: the checks between fields (more
 /// rollers than lobes, lengths on the turret's scale, lcr::CheckDesign) with ParseReducer's
 /// messages. @throws StudyError naming the JSON path.

@@ -124,7 +124,7 @@ TEST(LcrFrictionFit, ChiSquareTestIsTheVerdict) {
   json study = json::parse(ReadFile(SourcePath("studies/examples/lcr_friction_fit.json")));
   ASSERT_EQ(study["measurements"].size(), 3u);
   const studies::Node root(&study, "fit.json", "");
-  const fit::Study st = fit::Parse(root);
+  const fit::Input st = fit::Parse(root);
   const json j = studies::WriteResult(fit::Run(st, {"fit.json", true}));
   ASSERT_EQ(j["degrees_of_freedom"], 1);
   const double chi2 = j["chi_square"].get<double>(), p = j["chi_square_p_value"].get<double>();
@@ -134,7 +134,7 @@ TEST(LcrFrictionFit, ChiSquareTestIsTheVerdict) {
   EXPECT_EQ(t.limits, 1);
   EXPECT_EQ(t.exceeded.empty(), p >= 0.05) << "p = " << p;
   study["limits"] = {{"chi_square_p_value", std::min(0.999, 2 * p)}};
-  const fit::Study strict = fit::Parse(studies::Node(&study, "fit.json", ""));
+  const fit::Input strict = fit::Parse(studies::Node(&study, "fit.json", ""));
   const json js = studies::WriteResult(fit::Run(strict, {"fit.json", true}));
   t = studies::EvaluateHeadlines("lcr_friction_fit", study, js);
   ASSERT_EQ(t.exceeded.size(), 1u);
@@ -153,7 +153,7 @@ TEST(LcrFrictionFit, CliWritesTheEntryPointsResult) {
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const json written = json::parse(ReadFile(dir / "out" / "result.json"));
   const studies::Node root(&study, "fit.json", "");
-  const fit::Study st = fit::Parse(root);
+  const fit::Input st = fit::Parse(root);
   EXPECT_EQ(camopt::testing::WithoutRunStamp(written), studies::WriteResult(fit::Run(st, {"fit.json", true})));
   for (const char* f : {"fit.csv", "fit.svg"}) EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   const auto table = camopt::testing::ReadCsv(ReadFile(dir / "out" / "fit.csv"));
