@@ -18,8 +18,11 @@
 #pragma once
 
 #include <functional>
+#include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
