@@ -47,7 +47,7 @@ using MechanismView = nlohmann::json (*)(const nlohmann::json& study, double inp
 /// and its run's optimum study (null when not run); a JSON string says why there is none.
 using StartStudyOf = nlohmann::json (*)(const Node& root, const nlohmann::json& optimum);
 
-/// One kind as the registry holds it (type-erased from a Kind<…>).
+/// One kind as the registry holds it (type-erased from a Kind of any Input, Result and Study).
 struct KindDescriptor {
   std::string name, title;
   /// Parse, solve and files, each timed as a phase of outputs (RunStudy).
