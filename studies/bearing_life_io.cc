@@ -10,10 +10,10 @@
 
 namespace camopt::studies {
 
-std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, double output_torque_Nmm,
-                                                         std::string* why) {
+std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, const std::vector<DutyCycleLine>* given,
+                                                         double output_torque_Nmm, std::string* why) {
   const bool speed = root.Has("load") && root["load"].Has("input_speed_rpm");
-  const bool duty = root.Has("duty_cycle");
+  const bool duty = given != nullptr;
   if (!speed && !duty) return std::nullopt;
   if (speed && duty)
     root["load"]["input_speed_rpm"].Fail("no input_speed_rpm when a \"duty_cycle\" is given (one or the other)");
@@ -23,20 +23,13 @@ std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, doubl
     lines.push_back({output_torque_Nmm, root["load"]["input_speed_rpm"].Positive(), 1.0});
     return lines;
   }
+  // Each line's fields are checked as read (DutyCycleLineInput): what spans the lines follows.
   const Node dc = root["duty_cycle"];
-  const std::vector<Node> items = dc.Elements();
-  if (items.empty()) dc.Fail("a non-empty array of duty-cycle lines");
   double share_sum = 0.0, speed_max = 0.0;
-  for (const Node& item : items) {
-    item.CheckKnownFields({"output_torque_Nm", "input_speed_rpm", "time_share"});
-    OperatingLine line;
-    line.output_torque_Nmm = item["output_torque_Nm"].NonNegative() * 1000.0;
-    line.input_speed_rpm = item["input_speed_rpm"].NonNegative();
-    line.time_share = item["time_share"].Positive();
-    if (line.time_share > 1.0) item["time_share"].Fail("a share in (0, 1]");
-    share_sum += line.time_share;
-    speed_max = std::max(speed_max, line.input_speed_rpm);
-    lines.push_back(line);
+  for (const DutyCycleLine& in : *given) {
+    lines.push_back({in.output_torque_Nm * 1000.0, in.input_speed_rpm, in.time_share});
+    share_sum += in.time_share;
+    speed_max = std::max(speed_max, in.input_speed_rpm);
   }
   if (!(std::abs(share_sum - 1.0) <= 1e-6))
     throw StudyError(dc.file() + ": " + dc.path() + ": expected time shares summing to 1 (within 1e-6), found " +

@@ -8,20 +8,51 @@
 #include <vector>
 
 #include "model/common/bearing_life.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 
 #include <nlohmann/json.hpp>
 
 namespace camopt::studies {
 
+/// One line of a duty cycle as the study file gives it ("duty_cycle": [{…}, …]), in its units.
+struct DutyCycleLine {
+  double output_torque_Nm = 0, input_speed_rpm = 0, time_share = 0;
+};
+
+/// A line's declaration (studies/archive.h); `Words` names the kind's torque and speed for the
+/// schema's descriptions (LcrDutyWords, cycloid_common::DutyWords).
+template <typename Words>
+struct DutyCycleLineInput : DutyCycleLine {
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("output_torque_Nm", &output_torque_Nm, Field().Required().NonNegative().Unit("N·m").Desc(Words::kTorque));
+    a->Visit("input_speed_rpm", &input_speed_rpm, Field().Required().NonNegative().Unit("rpm").Desc(Words::kSpeed));
+    a->Visit("time_share", &time_share,
+             Field().Required().Positive().AtMost(1.0, "a share in (0, 1]").Desc(
+                 "the share of the time in this line (the shares sum to 1 within 1e-6)"));
+  }
+};
+/// A kind's "duty_cycle" member: absent, or one line at least (Field::MinItems with this message).
+template <typename Words>
+using DutyCycleInput = std::optional<std::vector<DutyCycleLineInput<Words>>>;
+inline constexpr const char* kDutyCycleNotEmpty = "a non-empty array of duty-cycle lines";
+
 /// The duty cycle of a bearing life (docs/life.md): "load.input_speed_rpm" (> 0, one line at
-/// output_torque_Nmm, the study's own torque) or "duty_cycle": [{output_torque_Nm >= 0,
-/// input_speed_rpm >= 0, time_share in (0, 1]}, …] with shares summing to 1 within 1e-6 (then
-/// divided by their sum) and at least one speed > 0; not both. nullopt when neither is given.
-/// `why` (when given) receives the reason a rating is required ("a life is asked: … is given").
+/// output_torque_Nmm, the study's own torque) or the declared "duty_cycle" `lines` (each line's
+/// fields checked as read) with shares summing to 1 within 1e-6 (then divided by their sum) and at
+/// least one speed > 0; not both. nullopt when neither is given. `why` (when given) receives the
+/// reason a rating is required ("a life is asked: … is given").
 /// @throws StudyError naming the JSON path, what was expected and what was found.
-std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, double output_torque_Nmm,
-                                                         std::string* why = nullptr);
+std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, const std::vector<DutyCycleLine>* lines,
+                                                         double output_torque_Nmm, std::string* why = nullptr);
+template <typename Words>
+std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, const DutyCycleInput<Words>& duty,
+                                                         double output_torque_Nmm, std::string* why = nullptr) {
+  std::vector<DutyCycleLine> lines;
+  if (duty) lines.assign(duty->begin(), duty->end());
+  return ParseDutyCycle(root, duty ? &lines : nullptr, output_torque_Nmm, why);
+}
 
 /// A bearing's own inputs of the modified rating life (ISO 281:2007 §9.3; docs/life.md, "Modified
 /// rating life a_ISO"): its fatigue load limit C_u [N] and pitch diameter D_pw [mm], both > 0.

@@ -179,7 +179,8 @@ struct Input {
   std::optional<Optimizer> optimizer;
   std::optional<cycloid_common::CrowningStartInput> crowning;
   Analysis analysis;
-  nlohmann::json duty_cycle, crank_bearing, pins;
+  cycloid_common::CycloidDutyCycleInput duty_cycle;
+  nlohmann::json crank_bearing, pins;
   std::optional<cycloid_common::OutputMechanismInput> output_mechanism;
 
   template <typename Archive>

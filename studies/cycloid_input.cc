@@ -34,25 +34,6 @@ ojson CrowningRules(bool with_required) {
 ojson CrowningInput::SchemaRules() { return CrowningRules(true); }
 ojson CrowningStartInput::SchemaRules() { return CrowningRules(false); }
 
-ojson DutyCycleSchema() {
-  return {{"type", "array"},
-          {"minItems", 1},
-          {"items",
-           {{"type", "object"},
-            {"properties",
-             {{"output_torque_Nm",
-               {{"description", "the disc's torque in this line (one disc) [N·m]"}, {"type", "number"}, {"minimum", 0}}},
-              {"input_speed_rpm",
-               {{"description", "the input (crank) speed in this line [rpm]"}, {"type", "number"}, {"minimum", 0}}},
-              {"time_share",
-               {{"description", "the share of the time in this line (the shares sum to 1 within 1e-6)"},
-                {"type", "number"},
-                {"exclusiveMinimum", 0},
-                {"maximum", 1}}}}},
-            {"required", {"output_torque_Nm", "input_speed_rpm", "time_share"}},
-            {"additionalProperties", false}}}};
-}
-
 namespace {
 ojson RatingProperties(bool modified_life) {
   ojson p = {{"dynamic_rating_N",

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studies/archive.h"
+#include "studies/bearing_life_io.h"
 
 namespace camopt::studies::cycloid_common {
 
@@ -157,8 +158,13 @@ struct CompliantOutputMechanismInput {
   }
 };
 
-/// The schema of "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h).
-nlohmann::ordered_json DutyCycleSchema();
+/// A cycloid kind's "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h): lines of the
+/// disc's torque [N·m], the crank's speed [rpm] and the time share.
+struct DutyWords {
+  static constexpr const char* kTorque = "the disc's torque in this line (one disc)";
+  static constexpr const char* kSpeed = "the input (crank) speed in this line";
+};
+using CycloidDutyCycleInput = DutyCycleInput<DutyWords>;
 /// The schema of "crank_bearing" (ParseBearingRating with its kind); with `modified_life` (the kinds
 /// that report a_ISO, cycloid_ltca) also fatigue_load_limit_N and pitch_diameter_mm, together.
 nlohmann::ordered_json CrankBearingSchema(bool modified_life = false);
@@ -169,10 +175,10 @@ nlohmann::ordered_json PinRatingSchema(bool modified_life = false);
 /// description ends with `each_line`, what one line runs), "crank_bearing" and "pins" (kept as JSON,
 /// read by ParseLife against their schemas; with `modified_life` their C_u and D_pw of a_ISO).
 template <typename Archive>
-void VisitLifeRatings(Archive* a, nlohmann::json* duty_cycle, nlohmann::json* crank_bearing, nlohmann::json* pins,
+void VisitLifeRatings(Archive* a, CycloidDutyCycleInput* duty_cycle, nlohmann::json* crank_bearing, nlohmann::json* pins,
                       const std::string& each_line, bool modified_life = false) {
   a->Visit("duty_cycle", duty_cycle,
-           Field().Schema(DutyCycleSchema()).Desc(
+           Field().MinItems(1, kDutyCycleNotEmpty).Desc(
                "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
                "disc's torque" + each_line));
   a->Visit("crank_bearing", crank_bearing,

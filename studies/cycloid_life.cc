@@ -103,9 +103,8 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
 }
 
 nlohmann::ordered_json LifeJsonSchema() {
-  using ojson = nlohmann::ordered_json;
-  const ojson hours = {{"type", {"number", "null"}}, {"description", "[h] (null: unlimited)"}};
-  ojson p = ojson::object();
+  const nlohmann::ordered_json hours = {{"type", {"number", "null"}}, {"description", "[h] (null: unlimited)"}};
+  nlohmann::ordered_json p = nlohmann::ordered_json::object();
   p["shortest_L10h"] = hours;
   p["shortest_bearing"] = {{"type", "string"}};
   for (const char* element : {"crank_bearing_L10h", "pins_L10h", "eccentric_bearing_L10h"}) p[element] = hours;

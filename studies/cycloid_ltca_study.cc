@@ -247,7 +247,7 @@ Study Parse(const Node& root) {
   }
   ParseTolerances(root, in, s);
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
-  s.life = cycloid_common::ParseLife(root, s.drive, s.disc_torque_Nmm(), true, true);
+  s.life = cycloid_common::ParseLife(root, in.duty_cycle, s.drive, s.disc_torque_Nmm(), true, true);
   if (s.life && s.discs > 1)
     root["discs"].Fail("1 with a bearing life (the life is modelled for one disc; found " + std::to_string(s.discs) +
                        " discs)");

@@ -197,7 +197,8 @@ struct Input {
   std::optional<MaterialInput> material;
   std::optional<Load> load;
   std::optional<Analysis> analysis;
-  nlohmann::json geometry_files, duty_cycle, crank_bearing, pins;
+  cycloid_common::CycloidDutyCycleInput duty_cycle;
+  nlohmann::json geometry_files, crank_bearing, pins;
   std::optional<OutputMechanism> output_mechanism;
   int discs = 1;
   std::optional<double> disc_spacing_mm;

@@ -239,7 +239,8 @@ struct Input {
   Analysis analysis;
   Optimizer optimizer;
   std::optional<Load> load;
-  nlohmann::json duty_cycle, crank_bearing, pins;
+  cycloid_common::CycloidDutyCycleInput duty_cycle;
+  nlohmann::json crank_bearing, pins;
   std::optional<cycloid_common::CompliantOutputMechanismInput> output_mechanism;
   std::optional<LubricantInput> lubricant;
   std::optional<SurfacesInput> surfaces;

@@ -417,15 +417,16 @@ inline std::optional<CompliantOutputSpec> ParseCompliantOutput(const Node& root,
 inline LifeSpec ParseLifeRatings(const Node& root, const cycloid::Drive& d, const std::string& why,
                                  bool extended_output, bool modified_life);
 
-/// The life fields of a cycloid study: "load.input_speed_rpm" or "duty_cycle" (ParseDutyCycle, the
-/// one-line form at `torque_Nmm`), "crank_bearing": {kind, dynamic_rating_N, static_rating_N}
+/// The life fields of a cycloid study: "load.input_speed_rpm" or "duty_cycle" (`duty`, as declared;
+/// ParseDutyCycle, the one-line form at `torque_Nmm`), "crank_bearing": {kind, dynamic_rating_N, static_rating_N}
 /// (required with a life), "pins": {dynamic_rating_N, static_rating_N} (optional),
 /// "output_mechanism" (required with a life: the crank bearing's load needs R_w). Without a speed
 /// or a duty cycle the ratings are still checked and nullopt is returned. With `modified_life` (the
 /// kinds that report a_ISO) the rating blocks take fatigue_load_limit_N and pitch_diameter_mm, which
 /// need lubricant.contamination_factor (CheckModifiedLifeInputs).
 /// @throws StudyError naming the JSON path.
-inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive& d, double torque_Nmm,
+inline std::optional<LifeSpec> ParseLife(const Node& root, const CycloidDutyCycleInput& duty, const cycloid::Drive& d,
+                                         double torque_Nmm,
                                          bool extended_output = false, bool modified_life = false) {
   if (modified_life) {
     std::vector<Node> rated;
@@ -436,7 +437,7 @@ inline std::optional<LifeSpec> ParseLife(const Node& root, const cycloid::Drive&
     CheckModifiedLifeInputs(root, rated);
   }
   std::string why;
-  std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, torque_Nmm, &why);
+  std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, duty, torque_Nmm, &why);
   if (!lines) {
     const std::string unused = "checked: no speed or duty cycle is given, so no life is computed";
     if (root.Has("crank_bearing"))

@@ -212,11 +212,11 @@ BearingRating ParseRating(const Node& node, BearingKind kind, const std::string&
 // "load.input_speed_rpm" or "duty_cycle" (docs/life.md); nullopt when neither is given.
 std::optional<LifeSpec> ParseLife(const Input& in, const Node& root, const lcr::LoadCase& load) {
   std::string why;
-  std::optional<std::vector<lcr::LcrDutyLine>> lines = ParseDutyCycle(root, load.output_torque_Nmm, &why);
+  std::optional<std::vector<lcr::LcrDutyLine>> lines = ParseDutyCycle(root, in.duty_cycle, load.output_torque_Nmm, &why);
   if (!lines) return std::nullopt;
   LifeSpec life;
   life.lines = std::move(*lines);
-  life.from_duty_cycle = !in.duty_cycle.is_null();
+  life.from_duty_cycle = in.duty_cycle.has_value();
   const Node reducer = root["reducer"];
   life.input_roller = ParseRating(reducer["input"], BearingKind::kRoller, why);
   life.output_roller = ParseRating(reducer["output"], BearingKind::kRoller, why);
@@ -418,7 +418,7 @@ LifeResult RunLife(const Study& st, const std::string& file) {
 std::optional<Study::Lubrication> ParseLubrication(const Input& in, const Node& root) {
   const std::optional<double> speed = in.load ? in.load->input_speed_rpm : std::nullopt;
   std::optional<LubricationCommon> common = ParseLubricationCommon(root, in.lubricant, in.surfaces, in.efficiency_map,
-                                                                   speed, !in.duty_cycle.is_null());
+                                                                   speed, in.duty_cycle.has_value());
   if (!common) return std::nullopt;
   Study::Lubrication l;
   l.common = *common;
@@ -753,7 +753,6 @@ nlohmann::ordered_json Input::SchemaRules() {
   return rules;
 }
 
-nlohmann::ordered_json Input::DutyCycleSchema() { return LcrDutyCycleSchema(); }
 
 namespace {
 
@@ -1829,7 +1828,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                      WorkNumber(samples) + " Monte-Carlo samples × " + WorkNumber(mc_steps) + " angles × " +
                          WorkNumber(rollers) + " rollers × 2"});
   }
-  const bool duty = !in.duty_cycle.is_null();
+  const bool duty = in.duty_cycle.has_value();
   if (duty || (in.load && in.load->input_speed_rpm)) {
     // Bearing life (docs/life.md): per duty-cycle line, one force analysis per sample over each
     // bearing's load period (model/lcr/life.h): an input revolution (input roller), 2π m_A n_B/(n_A m_B)
@@ -1843,7 +1842,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
     const double ecc_revs = weight ? double(l / g) : double(l) / double(d);
     const double revs = 1.0 + double(ma * nb) / double(d) + ecc_revs;
     const double lines =
-        duty ? std::max<double>(1, in.duty_cycle.is_array() ? double(in.duty_cycle.size()) : 0.0) : 1.0;
+        duty ? std::max<double>(1, double(in.duty_cycle->size())) : 1.0;
     terms.push_back({lines * revs * steps * rollers, duty ? "/duty_cycle" : "/load/input_speed_rpm",
                      WorkNumber(lines) + " duty-cycle lines × " + WorkNumber(revs) +
                          " revolutions of bearing load periods × " + WorkNumber(steps) + " angle steps × " +

@@ -112,7 +112,7 @@ struct Input {
   std::optional<LcrMonteCarloInput> monte_carlo;
   nlohmann::json geometry_files;
   std::optional<LcrContactOptionsInput> contact;
-  nlohmann::json duty_cycle;
+  LcrDutyCycleInput duty_cycle;
   std::optional<LubricantWithContaminationInput> lubricant;
   std::optional<SurfacesInput> surfaces;
   std::optional<LcrBearingFrictionInput> bearing_friction;
@@ -162,7 +162,7 @@ struct Input {
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
     a->Visit("contact", &contact, Field().Desc("finite-length roller contact model (docs/lcr.md)"));
     a->Visit("duty_cycle", &duty_cycle,
-             Field().Schema(DutyCycleSchema()).Desc(
+             Field().MinItems(1, kDutyCycleNotEmpty).Desc(
                  "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
                  "1e-6, at least one speed > 0"));
     a->Visit("lubricant", &lubricant,
@@ -199,8 +199,6 @@ struct Input {
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();
-  /// The schema of "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h).
-  static nlohmann::ordered_json DutyCycleSchema();
 };
 
 /// The stages a study asks for ("analysis.evaluate"); stress and efficiency imply forces.

@@ -75,7 +75,7 @@ Study Parse(const Node& root) {
   }
   // The tuned design's lives (the tuning's objective stays the contact pressure).
   std::string why;
-  if (auto lines = ParseDutyCycle(root, sp.design_load.output_torque_Nmm, &why)) {
+  if (auto lines = ParseDutyCycle(root, in.duty_cycle, sp.design_load.output_torque_Nmm, &why)) {
     LifeSpec life;
     life.lines = std::move(*lines);
     for (int k = 0; k < 2; ++k) {

@@ -92,7 +92,7 @@ struct Input {
   MaterialInput material;
   Load load;
   Tuning tuning;
-  nlohmann::json duty_cycle;
+  LcrDutyCycleInput duty_cycle;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -105,7 +105,7 @@ struct Input {
     a->Visit("load", &load, Field().Required().Desc("the design and overload torques"));
     a->Visit("tuning", &tuning, Field().Required().Desc("the crowning's scan, the models' resolution and the check"));
     a->Visit("duty_cycle", &duty_cycle,
-             Field().Schema(LcrDutyCycleSchema()).Desc(
+             Field().MinItems(1, kDutyCycleNotEmpty).Desc(
                  "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
                  "1e-6, at least one speed > 0"));
   }

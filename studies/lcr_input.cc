@@ -60,24 +60,6 @@ double ParseCutterDiameter(const Node& side, double roller_diameter) {
   return d;
 }
 
-nlohmann::ordered_json LcrDutyCycleSchema() {
-  return nlohmann::ordered_json::parse(R"json({
-    "type": "array",
-    "minItems": 1,
-    "items": {
-      "type": "object",
-      "properties": {
-        "output_torque_Nm": {"description": "the output torque T_o in this line [N·m]", "type": "number", "minimum": 0},
-        "input_speed_rpm": {"description": "the input speed in this line [rpm]", "type": "number", "minimum": 0},
-        "time_share": {"description": "the share of the time in this line (the shares sum to 1 within 1e-6)",
-                       "type": "number", "exclusiveMinimum": 0, "maximum": 1}
-      },
-      "required": ["output_torque_Nm", "input_speed_rpm", "time_share"],
-      "additionalProperties": false
-    }
-  })json");
-}
-
 nlohmann::ordered_json LcrLifeSchemaRules() {
   return nlohmann::ordered_json::parse(R"([
     {"if": {"anyOf": [{"required": ["duty_cycle"]},

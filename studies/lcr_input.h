@@ -205,9 +205,13 @@ struct EccentricBearingRating {
   bool ball = false;
 };
 
-/// The schema of an LCR kind's "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h):
-/// lines of output torque T_o [N·m], input speed [rpm] and time share.
-nlohmann::ordered_json LcrDutyCycleSchema();
+/// An LCR kind's "duty_cycle" (read by ParseDutyCycle, studies/bearing_life_io.h): lines of output
+/// torque T_o [N·m], input speed [rpm] and time share.
+struct LcrDutyWords {
+  static constexpr const char* kTorque = "the output torque T_o in this line";
+  static constexpr const char* kSpeed = "the input speed in this line";
+};
+using LcrDutyCycleInput = DutyCycleInput<LcrDutyWords>;
 
 /// The rules of JSON Schema between an LCR kind's life fields (two entries of the root's "allOf"): a
 /// life (a duty cycle or load.input_speed_rpm) needs both cams' reducer.*.dynamic_rating_N, and the

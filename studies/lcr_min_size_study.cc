@@ -339,11 +339,11 @@ Study Parse(const Node& root) {
   s.output_torque_Nmm = in.target.output_torque_Nm * 1000.0;
   // A life (docs/life.md): a speed or a duty cycle; its ratings are read below.
   std::string life_why;
-  std::optional<std::vector<lcr::LcrDutyLine>> duty = ParseDutyCycle(root, s.output_torque_Nmm, &life_why);
+  std::optional<std::vector<lcr::LcrDutyLine>> duty = ParseDutyCycle(root, in.duty_cycle, s.output_torque_Nmm, &life_why);
   // "ratings" (docs/ratings.md, Ratings as sizing limits): the rated point as the life rows' one line.
   s.ratings = in.ratings;
   if (in.ratings) {
-    CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), !in.duty_cycle.is_null());
+    CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), in.duty_cycle.has_value());
     duty = std::vector<lcr::LcrDutyLine>{in.ratings->RatedLine(double(s.ratio))};
     life_why = "a rated torque is asked: ratings is given";
   }
@@ -470,7 +470,7 @@ Study Parse(const Node& root) {
   // The life rows and checks are those of the line model's nominal design (objectives/lcr_sizing.h).
   if (b.life && (s.contact3d || s.robust))
     (in.ratings ? root["ratings"]
-     : duty->size() == 1 && in.duty_cycle.is_null() ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
+     : duty->size() == 1 && !in.duty_cycle ? root["load"]["input_speed_rpm"] : root["duty_cycle"])
         .FailWith(std::string("bearing lives are sized on the line contact model without tolerances: no speed or duty "
                               "cycle together with ") + (s.contact3d ? "a 3D \"contact\"" : "\"robust\"") +
                   " (remove one of the two)");
@@ -499,7 +499,7 @@ void ParseSizingLubrication(const Input& in, const Node& root, Study& s) {
     return;
   }
   const std::optional<LubricationCommon> common = ParseLubricationCommon(
-      root, in.lubricant, in.surfaces, std::nullopt, in.load.input_speed_rpm, !in.duty_cycle.is_null());
+      root, in.lubricant, in.surfaces, std::nullopt, in.load.input_speed_rpm, in.duty_cycle.has_value());
   if (in.limits.max_oil_temperature_C && common->temperature_C)
     root["limits"]["max_oil_temperature_C"].FailWith(
         "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
@@ -1316,11 +1316,11 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   // Bearing lives (docs/life.md): every dense check computes each rated bearing's life per duty
   // line, one force analysis per angle of its load period (about a third of a unit per line and
   // polish round of a start; a study's lines multiply it).
-  const nlohmann::json& duty = in.duty_cycle;
-  if (duty.is_array() && duty.size() > 1)
-    terms.push_back({combos * starts * per_start * double(duty.size()), "/duty_cycle",
+  const double duty_lines = in.duty_cycle ? double(in.duty_cycle->size()) : 0.0;
+  if (duty_lines > 1)
+    terms.push_back({combos * starts * per_start * duty_lines, "/duty_cycle",
                      WorkNumber(combos) + " candidates × " + WorkNumber(starts) + " starts × " +
-                         WorkNumber(double(duty.size())) +
+                         WorkNumber(duty_lines) +
                          " duty-cycle lines (each line's bearing lives in every dense check)"});
   // When nothing fits, the message names the limit that would fit (sizing::LimitToFit: up to 13
   // solves of the closest combination, each up to 8 polish rounds of an infeasible problem, measured

@@ -308,7 +308,7 @@ struct Input {
   std::optional<LcrTolerancesInput> tolerances;
   std::optional<MonteCarlo> monte_carlo;
   std::optional<Robust> robust;
-  nlohmann::json duty_cycle;
+  LcrDutyCycleInput duty_cycle;
   std::optional<Rollers> rollers;
   std::optional<EccentricBearingInput> eccentric_bearing;
   std::optional<LubricantInput> lubricant;
@@ -349,7 +349,7 @@ struct Input {
              Field().Desc("the stress, force and undercut limits hold across the tolerances (objectives/lcr_robust.h); "
                           "requires tolerances"));
     a->Visit("duty_cycle", &duty_cycle,
-             Field().Schema(LcrDutyCycleSchema()).Desc(
+             Field().MinItems(1, kDutyCycleNotEmpty).Desc(
                  "lines of the duty cycle for the bearing lives (docs/life.md); the time shares sum to 1 within "
                  "1e-6, at least one speed > 0"));
     a->Visit("rollers", &rollers,
