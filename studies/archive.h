@@ -133,6 +133,14 @@ class Field {
   /// A fixed-size array whose items' bounds, when broken, name the array and not the item (as
   /// Node::Range's checks of a [lo, hi] range do: "/variables/e_mm: expected …, found an array …").
   Field& NamesTheArray() { names_array = true; return *this; }
+  /// A fixed-size array whose item i is at most maxima[i] (the schema's `prefixItems`), checked
+  /// after every item is read; broken, the array is named with `expected` ("a grid of at most
+  /// [256, 1024]").
+  Field& ItemsAtMost(std::vector<double> maxima, std::string expected) {
+    item_maxima = std::move(maxima);
+    item_maxima_expected = std::move(expected);
+    return *this;
+  }
   /// What an absent std::optional field means, for the schema's `default`.
   Field& Default(nlohmann::json value) { documented_default = std::move(value); return *this; }
   /// The schema of a field kept as raw JSON (nlohmann::json) and read by shared code.
@@ -159,6 +167,8 @@ class Field {
   std::string min_items_expected;
   std::string shape_expected;
   bool names_array = false;
+  std::vector<double> item_maxima;
+  std::string item_maxima_expected;
   nlohmann::json documented_default;  ///< null: none
   nlohmann::ordered_json schema;      ///< null: none
   bool null_when_not_finite = false;
@@ -279,6 +289,8 @@ class JsonReader {
         }
         ReadValue(n[i], &(*value)[i], f);
       }
+      for (size_t i = 0; i < value->size() && i < f.item_maxima.size(); ++i)
+        if (double((*value)[i]) > f.item_maxima[i]) n.Fail(f.item_maxima_expected);
     } else {
       static_assert(sizeof(T) == 0, "a field type the archives do not know");
     }
@@ -370,6 +382,12 @@ class SchemaEmitter {
       nlohmann::ordered_json is = nlohmann::ordered_json::object();
       Describe(&item, f, is);
       s["items"] = std::move(is);
+      if (!f.item_maxima.empty()) {
+        s["prefixItems"] = nlohmann::ordered_json::array();
+        for (double m : f.item_maxima)
+          s["prefixItems"].push_back(
+              {{"maximum", m == std::floor(m) ? nlohmann::ordered_json(static_cast<long long>(m)) : nlohmann::ordered_json(m)}});
+      }
     } else {
       static_assert(sizeof(T) == 0, "a field type the archives do not know");
     }

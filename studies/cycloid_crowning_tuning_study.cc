@@ -810,7 +810,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const Input in = ReadInput(Node(&study, file, ""));
   const Input::Tuning t = in.tuning.value_or(Input::Tuning{});
   const double rollers = in.drive.rollers;
-  const std::array<int, 2> grid = in.analysis.grid.value_or(std::array<int, 2>{40, 40});
+  const std::array<int, 2> grid = in.analysis.grid.value_or(cycloid_common::DefaultGrid());
   const double cells = double(grid[0]) * grid[1];
   const double angles = in.analysis.crank_angles_per_mesh_period;
   // optimizer.max_evaluations wins over tuning.max_evaluations (Parse) in both forms.

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/cycloid/loaded_tca.h"
 #include "studies/archive.h"
 #include "studies/bearing_life_io.h"
 
@@ -98,10 +99,16 @@ struct CrowningStartInput : CrowningInput {
   static nlohmann::ordered_json SchemaRules();
 };
 
-/// "analysis.grid": [profile_cells, axial_cells] of the contact (default 40 × 40).
+/// "analysis.grid"'s default: the model's cells (cycloid::LoadedOptions, 40 × 40).
+inline std::array<int, 2> DefaultGrid() {
+  const cycloid::LoadedOptions o;
+  return {o.profile_cells, o.axial_cells};
+}
+
+/// "analysis.grid": [profile_cells, axial_cells] of the contact.
 inline Field GridField() {
   return Field().Expect("an array [profile_cells, axial_cells]").AtLeast(4).AtMost(512, "at most 512 cells each way")
-      .Default(nlohmann::json::array({40, 40}))
+      .Default(nlohmann::json(DefaultGrid()))
       .Desc("[profile_cells, axial_cells]: contact cells across the profile and along the face, 4 to 512 each");
 }
 

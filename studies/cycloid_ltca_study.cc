@@ -1878,7 +1878,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const Input in = ReadInput(study, file);
   const Input::Analysis a = in.analysis.value_or(Input::Analysis{});
   const double rollers = in.drive.rollers;
-  const std::array<int, 2> grid = a.grid.value_or(std::array<int, 2>{40, 40});
+  const std::array<int, 2> grid = a.grid.value_or(cycloid_common::DefaultGrid());
   const double cells = double(grid[0]) * grid[1];
   // Every way of giving the angles counts: a list, uniform steps, or samples per mesh period (60
   // when absent: the estimate's reference, above the default 32).

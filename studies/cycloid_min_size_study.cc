@@ -1501,7 +1501,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const Input::Target& t = in.target;
   const double teeth = t.teeth ? double(*t.teeth) : t.speed_ratio.is_number() ? std::abs(t.speed_ratio.get<double>()) : 15;
   const double rollers = std::isfinite(teeth) ? teeth + 1 : 16;
-  const std::array<int, 2> grid = in.analysis.grid.value_or(std::array<int, 2>{40, 40});
+  const std::array<int, 2> grid = in.analysis.grid.value_or(cycloid_common::DefaultGrid());
   const double cells = double(grid[0]) * grid[1];
   const double angles = in.analysis.crank_angles_per_mesh_period;
   // The compliant output mechanism adds the torsional curve: two one-angle cycles (T_r/2, 0.03 T_r).

@@ -1811,10 +1811,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
     terms.push_back({2 * 69 * 1e4 * std::pow(slices / 40.0, 3), "/contact/slices",
                      "2 cams × 69 slices solves of " + WorkNumber(slices) + " slices"});
     if (*in.contact->model == "half_space") {
-      const nlohmann::json& g = in.contact->grid;
-      const double cells = g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number()
-                               ? std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>())
-                               : 64.0 * 256.0;
+      const double cells = double(in.contact->grid[0]) * in.contact->grid[1];
       terms.push_back({2 * 4 * cells * 20, "/contact/grid",
                        "2 cams × 4 half_space solves on " + WorkNumber(cells) + " cells"});
     }

@@ -77,20 +77,6 @@ nlohmann::ordered_json LcrCrowningInput::SchemaRules() { return CrowningRules(tr
 
 nlohmann::ordered_json LcrSizedCrowningInput::SchemaRules() { return CrowningRules(false); }
 
-nlohmann::ordered_json LcrContactOptionsInput::GridSchema() {
-  const lcr::ContactModelOptions defaults;
-  nlohmann::ordered_json s = nlohmann::ordered_json::parse(R"({
-    "description": "[nx, ny] cells of the half-space grid (across rolling, along the roller), at least 8 each way, at most [256, 1024]",
-    "type": "array",
-    "items": {"type": "integer", "minimum": 8},
-    "prefixItems": [{"maximum": 256}, {"maximum": 1024}],
-    "minItems": 2,
-    "maxItems": 2
-  })");
-  s["default"] = {defaults.grid_nx, defaults.grid_ny};
-  return s;
-}
-
 lcr::ContactModelOptions ToContactOptions(const LcrContactOptionsInput& in, const Node& c) {
   lcr::ContactModelOptions o;
   const std::string model = in.model.value_or("line");
@@ -98,14 +84,8 @@ lcr::ContactModelOptions ToContactOptions(const LcrContactOptionsInput& in, cons
             : model == "half_space" ? lcr::ContactModel::kHalfSpace
                                     : lcr::ContactModel::kLine;
   o.slices = in.slices;
-  if (c.Has("grid")) {
-    const auto e = c["grid"].Elements();
-    if (e.size() != 2) c["grid"].Fail("[nx, ny]");
-    o.grid_nx = e[0].Integer(8);
-    o.grid_ny = e[1].Integer(8);
-    if (o.grid_nx > 256) e[0].Fail("at most 256");
-    if (o.grid_ny > 1024) e[1].Fail("at most 1024");
-  }
+  o.grid_nx = in.grid[0];
+  o.grid_ny = in.grid[1];
   o.misalignment_rad = in.misalignment_mrad * 1e-3;
   if (o.model == lcr::ContactModel::kLine && o.misalignment_rad != 0) {
     const std::string want = "slices or half_space with misalignment_mrad (the line model ignores it)";

@@ -4,6 +4,7 @@
 // (and the sizing kinds later).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -49,6 +50,14 @@ struct LcrSizedCrowningInput : LcrCrowningInput {
   static nlohmann::ordered_json SchemaRules();
 };
 
+/// "grid" of the half_space model (contact, tuning): [nx, ny] cells, at least 8 each way, at most
+/// [256, 1024].
+inline Field GridField() {
+  return Field().Expect("[nx, ny]").AtLeast(8).ItemsAtMost({256, 1024}, "a grid of at most [256, 1024]")
+      .Desc("[nx, ny] cells of the half-space grid (across rolling, along the roller), at least 8 each way, at most "
+            "[256, 1024]");
+}
+
 /// The "contact" object: the finite-length roller contact model (docs/lcr.md, "Crowned rollers and
 /// 3D contact"), declared once. ToContactOptions converts it (misalignment needs a model other than
 /// line).
@@ -56,7 +65,7 @@ struct LcrContactOptionsInput {
   /// Absent: line, unless the study's crowning or misalignment asks for another (no schema default).
   std::optional<std::string> model;
   int slices = lcr::ContactModelOptions{}.slices;
-  nlohmann::json grid;  ///< [nx, ny]; null: the model's default
+  std::array<int, 2> grid{lcr::ContactModelOptions{}.grid_nx, lcr::ContactModelOptions{}.grid_ny};  ///< [nx, ny]
   double misalignment_mrad = 0.0;
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -68,13 +77,11 @@ struct LcrContactOptionsInput {
              Field().AtLeast(4).AtMost(200, "at most 200 slices")
                  .Desc("slices along the roller; at least 4 so that the pressure along the roller is resolved "
                        "(docs/lcr.md)"));
-    a->Visit("grid", &grid, Field().Schema(GridSchema()));
+    a->Visit("grid", &grid, GridField());
     a->Visit("misalignment_mrad", &misalignment_mrad,
              Field().In(-50.0, 50.0, "a misalignment within ±50 mrad").Unit("mrad")
                  .Desc("γ, the tilt of the roller axis against the cam axis (slices or half_space only)"));
   }
-  /// The schema of "grid" ([nx, ny], at most [256, 1024]).
-  static nlohmann::ordered_json GridSchema();
 };
 
 struct LcrContactInput {

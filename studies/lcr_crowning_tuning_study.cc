@@ -66,13 +66,8 @@ Study Parse(const Node& root) {
   sp.angle_steps = tuning.angle_steps;
   sp.slices = tuning.slices;
   st.half_space_check = tuning.half_space_check;
-  if (t.Has("grid")) {
-    const auto e = t["grid"].Elements();
-    if (e.size() != 2) t["grid"].Fail("[nx, ny]");
-    st.grid_nx = e[0].Integer(8);
-    st.grid_ny = e[1].Integer(8);
-    if (st.grid_nx > 256 || st.grid_ny > 1024) t["grid"].Fail("a grid of at most [256, 1024]");
-  }
+  st.grid_nx = in.tuning.grid[0];
+  st.grid_ny = in.tuning.grid[1];
   // The tuned design's lives (the tuning's objective stays the contact pressure).
   std::string why;
   if (auto lines = ParseDutyCycle(root, in.duty_cycle, sp.design_load.output_torque_Nmm, &why)) {
@@ -97,20 +92,6 @@ Study Parse(const Node& root) {
     st.life = std::move(life);
   }
   return st;
-}
-
-nlohmann::ordered_json Input::Tuning::GridSchema() {
-  nlohmann::ordered_json s = nlohmann::ordered_json::parse(R"({
-    "description": "[nx, ny] cells of the half-space check (across rolling, along the roller), at least 8 each way, at most [256, 1024]",
-    "type": "array",
-    "items": {"type": "integer", "minimum": 8},
-    "prefixItems": [{"maximum": 256}, {"maximum": 1024}],
-    "minItems": 2,
-    "maxItems": 2
-  })");
-  const Study defaults;
-  s["default"] = {defaults.grid_nx, defaults.grid_ny};
-  return s;
 }
 
 namespace {
@@ -416,10 +397,7 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const double misalignments = std::max<double>(1, double(t.misalignment_mrad.size()));
   const double slices = t.slices;
   const double per_solve = std::pow(std::max(slices, 4.0) / 40.0, 3);
-  const nlohmann::json& grid = t.grid;
-  const double cells = grid.is_array() && grid.size() == 2 && grid[0].is_number() && grid[1].is_number()
-                           ? grid[0].get<double>() * grid[1].get<double>()
-                           : 48.0 * 256.0;
+  const double cells = double(t.grid[0]) * t.grid[1];
   // The check: tuned and uncrowned on the grid, and the tuned crowning verified on twice the cells
   // each way (four times the cells, about five times the time).
   const double check = !t.half_space_check ? 0.0 : (2 + 5) * 2 * misalignments * 4 * 100 * cells / (48.0 * 256.0);

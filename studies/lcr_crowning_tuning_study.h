@@ -56,7 +56,7 @@ struct Input {
     std::vector<double> misalignment_mrad{0.0};
     int curve_points = 12, refine_iterations = 8, angle_steps = 360, slices = 40;
     bool half_space_check = true;
-    nlohmann::json grid;  ///< [nx, ny]; null: [48, 256]
+    std::array<int, 2> grid{48, 256};  ///< [nx, ny] of the half_space check
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("effective_length_mm", &effective_length_mm,
@@ -80,10 +80,8 @@ struct Input {
                Field().AtLeast(4).AtMost(200, "at most 200 slices").Desc("slices along the roller (the slices model)"));
       a->Visit("half_space_check", &half_space_check,
                Field().Desc("check the tuned and the uncrowned rollers with the half_space model (false: not verified)"));
-      a->Visit("grid", &grid, Field().Schema(GridSchema()));
+      a->Visit("grid", &grid, GridField());
     }
-    /// The schema of "grid" ([nx, ny], at most [256, 1024]).
-    static nlohmann::ordered_json GridSchema();
   };
 
   std::string study = "lcr_crowning_tuning", name;
@@ -125,7 +123,7 @@ struct Study {
   std::string name;
   sizing::LcrCrowningTuningSpec spec;
   bool half_space_check = true;
-  int grid_nx = 48, grid_ny = 256;
+  int grid_nx = Input::Tuning{}.grid[0], grid_ny = Input::Tuning{}.grid[1];
   std::optional<LifeSpec> life;
 };
 

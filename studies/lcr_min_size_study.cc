@@ -1306,10 +1306,8 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
     const double slices = in.contact ? in.contact->slices : LcrContactOptionsInput{}.slices;
     terms.push_back({combos * 30 * std::pow(slices / 20.0, 3), "/contact/slices",
                      WorkNumber(combos) + " candidates × 3D polish with " + WorkNumber(slices) + " slices"});
-    const nlohmann::json g = in.contact ? in.contact->grid : nlohmann::json();
-    const double cells = g.is_array() && g.size() == 2 && g[0].is_number() && g[1].is_number()
-                             ? std::max(0.0, g[0].get<double>()) * std::max(0.0, g[1].get<double>())
-                             : 64.0 * 256.0;
+    const std::array<int, 2> g = in.contact.value_or(LcrContactOptionsInput{}).grid;
+    const double cells = double(g[0]) * g[1];
     terms.push_back({40 * 5 * cells / (48.0 * 128.0), "/contact/grid",
                      "half_space verification on " + WorkNumber(cells) + " cells and four times as many"});
   }
