@@ -30,7 +30,8 @@
 //
 // Supported member types: double, int, bool, std::string (with OneOf: an enum; with Const: a
 // constant), a struct with its own Serialize, std::optional of any of these, std::vector of any of
-// these, std::array of numbers, and nlohmann::json for a value read by shared code (its schema given
+// these, std::array of numbers, BoolOr<T> (`true`, `false` or the object of a declared T), and
+// nlohmann::json for a value read by shared code (its schema given
 // with Field::Schema).
 #pragma once
 
@@ -45,6 +46,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -52,6 +54,20 @@
 #include "studies/input.h"
 
 namespace camopt::studies {
+
+/// A field that is `true`, `false` or the object of a declared T's settings (geometry_files,
+/// analysis.monte_carlo): `true` means T's defaults. Read by JSON type; its schema is T's object
+/// schema with `"type": ["boolean", "object"]`; written as the alternative it holds.
+template <typename T>
+using BoolOr = std::variant<bool, T>;
+
+/// The settings a BoolOr field asks for: none when it is `false`, T's defaults when `true`.
+template <typename T>
+std::optional<T> Enabled(const BoolOr<T>& v) {
+  if (const T* settings = std::get_if<T>(&v)) return *settings;
+  if (std::get<bool>(v)) return T{};
+  return std::nullopt;
+}
 
 /// A number of a result that may be ±inf or NaN (the stress of an undercut contact, an estimate
 /// not made): itself, or null in JSON.
@@ -184,6 +200,8 @@ template <typename T> struct IsVector : std::false_type {};
 template <typename T> struct IsVector<std::vector<T>> : std::true_type {};
 template <typename T> struct IsArray : std::false_type {};
 template <typename T, size_t N> struct IsArray<std::array<T, N>> : std::true_type {};
+template <typename T> struct IsBoolOr : std::false_type {};
+template <typename T> struct IsBoolOr<std::variant<bool, T>> : std::true_type {};
 template <typename T> struct IsStringMap : std::false_type {};
 template <typename T> struct IsStringMap<std::map<std::string, T>> : std::true_type {};
 
@@ -261,6 +279,15 @@ class JsonReader {
       *value = ReadString(n, f);
     } else if constexpr (std::is_same_v<T, nlohmann::json>) {
       *value = n.json();
+    } else if constexpr (archive_detail::IsBoolOr<T>::value) {
+      if (n.json().is_boolean()) {
+        *value = n.Bool();
+      } else {
+        if (!n.json().is_object()) n.Fail(!f.shape_expected.empty() ? f.shape_expected : "true, false or an object");
+        std::variant_alternative_t<1, T> settings{};
+        ReadValue(n, &settings, Field());
+        *value = std::move(settings);
+      }
     } else if constexpr (IsVector<T>::value) {
       const std::vector<Node> items = n.Elements();
       if (f.min_items && items.size() < *f.min_items)
@@ -367,6 +394,10 @@ class SchemaEmitter {
     } else if constexpr (std::is_same_v<T, nlohmann::json>) {
       for (auto it = f.schema.begin(); it != f.schema.end(); ++it)
         if (!s.contains(it.key())) s[it.key()] = it.value();
+    } else if constexpr (archive_detail::IsBoolOr<T>::value) {
+      std::variant_alternative_t<1, T> settings{};
+      Describe(&settings, Field(), s);
+      s["type"] = {"boolean", "object"};
     } else if constexpr (IsVector<T>::value) {
       s["type"] = "array";
       if (f.min_items) s["minItems"] = *f.min_items;
@@ -436,6 +467,8 @@ nlohmann::ordered_json SchemaEmitter::WriteValue(const T& value) {
     return a;
   } else if constexpr (std::is_same_v<T, nlohmann::json>) {
     return nlohmann::ordered_json::parse(value.dump());
+  } else if constexpr (archive_detail::IsBoolOr<T>::value) {
+    return std::visit([](const auto& x) { return WriteValue(x); }, value);
   } else {
     return nlohmann::ordered_json(value);
   }

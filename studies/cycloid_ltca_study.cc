@@ -193,7 +193,7 @@ Study Parse(const Node& root) {
   if (in.limits) s.contact_stress_limit_MPa = in.limits->contact_stress_MPa;
   s.drive = cycloid_common::MakeDrive(root, in.drive, in.modification);
   s.crowning = cycloid_common::MakeCrowning(root, in.crowning, s.drive.face_width_mm);
-  s.geometry = ParseGeometryFiles(root);
+  s.geometry = GeometryFileOptionsOf(in.geometry_files);
   if (in.drive.bore_diameter_mm) {
     const double root_diameter = 2 * (s.drive.roller_position_radius_mm - s.drive.eccentricity_mm -
                                       s.drive.roller_radius_mm);

@@ -198,7 +198,8 @@ struct Input {
   std::optional<Load> load;
   std::optional<Analysis> analysis;
   cycloid_common::CycloidDutyCycleInput duty_cycle;
-  nlohmann::json geometry_files, crank_bearing, pins;
+  GeometryFiles geometry_files = true;
+  nlohmann::json crank_bearing, pins;
   std::optional<OutputMechanism> output_mechanism;
   int discs = 1;
   std::optional<double> disc_spacing_mm;
@@ -246,8 +247,8 @@ struct Input {
     a->Visit("load", &load, Field().Desc("the torque and speed (required by the loaded stage)"));
     a->Visit("analysis", &analysis, Field().Desc("the crank angles, the contact grid and the stages to run"));
     a->Visit("geometry_files", &geometry_files,
-             Field().Schema(GeometryFilesSchema(
-                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
+             Field().Desc(
+                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)"));
     cycloid_common::VisitLifeRatings(a, &duty_cycle, &crank_bearing, &pins,
                                      " (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0"
                                      "; each line one LTCA cycle at its torque",

@@ -172,17 +172,6 @@ nlohmann::ordered_json Input::SchemaRules() {
   return {{"allOf", all}};
 }
 
-nlohmann::ordered_json Input::Analysis::MonteCarloSchema() {
-  nlohmann::ordered_json s = {
-      {"description", "the Monte-Carlo check of the linearised error against the exact motion: true (its defaults), "
-                      "false (off) or its settings; off when every tolerance is zero"}};
-  MonteCarlo defaults;
-  SchemaEmitter::Describe(&defaults, Field(), s);
-  s["type"] = {"boolean", "object"};
-  s["default"] = true;
-  return s;
-}
-
 // The checks that span fields (the follower's fields by its type, lengths against the base
 // circle, the motion, the stages and the contact-stress limit against their inputs, the design
 // over the cycle) and the conversion of the declared input to model units.
@@ -300,7 +289,7 @@ Study ParseDesign(const Node& root) {
   // Motion program: rise in mm (translating) or degrees (oscillating); durations in degrees.
   cam.motion = ParseMotionProgram(root["motion"], FollowerMotionSpec(oscillating));
 
-  s.geometry = ParseGeometryFiles(root);
+  s.geometry = GeometryFileOptionsOf(in.geometry_files);
   if (in.cam_thickness_mm)
     s.cam_thickness_mm = PlausibleLength(root["cam_thickness_mm"], cam.base_radius, "the base circle radius");
   if (in.cutter_radius_mm) {
@@ -396,19 +385,15 @@ Study ParseDesign(const Node& root) {
   }
   s.angle_steps = in.analysis.angle_steps;
   dc::MonteCarloOptions& mc = s.monte_carlo_options;
-  if (!in.analysis.monte_carlo.is_null()) {
-    const Node m = root["analysis"]["monte_carlo"];
-    if (m.json().is_boolean()) {
-      s.monte_carlo = m.Bool();
-    } else {
-      const Input::MonteCarlo o = Read<Input::MonteCarlo>(m);
-      mc.samples = o.samples;
-      mc.angle_steps = o.angle_steps;
-      mc.seed = static_cast<uint64_t>(o.seed);
-      mc.scales = o.scales;
-      if (double(mc.samples) * mc.angle_steps * mc.scales.size() > 1e8)
-        m.FailWith("samples × angle_steps × scales must stay below 1e8");
-    }
+  if (const std::optional<Input::MonteCarlo> o = Enabled(in.analysis.monte_carlo)) {
+    mc.samples = o->samples;
+    mc.angle_steps = o->angle_steps;
+    mc.seed = static_cast<uint64_t>(o->seed);
+    mc.scales = o->scales;
+    if (double(mc.samples) * mc.angle_steps * mc.scales.size() > 1e8)
+      root["analysis"]["monte_carlo"].FailWith("samples × angle_steps × scales must stay below 1e8");
+  } else {
+    s.monte_carlo = false;
   }
   if (in.analysis.evaluate) {
     // Lazy stages: the profile always runs; "error" adds the mechanical error, "monte_carlo"
@@ -1791,8 +1776,9 @@ Fidelity Knobs(const nlohmann::json& study) {
   Fidelity f;
   f.knobs.push_back({"angle_steps", {"/analysis/angle_steps"}, defaults.analysis.angle_steps, 2, true, 0,
                      "samples of the revolution (extrema are sampled)"});
-  const nlohmann::json& mc = in.analysis.monte_carlo;
-  bool mc_on = mc.is_null() || mc.is_object();  // `true` has no fields to set
+  // An object or absent: the knobs set its fields (`true` or `false` has none to set).
+  bool mc_on = std::holds_alternative<Input::MonteCarlo>(in.analysis.monte_carlo) ||
+               !study.contains("analysis") || !study["analysis"].contains("monte_carlo");
   if (in.analysis.evaluate) {
     const auto& ev = *in.analysis.evaluate;
     mc_on = mc_on && std::find(ev.begin(), ev.end(), "monte_carlo") != ev.end();
@@ -1817,10 +1803,8 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const Input::Analysis& a = in.analysis;
   std::vector<WorkTerm> terms = {
       {double(a.angle_steps), "/analysis/angle_steps", WorkNumber(a.angle_steps) + " angle steps"}};
-  if (!a.monte_carlo.is_boolean() || a.monte_carlo.get<bool>()) {
-    const Input::MonteCarlo mc =
-        a.monte_carlo.is_object() ? Read<Input::MonteCarlo>(Node(&study, file, "")["analysis"]["monte_carlo"])
-                                  : Input::MonteCarlo{};
+  if (const std::optional<Input::MonteCarlo> on = Enabled(a.monte_carlo)) {
+    const Input::MonteCarlo& mc = *on;
     const double n_scales = double(mc.scales.size());
     terms.push_back({double(mc.samples) * mc.angle_steps * n_scales, "/analysis/monte_carlo",
                      WorkNumber(mc.samples) + " samples × " + WorkNumber(mc.angle_steps) + " angle steps × " +

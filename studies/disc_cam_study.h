@@ -217,21 +217,21 @@ struct Input {
   };
   struct Analysis {
     int angle_steps = 3600;
-    nlohmann::json monte_carlo;  ///< true, false or a MonteCarlo object; null: absent (on)
+    BoolOr<MonteCarlo> monte_carlo = true;
     std::optional<std::vector<std::string>> evaluate;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("angle_steps", &angle_steps,
                Field().AtLeast(36).AtMost(1000000, "a whole number <= 1000000")
                    .Desc("cam angles over a revolution (the analysis grid)"));
-      a->Visit("monte_carlo", &monte_carlo, Field().Schema(MonteCarloSchema()));
+      a->Visit("monte_carlo", &monte_carlo,
+               Field().Desc("the Monte-Carlo check of the linearised error against the exact motion: true (its "
+                            "defaults), false (off) or its settings; off when every tolerance is zero"));
       a->Visit("evaluate", &evaluate,
                Field().OneOf({"profile", "error", "monte_carlo"})
                    .Desc("the stages to run (absent: all): the profile always runs; error adds the mechanical error, "
                          "monte_carlo the error and its Monte-Carlo check; either needs the tolerances"));
     }
-    /// true/false, or the MonteCarlo object (absent or true: its defaults).
-    static nlohmann::ordered_json MonteCarloSchema();
   };
 
   std::string study = "disc_cam", name = "disc cam";
@@ -249,7 +249,7 @@ struct Input {
   std::optional<double> cam_thickness_mm, bore_diameter_mm, cutter_radius_mm;
   std::optional<KeywayInput> keyway;
   std::optional<BoltCircleInput> bolt_circle;
-  nlohmann::json geometry_files;
+  GeometryFiles geometry_files = true;
 
   /// The fields disc_cam and disc_cam_min_size share, in the file's order (all but study,
   /// analysis): Serialize visits them between "study" and "analysis". `sizing`: as the start
@@ -304,9 +304,9 @@ struct Input {
                  "r_t ≤ r_f, a cutter for a CUTTER_PATH layer in the DXF (absent or r_t = r_f: the pitch curve is "
                  "its path)"));
     a->Visit("geometry_files", &geometry_files,
-             Field().Schema(GeometryFilesSchema(
+             Field().Desc(
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no "
-                 "DXF/STEP/STL)")));
+                 "DXF/STEP/STL)"));
   }
   /// The part name of "measured_profile": the cam (its geometry files' stem).
   struct Parts {

@@ -174,29 +174,16 @@ Mounting ParseMounting(const Node& parent, const std::optional<KeywayInput>& key
   return m;
 }
 
-GeometryFileOptions ParseGeometryFiles(const Node& root) {
+GeometryFileOptions GeometryFileOptionsOf(const GeometryFiles& files) {
   GeometryFileOptions o;
-  if (!root.Has("geometry_files")) return o;
-  const Node g = root["geometry_files"];
-  if (g.json().is_boolean()) {
-    o.write = g.Bool();
-    return o;
-  }
-  if (!g.json().is_object()) g.Fail("an object or a boolean");
-  const auto in = Read<GeometryFilesInput>(g);
-  o.dxf_tolerance_um = in.dxf_tolerance_um;
-  o.stl_ascii = in.stl_format == "ascii";
-  o.step = in.step;
-  o.assembly_crank_angle_deg = in.assembly_crank_angle_deg;
+  const std::optional<GeometryFilesInput> in = Enabled(files);
+  o.write = in.has_value();
+  if (!in) return o;
+  o.dxf_tolerance_um = in->dxf_tolerance_um;
+  o.stl_ascii = in->stl_format == "ascii";
+  o.step = in->step;
+  o.assembly_crank_angle_deg = in->assembly_crank_angle_deg;
   return o;
-}
-
-nlohmann::ordered_json GeometryFilesSchema(const std::string& description) {
-  nlohmann::ordered_json s = {{"description", description}};
-  GeometryFilesInput defaults;
-  SchemaEmitter::Describe(&defaults, Field(), s);
-  s["type"] = {"object", "boolean"};
-  return s;
 }
 
 nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,

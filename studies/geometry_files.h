@@ -102,12 +102,12 @@ Mounting ParseMounting(const Node& parent, const std::optional<KeywayInput>& key
                        const std::optional<BoltCircleInput>& bolt, double bore_mm, double limit_diameter_mm,
                        const std::string& limit_name);
 
-/// Reads the optional root block "geometry_files" (defaults when absent or true; false: none).
-GeometryFileOptions ParseGeometryFiles(const Node& root);
+/// The root block "geometry_files" of a study: true (absent: the defaults), false (none at all) or
+/// the settings.
+using GeometryFiles = BoolOr<GeometryFilesInput>;
 
-/// The JSON Schema of the "geometry_files" block (an object of GeometryFilesInput, or a boolean),
-/// with the kind's own `description`.
-nlohmann::ordered_json GeometryFilesSchema(const std::string& description);
+/// What a study's "geometry_files" asks for, as the writers take it.
+GeometryFileOptions GeometryFileOptionsOf(const GeometryFiles& files);
 
 /// The optional bore of a part at `n` (a "bore_diameter_mm" field, > 0): between 1e-3 and
 /// 1 − 2e-3 times `limit_diameter_mm` (the diameter the bore must stay inside, named by

@@ -174,7 +174,7 @@ Study Parse(const Node& root) {
   if (double(s.export_angle_steps) * s.export_axis_steps > 4e6)
     root["export"].FailWith("angle_steps × axis_steps must stay below 4e6");
   if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
-  s.geometry = ParseGeometryFiles(root);
+  s.geometry = GeometryFileOptionsOf(in.geometry_files);
   // "geometry_files": false: no STL/STEP of the surfaces, whatever export.stl says (a sweep can
   // switch them off in any base study); the point cloud is data and stays.
   if (!s.geometry.write) s.export_stl = false;

@@ -187,7 +187,7 @@ struct Input {
   Analysis analysis;
   Export export_;
   Limits limits;
-  nlohmann::json geometry_files;
+  GeometryFiles geometry_files = true;
 
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -204,9 +204,9 @@ struct Input {
     a->Visit("export", &export_, Field().Desc("the working surfaces as a point cloud and a mesh"));
     a->Visit("limits", &limits, Field().Desc("the limits of the verdict; each has a default or is not checked"));
     a->Visit("geometry_files", &geometry_files,
-             Field().Schema(GeometryFilesSchema(
+             Field().Desc(
                  "geometry files (docs/studies.md 'Geometry files'); false: no STL/STEP of the working "
-                 "surfaces (whatever export.stl says; the point cloud stays)")));
+                 "surfaces (whatever export.stl says; the point cloud stays)"));
   }
   /// The schema of a "motion" segment (read by ParseMotionProgram, shared with disc_cam).
   static nlohmann::ordered_json MotionSchema();

@@ -15,7 +15,7 @@ namespace {
 
 // Every property with a schema "default" that `value` leaves out, added, at every level the study
 // has (objects, array items); for the fields a declaration keeps as JSON with a schema of their
-// own (a motion segment, analysis.monte_carlo's object form), whose defaults the echo cannot fill.
+// own (a motion segment), whose defaults the echo cannot fill.
 void FillDefaults(const nlohmann::ordered_json& schema, nlohmann::ordered_json& value) {
   if (value.is_array() && schema.contains("items")) {
     for (auto& item : value) FillDefaults(schema["items"], item);

@@ -640,7 +640,7 @@ Study Parse(const Node& root) {
                         input ? st.bore_diameter_input_mm : st.bore_diameter_output_mm,
                         2 * SmallestProfileRadius(st.reducer, side), "the cam's smallest profile diameter");
   }
-  st.geometry = ParseGeometryFiles(root);
+  st.geometry = GeometryFileOptionsOf(in.geometry_files);
   st.contact = ContactOf(in, root, st.reducer);
   CheckModifiedLife(in, root);
   st.life = ParseLife(in, root, st.load);

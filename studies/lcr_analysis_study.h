@@ -110,7 +110,7 @@ struct Input {
   std::optional<Analysis> analysis;
   std::optional<LcrTolerancesInput> tolerances;
   std::optional<LcrMonteCarloInput> monte_carlo;
-  nlohmann::json geometry_files;
+  GeometryFiles geometry_files = true;
   std::optional<LcrContactOptionsInput> contact;
   LcrDutyCycleInput duty_cycle;
   std::optional<LubricantWithContaminationInput> lubricant;
@@ -158,8 +158,8 @@ struct Input {
              Field().Desc("± tolerance bands: the transmission error and lost motion (docs/lcr.md)"));
     a->Visit("monte_carlo", &monte_carlo, Field().Desc("the Monte-Carlo of the transmission error (with tolerances)"));
     a->Visit("geometry_files", &geometry_files,
-             Field().Schema(GeometryFilesSchema(
-                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)")));
+             Field().Desc(
+                 "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)"));
     a->Visit("contact", &contact, Field().Desc("finite-length roller contact model (docs/lcr.md)"));
     a->Visit("duty_cycle", &duty_cycle,
              Field().MinItems(1, kDutyCycleNotEmpty).Desc(

@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -204,6 +205,60 @@ TEST(Archive, WriterOutputReadsBackTheSame) {
   EXPECT_EQ(written["speeds_rpm"], json({1.0, 2.0}));
   const json again = json::parse(WriteJson(Read<Toy>(Node(&written, "t.json", ""))).dump());
   EXPECT_EQ(again, written);
+}
+
+// A `true | false | {settings}` field (BoolOr): read by JSON type, `true` the settings' defaults.
+struct Switched {
+  struct Settings {
+    int samples = 200;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("samples", &samples, Field().AtLeast(1).Desc("draws"));
+    }
+  };
+  BoolOr<Settings> check = true;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("check", &check, Field().Desc("the check: true, false or its settings"));
+  }
+};
+
+TEST(Archive, BoolOrReadsByJsonTypeAndStatesBothTypes) {
+  auto read = [](const json& s) { return Read<Switched>(Node(&s, "t.json", "")); };
+  auto error = [&](const json& s) -> std::string {
+    try {
+      (void)read(s);
+    } catch (const StudyError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // Absent and true: the settings' defaults; false: none; an object: its values.
+  ASSERT_TRUE(Enabled(read(json::object()).check));
+  EXPECT_EQ(Enabled(read(json::object()).check)->samples, 200);
+  EXPECT_EQ(Enabled(read({{"check", true}}).check)->samples, 200);
+  EXPECT_FALSE(Enabled(read({{"check", false}}).check));
+  EXPECT_EQ(Enabled(read({{"check", {{"samples", 7}}}}).check)->samples, 7);
+  EXPECT_TRUE(std::holds_alternative<Switched::Settings>(read({{"check", json::object()}}).check));
+  // Anything else names the field and the three forms; the object's own fields keep their messages.
+  for (const json& v : {json(3), json("x"), json::array(), json(nullptr)})
+    EXPECT_EQ(error({{"check", v}}).rfind("t.json: /check: expected true, false or an object, found ", 0), 0u)
+        << v.dump();
+  EXPECT_EQ(error({{"check", {{"samples", 0}}}}), "t.json: /check/samples: expected a whole number >= 1, found 0");
+  EXPECT_EQ(error({{"check", {{"sample", 3}}}}).rfind("t.json: /check/sample: unknown field (known: samples)", 0), 0u);
+  // The schema: both types, the object's properties closed, the default `true`.
+  const json schema = json::parse(EmitSchema<Switched>("toy", "t").dump());
+  const json& c = schema["properties"]["check"];
+  EXPECT_EQ(c["type"], json({"boolean", "object"}));
+  EXPECT_EQ(c["properties"]["samples"]["minimum"], 1);
+  EXPECT_EQ(c["additionalProperties"], false);
+  EXPECT_EQ(c["default"], true);
+  // The writer writes the alternative held, which reads back the same.
+  for (const json& v : {json(true), json(false), json({{"samples", 9}})}) {
+    const json s = {{"check", v}};
+    const json written = json::parse(WriteJson(read(s)).dump());
+    EXPECT_EQ(written, s);
+  }
 }
 
 

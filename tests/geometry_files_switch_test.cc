@@ -130,7 +130,7 @@ TEST(GeometryFilesSwitch, BadValueIsAnInputError) {
     json study = Example("cycloid_ltca_nnm_lcm.json");
     study["geometry_files"] = bad_values[i];
     camopt::testing::ExpectStudyRejected(study, "geometry-files-" + std::to_string(i), "/geometry_files",
-                                         "expected an object or a boolean");
+                                         "expected true, false or an object");
   }
 }
 
