@@ -89,9 +89,9 @@ nlohmann::ordered_json Input::MotionSchema() {
 // steps a speed needs, the stages against their inputs, the load against the contact law) and
 // the conversion of the declared input to model units.
 Study Parse(const Node& root) {
-  const Input in = Read<Input>(root);
   Study s;
-  s.name = in.name;
+  s.in = Read<Input>(root);
+  const Input& in = s.in;
   GloboidalCam<double>& cam = s.dyn.cam;
   const Node c = root["cam"];
   cam.center_distance = in.cam.center_distance_mm;
@@ -134,23 +134,18 @@ Study Parse(const Node& root) {
 
   const Input::Dynamics& d = in.dynamics;
   s.speeds_rpm = d.cam_speeds_rpm;
-  s.end_time_s = d.end_time_s.value_or(s.end_time_s);  // bounded by max_steps below
-  s.relative_tolerance = d.relative_tolerance;
-  s.absolute_tolerance = d.absolute_tolerance;
-  s.max_steps = d.max_steps;
   for (const double rpm : s.speeds_rpm) {
     // The solver's step is at most 0.5° of cam: a run shorter than max_steps of those.
     DynamicsInput probe = s.dyn;
     probe.cam_speed_rad_s = rpm * 2 * kPi / 60;
-    probe.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
+    probe.end_time_s = s.EndTime(rpm);
     const double least = probe.end_time_s / globoidal::MaxStep(probe);
-    if (least > s.max_steps)
+    if (least > d.max_steps)
       root["dynamics"].FailWith("at " + Format(rpm) + " rpm the run needs at least " + Format(std::ceil(least)) +
                                 " steps (a step spans at most 0.5° of cam), more than max_steps = " +
-                                std::to_string(s.max_steps) + ": shorten end_time_s or raise max_steps");
+                                std::to_string(d.max_steps) + ": shorten end_time_s or raise max_steps");
   }
   if (in.analysis.evaluate) {
-    s.evaluate_given = true;
     s.dynamics_stage = s.export_stage = false;
     for (const std::string& stage : *in.analysis.evaluate) {
       s.dynamics_stage = s.dynamics_stage || stage == "dynamics";
@@ -163,15 +158,10 @@ Study Parse(const Node& root) {
     }
     if (!s.dynamics_stage) s.speeds_rpm.clear();
   }
-  s.limits = in.limits;
   s.pressure_angle_limit_default = !(root.Has("limits") && root["limits"].Has("pressure_angle_deg"));
-  s.angle_steps = in.analysis.angle_steps;
-  s.axis_steps = in.analysis.axis_steps;
   s.export_stl = in.export_.stl;
   s.export_point_cloud = in.export_.point_cloud;
-  s.export_angle_steps = in.export_.angle_steps;
-  s.export_axis_steps = in.export_.axis_steps;
-  if (double(s.export_angle_steps) * s.export_axis_steps > 4e6)
+  if (double(in.export_.angle_steps) * in.export_.axis_steps > 4e6)
     root["export"].FailWith("angle_steps × axis_steps must stay below 4e6");
   if (!s.export_stage) s.export_stl = s.export_point_cloud = false;  // not asked for
   s.geometry = GeometryFileOptionsOf(in.geometry_files);
@@ -179,7 +169,7 @@ Study Parse(const Node& root) {
   // switch them off in any base study); the point cloud is data and stays.
   if (!s.geometry.write) s.export_stl = false;
   // Every check, with the jam limit over the analysis grid.
-  FailOnFirst(globoidal::CheckDesign(s.dyn, s.angle_steps, s.axis_steps), root, GloboidalIssuePaths());
+  FailOnFirst(globoidal::CheckDesign(s.dyn, in.analysis.angle_steps, in.analysis.axis_steps), root, GloboidalIssuePaths());
   // A torque no contact can carry: the Hertz law (eq. 11) holds for penetrations small against
   // the radii; under the turret torque alone the static penetration δ = (F/K)^(1/n) at the start
   // angle must stay below a tenth of the roller radius (the paper example: see docs/globoidal.md).
@@ -211,9 +201,9 @@ namespace {
 
 // result.json's members (Result's Serialize) from the model's numbers, in the file's units.
 void FillResult(const Study& s, Result& r) {
-  r.name = s.name;
-  r.angle_steps = s.angle_steps;
-  r.axis_steps = s.axis_steps;
+  r.name = s.in.name;
+  r.angle_steps = s.in.analysis.angle_steps;
+  r.axis_steps = s.in.analysis.axis_steps;
   r.roller_axis_range_mm = {r.roller_axis_limits_mm.l1, r.roller_axis_limits_mm.l2};
   r.initial_angles_deg.top_dead_point = {r.initial_angle_top_deg[0], r.initial_angle_top_deg[1]};
   r.initial_angles_deg.bottom_dead_point = {r.initial_angle_bottom_deg[0], r.initial_angle_bottom_deg[1]};
@@ -242,7 +232,7 @@ void FillResult(const Study& s, Result& r) {
   r.motion.peak_acceleration_deg_per_rad2 = r.peak_acceleration_deg_per_rad2;
   r.motion.peak_jerk_deg_per_rad3 = r.peak_jerk_deg_per_rad3;
   if (!s.geometry.write) r.geometry_files = GeometryFilesJson(s.geometry, {});
-  if (s.evaluate_given) {
+  if (s.in.analysis.evaluate) {
     r.evaluated = std::vector<std::string>{"geometry"};
     if (s.dynamics_stage) r.evaluated->push_back("dynamics");
     if (s.export_stage) r.evaluated->push_back("export");
@@ -266,8 +256,8 @@ void FillResult(const Study& s, Result& r) {
         continue;
       }
       row.end_time_s = x.end_time_s;
-      row.relative_tolerance = s.relative_tolerance;
-      row.absolute_tolerance = s.absolute_tolerance;
+      row.relative_tolerance = s.in.dynamics.relative_tolerance;
+      row.absolute_tolerance = s.in.dynamics.absolute_tolerance;
       row.steps = x.steps;
       row.rhs_evaluations = x.rhs_evaluations;
       row.contact_events = x.events;
@@ -303,14 +293,14 @@ void FillResult(const Study& s, Result& r) {
                                   std::move(speeds)};
   }
   // The verdict (docs/globoidal.md "Limits and verdict"): each limit beside its value.
-  r.limits.pressure_angle_deg = s.limits.pressure_angle_deg;
+  r.limits.pressure_angle_deg = s.in.limits.pressure_angle_deg;
   if (s.pressure_angle_limit_default) r.limits.defaults.push_back("pressure_angle_deg");
-  r.pressure_angle_ok = alpha.value / kDeg <= s.limits.pressure_angle_deg;
+  r.pressure_angle_ok = alpha.value / kDeg <= s.in.limits.pressure_angle_deg;
   bool ok = r.pressure_angle_ok && !r.undercut && r.rib_thickness_at_l2_mm >= 0.0;
-  if (s.limits.contact_stress_MPa) {
-    r.limits.contact_stress_MPa = *s.limits.contact_stress_MPa;
+  if (s.in.limits.contact_stress_MPa) {
+    r.limits.contact_stress_MPa = *s.in.limits.contact_stress_MPa;
     if (r.max_contact_stress_MPa) {
-      r.contact_stress_ok = *r.max_contact_stress_MPa <= *s.limits.contact_stress_MPa;
+      r.contact_stress_ok = *r.max_contact_stress_MPa <= *s.in.limits.contact_stress_MPa;
       ok = ok && *r.contact_stress_ok;
     } else {
       r.notes = std::vector<std::string>{
@@ -322,8 +312,8 @@ void FillResult(const Study& s, Result& r) {
   if (s.export_point_cloud || s.export_stl)
     r.surface_export = Result::SurfaceExport{
         "cam frame oxyz, oz the cam axis, mm; θ = 0 at the start of the first motion",
-        s.export_angle_steps,
-        s.export_axis_steps,
+        s.in.export_.angle_steps,
+        s.in.export_.axis_steps,
         s.export_stl ? "working_surfaces.stl" : "",
         s.geometry.stl_ascii ? "ascii" : "binary",
         s.export_stl && s.geometry.step ? "working_surfaces.step" : "",
@@ -339,7 +329,7 @@ Result Run(const Study& s, const RunContext& ctx) {
   const GloboidalCam<double>& cam = s.dyn.cam;
   const auto lim = globoidal::RollerAxisLimits(cam);
   const double arm = globoidal::ContactArm(s.dyn);
-  const int n = s.angle_steps, na = s.axis_steps;
+  const int n = s.in.analysis.angle_steps, na = s.in.analysis.axis_steps;
   auto theta = [&](int i) { return 2 * kPi * i / n; };
   auto col = [&](auto fn) {
     std::vector<double> v(n);
@@ -403,10 +393,10 @@ Result Run(const Study& s, const RunContext& ctx) {
       progress.Update(double(k) / s.speeds_rpm.size(), Format(rpm) + " rpm");
       DynamicsInput in = s.dyn;
       in.cam_speed_rad_s = rpm * 2 * kPi / 60;
-      in.end_time_s = s.end_time_s > 0 ? s.end_time_s : 60.0 / rpm;
-      in.relative_tolerance = s.relative_tolerance;
-      in.absolute_tolerance = s.absolute_tolerance;
-      in.max_steps = s.max_steps;
+      in.end_time_s = s.EndTime(rpm);
+      in.relative_tolerance = s.in.dynamics.relative_tolerance;
+      in.absolute_tolerance = s.in.dynamics.absolute_tolerance;
+      in.max_steps = s.in.dynamics.max_steps;
       in.output_interval_s = in.end_time_s / 2000;  // the CSV's samples; not the peaks
       SpeedResult sr;
       sr.cam_speed_rpm = rpm;
@@ -456,7 +446,7 @@ Result Run(const Study& s, const RunContext& ctx) {
 
   // Working surfaces to export.
   if (s.export_point_cloud || s.export_stl) {
-    const int ne = s.export_angle_steps, ml = s.export_axis_steps;
+    const int ne = s.in.export_.angle_steps, ml = s.in.export_.axis_steps;
     for (int k = 0; k < ml; ++k) r.surface_axis_mm.push_back(globoidal::AxisGridPoint(lim, k, ml));
     for (int j = 1; j <= 2; ++j) {
       auto& pts = r.surface_points[j - 1];
@@ -524,7 +514,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     const std::string at = Format(x.cam_speed_rpm) + " rpm";
     {
       PlotOptions o;
-      o.title = s.name + ": contact forces at " + at;
+      o.title = s.in.name + ": contact forces at " + at;
       o.x_label = "cam angle [deg]";
       o.y_label = "force [N]";
       out.Add("contact_forces_" + tag + ".svg",
@@ -536,14 +526,14 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     {
       // The paper's Figs. 6–7: turret velocity and acceleration against time.
       PlotOptions o;
-      o.title = s.name + ": turret velocity at " + at;
+      o.title = s.in.name + ": turret velocity at " + at;
       o.x_label = "time [s]";
       o.y_label = "angular velocity [rad/s]";
       out.Add("turret_velocity_" + tag + ".svg",
               SvgLinePlot({{"dynamic", dt.columns[0], dt.columns[3]},
                            {"modified sine", dt.columns[0], dt.columns[6]}},
                           o));
-      o.title = s.name + ": turret acceleration at " + at;
+      o.title = s.in.name + ": turret acceleration at " + at;
       o.y_label = "angular acceleration [rad/s²]";
       out.Add("turret_acceleration_" + tag + ".svg",
               SvgLinePlot({{"dynamic", dt.columns[0], dt.columns[4]},
@@ -555,7 +545,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
   // Surface export: a point cloud with the rib's outward normal (toward the roller), and STL.
   if (s.export_point_cloud || s.export_stl) {
-    const int ne = s.export_angle_steps;
+    const int ne = s.in.export_.angle_steps;
     cad::TriangleMesh mesh;
     std::vector<cad::PointGrid> grids;
     std::vector<double> cr, cl, ct, cx, cy, cz, cnx, cny, cnz;
@@ -584,7 +574,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
       // its grid points (OCCT's approximation).
       if (s.geometry.step)
         out.Add("working_surfaces.step",
-                cad::BSplineSurfaces(grids, s.name + " working surfaces", s.geometry.dxf_tolerance_um * 1e-3).step);
+                cad::BSplineSurfaces(grids, s.in.name + " working surfaces", s.geometry.dxf_tolerance_um * 1e-3).step);
     }
     if (s.export_point_cloud) {
       Table cloud;
@@ -602,7 +592,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   }
 
   // Over time at the first cam speed simulated (the others scale as ω, ω², ω³).
-  AddSvajPlots(out, s.name + ": turret swing", "deg", th,
+  AddSvajPlots(out, s.in.name + ": turret swing", "deg", th,
                {&t.swing_deg, &t.swing_velocity_deg_per_rad, &t.swing_acceleration_deg_per_rad2,
                 &t.swing_jerk_deg_per_rad3},
                s.speeds_rpm.empty() ? 0.0 : s.speeds_rpm.front());
@@ -611,13 +601,13 @@ void Write(const Study& s, const Result& r, Outputs& out) {
       return Series{label, th, y};
     };
     PlotOptions o;
-    o.title = s.name + ": pressure angle";
+    o.title = s.in.name + ": pressure angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "pressure angle [deg]";
     std::vector<double> all;
     for (const auto& roller : t.pressure_angle_deg)
       for (const std::vector<double>& at : roller) all.insert(all.end(), at.begin(), at.end());
-    o.guides = PressureAngleLimitLines(s.limits.pressure_angle_deg, all);
+    o.guides = PressureAngleLimitLines(s.in.limits.pressure_angle_deg, all);
     out.Add("pressure_angle.svg",
             SvgLinePlot({series("roller 1 at l1", t.pressure_angle_deg[0][0]),
                          series("roller 1 at l2", t.pressure_angle_deg[0][1]),

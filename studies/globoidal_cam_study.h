@@ -212,28 +212,22 @@ struct Input {
   static nlohmann::ordered_json MotionSchema();
 };
 
-/// The study file, parsed and validated (CheckDesign passed), in model units.
+/// The study as Run takes it: the file as declared (`in`, in the file's units) and, checked
+/// (CheckDesign passed), what the model is built from and the stages to run.
 struct Study {
-  std::string name;
-  globoidal::DynamicsInput dyn;  ///< the cam, the contact material, the load and the inertia
+  Input in;
+  globoidal::DynamicsInput dyn;  ///< the cam, the contact material, the load and the inertia (model units)
+  /// The cam speeds simulated: dynamics.cam_speeds_rpm, none without the dynamics stage.
   std::vector<double> speeds_rpm;
-  double end_time_s = -1.0;  ///< ≤ 0: one cam revolution
-  double relative_tolerance = 1e-8;   ///< CVODE's local error control (dynamics)
-  double absolute_tolerance = 1e-10;  ///< [rad, rad/s] on ψ − φ_i and its rate
-  int max_steps = 20000000;           ///< accepted solver steps per speed
-  int angle_steps = 720;
-  int axis_steps = 7;
-  int export_angle_steps = 360;
-  int export_axis_steps = 6;
-  bool export_stl = true, export_point_cloud = true;
+  bool export_stl = true, export_point_cloud = true;  ///< export's files, when that stage runs and files are on
   GeometryFileOptions geometry;  ///< "geometry_files": STL format, STEP surfaces
   /// The stages asked for ("analysis.evaluate"; all when absent). The geometry always runs (the
   /// other stages need it); without "dynamics" no load, contact material or speeds are needed and
   /// none are simulated; without "export" no surfaces are built.
   bool dynamics_stage = true, export_stage = true;
-  bool evaluate_given = false;
-  Input::Limits limits;  ///< the verdict's limits as the study gives them (defaults filled in)
   bool pressure_angle_limit_default = true;  ///< limits.pressure_angle_deg not in the study
+  /// dynamics.end_time_s, or one cam revolution at `rpm` [s].
+  double EndTime(double rpm) const { return in.dynamics.end_time_s ? *in.dynamics.end_time_s : 60.0 / rpm; }
 };
 
 /// The dynamics at one cam speed, in the units of result.json.

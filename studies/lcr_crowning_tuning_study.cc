@@ -23,10 +23,10 @@ constexpr double kEdgeShareLimit = 0.01;
 
 Study Parse(const Node& root) {
   // Every field's type and bounds; what spans fields follows.
-  const Input in = Read<Input>(root);
   Study st;
+  st.in = Read<Input>(root);
+  const Input& in = st.in;
   auto& sp = st.spec;
-  st.name = in.name;
   const Node reducer = root["reducer"];
   sp.reducer = ToReducer(in.reducer.Design(), reducer);
   sp.material = in.material.ToMaterial();
@@ -65,9 +65,6 @@ Study Parse(const Node& root) {
   sp.refine_iterations = tuning.refine_iterations;
   sp.angle_steps = tuning.angle_steps;
   sp.slices = tuning.slices;
-  st.half_space_check = tuning.half_space_check;
-  st.grid_nx = in.tuning.grid[0];
-  st.grid_ny = in.tuning.grid[1];
   // The tuned design's lives (the tuning's objective stays the contact pressure).
   std::string why;
   if (auto lines = ParseDutyCycle(root, in.duty_cycle, sp.design_load.output_torque_Nmm, &why)) {
@@ -158,7 +155,7 @@ std::vector<Result::CheckRow> CheckRows(const Study& st, const sizing::LcrCrowni
 
 // result.json's members (Result's Serialize) from the model's numbers, in the file's units.
 void FillResult(const Study& st, Result& res) {
-  res.name = st.name;
+  res.name = st.in.name;
   res.design_torque_Nm = st.spec.design_load.output_torque_Nmm / 1000;
   res.overload_torque_Nm = st.spec.overload_torque_Nmm / 1000;
   res.slices = st.spec.slices;
@@ -172,14 +169,14 @@ void FillResult(const Study& st, Result& res) {
     c.evaluations = r.evaluations;
     c.tuned.slices = CheckRows(st, res.tuned_check[k].slices, {});
     c.uncrowned.slices = CheckRows(st, res.uncrowned_check[k].slices, {});
-    if (st.half_space_check) {
+    if (st.in.tuning.half_space_check) {
       c.tuned.half_space = CheckRows(st, res.tuned_check[k].half_space, res.tuned_check[k].half_space_dy_mm);
       c.uncrowned.half_space =
           CheckRows(st, res.uncrowned_check[k].half_space, res.uncrowned_check[k].half_space_dy_mm);
-      c.half_space_grid = std::array<int, 2>{st.grid_nx, st.grid_ny};
+      c.half_space_grid = st.in.tuning.grid;
     }
   }
-  if (st.half_space_check) {
+  if (st.in.tuning.half_space_check) {
     res.verified = res.verification.verified();
     res.verification_block = VerificationBlock::Of(res.verification);
     // The verdict's one number: the largest edge-pressure share the accurate model finds on either
@@ -275,12 +272,12 @@ Result Run(const Study& st, const RunContext& ctx) {
     crown.effective_length = spec.effective_length_mm[k];
     res.tuned_check[k].slices = res.tuned[k].tuned;
     res.uncrowned_check[k].slices = res.tuned[k].uncrowned;
-    if (!st.half_space_check) continue;
+    if (!st.in.tuning.half_space_check) continue;
     std::vector<lcr::Contact3DCycleSide> coarse;
     for (auto [check, c] : {std::pair{&res.tuned_check[k], crown}, std::pair{&res.uncrowned_check[k], lcr::RollerCrowning<double>{}}}) {
       std::vector<lcr::Contact3DCycleSide> details;
       check->half_space = sizing::CheckLcrCrowning(spec, s, c, lcr::ContactModel::kHalfSpace, &details,
-                                                       st.grid_nx, st.grid_ny);
+                                                       st.in.tuning.grid[0], st.in.tuning.grid[1]);
       for (size_t g = 0; g < spec.misalignments_rad.size(); ++g) check->half_space_dy_mm.push_back(details[2 * g].cell_dy_mm);
       if (check == &res.tuned_check[k]) coarse = details;
     }
@@ -292,8 +289,8 @@ Result Run(const Study& st, const RunContext& ctx) {
     fine_spec.angle_steps = 2 * spec.angle_steps;
     fine_spec.progress = nullptr;
     std::vector<lcr::Contact3DCycleSide> fine;
-    sizing::CheckLcrCrowning(fine_spec, s, crown, lcr::ContactModel::kHalfSpace, &fine, 2 * st.grid_nx,
-                                 2 * st.grid_ny);
+    sizing::CheckLcrCrowning(fine_spec, s, crown, lcr::ContactModel::kHalfSpace, &fine, 2 * st.in.tuning.grid[0],
+                                 2 * st.in.tuning.grid[1]);
     const auto end_share = [](const lcr::Contact3DCycleSide& c) {
       const auto& p = c.worst_pressure_MPa;
       return p.empty() || !(c.max_contact_stress_MPa > 0) ? 0.0
@@ -319,12 +316,12 @@ Result Run(const Study& st, const RunContext& ctx) {
       throw StudyError(ctx.study_file + ": /reducer: infeasible geometry: " + e.what());
     }
   }
-  if (st.half_space_check) {
+  if (st.in.tuning.half_space_check) {
     res.verification.ran = true;
-    res.verification.accurate_model = "half_space on " + std::to_string(2 * st.grid_nx) + "x" +
-                                      std::to_string(2 * st.grid_ny) + " cells at the worst contacts of " +
+    res.verification.accurate_model = "half_space on " + std::to_string(2 * st.in.tuning.grid[0]) + "x" +
+                                      std::to_string(2 * st.in.tuning.grid[1]) + " cells at the worst contacts of " +
                                       std::to_string(2 * spec.angle_steps) + " input angles (error: the change from " +
-                                      std::to_string(st.grid_nx) + "x" + std::to_string(st.grid_ny) + " cells, " +
+                                      std::to_string(st.in.tuning.grid[0]) + "x" + std::to_string(st.in.tuning.grid[1]) + " cells, " +
                                       std::to_string(spec.angle_steps) + " angles)";
   }
   FillResult(st, res);
@@ -354,7 +351,7 @@ void Write(const Study& st, const Result& res, Outputs& out) {
                                               " cam: no coefficient in the range meets the limits at the overload torque";
   if (!infeasible.empty())
     out.SetStatus(Status::kInfeasible, infeasible + " (widen tuning.coefficient_mm or raise the limits)");
-  else if (!st.half_space_check)
+  else if (!st.in.tuning.half_space_check)
     out.SetStatus(Status::kNotVerifiable, "tuning.half_space_check is false: the tuned crowning is not checked by the "
                                           "accurate model (set it to true)");
   else
@@ -372,14 +369,13 @@ Input ReadInput(const nlohmann::json& study, const std::string& file) { return R
 // golden-section steps and the half_space check's grid, from the declaration's defaults.
 Fidelity Knobs(const nlohmann::json&) {
   const Input::Tuning defaults;
-  const Study study_defaults;
   Fidelity f;
   f.knobs.push_back({"slices", {"/tuning/slices"}, defaults.slices, 2, true, 0, "slices along the roller"});
   f.knobs.push_back({"angle_steps", {"/tuning/angle_steps"}, defaults.angle_steps, 2, true, 0,
                      "samples of the input revolution"});
   f.knobs.push_back({"refine_iterations", {"/tuning/refine_iterations"}, defaults.refine_iterations, 2, true, 0,
                      "golden-section steps in ln f after the scan"});
-  f.knobs.push_back({"grid", {"/tuning/grid"}, {study_defaults.grid_nx, study_defaults.grid_ny}, 2, true, 0,
+  f.knobs.push_back({"grid", {"/tuning/grid"}, {defaults.grid[0], defaults.grid[1]}, 2, true, 0,
                      "half_space check cells"});
   f.headlines = {"/input/crowning/coefficient_mm", "/output/crowning/coefficient_mm",
                  "/input/tuned/slices/0/design_max_contact_stress_MPa",

@@ -119,11 +119,11 @@ struct LifeSpec {
   std::optional<EccentricBearingRating> eccentric;
 };
 
+/// The study as Run takes it: the file as declared (`in`) and, checked, the tuning problem in model
+/// units and the lives' inputs.
 struct Study {
-  std::string name;
+  Input in;
   sizing::LcrCrowningTuningSpec spec;
-  bool half_space_check = true;
-  int grid_nx = Input::Tuning{}.grid[0], grid_ny = Input::Tuning{}.grid[1];
   std::optional<LifeSpec> life;
 };
 

@@ -328,25 +328,25 @@ std::string KindAdvice(const std::string& kind) {
 // result.json's members (Result's Serialize) from the model's numbers, in the file's units.
 void FillResult(const Study& study, Result& res) {
   const auto& r = res.chain;
-  res.name = study.name;
+  res.name = study.in.name;
   res.rigidity_Nm_per_rad = 1.0e-3 / r.compliance_b;
   res.rigidity_at_end_b_Nm_per_rad = res.rigidity_Nm_per_rad;
   res.rigidity_at_end_a_Nm_per_rad = 1.0e-3 / r.compliance_a;
   res.total_ratio = r.total_ratio;
   res.backlash_at_end_b_arcmin = r.backlash_b * kArcminPerRad;
   res.backlash_at_end_a_arcmin = r.backlash_a * kArcminPerRad;
-  if (study.report_radius_mm) {
+  if (study.in.report_radius_mm) {
     // Eq. 5 transposed: the linear stiffness at a radius of end B (e.g. at the follower roller).
-    res.report_radius_mm = study.report_radius_mm;
+    res.report_radius_mm = study.in.report_radius_mm;
     res.linear_stiffness_at_report_radius_N_per_mm =
-        rigidity::LinearStiffnessAtRadius(r.compliance_b, *study.report_radius_mm);
+        rigidity::LinearStiffnessAtRadius(r.compliance_b, *study.in.report_radius_mm);
   }
-  if (study.load_torque_Nm) {
-    res.load_torque_Nm = study.load_torque_Nm;
-    res.deflection_at_end_b_deg = 1000.0 * *study.load_torque_Nm * r.compliance_b * 180.0 / kPi;
+  if (study.in.load_torque_Nm) {
+    res.load_torque_Nm = study.in.load_torque_Nm;
+    res.deflection_at_end_b_deg = 1000.0 * *study.in.load_torque_Nm * r.compliance_b * 180.0 / kPi;
   }
   // The verdict: each limit given beside its value (report.html and the summary read them).
-  if (const Input::Limits& l = study.limits; l.rigidity_Nm_per_rad || l.backlash_arcmin || l.deflection_deg) {
+  if (const Input::Limits& l = study.in.limits; l.rigidity_Nm_per_rad || l.backlash_arcmin || l.deflection_deg) {
     res.limits = l;
     if (l.rigidity_Nm_per_rad) res.rigidity_ok = res.rigidity_at_end_b_Nm_per_rad >= *l.rigidity_Nm_per_rad;
     if (l.backlash_arcmin) res.backlash_ok = res.backlash_at_end_b_arcmin <= *l.backlash_arcmin;
@@ -419,18 +419,15 @@ void FillResult(const Study& study, Result& res) {
 Study Parse(const Node& root) {
   // The declaration's checks: every field's type, bounds and choices, unknown fields refused. The
   // elements' values are read below per kind, with the rules between fields.
-  const Input in = Read<Input>(root);
   Study s;
-  s.name = in.name;
+  s.in = Read<Input>(root);
+  const Input& in = s.in;
   const Node chain = root["chain"];
   s.chain_where = chain.file() + ": " + chain.path();
   const std::vector<Node> nodes = chain.Elements();
   if (nodes.empty()) chain.Fail("a non-empty array of elements");
   for (size_t i = 0; i < nodes.size(); ++i) s.elements.push_back(ParseElement(nodes[i], root, i));
-  s.report_radius_mm = in.report_radius_mm;
-  s.load_torque_Nm = in.load_torque_Nm;
-  s.limits = in.limits;
-  if (s.limits.deflection_deg && !s.load_torque_Nm)
+  if (in.limits.deflection_deg && !in.load_torque_Nm)
     root["limits"]["deflection_deg"].FailWith("a deflection limit needs the torque it is under: give load_torque_Nm");
   return s;
 }
@@ -546,16 +543,16 @@ void Write(const Study& study, const Result& res, Outputs& out) {
     backlash_sum += col_backlash[i];
   }
   BarChartOptions so;
-  so.title = "Share of the compliance at end b: " + study.name;
+  so.title = "Share of the compliance at end b: " + study.in.name;
   so.x_label = "share of the chain's compliance [%]";
   so.notes = {"Advice: " + res.advice};
   out.Add("compliance_share.svg", SvgBarChart(shares, so));
   if (backlash_sum > 0) {
-    const double limit = study.limits.backlash_arcmin.value_or(NAN);
+    const double limit = study.in.limits.backlash_arcmin.value_or(NAN);
     backlash.push_back({"whole chain", backlash_sum, Format(backlash_sum, 3) + " arcmin",
                         std::isfinite(limit) && backlash_sum > limit});
     BarChartOptions bo;
-    bo.title = "Backlash at end b: " + study.name;
+    bo.title = "Backlash at end b: " + study.in.name;
     bo.x_label = "backlash seen at end b [arcmin]";
     bo.guides = {{"backlash limit", limit}};
     out.Add("backlash.svg", SvgBarChart(backlash, bo));

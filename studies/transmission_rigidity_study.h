@@ -203,13 +203,12 @@ struct Element {
   std::optional<ReducerElement> reducer;
 };
 
+/// The study as Run takes it: the file as declared (`in`) and its chain's elements, each checked
+/// and in model units.
 struct Study {
-  std::string name;
+  Input in;
   std::vector<Element> elements;
-  std::optional<double> report_radius_mm;
-  std::optional<double> load_torque_Nm;
   std::string chain_where;  ///< "FILE: PATH" of the chain, for an all-rigid chain
-  Input::Limits limits;     ///< the verdict's limits at end b
 };
 
 /// What a reducer element reports besides its chain numbers.
