@@ -309,7 +309,7 @@ struct DiscCam {
 
   py::array_t<double> StudyAngles() const {
     std::vector<double> t;
-    for (int i = 0; i < study.angle_steps; ++i) t.push_back(2 * kPi * i / study.angle_steps);
+    for (int i = 0; i < study.in.analysis.angle_steps; ++i) t.push_back(2 * kPi * i / study.in.analysis.angle_steps);
     return Vector(t);
   }
 };

@@ -34,6 +34,30 @@ std::string OneOfText(const std::vector<std::string>& values) {
   return text;
 }
 
+bool IsJsonType(const nlohmann::json& j, const std::string& type) {
+  if (type == "object") return j.is_object();
+  if (type == "array") return j.is_array();
+  if (type == "boolean") return j.is_boolean();
+  if (type == "integer" || type == "number") return j.is_number();
+  return type == "string" && j.is_string();
+}
+
+std::string JsonTypesText(const std::vector<std::string>& types) {
+  std::vector<std::string> words;
+  for (const std::string& t : types) {
+    if (t == "boolean") {
+      words.push_back("true");
+      words.push_back("false");
+    } else {
+      words.push_back((t == "object" || t == "array" || t == "integer" ? "an " : "a ") + t);
+    }
+  }
+  std::string text;
+  for (size_t i = 0; i < words.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+  return text;
+}
+
 }  // namespace archive_detail
 
 namespace {

@@ -202,6 +202,8 @@ template <typename T> struct IsArray : std::false_type {};
 template <typename T, size_t N> struct IsArray<std::array<T, N>> : std::true_type {};
 template <typename T> struct IsBoolOr : std::false_type {};
 template <typename T> struct IsBoolOr<std::variant<bool, T>> : std::true_type {};
+template <typename T> struct IsVariant : std::false_type {};
+template <typename... Ts> struct IsVariant<std::variant<Ts...>> : std::true_type {};
 template <typename T> struct IsStringMap : std::false_type {};
 template <typename T> struct IsStringMap<std::map<std::string, T>> : std::true_type {};
 
@@ -217,6 +219,32 @@ class NameCollector {
 
 template <typename T>
 concept Declared = requires(T& t, NameCollector* a) { t.Serialize(a); };
+
+/// The JSON type a member of type T is written as ("object", "array", "boolean", "integer",
+/// "number", "string"): how a std::variant member tells its alternatives apart.
+template <typename T>
+constexpr const char* JsonTypeOf() {
+  if constexpr (Declared<T>) return "object";
+  else if constexpr (IsVector<T>::value || IsArray<T>::value) return "array";
+  else if constexpr (std::is_same_v<T, bool>) return "boolean";
+  else if constexpr (std::is_same_v<T, int>) return "integer";
+  else if constexpr (std::is_same_v<T, double>) return "number";
+  else if constexpr (std::is_same_v<T, std::string>) return "string";
+  else static_assert(sizeof(T) == 0, "a variant alternative the archives cannot tell apart by its JSON type");
+}
+/// Whether `j` is of the JSON type `type` (JsonTypeOf; an integer is also a number).
+bool IsJsonType(const nlohmann::json& j, const std::string& type);
+/// What a variant of these JSON types accepts, for its message ("true, false or an object",
+/// "an object or an array").
+std::string JsonTypesText(const std::vector<std::string>& types);
+template <typename V, size_t... I>
+std::vector<std::string> VariantJsonTypes(std::index_sequence<I...>) {
+  return {JsonTypeOf<std::variant_alternative_t<I, V>>()...};
+}
+template <typename V>
+std::vector<std::string> VariantJsonTypes() {
+  return VariantJsonTypes<V>(std::make_index_sequence<std::variant_size_v<V>>{});
+}
 
 /// A number as Node's messages print it (ostream's default: 100000, 1e-13, 0.499).
 std::string NumberText(double x);
@@ -279,15 +307,8 @@ class JsonReader {
       *value = ReadString(n, f);
     } else if constexpr (std::is_same_v<T, nlohmann::json>) {
       *value = n.json();
-    } else if constexpr (archive_detail::IsBoolOr<T>::value) {
-      if (n.json().is_boolean()) {
-        *value = n.Bool();
-      } else {
-        if (!n.json().is_object()) n.Fail(!f.shape_expected.empty() ? f.shape_expected : "true, false or an object");
-        std::variant_alternative_t<1, T> settings{};
-        ReadValue(n, &settings, Field());
-        *value = std::move(settings);
-      }
+    } else if constexpr (archive_detail::IsVariant<T>::value) {
+      ReadAlternative<T, 0>(n, value, f);
     } else if constexpr (IsVector<T>::value) {
       const std::vector<Node> items = n.Elements();
       if (f.min_items && items.size() < *f.min_items)
@@ -320,6 +341,22 @@ class JsonReader {
         if (double((*value)[i]) > f.item_maxima[i]) n.Fail(f.item_maxima_expected);
     } else {
       static_assert(sizeof(T) == 0, "a field type the archives do not know");
+    }
+  }
+
+  /// Reads the alternative of the variant V whose JSON type the value at `n` has (the first from
+  /// I on); none: fails with Field::Expect's text or the types accepted.
+  template <typename V, size_t I>
+  static void ReadAlternative(const Node& n, V* value, const Field& f) {
+    if constexpr (I == std::variant_size_v<V>) {
+      n.Fail(!f.shape_expected.empty() ? f.shape_expected
+                                       : archive_detail::JsonTypesText(archive_detail::VariantJsonTypes<V>()));
+    } else {
+      using A = std::variant_alternative_t<I, V>;
+      if (!archive_detail::IsJsonType(n.json(), archive_detail::JsonTypeOf<A>())) return ReadAlternative<V, I + 1>(n, value, f);
+      A alternative{};
+      ReadValue(n, &alternative, f);
+      *value = std::move(alternative);
     }
   }
 
@@ -395,9 +432,15 @@ class SchemaEmitter {
       for (auto it = f.schema.begin(); it != f.schema.end(); ++it)
         if (!s.contains(it.key())) s[it.key()] = it.value();
     } else if constexpr (archive_detail::IsBoolOr<T>::value) {
+      // true, false or the settings: the settings' object schema, which also takes a boolean.
       std::variant_alternative_t<1, T> settings{};
       Describe(&settings, Field(), s);
       s["type"] = {"boolean", "object"};
+    } else if constexpr (archive_detail::IsVariant<T>::value) {
+      // Alternatives told apart by their JSON type: that type list, and each one's schema.
+      s["type"] = archive_detail::VariantJsonTypes<T>();
+      s["oneOf"] = nlohmann::ordered_json::array();
+      DescribeAlternatives<T>(f, s["oneOf"], std::make_index_sequence<std::variant_size_v<T>>{});
     } else if constexpr (IsVector<T>::value) {
       s["type"] = "array";
       if (f.min_items) s["minItems"] = *f.min_items;
@@ -427,6 +470,19 @@ class SchemaEmitter {
   /// A value as JSON (the defaults of the schema; JsonWriter).
   template <typename T>
   static nlohmann::ordered_json WriteValue(const T& value);
+
+  /// The schema of each alternative of the variant V, appended to `one_of`.
+  template <typename V, size_t... I>
+  static void DescribeAlternatives(const Field& f, nlohmann::ordered_json& one_of, std::index_sequence<I...>) {
+    (DescribeAlternative<std::variant_alternative_t<I, V>>(f, one_of), ...);
+  }
+  template <typename A>
+  static void DescribeAlternative(const Field& f, nlohmann::ordered_json& one_of) {
+    A alternative{};
+    nlohmann::ordered_json s = nlohmann::ordered_json::object();
+    Describe(&alternative, f, s);
+    one_of.push_back(std::move(s));
+  }
 
  private:
   static void NumberKeywords(const Field& f, bool integer, nlohmann::ordered_json& s);
@@ -467,7 +523,7 @@ nlohmann::ordered_json SchemaEmitter::WriteValue(const T& value) {
     return a;
   } else if constexpr (std::is_same_v<T, nlohmann::json>) {
     return nlohmann::ordered_json::parse(value.dump());
-  } else if constexpr (archive_detail::IsBoolOr<T>::value) {
+  } else if constexpr (archive_detail::IsVariant<T>::value) {
     return std::visit([](const auto& x) { return WriteValue(x); }, value);
   } else {
     return nlohmann::ordered_json(value);

@@ -99,7 +99,7 @@ Result::Cycle CycleOf(const sizing::DiscCamCycleValues& v) {
 void FillResult(const Study& s, Result& r) {
   const sizing::DiscCamMinSizeOutcome& o = r.outcome;
   r.name = s.name;
-  r.follower = s.base.follower_type;
+  r.follower = s.base.in.follower.type;
   for (const objectives::Variable& v : s.spec.variables) r.variables.push_back({v.name, v.lower, v.upper, v.initial});
   if (s.base.limits.pressure_angle_default) r.limits.defaults.push_back("pressure_angle_deg");
   if (s.base.limits.radius_margin_default) r.limits.defaults.push_back("radius_margin_mm");

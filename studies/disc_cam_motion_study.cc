@@ -468,7 +468,7 @@ void FillResult(const Study& s, Result& r) {
   const sizing::DiscCamMotionOutcome& o = r.outcome;
   const std::string unit = objectives::MotionObjectiveUnit(s.spec.objective, s.follower_unit == "deg" ? "rad" : "mm");
   r.name = s.name;
-  r.follower = s.base.follower_type;
+  r.follower = s.base.in.follower.type;
   r.objective.name = objectives::MotionObjectiveName(s.spec.objective);
   r.objective.unit = unit;
   if (!s.spec.objective_speeds_rpm.empty()) r.objective.speeds_rpm = s.spec.objective_speeds_rpm;

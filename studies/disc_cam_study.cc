@@ -66,7 +66,7 @@ dc::OscillatingFlatFaced OscillatingFlatFace(const Study& s) {
 // slower than the cam (named at the motion).
 void CheckOscillatingFlatFace(const Study& s, const Node& root) {
   const dc::OscillatingFlatFaced c = OscillatingFlatFace(s);
-  const std::string issue = dc::CheckOscillatingFlatFaced(c, s.angle_steps);
+  const std::string issue = dc::CheckOscillatingFlatFaced(c, s.in.analysis.angle_steps);
   if (issue.empty()) return;
   if (!(c.base_radius + c.face_offset < c.pivot_distance))
     root["follower"]["pivot_distance_mm"].FailWith(issue + " (" + Format(c.base_radius) + " + " + Format(c.face_offset) +
@@ -181,8 +181,7 @@ Study ParseDesign(const Node& root);
 
 Study Parse(const Node& root) {
   Study s = ParseDesign(root);
-  const Input in = Read<Input>(root);
-  s.inspection = in.inspection;
+  const Input& in = s.in;
   if (in.measured_profile) {
     const InspectedPart part = CamPart(s);
     // Covering: no arc between neighbouring points longer than 1/64 of the profile.
@@ -225,14 +224,13 @@ InspectedPart CamPart(const Study& s) {
 namespace {
 
 Study ParseDesign(const Node& root) {
-  const Input in = Read<Input>(root);
   Study s;
-  s.name = in.name;
+  s.in = Read<Input>(root);
+  const Input& in = s.in;
   DiscCam& cam = s.cam;
 
   const Node follower = root["follower"];
   const std::string& type = in.follower.type;
-  s.follower_type = type;
   const bool oscillating = type.rfind("oscillating_", 0) == 0;
   s.contact = type.ends_with("_roller")       ? Study::Contact::kRoller
               : type.ends_with("_knife_edge") ? Study::Contact::kKnifeEdge
@@ -302,7 +300,6 @@ Study ParseDesign(const Node& root) {
   if (in.keyway || in.bolt_circle)
     s.mounting = ParseMounting(root, in.keyway, in.bolt_circle, s.bore_diameter_mm, 2 * cam.base_radius,
                                "the base circle diameter");
-  s.tolerances_given = in.tolerances.has_value();
   if (in.tolerances) {
     s.tolerances.radial = in.tolerances->profile_radial_um * 1e-3;
     s.tolerances.roller = in.tolerances->roller_radius_um * 1e-3;
@@ -383,7 +380,6 @@ Study ParseDesign(const Node& root) {
       if (absent) missing += (missing.empty() ? "" : ", ") + std::string(what);
     if (!missing.empty()) l.FailWith("the contact stress cannot be checked without " + missing + ": add them or remove the limit");
   }
-  s.angle_steps = in.analysis.angle_steps;
   dc::MonteCarloOptions& mc = s.monte_carlo_options;
   if (const std::optional<Input::MonteCarlo> o = Enabled(in.analysis.monte_carlo)) {
     mc.samples = o->samples;
@@ -398,7 +394,6 @@ Study ParseDesign(const Node& root) {
   if (in.analysis.evaluate) {
     // Lazy stages: the profile always runs; "error" adds the mechanical error, "monte_carlo"
     // the error and its Monte-Carlo check. A stage asked for needs its inputs (the tolerances).
-    s.evaluate_given = true;
     bool error = false, mc_asked = false;
     for (const std::string& stage : *in.analysis.evaluate) {
       if (stage == "error") error = true;
@@ -416,8 +411,8 @@ Study ParseDesign(const Node& root) {
     CheckOscillatingFlatFace(s, root);
     return s;
   }
-  const auto issues = flat ? dc::CheckFlatFaced(cam.motion, cam.base_radius, s.angle_steps)
-                           : dc::CheckDesign(cam, s.angle_steps);
+  const auto issues = flat ? dc::CheckFlatFaced(cam.motion, cam.base_radius, s.in.analysis.angle_steps)
+                           : dc::CheckDesign(cam, s.in.analysis.angle_steps);
   FailOnFirst(issues, root, DiscCamIssuePaths());
   return s;
 }
@@ -429,7 +424,7 @@ PlanarCamFit FitGeometryFiles(const Study& s) {
   const DiscCam& cam = s.cam;
   PlanarCamGeometry g;
   g.file_stem = "profile";
-  g.design_name = s.name;
+  g.design_name = s.in.name;
   g.cam_name = "disc cam";
   if (s.contact == Study::Contact::kFlatFaced && cam.follower == FollowerType::kOscillatingRoller) {
     // The envelope of the face lines on the arm; no roller, so no pitch curve or cutter path.
@@ -630,7 +625,7 @@ nlohmann::json MeasuredCam(const Study& s, const Result& r) {
   const std::string u = oscillating ? "arcsec" : "um";
   double lo = INFINITY, hi = -INFINITY, lo_at = 0, hi_at = 0, s_lo = INFINITY, s_hi = -INFINITY, n_lo = INFINITY,
          n_hi = -INFINITY;
-  const int n = s.angle_steps;
+  const int n = s.in.analysis.angle_steps;
   for (int i = 0; i < n; ++i) {
     const double th = 2.0 * kPi * i / n;
     const double d = m.shape(th);
@@ -716,11 +711,11 @@ void FillResult(const Study& s, Result& r);
 Result Run(const Study& s, const RunContext& ctx) {
   Result r = RunCam(s, ctx);
   r.residual_spectrum = ResidualSpectrumOf(s, r);
-  if (s.inspection && s.geometry.write) {
+  if (s.in.inspection && s.geometry.write) {
     const InspectedPart part = CamPart(s);
     long points = 0;
     r.inspection_files.push_back(
-        {part.name, InspectionCsv(s.name, part, s.inspection->spacing_mm, s.inspection->tolerance_um, &points)});
+        {part.name, InspectionCsv(s.in.name, part, s.in.inspection->spacing_mm, s.in.inspection->tolerance_um, &points)});
     r.inspection_points.push_back({part.name, points});
   }
   if (s.measured) r.measured = MeasuredCam(s, r);
@@ -739,7 +734,7 @@ Result RunCam(const Study& s, const RunContext& ctx) {
   const double to_um = dc::RollerCentreMmPerFollowerUnit(cam) * 1e3;
   const double to_arcsec = 180.0 / kPi * 3600.0;
   const double unit = osc ? 1.0 / kDeg : 1.0;  // follower unit: mm or deg
-  const int n = s.angle_steps;
+  const int n = s.in.analysis.angle_steps;
 
   std::vector<CamPoint<double>> pts(n);
   std::vector<dc::MechanicalError<double>> err(n);
@@ -924,7 +919,7 @@ Result RunCam(const Study& s, const RunContext& ctx) {
 // pressure angle 0, the loads with F_c = F_y and T = F_y S', the Hertz stress of the face on ρ.
 Result RunFlatFaced(const Study& s) {
   const DiscCam& cam = s.cam;
-  const int n = s.angle_steps;
+  const int n = s.in.analysis.angle_steps;
   std::vector<dc::FlatFacePoint<double>> pts(n);
   const std::vector<motion::Svaj<double>> svaj = SampleMotion(cam.motion, n);
   for (int i = 0; i < n; ++i) pts[i] = dc::EvaluateFlatFaced(cam.motion, cam.base_radius, 2 * kPi * i / n);
@@ -1000,7 +995,7 @@ Result RunFlatFaced(const Study& s) {
 // refused for an oscillating follower.
 Result RunOscillatingFlatFaced(const Study& s) {
   const dc::OscillatingFlatFaced c = OscillatingFlatFace(s);
-  const Grid g{s.angle_steps};
+  const Grid g{s.in.analysis.angle_steps};
   const int n = g.n;
   std::vector<dc::OscillatingFlatFacePoint> pts(static_cast<size_t>(n));
   const std::vector<motion::Svaj<double>> svaj = SampleMotion(c.motion, n);
@@ -1109,10 +1104,10 @@ void FillResult(const Study& s, Result& r) {
     if (!j.notes) j.notes.emplace();
     j.notes->push_back(std::move(text));
   };
-  j.name = s.name;
-  j.follower = s.follower_type;
+  j.name = s.in.name;
+  j.follower = s.in.follower.type;
   const bool flat = s.contact == Study::Contact::kFlatFaced;
-  j.angle_steps = s.angle_steps;
+  j.angle_steps = s.in.analysis.angle_steps;
   j.max_radial_dimension_mm = r.max_radial_dimension_mm.value;
   j.max_radial_dimension_at_cam_angle_deg = r.max_radial_dimension_mm.cam_angle_deg;
   j.min_radial_dimension_mm = r.min_radial_dimension_mm;
@@ -1219,9 +1214,9 @@ void FillResult(const Study& s, Result& r) {
     geometry_ok = *pa.rise_ok && *pa.return_ok && *j.radius_margin_ok;
   }
 
-  if (s.contact != Study::Contact::kRoller && s.tolerances_given)
+  if (s.contact != Study::Contact::kRoller && s.in.tolerances)
     note("tolerances are not used: the mechanical error (Rzine et al.) is computed for roller followers only");
-  if (s.evaluate_given) {
+  if (s.in.analysis.evaluate) {
     j.evaluated = std::vector<std::string>{"profile"};
     if (s.error_stage) j.evaluated->push_back("error");
     if (s.monte_carlo) j.evaluated->push_back("monte_carlo");
@@ -1462,8 +1457,8 @@ void FillResult(const Study& s, Result& r) {
     j.monte_carlo.emplace().skipped = "the profile is undercut";
   }
   j.geometry_files = GeometryFilesJson(s.geometry, {{"profile", &r.profile_files}});
-  if (s.inspection) {
-    j.inspection = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
+  if (s.in.inspection) {
+    j.inspection = InspectionJson(s.in.inspection->spacing_mm, s.in.inspection->tolerance_um, r.inspection_points,
                                   s.geometry.write);
     if (s.geometry.write) (*j.inspection)["datum"] = "the cam's axis of rotation (its bore); the file's header states its frame";
   }
@@ -1523,7 +1518,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   out.Add("series.csv", ToCsv(table));
 
   const auto& th = t.cam_angle_deg;
-  AddSvajPlots(out, s.name + ": follower", r.follower_unit, th,
+  AddSvajPlots(out, s.in.name + ": follower", r.follower_unit, th,
                {&t.follower, &t.velocity_per_rad, &t.acceleration_per_rad2, &t.jerk_per_rad3},
                s.dynamics ? s.dynamics->speed_rpm : 0.0);
   auto series = [&](const std::string& label, const std::vector<double>& y) {
@@ -1531,7 +1526,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   };
   if (flat_arm) {
     PlotOptions o;
-    o.title = s.name + ": flat face on an arm: contact along the face ℓ, radius of curvature, pressure angle";
+    o.title = s.in.name + ": flat face on an arm: contact along the face ℓ, radius of curvature, pressure angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "[mm], [deg]";
     o.guides = PressureAngleLimitLines(s.limits.pressure_angle_deg, t.pressure_angle_deg);
@@ -1542,7 +1537,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                                          o));
   } else if (flat) {
     PlotOptions o;
-    o.title = s.name + ": flat face: contact offset S' and radius of curvature r_b + S + S''";
+    o.title = s.in.name + ": flat face: contact offset S' and radius of curvature r_b + S + S''";
     o.x_label = "cam angle [deg]";
     o.y_label = "[mm]";
     o.guides = {{"radius margin", s.limits.radius_margin_mm}};
@@ -1551,7 +1546,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
                                          o));
   } else {
     PlotOptions o;
-    o.title = s.name + ": pressure angle and shift angle";
+    o.title = s.in.name + ": pressure angle and shift angle";
     o.x_label = "cam angle [deg]";
     o.y_label = "angle [deg]";
     o.guides = PressureAngleLimitLines(s.limits.pressure_angle_deg, t.pressure_angle_deg);
@@ -1561,7 +1556,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
   }
   if (r.error_evaluated) {
     PlotOptions o;
-    o.title = s.name + ": follower error";
+    o.title = s.in.name + ": follower error";
     o.x_label = "cam angle [deg]";
     o.y_label = r.oscillating ? "error at the roller centre, l·Δξ [µm]" : "follower error ΔS [µm]";
     std::vector<Series> ss = {series("ΔS_r (radial)", t.error_radial_um),
@@ -1574,7 +1569,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
   if (r.loads) {
     PlotOptions o;
-    o.title = s.name + ": contact force and camshaft torque at " +
+    o.title = s.in.name + ": contact force and camshaft torque at " +
               Format(s.dynamics ? s.dynamics->speed_rpm : s.arm_dynamics->speed_rpm) + " rpm";
     o.x_label = "cam angle [deg]";
     o.y_label = "force [N], torque [N·m]";
@@ -1600,7 +1595,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     rt.Add("kinetostatic_axial_force_N", kinetostatic);
     out.Add("follower_response.csv", ToCsv(rt));
     PlotOptions o;
-    o.title = s.name + ": follower axial force at " + Format(s.dynamics->speed_rpm) + " rpm, last of " +
+    o.title = s.in.name + ": follower axial force at " + Format(s.dynamics->speed_rpm) + " rpm, last of " +
               std::to_string(s.dynamics->revolutions) + " revolutions";
     o.x_label = "cam angle [deg]";
     o.y_label = "axial force at the roller [N]";
@@ -1630,7 +1625,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     rt.Add("contact_force_N", r.loads->arm_contact_force_N);
     out.Add("arm_response.csv", ToCsv(rt));
     PlotOptions o;
-    o.title = s.name + ": the arm's contact moment at " + Format(ad.speed_rpm) + " rpm, last of " +
+    o.title = s.in.name + ": the arm's contact moment at " + Format(ad.speed_rpm) + " rpm, last of " +
               std::to_string(ad.revolutions) + " revolutions";
     o.x_label = "cam angle [deg]";
     o.y_label = "contact moment about the pivot [N·m]";
@@ -1662,7 +1657,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
     op.Add("tau_at_speed", tau);
     op.Add("amplitude_per_rise_at_speed", amp);
     out.Add("residual_spectrum_operating.csv", ToCsv(op));
-    o.title = s.name + ": residual-vibration spectrum (ζ = " + Format(sp.zeta) + ")";
+    o.title = s.in.name + ": residual-vibration spectrum (ζ = " + Format(sp.zeta) + ")";
     o.x_label = "τ = segment time / natural period";
     o.y_label = "residual amplitude / rise";
     out.Add("residual_spectrum.svg", SvgLinePlot(curves, o));
@@ -1670,7 +1665,7 @@ void Write(const Study& s, const Result& r, Outputs& out) {
 
   // Profile drawing: cam profile, pitch curve, base circle, and the follower at θ = 0.
   Drawing d;
-  d.title = s.name + ": cam profile";
+  d.title = s.in.name + ": cam profile";
   Drawing::Layer profile{"profile", "black", {}, {}, true, 1.5};
   Drawing::Layer pitch{"pitch_curve", "steelblue", {}, {}, true, 0.7};
   Drawing::Layer base{"base_circle", "gray", {}, {}, true, 0.5};

@@ -337,36 +337,32 @@ struct Input {
   static nlohmann::ordered_json MotionSchema(bool sizing);
 };
 
-/// The study file, parsed and validated (CheckDesign passed), in model units.
+/// The study as Run takes it: the file as declared (`in`, in the file's units) and, checked
+/// (CheckDesign passed), the design in model units and the stages to run.
 struct Study {
-  std::string name;
+  Input in;
   /// The follower's contact: a roller, a knife edge (the roller model with r_f = 0) or a flat face
   /// (model/disc_cam/flat_faced.h; cam holds its base circle and motion, translating, r_f = 0), or a
   /// flat face on an arm (model/disc_cam/oscillating_flat_faced.h; cam holds its base circle, motion and
   /// pivot distance, oscillating, r_f = 0; the face offset d below).
   enum class Contact { kRoller, kKnifeEdge, kFlatFaced } contact = Contact::kRoller;
-  std::string follower_type = "translating_roller";  ///< as in the file
   /// Flat face: its width in the cam plane, centred on the axis [mm] (follower.face_width_mm).
   std::optional<double> follower_face_width_mm;
   /// Oscillating flat face: d, the face's distance from the pivot toward the cam [mm].
   double face_offset_mm = 0.0;
   camopt::disc_cam::DiscCam cam;
   camopt::disc_cam::Deviations<double> tolerances;  ///< [mm]
-  int angle_steps = 3600;
   bool monte_carlo = true;  ///< off when asked or when every tolerance is zero
   camopt::disc_cam::MonteCarloOptions monte_carlo_options;
   /// The stages asked for ("analysis.evaluate"; all when absent). The profile always runs;
   /// without "error" (or "monte_carlo") no tolerances are needed and the mechanical error is not
   /// computed.
   bool error_stage = true;
-  bool evaluate_given = false;
-  bool tolerances_given = false;  ///< "tolerances" in the file (unused without a roller: a note)
   /// Geometry files: cam thickness and bore of the solid [mm] (no STEP/STL without a thickness),
   /// a cutter radius for a cutter-path layer (0: none given), "geometry_files" options.
   double cam_thickness_mm = 0, bore_diameter_mm = 0, cutter_radius_mm = 0;
   Mounting mounting;  ///< "keyway", "bolt_circle"
   GeometryFileOptions geometry;
-  std::optional<InspectionInput> inspection;  ///< "inspection"
   std::optional<MeasuredProfile> measured;    ///< "measured_profile", projected onto the exact profile
 
   /// The limits of the verdict ("limits"; docs/disc_cam.md "Limits and verdict"). A limit not

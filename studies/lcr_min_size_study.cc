@@ -34,18 +34,20 @@ using objectives::LcrSizingSpec;
 using objectives::LcrLimits;
 
 // `life_why`: non-empty when a life is asked (then every entry needs its C).
-std::vector<CatalogueRoller> ParseCatalogue(const Node& n, const std::string& life_why) {
+// The catalogue's rollers as read from `list` (the study's "roller_catalogue" or its file), each
+// with the dynamic rating a life needs (`life_why` non-empty).
+std::vector<CatalogueRoller> CatalogueRollers(const std::vector<CatalogueRollerInput>& entries, const Node& list,
+                                              const std::string& life_why) {
   std::vector<CatalogueRoller> out;
-  const std::vector<Node> items = n.Elements();
-  if (items.empty()) n.Fail("a non-empty list of rollers");
-  for (const Node& item : items) {
-    const CatalogueRollerInput in = Read<CatalogueRollerInput>(item);
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const CatalogueRollerInput& in = entries[i];
     CatalogueRoller r;
     r.name = in.name.value_or("roller " + std::to_string(out.size() + 1));
     r.diameter_mm = in.diameter_mm;
     r.length_mm = in.length_mm;
     r.load_limit_N = in.load_limit_N;
     if (!life_why.empty() && !in.dynamic_rating_N) {
+      const Node item = list[i];
       const std::string path = item.path() + "/dynamic_rating_N";
       const std::string expected = "the roller's dynamic load rating C [N] > 0, as its catalogue gives it (" + life_why + ")";
       throw StudyError(item.file() + ": " + path + ": expected " + expected + ", found nothing; would fit: \"dynamic_rating_N\" "
@@ -360,13 +362,12 @@ Study Parse(const Node& root) {
 
   const Node fixed = root["fixed"];
   b.cam_thickness_mm = in.fixed.cam_thickness_mm;
-  if (!in.roller_catalogue.is_null()) {
-    Node cat = root["roller_catalogue"];
-    if (cat.json().is_object()) {
+  if (in.roller_catalogue) {
+    const Node cat = root["roller_catalogue"];
+    if (const auto* f = std::get_if<CatalogueFileInput>(&*in.roller_catalogue)) {
       // {"file": "rollers.json"}, relative to the study file.
-      cat.CheckKnownFields({"file"});
       const Node file = cat["file"];
-      std::filesystem::path p(file.String());
+      std::filesystem::path p(f->file);
       if (p.is_relative()) p = std::filesystem::path(root.file()).parent_path() / p;
       // A file that cannot be read is named by the study's JSON path; the entries' own errors by the
       // catalogue file's.
@@ -376,9 +377,12 @@ Study Parse(const Node& root) {
       } catch (const StudyError& e) {
         file.FailWith(e.what());
       }
-      s.catalogue = ParseCatalogue(Node(&loaded, p.string(), ""), life_why);
+      const Node list(&loaded, p.string(), "");
+      std::vector<CatalogueRollerInput> entries;
+      JsonReader::ReadValue(list, &entries, Input::CatalogueField());
+      s.catalogue = CatalogueRollers(entries, list, life_why);
     } else {
-      s.catalogue = ParseCatalogue(cat, life_why);
+      s.catalogue = CatalogueRollers(std::get<std::vector<CatalogueRollerInput>>(*in.roller_catalogue), cat, life_why);
     }
   } else {
     if (!in.fixed.roller_length_mm) (void)fixed["roller_length_mm"];  // "missing required field"
@@ -526,26 +530,6 @@ void ParseSizingLubrication(const Input& in, const Node& root, Study& s) {
 std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n) {
   if (!(range[0] <= range[1])) n.Fail("[lower, upper] with lower <= upper");
   return range;
-}
-
-nlohmann::ordered_json Input::CatalogueSchema() {
-  nlohmann::ordered_json item = nlohmann::ordered_json::object();
-  CatalogueRollerInput roller;
-  SchemaEmitter::Describe(&roller, Field(), item);
-  nlohmann::ordered_json file = {
-      {"type", "object"},
-      {"properties", {{"file", {{"description", "the catalogue's file (a list of rollers), relative to the study file"},
-                                {"type", "string"}}}}},
-      {"required", {"file"}},
-      {"additionalProperties", false}};
-  nlohmann::ordered_json list = {{"type", "array"}, {"items", item}};
-  return {{"description", "rollers tried on each combination instead of a continuous d_r: a list of {name, "
-                          "diameter_mm, length_mm, load_limit_N, dynamic_rating_N, static_rating_N} (the roller load "
-                          "limit is the smaller of load_limit_N and limits.roller_load_N; C is required on every "
-                          "entry when a life is asked, C0 gives s0), or {\"file\": \"…\"} of such a list relative to "
-                          "the study file"},
-          {"type", nlohmann::ordered_json::array({"object", "array"})},
-          {"oneOf", {file, list}}};
 }
 
 namespace {
@@ -1271,12 +1255,13 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
   const double n_diffs = double(in.search.roller_lobe_difference.size());
   const double starts = in.optimizer.starts;
   double rollers = 1;
-  const nlohmann::json& cat = in.roller_catalogue;
-  if (cat.is_array()) rollers = std::max<double>(1, double(cat.size()));
-  if (cat.is_object() && cat.contains("file") && cat["file"].is_string()) {
+  const auto* list = in.roller_catalogue ? std::get_if<std::vector<CatalogueRollerInput>>(&*in.roller_catalogue) : nullptr;
+  const auto* cat = in.roller_catalogue ? std::get_if<CatalogueFileInput>(&*in.roller_catalogue) : nullptr;
+  if (list) rollers = std::max<double>(1, double(list->size()));
+  if (cat) {
     // The catalogue file is checked here (regular file, size cap) so that /dev/zero or a huge
     // file is refused with the JSON path that names it, before any work.
-    std::filesystem::path p(cat["file"].get<std::string>());
+    std::filesystem::path p(cat->file);
     if (p.is_relative()) p = std::filesystem::path(file).parent_path() / p;
     std::error_code ec;
     // A missing file is the kind's to report (after its own checks of the study).

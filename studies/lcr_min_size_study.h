@@ -58,6 +58,19 @@ struct CatalogueRollerInput {
   }
 };
 
+/// "roller_catalogue": {"file": "rollers.json"}, a list of rollers in a file of its own.
+struct CatalogueFileInput {
+  std::string file;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("file", &file,
+             Field().Required().Desc("the catalogue's file (a list of rollers), relative to the study file"));
+  }
+};
+
+/// "roller_catalogue": the list of rollers, or the file that holds it.
+using RollerCatalogueInput = std::variant<CatalogueFileInput, std::vector<CatalogueRollerInput>>;
+
 /// The study file as declared: each field once, in the file's units, with its default, bounds and
 /// description (studies/archive.h); the blocks shared with the other LCR kinds are those of
 /// studies/lcr_input.h, lcr_contact_input.h, lcr_tolerance_input.h and material_input.h. Parse reads
@@ -303,7 +316,7 @@ struct Input {
   std::optional<MaterialInput> material;
   Load load;
   Optimizer optimizer;
-  nlohmann::json roller_catalogue;
+  std::optional<RollerCatalogueInput> roller_catalogue;
   std::optional<LcrContactOptionsInput> contact;
   std::optional<LcrTolerancesInput> tolerances;
   std::optional<MonteCarlo> monte_carlo;
@@ -336,7 +349,7 @@ struct Input {
              Field().Desc("the cams' and rollers' elastic material (absent: steel, E = 206 GPa, ν = 0.3)"));
     a->Visit("load", &load, Field().Desc("the friction, the overload torque and the speed"));
     a->Visit("optimizer", &optimizer, Field().Desc("the local solves of each combination"));
-    a->Visit("roller_catalogue", &roller_catalogue, Field().Schema(CatalogueSchema()));
+    a->Visit("roller_catalogue", &roller_catalogue, CatalogueField());
     a->Visit("contact", &contact,
              Field().Desc("finite-length roller contact model (docs/lcr.md); slices or half_space: the stress limit "
                           "holds for the slices model, the best design is re-checked with half_space"));
@@ -372,8 +385,14 @@ struct Input {
                           "life rows at that torque and the rated speed (docs/ratings.md, Ratings as sizing limits); "
                           "needs the rollers' ratings, the line contact model without tolerances"));
   }
-  /// The schema of "roller_catalogue": {"file"} or a list of CatalogueRollerInput.
-  static nlohmann::ordered_json CatalogueSchema();
+  /// How "roller_catalogue" is read: its list, given in the study or in its file.
+  static Field CatalogueField() {
+    return Field().MinItems(1, "a non-empty list of rollers").Expect("a list of rollers or {\"file\": \"…\"}").Desc(
+        "rollers tried on each combination instead of a continuous d_r: a list of {name, diameter_mm, length_mm, "
+        "load_limit_N, dynamic_rating_N, static_rating_N} (the roller load limit is the smaller of load_limit_N and "
+        "limits.roller_load_N; C is required on every entry when a life is asked, C0 gives s0), or {\"file\": \"…\"} "
+        "of such a list relative to the study file");
+  }
   /// The rules between blocks: the catalogue against the roller length and diameter, the life's
   /// speed and ratings, robust with its tolerances.
   static nlohmann::ordered_json SchemaRules();

@@ -262,6 +262,57 @@ TEST(Archive, BoolOrReadsByJsonTypeAndStatesBothTypes) {
 }
 
 
+// A variant told apart by JSON type: {"file": …} or the list itself.
+struct Listed {
+  struct File {
+    std::string file;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("file", &file, Field().Required().Desc("where the list is"));
+    }
+  };
+  std::optional<std::variant<File, std::vector<double>>> items;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("items", &items, Field().Positive().MinItems(1, "a non-empty list").Desc("the list or its file"));
+  }
+};
+
+TEST(Archive, VariantReadsTheAlternativeOfItsJsonType) {
+  auto read = [](const json& s) { return Read<Listed>(Node(&s, "t.json", "")); };
+  auto error = [&](const json& s) -> std::string {
+    try {
+      (void)read(s);
+    } catch (const StudyError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_FALSE(read(json::object()).items);
+  const auto file = read({{"items", {{"file", "a.json"}}}}).items;
+  ASSERT_TRUE(file && std::holds_alternative<Listed::File>(*file));
+  EXPECT_EQ(std::get<Listed::File>(*file).file, "a.json");
+  const auto list = read({{"items", {1.5, 2}}}).items;
+  ASSERT_TRUE(list && std::holds_alternative<std::vector<double>>(*list));
+  EXPECT_EQ(std::get<std::vector<double>>(*list), (std::vector<double>{1.5, 2}));
+  // Each alternative keeps its own checks; another JSON type names both.
+  EXPECT_EQ(error({{"items", json::array()}}), "t.json: /items: expected a non-empty list, found an array []");
+  EXPECT_EQ(error({{"items", {1, -1}}}), "t.json: /items/1: expected a number > 0, found -1");
+  EXPECT_EQ(error({{"items", json::object()}}), "t.json: /items/file: missing required field");
+  EXPECT_EQ(error({{"items", 3}}), "t.json: /items: expected an object or an array, found 3");
+  // The schema: the type list and each alternative's schema.
+  const json s = json::parse(EmitSchema<Listed>("toy", "t").dump())["properties"]["items"];
+  EXPECT_EQ(s["type"], json({"object", "array"}));
+  ASSERT_EQ(s["oneOf"].size(), 2u);
+  EXPECT_EQ(s["oneOf"][0]["required"], json({"file"}));
+  EXPECT_EQ(s["oneOf"][1]["minItems"], 1);
+  EXPECT_EQ(s["oneOf"][1]["items"]["exclusiveMinimum"], 0);
+  for (const json& v : {json({{"file", "b.json"}}), json({2.0, 3.0})}) {
+    const json in = {{"items", v}};
+    EXPECT_EQ(json::parse(WriteJson(read(in)).dump()), in);
+  }
+}
+
 // A declared result (ResultWriter, ResultSchemaEmitter).
 struct ToyResult {
   struct Row {
