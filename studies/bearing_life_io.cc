@@ -40,24 +40,6 @@ std::optional<std::vector<OperatingLine>> ParseDutyCycle(const Node& root, const
   return lines;
 }
 
-RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, BearingKind kind, const std::string& why,
-                                        bool modified_life) {
-  RollingBearingRating b;
-  b.kind = kind;
-  std::set<std::string> known = {"dynamic_rating_N", "static_rating_N", "designation"};
-  if (with_kind) known.insert("kind");
-  if (modified_life) known.insert({"fatigue_load_limit_N", "pitch_diameter_mm"});
-  node.CheckKnownFields(known);
-  if (with_kind) {
-    const std::string k = node["kind"].String();
-    if (k != "ball" && k != "roller") node["kind"].Fail("one of ball, roller");
-    b.kind = k == "ball" ? BearingKind::kBall : BearingKind::kRoller;
-  }
-  RollingBearingRating r = ParseRatingValues(node, b.kind, why);
-  if (node.Has("designation")) r.designation = node["designation"].String();
-  return r;
-}
-
 namespace {
 
 [[noreturn]] void FailMissing(const Node& node, const std::string& key, const std::string& expected) {
@@ -68,15 +50,14 @@ namespace {
 
 }  // namespace
 
+void FailMissingRating(const Node& node, const std::string& why) {
+  FailMissing(node, "dynamic_rating_N", "the bearing's dynamic load rating C [N] > 0 (" + why + ")");
+}
+
 RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const std::string& why) {
   RollingBearingRating b;
   b.kind = kind;
-  if (!node.Has("dynamic_rating_N")) {
-    const std::string path = node.path() + "/dynamic_rating_N";
-    const std::string expected = "the bearing's dynamic load rating C [N] > 0 (" + why + ")";
-    throw StudyError(node.file() + ": " + path + ": expected " + expected + ", found nothing", node.file(), path,
-                     expected, "nothing");
-  }
+  if (!node.Has("dynamic_rating_N")) FailMissingRating(node, why);
   b.dynamic_N = node["dynamic_rating_N"].Positive();
   b.static_N = node.PositiveOr("static_rating_N", 0.0);
   b.modified = ParseModifiedLifeRating(node);

@@ -77,22 +77,101 @@ inline constexpr const char* kPitchDiameterDesc =
     "the bearing's pitch diameter D_pw ≈ (d + D)/2, for the reference viscosity ν1 of the modified life a_ISO "
     "(ISO 281:2007 eq. 28; docs/life.md)";
 
+/// A bearing's inputs of the modified life a_ISO (ISO 281:2007 §9.3; docs/life.md): C_u and D_pw,
+/// both or neither (read by ParseRatingValues, studies/bearing_life_io.h), visited after the ratings.
+struct ModifiedLifeRatingInput {
+  std::optional<double> fatigue_load_limit_N, pitch_diameter_mm;
+  template <typename Archive>
+  void VisitModifiedLife(Archive* a) {
+    a->Visit("fatigue_load_limit_N", &fatigue_load_limit_N, Field().Positive().Unit("N").Desc(kFatigueLoadLimitDesc));
+    a->Visit("pitch_diameter_mm", &pitch_diameter_mm, Field().Positive().Unit("mm").Desc(kPitchDiameterDesc));
+  }
+  /// JSON Schema: the two fields come together.
+  static nlohmann::ordered_json SchemaRules() {
+    return {{"dependentRequired",
+             {{"fatigue_load_limit_N", {"pitch_diameter_mm"}}, {"pitch_diameter_mm", {"fatigue_load_limit_N"}}}}};
+  }
+};
+
 /// Reads "dynamic_rating_N" > 0 and "static_rating_N" > 0 (optional) from `node`, which may hold
 /// other fields (an LCR's reducer side); a missing C is an error that says why it is needed. Reads
 /// "fatigue_load_limit_N" and "pitch_diameter_mm" (> 0, both or neither) when `node` has them.
 /// @throws StudyError naming the JSON path.
 RollingBearingRating ParseRatingValues(const Node& node, BearingKind kind, const std::string& why);
 
-/// Reads {"dynamic_rating_N" > 0, "static_rating_N" > 0 (optional)} and, when `with_kind`, "kind":
-/// "ball" | "roller" (else `kind`), and, when `modified_life`, "fatigue_load_limit_N" and
-/// "pitch_diameter_mm" (else they are unknown fields). A missing C is an error that says why it is
-/// needed (`why`). @throws StudyError naming the JSON path.
-RollingBearingRating ParseBearingRating(const Node& node, bool with_kind, BearingKind kind, const std::string& why,
-                                        bool modified_life = false);
-
 /// Reads "fatigue_load_limit_N" and "pitch_diameter_mm" (> 0, both or neither) of a rating block;
 /// nullopt when neither is given. @throws StudyError naming the missing one's JSON path.
 std::optional<ModifiedLifeRating> ParseModifiedLifeRating(const Node& node);
+
+/// Fails at `node`/dynamic_rating_N, which is missing: "expected the bearing's dynamic load rating
+/// C [N] > 0 (`why`), found nothing".
+[[noreturn]] void FailMissingRating(const Node& node, const std::string& why);
+
+/// A rating block of a rolling bearing as the study file gives it ("pins" of the cycloid kinds):
+/// C, C0, the catalogue's designation and, with kModifiedLife (the kinds that report a_ISO), C_u
+/// and D_pw. C is required (RatingOf says why it is needed).
+template <bool kModifiedLife>
+struct BearingRatingInput : ModifiedLifeRatingInput {
+  std::optional<double> dynamic_rating_N, static_rating_N;
+  std::optional<std::string> designation;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("dynamic_rating_N", &dynamic_rating_N,
+             Field().Positive().Unit("N").Desc("C, the basic dynamic load rating (ISO 281)"));
+    a->Visit("static_rating_N", &static_rating_N,
+             Field().Positive().Unit("N").Desc("C₀, the basic static load rating, for the static safety s₀ = C₀ / P₀ "
+                                               "(absent: none)"));
+    a->Visit("designation", &designation, Field().Desc("the catalogue's designation, in bom.csv (docs/parts.md)"));
+    if constexpr (kModifiedLife) VisitModifiedLife(a);
+  }
+  /// JSON Schema: C is required; C_u and D_pw come together.
+  static nlohmann::ordered_json SchemaRules() {
+    nlohmann::ordered_json r = {{"required", {"dynamic_rating_N"}}};
+    if constexpr (kModifiedLife) r.update(ModifiedLifeRatingInput::SchemaRules());
+    return r;
+  }
+};
+
+/// A rating block with the bearing's kind ("crank_bearing" of the cycloid kinds).
+template <bool kModifiedLife>
+struct KindedBearingRatingInput : BearingRatingInput<kModifiedLife> {
+  std::string kind;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("kind", &kind,
+             Field().Required().OneOf({"ball", "roller"}, "one of ball, roller")
+                 .Desc("ball or roller bearing (the life exponent p = 3 or 10/3)"));
+    BearingRatingInput<kModifiedLife>::Serialize(a);
+  }
+  static nlohmann::ordered_json SchemaRules() {
+    nlohmann::ordered_json r = BearingRatingInput<kModifiedLife>::SchemaRules();
+    r["required"] = {"kind", "dynamic_rating_N"};
+    return r;
+  }
+};
+
+/// The ratings a typed block at `node` gives, its kind `kind` (a block with a kind: its own): C is
+/// required (missing: an error that says why, `why`), C_u and D_pw both or neither.
+/// @throws StudyError naming the JSON path.
+template <bool kModifiedLife>
+RollingBearingRating RatingOf(const BearingRatingInput<kModifiedLife>& in, const Node& node, BearingKind kind,
+                              const std::string& why) {
+  RollingBearingRating r;
+  r.kind = kind;
+  if (!in.dynamic_rating_N) FailMissingRating(node, why);
+  r.dynamic_N = *in.dynamic_rating_N;
+  r.static_N = in.static_rating_N.value_or(0.0);
+  if constexpr (kModifiedLife) r.modified = ParseModifiedLifeRating(node);
+  r.designation = in.designation.value_or("");
+  return r;
+}
+template <bool kModifiedLife>
+RollingBearingRating RatingOf(const KindedBearingRatingInput<kModifiedLife>& in, const Node& node,
+                              const std::string& why) {
+  return RatingOf(static_cast<const BearingRatingInput<kModifiedLife>&>(in), node,
+                  in.kind == "ball" ? BearingKind::kBall : BearingKind::kRoller, why);
+}
+
 
 /// The modified life's inputs across blocks: a rating block with fatigue_load_limit_N and
 /// pitch_diameter_mm (`rated`: those blocks) needs "lubricant" (the oil's viscosity at its

@@ -283,7 +283,7 @@ Study Parse(const Node& root) {
   s.max_torque_Nm = in.load.max_torque_Nm;
   // The tuned design's bearing lives (docs/life.md, "Cycloid"); the one-line form runs at the
   // design torque.
-  s.life = cycloid_common::ParseLife(root, in.duty_cycle, s.drive, s.design_torque_Nm * 1000.0);
+  s.life = cycloid_common::ParseLife(root, in, s.drive, s.design_torque_Nm * 1000.0);
   if (in.variables) ParseJoint(root, in, s);
   else ParseShorthand(root, in, s);
   ParseAnalysis(in.analysis, s);

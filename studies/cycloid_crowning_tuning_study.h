@@ -180,7 +180,8 @@ struct Input {
   std::optional<cycloid_common::CrowningStartInput> crowning;
   Analysis analysis;
   cycloid_common::CycloidDutyCycleInput duty_cycle;
-  nlohmann::json crank_bearing, pins;
+  std::optional<KindedBearingRatingInput<false>> crank_bearing;
+  std::optional<BearingRatingInput<false>> pins;
   std::optional<cycloid_common::OutputMechanismInput> output_mechanism;
 
   template <typename Archive>

@@ -172,29 +172,22 @@ struct DutyWords {
   static constexpr const char* kSpeed = "the input (crank) speed in this line";
 };
 using CycloidDutyCycleInput = DutyCycleInput<DutyWords>;
-/// The schema of "crank_bearing" (ParseBearingRating with its kind); with `modified_life` (the kinds
-/// that report a_ISO, cycloid_ltca) also fatigue_load_limit_N and pitch_diameter_mm, together.
-nlohmann::ordered_json CrankBearingSchema(bool modified_life = false);
-/// The schema of "pins" (the ring pins' ratings, ParseBearingRating); `modified_life` as above.
-nlohmann::ordered_json PinRatingSchema(bool modified_life = false);
-
 /// The bearing-life blocks every cycloid kind takes (docs/life.md, Cycloid): "duty_cycle" (its
-/// description ends with `each_line`, what one line runs), "crank_bearing" and "pins" (kept as JSON,
-/// read by ParseLife against their schemas; with `modified_life` their C_u and D_pw of a_ISO).
-template <typename Archive>
-void VisitLifeRatings(Archive* a, CycloidDutyCycleInput* duty_cycle, nlohmann::json* crank_bearing, nlohmann::json* pins,
-                      const std::string& each_line, bool modified_life = false) {
+/// description ends with `each_line`, what one line runs), "crank_bearing" and "pins" (a
+/// KindedBearingRatingInput and a BearingRatingInput, studies/bearing_life_io.h; with the modified
+/// life's C_u and D_pw in the kinds that report a_ISO).
+template <typename Archive, typename CrankBearing, typename Pins>
+void VisitLifeRatings(Archive* a, CycloidDutyCycleInput* duty_cycle, std::optional<CrankBearing>* crank_bearing,
+                      std::optional<Pins>* pins, const std::string& each_line) {
   a->Visit("duty_cycle", duty_cycle,
            Field().MinItems(1, kDutyCycleNotEmpty).Desc(
                "lines of the duty cycle for the bearing lives (docs/life.md, Cycloid): output_torque_Nm is the "
                "disc's torque" + each_line));
   a->Visit("crank_bearing", crank_bearing,
-           Field().Schema(CrankBearingSchema(modified_life)).Desc(
-               "the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
+           Field().Desc("the crank (eccentric) bearing carrying the disc: ISO 281 ratings (docs/life.md, Cycloid)"));
   a->Visit("pins", pins,
-           Field().Schema(PinRatingSchema(modified_life)).Desc(
-               "the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
-               "p = 10/3 (docs/life.md, Cycloid)"));
+           Field().Desc("the ring pins as rolling elements (a roller on a needle or roller sleeve): ratings per pin, "
+                        "p = 10/3 (docs/life.md, Cycloid)"));
 }
 
 }  // namespace camopt::studies::cycloid_common

@@ -164,7 +164,7 @@ void ParseCatalogue(const Node& root, const Input& in, Study& s) {
                  " deg) uniformly: use analysis.crank_angles_per_mesh_period");
     Study::RatingsSpec r;
     r.in = *in.ratings;
-    r.life = cycloid_common::ParseLifeRatings(root, s.drive, "ratings: the rated torque is a bearing life", true,
+    r.life = cycloid_common::ParseLifeRatings(root, in, s.drive, "ratings: the rated torque is a bearing life",
                                               true);
     if (r.life.crank_bearing.modified || (r.life.pins_rated && r.life.pins.modified))
       r.life.contamination_factor = root["lubricant"]["contamination_factor"].Number();
@@ -247,7 +247,7 @@ Study Parse(const Node& root) {
   }
   ParseTolerances(root, in, s);
   // The bearing life (docs/life.md, "Cycloid"): each duty line is one LTCA cycle at its torque.
-  s.life = cycloid_common::ParseLife(root, in.duty_cycle, s.drive, s.disc_torque_Nmm(), true, true);
+  s.life = cycloid_common::ParseLife(root, in, s.drive, s.disc_torque_Nmm(), true);
   if (s.life && s.discs > 1)
     root["discs"].Fail("1 with a bearing life (the life is modelled for one disc; found " + std::to_string(s.discs) +
                        " discs)");

@@ -199,7 +199,8 @@ struct Input {
   std::optional<Analysis> analysis;
   cycloid_common::CycloidDutyCycleInput duty_cycle;
   GeometryFiles geometry_files = true;
-  nlohmann::json crank_bearing, pins;
+  std::optional<KindedBearingRatingInput<true>> crank_bearing;
+  std::optional<BearingRatingInput<true>> pins;
   std::optional<OutputMechanism> output_mechanism;
   int discs = 1;
   std::optional<double> disc_spacing_mm;
@@ -251,8 +252,7 @@ struct Input {
                  "geometry files (docs/studies.md 'Geometry files'); false: none at all (no arc fit, no DXF/STEP/STL)"));
     cycloid_common::VisitLifeRatings(a, &duty_cycle, &crank_bearing, &pins,
                                      " (one disc); the time shares sum to 1 within 1e-6, at least one speed > 0"
-                                     "; each line one LTCA cycle at its torque",
-                                     true);  // the modified life a_ISO (docs/life.md)
+                                     "; each line one LTCA cycle at its torque");
     a->Visit("output_mechanism", &output_mechanism,
              Field().Desc(
                  "output pins in the disc's holes: pin circle radius (inside the disc's root radius) and pin count "

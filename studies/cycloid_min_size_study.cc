@@ -556,7 +556,7 @@ std::string BlockingMessage(const Study& s, const sizing::CycloidMinSizeOutcome&
 // the report says when the sized disc's root falls inside it).
 void ParseSizingLife(const Node& root, const Input& in, Study& s) {
   std::optional<cycloid_common::LifeSpec> life =
-      cycloid_common::ParseLife(root, in.duty_cycle, s.spec.drive, s.spec.design_torque_Nmm, true);
+      cycloid_common::ParseLife(root, in, s.spec.drive, s.spec.design_torque_Nmm, true);
   // "ratings" (docs/ratings.md, Ratings as sizing limits): the rated point as the life rows' one
   // cycle (load.input_speed_rpm then only sets the lubricated losses' speed).
   s.ratings = in.ratings;
@@ -566,8 +566,8 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
   }
   if (in.ratings) {
     CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), in.duty_cycle.has_value());
-    if (!life) life = cycloid_common::ParseLifeRatings(root, s.spec.drive, "a rated torque is asked: ratings is given",
-                                                       true, false);
+    if (!life) life = cycloid_common::ParseLifeRatings(root, in, s.spec.drive, "a rated torque is asked: ratings is given",
+                                                       true);
     const double ratio = double(s.spec.drive.teeth) / double(s.spec.drive.rollers - s.spec.drive.teeth);
     life->lines = {in.ratings->RatedLine(ratio)};
     s.spec.limits.life_h = in.ratings->rated_life_h;

@@ -240,7 +240,8 @@ struct Input {
   Optimizer optimizer;
   std::optional<Load> load;
   cycloid_common::CycloidDutyCycleInput duty_cycle;
-  nlohmann::json crank_bearing, pins;
+  std::optional<KindedBearingRatingInput<false>> crank_bearing;
+  std::optional<BearingRatingInput<false>> pins;
   std::optional<cycloid_common::CompliantOutputMechanismInput> output_mechanism;
   std::optional<LubricantInput> lubricant;
   std::optional<SurfacesInput> surfaces;

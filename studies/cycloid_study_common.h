@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "model/cycloid/bearing_loads.h"
@@ -414,60 +415,62 @@ inline std::optional<CompliantOutputSpec> ParseCompliantOutput(const Node& root,
   return ParseCompliantOutputPins(n, *om, rigid, d, e_mm, stack_mm, stack_words);
 }
 
-inline LifeSpec ParseLifeRatings(const Node& root, const cycloid::Drive& d, const std::string& why,
-                                 bool extended_output, bool modified_life);
+template <typename InputT>
+LifeSpec ParseLifeRatings(const Node& root, const InputT& in, const cycloid::Drive& d, const std::string& why,
+                          bool extended_output);
 
-/// The life fields of a cycloid study: "load.input_speed_rpm" or "duty_cycle" (`duty`, as declared;
-/// ParseDutyCycle, the one-line form at `torque_Nmm`), "crank_bearing": {kind, dynamic_rating_N, static_rating_N}
-/// (required with a life), "pins": {dynamic_rating_N, static_rating_N} (optional),
-/// "output_mechanism" (required with a life: the crank bearing's load needs R_w). Without a speed
-/// or a duty cycle the ratings are still checked and nullopt is returned. With `modified_life` (the
-/// kinds that report a_ISO) the rating blocks take fatigue_load_limit_N and pitch_diameter_mm, which
-/// need lubricant.contamination_factor (CheckModifiedLifeInputs).
+/// The life fields of a cycloid study `in` (its declared "duty_cycle", "crank_bearing", "pins"):
+/// "load.input_speed_rpm" or "duty_cycle" (ParseDutyCycle, the one-line form at `torque_Nmm`),
+/// "crank_bearing" (required with a life), "pins" (optional), "output_mechanism" (required with a
+/// life: the crank bearing's load needs R_w). Without a speed or a duty cycle the ratings are still
+/// checked and nullopt is returned. The kinds that report a_ISO declare the rating blocks with C_u
+/// and D_pw (BearingRatingInput<true>), which need lubricant.contamination_factor
+/// (CheckModifiedLifeInputs).
 /// @throws StudyError naming the JSON path.
-inline std::optional<LifeSpec> ParseLife(const Node& root, const CycloidDutyCycleInput& duty, const cycloid::Drive& d,
-                                         double torque_Nmm,
-                                         bool extended_output = false, bool modified_life = false) {
-  if (modified_life) {
+template <typename InputT>
+std::optional<LifeSpec> ParseLife(const Node& root, const InputT& in, const cycloid::Drive& d, double torque_Nmm,
+                                  bool extended_output = false) {
+  constexpr bool kModifiedLife = std::is_same_v<std::remove_cvref_t<decltype(in.pins)>, std::optional<BearingRatingInput<true>>>;
+  if constexpr (kModifiedLife) {
     std::vector<Node> rated;
-    for (const char* block : {"crank_bearing", "pins"})
-      if (root.Has(block) && (root[block].Has("fatigue_load_limit_N") || root[block].Has("pitch_diameter_mm")))
-        rated.push_back(root[block]);
+    auto given = [](const auto& block) { return block && (block->fatigue_load_limit_N || block->pitch_diameter_mm); };
+    if (given(in.crank_bearing)) rated.push_back(root["crank_bearing"]);
+    if (given(in.pins)) rated.push_back(root["pins"]);
     for (const Node& node : rated) ParseModifiedLifeRating(node);
     CheckModifiedLifeInputs(root, rated);
   }
   std::string why;
-  std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, duty, torque_Nmm, &why);
+  std::optional<std::vector<OperatingLine>> lines = ParseDutyCycle(root, in.duty_cycle, torque_Nmm, &why);
   if (!lines) {
     const std::string unused = "checked: no speed or duty cycle is given, so no life is computed";
-    if (root.Has("crank_bearing"))
-      ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, unused, modified_life);
-    if (root.Has("pins")) ParseBearingRating(root["pins"], false, BearingKind::kRoller, unused, modified_life);
+    if (in.crank_bearing) (void)RatingOf(*in.crank_bearing, root["crank_bearing"], unused);
+    if (in.pins) (void)RatingOf(*in.pins, root["pins"], BearingKind::kRoller, unused);
     if (root.Has("output_mechanism")) ParseOutputMechanism(root["output_mechanism"], d, extended_output);
     return std::nullopt;
   }
-  LifeSpec life = ParseLifeRatings(root, d, why, extended_output, modified_life);
+  LifeSpec life = ParseLifeRatings(root, in, d, why, extended_output);
   life.lines = std::move(*lines);
   return life;
 }
 
 /// The rated elements of ParseLife without the duty cycle (lines empty): "crank_bearing" (required),
 /// "pins" (optional), "output_mechanism" (required); `why` says what needs them.
-inline LifeSpec ParseLifeRatings(const Node& root, const cycloid::Drive& d, const std::string& why,
-                                 bool extended_output, bool modified_life) {
+template <typename InputT>
+LifeSpec ParseLifeRatings(const Node& root, const InputT& in, const cycloid::Drive& d, const std::string& why,
+                          bool extended_output) {
   LifeSpec life;
   auto missing = [&](const std::string& key, const std::string& expected) {
     const std::string path = (root.path() == "/" ? std::string() : root.path()) + "/" + key;
     throw StudyError(root.file() + ": " + path + ": expected " + expected + ", found nothing", root.file(), path,
                      expected, "nothing");
   };
-  if (!root.Has("crank_bearing"))
+  if (!in.crank_bearing)
     missing("crank_bearing", "{\"kind\": \"ball\" | \"roller\", \"dynamic_rating_N\", \"static_rating_N\"} (" +
                                  why + ")");
-  life.crank_bearing = ParseBearingRating(root["crank_bearing"], true, BearingKind::kBall, why, modified_life);
-  if (root.Has("pins")) {
+  life.crank_bearing = RatingOf(*in.crank_bearing, root["crank_bearing"], why);
+  if (in.pins) {
     life.pins_rated = true;
-    life.pins = ParseBearingRating(root["pins"], false, BearingKind::kRoller, why, modified_life);
+    life.pins = RatingOf(*in.pins, root["pins"], BearingKind::kRoller, why);
   }
   if (life.crank_bearing.modified || (life.pins_rated && life.pins.modified))
     life.contamination_factor = root["lubricant"]["contamination_factor"].Number();  // CheckModifiedLifeInputs

@@ -81,22 +81,6 @@ struct LcrSideWithRatingsInput : LcrSideInput, LcrRollerRatingsInput {
   }
 };
 
-/// A bearing's inputs of the modified life a_ISO (ISO 281:2007 §9.3; docs/life.md): C_u and D_pw,
-/// both or neither (read by ParseRatingValues, studies/bearing_life_io.h), visited after the ratings.
-struct ModifiedLifeRatingInput {
-  std::optional<double> fatigue_load_limit_N, pitch_diameter_mm;
-  template <typename Archive>
-  void VisitModifiedLife(Archive* a) {
-    a->Visit("fatigue_load_limit_N", &fatigue_load_limit_N, Field().Positive().Unit("N").Desc(kFatigueLoadLimitDesc));
-    a->Visit("pitch_diameter_mm", &pitch_diameter_mm, Field().Positive().Unit("mm").Desc(kPitchDiameterDesc));
-  }
-  /// JSON Schema: the two fields come together.
-  static nlohmann::ordered_json SchemaRules() {
-    return {{"dependentRequired",
-             {{"fatigue_load_limit_N", {"pitch_diameter_mm"}}, {"pitch_diameter_mm", {"fatigue_load_limit_N"}}}}};
-  }
-};
-
 /// A cam side of the kinds with the finite-length contact and the bearing lives (lcr_analysis): the
 /// design, the rollers' crowning, their bearing's ratings and its modified-life inputs.
 struct LcrRatedSideInput : LcrSideInput, LcrRollerRatingsInput, ModifiedLifeRatingInput {
