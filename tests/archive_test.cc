@@ -59,10 +59,11 @@ struct Toy {
   }
 };
 
-// The message the reader gives for `study`, empty when it reads.
+// The message the reader of T gives for `study`, empty when it reads.
+template <typename T = Toy>
 std::string ReadError(const json& study) {
   try {
-    (void)Read<Toy>(Node(&study, "t.json", ""));
+    (void)Read<T>(Node(&study, "t.json", ""));
   } catch (const StudyError& e) {
     return e.what();
   }
@@ -225,14 +226,7 @@ struct Switched {
 
 TEST(Archive, BoolOrReadsByJsonTypeAndStatesBothTypes) {
   auto read = [](const json& s) { return Read<Switched>(Node(&s, "t.json", "")); };
-  auto error = [&](const json& s) -> std::string {
-    try {
-      (void)read(s);
-    } catch (const StudyError& e) {
-      return e.what();
-    }
-    return "";
-  };
+  const auto error = [](const json& s) { return ReadError<Switched>(s); };
   // Absent and true: the settings' defaults; false: none; an object: its values.
   ASSERT_TRUE(Enabled(read(json::object()).check));
   EXPECT_EQ(Enabled(read(json::object()).check)->samples, 200);
@@ -280,14 +274,7 @@ struct Listed {
 
 TEST(Archive, VariantReadsTheAlternativeOfItsJsonType) {
   auto read = [](const json& s) { return Read<Listed>(Node(&s, "t.json", "")); };
-  auto error = [&](const json& s) -> std::string {
-    try {
-      (void)read(s);
-    } catch (const StudyError& e) {
-      return e.what();
-    }
-    return "";
-  };
+  const auto error = [](const json& s) { return ReadError<Listed>(s); };
   EXPECT_FALSE(read(json::object()).items);
   const auto file = read({{"items", {{"file", "a.json"}}}}).items;
   ASSERT_TRUE(file && std::holds_alternative<Listed::File>(*file));
