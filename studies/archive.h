@@ -30,9 +30,9 @@
 //
 // Supported member types: double, int, bool, std::string (with OneOf: an enum; with Const: a
 // constant), a struct with its own Serialize, std::optional of any of these, std::vector of any of
-// these, std::array of numbers, BoolOr<T> (`true`, `false` or the object of a declared T), and
-// nlohmann::json for a value read by shared code (its schema given
-// with Field::Schema).
+// these, std::array of numbers, std::variant of alternatives with distinct JSON types (BoolOr<T>:
+// `true`, `false` or the object of a declared T), and nlohmann::json for a value read by shared
+// code (its schema given with Field::Schema).
 #pragma once
 
 #include <array>

@@ -78,7 +78,8 @@ inline constexpr const char* kPitchDiameterDesc =
     "(ISO 281:2007 eq. 28; docs/life.md)";
 
 /// A bearing's inputs of the modified life a_ISO (ISO 281:2007 §9.3; docs/life.md): C_u and D_pw,
-/// both or neither (read by ParseRatingValues, studies/bearing_life_io.h), visited after the ratings.
+/// both or neither (ParseModifiedLifeRating checks the pair, with its message), visited after the
+/// ratings.
 struct ModifiedLifeRatingInput {
   std::optional<double> fatigue_load_limit_N, pitch_diameter_mm;
   template <typename Archive>
@@ -171,7 +172,6 @@ RollingBearingRating RatingOf(const KindedBearingRatingInput<kModifiedLife>& in,
   return RatingOf(static_cast<const BearingRatingInput<kModifiedLife>&>(in), node,
                   in.kind == "ball" ? BearingKind::kBall : BearingKind::kRoller, why);
 }
-
 
 /// The modified life's inputs across blocks: a rating block with fatigue_load_limit_N and
 /// pitch_diameter_mm (`rated`: those blocks) needs "lubricant" (the oil's viscosity at its

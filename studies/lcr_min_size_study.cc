@@ -33,7 +33,6 @@ using objectives::LcrConstraintForm;
 using objectives::LcrSizingSpec;
 using objectives::LcrLimits;
 
-// `life_why`: non-empty when a life is asked (then every entry needs its C).
 // The catalogue's rollers as read from `list` (the study's "roller_catalogue" or its file), each
 // with the dynamic rating a life needs (`life_why` non-empty).
 std::vector<CatalogueRoller> CatalogueRollers(const std::vector<CatalogueRollerInput>& entries, const Node& list,
