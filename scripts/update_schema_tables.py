@@ -5,7 +5,8 @@
 
 Each table that follows a line `<!-- camopt schema KIND --table -->` (or `<!-- camopt schema KIND
 --result --table -->`, the keys of its result.json) is replaced by what that command prints (the
-kinds declared once, studies/archive.h). The gtest
+kinds declared once, studies/archive.h), with the list of rules between fields that follows an
+input table. The gtest
 SchemaParserAgreement.DeclaredKindsFieldTablesInTheDocsAreTheEmittedOnes fails when a table is stale.
 """
 import pathlib
@@ -26,5 +27,9 @@ while i < len(lines):
                            capture_output=True, text=True).stdout.rstrip("\n").split("\n")
     while i < len(lines) and lines[i].startswith("|"):
         i += 1  # the old table
+    if i + 1 < len(lines) and lines[i] == "" and lines[i + 1].startswith("Rules between fields"):
+        i += 3  # and its rules between fields: a blank line, the heading line, a blank line, the items
+        while i < len(lines) and lines[i].startswith("- "):
+            i += 1
     out.extend(table)
 docs.write_text("\n".join(out))

@@ -177,11 +177,34 @@ void TableRows(const nlohmann::ordered_json& schema, const std::string& prefix, 
   }
 }
 
+// The rules between fields (CrossFieldRule, "x-rules") of the object `schema` and of those inside
+// it, one list item each: its fields with their paths, then the rule.
+void RuleRows(const nlohmann::ordered_json& schema, const std::string& prefix, std::string& out) {
+  if (!schema.is_object()) return;
+  if (schema.contains("x-rules"))
+    for (const auto& r : schema["x-rules"]) {
+      std::string fields;
+      for (size_t i = 0; i < r["fields"].size(); ++i)
+        fields += (i ? ", `" : "`") + prefix + r["fields"][i].get<std::string>() + "`";
+      out += "- " + fields + ": " + r["rule"].get<std::string>() + "\n";
+    }
+  if (schema.contains("properties"))
+    for (auto it = schema["properties"].begin(); it != schema["properties"].end(); ++it) {
+      RuleRows(it.value(), prefix + it.key() + ".", out);
+      if (it.value().contains("items")) RuleRows(it.value()["items"], prefix + it.key() + "[i].", out);
+    }
+}
+
 }  // namespace
 
 std::string SchemaFieldTable(const nlohmann::ordered_json& schema, bool result) {
   std::string out = result ? "| key | value | meaning |\n|---|---|---|\n" : "| field | accepts | meaning |\n|---|---|---|\n";
   TableRows(schema, "", result, out);
+  std::string rules;
+  RuleRows(schema, "", rules);
+  if (!rules.empty())
+    out += "\nRules between fields (the schema's \"x-rules\"; `camopt run` refuses a study that breaks one):\n\n" +
+           rules;
   return out;
 }
 

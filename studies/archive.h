@@ -24,9 +24,12 @@
 //     filled in).
 // Defaults are the struct's initialisers; a field marked Required() has none. A std::optional
 // member is absent when the file does not give it (Field::Default documents what absence means).
-// Checks that span fields stay code, one function per kind, run after Read; those JSON Schema can
-// state (if/then, oneOf, dependentRequired) a struct may also give its schema with a static
-// `nlohmann::ordered_json SchemaRules()`, whose keywords the emitter adds to the object's schema.
+// Checks that span fields stay code, one function per kind, run after Read. Those JSON Schema can
+// state (if/then, oneOf, dependentRequired) a struct gives in its schema with a static
+// `nlohmann::ordered_json SchemaRules()`, whose keywords the emitter adds to the object's schema;
+// those it cannot (an ordered range, a sum, a fit of the geometry) it declares with a static
+// `std::vector<CrossFieldRule> CrossFieldRules()`, which the schema carries as the annotation
+// "x-rules" (docs/studies.md "Rules between fields").
 //
 // Supported member types: double, int, bool, std::string (with OneOf: an enum; with Const: a
 // constant), a struct with its own Serialize, std::optional of any of these, std::vector of any of
@@ -72,6 +75,19 @@ std::optional<T> Enabled(const BoolOr<T>& v) {
 /// A number of a result that may be ±inf or NaN (the stress of an undercut contact, an estimate
 /// not made): itself, or null in JSON.
 inline nlohmann::json NumberOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+/// A rule between fields of one object that JSON Schema cannot state (lo < hi, rollers = lobes + 1,
+/// shares that sum to 1, a bolt circle that fits the part): the object's fields it spans, the rule
+/// in words, and a piece of the message the parse refuses a study that breaks it with. The
+/// parse (the kind's checks, or the model's CheckDesign) enforces it; the declaration puts it in
+/// the schema ("x-rules": [{"fields", "rule", "message"}], an annotation validators ignore) and
+/// in docs/studies.md, and the schema/parser agreement test excuses a refusal the schema does not
+/// state only when a declared rule of an enclosing object names the field and the message.
+struct CrossFieldRule {
+  std::vector<std::string> fields;
+  std::string rule;
+  std::string message;
+};
 
 /// The members of a declared result that decide the run's status (RunStudy, studies/status.h), each
 /// marked on its field with Field::Decides: a `converged` that is false gives "not_converged", a
@@ -419,6 +435,9 @@ class SchemaEmitter {
         const nlohmann::ordered_json rules = T::SchemaRules();
         for (auto it = rules.begin(); it != rules.end(); ++it) s[it.key()] = it.value();
       }
+      if constexpr (requires { T::CrossFieldRules(); })
+        for (const CrossFieldRule& r : T::CrossFieldRules())
+          s["x-rules"].push_back({{"fields", r.fields}, {"rule", r.rule}, {"message", r.message}});
     } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
       s["type"] = std::is_same_v<T, int> ? "integer" : "number";
       NumberKeywords(f, std::is_same_v<T, int>, s);

@@ -80,6 +80,11 @@ inline constexpr const char* kPitchDiameterDesc =
 /// A bearing's inputs of the modified life a_ISO (ISO 281:2007 §9.3; docs/life.md): C_u and D_pw,
 /// both or neither (ParseModifiedLifeRating checks the pair, with its message), visited after the
 /// ratings.
+/// The rule of a kind's "duty_cycle" (ParseDutyCycle): the lines' time shares sum to 1.
+inline CrossFieldRule DutyCycleRule() {
+  return {{"duty_cycle"}, "the lines' time shares sum to 1 (within 1e-6; docs/life.md)", "time shares summing to 1"};
+}
+
 struct ModifiedLifeRatingInput {
   std::optional<double> fatigue_load_limit_N, pitch_diameter_mm;
   template <typename Archive>

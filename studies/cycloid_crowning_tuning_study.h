@@ -139,6 +139,12 @@ struct Input {
     }
     /// At least one variable; each range's bound on one end.
     static nlohmann::ordered_json SchemaRules();
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"coefficient_mm", "effective_length_mm", "end_drop_mm", "flat_length_mm", "radius_mm",
+                "delta_position_um", "delta_radius_um"},
+               "each range [lower, upper] with lower < upper",
+               "with lo < hi"}};
+    }
   };
   struct Optimizer {
     /// No schema default: the general form's is "ipopt", the shorthand's must be given ("cobyla").
@@ -217,6 +223,11 @@ struct Input {
   /// The rules of the two forms (one branch each: which fields of tuning, optimizer and crowning a
   /// form takes, a crowning variable only with the crowning type that has it) and of the lives.
   static nlohmann::ordered_json SchemaRules();
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"tuning", "variables", "drive"}, "the effective length's range starts at or above the face width",
+             "lo >= the face width"},
+            {{"tuning"}, "the shorthand's range of f: 0 <= lo < hi", "with 0 <= lo < hi"}};
+  }
 };
 
 struct Study {

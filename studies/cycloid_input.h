@@ -40,6 +40,9 @@ struct DriveInput {
                  "the disc's central bore in its solid model (cycloid_ltca's geometry files; accepted by the other "
                  "cycloid kinds so that a drive block can be shared); absent: none"));
   }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"teeth", "rollers"}, "rollers = teeth + 1 (a one-tooth difference)", "teeth + 1"}};
+  }
 };
 
 /// "modification": the profile's equidistant and offset corrections [µm] (docs/cycloid.md).
@@ -162,6 +165,13 @@ struct CompliantOutputMechanismInput {
               {"roller_radius_mm", {"pin_radius_mm"}},
               {"pin_support", {"pin_radius_mm"}},
               {"pin_span_mm", {"pin_radius_mm"}}}}};
+  }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"roller_radius_mm", "pin_radius_mm"}, "a roller on the pin is larger than the pin",
+             "a roller radius > pin_radius_mm"},
+            {{"pins", "pin_count", "hole_radius_mm", "pin_circle_radius_mm"},
+             "the holes do not overlap: 2 hole_radius_mm below their pitch 2 R_w sin(π/Z_w)",
+             "holes that do not overlap"}};
   }
 };
 

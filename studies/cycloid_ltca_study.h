@@ -310,6 +310,23 @@ struct Input {
   /// The rules between blocks: the loaded stage needs the material and the load; a life needs the
   /// crank bearing and the output mechanism, one disc and the loaded stage; and so on.
   static nlohmann::ordered_json SchemaRules();
+  /// The rules between blocks JSON Schema cannot state: the crowning, the discs and the form wheel
+  /// against the drive, the output pins' span against the disc stack, the duty cycle and external
+  /// loads.
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    std::vector<CrossFieldRule> rules = ExternalLoadsRules();
+    rules.push_back(DutyCycleRule());
+    rules.push_back({{"crowning", "drive"}, "the crowning's effective length at least the face width",
+                     "effective length must be >= the face width"});
+    rules.push_back({{"disc_spacing_mm", "drive"}, "the discs' spacing at least the face width",
+                     "the discs would overlap"});
+    rules.push_back({{"discs", "disc_spacing_mm", "output_mechanism", "drive"},
+                     "the output pins' span at least the disc stack (discs − 1) disc_spacing_mm + face_width_mm",
+                     "the disc stack"});
+    rules.push_back({{"grinding", "drive"}, "the form wheel's radius above the tooth space's depth",
+                     "does not exceed the tooth space's depth"});
+    return rules;
+  }
 };
 
 /// The output mechanism with clearance and compliance (studies/cycloid_study_common.h).

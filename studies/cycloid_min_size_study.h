@@ -75,6 +75,10 @@ struct Input {
     static nlohmann::ordered_json SchemaRules() {
       return {{"oneOf", {{{"required", {"teeth"}}}, {{"required", {"speed_ratio"}}}}}};
     }
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"overload_torque_Nm", "design_torque_Nm"}, "overload_torque_Nm >= design_torque_Nm",
+               "a torque >= design_torque_Nm"}};
+    }
   };
   /// "variables": each sized field a number (fixed), [lo, hi] (a range, starting at its middle) or
   /// {"range": [lo, hi], "start": value}, read by Parse (the schema of each: VariableSchema).
@@ -304,6 +308,22 @@ struct Input {
   /// The rules between blocks: each sized field once (in variables or its block), the drive's
   /// fields somewhere, the crowning's fields by its type, a life's blocks.
   static nlohmann::ordered_json SchemaRules();
+  /// The ranges against their starts, the face width and the pin count (a plausible drive in the
+  /// whole box).
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"variables"}, "a variable's start within its range", "a start within the range"},
+            {{"crowning", "variables", "drive"},
+             "a logarithmic crowning's effective length can reach the face width within its range",
+             "below the face width"},
+            {{"target", "variables", "drive"},
+             "the pin count against the eccentricity and pin circle ranges: not too curtate at the most favourable "
+             "corner",
+             "too curtate"},
+            {{"target", "variables", "drive"},
+             "the pin count against the eccentricity and pin circle ranges: a shortening coefficient e z₂ / R_p in "
+             "0.05 to 1 in the whole box",
+             "shortening coefficient"}};
+  }
 };
 
 struct Study {

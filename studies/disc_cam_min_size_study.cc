@@ -185,6 +185,27 @@ void FillResult(const Study& s, Result& r) {
 
 // The checks that span fields (the design by disc_cam::Parse, the follower's type, the ranges'
 // order) and the sizing problem.
+nlohmann::ordered_json Input::SchemaRules() {
+  using oj = nlohmann::ordered_json;
+  auto not_sized = [](const std::vector<std::string>& fields) {
+    oj refused = oj::array();
+    for (const std::string& f : fields) refused.push_back({{"not", {{"required", oj::array({f})}}}});
+    return oj{{"properties", {{"variables", {{"allOf", refused}}}}}};
+  };
+  // The follower's own variables: an offset (translating roller or knife edge), pivot and arm
+  // (oscillating), a roller's radius (a roller); a translating flat face the base circle only.
+  oj all = disc_cam::DesignSchemaRules();
+  all.push_back({{"if", disc_cam::FollowerTypeIs(
+                             {"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})},
+                 {"then", not_sized({"offset_mm"})},
+                 {"else", not_sized({"pivot_distance_mm", "arm_length_mm"})}});
+  all.push_back({{"if", disc_cam::FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge",
+                                                  "translating_flat_faced", "oscillating_flat_faced"})},
+                 {"then", not_sized({"roller_radius_mm"})}});
+  all.push_back({{"if", disc_cam::FollowerTypeIs({"translating_flat_faced"})}, {"then", not_sized({"offset_mm"})}});
+  return {{"allOf", all}};
+}
+
 Study Parse(const Node& root) {
   const Input in = Read<Input>(root);
   Study s;

@@ -109,8 +109,10 @@ struct Input {
                                      "circle is the objective and always a variable"));
     a->Visit("optimizer", &optimizer, Field().Desc("the optimizer and the verification loop"));
   }
-  /// The motion's unit by the follower's type (disc_cam's rule, studies/motion_input.h).
-  static nlohmann::ordered_json SchemaRules() { return {{"allOf", disc_cam::FollowerMotionRules()}}; }
+  /// disc_cam's rules of the design by the follower (disc_cam::DesignSchemaRules) and the variables
+  /// each follower has.
+  static nlohmann::ordered_json SchemaRules();
+  static std::vector<CrossFieldRule> CrossFieldRules() { return disc_cam::Input::CrossFieldRules(); }
 };
 
 struct Study {

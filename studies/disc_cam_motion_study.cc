@@ -74,10 +74,6 @@ nlohmann::ordered_json Input::MotionSchema() {
 
 nlohmann::ordered_json Input::SchemaRules() {
   using oj = nlohmann::ordered_json;
-  auto follower_is = [](const std::vector<std::string>& types) {
-    return oj{{"required", oj::array({"follower"})},
-              {"properties", {{"follower", {{"properties", {{"type", {{"enum", types}}}}}}}}}};
-  };
   auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
   const oj stiffness = {{"required", oj::array({"dynamics"})},
                         {"properties", {{"dynamics", {{"required", oj::array({"follower_stiffness_N_per_mm"})}}}}}};
@@ -92,11 +88,11 @@ nlohmann::ordered_json Input::SchemaRules() {
                // No flat face; an oscillating follower takes no follower loads (disc_cam's rule) nor a stroke in mm.
                {{"properties", {{"follower", {{"properties", {{"type", {{"not", {{"enum", {"translating_flat_faced",
                                                                                              "oscillating_flat_faced"}}}}}}}}}}}}},
-               {{"if", follower_is({"oscillating_roller", "oscillating_knife_edge"})},
+               {{"if", disc_cam::FollowerTypeIs({"oscillating_roller", "oscillating_knife_edge"})},
                 {"then", {{"allOf", oj::array({refuse("dynamics"), {{"properties", {{"limits", refuse("stroke_mm")}}}}})}}}},
-               {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
+               {{"if", disc_cam::FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge"})},
                 {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}},
-               {{"if", follower_is({"oscillating_roller", "oscillating_knife_edge"})},
+               {{"if", disc_cam::FollowerTypeIs({"oscillating_roller", "oscillating_knife_edge"})},
                 {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}},
                {{"if", objective("residual_vibration")}, {"then", stiffness}},
                // peak_jerk: the designed segments C2 at their ends and of degree 3 at least.
@@ -118,6 +114,10 @@ nlohmann::ordered_json Input::SchemaRules() {
                         {"properties", {{"analysis", {{"required", oj::array({"residual_speeds_rpm"})}}}}}}},
                 {"then", objective("residual_vibration")}},
                {{"properties", {{"dynamics", {{"properties", {{"damping_ratio", {{"exclusiveMaximum", 1}}}}}}}}}},
+               // The contact-stress limit needs the contact's length, the material and the loads.
+               {{"if", {{"required", oj::array({"limits"})},
+                        {"properties", {{"limits", {{"required", oj::array({"contact_stress_MPa"})}}}}}}},
+                {"then", {{"required", oj::array({"face_width_mm", "material", "dynamics"})}}}},
            })}};
 }
 

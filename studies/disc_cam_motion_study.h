@@ -123,6 +123,7 @@ struct Input {
   static nlohmann::ordered_json MotionSchema();
   /// What each objective and limit needs, the followers taken: Parse refuses the same.
   static nlohmann::ordered_json SchemaRules();
+  static std::vector<CrossFieldRule> CrossFieldRules() { return MotionRules(); }
 };
 
 struct Study {

@@ -140,35 +140,89 @@ nlohmann::ordered_json Input::Follower::SchemaRules() {
                      {"else", refuse("roller_radius_mm")}};
   const oj face = {{"if", is_flat}, {"else", refuse("face_width_mm")}};
   const oj face_offset = {{"if", is_flat_arm}, {"else", refuse("face_offset_mm")}};
-  return {{"allOf", oj::array({radius, face, face_offset})}};
+  // An oscillating follower sits on a pivot (its arm's length unless a flat face touches the cam);
+  // a translating one has an axis offset, which a flat face does not take.
+  const oj is_oscillating = {{"properties", {{"type", {{"enum", {"oscillating_roller", "oscillating_knife_edge",
+                                                                   "oscillating_flat_faced"}}}}}}};
+  const oj is_translating_flat = {{"properties", {{"type", {{"const", "translating_flat_faced"}}}}}};
+  const oj pivot = {{"if", is_oscillating},
+                    {"then", {{"allOf", oj::array({{{"required", oj::array({"pivot_distance_mm"})}},
+                                                   refuse("offset_mm")})},
+                              {"if", is_flat_arm},
+                              {"then", refuse("arm_length_mm")},
+                              {"else", {{"required", oj::array({"arm_length_mm"})}}}}},
+                    {"else", {{"allOf", oj::array({refuse("pivot_distance_mm"), refuse("arm_length_mm")})}}}};
+  const oj offset = {{"if", is_translating_flat}, {"then", refuse("offset_mm")}};
+  return {{"allOf", oj::array({radius, face, face_offset, pivot, offset})}};
+}
+
+nlohmann::ordered_json FollowerTypeIs(const std::vector<std::string>& types) {
+  return {{"required", nlohmann::ordered_json::array({"follower"})},
+          {"properties", {{"follower", {{"properties", {{"type", {{"enum", types}}}}}}}}}};
+}
+
+namespace {
+nlohmann::ordered_json Refuse(const std::string& field) {
+  return {{"not", {{"required", nlohmann::ordered_json::array({field})}}}};
+}
+}  // namespace
+
+nlohmann::ordered_json DesignSchemaRules() {
+  using oj = nlohmann::ordered_json;
+  const std::vector<std::string> oscillating = {"oscillating_roller", "oscillating_knife_edge",
+                                                "oscillating_flat_faced"};
+  // Without a roller: no cutter path of a roller's size.
+  const oj no_roller = {{"if", FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge",
+                                               "translating_flat_faced", "oscillating_flat_faced"})},
+                        {"then", Refuse("cutter_radius_mm")}};
+  // A knife edge: a point contact, no contact-stress limit.
+  const oj knife = {{"if", FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge"})},
+                    {"then", {{"properties", {{"limits", Refuse("contact_stress_MPa")}}}}}};
+  // The arm's loads: oscillating followers only; their follower loads: translating followers only.
+  const oj arm = {{"if", FollowerTypeIs({"translating_roller", "translating_knife_edge", "translating_flat_faced"})},
+                  {"then", Refuse("arm_dynamics")}};
+  const oj translating_loads = {{"if", FollowerTypeIs(oscillating)}, {"then", Refuse("dynamics")}};
+  // The contact-stress limit needs the contact's length, the material and the contact force (the
+  // follower's loads, or the arm's).
+  const oj stress_limit = {
+      {"if", {{"required", oj::array({"limits"})},
+              {"properties", {{"limits", {{"required", oj::array({"contact_stress_MPa"})}}}}}}},
+      {"then",
+       {{"required", oj::array({"face_width_mm", "material"})},
+        {"if", FollowerTypeIs(oscillating)},
+        {"then", {{"required", oj::array({"arm_dynamics"})}}},
+        {"else", {{"required", oj::array({"dynamics"})}}}}}};
+  const oj keyway = {{"dependentRequired", {{"keyway", oj::array({"bore_diameter_mm"})}}}};
+  oj all = oj::array({no_roller, knife, arm, translating_loads, stress_limit, keyway});
+  for (const oj& rule : FollowerMotionRules()) all.push_back(rule);
+  return all;
+}
+
+std::vector<CrossFieldRule> Input::CrossFieldRules() {
+  std::vector<CrossFieldRule> rules = MotionRules();
+  rules.push_back(MountingRule());
+  return rules;
 }
 
 nlohmann::ordered_json Input::SchemaRules() {
   using oj = nlohmann::ordered_json;
-  auto follower_is = [](const std::vector<std::string>& types) {
-    return oj{{"required", oj::array({"follower"})},
-              {"properties", {{"follower", {{"properties", {{"type", {{"enum", types}}}}}}}}}};
-  };
-  auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
-  // Without a roller: no cutter path, the profile stage only (tolerances are read and not used: a
-  // note says so).
+  // Without a roller the profile stage only (the mechanical error rolls a roller on the profile).
   const oj profile_only = {{"items", {{"const", "profile"}}}};
-  const oj evaluate_profile_only = {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}}};
   const oj no_roller = {
-      {"if", follower_is({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced",
-                          "oscillating_flat_faced"})},
-      {"then", {{"allOf", oj::array({refuse("cutter_radius_mm"), evaluate_profile_only})}}}};
-  // A knife edge: a point contact, no contact-stress limit.
-  const oj knife = {{"if", follower_is({"translating_knife_edge", "oscillating_knife_edge"})},
-                    {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}};
-  // The arm's loads: oscillating followers only; their follower loads: translating followers only.
-  const oj arm = {{"if", follower_is({"translating_roller", "translating_knife_edge", "translating_flat_faced"})},
-                  {"then", refuse("arm_dynamics")}};
-  const oj translating_loads = {
-      {"if", follower_is({"oscillating_roller", "oscillating_knife_edge", "oscillating_flat_faced"})},
-      {"then", refuse("dynamics")}};
-  oj all = oj::array({no_roller, knife, arm, translating_loads});
-  for (const oj& rule : FollowerMotionRules()) all.push_back(rule);
+      {"if", FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced",
+                             "oscillating_flat_faced"})},
+      {"then", {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}}}}};
+  // The error stages need the tolerances.
+  const oj error_stage = {
+      {"if", {{"required", oj::array({"analysis"})},
+              {"properties",
+               {{"analysis",
+                 {{"required", oj::array({"evaluate"})},
+                  {"properties", {{"evaluate", {{"contains", {{"enum", {"error", "monte_carlo"}}}}}}}}}}}}}},
+      {"then", {{"required", oj::array({"tolerances"})}}}};
+  oj all = DesignSchemaRules();
+  all.push_back(no_roller);
+  all.push_back(error_stage);
   return {{"allOf", all}};
 }
 

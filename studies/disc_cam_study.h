@@ -44,7 +44,7 @@ namespace camopt::studies::disc_cam {
 struct Input {
   /// The follower: the fields of its type only (translating: offset_mm; oscillating:
   /// pivot_distance_mm and arm_length_mm, required; a roller: roller_radius_mm, required; a flat
-  /// face: face_width_mm), checked by Parse; SchemaRules states the roller's and the face's fields.
+  /// face: face_width_mm), checked by Parse and stated by SchemaRules.
   struct Follower {
     std::string type;
     /// Optional without a schema default: an oscillating follower has no offset, a knife edge or a
@@ -86,7 +86,8 @@ struct Input {
                                        "cam (absent: 0, a face through the pivot); r_b + d < f"));
     }
     /// A roller follower needs its radius, the others have none; the face width is a flat face's,
-    /// the face offset an oscillating flat face's.
+    /// the face offset an oscillating flat face's; pivot and arm an oscillating follower's (a flat
+    /// face on its arm: the pivot only), the offset a translating roller's or knife edge's.
     static nlohmann::ordered_json SchemaRules();
   };
   /// Manufacturing tolerances (Rzine et al., eqs. 31–32).
@@ -214,6 +215,10 @@ struct Input {
                Field().Positive().MinItems(1, "a non-empty array of numbers > 0")
                    .Desc("tolerance multipliers, one run each (samples × angle_steps × scales below 1e8)"));
     }
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"samples", "angle_steps", "scales"},
+               "samples × angle_steps × scales below 1e8 (the work of the check)", "must stay below 1e8"}};
+    }
   };
   struct Analysis {
     int angle_steps = 3600;
@@ -315,9 +320,11 @@ struct Input {
   };
   std::optional<InspectionInput> inspection;
   std::optional<MeasuredProfileInputT<Parts>> measured_profile;
-  /// What a follower without a roller does not take (the mechanical-error stages, a cutter path; a
-  /// knife edge no contact-stress limit): Parse refuses the same with its reasons.
+  /// The design's rules by the follower (DesignSchemaRules); without a roller no mechanical-error
+  /// stage, and the error stages need the tolerances: Parse refuses the same with its reasons.
   static nlohmann::ordered_json SchemaRules();
+  /// The motion's and the mounting's rules (MotionRules, MountingRule).
+  static std::vector<CrossFieldRule> CrossFieldRules();
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("study", &study, Field().Required().Const("disc_cam").Desc("the study kind"));
@@ -1044,6 +1051,15 @@ MotionInputSpec FollowerMotionSpec(bool oscillating);
 /// The motion's unit by the follower's type (FollowerRiseRule for translating and oscillating
 /// followers): the schema rules of every kind with a disc-cam follower and its "motion".
 nlohmann::ordered_json FollowerMotionRules();
+
+/// The schema condition "the study's follower.type is one of `types`" (for an if/then rule).
+nlohmann::ordered_json FollowerTypeIs(const std::vector<std::string>& types);
+
+/// The rules of the design's fields by the follower's type that disc_cam and disc_cam_min_size
+/// share (the motion's unit, a cutter path and a contact-stress limit by the contact, the loads
+/// by the follower's motion, the inputs of the contact-stress limit, a keyway's bore), as the
+/// items of an allOf.
+nlohmann::ordered_json DesignSchemaRules();
 
 /// The cam as inspected: its exact profile as a function of the cam angle θ in the frame of
 /// profile.dxf, the frame and datum in words.

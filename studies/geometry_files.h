@@ -86,6 +86,15 @@ struct BoltCircleInput {
   }
 };
 
+/// The rule between a part's bore, keyway and bolt circle and its profile (ParseMounting), for
+/// the CrossFieldRules of the object that holds them.
+inline CrossFieldRule MountingRule() {
+  return {{"keyway", "bolt_circle", "bore_diameter_mm"},
+          "a keyway narrower than the bore, its corners inside the part's profile circle less a web; the bolt "
+          "circle's holes inside that circle, clear of the bore and keyway and of each other",
+          "would fit"};
+}
+
 /// A part's bore features beyond the plain bore: the keyway and the bolt circle's holes.
 struct Mounting {
   std::vector<cad::Hole> holes;

@@ -22,6 +22,7 @@
 #include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/geometry_files.h"
+#include "studies/motion_input.h"
 #include "studies/study.h"
 
 namespace camopt::studies::globoidal_cam {
@@ -105,6 +106,10 @@ struct Input {
       a->Visit("contact_arm_mm", &contact_arm_mm,
                Field().Positive().Unit("mm").Desc("l_c, turret axis to the contact point, in [l₂, l₁] (absent: R_e)"));
     }
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"contact_arm_mm"}, "l_c on the roller: in [l₂, l₁] of the cam's geometry (CheckContactArm)",
+               "expected a length in [l₂, l₁]"}};
+    }
   };
   struct Dynamics {
     std::vector<double> cam_speeds_rpm;
@@ -134,6 +139,11 @@ struct Input {
       a->Visit("max_steps", &max_steps,
                Field().AtLeast(1).AtMost(200000000, "a whole number <= 2e8").Desc("accepted solver steps per speed, at most"));
     }
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"max_steps", "end_time_s", "cam_speeds_rpm"},
+               "max_steps covers the simulated time at every speed (a step spans at most 0.5° of cam)",
+               "the run needs at least"}};
+    }
   };
   struct Analysis {
     int angle_steps = 720, axis_steps = 7;
@@ -158,6 +168,10 @@ struct Input {
       a->Visit("point_cloud", &point_cloud, Field().Desc("write working_surfaces.csv"));
       a->Visit("angle_steps", &angle_steps, Field().AtLeast(36).Desc("cam angles of the exported surfaces"));
       a->Visit("axis_steps", &axis_steps, Field().AtLeast(2).Desc("points along the roller axis of the exported surfaces"));
+    }
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"angle_steps", "axis_steps"}, "angle_steps × axis_steps below 4e6 (the exported points)",
+               "must stay below 4e6"}};
     }
   };
 
@@ -210,6 +224,15 @@ struct Input {
   }
   /// The schema of a "motion" segment (read by ParseMotionProgram, shared with disc_cam).
   static nlohmann::ordered_json MotionSchema();
+  /// The motion's rules, and the turret torque a Hertz contact carries.
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    std::vector<CrossFieldRule> rules = MotionRules();
+    rules.push_back({{"load", "contact", "cam"},
+                     "the turret torque's static contact penetration (F/K)^(1/e) at the start angle below a tenth of "
+                     "the roller radius (the Hertz law's range)",
+                     "static contact penetration"});
+    return rules;
+  }
 };
 
 /// The study as Run takes it: the file as declared (`in`, in the file's units) and, checked

@@ -199,6 +199,16 @@ struct Input {
   }
   /// The stages' needs (material, load), the life's ratings, one form of the speed.
   static nlohmann::ordered_json SchemaRules();
+  /// The torque against the material, the duty cycle and the external loads.
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    std::vector<CrossFieldRule> rules = ExternalLoadsRules();
+    rules.push_back(DutyCycleRule());
+    rules.push_back({{"material", "load", "reducer"},
+             "the torque within what the output rollers carry at the material's Young's modulus (a soft material "
+             "carries less)",
+             "a torque the output rollers can carry"});
+    return rules;
+  }
 };
 
 /// The stages a study asks for ("analysis.evaluate"); stress and efficiency imply forces.

@@ -109,6 +109,14 @@ struct Input {
   }
   /// The life's ratings and one form of the speed.
   static nlohmann::ordered_json SchemaRules() { return {{"allOf", LcrLifeSchemaRules()}}; }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"material", "load", "reducer"},
+             "the torque within what the output rollers carry at the material's Young's modulus (a soft material "
+             "carries less)",
+             "a torque the output rollers can carry"},
+            {{"load"}, "overload_torque_Nm >= output_torque_Nm", "an overload torque >= output_torque_Nm"},
+            {{"tuning"}, "the range of f: 0 < lo < hi", "0 < lo < hi"}};
+  }
 };
 
 /// The lives of the tuned design, asked by "load.input_speed_rpm" or "duty_cycle" (docs/life.md,

@@ -51,6 +51,9 @@ struct Input {
                                                 "clamped into the bounds)"));
       a->Visit("bounds", &bounds, Field().Expect("[lower, upper], two numbers").Desc("[lower, upper], lower < upper"));
     }
+    static std::vector<CrossFieldRule> CrossFieldRules() {
+      return {{{"bounds"}, "[lower, upper] with lower < upper", "with lower < upper"}};
+    }
   };
   struct Parameters {
     Parameter friction_coefficient{std::nullopt, {0.0, 1.0}};

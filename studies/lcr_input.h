@@ -42,6 +42,14 @@ struct LcrSideInput {
     a->Visit("bolt_circle", &bolt_circle,
              Field().Desc("equal through-holes on a circle about the cam's centre (lcr_analysis's geometry files)"));
   }
+  /// The counts of a buildable side (model/lcr/reducer.h CheckDesign).
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"lobes", "rollers"}, "more rollers than lobes", "more rollers than lobes"},
+            {{"lobes", "rollers"}, "lobes and rollers without a common divisor", "no common divisor"},
+            {{"lobes", "rollers"},
+             "rollers = lobes + 1 (a difference above 1 winds the pitch curve: a self-crossing cam)",
+             "rollers − lobes"}};
+  }
 };
 
 /// A lobe cam reducer's design as the study file gives it (without crowning or bearing ratings).
@@ -84,7 +92,18 @@ struct LcrSideWithRatingsInput : LcrSideInput, LcrRollerRatingsInput {
 /// A cam side of the kinds with the finite-length contact and the bearing lives (lcr_analysis): the
 /// design, the rollers' crowning, their bearing's ratings and its modified-life inputs.
 struct LcrRatedSideInput : LcrSideInput, LcrRollerRatingsInput, ModifiedLifeRatingInput {
-  using ModifiedLifeRatingInput::SchemaRules;
+  /// The modified life's two fields come together; the keyway of lcr_analysis's geometry files
+  /// needs the bore (the other kinds write no part and ignore both).
+  static nlohmann::ordered_json SchemaRules() {
+    nlohmann::ordered_json r = ModifiedLifeRatingInput::SchemaRules();
+    r["dependentRequired"]["keyway"] = {"bore_diameter_mm"};
+    return r;
+  }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    std::vector<CrossFieldRule> rules = LcrSideInput::CrossFieldRules();
+    rules.push_back(MountingRule());
+    return rules;
+  }
   std::optional<LcrCrowningInput> crowning;
   template <typename Archive>
   void Serialize(Archive* a) {

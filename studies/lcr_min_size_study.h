@@ -396,6 +396,14 @@ struct Input {
   /// The rules between blocks: the catalogue against the roller length and diameter, the life's
   /// speed and ratings, robust with its tolerances.
   static nlohmann::ordered_json SchemaRules();
+  /// The overload against the target, a reachable speed ratio, the duty cycle.
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"load", "target"}, "load.overload_torque_Nm >= target.output_torque_Nm",
+             ">= the target's output_torque_Nm"},
+            {{"search", "target"}, "a lobe/roller combination within the search reaches the speed ratio",
+             "no lobe/roller combination"},
+            DutyCycleRule()};
+  }
 };
 
 /// A [lower, upper] range of the study with lower <= upper ("[lower, upper] with lower <= upper" at `n`).

@@ -43,6 +43,10 @@ struct ThermalInput {
              Field().In(-50.0, 300.0).Unit("°C").Desc(
                  "the oil's highest temperature: no equilibrium below it ends the run with exit 3"));
   }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"max_oil_temperature_C", "ambient_C"}, "the oil's limit temperature above the ambient",
+             "gives off no heat"}};
+  }
 };
 
 /// "lubricant": the oil (ν40 and ν100 of its data sheet, or an ISO VG grade and base of the built-in

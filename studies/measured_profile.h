@@ -53,6 +53,10 @@ struct MeasuredProfileInputT {
                  "\"points\": x_mm,y_mm measured in the part frame, projected onto the exact profile; "
                  "\"normal_deviation\": x_mm,y_mm on the nominal profile and deviation_mm along its outward normal"));
   }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"file"}, "the file exists beside the study and is a readable CSV of the kind",
+             "expected a readable CSV file"}};
+  }
 };
 
 /// One profile part as inspected: its name (the file stem), frame and datum in words, the exact

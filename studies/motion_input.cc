@@ -36,6 +36,16 @@ struct GivenEnd {
 };
 }  // namespace
 
+std::vector<CrossFieldRule> MotionRules() {
+  return {{{"motion"}, "the segments' cam angles sum to 360°", "segment durations sum to"},
+          {{"motion"}, "the rises sum to 0: the follower returns to its start", "does not return"},
+          {{"motion"}, "a B-spline segment has more control points than its degree", "needs at least"},
+          {{"motion"},
+           "a polynomial segment's boundary values continue the program (the position so far, the neighbours' "
+           "derivatives)",
+           "the motion is not continuous"}};
+}
+
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion_node,
                                                  const MotionInputSpec& spec) {
   std::set<std::string> known = {"law", spec.rise_key, "cam_angle_deg"};

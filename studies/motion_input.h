@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/motion/motion_program.h"
+#include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/study.h"
 
@@ -36,6 +37,12 @@ struct MotionInputSpec {
 /// neighbours (position from the program so far, derivatives from the segment before or after).
 /// Throws StudyError naming the segment and field, and for a discontinuity the two values.
 motion::MotionProgram<double> ParseMotionProgram(const Node& motion, const MotionInputSpec& spec);
+
+/// The rules of a "motion" array that JSON Schema cannot state, as ParseMotionProgram checks them:
+/// the cam angles sum to 360°, the rises return the follower to its start, a B-spline has more
+/// control points than its degree, a polynomial segment continues its neighbours. For the
+/// CrossFieldRules of the object that holds "motion".
+std::vector<CrossFieldRule> MotionRules();
 
 /// The root-level rules of a follower kind's "motion" (MotionSchema of both specs) by follower
 /// type, as ParseMotionProgram holds them: with a follower of `types` (the "follower" object's

@@ -100,6 +100,9 @@ struct StiffnessCatalogueInput {
   double rated_torque_Nm = 0;
   std::optional<std::vector<double>> segments_Nm;
   double lost_motion_percent = 3.0;
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"segments_Nm", "rated_torque_Nm"}, "the segments' torques 0 < T1 < T2 < rated_torque_Nm", "0 < T1 < T2"}};
+  }
   template <typename Archive>
   void VisitCatalogue(Archive* a) {
     a->Visit("segments_Nm", &segments_Nm,
@@ -187,6 +190,16 @@ struct ExternalLoadInput {
 std::vector<ExternalLoadInput> ParseExternalLoads(const Node& root, bool output_bearing,
                                                   const std::optional<std::vector<ExternalLoadInput>>& loads,
                                                   std::optional<double> default_output_speed_rpm);
+
+/// The rules of "external_loads" against the study (ParseExternalLoads): the time shares sum to 1,
+/// and every line has an output speed (its own, the rated one or the load's input speed).
+inline std::vector<CrossFieldRule> ExternalLoadsRules() {
+  return {{{"external_loads"}, "the lines' time shares sum to 1 (within 1e-6)", "time shares that sum to 1"},
+          {{"external_loads", "ratings", "load"},
+           "every line's output speed: its own output_speed_rpm, ratings.rated_output_speed_rpm or the load's input "
+           "speed over the ratio",
+           "no ratings.rated_output_speed_rpm or load.input_speed_rpm"}};
+}
 
 /// "output_bearing" and "external_loads", as every kind that rates a reducer declares them.
 template <typename Archive>

@@ -60,6 +60,10 @@ struct TorsionalDynamicsInput {
     a->Visit("harmonics", &harmonics,
              Field().AtLeast(1).AtMost(10, "at most 10").Desc("orders of the mesh frequency whose resonances are marked"));
   }
+  static std::vector<CrossFieldRule> CrossFieldRules() {
+    return {{{"speed_sweep_rpm"}, "the sweep [lo, hi, n]: lo < hi, n a whole number in [2, 2000]",
+             "expected [lo, hi, n] with"}};
+  }
 };
 
 /// The parsed block: the model's options and the sweep.

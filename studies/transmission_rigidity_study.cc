@@ -142,7 +142,7 @@ nlohmann::ordered_json Input::Element::SchemaRules() {
 nlohmann::ordered_json Input::SchemaRules() {
   // An element takes its modulus from the chain's material unless it gives its own: a shaft in
   // torsion G; a shaft in bending, a pull rod and a lever by its section E; a lobe cam reducer
-  // without its own "material" the chain's E and ν.
+  // without its own "material" the chain's E and ν. A deflection limit needs the torque it is under.
   return nlohmann::ordered_json::parse(R"({"allOf": [
     {"if": {"required": ["chain"], "properties": {"chain": {"contains": {
               "required": ["element"], "properties": {"element": {"const": "shaft_torsion"}},
@@ -158,7 +158,9 @@ nlohmann::ordered_json Input::SchemaRules() {
     {"if": {"required": ["chain"], "properties": {"chain": {"contains": {
               "required": ["element"], "properties": {"element": {"const": "lobe_cam_reducer"}},
               "not": {"required": ["material"]}}}}},
-     "then": {"required": ["material"], "properties": {"material": {"required": ["youngs_modulus_GPa", "poisson_ratio"]}}}}
+     "then": {"required": ["material"], "properties": {"material": {"required": ["youngs_modulus_GPa", "poisson_ratio"]}}}},
+    {"if": {"required": ["limits"], "properties": {"limits": {"required": ["deflection_deg"]}}},
+     "then": {"required": ["load_torque_Nm"]}}
   ]})");
 }
 

@@ -300,6 +300,38 @@ TEST(Archive, VariantReadsTheAlternativeOfItsJsonType) {
   }
 }
 
+// Rules between fields: a range whose ends are two fields, inside a block.
+struct Ranged {
+  struct Span {
+    double lo_mm = 0, hi_mm = 1;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("lo_mm", &lo_mm, Field().Unit("mm"));
+      a->Visit("hi_mm", &hi_mm, Field().Unit("mm"));
+    }
+    static std::vector<CrossFieldRule> CrossFieldRules() { return {{{"lo_mm", "hi_mm"}, "lo_mm < hi_mm", "lo < hi"}}; }
+  };
+  Span span;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("span", &span, Field().Desc("the span"));
+  }
+};
+
+TEST(Archive, CrossFieldRulesAreAnnotationsOfTheirObjectAndRowsOfTheTable) {
+  const nlohmann::ordered_json schema = EmitSchema<Ranged>("toy", "t");
+  const json s = json::parse(schema.dump());
+  EXPECT_FALSE(s.contains("x-rules"));
+  EXPECT_EQ(s["properties"]["span"]["x-rules"],
+            json::parse(R"([{"fields": ["lo_mm", "hi_mm"], "rule": "lo_mm < hi_mm", "message": "lo < hi"}])"));
+  const std::string table = SchemaFieldTable(schema);
+  EXPECT_NE(table.find("Rules between fields"), std::string::npos) << table;
+  EXPECT_NE(table.find("- `span.lo_mm`, `span.hi_mm`: lo_mm < hi_mm\n"), std::string::npos) << table;
+  // Reading does not check the rule (the kind's parse does).
+  const json in = {{"span", {{"lo_mm", 2}, {"hi_mm", 1}}}};
+  EXPECT_EQ(Read<Ranged>(Node(&in, "t.json", "")).span.lo_mm, 2);
+}
+
 // A declared result (ResultWriter, ResultSchemaEmitter).
 struct ToyResult {
   struct Row {
