@@ -132,11 +132,11 @@ void AddContact3DJson(const Study& s, Result& r) {
   if (c3.overload_torque_Nmm > 0) (*res.contact)["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
   for (size_t i = 0; i < r.candidates.size(); ++i) {
     const auto& o3 = r.candidates[i].outcome3d;
-    if (o3 && r.candidates[i].pruned()) res.candidates[i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
+    if (o3 && r.candidates[i].pruned()) res.candidates[i].line_model_outer_diameter_mm = o3->line_outer_diameter_mm;
     if (!o3 || !r.candidates[i].feasible()) continue;
-    res.candidates[i]["input"]["crowning"] = CrowningJson(o3->crowning[0]);
-    res.candidates[i]["output"]["crowning"] = CrowningJson(o3->crowning[1]);
-    res.candidates[i]["line_model_outer_diameter_mm"] = o3->line_outer_diameter_mm;
+    res.candidates[i].input.crowning = CrowningJson(o3->crowning[0]);
+    res.candidates[i].output.crowning = CrowningJson(o3->crowning[1]);
+    res.candidates[i].line_model_outer_diameter_mm = o3->line_outer_diameter_mm;
   }
   if (r.best < 0) return;
   const sizing::LcrMinSize3DOutcome& b = *r.candidates[r.best].outcome3d;

@@ -149,11 +149,6 @@ std::vector<std::string> PlainLimitNames(const std::vector<std::string>& rows, c
   return out;
 }
 
-nlohmann::json SideJson(const lcr::CamSide<double>& c) {
-  return {{"lobes", c.lobes}, {"rollers", c.rollers}, {"turret_radius_mm", c.turret_radius},
-          {"roller_diameter_mm", 2 * c.roller_radius}, {"roller_length_mm", c.roller_length},
-          {"cam_thickness_mm", c.cam_thickness}};
-}
 
 // The lives of a design (docs/life.md, "Life as a sizing limit"): `<bearing>_L10h` per bearing,
 // shortest_L10h, and a table per element (load, C, L10h, s0, pass/fail against life_h).
@@ -193,76 +188,78 @@ std::string StatusOf(const Candidate& c) {
 // The efficiency objective (objectives::LcrSizeObjective::kPowerLoss).
 bool MinimisesLoss(const Study& s) { return s.base.objective == objectives::LcrSizeObjective::kPowerLoss; }
 
-nlohmann::json CandidateJson(const Study& s, const Candidate& c) {
+Result::Json::CandidateSide SideRow(const lcr::CamSide<double>& c) {
+  Result::Json::CandidateSide r;
+  r.lobes = c.lobes;
+  r.rollers = c.rollers;
+  r.turret_radius_mm = c.turret_radius;
+  r.roller_diameter_mm = 2 * c.roller_radius;
+  r.roller_length_mm = c.roller_length;
+  r.cam_thickness_mm = c.cam_thickness;
+  return r;
+}
+
+nlohmann::json SideJson(const lcr::CamSide<double>& c) { return WriteResult(SideRow(c)); }
+
+Result::Json::CandidateRow CandidateRow(const Study& s, const Candidate& c) {
   const auto& o = c.outcome;
-  nlohmann::json j;
-  j["input"] = {{"lobes", c.combo.lobes_a}, {"rollers", c.combo.rollers_a}};
-  j["output"] = {{"lobes", c.combo.lobes_b}, {"rollers", c.combo.rollers_b}};
-  if (c.roller >= 0) j["catalogue_roller"] = s.catalogue[c.roller].name;
-  j["status"] = c.pruned() ? "pruned" : StatusOf(c);
-  j["feasible"] = c.feasible();
-  j["solver_message"] = o.result.message;
-  if (!o.note.empty()) j["note"] = o.note;
-  if (o.longest_life_h) j["longest_life_h"] = *o.longest_life_h;
-  j["evaluations"] = {{"values", o.result.value_evaluations},
-                      {"gradients", o.result.gradient_evaluations},
-                      {"iterations", o.result.iterations},
-                      {"polish_rounds", o.polish_rounds}};
+  Result::Json::CandidateRow j;
+  j.input.lobes = c.combo.lobes_a;
+  j.input.rollers = c.combo.rollers_a;
+  j.output.lobes = c.combo.lobes_b;
+  j.output.rollers = c.combo.rollers_b;
+  if (c.roller >= 0) j.catalogue_roller = s.catalogue[c.roller].name;
+  j.status = c.pruned() ? "pruned" : StatusOf(c);
+  j.feasible = c.feasible();
+  j.solver_message = o.result.message;
+  if (!o.note.empty()) j.note = o.note;
+  j.longest_life_h = o.longest_life_h;
+  j.evaluations = {o.result.value_evaluations, o.result.gradient_evaluations, o.result.iterations, o.polish_rounds};
   if (c.pruned()) {
     // Branch and bound (sizing/sizing_driver.h): not solved to the end, no design to report.
-    j["outer_diameter_lower_bound_mm"] = c.outcome3d->paused->lower_bound_mm;
-    j["note"] = "pruned: a polish round's outer diameter (outer_diameter_lower_bound_mm) already exceeds the best "
-                "design's; each round adds constraints, so the candidate's optimum can only be larger";
-    j["starts"] = nlohmann::json::array();
-    j["binding"] = nlohmann::json::array();
-    j["violated"] = nlohmann::json::array();
+    j.outer_diameter_lower_bound_mm = c.outcome3d->paused->lower_bound_mm;
+    j.note = "pruned: a polish round's outer diameter (outer_diameter_lower_bound_mm) already exceeds the best "
+             "design's; each round adds constraints, so the candidate's optimum can only be larger";
     return j;
   }
   // Multistart: every start's outcome; the spread of the converged objective values (outer
   // diameters, or with the efficiency objective the losses).
   const bool loss = MinimisesLoss(s);
-  nlohmann::json starts = nlohmann::json::array();
   double lo = kInf, hi = -kInf;
   for (const auto& st : o.starts) {
-    nlohmann::json sj = {{"status", st.converged ? "converged" : optimizers::ToString(st.status)}};
+    Result::Json::CandidateRow::Start& sj = j.starts.emplace_back();
+    sj.status = st.converged ? "converged" : optimizers::ToString(st.status);
     if (st.converged) {
-      sj["outer_diameter_mm"] = st.outer_diameter_mm;
-      if (loss) sj["power_loss_W"] = st.objective;
+      sj.outer_diameter_mm = st.outer_diameter_mm;
+      if (loss) sj.power_loss_W = st.objective;
       lo = std::min(lo, st.objective);
       hi = std::max(hi, st.objective);
     }
-    starts.push_back(sj);
   }
-  j["starts"] = starts;
-  if (hi >= lo) j[loss ? "multistart_spread_W" : "multistart_spread_mm"] = hi - lo;
-  j["binding"] = Unique(o.result.active);
-  j["violated"] = Unique(o.result.violated);
+  if (hi >= lo) (loss ? j.multistart_spread_W : j.multistart_spread_mm) = hi - lo;
+  j.binding = Unique(o.result.active);
+  j.violated = Unique(o.result.violated);
   if (o.design && c.feasible()) {
     const auto& k = *o.check;
-    j["outer_diameter_mm"] = k.outer_diameter_mm;
-    j["eccentricity_mm"] = o.design->eccentricity;
-    j["input"] = SideJson(o.design->input);
-    j["output"] = SideJson(o.design->output);
-    j["max_contact_stress_MPa"] = std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]);
-    j["max_roller_force_N"] = std::max(k.max_force_N[0], k.max_force_N[1]);
-    j["undercut_margin_mm"] = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
-    if (!k.life.empty()) j["shortest_L10h"] = NumberOrNull(k.shortest_L10h);
+    j.outer_diameter_mm = k.outer_diameter_mm;
+    j.eccentricity_mm = o.design->eccentricity;
+    j.input = SideRow(o.design->input);
+    j.output = SideRow(o.design->output);
+    j.max_contact_stress_MPa = std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]);
+    j.max_roller_force_N = std::max(k.max_force_N[0], k.max_force_N[1]);
+    j.undercut_margin_mm = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
+    if (!k.life.empty()) j.shortest_L10h = k.shortest_L10h;
     if (loss) {
-      j["power_loss_W"] = NumberOrNull(k.lubricated_loss_W);
-      j["mean_efficiency"] = NumberOrNull(k.mean_efficiency);
+      j.power_loss_W = k.lubricated_loss_W;
+      j.mean_efficiency = k.mean_efficiency;
     }
   } else if (o.design) {
     // Not a result: the point where the search came closest, and what it breaks there.
-    j["closest_point"] = {{"eccentricity_mm", o.design->eccentricity},
-                          {"input", SideJson(o.design->input)},
-                          {"output", SideJson(o.design->output)}};
+    j.closest_point = {o.design->eccentricity, SideRow(o.design->input), SideRow(o.design->output)};
     if (o.check) {
-      nlohmann::json v = nlohmann::json::array();
-      for (const auto& x : o.check->violations)
-        v.push_back({{"limit", x.limit}, {"value", NumberOrNull(x.value)}, {"limit_value", x.limit_value},
-                     {"excess", NumberOrNull(x.excess())}});
-      j["violations"] = v;
-      if (!o.check->design_problems.empty()) j["design_problems"] = o.check->design_problems;
+      j.violations.emplace();
+      for (const auto& x : o.check->violations) j.violations->push_back({x.limit, x.value, x.limit_value, x.excess()});
+      if (!o.check->design_problems.empty()) j.design_problems = o.check->design_problems;
     }
   }
   return j;
@@ -536,8 +533,8 @@ namespace {
 // A raw block's schema from its JSON text.
 nlohmann::ordered_json SchemaOf(const char* text) { return nlohmann::ordered_json::parse(text); }
 
-// A cam's side in the best design, a candidate or a closest point (SideJson, its peaks, the 3D
-// crowning; the robust best's sides have the counts, turret radius and roller diameter only).
+// A cam's side in the best design (SideJson, its peaks, the 3D crowning; the robust best's sides
+// have the counts, turret radius and roller diameter only).
 const char* kSideSchema = R"json({"type": "object", "properties": {
   "lobes": {"type": "integer", "description": "the cam's lobes"},
   "rollers": {"type": "integer", "description": "the rollers of its turret"},
@@ -565,53 +562,6 @@ const char* kMonteCarloSchema = R"json({"type": "object", "description": "the Mo
   "additionalProperties": false})json";
 
 }  // namespace
-
-nlohmann::ordered_json Result::Json::CandidateSchema() {
-  nlohmann::ordered_json s = SchemaOf(R"json({"type": "object", "properties": {
-    "input": {"description": "the input cam: its lobes and rollers, and of a feasible candidate its sizes"},
-    "output": {"description": "the output cam, as input"},
-    "catalogue_roller": {"type": "string", "description": "with a catalogue: the roller's name"},
-    "status": {"type": "string", "description": "converged, pruned, life_out_of_reach, fails_dense_check, failed, or the solver's status"},
-    "feasible": {"type": "boolean", "description": "converged and verified: a design that meets the limits"},
-    "solver_message": {"type": "string"},
-    "note": {"type": "string"},
-    "longest_life_h": {"type": "number", "description": "life_out_of_reach: the longest life the combination reaches [h]"},
-    "evaluations": {"type": "object", "properties": {"values": {"type": "integer"}, "gradients": {"type": "integer"},
-      "iterations": {"type": "integer"}, "polish_rounds": {"type": "integer"}}, "additionalProperties": false},
-    "outer_diameter_lower_bound_mm": {"type": "number", "description": "pruned: the polish round's outer diameter that exceeded the best design's [mm]"},
-    "line_model_outer_diameter_mm": {"type": "number", "description": "3D contact: the line model's optimum [mm]"},
-    "starts": {"type": "array", "description": "every start of the multistart", "items": {"type": "object", "properties": {
-      "status": {"type": "string"}, "outer_diameter_mm": {"type": "number", "description": "[mm]"},
-      "power_loss_W": {"type": "number", "description": "efficiency objective: the loss [W]"}},
-      "required": ["status"], "additionalProperties": false}},
-    "multistart_spread_mm": {"type": "number", "description": "the spread of the converged starts' outer diameters [mm]"},
-    "multistart_spread_W": {"type": "number", "description": "efficiency objective: the spread of their losses [W]"},
-    "binding": {"type": "array", "items": {"type": "string"}, "description": "the constraint rows active at the optimum"},
-    "violated": {"type": "array", "items": {"type": "string"}, "description": "the constraint rows violated"},
-    "outer_diameter_mm": {"type": "number", "description": "feasible: the outer diameter [mm]"},
-    "eccentricity_mm": {"type": "number", "description": "feasible: the eccentricity [mm]"},
-    "max_contact_stress_MPa": {"type": ["number", "null"], "description": "feasible: [MPa]"},
-    "max_roller_force_N": {"type": ["number", "null"], "description": "feasible: [N]"},
-    "undercut_margin_mm": {"type": ["number", "null"], "description": "feasible: [mm]"},
-    "shortest_L10h": {"type": ["number", "null"], "description": "feasible, with lives: the shortest L10h [h]"},
-    "power_loss_W": {"type": ["number", "null"], "description": "feasible, efficiency objective: the lubricated loss [W]"},
-    "mean_efficiency": {"type": ["number", "null"], "description": "feasible, efficiency objective"},
-    "closest_point": {"type": "object", "description": "not feasible: where the search came closest", "properties": {
-      "eccentricity_mm": {"type": "number"}, "input": {}, "output": {}}, "additionalProperties": false},
-    "violations": {"type": "array", "description": "not feasible: the limits broken at the closest point", "items": {
-      "type": "object", "properties": {"limit": {"type": "string"}, "value": {"type": ["number", "null"]},
-      "limit_value": {"type": ["number", "null"]}, "excess": {"type": ["number", "null"]}}, "additionalProperties": false}},
-    "design_problems": {"type": "array", "items": {"type": "string"}}},
-    "required": ["input", "output", "status", "feasible", "solver_message", "evaluations", "starts", "binding", "violated"],
-    "additionalProperties": false})json");
-  for (const char* side : {"input", "output"}) {
-    nlohmann::ordered_json side_schema = SchemaOf(kSideSchema);
-    side_schema["description"] = s["properties"][side]["description"];
-    s["properties"][side] = side_schema;
-    s["properties"]["closest_point"]["properties"][side] = SchemaOf(kSideSchema);
-  }
-  return s;
-}
 
 nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
   nlohmann::ordered_json s = SchemaOf(R"json({"type": "object", "properties": {
@@ -863,7 +813,7 @@ void FillResult(const Study& s, Result& result) {
   res.optimizer.value_evaluations = result.value_evaluations;
   res.optimizer.gradient_evaluations = result.gradient_evaluations;
   res.candidates.clear();
-  for (const auto& c : result.candidates) res.candidates.push_back(CandidateJson(s, c));
+  for (const auto& c : result.candidates) res.candidates.push_back(CandidateRow(s, c));
   // The verified-optimum contract: of the best design, or, when nothing fits, of the candidate
   // that failed its check.
   const objectives::Verification* verification = nullptr;

@@ -447,9 +447,9 @@ struct Result : sizing::LcrSearchOutcome {
   std::optional<objectives::Verification> robust_verification;
 
   /// result.json, declared (studies/archive.h): Run fills it (FillResult; AddContact3DJson and
-  /// RobustJson add their parts). The candidates, the best designs, the 3D contact and the robust
-  /// block are raw JSON (their blocks are shared with lcr_analysis: SideJson, SubsurfaceJson,
-  /// LifeJson, SizedRatingsJson), described by their schemas (lcr_min_size_study.cc).
+  /// RobustJson add their parts). The best designs, the 3D contact and the robust block are raw
+  /// JSON (their blocks are shared with lcr_analysis: SideJson, SubsurfaceJson, LifeJson,
+  /// SizedRatingsJson), described by their schemas (lcr_min_size_study.cc).
   struct Json {
     struct Target {
       long speed_ratio = 0;
@@ -479,11 +479,130 @@ struct Result : sizing::LcrSearchOutcome {
         a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("gradient evaluations, all solves"));
       }
     };
+    /// A cam side of a candidate: its counts, and of a feasible candidate or a closest point its
+    /// sizes (with a 3D contact, of a feasible one the crowning sized for its rollers).
+    struct CandidateSide {
+      int lobes = 0, rollers = 0;
+      std::optional<double> turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm;
+      std::optional<nlohmann::json> crowning;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("lobes", &lobes, Field().Desc("the cam's lobes"));
+        a->Visit("rollers", &rollers, Field().Desc("the rollers of its turret"));
+        a->Visit("turret_radius_mm", &turret_radius_mm, Field().Unit("mm").Desc("turret radius r_d"));
+        a->Visit("roller_diameter_mm", &roller_diameter_mm, Field().Unit("mm").Desc("roller diameter d_r"));
+        a->Visit("roller_length_mm", &roller_length_mm, Field().Unit("mm").Desc("roller length"));
+        a->Visit("cam_thickness_mm", &cam_thickness_mm, Field().Unit("mm").Desc("cam thickness"));
+        a->Visit("crowning", &crowning,
+                 Field().Schema({{"type", "object"}}).Desc("3D contact: the crowning sized for the cam's rollers (type "
+                                                           "and its parameters)"));
+      }
+    };
+    /// One candidate (lobe/roller combination, and catalogue roller) as solved.
+    struct CandidateRow {
+      struct Evaluations {
+        int values = 0, gradients = 0, iterations = 0, polish_rounds = 0;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("values", &values, Field());
+          a->Visit("gradients", &gradients, Field());
+          a->Visit("iterations", &iterations, Field());
+          a->Visit("polish_rounds", &polish_rounds, Field());
+        }
+      };
+      struct Start {
+        std::string status;
+        std::optional<double> outer_diameter_mm, power_loss_W;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("status", &status, Field());
+          a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm"));
+          a->Visit("power_loss_W", &power_loss_W, Field().Unit("W").Desc("efficiency objective: the loss"));
+        }
+      };
+      struct ClosestPoint {
+        double eccentricity_mm = 0;
+        CandidateSide input, output;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("eccentricity_mm", &eccentricity_mm, Field().Unit("mm"));
+          a->Visit("input", &input, Field());
+          a->Visit("output", &output, Field());
+        }
+      };
+      struct Violation {
+        std::string limit;
+        double value = 0, limit_value = 0, excess = 0;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("limit", &limit, Field());
+          a->Visit("value", &value, Field().NullWhenNotFinite());
+          a->Visit("limit_value", &limit_value, Field().NullWhenNotFinite());
+          a->Visit("excess", &excess, Field().NullWhenNotFinite());
+        }
+      };
+      CandidateSide input, output;
+      std::optional<std::string> catalogue_roller, note;
+      std::string status, solver_message;
+      bool feasible = false;
+      std::optional<double> longest_life_h, outer_diameter_lower_bound_mm, line_model_outer_diameter_mm;
+      Evaluations evaluations;
+      std::vector<Start> starts;
+      std::optional<double> multistart_spread_mm, multistart_spread_W;
+      std::vector<std::string> binding, violated;
+      std::optional<double> outer_diameter_mm, eccentricity_mm, max_contact_stress_MPa, max_roller_force_N,
+          undercut_margin_mm, shortest_L10h, power_loss_W, mean_efficiency;
+      std::optional<ClosestPoint> closest_point;
+      std::optional<std::vector<Violation>> violations;
+      std::optional<std::vector<std::string>> design_problems;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("input", &input, Field().Desc("the input cam: its lobes and rollers, and of a feasible candidate its sizes"));
+        a->Visit("output", &output, Field().Desc("the output cam, as input"));
+        a->Visit("catalogue_roller", &catalogue_roller, Field().Desc("with a catalogue: the roller's name"));
+        a->Visit("status", &status,
+                 Field().Desc("converged, pruned, life_out_of_reach, fails_dense_check, failed, or the solver's status"));
+        a->Visit("feasible", &feasible, Field().Desc("converged and verified: a design that meets the limits"));
+        a->Visit("solver_message", &solver_message, Field());
+        a->Visit("note", &note, Field());
+        a->Visit("longest_life_h", &longest_life_h,
+                 Field().Unit("h").Desc("life_out_of_reach: the longest life the combination reaches"));
+        a->Visit("evaluations", &evaluations, Field());
+        a->Visit("outer_diameter_lower_bound_mm", &outer_diameter_lower_bound_mm,
+                 Field().Unit("mm").Desc("pruned: the polish round's outer diameter that exceeded the best design's"));
+        a->Visit("line_model_outer_diameter_mm", &line_model_outer_diameter_mm,
+                 Field().Unit("mm").Desc("3D contact: the line model's optimum"));
+        a->Visit("starts", &starts, Field().Desc("every start of the multistart"));
+        a->Visit("multistart_spread_mm", &multistart_spread_mm,
+                 Field().Unit("mm").Desc("the spread of the converged starts' outer diameters"));
+        a->Visit("multistart_spread_W", &multistart_spread_W,
+                 Field().Unit("W").Desc("efficiency objective: the spread of their losses"));
+        a->Visit("binding", &binding, Field().Desc("the constraint rows active at the optimum"));
+        a->Visit("violated", &violated, Field().Desc("the constraint rows violated"));
+        a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("feasible: the outer diameter"));
+        a->Visit("eccentricity_mm", &eccentricity_mm, Field().Unit("mm").Desc("feasible: the eccentricity"));
+        a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+                 Field().NullWhenNotFinite().Unit("MPa").Desc("feasible: the peak Hertz pressure of both cams"));
+        a->Visit("max_roller_force_N", &max_roller_force_N,
+                 Field().NullWhenNotFinite().Unit("N").Desc("feasible: the largest roller force"));
+        a->Visit("undercut_margin_mm", &undercut_margin_mm,
+                 Field().NullWhenNotFinite().Unit("mm").Desc("feasible: the smaller cam's 1/κ_max − r_r"));
+        a->Visit("shortest_L10h", &shortest_L10h,
+                 Field().NullWhenNotFinite().Unit("h").Desc("feasible, with lives: the shortest L10h"));
+        a->Visit("power_loss_W", &power_loss_W,
+                 Field().NullWhenNotFinite().Unit("W").Desc("feasible, efficiency objective: the lubricated loss"));
+        a->Visit("mean_efficiency", &mean_efficiency,
+                 Field().NullWhenNotFinite().Desc("feasible, efficiency objective"));
+        a->Visit("closest_point", &closest_point, Field().Desc("not feasible: where the search came closest"));
+        a->Visit("violations", &violations, Field().Desc("not feasible: the limits broken at the closest point"));
+        a->Visit("design_problems", &design_problems, Field().Desc("not feasible: the design's structural problems"));
+      }
+    };
     std::string study = "lcr_min_size", name;
     Target target;
     std::optional<std::string> objective;
     Optimizer optimizer;
-    std::vector<nlohmann::json> candidates;
+    std::vector<CandidateRow> candidates;
     bool verified = false;
     VerificationBlock verification;
     nlohmann::json best;  ///< null when nothing fits
@@ -500,8 +619,7 @@ struct Result : sizing::LcrSearchOutcome {
                                                 "outer diameter)"));
       a->Visit("optimizer", &optimizer, Field().Desc("the solver settings and the evaluations of all solves"));
       a->Visit("candidates", &candidates,
-               Field().Schema(CandidateSchema()).Desc("one per lobe/roller combination (and catalogue roller), in the "
-                                                      "order solved"));
+               Field().Desc("one per lobe/roller combination (and catalogue roller), in the order solved"));
       a->Visit("verified", &verified,
                Field().Desc("the accurate model holds the best design's limits (objectives/verification.h)"));
       a->Visit("verification", &verification,
@@ -522,7 +640,6 @@ struct Result : sizing::LcrSearchOutcome {
                                                    "robust solve"));
     }
     /// The schemas of the raw blocks (lcr_min_size_study.cc).
-    static nlohmann::ordered_json CandidateSchema();
     static nlohmann::ordered_json BestSchema(bool nullable);
     static nlohmann::ordered_json ContactSchema();
     static nlohmann::ordered_json RobustSchema();
