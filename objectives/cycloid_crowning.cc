@@ -1,10 +1,10 @@
 #include "objectives/cycloid_crowning.h"
 
 #include "objectives/cycloid_fields.h"
+#include "objectives/evaluation_memo.h"
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 #include <utility>
 
@@ -27,21 +27,15 @@ class CrowningEvaluator final : public Evaluator {
         model_(model),
         tune_length_(spec.tune_length),
         fixed_length_mm_(spec.length_lo_mm),
-        on_evaluation_(std::move(on_evaluation)) {}
+        memory_(0, std::move(on_evaluation)) {}
 
  protected:
   void DoEval(std::span<const double> x, std::span<double> y) const override {
-    const std::vector<double> key(x.begin(), x.end());
-    auto it = std::find_if(memory_.begin(), memory_.end(),
-                           [&](const auto& m) { return m.first == key; });
-    if (it == memory_.end()) {
-      const CrowningEvaluation e = model_.Evaluate(x[0], tune_length_ ? x[1] : fixed_length_mm_);
-      memory_.push_back({key, e});
-      if (on_evaluation_) on_evaluation_(e);
-      it = std::prev(memory_.end());
-    }
-    y[0] = it->second.stress_MPa;
-    y[1] = it->second.edge_margin_um;
+    const CrowningEvaluation& e =
+        memory_.Get(std::vector<double>(x.begin(), x.end()), [](const CrowningEvaluation&) { return true; },
+                    [&] { return model_.Evaluate(x[0], tune_length_ ? x[1] : fixed_length_mm_); });
+    y[0] = e.stress_MPa;
+    y[1] = e.edge_margin_um;
   }
   void DoEvalWithJacobian(std::span<const double>, std::span<double>, std::span<double>) const override {
     throw std::logic_error("the cycloid crowning problem is value-only (use a derivative-free solver)");
@@ -52,8 +46,7 @@ class CrowningEvaluator final : public Evaluator {
   CycloidCrowningModel& model_;
   bool tune_length_;
   double fixed_length_mm_;
-  std::function<void(const CrowningEvaluation&)> on_evaluation_;
-  mutable std::vector<std::pair<std::vector<double>, CrowningEvaluation>> memory_;
+  mutable EvaluationMemo<CrowningEvaluation> memory_;
 };
 
 }  // namespace
@@ -267,7 +260,7 @@ class TuningEvaluator final : public Evaluator {
       : Evaluator(int(model.variables().size()) + (epigraph ? 1 : 0), Blocks(model, epigraph)),
         model_(model),
         epigraph_(epigraph),
-        on_evaluation_(std::move(on_evaluation)) {}
+        memory_(0, std::move(on_evaluation)) {}
 
  protected:
   void DoEval(std::span<const double> x, std::span<double> y) const override {
@@ -316,17 +309,14 @@ class TuningEvaluator final : public Evaluator {
   }
   const TuningEvaluation& Get(std::span<const double> x, bool gradient) const {
     const std::vector<double> key(x.begin(), x.begin() + std::ptrdiff_t(model_.variables().size()));
-    for (const auto& m : memory_)
-      if (m.x == key && (!gradient || !m.d_smooth_stress.empty())) return m;
-    memory_.push_back(model_.Evaluate(key, gradient));
-    if (on_evaluation_) on_evaluation_(memory_.back());
-    return memory_.back();
+    return memory_.Get(
+        key, [&](const TuningEvaluation& m) { return !gradient || !m.d_smooth_stress.empty(); },
+        [&] { return model_.Evaluate(key, gradient); });
   }
 
   CycloidTuningModel& model_;
   bool epigraph_;
-  std::function<void(const TuningEvaluation&)> on_evaluation_;
-  mutable std::deque<TuningEvaluation> memory_;
+  mutable EvaluationMemo<TuningEvaluation> memory_;
 };
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -12,6 +11,7 @@
 
 #include "model/cycloid/geometry_limits.h"
 #include "objectives/cycloid_fields.h"
+#include "objectives/evaluation_memo.h"
 #include "sizing/sizing_driver.h"
 #include "optimizers/first_order.h"
 
@@ -873,7 +873,7 @@ class SizingEvaluator final : public Evaluator {
       : Evaluator(int(model.spec().variables.size()), Blocks(model)),
         model_(model),
         layout_(LayoutOf(model)),
-        on_evaluation_(std::move(on_evaluation)),
+        memory_(8, std::move(on_evaluation)),
         outside_(outside) {}
 
  protected:
@@ -986,18 +986,14 @@ class SizingEvaluator final : public Evaluator {
   }
   const CycloidSizingEvaluation& Get(std::span<const double> x, bool gradient) const {
     const std::vector<double> key(x.begin(), x.end());
-    for (const auto& m : memory_)
-      if (m.x == key && (!gradient || !m.d_objective.empty() || key.empty())) return m;
-    if (memory_.size() >= 8) memory_.pop_front();
-    memory_.push_back(model_.Evaluate(key, gradient));
-    if (on_evaluation_) on_evaluation_(memory_.back());
-    return memory_.back();
+    return memory_.Get(
+        key, [&](const CycloidSizingEvaluation& m) { return !gradient || !m.d_objective.empty() || key.empty(); },
+        [&] { return model_.Evaluate(key, gradient); });
   }
 
   CycloidSizingModel& model_;
   Layout layout_;
-  std::function<void(const CycloidSizingEvaluation&)> on_evaluation_;
-  mutable std::deque<CycloidSizingEvaluation> memory_;
+  mutable EvaluationMemo<CycloidSizingEvaluation> memory_;
   OutsideDomain outside_;
 };
 

@@ -26,6 +26,13 @@ std::string BoundText(const Field::Bound& b, bool integer) {
   return integer ? "a whole number" : "a number";
 }
 
+nlohmann::ordered_json Described(const Field& f) {
+  nlohmann::ordered_json s = nlohmann::ordered_json::object();
+  const std::string d = f.desc + (f.unit.empty() ? "" : (f.desc.empty() ? "[" : " [") + f.unit + "]");
+  if (!d.empty()) s["description"] = d;
+  return s;
+}
+
 std::string OneOfText(const std::vector<std::string>& values) {
   if (values.size() == 1) return "\"" + values[0] + "\"";
   if (values.size() == 2) return "\"" + values[0] + "\" or \"" + values[1] + "\"";

@@ -268,6 +268,8 @@ std::string NumberText(double x);
 std::string BoundText(const Field::Bound& b, bool integer);
 /// `"a" or "b"`, `one of "a", "b", "c"`.
 std::string OneOfText(const std::vector<std::string>& values);
+/// A member's schema with its description ("the field's text [UNIT]"), when it has one.
+nlohmann::ordered_json Described(const Field& f);
 
 }  // namespace archive_detail
 
@@ -391,9 +393,7 @@ class SchemaEmitter {
 
   template <typename T>
   void Visit(const char* name, T* value, const Field& f) {
-    nlohmann::ordered_json s = nlohmann::ordered_json::object();
-    const std::string d = f.desc + (f.unit.empty() ? "" : (f.desc.empty() ? "[" : " [") + f.unit + "]");
-    if (!d.empty()) s["description"] = d;
+    nlohmann::ordered_json s = archive_detail::Described(f);
     if constexpr (archive_detail::IsOptional<T>::value) {
       typename T::value_type v{};
       Describe(&v, f, s);
@@ -667,9 +667,7 @@ class ResultSchemaEmitter {
   explicit ResultSchemaEmitter(nlohmann::ordered_json* object) : object_(object) {}
   template <typename T>
   void Visit(const char* name, T* value, const Field& f) {
-    nlohmann::ordered_json s = nlohmann::ordered_json::object();
-    const std::string d = f.desc + (f.unit.empty() ? "" : (f.desc.empty() ? "[" : " [") + f.unit + "]");
-    if (!d.empty()) s["description"] = d;
+    nlohmann::ordered_json s = archive_detail::Described(f);
     if constexpr (archive_detail::IsOptional<T>::value) {
       typename T::value_type v{};
       Describe(&v, f, s);

@@ -1308,8 +1308,18 @@ void FillResult(const Study& s, Result& r) {
     if (!std::isfinite(L.jump_speed_rpm)) note(never_jumps);
     return L.min_contact_force_N.value > 0.0;
   };
-  // The peak Hertz stress and its limit; returns whether the limit holds (true without one).
-  const auto add_stress = [&](const Result::Loads& L, Result::Json::Loads& o, const char* cusp_note) {
+  // The peak Hertz stress and its limit; returns whether the limit holds (true without one). Not
+  // evaluated, a note says why when the study gave the stress's inputs.
+  const auto add_stress = [&](const Result::Loads& L, Result::Json::Loads& o, bool face) {
+    if (!L.stress_evaluated) {
+      if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material))
+        note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
+      else if (s.face_width_mm || s.material)
+        note("no contact stress: it needs both face_width_mm and material");
+      return true;
+    }
+    const char* cusp_note = face ? "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)"
+                                 : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile";
     o.face_width_mm = *s.face_width_mm;
     o.composite_modulus_MPa = s.material->composite_modulus_MPa();
     if (L.stress_finite) {
@@ -1324,7 +1334,6 @@ void FillResult(const Study& s, Result& r) {
     o.contact_stress_ok = L.stress_finite && L.max_contact_stress_MPa.value <= *s.limits.contact_stress_MPa;
     return *o.contact_stress_ok;
   };
-  constexpr const char* kFaceCusp = "max_contact_stress_MPa is null: the face is loaded at a cusp of the profile (ρ <= 0)";
   // The residual-vibration spectrum (model/disc_cam/residual_spectrum.h), per moving segment.
   const auto add_spectrum = [&](Result::Json::Loads& o, bool with_response, double zeta) {
     if (!with_response) return;
@@ -1381,15 +1390,7 @@ void FillResult(const Study& s, Result& r) {
     }
     loads_ok = add_extremes(L, aj, flat_arm ? "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the face off the cam"
                                             : "jump_speed_rpm is null: the arm never decelerates, so no speed lifts the roller off the cam");
-    if (L.stress_evaluated) {
-      loads_ok = add_stress(L, aj, flat_arm ? kFaceCusp
-                                            : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
-                 loads_ok;
-    } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
-      note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
-    } else if (s.face_width_mm || s.material) {
-      note("no contact stress: it needs both face_width_mm and material");
-    }
+    loads_ok = add_stress(L, aj, flat_arm) && loads_ok;
     if (L.arm_response) {
       // The arm on its train stiffness (follower_dynamics.h, SimulateArm): the translating response's
       // keys with moments about the pivot, and the normal contact force at the cam.
@@ -1455,15 +1456,7 @@ void FillResult(const Study& s, Result& r) {
       loads_ok = loads_ok && !fr.separates;
     }
     add_spectrum(dj, L.response.has_value(), d.damping_ratio);
-    if (L.stress_evaluated) {
-      loads_ok = add_stress(L, dj, flat ? kFaceCusp
-                                        : "max_contact_stress_MPa is null: the roller is loaded on an undercut part of the profile") &&
-                 loads_ok;
-    } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
-      note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
-    } else if (s.face_width_mm || s.material) {
-      note("no contact stress: it needs both face_width_mm and material");
-    }
+    loads_ok = add_stress(L, dj, flat) && loads_ok;
   } else if (s.contact == Study::Contact::kKnifeEdge && (s.face_width_mm || s.material)) {
     note("no contact stress: a knife edge touches the cam at a point (not a Hertz line contact)");
   } else if (s.face_width_mm || s.material) {
