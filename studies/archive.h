@@ -549,6 +549,27 @@ nlohmann::ordered_json SchemaEmitter::WriteValue(const T& value) {
   }
 }
 
+/// A result stage that may fail on its own without failing the run (the lubricated losses, an
+/// output bearing's life, the torsional dynamics): its block, or {"error": why}.
+struct StageError {
+  std::string error;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("error", &error, Field().Desc("why the block was not computed (then its only key)"));
+  }
+};
+template <typename T>
+using OrError = std::variant<T, StageError>;
+
+/// A stage's result.json block: its result when it ran, else {"error": why} when it was asked
+/// for, else none.
+template <typename T>
+std::optional<OrError<T>> StageBlock(const std::optional<T>& result, bool asked, const std::string& why) {
+  if (result) return OrError<T>(*result);
+  if (asked) return OrError<T>(StageError{why});
+  return std::nullopt;
+}
+
 /// Writes a declared result as result.json's JSON (the same `Serialize` that `camopt schema KIND
 /// --result` describes): every member, a std::optional one only when set, a std::map<std::string,
 /// T> as an object. A number that is NaN or infinite throws NonFiniteResult naming its JSON path,
@@ -592,6 +613,8 @@ class ResultWriter {
       return o;
     } else if constexpr (std::is_same_v<T, nlohmann::json>) {
       return nlohmann::ordered_json(value);
+    } else if constexpr (archive_detail::IsVariant<T>::value) {
+      return std::visit([&](const auto& alternative) { return Value(alternative, f, path); }, value);
     } else {
       static_assert(std::is_integral_v<T> || std::is_same_v<T, std::string>,
                     "a result member type the archives do not know");
@@ -723,9 +746,25 @@ class ResultSchemaEmitter {
       nlohmann::ordered_json is = nlohmann::ordered_json::object();
       Describe(&item, f, is);
       s["additionalProperties"] = std::move(is);
+    } else if constexpr (archive_detail::IsVariant<T>::value) {
+      // One of the alternatives (OrError: the block or its error).
+      s["oneOf"] = nlohmann::ordered_json::array();
+      DescribeAlternatives<T>(f, s["oneOf"], std::make_index_sequence<std::variant_size_v<T>>{});
     } else {
       static_assert(sizeof(T) == 0, "a result member type the archives do not know");
     }
+  }
+
+  template <typename V, size_t... I>
+  static void DescribeAlternatives(const Field& f, nlohmann::ordered_json& one_of, std::index_sequence<I...>) {
+    (DescribeAlternative<std::variant_alternative_t<I, V>>(f, one_of), ...);
+  }
+  template <typename A>
+  static void DescribeAlternative(const Field& f, nlohmann::ordered_json& one_of) {
+    A alternative{};
+    nlohmann::ordered_json s = nlohmann::ordered_json::object();
+    Describe(&alternative, f, s);
+    one_of.push_back(std::move(s));
   }
 
  private:

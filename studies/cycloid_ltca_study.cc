@@ -1626,8 +1626,7 @@ void FillLoaded(const Study& s, Result& r) {
     r.output_mechanism = om;
   }
   FillCatalogue(s, r);
-  if (r.lubrication) r.lubrication_json = nlohmann::json(WriteJson(*r.lubrication));
-  else if (s.lubrication) r.lubrication_json = nlohmann::json{{"error", r.lubrication_error}};
+  r.lubrication_json = StageBlock(r.lubrication, bool(s.lubrication), r.lubrication_error);
   // With a lubricant the drive has an efficiency: the life block points to it instead of calling
   // the model frictionless.
   if (r.life && s.lubrication)

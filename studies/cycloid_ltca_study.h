@@ -669,7 +669,7 @@ struct Result {
   std::optional<StiffnessSegmentsOut> stiffness_segments;
   std::optional<MassesOut> masses_out;                ///< result.json's masses
   std::optional<nlohmann::json> joint_model;          ///< the parameters `camopt export` reads
-  std::optional<nlohmann::json> lubrication_json;     ///< LubricationResult's JSON, or {"error": why}
+  std::optional<OrError<LubricationResult>> lubrication_json;  ///< the losses, or why they are absent
   std::optional<nlohmann::json> torsional_dynamics;   ///< TorsionalDynamicsJson, or {"error": why}
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -754,7 +754,7 @@ struct Result {
     a->Visit("joint_model", &joint_model,
              Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelResultSchema()));
     a->Visit("lubrication", &lubrication_json,
-             Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationResultSchema()));
+             Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)"));
     a->Visit("torsional_dynamics", &torsional_dynamics,
              Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsResultSchema()));
   }

@@ -1506,8 +1506,7 @@ void FillResult(const Study& st, Result& res) {
   }
   if (res.transmission_error) j.transmission_error = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
   if (res.life) j.life = LifeJson(st, *res.life);
-  if (res.lubrication) j.lubrication = nlohmann::json(WriteJson(*res.lubrication));
-  else if (st.lubrication) j.lubrication = nlohmann::json{{"error", res.lubrication_error}};
+  j.lubrication = StageBlock(res.lubrication, bool(st.lubrication), res.lubrication_error);
   FillCatalogue(st, res, j);
   if (res.torsional && st.torsional) j.torsional_dynamics = TorsionalDynamicsJson(*st.torsional, *res.torsional);
   else if (st.torsional) j.torsional_dynamics = nlohmann::json{{"error", res.torsional_failed}};

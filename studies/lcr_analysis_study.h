@@ -598,7 +598,7 @@ struct Result {
     std::optional<Contact> contact;
     std::optional<nlohmann::json> transmission_error;  ///< TransmissionErrorJson's block
     std::optional<nlohmann::json> life;                ///< the bearing and cam-contact lives (LifeJson)
-    std::optional<nlohmann::json> lubrication;         ///< LubricationResult's JSON, or {"error": why}
+    std::optional<OrError<LubricationResult>> lubrication;  ///< the losses, or why they are absent
     RatingsKeys ratings;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
     std::optional<nlohmann::json> output_bearing;      ///< OutputBearingJson's block, or {"error": why}
     std::optional<Masses> masses;
@@ -642,7 +642,7 @@ struct Result {
                Field().Desc("the bearing lives and the cams' contact lives (with a speed or a duty cycle; docs/life.md)")
                    .Schema(LifeSchema()));
       a->Visit("lubrication", &lubrication,
-               Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)").Schema(LubricationResultSchema()));
+               Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)"));
       ratings.Serialize(a);
       a->Visit("output_bearing", &output_bearing,
                Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));

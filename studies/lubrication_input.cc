@@ -213,17 +213,4 @@ std::string RegimeName(double lambda) {
   return "mixed";
 }
 
-nlohmann::ordered_json LubricationResultSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["efficiency"] = {{"description", "at the load's torque and speed"}};
-  p["power_loss_W"] = {{"type", "object"}, {"properties", {{"total", {{"description", "[W]"}}}}}};
-  p["power_loss_sampling_error_W"] = {{"description", "[W]"}};
-  p["oil_temperature_C"] = {{"description", "[°C]"}};
-  p["min_film_lambda"] = {{"type", "object"}, {"properties", {{"value", {{"description", "least film parameter λ"}}}}}};
-  p["no_load_running_torque_Nm"] = {{"description", "at the input [N·m]"}};
-  p["error"] = {{"type", "string"}, {"description", "why the losses were not computed (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
-}
-
 }  // namespace camopt::studies

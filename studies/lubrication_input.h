@@ -367,8 +367,5 @@ std::vector<Headline> WithLubricationHeadlines(std::vector<Headline> rows);
 /// "boundary", "mixed" or "full_film" by the borders of model/contact/lubricated_friction.h.
 std::string RegimeName(double lambda);
 
-/// The JSON Schema of result.json's lubrication block (cycloid_ltca, lcr_analysis): the keys camopt
-/// reads; no_load_running_torque_Nm is the cycloid's.
-nlohmann::ordered_json LubricationResultSchema();
 
 }  // namespace camopt::studies

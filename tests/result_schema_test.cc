@@ -31,26 +31,22 @@ namespace result_schema_test {
 using nlohmann::ordered_json;
 
 // Whether the JSON pointer `pointer` names a member the schema allows: each token a declared
-// property, an array index into `items`, or a key of an object of `additionalProperties`.
+// property, an array index into `items`, or a key of an object of `additionalProperties`; in a
+// member that is one of several blocks (oneOf: a stage's result or its error), in one of them.
 bool Declares(const ordered_json& schema, const std::string& pointer) {
-  const ordered_json* s = &schema;
-  size_t at = 1;
-  while (at <= pointer.size() && pointer.size() > 1) {
-    const size_t end = std::min(pointer.find('/', at), pointer.size());
-    const std::string token = pointer.substr(at, end - at);
-    if (s->contains("properties") && (*s)["properties"].contains(token)) {
-      s = &(*s)["properties"][token];
-    } else if (s->contains("items") && !token.empty() &&
-               token.find_first_not_of("0123456789") == std::string::npos) {
-      s = &(*s)["items"];
-    } else if (s->contains("additionalProperties") && (*s)["additionalProperties"].is_object()) {
-      s = &(*s)["additionalProperties"];
-    } else {
-      return false;
-    }
-    at = end + 1;
-  }
-  return true;
+  if (pointer.size() <= 1) return true;
+  if (schema.contains("oneOf"))
+    for (const ordered_json& branch : schema["oneOf"])
+      if (Declares(branch, pointer)) return true;
+  const size_t end = std::min(pointer.find('/', 1), pointer.size());
+  const std::string token = pointer.substr(1, end - 1), rest = pointer.substr(end);
+  if (schema.contains("properties") && schema["properties"].contains(token))
+    return Declares(schema["properties"][token], rest);
+  if (schema.contains("items") && !token.empty() && token.find_first_not_of("0123456789") == std::string::npos)
+    return Declares(schema["items"], rest);
+  if (schema.contains("additionalProperties") && schema["additionalProperties"].is_object())
+    return Declares(schema["additionalProperties"], rest);
+  return false;
 }
 
 ordered_json ResultSchemaOf(const std::string& kind) { return ordered_json::parse(StudyResultSchema(kind)); }
@@ -70,6 +66,11 @@ TEST(ResultSchema, TheMatcherFollowsPropertiesItemsAndMaps) {
   EXPECT_FALSE(Declares(s, "/rigidity_Nm_per_radian"));
   EXPECT_FALSE(Declares(s, "/elements/x/name"));
   EXPECT_FALSE(Declares(s, "/dominant/advice/0"));
+  // A stage's block or its error (OrError): the members of either.
+  const ordered_json l = ResultSchemaOf("cycloid_ltca");
+  EXPECT_TRUE(Declares(l, "/lubrication/power_loss_W/total"));
+  EXPECT_TRUE(Declares(l, "/lubrication/error"));
+  EXPECT_FALSE(Declares(l, "/lubrication/power_loss"));
 }
 
 TEST(ResultSchema, EveryPointerIntoAResultNamesADeclaredMember) {
