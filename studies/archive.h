@@ -38,6 +38,7 @@
 // code (its schema given with Field::Schema).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -697,7 +698,8 @@ class ResultSchemaEmitter {
       if (f.null_when_absent) {
         (*object_)["required"].push_back(name);
         if (s.contains("type") && s["type"].is_string()) s["type"] = {s["type"], "null"};
-        else if (s.contains("type")) s["type"].push_back("null");
+        else if (s.contains("type") && std::find(s["type"].begin(), s["type"].end(), "null") == s["type"].end())
+          s["type"].push_back("null");
       }
     } else {
       Describe(value, f, s);

@@ -1417,8 +1417,8 @@ void FillCatalogue(const Study& s, Result& r) {
     r.ratings_keys.Set(s.ratings->in, r.ratings, r.ratings_failed,
                        double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth), s.estimate_error);
   }
-  if (r.output_bearing) r.output_bearing_json = OutputBearingJson(*s.output_bearing, *r.output_bearing);
-  else if (s.output_bearing) r.output_bearing_json = nlohmann::json{{"error", r.output_bearing_failed}};
+  if (r.output_bearing) r.output_bearing_json = OutputBearingBlock::Of(*s.output_bearing, *r.output_bearing);
+  else if (s.output_bearing) r.output_bearing_json = StageError{r.output_bearing_failed};
   const double arcmin = kArcminPerRad;
   if (r.segments) {
     const ThreeSegmentStiffness& g = *r.segments;

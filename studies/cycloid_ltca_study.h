@@ -665,7 +665,7 @@ struct Result {
   std::optional<OutputMechanismOut> output_mechanism;
   std::optional<StiffnessOut> stiffness;
   RatingsKeys ratings_keys;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
-  std::optional<nlohmann::json> output_bearing_json;  ///< OutputBearingJson's block, or {"error": why}
+  std::optional<OrError<OutputBearingBlock>> output_bearing_json;  ///< the rating, or why it is absent
   std::optional<StiffnessSegmentsOut> stiffness_segments;
   std::optional<MassesOut> masses_out;                ///< result.json's masses
   std::optional<nlohmann::json> joint_model;          ///< the parameters `camopt export` reads
@@ -748,7 +748,7 @@ struct Result {
     a->Visit("stiffness", &stiffness, Field().Desc("the torsional curve (with stiffness)"));
     ratings_keys.Serialize(a);
     a->Visit("output_bearing", &output_bearing_json,
-             Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));
+             Field().Desc("the output bearing's life (with output_bearing)"));
     a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
     a->Visit("masses", &masses_out, Field().Desc("with stiffness or ratings"));
     a->Visit("joint_model", &joint_model,

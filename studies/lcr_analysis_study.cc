@@ -1218,8 +1218,8 @@ void FillCatalogue(const Study& st, const Result& res, Result::Json& j) {
   if (st.ratings) {
     j.ratings.Set(st.ratings->in, res.ratings, res.ratings_failed, ratio, true);
   }
-  if (res.output_bearing) j.output_bearing = OutputBearingJson(*st.output_bearing, *res.output_bearing);
-  else if (st.output_bearing) j.output_bearing = nlohmann::json{{"error", res.output_bearing_failed}};
+  if (res.output_bearing) j.output_bearing = OutputBearingBlock::Of(*st.output_bearing, *res.output_bearing);
+  else if (st.output_bearing) j.output_bearing = StageError{res.output_bearing_failed};
   if (st.stiffness || st.ratings)
     j.masses = Result::Json::Masses{
         st.density_kg_m3, res.cam_kg, res.cam_inertia_kgm2, res.outer_diameter_mm, res.reflected_inertia_kgm2,

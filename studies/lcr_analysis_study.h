@@ -600,7 +600,7 @@ struct Result {
     std::optional<nlohmann::json> life;                ///< the bearing and cam-contact lives (LifeJson)
     std::optional<OrError<LubricationResult>> lubrication;  ///< the losses, or why they are absent
     RatingsKeys ratings;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
-    std::optional<nlohmann::json> output_bearing;      ///< OutputBearingJson's block, or {"error": why}
+    std::optional<OrError<OutputBearingBlock>> output_bearing;  ///< the rating, or why it is absent
     std::optional<Masses> masses;
     std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin;
     std::optional<Stiffness> stiffness;
@@ -645,7 +645,7 @@ struct Result {
                Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)"));
       ratings.Serialize(a);
       a->Visit("output_bearing", &output_bearing,
-               Field().Desc("the output bearing's life (with output_bearing)").Schema(OutputBearingResultSchema()));
+               Field().Desc("the output bearing's life (with output_bearing)"));
       a->Visit("masses", &masses, Field().Desc("the cam's mass and the inertia at the output (with stiffness or ratings)"));
       a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,
                Field(n).Unit("N·m/arcmin").Desc("mean of both senses' slopes, 50-100% of the rated torque (with stiffness)"));

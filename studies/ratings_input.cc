@@ -74,33 +74,32 @@ std::optional<OutputBearingResult> TrySolveOutputBearing(const OutputBearingInpu
   }
 }
 
-nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r) {
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json j = {
-      {"type", in.type},
-      {"dynamic_rating_N", in.dynamic_rating_N},
-      {"static_rating_N", in.static_rating_N},
-      {"pitch_diameter_mm", in.pitch_diameter_mm},
-      {"load_factor", in.load_factor},
-      {"average_radial_N", r.average.radial_N},
-      {"average_axial_N", r.average.axial_N},
-      {"average_moment_Nm", r.average.moment_Nm},
-      {"average_output_speed_rpm", r.average.speed_rpm},
-      {"P_C_N", r.equivalent_load_N},
-      {"L10h", finite(r.L10h)},
-      {"max_radial_N", r.largest.radial_N},
-      {"max_axial_N", r.largest.axial_N},
-      {"max_moment_Nm", r.largest.moment_Nm},
-      {"P0_N", r.static_load_N},
-      {"static_safety", finite(r.static_safety)},
-      {"L_OC_h", r.oscillating_L10h ? finite(*r.oscillating_L10h) : nlohmann::json(nullptr)},
-      {"tilt_arcmin", r.tilt_arcmin ? nlohmann::json(*r.tilt_arcmin) : nlohmann::json(nullptr)},
-      {"definitions",
-       "catalogue output-bearing rating (docs/ratings.md): revolution-weighted B-means of |F_r|, |F_a|, |M| over "
-       "external_loads (B = 10/3 cross-roller, 3 angular-contact pair), P_C = X (F_r + 2M/d_p) + Y F_a (X = 1, Y = "
-       "0.45 when F_a <= 1.5 (F_r + 2M/d_p), else 0.67, 0.67), L10 = 1e6/(60 N_av) (C/(f_w P_C))^B h; L_OC = 1e6/(60 "
-       "n_1) (90/theta) (C/(f_w P_C))^B with theta half the oscillating angle; P0 = F_rmax + 2 M_max/d_p + 0.44 "
-       "F_amax, f_s = C0/P0; tilt = M_max / moment stiffness"}};
+OutputBearingBlock OutputBearingBlock::Of(const OutputBearingInput& in, const OutputBearingResult& r) {
+  OutputBearingBlock j;
+  j.type = in.type;
+  j.dynamic_rating_N = in.dynamic_rating_N;
+  j.static_rating_N = in.static_rating_N;
+  j.pitch_diameter_mm = in.pitch_diameter_mm;
+  j.load_factor = in.load_factor;
+  j.average_radial_N = r.average.radial_N;
+  j.average_axial_N = r.average.axial_N;
+  j.average_moment_Nm = r.average.moment_Nm;
+  j.average_output_speed_rpm = r.average.speed_rpm;
+  j.P_C_N = r.equivalent_load_N;
+  j.L10h = r.L10h;
+  j.max_radial_N = r.largest.radial_N;
+  j.max_axial_N = r.largest.axial_N;
+  j.max_moment_Nm = r.largest.moment_Nm;
+  j.P0_N = r.static_load_N;
+  j.static_safety = r.static_safety;
+  j.L_OC_h = r.oscillating_L10h;
+  j.tilt_arcmin = r.tilt_arcmin;
+  j.definitions =
+      "catalogue output-bearing rating (docs/ratings.md): revolution-weighted B-means of |F_r|, |F_a|, |M| over "
+      "external_loads (B = 10/3 cross-roller, 3 angular-contact pair), P_C = X (F_r + 2M/d_p) + Y F_a (X = 1, Y = "
+      "0.45 when F_a <= 1.5 (F_r + 2M/d_p), else 0.67, 0.67), L10 = 1e6/(60 N_av) (C/(f_w P_C))^B h; L_OC = 1e6/(60 "
+      "n_1) (90/theta) (C/(f_w P_C))^B with theta half the oscillating angle; P0 = F_rmax + 2 M_max/d_p + 0.44 "
+      "F_amax, f_s = C0/P0; tilt = M_max / moment stiffness";
   return j;
 }
 
@@ -121,20 +120,6 @@ void CheckSizingRatingsAlone(const Node& root, bool life_limit, bool duty_cycle)
   if (duty_cycle)
     root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
                              "duty_cycle; would fit: one of the two");
-}
-
-nlohmann::ordered_json OutputBearingResultSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["type"] = {{"type", "string"}};
-  p["P_C_N"] = {{"description", "[N]"}};
-  p["L10h"] = {{"description", "[h]"}};
-  p["L_OC_h"] = {{"description", "[h]"}};
-  p["P0_N"] = {{"description", "[N]"}};
-  p["static_safety"] = {{"description", "f_s"}};
-  p["tilt_arcmin"] = {{"description", "[arcmin]"}};
-  p["error"] = {{"type", "string"}, {"description", "why the life was not computed (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
 }
 
 nlohmann::ordered_json JointModelResultSchema() {

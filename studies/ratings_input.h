@@ -231,16 +231,48 @@ std::optional<OutputBearingResult> TrySolveOutputBearing(const OutputBearingInpu
                                                          const std::vector<ExternalLoadInput>& loads,
                                                          std::string* failed);
 
-/// result.json's "output_bearing".
-nlohmann::json OutputBearingJson(const OutputBearingInput& in, const OutputBearingResult& r);
+/// result.json's "output_bearing" (docs/ratings.md): the bearing as given, the duty cycle's
+/// revolution-weighted means and extremes, its life, static safety and tilt.
+struct OutputBearingBlock {
+  std::string type;
+  double dynamic_rating_N = 0, static_rating_N = 0, pitch_diameter_mm = 0, load_factor = 0;
+  double average_radial_N = 0, average_axial_N = 0, average_moment_Nm = 0, average_output_speed_rpm = 0;
+  double P_C_N = 0, L10h = 0, max_radial_N = 0, max_axial_N = 0, max_moment_Nm = 0, P0_N = 0, static_safety = 0;
+  std::optional<double> L_OC_h, tilt_arcmin;
+  std::string definitions;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("type", &type, Field().OneOf({"cross_roller", "angular_contact_pair"}).Desc("the bearing's type"));
+    a->Visit("dynamic_rating_N", &dynamic_rating_N, Field().Unit("N").Desc("C, as given"));
+    a->Visit("static_rating_N", &static_rating_N, Field().Unit("N").Desc("C0, as given"));
+    a->Visit("pitch_diameter_mm", &pitch_diameter_mm, Field().Unit("mm").Desc("d_p, as given"));
+    a->Visit("load_factor", &load_factor, Field().Desc("f_w, as given"));
+    a->Visit("average_radial_N", &average_radial_N, Field().Unit("N").Desc("F_rav, the B-mean of |F_r|"));
+    a->Visit("average_axial_N", &average_axial_N, Field().Unit("N").Desc("F_aav"));
+    a->Visit("average_moment_Nm", &average_moment_Nm, Field().Unit("N·m").Desc("M_av"));
+    a->Visit("average_output_speed_rpm", &average_output_speed_rpm, Field().Unit("rpm").Desc("N_av"));
+    a->Visit("P_C_N", &P_C_N, Field().Unit("N").Desc("the dynamic equivalent radial load"));
+    a->Visit("L10h", &L10h, Field().NullWhenNotFinite().Unit("h").Desc("the rating life (null: unlimited)"));
+    a->Visit("max_radial_N", &max_radial_N, Field().Unit("N").Desc("F_rmax of the lines"));
+    a->Visit("max_axial_N", &max_axial_N, Field().Unit("N").Desc("F_amax"));
+    a->Visit("max_moment_Nm", &max_moment_Nm, Field().Unit("N·m").Desc("M_max"));
+    a->Visit("P0_N", &P0_N, Field().Unit("N").Desc("the static equivalent radial load"));
+    a->Visit("static_safety", &static_safety, Field().NullWhenNotFinite().Desc("f_s = C0 / P0"));
+    a->Visit("L_OC_h", &L_OC_h,
+             Field().NullWhenAbsent().NullWhenNotFinite().Unit("h").Desc("the oscillating life (null: no oscillation)"));
+    a->Visit("tilt_arcmin", &tilt_arcmin,
+             Field().NullWhenAbsent().Unit("arcmin").Desc("M_max / the moment stiffness (null: no stiffness given)"));
+    a->Visit("definitions", &definitions, Field().Desc("the formulas, in words"));
+  }
+  static OutputBearingBlock Of(const OutputBearingInput& in, const OutputBearingResult& r);
+};
 
 /// joint_model's "tilt_stiffness_Nm_per_rad" (the output bearing's moment stiffness K_B, the output's
 /// tilt about each axis across the reducer's; null when not given) and "tilt_note".
 void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& joint_model);
 
-/// The JSON Schemas of result.json's output_bearing and joint_model blocks (cycloid_ltca and
-/// lcr_analysis; AddJointTilt adds the tilt keys): the keys camopt reads.
-nlohmann::ordered_json OutputBearingResultSchema();
+/// The JSON Schema of result.json's joint_model block (cycloid_ltca and lcr_analysis; AddJointTilt
+/// adds the tilt keys): the keys camopt reads.
 nlohmann::ordered_json JointModelResultSchema();
 
 }  // namespace camopt::studies
