@@ -269,6 +269,17 @@ std::string NumberText(double x);
 std::string BoundText(const Field::Bound& b, bool integer);
 /// `"a" or "b"`, `one of "a", "b", "c"`.
 std::string OneOfText(const std::vector<std::string>& values);
+
+/// The schema of each alternative of the variant V (Emitter::Describe), appended to `one_of`.
+template <typename Emitter, typename V, size_t... I>
+void DescribeAlternatives(const Field& f, nlohmann::ordered_json& one_of, std::index_sequence<I...>) {
+  const auto describe = [&](auto alternative) {
+    nlohmann::ordered_json s = nlohmann::ordered_json::object();
+    Emitter::Describe(&alternative, f, s);
+    one_of.push_back(std::move(s));
+  };
+  (describe(std::variant_alternative_t<I, V>{}), ...);
+}
 /// A member's schema with its description ("the field's text [UNIT]"), when it has one.
 nlohmann::ordered_json Described(const Field& f);
 
@@ -460,7 +471,8 @@ class SchemaEmitter {
       // Alternatives told apart by their JSON type: that type list, and each one's schema.
       s["type"] = archive_detail::VariantJsonTypes<T>();
       s["oneOf"] = nlohmann::ordered_json::array();
-      DescribeAlternatives<T>(f, s["oneOf"], std::make_index_sequence<std::variant_size_v<T>>{});
+      archive_detail::DescribeAlternatives<SchemaEmitter, T>(f, s["oneOf"],
+                                                           std::make_index_sequence<std::variant_size_v<T>>{});
     } else if constexpr (IsVector<T>::value) {
       s["type"] = "array";
       if (f.min_items) s["minItems"] = *f.min_items;
@@ -490,19 +502,6 @@ class SchemaEmitter {
   /// A value as JSON (the defaults of the schema; JsonWriter).
   template <typename T>
   static nlohmann::ordered_json WriteValue(const T& value);
-
-  /// The schema of each alternative of the variant V, appended to `one_of`.
-  template <typename V, size_t... I>
-  static void DescribeAlternatives(const Field& f, nlohmann::ordered_json& one_of, std::index_sequence<I...>) {
-    (DescribeAlternative<std::variant_alternative_t<I, V>>(f, one_of), ...);
-  }
-  template <typename A>
-  static void DescribeAlternative(const Field& f, nlohmann::ordered_json& one_of) {
-    A alternative{};
-    nlohmann::ordered_json s = nlohmann::ordered_json::object();
-    Describe(&alternative, f, s);
-    one_of.push_back(std::move(s));
-  }
 
  private:
   static void NumberKeywords(const Field& f, bool integer, nlohmann::ordered_json& s);
@@ -751,22 +750,11 @@ class ResultSchemaEmitter {
     } else if constexpr (archive_detail::IsVariant<T>::value) {
       // One of the alternatives (OrError: the block or its error).
       s["oneOf"] = nlohmann::ordered_json::array();
-      DescribeAlternatives<T>(f, s["oneOf"], std::make_index_sequence<std::variant_size_v<T>>{});
+      archive_detail::DescribeAlternatives<ResultSchemaEmitter, T>(
+          f, s["oneOf"], std::make_index_sequence<std::variant_size_v<T>>{});
     } else {
       static_assert(sizeof(T) == 0, "a result member type the archives do not know");
     }
-  }
-
-  template <typename V, size_t... I>
-  static void DescribeAlternatives(const Field& f, nlohmann::ordered_json& one_of, std::index_sequence<I...>) {
-    (DescribeAlternative<std::variant_alternative_t<I, V>>(f, one_of), ...);
-  }
-  template <typename A>
-  static void DescribeAlternative(const Field& f, nlohmann::ordered_json& one_of) {
-    A alternative{};
-    nlohmann::ordered_json s = nlohmann::ordered_json::object();
-    Describe(&alternative, f, s);
-    one_of.push_back(std::move(s));
   }
 
  private:
