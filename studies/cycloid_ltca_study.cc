@@ -1631,8 +1631,8 @@ void FillLoaded(const Study& s, Result& r) {
   // the model frictionless.
   if (r.life && s.lubrication)
     (*r.life_json)["efficiency"] = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
-  if (r.torsional && s.torsional) r.torsional_dynamics = TorsionalDynamicsJson(*s.torsional, *r.torsional);
-  else if (s.torsional) r.torsional_dynamics = nlohmann::json{{"error", r.torsional_failed}};
+  if (r.torsional && s.torsional) r.torsional_dynamics = TorsionalDynamicsBlock::Of(*s.torsional, *r.torsional);
+  else if (s.torsional) r.torsional_dynamics = StageError{r.torsional_failed};
 }
 
 // The unloaded TCA only (analysis.evaluate ["unloaded"]).

@@ -670,7 +670,7 @@ struct Result {
   std::optional<MassesOut> masses_out;                ///< result.json's masses
   std::optional<nlohmann::json> joint_model;          ///< the parameters `camopt export` reads
   std::optional<OrError<LubricationResult>> lubrication_json;  ///< the losses, or why they are absent
-  std::optional<nlohmann::json> torsional_dynamics;   ///< TorsionalDynamicsJson, or {"error": why}
+  std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;  ///< the dynamics, or why they are absent
   template <typename Archive>
   void Serialize(Archive* a) {
     const Field n = Field().NullWhenNotFinite();
@@ -756,7 +756,7 @@ struct Result {
     a->Visit("lubrication", &lubrication_json,
              Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)"));
     a->Visit("torsional_dynamics", &torsional_dynamics,
-             Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)").Schema(TorsionalDynamicsResultSchema()));
+             Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)"));
   }
   /// The schemas of the raw blocks shared with kinds whose result is not declared yet: the keys
   /// camopt reads from them (report.html's headlines), the rest open.

@@ -905,14 +905,14 @@ void CheckTorsionalDynamics(const Study& s, Result& r, const RunContext& ctx) {
     quiet.quiet = true;
     const cycloid_ltca::Result lr = cycloid_ltca::Run(ls, quiet);
     if (!lr.torsional) throw std::runtime_error(lr.torsional_failed);
-    r.torsional = TorsionalDynamicsJson(*ls.torsional, *lr.torsional);
+    r.torsional = TorsionalDynamicsBlock::Of(*ls.torsional, *lr.torsional);
     if (lr.torsional->peak_index >= 0) {
       const auto& peak = lr.torsional->sweep[size_t(lr.torsional->peak_index)];
       c.accurate_value = peak.overload_factor;
       c.estimated_error = peak.overload_sampling_error;
     }
   } catch (const std::exception& e) {
-    r.torsional = {{"error", e.what()}};
+    r.torsional = StageError{e.what()};
     r.warnings.push_back(std::string("torsional dynamics of the reported design not solved: ") + e.what());
   }
   if (!limited) return;
@@ -1238,7 +1238,7 @@ void FillResult(const Study& s, Result& r) {
         err.min_static_safety = o.check.static_safety_error;
       }
     }
-    if (!r.torsional.is_null()) b.torsional_dynamics = r.torsional;
+    if (r.torsional) b.torsional_dynamics = *r.torsional;
   }
   // What each limit that binds at the optimum costs: d(objective)/d(limit) from the multipliers.
   r.binding_limits.clear();

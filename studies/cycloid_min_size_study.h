@@ -530,7 +530,8 @@ struct Result {
     std::optional<Lubrication> lubrication;
     EstimatedError estimated_error;
     std::string accurate_model;
-    std::optional<nlohmann::json> life, ratings, torsional_dynamics;
+    std::optional<nlohmann::json> life, ratings;
+    std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("2 (a + ρ) of drive"));
@@ -566,8 +567,7 @@ struct Result {
       a->Visit("ratings", &ratings,
                Field().Schema(RatingsSchema()).Desc("with ratings: the rated and momentary torques checked"));
       a->Visit("torsional_dynamics", &torsional_dynamics,
-               Field().Schema(TorsionalDynamicsResultSchema()).Desc(
-                   "with torsional_dynamics: cycloid_ltca's block for the reported design, or its error"));
+               Field().Desc("with torsional_dynamics: cycloid_ltca's block for the reported design, or its error"));
     }
   };
   /// One start's solve in the first round.
@@ -688,8 +688,8 @@ struct Result {
   /// what would fit.
   std::string blocking_message;
   /// With "torsional_dynamics": cycloid_ltca's "torsional_dynamics" object for the reported design
-  /// (or {"error": why}); null without.
-  nlohmann::json torsional;
+  /// (or {"error": why}); none without.
+  std::optional<OrError<TorsionalDynamicsBlock>> torsional;
   double seconds = 0;  ///< wall time of the run (stderr summary only, never in a file)
 };
 

@@ -1508,8 +1508,8 @@ void FillResult(const Study& st, Result& res) {
   if (res.life) j.life = LifeJson(st, *res.life);
   j.lubrication = StageBlock(res.lubrication, bool(st.lubrication), res.lubrication_error);
   FillCatalogue(st, res, j);
-  if (res.torsional && st.torsional) j.torsional_dynamics = TorsionalDynamicsJson(*st.torsional, *res.torsional);
-  else if (st.torsional) j.torsional_dynamics = nlohmann::json{{"error", res.torsional_failed}};
+  if (res.torsional && st.torsional) j.torsional_dynamics = TorsionalDynamicsBlock::Of(*st.torsional, *res.torsional);
+  else if (st.torsional) j.torsional_dynamics = StageError{res.torsional_failed};
   j.notes = res.notes;
   if (res.input_cam_files && res.output_cam_files)
     j.geometry_files =

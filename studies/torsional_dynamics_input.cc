@@ -108,89 +108,68 @@ TorsionalDynamicsResult RunTorsionalDynamics(const TorsionalDynamicsSpec& spec, 
   return r;
 }
 
-nlohmann::json TorsionalDynamicsJson(const TorsionalDynamicsSpec& spec, const TorsionalDynamicsResult& r) {
-  using nlohmann::json;
+TorsionalDynamicsBlock TorsionalDynamicsBlock::Of(const TorsionalDynamicsSpec& spec, const TorsionalDynamicsResult& r) {
+  TorsionalDynamicsBlock j;
   const auto& k = r.table.stiffness_Nm_per_rad;
   const double mean = torsion::MeanOf(k), lo = *std::min_element(k.begin(), k.end()),
                hi = *std::max_element(k.begin(), k.end());
-  json shapes = json::array();
-  for (const auto& s : r.modes.shapes) shapes.push_back({{"input_referred", s[0]}, {"output", s[1]}});
-  json res = json::array();
-  for (const auto& x : r.resonances)
-    res.push_back({{"input_speed_rpm", x.rpm},
-                   {"mesh", r.table.meshes[size_t(x.mesh)].first},
-                   {"order", x.order},
-                   {"mode", x.mode + 1},
-                   {"frequency_Hz", x.frequency_Hz}});
-  json meshes = json::array();
+  j.natural_frequencies_Hz = r.modes.frequencies_Hz;
+  for (const auto& s : r.modes.shapes) j.mode_shapes.push_back({s[0], s[1]});
+  j.mode_shapes_note = "each mode's amplitudes of the input inertia's angle referred to the output (theta_in / i) "
+                       "and of the output's, the larger +1; the free pair's rigid-body mode (0 Hz) is left out";
+  j.ratio = r.table.ratio;
+  j.reference_torque_Nm = r.table.torque_Nm;
   for (const auto& [name, order] : r.table.meshes)
-    meshes.push_back({{"name", name}, {"mesh_periods_per_input_revolution", order * 2.0 * kPi / r.table.period_rad}});
-  json speeds = json::array();
-  for (const auto& x : r.resonances) speeds.push_back(x.rpm);
+    j.meshes.push_back({name, order * 2.0 * kPi / r.table.period_rad});
+  j.table_periods_per_input_revolution = 2.0 * kPi / r.table.period_rad;
+  j.mesh_stiffness_source = r.table.source;
+  j.mean_mesh_stiffness_Nm_per_rad = mean;
+  j.min_mesh_stiffness_Nm_per_rad = lo;
+  j.max_mesh_stiffness_Nm_per_rad = hi;
+  j.mesh_stiffness_ripple_percent = 100.0 * (hi - lo) / mean;
+  j.estimated_error = {r.mean_error, r.min_error, r.max_error,
+                       "angle sampling only: the table against every other angle; the contact grid's share is not "
+                       "estimated"};
+  j.mesh_damping_Nms_per_rad = r.modes.mesh_damping_Nms_per_rad;
+  j.damping_ratio = spec.in.damping_ratio;
+  for (const auto& x : r.resonances) {
+    j.resonances.push_back({x.rpm, x.frequency_Hz, r.table.meshes[size_t(x.mesh)].first, x.order, x.mode + 1});
+    j.resonance_speeds_rpm.push_back(x.rpm);
+  }
   const double step = (spec.hi_rpm - spec.lo_rpm) / double(spec.speeds - 1);
-  json j = {
-      {"natural_frequencies_Hz", r.modes.frequencies_Hz},
-      {"mode_shapes", shapes},
-      {"mode_shapes_note", "each mode's amplitudes of the input inertia's angle referred to the output (theta_in / i) "
-                           "and of the output's, the larger +1; the free pair's rigid-body mode (0 Hz) is left out"},
-      {"ratio", r.table.ratio},
-      {"reference_torque_Nm", r.table.torque_Nm},
-      {"meshes", meshes},
-      {"table_periods_per_input_revolution", 2.0 * kPi / r.table.period_rad},
-      {"mesh_stiffness_source", r.table.source},
-      {"mean_mesh_stiffness_Nm_per_rad", mean},
-      {"min_mesh_stiffness_Nm_per_rad", lo},
-      {"max_mesh_stiffness_Nm_per_rad", hi},
-      {"mesh_stiffness_ripple_percent", 100.0 * (hi - lo) / mean},
-      {"estimated_error",
-       {{"mean_mesh_stiffness_Nm_per_rad", r.mean_error},
-        {"min_mesh_stiffness_Nm_per_rad", r.min_error},
-        {"max_mesh_stiffness_Nm_per_rad", r.max_error},
-        {"note", "angle sampling only: the table against every other angle; the contact grid's share is not "
-                 "estimated"}}},
-      {"mesh_damping_Nms_per_rad", r.modes.mesh_damping_Nms_per_rad},
-      {"damping_ratio", spec.in.damping_ratio},
-      {"resonances", res},
-      {"resonance_speeds_rpm", speeds},
-      {"sweep_step_rpm", step},
-  };
+  j.sweep_step_rpm = step;
   if (r.peak_index >= 0) {
     const auto& p = r.sweep[size_t(r.peak_index)];
-    json mesh_frequencies = json::array();  // each mesh's, in the order of "meshes"
-    for (const auto& m : r.table.meshes) mesh_frequencies.push_back(p.mesh_frequency_Hz * m.second);
+    SweepPeak& peak = j.sweep_peak.emplace();
+    for (const auto& m : r.table.meshes) peak.mesh_frequencies_Hz.push_back(p.mesh_frequency_Hz * m.second);
     double nearest = NAN;
     for (const auto& x : r.resonances)
       if (std::isnan(nearest) || std::abs(x.rpm - p.input_speed_rpm) < std::abs(nearest - p.input_speed_rpm))
         nearest = x.rpm;
-    j["sweep_peak"] = {{"input_speed_rpm", p.input_speed_rpm},
-                       {"mesh_frequencies_Hz", mesh_frequencies},
-                       {"overload_factor", p.overload_factor},
-                       {"dynamic_te_peak_to_peak_arcsec", p.te_peak_to_peak_rad * kArcsecPerRad},
-                       {"nearest_resonance_rpm", std::isnan(nearest) ? json(nullptr) : json(nearest)},
-                       {"within_one_step_of_resonance",
-                        !std::isnan(nearest) && std::abs(nearest - p.input_speed_rpm) <= step * (1 + 1e-12)}};
+    peak.input_speed_rpm = p.input_speed_rpm;
+    peak.overload_factor = p.overload_factor;
+    peak.dynamic_te_peak_to_peak_arcsec = p.te_peak_to_peak_rad * kArcsecPerRad;
+    peak.nearest_resonance_rpm = nearest;
+    peak.within_one_step_of_resonance = !std::isnan(nearest) && std::abs(nearest - p.input_speed_rpm) <= step * (1 + 1e-12);
     double sampling = 0.0, residual = 0.0;
     for (const auto& st : r.sweep)
       if (st.stable) sampling = std::max(sampling, st.overload_sampling_error), residual = std::max(residual, st.periodicity_residual);
-    j["sweep_peak"]["overload_sampling_error"] = sampling;
-    j["sweep_peak"]["note"] =
-        "the largest of the swept speeds: between speeds the peak is not resolved (the step); sampling error the "
-        "largest over the sweep (each speed's periodic solution at all samples against every other sample)";
-    j["max_periodicity_residual"] = residual;
-  } else {
-    j["sweep_peak"] = nullptr;
+    peak.overload_sampling_error = sampling;
+    peak.note = "the largest of the swept speeds: between speeds the peak is not resolved (the step); sampling error "
+                "the largest over the sweep (each speed's periodic solution at all samples against every other sample)";
+    j.max_periodicity_residual = residual;
   }
   if (spec.in.max_dynamic_factor) {
     // As the verdict reads it (studies/report.h, EvaluateHeadlines): within the limit plus the
     // value's estimated error, so that this flag and the status say one thing.
-    const double error = r.peak_index >= 0 ? j["sweep_peak"]["overload_sampling_error"].get<double>() : 0.0;
+    const double error = j.sweep_peak ? j.sweep_peak->overload_sampling_error : 0.0;
     const bool holds =
         r.peak_index >= 0 && r.sweep[size_t(r.peak_index)].overload_factor <= *spec.in.max_dynamic_factor + error;
-    j["overload_limit"] = {{"max_dynamic_factor", *spec.in.max_dynamic_factor}, {"met", holds}};
+    j.overload_limit = OverloadLimit{*spec.in.max_dynamic_factor, holds};
   }
-  j["model"] = "two inertias referred to the output, mesh torque T_ref + k(theta)(delta - delta_s(theta)) + c "
-               "d(delta)/dt linearised about the loaded contact; periodic steady state by shooting over one mesh "
-               "period (CVODE, Adams, rtol 1e-10); docs/torsional_dynamics.md";
+  j.model = "two inertias referred to the output, mesh torque T_ref + k(theta)(delta - delta_s(theta)) + c "
+            "d(delta)/dt linearised about the loaded contact; periodic steady state by shooting over one mesh "
+            "period (CVODE, Adams, rtol 1e-10); docs/torsional_dynamics.md";
   return j;
 }
 
@@ -237,22 +216,6 @@ void WriteTorsionalDynamics(const TorsionalDynamicsResult& r, Outputs& out) {
   d.Add("stable", stable);
   d.Add("periodicity_residual", resid);
   out.Add("dynamic_te.csv", ToCsv(d));
-}
-
-nlohmann::ordered_json TorsionalDynamicsResultSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["natural_frequencies_Hz"] = {{"type", "array"}, {"items", {{"type", "number"}, {"description", "[Hz]"}}}};
-  p["mesh_stiffness_ripple_percent"] = {{"type", "number"}, {"description", "[%]"}};
-  // null when no swept speed has a stable periodic solution
-  p["sweep_peak"] = {{"type", {"object", "null"}},
-                     {"properties",
-                      {{"overload_factor",
-                        {{"type", "number"}, {"description", "the dynamic overload factor at the sweep's peak"}}},
-                       {"overload_sampling_error", {{"type", "number"}, {"description", "its sampling error"}}},
-                       {"input_speed_rpm", {{"type", "number"}, {"description", "[rpm]"}}}}}};
-  p["error"] = {{"type", "string"}, {"description", "why the dynamics were not solved (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
 }
 
 std::vector<Headline> TorsionalDynamicsHeadlines() {

@@ -107,15 +107,125 @@ struct TorsionalDynamicsResult {
 TorsionalDynamicsResult RunTorsionalDynamics(const TorsionalDynamicsSpec& spec, MeshTable table,
                                              const RunContext& ctx, const std::string& kind);
 
-/// result.json's "torsional_dynamics" object.
-nlohmann::json TorsionalDynamicsJson(const TorsionalDynamicsSpec& spec, const TorsionalDynamicsResult& r);
+/// result.json's "torsional_dynamics" (docs/torsional_dynamics.md): the modes, the mesh table's
+/// stiffness and its sampling error, the resonance speeds, the sweep's peak and its limit.
+struct TorsionalDynamicsBlock {
+  struct ModeShape {
+    double input_referred = 0, output = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("input_referred", &input_referred, Field().Desc("θ_in / i"));
+      a->Visit("output", &output, Field().Desc("θ_out"));
+    }
+  };
+  struct Mesh {
+    std::string name;
+    double mesh_periods_per_input_revolution = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("name", &name, Field());
+      a->Visit("mesh_periods_per_input_revolution", &mesh_periods_per_input_revolution, Field());
+    }
+  };
+  struct EstimatedError {
+    double mean_mesh_stiffness_Nm_per_rad = 0, min_mesh_stiffness_Nm_per_rad = 0, max_mesh_stiffness_Nm_per_rad = 0;
+    std::string note;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("mean_mesh_stiffness_Nm_per_rad", &mean_mesh_stiffness_Nm_per_rad, Field().NullWhenNotFinite().Unit("N·m/rad"));
+      a->Visit("min_mesh_stiffness_Nm_per_rad", &min_mesh_stiffness_Nm_per_rad, Field().NullWhenNotFinite().Unit("N·m/rad"));
+      a->Visit("max_mesh_stiffness_Nm_per_rad", &max_mesh_stiffness_Nm_per_rad, Field().NullWhenNotFinite().Unit("N·m/rad"));
+      a->Visit("note", &note, Field());
+    }
+  };
+  struct Resonance {
+    double input_speed_rpm = 0, frequency_Hz = 0;
+    std::string mesh;
+    int order = 0, mode = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("input_speed_rpm", &input_speed_rpm, Field().Unit("rpm"));
+      a->Visit("mesh", &mesh, Field().Desc("the mesh whose order excites it"));
+      a->Visit("order", &order, Field().Desc("the harmonic of that mesh's frequency"));
+      a->Visit("mode", &mode, Field().Desc("the mode, from 1"));
+      a->Visit("frequency_Hz", &frequency_Hz, Field().Unit("Hz"));
+    }
+  };
+  struct SweepPeak {
+    double input_speed_rpm = 0, overload_factor = 0, dynamic_te_peak_to_peak_arcsec = 0, nearest_resonance_rpm = 0;
+    double overload_sampling_error = 0;
+    std::vector<double> mesh_frequencies_Hz;
+    bool within_one_step_of_resonance = false;
+    std::string note;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("input_speed_rpm", &input_speed_rpm, Field().Unit("rpm"));
+      a->Visit("mesh_frequencies_Hz", &mesh_frequencies_Hz, Field().Unit("Hz").Desc("each mesh's, as meshes"));
+      a->Visit("overload_factor", &overload_factor, Field().Desc("the dynamic overload factor at the sweep's peak"));
+      a->Visit("dynamic_te_peak_to_peak_arcsec", &dynamic_te_peak_to_peak_arcsec, Field().Unit("arcsec"));
+      a->Visit("nearest_resonance_rpm", &nearest_resonance_rpm,
+               Field().NullWhenNotFinite().Unit("rpm").Desc("null: no resonance in the sweep"));
+      a->Visit("within_one_step_of_resonance", &within_one_step_of_resonance, Field());
+      a->Visit("overload_sampling_error", &overload_sampling_error,
+               Field().NullWhenNotFinite().Desc("its sampling error, the largest over the sweep"));
+      a->Visit("note", &note, Field());
+    }
+  };
+  struct OverloadLimit {
+    double max_dynamic_factor = 0;
+    bool met = false;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_dynamic_factor", &max_dynamic_factor, Field().Desc("the study's limit"));
+      a->Visit("met", &met, Field().Desc("the peak within the limit plus its sampling error"));
+    }
+  };
+  std::vector<double> natural_frequencies_Hz;
+  std::vector<ModeShape> mode_shapes;
+  std::string mode_shapes_note, mesh_stiffness_source, model;
+  double ratio = 0, reference_torque_Nm = 0, table_periods_per_input_revolution = 0;
+  std::vector<Mesh> meshes;
+  double mean_mesh_stiffness_Nm_per_rad = 0, min_mesh_stiffness_Nm_per_rad = 0, max_mesh_stiffness_Nm_per_rad = 0;
+  double mesh_stiffness_ripple_percent = 0;
+  EstimatedError estimated_error;
+  double mesh_damping_Nms_per_rad = 0, damping_ratio = 0, sweep_step_rpm = 0;
+  std::vector<Resonance> resonances;
+  std::vector<double> resonance_speeds_rpm;
+  std::optional<SweepPeak> sweep_peak;
+  std::optional<double> max_periodicity_residual;
+  std::optional<OverloadLimit> overload_limit;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("natural_frequencies_Hz", &natural_frequencies_Hz, Field().Unit("Hz"));
+    a->Visit("mode_shapes", &mode_shapes, Field());
+    a->Visit("mode_shapes_note", &mode_shapes_note, Field());
+    a->Visit("ratio", &ratio, Field().Desc("input turns per output turn"));
+    a->Visit("reference_torque_Nm", &reference_torque_Nm, Field().Unit("N·m").Desc("T_ref, where the mesh is linearised"));
+    a->Visit("meshes", &meshes, Field());
+    a->Visit("table_periods_per_input_revolution", &table_periods_per_input_revolution, Field());
+    a->Visit("mesh_stiffness_source", &mesh_stiffness_source, Field());
+    a->Visit("mean_mesh_stiffness_Nm_per_rad", &mean_mesh_stiffness_Nm_per_rad, Field().Unit("N·m/rad"));
+    a->Visit("min_mesh_stiffness_Nm_per_rad", &min_mesh_stiffness_Nm_per_rad, Field().Unit("N·m/rad"));
+    a->Visit("max_mesh_stiffness_Nm_per_rad", &max_mesh_stiffness_Nm_per_rad, Field().Unit("N·m/rad"));
+    a->Visit("mesh_stiffness_ripple_percent", &mesh_stiffness_ripple_percent, Field().NullWhenNotFinite().Unit("%"));
+    a->Visit("estimated_error", &estimated_error, Field().Desc("of the table's stiffness by angle sampling"));
+    a->Visit("mesh_damping_Nms_per_rad", &mesh_damping_Nms_per_rad, Field().Unit("N·m·s/rad"));
+    a->Visit("damping_ratio", &damping_ratio, Field());
+    a->Visit("resonances", &resonances, Field());
+    a->Visit("resonance_speeds_rpm", &resonance_speeds_rpm, Field().Unit("rpm"));
+    a->Visit("sweep_step_rpm", &sweep_step_rpm, Field().Unit("rpm"));
+    a->Visit("sweep_peak", &sweep_peak,
+             Field().NullWhenAbsent().Desc("null when no swept speed has a stable periodic solution"));
+    a->Visit("max_periodicity_residual", &max_periodicity_residual, Field().NullWhenNotFinite().Desc("with a peak"));
+    a->Visit("overload_limit", &overload_limit, Field().Desc("with max_dynamic_factor"));
+    a->Visit("model", &model, Field());
+  }
+  static TorsionalDynamicsBlock Of(const TorsionalDynamicsSpec& spec, const TorsionalDynamicsResult& r);
+};
 
 /// mesh_stiffness.csv and dynamic_te.csv.
 void WriteTorsionalDynamics(const TorsionalDynamicsResult& r, Outputs& out);
 
-/// The JSON Schema of the block TorsionalDynamicsJson writes (result.json's torsional_dynamics of
-/// cycloid_ltca, lcr_analysis and cycloid_min_size): the keys camopt reads, with their types.
-nlohmann::ordered_json TorsionalDynamicsResultSchema();
 
 /// report.html's headlines of the torsional_dynamics block: the first natural frequency, the mesh
 /// stiffness ripple, the sweep's peak overload factor (against torsional_dynamics.max_dynamic_factor,
