@@ -189,7 +189,7 @@ nlohmann::ordered_json Input::SchemaRules() {
   using oj = nlohmann::ordered_json;
   auto not_sized = [](const std::vector<std::string>& fields) {
     oj refused = oj::array();
-    for (const std::string& f : fields) refused.push_back({{"not", {{"required", oj::array({f})}}}});
+    for (const std::string& f : fields) refused.push_back(disc_cam::Refuse(f));
     return oj{{"properties", {{"variables", {{"allOf", refused}}}}}};
   };
   // The follower's own variables: an offset (translating roller or knife edge), pivot and arm

@@ -74,7 +74,6 @@ nlohmann::ordered_json Input::MotionSchema() {
 
 nlohmann::ordered_json Input::SchemaRules() {
   using oj = nlohmann::ordered_json;
-  auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
   const oj stiffness = {{"required", oj::array({"dynamics"})},
                         {"properties", {{"dynamics", {{"required", oj::array({"follower_stiffness_N_per_mm"})}}}}}};
   auto objective = [](const char* o) {
@@ -89,11 +88,12 @@ nlohmann::ordered_json Input::SchemaRules() {
                {{"properties", {{"follower", {{"properties", {{"type", {{"not", {{"enum", {"translating_flat_faced",
                                                                                              "oscillating_flat_faced"}}}}}}}}}}}}},
                {{"if", disc_cam::FollowerTypeIs({"oscillating_roller", "oscillating_knife_edge"})},
-                {"then", {{"allOf", oj::array({refuse("dynamics"), {{"properties", {{"limits", refuse("stroke_mm")}}}}})}}}},
+                {"then", {{"allOf", oj::array({disc_cam::Refuse("dynamics"),
+                                               {{"properties", {{"limits", disc_cam::Refuse("stroke_mm")}}}}})}}}},
                {{"if", disc_cam::FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge"})},
-                {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}},
+                {"then", {{"properties", {{"limits", disc_cam::Refuse("contact_stress_MPa")}}}}}},
                {{"if", disc_cam::FollowerTypeIs({"oscillating_roller", "oscillating_knife_edge"})},
-                {"then", {{"properties", {{"limits", refuse("contact_stress_MPa")}}}}}},
+                {"then", {{"properties", {{"limits", disc_cam::Refuse("contact_stress_MPa")}}}}}},
                {{"if", objective("residual_vibration")}, {"then", stiffness}},
                // peak_jerk: the designed segments C2 at their ends and of degree 3 at least.
                {{"if", objective("peak_jerk")},

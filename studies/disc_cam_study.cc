@@ -130,16 +130,19 @@ nlohmann::ordered_json Input::MotionSchema(bool /*sizing*/) {
                                {"translating follower", "oscillating follower"}, false);
 }
 
+nlohmann::ordered_json Refuse(const std::string& field) {
+  return {{"not", {{"required", nlohmann::ordered_json::array({field})}}}};
+}
+
 nlohmann::ordered_json Input::Follower::SchemaRules() {
   using oj = nlohmann::ordered_json;
   const oj is_roller = {{"properties", {{"type", {{"enum", RollerTypes()}}}}}};
   const oj is_flat = {{"properties", {{"type", {{"enum", {"translating_flat_faced", "oscillating_flat_faced"}}}}}}};
   const oj is_flat_arm = {{"properties", {{"type", {{"const", "oscillating_flat_faced"}}}}}};
-  auto refuse = [](const std::string& field) { return oj{{"not", {{"required", oj::array({field})}}}}; };
   const oj radius = {{"if", is_roller}, {"then", {{"required", oj::array({"roller_radius_mm"})}}},
-                     {"else", refuse("roller_radius_mm")}};
-  const oj face = {{"if", is_flat}, {"else", refuse("face_width_mm")}};
-  const oj face_offset = {{"if", is_flat_arm}, {"else", refuse("face_offset_mm")}};
+                     {"else", Refuse("roller_radius_mm")}};
+  const oj face = {{"if", is_flat}, {"else", Refuse("face_width_mm")}};
+  const oj face_offset = {{"if", is_flat_arm}, {"else", Refuse("face_offset_mm")}};
   // An oscillating follower sits on a pivot (its arm's length unless a flat face touches the cam);
   // a translating one has an axis offset, which a flat face does not take.
   const oj is_oscillating = {{"properties", {{"type", {{"enum", {"oscillating_roller", "oscillating_knife_edge",
@@ -147,12 +150,12 @@ nlohmann::ordered_json Input::Follower::SchemaRules() {
   const oj is_translating_flat = {{"properties", {{"type", {{"const", "translating_flat_faced"}}}}}};
   const oj pivot = {{"if", is_oscillating},
                     {"then", {{"allOf", oj::array({{{"required", oj::array({"pivot_distance_mm"})}},
-                                                   refuse("offset_mm")})},
+                                                   Refuse("offset_mm")})},
                               {"if", is_flat_arm},
-                              {"then", refuse("arm_length_mm")},
+                              {"then", Refuse("arm_length_mm")},
                               {"else", {{"required", oj::array({"arm_length_mm"})}}}}},
-                    {"else", {{"allOf", oj::array({refuse("pivot_distance_mm"), refuse("arm_length_mm")})}}}};
-  const oj offset = {{"if", is_translating_flat}, {"then", refuse("offset_mm")}};
+                    {"else", {{"allOf", oj::array({Refuse("pivot_distance_mm"), Refuse("arm_length_mm")})}}}};
+  const oj offset = {{"if", is_translating_flat}, {"then", Refuse("offset_mm")}};
   return {{"allOf", oj::array({radius, face, face_offset, pivot, offset})}};
 }
 
@@ -161,11 +164,6 @@ nlohmann::ordered_json FollowerTypeIs(const std::vector<std::string>& types) {
           {"properties", {{"follower", {{"properties", {{"type", {{"enum", types}}}}}}}}}};
 }
 
-namespace {
-nlohmann::ordered_json Refuse(const std::string& field) {
-  return {{"not", {{"required", nlohmann::ordered_json::array({field})}}}};
-}
-}  // namespace
 
 nlohmann::ordered_json DesignSchemaRules() {
   using oj = nlohmann::ordered_json;

@@ -1055,6 +1055,9 @@ nlohmann::ordered_json FollowerMotionRules();
 /// The schema condition "the study's follower.type is one of `types`" (for an if/then rule).
 nlohmann::ordered_json FollowerTypeIs(const std::vector<std::string>& types);
 
+/// The schema "the object does not give `field`" (a rule's refusal).
+nlohmann::ordered_json Refuse(const std::string& field);
+
 /// The rules of the design's fields by the follower's type that disc_cam and disc_cam_min_size
 /// share (the motion's unit, a cutter path and a contact-stress limit by the contact, the loads
 /// by the follower's motion, the inputs of the contact-stress limit, a keyway's bore), as the
