@@ -1,5 +1,6 @@
 // The one-dimensional searches of model/common/roots.h against closed forms.
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -34,6 +35,39 @@ TEST(Roots, GoldenSectionShrinksByTheGoldenRatioAndStopsAtTheTolerance) {
   // A minimum by maximising −f: min of x² − 2x on [−3, 4] at x = 1.
   const GoldenSectionBracket m = GoldenSectionMaximize([](double x) { return -(x * x - 2 * x); }, -3.0, 4.0, 200);
   EXPECT_NEAR(0.5 * (m.lo + m.hi), 1.0, 1e-7);
+}
+
+// Brent's method against closed forms: a parabola's vertex by its first parabolic steps; sin's
+// maximum π/2 and a quartic's x = 0.7 to the tolerance in far fewer evaluations than golden
+// sections; a function undefined (−∞) on part of the bracket. (A tolerance below what the values
+// can resolve at a flat top, ~sqrt(eps) of the scale, only adds steps in the rounding noise.)
+TEST(Roots, BrentFindsSmoothMaximaInFewEvaluations) {
+  int calls = 0;
+  const auto [xp, fp] = BrentMaximize([&](double x) { ++calls; return 2.0 - (x - 0.3) * (x - 0.3); }, -1.0, 1.0, 100, 1e-7);
+  EXPECT_NEAR(xp, 0.3, 1e-12);
+  EXPECT_NEAR(fp, 2.0, 1e-15);
+  EXPECT_LE(calls, 8);
+  calls = 0;
+  const auto [xs, fs] = BrentMaximize([&](double x) { ++calls; return std::sin(x); }, 0.0, 3.0, 100, 1e-7);
+  EXPECT_NEAR(xs, M_PI / 2, 1e-7);
+  EXPECT_NEAR(fs, 1.0, 1e-15);
+  EXPECT_LE(calls, 12);  // golden sections: 35 for a bracket of 3 to 1e-7
+  const auto quartic = [](double x) { return -std::pow(x - 0.7, 2) * (1.0 + std::pow(x - 0.7, 2)); };
+  calls = 0;
+  const auto [xq, fq] = BrentMaximize([&](double x) { ++calls; return quartic(x); }, -2.0, 2.0, 100, 1e-9);
+  EXPECT_NEAR(xq, 0.7, 1e-7);
+  EXPECT_LE(calls, 14);
+  EXPECT_GE(fq, -1e-14);
+  // f = −∞ left of 0 (undefined), maximum of −(x − 0.2)² at 0.2.
+  const auto [xi, fi] = BrentMaximize(
+      [](double x) { return x < 0 ? -std::numeric_limits<double>::infinity() : -(x - 0.2) * (x - 0.2); }, -1.0, 1.0,
+      100, 1e-9);
+  EXPECT_NEAR(xi, 0.2, 1e-7);
+  EXPECT_TRUE(std::isfinite(fi));
+  // The maximum at the bracket's end: found within the tolerance of it.
+  const auto [xe, fe] = BrentMaximize([](double x) { return x; }, 0.0, 1.0, 200, 1e-9);
+  EXPECT_NEAR(xe, 1.0, 1e-8);
+  EXPECT_NEAR(fe, 1.0, 1e-8);
 }
 
 // x³ = 2 on [0, 2]: the cube root of 2.

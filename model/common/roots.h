@@ -38,6 +38,65 @@ GoldenSectionBracket GoldenSectionMaximize(const F& f, double lo, double hi, int
   return {lo, hi, x1, x2, f1, f2};
 }
 
+/// The maximum of f on [lo, hi] (f unimodal there) by Brent's method (R. P. Brent, *Algorithms for
+/// Minimization without Derivatives*, 1973, ch. 5): a parabola through the three best points when
+/// its vertex falls well inside the bracket and the step shrinks, a golden-section step otherwise.
+/// A smooth maximum is found in a handful of evaluations where golden sections take one per
+/// 0.618 of the bracket. Stops when the bracket around the best point is within x_tolerance
+/// (plus a few ulps of x) or after max_iterations. Values of −∞ (f undefined there) are allowed:
+/// no parabola is fitted through them. Returns {x, f(x)} of the best point evaluated.
+template <typename F>
+std::pair<double, double> BrentMaximize(const F& f, double lo, double hi, int max_iterations,
+                                        double x_tolerance) {
+  const double golden = 0.5 * (3.0 - std::sqrt(5.0));
+  const double eps = 4.0 * std::numeric_limits<double>::epsilon();
+  // x: the best point so far, w: the second best, v: the previous w; fx >= fw >= fv.
+  double x = lo + golden * (hi - lo), w = x, v = x;
+  double fx = f(x), fw = fx, fv = fx;
+  double step = 0.0, previous = 0.0;  // the last step and the one before it
+  for (int it = 0; it < max_iterations; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const double tol = eps * std::abs(x) + x_tolerance / 3.0;
+    if (std::abs(x - mid) <= 2.0 * tol - 0.5 * (hi - lo)) break;
+    bool parabola = false;
+    if (std::abs(previous) > tol && std::isfinite(fx) && std::isfinite(fw) && std::isfinite(fv)) {
+      // The vertex of the parabola through (x, fx), (w, fw), (v, fv) as x + p/q.
+      const double r = (x - w) * (fx - fv);
+      double q = (x - v) * (fx - fw);
+      double p = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) p = -p;
+      q = std::abs(q);
+      // Accepted when it lies inside the bracket and moves less than half the step before last.
+      if (q != 0.0 && std::abs(p) < std::abs(0.5 * q * previous) && p > q * (lo - x) && p < q * (hi - x)) {
+        previous = step;
+        step = p / q;
+        const double u = x + step;
+        if (u - lo < 2.0 * tol || hi - u < 2.0 * tol) step = x < mid ? tol : -tol;
+        parabola = true;
+      }
+    }
+    if (!parabola) {
+      previous = (x < mid ? hi : lo) - x;
+      step = golden * previous;
+    }
+    const double u = x + (std::abs(step) >= tol ? step : (step > 0 ? tol : -tol));
+    const double fu = f(u);
+    if (fu >= fx) {
+      (u < x ? hi : lo) = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      (u < x ? lo : hi) = u;
+      if (fu >= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu >= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  return {x, fx};
+}
+
 /// The largest value of circular samples v (sample i at i·h over a period of n·h) and, with refine,
 /// every local maximum within `share` of it refined on the continuous function f by golden-section
 /// search over its two neighbouring intervals to 1e-12 (2h/0.618^k ≤ 1e-12 within 80 steps); −∞

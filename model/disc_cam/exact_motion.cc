@@ -52,8 +52,9 @@ double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, do
   auto touch = [&](double t) {
     return TouchCoordinate(cam, theta, PerturbedProfilePoint(cam, d, t), r);
   };
-  // Coarse scan of the window, then golden-section refinement of the maximum around the best
-  // sample (the touch coordinate is smooth and has a single maximum near the contact).
+  // Coarse scan of the window, then Brent's refinement of the maximum around the best sample (the
+  // touch coordinate is smooth and has a single maximum near the contact: parabolic steps reach
+  // it in ~10 evaluations where golden sections took 40).
   constexpr int kScan = 12;
   const double step = 2.0 * window_rad / kScan;
   double best_t = theta, best = -std::numeric_limits<double>::infinity();
@@ -63,8 +64,8 @@ double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, do
     if (v > best) best = v, best_t = t;
   }
   if (!std::isfinite(best)) return kNaN;
-  const GoldenSectionBracket b = GoldenSectionMaximize(touch, best_t - step, best_t + step, 40, 1e-11);
-  return std::max({best, b.f1, b.f2});
+  const auto [t_max, f_max] = BrentMaximize(touch, best_t - step, best_t + step, 100, 1e-8);
+  return std::max(best, f_max);
 }
 
 std::vector<MonteCarloScale> MonteCarloLinearisation(const DiscCam& cam,

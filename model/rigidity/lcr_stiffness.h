@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -35,8 +36,8 @@ namespace camopt::rigidity {
 
 /// Palmgren's constant 3.84e-5 mm·N^−0.9·mm^0.8 at its steel, E* = 207000/(2(1 − 0.3²)) MPa.
 inline double PalmgrenConstant() {
-  const double e_star_ref = Material{207000.0, 0.3}.composite_modulus_MPa();
-  return 3.84e-5 * std::pow(e_star_ref, 0.9);
+  static const double k = 3.84e-5 * std::pow(Material{207000.0, 0.3}.composite_modulus_MPa(), 0.9);
+  return k;
 }
 
 /// Normal approach [mm] of a roller line contact of length L [mm] under force Q [N].
@@ -46,16 +47,31 @@ T PalmgrenApproach(const T& force, const T& length, const T& e_star) {
   return T(PalmgrenConstant()) * pow(force / e_star, T(0.9)) / pow(length, T(0.8));
 }
 
-/// Force [N] at approach δ [mm] (inverse of PalmgrenApproach); 0 for δ <= 0 (separated).
-/// F = E* (δ L^0.8 / K_P)^(10/9): continuous at 0 with a zero derivative there.
+/// c = E* (L^0.8 / K_P)^(10/9) [N·mm^(−10/9)] of a line contact of length L [mm]: the force at
+/// approach δ is c δ^(10/9) (PalmgrenForce). Taken once per spring, not once per roller and step.
 template <typename T>
-T PalmgrenForce(const T& approach, const T& length, const T& e_star) {
+T PalmgrenCoefficient(const T& length, const T& e_star) {
+  using std::pow;
+  return e_star * pow(pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
+}
+
+/// Force [N] at approach δ [mm] of a contact of coefficient c (PalmgrenCoefficient): c δ^(10/9),
+/// 0 for δ <= 0 (separated); continuous at 0 with a zero derivative there.
+template <typename T>
+T PalmgrenForceOf(const T& approach, const T& coefficient) {
   using std::pow;
   const T d = PositivePart(approach);
   // Value branch, harmless: F ∝ δ^(10/9) meets 0 with a zero derivative, so both sides agree to
   // first order; the branch only keeps pow's infinite derivative at δ = 0 out of the Jet.
   if (!(Value(d) > 0)) return T(0.0);
-  return e_star * pow(d * pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
+  return coefficient * pow(d, T(10.0 / 9.0));
+}
+
+/// Force [N] at approach δ [mm] (inverse of PalmgrenApproach); 0 for δ <= 0 (separated).
+/// F = E* (δ L^0.8 / K_P)^(10/9) = c δ^(10/9).
+template <typename T>
+T PalmgrenForce(const T& approach, const T& length, const T& e_star) {
+  return PalmgrenForceOf(approach, PalmgrenCoefficient(length, e_star));
 }
 
 /// One turret as a torsional spring in its generalised rotation ψ [rad].
@@ -73,20 +89,28 @@ struct TurretSpring {
   /// The normal gap of roller k [mm].
   T Gap(size_t k) const { return gaps.empty() ? clearance : clearance + gaps[k]; }
 
-  /// Force of one roller [N] at a closure δ [mm] of contact and bearing in series:
-  /// δ = δ_P + F(δ_P)/k_b with F(δ_P) the contact law. The residual is convex and increasing in the
-  /// contact approach δ_P, so Newton from δ_P = δ (residual >= 0) descends monotonically to the
-  /// root; then one Newton step in T gives exact first derivatives (implicit function theorem).
-  T RollerForce(const T& closure) const {
+  /// The contact's coefficient c of PalmgrenForceOf [N·mm^(−10/9)].
+  T Coefficient() const { return PalmgrenCoefficient(length, e_star); }
+
+  /// One roller at a closure δ [mm] of contact and bearing in series: its force [N] and its
+  /// contact's own approach δ_P [mm] (δ without a bearing spring).
+  struct Roller {
+    T force, approach;
+  };
+  /// δ = δ_P + F(δ_P)/k_b with F(δ_P) = c δ_P^(10/9) (c: Coefficient()). The residual is convex and
+  /// increasing in the contact approach δ_P, so Newton from δ_P = δ (residual >= 0) descends
+  /// monotonically to the root; then one Newton step in T gives exact first derivatives (implicit
+  /// function theorem).
+  Roller RollerAt(const T& closure, const T& c) const {
     // Value branches, harmless: a separated roller carries nothing, and the force leaves 0 with a
     // zero derivative (first contact is C¹, see PalmgrenForce); bearing == 0 means "no bearing
     // spring", a model choice, never a design value crossing 0.
-    if (!(Value(closure) > 0)) return T(0.0);
-    if (Value(bearing) == 0.0) return PalmgrenForce(closure, length, e_star);
-    const double dv = Value(closure), kb = Value(bearing), l = Value(length), es = Value(e_star);
+    if (!(Value(closure) > 0)) return {T(0.0), T(0.0)};
+    if (Value(bearing) == 0.0) return {PalmgrenForceOf(closure, c), closure};
+    const double dv = Value(closure), kb = Value(bearing), cv = Value(c);
     double dc = dv;
     for (int it = 0; it < 100; ++it) {
-      const double f = PalmgrenForce(dc, l, es);
+      const double f = PalmgrenForceOf(dc, cv);
       const double h = dc + f / kb - dv;
       const double next = dc - h / (1.0 + (10.0 / 9.0) * f / (dc * kb));
       const bool done = std::abs(next - dc) <= 1e-15 * dv;
@@ -94,36 +118,58 @@ struct TurretSpring {
       if (done) break;
     }
     const T dct(dc);
-    const T f = PalmgrenForce(dct, length, e_star);
+    const T f = PalmgrenForceOf(dct, c);
     const T dcn = dct - (dct + f / bearing - closure) / (T(1.0) + T(10.0 / 9.0) * f / (dct * bearing));
-    return PalmgrenForce(dcn, length, e_star);
+    return {PalmgrenForceOf(dcn, c), dcn};
   }
+  /// Force of one roller [N] at a closure δ [mm] (RollerAt).
+  T RollerForce(const T& closure) const { return RollerAt(closure, Coefficient()).force; }
   /// dF/dδ of one roller: the contact's (10/9) F/δ_P in series with k_b.
-  T RollerRigidity(const T& closure) const {
+  T RollerRigidity(const T& closure, const T& c) const {
     // Continuous at first contact: (10/9) F/δ ∝ δ^(1/9) → 0.
     if (!(Value(closure) > 0)) return T(0.0);
-    const T f = RollerForce(closure);
-    const T kc = T(10.0 / 9.0) * f / PalmgrenApproach(f, length, e_star);
+    const Roller q = RollerAt(closure, c);
+    const T kc = T(10.0 / 9.0) * q.force / q.approach;
     if (Value(bearing) == 0.0) return kc;
     return T(1.0) / (T(1.0) / kc + T(1.0) / bearing);
   }
+  T RollerRigidity(const T& closure) const { return RollerRigidity(closure, Coefficient()); }
 
   /// g(ψ) = Σ F(ψ a_k − c) a_k [N·mm].
   T Torque(const T& psi) const {
+    const T c = Coefficient();
     T s(0.0);
-    for (size_t k = 0; k < arms.size(); ++k) s += RollerForce(psi * arms[k] - Gap(k)) * arms[k];
+    for (size_t k = 0; k < arms.size(); ++k) s += RollerAt(psi * arms[k] - Gap(k), c).force * arms[k];
     return s;
   }
   /// g'(ψ) = Σ F'(δ_k) a_k² [N·mm/rad].
   T Rigidity(const T& psi) const {
+    const T c = Coefficient();
     T s(0.0);
-    for (size_t k = 0; k < arms.size(); ++k) s += RollerRigidity(psi * arms[k] - Gap(k)) * arms[k] * arms[k];
+    for (size_t k = 0; k < arms.size(); ++k) s += RollerRigidity(psi * arms[k] - Gap(k), c) * arms[k] * arms[k];
     return s;
+  }
+  /// g(ψ) and g'(ψ) in one pass over the rollers, each roller's force found once: the same sums,
+  /// term by term, as Torque and Rigidity.
+  std::pair<T, T> TorqueAndRigidity(const T& psi) const {
+    const T c = Coefficient();
+    T g(0.0), k(0.0);
+    for (size_t i = 0; i < arms.size(); ++i) {
+      const T closure = psi * arms[i] - Gap(i);
+      if (!(Value(closure) > 0)) continue;  // no force, no rigidity (RollerAt, RollerRigidity)
+      const Roller q = RollerAt(closure, c);
+      g += q.force * arms[i];
+      const T kc = T(10.0 / 9.0) * q.force / q.approach;
+      const T rigidity = Value(bearing) == 0.0 ? kc : T(1.0) / (T(1.0) / kc + T(1.0) / bearing);
+      k += rigidity * arms[i] * arms[i];
+    }
+    return {g, k};
   }
   /// Force of every roller at ψ [N].
   std::vector<T> Forces(const T& psi) const {
+    const T c = Coefficient();
     std::vector<T> f;
-    for (size_t k = 0; k < arms.size(); ++k) f.push_back(RollerForce(psi * arms[k] - Gap(k)));
+    for (size_t k = 0; k < arms.size(); ++k) f.push_back(RollerAt(psi * arms[k] - Gap(k), c).force);
     return f;
   }
   /// Largest force among the rollers at ψ [N].
@@ -153,7 +199,7 @@ struct TurretSpring {
       T sum(0.0);
       for (const T& a : arms)
         if (sign * Value(a) > 0) sum += pow(T(sign) * a, T(19.0 / 9.0));
-      const T c = e_star * pow(pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
+      const T c = Coefficient();
       return T(sign) * pow(abs(torque) / (c * sum), T(0.9));
     }
     // g is monotone increasing; bracket on the loaded side beyond the dead band c/amax, then
@@ -166,8 +212,15 @@ struct TurretSpring {
       lo = hi;
       hi *= 2.0;
     }
+    // The Newton iteration asks for g and g' at the same ψ: both from one pass.
+    double at = std::numeric_limits<double>::quiet_NaN(), slope = 0.0;
     const double psi = SafeguardedNewtonIncreasing(
-        g, [&](double x) { return s.Rigidity(sign * x); }, target, lo, hi, 200, 1e-14, 1e-15);
+        [&](double x) {
+          const auto [gx, kx] = s.TorqueAndRigidity(sign * x);
+          at = x, slope = kx;
+          return sign * gx;
+        },
+        [&](double x) { return x == at ? slope : s.Rigidity(sign * x); }, target, lo, hi, 200, 1e-14, 1e-15);
     const T psi0(sign * psi);
     return psi0 - (Torque(psi0) - torque) / Rigidity(psi0);
   }
@@ -197,9 +250,14 @@ struct TurretSpring {
       throw std::domain_error("no roller of the turret can carry this torque");
     // SafeguardedNewtonIncreasing works on a positive variable: y = ψ − lo + w, w the bracket width.
     const double w = hi - lo;
+    double at = std::numeric_limits<double>::quiet_NaN(), slope_at = 0.0;  // g' beside g (Rotation)
     const double y = SafeguardedNewtonIncreasing(
-        [&](double v) { return s.Torque(v + lo - w); }, [&](double v) { return s.Rigidity(v + lo - w); },
-        target, w, 2.0 * w, 200, 1e-15, 1e-15);
+        [&](double v) {
+          const auto [gv, kv] = s.TorqueAndRigidity(v + lo - w);
+          at = v, slope_at = kv;
+          return gv;
+        },
+        [&](double v) { return v == at ? slope_at : s.Rigidity(v + lo - w); }, target, w, 2.0 * w, 200, 1e-15, 1e-15);
     const T psi0(y + lo - w);
     const T slope = Rigidity(psi0);
     if (!(Value(slope) > 0)) return psi0;  // inside a dead band: no rigidity, no derivative
