@@ -2,6 +2,7 @@
 """Every example study through `camopt run` as a user runs it, timed (docs/performance.md, "camopt run").
 
     python3 scripts/time_examples.py BUILD_DIR [--rounds N] [--only SUBSTRING] [--markdown]
+                                     [--compare OLD_BUILD_DIR]
 
 For each studies/examples/*.json (one after another, never two at once): the process's CPU time,
 user and system, from the operating system (the child's rusage), the wall time, and the phase split
@@ -9,7 +10,9 @@ that `camopt run --timings` prints (read, checks, parse, solve, files, status, r
 --rounds N each example runs N times and the smallest CPU time is kept (the machine's noise only ever
 adds). Each example is set against the target of its class (issue "speed as the user measures it"):
 an analysis 0.3 s CPU, a line-model sizing 0.5 s, a 3D-contact or cycloid sizing 2 s. A line per
-example; --markdown prints the table docs/performance.md keeps. Exit 0 whatever the times (a
+example; --markdown prints the table docs/performance.md keeps. --compare OLD_BUILD_DIR runs every
+example with the old build too, the two alternated round by round (the machine's drift falls on
+both alike), and prints before / after / ratio instead of the phases. Exit 0 whatever the times (a
 measurement, not a test); exit 1 when an example fails to run (exit 2).
 """
 import argparse
@@ -66,8 +69,10 @@ def main():
     ap.add_argument("--rounds", type=int, default=1, help="runs per example; the smallest CPU time is kept")
     ap.add_argument("--only", default="", help="only the examples whose file name contains this")
     ap.add_argument("--markdown", action="store_true", help="print a Markdown table")
+    ap.add_argument("--compare", default="", help="an older build folder, run alternately with this one")
     args = ap.parse_args()
     camopt = os.path.join(args.build, "camopt")
+    old_camopt = os.path.join(args.compare, "camopt") if args.compare else ""
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     examples = sorted(glob.glob(os.path.join(root, "studies", "examples", "*.json")))
     rows, failed = [], []
@@ -81,8 +86,12 @@ def main():
             if not isinstance(study, dict) or "study" not in study:
                 continue  # a catalogue, not a study
             kind = study["study"]
-            best = None
+            best, old_best = None, None
             for r in range(args.rounds):
+                if old_camopt:
+                    code, user, system, wall, phases, err = run_once(old_camopt, path, os.path.join(tmp, "old-%s-%d" % (name, r)))
+                    if code in (0, 3) and (old_best is None or user + system < old_best):
+                        old_best = user + system
                 out = os.path.join(tmp, "%s-%d" % (name, r))
                 code, user, system, wall, phases, err = run_once(camopt, path, out)
                 if code not in (0, 3):
@@ -93,13 +102,25 @@ def main():
             if best is None:
                 continue
             cls, target = target_of(kind, study)
-            rows.append((name, kind, cls, target) + best)
-            print("%-40s %.3f s CPU (user %.3f, system %.3f), target %.1f s, %s" %
-                  (name, best[0] + best[1], best[0], best[1], target, cls), file=sys.stderr)
-    if args.markdown:
+            rows.append((name, kind, cls, target) + best + (old_best,))
+            print("%-40s %.3f s CPU (user %.3f, system %.3f), target %.1f s, %s%s" %
+                  (name, best[0] + best[1], best[0], best[1], target, cls,
+                   ", before %.3f s" % old_best if old_best is not None else ""), file=sys.stderr)
+    if args.markdown and old_camopt:
+        met = sum(1 for r in rows if r[4] + r[5] <= r[3])
+        met_before = sum(1 for r in rows if r[9] is not None and r[9] <= r[3])
+        print("%d of %d examples within their targets (before: %d)\n" % (met, len(rows), met_before))
+        print("| example | class ≤ target s | before s | after s | after / before | met |")
+        print("|---|---|---:|---:|---:|---|")
+        for name, kind, cls, target, user, system, wall, phases, code, old_cpu in rows:
+            cpu = user + system
+            print("| `%s` | %s ≤ %.1f | %s | %.3f | %s | %s |" %
+                  (name[:-5], cls, target, "%.3f" % old_cpu if old_cpu is not None else "–", cpu,
+                   "%.2f" % (cpu / old_cpu) if old_cpu else "–", "yes" if cpu <= target else "**no**"))
+    elif args.markdown:
         print("| example | kind | CPU s (user + system) | target | met | read | parse | solve | files | report | write |")
         print("|---|---|---|---|---|---|---|---|---|---|---|")
-        for name, kind, cls, target, user, system, wall, phases, code in rows:
+        for name, kind, cls, target, user, system, wall, phases, code, _ in rows:
             cpu = user + system
             # A kind with its own runner times parse, solve and files as one phase (marked †).
             ph = lambda k: ("%.3f" % phases[k]) if k in phases else (

@@ -456,7 +456,19 @@ std::string HtmlReport(const std::string& kind, const std::vector<Headline>* hea
   os << "</table>\n";
 
   os << "<h2>Files of this run</h2>\n<ul>\n";
-  for (const auto& [file, content] : files) os << "<li><code>" << Html(file) << "</code></li>\n";
+  // Each file with its size (kB = 1000 bytes), so a part too large for its reader shows here.
+  const auto size = [](size_t bytes) {
+    char buf[32];
+    if (bytes < 1000)
+      std::snprintf(buf, sizeof buf, "%zu bytes", bytes);
+    else if (bytes < 1000000)
+      std::snprintf(buf, sizeof buf, bytes < 10000 ? "%.1f kB" : "%.0f kB", double(bytes) / 1e3);
+    else
+      std::snprintf(buf, sizeof buf, "%.1f MB", double(bytes) / 1e6);
+    return std::string(buf);
+  };
+  for (const auto& [file, content] : files)
+    os << "<li><code>" << Html(file) << "</code> " << size(content.size()) << "</li>\n";
   os << "<li><code>report.html</code> (this page)</li>\n</ul>\n";
   os << "<details><summary>result.json</summary>\n<pre>" << Html(result.dump(2)) << "</pre>\n</details>\n";
   os << "</body>\n</html>\n";

@@ -2,6 +2,7 @@
 // numbered drawings) and report.html (headlines with limits and pass/fail, warnings, every plot
 // inline, self-contained, deterministic). That the page renders in a browser is
 // tests/report_render_test.py (ctest Report.renders_in_chromium).
+#include <cstdio>
 #include <regex>
 #include <string>
 
@@ -288,6 +289,18 @@ TEST(HtmlReport, EveryRunWritesOne) {
   const Outputs out = RunStudy(study, RunContext{});
   ASSERT_TRUE(out.files().count("report.html"));
   EXPECT_NE(out.files().at("report.html").find("torsional rigidity at end b"), std::string::npos);
+  // Every file of the run listed with its size, counted here from the file itself.
+  for (const auto& [file, content] : out.files()) {
+    if (file == "report.html") continue;
+    const size_t n = content.size();
+    char size[32];
+    if (n < 1000)
+      std::snprintf(size, sizeof size, "%zu bytes", n);
+    else
+      std::snprintf(size, sizeof size, n < 10000 ? "%.1f kB" : "%.0f kB", n / 1e3);
+    EXPECT_NE(out.files().at("report.html").find("<li><code>" + file + "</code> " + size + "</li>"), std::string::npos)
+        << file << " " << size;
+  }
 }
 
 // A life table anywhere a kind writes one (here /best/life, as the sizing kinds do): the table on

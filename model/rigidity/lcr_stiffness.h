@@ -68,10 +68,15 @@ T PalmgrenForceOf(const T& approach, const T& coefficient) {
 }
 
 /// Force [N] at approach δ [mm] (inverse of PalmgrenApproach); 0 for δ <= 0 (separated).
-/// F = E* (δ L^0.8 / K_P)^(10/9) = c δ^(10/9).
+/// F = E* (δ L^0.8 / K_P)^(10/9): continuous at 0 with a zero derivative there. The same as
+/// PalmgrenForceOf(δ, PalmgrenCoefficient(L, E*)) but for rounding (kept in this order: the
+/// cycloid's output-pin contacts and the sizings on them follow its last digits).
 template <typename T>
 T PalmgrenForce(const T& approach, const T& length, const T& e_star) {
-  return PalmgrenForceOf(approach, PalmgrenCoefficient(length, e_star));
+  using std::pow;
+  const T d = PositivePart(approach);
+  if (!(Value(d) > 0)) return T(0.0);  // as PalmgrenForceOf
+  return e_star * pow(d * pow(length, T(0.8)) / T(PalmgrenConstant()), T(10.0 / 9.0));
 }
 
 /// One turret as a torsional spring in its generalised rotation ψ [rad].
