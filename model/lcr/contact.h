@@ -8,6 +8,7 @@
 // the contact points against the paper's distance condition L = r_r solved by root finding.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "model/common/geometry.h"
@@ -25,8 +26,25 @@ struct RollerContact {
   T curvature;        // pitch-curve curvature κ at this roller [1/mm], signed
 };
 
+/// The unit vectors u(2πi/n), i = 0..n−1, of the roller slots of a turret of n > 0 rollers,
+/// computed once per thread and n (U's values), not one sincos per roller in every evaluation.
+inline const std::vector<Vec2<double>>& TurretSlots(int n) {
+  thread_local std::vector<std::vector<Vec2<double>>> table;  // by n
+  if (n <= 0) throw std::invalid_argument("a turret needs at least one roller");
+  if (table.size() <= size_t(n)) table.resize(size_t(n) + 1);
+  std::vector<Vec2<double>>& slots = table[size_t(n)];
+  if (slots.empty()) {
+    slots.reserve(size_t(n));
+    for (int k = 0; k < n; ++k) slots.push_back(U(2.0 * kPi * k / n));
+  }
+  return slots;
+}
+
 /// Unit vector u(2πi/n) of roller slot i on a turret of n rollers (a double for every scalar).
-inline Vec2<double> TurretSlot(int i, int n) { return U(2.0 * kPi * i / n); }
+inline Vec2<double> TurretSlot(int i, int n) {
+  if (n <= 0 || i < 0 || i >= n) return U(2.0 * kPi * i / n);
+  return TurretSlots(n)[size_t(i)];
+}
 
 /// Roller centre of a slot on a turret turned by u(θ_o) (given as its cosine and sine):
 /// r_d · (u(θ_o) rotating u(2πi/n)), the angle-addition formula. Each centre carries the rounding of
@@ -44,12 +62,14 @@ template <typename T>
 std::vector<Vec2<T>> RollerCentres(const Reducer<T>& r, Side s, const T& theta) {
   const CamSide<T>& c = r.side(s);
   std::vector<Vec2<T>> centres(c.rollers);
+  if (c.rollers <= 0) return centres;
+  const std::vector<Vec2<double>>& slots = TurretSlots(c.rollers);
   if (s == Side::kInput) {
-    for (int i = 0; i < c.rollers; ++i) centres[i] = c.turret_radius * TurretSlot(i, c.rollers).template cast<T>();
+    for (int i = 0; i < c.rollers; ++i) centres[i] = c.turret_radius * slots[size_t(i)].template cast<T>();
     return centres;
   }
   const Vec2<T> turn = U(T(OutputSpeedRatio(r)) * theta);
-  for (int i = 0; i < c.rollers; ++i) centres[i] = RotatedSlot(c.turret_radius, TurretSlot(i, c.rollers), turn);
+  for (int i = 0; i < c.rollers; ++i) centres[i] = RotatedSlot(c.turret_radius, slots[size_t(i)], turn);
   return centres;
 }
 

@@ -29,7 +29,7 @@ void Resize(TurretBuffers& b, int n) {
 /// The slots u(2πi/n) of one turret (TurretSlot), computed once per cycle.
 std::vector<Vec2<double>> Slots(const CamSide<double>& c) {
   std::vector<Vec2<double>> slots(c.rollers);
-  for (int i = 0; i < c.rollers; ++i) slots[i] = TurretSlot(i, c.rollers);
+  if (c.rollers > 0) slots = TurretSlots(c.rollers);
   return slots;
 }
 
