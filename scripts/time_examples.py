@@ -6,7 +6,8 @@
 
 For each studies/examples/*.json (one after another, never two at once): the process's CPU time,
 user and system, from the operating system (the child's rusage), the wall time, and the phase split
-that `camopt run --timings` prints (read, checks, parse, solve, files, status, report, write). With
+that `camopt run --timings` prints (read, checks, parse, solve, and for a sizing its verification and
+limit costs out of the solve, files, status, report, write). With
 --rounds N each example runs N times and the smallest CPU time is kept (the machine's noise only ever
 adds). Each example is set against the target of its class (issue "speed as the user measures it"):
 an analysis 0.3 s CPU, a line-model sizing 0.5 s, a 3D-contact or cycloid sizing 2 s. A line per
@@ -110,24 +111,29 @@ def main():
         met = sum(1 for r in rows if r[4] + r[5] <= r[3])
         met_before = sum(1 for r in rows if r[9] is not None and r[9] <= r[3])
         print("%d of %d examples within their targets (before: %d)\n" % (met, len(rows), met_before))
-        print("| example | class ≤ target s | before s | after s | after / before | met |")
-        print("|---|---|---:|---:|---:|---|")
+        print("| example | class ≤ target s | before s | after s | after / before | met "
+              "| after: solve / verification / limit costs / files s |")
+        print("|---|---|---:|---:|---:|---|---|")
         for name, kind, cls, target, user, system, wall, phases, code, old_cpu in rows:
             cpu = user + system
-            print("| `%s` | %s ≤ %.1f | %s | %.3f | %s | %s |" %
+            split = " / ".join("%.3f" % phases[k] if k in phases else "–"
+                               for k in ("solve", "verification", "limit costs", "files"))
+            print("| `%s` | %s ≤ %.1f | %s | %.3f | %s | %s | %s |" %
                   (name[:-5], cls, target, "%.3f" % old_cpu if old_cpu is not None else "–", cpu,
-                   "%.2f" % (cpu / old_cpu) if old_cpu else "–", "yes" if cpu <= target else "**no**"))
+                   "%.2f" % (cpu / old_cpu) if old_cpu else "–", "yes" if cpu <= target else "**no**", split))
     elif args.markdown:
-        print("| example | kind | CPU s (user + system) | target | met | read | parse | solve | files | report | write |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+        print("| example | kind | CPU s (user + system) | target | met | read | parse | solve | verification "
+              "| limit costs | files | report | write |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for name, kind, cls, target, user, system, wall, phases, code, _ in rows:
             cpu = user + system
             # A kind with its own runner times parse, solve and files as one phase (marked †).
             ph = lambda k: ("%.3f" % phases[k]) if k in phases else (
                 "%.3f †" % phases["parse+solve+files"] if k == "solve" and "parse+solve+files" in phases else "")
-            print("| %s | %s | %.3f (%.3f + %.3f) | %s ≤ %.1f | %s | %s | %s | %s | %s | %s | %s |" %
+            print("| %s | %s | %.3f (%.3f + %.3f) | %s ≤ %.1f | %s | %s | %s | %s | %s | %s | %s | %s | %s |" %
                   (name, kind, cpu, user, system, cls, target, "yes" if cpu <= target else "**no**", ph("read"),
-                   ph("parse"), ph("solve"), ph("files"), ph("report"), ph("write")))
+                   ph("parse"), ph("solve"), ph("verification"), ph("limit costs"), ph("files"), ph("report"),
+                   ph("write")))
     for name, code, last in failed:
         print("failed: %s exit %d: %s" % (name, code, last[0]), file=sys.stderr)
     return 1 if failed else 0

@@ -13,6 +13,7 @@
 #include "objectives/cycloid_fields.h"
 #include "objectives/evaluation_memo.h"
 #include "sizing/sizing_driver.h"
+#include "sizing/stage_clock.h"
 #include "optimizers/first_order.h"
 
 namespace camopt::sizing {
@@ -1484,6 +1485,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   // alike (by the same ratio for a limit of a positive quantity, by h for a margin), verified and
   // tightened as the answer was; only a verified converged re-solve counts.
   if (options.re_solve_limit_costs && out.verified && out.converged) {
+    const StageClock::Scope stage("limit costs");
     const double f0 = out.result.objective;
     const double tolerance = 10 * options.solver.tolerance * std::max(std::abs(f0), 1.0);
     for (const auto& [key, cost] : out.limit_cost) {

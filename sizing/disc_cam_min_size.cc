@@ -11,6 +11,7 @@
 #include "model/common/roots.h"
 #include "model/contact/hertz.h"
 #include "sizing/sizing_driver.h"
+#include "sizing/stage_clock.h"
 
 namespace camopt::sizing {
 using namespace camopt::objectives;
@@ -551,6 +552,7 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
       if (binds && std::find(out.binding.begin(), out.binding.end(), c.limit) == out.binding.end())
         out.binding.push_back(c.limit);
     }
+    const StageClock::Scope stage("limit costs");
     for (const std::string& key : out.binding) {
       const double base = key == "pressure_angle_deg"   ? spec.limits.pressure_angle_deg
                           : key == "contact_stress_MPa" ? spec.limits.contact_stress_MPa

@@ -1,5 +1,7 @@
 #include "sizing/disc_cam_motion.h"
 
+#include "sizing/stage_clock.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -56,7 +58,10 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
     out.x.assign(r.x.begin(), r.x.end() - 1);
     out.cam = objectives::MotionDesign(spec, out.x);
     out.converged = r.ok();
-    out.check = objectives::CheckMotionDesign(spec, out.cam);
+    out.check = [&] {
+      const StageClock::Scope stage("verification");
+      return objectives::CheckMotionDesign(spec, out.cam);
+    }();
     start = r.x;
     bool all = true, moved = false;
     for (const VerifiedLimit& c : out.check.checks) {

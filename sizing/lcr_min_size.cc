@@ -10,6 +10,7 @@
 #include "model/common/geometry.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/profile.h"
+#include "sizing/stage_clock.h"
 
 namespace camopt::sizing {
 using namespace camopt::objectives;
@@ -316,6 +317,7 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
                                               const LcrMinSizeOutcome& outcome) {
   std::map<std::string, LimitSlope> out;
   if (!outcome.converged || !outcome.check) return out;
+  const StageClock::Scope stage("limit costs");
   const LcrDenseCheck& c = *outcome.check;
   const LcrLimits& l = spec.limits;
   struct Entry {

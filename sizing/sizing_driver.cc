@@ -1,5 +1,7 @@
 #include "sizing/sizing_driver.h"
 
+#include "sizing/stage_clock.h"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -76,6 +78,7 @@ SizingDriverResult RunSizingDriver(const SizingCandidates& c,
     end_of_solves();
     checked[p] = true;
     out.verified.push_back(pick);
+    const StageClock::Scope stage("verification");
     c.verify(pick);
   }
   return out;

@@ -222,8 +222,9 @@ int RunCommandLine(int argc, char** argv) {
   run->add_flag("--strict", strict,
                 "Exit 3 when a limit of the kind's verdict is exceeded (for scripts and CI pipelines)");
   run->add_flag("--timings", timings,
-                "Print where the run's time went on stderr: read, checks, parse, solve, files, status, report, "
-                "write (CPU and wall seconds; scripts/time_examples.py)");
+                "Print where the run's time went on stderr: read, checks, parse, solve (a sizing's verification "
+                "and limit costs apart), files, status, report, write (CPU and wall seconds; "
+                "scripts/time_examples.py)");
   run->add_flag("--convergence", convergence,
                 "Also run each fidelity knob refined and coarsened: convergence.json, "
                 "convergence_*.svg and a table on stdout (docs/performance.md)");

@@ -391,6 +391,7 @@ struct Accurate {
 
 Accurate AccurateEvaluation(const Study& s, const cycloid::Drive& drive, const cycloid::Crowning& crowning,
                             double fast_stress_MPa, double fast_margin_um) {
+  const sizing::StageClock::Scope stage("verification");  // `camopt run --timings`
   cycloid::LoadedOptions fine = s.options;
   fine.profile_cells = 2 * s.options.profile_cells;
   fine.axial_cells = 2 * s.options.axial_cells;

@@ -34,6 +34,7 @@
 #include "studies/status.h"
 #include "studies/study.h"
 #include "studies/work_limits.h"
+#include "sizing/stage_clock.h"
 
 namespace camopt::studies {
 
@@ -124,7 +125,21 @@ KindDescriptor Describe(const Kind<InputT, ResultT, StudyT>& k) {
               const Node& root, const RunContext& ctx, Outputs& out) {
     auto& phases = out.phases();
     const StudyT study = Timed(phases, "parse", [&] { return kind_detail::ParseOrRead<InputT>(parse, root); });
+    // A sizing's verification and limit costs (sizing/stage_clock.h) out of "solve", after it.
+    struct Stages {
+      std::vector<PhaseTime>& phases;
+      Stages(std::vector<PhaseTime>& p) : phases(p) { sizing::StageClock::Start(); }
+      ~Stages() { (void)sizing::StageClock::Stop(); }
+      void Split() {
+        const size_t solve = phases.size() - 1;
+        for (const sizing::StageTime& t : sizing::StageClock::Stop()) {
+          phases[solve].cpu_s -= t.cpu_s, phases[solve].wall_s -= t.wall_s;
+          phases.push_back({t.name, t.cpu_s, t.wall_s});
+        }
+      }
+    } stages{phases};
     const ResultT result = Timed(phases, "solve", [&] { return run(study, ctx); });
+    stages.Split();
     Timed(phases, "files", [&] {
       if (write) write(study, result, out);
       else out.SetResult(result);

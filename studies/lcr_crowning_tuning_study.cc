@@ -273,6 +273,7 @@ Result Run(const Study& st, const RunContext& ctx) {
     res.tuned_check[k].slices = res.tuned[k].tuned;
     res.uncrowned_check[k].slices = res.tuned[k].uncrowned;
     if (!st.in.tuning.half_space_check) continue;
+    const sizing::StageClock::Scope stage("verification");  // the half_space checks, `--timings`
     std::vector<lcr::Contact3DCycleSide> coarse;
     for (auto [check, c] : {std::pair{&res.tuned_check[k], crown}, std::pair{&res.uncrowned_check[k], lcr::RollerCrowning<double>{}}}) {
       std::vector<lcr::Contact3DCycleSide> details;

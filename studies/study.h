@@ -187,7 +187,7 @@ class Outputs {
 struct RunAnswer {
   Status status = Status::kLimitsMet;
   std::string reason;
-  std::vector<PhaseTime> phases;  ///< read, checks, parse, solve, files, status, report, write
+  std::vector<PhaseTime> phases;  ///< read, checks, parse, solve (then a sizing's verification, limit costs), files, status, report, write
   std::shared_ptr<const nlohmann::json> result;  ///< result.json as written (null: none)
 };
 

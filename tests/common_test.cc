@@ -1,4 +1,5 @@
 // Tests of the foundation: scalar helpers, study input errors, writers, the CLI contract.
+#include <map>
 #include <array>
 #include <chrono>
 #include <filesystem>
@@ -280,6 +281,44 @@ TEST(Cli, TimingsSayWhereTheRunsTimeWent) {
   const auto quiet = camopt::testing::RunCamopt("run " + (dir / "s.json").string() + " --quiet --out " +
                                                 (dir / "out2").string());
   EXPECT_EQ(quiet.stderr_text.find(key), std::string::npos) << quiet.stderr_text;
+}
+
+// A sizing's `--timings` line splits its solve: the verification by the accurate model and the
+// re-solves that price the binding limits are phases of their own right after "solve", and the
+// total is still the sum of every phase (disc_cam_min_size.json verifies and prices two limits).
+TEST(Cli, TimingsOfASizingSplitTheVerificationAndTheLimitCostsOutOfTheSolve) {
+  const auto dir = camopt::testing::TempDir("timings-sizing");
+  const auto r = camopt::testing::RunCamopt("run " + camopt::testing::SourcePath("studies/examples/disc_cam_min_size.json") +
+                                            " --quiet --timings --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const std::string key = "camopt: timings (CPU s / wall s): ";
+  const size_t at = r.stderr_text.find(key);
+  ASSERT_NE(at, std::string::npos) << r.stderr_text;
+  std::string line = r.stderr_text.substr(at + key.size(), r.stderr_text.find('\n', at) - at - key.size());
+  const size_t semi = line.find("; total ");
+  ASSERT_NE(semi, std::string::npos) << line;
+  const double total = std::stod(line.substr(semi + 8));
+  line = line.substr(0, semi);
+  std::vector<std::string> names;
+  std::map<std::string, double> cpu;
+  double sum = 0.0;
+  for (size_t from = 0; from <= line.size();) {
+    const size_t comma = std::min(line.find(", ", from), line.size());
+    const std::string part = line.substr(from, comma - from);  // "limit costs 0.155 / 0.155"
+    const size_t slash = part.rfind(" / "), space = part.rfind(' ', slash - 1);
+    ASSERT_NE(slash, std::string::npos) << part;
+    names.push_back(part.substr(0, space));
+    cpu[names.back()] = std::stod(part.substr(space + 1, slash - space - 1));
+    EXPECT_GE(cpu[names.back()], 0.0) << part;
+    sum += cpu[names.back()];
+    from = comma + 2;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"read", "checks", "parse", "solve", "verification", "limit costs", "files",
+                                             "status", "report", "write"}))
+      << line;
+  EXPECT_GT(cpu["verification"], 0.0) << line;
+  EXPECT_GT(cpu["limit costs"], 0.0) << line;
+  EXPECT_NEAR(total, sum, 0.0011 * names.size()) << line;
 }
 
 TEST(Cli, EveryKindRejectsAnUnknownTopLevelField) {
