@@ -204,12 +204,14 @@ std::vector<CrossFieldRule> Input::CrossFieldRules() {
 
 nlohmann::ordered_json Input::SchemaRules() {
   using oj = nlohmann::ordered_json;
-  // Without a roller the profile stage only (the mechanical error rolls a roller on the profile).
+  // Without a roller the profile stage only and no tolerances (the mechanical error rolls a roller
+  // on the profile).
   const oj profile_only = {{"items", {{"const", "profile"}}}};
   const oj no_roller = {
       {"if", FollowerTypeIs({"translating_knife_edge", "oscillating_knife_edge", "translating_flat_faced",
                              "oscillating_flat_faced"})},
-      {"then", {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}}}}};
+      {"then", {{"properties", {{"analysis", {{"properties", {{"evaluate", profile_only}}}}}}},
+                {"not", {{"required", oj::array({"tolerances"})}}}}}};
   // The error stages need the tolerances.
   const oj error_stage = {
       {"if", {{"required", oj::array({"analysis"})},
@@ -323,12 +325,16 @@ Study ParseDesign(const Node& root) {
   if (!flat)
     FailOnFirst(dc::CheckGeometry(cam), root, DiscCamIssuePaths());
   // Without a roller: no mechanical error (Rzine et al.'s eqs. 16–32 and the exact-motion check
-  // roll a roller of radius r_f + Δr_f on the profile: the stages are refused, tolerances noted as
-  // unused in result.json) and no cutter path of a roller's size.
+  // roll a roller of radius r_f + Δr_f on the profile: the stages and the tolerances are refused)
+  // and no cutter path of a roller's size.
   const std::string no_roller = flat ? "a flat-faced follower" : "a knife-edge follower";
   if (!roller && in.cutter_radius_mm)
     root["cutter_radius_mm"].FailWith("a cutter path is written for a roller follower only (its radius r_t <= r_f), "
                                       "not for " + no_roller + ": remove \"cutter_radius_mm\"");
+  if (!roller && in.tolerances)
+    root["tolerances"].FailWith("the tolerance analysis (the mechanical error of Rzine et al., which rolls a roller on "
+                                "the profile) is computed for roller followers only, not for " + no_roller +
+                                ": remove \"tolerances\" (docs/disc_cam.md)");
   if (!roller && in.analysis.evaluate)
     for (size_t i = 0; i < in.analysis.evaluate->size(); ++i)
       if ((*in.analysis.evaluate)[i] != "profile")
@@ -1266,8 +1272,6 @@ void FillResult(const Study& s, Result& r) {
     geometry_ok = *pa.rise_ok && *pa.return_ok && *j.radius_margin_ok;
   }
 
-  if (s.contact != Study::Contact::kRoller && s.in.tolerances)
-    note("tolerances are not used: the mechanical error (Rzine et al.) is computed for roller followers only");
   if (s.in.analysis.evaluate) {
     j.evaluated = std::vector<std::string>{"profile"};
     if (s.error_stage) j.evaluated->push_back("error");

@@ -130,13 +130,17 @@ TEST(DiscCamFlatFacedStudy, TooSmallABaseCircleFailsTheVerdictWithTheNumbers) {
   EXPECT_TRUE(ff["cusp"].get<bool>());
   EXPECT_FALSE(ff["cusp_cam_angle_deg"].empty());
   EXPECT_FALSE(ran.out["limits_ok"].get<bool>());
-  // Tolerances are read but not used without a roller: a note says so, no error is computed.
+  // Tolerances without a roller are refused at the file's field (the mechanical error rolls a
+  // roller on the profile), not run to an answer without its asked-for tolerance analysis.
   json tol = Example("disc_cam_flat_faced.json");
   tol["tolerances"] = {{"profile_radial_um", 19}};
-  const Ran t = ParseAndRun(tol);
-  EXPECT_FALSE(t.result.error_evaluated);
-  EXPECT_FALSE(t.out.contains("worst_case_error_um"));
-  EXPECT_NE(t.out["notes"].dump().find("tolerances are not used"), std::string::npos);
+  try {
+    (void)ParseAndRun(tol);
+    ADD_FAILURE() << "tolerances on a flat-faced follower were accepted";
+  } catch (const camopt::studies::StudyError& e) {
+    EXPECT_NE(std::string(e.what()).find("/tolerances"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("roller followers only"), std::string::npos) << e.what();
+  }
   // A face narrower than the contact's travel (40 < 2·2h/β = 45.84 mm) fails too.
   json narrow = Example("disc_cam_flat_faced.json");
   narrow["follower"]["face_width_mm"] = 40;

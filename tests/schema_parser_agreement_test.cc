@@ -63,6 +63,8 @@ class Validator {
 
   /// The first error ("/path: reason"), empty when valid.
   std::string Check(const json& value) const { return Check(root_, value, ""); }
+  /// The same against a part of the schema (e.g. an object's own schema).
+  std::string CheckAgainst(const json& schema, const json& value) const { return Check(schema, value, ""); }
 
   const json& Resolve(const json& s) const {
     if (s.is_object() && s.contains("$ref")) {
@@ -676,10 +678,12 @@ int FillDefaults(const Validator& v, const json& schema, json& value) {
                  !(s.contains("dependentRequired") && s["dependentRequired"].contains(it.key()))) {
         // (an object with required fields cannot be made of defaults alone, nor one that needs
         // another field the study may not have: lcr_analysis's "surfaces" needs "lubricant")
+        // (nor one the object's rules forbid here: disc_cam's "tolerances" without a roller)
         json o = json::object();
         if (FillDefaults(v, p, o) > 0) {
-          filled += FillDefaults(v, p, o);
           value[it.key()] = o;
+          if (v.CheckAgainst(s, value).empty()) filled += FillDefaults(v, p, o);
+          else value.erase(it.key());
         }
       }
     } else {
