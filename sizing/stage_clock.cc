@@ -18,17 +18,17 @@ State& ThisThread() {
   return state;
 }
 
-double CpuSeconds() {
+}  // namespace
+
+double ProcessCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-double Wall() {
+double WallSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-
-}  // namespace
 
 void StageClock::Start() {
   State& s = ThisThread();
@@ -48,8 +48,8 @@ StageClock::Scope::Scope(const char* name) : name_(name) {
   entered_ = true;
   if (s.depth++ == 0) {
     charged_ = true;
-    cpu_ = CpuSeconds();
-    wall_ = Wall();
+    cpu_ = ProcessCpuSeconds();
+    wall_ = WallSeconds();
   }
 }
 
@@ -58,7 +58,7 @@ StageClock::Scope::~Scope() {
   if (!entered_ || !s.on) return;
   --s.depth;
   if (!charged_) return;
-  const double cpu = CpuSeconds() - cpu_, wall = Wall() - wall_;
+  const double cpu = ProcessCpuSeconds() - cpu_, wall = WallSeconds() - wall_;
   for (StageTime& t : s.totals)
     if (t.name == name_) {
       t.cpu_s += cpu, t.wall_s += wall;

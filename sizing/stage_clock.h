@@ -10,6 +10,11 @@
 
 namespace camopt::sizing {
 
+/// The process's CPU time so far [s] (user + system, every thread: CLOCK_PROCESS_CPUTIME_ID).
+double ProcessCpuSeconds();
+/// A monotonic wall clock [s].
+double WallSeconds();
+
 struct StageTime {
   std::string name;
   double cpu_s = 0.0, wall_s = 0.0;  ///< the process's CPU time (every thread) and wall time [s]

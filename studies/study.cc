@@ -544,15 +544,8 @@ Outputs RunStudy(const nlohmann::json& study, const RunContext& ctx) {
   return outputs;
 }
 
-double ProcessCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-double WallSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double ProcessCpuSeconds() { return sizing::ProcessCpuSeconds(); }
+double WallSeconds() { return sizing::WallSeconds(); }
 
 RunAnswer RunStudyFile(const std::string& file, const std::string& out_dir, const RunContext& ctx) {
   RunContext c = ctx;
