@@ -28,6 +28,7 @@ struct RollerContact {
 
 /// The unit vectors u(2πi/n), i = 0..n−1, of the roller slots of a turret of n > 0 rollers,
 /// computed once per thread and n (U's values), not one sincos per roller in every evaluation.
+/// The reference holds until the next call with another n (the table may grow): copy to keep.
 inline const std::vector<Vec2<double>>& TurretSlots(int n) {
   thread_local std::vector<std::vector<Vec2<double>>> table;  // by n
   if (n <= 0) throw std::invalid_argument("a turret needs at least one roller");
@@ -38,12 +39,6 @@ inline const std::vector<Vec2<double>>& TurretSlots(int n) {
     for (int k = 0; k < n; ++k) slots.push_back(U(2.0 * kPi * k / n));
   }
   return slots;
-}
-
-/// Unit vector u(2πi/n) of roller slot i on a turret of n rollers (a double for every scalar).
-inline Vec2<double> TurretSlot(int i, int n) {
-  if (n <= 0 || i < 0 || i >= n) return U(2.0 * kPi * i / n);
-  return TurretSlots(n)[size_t(i)];
 }
 
 /// Roller centre of a slot on a turret turned by u(θ_o) (given as its cosine and sine):

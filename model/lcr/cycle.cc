@@ -26,11 +26,9 @@ void Resize(TurretBuffers& b, int n) {
   for (auto* v : {&b.cx, &b.cy, &b.arm, &b.dx, &b.dy, &b.kappa, &b.loaded}) v->resize(n);
 }
 
-/// The slots u(2πi/n) of one turret (TurretSlot), computed once per cycle.
+/// The slots u(2πi/n) of one turret (TurretSlots), a copy for the cycle.
 std::vector<Vec2<double>> Slots(const CamSide<double>& c) {
-  std::vector<Vec2<double>> slots(c.rollers);
-  if (c.rollers > 0) slots = TurretSlots(c.rollers);
-  return slots;
+  return c.rollers > 0 ? TurretSlots(c.rollers) : std::vector<Vec2<double>>{};
 }
 
 /// Roller centres of one turret at θ into b.cx, b.cy: the same expressions as RollerCentres.

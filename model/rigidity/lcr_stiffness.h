@@ -129,14 +129,17 @@ struct TurretSpring {
   }
   /// Force of one roller [N] at a closure δ [mm] (RollerAt).
   T RollerForce(const T& closure) const { return RollerAt(closure, Coefficient()).force; }
-  /// dF/dδ of one roller: the contact's (10/9) F/δ_P in series with k_b.
-  T RollerRigidity(const T& closure, const T& c) const {
-    // Continuous at first contact: (10/9) F/δ ∝ δ^(1/9) → 0.
-    if (!(Value(closure) > 0)) return T(0.0);
-    const Roller q = RollerAt(closure, c);
+  /// dF/dδ of a loaded roller q (RollerAt): the contact's (10/9) F/δ_P in series with k_b.
+  T RigidityOf(const Roller& q) const {
     const T kc = T(10.0 / 9.0) * q.force / q.approach;
     if (Value(bearing) == 0.0) return kc;
     return T(1.0) / (T(1.0) / kc + T(1.0) / bearing);
+  }
+  /// dF/dδ of one roller at a closure δ [mm] (RigidityOf; 0 when separated).
+  T RollerRigidity(const T& closure, const T& c) const {
+    // Continuous at first contact: (10/9) F/δ ∝ δ^(1/9) → 0.
+    if (!(Value(closure) > 0)) return T(0.0);
+    return RigidityOf(RollerAt(closure, c));
   }
   T RollerRigidity(const T& closure) const { return RollerRigidity(closure, Coefficient()); }
 
@@ -164,9 +167,7 @@ struct TurretSpring {
       if (!(Value(closure) > 0)) continue;  // no force, no rigidity (RollerAt, RollerRigidity)
       const Roller q = RollerAt(closure, c);
       g += q.force * arms[i];
-      const T kc = T(10.0 / 9.0) * q.force / q.approach;
-      const T rigidity = Value(bearing) == 0.0 ? kc : T(1.0) / (T(1.0) / kc + T(1.0) / bearing);
-      k += rigidity * arms[i] * arms[i];
+      k += RigidityOf(q) * arms[i] * arms[i];
     }
     return {g, k};
   }
