@@ -126,18 +126,8 @@ std::vector<std::string> TuningVariableNames() {
 }
 
 std::string TuningVariableAllowed(const std::string& name, cycloid::CrowningType type) {
-  using cycloid::CrowningType;
   if (name == "delta_position_um" || name == "delta_radius_um") return "";
-  const bool log = type == CrowningType::kLogarithmic;
-  if (name == "coefficient_mm" || name == "effective_length_mm" || name == "end_drop_mm")
-    return log ? "" : "a parameter of the logarithmic crowning only";
-  if (name == "flat_length_mm")
-    return log || type == CrowningType::kPartial ? "" : "a parameter of the logarithmic or partial crowning only";
-  if (name == "radius_mm")
-    return type == CrowningType::kFull || type == CrowningType::kPartial
-               ? ""
-               : "a parameter of the full or partial crowning only";
-  return "not a tuning variable";
+  return CrowningParameterApplies(name, type).value_or("not a tuning variable");
 }
 
 CycloidTuningModel::CycloidTuningModel(const cycloid::Drive& drive, const cycloid::Crowning& crowning,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -36,6 +37,24 @@ inline std::pair<std::string, double> CycloidModelParameter(const std::string& n
   if (name == "delta_position_um") return {"delta_position_mm", 1e-3};
   if (name == "delta_radius_um") return {"delta_radius_mm", 1e-3};
   return {name, 1.0};
+}
+
+/// Whether the crowning parameter `name` (coefficient_mm, effective_length_mm, end_drop_mm,
+/// flat_length_mm, radius_mm) shapes a crowning of `type`: "" where it does, else why not;
+/// nullopt for a name that is no crowning parameter (model/cycloid/crowning.h: the logarithmic
+/// profile's c, L_e, end drop and flat; the full and partial arcs' radius, the partial's flat).
+inline std::optional<std::string> CrowningParameterApplies(const std::string& name, cycloid::CrowningType type) {
+  using cycloid::CrowningType;
+  const bool log = type == CrowningType::kLogarithmic;
+  if (name == "coefficient_mm" || name == "effective_length_mm" || name == "end_drop_mm")
+    return log ? "" : "a parameter of the logarithmic crowning only";
+  if (name == "flat_length_mm")
+    return log || type == CrowningType::kPartial ? "" : "a parameter of the logarithmic or partial crowning only";
+  if (name == "radius_mm")
+    return type == CrowningType::kFull || type == CrowningType::kPartial
+               ? ""
+               : "a parameter of the full or partial crowning only";
+  return std::nullopt;
 }
 
 /// The implicit derivatives' CG tolerance: the contact solver's own (the values are no more

@@ -367,16 +367,7 @@ std::vector<std::string> CycloidSizingVariableNames() {
 
 std::string CycloidSizingVariableAllowed(const std::string& name, cycloid::CrowningType type) {
   if (IsDriveField(name)) return "";
-  using cycloid::CrowningType;
-  const bool log = type == CrowningType::kLogarithmic;
-  if (name == "coefficient_mm" || name == "effective_length_mm" || name == "end_drop_mm")
-    return log ? "" : "a parameter of the logarithmic crowning only";
-  if (name == "flat_length_mm")
-    return log || type == CrowningType::kPartial ? "" : "a parameter of the logarithmic or partial crowning only";
-  if (name == "radius_mm")
-    return type == CrowningType::kFull || type == CrowningType::kPartial ? ""
-                                                                         : "a parameter of the full or partial crowning only";
-  return "not a sizing variable";
+  return CrowningParameterApplies(name, type).value_or("not a sizing variable");
 }
 
 CycloidSizingModel::CycloidSizingModel(CycloidSizingSpec spec) : spec_(std::move(spec)) {

@@ -616,14 +616,7 @@ void ParseSizingLubrication(const Node& root, const Input& in, Study& s) {
   if (!root.Has("output_mechanism"))
     node.FailWith("the lubricated losses need \"output_mechanism\" (its pins carry the torque out and load the crank "
                   "bearing): give at least pin_circle_radius_mm");
-  if (in.limits.max_oil_temperature_C && common->temperature_C)
-    root["limits"]["max_oil_temperature_C"].FailWith(
-        "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
-        "lubricant.temperature_C (" + Format(*common->temperature_C) + " °C)");
-  sizing::CycloidSizingLubrication l;
-  l.spec.oil = common->oil;
-  l.spec.friction = common->friction;
-  l.spec.composite_roughness_mm = common->composite_roughness_mm;
+  auto l = SizingLubricationOf<sizing::CycloidSizingLubrication>(root, in.limits.max_oil_temperature_C, *common);
   l.spec.ring_pins_rotate = common->rollers_rotate;
   const CycloidBearingFrictionInput bearings = in.bearing_friction.value_or(CycloidBearingFrictionInput{});
   if (bearings.ring_pins) l.spec.ring_pin_bearing = bearings.ring_pins->ToBearing();
@@ -635,16 +628,10 @@ void ParseSizingLubrication(const Node& root, const Input& in, Study& s) {
     l.pins = cycloid::OutputPinContact{p.pin_radius_mm, 0.0, p.roller_radius_mm};
     l.hole_clearance_mm = s.spec.output->clearance_mm;
   }
-  l.input_speed_rpm = common->input_speed_rpm;
-  l.temperature_C = common->temperature_C;
-  l.cooling = common->cooling;
-  l.balance_limit_C = common->max_oil_temperature_C;
   s.spec.lubrication = l;
   s.spec.limits.min_efficiency = in.limits.min_efficiency.value_or(0.0);
   s.spec.limits.max_oil_temperature_C = in.limits.max_oil_temperature_C.value_or(kInf);
-  s.lubrication_blocks = nlohmann::json::object();
-  for (const char* block : {"lubricant", "surfaces", "bearing_friction"})
-    if (root.Has(block)) s.lubrication_blocks[block] = root[block].json();
+  s.lubrication_blocks = LubricationBlocks(root);
 }
 
 void ParseSizingOutput(const Node& root, const Input& in, const std::map<std::string, Field>& fields, Study& s) {

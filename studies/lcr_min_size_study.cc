@@ -500,27 +500,14 @@ void ParseSizingLubrication(const Input& in, const Node& root, Study& s) {
   }
   const std::optional<LubricationCommon> common = ParseLubricationCommon(
       root, in.lubricant, in.surfaces, std::nullopt, in.load.input_speed_rpm, in.duty_cycle.has_value());
-  if (in.limits.max_oil_temperature_C && common->temperature_C)
-    root["limits"]["max_oil_temperature_C"].FailWith(
-        "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
-        "lubricant.temperature_C (" + Format(*common->temperature_C) + " °C)");
-  objectives::LcrSizingLubrication l;
-  l.spec.oil = common->oil;
-  l.spec.friction = common->friction;
-  l.spec.composite_roughness_mm = common->composite_roughness_mm;
+  auto l = SizingLubricationOf<objectives::LcrSizingLubrication>(root, in.limits.max_oil_temperature_C, *common);
   l.spec.rollers_rotate = common->rollers_rotate;
   const LcrBearingFrictionInput bearings = in.bearing_friction.value_or(LcrBearingFrictionInput{});
   l.spec.roller_bearing = bearings.rollers ? bearings.rollers->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
   l.spec.eccentric_bearing = bearings.eccentric ? bearings.eccentric->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
-  l.input_speed_rpm = common->input_speed_rpm;
-  l.temperature_C = common->temperature_C;
-  l.cooling = common->cooling;
-  l.balance_limit_C = common->max_oil_temperature_C;
   s.base.lubrication = l;
   s.base.limits.max_oil_temperature_C = in.limits.max_oil_temperature_C.value_or(kInf);
-  s.lubrication_blocks = nlohmann::json::object();
-  for (const char* block : {"lubricant", "surfaces", "bearing_friction"})
-    if (root.Has(block)) s.lubrication_blocks[block] = root[block].json();
+  s.lubrication_blocks = LubricationBlocks(root);
 }
 
 std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n) {

@@ -81,6 +81,20 @@ double CompositeRoughnessMm(const SurfacesInput& in) {
   return std::sqrt(roller * roller + cam * cam);
 }
 
+void CheckOilTemperatureLimit(const Node& root, const std::optional<double>& limit, const LubricationCommon& c) {
+  if (limit && c.temperature_C)
+    root["limits"]["max_oil_temperature_C"].FailWith(
+        "a limit on the oil temperature needs the housing's balance, lubricant.thermal, not a given "
+        "lubricant.temperature_C (" + Format(*c.temperature_C) + " °C)");
+}
+
+nlohmann::json LubricationBlocks(const Node& root) {
+  nlohmann::json blocks = nlohmann::json::object();
+  for (const char* block : {"lubricant", "surfaces", "bearing_friction"})
+    if (root.Has(block)) blocks[block] = root[block].json();
+  return blocks;
+}
+
 std::optional<LubricationCommon> ParseLubricationCommon(const Node& root, const std::optional<LubricantInput>& lubricant,
                                                         const std::optional<SurfacesInput>& surfaces,
                                                         const std::optional<EfficiencyMapInput>& map,

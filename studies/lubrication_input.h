@@ -236,6 +236,31 @@ std::optional<LubricationCommon> ParseLubricationCommon(const Node& root, const 
                                                         const std::optional<EfficiencyMapInput>& map,
                                                         std::optional<double> speed, bool duty_cycle);
 
+/// limits.max_oil_temperature_C needs the housing's balance: refused beside lubricant.temperature_C.
+void CheckOilTemperatureLimit(const Node& root, const std::optional<double>& limit, const LubricationCommon& c);
+/// A sizing's lubricated operating point (objectives::LcrSizingLubrication,
+/// sizing::CycloidSizingLubrication) from the common blocks: the oil, friction and roughness of its
+/// spec, the speed, a given oil temperature, the cooling and the balance's limit; a limit on the oil
+/// temperature (`max_oil_temperature_limit`, limits.max_oil_temperature_C) beside a given
+/// temperature is refused (exit 2). The kind sets the rest (bearings, which rollers rotate).
+template <typename SizingLubrication>
+SizingLubrication SizingLubricationOf(const Node& root, const std::optional<double>& max_oil_temperature_limit,
+                                      const LubricationCommon& c) {
+  CheckOilTemperatureLimit(root, max_oil_temperature_limit, c);
+  SizingLubrication l;
+  l.spec.oil = c.oil;
+  l.spec.friction = c.friction;
+  l.spec.composite_roughness_mm = c.composite_roughness_mm;
+  l.input_speed_rpm = c.input_speed_rpm;
+  l.temperature_C = c.temperature_C;
+  l.cooling = c.cooling;
+  l.balance_limit_C = c.max_oil_temperature_C;
+  return l;
+}
+/// The study's "lubricant", "surfaces" and "bearing_friction" blocks as given (a sizing's best design
+/// file carries them).
+nlohmann::json LubricationBlocks(const Node& root);
+
 /// The "lubrication" block of result.json, declared once.
 struct LubricationResult {
   struct Oil {

@@ -19,11 +19,11 @@
 #pragma once
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "model/common/argument_check.h"
 #include "model/common/scalar.h"
 
 namespace camopt {
@@ -55,24 +55,13 @@ struct OperatingLine {
 
 namespace bearing_life_internal {
 
-[[noreturn]] inline void Reject(const std::string& field, const std::string& requirement, double found) {
-  std::ostringstream os;
-  os.precision(12);
-  os << "bearing life: " << field << " must be " << requirement << ", found " << found;
-  throw std::invalid_argument(os.str());
-}
-
+// model/common/argument_check.h, its messages starting "bearing life: ".
+inline constexpr const char* kWhat = "bearing life";
+[[noreturn]] inline void Reject(const std::string& f, const std::string& r, double v) { argument_check::Reject(kWhat, f, r, v); }
 template <typename T>
-void CheckPositive(const std::string& field, const T& x) {
-  const double v = Value(x);
-  if (!(std::isfinite(v) && v > 0.0)) Reject(field, "finite and > 0", v);
-}
-
+void CheckPositive(const std::string& field, const T& x) { argument_check::Positive(kWhat, field, x); }
 template <typename T>
-void CheckNonNegative(const std::string& field, const T& x) {
-  const double v = Value(x);
-  if (!(std::isfinite(v) && v >= 0.0)) Reject(field, "finite and >= 0", v);
-}
+void CheckNonNegative(const std::string& field, const T& x) { argument_check::NonNegative(kWhat, field, x); }
 
 template <typename T>
 void CheckLoads(const std::string& field, const std::vector<T>& loads) {
@@ -275,6 +264,31 @@ T DutyCycleLifeHours(const T& dynamic_rating_N, const std::vector<DutyCycleLine<
   const T r = bearing_life_internal::ScaledMinerDamageRate(lines, kind, &s);
   if (Value(r) == 0.0) return T(kInf);
   return pow(dynamic_rating_N / s, LifeExponent(kind)) / r;
+}
+
+/// A reducer bearing's life over its duty cycle (docs/life.md, "LCR" and "Cycloid").
+struct BearingLifeOverCycle {
+  double revolutions_per_input_revolution = 0.0;  ///< R, the bearing's revolutions per input revolution
+  std::vector<double> line_equivalent_load_N;     ///< P_i, revolution-weighted over line i's load period
+  double equivalent_load_N = 0.0;                 ///< P = (Σ t_i n_i P_i^p / Σ t_i n_i)^(1/p)
+  double max_load_N = 0.0;                        ///< the largest load of any line (for s0)
+  double mean_speed_rpm = 0.0;                    ///< the bearing's: R Σ t_i n_i
+  double L10_Mrev = 0.0, L10h = 0.0;              ///< ISO 281 over the duty cycle; +∞ without load
+};
+
+/// Palmgren–Miner over the lines at the bearing's speeds n_i R from out's P_i and R: the bearing's
+/// lines (t_i, n_i R, {P_i}), its mean speed (DutyCycleMeanSpeed), P (DutyCycleEquivalentLoad),
+/// L10 = (C/P)^p and L10h (DutyCycleLifeHours). `time_share` and `input_speed_rpm` are the lines'
+/// t_i and n_i, in the order of out.line_equivalent_load_N.
+inline void CombineDutyCycleLines(double dynamic_rating_N, BearingKind kind, const std::vector<double>& time_share,
+                                  const std::vector<double>& input_speed_rpm, BearingLifeOverCycle& out) {
+  std::vector<DutyCycleLine<double>> d;
+  for (size_t i = 0; i < time_share.size(); ++i)
+    d.push_back({time_share[i], input_speed_rpm[i] * out.revolutions_per_input_revolution, {out.line_equivalent_load_N[i]}});
+  out.mean_speed_rpm = DutyCycleMeanSpeed(d);
+  out.equivalent_load_N = DutyCycleEquivalentLoad(d, kind);
+  out.L10_Mrev = BasicRatingLifeMrev(dynamic_rating_N, out.equivalent_load_N, kind);
+  out.L10h = DutyCycleLifeHours(dynamic_rating_N, d, kind);
 }
 
 /// A life margin for sizing: m = ln(L10h / L10h_required), >= 0 when the duty cycle's life

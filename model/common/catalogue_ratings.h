@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "model/common/argument_check.h"
 #include "model/common/scalar.h"
 
 namespace camopt {
@@ -68,16 +69,10 @@ struct TransmissionAccuracy {
 
 namespace catalogue_ratings_internal {
 
-[[noreturn]] inline void Reject(const std::string& field, const std::string& requirement, double found) {
-  std::ostringstream os;
-  os.precision(12);
-  os << "catalogue ratings: " << field << " must be " << requirement << ", found " << found;
-  throw std::invalid_argument(os.str());
-}
-
-inline void CheckPositive(const std::string& field, double v) {
-  if (!(std::isfinite(v) && v > 0.0)) Reject(field, "finite and > 0", v);
-}
+// model/common/argument_check.h, its messages starting "catalogue ratings: ".
+inline constexpr const char* kWhat = "catalogue ratings";
+[[noreturn]] inline void Reject(const std::string& f, const std::string& r, double v) { argument_check::Reject(kWhat, f, r, v); }
+inline void CheckPositive(const std::string& field, double v) { argument_check::Positive(kWhat, field, v); }
 
 /// Which limit a branch takes at a torque it crosses at zero torque over a lost-motion region.
 enum class Side { kFromAbove, kFromBelow };

@@ -35,6 +35,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/common/argument_check.h"
 #include "model/common/bearing_life.h"
 
 namespace camopt {
@@ -49,16 +50,10 @@ inline constexpr double kReferenceViscosityBranchSpeed_rpm = 1000.0;
 
 namespace life_modification_internal {
 
-[[noreturn]] inline void Reject(const std::string& field, const std::string& requirement, double found) {
-  std::ostringstream os;
-  os.precision(12);
-  os << "modified life: " << field << " must be " << requirement << ", found " << found;
-  throw std::invalid_argument(os.str());
-}
-
-inline void CheckPositive(const std::string& field, double v) {
-  if (!(std::isfinite(v) && v > 0.0)) Reject(field, "finite and > 0", v);
-}
+// model/common/argument_check.h, its messages starting "modified life: ".
+inline constexpr const char* kWhat = "modified life";
+[[noreturn]] inline void Reject(const std::string& f, const std::string& r, double v) { argument_check::Reject(kWhat, f, r, v); }
+inline void CheckPositive(const std::string& field, double v) { argument_check::Positive(kWhat, field, v); }
 
 }  // namespace life_modification_internal
 

@@ -34,11 +34,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "model/common/argument_check.h"
 #include "model/common/bearing_life.h"
 #include "model/common/scalar.h"
 
@@ -87,28 +87,14 @@ struct OutputBearingAverages {
 
 namespace output_bearing_internal {
 
-[[noreturn]] inline void Reject(const std::string& field, const std::string& requirement, double found) {
-  std::ostringstream os;
-  os.precision(12);
-  os << "output bearing: " << field << " must be " << requirement << ", found " << found;
-  throw std::invalid_argument(os.str());
-}
-
-inline void CheckPositive(const std::string& field, double v) {
-  if (!(std::isfinite(v) && v > 0.0)) Reject(field, "finite and > 0", v);
-}
-
+// model/common/argument_check.h, its messages starting "output bearing: ".
+inline constexpr const char* kWhat = "output bearing";
+[[noreturn]] inline void Reject(const std::string& f, const std::string& r, double v) { argument_check::Reject(kWhat, f, r, v); }
+inline void CheckPositive(const std::string& field, double v) { argument_check::Positive(kWhat, field, v); }
 template <typename T>
-void CheckNonNegative(const std::string& field, const T& x) {
-  const double v = Value(x);
-  if (!(std::isfinite(v) && v >= 0.0)) Reject(field, "finite and >= 0", v);
-}
-
+void CheckNonNegative(const std::string& field, const T& x) { argument_check::NonNegative(kWhat, field, x); }
 template <typename T>
-void CheckFinite(const std::string& field, const T& x) {
-  const double v = Value(x);
-  if (!std::isfinite(v)) Reject(field, "finite", v);
-}
+void CheckFinite(const std::string& field, const T& x) { argument_check::Finite(kWhat, field, x); }
 
 inline void CheckBearing(const OutputBearing& b) {
   CheckPositive("C_N (dynamic_rating_N)", b.dynamic_rating_N);

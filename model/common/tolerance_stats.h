@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,16 @@ struct Statistics {
 void LinearStatistics(const std::vector<std::vector<double>>& s, const std::vector<double>& band,
                       const std::vector<int>& key, const std::vector<std::string>& keys, Statistics& out);
 
+/// LinearStatistics of a reducer's deviations, each carrying its band and key (`p.band`, `p.key`).
+template <typename Parameter>
+void LinearStatisticsOf(const std::vector<std::vector<double>>& s, const std::vector<Parameter>& params,
+                        const std::vector<std::string>& keys, Statistics& out) {
+  std::vector<double> band;
+  std::vector<int> key;
+  for (const Parameter& p : params) band.push_back(p.band), key.push_back(p.key);
+  LinearStatistics(s, band, key, keys, out);
+}
+
 /// The Monte-Carlo part: Add each sample's exact TE(θ_i) [rad] and the linear model's at the same
 /// deviations, then Finish.
 class MonteCarloStatistics {
@@ -74,5 +85,33 @@ class MonteCarloStatistics {
   double sum_sq_ = 0, worst_err_ = 0, max_abs_arcsec_ = 0;
   size_t values_ = 0;
 };
+
+/// The Monte-Carlo run of a tolerance analysis (header comment), the same for every reducer:
+/// `samples` draws from SplitMix64 started at `seed`; `draw(state, values)` returns a sample's
+/// deviations (and their values t_p, in the order of s's columns), `exact(deviations, te)` fills the
+/// exact TE(θ_i) − nominal [rad] at that sample and returns a per-sample quantity of the reducer's
+/// own (its worst backlash or lost motion), which are returned in order. Each sample's linear TE
+/// Σ_p s[i][p] t_p goes beside its exact one into the statistics of `out`.
+template <typename Draw, typename Exact>
+std::vector<double> RunMonteCarlo(int samples, std::uint64_t seed, const std::vector<std::vector<double>>& s,
+                                  Draw&& draw, Exact&& exact, const std::function<void(double)>& progress,
+                                  Statistics& out) {
+  MonteCarloStatistics mc;
+  std::vector<double> per_sample;
+  std::uint64_t state = seed;
+  std::vector<double> values;
+  const size_t na = s.size();
+  for (int m = 0; m < samples; ++m) {
+    const auto dev = draw(state, &values);
+    std::vector<double> te(na), lin(na);
+    per_sample.push_back(exact(dev, te));
+    for (size_t i = 0; i < na; ++i)
+      for (size_t p = 0; p < s[i].size(); ++p) lin[i] += s[i][p] * values[p];
+    mc.Add(te, lin);
+    if (progress) progress(double(m + 1) / samples);
+  }
+  mc.Finish(out);
+  return per_sample;
+}
 
 }  // namespace camopt::tolerance

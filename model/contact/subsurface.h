@@ -84,6 +84,16 @@ T VonMises(const AxisStresses<T>& s) {
   return sqrt(T(0.5) * (a * a + b * b + c * c));
 }
 
+/// The largest `measure` of a contact's axis stresses `stresses(p0, s, z)` (s its semi-width or
+/// radius): the maximiser of z/s on (0, 2] at p0 = s = 1 (ArgMax, in double), the stress there in T
+/// (value ∝ p0, depth ∝ s).
+template <typename T, typename Stresses, typename Measure>
+StressPeak<T> AxisPeak(const T& p0, const T& scale, const Stresses& stresses, const Measure& measure) {
+  const double zeta = ArgMax([&](double z) { return measure(stresses(1.0, 1.0, z)); }, 1e-6, 2.0);
+  const T z = scale * zeta;
+  return {measure(stresses(p0, scale, z)), z, T(0.0)};
+}
+
 }  // namespace subsurface_internal
 
 /// Carlson's symmetric elliptic integral of the second kind,
@@ -184,10 +194,9 @@ StressPeak<T> LineContactMaxOrthogonalShear(const T& p0, const T& b) {
 /// z/b in (0, 2], evaluated in T there (value ∝ p0, depth ∝ b). ν = 0.3: 0.5575 p0 at 0.7043 b.
 template <typename T>
 StressPeak<T> LineContactMaxVonMises(const T& p0, const T& b, double nu) {
-  const auto vm = [nu](double z) { return subsurface_internal::VonMises(LineContactAxisStresses(1.0, 1.0, z, nu)); };
-  const double zeta = subsurface_internal::ArgMax(vm, 1e-6, 2.0);
-  const T z = b * zeta;
-  return {subsurface_internal::VonMises(LineContactAxisStresses(p0, b, z, nu)), z, T(0.0)};
+  return subsurface_internal::AxisPeak(
+      p0, b, [nu](const auto& p, const auto& s, const auto& z) { return LineContactAxisStresses(p, s, z, nu); },
+      [](const auto& s) { return subsurface_internal::VonMises(s); });
 }
 
 /// The three subsurface maxima of a line contact that a fatigue check compares: the largest
@@ -250,10 +259,9 @@ AxisStresses<T> EllipticalContactAxisStresses(const T& p0, const T& a, const T& 
 /// z/a in (0, 2], evaluated in T there (value ∝ p0, depth ∝ a). Johnson (1985): 0.31 p0 at 0.48 a (ν 0.3).
 template <typename T>
 StressPeak<T> CircularContactMaxPrincipalShear(const T& p0, const T& a, double nu) {
-  const auto tau = [nu](double z) { return subsurface_internal::MaxShear(CircularContactAxisStresses(1.0, 1.0, z, nu)); };
-  const double zeta = subsurface_internal::ArgMax(tau, 1e-6, 2.0);
-  const T z = a * zeta;
-  return {subsurface_internal::MaxShear(CircularContactAxisStresses(p0, a, z, nu)), z, T(0.0)};
+  return subsurface_internal::AxisPeak(
+      p0, a, [nu](const auto& p, const auto& s, const auto& z) { return CircularContactAxisStresses(p, s, z, nu); },
+      [](const auto& s) { return subsurface_internal::MaxShear(s); });
 }
 
 namespace subsurface_internal {
@@ -289,6 +297,15 @@ inline double CheckedAxisRatio(double a, double b) {
   return ratio;
 }
 
+/// The largest `measure` of the axis stresses on the z axis of an elliptical contact (a ≥ b): the
+/// maximiser of z/b in double (EllipticalAxisArgMax), the stress there in T.
+template <typename T, typename Measure>
+StressPeak<T> EllipticalAxisPeak(const T& p0, const T& a, const T& b, double nu, Measure measure) {
+  const double zeta = EllipticalAxisArgMax(measure, CheckedAxisRatio(Value(a), Value(b)), nu);
+  const T z = b * zeta;
+  return {measure(EllipticalContactAxisStresses(p0, a, b, z, nu)), z, T(0.0)};
+}
+
 }  // namespace subsurface_internal
 
 /// Elliptical contact (a ≥ b), the largest principal shear on the z axis (the largest half
@@ -298,11 +315,7 @@ inline double CheckedAxisRatio(double a, double b) {
 /// is not carried (the maximiser is a double).
 template <typename T>
 StressPeak<T> EllipticalContactMaxPrincipalShear(const T& p0, const T& a, const T& b, double nu) {
-  const double ratio = subsurface_internal::CheckedAxisRatio(Value(a), Value(b));
-  const double zeta = subsurface_internal::EllipticalAxisArgMax(
-      [](const auto& s) { return subsurface_internal::MaxShear(s); }, ratio, nu);
-  const T z = b * zeta;
-  return {subsurface_internal::MaxShear(EllipticalContactAxisStresses(p0, a, b, z, nu)), z, T(0.0)};
+  return subsurface_internal::EllipticalAxisPeak(p0, a, b, nu, [](const auto& s) { return subsurface_internal::MaxShear(s); });
 }
 
 /// Elliptical contact (a ≥ b), the largest von Mises stress on the z axis (σ_x, σ_y, σ_z are the
@@ -311,11 +324,7 @@ StressPeak<T> EllipticalContactMaxPrincipalShear(const T& p0, const T& a, const 
 /// contact's (LineContactMaxVonMises; ν 0.3: 0.5575 p0 at 0.7043 b).
 template <typename T>
 StressPeak<T> EllipticalContactMaxVonMises(const T& p0, const T& a, const T& b, double nu) {
-  const double ratio = subsurface_internal::CheckedAxisRatio(Value(a), Value(b));
-  const double zeta = subsurface_internal::EllipticalAxisArgMax(
-      [](const auto& s) { return subsurface_internal::VonMises(s); }, ratio, nu);
-  const T z = b * zeta;
-  return {subsurface_internal::VonMises(EllipticalContactAxisStresses(p0, a, b, z, nu)), z, T(0.0)};
+  return subsurface_internal::EllipticalAxisPeak(p0, a, b, nu, [](const auto& s) { return subsurface_internal::VonMises(s); });
 }
 
 /// A maximum of a stress measure at a depth below the surface, its position along the surface not

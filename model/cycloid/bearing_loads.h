@@ -300,15 +300,8 @@ struct BearingLineSamples {
   std::vector<double> load_N, weight;
 };
 
-/// A bearing's life over a duty cycle (docs/life.md, "Cycloid").
-struct BearingLifeOverCycle {
-  double revolutions_per_input_revolution = 0.0;  ///< R
-  std::vector<double> line_equivalent_load_N;     ///< P_i, revolution-weighted p-mean of line i
-  double equivalent_load_N = 0.0;                 ///< P = (Σ t_i n_i P_i^p / Σ t_i n_i)^(1/p)
-  double max_load_N = 0.0;                        ///< over every line (stationary ones included)
-  double mean_speed_rpm = 0.0;                    ///< the bearing's: R Σ t_i n_i
-  double L10_Mrev = 0.0, L10h = 0.0;              ///< ISO 281 over the duty cycle (Palmgren–Miner)
-};
+/// A bearing's life over a duty cycle (docs/life.md, "Cycloid"): model/common/bearing_life.h's.
+using camopt::BearingLifeOverCycle;
 
 /// P_i of each line (EquivalentLoad with the weights), then Palmgren–Miner over the lines at the
 /// bearing's speeds n_i R: 1/L10h = Σ t_i 60 n_i R (P_i/C)^p / 10⁶ (DutyCycleLifeHours on one-sample
@@ -319,17 +312,14 @@ inline BearingLifeOverCycle LifeOverDutyCycle(double dynamic_rating_N, BearingKi
                                               const std::vector<BearingLineSamples>& lines) {
   BearingLifeOverCycle out;
   out.revolutions_per_input_revolution = revolutions_per_input_revolution;
-  std::vector<DutyCycleLine<double>> miner;
+  std::vector<double> shares, speeds;
   for (const BearingLineSamples& l : lines) {
-    const double p = EquivalentLoad(l.load_N, l.weight, kind);
-    out.line_equivalent_load_N.push_back(p);
+    out.line_equivalent_load_N.push_back(EquivalentLoad(l.load_N, l.weight, kind));
     out.max_load_N = std::max(out.max_load_N, *std::max_element(l.load_N.begin(), l.load_N.end()));
-    miner.push_back({l.time_share, l.input_speed_rpm * revolutions_per_input_revolution, {p}});
+    shares.push_back(l.time_share);
+    speeds.push_back(l.input_speed_rpm);
   }
-  out.mean_speed_rpm = DutyCycleMeanSpeed(miner);
-  out.equivalent_load_N = DutyCycleEquivalentLoad(miner, kind);
-  out.L10_Mrev = BasicRatingLifeMrev(dynamic_rating_N, out.equivalent_load_N, kind);
-  out.L10h = DutyCycleLifeHours(dynamic_rating_N, miner, kind);
+  CombineDutyCycleLines(dynamic_rating_N, kind, shares, speeds, out);
   return out;
 }
 

@@ -137,39 +137,30 @@ TransmissionErrorResult AnalyzeTransmissionError(const Drive& d, const OutputPin
   }
   res.backlash_nominal_arcmin =
       *std::max_element(res.nominal_backlash_rad.begin(), res.nominal_backlash_rad.end()) * kArcsecPerRad / 60;
-  std::vector<double> band;
-  std::vector<int> key;
-  for (const ToleranceParameter& p : params) band.push_back(p.band), key.push_back(p.key);
-  tolerance::LinearStatistics(s, band, key, ToleranceKeys(), res);
+  tolerance::LinearStatisticsOf(s, params, ToleranceKeys(), res);
 
   // Monte-Carlo with the exact model, both flanks (the backlash).
-  tolerance::MonteCarloStatistics mc;
-  std::vector<double> backlash;
-  std::uint64_t state = o.seed;
-  std::vector<double> values;
-  for (int m = 0; m < o.samples; ++m) {
-    const Deviations<double> dev = SampleDeviations(d, pins, params, state, &values);
-    std::vector<double> te(na), lin(na);
-    double worst_backlash = -kInf;
-    bool jammed = false;
-    for (size_t i = 0; i < na; ++i) {
-      const double phi = res.crank_angle_rad[i];
-      const OutputLag<double> fwd = KinematicLag<double>(d, pins, dev, phi, 1);
-      const OutputLag<double> rev = KinematicLag<double>(d, pins, dev, phi, -1);
-      if (fwd.pair < 0 || rev.pair < 0 || (pins && (fwd.pin < 0 || rev.pin < 0)))
-        throw std::domain_error("cycloid tolerance: a sample leaves no pair or pin in contact at crank angle " +
-                                std::to_string(phi * 180 / kPi) + " deg");
-      te[i] = fwd.total_rad - res.nominal_lag_rad[i];
-      for (size_t p = 0; p < params.size(); ++p) lin[i] += s[i][p] * values[p];
-      worst_backlash = std::max(worst_backlash, fwd.total_rad - rev.total_rad);
-      jammed = jammed || fwd.ring_rad < rev.ring_rad || fwd.pins_rad < rev.pins_rad;
-    }
-    res.jammed_samples += jammed;
-    mc.Add(te, lin);
-    backlash.push_back(worst_backlash);
-    if (o.progress) o.progress(double(m + 1) / o.samples);
-  }
-  mc.Finish(res);
+  const std::vector<double> backlash = tolerance::RunMonteCarlo(
+      o.samples, o.seed, s,
+      [&](std::uint64_t& state, std::vector<double>* values) { return SampleDeviations(d, pins, params, state, values); },
+      [&](const Deviations<double>& dev, std::vector<double>& te) {
+        double worst_backlash = -kInf;
+        bool jammed = false;
+        for (size_t i = 0; i < na; ++i) {
+          const double phi = res.crank_angle_rad[i];
+          const OutputLag<double> fwd = KinematicLag<double>(d, pins, dev, phi, 1);
+          const OutputLag<double> rev = KinematicLag<double>(d, pins, dev, phi, -1);
+          if (fwd.pair < 0 || rev.pair < 0 || (pins && (fwd.pin < 0 || rev.pin < 0)))
+            throw std::domain_error("cycloid tolerance: a sample leaves no pair or pin in contact at crank angle " +
+                                    std::to_string(phi * 180 / kPi) + " deg");
+          te[i] = fwd.total_rad - res.nominal_lag_rad[i];
+          worst_backlash = std::max(worst_backlash, fwd.total_rad - rev.total_rad);
+          jammed = jammed || fwd.ring_rad < rev.ring_rad || fwd.pins_rad < rev.pins_rad;
+        }
+        res.jammed_samples += jammed;
+        return worst_backlash;
+      },
+      o.progress, res);
   if (o.samples > 0) {
     res.backlash_arcmin = *std::max_element(backlash.begin(), backlash.end()) * kArcsecPerRad / 60;
     res.backlash_p99_arcmin = tolerance::Percentile(backlash, 0.99) * kArcsecPerRad / 60;

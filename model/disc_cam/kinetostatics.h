@@ -82,6 +82,25 @@ CamLoad<T> CamLoadAt(const CamPoint<T>& p, const FollowerLoads& f, const T& omeg
   return out;
 }
 
+namespace kinetostatics_internal {
+
+/// The closed-form jump speed of a follower whose contact force (or moment) at a point is
+/// hold(p) − ω² pull(p): √(min over the points with pull > 0 of hold/pull); 0 when hold is not
+/// positive somewhere, +infinity when pull > 0 nowhere.
+template <typename Point, typename Hold, typename Pull>
+double FirstZeroSpeed(const std::vector<Point>& points, const Hold& hold, const Pull& pull) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Point& p : points) {
+    const double h = hold(p);
+    if (!(h > 0.0)) return 0.0;
+    const double q = pull(p);
+    if (q > 0.0) best = std::min(best, h / q);
+  }
+  return std::sqrt(best);
+}
+
+}  // namespace kinetostatics_internal
+
 /// The speed [rad/s] at which the contact force first reaches zero, from the closed form
 /// ω² = min over the points with S'' < 0 of (k S + F₀ + P + W)/(−m S''): 0 when the static force
 /// is not positive somewhere (the follower leaves the cam at rest), +infinity when no point
@@ -90,14 +109,9 @@ CamLoad<T> CamLoadAt(const CamPoint<T>& p, const FollowerLoads& f, const T& omeg
 /// Any point with the follower's S and S'' (a roller's CamPoint, a flat face's FlatFacePoint).
 template <typename Point>
 double JumpSpeedOver(const std::vector<Point>& points, const FollowerLoads& f) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Point& p : points) {
-    const double stat = FollowerStaticForce(f, p.s);
-    if (!(stat > 0.0)) return 0.0;
-    const double inertia_per_omega2 = f.mass_kg * p.d2s * 1e-3;  // N per (rad/s)²
-    if (inertia_per_omega2 < 0.0) best = std::min(best, stat / -inertia_per_omega2);
-  }
-  return std::sqrt(best);
+  return kinetostatics_internal::FirstZeroSpeed(
+      points, [&f](const Point& p) { return FollowerStaticForce(f, p.s); },
+      [&f](const Point& p) { return -(f.mass_kg * p.d2s * 1e-3); });  // N per (rad/s)², away from the cam
 }
 inline double JumpSpeed(const std::vector<CamPoint<double>>& points, const FollowerLoads& f) {
   return JumpSpeedOver(points, f);
@@ -184,14 +198,9 @@ ArmCamLoad<T> OscillatingRollerLoadAt(const CamPoint<T>& p, const ArmLoads& a, c
 /// [rad] (a CamPoint of an oscillating roller).
 template <typename Point>
 double ArmJumpSpeedOver(const std::vector<Point>& points, const ArmLoads& a) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Point& p : points) {
-    const double hold = ArmMoment(a, p.s, 0.0, 0.0);
-    if (!(hold > 0.0)) return 0.0;
-    const double pull = -a.inertia_kg_m2 * p.d2s;  // per (rad/s)², away from the cam
-    if (pull > 0.0) best = std::min(best, hold / pull);
-  }
-  return std::sqrt(best);
+  return kinetostatics_internal::FirstZeroSpeed(
+      points, [&a](const Point& p) { return ArmMoment(a, p.s, 0.0, 0.0); },
+      [&a](const Point& p) { return -a.inertia_kg_m2 * p.d2s; });  // per (rad/s)², away from the cam
 }
 
 /// The arm's spring that keeps contact at every speed up to omega [rad/s], as RequiredSpringOver

@@ -158,15 +158,9 @@ inline BearingLoadSamples SampleBearingLoad(const Reducer<double>& r, const Mate
 /// One line of a duty cycle in model units: output torque, input speed, time share.
 using LcrDutyLine = OperatingLine;
 
-/// A bearing's life over a duty cycle (docs/life.md, "LCR").
-struct LcrBearingLife {
-  double revolutions_per_input_revolution = 0.0;  ///< R, the mean spin rate over the load period
-  std::vector<double> line_equivalent_load_N;     ///< P_i, revolution-weighted over the load period
-  double equivalent_load_N = 0.0;                 ///< P of the duty cycle (DutyCycleEquivalentLoad)
-  double mean_speed_rpm = 0.0;                    ///< Σ t_i n_i R
-  double L10_Mrev = 0.0, L10h = 0.0;              ///< +∞ without load
-  double max_load_N = 0.0;                        ///< the largest load of any line (for s0)
-};
+/// A bearing's life over a duty cycle (docs/life.md, "LCR"); R is the mean spin rate over the
+/// load period.
+using LcrBearingLife = BearingLifeOverCycle;
 
 /// The life of one bearing of r over the duty cycle: per line one force analysis per sample at the
 /// line's torque over the bearing's load period (SampleBearingLoad), the revolution-weighted
@@ -188,14 +182,9 @@ inline LcrBearingLife BearingLifeOverDutyCycle(const Reducer<double>& r, const M
     for (double w : x.spin_rate) spin += w;
     out.revolutions_per_input_revolution = spin / double(x.spin_rate.size());  // kinematic: every line alike
   }
-  std::vector<DutyCycleLine<double>> d;
-  for (size_t i = 0; i < lines.size(); ++i)
-    d.push_back({lines[i].time_share, lines[i].input_speed_rpm * out.revolutions_per_input_revolution,
-                 {out.line_equivalent_load_N[i]}});
-  out.mean_speed_rpm = DutyCycleMeanSpeed(d);
-  out.equivalent_load_N = DutyCycleEquivalentLoad(d, kind);
-  out.L10_Mrev = BasicRatingLifeMrev(dynamic_rating_N, out.equivalent_load_N, kind);
-  out.L10h = DutyCycleLifeHours(dynamic_rating_N, d, kind);
+  std::vector<double> shares, speeds;
+  for (const LcrDutyLine& line : lines) shares.push_back(line.time_share), speeds.push_back(line.input_speed_rpm);
+  CombineDutyCycleLines(dynamic_rating_N, kind, shares, speeds, out);
   return out;
 }
 

@@ -151,33 +151,25 @@ TransmissionErrorResult AnalyzeTransmissionError(const Reducer<double>& r, const
 
   // Linear model (model/common/tolerance_stats.h): uniform deviations, E[t²] = band²/3 (the
   // clearance, uniform on 0 … c, too); the worst case of the separable linear peak-to-peak.
-  std::vector<double> band;
-  std::vector<int> key;
-  for (const ToleranceParameter& p : params) band.push_back(p.band), key.push_back(p.key);
-  tolerance::LinearStatistics(s, band, key, ToleranceKeys(), res);
+  tolerance::LinearStatisticsOf(s, params, ToleranceKeys(), res);
 
   // Monte-Carlo with the exact model.
-  tolerance::MonteCarloStatistics mc;
-  std::vector<double> lm;
-  std::uint64_t state = o.seed;
-  std::vector<double> values;
-  for (int m = 0; m < o.samples; ++m) {
-    const Deviations<double> dev = SampleDeviations(r, params, state, &values);
-    std::vector<double> te(na), lin(na);
-    double lm_max = -kInf;
-    for (int i = 0; i < na; ++i) {
-      const double th = res.theta_rad[i];
-      te[i] = CompliantAtAngle<double>(r, material, th, torque, &dev, dir[i]).output_rotation - res.nominal_rotation_rad[i];
-      for (size_t p = 0; p < np; ++p) lin[i] += s[i][p] * values[p];
-      if (torque_lm != 0.0)
-        lm_max = std::max(lm_max, sense * (CompliantAtAngle<double>(r, material, th, torque_lm, &dev, dir[i]).output_rotation -
-                                           CompliantAtAngle<double>(r, material, th, -torque_lm, &dev, dir[i]).output_rotation));
-    }
-    mc.Add(te, lin);
-    lm.push_back(lm_max);
-    if (o.progress) o.progress(double(m + 1) / o.samples);
-  }
-  mc.Finish(res);
+  const std::vector<double> lm = tolerance::RunMonteCarlo(
+      o.samples, o.seed, s,
+      [&](std::uint64_t& state, std::vector<double>* values) { return SampleDeviations(r, params, state, values); },
+      [&](const Deviations<double>& dev, std::vector<double>& te) {
+        double lm_max = -kInf;
+        for (int i = 0; i < na; ++i) {
+          const double th = res.theta_rad[i];
+          te[i] = CompliantAtAngle<double>(r, material, th, torque, &dev, dir[i]).output_rotation -
+                  res.nominal_rotation_rad[i];
+          if (torque_lm != 0.0)
+            lm_max = std::max(lm_max, sense * (CompliantAtAngle<double>(r, material, th, torque_lm, &dev, dir[i]).output_rotation -
+                                               CompliantAtAngle<double>(r, material, th, -torque_lm, &dev, dir[i]).output_rotation));
+        }
+        return lm_max;
+      },
+      o.progress, res);
   if (o.samples > 0) {
     if (torque_lm != 0.0) {
       res.lost_motion_arcmin = *std::max_element(lm.begin(), lm.end()) * kArcsecPerRad / 60;
