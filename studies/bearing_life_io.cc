@@ -108,40 +108,36 @@ nlohmann::ordered_json ModifiedLifeSchemaRules(const std::vector<std::vector<std
   return ojson::array({{{"if", {{"anyOf", any}}}, {"then", ec}}, {{"if", ec}, {"then", {{"anyOf", any}}}}});
 }
 
-double AddModifiedLife(nlohmann::json& row, BearingKind kind, const ModifiedLifeRating& rating,
+double AddModifiedLife(LifeTableRow& row, BearingKind kind, const ModifiedLifeRating& rating,
                        const ModifiedLifeOil& oil, double mean_speed_rpm, double equivalent_load_N, double L10h) {
-  auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  row["mean_speed_rpm"] = mean_speed_rpm;
-  row["pitch_diameter_mm"] = rating.pitch_diameter_mm;
-  row["fatigue_load_limit_N"] = rating.fatigue_load_limit_N;
-  row["contamination_factor"] = oil.contamination_factor;
-  row["oil_temperature_C"] = finite(oil.temperature_C);
-  row["viscosity_mm2_s"] = finite(oil.viscosity_mm2_s);
-  row["reference_viscosity_mm2_s"] = nullptr;
-  row["kappa"] = nullptr;
-  row["a_ISO"] = nullptr;
-  row["L_nm_h"] = nullptr;
+  row.mean_speed_rpm = mean_speed_rpm;
+  row.pitch_diameter_mm = rating.pitch_diameter_mm;
+  row.fatigue_load_limit_N = rating.fatigue_load_limit_N;
+  row.contamination_factor = oil.contamination_factor;
+  row.oil_temperature_C = oil.temperature_C;
+  row.viscosity_mm2_s = oil.viscosity_mm2_s;
+  row.reference_viscosity_mm2_s = row.kappa = row.a_ISO = row.L_nm_h = NAN;  // null until computed
   if (!oil.missing.empty()) {
-    row["a_ISO_note"] = "not computed: no oil temperature (" + oil.missing + ")";
+    row.a_ISO_note = "not computed: no oil temperature (" + oil.missing + ")";
     return NAN;
   }
   if (!(mean_speed_rpm > 0)) {
-    row["a_ISO_note"] = "not computed: the bearing does not turn (no reference viscosity nu1 at n = 0)";
+    row.a_ISO_note = "not computed: the bearing does not turn (no reference viscosity nu1 at n = 0)";
     return NAN;
   }
   const double nu1 = ReferenceViscosity(mean_speed_rpm, rating.pitch_diameter_mm);
   const double kappa = oil.viscosity_mm2_s / nu1;
-  row["reference_viscosity_mm2_s"] = nu1;
-  row["kappa"] = kappa;
+  row.reference_viscosity_mm2_s = nu1;
+  row.kappa = kappa;
   // An unloaded bearing (P = 0) has e_C C_u / P = +inf: a_ISO is its cap.
   const double x = equivalent_load_N > 0 ? oil.contamination_factor * rating.fatigue_load_limit_N / equivalent_load_N
                                          : kInf;
   const LifeModification m = LifeModificationFactor(kind, kappa, x);
-  if (!m.note.empty()) row["a_ISO_note"] = m.note;
+  if (!m.note.empty()) row.a_ISO_note = m.note;
   if (!m.computed) return NAN;
   const double l_nm = m.a_iso * L10h;  // a1 = 1 (90 % reliability)
-  row["a_ISO"] = m.a_iso;
-  row["L_nm_h"] = finite(l_nm);
+  row.a_ISO = m.a_iso;
+  row.L_nm_h = l_nm;
   return l_nm;
 }
 
@@ -162,24 +158,34 @@ nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines) {
   return out;
 }
 
-nlohmann::json LifeTableRow(const std::string& element, bool ball, double equivalent_load_N, double max_load_N,
-                            double revolutions_per_input_revolution, double dynamic_rating_N,
-                            double static_rating_N, double s0, double L10h, double life_h) {
-  auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  nlohmann::json e;
-  e["element"] = element;
-  e["kind"] = ball ? "ball" : "roller";
-  e["equivalent_load_N"] = equivalent_load_N;
-  e["max_load_N"] = max_load_N;
-  e["revolutions_per_input_revolution"] = revolutions_per_input_revolution;
-  e["dynamic_rating_N"] = dynamic_rating_N;
-  e["L10h"] = finite(L10h);
+LifeTableRow BearingLifeRow(const std::string& element, bool ball, double equivalent_load_N, double max_load_N,
+                            double revolutions_per_input_revolution, double dynamic_rating_N, double static_rating_N,
+                            double s0, double L10h, double life_h) {
+  LifeTableRow e;
+  e.element = element;
+  e.kind = ball ? "ball" : "roller";
+  e.equivalent_load_N = equivalent_load_N;
+  e.max_load_N = max_load_N;
+  e.revolutions_per_input_revolution = revolutions_per_input_revolution;
+  e.dynamic_rating_N = dynamic_rating_N;
+  e.L10h = L10h;
   if (static_rating_N > 0) {
-    e["static_rating_N"] = static_rating_N;
-    e["s0"] = finite(s0);
+    e.static_rating_N = static_rating_N;
+    e.s0 = s0;
   }
-  e["pass"] = life_h > 0 ? nlohmann::json(L10h >= life_h) : nlohmann::json(nullptr);
+  if (life_h > 0) e.pass = L10h >= life_h;
   return e;
+}
+
+nlohmann::json LifeRowJson(const LifeTableRow& row) {
+  return nlohmann::json(ResultWriter::Value(row, Field(), "/life/table"));
+}
+
+nlohmann::ordered_json LifeTableSchema() {
+  LifeTableRow row;
+  nlohmann::ordered_json items = nlohmann::ordered_json::object();
+  ResultSchemaEmitter::Describe(&row, Field(), items);
+  return {{"type", "array"}, {"items", items}, {"description", "report.html's and datasheet.html's rows"}};
 }
 
 }  // namespace camopt::studies

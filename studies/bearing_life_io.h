@@ -197,13 +197,79 @@ struct ModifiedLifeOil {
   std::string missing;  ///< non-empty: no oil temperature, a_ISO not computed
 };
 
+/// One row of a life table (docs/life.md; result.json's `life.table` of every kind with lives,
+/// report.html's and datasheet.html's life rows): a rated bearing, a roller rated by slices, or a
+/// cam contact, with its modified life when asked. Every number that is not finite is null (an
+/// unloaded bearing's life, a modified life not computed).
+struct LifeTableRow {
+  std::string element, kind;
+  std::optional<double> equivalent_load_N, max_load_N, revolutions_per_input_revolution, dynamic_rating_N;
+  double L10h = 0;
+  std::optional<bool> pass;
+  std::optional<double> static_rating_N, s0;
+  std::optional<std::vector<double>> line_equivalent_load_N;
+  std::optional<double> mean_speed_rpm, L10_Mrev;
+  // The modified life (AddModifiedLife).
+  std::optional<double> pitch_diameter_mm, fatigue_load_limit_N, contamination_factor, oil_temperature_C,
+      viscosity_mm2_s, reference_viscosity_mm2_s, kappa, a_ISO, L_nm_h;
+  std::optional<std::string> a_ISO_note;
+  // A cam contact's surface life (lcr_analysis with material.contact_fatigue).
+  std::optional<double> equivalent_pressure_MPa, max_pressure_MPa, contacts_per_input_revolution,
+      reference_pressure_MPa;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field number = Field().NullWhenNotFinite();
+    a->Visit("element", &element, Field().Desc("the bearing or contact (with _sliced: its roller rated by slices)"));
+    a->Visit("kind", &kind, Field().Desc("ball, roller, roller sliced (ISO/TS 16281) or cam contact"));
+    a->Visit("equivalent_load_N", &equivalent_load_N, Field(number).Unit("N").Desc("P over the duty cycle"));
+    a->Visit("max_load_N", &max_load_N, Field(number).Unit("N").Desc("the largest load of any line"));
+    a->Visit("revolutions_per_input_revolution", &revolutions_per_input_revolution, Field(number));
+    a->Visit("dynamic_rating_N", &dynamic_rating_N, Field(number).Unit("N").Desc("C"));
+    a->Visit("L10h", &L10h, Field(number).Unit("h").Desc("null: unlimited"));
+    a->Visit("pass", &pass, Field().NullWhenAbsent().Desc("L10h against limits.life_h (null: no life limit)"));
+    a->Visit("static_rating_N", &static_rating_N, Field(number).Unit("N").Desc("C0, when given"));
+    a->Visit("s0", &s0, Field(number).Desc("static safety C0 / largest load, with a static rating (null: no load)"));
+    a->Visit("line_equivalent_load_N", &line_equivalent_load_N, Field(number).Unit("N").Desc("P_i of each line"));
+    a->Visit("mean_speed_rpm", &mean_speed_rpm, Field(number).Unit("rpm").Desc("the bearing's"));
+    a->Visit("L10_Mrev", &L10_Mrev, Field(number).Unit("Mrev"));
+    a->Visit("pitch_diameter_mm", &pitch_diameter_mm, Field(number).Unit("mm").Desc("D_pw (modified life)"));
+    a->Visit("fatigue_load_limit_N", &fatigue_load_limit_N, Field(number).Unit("N").Desc("C_u (modified life)"));
+    a->Visit("contamination_factor", &contamination_factor, Field(number).Desc("e_C (modified life)"));
+    a->Visit("oil_temperature_C", &oil_temperature_C, Field(number).Unit("°C").Desc("null: none"));
+    a->Visit("viscosity_mm2_s", &viscosity_mm2_s, Field(number).Unit("mm²/s").Desc("ν at the oil temperature"));
+    a->Visit("reference_viscosity_mm2_s", &reference_viscosity_mm2_s,
+             Field(number).Unit("mm²/s").Desc("ν1 at the mean speed (null: not computed)"));
+    a->Visit("kappa", &kappa, Field(number).Desc("ν/ν1 (null: not computed)"));
+    a->Visit("a_ISO", &a_ISO, Field(number).Desc("the life modification factor (null: not computed)"));
+    a->Visit("L_nm_h", &L_nm_h, Field(number).Unit("h").Desc("the modified life a1 a_ISO L10h (null: not computed)"));
+    a->Visit("a_ISO_note", &a_ISO_note, Field().Desc("why a_ISO is not computed or capped"));
+    a->Visit("equivalent_pressure_MPa", &equivalent_pressure_MPa, Field(number).Unit("MPa").Desc("a cam contact's"));
+    a->Visit("max_pressure_MPa", &max_pressure_MPa, Field(number).Unit("MPa").Desc("a cam contact's peak"));
+    a->Visit("contacts_per_input_revolution", &contacts_per_input_revolution, Field(number));
+    a->Visit("reference_pressure_MPa", &reference_pressure_MPa, Field(number).Unit("MPa"));
+  }
+};
+
+/// A bearing's row: element, kind, equivalent_load_N, max_load_N, revolutions_per_input_revolution,
+/// dynamic_rating_N, L10h, static_rating_N and s0 = C0/P0max when C0 is given, pass against
+/// `life_h` (null when no limit, life_h <= 0).
+LifeTableRow BearingLifeRow(const std::string& element, bool ball, double equivalent_load_N, double max_load_N,
+                            double revolutions_per_input_revolution, double dynamic_rating_N, double static_rating_N,
+                            double s0, double L10h, double life_h);
+
+/// A row as result.json's raw life blocks hold it.
+nlohmann::json LifeRowJson(const LifeTableRow& row);
+
+/// The JSON Schema of a life table (an array of LifeTableRow), for the raw life blocks' schemas.
+nlohmann::ordered_json LifeTableSchema();
+
 /// Adds the modified life L_nm = a1 a_ISO L10 (ISO 281:2007 §9.3, a1 = 1;
 /// model/common/life_modification.h) to a bearing's life-table row: mean_speed_rpm,
 /// pitch_diameter_mm, fatigue_load_limit_N, contamination_factor, oil_temperature_C,
 /// viscosity_mm2_s, reference_viscosity_mm2_s (ν1 at the bearing's mean speed), kappa = ν/ν1,
 /// a_ISO and L_nm_h (null when not computed, with a_ISO_note saying why; L_nm_h null when infinite).
 /// @return L_nm_h; NaN when a_ISO is not computed.
-double AddModifiedLife(nlohmann::json& row, BearingKind kind, const ModifiedLifeRating& rating,
+double AddModifiedLife(LifeTableRow& row, BearingKind kind, const ModifiedLifeRating& rating,
                        const ModifiedLifeOil& oil, double mean_speed_rpm, double equivalent_load_N, double L10h);
 
 /// What the life block's "model" string says of the modified life: that it is not modelled (no
@@ -212,12 +278,5 @@ std::string ModifiedLifeModelText(bool computed);
 
 /// The duty cycle's echo: [{output_torque_Nm, input_speed_rpm, time_share}, …].
 nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines);
-
-/// One row of a life table (docs/life.md): element, kind, equivalent_load_N, max_load_N,
-/// revolutions_per_input_revolution, dynamic_rating_N, L10h (null when infinite), static_rating_N
-/// and s0 = C0/P0max when C0 is given, pass against `life_h` (null when no limit, life_h <= 0).
-nlohmann::json LifeTableRow(const std::string& element, bool ball, double equivalent_load_N, double max_load_N,
-                            double revolutions_per_input_revolution, double dynamic_rating_N,
-                            double static_rating_N, double s0, double L10h, double life_h);
 
 }  // namespace camopt::studies

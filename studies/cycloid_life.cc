@@ -67,17 +67,18 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
   std::string shortest_nm;
   for (const ElementLife& e : l.elements) {
     lj[e.name + "_L10h"] = finite(e.life.L10h);
-    table.push_back(LifeTableRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
-                                 e.life.max_load_N, e.life.revolutions_per_input_revolution, e.rating.dynamic_N,
-                                 e.rating.static_N, e.s0, e.life.L10h, 0.0));
-    table.back()["line_equivalent_load_N"] = e.life.line_equivalent_load_N;
-    table.back()["mean_speed_rpm"] = e.life.mean_speed_rpm;
-    table.back()["L10_Mrev"] = finite(e.life.L10_Mrev);
+    LifeTableRow row = BearingLifeRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
+                                      e.life.max_load_N, e.life.revolutions_per_input_revolution, e.rating.dynamic_N,
+                                      e.rating.static_N, e.s0, e.life.L10h, 0.0);
+    row.line_equivalent_load_N = e.life.line_equivalent_load_N;
+    row.mean_speed_rpm = e.life.mean_speed_rpm;
+    row.L10_Mrev = e.life.L10_Mrev;
     if (l.oil && e.rating.modified) {
-      const double l_nm = AddModifiedLife(table.back(), e.rating.kind, *e.rating.modified, *l.oil,
-                                          e.life.mean_speed_rpm, e.life.equivalent_load_N, e.life.L10h);
+      const double l_nm = AddModifiedLife(row, e.rating.kind, *e.rating.modified, *l.oil, e.life.mean_speed_rpm,
+                                          e.life.equivalent_load_N, e.life.L10h);
       if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = e.name;
     }
+    table.push_back(LifeRowJson(row));
   }
   lj["table"] = table;
   if (l.oil) {
@@ -108,7 +109,7 @@ nlohmann::ordered_json LifeJsonSchema() {
   p["shortest_L10h"] = hours;
   p["shortest_bearing"] = {{"type", "string"}};
   for (const char* element : {"crank_bearing_L10h", "pins_L10h", "eccentric_bearing_L10h"}) p[element] = hours;
-  p["table"] = {{"type", "array"}, {"items", {{"type", "object"}}}, {"description", "report.html's rows"}};
+  p["table"] = LifeTableSchema();
   p["shortest_L_nm_h"] = hours;
   p["shortest_L_nm_bearing"] = {{"type", {"string", "null"}}};
   p["duty_cycle"] = {{"type", "array"}};

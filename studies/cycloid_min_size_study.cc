@@ -1084,10 +1084,11 @@ nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const siz
   for (const sizing::CycloidBearingLife& b : acc.lives) {
     lj[b.name + "_L10h"] = finite(b.life.L10h);
     if (shortest.empty() || b.life.L10h < least) shortest = b.name, least = b.life.L10h;
-    table.push_back(LifeTableRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
-                                 b.life.revolutions_per_input_revolution, b.dynamic_N, b.static_N, b.s0, b.life.L10h,
-                                 limit));
-    table.back()["line_equivalent_load_N"] = b.life.line_equivalent_load_N;
+    LifeTableRow row = BearingLifeRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
+                                      b.life.revolutions_per_input_revolution, b.dynamic_N, b.static_N, b.s0,
+                                      b.life.L10h, limit);
+    row.line_equivalent_load_N = b.life.line_equivalent_load_N;
+    table.push_back(LifeRowJson(row));
   }
   lj["shortest_bearing"] = shortest;
   lj["table"] = table;

@@ -1411,50 +1411,41 @@ nlohmann::json LifeJson(const Study& st, const LifeResult& l) {
   // One row per element, the same keys as lcr_min_size's best.life.table (report.html's life table).
   const double limit = st.life_limit_h;
   lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
-  auto pass = [limit](double h) { return limit > 0 ? nlohmann::json(h >= limit) : nlohmann::json(nullptr); };
   nlohmann::json table = nlohmann::json::array();
   double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
   std::string shortest_nm;
   for (const BearingLifeResult& b : l.bearings) {
-    nlohmann::json e;
-    e["element"] = b.name;
-    e["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
-    e["equivalent_load_N"] = b.equivalent_load_N;
-    e["max_load_N"] = b.max_load_N;
-    e["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
-    e["dynamic_rating_N"] = b.rating.dynamic_N;
-    e["L10h"] = finite(b.L10h);
-    if (b.rating.static_N > 0) {
-      e["static_rating_N"] = b.rating.static_N;
-      e["s0"] = finite(b.s0);
-    }
-    e["pass"] = pass(b.L10h);
+    LifeTableRow e = BearingLifeRow(b.name, b.rating.kind == BearingKind::kBall, b.equivalent_load_N, b.max_load_N,
+                                    b.revolutions_per_input_revolution, b.rating.dynamic_N, b.rating.static_N, b.s0,
+                                    b.L10h, limit);
     if (l.oil && b.rating.modified) {
       const double l_nm = AddModifiedLife(e, b.rating.kind, *b.rating.modified, *l.oil, b.mean_speed_rpm,
                                           b.equivalent_load_N, b.L10h);
       if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = b.name;
     }
-    table.push_back(e);
+    table.push_back(LifeRowJson(e));
     if (b.sliced) {
-      nlohmann::json es = e;
-      es["element"] = b.name + "_sliced";
-      es["kind"] = "roller, sliced (ISO/TS 16281)";
-      es["L10h"] = finite(b.sliced->L10h);
-      es["pass"] = pass(b.sliced->L10h);
-      table.push_back(es);
+      LifeTableRow es = e;
+      es.element = b.name + "_sliced";
+      es.kind = "roller, sliced (ISO/TS 16281)";
+      es.L10h = b.sliced->L10h;
+      if (limit > 0) es.pass = b.sliced->L10h >= limit;
+      table.push_back(LifeRowJson(es));
     }
   }
   for (const CamContactLifeResult& c : l.cam_contacts) {
     double peak = 0;
     for (double p : c.line_peak_pressure_MPa) peak = std::max(peak, p);
-    table.push_back({{"element", c.name},
-                     {"kind", "cam contact"},
-                     {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
-                     {"max_pressure_MPa", finite(peak)},
-                     {"contacts_per_input_revolution", c.passes_per_input_revolution},
-                     {"reference_pressure_MPa", st.contact_fatigue->reference_pressure_MPa},
-                     {"L10h", finite(c.L10h)},
-                     {"pass", pass(c.L10h)}});
+    LifeTableRow row;
+    row.element = c.name;
+    row.kind = "cam contact";
+    row.equivalent_pressure_MPa = c.equivalent_pressure_MPa;
+    row.max_pressure_MPa = peak;
+    row.contacts_per_input_revolution = c.passes_per_input_revolution;
+    row.reference_pressure_MPa = st.contact_fatigue->reference_pressure_MPa;
+    row.L10h = c.L10h;
+    if (limit > 0) row.pass = c.L10h >= limit;
+    table.push_back(LifeRowJson(row));
   }
   lj["table"] = table;
   if (l.oil) {
@@ -1569,22 +1560,7 @@ nlohmann::ordered_json Result::Json::LifeSchema() {
   p["model"] = {{"type", "string"}};
   p["contact_life"] = {{"type", "object"}, {"description", "with material.contact_fatigue"}};
   p["life_h"] = {{"type", {"number", "null"}}, {"description", "limits.life_h [h] (null: none)"}};
-  p["table"] = {{"type", "array"},
-                {"items",
-                 {{"type", "object"},
-                  {"properties",
-                   {{"element", {{"type", "string"}}},
-                    {"kind", {{"type", "string"}}},
-                    {"equivalent_load_N", {{"type", "number"}, {"description", "[N]"}}},
-                    {"equivalent_pressure_MPa", {{"type", "number"}, {"description", "[MPa]"}}},
-                    {"dynamic_rating_N", {{"type", "number"}, {"description", "[N]"}}},
-                    {"reference_pressure_MPa", {{"type", "number"}, {"description", "[MPa]"}}},
-                    {"static_rating_N", {{"type", "number"}, {"description", "[N]"}}},
-                    {"s0", {{"type", {"number", "null"}}}},
-                    {"L10h", hours},
-                    {"pass", {{"type", {"boolean", "null"}}}}}},
-                  {"required", {"element", "kind", "L10h", "pass"}}}},
-                {"description", "report.html's and datasheet.html's rows"}};
+  p["table"] = LifeTableSchema();
   p["shortest_L_nm_h"] = hours;
   p["shortest_L_nm_bearing"] = {{"type", {"string", "null"}}};
   return {{"type", "object"},

@@ -202,7 +202,7 @@ void FillResult(const Study& st, Result& res) {
     std::string shortest_name;
     auto row = [&](const std::string& element, const std::string& kind, const lcr::LcrBearingLife& b, double c,
                    double c0, double hours) {
-      Result::LifeRow e;
+      LifeTableRow e;
       e.element = element;
       e.kind = kind;
       e.equivalent_load_N = b.equivalent_load_N;

@@ -17,6 +17,7 @@
 #include "sizing/lcr_crowning_tuning.h"
 #include "objectives/verification.h"
 #include "studies/archive.h"
+#include "studies/bearing_life_io.h"
 #include "studies/input.h"
 #include "studies/lcr_input.h"
 #include "studies/material_input.h"
@@ -202,26 +203,6 @@ struct Result {
       a->Visit("half_space_grid", &half_space_grid, Field().Desc("the half_space check's cells [nx, ny]"));
     }
   };
-  struct LifeRow {
-    std::string element, kind;
-    double equivalent_load_N = 0, max_load_N = 0, revolutions_per_input_revolution = 0, dynamic_rating_N = 0;
-    double L10h = 0;
-    std::optional<bool> pass;  ///< always null: the tuning has no life limit
-    std::optional<double> static_rating_N, s0;
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("element", &element, Field());
-      a->Visit("kind", &kind, Field());
-      a->Visit("equivalent_load_N", &equivalent_load_N, Field().Unit("N"));
-      a->Visit("max_load_N", &max_load_N, Field().Unit("N"));
-      a->Visit("revolutions_per_input_revolution", &revolutions_per_input_revolution, Field());
-      a->Visit("dynamic_rating_N", &dynamic_rating_N, Field().Unit("N"));
-      a->Visit("L10h", &L10h, Field().NullWhenNotFinite().Unit("h").Desc("null: unlimited"));
-      a->Visit("pass", &pass, Field().NullWhenAbsent().Desc("null: no life limit in a tuning"));
-      a->Visit("static_rating_N", &static_rating_N, Field().Unit("N"));
-      a->Visit("s0", &s0, Field().NullWhenNotFinite().Desc("static safety, with a static rating (null: no load)"));
-    }
-  };
   struct SlicedRow {
     double misalignment_mrad = 0, input_roller_sliced_L10h = 0, output_roller_sliced_L10h = 0;
     template <typename Archive>
@@ -249,7 +230,7 @@ struct Result {
     std::vector<SlicedRow> sliced;
     std::vector<DutyLine> duty_cycle;
     std::optional<double> life_h;  ///< always null: the tuning has no life limit
-    std::vector<LifeRow> table;
+    std::vector<LifeTableRow> table;  ///< pass always null: no life limit in a tuning
     std::string model;
     template <typename Archive>
     void Serialize(Archive* a) {

@@ -164,9 +164,9 @@ nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives:
   lj["duty_cycle"] = DutyCycleJson(spec.life->lines);
   nlohmann::json table = nlohmann::json::array();
   for (const auto& b : k.life)
-    table.push_back(LifeTableRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
-                                 b.life.revolutions_per_input_revolution, b.dynamic_rating_N, b.static_rating_N,
-                                 b.s0, b.life.L10h, limit));
+    table.push_back(LifeRowJson(BearingLifeRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
+                                               b.life.revolutions_per_input_revolution, b.dynamic_rating_N,
+                                               b.static_rating_N, b.s0, b.life.L10h, limit)));
   lj["table"] = table;
   lj["rating_rule"] = spec.life->roller.reference_diameter_mm > 0
                           ? "roller C = C_ref (d/d_ref)^(29/27) (L/L_ref)^(7/9) (ISO 281:2007 6.1.1), C0 = C0_ref (d/d_ref)(L/L_ref) (ISO 76)"
