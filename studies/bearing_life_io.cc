@@ -149,13 +149,14 @@ std::string ModifiedLifeModelText(bool computed) {
          "kappa > 4 taken as 4, none below 0.1) and e_C C_u/P, at most 50 (docs/life.md)";
 }
 
-nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const OperatingLine& l : lines)
-    out.push_back({{"output_torque_Nm", l.output_torque_Nmm / 1000.0},
-                   {"input_speed_rpm", l.input_speed_rpm},
-                   {"time_share", l.time_share}});
+std::vector<DutyCycleEcho> DutyCycleEchoOf(const std::vector<OperatingLine>& lines) {
+  std::vector<DutyCycleEcho> out;
+  for (const OperatingLine& l : lines) out.push_back({l.output_torque_Nmm / 1000.0, l.input_speed_rpm, l.time_share});
   return out;
+}
+
+nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines) {
+  return nlohmann::json(ResultWriter::Value(DutyCycleEchoOf(lines), Field(), "/life/duty_cycle"));
 }
 
 LifeTableRow BearingLifeRow(const std::string& element, bool ball, double equivalent_load_N, double max_load_N,

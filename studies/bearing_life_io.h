@@ -276,7 +276,18 @@ double AddModifiedLife(LifeTableRow& row, BearingKind kind, const ModifiedLifeRa
 /// bearing gives C_u and D_pw) or how it is computed.
 std::string ModifiedLifeModelText(bool computed);
 
-/// The duty cycle's echo: [{output_torque_Nm, input_speed_rpm, time_share}, …].
+/// One line of a life block's duty cycle, as the study gave it.
+struct DutyCycleEcho {
+  double output_torque_Nm = 0, input_speed_rpm = 0, time_share = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m"));
+    a->Visit("input_speed_rpm", &input_speed_rpm, Field().Unit("rpm"));
+    a->Visit("time_share", &time_share, Field());
+  }
+};
+std::vector<DutyCycleEcho> DutyCycleEchoOf(const std::vector<OperatingLine>& lines);
+/// The duty cycle's echo as the raw life blocks hold it: [{output_torque_Nm, input_speed_rpm, time_share}, …].
 nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines);
 
 }  // namespace camopt::studies

@@ -628,9 +628,9 @@ void FillResult(const Study& s, Result& r) {
     }
   }
   if (r.life) {
-    r.life_json = cycloid_common::LifeJson(*s.life, *r.life);
-    (*r.life_json)["design"] = "the tuned design (tuned crowning and modifications) on the accurate model's grid and "
-                               "crank angles";
+    r.life_json = cycloid_common::LifeBlockOf(*s.life, *r.life);
+    r.life_json->design = "the tuned design (tuned crowning and modifications) on the accurate model's grid and "
+                          "crank angles";
   }
   r.verified = r.verification.verified();
   r.verification_block = VerificationBlock::Of(r.verification);

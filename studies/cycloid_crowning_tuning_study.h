@@ -310,7 +310,7 @@ struct Result {
   std::optional<double> softmax_temperature_MPa, tuned_smooth_max_contact_stress_MPa, tuned_lte_peak_to_peak_arcsec;
   std::optional<double> tuned_max_pair_load_N, tuned_min_unloaded_te_arcsec, min_unloaded_te_arcsec;
   std::optional<double> start_max_contact_stress_MPa, start_edge_margin_at_max_torque_um;
-  std::optional<nlohmann::json> life_json;  ///< result.json's life (cycloid_common::LifeJson)
+  std::optional<cycloid_common::LifeBlock> life_json;  ///< result.json's life
   bool verified = false;
   VerificationBlock verification_block;  ///< result.json's verification
   template <typename Archive>
@@ -352,7 +352,7 @@ struct Result {
     a->Visit("start_max_contact_stress_MPa", &start_max_contact_stress_MPa, Field().Unit("MPa"));
     a->Visit("start_edge_margin_at_max_torque_um", &start_edge_margin_at_max_torque_um, Field().Unit("µm"));
     a->Visit("life", &life_json,
-             Field().Desc("the tuned design's bearing lives, when asked").Schema(cycloid_common::LifeJsonSchema()));
+             Field().Desc("the tuned design's bearing lives, when asked"));
     a->Visit("verified", &verified, Field().Desc("the accurate model confirms the tuning (a view of `status`)"));
     a->Visit("verification", &verification_block, Field().Desc("the accurate model's checks"));
   }

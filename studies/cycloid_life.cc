@@ -57,16 +57,14 @@ LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const st
   return out;
 }
 
-nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json lj;
-  lj["shortest_L10h"] = finite(l.shortest_L10h);
-  lj["shortest_bearing"] = l.shortest;
-  nlohmann::json table = nlohmann::json::array();
+LifeBlock LifeBlockOf(const LifeSpec& spec, const LifeResult& l) {
+  LifeBlock lj;
+  lj.shortest_L10h = l.shortest_L10h;
+  lj.shortest_bearing = l.shortest;
   double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
   std::string shortest_nm;
   for (const ElementLife& e : l.elements) {
-    lj[e.name + "_L10h"] = finite(e.life.L10h);
+    (e.name == "pins" ? lj.pins_L10h.emplace() : lj.crank_bearing_L10h) = e.life.L10h;
     LifeTableRow row = BearingLifeRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
                                       e.life.max_load_N, e.life.revolutions_per_input_revolution, e.rating.dynamic_N,
                                       e.rating.static_N, e.s0, e.life.L10h, 0.0);
@@ -78,51 +76,28 @@ nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l) {
                                           e.life.equivalent_load_N, e.life.L10h);
       if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = e.name;
     }
-    table.push_back(LifeRowJson(row));
+    lj.table.push_back(std::move(row));
   }
-  lj["table"] = table;
   if (l.oil) {
-    lj["shortest_L_nm_h"] = shortest_nm.empty() ? nlohmann::json(nullptr) : finite(shortest_nm_h);
-    lj["shortest_L_nm_bearing"] = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+    lj.shortest_L_nm_h = shortest_nm.empty() ? NAN : shortest_nm_h;
+    lj.shortest_L_nm_bearing = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
   }
-  lj["duty_cycle"] = DutyCycleJson(spec.lines);
-  lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
-  lj["output_mechanism"] = {
-      {"pin_count", spec.output.pin_count > 0 ? nlohmann::json(spec.output.pin_count) : nlohmann::json("continuous")},
-      {"pin_circle_radius_mm", spec.output.pin_circle_radius_mm},
-      {"model", spec.output.pin_count > 0
-                    ? "rigid zero-clearance output pins, Q_j = Q_max max(0, sin phi_j) (Blagojevic et al. 2011)"
-                    : "continuous limit of rigid output pins: resultant 4 T / (pi R_w) along the crank"}};
-  lj["crank_bearing_samples_per_line"] = l.crank_bearing_samples;
-  lj["efficiency_energy_mean"] = nullptr;
-  lj["efficiency"] = "not computed: the cycloid model is frictionless (docs/cycloid.md, Limits)";
-  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner); each line one LTCA cycle "
-                "at its torque; crank bearing: |B| = |ring-pin forces + output-pin forces| over its load period, "
-                "n1/n2 revolutions per input revolution; pins: the pair loads, revolution-weighted by the rolling "
-                "spin (C - I).N / (n2 rho); " + ModifiedLifeModelText(l.oil.has_value());
+  lj.duty_cycle = DutyCycleEchoOf(spec.lines);
+  lj.mean_input_speed_rpm = l.mean_input_speed_rpm;
+  lj.output_mechanism.pin_count =
+      spec.output.pin_count > 0 ? nlohmann::json(spec.output.pin_count) : nlohmann::json("continuous");
+  lj.output_mechanism.pin_circle_radius_mm = spec.output.pin_circle_radius_mm;
+  lj.output_mechanism.model =
+      spec.output.pin_count > 0
+          ? "rigid zero-clearance output pins, Q_j = Q_max max(0, sin phi_j) (Blagojevic et al. 2011)"
+          : "continuous limit of rigid output pins: resultant 4 T / (pi R_w) along the crank";
+  lj.crank_bearing_samples_per_line = l.crank_bearing_samples;
+  lj.efficiency = "not computed: the cycloid model is frictionless (docs/cycloid.md, Limits)";
+  lj.model = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner); each line one LTCA cycle "
+             "at its torque; crank bearing: |B| = |ring-pin forces + output-pin forces| over its load period, "
+             "n1/n2 revolutions per input revolution; pins: the pair loads, revolution-weighted by the rolling "
+             "spin (C - I).N / (n2 rho); " + ModifiedLifeModelText(l.oil.has_value());
   return lj;
-}
-
-nlohmann::ordered_json LifeJsonSchema() {
-  const nlohmann::ordered_json hours = {{"type", {"number", "null"}}, {"description", "[h] (null: unlimited)"}};
-  nlohmann::ordered_json p = nlohmann::ordered_json::object();
-  p["shortest_L10h"] = hours;
-  p["shortest_bearing"] = {{"type", "string"}};
-  for (const char* element : {"crank_bearing_L10h", "pins_L10h", "eccentric_bearing_L10h"}) p[element] = hours;
-  p["table"] = LifeTableSchema();
-  p["shortest_L_nm_h"] = hours;
-  p["shortest_L_nm_bearing"] = {{"type", {"string", "null"}}};
-  p["duty_cycle"] = {{"type", "array"}};
-  p["mean_input_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
-  p["output_mechanism"] = {{"type", "object"}};
-  p["crank_bearing_samples_per_line"] = {{"type", "integer"}};
-  p["efficiency_energy_mean"] = {{"type", "null"}};
-  p["efficiency"] = {{"type", "string"}};
-  p["model"] = {{"type", "string"}};
-  p["design"] = {{"type", "string"}};
-  return {{"type", "object"},
-          {"properties", p},
-          {"required", {"shortest_L10h", "shortest_bearing", "table", "duty_cycle", "model"}}};
 }
 
 }  // namespace camopt::studies::cycloid_common

@@ -43,12 +43,93 @@ struct LifeResult {
 LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const std::vector<double>& crank_angles_rad,
                    double solved_torque_Nmm = 0.0, const std::vector<cycloid::MeshLoad>* solved_meshes = nullptr);
 
-/// result.json "life": `ELEMENT_L10h`, shortest_L10h, shortest_bearing, the duty cycle, the output
-/// mechanism and the table (the rows of lcr_min_size's best.life.table); with `l.oil` the modified
-/// life of the bearings given C_u and D_pw in their rows and shortest_L_nm_h (AddModifiedLife).
-nlohmann::json LifeJson(const LifeSpec& spec, const LifeResult& l);
-/// The JSON Schema of LifeJson's object, for a declared result's raw "life" member (its
-/// `ELEMENT_L10h` keys vary with the drive, so further properties are allowed).
-nlohmann::ordered_json LifeJsonSchema();
+/// The output mechanism whose pin forces load the crank bearing in a life block: pin count (or
+/// "continuous") and circle radius, and the model in words (cycloid_ltca, cycloid_crowning_tuning)
+/// or whether the circle is inside the sized disc's root (cycloid_min_size).
+struct LifeOutputMechanism {
+  nlohmann::json pin_count = 0;  ///< a whole number, or "continuous"
+  double pin_circle_radius_mm = 0;
+  std::optional<std::string> model;
+  std::optional<bool> inside_root_radius;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("pin_count", &pin_count, Field().Schema({{"type", {"integer", "string"}}}).Desc("the output pins, or \"continuous\" (the continuous limit)"));
+    a->Visit("pin_circle_radius_mm", &pin_circle_radius_mm, Field().Unit("mm").Desc("R_w"));
+    a->Visit("model", &model, Field().Desc("the pins' force law"));
+    a->Visit("inside_root_radius", &inside_root_radius,
+             Field().Desc("a sizing's: the pins' circle is inside the sized disc's root radius"));
+  }
+};
+
+/// result.json's "life" of cycloid_ltca and cycloid_crowning_tuning (docs/life.md, "Cycloid"):
+/// the crank bearing's and the pins' L10h, the shortest, the table (the rows of every kind's life
+/// table), the duty cycle and the output mechanism; with `l.oil` the modified life of the bearings
+/// given C_u and D_pw (AddModifiedLife) and the shortest of those.
+struct LifeBlock {
+  double shortest_L10h = 0;
+  std::string shortest_bearing;
+  double crank_bearing_L10h = 0;
+  std::optional<double> pins_L10h;
+  std::vector<LifeTableRow> table;
+  std::optional<double> shortest_L_nm_h;
+  std::optional<nlohmann::json> shortest_L_nm_bearing;
+  std::vector<DutyCycleEcho> duty_cycle;
+  double mean_input_speed_rpm = 0;
+  LifeOutputMechanism output_mechanism;
+  int crank_bearing_samples_per_line = 0;
+  std::optional<double> efficiency_energy_mean;  ///< never set: null (the efficiency is lubrication's)
+  std::string efficiency, model;
+  std::optional<std::string> design;  ///< cycloid_crowning_tuning: which design the lives are of
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field hours = Field().NullWhenNotFinite().Unit("h");
+    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("shortest_bearing", &shortest_bearing, Field().Desc("crank_bearing or pins"));
+    a->Visit("crank_bearing_L10h", &crank_bearing_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("pins_L10h", &pins_L10h, Field(hours).Desc("with rated pins (null: unlimited)"));
+    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
+    a->Visit("shortest_L_nm_h", &shortest_L_nm_h,
+             Field(hours).Desc("with a lubricant: the shortest modified life computed (null: none)"));
+    a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing,
+             Field().Schema({{"type", {"string", "null"}}}).Desc("with a lubricant: its bearing (null: none)"));
+    a->Visit("duty_cycle", &duty_cycle, Field());
+    a->Visit("mean_input_speed_rpm", &mean_input_speed_rpm, Field().Unit("rpm"));
+    a->Visit("output_mechanism", &output_mechanism, Field());
+    a->Visit("crank_bearing_samples_per_line", &crank_bearing_samples_per_line, Field());
+    a->Visit("efficiency_energy_mean", &efficiency_energy_mean, Field().NullWhenAbsent().Desc("null: see efficiency"));
+    a->Visit("efficiency", &efficiency, Field().Desc("where the efficiency is"));
+    a->Visit("model", &model, Field());
+    a->Visit("design", &design, Field().Desc("which design the lives are of"));
+  }
+};
+LifeBlock LifeBlockOf(const LifeSpec& spec, const LifeResult& l);
+
+/// cycloid_min_size's best.life: the accurate model's lives of the sized design, as LifeBlock's,
+/// with the limit (life_h) and each row's pass/fail against it.
+struct SizingLifeBlock {
+  std::optional<double> life_h;
+  double shortest_L10h = 0;
+  std::string shortest_bearing;
+  double crank_bearing_L10h = 0;
+  std::optional<double> pins_L10h;
+  std::vector<LifeTableRow> table;
+  std::vector<DutyCycleEcho> duty_cycle;
+  LifeOutputMechanism output_mechanism;
+  std::string efficiency, model;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field hours = Field().NullWhenNotFinite().Unit("h");
+    a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("limits.life_h (null: none)"));
+    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("shortest_bearing", &shortest_bearing, Field().Desc("crank_bearing or pins"));
+    a->Visit("crank_bearing_L10h", &crank_bearing_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("pins_L10h", &pins_L10h, Field(hours).Desc("with rated pins (null: unlimited)"));
+    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
+    a->Visit("duty_cycle", &duty_cycle, Field());
+    a->Visit("output_mechanism", &output_mechanism, Field());
+    a->Visit("efficiency", &efficiency, Field().Desc("where the efficiency is"));
+    a->Visit("model", &model, Field());
+  }
+};
 
 }  // namespace camopt::studies::cycloid_common

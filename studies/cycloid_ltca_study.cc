@@ -1549,7 +1549,7 @@ void FillLoaded(const Study& s, Result& r) {
   r.estimated_error_sources = sources;
   r.warnings_out = r.warnings;
   FillCommon(s, r);
-  if (r.life) r.life_json = cycloid_common::LifeJson(*s.life, *r.life);
+  if (r.life) r.life_json = cycloid_common::LifeBlockOf(*s.life, *r.life);
   if (s.discs > 1) {
     r.discs = s.discs;
     r.disc_torque_Nm = s.disc_torque_Nmm() / 1000.0;
@@ -1630,7 +1630,7 @@ void FillLoaded(const Study& s, Result& r) {
   // With a lubricant the drive has an efficiency: the life block points to it instead of calling
   // the model frictionless.
   if (r.life && s.lubrication)
-    (*r.life_json)["efficiency"] = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
+    r.life_json->efficiency = "lubrication.efficiency (the lubricated losses, docs/lubrication.md)";
   if (r.torsional && s.torsional) r.torsional_dynamics = TorsionalDynamicsBlock::Of(*s.torsional, *r.torsional);
   else if (s.torsional) r.torsional_dynamics = StageError{r.torsional_failed};
 }

@@ -655,7 +655,7 @@ struct Result {
   std::optional<GrindingOut> grinding;
   std::optional<nlohmann::json> transmission_error_json;  ///< result.json's transmission_error
   std::optional<nlohmann::json> inspection, measured_json;
-  std::optional<nlohmann::json> life_json;       ///< result.json's life (cycloid_common::LifeJson)
+  std::optional<cycloid_common::LifeBlock> life_json;  ///< result.json's life
   std::optional<int> discs;
   std::optional<double> disc_torque_Nm;
   /// NaN: null (the curve or the mechanism asked for but not solved).
@@ -726,7 +726,7 @@ struct Result {
              Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
     a->Visit("measured", &measured_json,
              Field().Desc("the measured disc (with measured_profile)").Schema({{"type", "object"}}));
-    a->Visit("life", &life_json, Field().Desc("the bearing lives, when asked").Schema(cycloid_common::LifeJsonSchema()));
+    a->Visit("life", &life_json, Field().Desc("the bearing lives, when asked"));
     a->Visit("discs", &discs, Field().Desc("with more than one disc"));
     a->Visit("disc_torque_Nm", &disc_torque_Nm, Field().Unit("N·m").Desc("each disc's torque (more than one disc)"));
     a->Visit("torsional_stiffness_Nm_per_arcmin", &torsional_stiffness_Nm_per_arcmin,

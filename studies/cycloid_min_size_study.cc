@@ -826,20 +826,6 @@ nlohmann::ordered_json Input::SchemaRules() {
   return rules;
 }
 
-nlohmann::ordered_json Result::LifeSchema() {
-  // cycloid_ltca's life (cycloid_common::LifeJson's keys) with the sizing's limit and pass/fail.
-  nlohmann::ordered_json l = cycloid_common::LifeJsonSchema();
-  l["properties"]["life_h"] = {{"type", {"number", "null"}}, {"description", "limits.life_h [h] (null: none)"}};
-  l["properties"]["output_mechanism"] = nlohmann::ordered_json::parse(R"json({"type": "object", "properties": {
-    "pin_count": {"type": ["integer", "string"], "description": "the output pins, or \"continuous\" (the continuous limit)"},
-    "pin_circle_radius_mm": {"type": "number", "description": "R_w [mm]"},
-    "inside_root_radius": {"type": "boolean", "description": "the pins' circle is inside the sized disc's root radius"}},
-    "required": ["pin_count", "pin_circle_radius_mm", "inside_root_radius"], "additionalProperties": false})json");
-  l["required"].push_back("life_h");
-  l["required"].push_back("output_mechanism");
-  return l;
-}
-
 nlohmann::ordered_json Result::RatingsSchema() {
   // SizedRatingsJson (studies/ratings.h) without a rated torque of its own (cycloid_ltca solves it
   // from best_cycloid_ltca.json), and with ratings.momentary_torque_Nm the static check at it.
@@ -1071,38 +1057,34 @@ double LimitValue(const Study& s, const std::string& key) {
 
 // best.life (docs/life.md, "Cycloid"): the lives of the accurate model as cycloid_ltca's "life",
 // with pass/fail against limits.life_h.
-nlohmann::json SizingLifeJson(const Study& s, const cycloid::Drive& d, const sizing::CycloidSizingEvaluation& acc) {
+cycloid_common::SizingLifeBlock SizingLifeOf(const Study& s, const cycloid::Drive& d,
+                                              const sizing::CycloidSizingEvaluation& acc) {
   const sizing::CycloidSizingLife& life = *s.spec.life;
   const double limit = s.spec.limits.life_h;
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json lj;
-  lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
-  lj["shortest_L10h"] = finite(acc.shortest_life_h);
-  nlohmann::json table = nlohmann::json::array();
-  std::string shortest;
+  cycloid_common::SizingLifeBlock lj;
+  if (limit > 0) lj.life_h = limit;
+  lj.shortest_L10h = acc.shortest_life_h;
   double least = kInf;
   for (const sizing::CycloidBearingLife& b : acc.lives) {
-    lj[b.name + "_L10h"] = finite(b.life.L10h);
-    if (shortest.empty() || b.life.L10h < least) shortest = b.name, least = b.life.L10h;
+    (b.name == "pins" ? lj.pins_L10h.emplace() : lj.crank_bearing_L10h) = b.life.L10h;
+    if (lj.shortest_bearing.empty() || b.life.L10h < least) lj.shortest_bearing = b.name, least = b.life.L10h;
     LifeTableRow row = BearingLifeRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
                                       b.life.revolutions_per_input_revolution, b.dynamic_N, b.static_N, b.s0,
                                       b.life.L10h, limit);
     row.line_equivalent_load_N = b.life.line_equivalent_load_N;
-    table.push_back(LifeRowJson(row));
+    lj.table.push_back(std::move(row));
   }
-  lj["shortest_bearing"] = shortest;
-  lj["table"] = table;
-  lj["duty_cycle"] = DutyCycleJson(life.lines);
+  lj.duty_cycle = DutyCycleEchoOf(life.lines);
   const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
                              d.roller_radius_mm - d.delta_radius_mm;
-  lj["output_mechanism"] = {
-      {"pin_count", life.output.pin_count > 0 ? nlohmann::json(life.output.pin_count) : nlohmann::json("continuous")},
-      {"pin_circle_radius_mm", life.output.pin_circle_radius_mm},
-      {"inside_root_radius", life.output.pin_circle_radius_mm < root_radius}};
-  lj["efficiency"] = s.spec.lubrication ? "best.accurate.efficiency (the lubricated losses, docs/lubrication.md)"
-                                        : "not computed without \"lubricant\" (docs/lubrication.md)";
-  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner) on the accurate model's "
-                "cycles, computed as cycloid_ltca does (docs/life.md, Cycloid)";
+  lj.output_mechanism.pin_count =
+      life.output.pin_count > 0 ? nlohmann::json(life.output.pin_count) : nlohmann::json("continuous");
+  lj.output_mechanism.pin_circle_radius_mm = life.output.pin_circle_radius_mm;
+  lj.output_mechanism.inside_root_radius = life.output.pin_circle_radius_mm < root_radius;
+  lj.efficiency = s.spec.lubrication ? "best.accurate.efficiency (the lubricated losses, docs/lubrication.md)"
+                                     : "not computed without \"lubricant\" (docs/lubrication.md)";
+  lj.model = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner) on the accurate model's "
+             "cycles, computed as cycloid_ltca does (docs/life.md, Cycloid)";
   return lj;
 }
 
@@ -1195,7 +1177,7 @@ void FillResult(const Study& s, Result& r) {
     }
     b.accurate_model = o.check.model;
     if (s.spec.life) {
-      b.life = SizingLifeJson(s, o.drive, acc);
+      b.life = SizingLifeOf(s, o.drive, acc);
       // Met as the verification holds them: the accurate value within its estimated error (one
       // verdict for the exit code, `verified` and these flags).
       auto holds = [&](const std::string& limit) {

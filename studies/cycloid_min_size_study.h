@@ -27,6 +27,7 @@
 #include "studies/backend_input.h"
 #include "studies/archive.h"
 #include "studies/cycloid_input.h"
+#include "studies/cycloid_life.h"
 #include "studies/input.h"
 #include "studies/lubrication_input.h"
 #include "studies/material_input.h"
@@ -530,7 +531,8 @@ struct Result {
     std::optional<Lubrication> lubrication;
     EstimatedError estimated_error;
     std::string accurate_model;
-    std::optional<nlohmann::json> life, ratings;
+    std::optional<cycloid_common::SizingLifeBlock> life;
+    std::optional<nlohmann::json> ratings;
     std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;
     template <typename Archive>
     void Serialize(Archive* a) {
@@ -563,7 +565,7 @@ struct Result {
       a->Visit("estimated_error", &estimated_error, Field().Desc("of the accurate values, key by key, in their units"));
       a->Visit("accurate_model", &accurate_model, Field().Desc("the accurate model, in words"));
       a->Visit("life", &life,
-               Field().Schema(LifeSchema()).Desc("with a speed or duty cycle: the accurate model's bearing lives"));
+               Field().Desc("with a speed or duty cycle: the accurate model's bearing lives"));
       a->Visit("ratings", &ratings,
                Field().Schema(RatingsSchema()).Desc("with ratings: the rated and momentary torques checked"));
       a->Visit("torsional_dynamics", &torsional_dynamics,
@@ -674,7 +676,6 @@ struct Result {
     a->Visit("warnings", &warnings, Field().Desc("the run's warnings"));
   }
   /// The schemas of the raw blocks of best (cycloid_min_size_study.cc).
-  static nlohmann::ordered_json LifeSchema();
   static nlohmann::ordered_json RatingsSchema();
 
   // Not in result.json: the sizing's outcome and the best design's cycle, which the other files

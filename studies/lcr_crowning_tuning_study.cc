@@ -240,8 +240,7 @@ void FillResult(const Study& st, Result& res) {
       }
       lj.sliced.push_back(sj);
     }
-    for (const lcr::LcrDutyLine& line : st.life->lines)
-      lj.duty_cycle.push_back({line.output_torque_Nmm / 1000.0, line.input_speed_rpm, line.time_share});
+    lj.duty_cycle = DutyCycleEchoOf(st.life->lines);
     lj.model = "lives of the tuned design (the tuning's objective is the contact pressure, not the life): ISO 281:2007 "
                "basic rating life of each bearing over the duty cycle (rigid load law, the tuning's angle steps), and "
                "each roller sliced with its tuned crowning at every misalignment of the tuning (ISO/TS 16281's idea, "

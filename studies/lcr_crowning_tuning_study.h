@@ -212,15 +212,6 @@ struct Result {
       a->Visit("output_roller_sliced_L10h", &output_roller_sliced_L10h, Field().NullWhenNotFinite().Unit("h"));
     }
   };
-  struct DutyLine {
-    double output_torque_Nm = 0, input_speed_rpm = 0, time_share = 0;
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m"));
-      a->Visit("input_speed_rpm", &input_speed_rpm, Field().Unit("rpm"));
-      a->Visit("time_share", &time_share, Field());
-    }
-  };
   /// The tuned design's bearing lives (with a speed or a duty cycle).
   struct Life {
     double input_roller_L10h = 0, output_roller_L10h = 0;
@@ -228,7 +219,7 @@ struct Result {
     double shortest_L10h = 0;
     std::string shortest_bearing;
     std::vector<SlicedRow> sliced;
-    std::vector<DutyLine> duty_cycle;
+    std::vector<DutyCycleEcho> duty_cycle;
     std::optional<double> life_h;  ///< always null: the tuning has no life limit
     std::vector<LifeTableRow> table;  ///< pass always null: no life limit in a tuning
     std::string model;
