@@ -152,28 +152,54 @@ std::vector<std::string> PlainLimitNames(const std::vector<std::string>& rows, c
 
 // The lives of a design (docs/life.md, "Life as a sizing limit"): `<bearing>_L10h` per bearing,
 // shortest_L10h, and a table per element (load, C, L10h, s0, pass/fail against life_h).
+struct SizingLife {
+  std::optional<double> life_h;
+  double shortest_L10h = 0;
+  std::string shortest_bearing;
+  double input_roller_L10h = 0, output_roller_L10h = 0;
+  std::optional<double> eccentric_bearing_L10h;
+  std::vector<DutyCycleEcho> duty_cycle;
+  std::vector<LifeTableRow> table;
+  std::string rating_rule, model;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field hours = Field().NullWhenNotFinite().Unit("h");
+    a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("the life limit (null: none)"));
+    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("the shortest L10h of any rated bearing"));
+    a->Visit("shortest_bearing", &shortest_bearing, Field());
+    a->Visit("input_roller_L10h", &input_roller_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("output_roller_L10h", &output_roller_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("eccentric_bearing_L10h", &eccentric_bearing_L10h, Field(hours).Desc("with its rating (null: unlimited)"));
+    a->Visit("duty_cycle", &duty_cycle, Field());
+    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
+    a->Visit("rating_rule", &rating_rule, Field().Desc("how the sized rollers' C and C0 follow their size"));
+    a->Visit("model", &model, Field());
+  }
+};
+
 nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives::LcrDenseCheck& k) {
-  nlohmann::json lj;
+  SizingLife lj;
   const double limit = spec.limits.life_h;
-  lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
-  lj["shortest_L10h"] = NumberOrNull(k.shortest_L10h);
+  if (limit > 0) lj.life_h = limit;
+  lj.shortest_L10h = k.shortest_L10h;
   const auto shortest = std::min_element(k.life.begin(), k.life.end(),
                                           [](const auto& a, const auto& b) { return a.life.L10h < b.life.L10h; });
-  lj["shortest_bearing"] = shortest->name;
-  for (const auto& b : k.life) lj[b.name + "_L10h"] = NumberOrNull(b.life.L10h);
-  lj["duty_cycle"] = DutyCycleJson(spec.life->lines);
-  nlohmann::json table = nlohmann::json::array();
+  lj.shortest_bearing = shortest->name;
   for (const auto& b : k.life)
-    table.push_back(LifeRowJson(BearingLifeRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
-                                               b.life.revolutions_per_input_revolution, b.dynamic_rating_N,
-                                               b.static_rating_N, b.s0, b.life.L10h, limit)));
-  lj["table"] = table;
-  lj["rating_rule"] = spec.life->roller.reference_diameter_mm > 0
-                          ? "roller C = C_ref (d/d_ref)^(29/27) (L/L_ref)^(7/9) (ISO 281:2007 6.1.1), C0 = C0_ref (d/d_ref)(L/L_ref) (ISO 76)"
-                          : "roller C, C0 as the catalogue gives them";
-  lj["model"] = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner), loads of the rigid law "
-                "revolution-weighted over each bearing's load period, computed as lcr_analysis does (docs/life.md)";
-  return lj;
+    (b.name == "input_roller"    ? lj.input_roller_L10h
+     : b.name == "output_roller" ? lj.output_roller_L10h
+                                 : lj.eccentric_bearing_L10h.emplace()) = b.life.L10h;
+  lj.duty_cycle = DutyCycleEchoOf(spec.life->lines);
+  for (const auto& b : k.life)
+    lj.table.push_back(BearingLifeRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
+                                      b.life.revolutions_per_input_revolution, b.dynamic_rating_N, b.static_rating_N,
+                                      b.s0, b.life.L10h, limit));
+  lj.rating_rule = spec.life->roller.reference_diameter_mm > 0
+                       ? "roller C = C_ref (d/d_ref)^(29/27) (L/L_ref)^(7/9) (ISO 281:2007 6.1.1), C0 = C0_ref (d/d_ref)(L/L_ref) (ISO 76)"
+                       : "roller C, C0 as the catalogue gives them";
+  lj.model = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner), loads of the rigid law "
+             "revolution-weighted over each bearing's load period, computed as lcr_analysis does (docs/life.md)";
+  return nlohmann::json(ResultWriter::Value(lj, Field(), "/best/life"));
 }
 
 std::string StatusOf(const Candidate& c) {
@@ -574,13 +600,7 @@ nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
     "limit_costs": {"type": "array", "items": {"type": "string"}, "description": "what each binding limit costs, in words"},
     "binding_limits": {"type": "array", "description": "each binding limit, its value and its cost"},
     "limit_sensitivity_note": {"type": "string", "description": "3D contact: why the limit costs are not computed"},
-    "life": {"type": "object", "description": "with a speed or duty cycle: the bearing lives (docs/life.md)", "properties": {
-      "life_h": {"type": ["number", "null"], "description": "the life limit [h] (null: none)"},
-      "shortest_L10h": {"type": ["number", "null"], "description": "the shortest L10h of any rated bearing [h]"},
-      "shortest_bearing": {"type": "string"},
-      "duty_cycle": {"type": "array"}, "table": {"type": "array"},
-      "rating_rule": {"type": "string"}, "model": {"type": "string"}},
-      "additionalProperties": {"type": ["number", "null"], "description": "<bearing>_L10h [h]"}},
+    "life": {},
     "ratings": {"type": "object", "description": "with ratings: the sized design's ratings (docs/ratings.md)", "properties": {
       "L10h_at_required_torque": {"type": ["number", "null"], "description": "[h]"},
       "rated_torque_Nm": {"type": ["number", "null"], "description": "[N·m]"},
@@ -596,6 +616,13 @@ nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
     "monte_carlo": {}},
     "required": ["eccentricity_mm", "outer_diameter_mm", "speed_ratio", "input", "output", "binding"],
     "additionalProperties": false})json");
+  {
+    SizingLife life;
+    nlohmann::ordered_json l = nlohmann::ordered_json::object();
+    ResultSchemaEmitter::Describe(&life, Field(), l);
+    l["description"] = "with a speed or duty cycle: the bearing lives (docs/life.md)";
+    s["properties"]["life"] = std::move(l);
+  }
   s["properties"]["input"] = SchemaOf(kSideSchema);
   s["properties"]["input"]["description"] = "the input cam";
   s["properties"]["output"] = SchemaOf(kSideSchema);
