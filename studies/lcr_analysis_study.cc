@@ -1326,92 +1326,99 @@ Result::Json::Cam CamJson(const Study& st, const Result& res, Side s) {
 }
 
 // result.json's "life": the bearings' and the cams' contact lives over the duty cycle.
-nlohmann::json LifeJson(const Study& st, const LifeResult& l) {
+LifeBlock LifeBlockOf(const Study& st, const LifeResult& l) {
   const LifeSpec& spec = *st.life;
-  // +∞ (a bearing without load) is written as null.
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json lj;
-  lj["shortest_L10h"] = finite(l.shortest_L10h);
-  lj["shortest_bearing"] = l.shortest;
-  for (const BearingLifeResult& b : l.bearings) lj[b.name + "_L10h"] = finite(b.L10h);
-  for (const BearingLifeResult& b : l.bearings)
-    if (b.sliced) lj[b.name + "_sliced_L10h"] = finite(b.sliced->L10h);
-  lj["mean_input_speed_rpm"] = l.mean_input_speed_rpm;
-  lj["efficiency_energy_mean"] = l.efficiency_energy_mean;
-  nlohmann::json lines = nlohmann::json::array();
-  for (size_t i = 0; i < spec.lines.size(); ++i)
-    lines.push_back({{"output_torque_Nm", spec.lines[i].output_torque_Nmm / 1000.0},
-                     {"input_speed_rpm", spec.lines[i].input_speed_rpm},
-                     {"time_share", spec.lines[i].time_share},
-                     {"mean_input_torque_Nm", l.line_mean_input_torque_Nm[i]}});
-  lj["duty_cycle"] = lines;
+  LifeBlock lj;
+  lj.shortest_L10h = l.shortest_L10h;
+  lj.shortest_bearing = l.shortest;
+  auto slot = [&lj](const std::string& name) -> LifeBlock::Bearing& {
+    if (name == "input_roller") return lj.input_roller;
+    if (name == "output_roller") return lj.output_roller;
+    return lj.eccentric_bearing.emplace();
+  };
   for (const BearingLifeResult& b : l.bearings) {
-    nlohmann::json bj;
-    bj["kind"] = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
-    bj["life_exponent"] = LifeExponent(b.rating.kind);
-    bj["dynamic_rating_N"] = b.rating.dynamic_N;
-    if (b.rating.static_N > 0) {
-      bj["static_rating_N"] = b.rating.static_N;
-      bj["s0"] = finite(b.s0);
+    (b.name == "input_roller"    ? lj.input_roller_L10h
+     : b.name == "output_roller" ? lj.output_roller_L10h
+                                 : lj.eccentric_bearing_L10h.emplace()) = b.L10h;
+    if (b.sliced) {
+      if (b.name == "eccentric_bearing") throw std::logic_error("lcr_analysis life: the eccentric bearing is not sliced");
+      (b.name == "input_roller" ? lj.input_roller_sliced_L10h : lj.output_roller_sliced_L10h) = b.sliced->L10h;
     }
-    bj["revolutions_per_input_revolution"] = b.revolutions_per_input_revolution;
-    bj["mean_speed_rpm"] = b.mean_speed_rpm;
-    bj["equivalent_load_N"] = b.equivalent_load_N;
-    bj["line_equivalent_load_N"] = b.line_equivalent_load_N;
-    bj["max_load_N"] = b.max_load_N;
-    bj["L10_Mrev"] = finite(b.L10_Mrev);
-    bj["L10h"] = finite(b.L10h);
+  }
+  lj.mean_input_speed_rpm = l.mean_input_speed_rpm;
+  lj.efficiency_energy_mean = l.efficiency_energy_mean;
+  for (size_t i = 0; i < spec.lines.size(); ++i) {
+    LifeBlock::DutyLine d;
+    d.output_torque_Nm = spec.lines[i].output_torque_Nmm / 1000.0;
+    d.input_speed_rpm = spec.lines[i].input_speed_rpm;
+    d.time_share = spec.lines[i].time_share;
+    d.mean_input_torque_Nm = l.line_mean_input_torque_Nm[i];
+    lj.duty_cycle.push_back(d);
+  }
+  for (const BearingLifeResult& b : l.bearings) {
+    LifeBlock::Bearing& bj = slot(b.name);
+    bj.kind = b.rating.kind == BearingKind::kBall ? "ball" : "roller";
+    bj.life_exponent = LifeExponent(b.rating.kind);
+    bj.dynamic_rating_N = b.rating.dynamic_N;
+    if (b.rating.static_N > 0) {
+      bj.static_rating_N = b.rating.static_N;
+      bj.s0 = b.s0;
+    }
+    bj.revolutions_per_input_revolution = b.revolutions_per_input_revolution;
+    bj.mean_speed_rpm = b.mean_speed_rpm;
+    bj.equivalent_load_N = b.equivalent_load_N;
+    bj.line_equivalent_load_N = b.line_equivalent_load_N;
+    bj.max_load_N = b.max_load_N;
+    bj.L10_Mrev = b.L10_Mrev;
+    bj.L10h = b.L10h;
     if (b.sliced) {
       const BearingLifeResult::Sliced& sl = *b.sliced;
-      bj["sliced"] = {{"L10h", finite(sl.L10h)},
-                      {"slices", sl.slices},
-                      {"misalignment_mrad", st.contact.options.misalignment_rad * 1e3},
-                      {"slice_rating_N", sl.slice_rating_N},
-                      {"weibull_slope", sl.weibull_slope},
-                      {"worst_slice_y_mm", sl.worst_slice_y_mm},
-                      {"worst_slice_L10h", finite(sl.worst_slice_L10h)},
-                      {"slice_equivalent_load_N", sl.slice_equivalent_load_N},
-                      {"edge_loaded", sl.edge_loaded},
-                      {"converged", sl.converged},
-                      {"model", "ISO/TS 16281's idea: the roller cut into slices along its length, the load per slice "
-                                "from the slices contact model (crowning, misalignment) at each sample, each slice "
-                                "rated C (w/L)^(7/9) (ISO 281 6.1.1), slice lives over the duty cycle combined as "
-                                "1/L^e = sum 1/L_k^e with e = 9/(2p), which gives back ISO 281 for a uniform load "
-                                "(docs/life.md)"}};
+      LifeBlock::Sliced& sj = bj.sliced.emplace();
+      sj.L10h = sl.L10h;
+      sj.slices = sl.slices;
+      sj.misalignment_mrad = st.contact.options.misalignment_rad * 1e3;
+      sj.slice_rating_N = sl.slice_rating_N;
+      sj.weibull_slope = sl.weibull_slope;
+      sj.worst_slice_y_mm = sl.worst_slice_y_mm;
+      sj.worst_slice_L10h = sl.worst_slice_L10h;
+      sj.slice_equivalent_load_N = sl.slice_equivalent_load_N;
+      sj.edge_loaded = sl.edge_loaded;
+      sj.converged = sl.converged;
+      sj.model = "ISO/TS 16281's idea: the roller cut into slices along its length, the load per slice from the "
+                 "slices contact model (crowning, misalignment) at each sample, each slice rated C (w/L)^(7/9) (ISO "
+                 "281 6.1.1), slice lives over the duty cycle combined as 1/L^e = sum 1/L_k^e with e = 9/(2p), which "
+                 "gives back ISO 281 for a uniform load (docs/life.md)";
     }
-    lj[b.name] = bj;
   }
-  lj["model"] = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
-                "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
-                "the same load over its period; " + ModifiedLifeModelText(l.oil.has_value());
+  lj.model = "ISO 281:2007 basic rating life L10 of each bearing over the duty cycle (Palmgren-Miner), "
+             "loads revolution-weighted over each bearing's load period; every roller of a turret carries "
+             "the same load over its period; " + ModifiedLifeModelText(l.oil.has_value());
   // The cams' contact lives (docs/life.md, "Contact fatigue of the cam surfaces"): separate from
   // the bearings' shortest_L10h.
-  for (const CamContactLifeResult& c : l.cam_contacts) lj[c.name + "_L10h"] = finite(c.L10h);
+  for (const CamContactLifeResult& c : l.cam_contacts)
+    (c.name == "input_cam_contact" ? lj.input_cam_contact_L10h : lj.output_cam_contact_L10h) = c.L10h;
   if (!l.cam_contacts.empty()) {
     const ContactFatigueSpec& cf = *st.contact_fatigue;
-    nlohmann::json cl;
-    cl["reference_pressure_MPa"] = cf.reference_pressure_MPa;
-    cl["reference_cycles"] = cf.reference_cycles;
-    cl["exponent"] = cf.exponent;
-    cl["exponent_source"] = cf.exponent_given ? "given" : "default: Lundberg-Palmgren line contact, n = 8";
-    cl["pressure_model"] = st.contact.given ? ContactModelName(st.contact.options.model) : "line";
+    LifeBlock::ContactLife& cl = lj.contact_life.emplace();
+    cl.reference_pressure_MPa = cf.reference_pressure_MPa;
+    cl.reference_cycles = cf.reference_cycles;
+    cl.exponent = cf.exponent;
+    cl.exponent_source = cf.exponent_given ? "given" : "default: Lundberg-Palmgren line contact, n = 8";
+    cl.pressure_model = st.contact.given ? ContactModelName(st.contact.options.model) : "line";
     for (const CamContactLifeResult& c : l.cam_contacts)
-      cl[c.name] = {{"contacts_per_input_revolution", c.passes_per_input_revolution},
-                    {"line_peak_pressure_MPa", c.line_peak_pressure_MPa},
-                    {"equivalent_pressure_MPa", c.equivalent_pressure_MPa},
-                    {"L10h", finite(c.L10h)}};
-    cl["model"] =
+      (c.name == "input_cam_contact" ? cl.input_cam_contact : cl.output_cam_contact) =
+          LifeBlock::CamContact{c.passes_per_input_revolution, c.line_peak_pressure_MPa, c.equivalent_pressure_MPa,
+                                c.L10h};
+    cl.model =
         "stress-life law of the material, N = N_ref (p_ref/p0)^n over-rollings of a point of the cam's track to 10% "
         "failure, Palmgren-Miner over the duty cycle; every over-rolling counted at the cam's peak Hertz pressure of "
         "its line (n rollers times the turret's turns relative to the cam per input revolution); assumes the same "
         "contact geometry, material, heat treatment and lubrication as the reference, no fatigue limit, subsurface "
         "(not surface) initiated fatigue; not part of shortest_L10h (docs/life.md)";
-    lj["contact_life"] = cl;
   }
   // One row per element, the same keys as lcr_min_size's best.life.table (report.html's life table).
   const double limit = st.life_limit_h;
-  lj["life_h"] = limit > 0 ? nlohmann::json(limit) : nlohmann::json(nullptr);
-  nlohmann::json table = nlohmann::json::array();
+  if (limit > 0) lj.life_h = limit;
   double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
   std::string shortest_nm;
   for (const BearingLifeResult& b : l.bearings) {
@@ -1423,14 +1430,14 @@ nlohmann::json LifeJson(const Study& st, const LifeResult& l) {
                                           b.equivalent_load_N, b.L10h);
       if (!std::isnan(l_nm) && (shortest_nm.empty() || l_nm < shortest_nm_h)) shortest_nm_h = l_nm, shortest_nm = b.name;
     }
-    table.push_back(LifeRowJson(e));
+    lj.table.push_back(e);
     if (b.sliced) {
       LifeTableRow es = e;
       es.element = b.name + "_sliced";
       es.kind = "roller, sliced (ISO/TS 16281)";
       es.L10h = b.sliced->L10h;
       if (limit > 0) es.pass = b.sliced->L10h >= limit;
-      table.push_back(LifeRowJson(es));
+      lj.table.push_back(es);
     }
   }
   for (const CamContactLifeResult& c : l.cam_contacts) {
@@ -1445,12 +1452,11 @@ nlohmann::json LifeJson(const Study& st, const LifeResult& l) {
     row.reference_pressure_MPa = st.contact_fatigue->reference_pressure_MPa;
     row.L10h = c.L10h;
     if (limit > 0) row.pass = c.L10h >= limit;
-    table.push_back(LifeRowJson(row));
+    lj.table.push_back(row);
   }
-  lj["table"] = table;
   if (l.oil) {
-    lj["shortest_L_nm_h"] = shortest_nm.empty() ? nlohmann::json(nullptr) : finite(shortest_nm_h);
-    lj["shortest_L_nm_bearing"] = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+    lj.shortest_L_nm_h = shortest_nm.empty() ? NAN : shortest_nm_h;
+    lj.shortest_L_nm_bearing = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
   }
   return lj;
 }
@@ -1496,7 +1502,7 @@ void FillResult(const Study& st, Result& res) {
     j.contact = c;
   }
   if (res.transmission_error) j.transmission_error = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
-  if (res.life) j.life = LifeJson(st, *res.life);
+  if (res.life) j.life = LifeBlockOf(st, *res.life);
   j.lubrication = StageBlock(res.lubrication, bool(st.lubrication), res.lubrication_error);
   FillCatalogue(st, res, j);
   if (res.torsional && st.torsional) j.torsional_dynamics = TorsionalDynamicsBlock::Of(*st.torsional, *res.torsional);
@@ -1542,30 +1548,6 @@ nlohmann::ordered_json Result::Json::TransmissionErrorSchema() {
   p["lost_motion_torque_fraction"] = {{"type", "number"}};
   p["model"] = {{"type", "string"}};
   return {{"type", "object"}, {"properties", p}, {"required", {"lost_motion_arcmin", "model"}}};
-}
-
-nlohmann::ordered_json Result::Json::LifeSchema() {
-  using ojson = nlohmann::ordered_json;
-  const ojson hours = {{"type", {"number", "null"}}, {"description", "[h] (null: no load, unlimited)"}};
-  ojson p = ojson::object();
-  p["shortest_L10h"] = hours;
-  p["shortest_bearing"] = {{"type", "string"}};
-  for (const char* k : {"input_roller_L10h", "output_roller_L10h", "eccentric_bearing_L10h", "input_roller_sliced_L10h",
-                        "output_roller_sliced_L10h", "input_cam_contact_L10h", "output_cam_contact_L10h"})
-    p[k] = hours;
-  p["mean_input_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
-  p["efficiency_energy_mean"] = {{"type", "number"}, {"description", "output energy / input energy over the duty cycle"}};
-  p["duty_cycle"] = {{"type", "array"}, {"items", {{"type", "object"}}}};
-  for (const char* k : {"input_roller", "output_roller", "eccentric_bearing"}) p[k] = {{"type", "object"}};
-  p["model"] = {{"type", "string"}};
-  p["contact_life"] = {{"type", "object"}, {"description", "with material.contact_fatigue"}};
-  p["life_h"] = {{"type", {"number", "null"}}, {"description", "limits.life_h [h] (null: none)"}};
-  p["table"] = LifeTableSchema();
-  p["shortest_L_nm_h"] = hours;
-  p["shortest_L_nm_bearing"] = {{"type", {"string", "null"}}};
-  return {{"type", "object"},
-          {"properties", p},
-          {"required", {"shortest_L10h", "shortest_bearing", "duty_cycle", "model", "life_h", "table"}}};
 }
 
 nlohmann::ordered_json Result::Json::MeasuredSchema() {

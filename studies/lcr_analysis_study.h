@@ -335,6 +335,146 @@ struct LifeResult {
   std::optional<ModifiedLifeOil> oil;
 };
 
+/// result.json's "life" (docs/life.md): the bearings' lives over the duty cycle, each bearing's
+/// block (with its sliced life under the 3D contact's tilt), the cams' contact lives, the table.
+struct LifeBlock {
+  /// A duty-cycle line as given, with the line's mean input torque.
+  struct DutyLine : DutyCycleEcho {
+    double mean_input_torque_Nm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      DutyCycleEcho::Serialize(a);
+      a->Visit("mean_input_torque_Nm", &mean_input_torque_Nm, Field().NullWhenNotFinite().Unit("N·m"));
+    }
+  };
+  /// A roller rated by slices (ISO/TS 16281's idea) under the contact model's tilt and crowning.
+  struct Sliced {
+    double L10h = 0;
+    int slices = 0;
+    double misalignment_mrad = 0, slice_rating_N = 0, weibull_slope = 0, worst_slice_y_mm = 0, worst_slice_L10h = 0;
+    std::vector<double> slice_equivalent_load_N;
+    bool edge_loaded = false, converged = true;
+    std::string model;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("L10h", &L10h, Field(n).Unit("h").Desc("null: unlimited"));
+      a->Visit("slices", &slices, Field());
+      a->Visit("misalignment_mrad", &misalignment_mrad, Field(n).Unit("mrad"));
+      a->Visit("slice_rating_N", &slice_rating_N, Field(n).Unit("N").Desc("C (w/L)^(7/9)"));
+      a->Visit("weibull_slope", &weibull_slope, Field(n));
+      a->Visit("worst_slice_y_mm", &worst_slice_y_mm, Field(n).Unit("mm"));
+      a->Visit("worst_slice_L10h", &worst_slice_L10h, Field(n).Unit("h"));
+      a->Visit("slice_equivalent_load_N", &slice_equivalent_load_N,
+               Field(n).Unit("N").Desc("the first duty line's P per slice"));
+      a->Visit("edge_loaded", &edge_loaded, Field());
+      a->Visit("converged", &converged, Field());
+      a->Visit("model", &model, Field());
+    }
+  };
+  /// One bearing's life over the duty cycle.
+  struct Bearing {
+    std::string kind;
+    double life_exponent = 0, dynamic_rating_N = 0;
+    std::optional<double> static_rating_N, s0;
+    double revolutions_per_input_revolution = 0, mean_speed_rpm = 0, equivalent_load_N = 0;
+    std::vector<double> line_equivalent_load_N;
+    double max_load_N = 0, L10_Mrev = 0, L10h = 0;
+    std::optional<Sliced> sliced;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("kind", &kind, Field().OneOf({"ball", "roller"}));
+      a->Visit("life_exponent", &life_exponent, Field(n).Desc("p"));
+      a->Visit("dynamic_rating_N", &dynamic_rating_N, Field(n).Unit("N").Desc("C"));
+      a->Visit("static_rating_N", &static_rating_N, Field(n).Unit("N").Desc("C0, when given"));
+      a->Visit("s0", &s0, Field(n).Desc("C0 / largest load, with C0 (null: no load)"));
+      a->Visit("revolutions_per_input_revolution", &revolutions_per_input_revolution, Field(n));
+      a->Visit("mean_speed_rpm", &mean_speed_rpm, Field(n).Unit("rpm"));
+      a->Visit("equivalent_load_N", &equivalent_load_N, Field(n).Unit("N"));
+      a->Visit("line_equivalent_load_N", &line_equivalent_load_N, Field(n).Unit("N"));
+      a->Visit("max_load_N", &max_load_N, Field(n).Unit("N"));
+      a->Visit("L10_Mrev", &L10_Mrev, Field(n).Unit("Mrev"));
+      a->Visit("L10h", &L10h, Field(n).Unit("h").Desc("null: unlimited"));
+      a->Visit("sliced", &sliced, Field().Desc("with a 3D contact model: the roller rated by slices"));
+    }
+  };
+  /// One cam's contact life (material.contact_fatigue).
+  struct CamContact {
+    double contacts_per_input_revolution = 0;
+    std::vector<double> line_peak_pressure_MPa;
+    double equivalent_pressure_MPa = 0, L10h = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("contacts_per_input_revolution", &contacts_per_input_revolution, Field(n));
+      a->Visit("line_peak_pressure_MPa", &line_peak_pressure_MPa, Field(n).Unit("MPa"));
+      a->Visit("equivalent_pressure_MPa", &equivalent_pressure_MPa, Field(n).Unit("MPa"));
+      a->Visit("L10h", &L10h, Field(n).Unit("h").Desc("null: unlimited"));
+    }
+  };
+  struct ContactLife {
+    double reference_pressure_MPa = 0, reference_cycles = 0, exponent = 0;
+    std::string exponent_source, pressure_model;
+    std::optional<CamContact> input_cam_contact, output_cam_contact;
+    std::string model;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("reference_pressure_MPa", &reference_pressure_MPa, Field().Unit("MPa"));
+      a->Visit("reference_cycles", &reference_cycles, Field());
+      a->Visit("exponent", &exponent, Field().Desc("n of N = N_ref (p_ref/p0)^n"));
+      a->Visit("exponent_source", &exponent_source, Field());
+      a->Visit("pressure_model", &pressure_model, Field());
+      a->Visit("input_cam_contact", &input_cam_contact, Field());
+      a->Visit("output_cam_contact", &output_cam_contact, Field());
+      a->Visit("model", &model, Field());
+    }
+  };
+  double shortest_L10h = 0;
+  std::string shortest_bearing;
+  double input_roller_L10h = 0, output_roller_L10h = 0;
+  std::optional<double> eccentric_bearing_L10h, input_roller_sliced_L10h, output_roller_sliced_L10h;
+  double mean_input_speed_rpm = 0, efficiency_energy_mean = 0;
+  std::vector<DutyLine> duty_cycle;
+  Bearing input_roller, output_roller;
+  std::optional<Bearing> eccentric_bearing;
+  std::string model;
+  std::optional<double> input_cam_contact_L10h, output_cam_contact_L10h;
+  std::optional<ContactLife> contact_life;
+  std::optional<double> life_h;
+  std::vector<LifeTableRow> table;
+  std::optional<double> shortest_L_nm_h;
+  std::optional<nlohmann::json> shortest_L_nm_bearing;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field hours = Field().NullWhenNotFinite().Unit("h");
+    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("of the bearings (null: unlimited)"));
+    a->Visit("shortest_bearing", &shortest_bearing, Field());
+    a->Visit("input_roller_L10h", &input_roller_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("output_roller_L10h", &output_roller_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("eccentric_bearing_L10h", &eccentric_bearing_L10h, Field(hours).Desc("with its rating (null: unlimited)"));
+    a->Visit("input_roller_sliced_L10h", &input_roller_sliced_L10h, Field(hours).Desc("with a 3D contact model"));
+    a->Visit("output_roller_sliced_L10h", &output_roller_sliced_L10h, Field(hours).Desc("with a 3D contact model"));
+    a->Visit("mean_input_speed_rpm", &mean_input_speed_rpm, Field().NullWhenNotFinite().Unit("rpm"));
+    a->Visit("efficiency_energy_mean", &efficiency_energy_mean,
+             Field().NullWhenNotFinite().Desc("output energy / input energy over the duty cycle"));
+    a->Visit("duty_cycle", &duty_cycle, Field());
+    a->Visit("input_roller", &input_roller, Field());
+    a->Visit("output_roller", &output_roller, Field());
+    a->Visit("eccentric_bearing", &eccentric_bearing, Field().Desc("with its rating"));
+    a->Visit("model", &model, Field());
+    a->Visit("input_cam_contact_L10h", &input_cam_contact_L10h, Field(hours).Desc("with material.contact_fatigue"));
+    a->Visit("output_cam_contact_L10h", &output_cam_contact_L10h, Field(hours).Desc("with material.contact_fatigue"));
+    a->Visit("contact_life", &contact_life, Field().Desc("with material.contact_fatigue"));
+    a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("limits.life_h (null: none)"));
+    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
+    a->Visit("shortest_L_nm_h", &shortest_L_nm_h,
+             Field(hours).Desc("with a lubricant: the shortest modified life computed (null: none)"));
+    a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing,
+             Field().Schema({{"type", {"string", "null"}}}).Desc("with a lubricant: its bearing (null: none)"));
+  }
+};
+
 /// Numbers of one cam (input cam A / fixed turret, output cam B / output turret).
 struct CamResult {
   int lobes = 0, rollers = 0;
@@ -597,7 +737,7 @@ struct Result {
     std::optional<double> friction_coefficient;
     std::optional<Contact> contact;
     std::optional<nlohmann::json> transmission_error;  ///< TransmissionErrorJson's block
-    std::optional<nlohmann::json> life;                ///< the bearing and cam-contact lives (LifeJson)
+    std::optional<LifeBlock> life;                     ///< the bearing and cam-contact lives
     std::optional<OrError<LubricationResult>> lubrication;  ///< the losses, or why they are absent
     RatingsKeys ratings;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
     std::optional<OrError<OutputBearingBlock>> output_bearing;  ///< the rating, or why it is absent
@@ -639,8 +779,7 @@ struct Result {
                Field().Desc("transmission error and lost motion from the tolerances (with tolerances; docs/lcr.md)")
                    .Schema(TransmissionErrorSchema()));
       a->Visit("life", &life,
-               Field().Desc("the bearing lives and the cams' contact lives (with a speed or a duty cycle; docs/life.md)")
-                   .Schema(LifeSchema()));
+               Field().Desc("the bearing lives and the cams' contact lives (with a speed or a duty cycle; docs/life.md)"));
       a->Visit("lubrication", &lubrication,
                Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)"));
       ratings.Serialize(a);
@@ -672,7 +811,6 @@ struct Result {
     /// `camopt export`, the convergence headlines), the rest open (lcr_analysis_study.cc).
     static nlohmann::ordered_json SubsurfaceSchema();
     static nlohmann::ordered_json TransmissionErrorSchema();
-    static nlohmann::ordered_json LifeSchema();
     static nlohmann::ordered_json MeasuredSchema();
   };
   Json json;
