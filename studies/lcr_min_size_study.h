@@ -448,8 +448,9 @@ struct Result : sizing::LcrSearchOutcome {
 
   /// result.json, declared (studies/archive.h): Run fills it (FillResult; AddContact3DJson and
   /// RobustJson add their parts). The best designs, the 3D contact and the robust block are raw
-  /// JSON (their blocks are shared with lcr_analysis: SideJson, SubsurfaceJson, LifeJson,
-  /// SizedRatingsJson), described by their schemas (lcr_min_size_study.cc).
+  /// JSON (their blocks are shared with lcr_analysis: SideJson, SubsurfaceJson, SizedRatingsJson),
+  /// described by their schemas (lcr_min_size_study.cc); the best design's life inside them is
+  /// declared (SizingLife, its rows LifeTableRow).
   struct Json {
     struct Target {
       long speed_ratio = 0;
