@@ -1379,26 +1379,26 @@ void FillCommon(const Study& s, Result& r) {
   // the cycloid's own keys.
   if (r.transmission_error) {
     const cycloid::TransmissionErrorResult& te = *r.transmission_error;
-    nlohmann::json j = ToleranceStatisticsJson(te, s.tolerances->seed);
-    j["model"] = "kinematic (unloaded, rigid): the first ring pin to touch the disc on the loaded flank and the first "
-                 "output pin to touch its hole set the output angle; TE = output angle minus the nominal drive's at "
-                 "the same crank angle";
-    j["output_mechanism"] = s.output ? "pins in holes with clearance (first contact)"
-                                     : "rigid (no pin and hole radii given: no play, no output tolerances)";
-    j["distribution"] = "each deviation uniform in its ± band (a diameter's band is half on the radius); position "
-                        "bands apply to the radial and the tangential component each; linear: exact derivatives "
-                        "(ceres::Jet) of the pair and pin in contact";
-    j["angle_steps"] = te.crank_angle_rad.size();
-    j["crank_span_deg"] = 360.0 * s.drive.teeth;
-    j["parameters"] = te.parameters;
-    j["jammed_samples"] = te.jammed_samples;
-    j["backlash_arcmin"] = te.backlash_arcmin;
-    j["backlash_p99_arcmin"] = te.backlash_p99_arcmin;
-    j["backlash_nominal_arcmin"] = te.backlash_nominal_arcmin;
-    j["peak_to_peak"] = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are peak-to-peak "
-                        "over one output revolution; backlash: output angle forward minus reverse (both flanks, "
-                        "rigid), the largest over the revolution";
-    r.transmission_error_json = j;
+    Result::TransmissionErrorBlock& j = r.transmission_error_json.emplace();
+    j.SetStatistics(te, s.tolerances->seed);
+    j.model = "kinematic (unloaded, rigid): the first ring pin to touch the disc on the loaded flank and the first "
+              "output pin to touch its hole set the output angle; TE = output angle minus the nominal drive's at "
+              "the same crank angle";
+    j.output_mechanism = s.output ? "pins in holes with clearance (first contact)"
+                                  : "rigid (no pin and hole radii given: no play, no output tolerances)";
+    j.distribution = "each deviation uniform in its ± band (a diameter's band is half on the radius); position "
+                     "bands apply to the radial and the tangential component each; linear: exact derivatives "
+                     "(ceres::Jet) of the pair and pin in contact";
+    j.angle_steps = int(te.crank_angle_rad.size());
+    j.crank_span_deg = 360.0 * s.drive.teeth;
+    j.parameters = te.parameters;
+    j.jammed_samples = te.jammed_samples;
+    j.backlash_arcmin = te.backlash_arcmin;
+    j.backlash_p99_arcmin = te.backlash_p99_arcmin;
+    j.backlash_nominal_arcmin = te.backlash_nominal_arcmin;
+    j.peak_to_peak = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are peak-to-peak "
+                     "over one output revolution; backlash: output angle forward minus reverse (both flanks, "
+                     "rigid), the largest over the revolution";
   }
   if (s.inspection) {
     nlohmann::json j = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
@@ -1660,15 +1660,6 @@ void FillResult(const Study& s, Result& r) {
   r.name = s.name;
   if (s.loaded) FillLoaded(s, r);
   else FillUnloaded(s, r);
-}
-
-nlohmann::ordered_json Result::TransmissionErrorSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  for (const char* k : {"linear_worst_case_arcsec", "monte_carlo_max_arcsec", "monte_carlo_p99_arcsec"})
-    p[k] = {{"description", "peak-to-peak over one output revolution [arcsec]"}};
-  p["backlash_arcmin"] = {{"description", "the largest over the revolution [arcmin]"}};
-  return {{"type", "object"}, {"properties", p}};
 }
 
 namespace {

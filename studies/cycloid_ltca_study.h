@@ -430,6 +430,30 @@ inline constexpr double kToleranceShare = 0.05;
 /// stage's keys, or the unloaded stage's alone with analysis.evaluate ["unloaded"]), then the
 /// model's numbers the tables, plots and drawings are drawn from.
 struct Result {
+  /// result.json's "transmission_error" (with "tolerances"): the shared statistics and the
+  /// cycloid's backlash (model/cycloid/transmission_error.h).
+  struct TransmissionErrorBlock : ToleranceStatisticsBlock {
+    std::string model, output_mechanism, distribution, peak_to_peak;
+    int angle_steps = 0, parameters = 0, jammed_samples = 0;
+    double crank_span_deg = 0, backlash_arcmin = 0, backlash_p99_arcmin = 0, backlash_nominal_arcmin = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      ToleranceStatisticsBlock::Serialize(a);
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("model", &model, Field());
+      a->Visit("output_mechanism", &output_mechanism, Field().Desc("how the output pins take part"));
+      a->Visit("distribution", &distribution, Field().Desc("the deviations' distribution"));
+      a->Visit("angle_steps", &angle_steps, Field().Desc("crank angles over one output revolution"));
+      a->Visit("crank_span_deg", &crank_span_deg, Field().Unit("deg").Desc("the crank angles' span"));
+      a->Visit("parameters", &parameters, Field().Desc("scalar deviations"));
+      a->Visit("jammed_samples", &jammed_samples, Field().Desc("samples in which the drive jams somewhere"));
+      a->Visit("backlash_arcmin", &backlash_arcmin,
+               Field(n).Unit("arcmin").Desc("the samples' largest (without samples: the nominal's)"));
+      a->Visit("backlash_p99_arcmin", &backlash_p99_arcmin, Field(n).Unit("arcmin").Desc("their 99th percentile"));
+      a->Visit("backlash_nominal_arcmin", &backlash_nominal_arcmin, Field(n).Unit("arcmin"));
+      a->Visit("peak_to_peak", &peak_to_peak, Field().Desc("what the peak-to-peak keys span"));
+    }
+  };
   /// One pin-tooth pair in contact at a crank angle (per_angle[i].loads).
   struct PairLoadOut {
     int roller = 0;
@@ -653,7 +677,7 @@ struct Result {
   nlohmann::json geometry_files;                 ///< GeometryFilesJson's block
   std::optional<nlohmann::json> parts_json;      ///< result.json's parts (PartsJson)
   std::optional<GrindingOut> grinding;
-  std::optional<nlohmann::json> transmission_error_json;  ///< result.json's transmission_error
+  std::optional<TransmissionErrorBlock> transmission_error_json;  ///< result.json's transmission_error
   std::optional<nlohmann::json> inspection, measured_json;
   std::optional<cycloid_common::LifeBlock> life_json;  ///< result.json's life
   std::optional<int> discs;
@@ -720,8 +744,7 @@ struct Result {
     a->Visit("parts", &parts_json, Field().Desc("the drive's parts (studies/parts.h)").Schema({{"type", "object"}}));
     a->Visit("grinding", &grinding, Field().Desc("the form wheel (with grinding)"));
     a->Visit("transmission_error", &transmission_error_json,
-             Field().Desc("the kinematic transmission error from the tolerances (with tolerances)")
-                 .Schema(TransmissionErrorSchema()));
+             Field().Desc("the kinematic transmission error from the tolerances (with tolerances)"));
     a->Visit("inspection", &inspection,
              Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
     a->Visit("measured", &measured_json,
@@ -760,7 +783,6 @@ struct Result {
   }
   /// The schemas of the raw blocks shared with kinds whose result is not declared yet: the keys
   /// camopt reads from them (report.html's headlines), the rest open.
-  static nlohmann::ordered_json TransmissionErrorSchema();
 
   // Not in result.json: the model's numbers.
   /// Per angle (meshes) and over the cycle, at crank_angles_rad: the study's angles, or their

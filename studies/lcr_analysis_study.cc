@@ -1501,7 +1501,7 @@ void FillResult(const Study& st, Result& res) {
       c.grid = std::array<int, 2>{st.contact.options.grid_nx, st.contact.options.grid_ny};
     j.contact = c;
   }
-  if (res.transmission_error) j.transmission_error = TransmissionErrorJson(*st.tolerances, *res.transmission_error);
+  if (res.transmission_error) j.transmission_error = TransmissionErrorBlockOf(*st.tolerances, *res.transmission_error);
   if (res.life) j.life = LifeBlockOf(st, *res.life);
   j.lubrication = StageBlock(res.lubrication, bool(st.lubrication), res.lubrication_error);
   FillCatalogue(st, res, j);
@@ -1535,19 +1535,6 @@ nlohmann::ordered_json Result::Json::SubsurfaceSchema() {
   return {{"type", {"object", "null"}},
           {"description", "Johnson 1985, eq. 4.50 ff.; {} when no roller carries load"},
           {"properties", p}};
-}
-
-nlohmann::ordered_json Result::Json::TransmissionErrorSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  for (const char* k : {"linear_worst_case_arcsec", "monte_carlo_max_arcsec", "monte_carlo_p99_arcsec"})
-    p[k] = {{"description", "peak-to-peak over the input revolution [arcsec]"}};
-  for (const char* k : {"lost_motion_arcmin", "lost_motion_p99_arcmin", "lost_motion_nominal_arcmin"})
-    p[k] = {{"type", "number"}, {"description", "[arcmin]"}};
-  p["angle_steps"] = {{"type", "integer"}};
-  p["lost_motion_torque_fraction"] = {{"type", "number"}};
-  p["model"] = {{"type", "string"}};
-  return {{"type", "object"}, {"properties", p}, {"required", {"lost_motion_arcmin", "model"}}};
 }
 
 nlohmann::ordered_json Result::Json::MeasuredSchema() {

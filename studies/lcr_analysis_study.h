@@ -736,7 +736,7 @@ struct Result {
     std::optional<EccentricLoad> eccentric_load_N;
     std::optional<double> friction_coefficient;
     std::optional<Contact> contact;
-    std::optional<nlohmann::json> transmission_error;  ///< TransmissionErrorJson's block
+    std::optional<LcrTransmissionErrorBlock> transmission_error;
     std::optional<LifeBlock> life;                     ///< the bearing and cam-contact lives
     std::optional<OrError<LubricationResult>> lubrication;  ///< the losses, or why they are absent
     RatingsKeys ratings;  ///< rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, "ratings" (flat)
@@ -776,8 +776,7 @@ struct Result {
                Field().Desc("load.friction_coefficient μ of the eccentric (efficiency stage)"));
       a->Visit("contact", &contact, Field().Desc("the finite-length contact model (with contact)"));
       a->Visit("transmission_error", &transmission_error,
-               Field().Desc("transmission error and lost motion from the tolerances (with tolerances; docs/lcr.md)")
-                   .Schema(TransmissionErrorSchema()));
+               Field().Desc("transmission error and lost motion from the tolerances (with tolerances; docs/lcr.md)"));
       a->Visit("life", &life,
                Field().Desc("the bearing lives and the cams' contact lives (with a speed or a duty cycle; docs/life.md)"));
       a->Visit("lubrication", &lubrication,
@@ -810,7 +809,6 @@ struct Result {
     /// The schemas of the raw blocks: the keys camopt reads from them (report.html, datasheet.html,
     /// `camopt export`, the convergence headlines), the rest open (lcr_analysis_study.cc).
     static nlohmann::ordered_json SubsurfaceSchema();
-    static nlohmann::ordered_json TransmissionErrorSchema();
     static nlohmann::ordered_json MeasuredSchema();
   };
   Json json;

@@ -34,17 +34,18 @@ std::optional<LcrToleranceSpec> ToToleranceSpec(const std::optional<LcrTolerance
 
 std::string LoadModelName(lcr::LoadModel m) { return m == lcr::LoadModel::kRigid ? "rigid" : "compliant"; }
 
-nlohmann::json TransmissionErrorJson(const LcrToleranceSpec& spec, const lcr::TransmissionErrorResult& te) {
-  nlohmann::json j = ToleranceStatisticsJson(te, spec.seed);
-  j["model"] = "compliant contacts (Palmgren) with exact per-roller gaps; TE = output angle minus the "
-               "nominal reducer's at the same input angle and torque";
-  j["angle_steps"] = spec.angle_steps;
-  j["lost_motion_arcmin"] = te.lost_motion_arcmin;
-  j["lost_motion_p99_arcmin"] = te.lost_motion_p99_arcmin;
-  j["lost_motion_nominal_arcmin"] = te.lost_motion_nominal_arcmin;
-  j["peak_to_peak"] = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are "
-                      "peak-to-peak over the input revolution";
-  j["lost_motion_torque_fraction"] = spec.lost_motion_torque_fraction;
+LcrTransmissionErrorBlock TransmissionErrorBlockOf(const LcrToleranceSpec& spec, const lcr::TransmissionErrorResult& te) {
+  LcrTransmissionErrorBlock j;
+  j.SetStatistics(te, spec.seed);
+  j.model = "compliant contacts (Palmgren) with exact per-roller gaps; TE = output angle minus the "
+            "nominal reducer's at the same input angle and torque";
+  j.angle_steps = spec.angle_steps;
+  j.lost_motion_arcmin = te.lost_motion_arcmin;
+  j.lost_motion_p99_arcmin = te.lost_motion_p99_arcmin;
+  j.lost_motion_nominal_arcmin = te.lost_motion_nominal_arcmin;
+  j.peak_to_peak = "linear_worst_case_arcsec, monte_carlo_max_arcsec and monte_carlo_p99_arcsec are "
+                   "peak-to-peak over the input revolution";
+  j.lost_motion_torque_fraction = spec.lost_motion_torque_fraction;
   return j;
 }
 

@@ -68,7 +68,27 @@ std::optional<LcrToleranceSpec> ToToleranceSpec(const std::optional<LcrTolerance
 
 std::string LoadModelName(lcr::LoadModel m);
 
-/// The "transmission_error" object of result.json.
-nlohmann::json TransmissionErrorJson(const LcrToleranceSpec& spec, const lcr::TransmissionErrorResult& te);
+/// The "transmission_error" object of result.json: the shared statistics and the lost motion.
+struct LcrTransmissionErrorBlock : ToleranceStatisticsBlock {
+  std::string model, peak_to_peak;
+  int angle_steps = 0;
+  double lost_motion_arcmin = 0, lost_motion_p99_arcmin = 0, lost_motion_nominal_arcmin = 0;
+  double lost_motion_torque_fraction = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    ToleranceStatisticsBlock::Serialize(a);
+    const Field n = Field().NullWhenNotFinite();
+    a->Visit("model", &model, Field());
+    a->Visit("angle_steps", &angle_steps, Field().Desc("input angles over one input revolution"));
+    a->Visit("lost_motion_arcmin", &lost_motion_arcmin,
+             Field(n).Unit("arcmin").Desc("the samples' largest (without samples: the nominal's)"));
+    a->Visit("lost_motion_p99_arcmin", &lost_motion_p99_arcmin, Field(n).Unit("arcmin").Desc("their 99th percentile"));
+    a->Visit("lost_motion_nominal_arcmin", &lost_motion_nominal_arcmin, Field(n).Unit("arcmin"));
+    a->Visit("peak_to_peak", &peak_to_peak, Field().Desc("what the peak-to-peak keys span"));
+    a->Visit("lost_motion_torque_fraction", &lost_motion_torque_fraction,
+             Field().Desc("± this share of the output torque measures the lost motion"));
+  }
+};
+LcrTransmissionErrorBlock TransmissionErrorBlockOf(const LcrToleranceSpec& spec, const lcr::TransmissionErrorResult& te);
 
 }  // namespace camopt::studies

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -34,9 +35,54 @@ void VisitMonteCarloSamples(Archive* a, std::optional<int>* samples, std::option
   a->Visit("seed", seed, Field().AtLeast(0).Desc("seed of the samples (absent: 1)"));
 }
 
-/// The statistics' keys of "transmission_error": the linear worst case, largest |TE| and RMS, the
-/// Monte-Carlo's samples, seed, maximum and 99th percentile of the peak-to-peak, RMS, largest |TE|
-/// and the linear model's largest error (null without samples), and the contributions per key.
-nlohmann::json ToleranceStatisticsJson(const tolerance::Statistics& te, std::uint64_t seed);
+/// The statistics' keys of result.json's "transmission_error", the same for every reducer: the
+/// linear worst case, largest |TE| and RMS, the Monte-Carlo's samples, seed, maximum and 99th
+/// percentile of the peak-to-peak, RMS (null without samples), largest |TE| and the linear model's
+/// largest error (absent without samples), and the contributions per tolerance key. A reducer's
+/// block derives from it and adds its own keys after ToleranceStatisticsBlock::Serialize.
+struct ToleranceStatisticsBlock {
+  struct Contribution {
+    double worst_case_arcsec = 0, rms_arcsec = 0, variance_share = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("worst_case_arcsec", &worst_case_arcsec, Field(n).Unit("arcsec").Desc("its part of the linear worst case"));
+      a->Visit("rms_arcsec", &rms_arcsec, Field(n).Unit("arcsec").Desc("its part of the linear RMS"));
+      a->Visit("variance_share", &variance_share, Field(n).Desc("its share of the linear variance"));
+    }
+  };
+  double linear_worst_case_arcsec = 0, linear_worst_case_abs_arcsec = 0, linear_rms_arcsec = 0;
+  int monte_carlo_samples = 0;
+  std::uint64_t monte_carlo_seed = 1;
+  std::optional<double> monte_carlo_max_arcsec, monte_carlo_p99_arcsec, monte_carlo_rms_arcsec,
+      monte_carlo_max_abs_arcsec, linear_vs_exact_max_error;
+  std::map<std::string, Contribution> contributions;
+
+  /// The keys from the analysis' statistics and the samples' seed.
+  void SetStatistics(const tolerance::Statistics& te, std::uint64_t seed);
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field n = Field().NullWhenNotFinite();
+    const Field sampled = Field().NullWhenAbsent().NullWhenNotFinite();
+    a->Visit("linear_worst_case_arcsec", &linear_worst_case_arcsec,
+             Field(n).Unit("arcsec").Desc("the linear model's worst peak-to-peak over the tolerance box"));
+    a->Visit("linear_worst_case_abs_arcsec", &linear_worst_case_abs_arcsec,
+             Field(n).Unit("arcsec").Desc("the linear model's worst |TE| over the box"));
+    a->Visit("linear_rms_arcsec", &linear_rms_arcsec, Field(n).Unit("arcsec").Desc("over the angles and the bands"));
+    a->Visit("monte_carlo_samples", &monte_carlo_samples, Field());
+    a->Visit("monte_carlo_seed", &monte_carlo_seed, Field());
+    a->Visit("monte_carlo_max_arcsec", &monte_carlo_max_arcsec,
+             Field(sampled).Unit("arcsec").Desc("the samples' largest peak-to-peak (null: no samples)"));
+    a->Visit("monte_carlo_p99_arcsec", &monte_carlo_p99_arcsec,
+             Field(sampled).Unit("arcsec").Desc("their 99th percentile (null: no samples)"));
+    a->Visit("monte_carlo_rms_arcsec", &monte_carlo_rms_arcsec,
+             Field(sampled).Unit("arcsec").Desc("the samples' RMS TE (null: no samples)"));
+    a->Visit("monte_carlo_max_abs_arcsec", &monte_carlo_max_abs_arcsec,
+             Field(n).Unit("arcsec").Desc("with samples: their largest |TE|"));
+    a->Visit("linear_vs_exact_max_error", &linear_vs_exact_max_error,
+             Field(n).Desc("with samples: the linear model's largest error over the largest peak-to-peak"));
+    a->Visit("contributions", &contributions, Field().Desc("by tolerance key"));
+  }
+};
 
 }  // namespace camopt::studies
