@@ -1447,49 +1447,33 @@ void FillCatalogue(const Study& s, Result& r) {
   if (r.torsion && r.segments) {
     const cycloid::TorsionCurve& c = *r.torsion;
     const ThreeSegmentStiffness& g = *r.segments;
-    nlohmann::json curve = nlohmann::json::array();
-    for (const cycloid::TorsionPoint& p : c.points) curve.push_back({p.torque_Nmm / 1000.0, p.output_angle_rad});
-    nlohmann::json losses = nlohmann::json::array();
-    std::optional<double> efficiency;
-    double friction_Nm = 0.0;
+    JointModelBlock& joint = r.joint_model.emplace();
+    for (const cycloid::TorsionPoint& p : c.points) joint.torsion_curve.push_back({p.torque_Nmm / 1000.0, p.output_angle_rad});
     if (r.lubrication) {
       // The lubricated operating point: its efficiency and the no-load running torque (at the input,
       // reflected to the output through the ratio for the joint's friction).
       const LubricationResult& l = *r.lubrication;
-      efficiency = l.efficiency;
-      friction_Nm = l.no_load_running_torque_Nm * double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
-      losses.push_back({{"input_speed_rad_s", l.input_speed_rpm * 2.0 * kPi / 60.0},
-                        {"efficiency_forward", l.efficiency},
-                        {"efficiency_backward", l.efficiency},
-                        {"friction_torque_input_Nm", l.no_load_running_torque_Nm}});
+      joint.efficiency = l.efficiency;
+      joint.friction_torque_Nm =
+          l.no_load_running_torque_Nm * double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
+      joint.loss_table.push_back(
+          {l.input_speed_rpm * 2.0 * kPi / 60.0, l.efficiency, l.efficiency, l.no_load_running_torque_Nm});
     }
-    nlohmann::json joint = {
-        {"ratio", double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth)},
-        {"rated_torque_Nm", s.stiffness->rated_torque_Nm},
-        {"stiffness_Nm_per_rad", Finite(c.stiffness_Nmm_per_rad / 1000.0, "stiffness")},
-        {"stiffness_segments",
-         {{"T1_Nm", s.segment_T1_Nm},
-          {"T2_Nm", s.segment_T2_Nm},
-          {"K1_Nm_per_rad", g.k1_Nm_per_arcmin * kArcminPerRad},
-          {"K2_Nm_per_rad", g.k2_Nm_per_arcmin * kArcminPerRad},
-          {"K3_Nm_per_rad", g.k3_Nm_per_arcmin * kArcminPerRad}}},
-        {"torsion_curve", curve},
-        {"backlash_rad", c.backlash_rad},
-        {"lost_motion_rad", c.lost_motion_rad},
-        {"lost_motion_percent", 3},
-        {"reflected_inertia_kgm2", r.masses.reflected_inertia_kgm2},
-        {"inertia_includes", r.masses.includes},
-        {"damping_Nms_per_rad", 0.0},
-        {"damping_note", "not modelled: the contact model is quasi-static and frictionless (no hysteresis width)"},
-        {"friction_torque_Nm", friction_Nm},
-        {"friction_note", r.lubrication ? "the lubricated no-load running torque at the load's speed and oil "
+    joint.ratio = double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
+    joint.rated_torque_Nm = s.stiffness->rated_torque_Nm;
+    joint.stiffness_Nm_per_rad = Finite(c.stiffness_Nmm_per_rad / 1000.0, "stiffness");
+    joint.stiffness_segments = {s.segment_T1_Nm, s.segment_T2_Nm, g.k1_Nm_per_arcmin * kArcminPerRad,
+                                g.k2_Nm_per_arcmin * kArcminPerRad, g.k3_Nm_per_arcmin * kArcminPerRad};
+    joint.backlash_rad = c.backlash_rad;
+    joint.lost_motion_rad = c.lost_motion_rad;
+    joint.reflected_inertia_kgm2 = r.masses.reflected_inertia_kgm2;
+    joint.inertia_includes = r.masses.includes;
+    joint.damping_note = "not modelled: the contact model is quasi-static and frictionless (no hysteresis width)";
+    joint.friction_note = r.lubrication ? "the lubricated no-load running torque at the load's speed and oil "
                                           "temperature, reflected to the output; loss_table's backward efficiency "
                                           "repeats the forward one (the model computes the input-driving direction)"
-                                        : "not modelled without a lubricant (frictionless)"},
-        {"efficiency", efficiency ? nlohmann::json(*efficiency) : nlohmann::json(nullptr)},
-        {"loss_table", losses}};
-    AddJointTilt(s.output_bearing, joint);
-    r.joint_model = joint;
+                                        : "not modelled without a lubricant (frictionless)";
+    joint.SetTilt(s.output_bearing);
   }
 }
 

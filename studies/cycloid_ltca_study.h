@@ -692,7 +692,7 @@ struct Result {
   std::optional<OrError<OutputBearingBlock>> output_bearing_json;  ///< the rating, or why it is absent
   std::optional<StiffnessSegmentsOut> stiffness_segments;
   std::optional<MassesOut> masses_out;                ///< result.json's masses
-  std::optional<nlohmann::json> joint_model;          ///< the parameters `camopt export` reads
+  std::optional<JointModelBlock> joint_model;         ///< the parameters `camopt export` reads
   std::optional<OrError<LubricationResult>> lubrication_json;  ///< the losses, or why they are absent
   std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;  ///< the dynamics, or why they are absent
   template <typename Archive>
@@ -775,7 +775,7 @@ struct Result {
     a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
     a->Visit("masses", &masses_out, Field().Desc("with stiffness or ratings"));
     a->Visit("joint_model", &joint_model,
-             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelResultSchema()));
+             Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)"));
     a->Visit("lubrication", &lubrication_json,
              Field().Desc("the lubricated losses (with lubricant; docs/lubrication.md)"));
     a->Visit("torsional_dynamics", &torsional_dynamics,

@@ -1242,32 +1242,20 @@ void FillCatalogue(const Study& st, const Result& res, Result::Json& j) {
         k.T1_Nm, k.T2_Nm, k.rated_torque_Nm, g.k1_Nm_per_arcmin, g.k2_Nm_per_arcmin, g.k3_Nm_per_arcmin,
         "loading branch from 0: K1 = T1 / (angle(T1) - angle(0)), K2 = (T2 - T1) / (angle(T2) - angle(T1)), K3 = "
         "(T_r - T2) / (angle(T_r) - angle(T2))"};
-    nlohmann::json curve = nlohmann::json::array();
-    for (const auto& [t, a] : res.torsion_curve) curve.push_back({t, a});
-    nlohmann::json joint = {
-        {"ratio", ratio},
-        {"rated_torque_Nm", k.rated_torque_Nm},
-        {"stiffness_Nm_per_rad", res.stiffness_Nm_per_rad},
-        {"stiffness_segments",
-         {{"T1_Nm", k.T1_Nm},
-          {"T2_Nm", k.T2_Nm},
-          {"K1_Nm_per_rad", g.k1_Nm_per_arcmin * kArcminPerRad},
-          {"K2_Nm_per_rad", g.k2_Nm_per_arcmin * kArcminPerRad},
-          {"K3_Nm_per_rad", g.k3_Nm_per_arcmin * kArcminPerRad}}},
-        {"torsion_curve", curve},
-        {"backlash_rad", 0.0},
-        {"lost_motion_rad", res.lost_motion_rad},
-        {"lost_motion_percent", 3},
-        {"reflected_inertia_kgm2", res.reflected_inertia_kgm2},
-        {"inertia_includes", "the cam's orbit and spin (masses.includes)"},
-        {"damping_Nms_per_rad", 0.0},
-        {"damping_note", "not modelled: the contact model is quasi-static and frictionless"},
-        {"friction_torque_Nm", 0.0},
-        {"friction_note", "not modelled in the joint (the LCR's losses are in the efficiency stage and lubrication)"},
-        {"efficiency", res.lubrication ? nlohmann::json(res.lubrication->efficiency) : nlohmann::json(nullptr)},
-        {"loss_table", nlohmann::json::array()}};
-    AddJointTilt(st.output_bearing, joint);
-    j.joint_model = std::move(joint);
+    JointModelBlock& joint = j.joint_model.emplace();
+    for (const auto& [t, a] : res.torsion_curve) joint.torsion_curve.push_back({t, a});
+    joint.ratio = ratio;
+    joint.rated_torque_Nm = k.rated_torque_Nm;
+    joint.stiffness_Nm_per_rad = res.stiffness_Nm_per_rad;
+    joint.stiffness_segments = {k.T1_Nm, k.T2_Nm, g.k1_Nm_per_arcmin * kArcminPerRad, g.k2_Nm_per_arcmin * kArcminPerRad,
+                                g.k3_Nm_per_arcmin * kArcminPerRad};
+    joint.lost_motion_rad = res.lost_motion_rad;
+    joint.reflected_inertia_kgm2 = res.reflected_inertia_kgm2;
+    joint.inertia_includes = "the cam's orbit and spin (masses.includes)";
+    joint.damping_note = "not modelled: the contact model is quasi-static and frictionless";
+    joint.friction_note = "not modelled in the joint (the LCR's losses are in the efficiency stage and lubrication)";
+    if (res.lubrication) joint.efficiency = res.lubrication->efficiency;
+    joint.SetTilt(st.output_bearing);
   }
 }
 

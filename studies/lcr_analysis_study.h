@@ -745,7 +745,7 @@ struct Result {
     std::optional<double> torsional_stiffness_Nm_per_arcmin, lost_motion_arcmin, backlash_arcmin;
     std::optional<Stiffness> stiffness;
     std::optional<StiffnessSegments> stiffness_segments;
-    std::optional<nlohmann::json> joint_model;         ///< the parameters `camopt export` reads
+    std::optional<JointModelBlock> joint_model;        ///< the parameters `camopt export` reads
     std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;  ///< the dynamics, or why they are absent
     std::vector<std::string> notes;
     std::optional<nlohmann::json> geometry_files;      ///< GeometryFilesJson's block
@@ -794,7 +794,7 @@ struct Result {
       a->Visit("stiffness", &stiffness, Field().Desc("the torsional curve (with stiffness)"));
       a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("with stiffness"));
       a->Visit("joint_model", &joint_model,
-               Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)").Schema(JointModelResultSchema()));
+               Field().Desc("the joint `camopt export` writes for a simulator (with stiffness)"));
       a->Visit("torsional_dynamics", &torsional_dynamics,
                Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)"));
       a->Visit("notes", &notes, Field().Desc("what the numbers do not say (an undercut, a zero torque, a model's warning)"));

@@ -103,13 +103,13 @@ OutputBearingBlock OutputBearingBlock::Of(const OutputBearingInput& in, const Ou
   return j;
 }
 
-void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& joint_model) {
+void JointModelBlock::SetTilt(const std::optional<OutputBearingInput>& in) {
   if (in && in->moment_stiffness_Nm_per_arcmin) {
-    joint_model["tilt_stiffness_Nm_per_rad"] = *in->moment_stiffness_Nm_per_arcmin * kArcminPerRad;
-    joint_model["tilt_note"] = "output_bearing.moment_stiffness_Nm_per_arcmin (the catalogue's K_B, linear)";
+    tilt_stiffness_Nm_per_rad = *in->moment_stiffness_Nm_per_arcmin * kArcminPerRad;
+    tilt_note = "output_bearing.moment_stiffness_Nm_per_arcmin (the catalogue's K_B, linear)";
   } else {
-    joint_model["tilt_stiffness_Nm_per_rad"] = nullptr;
-    joint_model["tilt_note"] = "not given: no output_bearing.moment_stiffness_Nm_per_arcmin (rigid in tilt)";
+    tilt_stiffness_Nm_per_rad.reset();
+    tilt_note = "not given: no output_bearing.moment_stiffness_Nm_per_arcmin (rigid in tilt)";
   }
 }
 
@@ -120,17 +120,6 @@ void CheckSizingRatingsAlone(const Node& root, bool life_limit, bool duty_cycle)
   if (duty_cycle)
     root["ratings"].FailWith("the rated torque sets the lives' one line (the rated torque and speed): not with "
                              "duty_cycle; would fit: one of the two");
-}
-
-nlohmann::ordered_json JointModelResultSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  for (const char* k : {"ratio", "rated_torque_Nm", "stiffness_Nm_per_rad", "stiffness_segments", "torsion_curve",
-                        "backlash_rad", "lost_motion_rad", "lost_motion_percent", "reflected_inertia_kgm2",
-                        "inertia_includes", "damping_Nms_per_rad", "damping_note", "friction_torque_Nm",
-                        "friction_note", "efficiency", "loss_table", "tilt_stiffness_Nm_per_rad", "tilt_note"})
-    p[k] = ojson::object();
-  return {{"type", "object"}, {"properties", p}};
 }
 
 }  // namespace camopt::studies

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <array>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -267,12 +268,76 @@ struct OutputBearingBlock {
   static OutputBearingBlock Of(const OutputBearingInput& in, const OutputBearingResult& r);
 };
 
-/// joint_model's "tilt_stiffness_Nm_per_rad" (the output bearing's moment stiffness K_B, the output's
-/// tilt about each axis across the reducer's; null when not given) and "tilt_note".
-void AddJointTilt(const std::optional<OutputBearingInput>& in, nlohmann::json& joint_model);
+/// result.json's "joint_model" (cycloid_ltca and lcr_analysis, with stiffness): the parameters
+/// `camopt export` turns into a simulator's joint (docs/export.md: each field's unit and meaning).
+struct JointModelBlock {
+  struct Segments {
+    double T1_Nm = 0, T2_Nm = 0, K1_Nm_per_rad = 0, K2_Nm_per_rad = 0, K3_Nm_per_rad = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("T1_Nm", &T1_Nm, Field(n).Unit("N·m"));
+      a->Visit("T2_Nm", &T2_Nm, Field(n).Unit("N·m"));
+      a->Visit("K1_Nm_per_rad", &K1_Nm_per_rad, Field(n).Unit("N·m/rad").Desc("up to T1"));
+      a->Visit("K2_Nm_per_rad", &K2_Nm_per_rad, Field(n).Unit("N·m/rad").Desc("up to T2"));
+      a->Visit("K3_Nm_per_rad", &K3_Nm_per_rad, Field(n).Unit("N·m/rad").Desc("above T2"));
+    }
+  };
+  struct Loss {
+    double input_speed_rad_s = 0, efficiency_forward = 0, efficiency_backward = 0, friction_torque_input_Nm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      const Field n = Field().NullWhenNotFinite();
+      a->Visit("input_speed_rad_s", &input_speed_rad_s, Field(n).Unit("rad/s"));
+      a->Visit("efficiency_forward", &efficiency_forward, Field(n));
+      a->Visit("efficiency_backward", &efficiency_backward, Field(n));
+      a->Visit("friction_torque_input_Nm", &friction_torque_input_Nm, Field(n).Unit("N·m"));
+    }
+  };
+  double ratio = 0, rated_torque_Nm = 0, stiffness_Nm_per_rad = 0;
+  Segments stiffness_segments;
+  std::vector<std::array<double, 2>> torsion_curve;
+  double backlash_rad = 0, lost_motion_rad = 0;
+  int lost_motion_percent = 3;
+  double reflected_inertia_kgm2 = 0;
+  std::string inertia_includes;
+  double damping_Nms_per_rad = 0;
+  std::string damping_note;
+  double friction_torque_Nm = 0;
+  std::string friction_note;
+  std::optional<double> efficiency;
+  std::vector<Loss> loss_table;
+  std::optional<double> tilt_stiffness_Nm_per_rad;
+  std::string tilt_note;
 
-/// The JSON Schema of result.json's joint_model block (cycloid_ltca and lcr_analysis; AddJointTilt
-/// adds the tilt keys): the keys camopt reads.
-nlohmann::ordered_json JointModelResultSchema();
+  /// tilt_stiffness_Nm_per_rad (the output bearing's moment stiffness K_B, the output's tilt about
+  /// each axis across the reducer's; null when not given) and tilt_note.
+  void SetTilt(const std::optional<OutputBearingInput>& in);
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field n = Field().NullWhenNotFinite();
+    a->Visit("ratio", &ratio, Field(n).Desc("input turns per output turn"));
+    a->Visit("rated_torque_Nm", &rated_torque_Nm, Field(n).Unit("N·m"));
+    a->Visit("stiffness_Nm_per_rad", &stiffness_Nm_per_rad,
+             Field(n).Unit("N·m/rad").Desc("the slope from 50 to 100 % of the rated torque"));
+    a->Visit("stiffness_segments", &stiffness_segments, Field().Desc("the three-slope curve"));
+    a->Visit("torsion_curve", &torsion_curve,
+             Field(n).Desc("[torque N·m, output angle rad] along the loading branch, by ascending torque"));
+    a->Visit("backlash_rad", &backlash_rad, Field(n).Unit("rad").Desc("the dead band's width"));
+    a->Visit("lost_motion_rad", &lost_motion_rad, Field(n).Unit("rad"));
+    a->Visit("lost_motion_percent", &lost_motion_percent, Field().Unit("%").Desc("of the rated torque"));
+    a->Visit("reflected_inertia_kgm2", &reflected_inertia_kgm2, Field(n).Unit("kg·m²").Desc("at the output"));
+    a->Visit("inertia_includes", &inertia_includes, Field());
+    a->Visit("damping_Nms_per_rad", &damping_Nms_per_rad, Field(n).Unit("N·m·s/rad"));
+    a->Visit("damping_note", &damping_note, Field());
+    a->Visit("friction_torque_Nm", &friction_torque_Nm, Field(n).Unit("N·m").Desc("no-load running torque at the output"));
+    a->Visit("friction_note", &friction_note, Field());
+    a->Visit("efficiency", &efficiency, Field(n).NullWhenAbsent().Desc("both directions (null: not computed)"));
+    a->Visit("loss_table", &loss_table, Field().Desc("losses over the input speed (may be empty)"));
+    a->Visit("tilt_stiffness_Nm_per_rad", &tilt_stiffness_Nm_per_rad,
+             Field(n).NullWhenAbsent().Unit("N·m/rad").Desc("the output bearing's K_B (null: rigid in tilt)"));
+    a->Visit("tilt_note", &tilt_note, Field());
+  }
+};
 
 }  // namespace camopt::studies
