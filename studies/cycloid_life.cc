@@ -64,7 +64,7 @@ LifeBlock LifeBlockOf(const LifeSpec& spec, const LifeResult& l) {
   double shortest_nm_h = kInf;  // the modified lives computed (a bearing with C_u and D_pw, kappa >= 0.1)
   std::string shortest_nm;
   for (const ElementLife& e : l.elements) {
-    (e.name == "pins" ? lj.pins_L10h.emplace() : lj.crank_bearing_L10h) = e.life.L10h;
+    lj.SetElementLife(e.name, e.life.L10h);
     LifeTableRow row = BearingLifeRow(e.name, e.rating.kind == BearingKind::kBall, e.life.equivalent_load_N,
                                       e.life.max_load_N, e.life.revolutions_per_input_revolution, e.rating.dynamic_N,
                                       e.rating.static_N, e.s0, e.life.L10h, 0.0);

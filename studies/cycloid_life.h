@@ -61,25 +61,20 @@ struct LifeOutputMechanism {
   }
 };
 
-/// result.json's "life" of cycloid_ltca and cycloid_crowning_tuning (docs/life.md, "Cycloid"):
-/// the crank bearing's and the pins' L10h, the shortest, the table (the rows of every kind's life
-/// table), the duty cycle and the output mechanism; with `l.oil` the modified life of the bearings
-/// given C_u and D_pw (AddModifiedLife) and the shortest of those.
-struct LifeBlock {
+/// What every cycloid life block has: the crank bearing's and the pins' L10h, the shortest, the
+/// table (the rows of every kind's life table) and the duty cycle.
+struct CycloidLives {
   double shortest_L10h = 0;
   std::string shortest_bearing;
   double crank_bearing_L10h = 0;
   std::optional<double> pins_L10h;
   std::vector<LifeTableRow> table;
-  std::optional<double> shortest_L_nm_h;
-  std::optional<nlohmann::json> shortest_L_nm_bearing;
   std::vector<DutyCycleEcho> duty_cycle;
-  double mean_input_speed_rpm = 0;
-  LifeOutputMechanism output_mechanism;
-  int crank_bearing_samples_per_line = 0;
-  std::optional<double> efficiency_energy_mean;  ///< never set: null (the efficiency is lubrication's)
-  std::string efficiency, model;
-  std::optional<std::string> design;  ///< cycloid_crowning_tuning: which design the lives are of
+
+  /// The element's L10h to its key: crank_bearing_L10h or pins_L10h.
+  void SetElementLife(const std::string& element, double L10h) {
+    (element == "pins" ? pins_L10h.emplace() : crank_bearing_L10h) = L10h;
+  }
   template <typename Archive>
   void Serialize(Archive* a) {
     const Field hours = Field().NullWhenNotFinite().Unit("h");
@@ -88,11 +83,31 @@ struct LifeBlock {
     a->Visit("crank_bearing_L10h", &crank_bearing_L10h, Field(hours).Desc("null: unlimited"));
     a->Visit("pins_L10h", &pins_L10h, Field(hours).Desc("with rated pins (null: unlimited)"));
     a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
+    a->Visit("duty_cycle", &duty_cycle, Field());
+  }
+};
+
+/// result.json's "life" of cycloid_ltca and cycloid_crowning_tuning (docs/life.md, "Cycloid"):
+/// the crank bearing's and the pins' L10h, the shortest, the table (the rows of every kind's life
+/// table), the duty cycle and the output mechanism; with `l.oil` the modified life of the bearings
+/// given C_u and D_pw (AddModifiedLife) and the shortest of those.
+struct LifeBlock : CycloidLives {
+  std::optional<double> shortest_L_nm_h;
+  std::optional<nlohmann::json> shortest_L_nm_bearing;
+  double mean_input_speed_rpm = 0;
+  LifeOutputMechanism output_mechanism;
+  int crank_bearing_samples_per_line = 0;
+  std::optional<double> efficiency_energy_mean;  ///< never set: null (the efficiency is lubrication's)
+  std::string efficiency, model;
+  std::optional<std::string> design;  ///< cycloid_crowning_tuning: which design the lives are of
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    CycloidLives::Serialize(a);
+    const Field hours = Field().NullWhenNotFinite().Unit("h");
     a->Visit("shortest_L_nm_h", &shortest_L_nm_h,
              Field(hours).Desc("with a lubricant: the shortest modified life computed (null: none)"));
     a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing,
              Field().Schema({{"type", {"string", "null"}}}).Desc("with a lubricant: its bearing (null: none)"));
-    a->Visit("duty_cycle", &duty_cycle, Field());
     a->Visit("mean_input_speed_rpm", &mean_input_speed_rpm, Field().Unit("rpm"));
     a->Visit("output_mechanism", &output_mechanism, Field());
     a->Visit("crank_bearing_samples_per_line", &crank_bearing_samples_per_line, Field());
@@ -106,26 +121,14 @@ LifeBlock LifeBlockOf(const LifeSpec& spec, const LifeResult& l);
 
 /// cycloid_min_size's best.life: the accurate model's lives of the sized design, as LifeBlock's,
 /// with the limit (life_h) and each row's pass/fail against it.
-struct SizingLifeBlock {
+struct SizingLifeBlock : CycloidLives {
   std::optional<double> life_h;
-  double shortest_L10h = 0;
-  std::string shortest_bearing;
-  double crank_bearing_L10h = 0;
-  std::optional<double> pins_L10h;
-  std::vector<LifeTableRow> table;
-  std::vector<DutyCycleEcho> duty_cycle;
   LifeOutputMechanism output_mechanism;
   std::string efficiency, model;
   template <typename Archive>
   void Serialize(Archive* a) {
-    const Field hours = Field().NullWhenNotFinite().Unit("h");
     a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("limits.life_h (null: none)"));
-    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("null: unlimited"));
-    a->Visit("shortest_bearing", &shortest_bearing, Field().Desc("crank_bearing or pins"));
-    a->Visit("crank_bearing_L10h", &crank_bearing_L10h, Field(hours).Desc("null: unlimited"));
-    a->Visit("pins_L10h", &pins_L10h, Field(hours).Desc("with rated pins (null: unlimited)"));
-    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
-    a->Visit("duty_cycle", &duty_cycle, Field());
+    CycloidLives::Serialize(a);
     a->Visit("output_mechanism", &output_mechanism, Field());
     a->Visit("efficiency", &efficiency, Field().Desc("where the efficiency is"));
     a->Visit("model", &model, Field());

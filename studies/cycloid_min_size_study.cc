@@ -1066,7 +1066,7 @@ cycloid_common::SizingLifeBlock SizingLifeOf(const Study& s, const cycloid::Driv
   lj.shortest_L10h = acc.shortest_life_h;
   double least = kInf;
   for (const sizing::CycloidBearingLife& b : acc.lives) {
-    (b.name == "pins" ? lj.pins_L10h.emplace() : lj.crank_bearing_L10h) = b.life.L10h;
+    lj.SetElementLife(b.name, b.life.L10h);
     if (lj.shortest_bearing.empty() || b.life.L10h < least) lj.shortest_bearing = b.name, least = b.life.L10h;
     LifeTableRow row = BearingLifeRow(b.name, b.ball, b.life.equivalent_load_N, b.life.max_load_N,
                                       b.life.revolutions_per_input_revolution, b.dynamic_N, b.static_N, b.s0,
