@@ -156,7 +156,7 @@ std::vector<DutyCycleEcho> DutyCycleEchoOf(const std::vector<OperatingLine>& lin
 }
 
 nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines) {
-  return nlohmann::json(ResultWriter::Value(DutyCycleEchoOf(lines), Field(), "/life/duty_cycle"));
+  return nlohmann::json(ResultWriter::Value(DutyCycleEchoOf(lines), Field(), "/duty_cycle"));
 }
 
 LifeTableRow BearingLifeRow(const std::string& element, bool ball, double equivalent_load_N, double max_load_N,
@@ -176,17 +176,6 @@ LifeTableRow BearingLifeRow(const std::string& element, bool ball, double equiva
   }
   if (life_h > 0) e.pass = L10h >= life_h;
   return e;
-}
-
-nlohmann::json LifeRowJson(const LifeTableRow& row) {
-  return nlohmann::json(ResultWriter::Value(row, Field(), "/life/table"));
-}
-
-nlohmann::ordered_json LifeTableSchema() {
-  LifeTableRow row;
-  nlohmann::ordered_json items = nlohmann::ordered_json::object();
-  ResultSchemaEmitter::Describe(&row, Field(), items);
-  return {{"type", "array"}, {"items", items}, {"description", "report.html's and datasheet.html's rows"}};
 }
 
 }  // namespace camopt::studies

@@ -257,12 +257,6 @@ LifeTableRow BearingLifeRow(const std::string& element, bool ball, double equiva
                             double revolutions_per_input_revolution, double dynamic_rating_N, double static_rating_N,
                             double s0, double L10h, double life_h);
 
-/// A row as result.json's raw life blocks hold it.
-nlohmann::json LifeRowJson(const LifeTableRow& row);
-
-/// The JSON Schema of a life table (an array of LifeTableRow), for the raw life blocks' schemas.
-nlohmann::ordered_json LifeTableSchema();
-
 /// Adds the modified life L_nm = a1 a_ISO L10 (ISO 281:2007 §9.3, a1 = 1;
 /// model/common/life_modification.h) to a bearing's life-table row: mean_speed_rpm,
 /// pitch_diameter_mm, fatigue_load_limit_N, contamination_factor, oil_temperature_C,
@@ -287,7 +281,8 @@ struct DutyCycleEcho {
   }
 };
 std::vector<DutyCycleEcho> DutyCycleEchoOf(const std::vector<OperatingLine>& lines);
-/// The duty cycle's echo as the raw life blocks hold it: [{output_torque_Nm, input_speed_rpm, time_share}, …].
+/// The duty cycle as a study file gives it (a sizing's best-design study): [{output_torque_Nm,
+/// input_speed_rpm, time_share}, …].
 nlohmann::json DutyCycleJson(const std::vector<OperatingLine>& lines);
 
 }  // namespace camopt::studies
