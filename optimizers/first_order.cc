@@ -121,4 +121,98 @@ FirstOrderCheck CheckFirstOrder(const objectives::Problem& p, std::span<const do
   return out;
 }
 
+ActiveSetPrediction PredictActiveSetStep(const objectives::Problem& from, const objectives::Problem& p,
+                                         std::span<const double> x, const FirstOrderCheck& kkt) {
+  ActiveSetPrediction out;
+  out.x.assign(x.begin(), x.end());
+  const int n = p.num_vars();
+  const int m = p.evaluator->num_outputs();
+  if (n == 0 || !p.evaluator->has_jacobian() || from.num_vars() != n || from.evaluator->num_outputs() != m) return out;
+  std::vector<double> y(static_cast<size_t>(m)), y0(static_cast<size_t>(m)),
+      jac(static_cast<size_t>(m) * static_cast<size_t>(n));
+  p.evaluator->EvalWithJacobian(x, y, jac);
+  from.evaluator->Eval(x, y0);
+  for (size_t i = 0; i < y.size(); ++i)
+    if (!std::isfinite(y[i]) || !std::isfinite(y0[i])) return out;
+  for (double v : jac)
+    if (!std::isfinite(v)) return out;
+  out.finite = true;
+  std::vector<const objectives::ConstraintRow*> by_output(static_cast<size_t>(m), nullptr),
+      from_output(static_cast<size_t>(m), nullptr);
+  const std::vector<objectives::ConstraintRow> rows = objectives::ConstraintRows(p), from_rows = objectives::ConstraintRows(from);
+  for (const objectives::ConstraintRow& r : rows) by_output[size_t(r.output_index)] = &r;
+  for (const objectives::ConstraintRow& r : from_rows) from_output[size_t(r.output_index)] = &r;
+  // The free variables (an active bound with a multiplier is held) and the rows kept at their bound.
+  std::vector<bool> held(static_cast<size_t>(n), false);
+  struct Kept {
+    int output;
+    double change;  // (b' − g'(x)) − (b − g(x))
+  };
+  std::vector<Kept> kept;
+  for (const FirstOrderCheck::Active& a : kkt.active) {
+    if (a.output_index < 0) {
+      if (a.multiplier > 0) held[size_t(-1 - a.output_index)] = true;
+      continue;
+    }
+    const objectives::ConstraintRow* r = a.output_index < m ? by_output[size_t(a.output_index)] : nullptr;
+    const objectives::ConstraintRow* r0 = a.output_index < m ? from_output[size_t(a.output_index)] : nullptr;
+    if (!r || !r0) continue;
+    const double bound = a.at_lower ? r->lower : r->upper, bound0 = a.at_lower ? r0->lower : r0->upper;
+    if (!std::isfinite(bound) || !std::isfinite(bound0)) continue;
+    const double change = (bound - y[size_t(a.output_index)]) - (bound0 - y0[size_t(a.output_index)]);
+    const bool tightened = a.at_lower ? change > 0 : change < 0;
+    if (a.multiplier > 0 || tightened) kept.push_back({a.output_index, change});
+  }
+  std::vector<int> free;
+  for (int j = 0; j < n; ++j)
+    if (!held[size_t(j)]) free.push_back(j);
+  if (kept.empty() || free.empty()) return out;
+  auto jacobian = [&](int output, int j) { return jac[size_t(output) * size_t(n) + size_t(j)]; };
+  auto solve = [&]() -> Eigen::VectorXd {
+    Eigen::MatrixXd J(Eigen::Index(kept.size()), Eigen::Index(free.size()));
+    Eigen::VectorXd r(Eigen::Index(kept.size()));
+    for (size_t i = 0; i < kept.size(); ++i) {
+      // Each row in units of its scale, so that an over-determined set is fitted row by row alike.
+      const double row_scale = by_output[size_t(kept[i].output)]->scale;
+      r(Eigen::Index(i)) = kept[i].change / row_scale;
+      for (size_t k = 0; k < free.size(); ++k)
+        J(Eigen::Index(i), Eigen::Index(k)) = jacobian(kept[i].output, free[k]) * p.variables[size_t(free[k])].scale / row_scale;
+    }
+    return J.completeOrthogonalDecomposition().solve(r);
+  };
+  Eigen::VectorXd dz = solve();
+  // A row the step would carry past its bound (to first order) joins the kept rows at its bound:
+  // a piecewise maximum's other pieces, or a row a little outside the active window.
+  for (int round = 0; round < 4 && dz.allFinite(); ++round) {
+    bool added = false;
+    for (const objectives::ConstraintRow& row : rows) {
+      bool in = false;
+      for (const Kept& k : kept) in = in || k.output == row.output_index;
+      if (in) continue;
+      double v = y[size_t(row.output_index)];
+      for (size_t k = 0; k < free.size(); ++k)
+        v += jacobian(row.output_index, free[k]) * dz(Eigen::Index(k)) * p.variables[size_t(free[k])].scale;
+      if (std::isfinite(row.upper) && v > row.upper) {
+        kept.push_back({row.output_index, row.upper - y[size_t(row.output_index)]});
+        added = true;
+      } else if (std::isfinite(row.lower) && v < row.lower) {
+        kept.push_back({row.output_index, row.lower - y[size_t(row.output_index)]});
+        added = true;
+      }
+    }
+    if (!added) break;
+    dz = solve();
+  }
+  if (!dz.allFinite()) return out;
+  const int obj = p.evaluator->block(p.objective).offset;
+  for (size_t k = 0; k < free.size(); ++k) {
+    const int j = free[k];
+    const objectives::Variable& v = p.variables[size_t(j)];
+    const double moved = std::clamp(x[size_t(j)] + dz(Eigen::Index(k)) * v.scale, v.lower, v.upper);
+    out.objective_change += jac[size_t(obj) * size_t(n) + size_t(j)] * (moved - x[size_t(j)]);
+    out.x[size_t(j)] = moved;
+  }
+  return out;
+}
+
 }  // namespace camopt::optimizers

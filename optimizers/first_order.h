@@ -43,4 +43,22 @@ struct FirstOrderCheck {
 FirstOrderCheck CheckFirstOrder(const objectives::Problem& problem, std::span<const double> x,
                                 double row_tolerance = 1e-3, double bound_tolerance = 1e-6);
 
+/// The tangent predictor of a parametric re-solve (the first-order sensitivity of a KKT point to
+/// its problem's data, Fiacco 1976, Thm. 3.2.2, with the Hessian term dropped): x is a KKT point of
+/// `from` whose active set `kkt` holds, and `moved` is the same problem (the same outputs and
+/// variables) with some bounds or row definitions changed. The step dz in the scaled variables
+/// z = x / scale is the least-norm (least-squares where over-determined) solution of
+/// J'_A dz = (b'_A − g'_A(x)) − (b_A − g_A(x)) over the active rows that carry a multiplier or that
+/// the move tightens, with the active variable bounds that carry one held (dz_j = 0): each row
+/// keeps the distance to its bound it had at x (a row the solver left a little inside stays so).
+/// The predicted point x + dx is clipped to the box. A local solver started there continues the
+/// same local optimum rather than stalling on the corner of piecewise rows it starts from.
+struct ActiveSetPrediction {
+  std::vector<double> x;        ///< the predicted point (x itself when nothing moves)
+  double objective_change = 0;  ///< ∇f · dx, the first-order change of the objective
+  bool finite = false;          ///< both problems' values and the moved one's Jacobian were finite at x
+};
+ActiveSetPrediction PredictActiveSetStep(const objectives::Problem& from, const objectives::Problem& moved,
+                                         std::span<const double> x, const FirstOrderCheck& kkt);
+
 }  // namespace camopt::optimizers

@@ -37,8 +37,12 @@ bool AllFinite(const std::vector<double>& v) {
 
 class ProblemTnlp : public Ipopt::TNLP {
  public:
-  ProblemTnlp(const objectives::Problem& problem, std::vector<double> x0)
-      : problem_(problem), cache_(problem), rows_(objectives::ConstraintRows(problem)), x0_(std::move(x0)) {}
+  ProblemTnlp(const objectives::Problem& problem, std::vector<double> x0, int max_model_runs)
+      : problem_(problem),
+        cache_(problem),
+        rows_(objectives::ConstraintRows(problem)),
+        x0_(std::move(x0)),
+        max_model_runs_(max_model_runs) {}
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
                     IndexStyleEnum& index_style) override {
@@ -120,12 +124,17 @@ class ProblemTnlp : public Ipopt::TNLP {
   }
 
   // Called once per iteration: false stops Ipopt (User_Requested_Stop) when a cancellation was
-  // asked for; SolveIpopt then throws Cancelled.
+  // asked for (SolveIpopt then throws Cancelled) or the model-run budget is spent.
   bool intermediate_callback(Ipopt::AlgorithmMode, Index, Number, Number, Number, Number, Number,
                              Number, Number, Number, Index, const Ipopt::IpoptData*,
                              Ipopt::IpoptCalculatedQuantities*) override {
+    if (max_model_runs_ > 0 && cache_.value_evaluations() + cache_.jacobian_evaluations() >= max_model_runs_) {
+      budget_spent_ = true;
+      return false;
+    }
     return !CancelRequested();
   }
+  bool budget_spent() const { return budget_spent_; }
 
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
                          const Number*, Index, const Number*, const Number*, Number,
@@ -148,6 +157,8 @@ class ProblemTnlp : public Ipopt::TNLP {
   objectives::ProblemCache cache_;
   std::vector<objectives::ConstraintRow> rows_;
   std::vector<double> x0_;
+  int max_model_runs_ = 0;
+  bool budget_spent_ = false;
   Ipopt::SolverReturn status_ = Ipopt::INTERNAL_ERROR;
   std::vector<double> x_;
   int iterations_ = 0;
@@ -162,7 +173,7 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
   // Threads of a sweep (studies/sweep.cc) therefore take turns here; MPI ranks do not.
   static std::mutex ipopt_mutex;
   const std::lock_guard<std::mutex> ipopt_lock(ipopt_mutex);
-  Ipopt::SmartPtr<ProblemTnlp> tnlp = new ProblemTnlp(problem, InitialPoint(problem, options));
+  Ipopt::SmartPtr<ProblemTnlp> tnlp = new ProblemTnlp(problem, InitialPoint(problem, options), options.max_model_runs);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", 0);
   app->Options()->SetStringValue("sb", "yes");
@@ -233,6 +244,10 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
     case Ipopt::Maximum_Iterations_Exceeded:
     case Ipopt::Maximum_CpuTime_Exceeded:
       result.status = SolverStatus::kIterationLimit;
+      break;
+    case Ipopt::User_Requested_Stop:  // the model-run budget (a cancellation threw above)
+      result.status = tnlp->budget_spent() ? SolverStatus::kIterationLimit : SolverStatus::kFailed;
+      if (tnlp->budget_spent()) result.message += " (model-run budget spent)";
       break;
     default:
       // Restoration failure (Ipopt could not reduce the violation: reported as infeasible),

@@ -44,6 +44,9 @@ struct SolverOptions {
   double tolerance = 1e-8;             ///< relative optimality / step tolerance
   double constraint_tolerance = 1e-6;  ///< on scaled constraints, also used to judge feasibility
   int max_evaluations = 3000;          ///< NLopt: evaluations; Ipopt: iterations
+  /// Ipopt only: also stop, as at the iteration limit, once this many model runs (values and
+  /// Jacobians, its line searches' trial points included) are spent; <= 0: no such limit.
+  int max_model_runs = 0;
   double max_seconds = 60.0;
   /// Ipopt only; 0 (the default) leaves Ipopt's own test alone. k > 0: Ipopt also stops, as
   /// converged, once k consecutive iterations meet every constraint within constraint_tolerance

@@ -1214,7 +1214,8 @@ std::string LimitKeyOf(const std::string& block, bool at_lower) {
 // set is widened to 1e-2 and 3e-2 of the scales, and the fit with the smallest residual is kept
 // (`residual` says how well it holds: the paper drive's end-distance row sits 0.3% short of its
 // bound; without it the stress row's multiplier came out half the re-solve slope).
-std::map<std::string, double> LimitCosts(const Problem& p, const std::vector<double>& x, double& residual) {
+std::map<std::string, double> LimitCosts(const Problem& p, const std::vector<double>& x, double& residual,
+                                         std::optional<optimizers::FirstOrderCheck>& answer) {
   std::map<std::string, double> out;
   residual = std::numeric_limits<double>::quiet_NaN();
   if (p.num_vars() == 0) return out;
@@ -1230,8 +1231,13 @@ std::map<std::string, double> LimitCosts(const Problem& p, const std::vector<dou
   for (const optimizers::FirstOrderCheck::Active& a : best->active)
     if (a.output_index >= 0)
       out[LimitKeyOf(a.name.substr(0, a.name.find('[')), a.at_lower)] += (a.at_lower ? 1.0 : -1.0) * a.multiplier;
+  answer = std::move(best);
   return out;
 }
+
+// The Ipopt fallback of a limit-cost re-solve: at most this many model runs (and its SLSQP polish
+// half as many evaluations).
+constexpr int kReSolveModelRuns = 120;
 
 // A limit key's field in the study's limits and the fast limit that follows it (nullptr: the
 // closed forms and the LTE, exact or report-only, have none).
@@ -1463,9 +1469,10 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   // reports the closest point with the accurate values.
   if (solved && !out.verification.ran && !out.x.empty()) check(0);
   out.verified = out.verification.verified();
+  std::optional<optimizers::FirstOrderCheck> answer_kkt;  // the answer's active set and multipliers
   if (out.converged && !out.x.empty()) {
     Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
-    out.limit_cost = LimitCosts(problem, out.x, out.limit_cost_residual);
+    out.limit_cost = LimitCosts(problem, out.x, out.limit_cost_residual, answer_kkt);
     // The life row's bound is ln(fast life / life_h): its multiplier is per unit of ln, d/dH = 1/H.
     if (auto it = out.limit_cost.find("life_h"); it != out.limit_cost.end()) it->second /= fast.life_h;
     // The static rows' bound is 1/s0: d/ds0 = −1/s0² of the multiplier per unit of that bound.
@@ -1479,6 +1486,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     const StageClock::Scope stage("limit costs");
     const double f0 = out.result.objective;
     const double tolerance = 10 * options.solver.tolerance * std::max(std::abs(f0), 1.0);
+    std::optional<Problem> answer;  // the answer's problem, from which each re-solve's start is predicted
+    if (answer_kkt) answer.emplace(CycloidSizingProblem(model, fast, nullptr, OutsideDomain::kPenalty));
     for (const auto& [key, cost] : out.limit_cost) {
       CycloidSizingSpec base = spec;
       double* limit = StudyLimitOf(base.limits, key);
@@ -1486,7 +1495,17 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
       for (size_t i = 0; i < base.variables.size() && i < out.x.size(); ++i) base.variables[i].initial = out.x[i];
       const double h = LimitStep(key, *limit);
       double f[2] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-      for (int side = 0; side < 2; ++side) {
+      const LimitSense sense = key.rfind("min_", 0) == 0 || key == "life_h" ? LimitSense::kLower : LimitSense::kUpper;
+      // The side that loosens the limit first (the answer stays feasible there); the other side
+      // only when that one did not solve or its slope does not confirm the multiplier.
+      const int order[2] = {sense == LimitSense::kLower ? 0 : 1, sense == LimitSense::kLower ? 1 : 0};
+      bool confirmed = false;
+      for (const int side : order) {
+        if (side == order[1]) {
+          const double one_sided = side == 1 ? (f0 - f[0]) / h : (f[1] - f0) / h;
+          confirmed = ReSolveConfirmsMultiplier(one_sided, cost, h, tolerance, sense);
+          if (confirmed) break;
+        }
         const double d = side == 0 ? -h : h;
         CycloidSizingSpec moved = base;
         const double value = *StudyLimitOf(moved.limits, key);
@@ -1497,14 +1516,29 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
           *fl = value != 0 && (key != "min_edge_margin_um" && key != "min_backlash_arcsec" && key != "max_backlash_arcsec")
                     ? *fl * (value + d) / value
                     : *fl + d;
+        // The re-solve starts from the answer moved along its active set to the moved limit
+        // (optimizers::PredictActiveSetStep): started at the answer itself SLSQP often stopped at
+        // once on the corner of piecewise rows the answer sits on (the paper drive at 1322 MPa
+        // stayed at 147.78 mm), and the Ipopt search that followed ended on another local optimum
+        // now and then, so that the two sides' differences were no derivative.
+        double predicted_change = 0;
+        bool predicted = false;
+        if (answer) {
+          CycloidSizingModel moved_model(moved);
+          const Problem to = CycloidSizingProblem(moved_model, start, nullptr, OutsideDomain::kPenalty);
+          const optimizers::ActiveSetPrediction step = optimizers::PredictActiveSetStep(*answer, to, out.x, *answer_kkt);
+          if (step.finite) {
+            for (size_t i = 0; i < moved.variables.size() && i < step.x.size(); ++i) moved.variables[i].initial = step.x[i];
+            predicted_change = step.objective_change;
+            predicted = true;
+          }
+        }
         CycloidMinSizeOptions again = options;
         again.starts = 1;
-        // SLSQP from the answer: it takes a warm start as it is (Ipopt's barrier pushes a start on
-        // its bounds back inside and walks back), and both end at the same local optimum -- except
-        // where SLSQP stops at once on the corner of piecewise rows the answer sits on, a
-        // first-order point of the moved problem too (the paper drive at 1322 MPa stayed at
-        // 147.78 mm; the full search finds 146.22 mm). A re-solve that stopped short, or did not
-        // move the size although its binding limit moved, is solved by Ipopt from the same start.
+        // SLSQP from the predicted point: it takes a start as it is. A re-solve that stopped
+        // short (most often a little outside an edge row, a minimum over pairs and cells with a
+        // kink where the contact reaches the face end), or did not move the size although the
+        // prediction did, is solved by Ipopt from the same start.
         again.solver.backend = optimizers::Backend::kSlsqp;
         again.solver.fallback_backend.reset();
         again.re_solve_limit_costs = false;
@@ -1512,13 +1546,27 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         again.progress = nullptr;
         progress(steps, "limit cost of " + key + (side == 0 ? " (-)" : " (+)"));
         CycloidMinSizeOutcome r = SolveCycloidMinSize(moved, again);
-        const bool stayed = std::abs(r.result.objective - f0) <= tolerance;
+        // Stayed: ended at the answer's size although its binding limit moved (and, from a
+        // predicted start, although the prediction moved it).
+        const bool stayed = std::abs(r.result.objective - f0) <= tolerance && (!predicted || std::abs(predicted_change) > tolerance);
         if (!(r.verified && r.converged) || stayed) {
           out.evaluations += r.evaluations;
           out.gradient_evaluations += r.gradient_evaluations;
           again.solver = options.solver;
           again.solver.backend = optimizers::Backend::kIpopt;
           again.solver.fallback_backend.reset();
+          // Warm-started from the predicted point (a small fixed barrier, the start kept near its
+          // bounds): Ipopt ends in 11-30 iterations there, against 53-89 with its defaults, which
+          // push the start into the interior first (cycloid_min_size_ratio29.json's three
+          // fallbacks). From the answer itself the same settings had moved the re-solved sizes
+          // and slowed two examples (docs/performance.md). Where it ends at all it takes under 60
+          // model runs; one that needs more than kReSolveModelRuns has left the answer's
+          // neighbourhood (a tightened efficiency limit took 210 iterations and 1100 runs, 7-10 s,
+          // to fail), and its side is reported missing instead.
+          again.solver.barrier_initial = 1e-5;
+          again.solver.bound_push = 1e-6;
+          again.solver.max_model_runs = kReSolveModelRuns;
+          again.solver.fallback_max_evaluations = std::min(again.solver.fallback_max_evaluations, kReSolveModelRuns / 2);
           CycloidMinSizeOutcome ipopt = SolveCycloidMinSize(moved, again);
           if ((ipopt.verified && ipopt.converged) || !(r.verified && r.converged)) r = std::move(ipopt);
         }
@@ -1526,8 +1574,8 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         out.gradient_evaluations += r.gradient_evaluations;
         if (r.verified && r.converged) f[side] = r.result.objective;
       }
-      const bool lower = key.rfind("min_", 0) == 0 || key == "life_h";
-      out.limit_slope[key] = SlopeFromReSolves(f[0], f0, f[1], h, tolerance, lower ? LimitSense::kLower : LimitSense::kUpper);
+      out.limit_slope[key] = SlopeFromReSolves(f[0], f0, f[1], h, tolerance, sense);
+      out.limit_slope[key].confirms_multiplier = confirmed;
     }
   }
   out.value_seconds = model.value_seconds();

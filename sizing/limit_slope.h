@@ -17,10 +17,17 @@ struct LimitSlope {
   /// Central (f(L + h) − f(L − h))/2h where both sides solved, else the side that did; NaN if none.
   double slope = std::numeric_limits<double>::quiet_NaN();
   std::string sides;  ///< "central", "left", "right", or "" when neither side solved
+  /// The slope's uncertainty from the solves' objective tolerance alone: 2·tol/h one-sided (two
+  /// objectives each within tol), 2·tol/2h central; NaN where no side solved. Curvature and kinks
+  /// are not in it (`kink` says where the two sides disagree beyond it).
+  double error = std::numeric_limits<double>::quiet_NaN();
   /// The two sides' slopes differ by more than their errors (the objective's solver tolerance over
   /// h each) plus 10% of the larger (the curvature of a smooth problem over ±h changes a slope by
   /// f''·h, a few percent at h = 1% of the limit): the cost is not one number there.
   bool kink = false;
+  /// One side was re-solved and its slope confirmed the KKT multiplier's cost
+  /// (ReSolveConfirmsMultiplier), so the other side was not solved.
+  bool confirms_multiplier = false;
 };
 
 /// Which way raising a limit moves a minimised objective: a lower limit (≥ L) tightens, so the
@@ -42,6 +49,7 @@ inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, do
   if (std::isfinite(s.left) && std::isfinite(s.right)) {
     s.slope = (f_plus - f_minus) / (2 * h);
     s.sides = "central";
+    s.error = objective_tolerance / h;
     const double error = 2 * objective_tolerance / h;  // each side's
     s.kink = std::abs(s.right - s.left) > 2 * error + 0.1 * std::max(std::abs(s.left), std::abs(s.right));
     if (sense != LimitSense::kUnknown) {
@@ -51,11 +59,27 @@ inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, do
   } else if (std::isfinite(s.left)) {
     s.slope = s.left;
     s.sides = "left";
+    s.error = 2 * objective_tolerance / h;
   } else if (std::isfinite(s.right)) {
     s.slope = s.right;
     s.sides = "right";
+    s.error = 2 * objective_tolerance / h;
   }
   return s;
+}
+
+/// Whether a one-sided re-solve slope confirms the cost the KKT multiplier gives: the two agree
+/// within the side's error (2 · objective_tolerance / h) plus 10% of the larger -- the test the two
+/// sides of a central slope are held to -- and, with the limit's sense known, the side has a sign
+/// an optimum can have. The multiplier is the derivative of the piece the answer's active set
+/// holds; a verified re-solve on one side that agrees with it shows that piece is what moving the
+/// limit does there. The other side can still hold a kink that only its own re-solve would show.
+inline bool ReSolveConfirmsMultiplier(double one_sided, double multiplier, double h, double objective_tolerance,
+                                      LimitSense sense = LimitSense::kUnknown) {
+  if (!std::isfinite(one_sided) || !std::isfinite(multiplier) || !(h > 0)) return false;
+  const double error = 2 * objective_tolerance / h;
+  if (sense != LimitSense::kUnknown && (sense == LimitSense::kLower ? 1.0 : -1.0) * one_sided < -error) return false;
+  return std::abs(one_sided - multiplier) <= 2 * error + 0.1 * std::max(std::abs(one_sided), std::abs(multiplier));
 }
 
 }  // namespace camopt::sizing

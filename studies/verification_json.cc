@@ -41,6 +41,7 @@ LimitSlopeResult MakeLimitSlopeResult(const sizing::LimitSlope* slope) {
   if (has) {
     r.re_solve_slope = slope->slope;
     r.re_solve_sides = slope->sides;
+    r.re_solve_slope_error = slope->error;
   }
   if (slope) {
     r.re_solve_step = slope->step;
@@ -48,6 +49,7 @@ LimitSlopeResult MakeLimitSlopeResult(const sizing::LimitSlope* slope) {
     r.re_solve_right_slope = slope->right;
   }
   r.kink = slope && slope->kink;
+  r.re_solve_confirms_limit_cost = slope && slope->confirms_multiplier;
   r.headline = has ? "re_solve_slope" : "limit_cost";
   return r;
 }

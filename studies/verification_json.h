@@ -91,9 +91,11 @@ struct LimitSlopeResult {
   double re_solve_slope = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::string> re_solve_sides;
   double re_solve_step = std::numeric_limits<double>::quiet_NaN();
+  double re_solve_slope_error = std::numeric_limits<double>::quiet_NaN();
   double re_solve_left_slope = std::numeric_limits<double>::quiet_NaN();
   double re_solve_right_slope = std::numeric_limits<double>::quiet_NaN();
   bool kink = false;
+  bool re_solve_confirms_limit_cost = false;
   std::string headline = "limit_cost";
   template <typename Archive>
   void Serialize(Archive* a) {
@@ -102,6 +104,9 @@ struct LimitSlopeResult {
                                               "limit moved (null: no side solved, or not computed)"));
     a->Visit("re_solve_sides", &re_solve_sides,
              Field().NullWhenAbsent().Desc("which re-solves it is from: central, left or right (null: none)"));
+    a->Visit("re_solve_slope_error", &re_solve_slope_error,
+             Field().NullWhenNotFinite().Desc("re_solve_slope's uncertainty from the re-solves' objective tolerance "
+                                              "(null: no side solved); curvature and kinks are not in it"));
     a->Visit("re_solve_step", &re_solve_step,
              Field().NullWhenNotFinite().Desc("the limit's move, in its unit (null: not computed)"));
     a->Visit("re_solve_left_slope", &re_solve_left_slope,
@@ -109,6 +114,9 @@ struct LimitSlopeResult {
     a->Visit("re_solve_right_slope", &re_solve_right_slope,
              Field().NullWhenNotFinite().Desc("the slope from the raised limit alone (null: none)"));
     a->Visit("kink", &kink, Field().Desc("the two sides' slopes disagree beyond their errors"));
+    a->Visit("re_solve_confirms_limit_cost", &re_solve_confirms_limit_cost,
+             Field().Desc("one side was re-solved and its slope agrees with limit_cost (the KKT multiplier) within "
+                          "its error and 10%, so the other side was not solved (a kink on that side would not show)"));
     a->Visit("headline", &headline,
              Field().OneOf({"re_solve_slope", "limit_cost"}).Desc("which of the two to quote (re_solve_slope whenever it exists)"));
   }

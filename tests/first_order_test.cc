@@ -143,5 +143,64 @@ TEST(FirstOrder, AStopWithNothingOpposingTheGradientIsNotConverged) {
   EXPECT_DOUBLE_EQ(r.first_order_residual, 1.0);
 }
 
+// The active-set predictor of a re-solve (optimizers::PredictActiveSetStep) on problems whose moved
+// optimum is known by hand.
+//   min (x − 3)² + (y − 2)²  s.t. x + y <= s,  x <= c,  free x, y.
+// At s = 2, c = 1.55 the optimum is (1.5, 0.5) with λ = 3 on the sum (∇f = (−3, −3)) and the cap
+// 0.05 inside its bound. At s = 2.2 both rows bind: (1.55, 0.65), λ = 2.7 and μ = 0.2 (∇f =
+// (−2.9, −2.7) = −λ (1, 1) − μ (1, 0)), a KKT point of a convex problem and so its optimum.
+objectives::Problem SumAndCap(double s, double c) {
+  objectives::Problem p;
+  p.variables = {{"x", -10.0, 10.0, 0.0, 1.0}, {"y", -10.0, 10.0, 0.0, 1.0}};
+  p.evaluator = objectives::MakeEvaluator<2>(2, {{"f", 0, 1}, {"sum", 1, 1}, {"cap", 2, 1}}, [](auto x, auto y) {
+    y[0] = (x[0] - 3.0) * (x[0] - 3.0) + (x[1] - 2.0) * (x[1] - 2.0);
+    y[1] = x[0] + x[1];
+    y[2] = x[0];
+  });
+  p.objective = "f";
+  p.constraints = {{"sum", -kInf, s, 1.0}, {"cap", -kInf, c, 1.0}};
+  return p;
+}
+
+TEST(ActiveSetPredictor, AMovedRowCarriesTheOptimumAndARowItWouldCrossJoins) {
+  const objectives::Problem from = SumAndCap(2.0, 1.55);
+  const std::vector<double> x = {1.5, 0.5};
+  const FirstOrderCheck kkt = CheckFirstOrder(from, x);
+  ASSERT_EQ(kkt.active.size(), 1u);
+  EXPECT_NEAR(kkt.active[0].multiplier, 3.0, kMultiplierTolerance);
+  // s = 2.06: the least-norm step along the sum's gradient, (0.03, 0.03), is the moved optimum
+  // (1.53, 0.53) itself (the cap stays inside); f changes by ∇f · dx = −3 · 0.06 = −0.18.
+  const optimizers::ActiveSetPrediction small = optimizers::PredictActiveSetStep(from, SumAndCap(2.06, 1.55), x, kkt);
+  ASSERT_TRUE(small.finite);
+  EXPECT_NEAR(small.x[0], 1.53, 1e-12);
+  EXPECT_NEAR(small.x[1], 0.53, 1e-12);
+  EXPECT_NEAR(small.objective_change, -0.18, 1e-12);
+  // s = 2.2: that step would carry x to 1.6, past the cap: the cap joins at its bound and the step
+  // lands on the moved optimum (1.55, 0.65).
+  const optimizers::ActiveSetPrediction far = optimizers::PredictActiveSetStep(from, SumAndCap(2.2, 1.55), x, kkt);
+  ASSERT_TRUE(far.finite);
+  EXPECT_NEAR(far.x[0], 1.55, 1e-12);
+  EXPECT_NEAR(far.x[1], 0.65, 1e-12);
+  // Nothing moved: the predictor stays at x.
+  const optimizers::ActiveSetPrediction none = optimizers::PredictActiveSetStep(from, SumAndCap(2.0, 1.55), x, kkt);
+  EXPECT_NEAR(none.x[0], 1.5, 1e-15);
+  EXPECT_NEAR(none.x[1], 0.5, 1e-15);
+  EXPECT_EQ(none.objective_change, 0.0);
+}
+
+TEST(ActiveSetPredictor, ABoundWithAMultiplierIsHeld) {
+  // The reference QP (y at its bound 0.25 with μ = 1, x + y <= 2 with λ = 2.5): the row moved to
+  // 2.1 moves x alone, to the moved optimum (1.85, 0.25); ∇f · dx = −2.5 · 0.1.
+  const objectives::Problem from = testing::QpWithActiveConstraintAndBound();
+  objectives::Problem moved = testing::QpWithActiveConstraintAndBound();
+  moved.constraints[0].upper = 2.1;
+  const std::vector<double> x = {testing::kQpOptimumX, testing::kQpOptimumY};
+  const optimizers::ActiveSetPrediction p = optimizers::PredictActiveSetStep(from, moved, x, CheckFirstOrder(from, x));
+  ASSERT_TRUE(p.finite);
+  EXPECT_NEAR(p.x[0], 1.85, 1e-12);
+  EXPECT_EQ(p.x[1], 0.25);
+  EXPECT_NEAR(p.objective_change, -0.25, 1e-12);
+}
+
 }  // namespace first_order_test
 }  // namespace camopt

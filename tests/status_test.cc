@@ -196,6 +196,10 @@ TEST(Status, ReSolveSlopesFlagDifferingSidesAndImpossibleSigns) {
   EXPECT_FALSE(smooth.kink);
   EXPECT_NEAR(smooth.slope, 1.01, 1e-12);
   EXPECT_EQ(smooth.sides, "central");
+  EXPECT_NEAR(smooth.error, 1e-4, 1e-18);  // (tol + tol) / 2h
+  const auto one = SlopeFromReSolves(std::nan(""), 100.0, 101.02, 1.0, 1e-4, LimitSense::kLower);
+  EXPECT_EQ(one.sides, "right");
+  EXPECT_NEAR(one.error, 2e-4, 1e-18);  // (tol + tol) / h
   EXPECT_TRUE(SlopeFromReSolves(99.0, 100.0, 100.5, 1.0, 1e-4, LimitSense::kLower).kink);  // 1 against 0.5
   // Both sides −0.07 per unit: they agree, but a stricter lower limit cannot shrink the optimum.
   EXPECT_FALSE(SlopeFromReSolves(100.007, 100.0, 99.993, 0.1, 1e-5).kink);
@@ -205,11 +209,27 @@ TEST(Status, ReSolveSlopesFlagDifferingSidesAndImpossibleSigns) {
   EXPECT_FALSE(SlopeFromReSolves(100.0005, 100.0, 99.9995, 0.1, 1e-3, LimitSense::kLower).kink);
 }
 
-// Each binding limit's cost is the KKT multiplier and a verified re-solve slope at the limit ±1%;
-// where both sides solve and agree (no kink) the two agree within 5%. The paper drive: the stress
-// limit, smooth, −0.118 mm/MPa both ways (the multiplier was half that while the end-distance row,
-// 0.3% short of its bound, was left out of the active set).
-TEST(Status, LimitCostsAgreeWithCentralReSolveSlopesWhereSmooth) {
+// One side's slope confirms the multiplier within its error (2 · 1e-4 / 1 = 2e-4 per unit) plus 10%
+// of the larger: 1.05 against 1.0 does, 1.2 does not; a tightened lower limit that lowered the
+// minimum beyond the error never does, whatever the multiplier says.
+TEST(Status, AOneSidedReSolveConfirmsTheMultiplierWithinItsErrorAndSign) {
+  using camopt::sizing::LimitSense;
+  using camopt::sizing::ReSolveConfirmsMultiplier;
+  EXPECT_TRUE(ReSolveConfirmsMultiplier(1.05, 1.0, 1.0, 1e-4, LimitSense::kLower));
+  EXPECT_FALSE(ReSolveConfirmsMultiplier(1.2, 1.0, 1.0, 1e-4, LimitSense::kLower));
+  EXPECT_TRUE(ReSolveConfirmsMultiplier(-1.05, -1.0, 1.0, 1e-4, LimitSense::kUpper));
+  EXPECT_FALSE(ReSolveConfirmsMultiplier(-0.01, -0.0095, 1.0, 1e-4, LimitSense::kLower));
+  EXPECT_TRUE(ReSolveConfirmsMultiplier(-1e-4, 0.0, 1.0, 1e-4, LimitSense::kLower));  // within the error
+  EXPECT_FALSE(ReSolveConfirmsMultiplier(std::nan(""), 1.0, 1.0, 1e-4));
+}
+
+// Each binding limit's cost is the KKT multiplier and a verified re-solve slope at the limit moved
+// by 1%: the loosening side first, the other only where that one does not confirm the multiplier.
+// Where both sides solve and agree (no kink) the central slope and the multiplier agree within 5%;
+// where one side confirmed it, within that side's 10%. The paper drive: the stress limit, smooth,
+// −0.118 mm/MPa (−0.1180 both ways when both were solved; the multiplier was half that while the
+// end-distance row, 0.3% short of its bound, was left out of the active set).
+TEST(Status, LimitCostsAgreeWithReSolveSlopesWhereSmooth) {
   const auto dir = TempDir("status-costs");
   const CliRun r = RunStudy(SourcePath("studies/examples/cycloid_min_size_paper.json"), dir / "o");
   ExpectOneStatus(r, "optimal_verified", 0);
@@ -218,6 +238,17 @@ TEST(Status, LimitCostsAgreeWithCentralReSolveSlopesWhereSmooth) {
     SCOPED_TRACE(b.dump());
     ASSERT_TRUE(b.contains("re_solve_slope") && b.contains("re_solve_sides") && b.contains("kink"));
     EXPECT_EQ(b["headline"], b["re_solve_slope"].is_null() ? "limit_cost" : "re_solve_slope");
+    if (b["re_solve_confirms_limit_cost"].get<bool>()) {
+      ASSERT_TRUE(b["re_solve_sides"] == "left" || b["re_solve_sides"] == "right");
+      EXPECT_FALSE(b["kink"].get<bool>());
+      const double slope = b["re_solve_slope"];
+      // Within twice the side's error and 10% of the larger (ReSolveConfirmsMultiplier).
+      const double cost = b["limit_cost"];
+      EXPECT_LE(std::abs(cost - slope), 2 * b["re_solve_slope_error"].get<double>() +
+                                            0.1 * std::max(std::abs(cost), std::abs(slope)) + 1e-12);
+      ++smooth;
+      continue;
+    }
     if (b["re_solve_sides"] != "central") continue;
     const double left = b["re_solve_left_slope"], right = b["re_solve_right_slope"], slope = b["re_solve_slope"];
     EXPECT_NEAR(slope, 0.5 * (left + right), 1e-12 * std::abs(slope) + 1e-15);
