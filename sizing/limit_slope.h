@@ -17,10 +17,6 @@ struct LimitSlope {
   /// Central (f(L + h) − f(L − h))/2h where both sides solved, else the side that did; NaN if none.
   double slope = std::numeric_limits<double>::quiet_NaN();
   std::string sides;  ///< "central", "left", "right", or "" when neither side solved
-  /// The slope's uncertainty from the solves' objective tolerance alone: 2·tol/h one-sided (two
-  /// objectives each within tol), 2·tol/2h central; NaN where no side solved. Curvature and kinks
-  /// are not in it (`kink` says where the two sides disagree beyond it).
-  double error = std::numeric_limits<double>::quiet_NaN();
   /// The two sides' slopes differ by more than their errors (the objective's solver tolerance over
   /// h each) plus 10% of the larger (the curvature of a smooth problem over ±h changes a slope by
   /// f''·h, a few percent at h = 1% of the limit): the cost is not one number there.
@@ -49,7 +45,6 @@ inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, do
   if (std::isfinite(s.left) && std::isfinite(s.right)) {
     s.slope = (f_plus - f_minus) / (2 * h);
     s.sides = "central";
-    s.error = objective_tolerance / h;
     const double error = 2 * objective_tolerance / h;  // each side's
     s.kink = std::abs(s.right - s.left) > 2 * error + 0.1 * std::max(std::abs(s.left), std::abs(s.right));
     if (sense != LimitSense::kUnknown) {
@@ -59,11 +54,9 @@ inline LimitSlope SlopeFromReSolves(double f_minus, double f0, double f_plus, do
   } else if (std::isfinite(s.left)) {
     s.slope = s.left;
     s.sides = "left";
-    s.error = 2 * objective_tolerance / h;
   } else if (std::isfinite(s.right)) {
     s.slope = s.right;
     s.sides = "right";
-    s.error = 2 * objective_tolerance / h;
   }
   return s;
 }

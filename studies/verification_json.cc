@@ -41,7 +41,6 @@ LimitSlopeResult MakeLimitSlopeResult(const sizing::LimitSlope* slope) {
   if (has) {
     r.re_solve_slope = slope->slope;
     r.re_solve_sides = slope->sides;
-    r.re_solve_slope_error = slope->error;
   }
   if (slope) {
     r.re_solve_step = slope->step;

@@ -91,7 +91,6 @@ struct LimitSlopeResult {
   double re_solve_slope = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::string> re_solve_sides;
   double re_solve_step = std::numeric_limits<double>::quiet_NaN();
-  double re_solve_slope_error = std::numeric_limits<double>::quiet_NaN();
   double re_solve_left_slope = std::numeric_limits<double>::quiet_NaN();
   double re_solve_right_slope = std::numeric_limits<double>::quiet_NaN();
   bool kink = false;
@@ -104,9 +103,6 @@ struct LimitSlopeResult {
                                               "limit moved (null: no side solved, or not computed)"));
     a->Visit("re_solve_sides", &re_solve_sides,
              Field().NullWhenAbsent().Desc("which re-solves it is from: central, left or right (null: none)"));
-    a->Visit("re_solve_slope_error", &re_solve_slope_error,
-             Field().NullWhenNotFinite().Desc("re_solve_slope's uncertainty from the re-solves' objective tolerance "
-                                              "(null: no side solved); curvature and kinks are not in it"));
     a->Visit("re_solve_step", &re_solve_step,
              Field().NullWhenNotFinite().Desc("the limit's move, in its unit (null: not computed)"));
     a->Visit("re_solve_left_slope", &re_solve_left_slope,
