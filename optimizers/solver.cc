@@ -58,10 +58,13 @@ SolverResult SolveAndPolish(const objectives::Problem& problem, const SolverOpti
 // constraint within 1% of its scale from its bound opposes more than half of the objective's
 // gradient, the backend is resumed once from its end point (SLSQP restarts its quasi-Newton model
 // there; on the contact models' piecewise-smooth rows it can stop by its objective-change test
-// short of the optimum). The result is reported as not stationary only when, after that, not even
-// the constraints within 10% of their scale explain half of the gradient: a gross stop (NLopt's
-// SLSQP returning the start, the only feasible point it met), not a kink of a discretised maximum
-// whose other pieces lie a few percent away.
+// short of the optimum). The result is reported as not stationary when, after that, nothing lies
+// within 1% of its bound (the design is inside the feasible set, where the objective still falls),
+// or not even the constraints within 10% of their scale explain half of the gradient: a gross stop
+// (NLopt's SLSQP returning the start, the only feasible point it met), not a kink of a discretised
+// maximum at its bound whose other pieces lie a few percent away. (A cycloid sizing whose SLSQP
+// stopped by its objective-change test with the stress 5.6% below its limit and nothing else near
+// a bound was reported converged by the 10% window alone.)
 constexpr double kResumeWindow = 1e-2;  // of a row's scale
 constexpr double kStatusWindow = 1e-1;
 constexpr double kStationaryResidual = 0.5;  // |∇f − Σλ∇g| / |∇f|
@@ -87,7 +90,9 @@ SolverResult Solve(const objectives::Problem& problem, const SolverOptions& opti
     r.gradient_evaluations = again.gradient_evaluations;
     r.iterations = again.iterations;
   }
-  if (r.first_order_residual > kStationaryResidual && CheckFirstOrder(problem, r.x, kStatusWindow).residual > kStationaryResidual)
+  if (r.first_order_residual > kStationaryResidual &&
+      (CheckFirstOrder(problem, r.x, kResumeWindow).active.empty() ||
+       CheckFirstOrder(problem, r.x, kStatusWindow).residual > kStationaryResidual))
     r.status = SolverStatus::kNotStationary;
   return r;
 }

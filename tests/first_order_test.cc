@@ -143,6 +143,34 @@ TEST(FirstOrder, AStopWithNothingOpposingTheGradientIsNotConverged) {
   EXPECT_DOUBLE_EQ(r.first_order_residual, 1.0);
 }
 
+// min f on 0 <= x <= 3 with a row x >= 1.95 (scale 1); f = x above 2 and x + 100 (2 − x) below,
+// a wall its reported derivative (1 everywhere) does not show. SLSQP from x = 2.5 halves its way
+// towards 2 and stops by its objective-change test 0.05 above the row's bound: inside the 10%
+// window, outside the 1% one. With nothing within 1% of its bound the design lies inside the
+// feasible set, where the objective still falls: not stationary, whatever a wider window's rows
+// would explain (that window alone had called such a stop converged: a cycloid sizing ended with
+// its stress 5.6% below the limit).
+TEST(FirstOrder, AStopWithNoRowNearItsBoundIsNotConvergedByTheWideWindowAlone) {
+  objectives::Problem p;
+  p.variables = {{"x", 0.0, 3.0, 2.5, 1.0}};
+  p.evaluator = objectives::MakeEvaluator<1>(1, {{"f", 0, 1}, {"row", 1, 1}}, [](auto x, auto y) {
+    using T = std::decay_t<decltype(x[0])>;
+    y[0] = Value(x[0]) >= 2.0 ? x[0] : x[0] + T(100.0 * (2.0 - Value(x[0])));  // a steep wall, slope 1
+    y[1] = x[0];
+  });
+  p.objective = "f";
+  p.constraints = {{"row", 1.95, kInf, 1.0}};
+  optimizers::SolverOptions o;
+  o.backend = optimizers::Backend::kSlsqp;
+  const optimizers::SolverResult r = optimizers::Solve(p, o);
+  ASSERT_FALSE(r.x.empty()) << r.message;
+  ASSERT_GT(r.x[0], 1.95 + 0.01) << "x = " << r.x[0] << ": " << r.message;  // outside the 1% window
+  ASSERT_LT(r.x[0], 1.95 + 0.1) << "x = " << r.x[0] << ": " << r.message;   // inside the 10% one
+  // The 10% window's row explains the gradient (λ = 1): the wide check alone would pass it.
+  EXPECT_LT(CheckFirstOrder(p, r.x, 1e-1).residual, 0.5);
+  EXPECT_EQ(r.status, optimizers::SolverStatus::kNotStationary) << "x = " << r.x[0] << ": " << r.message;
+}
+
 // The active-set predictor of a re-solve (optimizers::PredictActiveSetStep) on problems whose moved
 // optimum is known by hand.
 //   min (x − 3)² + (y − 2)²  s.t. x + y <= s,  x <= c,  free x, y.
