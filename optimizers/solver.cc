@@ -72,7 +72,8 @@ constexpr double kStationaryResidual = 0.5;  // |∇f − Σλ∇g| / |∇f|
 SolverResult Solve(const objectives::Problem& problem, const SolverOptions& options) {
   SolverResult r = SolveAndPolish(problem, options);
   if (!r.ok()) return r;
-  r.first_order_residual = CheckFirstOrder(problem, r.x, kResumeWindow).residual;
+  FirstOrderCheck near = CheckFirstOrder(problem, r.x, kResumeWindow);
+  r.first_order_residual = near.residual;
   if (!(r.first_order_residual > kStationaryResidual)) return r;
   SolverOptions o = options;
   o.initial = r.x;
@@ -82,7 +83,8 @@ SolverResult Solve(const objectives::Problem& problem, const SolverOptions& opti
   again.iterations += r.iterations;
   const bool no_worse = problem.maximize ? again.objective >= r.objective : again.objective <= r.objective;
   if (again.ok() && no_worse) {
-    again.first_order_residual = CheckFirstOrder(problem, again.x, kResumeWindow).residual;
+    near = CheckFirstOrder(problem, again.x, kResumeWindow);
+    again.first_order_residual = near.residual;
     again.message = "resumed after a stop short of first-order optimality: " + again.message;
     r = std::move(again);
   } else {
@@ -91,8 +93,7 @@ SolverResult Solve(const objectives::Problem& problem, const SolverOptions& opti
     r.iterations = again.iterations;
   }
   if (r.first_order_residual > kStationaryResidual &&
-      (CheckFirstOrder(problem, r.x, kResumeWindow).active.empty() ||
-       CheckFirstOrder(problem, r.x, kStatusWindow).residual > kStationaryResidual))
+      (near.active.empty() || CheckFirstOrder(problem, r.x, kStatusWindow).residual > kStationaryResidual))
     r.status = SolverStatus::kNotStationary;
   return r;
 }

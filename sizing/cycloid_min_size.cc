@@ -1470,9 +1470,10 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
   if (solved && !out.verification.ran && !out.x.empty()) check(0);
   out.verified = out.verification.verified();
   std::optional<optimizers::FirstOrderCheck> answer_kkt;  // the answer's active set and multipliers
+  std::optional<Problem> answer;  // the answer's problem, from which each re-solve's start is predicted
   if (out.converged && !out.x.empty()) {
-    Problem problem = CycloidSizingProblem(model, fast, nullptr, outside);
-    out.limit_cost = LimitCosts(problem, out.x, out.limit_cost_residual, answer_kkt);
+    answer.emplace(CycloidSizingProblem(model, fast, nullptr, outside));
+    out.limit_cost = LimitCosts(*answer, out.x, out.limit_cost_residual, answer_kkt);
     // The life row's bound is ln(fast life / life_h): its multiplier is per unit of ln, d/dH = 1/H.
     if (auto it = out.limit_cost.find("life_h"); it != out.limit_cost.end()) it->second /= fast.life_h;
     // The static rows' bound is 1/s0: d/ds0 = −1/s0² of the multiplier per unit of that bound.
@@ -1486,8 +1487,6 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
     const StageClock::Scope stage("limit costs");
     const double f0 = out.result.objective;
     const double tolerance = 10 * options.solver.tolerance * std::max(std::abs(f0), 1.0);
-    std::optional<Problem> answer;  // the answer's problem, from which each re-solve's start is predicted
-    if (answer_kkt) answer.emplace(CycloidSizingProblem(model, fast, nullptr, OutsideDomain::kPenalty));
     for (const auto& [key, cost] : out.limit_cost) {
       CycloidSizingSpec base = spec;
       double* limit = StudyLimitOf(base.limits, key);
@@ -1523,7 +1522,7 @@ CycloidMinSizeOutcome SolveCycloidMinSize(const CycloidSizingSpec& spec, const C
         // now and then, so that the two sides' differences were no derivative.
         double predicted_change = 0;
         bool predicted = false;
-        if (answer) {
+        if (answer && answer_kkt) {
           CycloidSizingModel moved_model(moved);
           const Problem to = CycloidSizingProblem(moved_model, start, nullptr, OutsideDomain::kPenalty);
           const optimizers::ActiveSetPrediction step = optimizers::PredictActiveSetStep(*answer, to, out.x, *answer_kkt);
