@@ -125,8 +125,12 @@ std::optional<ClosedCubic> FitClosedCubic(const CurveFunction& curve, double t0,
     // distance to the exact curve (the foot of the perpendicular by two Gauss-Newton steps from the
     // curve's point at the same fraction of F).
     constexpr int kChecks = 16;
+    // After the first count only "within the target or not" steers the search (the next count
+    // is a fixed step), so a check beyond the target ends that count's checking; the first
+    // count's whole error feeds the h⁴ law, and a count returned was checked at every point.
+    const bool stop_at_first_miss = attempt > 0;
     double worst = 0.0;
-    for (long i = 0; i < n; ++i) {
+    for (long i = 0; i < n && !(stop_at_first_miss && !(worst <= target_mm)); ++i) {
       for (int j = 0; j < kChecks; ++j) {
         const double u = double(i) + (j + 0.5) / kChecks;
         const Vec2<double> p = PointOnClosedCubic(s, u);
