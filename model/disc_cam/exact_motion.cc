@@ -14,15 +14,17 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The follower coordinate at which the roller (radius r) touches point P from outside, at cam
-// angle theta; -inf when the roller can never touch P.
-double TouchCoordinate(const DiscCam& cam, double theta, const Vec2<double>& P, double r) {
-  const Vec2<double> u = U(theta);
+// angle theta; -inf when the roller can never touch P. The search's nominal part n gives θ, U(θ),
+// S(θ) and the initial coordinate (the same at every point of one search).
+double TouchCoordinate(const DiscCam& cam, const ExactSearchNominal& n, const Vec2<double>& P, double r) {
+  const double theta = n.theta;
+  const Vec2<double>& u = n.u;
   if (cam.follower == FollowerType::kTranslatingRoller) {
     // |L u + e Ju − P| = r: (L − P·u)² + (e − P·Ju)² = r², larger root.
     const double pv = cam.offset - P.dot(Perp(u));
     const double disc = r * r - pv * pv;
     if (disc < 0.0) return -std::numeric_limits<double>::infinity();
-    return P.dot(u) + std::sqrt(disc) - InitialFollowerCoordinate(cam);
+    return P.dot(u) + std::sqrt(disc) - n.initial_coordinate;
   }
   // |O₃ + l u(θ + π − ξ) − P| = r with O₃ = f u(θ): the roller contains P for
   // |θ + π − ξ − ψ| < acos(c/d), ψ the angle of D = P − O₃, c = (l² + d² − r²)/(2l).
@@ -32,39 +34,56 @@ double TouchCoordinate(const DiscCam& cam, double theta, const Vec2<double>& P, 
   const double c = (l * l + dist * dist - r * r) / (2.0 * l);
   if (std::abs(c) > dist) return -std::numeric_limits<double>::infinity();
   const double psi = std::atan2(D.y(), D.x());
-  const double xi0 = InitialFollowerCoordinate(cam);
-  const double xi_nominal = xi0 + cam.motion.Evaluate(theta).s;
+  const double xi0 = n.initial_coordinate;
+  const double xi_nominal = xi0 + n.follower_coordinate;
   const double xi = xi_nominal + std::remainder(theta + kPi - psi + std::acos(c / dist) - xi_nominal,
                                                 2.0 * kPi);
   return xi - xi0;
 }
 
-Vec2<double> PerturbedProfilePoint(const DiscCam& cam, const Deviations<double>& d, double t) {
-  const CamPoint<double> p = EvaluateCam(cam, t);
+Vec2<double> PerturbedPoint(const CamPoint<double>& p, const Deviations<double>& d) {
   return p.contact + d.normal * p.normal + d.radial * p.contact / p.radial_dimension;
 }
 
 }  // namespace
 
-double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, double theta,
-                             double window_rad) {
+ExactSearchNominal NominalForExactSearch(const DiscCam& cam, double theta, double window_rad) {
+  ExactSearchNominal n;
+  n.theta = theta;
+  n.window_rad = window_rad;
+  n.follower_coordinate = cam.follower == FollowerType::kTranslatingRoller ? 0.0 : cam.motion.Evaluate(theta).s;
+  n.initial_coordinate = InitialFollowerCoordinate(cam);
+  n.u = U(theta);
+  const double step = 2.0 * window_rad / ExactSearchNominal::kScan;
+  n.scan.reserve(ExactSearchNominal::kScan + 1);
+  for (int k = 0; k <= ExactSearchNominal::kScan; ++k) n.scan.push_back(EvaluateCam(cam, theta - window_rad + k * step));
+  return n;
+}
+
+double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, double theta, double window_rad) {
+  return ExactFollowerPosition(cam, d, NominalForExactSearch(cam, theta, window_rad));
+}
+
+double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, const ExactSearchNominal& nominal) {
   const double r = cam.roller_radius + d.roller;
-  auto touch = [&](double t) {
-    return TouchCoordinate(cam, theta, PerturbedProfilePoint(cam, d, t), r);
+  const double theta = nominal.theta, window_rad = nominal.window_rad;
+  auto touch_at = [&](const CamPoint<double>& p) {
+    return TouchCoordinate(cam, nominal, PerturbedPoint(p, d), r);
   };
   // Coarse scan of the window, then Brent's refinement of the maximum around the best sample (the
   // touch coordinate is smooth and has a single maximum near the contact: parabolic steps reach
   // it in ~10 evaluations where golden sections took 40).
-  constexpr int kScan = 12;
+  constexpr int kScan = ExactSearchNominal::kScan;
   const double step = 2.0 * window_rad / kScan;
   double best_t = theta, best = -std::numeric_limits<double>::infinity();
   for (int k = 0; k <= kScan; ++k) {
     const double t = theta - window_rad + k * step;
-    const double v = touch(t);
+    const double v = touch_at(nominal.scan[size_t(k)]);
     if (v > best) best = v, best_t = t;
   }
   if (!std::isfinite(best)) return kNaN;
-  const auto [t_max, f_max] = BrentMaximize(touch, best_t - step, best_t + step, 100, 1e-8);
+  const auto [t_max, f_max] =
+      BrentMaximize([&](double t) { return touch_at(EvaluateCam(cam, t)); }, best_t - step, best_t + step, 100, 1e-8);
   return std::max(best, f_max);
 }
 
@@ -78,7 +97,11 @@ std::vector<MonteCarloScale> MonteCarloLinearisation(const DiscCam& cam,
     thetas[i] = 2.0 * kPi * i / n;
     points[i] = EvaluateCam(cam, thetas[i]);
   }
+  std::vector<ExactSearchNominal> nominal;
+  nominal.reserve(size_t(n));
+  for (int i = 0; i < n; ++i) nominal.push_back(NominalForExactSearch(cam, thetas[i]));
   std::vector<MonteCarloScale> out;
+  std::vector<double> worst_case(static_cast<size_t>(n));
   for (double scale : options.scales) {
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -90,8 +113,9 @@ std::vector<MonteCarloScale> MonteCarloLinearisation(const DiscCam& cam,
     int i_rms = 0;
     double rms_max = -1.0;
     for (int i = 0; i < n; ++i) {
-      const double v = FollowerError(cam, points[i], bound).rms;
-      if (v > rms_max) rms_max = v, i_rms = i;
+      const MechanicalError<double> e = FollowerError(cam, points[i], bound);
+      worst_case[size_t(i)] = e.worst_case;  // the same for every sample
+      if (e.rms > rms_max) rms_max = e.rms, i_rms = i;
     }
     double sum_sq = 0.0;
     int within = 0;
@@ -100,12 +124,12 @@ std::vector<MonteCarloScale> MonteCarloLinearisation(const DiscCam& cam,
                                  bound.roller * unit(rng)};
       bool ok = true;
       for (int i = 0; i < n; ++i) {
-        const double exact = ExactFollowerPosition(cam, d, thetas[i]) - points[i].s;
+        const double exact = ExactFollowerPosition(cam, d, nominal[size_t(i)]) - points[i].s;
         const double linear = [&] {
           const MechanicalError<double> e = FollowerError(cam, points[i], d);
           return e.normal + e.radial + e.roller;
         }();
-        const double worst = FollowerError(cam, points[i], bound).worst_case;
+        const double worst = worst_case[size_t(i)];
         r.max_linear = std::max(r.max_linear, std::abs(linear));
         r.max_exact = std::max(r.max_exact, std::abs(exact));
         const double diff = std::abs(exact - linear);

@@ -16,11 +16,26 @@
 
 namespace camopt::disc_cam {
 
+/// What ExactFollowerPosition's search at one cam angle needs of the nominal cam, whatever the
+/// deviations: the cam angle, the nominal follower coordinate there (oscillating arm) and the
+/// nominal profile at the coarse scan's parameters. A Monte-Carlo run builds it once per angle.
+struct ExactSearchNominal {
+  static constexpr int kScan = 12;  ///< scan intervals over the window
+  double theta = 0.0, window_rad = 0.0;
+  double follower_coordinate = 0.0;  ///< S(θ) of the motion program
+  double initial_coordinate = 0.0;   ///< InitialFollowerCoordinate
+  Vec2<double> u = Vec2<double>::Zero();  ///< U(θ)
+  std::vector<CamPoint<double>> scan;  ///< the profile at θ − window + k·2window/kScan, k = 0 … kScan
+};
+ExactSearchNominal NominalForExactSearch(const DiscCam& cam, double theta, double window_rad = 3.0 * kPi / 180.0);
+
 /// Follower coordinate S (mm or rad, on the motion program's scale) on the perturbed cam at cam
 /// angle theta [rad]. The contact is searched within ±window_rad of the nominal contact parameter.
 /// Returns NaN when no profile point in the window can touch the roller (never in practice).
 double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, double theta,
                              double window_rad = 3.0 * kPi / 180.0);
+/// The same search from its nominal part built beforehand (the same operations, the same bits).
+double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, const ExactSearchNominal& nominal);
 
 struct MonteCarloOptions {
   int samples = 200;            ///< per tolerance scale
