@@ -452,9 +452,11 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
   out.fast = StudyFastLimits(spec);
   out.verification.max_rounds = options.verify_rounds;
   int values = 0, gradients = 0, iterations = 0;
-  auto solve_from = [&](const DiscCamSizingSpec& sp, const DiscCamFastLimits& fast, const std::vector<double>& x0) {
+  auto solve_from = [&](const DiscCamSizingSpec& sp, const DiscCamFastLimits& fast, const std::vector<double>& x0,
+                        bool warm = false) {
     optimizers::SolverOptions so = options.solver;
     so.initial = x0;
+    if (warm) so.barrier_initial = 1e-5, so.bound_push = 1e-6;
     const optimizers::SolverResult r = optimizers::Solve(DiscCamSizingProblem(sp, fast), so);
     values += r.value_evaluations;
     gradients += r.gradient_evaluations;
@@ -534,13 +536,13 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
   // The binding limits and their costs: the study's limit moved by ±h, solved again from the
   // answer with the fast limit moved alike, then verified and tightened as the answer was.
   auto verified_objective = [&](const DiscCamSizingSpec& moved, DiscCamFastLimits fast) {
-    optimizers::SolverResult r = solve_from(moved, fast, out.x);
+    optimizers::SolverResult r = solve_from(moved, fast, out.x, true);
     for (int round = 0; r.ok(); ++round) {
       const DiscCamAccurateCheck c = CheckDiscCamDesign(moved, DiscCamDesign(moved, r.x));
       const bool within = std::none_of(c.checks.begin(), c.checks.end(), Beyond);
       if (Landed(c, fast) || round >= options.verify_rounds || !Tighten(c, round + 1, fast, nullptr))
         return within ? r.objective : std::numeric_limits<double>::quiet_NaN();
-      r = solve_from(moved, fast, r.x);
+      r = solve_from(moved, fast, r.x, true);
     }
     return std::numeric_limits<double>::quiet_NaN();
   };
