@@ -178,6 +178,7 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
   app->Options()->SetIntegerValue("print_level", 0);
   app->Options()->SetStringValue("sb", "yes");
   app->Options()->SetStringValue("hessian_approximation", "limited-memory");
+  if (options.ipopt_extended_low_rank) app->Options()->SetStringValue("limited_memory_aug_solver", "extended");
   app->Options()->SetStringValue("nlp_scaling_method", "user-scaling");
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);

@@ -456,6 +456,7 @@ DiscCamMinSizeOutcome SolveDiscCamMinSize(const DiscCamSizingSpec& spec, const D
                         bool warm = false) {
     optimizers::SolverOptions so = options.solver;
     so.initial = x0;
+    so.ipopt_extended_low_rank = true;  // ≤ 4 variables, rows at every sampled angle (solver.h)
     if (warm) so.barrier_initial = 1e-5, so.bound_push = 1e-6;
     const optimizers::SolverResult r = optimizers::Solve(DiscCamSizingProblem(sp, fast), so);
     values += r.value_evaluations;

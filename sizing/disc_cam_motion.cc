@@ -43,6 +43,7 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
   for (int round = 0;; ++round) {
     objectives::Problem p = objectives::DiscCamMotionProblem(spec, fast);
     optimizers::SolverOptions so = options.solver;
+    so.ipopt_extended_low_rank = true;  // a few free controls, rows at every sampled angle (solver.h)
     if (!start.empty()) {
       // t from the objective at the last design (the rows change with the limits, not t's meaning).
       so.initial = start;
