@@ -17,8 +17,8 @@ constexpr double kDeg = kPi / 180.0;
 // recorded) may hold, between those samples, an extreme beyond `extreme`, the largest (sign +1)
 // or smallest (sign −1) so far; such a step is refined by golden-section search on CVODE's dense
 // output (42 interpolations). The parabola through the samples locates the step's extreme: where
-// it does not curve toward the extreme, or its vertex lies outside the step (a quarter step of
-// slack), the step is monotone toward an end already recorded. Otherwise the vertex value
+// it does not curve toward the extreme, or its vertex lies outside the step (an eighth of the
+// step of slack at either end), the step is monotone toward an end already recorded. Otherwise the vertex value
 // predicts the extreme; it departs from the solution's polynomial by O(h³), far less than the
 // curvature term |a0 − 2a1 + a2| / 4 (the steps are at most 1/40 of the natural period), added
 // as the margin: refined when the prediction plus that margin reaches past the extreme so far.
