@@ -441,6 +441,9 @@ Study Parse(const Node& root) {
   const Input::Optimizer& o = in.optimizer;
   optimizers::SolverOptions& solver = s.options.solver;
   solver.backend = ToBackend(o.backend);
+  // Few variables against rows at every sampled angle (optimizers/solver.h): measured on the seven
+  // Ipopt examples, 2–12 % less CPU (lcr_min_size 0.40 → 0.35 s), answers within 3e-7 of themselves.
+  solver.ipopt_extended_low_rank = true;
   s.form = o.constraints == "samples" ? LcrConstraintForm::kSamples : LcrConstraintForm::kAggregate;
   s.options.polish = o.polish;
   b.samples_per_period = o.samples_per_period;
