@@ -70,6 +70,40 @@ TEST(Roots, BrentFindsSmoothMaximaInFewEvaluations) {
   EXPECT_NEAR(fe, 1.0, 1e-8);
 }
 
+// Brent's method started from three known samples (the best and its two neighbours) takes their
+// parabola's vertex first; with a value tolerance it stops after the step whose parabola promised
+// less than it. sin's maximum from samples 0.3 apart, and a quartic's: the value within the
+// tolerance, in a few evaluations where the cold start takes a dozen.
+TEST(Roots, BrentFromThreeSamplesStopsOnTheValueTolerance) {
+  const auto sin_start = [](double x0) {
+    return BrentStart{x0, std::sin(x0), x0 - 0.3, std::sin(x0 - 0.3), x0 + 0.3, std::sin(x0 + 0.3)};
+  };
+  for (double x0 : {1.45, 1.6, 1.75}) {
+    int calls = 0;
+    const auto [x, fx] = BrentMaximize([&](double t) { ++calls; return std::sin(t); }, x0 - 0.3, x0 + 0.3,
+                                       sin_start(x0), 100, 1e-8, 1e-13);
+    EXPECT_GE(fx, 1.0 - 1e-13) << x0;
+    EXPECT_LE(fx, 1.0);
+    EXPECT_LE(calls, 5) << x0;
+    int cold = 0;
+    BrentMaximize([&](double t) { ++cold; return std::sin(t); }, x0 - 0.3, x0 + 0.3, 100, 1e-8);
+    EXPECT_GT(cold, 2 * calls) << x0;
+    // Without the value tolerance the start still holds: the same maximum, by the bracket's rule.
+    const auto [xb, fb] = BrentMaximize([](double t) { return std::sin(t); }, x0 - 0.3, x0 + 0.3, sin_start(x0), 100,
+                                        1e-8);
+    EXPECT_NEAR(xb, M_PI / 2, 1e-7);
+    EXPECT_GE(fb, 1.0 - 1e-15);
+  }
+  // An asymmetric peak, −(x − 0.7)² (1 + 5 (x − 0.7)): the cubic term moves the parabola's vertex.
+  const auto f = [](double x) { return -std::pow(x - 0.7, 2) * (1.0 + 5.0 * (x - 0.7)); };
+  int calls = 0;
+  const auto [xq, fq] = BrentMaximize([&](double x) { ++calls; return f(x); }, 0.6, 0.8,
+                                      BrentStart{0.7 + 0.02, f(0.72), 0.62, f(0.62), 0.8, f(0.8)}, 100, 1e-8, 1e-13);
+  EXPECT_GE(fq, -1e-13);
+  EXPECT_NEAR(xq, 0.7, 1e-6);
+  EXPECT_LE(calls, 8);
+}
+
 // x³ = 2 on [0, 2]: the cube root of 2.
 TEST(Roots, BisectionFindsTheCubeRoot) {
   const RootBracket b = BisectIncreasing([](double x) { return x * x * x; }, 2.0, 0.0, 2.0, 200, 1e-15);

@@ -38,6 +38,14 @@ GoldenSectionBracket GoldenSectionMaximize(const F& f, double lo, double hi, int
   return {lo, hi, x1, x2, f1, f2};
 }
 
+/// Three points of f already known, the best first: Brent's method started from them (its first
+/// step the vertex of their parabola) instead of from one golden-section point.
+struct BrentStart {
+  double x, fx;  ///< the best point
+  double w, fw;  ///< the second best
+  double v, fv;  ///< the third
+};
+
 /// The maximum of f on [lo, hi] (f unimodal there) by Brent's method (R. P. Brent, *Algorithms for
 /// Minimization without Derivatives*, 1973, ch. 5): a parabola through the three best points when
 /// its vertex falls well inside the bracket and the step shrinks, a golden-section step otherwise.
@@ -45,20 +53,26 @@ GoldenSectionBracket GoldenSectionMaximize(const F& f, double lo, double hi, int
 /// 0.618 of the bracket. Stops when the bracket around the best point is within x_tolerance
 /// (plus a few ulps of x) or after max_iterations. Values of −∞ (f undefined there) are allowed:
 /// no parabola is fitted through them. Returns {x, f(x)} of the best point evaluated.
+/// From a start of three samples (the best, the second, the third), the first step may be their
+/// parabola's vertex. With f_tolerance > 0 it also stops after a parabolic step whose parabola
+/// rose less than f_tolerance above the best value (a smooth maximum: what is left is of higher
+/// order than that rise).
 template <typename F>
-std::pair<double, double> BrentMaximize(const F& f, double lo, double hi, int max_iterations,
-                                        double x_tolerance) {
+std::pair<double, double> BrentMaximize(const F& f, double lo, double hi, const BrentStart& start, int max_iterations,
+                                        double x_tolerance, double f_tolerance = 0.0) {
   const double golden = 0.5 * (3.0 - std::sqrt(5.0));
   const double eps = 4.0 * std::numeric_limits<double>::epsilon();
   // x: the best point so far, w: the second best, v: the previous w; fx >= fw >= fv.
-  double x = lo + golden * (hi - lo), w = x, v = x;
-  double fx = f(x), fw = fx, fv = fx;
-  double step = 0.0, previous = 0.0;  // the last step and the one before it
+  double x = start.x, w = start.w, v = start.v;
+  double fx = start.fx, fw = start.fw, fv = start.fv;
+  // With three distinct points the first step may be their parabola's (it must move less than
+  // half the step before last: the bracket's width stands for it).
+  double step = 0.0, previous = (w != x && v != x && v != w) ? hi - lo : 0.0;
   for (int it = 0; it < max_iterations; ++it) {
     const double mid = 0.5 * (lo + hi);
     const double tol = eps * std::abs(x) + x_tolerance / 3.0;
     if (std::abs(x - mid) <= 2.0 * tol - 0.5 * (hi - lo)) break;
-    bool parabola = false;
+    bool parabola = false, last = false;
     if (std::abs(previous) > tol && std::isfinite(fx) && std::isfinite(fw) && std::isfinite(fv)) {
       // The vertex of the parabola through (x, fx), (w, fw), (v, fv) as x + p/q.
       const double r = (x - w) * (fx - fv);
@@ -72,7 +86,14 @@ std::pair<double, double> BrentMaximize(const F& f, double lo, double hi, int ma
         previous = step;
         step = p / q;
         const double u = x + step;
-        if (u - lo < 2.0 * tol || hi - u < 2.0 * tol) step = x < mid ? tol : -tol;
+        if (u - lo < 2.0 * tol || hi - u < 2.0 * tol) {
+          step = x < mid ? tol : -tol;
+        } else if (f_tolerance > 0.0) {
+          // The parabola rises above fx by −f[x, w, v]·step² at its vertex: when that is below
+          // f_tolerance, the vertex is the last step (what is left beyond it is of third order).
+          const double dd = ((fx - fw) / (x - w) - (fx - fv) / (x - v)) / (w - v);
+          last = dd < 0.0 && -dd * step * step < f_tolerance;
+        }
         parabola = true;
       }
     }
@@ -93,8 +114,18 @@ std::pair<double, double> BrentMaximize(const F& f, double lo, double hi, int ma
         v = u, fv = fu;
       }
     }
+    if (last) break;
   }
   return {x, fx};
+}
+
+/// Brent's method from one golden-section point of [lo, hi] (Brent's own start).
+template <typename F>
+std::pair<double, double> BrentMaximize(const F& f, double lo, double hi, int max_iterations,
+                                        double x_tolerance) {
+  const double x = lo + 0.5 * (3.0 - std::sqrt(5.0)) * (hi - lo);
+  const double fx = f(x);
+  return BrentMaximize(f, lo, hi, BrentStart{x, fx, x, fx, x, fx}, max_iterations, x_tolerance);
 }
 
 /// The largest value of circular samples v (sample i at i·h over a period of n·h) and, with refine,

@@ -99,57 +99,101 @@ Vec2<T> FollowerPivot(const DiscCamTpl<T>& cam, const T& theta) {
   return cam.pivot_distance * U(theta);
 }
 
+/// The profile's contact point at cam angle theta, all a search over the profile needs (the
+/// exact follower position of exact_motion.h): EvaluateCam's first part, by the same operations.
+template <typename T>
+struct CamContact {
+  motion::Svaj<T> m;        ///< the follower motion S(θ) and its derivatives
+  Vec2<T> u, ju;            ///< u(θ), J u(θ)
+  T coordinate;             ///< L (eq. 5) or ξ (eq. 11)
+  Vec2<T> w;                ///< oscillating: unit O₃ → C, u(θ + π − ξ); translating: unused
+  Vec2<T> pitch;            ///< roller centre C [mm]
+  Vec2<T> normal;           ///< unit outward normal of the profile at A
+  Vec2<T> contact;          ///< contact point A [mm]
+  T radial_dimension;       ///< |O₂A| [mm]
+};
+
+/// @param initial_coordinate InitialFollowerCoordinate(cam), taken once by a caller that
+/// evaluates many angles.
+template <typename T>
+CamContact<T> EvaluateCamContact(const DiscCamTpl<T>& cam, const T& theta, const T& initial_coordinate) {
+  using std::sqrt;
+  CamContact<T> c;
+  c.m = cam.motion.Evaluate(theta);
+  const motion::Svaj<T>& m = c.m;
+  c.u = U(theta);
+  c.ju = Perp(c.u);
+  const Vec2<T>& u = c.u;
+  const Vec2<T>& ju = c.ju;
+  if (cam.follower == FollowerType::kTranslatingRoller) {
+    const T e = cam.offset;
+    const T L = initial_coordinate + m.s;  // eq. (5)
+    c.coordinate = L;
+    c.pitch = L * u + e * ju;
+    // Eq. (2): A = C − r_f u(θ − φ); u(θ − φ) = (L u − (q − e) J u)/sqrt(L² + (q − e)²), q = dL/dθ.
+    const T h = sqrt(L * L + (m.v - e) * (m.v - e));
+    c.normal = (L * u - (m.v - e) * ju) / h;
+    c.w = Vec2<T>::Zero();
+  } else {
+    const T f = cam.pivot_distance, l = cam.arm_length;
+    const T xi = initial_coordinate + m.s;  // eq. (11)
+    c.coordinate = xi;
+    const T w1 = T(1.0) - m.v;              // 1 − dξ/dθ
+    c.w = U(theta + T(kPi) - xi);           // unit O₃ → C
+    c.pitch = f * u + l * c.w;              // O₃ = f u(θ) (FollowerPivot)
+    // Eq. (8): q = f ξ'/(1 − ξ'), Q = −q u(θ). Q runs to infinity where ξ' = 1, so the normal
+    // C − Q of eqs. (6)–(10) is taken in the regular form (1 − ξ')(C − Q) = (1 − ξ')C + f ξ' u,
+    // which keeps its outward sense on both sides of ξ' = 1.
+    const Vec2<T> nq = w1 * c.pitch + f * m.v * u;
+    c.normal = nq / nq.norm();
+  }
+  c.contact = c.pitch - cam.roller_radius * c.normal;  // eqs. (1)/(6)
+  c.radial_dimension = c.contact.norm();
+  return c;
+}
+
 /// Evaluates the cam at angle theta [rad].
 template <typename T>
 CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
   using std::atan;
   using std::atan2;
-  using std::sqrt;
+  const CamContact<T> c = EvaluateCamContact(cam, theta, InitialFollowerCoordinate(cam));
+  const motion::Svaj<T>& m = c.m;
+  const Vec2<T>& u = c.u;
+  const Vec2<T>& ju = c.ju;
   CamPoint<T> p;
   p.theta = theta;
-  const motion::Svaj<T> m = cam.motion.Evaluate(theta);
   p.s = m.s;
   p.ds = m.v;
   p.d2s = m.a;
-  const Vec2<T> u = U(theta);
-  const Vec2<T> ju = Perp(u);
-  const T rf = cam.roller_radius;
+  p.pitch = c.pitch;
+  p.normal = c.normal;
+  p.contact = c.contact;
+  p.radial_dimension = c.radial_dimension;
   Vec2<T> d2;  // d²C/dθ²
   if (cam.follower == FollowerType::kTranslatingRoller) {
     const T e = cam.offset;
-    const T L = InitialFollowerCoordinate(cam) + m.s;  // eq. (5)
+    const T L = c.coordinate;
     p.q = m.v;                                          // eq. (4): q = dL/dθ
     p.pressure_angle = atan((p.q - e) / L);             // eq. (3)
-    p.pitch = L * u + e * ju;
     p.pitch_d1 = (p.q - e) * u + L * ju;
     d2 = (m.a - L) * u + (T(2.0) * p.q - e) * ju;
-    // Eq. (2): A = C − r_f u(θ − φ); u(θ − φ) = (L u − (q − e) J u)/sqrt(L² + (q − e)²).
-    const T h = sqrt(L * L + (p.q - e) * (p.q - e));
-    p.normal = (L * u - (p.q - e) * ju) / h;
     p.instant_centre = p.q * ju;
     p.follower_dir = u;
   } else {
     const T f = cam.pivot_distance, l = cam.arm_length;
-    const T xi = InitialFollowerCoordinate(cam) + m.s;  // eq. (11)
-    const T w1 = T(1.0) - m.v;                          // 1 − dξ/dθ
-    const Vec2<T> w = U(theta + T(kPi) - xi);           // unit O₃ → C
-    p.pitch = FollowerPivot(cam, theta) + l * w;
+    const T xi = c.coordinate;
+    const T w1 = T(1.0) - m.v;
+    const Vec2<T>& w = c.w;
     p.pitch_d1 = f * ju + l * w1 * Perp(w);
     d2 = -f * u - l * w1 * w1 * w - l * m.a * Perp(w);
-    // Eq. (8): q = f ξ'/(1 − ξ'), Q = −q u(θ). Q runs to infinity where ξ' = 1, so the normal
-    // C − Q of eqs. (6)–(10) is taken in the regular form (1 − ξ')(C − Q) = (1 − ξ')C + f ξ' u,
-    // which keeps its outward sense on both sides of ξ' = 1.
-    p.q = f * m.v / w1;
+    p.q = f * m.v / w1;                                 // eq. (8)
     p.instant_centre = -p.q * u;
-    const Vec2<T> nq = w1 * p.pitch + f * m.v * u;
-    p.normal = nq / nq.norm();
     // Eq. (10): α, the angle of the normal QC from u(θ); eq. (12): φ = 90° − α − ξ.
     const T alpha = atan2(Cross(u, p.normal), u.dot(p.normal));
     p.pressure_angle = T(kPi / 2) - alpha - xi;
     p.follower_dir = -l * Perp(w);  // dC/dξ
   }
-  p.contact = p.pitch - rf * p.normal;  // eqs. (1)/(6)
-  p.radial_dimension = p.contact.norm();
   // Eq. (28): λ = ∠O₂AQ, the angle between O₂A and the common normal (AQ lies along −n where Q is
   // inside the pitch curve), written with atan2 so that it stays defined when Q is at infinity.
   const Vec2<T> ar = p.contact / p.radial_dimension;

@@ -41,7 +41,8 @@ double TouchCoordinate(const DiscCam& cam, const ExactSearchNominal& n, const Ve
   return xi - xi0;
 }
 
-Vec2<double> PerturbedPoint(const CamPoint<double>& p, const Deviations<double>& d) {
+template <typename Point>  // CamPoint or CamContact
+Vec2<double> PerturbedPoint(const Point& p, const Deviations<double>& d) {
   return p.contact + d.normal * p.normal + d.radial * p.contact / p.radial_dimension;
 }
 
@@ -56,7 +57,8 @@ ExactSearchNominal NominalForExactSearch(const DiscCam& cam, double theta, doubl
   n.u = U(theta);
   const double step = 2.0 * window_rad / ExactSearchNominal::kScan;
   n.scan.reserve(ExactSearchNominal::kScan + 1);
-  for (int k = 0; k <= ExactSearchNominal::kScan; ++k) n.scan.push_back(EvaluateCam(cam, theta - window_rad + k * step));
+  for (int k = 0; k <= ExactSearchNominal::kScan; ++k)
+    n.scan.push_back(EvaluateCamContact(cam, theta - window_rad + k * step, n.initial_coordinate));
   return n;
 }
 
@@ -67,23 +69,37 @@ double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, do
 double ExactFollowerPosition(const DiscCam& cam, const Deviations<double>& d, const ExactSearchNominal& nominal) {
   const double r = cam.roller_radius + d.roller;
   const double theta = nominal.theta, window_rad = nominal.window_rad;
-  auto touch_at = [&](const CamPoint<double>& p) {
+  auto touch_at = [&](const CamContact<double>& p) {
     return TouchCoordinate(cam, nominal, PerturbedPoint(p, d), r);
   };
-  // Coarse scan of the window, then Brent's refinement of the maximum around the best sample (the
-  // touch coordinate is smooth and has a single maximum near the contact: parabolic steps reach
-  // it in ~10 evaluations where golden sections took 40).
+  // Coarse scan of the window, then Brent's refinement of the maximum around the best sample,
+  // started from the best sample and its two neighbours (the touch coordinate is smooth and has a
+  // single maximum near the contact: the first step is their parabola's vertex) and stopped once a
+  // parabola promises less than 1e-13 (mm or rad) more: 4.7 evaluations a search on the
+  // oscillating example, where a cold start to the bracket's 1e-8 took 12.5.
   constexpr int kScan = ExactSearchNominal::kScan;
   const double step = 2.0 * window_rad / kScan;
-  double best_t = theta, best = -std::numeric_limits<double>::infinity();
+  double values[kScan + 1];
+  int best_k = -1;
+  double best = -std::numeric_limits<double>::infinity();
   for (int k = 0; k <= kScan; ++k) {
-    const double t = theta - window_rad + k * step;
-    const double v = touch_at(nominal.scan[size_t(k)]);
-    if (v > best) best = v, best_t = t;
+    values[k] = touch_at(nominal.scan[size_t(k)]);
+    if (values[k] > best) best = values[k], best_k = k;
   }
   if (!std::isfinite(best)) return kNaN;
-  const auto [t_max, f_max] =
-      BrentMaximize([&](double t) { return touch_at(EvaluateCam(cam, t)); }, best_t - step, best_t + step, 100, 1e-8);
+  const double best_t = theta - window_rad + best_k * step;
+  const auto f = [&](double t) { return touch_at(EvaluateCamContact(cam, t, nominal.initial_coordinate)); };
+  std::pair<double, double> refined;
+  if (best_k > 0 && best_k < kScan && std::isfinite(values[best_k - 1]) && std::isfinite(values[best_k + 1])) {
+    const bool left_better = values[best_k - 1] >= values[best_k + 1];
+    const double tl = best_t - step, tr = best_t + step;
+    const BrentStart start{best_t, best, left_better ? tl : tr, values[best_k + (left_better ? -1 : 1)],
+                           left_better ? tr : tl, values[best_k + (left_better ? 1 : -1)]};
+    refined = BrentMaximize(f, tl, tr, start, 100, 1e-8, 1e-13);
+  } else {
+    refined = BrentMaximize(f, best_t - step, best_t + step, 100, 1e-8);
+  }
+  const double f_max = refined.second;
   return std::max(best, f_max);
 }
 

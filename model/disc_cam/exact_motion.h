@@ -25,7 +25,7 @@ struct ExactSearchNominal {
   double follower_coordinate = 0.0;  ///< S(θ) of the motion program
   double initial_coordinate = 0.0;   ///< InitialFollowerCoordinate
   Vec2<double> u = Vec2<double>::Zero();  ///< U(θ)
-  std::vector<CamPoint<double>> scan;  ///< the profile at θ − window + k·2window/kScan, k = 0 … kScan
+  std::vector<CamContact<double>> scan;  ///< the profile's contact at θ − window + k·2window/kScan, k = 0 … kScan
 };
 ExactSearchNominal NominalForExactSearch(const DiscCam& cam, double theta, double window_rad = 3.0 * kPi / 180.0);
 
