@@ -121,15 +121,14 @@ std::optional<sizing::LcrSizing3DSpec> ParseContact3D(const Input& in, const Nod
 void AddContact3DJson(const Study& s, Result& r) {
   const sizing::LcrSizing3DSpec& c3 = *s.contact3d;
   Result::Json& res = r.json;
-  res.contact = nlohmann::json{{"model", ContactModelName(c3.contact.model)},
-                    {"sizing_model", "slices"},
-                    {"slices", c3.contact.slices},
-                    {"misalignment_mrad", c3.contact.misalignment_rad * 1e3},
-                    {"crowning", CrowningJson(c3.crowning)},
-                    {"crowning_variable", bool(c3.coefficient_range_mm || c3.radius_range_mm || c3.flat_length_range_mm)},
-                    {"length_variables", {{"roller_length_mm", bool(c3.roller_length_range_mm)},
-                                          {"cam_thickness_mm", bool(c3.cam_thickness_range_mm)}}}};
-  if (c3.overload_torque_Nmm > 0) (*res.contact)["overload_torque_Nm"] = c3.overload_torque_Nmm / 1000;
+  Result::Json::ContactBlock& block = res.contact.emplace();
+  block.model = ContactModelName(c3.contact.model);
+  block.slices = c3.contact.slices;
+  block.misalignment_mrad = c3.contact.misalignment_rad * 1e3;
+  block.crowning = CrowningJson(c3.crowning);
+  block.crowning_variable = bool(c3.coefficient_range_mm || c3.radius_range_mm || c3.flat_length_range_mm);
+  block.length_variables = {bool(c3.roller_length_range_mm), bool(c3.cam_thickness_range_mm)};
+  if (c3.overload_torque_Nmm > 0) block.overload_torque_Nm = c3.overload_torque_Nmm / 1000;
   for (size_t i = 0; i < r.candidates.size(); ++i) {
     const auto& o3 = r.candidates[i].outcome3d;
     if (o3 && r.candidates[i].pruned()) res.candidates[i].line_model_outer_diameter_mm = o3->line_outer_diameter_mm;

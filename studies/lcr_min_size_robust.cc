@@ -102,31 +102,29 @@ void RunRobust(const Study& s, Result& res, const RunContext& ctx) {
 void RobustJson(const Study& s, Result& r) {
   Result::Json& res = r.json;
   const objectives::LcrRobustRule& rule = *s.robust;
-  nlohmann::json rj;
-  rj["method"] = rule.method == objectives::LcrRobustMethod::kWorstCase ? "worst_case" : "sigma";
-  if (rule.method == objectives::LcrRobustMethod::kSigma) rj["k"] = rule.k;
+  Result::Json::RobustBlock& rj = res.robust.emplace();
+  rj.method = rule.method == objectives::LcrRobustMethod::kWorstCase ? "worst_case" : "sigma";
+  if (rule.method == objectives::LcrRobustMethod::kSigma) rj.k = rule.k;
   const lcr::ToleranceBands& b = rule.bands;
-  rj["tolerances"] = {{"eccentricity_um", b.eccentricity_mm * 1e3},
-                      {"turret_radius_um", b.turret_radius_mm * 1e3},
-                      {"roller_diameter_um", b.roller_diameter_mm * 1e3},
-                      {"roller_pitch_arcsec", b.roller_pitch_rad * 180.0 / kPi * 3600.0},
-                      {"profile_um", b.profile_mm * 1e3},
-                      {"bearing_clearance_um", b.bearing_clearance_mm * 1e3}};
-  rj["model"] = "roller force = rigid-law force + change of the compliant (Palmgren) load sharing under the "
-                "deviations; linearised sensitivities in the optimizer (worst case over the band box, or mean + "
-                "k sigma with uniform deviations), exact compliant model in the Monte-Carlo check";
-  nlohmann::json cands = nlohmann::json::array();
+  rj.tolerances.eccentricity_um = b.eccentricity_mm * 1e3;
+  rj.tolerances.turret_radius_um = b.turret_radius_mm * 1e3;
+  rj.tolerances.roller_diameter_um = b.roller_diameter_mm * 1e3;
+  rj.tolerances.roller_pitch_arcsec = b.roller_pitch_rad * 180.0 / kPi * 3600.0;
+  rj.tolerances.profile_um = b.profile_mm * 1e3;
+  rj.tolerances.bearing_clearance_um = b.bearing_clearance_mm * 1e3;
+  rj.model = "roller force = rigid-law force + change of the compliant (Palmgren) load sharing under the "
+             "deviations; linearised sensitivities in the optimizer (worst case over the band box, or mean + "
+             "k sigma with uniform deviations), exact compliant model in the Monte-Carlo check";
   for (size_t i = 0; i < r.robust.size(); ++i) {
     const auto& o = r.robust[i];
-    nlohmann::json j = {{"candidate", i}, {"converged", o.converged}, {"rounds", o.rounds}};
-    if (!r.candidates[i].feasible()) j["status"] = "no nominal optimum";
-    else j["status"] = o.converged ? "converged" : optimizers::ToString(o.result.status);
-    if (o.design) j["outer_diameter_mm"] = lcr::OuterDiameter(*o.design);
-    if (!o.note.empty()) j["note"] = o.note;
-    cands.push_back(j);
+    Result::Json::RobustBlock::CandidateSolve j;
+    j.candidate = int(i), j.converged = o.converged, j.rounds = o.rounds;
+    if (!r.candidates[i].feasible()) j.status = "no nominal optimum";
+    else j.status = o.converged ? "converged" : optimizers::ToString(o.result.status);
+    if (o.design) j.outer_diameter_mm = lcr::OuterDiameter(*o.design);
+    if (!o.note.empty()) j.note = o.note;
+    rj.candidates.push_back(std::move(j));
   }
-  rj["candidates"] = cands;
-  res.robust = rj;
   if (r.best >= 0) {
     res.nominal_best = res.best;
     if (r.nominal_mc) (*res.nominal_best)["monte_carlo"] = MonteCarloJson(*r.nominal_mc);
@@ -172,8 +170,7 @@ void RobustJson(const Study& s, Result& r) {
   if (r.robust_mc) bj["monte_carlo"] = MonteCarloJson(*r.robust_mc);
   res.best = bj;
   if (r.best >= 0)
-    (*res.robust)["outer_diameter_increase_mm"] =
-        k.outer_diameter_mm - r.candidates[r.best].outcome.check->outer_diameter_mm;
+    res.robust->outer_diameter_increase_mm = k.outer_diameter_mm - r.candidates[r.best].outcome.check->outer_diameter_mm;
 }
 
 }  // namespace camopt::studies::lcr_min_size

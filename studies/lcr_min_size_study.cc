@@ -645,35 +645,6 @@ nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
   return s;
 }
 
-nlohmann::ordered_json Result::Json::ContactSchema() {
-  return SchemaOf(R"json({"type": "object", "properties": {
-    "model": {"type": "string", "description": "the contact model of the study (slices or half_space)"},
-    "sizing_model": {"const": "slices", "description": "the model of the sizing's stress rows"},
-    "slices": {"type": "integer"},
-    "misalignment_mrad": {"type": "number", "description": "[mrad]"},
-    "crowning": {"type": "object", "description": "fixed.crowning"},
-    "crowning_variable": {"type": "boolean"},
-    "length_variables": {"type": "object", "properties": {"roller_length_mm": {"type": "boolean"},
-      "cam_thickness_mm": {"type": "boolean"}}, "additionalProperties": false},
-    "overload_torque_Nm": {"type": "number", "description": "[N·m]"}},
-    "required": ["model", "sizing_model", "slices", "misalignment_mrad", "crowning", "crowning_variable", "length_variables"],
-    "additionalProperties": false})json");
-}
-
-nlohmann::ordered_json Result::Json::RobustSchema() {
-  return SchemaOf(R"json({"type": "object", "properties": {
-    "method": {"enum": ["worst_case", "sigma"]},
-    "k": {"type": "number", "description": "sigma: k of mean + k sigma"},
-    "tolerances": {"type": "object", "description": "the tolerance bands [µm, arcsec]"},
-    "model": {"type": "string"},
-    "candidates": {"type": "array", "description": "every candidate's robust solve, in the candidates' order", "items": {
-      "type": "object", "properties": {"candidate": {"type": "integer"}, "converged": {"type": "boolean"},
-      "rounds": {"type": "integer"}, "status": {"type": "string"}, "outer_diameter_mm": {"type": "number"},
-      "note": {"type": "string"}}, "additionalProperties": false}},
-    "outer_diameter_increase_mm": {"type": "number", "description": "the robust best's outer diameter over the nominal best's [mm]"}},
-    "required": ["method", "tolerances", "model", "candidates"], "additionalProperties": false})json");
-}
-
 nlohmann::ordered_json Input::SchemaRules() {
   // Robust sizing needs its tolerances (and the tolerances are only for it) and the aggregate
   // constraints (it picks its own forms), the Monte-Carlo the tolerances; a catalogue gives the rollers' lengths and diameters (else fixed.roller_length_mm

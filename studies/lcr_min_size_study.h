@@ -599,6 +599,87 @@ struct Result : sizing::LcrSearchOutcome {
         a->Visit("design_problems", &design_problems, Field().Desc("not feasible: the design's structural problems"));
       }
     };
+    /// With a 3D contact: the contact model of the study, the sizing's, and the crowning sized.
+    struct ContactBlock {
+      struct LengthVariables {
+        bool roller_length_mm = false, cam_thickness_mm = false;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("roller_length_mm", &roller_length_mm, Field().Desc("the rollers' length is a variable"));
+          a->Visit("cam_thickness_mm", &cam_thickness_mm, Field().Desc("the cams' thickness is a variable"));
+        }
+      };
+      std::string model, sizing_model = "slices";
+      int slices = 0;
+      double misalignment_mrad = 0;
+      nlohmann::json crowning;
+      bool crowning_variable = false;
+      LengthVariables length_variables;
+      std::optional<double> overload_torque_Nm;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("model", &model, Field().Desc("the contact model of the study (slices or half_space)"));
+        a->Visit("sizing_model", &sizing_model, Field().Const("slices").Desc("the model of the sizing's stress rows"));
+        a->Visit("slices", &slices, Field().Desc("slices along the roller"));
+        a->Visit("misalignment_mrad", &misalignment_mrad, Field().Unit("mrad").Desc("the roller's tilt"));
+        a->Visit("crowning", &crowning,
+                 Field().Schema({{"type", "object"}}).Desc("fixed.crowning: its type and parameters"));
+        a->Visit("crowning_variable", &crowning_variable, Field().Desc("a crowning parameter is a variable"));
+        a->Visit("length_variables", &length_variables, Field().Desc("which lengths are variables"));
+        a->Visit("overload_torque_Nm", &overload_torque_Nm,
+                 Field().Unit("N·m").Desc("load.overload_torque_Nm: the edge check's torque"));
+      }
+    };
+    /// With robust: the method, the tolerances and every candidate's robust solve.
+    struct RobustBlock {
+      struct CandidateSolve {
+        int candidate = 0;
+        bool converged = false;
+        int rounds = 0;
+        std::string status;
+        std::optional<double> outer_diameter_mm;
+        std::optional<std::string> note;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("candidate", &candidate, Field().Desc("the index into candidates"));
+          a->Visit("converged", &converged, Field());
+          a->Visit("rounds", &rounds, Field().Desc("robust rounds (the linearisation moved with the design)"));
+          a->Visit("status", &status, Field().Desc("converged, no nominal optimum, or the solver's status"));
+          a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("the robust design's"));
+          a->Visit("note", &note, Field());
+        }
+      };
+      /// The bands the robust rows used (every one, 0 where the study gave none).
+      struct Bands {
+        double eccentricity_um = 0, turret_radius_um = 0, roller_diameter_um = 0, roller_pitch_arcsec = 0,
+               profile_um = 0, bearing_clearance_um = 0;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("eccentricity_um", &eccentricity_um, Field().Unit("µm"));
+          a->Visit("turret_radius_um", &turret_radius_um, Field().Unit("µm"));
+          a->Visit("roller_diameter_um", &roller_diameter_um, Field().Unit("µm"));
+          a->Visit("roller_pitch_arcsec", &roller_pitch_arcsec, Field().Unit("arcsec"));
+          a->Visit("profile_um", &profile_um, Field().Unit("µm"));
+          a->Visit("bearing_clearance_um", &bearing_clearance_um, Field().Unit("µm"));
+        }
+      };
+      std::string method;
+      std::optional<double> k;
+      Bands tolerances;
+      std::string model;
+      std::vector<CandidateSolve> candidates;
+      std::optional<double> outer_diameter_increase_mm;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("method", &method, Field().OneOf({"worst_case", "sigma"}).Desc("robust.method"));
+        a->Visit("k", &k, Field().Desc("sigma: k of mean + k sigma"));
+        a->Visit("tolerances", &tolerances, Field().Desc("the ± bands of the study's tolerances (0: none given)"));
+        a->Visit("model", &model, Field().Desc("the robust rows' model"));
+        a->Visit("candidates", &candidates, Field().Desc("every candidate's robust solve, in the candidates' order"));
+        a->Visit("outer_diameter_increase_mm", &outer_diameter_increase_mm,
+                 Field().Unit("mm").Desc("the robust best's outer diameter over the nominal best's"));
+      }
+    };
     std::string study = "lcr_min_size", name;
     Target target;
     std::optional<std::string> objective;
@@ -609,7 +690,8 @@ struct Result : sizing::LcrSearchOutcome {
     nlohmann::json best;  ///< null when nothing fits
     std::optional<nlohmann::json> nominal_best;
     std::optional<std::vector<std::string>> notes;
-    std::optional<nlohmann::json> contact, robust;
+    std::optional<ContactBlock> contact;
+    std::optional<RobustBlock> robust;
     template <typename Archive>
     void Serialize(Archive* a) {
       a->Visit("study", &study, Field().Const("lcr_min_size").Desc("the study kind"));
@@ -634,16 +716,12 @@ struct Result : sizing::LcrSearchOutcome {
                    "with robust: the best design of the study without tolerances, with its Monte-Carlo check (null: "
                    "none)"));
       a->Visit("notes", &notes, Field().Desc("when nothing fits: the limit that blocks most and what would fit"));
-      a->Visit("contact", &contact,
-               Field().Schema(ContactSchema()).Desc("with a 3D contact: the contact model and the crowning sized"));
+      a->Visit("contact", &contact, Field().Desc("with a 3D contact: the contact model and the crowning sized"));
       a->Visit("robust", &robust,
-               Field().Schema(RobustSchema()).Desc("with robust: the method, the tolerances and every candidate's "
-                                                   "robust solve"));
+               Field().Desc("with robust: the method, the tolerances and every candidate's robust solve"));
     }
-    /// The schemas of the raw blocks (lcr_min_size_study.cc).
+    /// The schema of the raw block (lcr_min_size_study.cc).
     static nlohmann::ordered_json BestSchema(bool nullable);
-    static nlohmann::ordered_json ContactSchema();
-    static nlohmann::ordered_json RobustSchema();
   };
   Json json;
   template <typename Archive>
