@@ -826,30 +826,6 @@ nlohmann::ordered_json Input::SchemaRules() {
   return rules;
 }
 
-nlohmann::ordered_json Result::RatingsSchema() {
-  // SizedRatingsJson (studies/ratings.h) without a rated torque of its own (cycloid_ltca solves it
-  // from best_cycloid_ltca.json), and with ratings.momentary_torque_Nm the static check at it.
-  return nlohmann::ordered_json::parse(R"json({"type": "object", "properties": {
-    "rated_torque_required_Nm": {"type": "number", "description": "ratings.rated_torque_Nm [N·m]"},
-    "rated_life_h": {"type": "number", "description": "ratings.rated_life_h [h]"},
-    "rated_output_speed_rpm": {"type": "number", "description": "ratings.rated_output_speed_rpm [rpm]"},
-    "rated_input_speed_rpm": {"type": "number", "description": "the rated output speed times the ratio [rpm]"},
-    "L10h_at_required_torque": {"type": ["number", "null"], "description": "the shortest L10h at the rated torque and speed, accurate model [h] (null: unlimited)"},
-    "met": {"type": "boolean", "description": "the life (and the momentary torque's s0) holds as the verification holds it"},
-    "rated_torque_Nm": {"type": ["number", "null"], "description": "null: cycloid_ltca solves the sized drive's own [N·m]"},
-    "rated_torque_note": {"type": "string", "description": "where the sized drive's own rated torque comes from"},
-    "definition": {"type": "string", "description": "what reaching the rated torque means"},
-    "momentary_torque_required_Nm": {"type": "number", "description": "with ratings.momentary_torque_Nm [N·m]"},
-    "momentary_static_safety": {"type": "number", "description": "with it: the s0 asked for"},
-    "s0_at_required_momentary_torque": {"type": ["number", "null"], "description": "with it: the smallest s0 at it, accurate model (null: unlimited)"},
-    "momentary_torque_Nm": {"type": ["number", "null"], "description": "with it: null, cycloid_ltca solves the sized drive's own [N·m]"},
-    "momentary_torque_note": {"type": "string", "description": "with it: where the sized drive's own comes from"},
-    "momentary_met": {"type": "boolean", "description": "with it: s0 holds as the verification holds it"}},
-    "required": ["rated_torque_required_Nm", "rated_life_h", "rated_output_speed_rpm", "rated_input_speed_rpm",
-      "L10h_at_required_torque", "met", "rated_torque_Nm", "rated_torque_note", "definition"],
-    "additionalProperties": false})json");
-}
-
 namespace {
 
 // result.json's members of r from the study and the outcome (below).
@@ -1187,7 +1163,7 @@ void FillResult(const Study& s, Result& r) {
       };
       const bool momentary_met = !(s.ratings && s.ratings->momentary_torque_Nm) || holds("min_static_safety");
       if (s.ratings)
-        b.ratings = SizedRatingsJson(
+        b.ratings = SizedRatingsOf(
             *s.ratings, double(o.drive.teeth) / double(o.drive.rollers - o.drive.teeth), acc.shortest_life_h,
             holds("life_h") && momentary_met, std::nullopt, "",
             "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block), one LTCA cycle per trial torque: "
@@ -1196,15 +1172,9 @@ void FillResult(const Study& s, Result& r) {
       if (s.ratings && s.ratings->momentary_torque_Nm) {
         // The momentary torque: s0 at it on the accurate model; the drive's own momentary torque is
         // cycloid_ltca's root search (the loads are not proportional to the torque).
-        nlohmann::json& g = *b.ratings;
-        const double need = s.ratings->momentary_static_safety;
-        g["momentary_torque_required_Nm"] = *s.ratings->momentary_torque_Nm;
-        g["momentary_static_safety"] = need;
-        g["s0_at_required_momentary_torque"] =
-            std::isfinite(acc.min_static_safety) ? nlohmann::json(acc.min_static_safety) : nlohmann::json(nullptr);
-        g["momentary_torque_Nm"] = nullptr;
-        g["momentary_torque_note"] = "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block)";
-        g["momentary_met"] = momentary_met;
+        b.ratings->SetMomentary(*s.ratings->momentary_torque_Nm, s.ratings->momentary_static_safety,
+                                acc.min_static_safety, std::nullopt, std::nullopt,
+                                "solved by cycloid_ltca from best_cycloid_ltca.json (its ratings block)", momentary_met);
         err.min_static_safety = o.check.static_safety_error;
       }
     }

@@ -31,6 +31,7 @@
 #include "studies/input.h"
 #include "studies/lubrication_input.h"
 #include "studies/material_input.h"
+#include "studies/ratings.h"
 #include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/torsional_dynamics_input.h"
@@ -532,7 +533,7 @@ struct Result {
     EstimatedError estimated_error;
     std::string accurate_model;
     std::optional<cycloid_common::SizingLifeBlock> life;
-    std::optional<nlohmann::json> ratings;
+    std::optional<SizedRatingsBlock> ratings;
     std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;
     template <typename Archive>
     void Serialize(Archive* a) {
@@ -566,8 +567,7 @@ struct Result {
       a->Visit("accurate_model", &accurate_model, Field().Desc("the accurate model, in words"));
       a->Visit("life", &life,
                Field().Desc("with a speed or duty cycle: the accurate model's bearing lives"));
-      a->Visit("ratings", &ratings,
-               Field().Schema(RatingsSchema()).Desc("with ratings: the rated and momentary torques checked"));
+      a->Visit("ratings", &ratings, Field().Desc("with ratings: the rated and momentary torques checked"));
       a->Visit("torsional_dynamics", &torsional_dynamics,
                Field().Desc("with torsional_dynamics: cycloid_ltca's block for the reported design, or its error"));
     }
@@ -675,9 +675,6 @@ struct Result {
     a->Visit("notes", &notes, Field().Desc("why the answer is not what was asked, when it is not"));
     a->Visit("warnings", &warnings, Field().Desc("the run's warnings"));
   }
-  /// The schemas of the raw blocks of best (cycloid_min_size_study.cc).
-  static nlohmann::ordered_json RatingsSchema();
-
   // Not in result.json: the sizing's outcome and the best design's cycle, which the other files
   // are drawn from.
   sizing::CycloidMinSizeOutcome outcome;

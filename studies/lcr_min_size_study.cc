@@ -604,14 +604,7 @@ nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
     "binding_limits": {"type": "array", "description": "each binding limit, its value and its cost"},
     "limit_sensitivity_note": {"type": "string", "description": "3D contact: why the limit costs are not computed"},
     "life": {},
-    "ratings": {"type": "object", "description": "with ratings: the sized design's ratings (docs/ratings.md)", "properties": {
-      "L10h_at_required_torque": {"type": ["number", "null"], "description": "[h]"},
-      "rated_torque_Nm": {"type": ["number", "null"], "description": "[N·m]"},
-      "momentary_torque_required_Nm": {"type": "number", "description": "[N·m]"},
-      "momentary_static_safety": {"type": "number"},
-      "s0_at_required_momentary_torque": {"type": ["number", "null"]},
-      "momentary_torque_Nm": {"type": ["number", "null"], "description": "[N·m]"},
-      "momentary_by": {"type": "string"}, "momentary_met": {"type": "boolean"}}},
+    "ratings": {},
     "contact": {"type": "object", "description": "3D contact: the 3D peaks, edge margins and the line model's outer diameter"},
     "half_space_check": {"type": "object", "description": "3D contact: the half-space model's check of the slices model's peaks"},
     "nominal": {"type": "object", "description": "robust: the nominal dense check's extremes"},
@@ -625,6 +618,11 @@ nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
     ResultSchemaEmitter::Describe(&life, Field(), l);
     l["description"] = "with a speed or duty cycle: the bearing lives (docs/life.md)";
     s["properties"]["life"] = std::move(l);
+    SizedRatingsBlock ratings;
+    nlohmann::ordered_json g = nlohmann::ordered_json::object();
+    ResultSchemaEmitter::Describe(&ratings, Field(), g);
+    g["description"] = "with ratings: the sized design's ratings (docs/ratings.md)";
+    s["properties"]["ratings"] = std::move(g);
   }
   s["properties"]["input"] = SchemaOf(kSideSchema);
   s["properties"]["input"]["description"] = "the input cam";
@@ -910,8 +908,8 @@ void FillResult(const Study& s, Result& result) {
       return any && all;
     };
     const bool momentary_met = !s.ratings->momentary_torque_Nm || holds("min_static_safety");
-    b["ratings"] = SizedRatingsJson(*s.ratings, double(s.ratio), k.shortest_L10h, holds("life_h") && momentary_met,
-                                    rated, by, "no rated bearing is loaded");
+    SizedRatingsBlock ratings = SizedRatingsOf(*s.ratings, double(s.ratio), k.shortest_L10h,
+                                               holds("life_h") && momentary_met, rated, by, "no rated bearing is loaded");
     if (s.ratings->momentary_torque_Nm) {
       // The momentary torque: P0max ∝ T (rigid law), so each bearing's s0 = s at
       // T_line C0 / (s P0max(T_line)), T_line the rated line's torque; the design's is the smallest.
@@ -923,14 +921,10 @@ void FillResult(const Study& s, Result& result) {
           const double t = line * bl.static_rating_N / (need * bl.life.max_load_N);
           if (!momentary || t < *momentary) momentary = t, mby = bl.name;
         }
-      nlohmann::json& g = b["ratings"];
-      g["momentary_torque_required_Nm"] = *s.ratings->momentary_torque_Nm;
-      g["momentary_static_safety"] = need;
-      g["s0_at_required_momentary_torque"] = NumberOrNull(k.min_static_safety);
-      g["momentary_torque_Nm"] = momentary ? nlohmann::json(*momentary) : nlohmann::json(nullptr);
-      g["momentary_by"] = mby;
-      g["momentary_met"] = momentary_met;
+      ratings.SetMomentary(*s.ratings->momentary_torque_Nm, need, k.min_static_safety, momentary, mby, std::nullopt,
+                           momentary_met);
     }
+    b["ratings"] = WriteResult(ratings);
   }
   res.best = b;
   if (s.contact3d) AddContact3DJson(s, result);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -146,23 +147,35 @@ void SolveAllowableSpeed(const std::function<double(double, double)>& loss_W, co
   }
 }
 
-nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h, bool met,
-                                const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
-                                const std::string& rated_torque_note) {
-  nlohmann::json j = {{"rated_torque_required_Nm", in.rated_torque_Nm},
-                      {"rated_life_h", in.rated_life_h},
-                      {"rated_output_speed_rpm", in.rated_output_speed_rpm},
-                      {"rated_input_speed_rpm", in.rated_output_speed_rpm * std::abs(ratio)},
-                      {"L10h_at_required_torque", std::isfinite(shortest_L10h) ? nlohmann::json(shortest_L10h)
-                                                                               : nlohmann::json(nullptr)},
-                      {"met", met},
-                      {"rated_torque_Nm", Optional(rated_torque_Nm)}};
-  if (rated_torque_Nm) j["rated_by"] = rated_by;
-  else j["rated_torque_note"] = rated_torque_note;
-  j["definition"] = "the sized design reaches the rated torque when every rated bearing's L10 at it and the rated "
-                    "output speed is at least rated_life_h (limits.life_h of the sizing, over that one line; "
-                    "docs/ratings.md, Ratings as sizing limits)";
+SizedRatingsBlock SizedRatingsOf(const SizingRatingsInput& in, double ratio, double shortest_L10h, bool met,
+                                 const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
+                                 const std::string& rated_torque_note) {
+  SizedRatingsBlock j;
+  j.rated_torque_required_Nm = in.rated_torque_Nm;
+  j.rated_life_h = in.rated_life_h;
+  j.rated_output_speed_rpm = in.rated_output_speed_rpm;
+  j.rated_input_speed_rpm = in.rated_output_speed_rpm * std::abs(ratio);
+  j.L10h_at_required_torque = shortest_L10h;
+  j.met = met;
+  j.rated_torque_Nm = rated_torque_Nm;
+  if (rated_torque_Nm) j.rated_by = rated_by;
+  else j.rated_torque_note = rated_torque_note;
+  j.definition = "the sized design reaches the rated torque when every rated bearing's L10 at it and the rated "
+                 "output speed is at least rated_life_h (limits.life_h of the sizing, over that one line; "
+                 "docs/ratings.md, Ratings as sizing limits)";
   return j;
+}
+
+void SizedRatingsBlock::SetMomentary(double required_Nm, double static_safety, double s0_at_required,
+                                     const std::optional<double>& own_Nm, std::optional<std::string> by,
+                                     std::optional<std::string> note, bool met_) {
+  momentary_torque_required_Nm = required_Nm;
+  momentary_static_safety = static_safety;
+  s0_at_required_momentary_torque = s0_at_required;
+  momentary_torque_Nm = own_Nm ? *own_Nm : std::numeric_limits<double>::quiet_NaN();
+  momentary_by = std::move(by);
+  momentary_torque_note = std::move(note);
+  momentary_met = met_;
 }
 
 namespace {

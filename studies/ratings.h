@@ -116,10 +116,60 @@ struct RatingsKeys {
 /// best.ratings of a sizing kind (SizingRatingsInput): the rated point asked for, the sized design's
 /// shortest L10 there (the accurate model's check) and `met` (the verification's verdict on it); with
 /// `rated_torque_Nm` (a kind whose lives follow a closed form in the torque) the design's own rated
-/// torque and its bearing, else `rated_torque_note` says where it is solved.
-nlohmann::json SizedRatingsJson(const SizingRatingsInput& in, double ratio, double shortest_L10h, bool met,
-                                const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
-                                const std::string& rated_torque_note);
+/// torque and its bearing, else `rated_torque_note` says where it is solved. With
+/// ratings.momentary_torque_Nm also the static check at it (SetMomentary).
+struct SizedRatingsBlock {
+  double rated_torque_required_Nm = 0, rated_life_h = 0, rated_output_speed_rpm = 0, rated_input_speed_rpm = 0;
+  double L10h_at_required_torque = 0;
+  bool met = false;
+  std::optional<double> rated_torque_Nm;
+  std::optional<std::string> rated_by, rated_torque_note;
+  std::string definition;
+  std::optional<double> momentary_torque_required_Nm, momentary_static_safety, s0_at_required_momentary_torque,
+      momentary_torque_Nm;
+  std::optional<std::string> momentary_by, momentary_torque_note;
+  std::optional<bool> momentary_met;
+
+  /// The momentary part: the torque and s0 asked for, the smallest s0 at that torque (not finite:
+  /// null), the design's own momentary torque (absent: null) and what limits it or where it is solved.
+  void SetMomentary(double required_Nm, double static_safety, double s0_at_required, const std::optional<double>& own_Nm,
+                    std::optional<std::string> by, std::optional<std::string> note, bool met_);
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("rated_torque_required_Nm", &rated_torque_required_Nm, Field().Unit("N·m").Desc("ratings.rated_torque_Nm"));
+    a->Visit("rated_life_h", &rated_life_h, Field().Unit("h").Desc("ratings.rated_life_h"));
+    a->Visit("rated_output_speed_rpm", &rated_output_speed_rpm, Field().Unit("rpm").Desc("ratings.rated_output_speed_rpm"));
+    a->Visit("rated_input_speed_rpm", &rated_input_speed_rpm,
+             Field().Unit("rpm").Desc("the rated output speed times the ratio"));
+    a->Visit("L10h_at_required_torque", &L10h_at_required_torque,
+             Field().NullWhenNotFinite().Unit("h").Desc(
+                 "the shortest L10h at the rated torque and speed, accurate model (null: unlimited)"));
+    a->Visit("met", &met, Field().Desc("the life (and the momentary torque's s0) holds as the verification holds it"));
+    a->Visit("rated_torque_Nm", &rated_torque_Nm,
+             Field().NullWhenAbsent().Unit("N·m").Desc(
+                 "the sized design's own rated torque (null: none reached, or solved by the analysis kind: "
+                 "rated_torque_note)"));
+    a->Visit("rated_by", &rated_by, Field().Desc("with rated_torque_Nm: the bearing that sets it"));
+    a->Visit("rated_torque_note", &rated_torque_note, Field().Desc("without it: where the design's own comes from"));
+    a->Visit("definition", &definition, Field().Desc("what reaching the rated torque means"));
+    a->Visit("momentary_torque_required_Nm", &momentary_torque_required_Nm,
+             Field().Unit("N·m").Desc("with ratings.momentary_torque_Nm: that torque"));
+    a->Visit("momentary_static_safety", &momentary_static_safety, Field().Desc("with it: the s0 asked for"));
+    a->Visit("s0_at_required_momentary_torque", &s0_at_required_momentary_torque,
+             Field().NullWhenNotFinite().Desc("with it: the smallest s0 at it, accurate model (null: unlimited)"));
+    a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
+             Field().NullWhenNotFinite().Unit("N·m").Desc(
+                 "with it: the design's own momentary torque (null: none, or solved by the analysis kind)"));
+    a->Visit("momentary_by", &momentary_by, Field().Desc("with it and the design's own: the bearing that sets it"));
+    a->Visit("momentary_torque_note", &momentary_torque_note,
+             Field().Desc("with it, solved by the analysis kind: where it comes from"));
+    a->Visit("momentary_met", &momentary_met, Field().Desc("with it: s0 holds as the verification holds it"));
+  }
+};
+SizedRatingsBlock SizedRatingsOf(const SizingRatingsInput& in, double ratio, double shortest_L10h, bool met,
+                                 const std::optional<double>& rated_torque_Nm, const std::string& rated_by,
+                                 const std::string& rated_torque_note);
 
 /// The datasheet's "Ratings" and "Output bearing" sections (studies/datasheet.h).
 std::vector<DatasheetSection> RatingsDatasheetSections();
