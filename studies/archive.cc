@@ -163,11 +163,70 @@ std::string Accepts(const nlohmann::ordered_json& s) {
   return type;
 }
 
+// A oneOf's alternatives as one schema for the table: the union of their types and of their keys
+// (a key's schemas merged the same way), a key required only where every object alternative
+// requires it, the first description found.
+nlohmann::ordered_json MergedAlternatives(const std::vector<nlohmann::ordered_json>& alternatives) {
+  nlohmann::ordered_json m = nlohmann::ordered_json::object();
+  std::vector<std::string> types;
+  const auto add_type = [&](const std::string& t) {
+    if (std::find(types.begin(), types.end(), t) == types.end()) types.push_back(t);
+  };
+  std::vector<std::string> keys;
+  std::vector<std::string> required;
+  bool first_object = true;
+  for (const nlohmann::ordered_json& a : alternatives) {
+    if (a.contains("type")) {
+      if (a["type"].is_string()) add_type(a["type"].get<std::string>());
+      else for (const auto& t : a["type"]) add_type(t.get<std::string>());
+    }
+    if (!m.contains("description") && a.contains("description")) m["description"] = a["description"];
+    if (!a.contains("properties")) continue;
+    for (auto it = a["properties"].begin(); it != a["properties"].end(); ++it)
+      if (std::find(keys.begin(), keys.end(), it.key()) == keys.end()) keys.push_back(it.key());
+    std::vector<std::string> req;
+    for (const auto& r : a.value("required", nlohmann::ordered_json::array())) req.push_back(r.get<std::string>());
+    if (first_object) required = req;
+    else
+      required.erase(std::remove_if(required.begin(), required.end(),
+                                    [&](const std::string& k) { return std::find(req.begin(), req.end(), k) == req.end(); }),
+                     required.end());
+    first_object = false;
+  }
+  if (types.size() == 1) m["type"] = types.front();
+  else if (!types.empty()) m["type"] = types;
+  std::vector<nlohmann::ordered_json> items;
+  for (const nlohmann::ordered_json& a : alternatives)
+    if (a.contains("items")) items.push_back(a["items"]);
+  if (!items.empty()) m["items"] = items.size() == 1 ? items.front() : MergedAlternatives(items);
+  if (keys.empty()) return m;
+  m["properties"] = nlohmann::ordered_json::object();
+  for (const std::string& k : keys) {
+    std::vector<nlohmann::ordered_json> of_key;
+    for (const nlohmann::ordered_json& a : alternatives)
+      if (a.contains("properties") && a["properties"].contains(k)) of_key.push_back(a["properties"][k]);
+    const bool same = std::all_of(of_key.begin(), of_key.end(), [&](const auto& x) { return x == of_key.front(); });
+    m["properties"][k] = same ? of_key.front() : MergedAlternatives(of_key);
+  }
+  m["required"] = required;
+  return m;
+}
+
+// A member's schema for the table: a oneOf (a block or its error, a block or null, two shapes)
+// merged into one (MergedAlternatives), its own description kept.
+nlohmann::ordered_json TableSchema(const nlohmann::ordered_json& p) {
+  if (!p.contains("oneOf")) return p;
+  std::vector<nlohmann::ordered_json> alternatives(p["oneOf"].begin(), p["oneOf"].end());
+  nlohmann::ordered_json m = MergedAlternatives(alternatives);
+  if (p.contains("description")) m["description"] = p["description"];
+  return m;
+}
+
 void TableRows(const nlohmann::ordered_json& schema, const std::string& prefix, bool result, std::string& out) {
   if (!schema.contains("properties")) return;
   const nlohmann::ordered_json required = schema.value("required", nlohmann::ordered_json::array());
   for (auto it = schema["properties"].begin(); it != schema["properties"].end(); ++it) {
-    const nlohmann::ordered_json& p = it.value();
+    const nlohmann::ordered_json p = TableSchema(it.value());
     const std::string path = prefix + it.key();
     std::string accepts = Accepts(p);
     const bool always = std::find(required.begin(), required.end(), it.key()) != required.end();

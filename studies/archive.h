@@ -615,6 +615,8 @@ class ResultWriter {
       return nlohmann::ordered_json(value);
     } else if constexpr (archive_detail::IsVariant<T>::value) {
       return std::visit([&](const auto& alternative) { return Value(alternative, f, path); }, value);
+    } else if constexpr (std::is_same_v<T, std::nullptr_t>) {
+      return nullptr;  // a variant's null alternative (a block that may be null)
     } else {
       static_assert(std::is_integral_v<T> || std::is_same_v<T, std::string>,
                     "a result member type the archives do not know");
@@ -752,6 +754,8 @@ class ResultSchemaEmitter {
       s["oneOf"] = nlohmann::ordered_json::array();
       archive_detail::DescribeAlternatives<ResultSchemaEmitter, T>(
           f, s["oneOf"], std::make_index_sequence<std::variant_size_v<T>>{});
+    } else if constexpr (std::is_same_v<T, std::nullptr_t>) {
+      s["type"] = "null";  // std::variant<Block, std::nullptr_t>: the block or null
     } else {
       static_assert(sizeof(T) == 0, "a result member type the archives do not know");
     }

@@ -139,45 +139,48 @@ void AddContact3DJson(const Study& s, Result& r) {
   }
   if (r.best < 0) return;
   const sizing::LcrMinSize3DOutcome& b = *r.candidates[r.best].outcome3d;
-  nlohmann::json& best = res.best;
-  const char* sides[2] = {"input", "output"};
-  nlohmann::json contact = {{"line_model_outer_diameter_mm", b.line_outer_diameter_mm}};
+  Result::Json::NominalBest& best = std::get<Result::Json::NominalBest>(res.best);
+  Result::Json::BestSide* best_sides[2] = {&best.input, &best.output};
+  Result::Json::Contact3DBest& contact = best.contact.emplace();
+  contact.line_model_outer_diameter_mm = b.line_outer_diameter_mm;
   for (int k = 0; k < 2; ++k) {
-    best[sides[k]]["crowning"] = CrowningJson(b.crowning[k]);
+    best_sides[k]->sizes.crowning = CrowningJson(b.crowning[k]);
     if (!b.contact) continue;
     const lcr::Contact3DCycleSide& d = b.contact->design[k];
-    nlohmann::json side = {{"max_contact_stress_MPa", NumberOrNull(d.max_contact_stress_MPa)},
-                           {"edge_loaded", d.edge_loaded},
-                           {"slice_width_mm", d.slice_width_mm},
-                           {"interpolation_error_MPa", d.interpolation_error_MPa}};
+    Result::Json::Contact3DSide side;
+    side.max_contact_stress_MPa = d.max_contact_stress_MPa;
+    side.edge_loaded = d.edge_loaded;
+    side.slice_width_mm = d.slice_width_mm;
+    side.interpolation_error_MPa = d.interpolation_error_MPa;
     if (d.worst_angle >= 0 && std::isfinite(d.max_contact_stress_MPa)) {
       // The worst slice as a line contact of its own peak pressure, b = 2 p0 R'/E* (model/contact/hertz.h).
       const double b_mm = contact::LineContactHalfWidthFromPeakPressure(
           d.max_contact_stress_MPa, d.stress_radius_mm[size_t(d.worst_angle)], s.base.material.composite_modulus_MPa());
-      side["subsurface"] = SubsurfaceJson(d.max_contact_stress_MPa, b_mm, s.base.material.poisson_ratio,
-                                          "the worst slice of the slices model taken as a line contact of its peak "
-                                          "pressure and half-width b = 2 p0 R'/E* (frictionless, homogeneous "
-                                          "half-spaces, Johnson 1985 eq. 4.50 ff.)");
+      side.subsurface = SubsurfaceJson(d.max_contact_stress_MPa, b_mm, s.base.material.poisson_ratio,
+                                       "the worst slice of the slices model taken as a line contact of its peak "
+                                       "pressure and half-width b = 2 p0 R'/E* (frictionless, homogeneous "
+                                       "half-spaces, Johnson 1985 eq. 4.50 ff.)");
     }
     if (c3.overload_torque_Nmm > 0) {
-      side["overload_edge_margin"] = NumberOrNull(b.contact->overload_edge_margin[k]);
-      side["overload_edge_loaded"] = b.contact->overload_edge_loaded[k];
+      side.overload_edge_margin = b.contact->overload_edge_margin[k];
+      side.overload_edge_loaded = b.contact->overload_edge_loaded[k];
     } else {
-      side["edge_margin"] = NumberOrNull(b.contact->overload_edge_margin[k]);  // at the design torque
+      side.edge_margin = b.contact->overload_edge_margin[k];  // at the design torque
     }
-    contact[sides[k]] = side;
+    (k == 0 ? contact.input : contact.output) = side;
   }
-  best["contact"] = contact;
   if (r.half_space) {
     const sizing::LcrHalfSpaceCheck& h = *r.half_space;
-    nlohmann::json j = {{"cell_dx_mm", h.cell_dx_mm}, {"cell_dy_mm", h.cell_dy_mm}, {"converged", h.converged},
-                        {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}}};
-    for (int k = 0; k < 2; ++k)
-      j[sides[k]] = {{"half_space_MPa", NumberOrNull(h.half_space_MPa[k])},
-                     {"slices_MPa", NumberOrNull(h.slices_MPa[k])},
-                     {"slices_minus_half_space_percent", NumberOrNull(h.difference_percent[k])},
-                     {"edge_loaded", h.edge_loaded[k]}};
-    best["half_space_check"] = j;
+    Result::Json::HalfSpaceCheck& j = best.half_space_check.emplace();
+    j.cell_dx_mm = h.cell_dx_mm, j.cell_dy_mm = h.cell_dy_mm, j.converged = h.converged;
+    j.grid = {c3.contact.grid_nx, c3.contact.grid_ny};
+    for (int k = 0; k < 2; ++k) {
+      Result::Json::HalfSpaceCheck::Side& side = k == 0 ? j.input : j.output;
+      side.half_space_MPa = h.half_space_MPa[k];
+      side.slices_MPa = h.slices_MPa[k];
+      side.slices_minus_half_space_percent = h.difference_percent[k];
+      side.edge_loaded = h.edge_loaded[k];
+    }
   }
 }
 

@@ -17,24 +17,23 @@
 namespace camopt::studies::lcr_min_size {
 namespace {
 
-nlohmann::json Side(const lcr::CamSide<double>& c) {
-  return {{"lobes", c.lobes}, {"rollers", c.rollers}, {"turret_radius_mm", c.turret_radius},
-          {"roller_diameter_mm", 2 * c.roller_radius}};
+// The robust best's cam side: its counts, turret radius and roller diameter.
+Result::Json::CandidateSide Side(const lcr::CamSide<double>& c) {
+  Result::Json::CandidateSide r;
+  r.lobes = c.lobes, r.rollers = c.rollers;
+  r.turret_radius_mm = c.turret_radius;
+  r.roller_diameter_mm = 2 * c.roller_radius;
+  return r;
 }
 
-nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-nlohmann::json MonteCarloJson(const objectives::LcrMonteCarloCheck& c) {
-  return {{"samples", c.samples},
-          {"seed", c.seed},
-          {"angle_steps", c.angle_steps},
-          {"violating_samples", c.violating},
-          {"violating_fraction", c.violating_fraction},
-          {"max_roller_force_N", c.max_force_N},
-          {"max_contact_stress_MPa", Finite(c.max_stress_MPa)},
-          {"min_undercut_margin_mm", c.min_undercut_margin_mm},
-          {"worst_sample", c.worst_sample},
-          {"worst_sample_relative_excess", c.worst_relative_excess}};
+Result::Json::MonteCarloCheck MonteCarloOf(const objectives::LcrMonteCarloCheck& c) {
+  Result::Json::MonteCarloCheck j;
+  j.samples = c.samples, j.seed = c.seed, j.angle_steps = c.angle_steps;
+  j.violating_samples = c.violating, j.violating_fraction = c.violating_fraction;
+  j.max_roller_force_N = c.max_force_N, j.max_contact_stress_MPa = c.max_stress_MPa;
+  j.min_undercut_margin_mm = c.min_undercut_margin_mm;
+  j.worst_sample = c.worst_sample, j.worst_sample_relative_excess = c.worst_relative_excess;
+  return j;
 }
 
 }  // namespace
@@ -126,10 +125,11 @@ void RobustJson(const Study& s, Result& r) {
     rj.candidates.push_back(std::move(j));
   }
   if (r.best >= 0) {
-    res.nominal_best = res.best;
-    if (r.nominal_mc) (*res.nominal_best)["monte_carlo"] = MonteCarloJson(*r.nominal_mc);
+    Result::Json::NominalBest nominal = std::get<Result::Json::NominalBest>(res.best);
+    if (r.nominal_mc) nominal.monte_carlo = MonteCarloOf(*r.nominal_mc);
+    res.nominal_best = std::move(nominal);
   } else {
-    res.nominal_best = nlohmann::json(nullptr);
+    res.nominal_best = nullptr;
   }
   if (r.robust_best < 0) {
     res.best = nullptr;
@@ -145,30 +145,22 @@ void RobustJson(const Study& s, Result& r) {
   const lcr::Reducer<double>& d = *o.design;
   const objectives::LcrDenseCheck& k = *o.dense;
   const objectives::LcrRobustCheck& g = *o.grid;
-  nlohmann::json bj;
-  bj["eccentricity_mm"] = d.eccentricity;
-  bj["outer_diameter_mm"] = k.outer_diameter_mm;
-  bj["speed_ratio"] = lcr::SpeedReductionRatio(d);
-  bj["input"] = Side(d.input);
-  bj["output"] = Side(d.output);
-  bj["nominal"] = {{"max_contact_stress_MPa", std::max(k.max_stress_MPa[0], k.max_stress_MPa[1])},
-                   {"max_roller_force_N", std::max(k.max_force_N[0], k.max_force_N[1])},
-                   {"undercut_margin_mm", std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1])},
-                   {"roller_gap_mm", std::min(k.roller_gap_mm[0], k.roller_gap_mm[1])},
-                   {"mean_efficiency", k.mean_efficiency}};
-  bj["robust_linear"] = {{"max_contact_stress_MPa", Finite(g.max_stress_MPa)},
-                         {"min_stress_margin", g.min_stress_margin},
-                         {"max_roller_force_N", g.max_force_N},
-                         {"undercut_margin_mm", g.undercut_margin_mm},
-                         {"steps_per_period", g.steps_per_period}};
-  std::vector<std::string> binding;
+  Result::Json::RobustBest bj;
+  bj.eccentricity_mm = d.eccentricity;
+  bj.outer_diameter_mm = k.outer_diameter_mm;
+  bj.speed_ratio = lcr::SpeedReductionRatio(d);
+  bj.input = Side(d.input);
+  bj.output = Side(d.output);
+  bj.nominal = {std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]), std::max(k.max_force_N[0], k.max_force_N[1]),
+                std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]),
+                std::min(k.roller_gap_mm[0], k.roller_gap_mm[1]), k.mean_efficiency};
+  bj.robust_linear = {g.max_stress_MPa, g.min_stress_margin, g.max_force_N, g.undercut_margin_mm, g.steps_per_period};
   for (const std::string& row : o.result.active) {
     const std::string base = row.substr(0, row.find('['));
-    if (std::find(binding.begin(), binding.end(), base) == binding.end()) binding.push_back(base);
+    if (std::find(bj.binding.begin(), bj.binding.end(), base) == bj.binding.end()) bj.binding.push_back(base);
   }
-  bj["binding"] = binding;
-  if (r.robust_mc) bj["monte_carlo"] = MonteCarloJson(*r.robust_mc);
-  res.best = bj;
+  if (r.robust_mc) bj.monte_carlo = MonteCarloOf(*r.robust_mc);
+  res.best = std::move(bj);
   if (r.best >= 0)
     res.robust->outer_diameter_increase_mm = k.outer_diameter_mm - r.candidates[r.best].outcome.check->outer_diameter_mm;
 }

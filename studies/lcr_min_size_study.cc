@@ -150,35 +150,8 @@ std::vector<std::string> PlainLimitNames(const std::vector<std::string>& rows, c
 }
 
 
-// The lives of a design (docs/life.md, "Life as a sizing limit"): `<bearing>_L10h` per bearing,
-// shortest_L10h, and a table per element (load, C, L10h, s0, pass/fail against life_h).
-struct SizingLife {
-  std::optional<double> life_h;
-  double shortest_L10h = 0;
-  std::string shortest_bearing;
-  double input_roller_L10h = 0, output_roller_L10h = 0;
-  std::optional<double> eccentric_bearing_L10h;
-  std::vector<DutyCycleEcho> duty_cycle;
-  std::vector<LifeTableRow> table;
-  std::string rating_rule, model;
-  template <typename Archive>
-  void Serialize(Archive* a) {
-    const Field hours = Field().NullWhenNotFinite().Unit("h");
-    a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("the life limit (null: none)"));
-    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("the shortest L10h of any rated bearing"));
-    a->Visit("shortest_bearing", &shortest_bearing, Field());
-    a->Visit("input_roller_L10h", &input_roller_L10h, Field(hours).Desc("null: unlimited"));
-    a->Visit("output_roller_L10h", &output_roller_L10h, Field(hours).Desc("null: unlimited"));
-    a->Visit("eccentric_bearing_L10h", &eccentric_bearing_L10h, Field(hours).Desc("with its rating (null: unlimited)"));
-    a->Visit("duty_cycle", &duty_cycle, Field());
-    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
-    a->Visit("rating_rule", &rating_rule, Field().Desc("how the sized rollers' C and C0 follow their size"));
-    a->Visit("model", &model, Field());
-  }
-};
-
-nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives::LcrDenseCheck& k) {
-  SizingLife lj;
+Result::Json::SizingLife LifeOf(const objectives::LcrSizingSpec& spec, const objectives::LcrDenseCheck& k) {
+  Result::Json::SizingLife lj;
   const double limit = spec.limits.life_h;
   if (limit > 0) lj.life_h = limit;
   lj.shortest_L10h = k.shortest_L10h;
@@ -199,7 +172,7 @@ nlohmann::json LifeJson(const objectives::LcrSizingSpec& spec, const objectives:
                        : "roller C, C0 as the catalogue gives them";
   lj.model = "ISO 281:2007 basic rating life L10 over the duty cycle (Palmgren-Miner), loads of the rigid law "
              "revolution-weighted over each bearing's load period, computed as lcr_analysis does (docs/life.md)";
-  return nlohmann::json(ResultWriter::Value(lj, Field(), "/best/life"));
+  return lj;
 }
 
 std::string StatusOf(const Candidate& c) {
@@ -544,105 +517,6 @@ std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Nod
   return range;
 }
 
-namespace {
-
-// A raw block's schema from its JSON text.
-nlohmann::ordered_json SchemaOf(const char* text) { return nlohmann::ordered_json::parse(text); }
-
-// A cam's side in the best design (SideJson, its peaks, the 3D crowning; the robust best's sides
-// have the counts, turret radius and roller diameter only).
-const char* kSideSchema = R"json({"type": "object", "properties": {
-  "lobes": {"type": "integer", "description": "the cam's lobes"},
-  "rollers": {"type": "integer", "description": "the rollers of its turret"},
-  "turret_radius_mm": {"type": "number", "description": "turret radius r_d [mm]"},
-  "roller_diameter_mm": {"type": "number", "description": "roller diameter d_r [mm]"},
-  "roller_length_mm": {"type": "number", "description": "roller length [mm]"},
-  "cam_thickness_mm": {"type": "number", "description": "cam thickness [mm]"},
-  "max_contact_stress_MPa": {"type": ["number", "null"], "description": "best: the cam's peak Hertz pressure in the dense check [MPa]"},
-  "max_roller_force_N": {"type": ["number", "null"], "description": "best: the cam's largest roller force [N]"},
-  "undercut_margin_mm": {"type": ["number", "null"], "description": "best: 1/κ_max − r_r of the cam [mm]"},
-  "roller_gap_mm": {"type": ["number", "null"], "description": "best: the gap between neighbouring rollers [mm]"},
-  "subsurface": {"type": "object", "description": "best: the subsurface stresses under the cam's peak pressure (as lcr_analysis gives them)"},
-  "crowning": {"type": "object", "description": "3D contact: the crowning sized for the cam's rollers (type and its parameters)"}},
-  "required": ["lobes", "rollers"], "additionalProperties": false})json";
-
-const char* kMonteCarloSchema = R"json({"type": "object", "description": "the Monte-Carlo check against the exact compliant model", "properties": {
-  "samples": {"type": "integer"}, "seed": {"type": "integer"}, "angle_steps": {"type": "integer"},
-  "violating_samples": {"type": "integer", "description": "samples that break a limit"},
-  "violating_fraction": {"type": "number"},
-  "max_roller_force_N": {"type": "number", "description": "[N]"},
-  "max_contact_stress_MPa": {"type": ["number", "null"], "description": "[MPa]"},
-  "min_undercut_margin_mm": {"type": "number", "description": "[mm]"},
-  "worst_sample": {"type": "integer"},
-  "worst_sample_relative_excess": {"type": "number"}},
-  "additionalProperties": false})json";
-
-}  // namespace
-
-nlohmann::ordered_json Result::Json::BestSchema(bool nullable) {
-  nlohmann::ordered_json s = SchemaOf(R"json({"type": "object", "properties": {
-    "eccentricity_mm": {"type": "number", "description": "the eccentricity e [mm]"},
-    "outer_diameter_mm": {"type": "number", "description": "the outer diameter 2 max(r_d + r_r) [mm]"},
-    "speed_ratio": {"type": "number", "description": "the design's speed ratio"},
-    "max_contact_stress_MPa": {"type": ["number", "null"], "description": "the largest Hertz pressure of both cams in the dense check [MPa]"},
-    "max_roller_force_N": {"type": ["number", "null"], "description": "the largest roller force [N]"},
-    "undercut_margin_mm": {"type": ["number", "null"], "description": "the smaller cam's 1/κ_max − r_r [mm]"},
-    "roller_gap_mm": {"type": ["number", "null"], "description": "the smallest gap between rollers [mm]"},
-    "mean_efficiency": {"type": ["number", "null"], "description": "the mean efficiency over the revolution (null: not computed)"},
-    "efficiency_model": {"type": "string", "description": "eq. 33 with the friction coefficient, or lubricated"},
-    "oil_temperature_C": {"type": ["number", "null"], "description": "with lubricant: the housing's oil temperature [°C]"},
-    "power_loss_W": {"type": ["number", "null"], "description": "with lubricant: the lubricated power loss [W]"},
-    "lubrication_error": {"type": "string", "description": "with lubricant: why the lubricated losses were not computed"},
-    "input": {"description": "the input cam"},
-    "output": {"description": "the output cam"},
-    "catalogue_roller": {"type": "string", "description": "with a catalogue: the roller's name"},
-    "binding": {"type": "array", "items": {"type": "string"}, "description": "the constraint rows active at the optimum"},
-    "binding_names": {"type": "array", "items": {"type": "string"}, "description": "the binding limits in words"},
-    "limit_sensitivity": {"type": "object", "additionalProperties": {"type": "number"},
-      "description": "d(objective)/d(limit) by limit key [mm, or W of loss, per unit of the limit]"},
-    "limit_costs": {"type": "array", "items": {"type": "string"}, "description": "what each binding limit costs, in words"},
-    "binding_limits": {"type": "array", "description": "each binding limit, its value and its cost"},
-    "limit_sensitivity_note": {"type": "string", "description": "3D contact: why the limit costs are not computed"},
-    "life": {},
-    "ratings": {},
-    "contact": {"type": "object", "description": "3D contact: the 3D peaks, edge margins and the line model's outer diameter"},
-    "half_space_check": {"type": "object", "description": "3D contact: the half-space model's check of the slices model's peaks"},
-    "nominal": {"type": "object", "description": "robust: the nominal dense check's extremes"},
-    "robust_linear": {"type": "object", "description": "robust: the linearised robust constraints' extremes"},
-    "monte_carlo": {}},
-    "required": ["eccentricity_mm", "outer_diameter_mm", "speed_ratio", "input", "output", "binding"],
-    "additionalProperties": false})json");
-  {
-    SizingLife life;
-    nlohmann::ordered_json l = nlohmann::ordered_json::object();
-    ResultSchemaEmitter::Describe(&life, Field(), l);
-    l["description"] = "with a speed or duty cycle: the bearing lives (docs/life.md)";
-    s["properties"]["life"] = std::move(l);
-    SizedRatingsBlock ratings;
-    nlohmann::ordered_json g = nlohmann::ordered_json::object();
-    ResultSchemaEmitter::Describe(&ratings, Field(), g);
-    g["description"] = "with ratings: the sized design's ratings (docs/ratings.md)";
-    s["properties"]["ratings"] = std::move(g);
-  }
-  s["properties"]["input"] = SchemaOf(kSideSchema);
-  s["properties"]["input"]["description"] = "the input cam";
-  s["properties"]["output"] = SchemaOf(kSideSchema);
-  s["properties"]["output"]["description"] = "the output cam";
-  s["properties"]["monte_carlo"] = SchemaOf(kMonteCarloSchema);
-  // binding_limits: the limit, its value and cost, and the re-solve members (LimitSlopeResult).
-  nlohmann::ordered_json entry = nlohmann::ordered_json::object();
-  LimitSlopeResult slope;
-  ResultSchemaEmitter::Describe(&slope, Field(), entry);
-  entry["properties"]["limit"] = {{"type", "string"}, {"description", "the limit's key"}};
-  entry["properties"]["limit_value"] = {{"type", {"number", "null"}}, {"description", "the study's limit"}};
-  entry["properties"]["limit_cost"] = {{"type", "number"}, {"description", "d(objective)/d(limit)"}};
-  entry["properties"]["unit"] = {{"type", "string"}, {"description", "of limit_cost"}};
-  for (const char* k : {"limit", "limit_value", "limit_cost", "unit"}) entry["required"].push_back(k);
-  s["properties"]["binding_limits"]["items"] = entry;
-  if (nullable) s["type"] = {"object", "null"};
-  return s;
-}
-
 nlohmann::ordered_json Input::SchemaRules() {
   // Robust sizing needs its tolerances (and the tolerances are only for it) and the aggregate
   // constraints (it picks its own forms), the Monte-Carlo the tolerances; a catalogue gives the rollers' lengths and diameters (else fixed.roller_length_mm
@@ -824,45 +698,44 @@ void FillResult(const Study& s, Result& result) {
   const Candidate& best = result.candidates[result.best];
   const lcr::Reducer<double>& r = *best.outcome.design;
   const objectives::LcrDenseCheck& k = *best.outcome.check;
-  nlohmann::json b;
-  b["eccentricity_mm"] = r.eccentricity;
-  b["outer_diameter_mm"] = k.outer_diameter_mm;
-  b["speed_ratio"] = lcr::SpeedReductionRatio(r);
-  b["max_contact_stress_MPa"] = std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]);
-  b["max_roller_force_N"] = std::max(k.max_force_N[0], k.max_force_N[1]);
-  b["undercut_margin_mm"] = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
-  b["roller_gap_mm"] = std::min(k.roller_gap_mm[0], k.roller_gap_mm[1]);
-  b["mean_efficiency"] = std::isfinite(k.mean_efficiency) ? nlohmann::json(k.mean_efficiency) : nlohmann::json(nullptr);
+  Result::Json::NominalBest b;
+  b.eccentricity_mm = r.eccentricity;
+  b.outer_diameter_mm = k.outer_diameter_mm;
+  b.speed_ratio = lcr::SpeedReductionRatio(r);
+  b.max_contact_stress_MPa = std::max(k.max_stress_MPa[0], k.max_stress_MPa[1]);
+  b.max_roller_force_N = std::max(k.max_force_N[0], k.max_force_N[1]);
+  b.undercut_margin_mm = std::min(k.undercut_margin_mm[0], k.undercut_margin_mm[1]);
+  b.roller_gap_mm = std::min(k.roller_gap_mm[0], k.roller_gap_mm[1]);
+  b.mean_efficiency = k.mean_efficiency;
   if (s.base.lubrication) {  // the lubricated operating point (docs/lubrication.md)
-    b["efficiency_model"] = "lubricated (docs/lubrication.md)";
-    b["oil_temperature_C"] = std::isfinite(k.oil_temperature_C) ? nlohmann::json(k.oil_temperature_C) : nlohmann::json(nullptr);
-    b["power_loss_W"] = std::isfinite(k.lubricated_loss_W) ? nlohmann::json(k.lubricated_loss_W) : nlohmann::json(nullptr);
-    if (!k.lubrication_why.empty()) b["lubrication_error"] = k.lubrication_why;
+    b.efficiency_model = "lubricated (docs/lubrication.md)";
+    b.oil_temperature_C = k.oil_temperature_C;
+    b.power_loss_W = k.lubricated_loss_W;
+    if (!k.lubrication_why.empty()) b.lubrication_error = k.lubrication_why;
   } else {
-    b["efficiency_model"] = "eq. 33 with load.friction_coefficient";
+    b.efficiency_model = "eq. 33 with load.friction_coefficient";
   }
-  b["input"] = SideJson(r.input);
-  b["output"] = SideJson(r.output);
-  const char* sides[2] = {"input", "output"};
+  Result::Json::BestSide* sides[2] = {&b.input, &b.output};
+  const lcr::CamSide<double>* cams[2] = {&r.input, &r.output};
   for (int i = 0; i < 2; ++i) {
-    b[sides[i]]["max_contact_stress_MPa"] = k.max_stress_MPa[i];
-    b[sides[i]]["max_roller_force_N"] = k.max_force_N[i];
-    b[sides[i]]["undercut_margin_mm"] = k.undercut_margin_mm[i];
-    b[sides[i]]["roller_gap_mm"] = k.roller_gap_mm[i];
+    Result::Json::BestSide& side = *sides[i];
+    side.sizes = SideRow(*cams[i]);
+    side.max_contact_stress_MPa = k.max_stress_MPa[i];
+    side.max_roller_force_N = k.max_force_N[i];
+    side.undercut_margin_mm = k.undercut_margin_mm[i];
+    side.roller_gap_mm = k.roller_gap_mm[i];
     if (k.peak_half_width_mm[i] > 0 || !std::isfinite(k.max_stress_MPa[i]))
-      b[sides[i]]["subsurface"] = SubsurfaceJson(
+      side.subsurface = SubsurfaceJson(
           k.max_stress_MPa[i], k.peak_half_width_mm[i], s.base.material.poisson_ratio,
           "Hertz line contact of the cam's peak pressure in the dense check, frictionless, homogeneous "
           "half-spaces (Johnson 1985, eq. 4.50 ff.)");
   }
-  if (best.roller >= 0) b["catalogue_roller"] = s.catalogue[best.roller].name;
-  b["binding"] = Unique(best.outcome.result.active);
-  b["binding_names"] = PlainLimitNames(Unique(best.outcome.result.active), best.spec);
-  b["limit_sensitivity"] = nlohmann::json::object();
-  for (const auto& [key, v] : result.limit_sensitivity) b["limit_sensitivity"][key] = v;
-  if (!result.limit_sensitivity.empty()) b["limit_costs"] = LimitCosts(s, result);
+  if (best.roller >= 0) b.catalogue_roller = s.catalogue[best.roller].name;
+  b.binding = Unique(best.outcome.result.active);
+  b.binding_names = PlainLimitNames(Unique(best.outcome.result.active), best.spec);
+  for (const auto& [key, v] : result.limit_sensitivity) b.limit_sensitivity[key] = v;
+  if (!result.limit_sensitivity.empty()) b.limit_costs = LimitCosts(s, result);
   // The same as cycloid_min_size and disc_cam_min_size give it: limit, its value, its cost.
-  b["binding_limits"] = nlohmann::json::array();
   for (const auto& [key, cost] : result.limit_sensitivity) {
     const LcrLimits& l = best.spec.limits;
     const std::map<std::string, std::pair<double, std::string>> values = {
@@ -873,20 +746,21 @@ void FillResult(const Study& s, Result& result) {
         {"max_oil_temperature_C", {l.max_oil_temperature_C, "°C"}},
         {"max_outer_diameter_mm", {l.max_outer_diameter_mm, "mm"}}};
     const auto it = values.find(key);
-    nlohmann::json entry = {{"limit", key},
-                            {"limit_value", it != values.end() ? it->second.first : NAN},
-                            {"limit_cost", cost},
-                            {"unit", std::string(MinimisesLoss(s) ? "W of loss" : "mm") + " per " +
-                                         (it != values.end() ? it->second.second : std::string("unit"))}};
+    BindingLimit entry;
+    entry.limit = key;
+    entry.limit_value = it != values.end() ? it->second.first : NAN;
+    entry.limit_cost = cost;
+    entry.unit = std::string(MinimisesLoss(s) ? "W of loss" : "mm") + " per " +
+                 (it != values.end() ? it->second.second : std::string("unit"));
     // The cost is itself the re-solve slope here (LimitSlopes): the same number, with its sides.
-    AddLimitSlopeJson(result.limit_slope.count(key) ? &result.limit_slope.at(key) : nullptr, entry);
-    b["binding_limits"].push_back(entry);
+    entry.slope = MakeLimitSlopeResult(result.limit_slope.count(key) ? &result.limit_slope.at(key) : nullptr);
+    b.binding_limits.push_back(std::move(entry));
   }
   if (s.contact3d)
-    b["limit_sensitivity_note"] =
+    b.limit_sensitivity_note =
         "not computed for a sizing on the 3D contact: each limit's cost would take two more verified 3D "
         "sizings; move the limit in the study and run it again";
-  if (!k.life.empty()) b["life"] = LifeJson(best.spec, k);
+  if (!k.life.empty()) b.life = LifeOf(best.spec, k);
   if (s.ratings && !k.life.empty()) {
     // The rigid law's loads are proportional to the torque, so each bearing's
     // L10(T) = L10(T_r) (T_r/T)^p (ISO 281 eq. 1, p = 3 ball, 10/3 roller) and its rated torque is
@@ -924,7 +798,7 @@ void FillResult(const Study& s, Result& result) {
       ratings.SetMomentary(*s.ratings->momentary_torque_Nm, need, k.min_static_safety, momentary, mby, std::nullopt,
                            momentary_met);
     }
-    b["ratings"] = WriteResult(ratings);
+    b.ratings = std::move(ratings);
   }
   res.best = b;
   if (s.contact3d) AddContact3DJson(s, result);

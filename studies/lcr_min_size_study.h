@@ -14,6 +14,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <cstddef>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +26,7 @@
 #include "objectives/lcr_sizing.h"
 #include "sizing/lcr_sizing3d.h"
 #include "studies/backend_input.h"
+#include "studies/bearing_life_io.h"
 #include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/lcr_contact_input.h"
@@ -31,6 +34,7 @@
 #include "studies/lcr_tolerance_input.h"
 #include "studies/lubrication_input.h"
 #include "studies/material_input.h"
+#include "studies/ratings.h"
 #include "studies/ratings_input.h"
 #include "studies/study.h"
 #include "studies/verification_json.h"
@@ -431,6 +435,277 @@ struct Study : sizing::LcrSearchSpec {
 
 using Candidate = sizing::LcrCandidate;
 
+/// result.json's blocks of the best design (Result::Json; at namespace scope so that their default
+/// member initializers are complete where std::optional and std::variant test them).
+/// A cam side of a candidate: its counts, and of a feasible candidate or a closest point its
+/// sizes (with a 3D contact, of a feasible one the crowning sized for its rollers).
+struct CandidateSide {
+  int lobes = 0, rollers = 0;
+  std::optional<double> turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm;
+  std::optional<nlohmann::json> crowning;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("lobes", &lobes, Field().Desc("the cam's lobes"));
+    a->Visit("rollers", &rollers, Field().Desc("the rollers of its turret"));
+    a->Visit("turret_radius_mm", &turret_radius_mm, Field().Unit("mm").Desc("turret radius r_d"));
+    a->Visit("roller_diameter_mm", &roller_diameter_mm, Field().Unit("mm").Desc("roller diameter d_r"));
+    a->Visit("roller_length_mm", &roller_length_mm, Field().Unit("mm").Desc("roller length"));
+    a->Visit("cam_thickness_mm", &cam_thickness_mm, Field().Unit("mm").Desc("cam thickness"));
+    a->Visit("crowning", &crowning,
+             Field().Schema({{"type", "object"}}).Desc("3D contact: the crowning sized for the cam's rollers (type "
+                                                       "and its parameters)"));
+  }
+};
+
+// The lives of a design (docs/life.md, "Life as a sizing limit"): `<bearing>_L10h` per bearing,
+// shortest_L10h, and a table per element (load, C, L10h, s0, pass/fail against life_h).
+struct SizingLife {
+  std::optional<double> life_h;
+  double shortest_L10h = 0;
+  std::string shortest_bearing;
+  double input_roller_L10h = 0, output_roller_L10h = 0;
+  std::optional<double> eccentric_bearing_L10h;
+  std::vector<DutyCycleEcho> duty_cycle;
+  std::vector<LifeTableRow> table;
+  std::string rating_rule, model;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field hours = Field().NullWhenNotFinite().Unit("h");
+    a->Visit("life_h", &life_h, Field().NullWhenAbsent().Unit("h").Desc("the life limit (null: none)"));
+    a->Visit("shortest_L10h", &shortest_L10h, Field(hours).Desc("the shortest L10h of any rated bearing"));
+    a->Visit("shortest_bearing", &shortest_bearing, Field());
+    a->Visit("input_roller_L10h", &input_roller_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("output_roller_L10h", &output_roller_L10h, Field(hours).Desc("null: unlimited"));
+    a->Visit("eccentric_bearing_L10h", &eccentric_bearing_L10h, Field(hours).Desc("with its rating (null: unlimited)"));
+    a->Visit("duty_cycle", &duty_cycle, Field());
+    a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
+    a->Visit("rating_rule", &rating_rule, Field().Desc("how the sized rollers' C and C0 follow their size"));
+    a->Visit("model", &model, Field());
+  }
+};
+/// The best design's cam side: its sizes (CandidateSide's members, with a 3D contact its
+/// crowning), the dense check's extremes and the subsurface stresses under its peak.
+struct BestSide {
+  CandidateSide sizes;  ///< its members are the side's own
+  double max_contact_stress_MPa = 0, max_roller_force_N = 0, undercut_margin_mm = 0, roller_gap_mm = 0;
+  std::optional<nlohmann::json> subsurface;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    sizes.Serialize(a);
+    a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+             Field().NullWhenNotFinite().Unit("MPa").Desc("the cam's peak Hertz pressure in the dense check"));
+    a->Visit("max_roller_force_N", &max_roller_force_N,
+             Field().NullWhenNotFinite().Unit("N").Desc("the cam's largest roller force"));
+    a->Visit("undercut_margin_mm", &undercut_margin_mm,
+             Field().NullWhenNotFinite().Unit("mm").Desc("1/κ_max − r_r of the cam"));
+    a->Visit("roller_gap_mm", &roller_gap_mm,
+             Field().NullWhenNotFinite().Unit("mm").Desc("the gap between neighbouring rollers"));
+    a->Visit("subsurface", &subsurface,
+             Field().Schema({{"type", {"object", "null"}}}).Desc(
+                 "the subsurface stresses under the cam's peak pressure (as lcr_analysis gives them; null: an "
+                 "undercut peak)"));
+  }
+};
+/// With a 3D contact, a cam's 3D peak and edge check.
+struct Contact3DSide {
+  double max_contact_stress_MPa = 0;
+  bool edge_loaded = false;
+  double slice_width_mm = 0, interpolation_error_MPa = 0;
+  std::optional<nlohmann::json> subsurface;
+  std::optional<double> overload_edge_margin, edge_margin;
+  std::optional<bool> overload_edge_loaded;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+             Field().NullWhenNotFinite().Unit("MPa").Desc("the slices model's peak pressure over the cycle"));
+    a->Visit("edge_loaded", &edge_loaded, Field().Desc("the pressure reaches the roller's end"));
+    a->Visit("slice_width_mm", &slice_width_mm, Field().NullWhenNotFinite().Unit("mm"));
+    a->Visit("interpolation_error_MPa", &interpolation_error_MPa,
+             Field().NullWhenNotFinite().Unit("MPa").Desc("of the peak read between slices"));
+    a->Visit("subsurface", &subsurface,
+             Field().Schema({{"type", {"object", "null"}}}).Desc(
+                 "the worst slice taken as a line contact of its peak pressure: its subsurface stresses"));
+    a->Visit("overload_edge_margin", &overload_edge_margin,
+             Field().NullWhenNotFinite().Desc("with load.overload_torque_Nm: the end margin at that torque"));
+    a->Visit("overload_edge_loaded", &overload_edge_loaded, Field().Desc("with it: edge-loaded at that torque"));
+    a->Visit("edge_margin", &edge_margin,
+             Field().NullWhenNotFinite().Desc("without it: the end margin at the design torque"));
+  }
+};
+struct Contact3DBest {
+  double line_model_outer_diameter_mm = 0;
+  std::optional<Contact3DSide> input, output;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("line_model_outer_diameter_mm", &line_model_outer_diameter_mm,
+             Field().Unit("mm").Desc("the line model's optimum of the same combination"));
+    a->Visit("input", &input, Field().Desc("the input cam (with the 3D cycle)"));
+    a->Visit("output", &output, Field().Desc("the output cam"));
+  }
+};
+/// With a half_space contact model: its check of the slices model's peaks.
+struct HalfSpaceCheck {
+  struct Side {
+    double half_space_MPa = 0, slices_MPa = 0, slices_minus_half_space_percent = 0;
+    bool edge_loaded = false;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("half_space_MPa", &half_space_MPa, Field().NullWhenNotFinite().Unit("MPa"));
+      a->Visit("slices_MPa", &slices_MPa, Field().NullWhenNotFinite().Unit("MPa"));
+      a->Visit("slices_minus_half_space_percent", &slices_minus_half_space_percent,
+               Field().NullWhenNotFinite().Unit("%"));
+      a->Visit("edge_loaded", &edge_loaded, Field());
+    }
+  };
+  double cell_dx_mm = 0, cell_dy_mm = 0;
+  bool converged = false;
+  std::vector<int> grid;
+  Side input, output;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("cell_dx_mm", &cell_dx_mm, Field().Unit("mm"));
+    a->Visit("cell_dy_mm", &cell_dy_mm, Field().Unit("mm"));
+    a->Visit("converged", &converged, Field());
+    a->Visit("grid", &grid, Field().Desc("[nx, ny] cells"));
+    a->Visit("input", &input, Field());
+    a->Visit("output", &output, Field());
+  }
+};
+/// The Monte-Carlo check of a design against the exact compliant model (robust sizing).
+struct MonteCarloCheck {
+  int samples = 0;
+  std::uint64_t seed = 0;
+  int angle_steps = 0, violating_samples = 0;
+  double violating_fraction = 0, max_roller_force_N = 0, max_contact_stress_MPa = 0, min_undercut_margin_mm = 0;
+  int worst_sample = 0;
+  double worst_sample_relative_excess = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("samples", &samples, Field());
+    a->Visit("seed", &seed, Field());
+    a->Visit("angle_steps", &angle_steps, Field());
+    a->Visit("violating_samples", &violating_samples, Field().Desc("samples that break a limit"));
+    a->Visit("violating_fraction", &violating_fraction, Field());
+    a->Visit("max_roller_force_N", &max_roller_force_N, Field().Unit("N"));
+    a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().NullWhenNotFinite().Unit("MPa"));
+    a->Visit("min_undercut_margin_mm", &min_undercut_margin_mm, Field().Unit("mm"));
+    a->Visit("worst_sample", &worst_sample, Field().Desc("the sample with the largest relative excess (−1: none)"));
+    a->Visit("worst_sample_relative_excess", &worst_sample_relative_excess,
+             Field().Desc("its largest (value − limit)/limit (<= 0: holds)"));
+  }
+};
+/// The best design of a sizing without tolerances (and a robust study's nominal best).
+struct NominalBest {
+  double eccentricity_mm = 0, outer_diameter_mm = 0, speed_ratio = 0;
+  double max_contact_stress_MPa = 0, max_roller_force_N = 0, undercut_margin_mm = 0, roller_gap_mm = 0,
+         mean_efficiency = 0;
+  std::string efficiency_model;
+  std::optional<double> oil_temperature_C, power_loss_W;
+  std::optional<std::string> lubrication_error;
+  BestSide input, output;
+  std::optional<std::string> catalogue_roller;
+  std::vector<std::string> binding, binding_names;
+  std::map<std::string, double> limit_sensitivity;
+  std::optional<std::vector<std::string>> limit_costs;
+  std::vector<BindingLimit> binding_limits;
+  std::optional<std::string> limit_sensitivity_note;
+  std::optional<SizingLife> life;
+  std::optional<SizedRatingsBlock> ratings;
+  std::optional<Contact3DBest> contact;
+  std::optional<HalfSpaceCheck> half_space_check;
+  std::optional<MonteCarloCheck> monte_carlo;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("eccentricity_mm", &eccentricity_mm, Field().Unit("mm").Desc("the eccentricity e"));
+    a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("the outer diameter 2 max(r_d + r_r)"));
+    a->Visit("speed_ratio", &speed_ratio, Field().Desc("the design's speed ratio"));
+    a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+             Field().NullWhenNotFinite().Unit("MPa").Desc("the largest Hertz pressure of both cams in the dense check"));
+    a->Visit("max_roller_force_N", &max_roller_force_N,
+             Field().NullWhenNotFinite().Unit("N").Desc("the largest roller force"));
+    a->Visit("undercut_margin_mm", &undercut_margin_mm,
+             Field().NullWhenNotFinite().Unit("mm").Desc("the smaller cam's 1/κ_max − r_r"));
+    a->Visit("roller_gap_mm", &roller_gap_mm,
+             Field().NullWhenNotFinite().Unit("mm").Desc("the smallest gap between rollers"));
+    a->Visit("mean_efficiency", &mean_efficiency,
+             Field().NullWhenNotFinite().Desc("the mean efficiency over the revolution (null: not computed)"));
+    a->Visit("efficiency_model", &efficiency_model,
+             Field().Desc("eq. 33 with the friction coefficient, or lubricated"));
+    a->Visit("oil_temperature_C", &oil_temperature_C,
+             Field().NullWhenNotFinite().Unit("°C").Desc("with lubricant: the housing's oil temperature"));
+    a->Visit("power_loss_W", &power_loss_W,
+             Field().NullWhenNotFinite().Unit("W").Desc("with lubricant: the lubricated power loss"));
+    a->Visit("lubrication_error", &lubrication_error,
+             Field().Desc("with lubricant: why the lubricated losses were not computed"));
+    a->Visit("input", &input, Field().Desc("the input cam"));
+    a->Visit("output", &output, Field().Desc("the output cam"));
+    a->Visit("catalogue_roller", &catalogue_roller, Field().Desc("with a catalogue: the roller's name"));
+    a->Visit("binding", &binding, Field().Desc("the constraint rows active at the optimum"));
+    a->Visit("binding_names", &binding_names, Field().Desc("the binding limits in words"));
+    a->Visit("limit_sensitivity", &limit_sensitivity,
+             Field().NullWhenNotFinite().Desc(
+                 "d(objective)/d(limit) by limit key [mm, or W of loss, per unit of the limit]"));
+    a->Visit("limit_costs", &limit_costs, Field().Desc("what each binding limit costs, in words"));
+    a->Visit("binding_limits", &binding_limits, Field().Desc("each binding limit, its value and its cost"));
+    a->Visit("limit_sensitivity_note", &limit_sensitivity_note,
+             Field().Desc("3D contact: why the limit costs are not computed"));
+    a->Visit("life", &life, Field().Desc("with a speed or duty cycle: the bearing lives (docs/life.md)"));
+    a->Visit("ratings", &ratings, Field().Desc("with ratings: the sized design's ratings (docs/ratings.md)"));
+    a->Visit("contact", &contact,
+             Field().Desc("3D contact: the 3D peaks, edge margins and the line model's outer diameter"));
+    a->Visit("half_space_check", &half_space_check,
+             Field().Desc("3D contact on half_space: the half-space model's check of the slices model's peaks"));
+    a->Visit("monte_carlo", &monte_carlo,
+             Field().Desc("a robust study's nominal best: its Monte-Carlo check against the exact compliant model"));
+  }
+};
+/// With robust: the smallest robust design, its nominal extremes, the linearised robust rows'
+/// extremes and its Monte-Carlo check.
+struct RobustBest {
+  struct Nominal {
+    double max_contact_stress_MPa = 0, max_roller_force_N = 0, undercut_margin_mm = 0, roller_gap_mm = 0,
+           mean_efficiency = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().NullWhenNotFinite().Unit("MPa"));
+      a->Visit("max_roller_force_N", &max_roller_force_N, Field().NullWhenNotFinite().Unit("N"));
+      a->Visit("undercut_margin_mm", &undercut_margin_mm, Field().NullWhenNotFinite().Unit("mm"));
+      a->Visit("roller_gap_mm", &roller_gap_mm, Field().NullWhenNotFinite().Unit("mm"));
+      a->Visit("mean_efficiency", &mean_efficiency, Field().NullWhenNotFinite());
+    }
+  };
+  struct Linear {
+    double max_contact_stress_MPa = 0, min_stress_margin = 0, max_roller_force_N = 0, undercut_margin_mm = 0;
+    int steps_per_period = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().NullWhenNotFinite().Unit("MPa"));
+      a->Visit("min_stress_margin", &min_stress_margin, Field().NullWhenNotFinite());
+      a->Visit("max_roller_force_N", &max_roller_force_N, Field().NullWhenNotFinite().Unit("N"));
+      a->Visit("undercut_margin_mm", &undercut_margin_mm, Field().NullWhenNotFinite().Unit("mm"));
+      a->Visit("steps_per_period", &steps_per_period, Field());
+    }
+  };
+  double eccentricity_mm = 0, outer_diameter_mm = 0, speed_ratio = 0;
+  CandidateSide input, output;
+  Nominal nominal;
+  Linear robust_linear;
+  std::vector<std::string> binding;
+  std::optional<MonteCarloCheck> monte_carlo;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("eccentricity_mm", &eccentricity_mm, Field().Unit("mm").Desc("the eccentricity e"));
+    a->Visit("outer_diameter_mm", &outer_diameter_mm, Field().Unit("mm").Desc("the outer diameter 2 max(r_d + r_r)"));
+    a->Visit("speed_ratio", &speed_ratio, Field().Desc("the design's speed ratio"));
+    a->Visit("input", &input, Field().Desc("the input cam: counts, turret radius and roller diameter"));
+    a->Visit("output", &output, Field().Desc("the output cam"));
+    a->Visit("nominal", &nominal, Field().Desc("the nominal dense check's extremes"));
+    a->Visit("robust_linear", &robust_linear, Field().Desc("the linearised robust constraints' extremes"));
+    a->Visit("binding", &binding, Field().Desc("the robust constraint rows active at the optimum"));
+    a->Visit("monte_carlo", &monte_carlo, Field().Desc("its Monte-Carlo check against the exact compliant model"));
+  }
+};
+
 /// The search's outcome (sizing/lcr_search.h: the candidates, the best, the limit slopes, the
 /// evaluations, the 3D half-space check) and what the study adds around it.
 struct Result : sizing::LcrSearchOutcome {
@@ -447,11 +722,18 @@ struct Result : sizing::LcrSearchOutcome {
   std::optional<objectives::Verification> robust_verification;
 
   /// result.json, declared (studies/archive.h): Run fills it (FillResult; AddContact3DJson and
-  /// RobustJson add their parts). The best designs, the 3D contact and the robust block are raw
-  /// JSON (their blocks are shared with lcr_analysis: SideJson, SubsurfaceJson, SizedRatingsJson),
-  /// described by their schemas (lcr_min_size_study.cc); the best design's life inside them is
-  /// declared (SizingLife, its rows LifeTableRow).
+  /// RobustJson add their parts). Raw JSON inside it: the subsurface blocks (SubsurfaceJson, shared
+  /// with lcr_analysis) and the crowning (CrowningJson, by its type).
   struct Json {
+    using CandidateSide = lcr_min_size::CandidateSide;
+    using SizingLife = lcr_min_size::SizingLife;
+    using BestSide = lcr_min_size::BestSide;
+    using Contact3DSide = lcr_min_size::Contact3DSide;
+    using Contact3DBest = lcr_min_size::Contact3DBest;
+    using HalfSpaceCheck = lcr_min_size::HalfSpaceCheck;
+    using MonteCarloCheck = lcr_min_size::MonteCarloCheck;
+    using NominalBest = lcr_min_size::NominalBest;
+    using RobustBest = lcr_min_size::RobustBest;
     struct Target {
       long speed_ratio = 0;
       double output_torque_Nm = 0;
@@ -478,25 +760,6 @@ struct Result : sizing::LcrSearchOutcome {
         a->Visit("starts", &starts, Field().Desc("starting points per combination"));
         a->Visit("value_evaluations", &value_evaluations, Field().Desc("objective and constraint evaluations, all solves"));
         a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("gradient evaluations, all solves"));
-      }
-    };
-    /// A cam side of a candidate: its counts, and of a feasible candidate or a closest point its
-    /// sizes (with a 3D contact, of a feasible one the crowning sized for its rollers).
-    struct CandidateSide {
-      int lobes = 0, rollers = 0;
-      std::optional<double> turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm;
-      std::optional<nlohmann::json> crowning;
-      template <typename Archive>
-      void Serialize(Archive* a) {
-        a->Visit("lobes", &lobes, Field().Desc("the cam's lobes"));
-        a->Visit("rollers", &rollers, Field().Desc("the rollers of its turret"));
-        a->Visit("turret_radius_mm", &turret_radius_mm, Field().Unit("mm").Desc("turret radius r_d"));
-        a->Visit("roller_diameter_mm", &roller_diameter_mm, Field().Unit("mm").Desc("roller diameter d_r"));
-        a->Visit("roller_length_mm", &roller_length_mm, Field().Unit("mm").Desc("roller length"));
-        a->Visit("cam_thickness_mm", &cam_thickness_mm, Field().Unit("mm").Desc("cam thickness"));
-        a->Visit("crowning", &crowning,
-                 Field().Schema({{"type", "object"}}).Desc("3D contact: the crowning sized for the cam's rollers (type "
-                                                           "and its parameters)"));
       }
     };
     /// One candidate (lobe/roller combination, and catalogue roller) as solved.
@@ -687,8 +950,8 @@ struct Result : sizing::LcrSearchOutcome {
     std::vector<CandidateRow> candidates;
     bool verified = false;
     VerificationBlock verification;
-    nlohmann::json best;  ///< null when nothing fits
-    std::optional<nlohmann::json> nominal_best;
+    std::variant<NominalBest, RobustBest, std::nullptr_t> best = nullptr;  ///< null when nothing fits
+    std::optional<std::variant<NominalBest, std::nullptr_t>> nominal_best;
     std::optional<std::vector<std::string>> notes;
     std::optional<ContactBlock> contact;
     std::optional<RobustBlock> robust;
@@ -709,19 +972,15 @@ struct Result : sizing::LcrSearchOutcome {
                Field().Desc("the accurate model's check of the best design, or when nothing fits of the candidate "
                             "that failed it"));
       a->Visit("best", &best,
-               Field().Schema(BestSchema(true)).Desc(
-                   "the best design (with robust: the smallest robust design), null when nothing fits"));
+               Field().Desc("the best design (with robust: the smallest robust design), null when nothing fits"));
       a->Visit("nominal_best", &nominal_best,
-               Field().Schema(BestSchema(true)).Desc(
-                   "with robust: the best design of the study without tolerances, with its Monte-Carlo check (null: "
-                   "none)"));
+               Field().Desc("with robust: the best design of the study without tolerances, with its Monte-Carlo "
+                            "check (null: none)"));
       a->Visit("notes", &notes, Field().Desc("when nothing fits: the limit that blocks most and what would fit"));
       a->Visit("contact", &contact, Field().Desc("with a 3D contact: the contact model and the crowning sized"));
       a->Visit("robust", &robust,
                Field().Desc("with robust: the method, the tolerances and every candidate's robust solve"));
     }
-    /// The schema of the raw block (lcr_min_size_study.cc).
-    static nlohmann::ordered_json BestSchema(bool nullable);
   };
   Json json;
   template <typename Archive>
