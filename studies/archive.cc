@@ -199,6 +199,11 @@ nlohmann::ordered_json MergedAlternatives(const std::vector<nlohmann::ordered_js
   for (const nlohmann::ordered_json& a : alternatives)
     if (a.contains("items")) items.push_back(a["items"]);
   if (!items.empty()) m["items"] = items.size() == 1 ? items.front() : MergedAlternatives(items);
+  for (const nlohmann::ordered_json& a : alternatives)  // a map's values (the first map alternative's)
+    if (a.contains("additionalProperties") && a["additionalProperties"].is_object()) {
+      m["additionalProperties"] = a["additionalProperties"];
+      break;
+    }
   if (keys.empty()) return m;
   m["properties"] = nlohmann::ordered_json::object();
   for (const std::string& k : keys) {
@@ -240,6 +245,9 @@ void TableRows(const nlohmann::ordered_json& schema, const std::string& prefix, 
     out += "| `" + path + "` | " + accepts + " | " + meaning + " |\n";
     TableRows(p, path + ".", result, out);
     if (p.contains("items")) TableRows(p["items"], path + "[i].", result, out);
+    // A map's entries (a declared std::map<std::string, T>): its value's rows under `<name>`.
+    if (p.contains("additionalProperties") && p["additionalProperties"].is_object())
+      TableRows(p["additionalProperties"], path + ".<name>.", result, out);
   }
 }
 

@@ -674,7 +674,7 @@ struct Result {
   std::optional<std::vector<std::string>> warnings_out;         ///< result.json's warnings (loaded stage)
   std::vector<PerAngle> per_angle;
   double min_profile_radius_mm = 0, pin_gap_mm = 0;
-  nlohmann::json geometry_files;                 ///< GeometryFilesJson's block
+  GeometryFilesBlock geometry_files;             ///< GeometryFilesOf's block
   std::optional<nlohmann::json> parts_json;      ///< result.json's parts (PartsJson)
   std::optional<GrindingOut> grinding;
   std::optional<TransmissionErrorBlock> transmission_error_json;  ///< result.json's transmission_error
@@ -739,8 +739,7 @@ struct Result {
     a->Visit("min_profile_radius_mm", &min_profile_radius_mm,
              Field().Unit("mm").Desc("smallest convex radius of the tooth, rho_min - rho'"));
     a->Visit("pin_gap_mm", &pin_gap_mm, Field().Unit("mm").Desc("clearance between neighbouring pins"));
-    a->Visit("geometry_files", &geometry_files,
-             Field().Desc("the tooth's geometry files, or why none").Schema({{"type", "object"}}));
+    a->Visit("geometry_files", &geometry_files, Field().Desc("the tooth's geometry files, or why none"));
     a->Visit("parts", &parts_json, Field().Desc("the drive's parts (studies/parts.h)").Schema({{"type", "object"}}));
     a->Visit("grinding", &grinding, Field().Desc("the form wheel (with grinding)"));
     a->Visit("transmission_error", &transmission_error_json,

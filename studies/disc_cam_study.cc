@@ -1505,7 +1505,7 @@ void FillResult(const Study& s, Result& r) {
   } else if (r.monte_carlo == Result::MonteCarlo::kSkippedUndercut) {
     j.monte_carlo.emplace().skipped = "the profile is undercut";
   }
-  j.geometry_files = GeometryFilesJson(s.geometry, {{"profile", &r.profile_files}});
+  j.geometry_files = GeometryFilesOf(s.geometry, {{"profile", &r.profile_files}});
   if (s.in.inspection) {
     j.inspection = InspectionJson(s.in.inspection->spacing_mm, s.in.inspection->tolerance_um, r.inspection_points,
                                   s.geometry.write);

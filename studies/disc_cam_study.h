@@ -979,7 +979,7 @@ struct Result {
     bool limits_ok = false;
     Motion motion;
     std::optional<MonteCarlo> monte_carlo;
-    nlohmann::json geometry_files;
+    GeometryFilesBlock geometry_files;
     std::optional<nlohmann::json> inspection, measured;
     std::optional<std::vector<std::string>> notes;
     template <typename Archive>
@@ -1027,8 +1027,7 @@ struct Result {
       a->Visit("limits_ok", &limits_ok, Field().Desc("every limit met"));
       a->Visit("motion", &motion, Field());
       a->Visit("monte_carlo", &monte_carlo, Field().Desc("with the Monte-Carlo stage"));
-      a->Visit("geometry_files", &geometry_files,
-               Field().Desc("the cam's geometry files (profile), or why none").Schema({{"type", "object"}}));
+      a->Visit("geometry_files", &geometry_files, Field().Desc("the cam's geometry files (profile), or why none"));
       a->Visit("inspection", &inspection,
                Field().Desc("with inspection: its points, files and datum").Schema({{"type", "object"}}));
       a->Visit("measured", &measured,

@@ -186,10 +186,10 @@ GeometryFileOptions GeometryFileOptionsOf(const GeometryFiles& files) {
   return o;
 }
 
-nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,
-                                 const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts) {
-  if (!options.write) return {{"written", false}};
-  nlohmann::json j = nlohmann::json::object();
+GeometryFilesBlock GeometryFilesOf(const GeometryFileOptions& options,
+                                   const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts) {
+  if (!options.write) return GeometryFilesOff{};
+  std::map<std::string, PlanarFitSummary> j;
   for (const auto& [name, fit] : parts) j[name] = fit->summary;
   return j;
 }
@@ -236,7 +236,7 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   f.profile = profile.curve;
   f.max_deviation_mm = profile.deviation_mm;
   f.checked_points = profile.curve.checked_points;
-  nlohmann::json layers = {"CAM_PROFILE"};
+  std::vector<std::string> layers = {"CAM_PROFILE"};
   // A further curve (pitch curve, cutter path) on its own layer, its deviation counted.
   auto add_curve = [&](const cad::CurveFunction& curve, cad::FittedCurve& into, const char* layer) {
     const Fit fit = FitCurve(curve, cam, tol_mm);
@@ -246,12 +246,12 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
     layers.push_back(layer);
   };
   if (cam.pitch) add_curve(cam.pitch, f.pitch, "PITCH_CURVE");
-  nlohmann::json& j = f.summary;
+  PlanarFitSummary& j = f.summary;
   if (cam.cutter) {
     add_curve(cam.cutter, f.cutter, "CUTTER_PATH");
-    j["cutter_diameter_mm"] = cam.cutter_diameter_mm;
+    j.cutter_diameter_mm = cam.cutter_diameter_mm;
   } else if (!cam.cutter_note.empty()) {
-    j["cutter_path"] = cam.cutter_note;
+    j.cutter_path = cam.cutter_note;
   }
   if (!cam.rollers.empty()) layers.push_back("ROLLERS");
   if (cam.bore_diameter_mm > 0) layers.push_back("BORE");
@@ -262,32 +262,31 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
   // A curve the fit cannot follow within the tolerance (absurd sizes, non-finite points): no files.
   f.files = std::isfinite(f.max_deviation_mm) && f.max_deviation_mm <= tol_mm && f.profile.within_tolerance;
   if (!f.files) {
-    j["not_written"] = "the curves could not be fitted within " + Format(tol_um, 4) +
+    j.not_written = "the curves could not be fitted within " + Format(tol_um, 4) +
                        " um (largest deviation " + Format(f.max_deviation_mm * 1e3, 4) + " um, " +
                        std::to_string(f.profile.arcs.size()) + " arcs)";
-    j["dxf_max_deviation_um"] = std::isfinite(f.max_deviation_mm) ? nlohmann::json(f.max_deviation_mm * 1e3)
-                                                                  : nlohmann::json(nullptr);
-    j["dxf_tolerance_um"] = tol_um;
+    j.dxf_max_deviation_um = f.max_deviation_mm * 1e3;  // null when not finite
+    j.dxf_tolerance_um = tol_um;
     return f;
   }
 
-  j["dxf"] = cam.file_stem + ".dxf";
-  j["dxf_layers"] = layers;
-  j["dxf_tolerance_um"] = tol_um;
+  j.dxf = cam.file_stem + ".dxf";
+  j.dxf_layers = layers;
+  j.dxf_tolerance_um = tol_um;
   if (raised)
-    j["dxf_tolerance_note"] = "geometry_files.dxf_tolerance_um " + Format(options.dxf_tolerance_um, 4) +
+    j.dxf_tolerance_note = "geometry_files.dxf_tolerance_um " + Format(options.dxf_tolerance_um, 4) +
                               " is below " + Format(kMinRelativeTolerance, 3) + " of the part's size (" +
                               Format(size * 1e-3, 4) + " m): " + Format(tol_um, 4) + " um used";
-  j["dxf_max_deviation_um"] = f.max_deviation_mm * 1e3;
-  j["dxf_deviation_check_points"] = f.checked_points;
-  j["dxf_within_tolerance"] = f.max_deviation_mm <= tol_mm;
-  j["profile_arcs"] = f.profile.arcs.size();
-  if (f.profile.symmetry > 1) j["profile_symmetry"] = f.profile.symmetry;
-  j["profile_area_mm2"] = f.profile_area_mm2;
+  j.dxf_max_deviation_um = f.max_deviation_mm * 1e3;
+  j.dxf_deviation_check_points = f.checked_points;
+  j.dxf_within_tolerance = f.max_deviation_mm <= tol_mm;
+  j.profile_arcs = long(f.profile.arcs.size());
+  if (f.profile.symmetry > 1) j.profile_symmetry = f.profile.symmetry;
+  j.profile_area_mm2 = f.profile_area_mm2;
   f.solid = cam.thickness_mm > 0;
   if (f.solid && cad::ChainCrossesItself(f.profile.arcs)) {
     f.solid = false;
-    j["solid"] = "not written: the profile crosses itself (undercut), it bounds no solid";
+    j.solid = "not written: the profile crosses itself (undercut), it bounds no solid";
   } else if (f.solid) {
     // The STEP walls of a long profile as a closed cubic B-spline fitted to the exact curve at the
     // same target as the arcs (cad/bspline.h), when it has fewer poles than there are arcs.
@@ -297,31 +296,29 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
                               kFitTarget * tol_mm, static_cast<int>(f.profile.arcs.size()) - 1);
       if (s) {
         if (reversed) std::reverse(s->poles.begin(), s->poles.end());
-        j["step_profile_spline_poles"] = s->poles.size();
-        j["step_max_deviation_um"] = s->max_deviation_mm * 1e3;
-        j["step_deviation_check_points"] = s->checked_points;
+        j.step_profile_spline_poles = long(s->poles.size());
+        j.step_max_deviation_um = s->max_deviation_mm * 1e3;
+        j.step_deviation_check_points = long(s->checked_points);
         f.spline = std::move(s);
       }
     }
     double bore_area = std::abs(cad::EnclosedArea(cad::BoreChain(ExtrusionOf(cam))));
     for (const cad::Hole& h : cam.mounting.holes) bore_area += kPi * 0.25 * h.diameter_mm * h.diameter_mm;
-    j["thickness_mm"] = cam.thickness_mm;
-    j["bore_diameter_mm"] = cam.bore_diameter_mm;
+    j.thickness_mm = cam.thickness_mm;
+    j.bore_diameter_mm = cam.bore_diameter_mm;
     if (cam.mounting.keyway_width_mm > 0)
-      j["keyway"] = {{"width_mm", cam.mounting.keyway_width_mm}, {"depth_mm", cam.mounting.keyway_depth_mm},
-                     {"angle_deg", cam.mounting.keyway_angle_rad * 180.0 / kPi}};
+      j.keyway = PlanarFitSummary::Keyway{cam.mounting.keyway_width_mm, cam.mounting.keyway_depth_mm,
+                                          cam.mounting.keyway_angle_rad * 180.0 / kPi};
     if (!cam.mounting.holes.empty()) {
-      nlohmann::json holes = nlohmann::json::array();
-      for (const cad::Hole& h : cam.mounting.holes)
-        holes.push_back({{"x_mm", h.centre.x()}, {"y_mm", h.centre.y()}, {"diameter_mm", h.diameter_mm}});
-      j["holes"] = holes;
+      std::vector<PlanarFitSummary::Hole>& holes = j.holes.emplace();
+      for (const cad::Hole& h : cam.mounting.holes) holes.push_back({h.centre.x(), h.centre.y(), h.diameter_mm});
     }
-    j["solid_volume_mm3"] = (f.profile_area_mm2 - bore_area) * cam.thickness_mm;
-    if (options.step) j["step"] = cam.file_stem + ".step";
-    j["stl"] = cam.file_stem + ".stl";
-    j["stl_format"] = options.stl_ascii ? "ascii" : "binary";
+    j.solid_volume_mm3 = (f.profile_area_mm2 - bore_area) * cam.thickness_mm;
+    if (options.step) j.step = cam.file_stem + ".step";
+    j.stl = cam.file_stem + ".stl";
+    j.stl_format = options.stl_ascii ? "ascii" : "binary";
   } else {
-    j["solid"] = "not written: no cam thickness given (cam_thickness_mm)";
+    j.solid = "not written: no cam thickness given (cam_thickness_mm)";
   }
   return f;
 }

@@ -15,8 +15,10 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -148,6 +150,93 @@ struct PlanarCamGeometry {
   Mounting mounting;              ///< keyway and bolt-circle holes (the solid's and the DXF's)
 };
 
+/// What result.json says of one planar part's geometry files (FitPlanarCam): the fit's tolerance
+/// and deviation, the DXF's layers, and with a thickness the solid's STEP/STL, or why a file is
+/// not written.
+struct PlanarFitSummary {
+  struct Keyway {
+    double width_mm = 0, depth_mm = 0, angle_deg = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("width_mm", &width_mm, Field().Unit("mm"));
+      a->Visit("depth_mm", &depth_mm, Field().Unit("mm"));
+      a->Visit("angle_deg", &angle_deg, Field().Unit("°"));
+    }
+  };
+  struct Hole {
+    double x_mm = 0, y_mm = 0, diameter_mm = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("x_mm", &x_mm, Field().Unit("mm").Desc("centre, in the part's frame"));
+      a->Visit("y_mm", &y_mm, Field().Unit("mm"));
+      a->Visit("diameter_mm", &diameter_mm, Field().Unit("mm"));
+    }
+  };
+  std::optional<double> cutter_diameter_mm;
+  std::optional<std::string> cutter_path, not_written;
+  double dxf_max_deviation_um = 0, dxf_tolerance_um = 0;
+  std::optional<std::string> dxf;
+  std::optional<std::vector<std::string>> dxf_layers;
+  std::optional<std::string> dxf_tolerance_note;
+  std::optional<long> dxf_deviation_check_points;
+  std::optional<bool> dxf_within_tolerance;
+  std::optional<long> profile_arcs;
+  std::optional<int> profile_symmetry;
+  std::optional<double> profile_area_mm2;
+  std::optional<std::string> solid;
+  std::optional<long> step_profile_spline_poles;
+  std::optional<double> step_max_deviation_um;
+  std::optional<long> step_deviation_check_points;
+  std::optional<double> thickness_mm, bore_diameter_mm;
+  std::optional<Keyway> keyway;
+  std::optional<std::vector<Hole>> holes;
+  std::optional<double> solid_volume_mm3;
+  std::optional<std::string> step, stl, stl_format;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("cutter_diameter_mm", &cutter_diameter_mm, Field().Unit("mm").Desc("with a cutter path: the cutter"));
+    a->Visit("cutter_path", &cutter_path, Field().Desc("why there is no cutter path"));
+    a->Visit("not_written", &not_written, Field().Desc("why no file is written (the curves could not be fitted)"));
+    a->Visit("dxf_max_deviation_um", &dxf_max_deviation_um,
+             Field().NullWhenNotFinite().Unit("µm").Desc("the arcs' largest distance from the exact curves"));
+    a->Visit("dxf_tolerance_um", &dxf_tolerance_um, Field().Unit("µm").Desc("the fit's tolerance"));
+    a->Visit("dxf", &dxf, Field().Desc("the DXF file"));
+    a->Visit("dxf_layers", &dxf_layers, Field().Desc("its layers"));
+    a->Visit("dxf_tolerance_note", &dxf_tolerance_note,
+             Field().Desc("when the tolerance asked for was raised to a part's relative floor"));
+    a->Visit("dxf_deviation_check_points", &dxf_deviation_check_points,
+             Field().Desc("points at which the deviation was measured"));
+    a->Visit("dxf_within_tolerance", &dxf_within_tolerance, Field());
+    a->Visit("profile_arcs", &profile_arcs, Field().Desc("arcs of the profile"));
+    a->Visit("profile_symmetry", &profile_symmetry, Field().Desc("the profile's rotational symmetry, when > 1"));
+    a->Visit("profile_area_mm2", &profile_area_mm2, Field().Unit("mm²").Desc("of the exact profile"));
+    a->Visit("solid", &solid, Field().Desc("why no solid (STEP, STL) is written"));
+    a->Visit("step_profile_spline_poles", &step_profile_spline_poles,
+             Field().Desc("the STEP walls' closed cubic B-spline, when it has fewer poles than the profile arcs"));
+    a->Visit("step_max_deviation_um", &step_max_deviation_um, Field().Unit("µm").Desc("its largest deviation"));
+    a->Visit("step_deviation_check_points", &step_deviation_check_points, Field());
+    a->Visit("thickness_mm", &thickness_mm, Field().Unit("mm"));
+    a->Visit("bore_diameter_mm", &bore_diameter_mm, Field().Unit("mm"));
+    a->Visit("keyway", &keyway, Field());
+    a->Visit("holes", &holes, Field());
+    a->Visit("solid_volume_mm3", &solid_volume_mm3, Field().Unit("mm³"));
+    a->Visit("step", &step, Field().Desc("the STEP file"));
+    a->Visit("stl", &stl, Field().Desc("the STL file"));
+    a->Visit("stl_format", &stl_format, Field().OneOf({"ascii", "binary"}));
+  }
+};
+
+/// result.json's "geometry_files" when they are switched off.
+struct GeometryFilesOff {
+  bool written = false;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("written", &written, Field().Desc("false: geometry_files is false"));
+  }
+};
+/// result.json's "geometry_files": each part's summary by its name, or {"written": false}.
+using GeometryFilesBlock = std::variant<std::map<std::string, PlanarFitSummary>, GeometryFilesOff>;
+
 /// A cam's curves fitted with arcs (in Run: cheap) and what result.json says about them.
 struct PlanarCamFit {
   PlanarCamGeometry cam;
@@ -161,7 +250,7 @@ struct PlanarCamFit {
   double profile_area_mm2 = 0.0;            ///< of the exact profile
   bool files = false;                       ///< fitted within the tolerance: the files are written
   bool solid = false;                       ///< STEP/STL written (a thickness, no undercut)
-  nlohmann::json summary;                   ///< the entry for result.json
+  PlanarFitSummary summary;                 ///< the entry for result.json
 };
 
 /// Fits the curves and measures the fit against the exact curve functions (nothing when
@@ -170,8 +259,8 @@ PlanarCamFit FitPlanarCam(const PlanarCamGeometry& cam, const GeometryFileOption
 
 /// result.json's "geometry_files": each part's summary by its name, or {"written": false} when the
 /// files are switched off.
-nlohmann::json GeometryFilesJson(const GeometryFileOptions& options,
-                                 const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts);
+GeometryFilesBlock GeometryFilesOf(const GeometryFileOptions& options,
+                                   const std::vector<std::pair<std::string, const PlanarCamFit*>>& parts);
 
 /// Writes `STEM.dxf`, and `STEM.step` (when asked) and `STEM.stl` when the cam has a thickness,
 /// into `out`. The solid is built by OpenCASCADE from the fitted arcs.

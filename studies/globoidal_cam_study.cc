@@ -231,7 +231,7 @@ void FillResult(const Study& s, Result& r) {
   r.motion.peak_velocity_deg_per_rad = r.peak_velocity_deg_per_rad;
   r.motion.peak_acceleration_deg_per_rad2 = r.peak_acceleration_deg_per_rad2;
   r.motion.peak_jerk_deg_per_rad3 = r.peak_jerk_deg_per_rad3;
-  if (!s.geometry.write) r.geometry_files = GeometryFilesJson(s.geometry, {});
+  if (!s.geometry.write) r.geometry_files = GeometryFilesOf(s.geometry, {});
   if (s.in.analysis.evaluate) {
     r.evaluated = std::vector<std::string>{"geometry"};
     if (s.dynamics_stage) r.evaluated->push_back("dynamics");

@@ -447,7 +447,7 @@ struct Result {
   std::optional<double> min_contact_radius_mm;
   std::optional<At> min_contact_radius_at;
   MotionSummary motion;
-  std::optional<nlohmann::json> geometry_files;
+  std::optional<GeometryFilesBlock> geometry_files;
   std::optional<std::vector<std::string>> evaluated;
   std::optional<Load> load;
   std::optional<double> effective_modulus;  ///< result.json's effective_modulus_MPa, with the dynamics
@@ -483,7 +483,7 @@ struct Result {
     a->Visit("min_contact_radius_mm", &min_contact_radius_mm, Field().Unit("mm").Desc("eq. (12) at the contact arm, where > 0"));
     a->Visit("min_contact_radius_at", &min_contact_radius_at, Field());
     a->Visit("motion", &motion, Field());
-    a->Visit("geometry_files", &geometry_files, Field().Desc("the geometry files not written, and why").Schema({{"type", "object"}}));
+    a->Visit("geometry_files", &geometry_files, Field().Desc("the geometry files not written, and why"));
     a->Visit("evaluated", &evaluated, Field().Desc("the stages run, when analysis.evaluate is given"));
     a->Visit("load", &load, Field().Desc("with the dynamics"));
     a->Visit("effective_modulus_MPa", &effective_modulus, Field().Unit("MPa").Desc("with the dynamics"));

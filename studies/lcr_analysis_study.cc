@@ -1498,7 +1498,7 @@ void FillResult(const Study& st, Result& res) {
   j.notes = res.notes;
   if (res.input_cam_files && res.output_cam_files)
     j.geometry_files =
-        GeometryFilesJson(st.geometry, {{"input_cam", &*res.input_cam_files}, {"output_cam", &*res.output_cam_files}});
+        GeometryFilesOf(st.geometry, {{"input_cam", &*res.input_cam_files}, {"output_cam", &*res.output_cam_files}});
   if (st.inspection) {
     nlohmann::json ins = InspectionJson(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
                                         st.geometry.write);

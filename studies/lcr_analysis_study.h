@@ -748,7 +748,7 @@ struct Result {
     std::optional<JointModelBlock> joint_model;        ///< the parameters `camopt export` reads
     std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;  ///< the dynamics, or why they are absent
     std::vector<std::string> notes;
-    std::optional<nlohmann::json> geometry_files;      ///< GeometryFilesJson's block
+    std::optional<GeometryFilesBlock> geometry_files;  ///< GeometryFilesOf's block
     std::optional<nlohmann::json> inspection;          ///< InspectionJson's block
     std::optional<nlohmann::json> measured;            ///< MeasuredJson's block and the compliant model's
     template <typename Archive>
@@ -798,8 +798,7 @@ struct Result {
       a->Visit("torsional_dynamics", &torsional_dynamics,
                Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)"));
       a->Visit("notes", &notes, Field().Desc("what the numbers do not say (an undercut, a zero torque, a model's warning)"));
-      a->Visit("geometry_files", &geometry_files,
-               Field().Desc("the cams' geometry files (with the profile stage)").Schema({{"type", "object"}}));
+      a->Visit("geometry_files", &geometry_files, Field().Desc("the cams' geometry files (with the profile stage)"));
       a->Visit("inspection", &inspection,
                Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
       a->Visit("measured", &measured,
