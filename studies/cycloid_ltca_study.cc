@@ -1353,7 +1353,7 @@ void FillCommon(const Study& s, Result& r) {
   r.min_profile_radius_mm = Finite(cycloid::MinConvexProfileRadius(s.drive), "profile radius");
   r.pin_gap_mm = Finite(cycloid::PinGapMargin(s.drive), "pin gap");
   r.geometry_files = GeometryFilesOf(s.geometry, {{"tooth", &r.tooth_files}});
-  if (!r.parts.parts.empty()) r.parts_json = PartsJson(r.parts, s.geometry);
+  if (!r.parts.parts.empty()) r.parts_json = PartsOf(r.parts, s.geometry);
   if (s.grinding) {
     const cycloid::FormWheel& w = *s.grinding;
     Result::GrindingOut g;

@@ -675,7 +675,7 @@ struct Result {
   std::vector<PerAngle> per_angle;
   double min_profile_radius_mm = 0, pin_gap_mm = 0;
   GeometryFilesBlock geometry_files;             ///< GeometryFilesOf's block
-  std::optional<nlohmann::json> parts_json;      ///< result.json's parts (PartsJson)
+  std::optional<std::variant<PartsBlock, GeometryFilesOff>> parts_json;  ///< result.json's parts (PartsOf)
   std::optional<GrindingOut> grinding;
   std::optional<TransmissionErrorBlock> transmission_error_json;  ///< result.json's transmission_error
   std::optional<nlohmann::json> inspection, measured_json;
@@ -740,7 +740,7 @@ struct Result {
              Field().Unit("mm").Desc("smallest convex radius of the tooth, rho_min - rho'"));
     a->Visit("pin_gap_mm", &pin_gap_mm, Field().Unit("mm").Desc("clearance between neighbouring pins"));
     a->Visit("geometry_files", &geometry_files, Field().Desc("the tooth's geometry files, or why none"));
-    a->Visit("parts", &parts_json, Field().Desc("the drive's parts (studies/parts.h)").Schema({{"type", "object"}}));
+    a->Visit("parts", &parts_json, Field().Desc("the drive's parts (studies/parts.h), or {written: false}"));
     a->Visit("grinding", &grinding, Field().Desc("the form wheel (with grinding)"));
     a->Visit("transmission_error", &transmission_error_json,
              Field().Desc("the kinematic transmission error from the tolerances (with tolerances)"));

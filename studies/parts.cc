@@ -96,40 +96,34 @@ std::string BomCsv(const PartsSet& set) {
   return out;
 }
 
-nlohmann::json PartsJson(const PartsSet& set, const GeometryFileOptions& options) {
-  if (!options.write) return {{"written", false}};
-  nlohmann::json parts = nlohmann::json::object();
+std::variant<PartsBlock, GeometryFilesOff> PartsOf(const PartsSet& set, const GeometryFileOptions& options) {
+  if (!options.write) return GeometryFilesOff{};
+  PartsBlock out;
   double total = 0.0;
   for (const Part& p : set.parts) {
-    nlohmann::json j = {{"description", p.description},
-                        {"count", p.count},
-                        {"material", p.material},
-                        {"thickness_mm", p.solid.thickness_mm},
-                        {"volume_mm3", p.volume_mm3},
-                        {"mass_kg", p.mass_kg},
-                        {"dxf", p.name + ".dxf"},
-                        {"stl", p.name + ".stl"}};
-    if (options.step) j["step"] = p.name + ".step";
-    if (p.solid.bore_diameter_mm > 0) j["bore_diameter_mm"] = p.solid.bore_diameter_mm;
+    PartsBlock::Entry j;
+    j.description = p.description, j.count = p.count, j.material = p.material;
+    j.thickness_mm = p.solid.thickness_mm, j.volume_mm3 = p.volume_mm3, j.mass_kg = p.mass_kg;
+    j.dxf = p.name + ".dxf", j.stl = p.name + ".stl";
+    if (options.step) j.step = p.name + ".step";
+    if (p.solid.bore_diameter_mm > 0) j.bore_diameter_mm = p.solid.bore_diameter_mm;
     if (!p.solid.holes.empty()) {
-      nlohmann::json holes = nlohmann::json::array();
-      for (const cad::Hole& h : p.solid.holes)
-        holes.push_back({{"x_mm", h.centre.x()}, {"y_mm", h.centre.y()}, {"diameter_mm", h.diameter_mm}});
-      j["holes"] = holes;
+      std::vector<PlanarFitSummary::Hole>& holes = j.holes.emplace();
+      for (const cad::Hole& h : p.solid.holes) holes.push_back({h.centre.x(), h.centre.y(), h.diameter_mm});
     }
-    if (!p.designation.empty()) j["designation"] = p.designation;
-    if (!p.note.empty()) j["note"] = p.note;
+    if (!p.designation.empty()) j.designation = p.designation;
+    if (!p.note.empty()) j.note = p.note;
     total += p.count * p.mass_kg;
-    parts[p.name] = j;
+    out.parts[p.name] = std::move(j);
   }
-  nlohmann::json out = {{"parts", parts}, {"bom", "bom.csv"}, {"total_mass_kg", total},
-                        {"density_kg_m3", set.density_kg_m3}};
+  out.total_mass_kg = total;
+  out.density_kg_m3 = set.density_kg_m3;
   if (options.step && !set.placements.empty()) {
-    out["assembly"] = "assembly.step";
-    out["assembly_occurrences"] = set.placements.size();
-    out["assembly_crank_angle_deg"] = set.assembly_crank_angle_rad * 180.0 / 3.14159265358979323846;
+    out.assembly = "assembly.step";
+    out.assembly_occurrences = long(set.placements.size());
+    out.assembly_crank_angle_deg = set.assembly_crank_angle_rad * 180.0 / 3.14159265358979323846;
   }
-  if (!set.notes.empty()) out["notes"] = set.notes;
+  if (!set.notes.empty()) out.notes = set.notes;
   return out;
 }
 

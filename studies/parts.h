@@ -8,7 +8,10 @@
 // drive); this file writes it.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -51,9 +54,56 @@ std::vector<cad::ArcSegment> CircleChain(const Vec2<double>& centre, double radi
 /// The chain turned by `angle_rad` about the origin (bulges unchanged).
 std::vector<cad::ArcSegment> RotatedChain(const std::vector<cad::ArcSegment>& chain, double angle_rad);
 
-/// result.json's "parts": each part's files, count, volume and mass, the assembly and the BOM
-/// (empty when the geometry files are off).
-nlohmann::json PartsJson(const PartsSet& set, const GeometryFileOptions& options);
+/// result.json's "parts": each part's files, count, volume and mass, the assembly and the BOM.
+struct PartsBlock {
+  struct Entry {
+    std::string description;
+    int count = 1;
+    std::string material;
+    double thickness_mm = 0, volume_mm3 = 0, mass_kg = 0;
+    std::string dxf, stl;
+    std::optional<std::string> step;
+    std::optional<double> bore_diameter_mm;
+    std::optional<std::vector<PlanarFitSummary::Hole>> holes;
+    std::optional<std::string> designation, note;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("description", &description, Field().Desc("what the part is"));
+      a->Visit("count", &count, Field().Desc("occurrences in the assembly"));
+      a->Visit("material", &material, Field().Desc("the BOM's material"));
+      a->Visit("thickness_mm", &thickness_mm, Field().Unit("mm"));
+      a->Visit("volume_mm3", &volume_mm3, Field().Unit("mm³").Desc("from the exact profile, minus bore and holes"));
+      a->Visit("mass_kg", &mass_kg, Field().Unit("kg").Desc("the volume times the density"));
+      a->Visit("dxf", &dxf, Field().Desc("the part's DXF"));
+      a->Visit("stl", &stl, Field().Desc("its STL"));
+      a->Visit("step", &step, Field().Desc("its STEP (with geometry_files.step)"));
+      a->Visit("bore_diameter_mm", &bore_diameter_mm, Field().Unit("mm"));
+      a->Visit("holes", &holes, Field());
+      a->Visit("designation", &designation, Field().Desc("a catalogue designation (a bearing)"));
+      a->Visit("note", &note, Field().Desc("what the drawing simplifies"));
+    }
+  };
+  std::map<std::string, Entry> parts;
+  std::string bom = "bom.csv";
+  double total_mass_kg = 0, density_kg_m3 = 0;
+  std::optional<std::string> assembly;
+  std::optional<long> assembly_occurrences;
+  std::optional<double> assembly_crank_angle_deg;
+  std::optional<std::vector<std::string>> notes;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("parts", &parts, Field().Desc("each part by its file stem"));
+    a->Visit("bom", &bom, Field().Desc("the bill of materials"));
+    a->Visit("total_mass_kg", &total_mass_kg, Field().Unit("kg").Desc("every part times its count"));
+    a->Visit("density_kg_m3", &density_kg_m3, Field().Unit("kg/m³").Desc("the masses' density"));
+    a->Visit("assembly", &assembly, Field().Desc("with geometry_files.step: the assembly's STEP"));
+    a->Visit("assembly_occurrences", &assembly_occurrences, Field().Desc("the parts placed in it"));
+    a->Visit("assembly_crank_angle_deg", &assembly_crank_angle_deg, Field().Unit("°").Desc("the state it shows"));
+    a->Visit("notes", &notes, Field().Desc("parts left out and why"));
+  }
+};
+/// The block, or {"written": false} when the geometry files are off.
+std::variant<PartsBlock, GeometryFilesOff> PartsOf(const PartsSet& set, const GeometryFileOptions& options);
 
 /// Writes `<part>.dxf`, `<part>.step` (options.step) and `<part>.stl` of every part, `assembly.step`
 /// (options.step, with placements) and `bom.csv`.
