@@ -1401,10 +1401,8 @@ void FillCommon(const Study& s, Result& r) {
                      "rigid), the largest over the revolution";
   }
   if (s.inspection) {
-    nlohmann::json j = InspectionJson(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
-                                      s.geometry.write);
-    if (s.geometry.write) j["datum"] = "each disc's centre (its bore); each file's header states its frame";
-    r.inspection = j;
+    r.inspection = InspectionOf(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
+                                s.geometry.write, "each disc's centre (its bore); each file's header states its frame");
   }
   if (!r.measured.is_null()) r.measured_json = r.measured;
 }

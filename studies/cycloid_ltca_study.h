@@ -678,7 +678,8 @@ struct Result {
   std::optional<std::variant<PartsBlock, GeometryFilesOff>> parts_json;  ///< result.json's parts (PartsOf)
   std::optional<GrindingOut> grinding;
   std::optional<TransmissionErrorBlock> transmission_error_json;  ///< result.json's transmission_error
-  std::optional<nlohmann::json> inspection, measured_json;
+  std::optional<InspectionBlock> inspection;
+  std::optional<nlohmann::json> measured_json;
   std::optional<cycloid_common::LifeBlock> life_json;  ///< result.json's life
   std::optional<int> discs;
   std::optional<double> disc_torque_Nm;
@@ -744,8 +745,7 @@ struct Result {
     a->Visit("grinding", &grinding, Field().Desc("the form wheel (with grinding)"));
     a->Visit("transmission_error", &transmission_error_json,
              Field().Desc("the kinematic transmission error from the tolerances (with tolerances)"));
-    a->Visit("inspection", &inspection,
-             Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
+    a->Visit("inspection", &inspection, Field().Desc("the inspection files (with inspection)"));
     a->Visit("measured", &measured_json,
              Field().Desc("the measured disc (with measured_profile)").Schema({{"type", "object"}}));
     a->Visit("life", &life_json, Field().Desc("the bearing lives, when asked"));

@@ -1483,7 +1483,7 @@ void FillResult(const Study& s, Result& r) {
   if (s.limits.contact_stress_MPa) lim.contact_stress_MPa = *s.limits.contact_stress_MPa;
   j.limits_ok = geometry_ok && loads_ok;
 
-  j.motion.joints = JointsJson(r.joints);
+  j.motion.joints = JointRows(r.joints);
   if (r.follower_unit == "deg") {
     j.motion.peak_velocity_deg_per_rad = r.peak_velocity;
     j.motion.peak_acceleration_deg_per_rad2 = r.peak_acceleration;
@@ -1507,9 +1507,9 @@ void FillResult(const Study& s, Result& r) {
   }
   j.geometry_files = GeometryFilesOf(s.geometry, {{"profile", &r.profile_files}});
   if (s.in.inspection) {
-    j.inspection = InspectionJson(s.in.inspection->spacing_mm, s.in.inspection->tolerance_um, r.inspection_points,
-                                  s.geometry.write);
-    if (s.geometry.write) (*j.inspection)["datum"] = "the cam's axis of rotation (its bore); the file's header states its frame";
+    j.inspection = InspectionOf(s.in.inspection->spacing_mm, s.in.inspection->tolerance_um, r.inspection_points,
+                                s.geometry.write,
+                                "the cam's axis of rotation (its bore); the file's header states its frame");
   }
   if (!r.measured.is_null()) j.measured = r.measured;
 }

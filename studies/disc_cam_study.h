@@ -921,12 +921,12 @@ struct Result {
     };
     /// The motion program: its joints and peak derivatives, in the follower's unit (mm or deg) per rad^k.
     struct Motion {
-      nlohmann::json joints;
+      std::vector<JointRow> joints;
       std::optional<double> peak_velocity_mm_per_rad, peak_velocity_deg_per_rad, peak_acceleration_mm_per_rad2,
           peak_acceleration_deg_per_rad2, peak_jerk_mm_per_rad3, peak_jerk_deg_per_rad3;
       template <typename Archive>
       void Serialize(Archive* a) {
-        a->Visit("joints", &joints, Field().Desc("the motion program's joints and their continuity").Schema({{"type", "array"}}));
+        a->Visit("joints", &joints, Field().Desc("the motion program's joints and their continuity"));
         a->Visit("peak_velocity_mm_per_rad", &peak_velocity_mm_per_rad, Field().Unit("mm/rad").Desc("translating"));
         a->Visit("peak_velocity_deg_per_rad", &peak_velocity_deg_per_rad, Field().Unit("deg/rad").Desc("oscillating"));
         a->Visit("peak_acceleration_mm_per_rad2", &peak_acceleration_mm_per_rad2, Field().Unit("mm/rad²").Desc("translating"));
@@ -980,7 +980,8 @@ struct Result {
     Motion motion;
     std::optional<MonteCarlo> monte_carlo;
     GeometryFilesBlock geometry_files;
-    std::optional<nlohmann::json> inspection, measured;
+    std::optional<InspectionBlock> inspection;
+    std::optional<nlohmann::json> measured;
     std::optional<std::vector<std::string>> notes;
     template <typename Archive>
     void Serialize(Archive* a) {
@@ -1028,8 +1029,7 @@ struct Result {
       a->Visit("motion", &motion, Field());
       a->Visit("monte_carlo", &monte_carlo, Field().Desc("with the Monte-Carlo stage"));
       a->Visit("geometry_files", &geometry_files, Field().Desc("the cam's geometry files (profile), or why none"));
-      a->Visit("inspection", &inspection,
-               Field().Desc("with inspection: its points, files and datum").Schema({{"type", "object"}}));
+      a->Visit("inspection", &inspection, Field().Desc("with inspection: its points, files and datum"));
       a->Visit("measured", &measured,
                Field().Desc("with measured_profile: the measured cam's deviation and its follower error").Schema(
                    {{"type", "object"}}));

@@ -227,7 +227,7 @@ void FillResult(const Study& s, Result& r) {
     r.min_contact_radius_mm = rcontact.value;
     r.min_contact_radius_at = Result::At{rcontact.cam_angle_rad / kDeg, std::nullopt, rcontact.roller};
   }
-  r.motion.joints = JointsJson(r.joints);
+  r.motion.joints = JointRows(r.joints);
   r.motion.peak_velocity_deg_per_rad = r.peak_velocity_deg_per_rad;
   r.motion.peak_acceleration_deg_per_rad2 = r.peak_acceleration_deg_per_rad2;
   r.motion.peak_jerk_deg_per_rad3 = r.peak_jerk_deg_per_rad3;

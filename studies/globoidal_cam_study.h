@@ -322,11 +322,11 @@ struct Result {
     }
   };
   struct MotionSummary {
-    nlohmann::json joints;
+    std::vector<JointRow> joints;
     double peak_velocity_deg_per_rad = 0, peak_acceleration_deg_per_rad2 = 0, peak_jerk_deg_per_rad3 = 0;
     template <typename Archive>
     void Serialize(Archive* a) {
-      a->Visit("joints", &joints, Field().Desc("the motion program's joints and their continuity").Schema({{"type", "array"}}));
+      a->Visit("joints", &joints, Field().Desc("the motion program's joints and their continuity"));
       a->Visit("peak_velocity_deg_per_rad", &peak_velocity_deg_per_rad, Field().Unit("deg/rad"));
       a->Visit("peak_acceleration_deg_per_rad2", &peak_acceleration_deg_per_rad2, Field().Unit("deg/rad²"));
       a->Visit("peak_jerk_deg_per_rad3", &peak_jerk_deg_per_rad3, Field().Unit("deg/rad³"));

@@ -1500,10 +1500,8 @@ void FillResult(const Study& st, Result& res) {
     j.geometry_files =
         GeometryFilesOf(st.geometry, {{"input_cam", &*res.input_cam_files}, {"output_cam", &*res.output_cam_files}});
   if (st.inspection) {
-    nlohmann::json ins = InspectionJson(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
-                                        st.geometry.write);
-    if (st.geometry.write) ins["datum"] = "each cam's centre (its bore); each file's header states its frame";
-    j.inspection = std::move(ins);
+    j.inspection = InspectionOf(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
+                                st.geometry.write, "each cam's centre (its bore); each file's header states its frame");
   }
   if (!res.measured.is_null()) j.measured = res.measured;
 }

@@ -749,7 +749,7 @@ struct Result {
     std::optional<OrError<TorsionalDynamicsBlock>> torsional_dynamics;  ///< the dynamics, or why they are absent
     std::vector<std::string> notes;
     std::optional<GeometryFilesBlock> geometry_files;  ///< GeometryFilesOf's block
-    std::optional<nlohmann::json> inspection;          ///< InspectionJson's block
+    std::optional<InspectionBlock> inspection;
     std::optional<nlohmann::json> measured;            ///< MeasuredJson's block and the compliant model's
     template <typename Archive>
     void Serialize(Archive* a) {
@@ -799,8 +799,7 @@ struct Result {
                Field().Desc("with torsional_dynamics (docs/torsional_dynamics.md)"));
       a->Visit("notes", &notes, Field().Desc("what the numbers do not say (an undercut, a zero torque, a model's warning)"));
       a->Visit("geometry_files", &geometry_files, Field().Desc("the cams' geometry files (with the profile stage)"));
-      a->Visit("inspection", &inspection,
-               Field().Desc("the inspection files (with inspection)").Schema({{"type", "object"}}));
+      a->Visit("inspection", &inspection, Field().Desc("the inspection files (with inspection)"));
       a->Visit("measured", &measured,
                Field().Desc("the measured cam and the compliant model with it (with measured_profile)")
                    .Schema(MeasuredSchema()));

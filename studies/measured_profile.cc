@@ -244,17 +244,19 @@ nlohmann::json MeasuredJson(const MeasuredProfile& m, const InspectedPart& part)
            "(equal parameters averaged)"}};
 }
 
-nlohmann::json InspectionJson(double spacing_mm, double tolerance_um,
-                              const std::vector<std::pair<std::string, long>>& files, bool written) {
-  nlohmann::json j = {{"spacing_mm", spacing_mm}, {"tolerance_um", tolerance_um}};
+InspectionBlock InspectionOf(double spacing_mm, double tolerance_um,
+                             const std::vector<std::pair<std::string, long>>& files, bool written,
+                             const std::string& datum) {
+  InspectionBlock j;
+  j.spacing_mm = spacing_mm, j.tolerance_um = tolerance_um;
   if (!written) {
-    j["written"] = false;
-    j["why"] = "geometry_files is false: no geometry files, no inspection points";
+    j.written = false;
+    j.why = "geometry_files is false: no geometry files, no inspection points";
     return j;
   }
-  nlohmann::json parts = nlohmann::json::object();
-  for (const auto& [name, n] : files) parts[name] = {{"file", "inspection/" + name + ".csv"}, {"points", n}};
-  j["parts"] = parts;
+  std::map<std::string, InspectionBlock::File>& parts = j.parts.emplace();
+  for (const auto& [name, n] : files) parts[name] = {"inspection/" + name + ".csv", n};
+  j.datum = datum;
   return j;
 }
 

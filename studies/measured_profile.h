@@ -13,6 +13,8 @@
 // The geometry (projection, spline, zone) is model/common/profile_deviation.h; here the files.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,8 +95,36 @@ MeasuredProfile ReadMeasuredProfile(const Node& node, const InspectedPart& part,
 /// deviation, the largest and smallest deviation and where, mean, RMS, the interpolation.
 nlohmann::json MeasuredJson(const MeasuredProfile& m, const InspectedPart& part);
 
-/// result.json's "inspection": spacing, tolerance and each part's file and point count.
-nlohmann::json InspectionJson(double spacing_mm, double tolerance_um,
-                              const std::vector<std::pair<std::string, long>>& files, bool written);
+/// result.json's "inspection": spacing, tolerance and each part's file and point count, the datum
+/// the files are measured from; without geometry files, why there are none.
+struct InspectionBlock {
+  struct File {
+    std::string file;
+    long points = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("file", &file, Field().Desc("the part's inspection CSV"));
+      a->Visit("points", &points, Field().Desc("its points"));
+    }
+  };
+  double spacing_mm = 0, tolerance_um = 0;
+  std::optional<bool> written;
+  std::optional<std::string> why;
+  std::optional<std::map<std::string, File>> parts;
+  std::optional<std::string> datum;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("spacing_mm", &spacing_mm, Field().Unit("mm").Desc("inspection.spacing_mm"));
+    a->Visit("tolerance_um", &tolerance_um, Field().Unit("µm").Desc("inspection.tolerance_um"));
+    a->Visit("written", &written, Field().Desc("false: no geometry files, no inspection points"));
+    a->Visit("why", &why, Field().Desc("with written false"));
+    a->Visit("parts", &parts, Field().Desc("each inspected part by name"));
+    a->Visit("datum", &datum, Field().Desc("what the files are measured from"));
+  }
+};
+/// The block; `datum` is set when the files are written.
+InspectionBlock InspectionOf(double spacing_mm, double tolerance_um,
+                             const std::vector<std::pair<std::string, long>>& files, bool written,
+                             const std::string& datum);
 
 }  // namespace camopt::studies

@@ -331,13 +331,11 @@ MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples) {
   return p;
 }
 
-nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints) {
-  nlohmann::json out = nlohmann::json::array();
+std::vector<JointRow> JointRows(const std::vector<motion::JointContinuity>& joints) {
+  std::vector<JointRow> out;
   for (const auto& j : joints)
-    out.push_back({{"after_segment", j.segment},
-                   {"cam_angle_deg", j.cam_angle_rad / kDeg},
-                   {"continuity", j.order < 0 ? std::string("discontinuous")
-                                              : std::string("C").append(std::to_string(j.order))}});
+    out.push_back({j.segment, j.cam_angle_rad / kDeg,
+                   j.order < 0 ? std::string("discontinuous") : std::string("C").append(std::to_string(j.order))});
   return out;
 }
 

@@ -68,9 +68,21 @@ struct MotionPeaks {
 };
 MotionPeaks PeakDerivatives(const std::vector<motion::Svaj<double>>& samples);
 
-/// The joints' continuity as result.json writes it: after_segment, cam_angle_deg, continuity
-/// ("C0".."C3" or "discontinuous").
-nlohmann::json JointsJson(const std::vector<motion::JointContinuity>& joints);
+/// A joint of the motion program as result.json writes it: the segment it follows, its cam angle
+/// and its continuity ("C0".."C3" or "discontinuous").
+struct JointRow {
+  int after_segment = 0;
+  double cam_angle_deg = 0;
+  std::string continuity;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("after_segment", &after_segment, Field().Desc("the segment the joint follows (0-based)"));
+    a->Visit("cam_angle_deg", &cam_angle_deg, Field().Unit("°").Desc("where it is"));
+    a->Visit("continuity", &continuity, Field().Desc("C0 … C3: S and its derivatives up to that order continuous there; "
+                                                     "or discontinuous"));
+  }
+};
+std::vector<JointRow> JointRows(const std::vector<motion::JointContinuity>& joints);
 
 /// svaj.svg: displacement S, velocity, acceleration and jerk stacked over the cam angle [deg],
 /// the derivatives per degree of cam (columns are per radian, as series.csv has them); with a cam
