@@ -1,6 +1,8 @@
 #include "studies/archive.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <mutex>
 
@@ -80,14 +82,43 @@ constexpr double kLargestInteger = 1e9;
 
 }  // namespace
 
+namespace {
+
+// What would fit a number that breaks a field's bounds (or, for a whole-number field, is not
+// whole): the nearest value every bound holds, a whole number rounded; empty when it lands on an
+// open bound of a real field (no nearest value there) or the bounds leave nothing.
+std::string WouldFit(double v, const Field& f, bool integer) {
+  if (!std::isfinite(v)) return "";
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  for (const Field::Bound& b : f.bounds) {
+    if (b.lo && (*b.lo > lo || (*b.lo == lo && b.lo_open))) lo = *b.lo, lo_open = b.lo_open;
+    if (b.hi && (*b.hi < hi || (*b.hi == hi && b.hi_open))) hi = *b.hi, hi_open = b.hi_open;
+  }
+  if (integer) {
+    lo = lo_open ? std::floor(lo) + 1 : std::ceil(lo);
+    hi = std::min(hi_open ? std::ceil(hi) - 1 : std::floor(hi), kLargestInteger);
+    lo_open = hi_open = false;
+  }
+  if (!(lo <= hi)) return "";
+  const double x = std::clamp(integer ? std::round(v) : v, lo, hi);
+  if ((x == lo && lo_open) || (x == hi && hi_open)) return "";
+  if (std::floor(x) == x && std::abs(x) < 1e15) return std::to_string(static_cast<long long>(x));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", x);
+  return text;
+}
+
+}  // namespace
+
 double JsonReader::ReadNumber(const Node& n, const nlohmann::json& j, const Field& f, bool integer) {
   using archive_detail::BoundText;
   const std::string first = f.bounds.empty() ? BoundText({}, integer) : BoundText(f.bounds[0], integer);
   if (!j.is_number()) n.Fail(first);
   const double v = j.get<double>();
-  if (integer && (!(std::floor(v) == v) || v > kLargestInteger)) n.Fail(first);
+  if (integer && (!(std::floor(v) == v) || v > kLargestInteger)) n.Fail(first, WouldFit(v, f, integer));
   for (const Field::Bound& b : f.bounds)
-    if (!Passes(b, v)) n.Fail(BoundText(b, integer));
+    if (!Passes(b, v)) n.Fail(BoundText(b, integer), WouldFit(v, f, integer));
   if (!std::isfinite(v)) n.Fail("a finite number");
   return v;
 }

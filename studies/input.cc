@@ -94,6 +94,14 @@ void Node::Fail(const std::string& expected) const {
                    expected, found);
 }
 
+void Node::Fail(const std::string& expected, const std::string& would_fit) const {
+  if (would_fit.empty()) Fail(expected);
+  const std::string found = Describe(*value_);
+  throw StudyError(file_ + ": " + path_ + ": expected " + expected + ", found " + found + "; " + would_fit +
+                       " would fit",
+                   file_, path_, expected, found);
+}
+
 void Node::FailWith(const std::string& message) const {
   throw StudyError(file_ + ": " + path_ + ": " + message, file_, path_, message, Describe(*value_));
 }

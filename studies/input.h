@@ -83,6 +83,8 @@ class Node {
 
   /// Throws a StudyError "FILE: PATH: expected EXPECTED, found FOUND".
   [[noreturn]] void Fail(const std::string& expected) const;
+  /// The same, with what would fit added: "...: expected E, found F; W would fit".
+  [[noreturn]] void Fail(const std::string& expected, const std::string& would_fit) const;
   /// Throws a StudyError "FILE: PATH: MESSAGE" for errors that are not a type mismatch.
   [[noreturn]] void FailWith(const std::string& message) const;
 
