@@ -89,9 +89,12 @@ void RunRobust(const Study& s, Result& res, const RunContext& ctx) {
     spec.robust = s.robust;
     return objectives::MonteCarloCheck(spec, design, s.mc_samples, s.mc_seed, s.mc_angle_steps);
   };
-  if (res.best >= 0) res.nominal_mc = check(res.best, *res.candidates[res.best].outcome.design);
+  // monte_carlo.samples 0: the linearised robust rows only, no Monte-Carlo check (no sample, no
+  // extremes to report).
+  const bool monte_carlo = s.mc_samples > 0;
+  if (res.best >= 0 && monte_carlo) res.nominal_mc = check(res.best, *res.candidates[res.best].outcome.design);
   if (res.robust_best >= 0) {
-    res.robust_mc = check(res.robust_best, *res.robust[res.robust_best].design);
+    if (monte_carlo) res.robust_mc = check(res.robust_best, *res.robust[res.robust_best].design);
     res.robust_verification = objectives::VerifyLcrLineDesign(res.candidates[res.robust_best].spec,
                                                               *res.robust[res.robust_best].design, s.options.dense_steps);
   }

@@ -230,5 +230,25 @@ TEST(LcrRobust, BadRobustInputIsAClearErrorWithExitCode2) {
   camopt::testing::ExpectStudyRejected(study, "lcr-robust-k-worst", "/robust/k", "sigma");
 }
 
+// monte_carlo.samples 0 (allowed: "the linear estimate only") sizes the robust design without a
+// Monte-Carlo check: exit 0, verified, no monte_carlo block in best or nominal_best. (It ended in
+// an internal error, exit 1, when the empty check's +inf extremes reached result.json.)
+TEST(LcrRobust, NoMonteCarloSamplesSizesWithoutTheCheck) {
+  json study = camopt::testing::Example("lcr_min_size_robust.json");
+  study["monte_carlo"]["samples"] = 0;
+  const auto dir = camopt::testing::TempDir("lcr-robust-mc0");
+  camopt::testing::WriteFile(dir / "study.json", study.dump());
+  const auto run = camopt::testing::RunCamopt("run " + (dir / "study.json").string() + " --quiet --out " +
+                                              (dir / "out").string());
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const json r = json::parse(camopt::testing::ReadFile(dir / "out" / "result.json"));
+  EXPECT_TRUE(r["verified"].get<bool>());
+  ASSERT_TRUE(r["best"].is_object());
+  EXPECT_TRUE(r["best"].contains("robust_linear"));
+  EXPECT_FALSE(r["best"].contains("monte_carlo"));
+  ASSERT_TRUE(r["nominal_best"].is_object());
+  EXPECT_FALSE(r["nominal_best"].contains("monte_carlo"));
+}
+
 }  // namespace lcr_robust_test
 }  // namespace camopt
