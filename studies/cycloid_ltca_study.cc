@@ -865,7 +865,7 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
             cycloid::UniformWholeMeshPeriods(half, s.drive.rollers))
           h = solve(tca, half, "half the crank angles: ");
         auto error = [&](double fine, double grid, std::optional<double> crank) {
-          return std::abs(fine - grid) + (crank ? std::abs(fine - *crank) : 0.0);
+          return std::abs(fine - grid) + (crank ? std::abs(fine - *crank) : 0.0) + kRatingSearchRelTolerance * fine;
         };
         RatingsResult& f = *r.ratings;
         f.rated_error_Nm = error(f.rated_torque_Nm, g.rated_torque_Nm,

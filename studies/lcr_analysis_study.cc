@@ -933,13 +933,17 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
       if (half >= 12) {
         const RatingsResult h = SolveRatings(st.ratings->in, st.ratings->limits, at_steps(half), ratio, start);
         RatingsResult& f = *res.ratings;
-        f.rated_error_Nm = std::abs(f.rated_torque_Nm - h.rated_torque_Nm);
+        auto error = [](double fine, double coarse) {
+          return std::abs(fine - coarse) + kRatingSearchRelTolerance * fine;
+        };
+        f.rated_error_Nm = error(f.rated_torque_Nm, h.rated_torque_Nm);
         if (f.peak_torque_Nm && h.peak_torque_Nm)
-          f.peak_error_Nm = std::abs(*f.peak_torque_Nm - *h.peak_torque_Nm) + f.peak_sampling_error_Nm.value_or(0.0);
+          f.peak_error_Nm = error(*f.peak_torque_Nm, *h.peak_torque_Nm) + f.peak_sampling_error_Nm.value_or(0.0);
         if (f.momentary_torque_Nm && h.momentary_torque_Nm)
-          f.momentary_error_Nm = std::abs(*f.momentary_torque_Nm - *h.momentary_torque_Nm);
-        f.error_method = "|fine - half the input angles (analysis.angle_steps / 2)|, each rating solved again; the "
-                         "peak torque's plus |on the sampled maxima - on their parabolic vertices|";
+          f.momentary_error_Nm = error(*f.momentary_torque_Nm, *h.momentary_torque_Nm);
+        f.error_method = "|fine - half the input angles (analysis.angle_steps / 2)|, each rating solved again, + the "
+                         "search's bracket (1e-6 of the torque); the peak torque's plus |on the sampled maxima - on "
+                         "their parabolic vertices|";
         f.evaluations += h.evaluations;
       }
       AllowableSpeed(st, ratio, *res.ratings);

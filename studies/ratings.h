@@ -41,6 +41,11 @@ struct RatingPoint {
 /// or is not concave there).
 double ParabolicPeak(const std::vector<double>& periodic_series);
 
+/// The relative width of the bracket at which the rating searches stop (SolveRatings): each
+/// torque is within it of a crossing of the model's computed ratio, and the kinds add it to the
+/// ratings' estimated errors.
+inline constexpr double kRatingSearchRelTolerance = 1e-6;
+
 /// The limits the peak torque is read from (the study's "limits"); absent: not a limit.
 struct PeakLimits {
   std::optional<double> contact_stress_MPa, roller_load_N;

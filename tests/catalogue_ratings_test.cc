@@ -3,6 +3,7 @@
 // hysteresis loss of synthetic loops against hand values, transmission accuracy of a synthetic
 // sine error, the momentary-peak count against a hand calculation, the rated-torque solver's round
 // trips, and bad input.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -197,6 +198,36 @@ TEST(CatalogueRatings, RatedTorqueRoundTripOnANonPowerLaw) {
   // not scale (design notes §4).
   for (double p : {3.0, 10.0 / 3.0})
     EXPECT_GT(std::abs(100.0 * std::pow(life(100.0) / target, 1.0 / p) / t_star - 1.0), 5e-3);
+}
+
+TEST(CatalogueRatings, RatedTorqueEvaluatesEachTorqueOnce) {
+  // Each evaluation is a model run: the bracket's ends are not evaluated again by the regula falsi
+  // (exp(log T) need not give T back), on a power law and on a law whose life jumps by 1e-5 of
+  // itself every 1e-7 of the torque (a model's solver noise), where a bracket of 1e-6 · T ends the
+  // search near the crossing.
+  const double t_star = 123.4;
+  auto smooth = [&](double t) { return 5000.0 * std::pow(t_star / t, 10.0 / 3.0); };
+  auto noisy = [&](double t) { return smooth(t) * (1.0 + 1e-5 * std::sin(1e7 * t)); };
+  for (double guess : {10.0, 123.4, 800.0}) {
+    for (int law = 0; law < 2; ++law) {
+      std::vector<double> torques;
+      auto life = [&](double t) {
+        torques.push_back(t);
+        return law == 0 ? smooth(t) : noisy(t);
+      };
+      const double tolerance = law == 0 ? 1e-12 : 1e-6;
+      const double t = RatedTorqueForLife(life, 5000.0, guess, tolerance);
+      std::vector<double> sorted = torques;
+      std::sort(sorted.begin(), sorted.end());
+      for (size_t i = 1; i < sorted.size(); ++i)
+        EXPECT_GT(sorted[i] - sorted[i - 1], 1e-14 * sorted[i])
+            << "a torque evaluated twice (to rounding), guess " << guess << ", law " << law;
+      EXPECT_NE(std::find(torques.begin(), torques.end(), t), torques.end());  // an evaluated torque
+      // The noise moves the crossing by up to 1e-5 / (10/3) of the torque.
+      ExpectRel(t, t_star, law == 0 ? kRoundTripRelTol : 4e-6);
+      EXPECT_LE(torques.size(), law == 0 ? 16u : 30u) << "guess " << guess << ", law " << law;
+    }
+  }
 }
 
 TEST(CatalogueRatings, RatedTorqueAcceptsInfiniteAndZeroLives) {

@@ -349,8 +349,9 @@ inline constexpr int kRatedTorqueMaxBracketSteps = 100;
 /// Method: from the guess, the bracket doubles (life above the target) or halves (at or below)
 /// until life_h(lo) > target >= life_h(hi); then regula falsi (Illinois) on −ln life_h against
 /// ln T, which is increasing (bisection where an end's value is infinite), until the life is within
-/// 1e-13 (relative) of the target or the bracket is below 1e-12·hi. A life of
-/// +∞ (no load) or 0 is allowed; on a non-monotone law it returns one crossing.
+/// 1e-13 (relative) of the target or the bracket is below rel_tolerance·hi. Returns the evaluated
+/// torque whose life is nearest the target (within the last bracket); no torque is evaluated twice.
+/// A life of +∞ (no load) or 0 is allowed; on a non-monotone law it returns one crossing.
 /// @param life_h callable double(double): the life [h] at torque T [N·m]; >= 0, not NaN.
 /// @param target_life_h [h], finite and > 0.  @param torque_guess_Nm where to start, finite > 0.
 /// @throws std::invalid_argument for a bad target or guess, a life that is NaN or negative, or a
@@ -372,17 +373,21 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
     }
     return l;
   };
+  // The bracket's ends keep their torques and lives as evaluated (a torque is never evaluated
+  // twice: exp(log T) need not give T back, and each evaluation is a model run).
   double lo = torque_guess_Nm, hi = torque_guess_Nm;
-  if (life(torque_guess_Nm) > target_life_h) {
+  double life_lo = life(torque_guess_Nm), life_hi = life_lo;
+  if (life_lo > target_life_h) {
     for (int k = 0;; ++k) {
       if (k == kRatedTorqueMaxBracketSteps)
         Reject("life_h(T) at T = " + std::to_string(hi) + " N·m",
                "<= the target " + std::to_string(target_life_h) + " h somewhere (it stays above: the life never "
                "falls to the target)",
-               life(hi));
-      lo = hi;
+               life_hi);
+      lo = hi, life_lo = life_hi;
       hi *= 2.0;
-      if (!(life(hi) > target_life_h)) break;
+      life_hi = life(hi);
+      if (!(life_hi > target_life_h)) break;
     }
   } else {
     for (int k = 0;; ++k) {
@@ -390,10 +395,11 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
         Reject("life_h(T) at T = " + std::to_string(lo) + " N·m",
                "> the target " + std::to_string(target_life_h) + " h somewhere (it stays at or below: the life "
                "never reaches the target)",
-               life(lo));
-      hi = lo;
+               life_lo);
+      hi = lo, life_hi = life_lo;
       lo *= 0.5;
-      if (life(lo) > target_life_h) break;
+      life_lo = life(lo);
+      if (life_lo > target_life_h) break;
     }
   }
   // −ln life is increasing in T; −ln(+∞) = −∞ and −ln 0 = +∞ compare correctly. A life law is
@@ -401,32 +407,36 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
   // modification on g(x) = ln target − ln life(e^x) over x = ln T converges superlinearly (a few
   // evaluations instead of bisection's ~40, each one a model run); it falls back to bisection where
   // an end's value is infinite. Stops when |g| <= 1e-13 (the life within 1e-13 of the target) or the
-  // bracket is below 1e-12 T.
-  auto g = [&](double x) { return std::log(target_life_h) - std::log(life(std::exp(x))); };
-  double a = std::log(lo), b = std::log(hi), ga = g(a), gb = g(b);  // ga < 0 <= gb
+  // bracket is below rel_tolerance · T.
+  auto g_of = [&](double l) { return std::log(target_life_h) - std::log(l); };
+  double a = std::log(lo), b = std::log(hi), ga = g_of(life_lo), gb = g_of(life_hi);  // ga < 0 <= gb
+  double t_a = lo, t_b = hi;
   // The evaluated torque closest to the target is returned: a life computed by a model with its own
   // solver tolerance is noisy below that tolerance, so the answer is a torque whose life was
   // computed, not an interpolation between two.
-  double best = std::abs(ga) <= std::abs(gb) ? a : b, best_g = std::min(std::abs(ga), std::abs(gb));
+  double best = std::abs(ga) <= std::abs(gb) ? t_a : t_b, best_g = std::min(std::abs(ga), std::abs(gb));
+  if (best_g <= 1e-13) return best;  // an end of the bracket is already there
   int side = 0;
   for (int it = 0; it < 200; ++it) {
-    if (std::exp(b) - std::exp(a) <= rel_tolerance * std::exp(b)) break;
+    if (t_b - t_a <= rel_tolerance * t_b) break;
     double x = std::isfinite(ga) && std::isfinite(gb) && gb > ga ? (a * gb - b * ga) / (gb - ga) : 0.5 * (a + b);
     if (!(x > a && x < b)) x = 0.5 * (a + b);
-    const double gx = g(x);
-    if (std::abs(gx) < best_g) best = x, best_g = std::abs(gx);
-    if (std::abs(gx) <= 1e-13) return std::exp(x);
+    const double t = std::exp(x);
+    if (!(t > t_a && t < t_b)) break;  // the bracket is a few ulps wide
+    const double gx = g_of(life(t));
+    if (std::abs(gx) < best_g) best = t, best_g = std::abs(gx);
+    if (std::abs(gx) <= 1e-13) return t;
     if (gx < 0.0) {
-      a = x, ga = gx;
+      a = x, ga = gx, t_a = t;
       if (side == -1) gb *= 0.5;  // Illinois: the end kept twice has its value halved
       side = -1;
     } else {
-      b = x, gb = gx;
+      b = x, gb = gx, t_b = t;
       if (side == 1) ga *= 0.5;
       side = 1;
     }
   }
-  return std::exp(best);
+  return best;
 }
 
 /// The allowable (thermal) input speed of a lubricated drive at one torque: the speed n at which the
