@@ -896,7 +896,11 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
 // loaded TE β = β0 + Δφc with respect to the torque (LoadedTca::Differentiate, contact sets
 // frozen), the discs in parallel (one output angle): k = Σ k_d, and the static TE the stiffness-
 // weighted mean δ_s = Σ k_d β_d / k (the linearised discs' torques sum to T at δ = δ_s).
-MeshTable CycloidMeshTable(const Study& s, const LoadedTca& tca, const RunContext& ctx) {
+// A state the study's cycle already solved at that torque and crank phase (φ mod 2π/n1 within
+// 1e-9 rad: the drive's symmetry, RunCycle) is differentiated as it is, not solved again; it
+// differs from a fresh solve only within the LTCA's tolerances (its warm start).
+MeshTable CycloidMeshTable(const Study& s, const LoadedTca& tca, const CycleResult& cycle,
+                           const std::vector<double>& cycle_angles_rad, const RunContext& ctx) {
   const TorsionalDynamicsInput& in = s.torsional->in;
   MeshTable t;
   t.period_rad = 2.0 * kPi / s.drive.rollers;
@@ -908,12 +912,33 @@ MeshTable CycloidMeshTable(const Study& s, const LoadedTca& tca, const RunContex
   t.meshes = {{"ring_pins", 1.0}};
   const int n = in.angles_per_mesh_period;
   const double disc_torque_Nmm = t.torque_Nm * 1000.0 / s.discs;
+  const bool reuse = disc_torque_Nmm == s.disc_torque_Nmm() && tca.options().keep_pressure &&
+                     cycle.meshes.size() == cycle_angles_rad.size();
+  auto phase = [&](double angle) {
+    const double p = std::fmod(angle, t.period_rad);
+    return p < 0 ? p + t.period_rad : p;
+  };
+  // The cycle's solved state at the phase of `angle`, or null.
+  auto solved_at = [&](double angle) -> const MeshLoad* {
+    if (!reuse) return nullptr;
+    const double want = phase(angle);
+    for (size_t i = 0; i < cycle.meshes.size(); ++i) {
+      const MeshLoad& m = cycle.meshes[i];
+      if (m.symmetric_source != -1 || !m.converged) continue;
+      const double dp = std::abs(phase(cycle_angles_rad[i]) - want);
+      if (std::min(dp, t.period_rad - dp) <= 1e-9) return &m;
+    }
+    return nullptr;
+  };
   Progress progress("cycloid_ltca mesh stiffness", ctx.quiet);
   for (int k = 0; k < n; ++k) {
     const double theta = t.period_rad * k / n;
     double ksum = 0.0, kbeta = 0.0;
     for (int d = 0; d < s.discs; ++d) {
-      const MeshLoad m = tca.Solve(disc_torque_Nmm, theta + 2.0 * kPi * d / s.discs);
+      const double angle = theta + 2.0 * kPi * d / s.discs;
+      const MeshLoad* known = solved_at(angle);
+      const MeshLoad fresh = known != nullptr ? MeshLoad{} : tca.Solve(disc_torque_Nmm, angle);
+      const MeshLoad& m = known != nullptr ? *known : fresh;
       if (!m.converged)
         throw std::runtime_error("torsional dynamics: the LTCA did not converge at crank angle " +
                                  Format(theta * 180 / kPi, 6) + " deg: " + m.message);
@@ -1082,7 +1107,8 @@ Result Run(const Study& s, const RunContext& ctx) {
     ToleranceWarning(s, r);
     if (s.torsional) {
       try {
-        r.torsional = RunTorsionalDynamics(*s.torsional, CycloidMeshTable(s, tca, ctx), ctx, "cycloid_ltca");
+        r.torsional = RunTorsionalDynamics(*s.torsional, CycloidMeshTable(s, tca, r.cycle, r.crank_angles_rad, ctx),
+                                           ctx, "cycloid_ltca");
         for (const std::string& w : r.torsional->warnings) r.warnings.push_back(w);
       } catch (const StudyError&) {
         throw;  // bad input found by the run: exit 2
