@@ -847,36 +847,44 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
           ratio, std::max(s.torque_Nm, 1.0));
     };
     try {
-      r.ratings = solve(tca, s.crank_angles_rad, "");
+      // With the error estimate on a uniform sampling (>= 4 angles) of whole mesh periods the ratings
+      // are solved on the refined angles, the study's N and the N shifted by half a step, as the
+      // headlines are (RefineAndEstimateErrors): a peak of a pin's or the crank bearing's load that
+      // every one of the N angles misses (and so every subset of them) is then seen, and the kind run
+      // at a rated torque reproduces its rating. Their error: |refined − N angles| (crank angles) +
+      // |N angles − the same on half the cells each way| (grid) + the search's bracket.
+      const std::vector<double>& angles = s.crank_angles_rad;
+      const bool refine = s.estimate_error && WholePeriods(angles, s.drive.rollers) && angles.size() >= 4;
+      std::vector<double> refined;
+      if (refine) {
+        const double half_step = 0.5 * (angles[1] - angles[0]);
+        for (double a : angles) refined.push_back(a), refined.push_back(a + half_step);
+      }
+      r.ratings = solve(tca, refine ? refined : angles, "");
       AllowableSpeed(s, tca, ratio, *r.ratings);
       if (s.estimate_error) {
-        // The ratings' discretisation error as the headlines' (RefineAndEstimateErrors): the
-        // ratings again on half the cells each way, and on every other crank angle (still whole
-        // mesh periods when the angles per period are even), the two differences summed.
         LoadedOptions coarse = options;
         coarse.profile_cells = std::max(4, options.profile_cells / 2);
         coarse.axial_cells = std::max(4, options.axial_cells / 2);
         const LoadedTca coarse_tca(s.drive, s.crowning, s.material, coarse);
-        const RatingsResult g = solve(coarse_tca, s.crank_angles_rad, "coarse grid: ");
-        std::optional<RatingsResult> h;
-        std::vector<double> half;
-        for (size_t k = 0; k < s.crank_angles_rad.size(); k += 2) half.push_back(s.crank_angles_rad[k]);
-        if (s.crank_angles_rad.size() % 2 == 0 && half.size() >= 2 &&
-            cycloid::UniformWholeMeshPeriods(half, s.drive.rollers))
-          h = solve(tca, half, "half the crank angles: ");
-        auto error = [&](double fine, double grid, std::optional<double> crank) {
-          return std::abs(fine - grid) + (crank ? std::abs(fine - *crank) : 0.0) + kRatingSearchRelTolerance * fine;
-        };
+        std::optional<RatingsResult> at_n;
+        if (refine) at_n = solve(tca, angles, "the study's crank angles: ");
+        const RatingsResult g = solve(coarse_tca, angles, "coarse grid: ");
         RatingsResult& f = *r.ratings;
-        f.rated_error_Nm = error(f.rated_torque_Nm, g.rated_torque_Nm,
-                                 h ? std::optional<double>(h->rated_torque_Nm) : std::nullopt);
+        auto error = [&](double fine, std::optional<double> n_angles, std::optional<double> grid) {
+          const double v_n = n_angles.value_or(fine);
+          return (n_angles ? std::abs(fine - v_n) : 0.0) + (grid ? std::abs(v_n - *grid) : 0.0) +
+                 kRatingSearchRelTolerance * fine;
+        };
+        f.rated_error_Nm = error(f.rated_torque_Nm, at_n ? std::optional<double>(at_n->rated_torque_Nm) : std::nullopt,
+                                 g.rated_torque_Nm);
         if (f.peak_torque_Nm && g.peak_torque_Nm)
-          f.peak_error_Nm = error(*f.peak_torque_Nm, *g.peak_torque_Nm, h ? h->peak_torque_Nm : std::nullopt);
+          f.peak_error_Nm = error(*f.peak_torque_Nm, at_n ? at_n->peak_torque_Nm : std::nullopt, g.peak_torque_Nm);
         if (f.momentary_torque_Nm && g.momentary_torque_Nm)
           f.momentary_error_Nm =
-              error(*f.momentary_torque_Nm, *g.momentary_torque_Nm, h ? h->momentary_torque_Nm : std::nullopt);
-        f.error_crank_estimated = h.has_value();
-        f.evaluations += g.evaluations + (h ? h->evaluations : 0);
+              error(*f.momentary_torque_Nm, at_n ? at_n->momentary_torque_Nm : std::nullopt, g.momentary_torque_Nm);
+        f.error_crank_estimated = at_n.has_value();
+        f.evaluations += g.evaluations + (at_n ? at_n->evaluations : 0);
       }
     } catch (const std::invalid_argument& e) {
       r.ratings_failed = e.what();

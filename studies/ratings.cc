@@ -213,8 +213,9 @@ void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& 
                             {"momentary_torque_Nm", Optional(g->momentary_error_Nm)},
                             {"method", !g->error_method.empty() ? g->error_method
                                        : g->error_crank_estimated
-                                           ? "|fine - coarser grid| + |fine - half the angles|, each rating solved again, "
-                                             "+ the search's bracket (1e-6 of the torque)"
+                                           ? "the ratings on the refined crank angles (the study's and the half-step-"
+                                             "shifted): |refined - the study's angles| + |the study's angles - coarser "
+                                             "grid|, each rating solved again, + the search's bracket (1e-6 of the torque)"
                                            : "|fine - coarser grid|, each rating solved again (the angles' part not "
                                              "estimated), + the search's bracket (1e-6 of the torque)"}}
            : nlohmann::json(nullptr)},
