@@ -12,22 +12,22 @@ std::optional<ContactFatigueSpec> ParseContactFatigue(const Node& material) {
   return Read<ContactFatigueInput>(material["contact_fatigue"]).ToSpec();
 }
 
-nlohmann::json SubsurfaceJson(double p0_MPa, double b_mm, double nu, const std::string& basis) {
+SubsurfaceOut SubsurfaceOf(double p0_MPa, double b_mm, double nu, const std::string& basis) {
   if (!std::isfinite(p0_MPa)) return nullptr;
-  if (!(p0_MPa > 0 && b_mm > 0)) return nlohmann::json::object();
+  if (!(p0_MPa > 0 && b_mm > 0)) return NoSubsurface{};
   const contact::LineSubsurfaceMaxima<double> m = contact::LineContactSubsurfaceMaxima(p0_MPa, b_mm, nu);
-  nlohmann::json j;
-  j["peak_pressure_MPa"] = p0_MPa;
-  j["half_width_mm"] = b_mm;
-  j["max_shear_MPa"] = m.max_shear.value;
-  j["max_shear_depth_mm"] = m.max_shear.depth;
-  j["max_orthogonal_shear_MPa"] = m.max_orthogonal_shear.value;
-  j["max_orthogonal_shear_depth_mm"] = m.max_orthogonal_shear.depth;
-  j["max_orthogonal_shear_offset_mm"] = std::abs(m.max_orthogonal_shear.x);
-  j["max_von_mises_MPa"] = m.max_von_mises.value;
-  j["max_von_mises_depth_mm"] = m.max_von_mises.depth;
-  j["poisson_ratio"] = nu;
-  j["basis"] = basis;
+  SubsurfaceBlock j;
+  j.peak_pressure_MPa = p0_MPa;
+  j.half_width_mm = b_mm;
+  j.max_shear_MPa = m.max_shear.value;
+  j.max_shear_depth_mm = m.max_shear.depth;
+  j.max_orthogonal_shear_MPa = m.max_orthogonal_shear.value;
+  j.max_orthogonal_shear_depth_mm = m.max_orthogonal_shear.depth;
+  j.max_orthogonal_shear_offset_mm = std::abs(m.max_orthogonal_shear.x);
+  j.max_von_mises_MPa = m.max_von_mises.value;
+  j.max_von_mises_depth_mm = m.max_von_mises.depth;
+  j.poisson_ratio = nu;
+  j.basis = basis;
   return j;
 }
 

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -51,11 +52,39 @@ struct ContactFatigueInput {
 std::optional<ContactFatigueSpec> ParseContactFatigue(const Node& material);
 
 /// The "subsurface" object of a contact of peak pressure p0 [MPa] and half-width b [mm] (a line
-/// contact, or the worst slice of a finite-length one) of a material of Poisson's ratio nu:
-/// peak_pressure_MPa, half_width_mm, max_shear_MPa (Tresca's τ1) and its depth, max_orthogonal_shear_MPa
-/// (Lundberg–Palmgren's τ0) with its depth and offset from the contact's centre line,
-/// max_von_mises_MPa and its depth (mm below the surface), and `basis`, the sentence that says
-/// which contact these are of. Null when p0 is not finite (an undercut contact) and {} when p0 is 0.
-nlohmann::json SubsurfaceJson(double p0_MPa, double b_mm, double nu, const std::string& basis);
+/// contact, or the worst slice of a finite-length one) of a material of Poisson's ratio nu
+/// (Johnson 1985, eq. 4.50 ff.): Tresca's τ1, Lundberg–Palmgren's τ0 and the von Mises stress,
+/// each with its depth below the surface, and `basis`, the sentence that says which contact these
+/// are of.
+struct SubsurfaceBlock {
+  double peak_pressure_MPa = 0, half_width_mm = 0, max_shear_MPa = 0, max_shear_depth_mm = 0,
+         max_orthogonal_shear_MPa = 0, max_orthogonal_shear_depth_mm = 0, max_orthogonal_shear_offset_mm = 0,
+         max_von_mises_MPa = 0, max_von_mises_depth_mm = 0, poisson_ratio = 0;
+  std::string basis;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("peak_pressure_MPa", &peak_pressure_MPa, Field().Unit("MPa").Desc("p0"));
+    a->Visit("half_width_mm", &half_width_mm, Field().Unit("mm").Desc("b of the line contact"));
+    a->Visit("max_shear_MPa", &max_shear_MPa, Field().Unit("MPa").Desc("Tresca's largest shear τ1 below the surface"));
+    a->Visit("max_shear_depth_mm", &max_shear_depth_mm, Field().Unit("mm").Desc("its depth"));
+    a->Visit("max_orthogonal_shear_MPa", &max_orthogonal_shear_MPa,
+             Field().Unit("MPa").Desc("Lundberg–Palmgren's orthogonal shear amplitude τ0"));
+    a->Visit("max_orthogonal_shear_depth_mm", &max_orthogonal_shear_depth_mm, Field().Unit("mm").Desc("its depth"));
+    a->Visit("max_orthogonal_shear_offset_mm", &max_orthogonal_shear_offset_mm,
+             Field().Unit("mm").Desc("its distance from the contact's centre line"));
+    a->Visit("max_von_mises_MPa", &max_von_mises_MPa, Field().Unit("MPa").Desc("the largest von Mises stress"));
+    a->Visit("max_von_mises_depth_mm", &max_von_mises_depth_mm, Field().Unit("mm").Desc("its depth"));
+    a->Visit("poisson_ratio", &poisson_ratio, Field().Desc("the material's ν"));
+    a->Visit("basis", &basis, Field().Desc("which contact these are of"));
+  }
+};
+/// A contact with no load: the empty object {}.
+struct NoSubsurface {
+  template <typename Archive>
+  void Serialize(Archive*) {}
+};
+/// The subsurface stresses, {} when p0 is 0, null when p0 is not finite (an undercut contact).
+using SubsurfaceOut = std::variant<SubsurfaceBlock, NoSubsurface, std::nullptr_t>;
+SubsurfaceOut SubsurfaceOf(double p0_MPa, double b_mm, double nu, const std::string& basis);
 
 }  // namespace camopt::studies

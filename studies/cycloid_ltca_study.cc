@@ -836,7 +836,8 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
     Progress progress("cycloid_ltca ratings", ctx.quiet);
     int step = 0;
     const double ratio = double(s.drive.teeth) / double(s.drive.rollers - s.drive.teeth);
-    auto solve = [&](const LoadedTca& t, const std::vector<double>& angles, const std::string& what) {
+    auto solve = [&](const LoadedTca& t, const std::vector<double>& angles, const std::string& what,
+                     const RatingsResult* near = nullptr) {
       return SolveRatings(
           s.ratings->in, s.ratings->limits,
           [&](double torque_Nm) {
@@ -844,7 +845,7 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
             progress.Update(std::min(0.95, 0.01 * step), what + std::to_string(step) + " LTCA cycles");
             return cycloid_common::CycloidRatingPoint(s.ratings->in, s.ratings->life, t, angles, ratio, torque_Nm);
           },
-          ratio, std::max(s.torque_Nm, 1.0));
+          ratio, std::max(s.torque_Nm, 1.0), near);
     };
     try {
       // With the error estimate on a uniform sampling (>= 4 angles) of whole mesh periods the ratings
@@ -868,8 +869,10 @@ void RunCatalogue(const Study& s, const RunContext& ctx, Result& r) {
         coarse.axial_cells = std::max(4, options.axial_cells / 2);
         const LoadedTca coarse_tca(s.drive, s.crowning, s.material, coarse);
         std::optional<RatingsResult> at_n;
-        if (refine) at_n = solve(tca, angles, "the study's crank angles: ");
-        const RatingsResult g = solve(coarse_tca, angles, "coarse grid: ");
+        // Each search starts from its neighbour's rating (SolveRatings' `near`): the N angles' from
+        // the refined ones, the coarse grid's from the N angles'.
+        if (refine) at_n = solve(tca, angles, "the study's crank angles: ", &*r.ratings);
+        const RatingsResult g = solve(coarse_tca, angles, "coarse grid: ", at_n ? &*at_n : &*r.ratings);
         RatingsResult& f = *r.ratings;
         auto error = [&](double fine, std::optional<double> n_angles, std::optional<double> grid) {
           const double v_n = n_angles.value_or(fine);
@@ -982,10 +985,11 @@ constexpr int kMeasuredLoadedAnglesPerMeshPeriod = 8;
 // The measured disc's kinematic output (model/cycloid/transmission_error.h, the profile deviation
 // d(t) in the ring-pin contacts) beside the nominal's, over one output revolution of the disc's
 // own crank angle φ + 2π(k − 1)/N.
-nlohmann::json MeasuredDisc(const Study& s, Result& r) {
+CycloidMeasured MeasuredDisc(const Study& s, Result& r) {
   const MeasuredProfile& m = *s.measured;
   const int k = s.measured_disc;
-  nlohmann::json j = MeasuredJson(m, DiscPart(s, k));
+  CycloidMeasured j;
+  static_cast<MeasuredBlock&>(j) = MeasuredOf(m, DiscPart(s, k));
   const cycloid::OutputPins* pins = s.output ? &s.output->pins : nullptr;
   std::vector<double> crank =
       cycloid::TransmissionErrorAngles(s.drive, kMeasuredAnglesPerMeshPeriod * s.drive.rollers * s.drive.teeth);
@@ -1016,26 +1020,26 @@ nlohmann::json MeasuredDisc(const Study& s, Result& r) {
   const auto [bn_lo, bn_hi] = range(bl_nom);
   const auto [bm_lo, bm_hi] = range(bl_meas);
   auto mean = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); };
-  j["kinematic"] = {
-      {"model", "the rigid kinematic output of model/cycloid/transmission_error.h with the measured normal deviation "
-                "d(t) in every ring-pin contact (the roller centre on the tooth's normal at rho - rho' + d(t))"},
-      {"crank_angles", crank.size()},
-      {"crank_angles_over", "one output revolution (teeth crank turns) of this disc's own crank angle phi + 360 (k - "
-                            "1) / N deg, " + std::to_string(kMeasuredAnglesPerMeshPeriod) + " per mesh period"},
-      {"transmission_error_peak_to_peak_arcsec", Finite((te_hi - te_lo) * as, "measured te")},
-      {"transmission_error_max_arcsec", te_hi * as},
-      {"transmission_error_min_arcsec", te_lo * as},
-      {"transmission_error_note", "the measured disc's output angle less the nominal's at the same crank angle, "
-                                  "forward torque (> 0: the output ahead)"},
-      {"output_lag_peak_to_peak_arcsec", {{"nominal", (ln_hi - ln_lo) * as}, {"measured", (lm_hi - lm_lo) * as}}},
-      {"backlash_max_arcmin", {{"nominal", bn_hi * am}, {"measured", bm_hi * am}}},
-      {"backlash_min_arcmin", {{"nominal", bn_lo * am}, {"measured", bm_lo * am}}},
-      {"backlash_mean_arcmin", {{"nominal", mean(bl_nom) * am}, {"measured", mean(bl_meas) * am}}},
-      {"lost_motion_kinematic_arcmin", {{"nominal", bn_hi * am}, {"measured", bm_hi * am}}},
-      {"lost_motion_note", "rigid parts: the output's free turn from the forward to the reverse contact, the largest "
-                           "backlash; the elastic part (stiffness block) is not computed for the measured disc"},
-      {"angles_without_contact", no_contact},
-      {"jammed_angles", jammed}};
+  CycloidMeasured::Kinematic& kin = j.kinematic;
+  kin.model = "the rigid kinematic output of model/cycloid/transmission_error.h with the measured normal deviation "
+              "d(t) in every ring-pin contact (the roller centre on the tooth's normal at rho - rho' + d(t))";
+  kin.crank_angles = long(crank.size());
+  kin.crank_angles_over = "one output revolution (teeth crank turns) of this disc's own crank angle phi + 360 (k - "
+                          "1) / N deg, " + std::to_string(kMeasuredAnglesPerMeshPeriod) + " per mesh period";
+  kin.transmission_error_peak_to_peak_arcsec = (te_hi - te_lo) * as;
+  kin.transmission_error_max_arcsec = te_hi * as;
+  kin.transmission_error_min_arcsec = te_lo * as;
+  kin.transmission_error_note = "the measured disc's output angle less the nominal's at the same crank angle, "
+                                "forward torque (> 0: the output ahead)";
+  kin.output_lag_peak_to_peak_arcsec = {(ln_hi - ln_lo) * as, (lm_hi - lm_lo) * as};
+  kin.backlash_max_arcmin = {bn_hi * am, bm_hi * am};
+  kin.backlash_min_arcmin = {bn_lo * am, bm_lo * am};
+  kin.backlash_mean_arcmin = {mean(bl_nom) * am, mean(bl_meas) * am};
+  kin.lost_motion_kinematic_arcmin = {bn_hi * am, bm_hi * am};
+  kin.lost_motion_note = "rigid parts: the output's free turn from the forward to the reverse contact, the largest "
+                         "backlash; the elastic part (stiffness block) is not computed for the measured disc";
+  kin.angles_without_contact = no_contact;
+  kin.jammed_angles = jammed;
   if (no_contact > 0)
     r.warnings.push_back("measured_profile: at " + std::to_string(no_contact) +
                          " crank angles no ring pin touches the measured disc's loaded flank");
@@ -1057,41 +1061,38 @@ nlohmann::json MeasuredDisc(const Study& s, Result& r) {
     measured_tca.SetProfileDeviation(dev.profile_shape);
     const CycleResult cn = RunCycle(nominal_tca, s.disc_torque_Nmm(), angles);
     const CycleResult cm = RunCycle(measured_tca, s.disc_torque_Nmm(), angles);
-    j["loaded"] = {
-        {"model", "the loaded TCA (model/cycloid/loaded_tca.h) with the measured tooth in every pair's unloaded "
-                  "contact (arms, backlash, the moved profile's curvature in the Hertz gaps)"},
-        {"crank_angles", angles.size()},
-        {"crank_angles_over", "one output revolution of this disc's own crank angle, " +
-                                  std::to_string(kMeasuredLoadedAnglesPerMeshPeriod) + " per mesh period"},
-        {"disc_torque_Nm", s.disc_torque_Nmm() / 1000.0},
-        {"max_contact_stress_MPa", {{"nominal", cn.max_pressure_MPa}, {"measured", cm.max_pressure_MPa}}},
-        {"max_pair_load_N", {{"nominal", cn.max_pair_load_N}, {"measured", cm.max_pair_load_N}}},
-        {"lte_peak_to_peak_arcsec", {{"nominal", cn.lte_peak_to_peak_arcsec}, {"measured", cm.lte_peak_to_peak_arcsec}}},
-        {"converged", cm.converged && cn.converged}};
+    CycloidMeasured::Loaded& lo = j.loaded.emplace();
+    lo.model = "the loaded TCA (model/cycloid/loaded_tca.h) with the measured tooth in every pair's unloaded "
+               "contact (arms, backlash, the moved profile's curvature in the Hertz gaps)";
+    lo.crank_angles = long(angles.size());
+    lo.crank_angles_over = "one output revolution of this disc's own crank angle, " +
+                           std::to_string(kMeasuredLoadedAnglesPerMeshPeriod) + " per mesh period";
+    lo.disc_torque_Nm = s.disc_torque_Nmm() / 1000.0;
+    lo.max_contact_stress_MPa = {cn.max_pressure_MPa, cm.max_pressure_MPa};
+    lo.max_pair_load_N = {cn.max_pair_load_N, cm.max_pair_load_N};
+    lo.lte_peak_to_peak_arcsec = {cn.lte_peak_to_peak_arcsec, cm.lte_peak_to_peak_arcsec};
+    lo.converged = cm.converged && cn.converged;
     if (!cm.converged) r.warnings.push_back("measured_profile: the loaded TCA of the measured disc did not converge at some angle");
     if (s.life && cm.converged && cn.converged) {
       // The lives as made: the duty cycle on the measured disc's loaded TCA, beside the nominal
       // disc's on the same angles (each line one cycle; the study's torque reuses the cycle above).
       const cycloid_common::LifeResult ln = cycloid_common::RunLife(*s.life, nominal_tca, angles, s.disc_torque_Nmm(), &cn.meshes);
       const cycloid_common::LifeResult lm = cycloid_common::RunLife(*s.life, measured_tca, angles, s.disc_torque_Nmm(), &cm.meshes);
-      nlohmann::json elements = nlohmann::json::object();
+      CycloidMeasured::Loaded::Life& life = lo.life.emplace();
       for (size_t i = 0; i < lm.elements.size() && i < ln.elements.size(); ++i)
-        elements[lm.elements[i].name] = {{"nominal", ln.elements[i].life.L10h}, {"measured", lm.elements[i].life.L10h}};
-      j["loaded"]["life"] = {{"shortest_L10h", {{"nominal", ln.shortest_L10h}, {"measured", lm.shortest_L10h}}},
-                             {"shortest", {{"nominal", ln.shortest}, {"measured", lm.shortest}}},
-                             {"L10h", elements},
-                             {"crank_angles_over", "the loaded results' angles (the study's life runs on its own "
-                                                   "angles: compare the two columns here)"}};
+        life.L10h[lm.elements[i].name] = {ln.elements[i].life.L10h, lm.elements[i].life.L10h};
+      life.shortest_L10h = {ln.shortest_L10h, lm.shortest_L10h};
+      life.shortest = {ln.shortest, lm.shortest};
+      life.crank_angles_over = "the loaded results' angles (the study's life runs on its own angles: compare the "
+                               "two columns here)";
     }
-    j["not_computed"] = nlohmann::json::array(
-        {{{"result", std::string(s.life ? "" : "the measured disc's bearing lives (no life asked), ") +
-                         "elastic lost motion, gear ratio and output-mechanism loads"},
-          {"why", "the stiffness and output-mechanism stages run on the nominal disc only"}}});
+    j.not_computed = {{std::string(s.life ? "" : "the measured disc's bearing lives (no life asked), ") +
+                           "elastic lost motion, gear ratio and output-mechanism loads",
+                       "the stiffness and output-mechanism stages run on the nominal disc only"}};
   } else {
-    j["not_computed"] = nlohmann::json::array(
-        {{{"result", "the loaded results of the measured disc (largest contact stress, pair loads, loaded "
-                     "transmission error)"},
-          {"why", "analysis.evaluate is [\"unloaded\"]: no material or load"}}});
+    j.not_computed = {{"the loaded results of the measured disc (largest contact stress, pair loads, loaded "
+                       "transmission error)",
+                       "analysis.evaluate is [\"unloaded\"]: no material or load"}};
   }
   return j;
 }
@@ -1438,7 +1439,7 @@ void FillCommon(const Study& s, Result& r) {
     r.inspection = InspectionOf(s.inspection->spacing_mm, s.inspection->tolerance_um, r.inspection_points,
                                 s.geometry.write, "each disc's centre (its bore); each file's header states its frame");
   }
-  if (!r.measured.is_null()) r.measured_json = r.measured;
+  r.measured_json = r.measured;
 }
 
 // result.json's catalogue numbers (docs/ratings.md): rated_torque_Nm, peak_torque_Nm,

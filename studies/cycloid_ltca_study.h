@@ -426,6 +426,91 @@ inline constexpr double kErrorShare = 0.05;
 inline constexpr double kLooseTolerance = 0.1;
 inline constexpr double kToleranceShare = 0.05;
 
+/// result.json's "measured" (with measured_profile): the measured disc's deviation (MeasuredBlock),
+/// its rigid kinematic output beside the nominal disc's and, with the loaded stage, its loaded TCA.
+struct CycloidMeasured : MeasuredBlock {
+  struct Kinematic {
+    std::string model, crank_angles_over, transmission_error_note, lost_motion_note;
+    long crank_angles = 0;
+    double transmission_error_peak_to_peak_arcsec = 0, transmission_error_max_arcsec = 0,
+           transmission_error_min_arcsec = 0;
+    NominalMeasured output_lag_peak_to_peak_arcsec, backlash_max_arcmin, backlash_min_arcmin, backlash_mean_arcmin,
+        lost_motion_kinematic_arcmin;
+    int angles_without_contact = 0, jammed_angles = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("model", &model, Field().Desc("the model in words"));
+      a->Visit("crank_angles", &crank_angles, Field().Desc("the crank angles evaluated"));
+      a->Visit("crank_angles_over", &crank_angles_over, Field().Desc("what they span"));
+      a->Visit("transmission_error_peak_to_peak_arcsec", &transmission_error_peak_to_peak_arcsec,
+               Field().Unit("arcsec").Desc("of the measured disc's output angle less the nominal's"));
+      a->Visit("transmission_error_max_arcsec", &transmission_error_max_arcsec, Field().Unit("arcsec"));
+      a->Visit("transmission_error_min_arcsec", &transmission_error_min_arcsec, Field().Unit("arcsec"));
+      a->Visit("transmission_error_note", &transmission_error_note, Field().Desc("its definition and sign"));
+      a->Visit("output_lag_peak_to_peak_arcsec", &output_lag_peak_to_peak_arcsec,
+               Field().Unit("arcsec").Desc("the output angle's ripple, forward torque"));
+      a->Visit("backlash_max_arcmin", &backlash_max_arcmin, Field().Unit("arcmin"));
+      a->Visit("backlash_min_arcmin", &backlash_min_arcmin, Field().Unit("arcmin"));
+      a->Visit("backlash_mean_arcmin", &backlash_mean_arcmin, Field().Unit("arcmin"));
+      a->Visit("lost_motion_kinematic_arcmin", &lost_motion_kinematic_arcmin,
+               Field().Unit("arcmin").Desc("the largest backlash (rigid parts)"));
+      a->Visit("lost_motion_note", &lost_motion_note, Field().Desc("what the lost motion leaves out"));
+      a->Visit("angles_without_contact", &angles_without_contact,
+               Field().Desc("crank angles at which no ring pin touches the measured disc's loaded flank"));
+      a->Visit("jammed_angles", &jammed_angles,
+               Field().Desc("crank angles at which the measured disc interferes with the pins"));
+    }
+  };
+  struct Loaded {
+    struct Life {
+      NominalMeasuredOrInfinite shortest_L10h;
+      std::map<std::string, NominalMeasuredOrInfinite> L10h;
+      std::string crank_angles_over;
+      struct Names {
+        std::string nominal, measured;
+        template <typename Archive>
+        void Serialize(Archive* a) {
+          a->Visit("nominal", &nominal, Field().Desc("the nominal disc's"));
+          a->Visit("measured", &measured, Field().Desc("the measured disc's"));
+        }
+      } shortest;
+      template <typename Archive>
+      void Serialize(Archive* a) {
+        a->Visit("shortest_L10h", &shortest_L10h, Field().Unit("h").Desc("the shortest bearing life"));
+        a->Visit("shortest", &shortest, Field().Desc("the element of the shortest life"));
+        a->Visit("L10h", &L10h, Field().Unit("h").Desc("each element's life"));
+        a->Visit("crank_angles_over", &crank_angles_over, Field().Desc("the angles the lives are on"));
+      }
+    };
+    std::string model, crank_angles_over;
+    long crank_angles = 0;
+    double disc_torque_Nm = 0;
+    NominalMeasured max_contact_stress_MPa, max_pair_load_N, lte_peak_to_peak_arcsec;
+    bool converged = false;
+    std::optional<Life> life;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("model", &model, Field().Desc("the model in words"));
+      a->Visit("crank_angles", &crank_angles, Field().Desc("the crank angles evaluated"));
+      a->Visit("crank_angles_over", &crank_angles_over, Field().Desc("what they span"));
+      a->Visit("disc_torque_Nm", &disc_torque_Nm, Field().Unit("N·m").Desc("the torque on the disc"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("max_pair_load_N", &max_pair_load_N, Field().Unit("N"));
+      a->Visit("lte_peak_to_peak_arcsec", &lte_peak_to_peak_arcsec, Field().Unit("arcsec"));
+      a->Visit("converged", &converged, Field().Desc("both loaded TCAs converged at every angle"));
+      a->Visit("life", &life, Field().Desc("with life: the lives as made beside the nominal"));
+    }
+  };
+  Kinematic kinematic;
+  std::optional<Loaded> loaded;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    MeasuredBlock::Serialize(a);
+    a->Visit("kinematic", &kinematic, Field().Desc("the rigid kinematic output, measured beside nominal"));
+    a->Visit("loaded", &loaded, Field().Desc("with the loaded stage: the loaded TCA, measured beside nominal"));
+  }
+};
+
 /// The run's answer: result.json as declared (`camopt schema cycloid_ltca --result`; the loaded
 /// stage's keys, or the unloaded stage's alone with analysis.evaluate ["unloaded"]), then the
 /// model's numbers the tables, plots and drawings are drawn from.
@@ -679,7 +764,7 @@ struct Result {
   std::optional<GrindingOut> grinding;
   std::optional<TransmissionErrorBlock> transmission_error_json;  ///< result.json's transmission_error
   std::optional<InspectionBlock> inspection;
-  std::optional<nlohmann::json> measured_json;
+  std::optional<CycloidMeasured> measured_json;
   std::optional<cycloid_common::LifeBlock> life_json;  ///< result.json's life
   std::optional<int> discs;
   std::optional<double> disc_torque_Nm;
@@ -746,8 +831,7 @@ struct Result {
     a->Visit("transmission_error", &transmission_error_json,
              Field().Desc("the kinematic transmission error from the tolerances (with tolerances)"));
     a->Visit("inspection", &inspection, Field().Desc("the inspection files (with inspection)"));
-    a->Visit("measured", &measured_json,
-             Field().Desc("the measured disc (with measured_profile)").Schema({{"type", "object"}}));
+    a->Visit("measured", &measured_json, Field().Desc("the measured disc (with measured_profile)"));
     a->Visit("life", &life_json, Field().Desc("the bearing lives, when asked"));
     a->Visit("discs", &discs, Field().Desc("with more than one disc"));
     a->Visit("disc_torque_Nm", &disc_torque_Nm, Field().Unit("N·m").Desc("each disc's torque (more than one disc)"));
@@ -845,7 +929,7 @@ struct Result {
   /// inspection/disc_k.csv by part name, and the point counts ("inspection").
   std::vector<std::pair<std::string, std::string>> inspection_files;
   std::vector<std::pair<std::string, long>> inspection_points;
-  nlohmann::json measured;  ///< result.json's "measured" (null: none)
+  std::optional<CycloidMeasured> measured;  ///< result.json's "measured" (with measured_profile)
 };
 
 /// Disc k's part (1-based) as inspected: its exact tooth profile in its part frame

@@ -667,20 +667,19 @@ namespace {
 // eqs. 17, 22, model/disc_cam/mechanical_error.h) ΔS = d/cos φ (translating roller or knife edge),
 // d/(l cos φ) (oscillating), and ΔS = d for a translating flat face (its normal is the line of
 // motion). Over the study's analysis grid.
-nlohmann::json MeasuredCam(const Study& s, const Result& r) {
+DiscCamMeasured MeasuredCam(const Study& s, const Result& r) {
   const MeasuredProfile& m = *s.measured;
-  nlohmann::json j = MeasuredJson(m, CamPart(s));
+  DiscCamMeasured j;
+  static_cast<MeasuredBlock&>(j) = MeasuredOf(m, CamPart(s));
   const DiscCam& cam = s.cam;
   const bool oscillating = cam.follower == FollowerType::kOscillatingRoller;
   if (s.contact == Study::Contact::kFlatFaced && oscillating) {
-    j["not_computed"] = nlohmann::json::array(
-        {{{"result", "the follower's displacement error and the contact stress of the measured cam"},
-          {"why", "the oscillating flat face's error gain (the contact's distance along the face) is not modelled "
-                  "for a measured profile yet"}}});
+    j.not_computed = {{"the follower's displacement error and the contact stress of the measured cam",
+                       "the oscillating flat face's error gain (the contact's distance along the face) is not "
+                       "modelled for a measured profile yet"}};
     return j;
   }
   const double unit = oscillating ? 180.0 / kPi * 3600.0 : 1000.0;  // arcsec or µm
-  const std::string u = oscillating ? "arcsec" : "um";
   double lo = INFINITY, hi = -INFINITY, lo_at = 0, hi_at = 0, s_lo = INFINITY, s_hi = -INFINITY, n_lo = INFINITY,
          n_hi = -INFINITY;
   const int n = s.in.analysis.angle_steps;
@@ -704,23 +703,22 @@ nlohmann::json MeasuredCam(const Study& s, const Result& r) {
     n_lo = std::min(n_lo, follower);
     n_hi = std::max(n_hi, follower);
   }
-  j["follower"] = {
-      {"model", s.contact == Study::Contact::kFlatFaced
-                    ? "first order: the translating flat face moves by d(theta), the deviation at the contact"
-                    : "first order (Rzine et al. eqs. 17, 22): the follower moves by d(theta)/cos(pressure angle) "
-                      "(translating) or d/(l cos) (oscillating), d the deviation at the point in contact at theta"},
-      {"angles", n},
-      {"displacement_error_max_" + u, hi * unit},
-      {"displacement_error_max_at_cam_angle_deg", hi_at * 180.0 / kPi},
-      {"displacement_error_min_" + u, lo * unit},
-      {"displacement_error_min_at_cam_angle_deg", lo_at * 180.0 / kPi},
-      {"displacement_error_peak_to_peak_" + u, (hi - lo) * unit},
-      {"follower_range_" + r.follower_unit,
-       {{"nominal", oscillating ? (n_hi - n_lo) * 180.0 / kPi : n_hi - n_lo},
-        {"measured", oscillating ? (s_hi - s_lo) * 180.0 / kPi : s_hi - s_lo}}}};
-  nlohmann::json not_computed = nlohmann::json::array(
-      {{{"result", "the follower's dynamics with the measured motion (contact force, jump)"},
-        {"why", "the loads are the nominal motion's; the measured error's inertia m dS'' w^2 is left out"}}});
+  DiscCamMeasured::Follower& f = j.follower.emplace();
+  f.model = s.contact == Study::Contact::kFlatFaced
+                ? "first order: the translating flat face moves by d(theta), the deviation at the contact"
+                : "first order (Rzine et al. eqs. 17, 22): the follower moves by d(theta)/cos(pressure angle) "
+                  "(translating) or d/(l cos) (oscillating), d the deviation at the point in contact at theta";
+  f.angles = n;
+  (oscillating ? f.displacement_error_max_arcsec : f.displacement_error_max_um) = hi * unit;
+  f.displacement_error_max_at_cam_angle_deg = hi_at * 180.0 / kPi;
+  (oscillating ? f.displacement_error_min_arcsec : f.displacement_error_min_um) = lo * unit;
+  f.displacement_error_min_at_cam_angle_deg = lo_at * 180.0 / kPi;
+  (oscillating ? f.displacement_error_peak_to_peak_arcsec : f.displacement_error_peak_to_peak_um) = (hi - lo) * unit;
+  (r.follower_unit == "deg" ? f.follower_range_deg : f.follower_range_mm) =
+      NominalMeasured{oscillating ? (n_hi - n_lo) * 180.0 / kPi : n_hi - n_lo,
+                      oscillating ? (s_hi - s_lo) * 180.0 / kPi : s_hi - s_lo};
+  j.not_computed = {{"the follower's dynamics with the measured motion (contact force, jump)",
+                     "the loads are the nominal motion's; the measured error's inertia m dS'' w^2 is left out"}};
   if (r.loads && r.loads->stress_evaluated && s.contact == Study::Contact::kRoller &&
       r.loads->contact_force_N.size() == size_t(n)) {
     // The Hertz stress on the moved profile Q = A + d n (A the contact point, n its outward
@@ -744,20 +742,16 @@ nlohmann::json MeasuredCam(const Study& s, const Result& r) {
       const double stress = inv_r > 0 ? std::sqrt(force * e_star * inv_r / (kPi * *s.face_width_mm)) : INFINITY;
       if (stress > p_max) p_max = stress, p_at = th;
     }
-    j["contact"] = {
-        {"model", "Hertz line contact of the roller on the measured profile's curvature (the moved profile Q = A + d "
-                  "n differentiated over the cam angle), the nominal motion's contact force"},
-        {"max_contact_stress_MPa",
-         {{"nominal", r.loads->max_contact_stress_MPa.value},
-          {"measured", std::isfinite(p_max) ? nlohmann::json(p_max) : nlohmann::json(nullptr)}}},
-        {"at_max_contact_stress_cam_angle_deg",
-         {{"nominal", r.loads->max_contact_stress_MPa.cam_angle_deg}, {"measured", p_at * 180.0 / kPi}}}};
+    DiscCamMeasured::Contact& c = j.contact.emplace();
+    c.model = "Hertz line contact of the roller on the measured profile's curvature (the moved profile Q = A + d n "
+              "differentiated over the cam angle), the nominal motion's contact force";
+    c.max_contact_stress_MPa = {r.loads->max_contact_stress_MPa.value, p_max};
+    c.at_max_contact_stress_cam_angle_deg = {r.loads->max_contact_stress_MPa.cam_angle_deg, p_at * 180.0 / kPi};
   } else {
-    not_computed.push_back({{"result", "the contact stress of the measured cam"},
-                            {"why", "no contact stress in this study (a roller follower with face_width_mm, material "
-                                    "and loads: dynamics or arm_dynamics)"}});
+    j.not_computed.push_back({"the contact stress of the measured cam",
+                              "no contact stress in this study (a roller follower with face_width_mm, material and "
+                              "loads: dynamics or arm_dynamics)"});
   }
-  j["not_computed"] = not_computed;
   return j;
 }
 
@@ -1511,7 +1505,7 @@ void FillResult(const Study& s, Result& r) {
                                 s.geometry.write,
                                 "the cam's axis of rotation (its bore); the file's header states its frame");
   }
-  if (!r.measured.is_null()) j.measured = r.measured;
+  j.measured = r.measured;
 }
 
 }  // namespace

@@ -446,6 +446,60 @@ struct MonteCarloRow {
   }
 };
 
+/// result.json's "measured" (with measured_profile): the measured cam's deviation (MeasuredBlock),
+/// the follower's displacement error it makes and, with a contact stress, the stress on it. The
+/// error is in µm of a translating follower, in arcsec of an oscillating one (the keys say which).
+struct DiscCamMeasured : MeasuredBlock {
+  struct Follower {
+    std::string model;
+    int angles = 0;
+    std::optional<double> displacement_error_max_um, displacement_error_max_arcsec;
+    double displacement_error_max_at_cam_angle_deg = 0;
+    std::optional<double> displacement_error_min_um, displacement_error_min_arcsec;
+    double displacement_error_min_at_cam_angle_deg = 0;
+    std::optional<double> displacement_error_peak_to_peak_um, displacement_error_peak_to_peak_arcsec;
+    std::optional<NominalMeasured> follower_range_mm, follower_range_deg;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("model", &model, Field().Desc("the model in words"));
+      a->Visit("angles", &angles, Field().Desc("analysis.angle_steps"));
+      const char* trans = "a translating follower's";
+      const char* osc = "an oscillating follower's";
+      a->Visit("displacement_error_max_um", &displacement_error_max_um, Field().Unit("µm").Desc(trans));
+      a->Visit("displacement_error_max_arcsec", &displacement_error_max_arcsec, Field().Unit("arcsec").Desc(osc));
+      a->Visit("displacement_error_max_at_cam_angle_deg", &displacement_error_max_at_cam_angle_deg, Field().Unit("deg"));
+      a->Visit("displacement_error_min_um", &displacement_error_min_um, Field().Unit("µm").Desc(trans));
+      a->Visit("displacement_error_min_arcsec", &displacement_error_min_arcsec, Field().Unit("arcsec").Desc(osc));
+      a->Visit("displacement_error_min_at_cam_angle_deg", &displacement_error_min_at_cam_angle_deg, Field().Unit("deg"));
+      a->Visit("displacement_error_peak_to_peak_um", &displacement_error_peak_to_peak_um,
+               Field().Unit("µm").Desc(trans));
+      a->Visit("displacement_error_peak_to_peak_arcsec", &displacement_error_peak_to_peak_arcsec,
+               Field().Unit("arcsec").Desc(osc));
+      a->Visit("follower_range_mm", &follower_range_mm, Field().Unit("mm").Desc("a translating follower's stroke"));
+      a->Visit("follower_range_deg", &follower_range_deg, Field().Unit("deg").Desc("an oscillating follower's swing"));
+    }
+  };
+  struct Contact {
+    std::string model;
+    NominalMeasuredOrInfinite max_contact_stress_MPa;
+    NominalMeasured at_max_contact_stress_cam_angle_deg;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("model", &model, Field().Desc("the model in words"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa, Field().Unit("MPa"));
+      a->Visit("at_max_contact_stress_cam_angle_deg", &at_max_contact_stress_cam_angle_deg, Field().Unit("deg"));
+    }
+  };
+  std::optional<Follower> follower;
+  std::optional<Contact> contact;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    MeasuredBlock::Serialize(a);
+    a->Visit("follower", &follower, Field().Desc("the follower's displacement error (not for an oscillating flat face)"));
+    a->Visit("contact", &contact, Field().Desc("with a contact stress: the stress on the measured profile"));
+  }
+};
+
 /// Every number the kind reports. "Follower unit" is mm (translating) or deg (oscillating);
 /// errors are at the roller centre in µm (l·Δξ for an oscillating follower).
 struct Result {
@@ -550,7 +604,7 @@ struct Result {
   /// inspection/profile.csv and its point count ("inspection").
   std::vector<std::pair<std::string, std::string>> inspection_files;
   std::vector<std::pair<std::string, long>> inspection_points;
-  nlohmann::json measured;  ///< result.json's "measured" (null: none)
+  std::optional<DiscCamMeasured> measured;  ///< result.json's "measured" (with measured_profile)
 
   /// result.json, declared once (studies/archive.h): Run ends by filling it from the numbers above
   /// (FillResult), Write writes it (WriteResult) and `camopt schema disc_cam --result` prints its
@@ -981,7 +1035,7 @@ struct Result {
     std::optional<MonteCarlo> monte_carlo;
     GeometryFilesBlock geometry_files;
     std::optional<InspectionBlock> inspection;
-    std::optional<nlohmann::json> measured;
+    std::optional<DiscCamMeasured> measured;
     std::optional<std::vector<std::string>> notes;
     template <typename Archive>
     void Serialize(Archive* a) {
@@ -1031,8 +1085,7 @@ struct Result {
       a->Visit("geometry_files", &geometry_files, Field().Desc("the cam's geometry files (profile), or why none"));
       a->Visit("inspection", &inspection, Field().Desc("with inspection: its points, files and datum"));
       a->Visit("measured", &measured,
-               Field().Desc("with measured_profile: the measured cam's deviation and its follower error").Schema(
-                   {{"type", "object"}}));
+               Field().Desc("with measured_profile: the measured cam's deviation and its follower error"));
       a->Visit("notes", &notes, Field().Desc("what was not computed or checked, and why"));
     }
   };

@@ -931,7 +931,8 @@ void RunCatalogue(const Study& st, const RunContext& ctx, Result& res) {
       // loads' peaks and the lives' equivalent loads are sampled over the revolution), |fine − half|.
       const int half = st.angle_steps / 2;
       if (half >= 12) {
-        const RatingsResult h = SolveRatings(st.ratings->in, st.ratings->limits, at_steps(half), ratio, start);
+        const RatingsResult h =
+            SolveRatings(st.ratings->in, st.ratings->limits, at_steps(half), ratio, start, &*res.ratings);
         RatingsResult& f = *res.ratings;
         auto error = [](double fine, double coarse) {
           return std::abs(fine - coarse) + kRatingSearchRelTolerance * fine;
@@ -968,10 +969,11 @@ constexpr int kMeasuredAngleSteps = 720;
 
 // The measured cam in the compliant model (model/lcr/transmission_error.h: the measured normal
 // deviation d(ψ) in every roller's gap of that cam) beside the nominal reducer.
-nlohmann::json MeasuredCam(const Study& st, Result& res) {
+LcrMeasured MeasuredCam(const Study& st, Result& res) {
   const MeasuredProfile& m = *st.measured;
   const Side side = st.measured_side;
-  nlohmann::json j = MeasuredJson(m, CamPart(st, side));
+  LcrMeasured j;
+  static_cast<MeasuredBlock&>(j) = MeasuredOf(m, CamPart(st, side));
   const lcr::Reducer<double>& r = st.reducer;
   lcr::Deviations<double> dev;
   const profile::PeriodicSpline shape = m.shape;
@@ -1035,9 +1037,8 @@ nlohmann::json MeasuredCam(const Study& st, Result& res) {
       }
     }
   } catch (const std::domain_error& e) {
-    j["not_computed"] = nlohmann::json::array(
-        {{{"result", "the transmission error and lost motion of the measured cam"},
-          {"why", std::string("the compliant model cannot carry the torque: ") + e.what()}}});
+    j.not_computed = {{"the transmission error and lost motion of the measured cam",
+                       std::string("the compliant model cannot carry the torque: ") + e.what()}};
     res.notes.push_back(std::string("measured_profile: ") + e.what());
     return j;
   }
@@ -1049,29 +1050,27 @@ nlohmann::json MeasuredCam(const Study& st, Result& res) {
   const auto [te_lo, te_hi] = range(te);
   const auto [rn_lo, rn_hi] = range(rot_nom);
   const auto [rm_lo, rm_hi] = range(rot_meas);
-  j["compliant"] = {
-      {"model", "the compliant load sharing of model/lcr/transmission_error.h (Palmgren contacts, input held) with the "
-                "measured normal deviation d(psi) in every roller's gap of the measured cam"},
-      {"angles", kMeasuredAngleSteps},
-      {"output_torque_Nm", torque / 1000.0},
-      {"transmission_error_peak_to_peak_arcsec", Finite((te_hi - te_lo) * as, "measured te")},
-      {"transmission_error_max_arcsec", te_hi * as},
-      {"transmission_error_min_arcsec", te_lo * as},
-      {"transmission_error_note", "the output angle of the reducer with the measured cam less the nominal's at the "
-                                  "same input angle and torque (input held)"},
-      {"output_rotation_peak_to_peak_arcsec", {{"nominal", (rn_hi - rn_lo) * as}, {"measured", (rm_hi - rm_lo) * as}}},
-      {"lost_motion_arcmin",
-       {{"nominal", *std::max_element(lm_nom.begin(), lm_nom.end()) * am},
-        {"measured", *std::max_element(lm_meas.begin(), lm_meas.end()) * am}}},
-      {"lost_motion_torque_Nm", t_lm / 1000.0},
-      {"max_roller_force_N", {{"nominal", force_nom}, {"measured", force_meas}}},
-      {"max_contact_stress_MPa", {{"nominal", stress_nom}, {"measured", stress_meas}}},
-      {"contact_stress_note", "Hertz line contact of each loaded roller of the measured cam at the load torque, on "
-                              "the measured profile's curvature (the moved profile P + d n differentiated over psi) "
-                              "with the compliant model's forces; the nominal's on the exact profile"}};
-  j["not_computed"] = nlohmann::json::array(
-      {{{"result", "the lives, efficiency and the 3D (crowned) contact of the measured cam"},
-        {"why", "those stages run on the nominal cams"}}});
+  LcrMeasured::Compliant& c = j.compliant.emplace();
+  c.model = "the compliant load sharing of model/lcr/transmission_error.h (Palmgren contacts, input held) with the "
+            "measured normal deviation d(psi) in every roller's gap of the measured cam";
+  c.angles = kMeasuredAngleSteps;
+  c.output_torque_Nm = torque / 1000.0;
+  c.transmission_error_peak_to_peak_arcsec = (te_hi - te_lo) * as;
+  c.transmission_error_max_arcsec = te_hi * as;
+  c.transmission_error_min_arcsec = te_lo * as;
+  c.transmission_error_note = "the output angle of the reducer with the measured cam less the nominal's at the "
+                              "same input angle and torque (input held)";
+  c.output_rotation_peak_to_peak_arcsec = {(rn_hi - rn_lo) * as, (rm_hi - rm_lo) * as};
+  c.lost_motion_arcmin = {*std::max_element(lm_nom.begin(), lm_nom.end()) * am,
+                          *std::max_element(lm_meas.begin(), lm_meas.end()) * am};
+  c.lost_motion_torque_Nm = t_lm / 1000.0;
+  c.max_roller_force_N = {force_nom, force_meas};
+  c.max_contact_stress_MPa = {stress_nom, stress_meas};
+  c.contact_stress_note = "Hertz line contact of each loaded roller of the measured cam at the load torque, on "
+                          "the measured profile's curvature (the moved profile P + d n differentiated over psi) "
+                          "with the compliant model's forces; the nominal's on the exact profile";
+  j.not_computed = {{"the lives, efficiency and the 3D (crowned) contact of the measured cam",
+                     "those stages run on the nominal cams"}};
   return j;
 }
 
@@ -1297,7 +1296,7 @@ Result::Json::Cam CamJson(const Study& st, const Result& res, Side s) {
     }
     cj.contact_length_mm = c.contact_length_mm;
     if (c.peak_half_width_mm > 0 || !std::isfinite(p))
-      cj.subsurface = SubsurfaceJson(p, c.peak_half_width_mm, st.material.poisson_ratio, c.subsurface_basis);
+      cj.subsurface = SubsurfaceOf(p, c.peak_half_width_mm, st.material.poisson_ratio, c.subsurface_basis);
     const auto& c3 = s == Side::kInput ? res.contact_input : res.contact_output;
     if (c3) {
       const lcr::ContactModel m = st.contact.options.model;
@@ -1507,37 +1506,7 @@ void FillResult(const Study& st, Result& res) {
     j.inspection = InspectionOf(st.inspection->spacing_mm, st.inspection->tolerance_um, res.inspection_points,
                                 st.geometry.write, "each cam's centre (its bore); each file's header states its frame");
   }
-  if (!res.measured.is_null()) j.measured = res.measured;
-}
-
-nlohmann::ordered_json Result::Json::SubsurfaceSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["peak_pressure_MPa"] = {{"type", "number"}, {"description", "p0 [MPa]"}};
-  p["half_width_mm"] = {{"type", "number"}, {"description", "b of the line contact [mm]"}};
-  for (const char* k : {"max_shear_MPa", "max_orthogonal_shear_MPa", "max_von_mises_MPa"})
-    p[k] = {{"type", "number"}, {"description", "[MPa]"}};
-  for (const char* k : {"max_shear_depth_mm", "max_orthogonal_shear_depth_mm", "max_orthogonal_shear_offset_mm",
-                        "max_von_mises_depth_mm"})
-    p[k] = {{"type", "number"}, {"description", "[mm]"}};
-  p["poisson_ratio"] = {{"type", "number"}};
-  p["basis"] = {{"type", "string"}};
-  return {{"type", {"object", "null"}},
-          {"description", "Johnson 1985, eq. 4.50 ff.; {} when no roller carries load"},
-          {"properties", p}};
-}
-
-nlohmann::ordered_json Result::Json::MeasuredSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson p = ojson::object();
-  p["part"] = {{"enum", {"input_cam", "output_cam"}}};
-  p["iso1101_profile_deviation_um"] = {{"type", "number"}, {"description", "[µm]"}};
-  p["compliant"] = {{"type", "object"},
-                    {"description", "the transmission error, lost motion, roller force and contact stress with the "
-                                    "measured cam beside the nominal (absent when the compliant model cannot carry "
-                                    "the torque)"}};
-  p["not_computed"] = {{"type", "array"}, {"items", {{"type", "object"}}}};
-  return {{"type", "object"}, {"properties", p}};
+  j.measured = res.measured;
 }
 
 namespace {

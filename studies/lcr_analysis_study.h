@@ -494,6 +494,45 @@ struct CamResult {
   std::string subsurface_basis;
 };
 
+/// result.json's "measured" (with measured_profile): the measured cam's deviation (MeasuredBlock)
+/// and, when the compliant model carries the torque, the reducer with it beside the nominal.
+struct LcrMeasured : MeasuredBlock {
+  struct Compliant {
+    std::string model, transmission_error_note, contact_stress_note;
+    int angles = 0;
+    double output_torque_Nm = 0, transmission_error_peak_to_peak_arcsec = 0, transmission_error_max_arcsec = 0,
+           transmission_error_min_arcsec = 0, lost_motion_torque_Nm = 0;
+    NominalMeasured output_rotation_peak_to_peak_arcsec, lost_motion_arcmin, max_roller_force_N;
+    NominalMeasuredOrInfinite max_contact_stress_MPa;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("model", &model, Field().Desc("the model in words"));
+      a->Visit("angles", &angles, Field().Desc("input angles over one input revolution"));
+      a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("load.output_torque_Nm"));
+      a->Visit("transmission_error_peak_to_peak_arcsec", &transmission_error_peak_to_peak_arcsec,
+               Field().Unit("arcsec").Desc("of the output angle with the measured cam less the nominal's"));
+      a->Visit("transmission_error_max_arcsec", &transmission_error_max_arcsec, Field().Unit("arcsec"));
+      a->Visit("transmission_error_min_arcsec", &transmission_error_min_arcsec, Field().Unit("arcsec"));
+      a->Visit("transmission_error_note", &transmission_error_note, Field().Desc("its definition"));
+      a->Visit("output_rotation_peak_to_peak_arcsec", &output_rotation_peak_to_peak_arcsec, Field().Unit("arcsec"));
+      a->Visit("lost_motion_arcmin", &lost_motion_arcmin, Field().Unit("arcmin").Desc("at ± lost_motion_torque_Nm"));
+      a->Visit("lost_motion_torque_Nm", &lost_motion_torque_Nm, Field().Unit("N·m"));
+      a->Visit("max_roller_force_N", &max_roller_force_N, Field().Unit("N").Desc("on the measured cam's rollers"));
+      a->Visit("max_contact_stress_MPa", &max_contact_stress_MPa,
+               Field().Unit("MPa").Desc("Hertz line contact on the measured cam's rollers"));
+      a->Visit("contact_stress_note", &contact_stress_note, Field().Desc("how the stresses are found"));
+    }
+  };
+  std::optional<Compliant> compliant;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    MeasuredBlock::Serialize(a);
+    a->Visit("compliant", &compliant,
+             Field().Desc("the transmission error, lost motion, roller force and contact stress with the measured cam "
+                          "beside the nominal (absent when the compliant model cannot carry the torque)"));
+  }
+};
+
 /// Every number the kind reports; the series are those of the forces stage.
 struct Result {
   double speed_ratio = 0, cam_speed_ratio = 0, output_speed_ratio = 0, outer_diameter_mm = 0;
@@ -513,7 +552,7 @@ struct Result {
   /// inspection/CAM.csv by part name and their point counts ("inspection").
   std::vector<std::pair<std::string, std::string>> inspection_files;
   std::vector<std::pair<std::string, long>> inspection_points;
-  nlohmann::json measured;  ///< result.json's "measured" (null: none)
+  std::optional<LcrMeasured> measured;  ///< result.json's "measured" (with measured_profile)
   /// Transmission error and lost motion from the tolerances (model/lcr/transmission_error.h).
   std::optional<lcr::TransmissionErrorResult> transmission_error;
   std::vector<std::string> notes;
@@ -561,7 +600,7 @@ struct Result {
       std::optional<double> max_contact_stress_MPa, contact_stress_limit_MPa;
       std::optional<bool> contact_stress_ok;
       std::optional<double> contact_length_mm;
-      std::optional<nlohmann::json> subsurface;  ///< SubsurfaceJson's block (null: an undercut peak)
+      std::optional<SubsurfaceOut> subsurface;  ///< SubsurfaceOf's block (null: an undercut peak)
       std::optional<std::string> contact_model;
       std::optional<bool> edge_loaded;
       std::optional<double> worst_input_angle_deg, slice_width_mm, interpolation_error_MPa;
@@ -608,7 +647,7 @@ struct Result {
                  Field(n).Unit("mm").Desc("the rollers' contact length (stress stage)"));
         a->Visit("subsurface", &subsurface,
                  Field().Desc("the subsurface stresses under the peak pressure (stress stage, a loaded contact; null: "
-                              "an undercut peak)").Schema(SubsurfaceSchema()));
+                              "an undercut peak; {}: no roller carries load)"));
         a->Visit("contact_model", &contact_model,
                  Field().OneOf({"line", "slices", "half_space"}).Desc("the finite-length contact model (with contact)"));
         a->Visit("edge_loaded", &edge_loaded,
@@ -750,7 +789,7 @@ struct Result {
     std::vector<std::string> notes;
     std::optional<GeometryFilesBlock> geometry_files;  ///< GeometryFilesOf's block
     std::optional<InspectionBlock> inspection;
-    std::optional<nlohmann::json> measured;            ///< MeasuredJson's block and the compliant model's
+    std::optional<LcrMeasured> measured;
     template <typename Archive>
     void Serialize(Archive* a) {
       const Field n = Field().NullWhenNotFinite();
@@ -801,13 +840,8 @@ struct Result {
       a->Visit("geometry_files", &geometry_files, Field().Desc("the cams' geometry files (with the profile stage)"));
       a->Visit("inspection", &inspection, Field().Desc("the inspection files (with inspection)"));
       a->Visit("measured", &measured,
-               Field().Desc("the measured cam and the compliant model with it (with measured_profile)")
-                   .Schema(MeasuredSchema()));
+               Field().Desc("the measured cam and the compliant model with it (with measured_profile)"));
     }
-    /// The schemas of the raw blocks: the keys camopt reads from them (report.html, datasheet.html,
-    /// `camopt export`, the convergence headlines), the rest open (lcr_analysis_study.cc).
-    static nlohmann::ordered_json SubsurfaceSchema();
-    static nlohmann::ordered_json MeasuredSchema();
   };
   Json json;
   template <typename Archive>

@@ -156,7 +156,7 @@ void AddContact3DJson(const Study& s, Result& r) {
       // The worst slice as a line contact of its own peak pressure, b = 2 p0 R'/E* (model/contact/hertz.h).
       const double b_mm = contact::LineContactHalfWidthFromPeakPressure(
           d.max_contact_stress_MPa, d.stress_radius_mm[size_t(d.worst_angle)], s.base.material.composite_modulus_MPa());
-      side.subsurface = SubsurfaceJson(d.max_contact_stress_MPa, b_mm, s.base.material.poisson_ratio,
+      side.subsurface = SubsurfaceOf(d.max_contact_stress_MPa, b_mm, s.base.material.poisson_ratio,
                                        "the worst slice of the slices model taken as a line contact of its peak "
                                        "pressure and half-width b = 2 p0 R'/E* (frictionless, homogeneous "
                                        "half-spaces, Johnson 1985 eq. 4.50 ff.)");

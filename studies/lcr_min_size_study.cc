@@ -725,7 +725,7 @@ void FillResult(const Study& s, Result& result) {
     side.undercut_margin_mm = k.undercut_margin_mm[i];
     side.roller_gap_mm = k.roller_gap_mm[i];
     if (k.peak_half_width_mm[i] > 0 || !std::isfinite(k.max_stress_MPa[i]))
-      side.subsurface = SubsurfaceJson(
+      side.subsurface = SubsurfaceOf(
           k.max_stress_MPa[i], k.peak_half_width_mm[i], s.base.material.poisson_ratio,
           "Hertz line contact of the cam's peak pressure in the dense check, frictionless, homogeneous "
           "half-spaces (Johnson 1985, eq. 4.50 ff.)");

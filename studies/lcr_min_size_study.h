@@ -27,6 +27,7 @@
 #include "sizing/lcr_sizing3d.h"
 #include "studies/backend_input.h"
 #include "studies/bearing_life_io.h"
+#include "studies/contact_fatigue_input.h"
 #include "studies/archive.h"
 #include "studies/input.h"
 #include "studies/lcr_contact_input.h"
@@ -488,7 +489,7 @@ struct SizingLife {
 struct BestSide {
   CandidateSide sizes;  ///< its members are the side's own
   double max_contact_stress_MPa = 0, max_roller_force_N = 0, undercut_margin_mm = 0, roller_gap_mm = 0;
-  std::optional<nlohmann::json> subsurface;
+  std::optional<SubsurfaceOut> subsurface;
   template <typename Archive>
   void Serialize(Archive* a) {
     sizes.Serialize(a);
@@ -501,7 +502,7 @@ struct BestSide {
     a->Visit("roller_gap_mm", &roller_gap_mm,
              Field().NullWhenNotFinite().Unit("mm").Desc("the gap between neighbouring rollers"));
     a->Visit("subsurface", &subsurface,
-             Field().Schema({{"type", {"object", "null"}}}).Desc(
+             Field().Desc(
                  "the subsurface stresses under the cam's peak pressure (as lcr_analysis gives them; null: an "
                  "undercut peak)"));
   }
@@ -511,7 +512,7 @@ struct Contact3DSide {
   double max_contact_stress_MPa = 0;
   bool edge_loaded = false;
   double slice_width_mm = 0, interpolation_error_MPa = 0;
-  std::optional<nlohmann::json> subsurface;
+  std::optional<SubsurfaceOut> subsurface;
   std::optional<double> overload_edge_margin, edge_margin;
   std::optional<bool> overload_edge_loaded;
   template <typename Archive>
@@ -523,7 +524,7 @@ struct Contact3DSide {
     a->Visit("interpolation_error_MPa", &interpolation_error_MPa,
              Field().NullWhenNotFinite().Unit("MPa").Desc("of the peak read between slices"));
     a->Visit("subsurface", &subsurface,
-             Field().Schema({{"type", {"object", "null"}}}).Desc(
+             Field().Desc(
                  "the worst slice taken as a line contact of its peak pressure: its subsurface stresses"));
     a->Visit("overload_edge_margin", &overload_edge_margin,
              Field().NullWhenNotFinite().Desc("with load.overload_torque_Nm: the end margin at that torque"));
@@ -722,8 +723,7 @@ struct Result : sizing::LcrSearchOutcome {
   std::optional<objectives::Verification> robust_verification;
 
   /// result.json, declared (studies/archive.h): Run fills it (FillResult; AddContact3DJson and
-  /// RobustJson add their parts). Raw JSON inside it: the subsurface blocks (SubsurfaceJson, shared
-  /// with lcr_analysis) and the crowning (CrowningJson, by its type).
+  /// RobustJson add their parts). Raw JSON inside it: the crowning (CrowningJson, by its type).
   struct Json {
     using CandidateSide = lcr_min_size::CandidateSide;
     using SizingLife = lcr_min_size::SizingLife;

@@ -214,34 +214,33 @@ MeasuredProfile ReadMeasuredProfile(const Node& node, const InspectedPart& part,
   return m;
 }
 
-nlohmann::json MeasuredJson(const MeasuredProfile& m, const InspectedPart& part) {
+MeasuredBlock MeasuredOf(const MeasuredProfile& m, const InspectedPart& part) {
   auto where = [&](int i) {
-    return nlohmann::json{{"x_mm", m.points[size_t(i)].x()},
-                          {"y_mm", m.points[size_t(i)].y()},
-                          {"arc_length_mm", m.arc_mm[size_t(i)]},
-                          {"row", i + 1}};
+    return DeviationAt{m.points[size_t(i)].x(), m.points[size_t(i)].y(), m.arc_mm[size_t(i)], long(i) + 1};
   };
-  return {{"part", m.part},
-          {"file", std::filesystem::path(m.file).filename().string()},
-          {"kind", m.kind},
-          {"frame", part.frame},
-          {"points", m.deviation_mm.size()},
-          {"profile_length_mm", part.profile.length_mm()},
-          {"largest_gap_mm", m.largest_gap_mm},
-          {"iso1101_profile_deviation_um", m.zone.zone_width_mm * 1e3},
-          {"iso1101_note",
-           "ISO 1101 profile of a line: the width of the smallest zone symmetric about the exact profile "
-           "(datum: " + part.datum + ") that holds every point, 2 max|d|"},
-          {"max_deviation_um", m.zone.max_mm * 1e3},
-          {"max_deviation_at", where(m.zone.argmax)},
-          {"min_deviation_um", m.zone.min_mm * 1e3},
-          {"min_deviation_at", where(m.zone.argmin)},
-          {"mean_deviation_um", m.zone.mean_mm * 1e3},
-          {"rms_deviation_um", m.zone.rms_mm * 1e3},
-          {"deviation_sign", "> 0: material added (outside the exact profile)"},
-          {"interpolation",
-           "periodic cubic spline of the normal deviation over the profile parameter through the points "
-           "(equal parameters averaged)"}};
+  MeasuredBlock b;
+  b.part = m.part;
+  b.file = std::filesystem::path(m.file).filename().string();
+  b.kind = m.kind;
+  b.frame = part.frame;
+  b.points = long(m.deviation_mm.size());
+  b.profile_length_mm = part.profile.length_mm();
+  b.largest_gap_mm = m.largest_gap_mm;
+  b.iso1101_profile_deviation_um = m.zone.zone_width_mm * 1e3;
+  b.iso1101_note =
+      "ISO 1101 profile of a line: the width of the smallest zone symmetric about the exact profile (datum: " +
+      part.datum + ") that holds every point, 2 max|d|";
+  b.max_deviation_um = m.zone.max_mm * 1e3;
+  b.max_deviation_at = where(m.zone.argmax);
+  b.min_deviation_um = m.zone.min_mm * 1e3;
+  b.min_deviation_at = where(m.zone.argmin);
+  b.mean_deviation_um = m.zone.mean_mm * 1e3;
+  b.rms_deviation_um = m.zone.rms_mm * 1e3;
+  b.deviation_sign = "> 0: material added (outside the exact profile)";
+  b.interpolation =
+      "periodic cubic spline of the normal deviation over the profile parameter through the points (equal "
+      "parameters averaged)";
+  return b;
 }
 
 InspectionBlock InspectionOf(double spacing_mm, double tolerance_um,

@@ -91,9 +91,88 @@ struct MeasuredProfile {
 /// naming the study file, the JSON path, the CSV file and line, what was expected and found.
 MeasuredProfile ReadMeasuredProfile(const Node& node, const InspectedPart& part, double max_gap_mm);
 
+/// Where a deviation extreme is: the measured point, its arc length along the exact profile and
+/// its row in the measurement file.
+struct DeviationAt {
+  double x_mm = 0, y_mm = 0, arc_length_mm = 0;
+  long row = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("x_mm", &x_mm, Field().Unit("mm").Desc("in the part frame"));
+    a->Visit("y_mm", &y_mm, Field().Unit("mm").Desc("in the part frame"));
+    a->Visit("arc_length_mm", &arc_length_mm, Field().Unit("mm").Desc("from the exact profile's start"));
+    a->Visit("row", &row, Field().Desc("the point's data row in the measurement file (1: the first)"));
+  }
+};
+
+/// A headline of the nominal part beside the same headline as measured. `kNullable`: a number
+/// that may be infinite (a Hertz stress on a profile that is not convex there, an unlimited life)
+/// is written null; otherwise a number that is not finite stops the write (ResultWriter).
+template <bool kNullable>
+struct NominalMeasuredT {
+  double nominal = 0, measured = 0;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    const Field f = kNullable ? Field().NullWhenNotFinite() : Field();
+    a->Visit("nominal", &nominal, Field(f).Desc(kNullable ? "the nominal part's (null: infinite)" : "the nominal part's"));
+    a->Visit("measured", &measured, Field(f).Desc(kNullable ? "the measured part's (null: infinite)" : "the measured part's"));
+  }
+};
+using NominalMeasured = NominalMeasuredT<false>;
+using NominalMeasuredOrInfinite = NominalMeasuredT<true>;
+
+/// A result of the measured part that was not computed, and why.
+struct NotComputedRow {
+  std::string result, why;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("result", &result, Field().Desc("what is not computed"));
+    a->Visit("why", &why, Field().Desc("why not"));
+  }
+};
+
 /// result.json's "measured" without the kind's headlines: part, file, kind, points, the ISO 1101
-/// deviation, the largest and smallest deviation and where, mean, RMS, the interpolation.
-nlohmann::json MeasuredJson(const MeasuredProfile& m, const InspectedPart& part);
+/// deviation, the largest and smallest deviation and where, mean, RMS, the interpolation, and
+/// what was not computed for the measured part. Each kind's block derives from it and visits its
+/// own headlines after these (CycloidMeasured, LcrMeasured, DiscCamMeasured).
+struct MeasuredBlock {
+  std::string part, file, kind, frame;
+  long points = 0;
+  double profile_length_mm = 0, largest_gap_mm = 0, iso1101_profile_deviation_um = 0;
+  std::string iso1101_note;
+  double max_deviation_um = 0;
+  DeviationAt max_deviation_at;
+  double min_deviation_um = 0;
+  DeviationAt min_deviation_at;
+  double mean_deviation_um = 0, rms_deviation_um = 0;
+  std::string deviation_sign, interpolation;
+  std::vector<NotComputedRow> not_computed;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("part", &part, Field().Desc("measured_profile.part"));
+    a->Visit("file", &file, Field().Desc("the measurement file's name"));
+    a->Visit("kind", &kind, Field().OneOf({"points", "normal_deviation"}).Desc("measured_profile.kind"));
+    a->Visit("frame", &frame, Field().Desc("the part frame the points are in"));
+    a->Visit("points", &points, Field().Desc("the measured points"));
+    a->Visit("profile_length_mm", &profile_length_mm, Field().Unit("mm").Desc("the exact profile's length"));
+    a->Visit("largest_gap_mm", &largest_gap_mm,
+             Field().Unit("mm").Desc("the largest arc between neighbouring points"));
+    a->Visit("iso1101_profile_deviation_um", &iso1101_profile_deviation_um,
+             Field().Unit("µm").Desc("ISO 1101 profile of a line: 2 max|d|"));
+    a->Visit("iso1101_note", &iso1101_note, Field().Desc("the zone and its datum in words"));
+    a->Visit("max_deviation_um", &max_deviation_um, Field().Unit("µm").Desc("the largest signed normal deviation d"));
+    a->Visit("max_deviation_at", &max_deviation_at, Field().Desc("its point"));
+    a->Visit("min_deviation_um", &min_deviation_um, Field().Unit("µm").Desc("the smallest signed normal deviation d"));
+    a->Visit("min_deviation_at", &min_deviation_at, Field().Desc("its point"));
+    a->Visit("mean_deviation_um", &mean_deviation_um, Field().Unit("µm").Desc("the points' mean d"));
+    a->Visit("rms_deviation_um", &rms_deviation_um, Field().Unit("µm").Desc("the points' RMS d"));
+    a->Visit("deviation_sign", &deviation_sign, Field().Desc("the sign convention of d"));
+    a->Visit("interpolation", &interpolation, Field().Desc("how d(t) is interpolated between the points"));
+    a->Visit("not_computed", &not_computed, Field().Desc("the results not computed for the measured part, and why"));
+  }
+};
+/// The common part of "measured" (MeasuredBlock) for `m` on `part`.
+MeasuredBlock MeasuredOf(const MeasuredProfile& m, const InspectedPart& part);
 
 /// result.json's "inspection": spacing, tolerance and each part's file and point count, the datum
 /// the files are measured from; without geometry files, why there are none.

@@ -18,14 +18,14 @@ namespace {
 /// The torque at which a ratio falling with the torque (a life over the rated life, a capacity over
 /// its demand) is 1: RatedTorqueForLife (model/common/catalogue_ratings.h), its error named.
 template <typename F>
-double SolveTorqueForRatio(const F& ratio, double start_Nm, const std::string& what) {
+double SolveTorqueForRatio(const F& ratio, double start_Nm, const std::string& what, double first_step = 2.0) {
   try {
     // A model's loads carry its solvers' tolerances (the LTCA: compatibility 1e-3, contact 1e-4; its
     // maxima jump where a cell or a pair enters the contact), and a rating its discretisation error
     // (1e-4 and more of the torque, estimated_error): a bracket of kRatingSearchRelTolerance · T is
     // inside both, and a narrower one only chases the solvers' noise (the cycloid catalogue's momentary
     // torque took 31 analyses to a 1e-9 bracket, 9 to 1e-6).
-    return RatedTorqueForLife(ratio, 1.0, start_Nm, kRatingSearchRelTolerance);
+    return RatedTorqueForLife(ratio, 1.0, start_Nm, kRatingSearchRelTolerance, first_step);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(what + ": " + e.what());
   }
@@ -57,7 +57,8 @@ double ParabolicPeak(const std::vector<double>& f) {
 }
 
 RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
-                           const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm) {
+                           const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm,
+                           const RatingsResult* near) {
   std::map<double, RatingPoint> memo;
   RatingsResult r;
   auto eval = [&](double t) -> const RatingPoint& {
@@ -69,8 +70,14 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
     return it->second;
   };
   // Rated torque: the shortest L10 at the rated speed equals the rated life.
+  // From `near`'s torque with a small first step (kNearRatingStep) when that rating is known.
+  auto start = [&](const std::optional<double>& known, double otherwise) {
+    return known && *known > 0 ? std::pair{*known, kNearRatingStep} : std::pair{otherwise, 2.0};
+  };
+  const auto [rated_start, rated_step] =
+      start(near ? std::optional<double>(near->rated_torque_Nm) : std::nullopt, start_torque_Nm);
   r.rated_torque_Nm = SolveTorqueForRatio([&](double t) { return eval(t).shortest_L10h / in.rated_life_h; },
-                                          start_torque_Nm, "the rated life");
+                                          rated_start, "the rated life", rated_step);
   r.rated_by = eval(r.rated_torque_Nm).shortest;
   r.rated_L10h = eval(r.rated_torque_Nm).shortest_L10h;
   // Peak (acceleration) torque: the contact limits, on the sampled maxima or (`vertex`) on their
@@ -86,8 +93,9 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
     return c;
   };
   if (limits.contact_stress_MPa || limits.roller_load_N) {
-    r.peak_torque_Nm = SolveTorqueForRatio([&](double t) { return peak(t).ratio; }, r.rated_torque_Nm,
-                                           "the peak torque's limits");
+    const auto [peak_start, peak_step] = start(near ? near->peak_torque_Nm : std::nullopt, r.rated_torque_Nm);
+    r.peak_torque_Nm = SolveTorqueForRatio([&](double t) { return peak(t).ratio; }, peak_start,
+                                           "the peak torque's limits", peak_step);
     r.peak_by = peak(*r.peak_torque_Nm).by;
     // The sampled maxima lie below the true ones by up to the parabola's rise between samples: the
     // peak torque solved again on the vertex maxima gives the sampling's share of its error.
@@ -95,7 +103,7 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
     if (at_peak.max_contact_stress_vertex_MPa > 0 || at_peak.max_roller_load_vertex_N > 0) {
       r.peak_sampling_error_Nm = std::abs(
           *r.peak_torque_Nm - SolveTorqueForRatio([&](double t) { return peak(t, true).ratio; }, *r.peak_torque_Nm,
-                                                  "the peak torque's limits between samples"));
+                                                  "the peak torque's limits between samples", kNearRatingStep));
     }
   } else {
     r.peak_note = "not computed: no limits.contact_stress_MPa or limits.roller_load_N";
@@ -110,8 +118,10 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
   bool any_static = false;
   for (const RatedStatic& b : eval(r.rated_torque_Nm).statics) any_static = any_static || b.static_rating_N > 0;
   if (any_static) {
-    r.momentary_torque_Nm = SolveTorqueForRatio([&](double t) { return momentary(t).ratio; }, r.rated_torque_Nm,
-                                                "the bearings' static ratings");
+    const auto [momentary_start, momentary_step] =
+        start(near ? near->momentary_torque_Nm : std::nullopt, r.rated_torque_Nm);
+    r.momentary_torque_Nm = SolveTorqueForRatio([&](double t) { return momentary(t).ratio; }, momentary_start,
+                                                "the bearings' static ratings", momentary_step);
     r.momentary_by = momentary(*r.momentary_torque_Nm).by;
     if (in.momentary_peaks)
       r.momentary_peaks_allowed =

@@ -45,6 +45,11 @@ double ParabolicPeak(const std::vector<double>& periodic_series);
 /// torque is within it of a crossing of the model's computed ratio, and the kinds add it to the
 /// ratings' estimated errors.
 inline constexpr double kRatingSearchRelTolerance = 1e-6;
+/// The first bracket factor of a rating search that starts from a torque known to be near its
+/// answer (the same rating of a neighbouring model: SolveRatings' `near`; the peak torque on its
+/// vertex maxima from the sampled one): 1 %, about the discretisation errors of the ratings, so the
+/// answer is bracketed in one or two runs (the factor squares while it is not: 1.01, 1.02, 1.04, …).
+inline constexpr double kNearRatingStep = 1.01;
 
 /// The limits the peak torque is read from (the study's "limits"); absent: not a limit.
 struct PeakLimits {
@@ -85,11 +90,14 @@ void SolveAllowableSpeed(const std::function<double(double, double)>& loss_W, co
 
 /// Solves the ratings: `at(T)` the model at output torque T [N·m] (asked once per torque: the
 /// searches' repeats are remembered here), `ratio` input turns per output turn, `start_torque_Nm`
-/// where the searches start. Each torque is the evaluated one closest to its target
+/// where the searches start; with `near` (the ratings of a neighbouring model: the same drive on
+/// fewer crank angles or a coarser grid, for their errors) each search starts at its rating there
+/// with the bracket factor kNearRatingStep. Each torque is the evaluated one closest to its target
 /// (RatedTorqueForLife, model/common/catalogue_ratings.h).
 /// @throws std::invalid_argument when a rating has no torque that reaches it (the message says why).
 RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
-                           const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm);
+                           const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm,
+                           const RatingsResult* near = nullptr);
 
 /// The JSON Schema of RatingsKeys::ratings (result.json's ratings of cycloid_ltca and lcr_analysis):
 /// the keys camopt reads (the datasheet's rows among them).

@@ -230,6 +230,36 @@ TEST(CatalogueRatings, RatedTorqueEvaluatesEachTorqueOnce) {
   }
 }
 
+TEST(CatalogueRatings, RatedTorqueFromANearGuessBracketsWithinItsFirstStep) {
+  // A guess within 0.3 % of the answer (the same rating of a neighbouring model) with the first
+  // factor 1.01: its first bracket is [guess, 1.01 guess] or [guess / 1.01, guess], so no torque
+  // outside it is run; a guess 30 % off with that step still finds the answer (the factor squares:
+  // 1.01, 1.02, 1.04, 1.08, 1.17, 1.37, 1.88, 2), above or below. No two torques run lie closer
+  // than half the tolerance (Brent's smallest step), on a power law and on one with solver noise.
+  const double t_star = 123.4;
+  auto smooth = [&](double t) { return 5000.0 * std::pow(t_star / t, 10.0 / 3.0); };
+  auto noisy = [&](double t) { return smooth(t) * (1.0 + 1e-5 * std::sin(1e7 * t)); };
+  for (int law = 0; law < 2; ++law) {
+    for (double guess : {t_star * 1.003, t_star / 1.003, t_star * 1.3, t_star / 1.3}) {
+      std::vector<double> torques;
+      const double t = RatedTorqueForLife(
+          [&](double x) { torques.push_back(x); return law == 0 ? smooth(x) : noisy(x); }, 5000.0, guess, 1e-6, 1.01);
+      ExpectRel(t, t_star, law == 0 ? 1e-6 : 4e-6);
+      if (std::abs(guess / t_star - 1.0) < 0.01) {
+        for (double x : torques)
+          EXPECT_TRUE(x >= guess / 1.01 * (1 - 1e-15) && x <= guess * 1.01 * (1 + 1e-15))
+              << "torque " << x << " outside the first bracket, guess " << guess << ", law " << law;
+      }
+      std::sort(torques.begin(), torques.end());
+      for (size_t i = 1; i < torques.size(); ++i)
+        EXPECT_GE(torques[i] - torques[i - 1], 0.5e-6 * torques[i] * (1 - 1e-9))
+            << "guess " << guess << ", law " << law;
+    }
+  }
+  for (double bad : {1.0, 0.5, 2.5, std::nan("")})
+    ExpectRejects([&] { RatedTorqueForLife(smooth, 5000.0, 100.0, 1e-6, bad); }, "first_step");
+}
+
 TEST(CatalogueRatings, RatedTorqueAcceptsInfiniteAndZeroLives) {
   // No load below 10 N·m (life +∞), broken above 1000 N·m (life 0), a power law between.
   auto life = [](double t) { return t < 10.0 ? kInf : (t > 1000.0 ? 0.0 : 1e4 * std::pow(100.0 / t, 3.0)); };

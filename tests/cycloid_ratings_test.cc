@@ -78,7 +78,9 @@ TEST(CycloidRatings, EachRatingHoldsWhenTheKindIsRunAtThatTorque) {
   const CliRun at_peak = RunStudy(AtTorque(study, peak, 15.0), "at-peak");
   ASSERT_EQ(at_peak.exit_code, 0) << at_peak.stderr_text;
   EXPECT_EQ(r["ratings"]["peak_limited_by"], "limits.contact_stress_MPa");
-  EXPECT_NEAR(at_peak.result["max_contact_stress_MPa"].get<double>(), 2000.0, 1e-8 * 2000.0);
+  // Within the search's bracket, kRatingSearchRelTolerance (1e-6) of the torque: the Hertz peak
+  // grows as T^(1/2) at most (less as the contact spreads), so within 0.5e-6 of the limit.
+  EXPECT_NEAR(at_peak.result["max_contact_stress_MPa"].get<double>(), 2000.0, 0.5e-6 * 2000.0);
   // Momentary torque: the limiting bearing's s0 = C0 / P0max is 1 there, the other's above.
   const CliRun at_momentary = RunStudy(AtTorque(study, momentary, 15.0), "at-momentary");
   ASSERT_EQ(at_momentary.exit_code, 0) << at_momentary.stderr_text;

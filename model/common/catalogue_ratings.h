@@ -346,23 +346,31 @@ inline constexpr int kRatedTorqueMaxBracketSteps = 100;
 /// in T (any life law: a bearing's (C/P)^p with loads from a load-sharing model, a Miner sum of
 /// several parts). Design-notes §4: solve, do not scale — T (L(T)/L_target)^(1/p) is exact only for
 /// a pure power law.
-/// Method: from the guess, the bracket doubles (life above the target) or halves (at or below)
-/// until life_h(lo) > target >= life_h(hi); then regula falsi (Illinois) on −ln life_h against
-/// ln T, which is increasing (bisection where an end's value is infinite), until the life is within
-/// 1e-13 (relative) of the target or the bracket is below rel_tolerance·hi. Returns the evaluated
+/// Method: from the guess, the bracket grows by `first_step` (life above the target) or shrinks
+/// by it (at or below), the step squared each time up to a factor 2 (2, 2, … by default: doubling or
+/// halving), until life_h(lo) > target >= life_h(hi); a guess known to be near the answer (the same
+/// rating of a neighbouring model) starts with a small step and is bracketed in one or two runs;
+/// then regula falsi (Illinois) on −ln life_h against ln T, which is increasing (bisection where an
+/// end's value is infinite; no point nearer an end than rel_tolerance·hi/2), until the life is
+/// within 1e-13 (relative) of the target or the bracket is below rel_tolerance·hi. Returns the evaluated
 /// torque whose life is nearest the target (within the last bracket); no torque is evaluated twice.
 /// A life of +∞ (no load) or 0 is allowed; on a non-monotone law it returns one crossing.
 /// @param life_h callable double(double): the life [h] at torque T [N·m]; >= 0, not NaN.
 /// @param target_life_h [h], finite and > 0.  @param torque_guess_Nm where to start, finite > 0.
+/// @param first_step the bracket's first factor, in (1, 2].
 /// @throws std::invalid_argument for a bad target or guess, a life that is NaN or negative, or a
 /// life that never crosses the target within 2^100 of the guess (it stays above: the life never
 /// falls to the target; at or below: it never reaches it).
 template <typename LifeFn>
 double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double torque_guess_Nm,
-                          double rel_tolerance = kRatedTorqueRelTolerance) {
+                          double rel_tolerance = kRatedTorqueRelTolerance, double first_step = 2.0) {
   using namespace catalogue_ratings_internal;
   CheckPositive("target_life_h", target_life_h);
   CheckPositive("torque_guess_Nm", torque_guess_Nm);
+  if (!(first_step > 1.0 && first_step <= 2.0))
+    throw std::invalid_argument("catalogue ratings: first_step must be in (1, 2], found " + std::to_string(first_step));
+  double step = first_step;
+  auto next_step = [&] { step = std::min(2.0, step * step); };
   auto life = [&](double t) {
     const double l = life_h(t);
     if (std::isnan(l) || l < 0.0) {
@@ -385,7 +393,8 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
                "falls to the target)",
                life_hi);
       lo = hi, life_lo = life_hi;
-      hi *= 2.0;
+      hi *= step;
+      next_step();
       life_hi = life(hi);
       if (!(life_hi > target_life_h)) break;
     }
@@ -397,7 +406,8 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
                "never reaches the target)",
                life_lo);
       hi = lo, life_hi = life_lo;
-      lo *= 0.5;
+      lo /= step;
+      next_step();
       life_lo = life(lo);
       if (life_lo > target_life_h) break;
     }
@@ -421,8 +431,15 @@ double RatedTorqueForLife(const LifeFn& life_h, double target_life_h, double tor
     if (t_b - t_a <= rel_tolerance * t_b) break;
     double x = std::isfinite(ga) && std::isfinite(gb) && gb > ga ? (a * gb - b * ga) / (gb - ga) : 0.5 * (a + b);
     if (!(x > a && x < b)) x = 0.5 * (a + b);
-    const double t = std::exp(x);
+    double t = std::exp(x);
+    // A point within half the tolerance of an end is moved to half the tolerance from it (Brent's
+    // smallest step): the interpolation then says the crossing is within that distance of the end,
+    // and the step across it ends the search, where a point next to the end would only repeat it.
+    const double min_step = 0.5 * rel_tolerance * t_b;
+    if (t - t_a < min_step) t = t_a + min_step;
+    else if (t_b - t < min_step) t = t_b - min_step;
     if (!(t > t_a && t < t_b)) break;  // the bracket is a few ulps wide
+    x = std::log(t);
     const double gx = g_of(life(t));
     if (std::abs(gx) < best_g) best = t, best_g = std::abs(gx);
     if (std::abs(gx) <= 1e-13) return t;
