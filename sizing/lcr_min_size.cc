@@ -369,43 +369,66 @@ std::map<std::string, LimitSlope> LimitSlopes(const LcrSizingSpec& spec, const L
 }
 
 std::optional<double> LimitToFit(const LcrSizingSpec& spec, const LcrMinSizeOptions& options,
-                                 const std::string& key) {
+                                 const std::string& key, std::optional<double> near, int* solves) {
   double LcrLimits::*field = nullptr;
   if (key == "contact_stress_MPa") field = &LcrLimits::contact_stress_MPa;
   if (key == "roller_load_N") field = &LcrLimits::roller_load_N;
   if (key == "life_h") field = &LcrLimits::life_h;
-  if (!field || !std::isfinite(spec.limits.*field) || !(spec.limits.*field > 0)) return std::nullopt;
+  const double limit = field ? spec.limits.*field : 0.0;
+  if (!field || !std::isfinite(limit) || !(limit > 0)) return std::nullopt;
   LcrMinSizeOptions o = options;
   o.starts = 1;
   o.solver.max_evaluations = std::min(o.solver.max_evaluations, 300);
-  auto fits = [&](double limit) {
+  // Worked in "how far the limit is moved": u = value / limit for an upper limit (stress, load),
+  // limit / value for the lower limit life_h, so that u > 1 always loosens it. u = 1 is known not to
+  // fit (the search just failed there); 64 is the farthest tried.
+  const bool lower = field == &LcrLimits::life_h;
+  auto value_at = [&](double u) { return lower ? limit / u : limit * u; };
+  int count = 0;
+  auto fits = [&](double u) {
     LcrSizingSpec moved = spec;
-    moved.limits.*field = limit;
+    moved.limits.*field = value_at(u);
+    ++count;
     return SolveLcrMinSize(moved, o).converged;
   };
-  if (field == &LcrLimits::life_h) {
-    // A lower limit: halved until a design fits (at most 6 times), then bisected to 1%.
-    double hi = spec.limits.life_h, lo = hi / 2;
-    for (int i = 0; !fits(lo); ++i) {
-      if (i == 5) return std::nullopt;
-      hi = lo, lo /= 2;
-    }
-    while (hi - lo > 0.01 * hi) {
-      const double mid = 0.5 * (lo + hi);
-      (fits(mid) ? lo : hi) = mid;
-    }
-    return lo;
+  constexpr double kFarthest = 64, kTolerance = 0.01;
+  // The first trial: just past the limit's value at the closest point when it is known (the
+  // closest point minimises the violation, so the limit moved there fits or nearly), else 2.
+  bool from_near = false;
+  double hi = 2;
+  if (near && std::isfinite(*near) && *near > 0) {
+    const double u_near = lower ? limit / *near : *near / limit;
+    if (u_near > 1) hi = std::min(u_near * (1 + kTolerance), kFarthest), from_near = true;
   }
-  double lo = spec.limits.*field, hi = 2 * lo;
-  for (int i = 0; !fits(hi); ++i) {
-    if (i == 5) return std::nullopt;
-    lo = hi, hi *= 2;
+  // Then the bracket [lo, hi], lo not fitting and hi fitting: stepped from the first trial by 1.01,
+  // 1.02, 1.04, … (each step squared, at most 2) from a near value, doubled otherwise.
+  double lo = 1;
+  if (fits(hi)) {
+    for (double down = 1 + kTolerance; from_near && hi / down > 1; down *= down) {
+      const double trial = hi / down;
+      if (!fits(trial)) {
+        lo = trial;
+        break;
+      }
+      hi = trial;
+    }
+  } else {
+    for (double up = from_near ? 1 + kTolerance : 2;; up = from_near ? std::min(up * up, 2.0) : 2) {
+      lo = hi;
+      if (lo >= kFarthest) {
+        if (solves) *solves = count;
+        return std::nullopt;
+      }
+      hi = std::min(lo * up, kFarthest);
+      if (fits(hi)) break;
+    }
   }
-  while (hi - lo > 0.01 * hi) {
+  while (hi - lo > kTolerance * hi) {
     const double mid = 0.5 * (lo + hi);
     (fits(mid) ? hi : lo) = mid;
   }
-  return hi;
+  if (solves) *solves = count;
+  return value_at(hi);
 }
 
 }  // namespace camopt::sizing

@@ -308,7 +308,8 @@ std::string BlockingMessage(const Study& s, const Result& r) {
   std::ostringstream m;
   m.precision(4);
   m << "no design meets the limits: " << worst->limit << " blocks most; ";
-  const std::optional<double> fit = sizing::LimitToFit(closest->spec, s.options, worst->limit);
+  // Searched from the value at the closest point: the closest point minimises the violation.
+  const std::optional<double> fit = sizing::LimitToFit(closest->spec, s.options, worst->limit, worst->value);
   if (fit) {
     m << sizing::LobeCombinationName(closest->combo) << " fits with " << worst->limit << " = " << *fit << " (limit "
       << worst->limit_value << ")";
@@ -1110,8 +1111,8 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                      WorkNumber(combos) + " candidates × " + WorkNumber(starts) + " starts × " +
                          WorkNumber(duty_lines) +
                          " duty-cycle lines (each line's bearing lives in every dense check)"});
-  // When nothing fits, the message names the limit that would fit (sizing::LimitToFit: up to 13
-  // solves of the closest combination, each up to 8 polish rounds of an infeasible problem, measured
+  // When nothing fits, the message names the limit that would fit (sizing::LimitToFit: 2-4 solves
+  // of the closest combination from its closest point's value, up to 13 when that is far off, each up to 8 polish rounds of an infeasible problem, measured
   // at about 4 units a round and start); a converged result prices its binding limits with fewer
   // re-solves than that. Counted always: whether anything fits is not known before the search.
   terms.push_back({13 * 8 * 4 * starts * per_start, "/limits",
