@@ -1014,7 +1014,6 @@ CycloidMeasured MeasuredDisc(const Study& s, Result& r) {
     jammed += bl_meas.back() < 0;
   }
   const double as = cycloid::kArcsecPerRad, am = as / 60.0;
-  const auto [te_lo, te_hi] = range(te);
   const auto [ln_lo, ln_hi] = range(nominal.forward_rad);
   const auto [lm_lo, lm_hi] = range(measured.forward_rad);
   const auto [bn_lo, bn_hi] = range(bl_nom);
@@ -1026,11 +1025,9 @@ CycloidMeasured MeasuredDisc(const Study& s, Result& r) {
   kin.crank_angles = long(crank.size());
   kin.crank_angles_over = "one output revolution (teeth crank turns) of this disc's own crank angle phi + 360 (k - "
                           "1) / N deg, " + std::to_string(kMeasuredAnglesPerMeshPeriod) + " per mesh period";
-  kin.transmission_error_peak_to_peak_arcsec = (te_hi - te_lo) * as;
-  kin.transmission_error_max_arcsec = te_hi * as;
-  kin.transmission_error_min_arcsec = te_lo * as;
-  kin.transmission_error_note = "the measured disc's output angle less the nominal's at the same crank angle, "
-                                "forward torque (> 0: the output ahead)";
+  kin.transmission_error = MeasuredTransmissionError::Of(
+      te, as, "the measured disc's output angle less the nominal's at the same crank angle, forward torque (> 0: the "
+              "output ahead)");
   kin.output_lag_peak_to_peak_arcsec = {(ln_hi - ln_lo) * as, (lm_hi - lm_lo) * as};
   kin.backlash_max_arcmin = {bn_hi * am, bm_hi * am};
   kin.backlash_min_arcmin = {bn_lo * am, bm_lo * am};

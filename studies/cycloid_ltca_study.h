@@ -430,10 +430,9 @@ inline constexpr double kToleranceShare = 0.05;
 /// its rigid kinematic output beside the nominal disc's and, with the loaded stage, its loaded TCA.
 struct CycloidMeasured : MeasuredBlock {
   struct Kinematic {
-    std::string model, crank_angles_over, transmission_error_note, lost_motion_note;
+    std::string model, crank_angles_over, lost_motion_note;
     long crank_angles = 0;
-    double transmission_error_peak_to_peak_arcsec = 0, transmission_error_max_arcsec = 0,
-           transmission_error_min_arcsec = 0;
+    MeasuredTransmissionError transmission_error;
     NominalMeasured output_lag_peak_to_peak_arcsec, backlash_max_arcmin, backlash_min_arcmin, backlash_mean_arcmin,
         lost_motion_kinematic_arcmin;
     int angles_without_contact = 0, jammed_angles = 0;
@@ -442,11 +441,7 @@ struct CycloidMeasured : MeasuredBlock {
       a->Visit("model", &model, Field().Desc("the model in words"));
       a->Visit("crank_angles", &crank_angles, Field().Desc("the crank angles evaluated"));
       a->Visit("crank_angles_over", &crank_angles_over, Field().Desc("what they span"));
-      a->Visit("transmission_error_peak_to_peak_arcsec", &transmission_error_peak_to_peak_arcsec,
-               Field().Unit("arcsec").Desc("of the measured disc's output angle less the nominal's"));
-      a->Visit("transmission_error_max_arcsec", &transmission_error_max_arcsec, Field().Unit("arcsec"));
-      a->Visit("transmission_error_min_arcsec", &transmission_error_min_arcsec, Field().Unit("arcsec"));
-      a->Visit("transmission_error_note", &transmission_error_note, Field().Desc("its definition and sign"));
+      transmission_error.Serialize(a, "of the measured disc's output angle less the nominal's");
       a->Visit("output_lag_peak_to_peak_arcsec", &output_lag_peak_to_peak_arcsec,
                Field().Unit("arcsec").Desc("the output angle's ripple, forward torque"));
       a->Visit("backlash_max_arcmin", &backlash_max_arcmin, Field().Unit("arcmin"));

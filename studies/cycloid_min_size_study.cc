@@ -966,21 +966,6 @@ nlohmann::json DriveJson(const cycloid::Drive& d) {
           {"face_width_mm", d.face_width_mm}};
 }
 
-// A crowning as result.json's best.crowning: the fields cycloid_common::CrowningJson gives its type.
-Result::Crowning CrowningOf(const cycloid::Crowning& c) {
-  const nlohmann::json j = cycloid_common::CrowningJson(c);
-  Result::Crowning out;
-  out.type = j.at("type").get<std::string>();
-  const std::pair<const char*, std::optional<double>*> fields[] = {{"radius_mm", &out.radius_mm},
-                                                                   {"flat_length_mm", &out.flat_length_mm},
-                                                                   {"coefficient_mm", &out.coefficient_mm},
-                                                                   {"effective_length_mm", &out.effective_length_mm},
-                                                                   {"end_drop_mm", &out.end_drop_mm}};
-  for (const auto& [key, member] : fields)
-    if (j.contains(key)) *member = j.at(key).get<double>();
-  return out;
-}
-
 nlohmann::json ModificationJson(const cycloid::Drive& d) {
   return {{"delta_position_um", d.delta_position_mm * 1e3}, {"delta_radius_um", d.delta_radius_mm * 1e3}};
 }
@@ -1108,7 +1093,7 @@ void FillResult(const Study& s, Result& r) {
     b.drive = {o.drive.teeth,           o.drive.rollers,         o.drive.roller_position_radius_mm,
                o.drive.roller_radius_mm, o.drive.eccentricity_mm, o.drive.face_width_mm};
     b.modification = {o.drive.delta_position_mm * 1e3, o.drive.delta_radius_mm * 1e3};
-    b.crowning = CrowningOf(o.crowning);
+    b.crowning = cycloid_common::CrowningInputOf(o.crowning);
     for (size_t k = 0; k < s.spec.variables.size() && k < o.x.size(); ++k)
       b.variables[s.spec.variables[k].name] = Finite(o.x[k], s.spec.variables[k].name);
     // Variables the optimum presses against a bound of their range: widening it would shrink the
@@ -1219,7 +1204,7 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
   if (s.bore_diameter_mm > 0) drive["bore_diameter_mm"] = s.bore_diameter_mm;
   a["drive"] = drive;
   a["modification"] = ModificationJson(design);
-  a["crowning"] = cycloid_common::CrowningJson(crowning);
+  a["crowning"] = WriteJson(cycloid_common::CrowningInputOf(crowning));
   a["material"] = {{"youngs_modulus_GPa", s.spec.material.youngs_modulus_MPa / 1000.0},
                    {"poisson_ratio", s.spec.material.poisson_ratio}};
   a["load"] = {{"torque_Nm", s.design_torque_Nm}};

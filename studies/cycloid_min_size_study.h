@@ -400,24 +400,6 @@ struct Result {
       a->Visit("delta_radius_um", &delta_radius_um, Field().Unit("µm").Desc("Δr, of the pin radius"));
     }
   };
-  /// The sized crowning, as cycloid_ltca's "crowning" (cycloid_common::CrowningJson): its type and
-  /// the fields of that type.
-  struct Crowning {
-    std::string type = "none";
-    std::optional<double> radius_mm, flat_length_mm, coefficient_mm, effective_length_mm, end_drop_mm;
-    template <typename Archive>
-    void Serialize(Archive* a) {
-      a->Visit("type", &type, Field().OneOf({"none", "full", "partial", "logarithmic"}).Desc("the crowning type"));
-      a->Visit("radius_mm", &radius_mm, Field().Unit("mm").Desc("full, partial: the crowning radius"));
-      a->Visit("flat_length_mm", &flat_length_mm,
-               Field().Unit("mm").Desc("partial, logarithmic: the uncrowned middle's length"));
-      a->Visit("coefficient_mm", &coefficient_mm, Field().Unit("mm").Desc("logarithmic: the coefficient of the drop"));
-      a->Visit("effective_length_mm", &effective_length_mm,
-               Field().Unit("mm").Desc("logarithmic: the crowned length L (0: the face width)"));
-      a->Visit("end_drop_mm", &end_drop_mm,
-               Field().Unit("mm").Desc("logarithmic: the largest drop at the face ends (0: unbounded)"));
-    }
-  };
   /// A variable the optimum presses against a bound of its range (within 0.1% of the range).
   struct AtBound {
     std::string name, bound;
@@ -522,7 +504,7 @@ struct Result {
     double outer_diameter_mm = 0, envelope_volume_mm3 = 0;
     Drive drive;
     Modification modification;
-    Crowning crowning;
+    cycloid_common::CrowningInput crowning;  ///< as cycloid_ltca's "crowning" (cycloid_common::CrowningInputOf)
     std::map<std::string, double> variables;
     std::vector<AtBound> variables_at_bounds;
     double curtate_margin = 0, undercut_margin_mm = 0, min_profile_radius_mm = 0, pin_gap_margin_mm = 0;

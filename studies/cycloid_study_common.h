@@ -196,22 +196,19 @@ inline const char* CrowningTypeName(cycloid::CrowningType type) {
   return "none";
 }
 
-/// A crowning as the "crowning" object of a cycloid_ltca study (ParseCrowning reads it back): its
-/// type and the fields of that type.
-inline nlohmann::json CrowningJson(const cycloid::Crowning& c) {
-  nlohmann::json j = {{"type", CrowningTypeName(c.type)}};
+/// A crowning as the "crowning" object of a cycloid_ltca study declares it (CrowningInput: its
+/// type and that type's fields; ParseCrowning reads it back), for result.json and the study files a
+/// sizing writes.
+inline CrowningInput CrowningInputOf(const cycloid::Crowning& c) {
+  CrowningInput j;
+  j.type = CrowningTypeName(c.type);
   switch (c.type) {
     case cycloid::CrowningType::kNone: break;
-    case cycloid::CrowningType::kFull: j["radius_mm"] = c.radius_mm; break;
-    case cycloid::CrowningType::kPartial:
-      j["radius_mm"] = c.radius_mm;
-      j["flat_length_mm"] = c.flat_length_mm;
-      break;
+    case cycloid::CrowningType::kFull: j.radius_mm = c.radius_mm; break;
+    case cycloid::CrowningType::kPartial: j.radius_mm = c.radius_mm, j.flat_length_mm = c.flat_length_mm; break;
     case cycloid::CrowningType::kLogarithmic:
-      j["coefficient_mm"] = c.coefficient_mm;
-      j["effective_length_mm"] = c.effective_length_mm;
-      j["end_drop_mm"] = c.end_drop_mm;
-      j["flat_length_mm"] = c.flat_length_mm;
+      j.coefficient_mm = c.coefficient_mm, j.effective_length_mm = c.effective_length_mm;
+      j.end_drop_mm = c.end_drop_mm, j.flat_length_mm = c.flat_length_mm;
       break;
   }
   return j;

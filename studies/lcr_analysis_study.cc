@@ -1047,7 +1047,6 @@ LcrMeasured MeasuredCam(const Study& st, Result& res) {
     return std::pair<double, double>(*lo, *hi);
   };
   const double as = tolerance::kArcsecPerRad, am = as / 60.0;
-  const auto [te_lo, te_hi] = range(te);
   const auto [rn_lo, rn_hi] = range(rot_nom);
   const auto [rm_lo, rm_hi] = range(rot_meas);
   LcrMeasured::Compliant& c = j.compliant.emplace();
@@ -1055,11 +1054,9 @@ LcrMeasured MeasuredCam(const Study& st, Result& res) {
             "measured normal deviation d(psi) in every roller's gap of the measured cam";
   c.angles = kMeasuredAngleSteps;
   c.output_torque_Nm = torque / 1000.0;
-  c.transmission_error_peak_to_peak_arcsec = (te_hi - te_lo) * as;
-  c.transmission_error_max_arcsec = te_hi * as;
-  c.transmission_error_min_arcsec = te_lo * as;
-  c.transmission_error_note = "the output angle of the reducer with the measured cam less the nominal's at the "
-                              "same input angle and torque (input held)";
+  c.transmission_error = MeasuredTransmissionError::Of(
+      te, as, "the output angle of the reducer with the measured cam less the nominal's at the same input angle and "
+              "torque (input held)");
   c.output_rotation_peak_to_peak_arcsec = {(rn_hi - rn_lo) * as, (rm_hi - rm_lo) * as};
   c.lost_motion_arcmin = {*std::max_element(lm_nom.begin(), lm_nom.end()) * am,
                           *std::max_element(lm_meas.begin(), lm_meas.end()) * am};

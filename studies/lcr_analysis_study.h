@@ -498,10 +498,10 @@ struct CamResult {
 /// and, when the compliant model carries the torque, the reducer with it beside the nominal.
 struct LcrMeasured : MeasuredBlock {
   struct Compliant {
-    std::string model, transmission_error_note, contact_stress_note;
+    std::string model, contact_stress_note;
     int angles = 0;
-    double output_torque_Nm = 0, transmission_error_peak_to_peak_arcsec = 0, transmission_error_max_arcsec = 0,
-           transmission_error_min_arcsec = 0, lost_motion_torque_Nm = 0;
+    double output_torque_Nm = 0, lost_motion_torque_Nm = 0;
+    MeasuredTransmissionError transmission_error;
     NominalMeasured output_rotation_peak_to_peak_arcsec, lost_motion_arcmin, max_roller_force_N;
     NominalMeasuredOrInfinite max_contact_stress_MPa;
     template <typename Archive>
@@ -509,11 +509,7 @@ struct LcrMeasured : MeasuredBlock {
       a->Visit("model", &model, Field().Desc("the model in words"));
       a->Visit("angles", &angles, Field().Desc("input angles over one input revolution"));
       a->Visit("output_torque_Nm", &output_torque_Nm, Field().Unit("N·m").Desc("load.output_torque_Nm"));
-      a->Visit("transmission_error_peak_to_peak_arcsec", &transmission_error_peak_to_peak_arcsec,
-               Field().Unit("arcsec").Desc("of the output angle with the measured cam less the nominal's"));
-      a->Visit("transmission_error_max_arcsec", &transmission_error_max_arcsec, Field().Unit("arcsec"));
-      a->Visit("transmission_error_min_arcsec", &transmission_error_min_arcsec, Field().Unit("arcsec"));
-      a->Visit("transmission_error_note", &transmission_error_note, Field().Desc("its definition"));
+      transmission_error.Serialize(a, "of the output angle with the measured cam less the nominal's");
       a->Visit("output_rotation_peak_to_peak_arcsec", &output_rotation_peak_to_peak_arcsec, Field().Unit("arcsec"));
       a->Visit("lost_motion_arcmin", &lost_motion_arcmin, Field().Unit("arcmin").Desc("at ± lost_motion_torque_Nm"));
       a->Visit("lost_motion_torque_Nm", &lost_motion_torque_Nm, Field().Unit("N·m"));

@@ -37,6 +37,19 @@ lcr::RollerCrowning<double> ParseRollerCrowning(const Node& n, double roller_len
   return c;
 }
 
+LcrCrowningInput CrowningInputOf(const lcr::RollerCrowning<double>& c) {
+  LcrCrowningInput j;
+  switch (c.type) {
+    case contact::CrowningType::kNone: j.type = "none"; break;
+    case contact::CrowningType::kCircular: j.type = "circular", j.radius_mm = c.radius; break;
+    case contact::CrowningType::kPartial: j.type = "partial", j.radius_mm = c.radius, j.flat_length_mm = c.flat_length; break;
+    case contact::CrowningType::kLogarithmic:
+      j.type = "logarithmic", j.coefficient_mm = c.coefficient, j.effective_length_mm = c.effective_length;
+      break;
+  }
+  return j;
+}
+
 const char* ContactModelName(lcr::ContactModel m) {
   switch (m) {
     case lcr::ContactModel::kLine: return "line";

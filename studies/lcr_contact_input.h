@@ -94,6 +94,10 @@ struct LcrContactInput {
 /// a logarithmic crown's coefficient_mm may be absent (a sizing variable), 0 then.
 lcr::RollerCrowning<double> ParseRollerCrowning(const Node& n, double roller_length, bool coefficient_given = true);
 
+/// A roller crowning as its "crowning" object declares it: the type and that type's fields
+/// (ParseRollerCrowning reads it back), for result.json and the study files a sizing writes.
+LcrCrowningInput CrowningInputOf(const lcr::RollerCrowning<double>& c);
+
 /// The "contact" object read as declared (the checks between its fields follow).
 lcr::ContactModelOptions ToContactOptions(const LcrContactOptionsInput& in, const Node& contact);
 

@@ -14,33 +14,6 @@
 
 namespace camopt::studies::lcr_min_size {
 
-namespace {
-
-const char* CrowningTypeName(contact::CrowningType t) {
-  switch (t) {
-    case contact::CrowningType::kNone: return "none";
-    case contact::CrowningType::kCircular: return "circular";
-    case contact::CrowningType::kPartial: return "partial";
-    case contact::CrowningType::kLogarithmic: return "logarithmic";
-  }
-  return "none";
-}
-
-nlohmann::json CrowningJson(const lcr::RollerCrowning<double>& c) {
-  nlohmann::json j = {{"type", CrowningTypeName(c.type)}};
-  switch (c.type) {
-    case contact::CrowningType::kNone: break;
-    case contact::CrowningType::kCircular: j["radius_mm"] = c.radius; break;
-    case contact::CrowningType::kPartial: j["radius_mm"] = c.radius, j["flat_length_mm"] = c.flat_length; break;
-    case contact::CrowningType::kLogarithmic:
-      j["coefficient_mm"] = c.coefficient, j["effective_length_mm"] = c.effective_length;
-      break;
-  }
-  return j;
-}
-
-}  // namespace
-
 std::optional<sizing::LcrSizing3DSpec> ParseContact3D(const Input& in, const Node& root, double roller_length_mm,
                                                           bool catalogue) {
   const Input::Variables& v = in.variables;
@@ -125,7 +98,7 @@ void AddContact3DJson(const Study& s, Result& r) {
   block.model = ContactModelName(c3.contact.model);
   block.slices = c3.contact.slices;
   block.misalignment_mrad = c3.contact.misalignment_rad * 1e3;
-  block.crowning = CrowningJson(c3.crowning);
+  block.crowning = CrowningInputOf(c3.crowning);
   block.crowning_variable = bool(c3.coefficient_range_mm || c3.radius_range_mm || c3.flat_length_range_mm);
   block.length_variables = {bool(c3.roller_length_range_mm), bool(c3.cam_thickness_range_mm)};
   if (c3.overload_torque_Nmm > 0) block.overload_torque_Nm = c3.overload_torque_Nmm / 1000;
@@ -133,8 +106,8 @@ void AddContact3DJson(const Study& s, Result& r) {
     const auto& o3 = r.candidates[i].outcome3d;
     if (o3 && r.candidates[i].pruned()) res.candidates[i].line_model_outer_diameter_mm = o3->line_outer_diameter_mm;
     if (!o3 || !r.candidates[i].feasible()) continue;
-    res.candidates[i].input.crowning = CrowningJson(o3->crowning[0]);
-    res.candidates[i].output.crowning = CrowningJson(o3->crowning[1]);
+    res.candidates[i].input.crowning = CrowningInputOf(o3->crowning[0]);
+    res.candidates[i].output.crowning = CrowningInputOf(o3->crowning[1]);
     res.candidates[i].line_model_outer_diameter_mm = o3->line_outer_diameter_mm;
   }
   if (r.best < 0) return;
@@ -144,7 +117,7 @@ void AddContact3DJson(const Study& s, Result& r) {
   Result::Json::Contact3DBest& contact = best.contact.emplace();
   contact.line_model_outer_diameter_mm = b.line_outer_diameter_mm;
   for (int k = 0; k < 2; ++k) {
-    best_sides[k]->sizes.crowning = CrowningJson(b.crowning[k]);
+    best_sides[k]->sizes.crowning = CrowningInputOf(b.crowning[k]);
     if (!b.contact) continue;
     const lcr::Contact3DCycleSide& d = b.contact->design[k];
     Result::Json::Contact3DSide side;
@@ -191,8 +164,8 @@ void AddContact3DAnalysis(const Study& s, const Candidate& best, nlohmann::json&
                   {"grid", {c3.contact.grid_nx, c3.contact.grid_ny}},
                   {"misalignment_mrad", c3.contact.misalignment_rad * 1e3}};
   if (!best.outcome3d) return;
-  a["reducer"]["input"]["crowning"] = CrowningJson(best.outcome3d->crowning[0]);
-  a["reducer"]["output"]["crowning"] = CrowningJson(best.outcome3d->crowning[1]);
+  a["reducer"]["input"]["crowning"] = WriteJson(CrowningInputOf(best.outcome3d->crowning[0]));
+  a["reducer"]["output"]["crowning"] = WriteJson(CrowningInputOf(best.outcome3d->crowning[1]));
 }
 
 }  // namespace camopt::studies::lcr_min_size

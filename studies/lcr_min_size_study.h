@@ -443,7 +443,7 @@ using Candidate = sizing::LcrCandidate;
 struct CandidateSide {
   int lobes = 0, rollers = 0;
   std::optional<double> turret_radius_mm, roller_diameter_mm, roller_length_mm, cam_thickness_mm;
-  std::optional<nlohmann::json> crowning;
+  std::optional<LcrCrowningInput> crowning;
   template <typename Archive>
   void Serialize(Archive* a) {
     a->Visit("lobes", &lobes, Field().Desc("the cam's lobes"));
@@ -453,8 +453,7 @@ struct CandidateSide {
     a->Visit("roller_length_mm", &roller_length_mm, Field().Unit("mm").Desc("roller length"));
     a->Visit("cam_thickness_mm", &cam_thickness_mm, Field().Unit("mm").Desc("cam thickness"));
     a->Visit("crowning", &crowning,
-             Field().Schema({{"type", "object"}}).Desc("3D contact: the crowning sized for the cam's rollers (type "
-                                                       "and its parameters)"));
+             Field().Desc("3D contact: the crowning sized for the cam's rollers (type and its parameters)"));
   }
 };
 
@@ -723,7 +722,7 @@ struct Result : sizing::LcrSearchOutcome {
   std::optional<objectives::Verification> robust_verification;
 
   /// result.json, declared (studies/archive.h): Run fills it (FillResult; AddContact3DJson and
-  /// RobustJson add their parts). Raw JSON inside it: the crowning (CrowningJson, by its type).
+  /// RobustJson add their parts).
   struct Json {
     using CandidateSide = lcr_min_size::CandidateSide;
     using SizingLife = lcr_min_size::SizingLife;
@@ -875,7 +874,7 @@ struct Result : sizing::LcrSearchOutcome {
       std::string model, sizing_model = "slices";
       int slices = 0;
       double misalignment_mrad = 0;
-      nlohmann::json crowning;
+      LcrCrowningInput crowning;
       bool crowning_variable = false;
       LengthVariables length_variables;
       std::optional<double> overload_torque_Nm;
@@ -885,8 +884,7 @@ struct Result : sizing::LcrSearchOutcome {
         a->Visit("sizing_model", &sizing_model, Field().Const("slices").Desc("the model of the sizing's stress rows"));
         a->Visit("slices", &slices, Field().Desc("slices along the roller"));
         a->Visit("misalignment_mrad", &misalignment_mrad, Field().Unit("mrad").Desc("the roller's tilt"));
-        a->Visit("crowning", &crowning,
-                 Field().Schema({{"type", "object"}}).Desc("fixed.crowning: its type and parameters"));
+        a->Visit("crowning", &crowning, Field().Desc("fixed.crowning: its type and parameters"));
         a->Visit("crowning_variable", &crowning_variable, Field().Desc("a crowning parameter is a variable"));
         a->Visit("length_variables", &length_variables, Field().Desc("which lengths are variables"));
         a->Visit("overload_torque_Nm", &overload_torque_Nm,

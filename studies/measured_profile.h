@@ -13,6 +13,7 @@
 // The geometry (projection, spline, zone) is model/common/profile_deviation.h; here the files.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -120,6 +121,30 @@ struct NominalMeasuredT {
 };
 using NominalMeasured = NominalMeasuredT<false>;
 using NominalMeasuredOrInfinite = NominalMeasuredT<true>;
+
+/// The transmission error of the measured part over the angles evaluated (its output angle less
+/// the nominal part's at the same drive angle): its peak-to-peak, largest and smallest value and
+/// the note that defines it, flattened into the block that holds it (the keys
+/// transmission_error_peak_to_peak_arcsec, _max_arcsec, _min_arcsec and transmission_error_note).
+struct MeasuredTransmissionError {
+  double transmission_error_peak_to_peak_arcsec = 0, transmission_error_max_arcsec = 0,
+         transmission_error_min_arcsec = 0;
+  std::string transmission_error_note;
+  /// From the transmission error at each angle [rad] (not empty) and the kind's arcsec per radian.
+  static MeasuredTransmissionError Of(const std::vector<double>& te_rad, double arcsec_per_rad, std::string note) {
+    const auto [lo, hi] = std::minmax_element(te_rad.begin(), te_rad.end());
+    return {(*hi - *lo) * arcsec_per_rad, *hi * arcsec_per_rad, *lo * arcsec_per_rad, std::move(note)};
+  }
+  /// `of_what`: the peak-to-peak's description (which output angle less which).
+  template <typename Archive>
+  void Serialize(Archive* a, const char* of_what) {
+    a->Visit("transmission_error_peak_to_peak_arcsec", &transmission_error_peak_to_peak_arcsec,
+             Field().Unit("arcsec").Desc(of_what));
+    a->Visit("transmission_error_max_arcsec", &transmission_error_max_arcsec, Field().Unit("arcsec"));
+    a->Visit("transmission_error_min_arcsec", &transmission_error_min_arcsec, Field().Unit("arcsec"));
+    a->Visit("transmission_error_note", &transmission_error_note, Field().Desc("its definition and sign"));
+  }
+};
 
 /// A result of the measured part that was not computed, and why.
 struct NotComputedRow {
