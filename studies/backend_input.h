@@ -47,4 +47,40 @@ inline std::optional<std::string> BackendSpellingWarning(const std::string& name
          "\" (accepted, deprecated: write \"" + optimizers::ToString(*b) + "\")";
 }
 
+/// result.json's "optimizer" keys of every sizing whose answer the accurate model verifies
+/// (cycloid_min_size, disc_cam_min_size, disc_cam_motion): the backend, how the last solve ended,
+/// the budgets and the model runs. Each kind's block derives from it and visits its own keys after
+/// these.
+struct SolveSummary {
+  std::string backend;
+  bool converged = false;
+  std::string status, message;
+  int max_evaluations = 0, verify_rounds = 0, evaluations = 0, gradient_evaluations = 0;
+  /// The last solve's end (`last`), whether the sizing counts it converged, the budgets and the
+  /// model runs summed over every solve.
+  void Set(const std::string& backend_name, bool sizing_converged, const optimizers::SolverResult& last,
+           int max_evaluations_per_solve, int verify_round_budget, int value_runs, int gradient_runs) {
+    backend = backend_name;
+    converged = sizing_converged;
+    status = optimizers::ToString(last.status);
+    message = last.message;
+    max_evaluations = max_evaluations_per_solve;
+    verify_rounds = verify_round_budget;
+    evaluations = value_runs;
+    gradient_evaluations = gradient_runs;
+  }
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}).Desc("the NLP solver (slsqp: NLopt's)"));
+    a->Visit("converged", &converged, Field().Desc("the last solve converged (the optimizer's own test)"));
+    a->Visit("status", &status, Field().Desc("the last solve's end"));
+    a->Visit("message", &message, Field().Desc("the backend's own words"));
+    a->Visit("max_evaluations", &max_evaluations, Field().Desc("the budget of each solve"));
+    a->Visit("verify_rounds", &verify_rounds, Field().Desc("the verification loop's budget"));
+    a->Visit("evaluations", &evaluations, Field().Desc("model runs for values, summed over every solve"));
+    a->Visit("gradient_evaluations", &gradient_evaluations,
+             Field().Desc("model runs with exact derivatives, summed over every solve"));
+  }
+};
+
 }  // namespace camopt::studies

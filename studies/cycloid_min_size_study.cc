@@ -1174,15 +1174,9 @@ void FillResult(const Study& s, Result& r) {
   // Counts only: the time split (values, gradients, verification) goes to the terminal, so that two
   // runs write identical files.
   Result::Optimizer& opt = r.optimizer;
-  opt.backend = s.backend;
-  opt.converged = o.converged;
-  opt.status = optimizers::ToString(o.result.status);
-  opt.message = o.result.message;
+  opt.Set(s.backend, o.converged, o.result, s.options.solver.max_evaluations, s.options.verify_rounds, o.evaluations,
+          o.gradient_evaluations);
   opt.starts = s.options.starts;
-  opt.max_evaluations = s.options.solver.max_evaluations;
-  opt.verify_rounds = s.options.verify_rounds;
-  opt.evaluations = o.evaluations;
-  opt.gradient_evaluations = o.gradient_evaluations;
   opt.binding_rows = o.result.active;
   opt.start_outcomes.clear();
   for (const optimizers::SolverResult& st : o.starts) opt.start_outcomes.push_back(StartOf(st));

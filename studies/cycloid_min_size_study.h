@@ -577,25 +577,15 @@ struct Result {
       a->Visit("x", &x, Field().NullWhenNotFinite().Desc("the end point, in the order of variables"));
     }
   };
-  struct Optimizer {
-    std::string backend;
-    bool converged = false;
-    std::string status, message;
-    int starts = 0, max_evaluations = 0, verify_rounds = 0, evaluations = 0, gradient_evaluations = 0;
+  /// The solves (SolveSummary: the model runs are LTCA runs), the starts and each start's solve.
+  struct Optimizer : SolveSummary {
+    int starts = 0;
     std::vector<std::string> binding_rows;
     std::vector<StartOutcome> start_outcomes;
     template <typename Archive>
     void Serialize(Archive* a) {
-      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}).Desc("the NLP solver (slsqp: NLopt's)"));
-      a->Visit("converged", &converged, Field().Desc("the last solve converged (the optimizer's own test)"));
-      a->Visit("status", &status, Field().Desc("the last solve's end"));
-      a->Visit("message", &message, Field().Desc("the backend's own words"));
+      SolveSummary::Serialize(a);
       a->Visit("starts", &starts, Field().Desc("starts of the solver"));
-      a->Visit("max_evaluations", &max_evaluations, Field().Desc("the budget of each solve"));
-      a->Visit("verify_rounds", &verify_rounds, Field().Desc("the verification loop's budget"));
-      a->Visit("evaluations", &evaluations, Field().Desc("LTCA value runs, summed over every solve"));
-      a->Visit("gradient_evaluations", &gradient_evaluations,
-               Field().Desc("LTCA gradient runs, summed over every solve"));
       a->Visit("binding_rows", &binding_rows, Field().Desc("the constraint rows active at the answer"));
       a->Visit("start_outcomes", &start_outcomes, Field().Desc("each start's solve in the first round"));
     }

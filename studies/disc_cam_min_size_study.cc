@@ -166,17 +166,11 @@ void FillResult(const Study& s, Result& r) {
     opt.start_outcomes.push_back({optimizers::ToString(st.status),
                                   st.x.empty() ? std::nullopt : std::optional<double>(st.objective), st.max_violation,
                                   st.first_order_residual});
-  opt.backend = s.backend;
-  opt.converged = o.converged;
-  opt.status = optimizers::ToString(o.result.status);
-  opt.message = o.result.message;
+  opt.Set(s.backend, o.converged, o.result, s.options.solver.max_evaluations, s.options.verify_rounds,
+          o.result.value_evaluations, o.result.gradient_evaluations);
   opt.max_violation = o.result.max_violation;
   opt.binding_rows = o.result.active;
-  opt.max_evaluations = s.options.solver.max_evaluations;
-  opt.verify_rounds = s.options.verify_rounds;
   opt.rounds = o.rounds;
-  opt.evaluations = o.result.value_evaluations;
-  opt.gradient_evaluations = o.result.gradient_evaluations;
   r.analysis = {s.spec.angle_steps, s.spec.accurate_factor, s.spec.angle_steps * s.spec.accurate_factor};
   if (!r.blocking_message.empty()) r.notes = std::vector<std::string>{r.blocking_message};
 }

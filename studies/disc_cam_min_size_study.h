@@ -258,27 +258,19 @@ struct Result {
                                                 "converge)"));
     }
   };
-  struct Optimizer {
-    std::string backend;
-    bool converged = false;
-    std::string status, message;
+  /// The solves (SolveSummary), the answer's violation and active rows, the tightening rounds and
+  /// each start's first solve.
+  struct Optimizer : SolveSummary {
     double max_violation = 0;
     std::vector<std::string> binding_rows;
-    int max_evaluations = 0, verify_rounds = 0, rounds = 0, evaluations = 0, gradient_evaluations = 0;
+    int rounds = 0;
     std::vector<StartOutcome> start_outcomes;
     template <typename Archive>
     void Serialize(Archive* a) {
-      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}).Desc("the NLP solver (slsqp: NLopt's)"));
-      a->Visit("converged", &converged, Field().Desc("the last solve converged"));
-      a->Visit("status", &status, Field().Desc("the last solve's end"));
-      a->Visit("message", &message, Field().Desc("the backend's own words"));
+      SolveSummary::Serialize(a);
       a->Visit("max_violation", &max_violation, Field().Desc("the largest constraint violation at the answer (scaled)"));
       a->Visit("binding_rows", &binding_rows, Field().Desc("the constraint rows and variable bounds active at the answer"));
-      a->Visit("max_evaluations", &max_evaluations, Field().Desc("the budget of each solve"));
-      a->Visit("verify_rounds", &verify_rounds, Field().Desc("the verification loop's budget"));
       a->Visit("rounds", &rounds, Field().Desc("solves after the first (tightening rounds)"));
-      a->Visit("evaluations", &evaluations, Field().Desc("model runs for values, over every solve"));
-      a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("model runs with exact derivatives"));
       a->Visit("start_outcomes", &start_outcomes, Field().Desc("each start's first solve"));
     }
   };

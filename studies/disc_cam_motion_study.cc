@@ -524,16 +524,10 @@ void FillResult(const Study& s, Result& r) {
     r.beats_every_named_law = o.check.objective + o.check.objective_error + err < best_named;
   }
   Result::Optimizer& opt = r.optimizer;
-  opt.backend = s.backend;
-  opt.converged = o.converged;
-  opt.status = optimizers::ToString(o.result.status);
-  opt.message = o.result.message;
+  opt.Set(s.backend, o.converged, o.result, s.options.solver.max_evaluations, s.options.verify_rounds,
+          o.result.value_evaluations, o.result.gradient_evaluations);
   opt.max_violation = o.result.max_violation;
-  opt.max_evaluations = s.options.solver.max_evaluations;
-  opt.verify_rounds = s.options.verify_rounds;
   opt.rounds = o.rounds;
-  opt.evaluations = o.result.value_evaluations;
-  opt.gradient_evaluations = o.result.gradient_evaluations;
   opt.gradient_method =
       "exact: forward-mode differentiation of the rows (the dynamic rows: forward sensitivities of the "
       "held-on follower's ODE through its RK4 steps)";

@@ -22,6 +22,7 @@
 
 #include "sizing/disc_cam_motion.h"
 #include "studies/archive.h"
+#include "studies/backend_input.h"
 #include "studies/disc_cam_min_size_study.h"
 #include "studies/disc_cam_study.h"
 #include "studies/input.h"
@@ -297,25 +298,17 @@ struct Result {
       a->Visit("objective", &objective, Field().Desc("its objective"));
     }
   };
-  struct Optimizer {
-    std::string backend;
-    bool converged = false;
-    std::string status, message;
+  /// The solves (SolveSummary), the answer's violation, the tightening rounds and how the
+  /// gradients are computed.
+  struct Optimizer : SolveSummary {
     double max_violation = 0;
-    int max_evaluations = 0, verify_rounds = 0, rounds = 0, evaluations = 0, gradient_evaluations = 0;
+    int rounds = 0;
     std::string gradient_method;
     template <typename Archive>
     void Serialize(Archive* a) {
-      a->Visit("backend", &backend, Field().OneOf({"ipopt", "slsqp"}).Desc("the NLP solver (slsqp: NLopt's)"));
-      a->Visit("converged", &converged, Field().Desc("the last solve converged"));
-      a->Visit("status", &status, Field().Desc("the last solve's end"));
-      a->Visit("message", &message, Field().Desc("the backend's own words"));
+      SolveSummary::Serialize(a);
       a->Visit("max_violation", &max_violation, Field().Desc("the largest constraint violation at the answer (scaled)"));
-      a->Visit("max_evaluations", &max_evaluations, Field().Desc("the budget of each solve"));
-      a->Visit("verify_rounds", &verify_rounds, Field().Desc("the verification loop's budget"));
       a->Visit("rounds", &rounds, Field().Desc("solves after the first (tightening rounds)"));
-      a->Visit("evaluations", &evaluations, Field().Desc("model runs for values"));
-      a->Visit("gradient_evaluations", &gradient_evaluations, Field().Desc("model runs with exact derivatives"));
       a->Visit("gradient_method", &gradient_method, Field().Desc("how the gradients are computed"));
     }
   };
