@@ -1112,9 +1112,10 @@ WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, 
                          WorkNumber(duty_lines) +
                          " duty-cycle lines (each line's bearing lives in every dense check)"});
   // When nothing fits, the message names the limit that would fit (sizing::LimitToFit: 2-4 solves
-  // of the closest combination from its closest point's value, up to 13 when that is far off, each up to 8 polish rounds of an infeasible problem, measured
-  // at about 4 units a round and start); a converged result prices its binding limits with fewer
-  // re-solves than that. Counted always: whether anything fits is not known before the search.
+  // of the closest combination from its closest point's value; 13 at most by doubling, about 17 when
+  // that value is far off), each up to 8 polish rounds of an infeasible problem, measured at about 4
+  // units a round and start; a converged result prices its binding limits with fewer re-solves than
+  // that. Counted always (13): whether anything fits is not known before the search.
   terms.push_back({13 * 8 * 4 * starts * per_start, "/limits",
                    "if nothing fits: up to 13 solves × 8 polish rounds × " + WorkNumber(starts) +
                        " starts to find the limit that would fit"});
