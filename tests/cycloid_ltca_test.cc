@@ -207,6 +207,37 @@ TEST(CycloidLtca, LteTendsToTheUnloadedTeAsTheTorqueVanishes) {
   EXPECT_GT(m.rotation_rad, beta0);
 }
 
+// A contact cut by a grid too narrow for it grows its grid and is solved again; when that happens
+// on the last iteration allowed, the solve ends unconverged with every loaded pair's pressure
+// whole (it crashed in the crank slope on an emptied pressure map). Every iteration limit from 1
+// to the one that converges: converged, or a message and whole pressure maps.
+TEST(CycloidLtca, AGridGrownOnTheLastIterationLeavesAWholeUnconvergedState) {
+  LoadedOptions o = Coarse();
+  o.grid_half_width_factor = 0.4;  // the first grids cut the contacts across the profile
+  int grown_on_last = 0;
+  bool converged_once = false;
+  for (int limit = 1; limit <= 40 && !converged_once; ++limit) {
+    o.max_iterations = limit;
+    LoadedTca tca(NnmDrive(), Log(0.005), Material{}, o);
+    const MeshLoad m = tca.Solve(350.0e3, 0.3);
+    converged_once = m.converged;
+    if (!m.converged) {
+      EXPECT_FALSE(m.message.empty()) << limit;
+    }
+    if (m.message.find("edge of its grid") != std::string::npos) ++grown_on_last;
+    ASSERT_GE(m.pairs_in_contact, 1) << limit;
+    for (const PairLoad& p : m.pairs) {
+      ASSERT_EQ(p.pressure_MPa.size(), size_t(p.grid.cells())) << "limit " << limit << ", roller " << p.roller;
+      double w = 0;
+      for (double v : p.pressure_MPa) w += v * p.grid.dx * p.grid.dy;
+      EXPECT_NEAR(w, p.load_N, 1e-6 * p.load_N) << limit;
+    }
+    EXPECT_TRUE(std::isfinite(m.rotation_slope)) << limit;
+  }
+  EXPECT_TRUE(converged_once);
+  EXPECT_GE(grown_on_last, 1);  // the path this test is for was taken
+}
+
 TEST(CycloidLtca, PairLosingContactBetweenIterationsConvergesToTheSameState) {
   // Memory from a light load makes the first iteration at a heavy load mispredict the pair laws
   // (too compliant: too large a deflection, pairs that then lose contact again). The end state

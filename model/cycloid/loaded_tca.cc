@@ -439,7 +439,7 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
 
   std::vector<bool> solved_here(n, false);
   double delta_phi = 0;
-  bool converged = false;
+  bool converged = false, cut_on_last_iteration = false;
   // The first iterations solve the pairs roughly (they only steer the pair models); once the
   // compatibility holds at the rough level, every pair is solved at the final tolerance, warm
   // started, and only a final-tolerance iteration can end the loop.
@@ -490,6 +490,15 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
         // A converged contact that reaches the outer columns is cut by its grid: grow that grid
         // (a ladder size 1.4 times larger) and iterate on. Decided on the converged state only,
         // so the grid does not depend on the path (nor on a warm start).
+        // With no iteration left to solve a grown grid, the loop ends unconverged on the state
+        // as solved (each loaded pair keeps its grid and pressure).
+        bool cut = false;
+        for (size_t i = 0; i < n; ++i) cut = cut || (cand[i].load > 0 && CutAcross(cand[i].grid, cand[i].pressure));
+        if (cut && iter + 1 >= options_.max_iterations) {
+          ++iter;
+          cut_on_last_iteration = true;
+          break;
+        }
         bool grown = false;
         for (size_t i = 0; i < n; ++i) {
           Candidate& c = cand[i];
@@ -513,7 +522,11 @@ MeshLoad LoadedTca::Solve(double torque_Nmm, double crank_angle_rad, LtcaWarmSta
   }
   out.iterations = iter;
   out.converged = converged && out.message.empty();
-  if (!converged) out.message = "compatibility not converged in " + std::to_string(iter) + " iterations";
+  if (cut_on_last_iteration)
+    out.message = "a contact reaches the edge of its grid after the last of " + std::to_string(iter) +
+                  " iterations (no iteration left to solve it on a larger grid)";
+  else if (!converged)
+    out.message = "compatibility not converged in " + std::to_string(iter) + " iterations";
   // The converged flag is earned: the pair loads must carry the torque, Σ l_i F_i = M, within
   // the compatibility tolerance (pairs not re-solved may lag by half of it). The deflection
   // search stops at 1 rad, so a drive far too soft or a torque far too large fails this check
