@@ -176,6 +176,45 @@ std::pair<cycloid::Drive, cycloid::Crowning> CycloidTuningModel::Design(const st
   return {d, c};
 }
 
+namespace {
+// A joint-tuning evaluation's values (no gradients) from its two cycles: design torque (stress,
+// LTE, β0, pair loads) and maximum torque (end distances); n1 rollers.
+TuningEvaluation Values(const cycloid::CycleResult& dc, const cycloid::CycleResult& mc, size_t n1,
+                        double temperature_MPa) {
+  TuningEvaluation e;
+  e.smooth_stress_MPa = cycloid::SmoothPeakPressure(dc, temperature_MPa);
+  e.stress_MPa = dc.max_pressure_MPa;
+  e.edge_margin_um = mc.end_distance_mm * 1e3;
+  for (const cycloid::MeshLoad& m : mc.meshes) e.end_distance_um.push_back(m.end_distance_mm * 1e3);
+  e.lte_peak_to_peak_arcsec = dc.lte_peak_to_peak_arcsec;
+  for (const cycloid::MeshLoad& m : dc.meshes) e.unloaded_te_arcsec.push_back(m.unloaded_rotation_rad * cycloid::kArcsecPerRad);
+  e.max_pair_load_N = dc.max_pair_load_N;
+  e.pairs = dc.max_pairs_in_contact;
+  e.converged = dc.converged && mc.converged;
+  e.pair_peak_MPa.assign(dc.meshes.size() * n1, 0.0);
+  for (size_t k = 0; k < dc.meshes.size(); ++k)
+    for (const cycloid::PairLoad& p : dc.meshes[k].pairs) e.pair_peak_MPa[k * n1 + size_t(p.roller)] = p.max_pressure_MPa;
+  return e;
+}
+}  // namespace
+
+TuningEvaluation CycloidTuningModel::EvaluatedOn(const std::vector<size_t>& angle_indices) const {
+  if (!last_design_ || !last_max_) throw std::logic_error("CycloidTuningModel::EvaluatedOn: no evaluation yet");
+  std::vector<double> angles;
+  std::vector<cycloid::MeshLoad> design, maximum;
+  for (size_t k : angle_indices) {
+    angles.push_back(angles_.at(k));
+    design.push_back(last_design_->meshes.at(k));
+    maximum.push_back(last_max_->meshes.at(k));
+  }
+  const cycloid::Drive drive = Design(last_x_).first;
+  TuningEvaluation e = Values(cycloid::SummariseCycle(drive, std::move(design), angles),
+                              cycloid::SummariseCycle(drive, std::move(maximum), angles),
+                              size_t(drive_.rollers), temperature_MPa_);
+  e.x = last_x_;
+  return e;
+}
+
 TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool with_gradient) {
   const auto [d, c] = Design(x);
   const cycloid::LoadedTca des = design_.WithModification(d.delta_position_mm, d.delta_radius_mm).WithCrowning(c);
@@ -188,24 +227,11 @@ TuningEvaluation CycloidTuningModel::Evaluate(const std::vector<double>& x, bool
   }
   const cycloid::CycleResult& dc = *last_design_;
   const cycloid::CycleResult& mc = *last_max_;
-  TuningEvaluation e;
+  TuningEvaluation e = Values(dc, mc, size_t(drive_.rollers), temperature_MPa_);
   e.x = x;
-  e.smooth_stress_MPa = cycloid::SmoothPeakPressure(dc, temperature_MPa_);
-  e.stress_MPa = dc.max_pressure_MPa;
-  e.edge_margin_um = mc.end_distance_mm * 1e3;
-  for (const cycloid::MeshLoad& m : mc.meshes) e.end_distance_um.push_back(m.end_distance_mm * 1e3);
-  e.lte_peak_to_peak_arcsec = dc.lte_peak_to_peak_arcsec;
-  for (const cycloid::MeshLoad& m : dc.meshes) e.unloaded_te_arcsec.push_back(m.unloaded_rotation_rad * cycloid::kArcsecPerRad);
-  e.max_pair_load_N = dc.max_pair_load_N;
-  e.pairs = dc.max_pairs_in_contact;
-  e.converged = dc.converged && mc.converged;
-  const size_t n1 = size_t(drive_.rollers);
-  e.pair_peak_MPa.assign(dc.meshes.size() * n1, 0.0);
-  for (size_t k = 0; k < dc.meshes.size(); ++k)
-    for (const cycloid::PairLoad& p : dc.meshes[k].pairs) e.pair_peak_MPa[k * n1 + size_t(p.roller)] = p.max_pressure_MPa;
   if (!with_gradient) return e;
   ++gradient_evaluations_;
-  const size_t nv = variables_.size(), na = angles_.size();
+  const size_t nv = variables_.size(), na = angles_.size(), n1 = size_t(drive_.rollers);
   std::vector<std::string> params;
   std::vector<double> factor;
   for (const std::string& v : variables_) {

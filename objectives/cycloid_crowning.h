@@ -171,6 +171,13 @@ class CycloidTuningModel {
   /// Runs both cycles at x (in the variables' units); with_gradient adds the derivatives (the
   /// cycles of the previous call are reused when x is the same point).
   TuningEvaluation Evaluate(const std::vector<double>& x, bool with_gradient);
+  /// The last Evaluate's values (no gradients) on these of its crank angles only (indices into
+  /// crank_angles()): what a cycle over those angles reports, each angle's solve as the last
+  /// cycle made it (warm-started from its neighbour in crank_angles(), so equal to a run over
+  /// the subset alone to the contact solver's tolerance). For an error estimate by angle
+  /// refinement from one run of the finer set.
+  /// @throws std::logic_error before any evaluation; std::out_of_range for an index past the angles.
+  TuningEvaluation EvaluatedOn(const std::vector<size_t>& angle_indices) const;
   /// The drive and crowning that x sets.
   std::pair<cycloid::Drive, cycloid::Crowning> Design(const std::vector<double>& x) const;
   const std::vector<std::string>& variables() const { return variables_; }

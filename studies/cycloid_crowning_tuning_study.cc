@@ -398,18 +398,19 @@ Accurate AccurateEvaluation(const Study& s, const cycloid::Drive& drive, const c
   fine.crank_slope = false;  // no gear ratio in the tuning
   const int n = s.crank_angles_per_mesh_period;
   const double period = 2.0 * kPi / s.drive.rollers;
-  const std::vector<double> base = cycloid::UniformCrankAngles(n, period);
+  // The study's N angles and the N shifted by half a step, interleaved (each solve warm-started
+  // from its half-step neighbour): value(N) is that one run's on the study's angles (`base`).
   std::vector<double> both;
-  for (double a : base) {
+  std::vector<size_t> base;
+  for (double a : cycloid::UniformCrankAngles(n, period)) {
+    base.push_back(both.size());
     both.push_back(a);
     both.push_back(a + 0.5 * period / n);
   }
-  objectives::CycloidTuningModel on_base(drive, crowning, s.material, fine, s.design_torque_Nm * 1000.0,
-                                         s.max_torque_Nm * 1000.0, base, {}, s.temperature_MPa);
   objectives::CycloidTuningModel on_both(drive, crowning, s.material, fine, s.design_torque_Nm * 1000.0,
                                          s.max_torque_Nm * 1000.0, both, {}, s.temperature_MPa);
-  const objectives::TuningEvaluation b = on_base.Evaluate({}, false);
   const objectives::TuningEvaluation a = on_both.Evaluate({}, false);
+  const objectives::TuningEvaluation b = on_both.EvaluatedOn(base);
   Accurate r;
   r.stress_MPa = a.stress_MPa;
   r.margin_um = a.edge_margin_um;

@@ -2,6 +2,7 @@
 // Jacobian against central differences of its own values, the general study form (variables named
 // by their field, optimizer backends), its determinism and its input errors.
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,39 @@ TEST(CycloidTuningProblem, JacobianMatchesCentralDifferencesInTheVariablesUnits)
   // Each distinct point runs its cycles once: 1 + 2n cycle runs, 1 derivative run.
   EXPECT_EQ(model.evaluations(), 1 + 2 * n);
   EXPECT_EQ(model.gradient_evaluations(), 1);
+}
+
+// A subset of the evaluated angles (the accurate check's v(N) from its 2N run): on every angle it
+// is Evaluate's values to the bit; on the even ones it is a model over those angles alone, each
+// solve warm-started from another neighbour, equal to the contact solver's tolerance (tight here).
+TEST(CycloidTuningModel, ValuesOnASubsetOfTheAnglesEqualARunOverThemAlone) {
+  const cycloid::LoadedOptions o = TightSolves();
+  const std::vector<double> all = cycloid::UniformCrankAngles(6, 2 * kPi / 16);
+  const std::vector<double> even = {all[0], all[2], all[4]};
+  CycloidTuningModel model(camopt::testing::CycloidNnm(), TestCrown(), cycloid::Material{}, o, 350.0e3, 550.0e3,
+                           all, {}, 5.0);
+  EXPECT_THROW(model.EvaluatedOn({0}), std::logic_error);
+  const TuningEvaluation full = model.Evaluate({}, false);
+  const TuningEvaluation same = model.EvaluatedOn({0, 1, 2, 3, 4, 5});
+  EXPECT_EQ(same.stress_MPa, full.stress_MPa);
+  EXPECT_EQ(same.smooth_stress_MPa, full.smooth_stress_MPa);
+  EXPECT_EQ(same.edge_margin_um, full.edge_margin_um);
+  EXPECT_EQ(same.lte_peak_to_peak_arcsec, full.lte_peak_to_peak_arcsec);
+  EXPECT_EQ(same.pair_peak_MPa, full.pair_peak_MPa);
+  EXPECT_THROW(model.EvaluatedOn({6}), std::out_of_range);
+
+  const TuningEvaluation sub = model.EvaluatedOn({0, 2, 4});
+  CycloidTuningModel alone(camopt::testing::CycloidNnm(), TestCrown(), cycloid::Material{}, o, 350.0e3, 550.0e3,
+                           even, {}, 5.0);
+  const TuningEvaluation ref = alone.Evaluate({}, false);
+  EXPECT_NEAR(sub.stress_MPa, ref.stress_MPa, 1e-6 * ref.stress_MPa);
+  EXPECT_NEAR(sub.edge_margin_um, ref.edge_margin_um, 1e-6 * std::abs(ref.edge_margin_um) + 1e-9);
+  EXPECT_NEAR(sub.lte_peak_to_peak_arcsec, ref.lte_peak_to_peak_arcsec, 1e-6);
+  ASSERT_EQ(sub.pair_peak_MPa.size(), ref.pair_peak_MPa.size());
+  for (size_t k = 0; k < ref.pair_peak_MPa.size(); ++k)
+    EXPECT_NEAR(sub.pair_peak_MPa[k], ref.pair_peak_MPa[k], 1e-6 * ref.stress_MPa) << k;
+  // A subset's maximum never exceeds the whole cycle's.
+  EXPECT_LE(sub.stress_MPa, full.stress_MPa);
 }
 
 // The epigraph form: x = [variables, t], outputs [t, end distance per angle, LTE p-p, β0 per
