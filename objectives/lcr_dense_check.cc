@@ -6,6 +6,7 @@
 
 #include "model/common/geometry.h"
 #include "model/contact/hertz.h"
+#include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/profile.h"
 
@@ -55,35 +56,38 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
   const LcrLimits& lim = spec.limits;
   const lcr::LoadCase load{spec.output_torque_Nmm, spec.friction_coefficient, 0.0};
   const int n[2] = {r.input.rollers, r.output.rollers};
-  // Per (angle, roller) force and stress, for the choice of peaks.
-  std::array<std::vector<double>, 2> fq, sq;
-  if (near)
-    for (int k = 0; k < 2; ++k) fq[k].assign(size_t(steps) * n[k], 0.0), sq[k] = fq[k];
+  // The cycle on AnalyzeCycle's fast path: bit for bit AnalyzeAngle's numbers at each angle
+  // (model/lcr/cycle.h), without its per-angle vectors.
+  lcr::Stages stages;
+  stages.roller_stress = near != nullptr;
+  const lcr::CycleSeries series = lcr::AnalyzeCycle(r, spec.material, load, steps, stages);
   double eta = 0.0;
-  for (int i = 0; i < steps; ++i) {
-    const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, 2 * kPi * i / steps);
-    eta += a.efficiency;
-    for (int k = 0; k < 2; ++k) {
-      const lcr::SideLoads<double>& sl = k == 0 ? a.input : a.output;
-      if (sl.max_stress > c.max_stress_MPa[k]) {
-        c.max_stress_MPa[k] = sl.max_stress;
-        c.peak_half_width_mm[k] = 0.0;
-        const lcr::CamSide<double>& cam = k == 0 ? r.input : r.output;
-        for (size_t j = 0; j < sl.stress.size(); ++j)
-          if (sl.stress[j] == sl.max_stress && std::isfinite(sl.max_stress)) {
-            const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * sl.contacts[j].curvature);
-            c.peak_half_width_mm[k] = contact::LineContactHalfWidth(sl.force[j], cam.contact_length(), r_eff,
-                                                                    spec.material.composite_modulus_MPa());
-            break;
-          }
+  for (int i = 0; i < steps; ++i) eta += series.efficiency[size_t(i)];
+  c.mean_efficiency = eta / steps;
+  for (int k = 0; k < 2; ++k) {
+    const lcr::SideSeries& side = k == 0 ? series.input : series.output;
+    const lcr::CamSide<double>& cam = k == 0 ? r.input : r.output;
+    int peak_angle = -1;  // the first angle of the largest stress (the half-width's)
+    for (int i = 0; i < steps; ++i) {
+      if (side.max_stress_MPa[size_t(i)] > c.max_stress_MPa[k]) {
+        c.max_stress_MPa[k] = side.max_stress_MPa[size_t(i)];
+        peak_angle = i;
       }
-      c.max_force_N[k] = std::max(c.max_force_N[k], sl.max_force);
-      if (!near) continue;
-      std::copy(sl.force.begin(), sl.force.end(), fq[k].begin() + size_t(i) * n[k]);
-      std::copy(sl.stress.begin(), sl.stress.end(), sq[k].begin() + size_t(i) * n[k]);
+      c.max_force_N[k] = std::max(c.max_force_N[k], side.max_force_N[size_t(i)]);
+    }
+    if (peak_angle >= 0) {
+      // The roller at the peak, as lcr::AnalyzeAngle has it there (the same bits).
+      const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, 2 * kPi * peak_angle / steps);
+      const lcr::SideLoads<double>& sl = k == 0 ? a.input : a.output;
+      for (size_t j = 0; j < sl.stress.size(); ++j)
+        if (sl.stress[j] == sl.max_stress && std::isfinite(sl.max_stress)) {
+          const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * sl.contacts[j].curvature);
+          c.peak_half_width_mm[k] = contact::LineContactHalfWidth(sl.force[j], cam.contact_length(), r_eff,
+                                                                  spec.material.composite_modulus_MPa());
+          break;
+        }
     }
   }
-  c.mean_efficiency = eta / steps;
   if (spec.lubrication) {
     const LcrSizingLubrication& l = *spec.lubrication;
     const lcr::RigidLubricatedPoint<double> p =
@@ -162,7 +166,9 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     for (int k = 0; k < 2; ++k) {
       const double period = LcrLoadPeriod(spec, k == 0 ? lcr::Side::kInput : lcr::Side::kOutput);
       for (int quantity = 0; quantity < 2; ++quantity) {
-        const std::vector<double>& v = quantity == 0 ? fq[k] : sq[k];
+        // Per (angle, roller) force or stress.
+        const lcr::SideSeries& side = k == 0 ? series.input : series.output;
+        const std::vector<double>& v = quantity == 0 ? side.roller_force_N.values() : side.roller_stress_MPa.values();
         const double limit = quantity == 0 ? lim.roller_load_N : lim.contact_stress_MPa;
         const double vmax = *std::max_element(v.begin(), v.end());
         const double threshold = std::isfinite(limit) ? (1 - kNearFraction) * std::min(limit, vmax) : vmax;

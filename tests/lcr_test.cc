@@ -166,8 +166,14 @@ TEST(LcrForces, FrictionLowersEfficiencyAsThePapersModelSays) {
 TEST(LcrCycle, FastPathEqualsAnalyzeAngleBitForBit) {
   const std::vector<LoadCase> loads = {{80000.0, 0.05, 0.0}, {80000.0, 0.0, 30.0}, {0.0, 0.05, 0.0},
                                        {0.0, 0.05, 20.0}, {1.0, 0.0, 0.0}};
-  const std::vector<Stages> stage_sets = {{}, {true, false, true}, {true, true, false},
-                                          {true, false, false}, {false, false, true}, {false, false, false}};
+  const std::vector<Stages> stage_sets = {{},
+                                          {true, false, true},
+                                          {true, true, false},
+                                          {true, false, false},
+                                          {false, false, true},
+                                          {false, false, false},
+                                          {true, true, true, true},
+                                          {true, true, false, true}};
   for (const Reducer<double>& r : {LcrI(), LcrII(), LcrIII()})
     for (const LoadCase& load : loads)
       for (const Stages& stages : stage_sets) {
@@ -184,6 +190,12 @@ TEST(LcrCycle, FastPathEqualsAnalyzeAngleBitForBit) {
             EXPECT_EQ(series->max_stress_MPa[i], side->max_stress);
             EXPECT_EQ(series->turret_torque_Nmm[i], side->turret_torque);
             EXPECT_EQ(series->roller_force_N[i], side->force);
+            // Each roller's stress only where asked for (Stages::roller_stress).
+            if (stages.stress && stages.roller_stress) {
+              EXPECT_EQ(series->roller_stress_MPa[i], side->stress);
+            } else {
+              EXPECT_EQ(series->roller_stress_MPa.size(), 0u);
+            }
           }
           EXPECT_EQ(s.tangential_force_N[i], a.tangential_force);
           EXPECT_EQ(s.radial_force_N[i], a.radial_force);

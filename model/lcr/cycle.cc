@@ -110,6 +110,7 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
     series->max_stress_MPa.reserve(steps);
     series->turret_torque_Nmm.reserve(steps);
     series->roller_force_N.Reset(any_stage ? cam->rollers : 0, steps);  // no forces: empty rows
+    if (stages.stress && stages.roller_stress) series->roller_stress_MPa.Reset(cam->rollers, steps);
   }
   for (auto* v : {&s.tangential_force_N, &s.radial_force_N, &s.input_torque_Nmm, &s.efficiency})
     v->reserve(steps);
@@ -175,6 +176,16 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
         if (stages.stress) {
           max_stress = internal::MaxStressKernel(int(n), force, buf->kappa.data(), cam->roller_radius,
                                                  cam->contact_length(), e_star);
+          if (stages.roller_stress) {  // internal::FillStresses' p of each roller, the same operations
+            double* stress = series->roller_stress_MPa.AddRow();
+            const double length = cam->contact_length();
+            for (size_t k = 0; k < n; ++k) {
+              stress[k] = 0.0;
+              if (!(force[k] > 0)) continue;
+              const double r_eff = cam->roller_radius * (1.0 - cam->roller_radius * buf->kappa[k]);
+              stress[k] = r_eff > 0 ? contact::LineContactPeakPressure(force[k], length, r_eff, e_star) : kInf;
+            }
+          }
         }
         series->actuating.push_back(actuating);
         series->max_force_N.push_back(max_force);

@@ -39,6 +39,8 @@ class PerRoller {
     return {data_.begin() + i * rollers_, data_.begin() + (i + 1) * rollers_};
   }
   const double* row(size_t i) const { return data_.data() + i * rollers_; }
+  /// Every row, one after the other ([i · rollers + k]).
+  const std::vector<double>& values() const { return data_; }
   int rollers() const { return rollers_; }
 
  private:
@@ -51,6 +53,7 @@ struct SideSeries {
   std::vector<int> actuating;
   std::vector<double> max_force_N, max_stress_MPa, turret_torque_Nmm;
   PerRoller roller_force_N;  // [angle][roller]
+  PerRoller roller_stress_MPa;  // [angle][roller], with Stages::roller_stress (else empty)
 };
 
 struct CycleSeries {

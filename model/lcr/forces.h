@@ -51,6 +51,9 @@ struct Stages {
   bool forces = true;
   bool stress = true;      // needs forces
   bool efficiency = true;  // needs forces
+  /// AnalyzeCycle only: every roller's stress, SideSeries::roller_stress_MPa (needs stress;
+  /// AnalyzeAngle always has SideLoads::stress).
+  bool roller_stress = false;
 };
 
 namespace internal {
