@@ -306,12 +306,17 @@ void RemoveStaleTemporaries(const fs::path& dir) {
 
 }  // namespace
 
-OutputFolder::OutputFolder(const std::string& dir) {
+fs::path OutFolderPath(const std::string& dir) {
   fs::path out = fs::path(dir).lexically_normal();
   if (out.has_parent_path() && !out.has_filename()) out = out.parent_path();  // "out/"
   if (out.empty() || out == "." || out == ".." || out == "/" || out.filename() == "..")
     throw StudyError("--out " + dir + ": expected a folder name for the results, found " +
                      (dir.empty() ? std::string("nothing") : dir));
+  return out;
+}
+
+OutputFolder::OutputFolder(const std::string& dir) {
+  fs::path out = OutFolderPath(dir);
   // A symbolic link to a folder: the results go to the folder it names (a rename onto the link
   // would fail, "not a folder").
   struct stat st {};

@@ -202,6 +202,10 @@ class StudyIncomplete : public std::runtime_error {
   RunAnswer answer_;
 };
 
+/// --out as a folder path ("out/" is "out"), for every writer (OutputFolder, the sweep); throws
+/// StudyError on ".", "..", "/" or nothing.
+std::filesystem::path OutFolderPath(const std::string& dir);
+
 /// The path the siblings camopt makes beside an output folder `dir` start with (the temporary
 /// `.camopt-tmp-<pid>`, the set-aside `.camopt-old-<pid>`, a sweep's `.camopt-sweep` and its
 /// `-lock`): `dir` itself, its name cut (at a UTF-8 character's start) to leave 32 bytes within

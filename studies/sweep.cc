@@ -16,6 +16,7 @@
 
 #include <sys/stat.h>
 
+#include "studies/study.h"
 #include "studies/sweep_checkpoint.h"
 #include "studies/sweep_design.h"
 #include "studies/sweep_pareto.h"
@@ -494,7 +495,7 @@ int Run(const Options& o, World& world) {
       std::cout << cases.size() << " cases\n";
       return 0;
     }
-    out = NormalOut(o.out);
+    out = OutFolderPath(o.out);
     partial = PartialFolder(out);
     CheckReplaceable(out, o.out);
     if (!o.doc) CheckNotInside(o.file, out.string(), "sweep file");

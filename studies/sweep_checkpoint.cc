@@ -21,15 +21,6 @@ namespace camopt::studies::sweep {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path NormalOut(const std::string& dir) {
-  fs::path out = fs::path(dir).lexically_normal();
-  if (out.has_parent_path() && !out.has_filename()) out = out.parent_path();  // "out/"
-  if (out.empty() || out == "." || out == ".." || out == "/" || out.filename() == "..")
-    throw StudyError("--out " + dir + ": expected a folder name for the results, found " +
-                     (dir.empty() ? std::string("nothing") : dir));
-  return out;
-}
-
 void CheckReplaceable(const fs::path& out, const std::string& dir) {
   struct stat st {};
   if (lstat(out.c_str(), &st) != 0) return;

@@ -18,9 +18,6 @@
 
 namespace camopt::studies::sweep {
 
-/// --out as a folder path ("out/" is "out"); throws StudyError on ".", "..", "/" or nothing.
-std::filesystem::path NormalOut(const std::string& dir);
-
 /// An existing --out is replaced only when it is empty or holds a previous camopt result and
 /// nothing else (studies/study.h, NotReplaceable: the rule of every writer). Throws StudyError
 /// otherwise (`dir` as given on the command line).
