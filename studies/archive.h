@@ -176,7 +176,9 @@ class Field {
   }
   /// What an absent std::optional field means, for the schema's `default`.
   Field& Default(nlohmann::json value) { documented_default = std::move(value); return *this; }
-  /// The schema of a field kept as raw JSON (nlohmann::json) and read by shared code.
+  /// The schema of a field kept as raw JSON (nlohmann::json) and read by shared code; on a number,
+  /// keywords that replace the emitted ones (a parse that narrows the number in code, e.g. to a
+  /// whole number with a message of its own: {"type": "integer", "minimum": 2}).
   Field& Schema(nlohmann::ordered_json fragment) { schema = std::move(fragment); return *this; }
   /// A result number that may be ±inf or NaN (a rigid element's compliance, an estimate not made):
   /// null in result.json, `"type": ["number", "null"]` in the result's schema. Without it a
@@ -453,6 +455,9 @@ class SchemaEmitter {
     } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
       s["type"] = std::is_same_v<T, int> ? "integer" : "number";
       NumberKeywords(f, std::is_same_v<T, int>, s);
+      // A number the kind's parse narrows with a message of its own (a whole number read as a
+      // number, so that a fraction gets that message): Field::Schema states the narrowing.
+      for (auto it = f.schema.begin(); it != f.schema.end(); ++it) s[it.key()] = it.value();
     } else if constexpr (std::is_same_v<T, bool>) {
       s["type"] = "boolean";
     } else if constexpr (std::is_same_v<T, std::string>) {

@@ -168,7 +168,7 @@ double CrowningFieldOf(const cycloid::Crowning& c, const std::string& name) {
 
 void ParseTarget(const Node& root, const Input::Target& in, Study& s) {
   const Node t = root["target"];
-  const bool teeth = bool(in.teeth), ratio = !in.speed_ratio.is_null();
+  const bool teeth = bool(in.teeth), ratio = bool(in.speed_ratio);
   if (teeth == ratio)
     t.FailWith(teeth ? "give one of \"teeth\" and \"speed_ratio\", not both (for this drive they are the same number z)"
                      : "missing required field: \"teeth\" (z, the disc's teeth) or \"speed_ratio\" (z)");
@@ -179,7 +179,7 @@ void ParseTarget(const Node& root, const Input::Target& in, Study& s) {
     // A one-tooth-difference drive with the ring (z + 1 pins) fixed and the output taken from the
     // disc turns the output 1/z of the input, in the opposite sense: the reduction is z.
     const Node r = t["speed_ratio"];
-    const double v = r.Number();
+    const double v = *in.speed_ratio;
     if (v != std::round(v) || v < 2 || v > 1e9) {
       const double fit = std::clamp(std::round(std::abs(v)), 2.0, 1e9);
       r.FailWith("expected a whole-number reduction z >= 2 (ring of z + 1 pins fixed, output from the disc: the "
@@ -1418,7 +1418,7 @@ Fidelity Knobs(const nlohmann::json&) {
 WorkEstimate EstimateWork(const nlohmann::json& study, const std::string& file, double factor) {
   const Input in = ReadInput(study, file);
   const Input::Target& t = in.target;
-  const double teeth = t.teeth ? double(*t.teeth) : t.speed_ratio.is_number() ? std::abs(t.speed_ratio.get<double>()) : 15;
+  const double teeth = t.teeth ? double(*t.teeth) : t.speed_ratio ? std::abs(*t.speed_ratio) : 15;
   const double rollers = std::isfinite(teeth) ? teeth + 1 : 16;
   const std::array<int, 2> grid = in.analysis.grid.value_or(cycloid_common::DefaultGrid());
   const double cells = double(grid[0]) * grid[1];

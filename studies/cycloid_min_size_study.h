@@ -54,7 +54,7 @@ inline constexpr int kDefaultCrankAnglesPerMeshPeriod = 6;
 struct Input {
   struct Target {
     std::optional<int> teeth;
-    nlohmann::json speed_ratio;  ///< null: absent (read by Parse, whose message says what would fit)
+    std::optional<double> speed_ratio;  ///< a whole number >= 2, checked by Parse (its message says what would fit)
     double design_torque_Nm = 0;
     std::optional<double> overload_torque_Nm;
     template <typename Archive>
