@@ -172,13 +172,16 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
         const double limit = quantity == 0 ? lim.roller_load_N : lim.contact_stress_MPa;
         const double vmax = *std::max_element(v.begin(), v.end());
         const double threshold = std::isfinite(limit) ? (1 - kNearFraction) * std::min(limit, vmax) : vmax;
-        auto at = [&](int i, int j) { return v[size_t((i + steps) % steps) * n[k] + j]; };
         std::vector<std::pair<double, std::pair<int, int>>> peaks;
-        for (int i = 0; i < steps; ++i)
+        for (int i = 0; i < steps; ++i) {
+          const double* before = &v[size_t(i == 0 ? steps - 1 : i - 1) * n[k]];
+          const double* here = &v[size_t(i) * n[k]];
+          const double* after = &v[size_t(i + 1 == steps ? 0 : i + 1) * n[k]];
           for (int j = 0; j < n[k]; ++j) {
-            const double q = at(i, j);
-            if (q > 0 && q >= threshold && q >= at(i - 1, j) && q >= at(i + 1, j)) peaks.push_back({q, {i, j}});
+            const double q = here[j];
+            if (q >= threshold && q > 0 && q >= before[j] && q >= after[j]) peaks.push_back({q, {i, j}});
           }
+        }
         std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
         std::vector<LcrSample> chosen;
         for (const auto& [q, ij] : peaks) {

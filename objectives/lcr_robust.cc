@@ -105,8 +105,7 @@ LcrRobustCheck RobustGridCheck(const LcrSizingSpec& spec, const lcr::Reducer<dou
     const double period = LcrLoadPeriod(spec, side);
     for (int i = 0; i < steps; ++i) {
       const double theta = period * (i + 0.5) / steps;
-      const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, theta, lcr::Stages{true, false, false});
-      const lcr::SideLoads<double>& sl = side == lcr::Side::kInput ? a.input : a.output;
+      const lcr::SideLoads<double> sl = lcr::AnalyzeSide(r, spec.material, load, side, theta, lcr::Stages{true, false, false});
       const LcrRobustIncrements<double> inc = RobustIncrements(spec, r, side, theta, sl);
       for (int k = 0; k < cam.rollers; ++k) {
         c.max_force_N = std::max(c.max_force_N, sl.force[k] + inc.force[k]);

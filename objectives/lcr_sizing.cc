@@ -2,6 +2,7 @@
 // ceres::Jet<double, 5> (keep heavy instantiations in few translation units).
 #include "objectives/lcr_sizing.h"
 
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "model/common/roots.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
@@ -124,8 +126,7 @@ T StressMargin(const LcrSizingSpec& s, const lcr::CamSide<T>& cam, const T& forc
 template <typename T>
 lcr::SideLoads<T> SideAt(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side, double theta) {
   const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
-  lcr::AngleLoads<T> a = lcr::AnalyzeAngle(r, s.material, load, T(theta), lcr::Stages{true, false, false});
-  return side == lcr::Side::kInput ? std::move(a.input) : std::move(a.output);
+  return lcr::AnalyzeSide(r, s.material, load, side, T(theta), lcr::Stages{true, false, false});
 }
 
 // Force (stress = false) or stress margin of roller k at θ.
@@ -136,7 +137,9 @@ T SampleValue(const LcrSizingSpec& s, const lcr::Reducer<T>& r, lcr::Side side, 
 }
 
 // θ* of a sample: θ0 without a window, else the angle of the largest force (smallest margin) of
-// its roller in θ0 ± window, on values only.
+// its roller in θ0 ± window, on values only: the best of 9 samples, then Brent's method in the
+// bracket of its neighbours started from the three (a smooth peak in a handful of evaluations) to
+// 1e-5 of the sample step.
 double PeakAngle(const LcrSizingSpec& s, const lcr::Reducer<double>& r, lcr::Side side, const LcrSample& a,
                  bool stress) {
   if (!(a.window_rad > 0)) return a.theta_rad;
@@ -144,23 +147,27 @@ double PeakAngle(const LcrSizingSpec& s, const lcr::Reducer<double>& r, lcr::Sid
     const double v = SampleValue(s, r, side, t, a.roller, stress);
     return stress ? -v : v;
   };
-  const int n = 8;
+  constexpr int n = 8;
   const double lo0 = a.theta_rad - a.window_rad, step = 2 * a.window_rad / n;
+  std::array<double, n + 1> fs;
   int best = 0;
-  double best_v = f(lo0);
-  for (int i = 1; i <= n; ++i)
-    if (const double v = f(lo0 + i * step); v > best_v) best_v = v, best = i;
-  double lo = lo0 + std::max(best - 1, 0) * step, hi = lo0 + std::min(best + 1, n) * step;
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
-  for (int it = 0; it < 24; ++it) {
-    if (f1 < f2)
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
-    else
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
+  for (int i = 0; i <= n; ++i) {
+    fs[size_t(i)] = f(lo0 + i * step);
+    if (fs[size_t(i)] > fs[size_t(best)]) best = i;
   }
-  const double mid = 0.5 * (lo + hi);
-  return f(mid) >= best_v ? mid : lo0 + best * step;
+  const int left = std::max(best - 1, 0), right = std::min(best + 1, n);
+  const double x = lo0 + best * step;
+  BrentStart start{x, fs[size_t(best)], x, fs[size_t(best)], x, fs[size_t(best)]};
+  if (left < best && best < right) {  // both neighbours: the better second
+    const bool l = fs[size_t(left)] >= fs[size_t(right)];
+    const int second = l ? left : right, third = l ? right : left;
+    start.w = lo0 + second * step, start.fw = fs[size_t(second)];
+    start.v = lo0 + third * step, start.fv = fs[size_t(third)];
+  } else {  // at an end of the window: one neighbour, no parabola yet
+    const int other = best == left ? right : left;
+    start.w = start.v = lo0 + other * step, start.fw = start.fv = fs[size_t(other)];
+  }
+  return BrentMaximize(f, lo0 + left * step, lo0 + right * step, start, 40, 1e-5 * step).first;
 }
 
 // Roller forces and Hertz capacity margins of one cam over its load period (kSamples,

@@ -116,8 +116,8 @@ T EdgeMarginAt(const LcrSizing3DSpec& s3, double e_star, const lcr::CamSide<T>& 
 template <typename T>
 std::pair<T, T> ContactAt(const LcrSizingSpec& s, const lcr::Reducer<T>& r, int side, double theta, int roller) {
   const lcr::LoadCase load{s.output_torque_Nmm, 0.0, 0.0};
-  const lcr::AngleLoads<T> a = lcr::AnalyzeAngle(r, s.material, load, T(theta), lcr::Stages{true, false, false});
-  const lcr::SideLoads<T>& sl = side == 0 ? a.input : a.output;
+  const lcr::SideLoads<T> sl = lcr::AnalyzeSide(r, s.material, load, side == 0 ? lcr::Side::kInput : lcr::Side::kOutput,
+                                                T(theta), lcr::Stages{true, false, false});
   return {sl.force[roller], sl.contacts[roller].curvature};
 }
 

@@ -3,8 +3,11 @@
 // invariants and the paper's Table 3.
 #include <array>
 #include <cmath>
+#include <type_traits>
+#include <stdexcept>
 #include <vector>
 
+#include <ceres/jet.h>
 #include <gtest/gtest.h>
 
 #include "model/lcr/cycle.h"
@@ -203,6 +206,58 @@ TEST(LcrCycle, FastPathEqualsAnalyzeAngleBitForBit) {
           EXPECT_EQ(s.efficiency[i], a.efficiency);
         }
       }
+}
+
+// One cam alone (AnalyzeSide: the sizings' per-cam samples) must give AnalyzeAngle's SideLoads of
+// that cam bit for bit, values and derivatives, with and without stresses.
+template <typename T>
+void ExpectSameSide(const SideLoads<T>& one, const SideLoads<T>& both) {
+  ASSERT_EQ(one.contacts.size(), both.contacts.size());
+  auto same = [](const T& x, const T& y) {
+    if constexpr (std::is_same_v<T, double>) {
+      EXPECT_EQ(x, y);
+    } else {
+      EXPECT_EQ(x.a, y.a);
+      for (int d = 0; d < x.v.size(); ++d) EXPECT_EQ(x.v[d], y.v[d]) << "derivative " << d;
+    }
+  };
+  for (size_t k = 0; k < one.contacts.size(); ++k) {
+    same(one.contacts[k].arm, both.contacts[k].arm);
+    same(one.contacts[k].curvature, both.contacts[k].curvature);
+    same(one.force[k], both.force[k]);
+  }
+  ASSERT_EQ(one.stress.size(), both.stress.size());
+  for (size_t k = 0; k < one.stress.size(); ++k) same(one.stress[k], both.stress[k]);
+  same(one.proportionality, both.proportionality);
+  same(one.turret_torque, both.turret_torque);
+  same(one.max_force, both.max_force);
+  same(one.max_stress, both.max_stress);
+  EXPECT_EQ(one.actuating, both.actuating);
+}
+
+TEST(LcrForces, OneCamAloneEqualsAnalyzeAngleBitForBit) {
+  using J = ceres::Jet<double, 4>;
+  for (const Reducer<double>& r : {LcrI(), LcrII(), LcrIII()}) {
+    Reducer<J> rj = r.cast<J>();  // derivatives in e, both turret radii and the input roller radius
+    rj.eccentricity.v[0] = 1.0;
+    rj.input.turret_radius.v[1] = 1.0;
+    rj.output.turret_radius.v[2] = 1.0;
+    rj.input.roller_radius.v[3] = 1.0;
+    for (const LoadCase& load : {LoadCase{80000.0, 0.0, 0.0}, LoadCase{1.0, 0.0, 0.0}, LoadCase{0.0, 0.0, 0.0}})
+      for (const Stages& stages : {Stages{true, false, false}, Stages{true, true, false}})
+        for (int i = 0; i < 37; ++i) {
+          const double theta = 2 * kPi * i / 37 + 0.01;
+          const AngleLoads<double> a = AnalyzeAngle(r, Steel(), load, theta, stages);
+          const AngleLoads<J> aj = AnalyzeAngle(rj, Steel(), load, J(theta), stages);
+          ExpectSameSide(AnalyzeSide(r, Steel(), load, Side::kInput, theta, stages), a.input);
+          ExpectSameSide(AnalyzeSide(r, Steel(), load, Side::kOutput, theta, stages), a.output);
+          ExpectSameSide(AnalyzeSide(rj, Steel(), load, Side::kInput, J(theta), stages), aj.input);
+          ExpectSameSide(AnalyzeSide(rj, Steel(), load, Side::kOutput, J(theta), stages), aj.output);
+        }
+  }
+  // The efficiency needs both cams.
+  EXPECT_THROW(AnalyzeSide(LcrII(), Steel(), LoadCase{80000.0, 0.0, 0.0}, Side::kInput, 0.1, Stages{}),
+               std::invalid_argument);
 }
 
 // Table 3 of the paper: max roller force within 3%, actuating roller counts within 1.

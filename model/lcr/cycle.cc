@@ -154,8 +154,8 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
       for (double a : buf_b.loaded) sum_b += a * a;
       if (!(sum_a > 0) || !(sum_b > 0))
         throw std::domain_error("no roller of a turret can carry load at this input angle");
-      const double c_b = load.output_torque_Nmm / sum_b;
-      const double c_a = c_b * ratio_b * sum_b / (ratio_a * sum_a);
+      const double c_a = internal::ForceScale(r, Side::kInput, load, sum_a, sum_b);
+      const double c_b = internal::ForceScale(r, Side::kOutput, load, sum_a, sum_b);
       for (auto [series, buf, cam, c, tol] :
            {std::tuple{&s.input, &buf_a, &r.input, c_a, tol_a},
             std::tuple{&s.output, &buf_b, &r.output, c_b, tol_b}}) {
@@ -173,19 +173,21 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
         }
         // FillStresses
         double max_stress = 0.0;
-        if (stages.stress) {
+        if (stages.stress && stages.roller_stress) {
+          // internal::FillStresses' p of each roller, the same operations, branch-free; their largest
+          // is MaxStressKernel's (the root is monotonic and correctly rounded: contact/hertz.h).
+          double* __restrict stress = series->roller_stress_MPa.AddRow();
+          const double length = cam->contact_length(), radius = cam->roller_radius;
+          for (size_t k = 0; k < n; ++k) {
+            const double r_eff = radius * (1.0 - radius * buf->kappa[k]);
+            const double root = std::sqrt(contact::LineContactPeakPressureSquared(force[k], length, r_eff, e_star));
+            const double p = force[k] > 0 ? (r_eff > 0 ? root : kInf) : 0.0;
+            stress[k] = p;
+            max_stress = p > max_stress ? p : max_stress;
+          }
+        } else if (stages.stress) {
           max_stress = internal::MaxStressKernel(int(n), force, buf->kappa.data(), cam->roller_radius,
                                                  cam->contact_length(), e_star);
-          if (stages.roller_stress) {  // internal::FillStresses' p of each roller, the same operations
-            double* stress = series->roller_stress_MPa.AddRow();
-            const double length = cam->contact_length();
-            for (size_t k = 0; k < n; ++k) {
-              stress[k] = 0.0;
-              if (!(force[k] > 0)) continue;
-              const double r_eff = cam->roller_radius * (1.0 - cam->roller_radius * buf->kappa[k]);
-              stress[k] = r_eff > 0 ? contact::LineContactPeakPressure(force[k], length, r_eff, e_star) : kInf;
-            }
-          }
         }
         series->actuating.push_back(actuating);
         series->max_force_N.push_back(max_force);

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -69,6 +70,19 @@ T SumLoadedArmSquares(const std::vector<RollerContact<T>>& contacts, double sign
   return s;
 }
 
+// C of one cam (the header's law): C_B = T_o / Σ a_Bj² and, from the cam's moment balance,
+// C_A = C_B (m_B/n_B) Σ a_Bj² / ((m_A/n_A) Σ a_Ai²), written so (its value is
+// T_o (m_B/n_B) / ((m_A/n_A) Σ a_Ai²); the written form's rounding is every result's since the
+// start). The output cam's needs only its own contacts (AnalyzeSide).
+template <typename T>
+T ForceScale(const Reducer<T>& r, Side side, const LoadCase& load, const T& sum_a, const T& sum_b) {
+  const T c_b = T(load.output_torque_Nmm) / sum_b;
+  if (side == Side::kOutput) return c_b;
+  const double ratio_b = double(r.output.lobes) / r.output.rollers;
+  const double ratio_a = double(r.input.lobes) / r.input.rollers;
+  return c_b * T(ratio_b) * sum_b / (T(ratio_a) * sum_a);
+}
+
 template <typename T>
 void FillForces(SideLoads<T>& side, double sign, const T& proportionality, double arm_tolerance) {
   side.proportionality = proportionality;
@@ -121,10 +135,10 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
   const T sum_b = internal::SumLoadedArmSquares(out.output.contacts, sign_b);
   if (!(Value(sum_a) > 0) || !(Value(sum_b) > 0))
     throw std::domain_error("no roller of a turret can carry load at this input angle");
-  const T c_b = T(load.output_torque_Nmm) / sum_b;
+  const T c_a = internal::ForceScale(r, Side::kInput, load, sum_a, sum_b);
+  const T c_b = internal::ForceScale(r, Side::kOutput, load, sum_a, sum_b);
   const double ratio_b = double(r.output.lobes) / r.output.rollers;
   const double ratio_a = double(r.input.lobes) / r.input.rollers;
-  const T c_a = c_b * T(ratio_b) * sum_b / (T(ratio_a) * sum_a);
   const double tol_a = 1e-9 * Value(r.input.turret_radius), tol_b = 1e-9 * Value(r.output.turret_radius);
   internal::FillForces(out.input, sign_a, c_a, tol_a);
   internal::FillForces(out.output, sign_b, c_b, tol_b);
@@ -166,6 +180,32 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
       out.efficiency = Efficiency(T(1.0), unit_torque, ratio);
     }
   }
+  return out;
+}
+
+/// One cam's contacts, forces and (Stages::stress) stresses at input angle θ [rad]: bit for bit
+/// AnalyzeAngle's SideLoads of that cam. The output cam's scale needs only its own contacts (half
+/// AnalyzeAngle's work); the input cam's takes the output's Σ a² too (internal::ForceScale's
+/// written form). Stages::efficiency needs both cams' forces: not here.
+/// Throws std::domain_error when no roller of a turret it uses can carry load.
+template <typename T>
+SideLoads<T> AnalyzeSide(const Reducer<T>& r, const Material& material, const LoadCase& load, Side side,
+                         const T& theta, const Stages& stages = {true, true, false}) {
+  if (stages.efficiency) throw std::invalid_argument("lcr::AnalyzeSide: the efficiency needs both cams (AnalyzeAngle)");
+  SideLoads<T> out;
+  out.contacts = RollerContacts(r, side, theta);
+  if (!stages.forces && !stages.stress) return out;
+  const double sign = LoadedArmSign(r, side);
+  const T sum = internal::SumLoadedArmSquares(out.contacts, sign);
+  const T other = side == Side::kOutput ? sum
+                                        : internal::SumLoadedArmSquares(RollerContacts(r, Side::kOutput, theta),
+                                                                        LoadedArmSign(r, Side::kOutput));
+  if (!(Value(sum) > 0) || !(Value(other) > 0))
+    throw std::domain_error("no roller of a turret can carry load at this input angle");
+  const T scale = side == Side::kOutput ? internal::ForceScale(r, side, load, T(0.0), sum)
+                                        : internal::ForceScale(r, side, load, sum, other);
+  internal::FillForces(out, sign, scale, 1e-9 * Value(r.side(side).turret_radius));
+  if (stages.stress) internal::FillStresses(out, r.side(side), material.composite_modulus_MPa());
   return out;
 }
 
