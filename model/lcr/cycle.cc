@@ -121,8 +121,6 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
   const std::vector<Vec2<double>> slots_a = internal::Slots(r.input), slots_b = internal::Slots(r.output);
   if (any_stage) internal::FillCentres(buf_a, r, Side::kInput, slots_a, 0.0);  // the fixed turret stands
   const double sign_a = LoadedArmSign(r, Side::kInput), sign_b = LoadedArmSign(r, Side::kOutput);
-  const double ratio_b = double(r.output.lobes) / r.output.rollers;
-  const double ratio_a = double(r.input.lobes) / r.input.rollers;
   const double tol_a = 1e-9 * r.input.turret_radius, tol_b = 1e-9 * r.output.turret_radius;
   const double e_star = material.composite_modulus_MPa();
   const double ratio = std::abs(SpeedReductionRatio(r));
@@ -198,8 +196,9 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
       if (stages.efficiency) {
         const bool unloaded = load.output_torque_Nmm == 0.0;
         double px = 0.0, py = 0.0;  // per_torque, summed in AnalyzeAngle's order
-        const double unit_b = 1.0 / sum_b;
-        const double unit_a = unit_b * ratio_b * sum_b / (ratio_a * sum_a);
+        const LoadCase unit_torque_load{1.0};  // C per N·mm of output torque (AnalyzeAngle's)
+        const double unit_a = internal::ForceScale(r, Side::kInput, unit_torque_load, sum_a, sum_b);
+        const double unit_b = internal::ForceScale(r, Side::kOutput, unit_torque_load, sum_a, sum_b);
         for (auto [buf, c] : {std::pair{&buf_a, unit_a}, std::pair{&buf_b, unit_b}})
           for (size_t k = 0; k < buf->loaded.size(); ++k) {
             const double w = c * buf->loaded[k];

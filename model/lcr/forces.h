@@ -137,8 +137,6 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
     throw std::domain_error("no roller of a turret can carry load at this input angle");
   const T c_a = internal::ForceScale(r, Side::kInput, load, sum_a, sum_b);
   const T c_b = internal::ForceScale(r, Side::kOutput, load, sum_a, sum_b);
-  const double ratio_b = double(r.output.lobes) / r.output.rollers;
-  const double ratio_a = double(r.input.lobes) / r.input.rollers;
   const double tol_a = 1e-9 * Value(r.input.turret_radius), tol_b = 1e-9 * Value(r.output.turret_radius);
   internal::FillForces(out.input, sign_a, c_a, tol_a);
   internal::FillForces(out.output, sign_b, c_b, tol_b);
@@ -153,8 +151,9 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
     // T_o → 0⁺: computed from the load per unit torque (0 when a cam weight must still be carried).
     const bool unloaded = load.output_torque_Nmm == 0.0;
     Vec2<T> per_torque(T(0.0), T(0.0));  // G per N·mm of output torque
-    const T unit_b = T(1.0) / sum_b;
-    const T unit_a = unit_b * T(ratio_b) * sum_b / (T(ratio_a) * sum_a);
+    const LoadCase unit_torque_load{1.0};  // C per N·mm of output torque: the same law at T_o = 1
+    const T unit_a = internal::ForceScale(r, Side::kInput, unit_torque_load, sum_a, sum_b);
+    const T unit_b = internal::ForceScale(r, Side::kOutput, unit_torque_load, sum_a, sum_b);
     for (const auto& [side, sign, c] :
          {std::tuple{&out.input, sign_a, unit_a}, std::tuple{&out.output, sign_b, unit_b}})
       for (const auto& contact : side->contacts)
@@ -202,8 +201,9 @@ SideLoads<T> AnalyzeSide(const Reducer<T>& r, const Material& material, const Lo
                                                                         LoadedArmSign(r, Side::kOutput));
   if (!(Value(sum) > 0) || !(Value(other) > 0))
     throw std::domain_error("no roller of a turret can carry load at this input angle");
-  const T scale = side == Side::kOutput ? internal::ForceScale(r, side, load, T(0.0), sum)
-                                        : internal::ForceScale(r, side, load, sum, other);
+  // The output cam's `other` is its own sum (ForceScale's output branch reads Σ a_B² only).
+  const T scale = side == Side::kInput ? internal::ForceScale(r, side, load, sum, other)
+                                       : internal::ForceScale(r, side, load, other, sum);
   internal::FillForces(out, sign, scale, 1e-9 * Value(r.side(side).turret_radius));
   if (stages.stress) internal::FillStresses(out, r.side(side), material.composite_modulus_MPa());
   return out;
