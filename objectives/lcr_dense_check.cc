@@ -170,10 +170,15 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
         const lcr::SideSeries& side = k == 0 ? series.input : series.output;
         const std::vector<double>& v = quantity == 0 ? side.roller_force_N.values() : side.roller_stress_MPa.values();
         const double limit = quantity == 0 ? lim.roller_load_N : lim.contact_stress_MPa;
-        const double vmax = *std::max_element(v.begin(), v.end());
+        // The largest value of every (angle, roller) is the cycle's maximum found above (each row's
+        // maximum is taken from 0 over values >= 0: the same number), and a row whose maximum is
+        // below the threshold holds no peak.
+        const std::vector<double>& row_max = quantity == 0 ? side.max_force_N : side.max_stress_MPa;
+        const double vmax = quantity == 0 ? c.max_force_N[k] : c.max_stress_MPa[k];
         const double threshold = std::isfinite(limit) ? (1 - kNearFraction) * std::min(limit, vmax) : vmax;
         std::vector<std::pair<double, std::pair<int, int>>> peaks;
         for (int i = 0; i < steps; ++i) {
+          if (!(row_max[size_t(i)] >= threshold)) continue;
           const double* before = &v[size_t(i == 0 ? steps - 1 : i - 1) * n[k]];
           const double* here = &v[size_t(i) * n[k]];
           const double* after = &v[size_t(i + 1 == steps ? 0 : i + 1) * n[k]];

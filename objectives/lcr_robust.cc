@@ -85,6 +85,10 @@ template LcrRobustIncrements<ceres::Jet<double, 6>> RobustIncrements(const LcrSi
                                                                      const lcr::Reducer<ceres::Jet<double, 6>>&,
                                                                      lcr::Side, double,
                                                                      const lcr::SideLoads<ceres::Jet<double, 6>>&);
+template LcrRobustIncrements<ceres::Jet<double, 4>> RobustIncrements(const LcrSizingSpec&,
+                                                                     const lcr::Reducer<ceres::Jet<double, 4>>&,
+                                                                     lcr::Side, double,
+                                                                     const lcr::SideLoads<ceres::Jet<double, 4>>&);
 
 double RobustUndercutIncrement(const LcrRobustRule& rule) {
   const double b = rule.bands.profile_mm;

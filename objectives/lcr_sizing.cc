@@ -23,7 +23,16 @@
 namespace camopt::objectives {
 namespace {
 
-constexpr int kJetSize = 6;  // e, r_dA, r_dB, d_rA, d_rB, R at most
+constexpr int kJetSize = 6;       // e, r_dA, r_dB, d_rA, d_rB, R at most
+constexpr int kJetSizeSmall = 4;  // e, r_dA, r_dB, R: the catalogue's rollers fix d_r
+
+// The evaluator of f at the smallest Jet size that holds num_vars variables: a catalogue sizing's
+// Jacobian carries 4 derivative parts, not 6 (each Jet operation costs about in proportion).
+template <typename F>
+std::unique_ptr<Evaluator> MakeLcrEvaluator(int num_vars, std::vector<OutputBlock> blocks, F f) {
+  if (num_vars <= kJetSizeSmall) return MakeEvaluator<kJetSizeSmall>(num_vars, std::move(blocks), std::move(f));
+  return MakeEvaluator<kJetSize>(num_vars, std::move(blocks), std::move(f));
+}
 
 struct Layout {
   int rollers;       // roller-diameter variables: 0 (catalogue), 1 (same roller), 2 (one per cam)
@@ -446,8 +455,7 @@ Problem MakeLcrSizingProblem(const LcrSizingSpec& spec) {
   p.variables.push_back({"outer_radius_mm", 0.0, r_max, std::min(x0.back(), r_max), 10.0});
 
   const LcrSizingSpec s = spec;
-  p.evaluator = MakeEvaluator<kJetSize>(p.num_vars(), Blocks(spec),
-                                        [s](auto x, auto y) { Evaluate(s, x, y); });
+  p.evaluator = MakeLcrEvaluator(p.num_vars(), Blocks(spec), [s](auto x, auto y) { Evaluate(s, x, y); });
   if (PowerLossObjective(spec)) {
     p.objective = "power_loss_W";
     p.objective_scale = 0.05 * LcrOutputPowerW(spec);  // 5% of the power, as cycloid_min_size's
@@ -528,7 +536,7 @@ Problem MakeLcrLongestLifeProblem(const LcrSizingSpec& spec) {
   p.variables = sizing.variables;
   // t: a factor e^±50 of life spans any design the box holds.
   p.variables[size_t(t_index)] = {"shortest_life_margin", -50.0, 50.0, 0.0, 1.0};
-  p.evaluator = MakeEvaluator<kJetSize>(
+  p.evaluator = MakeLcrEvaluator(
       p.num_vars(), blocks, [s, picked, t_index, n_full, first_life](auto x, auto y) {
         using T = typename decltype(y)::value_type;
         std::vector<T> all(size_t(n_full), T(0.0));
