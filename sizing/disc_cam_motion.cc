@@ -118,8 +118,9 @@ DiscCamMotionOutcome SolveDiscCamMotion(const objectives::DiscCamMotionSpec& spe
   // An objective the accurate model cannot evaluate (the follower leaves the cam in the dwell) is
   // not verified, whatever the limits say.
   out.verified = out.verification.verified() && std::isfinite(out.check.objective);
-  // The study's own law(s) and every named law in place of each optimized segment, accurate.
-  out.start = objectives::CheckMotionDesign(spec, study_design);
+  // The study's own law(s) and every named law in place of each optimized segment, accurate: their
+  // objective alone (what they are compared by; the start's limits are not reported).
+  out.start = objectives::CheckMotionDesign(spec, study_design, /*objective_only=*/true);
   if (spec.objective == objectives::MotionObjective::kPeakJerk)
     for (const objectives::OptimizedSegment& o : spec.segments) {
       const auto ch = motion::Characteristics(study_design.motion.segments()[size_t(o.segment)].law);

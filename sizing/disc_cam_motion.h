@@ -35,7 +35,7 @@ struct DiscCamMotionOutcome {
   objectives::Verification verification;
   objectives::MotionFastLimits fast;
   int rounds = 0;
-  objectives::MotionAccurate start;  ///< the study's own law(s), accurate
+  objectives::MotionAccurate start;  ///< the study's own law(s): the objective, accurate (no limit checks)
   std::vector<NamedLawValue> named_laws;
 };
 
