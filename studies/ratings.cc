@@ -40,10 +40,6 @@ struct Capacity {
   }
 };
 
-nlohmann::json Optional(const std::optional<double>& x) {
-  return x && std::isfinite(*x) ? nlohmann::json(*x) : nlohmann::json(nullptr);
-}
-
 }  // namespace
 
 double ParabolicPeak(const std::vector<double>& f) {
@@ -191,67 +187,50 @@ void SizedRatingsBlock::SetMomentary(double required_Nm, double static_safety, d
   momentary_met = met_;
 }
 
-namespace {
-
-void AddRatingsJson(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
-                    double ratio, bool estimate_error, nlohmann::json& j) {
-  if (!g) {
-    for (const char* key : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"}) j[key] = nullptr;
-    j["ratings"] = {{"error", failed}};
-    return;
-  }
-  j["rated_torque_Nm"] = g->rated_torque_Nm;
-  j["peak_torque_Nm"] = Optional(g->peak_torque_Nm);
-  j["momentary_torque_Nm"] = Optional(g->momentary_torque_Nm);
-  nlohmann::json d = {
-      {"rated_life_h", in.rated_life_h},
-      {"rated_output_speed_rpm", in.rated_output_speed_rpm},
-      {"rated_input_speed_rpm", in.rated_output_speed_rpm * ratio},
-      {"rated_by", g->rated_by},
-      {"L10h_at_rated_torque", Optional(g->rated_L10h)},
-      {"peak_limited_by", g->peak_torque_Nm ? nlohmann::json(g->peak_by) : nlohmann::json(g->peak_note)},
-      {"momentary_static_safety", in.momentary_static_safety},
-      {"momentary_limited_by", g->momentary_torque_Nm ? nlohmann::json(g->momentary_by) : nlohmann::json(g->momentary_note)},
-      {"momentary_peaks_allowed", Optional(g->momentary_peaks_allowed)},
-      {"allowable_output_speed_rpm", Optional(g->allowable_output_speed_rpm)},
-      {"allowable_output_speed", g->allowable_speed_note},
-      {"evaluations", g->evaluations},
-      {"estimated_error",
-       estimate_error
-           ? nlohmann::json{{"rated_torque_Nm", Optional(g->rated_error_Nm)},
-                            {"peak_torque_Nm", Optional(g->peak_error_Nm)},
-                            {"momentary_torque_Nm", Optional(g->momentary_error_Nm)},
-                            {"method", !g->error_method.empty() ? g->error_method
-                                       : g->error_crank_estimated
-                                           ? "the ratings on the refined crank angles (the study's and the half-step-"
-                                             "shifted): |refined - the study's angles| + |the study's angles - coarser "
-                                             "grid|, each rating solved again, + the search's bracket (1e-6 of the torque)"
-                                           : "|fine - coarser grid|, each rating solved again (the angles' part not "
-                                             "estimated), + the search's bracket (1e-6 of the torque)"}}
-           : nlohmann::json(nullptr)},
-      {"definitions",
-       "rated torque: the output torque at which the rated bearings' shortest L10 at the rated output speed equals "
-       "the rated life (one analysis per trial torque, solved, not scaled); peak torque: the largest torque within "
-       "limits.contact_stress_MPa and limits.roller_load_N; momentary torque: the largest torque at which every "
-       "rated bearing keeps s0 = C0/P0max >= momentary_static_safety; momentary peaks allowed: 1e4 / (2 (n R / 60) "
-       "t), n the output speed at the peak, R the ratio, t its duration: the strain-wave catalogues' count of input "
-       "revolutions under peak torque (docs/ratings.md)"}};
-  if (in.momentary_peaks)
-    d["momentary_peak"] = {{"output_speed_rpm", in.momentary_peaks->output_speed_rpm},
-                           {"duration_s", in.momentary_peaks->duration_s}};
-  j["ratings"] = d;
-}
-
-}  // namespace
-
 void RatingsKeys::Set(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed,
                       double ratio, bool estimate_error) {
-  nlohmann::json j = nlohmann::json::object();
-  AddRatingsJson(in, g, failed, ratio, estimate_error, j);
-  rated_torque_Nm = j.at("rated_torque_Nm");
-  peak_torque_Nm = j.at("peak_torque_Nm");
-  momentary_torque_Nm = j.at("momentary_torque_Nm");
-  ratings = j.at("ratings");
+  const auto or_nan = [](const std::optional<double>& x) { return x ? *x : NAN; };
+  if (!g) {
+    rated_torque_Nm = peak_torque_Nm = momentary_torque_Nm = NAN;
+    ratings = StageError{failed};
+    return;
+  }
+  rated_torque_Nm = g->rated_torque_Nm;
+  peak_torque_Nm = or_nan(g->peak_torque_Nm);
+  momentary_torque_Nm = or_nan(g->momentary_torque_Nm);
+  RatingsDetails d;
+  d.rated_life_h = in.rated_life_h;
+  d.rated_output_speed_rpm = in.rated_output_speed_rpm;
+  d.rated_input_speed_rpm = in.rated_output_speed_rpm * ratio;
+  d.rated_by = g->rated_by;
+  d.L10h_at_rated_torque = g->rated_L10h;
+  d.peak_limited_by = g->peak_torque_Nm ? g->peak_by : g->peak_note;
+  d.momentary_static_safety = in.momentary_static_safety;
+  d.momentary_limited_by = g->momentary_torque_Nm ? g->momentary_by : g->momentary_note;
+  d.momentary_peaks_allowed = or_nan(g->momentary_peaks_allowed);
+  d.allowable_output_speed_rpm = or_nan(g->allowable_output_speed_rpm);
+  d.allowable_output_speed = g->allowable_speed_note;
+  d.evaluations = g->evaluations;
+  if (estimate_error)
+    d.estimated_error = RatingsDetails::EstimatedError{
+        or_nan(g->rated_error_Nm), or_nan(g->peak_error_Nm), or_nan(g->momentary_error_Nm),
+        !g->error_method.empty() ? g->error_method
+        : g->error_crank_estimated
+            ? "the ratings on the refined crank angles (the study's and the half-step-shifted): |refined - the "
+              "study's angles| + |the study's angles - coarser grid|, each rating solved again, + the search's "
+              "bracket (1e-6 of the torque)"
+            : "|fine - coarser grid|, each rating solved again (the angles' part not estimated), + the search's "
+              "bracket (1e-6 of the torque)"};
+  d.definitions =
+      "rated torque: the output torque at which the rated bearings' shortest L10 at the rated output speed equals "
+      "the rated life (one analysis per trial torque, solved, not scaled); peak torque: the largest torque within "
+      "limits.contact_stress_MPa and limits.roller_load_N; momentary torque: the largest torque at which every "
+      "rated bearing keeps s0 = C0/P0max >= momentary_static_safety; momentary peaks allowed: 1e4 / (2 (n R / 60) "
+      "t), n the output speed at the peak, R the ratio, t its duration: the strain-wave catalogues' count of input "
+      "revolutions under peak torque (docs/ratings.md)";
+  if (in.momentary_peaks)
+    d.momentary_peak = RatingsDetails::MomentaryPeak{in.momentary_peaks->output_speed_rpm, in.momentary_peaks->duration_s};
+  ratings = d;
 }
 
 DatasheetSection StiffnessDatasheetSection() {
@@ -305,25 +284,6 @@ std::vector<DatasheetSection> RatingsDatasheetSections() {
             {"static equivalent load P_0", "/output_bearing/P0_N", "N"},
             {"static safety f_s", "/output_bearing/static_safety", ""},
             {"tilt under the largest moment", "/output_bearing/tilt_arcmin", "arcmin"}}}};
-}
-
-nlohmann::ordered_json RatingsResultSchema() {
-  using ojson = nlohmann::ordered_json;
-  ojson error = ojson::object();
-  for (const char* k : {"rated_torque_Nm", "peak_torque_Nm", "momentary_torque_Nm"})
-    error[k] = {{"description", "[N·m]"}};
-  ojson p = ojson::object();
-  p["rated_life_h"] = {{"type", "number"}, {"description", "[h]"}};
-  p["rated_output_speed_rpm"] = {{"type", "number"}, {"description", "[rpm]"}};
-  p["rated_by"] = {{"type", "string"}};
-  p["peak_limited_by"] = {{"type", "string"}};
-  p["momentary_limited_by"] = {{"type", "string"}};
-  p["momentary_peaks_allowed"] = {{"type", {"number", "null"}}};
-  p["estimated_error"] = {{"type", {"object", "null"}}, {"properties", error}};
-  p["allowable_output_speed_rpm"] = {{"type", {"number", "null"}}, {"description", "[rpm]"}};
-  p["allowable_output_speed"] = {{"type", "string"}};
-  p["error"] = {{"type", "string"}, {"description", "why the ratings were not solved (then the only key)"}};
-  return {{"type", "object"}, {"properties", p}};
 }
 
 }  // namespace camopt::studies

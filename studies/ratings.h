@@ -4,6 +4,7 @@
 // kind gives what its model says at a torque (RatingPoint), the searches are here.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -99,30 +100,86 @@ RatingsResult SolveRatings(const RatingsInput& in, const PeakLimits& limits,
                            const std::function<RatingPoint(double)>& at, double ratio, double start_torque_Nm,
                            const RatingsResult* near = nullptr);
 
-/// The JSON Schema of RatingsKeys::ratings (result.json's ratings of cycloid_ltca and lcr_analysis):
-/// the keys camopt reads (the datasheet's rows among them).
-nlohmann::ordered_json RatingsResultSchema();
+/// result.json's "ratings" of the kinds that rate a design (cycloid_ltca, lcr_analysis): the rated
+/// point, what limits each torque, the allowable speed, the torques' estimated errors.
+struct RatingsDetails {
+  /// The three torques' discretisation errors (with the kind's error estimates).
+  struct EstimatedError {
+    double rated_torque_Nm = NAN, peak_torque_Nm = NAN, momentary_torque_Nm = NAN;  ///< NaN: null
+    std::string method;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("rated_torque_Nm", &rated_torque_Nm, Field().NullWhenNotFinite().Unit("N·m"));
+      a->Visit("peak_torque_Nm", &peak_torque_Nm, Field().NullWhenNotFinite().Unit("N·m"));
+      a->Visit("momentary_torque_Nm", &momentary_torque_Nm, Field().NullWhenNotFinite().Unit("N·m"));
+      a->Visit("method", &method, Field().Desc("how the errors were estimated"));
+    }
+  };
+  struct MomentaryPeak {
+    double output_speed_rpm = 0, duration_s = 0;
+    template <typename Archive>
+    void Serialize(Archive* a) {
+      a->Visit("output_speed_rpm", &output_speed_rpm, Field().Unit("rpm").Desc("the output speed at the peak"));
+      a->Visit("duration_s", &duration_s, Field().Unit("s").Desc("its duration"));
+    }
+  };
+  double rated_life_h = 0, rated_output_speed_rpm = 0, rated_input_speed_rpm = 0;
+  std::string rated_by;
+  double L10h_at_rated_torque = NAN;  ///< NaN: null
+  std::string peak_limited_by;
+  double momentary_static_safety = 0;
+  std::string momentary_limited_by;
+  double momentary_peaks_allowed = NAN, allowable_output_speed_rpm = NAN;  ///< NaN: null
+  std::string allowable_output_speed;
+  int evaluations = 0;
+  std::optional<EstimatedError> estimated_error;
+  std::string definitions;
+  std::optional<MomentaryPeak> momentary_peak;
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit("rated_life_h", &rated_life_h, Field().Unit("h").Desc("ratings.rated_life_h"));
+    a->Visit("rated_output_speed_rpm", &rated_output_speed_rpm, Field().Unit("rpm").Desc("ratings.rated_output_speed_rpm"));
+    a->Visit("rated_input_speed_rpm", &rated_input_speed_rpm, Field().Unit("rpm").Desc("the rated output speed times the ratio"));
+    a->Visit("rated_by", &rated_by, Field().Desc("the bearing whose L10 is the rated life at the rated torque"));
+    a->Visit("L10h_at_rated_torque", &L10h_at_rated_torque,
+             Field().NullWhenNotFinite().Unit("h").Desc("the shortest L10 at the rated torque (null: unlimited)"));
+    a->Visit("peak_limited_by", &peak_limited_by, Field().Desc("the limit that sets the peak torque, or why there is none"));
+    a->Visit("momentary_static_safety", &momentary_static_safety, Field().Desc("ratings.momentary_static_safety"));
+    a->Visit("momentary_limited_by", &momentary_limited_by,
+             Field().Desc("the bearing that sets the momentary torque, or why there is none"));
+    a->Visit("momentary_peaks_allowed", &momentary_peaks_allowed,
+             Field().NullWhenNotFinite().Desc("the momentary peaks allowed (with ratings.momentary_peak; else null)"));
+    a->Visit("allowable_output_speed_rpm", &allowable_output_speed_rpm,
+             Field().NullWhenNotFinite().Unit("rpm").Desc("the thermal allowable output speed at the rated torque "
+                                                          "(null: not computed)"));
+    a->Visit("allowable_output_speed", &allowable_output_speed, Field().Desc("how it was found, or why not"));
+    a->Visit("evaluations", &evaluations, Field().Desc("analyses at a torque"));
+    a->Visit("estimated_error", &estimated_error,
+             Field().NullWhenAbsent().Desc("the torques' estimated discretisation errors (null: not estimated)"));
+    a->Visit("definitions", &definitions, Field().Desc("what each rating means"));
+    a->Visit("momentary_peak", &momentary_peak, Field().Desc("with ratings.momentary_peak: that peak"));
+  }
+};
 
 /// result.json's top-level rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm and "ratings" of the
 /// kinds that rate a design (cycloid_ltca, lcr_analysis): a member of their result serialized flat
 /// into it (RatingsKeys::Serialize), every key absent without "ratings".
 struct RatingsKeys {
-  /// A number or null each; "ratings": the details (`estimate_error`: its estimated_error block), or
-  /// {"error": why} when `failed` says why there is no g.
-  std::optional<nlohmann::json> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm, ratings;
+  /// Each torque (NaN: null, not solved or none); "ratings": the details, or {"error": why} when
+  /// `failed` says why there are none.
+  std::optional<double> rated_torque_Nm, peak_torque_Nm, momentary_torque_Nm;
+  std::optional<OrError<RatingsDetails>> ratings;
   void Set(const RatingsInput& in, const std::optional<RatingsResult>& g, const std::string& failed, double ratio,
            bool estimate_error);
   template <typename Archive>
   void Serialize(Archive* a) {
-    const nlohmann::ordered_json number_or_null = {{"type", {"number", "null"}}};
     a->Visit("rated_torque_Nm", &rated_torque_Nm,
-             Field().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)").Schema(number_or_null));
+             Field().NullWhenNotFinite().Unit("N·m").Desc("rated life at the rated speed (with ratings; null: not solved)"));
     a->Visit("peak_torque_Nm", &peak_torque_Nm,
-             Field().Unit("N·m").Desc("within the contact limits (with ratings; null: none)").Schema(number_or_null));
+             Field().NullWhenNotFinite().Unit("N·m").Desc("within the contact limits (with ratings; null: none)"));
     a->Visit("momentary_torque_Nm", &momentary_torque_Nm,
-             Field().Unit("N·m").Desc("within the static ratings (with ratings; null: none)").Schema(number_or_null));
-    a->Visit("ratings", &ratings,
-             Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)").Schema(RatingsResultSchema()));
+             Field().NullWhenNotFinite().Unit("N·m").Desc("within the static ratings (with ratings; null: none)"));
+    a->Visit("ratings", &ratings, Field().Desc("the catalogue's ratings (with ratings; docs/ratings.md)"));
   }
 };
 

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "studies/archive.h"
+#include "studies/ratings.h"
 #include "tests/test_util.h"
 
 namespace lcr_ratings_test {
@@ -182,6 +184,52 @@ TEST(LcrRatings, EstimatedErrorsBoundTheConvergedRatings) {
                 std::abs(f - c), estimate);
     EXPECT_LE(std::abs(f - c), estimate + 1e-9 * c) << key;
   }
+}
+
+// The ratings keys as result.json has them (RatingsKeys, declared once): without a solution every
+// torque null and {"error": why} alone; with one, the numbers set (an absent rating null) and only
+// keys the result schema declares, every key it requires among them.
+TEST(LcrRatings, RatingsKeysWriteTheErrorAloneOrTheDeclaredKeys) {
+  namespace st = camopt::studies;
+  st::RatingsInput in;
+  in.rated_life_h = 6000;
+  in.rated_output_speed_rpm = 15;
+  st::RatingsKeys failed;
+  failed.Set(in, std::nullopt, "no torque reaches the rated life", 30.0, true);
+  EXPECT_EQ(st::WriteResult(failed),
+            nlohmann::json::parse(R"({"rated_torque_Nm": null, "peak_torque_Nm": null, "momentary_torque_Nm": null,
+                                      "ratings": {"error": "no torque reaches the rated life"}})"));
+
+  st::RatingsResult g;
+  g.rated_torque_Nm = 120.0;
+  g.rated_by = "input_roller";
+  g.rated_L10h = 6000.0;
+  g.peak_torque_Nm = 300.0;
+  g.peak_by = "contact_stress_MPa";
+  g.momentary_note = "no static rating";
+  g.evaluations = 12;
+  g.rated_error_Nm = 0.5;
+  st::RatingsKeys ok;
+  ok.Set(in, g, "", 30.0, true);
+  const nlohmann::json j = st::WriteResult(ok);
+  EXPECT_EQ(j["rated_torque_Nm"], 120.0);
+  EXPECT_EQ(j["peak_torque_Nm"], 300.0);
+  EXPECT_TRUE(j["momentary_torque_Nm"].is_null());
+  const nlohmann::json& d = j["ratings"];
+  EXPECT_FALSE(d.contains("error"));
+  EXPECT_EQ(d["rated_input_speed_rpm"], 450.0);
+  EXPECT_EQ(d["peak_limited_by"], "contact_stress_MPa");
+  EXPECT_EQ(d["momentary_limited_by"], "no static rating");
+  EXPECT_TRUE(d["allowable_output_speed_rpm"].is_null());
+  EXPECT_EQ(d["estimated_error"]["rated_torque_Nm"], 0.5);
+  EXPECT_TRUE(d["estimated_error"]["peak_torque_Nm"].is_null());
+  EXPECT_FALSE(d.contains("momentary_peak"));
+
+  nlohmann::ordered_json schema = nlohmann::ordered_json::object();
+  st::RatingsDetails details;
+  st::ResultSchemaEmitter::Describe(&details, st::Field(), schema);
+  for (const auto& [key, value] : d.items()) EXPECT_TRUE(schema["properties"].contains(key)) << key;
+  for (const auto& key : schema["required"]) EXPECT_TRUE(d.contains(key.get<std::string>())) << key;
 }
 
 }  // namespace lcr_ratings_test
