@@ -80,12 +80,12 @@ LifeBlock LifeBlockOf(const LifeSpec& spec, const LifeResult& l) {
   }
   if (l.oil) {
     lj.shortest_L_nm_h = shortest_nm.empty() ? NAN : shortest_nm_h;
-    lj.shortest_L_nm_bearing = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+    if (shortest_nm.empty()) lj.shortest_L_nm_bearing = nullptr;
+    else lj.shortest_L_nm_bearing = shortest_nm;
   }
   lj.duty_cycle = DutyCycleEchoOf(spec.lines);
   lj.mean_input_speed_rpm = l.mean_input_speed_rpm;
-  lj.output_mechanism.pin_count =
-      spec.output.pin_count > 0 ? nlohmann::json(spec.output.pin_count) : nlohmann::json("continuous");
+  lj.output_mechanism.pin_count = LifeOutputMechanism::PinCount(spec.output.pin_count);
   lj.output_mechanism.pin_circle_radius_mm = spec.output.pin_circle_radius_mm;
   lj.output_mechanism.model =
       spec.output.pin_count > 0

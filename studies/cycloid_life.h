@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -47,13 +48,18 @@ LifeResult RunLife(const LifeSpec& spec, const cycloid::LoadedTca& tca, const st
 /// "continuous") and circle radius, and the model in words (cycloid_ltca, cycloid_crowning_tuning)
 /// or whether the circle is inside the sized disc's root (cycloid_min_size).
 struct LifeOutputMechanism {
-  nlohmann::json pin_count = 0;  ///< a whole number, or "continuous"
+  std::variant<int, std::string> pin_count = 0;  ///< a whole number, or "continuous"
+  /// pin_count of `pins` output pins (0: the continuous limit).
+  static std::variant<int, std::string> PinCount(int pins) {
+    if (pins > 0) return pins;
+    return std::string("continuous");
+  }
   double pin_circle_radius_mm = 0;
   std::optional<std::string> model;
   std::optional<bool> inside_root_radius;
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit("pin_count", &pin_count, Field().Schema({{"type", {"integer", "string"}}}).Desc("the output pins, or \"continuous\" (the continuous limit)"));
+    a->Visit("pin_count", &pin_count, Field().Desc("the output pins, or \"continuous\" (the continuous limit)"));
     a->Visit("pin_circle_radius_mm", &pin_circle_radius_mm, Field().Unit("mm").Desc("R_w"));
     a->Visit("model", &model, Field().Desc("the pins' force law"));
     a->Visit("inside_root_radius", &inside_root_radius,
@@ -93,7 +99,7 @@ struct CycloidLives {
 /// given C_u and D_pw (AddModifiedLife) and the shortest of those.
 struct LifeBlock : CycloidLives {
   std::optional<double> shortest_L_nm_h;
-  std::optional<nlohmann::json> shortest_L_nm_bearing;
+  std::optional<std::variant<std::string, std::nullptr_t>> shortest_L_nm_bearing;  ///< with a lubricant
   double mean_input_speed_rpm = 0;
   LifeOutputMechanism output_mechanism;
   int crank_bearing_samples_per_line = 0;
@@ -106,8 +112,7 @@ struct LifeBlock : CycloidLives {
     const Field hours = Field().NullWhenNotFinite().Unit("h");
     a->Visit("shortest_L_nm_h", &shortest_L_nm_h,
              Field(hours).Desc("with a lubricant: the shortest modified life computed (null: none)"));
-    a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing,
-             Field().Schema({{"type", {"string", "null"}}}).Desc("with a lubricant: its bearing (null: none)"));
+    a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing, Field().Desc("with a lubricant: its bearing (null: none)"));
     a->Visit("mean_input_speed_rpm", &mean_input_speed_rpm, Field().Unit("rpm"));
     a->Visit("output_mechanism", &output_mechanism, Field());
     a->Visit("crank_bearing_samples_per_line", &crank_bearing_samples_per_line, Field());

@@ -1038,8 +1038,7 @@ cycloid_common::SizingLifeBlock SizingLifeOf(const Study& s, const cycloid::Driv
   lj.duty_cycle = DutyCycleEchoOf(life.lines);
   const double root_radius = d.roller_position_radius_mm + d.delta_position_mm - d.eccentricity_mm -
                              d.roller_radius_mm - d.delta_radius_mm;
-  lj.output_mechanism.pin_count =
-      life.output.pin_count > 0 ? nlohmann::json(life.output.pin_count) : nlohmann::json("continuous");
+  lj.output_mechanism.pin_count = cycloid_common::LifeOutputMechanism::PinCount(life.output.pin_count);
   lj.output_mechanism.pin_circle_radius_mm = life.output.pin_circle_radius_mm;
   lj.output_mechanism.inside_root_radius = life.output.pin_circle_radius_mm < root_radius;
   lj.efficiency = s.spec.lubrication ? "best.accurate.efficiency (the lubricated losses, docs/lubrication.md)"

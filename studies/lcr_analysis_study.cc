@@ -1444,7 +1444,8 @@ LifeBlock LifeBlockOf(const Study& st, const LifeResult& l) {
   }
   if (l.oil) {
     lj.shortest_L_nm_h = shortest_nm.empty() ? NAN : shortest_nm_h;
-    lj.shortest_L_nm_bearing = shortest_nm.empty() ? nlohmann::json(nullptr) : nlohmann::json(shortest_nm);
+    if (shortest_nm.empty()) lj.shortest_L_nm_bearing = nullptr;
+    else lj.shortest_L_nm_bearing = shortest_nm;
   }
   return lj;
 }

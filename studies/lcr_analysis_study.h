@@ -6,6 +6,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -444,7 +445,7 @@ struct LifeBlock {
   std::optional<double> life_h;
   std::vector<LifeTableRow> table;
   std::optional<double> shortest_L_nm_h;
-  std::optional<nlohmann::json> shortest_L_nm_bearing;
+  std::optional<std::variant<std::string, std::nullptr_t>> shortest_L_nm_bearing;  ///< with a lubricant
   template <typename Archive>
   void Serialize(Archive* a) {
     const Field hours = Field().NullWhenNotFinite().Unit("h");
@@ -470,8 +471,7 @@ struct LifeBlock {
     a->Visit("table", &table, Field().Desc("report.html's and datasheet.html's rows"));
     a->Visit("shortest_L_nm_h", &shortest_L_nm_h,
              Field(hours).Desc("with a lubricant: the shortest modified life computed (null: none)"));
-    a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing,
-             Field().Schema({{"type", {"string", "null"}}}).Desc("with a lubricant: its bearing (null: none)"));
+    a->Visit("shortest_L_nm_bearing", &shortest_L_nm_bearing, Field().Desc("with a lubricant: its bearing (null: none)"));
   }
 };
 
