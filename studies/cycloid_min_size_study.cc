@@ -562,7 +562,7 @@ void ParseSizingLife(const Node& root, const Input& in, Study& s) {
   s.ratings = in.ratings;
   if (in.torsional_dynamics) {
     (void)ParseTorsionalDynamics(root["torsional_dynamics"], *in.torsional_dynamics);  // its own rules, exit 2
-    s.torsional_dynamics = root.json()["torsional_dynamics"];
+    s.torsional_dynamics = in.torsional_dynamics;
   }
   if (in.ratings) {
     CheckSizingRatingsAlone(root, in.limits.life_h.has_value(), in.duty_cycle.has_value());
@@ -631,7 +631,7 @@ void ParseSizingLubrication(const Node& root, const Input& in, Study& s) {
   s.spec.lubrication = l;
   s.spec.limits.min_efficiency = in.limits.min_efficiency.value_or(0.0);
   s.spec.limits.max_oil_temperature_C = in.limits.max_oil_temperature_C.value_or(kInf);
-  s.lubrication_blocks = LubricationBlocks(root);
+  s.lubrication_blocks = {in.lubricant, in.surfaces, in.bearing_friction};
 }
 
 void ParseSizingOutput(const Node& root, const Input& in, const std::map<std::string, Field>& fields, Study& s) {
@@ -839,12 +839,12 @@ void FillResult(const Study& s, Result& r);
 void CheckTorsionalDynamics(const Study& s, Result& r, const RunContext& ctx) {
   nlohmann::json j = BestCycloidLtcaStudy(s, r);
   j.erase("ratings");
-  const nlohmann::json& block = s.torsional_dynamics;
-  const bool limited = block.contains("max_dynamic_factor");
+  const std::optional<double> max_factor = s.torsional_dynamics->max_dynamic_factor;
+  const bool limited = max_factor.has_value();
   objectives::VerifiedLimit c;
   c.limit = "max_dynamic_factor";
   c.where = "the sweep's largest dynamic overload factor (cycloid_ltca's torsional model on the reported design)";
-  c.limit_value = limited ? block["max_dynamic_factor"].get<double>() : 0.0;
+  c.limit_value = max_factor.value_or(0.0);
   c.accurate_value = std::numeric_limits<double>::quiet_NaN();
   c.fast_value = std::numeric_limits<double>::quiet_NaN();
   c.upper = true;
@@ -919,7 +919,7 @@ Result Run(const Study& s, const RunContext& ctx) {
                            Format(k.accurate.stress_MPa, 5) +
                            " MPa (refine analysis.grid or analysis.crank_angles_per_mesh_period)");
   }
-  if (!r.outcome.x.empty() && !s.torsional_dynamics.is_null()) CheckTorsionalDynamics(s, r, ctx);
+  if (!r.outcome.x.empty() && s.torsional_dynamics) CheckTorsionalDynamics(s, r, ctx);
   progress.Done();
   r.blocking_message = BlockingMessage(s, r.outcome);
   FillResult(s, r);
@@ -1218,7 +1218,7 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     if (life.output.pin_count > 0) om["pin_count"] = life.output.pin_count;
     a["output_mechanism"] = om;
   }
-  if (!s.torsional_dynamics.is_null()) a["torsional_dynamics"] = s.torsional_dynamics;
+  if (s.torsional_dynamics) a["torsional_dynamics"] = WriteJson(*s.torsional_dynamics);
   if (s.ratings)  // cycloid_ltca solves the design's ratings (docs/ratings.md)
     a["ratings"] = {{"rated_life_h", s.ratings->rated_life_h},
                     {"rated_output_speed_rpm", s.ratings->rated_output_speed_rpm},
@@ -1236,7 +1236,7 @@ nlohmann::json CycloidLtcaStudyOf(const Study& s, const cycloid::Drive& design, 
     a["stiffness"] = {{"rated_torque_Nm", s.design_torque_Nm}};
   }
   if (s.spec.lubrication) {  // the lubricated losses at the same speed (cycloid_ltca takes one speed, no duty cycle)
-    for (const auto& [key, block] : s.lubrication_blocks.items()) a[key] = block;
+    s.lubrication_blocks.WriteTo(a);
     a["load"]["input_speed_rpm"] = s.spec.lubrication->input_speed_rpm;
     a.erase("duty_cycle");
     if (!a.contains("output_mechanism")) {

@@ -339,13 +339,13 @@ struct Study {
   bool ratio_given = false;          ///< target.speed_ratio (else target.teeth)
   double bore_diameter_mm = 0;       ///< limits.bore_diameter_mm (0: none)
   std::string backend = "ipopt";     ///< as in the file: "ipopt" or "slsqp"
-  /// "lubricant", "surfaces", "bearing_friction" as in the file (the best design's cycloid_ltca study
-  /// takes them); null without lubricant.
-  nlohmann::json lubrication_blocks;
+  /// "lubricant", "surfaces", "bearing_friction" as read (the best design's cycloid_ltca study takes
+  /// them); none without lubricant.
+  LubricationEcho<CycloidBearingFrictionInput> lubrication_blocks;
   /// "ratings": the rated point the life rows hold (spec.life's one line, spec.limits.life_h).
   std::optional<SizingRatingsInput> ratings;
-  /// "torsional_dynamics" as in the file (null: none): the best design's cycloid_ltca study takes it.
-  nlohmann::json torsional_dynamics;
+  /// "torsional_dynamics" as read (none: not asked): the best design's cycloid_ltca study takes it.
+  std::optional<TorsionalDynamicsInput> torsional_dynamics;
 };
 
 struct Result {

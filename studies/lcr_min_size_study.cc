@@ -510,7 +510,7 @@ void ParseSizingLubrication(const Input& in, const Node& root, Study& s) {
   l.spec.eccentric_bearing = bearings.eccentric ? bearings.eccentric->ToBearing() : PalmgrenBearing{0.0, 0.0, 1.0};
   s.base.lubrication = l;
   s.base.limits.max_oil_temperature_C = in.limits.max_oil_temperature_C.value_or(kInf);
-  s.lubrication_blocks = LubricationBlocks(root);
+  s.lubrication_blocks = {in.lubricant, in.surfaces, in.bearing_friction};
 }
 
 std::array<double, 2> OrderedRange(const std::array<double, 2>& range, const Node& n) {
@@ -828,7 +828,7 @@ nlohmann::json LcrAnalysisStudyOf(const Study& s, const LcrSizingSpec& spec, con
   // and the ratings written below).
   if (spec.limits.life_h > 0) lim["life_h"] = spec.limits.life_h;
   if (spec.lubrication) {  // the lubricated losses at the sizing's speed (written with the lives below)
-    for (const auto& [key, block] : s.lubrication_blocks.items()) a[key] = block;
+    s.lubrication_blocks.WriteTo(a);
     a["load"]["input_speed_rpm"] = spec.lubrication->input_speed_rpm;
     if (spec.limits.min_efficiency > 0) lim["min_efficiency"] = spec.limits.min_efficiency;
     if (std::isfinite(spec.limits.max_oil_temperature_C)) lim["max_oil_temperature_C"] = spec.limits.max_oil_temperature_C;

@@ -427,9 +427,9 @@ struct Study : sizing::LcrSearchSpec {
   std::shared_ptr<const objectives::LcrRobustRule> robust;
   int mc_samples = 200, mc_angle_steps = 720;
   std::uint64_t mc_seed = 1;
-  /// "lubricant", "surfaces", "bearing_friction" as in the file (best_lcr_analysis.json takes them);
-  /// null without lubricant.
-  nlohmann::json lubrication_blocks;
+  /// "lubricant", "surfaces", "bearing_friction" as read (best_lcr_analysis.json takes them); none
+  /// without lubricant.
+  LubricationEcho<LcrBearingFrictionInput> lubrication_blocks;
   /// "ratings": the rated point the life rows hold (base.life's one line, base.limits.life_h).
   std::optional<SizingRatingsInput> ratings;
 };

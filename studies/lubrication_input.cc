@@ -88,13 +88,6 @@ void CheckOilTemperatureLimit(const Node& root, const std::optional<double>& lim
         "lubricant.temperature_C (" + Format(*c.temperature_C) + " °C)");
 }
 
-nlohmann::json LubricationBlocks(const Node& root) {
-  nlohmann::json blocks = nlohmann::json::object();
-  for (const char* block : {"lubricant", "surfaces", "bearing_friction"})
-    if (root.Has(block)) blocks[block] = root[block].json();
-  return blocks;
-}
-
 std::optional<LubricationCommon> ParseLubricationCommon(const Node& root, const std::optional<LubricantInput>& lubricant,
                                                         const std::optional<SurfacesInput>& surfaces,
                                                         const std::optional<EfficiencyMapInput>& map,

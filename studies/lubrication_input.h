@@ -257,9 +257,20 @@ SizingLubrication SizingLubricationOf(const Node& root, const std::optional<doub
   l.balance_limit_C = c.max_oil_temperature_C;
   return l;
 }
-/// The study's "lubricant", "surfaces" and "bearing_friction" blocks as given (a sizing's best design
-/// file carries them).
-nlohmann::json LubricationBlocks(const Node& root);
+/// A sizing kind's "lubricant", "surfaces" and "bearing_friction" as declared (BearingFriction: the
+/// kind's), for the best design's analysis study (best_cycloid_ltca.json, best_lcr_analysis.json):
+/// WriteTo writes each given block with every field the sizing used, defaults spelled out.
+template <typename BearingFriction>
+struct LubricationEcho {
+  std::optional<LubricantInput> lubricant;
+  std::optional<SurfacesInput> surfaces;
+  std::optional<BearingFriction> bearing_friction;
+  void WriteTo(nlohmann::json& study) const {
+    if (lubricant) study["lubricant"] = WriteJson(*lubricant);
+    if (surfaces) study["surfaces"] = WriteJson(*surfaces);
+    if (bearing_friction) study["bearing_friction"] = WriteJson(*bearing_friction);
+  }
+};
 
 /// The "lubrication" block of result.json, declared once.
 struct LubricationResult {
