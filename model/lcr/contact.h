@@ -9,6 +9,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "model/common/geometry.h"
@@ -74,6 +75,15 @@ Vec2<T> PitchPointOfCam(const Reducer<T>& r, Side s, const T& theta) {
   return r.eccentricity * T(r.side(s).pitch_factor()) * U(theta);
 }
 
+/// The unit normal d from a roller centre o toward the cam's pitch point, and 1/|pitch − o| (one
+/// division for both components and κ): the contact normal of RollerContacts, and its arm Cross(o, d).
+template <typename T>
+std::pair<Vec2<T>, T> TowardPitch(const Vec2<T>& pitch, const Vec2<T>& o) {
+  const Vec2<T> v = pitch - o;
+  const T inv_norm = T(1.0) / v.norm();
+  return {v * inv_norm, inv_norm};
+}
+
 /// Contact geometry of every roller of one turret at input angle θ.
 template <typename T>
 std::vector<RollerContact<T>> RollerContacts(const Reducer<T>& r, Side s, const T& theta) {
@@ -84,9 +94,7 @@ std::vector<RollerContact<T>> RollerContacts(const Reducer<T>& r, Side s, const 
   std::vector<RollerContact<T>> out;
   out.reserve(c.rollers);
   for (const Vec2<T>& o : RollerCentres(r, s, theta)) {
-    const Vec2<T> v = pitch - o;
-    const T inv_norm = T(1.0) / v.norm();  // one division for both components and κ
-    const Vec2<T> d = v * inv_norm;
+    const auto [d, inv_norm] = TowardPitch(pitch, o);
     const T cosine = o.dot(ecc) * inv_radius;
     out.push_back({o, d, o + c.roller_radius * d, Cross(o, d),
                    PitchCurvatureAtPitchDistance(c, r.eccentricity, cosine, inv_norm)});

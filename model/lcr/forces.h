@@ -70,6 +70,19 @@ T SumLoadedArmSquares(const std::vector<RollerContact<T>>& contacts, double sign
   return s;
 }
 
+// The same sum from the arms alone (TowardPitch, without the curvatures and contact points): bit
+// for bit SumLoadedArmSquares(RollerContacts(r, s, θ), sign).
+template <typename T>
+T SumLoadedArmSquares(const Reducer<T>& r, Side s, const T& theta, double sign) {
+  const Vec2<T> pitch = PitchPointOfCam(r, s, theta);
+  T sum(0.0);
+  for (const Vec2<T>& o : RollerCentres(r, s, theta)) {
+    const T a = PositivePart(T(sign) * Cross(o, TowardPitch(pitch, o).first));
+    sum += a * a;
+  }
+  return sum;
+}
+
 // C of one cam (the header's law): C_B = T_o / Σ a_Bj² and, from the cam's moment balance,
 // C_A = C_B (m_B/n_B) Σ a_Bj² / ((m_A/n_A) Σ a_Ai²), written so (its value is
 // T_o (m_B/n_B) / ((m_A/n_A) Σ a_Ai²); the written form's rounding is every result's since the
@@ -185,7 +198,7 @@ AngleLoads<T> AnalyzeAngle(const Reducer<T>& r, const Material& material, const 
 /// One cam's contacts, forces and (Stages::stress) stresses at input angle θ [rad]: bit for bit
 /// AnalyzeAngle's SideLoads of that cam. The output cam's scale needs only its own contacts (half
 /// AnalyzeAngle's work); the input cam's takes the output's Σ a² too (internal::ForceScale's
-/// written form). Stages::efficiency needs both cams' forces: not here.
+/// written form), from the output's arms alone. Stages::efficiency needs both cams' forces: not here.
 /// Throws std::domain_error when no roller of a turret it uses can carry load.
 template <typename T>
 SideLoads<T> AnalyzeSide(const Reducer<T>& r, const Material& material, const LoadCase& load, Side side,
@@ -197,7 +210,7 @@ SideLoads<T> AnalyzeSide(const Reducer<T>& r, const Material& material, const Lo
   const double sign = LoadedArmSign(r, side);
   const T sum = internal::SumLoadedArmSquares(out.contacts, sign);
   const T other = side == Side::kOutput ? sum
-                                        : internal::SumLoadedArmSquares(RollerContacts(r, Side::kOutput, theta),
+                                        : internal::SumLoadedArmSquares(r, Side::kOutput, theta,
                                                                         LoadedArmSign(r, Side::kOutput));
   if (!(Value(sum) > 0) || !(Value(other) > 0))
     throw std::domain_error("no roller of a turret can carry load at this input angle");
