@@ -26,7 +26,7 @@ namespace camopt::lcr {
 
 /// Numerator A² + kB² − AB(1+k)c of the pitch-curve curvature κ(c) (A = r_d, B = e k).
 template <typename T>
-T PitchCurvatureNumerator(const CamSide<T>& side, const T& eccentricity, const T& c) {
+[[gnu::flatten]] T PitchCurvatureNumerator(const CamSide<T>& side, const T& eccentricity, const T& c) {
   const double k = side.pitch_factor();
   const T A = side.turret_radius;
   const T B = eccentricity * T(k);
