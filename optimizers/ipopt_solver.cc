@@ -215,7 +215,9 @@ SolverResult SolveIpopt(const objectives::Problem& problem, const SolverOptions&
   }
 
   SolverResult result;
-  if (app->Initialize() != Ipopt::Solve_Succeeded) {
+  // No options file: Initialize() would read ./ipopt.opt from the working folder, whose options
+  // override those above, so a file lying where camopt runs would change its answers unseen.
+  if (app->Initialize(std::string()) != Ipopt::Solve_Succeeded) {
     result.message = "ipopt: initialisation failed";
     return result;
   }

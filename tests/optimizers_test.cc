@@ -2,11 +2,14 @@
 // that cannot converge, and the Ceres least-squares adapter on fits with known answers.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "model/lcr/cycle.h"
 #include "model/lcr/profile.h"
@@ -223,6 +226,25 @@ TEST(Optimizers, MumpsSaveSizeBookkeepingIsSkippedWhereConfigured) {
   optimizers::SolverOptions opt;
   opt.backend = optimizers::Backend::kIpopt;
   EXPECT_NEAR(optimizers::Solve(testing::Hs71(), opt).objective, testing::kHs71Optimum, 1e-6);
+}
+
+// Ipopt reads ./ipopt.opt when it is initialised without a file name, and its options override the
+// program's: camopt's answers must not depend on such a file where it runs.
+TEST(Optimizers, AnIpoptOptionsFileInTheWorkingFolderIsIgnored) {
+  const std::filesystem::path before = std::filesystem::current_path();
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("camopt_ipopt_opt_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "ipopt.opt") << "max_iter 1\ntol 0.5\n";
+  std::filesystem::current_path(folder);
+  optimizers::SolverOptions opt;
+  opt.backend = optimizers::Backend::kIpopt;
+  const optimizers::SolverResult r = optimizers::Solve(testing::Hs71(), opt);
+  std::filesystem::current_path(before);
+  std::filesystem::remove_all(folder);
+  EXPECT_EQ(r.status, SolverStatus::kConverged) << r.message;
+  EXPECT_GT(r.iterations, 1);
+  EXPECT_NEAR(r.objective, testing::kHs71Optimum, 1e-6);
 }
 
 // One spelling per backend; the old "nlopt_" spellings still name their backend, flagged deprecated.
