@@ -21,7 +21,7 @@ struct OilState {
 };
 
 template <typename T>
-OilState<T> OilStateAt(const Lubricant& oil, const T& oil_C) {
+[[gnu::flatten]] OilState<T> OilStateAt(const Lubricant& oil, const T& oil_C) {
   using std::cbrt;
   using std::pow;
   OilState<T> o;

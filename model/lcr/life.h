@@ -86,7 +86,7 @@ inline double TurretSpeedRelativeToCam(const Reducer<double>& r, Side s) {
 /// ψ' is kinematic (lobe and roller counts only). |ρ − r_r| is smooth where ρ > r_r, which holds
 /// wherever the pitch curve does not loop round the roller (lcr::CheckDesign's pitch-point clearance).
 template <typename T>
-T RollerSpinRate(const Reducer<T>& r, Side s, const T& theta, int roller) {
+[[gnu::flatten]] T RollerSpinRate(const Reducer<T>& r, Side s, const T& theta, int roller) {
   using std::abs;
   const CamSide<T>& c = r.side(s);
   const T rho = (PitchPointOfCam(r, s, theta) - RollerCentres(r, s, theta)[size_t(roller)]).norm();

@@ -35,7 +35,7 @@ template <typename T>
 
 /// Pitch-curve curvature κ [1/mm] as a function of c ∈ [−1, 1].
 template <typename T>
-T PitchCurvature(const CamSide<T>& side, const T& eccentricity, const T& c) {
+[[gnu::flatten]] T PitchCurvature(const CamSide<T>& side, const T& eccentricity, const T& c) {
   using std::sqrt;
   const double k = side.pitch_factor();
   const T A = side.turret_radius;
