@@ -116,7 +116,7 @@ struct CamContact {
 /// @param initial_coordinate InitialFollowerCoordinate(cam), taken once by a caller that
 /// evaluates many angles.
 template <typename T>
-CamContact<T> EvaluateCamContact(const DiscCamTpl<T>& cam, const T& theta, const T& initial_coordinate) {
+[[gnu::flatten]] CamContact<T> EvaluateCamContact(const DiscCamTpl<T>& cam, const T& theta, const T& initial_coordinate) {
   using std::sqrt;
   CamContact<T> c;
   c.m = cam.motion.Evaluate(theta);
@@ -154,7 +154,7 @@ CamContact<T> EvaluateCamContact(const DiscCamTpl<T>& cam, const T& theta, const
 
 /// Evaluates the cam at angle theta [rad].
 template <typename T>
-CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
+[[gnu::flatten]] CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
   using std::atan;
   using std::atan2;
   const CamContact<T> c = EvaluateCamContact(cam, theta, InitialFollowerCoordinate(cam));
