@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "model/common/bearing_life.h"
+#include "model/common/scalar.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/life.h"
 #include "model/lcr/lubrication.h"
@@ -190,7 +191,7 @@ T LcrRollerRatingAt(const LcrRollerRating& rating, const T& diameter_mm, const T
 /// The Hertz capacity margin s = (R' − F/c)/r_r of the header for a roller of radius r_r [mm] and
 /// contact length L [mm] under force F [N] at pitch-curve curvature κ [1/mm].
 template <typename T>
-[[gnu::flatten]] T LcrStressMargin(const LcrSizingSpec& s, const T& length, const T& roller_radius, const T& force,
+CAMOPT_FLATTEN T LcrStressMargin(const LcrSizingSpec& s, const T& length, const T& roller_radius, const T& force,
                   const T& curvature) {
   const T capacity_per_radius = contact::LineContactLoadPerRadius(
       T(s.limits.contact_stress_MPa), length, T(s.material.composite_modulus_MPa()));

@@ -48,7 +48,7 @@ T PalmgrenLoadIndependentMoment(const PalmgrenBearing& b, const T& nu, const T& 
 /// M0 as above from ν, n and their powers ν^(2/3), n^(2/3) computed beforehand (n ≥ 0): the same
 /// value, for a sweep over the oil's temperature that takes ν^(2/3) once for many bearings' speeds.
 template <typename T>
-[[gnu::flatten]] T PalmgrenLoadIndependentMoment(const PalmgrenBearing& b, const T& nu, const T& nu_2_3, const T& n_rpm,
+CAMOPT_FLATTEN T PalmgrenLoadIndependentMoment(const PalmgrenBearing& b, const T& nu, const T& nu_2_3, const T& n_rpm,
                                 const T& n_2_3) {
   const double floor_2_3 = std::cbrt(kPalmgrenMinViscositySpeed * kPalmgrenMinViscositySpeed);
   const T nu_n_2_3 = IfThenElse(Compare::kLess, nu * n_rpm, kPalmgrenMinViscositySpeed, T(floor_2_3), T(nu_2_3 * n_2_3));
@@ -78,7 +78,7 @@ struct PalmgrenAtSpeed {
 };
 
 template <typename T>
-[[gnu::flatten]] PalmgrenAtSpeed<T> PalmgrenAt(const PalmgrenBearing& b, const T& n_rpm, const T& p1) {
+CAMOPT_FLATTEN PalmgrenAtSpeed<T> PalmgrenAt(const PalmgrenBearing& b, const T& n_rpm, const T& p1) {
   using std::abs;
   using std::cbrt;
   PalmgrenAtSpeed<T> s;

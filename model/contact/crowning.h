@@ -28,7 +28,7 @@ enum class CrowningType { kNone, kCircular, kPartial, kLogarithmic };
 /// (logarithmic); end_drop: z_m (0 = Lundberg's unbounded form).
 /// @pre |y| < Le/2 for the logarithmic form, |y| − L0/2 < R for the circular ones.
 template <typename T>
-[[gnu::flatten]] T CrowningDrop(CrowningType type, const T& radius, const T& flat_length, const T& coefficient,
+CAMOPT_FLATTEN T CrowningDrop(CrowningType type, const T& radius, const T& flat_length, const T& coefficient,
                const T& effective_length, const T& y, const T& end_drop = T(0.0)) {
   using std::abs;
   using std::exp;

@@ -50,7 +50,7 @@ inline constexpr double kLineRollingForceSpeedExponent = 0.658;
 /// pressure, `entraining_speed` u [mm/s] > 0, `r_eff` R [mm] (1/R = 1/R₁ + 1/R₂), `load_per_length`
 /// w' [N/mm] > 0, `e_star` Hertz's E* [MPa], `alpha` [1/MPa].
 template <typename T>
-[[gnu::flatten]] EhlFilm<T> LineContactFilm(const T& eta0, const T& entraining_speed, const T& r_eff, const T& load_per_length,
+CAMOPT_FLATTEN EhlFilm<T> LineContactFilm(const T& eta0, const T& entraining_speed, const T& r_eff, const T& load_per_length,
                            const T& e_star, const T& alpha) {
   using std::pow;
   const T e_prime = T(2.0) * e_star;
@@ -89,7 +89,7 @@ EhlFilm<T> EllipticalContactFilm(const T& eta0, const T& entraining_speed, const
 /// The rolling (Poiseuille) force per unit length of a line contact [N/mm] (Goksem & Hargreaves
 /// 1978, header): arguments as LineContactFilm; R/α [mm·MPa] gives N/mm.
 template <typename T>
-[[gnu::flatten]] T LineContactRollingForcePerLength(const T& eta0, const T& entraining_speed, const T& r_eff, const T& load_per_length,
+CAMOPT_FLATTEN T LineContactRollingForcePerLength(const T& eta0, const T& entraining_speed, const T& r_eff, const T& load_per_length,
                                    const T& e_star, const T& alpha) {
   using std::pow;
   if (!(Value(alpha) > 0.0)) return T(0.0);  // no pressure–viscosity rise: no film (G = 0), no force

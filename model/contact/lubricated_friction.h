@@ -43,7 +43,7 @@ struct RegimeFriction {
 
 /// The quintic smoothstep s(x) = 6x⁵ − 15x⁴ + 10x³ on [0, 1] (0 below, 1 above): C² at both ends.
 template <typename T>
-[[gnu::flatten]] T QuinticSmoothstep(const T& x) {
+CAMOPT_FLATTEN T QuinticSmoothstep(const T& x) {
   // The pieces join with value and two derivatives (s(0) = 0, s(1) = 1, s' = s'' = 0 at both ends).
   return IfThenElse(Compare::kLessEqual, x, 0.0, T(0.0),
                     IfThenElse(Compare::kGreaterEqual, x, 1.0, T(1.0),

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "model/common/lubricant.h"
+#include "model/common/scalar.h"
 #include "model/contact/ehl.h"
 
 namespace camopt::contact {
@@ -21,7 +22,7 @@ struct OilState {
 };
 
 template <typename T>
-[[gnu::flatten]] OilState<T> OilStateAt(const Lubricant& oil, const T& oil_C) {
+CAMOPT_FLATTEN OilState<T> OilStateAt(const Lubricant& oil, const T& oil_C) {
   using std::cbrt;
   using std::pow;
   OilState<T> o;

@@ -69,7 +69,7 @@ struct ProfilePoint {
 /// The modified tooth profile at curve parameter t [rad] (eqs. 3–4).
 /// @tparam T double or ceres::Jet.
 template <typename T>
-[[gnu::flatten]] ProfilePoint<T> ToothProfile(const DriveTpl<T>& d, const T& t) {
+CAMOPT_FLATTEN ProfilePoint<T> ToothProfile(const DriveTpl<T>& d, const T& t) {
   using std::sqrt;
   const T a = d.roller_position_radius_mm + d.delta_position_mm;
   const T rho = d.roller_radius_mm + d.delta_radius_mm;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "model/common/profile_deviation.h"
+#include "model/common/scalar.h"
 #include "model/cycloid/tooth_profile.h"
 
 namespace camopt::cycloid {
@@ -60,7 +61,7 @@ constexpr double kMinArmFraction = 0.02;
 /// normal (the envelope theorem: the distance to the moved profile falls by d at the closest
 /// point; the normal's tilt by d'/|P'| changes it only at second order).
 template <typename T>
-[[gnu::flatten]] PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho,
+CAMOPT_FLATTEN PairGeometry<T> SolvePairAt(const DriveTpl<T>& d, int i, const T& crank, const Vec2<T>& rel, const T& drho,
                             const profile::NormalDeviation<T>* shape = nullptr) {
   using std::abs;
   using std::sqrt;

@@ -116,7 +116,7 @@ struct CamContact {
 /// @param initial_coordinate InitialFollowerCoordinate(cam), taken once by a caller that
 /// evaluates many angles.
 template <typename T>
-[[gnu::flatten]] CamContact<T> EvaluateCamContact(const DiscCamTpl<T>& cam, const T& theta, const T& initial_coordinate) {
+CAMOPT_FLATTEN CamContact<T> EvaluateCamContact(const DiscCamTpl<T>& cam, const T& theta, const T& initial_coordinate) {
   using std::sqrt;
   CamContact<T> c;
   c.m = cam.motion.Evaluate(theta);
@@ -154,7 +154,7 @@ template <typename T>
 
 /// Evaluates the cam at angle theta [rad].
 template <typename T>
-[[gnu::flatten]] CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
+CAMOPT_FLATTEN CamPoint<T> EvaluateCam(const DiscCamTpl<T>& cam, const T& theta) {
   using std::atan;
   using std::atan2;
   const CamContact<T> c = EvaluateCamContact(cam, theta, InitialFollowerCoordinate(cam));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/common/geometry.h"
+#include "model/common/scalar.h"
 #include "model/lcr/kinematics.h"
 #include "model/lcr/profile.h"
 
@@ -47,7 +48,7 @@ inline const std::vector<Vec2<double>>& TurretSlots(int n) {
 /// one sincos and two products (a few ulp, no accumulation over rollers or angles), instead of one
 /// sincos per roller; the values differ from r_d u(2πi/n + θ_o) only in the last digits.
 template <typename T>
-[[gnu::flatten]] Vec2<T> RotatedSlot(const T& turret_radius, const Vec2<double>& slot, const Vec2<T>& turn) {
+CAMOPT_FLATTEN Vec2<T> RotatedSlot(const T& turret_radius, const Vec2<double>& slot, const Vec2<T>& turn) {
   return turret_radius * Vec2<T>(turn.x() * slot.x() - turn.y() * slot.y(),
                                  turn.y() * slot.x() + turn.x() * slot.y());
 }
@@ -71,14 +72,14 @@ std::vector<Vec2<T>> RollerCentres(const Reducer<T>& r, Side s, const T& theta) 
 
 /// Pitch point I = e k u(θ) of one cam [mm].
 template <typename T>
-[[gnu::flatten]] Vec2<T> PitchPointOfCam(const Reducer<T>& r, Side s, const T& theta) {
+CAMOPT_FLATTEN Vec2<T> PitchPointOfCam(const Reducer<T>& r, Side s, const T& theta) {
   return r.eccentricity * T(r.side(s).pitch_factor()) * U(theta);
 }
 
 /// The unit normal d from a roller centre o toward the cam's pitch point, and 1/|pitch − o| (one
 /// division for both components and κ): the contact normal of RollerContacts, and its arm Cross(o, d).
 template <typename T>
-[[gnu::flatten]] std::pair<Vec2<T>, T> TowardPitch(const Vec2<T>& pitch, const Vec2<T>& o) {
+CAMOPT_FLATTEN std::pair<Vec2<T>, T> TowardPitch(const Vec2<T>& pitch, const Vec2<T>& o) {
   const Vec2<T> v = pitch - o;
   const T inv_norm = T(1.0) / v.norm();
   return {v * inv_norm, inv_norm};

@@ -19,6 +19,7 @@
 #include <tuple>
 #include <vector>
 
+#include "model/common/scalar.h"
 #include "model/contact/hertz.h"
 #include "model/lcr/contact.h"
 #include "model/lcr/friction.h"
@@ -88,7 +89,7 @@ T SumLoadedArmSquares(const Reducer<T>& r, Side s, const T& theta, double sign) 
 // T_o (m_B/n_B) / ((m_A/n_A) Σ a_Ai²); the written form's rounding is every result's since the
 // start). The output cam's needs only its own contacts (AnalyzeSide).
 template <typename T>
-[[gnu::flatten]] T ForceScale(const Reducer<T>& r, Side side, const LoadCase& load, const T& sum_a, const T& sum_b) {
+CAMOPT_FLATTEN T ForceScale(const Reducer<T>& r, Side side, const LoadCase& load, const T& sum_a, const T& sum_b) {
   const T c_b = T(load.output_torque_Nmm) / sum_b;
   if (side == Side::kOutput) return c_b;
   const double ratio_b = double(r.output.lobes) / r.output.rollers;

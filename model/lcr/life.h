@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "model/common/bearing_life.h"
+#include "model/common/scalar.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/transmission_error.h"
 
@@ -86,7 +87,7 @@ inline double TurretSpeedRelativeToCam(const Reducer<double>& r, Side s) {
 /// ψ' is kinematic (lobe and roller counts only). |ρ − r_r| is smooth where ρ > r_r, which holds
 /// wherever the pitch curve does not loop round the roller (lcr::CheckDesign's pitch-point clearance).
 template <typename T>
-[[gnu::flatten]] T RollerSpinRate(const Reducer<T>& r, Side s, const T& theta, int roller) {
+CAMOPT_FLATTEN T RollerSpinRate(const Reducer<T>& r, Side s, const T& theta, int roller) {
   using std::abs;
   const CamSide<T>& c = r.side(s);
   const T rho = (PitchPointOfCam(r, s, theta) - RollerCentres(r, s, theta)[size_t(roller)]).norm();

@@ -40,6 +40,7 @@
 
 #include "model/common/bearing_friction.h"
 #include "model/common/lubricant.h"
+#include "model/common/scalar.h"
 #include "model/common/thermal.h"
 #include "model/contact/ehl.h"
 #include "model/contact/lubricated_friction.h"
@@ -71,7 +72,7 @@ struct ContactSpeeds {
 
 /// The speeds at `contact`, a contact of side `s` of r (RollerContacts at the same angle).
 template <typename T>
-[[gnu::flatten]] ContactSpeeds<T> RollerContactSpeeds(const Reducer<T>& r, Side s, const RollerContact<T>& contact, const T& theta,
+CAMOPT_FLATTEN ContactSpeeds<T> RollerContactSpeeds(const Reducer<T>& r, Side s, const RollerContact<T>& contact, const T& theta,
                                      bool rollers_rotate) {
   using std::abs;
   const T rr = r.side(s).roller_radius;
@@ -191,7 +192,7 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
 
 /// The losses of `k` with the oil in state `oil` (contact::OilStateAt).
 template <typename T>
-[[gnu::flatten]] AngleLosses<T> LossesAt(const AngleKinematics<T>& k, const LubricationSpec& spec, const OilState<T>& oil) {
+CAMOPT_FLATTEN AngleLosses<T> LossesAt(const AngleKinematics<T>& k, const LubricationSpec& spec, const OilState<T>& oil) {
   AngleLosses<T> out;
   for (const auto& b : k.bearings)
     (b.side == 0 ? out.roller_bearings_input : out.roller_bearings_output) +=

@@ -20,13 +20,14 @@
 #include "model/common/geometry.h"
 #include "model/common/profile_deviation.h"
 #include "model/common/roots.h"
+#include "model/common/scalar.h"
 #include "model/lcr/reducer.h"
 
 namespace camopt::lcr {
 
 /// Numerator A² + kB² − AB(1+k)c of the pitch-curve curvature κ(c) (A = r_d, B = e k).
 template <typename T>
-[[gnu::flatten]] T PitchCurvatureNumerator(const CamSide<T>& side, const T& eccentricity, const T& c) {
+CAMOPT_FLATTEN T PitchCurvatureNumerator(const CamSide<T>& side, const T& eccentricity, const T& c) {
   const double k = side.pitch_factor();
   const T A = side.turret_radius;
   const T B = eccentricity * T(k);
@@ -35,7 +36,7 @@ template <typename T>
 
 /// Pitch-curve curvature κ [1/mm] as a function of c ∈ [−1, 1].
 template <typename T>
-[[gnu::flatten]] T PitchCurvature(const CamSide<T>& side, const T& eccentricity, const T& c) {
+CAMOPT_FLATTEN T PitchCurvature(const CamSide<T>& side, const T& eccentricity, const T& c) {
   using std::sqrt;
   const double k = side.pitch_factor();
   const T A = side.turret_radius;

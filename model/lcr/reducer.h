@@ -144,7 +144,7 @@ std::vector<DesignIssue> CheckDesign(const Reducer<T>& r) {
 
 /// Roller gap on a turret: 2 r_d sin(π/n) − d_r [mm].
 template <typename T>
-[[gnu::flatten]] T RollerGap(const CamSide<T>& c) {
+CAMOPT_FLATTEN T RollerGap(const CamSide<T>& c) {
   using std::sin;
   return T(2.0) * c.turret_radius * T(std::sin(kPi / c.rollers)) - T(2.0) * c.roller_radius;
 }

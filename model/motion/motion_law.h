@@ -66,7 +66,7 @@ std::vector<std::string> LawNames();
 /// Piecewise laws pick their piece on the value of u; pieces meet with continuous s, v, a
 /// (C² for modified sine and modified trapezoid), so the derivative is right at the joints.
 template <typename T>
-[[gnu::flatten]] Svaj<T> NormalizedLaw(MotionLaw law, const T& u) {
+CAMOPT_FLATTEN Svaj<T> NormalizedLaw(MotionLaw law, const T& u) {
   using std::cos;
   using std::sin;
   const T pi(kPi);
