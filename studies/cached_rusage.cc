@@ -4,6 +4,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "model/common/build_flags.h"
+
 // Ipopt 3.11 times each of its internal tasks (IpTimedTask.hpp: two getrusage calls at a task's
 // start and two at its end, for its CPU and system time) whether or not its timing statistics are
 // printed, with no option to turn that off; camopt reads none of those times. A line-model sizing
@@ -16,14 +18,7 @@
 // executable (CMakeLists.txt: camopt, camopt_with_test_kind, camopt_tests, camopt_bench), so the
 // shared libraries' calls resolve to it first; the library and the Python module leave the host's
 // getrusage alone. Not under the sanitizers, whose runtime intercepts getrusage itself.
-#if !defined(__SANITIZE_ADDRESS__) && !defined(__has_feature)
-#define CAMOPT_CACHED_RUSAGE 1
-#elif defined(__has_feature)
-#if !__has_feature(address_sanitizer)
-#define CAMOPT_CACHED_RUSAGE 1
-#endif
-#endif
-#ifdef CAMOPT_CACHED_RUSAGE
+#ifndef CAMOPT_SANITIZED_BUILD
 extern "C" int getrusage(__rusage_who_t who, struct rusage* usage) noexcept {
   if (who != RUSAGE_SELF) return static_cast<int>(syscall(SYS_getrusage, who, usage));
   thread_local struct rusage last {};

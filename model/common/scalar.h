@@ -15,6 +15,8 @@
 
 #include <ceres/jet.h>
 
+#include "model/common/build_flags.h"
+
 /// Marks a small model function that runs per angle or per roller over Jets: GCC otherwise calls
 /// `ceres::Jet` products and Eigen's assignments of a Jet's derivative part out of line in it.
 /// `flatten` inlines every call in the function's body; without FMA (no -march) the operations,
@@ -22,14 +24,6 @@
 /// Only in optimised builds without the sanitizers: under ASan's instrumentation the inlined
 /// Jet<32> motion laws took a single compile of objectives/disc_cam_motion.cc past 10 minutes and
 /// 2.7 GB.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define CAMOPT_SANITIZED_BUILD 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define CAMOPT_SANITIZED_BUILD 1
-#endif
 #if defined(__OPTIMIZE__) && !defined(CAMOPT_SANITIZED_BUILD)
 #define CAMOPT_FLATTEN [[gnu::flatten]]
 #else
