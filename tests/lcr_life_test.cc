@@ -2,6 +2,7 @@
 // docs/life.md): roller spin against its closed form (complete elliptic integral), the load
 // periods, a two-line duty cycle by hand through the whole study, the one-line equivalence, and
 // bad input (exit 2 naming the JSON path).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -95,6 +96,36 @@ TEST(LcrLife, LoadsRepeatOverTheirPeriods) {
     EXPECT_NEAR(a.eccentric_load_N.norm(), c.eccentric_load_N.norm(), 1e-9 * 1000);
     EXPECT_NEAR(a.input_torque_Nmm, c.input_torque_Nmm, 1e-9 * 1000);
   }
+}
+
+// The structure-of-arrays path of the bearing loads (lcr::RigidRollerZeroLoads, used by
+// SampleBearingLoad under the rigid law) gives exactly the numbers of the per-angle analysis it
+// replaces (LoadsAtAngle and BearingSpinRate), at the sampled angles and at any others, with and
+// without friction, cam weight and torque.
+TEST(LcrLife, RigidRollerZeroLoadsAreThePerAngleAnalysisBitForBit) {
+  const lcr::Reducer<double> r = LcrII();
+  const Material m = camopt::testing::Steel();
+  std::vector<double> theta;
+  for (int k = 0; k < 97; ++k) theta.push_back(2 * kPi * 1.37 * k / 97 - 0.4);
+  for (const lcr::LoadCase load : {lcr::LoadCase{80e3, 0.05, 0.0}, lcr::LoadCase{80e3, 0.0, 0.0},
+                                   lcr::LoadCase{12e3, 0.08, 35.0}, lcr::LoadCase{0.0, 0.05, 10.0}}) {
+    const lcr::RollerZeroLoads z = lcr::RigidRollerZeroLoads(r, load, theta);
+    ASSERT_EQ(z.input_force_N.size(), theta.size());
+    for (size_t k = 0; k < theta.size(); ++k) {
+      const lcr::LcrAngleLoads a = lcr::LoadsAtAngle(r, m, load, lcr::LoadModel::kRigid, theta[k]);
+      EXPECT_EQ(z.input_force_N[k], a.input_force_N[0]) << k;
+      EXPECT_EQ(z.output_force_N[k], a.output_force_N[0]) << k;
+      EXPECT_EQ(z.eccentric_load_N[k].x(), a.eccentric_load_N.x()) << k;
+      EXPECT_EQ(z.eccentric_load_N[k].y(), a.eccentric_load_N.y()) << k;
+      EXPECT_EQ(z.input_torque_Nmm[k], a.input_torque_Nmm) << k;
+      EXPECT_EQ(z.input_spin_rate[k], lcr::BearingSpinRate(r, lcr::LcrBearing::kInputRoller, theta[k])) << k;
+      EXPECT_EQ(z.output_spin_rate[k], lcr::BearingSpinRate(r, lcr::LcrBearing::kOutputRoller, theta[k])) << k;
+    }
+  }
+  // Loaded somewhere: the comparison is not of zeros.
+  const lcr::RollerZeroLoads z = lcr::RigidRollerZeroLoads(r, lcr::LoadCase{80e3, 0.05, 0.0}, theta);
+  EXPECT_GT(*std::max_element(z.input_force_N.begin(), z.input_force_N.end()), 100.0);
+  EXPECT_GT(*std::max_element(z.output_force_N.begin(), z.output_force_N.end()), 100.0);
 }
 
 // The input roller's equivalent load from the study against the same p-mean written out here from

@@ -95,6 +95,38 @@ void FillContacts(TurretBuffers& b, const Reducer<double>& r, Side s, const Vec2
                 b.cy.data(), b.arm.data(), b.dx.data(), b.dy.data(), b.kappa.data(), b.loaded.data());
 }
 
+/// Both turrets' contacts at θ (u = u(θ)) into the buffers, the output turret's centres first, and
+/// each turret's Σ a² (internal::SumLoadedArmSquares), as AnalyzeAngle has them; throws as it does.
+/// @pre the input turret's centres are in a (they do not move).
+std::pair<double, double> FillTurrets(TurretBuffers& a, TurretBuffers& b, const Reducer<double>& r,
+                                      const std::vector<Vec2<double>>& slots_b, double theta,
+                                      const Vec2<double>& u, double sign_a, double sign_b) {
+  FillCentres(b, r, Side::kOutput, slots_b, theta);
+  FillContacts(a, r, Side::kInput, u, sign_a);
+  FillContacts(b, r, Side::kOutput, u, sign_b);
+  double sum_a = 0.0, sum_b = 0.0;  // SumLoadedArmSquares
+  for (double x : a.loaded) sum_a += x * x;
+  for (double x : b.loaded) sum_b += x * x;
+  if (!(sum_a > 0) || !(sum_b > 0)) throw std::domain_error("no roller of a turret can carry load at this input angle");
+  return {sum_a, sum_b};
+}
+
+/// G per N·mm of output torque (AnalyzeAngle's per_torque, summed in its order) from the contacts
+/// in the buffers and Σ a² of each turret.
+Vec2<double> EccentricLoadPerTorque(const TurretBuffers& a, const TurretBuffers& b, const Reducer<double>& r,
+                                    double sum_a, double sum_b) {
+  double px = 0.0, py = 0.0;
+  const LoadCase unit_torque_load{1.0};  // C per N·mm of output torque (AnalyzeAngle's)
+  const double unit_a = ForceScale(r, Side::kInput, unit_torque_load, sum_a, sum_b);
+  const double unit_b = ForceScale(r, Side::kOutput, unit_torque_load, sum_a, sum_b);
+  for (auto [buf, c] : {std::pair{&a, unit_a}, std::pair{&b, unit_b}})
+    for (size_t k = 0; k < buf->loaded.size(); ++k) {
+      const double w = c * buf->loaded[k];
+      px += w * buf->dx[k], py += w * buf->dy[k];
+    }
+  return {px, py};
+}
+
 }  // namespace
 }  // namespace internal
 
@@ -144,14 +176,7 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
       s.efficiency.push_back(a.efficiency);
     } else {
       const Vec2<double> u = U(theta);
-      internal::FillCentres(buf_b, r, Side::kOutput, slots_b, theta);
-      internal::FillContacts(buf_a, r, Side::kInput, u, sign_a);
-      internal::FillContacts(buf_b, r, Side::kOutput, u, sign_b);
-      double sum_a = 0.0, sum_b = 0.0;  // SumLoadedArmSquares
-      for (double a : buf_a.loaded) sum_a += a * a;
-      for (double a : buf_b.loaded) sum_b += a * a;
-      if (!(sum_a > 0) || !(sum_b > 0))
-        throw std::domain_error("no roller of a turret can carry load at this input angle");
+      const auto [sum_a, sum_b] = internal::FillTurrets(buf_a, buf_b, r, slots_b, theta, u, sign_a, sign_b);
       const double c_a = internal::ForceScale(r, Side::kInput, load, sum_a, sum_b);
       const double c_b = internal::ForceScale(r, Side::kOutput, load, sum_a, sum_b);
       for (auto [series, buf, cam, c, tol] :
@@ -195,16 +220,7 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
       double tangential = 0.0, radial = 0.0, input_torque = 0.0, efficiency = 0.0;
       if (stages.efficiency) {
         const bool unloaded = load.output_torque_Nmm == 0.0;
-        double px = 0.0, py = 0.0;  // per_torque, summed in AnalyzeAngle's order
-        const LoadCase unit_torque_load{1.0};  // C per N·mm of output torque (AnalyzeAngle's)
-        const double unit_a = internal::ForceScale(r, Side::kInput, unit_torque_load, sum_a, sum_b);
-        const double unit_b = internal::ForceScale(r, Side::kOutput, unit_torque_load, sum_a, sum_b);
-        for (auto [buf, c] : {std::pair{&buf_a, unit_a}, std::pair{&buf_b, unit_b}})
-          for (size_t k = 0; k < buf->loaded.size(); ++k) {
-            const double w = c * buf->loaded[k];
-            px += w * buf->dx[k], py += w * buf->dy[k];
-          }
-        const Vec2<double> per_torque(px, py);
+        const Vec2<double> per_torque = internal::EccentricLoadPerTorque(buf_a, buf_b, r, sum_a, sum_b);
         const Vec2<double> g = load.output_torque_Nmm * per_torque + Vec2<double>(0.0, -load.cam_weight_N);
         tangential = -g.dot(Perp(u));
         radial = g.dot(u);
@@ -226,6 +242,44 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
     if (progress && (i % 256 == 0 || i + 1 == steps)) progress(double(i + 1) / steps);
   }
   return s;
+}
+
+RollerZeroLoads RigidRollerZeroLoads(const Reducer<double>& r, const LoadCase& load,
+                                     const std::vector<double>& theta_rad) {
+  RollerZeroLoads out;
+  const size_t n = theta_rad.size();
+  for (auto* v : {&out.input_force_N, &out.output_force_N, &out.input_torque_Nmm, &out.input_spin_rate,
+                  &out.output_spin_rate})
+    v->resize(n);
+  out.eccentric_load_N.resize(n);
+  internal::TurretBuffers buf_a, buf_b;
+  internal::Resize(buf_a, r.input.rollers);
+  internal::Resize(buf_b, r.output.rollers);
+  const std::vector<Vec2<double>> slots_a = internal::Slots(r.input), slots_b = internal::Slots(r.output);
+  internal::FillCentres(buf_a, r, Side::kInput, slots_a, 0.0);  // the fixed turret stands
+  const double sign_a = LoadedArmSign(r, Side::kInput), sign_b = LoadedArmSign(r, Side::kOutput);
+  // RollerSpinRate's ψ' of each turret
+  const double psi_a = std::abs(0.0 - CamSpeedRatio(r)), psi_b = std::abs(OutputSpeedRatio(r) - CamSpeedRatio(r));
+  for (size_t i = 0; i < n; ++i) {
+    const double theta = theta_rad[i];
+    const Vec2<double> u = U(theta);
+    const auto [sum_a, sum_b] = internal::FillTurrets(buf_a, buf_b, r, slots_b, theta, u, sign_a, sign_b);
+    // FillForces' force of roller 0
+    out.input_force_N[i] = internal::ForceScale(r, Side::kInput, load, sum_a, sum_b) * buf_a.loaded[0];
+    out.output_force_N[i] = internal::ForceScale(r, Side::kOutput, load, sum_a, sum_b) * buf_b.loaded[0];
+    const Vec2<double> per_torque = internal::EccentricLoadPerTorque(buf_a, buf_b, r, sum_a, sum_b);
+    const Vec2<double> g = load.output_torque_Nmm * per_torque + Vec2<double>(0.0, -load.cam_weight_N);
+    out.eccentric_load_N[i] = g;
+    out.input_torque_Nmm[i] = InputTorque(-g.dot(Perp(u)), g.dot(u), load.friction_coefficient, r.eccentricity);
+    // RollerSpinRate: ψ' |ρ − r_r| / r_r, ρ = |I − O_0|
+    for (auto [buf, cam, psi, spin] : {std::tuple{&buf_a, &r.input, psi_a, &out.input_spin_rate[i]},
+                                       std::tuple{&buf_b, &r.output, psi_b, &out.output_spin_rate[i]}}) {
+      const Vec2<double> pitch = r.eccentricity * double(cam->pitch_factor()) * u;  // PitchPointOfCam
+      const double vx = pitch.x() - buf->cx[0], vy = pitch.y() - buf->cy[0];
+      *spin = psi * std::abs(std::sqrt(vx * vx + vy * vy) - cam->roller_radius) / cam->roller_radius;
+    }
+  }
+  return out;
 }
 
 std::vector<double> CycleCurvatures(const Reducer<double>& r, Side s, const std::vector<double>& theta_rad) {

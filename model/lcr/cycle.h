@@ -72,6 +72,21 @@ CycleSeries AnalyzeCycle(const Reducer<double>& r, const Material& material, con
                          int steps, const Stages& stages,
                          const std::function<void(double)>& progress = {});
 
+/// The rigid law's loads at any input angles: per θ of theta_rad, roller 0's force on each cam, the
+/// eccentric load G and T_in, and roller 0's speed relative to its pin per unit input speed on each
+/// cam. Bit for bit AnalyzeAngle(r, material, load, θ, {true, false, true})'s force[0], eccentric_load
+/// and input_torque, and RollerSpinRate(r, s, θ, 0) (the file comment of life.h), on AnalyzeCycle's
+/// structure-of-arrays path: life.h's SampleBearingLoad under the rigid law. Defined in cycle.cc.
+/// @throws std::domain_error when no roller of a turret can carry load at an angle.
+struct RollerZeroLoads {
+  std::vector<double> input_force_N, output_force_N;      ///< roller 0's, per angle
+  std::vector<Vec2<double>> eccentric_load_N;             ///< G
+  std::vector<double> input_torque_Nmm;                   ///< T_in = (F_t + μ |F_r|) e
+  std::vector<double> input_spin_rate, output_spin_rate;  ///< roller 0's, ψ' |ρ − r_r| / r_r
+};
+RollerZeroLoads RigidRollerZeroLoads(const Reducer<double>& r, const LoadCase& load,
+                                     const std::vector<double>& theta_rad);
+
 /// The pitch-curve curvature κ [1/mm] of roller k of one cam at theta_rad[i], in
 /// [i · rollers + k] (rollers = r.side(s).rollers), by AnalyzeCycle's structure-of-arrays contact
 /// kernel: bit for bit RollerContacts(r, s, θ)[k].curvature (contact.h), without its per-angle

@@ -31,6 +31,7 @@
 
 #include "model/common/bearing_life.h"
 #include "model/common/scalar.h"
+#include "model/lcr/cycle.h"
 #include "model/lcr/forces.h"
 #include "model/lcr/transmission_error.h"
 
@@ -133,7 +134,9 @@ inline int SamplesOverPeriod(double period_rad, int steps_per_revolution) {
 /// The bearing's load over its load period at `steps_per_revolution` samples per input revolution:
 /// roller 0's force (every roller of a turret carries the same load over its period), or |G| for the
 /// eccentric bearing. The loads come from one force analysis per sample at this load case (no
-/// scaling from another torque: the compliant model is not linear in the torque).
+/// scaling from another torque: the compliant model is not linear in the torque); under the rigid
+/// law on the structure-of-arrays path of cycle.h (RigidRollerZeroLoads: the same numbers as
+/// LoadsAtAngle and BearingSpinRate, a fraction of the work).
 /// @throws std::domain_error when a turret cannot carry the torque.
 inline BearingLoadSamples SampleBearingLoad(const Reducer<double>& r, const Material& material, const LoadCase& load,
                                             LoadModel model, LcrBearing b, int steps_per_revolution) {
@@ -141,6 +144,24 @@ inline BearingLoadSamples SampleBearingLoad(const Reducer<double>& r, const Mate
   out.period_rad = LoadPeriodRad(r, b, load.cam_weight_N > 0);
   const int n = SamplesOverPeriod(out.period_rad, steps_per_revolution);
   double torque_sum = 0.0;
+  if (model == LoadModel::kRigid || load.output_torque_Nmm == 0.0) {  // LoadsAtAngle's rigid branch
+    std::vector<double> theta(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k) theta[size_t(k)] = out.period_rad * k / n;
+    const RollerZeroLoads z = RigidRollerZeroLoads(r, load, theta);
+    for (size_t k = 0; k < size_t(n); ++k) {
+      double f = 0.0;
+      if (b == LcrBearing::kInputRoller) f = z.input_force_N[k];
+      if (b == LcrBearing::kOutputRoller) f = z.output_force_N[k];
+      if (b == LcrBearing::kEccentric) f = z.eccentric_load_N[k].norm();
+      out.load_N.push_back(std::max(f, 0.0));
+      out.spin_rate.push_back(b == LcrBearing::kInputRoller    ? z.input_spin_rate[k]
+                              : b == LcrBearing::kOutputRoller ? z.output_spin_rate[k]
+                                                               : BearingSpinRate(r, b, theta[k]));
+      torque_sum += z.input_torque_Nmm[k];
+    }
+    out.mean_input_torque_Nmm = torque_sum / n;
+    return out;
+  }
   for (int k = 0; k < n; ++k) {
     const double theta = out.period_rad * k / n;
     const LcrAngleLoads a = LoadsAtAngle(r, material, load, model, theta);

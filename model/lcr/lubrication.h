@@ -59,6 +59,7 @@ struct LubricationSpec {
   bool rolling_loss = true;    ///< the contacts' EHL rolling (Poiseuille) loss (false: left out)
   PalmgrenBearing roller_bearing;     ///< every roller's bearing (rotating rollers)
   PalmgrenBearing eccentric_bearing;  ///< the cam's bearing on the eccentric
+  bool operator==(const LubricationSpec&) const = default;
 };
 
 /// The speeds of one roller–cam contact per unit input speed [mm per rad of input angle]; × ω_in
@@ -153,6 +154,8 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
   for (const auto* forces : {&input_force_N, &output_force_N})
     for (const T& f : *forces) largest = std::max(largest, Value(f));
   const double no_load = 1e-9 * largest;
+  out.contacts.reserve(input_contacts.size() + output_contacts.size());
+  if (spec.rollers_rotate) out.bearings.reserve(input_contacts.size() + output_contacts.size());
   for (int side = 0; side < 2; ++side) {
     const Side s = side == 0 ? Side::kInput : Side::kOutput;
     const auto& contacts = side == 0 ? input_contacts : output_contacts;
@@ -174,7 +177,7 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
       // No entraining motion (or an undercut contact, r_eff ≤ 0): no film, boundary friction.
       c.film = Value(u) > 1e-12 && Value(r_eff) > 0.0;
       const T unit(1.0);  // η0 = 1 MPa·s
-      if (c.film) c.film_unit_mm = contact::LineContactFilm(unit, u, r_eff, T(f / length), T(e_star), alpha).minimum;
+      if (c.film) c.film_unit_mm = contact::LineContactMinimumFilm(unit, u, r_eff, T(f / length), T(e_star), alpha);
       if (c.film && spec.rolling_loss)
         c.rolling_unit_W =
             contact::RollingLoss(
@@ -365,12 +368,14 @@ RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material
   const double e_star = material.composite_modulus_MPa();
   std::vector<AngleLoads<T>> loads;
   std::vector<T> theta, eccentric;
+  loads.reserve(size_t(steps)), theta.reserve(size_t(steps)), eccentric.reserve(size_t(steps));
   for (int i = 0; i < steps; ++i) {
     theta.push_back(T(2.0 * kPi * i / steps));
     loads.push_back(AnalyzeAngle(r, material, load, theta.back(), {true, false, true}));  // G needs the last stage
     eccentric.push_back(loads.back().eccentric_load.norm());
   }
   std::vector<AngleKinematics<T>> kinematics;  // once for every temperature
+  kinematics.reserve(loads.size());
   for (size_t i = 0; i < loads.size(); ++i)
     kinematics.push_back(KinematicsAtAngle(r, spec, e_star, loads[i].input.contacts, loads[i].input.force,
                                            loads[i].output.contacts, loads[i].output.force, eccentric[i], theta[i],
