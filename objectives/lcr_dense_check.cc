@@ -1,8 +1,13 @@
 #include "objectives/lcr_dense_check.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <deque>
+#include <memory>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "model/common/geometry.h"
 #include "model/contact/hertz.h"
@@ -43,9 +48,40 @@ double LcrViolation::excess() const {
   return upper ? value - limit_value : limit_value - value;
 }
 
-LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps,
-                         LcrActiveSet* near) {
-  LcrDenseCheck c;
+namespace {
+
+// The limit-free part of a dense check: what the design, the load and the models give before any
+// limit is applied. A sizing checks one design under specs that differ only in their limits (each
+// limit's cost is a re-solve from the best design with that limit moved) and checks its best more
+// than once, so each thread keeps its last kKeptAnalyses and reuses one whose every input is equal
+// (the same computation, so the same numbers).
+struct AnalysisKey {
+  lcr::Reducer<double> r;
+  int steps = 0;
+  bool roller_stress = false;
+  lcr::Material material;
+  double output_torque_Nmm = 0.0, friction_coefficient = 0.0;
+  std::optional<LcrSizingLubrication> lubrication;
+  std::optional<LcrLifeSpec> life;
+  bool operator==(const AnalysisKey&) const = default;
+};
+
+/// A roller's local maximum in angle of its force or stress: (value, (angle index, roller)).
+using Peak = std::pair<double, std::pair<int, int>>;
+
+struct Analysis {
+  LcrDenseCheck c;  ///< every number of the check but min_static_safety; no violations
+  /// With roller_stress, per cam and quantity (0 force, 1 stress): every (angle, roller) value q > 0
+  /// that is at least its neighbours in angle, in the order of the angles, then the rollers (the
+  /// near samples are chosen from them once the limits are known).
+  std::array<std::array<std::vector<Peak>, 2>, 2> maxima;
+};
+
+constexpr size_t kKeptAnalyses = 3;
+
+Analysis Analyze(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps, bool roller_stress) {
+  Analysis a;
+  LcrDenseCheck& c = a.c;
   c.outer_diameter_mm = lcr::OuterDiameter(r);
   for (int k = 0; k < 2; ++k) {
     const lcr::CamSide<double>& side = k == 0 ? r.input : r.output;
@@ -53,13 +89,11 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     c.roller_gap_mm[k] = lcr::RollerGap(side);
     c.pitch_clearance_mm[k] = side.turret_radius - r.eccentricity * side.pitch_factor();
   }
-  const LcrLimits& lim = spec.limits;
   const lcr::LoadCase load{spec.output_torque_Nmm, spec.friction_coefficient, 0.0};
-  const int n[2] = {r.input.rollers, r.output.rollers};
   // The cycle on AnalyzeCycle's fast path: bit for bit AnalyzeAngle's numbers at each angle
   // (model/lcr/cycle.h), without its per-angle vectors.
   lcr::Stages stages;
-  stages.roller_stress = near != nullptr;
+  stages.roller_stress = roller_stress;
   const lcr::CycleSeries series = lcr::AnalyzeCycle(r, spec.material, load, steps, stages);
   double eta = 0.0;
   for (int i = 0; i < steps; ++i) eta += series.efficiency[size_t(i)];
@@ -77,8 +111,8 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     }
     if (peak_angle >= 0) {
       // The roller at the peak, as lcr::AnalyzeAngle has it there (the same bits).
-      const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, spec.material, load, 2 * kPi * peak_angle / steps);
-      const lcr::SideLoads<double>& sl = k == 0 ? a.input : a.output;
+      const lcr::AngleLoads<double> at = lcr::AnalyzeAngle(r, spec.material, load, 2 * kPi * peak_angle / steps);
+      const lcr::SideLoads<double>& sl = k == 0 ? at.input : at.output;
       for (size_t j = 0; j < sl.stress.size(); ++j)
         if (sl.stress[j] == sl.max_stress && std::isfinite(sl.max_stress)) {
           const double r_eff = cam.roller_radius * (1.0 - cam.roller_radius * sl.contacts[j].curvature);
@@ -98,22 +132,6 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     c.lubricated_loss_W = p.found ? p.loss_W : NAN;
     c.lubrication_why = p.why;
   }
-
-  auto upper = [&](const char* key, double value, double limit) {
-    if (!(value <= limit)) c.violations.push_back({key, value, limit});
-  };
-  auto lower = [&](const char* key, double value, double limit) {
-    if (!(value >= limit)) c.violations.push_back({key, value, limit});
-  };
-  upper("contact_stress_MPa", std::max(c.max_stress_MPa[0], c.max_stress_MPa[1]), lim.contact_stress_MPa);
-  upper("roller_load_N", std::max(c.max_force_N[0], c.max_force_N[1]), lim.roller_load_N);
-  lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
-  lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
-  if (std::isfinite(lim.max_outer_diameter_mm))
-    upper("max_outer_diameter_mm", c.outer_diameter_mm, lim.max_outer_diameter_mm);
-  if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
-  if (spec.lubrication && std::isfinite(lim.max_oil_temperature_C))
-    upper("max_oil_temperature_C", c.oil_temperature_C, lim.max_oil_temperature_C);
   if (spec.life) {
     // Every rated bearing (docs/life.md, "Life as a sizing limit"): the lcr_analysis computation of
     // the same design at `steps` samples per input revolution (rigid law, no cam weight).
@@ -145,10 +163,71 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
       c.shortest_L10h = std::min(c.shortest_L10h, b.life.L10h);
       c.life.push_back(std::move(b));
     }
+  }
+  for (const DesignIssue& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
+  if (roller_stress) {
+    const int n[2] = {r.input.rollers, r.output.rollers};
+    for (int k = 0; k < 2; ++k)
+      for (int quantity = 0; quantity < 2; ++quantity) {
+        const lcr::SideSeries& side = k == 0 ? series.input : series.output;
+        const std::vector<double>& v = quantity == 0 ? side.roller_force_N.values() : side.roller_stress_MPa.values();
+        std::vector<Peak>& peaks = a.maxima[size_t(k)][size_t(quantity)];
+        for (int i = 0; i < steps; ++i) {
+          const double* before = &v[size_t(i == 0 ? steps - 1 : i - 1) * n[k]];
+          const double* here = &v[size_t(i) * n[k]];
+          const double* after = &v[size_t(i + 1 == steps ? 0 : i + 1) * n[k]];
+          for (int j = 0; j < n[k]; ++j) {
+            const double q = here[j];
+            if (q > 0 && q >= before[j] && q >= after[j]) peaks.push_back({q, {i, j}});
+          }
+        }
+      }
+  }
+  return a;
+}
+
+/// Analyze, or the thread's kept analysis of the same inputs.
+std::shared_ptr<const Analysis> KeptAnalysis(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps,
+                                             bool roller_stress) {
+  thread_local std::deque<std::pair<AnalysisKey, std::shared_ptr<const Analysis>>> kept;
+  AnalysisKey key{r, steps, roller_stress, spec.material, spec.output_torque_Nmm, spec.friction_coefficient,
+                  spec.lubrication, spec.life};
+  for (const auto& [k, a] : kept)
+    if (k == key) return a;
+  auto a = std::make_shared<const Analysis>(Analyze(spec, r, steps, roller_stress));
+  if (kept.size() == kKeptAnalyses) kept.pop_front();
+  kept.emplace_back(std::move(key), a);
+  return a;
+}
+
+}  // namespace
+
+LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& r, int steps,
+                         LcrActiveSet* near) {
+  const std::shared_ptr<const Analysis> analysis = KeptAnalysis(spec, r, steps, near != nullptr);
+  LcrDenseCheck c = analysis->c;
+  const LcrLimits& lim = spec.limits;
+
+  auto upper = [&](const char* key, double value, double limit) {
+    if (!(value <= limit)) c.violations.push_back({key, value, limit});
+  };
+  auto lower = [&](const char* key, double value, double limit) {
+    if (!(value >= limit)) c.violations.push_back({key, value, limit});
+  };
+  upper("contact_stress_MPa", std::max(c.max_stress_MPa[0], c.max_stress_MPa[1]), lim.contact_stress_MPa);
+  upper("roller_load_N", std::max(c.max_force_N[0], c.max_force_N[1]), lim.roller_load_N);
+  lower("undercut_margin_mm", std::min(c.undercut_margin_mm[0], c.undercut_margin_mm[1]), lim.undercut_margin_mm);
+  lower("roller_gap_mm", std::min(c.roller_gap_mm[0], c.roller_gap_mm[1]), lim.roller_gap_mm);
+  if (std::isfinite(lim.max_outer_diameter_mm))
+    upper("max_outer_diameter_mm", c.outer_diameter_mm, lim.max_outer_diameter_mm);
+  if (lim.min_efficiency > 0) lower("min_efficiency", c.mean_efficiency, lim.min_efficiency);
+  if (spec.lubrication && std::isfinite(lim.max_oil_temperature_C))
+    upper("max_oil_temperature_C", c.oil_temperature_C, lim.max_oil_temperature_C);
+  if (spec.life) {
     if (lim.life_h > 0) lower("life_h", c.shortest_L10h, lim.life_h);
     if (lim.min_static_safety > 0 && lim.static_torque_Nmm > 0) {
       double line_torque = 0.0;
-      for (const lcr::LcrDutyLine& l : life.lines) line_torque = std::max(line_torque, l.output_torque_Nmm);
+      for (const lcr::LcrDutyLine& l : spec.life->lines) line_torque = std::max(line_torque, l.output_torque_Nmm);
       for (const LcrBearingLifeCheck& b : c.life)
         if (b.static_rating_N > 0 && b.life.max_load_N > 0 && line_torque > 0)
           c.min_static_safety = std::min(
@@ -156,7 +235,6 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
       lower("min_static_safety", c.min_static_safety, lim.min_static_safety);
     }
   }
-  for (const DesignIssue& p : lcr::CheckDesign(r)) c.design_problems.push_back(p.field + ": " + p.message);
 
   if (near) {
     // Per cam and quantity: the rollers' local maxima in angle within kNearFraction of the limit
@@ -166,27 +244,13 @@ LcrDenseCheck DenseCheck(const LcrSizingSpec& spec, const lcr::Reducer<double>& 
     for (int k = 0; k < 2; ++k) {
       const double period = LcrLoadPeriod(spec, k == 0 ? lcr::Side::kInput : lcr::Side::kOutput);
       for (int quantity = 0; quantity < 2; ++quantity) {
-        // Per (angle, roller) force or stress.
-        const lcr::SideSeries& side = k == 0 ? series.input : series.output;
-        const std::vector<double>& v = quantity == 0 ? side.roller_force_N.values() : side.roller_stress_MPa.values();
+        // The rollers' local maxima (Analyze) that reach the threshold, in their order.
         const double limit = quantity == 0 ? lim.roller_load_N : lim.contact_stress_MPa;
-        // The largest value of every (angle, roller) is the cycle's maximum found above (each row's
-        // maximum is taken from 0 over values >= 0: the same number), and a row whose maximum is
-        // below the threshold holds no peak.
-        const std::vector<double>& row_max = quantity == 0 ? side.max_force_N : side.max_stress_MPa;
         const double vmax = quantity == 0 ? c.max_force_N[k] : c.max_stress_MPa[k];
         const double threshold = std::isfinite(limit) ? (1 - kNearFraction) * std::min(limit, vmax) : vmax;
-        std::vector<std::pair<double, std::pair<int, int>>> peaks;
-        for (int i = 0; i < steps; ++i) {
-          if (!(row_max[size_t(i)] >= threshold)) continue;
-          const double* before = &v[size_t(i == 0 ? steps - 1 : i - 1) * n[k]];
-          const double* here = &v[size_t(i) * n[k]];
-          const double* after = &v[size_t(i + 1 == steps ? 0 : i + 1) * n[k]];
-          for (int j = 0; j < n[k]; ++j) {
-            const double q = here[j];
-            if (q >= threshold && q > 0 && q >= before[j] && q >= after[j]) peaks.push_back({q, {i, j}});
-          }
-        }
+        std::vector<Peak> peaks;
+        for (const Peak& p : analysis->maxima[size_t(k)][size_t(quantity)])
+          if (p.first >= threshold) peaks.push_back(p);
         std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
         std::vector<LcrSample> chosen;
         for (const auto& [q, ij] : peaks) {

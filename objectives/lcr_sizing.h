@@ -112,12 +112,14 @@ struct LcrRollerRating {
   double static_N = 0.0;              ///< C0 [N]; 0: not given (no s0)
   double reference_diameter_mm = 0.0; ///< D_ref; 0: the rating is the roller's own (not scaled)
   double reference_length_mm = 0.0;   ///< L_ref
+  bool operator==(const LcrRollerRating&) const = default;
 };
 
 /// The eccentric bearing (fixed ratings, its size is not a sizing variable).
 struct LcrEccentricRating {
   bool ball = false;  ///< ball (p = 3) or roller (p = 10/3) bearing
   double dynamic_N = 0.0, static_N = 0.0;
+  bool operator==(const LcrEccentricRating&) const = default;
 };
 
 /// What the bearing lives are computed from (docs/life.md): the duty cycle and the ratings.
@@ -125,6 +127,7 @@ struct LcrLifeSpec {
   std::vector<lcr::LcrDutyLine> lines;  ///< time shares summing to 1
   LcrRollerRating roller;
   std::optional<LcrEccentricRating> eccentric;
+  bool operator==(const LcrLifeSpec&) const = default;
 };
 
 /// The lubricated losses of a sizing (model/lcr/lubrication.h LubricatedRigidCycle): at the output
@@ -135,6 +138,7 @@ struct LcrSizingLubrication {
   std::optional<double> temperature_C;  ///< given; absent: the housing's balance
   HousingCooling cooling;
   double balance_limit_C = 120;         ///< the balance is sought below it (the oil's limit)
+  bool operator==(const LcrSizingLubrication&) const = default;
 };
 
 /// One continuous sizing problem.

@@ -13,8 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "model/common/bearing_life.h"
+#include "model/lcr/cycle.h"
 #include "model/lcr/life.h"
 #include "sizing/lcr_min_size.h"
+#include "objectives/lcr_dense_check.h"
 #include "objectives/lcr_sizing.h"
 #include "tests/test_util.h"
 
@@ -123,6 +125,78 @@ TEST(LcrMinSizeLife, RowsAgreeWithTheDenseLifeOfLcrAnalysis) {
   }
   // The eccentric bearing turns n_A/m_A per input revolution (model/lcr/life.h).
   EXPECT_NEAR(c.life[2].life.revolutions_per_input_revolution, 13.0 / 12.0, 1e-12);
+}
+
+// The dense check keeps its last analyses per thread and reuses one only when the design, the
+// angles, the load, the material, the lubrication and the duty cycle are all the same: a change of
+// any of them gives the numbers of that input (each against the model function computed here), a
+// change of the limits alone gives the same numbers judged against the new limits, and a check
+// served from a kept analysis equals the one computed after the kept ones were pushed out.
+TEST(LcrMinSizeLife, DenseChecksOfOneDesignUnderOtherInputsAreTheirOwn) {
+  const LcrSizingSpec spec = LifeSpec(true);
+  const std::vector<double> x = objectives::LcrStartingPoints(spec, 1).front();
+  const lcr::Reducer<double> r = objectives::LcrDesign(spec, x);
+  const int steps = 720;
+  const objectives::LcrDenseCheck base = objectives::DenseCheck(spec, r, steps);
+  ASSERT_EQ(base.life.size(), 3u);
+  auto largest_force = [&](const LcrSizingSpec& s) {
+    const lcr::CycleSeries c = lcr::AnalyzeCycle(r, s.material, {s.output_torque_Nmm, s.friction_coefficient, 0.0},
+                                                 steps, lcr::Stages{});
+    return std::max(*std::max_element(c.input.max_force_N.begin(), c.input.max_force_N.end()),
+                    *std::max_element(c.output.max_force_N.begin(), c.output.max_force_N.end()));
+  };
+  EXPECT_EQ(std::max(base.max_force_N[0], base.max_force_N[1]), largest_force(spec));
+  // Another torque: its own forces (the rigid law is linear in the torque).
+  LcrSizingSpec torque = spec;
+  torque.output_torque_Nmm *= 1.5;
+  const objectives::LcrDenseCheck t = objectives::DenseCheck(torque, r, steps);
+  EXPECT_EQ(std::max(t.max_force_N[0], t.max_force_N[1]), largest_force(torque));
+  EXPECT_NEAR(t.max_force_N[0], 1.5 * base.max_force_N[0], 1e-9 * base.max_force_N[0]);
+  // Another material: its own stresses (p ∝ √E* at the same forces).
+  LcrSizingSpec soft = spec;
+  soft.material.youngs_modulus_MPa /= 4;
+  const objectives::LcrDenseCheck m = objectives::DenseCheck(soft, r, steps);
+  EXPECT_NEAR(m.max_stress_MPa[0], 0.5 * base.max_stress_MPa[0], 1e-9 * base.max_stress_MPa[0]);
+  // Another duty cycle: the lives of its lines.
+  LcrSizingSpec duty = spec;
+  duty.life->lines[1].output_torque_Nmm = 60e3;
+  const objectives::LcrDenseCheck d = objectives::DenseCheck(duty, r, steps);
+  const lcr::LcrBearingLife direct = lcr::BearingLifeOverDutyCycle(
+      r, spec.material, {spec.output_torque_Nmm, spec.friction_coefficient, 0.0}, lcr::LoadModel::kRigid,
+      lcr::LcrBearing::kEccentric, 20000.0, BearingKind::kBall, duty.life->lines, steps);
+  EXPECT_EQ(d.life[2].life.L10h, direct.L10h);
+  EXPECT_LT(d.life[2].life.L10h, base.life[2].life.L10h);
+  // The limits alone: the same numbers, judged against the new limits.
+  LcrSizingSpec strict = spec;
+  strict.limits.roller_load_N = 0.5 * std::max(base.max_force_N[0], base.max_force_N[1]);
+  strict.limits.life_h = 2 * base.shortest_L10h;
+  const objectives::LcrDenseCheck l = objectives::DenseCheck(strict, r, steps);
+  EXPECT_EQ(l.max_force_N, base.max_force_N);
+  EXPECT_EQ(l.shortest_L10h, base.shortest_L10h);
+  std::vector<std::string> broken;
+  for (const auto& v : l.violations) broken.push_back(v.limit);
+  EXPECT_NE(std::find(broken.begin(), broken.end(), "roller_load_N"), broken.end());
+  EXPECT_NE(std::find(broken.begin(), broken.end(), "life_h"), broken.end());
+  // The near samples: from a kept analysis (checked a moment ago under other limits) and from a
+  // fresh one (after three other designs' checks pushed it out) alike.
+  objectives::LcrActiveSet near_first, near_kept, near_fresh;
+  LcrSizingSpec near_spec = spec;
+  near_spec.limits.roller_load_N = 1.01 * std::max(base.max_force_N[0], base.max_force_N[1]);
+  objectives::DenseCheck(spec, r, steps, &near_first);
+  const objectives::LcrDenseCheck kept = objectives::DenseCheck(near_spec, r, steps, &near_kept);
+  for (double e : {1.01, 1.02, 1.03}) {
+    lcr::Reducer<double> other = r;
+    other.eccentricity *= e;
+    objectives::DenseCheck(spec, other, steps, &near_first);
+  }
+  const objectives::LcrDenseCheck fresh = objectives::DenseCheck(near_spec, r, steps, &near_fresh);
+  EXPECT_EQ(kept.max_stress_MPa, fresh.max_stress_MPa);
+  EXPECT_EQ(kept.life.size(), fresh.life.size());
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(near_kept.force[k], near_fresh.force[k]) << k;
+    EXPECT_EQ(near_kept.stress[k], near_fresh.stress[k]) << k;
+    EXPECT_FALSE(near_kept.force[k].empty()) << k;
+  }
 }
 
 // The static rows (a momentary torque, LcrLimits::min_static_safety): exact derivatives, and values

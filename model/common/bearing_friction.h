@@ -23,6 +23,7 @@ struct PalmgrenBearing {
   double f0 = 2.0;                 ///< lubrication factor (oil bath, needle and roller bearings: 2–4)
   double f1 = 0.0005;              ///< load factor
   double mean_diameter_mm = 20.0;  ///< dm = (d + D)/2
+  bool operator==(const PalmgrenBearing&) const = default;
 
   void Validate() const {
     if (!(f0 >= 0.0 && f0 < 100.0 && f1 >= 0.0 && f1 < 1.0 && mean_diameter_mm > 0.0))

@@ -51,6 +51,7 @@ struct DutyCycleLine {
 /// speed, time share); every reducer kind turns it into its bearings' DutyCycleLines.
 struct OperatingLine {
   double output_torque_Nmm = 0.0, input_speed_rpm = 0.0, time_share = 1.0;
+  bool operator==(const OperatingLine&) const = default;
 };
 
 namespace bearing_life_internal {

@@ -56,6 +56,7 @@ struct Lubricant {
   double density15_kg_m3 = 880.0;  ///< density at 15 °C
   double thermal_expansion_per_K = 6.5e-4;  ///< β of ρ(t) = ρ15 (1 − β (t − 15))
   double pressure_viscosity_per_MPa = 0.02;  ///< Barus α (20 GPa⁻¹, typical of mineral oils)
+  bool operator==(const Lubricant&) const = default;
 
   /// Throws std::invalid_argument naming the first value outside what the laws above take.
   void Validate() const {

@@ -30,6 +30,7 @@ struct Material {
     return CompositeModulus(youngs_modulus_MPa, poisson_ratio, other.youngs_modulus_MPa,
                             other.poisson_ratio);
   }
+  bool operator==(const Material&) const = default;
 };
 
 }  // namespace camopt

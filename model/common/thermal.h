@@ -28,6 +28,7 @@ struct HousingCooling {
   double heat_transfer_W_per_m2K = 15.0;  ///< still air, convection and radiation together
   double forced_W_per_K = 0.0;            ///< a fan or an oil cooler, if any
   double ambient_C = 20.0;
+  bool operator==(const HousingCooling&) const = default;
 
   double conductance_W_per_K() const { return area_m2 * heat_transfer_W_per_m2K + forced_W_per_K; }
 };

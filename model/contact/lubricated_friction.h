@@ -33,6 +33,7 @@ inline constexpr double kFullFilmLambda = 3.0;
 struct RegimeFriction {
   double boundary = 0.1;    ///< μ_b, λ ≤ 1
   double full_film = 0.03;  ///< μ_f, λ ≥ 3
+  bool operator==(const RegimeFriction&) const = default;
 
   void Validate() const {
     if (!(boundary >= 0.0 && boundary <= 1.0 && full_film >= 0.0 && full_film <= 1.0))

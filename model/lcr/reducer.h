@@ -38,6 +38,7 @@ struct CamSide {
     return {lobes, rollers, ScalarCast<U>(turret_radius), ScalarCast<U>(roller_radius),
             ScalarCast<U>(roller_length), ScalarCast<U>(cam_thickness)};
   }
+  bool operator==(const CamSide&) const = default;
 };
 
 enum class Side { kInput, kOutput };
@@ -54,6 +55,7 @@ struct Reducer {
   Reducer<U> cast() const {
     return {ScalarCast<U>(eccentricity), input.template cast<U>(), output.template cast<U>()};
   }
+  bool operator==(const Reducer&) const = default;
 };
 
 /// Cam and roller material (both the same; E* from model/common/material.h).
