@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -126,6 +127,38 @@ TEST(LcrLife, RigidRollerZeroLoadsAreThePerAngleAnalysisBitForBit) {
   const lcr::RollerZeroLoads z = lcr::RigidRollerZeroLoads(r, lcr::LoadCase{80e3, 0.05, 0.0}, theta);
   EXPECT_GT(*std::max_element(z.input_force_N.begin(), z.input_force_N.end()), 100.0);
   EXPECT_GT(*std::max_element(z.output_force_N.begin(), z.output_force_N.end()), 100.0);
+}
+
+// The sweep of the lubricated cycle's loads (lcr::RigidLoadsSweep) gives exactly AnalyzeAngle's
+// contacts, forces and eccentric load, angle after angle with its vectors reused, on LCR II and on
+// a design with other counts.
+TEST(LcrLife, RigidLoadsSweepIsAnalyzeAngleBitForBit) {
+  for (const lcr::Reducer<double>& r : {LcrII(), camopt::testing::LcrI()}) {
+    const Material m = camopt::testing::Steel();
+    for (const lcr::LoadCase load : {lcr::LoadCase{80e3, 0.0, 0.0}, lcr::LoadCase{12e3, 0.08, 35.0}}) {
+      lcr::RigidLoadsSweep sweep(r, load);
+      for (int k = 0; k < 61; ++k) {
+        const double theta = 2 * kPi * k / 61 + 0.01;
+        sweep.At(theta);
+        const lcr::AngleLoads<double> a = lcr::AnalyzeAngle(r, m, load, theta, {true, false, true});
+        EXPECT_EQ(sweep.eccentric_load_N.x(), a.eccentric_load.x()) << k;
+        EXPECT_EQ(sweep.eccentric_load_N.y(), a.eccentric_load.y()) << k;
+        for (auto [contacts, forces, side] : {std::tuple{&sweep.input_contacts, &sweep.input_force_N, &a.input},
+                                              std::tuple{&sweep.output_contacts, &sweep.output_force_N, &a.output}}) {
+          ASSERT_EQ(contacts->size(), side->contacts.size());
+          ASSERT_EQ(forces->size(), side->force.size());
+          for (size_t j = 0; j < contacts->size(); ++j) {
+            const lcr::RollerContact<double>& x = (*contacts)[j];
+            const lcr::RollerContact<double>& y = side->contacts[j];
+            EXPECT_TRUE(x.centre == y.centre && x.direction == y.direction && x.point == y.point) << k << " " << j;
+            EXPECT_EQ(x.arm, y.arm) << k << " " << j;
+            EXPECT_EQ(x.curvature, y.curvature) << k << " " << j;
+            EXPECT_EQ((*forces)[j], side->force[j]) << k << " " << j;
+          }
+        }
+      }
+    }
+  }
 }
 
 // The input roller's equivalent load from the study against the same p-mean written out here from

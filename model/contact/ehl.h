@@ -46,19 +46,6 @@ inline constexpr double kLineCentralFilmSpeedExponent = 0.692;
 inline constexpr double kLineMinimumFilmSpeedExponent = 0.694;
 inline constexpr double kLineRollingForceSpeedExponent = 0.658;
 
-/// The minimum film of LineContactFilm alone (its `minimum`, the same operations): for callers that
-/// need no central film, whose three powers would otherwise be computed and thrown away.
-template <typename T>
-CAMOPT_FLATTEN T LineContactMinimumFilm(const T& eta0, const T& entraining_speed, const T& r_eff,
-                                        const T& load_per_length, const T& e_star, const T& alpha) {
-  using std::pow;
-  const T e_prime = T(2.0) * e_star;
-  const T u = eta0 * entraining_speed / (e_prime * r_eff);
-  const T g = alpha * e_prime;
-  const T w = load_per_length / (e_prime * r_eff);
-  return r_eff * T(1.714) * pow(w, T(-0.128)) * pow(u, T(kLineMinimumFilmSpeedExponent)) * pow(g, T(0.568));
-}
-
 /// Line contact (Pan & Hamrock 1989). `eta0` [MPa·s] at the inlet's temperature and ambient
 /// pressure, `entraining_speed` u [mm/s] > 0, `r_eff` R [mm] (1/R = 1/R₁ + 1/R₂), `load_per_length`
 /// w' [N/mm] > 0, `e_star` Hertz's E* [MPa], `alpha` [1/MPa].
@@ -71,7 +58,7 @@ CAMOPT_FLATTEN EhlFilm<T> LineContactFilm(const T& eta0, const T& entraining_spe
   const T g = alpha * e_prime;
   const T w = load_per_length / (e_prime * r_eff);
   return {r_eff * T(2.922) * pow(w, T(-0.166)) * pow(u, T(kLineCentralFilmSpeedExponent)) * pow(g, T(0.470)),
-          LineContactMinimumFilm(eta0, entraining_speed, r_eff, load_per_length, e_star, alpha)};
+          r_eff * T(1.714) * pow(w, T(-0.128)) * pow(u, T(kLineMinimumFilmSpeedExponent)) * pow(g, T(0.568))};
 }
 
 /// Hamrock & Dowson's ellipticity k = a/b ≈ 1.0339 (R_y/R_x)^0.636 (R_y ≥ R_x: the contact is

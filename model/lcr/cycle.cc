@@ -282,6 +282,48 @@ RollerZeroLoads RigidRollerZeroLoads(const Reducer<double>& r, const LoadCase& l
   return out;
 }
 
+struct RigidLoadsSweep::State {
+  const Reducer<double>* r;
+  LoadCase load;
+  internal::TurretBuffers a, b;
+  std::vector<Vec2<double>> slots_b;
+  double sign_a, sign_b;
+};
+
+RigidLoadsSweep::RigidLoadsSweep(const Reducer<double>& r, const LoadCase& load)
+    : state_(std::make_unique<State>(State{&r, load, {}, {}, internal::Slots(r.output),
+                                           LoadedArmSign(r, Side::kInput), LoadedArmSign(r, Side::kOutput)})) {
+  internal::Resize(state_->a, r.input.rollers);
+  internal::Resize(state_->b, r.output.rollers);
+  internal::FillCentres(state_->a, r, Side::kInput, internal::Slots(r.input), 0.0);  // the fixed turret stands
+}
+
+RigidLoadsSweep::~RigidLoadsSweep() = default;
+
+void RigidLoadsSweep::At(double theta) {
+  State& s = *state_;
+  const Reducer<double>& r = *s.r;
+  const Vec2<double> u = U(theta);
+  const auto [sum_a, sum_b] = internal::FillTurrets(s.a, s.b, r, s.slots_b, theta, u, s.sign_a, s.sign_b);
+  const double c_a = internal::ForceScale(r, Side::kInput, s.load, sum_a, sum_b);
+  const double c_b = internal::ForceScale(r, Side::kOutput, s.load, sum_a, sum_b);
+  for (auto [buf, cam, contacts, forces, c] :
+       {std::tuple{&s.a, &r.input, &input_contacts, &input_force_N, c_a},
+        std::tuple{&s.b, &r.output, &output_contacts, &output_force_N, c_b}}) {
+    const size_t n = buf->loaded.size();
+    contacts->resize(n);
+    forces->resize(n);
+    for (size_t k = 0; k < n; ++k) {
+      // RollerContacts' {O, d, O + r_r d, Cross(O, d), κ} and FillForces' C a_k
+      const Vec2<double> o(buf->cx[k], buf->cy[k]), d(buf->dx[k], buf->dy[k]);
+      (*contacts)[k] = {o, d, o + cam->roller_radius * d, buf->arm[k], buf->kappa[k]};
+      (*forces)[k] = c * buf->loaded[k];
+    }
+  }
+  const Vec2<double> per_torque = internal::EccentricLoadPerTorque(s.a, s.b, r, sum_a, sum_b);
+  eccentric_load_N = s.load.output_torque_Nmm * per_torque + Vec2<double>(0.0, -s.load.cam_weight_N);
+}
+
 std::vector<double> CycleCurvatures(const Reducer<double>& r, Side s, const std::vector<double>& theta_rad) {
   const CamSide<double>& c = r.side(s);
   const size_t n = size_t(c.rollers);

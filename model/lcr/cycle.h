@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -86,6 +87,29 @@ struct RollerZeroLoads {
 };
 RollerZeroLoads RigidRollerZeroLoads(const Reducer<double>& r, const LoadCase& load,
                                      const std::vector<double>& theta_rad);
+
+/// The rigid law's contacts, roller forces and eccentric load at input angles one after another, on
+/// AnalyzeCycle's structure-of-arrays buffers: after At(θ), bit for bit AnalyzeAngle(r, material,
+/// load, θ, {true, false, true})'s contacts, force and eccentric_load of each cam, without its
+/// per-angle allocations (the vectors are overwritten by the next At). For the lubricated cycle's
+/// loads (lubrication.h). r must outlive the sweep. Defined in cycle.cc.
+class RigidLoadsSweep {
+ public:
+  RigidLoadsSweep(const Reducer<double>& r, const LoadCase& load);
+  ~RigidLoadsSweep();
+  RigidLoadsSweep(const RigidLoadsSweep&) = delete;
+  RigidLoadsSweep& operator=(const RigidLoadsSweep&) = delete;
+  /// The loads at input angle θ [rad].
+  /// @throws std::domain_error when no roller of a turret can carry load there.
+  void At(double theta);
+  std::vector<RollerContact<double>> input_contacts, output_contacts;
+  std::vector<double> input_force_N, output_force_N;
+  Vec2<double> eccentric_load_N{0.0, 0.0};  ///< G
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// The pitch-curve curvature κ [1/mm] of roller k of one cam at theta_rad[i], in
 /// [i · rollers + k] (rollers = r.side(s).rollers), by AnalyzeCycle's structure-of-arrays contact

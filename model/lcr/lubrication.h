@@ -177,7 +177,7 @@ AngleKinematics<T> KinematicsAtAngle(const Reducer<T>& r, const LubricationSpec&
       // No entraining motion (or an undercut contact, r_eff ≤ 0): no film, boundary friction.
       c.film = Value(u) > 1e-12 && Value(r_eff) > 0.0;
       const T unit(1.0);  // η0 = 1 MPa·s
-      if (c.film) c.film_unit_mm = contact::LineContactMinimumFilm(unit, u, r_eff, T(f / length), T(e_star), alpha);
+      if (c.film) c.film_unit_mm = contact::LineContactFilm(unit, u, r_eff, T(f / length), T(e_star), alpha).minimum;
       if (c.film && spec.rolling_loss)
         c.rolling_unit_W =
             contact::RollingLoss(
@@ -366,20 +366,25 @@ RigidLubricatedPoint<T> LubricatedRigidCycle(const Reducer<T>& r, const Material
                                              const ThermalPoint<double>* solved = nullptr) {
   const LoadCase load{output_torque_Nmm, 0.0, 0.0};
   const double e_star = material.composite_modulus_MPa();
-  std::vector<AngleLoads<T>> loads;
-  std::vector<T> theta, eccentric;
-  loads.reserve(size_t(steps)), theta.reserve(size_t(steps)), eccentric.reserve(size_t(steps));
-  for (int i = 0; i < steps; ++i) {
-    theta.push_back(T(2.0 * kPi * i / steps));
-    loads.push_back(AnalyzeAngle(r, material, load, theta.back(), {true, false, true}));  // G needs the last stage
-    eccentric.push_back(loads.back().eccentric_load.norm());
+  std::vector<AngleKinematics<T>> kinematics;  // once for every temperature; the loads are not kept
+  kinematics.reserve(size_t(steps));
+  if constexpr (std::is_same_v<T, double>) {
+    RigidLoadsSweep loads(r, load);  // AnalyzeAngle's numbers on the cycle's buffers (cycle.h)
+    for (int i = 0; i < steps; ++i) {
+      const double theta = 2.0 * kPi * i / steps;
+      loads.At(theta);
+      kinematics.push_back(KinematicsAtAngle(r, spec, e_star, loads.input_contacts, loads.input_force_N,
+                                             loads.output_contacts, loads.output_force_N,
+                                             loads.eccentric_load_N.norm(), theta, input_speed_rpm));
+    }
+  } else {
+    for (int i = 0; i < steps; ++i) {
+      const T theta(2.0 * kPi * i / steps);
+      const AngleLoads<T> a = AnalyzeAngle(r, material, load, theta, {true, false, true});  // G needs the last stage
+      kinematics.push_back(KinematicsAtAngle(r, spec, e_star, a.input.contacts, a.input.force, a.output.contacts,
+                                             a.output.force, a.eccentric_load.norm(), theta, T(input_speed_rpm)));
+    }
   }
-  std::vector<AngleKinematics<T>> kinematics;  // once for every temperature
-  kinematics.reserve(loads.size());
-  for (size_t i = 0; i < loads.size(); ++i)
-    kinematics.push_back(KinematicsAtAngle(r, spec, e_star, loads[i].input.contacts, loads[i].input.force,
-                                           loads[i].output.contacts, loads[i].output.force, eccentric[i], theta[i],
-                                           T(input_speed_rpm)));
   const auto loss = [&](const T& t) {
     const OilState<T> oil = contact::OilStateAt(spec.oil, t);
     T sum(0.0);
